@@ -1,0 +1,138 @@
+"""The ``haros-arch`` command line: parse arguments, call the library, pick a reporter.
+
+Exit codes: 0 clean, 1 diagnostics or findings at or above ``--fail-on``, 2 unusable
+invocation (bad project file, missing workspace), 3 an internal error (a bug of ours).
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import sys
+from collections.abc import Sequence
+
+from rich.console import Console
+
+from . import __version__
+from .diagnostics import CATALOGUE
+from .model.diagnostic import SEVERITY_RANK
+from .model.model import Model
+from .model.serialise import dumps
+from .pipeline import analyse
+from .project import ProjectError, load
+from .report.text import count_by_severity, print_diagnostics, print_summary
+
+EXIT_OK, EXIT_FINDINGS, EXIT_USAGE, EXIT_INTERNAL = 0, 1, 2, 3
+
+
+def _parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="haros-arch",
+        description="Recover and check the ROS Computation Graph of a workspace, statically.")
+    parser.add_argument("--version", action="version", version=f"haros-arch {__version__}")
+    sub = parser.add_subparsers(dest="command", required=True)
+
+    extract = sub.add_parser("extract", help="write the JSON model of a project")
+    extract.add_argument("project", help="project file (YAML)")
+    extract.add_argument("-o", "--output", help="write the JSON here (default: stdout)")
+    extract.add_argument("-q", "--quiet", action="store_true", help="no summary")
+
+    check = sub.add_parser("check", help="report diagnostics; exit 1 at --fail-on or above")
+    check.add_argument("project", help="project file (YAML)")
+    check.add_argument("--format", choices=("text", "json"), default="text")
+    check.add_argument("--fail-on", choices=tuple(SEVERITY_RANK), default="error")
+    check.add_argument("-o", "--output", help="write the report here (default: stdout)")
+
+    explain = sub.add_parser("explain", help="explain a diagnostic code (or list them all)")
+    explain.add_argument("code", nargs="?")
+    return parser
+
+
+def _analyse(path: str, console: Console) -> Model | None:
+    try:
+        project = load(path)
+    except ProjectError as err:
+        console.print(f"haros-arch: {err}", highlight=False)
+        return None
+    missing = [w for w in project.workspace if not os.path.isdir(w)]
+    if missing:
+        console.print(f"haros-arch: {path}: workspace folder {missing[0]} does not exist",
+                      highlight=False)
+        return None
+    return analyse(project)
+
+
+def _write(text: str, output: str | None) -> None:
+    if output:
+        with open(output, "w", encoding="utf-8") as handle:
+            handle.write(text)
+    else:
+        sys.stdout.write(text)
+
+
+def cmd_extract(args: argparse.Namespace, out: Console, err: Console) -> int:
+    model = _analyse(args.project, err)
+    if model is None:
+        return EXIT_USAGE
+    _write(dumps(model), args.output)
+    if not args.quiet:
+        summary = out if args.output else err
+        print_summary(model, summary)
+        print_diagnostics(model.all_diagnostics, summary)
+        if args.output:
+            summary.print(f"wrote {args.output}", highlight=False)
+    return EXIT_OK
+
+
+def cmd_check(args: argparse.Namespace, out: Console, err: Console) -> int:
+    model = _analyse(args.project, err)
+    if model is None:
+        return EXIT_USAGE
+    found = model.all_diagnostics
+    if args.format == "json":
+        import json
+
+        from .model.serialise import to_data
+
+        _write(json.dumps({"diagnostics": to_data(found)}, indent=2) + "\n", args.output)
+    else:
+        print_diagnostics(found, out)
+        counts = count_by_severity(found)
+        out.print(", ".join(f"{n} {k}(s)" for k, n in counts.items()), highlight=False)
+    threshold = SEVERITY_RANK[args.fail_on]
+    failing = [d for d in found if SEVERITY_RANK[d.severity] >= threshold]
+    return EXIT_FINDINGS if failing else EXIT_OK
+
+
+def cmd_explain(args: argparse.Namespace, out: Console, err: Console) -> int:
+    codes = [args.code] if args.code else sorted(CATALOGUE)
+    for code in codes:
+        entry = CATALOGUE.get(code)
+        if entry is None:
+            err.print(f"haros-arch: unknown diagnostic code {code}", highlight=False)
+            return EXIT_USAGE
+        out.print(f"[bold]{code}[/bold] ({entry.severity})\n  {entry.explanation}",
+                  highlight=False)
+    return EXIT_OK
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    args = _parser().parse_args(argv)
+    out = Console(soft_wrap=True)
+    err = Console(stderr=True, soft_wrap=True)
+    handlers = {"extract": cmd_extract, "check": cmd_check, "explain": cmd_explain}
+    try:
+        return handlers[args.command](args, out, err)
+    except KeyboardInterrupt:
+        return 130
+    except Exception as error:  # a bug of ours: one clear line, no traceback
+        err.print(f"haros-arch: internal error: {type(error).__name__}: {error} "
+                  "(please report it; set HAROS_ARCH_DEBUG=1 for the traceback)",
+                  highlight=False)
+        if os.environ.get("HAROS_ARCH_DEBUG"):
+            raise
+        return EXIT_INTERNAL
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,175 @@
+"""CMake ``if()`` conditions in three-valued logic: True, False or None (unknown).
+
+Follows CMake's precedence: parentheses, then unary tests (``EXISTS``, ``DEFINED``, ...),
+then binary tests (``STREQUAL``, ``LESS``, ``MATCHES``, ``VERSION_*``, ``IN_LIST``), then
+``NOT``, then ``AND``, then ``OR``. A variable we cannot know (one a ``find_package``
+would set) makes the test unknown; ``AND`` / ``OR`` still decide when one side does.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+from collections.abc import Callable, Mapping
+
+Truth = bool | None
+
+_TRUE = {"1", "ON", "YES", "TRUE", "Y"}
+_FALSE = {"0", "OFF", "NO", "FALSE", "N", "IGNORE", "NOTFOUND", ""}
+UNARY = ("EXISTS", "COMMAND", "DEFINED", "TARGET", "IS_DIRECTORY", "IS_ABSOLUTE",
+         "POLICY", "TEST", "IS_SYMLINK")
+BINARY = ("STREQUAL", "STRLESS", "STRGREATER", "STRLESS_EQUAL", "STRGREATER_EQUAL",
+          "EQUAL", "LESS", "GREATER", "LESS_EQUAL", "GREATER_EQUAL", "MATCHES",
+          "VERSION_EQUAL", "VERSION_LESS", "VERSION_GREATER", "VERSION_LESS_EQUAL",
+          "VERSION_GREATER_EQUAL", "IN_LIST", "IS_NEWER_THAN", "PATH_EQUAL")
+
+
+class Evaluator:
+    def __init__(self, variables: Mapping[str, str], targets: Mapping[str, object],
+                 base: str, known_commands: Callable[[str], bool] = lambda _: False) -> None:
+        self.variables = variables
+        self.targets = targets
+        self.base = base
+        self.known_commands = known_commands
+
+    def evaluate(self, args: list[str]) -> Truth:
+        tokens = self._groups(list(args))
+        return self._or(tokens)
+
+    # Parentheses first: each group becomes one already-evaluated token.
+    def _groups(self, args: list[str]) -> list[str | Truth]:
+        out: list[str | Truth] = []
+        stack: list[list[str | Truth]] = []
+        for arg in args:
+            if arg == "(":
+                stack.append(out)
+                out = []
+            elif arg == ")" and stack:
+                value = self._or(out)
+                out = stack.pop()
+                out.append(value)
+            else:
+                out.append(arg)
+        return out
+
+    def _or(self, tokens: list[str | Truth]) -> Truth:
+        parts = _split(tokens, "OR")
+        values = [self._and(p) for p in parts]
+        if any(v is True for v in values):
+            return True
+        return None if any(v is None for v in values) else False
+
+    def _and(self, tokens: list[str | Truth]) -> Truth:
+        parts = _split(tokens, "AND")
+        values = [self._not(p) for p in parts]
+        if any(v is False for v in values):
+            return False
+        return None if any(v is None for v in values) else True
+
+    def _not(self, tokens: list[str | Truth]) -> Truth:
+        if tokens[:1] == ["NOT"]:
+            value = self._not(tokens[1:])
+            return None if value is None else not value
+        return self._test(tokens)
+
+    def _test(self, tokens: list[str | Truth]) -> Truth:
+        if len(tokens) == 1:
+            token = tokens[0]
+            return token if not isinstance(token, str) else self._truth(token)
+        if len(tokens) == 2 and tokens[0] in UNARY and isinstance(tokens[1], str):
+            return self._unary(str(tokens[0]), tokens[1])
+        if len(tokens) == 3 and tokens[1] in BINARY:
+            left, right = tokens[0], tokens[2]
+            if isinstance(left, str) and isinstance(right, str):
+                return self._binary(left, str(tokens[1]), right)
+        return None
+
+    def _value(self, text: str) -> str | None:
+        """A binary operand: a variable's value if it names one, else the text."""
+        if text in self.variables:
+            return self.variables[text]
+        if re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*_(FOUND|DIR|LIBRARIES|INCLUDE_DIRS|VERSION)",
+                        text):
+            return None  # set by find_package at configure time
+        return text
+
+    def _truth(self, text: str) -> Truth:
+        upper = text.upper()
+        if upper in _TRUE or (_is_number(text) and float(text) != 0):
+            return True
+        if upper in _FALSE or upper.endswith("-NOTFOUND") or _is_number(text):
+            return False
+        if text in self.variables:
+            value = self.variables[text].upper()
+            return not (value in _FALSE or value.endswith("-NOTFOUND"))
+        return None  # a variable we do not know: an environment or cache setting
+
+    def _unary(self, op: str, arg: str) -> Truth:
+        if op == "DEFINED":
+            if arg.startswith("ENV{"):
+                return None
+            return True if arg in self.variables else None
+        if op == "TARGET":
+            return True if arg in self.targets else None
+        if op in ("EXISTS", "IS_DIRECTORY"):
+            path = arg if os.path.isabs(arg) else None
+            if path is None or not path.startswith(self.base):
+                return None  # outside the package: depends on the machine
+            return os.path.isdir(path) if op == "IS_DIRECTORY" else os.path.exists(path)
+        if op == "IS_ABSOLUTE":
+            return os.path.isabs(arg)
+        if op == "COMMAND":
+            return True if self.known_commands(arg) else None
+        return None
+
+    def _binary(self, left_text: str, op: str, right_text: str) -> Truth:
+        left, right = self._value(left_text), self._value(right_text)
+        if op == "IN_LIST":
+            items = self.variables.get(right_text)
+            if left is None or items is None:
+                return None
+            return left in items.split(";")
+        if left is None or right is None:
+            return None
+        if op == "STREQUAL":
+            return left == right
+        if op.startswith("STR"):
+            return _compare(op[3:], left, right)
+        if op == "MATCHES":
+            try:
+                return re.search(right, left) is not None
+            except re.error:
+                return None
+        if op.startswith("VERSION_"):
+            return _compare(op[8:], _version(left), _version(right))
+        if op in ("EQUAL", "LESS", "GREATER", "LESS_EQUAL", "GREATER_EQUAL"):
+            if not (_is_number(left) and _is_number(right)):
+                return False
+            return _compare(op, float(left), float(right))
+        return None
+
+
+def _split(tokens: list[str | Truth], word: str) -> list[list[str | Truth]]:
+    parts: list[list[str | Truth]] = [[]]
+    for token in tokens:
+        if token == word:
+            parts.append([])
+        else:
+            parts[-1].append(token)
+    return parts
+
+
+def _is_number(text: str) -> bool:
+    return re.fullmatch(r"[-+]?\d+(\.\d+)?", text) is not None
+
+
+def _version(text: str) -> tuple[int, ...]:
+    return tuple(int(p) for p in re.findall(r"\d+", text)[:4])
+
+
+def _compare(op: str, left: object, right: object) -> bool:
+    a, b = left, right
+    return {
+        "EQUAL": a == b, "LESS": a < b, "GREATER": a > b,  # type: ignore[operator]
+        "LESS_EQUAL": a <= b, "GREATER_EQUAL": a >= b,  # type: ignore[operator]
+    }[op]

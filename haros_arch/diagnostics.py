@@ -1,0 +1,134 @@
+"""The catalogue of diagnostic codes and the ``Diagnostic`` value.
+
+Every problem found in the analysed workspace (a file that cannot be parsed, a launch
+file that names a missing package, ...) becomes a ``Diagnostic`` with a stable code from
+``CATALOGUE``; the run goes on with everything else. Tests assert on codes and
+locations, never on prose.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from .model.diagnostic import SEVERITY_RANK, Diagnostic, Severity
+from .model.location import NOWHERE, Location
+
+__all__ = ["CATALOGUE", "SEVERITY_RANK", "Diagnostic", "Entry", "Severity", "make"]
+
+
+@dataclass(frozen=True)
+class Entry:
+    severity: Severity
+    template: str
+    explanation: str
+
+
+CATALOGUE: dict[str, Entry] = {
+    # project file and workspace
+    "PROJECT_YAML": Entry(
+        "error", "project file is not valid YAML: {detail}",
+        "The project file could not be read as YAML. Fix the syntax at the given line."),
+    "PROJECT_SCHEMA": Entry(
+        "error", "{detail}",
+        "The project file is valid YAML but a key is unknown or a value has the wrong type."),
+    "WORKSPACE_MISSING": Entry(
+        "error", "workspace folder {path} does not exist",
+        "A folder named by the project file's 'workspace' key is not there."),
+    "FILE_UNREADABLE": Entry(
+        "error", "cannot read {path}: {detail}",
+        "A file of the workspace could not be opened or read; it is skipped."),
+    "FILE_TOO_LARGE": Entry(
+        "warning", "{path} is {size} bytes, above the limit of {limit}; skipped",
+        "Files above the size limit are not analysed, so a hostile or generated file "
+        "cannot exhaust memory."),
+    "FILE_ENCODING": Entry(
+        "warning", "{path} is not valid UTF-8; undecodable bytes were replaced",
+        "The file was read with replacement characters where bytes were not UTF-8; "
+        "names that contain them may be wrong."),
+    # package manifests
+    "PACKAGE_XML_SYNTAX": Entry(
+        "error", "package.xml is not well-formed XML: {detail}",
+        "The package manifest could not be parsed; the package is skipped."),
+    "PACKAGE_XML_INVALID": Entry(
+        "error", "package.xml is not a package manifest: {detail}",
+        "The manifest lacks a required element (such as <name>) or its root is not "
+        "<package>; the package is skipped."),
+    "PACKAGE_DUPLICATE": Entry(
+        "error", "package {name} is defined twice (also at {other})",
+        "Two folders of the workspace declare the same package name; the first one "
+        "found is used, as colcon and catkin refuse such workspaces."),
+    "PACKAGE_NOT_FOUND": Entry(
+        "error", "package {name} is not in the workspace nor installed",
+        "A launch file, project file or $(find) names a package that is neither in the "
+        "workspace nor on ROS_PACKAGE_PATH / AMENT_PREFIX_PATH."),
+    # build files
+    "CMAKE_SYNTAX": Entry(
+        "error", "CMake syntax error: {detail}",
+        "The CMake file could not be tokenised from this point on; commands read before "
+        "it are still used."),
+    "CMAKE_SOURCE_MISSING": Entry(
+        "warning", "source file {path} of target {target} does not exist",
+        "A build target names a source file that is not in the package."),
+    # launch files
+    "LAUNCH_FILE_MISSING": Entry(
+        "error", "launch file {path} does not exist",
+        "A configuration or an <include> names a launch file that is not there."),
+    "LAUNCH_XML_SYNTAX": Entry(
+        "error", "launch file is not well-formed XML: {detail}",
+        "The launch file could not be parsed; nothing from it is used."),
+    "LAUNCH_UNKNOWN_TAG": Entry(
+        "warning", "unknown tag <{tag}> is ignored",
+        "roslaunch ignores tags it does not know, with a warning; so do we."),
+    "LAUNCH_UNKNOWN_ATTRIBUTE": Entry(
+        "warning", "unknown attribute {attribute}= on <{tag}> is ignored",
+        "The attribute is not part of the launch format for this tag."),
+    "LAUNCH_MISSING_ATTRIBUTE": Entry(
+        "error", "<{tag}> needs attribute {attribute}=; the element is skipped",
+        "A required attribute of a launch tag is missing."),
+    "LAUNCH_BAD_VALUE": Entry(
+        "error", "{detail}",
+        "An attribute value of a launch tag cannot be used as written."),
+    "LAUNCH_ARG_UNSET": Entry(
+        "warning", "launch argument {name} has no value; names that use it keep '?'",
+        "An $(arg) refers to an argument that was declared without a value and not "
+        "given one; what depends on it is kept with an unknown part."),
+    "LAUNCH_UNSUPPORTED": Entry(
+        "warning", "{detail}",
+        "A launch construct that the static interpreter does not evaluate; what it "
+        "would produce is unknown."),
+    # sources
+    "CPP_PARSE_ERROR": Entry(
+        "warning", "C++ error: {detail}",
+        "libclang reported an error in this translation unit; calls in the parts it "
+        "could parse are still extracted."),
+    "CPP_PARSE_FAILED": Entry(
+        "error", "C++ file could not be parsed: {detail}",
+        "libclang could not produce a translation unit; the file gives no calls."),
+    "CPP_INCLUDE_MISSING": Entry(
+        "info", "header {header} not found; an empty stand-in was used",
+        "The header is neither in the workspace nor on the system; declarations from "
+        "it are unknown to the extractor."),
+    "CPP_MESSAGE_UNKNOWN": Entry(
+        "info", "no definition found for {header}; it was synthesised without fields",
+        "The header names a message or service whose .msg / .srv file is neither in the "
+        "workspace nor installed; its type name is known but its fields are not, so code "
+        "that reads them may give C++ errors."),
+    "CPP_DYNAMIC_NAME": Entry(
+        "info", "the name of this {kind} call is computed at run time; kept as '{name}'",
+        "The extractor could not resolve every part of the name statically."),
+    # graph
+    "NODE_NOT_FOUND": Entry(
+        "warning", "node type {node} is not in the workspace; its interface is unknown",
+        "A launch file starts an executable that no workspace package builds; the "
+        "instance is kept without publishers, subscribers or other links."),
+    "NODE_NAME_DUPLICATE": Entry(
+        "error", "node name {name} is used twice (also at {other})",
+        "Two node instances of one configuration resolve to the same name; at run time "
+        "the second would shut the first down."),
+}
+
+
+def make(code: str, location: Location = NOWHERE, **params: object) -> Diagnostic:
+    """Build a diagnostic from the catalogue entry ``code``, filling its template."""
+    entry = CATALOGUE[code]
+    return Diagnostic(code, entry.severity, entry.template.format(**params), location)

@@ -1,0 +1,50 @@
+"""Reading files of the analysed workspace safely: bounded size, UTF-8 with replacement."""
+
+from __future__ import annotations
+
+import os
+
+from . import diagnostics as diag
+from .diagnostics import Diagnostic
+from .model.location import Location
+
+MAX_FILE_BYTES = 8 * 1024 * 1024
+
+
+def read_text(
+    path: str, location: Location, limit: int = MAX_FILE_BYTES
+) -> tuple[str | None, list[Diagnostic]]:
+    """Read ``path`` as text. Problems become diagnostics at ``location``; never raises."""
+    try:
+        size = os.path.getsize(path)
+        if size > limit:
+            return None, [diag.make("FILE_TOO_LARGE", location, path=location.file or path,
+                                    size=size, limit=limit)]
+        with open(path, "rb") as handle:
+            raw = handle.read(limit + 1)
+    except OSError as err:
+        return None, [diag.make("FILE_UNREADABLE", location, path=location.file or path,
+                                detail=err.strerror or str(err))]
+    try:
+        return raw.decode("utf-8"), []
+    except UnicodeDecodeError as err:
+        bad = raw[: err.start].count(b"\n") + 1
+        where = Location(location.package, location.file, bad, 0)
+        return raw.decode("utf-8", errors="replace"), [
+            diag.make("FILE_ENCODING", where, path=location.file or path)]
+
+
+def read_bytes(
+    path: str, location: Location, limit: int = MAX_FILE_BYTES
+) -> tuple[bytes | None, list[Diagnostic]]:
+    """Read ``path`` as bytes (for XML parsers that honour the declared encoding)."""
+    try:
+        size = os.path.getsize(path)
+        if size > limit:
+            return None, [diag.make("FILE_TOO_LARGE", location, path=location.file or path,
+                                    size=size, limit=limit)]
+        with open(path, "rb") as handle:
+            return handle.read(limit + 1), []
+    except OSError as err:
+        return None, [diag.make("FILE_UNREADABLE", location, path=location.file or path,
+                                detail=err.strerror or str(err))]

@@ -1,0 +1,129 @@
+"""Assemble a configuration's Computation Graph from its launch model and node models."""
+
+from __future__ import annotations
+
+import shlex
+from collections.abc import Mapping
+from typing import Any
+
+from .. import diagnostics as diag
+from ..launch.model import LaunchModel, NodeDecl
+from ..model.rosname import RosName, resolve_remaps
+from ..model.runtime import (
+    LINK_CLASSES,
+    Action,
+    Configuration,
+    Link,
+    NodeInstance,
+    Parameter,
+    Resource,
+    Service,
+    Topic,
+)
+from ..model.source import Node, PrimitiveCall
+from ..model.values import UNKNOWN_MARK
+from ..workspace import Workspace
+
+RESOURCE_OF_KIND: dict[str, type[Resource]] = {
+    "publish": Topic, "subscribe": Topic, "server": Service, "client": Service,
+    "action-server": Action, "action-client": Action,
+    "read": Parameter, "write": Parameter, "declare": Parameter,
+}
+
+
+class _Resources:
+    """Topics, services, actions and parameters by name; unresolved names stay apart."""
+
+    def __init__(self, config: Configuration) -> None:
+        self.config = config
+        self.by_name: dict[tuple[type[Resource], str], Resource] = {}
+
+    def get(self, cls: type[Resource], name: str) -> Resource:
+        key = (cls, name)
+        if UNKNOWN_MARK not in name and key in self.by_name:
+            return self.by_name[key]
+        resource = cls(name)
+        self.by_name.setdefault(key, resource)
+        self._collection(cls).append(resource)
+        return resource
+
+    def _collection(self, cls: type[Resource]) -> list[Any]:
+        collections: dict[type[Resource], list[Any]] = {
+            Topic: self.config.topics, Service: self.config.services,
+            Action: self.config.actions, Parameter: self.config.parameters,
+        }
+        return collections[cls]
+
+
+def remaps_in_args(args: str) -> list[tuple[str, str]]:
+    """``from:=to`` pairs among a node's command-line arguments (not ``__name:=``)."""
+    try:
+        words = shlex.split(args)
+    except ValueError:
+        words = args.split()
+    pairs = []
+    for word in words:
+        if ":=" in word and not word.startswith("_"):
+            source, target = word.split(":=", 1)
+            pairs.append((source, target))
+    return pairs
+
+
+def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
+          nodes: Mapping[str, Node]) -> Configuration:
+    """Fill ``config`` with node instances, resources and links; ``nodes`` by pkg/exec."""
+    resources = _Resources(config)
+    config.diagnostics.extend(launch.diagnostics)
+    for param in launch.params:
+        parameter = resources.get(Parameter, param.name)
+        assert isinstance(parameter, Parameter)
+        parameter.type = param.type
+        parameter.value = param.value
+        parameter.set_by_launch = True
+        parameter.launch_location = param.location
+        parameter.launch_conditions = param.conditions
+    seen: dict[str, NodeInstance] = {}
+    for decl in launch.nodes:
+        instance = _instance(decl, nodes, workspace, config)
+        if instance.name in seen and UNKNOWN_MARK not in instance.name:
+            config.diagnostics.append(diag.make(
+                "NODE_NAME_DUPLICATE", instance.location, name=instance.name,
+                other=seen[instance.name].location))
+        seen.setdefault(instance.name, instance)
+        config.nodes.append(instance)
+        if instance.node is None:
+            continue
+        remaps = resolve_remaps(instance.remaps, instance.namespace, instance.name)
+        for call in instance.node.calls:
+            _link(instance, call, remaps, resources, config)
+    return config
+
+
+def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
+              config: Configuration) -> NodeInstance:
+    node = nodes.get(f"{decl.package}/{decl.executable}")
+    if node is None:
+        if workspace.find(decl.package) is None:
+            config.diagnostics.append(diag.make("PACKAGE_NOT_FOUND", decl.location,
+                                                name=decl.package))
+        else:
+            config.diagnostics.append(diag.make(
+                "NODE_NOT_FOUND", decl.location, node=f"{decl.package}/{decl.executable}"))
+    remaps = list(decl.remaps) + remaps_in_args(decl.args)
+    return NodeInstance(decl.name, node, decl.namespace, remaps, decl.args,
+                        decl.conditions, decl.location)
+
+
+def _link(instance: NodeInstance, call: PrimitiveCall, remaps: Mapping[str, str],
+          resources: _Resources, config: Configuration) -> Link:
+    rosname = RosName.make(call.name, instance.namespace, instance.name, remaps)
+    resource = resources.get(RESOURCE_OF_KIND[call.kind], rosname.full)
+    link = LINK_CLASSES[call.kind](
+        node=instance, resource=resource, rosname=rosname, type=call.type,
+        queue_size=call.queue_size, qos=call.qos, latch=call.latch,
+        conditions=(*instance.conditions, *call.conditions), location=call.location,
+        call=call)
+    instance.links.append(link)
+    resource.links.append(link)
+    config.links.append(link)
+    return link

@@ -1,0 +1,49 @@
+"""What a launch file declares, before it meets the node models.
+
+Names here are already resolved against the launch namespaces (``/robot/driver``);
+remappings are kept as written, because a node resolves them in its own namespace.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+from ..diagnostics import Diagnostic
+from ..model.conditions import Condition
+from ..model.location import NOWHERE, Location
+
+
+@dataclass
+class NodeDecl:
+    """A ``<node>`` (ROS 1) or ``Node`` action (ROS 2): one node instance to start."""
+
+    name: str  # full ROS name, ``?`` for unknown parts
+    package: str
+    executable: str
+    namespace: str = "/"
+    args: str = ""
+    remaps: list[tuple[str, str]] = field(default_factory=list)
+    conditions: tuple[Condition, ...] = ()
+    location: Location = NOWHERE
+    anonymous: bool = False
+
+
+@dataclass
+class ParamDecl:
+    """A parameter given a value by the launch file."""
+
+    name: str  # full ROS name
+    value: Any = None
+    type: str | None = None
+    conditions: tuple[Condition, ...] = ()
+    location: Location = NOWHERE
+
+
+@dataclass
+class LaunchModel:
+    files: list[str] = field(default_factory=list)  # every file read, includes too
+    nodes: list[NodeDecl] = field(default_factory=list)
+    params: list[ParamDecl] = field(default_factory=list)
+    args: dict[str, str | None] = field(default_factory=dict)  # top-level arguments
+    diagnostics: list[Diagnostic] = field(default_factory=list)

@@ -1,0 +1,154 @@
+"""package.xml (formats 1, 2 and 3) read with a hardened XML parser."""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Mapping
+from typing import cast
+
+from lxml import etree
+
+from . import diagnostics as diag
+from .diagnostics import Diagnostic
+from .files import read_bytes
+from .model.location import Location
+from .model.source import BuildType, Dependency, Package, Plugin
+
+DEPEND_TAGS = (
+    "depend", "build_depend", "build_export_depend", "buildtool_depend",
+    "buildtool_export_depend", "exec_depend", "run_depend", "test_depend", "doc_depend",
+)
+BUILD_TYPES: tuple[BuildType, ...] = ("catkin", "ament_cmake", "ament_python", "cmake")
+
+
+def xml_parser() -> etree.XMLParser:
+    """An XML parser that never expands entities, loads DTDs or touches the network."""
+    return etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False,
+                           huge_tree=False, remove_comments=True, remove_pis=True)
+
+
+_TOKEN = re.compile(r"\s*(\$\w+|\w[\w.\-]*|==|!=|>=|<=|>|<|\(|\)|\"[^\"]*\"|'[^']*')")
+
+
+def condition_holds(expr: str, env: Mapping[str, str]) -> bool | None:
+    """Evaluate a REP 149 condition (``$ROS_VERSION == 2 and ...``); None if malformed."""
+    tokens: list[str] = []
+    pos = 0
+    expr = expr.strip()
+    while pos < len(expr):
+        match = _TOKEN.match(expr, pos)
+        if not match:
+            return None
+        tokens.append(match.group(1))
+        pos = match.end()
+    values = [_subst(t, env) for t in tokens]
+    try:
+        result, rest = _parse_or(values)
+    except (IndexError, ValueError):
+        return None
+    return result if not rest else None
+
+
+def _subst(token: str, env: Mapping[str, str]) -> str:
+    if token.startswith("$"):
+        return "\x00" + env.get(token[1:], "")
+    if token[:1] in "\"'":
+        return "\x00" + token[1:-1]
+    return token
+
+
+def _parse_or(t: list[str]) -> tuple[bool, list[str]]:
+    left, t = _parse_and(t)
+    while t and t[0] == "or":
+        right, t = _parse_and(t[1:])
+        left = left or right
+    return left, t
+
+
+def _parse_and(t: list[str]) -> tuple[bool, list[str]]:
+    left, t = _parse_cmp(t)
+    while t and t[0] == "and":
+        right, t = _parse_cmp(t[1:])
+        left = left and right
+    return left, t
+
+
+def _parse_cmp(t: list[str]) -> tuple[bool, list[str]]:
+    if t[0] == "(":
+        value, t = _parse_or(t[1:])
+        if not t or t[0] != ")":
+            raise ValueError("unbalanced")
+        return value, t[1:]
+    left, op, right = t[0].lstrip("\x00"), t[1], t[2].lstrip("\x00")
+    ops = {"==": left == right, "!=": left != right}
+    if op in ops:
+        return ops[op], t[3:]
+    if op in (">", "<", ">=", "<="):
+        a, b = _num(left), _num(right)
+        return {">": a > b, "<": a < b, ">=": a >= b, "<=": a <= b}[op], t[3:]
+    raise ValueError(op)
+
+
+def _num(text: str) -> tuple[int | str, ...]:
+    return tuple(int(p) if p.isdigit() else p for p in text.split("."))
+
+
+def parse_manifest(
+    path: str, location: Location, rel_folder: str, env: Mapping[str, str]
+) -> tuple[Package | None, list[Diagnostic]]:
+    """Read one package.xml; ``location`` names the manifest file."""
+    data, found = read_bytes(path, location)
+    if data is None:
+        return None, found
+    try:
+        root = etree.fromstring(data, xml_parser())
+    except etree.XMLSyntaxError as err:
+        line, col = err.position if err.position else (0, 0)
+        where = Location(None, location.file, line, col)
+        return None, [*found, diag.make("PACKAGE_XML_SYNTAX", where, detail=err.msg)]
+    if root.tag != "package":
+        return None, [*found, diag.make("PACKAGE_XML_INVALID", location,
+                                        detail=f"root element is <{root.tag}>")]
+    name = (root.findtext("name") or "").strip()
+    if not name:
+        return None, [*found, diag.make("PACKAGE_XML_INVALID",
+                                        Location(None, location.file, _line(root)),
+                                        detail="no <name>")]
+
+    def active(element: etree._Element) -> bool:
+        condition = element.get("condition")
+        return condition is None or condition_holds(condition, env) is not False
+
+    package = Package(
+        name=name,
+        path=rel_folder,
+        version=(root.findtext("version") or "").strip(),
+        format=int(root.get("format", "1")) if root.get("format", "1").isdigit() else 1,
+        location=Location(name, location.file, _line(root), 0),
+    )
+    for tag in DEPEND_TAGS:
+        for element in root.iter(tag):
+            text = (element.text or "").strip()
+            if text:
+                package.dependencies.append(
+                    Dependency(text, tag, element.get("condition")))
+    build_type: BuildType = "catkin"
+    export = root.find("export")
+    if export is not None:
+        for element in export:
+            if not isinstance(element.tag, str):
+                continue
+            if element.tag == "build_type":
+                text = (element.text or "").strip()
+                if active(element) and text in BUILD_TYPES:
+                    build_type = cast(BuildType, text)
+            elif element.get("plugin"):
+                plugin = element.get("plugin", "").replace("${prefix}", rel_folder)
+                package.plugins.append(Plugin(element.tag, plugin))
+    package.build_type = build_type
+    return package, found
+
+
+def _line(element: etree._Element) -> int:
+    line = element.sourceline
+    return line if isinstance(line, int) else 0

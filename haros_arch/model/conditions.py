@@ -1,0 +1,27 @@
+"""Conditions under which an entity exists.
+
+An entity's ``conditions`` is a tuple read as a conjunction; an empty tuple means the
+entity exists unconditionally.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Literal
+
+from .location import NOWHERE, Location
+
+ConditionKind = Literal["launch", "source", "hint"]
+
+
+@dataclass(frozen=True)
+class Condition:
+    """One condition: ``text`` as written, where it comes from and the construct."""
+
+    text: str
+    kind: ConditionKind = "source"
+    statement: str = "if"
+    location: Location = field(default=NOWHERE)
+
+    def __str__(self) -> str:
+        return f"{self.statement} ({self.text})"

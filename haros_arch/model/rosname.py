@@ -1,0 +1,123 @@
+"""ROS graph resource names: resolution, remapping and wildcard patterns.
+
+Implements the ROS 1 naming rules (http://wiki.ros.org/Names): a name is global
+(``/a/b``), relative (``a/b``, resolved against the node's namespace) or private
+(``~a``, resolved against the node's own name). A ``?`` in a name stands for a part that
+cannot be known statically; ``RosName.pattern`` turns it into a regular expression that
+can be matched against known names.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+from .values import UNKNOWN_MARK
+
+SEP = "/"
+PRIVATE = "~"
+
+
+def clean(name: str) -> str:
+    """Collapse repeated slashes and drop a trailing one (except for the root)."""
+    name = re.sub(r"/+", "/", name)
+    if len(name) > 1 and name.endswith(SEP):
+        name = name[:-1]
+    return name
+
+
+def namespace_of(full: str) -> str:
+    """The namespace of a full name, with its trailing slash: ``/a/b`` -> ``/a/``."""
+    head = full.rsplit(SEP, 1)[0]
+    return head + SEP if head else SEP
+
+
+def as_namespace(ns: str) -> str:
+    """Normalise a namespace to the form ``/a/b/`` (the root is ``/``)."""
+    ns = clean(SEP + ns.strip() + SEP) if ns.strip() not in ("", SEP) else SEP
+    return ns if ns.endswith(SEP) else ns + SEP
+
+
+def resolve(name: str, namespace: str = SEP, node: str | None = None) -> str:
+    """Resolve ``name`` as ROS 1 does for a node named ``node`` in ``namespace``."""
+    namespace = as_namespace(namespace)
+    if not name:
+        return clean(namespace)
+    if name.startswith(SEP):
+        return clean(name)
+    if name.startswith(PRIVATE):
+        owner = node if node is not None else namespace
+        return clean(owner + SEP + name[1:])
+    return clean(namespace + name)
+
+
+def remap(full: str, remaps: Mapping[str, str]) -> str:
+    """Apply resolved remappings (``{from: to}``, both full names) to a full name."""
+    return remaps.get(full, full)
+
+
+def resolve_remaps(
+    pairs: list[tuple[str, str]], namespace: str, node: str | None = None
+) -> dict[str, str]:
+    """Resolve remapping rules as the node does: both sides in the node's namespace."""
+    return {resolve(a, namespace, node): resolve(b, namespace, node) for a, b in pairs}
+
+
+def pattern_for(full: str) -> str:
+    """A regular expression matching the names that a name with ``?`` parts could be."""
+    parts = full.split(UNKNOWN_MARK)
+    return "^" + ".+".join(re.escape(p) for p in parts) + "$"
+
+
+@dataclass(frozen=True)
+class RosName:
+    """A name as written in a call (``given``) and as resolved (``full``)."""
+
+    given: str
+    full: str
+    namespace: str = SEP
+
+    @classmethod
+    def make(
+        cls,
+        given: str,
+        namespace: str = SEP,
+        node: str | None = None,
+        remaps: Mapping[str, str] | None = None,
+    ) -> RosName:
+        full = resolve(given, namespace, node)
+        if remaps:
+            full = remap(full, remaps)
+        return cls(given, full, namespace_of(full))
+
+    @property
+    def own(self) -> str:
+        return self.full.rsplit(SEP, 1)[-1]
+
+    @property
+    def is_global(self) -> bool:
+        return self.given.startswith(SEP)
+
+    @property
+    def is_private(self) -> bool:
+        return self.given.startswith(PRIVATE)
+
+    @property
+    def is_relative(self) -> bool:
+        return not (self.is_global or self.is_private)
+
+    @property
+    def is_unresolved(self) -> bool:
+        return UNKNOWN_MARK in self.full
+
+    @property
+    def pattern(self) -> str:
+        return pattern_for(self.full)
+
+    def matches(self, other: str) -> bool:
+        """True when the known name ``other`` is one this name could stand for."""
+        return re.match(self.pattern, other) is not None
+
+    def __str__(self) -> str:
+        return self.full

@@ -1,0 +1,382 @@
+"""The runtime side of the model: a configuration's Computation Graph.
+
+Node instances, topics, services, actions and parameters are linked by ``Link`` values.
+A configuration owns the list of links; the ``links`` lists on node instances and
+resources are indexes filled when the graph is built, and every other view (who
+publishes, is the topic disconnected, ...) is computed from them.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from typing import Any, ClassVar
+
+from .conditions import Condition
+from .diagnostic import Diagnostic
+from .location import NOWHERE, Location
+from .rosname import RosName, namespace_of
+from .source import Node, PrimitiveCall
+from .values import UNKNOWN_MARK
+
+INDEX: dict[str, Any] = {"json": False}
+REF: dict[str, Any] = {"ref": True}
+LAUNCH_WRITER = "<launch>"
+
+
+def _names(links: list[Link]) -> list[str]:
+    return sorted({link.node.name for link in links})
+
+
+@dataclass(eq=False)
+class NodeInstance:
+    """A node started by a configuration: its ROS name and what it runs."""
+
+    name: str
+    node: Node | None = field(default=None, metadata=REF)
+    namespace: str = "/"
+    remaps: list[tuple[str, str]] = field(default_factory=list)
+    args: str = ""
+    conditions: tuple[Condition, ...] = ()
+    location: Location = NOWHERE
+    links: list[Link] = field(default_factory=list, metadata=INDEX)
+
+    JSON_VIEWS: ClassVar[dict[str, Callable[[Any], Any]]] = {}
+
+    @property
+    def rosname(self) -> RosName:
+        return RosName(self.name, self.name, namespace_of(self.name))
+
+    def _of(self, kind: str) -> list[Link]:
+        return [link for link in self.links if link.kind == kind]
+
+    @property
+    def publishers(self) -> list[Link]:
+        return self._of("publish")
+
+    @property
+    def subscribers(self) -> list[Link]:
+        return self._of("subscribe")
+
+    @property
+    def servers(self) -> list[Link]:
+        return self._of("server")
+
+    @property
+    def clients(self) -> list[Link]:
+        return self._of("client")
+
+    @property
+    def action_servers(self) -> list[Link]:
+        return self._of("action-server")
+
+    @property
+    def action_clients(self) -> list[Link]:
+        return self._of("action-client")
+
+    @property
+    def reads(self) -> list[Link]:
+        return self._of("read")
+
+    @property
+    def writes(self) -> list[Link]:
+        return self._of("write")
+
+    def __repr__(self) -> str:
+        return f"NodeInstance({self.name})"
+
+
+@dataclass(eq=False)
+class Resource:
+    """What links point at: a topic, service, action or parameter."""
+
+    name: str
+    links: list[Link] = field(default_factory=list, metadata=INDEX)
+
+    @property
+    def rosname(self) -> RosName:
+        return RosName(self.name, self.name, namespace_of(self.name))
+
+    @property
+    def is_unresolved(self) -> bool:
+        return UNKNOWN_MARK in self.name
+
+    @property
+    def types(self) -> list[str]:
+        return sorted({link.type for link in self.links if link.type})
+
+    @property
+    def conditions(self) -> tuple[Condition, ...]:
+        """Conditions common to every link: the resource exists only under them."""
+        if not self.links:
+            return ()
+        common = list(self.links[0].conditions)
+        for link in self.links[1:]:
+            common = [c for c in common if c in link.conditions]
+        return tuple(common)
+
+    def _of(self, kind: str) -> list[Link]:
+        return [link for link in self.links if link.kind == kind]
+
+    def __repr__(self) -> str:
+        return f"{type(self).__name__}({self.name})"
+
+
+@dataclass(eq=False, repr=False)
+class Topic(Resource):
+    JSON_VIEWS: ClassVar[dict[str, Callable[[Any], Any]]] = {
+        "types": lambda t: t.types,
+        "publishers": lambda t: _names(t.publishers),
+        "subscribers": lambda t: _names(t.subscribers),
+        "conditions": lambda t: t.conditions,
+    }
+
+    @property
+    def publishers(self) -> list[Link]:
+        return self._of("publish")
+
+    @property
+    def subscribers(self) -> list[Link]:
+        return self._of("subscribe")
+
+    @property
+    def is_disconnected(self) -> bool:
+        return not (self.publishers and self.subscribers)
+
+
+@dataclass(eq=False, repr=False)
+class Service(Resource):
+    JSON_VIEWS: ClassVar[dict[str, Callable[[Any], Any]]] = {
+        "types": lambda s: s.types,
+        "servers": lambda s: _names(s.servers),
+        "clients": lambda s: _names(s.clients),
+        "conditions": lambda s: s.conditions,
+    }
+
+    @property
+    def servers(self) -> list[Link]:
+        return self._of("server")
+
+    @property
+    def clients(self) -> list[Link]:
+        return self._of("client")
+
+    @property
+    def is_disconnected(self) -> bool:
+        return not (self.servers and self.clients)
+
+
+@dataclass(eq=False, repr=False)
+class Action(Resource):
+    JSON_VIEWS: ClassVar[dict[str, Callable[[Any], Any]]] = {
+        "types": lambda a: a.types,
+        "servers": lambda a: _names(a.servers),
+        "clients": lambda a: _names(a.clients),
+        "conditions": lambda a: a.conditions,
+    }
+
+    @property
+    def servers(self) -> list[Link]:
+        return self._of("action-server")
+
+    @property
+    def clients(self) -> list[Link]:
+        return self._of("action-client")
+
+    @property
+    def is_disconnected(self) -> bool:
+        return not (self.servers and self.clients)
+
+
+@dataclass(eq=False, repr=False)
+class Parameter(Resource):
+    """A parameter; ``set_by_launch`` when a launch file gives it a value."""
+
+    type: str | None = None
+    value: Any = None
+    set_by_launch: bool = field(default=False, metadata=INDEX)
+    launch_location: Location = field(default=NOWHERE, metadata={"json": "location"})
+    launch_conditions: tuple[Condition, ...] = field(default=(), metadata=INDEX)
+
+    JSON_VIEWS: ClassVar[dict[str, Callable[[Any], Any]]] = {
+        "readers": lambda p: _names(p.readers),
+        "writers": lambda p: p.writer_names,
+        "conditions": lambda p: p.conditions,
+    }
+
+    @property
+    def types(self) -> list[str]:
+        found = {link.type for link in self.links if link.type}
+        if self.type:
+            found.add(self.type)
+        return sorted(found)
+
+    @property
+    def readers(self) -> list[Link]:
+        return self._of("read")
+
+    @property
+    def writers(self) -> list[Link]:
+        return self._of("write")
+
+    @property
+    def writer_names(self) -> list[str]:
+        names = _names(self.writers)
+        return [LAUNCH_WRITER, *names] if self.set_by_launch else names
+
+    @property
+    def conditions(self) -> tuple[Condition, ...]:
+        if self.set_by_launch:
+            return self.launch_conditions if not self.links else ()
+        return super().conditions
+
+
+@dataclass(eq=False)
+class Link:
+    """A node instance's use of a resource, from one primitive call."""
+
+    KIND: ClassVar[str] = ""
+    node: NodeInstance = field(metadata=INDEX)
+    resource: Resource = field(metadata={"json": False})
+    rosname: RosName = field(metadata={"json": False})
+    type: str | None = None
+    queue_size: int | None = None
+    qos: dict[str, Any] | None = None
+    latch: bool = False
+    conditions: tuple[Condition, ...] = ()
+    location: Location = NOWHERE
+    call: PrimitiveCall | None = field(default=None, metadata=INDEX)
+
+    JSON_VIEWS: ClassVar[dict[str, Callable[[Any], Any]]] = {}
+    JSON_HEAD: ClassVar[dict[str, Callable[[Any], Any]]] = {
+        "kind": lambda link: link.kind,
+        "node": lambda link: link.node.name,
+        "name": lambda link: link.rosname.full,
+        "given": lambda link: link.rosname.given,
+    }
+
+    @property
+    def kind(self) -> str:
+        return self.KIND
+
+    @property
+    def name(self) -> str:
+        return self.rosname.full
+
+    def __repr__(self) -> str:
+        return f"{type(self).__name__}({self.node.name} -> {self.rosname.full})"
+
+
+class _TopicLink(Link):
+    @property
+    def topic(self) -> Topic:
+        return self.resource  # type: ignore[return-value]
+
+    @property
+    def topic_name(self) -> str:
+        return self.rosname.full
+
+
+class PublishLink(_TopicLink):
+    KIND = "publish"
+
+
+class SubscribeLink(_TopicLink):
+    KIND = "subscribe"
+
+
+class _ServiceLink(Link):
+    @property
+    def service(self) -> Service:
+        return self.resource  # type: ignore[return-value]
+
+    @property
+    def service_name(self) -> str:
+        return self.rosname.full
+
+
+class ServiceProviderLink(_ServiceLink):
+    KIND = "server"
+
+
+class ServiceClientLink(_ServiceLink):
+    KIND = "client"
+
+
+class _ActionLink(Link):
+    @property
+    def action(self) -> Action:
+        return self.resource  # type: ignore[return-value]
+
+    @property
+    def action_name(self) -> str:
+        return self.rosname.full
+
+
+class ActionServerLink(_ActionLink):
+    KIND = "action-server"
+
+
+class ActionClientLink(_ActionLink):
+    KIND = "action-client"
+
+
+class _ParamLink(Link):
+    @property
+    def parameter(self) -> Parameter:
+        return self.resource  # type: ignore[return-value]
+
+    @property
+    def param_name(self) -> str:
+        return self.rosname.full
+
+
+class ParamReadLink(_ParamLink):
+    KIND = "read"
+
+
+class ParamWriteLink(_ParamLink):
+    KIND = "write"
+
+
+LINK_CLASSES: dict[str, type[Link]] = {
+    cls.KIND: cls
+    for cls in (
+        PublishLink, SubscribeLink, ServiceProviderLink, ServiceClientLink,
+        ActionServerLink, ActionClientLink, ParamReadLink, ParamWriteLink,
+    )
+}
+# ROS 2 parameter declarations read the parameter (and give it its default value)
+LINK_CLASSES["declare"] = ParamReadLink
+
+
+@dataclass(eq=False)
+class Configuration:
+    """One configuration of the project and the Computation Graph it creates."""
+
+    name: str
+    launch: list[str] = field(default_factory=list)
+    args: dict[str, str] = field(default_factory=dict)
+    environment: dict[str, str] = field(default_factory=dict, metadata=INDEX)
+    nodes: list[NodeInstance] = field(default_factory=list)
+    topics: list[Topic] = field(default_factory=list)
+    services: list[Service] = field(default_factory=list)
+    actions: list[Action] = field(default_factory=list)
+    parameters: list[Parameter] = field(default_factory=list)
+    links: list[Link] = field(default_factory=list)
+    diagnostics: list[Diagnostic] = field(default_factory=list)
+
+    def __repr__(self) -> str:
+        return f"Configuration({self.name})"
+
+    def node(self, name: str) -> NodeInstance | None:
+        return next((n for n in self.nodes if n.name == name), None)
+
+    def topic(self, name: str) -> Topic | None:
+        return next((t for t in self.topics if t.name == name), None)
+
+    def service(self, name: str) -> Service | None:
+        return next((s for s in self.services if s.name == name), None)
+
+    def parameter(self, name: str) -> Parameter | None:
+        return next((p for p in self.parameters if p.name == name), None)

@@ -1,0 +1,115 @@
+"""The source side of the model: packages, their runnable nodes and the ROS calls in them."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any, ClassVar, Literal
+
+from .conditions import Condition
+from .location import NOWHERE, Location
+
+BuildType = Literal["catkin", "ament_cmake", "ament_python", "cmake", "unknown"]
+NodeKind = Literal["executable", "nodelet", "component", "script"]
+Language = Literal["cpp", "python"]
+
+# The kinds of primitive calls; the same words are used for graph links.
+CALL_KINDS = (
+    "publish", "subscribe", "server", "client", "action-server", "action-client",
+    "read", "write", "declare",
+)
+CallKind = Literal[
+    "publish", "subscribe", "server", "client", "action-server", "action-client",
+    "read", "write", "declare",
+]
+
+
+@dataclass(frozen=True)
+class Dependency:
+    """A dependency declared in package.xml; ``condition`` as written, if any."""
+
+    name: str
+    kind: str = "depend"
+    condition: str | None = None
+
+
+@dataclass(frozen=True)
+class Plugin:
+    """A plugin description exported by a package (``<export><nodelet plugin=.../>``)."""
+
+    kind: str
+    file: str
+
+
+@dataclass
+class PrimitiveCall:
+    """One call to a ROS primitive in a node's source.
+
+    ``name`` is relative to the node with the handle's namespace applied (``~frame_id``,
+    ``motors/status``, ``/robot/x``) and ``?`` for parts unknown statically.
+    """
+
+    kind: CallKind
+    name: str
+    type: str | None = None
+    queue_size: int | None = None
+    qos: dict[str, Any] | None = None
+    latch: bool = False
+    callback: str | None = None
+    conditions: tuple[Condition, ...] = ()
+    location: Location = NOWHERE
+
+
+@dataclass
+class SourceFile:
+    path: str
+    package: str
+    language: Language
+
+
+@dataclass(eq=False)
+class Node:
+    """A build target that can run: executable, nodelet/component library or script."""
+
+    package: str
+    executable: str
+    kind: NodeKind = "executable"
+    language: Language = "cpp"
+    sources: list[str] = field(default_factory=list)
+    calls: list[PrimitiveCall] = field(default_factory=list)
+    # the node name the source gives itself (ros::init, rclcpp::Node, rospy.init_node)
+    rosname: str | None = None
+    conditions: tuple[Condition, ...] = ()
+    location: Location = NOWHERE
+
+    JSON_VIEWS: ClassVar[dict[str, str]] = {}
+
+    @property
+    def name(self) -> str:
+        return f"{self.package}/{self.executable}"
+
+    def __repr__(self) -> str:
+        return f"Node({self.name})"
+
+
+@dataclass(eq=False)
+class Package:
+    name: str
+    path: str
+    build_type: BuildType = "unknown"
+    version: str = ""
+    format: int = 1
+    dependencies: list[Dependency] = field(default_factory=list)
+    plugins: list[Plugin] = field(default_factory=list)
+    nodes: list[Node] = field(default_factory=list)
+    location: Location = NOWHERE
+    # absolute folder on disk; not part of the JSON model
+    root: str = field(default="", metadata={"json": False})
+
+    def __repr__(self) -> str:
+        return f"Package({self.name})"
+
+    def node(self, executable: str) -> Node | None:
+        for node in self.nodes:
+            if node.executable == executable:
+                return node
+        return None

@@ -1,0 +1,76 @@
+"""Values that may be only partly known statically.
+
+A ``Value`` is a sequence of parts; each part is either literal text or an ``Unknown``
+that remembers where the unknown came from (an unset launch argument, an environment
+variable, a string read at run time). Names built from such values keep every known part
+and show ``?`` where a part is unknown.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import dataclass
+
+UNKNOWN_MARK = "?"
+
+
+@dataclass(frozen=True)
+class Unknown:
+    """A part whose text cannot be known statically; ``origin`` says why."""
+
+    origin: str = ""
+
+    def __str__(self) -> str:
+        return UNKNOWN_MARK
+
+
+Part = str | Unknown
+
+
+@dataclass(frozen=True)
+class Value:
+    parts: tuple[Part, ...] = ()
+
+    @classmethod
+    def of(cls, *parts: Part | Value) -> Value:
+        """Concatenate literals, unknowns and other values, merging adjacent literals."""
+        merged: list[Part] = []
+        for item in parts:
+            pieces: Iterable[Part] = item.parts if isinstance(item, Value) else (item,)
+            for piece in pieces:
+                if isinstance(piece, str):
+                    if not piece:
+                        continue
+                    if merged and isinstance(merged[-1], str):
+                        merged[-1] = merged[-1] + piece
+                        continue
+                merged.append(piece)
+        return cls(tuple(merged))
+
+    @classmethod
+    def unknown(cls, origin: str = "") -> Value:
+        return cls((Unknown(origin),))
+
+    @property
+    def is_known(self) -> bool:
+        return all(isinstance(p, str) for p in self.parts)
+
+    @property
+    def text(self) -> str:
+        """The value as text, with ``?`` for each unknown part."""
+        return "".join(str(p) for p in self.parts)
+
+    @property
+    def literal(self) -> str | None:
+        """The text when fully known, else None."""
+        return self.text if self.is_known else None
+
+    @property
+    def origins(self) -> tuple[str, ...]:
+        return tuple(p.origin for p in self.parts if isinstance(p, Unknown))
+
+    def __add__(self, other: Value | str) -> Value:
+        return Value.of(self, other)
+
+    def __str__(self) -> str:
+        return self.text

@@ -1,0 +1,98 @@
+"""The whole pipeline in one function: project file to model.
+
+    project ─ workspace.scan ─ cmake.parse_package ─ extract_node ─ launch.load ─ graph.build
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Mapping
+
+from . import cmake, graph, launch
+from . import diagnostics as diag
+from .extract import extract_node
+from .launch.model import LaunchModel
+from .model.location import Location
+from .model.model import Model
+from .model.runtime import Configuration
+from .model.source import Node, Package
+from .project import ConfigurationSpec, Project
+from .workspace import Workspace, scan
+
+
+def analyse(project: Project, environment: Mapping[str, str] | None = None) -> Model:
+    """Scan the workspace, read build files and sources, and build every configuration."""
+    env = {**(os.environ if environment is None else environment), **project.environment}
+    workspace = scan(project.workspace, env)
+    model = Model(project.name, diagnostics=list(workspace.diagnostics))
+    project_file = os.path.relpath(project.path)
+
+    launches: dict[str, LaunchModel] = {}
+    for spec in project.configurations:
+        launches[spec.name] = _load_launch(spec, project, workspace, env)
+
+    wanted = list(project.packages) or sorted(workspace.packages)
+    for name in project.packages:
+        if name not in workspace.packages:
+            model.diagnostics.append(diag.make(
+                "PACKAGE_NOT_FOUND", Location(file=project_file), name=name))
+    for launched in launches.values():
+        wanted.extend(decl.package for decl in launched.nodes)
+    nodes: dict[str, Node] = {}
+    for name in dict.fromkeys(wanted):
+        package = workspace.packages.get(name)
+        if package is None:
+            continue
+        model.packages.append(package)
+        model.diagnostics.extend(_analyse_package(package, workspace))
+        nodes.update((node.name, node) for node in package.nodes)
+
+    for spec in project.configurations:
+        config = Configuration(spec.name, list(spec.launch), dict(spec.args),
+                               {**env, **spec.environment})
+        graph.build(config, launches[spec.name], workspace, nodes)
+        model.configurations.append(config)
+    return model
+
+
+def _analyse_package(package: Package, workspace: Workspace) -> list[diag.Diagnostic]:
+    found: list[diag.Diagnostic] = []
+    if package.build_type in ("catkin", "ament_cmake", "cmake"):
+        package.nodes, found = cmake.parse_package(package, workspace)
+    for node in package.nodes:
+        found.extend(extract_node(node, workspace))
+    return found
+
+
+def launch_path(entry: str, project: Project, workspace: Workspace) -> str | None:
+    """A launch file named ``pkg/relative/path`` (as in HAROS) or by a path."""
+    candidate = os.path.join(project.folder, entry)
+    if os.path.isabs(entry) or os.path.isfile(candidate):
+        return candidate
+    package, _, rest = entry.partition("/")
+    folder = workspace.find(package)
+    if folder is None:
+        return None
+    return os.path.join(folder, rest)
+
+
+def _load_launch(spec: ConfigurationSpec, project: Project, workspace: Workspace,
+                 env: Mapping[str, str]) -> LaunchModel:
+    merged = LaunchModel()
+    where = Location(file=os.path.relpath(project.path), line=spec.line, column=1)
+    for entry in spec.launch:
+        path = launch_path(entry, project, workspace)
+        if path is None:
+            merged.diagnostics.append(diag.make(
+                "PACKAGE_NOT_FOUND", where, name=entry.partition("/")[0]))
+            continue
+        if not os.path.isfile(path):
+            merged.diagnostics.append(diag.make("LAUNCH_FILE_MISSING", where, path=entry))
+            continue
+        loaded = launch.load(path, workspace, spec.args, {**env, **spec.environment})
+        merged.files.extend(loaded.files)
+        merged.nodes.extend(loaded.nodes)
+        merged.params.extend(loaded.params)
+        merged.args.update(loaded.args)
+        merged.diagnostics.extend(loaded.diagnostics)
+    return merged

@@ -1,0 +1,143 @@
+"""Find the packages of a workspace, and the installed ones that ``$(find)`` can see."""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass, field
+
+from . import diagnostics as diag
+from .diagnostics import Diagnostic
+from .manifest import parse_manifest
+from .model.location import Location
+from .model.source import Package
+
+IGNORE_MARKERS = ("CATKIN_IGNORE", "COLCON_IGNORE", "AMENT_IGNORE")
+SKIP_FOLDERS = {"build", "devel", "install", "log", "node_modules", "__pycache__"}
+MAX_DEPTH = 12
+
+
+@dataclass
+class Workspace:
+    """The packages found under ``root`` (the first workspace folder) and beyond."""
+
+    root: str
+    roots: list[str] = field(default_factory=list)
+    packages: dict[str, Package] = field(default_factory=dict)
+    diagnostics: list[Diagnostic] = field(default_factory=list)
+    environment: Mapping[str, str] = field(default_factory=dict)
+    _installed: dict[str, str | None] = field(default_factory=dict)
+
+    def relpath(self, path: str) -> str:
+        """A path relative to the workspace root when inside it, else absolute."""
+        path = os.path.abspath(path)
+        rel = os.path.relpath(path, self.root)
+        return path if rel.startswith("..") else rel
+
+    def package_of(self, path: str) -> Package | None:
+        """The workspace package whose folder holds ``path``."""
+        path = os.path.abspath(path)
+        best: Package | None = None
+        for package in self.packages.values():
+            if (path == package.root or path.startswith(package.root + os.sep)) and (
+                best is None or len(package.root) > len(best.root)
+            ):
+                best = package
+        return best
+
+    def location(self, path: str, line: int = 0, column: int = 0) -> Location:
+        package = self.package_of(path)
+        return Location(package.name if package else None, self.relpath(path), line, column)
+
+    def find(self, name: str) -> str | None:
+        """Absolute folder of package ``name``, in the workspace or installed."""
+        if name in self.packages:
+            return self.packages[name].root
+        if name not in self._installed:
+            self._installed[name] = _find_installed(name, self.environment)
+        return self._installed[name]
+
+
+def scan(roots: Iterable[str], environment: Mapping[str, str] | None = None) -> Workspace:
+    """Find every package under ``roots``. Problems become diagnostics, never exceptions."""
+    env = dict(os.environ if environment is None else environment)
+    roots = [os.path.abspath(r) for r in roots]
+    ws = Workspace(root=roots[0] if roots else os.getcwd(), roots=roots, environment=env)
+    seen: set[str] = set()
+    for top in roots:
+        if not os.path.isdir(top):
+            ws.diagnostics.append(diag.make("WORKSPACE_MISSING", Location(file=top), path=top))
+            continue
+        for folder in _package_folders(top):
+            real = os.path.realpath(folder)
+            if real in seen:
+                continue
+            seen.add(real)
+            manifest = os.path.join(folder, "package.xml")
+            package, found = parse_manifest(
+                manifest, Location(None, ws.relpath(manifest)), ws.relpath(folder), env)
+            ws.diagnostics.extend(found)
+            if package is None:
+                continue
+            package.root = folder
+            if package.name in ws.packages:
+                other = ws.packages[package.name]
+                ws.diagnostics.append(diag.make(
+                    "PACKAGE_DUPLICATE", package.location, name=package.name,
+                    other=other.location.file))
+                continue
+            if package.build_type == "catkin" and not os.path.exists(
+                os.path.join(folder, "CMakeLists.txt")
+            ) and os.path.exists(os.path.join(folder, "setup.py")):
+                package.build_type = "ament_python"
+            ws.packages[package.name] = package
+    return ws
+
+
+def _package_folders(top: str) -> Iterable[str]:
+    """Folders holding a package.xml, honouring ignore markers; packages do not nest."""
+    stack = [(top, 0)]
+    while stack:
+        folder, depth = stack.pop()
+        try:
+            entries = sorted(os.listdir(folder))
+        except OSError:
+            continue
+        if any(marker in entries for marker in IGNORE_MARKERS):
+            continue
+        if "package.xml" in entries:
+            yield folder
+            continue
+        if depth >= MAX_DEPTH:
+            continue
+        for entry in reversed(entries):
+            path = os.path.join(folder, entry)
+            if entry.startswith(".") or entry in SKIP_FOLDERS:
+                continue
+            if os.path.isdir(path) and not os.path.islink(path):
+                stack.append((path, depth + 1))
+
+
+def installed_roots(env: Mapping[str, str]) -> list[str]:
+    """Folders where installed packages live, as roslaunch and ros2 would look."""
+    roots: list[str] = []
+    for entry in env.get("ROS_PACKAGE_PATH", "").split(os.pathsep):
+        if entry:
+            roots.append(entry)
+    for var in ("AMENT_PREFIX_PATH", "CMAKE_PREFIX_PATH"):
+        for prefix in env.get(var, "").split(os.pathsep):
+            if prefix:
+                roots.append(os.path.join(prefix, "share"))
+    return roots
+
+
+def _find_installed(name: str, env: Mapping[str, str]) -> str | None:
+    for root in installed_roots(env):
+        candidate = os.path.join(root, name)
+        if os.path.isfile(os.path.join(candidate, "package.xml")):
+            return candidate
+        if os.path.isfile(os.path.join(root, "package.xml")) and os.path.basename(
+            root.rstrip(os.sep)
+        ) == name:
+            return root
+    return None

@@ -1,0 +1,119 @@
+from __future__ import annotations
+
+import pytest
+from conftest import package_xml
+
+from haros_arch.cmake import parse_package, targets_of
+from haros_arch.cmake.lexer import CMakeSyntaxError, tokenize
+from haros_arch.workspace import scan
+
+
+def test_lexer_argument_forms():
+    commands = tokenize(r'''
+# a comment
+#[[ a bracket
+comment ]]
+set(A "quoted \"x\" ${B}" unquoted\ space [==[bracket ]] ${raw}]==])
+message(STATUS "line \
+continued")
+if((A AND B) OR C)
+''')
+    names = [c.name for c in commands]
+    assert names == ["set", "message", "if"]
+    args = commands[0].args
+    assert [a.kind for a in args] == ["unquoted", "quoted", "unquoted", "bracket"]
+    assert args[1].text == 'quoted "x" ${B}'
+    assert args[2].text == "unquoted space"
+    assert args[3].text == "bracket ]] ${raw}"
+    assert commands[1].args[1].text == "line continued"
+    assert [a.text for a in commands[2].args] == ["(", "A", "AND", "B", ")", "OR", "C"]
+    assert (commands[0].line, commands[0].column) == (5, 1)
+
+
+@pytest.mark.parametrize(("text", "line"), [
+    ('set(A "unterminated\n', 1),
+    ("set(A B\n", 1),
+    ("not a command\n", 1),
+    ("set(A [[open\n", 1),
+])
+def test_lexer_errors_carry_line(text, line):
+    with pytest.raises(CMakeSyntaxError) as caught:
+        tokenize(text)
+    assert caught.value.line == line
+
+
+def workspace_with(write_tree, cmake: str, sources=("src/a.cpp", "src/b.cpp", "src/c.cpp")):
+    files = {"src/pkg/package.xml": package_xml("pkg"), "src/pkg/CMakeLists.txt": cmake}
+    files.update({f"src/pkg/{s}": "int main() {}\n" for s in sources})
+    root = write_tree(files)
+    ws = scan([str(root / "src")], {})
+    return ws, ws.packages["pkg"]
+
+
+def test_executables_through_variables_and_foreach(write_tree):
+    ws, pkg = workspace_with(write_tree, """
+        project(pkg)
+        set(NODES a b)
+        list(APPEND NODES c)
+        foreach(n ${NODES})
+          add_executable(${PROJECT_NAME}_${n} src/${n}.cpp)
+        endforeach()
+        add_library(helpers src/a.cpp)
+        """)
+    nodes, found = parse_package(pkg, ws)
+    assert [n.executable for n in nodes] == ["pkg_a", "pkg_b", "pkg_c"]
+    assert nodes[0].sources == ["pkg/src/a.cpp"]
+    assert nodes[0].location.file == "pkg/CMakeLists.txt"
+    assert nodes[0].location.line == 5
+    assert found == []
+
+
+def test_output_name_target_sources_and_missing_source(write_tree):
+    ws, pkg = workspace_with(write_tree, """
+        project(pkg)
+        add_executable(node_impl src/a.cpp)
+        target_sources(node_impl PRIVATE src/b.cpp)
+        set_target_properties(node_impl PROPERTIES OUTPUT_NAME node)
+        add_executable(ghost src/ghost.cpp)
+        """)
+    nodes, found = parse_package(pkg, ws)
+    assert [(n.executable, n.sources) for n in nodes] == [
+        ("node", ["pkg/src/a.cpp", "pkg/src/b.cpp"]), ("ghost", [])]
+    assert [(d.code, d.location.line) for d in found] == [("CMAKE_SOURCE_MISSING", 5)]
+
+
+def test_unknown_condition_makes_targets_conditional(write_tree):
+    ws, pkg = workspace_with(write_tree, """
+        project(pkg)
+        option(WITH_B "build b" OFF)
+        if(FALSE)
+          add_executable(never src/a.cpp)
+        elseif(NOT DEFINED PROJECT_NAME)
+          add_executable(never2 src/a.cpp)
+        endif()
+        if(SOME_FOUND)
+          add_executable(maybe src/b.cpp)
+        else()
+          add_executable(otherwise src/c.cpp)
+        endif()
+        """)
+    targets, _ = targets_of(pkg, ws)
+    by_name = {t.name: t for t in targets}
+    assert sorted(by_name) == ["maybe", "otherwise"]
+    assert [(c.statement, c.text) for c in by_name["maybe"].conditions] == [
+        ("if", "SOME_FOUND")]
+    assert [(c.statement, c.text) for c in by_name["otherwise"].conditions] == [
+        ("else", "SOME_FOUND")]
+
+
+def test_syntax_error_keeps_commands_before_it(write_tree):
+    ws, pkg = workspace_with(write_tree, """
+        project(pkg)
+        add_executable(first src/a.cpp)
+        set(BROKEN "never closed)
+        add_executable(second src/b.cpp)
+        """)
+    nodes, found = parse_package(pkg, ws)
+    assert [n.executable for n in nodes] == ["first"]
+    assert [(d.code, d.location.file, d.location.line) for d in found] == [
+        ("CMAKE_SYNTAX", "pkg/CMakeLists.txt", 3)]

@@ -1,0 +1,136 @@
+from __future__ import annotations
+
+from conftest import package_xml
+
+from haros_arch.launch import load
+from haros_arch.workspace import scan
+
+
+def load_launch(write_tree, launch: str, extra: dict[str, str] | None = None,
+                args: dict[str, str] | None = None, env: dict[str, str] | None = None):
+    files = {"src/pkg/package.xml": package_xml("pkg"), "src/pkg/launch/main.launch": launch}
+    files.update(extra or {})
+    root = write_tree(files)
+    ws = scan([str(root / "src")], env or {})
+    return load(str(root / "src/pkg/launch/main.launch"), ws, args or {}, env or {})
+
+
+def test_nodes_params_and_remaps(write_tree):
+    model = load_launch(write_tree, """
+        <launch>
+          <param name="frequency" type="double" value="1" />
+          <param name="auto_int" value="3" />
+          <param name="auto_bool" value="True" />
+          <param name="auto_str" value="hello" />
+          <remap from="a" to="b" />
+          <node name="listener" pkg="example" type="reactive" args="--x 1">
+            <param name="rate" value="2.5" />
+            <param name="~private" value="p" />
+            <remap from="chatter" to="/global/chatter" />
+          </node>
+        </launch>
+        """)
+    assert [(p.name, p.value, p.type) for p in model.params] == [
+        ("/frequency", 1.0, "double"), ("/auto_int", 3, "int"), ("/auto_bool", True, "bool"),
+        ("/auto_str", "hello", "str"), ("/listener/rate", 2.5, "double"),
+        ("/listener/private", "p", "str")]
+    node = model.nodes[0]
+    assert (node.name, node.package, node.executable, node.args) == (
+        "/listener", "example", "reactive", "--x 1")
+    assert node.remaps == [("a", "b"), ("chatter", "/global/chatter")]
+    assert node.location.file == "pkg/launch/main.launch"
+    assert node.location.line == 7
+    assert model.diagnostics == []
+
+
+def test_groups_args_and_conditions(write_tree):
+    model = load_launch(write_tree, """
+        <launch>
+          <arg name="robot" default="r1" />
+          <arg name="sim" default="false" />
+          <arg name="mystery" />
+          <group ns="$(arg robot)">
+            <remap from="scan" to="base_scan" />
+            <node name="driver" pkg="p" type="d" ns="hw" />
+            <group ns="/abs">
+              <node name="n" pkg="p" type="d" />
+            </group>
+          </group>
+          <node name="outside" pkg="p" type="d" />
+          <node name="sim_only" pkg="p" type="d" if="$(arg sim)" />
+          <node name="real_only" pkg="p" type="d" unless="$(arg sim)" />
+          <node name="maybe" pkg="p" type="d" if="$(arg mystery)" />
+          <node name="$(arg mystery)_node" pkg="p" type="d" />
+        </launch>
+        """, args={"robot": "bot"})
+    names = [n.name for n in model.nodes]
+    assert names == ["/bot/hw/driver", "/abs/n", "/outside", "/real_only", "/maybe", "/?_node"]
+    assert model.nodes[0].remaps == [("scan", "base_scan")]
+    assert model.nodes[2].remaps == []
+    maybe = model.nodes[4]
+    assert [(c.kind, c.statement, c.text) for c in maybe.conditions] == [
+        ("launch", "if", "$(arg mystery)")]
+    assert [d.code for d in model.diagnostics] == ["LAUNCH_ARG_UNSET", "LAUNCH_ARG_UNSET"]
+    assert model.args == {"robot": "bot", "sim": "false", "mystery": None}
+
+
+def test_include_with_args_ns_and_find(write_tree):
+    model = load_launch(write_tree, """
+        <launch>
+          <include file="$(find pkg)/launch/part.launch" ns="left">
+            <arg name="side" value="L" />
+          </include>
+          <include file="$(dirname)/part.launch" />
+        </launch>
+        """, extra={"src/pkg/launch/part.launch": """
+        <launch>
+          <arg name="side" default="none" />
+          <node name="cam_$(arg side)" pkg="p" type="cam" />
+        </launch>
+        """})
+    assert [n.name for n in model.nodes] == ["/left/cam_L", "/cam_none"]
+    assert model.files == ["pkg/launch/main.launch", "pkg/launch/part.launch",
+                           "pkg/launch/part.launch"]
+
+
+def test_env_and_optenv(write_tree):
+    model = load_launch(write_tree, """
+        <launch>
+          <node name="$(env ROBOT)" pkg="p" type="d" />
+          <node name="$(env NOT_SET)" pkg="p" type="d" />
+          <node name="$(optenv NOT_SET fallback)" pkg="p" type="d" />
+          <node name="$(anon worker)" pkg="p" type="d" />
+        </launch>
+        """, env={"ROBOT": "atlas"})
+    assert [n.name for n in model.nodes] == ["/atlas", "/?", "/fallback", "/worker_?"]
+
+
+def test_bad_input_becomes_diagnostics(write_tree):
+    model = load_launch(write_tree, """
+        <launch>
+          <nodes name="typo" />
+          <node name="x" pkg="p" type="d" colour="red" />
+          <node pkg="p" type="d" />
+          <param value="1" />
+          <node name="y" pkg="p" type="d" if="maybe" />
+          <include file="$(find pkg)/launch/missing.launch" />
+          <include file="$(find pkg)/launch/main.launch" />
+          <node name="z" pkg="p" type="$(arg undeclared)" />
+          <node name="e" pkg="p" type="$(eval 1 + 1)" />
+        </launch>
+        """)
+    found = [(d.code, d.location.line) for d in model.diagnostics]
+    assert found == [
+        ("LAUNCH_UNKNOWN_TAG", 2), ("LAUNCH_UNKNOWN_ATTRIBUTE", 3),
+        ("LAUNCH_MISSING_ATTRIBUTE", 4), ("LAUNCH_MISSING_ATTRIBUTE", 5),
+        ("LAUNCH_BAD_VALUE", 6), ("LAUNCH_FILE_MISSING", 7), ("LAUNCH_BAD_VALUE", 8),
+        ("LAUNCH_BAD_VALUE", 9), ("LAUNCH_UNSUPPORTED", 10)]
+    assert [n.name for n in model.nodes] == ["/x", "/z", "/e"]
+    assert all(d.location.file == "pkg/launch/main.launch" for d in model.diagnostics)
+
+
+def test_malformed_xml(write_tree):
+    model = load_launch(write_tree, "<launch>\n  <node name='a'\n</launch>\n")
+    assert [(d.code, d.location.line) for d in model.diagnostics] == [
+        ("LAUNCH_XML_SYNTAX", 3)]
+    assert model.nodes == []

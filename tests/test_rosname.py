@@ -1,0 +1,56 @@
+from __future__ import annotations
+
+import pytest
+
+from haros_arch.model.rosname import RosName, as_namespace, resolve, resolve_remaps
+from haros_arch.model.values import Unknown, Value
+
+
+@pytest.mark.parametrize(("name", "ns", "node", "full"), [
+    ("chatter", "/", "/talker", "/chatter"),
+    ("chatter", "/robot/", "/robot/talker", "/robot/chatter"),
+    ("chatter", "/robot", "/robot/talker", "/robot/chatter"),
+    ("/chatter", "/robot/", "/robot/talker", "/chatter"),
+    ("~rate", "/robot/", "/robot/talker", "/robot/talker/rate"),
+    ("~/rate", "/", "/talker", "/talker/rate"),
+    ("a/b", "/x/", "/x/n", "/x/a/b"),
+    ("?", "/", "/talker", "/?"),
+    ("scan_?", "/r/", "/r/n", "/r/scan_?"),
+    ("", "/ns/", "/ns/n", "/ns"),
+])
+def test_resolve_follows_ros1_rules(name, ns, node, full):
+    assert resolve(name, ns, node) == full
+
+
+def test_remaps_resolve_in_the_node_namespace():
+    remaps = resolve_remaps([("monologue", "chatter"), ("~in", "/abs")], "/r/", "/r/n")
+    assert remaps == {"/r/monologue": "/r/chatter", "/r/n/in": "/abs"}
+    name = RosName.make("monologue", "/r/", "/r/n", remaps)
+    assert (name.given, name.full, name.own, name.namespace) == (
+        "monologue", "/r/chatter", "chatter", "/r/")
+    assert name.is_relative and not name.is_global and not name.is_private
+
+
+def test_patterns_match_candidates():
+    name = RosName.make("/robot/?/scan")
+    assert name.is_unresolved
+    assert name.matches("/robot/left/scan")
+    assert name.matches("/robot/a/b/scan")
+    assert not name.matches("/robot/scan")
+    assert not RosName.make("/chatter").matches("/chatter2")
+
+
+def test_namespaces_normalise():
+    assert as_namespace("") == "/"
+    assert as_namespace("a") == "/a/"
+    assert as_namespace("/a//b/") == "/a/b/"
+
+
+def test_values_keep_known_parts():
+    value = Value.of("/", Value.unknown("arg robot"), "/scan")
+    assert value.text == "/?/scan"
+    assert not value.is_known
+    assert value.literal is None
+    assert value.origins == ("arg robot",)
+    assert Value.of("a", "b").literal == "ab"
+    assert (Value.of("x") + Value((Unknown("y"),))).text == "x?"

@@ -1,0 +1,92 @@
+from __future__ import annotations
+
+from conftest import FIXTURES, package_xml
+
+from haros_arch.manifest import condition_holds
+from haros_arch.workspace import scan
+
+SCAN = FIXTURES / "workspace_scan" / "src"
+
+
+def codes(ws):
+    return sorted((d.code, d.location.file) for d in ws.diagnostics)
+
+
+def test_scan_finds_packages_and_honours_ignore_markers():
+    ws = scan([str(SCAN)], {"ROS_VERSION": "2"})
+    assert sorted(ws.packages) == [
+        "legacy_pkg", "modern_pkg", "nav_core", "plain_cmake", "py_pkg"]
+
+
+def test_build_types_follow_export_and_conditions():
+    ros2 = scan([str(SCAN)], {"ROS_VERSION": "2"}).packages
+    ros1 = scan([str(SCAN)], {"ROS_VERSION": "1"}).packages
+    assert ros2["modern_pkg"].build_type == "ament_cmake"
+    assert ros1["modern_pkg"].build_type == "catkin"
+    assert ros2["legacy_pkg"].build_type == "catkin"
+    assert ros2["py_pkg"].build_type == "ament_python"
+    assert ros2["plain_cmake"].build_type == "cmake"
+
+
+def test_manifest_formats_dependencies_and_plugins():
+    packages = scan([str(SCAN)], {}).packages
+    legacy = packages["legacy_pkg"]
+    assert legacy.format == 1
+    assert legacy.version == "1.0.0"
+    assert ("roscpp", "run_depend") in [(d.name, d.kind) for d in legacy.dependencies]
+    assert [(p.kind, p.file) for p in legacy.plugins] == [
+        ("nodelet", "legacy_pkg/nodelet_plugins.xml")]
+    modern = packages["modern_pkg"]
+    assert modern.format == 3
+    conditional = [d for d in modern.dependencies if d.condition]
+    assert [(d.name, d.condition) for d in conditional] == [
+        ("catkin", "$ROS_VERSION == 1"), ("ament_cmake", "$ROS_VERSION == 2")]
+    assert modern.location.file == "modern_pkg/package.xml"
+
+
+def test_malformed_manifest_and_duplicates_are_diagnostics():
+    ws = scan([str(SCAN)], {})
+    found = codes(ws)
+    assert ("PACKAGE_XML_SYNTAX", "broken_pkg/package.xml") in found
+    assert ("PACKAGE_DUPLICATE", "dup_b/nav_core/package.xml") in found
+    syntax = next(d for d in ws.diagnostics if d.code == "PACKAGE_XML_SYNTAX")
+    assert syntax.location.line == 5
+
+
+def test_missing_workspace_folder_is_a_diagnostic(tmp_path):
+    ws = scan([str(tmp_path / "nope")], {})
+    assert [d.code for d in ws.diagnostics] == ["WORKSPACE_MISSING"]
+
+
+def test_installed_packages_are_found_but_not_analysed(write_tree):
+    root = write_tree({
+        "ws/src/mine/package.xml": package_xml("mine"),
+        "opt/share/installed_pkg/package.xml": package_xml("installed_pkg"),
+        "rpp/other_pkg/package.xml": package_xml("other_pkg"),
+    })
+    env = {"AMENT_PREFIX_PATH": str(root / "opt"), "ROS_PACKAGE_PATH": str(root / "rpp")}
+    ws = scan([str(root / "ws" / "src")], env)
+    assert list(ws.packages) == ["mine"]
+    assert ws.find("installed_pkg") == str(root / "opt" / "share" / "installed_pkg")
+    assert ws.find("other_pkg") == str(root / "rpp" / "other_pkg")
+    assert ws.find("nowhere") is None
+
+
+def test_entity_expansion_is_never_performed(write_tree):
+    root = write_tree({"src/evil/package.xml": """
+        <?xml version="1.0"?>
+        <!DOCTYPE package [<!ENTITY x SYSTEM "file:///etc/passwd">]>
+        <package format="2"><name>evil&x;</name><version>1</version></package>
+        """})
+    ws = scan([str(root / "src")], {})
+    assert all("root:" not in name for name in ws.packages)
+
+
+def test_rep149_conditions():
+    env = {"ROS_VERSION": "2", "ROS_DISTRO": "humble"}
+    assert condition_holds("$ROS_VERSION == 2", env) is True
+    assert condition_holds("$ROS_VERSION == 1", env) is False
+    assert condition_holds("$ROS_VERSION == 2 and $ROS_DISTRO != foxy", env) is True
+    assert condition_holds("($ROS_VERSION == 1 or $ROS_DISTRO == humble)", env) is True
+    assert condition_holds("$ROS_VERSION >= 2", env) is True
+    assert condition_holds("$ROS_VERSION ==", env) is None
