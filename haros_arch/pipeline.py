@@ -79,8 +79,9 @@ def launch_path(entry: str, project: Project, workspace: Workspace) -> str | Non
 def _load_launch(spec: ConfigurationSpec, project: Project, workspace: Workspace,
                  env: Mapping[str, str]) -> LaunchModel:
     merged = LaunchModel()
-    where = Location(file=os.path.relpath(project.path), line=spec.line, column=1)
-    for entry in spec.launch:
+    lines = spec.launch_lines or [spec.line] * len(spec.launch)
+    for entry, line in zip(spec.launch, lines, strict=False):
+        where = Location(file=os.path.relpath(project.path), line=line, column=1)
         path = launch_path(entry, project, workspace)
         if path is None:
             merged.diagnostics.append(diag.make(

@@ -37,6 +37,7 @@ class ConfigurationSpec:
     launch: list[str] = field(default_factory=list)
     args: dict[str, str] = field(default_factory=dict)
     environment: dict[str, str] = field(default_factory=dict)
+    launch_lines: list[int] = field(default_factory=list)  # where each launch entry is
     hints: dict[str, Any] = field(default_factory=dict)
     user_data: dict[str, Any] = field(default_factory=dict)
     line: int = 0
@@ -92,11 +93,16 @@ class _Reader:
         return str(node.value)
 
     def strings(self, node: Node, what: str) -> list[str]:
+        return [text for text, _line in self.strings_at(node, what)]
+
+    def strings_at(self, node: Node, what: str) -> list[tuple[str, int]]:
+        """A string or a list of strings, each with its line."""
         if isinstance(node, ScalarNode) and not node.tag.endswith(":null"):
-            return [str(node.value)]
+            return [(str(node.value), node.start_mark.line + 1)]
         if not isinstance(node, SequenceNode):
             raise self.fail(node, f"{what} must be a list of strings")
-        return [self.string(item, f"each item of {what}") for item in node.value]
+        return [(self.string(item, f"each item of {what}"), item.start_mark.line + 1)
+                for item in node.value]
 
     def string_map(self, node: Node, what: str) -> dict[str, str]:
         result = {}
@@ -189,8 +195,8 @@ def _configurations(reader: _Reader, node: Node) -> list[ConfigurationSpec]:
         return specs
     for name, key_node, value in reader.mapping(node, "configurations"):
         if isinstance(value, SequenceNode):  # HAROS short form: name: [launch files]
-            spec = ConfigurationSpec(name, reader.strings(value, f"configuration '{name}'"),
-                                     line=key_node.start_mark.line + 1)
+            spec = ConfigurationSpec(name, line=key_node.start_mark.line + 1)
+            _set_launch(spec, reader.strings_at(value, f"configuration '{name}'"))
             specs.append(spec)
             continue
         specs.append(_configuration(reader, name, key_node,
@@ -205,7 +211,7 @@ def _configuration(
     for key, key_node, value in entries:
         what = f"configurations.{name}.{key}"
         if key == "launch":
-            spec.launch = reader.strings(value, what)
+            _set_launch(spec, reader.strings_at(value, what))
         elif key == "args":
             spec.args = reader.string_map(value, what)
         elif key == "environment":
@@ -222,6 +228,11 @@ def _configuration(
     if not spec.launch:
         raise reader.fail(where, f"configuration '{name}' names no launch files")
     return spec
+
+
+def _set_launch(spec: ConfigurationSpec, entries: list[tuple[str, int]]) -> None:
+    spec.launch = [text for text, _line in entries]
+    spec.launch_lines = [line for _text, line in entries]
 
 
 def _queries(reader: _Reader, node: Node) -> list[Any]:

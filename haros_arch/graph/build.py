@@ -77,7 +77,7 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
     for param in launch.params:
         parameter = resources.get(Parameter, param.name)
         assert isinstance(parameter, Parameter)
-        parameter.type = param.type
+        parameter.launch_type = param.type
         parameter.value = param.value
         parameter.set_by_launch = True
         parameter.launch_location = param.location

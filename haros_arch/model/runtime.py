@@ -192,24 +192,41 @@ class Action(Resource):
 class Parameter(Resource):
     """A parameter; ``set_by_launch`` when a launch file gives it a value."""
 
-    type: str | None = None
     value: Any = None
+    launch_type: str | None = field(default=None, metadata=INDEX)
     set_by_launch: bool = field(default=False, metadata=INDEX)
-    launch_location: Location = field(default=NOWHERE, metadata={"json": "location"})
+    launch_location: Location = field(default=NOWHERE, metadata=INDEX)
     launch_conditions: tuple[Condition, ...] = field(default=(), metadata=INDEX)
 
     JSON_VIEWS: ClassVar[dict[str, Callable[[Any], Any]]] = {
+        "type": lambda p: p.type,
         "readers": lambda p: _names(p.readers),
         "writers": lambda p: p.writer_names,
         "conditions": lambda p: p.conditions,
+        "location": lambda p: p.location,
     }
 
     @property
     def types(self) -> list[str]:
         found = {link.type for link in self.links if link.type}
-        if self.type:
-            found.add(self.type)
+        if self.launch_type:
+            found.add(self.launch_type)
         return sorted(found)
+
+    @property
+    def type(self) -> str | None:
+        """The launch file's type if it sets one, else the one type the code uses."""
+        if self.launch_type:
+            return self.launch_type
+        types = self.types
+        return types[0] if len(types) == 1 else None
+
+    @property
+    def location(self) -> Location:
+        """Where the value is set by launch, else the first use in code."""
+        if self.set_by_launch or not self.links:
+            return self.launch_location
+        return self.links[0].location
 
     @property
     def readers(self) -> list[Link]:
@@ -226,8 +243,9 @@ class Parameter(Resource):
 
     @property
     def conditions(self) -> tuple[Condition, ...]:
+        """A launch-set parameter exists under the launch conditions (or when written)."""
         if self.set_by_launch:
-            return self.launch_conditions if not self.links else ()
+            return self.launch_conditions if not self.writers else ()
         return super().conditions
 
 

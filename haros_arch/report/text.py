@@ -6,10 +6,10 @@ from collections import defaultdict
 from collections.abc import Iterable
 
 from rich.console import Console
-from rich.table import Table
 
 from ..model.diagnostic import SEVERITY_RANK, Diagnostic
 from ..model.model import Model
+from ..model.runtime import LAUNCH_WRITER, Parameter, Resource
 
 
 def print_diagnostics(diagnostics: Iterable[Diagnostic], console: Console) -> None:
@@ -28,30 +28,47 @@ def print_diagnostics(diagnostics: Iterable[Diagnostic], console: Console) -> No
 
 
 def print_summary(model: Model, console: Console) -> None:
+    """Per configuration: its node instances and each resource with who uses it."""
     nodes = model.nodes
     calls = sum(len(node.calls) for node in nodes)
     console.print(f"[bold]{model.project}[/bold]: {len(model.packages)} package(s), "
                   f"{len(nodes)} node(s), {calls} ROS call(s) found in source",
                   highlight=False)
     for config in model.configurations:
-        table = Table(title=f"configuration {config.name}", title_justify="left",
-                      show_lines=False)
-        table.add_column("kind")
-        table.add_column("name")
-        table.add_column("type")
-        table.add_column("links")
+        counts = ", ".join(f"{len(items)} {label}" for label, items in (
+            ("nodes", config.nodes), ("topics", config.topics),
+            ("services", config.services), ("actions", config.actions),
+            ("parameters", config.parameters)))
+        console.print(f"\n[bold]configuration {config.name}[/bold]: {counts}",
+                      highlight=False)
         for instance in config.nodes:
-            table.add_row("node", instance.name,
-                          instance.node.name if instance.node else "? (not found)", "")
-        for kind, resources in (("topic", config.topics), ("service", config.services),
-                                ("action", config.actions),
-                                ("parameter", config.parameters)):
+            runs = instance.node.name if instance.node else "? (not in the workspace)"
+            conditional = " [dim](conditional)[/dim]" if instance.conditions else ""
+            console.print(f"  node  {instance.name}  [dim]{runs}[/dim]{conditional}",
+                          highlight=False)
+        for label, resources in (("topic", config.topics), ("service", config.services),
+                                 ("action", config.actions),
+                                 ("param", config.parameters)):
             for resource in resources:
-                links = ", ".join(f"{link.kind} {link.node.name}" for link in resource.links)
-                if kind == "parameter" and getattr(resource, "set_by_launch", False):
-                    links = ", ".join(x for x in ("set by launch", links) if x)
-                table.add_row(kind, resource.name, ", ".join(resource.types) or "?", links)
-        console.print(table)
+                types = ", ".join(resource.types) or "?"
+                console.print(f"  {label:<7} {resource.name}  [dim]{types}[/dim]",
+                              highlight=False)
+                for line in _uses(resource):
+                    console.print(f"            {line}", highlight=False)
+
+
+def _uses(resource: Resource) -> list[str]:
+    by_kind: dict[str, list[str]] = defaultdict(list)
+    if isinstance(resource, Parameter) and resource.set_by_launch:
+        by_kind["set by"].append(LAUNCH_WRITER)
+    for link in resource.links:
+        by_kind[_VERBS.get(link.kind, link.kind)].append(link.node.name)
+    return [f"{verb}: {', '.join(dict.fromkeys(names))}" for verb, names in by_kind.items()]
+
+
+_VERBS = {"publish": "published by", "subscribe": "subscribed by", "server": "served by",
+          "client": "called by", "action-server": "served by", "action-client": "called by",
+          "read": "read by", "write": "set by"}
 
 
 def count_by_severity(diagnostics: Iterable[Diagnostic]) -> dict[str, int]:

@@ -12,6 +12,7 @@ int main(int argc, char** argv)
   ros::init(argc, argv, "monitor");
   ros::NodeHandle nh;
   std::string robot;
+  // BUG for the demo: the launch file sets ~robot_name, this reads robot_name
   nh.param<std::string>("robot_name", robot, "robot1");
   ros::Subscriber sub = nh.subscribe("/" + robot + "/status", 10, onStatus);
   ros::spin();

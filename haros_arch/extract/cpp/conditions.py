@@ -1,0 +1,151 @@
+"""Source conditions: the control statements a call sits in.
+
+``branches(node)`` answers, for one statement, which of its children run under which
+extra conditions; the visitor stacks them on the way down, so a call carries one
+``Condition`` per enclosing ``if`` / ``else`` / loop / ``switch`` + ``case`` / ``try`` /
+``catch``. A call in an ``else`` branch gets statement ``else`` with the text of its
+``if``; a ``try`` block's condition has empty text; a ``catch`` block's text is its
+exception declaration; ``default:`` is a ``case`` with text ``default``. Condition
+texts are taken from the source as written (macros unexpanded), whitespace collapsed.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable
+
+from clang.cindex import Cursor, CursorKind
+
+from ...model.conditions import Condition
+from ...model.location import Location
+
+Branch = tuple[Cursor, tuple[Condition, ...]]
+_LOOPS = {CursorKind.FOR_STMT: "for", CursorKind.CXX_FOR_RANGE_STMT: "for",
+          CursorKind.WHILE_STMT: "while"}
+_LABELS = (CursorKind.CASE_STMT, CursorKind.DEFAULT_STMT)
+_SPACE = re.compile(r"\s+")
+
+
+class ConditionReader:
+    """Turns control statements into conditions, reading their text from the source."""
+
+    def __init__(self, source: dict[str, bytes], where: Callable[[Cursor], Location]) -> None:
+        self.source = source
+        self.where = where
+
+    def branches(self, node: Cursor) -> list[Branch]:
+        kind = node.kind
+        children = list(node.get_children())
+        if kind == CursorKind.IF_STMT:
+            return self._if(node, children)
+        if kind in _LOOPS and children:
+            loop = self._condition(node, _LOOPS[kind], self._parens(node.extent.start))
+            return [(c, ()) for c in children[:-1]] + [(children[-1], (loop,))]
+        if kind == CursorKind.DO_STMT and children:
+            text = self._parens(children[0].extent.end)
+            return [(children[0], (self._condition(node, "do", text),)),
+                    *((c, ()) for c in children[1:])]
+        if kind == CursorKind.SWITCH_STMT and children:
+            switch = self._condition(node, "switch", self._parens(node.extent.start))
+            return [(c, ()) for c in children[:-1]] + self._switch_body(children[-1], switch)
+        if kind == CursorKind.CXX_TRY_STMT and children:
+            return [(children[0], (self._condition(node, "try", ""),)),
+                    *((c, ()) for c in children[1:])]
+        if kind == CursorKind.CXX_CATCH_STMT and children:
+            catch = self._condition(node, "catch", self._parens(node.extent.start))
+            return [(c, (catch,)) for c in children]
+        return [(c, ()) for c in children]
+
+    def _if(self, node: Cursor, children: list[Cursor]) -> list[Branch]:
+        if len(children) < 2:
+            return [(c, ()) for c in children]
+        text = self._parens(node.extent.start)
+        has_else = len(children) >= 3 and self._between(children[-2], children[-1]) == "else"
+        then = len(children) - (2 if has_else else 1)
+        out: list[Branch] = [(c, ()) for c in children[:then]]
+        out.append((children[then], (self._condition(node, "if", text),)))
+        if has_else:
+            out.append((children[-1], (self._condition(node, "else", text),)))
+        return out
+
+    def _switch_body(self, body: Cursor, switch: Condition) -> list[Branch]:
+        """Statements of a switch body, each under the ``case`` labels it follows."""
+        if body.kind != CursorKind.COMPOUND_STMT:
+            return [(body, (switch,))]
+        out: list[Branch] = []
+        label: Condition | None = None
+        for statement in body.get_children():
+            if statement.kind in _LABELS:
+                texts: list[str] = []
+                start = statement
+                while statement.kind in _LABELS:
+                    inner = list(statement.get_children())
+                    if statement.kind == CursorKind.CASE_STMT:
+                        texts.append(self._text(inner[0]) if inner else "?")
+                    else:
+                        texts.append("default")
+                    if not inner:
+                        break
+                    statement = inner[-1]
+                label = self._condition(start, "case", ", ".join(texts))
+                if statement.kind in _LABELS:
+                    continue
+            conditions = (switch, label) if label is not None else (switch,)
+            out.append((statement, conditions))
+        return out
+
+    # -- text -------------------------------------------------------------------------
+
+    def _condition(self, node: Cursor, statement: str, text: str) -> Condition:
+        return Condition(text, "source", statement, self.where(node))
+
+    def _bytes(self, node_file: object) -> bytes | None:
+        name = getattr(node_file, "name", None)
+        return self.source.get(name) if name else None
+
+    def _parens(self, start: object) -> str:
+        """The text inside the first balanced parentheses after source position ``start``."""
+        text = self._bytes(getattr(start, "file", None))
+        offset = getattr(start, "offset", 0)
+        if text is None:
+            return "?"
+        begin = text.find(b"(", offset)
+        if begin < 0:
+            return "?"
+        depth, i, quote = 0, begin, 0
+        while i < len(text):
+            char = text[i]
+            if quote:
+                if char == 0x5C:  # backslash
+                    i += 1
+                elif char == quote:
+                    quote = 0
+            elif char in (0x22, 0x27):  # " '
+                quote = char
+            elif char == 0x28:
+                depth += 1
+            elif char == 0x29:
+                depth -= 1
+                if depth == 0:
+                    return _clean(text[begin + 1:i])
+            i += 1
+        return "?"
+
+    def _text(self, node: Cursor) -> str:
+        start, end = node.extent.start, node.extent.end
+        text = self._bytes(start.file)
+        if text is None or end.file is None or end.file.name != start.file.name:
+            return "?"
+        return _clean(text[start.offset:end.offset])
+
+    def _between(self, first: Cursor, second: Cursor) -> str:
+        end, start = first.extent.end, second.extent.start
+        text = self._bytes(end.file)
+        if text is None or start.file is None or start.file.name != end.file.name:
+            return ""
+        between = text[end.offset:start.offset].decode("utf-8", "replace")
+        return "else" if re.search(r"\belse\b", between) else ""
+
+
+def _clean(raw: bytes) -> str:
+    return _SPACE.sub(" ", raw.decode("utf-8", "replace")).strip()

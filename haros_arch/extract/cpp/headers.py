@@ -1,0 +1,187 @@
+"""The include path of a parse: stand-in ROS headers, synthesised message headers and
+empty stand-ins for headers that are nowhere to be found.
+
+Before parsing, the ``#include`` lines of the sources (and, transitively, of the
+workspace headers they include) are scanned with a regular expression. Each header is
+resolved the way the preprocessor will, and:
+
+- a message or service header (``pkg/Name.h`` whose package has ``msg/Name.msg`` or
+  ``srv/Name.srv``, is a well-known message package, or is simply not found) is
+  synthesised in a generated folder that comes first on the include path;
+- in the default mode, ``ros/...`` and ``boost/...`` headers come from our stand-ins
+  only, so the result does not depend on what is installed; one we have no stand-in for
+  becomes an empty header;
+- any other header that is not found becomes an empty header and a
+  ``CPP_INCLUDE_MISSING`` diagnostic.
+
+With ``system_headers=True`` the stand-ins are left out and only headers that the system
+lacks are synthesised, so the real ROS headers are used.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import shutil
+import tempfile
+from collections.abc import Sequence
+
+from ... import diagnostics as diag
+from ...diagnostics import Diagnostic
+from ...files import read_text
+from ...model.location import Location
+from ...workspace import Workspace
+from . import interfaces, toolchain
+
+STANDIN = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "standin")
+SHADOWED = ("ros/", "boost/")  # prefixes only our stand-ins provide in the default mode
+
+_INCLUDE = re.compile(r'^[ \t]*#[ \t]*include[ \t]*([<"])([^>"\n]+)[>"]', re.MULTILINE)
+_MESSAGE_HEADER = re.compile(r"([A-Za-z_]\w*)/([A-Z]\w*)\.h")
+_NOT_FOUND = re.compile(r"^'([^']+)' file not found")
+
+
+class IncludeSetup:
+    """The folders and flags of one extraction; call ``close`` when done."""
+
+    def __init__(self, workspace: Workspace, include_dirs: Sequence[str],
+                 system_headers: bool) -> None:
+        self.workspace = workspace
+        self.system_headers = system_headers
+        self.generated = tempfile.mkdtemp(prefix="haros-arch-cpp-")
+        self.user_dirs = [os.path.abspath(d) for d in include_dirs]
+        self.user_dirs += [inc for inc in (os.path.join(p.root, "include")
+                                           for p in workspace.packages.values() if p.root)
+                           if os.path.isdir(inc) and inc not in self.user_dirs]
+        self.diagnostics: list[Diagnostic] = []
+        self._handled: set[str] = set()
+        self._scanned: set[str] = set()
+
+    def arguments(self) -> list[str]:
+        args = ["-I", self.generated]
+        if not self.system_headers:
+            args += ["-I", STANDIN]
+        for folder in self.user_dirs:
+            args += ["-I", folder]
+        return args + toolchain.base_arguments()
+
+    def close(self) -> None:
+        shutil.rmtree(self.generated, ignore_errors=True)
+
+    # -- before parsing ---------------------------------------------------------------
+
+    def scan(self, path: str, text: str) -> None:
+        """Prepare every header that ``path`` (with contents ``text``) includes."""
+        if path in self._scanned:
+            return
+        self._scanned.add(path)
+        for match in _INCLUDE.finditer(text):
+            header = match.group(2).strip()
+            line = text.count("\n", 0, match.start()) + 1
+            where = self.workspace.location(path, line, match.start(2) - match.start() + 1)
+            found = self._prepare(header, os.path.dirname(path), match.group(1) == '"', where)
+            if found and self._inside(found):
+                more, _ = read_text(found, self.workspace.location(found))
+                if more is not None:
+                    self.scan(found, more)
+
+    def _prepare(self, header: str, folder: str, quoted: bool, where: Location) -> str | None:
+        """Make ``header`` resolvable; return the real file it resolves to, if any."""
+        if header in self._handled:
+            return None
+        if quoted and os.path.isfile(os.path.join(folder, header)):
+            return os.path.join(folder, header)
+        if not self.system_headers and header.startswith(SHADOWED):
+            if not os.path.isfile(os.path.join(STANDIN, header)):
+                self._empty(header, where)
+            return None
+        message = _MESSAGE_HEADER.fullmatch(header)
+        if message is not None and self._message(
+            header, message.group(1), message.group(2), where
+        ):
+            return None
+        found = self._resolve(header)
+        if found is None:
+            self._empty(header, where)
+        return found
+
+    def _message(self, header: str, package: str, name: str, where: Location) -> bool:
+        """Synthesise a message / service header when that is what ``header`` is."""
+        definition = self._definition(package, name)
+        real = self._resolve(header)
+        if definition is None and real is not None and (
+            package not in interfaces.MESSAGE_PACKAGES or self.system_headers
+        ):
+            return False  # an ordinary header of a package, or the real generated one
+        if self.system_headers and real is not None:
+            return False
+        if definition is None:
+            definition = interfaces.Interface(package, name, [[], []], known=False)
+            self.diagnostics.append(diag.make(
+                "CPP_MESSAGE_UNKNOWN", where, header=header))
+        self._handled.add(header)
+        self._write(header, interfaces.render(definition))
+        for dep in interfaces.dependencies(definition):
+            self._prepare(f"{dep}.h", "", False, where)
+        return True
+
+    def _definition(self, package: str, name: str) -> interfaces.Interface | None:
+        folder = self.workspace.find(package)
+        if folder is not None:
+            for sub, ext in (("msg", ".msg"), ("srv", ".srv")):
+                path = os.path.join(folder, sub, name + ext)
+                if os.path.isfile(path):
+                    text, found = read_text(path, self.workspace.location(path))
+                    self.diagnostics.extend(found)
+                    if text is not None:
+                        parsed = interfaces.parse_definition(package, name, text)
+                        if ext == ".srv" and len(parsed.sections) == 1:
+                            parsed.sections.append([])
+                        return parsed
+        text = interfaces.WELL_KNOWN.get(f"{package}/{name}")
+        if text is None:
+            return None
+        return interfaces.parse_definition(package, name, text)
+
+    def _resolve(self, header: str) -> str | None:
+        folders = [*self.user_dirs, *toolchain.system_include_dirs()]
+        for folder in folders:
+            candidate = os.path.join(folder, header)
+            if os.path.isfile(candidate):
+                return candidate
+        return None
+
+    def _inside(self, path: str) -> bool:
+        root = self.workspace.root
+        return path.startswith(root + os.sep) or any(
+            path.startswith(folder + os.sep) for folder in self.user_dirs)
+
+    def _empty(self, header: str, where: Location) -> None:
+        self._handled.add(header)
+        self._write(header, f"// empty stand-in for {header}, created by haros_arch\n")
+        self.diagnostics.append(diag.make("CPP_INCLUDE_MISSING", where, header=header))
+
+    def _write(self, header: str, text: str) -> None:
+        path = os.path.normpath(os.path.join(self.generated, header))
+        if not path.startswith(self.generated + os.sep):
+            return  # "../" in a header name: nothing to create
+        os.makedirs(os.path.dirname(path), exist_ok=True)
+        with open(path, "w", encoding="utf-8") as handle:
+            handle.write(text)
+
+    # -- after parsing ----------------------------------------------------------------
+
+    def repair(self, messages: list[tuple[str, Location]]) -> bool:
+        """Create what clang reported as not found; True when a new parse may help."""
+        changed = False
+        for message, where in messages:
+            match = _NOT_FOUND.match(message)
+            if match is None or match.group(1) in self._handled:
+                continue
+            header = match.group(1)
+            self._handled.add(header)
+            spec = _MESSAGE_HEADER.fullmatch(header)
+            if spec is None or not self._message(header, spec.group(1), spec.group(2), where):
+                self._empty(header, where)
+            changed = True
+        return changed

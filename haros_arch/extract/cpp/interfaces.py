@@ -1,0 +1,209 @@
+"""ROS 1 message and service definitions, and the C++ headers we synthesise for them.
+
+A synthesised header declares what ``gencpp`` would, as far as parsing node code needs:
+the message struct with its fields and constants, ``Ptr`` / ``ConstPtr`` typedefs, and
+for a service the ``Request`` / ``Response`` structs. Fields come from the ``.msg`` /
+``.srv`` file when we can find it, else from a few well-known definitions below.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+
+# Packages whose headers are messages or services even when we cannot see their files.
+MESSAGE_PACKAGES = frozenset({
+    "std_msgs", "std_srvs", "geometry_msgs", "sensor_msgs", "nav_msgs", "actionlib_msgs",
+    "diagnostic_msgs", "shape_msgs", "stereo_msgs", "trajectory_msgs", "visualization_msgs",
+    "rosgraph_msgs", "tf2_msgs", "map_msgs", "control_msgs", "move_base_msgs", "roscpp",
+    "topic_tools", "gazebo_msgs", "pcl_msgs", "dynamic_reconfigure", "mavros_msgs",
+})
+
+# Definitions for messages that nodes use most, in .msg syntax ("---" splits services).
+WELL_KNOWN: dict[str, str] = {
+    "std_msgs/Header": "uint32 seq\ntime stamp\nstring frame_id",
+    "std_msgs/Empty": "",
+    "std_msgs/String": "string data",
+    "std_msgs/Bool": "bool data",
+    "std_msgs/Byte": "byte data",
+    "std_msgs/Char": "char data",
+    "std_msgs/Time": "time data",
+    "std_msgs/Duration": "duration data",
+    "std_msgs/ColorRGBA": "float32 r\nfloat32 g\nfloat32 b\nfloat32 a",
+    **{f"std_msgs/{t.capitalize()}": f"{t} data" for t in (
+        "int8", "int16", "int32", "int64", "uint8", "uint16", "uint32", "uint64",
+        "float32", "float64")},
+    **{f"std_msgs/{t.capitalize()}MultiArray": f"{t}[] data" for t in (
+        "int8", "int16", "int32", "int64", "uint8", "uint16", "uint32", "uint64",
+        "float32", "float64")},
+    "std_srvs/Empty": "---",
+    "std_srvs/Trigger": "---\nbool success\nstring message",
+    "std_srvs/SetBool": "bool data\n---\nbool success\nstring message",
+    "geometry_msgs/Point": "float64 x\nfloat64 y\nfloat64 z",
+    "geometry_msgs/Point32": "float32 x\nfloat32 y\nfloat32 z",
+    "geometry_msgs/Vector3": "float64 x\nfloat64 y\nfloat64 z",
+    "geometry_msgs/Quaternion": "float64 x\nfloat64 y\nfloat64 z\nfloat64 w",
+    "geometry_msgs/Pose": "Point position\nQuaternion orientation",
+    "geometry_msgs/Pose2D": "float64 x\nfloat64 y\nfloat64 theta",
+    "geometry_msgs/PoseStamped": "Header header\nPose pose",
+    "geometry_msgs/PoseWithCovariance": "Pose pose\nfloat64[36] covariance",
+    "geometry_msgs/Twist": "Vector3 linear\nVector3 angular",
+    "geometry_msgs/TwistStamped": "Header header\nTwist twist",
+    "geometry_msgs/TwistWithCovariance": "Twist twist\nfloat64[36] covariance",
+    "geometry_msgs/Transform": "Vector3 translation\nQuaternion rotation",
+    "geometry_msgs/TransformStamped": "Header header\nstring child_frame_id\n"
+                                      "Transform transform",
+    "geometry_msgs/PointStamped": "Header header\nPoint point",
+    "geometry_msgs/Wrench": "Vector3 force\nVector3 torque",
+    "nav_msgs/Odometry": "Header header\nstring child_frame_id\n"
+                         "geometry_msgs/PoseWithCovariance pose\n"
+                         "geometry_msgs/TwistWithCovariance twist",
+    "nav_msgs/Path": "Header header\ngeometry_msgs/PoseStamped[] poses",
+    "sensor_msgs/LaserScan": "Header header\nfloat32 angle_min\nfloat32 angle_max\n"
+                             "float32 angle_increment\nfloat32 time_increment\n"
+                             "float32 scan_time\nfloat32 range_min\nfloat32 range_max\n"
+                             "float32[] ranges\nfloat32[] intensities",
+    "sensor_msgs/Imu": "Header header\ngeometry_msgs/Quaternion orientation\n"
+                       "float64[9] orientation_covariance\n"
+                       "geometry_msgs/Vector3 angular_velocity\n"
+                       "float64[9] angular_velocity_covariance\n"
+                       "geometry_msgs/Vector3 linear_acceleration\n"
+                       "float64[9] linear_acceleration_covariance",
+    "sensor_msgs/JointState": "Header header\nstring[] name\nfloat64[] position\n"
+                              "float64[] velocity\nfloat64[] effort",
+    "sensor_msgs/Image": "Header header\nuint32 height\nuint32 width\nstring encoding\n"
+                         "uint8 is_bigendian\nuint32 step\nuint8[] data",
+}
+
+PRIMITIVES = {
+    "bool": "uint8_t", "int8": "int8_t", "uint8": "uint8_t", "byte": "int8_t",
+    "char": "uint8_t", "int16": "int16_t", "uint16": "uint16_t", "int32": "int32_t",
+    "uint32": "uint32_t", "int64": "int64_t", "uint64": "uint64_t", "float32": "float",
+    "float64": "double", "string": "std::string", "time": "ros::Time",
+    "duration": "ros::Duration",
+}
+
+_STRING_CONSTANT = re.compile(r"^string\s+\w+\s*=")
+_FIELD = re.compile(r"^\s*([A-Za-z][\w/]*)\s*(\[(\d*)\])?\s+([A-Za-z]\w*)\s*(=\s*(.*))?$")
+
+
+@dataclass(frozen=True)
+class Field:
+    type: str           # as written: "float64", "Header", "geometry_msgs/Point"
+    name: str
+    array: str | None   # None, "" (variable length) or the fixed length
+    constant: str | None = None
+
+
+@dataclass
+class Interface:
+    """A message (one section) or a service (request and response sections)."""
+
+    package: str
+    name: str
+    sections: list[list[Field]] = field(default_factory=list)
+    known: bool = True
+
+    @property
+    def is_service(self) -> bool:
+        return len(self.sections) == 2
+
+
+def parse_definition(package: str, name: str, text: str) -> Interface:
+    """Fields of a .msg / .srv text; lines that are not fields are ignored."""
+    sections: list[list[Field]] = [[]]
+    for raw in text.splitlines():
+        line = raw.strip()
+        if line.startswith("---"):
+            sections.append([])
+            continue
+        if not _STRING_CONSTANT.match(line):  # only string constants may hold a '#'
+            line = line.split("#", 1)[0].strip()
+        match = _FIELD.match(line)
+        if match is None:
+            continue
+        kind, array, size, fname, _, value = match.groups()
+        sections[-1].append(Field(kind, fname, size if array else None,
+                                  value.strip() if value is not None else None))
+    return Interface(package, name, sections[:2])
+
+
+def dependencies(interface: Interface) -> list[str]:
+    """``pkg/Name`` of the message types that the fields use."""
+    found: list[str] = []
+    for section in interface.sections:
+        for fld in section:
+            full = qualified(fld.type, interface.package)
+            if full is not None and full not in found:
+                found.append(full)
+    return found
+
+
+def qualified(kind: str, package: str) -> str | None:
+    """``pkg/Name`` of a field type, or None for a primitive."""
+    if kind in PRIMITIVES:
+        return None
+    if kind == "Header":
+        return "std_msgs/Header"
+    return kind if "/" in kind else f"{package}/{kind}"
+
+
+def render(interface: Interface) -> str:
+    """C++ source of the header that declares ``interface``."""
+    pkg, name = interface.package, interface.name
+    guard = f"HAROS_SYNTH_{pkg.upper()}_{name.upper()}_H"
+    lines = [f"// synthesised by haros_arch for {pkg}/{name}", f"#ifndef {guard}",
+             f"#define {guard}", "#include <stdint.h>", "#include <string>",
+             "#include <vector>", "#include <boost/shared_ptr.hpp>", "#include <ros/time.h>"]
+    lines += [f"#include <{dep}.h>" for dep in dependencies(interface)]
+    lines.append(f"namespace {pkg} {{")
+    if interface.is_service:
+        request, response = interface.sections
+        lines += _struct(f"{name}Request", request, pkg)
+        lines += _struct(f"{name}Response", response, pkg)
+        lines += [f"struct {name} {{",
+                  f"  typedef {name}Request Request;", f"  typedef {name}Response Response;",
+                  "  Request request;", "  Response response;"]
+        if not interface.known:
+            # a header we know nothing about may name a message as well as a service
+            lines += [f"  typedef boost::shared_ptr<{name}> Ptr;",
+                      f"  typedef boost::shared_ptr<{name} const> ConstPtr;", "};"]
+            lines += _pointers(name)
+        else:
+            lines.append("};")
+    else:
+        lines += _struct(name, interface.sections[0] if interface.sections else [], pkg)
+    lines += [f"}}  // namespace {pkg}", "#endif", ""]
+    return "\n".join(lines)
+
+
+def _struct(name: str, fields: list[Field], package: str) -> list[str]:
+    lines = [f"struct {name} {{", f"  {name}();"]
+    for fld in fields:
+        cpp = _cpp_type(fld.type, package)
+        if fld.constant is not None:
+            if cpp == "std::string":
+                lines.append(f"  static const std::string {fld.name};")
+            else:
+                lines.append(f"  static const {cpp} {fld.name} = {_number(fld.constant)};")
+        elif fld.array is not None:
+            lines.append(f"  std::vector<{cpp}> {fld.name};")
+        else:
+            lines.append(f"  {cpp} {fld.name};")
+    lines += [f"  typedef boost::shared_ptr<{name}> Ptr;",
+              f"  typedef boost::shared_ptr<{name} const> ConstPtr;", "};"]
+    return lines + _pointers(name)
+
+
+def _pointers(name: str) -> list[str]:
+    return [f"typedef boost::shared_ptr<{name}> {name}Ptr;",
+            f"typedef boost::shared_ptr<{name} const> {name}ConstPtr;"]
+
+
+def _cpp_type(kind: str, package: str) -> str:
+    full = qualified(kind, package)
+    return PRIMITIVES[kind] if full is None else full.replace("/", "::")
+
+
+def _number(text: str) -> str:
+    return text if re.fullmatch(r"-?\d+(\.\d*)?([eE]-?\d+)?", text) else "0"

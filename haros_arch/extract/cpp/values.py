@@ -1,0 +1,272 @@
+"""Walking C++ values backwards: what string, integer or boolean an argument holds.
+
+A string value is a tuple of parts, each a known ``str`` or ``None`` for a part that is
+only known at run time; ``render`` writes the unknown parts as ``?``. Resolved:
+literals (also through ``#define``), ``const`` / ``constexpr`` variables, local variables
+written exactly once (at their declaration or by one assignment), ``std::string``
+construction, ``+`` concatenation and ``.c_str()``. Anything else is unknown.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterator
+
+from clang.cindex import Cursor, CursorKind, TypeKind
+
+Parts = tuple[str | None, ...]
+UNKNOWN: Parts = (None,)
+MAX_DEPTH = 24
+
+# expression kinds that only wrap their operand (implicit conversions, casts, parens, ...)
+WRAPPERS = frozenset({
+    CursorKind.UNEXPOSED_EXPR, CursorKind.PAREN_EXPR, CursorKind.CXX_FUNCTIONAL_CAST_EXPR,
+    CursorKind.CSTYLE_CAST_EXPR, CursorKind.CXX_STATIC_CAST_EXPR,
+    CursorKind.CXX_CONST_CAST_EXPR,
+})
+_REFS = frozenset({CursorKind.TYPE_REF, CursorKind.NAMESPACE_REF, CursorKind.TEMPLATE_REF})
+_ESCAPES = {"n": "\n", "t": "\t", "\\": "\\", '"': '"', "'": "'", "0": "\0"}
+_TOKEN = re.compile(rb"[A-Za-z_]\w*|[-+]?(?:0[xX][0-9a-fA-F]+|\d+)[uUlL]*")
+_INT = re.compile(r"([-+]?(?:0[xX][0-9a-fA-F]+|\d+))[uUlL]*")
+
+
+def render(parts: Parts) -> str:
+    """The name with ``?`` for each unknown run of parts."""
+    text: list[str] = []
+    for part in parts:
+        if part is None:
+            if not text or text[-1] != "?":
+                text.append("?")
+        else:
+            text.append(part)
+    return "".join(text)
+
+
+def is_default_argument(cursor: Cursor) -> bool:
+    """True for an argument the call did not write (a default argument)."""
+    return cursor.extent.start.file is None
+
+
+def written_arguments(call: Cursor) -> list[Cursor]:
+    return [arg for arg in call.get_arguments() if not is_default_argument(arg)]
+
+
+def operand(cursor: Cursor) -> Cursor | None:
+    """The expression a wrapper wraps, or None."""
+    inner = [c for c in cursor.get_children() if c.kind not in _REFS]
+    return inner[-1] if inner else None
+
+
+def strip(cursor: Cursor) -> Cursor:
+    """``cursor`` without the wrappers around it."""
+    while cursor.kind in WRAPPERS:
+        inner = operand(cursor)
+        if inner is None:
+            break
+        cursor = inner
+    return cursor
+
+
+class Scope:
+    """What the values of one function body depend on: its variables' writes, macros."""
+
+    def __init__(self, body: Cursor | None, macros: dict[str, str],
+                 source: dict[str, bytes]) -> None:
+        self.macros = macros
+        self.source = source
+        # variable key -> the expressions written to it; None for an unknown write
+        self.writes: dict[tuple[str, int], list[Cursor | None]] = {}
+        if body is not None:
+            self._collect(body)
+
+    # -- writes -----------------------------------------------------------------------
+
+    def _collect(self, body: Cursor) -> None:
+        for node in _walk(body):
+            kind = node.kind
+            if kind == CursorKind.VAR_DECL:
+                init = initializer(node)
+                if init is not None and not _default_constructed(init):
+                    self._write(node, init)
+            elif kind == CursorKind.CALL_EXPR:
+                self._call_writes(node)
+            elif kind == CursorKind.BINARY_OPERATOR:
+                children = list(node.get_children())
+                if len(children) == 2 and self.operator(node, children) == "=":
+                    self._write_ref(children[0], children[1])
+            elif kind in (CursorKind.COMPOUND_ASSIGNMENT_OPERATOR, CursorKind.UNARY_OPERATOR):
+                for child in node.get_children():
+                    self._write_ref(child, None)
+
+    def _call_writes(self, call: Cursor) -> None:
+        args = list(call.get_arguments())
+        if call.spelling == "operator=" and len(args) == 2:
+            self._write_ref(args[0], args[1])
+            return
+        for arg in args:  # an lvalue passed as it is: bound to a non-const reference
+            if arg.kind == CursorKind.DECL_REF_EXPR:
+                self._write_ref(arg, None)
+        children = list(call.get_children())
+        if children and children[0].kind == CursorKind.MEMBER_REF_EXPR:
+            method = call.referenced
+            if method is not None and not method.is_const_method():
+                for obj in children[0].get_children():
+                    self._write_ref(strip(obj), None)
+
+    def _write_ref(self, target: Cursor, value: Cursor | None) -> None:
+        decl = target.referenced if target.kind == CursorKind.DECL_REF_EXPR else None
+        if decl is None:
+            return
+        if value is None and (decl.type.is_const_qualified() or not _plain_value(decl)):
+            return  # calls on objects (a NodeHandle's advertise) do not change what we track
+        self._write(decl, value)
+
+    def _write(self, decl: Cursor, value: Cursor | None) -> None:
+        self.writes.setdefault(_key(decl), []).append(value)
+
+    def operator(self, node: Cursor, children: list[Cursor]) -> str:
+        """The operator token between the two operands of a binary operator."""
+        start, end = children[0].extent.end, children[1].extent.start
+        if start.file is None or start.file.name != (end.file.name if end.file else None):
+            return ""
+        text = self.source.get(start.file.name)
+        if text is None:
+            return ""
+        return text[start.offset:end.offset].decode("utf-8", "replace").strip()
+
+    # -- values -----------------------------------------------------------------------
+
+    def variable(self, decl: Cursor) -> Cursor | None:
+        """The one expression variable ``decl`` holds, when there is exactly one."""
+        if decl.kind not in (CursorKind.VAR_DECL, CursorKind.FIELD_DECL):
+            return None
+        writes = self.writes.get(_key(decl))
+        if writes is not None:
+            return writes[0] if len(writes) == 1 else None
+        if decl.type.is_const_qualified():
+            definition = decl.get_definition() or decl
+            return initializer(definition)
+        return None
+
+    def string(self, cursor: Cursor, depth: int = 0) -> Parts:
+        if depth > MAX_DEPTH:
+            return UNKNOWN
+        cursor = strip(cursor)
+        kind = cursor.kind
+        if kind == CursorKind.STRING_LITERAL:
+            text = _literal(cursor.spelling)
+            return UNKNOWN if text is None else (text,)
+        if kind in (CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR):
+            decl = cursor.referenced
+            value = self.variable(decl) if decl is not None else None
+            return UNKNOWN if value is None else self.string(value, depth + 1)
+        if kind == CursorKind.CALL_EXPR:
+            return self._string_call(cursor, depth)
+        return UNKNOWN
+
+    def _string_call(self, call: Cursor, depth: int) -> Parts:
+        args = written_arguments(call)
+        target = call.referenced
+        if call.spelling == "operator+" and len(args) == 2:
+            return self.string(args[0], depth + 1) + self.string(args[1], depth + 1)
+        if target is None:  # an implicit conversion wrapping the real expression
+            inner = operand(call)
+            return self.string(inner, depth + 1) if inner is not None else UNKNOWN
+        if target.kind == CursorKind.CONSTRUCTOR and call.type.spelling.endswith("string"):
+            if not args:
+                return ("",)
+            return self.string(args[0], depth + 1) if len(args) == 1 else UNKNOWN
+        if call.spelling in ("c_str", "str") and not args:
+            children = list(call.get_children())
+            if children and children[0].kind == CursorKind.MEMBER_REF_EXPR:
+                objects = list(children[0].get_children())
+                if objects:
+                    return self.string(objects[0], depth + 1)
+        return UNKNOWN
+
+    def integer(self, cursor: Cursor, depth: int = 0) -> int | None:
+        if depth > MAX_DEPTH:
+            return None
+        cursor = strip(cursor)
+        if cursor.kind == CursorKind.INTEGER_LITERAL:
+            token = self.token(cursor)
+            return self._int_token(token) if token else None
+        if cursor.kind in (CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR):
+            decl = cursor.referenced
+            value = self.variable(decl) if decl is not None else None
+            return None if value is None else self.integer(value, depth + 1)
+        return None
+
+    def token(self, cursor: Cursor) -> str | None:
+        """The source token where ``cursor`` is (a literal, or the macro expanding to it)."""
+        where = cursor.location
+        text = self.source.get(where.file.name) if where.file is not None else None
+        if text is None:
+            return None
+        match = _TOKEN.match(text, where.offset)
+        return match.group(0).decode("ascii") if match else None
+
+    def _int_token(self, token: str, depth: int = 0) -> int | None:
+        if depth < MAX_DEPTH and token in self.macros:
+            return self._int_token(self.macros[token], depth + 1)
+        match = _INT.fullmatch(token)
+        return int(match.group(1), 0) if match else None
+
+    def boolean(self, cursor: Cursor) -> bool | None:
+        cursor = strip(cursor)
+        if cursor.kind == CursorKind.CXX_BOOL_LITERAL_EXPR:
+            token = self.token(cursor) or ""
+            token = self.macros.get(token, token)
+            return {"true": True, "false": False}.get(token)
+        if cursor.kind == CursorKind.DECL_REF_EXPR and cursor.referenced is not None:
+            value = self.variable(cursor.referenced)
+            return None if value is None else self.boolean(value)
+        return None
+
+
+def initializer(decl: Cursor) -> Cursor | None:
+    """The expression a variable declaration initialises it with, if any."""
+    exprs = [c for c in decl.get_children() if c.kind.is_expression()]
+    return exprs[-1] if exprs else None
+
+
+def _default_constructed(init: Cursor) -> bool:
+    init = strip(init)
+    return (init.kind == CursorKind.CALL_EXPR and init.referenced is not None
+            and init.referenced.kind == CursorKind.CONSTRUCTOR
+            and not written_arguments(init) and not list(init.get_children()))
+
+
+def _plain_value(decl: Cursor) -> bool:
+    """True for variables of a builtin or string type, the values we resolve."""
+    ctype = decl.type.get_canonical()
+    return ctype.kind != TypeKind.RECORD or ctype.get_declaration().spelling == "basic_string"
+
+
+def _key(decl: Cursor) -> tuple[str, int]:
+    where = decl.location
+    return (where.file.name if where.file else "", where.offset)
+
+
+def _walk(cursor: Cursor) -> Iterator[Cursor]:
+    stack = [cursor]
+    while stack:
+        node = stack.pop()
+        yield node
+        stack.extend(node.get_children())
+
+
+def _literal(spelling: str) -> str | None:
+    """The text of a plain C string literal as clang spells it, or None."""
+    if len(spelling) < 2 or not spelling.startswith('"') or not spelling.endswith('"'):
+        return None
+    body, out, i = spelling[1:-1], [], 0
+    while i < len(body):
+        char = body[i]
+        if char == "\\" and i + 1 < len(body):
+            out.append(_ESCAPES.get(body[i + 1], body[i + 1]))
+            i += 2
+        else:
+            out.append(char)
+            i += 1
+    return "".join(out)

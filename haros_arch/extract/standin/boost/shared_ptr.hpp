@@ -1,0 +1,20 @@
+// haros_arch stand-in: boost::shared_ptr (declarations only)
+#ifndef HAROS_STANDIN_BOOST_SHARED_PTR_HPP
+#define HAROS_STANDIN_BOOST_SHARED_PTR_HPP
+namespace boost {
+template<class T> class shared_ptr {
+public:
+  typedef T element_type;
+  shared_ptr();
+  template<class Y> explicit shared_ptr(Y* p);
+  template<class Y> shared_ptr(const shared_ptr<Y>& other);
+  T* operator->() const;
+  T& operator*() const;
+  T* get() const;
+  void reset();
+  template<class Y> void reset(Y* p);
+  explicit operator bool() const;
+};
+template<class T, class... A> shared_ptr<T> make_shared(A&&... args);
+}  // namespace boost
+#endif

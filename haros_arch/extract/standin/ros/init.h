@@ -1,0 +1,44 @@
+// haros_arch stand-in: ros::init and the node's life cycle
+#ifndef HAROS_STANDIN_ROS_INIT_H
+#define HAROS_STANDIN_ROS_INIT_H
+#include <ros/forwards.h>
+namespace ros {
+namespace init_options {
+enum InitOption { NoSigintHandler = 1, AnonymousName = 2, NoRosout = 4 };
+}
+typedef init_options::InitOption InitOption;
+void init(int& argc, char** argv, const std::string& name, uint32_t options = 0);
+void init(const M_string& remappings, const std::string& name, uint32_t options = 0);
+bool ok();
+void shutdown();
+void requestShutdown();
+bool isInitialized();
+bool isStarted();
+bool isShuttingDown();
+void spin();
+void spinOnce();
+void waitForShutdown();
+void start();
+CallbackQueueInterface* getGlobalCallbackQueue();
+namespace this_node {
+const std::string& getName();
+const std::string& getNamespace();
+}
+namespace names {
+std::string resolve(const std::string& name, bool remap = true);
+std::string append(const std::string& left, const std::string& right);
+}
+class AsyncSpinner {
+public:
+  explicit AsyncSpinner(uint32_t thread_count);
+  void start();
+  void stop();
+};
+class MultiThreadedSpinner {
+public:
+  explicit MultiThreadedSpinner(uint32_t thread_count = 0);
+  void spin(CallbackQueueInterface* queue = 0);
+};
+void spin(MultiThreadedSpinner& spinner);
+}  // namespace ros
+#endif

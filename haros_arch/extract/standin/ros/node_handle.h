@@ -1,0 +1,115 @@
+// haros_arch stand-in: ros::NodeHandle (declarations only)
+#ifndef HAROS_STANDIN_ROS_NODE_HANDLE_H
+#define HAROS_STANDIN_ROS_NODE_HANDLE_H
+#include <ros/forwards.h>
+#include <ros/time.h>
+#include <ros/publisher.h>
+#include <ros/service_server.h>
+#include <ros/timer.h>
+namespace ros {
+class NodeHandle {
+public:
+  NodeHandle(const std::string& ns = std::string(), const M_string& remappings = M_string());
+  NodeHandle(const NodeHandle& parent, const std::string& ns);
+  NodeHandle(const NodeHandle& parent, const std::string& ns, const M_string& remappings);
+  NodeHandle(const NodeHandle& rhs);
+  ~NodeHandle();
+  NodeHandle& operator=(const NodeHandle& rhs);
+
+  const std::string& getNamespace() const;
+  const std::string& getUnresolvedNamespace() const;
+  std::string resolveName(const std::string& name, bool remap = true) const;
+  bool ok() const;
+  void shutdown();
+  void setCallbackQueue(CallbackQueueInterface* queue);
+
+  // topics
+  template<class M>
+  Publisher advertise(const std::string& topic, uint32_t queue_size, bool latch = false);
+  template<class M, class T>
+  Subscriber subscribe(const std::string& topic, uint32_t queue_size, void (T::*fp)(M),
+                       T* obj, const TransportHints& hints = TransportHints());
+  template<class M, class T>
+  Subscriber subscribe(const std::string& topic, uint32_t queue_size, void (T::*fp)(M) const,
+                       T* obj, const TransportHints& hints = TransportHints());
+  template<class M, class T>
+  Subscriber subscribe(const std::string& topic, uint32_t queue_size, void (T::*fp)(M),
+                       const boost::shared_ptr<T>& obj,
+                       const TransportHints& hints = TransportHints());
+  template<class M>
+  Subscriber subscribe(const std::string& topic, uint32_t queue_size, void (*fp)(M),
+                       const TransportHints& hints = TransportHints());
+  template<class M>
+  Subscriber subscribe(const std::string& topic, uint32_t queue_size,
+                       const boost::function<void(const boost::shared_ptr<M const>&)>& callback,
+                       const VoidConstPtr& tracked_object = VoidConstPtr(),
+                       const TransportHints& hints = TransportHints());
+
+  // services
+  template<class MReq, class MRes>
+  ServiceServer advertiseService(const std::string& service, bool (*srv_func)(MReq&, MRes&));
+  template<class T, class MReq, class MRes>
+  ServiceServer advertiseService(const std::string& service, bool (T::*srv_func)(MReq&, MRes&),
+                                 T* obj);
+  template<class T, class MReq, class MRes>
+  ServiceServer advertiseService(const std::string& service, bool (T::*srv_func)(MReq&, MRes&),
+                                 const boost::shared_ptr<T>& obj);
+  template<class MReq, class MRes>
+  ServiceServer advertiseService(const std::string& service,
+                                 const boost::function<bool(MReq&, MRes&)>& callback,
+                                 const VoidConstPtr& tracked_object = VoidConstPtr());
+  template<class Service>
+  ServiceClient serviceClient(const std::string& service_name, bool persistent = false,
+                              const M_string& header_values = M_string());
+  template<class MReq, class MRes>
+  ServiceClient serviceClient(const std::string& service_name, bool persistent = false,
+                              const M_string& header_values = M_string());
+
+  // timers
+  Timer createTimer(Duration period, const TimerCallback& callback, bool oneshot = false,
+                    bool autostart = true) const;
+  template<class T>
+  Timer createTimer(Duration period, void (T::*callback)(const TimerEvent&), T* obj,
+                    bool oneshot = false, bool autostart = true) const;
+  Timer createWallTimer(Duration period, const TimerCallback& callback, bool oneshot = false,
+                        bool autostart = true) const;
+  template<class T>
+  Timer createWallTimer(Duration period, void (T::*callback)(const TimerEvent&), T* obj,
+                        bool oneshot = false, bool autostart = true) const;
+
+  // parameters
+  void setParam(const std::string& key, const XmlRpc::XmlRpcValue& v) const;
+  void setParam(const std::string& key, const std::string& s) const;
+  void setParam(const std::string& key, const char* s) const;
+  void setParam(const std::string& key, double d) const;
+  void setParam(const std::string& key, int i) const;
+  void setParam(const std::string& key, bool b) const;
+  template<class T> void setParam(const std::string& key, const std::vector<T>& vec) const;
+  template<class T>
+  void setParam(const std::string& key, const std::map<std::string, T>& map) const;
+  bool getParam(const std::string& key, std::string& s) const;
+  bool getParam(const std::string& key, double& d) const;
+  bool getParam(const std::string& key, float& f) const;
+  bool getParam(const std::string& key, int& i) const;
+  bool getParam(const std::string& key, bool& b) const;
+  bool getParam(const std::string& key, XmlRpc::XmlRpcValue& v) const;
+  template<class T> bool getParam(const std::string& key, std::vector<T>& vec) const;
+  template<class T>
+  bool getParam(const std::string& key, std::map<std::string, T>& map) const;
+  bool getParamCached(const std::string& key, std::string& s) const;
+  bool getParamCached(const std::string& key, double& d) const;
+  bool getParamCached(const std::string& key, float& f) const;
+  bool getParamCached(const std::string& key, int& i) const;
+  bool getParamCached(const std::string& key, bool& b) const;
+  bool getParamCached(const std::string& key, XmlRpc::XmlRpcValue& v) const;
+  template<class T> bool getParamCached(const std::string& key, std::vector<T>& vec) const;
+  bool hasParam(const std::string& key) const;
+  bool searchParam(const std::string& key, std::string& result) const;
+  bool deleteParam(const std::string& key) const;
+  bool getParamNames(std::vector<std::string>& keys) const;
+  template<typename T>
+  bool param(const std::string& param_name, T& param_val, const T& default_val) const;
+  template<typename T> T param(const std::string& param_name, const T& default_val) const;
+};
+}  // namespace ros
+#endif

@@ -1,0 +1,28 @@
+// haros_arch stand-in: ros::ServiceServer and ros::ServiceClient
+#ifndef HAROS_STANDIN_ROS_SERVICE_SERVER_H
+#define HAROS_STANDIN_ROS_SERVICE_SERVER_H
+#include <ros/forwards.h>
+#include <ros/time.h>
+namespace ros {
+class ServiceServer {
+public:
+  ServiceServer();
+  void shutdown();
+  std::string getService() const;
+  explicit operator bool() const;
+};
+class ServiceClient {
+public:
+  ServiceClient();
+  template<class Service> bool call(Service& service);
+  template<class MReq, class MRes> bool call(MReq& req, MRes& res);
+  bool isValid() const;
+  bool isPersistent() const;
+  bool exists();
+  bool waitForExistence(ros::Duration timeout = ros::Duration(-1));
+  void shutdown();
+  std::string getService();
+  explicit operator bool() const;
+};
+}  // namespace ros
+#endif

@@ -1,0 +1,61 @@
+// haros_arch stand-in: ros::Time, ros::Duration, ros::Rate
+#ifndef HAROS_STANDIN_ROS_TIME_H
+#define HAROS_STANDIN_ROS_TIME_H
+#include <stdint.h>
+namespace ros {
+class Duration {
+public:
+  int32_t sec, nsec;
+  Duration();
+  explicit Duration(double t);
+  Duration(int32_t s, int32_t n);
+  double toSec() const;
+  int64_t toNSec() const;
+  bool sleep() const;
+  Duration operator+(const Duration& rhs) const;
+  Duration operator-(const Duration& rhs) const;
+  Duration operator*(double scale) const;
+  bool operator<(const Duration& rhs) const;
+  bool operator>(const Duration& rhs) const;
+  bool operator<=(const Duration& rhs) const;
+  bool operator>=(const Duration& rhs) const;
+  bool operator==(const Duration& rhs) const;
+  bool isZero() const;
+};
+typedef Duration WallDuration;
+class Time {
+public:
+  uint32_t sec, nsec;
+  Time();
+  explicit Time(double t);
+  Time(uint32_t s, uint32_t n);
+  static Time now();
+  static bool isValid();
+  static bool waitForValid();
+  double toSec() const;
+  uint64_t toNSec() const;
+  bool isZero() const;
+  Time& fromSec(double t);
+  Duration operator-(const Time& rhs) const;
+  Time operator+(const Duration& rhs) const;
+  Time operator-(const Duration& rhs) const;
+  bool operator<(const Time& rhs) const;
+  bool operator>(const Time& rhs) const;
+  bool operator<=(const Time& rhs) const;
+  bool operator>=(const Time& rhs) const;
+  bool operator==(const Time& rhs) const;
+  bool operator!=(const Time& rhs) const;
+};
+typedef Time WallTime;
+class Rate {
+public:
+  explicit Rate(double frequency);
+  explicit Rate(const Duration& d);
+  bool sleep();
+  void reset();
+  Duration cycleTime() const;
+  Duration expectedCycleTime() const;
+};
+typedef Rate WallRate;
+}  // namespace ros
+#endif

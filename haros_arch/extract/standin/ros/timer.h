@@ -1,0 +1,25 @@
+// haros_arch stand-in: ros::Timer
+#ifndef HAROS_STANDIN_ROS_TIMER_H
+#define HAROS_STANDIN_ROS_TIMER_H
+#include <ros/forwards.h>
+#include <ros/time.h>
+namespace ros {
+struct TimerEvent {
+  Time last_expected, last_real, current_expected, current_real;
+};
+typedef TimerEvent WallTimerEvent;
+typedef TimerEvent SteadyTimerEvent;
+typedef boost::function<void(const TimerEvent&)> TimerCallback;
+class Timer {
+public:
+  Timer();
+  void start();
+  void stop();
+  void setPeriod(const Duration& period, bool reset = true);
+  bool hasPending();
+  explicit operator bool() const;
+};
+typedef Timer WallTimer;
+typedef Timer SteadyTimer;
+}  // namespace ros
+#endif

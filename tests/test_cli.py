@@ -1,0 +1,109 @@
+"""The command line as a user meets it: exit codes, messages, never a traceback."""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+
+from conftest import FIXTURES, ROOT, package_xml
+
+from haros_arch.cli import main
+
+
+def run(*args: str, cwd=None) -> subprocess.CompletedProcess[str]:
+    env = {**os.environ, "COLUMNS": "200"}
+    env.pop("HAROS_ARCH_DEBUG", None)
+    return subprocess.run([sys.executable, "-m", "haros_arch.cli", *args], cwd=cwd or ROOT,
+                          capture_output=True, text=True, env=env, timeout=300)
+
+
+def test_extract_writes_the_json_model(tmp_path):
+    out = tmp_path / "model.json"
+    result = run("extract", str(FIXTURES / "paper_minimal/project.yaml"), "-o", str(out))
+    assert result.returncode == 0, result.stderr
+    model = json.loads(out.read_text())
+    assert model["schema"] == "haros-arch/1"
+    assert [t["name"] for t in model["configurations"][0]["topics"]] == ["/chatter"]
+    assert "configuration minimal" in result.stdout
+    assert "/chatter" in result.stdout
+
+
+def test_malformed_project_file_exits_2_with_file_and_line(tmp_path):
+    bad = tmp_path / "project.yaml"
+    bad.write_text("project: p\nconfigurations:\n  a:\n    launch: [x\n")
+    result = run("extract", str(bad))
+    assert result.returncode == 2
+    assert f"{bad}:5:" in result.stderr
+    assert "Traceback" not in result.stderr
+
+
+def test_missing_workspace_exits_2(tmp_path):
+    project = tmp_path / "project.yaml"
+    project.write_text("project: p\nworkspace: does_not_exist\n")
+    result = run("check", str(project))
+    assert result.returncode == 2
+    assert "does_not_exist does not exist" in result.stderr
+
+
+def test_missing_launch_file_is_a_diagnostic(write_tree):
+    root = write_tree({
+        "src/pkg/package.xml": package_xml("pkg"),
+        "project.yaml": """
+            project: p
+            configurations:
+              c:
+                launch: [pkg/launch/nope.launch, other_pkg/launch/a.launch]
+            """,
+    })
+    result = run("check", str(root / "project.yaml"), "--format", "json")
+    assert result.returncode == 1
+    found = json.loads(result.stdout)["diagnostics"]
+    assert [(d["code"], d["location"]["line"]) for d in found] == [
+        ("LAUNCH_FILE_MISSING", 4), ("PACKAGE_NOT_FOUND", 4)]
+
+
+def test_cpp_syntax_errors_are_diagnostics_and_the_rest_is_kept(write_tree):
+    root = write_tree({
+        "src/pkg/package.xml": package_xml("pkg"),
+        "src/pkg/CMakeLists.txt": "project(pkg)\nadd_executable(n src/n.cpp)\n",
+        "src/pkg/src/n.cpp": """
+            #include <ros/ros.h>
+            #include <std_msgs/String.h>
+            int main(int argc, char** argv) {
+              ros::init(argc, argv, "n");
+              ros::NodeHandle nh;
+              ros::Publisher p = nh.advertise<std_msgs::String>("out", 1);
+              int x = ;
+              return 0;
+            }
+            """,
+        "src/pkg/launch/a.launch": '<launch><node name="n" pkg="pkg" type="n"/></launch>\n',
+        "project.yaml": "project: p\nconfigurations:\n  c: [pkg/launch/a.launch]\n",
+    })
+    result = run("check", str(root / "project.yaml"), "--format", "json",
+                 "--fail-on", "warning")
+    assert result.returncode == 1
+    found = json.loads(result.stdout)["diagnostics"]
+    errors = [(d["code"], d["location"]["file"], d["location"]["line"]) for d in found]
+    assert ("CPP_PARSE_ERROR", "pkg/src/n.cpp", 7) in errors
+    extracted = run("extract", str(root / "project.yaml"), "-q")
+    model = json.loads(extracted.stdout)
+    assert [t["name"] for t in model["configurations"][0]["topics"]] == ["/out"]
+
+
+def test_check_exit_codes_follow_fail_on(write_tree):
+    root = write_tree({
+        "src/pkg/package.xml": package_xml("pkg"),
+        "src/pkg/launch/a.launch": '<launch><nodes/></launch>\n',
+        "project.yaml": "project: p\nconfigurations:\n  c: [pkg/launch/a.launch]\n",
+    })
+    assert main(["check", str(root / "project.yaml")]) == 0
+    assert main(["check", str(root / "project.yaml"), "--fail-on", "warning"]) == 1
+
+
+def test_explain_lists_codes(capsys):
+    assert main(["explain", "LAUNCH_UNKNOWN_TAG"]) == 0
+    assert "roslaunch ignores tags" in capsys.readouterr().out
+    assert main(["explain", "NO_SUCH_CODE"]) == 2

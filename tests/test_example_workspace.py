@@ -1,0 +1,48 @@
+"""The bundled example workspace (what `scripts/demo` runs) gives the graph it shows."""
+
+from __future__ import annotations
+
+import os
+
+import pytest
+from conftest import ROOT
+
+from haros_arch.pipeline import analyse
+from haros_arch.project import load
+
+
+@pytest.fixture(scope="module")
+def model():
+    return analyse(load(str(ROOT / "examples/project.yaml")), {"PATH": os.environ["PATH"]})
+
+
+def test_both_configurations_and_the_monitor_switch(model):
+    robot, without = model.configurations
+    assert [n.name for n in robot.nodes] == ["/robot1/driver", "/robot1/controller",
+                                             "/monitor"]
+    assert [n.name for n in without.nodes] == ["/robot2/driver", "/robot2/controller"]
+
+
+def test_foreach_in_cmake_finds_all_three_nodes(model):
+    assert sorted(n.name for n in model.nodes) == [
+        "demo_robot/controller", "demo_robot/driver", "demo_robot/monitor"]
+
+
+def test_the_planted_mistakes_are_visible(model):
+    robot = model.configurations[0]
+    cmd_vel = robot.topic("/robot1/cmd_vel")
+    assert cmd_vel is not None
+    assert cmd_vel.types == ["geometry_msgs/Twist", "geometry_msgs/TwistStamped"]
+    assert robot.parameter("/robot_name").readers[0].node.name == "/monitor"
+    assert robot.parameter("/monitor/robot_name").readers == []
+    scan = robot.topic("/robot1/base_scan")
+    assert scan is not None and scan.subscribers[0].rosname.given == "scan"
+
+
+def test_private_handles_and_conditional_client(model):
+    robot = model.configurations[0]
+    reset = robot.service("/robot1/driver/reset")
+    assert reset is not None
+    (client,) = reset.clients
+    assert [(c.statement, c.text) for c in client.conditions] == [("if", "use_reset")]
+    assert robot.parameter("/robot1/driver/port").value == "/dev/ttyUSB0"

@@ -1,0 +1,95 @@
+"""Graph assembly from hand-made node models: name resolution, remaps, resources."""
+
+from __future__ import annotations
+
+from haros_arch.graph import build
+from haros_arch.launch.model import LaunchModel, NodeDecl, ParamDecl
+from haros_arch.model import Condition, Configuration, Location, Node, PrimitiveCall
+from haros_arch.workspace import Workspace
+
+
+def node(package: str, executable: str, *calls: PrimitiveCall) -> Node:
+    return Node(package, executable, calls=list(calls))
+
+
+def call(kind, name, type_=None, line=1, conditions=()):
+    return PrimitiveCall(kind, name, type_, 10, conditions=conditions,
+                         location=Location("p", "p/src/x.cpp", line, 3))
+
+
+def graph(decls, params=(), nodes=()):
+    launch = LaunchModel(nodes=list(decls), params=list(params))
+    ws = Workspace(root="/nowhere")
+    return build(Configuration("c"), launch, ws, {n.name: n for n in nodes})
+
+
+def test_names_resolve_with_namespace_private_and_remaps():
+    talker = node("p", "talker",
+                  call("publish", "chatter", "std_msgs/String"),
+                  call("publish", "/global", "std_msgs/Int32"),
+                  call("read", "~rate", "double"),
+                  call("subscribe", "in", "std_msgs/String"),
+                  call("client", "motors/reset", "std_srvs/Empty"))
+    config = graph([
+        NodeDecl("/r1/talker", "p", "talker", "/r1/",
+                 remaps=[("in", "/shared_in")], args="chatter:=out __name:=x"),
+    ], nodes=[talker])
+    links = {(link.kind, link.rosname.given): link.rosname.full for link in config.links}
+    assert links == {
+        ("publish", "chatter"): "/r1/out",
+        ("publish", "/global"): "/global",
+        ("read", "~rate"): "/r1/talker/rate",
+        ("subscribe", "in"): "/shared_in",
+        ("client", "motors/reset"): "/r1/motors/reset",
+    }
+    assert sorted(t.name for t in config.topics) == ["/global", "/r1/out", "/shared_in"]
+    assert [s.name for s in config.services] == ["/r1/motors/reset"]
+    assert config.nodes[0].remaps == [("in", "/shared_in"), ("chatter", "out")]
+
+
+def test_topics_join_publishers_and_subscribers_with_all_types():
+    pub = node("p", "pub", call("publish", "/t", "std_msgs/String"))
+    sub = node("p", "sub", call("subscribe", "t", "std_msgs/Int32"))
+    config = graph([NodeDecl("/a", "p", "pub"), NodeDecl("/b", "p", "sub")],
+                   nodes=[pub, sub])
+    (topic,) = config.topics
+    assert topic.types == ["std_msgs/Int32", "std_msgs/String"]
+    assert [link.node.name for link in topic.publishers] == ["/a"]
+    assert [link.node.name for link in topic.subscribers] == ["/b"]
+    assert not topic.is_disconnected
+
+
+def test_unknown_names_are_never_merged():
+    a = node("p", "a", call("publish", "?", "x/Y"))
+    b = node("p", "b", call("subscribe", "?", "x/Y"))
+    config = graph([NodeDecl("/a", "p", "a"), NodeDecl("/b", "p", "b")], nodes=[a, b])
+    assert [t.name for t in config.topics] == ["/?", "/?"]
+    assert all(t.is_disconnected and t.is_unresolved for t in config.topics)
+
+
+def test_conditions_combine_launch_and_source():
+    launch_cond = Condition("$(arg sim)", "launch", "if")
+    source_cond = Condition("use_reset", "source", "if")
+    n = node("p", "n", call("client", "reset", conditions=(source_cond,)))
+    config = graph([NodeDecl("/n", "p", "n", conditions=(launch_cond,))], nodes=[n])
+    (link,) = config.links
+    assert link.conditions == (launch_cond, source_cond)
+    assert config.services[0].conditions == (launch_cond, source_cond)
+
+
+def test_launch_parameters_and_unknown_nodes():
+    config = graph([NodeDecl("/x", "missing_pkg", "exe")],
+                   params=[ParamDecl("/frequency", 1.0, "double")])
+    (param,) = config.parameters
+    assert (param.name, param.value, param.type, param.writer_names) == (
+        "/frequency", 1.0, "double", ["<launch>"])
+    assert config.nodes[0].node is None
+    assert [d.code for d in config.diagnostics] == ["PACKAGE_NOT_FOUND"]
+
+
+def test_duplicate_node_names_are_reported():
+    config = graph([NodeDecl("/x", "p", "n", location=Location("p", "a.launch", 2)),
+                    NodeDecl("/x", "p", "n", location=Location("p", "a.launch", 3))],
+                   nodes=[node("p", "n")])
+    assert [(d.code, d.location.line) for d in config.diagnostics] == [
+        ("NODE_NAME_DUPLICATE", 3)]
