@@ -37,12 +37,18 @@ class _Resources:
     def __init__(self, config: Configuration) -> None:
         self.config = config
         self.by_name: dict[tuple[type[Resource], str], Resource] = {}
+        self.repeats: dict[tuple[type[Resource], str], int] = {}
 
     def get(self, cls: type[Resource], name: str) -> Resource:
         key = (cls, name)
         if UNKNOWN_MARK not in name and key in self.by_name:
             return self.by_name[key]
         resource = cls(name)
+        kind = cls.__name__.lower()
+        resource.id = f"{kind}:{name}"
+        if key in self.by_name:  # a second unresolved name: keep ids unique
+            self.repeats[key] = self.repeats.get(key, 1) + 1
+            resource.id += f"#{self.repeats[key]}"
         self.by_name.setdefault(key, resource)
         self._collection(cls).append(resource)
         return resource
@@ -89,6 +95,9 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
             config.diagnostics.append(diag.make(
                 "NODE_NAME_DUPLICATE", instance.location, name=instance.name,
                 other=seen[instance.name].location))
+        instance.id = f"node:{instance.name}"
+        if instance.name in seen:
+            instance.id += f"#{sum(1 for n in config.nodes if n.name == instance.name) + 1}"
         seen.setdefault(instance.name, instance)
         config.nodes.append(instance)
         if instance.node is None:
@@ -110,8 +119,8 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
             config.diagnostics.append(diag.make(
                 "NODE_NOT_FOUND", decl.location, node=f"{decl.package}/{decl.executable}"))
     remaps = list(decl.remaps) + remaps_in_args(decl.args)
-    return NodeInstance(decl.name, node, decl.namespace, remaps, decl.args,
-                        decl.conditions, decl.location)
+    return NodeInstance(decl.name, node, namespace=decl.namespace, remaps=remaps,
+                        args=decl.args, conditions=decl.conditions, location=decl.location)
 
 
 def _link(instance: NodeInstance, call: PrimitiveCall, remaps: Mapping[str, str],

@@ -34,6 +34,7 @@ class NodeInstance:
 
     name: str
     node: Node | None = field(default=None, metadata=REF)
+    id: str = ""  # unique in its configuration: "node:/talker" (set by graph.build)
     namespace: str = "/"
     remaps: list[tuple[str, str]] = field(default_factory=list)
     args: str = ""
@@ -91,6 +92,7 @@ class Resource:
     """What links point at: a topic, service, action or parameter."""
 
     name: str
+    id: str = ""  # unique in its configuration: "topic:/chatter", "topic:/?#2"
     links: list[Link] = field(default_factory=list, metadata=INDEX)
 
     @property

@@ -1,0 +1,26 @@
+"""A query finding: what a catalogue or user query matched, as a value."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from .diagnostic import Severity
+from .location import NOWHERE, Location
+
+
+@dataclass(frozen=True)
+class Finding:
+    """One match of a query in one configuration.
+
+    ``entities`` holds the ``id``s of the runtime entities involved ("node:/talker",
+    "topic:/chatter", ...), so a report can highlight them; ``location`` is the most
+    useful place to look (a source line or a launch file line).
+    """
+
+    rule: str
+    severity: Severity
+    title: str
+    message: str
+    configuration: str | None = None
+    entities: tuple[str, ...] = ()
+    location: Location = field(default=NOWHERE)
