@@ -57,6 +57,11 @@ class PrimitiveCall:
     callback: str | None = None
     conditions: tuple[Condition, ...] = ()
     location: Location = NOWHERE
+    # a name that is the value of a parameter: ``nh.param("topic", t, "scan")`` then
+    # ``subscribe(t, ...)`` gives name "?", name_param "topic", name_default "scan"
+    name_param: str | None = None
+    name_default: str | None = None
+    origin: str = "source"  # "source", or "hint" when a project-file hint made it
 
 
 @dataclass
