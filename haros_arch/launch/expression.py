@@ -149,6 +149,8 @@ _COMPARE: dict[type, Callable[[Any, Any], Any]] = {
     ast.NotIn: lambda a, b: a not in b, ast.Is: operator.is_, ast.IsNot: operator.is_not,
 }
 
+_CONVERSIONS: dict[int, Callable[[object], str]] = {115: str, 114: repr, 97: ascii}
+
 
 @dataclass(frozen=True)
 class _Function:
@@ -233,8 +235,7 @@ class _Interpreter:
         spec = self.eval(node.format_spec) if node.format_spec is not None else ""
         self.known(value, spec)
         _check_format(str(spec))
-        conversion: Callable[[object], str] | None = \
-            {115: str, 114: repr, 97: ascii}.get(node.conversion)
+        conversion = _CONVERSIONS.get(node.conversion)
         if conversion is not None:
             value = conversion(value)
         return self.guard(lambda: format(value, str(spec)))
