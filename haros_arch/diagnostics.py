@@ -116,6 +116,15 @@ CATALOGUE: dict[str, Entry] = {
     "CPP_DYNAMIC_NAME": Entry(
         "info", "the name of this {kind} call is computed at run time; kept as '{name}'",
         "The extractor could not resolve every part of the name statically."),
+    # hints
+    "HINT_INVALID": Entry(
+        "error", "{detail}",
+        "An extraction hint in the project file is malformed and was not used."),
+    "HINT_UNMATCHED": Entry(
+        "warning", "hint for {name} matches no node instance of configuration "
+                   "{configuration}; add 'create: true' and 'node_type' to create it",
+        "A configuration hint names a node instance that no launch file of the "
+        "configuration starts."),
     # graph
     "NODE_NOT_FOUND": Entry(
         "warning", "node type {node} is not in the workspace; its interface is unknown",

@@ -25,7 +25,6 @@ def analyse(project: Project, environment: Mapping[str, str] | None = None) -> M
     env = {**(os.environ if environment is None else environment), **project.environment}
     workspace = scan(project.workspace, env)
     model = Model(project.name, diagnostics=list(workspace.diagnostics))
-    project_file = os.path.relpath(project.path)
 
     launches: dict[str, LaunchModel] = {}
     for spec in project.configurations:
@@ -35,7 +34,7 @@ def analyse(project: Project, environment: Mapping[str, str] | None = None) -> M
     for name in project.packages:
         if name not in workspace.packages:
             model.diagnostics.append(diag.make(
-                "PACKAGE_NOT_FOUND", Location(file=project_file), name=name))
+                "PACKAGE_NOT_FOUND", Location(file=os.path.relpath(project.path)), name=name))
     for launched in launches.values():
         wanted.extend(decl.package for decl in launched.nodes)
     nodes: dict[str, Node] = {}
@@ -47,10 +46,19 @@ def analyse(project: Project, environment: Mapping[str, str] | None = None) -> M
         model.diagnostics.extend(_analyse_package(package, workspace))
         nodes.update((node.name, node) for node in package.nodes)
 
+    project_file = Location(file=os.path.relpath(project.path))
+    if project.nodes:
+        model.diagnostics.extend(graph.apply_node_hints(nodes, project.nodes, project_file))
+
     for spec in project.configurations:
         config = Configuration(spec.name, list(spec.launch), dict(spec.args),
                                {**env, **spec.environment})
         graph.build(config, launches[spec.name], workspace, nodes)
+        if spec.hints:
+            where = Location(file=project_file.file, line=spec.line, column=1)
+            config.diagnostics.extend(graph.apply_hints(config, spec.hints, nodes, where))
+            graph.prune_orphans(config)
+        graph.find_candidates(config)
         model.configurations.append(config)
     return model
 

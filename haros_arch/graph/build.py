@@ -31,13 +31,20 @@ RESOURCE_OF_KIND: dict[str, type[Resource]] = {
 }
 
 
-class _Resources:
+class Resources:
     """Topics, services, actions and parameters by name; unresolved names stay apart."""
 
     def __init__(self, config: Configuration) -> None:
         self.config = config
         self.by_name: dict[tuple[type[Resource], str], Resource] = {}
         self.repeats: dict[tuple[type[Resource], str], int] = {}
+        for collection in (config.topics, config.services, config.actions,
+                           config.parameters):
+            for resource in collection:
+                key = (type(resource), resource.name)
+                self.by_name.setdefault(key, resource)
+                if UNKNOWN_MARK in resource.name:
+                    self.repeats[key] = self.repeats.get(key, 0) + 1
 
     def get(self, cls: type[Resource], name: str) -> Resource:
         key = (cls, name)
@@ -78,7 +85,7 @@ def remaps_in_args(args: str) -> list[tuple[str, str]]:
 def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
           nodes: Mapping[str, Node]) -> Configuration:
     """Fill ``config`` with node instances, resources and links; ``nodes`` by pkg/exec."""
-    resources = _Resources(config)
+    resources = Resources(config)
     config.diagnostics.extend(launch.diagnostics)
     for param in launch.params:
         parameter = resources.get(Parameter, param.name)
@@ -104,7 +111,7 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
             continue
         remaps = resolve_remaps(instance.remaps, instance.namespace, instance.name)
         for call in instance.node.calls:
-            _link(instance, call, remaps, resources, config)
+            link(instance, call, remaps, resources, config)
     return config
 
 
@@ -123,16 +130,34 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
                         args=decl.args, conditions=decl.conditions, location=decl.location)
 
 
-def _link(instance: NodeInstance, call: PrimitiveCall, remaps: Mapping[str, str],
-          resources: _Resources, config: Configuration) -> Link:
-    rosname = RosName.make(call.name, instance.namespace, instance.name, remaps)
+def link(instance: NodeInstance, call: PrimitiveCall, remaps: Mapping[str, str],
+         resources: Resources, config: Configuration) -> Link:
+    """Instantiate one primitive call for a node instance: resolve, remap, connect."""
+    given = _given_name(call, instance, resources)
+    rosname = RosName.make(given, instance.namespace, instance.name, remaps)
     resource = resources.get(RESOURCE_OF_KIND[call.kind], rosname.full)
-    link = LINK_CLASSES[call.kind](
+    made = LINK_CLASSES[call.kind](
         node=instance, resource=resource, rosname=rosname, type=call.type,
         queue_size=call.queue_size, qos=call.qos, latch=call.latch,
         conditions=(*instance.conditions, *call.conditions), location=call.location,
-        call=call)
-    instance.links.append(link)
-    resource.links.append(link)
-    config.links.append(link)
-    return link
+        origin=call.origin, call=call)
+    instance.links.append(made)
+    resource.links.append(made)
+    config.links.append(made)
+    return made
+
+
+def _given_name(call: PrimitiveCall, instance: NodeInstance, resources: Resources) -> str:
+    """The call's name; a name taken from a parameter gets this configuration's value.
+
+    The parameter's launch value wins, then the default written in the code; with
+    neither, the name keeps its ``?``.
+    """
+    if call.name_param is None or UNKNOWN_MARK not in call.name:
+        return call.name
+    param_name = RosName.make(call.name_param, instance.namespace, instance.name).full
+    param = resources.by_name.get((Parameter, param_name))
+    value: str | None = call.name_default
+    if isinstance(param, Parameter) and param.set_by_launch and isinstance(param.value, str):
+        value = param.value
+    return call.name if value is None else call.name.replace(UNKNOWN_MARK, value, 1)

@@ -40,6 +40,7 @@ class NodeInstance:
     args: str = ""
     conditions: tuple[Condition, ...] = ()
     location: Location = NOWHERE
+    origin: str = "launch"  # "launch", or "hint" when a project-file hint created it
     links: list[Link] = field(default_factory=list, metadata=INDEX)
 
     JSON_VIEWS: ClassVar[dict[str, Callable[[Any], Any]]] = {}
@@ -94,6 +95,8 @@ class Resource:
     name: str
     id: str = ""  # unique in its configuration: "topic:/chatter", "topic:/?#2"
     links: list[Link] = field(default_factory=list, metadata=INDEX)
+    # for a name with "?": known resources of the same kind it may stand for, best first
+    candidates: list[Resource] = field(default_factory=list, metadata=INDEX)
 
     @property
     def rosname(self) -> RosName:
@@ -131,6 +134,7 @@ class Topic(Resource):
         "publishers": lambda t: _names(t.publishers),
         "subscribers": lambda t: _names(t.subscribers),
         "conditions": lambda t: t.conditions,
+        "candidates": lambda t: [c.id for c in t.candidates],
     }
 
     @property
@@ -153,6 +157,7 @@ class Service(Resource):
         "servers": lambda s: _names(s.servers),
         "clients": lambda s: _names(s.clients),
         "conditions": lambda s: s.conditions,
+        "candidates": lambda s: [c.id for c in s.candidates],
     }
 
     @property
@@ -175,6 +180,7 @@ class Action(Resource):
         "servers": lambda a: _names(a.servers),
         "clients": lambda a: _names(a.clients),
         "conditions": lambda a: a.conditions,
+        "candidates": lambda a: [c.id for c in a.candidates],
     }
 
     @property
@@ -206,6 +212,7 @@ class Parameter(Resource):
         "writers": lambda p: p.writer_names,
         "conditions": lambda p: p.conditions,
         "location": lambda p: p.location,
+        "candidates": lambda p: [c.id for c in p.candidates],
     }
 
     @property
@@ -265,6 +272,7 @@ class Link:
     latch: bool = False
     conditions: tuple[Condition, ...] = ()
     location: Location = NOWHERE
+    origin: str = "source"  # "source", or "hint" when a project-file hint made it
     call: PrimitiveCall | None = field(default=None, metadata=INDEX)
 
     JSON_VIEWS: ClassVar[dict[str, Callable[[Any], Any]]] = {}

@@ -1,0 +1,85 @@
+"""Hints, candidates for unknown names, and names that come from parameters."""
+
+from __future__ import annotations
+
+from test_graph import call, graph, node
+
+from haros_arch.graph import apply_hints, apply_node_hints, find_candidates, prune_orphans
+from haros_arch.launch.model import NodeDecl, ParamDecl
+from haros_arch.model import Location
+
+WHERE = Location(file="project.yaml", line=3)
+
+
+def test_node_hint_completes_an_unknown_name_and_adds_calls():
+    talker = node("p", "talker", call("publish", "?", "std_msgs/String"))
+    nodes = {talker.name: talker}
+    found = apply_node_hints(nodes, {"p/talker": {
+        "publishers": [{"topic": "chatter", "msg_type": "std_msgs/String"}],
+        "getters": [{"parameter": "~rate", "param_type": "double"}],
+    }}, WHERE)
+    assert found == []
+    assert [(c.kind, c.name, c.origin) for c in talker.calls] == [
+        ("publish", "chatter", "hint"), ("read", "~rate", "hint")]
+
+
+def test_node_hint_for_a_node_nobody_builds_creates_it():
+    nodes = {}
+    apply_node_hints(nodes, {"drivers/laser": {
+        "publishers": [{"topic": "scan", "msg_type": "sensor_msgs/LaserScan",
+                        "queue_size": 5}]}}, WHERE)
+    config = graph([NodeDecl("/laser", "drivers", "laser")], nodes=list(nodes.values()))
+    (topic,) = config.topics
+    assert (topic.name, topic.types) == ("/scan", ["sensor_msgs/LaserScan"])
+    assert config.links[0].origin == "hint"
+    assert config.links[0].queue_size == 5
+
+
+def test_configuration_hints_complete_links_and_create_instances():
+    pub = node("p", "pub", call("publish", "?", "std_msgs/String"))
+    sub = node("p", "sub", call("subscribe", "/chatter", "std_msgs/String"))
+    config = graph([NodeDecl("/pub", "p", "pub"), NodeDecl("/sub", "p", "sub")],
+                   nodes=[pub, sub])
+    found = apply_hints(config, {
+        "/pub": {"publishers": [{"topic": "/chatter", "msg_type": "std_msgs/String"}]},
+        "/bridge": {"create": True, "node_type": "x/bridge",
+                    "subscribers": [{"topic": "/chatter"}]},
+        "/ghost": {"publishers": [{"topic": "/x"}]},
+        "/sub": {"talkers": []},
+    }, {}, WHERE)
+    prune_orphans(config)
+    assert [d.code for d in found] == ["HINT_UNMATCHED", "HINT_INVALID"]
+    (topic,) = config.topics
+    assert topic.name == "/chatter"
+    assert sorted(link.node.name for link in topic.links) == ["/bridge", "/pub", "/sub"]
+    publish = topic.publishers[0]
+    assert (publish.origin, publish.rosname.given) == ("hint", "?")
+    bridge = config.node("/bridge")
+    assert bridge is not None and bridge.origin == "hint"
+
+
+def test_candidates_match_pattern_and_type():
+    a = node("p", "a", call("subscribe", "robot/?/scan", "sensor_msgs/LaserScan"))
+    b = node("p", "b", call("publish", "/robot/front/scan", "sensor_msgs/LaserScan"),
+             call("publish", "/robot/rear/scan", "sensor_msgs/LaserScan"),
+             call("publish", "/robot/cam/scan", "sensor_msgs/Image"),
+             call("publish", "/other/front/scan", "sensor_msgs/LaserScan"))
+    config = graph([NodeDecl("/a", "p", "a"), NodeDecl("/b", "p", "b")], nodes=[a, b])
+    find_candidates(config)
+    unknown = next(t for t in config.topics if t.is_unresolved)
+    assert [c.name for c in unknown.candidates] == ["/robot/front/scan", "/robot/rear/scan"]
+    assert all(not t.candidates for t in config.topics if not t.is_unresolved)
+
+
+def test_names_from_parameters_take_the_launch_value_then_the_default():
+    def listener(executable):
+        n = node("p", executable, call("subscribe", "?", "sensor_msgs/LaserScan"))
+        n.calls[0].name_param = "~topic"
+        n.calls[0].name_default = "scan"
+        return n
+
+    config = graph(
+        [NodeDecl("/with_param", "p", "l1"), NodeDecl("/without", "p", "l2")],
+        params=[ParamDecl("/with_param/topic", "base_scan", "str")],
+        nodes=[listener("l1"), listener("l2")])
+    assert sorted(t.name for t in config.topics) == ["/base_scan", "/scan"]
