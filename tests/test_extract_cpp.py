@@ -209,3 +209,17 @@ def test_missing_include_gets_an_empty_stand_in(features_ws: Workspace) -> None:
 def test_unreadable_source_is_a_diagnostic(features_ws: Workspace) -> None:
     result = extract_cpp([os.path.join(FEATURES_SRC, "nope.cpp")], features_ws)
     assert result.calls == [] and codes(result) == ["FILE_UNREADABLE"]
+
+
+def test_no_system_header_is_needed(
+    features_ws: Workspace, names: CppResult, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    from haros_arch.extract.cpp import toolchain
+
+    def no_system() -> tuple[str, ...]:
+        raise AssertionError("the default mode must not look at the system's headers")
+
+    monkeypatch.setattr(toolchain, "system_include_dirs", no_system)
+    again = extract_cpp([os.path.join(FEATURES_SRC, "names.cpp")], features_ws)
+    assert [summary(c) for c in again.calls] == [summary(c) for c in names.calls]
+    assert codes(again) == codes(names)

@@ -10,7 +10,10 @@ resolved the way the preprocessor will, and:
   synthesised in a generated folder that comes first on the include path;
 - in the default mode, ``ros/...`` and ``boost/...`` headers come from our stand-ins
   only, so the result does not depend on what is installed; one we have no stand-in for
-  becomes an empty header;
+  becomes an empty header; the C and C++ standard library is our own small stand-in
+  (``standin/std``) and nothing of the system is searched (``-nostdinc``), so no compiler
+  needs to be installed; the stand-ins are precompiled once per process (a PCH), which
+  brings a translation unit down to a few milliseconds;
 - any other header that is not found becomes an empty header and a
   ``CPP_INCLUDE_MISSING`` diagnostic.
 
@@ -20,11 +23,15 @@ lacks are synthesised, so the real ROS headers are used.
 
 from __future__ import annotations
 
+import atexit
 import os
 import re
 import shutil
 import tempfile
+import threading
 from collections.abc import Sequence
+
+from clang.cindex import TranslationUnitLoadError, TranslationUnitSaveError
 
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
@@ -34,6 +41,10 @@ from ...workspace import Workspace
 from . import interfaces, toolchain
 
 STANDIN = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "standin")
+STD_STANDIN = os.path.join(STANDIN, "std")  # the C and C++ standard library stand-in
+PRELUDE = os.path.join(STANDIN, "haros_prelude.h")  # what is precompiled
+# CXTranslationUnit_ForSerialization | Incomplete (a header, not a whole program)
+_PCH_OPTIONS = 0x10 | 0x02
 SHADOWED = ("ros/", "boost/")  # prefixes only our stand-ins provide in the default mode
 
 _INCLUDE = re.compile(r'^[ \t]*#[ \t]*include[ \t]*([<"])([^>"\n]+)[>"]', re.MULTILINE)
@@ -58,12 +69,17 @@ class IncludeSetup:
         self._scanned: set[str] = set()
 
     def arguments(self) -> list[str]:
+        flags = toolchain.base_arguments(self.system_headers)
         args = ["-I", self.generated]
         if not self.system_headers:
             args += ["-I", STANDIN]
         for folder in self.user_dirs:
             args += ["-I", folder]
-        return args + toolchain.base_arguments()
+        if self.system_headers:
+            return args + flags
+        args += ["-isystem", STD_STANDIN, *flags]
+        pch = precompiled_prelude(flags)
+        return [*args, "-include-pch", pch] if pch is not None else args
 
     def close(self) -> None:
         shutil.rmtree(self.generated, ignore_errors=True)
@@ -144,7 +160,8 @@ class IncludeSetup:
         return interfaces.parse_definition(package, name, text)
 
     def _resolve(self, header: str) -> str | None:
-        folders = [*self.user_dirs, *toolchain.system_include_dirs()]
+        system = toolchain.system_include_dirs() if self.system_headers else (STD_STANDIN,)
+        folders = [*self.user_dirs, *system]
         for folder in folders:
             candidate = os.path.join(folder, header)
             if os.path.isfile(candidate):
@@ -185,3 +202,34 @@ class IncludeSetup:
                 self._empty(header, where)
             changed = True
         return changed
+
+
+# -- the precompiled prelude -----------------------------------------------------------
+
+_PCH: dict[tuple[str, ...], str | None] = {}
+_PCH_LOCK = threading.Lock()
+
+
+def precompiled_prelude(flags: Sequence[str]) -> str | None:
+    """A PCH of the stand-in headers for these language ``flags``, built once per process.
+
+    None when libclang cannot build it; parsing then reads the headers every time.
+    """
+    key = tuple(flags)
+    with _PCH_LOCK:
+        if key in _PCH:
+            return _PCH[key]
+        folder = tempfile.mkdtemp(prefix="haros-arch-pch-")
+        atexit.register(shutil.rmtree, folder, True)
+        path: str | None = os.path.join(folder, "prelude.pch")
+        args = ["-I", STANDIN, "-isystem", STD_STANDIN, *flags, "-x", "c++-header"]
+        try:
+            tu = toolchain.index().parse(PRELUDE, args=args, options=_PCH_OPTIONS)
+            if any(d.severity >= 3 for d in tu.diagnostics):
+                path = None
+            else:
+                tu.save(path)
+        except (TranslationUnitLoadError, TranslationUnitSaveError):
+            path = None
+        _PCH[key] = path
+        return path

@@ -1,9 +1,10 @@
-"""The C++ toolchain libclang parses with: the library itself and the system headers.
+"""The C++ toolchain libclang parses with: the library itself and the language flags.
 
-The libclang wheel ships the library but not clang's own resource headers (stddef.h,
-stdarg.h, ...) nor a C++ standard library, so we use the system compiler's: its search
-list (``c++ -E -x c++ - -v``) when a compiler is installed, else the usual Debian / GCC
-folders found by globbing.
+By default nothing of the system is used: the stand-in standard library replaces it
+(``headers``). Only with ``system_headers`` (the real ROS headers, HAROS's way) do we need
+the system compiler's headers, since the libclang wheel ships neither clang's resource
+headers nor a C++ standard library: its search list (``c++ -E -x c++ - -v``) when a
+compiler is installed, else the usual Debian / GCC folders found by globbing.
 """
 
 from __future__ import annotations
@@ -78,10 +79,15 @@ def _version_key(text: str) -> tuple[int, ...]:
     return tuple(int(p) for p in text.split(".") if p.isdigit())
 
 
-def base_arguments() -> list[str]:
-    """Language flags and the system include path, ours to control (``-nostdinc``)."""
-    args = ["-x", "c++", "-std=c++14", "-nostdinc", "-nostdinc++", "-fsyntax-only",
+def base_arguments(system_headers: bool = True) -> list[str]:
+    """Language flags, and the system include path when ``system_headers`` is set.
+
+    Without it nothing of the system is searched (``-nostdinc``): the caller puts our
+    stand-in standard library on the path instead.
+    """
+    args = ["-x", "c++", "-std=c++17", "-nostdinc", "-nostdinc++", "-fsyntax-only",
             "-Wno-everything"]
-    for folder in system_include_dirs():
-        args += ["-isystem", folder]
+    if system_headers:
+        for folder in system_include_dirs():
+            args += ["-isystem", folder]
     return args

@@ -9,7 +9,7 @@ public:
   template<class Y> explicit shared_ptr(Y* p);
   template<class Y> shared_ptr(const shared_ptr<Y>& other);
   T* operator->() const;
-  T& operator*() const;
+  template<class U = T> U& operator*() const;
   T* get() const;
   void reset();
   template<class Y> void reset(Y* p);

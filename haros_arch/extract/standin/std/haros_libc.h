@@ -1,0 +1,184 @@
+// haros_arch stand-in: the C library parts node code uses (declarations only)
+#ifndef HAROS_STANDIN_LIBC_H
+#define HAROS_STANDIN_LIBC_H
+typedef __SIZE_TYPE__ size_t;
+typedef __PTRDIFF_TYPE__ ptrdiff_t;
+typedef __INT8_TYPE__ int8_t;
+typedef __INT16_TYPE__ int16_t;
+typedef __INT32_TYPE__ int32_t;
+typedef __INT64_TYPE__ int64_t;
+typedef __UINT8_TYPE__ uint8_t;
+typedef __UINT16_TYPE__ uint16_t;
+typedef __UINT32_TYPE__ uint32_t;
+typedef __UINT64_TYPE__ uint64_t;
+typedef __INTPTR_TYPE__ intptr_t;
+typedef __UINTPTR_TYPE__ uintptr_t;
+typedef __INTMAX_TYPE__ intmax_t;
+typedef __UINTMAX_TYPE__ uintmax_t;
+typedef long ssize_t;
+typedef long time_t;
+typedef int pid_t;
+typedef unsigned int useconds_t;
+typedef __builtin_va_list va_list;
+#define va_start(ap, param) __builtin_va_start(ap, param)
+#define va_end(ap) __builtin_va_end(ap)
+#define va_arg(ap, type) __builtin_va_arg(ap, type)
+#ifndef NULL
+#define NULL __null
+#endif
+#define offsetof(t, d) __builtin_offsetof(t, d)
+#define INT8_MAX 127
+#define INT16_MAX 32767
+#define INT32_MAX 2147483647
+#define INT64_MAX 9223372036854775807L
+#define INT32_MIN (-INT32_MAX - 1)
+#define INT64_MIN (-INT64_MAX - 1)
+#define UINT8_MAX 255
+#define UINT16_MAX 65535
+#define UINT32_MAX 4294967295U
+#define UINT64_MAX 18446744073709551615UL
+#define INT_MAX 2147483647
+#define INT_MIN (-INT_MAX - 1)
+#define UINT_MAX 4294967295U
+#define LONG_MAX 9223372036854775807L
+#define CHAR_BIT 8
+#define FLT_MAX 3.40282347e+38F
+#define FLT_EPSILON 1.19209290e-7F
+#define DBL_MAX 1.7976931348623157e+308
+#define DBL_MIN 2.2250738585072014e-308
+#define DBL_EPSILON 2.2204460492503131e-16
+#define M_PI 3.14159265358979323846
+#define M_PI_2 1.57079632679489661923
+#define M_PI_4 0.78539816339744830962
+#define M_E 2.7182818284590452354
+#define HUGE_VAL (__builtin_huge_val())
+#define INFINITY (__builtin_inff())
+#define NAN (__builtin_nanf(""))
+#define EXIT_SUCCESS 0
+#define EXIT_FAILURE 1
+#define RAND_MAX 2147483647
+#define EOF (-1)
+#define SIGINT 2
+#define SIGTERM 15
+#define SIG_DFL ((void (*)(int))0)
+#define SIG_IGN ((void (*)(int))1)
+#define errno (*__errno_location())
+#define assert(expr) ((void)(expr))
+#define CLOCK_MONOTONIC 1
+#define CLOCK_REALTIME 0
+extern "C" {
+int* __errno_location();
+typedef struct haros_FILE FILE;
+extern FILE* stdin;
+extern FILE* stdout;
+extern FILE* stderr;
+int printf(const char* format, ...);
+int fprintf(FILE* stream, const char* format, ...);
+int sprintf(char* str, const char* format, ...);
+int snprintf(char* str, size_t size, const char* format, ...);
+int vsnprintf(char* str, size_t size, const char* format, va_list ap);
+int sscanf(const char* str, const char* format, ...);
+int scanf(const char* format, ...);
+int puts(const char* s);
+int putchar(int c);
+int getchar();
+FILE* fopen(const char* path, const char* mode);
+int fclose(FILE* stream);
+size_t fread(void* ptr, size_t size, size_t n, FILE* stream);
+size_t fwrite(const void* ptr, size_t size, size_t n, FILE* stream);
+char* fgets(char* s, int size, FILE* stream);
+int fflush(FILE* stream);
+void perror(const char* s);
+void* malloc(size_t size);
+void* calloc(size_t n, size_t size);
+void* realloc(void* ptr, size_t size);
+void free(void* ptr);
+void exit(int status);
+void abort();
+int atexit(void (*f)());
+char* getenv(const char* name);
+int setenv(const char* name, const char* value, int overwrite);
+int system(const char* command);
+int atoi(const char* s);
+long atol(const char* s);
+double atof(const char* s);
+long strtol(const char* s, char** end, int base);
+unsigned long strtoul(const char* s, char** end, int base);
+double strtod(const char* s, char** end);
+int rand();
+void srand(unsigned seed);
+int abs(int x);
+long labs(long x);
+size_t strlen(const char* s);
+int strcmp(const char* a, const char* b);
+int strncmp(const char* a, const char* b, size_t n);
+char* strcpy(char* d, const char* s);
+char* strncpy(char* d, const char* s, size_t n);
+char* strcat(char* d, const char* s);
+char* strchr(const char* s, int c);
+char* strrchr(const char* s, int c);
+char* strstr(const char* s, const char* t);
+char* strdup(const char* s);
+char* strtok(char* s, const char* delim);
+char* strerror(int errnum);
+void* memcpy(void* d, const void* s, size_t n);
+void* memmove(void* d, const void* s, size_t n);
+void* memset(void* d, int c, size_t n);
+int memcmp(const void* a, const void* b, size_t n);
+int isalpha(int c);
+int isdigit(int c);
+int isspace(int c);
+int isalnum(int c);
+int toupper(int c);
+int tolower(int c);
+double sqrt(double x);
+double pow(double x, double y);
+double exp(double x);
+double log(double x);
+double log10(double x);
+double sin(double x);
+double cos(double x);
+double tan(double x);
+double asin(double x);
+double acos(double x);
+double atan(double x);
+double atan2(double y, double x);
+double sinh(double x);
+double cosh(double x);
+double tanh(double x);
+double fabs(double x);
+double floor(double x);
+double ceil(double x);
+double round(double x);
+double trunc(double x);
+double fmod(double x, double y);
+double hypot(double x, double y);
+double copysign(double x, double y);
+double fmin(double x, double y);
+double fmax(double x, double y);
+long lround(double x);
+float sqrtf(float x);
+float fabsf(float x);
+float sinf(float x);
+float cosf(float x);
+float atan2f(float y, float x);
+int isnan(double x);
+int isinf(double x);
+int isfinite(double x);
+struct timespec { time_t tv_sec; long tv_nsec; };
+struct timeval { time_t tv_sec; long tv_usec; };
+time_t time(time_t* t);
+int clock_gettime(int clock, struct timespec* ts);
+int gettimeofday(struct timeval* tv, void* tz);
+int nanosleep(const struct timespec* req, struct timespec* rem);
+unsigned int sleep(unsigned int seconds);
+int usleep(useconds_t usec);
+pid_t getpid();
+int close(int fd);
+ssize_t read(int fd, void* buf, size_t count);
+ssize_t write(int fd, const void* buf, size_t count);
+int open(const char* path, int flags, ...);
+typedef void (*sighandler_t)(int);
+sighandler_t signal(int signum, sighandler_t handler);
+}
+#endif

@@ -1,0 +1,970 @@
+// haros_arch stand-in: the C++ standard library parts node code uses (declarations only).
+// Every standard header name includes this one file: it is small enough to parse in a
+// few milliseconds, and code that forgot an #include still parses.
+#ifndef HAROS_STANDIN_STD_H
+#define HAROS_STANDIN_STD_H
+#include "haros_libc.h"
+namespace std {
+using ::size_t; using ::ptrdiff_t; using ::int8_t; using ::int16_t; using ::int32_t;
+using ::int64_t; using ::uint8_t; using ::uint16_t; using ::uint32_t; using ::uint64_t;
+using ::printf; using ::fprintf; using ::snprintf; using ::sprintf; using ::FILE;
+using ::getenv; using ::exit; using ::abort; using ::atoi; using ::atof; using ::strtol;
+using ::strtod; using ::malloc; using ::free; using ::memcpy; using ::memset;
+using ::strlen; using ::strcmp; using ::rand; using ::srand; using ::time; using ::time_t;
+using ::sqrt; using ::pow; using ::exp; using ::log; using ::log10; using ::sin;
+using ::cos; using ::tan; using ::asin; using ::acos; using ::atan; using ::atan2;
+using ::fabs; using ::floor; using ::ceil; using ::round; using ::trunc; using ::fmod;
+using ::hypot; using ::copysign; using ::fmin; using ::fmax; using ::lround;
+using ::isnan; using ::isinf; using ::isfinite; using ::signal;
+typedef decltype(nullptr) nullptr_t;
+float sqrt(float x);
+float fabs(float x);
+float abs(float x);
+double abs(double x);
+long abs(long x);
+int abs(int x);
+float atan2(float y, float x);
+float sin(float x);
+float cos(float x);
+
+// <initializer_list>, <type_traits>, <utility>
+template<class E> class initializer_list {
+  const E* b_;
+  size_t n_;
+public:
+  constexpr initializer_list() noexcept;
+  constexpr size_t size() const noexcept;
+  constexpr const E* begin() const noexcept;
+  constexpr const E* end() const noexcept;
+};
+template<class T, T v> struct integral_constant {
+  static constexpr T value = v;
+  typedef T value_type;
+  constexpr operator T() const noexcept { return v; }
+};
+typedef integral_constant<bool, true> true_type;
+typedef integral_constant<bool, false> false_type;
+template<class A, class B> struct is_same : false_type {};
+template<class A> struct is_same<A, A> : true_type {};
+template<bool B, class T = void> struct enable_if {};
+template<class T> struct enable_if<true, T> { typedef T type; };
+template<bool B, class T = void> using enable_if_t = typename enable_if<B, T>::type;
+template<bool B, class T, class F> struct conditional { typedef T type; };
+template<class T, class F> struct conditional<false, T, F> { typedef F type; };
+template<class T> struct remove_reference { typedef T type; };
+template<class T> struct remove_reference<T&> { typedef T type; };
+template<class T> struct remove_reference<T&&> { typedef T type; };
+template<class T> using remove_reference_t = typename remove_reference<T>::type;
+template<class T> struct remove_const { typedef T type; };
+template<class T> struct remove_const<const T> { typedef T type; };
+template<class T> struct decay { typedef typename remove_const<typename remove_reference<T>::type>::type type; };
+template<class T> using decay_t = typename decay<T>::type;
+template<class T> struct is_arithmetic : integral_constant<bool, __is_arithmetic(T)> {};
+template<class T> struct is_integral : integral_constant<bool, __is_integral(T)> {};
+template<class T> struct is_floating_point : integral_constant<bool, __is_floating_point(T)> {};
+template<class B, class D> struct is_base_of : integral_constant<bool, __is_base_of(B, D)> {};
+template<class T> constexpr typename remove_reference<T>::type&& move(T&& t) noexcept;
+template<class T> constexpr T&& forward(typename remove_reference<T>::type& t) noexcept;
+template<class T> constexpr T&& forward(typename remove_reference<T>::type&& t) noexcept;
+template<class T> void swap(T& a, T& b);
+template<class T> T&& declval() noexcept;
+template<class A, class B> struct pair {
+  typedef A first_type;
+  typedef B second_type;
+  A first;
+  B second;
+  pair();
+  pair(const A& a, const B& b);
+  template<class U, class V> pair(U&& a, V&& b);
+  template<class U, class V> pair(const pair<U, V>& p);
+};
+template<class A, class B> pair<typename decay<A>::type, typename decay<B>::type> make_pair(A&& a, B&& b);
+template<class A, class B> bool operator==(const pair<A, B>& x, const pair<A, B>& y);
+template<class A, class B> bool operator<(const pair<A, B>& x, const pair<A, B>& y);
+template<class... T> class tuple {
+public:
+  tuple();
+  template<class... U> tuple(U&&... args);
+};
+template<class... T> tuple<typename decay<T>::type...> make_tuple(T&&... args);
+template<class... T> tuple<T&...> tie(T&... args);
+template<class T> struct hash { size_t operator()(const T& v) const; };
+template<class T> struct less { bool operator()(const T& a, const T& b) const; };
+template<class T> struct greater { bool operator()(const T& a, const T& b) const; };
+template<class T> struct equal_to { bool operator()(const T& a, const T& b) const; };
+template<class T> class allocator {
+public:
+  typedef T value_type;
+  allocator();
+  template<class U> allocator(const allocator<U>& other);
+};
+template<class C> struct char_traits { typedef C char_type; };
+struct input_iterator_tag {};
+struct forward_iterator_tag : input_iterator_tag {};
+struct random_access_iterator_tag : forward_iterator_tag {};
+
+// <string>
+template<class C, class Tr = char_traits<C>, class A = allocator<C>> class basic_string {
+public:
+  typedef C value_type;
+  typedef size_t size_type;
+  typedef C* iterator;
+  typedef const C* const_iterator;
+  static const size_t npos = static_cast<size_t>(-1);
+  basic_string();
+  basic_string(const C* s);
+  basic_string(const C* s, size_t n);
+  basic_string(size_t n, C c);
+  basic_string(const basic_string& s);
+  basic_string(basic_string&& s);
+  basic_string(const basic_string& s, size_t pos, size_t n = npos);
+  template<class It> basic_string(It first, It last);
+  basic_string(initializer_list<C> chars);
+  ~basic_string();
+  basic_string& operator=(const basic_string& s);
+  basic_string& operator=(basic_string&& s);
+  basic_string& operator=(const C* s);
+  basic_string& operator=(C c);
+  basic_string& operator+=(const basic_string& s);
+  basic_string& operator+=(const C* s);
+  basic_string& operator+=(C c);
+  C& operator[](size_t i);
+  const C& operator[](size_t i) const;
+  C& at(size_t i);
+  const C& at(size_t i) const;
+  C& back();
+  C& front();
+  const C* c_str() const;
+  const C* data() const;
+  size_t size() const;
+  size_t length() const;
+  size_t capacity() const;
+  bool empty() const;
+  void clear();
+  void reserve(size_t n);
+  void resize(size_t n);
+  void resize(size_t n, C c);
+  void push_back(C c);
+  void pop_back();
+  basic_string& append(const basic_string& s);
+  basic_string& append(const C* s);
+  basic_string& append(size_t n, C c);
+  basic_string& assign(const basic_string& s);
+  basic_string& insert(size_t pos, const basic_string& s);
+  basic_string& erase(size_t pos = 0, size_t n = npos);
+  iterator erase(iterator first, iterator last);
+  basic_string& replace(size_t pos, size_t n, const basic_string& s);
+  basic_string substr(size_t pos = 0, size_t n = npos) const;
+  size_t find(const basic_string& s, size_t pos = 0) const;
+  size_t find(const C* s, size_t pos = 0) const;
+  size_t find(C c, size_t pos = 0) const;
+  size_t rfind(const basic_string& s, size_t pos = npos) const;
+  size_t rfind(C c, size_t pos = npos) const;
+  size_t find_first_of(const basic_string& s, size_t pos = 0) const;
+  size_t find_first_of(C c, size_t pos = 0) const;
+  size_t find_last_of(const basic_string& s, size_t pos = npos) const;
+  size_t find_last_of(C c, size_t pos = npos) const;
+  size_t find_first_not_of(const basic_string& s, size_t pos = 0) const;
+  size_t find_last_not_of(const basic_string& s, size_t pos = npos) const;
+  int compare(const basic_string& s) const;
+  int compare(size_t pos, size_t n, const basic_string& s) const;
+  iterator begin();
+  iterator end();
+  const_iterator begin() const;
+  const_iterator end() const;
+  const_iterator cbegin() const;
+  const_iterator cend() const;
+};
+typedef basic_string<char> string;
+typedef basic_string<wchar_t> wstring;
+template<class C> basic_string<C> operator+(const basic_string<C>& a, const basic_string<C>& b);
+template<class C> basic_string<C> operator+(const basic_string<C>& a, const C* b);
+template<class C> basic_string<C> operator+(const C* a, const basic_string<C>& b);
+template<class C> basic_string<C> operator+(const basic_string<C>& a, C b);
+template<class C> basic_string<C> operator+(C a, const basic_string<C>& b);
+template<class C> bool operator==(const basic_string<C>& a, const basic_string<C>& b);
+template<class C> bool operator==(const basic_string<C>& a, const C* b);
+template<class C> bool operator==(const C* a, const basic_string<C>& b);
+template<class C> bool operator!=(const basic_string<C>& a, const basic_string<C>& b);
+template<class C> bool operator!=(const basic_string<C>& a, const C* b);
+template<class C> bool operator!=(const C* a, const basic_string<C>& b);
+template<class C> bool operator<(const basic_string<C>& a, const basic_string<C>& b);
+template<class C> bool operator>(const basic_string<C>& a, const basic_string<C>& b);
+template<> struct hash<string> { size_t operator()(const string& s) const; };
+string to_string(int v);
+string to_string(long v);
+string to_string(long long v);
+string to_string(unsigned v);
+string to_string(unsigned long v);
+string to_string(unsigned long long v);
+string to_string(float v);
+string to_string(double v);
+int stoi(const string& s, size_t* pos = nullptr, int base = 10);
+long stol(const string& s, size_t* pos = nullptr, int base = 10);
+unsigned long stoul(const string& s, size_t* pos = nullptr, int base = 10);
+float stof(const string& s, size_t* pos = nullptr);
+double stod(const string& s, size_t* pos = nullptr);
+class string_view {
+public:
+  string_view();
+  string_view(const char* s);
+  string_view(const char* s, size_t n);
+  string_view(const string& s);
+  size_t size() const;
+  const char* data() const;
+  bool empty() const;
+  operator string() const;
+};
+inline namespace literals { inline namespace string_literals {
+string operator""s(const char* s, size_t n);
+} }
+
+// <vector>, <deque>, <list>, <array>, <set>, <map>, <unordered_map>, <queue>
+template<class T, class A = allocator<T>> class vector {
+public:
+  typedef T value_type;
+  typedef size_t size_type;
+  typedef T& reference;
+  typedef const T& const_reference;
+  typedef T* iterator;
+  typedef const T* const_iterator;
+  typedef T* reverse_iterator;
+  vector();
+  explicit vector(size_t n);
+  vector(size_t n, const T& v);
+  vector(initializer_list<T> items);
+  template<class It> vector(It first, It last);
+  vector(const vector& v);
+  vector(vector&& v);
+  ~vector();
+  vector& operator=(const vector& v);
+  vector& operator=(vector&& v);
+  vector& operator=(initializer_list<T> items);
+  T& operator[](size_t i);
+  const T& operator[](size_t i) const;
+  T& at(size_t i);
+  const T& at(size_t i) const;
+  T& front();
+  const T& front() const;
+  T& back();
+  const T& back() const;
+  T* data();
+  const T* data() const;
+  size_t size() const;
+  size_t capacity() const;
+  bool empty() const;
+  void clear();
+  void reserve(size_t n);
+  void resize(size_t n);
+  void resize(size_t n, const T& v);
+  void push_back(const T& v);
+  void push_back(T&& v);
+  template<class... Args> T& emplace_back(Args&&... args);
+  void pop_back();
+  iterator insert(const_iterator pos, const T& v);
+  template<class It> iterator insert(const_iterator pos, It first, It last);
+  iterator erase(const_iterator pos);
+  iterator erase(const_iterator first, const_iterator last);
+  void assign(size_t n, const T& v);
+  template<class It> void assign(It first, It last);
+  void swap(vector& other);
+  iterator begin();
+  iterator end();
+  const_iterator begin() const;
+  const_iterator end() const;
+  const_iterator cbegin() const;
+  const_iterator cend() const;
+  reverse_iterator rbegin();
+  reverse_iterator rend();
+};
+template<class T> bool operator==(const vector<T>& a, const vector<T>& b);
+template<class T> bool operator!=(const vector<T>& a, const vector<T>& b);
+template<class T, class A = allocator<T>> class deque : public vector<T, A> {
+public:
+  using vector<T, A>::vector;
+  void push_front(const T& v);
+  void pop_front();
+};
+template<class T, class A = allocator<T>> class list : public vector<T, A> {
+public:
+  using vector<T, A>::vector;
+  void push_front(const T& v);
+  void pop_front();
+  void sort();
+  void remove(const T& v);
+};
+template<class T, size_t N> struct array {
+  T elems_[N ? N : 1];
+  typedef T value_type;
+  typedef T* iterator;
+  typedef const T* const_iterator;
+  T& operator[](size_t i);
+  const T& operator[](size_t i) const;
+  T& at(size_t i);
+  constexpr size_t size() const;
+  bool empty() const;
+  T* data();
+  void fill(const T& v);
+  T* begin();
+  T* end();
+  const T* begin() const;
+  const T* end() const;
+};
+template<class K, class V> class haros_map_iterator {
+public:
+  typedef pair<const K, V> value_type;
+  value_type& operator*() const;
+  value_type* operator->() const;
+  haros_map_iterator& operator++();
+  haros_map_iterator operator++(int);
+  haros_map_iterator& operator--();
+  bool operator==(const haros_map_iterator& o) const;
+  bool operator!=(const haros_map_iterator& o) const;
+};
+template<class K, class V, class C = less<K>, class A = allocator<pair<const K, V>>>
+class map {
+public:
+  typedef K key_type;
+  typedef V mapped_type;
+  typedef pair<const K, V> value_type;
+  typedef haros_map_iterator<K, V> iterator;
+  typedef haros_map_iterator<K, V> const_iterator;
+  map();
+  map(initializer_list<value_type> items);
+  map(const map& m);
+  map& operator=(const map& m);
+  V& operator[](const K& k);
+  V& at(const K& k);
+  const V& at(const K& k) const;
+  size_t size() const;
+  bool empty() const;
+  void clear();
+  size_t count(const K& k) const;
+  iterator find(const K& k);
+  const_iterator find(const K& k) const;
+  pair<iterator, bool> insert(const value_type& v);
+  template<class... Args> pair<iterator, bool> emplace(Args&&... args);
+  size_t erase(const K& k);
+  iterator erase(iterator pos);
+  iterator begin();
+  iterator end();
+  const_iterator begin() const;
+  const_iterator end() const;
+  const_iterator cbegin() const;
+  const_iterator cend() const;
+};
+template<class K, class V, class H = hash<K>, class E = equal_to<K>,
+         class A = allocator<pair<const K, V>>>
+class unordered_map : public map<K, V> {
+public:
+  using map<K, V>::map;
+};
+template<class K, class V, class C = less<K>> class multimap : public map<K, V, C> {};
+template<class K, class C = less<K>, class A = allocator<K>> class set {
+public:
+  typedef K key_type;
+  typedef K value_type;
+  typedef const K* iterator;
+  typedef const K* const_iterator;
+  set();
+  set(initializer_list<K> items);
+  template<class It> set(It first, It last);
+  size_t size() const;
+  bool empty() const;
+  void clear();
+  size_t count(const K& k) const;
+  iterator find(const K& k) const;
+  pair<iterator, bool> insert(const K& k);
+  template<class... Args> pair<iterator, bool> emplace(Args&&... args);
+  size_t erase(const K& k);
+  iterator begin() const;
+  iterator end() const;
+};
+template<class K, class H = hash<K>, class E = equal_to<K>, class A = allocator<K>>
+class unordered_set : public set<K> {
+public:
+  using set<K>::set;
+};
+template<class T, class S = deque<T>> class queue {
+public:
+  queue();
+  T& front();
+  T& back();
+  void push(const T& v);
+  template<class... Args> void emplace(Args&&... args);
+  void pop();
+  size_t size() const;
+  bool empty() const;
+};
+template<class T, class S = vector<T>, class C = less<T>> class priority_queue {
+public:
+  priority_queue();
+  const T& top() const;
+  void push(const T& v);
+  void pop();
+  size_t size() const;
+  bool empty() const;
+};
+template<class T, class S = deque<T>> class stack {
+public:
+  stack();
+  T& top();
+  void push(const T& v);
+  void pop();
+  size_t size() const;
+  bool empty() const;
+};
+
+// <algorithm>, <numeric>, <iterator>, <limits>
+template<class T> const T& min(const T& a, const T& b);
+template<class T> const T& max(const T& a, const T& b);
+template<class T> T min(initializer_list<T> items);
+template<class T> T max(initializer_list<T> items);
+template<class T> const T& clamp(const T& v, const T& lo, const T& hi);
+template<class It> void sort(It first, It last);
+template<class It, class C> void sort(It first, It last, C compare);
+template<class It, class T> It find(It first, It last, const T& v);
+template<class It, class P> It find_if(It first, It last, P pred);
+template<class It, class T> size_t count(It first, It last, const T& v);
+template<class It, class P> size_t count_if(It first, It last, P pred);
+template<class It, class F> F for_each(It first, It last, F f);
+template<class It, class O> O copy(It first, It last, O out);
+template<class It, class O, class F> O transform(It first, It last, O out, F f);
+template<class It, class T> void fill(It first, It last, const T& v);
+template<class It> void reverse(It first, It last);
+template<class It> It min_element(It first, It last);
+template<class It> It max_element(It first, It last);
+template<class It, class T> It remove(It first, It last, const T& v);
+template<class It, class P> It remove_if(It first, It last, P pred);
+template<class It, class P> bool any_of(It first, It last, P pred);
+template<class It, class P> bool all_of(It first, It last, P pred);
+template<class It, class T> T accumulate(It first, It last, T init);
+template<class C> auto begin(C& c) -> decltype(c.begin());
+template<class C> auto end(C& c) -> decltype(c.end());
+template<class T, size_t N> T* begin(T (&a)[N]);
+template<class T, size_t N> T* end(T (&a)[N]);
+template<class It> ptrdiff_t distance(It first, It last);
+template<class It> It next(It it, ptrdiff_t n = 1);
+template<class It> void advance(It& it, ptrdiff_t n);
+template<class C> struct back_insert_iterator {
+  back_insert_iterator& operator*();
+  back_insert_iterator& operator++();
+  template<class V> back_insert_iterator& operator=(const V& v);
+};
+template<class C> back_insert_iterator<C> back_inserter(C& c);
+template<class T> struct numeric_limits {
+  static constexpr bool is_specialized = true;
+  static constexpr T min() noexcept;
+  static constexpr T max() noexcept;
+  static constexpr T lowest() noexcept;
+  static constexpr T epsilon() noexcept;
+  static constexpr T infinity() noexcept;
+  static constexpr T quiet_NaN() noexcept;
+};
+
+// <memory>
+template<class T> struct default_delete { void operator()(T* p) const; };
+template<class T> class weak_ptr;
+template<class T, class D> class unique_ptr;
+template<class T> class shared_ptr {
+public:
+  typedef T element_type;
+  constexpr shared_ptr() noexcept;
+  constexpr shared_ptr(nullptr_t) noexcept;
+  template<class Y> explicit shared_ptr(Y* p);
+  template<class Y, class D> shared_ptr(Y* p, D d);
+  shared_ptr(const shared_ptr& other) noexcept;
+  template<class Y> shared_ptr(const shared_ptr<Y>& other) noexcept;
+  template<class Y, class D> shared_ptr(unique_ptr<Y, D>&& other);
+  shared_ptr& operator=(const shared_ptr& other) noexcept;
+  template<class Y> shared_ptr& operator=(const shared_ptr<Y>& other) noexcept;
+  T* operator->() const noexcept;
+  T& operator*() const noexcept;
+  T* get() const noexcept;
+  void reset() noexcept;
+  template<class Y> void reset(Y* p);
+  long use_count() const noexcept;
+  explicit operator bool() const noexcept;
+};
+template<class T, class U> bool operator==(const shared_ptr<T>& a, const shared_ptr<U>& b);
+template<class T> bool operator==(const shared_ptr<T>& a, nullptr_t);
+template<class T> bool operator!=(const shared_ptr<T>& a, nullptr_t);
+template<class T> bool operator==(nullptr_t, const shared_ptr<T>& a);
+template<class T> bool operator!=(nullptr_t, const shared_ptr<T>& a);
+template<class T> class weak_ptr {
+public:
+  constexpr weak_ptr() noexcept;
+  template<class Y> weak_ptr(const shared_ptr<Y>& other) noexcept;
+  shared_ptr<T> lock() const noexcept;
+  bool expired() const noexcept;
+  void reset() noexcept;
+};
+template<class T, class D = default_delete<T>> class unique_ptr;
+template<class T, class D> class unique_ptr {
+public:
+  typedef T element_type;
+  typedef T* pointer;
+  constexpr unique_ptr() noexcept;
+  constexpr unique_ptr(nullptr_t) noexcept;
+  explicit unique_ptr(T* p) noexcept;
+  unique_ptr(unique_ptr&& other) noexcept;
+  template<class U, class E> unique_ptr(unique_ptr<U, E>&& other) noexcept;
+  unique_ptr& operator=(unique_ptr&& other) noexcept;
+  template<class U, class E> unique_ptr& operator=(unique_ptr<U, E>&& other) noexcept;
+  unique_ptr& operator=(nullptr_t) noexcept;
+  T* operator->() const noexcept;
+  T& operator*() const;
+  T* get() const noexcept;
+  T* release() noexcept;
+  void reset(T* p = nullptr) noexcept;
+  explicit operator bool() const noexcept;
+};
+template<class T, class D> class unique_ptr<T[], D> {
+public:
+  explicit unique_ptr(T* p) noexcept;
+  T& operator[](size_t i) const;
+  T* get() const noexcept;
+};
+template<class T, class... Args> shared_ptr<T> make_shared(Args&&... args);
+template<class T, class A, class... Args> shared_ptr<T> allocate_shared(const A& a, Args&&... args);
+template<class T, class... Args> unique_ptr<T> make_unique(Args&&... args);
+template<class T, class U> shared_ptr<T> static_pointer_cast(const shared_ptr<U>& p) noexcept;
+template<class T, class U> shared_ptr<T> dynamic_pointer_cast(const shared_ptr<U>& p) noexcept;
+template<class T, class U> shared_ptr<T> const_pointer_cast(const shared_ptr<U>& p) noexcept;
+template<class T> class enable_shared_from_this {
+protected:
+  enable_shared_from_this() noexcept;
+public:
+  shared_ptr<T> shared_from_this();
+  shared_ptr<const T> shared_from_this() const;
+  weak_ptr<T> weak_from_this() noexcept;
+};
+
+// <functional>
+template<class Signature> class function;
+template<class R, class... A> class function<R(A...)> {
+public:
+  typedef R result_type;
+  function() noexcept;
+  function(nullptr_t) noexcept;
+  function(const function& f);
+  function(function&& f) noexcept;
+  template<class F> function(F f);
+  function& operator=(const function& f);
+  function& operator=(nullptr_t) noexcept;
+  template<class F> function& operator=(F&& f);
+  R operator()(A... args) const;
+  explicit operator bool() const noexcept;
+};
+namespace placeholders {
+template<int I> struct haros_placeholder {};
+extern const haros_placeholder<1> _1;
+extern const haros_placeholder<2> _2;
+extern const haros_placeholder<3> _3;
+extern const haros_placeholder<4> _4;
+}
+template<class F> struct haros_bind_t {
+  template<class... A> void operator()(A&&... args) const;
+};
+template<class F, class... A> haros_bind_t<F> bind(F&& f, A&&... args);
+template<class T> struct reference_wrapper {
+  reference_wrapper(T& t) noexcept;
+  operator T&() const noexcept;
+  T& get() const noexcept;
+};
+template<class T> reference_wrapper<T> ref(T& t) noexcept;
+template<class T> reference_wrapper<const T> cref(const T& t) noexcept;
+
+// <optional>, <any>
+struct nullopt_t { explicit constexpr nullopt_t(int) {} };
+extern const nullopt_t nullopt;
+template<class T> class optional {
+public:
+  constexpr optional() noexcept;
+  constexpr optional(nullopt_t) noexcept;
+  template<class U = T> optional(U&& v);
+  optional& operator=(nullopt_t) noexcept;
+  template<class U = T> optional& operator=(U&& v);
+  T* operator->();
+  T& operator*();
+  T& value();
+  template<class U> T value_or(U&& v) const;
+  bool has_value() const noexcept;
+  explicit operator bool() const noexcept;
+  void reset() noexcept;
+};
+
+// <exception>, <stdexcept>
+class exception {
+public:
+  exception() noexcept;
+  virtual ~exception();
+  virtual const char* what() const noexcept;
+};
+class runtime_error : public exception {
+public:
+  explicit runtime_error(const string& what);
+  explicit runtime_error(const char* what);
+};
+class logic_error : public exception {
+public:
+  explicit logic_error(const string& what);
+  explicit logic_error(const char* what);
+};
+class invalid_argument : public logic_error { public: using logic_error::logic_error; };
+class out_of_range : public logic_error { public: using logic_error::logic_error; };
+class domain_error : public logic_error { public: using logic_error::logic_error; };
+class length_error : public logic_error { public: using logic_error::logic_error; };
+class range_error : public runtime_error { public: using runtime_error::runtime_error; };
+class overflow_error : public runtime_error { public: using runtime_error::runtime_error; };
+class bad_alloc : public exception {};
+class bad_cast : public exception {};
+
+// <iostream>, <sstream>, <fstream>, <iomanip>
+class ios_base {
+public:
+  typedef int fmtflags;
+  typedef int openmode;
+  static const openmode in = 1, out = 2, app = 4, binary = 8, trunc = 16, ate = 32;
+  static const fmtflags fixed = 1, scientific = 2, boolalpha = 4, hex = 8, dec = 16;
+  fmtflags setf(fmtflags f);
+  int precision(int p);
+};
+class ostream : public ios_base {
+public:
+  ostream& operator<<(bool v);
+  ostream& operator<<(short v);
+  ostream& operator<<(unsigned short v);
+  ostream& operator<<(int v);
+  ostream& operator<<(unsigned v);
+  ostream& operator<<(long v);
+  ostream& operator<<(unsigned long v);
+  ostream& operator<<(long long v);
+  ostream& operator<<(unsigned long long v);
+  ostream& operator<<(float v);
+  ostream& operator<<(double v);
+  ostream& operator<<(long double v);
+  ostream& operator<<(const void* v);
+  ostream& operator<<(ostream& (*manip)(ostream&));
+  ostream& flush();
+  ostream& write(const char* s, long n);
+  bool good() const;
+  bool fail() const;
+  explicit operator bool() const;
+};
+ostream& operator<<(ostream& os, char c);
+ostream& operator<<(ostream& os, const char* s);
+ostream& operator<<(ostream& os, const string& s);
+template<class T> ostream& operator<<(ostream& os, const T& v);
+class istream : public ios_base {
+public:
+  istream& operator>>(bool& v);
+  istream& operator>>(int& v);
+  istream& operator>>(unsigned& v);
+  istream& operator>>(long& v);
+  istream& operator>>(float& v);
+  istream& operator>>(double& v);
+  istream& operator>>(string& s);
+  istream& operator>>(char& c);
+  istream& ignore(long n = 1, int delim = -1);
+  int get();
+  int peek();
+  istream& read(char* s, long n);
+  bool good() const;
+  bool fail() const;
+  bool eof() const;
+  explicit operator bool() const;
+};
+class iostream : public ostream, public istream {};
+istream& getline(istream& is, string& s);
+istream& getline(istream& is, string& s, char delim);
+ostream& endl(ostream& os);
+ostream& flush(ostream& os);
+ostream& fixed(ostream& os);
+ostream& scientific(ostream& os);
+ostream& boolalpha(ostream& os);
+ostream& hex(ostream& os);
+ostream& dec(ostream& os);
+extern ostream cout;
+extern ostream cerr;
+extern ostream clog;
+extern istream cin;
+struct haros_manip {};
+haros_manip setprecision(int n);
+haros_manip setw(int n);
+haros_manip setfill(char c);
+ostream& operator<<(ostream& os, haros_manip m);
+class stringstream : public iostream {
+public:
+  stringstream();
+  explicit stringstream(const string& s, openmode mode = in | out);
+  string str() const;
+  void str(const string& s);
+  void clear();
+};
+class ostringstream : public ostream {
+public:
+  ostringstream();
+  explicit ostringstream(const string& s, openmode mode = out);
+  string str() const;
+  void str(const string& s);
+  void clear();
+};
+class istringstream : public istream {
+public:
+  istringstream();
+  explicit istringstream(const string& s, openmode mode = in);
+  string str() const;
+  void str(const string& s);
+  void clear();
+};
+class ifstream : public istream {
+public:
+  ifstream();
+  explicit ifstream(const string& path, openmode mode = in);
+  explicit ifstream(const char* path, openmode mode = in);
+  void open(const string& path, openmode mode = in);
+  bool is_open() const;
+  void close();
+};
+class ofstream : public ostream {
+public:
+  ofstream();
+  explicit ofstream(const string& path, openmode mode = out);
+  explicit ofstream(const char* path, openmode mode = out);
+  void open(const string& path, openmode mode = out);
+  bool is_open() const;
+  void close();
+};
+class fstream : public iostream {
+public:
+  fstream();
+  explicit fstream(const string& path, openmode mode = in | out);
+  void open(const string& path, openmode mode = in | out);
+  bool is_open() const;
+  void close();
+};
+
+// <chrono>, <thread>, <mutex>, <condition_variable>, <atomic>, <future>
+template<long N, long D = 1> struct ratio {
+  static constexpr long num = N;
+  static constexpr long den = D;
+};
+typedef ratio<1, 1000000000> nano;
+typedef ratio<1, 1000000> micro;
+typedef ratio<1, 1000> milli;
+namespace chrono {
+template<class R, class P = ratio<1>> class duration {
+public:
+  typedef R rep;
+  typedef P period;
+  constexpr duration();
+  template<class R2> constexpr explicit duration(const R2& count);
+  template<class R2, class P2> constexpr duration(const duration<R2, P2>& d);
+  constexpr R count() const;
+  static constexpr duration zero();
+  duration operator-() const;
+  duration& operator+=(const duration& d);
+  duration& operator-=(const duration& d);
+};
+template<class R1, class P1, class R2, class P2>
+duration<double, P1> operator+(const duration<R1, P1>& a, const duration<R2, P2>& b);
+template<class R1, class P1, class R2, class P2>
+duration<double, P1> operator-(const duration<R1, P1>& a, const duration<R2, P2>& b);
+template<class R1, class P1, class R2>
+duration<R1, P1> operator*(const duration<R1, P1>& a, const R2& s);
+template<class R1, class R2, class P2>
+duration<R2, P2> operator*(const R1& s, const duration<R2, P2>& a);
+template<class R1, class P1, class R2>
+duration<R1, P1> operator/(const duration<R1, P1>& a, const R2& s);
+template<class R1, class P1, class R2, class P2>
+bool operator<(const duration<R1, P1>& a, const duration<R2, P2>& b);
+template<class R1, class P1, class R2, class P2>
+bool operator>(const duration<R1, P1>& a, const duration<R2, P2>& b);
+template<class R1, class P1, class R2, class P2>
+bool operator<=(const duration<R1, P1>& a, const duration<R2, P2>& b);
+template<class R1, class P1, class R2, class P2>
+bool operator>=(const duration<R1, P1>& a, const duration<R2, P2>& b);
+template<class R1, class P1, class R2, class P2>
+bool operator==(const duration<R1, P1>& a, const duration<R2, P2>& b);
+typedef duration<long, nano> nanoseconds;
+typedef duration<long, micro> microseconds;
+typedef duration<long, milli> milliseconds;
+typedef duration<long> seconds;
+typedef duration<long, ratio<60>> minutes;
+typedef duration<long, ratio<3600>> hours;
+template<class To, class R, class P> constexpr To duration_cast(const duration<R, P>& d);
+template<class C, class D = typename C::duration> class time_point {
+public:
+  typedef D duration;
+  time_point();
+  explicit time_point(const D& d);
+  D time_since_epoch() const;
+  time_point& operator+=(const D& d);
+};
+template<class C, class D1, class D2>
+D1 operator-(const time_point<C, D1>& a, const time_point<C, D2>& b);
+template<class C, class D, class R, class P>
+time_point<C, D> operator+(const time_point<C, D>& a, const duration<R, P>& d);
+template<class C, class D1, class D2>
+bool operator<(const time_point<C, D1>& a, const time_point<C, D2>& b);
+template<class C, class D1, class D2>
+bool operator>(const time_point<C, D1>& a, const time_point<C, D2>& b);
+template<class C, class D1, class D2>
+bool operator>=(const time_point<C, D1>& a, const time_point<C, D2>& b);
+struct system_clock {
+  typedef nanoseconds duration;
+  typedef chrono::time_point<system_clock> time_point;
+  static time_point now() noexcept;
+  static time_t to_time_t(const time_point& t) noexcept;
+};
+struct steady_clock {
+  typedef nanoseconds duration;
+  typedef chrono::time_point<steady_clock> time_point;
+  static time_point now() noexcept;
+};
+typedef steady_clock high_resolution_clock;
+}  // namespace chrono
+inline namespace literals { inline namespace chrono_literals {
+constexpr chrono::hours operator""h(unsigned long long v);
+constexpr chrono::minutes operator""min(unsigned long long v);
+constexpr chrono::seconds operator""s(unsigned long long v);
+constexpr chrono::milliseconds operator""ms(unsigned long long v);
+constexpr chrono::microseconds operator""us(unsigned long long v);
+constexpr chrono::nanoseconds operator""ns(unsigned long long v);
+constexpr chrono::duration<double> operator""s(long double v);
+constexpr chrono::duration<double, milli> operator""ms(long double v);
+} }
+namespace chrono { using namespace literals::chrono_literals; }
+class thread {
+public:
+  class id {};
+  thread() noexcept;
+  template<class F, class... A> explicit thread(F&& f, A&&... args);
+  thread(thread&& other) noexcept;
+  thread& operator=(thread&& other) noexcept;
+  ~thread();
+  bool joinable() const noexcept;
+  void join();
+  void detach();
+  id get_id() const noexcept;
+  static unsigned hardware_concurrency() noexcept;
+};
+namespace this_thread {
+template<class R, class P> void sleep_for(const chrono::duration<R, P>& d);
+template<class C, class D> void sleep_until(const chrono::time_point<C, D>& t);
+void yield() noexcept;
+thread::id get_id() noexcept;
+}
+class mutex {
+public:
+  mutex();
+  void lock();
+  bool try_lock();
+  void unlock();
+};
+class recursive_mutex : public mutex {};
+class timed_mutex : public mutex {};
+class shared_mutex : public mutex {
+public:
+  void lock_shared();
+  void unlock_shared();
+};
+struct defer_lock_t {};
+struct adopt_lock_t {};
+extern const defer_lock_t defer_lock;
+extern const adopt_lock_t adopt_lock;
+template<class M> class lock_guard {
+public:
+  explicit lock_guard(M& m);
+  lock_guard(M& m, adopt_lock_t t);
+  ~lock_guard();
+};
+template<class... M> class scoped_lock {
+public:
+  explicit scoped_lock(M&... m);
+};
+template<class M> class unique_lock {
+public:
+  unique_lock();
+  explicit unique_lock(M& m);
+  unique_lock(M& m, defer_lock_t t);
+  void lock();
+  void unlock();
+  bool owns_lock() const;
+};
+template<class M> class shared_lock {
+public:
+  explicit shared_lock(M& m);
+};
+class condition_variable {
+public:
+  condition_variable();
+  void notify_one() noexcept;
+  void notify_all() noexcept;
+  void wait(unique_lock<mutex>& lock);
+  template<class P> void wait(unique_lock<mutex>& lock, P pred);
+  template<class R, class Pe> int wait_for(unique_lock<mutex>& lock, const chrono::duration<R, Pe>& d);
+  template<class R, class Pe, class P>
+  bool wait_for(unique_lock<mutex>& lock, const chrono::duration<R, Pe>& d, P pred);
+};
+typedef condition_variable condition_variable_any;
+struct once_flag { once_flag(); };
+template<class F, class... A> void call_once(once_flag& flag, F&& f, A&&... args);
+template<class T> struct atomic {
+  atomic() noexcept;
+  constexpr atomic(T v) noexcept;
+  T operator=(T v) noexcept;
+  operator T() const noexcept;
+  T load() const noexcept;
+  void store(T v) noexcept;
+  T exchange(T v) noexcept;
+  bool compare_exchange_strong(T& expected, T desired) noexcept;
+  T operator++() noexcept;
+  T operator++(int) noexcept;
+  T operator--() noexcept;
+  T operator--(int) noexcept;
+  T operator+=(T v) noexcept;
+  T operator-=(T v) noexcept;
+  T fetch_add(T v) noexcept;
+};
+typedef atomic<bool> atomic_bool;
+typedef atomic<int> atomic_int;
+enum class future_status { ready, timeout, deferred };
+template<class T> class shared_future;
+template<class T> class future {
+public:
+  future() noexcept;
+  T get();
+  bool valid() const noexcept;
+  void wait() const;
+  template<class R, class P> future_status wait_for(const chrono::duration<R, P>& d) const;
+  shared_future<T> share() noexcept;
+};
+template<class T> class shared_future {
+public:
+  shared_future() noexcept;
+  shared_future(future<T>&& f) noexcept;
+  const T& get() const;
+  bool valid() const noexcept;
+  void wait() const;
+  template<class R, class P> future_status wait_for(const chrono::duration<R, P>& d) const;
+};
+template<class T> class promise {
+public:
+  promise();
+  future<T> get_future();
+  void set_value(const T& v);
+};
+template<> class promise<void> {
+public:
+  promise();
+  future<void> get_future();
+  void set_value();
+};
+enum class launch { async = 1, deferred = 2 };
+template<class F, class... A> future<int> async(launch policy, F&& f, A&&... args);
+template<class F, class... A> future<int> async(F&& f, A&&... args);
+}  // namespace std
+namespace __gnu_cxx {}
+#endif

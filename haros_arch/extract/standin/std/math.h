@@ -1,0 +1,2 @@
+// haros_arch stand-in for <math.h>
+#include "haros_std.h"
