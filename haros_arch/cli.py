@@ -7,6 +7,7 @@ invocation (bad project file, missing workspace), 3 an internal error (a bug of 
 from __future__ import annotations
 
 import argparse
+import json
 import os
 import sys
 from collections.abc import Sequence
@@ -42,6 +43,18 @@ def _parser() -> argparse.ArgumentParser:
     check.add_argument("--format", choices=("text", "json"), default="text")
     check.add_argument("--fail-on", choices=tuple(SEVERITY_RANK), default="error")
     check.add_argument("-o", "--output", help="write the report here (default: stdout)")
+
+    capture = sub.add_parser("capture", help="read a running ROS 1 master's graph (XML-RPC)")
+    capture.add_argument("--master", default=os.environ.get("ROS_MASTER_URI",
+                                                            "http://localhost:11311"))
+    capture.add_argument("-o", "--output", help="write the JSON here (default: stdout)")
+
+    compare = sub.add_parser("compare", help="precision and recall of a model against a "
+                                             "capture of the running system")
+    compare.add_argument("model", help="JSON model from 'haros-arch extract'")
+    compare.add_argument("live", help="JSON from 'haros-arch capture'")
+    compare.add_argument("--config", help="configuration name (default: the first)")
+    compare.add_argument("--format", choices=("text", "json"), default="text")
 
     explain = sub.add_parser("explain", help="explain a diagnostic code (or list them all)")
     explain.add_argument("code", nargs="?")
@@ -116,11 +129,51 @@ def cmd_explain(args: argparse.Namespace, out: Console, err: Console) -> int:
     return EXIT_OK
 
 
+def cmd_capture(args: argparse.Namespace, out: Console, err: Console) -> int:
+    from .live import CaptureError, capture
+
+    try:
+        data = capture(args.master)
+    except CaptureError as error:
+        err.print(f"haros-arch: cannot capture from {args.master}: {error}", highlight=False)
+        return EXIT_USAGE
+    _write(json.dumps(data, indent=2) + "\n", args.output)
+    return EXIT_OK
+
+
+def cmd_compare(args: argparse.Namespace, out: Console, err: Console) -> int:
+    from .live.compare import CompareError, compare, show
+
+    try:
+        with open(args.model, encoding="utf-8") as handle:
+            model = json.load(handle)
+        with open(args.live, encoding="utf-8") as handle:
+            live = json.load(handle)
+        result = compare(model, live, args.config)
+    except (OSError, ValueError, KeyError, CompareError) as error:
+        err.print(f"haros-arch: cannot compare: {error}", highlight=False)
+        return EXIT_USAGE
+    if args.format == "json":
+        _write(json.dumps(result.to_data(), indent=2) + "\n", None)
+        return EXIT_OK
+    out.print(f"configuration {result.configuration}", highlight=False)
+    for score in result.scores:
+        out.print(f"  {score.kind:<16} precision {score.precision:.3f}  recall "
+                  f"{score.recall:.3f}  ({len(score.matched)} matched, {len(score.ours)} "
+                  f"ours, {len(score.live)} live)", highlight=False)
+        for item in score.missing:
+            out.print(f"      missing: {show(item)}", highlight=False)
+        for item in score.extra:
+            out.print(f"      extra:   {show(item)}", highlight=False)
+    return EXIT_OK
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     args = _parser().parse_args(argv)
     out = Console(soft_wrap=True)
     err = Console(stderr=True, soft_wrap=True)
-    handlers = {"extract": cmd_extract, "check": cmd_check, "explain": cmd_explain}
+    handlers = {"extract": cmd_extract, "check": cmd_check, "explain": cmd_explain,
+                "capture": cmd_capture, "compare": cmd_compare}
     try:
         return handlers[args.command](args, out, err)
     except KeyboardInterrupt:

@@ -1,0 +1,111 @@
+"""Compare an extracted configuration with a captured live system: precision and recall."""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from typing import Any
+
+# what roscore and roslaunch add on their own
+IGNORED_NODES = re.compile(r"^/rosout$")
+IGNORED_TOPICS = re.compile(r"^/rosout(_agg)?$")
+IGNORED_SERVICES = re.compile(r"(/get_loggers|/set_logger_level)$")
+IGNORED_PARAMS = re.compile(r"^(/run_id|/rosdistro|/rosversion|/roslaunch/.*)$")
+
+
+@dataclass
+class Score:
+    kind: str
+    ours: set[Any] = field(default_factory=set)
+    live: set[Any] = field(default_factory=set)
+
+    @property
+    def matched(self) -> set[Any]:
+        return self.ours & self.live
+
+    @property
+    def precision(self) -> float:
+        return len(self.matched) / len(self.ours) if self.ours else 1.0
+
+    @property
+    def recall(self) -> float:
+        return len(self.matched) / len(self.live) if self.live else 1.0
+
+    @property
+    def missing(self) -> list[Any]:
+        return sorted(self.live - self.ours, key=str)
+
+    @property
+    def extra(self) -> list[Any]:
+        return sorted(self.ours - self.live, key=str)
+
+
+@dataclass
+class Comparison:
+    configuration: str
+    scores: list[Score]
+
+    def to_data(self) -> dict[str, Any]:
+        return {"configuration": self.configuration, "scores": [
+            {"kind": s.kind, "ours": len(s.ours), "live": len(s.live),
+             "matched": len(s.matched), "precision": round(s.precision, 4),
+             "recall": round(s.recall, 4), "missing": [show(x) for x in s.missing],
+             "extra": [show(x) for x in s.extra]} for s in self.scores]}
+
+
+def show(item: Any) -> str:
+    """An element as text: a link ``(node, name)`` is written ``node name``."""
+    return " ".join(item) if isinstance(item, tuple) else str(item)
+
+
+class CompareError(Exception):
+    pass
+
+
+def _configuration(model: dict[str, Any], name: str | None) -> dict[str, Any]:
+    configs = model.get("configurations", [])
+    if not configs:
+        raise CompareError("the model has no configurations")
+    if name is None:
+        return configs[0]
+    for config in configs:
+        if config["name"] == name:
+            return config
+    raise CompareError(f"no configuration named {name} "
+                       f"(have: {', '.join(c['name'] for c in configs)})")
+
+
+def compare(model: dict[str, Any], live: dict[str, Any], name: str | None = None) -> Comparison:
+    """Score one configuration of a model (JSON data) against a capture (JSON data)."""
+    config = _configuration(model, name)
+    links = config.get("links", [])
+
+    def ours_links(kind: str) -> set[tuple[str, str]]:
+        return {(link["node"], link["name"]) for link in links if link["kind"] == kind}
+
+    live_topics = [t for t in live["topics"] if not IGNORED_TOPICS.match(t["name"])]
+    live_nodes = {n for n in live["nodes"] if not IGNORED_NODES.match(n)}
+    scores = [
+        Score("nodes", {n["name"] for n in config["nodes"]}, live_nodes),
+        Score("topics", {t["name"] for t in config["topics"]},
+              {t["name"] for t in live_topics}),
+        Score("topic types", {(t["name"], ty) for t in config["topics"] for ty in t["types"]},
+              {(t["name"], ty) for t in live_topics for ty in t["types"]}),
+        Score("publish links", ours_links("publish"),
+              {(n, t["name"]) for t in live_topics for n in t["publishers"]
+               if not IGNORED_NODES.match(n)}),
+        Score("subscribe links", ours_links("subscribe"),
+              {(n, t["name"]) for t in live_topics for n in t["subscribers"]
+               if not IGNORED_NODES.match(n)}),
+        Score("services", {s["name"] for s in config["services"]},
+              {s["name"] for s in live["services"]
+               if not IGNORED_SERVICES.search(s["name"])}),
+        Score("service links", ours_links("server"),
+              {(n, s["name"]) for s in live["services"] for n in s["servers"]
+               if not IGNORED_SERVICES.search(s["name"])}),
+        # only parameters someone sets can be on the master; code defaults are not
+        Score("parameters", {p["name"] for p in config["parameters"] if p["writers"]},
+              {p["name"] for p in live["parameters"]
+               if not IGNORED_PARAMS.match(p["name"])}),
+    ]
+    return Comparison(config["name"], scores)
