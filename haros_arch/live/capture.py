@@ -17,7 +17,7 @@ class CaptureError(Exception):
 def _call(master: Any, method: str, *args: Any) -> Any:
     try:
         code, message, value = getattr(master, method)(CALLER, *args)
-    except (OSError, socket.timeout, xmlrpc.client.Error) as err:
+    except (TimeoutError, OSError, xmlrpc.client.Error) as err:
         raise CaptureError(f"{method}: {err}") from None
     if code != 1:
         raise CaptureError(f"{method}: {message}")
