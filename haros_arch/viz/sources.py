@@ -1,0 +1,80 @@
+"""The lines of source around every location of the model, to embed in the report.
+
+Only files inside the workspace root are read (a saved model could name any path), each
+through ``files.read_text`` with a size bound, and the total embedded text is bounded too.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Iterator
+from typing import Any
+
+from ..files import read_text
+from ..model.location import Location
+
+CONTEXT_LINES = 4          # lines shown above and below a location
+MAX_LINE_CHARS = 300       # longer lines are cut (minified or generated code)
+MAX_FILE_BYTES = 2 * 1024 * 1024
+MAX_TOTAL_CHARS = 4 * 1024 * 1024
+
+
+def locations(data: Any) -> Iterator[tuple[str, int]]:
+    """Every ``{"file", "line"}`` location anywhere in JSON data, as (file, line)."""
+    stack = [data]
+    while stack:
+        item = stack.pop()
+        if isinstance(item, dict):
+            file, line = item.get("file"), item.get("line")
+            if isinstance(file, str) and isinstance(line, int) and line > 0 and file:
+                yield file, line
+            stack.extend(v for v in item.values() if isinstance(v, dict | list))
+        elif isinstance(item, list):
+            stack.extend(v for v in item if isinstance(v, dict | list))
+
+
+def inside(root: str, file: str) -> str | None:
+    """The real path of ``file`` (relative to ``root``) when it lies inside ``root``."""
+    if os.path.isabs(file):
+        return None
+    base = os.path.realpath(root)
+    path = os.path.realpath(os.path.join(base, file))
+    if path != base and path.startswith(base + os.sep) and os.path.isfile(path):
+        return path
+    return None
+
+
+def collect_snippets(data: Any, workspace_root: str) -> dict[str, dict[str, str]]:
+    """``{file: {"line number": text}}`` for the lines around each location in ``data``."""
+    wanted: dict[str, set[int]] = {}
+    for file, line in locations(data):
+        wanted.setdefault(file, set()).add(line)
+    snippets: dict[str, dict[str, str]] = {}
+    budget = MAX_TOTAL_CHARS
+    for file in sorted(wanted):
+        path = inside(workspace_root, file)
+        if path is None:
+            continue
+        text, _problems = read_text(path, Location(file=file), MAX_FILE_BYTES)
+        if text is None:
+            continue
+        lines = text.splitlines()
+        shown: dict[str, str] = {}
+        for number in sorted(_window(wanted[file], len(lines))):
+            line = lines[number - 1][:MAX_LINE_CHARS].expandtabs(4)
+            budget -= len(line) + 8
+            if budget < 0:
+                break
+            shown[str(number)] = line
+        if shown:
+            snippets[file] = shown
+        if budget < 0:
+            break
+    return snippets
+
+
+def _window(lines: set[int], count: int) -> set[int]:
+    numbers: set[int] = set()
+    for line in lines:
+        numbers.update(range(max(1, line - CONTEXT_LINES), min(count, line + CONTEXT_LINES) + 1))
+    return numbers

@@ -1,0 +1,261 @@
+// The report application: page skeleton, state, controls. Runs after d3 and the other
+// modules of this folder (concatenated into one inline script by haros_arch/viz/html.py).
+
+const started = performance.now();
+const DATA = JSON.parse(document.getElementById('haros-data').textContent);
+const MODEL = DATA.model || {};
+const CONFIGS = MODEL.configurations || [];
+
+const app = {
+  sources: DATA.sources || {},
+  findings: DATA.findings || [],
+  index: null, view: null, drawn: null, sim: null, selected: null,
+  options: {hideParameters: false, hideServices: false, hideInfra: true, hideSingleEnded: false,
+            hideDisconnected: false, collapsed: new Set()},
+  layout: 'layered',
+};
+
+// ---- skeleton --------------------------------------------------------------------------
+
+const ui = {};
+function skeleton() {
+  ui.config = el('select', {id: 'config', 'aria-label': 'configuration'},
+    CONFIGS.map((c, i) => el('option', {value: String(i)}, c.name)));
+  ui.search = el('input', {id: 'search', type: 'search', placeholder: 'search names\u2026  (Enter: go)', 'aria-label': 'search'});
+  ui.layout = el('select', {id: 'layout', 'aria-label': 'layout'},
+    el('option', {value: 'layered'}, 'layered layout'), el('option', {value: 'force'}, 'force layout'));
+  ui.tabGraph = el('button', {class: 'tab active', id: 'tab-graph'}, 'Graph');
+  ui.tabPackages = el('button', {class: 'tab', id: 'tab-packages'}, 'Packages');
+  ui.fit = el('button', {id: 'fit', title: 'fit the graph to the window'}, 'Fit');
+  const header = el('header', {id: 'top'},
+    el('h1', {}, el('span', {class: 'logo'}, 'haros-arch'), ' ', MODEL.project || ''),
+    el('label', {class: 'control'}, 'configuration ', ui.config),
+    el('div', {class: 'tabs'}, ui.tabGraph, ui.tabPackages),
+    ui.search, ui.layout, ui.fit);
+
+  ui.filters = el('section', {id: 'filters'}, el('h3', {}, 'Show'),
+    [['hideParameters', 'parameters'], ['hideServices', 'services and actions'], ['hideInfra', 'rosout and tf'],
+     ['hideSingleEnded', 'topics missing a publisher or subscriber'], ['hideDisconnected', 'unconnected elements']]
+      .map(([key, label]) => {
+        const box = el('input', {type: 'checkbox', 'data-filter': key});
+        box.checked = !app.options[key];
+        box.addEventListener('change', () => { app.options[key] = !box.checked; renderGraph(); });
+        return el('label', {class: 'check'}, box, ' ' + label);
+      }));
+  ui.namespaces = el('section', {id: 'namespaces'});
+  ui.findings = el('section', {id: 'findings'});
+  ui.diagnostics = el('section', {id: 'diagnostics'});
+  const side = el('aside', {id: 'side'}, ui.findings, ui.filters, ui.namespaces, ui.diagnostics);
+
+  ui.svg = d3.select(el('div')).append('svg').attr('id', 'graph');
+  const defs = ui.svg.append('defs');
+  for (const kind of ['topic', 'service', 'action', 'parameter']) {
+    defs.append('marker').attr('id', 'arrow-' + kind).attr('class', 'arrow k-' + kind)
+      .attr('viewBox', '0 -5 10 10').attr('refX', 9).attr('refY', 0)
+      .attr('markerWidth', 7).attr('markerHeight', 7).attr('orient', 'auto')
+      .append('path').attr('d', 'M0,-5L10,0L0,5Z');
+  }
+  ui.viewport = ui.svg.append('g').attr('class', 'viewport');
+  ui.zoom = d3.zoom().scaleExtent([0.05, 4]).on('zoom', event => ui.viewport.attr('transform', event.transform));
+  ui.svg.call(ui.zoom).on('dblclick.zoom', null).on('click', () => clearSelection());
+  ui.packages = el('div', {id: 'packages', hidden: true});
+  ui.stage = el('div', {id: 'stage'}, ui.svg.node(), legend(), ui.packages);
+  ui.panel = el('aside', {id: 'panel'});
+  document.body.append(header, el('main', {}, side, ui.stage, ui.panel));
+
+  ui.config.addEventListener('change', () => setConfig(Number(ui.config.value)));
+  ui.layout.addEventListener('change', () => { app.layout = ui.layout.value; renderGraph(); });
+  ui.fit.addEventListener('click', fit);
+  ui.search.addEventListener('input', () => search(false));
+  ui.search.addEventListener('keydown', event => { if (event.key === 'Enter') search(true); });
+  ui.tabGraph.addEventListener('click', () => showTab('graph'));
+  ui.tabPackages.addEventListener('click', () => showTab('packages'));
+  document.addEventListener('keydown', event => { if (event.key === 'Escape') clearSelection(); });
+}
+
+function legend() {
+  const box = el('div', {id: 'legend'});
+  const svg = d3.select(box).append('svg').attr('width', 150).attr('height', 178);
+  const samples = [['node', 'node instance'], ['topic', 'topic'], ['service', 'service'], ['action', 'action'], ['parameter', 'parameter']];
+  samples.forEach(([kind, label], i) => {
+    const v = {kind, w: 40, h: kind === 'parameter' ? 14 : 18};
+    const g = svg.append('g').attr('class', 'vertex k-' + kind).attr('transform', `translate(26,${14 + i * 24})`);
+    g.append('path').attr('class', 'shape').attr('d', shapePath(v));
+    svg.append('text').attr('x', 54).attr('y', 18 + i * 24).text(label);
+  });
+  const y = 14 + samples.length * 24;
+  svg.append('path').attr('class', 'edge conditional').attr('d', `M6,${y} L46,${y}`);
+  svg.append('text').attr('x', 54).attr('y', y + 4).text('conditional');
+  const u = svg.append('g').attr('class', 'vertex k-topic unresolved').attr('transform', `translate(26,${y + 24})`);
+  u.append('path').attr('class', 'shape').attr('d', shapePath({kind: 'topic', w: 40, h: 18}));
+  u.append('g').attr('class', 'badge').attr('transform', 'translate(18,-9)')
+    .call(g => { g.append('circle').attr('r', 6); g.append('text').attr('dy', '0.35em').text('?'); });
+  svg.append('text').attr('x', 54).attr('y', y + 28).text('name has ?');
+  return box;
+}
+
+// ---- state changes -------------------------------------------------------------------------
+
+function setConfig(i) {
+  const config = CONFIGS[i] || {name: '(no configuration)'};
+  app.config = config;
+  app.index = indexConfiguration(config);
+  app.options.collapsed.clear();
+  app.selected = null;
+  renderLists();
+  renderGraph();
+  if (!ui.packages.hidden) renderPackages();
+  showPanel(overview(config));
+}
+
+app.configFindings = () => app.findings.filter(f => !f.configuration || !app.config || f.configuration === app.config.name);
+app.findingsFor = id => app.configFindings().filter(f => (f.entities || []).includes(id));
+
+function renderLists() {
+  const found = bySeverity(app.configFindings());
+  ui.findings.replaceChildren(el('h3', {}, `Findings (${found.length})`),
+    ...(found.length ? found.map(f => findingItem(f, app)) : [el('p', {class: 'muted'}, 'No query findings.')]));
+  const diags = bySeverity([...(app.config.diagnostics || []), ...(MODEL.diagnostics || [])]);
+  ui.diagnostics.replaceChildren(el('h3', {}, `Extraction diagnostics (${diags.length})`),
+    ...diags.slice(0, 500).map(d => diagnosticItem(d, app)),
+    ...(diags.length > 500 ? [el('p', {class: 'muted'}, `${diags.length - 500} more not listed`)] : []));
+  const groups = [...new Set([...app.index.entities.values()].map(e => e.group).filter(Boolean))].sort();
+  ui.namespaces.replaceChildren(el('h3', {}, 'Namespaces'), ...(groups.length ? groups.map(name => {
+    const box = el('input', {type: 'checkbox', 'data-namespace': name});
+    box.checked = app.options.collapsed.has(name);
+    box.addEventListener('change', () => toggleCollapse(name));
+    return el('label', {class: 'check'}, box, ' collapse ', el('code', {}, name));
+  }) : [el('p', {class: 'muted'}, 'everything is in /')]));
+}
+
+function toggleCollapse(name) {
+  const set = app.options.collapsed;
+  if (set.has(name)) set.delete(name); else set.add(name);
+  for (const box of ui.namespaces.querySelectorAll('input')) box.checked = set.has(box.getAttribute('data-namespace'));
+  renderGraph();
+}
+
+function renderGraph() {
+  if (app.sim) { app.sim.stop(); app.sim = null; }
+  app.view = buildView(app.index, app.options);
+  const handlers = {
+    click: v => v.kind === 'namespace' ? toggleCollapse(v.name) : app.select(v.id, false),
+    collapse: toggleCollapse,
+  };
+  layeredLayout(app.view.vertices, app.view.edges);
+  app.drawn = drawGraph(ui.viewport, app.view, handlers);
+  if (app.layout === 'force') app.sim = forceLayout(app.view.vertices, app.view.edges, () => app.drawn.update());
+  fit();
+  reapplyFocus();
+}
+
+function fit() {
+  const vs = app.view ? app.view.vertices : [];
+  const box = ui.svg.node().getBoundingClientRect();
+  if (!vs.length || !box.width) return;
+  const x0 = Math.min(...vs.map(v => v.x - v.w / 2)) - 40, x1 = Math.max(...vs.map(v => v.x + v.w / 2)) + 40;
+  const y0 = Math.min(...vs.map(v => v.y - v.h / 2)) - 50, y1 = Math.max(...vs.map(v => v.y + v.h / 2)) + 40;
+  const k = Math.min(1.4, box.width / (x1 - x0), box.height / (y1 - y0));
+  const t = d3.zoomIdentity.translate(box.width / 2 - k * (x0 + x1) / 2, box.height / 2 - k * (y0 + y1) / 2).scale(k);
+  ui.svg.call(ui.zoom.transform, t);
+}
+
+function centreOn(id) {
+  const v = app.view.vertices.find(x => x.id === id || (x.kind === 'namespace' && x.entity.members.some(m => m.id === id)));
+  if (!v) return;
+  const box = ui.svg.node().getBoundingClientRect();
+  const k = Math.max(d3.zoomTransform(ui.svg.node()).k, 0.8);
+  ui.svg.transition().duration(300).call(ui.zoom.transform,
+    d3.zoomIdentity.translate(box.width / 2 - k * v.x, box.height / 2 - k * v.y).scale(k));
+}
+
+// focus: {ids: Set of entity ids lit, candidates: Set, selected: id}
+function setFocus(focus) {
+  app.focus = focus;
+  reapplyFocus();
+}
+
+function reapplyFocus() {
+  const focus = app.focus;
+  if (!app.drawn) return;
+  ui.svg.classed('focus', !!focus);
+  const lit = v => !!focus && (focus.ids.has(v.id) || (v.kind === 'namespace' && v.entity.members.some(m => focus.ids.has(m.id))));
+  app.drawn.vertexSel
+    .classed('hl', lit)
+    .classed('selected', v => !!focus && v.id === focus.selected)
+    .classed('candidate', v => !!focus && focus.candidates.has(v.id));
+  app.drawn.edgeSel.classed('hl', e => lit(e.source) && lit(e.target));
+}
+
+app.select = (id, centre) => {
+  const entity = app.index.entities.get(id);
+  if (!entity) return;
+  app.selected = id;
+  const ids = new Set([id]);
+  for (const entry of entity.links) { ids.add(entry.node.id); ids.add(entry.resource.id); }
+  const candidates = new Set(entity.item.candidates || []);
+  for (const c of candidates) ids.add(c);
+  setFocus({ids, candidates, selected: id});
+  showPanel(entityPanel(entity, app));
+  if (centre) { showTab('graph'); centreOn(id); }
+};
+
+app.showFinding = finding => {
+  setFocus({ids: new Set(finding.entities || []), candidates: new Set(), selected: null});
+  for (const item of document.querySelectorAll('.item.finding')) item.classList.toggle('active', item.__finding === finding);
+  showPanel(findingPanel(finding, app));
+  showTab('graph');
+};
+
+app.showPanel = showPanel;
+function showPanel(parts) {
+  ui.panel.replaceChildren(...parts.filter(Boolean));
+  ui.panel.scrollTop = 0;
+}
+
+function clearSelection() {
+  app.selected = null;
+  setFocus(null);
+  showPanel(overview(app.config));
+}
+
+function overview(config) {
+  const count = key => (config[key] || []).length;
+  return [
+    el('div', {class: 'panel-kind'}, 'configuration'),
+    el('h2', {class: 'panel-title'}, config.name),
+    field('launch', (config.launch || []).join(', ') || '?'),
+    Object.keys(config.args || {}).length ? field('arguments', Object.entries(config.args).map(([k, v]) => `${k}:=${v}`).join('  ')) : null,
+    field('contains', `${count('nodes')} nodes, ${count('topics')} topics, ${count('services')} services, ` +
+      `${count('actions')} actions, ${count('parameters')} parameters`),
+    el('p', {class: 'muted help'}, 'Click an element to see its details, links and source; click a finding to ' +
+      'highlight what it involves. Drag to move, scroll to zoom, Esc to clear.'),
+  ];
+}
+
+function search(go) {
+  const text = ui.search.value.trim().toLowerCase();
+  if (!text) { setFocus(null); return; }
+  const ids = new Set([...app.index.entities.values()].filter(e => e.name.toLowerCase().includes(text)).map(e => e.id));
+  setFocus({ids, candidates: new Set(), selected: null});
+  if (go && ids.size) app.select([...ids][0], true);
+}
+
+function showTab(name) {
+  const packages = name === 'packages';
+  ui.tabGraph.classList.toggle('active', !packages);
+  ui.tabPackages.classList.toggle('active', packages);
+  ui.packages.hidden = !packages;
+  ui.svg.style('display', packages ? 'none' : null);
+  document.getElementById('legend').hidden = packages;
+  if (packages) renderPackages();
+}
+
+function renderPackages() {
+  ui.packages.replaceChildren(el('h2', {class: 'view-title'}, 'Packages: the nodes each provides and their interfaces'),
+    ...packageView(MODEL, app));
+}
+
+skeleton();
+setConfig(0);
+window.harosReport = {ready: true, loadMs: performance.now() - started};

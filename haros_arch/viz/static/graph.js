@@ -1,0 +1,256 @@
+// The Computation Graph of one configuration: vertices and edges from the JSON model,
+// filters and collapsed namespaces applied, then drawn with D3 (text only, never HTML).
+
+const RESOURCE_OF = {
+  'publish': 'topic', 'subscribe': 'topic', 'server': 'service', 'client': 'service',
+  'action-server': 'action', 'action-client': 'action',
+  'read': 'parameter', 'write': 'parameter', 'declare': 'parameter',
+};
+// Links that flow from the resource into the node (drawn resource -> node).
+const INTO_NODE = new Set(['subscribe', 'server', 'action-server', 'read', 'declare']);
+const USERS = {
+  topic: ['publishers', 'subscribers'], service: ['servers', 'clients'],
+  action: ['servers', 'clients'], parameter: ['readers', 'writers'],
+};
+const COLLECTIONS = {node: 'nodes', topic: 'topics', service: 'services', action: 'actions', parameter: 'parameters'};
+const INFRA = /^(.*\/)?(rosout|rosout_agg|tf|tf_static)$/;
+const CHAR_W = 6.7;
+
+function entityId(kind, item) {
+  return item.id || (kind + ':' + item.name);
+}
+
+function groupOf(kind, item) {
+  const name = kind === 'node' ? (item.namespace || '/') : String(item.name || '');
+  const parts = name.split('/').filter(Boolean);
+  const needed = kind === 'node' ? 1 : 2;
+  if (parts.length < needed || parts[0].includes('?')) return '';
+  return '/' + parts[0] + '/';
+}
+
+// Everything about one configuration that does not depend on filters.
+function indexConfiguration(config) {
+  const entities = new Map();
+  for (const kind of Object.keys(COLLECTIONS)) {
+    for (const item of config[COLLECTIONS[kind]] || []) {
+      const id = entityId(kind, item);
+      entities.set(id, {
+        id, kind, item, name: String(item.name || ''), group: groupOf(kind, item),
+        unresolved: String(item.name || '').includes('?'),
+        conditional: (item.conditions || []).length > 0,
+        links: [],
+      });
+    }
+  }
+  // Namespaces are those of node instances; a resource joins one when its name is in it.
+  const spaces = new Set([...entities.values()].filter(e => e.kind === 'node').map(e => e.group));
+  for (const e of entities.values()) {
+    if (e.kind !== 'node' && !spaces.has(e.group)) e.group = '';
+  }
+  const byName = new Map();
+  for (const e of entities.values()) {
+    const key = e.kind + ':' + e.name;
+    if (!byName.has(key)) byName.set(key, []);
+    byName.get(key).push(e);
+  }
+  const links = [];
+  for (const link of config.links || []) {
+    const kind = RESOURCE_OF[link.kind];
+    if (!kind) continue;
+    const node = (byName.get('node:' + link.node) || [])[0];
+    const resource = findResource(link, kind, entities, byName);
+    if (!node || !resource) continue;
+    const entry = {link, node, resource};
+    links.push(entry);
+    node.links.push(entry);
+    resource.links.push(entry);
+  }
+  return {config, entities, links};
+}
+
+function findResource(link, kind, entities, byName) {
+  if (link.resource && entities.has(link.resource)) return entities.get(link.resource);
+  const same = byName.get(kind + ':' + link.name) || [];
+  if (same.length <= 1) return same[0];
+  const users = USERS[kind];
+  return same.find(e => users.some(field => (e.item[field] || []).includes(link.node))) || same[0];
+}
+
+// Vertices and edges after filters and collapsing.
+function buildView(index, options) {
+  const hidden = e => (
+    (options.hideParameters && e.kind === 'parameter') ||
+    (options.hideServices && (e.kind === 'service' || e.kind === 'action')) ||
+    (options.hideInfra && e.kind !== 'node' && INFRA.test(e.name)) ||
+    (options.hideSingleEnded && e.kind === 'topic' &&
+      (!(e.item.publishers || []).length || !(e.item.subscribers || []).length)));
+  const vertices = new Map(), edges = new Map();
+  const vertexFor = e => {
+    if (e.group && options.collapsed.has(e.group)) {
+      const id = 'namespace:' + e.group;
+      if (!vertices.has(id)) vertices.set(id, makeVertex({id, kind: 'namespace', name: e.group, group: '', members: []}));
+      vertices.get(id).entity.members.push(e);
+      return vertices.get(id);
+    }
+    if (!vertices.has(e.id)) vertices.set(e.id, makeVertex(e));
+    return vertices.get(e.id);
+  };
+  for (const e of index.entities.values()) if (!hidden(e)) vertexFor(e);
+  for (const entry of index.links) {
+    if (hidden(entry.node) || hidden(entry.resource)) continue;
+    const n = vertexFor(entry.node), r = vertexFor(entry.resource);
+    if (n === r) continue;
+    const [source, target] = INTO_NODE.has(entry.link.kind) ? [r, n] : [n, r];
+    const key = source.id + '\u0000' + target.id;
+    if (!edges.has(key)) edges.set(key, {id: key, source, target, kind: entry.link.kind, links: []});
+    edges.get(key).links.push(entry);
+  }
+  for (const edge of edges.values()) {
+    edge.conditional = edge.links.every(l => (l.link.conditions || []).length > 0);
+  }
+  let list = [...vertices.values()];
+  if (options.hideDisconnected) {
+    const used = new Set();
+    for (const edge of edges.values()) { used.add(edge.source); used.add(edge.target); }
+    list = list.filter(v => used.has(v));
+  }
+  for (const v of list) if (v.kind === 'namespace') v.label = v.name + '  (' + v.entity.members.length + ')';
+  for (const v of list) {
+    if (v.kind !== 'namespace' && v.group && v.name.startsWith(v.group)) v.label = v.name.slice(v.group.length);
+  }
+  for (const v of list) v.w = Math.max(v.kind === 'parameter' ? 50 : 70, v.label.length * CHAR_W + 28);
+  return {vertices: list, edges: [...edges.values()]};
+}
+
+function makeVertex(e) {
+  return {
+    id: e.id, kind: e.kind, name: e.name, group: e.group, entity: e, label: e.name,
+    w: 0, h: e.kind === 'parameter' ? 22 : 28, x: 0, y: 0,
+  };
+}
+
+// ---- drawing -------------------------------------------------------------------------
+
+function shapePath(v) {
+  const w = v.w / 2, h = v.h / 2;
+  switch (v.kind) {
+    case 'service': { const c = 10; return `M${-w},0 L${-w + c},${-h} L${w - c},${-h} L${w},0 L${w - c},${h} L${-w + c},${h} Z`; }
+    case 'action': { const c = 7; return `M${-w + c},${-h} L${w - c},${-h} L${w},${-h + c} L${w},${h - c} L${w - c},${h} L${-w + c},${h} L${-w},${h - c} L${-w},${-h + c} Z`; }
+    case 'parameter': { const s = 6; return `M${-w + s},${-h} L${w},${-h} L${w - s},${h} L${-w},${h} Z`; }
+    case 'topic': return roundedRect(w, h, h);
+    case 'namespace': return `M${-w},${-h} L${-w + 28},${-h} L${-w + 34},${-h - 6} L${-w + 60},${-h - 6} L${-w + 64},${-h} L${w},${-h} L${w},${h} L${-w},${h} Z`;
+    default: return roundedRect(w, h, 5);
+  }
+}
+
+function roundedRect(w, h, r) {
+  return `M${-w + r},${-h} L${w - r},${-h} A${r},${r} 0 0 1 ${w},${-h + r} L${w},${h - r} ` +
+    `A${r},${r} 0 0 1 ${w - r},${h} L${-w + r},${h} A${r},${r} 0 0 1 ${-w},${h - r} ` +
+    `L${-w},${-h + r} A${r},${r} 0 0 1 ${-w + r},${-h} Z`;
+}
+
+function edgePath(e) {
+  const s = e.source, t = e.target;
+  const forward = t.x >= s.x;
+  const x1 = s.x + (forward ? s.w / 2 : -s.w / 2), x2 = t.x + (forward ? -t.w / 2 - 4 : t.w / 2 + 4);
+  const dx = Math.max(30, Math.abs(x2 - x1) / 2) * (forward ? 1 : -1);
+  return `M${x1},${s.y} C${x1 + dx},${s.y} ${x2 - dx},${t.y} ${x2},${t.y}`;
+}
+
+function conditionText(conditions) {
+  return (conditions || []).map(c => {
+    const where = c.location && c.location.file ? ` (${c.location.file}:${c.location.line})` : '';
+    return `${c.statement || c.kind || 'if'} ${c.text}${where}`;
+  }).join('\n');
+}
+
+function vertexTitle(v) {
+  if (v.kind === 'namespace') return `namespace ${v.name}: ${v.entity.members.length} entities (click to expand)`;
+  const item = v.entity.item;
+  const lines = [`${v.kind} ${v.name}`];
+  if (item.node) lines.push(`runs ${item.node}`);
+  if (item.types && item.types.length) lines.push(item.types.join(', '));
+  if (item.type) lines.push(String(item.type));
+  if (v.entity.unresolved) lines.push('name not known statically (?)');
+  const cond = conditionText(item.conditions);
+  if (cond) lines.push('only if:\n' + cond);
+  return lines.join('\n');
+}
+
+function edgeTitle(e) {
+  return e.links.map(({link}) => {
+    const given = link.given && link.given !== link.name ? ` (given "${link.given}")` : '';
+    const cond = conditionText(link.conditions);
+    return `${link.node} ${link.kind} ${link.name}${given}` + (link.type ? `\n  ${link.type}` : '') +
+      (cond ? '\n  only if: ' + cond.replace(/\n/g, '\n           ') : '');
+  }).join('\n');
+}
+
+function drawGraph(root, view, handlers) {
+  root.selectAll('*').remove();
+  const groups = root.append('g').attr('class', 'groups');
+  const edgeLayer = root.append('g').attr('class', 'edges');
+  const vertexLayer = root.append('g').attr('class', 'vertices');
+
+  const edgeSel = edgeLayer.selectAll('path').data(view.edges).join('path')
+    .attr('class', e => `edge k-${e.kind}` + (e.conditional ? ' conditional' : ''))
+    .attr('marker-end', e => `url(#arrow-${RESOURCE_OF[e.kind] || 'topic'})`)
+    .attr('d', edgePath);
+  edgeSel.append('title').text(edgeTitle);
+
+  const vertexSel = vertexLayer.selectAll('g').data(view.vertices, v => v.id).join('g')
+    .attr('class', v => `vertex k-${v.kind}` + (v.entity.unresolved ? ' unresolved' : '') +
+      (v.entity.conditional ? ' conditional' : ''))
+    .attr('data-id', v => v.id)
+    .attr('transform', v => `translate(${v.x},${v.y})`);
+  vertexSel.append('path').attr('class', 'shape').attr('d', shapePath);
+  vertexSel.append('text').attr('class', 'label').attr('dy', '0.35em').text(v => v.label);
+  vertexSel.filter(v => v.entity.unresolved).append('g').attr('class', 'badge')
+    .attr('transform', v => `translate(${v.w / 2 - 2},${-v.h / 2})`)
+    .call(g => { g.append('circle').attr('r', 7); g.append('text').attr('dy', '0.35em').text('?'); });
+  vertexSel.append('title').text(vertexTitle);
+
+  const incident = new Map(view.vertices.map(v => [v, []]));
+  edgeSel.each(function (e) { incident.get(e.source).push(this); incident.get(e.target).push(this); });
+  vertexSel.on('click', (event, v) => { event.stopPropagation(); handlers.click(v); })
+    .call(d3.drag().clickDistance(4).on('drag', function (event, v) {
+      v.x = event.x; v.y = event.y;
+      d3.select(this).attr('transform', `translate(${v.x},${v.y})`);
+      d3.selectAll(incident.get(v)).attr('d', edgePath);
+      drawGroups(groups, view, handlers);
+    }));
+  drawGroups(groups, view, handlers);
+  return {
+    vertexSel, edgeSel,
+    update() {
+      vertexSel.attr('transform', v => `translate(${v.x},${v.y})`);
+      edgeSel.attr('d', edgePath);
+      drawGroups(groups, view, handlers);
+    },
+  };
+}
+
+// A light box behind each namespace's members, labelled; clicking the label collapses it.
+function drawGroups(layer, view, handlers) {
+  const boxes = new Map();
+  for (const v of view.vertices) {
+    if (!v.group) continue;
+    const b = boxes.get(v.group) || {name: v.group, x0: Infinity, y0: Infinity, x1: -Infinity, y1: -Infinity, n: 0};
+    b.x0 = Math.min(b.x0, v.x - v.w / 2); b.x1 = Math.max(b.x1, v.x + v.w / 2);
+    b.y0 = Math.min(b.y0, v.y - v.h / 2); b.y1 = Math.max(b.y1, v.y + v.h / 2); b.n++;
+    boxes.set(v.group, b);
+  }
+  const data = [...boxes.values()].filter(b => b.n > 1);
+  const sel = layer.selectAll('g.group').data(data, b => b.name).join(enter => {
+    const g = enter.append('g').attr('class', 'group');
+    g.append('rect').attr('rx', 10);
+    g.append('text').attr('class', 'group-label');
+    return g;
+  });
+  sel.attr('data-group', b => b.name);
+  sel.select('rect').attr('x', b => b.x0 - 14).attr('y', b => b.y0 - 26)
+    .attr('width', b => b.x1 - b.x0 + 28).attr('height', b => b.y1 - b.y0 + 40);
+  sel.select('text').attr('x', b => b.x0 - 6).attr('y', b => b.y0 - 10)
+    .text(b => `${b.name}  \u2212 collapse`)
+    .on('click', (event, b) => { event.stopPropagation(); handlers.collapse(b.name); });
+}
