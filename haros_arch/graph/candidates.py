@@ -12,14 +12,17 @@ def compatible(a: Resource, b: Resource) -> bool:
     return not a.types or not b.types or bool(set(a.types) & set(b.types))
 
 
-def _rank(unknown: Resource, candidate: Resource) -> tuple[int, int, str]:
+def _rank(unknown: Resource, candidate: Resource) -> tuple[int, int, int, str]:
+    """Shared types first, then as many segments (a ``?`` is most often one), then the
+    longest common namespace, then the name."""
     shared_types = len(set(unknown.types) & set(candidate.types))
+    depth = abs(unknown.name.count("/") - candidate.name.count("/"))
     shared_segments = 0
     for mine, theirs in zip(unknown.name.split("/"), candidate.name.split("/"), strict=False):
         if mine != theirs:
             break
         shared_segments += 1
-    return (-shared_types, -shared_segments, candidate.name)
+    return (-shared_types, depth, -shared_segments, candidate.name)
 
 
 def find_candidates(config: Configuration) -> None:

@@ -37,7 +37,8 @@ class Model:
 
     @property
     def all_diagnostics(self) -> list[Diagnostic]:
-        found = list(self.diagnostics)
+        """Every diagnostic once (configurations that share launch files repeat them)."""
+        found = dict.fromkeys(self.diagnostics)
         for config in self.configurations:
-            found.extend(config.diagnostics)
-        return found
+            found.update(dict.fromkeys(config.diagnostics))
+        return list(found)
