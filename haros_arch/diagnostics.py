@@ -96,6 +96,29 @@ CATALOGUE: dict[str, Entry] = {
         "warning", "{detail}",
         "A launch construct that the static interpreter does not evaluate; what it "
         "would produce is unknown."),
+    # ROS 2 launch files
+    "LAUNCH_YAML_SYNTAX": Entry(
+        "error", "YAML file cannot be read: {detail}",
+        "A YAML launch file or parameter file is not valid YAML (or not shaped as one); "
+        "nothing from it is used."),
+    "LAUNCH_PY_SYNTAX": Entry(
+        "error", "Python launch file cannot be parsed: {detail}",
+        "The file is not valid Python (or too deeply nested to parse safely); nothing "
+        "from it is used. It is never imported nor run."),
+    "LAUNCH_PY_UNSUPPORTED": Entry(
+        "warning", "{detail}",
+        "A Python launch file uses a construct outside the subset the static "
+        "interpreter evaluates (an unknown call, a while loop, an import of the "
+        "workspace's own modules, ...). It is not run: its result is unknown, and what "
+        "depends on it keeps '?' parts or a condition."),
+    "LAUNCH_PY_BUDGET": Entry(
+        "warning", "interpretation stopped: {detail}",
+        "A launch file exceeded a bound of the static interpreter (steps, call depth, "
+        "size of a value, number of actions). What was computed before is kept."),
+    "LAUNCH_PARAM_FILE": Entry(
+        "warning", "{detail}",
+        "A parameter file given to a node cannot be read or matched statically; the "
+        "parameters it would set are unknown."),
     # sources
     "CPP_PARSE_ERROR": Entry(
         "warning", "C++ error: {detail}",

@@ -27,6 +27,9 @@ class NodeDecl:
     conditions: tuple[Condition, ...] = ()
     location: Location = NOWHERE
     anonymous: bool = False
+    ros_version: int = 1  # 2: ROS 2 naming rules apply (launch.ros2)
+    composable: bool = False  # ROS 2: a component loaded into a container
+    container: str | None = None  # ROS 2: full name of the container it is loaded into
 
 
 @dataclass
@@ -38,6 +41,8 @@ class ParamDecl:
     type: str | None = None
     conditions: tuple[Condition, ...] = ()
     location: Location = NOWHERE
+    node: str | None = None  # ROS 2: full name of the node that owns the parameter
+    key: str | None = None  # ROS 2: the parameter's dotted name within that node
 
 
 @dataclass

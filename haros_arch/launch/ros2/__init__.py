@@ -1,0 +1,111 @@
+"""ROS 2 launch files (XML, YAML, Python) interpreted statically.
+
+Entry point: ``load(path, workspace, args, environment) -> LaunchModel``. Each format is
+turned into the same action tree (``entities``) by its front end (``frontend`` for XML
+and YAML, ``python`` for ``.launch.py``, never imported nor executed), and ``runner``
+performs it. ``is_ros2(path)`` tells a ROS 2 launch file from a roslaunch one.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+from collections.abc import Mapping
+
+import yaml
+from lxml import etree
+
+from ...files import read_bytes, read_text
+from ...model.location import Location
+from ...model.values import Value
+from ...workspace import Workspace
+from ..model import LaunchModel
+from . import entities as e
+from .frontend import Frontend, xml_entities, yaml_entities
+from .runner import Runner, Scope
+
+__all__ = ["is_ros2", "load"]
+
+_ROS2_MARKS = re.compile(rb"\bexec\s*=|<let\b|\$\(var\b|<push[-_]ros[-_]namespace\b|"
+                         rb"<node_container\b|<set_remap\b|<set_parameter\b|"
+                         rb"\bnamespace\s*=|<executable\b|\$\(find-pkg-share\b")
+
+
+def is_ros2(path: str, head: bytes | None = None) -> bool:
+    """True for Python and YAML launch files, and XML ones written with ROS 2 tags."""
+    lower = path.lower()
+    if lower.endswith((".py", ".yaml", ".yml", ".launch.xml")):
+        return True
+    if head is None:
+        try:
+            with open(path, "rb") as handle:
+                head = handle.read(256 * 1024)
+        except OSError:
+            return False
+    return _ROS2_MARKS.search(head) is not None
+
+
+def parse_file(path: str, runner: Runner, where: Location) -> list[e.Action] | None:
+    """The actions of one launch file, by its format; None if it cannot be read."""
+    workspace = runner.workspace
+    here = workspace.location(path)
+    lower = path.lower()
+    if lower.endswith(".py"):
+        from .python import parse_python
+
+        text, found = read_text(path, here)
+        runner.model.diagnostics.extend(found)
+        if text is None:
+            return None
+        actions, problems = parse_python(text, path, workspace)
+        runner.model.diagnostics.extend(problems)
+        return actions
+    front = Frontend(path, workspace)
+    try:
+        if lower.endswith((".yaml", ".yml")):
+            text, found = read_text(path, here)
+            runner.model.diagnostics.extend(found)
+            if text is None:
+                return None
+            root = yaml_entities(text)
+        else:
+            data, found = read_bytes(path, here)
+            runner.model.diagnostics.extend(found)
+            if data is None:
+                return None
+            root = xml_entities(data)
+    except etree.XMLSyntaxError as err:
+        line, col = err.position if err.position else (0, 0)
+        runner.report("LAUNCH_XML_SYNTAX", workspace.location(path, line, col),
+                      detail=err.msg)
+        return None
+    except (yaml.YAMLError, ValueError) as err:
+        mark = getattr(err, "problem_mark", None)
+        runner.report("LAUNCH_YAML_SYNTAX", workspace.location(
+            path, mark.line + 1 if mark else 0, mark.column + 1 if mark else 0),
+            detail=str(getattr(err, "problem", None) or err))
+        return None
+    if root.tag != "launch":
+        runner.report("LAUNCH_BAD_VALUE", workspace.location(path, root.line),
+                      detail=f"root element is <{root.tag}>, not <launch>")
+        return None
+    root.read.add("version")
+    front.leftovers(root)
+    actions = front.actions(root.children)
+    runner.model.diagnostics.extend(front.diagnostics)
+    return actions
+
+
+def load(path: str, workspace: Workspace, args: Mapping[str, str] | None = None,
+         environment: Mapping[str, str] | None = None) -> LaunchModel:
+    """Interpret one ROS 2 launch file and what it includes."""
+    env = workspace.environment if environment is None else environment
+    runner = Runner(workspace, env, parse_file)
+    scope = Scope({k: Value.of(v) for k, v in (args or {}).items()})
+    path = os.path.abspath(path)
+    runner.run_file(path, scope, workspace.location(path))
+    model = runner.model
+    for name, value in (args or {}).items():
+        model.args.setdefault(name, value)
+    model.diagnostics[:] = list(dict.fromkeys(model.diagnostics))
+    return model

@@ -1,0 +1,233 @@
+"""The launch description both front ends produce, before it is run statically.
+
+XML, YAML and Python launch files all become the same tree of ``Action`` values whose
+text fields are ``Text`` (a tuple of literal strings and ``Subst`` objects), as the
+real ``launch`` package turns every front end into actions and substitutions. The
+``runner`` module then performs them in order, as ``LaunchService`` would, without
+starting anything.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+from ...model.location import NOWHERE, Location
+
+
+# -- substitutions ---------------------------------------------------------------
+@dataclass(frozen=True)
+class Subst:
+    """A substitution: its value is computed when the action runs."""
+
+
+Text = tuple[str | Subst, ...]
+
+
+def text(*parts: str | Subst | Text) -> Text:
+    out: list[str | Subst] = []
+    for part in parts:
+        if isinstance(part, tuple):
+            out.extend(part)
+        else:
+            out.append(part)
+    return tuple(out)
+
+
+@dataclass(frozen=True)
+class Var(Subst):  # $(var name [default]) / LaunchConfiguration
+    name: Text
+    default: Text | None = None
+
+
+@dataclass(frozen=True)
+class Env(Subst):  # $(env NAME [default]) / EnvironmentVariable
+    name: Text
+    default: Text | None = None
+
+
+@dataclass(frozen=True)
+class FindPackage(Subst):  # $(find-pkg-share) / $(find-pkg-prefix) / FindPackageShare
+    package: Text
+    share: bool = True
+
+
+@dataclass(frozen=True)
+class FindExec(Subst):  # $(find-exec) / $(exec-in-pkg): a path outside the graph
+    what: Text
+
+
+@dataclass(frozen=True)
+class Eval(Subst):  # $(eval ...) / PythonExpression
+    expression: Text
+
+
+@dataclass(frozen=True)
+class Anon(Subst):
+    name: Text
+
+
+@dataclass(frozen=True)
+class ThisFile(Subst):  # $(filename) / $(dirname) / ThisLaunchFile(Dir)
+    directory: bool = False
+
+
+@dataclass(frozen=True)
+class Logic(Subst):  # $(not) $(and) $(or) $(equals) $(if) and their Python classes
+    op: str
+    operands: tuple[Text, ...]
+
+
+@dataclass(frozen=True)
+class PathJoin(Subst):
+    parts: tuple[Text, ...]
+
+
+@dataclass(frozen=True)
+class FileContent(Subst):
+    path: Text
+
+
+@dataclass(frozen=True)
+class Opaque(Subst):
+    """A value we do not compute (``$(command)``, an unknown call): always unknown."""
+
+    origin: str
+
+
+# -- conditions --------------------------------------------------------------------
+@dataclass(frozen=True)
+class Cond:
+    """``IfCondition``/``if=`` (``negate`` for unless) or ``LaunchConfigurationEquals``."""
+
+    expression: Text
+    negate: bool = False
+    source: str = ""  # as written, for the condition's text
+    equals: Text | None = None  # LaunchConfiguration(Not)Equals: compare with this
+
+
+# -- actions -------------------------------------------------------------------------
+@dataclass
+class Action:
+    condition: Cond | None = field(default=None, kw_only=True)
+    location: Location = field(default=NOWHERE, kw_only=True)
+
+
+@dataclass
+class DeclareArg(Action):
+    name: str
+    default: Text | None = None
+
+
+@dataclass
+class SetConfig(Action):  # <let> / SetLaunchConfiguration
+    name: Text
+    value: Text
+
+
+@dataclass
+class Group(Action):
+    actions: list[Action]
+    scoped: bool = True
+    forwarding: bool = True
+    configs: list[tuple[Text, Text]] = field(default_factory=list)
+
+
+@dataclass
+class PushNamespace(Action):
+    namespace: Text
+
+
+@dataclass
+class SetRemap(Action):
+    source: Text
+    target: Text
+
+
+@dataclass
+class SetParam(Action):
+    name: Text
+    value: Any
+
+
+@dataclass
+class SetEnv(Action):
+    name: Text
+    value: Text | None  # None: unset
+
+
+@dataclass
+class Include(Action):
+    path: Text
+    args: list[tuple[Text, Text]] = field(default_factory=list)
+
+
+@dataclass
+class ParamFile:
+    """A parameter file, maybe rewritten (nav2's ``RewrittenYaml``)."""
+
+    path: Text
+    root_key: Text | None = None
+    rewrites: list[tuple[Text, Any]] = field(default_factory=list)
+    location: Location = NOWHERE
+
+
+@dataclass(frozen=True)
+class ParamValue:
+    """``ParameterValue(value, value_type=str)``: a value kept as text, not read as YAML."""
+
+    value: Any
+    as_text: bool = False
+
+
+# A node parameter entry: a ParamFile, or (name Text, value) where value is a Python
+# literal, Text, or a list of those; dict values are flattened with '.'.
+ParamEntry = ParamFile | tuple[Text, Any]
+
+
+@dataclass
+class NodeAction(Action):
+    package: Text | None
+    executable: Text | None
+    name: Text | None = None
+    namespace: Text | None = None
+    parameters: list[ParamEntry] = field(default_factory=list)
+    remaps: list[tuple[Text, Text]] = field(default_factory=list)
+    arguments: list[Text] = field(default_factory=list)
+    ros_arguments: list[Text] = field(default_factory=list)
+    composable: list[ComposableNode] = field(default_factory=list)  # containers only
+    container: bool = False
+    split: bool = False  # arguments are one text to split on spaces (XML/YAML args=)
+
+
+@dataclass
+class ComposableNode:
+    package: Text | None
+    plugin: Text | None
+    name: Text | None = None
+    namespace: Text | None = None
+    parameters: list[ParamEntry] = field(default_factory=list)
+    remaps: list[tuple[Text, Text]] = field(default_factory=list)
+    condition: Cond | None = None
+    location: Location = NOWHERE
+
+
+@dataclass
+class LoadComposable(Action):
+    target: Text
+    nodes: list[ComposableNode]
+
+
+@dataclass
+class Delayed(Action):
+    """Actions that run later (``TimerAction``, event handlers): each is conditional."""
+
+    actions: list[Action]
+    why: str
+
+
+@dataclass
+class Unsupported(Action):
+    """Something we do not interpret; its effect on the graph is unknown."""
+
+    what: str

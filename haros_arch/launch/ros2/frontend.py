@@ -1,0 +1,353 @@
+"""The XML and YAML front ends of ROS 2 launch (launch_xml, launch_yaml, launch_ros tags).
+
+Both formats become ``Entity`` trees (tag, attributes, children, line); one registry of
+tag handlers (``TAGS``) turns entities into actions. As in the ``launch`` package, an
+attribute or child a handler did not read is reported, and an unknown tag is reported
+and skipped.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from typing import Any
+
+import yaml
+from lxml import etree
+
+from ... import diagnostics as diag
+from ...diagnostics import Diagnostic
+from ...manifest import xml_parser
+from ...model.location import Location
+from ...workspace import Workspace
+from . import entities as e
+from .substitutions import SubstitutionSyntax, parse
+
+COMMON = ("if", "unless")
+_PARAM_ATTRS = ("name", "value", "from", "value-sep", "sep", "allow_substs")
+
+
+@dataclass
+class Entity:
+    tag: str
+    attrs: dict[str, Any]
+    children: list[Entity] = field(default_factory=list)
+    line: int = 0
+    read: set[str] = field(default_factory=set)
+
+
+class Frontend:
+    def __init__(self, path: str, workspace: Workspace) -> None:
+        self.path = path
+        self.workspace = workspace
+        self.diagnostics: list[Diagnostic] = []
+        self.tags: dict[str, Callable[[Entity], e.Action | None]] = {
+            "arg": self.arg, "let": self.let, "group": self.group, "include": self.include,
+            "push-ros-namespace": self.push, "push_ros_namespace": self.push,
+            "node": self.node, "node_container": self.node, "executable": self.executable,
+            "set_parameter": self.set_parameter, "set_parameters_from_file": self.set_pfile,
+            "set_remap": self.set_remap, "set_env": self.set_env, "unset_env": self.set_env,
+            "load_composable_node": self.load_composable, "timer": self.timer,
+            "log": self.ignored, "set_launch_configuration": self.let,
+        }
+
+    # -- helpers -------------------------------------------------------------------
+    def where(self, ent: Entity) -> Location:
+        return self.workspace.location(self.path, ent.line)
+
+    def report(self, code: str, ent: Entity, **params: object) -> None:
+        self.diagnostics.append(diag.make(code, self.where(ent), **params))
+
+    def text(self, ent: Entity, name: str, required: bool = False) -> e.Text | None:
+        ent.read.add(name)
+        raw = ent.attrs.get(name)
+        if raw is None:
+            if required:
+                self.report("LAUNCH_MISSING_ATTRIBUTE", ent, tag=ent.tag, attribute=name)
+            return None
+        if isinstance(raw, bool):
+            return (str(raw).lower(),)
+        if not isinstance(raw, str):
+            return (str(raw),)
+        try:
+            return parse(raw)
+        except SubstitutionSyntax as err:
+            self.report("LAUNCH_BAD_VALUE", ent, detail=f"{name}=\"{raw}\": {err}")
+            return (e.Opaque(f"{name}=\"{raw}\" cannot be parsed"),)
+
+    def flag(self, ent: Entity, name: str, default: bool) -> bool:
+        raw = self.text(ent, name)
+        if raw is None:
+            return default
+        literal = "".join(p for p in raw if isinstance(p, str)).strip().lower()
+        return literal in ("true", "1") if literal in ("true", "1", "false", "0") else default
+
+    def finish(self, ent: Entity, action: e.Action) -> e.Action:
+        """Attach condition and location; report what the handler did not read."""
+        for key in COMMON:
+            raw = ent.attrs.get(key)
+            if raw is not None:
+                expr = self.text(ent, key)
+                assert expr is not None
+                action.condition = e.Cond(expr, negate=key == "unless", source=str(raw))
+        action.location = self.where(ent)
+        self.leftovers(ent)
+        return action
+
+    def leftovers(self, ent: Entity) -> None:
+        for key in ent.attrs:
+            if key not in ent.read and key not in COMMON:
+                self.report("LAUNCH_UNKNOWN_ATTRIBUTE", ent, attribute=key, tag=ent.tag)
+
+    def cond_of(self, ent: Entity) -> e.Cond | None:
+        for key in COMMON:
+            if key in ent.attrs:
+                expr = self.text(ent, key)
+                assert expr is not None
+                return e.Cond(expr, negate=key == "unless", source=str(ent.attrs[key]))
+        return None
+
+    def actions(self, children: list[Entity]) -> list[e.Action]:
+        out: list[e.Action] = []
+        for child in children:
+            handler = self.tags.get(child.tag)
+            if handler is None:
+                self.report("LAUNCH_UNKNOWN_TAG", child, tag=child.tag)
+                continue
+            action = handler(child)
+            if action is not None:
+                out.append(self.finish(child, action))
+        return out
+
+    # -- tags ----------------------------------------------------------------------
+    def ignored(self, ent: Entity) -> e.Action | None:
+        ent.read.update(ent.attrs)
+        return None
+
+    def arg(self, ent: Entity) -> e.Action | None:
+        name = ent.attrs.get("name")
+        ent.read.update(("name", "description", "doc"))
+        for child in ent.children:
+            if child.tag != "choice":
+                self.report("LAUNCH_UNKNOWN_TAG", child, tag=child.tag)
+        if not isinstance(name, str):
+            self.report("LAUNCH_MISSING_ATTRIBUTE", ent, tag="arg", attribute="name")
+            return None
+        default = self.text(ent, "default")
+        return e.DeclareArg(name, default)
+
+    def let(self, ent: Entity) -> e.Action | None:
+        name, value = self.text(ent, "name", True), self.text(ent, "value", True)
+        return None if name is None or value is None else e.SetConfig(name, value)
+
+    def group(self, ent: Entity) -> e.Action | None:
+        keeps: list[tuple[e.Text, e.Text]] = []
+        others = []
+        for child in ent.children:
+            if child.tag == "keep":
+                name, value = self.text(child, "name", True), self.text(child, "value", True)
+                self.leftovers(child)
+                if name is not None and value is not None:
+                    keeps.append((name, value))
+            else:
+                others.append(child)
+        ns = self.text(ent, "ns")
+        actions = self.actions(others)
+        if ns is not None:
+            actions.insert(0, e.PushNamespace(ns, location=self.where(ent)))
+        return e.Group(actions, self.flag(ent, "scoped", True),
+                       self.flag(ent, "forwarding", True), keeps)
+
+    def include(self, ent: Entity) -> e.Action | None:
+        path = self.text(ent, "file", True)
+        args: list[tuple[e.Text, e.Text]] = []
+        for child in ent.children:
+            if child.tag != "arg":
+                self.report("LAUNCH_UNKNOWN_TAG", child, tag=child.tag)
+                continue
+            name, value = self.text(child, "name", True), self.text(child, "value", True)
+            self.leftovers(child)
+            if name is not None and value is not None:
+                args.append((name, value))
+        return None if path is None else e.Include(path, args)
+
+    def push(self, ent: Entity) -> e.Action | None:
+        ns = self.text(ent, "namespace", True)
+        return None if ns is None else e.PushNamespace(ns)
+
+    def set_parameter(self, ent: Entity) -> e.Action | None:
+        name, value = self.text(ent, "name", True), self.text(ent, "value", True)
+        return None if name is None or value is None else e.SetParam(name, value)
+
+    def set_pfile(self, ent: Entity) -> e.Action | None:
+        self.text(ent, "filename")
+        return e.Unsupported("set_parameters_from_file is not applied; "
+                             "the parameters it sets are unknown")
+
+    def set_remap(self, ent: Entity) -> e.Action | None:
+        src, dst = self.text(ent, "from", True), self.text(ent, "to", True)
+        return None if src is None or dst is None else e.SetRemap(src, dst)
+
+    def set_env(self, ent: Entity) -> e.Action | None:
+        name = self.text(ent, "name", True)
+        value = self.text(ent, "value", ent.tag == "set_env")
+        return None if name is None else e.SetEnv(name, value)
+
+    def executable(self, ent: Entity) -> e.Action | None:
+        ent.read.update(ent.attrs)  # a process that is not a ROS node we can name
+        return None
+
+    def timer(self, ent: Entity) -> e.Action | None:
+        period = ent.attrs.get("period", "?")
+        ent.read.add("period")
+        return e.Delayed(self.actions(ent.children), f"after timer period={period}")
+
+    def params(self, children: list[Entity], prefix: str = "") -> list[e.ParamEntry]:
+        out: list[e.ParamEntry] = []
+        for child in children:
+            if child.tag != "param":
+                continue
+            ent = child
+            if "from" in ent.attrs:
+                path = self.text(ent, "from")
+                self.text(ent, "allow_substs")
+                if path is not None:
+                    out.append(e.ParamFile(path, location=self.where(ent)))
+                self.leftovers(ent)
+                continue
+            name = self.text(ent, "name", True)
+            if name is None:
+                continue
+            full = e.text(prefix + "." if prefix else "", name) if prefix else name
+            if ent.children:
+                key = "".join(p for p in name if isinstance(p, str))
+                out.extend(self.params(ent.children, f"{prefix}.{key}" if prefix else key))
+            else:
+                value = self.param_value(ent)
+                if value is not None:
+                    out.append((full, value))
+            self.leftovers(ent)
+        return out
+
+    def param_value(self, ent: Entity) -> Any:
+        raw = ent.attrs.get("value")
+        ent.read.update(("value", "value-sep", "sep", "type"))
+        if raw is None:
+            self.report("LAUNCH_MISSING_ATTRIBUTE", ent, tag="param", attribute="value")
+            return None
+        if not isinstance(raw, str):
+            return raw  # YAML gives typed values
+        sep = ent.attrs.get("value-sep") or ent.attrs.get("sep")
+        value = self.text(ent, "value")
+        if isinstance(sep, str) and sep and all(isinstance(p, str) for p in value or ()):
+            return [item for item in raw.split(sep)]
+        return value
+
+    def remaps(self, children: list[Entity]) -> list[tuple[e.Text, e.Text]]:
+        out = []
+        for child in children:
+            if child.tag == "remap":
+                src, dst = self.text(child, "from", True), self.text(child, "to", True)
+                self.leftovers(child)
+                if src is not None and dst is not None:
+                    out.append((src, dst))
+        return out
+
+    def node(self, ent: Entity) -> e.Action | None:
+        def words(name: str) -> list[e.Text]:
+            found = self.text(ent, name)
+            return [] if found is None else [found]
+
+        container = ent.tag == "node_container"
+        for key in ("output", "respawn", "respawn_delay", "launch-prefix", "exec_name",
+                    "emulate_tty", "cwd", "sigterm_timeout", "sigkill_timeout"):
+            ent.read.add(key)
+        action = e.NodeAction(
+            self.text(ent, "pkg", True), self.text(ent, "exec", True),
+            self.text(ent, "name", container), self.text(ent, "namespace"),
+            self.params(ent.children), self.remaps(ent.children),
+            words("args"), words("ros_args"), container=container, split=True)
+        for child in ent.children:
+            if child.tag == "composable_node" and container:
+                component = self.composable(child)
+                if component is not None:
+                    action.composable.append(component)
+            elif child.tag not in ("param", "remap", "env"):
+                self.report("LAUNCH_UNKNOWN_TAG", child, tag=child.tag)
+        return action
+
+    def composable(self, ent: Entity) -> e.ComposableNode | None:
+        node = e.ComposableNode(
+            self.text(ent, "pkg", True), self.text(ent, "plugin", True),
+            self.text(ent, "name"), self.text(ent, "namespace"),
+            self.params(ent.children), self.remaps(ent.children),
+            self.cond_of(ent), self.where(ent))
+        for child in ent.children:
+            if child.tag not in ("param", "remap", "extra_arg"):
+                self.report("LAUNCH_UNKNOWN_TAG", child, tag=child.tag)
+        self.leftovers(ent)
+        return node
+
+    def load_composable(self, ent: Entity) -> e.Action | None:
+        target = self.text(ent, "target", True)
+        nodes = [c for c in (self.composable(child) for child in ent.children
+                             if child.tag == "composable_node") if c is not None]
+        return None if target is None else e.LoadComposable(target, nodes)
+
+
+# -- reading the files ---------------------------------------------------------------
+def xml_entities(data: bytes) -> Entity:
+    root = etree.fromstring(data, xml_parser())
+
+    def convert(el: Any) -> Entity:
+        children = [convert(c) for c in el if isinstance(c.tag, str)]
+        line = el.sourceline if isinstance(el.sourceline, int) else 0
+        return Entity(str(el.tag), dict(el.attrib), children, line)
+
+    return convert(root)
+
+
+def yaml_entities(text: str) -> Entity:
+    node = yaml.compose(text, Loader=yaml.SafeLoader)
+    if not isinstance(node, yaml.MappingNode) or len(node.value) != 1:
+        raise ValueError("a YAML launch file is one mapping with the key 'launch'")
+    key, body = node.value[0]
+    return _yaml_entity(str(key.value), body, key.start_mark.line + 1)
+
+
+def _scalar(node: Any) -> Any:
+    if isinstance(node, yaml.ScalarNode):
+        return yaml.safe_load(yaml.serialize(node)) if node.tag != "tag:yaml.org,2002:str" \
+            else node.value
+    return yaml.safe_load(yaml.serialize(node))
+
+
+def _yaml_entity(tag: str, body: Any, line: int) -> Entity:
+    ent = Entity(tag, {}, [], line)
+    if isinstance(body, yaml.SequenceNode):  # launch: [ {node: ...}, ... ]
+        ent.children = _yaml_list(body)
+        return ent
+    if not isinstance(body, yaml.MappingNode):
+        return ent
+    for key, value in body.value:
+        name = str(key.value)
+        if isinstance(value, yaml.SequenceNode) and name in (
+                "children", "param", "remap", "arg", "composable_node", "keep", "choice",
+                "extra_arg"):
+            if name == "children":
+                ent.children.extend(_yaml_list(value))
+            else:
+                ent.children.extend(_yaml_entity(name, item, item.start_mark.line + 1)
+                                    for item in value.value)
+        else:
+            ent.attrs[name] = _scalar(value)
+    return ent
+
+
+def _yaml_list(seq: Any) -> list[Entity]:
+    out: list[Entity] = []
+    for item in seq.value:
+        if isinstance(item, yaml.MappingNode) and len(item.value) == 1:
+            key, value = item.value[0]
+            out.append(_yaml_entity(str(key.value), value, key.start_mark.line + 1))
+    return out

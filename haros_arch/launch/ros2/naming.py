@@ -1,0 +1,237 @@
+"""ROS 2 names as launch_ros and rcl compute them, and parameters in ROS 2 form.
+
+- A node's namespace: an absolute ``namespace`` is used as it is; a relative one is put
+  under the pushed namespace (``PushRosNamespace`` / ``<push-ros-namespace>``); none
+  means the pushed namespace, else ``/``. The full name is ``namespace + name``.
+- ``--ros-args`` are read as rcl reads them: ``-r``/``--remap from:=to`` (a
+  ``node:from:=to`` rule applies only to the node called ``node``; ``__ns`` and
+  ``__node``/``__name`` rename the node), ``-p name:=value``, ``--params-file FILE``.
+- Parameters are flat, dotted names (``FollowPath.max_vel_x``); nested dicts are
+  flattened with ``.``. A parameter file is a YAML document whose keys down to
+  ``ros__parameters`` spell a node name pattern (``/**``, ``/**/amcl``, ``amcl``,
+  ``robot1: amcl:``); ``*`` matches one name token and ``**`` any number of them, as in
+  rcl. A pattern without a leading ``/`` is taken from the root, as rcl does.
+- ``ParamDecl.name`` of a ROS 2 parameter is the node's full name, ``/``, and the
+  dotted parameter name (``/robot1/controller_server/FollowPath.max_vel_x``); the owner
+  node and the dotted name are also kept apart in ``ParamDecl.node`` / ``ParamDecl.key``.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterator
+from dataclasses import dataclass, field
+from typing import Any
+
+import yaml
+
+from ...model.values import UNKNOWN_MARK
+
+PARAMS_KEY = "ros__parameters"
+MAX_PARAM_DEPTH = 32
+
+
+def clean_namespace(ns: str) -> str:
+    """``a//b/`` -> ``/a/b``; the root is ``/``."""
+    ns = re.sub(r"/+", "/", "/" + ns.strip())
+    return ns.rstrip("/") or "/"
+
+
+def node_namespace(pushed: str | None, given: str | None) -> str:
+    """The namespace launch_ros gives a node: ``given`` under ``pushed`` unless absolute."""
+    if given:
+        if given.startswith("/") or not pushed:
+            return clean_namespace(given)
+        return clean_namespace(pushed + "/" + given)
+    return clean_namespace(pushed or "/")
+
+
+def push_namespace(pushed: str | None, ns: str) -> str:
+    """The namespace after ``PushRosNamespace(ns)``."""
+    return node_namespace(pushed, ns)
+
+
+def full_name(namespace: str, name: str) -> str:
+    return clean_namespace(namespace + "/" + name)
+
+
+def with_slash(namespace: str) -> str:
+    """The ``/a/b/`` form that ``NodeDecl.namespace`` uses."""
+    return namespace if namespace.endswith("/") else namespace + "/"
+
+
+@dataclass
+class RosArgs:
+    """What a node's ``--ros-args`` say, as rcl reads them."""
+
+    remaps: list[tuple[str, str]] = field(default_factory=list)
+    params: list[tuple[str, str]] = field(default_factory=list)
+    params_files: list[str] = field(default_factory=list)
+    node_name: str | None = None
+    namespace: str | None = None
+    ignored: list[str] = field(default_factory=list)
+
+
+def split_rule(rule: str) -> tuple[str | None, str, str] | None:
+    """``[node:]from:=to`` -> (node or None, from, to); None if it is not a rule."""
+    if ":=" not in rule:
+        return None
+    left, right = rule.split(":=", 1)
+    node: str | None = None
+    # a node prefix is the part before a single ':' (names cannot hold ':')
+    if ":" in left:
+        node, left = left.split(":", 1)
+    return node, left, right
+
+
+def parse_ros_args(tokens: list[str], node_name: str | None) -> RosArgs:
+    """Read ``tokens`` (after ``--ros-args``) for the node called ``node_name``."""
+    out = RosArgs()
+    i = 0
+    while i < len(tokens):
+        token = tokens[i]
+        nxt = tokens[i + 1] if i + 1 < len(tokens) else None
+        if token in ("-r", "--remap") and nxt is not None:
+            rule = split_rule(nxt)
+            i += 2
+            if rule is None:
+                out.ignored.append(nxt)
+                continue
+            target, src, dst = rule
+            if target is not None and node_name is not None and target != node_name:
+                continue
+            if src == "__ns":
+                out.namespace = dst
+            elif src in ("__node", "__name"):
+                out.node_name = dst
+            else:
+                out.remaps.append((src, dst))
+            continue
+        if token in ("-p", "--param") and nxt is not None:
+            rule = split_rule(nxt)
+            i += 2
+            if rule is None:
+                out.ignored.append(nxt)
+                continue
+            target, src, dst = rule
+            if target is None or node_name is None or target == node_name:
+                out.params.append((src, dst))
+            continue
+        if token == "--params-file" and nxt is not None:
+            out.params_files.append(nxt)
+            i += 2
+            continue
+        if token == "--":
+            break
+        out.ignored.append(token)
+        i += 1
+    return out
+
+
+def split_arguments(args: list[str]) -> tuple[list[str], list[str]]:
+    """Split a command line into plain arguments and the ``--ros-args`` part."""
+    plain: list[str] = []
+    ros: list[str] = []
+    inside = False
+    for token in args:
+        if token == "--ros-args":
+            inside = True
+        elif inside and token == "--":
+            inside = False
+        elif inside:
+            ros.append(token)
+        else:
+            plain.append(token)
+    return plain, ros
+
+
+def flatten(values: Any, prefix: str = "", depth: int = 0) -> Iterator[tuple[str, Any]]:
+    """``{"a": {"b": 1}}`` -> ``("a.b", 1)``; non-dict values are leaves."""
+    if isinstance(values, dict) and depth < MAX_PARAM_DEPTH:
+        for key, value in values.items():
+            name = f"{prefix}.{key}" if prefix else str(key)
+            yield from flatten(value, name, depth + 1)
+    elif prefix:
+        yield prefix, values
+
+
+def param_type(value: Any) -> str | None:
+    """The ROS 2 parameter type of a value as YAML gives it (None if unknown)."""
+    if isinstance(value, bool):
+        return "bool"
+    if isinstance(value, int):
+        return "int"
+    if isinstance(value, float):
+        return "double"
+    if isinstance(value, str):
+        return "str"
+    if isinstance(value, (list, tuple)) and value:
+        kinds = {param_type(item) for item in value}
+        if kinds == {"int", "double"}:
+            return "double[]"
+        only = next(iter(kinds))
+        if len(kinds) == 1 and only is not None and "[]" not in only:
+            return f"{only}[]"
+    if isinstance(value, (list, tuple)):
+        return "str[]" if not value else None
+    return None
+
+
+def yaml_value(text: str) -> Any:
+    """A parameter given as text (``-p``, a substitution) is read as YAML, like launch_ros."""
+    try:
+        value = yaml.safe_load(text)
+    except yaml.YAMLError:
+        return text
+    if value is None or isinstance(value, dict):
+        return text
+    return value
+
+
+def node_patterns(document: Any, depth: int = 0,
+                  path: tuple[str, ...] = ()) -> Iterator[tuple[str, dict[str, Any]]]:
+    """(node name pattern, ros__parameters) pairs of a parameter file."""
+    if not isinstance(document, dict) or depth > MAX_PARAM_DEPTH:
+        return
+    for key, value in document.items():
+        if key == PARAMS_KEY:
+            if isinstance(value, dict):
+                yield clean_namespace("/".join(path)), value
+            continue
+        yield from node_patterns(value, depth + 1, (*path, str(key)))
+
+
+def pattern_matches(pattern: str, node: str) -> bool:
+    """rcl's node name matching: ``*`` one token, ``**`` zero or more tokens."""
+    if UNKNOWN_MARK in node:
+        return False
+    regex = ""
+    for index, token in enumerate(pattern.strip("/").split("/")):
+        if token == "**":
+            regex += "(/[^/]+)*"
+        elif token == "*":
+            regex += "/[^/]+"
+        else:
+            regex += "/" + re.escape(token) if index or token else ""
+    return re.fullmatch(regex or "/", node) is not None
+
+
+def could_match(pattern: str, node: str) -> bool:
+    """True when a node whose name has ``?`` parts might match ``pattern``."""
+    known = re.escape(node).replace(re.escape(UNKNOWN_MARK), ".+")
+    plain = pattern.replace("**", "x").replace("*", "x")
+    return pattern_matches(pattern, node.replace(UNKNOWN_MARK, "x")) or re.fullmatch(
+        known, plain) is not None
+
+
+def params_for_node(document: Any, node: str) -> list[tuple[str, Any]]:
+    """The parameters a parameter file gives the node ``node``, in file order.
+
+    Later entries override earlier ones, as rcl applies them in order.
+    """
+    found: dict[str, Any] = {}
+    for pattern, params in node_patterns(document):
+        if pattern_matches(pattern, node):
+            for name, value in flatten(params):
+                found[name] = value
+    return list(found.items())

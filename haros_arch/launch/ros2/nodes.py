@@ -1,0 +1,135 @@
+"""A ``Node`` / ``ComposableNode`` performed statically: its name, remaps and parameters.
+
+Parameters are applied in launch_ros's order (``SetParameter`` globals, then the node's
+``parameters`` list in order, then ``-p`` / ``--params-file`` from its ros arguments);
+a later value for the same name replaces an earlier one, as in the running node. A
+parameter whose value cannot be known is still declared, with value ``None``.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any
+
+from ...model.location import Location
+from ...model.values import UNKNOWN_MARK, Value
+from . import entities as e
+from . import naming
+from .runner import make_param, node_decl
+from .substitutions import Evaluator
+
+if TYPE_CHECKING:
+    from .runner import Runner, Scope
+
+COMPONENT_CONTAINER = ("rclcpp_components", "component_container")
+
+
+def _text(ev: Evaluator, t: e.Text | None, default: str = "?") -> str:
+    return default if t is None else ev.value(t).text
+
+
+def perform_node(runner: Runner, action: e.NodeAction, scope: Scope) -> None:
+    where = action.location
+    ev = runner.evaluator(scope, where)
+    given = ev.value(action.name) if action.name is not None else None
+    arguments = [ev.value(a).text for a in action.arguments]
+    ros_given = [ev.value(a).text for a in action.ros_arguments]
+    if action.split:
+        arguments = [w for a in arguments for w in a.split()]
+        ros_given = [w for a in ros_given for w in a.split()]
+    plain, ros_in_args = naming.split_arguments(arguments)
+    ros = ros_given + ros_in_args
+    parsed = naming.parse_ros_args(ros, given.literal if given is not None else None)
+    name = given.text if given is not None else (parsed.node_name or "?")
+    ns_given = ev.value(action.namespace).text if action.namespace is not None else None
+    namespace = naming.node_namespace(scope.namespace, ns_given or parsed.namespace)
+    full = naming.full_name(namespace, name)
+    remaps = [*scope.remaps, *((ev.value(a).text, ev.value(b).text) for a, b in action.remaps),
+              *parsed.remaps]
+    runner.model.nodes.append(node_decl(
+        name=full, package=_text(ev, action.package), executable=_text(ev, action.executable),
+        namespace=naming.with_slash(namespace), args=" ".join(plain), remaps=remaps,
+        conditions=scope.conditions, location=where))
+    entries: list[e.ParamEntry] = list(action.parameters)
+    entries += [e.ParamFile((path,), location=where) for path in parsed.params_files]
+    entries += [((key,), (value,)) for key, value in parsed.params]
+    node_params(runner, ev, full, entries, scope, where)
+    for component in action.composable:
+        perform_composable(runner, component, scope, full)
+
+
+def perform_composable(runner: Runner, component: e.ComposableNode, scope: Scope,
+                       container: str) -> None:
+    where = component.location
+    inner = runner.condition(component.condition, scope, where)
+    if inner is None:
+        return
+    ev = runner.evaluator(inner, where)
+    name = _text(ev, component.name)
+    ns_given = ev.value(component.namespace).text if component.namespace is not None else None
+    namespace = naming.node_namespace(inner.namespace, ns_given)
+    full = naming.full_name(namespace, name)
+    remaps = [*inner.remaps,
+              *((ev.value(a).text, ev.value(b).text) for a, b in component.remaps)]
+    runner.model.nodes.append(node_decl(
+        name=full, package=_text(ev, component.package), executable=_text(ev, component.plugin),
+        namespace=naming.with_slash(namespace), remaps=remaps, conditions=inner.conditions,
+        location=where, composable=True, container=container))
+    node_params(runner, ev, full, list(component.parameters), inner, where)
+
+
+def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamEntry],
+                scope: Scope, where: Location) -> None:
+    found: dict[str, tuple[Any, Location]] = {}
+    for key, value, location in scope.params:
+        for name, leaf in flat(key, convert(value, ev)):
+            found[name] = (leaf, location)
+    for entry in entries:
+        if isinstance(entry, e.ParamFile):
+            location = entry.location if entry.location.file else where
+            document = runner.param_file(entry, scope, location)
+            if document is None:
+                continue
+            if UNKNOWN_MARK in node:
+                runner.report("LAUNCH_PARAM_FILE", location,
+                              detail=f"parameter file applied to {node}, whose name is "
+                                     "not known: its entries are not matched")
+            for name, leaf in naming.params_for_node(document, node):
+                found[name] = (leaf, location)
+        else:
+            written, value = entry
+            for name, leaf in flat(ev.value(written).text, convert(value, ev)):
+                found[name] = (leaf, where)
+    for name, (leaf, location) in found.items():
+        runner.model.params.append(make_param(node, name, leaf, scope.conditions, location))
+
+
+def flat(key: str, value: Any) -> list[tuple[str, Any]]:
+    if isinstance(value, dict):
+        return list(naming.flatten(value, key))
+    return [(key, value)]
+
+
+def convert(value: Any, ev: Evaluator, depth: int = 0) -> Any:
+    """A parameter value as launch_ros gives it to the node (None when unknown)."""
+    if depth > naming.MAX_PARAM_DEPTH:
+        return None
+    if isinstance(value, e.ParamValue):
+        inner = convert(value.value, ev, depth + 1) if not value.as_text else None
+        if value.as_text:
+            if isinstance(value.value, tuple):
+                return ev.value(value.value).literal
+            return value.value if isinstance(value.value, str) else None
+        return inner
+    if isinstance(value, tuple):  # Text: substitutions, evaluated then read as YAML
+        known: Value = ev.value(value)
+        return None if known.literal is None else naming.yaml_value(known.literal)
+    if isinstance(value, str):
+        return naming.yaml_value(value)
+    if isinstance(value, list):
+        items = [convert(item, ev, depth + 1) for item in value]
+        return None if any(item is None for item in items) else items
+    if isinstance(value, dict):
+        return {str(k): convert(v, ev, depth + 1) for k, v in value.items()}
+    if isinstance(value, (bool, int, float)):
+        return value
+    return None

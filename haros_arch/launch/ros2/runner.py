@@ -1,0 +1,304 @@
+"""Perform a ROS 2 launch description statically, as ``LaunchService`` would.
+
+Actions run in order against a ``Scope`` (launch configurations, pushed namespace,
+global remaps and parameters, conditions). A condition whose value is known keeps or
+drops its action; an unknown one makes what the action creates conditional. Nothing is
+started: a ``Node`` becomes a ``NodeDecl`` and its parameters ``ParamDecl``s.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field, replace
+from typing import Any
+
+import yaml
+
+from ... import diagnostics as diag
+from ...files import read_text
+from ...model.conditions import Condition
+from ...model.location import Location
+from ...model.values import Unknown, Value
+from ...workspace import Workspace
+from ..model import LaunchModel, NodeDecl, ParamDecl
+from . import entities as e
+from . import naming
+from .substitutions import Evaluator
+
+MAX_INCLUDE_DEPTH = 24
+MAX_ACTIONS = 20_000
+MAX_PARAM_FILE = 1024 * 1024
+
+# path -> actions (or None when the file could not be read); set by ros2.__init__
+Parser = Callable[[str, "Runner", Location], "list[e.Action] | None"]
+
+
+@dataclass
+class Scope:
+    configs: dict[str, Value | None]
+    namespace: str | None = None
+    remaps: list[tuple[str, str]] = field(default_factory=list)
+    params: list[tuple[str, Any, Location]] = field(default_factory=list)
+    conditions: tuple[Condition, ...] = ()
+    environment: dict[str, str] = field(default_factory=dict)
+    file: str = ""
+
+    def copy(self) -> Scope:
+        return replace(self, configs=dict(self.configs), remaps=list(self.remaps),
+                       params=list(self.params), environment=dict(self.environment))
+
+
+class Runner:
+    def __init__(self, workspace: Workspace, environment: Mapping[str, str],
+                 parse: Parser) -> None:
+        self.workspace = workspace
+        self.environment = environment
+        self.parse = parse
+        self.model = LaunchModel()
+        self.stack: list[str] = []
+        self.performed = 0
+        self.anon: dict[str, Unknown] = {}
+
+    # -- diagnostics and values --------------------------------------------------
+    def report(self, code: str, location: Location, **params: object) -> None:
+        found = diag.make(code, location, **params)
+        if found not in self.model.diagnostics:
+            self.model.diagnostics.append(found)
+
+    def evaluator(self, scope: Scope, location: Location) -> Evaluator:
+        return Evaluator(self, scope, location)
+
+    def value(self, t: e.Text | None, scope: Scope, location: Location) -> Value | None:
+        if t is None:
+            return None
+        return self.evaluator(scope, location).value(t)
+
+    def condition(self, cond: e.Cond | None, scope: Scope,
+                  location: Location) -> Scope | None:
+        """None if ``cond`` is known false, else the scope for what it guards."""
+        if cond is None:
+            return scope
+        truth = self.evaluator(scope, location).truth(cond)
+        if truth is None:
+            statement = "unless" if cond.negate else "if"
+            made = Condition(cond.source or "?", "launch", statement, location)
+            return replace(scope, conditions=(*scope.conditions, made))
+        return scope if truth else None
+
+    # -- files ---------------------------------------------------------------------
+    def run_file(self, path: str, scope: Scope, where: Location) -> None:
+        path = os.path.abspath(path)
+        if path in self.stack or len(self.stack) >= MAX_INCLUDE_DEPTH:
+            self.report("LAUNCH_BAD_VALUE", where,
+                        detail=f"include cycle or depth: {self.workspace.relpath(path)}")
+            return
+        if not os.path.isfile(path):
+            self.report("LAUNCH_FILE_MISSING", where, path=self.workspace.relpath(path))
+            return
+        actions = self.parse(path, self, where)
+        if actions is None:
+            return
+        self.model.files.append(self.workspace.relpath(path))
+        self.stack.append(path)
+        outer = scope.file
+        scope.file = path
+        try:
+            self.run(actions, scope)
+        finally:
+            scope.file = outer
+            self.stack.pop()
+
+    # -- actions -------------------------------------------------------------------
+    def run(self, actions: list[e.Action], scope: Scope) -> None:
+        for action in actions:
+            self.performed += 1
+            if self.performed > MAX_ACTIONS:
+                self.report("LAUNCH_PY_BUDGET", action.location,
+                            detail=f"more than {MAX_ACTIONS} launch actions")
+                return
+            inner = self.condition(action.condition, scope, action.location)
+            if inner is None:
+                continue
+            handler = getattr(self, "do_" + type(action).__name__, None)
+            if handler is None:
+                self.report("LAUNCH_UNSUPPORTED", action.location,
+                            detail=f"{type(action).__name__} is not interpreted")
+                continue
+            if inner is scope:
+                handler(action, scope)
+                continue
+            # a conditional action: its own effects carry the condition, but the
+            # launch configurations and namespaces it sets still reach the scope
+            saved = scope.conditions
+            scope.conditions = inner.conditions
+            try:
+                handler(action, scope)
+            finally:
+                scope.conditions = saved
+
+    def do_DeclareArg(self, action: e.DeclareArg, scope: Scope) -> None:
+        if action.name in scope.configs:
+            return
+        if action.default is None:
+            scope.configs[action.name] = None
+            self.report("LAUNCH_ARG_UNSET", action.location, name=action.name)
+        else:
+            scope.configs[action.name] = self.value(action.default, scope, action.location)
+        if len(self.stack) == 1:
+            value = scope.configs[action.name]
+            self.model.args[action.name] = value.text if value is not None else None
+
+    def do_SetConfig(self, action: e.SetConfig, scope: Scope) -> None:
+        name = self.value(action.name, scope, action.location)
+        if name is None or name.literal is None:
+            return
+        scope.configs[name.literal] = self.value(action.value, scope, action.location)
+
+    def do_Group(self, action: e.Group, scope: Scope) -> None:
+        inner = scope.copy() if action.scoped else scope
+        if action.scoped and not action.forwarding:
+            inner.configs = {}
+        for key, val in action.configs:
+            name = self.value(key, scope, action.location)
+            if name is not None and name.literal is not None:
+                inner.configs[name.literal] = self.value(val, scope, action.location)
+        self.run(action.actions, inner)
+
+    def do_PushNamespace(self, action: e.PushNamespace, scope: Scope) -> None:
+        value = self.value(action.namespace, scope, action.location)
+        if value is not None:
+            scope.namespace = naming.push_namespace(scope.namespace, value.text)
+
+    def do_SetRemap(self, action: e.SetRemap, scope: Scope) -> None:
+        src = self.value(action.source, scope, action.location) or Value()
+        dst = self.value(action.target, scope, action.location) or Value()
+        scope.remaps.append((src.text, dst.text))
+
+    def do_SetParam(self, action: e.SetParam, scope: Scope) -> None:
+        name = self.value(action.name, scope, action.location)
+        if name is not None:
+            scope.params.append((name.text, action.value, action.location))
+
+    def do_SetEnv(self, action: e.SetEnv, scope: Scope) -> None:
+        name = self.value(action.name, scope, action.location)
+        if name is None or name.literal is None:
+            return
+        value = self.value(action.value, scope, action.location)
+        if value is None:
+            scope.environment.pop(name.literal, None)
+            scope.environment[name.literal + "\0unset"] = ""
+        elif value.literal is not None:
+            scope.environment[name.literal] = value.literal
+
+    def do_Include(self, action: e.Include, scope: Scope) -> None:
+        path = self.value(action.path, scope, action.location)
+        if path is None or path.literal is None:
+            self.report("LAUNCH_UNSUPPORTED", action.location,
+                        detail=f"included file {path} is not known statically")
+            return
+        for key, val in action.args:
+            name = self.value(key, scope, action.location)
+            if name is not None and name.literal is not None:
+                scope.configs[name.literal] = self.value(val, scope, action.location)
+        self.run_file(path.literal, scope, action.location)
+
+    def do_Delayed(self, action: e.Delayed, scope: Scope) -> None:
+        inner = scope.copy()
+        inner.conditions = (*scope.conditions,
+                            Condition(action.why, "launch", "timer", action.location))
+        self.run(action.actions, inner)
+
+    def do_Unsupported(self, action: e.Unsupported, scope: Scope) -> None:
+        self.report("LAUNCH_UNSUPPORTED", action.location, detail=action.what)
+
+    def do_NodeAction(self, action: e.NodeAction, scope: Scope) -> None:
+        from .nodes import perform_node
+
+        perform_node(self, action, scope)
+
+    def do_LoadComposable(self, action: e.LoadComposable, scope: Scope) -> None:
+        from .nodes import perform_composable
+
+        target = self.value(action.target, scope, action.location) or Value.unknown()
+        container = target.text if target.text.startswith("/") else "/" + target.text
+        for node in action.nodes:
+            perform_composable(self, node, scope, container)
+
+    # -- parameter files -------------------------------------------------------------
+    def param_file(self, entry: e.ParamFile, scope: Scope, where: Location) -> Any:
+        """The parsed document of a parameter file, rewritten as asked; None if unknown."""
+        path = self.value(entry.path, scope, where)
+        if path is None or path.literal is None:
+            self.report("LAUNCH_PARAM_FILE", where,
+                        detail=f"parameter file {path} is not known statically")
+            return None
+        file = path.literal
+        text, found = read_text(file, self.workspace.location(file), MAX_PARAM_FILE)
+        self.model.diagnostics.extend(found)
+        if text is None:
+            if not found:
+                self.report("LAUNCH_PARAM_FILE", where, detail=f"cannot read {file}")
+            return None
+        try:
+            document = yaml.safe_load(text)
+        except yaml.YAMLError as err:
+            mark = getattr(err, "problem_mark", None)
+            self.report("LAUNCH_YAML_SYNTAX", self.workspace.location(
+                file, mark.line + 1 if mark else 0, mark.column + 1 if mark else 0),
+                detail=str(getattr(err, "problem", err)))
+            return None
+        if file not in self.stack:
+            rel = self.workspace.relpath(file)
+            if rel not in self.model.files:
+                self.model.files.append(rel)
+        return self.rewrite(document, entry, scope, where)
+
+    def rewrite(self, document: Any, entry: e.ParamFile, scope: Scope,
+                where: Location) -> Any:
+        """nav2_common's ``RewrittenYaml``: replace keys' values, wrap in ``root_key``."""
+        if entry.rewrites and isinstance(document, dict):
+            rewrites: dict[str, Any] = {}
+            for key, val in entry.rewrites:
+                name = self.value(key, scope, where)
+                if name is None or name.literal is None:
+                    continue
+                if isinstance(val, tuple):
+                    known = self.value(val, scope, where)
+                    rewrites[name.literal] = (naming.yaml_value(known.literal)
+                                              if known is not None and known.literal
+                                              is not None else None)
+                else:
+                    rewrites[name.literal] = val
+            document = _rewrite(document, rewrites, ())
+        if entry.root_key is not None:
+            root = self.value(entry.root_key, scope, where)
+            if root is not None and root.text:
+                document = {root.text: document}
+        return document
+
+
+def _rewrite(node: Any, rewrites: dict[str, Any], path: tuple[str, ...]) -> Any:
+    if not isinstance(node, dict) or len(path) > naming.MAX_PARAM_DEPTH:
+        return node
+    out: dict[Any, Any] = {}
+    for key, value in node.items():
+        here = (*path, str(key))
+        dotted = ".".join(here)
+        if dotted in rewrites:
+            out[key] = rewrites[dotted]
+        elif str(key) in rewrites and not isinstance(value, dict):
+            out[key] = rewrites[str(key)]
+        else:
+            out[key] = _rewrite(value, rewrites, here)
+    return out
+
+
+def make_param(node: str, key: str, value: Any, conditions: tuple[Condition, ...],
+               location: Location) -> ParamDecl:
+    return ParamDecl(f"{node}/{key}", value, naming.param_type(value), conditions,
+                     location, node=node, key=key)
+
+
+def node_decl(**fields: Any) -> NodeDecl:
+    return NodeDecl(ros_version=2, **fields)

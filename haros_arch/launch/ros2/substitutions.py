@@ -1,0 +1,336 @@
+"""ROS 2 substitutions: the ``$(...)`` syntax of XML/YAML and their static values.
+
+``parse`` turns attribute text into ``Text`` (nested substitutions and quoted arguments
+as the launch frontend grammar has them). ``Evaluator`` computes a ``Text`` in a scope:
+what cannot be known (an unset argument, ``$(command)``, an environment variable not
+in the configuration) becomes an ``Unknown`` part, with a diagnostic where it matters.
+``$(eval)`` and ``PythonExpression`` go through our safe evaluator, never ``eval``.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+from typing import TYPE_CHECKING
+
+from ...files import read_text
+from ...model.location import Location
+from ...model.values import Unknown, Value
+from .. import expression
+from . import entities as e
+
+if TYPE_CHECKING:
+    from .runner import Runner, Scope
+
+MAX_FILE_CONTENT = 64 * 1024
+MAX_TEXT = 100_000
+_NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_-]*")
+
+
+class SubstitutionSyntax(Exception):
+    """Attribute text whose ``$(...)`` cannot be parsed."""
+
+
+# -- parsing -----------------------------------------------------------------------
+def parse(raw: str) -> e.Text:
+    """``"$(var ns)/scan"`` -> ``(Var(("ns",)), "/scan")``."""
+    parts, pos = _fragments(raw, 0, stop="")
+    if pos != len(raw):
+        raise SubstitutionSyntax(f"unexpected ')' at column {pos + 1}")
+    return parts
+
+
+def _fragments(raw: str, pos: int, stop: str) -> tuple[e.Text, int]:
+    """Literal text and substitutions up to a character in ``stop`` (not consumed)."""
+    out: list[str | e.Subst] = []
+    buf: list[str] = []
+    while pos < len(raw):
+        char = raw[pos]
+        if raw.startswith("$(", pos):
+            if buf:
+                out.append("".join(buf))
+                buf = []
+            subst, pos = _substitution(raw, pos + 2)
+            out.append(subst)
+            continue
+        if stop and char in stop:
+            break
+        if stop and char in "'\"":
+            if buf:
+                out.append("".join(buf))
+                buf = []
+            quoted, pos = _quoted(raw, pos + 1, char)
+            out.extend(quoted)
+            continue
+        buf.append(char)
+        pos += 1
+    if buf:
+        out.append("".join(buf))
+    return tuple(out), pos
+
+
+def _quoted(raw: str, pos: int, quote: str) -> tuple[e.Text, int]:
+    """A quoted argument: backslash escapes, nested substitutions, up to ``quote``."""
+    out: list[str | e.Subst] = []
+    buf: list[str] = []
+    while pos < len(raw):
+        char = raw[pos]
+        if char == "\\" and pos + 1 < len(raw):
+            buf.append(raw[pos + 1])
+            pos += 2
+            continue
+        if raw.startswith("$(", pos):
+            if buf:
+                out.append("".join(buf))
+                buf = []
+            subst, pos = _substitution(raw, pos + 2)
+            out.append(subst)
+            continue
+        if char == quote:
+            if buf:
+                out.append("".join(buf))
+            return tuple(out), pos + 1
+        buf.append(char)
+        pos += 1
+    raise SubstitutionSyntax(f"unclosed quote {quote}")
+
+
+def _substitution(raw: str, pos: int) -> tuple[e.Subst, int]:
+    match = _NAME.match(raw, pos)
+    if match is None:
+        raise SubstitutionSyntax(f"substitution without a name at column {pos + 1}")
+    name = match.group(0)
+    pos = match.end()
+    args: list[e.Text] = []
+    while True:
+        while pos < len(raw) and raw[pos].isspace():
+            pos += 1
+        if pos >= len(raw):
+            raise SubstitutionSyntax(f"$({name} ...) is not closed")
+        if raw[pos] == ")":
+            return make(name, args, raw), pos + 1
+        arg, pos = _fragments(raw, pos, stop=" \t\n)")
+        args.append(arg)
+
+
+def make(name: str, args: list[e.Text], raw: str) -> e.Subst:
+    """The substitution object for ``$(name args...)``."""
+    def arity(low: int, high: int) -> None:
+        if not low <= len(args) <= high:
+            raise SubstitutionSyntax(f"$({name}) takes {low}..{high} arguments, "
+                                     f"got {len(args)}")
+
+    if name in ("var", "env", "optenv"):
+        arity(1, 2)
+        default = args[1] if len(args) > 1 else (("",) if name == "optenv" else None)
+        cls = e.Var if name == "var" else e.Env
+        return cls(args[0], default)
+    if name in ("find-pkg-share", "find-pkg-prefix", "find"):
+        arity(1, 1)
+        return e.FindPackage(args[0], share=name != "find-pkg-prefix")
+    if name in ("find-exec", "exec-in-pkg"):
+        arity(1, 2)
+        return e.FindExec(e.text(*args))
+    if name == "eval":
+        arity(1, 64)
+        joined: list[str | e.Subst] = []
+        for index, arg in enumerate(args):
+            joined.extend(((" ",) if index else ()) + arg)
+        return e.Eval(tuple(joined))
+    if name == "anon":
+        arity(1, 1)
+        return e.Anon(args[0])
+    if name in ("dirname", "filename"):
+        arity(0, 0)
+        return e.ThisFile(directory=name == "dirname")
+    if name in ("not", "and", "or", "equals", "if"):
+        arity(*{"not": (1, 1), "and": (2, 2), "or": (2, 2), "equals": (2, 2),
+                "if": (2, 3)}[name])
+        return e.Logic(name, tuple(args))
+    if name == "command":
+        return e.Opaque(f"$(command) is never run; its output is unknown: {raw}")
+    if name == "file-content":
+        arity(1, 1)
+        return e.FileContent(args[0])
+    raise SubstitutionSyntax(f"unknown substitution $({name})")
+
+
+# -- evaluation ----------------------------------------------------------------------
+class Evaluator:
+    def __init__(self, runner: Runner, scope: Scope, location: Location) -> None:
+        self.runner = runner
+        self.scope = scope
+        self.location = location
+
+    def report(self, code: str, **params: object) -> None:
+        self.runner.report(code, self.location, **params)
+
+    def value(self, t: e.Text) -> Value:
+        parts: list[str | Value] = []
+        for part in t:
+            parts.append(part if isinstance(part, str) else self.one(part))
+        result = Value.of(*parts)
+        if len(result.text) > MAX_TEXT:
+            self.report("LAUNCH_PY_BUDGET", detail=f"a value longer than {MAX_TEXT}")
+            return Value.unknown("too long")
+        return result
+
+    def known(self, t: e.Text) -> str | None:
+        return self.value(t).literal
+
+    def one(self, subst: e.Subst) -> Value:
+        handler = getattr(self, "s_" + type(subst).__name__, None)
+        if handler is None:
+            return Value.unknown(type(subst).__name__)
+        result = handler(subst)
+        assert isinstance(result, Value)
+        return result
+
+    def s_Var(self, s: e.Var) -> Value:
+        name = self.known(s.name)
+        if name is None:
+            return Value.unknown("launch configuration with an unknown name")
+        if name in self.scope.configs:
+            found = self.scope.configs[name]
+            if found is None:
+                self.report("LAUNCH_ARG_UNSET", name=name)
+                return Value.unknown(f"var {name}")
+            return found
+        if s.default is not None:
+            return self.value(s.default)
+        self.report("LAUNCH_ARG_UNSET", name=name)
+        return Value.unknown(f"var {name}")
+
+    def s_Env(self, s: e.Env) -> Value:
+        name = self.known(s.name)
+        if name is None:
+            return Value.unknown("environment variable with an unknown name")
+        if name in self.scope.environment:
+            return Value.of(self.scope.environment[name])
+        if name in self.runner.environment and name + "\0unset" not in self.scope.environment:
+            return Value.of(self.runner.environment[name])
+        if s.default is not None:
+            return self.value(s.default)
+        return Value.unknown(f"env {name}")
+
+    def s_FindPackage(self, s: e.FindPackage) -> Value:
+        name = self.known(s.package)
+        if name is None:
+            return Value.unknown("package with an unknown name")
+        found = self.runner.workspace.find(name)
+        if found is None:
+            self.report("PACKAGE_NOT_FOUND", name=name)
+            return Value.unknown(f"find {name}")
+        if s.share:
+            return Value.of(found)
+        return Value.of(Unknown(f"install prefix of {name}"))
+
+    def s_FindExec(self, s: e.FindExec) -> Value:
+        return Value.unknown("path of an executable")
+
+    def s_Eval(self, s: e.Eval) -> Value:
+        source = self.value(s.expression)
+        if source.literal is None:
+            return Value.unknown("expression with unknown parts")
+        result = expression.evaluate(source.literal, None, {**expression.BUILTINS,
+                                                            **expression.MATH})
+        if isinstance(result, expression.Unknown):
+            if result.kind != "unknown":
+                self.report("LAUNCH_UNSUPPORTED",
+                            detail=f"expression {source.literal!r}: {result.reason}")
+            return Value.unknown(result.reason)
+        return Value.of(str(result))
+
+    def s_Anon(self, s: e.Anon) -> Value:
+        name = self.value(s.name).text
+        return Value.of(name + "_", self.runner.anon.setdefault(name, Unknown("anon")))
+
+    def s_ThisFile(self, s: e.ThisFile) -> Value:
+        path = self.scope.file
+        return Value.of(os.path.dirname(path) if s.directory else path)
+
+    def truth_of(self, value: Value, what: str) -> bool | None:
+        literal = value.literal
+        if literal is None:
+            return None
+        lowered = literal.strip().lower()
+        if lowered in ("true", "1"):
+            return True
+        if lowered in ("false", "0"):
+            return False
+        self.report("LAUNCH_BAD_VALUE", detail=f"{what} \"{literal}\" is not a boolean")
+        return None
+
+    def s_Logic(self, s: e.Logic) -> Value:
+        if s.op == "equals":
+            left, right = (self.value(op) for op in s.operands)
+            if left.literal is None or right.literal is None:
+                return Value.unknown("equals with unknown operands")
+            return Value.of(str(_normal(left.literal) == _normal(right.literal)).lower())
+        if s.op == "if":
+            test = self.truth_of(self.value(s.operands[0]), "$(if)")
+            if test is None:
+                return Value.unknown("$(if) with an unknown condition")
+            if test:
+                return self.value(s.operands[1])
+            return self.value(s.operands[2]) if len(s.operands) > 2 else Value()
+        truths = [self.truth_of(self.value(op), f"$({s.op})") for op in s.operands]
+        result: bool | None
+        if s.op == "not":
+            result = None if truths[0] is None else not truths[0]
+        elif s.op == "and":
+            result = False if False in truths else (None if None in truths else True)
+        else:
+            result = True if True in truths else (None if None in truths else False)
+        return Value.unknown(f"$({s.op})") if result is None else Value.of(str(result).lower())
+
+    def s_PathJoin(self, s: e.PathJoin) -> Value:
+        parts: list[str | Value] = []
+        for index, piece in enumerate(s.parts):
+            value = self.value(piece)
+            if value.literal is not None and value.literal.startswith("/"):
+                parts = []
+            elif index and parts:
+                parts.append("/")
+            parts.append(value)
+        return Value.of(*parts)
+
+    def s_FileContent(self, s: e.FileContent) -> Value:
+        path = self.value(s.path).literal
+        if path is None:
+            return Value.unknown("file-content of an unknown path")
+        full = os.path.realpath(path)
+        roots = [os.path.realpath(r) for r in self.runner.workspace.roots or
+                 [self.runner.workspace.root]]
+        if not any(full == r or full.startswith(r + os.sep) for r in roots):
+            self.report("LAUNCH_UNSUPPORTED",
+                        detail=f"$(file-content) of {path} outside the workspace is not read")
+            return Value.unknown("file outside the workspace")
+        content, found = read_text(full, self.runner.workspace.location(full),
+                                   MAX_FILE_CONTENT)
+        self.runner.model.diagnostics.extend(found)
+        return Value.unknown("unreadable file") if content is None else Value.of(content)
+
+    def s_Opaque(self, s: e.Opaque) -> Value:
+        self.report("LAUNCH_UNSUPPORTED", detail=s.origin)
+        return Value.unknown(s.origin)
+
+    # -- conditions ------------------------------------------------------------------
+    def truth(self, cond: e.Cond) -> bool | None:
+        value = self.value(cond.expression)
+        if cond.equals is not None:
+            expected = self.value(cond.equals)
+            if value.literal is None or expected.literal is None:
+                return None
+            result: bool | None = value.literal == expected.literal
+        else:
+            result = self.truth_of(value, "condition")
+        if result is None:
+            return None
+        return (not result) if cond.negate else result
+
+
+def _normal(text: str) -> str:
+    """``$(equals)`` compares booleans case-insensitively, like launch does."""
+    lowered = text.strip().lower()
+    return lowered if lowered in ("true", "false") else text
