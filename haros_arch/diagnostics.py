@@ -69,6 +69,32 @@ CATALOGUE: dict[str, Entry] = {
     "CMAKE_SOURCE_MISSING": Entry(
         "warning", "source file {path} of target {target} does not exist",
         "A build target names a source file that is not in the package."),
+    "CMAKE_LIMIT": Entry(
+        "warning", "CMake evaluation bounded: {detail}",
+        "The CMake interpreter bounds its work (commands evaluated, loop iterations, "
+        "nesting of calls, includes and subdirectories) so a hostile or runaway build "
+        "file cannot hang the analysis; targets declared past the bound are not seen."),
+    "PYSETUP_SYNTAX": Entry(
+        "error", "setup file cannot be parsed: {detail}",
+        "setup.py or setup.cfg is read statically (never run); this one is not valid "
+        "Python / INI, so its entry points are unknown."),
+    "PYSETUP_DYNAMIC": Entry(
+        "info", "{detail} in setup.py is computed in a way not evaluated statically",
+        "Only literals, module-level names bound to literals, '+', '%', f-strings and "
+        "str.format are evaluated; an entry point built otherwise is not found."),
+    "PYSETUP_MODULE_MISSING": Entry(
+        "warning", "module {module} of entry point {name} not found in the package",
+        "A console_scripts entry point names a module with no .py file (or package "
+        "__init__.py) in the package; the node is kept without sources."),
+    "PLUGIN_XML_SYNTAX": Entry(
+        "error", "plugin description is not well-formed XML: {detail}",
+        "A plugin description file exported in package.xml could not be parsed; its "
+        "nodelets are unknown."),
+    "PLUGIN_LIBRARY_UNKNOWN": Entry(
+        "warning", "no target of the package builds library {library} of plugin {plugin}",
+        "The plugin description names a library that no add_library of the package "
+        "builds and no PLUGINLIB_EXPORT_CLASS in a library names the class; the nodelet "
+        "is kept without sources."),
     # launch files
     "LAUNCH_FILE_MISSING": Entry(
         "error", "launch file {path} does not exist",
@@ -96,6 +122,31 @@ CATALOGUE: dict[str, Entry] = {
         "warning", "{detail}",
         "A launch construct that the static interpreter does not evaluate; what it "
         "would produce is unknown."),
+    "LAUNCH_IF_AND_UNLESS": Entry(
+        "error", "<{tag}> has both if= and unless=",
+        "roslaunch refuses an element with both attributes; the element is skipped."),
+    "LAUNCH_INCLUDE_CYCLE": Entry(
+        "error", "include cycle: {path} is already being included",
+        "A launch file includes itself, directly or through other files; roslaunch would "
+        "recurse until it fails. The repeated include is skipped."),
+    "LAUNCH_NODE_DUPLICATE": Entry(
+        "error", "launch starts two nodes named {name} (also at {other})",
+        "roslaunch refuses a launch whose node names collide."),
+    "LAUNCH_ARG_UNDEFINED": Entry(
+        "error", "argument {name} is not defined here",
+        "$(arg) names an argument that is neither declared in this scope nor passed; "
+        "roslaunch refuses the file. The value is kept unknown."),
+    "LAUNCH_ARG_REQUIRED": Entry(
+        "error", "{path} requires argument {name}, which the include does not pass",
+        "An included file uses an argument it declares without a value, and the <include> "
+        "gives none; roslaunch refuses this. The value is kept unknown."),
+    "LAUNCH_UNKNOWN_VALUE": Entry(
+        "info", "{detail}; what depends on it keeps '?'",
+        "A substitution's value cannot be known statically (an unset environment "
+        "variable, a package that is not found, a command that is never run)."),
+    "LAUNCH_YAML": Entry(
+        "error", "{detail}",
+        "The YAML of a <rosparam> or a type=\"yaml\" parameter cannot be used."),
     # ROS 2 launch files
     "LAUNCH_YAML_SYNTAX": Entry(
         "error", "YAML file cannot be read: {detail}",

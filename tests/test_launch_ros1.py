@@ -123,9 +123,10 @@ def test_bad_input_becomes_diagnostics(write_tree):
     assert found == [
         ("LAUNCH_UNKNOWN_TAG", 2), ("LAUNCH_UNKNOWN_ATTRIBUTE", 3),
         ("LAUNCH_MISSING_ATTRIBUTE", 4), ("LAUNCH_MISSING_ATTRIBUTE", 5),
-        ("LAUNCH_BAD_VALUE", 6), ("LAUNCH_FILE_MISSING", 7), ("LAUNCH_BAD_VALUE", 8),
-        ("LAUNCH_BAD_VALUE", 9), ("LAUNCH_UNSUPPORTED", 10)]
-    assert [n.name for n in model.nodes] == ["/x", "/z", "/e"]
+        ("LAUNCH_BAD_VALUE", 6), ("LAUNCH_FILE_MISSING", 7), ("LAUNCH_INCLUDE_CYCLE", 8),
+        ("LAUNCH_ARG_UNDEFINED", 9)]
+    assert [(n.name, n.executable) for n in model.nodes] == [
+        ("/x", "d"), ("/z", "?"), ("/e", "2")]
     assert all(d.location.file == "pkg/launch/main.launch" for d in model.diagnostics)
 
 

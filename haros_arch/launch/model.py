@@ -27,6 +27,15 @@ class NodeDecl:
     conditions: tuple[Condition, ...] = ()
     location: Location = NOWHERE
     anonymous: bool = False
+    machine: str | None = None
+    respawn: bool = False
+    required: bool = False
+    respawn_delay: float = 0.0
+    output: str | None = None
+    cwd: str | None = None
+    launch_prefix: str | None = None
+    env: list[tuple[str, str]] = field(default_factory=list)
+    is_test: bool = False
     ros_version: int = 1  # 2: ROS 2 naming rules apply (launch.ros2)
     composable: bool = False  # ROS 2: a component loaded into a container
     container: str | None = None  # ROS 2: full name of the container it is loaded into
@@ -52,3 +61,6 @@ class LaunchModel:
     params: list[ParamDecl] = field(default_factory=list)
     args: dict[str, str | None] = field(default_factory=dict)  # top-level arguments
     diagnostics: list[Diagnostic] = field(default_factory=list)
+    clear_params: list[str] = field(default_factory=list)  # namespaces cleared first
+    deleted_params: list[str] = field(default_factory=list)  # <rosparam command="delete">
+    machines: dict[str, str] = field(default_factory=dict)  # name -> address

@@ -1,39 +1,42 @@
 """The ROS 1 launch interpreter: roslaunch XML evaluated statically.
 
-Tags are dispatched through a registry (``TAGS``) to one handler each; a tag that is
-not in it is reported, as roslaunch warns about it. A scope carries the namespace,
-the remappings and the launch conditions that apply to what it contains.
+Tags are dispatched through a registry (``tags``) to one handler each; a tag that is
+not in it is reported, as roslaunch warns about it. A ``Scope`` mirrors roslaunch's
+``LoaderContext``: namespace, arguments, remappings, private parameters, environment
+and the launch conditions that apply to what it contains. The rules (which scope sees
+which argument, how ``~params`` reach nodes, how remaps override) follow roslaunch's
+loader; where roslaunch refuses a file we report an error and go on.
 """
 
 from __future__ import annotations
 
 import os
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass, field, replace
 
 from lxml import etree
 
 from ... import diagnostics as diag
 from ...files import read_bytes
 from ...manifest import xml_parser
-from ...model.conditions import Condition
 from ...model.location import Location
-from ...model.rosname import as_namespace, resolve
 from ...model.values import Value
 from ...workspace import Workspace
-from ..model import LaunchModel, NodeDecl, ParamDecl
-from .substitution import Context, SubstitutionError, substitute
+from ..model import LaunchModel, NodeDecl
+from . import tags_params
+from .scope import Scope, canonical, global_ns, is_legal_name
+from .substitution import ArgUndefined, Context, SubstitutionError, substitute
 
 Element = etree._Element
 MAX_INCLUDE_DEPTH = 32
+MAX_INCLUDES = 2_000
 
 COMMON = ("if", "unless")
+NODE_ATTRS = ("pkg", "type", "machine", "name", "args", "output", "respawn",
+              "respawn_delay", "cwd", "ns", "clear_params", "launch-prefix", "required")
 ATTRIBUTES: dict[str, tuple[str, ...]] = {
     "launch": ("deprecated",),
-    "node": ("name", "pkg", "type", "args", "ns", "machine", "respawn", "respawn_delay",
-             "required", "clear_params", "output", "cwd", "launch-prefix"),
-    "test": ("name", "pkg", "type", "args", "ns", "test-name", "clear_params", "cwd",
-             "launch-prefix", "retry", "time-limit"),
+    "node": NODE_ATTRS,
+    "test": (*NODE_ATTRS, "test-name", "time-limit", "retry"),
     "param": ("name", "value", "type", "textfile", "binfile", "command"),
     "remap": ("from", "to"),
     "arg": ("name", "value", "default", "doc"),
@@ -43,33 +46,13 @@ ATTRIBUTES: dict[str, tuple[str, ...]] = {
     "machine": ("name", "address", "env-loader", "default", "user", "password",
                 "timeout", "ssh-port"),
     "rosparam": ("command", "file", "param", "ns", "subst_value"),
+    "master": ("auto",),
 }
 REQUIRED: dict[str, tuple[str, ...]] = {
-    "node": ("pkg", "type"), "test": ("pkg", "type", "test-name"), "param": ("name",),
-    "remap": ("from", "to"), "arg": ("name",), "include": ("file",),
+    "node": ("pkg", "type", "name"), "test": ("pkg", "type", "test-name"),
+    "param": ("name",), "remap": ("from", "to"), "arg": ("name",), "include": ("file",),
     "env": ("name", "value"), "machine": ("name", "address"),
 }
-
-
-@dataclass
-class Scope:
-    """What the enclosing elements give to the ones inside them."""
-
-    namespace: str = "/"
-    remaps: tuple[tuple[str, str], ...] = ()
-    conditions: tuple[Condition, ...] = ()
-    node: str | None = None  # inside <node>: its full name (for private params)
-
-
-@dataclass
-class FileState:
-    """Per launch file: its path, arguments and substitution context."""
-
-    path: str
-    ctx: Context
-    args: dict[str, Value | None] = field(default_factory=dict)
-    given: Mapping[str, Value | None] = field(default_factory=dict)
-    stack: tuple[str, ...] = ()
 
 
 class Ros1Loader:
@@ -77,294 +60,419 @@ class Ros1Loader:
         self.workspace = workspace
         self.environment = environment
         self.model = LaunchModel()
-        self.tags: dict[str, Callable[[Element, Scope, FileState], None]] = {
+        self.default_machine: str | None = None
+        self.node_names: dict[str, Location] = {}
+        self.includes = 0
+        self.tags: dict[str, Callable[[Element, Scope], None]] = {
             "node": self.tag_node, "test": self.tag_node, "param": self.tag_param,
-            "remap": self.tag_remap_outside, "arg": self.tag_arg, "group": self.tag_group,
-            "include": self.tag_include, "env": self.tag_ignored,
-            "machine": self.tag_ignored, "rosparam": self.tag_rosparam,
+            "remap": self.tag_remap, "arg": self.tag_arg, "group": self.tag_group,
+            "include": self.tag_include, "env": self.tag_env,
+            "machine": self.tag_machine, "rosparam": self.tag_rosparam,
+            "master": lambda element, scope: None,
         }
 
     # -- diagnostics and values ----------------------------------------------
-    def where(self, state: FileState, element: Element | None = None) -> Location:
+    def where(self, scope: Scope | str, element: Element | None = None) -> Location:
         line = element.sourceline if element is not None else None
-        return self.workspace.location(state.path, line if isinstance(line, int) else 0)
+        path = scope if isinstance(scope, str) else scope.path
+        return self.workspace.location(path, line if isinstance(line, int) else 0)
 
-    def report(self, code: str, state: FileState, element: Element | None,
+    def report(self, code: str, scope: Scope | str, element: Element | None,
                **params: object) -> None:
-        self.model.diagnostics.append(diag.make(code, self.where(state, element), **params))
+        self.model.diagnostics.append(diag.make(code, self.where(scope, element), **params))
 
-    def value(self, element: Element, attribute: str, state: FileState) -> Value | None:
-        raw = element.get(attribute)
-        if raw is None:
-            return None
-        ctx = state.ctx
-        ctx.unset.clear()
-        ctx.unsupported.clear()
+    def fail(self, scope: Scope, element: Element, detail: str) -> None:
+        """Something roslaunch refuses: an error, and the element is skipped."""
+        self.report("LAUNCH_BAD_VALUE", scope, element, detail=detail)
+
+    def resolve(self, raw: str, scope: Scope, element: Element) -> Value:
+        """Substitute ``raw`` in ``scope``; problems become diagnostics, never raise."""
+        ctx = Context(scope.args, self.environment, self.workspace.find, scope.filename,
+                      scope.anon, lambda name: name in scope.arg_names)
         try:
             result = substitute(raw, ctx)
+        except ArgUndefined as err:
+            if err.name in scope.arg_names or scope.in_include:
+                self.report("LAUNCH_ARG_REQUIRED", scope, element,
+                            path=self.workspace.relpath(scope.path), name=err.name)
+            else:
+                self.report("LAUNCH_ARG_UNDEFINED", scope, element, name=err.name)
+            return Value.unknown(f"arg {err.name}")
         except SubstitutionError as err:
-            self.report("LAUNCH_BAD_VALUE", state, element,
-                        detail=f"{attribute}=\"{raw}\": {err}")
+            self.fail(scope, element, f"\"{raw}\": {err}")
             return Value.unknown(raw)
         for name in dict.fromkeys(ctx.unset):
-            self.report("LAUNCH_ARG_UNSET", state, element, name=name)
-        for text in ctx.unsupported:
-            self.report("LAUNCH_UNSUPPORTED", state, element,
-                        detail=f"{text} is not evaluated; its value is unknown")
+            if scope.in_include:
+                self.report("LAUNCH_ARG_REQUIRED", scope, element,
+                            path=self.workspace.relpath(scope.path), name=name)
+            else:
+                self.report("LAUNCH_ARG_UNSET", scope, element, name=name)
+        for detail in dict.fromkeys(ctx.unknown):
+            self.report("LAUNCH_UNKNOWN_VALUE", scope, element, detail=detail)
         return result
 
-    def text(self, element: Element, attribute: str, state: FileState,
-             default: str | None = None) -> str | None:
-        value = self.value(element, attribute, state)
-        return default if value is None else value.text
+    def value(self, element: Element, attribute: str, scope: Scope) -> Value | None:
+        raw = element.get(attribute)
+        return None if raw is None else self.resolve(raw, scope, element)
 
-    def check(self, element: Element, state: FileState) -> bool:
+    def text(self, element: Element, attribute: str, scope: Scope) -> str | None:
+        value = self.value(element, attribute, scope)
+        return None if value is None else value.text
+
+    def flag(self, element: Element, attribute: str, scope: Scope, default: bool
+             ) -> bool | None:
+        """roslaunch's boolean attribute: true/false in any case; None if not a bool."""
+        value = self.value(element, attribute, scope)
+        if value is None:
+            return default
+        if value.literal is None:
+            return None
+        if value.literal.lower() in ("true", "false"):
+            return value.literal.lower() == "true"
+        self.fail(scope, element, f"invalid bool value for {attribute}: {value.literal!r}")
+        return None
+
+    def check(self, element: Element, scope: Scope) -> bool:
         """Report unknown and missing attributes; False if the element must be skipped."""
         tag = str(element.tag)
         allowed = ATTRIBUTES.get(tag, ())
         for attribute in element.attrib:
             if attribute not in allowed and attribute not in COMMON:
-                self.report("LAUNCH_UNKNOWN_ATTRIBUTE", state, element,
+                self.report("LAUNCH_UNKNOWN_ATTRIBUTE", scope, element,
                             attribute=attribute, tag=tag)
         for attribute in REQUIRED.get(tag, ()):
             if element.get(attribute) is None:
-                self.report("LAUNCH_MISSING_ATTRIBUTE", state, element,
+                self.report("LAUNCH_MISSING_ATTRIBUTE", scope, element,
                             tag=tag, attribute=attribute)
                 return False
         return True
 
-    def condition(self, element: Element, scope: Scope, state: FileState) -> Scope | None:
+    def condition(self, element: Element, scope: Scope) -> Scope | None:
         """Apply if/unless: None drops the element, else the scope to use inside it."""
+        if element.get("if") is not None and element.get("unless") is not None:
+            self.report("LAUNCH_IF_AND_UNLESS", scope, element, tag=element.tag)
+            return None
         for attribute in COMMON:
-            if element.get(attribute) is None:
+            value = self.value(element, attribute, scope)
+            if value is None:
                 continue
-            value = self.value(element, attribute, state)
-            assert value is not None
-            literal = value.literal
-            if literal is None:
-                where = self.where(state, element)
-                cond = Condition(element.get(attribute, ""), "launch", attribute, where)
-                scope = replace(scope, conditions=(*scope.conditions, cond))
-                continue
-            truth = literal.strip().lower()
+            if value.literal is None:
+                return scope.conditional(element.get(attribute, ""), attribute,
+                                         self.where(scope, element))
+            truth = value.literal.strip().lower()
             if truth not in ("true", "1", "false", "0"):
-                self.report("LAUNCH_BAD_VALUE", state, element,
-                            detail=f"{attribute}=\"{literal}\" is not a boolean")
+                self.fail(scope, element, f"{attribute}=\"{value.literal}\" is not a boolean")
                 return None
             if (truth in ("true", "1")) != (attribute == "if"):
                 return None
         return scope
 
     # -- traversal ------------------------------------------------------------
-    def load_file(self, path: str, scope: Scope, given: Mapping[str, Value | None],
-                  stack: tuple[str, ...], element: Element | None = None,
-                  parent: FileState | None = None) -> None:
-        path = os.path.abspath(path)
-        if path in stack or len(stack) > MAX_INCLUDE_DEPTH:
-            assert parent is not None
-            self.report("LAUNCH_BAD_VALUE", parent, element,
-                        detail=f"include cycle: {self.workspace.relpath(path)} includes itself")
-            return
+    def parse(self, path: str, location: Location) -> Element | None:
         if not os.path.isfile(path):
-            location = self.where(parent, element) if parent else self.workspace.location(path)
             self.model.diagnostics.append(diag.make(
                 "LAUNCH_FILE_MISSING", location, path=self.workspace.relpath(path)))
-            return
+            return None
         data, found = read_bytes(path, self.workspace.location(path))
         self.model.diagnostics.extend(found)
         if data is None:
-            return
+            return None
         try:
             root = etree.fromstring(data, xml_parser())
         except etree.XMLSyntaxError as err:
             line, col = err.position if err.position else (0, 0)
             self.model.diagnostics.append(diag.make(
                 "LAUNCH_XML_SYNTAX", self.workspace.location(path, line, col), detail=err.msg))
-            return
-        self.model.files.append(self.workspace.relpath(path))
-        ctx = Context({}, self.environment, self.workspace.find, path)
-        state = FileState(path, ctx, given=given, stack=(*stack, path))
-        ctx.args = state.args
+            return None
+        if any(isinstance(e, etree._Entity) for e in root.iter()):
+            self.model.diagnostics.append(diag.make(
+                "LAUNCH_XML_SYNTAX", self.workspace.location(path), detail=(
+                    "entity references are not expanded (roslaunch's parser would); "
+                    "text that uses them is incomplete")))
         if root.tag != "launch":
-            self.report("LAUNCH_BAD_VALUE", state, root,
-                        detail=f"root element is <{root.tag}>, not <launch>")
-            return
-        self.check(root, state)
-        self.children(root, scope, state)
-        if not stack:
-            self.model.args = {k: (v.text if v is not None else None)
-                               for k, v in state.args.items()}
+            self.model.diagnostics.append(diag.make(
+                "LAUNCH_XML_SYNTAX", self.where(path, root),
+                detail=f"root element is <{root.tag}>, not <launch>"))
+            return None
+        self.model.files.append(self.workspace.relpath(path))
+        if root.get("deprecated"):
+            self.model.diagnostics.append(diag.make(
+                "LAUNCH_UNSUPPORTED", self.where(path, root),
+                detail=f"deprecated launch file: {root.get('deprecated')}"))
+        return root
 
-    def children(self, element: Element, scope: Scope, state: FileState) -> None:
+    def children(self, element: Element, scope: Scope) -> None:
         for child in element:
             if not isinstance(child.tag, str):
                 continue
             handler = self.tags.get(child.tag)
             if handler is None:
-                self.report("LAUNCH_UNKNOWN_TAG", state, child, tag=child.tag)
+                self.report("LAUNCH_UNKNOWN_TAG", scope, child, tag=child.tag)
                 continue
-            if not self.check(child, state):
-                continue
-            inner = self.condition(child, scope, state)
-            if inner is not None:
-                handler(child, inner, state)
+            inner = self.condition(child, scope)
+            if inner is not None and self.check(child, inner):
+                handler(child, inner)
 
     # -- tags -----------------------------------------------------------------
-    def tag_ignored(self, element: Element, scope: Scope, state: FileState) -> None:
-        """Tags that do not change the Computation Graph (env, machine)."""
+    def tag_param(self, element: Element, scope: Scope, local: bool = False) -> None:
+        tags_params.tag_param(self, element, scope, local)
 
-    def tag_arg(self, element: Element, scope: Scope, state: FileState) -> None:
-        name = element.get("name", "")
-        if "value" in element.attrib and "default" in element.attrib:
-            self.report("LAUNCH_BAD_VALUE", state, element,
-                        detail=f"arg {name} has both value= and default=")
-        if "value" in element.attrib:
-            state.args[name] = self.value(element, "value", state)
-        elif name in state.given:
-            state.args[name] = state.given[name]
-        elif "default" in element.attrib:
-            state.args[name] = self.value(element, "default", state)
-        else:
-            state.args[name] = None
+    def tag_rosparam(self, element: Element, scope: Scope) -> None:
+        tags_params.tag_rosparam(self, element, scope)
 
-    def tag_group(self, element: Element, scope: Scope, state: FileState) -> None:
-        ns = self.text(element, "ns", state)
-        scope = replace(scope)  # remaps inside the group stay inside it
-        if ns:
-            scope.namespace = as_namespace(resolve(ns, scope.namespace))
-        self.children(element, scope, state)
-
-    def tag_remap_outside(self, element: Element, scope: Scope, state: FileState) -> None:
-        """A <remap> outside <node> applies to the nodes after it in the same scope."""
-        pair = (self.text(element, "from", state) or "", self.text(element, "to", state) or "")
-        scope.remaps = (*scope.remaps, pair)
-
-    def tag_node(self, element: Element, scope: Scope, state: FileState) -> None:
-        ns = self.text(element, "ns", state)
-        namespace = scope.namespace
-        if ns:
-            namespace = as_namespace(resolve(ns, namespace))
-        package = self.text(element, "pkg", state) or "?"
-        executable = self.text(element, "type", state) or "?"
-        given = self.text(element, "name", state)
-        if given is None:
-            if element.tag == "node":
-                self.report("LAUNCH_MISSING_ATTRIBUTE", state, element, tag="node",
-                            attribute="name")
+    def tag_arg(self, element: Element, scope: Scope) -> None:
+        name = self.text(element, "name", scope) or ""
+        value = self.value(element, "value", scope)
+        default = self.value(element, "default", scope)
+        self.value(element, "doc", scope)
+        if value is not None and default is not None:
+            self.fail(scope, element, "<arg> tag must have one and only one of value/default")
+            return
+        if name in scope.arg_names and not scope.pass_all_args:
+            self.fail(scope, element, f"arg '{name}' has already been declared")
+            return
+        if name not in scope.arg_names:
+            scope.arg_names.append(name)
+        target = scope.args if scope.include_args is None else scope.include_args
+        if value is not None:
+            if name in target and not scope.pass_all_args:
+                self.fail(scope, element,
+                          f"cannot override arg '{name}', which has already been set")
                 return
-            given = self.text(element, "test-name", state) or executable
-        name = resolve(given, namespace)
-        decl = NodeDecl(name, package, executable, namespace,
-                        self.text(element, "args", state, "") or "",
-                        list(scope.remaps), scope.conditions, self.where(state, element))
-        inner = Scope(namespace, (), scope.conditions, name)
+            target[name] = value
+        elif default is not None and name not in target:
+            target[name] = default
+
+    def tag_group(self, element: Element, scope: Scope) -> None:
+        inner = self.ns_clear_params(element, scope)
+        if inner is not None:
+            inner.private = list(inner.private)
+            self.children(element, inner)
+
+    def ns_clear_params(self, element: Element, scope: Scope, node_name: str | None = None,
+                        include: str | None = None) -> Scope | None:
+        ns = None
+        if element.get("ns") is not None:
+            ns = self.text(element, "ns", scope)
+            if not ns:
+                self.fail(scope, element, f"<{element.tag}> tag has an empty 'ns' attribute")
+                return None
+        inner = scope.include_child(ns, include) if include is not None else scope.child(ns)
+        clear = self.flag(element, "clear_params", scope, False)
+        if clear:
+            if element.tag in ("node", "test"):
+                self.model.clear_params.append(global_ns(inner.ns + (node_name or "")))
+            elif not ns:
+                self.fail(scope, element, "'ns' attribute must be set in order to use "
+                                          "'clear_params'")
+                return None
+            else:
+                self.model.clear_params.append(inner.ns)
+        return inner
+
+    def tag_remap(self, element: Element, scope: Scope) -> None:
+        """A <remap> outside <node> applies to the nodes after it in the same scope."""
+        pair = self.remap_pair(element, scope)
+        if pair is not None:
+            scope.add_remap(pair)
+
+    def remap_pair(self, element: Element, scope: Scope) -> tuple[str, str] | None:
+        source = canonical(self.text(element, "from", scope) or "")
+        target = canonical(self.text(element, "to", scope) or "")
+        for label, name in (("from", source), ("to", target)):
+            if not name:
+                self.fail(scope, element, "remap from/to attributes cannot be empty")
+                return None
+            if not is_legal_name(name):
+                self.fail(scope, element, f"remap {label} [{name}] is not a valid ROS name")
+                return None
+        return source, target
+
+    def tag_env(self, element: Element, scope: Scope) -> None:
+        name = self.text(element, "name", scope) or ""
+        if not name:
+            self.fail(scope, element, "<env>: 'name' attribute must be non-empty")
+            return
+        scope.env.append((name, self.text(element, "value", scope) or ""))
+
+    def tag_machine(self, element: Element, scope: Scope) -> None:
+        name = self.text(element, "name", scope) or ""
+        address = self.text(element, "address", scope) or ""
+        for attribute in ("env-loader", "user", "password", "timeout", "ssh-port"):
+            self.value(element, attribute, scope)
+        default = (self.text(element, "default", scope) or "false").lower()
+        if default not in ("true", "false", "never"):
+            self.fail(scope, element, f"invalid value for 'default': {default}")
+            return
+        self.model.machines[name] = address
+        if default == "true":
+            self.default_machine = name
+
+    def tag_node(self, element: Element, scope: Scope) -> None:
+        is_test = element.tag == "test"
+        if is_test:
+            for attribute in ("respawn", "respawn_delay", "output"):
+                if element.get(attribute) is not None:
+                    self.fail(scope, element, f"<test> tags cannot have '{attribute}'")
+                    return
+            test_name = self.text(element, "test-name", scope) or ""
+            name = self.text(element, "name", scope) or test_name
+        else:
+            name = self.text(element, "name", scope) or ""
+        if "/" in name:
+            self.fail(scope, element, f"node name {name!r} cannot contain a namespace")
+            return
+        inner = self.ns_clear_params(element, scope, node_name=name)
+        if inner is None:
+            return
+        private = inner.child(name)
+        private.private = []
+        package = self.text(element, "pkg", scope) or ""
+        executable = self.text(element, "type", scope) or ""
+        machine = self.text(element, "machine", scope) or self.default_machine
+        args = self.text(element, "args", scope) or ""
+        output = self.text(element, "output", scope)
+        cwd = self.text(element, "cwd", scope)
+        prefix = self.text(element, "launch-prefix", scope)
+        required = self.flag(element, "required", scope, False)
+        respawn = self.flag(element, "respawn", scope, False)
+        delay = self.text(element, "respawn_delay", scope)
+        if required and respawn:
+            self.fail(scope, element, "respawn and required cannot both be set to true")
+            return
+        if output not in (None, "log", "screen") and "?" not in output:
+            self.fail(scope, element, "output must be one of 'log', 'screen'")
+            return
+        if cwd == "ros_home":
+            cwd = "ROS_HOME"
+        if cwd not in (None, "ROS_HOME", "node") and "?" not in cwd:
+            self.fail(scope, element, "cwd must be one of 'ROS_HOME', 'node'")
+            return
+        if not package.strip() or not executable.strip():
+            self.fail(scope, element, "package and type must be non-empty")
+            return
+        remaps = scope.child(None)
+        env = scope.child(None)
         for child in element:
             if not isinstance(child.tag, str):
                 continue
-            if child.tag not in ("remap", "param", "rosparam", "env"):
-                self.report("LAUNCH_UNKNOWN_TAG", state, child, tag=child.tag)
+            tag = child.tag.lower()
+            if tag not in ("remap", "param", "rosparam", "env"):
+                self.report("LAUNCH_UNKNOWN_TAG", scope, child, tag=child.tag)
                 continue
-            if not self.check(child, state):
+            target = {"remap": scope, "env": env}.get(tag, private)
+            inner_child = self.condition(child, target)
+            if inner_child is None or not self.check(child, inner_child):
                 continue
-            child_scope = self.condition(child, inner, state)
-            if child_scope is None:
-                continue
-            if child.tag == "remap":
-                decl.remaps.append((self.text(child, "from", state) or "",
-                                    self.text(child, "to", state) or ""))
-            elif child.tag == "param":
-                self.tag_param(child, child_scope, state)
-            elif child.tag == "rosparam":
-                self.tag_rosparam(child, child_scope, state)
-        self.model.nodes.append(decl)
+            if tag == "remap":
+                pair = self.remap_pair(child, inner_child)
+                if pair is not None:
+                    remaps.add_remap(pair)
+            elif tag == "param":
+                self.tag_param(child, inner_child, local=True)
+            elif tag == "rosparam":
+                self.tag_rosparam(child, inner_child)
+            else:
+                self.tag_env(child, env)
+        for param in (*scope.private, *private.private):
+            tags_params.add_param(self, private.ns + param.name.lstrip("~"), param.value,
+                                  param.kind, (*scope.conditions, *param.conditions),
+                                  param.location, param.source)
+        full = inner.ns + name
+        location = self.where(scope, element)
+        if name and not is_test:
+            if full in self.node_names:
+                other = self.node_names[full]
+                self.report("LAUNCH_NODE_DUPLICATE", scope, element, name=full,
+                            other=f"{other.file}:{other.line}")
+            else:
+                self.node_names[full] = location
+        if machine and machine not in self.model.machines and "?" not in machine:
+            self.fail(scope, element, f"unknown machine [{machine}]")
+        try:
+            respawn_delay = float(delay) if delay else 0.0
+        except ValueError:
+            self.fail(scope, element, f"respawn_delay must be a number: {delay!r}")
+            respawn_delay = 0.0
+        self.model.nodes.append(NodeDecl(
+            full, package, executable, inner.ns, args, list(remaps.remaps),
+            scope.conditions, location, anonymous="$(anon" in element.get("name", ""),
+            machine=machine, respawn=bool(respawn), required=bool(required),
+            respawn_delay=respawn_delay, output=output, cwd=cwd, launch_prefix=prefix or None,
+            env=list(env.env), is_test=is_test))
 
-    def tag_param(self, element: Element, scope: Scope, state: FileState) -> None:
-        given = self.text(element, "name", state) or ""
-        base = (scope.node + "/") if scope.node else scope.namespace
-        name = resolve(given, base, scope.node)
-        declared = element.get("type")
-        if "value" in element.attrib:
-            raw = self.value(element, "value", state)
-            assert raw is not None
-            value, kind = typed_value(raw, declared)
-            if kind is None and declared:
-                self.report("LAUNCH_BAD_VALUE", state, element,
-                            detail=f"value \"{raw.text}\" is not of type {declared}")
-        else:
-            value, kind = None, declared  # textfile, binfile, command: not read here
-        self.model.params.append(
-            ParamDecl(name, value, kind, scope.conditions, self.where(state, element)))
-
-    def tag_rosparam(self, element: Element, scope: Scope, state: FileState) -> None:
-        self.report("LAUNCH_UNSUPPORTED", state, element,
-                    detail="<rosparam> is not evaluated yet; its parameters are unknown")
-
-    def tag_include(self, element: Element, scope: Scope, state: FileState) -> None:
-        path = self.value(element, "file", state)
+    def tag_include(self, element: Element, scope: Scope) -> None:
+        path = self.value(element, "file", scope)
         if path is None or path.literal is None:
-            self.report("LAUNCH_UNSUPPORTED", state, element,
+            self.report("LAUNCH_UNSUPPORTED", scope, element,
                         detail=f"include file \"{element.get('file')}\" is not known statically")
             return
-        ns = self.text(element, "ns", state)
-        scope = replace(scope)
-        if ns:
-            scope.namespace = as_namespace(resolve(ns, scope.namespace))
-        given: dict[str, Value | None] = {}
-        if (self.text(element, "pass_all_args", state) or "").lower() in ("true", "1"):
-            given.update(state.args)
+        pass_all = self.flag(element, "pass_all_args", scope, False)
+        filename = os.path.abspath(path.literal)
+        inner = self.ns_clear_params(element, scope, include=filename)
+        if inner is None:
+            return
+        if pass_all:
+            assert inner.include_args is not None
+            for name, value in scope.args.items():
+                inner.include_args[name] = value
+                if name not in inner.arg_names:
+                    inner.arg_names.append(name)
+            inner.pass_all_args = True
+        inner.filename = scope.filename  # the include's children substitute as the parent
         for child in element:
             if not isinstance(child.tag, str):
                 continue
-            if child.tag == "arg" and self.check(child, state):
-                if self.condition(child, scope, state) is None:
-                    continue
-                key = "value" if "value" in child.attrib else "default"
-                given[child.get("name", "")] = self.value(child, key, state)
-            elif child.tag != "env":
-                self.report("LAUNCH_UNKNOWN_TAG", state, child, tag=child.tag)
-        self.load_file(path.literal, scope, given, state.stack, element, state)
+            tag = child.tag.lower()
+            if tag not in ("arg", "env"):
+                self.report("LAUNCH_UNKNOWN_TAG", scope, child, tag=child.tag)
+                continue
+            inner_child = self.condition(child, inner)
+            if inner_child is not None and self.check(child, inner_child):
+                (self.tag_arg if tag == "arg" else self.tag_env)(child, inner)
+        inner.filename = filename
+        for name in inner.arg_names:
+            if inner.include_args is not None and name not in inner.include_args:
+                self.fail(scope, element, f"include arg '{name}' must have a value")
+                return
+        passed = list(inner.enter_include())
+        if not self.load_file(filename, inner, element, scope):
+            return
+        unused = [name for name in passed if name not in inner.arg_names]
+        if unused and not inner.pass_all_args:
+            self.fail(scope, element, f"unused args [{', '.join(unused)}] for include of "
+                                      f"[{self.workspace.relpath(filename)}]")
 
-
-def typed_value(raw: Value, declared: str | None) -> tuple[object, str | None]:
-    """A parameter's value and type as roslaunch would give them (None if unknown)."""
-    text = raw.literal
-    if text is None:
-        return None, declared
-    if declared in (None, "auto"):
-        stripped = text.strip()
-        lowered = stripped.lower()
-        if lowered in ("true", "false"):
-            return lowered == "true", "bool"
-        for cast, kind in ((int, "int"), (float, "double")):
-            try:
-                return cast(stripped), kind
-            except ValueError:
-                pass
-        return text, "str"
-    try:
-        if declared == "int":
-            return int(text.strip()), "int"
-        if declared in ("double", "float"):
-            return float(text.strip()), "double"
-        if declared in ("bool", "boolean"):
-            lowered = text.strip().lower()
-            if lowered not in ("true", "false", "1", "0"):
-                return None, None
-            return lowered in ("true", "1"), "bool"
-        if declared in ("str", "string"):
-            return text, "str"
-        if declared == "yaml":
-            return text, "yaml"
-    except ValueError:
-        return None, None
-    return text, declared
+    def load_file(self, path: str, scope: Scope, element: Element | None = None,
+                  parent: Scope | None = None) -> bool:
+        path = os.path.abspath(path)
+        if path in scope.stack or len(scope.stack) > MAX_INCLUDE_DEPTH \
+                or self.includes > MAX_INCLUDES:
+            assert parent is not None and element is not None
+            self.report("LAUNCH_INCLUDE_CYCLE", parent, element,
+                        path=self.workspace.relpath(path))
+            return False
+        self.includes += 1
+        location = self.where(parent, element) if parent else self.workspace.location(path)
+        root = self.parse(path, location)
+        if root is None:
+            return False
+        scope.path = path
+        scope.stack = (*scope.stack, path)
+        self.children(root, scope)
+        return True
 
 
 def load(path: str, workspace: Workspace, args: Mapping[str, str] | None = None,
          environment: Mapping[str, str] | None = None) -> LaunchModel:
     """Interpret one ROS 1 launch file and what it includes."""
-    loader = Ros1Loader(workspace, workspace.environment if environment is None
-                        else environment)
+    env = workspace.environment if environment is None else environment
+    loader = Ros1Loader(workspace, env)
     given = {k: Value.of(v) for k, v in (args or {}).items()}
-    loader.load_file(path, Scope(), given, ())
+    scope = Scope.root(os.path.abspath(path), given, env.get("ROS_NAMESPACE", "/"))
+    loader.load_file(path, scope)
+    loader.model.args = {k: (v.text if v is not None else None)
+                         for k, v in scope.args.items()}
+    for name in scope.arg_names:
+        loader.model.args.setdefault(name, None)
     return loader.model

@@ -1,93 +1,221 @@
 """roslaunch substitution args (``$(arg x)``, ``$(find pkg)``, ...) over partial values.
 
-A substitution whose value cannot be known (an argument nobody set, an environment
-variable that is not in the configuration) gives an ``Unknown`` part; the text around
-it is kept.
+As roslaunch does: a whole attribute ``$(eval EXPR)`` is an expression (evaluated here
+by our own safe interpreter, never by Python's ``eval``); otherwise ``$(...)`` commands
+are collected by the same state machine, ``env``/``optenv``/``dirname``/``anon``/``arg``
+are replaced first and ``find`` afterwards (so an argument whose value holds
+``$(find pkg)`` is expanded too). A substitution whose value cannot be known (an
+argument nobody set, an environment variable that is not in the configuration) gives an
+``Unknown`` part; the text around it is kept.
 """
 
 from __future__ import annotations
 
 import os
-import re
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
+from typing import Any
 
 from ...model.values import Unknown, Value
+from .. import expression
+from .params import convert_value
 
-_SUBST = re.compile(r"\$\(([a-z_]+)((?:\s+[^()\s]+)*)\s*\)")
+VALID = ("find", "env", "optenv", "dirname", "anon", "arg")
+EVAL_BUILTINS: Mapping[str, Any] = {
+    "list": list, "dict": dict, "str": str, "float": float, "int": int,
+    "true": True, "false": False, "True": True, "False": False, **expression.MATH,
+}
 
 
 class SubstitutionError(Exception):
     """A substitution that roslaunch would reject (wrong arity, unknown command)."""
 
 
+class ArgUndefined(SubstitutionError):
+    """``$(arg x)`` where ``x`` has no value in this scope (roslaunch's ArgException)."""
+
+    def __init__(self, name: str) -> None:
+        super().__init__(name)
+        self.name = name
+
+
 @dataclass
 class Context:
     """What substitutions may read: arguments, environment, packages, the file."""
 
-    args: Mapping[str, Value | None]
+    args: Mapping[str, Value]
     environment: Mapping[str, str]
     find: Callable[[str], str | None]
     filename: str
     anon: dict[str, Unknown] = field(default_factory=dict)
-    unset: list[str] = field(default_factory=list)  # names of unset args that were used
-    unsupported: list[str] = field(default_factory=list)
+    declared: Callable[[str], bool] = lambda name: False  # declared but without value
+    unset: list[str] = field(default_factory=list)  # declared args without value that were used
+    unknown: list[str] = field(default_factory=list)  # other reasons for unknown parts
+
+
+def collect(text: str) -> list[str]:
+    """The ``$(...)`` bodies in ``text``, with roslaunch's state machine."""
+    out, buff, state = [], "", "out"
+    for char in text:
+        if char == "$":
+            if state in ("in", "lp"):
+                raise SubstitutionError(f"dollar signs '$' cannot be inside of "
+                                        f"substitution args [{text}]")
+            state = "dollar"
+        elif char == "(":
+            if state == "dollar":
+                state = "lp"
+            elif state != "out":
+                raise SubstitutionError(f"invalid left parenthesis '(' in substitution "
+                                        f"args [{text}]")
+        elif char == ")":
+            if state == "in":
+                out.append(buff)
+                buff = ""
+            state = "out"
+        elif state == "dollar":
+            state = "out"
+        elif state == "lp":
+            state = "in"
+        if state == "in":
+            buff += char
+    return out
 
 
 def substitute(text: str, ctx: Context) -> Value:
-    """Resolve every ``$(...)`` in ``text``, left to right as roslaunch does."""
-    if text.lstrip().startswith("$(eval"):
-        ctx.unsupported.append(text.strip())
-        return Value.unknown(text.strip())
-    parts: list[Value | str] = []
-    pos = 0
-    for match in _SUBST.finditer(text):
-        parts.append(text[pos:match.start()])
-        command, args = match.group(1), match.group(2).split()
-        parts.append(_one(command, args, match.group(0), ctx))
-        pos = match.end()
-    parts.append(text[pos:])
+    """Resolve every substitution in ``text`` as roslaunch does."""
+    if not text or "$" not in text:
+        return Value.of(text)
+    if text.startswith("$(eval ") and text.endswith(")"):
+        return evaluate(text[7:-1], ctx)
+    bodies = collect(text)
+    for body in bodies:
+        words = [w for w in body.split(" ") if w]
+        if not words or words[0] not in VALID:
+            raise SubstitutionError(f"unknown substitution command [{body}]; valid "
+                                    f"commands are {', '.join(VALID)}")
+    value = Value.of(text)
+    for body in bodies:
+        words = [w for w in body.split(" ") if w]
+        if words[0] != "find":
+            value = _replace(value, f"$({body})", _one(words[0], words[1:], body, ctx))
+    for part in value.parts:  # second pass: $(find) over the text produced so far
+        if isinstance(part, str):
+            for body in collect(part):
+                words = [w for w in body.split(" ") if w]
+                if words and words[0] == "find":
+                    value = _replace(value, f"$({body})", _one("find", words[1:], body, ctx))
+    return value
+
+
+def _replace(value: Value, old: str, new: Value) -> Value:
+    parts: list[str | Unknown | Value] = []
+    for part in value.parts:
+        if isinstance(part, str) and old in part:
+            pieces = part.split(old)
+            for index, piece in enumerate(pieces):
+                if index:
+                    parts.append(new)
+                parts.append(piece)
+        else:
+            parts.append(part)
     return Value.of(*parts)
 
 
 def _one(command: str, args: list[str], raw: str, ctx: Context) -> Value:
     if command == "arg":
         _arity(raw, args, 1)
-        if args[0] not in ctx.args:
-            raise SubstitutionError(f"arg '{args[0]}' is not declared")
-        value = ctx.args[args[0]]
-        if value is None:
-            ctx.unset.append(args[0])
-            return Value.unknown(f"arg {args[0]}")
-        return value
-    if command in ("env", "optenv"):
-        if command == "env":
-            _arity(raw, args, 1)
-        elif not args:
-            raise SubstitutionError(f"{raw}: $(optenv) needs a variable name")
+        return _arg(args[0], ctx)
+    if command == "env":
+        _arity(raw, args, 1)
         if args[0] in ctx.environment:
             return Value.of(ctx.environment[args[0]])
-        if command == "optenv":
-            return Value.of(" ".join(args[1:]))
+        ctx.unknown.append(f"environment variable {args[0]} is not set")
         return Value.unknown(f"env {args[0]}")
+    if command == "optenv":
+        if not args:
+            raise SubstitutionError(f"$({raw}) needs a variable name")
+        return Value.of(ctx.environment.get(args[0], " ".join(args[1:])))
     if command == "find":
         _arity(raw, args, 1)
         path = ctx.find(args[0])
-        return Value.of(path) if path is not None else Value.unknown(f"find {args[0]}")
+        if path is None:
+            ctx.unknown.append(f"package {args[0]} is not found")
+            return Value.unknown(f"find {args[0]}")
+        return Value.of(path)
     if command == "anon":
         _arity(raw, args, 1)
-        # roslaunch appends host, pid and a random number: unknown, but the same
-        # unknown for every use of one name within the file
-        return Value.of(args[0] + "_", ctx.anon.setdefault(args[0], Unknown(raw)))
+        return _anon(args[0], ctx)
     if command == "dirname":
-        _arity(raw, args, 0)
-        return Value.of(os.path.dirname(ctx.filename))
-    if command == "eval":
-        ctx.unsupported.append(raw)
-        return Value.unknown(raw)
-    raise SubstitutionError(f"unknown substitution {raw}")
+        return Value.of(os.path.dirname(os.path.abspath(ctx.filename)))
+    raise SubstitutionError(f"unknown substitution command [{raw}]")
+
+
+def _arg(name: str, ctx: Context) -> Value:
+    if name in ctx.args:
+        return ctx.args[name]
+    if ctx.declared(name):
+        ctx.unset.append(name)
+        return Value.unknown(f"arg {name}")
+    raise ArgUndefined(name)
+
+
+def _anon(name: str, ctx: Context) -> Value:
+    # roslaunch appends host, pid and a random number: unknown, but the same unknown
+    # for every use of one name within the scope
+    return Value.of(name + "_", ctx.anon.setdefault(name, Unknown(f"anon {name}")))
 
 
 def _arity(raw: str, args: list[str], count: int) -> None:
     if len(args) != count:
-        raise SubstitutionError(f"{raw} takes {count} argument(s), got {len(args)}")
+        raise SubstitutionError(f"$({raw}) takes {count} argument(s), got {len(args)}")
+
+
+def evaluate(text: str, ctx: Context) -> Value:
+    """``$(eval text)``: our safe evaluator with roslaunch's names; str() of the result."""
+
+    def as_python(value: Value) -> object:
+        if value.literal is None:
+            return expression.Unknown(f"{value.origins}", "unknown")
+        return convert_value(value.literal, "auto")
+
+    def arg(name: object) -> object:
+        return as_python(_arg(str(name), ctx))
+
+    def env(name: object) -> object:
+        return as_python(_one("env", [str(name)], f"env {name}", ctx))
+
+    def optenv(name: object, default: object = "") -> object:
+        return ctx.environment.get(str(name), default)
+
+    def find(name: object) -> object:
+        return as_python(_one("find", [str(name)], f"find {name}", ctx))
+
+    def anon(name: object) -> object:
+        return as_python(_anon(str(name), ctx))
+
+    def bare(name: str) -> object:
+        if name in ctx.args:
+            return as_python(ctx.args[name])
+        if ctx.declared(name):
+            ctx.unset.append(name)
+            return expression.Unknown(f"arg {name} has no value", "unknown")
+        raise KeyError(name)
+
+    def dirname() -> object:
+        return os.path.dirname(os.path.abspath(ctx.filename))
+
+    functions = {**EVAL_BUILTINS, "arg": arg, "env": env, "optenv": optenv, "find": find,
+                 "anon": anon, "dirname": dirname}
+    if "__" in text:  # roslaunch refuses these outright
+        raise SubstitutionError("$(eval ...) may not contain double underscore expressions")
+    result = expression.evaluate(text, bare, functions)
+    if isinstance(result, expression.Unknown):
+        if result.kind == "unknown":
+            ctx.unknown.append(f"$(eval {text}) depends on unknown values")
+            return Value.unknown(f"eval {text}")
+        if result.kind in ("undefined", "error", "syntax"):
+            raise SubstitutionError(f"$(eval {text}): {result.reason}")
+        ctx.unknown.append(f"$(eval {text}) is not evaluated: {result.reason}")
+        return Value.unknown(f"eval {text}")
+    return Value.of(str(result))
