@@ -93,3 +93,15 @@ def test_duplicate_node_names_are_reported():
                    nodes=[node("p", "n")])
     assert [(d.code, d.location.line) for d in config.diagnostics] == [
         ("NODE_NAME_DUPLICATE", 3)]
+
+
+def test_ros2_parameters_belong_to_their_node():
+    n = node("p", "n", call("declare", "gains.kp", "double"), call("publish", "out"))
+    decl = NodeDecl("/arm/ctrl", "p", "n", "/arm/")
+    decl.ros_version = 2
+    config = graph([decl], params=[ParamDecl("/arm/ctrl/gains.kp", 2.0, "double")],
+                   nodes=[n])
+    assert [(p.name, p.value, [r.node.name for r in p.readers]) for p in config.parameters] == [
+        ("/arm/ctrl/gains.kp", 2.0, ["/arm/ctrl"])]
+    assert [t.name for t in config.topics] == ["/arm/out"]
+    assert config.nodes[0].ros_version == 2

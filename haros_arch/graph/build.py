@@ -127,7 +127,8 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
                 "NODE_NOT_FOUND", decl.location, node=f"{decl.package}/{decl.executable}"))
     remaps = list(decl.remaps) + remaps_in_args(decl.args)
     return NodeInstance(decl.name, node, namespace=decl.namespace, remaps=remaps,
-                        args=decl.args, conditions=decl.conditions, location=decl.location)
+                        args=decl.args, conditions=decl.conditions, location=decl.location,
+                        ros_version=getattr(decl, "ros_version", 1))
 
 
 def link(instance: NodeInstance, call: PrimitiveCall, remaps: Mapping[str, str],
@@ -151,13 +152,23 @@ def _given_name(call: PrimitiveCall, instance: NodeInstance, resources: Resource
     """The call's name; a name taken from a parameter gets this configuration's value.
 
     The parameter's launch value wins, then the default written in the code; with
-    neither, the name keeps its ``?``.
+    neither, the name keeps its ``?``. ROS 2 parameters belong to their node, so their
+    names are resolved as private names.
     """
+    if instance.ros_version == 2 and RESOURCE_OF_KIND[call.kind] is Parameter:
+        return _node_scoped(call.name)
     if call.name_param is None or UNKNOWN_MARK not in call.name:
         return call.name
-    param_name = RosName.make(call.name_param, instance.namespace, instance.name).full
+    source = call.name_param
+    if instance.ros_version == 2:
+        source = _node_scoped(source)
+    param_name = RosName.make(source, instance.namespace, instance.name).full
     param = resources.by_name.get((Parameter, param_name))
     value: str | None = call.name_default
     if isinstance(param, Parameter) and param.set_by_launch and isinstance(param.value, str):
         value = param.value
     return call.name if value is None else call.name.replace(UNKNOWN_MARK, value, 1)
+
+
+def _node_scoped(name: str) -> str:
+    return "~/" + name.lstrip("~/")

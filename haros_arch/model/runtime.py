@@ -41,6 +41,7 @@ class NodeInstance:
     conditions: tuple[Condition, ...] = ()
     location: Location = NOWHERE
     origin: str = "launch"  # "launch", or "hint" when a project-file hint created it
+    ros_version: int = 1  # 2: ROS 2 naming (node-scoped parameters)
     links: list[Link] = field(default_factory=list, metadata=INDEX)
 
     JSON_VIEWS: ClassVar[dict[str, Callable[[Any], Any]]] = {}
