@@ -190,6 +190,22 @@ CATALOGUE: dict[str, Entry] = {
     "CPP_DYNAMIC_NAME": Entry(
         "info", "the name of this {kind} call is computed at run time; kept as '{name}'",
         "The extractor could not resolve every part of the name statically."),
+    "PY_PARSE_ERROR": Entry(
+        "error", "Python syntax error: {detail}",
+        "The Python file could not be parsed (nor read as Python 2 after repairing its "
+        "print/exec/except statements); it gives no calls."),
+    "PY_PYTHON2": Entry(
+        "info", "Python 2 syntax; read after a line-preserving repair",
+        "The file uses Python 2 statements (print, exec, 'except E, e'); they were "
+        "rewritten in memory so its ROS calls could be read. The file is never run."),
+    "PY_TOO_COMPLEX": Entry(
+        "warning", "Python code too large to analyse fully ({limit}); calls past it are "
+        "not extracted",
+        "A bound on the work per file or node was reached, so a generated or hostile "
+        "file cannot stall the run."),
+    "PY_DYNAMIC_NAME": Entry(
+        "info", "the name of this {kind} call is computed at run time; kept as '{name}'",
+        "The Python extractor could not resolve every part of the name statically."),
     # hints
     "HINT_INVALID": Entry(
         "error", "{detail}",

@@ -23,4 +23,11 @@ def extract_node(node: Node, workspace: Workspace) -> list[Diagnostic]:
         node.calls = result.calls
         node.rosname = result.rosname
         return result.diagnostics
+    if node.language == "python" and sources:
+        from .python import extract_python
+
+        found = extract_python(sources, workspace, package=node.package)
+        node.calls = found.calls
+        node.rosname = found.rosname
+        return found.diagnostics
     return []

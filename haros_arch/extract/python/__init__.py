@@ -1,0 +1,76 @@
+"""The Python extractor (rospy and rclpy): the primitive calls in one node's modules.
+
+``extract_python(sources, workspace, package=...)`` parses each source with ``ast``
+(never imports or runs it), follows imports into modules of the same package, and walks
+the code for the calls listed in the API tables (``rospy.ROWS``, ``rclpy.ROWS``,
+``rclpy.NODE_METHODS``), resolving names, types and QoS statically (``values``) and
+keeping the control statements around each call as conditions (``conditions``).
+Problems become diagnostics; nothing here raises for bad input.
+"""
+
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass, field
+
+from ... import diagnostics as diag
+from ...diagnostics import Diagnostic
+from ...model.source import PrimitiveCall
+from ...workspace import Workspace
+from .modules import Loader, Module
+from .visitor import Walker
+
+__all__ = ["PythonResult", "extract_python"]
+
+
+@dataclass
+class PythonResult:
+    """What one node's Python sources give: calls, and the name the node gives itself
+    (``rospy.init_node``, ``Node.__init__``, ``rclpy.create_node``)."""
+
+    calls: list[PrimitiveCall] = field(default_factory=list)
+    rosname: str | None = None
+    diagnostics: list[Diagnostic] = field(default_factory=list)
+    namespace: str | None = None
+    anonymous: bool = False
+
+
+def extract_python(sources: list[str], workspace: Workspace, *,
+                   package: str | None = None) -> PythonResult:
+    """The rospy / rclpy calls in the modules ``sources`` (absolute paths) of one node."""
+    result = PythonResult()
+    root = _package_root(sources, workspace, package)
+    loader = Loader(workspace, root)
+    modules: list[Module] = []
+    for path in sources:
+        module = loader.load(os.path.abspath(path))
+        if module is not None and module not in modules:
+            modules.append(module)
+    walker = Walker(loader)
+    walker.run(modules)
+    result.rosname, result.namespace = walker.rosname, walker.namespace
+    result.anonymous = walker.anonymous
+    seen: set[tuple[object, ...]] = set()
+    calls = sorted(walker.calls, key=lambda c: (
+        c.location.file or "", c.location.line, c.location.column))
+    for call in calls:
+        key = (call.kind, call.name, call.location)
+        if key in seen:
+            continue
+        seen.add(key)
+        result.calls.append(call)
+        if "?" in call.name:
+            result.diagnostics.append(diag.make(
+                "PY_DYNAMIC_NAME", call.location, kind=call.kind, name=call.name))
+    result.diagnostics[:0] = loader.diagnostics + walker.diagnostics
+    return result
+
+
+def _package_root(sources: list[str], workspace: Workspace, package: str | None) -> str | None:
+    if package is not None and package in workspace.packages:
+        return workspace.packages[package].root or None
+    for path in sources:
+        found = workspace.package_of(path)
+        if found is not None:
+            return found.root or None
+    return None

@@ -1,0 +1,296 @@
+"""Python modules of one ROS package, parsed with ``ast`` (never imported or run).
+
+``Loader.load(path)`` reads and parses a file once (size-bounded, syntax errors become
+``PY_PARSE_ERROR``; Python 2 files get a line-preserving repair of the common
+statements and ``PY_PYTHON2``) and indexes it as a ``Module``: its imports, module
+constants, functions and classes. ``Loader.resolve_import`` finds modules of the same
+package (relative imports, and ``from pkg.sub import X`` inside the package's folder).
+"""
+
+from __future__ import annotations
+
+import ast
+import os
+import re
+from dataclasses import dataclass, field
+
+from ... import diagnostics as diag
+from ...diagnostics import Diagnostic
+from ...files import read_text
+from ...model.location import Location
+from ...workspace import Workspace
+
+MAX_PY_BYTES = 1024 * 1024
+MAX_AST_NODES = 400_000
+
+FunctionNode = ast.FunctionDef | ast.AsyncFunctionDef
+
+
+@dataclass(eq=False)
+class FunctionInfo:
+    node: FunctionNode
+    module: Module
+    cls: ClassInfo | None = None
+    # the enclosing function's variables, for functions defined inside functions
+    closure: dict[str, object] | None = None
+
+    @property
+    def qualname(self) -> str:
+        return f"{self.cls.name}.{self.node.name}" if self.cls else self.node.name
+
+
+@dataclass(eq=False)
+class ClassInfo:
+    node: ast.ClassDef
+    module: Module
+    methods: dict[str, FunctionInfo] = field(default_factory=dict)
+    constants: dict[str, ast.expr] = field(default_factory=dict)
+    # filled by the evaluator on first use
+    attrs: dict[str, object] | None = None
+    bases: list[object] | None = None
+
+    @property
+    def name(self) -> str:
+        return self.node.name
+
+
+@dataclass(eq=False)
+class Module:
+    path: str
+    text: str
+    tree: ast.Module
+    # local name -> qualified name (``String`` -> ``std_msgs.msg.String``)
+    imports: dict[str, str] = field(default_factory=dict)
+    # local name -> (module file, name in it or None for the module itself)
+    local_imports: dict[str, tuple[str, str | None]] = field(default_factory=dict)
+    stars: list[str] = field(default_factory=list)       # qualified modules
+    local_stars: list[str] = field(default_factory=list)  # module files
+    constants: dict[str, ast.expr] = field(default_factory=dict)
+    functions: dict[str, FunctionInfo] = field(default_factory=dict)
+    classes: dict[str, ClassInfo] = field(default_factory=dict)
+    values: dict[str, object] = field(default_factory=dict)
+
+    @property
+    def version(self) -> int:
+        """2 when the module uses rclpy, else 1."""
+        return 2 if any(q == "rclpy" or q.startswith("rclpy.")
+                        for q in (*self.imports.values(), *self.stars)) else 1
+
+
+class Loader:
+    """Parses and indexes the modules of one package, each once."""
+
+    def __init__(self, workspace: Workspace, package_root: str | None) -> None:
+        self.workspace = workspace
+        self.package_root = package_root
+        self.modules: dict[str, Module | None] = {}
+        self.diagnostics: list[Diagnostic] = []
+
+    def location(self, path: str, line: int = 0, column: int = 0) -> Location:
+        return self.workspace.location(path, line, column)
+
+    def load(self, path: str) -> Module | None:
+        path = os.path.abspath(path)
+        if path in self.modules:
+            return self.modules[path]
+        self.modules[path] = None
+        text, found = read_text(path, self.location(path), MAX_PY_BYTES)
+        self.diagnostics.extend(found)
+        if text is None:
+            return None
+        tree = self._parse(path, text)
+        if tree is None:
+            return None
+        module = Module(path, text, tree)
+        _index(module, self)
+        self.modules[path] = module
+        return module
+
+    def _parse(self, path: str, text: str) -> ast.Module | None:
+        try:
+            tree = _ast_parse(text, path)
+        except SyntaxError as err:
+            repaired = _repair_python2(text)
+            if repaired != text:
+                try:
+                    tree = _ast_parse(repaired, path)
+                except (SyntaxError, ValueError, RecursionError, MemoryError):
+                    pass
+                else:
+                    self.diagnostics.append(diag.make(
+                        "PY_PYTHON2", self.location(path, err.lineno or 0,
+                                                    err.offset or 0)))
+                    return self._bounded(path, tree)
+            self.diagnostics.append(diag.make(
+                "PY_PARSE_ERROR", self.location(path, err.lineno or 0, err.offset or 0),
+                detail=err.msg))
+            return None
+        except (ValueError, RecursionError, MemoryError) as err:
+            self.diagnostics.append(diag.make(
+                "PY_PARSE_ERROR", self.location(path), detail=type(err).__name__))
+            return None
+        return self._bounded(path, tree)
+
+    def _bounded(self, path: str, tree: ast.Module) -> ast.Module | None:
+        for count, _ in enumerate(ast.walk(tree)):
+            if count >= MAX_AST_NODES:
+                self.diagnostics.append(diag.make(
+                    "PY_TOO_COMPLEX", self.location(path), limit=f"{MAX_AST_NODES} AST nodes"))
+                return None
+        return tree
+
+    # -- imports of the same package ----------------------------------------------------
+
+    def resolve_import(self, module_path: str, level: int, dotted: str) -> str | None:
+        """The file of module ``dotted`` imported from ``module_path``, if it is a module
+        of this package (relative with ``level`` dots, or absolute inside its folder)."""
+        parts = [p for p in dotted.split(".") if p]
+        if level:
+            base = os.path.dirname(module_path)
+            for _ in range(level - 1):
+                base = os.path.dirname(base)
+            return _module_file(base, parts)
+        if not parts or self.package_root is None:
+            return None
+        for root in self._search_roots(module_path):
+            found = _module_file(root, parts)
+            if found is not None:
+                return found
+        return None
+
+    def _search_roots(self, module_path: str) -> list[str]:
+        assert self.package_root is not None
+        roots = [self.package_root, os.path.join(self.package_root, "src"),
+                 os.path.join(self.package_root, "scripts")]
+        folder = os.path.dirname(os.path.abspath(module_path))
+        while folder.startswith(self.package_root + os.sep) and folder not in roots:
+            roots.append(folder)
+            folder = os.path.dirname(folder)
+        return roots
+
+
+def _module_file(base: str, parts: list[str]) -> str | None:
+    if not parts:
+        init = os.path.join(base, "__init__.py")
+        return init if os.path.isfile(init) else None
+    path = os.path.join(base, *parts)
+    if os.path.isfile(path + ".py"):
+        return path + ".py"
+    if os.path.isfile(os.path.join(path, "__init__.py")):
+        return os.path.join(path, "__init__.py")
+    return None
+
+
+def _ast_parse(text: str, path: str) -> ast.Module:
+    return ast.parse(text, filename=path)
+
+
+def _index(module: Module, loader: Loader) -> None:
+    for statement in module.tree.body:
+        _index_statement(module, loader, statement)
+
+
+def _index_statement(module: Module, loader: Loader, statement: ast.stmt) -> None:
+    if isinstance(statement, ast.Import | ast.ImportFrom):
+        add_import(module, loader, statement, module.imports, module.local_imports)
+    elif isinstance(statement, ast.FunctionDef | ast.AsyncFunctionDef):
+        module.functions[statement.name] = FunctionInfo(statement, module)
+    elif isinstance(statement, ast.ClassDef):
+        info = ClassInfo(statement, module)
+        for item in statement.body:
+            if isinstance(item, ast.FunctionDef | ast.AsyncFunctionDef):
+                info.methods[item.name] = FunctionInfo(item, module, info)
+            elif isinstance(item, ast.Assign):
+                for target in item.targets:
+                    if isinstance(target, ast.Name):
+                        info.constants[target.id] = item.value
+            elif isinstance(item, ast.AnnAssign) and isinstance(item.target, ast.Name) \
+                    and item.value is not None:
+                info.constants[item.target.id] = item.value
+        module.classes[statement.name] = info
+    elif isinstance(statement, ast.Assign):
+        for target in statement.targets:
+            if isinstance(target, ast.Name):
+                module.constants[target.id] = statement.value
+    elif isinstance(statement, ast.AnnAssign) and isinstance(statement.target, ast.Name) \
+            and statement.value is not None:
+        module.constants[statement.target.id] = statement.value
+    elif isinstance(statement, ast.If | ast.Try):
+        # imports guarded by try/except ImportError or version checks
+        for child in (*statement.body, *getattr(statement, "orelse", ())):
+            if isinstance(child, ast.Import | ast.ImportFrom):
+                add_import(module, loader, child, module.imports, module.local_imports)
+
+
+def add_import(module: Module, loader: Loader, statement: ast.Import | ast.ImportFrom,
+               imports: dict[str, str],
+               local_imports: dict[str, tuple[str, str | None]]) -> None:
+    """Record what an import statement binds, in ``imports`` / ``local_imports``."""
+    if isinstance(statement, ast.Import):
+        for alias in statement.names:
+            local = loader.resolve_import(module.path, 0, alias.name)
+            if alias.asname:
+                if local is not None:
+                    local_imports[alias.asname] = (local, None)
+                else:
+                    imports[alias.asname] = alias.name
+            else:
+                top = alias.name.split(".")[0]
+                imports.setdefault(top, top)
+        return
+    source = statement.module or ""
+    local = loader.resolve_import(module.path, statement.level, source)
+    for alias in statement.names:
+        if alias.name == "*":
+            if local is not None:
+                module.local_stars.append(local)
+            elif not statement.level:
+                module.stars.append(source)
+            continue
+        name = alias.asname or alias.name
+        submodule = loader.resolve_import(
+            module.path, statement.level, f"{source}.{alias.name}" if source else alias.name)
+        if submodule is not None:
+            local_imports[name] = (submodule, None)
+        elif local is not None:
+            local_imports[name] = (local, alias.name)
+        elif not statement.level:
+            imports[name] = f"{source}.{alias.name}"
+
+
+_PRINT = re.compile(r"^(\s*)print\b(?!\s*\()(?!\s*=)(.*)$")
+_EXEC = re.compile(r"^(\s*)exec\s+(?!\()(.*)$")
+_EXCEPT = re.compile(r"^(\s*except\s+[^,:]+),\s*(\w+)\s*:")
+_OCTAL = re.compile(r"(?<![\w.])0([0-7]+)(?![\w.])")
+_LONG = re.compile(r"(?<![\w.])(\d+)[lL](?!\w)")
+_BACKTICK = re.compile(r"`([^`\n]*)`")
+_RAISE = re.compile(r"^(\s*raise\s+[\w.]+)\s*,\s*(.+)$")
+
+
+def _repair_python2(text: str) -> str:
+    """Rewrite Python 2 statements line by line, keeping line numbers and call columns.
+
+    ``print x`` and ``exec x`` become ``pass``-like expressions, ``except E, e:``
+    becomes ``except E as e:``, octal and long literals and backticks are modernised.
+    Only a repair for reading ROS calls: the result is never run.
+    """
+    lines = text.split("\n")
+    for i, line in enumerate(lines):
+        fixed = _PRINT.sub(lambda m: f"{m.group(1)}print({_strip_chevron(m.group(2))})", line)
+        fixed = _EXEC.sub(lambda m: f"{m.group(1)}exec({m.group(2)})", fixed)
+        fixed = _EXCEPT.sub(lambda m: f"{m.group(1)} as {m.group(2)}:", fixed)
+        fixed = _RAISE.sub(lambda m: f"{m.group(1)}({m.group(2)})", fixed)
+        fixed = _BACKTICK.sub(lambda m: f"repr({m.group(1)})", fixed)
+        if "0" in fixed:
+            fixed = _OCTAL.sub(lambda m: f"0o{m.group(1)}", fixed)
+        fixed = _LONG.sub(lambda m: m.group(1), fixed)
+        fixed = fixed.replace("ur\"", "\"").replace("ur'", "'")
+        lines[i] = fixed
+    return "\n".join(lines)
+
+
+def _strip_chevron(rest: str) -> str:
+    rest = rest.strip()
+    if rest.startswith(">>"):
+        rest = rest[2:].split(",", 1)[1] if "," in rest else ""
+    return rest.rstrip(",")

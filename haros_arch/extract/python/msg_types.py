@@ -1,0 +1,58 @@
+"""Message, service and action types from Python names, and ``from x.msg import *``.
+
+A type is known by the qualified name its class is imported under
+(``std_msgs.msg.String``); it is written in the canonical form of its ROS version:
+``std_msgs/String`` in ROS 1, ``std_msgs/msg/String`` in ROS 2. ROS 1 actions are
+written without the ``Action`` suffix of their spec class (``actionlib_tutorials/
+Fibonacci`` for ``FibonacciAction``).
+"""
+
+from __future__ import annotations
+
+import os
+
+from ...workspace import Workspace
+
+INTERFACE_MODULES = ("msg", "srv", "action")
+_ACTION_PARTS = ("Action", "ActionGoal", "ActionResult", "ActionFeedback", "Goal", "Result",
+                 "Feedback")
+
+
+def ros_type(qualname: str, version: int, action: bool = False) -> str | None:
+    """The ROS type named by a qualified Python name, or None if it names no interface."""
+    parts = [p for p in qualname.split(".") if not p.startswith("_")]
+    if len(parts) < 3 or parts[-2] not in INTERFACE_MODULES:
+        return None
+    package, module, name = parts[-3], parts[-2], parts[-1]
+    if version == 1:
+        if action and module == "msg" and name.endswith("Action") and len(name) > 6:
+            name = name[: -len("Action")]
+        return f"{package}/{name}"
+    return f"{package}/{module}/{name}"
+
+
+def interface_names(workspace: Workspace, package: str, module: str) -> set[str] | None:
+    """The class names ``from package.module import *`` brings in, from the package's
+    ``msg/``, ``srv/`` and ``action/`` folders; None when the package cannot be found."""
+    root = workspace.find(package)
+    if root is None:
+        return None
+    names: set[str] = set()
+    if module == "msg":
+        names |= _stems(root, "msg", ".msg")
+        for stem in _stems(root, "action", ".action"):  # ROS 1 generates action messages
+            names |= {stem + part for part in _ACTION_PARTS}
+    elif module == "srv":
+        for stem in _stems(root, "srv", ".srv"):
+            names |= {stem, stem + "Request", stem + "Response"}
+    elif module == "action":
+        names |= _stems(root, "action", ".action")
+    return names
+
+
+def _stems(root: str, folder: str, suffix: str) -> set[str]:
+    try:
+        entries = os.listdir(os.path.join(root, folder))
+    except OSError:
+        return set()
+    return {e[: -len(suffix)] for e in entries if e.endswith(suffix)}

@@ -1,0 +1,68 @@
+"""The ROS 1 Python API as data: rospy, actionlib, tf / tf2_ros, message_filters.
+
+Rows are keyed by (top module, last name): ``("rospy", "Publisher")`` serves
+``rospy.Publisher``, ``rospy.topics.Publisher`` and ``from rospy import Publisher``.
+Argument positions follow the rospy signatures, e.g.
+``Publisher(name, data_class, subscriber_listener, tcp_nodelay, latch, headers,
+queue_size)`` and ``Subscriber(name, data_class, callback, callback_args, queue_size)``.
+"""
+
+from __future__ import annotations
+
+from .api import Arg, NodeName, PyFunction
+
+_PARAM_NAME = Arg(0, "param_name")
+
+ROWS: dict[tuple[str, str], PyFunction] = {
+    # topics
+    ("rospy", "Publisher"): PyFunction(
+        "publish", type=Arg(1, "data_class"), queue=Arg(6, "queue_size"),
+        latch=Arg(4, "latch")),
+    ("rospy", "Subscriber"): PyFunction(
+        "subscribe", type=Arg(1, "data_class"), queue=Arg(4, "queue_size"),
+        callback=Arg(2, "callback")),
+    ("rospy", "wait_for_message"): PyFunction(
+        "subscribe", name=Arg(0, "topic"), type=Arg(1, "topic_type")),
+    # services
+    ("rospy", "Service"): PyFunction(
+        "server", type=Arg(1, "service_class"), callback=Arg(2, "handler")),
+    ("rospy", "ServiceProxy"): PyFunction("client", type=Arg(1, "service_class")),
+    ("rospy", "wait_for_service"): PyFunction("client", name=Arg(0, "service")),
+    # parameters
+    ("rospy", "get_param"): PyFunction("read", name=_PARAM_NAME, value=Arg(1, "default")),
+    ("rospy", "get_param_cached"): PyFunction(
+        "read", name=_PARAM_NAME, value=Arg(1, "default")),
+    ("rospy", "has_param"): PyFunction("read", name=_PARAM_NAME),
+    ("rospy", "search_param"): PyFunction("read", name=_PARAM_NAME),
+    ("rospy", "set_param"): PyFunction(
+        "write", name=_PARAM_NAME, value=Arg(1, "param_value")),
+    ("rospy", "delete_param"): PyFunction("write", name=_PARAM_NAME),
+    # actions (actionlib; the action type is the spec's name without "Action")
+    ("actionlib", "SimpleActionServer"): PyFunction(
+        "action-server", type=Arg(1, "ActionSpec"), callback=Arg(2, "execute_cb")),
+    ("actionlib", "ActionServer"): PyFunction(
+        "action-server", name=Arg(0, "ns"), type=Arg(1, "ActionSpec"),
+        callback=Arg(2, "goal_cb")),
+    ("actionlib", "SimpleActionClient"): PyFunction(
+        "action-client", name=Arg(0, "ns"), type=Arg(1, "ActionSpec")),
+    ("actionlib", "ActionClient"): PyFunction(
+        "action-client", name=Arg(0, "ns"), type=Arg(1, "ActionSpec")),
+    # transforms
+    ("tf2_ros", "TransformBroadcaster"): PyFunction(
+        "publish", name=None, fixed_name="/tf", fixed_type="tf2_msgs/TFMessage"),
+    ("tf2_ros", "StaticTransformBroadcaster"): PyFunction(
+        "publish", name=None, fixed_name="/tf_static", fixed_type="tf2_msgs/TFMessage",
+        fixed_latch=True),
+    ("tf2_ros", "TransformListener"): PyFunction(
+        "subscribe", name=None, fixed_type="tf2_msgs/TFMessage", special="tf-listener"),
+    ("tf", "TransformBroadcaster"): PyFunction(
+        "publish", name=None, fixed_name="/tf", fixed_type="tf2_msgs/TFMessage"),
+    ("tf", "TransformListener"): PyFunction(
+        "subscribe", name=None, fixed_type="tf2_msgs/TFMessage", special="tf-listener"),
+    # message_filters.Subscriber(name, data_class, ...)
+    ("message_filters", "Subscriber"): PyFunction("subscribe", type=Arg(1, "data_class")),
+}
+
+NODE_NAMES: dict[tuple[str, str], NodeName] = {
+    ("rospy", "init_node"): NodeName(Arg(0, "name"), anonymous=Arg(2, "anonymous")),
+}

@@ -1,0 +1,440 @@
+"""The walk over a node's Python modules that finds ROS primitive calls.
+
+Every function and method is walked once as an entry, with its parameters unknown, and
+again wherever it is called in the package (``helper('scan')``, ``self.setup()``,
+``Talker()`` runs ``__init__``) with the call's arguments bound, a few calls deep; a
+function that is walked at one of its call sites does not count as an entry, so its
+calls carry the caller's values and conditions. Statements are dispatched by node type
+(one method per kind, one fallback), and calls are matched against the API tables.
+"""
+
+from __future__ import annotations
+
+import ast
+from dataclasses import replace
+
+from ... import diagnostics as diag
+from ...diagnostics import Diagnostic
+from ...model.conditions import Condition
+from ...model.location import Location
+from ...model.source import PrimitiveCall
+from ...model.values import Unknown, Value
+from . import rclpy, rospy
+from .api import PyFunction
+from .conditions import condition, is_main_guard, source_text
+from .modules import ClassInfo, FunctionInfo, Loader, Module, add_import
+from .msg_types import ros_type
+from .values import (
+    MAX_CALL_DEPTH,
+    BoundMethod,
+    Evaluator,
+    Frame,
+    NodeMethod,
+    Opaque,
+    ParamValue,
+    Ref,
+    SuperInit,
+    argument,
+    param_type,
+    text_of,
+    unknown_params,
+)
+
+Conditions = tuple[Condition, ...]
+MAX_STEPS = 200_000
+_PARAM_KINDS = ("read", "write", "declare")
+
+
+class Walker:
+    def __init__(self, loader: Loader) -> None:
+        self.loader = loader
+        self.evaluator = Evaluator(loader)
+        self.calls: list[PrimitiveCall] = []
+        self.diagnostics: list[Diagnostic] = []
+        self.rosname: str | None = None
+        self.namespace: str | None = None
+        self.anonymous = False
+        self.steps = 0
+        self._inlined: set[int] = set()
+        self._active: set[int] = set()
+        self._nested: list[FunctionInfo] = []
+        self._used_classes: list[ClassInfo] = []
+        self.main: set[str] = set()
+
+    # -- entries ------------------------------------------------------------------------
+
+    def run(self, modules: list[Module]) -> None:
+        self.main = {m.path for m in modules}
+        entries: list[tuple[FunctionInfo, list[PrimitiveCall]]] = []
+        for module in modules:
+            self.calls.extend(self._collect(lambda m=module: self._block(
+                m.tree.body, Frame(m), ())))
+        done: set[int] = set()
+        queue: list[FunctionInfo] = []
+        for module in modules:
+            queue.extend(module.functions.values())
+            for cls in module.classes.values():
+                queue.extend(cls.methods.values())
+        while queue or self._nested or self._used_classes:
+            if not queue:
+                if self._nested:
+                    queue.append(self._nested.pop(0))
+                else:
+                    queue.extend(self._used_classes.pop(0).methods.values())
+                continue
+            info = queue.pop(0)
+            if id(info.node) in done:
+                continue
+            done.add(id(info.node))
+            entries.append((info, self._collect(lambda i=info: self._entry(i))))
+        for info, calls in entries:
+            if id(info.node) not in self._inlined:
+                self.calls.extend(calls)
+
+    def _collect(self, walk: object) -> list[PrimitiveCall]:
+        saved, self.calls = self.calls, []
+        try:
+            walk()  # type: ignore[operator]
+            return self.calls
+        finally:
+            self.calls = saved
+
+    def _entry(self, info: FunctionInfo) -> None:
+        instance = self.evaluator.new(info.cls) if info.cls is not None else None
+        frame = Frame(info.module, unknown_params(info), instance)
+        self._active.add(id(info.node))
+        try:
+            self._block(info.node.body, frame, ())
+        finally:
+            self._active.discard(id(info.node))
+
+    # -- statements ---------------------------------------------------------------------
+
+    def _block(self, body: list[ast.stmt], frame: Frame, conds: Conditions) -> None:
+        for statement in body:
+            self.steps += 1
+            if self.steps > MAX_STEPS:
+                if self.steps == MAX_STEPS + 1:
+                    self.diagnostics.append(diag.make(
+                        "PY_TOO_COMPLEX", self._where(frame, statement),
+                        limit=f"{MAX_STEPS} statements walked"))
+                return
+            handler = getattr(self, "_" + type(statement).__name__, self._statement)
+            handler(statement, frame, conds)
+
+    def _statement(self, statement: ast.stmt, frame: Frame, conds: Conditions) -> None:
+        """Fallback: the calls in the statement's expressions, in source order."""
+        for child in ast.iter_child_nodes(statement):
+            if isinstance(child, ast.expr):
+                self._expr(child, frame, conds)
+
+    def _Assign(self, statement: ast.Assign | ast.AnnAssign | ast.AugAssign, frame: Frame,
+                conds: Conditions) -> None:
+        if statement.value is not None:
+            self._expr(statement.value, frame, conds)
+        if not isinstance(statement, ast.AugAssign):
+            self.evaluator.assign(statement, frame)
+
+    _AnnAssign = _Assign
+    _AugAssign = _Assign
+
+    def _If(self, statement: ast.If, frame: Frame, conds: Conditions) -> None:
+        self._expr(statement.test, frame, conds)
+        if is_main_guard(statement.test):
+            self._block(statement.body, frame, conds)
+            self._block(statement.orelse, frame, conds)
+            return
+        text = self._text(frame, statement.test)
+        where = self._where(frame, statement)
+        self._block(statement.body, frame, (*conds, condition("if", text, where)))
+        if statement.orelse:
+            self._block(statement.orelse, frame, (*conds, condition("else", text, where)))
+
+    def _For(self, statement: ast.For | ast.AsyncFor, frame: Frame, conds: Conditions) -> None:
+        self._expr(statement.iter, frame, conds)
+        self.evaluator.bind(statement.target, Opaque("loop variable"), frame)
+        text = f"{self._text(frame, statement.target)} in {self._text(frame, statement.iter)}"
+        loop = condition("for", text, self._where(frame, statement))
+        self._block(statement.body, frame, (*conds, loop))
+        self._block(statement.orelse, frame, conds)
+
+    _AsyncFor = _For
+
+    def _While(self, statement: ast.While, frame: Frame, conds: Conditions) -> None:
+        self._expr(statement.test, frame, conds)
+        loop = condition("while", self._text(frame, statement.test), self._where(frame, statement))
+        self._block(statement.body, frame, (*conds, loop))
+        self._block(statement.orelse, frame, conds)
+
+    def _Try(self, statement: ast.Try, frame: Frame, conds: Conditions) -> None:
+        attempt = condition("try", "", self._where(frame, statement))
+        self._block(statement.body, frame, (*conds, attempt))
+        for handler in statement.handlers:
+            text = self._text(frame, handler.type) if handler.type is not None else ""
+            caught = condition("except", text, self._where(frame, handler))
+            self._block(handler.body, frame, (*conds, caught))
+        self._block(statement.orelse, frame, (*conds, attempt))
+        self._block(statement.finalbody, frame, conds)
+
+    _TryStar = _Try
+
+    def _With(self, statement: ast.With | ast.AsyncWith, frame: Frame,
+              conds: Conditions) -> None:
+        for item in statement.items:
+            self._expr(item.context_expr, frame, conds)
+            if item.optional_vars is not None:
+                self.evaluator.bind(item.optional_vars,
+                                    self.evaluator.eval(item.context_expr, frame), frame)
+        self._block(statement.body, frame, conds)
+
+    _AsyncWith = _With
+
+    def _Match(self, statement: ast.Match, frame: Frame, conds: Conditions) -> None:
+        self._expr(statement.subject, frame, conds)
+        match = condition("match", self._text(frame, statement.subject),
+                          self._where(frame, statement))
+        for case in statement.cases:
+            label = condition("case", self._text(frame, case.pattern),
+                              self._where(frame, case.pattern))
+            self._block(case.body, frame, (*conds, match, label))
+
+    def _FunctionDef(self, statement: ast.FunctionDef | ast.AsyncFunctionDef, frame: Frame,
+                     conds: Conditions) -> None:
+        owner = frame.instance.cls if frame.instance is not None else None
+        info = FunctionInfo(statement, frame.module, None, frame.locals)
+        if owner is not None:
+            frame.locals.setdefault("self", frame.instance)
+        frame.locals[statement.name] = info
+        if all(n.node is not statement for n in self._nested):
+            self._nested.append(info)
+
+    _AsyncFunctionDef = _FunctionDef
+
+    def _ClassDef(self, statement: ast.ClassDef, frame: Frame, conds: Conditions) -> None:
+        return
+
+    def _Import(self, statement: ast.Import | ast.ImportFrom, frame: Frame,
+                conds: Conditions) -> None:
+        imports: dict[str, str] = {}
+        local: dict[str, tuple[str, str | None]] = {}
+        add_import(frame.module, self.loader, statement, imports, local)
+        for name, qualname in imports.items():
+            frame.locals[name] = Ref(qualname)
+        for name in local:
+            frame.module.local_imports.setdefault(name, local[name])
+
+    _ImportFrom = _Import
+
+    # -- calls --------------------------------------------------------------------------
+
+    def _expr(self, expr: ast.expr, frame: Frame, conds: Conditions) -> None:
+        calls = [n for n in ast.walk(expr) if isinstance(n, ast.Call)]
+        calls.sort(key=lambda c: (c.lineno, c.col_offset))
+        for call in calls:
+            self._call(call, frame, conds)
+
+    def _call(self, call: ast.Call, frame: Frame, conds: Conditions) -> None:
+        ev = self.evaluator
+        target = ev.callee(call.func, frame)
+        version = frame.module.version
+        if isinstance(target, SuperInit):
+            if frame.instance is not None and ev.is_node_class(frame.instance.cls):
+                self._node_name(rclpy.NODE_NAMES[("rclpy", "Node")], call, frame, offset=0)
+        elif isinstance(target, Ref):
+            names = rospy.NODE_NAMES if version == 1 else rclpy.NODE_NAMES
+            rows = rospy.ROWS if version == 1 else rclpy.ROWS
+            if target.key in names:
+                self._node_name(names[target.key], call, frame)
+            elif target.key in rows:
+                self._record(rows[target.key], call, frame, conds, version)
+        elif isinstance(target, NodeMethod):
+            self._record(rclpy.NODE_METHODS[target.name], call, frame, conds, 2)
+        elif isinstance(target, FunctionInfo | BoundMethod):
+            self._inline(target, call, frame, conds)
+        elif isinstance(target, ClassInfo):
+            init = ev.method(target, "__init__")
+            if target.module.path not in self.main and \
+                    target not in self._used_classes:
+                self._used_classes.append(target)
+            if init is not None:
+                self._inline(BoundMethod(ev.new(target), init), call, frame, conds)
+
+    def _inline(self, func: FunctionInfo | BoundMethod, call: ast.Call, frame: Frame,
+                conds: Conditions) -> None:
+        info = func.function if isinstance(func, BoundMethod) else func
+        if frame.depth >= MAX_CALL_DEPTH or id(info.node) in self._active:
+            return
+        inner = self.evaluator.call_frame(func, call, frame)
+        self._inlined.add(id(info.node))
+        self._active.add(id(info.node))
+        try:
+            self._block(info.node.body, inner, conds)
+        finally:
+            self._active.discard(id(info.node))
+
+    def _node_name(self, spec: object, call: ast.Call, frame: Frame, offset: int = 0) -> None:
+        ev = self.evaluator
+        name_expr = argument(call, getattr(spec, "name", None))
+        if self.rosname is None and name_expr is not None:
+            self.rosname = text_of(ev.eval(name_expr, frame)).text
+            ns_expr = argument(call, getattr(spec, "namespace", None))
+            if ns_expr is not None:
+                self.namespace = text_of(ev.eval(ns_expr, frame)).text
+            anon_expr = argument(call, getattr(spec, "anonymous", None))
+            if anon_expr is not None:
+                self.anonymous = ev.eval(anon_expr, frame) is True
+
+    def _record(self, spec: PyFunction, call: ast.Call, frame: Frame, conds: Conditions,
+                version: int) -> None:
+        ev = self.evaluator
+        where = self._where(frame, call)
+        base = PrimitiveCall(spec.kind, "?", conditions=conds, location=where)
+        if spec.fixed_type:
+            base.type = spec.fixed_type
+        elif spec.type is not None:
+            base.type = self._type(argument(call, spec.type), frame, version,
+                                   spec.kind.startswith("action"))
+        if spec.queue is not None:
+            queue = _eval(ev, argument(call, spec.queue), frame)
+            base.queue_size = queue if isinstance(queue, int) and not isinstance(
+                queue, bool) else None
+        if spec.latch is not None:
+            base.latch = _eval(ev, argument(call, spec.latch), frame) is True
+        base.latch = base.latch or spec.fixed_latch
+        if spec.qos is not None:
+            base.qos = ev.qos(_eval(ev, argument(call, spec.qos), frame))
+        elif spec.fixed_qos is not None:
+            base.qos = dict(rclpy.PRESETS[spec.fixed_qos])
+        if base.qos is not None and isinstance(base.qos.get("depth"), int):
+            base.queue_size = base.qos["depth"]
+        if spec.callback is not None:
+            base.callback = self._callback(argument(call, spec.callback), frame)
+        if spec.special:
+            for made in self._special(spec, call, frame, base, version):
+                self._add(made)
+            return
+        if spec.fixed_name is not None:
+            base.name = spec.fixed_name
+        elif spec.name is not None:
+            value = _eval(ev, argument(call, spec.name), frame)
+            self._set_name(base, value, version)
+        if spec.value is not None:
+            value = _eval(ev, argument(call, spec.value), frame)
+            base.type = param_type(value)
+            if spec.kind == "declare":
+                ev.declared[base.name.removeprefix("~")] = value
+        self._add(base)
+
+    def _special(self, spec: PyFunction, call: ast.Call, frame: Frame, base: PrimitiveCall,
+                 version: int) -> list[PrimitiveCall]:
+        ev = self.evaluator
+        if spec.special == "tf-listener":
+            qos = ({"tf": rclpy.PRESETS["tf"], "tf_static": rclpy.PRESETS["tf_static"]}
+                   if version == 2 else {})
+            return [replace(base, name=f"/{topic}", qos=qos.get(topic),
+                            queue_size=qos[topic]["depth"] if qos else None)
+                    for topic in ("tf", "tf_static")]
+        made: list[PrimitiveCall] = []
+        if spec.special == "declare-parameters":
+            prefix = text_of(_eval(ev, call.args[0] if call.args else argument(
+                call, _kw("namespace")), frame)).text
+            items = call.args[1] if len(call.args) > 1 else argument(call, _kw("parameters"))
+            for element in _elements(items):
+                pair = element.elts if isinstance(element, ast.Tuple) else [element]
+                name = text_of(ev.eval(pair[0], frame)).text
+                full = f"{prefix}.{name}" if prefix else name
+                value = ev.eval(pair[1], frame) if len(pair) > 1 else None
+                ev.declared[full] = value
+                made.append(replace(base, name=f"~{full}", type=param_type(value)))
+        elif spec.special == "parameter-names":
+            items = call.args[0] if call.args else argument(call, _kw("names"))
+            for element in _elements(items):
+                made.append(replace(base, name=_param_name(text_of(ev.eval(element, frame)))))
+        elif spec.special == "set-parameters":
+            items = call.args[0] if call.args else argument(call, _kw("parameter_list"))
+            for element in _elements(items):
+                if isinstance(element, ast.Call) and element.args:
+                    name = _param_name(text_of(ev.eval(element.args[0], frame)))
+                    value_expr = element.args[2] if len(element.args) > 2 else argument(
+                        element, _kw("value"))
+                    made.append(replace(base, name=name, type=param_type(
+                        _eval(ev, value_expr, frame))))
+        if not made:
+            made.append(replace(base, name="~?"))
+        return made
+
+    def _set_name(self, call: PrimitiveCall, value: object, version: int) -> None:
+        ev = self.evaluator
+        text = text_of(value)
+        if isinstance(value, ParamValue):
+            call.name_param = _param_name(Value.of(value.name)) if version == 2 else value.name
+            default = value.default if value.default is not None else ev.declared.get(
+                value.name.removeprefix("~"))
+            if isinstance(default, Value) and default.is_known:
+                call.name_default = default.text
+        else:
+            params = [p.origin for p in text.parts if isinstance(p, Unknown)]
+            if len(params) == 1 and params[0].startswith("parameter "):
+                name = params[0].removeprefix("parameter ")
+                call.name_param = _param_name(Value.of(name)) if version == 2 else name
+        if version == 2 and call.kind in _PARAM_KINDS:
+            call.name = _param_name(text)
+        elif version == 2 and text.text.startswith("~/"):
+            call.name = "~" + text.text[2:]
+        else:
+            call.name = text.text or "?"
+
+    def _type(self, expr: ast.expr | None, frame: Frame, version: int,
+              action: bool) -> str | None:
+        if expr is None:
+            return None
+        value = self.evaluator.eval(expr, frame)
+        if isinstance(value, Ref):
+            return ros_type(value.qualname, version, action) or "?"
+        return "?"
+
+    def _callback(self, expr: ast.expr | None, frame: Frame) -> str | None:
+        if expr is None or isinstance(expr, ast.Lambda):
+            return None
+        value = self.evaluator.eval(expr, frame)
+        if isinstance(value, BoundMethod):
+            return f"{value.instance.cls.name}.{value.function.node.name}"
+        if isinstance(value, FunctionInfo):
+            return value.qualname
+        if isinstance(expr, ast.Attribute) and isinstance(value, Opaque):
+            return expr.attr
+        return None
+
+    def _add(self, call: PrimitiveCall) -> None:
+        self.calls.append(call)
+
+    # -- text and places ----------------------------------------------------------------
+
+    def _text(self, frame: Frame, node: ast.AST) -> str:
+        return source_text(frame.module.text, node)
+
+    def _where(self, frame: Frame, node: ast.AST) -> Location:
+        return self.loader.location(frame.module.path, getattr(node, "lineno", 0),
+                                    getattr(node, "col_offset", -1) + 1)
+
+
+def _eval(ev: Evaluator, expr: ast.expr | None, frame: Frame) -> object:
+    return None if expr is None else ev.eval(expr, frame)
+
+
+def _kw(keyword: str) -> object:
+    from .api import Arg
+
+    return Arg(None, keyword)
+
+
+def _elements(expr: ast.expr | None) -> list[ast.expr]:
+    if isinstance(expr, ast.List | ast.Tuple):
+        return list(expr.elts)
+    return []
+
+
+def _param_name(text: Value) -> str:
+    """A ROS 2 parameter name as a private name of its node (``~use_sim_time``)."""
+    name = text.text
+    return name if name.startswith(("~", "/")) else "~" + name
