@@ -8,7 +8,7 @@ from __future__ import annotations
 import os
 from collections.abc import Mapping
 
-from . import cmake, graph, launch
+from . import cmake, graph, launch, pysetup
 from . import diagnostics as diag
 from .extract import extract_node
 from .launch.model import LaunchModel
@@ -65,7 +65,9 @@ def analyse(project: Project, environment: Mapping[str, str] | None = None) -> M
 
 def _analyse_package(package: Package, workspace: Workspace) -> list[diag.Diagnostic]:
     found: list[diag.Diagnostic] = []
-    if package.build_type in ("catkin", "ament_cmake", "cmake"):
+    if package.build_type == "ament_python":
+        package.nodes, found = pysetup.parse_package(package, workspace)
+    elif package.build_type in ("catkin", "ament_cmake", "cmake"):
         package.nodes, found = cmake.parse_package(package, workspace)
     for node in package.nodes:
         found.extend(extract_node(node, workspace))

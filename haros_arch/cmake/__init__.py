@@ -1,6 +1,9 @@
 """CMake front end: which runnable nodes a CMake-built package has, and their sources.
 
-Entry point: ``parse_package(package, workspace)``.
+Entry point: ``parse_package(package, workspace)``. It interprets the package's
+CMakeLists.txt (with its includes and subdirectories), then turns what was recorded
+into nodes: executables, ROS 2 components, nodelets (through ``haros_arch.plugins``)
+and Python scripts.
 """
 
 from __future__ import annotations
@@ -8,16 +11,17 @@ from __future__ import annotations
 import os
 
 from .. import diagnostics as diag
+from .. import plugins
 from ..diagnostics import Diagnostic
 from ..files import read_text
 from ..model.source import Node, Package
 from ..workspace import Workspace
-from .interpreter import Interpreter, Target
+from .interpreter import Interpreter
 from .lexer import CMakeSyntaxError, Invocation, tokenize
+from .nodes import SourceMap, components, executables, scripts
+from .targets import Target
 
-__all__ = ["Target", "parse_package", "read_commands", "targets_of"]
-
-CPP_SUFFIXES = (".cpp", ".cc", ".cxx", ".c++", ".C", ".c")
+__all__ = ["Target", "interpret", "parse_package", "read_commands", "targets_of"]
 
 
 def read_commands(path: str, workspace: Workspace) -> tuple[list[Invocation], list[Diagnostic]]:
@@ -26,55 +30,63 @@ def read_commands(path: str, workspace: Workspace) -> tuple[list[Invocation], li
     if text is None:
         return [], found
     try:
-        return tokenize(text), found
+        return tokenize(text, path), found
     except CMakeSyntaxError as err:
         # keep what precedes the error: tokenise the text up to the failing line
         head = "\n".join(text.splitlines()[: max(err.line - 1, 0)])
         try:
-            commands = tokenize(head)
+            commands = tokenize(head, path)
         except CMakeSyntaxError:
             commands = []
         where = workspace.location(path, err.line, err.column)
         return commands, [*found, diag.make("CMAKE_SYNTAX", where, detail=err.message)]
 
 
-def targets_of(package: Package, workspace: Workspace) -> tuple[list[Target], list[Diagnostic]]:
-    """The build targets of a package's top-level CMakeLists.txt."""
+def interpret(package: Package, workspace: Workspace) -> tuple[Interpreter, list[Diagnostic]]:
+    """Run the package's top-level CMakeLists.txt (and what it includes)."""
+    found: list[Diagnostic] = []
+
+    def reader(path: str) -> list[Invocation]:
+        commands, problems = read_commands(path, workspace)
+        found.extend(problems)
+        return commands
+
+    interpreter = Interpreter(package.root, workspace.environment, reader, workspace.location)
     path = os.path.join(package.root, "CMakeLists.txt")
-    if not os.path.isfile(path):
-        return [], []
-    commands, found = read_commands(path, workspace)
-    interpreter = Interpreter(package.root, workspace.environment, file=path,
-                              location=workspace.location)
-    interpreter.run(commands)
+    if os.path.isfile(path):
+        interpreter.run_file(reader(path))
+    return interpreter, found + interpreter.diagnostics
+
+
+def targets_of(package: Package, workspace: Workspace) -> tuple[list[Target], list[Diagnostic]]:
+    """The build targets of a package's CMake files."""
+    interpreter, found = interpret(package, workspace)
     return list(interpreter.targets.values()), found
 
 
 def parse_package(package: Package, workspace: Workspace) -> tuple[list[Node], list[Diagnostic]]:
-    """The runnable C++ nodes (executables) a package builds, with their sources."""
-    targets, found = targets_of(package, workspace)
-    nodes: list[Node] = []
-    for target in targets:
-        if target.kind != "executable":
-            continue
-        sources = []
-        for source in target.sources:
-            if not source.endswith(CPP_SUFFIXES):
-                continue
-            if not os.path.isfile(source):
-                found.append(diag.make(
-                    "CMAKE_SOURCE_MISSING",
-                    workspace.location(target.file, target.line, target.column),
-                    path=workspace.relpath(source), target=target.name))
-                continue
-            sources.append(workspace.relpath(source))
-        nodes.append(Node(
-            package=package.name,
-            executable=target.output_name or target.name,
-            kind="executable",
-            language="cpp",
-            sources=sources,
-            conditions=target.conditions,
-            location=workspace.location(target.file, target.line, target.column),
-        ))
-    return nodes, found
+    """The runnable nodes a CMake-built package has, with their sources."""
+    interpreter, found = interpret(package, workspace)
+    sources = SourceMap(interpreter, workspace)
+    nodes = executables(interpreter, package, workspace, sources)
+    nodes.extend(components(interpreter, package, workspace, sources))
+    libraries: dict[str, plugins.Library] = {}
+    for target in interpreter.targets.values():
+        if target.kind == "library":
+            library = plugins.Library(sources.linked(target), target.conditions)
+            libraries.setdefault(target.name, library)
+            libraries.setdefault(target.output_name or target.name, library)
+    nodelets, problems = plugins.nodelets(package, workspace, libraries)
+    nodes.extend(nodelets)
+    found.extend(problems)
+    found.extend(sources.diagnostics)
+    nodes.extend(scripts(interpreter, package, workspace, found))
+    return _unique(nodes), found
+
+
+def _unique(nodes: list[Node]) -> list[Node]:
+    """One node per name: the first declaration wins (CMake refuses duplicate targets)."""
+    seen: dict[str, Node] = {}
+    for node in nodes:
+        seen.setdefault(node.executable, node)
+    return list(seen.values())

@@ -1,69 +1,161 @@
-"""Evaluate CMake commands far enough to know a package's build targets.
+"""Evaluate CMake files far enough to know a package's build targets.
 
-Variables (with ``${}`` and ``$ENV{}`` references, nested), list splitting of unquoted
-arguments, ``set``/``unset``/``list(APPEND)``, ``project``, ``if``/``elseif``/``else``
-(known conditions decide, unknown ones make what they guard conditional), ``foreach``,
-and the target commands. Commands it does not know are skipped quietly: they cannot
-create runnable nodes.
+The interpreter keeps CMake's scopes (directory and function scopes, ``PARENT_SCOPE``,
+the cache), runs control flow (``if``/``elseif``/``else``, ``foreach``, bounded
+``while``, ``break``/``continue``/``return``), user ``macro``s and ``function``s,
+``include()`` of package-local files and ``add_subdirectory``. Commands are dispatched
+by name through ``commands.HANDLERS``; commands it does not know are skipped quietly
+(they cannot create runnable nodes). A condition that depends on something unknown
+(an environment setting, a ``find_package`` result) does not drop what it guards: the
+guarded commands run with that condition attached. Work is bounded: a step budget, a
+loop bound and a nesting depth, each reported once when exceeded.
 """
 
 from __future__ import annotations
 
+import contextlib
 import os
 import re
+from collections import ChainMap
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
+from .. import diagnostics as diag
+from ..diagnostics import Diagnostic
 from ..model.conditions import Condition
 from ..model.location import Location
+from .commands import HANDLERS
 from .conditions import Evaluator
 from .lexer import Argument, Invocation
+from .listops import split_list
+from .targets import Program, Registration, Target
 
-_VAR_REF = re.compile(r"\$(ENV)?\{([^${}]*)\}")
+_VAR_REF = re.compile(r"\$(ENV|CACHE)?\{([^${}]*)\}")
 MAX_STEPS = 200_000
+MAX_LOOP = 10_000
+MAX_DEPTH = 64
+BINARY_ROOT = "/<build>"  # CMAKE_BINARY_DIR: generated files have no source to read
+
+Reader = Callable[[str], list[Invocation]]
+Locator = Callable[[str, int, int], Location]
 
 
 @dataclass
-class Target:
-    """A build target: ``add_executable`` or ``add_library``."""
-
-    name: str
-    kind: str  # "executable" | "library"
-    sources: list[str] = field(default_factory=list)  # absolute paths
-    output_name: str | None = None
-    conditions: tuple[Condition, ...] = ()
-    line: int = 0
-    column: int = 0
-    file: str = ""
+class Definition:
+    kind: str  # "macro" | "function"
+    params: list[str]
+    body: list[Invocation]
 
 
-@dataclass
+class _Break(Exception):
+    pass
+
+
+class _Continue(Exception):
+    pass
+
+
+class _Return(Exception):
+    pass
+
+
+class _Stop(Exception):
+    pass
+
+
 class Interpreter:
-    source_dir: str
-    environment: Mapping[str, str]
-    variables: dict[str, str] = field(default_factory=dict)
-    targets: dict[str, Target] = field(default_factory=dict)
-    conditions: list[Condition] = field(default_factory=list)
-    location: Callable[[str, int, int], Location] | None = None
-    file: str = ""
-    steps: int = 0
+    def __init__(self, source_dir: str, environment: Mapping[str, str],
+                 reader: Reader | None = None, location: Locator | None = None) -> None:
+        self.package_root = os.path.realpath(source_dir)
+        self.environment = environment
+        self.reader = reader or (lambda path: [])
+        self.location = location
+        self.scopes: list[dict[str, str]] = [{}]
+        self.cache: dict[str, str] = {}
+        self.targets: dict[str, Target] = {}
+        self.programs: list[Program] = []
+        self.program_dirs: list[Program] = []
+        self.registrations: list[Registration] = []
+        self.definitions: dict[str, Definition] = {}
+        self.conditions: list[Condition] = []  # enclosing if / while not decided
+        self.returns: list[Condition] = []  # return() under a condition not decided
+        self.diagnostics: list[Diagnostic] = []
+        self.steps = 0
+        self.depth = 0
+        self._enter_directory(source_dir)
+        scope = self.scopes[-1]
+        scope.update({"CMAKE_SOURCE_DIR": source_dir, "PROJECT_SOURCE_DIR": source_dir,
+                      "CMAKE_BINARY_DIR": BINARY_ROOT, "PROJECT_BINARY_DIR": BINARY_ROOT,
+                      # a Linux build, as ROS's tier-1 platforms
+                      "UNIX": "1", "WIN32": "", "APPLE": "", "MSVC": "", "ANDROID": "",
+                      "CMAKE_SYSTEM_NAME": "Linux", "CMAKE_HOST_UNIX": "1"})
 
-    def __post_init__(self) -> None:
-        for var in ("CMAKE_SOURCE_DIR", "CMAKE_CURRENT_SOURCE_DIR", "PROJECT_SOURCE_DIR",
-                    "CMAKE_CURRENT_LIST_DIR"):
-            self.variables[var] = self.source_dir
+    # -- scopes ---------------------------------------------------------------
+    def get(self, name: str) -> str | None:
+        value = self.scopes[-1].get(name)
+        return self.cache.get(name) if value is None else value
+
+    def set(self, name: str, value: str) -> None:
+        self.scopes[-1][name] = value
+
+    def unset(self, name: str) -> None:
+        self.scopes[-1].pop(name, None)
+
+    def set_parent(self, name: str, value: str | None) -> None:
+        if len(self.scopes) < 2:
+            return
+        if value is None:
+            self.scopes[-2].pop(name, None)
+        else:
+            self.scopes[-2][name] = value
+
+    def current_conditions(self) -> tuple[Condition, ...]:
+        return (*self.returns, *self.conditions)
+
+    @property
+    def variables(self) -> Mapping[str, str]:
+        return ChainMap(self.scopes[-1], self.cache)
+
+    @property
+    def source_dir(self) -> str:
+        return self.get("CMAKE_CURRENT_SOURCE_DIR") or self.package_root
+
+    def _enter_directory(self, folder: str) -> None:
+        rel = os.path.relpath(folder, self.package_root)
+        binary = os.path.normpath(os.path.join(BINARY_ROOT, rel))
+        self.scopes[-1].update({
+            "CMAKE_CURRENT_SOURCE_DIR": folder, "CMAKE_CURRENT_LIST_DIR": folder,
+            "CMAKE_CURRENT_LIST_FILE": os.path.join(folder, "CMakeLists.txt"),
+            "CMAKE_CURRENT_BINARY_DIR": binary})
+
+    def inside_package(self, path: str) -> bool:
+        real = os.path.realpath(path)
+        return real == self.package_root or real.startswith(self.package_root + os.sep)
+
+    def path(self, text: str) -> str:
+        """A path argument, relative to the current source folder."""
+        if text.startswith("$<"):
+            return text
+        return os.path.normpath(os.path.join(self.source_dir, text))
 
     # -- values ---------------------------------------------------------------
     def expand(self, text: str) -> str:
-        for _ in range(100):
+        if "$" not in text:
+            return text
+        for _ in range(1000):
             match = _VAR_REF.search(text)
             if not match:
                 return text
-            if match.group(1):
-                value = self.environment.get(match.group(2), "")
+            kind, name = match.group(1), match.group(2)
+            if kind == "ENV":
+                value = self.environment.get(name, "")
+            elif kind == "CACHE":
+                value = self.cache.get(name, "")
             else:
-                value = self.variables.get(match.group(2), "")
+                value = self.get(name) or ""
             text = text[:match.start()] + value + text[match.end():]
+            if len(text) > 1_000_000:
+                break
         return text
 
     def arguments(self, args: tuple[Argument, ...]) -> list[str]:
@@ -75,12 +167,24 @@ class Interpreter:
             elif arg.kind == "quoted":
                 values.append(self.expand(arg.text))
             else:
-                expanded = self.expand(arg.text)
                 values.extend(item.replace("\\;", ";")
-                              for item in re.split(r"(?<!\\);", expanded) if item)
+                              for item in split_list(self.expand(arg.text)))
         return values
 
+    def where(self, command: Invocation) -> Location:
+        if self.location is not None:
+            return self.location(command.file, command.line, command.column)
+        return Location(file=command.file, line=command.line, column=command.column)
+
+    def limit(self, command: Invocation, detail: str) -> None:
+        self.diagnostics.append(diag.make("CMAKE_LIMIT", self.where(command), detail=detail))
+
     # -- execution ------------------------------------------------------------
+    def run_file(self, commands: list[Invocation]) -> None:
+        """Run a top-level file; stops quietly after a reported limit."""
+        with contextlib.suppress(_Stop, _Return, _Break, _Continue):
+            self.run(commands)
+
     def run(self, commands: list[Invocation]) -> None:
         index = 0
         while index < len(commands):
@@ -88,16 +192,27 @@ class Interpreter:
 
     def step(self, commands: list[Invocation], index: int) -> int:
         self.steps += 1
-        if self.steps > MAX_STEPS:
-            return len(commands)
         command = commands[index]
-        if command.name == "if":
-            return self.run_if(commands, index)
-        if command.name == "foreach":
-            return self.run_foreach(commands, index)
-        handler = getattr(self, "cmd_" + command.name, None)
+        if self.steps > MAX_STEPS:
+            self.limit(command, f"more than {MAX_STEPS} commands evaluated")
+            raise _Stop
+        name = command.name
+        block = _BLOCKS.get(name)
+        if block is not None:
+            return block(self, commands, index)
+        if name == "break":
+            raise _Break
+        if name == "continue":
+            raise _Continue
+        if name == "return":
+            raise _Return
+        definition = self.definitions.get(name)
+        if definition is not None:
+            self.call(definition, command)
+            return index + 1
+        handler = HANDLERS.get(name[1:] if name.startswith("_") else name)
         if handler is not None:
-            handler(command, self.arguments(command.args))
+            handler(self, command, self.arguments(command.args))
         return index + 1
 
     def block_end(self, commands: list[Invocation], index: int, opener: str,
@@ -119,128 +234,224 @@ class Interpreter:
         marks.append(len(commands))
         return marks
 
+    def evaluate(self, args: list[str]) -> bool | None:
+        evaluator = Evaluator(self.variables, self.targets, self.package_root,
+                              lambda name: name.lower() in HANDLERS
+                              or name.lower() in self.definitions)
+        return evaluator.evaluate(args)
+
     def run_if(self, commands: list[Invocation], index: int) -> int:
         marks = self.block_end(commands, index, "if", "endif", ("elseif", "else"))
         branches = [index, *marks[:-1]]
         end = marks[-1]
         pushed = 0
-        for number, start in enumerate(branches):
-            stop = marks[number]
-            head = commands[start]
-            if head.name == "else":
-                self.run(commands[start + 1:stop])
-                break
-            text = " ".join(a.text for a in head.args)
-            evaluator = Evaluator(self.variables, self.targets, self.source_dir,
-                                  lambda name: hasattr(self, "cmd_" + name.lower()))
-            decided = evaluator.evaluate(self.arguments(head.args))
-            if decided is None:
-                self.conditions.append(Condition(text, "source", head.name, self._where(head)))
-                pushed += 1
-                self.run(commands[start + 1:stop])
-                self.conditions[-1] = Condition(
-                    text, "source", "else", self._where(head))
-                continue
-            if decided:
-                self.run(commands[start + 1:stop])
-                break
-        del self.conditions[len(self.conditions) - pushed:]
+        returned: list[Condition] = []
+        try:
+            for number, start in enumerate(branches):
+                stop = marks[number]
+                head = commands[start]
+                if head.name == "else":
+                    self.run(commands[start + 1:stop])
+                    break
+                decided = self.evaluate(self.arguments(head.args))
+                if decided is None:
+                    text = " ".join(a.text for a in head.args)
+                    self.conditions.append(Condition(text, "source", head.name,
+                                                     self.where(head)))
+                    pushed += 1
+                    try:
+                        self.run(commands[start + 1:stop])
+                    except _Return:  # what follows runs only when this did not hold
+                        returned.append(Condition(f"NOT ({text})", "source", head.name,
+                                                  self.where(head)))
+                    self.conditions[-1] = Condition(text, "source", "else", self.where(head))
+                    continue
+                if decided:
+                    self.run(commands[start + 1:stop])
+                    break
+        finally:
+            del self.conditions[len(self.conditions) - pushed:]
+        self.returns.extend(returned)
         return end + 1
 
     def run_foreach(self, commands: list[Invocation], index: int) -> int:
         end = self.block_end(commands, index, "foreach", "endforeach")[-1]
         args = self.arguments(commands[index].args)
-        if not args:
-            return end + 1
-        var, items = args[0], args[1:]
-        if items[:1] == ["RANGE"]:
-            numbers = [int(x) for x in items[1:] if x.lstrip("-").isdigit()]
-            start, stop, step = (0, numbers[0], 1) if len(numbers) == 1 else (
-                *numbers[:2], numbers[2] if len(numbers) > 2 else 1)
-            items = [str(n) for n in range(start, stop + 1, step or 1)]
-        elif items[:1] == ["IN"]:
-            values: list[str] = []
-            mode = "ITEMS"
-            for item in items[1:]:
-                if item in ("LISTS", "ITEMS"):
-                    mode = item
-                elif mode == "LISTS":
-                    values.extend(x for x in self.variables.get(item, "").split(";") if x)
-                else:
-                    values.append(item)
-            items = values
-        for item in items:
-            self.variables[var] = item
-            self.run(commands[index + 1:end])
+        body = commands[index + 1:end]
+        for assignment in self._foreach_items(commands[index], args):
+            for name, value in assignment:
+                self.set(name, value)
+            try:
+                self.run(body)
+            except _Break:
+                break
+            except _Continue:
+                continue
         return end + 1
 
-    def _where(self, command: Invocation) -> Location:
-        if self.location is not None:
-            return self.location(self.file, command.line, command.column)
-        return Location(file=self.file, line=command.line, column=command.column)
+    def _foreach_items(self, command: Invocation,
+                       args: list[str]) -> list[list[tuple[str, str]]]:
+        if "IN" in args:
+            split = args.index("IN")
+            names, rest = args[:split], args[split + 1:]
+        else:
+            names, rest = args[:1], args[1:]
+        if not names:
+            return []
+        if rest[:1] == ["RANGE"]:
+            numbers = [int(x) for x in rest[1:4] if re.fullmatch(r"-?\d+", x)]
+            if not numbers:
+                return []
+            start, stop, step = (0, numbers[0], 1) if len(numbers) == 1 else (
+                numbers[0], numbers[1], numbers[2] if len(numbers) > 2 else 1)
+            values = range(start, stop + 1, step or 1)
+            if len(values) > MAX_LOOP:
+                self.limit(command, f"foreach RANGE of more than {MAX_LOOP} items")
+                values = values[:MAX_LOOP]
+            return [[(names[0], str(n))] for n in values]
+        if rest[:1] == ["ZIP_LISTS"]:
+            lists = [split_list(self.get(name)) for name in rest[1:]]
+            size = max((len(items) for items in lists), default=0)
+            if len(names) == 1:
+                names = [f"{names[0]}_{i}" for i in range(len(lists))]
+            return [[(name, items[i] if i < len(items) else "")
+                     for name, items in zip(names, lists, strict=False)]
+                    for i in range(size)]
+        values_list: list[str] = []
+        mode = "ITEMS" if "IN" not in args else ""
+        for item in rest:
+            if item in ("LISTS", "ITEMS") and "IN" in args:
+                mode = item
+            elif mode == "LISTS":
+                values_list.extend(split_list(self.get(item)))
+            elif mode == "ITEMS":
+                values_list.append(item)
+        return [[(names[0], value)] for value in values_list]
 
-    # -- commands -------------------------------------------------------------
-    def cmd_set(self, command: Invocation, args: list[str]) -> None:
-        if not args:
-            return
-        values = args[1:]
-        for keyword in ("PARENT_SCOPE", "CACHE"):
-            if keyword in values:
-                values = values[:values.index(keyword)]
-        self.variables[args[0]] = ";".join(values)
+    def run_while(self, commands: list[Invocation], index: int) -> int:
+        end = self.block_end(commands, index, "while", "endwhile")[-1]
+        head, body = commands[index], commands[index + 1:end]
+        for _ in range(MAX_LOOP):
+            decided = self.evaluate(self.arguments(head.args))
+            if decided is False:
+                return end + 1
+            if decided is None:  # run the body once, under the condition
+                text = " ".join(a.text for a in head.args)
+                self.conditions.append(Condition(text, "source", "while", self.where(head)))
+                try:
+                    self.run(body)
+                except (_Break, _Continue):
+                    pass
+                finally:
+                    self.conditions.pop()
+                return end + 1
+            try:
+                self.run(body)
+            except _Break:
+                return end + 1
+            except _Continue:
+                continue
+        self.limit(head, f"while loop ran {MAX_LOOP} times")
+        return end + 1
 
-    def cmd_option(self, command: Invocation, args: list[str]) -> None:
-        if args and args[0] not in self.variables:
-            self.variables[args[0]] = args[2] if len(args) > 2 else "OFF"
-
-    def cmd_unset(self, command: Invocation, args: list[str]) -> None:
+    def define(self, commands: list[Invocation], index: int) -> int:
+        kind = commands[index].name
+        end = self.block_end(commands, index, kind, "end" + kind)[-1]
+        args = self.arguments(commands[index].args)
         if args:
-            self.variables.pop(args[0], None)
+            self.definitions[args[0].lower()] = Definition(
+                kind, args[1:], commands[index + 1:end])
+        return end + 1
 
-    def cmd_list(self, command: Invocation, args: list[str]) -> None:
-        if len(args) >= 2 and args[0] == "APPEND":
-            current = [x for x in self.variables.get(args[1], "").split(";") if x]
-            self.variables[args[1]] = ";".join(current + args[2:])
-
-    def cmd_project(self, command: Invocation, args: list[str]) -> None:
-        if args:
-            self.variables["PROJECT_NAME"] = args[0]
-            self.variables["CMAKE_PROJECT_NAME"] = args[0]
-            self.variables[f"{args[0]}_SOURCE_DIR"] = self.source_dir
-
-    def cmd_add_executable(self, command: Invocation, args: list[str]) -> None:
-        self._add_target(command, args, "executable",
-                         ("WIN32", "MACOSX_BUNDLE", "EXCLUDE_FROM_ALL"))
-
-    def cmd_add_library(self, command: Invocation, args: list[str]) -> None:
-        self._add_target(command, args, "library",
-                         ("STATIC", "SHARED", "MODULE", "OBJECT", "EXCLUDE_FROM_ALL"))
-
-    def _add_target(self, command: Invocation, args: list[str], kind: str,
-                    flags: tuple[str, ...]) -> None:
-        if not args or "IMPORTED" in args or "ALIAS" in args or "INTERFACE" in args[1:2]:
+    def call(self, definition: Definition, command: Invocation) -> None:
+        if self.depth >= MAX_DEPTH:
+            self.limit(command, f"calls nested deeper than {MAX_DEPTH}")
             return
-        sources = [self._path(a) for a in args[1:] if a not in flags]
-        self.targets[args[0]] = Target(args[0], kind, sources, None,
-                                       tuple(self.conditions), command.line,
-                                       command.column, self.file)
+        args = self.arguments(command.args)
+        named = dict(zip(definition.params, args, strict=False))
+        extra = args[len(definition.params):]
+        values = {**named, "ARGC": str(len(args)), "ARGV": ";".join(args),
+                  "ARGN": ";".join(extra)}
+        values.update((f"ARGV{i}", arg) for i, arg in enumerate(args))
+        self.depth += 1
+        frame = len(self.returns)
+        try:
+            if definition.kind == "macro":
+                self.run([_substitute(c, values) for c in definition.body])
+            else:
+                self.scopes.append(dict(self.scopes[-1]))
+                self.scopes[-1].update(values)
+                try:
+                    self.run(definition.body)
+                except _Return:
+                    pass
+                finally:
+                    self.scopes.pop()
+        finally:
+            self.depth -= 1
+            if definition.kind == "function":
+                del self.returns[frame:]
 
-    def cmd_target_sources(self, command: Invocation, args: list[str]) -> None:
-        if args and args[0] in self.targets:
-            keywords = ("PRIVATE", "PUBLIC", "INTERFACE")
-            self.targets[args[0]].sources.extend(
-                self._path(a) for a in args[1:] if a not in keywords)
+    def include(self, command: Invocation, path: str) -> bool:
+        """Run a package-local file in the current scope; False if not read."""
+        if not (os.path.isfile(path) and self.inside_package(path)):
+            return False
+        if self.depth >= MAX_DEPTH:
+            self.limit(command, f"include() nested deeper than {MAX_DEPTH}")
+            return True
+        saved = {k: self.get(k) for k in ("CMAKE_CURRENT_LIST_DIR", "CMAKE_CURRENT_LIST_FILE")}
+        self.set("CMAKE_CURRENT_LIST_DIR", os.path.dirname(path))
+        self.set("CMAKE_CURRENT_LIST_FILE", path)
+        self.depth += 1
+        frame = len(self.returns)
+        try:
+            self.run(self.reader(path))
+        except _Return:
+            pass
+        finally:
+            self.depth -= 1
+            del self.returns[frame:]
+            for key, value in saved.items():
+                self.set(key, value or "")
+        return True
 
-    def cmd_set_target_properties(self, command: Invocation, args: list[str]) -> None:
-        if "PROPERTIES" not in args:
+    def add_subdirectory(self, command: Invocation, folder: str) -> None:
+        listfile = os.path.join(folder, "CMakeLists.txt")
+        if not (os.path.isfile(listfile) and self.inside_package(listfile)):
             return
-        split = args.index("PROPERTIES")
-        props = args[split + 1:]
-        for key, value in zip(props[::2], props[1::2], strict=False):
-            if key == "OUTPUT_NAME":
-                for name in args[:split]:
-                    if name in self.targets:
-                        self.targets[name].output_name = value
+        if self.depth >= MAX_DEPTH:
+            self.limit(command, f"add_subdirectory() nested deeper than {MAX_DEPTH}")
+            return
+        self.scopes.append(dict(self.scopes[-1]))
+        self._enter_directory(folder)
+        self.depth += 1
+        frame = len(self.returns)
+        try:
+            self.run(self.reader(listfile))
+        except _Return:
+            pass
+        finally:
+            self.depth -= 1
+            del self.returns[frame:]
+            self.scopes.pop()
 
-    def _path(self, text: str) -> str:
-        return os.path.normpath(os.path.join(self.source_dir, text))
+
+def _substitute(command: Invocation, values: Mapping[str, str]) -> Invocation:
+    """Macro arguments are text replacements of ``${param}`` in the body."""
+    def replace(text: str) -> str:
+        if "${" not in text:
+            return text
+        return re.sub(r"\$\{([A-Za-z0-9_]+)\}",
+                      lambda m: values.get(m.group(1), m.group(0)), text)
+
+    args = tuple(arg if arg.kind == "bracket" else Argument(replace(arg.text), arg.kind)
+                 for arg in command.args)
+    return Invocation(command.name, args, command.line, command.column, command.file)
+
+
+_BLOCKS: dict[str, Callable[[Interpreter, list[Invocation], int], int]] = {
+    "if": Interpreter.run_if, "foreach": Interpreter.run_foreach,
+    "while": Interpreter.run_while, "macro": Interpreter.define,
+    "function": Interpreter.define,
+}
+

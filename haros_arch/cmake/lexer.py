@@ -3,7 +3,8 @@
 Handles quoted arguments (escapes, line continuations), unquoted arguments (with
 nested parentheses), bracket arguments ``[==[ ... ]==]``, line comments and bracket
 comments ``#[[ ... ]]``. Errors raise ``CMakeSyntaxError`` with line and column; the
-caller keeps the commands read before it.
+caller keeps the commands read before it. Scanning is regex-driven: a workspace has
+hundreds of CMake files and this runs on all of them.
 """
 
 from __future__ import annotations
@@ -27,6 +28,7 @@ class Invocation:
     args: tuple[Argument, ...]
     line: int
     column: int
+    file: str = ""
 
 
 class CMakeSyntaxError(Exception):
@@ -37,7 +39,19 @@ class CMakeSyntaxError(Exception):
 
 _IDENT = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
 _BRACKET_OPEN = re.compile(r"\[(=*)\[")
-_ESCAPES = {"t": "\t", "n": "\n", "r": "\r", ";": "\\;"}
+_SPACE = re.compile(r"[ \t\r\n]+")
+_INLINE_SPACE = re.compile(r"[ \t\r]+")
+_LINE_COMMENT = re.compile(r"#[^\n]*")
+_QUOTED = re.compile(r'"((?:[^"\\]|\\.)*)"', re.S)
+_UNQUOTED = re.compile(r'(?:[^\s()#"\\]|\\.)(?:[^\s()#\\]|\\.)*', re.S)
+_ESCAPE = re.compile(r"\\(.)", re.S)
+_ESCAPES = {"t": "\t", "n": "\n", "r": "\r", ";": "\\;", "\n": ""}
+
+
+def _unescape(text: str) -> str:
+    if "\\" not in text:
+        return text
+    return _ESCAPE.sub(lambda m: _ESCAPES.get(m.group(1), m.group(1)), text)
 
 
 class _Scanner:
@@ -54,50 +68,43 @@ class _Scanner:
     def error(self, message: str) -> CMakeSyntaxError:
         return CMakeSyntaxError(message, self.line, self.column)
 
-    def advance(self, count: int) -> str:
-        chunk = self.text[self.pos:self.pos + count]
-        for offset, char in enumerate(chunk):
-            if char == "\n":
-                self.line += 1
-                self.line_start = self.pos + offset + 1
-        self.pos += count
-        return chunk
+    def move_to(self, end: int) -> None:
+        newlines = self.text.count("\n", self.pos, end)
+        if newlines:
+            self.line += newlines
+            self.line_start = self.text.rindex("\n", self.pos, end) + 1
+        self.pos = end
 
-    def peek(self, offset: int = 0) -> str:
-        index = self.pos + offset
-        return self.text[index] if index < len(self.text) else ""
+    def peek(self) -> str:
+        return self.text[self.pos] if self.pos < len(self.text) else ""
 
     def skip_space_and_comments(self, newlines: bool = True) -> None:
-        while self.pos < len(self.text):
-            char = self.peek()
-            if char in " \t\r" or (newlines and char == "\n"):
-                self.advance(1)
-            elif char == "#":
-                self.skip_comment()
-            else:
+        space = _SPACE if newlines else _INLINE_SPACE
+        while True:
+            match = space.match(self.text, self.pos)
+            if match:
+                self.move_to(match.end())
+            if self.peek() != "#":
                 return
-
-    def skip_comment(self) -> None:
-        bracket = _BRACKET_OPEN.match(self.text, self.pos + 1)
-        if bracket:
-            self.read_bracket(start=self.pos + 1, equals=bracket.group(1))
-            return
-        end = self.text.find("\n", self.pos)
-        self.advance((end if end >= 0 else len(self.text)) - self.pos)
+            bracket = _BRACKET_OPEN.match(self.text, self.pos + 1)
+            if bracket:
+                self.read_bracket(self.pos + 1, bracket.group(1))
+            else:
+                self.move_to(_LINE_COMMENT.match(self.text, self.pos).end())  # type: ignore[union-attr]
 
     def read_bracket(self, start: int, equals: str) -> str:
         line, column = self.line, self.column
-        self.advance(start - self.pos + len(equals) + 2)
+        self.move_to(start + len(equals) + 2)
         close = "]" + equals + "]"
         end = self.text.find(close, self.pos)
         if end < 0:
             raise CMakeSyntaxError("unterminated bracket argument or comment", line, column)
         body = self.text[self.pos:end]
-        self.advance(end - self.pos + len(close))
+        self.move_to(end + len(close))
         return body[1:] if body.startswith("\n") else body
 
 
-def tokenize(text: str) -> list[Invocation]:
+def tokenize(text: str, file: str = "") -> list[Invocation]:
     """All command invocations of a CMake file, in order."""
     scanner = _Scanner(text)
     commands: list[Invocation] = []
@@ -109,77 +116,47 @@ def tokenize(text: str) -> list[Invocation]:
         match = _IDENT.match(text, scanner.pos)
         if not match:
             raise scanner.error(f"expected a command name, found {scanner.peek()!r}")
-        scanner.advance(len(match.group()))
+        scanner.move_to(match.end())
         scanner.skip_space_and_comments(newlines=False)
         if scanner.peek() != "(":
             raise scanner.error(f"expected '(' after {match.group()}")
-        scanner.advance(1)
+        scanner.move_to(scanner.pos + 1)
         commands.append(Invocation(match.group().lower(), tuple(_arguments(scanner)),
-                                   line, column))
+                                   line, column, file))
 
 
 def _arguments(scanner: _Scanner) -> list[Argument]:
     args: list[Argument] = []
     depth = 0
     line, column = scanner.line, scanner.column
+    text = scanner.text
     while True:
         scanner.skip_space_and_comments()
         char = scanner.peek()
         if not char:
             raise CMakeSyntaxError("unterminated command: missing ')'", line, column)
         if char == ")":
-            scanner.advance(1)
+            scanner.move_to(scanner.pos + 1)
             if depth == 0:
                 return args
             depth -= 1
             args.append(Argument(")"))
         elif char == "(":
-            scanner.advance(1)
+            scanner.move_to(scanner.pos + 1)
             depth += 1
             args.append(Argument("("))
         elif char == '"':
-            args.append(Argument(_quoted(scanner), "quoted"))
-        elif char == "[" and (bracket := _BRACKET_OPEN.match(scanner.text, scanner.pos)):
+            match = _QUOTED.match(text, scanner.pos)
+            if not match:
+                raise scanner.error("unterminated quoted argument")
+            scanner.move_to(match.end())
+            args.append(Argument(_unescape(match.group(1)), "quoted"))
+        elif char == "[" and (bracket := _BRACKET_OPEN.match(text, scanner.pos)):
             args.append(Argument(scanner.read_bracket(scanner.pos, bracket.group(1)),
                                  "bracket"))
         else:
-            args.append(Argument(_unquoted(scanner)))
-
-
-def _quoted(scanner: _Scanner) -> str:
-    line, column = scanner.line, scanner.column
-    scanner.advance(1)
-    out: list[str] = []
-    while True:
-        char = scanner.peek()
-        if not char:
-            raise CMakeSyntaxError("unterminated quoted argument", line, column)
-        if char == '"':
-            scanner.advance(1)
-            return "".join(out)
-        if char == "\\":
-            following = scanner.peek(1)
-            if following == "\n":  # line continuation
-                scanner.advance(2)
-                continue
-            scanner.advance(2)
-            out.append(_ESCAPES.get(following, following))
-            continue
-        out.append(scanner.advance(1))
-
-
-def _unquoted(scanner: _Scanner) -> str:
-    out: list[str] = []
-    while True:
-        char = scanner.peek()
-        if not char or char in " \t\r\n()#":
-            return "".join(out)
-        if char == '"' and out:  # legacy: quotes inside an unquoted argument
-            out.append(scanner.advance(1))
-            continue
-        if char == "\\":
-            following = scanner.peek(1)
-            scanner.advance(2)
-            out.append(_ESCAPES.get(following, following))
-            continue
-        out.append(scanner.advance(1))
+            match = _UNQUOTED.match(text, scanner.pos)
+            if not match:
+                raise scanner.error(f"unexpected {char!r}")
+            scanner.move_to(match.end())
+            args.append(Argument(_unescape(match.group())))

@@ -1,0 +1,410 @@
+"""Handlers of the CMake commands that matter for finding runnable nodes.
+
+``HANDLERS`` maps a lower-case command name to ``handler(interpreter, command, args)``,
+where ``args`` are already expanded. Anything not listed is skipped by the interpreter.
+"""
+
+from __future__ import annotations
+
+import fnmatch
+import glob
+import os
+from collections.abc import Callable
+from typing import TYPE_CHECKING
+
+from .lexer import Invocation
+from .listops import run_list, run_math, run_string, split_list
+from .targets import Program, Registration, Target
+
+if TYPE_CHECKING:
+    from .interpreter import Interpreter
+
+Handler = Callable[["Interpreter", Invocation, list[str]], None]
+HANDLERS: dict[str, Handler] = {}
+MAX_GLOB = 10_000
+C_SUFFIXES = (".c", ".cc", ".cpp", ".cxx", ".c++", ".C", ".cu")
+
+
+def handles(*names: str) -> Callable[[Handler], Handler]:
+    def register(function: Handler) -> Handler:
+        for name in names:
+            HANDLERS[name] = function
+        return function
+    return register
+
+
+# -- variables ------------------------------------------------------------------
+@handles("set")
+def _set(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    if not args:
+        return
+    name, values = args[0], args[1:]
+    if "CACHE" in values:
+        at = values.index("CACHE")
+        if name not in it.cache or "FORCE" in values[at:]:
+            it.cache[name] = ";".join(values[:at])
+        return
+    if values[-1:] == ["PARENT_SCOPE"]:
+        it.set_parent(name, ";".join(values[:-1]) if values[:-1] else None)
+    elif values:
+        it.set(name, ";".join(values))
+    else:
+        it.unset(name)
+
+
+@handles("unset")
+def _unset(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    if not args:
+        return
+    if "CACHE" in args[1:]:
+        it.cache.pop(args[0], None)
+    elif "PARENT_SCOPE" in args[1:]:
+        it.set_parent(args[0], None)
+    else:
+        it.unset(args[0])
+
+
+@handles("option")
+def _option(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    if args and args[0] not in it.cache:
+        it.cache[args[0]] = args[2] if len(args) > 2 else "OFF"
+
+
+@handles("list")
+def _list(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    run_list(args, it)
+
+
+@handles("string")
+def _string(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    run_string(args, it)
+
+
+@handles("math")
+def _math(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    run_math(args, it)
+
+
+@handles("cmake_parse_arguments")
+def _cmake_parse_arguments(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    if args[:1] == ["PARSE_ARGV"] and len(args) >= 6:
+        start = int(args[1]) if args[1].isdigit() else 0
+        count = int(it.get("ARGC") or 0)
+        values = [it.get(f"ARGV{i}") or "" for i in range(start, count)]
+        prefix, specs = args[2], args[3:6]
+    elif len(args) >= 4:
+        prefix, specs, values = args[0], args[1:4], args[4:]
+    else:
+        return
+    options, singles, multis = (split_list(spec) for spec in specs)
+    keywords = set(options) | set(singles) | set(multis)
+    parsed: dict[str, list[str]] = {}
+    unparsed: list[str] = []
+    current: str | None = None
+    for value in values:
+        if value in keywords:
+            current = value
+            parsed.setdefault(value, [])
+            if value in options:
+                current = None
+        elif current is not None:
+            parsed[current].append(value)
+            if current in singles:
+                current = None
+        else:
+            unparsed.append(value)
+    for key in options:
+        it.set(f"{prefix}_{key}", "TRUE" if key in parsed else "FALSE")
+    for key in (*singles, *multis):
+        if parsed.get(key):
+            it.set(f"{prefix}_{key}", ";".join(parsed[key]))
+        else:
+            it.unset(f"{prefix}_{key}")
+    if unparsed:
+        it.set(f"{prefix}_UNPARSED_ARGUMENTS", ";".join(unparsed))
+    else:
+        it.unset(f"{prefix}_UNPARSED_ARGUMENTS")
+
+
+@handles("project")
+def _project(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    if not args:
+        return
+    name = args[0]
+    for key, value in (("PROJECT_NAME", name), ("PROJECT_SOURCE_DIR", it.source_dir),
+                       (f"{name}_SOURCE_DIR", it.source_dir),
+                       ("PROJECT_BINARY_DIR", it.get("CMAKE_CURRENT_BINARY_DIR") or "")):
+        it.set(key, value)
+    if it.get("CMAKE_PROJECT_NAME") is None:
+        it.set("CMAKE_PROJECT_NAME", name)
+    if "VERSION" in args[1:-1]:
+        version = args[args.index("VERSION") + 1]
+        it.set("PROJECT_VERSION", version)
+        it.set(f"{name}_VERSION", version)
+    # what catkin's and ament's find_package would define for the package
+    it.set("CATKIN_PACKAGE_BIN_DESTINATION", f"lib/{name}")
+    it.set("CATKIN_PACKAGE_SHARE_DESTINATION", f"share/{name}")
+    it.set("CATKIN_GLOBAL_BIN_DESTINATION", "bin")
+
+
+@handles("get_filename_component")
+def _get_filename_component(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    if len(args) < 3:
+        return
+    var, path, mode = args[0], args[1], args[2]
+    base = os.path.basename(path)
+    parts = {
+        "NAME": base,
+        "NAME_WE": base.split(".", 1)[0],
+        "NAME_WLE": base.rsplit(".", 1)[0],
+        "EXT": "." + base.split(".", 1)[1] if "." in base else "",
+        "LAST_EXT": "." + base.rsplit(".", 1)[1] if "." in base else "",
+        "DIRECTORY": os.path.dirname(path),
+        "PATH": os.path.dirname(path),
+        "ABSOLUTE": it.path(path),
+    }
+    if mode in parts:
+        it.set(var, parts[mode])
+    else:
+        it.unset(var)
+
+
+@handles("file")
+def _file(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    if len(args) < 2:
+        return
+    sub = args[0]
+    if sub in ("GLOB", "GLOB_RECURSE"):
+        it.set(args[1], ";".join(_glob(it, args[2:], recurse=sub == "GLOB_RECURSE")))
+    elif sub == "TO_CMAKE_PATH" and len(args) >= 3:
+        it.set(args[2], args[1].replace("\\", "/"))
+    elif sub == "RELATIVE_PATH" and len(args) >= 4:
+        it.set(args[1], os.path.relpath(args[3], args[2]))
+    elif sub in ("READ", "STRINGS", "REAL_PATH", "SIZE", "TIMESTAMP", "MD5", "SHA256"):
+        it.unset(args[2] if sub in ("REAL_PATH",) and len(args) > 2 else args[-1])
+
+
+def _glob(it: Interpreter, args: list[str], recurse: bool) -> list[str]:
+    relative: str | None = None
+    patterns: list[str] = []
+    skip = False
+    for index, arg in enumerate(args):
+        if skip:
+            skip = False
+        elif arg in ("LIST_DIRECTORIES", "RELATIVE"):
+            skip = True
+            if arg == "RELATIVE" and index + 1 < len(args):
+                relative = args[index + 1]
+        elif arg not in ("CONFIGURE_DEPENDS", "FOLLOW_SYMLINKS"):
+            patterns.append(it.path(arg))
+    found: list[str] = []
+    for pattern in patterns:
+        if not it.inside_package(_static_prefix(pattern)):
+            continue  # only files of the package itself
+        found.extend(_glob_recurse(pattern) if recurse
+                     else sorted(p for p in glob.glob(pattern) if os.path.isfile(p)))
+        if len(found) > MAX_GLOB:
+            break
+    found = list(dict.fromkeys(found))[:MAX_GLOB]
+    return [os.path.relpath(p, relative) for p in found] if relative else found
+
+
+def _static_prefix(pattern: str) -> str:
+    parts = pattern.split(os.sep)
+    for index, part in enumerate(parts):
+        if any(char in part for char in "*?["):
+            return os.sep.join(parts[:index]) or os.sep
+    return os.path.dirname(pattern)
+
+
+def _glob_recurse(pattern: str) -> list[str]:
+    base = _static_prefix(pattern)
+    rest = os.path.relpath(pattern, base)
+    found: list[str] = []
+    for folder, dirs, files in os.walk(base):
+        dirs.sort()
+        for name in sorted(files):
+            path = os.path.join(folder, name)
+            rel = os.path.relpath(path, base)
+            if fnmatch.fnmatchcase(rel, rest) or (
+                os.sep not in rest and fnmatch.fnmatchcase(name, rest)
+            ):
+                found.append(path)
+        if len(found) > MAX_GLOB:
+            break
+    return found
+
+
+@handles("aux_source_directory")
+def _aux_source_directory(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    if len(args) < 2:
+        return
+    folder = it.path(args[0])
+    if not it.inside_package(folder) or not os.path.isdir(folder):
+        return
+    it.set(args[1], ";".join(sorted(
+        os.path.join(folder, name) for name in os.listdir(folder)
+        if name.endswith(C_SUFFIXES))))
+
+
+@handles("include")
+def _include(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    if not args:
+        return
+    name = args[0]
+    if "RESULT_VARIABLE" in args[1:-1]:
+        it.set(args[args.index("RESULT_VARIABLE") + 1], "NOTFOUND")
+    candidates = [it.path(name)]
+    if "/" not in name and not name.endswith(".cmake"):
+        folders = split_list(it.get("CMAKE_MODULE_PATH"))
+        candidates = [os.path.join(it.path(folder), name + ".cmake") for folder in folders]
+    for path in candidates:
+        if it.include(command, path):
+            if "RESULT_VARIABLE" in args[1:-1]:
+                it.set(args[args.index("RESULT_VARIABLE") + 1], path)
+            return
+
+
+@handles("add_subdirectory")
+def _add_subdirectory(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    if args:
+        it.add_subdirectory(command, it.path(args[0]))
+
+
+# -- targets --------------------------------------------------------------------
+EXECUTABLE_FLAGS = ("WIN32", "MACOSX_BUNDLE", "EXCLUDE_FROM_ALL", "NO_TARGET_LINK_LIBRARIES")
+LIBRARY_FLAGS = ("STATIC", "SHARED", "MODULE", "OBJECT", "EXCLUDE_FROM_ALL",
+                 "NO_TARGET_LINK_LIBRARIES")
+
+
+@handles("add_executable", "cs_add_executable", "cuda_add_executable",
+         "ament_auto_add_executable")
+def _add_executable(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    _add_target(it, command, args, "executable", EXECUTABLE_FLAGS)
+
+
+@handles("add_library", "cs_add_library", "cuda_add_library", "ament_auto_add_library")
+def _add_library(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    _add_target(it, command, args, "library", LIBRARY_FLAGS)
+
+
+def _add_target(it: Interpreter, command: Invocation, args: list[str], kind: str,
+                flags: tuple[str, ...]) -> None:
+    if not args or "IMPORTED" in args or "ALIAS" in args or "INTERFACE" in args[1:2]:
+        return
+    sources: list[str] = []
+    rest = args[1:]
+    if "DIRECTORY" in rest:  # ament_auto_add_*: sources found in a folder
+        at = rest.index("DIRECTORY")
+        folder = rest[at + 1] if at + 1 < len(rest) else "."
+        rest = rest[:at] + rest[at + 2:]
+        sources.extend(_glob(it, [os.path.join(folder, "*" + s) for s in C_SUFFIXES],
+                             recurse=True))
+    sources.extend(it.path(a) for a in rest if a not in flags)
+    it.targets[args[0]] = Target(args[0], kind, sources, conditions=it.current_conditions(),
+                                 line=command.line, column=command.column,
+                                 file=command.file)
+
+
+@handles("target_sources")
+def _target_sources(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    target = it.targets.get(args[0]) if args else None
+    if target is not None:
+        keywords = ("PRIVATE", "PUBLIC", "INTERFACE", "FILE_SET", "TYPE", "BASE_DIRS",
+                    "FILES", "HEADERS", "CXX_MODULES")
+        target.sources.extend(it.path(a) for a in args[1:] if a not in keywords)
+
+
+@handles("target_link_libraries", "ament_target_dependencies")
+def _target_link_libraries(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    target = it.targets.get(args[0]) if args else None
+    if target is not None:
+        target.links.extend(a for a in args[1:] if a in it.targets)
+
+
+@handles("set_target_properties")
+def _set_target_properties(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    if "PROPERTIES" not in args:
+        return
+    split = args.index("PROPERTIES")
+    props = args[split + 1:]
+    for key, value in zip(props[::2], props[1::2], strict=False):
+        if key in ("OUTPUT_NAME", "RUNTIME_OUTPUT_NAME", "LIBRARY_OUTPUT_NAME"):
+            for name in args[:split]:
+                if name in it.targets:
+                    it.targets[name].output_name = value
+
+
+@handles("set_property")
+def _set_property(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    if args[:1] != ["TARGET"] or "PROPERTY" not in args:
+        return
+    at = args.index("PROPERTY")
+    if args[at + 1:at + 2] in (["OUTPUT_NAME"], ["RUNTIME_OUTPUT_NAME"]) and len(args) > at + 2:
+        for name in args[1:at]:
+            if name in it.targets:
+                it.targets[name].output_name = args[at + 2]
+
+
+# -- installed programs and components ------------------------------------------
+@handles("catkin_install_python")
+def _catkin_install_python(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    if args[:1] == ["PROGRAMS"]:
+        _programs(it, command, args[1:], rename=None)
+
+
+@handles("install")
+def _install(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    if args[:1] == ["PROGRAMS"]:
+        rename = args[args.index("RENAME") + 1] if "RENAME" in args[:-1] else None
+        _programs(it, command, args[1:], rename)
+    elif args[:1] == ["DIRECTORY"] and "DESTINATION" in args[:-1]:
+        destination = args[args.index("DESTINATION") + 1]
+        if not destination.startswith("lib/") or "USE_SOURCE_PERMISSIONS" not in args:
+            return
+        for folder in args[1:args.index("DESTINATION")]:
+            path = it.path(folder)
+            if it.inside_package(path):
+                it.program_dirs.append(Program(path, "", it.current_conditions(),
+                                               command.line, command.column, command.file))
+
+
+_PROGRAM_KEYWORDS = ("DESTINATION", "PERMISSIONS", "CONFIGURATIONS", "COMPONENT", "RENAME",
+                     "OPTIONAL", "EXCLUDE_FROM_ALL")
+
+
+def _programs(it: Interpreter, command: Invocation, args: list[str],
+              rename: str | None) -> None:
+    files: list[str] = []
+    for arg in args:
+        if arg in _PROGRAM_KEYWORDS:
+            break
+        files.append(arg)
+    for text in files:
+        path = it.path(text)
+        name = rename if rename and len(files) == 1 else os.path.basename(path)
+        it.programs.append(Program(path, name, it.current_conditions(), command.line,
+                                   command.column, command.file))
+
+
+@handles("rclcpp_components_register_node")
+def _register_node(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    if not args or "PLUGIN" not in args[:-1]:
+        return
+    plugin = args[args.index("PLUGIN") + 1]
+    executable = args[args.index("EXECUTABLE") + 1] if "EXECUTABLE" in args[:-1] else None
+    it.registrations.append(Registration(args[0], plugin, executable, it.current_conditions(),
+                                         command.line, command.column, command.file))
+
+
+@handles("rclcpp_components_register_nodes")
+def _register_nodes(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    skip = False
+    for arg in args[1:]:
+        if skip:
+            skip = False
+        elif arg == "RESOURCE_INDEX":
+            skip = True
+        else:
+            it.registrations.append(Registration(args[0], arg, None, it.current_conditions(),
+                                                 command.line, command.column, command.file))

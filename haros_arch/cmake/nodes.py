@@ -1,0 +1,202 @@
+"""From what the CMake interpreter recorded to runnable ``Node``s.
+
+Executables, ROS 2 components (registered in CMake or with ``RCLCPP_COMPONENTS_REGISTER_NODE``
+in a library's source), installed Python programs, and ROS 1 scripts found by the rosrun
+convention (executable Python files in ``scripts/`` and ``nodes/``).
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import stat
+from collections.abc import Iterable
+
+from .. import diagnostics as diag
+from ..diagnostics import Diagnostic
+from ..files import read_text
+from ..model.conditions import Condition
+from ..model.source import Node, Package
+from ..plugins import narrow
+from ..workspace import Workspace
+from .commands import C_SUFFIXES
+from .interpreter import BINARY_ROOT, Interpreter
+from .targets import Program, Target
+
+SCRIPT_FOLDERS = ("scripts", "nodes")
+_GENEX = re.compile(r"^\$<(TARGET_OBJECTS|BUILD_INTERFACE):([^<>]*)>$")
+_COMPONENT_MACRO = re.compile(r"RCLCPP_COMPONENTS_REGISTER_NODE\s*\(\s*([A-Za-z_][\w:]*)\s*\)")
+
+
+class SourceMap:
+    """Workspace-relative C/C++ sources of targets, with package-local libraries linked in."""
+
+    def __init__(self, it: Interpreter, workspace: Workspace) -> None:
+        self.targets = it.targets
+        self.workspace = workspace
+        self.diagnostics: list[Diagnostic] = []
+        self._own: dict[str, list[str]] = {}
+
+    def own(self, target: Target, seen: frozenset[str] = frozenset()) -> list[str]:
+        if target.name in self._own:
+            return self._own[target.name]
+        out: list[str] = []
+        for source in target.sources:
+            match = _GENEX.match(source)
+            if match and match.group(1) == "TARGET_OBJECTS":
+                other = self.targets.get(match.group(2))
+                if other is not None and other.name not in seen:
+                    out.extend(self.own(other, seen | {target.name}))
+                continue
+            if match:
+                source = os.path.normpath(os.path.join(os.path.dirname(target.file),
+                                                       match.group(2)))
+            if source.startswith("$<") or not source.endswith(C_SUFFIXES):
+                continue  # other generator expressions are unknown at this stage
+            if source.startswith(BINARY_ROOT):
+                continue  # generated at build time
+            if not os.path.isfile(source):
+                self.diagnostics.append(diag.make(
+                    "CMAKE_SOURCE_MISSING",
+                    self.workspace.location(target.file, target.line, target.column),
+                    path=self.workspace.relpath(source), target=target.name))
+                continue
+            out.append(self.workspace.relpath(source))
+        self._own[target.name] = out = list(dict.fromkeys(out))
+        return out
+
+    def linked(self, target: Target) -> list[str]:
+        """The target's sources, then those of package libraries it links, transitively."""
+        out: list[str] = []
+        seen: set[str] = set()
+        stack = [target.name]
+        while stack:
+            name = stack.pop(0)
+            if name in seen or name not in self.targets:
+                continue
+            seen.add(name)
+            out.extend(self.own(self.targets[name]))
+            stack.extend(self.targets[name].links)
+        return list(dict.fromkeys(out))
+
+
+def executables(it: Interpreter, package: Package, workspace: Workspace,
+                sources: SourceMap) -> list[Node]:
+    return [Node(package=package.name, executable=t.output_name or t.name,
+                 kind="executable", language="cpp", sources=sources.linked(t),
+                 conditions=t.conditions,
+                 location=workspace.location(t.file, t.line, t.column))
+            for t in it.targets.values() if t.kind == "executable"]
+
+
+def components(it: Interpreter, package: Package, workspace: Workspace,
+               sources: SourceMap) -> list[Node]:
+    nodes: list[Node] = []
+    registered: set[str] = set()
+    for reg in it.registrations:
+        target = it.targets.get(reg.target)
+        files = narrow(sources.linked(target), reg.plugin, workspace) if target else []
+        conditions = (target.conditions if target else ()) + tuple(
+            c for c in reg.conditions if target is None or c not in target.conditions)
+        where = workspace.location(reg.file, reg.line, reg.column)
+        registered.add(reg.plugin)
+        nodes.append(Node(package.name, reg.plugin, "component", "cpp", list(files),
+                          conditions=conditions, location=where))
+        if reg.executable:
+            nodes.append(Node(package.name, reg.executable, "executable", "cpp", list(files),
+                              conditions=conditions, location=where))
+    for target in it.targets.values():
+        if target.kind != "library":
+            continue
+        for path in sources.own(target):
+            for plugin, line in _registered_in(os.path.join(workspace.root, path), workspace):
+                if plugin in registered:
+                    continue
+                registered.add(plugin)
+                nodes.append(Node(package.name, plugin, "component", "cpp",
+                                  narrow(sources.linked(target), plugin, workspace),
+                                  conditions=target.conditions,
+                                  location=workspace.location(
+                                      os.path.join(workspace.root, path), line, 1)))
+    return nodes
+
+
+def _registered_in(path: str, workspace: Workspace) -> Iterable[tuple[str, int]]:
+    text, _ = read_text(path, workspace.location(path))
+    if not text or "RCLCPP_COMPONENTS_REGISTER_NODE" not in text:
+        return
+    for match in _COMPONENT_MACRO.finditer(text):
+        yield match.group(1).lstrip(":"), text.count("\n", 0, match.start()) + 1
+
+
+def is_python(path: str) -> bool:
+    """A ``.py`` file, or one whose shebang names Python."""
+    if path.endswith(".py"):
+        return True
+    try:
+        with open(path, "rb") as handle:
+            first = handle.readline(200)
+    except OSError:
+        return False
+    return first.startswith(b"#!") and b"python" in first
+
+
+def _script_source(path: str, workspace: Workspace) -> str:
+    """A symlinked script's source is the file it points to, when in the workspace."""
+    real = os.path.realpath(path)
+    if real != os.path.abspath(path) and workspace.relpath(real) != real:
+        return workspace.relpath(real)
+    return workspace.relpath(path)
+
+
+def scripts(it: Interpreter, package: Package, workspace: Workspace,
+            found: list[Diagnostic]) -> list[Node]:
+    """Installed Python programs, and for catkin packages the rosrun convention."""
+    nodes: dict[str, Node] = {}
+
+    def add(path: str, name: str, conditions: tuple[Condition, ...], where: Program | None) -> None:
+        if name in nodes:
+            return
+        location = (workspace.location(where.file, where.line, where.column) if where
+                    else workspace.location(path, 1, 1))
+        nodes[name] = Node(package.name, name, "script", "python",
+                           [_script_source(path, workspace)], conditions=conditions,
+                           location=location)
+
+    for program in it.programs:
+        if not os.path.isfile(program.path):
+            found.append(diag.make(
+                "CMAKE_SOURCE_MISSING",
+                workspace.location(program.file, program.line, program.column),
+                path=workspace.relpath(program.path), target=program.name))
+        elif is_python(program.path):
+            add(program.path, program.name, program.conditions, program)
+    for folder in it.program_dirs:
+        for path in _executable_files(folder.path):
+            add(path, os.path.basename(path), folder.conditions, folder)
+    if package.build_type == "catkin":
+        for sub in SCRIPT_FOLDERS:
+            for path in _executable_files(os.path.join(package.root, sub)):
+                add(path, os.path.basename(path), (), None)
+    return list(nodes.values())
+
+
+def _executable_files(folder: str) -> list[str]:
+    """Executable Python files directly in ``folder``; symlinks to ``.py`` files too."""
+    try:
+        names = sorted(os.listdir(folder))
+    except OSError:
+        return []
+    out = []
+    for name in names:
+        path = os.path.join(folder, name)
+        try:
+            mode = os.stat(path).st_mode
+        except OSError:
+            continue
+        if not stat.S_ISREG(mode) or name.startswith((".", "__init__")):
+            continue
+        linked_py = os.path.islink(path) and os.path.realpath(path).endswith(".py")
+        if (mode & stat.S_IXUSR or linked_py) and (linked_py or is_python(path)):
+            out.append(path)
+    return out

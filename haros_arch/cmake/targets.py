@@ -1,0 +1,47 @@
+"""What the CMake interpreter records: targets, installed programs, component registrations."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from ..model.conditions import Condition
+
+
+@dataclass
+class Target:
+    """A build target: ``add_executable`` or ``add_library``."""
+
+    name: str
+    kind: str  # "executable" | "library"
+    sources: list[str] = field(default_factory=list)  # absolute paths or $<...>
+    output_name: str | None = None
+    links: list[str] = field(default_factory=list)  # target_link_libraries
+    conditions: tuple[Condition, ...] = ()
+    line: int = 0
+    column: int = 0
+    file: str = ""
+
+
+@dataclass
+class Program:
+    """A file installed as a runnable program (``install(PROGRAMS)`` and friends)."""
+
+    path: str  # absolute
+    name: str  # the name it is installed (and run) as
+    conditions: tuple[Condition, ...]
+    line: int
+    column: int
+    file: str
+
+
+@dataclass
+class Registration:
+    """``rclcpp_components_register_node(s)``: a component class in a library target."""
+
+    target: str
+    plugin: str
+    executable: str | None
+    conditions: tuple[Condition, ...]
+    line: int
+    column: int
+    file: str

@@ -1,0 +1,137 @@
+"""Nodelets: pluginlib exports of a package, read down to the library that builds them.
+
+package.xml ``<export><nodelet plugin="${prefix}/nodelets.xml"/>`` names a plugin
+description; its ``<library path="lib/libfoo">`` holds ``<class name="pkg/Name"
+type="ns::Class"/>`` entries. Each class becomes a ``Node`` of kind ``nodelet`` whose
+executable is the name launch files use (``pkg/Name``) and whose sources are those of
+the library target ``foo``. When no target builds that library, the class is looked
+for in ``PLUGINLIB_EXPORT_CLASS`` / ``PLUGINLIB_DECLARE_CLASS`` of the package's
+libraries.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+from lxml import etree
+
+from . import diagnostics as diag
+from .diagnostics import Diagnostic
+from .files import read_bytes, read_text
+from .manifest import xml_parser
+from .model.conditions import Condition
+from .model.source import Node, Package
+from .workspace import Workspace
+
+NODE_PLUGIN_KINDS = ("nodelet",)
+_EXPORT = re.compile(
+    r"(PLUGINLIB_EXPORT_CLASS|PLUGINLIB_DECLARE_CLASS|RCLCPP_COMPONENTS_REGISTER_NODE)"
+    r"\s*\(([^)]*)\)")
+
+
+@dataclass(frozen=True)
+class Library:
+    """A library target as far as plugins care: its sources and conditions."""
+
+    sources: list[str]  # workspace-relative
+    conditions: tuple[Condition, ...] = ()
+
+
+def library_name(path: str) -> str:
+    """``lib/libfoo`` / ``libfoo.so`` / ``foo`` → ``foo``."""
+    name = os.path.basename(path)
+    name = re.sub(r"\.(so|dylib|dll)(\.\d+)*$", "", name)
+    return name[3:] if name.startswith("lib") and len(name) > 3 else name
+
+
+def nodelets(package: Package, workspace: Workspace,
+             libraries: Mapping[str, Library]) -> tuple[list[Node], list[Diagnostic]]:
+    """Nodes for the classes of the package's nodelet plugin descriptions."""
+    nodes: list[Node] = []
+    found: list[Diagnostic] = []
+    for plugin in package.plugins:
+        if plugin.kind not in NODE_PLUGIN_KINDS:
+            continue
+        path = os.path.join(workspace.root, plugin.file)
+        data, problems = read_bytes(path, workspace.location(path))
+        found.extend(problems)
+        if data is None:
+            continue
+        try:
+            root = etree.fromstring(data, xml_parser())
+        except etree.XMLSyntaxError as err:
+            line, column = err.position if err.position else (0, 0)
+            found.append(diag.make("PLUGIN_XML_SYNTAX", workspace.location(path, line, column),
+                                   detail=err.msg))
+            continue
+        elements = [root] if root.tag == "library" else list(root.iter("library"))
+        for element in elements:
+            wanted = library_name(element.get("path", ""))
+            for cls in element.iter("class"):
+                name = cls.get("name") or cls.get("type")
+                if not name:
+                    continue
+                where = workspace.location(path, _line(cls), 0)
+                type_name = cls.get("type", "")
+                library = libraries.get(wanted) or _exporting(type_name, libraries, workspace)
+                if library is None:
+                    found.append(diag.make("PLUGIN_LIBRARY_UNKNOWN", where,
+                                           library=wanted, plugin=name))
+                nodes.append(Node(package.name, name, "nodelet", "cpp",
+                                  narrow(library.sources, type_name, workspace)
+                                  if library else [],
+                                  conditions=library.conditions if library else (),
+                                  location=where))
+    return nodes, found
+
+
+def exported_classes(path: str, workspace: Workspace) -> list[tuple[str, int]]:
+    """Classes a C++ file exports with a pluginlib or rclcpp_components macro, with lines."""
+    text, _ = read_text(path, workspace.location(path))
+    if not text or ("PLUGINLIB_" not in text and "RCLCPP_COMPONENTS_" not in text):
+        return []
+    out = []
+    for match in _EXPORT.finditer(text):
+        words = re.findall(r"[A-Za-z_][\w:]*", match.group(2))
+        if not words:
+            continue
+        # DECLARE_CLASS(pkg, Name, ns::Class, Base): the class is the third word
+        cls = words[2] if match.group(1) == "PLUGINLIB_DECLARE_CLASS" and len(words) > 2 \
+            else words[0]
+        out.append((cls.lstrip(":"), text.count("\n", 0, match.start()) + 1))
+    return out
+
+
+def narrow(sources: list[str], cls: str, workspace: Workspace) -> list[str]:
+    """A library's sources without the files that export only other classes.
+
+    A library often bundles several nodelets or components, one per file; the node of
+    one class should not carry the others' calls.
+    """
+    cls = cls.lstrip(":")
+    kept = []
+    for source in sources:
+        exported = {name for name, _ in exported_classes(
+            os.path.join(workspace.root, source), workspace)}
+        if not exported or cls in exported:
+            kept.append(source)
+    return kept if any(s in kept for s in sources) else sources
+
+
+def _exporting(type_name: str, libraries: Mapping[str, Library],
+               workspace: Workspace) -> Library | None:
+    """The library whose sources export ``type_name`` with a pluginlib macro."""
+    for library in libraries.values():
+        for source in library.sources:
+            path = os.path.join(workspace.root, source)
+            if type_name.lstrip(":") in (c for c, _ in exported_classes(path, workspace)):
+                return library
+    return None
+
+
+def _line(element: etree._Element) -> int:
+    line = element.sourceline
+    return line if isinstance(line, int) else 0
