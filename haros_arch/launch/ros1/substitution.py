@@ -21,9 +21,11 @@ from .. import expression
 from .params import convert_value
 
 VALID = ("find", "env", "optenv", "dirname", "anon", "arg")
+# roslaunch passes ``{}`` as globals, so Python's builtins are all reachable from
+# $(eval); ours are the safe subset of them, plus roslaunch's names and math.*
 EVAL_BUILTINS: Mapping[str, Any] = {
-    "list": list, "dict": dict, "str": str, "float": float, "int": int,
-    "true": True, "false": False, "True": True, "False": False, **expression.MATH,
+    **expression.BUILTINS, **expression.MATH,
+    "true": True, "false": False, "True": True, "False": False,
 }
 
 

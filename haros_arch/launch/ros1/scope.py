@@ -1,0 +1,114 @@
+"""The loader's scope, as roslaunch's ``LoaderContext``, and ROS name helpers.
+
+Rules kept from roslaunch: a child scope (``<group>``, ``<node>``, ``<include>``) gets
+a copy of the arguments, argument names, anonymous names and environment; remaps of a
+child override the parent's with the same ``from``; the list of ``~params`` is shared
+with the parent when the parent already has some (roslaunch's ``params or []``), and a
+``<group>`` takes a copy of it; an ``<include>`` starts with only the arguments passed
+to it and fresh anonymous names.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field, replace
+from typing import Any
+
+from ...model.conditions import Condition
+from ...model.location import NOWHERE, Location
+from ...model.values import Unknown, Value
+from .params import join
+
+_LEGAL = re.compile(r"^[~/A-Za-z?][\w/?]*$")
+
+
+def canonical(name: str) -> str:
+    """rosgraph's ``canonicalize_name``: no repeated or trailing slashes."""
+    if not name or name == "/":
+        return name
+    inner = "/".join(x for x in name.split("/") if x)
+    return "/" + inner if name.startswith("/") else inner
+
+
+def global_ns(name: str) -> str:
+    """rosgraph's ``make_global_ns`` (with roslaunch's ``//`` squeezing)."""
+    if not name.startswith("/"):
+        name = "/" + name
+    if not name.endswith("/"):
+        name += "/"
+    return re.sub("//+", "/", name)
+
+
+def is_legal_name(name: str) -> bool:
+    return not name or (_LEGAL.match(name) is not None and "//" not in name)
+
+
+@dataclass
+class PrivateParam:
+    """A ``~param`` held by a scope until a node takes it."""
+
+    name: str
+    value: Any
+    kind: str | None
+    conditions: tuple[Condition, ...]
+    location: Location = NOWHERE
+    source: str = "value"
+
+
+@dataclass
+class Scope:
+    ns: str  # global namespace with a trailing slash
+    filename: str  # for $(dirname)
+    path: str  # the file being read, for locations
+    args: dict[str, Value] = field(default_factory=dict)
+    arg_names: list[str] = field(default_factory=list)
+    include_args: dict[str, Value] | None = None
+    pass_all_args: bool = False
+    remaps: tuple[tuple[str, str], ...] = ()
+    private: list[PrivateParam] = field(default_factory=list)
+    env: list[tuple[str, str]] = field(default_factory=list)
+    anon: dict[str, Unknown] = field(default_factory=dict)
+    conditions: tuple[Condition, ...] = ()
+    in_include: bool = False
+    stack: tuple[str, ...] = ()
+
+    @classmethod
+    def root(cls, path: str, args: dict[str, Value], namespace: str = "/") -> Scope:
+        return cls(global_ns(namespace or "/"), path, path, args=dict(args))
+
+    def child(self, ns: str | None) -> Scope:
+        child_ns = (ns if ns.startswith("/") else join(self.ns, ns)) if ns else self.ns
+        return replace(
+            self, ns=global_ns(child_ns), args=dict(self.args), arg_names=list(self.arg_names),
+            pass_all_args=False, private=self.private if self.private else [],
+            env=list(self.env), anon=dict(self.anon))
+
+    def include_child(self, ns: str | None, filename: str) -> Scope:
+        inner = self.child(ns)
+        inner.arg_names = []
+        inner.filename = filename
+        inner.include_args = {}
+        return inner
+
+    def enter_include(self) -> list[str]:
+        """Swap in the arguments passed to an include; returns their names."""
+        passed = self.include_args or {}
+        self.arg_names = []
+        self.args = dict(passed)
+        self.include_args = None
+        self.anon = {}
+        self.in_include = True
+        return list(passed)
+
+    def conditional(self, text: str, statement: str, where: Location) -> Scope:
+        cond = Condition(text, "launch", statement, where)
+        return replace(self, conditions=(*self.conditions, cond))
+
+    def add_remap(self, pair: tuple[str, str]) -> None:
+        self.remaps = (*(r for r in self.remaps if r[0] != pair[0]), pair)
+
+    def add_private(self, param: PrivateParam) -> None:
+        for index in range(len(self.private) - 1, -1, -1):
+            if self.private[index].name == param.name:
+                del self.private[index]
+        self.private.append(param)

@@ -1,0 +1,174 @@
+"""``<param>`` and ``<rosparam>``: parameter values as roslaunch would set them.
+
+Files named by ``textfile``, ``binfile`` and ``<rosparam file=...>`` are read only
+inside the workspace or an installed package folder, with a size bound. ``command``
+is never run: the parameter exists with an unknown value.
+"""
+
+from __future__ import annotations
+
+import os
+from typing import TYPE_CHECKING, Any
+
+from lxml import etree
+
+from ...files import read_bytes
+from ...model.conditions import Condition
+from ...model.location import Location
+from ...model.values import Value
+from ...workspace import installed_roots
+from ..model import ParamDecl
+from .params import Binary, ParamError, convert_value, flatten, join, load_yaml, type_name
+from .scope import PrivateParam, Scope, canonical
+
+if TYPE_CHECKING:
+    from .loader import Ros1Loader
+
+Element = etree._Element
+MAX_PARAM_FILE = 2 * 1024 * 1024
+SENTINEL = "\u2047haros_unknown\u2047"
+
+
+def tag_param(loader: Ros1Loader, element: Element, scope: Scope,
+              local: bool = False) -> None:
+    kind = (element.get("type") or "auto").lower().strip()
+    sources = {key: loader.value(element, key, scope)
+               for key in ("value", "textfile", "binfile", "command")}
+    given = [key for key, found in sources.items() if found is not None]
+    if len(given) != 1:
+        loader.fail(scope, element, "<param> tag must have one and only one of "
+                                  "value/textfile/binfile/command")
+        return
+    source = given[0]
+    raw = sources[source]
+    assert raw is not None
+    name = loader.resolve((element.get("name") or "").strip(), scope, element).text
+    value: Any = None
+    if raw.literal is not None:
+        try:
+            value = param_value(loader, source, raw.literal, kind, scope, element)
+        except ParamError as err:
+            loader.fail(scope, element, f"invalid <param> {name}: {err}")
+            return
+    elif source == "value" and kind not in ("auto", "str", "string", "int", "double",
+                                            "bool", "boolean", "yaml"):
+        loader.fail(scope, element, f"invalid <param> {name}: unknown type '{kind}'")
+        return
+    where = loader.where(scope, element)
+    declared = type_name(value) if value is not None else (
+        None if kind == "auto" else kind)
+    if name.startswith("~") or local:
+        scope.add_private(PrivateParam(name, value, declared, scope.conditions, where,
+                                       source))
+    else:
+        add_param(loader, join(scope.ns, name), value, declared, scope.conditions, where,
+                       source)
+
+def param_value(loader: Ros1Loader, source: str, text: str, kind: str, scope: Scope,
+                element: Element) -> Any:
+    if source == "value":
+        return convert_value(text.strip(), kind)
+    if source == "command":
+        loader.report("LAUNCH_UNKNOWN_VALUE", scope, element,
+                    detail=f"command \"{text}\" is not run")
+        return None
+    data = read_param_file(loader, text, scope, element)
+    if data is None:
+        return None
+    if source == "binfile":
+        return Binary.of(data)
+    return convert_value(data.decode("utf-8", errors="replace"), kind)
+
+def read_param_file(loader: Ros1Loader, path: str, scope: Scope, element: Element
+                    ) -> bytes | None:
+    path = os.path.realpath(path)
+    roots = [*loader.workspace.roots, loader.workspace.root,
+             *installed_roots(loader.environment)]
+    if not any(path == r or path.startswith(os.path.realpath(r) + os.sep)
+               for r in roots if r):
+        loader.report("LAUNCH_UNKNOWN_VALUE", scope, element, detail=(
+            f"{path} is outside the workspace and installed packages; it is not read"))
+        return None
+    if not os.path.isfile(path):
+        loader.fail(scope, element, f"file does not exist [{loader.workspace.relpath(path)}]")
+        return None
+    data, found = read_bytes(path, loader.where(scope, element), MAX_PARAM_FILE)
+    loader.model.diagnostics.extend(found)
+    return data
+
+def add_param(loader: Ros1Loader, name: str, value: Any, kind: str | None,
+              conditions: tuple[Condition, ...], location: Location,
+              source: str = "value") -> None:
+    loader.model.params.append(ParamDecl(canonical(name), value, kind, conditions,
+                                       location, source))
+
+def tag_rosparam(loader: Ros1Loader, element: Element, scope: Scope) -> None:
+    command = loader.text(element, "command", scope) or "load"
+    ns = loader.text(element, "ns", scope)
+    param = loader.text(element, "param", scope)
+    file = loader.value(element, "file", scope)
+    subst = loader.flag(element, "subst_value", scope, False)
+    param = join(ns or "", param or "") if (ns or param) else ""
+    if command not in ("load", "dump", "delete"):
+        loader.fail(scope, element, "command must be 'load', 'dump', or 'delete'")
+        return
+    if file is not None and command == "delete":
+        loader.fail(scope, element, "'file' attribute is invalid with 'delete' command.")
+        return
+    full = join(scope.ns, param) if param else scope.ns
+    if command == "dump":
+        return
+    if command == "delete":
+        loader.model.deleted_params.append(canonical(full))
+        return
+    where = loader.where(scope, element)
+    if file is not None:
+        if file.literal is None:
+            add_param(loader, full, None, None, scope.conditions, where, "rosparam")
+            return
+        data = read_param_file(loader, file.literal, scope, element)
+        if data is None:
+            return
+        text = data.decode("utf-8", errors="replace")
+    else:
+        text = (element.text or "") + "".join(c.tail or "" for c in element)
+    if subst is None:
+        subst = True  # unknown: substitute, as values do not change otherwise
+    if subst:
+        value = loader.resolve(text, scope, element)
+        text = "".join(p if isinstance(p, str) else SENTINEL for p in value.parts)
+    try:
+        data_value = load_yaml(text)
+    except ParamError as err:
+        loader.report("LAUNCH_YAML", scope, element, detail=str(err))
+        return
+    if data_value is None:
+        data_value = {}
+    if not param and not isinstance(data_value, dict):
+        loader.report("LAUNCH_YAML", scope, element, detail=(
+            "'param' attribute must be set for non-dictionary values"))
+        return
+    if canonical(full) == "/" and not isinstance(data_value, dict):
+        loader.report("LAUNCH_YAML", scope, element, detail=(
+            "cannot load non-dictionary values into the global namespace '/'"))
+        return
+    for name, leaf in flatten(full, data_value):
+        leaf = _unknown_parts(leaf)
+        add_param(loader, name.replace(SENTINEL, "?"), leaf,
+                       type_name(leaf) if leaf is not None else None,
+                       scope.conditions, where, "rosparam")
+
+
+def _unknown_parts(value: Any) -> Any:
+    """Strings that held an unknown substitution become unknown (None)."""
+    if isinstance(value, str) and SENTINEL in value:
+        return None
+    if isinstance(value, list):
+        items = [_unknown_parts(v) for v in value]
+        return None if any(i is None and v is not None for i, v in zip(items, value,
+                                                                         strict=True)) \
+            else items
+    return value
+
+
+__all__ = ["Value", "add_param", "tag_param", "tag_rosparam"]
