@@ -53,9 +53,11 @@ def extract_python(sources: list[str], workspace: Workspace, *,
     seen: set[tuple[object, ...]] = set()
     calls = sorted(walker.calls, key=lambda c: (
         c.location.file or "", c.location.line, c.location.column))
+    # a call site also reached with its names known does not keep its '?' variant
+    known = {(c.kind, c.location) for c in calls if "?" not in c.name}
     for call in calls:
         key = (call.kind, call.name, call.location)
-        if key in seen:
+        if key in seen or ("?" in call.name and (call.kind, call.location) in known):
             continue
         seen.add(key)
         result.calls.append(call)

@@ -20,6 +20,8 @@ from .api import Arg, NodeName, PyFunction
 NODE_METHODS: dict[str, PyFunction] = {
     "create_publisher": PyFunction(
         "publish", name=Arg(1, "topic"), type=Arg(0, "msg_type"), qos=Arg(2, "qos_profile")),
+    "create_lifecycle_publisher": PyFunction(
+        "publish", name=Arg(1, "topic"), type=Arg(0, "msg_type"), qos=Arg(2, "qos_profile")),
     "create_subscription": PyFunction(
         "subscribe", name=Arg(1, "topic"), type=Arg(0, "msg_type"),
         callback=Arg(2, "callback"), qos=Arg(3, "qos_profile")),
@@ -64,6 +66,9 @@ NODE_NAMES: dict[tuple[str, str], NodeName] = {
     ("rclpy", "LifecycleNode"): NodeName(
         Arg(0, "node_name"), namespace=Arg(None, "namespace")),
 }
+
+# AsyncParameterClient(node, remote_node_name): its get/set_parameters name that node's
+PARAMETER_CLIENT = Arg(1, "remote_node_name")
 
 # classes whose subclasses are nodes: (top module, last name)
 NODE_CLASSES = frozenset({("rclpy", "Node"), ("rclpy", "LifecycleNode")})

@@ -58,6 +58,13 @@ class ParamObject:
     default: object = None
 
 
+@dataclass(frozen=True)
+class ParameterClient:
+    """An rclpy ``AsyncParameterClient`` for the parameters of the node ``remote``."""
+
+    remote: Value
+
+
 @dataclass(eq=False)
 class NodeHandle:
     """An rclpy node made by ``rclpy.create_node`` or ``Node(...)``."""
@@ -82,6 +89,8 @@ class NodeMethod:
     """A method of an rclpy node: ``self.create_publisher`` in a ``Node`` subclass."""
 
     name: str
+    # the node whose parameters a parameter client's method reads or writes
+    remote: Value | None = None
 
 
 @dataclass(frozen=True)
@@ -113,6 +122,8 @@ class Frame:
     locals: dict[str, object] = field(default_factory=dict)
     instance: Instance | None = None
     depth: int = 0
+    # the module's own top-level code: its imports and definitions are indexed already
+    top: bool = False
 
 
 def text_of(value: object) -> Value:
@@ -149,6 +160,8 @@ class Evaluator:
         self.depth = 0
         # rclpy parameters declared so far: name -> default value
         self.declared: dict[str, object] = {}
+        # defaults of the parameters read so far, for names built from their values
+        self.param_defaults: dict[str, object] = {}
         self._computing: set[tuple[str, str]] = set()
 
     # -- names --------------------------------------------------------------------------
@@ -184,8 +197,8 @@ class Evaluator:
         return self._star_interface(module, name)
 
     def _star_interface(self, module: Module, name: str) -> object:
-        guesses = []
-        for star in module.stars:
+        guesses: list[str] = []
+        for star in dict.fromkeys(module.stars):
             parts = star.split(".")
             if len(parts) != 2 or parts[1] not in msg_types.INTERFACE_MODULES:
                 continue
@@ -252,10 +265,27 @@ class Evaluator:
     def new(self, cls: ClassInfo) -> Instance:
         return Instance(cls, dict(self.class_attrs(cls)))
 
+    def construct(self, cls: ClassInfo, expr: ast.Call, frame: Frame) -> Instance:
+        """An object of ``cls`` whose ``__init__`` assignments see the call's arguments."""
+        instance = self.new(cls)
+        init = self.method(cls, "__init__")
+        if init is not None and frame.depth < MAX_CALL_DEPTH:
+            inner = self.call_frame(BoundMethod(instance, init), expr, frame)
+            seen: dict[str, object] = {}
+            for statement in _straight(init.node.body):
+                self.assign(statement, inner, seen)
+        return instance
+
     def assign(self, statement: ast.stmt, frame: Frame,
                seen: dict[str, object] | None = None) -> None:
         """Bind the targets of an assignment; attributes assigned two different values
         (on two branches) become opaque when ``seen`` tracks them."""
+        if isinstance(statement, ast.AugAssign):
+            if isinstance(statement.target, ast.Name | ast.Attribute):
+                load = ast.copy_location(ast.BinOp(_load(statement.target), statement.op,
+                                                   statement.value), statement)
+                self.bind(statement.target, self.eval(load, frame), frame, seen)
+            return
         if isinstance(statement, ast.Assign):
             targets, expr = statement.targets, statement.value
         elif isinstance(statement, ast.AnnAssign) and statement.value is not None:
@@ -373,6 +403,8 @@ class Evaluator:
                 if attr in c.methods:
                     return c.methods[attr]
             return Opaque(attr)
+        if isinstance(base, ParameterClient) and attr in rclpy.NODE_METHODS:
+            return NodeMethod(attr, base.remote)
         if isinstance(base, NodeHandle) and attr in rclpy.NODE_METHODS:
             return NodeMethod(attr)
         if isinstance(base, ParamObject):
@@ -395,7 +427,7 @@ class Evaluator:
         if isinstance(func, NodeMethod):
             return self._node_method(func.name, expr, frame)
         if isinstance(func, ClassInfo):
-            return self.new(func)
+            return self.construct(func, expr, frame)
         if isinstance(func, FunctionInfo | BoundMethod):
             return self.returned(func, expr, frame)
         if isinstance(expr.func, ast.Attribute) and isinstance(func, Opaque):
@@ -432,8 +464,14 @@ class Evaluator:
         if key in (("rospy", "get_param"), ("rospy", "get_param_cached")):
             name = argument(expr, rospy.ROWS[key].name)
             default = argument(expr, rospy.ROWS[key].value)
-            return ParamValue(text_of(self.eval(name, frame)).text if name else "?",
-                              self.eval(default, frame) if default is not None else None)
+            value = ParamValue(text_of(self.eval(name, frame)).text if name else "?",
+                               self.eval(default, frame) if default is not None else None)
+            self.param_defaults[value.name] = value.default
+            return value
+        if key == ("rclpy", "AsyncParameterClient"):
+            remote = argument(expr, rclpy.PARAMETER_CLIENT)
+            return ParameterClient(text_of(self.eval(remote, frame)) if remote is not None
+                                   else Value.unknown("remote node"))
         if key == ("rclpy", "QoSProfile"):
             return self.qos_profile(expr, frame)
         return Opaque(ref.qualname)
@@ -446,6 +484,7 @@ class Evaluator:
             value = argument(expr, rclpy.NODE_METHODS[name].value)
             if value is not None:
                 default = self.eval(value, frame)
+            self.param_defaults[text] = default
             return ParamObject(text, default)
         return Opaque(name)
 
@@ -565,13 +604,19 @@ def unknown_params(info: FunctionInfo) -> dict[str, object]:
 def _straight(body: list[ast.stmt]) -> Iterator[ast.stmt]:
     """Assignments of a body, into if/try/with blocks too, in source order."""
     for statement in body:
-        if isinstance(statement, ast.Assign | ast.AnnAssign):
+        if isinstance(statement, ast.Assign | ast.AnnAssign | ast.AugAssign):
             yield statement
         elif isinstance(statement, ast.If | ast.With | ast.Try):
             for block in ("body", "orelse", "finalbody"):
                 yield from _straight(getattr(statement, block, []))
             for handler in getattr(statement, "handlers", []):
                 yield from _straight(handler.body)
+
+
+def _load(target: ast.Name | ast.Attribute) -> ast.expr:
+    if isinstance(target, ast.Name):
+        return ast.Name(target.id, ast.Load())
+    return ast.Attribute(target.value, target.attr, ast.Load())
 
 
 def _number(value: object) -> bool:

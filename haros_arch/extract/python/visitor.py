@@ -33,6 +33,7 @@ from .values import (
     Opaque,
     ParamValue,
     Ref,
+    Seq,
     SuperInit,
     argument,
     param_type,
@@ -68,7 +69,7 @@ class Walker:
         entries: list[tuple[FunctionInfo, list[PrimitiveCall]]] = []
         for module in modules:
             self.calls.extend(self._collect(lambda m=module: self._block(
-                m.tree.body, Frame(m), ())))
+                m.tree.body, Frame(m, top=True), ())))
         done: set[int] = set()
         queue: list[FunctionInfo] = []
         for module in modules:
@@ -132,8 +133,7 @@ class Walker:
                 conds: Conditions) -> None:
         if statement.value is not None:
             self._expr(statement.value, frame, conds)
-        if not isinstance(statement, ast.AugAssign):
-            self.evaluator.assign(statement, frame)
+        self.evaluator.assign(statement, frame)
 
     _AnnAssign = _Assign
     _AugAssign = _Assign
@@ -200,6 +200,8 @@ class Walker:
 
     def _FunctionDef(self, statement: ast.FunctionDef | ast.AsyncFunctionDef, frame: Frame,
                      conds: Conditions) -> None:
+        if frame.top:
+            return
         owner = frame.instance.cls if frame.instance is not None else None
         info = FunctionInfo(statement, frame.module, None, frame.locals)
         if owner is not None:
@@ -215,6 +217,8 @@ class Walker:
 
     def _Import(self, statement: ast.Import | ast.ImportFrom, frame: Frame,
                 conds: Conditions) -> None:
+        if frame.top:
+            return
         imports: dict[str, str] = {}
         local: dict[str, tuple[str, str | None]] = {}
         add_import(frame.module, self.loader, statement, imports, local)
@@ -248,7 +252,11 @@ class Walker:
             elif target.key in rows:
                 self._record(rows[target.key], call, frame, conds, version)
         elif isinstance(target, NodeMethod):
+            start = len(self.calls)
             self._record(rclpy.NODE_METHODS[target.name], call, frame, conds, 2)
+            if target.remote is not None:
+                for made in self.calls[start:]:
+                    made.name = _remote(target.remote, made.name)
         elif isinstance(target, FunctionInfo | BoundMethod):
             self._inline(target, call, frame, conds)
         elif isinstance(target, ClassInfo):
@@ -348,8 +356,9 @@ class Walker:
                 made.append(replace(base, name=f"~{full}", type=param_type(value)))
         elif spec.special == "parameter-names":
             items = call.args[0] if call.args else argument(call, _kw("names"))
-            for element in _elements(items):
-                made.append(replace(base, name=_param_name(text_of(ev.eval(element, frame)))))
+            listed = _eval(ev, items, frame)
+            for item in listed.items if isinstance(listed, Seq) else ():
+                made.append(replace(base, name=_param_name(text_of(item))))
         elif spec.special == "set-parameters":
             items = call.args[0] if call.args else argument(call, _kw("parameter_list"))
             for element in _elements(items):
@@ -377,6 +386,9 @@ class Walker:
             if len(params) == 1 and params[0].startswith("parameter "):
                 name = params[0].removeprefix("parameter ")
                 call.name_param = _param_name(Value.of(name)) if version == 2 else name
+                default = ev.param_defaults.get(name)
+                if isinstance(default, Value) and default.is_known:
+                    call.name_default = default.text
         if version == 2 and call.kind in _PARAM_KINDS:
             call.name = _param_name(text)
         elif version == 2 and text.text.startswith("~/"):
@@ -416,6 +428,12 @@ class Walker:
     def _where(self, frame: Frame, node: ast.AST) -> Location:
         return self.loader.location(frame.module.path, getattr(node, "lineno", 0),
                                     getattr(node, "col_offset", -1) + 1)
+
+
+def _remote(remote: Value, name: str) -> str:
+    """A parameter of another node: ``~x`` of node ``board`` is ``board/x``."""
+    node = remote.text.rstrip("/")
+    return f"{node}/{name.removeprefix('~')}" if node else name
 
 
 def _eval(ev: Evaluator, expr: ast.expr | None, frame: Frame) -> object:
