@@ -56,6 +56,12 @@ def _parser() -> argparse.ArgumentParser:
     compare.add_argument("--config", help="configuration name (default: the first)")
     compare.add_argument("--format", choices=("text", "json"), default="text")
 
+    report = sub.add_parser("report", help="write the interactive HTML report (one file)")
+    report.add_argument("project", nargs="?", help="project file (YAML)")
+    report.add_argument("--model", help="render this saved JSON model instead of extracting")
+    report.add_argument("--workspace", help="folder the model's file paths are relative to")
+    report.add_argument("-o", "--output", required=True, help="the HTML file to write")
+
     explain = sub.add_parser("explain", help="explain a diagnostic code (or list them all)")
     explain.add_argument("code", nargs="?")
     return parser
@@ -168,12 +174,37 @@ def cmd_compare(args: argparse.Namespace, out: Console, err: Console) -> int:
     return EXIT_OK
 
 
+def cmd_report(args: argparse.Namespace, out: Console, err: Console) -> int:
+    from .viz import ReportError, write_report
+    from .viz.command import model_data, project_findings, read_model, workspace_root
+
+    if not args.project and not args.model:
+        err.print("haros-arch: report needs a PROJECT file or --model FILE", highlight=False)
+        return EXIT_USAGE
+    try:
+        project = load(args.project) if args.project else None
+        findings: list = []
+        if args.model:
+            data = read_model(args.model)
+        else:
+            model = _analyse(args.project, err)
+            if model is None or project is None:
+                return EXIT_USAGE
+            data, findings = model_data(model), project_findings(model, project)
+        write_report(data, findings, workspace_root(project, args.workspace), args.output)
+    except (ProjectError, ReportError) as error:
+        err.print(f"haros-arch: {error}", highlight=False)
+        return EXIT_USAGE
+    out.print(f"wrote {args.output}", highlight=False)
+    return EXIT_OK
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     args = _parser().parse_args(argv)
     out = Console(soft_wrap=True)
     err = Console(stderr=True, soft_wrap=True)
     handlers = {"extract": cmd_extract, "check": cmd_check, "explain": cmd_explain,
-                "capture": cmd_capture, "compare": cmd_compare}
+                "capture": cmd_capture, "compare": cmd_compare, "report": cmd_report}
     try:
         return handlers[args.command](args, out, err)
     except KeyboardInterrupt:

@@ -76,7 +76,7 @@ def render_report(model_data: dict[str, Any], findings: Iterable[Any],
     title = html.escape(f"haros-arch: {model_data.get('project') or 'report'}")
     parts = [
         "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n",
-        f'<meta http-equiv="Content-Security-Policy" content="{html.escape(csp)}">\n',
+        f'<meta http-equiv="Content-Security-Policy" content="{html.escape(csp, quote=False)}">\n',
         '<meta name="viewport" content="width=device-width, initial-scale=1">\n',
         f"<title>{title}</title>\n<style>\n{style}\n</style>\n</head>\n<body>\n",
         '<script type="application/json" id="haros-data">',

@@ -61,11 +61,11 @@ def collect_snippets(data: Any, workspace_root: str) -> dict[str, dict[str, str]
         lines = text.splitlines()
         shown: dict[str, str] = {}
         for number in sorted(_window(wanted[file], len(lines))):
-            line = lines[number - 1][:MAX_LINE_CHARS].expandtabs(4)
-            budget -= len(line) + 8
+            text_line = lines[number - 1][:MAX_LINE_CHARS].expandtabs(4)
+            budget -= len(text_line) + 8
             if budget < 0:
                 break
-            shown[str(number)] = line
+            shown[str(number)] = text_line
         if shown:
             snippets[file] = shown
         if budget < 0:

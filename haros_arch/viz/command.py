@@ -1,0 +1,50 @@
+"""What ``haros-arch report`` does, as library calls: model from a project or a saved file."""
+
+from __future__ import annotations
+
+import json
+import os
+from typing import Any
+
+from .. import SCHEMA
+from ..model.model import Model
+from ..model.serialise import model_to_data, to_data
+from ..project import Project
+from .html import ReportError
+
+
+def read_model(path: str) -> dict[str, Any]:
+    """A saved ``haros-arch extract`` document; ReportError if it is not one."""
+    try:
+        with open(path, encoding="utf-8") as handle:
+            data = json.load(handle)
+    except OSError as err:
+        raise ReportError(f"cannot read {path}: {err.strerror or err}") from err
+    except ValueError as err:
+        raise ReportError(f"{path} is not JSON: {err}") from err
+    if not isinstance(data, dict) or not isinstance(data.get("configurations"), list):
+        raise ReportError(f"{path} is not a haros-arch model (schema {SCHEMA})")
+    return data
+
+
+def project_findings(model: Model, project: Project) -> list[Any]:
+    """The findings of the query catalogue and the project's queries, once queries exist."""
+    try:
+        from ..query import run_catalogue
+
+        return [to_data(f) for f in run_catalogue(model, project)]
+    except ImportError:  # the catalogue has not landed in this checkout
+        return []
+
+
+def model_data(model: Model) -> dict[str, Any]:
+    return model_to_data(model)
+
+
+def workspace_root(project: Project | None, given: str | None) -> str:
+    """Where the model's relative file paths start: --workspace, the project's, or here."""
+    if given:
+        return given
+    if project is not None and project.workspace:
+        return project.workspace[0]
+    return os.getcwd()

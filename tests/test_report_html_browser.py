@@ -1,0 +1,205 @@
+"""The HTML report in a real headless Chromium (Debian's), driven by Playwright.
+
+One report of the example workspace (two configurations) with findings made here, and one
+report with hostile names. Each test opens a fresh page and fails on any console error,
+page error or network request.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from pathlib import Path
+from typing import Any
+
+import pytest
+from conftest import ROOT
+
+from haros_arch.model.finding import Finding
+from haros_arch.model.location import Location
+from haros_arch.model.serialise import model_to_data
+from haros_arch.pipeline import analyse
+from haros_arch.project import load
+from haros_arch.viz import write_report
+from haros_arch.viz.browser import CHROMIUM_ARGS, chromium_path, why_no_browser
+
+REASON = why_no_browser()
+pytestmark = pytest.mark.skipif(REASON is not None, reason=REASON or "")
+EXAMPLE = ROOT / "examples" / "project.yaml"
+XSS = "<img src=x onerror=alert(1)>"
+
+
+@pytest.fixture(scope="module")
+def example(tmp_path_factory: pytest.TempPathFactory) -> dict[str, Any]:
+    project = load(str(EXAMPLE))
+    data = model_to_data(analyse(project))
+    first = data["configurations"][0]
+    topic = next(t for t in first["topics"] if t["publishers"] and not t["subscribers"])
+    finding = Finding("no-subscriber", "warning", "Published but never subscribed",
+                      f"{topic['name']} has no subscriber", first["name"],
+                      (topic["id"], "node:" + topic["publishers"][0]))
+    path = tmp_path_factory.mktemp("report") / "example.html"
+    write_report(data, [finding], project.workspace[0], str(path))
+    return {"path": path, "data": data, "finding": finding, "root": Path(project.workspace[0])}
+
+
+@pytest.fixture(scope="module")
+def browser() -> Iterator[Any]:
+    from playwright.sync_api import sync_playwright
+
+    with sync_playwright() as driver:
+        chromium = driver.chromium.launch(executable_path=chromium_path(), args=CHROMIUM_ARGS)
+        yield chromium
+        chromium.close()
+
+
+class Watched:
+    """A page that records console errors, page errors, dialogs and network requests."""
+
+    def __init__(self, browser: Any, path: Path) -> None:
+        self.problems: list[str] = []
+        self.dialogs: list[str] = []
+        self.page = browser.new_page(viewport={"width": 1400, "height": 800})
+        self.page.on("console", lambda m: self.problems.append(f"console {m.type}: {m.text}")
+                     if m.type in ("error", "warning") else None)
+        self.page.on("pageerror", lambda e: self.problems.append(f"page error: {e}"))
+        self.page.on("dialog", self._dialog)
+        url = path.as_uri()
+        self.page.on("request", lambda r: r.url == url or self.problems.append(f"request {r.url}"))
+        self.page.goto(url)
+        self.page.wait_for_function("window.harosReport && window.harosReport.ready")
+
+    def _dialog(self, dialog: Any) -> None:
+        self.dialogs.append(dialog.message)
+        dialog.dismiss()
+
+    def ids(self, selector: str) -> set[str]:
+        return set(self.page.eval_on_selector_all(
+            selector, "els => els.map(e => e.getAttribute('data-id'))"))
+
+    def vertex(self, entity_id: str) -> str:
+        return f'#graph .vertex[data-id="{entity_id}"]'
+
+
+@pytest.fixture
+def page(browser: Any, example: dict[str, Any]) -> Iterator[Watched]:
+    watched = Watched(browser, example["path"])
+    yield watched
+    assert watched.problems == []
+    watched.page.close()
+
+
+def entity_ids(config: dict[str, Any]) -> set[str]:
+    return {item["id"] for key in ("nodes", "topics", "services", "actions", "parameters")
+            for item in config[key]}
+
+
+def test_every_entity_of_the_first_configuration_is_drawn(page: Watched, example) -> None:
+    assert page.ids("#graph .vertex") == entity_ids(example["data"]["configurations"][0])
+
+
+def test_picking_a_configuration_draws_its_graph(page: Watched, example) -> None:
+    second = example["data"]["configurations"][1]
+    page.page.select_option("#config", label=second["name"])
+    assert page.ids("#graph .vertex") == entity_ids(second)
+    assert second["name"] in page.page.inner_text("#panel")
+
+
+def test_a_finding_highlights_its_entities_and_dims_the_rest(page: Watched, example) -> None:
+    finding = example["finding"]
+    page.page.click(f'#findings .item[data-rule="{finding.rule}"]')
+    assert page.page.eval_on_selector("#graph", "svg => svg.classList.contains('focus')")
+    assert page.ids("#graph .vertex.hl") == set(finding.entities)
+    assert finding.message in page.page.inner_text("#panel")
+
+
+def test_clicking_a_node_shows_its_location_and_code(page: Watched, example) -> None:
+    node = example["data"]["configurations"][0]["nodes"][0]
+    page.page.click(page.vertex(node["id"]))
+    panel = page.page.inner_text("#panel")
+    where = node["location"]
+    assert f"{where['file']}:{where['line']}" in panel
+    source = (example["root"] / where["file"]).read_text().splitlines()[where["line"] - 1]
+    assert source.strip() in panel
+    links = [link for link in example["data"]["configurations"][0]["links"]
+             if link["node"] == node["name"]]
+    for link in links:
+        assert f"{link['location']['file']}:{link['location']['line']}" in panel
+    assert page.ids("#graph .vertex.selected") == {node["id"]}
+
+
+def test_conditional_links_are_dashed_with_their_condition(page: Watched, example) -> None:
+    config = example["data"]["configurations"][0]
+    link = next(link for link in config["links"] if link["conditions"])
+    edges = page.page.eval_on_selector_all(
+        "#graph .edge.conditional", "els => els.map(e => e.textContent)")
+    assert any(link["conditions"][0]["text"] in title and link["name"] in title
+               for title in edges)
+
+
+def test_filters_and_namespace_collapse(page: Watched, example) -> None:
+    config = example["data"]["configurations"][0]
+    page.page.uncheck('input[data-filter="hideParameters"]')
+    drawn = page.ids("#graph .vertex")
+    assert not any(i.startswith("parameter:") for i in drawn)
+    assert drawn == {i for i in entity_ids(config) if not i.startswith("parameter:")}
+    namespace = next(n["namespace"] for n in config["nodes"] if n["namespace"] != "/")
+    page.page.check(f'input[data-namespace="{namespace}"]')
+    drawn = page.ids("#graph .vertex")
+    assert f"namespace:{namespace}" in drawn
+    assert not any(i.startswith("node:" + namespace) for i in drawn)
+
+
+def test_search_lights_matching_names(page: Watched, example) -> None:
+    topic = example["data"]["configurations"][0]["topics"][0]
+    page.page.fill("#search", topic["name"])
+    assert topic["id"] in page.ids("#graph .vertex.hl")
+    assert all(topic["name"] in i for i in page.ids("#graph .vertex.hl"))
+
+
+def test_package_view_lists_nodes_and_interfaces(page: Watched, example) -> None:
+    page.page.click("#tab-packages")
+    text = page.page.inner_text("#packages")
+    for package in example["data"]["packages"]:
+        for node in package["nodes"]:
+            assert f"{node['package']}/{node['executable']}" in text
+            for call in node["calls"]:
+                assert call["name"] in text
+
+
+def test_hostile_names_are_text_and_candidates_light_up(browser: Any, tmp_path: Path) -> None:
+    where = {"package": "demo", "file": "demo/src/a.cpp", "line": 1, "column": 1}
+
+    def topic(name: str, tid: str, **extra: Any) -> dict[str, Any]:
+        return {"name": name, "id": tid, "types": [XSS], "publishers": ["/a"],
+                "subscribers": [], "conditions": [], **extra}
+
+    config = {
+        "name": XSS, "launch": [], "args": {}, "services": [], "actions": [],
+        "parameters": [], "diagnostics": [],
+        "nodes": [{"name": "/a", "id": "node:/a", "node": XSS, "namespace": "/",
+                   "remaps": [[XSS, XSS]], "args": XSS, "conditions": [], "location": where}],
+        "topics": [topic(XSS, "topic:x"), topic("/?", "topic:/?", candidates=["topic:x"])],
+        "links": [{"kind": "publish", "node": "/a", "name": name, "given": XSS, "type": XSS,
+                   "queue_size": 1, "qos": None, "conditions": [
+                       {"text": XSS, "kind": "source", "statement": "if", "location": where}],
+                   "location": where} for name in (XSS, "/?")]}
+    (tmp_path / "demo/src").mkdir(parents=True)
+    (tmp_path / "demo/src/a.cpp").write_text(f'pub("{XSS}");\n')
+    finding = Finding("probe", "error", XSS, XSS, None, ("topic:x",),
+                      Location("demo", "demo/src/a.cpp", 1, 1))
+    path = tmp_path / "xss.html"
+    write_report({"schema": "haros-arch/1", "project": XSS, "packages": [],
+                  "configurations": [config], "diagnostics": []}, [finding], str(tmp_path),
+                 str(path))
+    watched = Watched(browser, path)
+    page = watched.page
+    assert page.text_content('#graph .vertex[data-id="topic:x"] .label') == XSS
+    page.click('#graph .vertex[data-id="topic:x"]')
+    page.click("#findings .item")
+    page.click('#graph .vertex[data-id="topic:/?"]')
+    assert watched.ids("#graph .vertex.candidate") == {"topic:x"}
+    assert XSS in page.inner_text("#panel")
+    page.click("#tab-packages")
+    assert page.eval_on_selector_all("img", "els => els.length") == 0
+    assert watched.dialogs == []
+    assert watched.problems == []
