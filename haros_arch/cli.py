@@ -62,6 +62,13 @@ def _parser() -> argparse.ArgumentParser:
     report.add_argument("--workspace", help="folder the model's file paths are relative to")
     report.add_argument("-o", "--output", required=True, help="the HTML file to write")
 
+    launch = sub.add_parser("launch", help="nodes and parameters a ROS 1 launch file "
+                            "would start (like roslaunch --nodes --dump-params)")
+    launch.add_argument("file", nargs="+", metavar="FILE", help="a path, or PKG PATH/IN/PKG")
+    launch.add_argument("--arg", action="append", default=[], metavar="NAME:=VALUE")
+    launch.add_argument("--workspace", default=".", help="workspace folder (default: .)")
+    launch.add_argument("--format", choices=("text", "json"), default="text")
+
     explain = sub.add_parser("explain", help="explain a diagnostic code (or list them all)")
     explain.add_argument("code", nargs="?")
     return parser
@@ -199,12 +206,41 @@ def cmd_report(args: argparse.Namespace, out: Console, err: Console) -> int:
     return EXIT_OK
 
 
+def cmd_launch(args: argparse.Namespace, out: Console, err: Console) -> int:
+    from .launch import load as load_launch
+    from .launch.ros1.dump import as_data, as_text
+    from .workspace import scan
+
+    if not os.path.isdir(args.workspace) or len(args.file) > 2 or any(
+            ":=" not in a for a in args.arg):
+        err.print("haros-arch: launch needs FILE or PKG PATH, NAME:=VALUE arguments and "
+                  "an existing --workspace", highlight=False)
+        return EXIT_USAGE
+    workspace = scan([args.workspace], dict(os.environ))
+    path = args.file[0]
+    if len(args.file) == 2:
+        folder = workspace.find(args.file[0])
+        if folder is None:
+            err.print(f"haros-arch: package {args.file[0]} not found", highlight=False)
+            return EXIT_USAGE
+        path = os.path.join(folder, args.file[1])
+    given = dict(a.split(":=", 1) for a in args.arg)
+    model = load_launch(path, workspace, given, dict(os.environ))
+    if args.format == "json":
+        out.print(json.dumps(as_data(model), indent=2), highlight=False, markup=False)
+    else:
+        out.print(as_text(model), highlight=False, markup=False)
+        print_diagnostics(model.diagnostics, err)
+    return EXIT_OK
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     args = _parser().parse_args(argv)
     out = Console(soft_wrap=True)
     err = Console(stderr=True, soft_wrap=True)
     handlers = {"extract": cmd_extract, "check": cmd_check, "explain": cmd_explain,
-                "capture": cmd_capture, "compare": cmd_compare, "report": cmd_report}
+                "capture": cmd_capture, "compare": cmd_compare, "report": cmd_report,
+                "launch": cmd_launch}
     try:
         return handlers[args.command](args, out, err)
     except KeyboardInterrupt:
