@@ -14,144 +14,32 @@ from __future__ import annotations
 
 import ast
 from collections.abc import Iterator
-from dataclasses import dataclass, field
 from typing import Any
 
 from ...model.values import Value
 from . import msg_types, rclpy, rospy
 from .modules import ClassInfo, FunctionInfo, Loader, Module
+from .objects import (
+    BoundMethod,
+    Frame,
+    Instance,
+    ModuleRef,
+    NodeHandle,
+    NodeMethod,
+    Opaque,
+    ParameterClient,
+    ParamObject,
+    ParamValue,
+    QoS,
+    Ref,
+    Seq,
+    SuperInit,
+    text_of,
+)
+from .strings import arith, number, percent, string_method
 
 MAX_EVAL_DEPTH = 60
 MAX_CALL_DEPTH = 4
-
-
-@dataclass(frozen=True)
-class Ref:
-    """Something imported from outside the package, by qualified name."""
-
-    qualname: str
-
-    @property
-    def key(self) -> tuple[str, str]:
-        parts = self.qualname.split(".")
-        return parts[0], parts[-1]
-
-
-@dataclass(frozen=True)
-class Opaque:
-    origin: str = ""
-
-
-@dataclass(frozen=True)
-class ParamValue:
-    """The value of a parameter read (``rospy.get_param('~topic', 'scan')``)."""
-
-    name: str
-    default: object = None
-
-
-@dataclass(frozen=True)
-class ParamObject:
-    """An rclpy ``Parameter`` object (from ``get_parameter`` / ``declare_parameter``)."""
-
-    name: str
-    default: object = None
-
-
-@dataclass(frozen=True)
-class ParameterClient:
-    """An rclpy ``AsyncParameterClient`` for the parameters of the node ``remote``."""
-
-    remote: Value
-
-
-@dataclass(eq=False)
-class NodeHandle:
-    """An rclpy node made by ``rclpy.create_node`` or ``Node(...)``."""
-
-    name: object = None
-
-
-@dataclass(eq=False)
-class Instance:
-    cls: ClassInfo
-    attrs: dict[str, object] = field(default_factory=dict)
-
-
-@dataclass(frozen=True)
-class BoundMethod:
-    instance: Instance
-    function: FunctionInfo
-
-
-@dataclass(frozen=True)
-class NodeMethod:
-    """A method of an rclpy node: ``self.create_publisher`` in a ``Node`` subclass."""
-
-    name: str
-    # the node whose parameters a parameter client's method reads or writes
-    remote: Value | None = None
-
-
-@dataclass(frozen=True)
-class SuperInit:
-    """``super().__init__`` or ``Node.__init__`` in a class."""
-
-
-@dataclass(frozen=True)
-class QoS:
-    policies: tuple[tuple[str, Any], ...]
-
-    def as_dict(self) -> dict[str, Any]:
-        return dict(self.policies)
-
-
-@dataclass(frozen=True)
-class Seq:
-    items: tuple[object, ...]
-
-
-@dataclass(frozen=True)
-class ModuleRef:
-    module: Module
-
-
-@dataclass
-class Frame:
-    module: Module
-    locals: dict[str, object] = field(default_factory=dict)
-    instance: Instance | None = None
-    depth: int = 0
-    # the module's own top-level code: its imports and definitions are indexed already
-    top: bool = False
-
-
-def text_of(value: object) -> Value:
-    """A value as a string value, with ``?`` for what is not known."""
-    if isinstance(value, Value):
-        return value
-    if isinstance(value, bool):
-        return Value.of(str(value))
-    if isinstance(value, int | float):
-        return Value.of(repr(value))
-    if isinstance(value, ParamValue):
-        return Value.unknown(f"parameter {value.name}")
-    return Value.unknown(getattr(value, "origin", "") or type(value).__name__)
-
-
-def param_type(value: object) -> str | None:
-    """A parameter type from the Python value it is given (as the C++ extractor names them)."""
-    if isinstance(value, bool):
-        return "bool"
-    if isinstance(value, int):
-        return "int"
-    if isinstance(value, float):
-        return "double"
-    if isinstance(value, Value):
-        return "str"
-    if isinstance(value, Seq):
-        return "list"
-    return None
 
 
 class Evaluator:
@@ -348,16 +236,16 @@ class Evaluator:
         if isinstance(expr.op, ast.Add):
             if isinstance(left, Value) or isinstance(right, Value):
                 return Value.of(text_of(left), text_of(right))
-            if _number(left) and _number(right):
+            if number(left) and number(right):
                 return left + right  # type: ignore[operator]
             if isinstance(left, Seq) and isinstance(right, Seq):
                 return Seq(left.items + right.items)
         if isinstance(expr.op, ast.Mod) and isinstance(left, Value):
             items = right.items if isinstance(right, Seq) else (right,)
-            return _percent(left, items)
-        if isinstance(expr.op, ast.Mult | ast.Sub | ast.Div) and _number(left) and _number(right):
+            return percent(left, items)
+        if isinstance(expr.op, ast.Mult | ast.Sub | ast.Div) and number(left) and number(right):
             try:
-                return _arith(expr.op, left, right)
+                return arith(expr.op, left, right)
             except (ZeroDivisionError, OverflowError):
                 return Opaque("arithmetic")
         return Opaque("operation")
@@ -433,14 +321,14 @@ class Evaluator:
         if isinstance(expr.func, ast.Attribute) and isinstance(func, Opaque):
             base = self.eval(expr.func.value, frame)
             if isinstance(base, Value):
-                return _string_method(base, expr.func.attr, [
+                return string_method(base, expr.func.attr, [
                     self.eval(a, frame) for a in expr.args])
         if isinstance(expr.func, ast.Name) and expr.func.id in ("str", "int", "float") \
                 and len(expr.args) == 1:
             value = self.eval(expr.args[0], frame)
             if expr.func.id == "str":
                 return text_of(value)
-            return value if _number(value) else Opaque(expr.func.id)
+            return value if number(value) else Opaque(expr.func.id)
         return Opaque("call")
 
     def callee(self, func: ast.expr, frame: Frame) -> object:
@@ -619,18 +507,6 @@ def _load(target: ast.Name | ast.Attribute) -> ast.expr:
     return ast.Attribute(target.value, target.attr, ast.Load())
 
 
-def _number(value: object) -> bool:
-    return isinstance(value, int | float) and not isinstance(value, bool)
-
-
-def _arith(op: ast.operator, left: Any, right: Any) -> object:
-    if isinstance(op, ast.Mult):
-        return left * right if abs(left) < 1e6 and abs(right) < 1e6 else Opaque("big")
-    if isinstance(op, ast.Sub):
-        return left - right
-    return left / right
-
-
 def _policy(value: object, words: tuple[str, ...]) -> str | None:
     """``ReliabilityPolicy.BEST_EFFORT`` (or its older spellings) -> ``best_effort``."""
     if isinstance(value, Ref):
@@ -643,63 +519,3 @@ def _policy(value: object, words: tuple[str, ...]) -> str | None:
     return None
 
 
-def _percent(template: Value, items: tuple[object, ...]) -> Value:
-    if not template.is_known:
-        return Value.unknown("format")
-    text = template.text
-    parts: list[Value | str] = []
-    i = j = 0
-    while i < len(text):
-        if text[i] == "%" and i + 1 < len(text):
-            if text[i + 1] == "%":
-                parts.append("%")
-            elif j < len(items):
-                parts.append(text_of(items[j]))
-                j += 1
-            else:
-                parts.append(Value.unknown("format"))
-            i += 2
-            while parts and i <= len(text) and text[i - 1] not in "sdifrx%" and i < len(text):
-                i += 1
-            continue
-        parts.append(text[i])
-        i += 1
-    return Value.of(*parts)
-
-
-def _string_method(base: Value, method: str, args: list[object]) -> object:
-    if method == "format" and base.is_known:
-        text = base.text
-        out: list[Value | str] = []
-        auto = 0
-        i = 0
-        while i < len(text):
-            if text.startswith("{{", i) or text.startswith("}}", i):
-                out.append(text[i])
-                i += 2
-                continue
-            if text[i] == "{":
-                end = text.find("}", i)
-                if end < 0:
-                    break
-                field_name = text[i + 1:end].split(":")[0].split("!")[0]
-                index = -1
-                if not field_name:
-                    index, auto = auto, auto + 1
-                elif field_name.isdigit():
-                    index = int(field_name)
-                out.append(text_of(args[index]) if 0 <= index < len(args)
-                           else Value.unknown("format"))
-                i = end + 1
-                continue
-            out.append(text[i])
-            i += 1
-        return Value.of(*out)
-    if method == "join" and len(args) == 1 and isinstance(args[0], Seq):
-        joined: list[Value | str] = []
-        for k, item in enumerate(args[0].items):
-            if k:
-                joined.append(base)
-            joined.append(text_of(item))
-        return Value.of(*joined)
-    return Opaque(f"str.{method}")

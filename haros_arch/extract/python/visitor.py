@@ -24,10 +24,8 @@ from .api import PyFunction
 from .conditions import condition, is_main_guard, source_text
 from .modules import ClassInfo, FunctionInfo, Loader, Module, add_import
 from .msg_types import ros_type
-from .values import (
-    MAX_CALL_DEPTH,
+from .objects import (
     BoundMethod,
-    Evaluator,
     Frame,
     NodeMethod,
     Opaque,
@@ -35,11 +33,10 @@ from .values import (
     Ref,
     Seq,
     SuperInit,
-    argument,
     param_type,
     text_of,
-    unknown_params,
 )
+from .values import MAX_CALL_DEPTH, Evaluator, argument, unknown_params
 
 Conditions = tuple[Condition, ...]
 MAX_STEPS = 200_000

@@ -1,0 +1,142 @@
+"""The static values the Python evaluator works with.
+
+Strings are ``model.values.Value`` (unknown parts print as ``?``); numbers, booleans and
+None are themselves; everything else is one of the small value classes here.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+from ...model.values import Value
+from .modules import ClassInfo, FunctionInfo, Module
+
+
+@dataclass(frozen=True)
+class Ref:
+    """Something imported from outside the package, by qualified name."""
+
+    qualname: str
+
+    @property
+    def key(self) -> tuple[str, str]:
+        parts = self.qualname.split(".")
+        return parts[0], parts[-1]
+
+
+@dataclass(frozen=True)
+class Opaque:
+    origin: str = ""
+
+
+@dataclass(frozen=True)
+class ParamValue:
+    """The value of a parameter read (``rospy.get_param('~topic', 'scan')``)."""
+
+    name: str
+    default: object = None
+
+
+@dataclass(frozen=True)
+class ParamObject:
+    """An rclpy ``Parameter`` object (from ``get_parameter`` / ``declare_parameter``)."""
+
+    name: str
+    default: object = None
+
+
+@dataclass(frozen=True)
+class ParameterClient:
+    """An rclpy ``AsyncParameterClient`` for the parameters of the node ``remote``."""
+
+    remote: Value
+
+
+@dataclass(eq=False)
+class NodeHandle:
+    """An rclpy node made by ``rclpy.create_node`` or ``Node(...)``."""
+
+    name: object = None
+
+
+@dataclass(eq=False)
+class Instance:
+    cls: ClassInfo
+    attrs: dict[str, object] = field(default_factory=dict)
+
+
+@dataclass(frozen=True)
+class BoundMethod:
+    instance: Instance
+    function: FunctionInfo
+
+
+@dataclass(frozen=True)
+class NodeMethod:
+    """A method of an rclpy node: ``self.create_publisher`` in a ``Node`` subclass."""
+
+    name: str
+    # the node whose parameters a parameter client's method reads or writes
+    remote: Value | None = None
+
+
+@dataclass(frozen=True)
+class SuperInit:
+    """``super().__init__`` or ``Node.__init__`` in a class."""
+
+
+@dataclass(frozen=True)
+class QoS:
+    policies: tuple[tuple[str, Any], ...]
+
+    def as_dict(self) -> dict[str, Any]:
+        return dict(self.policies)
+
+
+@dataclass(frozen=True)
+class Seq:
+    items: tuple[object, ...]
+
+
+@dataclass(frozen=True)
+class ModuleRef:
+    module: Module
+
+
+@dataclass
+class Frame:
+    module: Module
+    locals: dict[str, object] = field(default_factory=dict)
+    instance: Instance | None = None
+    depth: int = 0
+    # the module's own top-level code: its imports and definitions are indexed already
+    top: bool = False
+
+
+def text_of(value: object) -> Value:
+    """A value as a string value, with ``?`` for what is not known."""
+    if isinstance(value, Value):
+        return value
+    if isinstance(value, bool):
+        return Value.of(str(value))
+    if isinstance(value, int | float):
+        return Value.of(repr(value))
+    if isinstance(value, ParamValue):
+        return Value.unknown(f"parameter {value.name}")
+    return Value.unknown(getattr(value, "origin", "") or type(value).__name__)
+
+
+def param_type(value: object) -> str | None:
+    """A parameter type from the Python value it is given (as the C++ extractor names them)."""
+    if isinstance(value, bool):
+        return "bool"
+    if isinstance(value, int):
+        return "int"
+    if isinstance(value, float):
+        return "double"
+    if isinstance(value, Value):
+        return "str"
+    if isinstance(value, Seq):
+        return "list"
+    return None
