@@ -9,10 +9,13 @@ starting anything.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
+from ...model.diagnostic import Diagnostic
 from ...model.location import NOWHERE, Location
+from ...model.values import Value
 
 
 # -- substitutions ---------------------------------------------------------------
@@ -224,6 +227,17 @@ class Delayed(Action):
 
     actions: list[Action]
     why: str
+
+
+@dataclass
+class Callback(Action):
+    """``OpaqueFunction``: interpreted when reached, with the scope of that moment.
+
+    ``run(perform)`` gets a function that computes a ``Text`` in that scope and returns
+    the actions the function made and the diagnostics it gave.
+    """
+
+    run: Callable[[Callable[[Text], Value]], tuple[list[Action], list[Diagnostic]]]
 
 
 @dataclass

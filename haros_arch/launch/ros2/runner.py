@@ -209,6 +209,14 @@ class Runner:
                             Condition(action.why, "launch", "timer", action.location))
         self.run(action.actions, inner)
 
+    def do_Callback(self, action: e.Callback, scope: Scope) -> None:
+        ev = self.evaluator(scope, action.location)
+        made, found = action.run(ev.value)
+        for item in found:
+            if item not in self.model.diagnostics:
+                self.model.diagnostics.append(item)
+        self.run(made, scope)
+
     def do_Unsupported(self, action: e.Unsupported, scope: Scope) -> None:
         self.report("LAUNCH_UNSUPPORTED", action.location, detail=action.what)
 

@@ -1,0 +1,617 @@
+"""What the static Python interpreter knows of the launch API: data, one row per name.
+
+``API`` maps the last component of a qualified name (``Node``, ``IfCondition``,
+``get_package_share_directory``, ...) to a builder that makes our action, substitution
+or condition from the evaluated arguments; only names imported from the launch
+packages, ``os``, ``ament_index_python`` and ``nav2_common`` reach it. ``METHODS`` holds
+the methods of known values (``str.format``, ``list.append``, ``LaunchDescription.
+add_action``, ``LaunchConfiguration.perform``...). Calls not listed are never made.
+"""
+
+from __future__ import annotations
+
+import ast
+import os
+from collections.abc import Callable
+from typing import Any
+
+from ... import diagnostics as diag
+from ...diagnostics import Diagnostic
+from ...model.values import Value
+from . import entities as e
+from .python import (
+    Budget,
+    Context,
+    Interpreter,
+    LaunchDescription,
+    Lazy,
+    Unk,
+    _Flow,
+    concat,
+    to_text,
+)
+
+Args = list[Any]
+Kwargs = dict[str, Any]
+Builder = Callable[[Interpreter, Args, Kwargs, ast.AST], Any]
+
+
+def arg(args: Args, kwargs: Kwargs, index: int, *names: str, default: Any = None) -> Any:
+    if index < len(args):
+        return args[index]
+    for name in names:
+        if name in kwargs:
+            return kwargs[name]
+    return default
+
+
+def text_or_none(value: Any) -> e.Text | None:
+    return None if value is None else to_text(value)
+
+
+def cond(interp: Interpreter, value: Any, node: ast.AST) -> e.Cond | None:
+    if value is None:
+        return None
+    if isinstance(value, e.Cond):
+        return value
+    interp.unsupported(node, "condition is not known statically")
+    return e.Cond((e.Opaque("condition"),), source="?")
+
+
+def finish(interp: Interpreter, action: e.Action, kwargs: Kwargs, node: ast.AST) -> e.Action:
+    action.condition = cond(interp, kwargs.get("condition"), node)
+    action.location = interp.where(node)
+    return action
+
+
+def actions(interp: Interpreter, value: Any, node: ast.AST) -> list[e.Action]:
+    return [] if value is None else interp.actions_of(value, node)
+
+
+# -- substitutions ----------------------------------------------------------------------
+def launch_configuration(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    default = arg(a, k, 1, "default")
+    return e.Var(to_text(arg(a, k, 0, "variable_name")), text_or_none(default))
+
+
+def environment_variable(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    return e.Env(to_text(arg(a, k, 0, "name")), text_or_none(arg(a, k, 1, "default_value")))
+
+
+def find_package(share: bool) -> Builder:
+    def build(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+        return e.FindPackage(to_text(arg(a, k, 0, "package")), share)
+    return build
+
+
+def package_directory(share: bool) -> Builder:
+    def build(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+        name = arg(a, k, 0, "package_name")
+        if isinstance(name, str):
+            found = i.workspace.find(name)
+            if found is not None and share:
+                return found
+        return Lazy((e.FindPackage(to_text(name), share),))
+    return build
+
+
+def path_join(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    parts = arg(a, k, 0, "substitutions", default=[])
+    if not isinstance(parts, (list, tuple)):
+        return Unk("PathJoinSubstitution of an unknown list")
+    return e.PathJoin(tuple(to_text(p) for p in parts))
+
+
+def os_path_join(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    if all(isinstance(p, str) for p in a):
+        return os.path.join(*a) if a else Unk("os.path.join()")
+    return Lazy((e.PathJoin(tuple(to_text(p) for p in a)),))
+
+
+def os_path(function: Callable[[str], Any]) -> Builder:
+    def build(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+        if a and isinstance(a[0], str):
+            return function(a[0])
+        if function is os.path.dirname and a and isinstance(a[0], Lazy):
+            return Unk("dirname of a path not known statically")
+        return Unk(f"{function.__name__} of a value not known statically")
+    return build
+
+
+def getenv(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    name = arg(a, k, 0, "key")
+    if isinstance(name, str) and name in i.environment:
+        return i.environment[name]
+    default = arg(a, k, 1, "default")
+    if default is not None or len(a) > 1:
+        return default
+    return Lazy((e.Opaque(f"environment variable {name}"),))
+
+
+def python_expression(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    return e.Eval(to_text(arg(a, k, 0, "expression", default=[])))
+
+
+def logic(op: str, count: int) -> Builder:
+    def build(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+        values = list(a) + list(k.values())
+        return e.Logic(op, tuple(to_text(v) for v in values[:count]))
+    return build
+
+
+def opaque(what: str) -> Builder:
+    def build(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+        return e.Opaque(f"{what} is not evaluated; its value is unknown")
+    return build
+
+
+def text_substitution(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    return concat([arg(a, k, 0, "text", default="")])
+
+
+# -- conditions ---------------------------------------------------------------------------
+def if_condition(negate: bool) -> Builder:
+    def build(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+        expr = arg(a, k, 0, "predicate_expression")
+        source = ast.unparse(n.args[0]) if isinstance(n, ast.Call) and n.args else "?"
+        return e.Cond(to_text(expr), negate, source)
+    return build
+
+
+def config_equals(negate: bool) -> Builder:
+    def build(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+        name = arg(a, k, 0, "launch_configuration_name")
+        expected = arg(a, k, 1, "expected_value")
+        text = ast.unparse(n) if isinstance(n, ast.Call) else "?"
+        return e.Cond((e.Var(to_text(name), ("",)),), negate, text, to_text(expected or ""))
+    return build
+
+
+# -- actions ------------------------------------------------------------------------------
+def declare_argument(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    name = arg(a, k, 0, "name")
+    if not isinstance(name, str):
+        i.unsupported(n, "launch argument with a name not known statically")
+        return None
+    return finish(i, e.DeclareArg(name, text_or_none(arg(a, k, 1, "default_value"))), k, n)
+
+
+def set_configuration(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    return finish(i, e.SetConfig(to_text(arg(a, k, 0, "name")),
+                                 to_text(arg(a, k, 1, "value"))), k, n)
+
+
+def launch_description(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    initial = arg(a, k, 0, "initial_entities", default=[])
+    return LaunchDescription(list(initial) if isinstance(initial, (list, tuple)) else [])
+
+
+def parameters(i: Interpreter, value: Any, n: ast.AST) -> list[e.ParamEntry]:
+    out: list[e.ParamEntry] = []
+    if value is None:
+        return out
+    if not isinstance(value, (list, tuple)):
+        i.unsupported(n, "node parameters not known statically")
+        return out
+    for item in value:
+        if isinstance(item, dict):
+            for key, val in item.items():
+                out.append((to_text(key), param_value(val)))
+        elif isinstance(item, e.ParamFile):
+            out.append(item)
+        elif isinstance(item, (str, Lazy, e.Subst, list)):
+            out.append(e.ParamFile(to_text(item), location=i.where(n)))
+        else:
+            i.unsupported(n, "a node parameter entry not known statically")
+    return out
+
+
+def param_value(value: Any) -> Any:
+    """Python values stay; substitutions become Text (read as YAML when performed)."""
+    if isinstance(value, (Lazy, e.Subst, Unk)):
+        return to_text(value)
+    if isinstance(value, (list, tuple)):
+        if any(isinstance(v, (Lazy, e.Subst)) for v in value) and all(
+                isinstance(v, (str, Lazy, e.Subst)) for v in value):
+            return to_text(value)  # launch_ros concatenates a list of substitutions
+        return [param_value(v) for v in value]
+    if isinstance(value, dict):
+        return {str(k): param_value(v) for k, v in value.items()}
+    if isinstance(value, str):
+        return e.ParamValue(value, as_text=False)
+    return value
+
+
+def remappings(i: Interpreter, value: Any, n: ast.AST) -> list[tuple[e.Text, e.Text]]:
+    out: list[tuple[e.Text, e.Text]] = []
+    if value is None:
+        return out
+    if not isinstance(value, (list, tuple)):
+        i.unsupported(n, "remappings not known statically")
+        return out
+    for pair in value:
+        if isinstance(pair, (list, tuple)) and len(pair) == 2:
+            out.append((to_text(pair[0]), to_text(pair[1])))
+        else:
+            i.unsupported(n, "a remapping not known statically")
+    return out
+
+
+def words(value: Any) -> list[e.Text]:
+    if value is None:
+        return []
+    if isinstance(value, (list, tuple)):
+        return [to_text(v) for v in value]
+    return [to_text(value)]
+
+
+def node(container: bool) -> Builder:
+    def build(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+        action = e.NodeAction(
+            text_or_none(k.get("package", k.get("node_package"))),
+            text_or_none(k.get("executable", k.get("node_executable"))),
+            text_or_none(k.get("name", k.get("node_name"))),
+            text_or_none(k.get("namespace", k.get("node_namespace"))),
+            parameters(i, k.get("parameters"), n), remappings(i, k.get("remappings"), n),
+            words(k.get("arguments")), words(k.get("ros_arguments")), container=container)
+        if container:
+            action.composable = composables(i, k.get("composable_node_descriptions"), n)
+        return finish(i, action, k, n)
+    return build
+
+
+def composable_node(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    return e.ComposableNode(
+        text_or_none(k.get("package")), text_or_none(k.get("plugin")),
+        text_or_none(k.get("name")), text_or_none(k.get("namespace")),
+        parameters(i, k.get("parameters"), n), remappings(i, k.get("remappings"), n),
+        cond(i, k.get("condition"), n), i.where(n))
+
+
+def composables(i: Interpreter, value: Any, n: ast.AST) -> list[e.ComposableNode]:
+    if value is None:
+        return []
+    if not isinstance(value, (list, tuple)):
+        i.unsupported(n, "composable node list not known statically")
+        return []
+    return [c for c in value if isinstance(c, e.ComposableNode)]
+
+
+def load_composable(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    target = k.get("target_container")
+    if isinstance(target, e.NodeAction):
+        target = target.name if target.name is not None else Unk("container without name")
+    return finish(i, e.LoadComposable(to_text(target), composables(
+        i, k.get("composable_node_descriptions"), n)), k, n)
+
+
+def include(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    source = arg(a, k, 0, "launch_description_source")
+    given = k.get("launch_arguments", [])
+    if isinstance(given, dict):
+        given = list(given.items())
+    pairs: list[tuple[e.Text, e.Text]] = []
+    if isinstance(given, (list, tuple)):
+        for pair in given:
+            if isinstance(pair, (list, tuple)) and len(pair) == 2:
+                pairs.append((to_text(pair[0]), to_text(pair[1])))
+    else:
+        i.unsupported(n, "launch_arguments not known statically")
+    if not isinstance(source, _Source):
+        source = _Source(to_text(source))
+    return finish(i, e.Include(source.path, pairs), k, n)
+
+
+class _Source:
+    def __init__(self, path: e.Text) -> None:
+        self.path = path
+
+
+def description_source(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    return _Source(to_text(arg(a, k, 0, "launch_file_path")))
+
+
+def group(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    configs = k.get("launch_configurations") or {}
+    pairs = [(to_text(key), to_text(val)) for key, val in configs.items()] if isinstance(
+        configs, dict) else []
+    scoped, forwarding = k.get("scoped", True), k.get("forwarding", True)
+    return finish(i, e.Group(actions(i, arg(a, k, 0, "actions"), n),
+                             scoped is not False, forwarding is not False, pairs), k, n)
+
+
+def push_namespace(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    return finish(i, e.PushNamespace(to_text(arg(a, k, 0, "namespace"))), k, n)
+
+
+def set_remap(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    return finish(i, e.SetRemap(to_text(arg(a, k, 0, "src")), to_text(arg(a, k, 1, "dst"))),
+                  k, n)
+
+
+def set_parameter(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    return finish(i, e.SetParam(to_text(arg(a, k, 0, "name")),
+                                param_value(arg(a, k, 1, "value"))), k, n)
+
+
+def set_env(unset: bool) -> Builder:
+    def build(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+        value = None if unset else to_text(arg(a, k, 1, "value", default=""))
+        return finish(i, e.SetEnv(to_text(arg(a, k, 0, "name")), value), k, n)
+    return build
+
+
+def timer(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    period = arg(a, k, 0, "period")
+    return finish(i, e.Delayed(actions(i, k.get("actions"), n),
+                               f"after TimerAction(period={period})"), k, n)
+
+
+def event_handler(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    found = [v for key, v in k.items() if key.startswith("on_")]
+    label = ast.unparse(n.func) if isinstance(n, ast.Call) else "event"
+    contents: list[e.Action] = []
+    for value in found:
+        if isinstance(value, (e.Action, list, tuple, LaunchDescription)):
+            contents.extend(actions(i, value, n))
+        elif value is not None:
+            i.unsupported(n, f"{label} with a callable is not interpreted")
+    return e.Delayed(contents, f"on event {label}", location=i.where(n))
+
+
+def register_handler(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    handler = arg(a, k, 0, "event_handler")
+    return handler if isinstance(handler, e.Action) else None
+
+
+def opaque_function(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    function = arg(a, k, 0, "function")
+    extra = list(k.get("args") or [])
+    extra_kwargs = dict(k.get("kwargs") or {})
+    if not hasattr(function, "node"):
+        return finish(i, e.Unsupported("OpaqueFunction of an unknown function"), k, n)
+
+    def run(perform: Callable[[e.Text], Value]) -> tuple[list[e.Action], list[Diagnostic]]:
+        def py(t: e.Text) -> Any:
+            value = perform(t)
+            if value.literal is not None:
+                return value.literal
+            return Lazy(tuple(p if isinstance(p, str) else e.Opaque(p.origin or "?")
+                              for p in value.parts))
+
+        before = len(i.diagnostics)
+        try:
+            result = i.call(function, [Context(py), *extra], extra_kwargs, n)
+            made = actions(i, result, n) if result is not None else []
+        except Budget as stop:
+            i.diagnostics.append(diag.make("LAUNCH_PY_BUDGET", i.where(n), detail=str(stop)))
+            made = []
+        except (RecursionError, _Flow):
+            i.diagnostics.append(diag.make("LAUNCH_PY_BUDGET", i.where(n),
+                                           detail="interpretation nested too deeply"))
+            made = []
+        return made, i.diagnostics[before:]
+
+    return finish(i, e.Callback(run), k, n)
+
+
+def ignored(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    return None  # no effect on the Computation Graph (LogInfo, ExecuteProcess, ...)
+
+
+def param_file(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    return e.ParamFile(to_text(arg(a, k, 0, "param_file")), location=i.where(n))
+
+
+def rewritten_yaml(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    rewrites = k.get("param_rewrites") or {}
+    pairs = [(to_text(key), to_text(val) if not isinstance(val, (bool, int, float))
+              else val) for key, val in rewrites.items()] if isinstance(rewrites, dict) else []
+    root = k.get("root_key")
+    return e.ParamFile(to_text(arg(a, k, 0, "source_file")), text_or_none(root), pairs,
+                       i.where(n))
+
+
+def parameter_value(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    value_type = k.get("value_type")
+    as_text = isinstance(value_type, Unk) is False and getattr(
+        value_type, "qualified", "") == "str"
+    return e.ParamValue(to_text(a[0]) if a and as_text else param_value(a[0] if a else None),
+                        as_text)
+
+
+# -- builtins --------------------------------------------------------------------------------
+def builtin(function: Callable[..., Any], *types: type) -> Builder:
+    def build(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+        if k or any(not isinstance(v, types) for v in a):
+            return Unk(f"{function.__name__}() of values not known statically")
+        try:
+            return function(*a)
+        except (TypeError, ValueError, OverflowError) as err:
+            return i.unsupported(n, f"{function.__name__}() fails: {err}")
+    return build
+
+
+def bounded_range(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    if not all(isinstance(v, int) for v in a) or not a:
+        return Unk("range of unknown bounds")
+    values = range(*a)
+    if len(values) > 10_000:
+        return i.unsupported(n, "range() above 10000 items is not expanded")
+    return list(values)
+
+
+SCALARS = (str, int, float, bool, list, tuple, dict, type(None))
+API: dict[str, Builder] = {
+    "LaunchDescription": launch_description,
+    "LaunchConfiguration": launch_configuration,
+    "EnvironmentVariable": environment_variable,
+    "FindPackageShare": find_package(True), "FindPackagePrefix": find_package(False),
+    "FindPackage": find_package(True),
+    "get_package_share_directory": package_directory(True),
+    "get_package_prefix": package_directory(False),
+    "join": os_path_join, "dirname": os_path(os.path.dirname),
+    "basename": os_path(os.path.basename), "abspath": os_path(os.path.normpath),
+    "realpath": os_path(os.path.normpath), "getenv": getenv,
+    "PathJoinSubstitution": path_join, "TextSubstitution": text_substitution,
+    "PythonExpression": python_expression,
+    "ThisLaunchFileDir": lambda i, a, k, n: e.ThisFile(True),
+    "ThisLaunchFile": lambda i, a, k, n: e.ThisFile(False),
+    "AnonName": lambda i, a, k, n: e.Anon(to_text(arg(a, k, 0, "name"))),
+    "NotSubstitution": logic("not", 1), "AndSubstitution": logic("and", 2),
+    "OrSubstitution": logic("or", 2), "EqualsSubstitution": logic("equals", 2),
+    "IfElseSubstitution": logic("if", 3),
+    "Command": opaque("Command (never run)"), "FindExecutable": opaque("FindExecutable"),
+    "ExecutableInPackage": opaque("ExecutableInPackage"),
+    "IfCondition": if_condition(False), "UnlessCondition": if_condition(True),
+    "LaunchConfigurationEquals": config_equals(False),
+    "LaunchConfigurationNotEquals": config_equals(True),
+    "DeclareLaunchArgument": declare_argument,
+    "SetLaunchConfiguration": set_configuration,
+    "Node": node(False), "LifecycleNode": node(False),
+    "ComposableNodeContainer": node(True), "ComposableNode": composable_node,
+    "LoadComposableNodes": load_composable,
+    "IncludeLaunchDescription": include,
+    "PythonLaunchDescriptionSource": description_source,
+    "XMLLaunchDescriptionSource": description_source,
+    "YAMLLaunchDescriptionSource": description_source,
+    "AnyLaunchDescriptionSource": description_source,
+    "FrontendLaunchDescriptionSource": description_source,
+    "GroupAction": group, "PushRosNamespace": push_namespace,
+    "PushROSNamespace": push_namespace, "SetRemap": set_remap,
+    "SetParameter": set_parameter, "SetEnvironmentVariable": set_env(False),
+    "UnsetEnvironmentVariable": set_env(True), "TimerAction": timer,
+    "RegisterEventHandler": register_handler, "OnProcessExit": event_handler,
+    "OnProcessStart": event_handler, "OnExecutionComplete": event_handler,
+    "OnShutdown": event_handler, "OnProcessIO": event_handler,
+    "OpaqueFunction": opaque_function,
+    "LogInfo": ignored, "ExecuteProcess": ignored, "Shutdown": ignored,
+    "EmitEvent": ignored, "AppendEnvironmentVariable": ignored, "SetROSLogDir": ignored,
+    "SetUseSimTime": ignored,
+    "ParameterFile": param_file, "RewrittenYaml": rewritten_yaml,
+    "ReplaceString": param_file, "ParameterValue": parameter_value,
+    "len": builtin(len, str, list, tuple, dict), "str": builtin(str, str, int, float, bool),
+    "int": builtin(int, str, int, float, bool), "float": builtin(float, str, int, float),
+    "bool": builtin(bool, *SCALARS), "list": builtin(list, str, list, tuple, dict),
+    "tuple": builtin(tuple, str, list, tuple), "dict": builtin(dict, list, tuple, dict),
+    "sorted": builtin(sorted, list, tuple), "min": builtin(min, int, float, list, tuple),
+    "max": builtin(max, int, float, list, tuple), "abs": builtin(abs, int, float),
+    "enumerate": builtin(lambda x: list(enumerate(x)), list, tuple, str),
+    "zip": builtin(lambda *x: list(zip(*x, strict=False)), list, tuple), "range": bounded_range,
+    "print": ignored, "isinstance": lambda i, a, k, n: Unk("isinstance"),
+}
+BUILTINS = frozenset(("len", "str", "int", "float", "bool", "list", "tuple", "dict",
+                      "sorted", "min", "max", "abs", "enumerate", "zip", "range", "print",
+                      "isinstance"))
+
+
+# -- methods --------------------------------------------------------------------------------
+Method = Callable[[Interpreter, Any, Args, Kwargs, ast.AST], Any]
+
+
+def m_add_action(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    if isinstance(owner, LaunchDescription) and a:
+        owner.actions.append(a[0])
+        return None
+    return i.unsupported(n, "add_action on a value not known statically")
+
+
+def m_list(name: str) -> Method:
+    def call(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
+        if isinstance(owner, LaunchDescription) and name in ("append", "extend"):
+            owner = owner.actions
+        if isinstance(owner, list):
+            if name == "append" and len(a) == 1:
+                owner.append(a[0])
+            elif name == "extend" and len(a) == 1 and isinstance(a[0], (list, tuple)):
+                owner.extend(a[0])
+            elif name == "insert" and len(a) == 2 and isinstance(a[0], int):
+                owner.insert(a[0], a[1])
+            else:
+                return i.unsupported(n, f"list.{name} with these arguments")
+            i.sized(owner)
+            return None
+        return i.unsupported(n, f".{name}() on a value not known statically")
+    return call
+
+
+def m_str(name: str) -> Method:
+    def call(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
+        if name == "perform":
+            if isinstance(owner, (e.Subst, Lazy)) and a and isinstance(a[0], Context):
+                return a[0].perform(to_text(owner))
+            return Unk("perform() outside an OpaqueFunction")
+        if name == "format" and isinstance(owner, str) and any(
+                isinstance(v, (Lazy, e.Subst, Unk)) for v in [*a, *k.values()]):
+            return _format_lazy(owner, a, k)
+        if not isinstance(owner, str) or not all(
+                isinstance(v, (str, int, float, list, tuple)) for v in [*a, *k.values()]):
+            if name == "join" and isinstance(owner, str) and a and isinstance(a[0], list):
+                pieces: list[Any] = []
+                for index, item in enumerate(a[0]):
+                    pieces.extend([owner, item] if index else [item])
+                return concat(pieces)
+            return Unk(f"str.{name}() of a value not known statically")
+        try:
+            return i.sized(getattr(owner, name)(*a, **k))
+        except (TypeError, ValueError, IndexError, KeyError) as err:
+            return i.unsupported(n, f"str.{name}() fails: {err}")
+    return call
+
+
+def _format_lazy(template: str, a: Args, k: Kwargs) -> Any:
+    """``'{}/{}'.format(LaunchConfiguration('ns'), 'x')`` for simple ``{}`` fields."""
+    pieces: list[Any] = []
+    rest = template
+    index = 0
+    while "{" in rest:
+        before, _, after = rest.partition("{")
+        field_name, _, rest = after.partition("}")
+        pieces.append(before)
+        if field_name == "":
+            pieces.append(a[index] if index < len(a) else Unk("format"))
+            index += 1
+        elif field_name.isdigit():
+            pieces.append(a[int(field_name)] if int(field_name) < len(a) else Unk("format"))
+        else:
+            pieces.append(k.get(field_name, Unk("format")))
+    pieces.append(rest)
+    return concat(pieces)
+
+
+def m_dict(name: str) -> Method:
+    def call(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
+        if isinstance(owner, Context) and name == "get" and a:
+            return owner.perform((e.Var(to_text(a[0]), to_text(a[1]) if len(a) > 1
+                                        else None),))
+        if hasattr(owner, "get") and not isinstance(owner, dict) and name == "get":
+            return owner.get(i, a, n)
+        if not isinstance(owner, dict):
+            return i.unsupported(n, f".{name}() on a value not known statically")
+        if name == "items":
+            return list(owner.items())
+        if name == "keys":
+            return list(owner)
+        if name == "values":
+            return list(owner.values())
+        if name == "get" and a:
+            return owner.get(a[0], a[1] if len(a) > 1 else None)
+        if name == "update" and a and isinstance(a[0], dict):
+            owner.update(a[0])
+            return None
+        if name == "copy":
+            return dict(owner)
+        return i.unsupported(n, f"dict.{name} with these arguments")
+    return call
+
+
+METHODS: dict[str, Method] = {
+    "add_action": m_add_action, "append": m_list("append"), "extend": m_list("extend"),
+    "insert": m_list("insert"), "items": m_dict("items"), "keys": m_dict("keys"),
+    "values": m_dict("values"), "get": m_dict("get"), "update": m_dict("update"),
+    "copy": m_dict("copy"), "perform": m_str("perform"),
+    **{name: m_str(name) for name in (
+        "format", "join", "replace", "split", "strip", "lstrip", "rstrip", "lower", "upper",
+        "startswith", "endswith", "capitalize", "title", "rsplit", "removeprefix",
+        "removesuffix")},
+}
