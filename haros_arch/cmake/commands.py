@@ -329,7 +329,8 @@ def _set_target_properties(it: Interpreter, command: Invocation, args: list[str]
     split = args.index("PROPERTIES")
     props = args[split + 1:]
     for key, value in zip(props[::2], props[1::2], strict=False):
-        if key in ("OUTPUT_NAME", "RUNTIME_OUTPUT_NAME", "LIBRARY_OUTPUT_NAME"):
+        if key in ("OUTPUT_NAME", "RUNTIME_OUTPUT_NAME", "LIBRARY_OUTPUT_NAME") and (
+                "$<" not in value):  # a generator expression: unknown, keep the target name
             for name in args[:split]:
                 if name in it.targets:
                     it.targets[name].output_name = value
@@ -340,7 +341,8 @@ def _set_property(it: Interpreter, command: Invocation, args: list[str]) -> None
     if args[:1] != ["TARGET"] or "PROPERTY" not in args:
         return
     at = args.index("PROPERTY")
-    if args[at + 1:at + 2] in (["OUTPUT_NAME"], ["RUNTIME_OUTPUT_NAME"]) and len(args) > at + 2:
+    if args[at + 1:at + 2] in (["OUTPUT_NAME"], ["RUNTIME_OUTPUT_NAME"]) and len(
+            args) > at + 2 and "$<" not in args[at + 2]:
         for name in args[1:at]:
             if name in it.targets:
                 it.targets[name].output_name = args[at + 2]

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import os
 import re
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Collection, Mapping
 
 Truth = bool | None
 
@@ -26,11 +26,14 @@ BINARY = ("STREQUAL", "STRLESS", "STRGREATER", "STRLESS_EQUAL", "STRGREATER_EQUA
 
 class Evaluator:
     def __init__(self, variables: Mapping[str, str], targets: Mapping[str, object],
-                 base: str, known_commands: Callable[[str], bool] = lambda _: False) -> None:
+                 base: str, known_commands: Callable[[str], bool] = lambda _: False,
+                 assigned: Collection[str] = ()) -> None:
         self.variables = variables
         self.targets = targets
         self.base = base
         self.known_commands = known_commands
+        # names the package's own files set somewhere: when unset now, they are unset
+        self.assigned = assigned
 
     def evaluate(self, args: list[str]) -> Truth:
         tokens = self._groups(list(args))
@@ -102,13 +105,17 @@ class Evaluator:
         if text in self.variables:
             value = self.variables[text].upper()
             return not (value in _FALSE or value.endswith("-NOTFOUND"))
+        if text in self.assigned:
+            return False
         return None  # a variable we do not know: an environment or cache setting
 
     def _unary(self, op: str, arg: str) -> Truth:
         if op == "DEFINED":
             if arg.startswith("ENV{"):
                 return None
-            return True if arg in self.variables else None
+            if arg in self.variables:
+                return True
+            return False if arg in self.assigned else None
         if op == "TARGET":
             return True if arg in self.targets else None
         if op in ("EXISTS", "IS_DIRECTORY"):

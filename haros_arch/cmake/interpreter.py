@@ -72,6 +72,7 @@ class Interpreter:
         self.location = location
         self.scopes: list[dict[str, str]] = [{}]
         self.cache: dict[str, str] = {}
+        self.assigned: set[str] = set()
         self.targets: dict[str, Target] = {}
         self.programs: list[Program] = []
         self.program_dirs: list[Program] = []
@@ -97,6 +98,7 @@ class Interpreter:
 
     def set(self, name: str, value: str) -> None:
         self.scopes[-1][name] = value
+        self.assigned.add(name)
 
     def unset(self, name: str) -> None:
         self.scopes[-1].pop(name, None)
@@ -108,6 +110,7 @@ class Interpreter:
             self.scopes[-2].pop(name, None)
         else:
             self.scopes[-2][name] = value
+            self.assigned.add(name)
 
     def current_conditions(self) -> tuple[Condition, ...]:
         return (*self.returns, *self.conditions)
@@ -237,7 +240,7 @@ class Interpreter:
     def evaluate(self, args: list[str]) -> bool | None:
         evaluator = Evaluator(self.variables, self.targets, self.package_root,
                               lambda name: name.lower() in HANDLERS
-                              or name.lower() in self.definitions)
+                              or name.lower() in self.definitions, self.assigned)
         return evaluator.evaluate(args)
 
     def run_if(self, commands: list[Invocation], index: int) -> int:
