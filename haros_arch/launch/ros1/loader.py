@@ -284,7 +284,7 @@ class Ros1Loader:
                 self.fail(scope, element, "remap from/to attributes cannot be empty")
                 return None
             if not is_legal_name(name):
-                self.fail(scope, element, f"remap {label} [{name}] is not a valid ROS name")
+                self.fail(scope, element, f"remap {label} '{name}' is not a valid ROS name")
                 return None
         return source, target
 
@@ -388,7 +388,7 @@ class Ros1Loader:
             else:
                 self.node_names[full] = location
         if machine and machine not in self.model.machines and "?" not in machine:
-            self.fail(scope, element, f"unknown machine [{machine}]")
+            self.fail(scope, element, f"unknown machine '{machine}'")
         try:
             respawn_delay = float(delay) if delay else 0.0
         except ValueError:
@@ -440,8 +440,8 @@ class Ros1Loader:
             return
         unused = [name for name in passed if name not in inner.arg_names]
         if unused and not inner.pass_all_args:
-            self.fail(scope, element, f"unused args [{', '.join(unused)}] for include of "
-                                      f"[{self.workspace.relpath(filename)}]")
+            self.fail(scope, element, f"unused args ({', '.join(unused)}) for include of "
+                                      f"{self.workspace.relpath(filename)}")
 
     def load_file(self, path: str, scope: Scope, element: Element | None = None,
                   parent: Scope | None = None) -> bool:

@@ -62,14 +62,14 @@ def collect(text: str) -> list[str]:
         if char == "$":
             if state in ("in", "lp"):
                 raise SubstitutionError(f"dollar signs '$' cannot be inside of "
-                                        f"substitution args [{text}]")
+                                        f"substitution args: {text}")
             state = "dollar"
         elif char == "(":
             if state == "dollar":
                 state = "lp"
             elif state != "out":
                 raise SubstitutionError(f"invalid left parenthesis '(' in substitution "
-                                        f"args [{text}]")
+                                        f"args: {text}")
         elif char == ")":
             if state == "in":
                 out.append(buff)
@@ -94,7 +94,7 @@ def substitute(text: str, ctx: Context) -> Value:
     for body in bodies:
         words = [w for w in body.split(" ") if w]
         if not words or words[0] not in VALID:
-            raise SubstitutionError(f"unknown substitution command [{body}]; valid "
+            raise SubstitutionError(f"unknown substitution command '{body}'; valid "
                                     f"commands are {', '.join(VALID)}")
     value = Value.of(text)
     for body in bodies:
@@ -150,7 +150,7 @@ def _one(command: str, args: list[str], raw: str, ctx: Context) -> Value:
         return _anon(args[0], ctx)
     if command == "dirname":
         return Value.of(os.path.dirname(os.path.abspath(ctx.filename)))
-    raise SubstitutionError(f"unknown substitution command [{raw}]")
+    raise SubstitutionError(f"unknown substitution command '{raw}'")
 
 
 def _arg(name: str, ctx: Context) -> Value:

@@ -90,7 +90,7 @@ def read_param_file(loader: Ros1Loader, path: str, scope: Scope, element: Elemen
             f"{path} is outside the workspace and installed packages; it is not read"))
         return None
     if not os.path.isfile(path):
-        loader.fail(scope, element, f"file does not exist [{loader.workspace.relpath(path)}]")
+        loader.fail(scope, element, f"file does not exist: {loader.workspace.relpath(path)}")
         return None
     data, found = read_bytes(path, loader.where(scope, element), MAX_PARAM_FILE)
     loader.model.diagnostics.extend(found)
