@@ -13,7 +13,6 @@ roslaunch refuses are counted apart, with whether we report an error too.
 from __future__ import annotations
 
 import json
-import os
 import re
 import subprocess
 import sys
