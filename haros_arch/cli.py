@@ -21,7 +21,7 @@ from .model.model import Model
 from .model.serialise import dumps
 from .pipeline import analyse
 from .project import ProjectError, load
-from .report.text import count_by_severity, print_diagnostics, print_summary
+from .report.text import print_diagnostics, print_summary
 
 EXIT_OK, EXIT_FINDINGS, EXIT_USAGE, EXIT_INTERNAL = 0, 1, 2, 3
 
@@ -38,11 +38,19 @@ def _parser() -> argparse.ArgumentParser:
     extract.add_argument("-o", "--output", help="write the JSON here (default: stdout)")
     extract.add_argument("-q", "--quiet", action="store_true", help="no summary")
 
-    check = sub.add_parser("check", help="report diagnostics; exit 1 at --fail-on or above")
+    check = sub.add_parser("check", help="run the query catalogue and report findings and "
+                           "diagnostics; exit 1 at --fail-on or above")
     check.add_argument("project", help="project file (YAML)")
-    check.add_argument("--format", choices=("text", "json"), default="text")
-    check.add_argument("--fail-on", choices=tuple(SEVERITY_RANK), default="error")
+    check.add_argument("--format", choices=("text", "json", "sarif", "junit"), default="text")
+    check.add_argument("--fail-on", choices=(*SEVERITY_RANK, "never"), default="error")
     check.add_argument("-o", "--output", help="write the report here (default: stdout)")
+
+    query = sub.add_parser("query", help="evaluate a query and print its matches")
+    query.add_argument("project", nargs="?", help="project file (YAML)")
+    query.add_argument("expression", help="the query (pyflwor path or FLWR syntax)")
+    query.add_argument("--model", help="query this saved JSON model instead of extracting")
+    query.add_argument("--config", help="run in this configuration's scope")
+    query.add_argument("--format", choices=("text", "json"), default="text")
 
     capture = sub.add_parser("capture", help="read a running ROS 1 master's graph (XML-RPC)")
     capture.add_argument("--master", default=os.environ.get("ROS_MASTER_URI",
@@ -111,23 +119,15 @@ def cmd_extract(args: argparse.Namespace, out: Console, err: Console) -> int:
 
 
 def cmd_check(args: argparse.Namespace, out: Console, err: Console) -> int:
-    model = _analyse(args.project, err)
-    if model is None:
-        return EXIT_USAGE
-    found = model.all_diagnostics
-    if args.format == "json":
-        import json
+    from .query.command import check
 
-        from .model.serialise import to_data
+    return check(args, out, err, _analyse)
 
-        _write(json.dumps({"diagnostics": to_data(found)}, indent=2) + "\n", args.output)
-    else:
-        print_diagnostics(found, out)
-        counts = count_by_severity(found)
-        out.print(", ".join(f"{n} {k}(s)" for k, n in counts.items()), highlight=False)
-    threshold = SEVERITY_RANK[args.fail_on]
-    failing = [d for d in found if SEVERITY_RANK[d.severity] >= threshold]
-    return EXIT_FINDINGS if failing else EXIT_OK
+
+def cmd_query(args: argparse.Namespace, out: Console, err: Console) -> int:
+    from .query.command import query
+
+    return query(args, out, err, _analyse)
 
 
 def cmd_explain(args: argparse.Namespace, out: Console, err: Console) -> int:

@@ -1,0 +1,183 @@
+"""Rebuild a read-only model from its JSON data (the inverse of ``serialise.to_data``).
+
+Used by ``haros-arch query --model model.json`` and by test fixtures, which may leave
+out any field: defaults fill it, and topics, services, actions and parameters that links
+name are created when the document does not list them.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from .conditions import Condition
+from .diagnostic import Diagnostic
+from .location import NOWHERE, Location
+from .model import Model
+from .rosname import RosName, namespace_of
+from .runtime import (
+    LAUNCH_WRITER,
+    LINK_CLASSES,
+    Action,
+    Configuration,
+    NodeInstance,
+    Parameter,
+    Resource,
+    Service,
+    Topic,
+)
+from .source import Dependency, Node, Package, PrimitiveCall
+from .values import UNKNOWN_MARK
+
+_RESOURCE_OF_KIND: dict[str, type[Resource]] = {
+    "publish": Topic, "subscribe": Topic, "server": Service, "client": Service,
+    "action-server": Action, "action-client": Action, "read": Parameter,
+    "write": Parameter, "declare": Parameter,
+}
+
+
+class ModelDataError(ValueError):
+    """The document is not a model this reader understands."""
+
+
+def location(data: Any) -> Location:
+    if not isinstance(data, dict):
+        return NOWHERE
+    return Location(data.get("package"), data.get("file"), int(data.get("line") or 0),
+                    int(data.get("column") or 0))
+
+
+def conditions(data: Any) -> tuple[Condition, ...]:
+    found = []
+    for item in data or ():
+        if isinstance(item, str):
+            found.append(Condition(item))
+        elif isinstance(item, dict):
+            found.append(Condition(str(item.get("text", "")), item.get("kind", "source"),
+                                   item.get("statement", "if"), location(item.get("location"))))
+    return tuple(found)
+
+
+def _diagnostic(data: dict[str, Any]) -> Diagnostic:
+    return Diagnostic(str(data.get("code", "")), data.get("severity", "warning"),
+                      str(data.get("message", "")), location(data.get("location")))
+
+
+def _node(data: dict[str, Any], package: str) -> Node:
+    name = str(data.get("name", ""))
+    executable = data.get("executable") or name.partition("/")[2] or name
+    calls = [PrimitiveCall(c.get("kind", "publish"), str(c.get("name", "")), c.get("type"),
+                           c.get("queue_size"), c.get("qos"), bool(c.get("latch", False)),
+                           c.get("callback"), conditions(c.get("conditions")),
+                           location(c.get("location")))
+             for c in data.get("calls", ())]
+    return Node(data.get("package", package), executable, data.get("kind", "executable"),
+                data.get("language", "cpp"), list(data.get("sources", ())), calls,
+                data.get("rosname"), conditions(data.get("conditions")),
+                location(data.get("location")))
+
+
+def _package(data: dict[str, Any]) -> Package:
+    name = str(data.get("name", ""))
+    deps = [Dependency(d.get("name", ""), d.get("kind", "depend"), d.get("condition"))
+            for d in data.get("dependencies", ()) if isinstance(d, dict)]
+    return Package(name, data.get("path", name), data.get("build_type", "unknown"),
+                   data.get("version", ""), int(data.get("format", 1)), deps, [],
+                   [_node(n, name) for n in data.get("nodes", ())],
+                   location(data.get("location")))
+
+
+class _Resources:
+    def __init__(self, config: Configuration) -> None:
+        self.config = config
+        self.by_key: dict[tuple[type[Resource], str], Resource] = {}
+
+    def add(self, cls: type[Resource], data: dict[str, Any]) -> Resource:
+        name = str(data.get("name", ""))
+        resource = cls(name, id=data.get("id") or f"{cls.__name__.lower()}:{name}")
+        if isinstance(resource, Parameter):
+            writers = data.get("writers", ())
+            resource.value = data.get("value")
+            resource.set_by_launch = LAUNCH_WRITER in writers or bool(data.get("set_by_launch"))
+            if resource.set_by_launch:
+                resource.launch_type = data.get("type")
+                resource.launch_location = location(data.get("location"))
+                resource.launch_conditions = conditions(data.get("conditions"))
+        self.by_key.setdefault((cls, name), resource)
+        self._collection(cls).append(resource)
+        return resource
+
+    def get(self, cls: type[Resource], name: str) -> Resource:
+        found = self.by_key.get((cls, name))
+        if found is not None and (UNKNOWN_MARK not in name or not found.links):
+            return found
+        same = sum(1 for key in self.by_key if key == (cls, name))
+        repeats = sum(1 for r in self._collection(cls) if r.name == name) + same - 1
+        suffix = f"#{repeats + 1}" if found is not None else ""
+        return self.add(cls, {"name": name, "id": f"{cls.__name__.lower()}:{name}{suffix}"})
+
+    def _collection(self, cls: type[Resource]) -> list[Any]:
+        collections: dict[type[Resource], list[Any]] = {
+            Topic: self.config.topics, Service: self.config.services,
+            Action: self.config.actions, Parameter: self.config.parameters}
+        return collections[cls]
+
+
+def _configuration(data: dict[str, Any], nodes: dict[str, Node]) -> Configuration:
+    config = Configuration(str(data.get("name", "")), list(data.get("launch", ())),
+                           dict(data.get("args", {})))
+    by_name: dict[str, NodeInstance] = {}
+    for item in data.get("nodes", ()):
+        name = str(item.get("name", ""))
+        instance = NodeInstance(
+            name, nodes.get(item.get("node") or ""), item.get("id") or f"node:{name}",
+            item.get("namespace") or namespace_of(name),
+            [tuple(pair) for pair in item.get("remaps", ())], item.get("args", ""),
+            conditions(item.get("conditions")), location(item.get("location")))
+        config.nodes.append(instance)
+        by_name.setdefault(name, instance)
+    resources = _Resources(config)
+    for key, cls in (("topics", Topic), ("services", Service), ("actions", Action),
+                     ("parameters", Parameter)):
+        for item in data.get(key, ()):
+            resources.add(cls, item)
+    for item in data.get("links", ()):
+        kind = item.get("kind", "")
+        if kind not in LINK_CLASSES:
+            raise ModelDataError(f"unknown link kind {kind!r}")
+        node_name = str(item.get("node", ""))
+        found = by_name.get(node_name)
+        if found is not None:
+            instance = found
+        else:
+            instance = NodeInstance(node_name, None, f"node:{node_name}",
+                                    namespace_of(node_name))
+            config.nodes.append(instance)
+            by_name[node_name] = instance
+        full = str(item.get("name", ""))
+        resource = resources.get(_RESOURCE_OF_KIND[kind], full)
+        rosname = RosName(str(item.get("given", full)), full, namespace_of(full))
+        link = LINK_CLASSES[kind](
+            node=instance, resource=resource, rosname=rosname, type=item.get("type"),
+            queue_size=item.get("queue_size"), qos=item.get("qos"),
+            latch=bool(item.get("latch", False)),
+            conditions=conditions(item.get("conditions")), location=location(item.get("location")))
+        instance.links.append(link)
+        resource.links.append(link)
+        config.links.append(link)
+    config.diagnostics = [_diagnostic(d) for d in data.get("diagnostics", ())]
+    return config
+
+
+def from_data(data: Any) -> Model:
+    """A model from the JSON document ``extract`` writes (schema ``haros-arch/1``)."""
+    if not isinstance(data, dict):
+        raise ModelDataError("a model document is a JSON object")
+    schema = data.get("schema")
+    if schema is not None and not str(schema).startswith("haros-arch/"):
+        raise ModelDataError(f"unknown schema {schema!r}")
+    model = Model(str(data.get("project", "")))
+    model.packages = [_package(p) for p in data.get("packages", ())]
+    nodes = {node.name: node for package in model.packages for node in package.nodes}
+    model.configurations = [_configuration(c, nodes) for c in data.get("configurations", ())]
+    model.diagnostics = [_diagnostic(d) for d in data.get("diagnostics", ())]
+    return model

@@ -1,0 +1,145 @@
+"""What a query may touch: the allow-list of model fields per class, declared as data.
+
+A query reads a value's attribute only when the value's class (or a base class) lists
+the name here; everything else is an error that lists the names that are allowed.
+Strings expose a few read-only methods. Nothing here can write: the model is read-only
+to queries because no listed name is a setter or a method that mutates.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Any
+
+from ..model.conditions import Condition
+from ..model.diagnostic import Diagnostic
+from ..model.location import Location
+from ..model.model import Model
+from ..model.rosname import RosName
+from ..model.runtime import (
+    Action,
+    ActionClientLink,
+    ActionServerLink,
+    Configuration,
+    Link,
+    NodeInstance,
+    Parameter,
+    ParamReadLink,
+    ParamWriteLink,
+    PublishLink,
+    Resource,
+    Service,
+    ServiceClientLink,
+    ServiceProviderLink,
+    SubscribeLink,
+    Topic,
+)
+from ..model.source import Dependency, Node, Package, PrimitiveCall
+
+
+@dataclass(frozen=True)
+class Pair:
+    """One entry of a mapping walked by a path (``configs/args``)."""
+
+    key: Any
+    value: Any
+
+
+_LINK = ("kind", "node", "rosname", "name", "type", "queue_size", "qos", "latch",
+         "conditions", "location", "call", "resource")
+_RESOURCE = ("name", "id", "rosname", "types", "conditions", "is_unresolved", "links")
+
+# class -> the attribute names a query may read; subclasses add to their bases'
+FIELDS: dict[type, tuple[str, ...]] = {
+    Model: ("project", "packages", "configs", "configurations", "nodes", "files",
+            "diagnostics"),
+    Package: ("name", "path", "build_type", "version", "format", "dependencies",
+              "plugins", "nodes", "location"),
+    Dependency: ("name", "kind", "condition"),
+    Node: ("package", "executable", "name", "kind", "language", "sources", "calls",
+           "rosname", "conditions", "location"),
+    PrimitiveCall: ("kind", "name", "type", "queue_size", "qos", "latch", "callback",
+                    "conditions", "location"),
+    Configuration: ("name", "launch", "args", "nodes", "topics", "services", "actions",
+                    "parameters", "links", "diagnostics"),
+    NodeInstance: ("name", "id", "node", "namespace", "remaps", "args", "conditions",
+                   "location", "rosname", "links", "publishers", "subscribers", "servers",
+                   "clients", "action_servers", "action_clients", "reads", "writes"),
+    Resource: _RESOURCE,
+    Topic: ("publishers", "subscribers", "is_disconnected"),
+    Service: ("servers", "clients", "is_disconnected"),
+    Action: ("servers", "clients", "is_disconnected"),
+    Parameter: ("value", "type", "launch_type", "set_by_launch", "launch_location",
+                "location", "readers", "writers", "reads", "writes"),
+    Link: _LINK,
+    PublishLink: ("topic", "topic_name"),
+    SubscribeLink: ("topic", "topic_name"),
+    ServiceProviderLink: ("service", "service_name"),
+    ServiceClientLink: ("service", "service_name"),
+    ActionServerLink: ("action", "action_name"),
+    ActionClientLink: ("action", "action_name"),
+    ParamReadLink: ("parameter", "param_name"),
+    ParamWriteLink: ("parameter", "param_name"),
+    RosName: ("given", "full", "namespace", "own", "is_global", "is_private",
+              "is_relative", "is_unresolved", "pattern"),
+    Location: ("package", "file", "line", "column"),
+    Condition: ("text", "kind", "statement", "location"),
+    Diagnostic: ("code", "severity", "message", "location"),
+    Pair: ("key", "value"),
+}
+
+
+def _calls(kind: str) -> Callable[[Node], list[PrimitiveCall]]:
+    return lambda node: [call for call in node.calls if call.kind == kind]
+
+
+# computed names that the model does not have under that name (HAROS's spellings)
+VIEWS: dict[type, dict[str, Callable[[Any], Any]]] = {
+    Parameter: {"reads": lambda p: p.readers, "writes": lambda p: p.writers},
+    Node: {"advertise": _calls("publish"), "subscribe": _calls("subscribe"),
+           "service": _calls("server"), "client": _calls("client"),
+           "read_param": _calls("read"), "write_param": _calls("write")},
+}
+
+STRING_METHODS = frozenset({
+    "startswith", "endswith", "lower", "upper", "strip", "lstrip", "rstrip", "find",
+    "count", "split",
+})
+
+PRIMITIVES = (str, int, float, bool, type(None))
+
+
+@dataclass(frozen=True)
+class Method:
+    """A read-only string method bound to its string, callable from a query."""
+
+    target: str
+    name: str
+
+
+_CACHE: dict[type, dict[str, Callable[[Any], Any]]] = {}
+
+
+def readers_of(cls: type) -> dict[str, Callable[[Any], Any]]:
+    """Every attribute a query may read on instances of ``cls``, with how to read it."""
+    found = _CACHE.get(cls)
+    if found is not None:
+        return found
+    found = {}
+    for base in reversed(cls.__mro__):
+        for name in FIELDS.get(base, ()):
+            found[name] = _getter(name)
+        found.update(VIEWS.get(base, {}))
+    _CACHE[cls] = found
+    return found
+
+
+def _getter(name: str) -> Callable[[Any], Any]:
+    def read(obj: Any) -> Any:
+        return getattr(obj, name)
+    return read
+
+
+def is_model_value(value: Any) -> bool:
+    return bool(readers_of(type(value)))

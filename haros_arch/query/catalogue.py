@@ -1,0 +1,220 @@
+"""The query catalogue: rules from ``queries/*.yaml`` and from the project file, run per
+configuration, their matches turned into ``Finding`` values.
+
+A rule has ``id``, ``severity``, ``title``, ``description`` (why it matters, how to fix),
+``query`` and optionally ``message``, a template whose ``{name.field}`` parts are read
+through the same allow-list as queries (never ``str.format``). Project files give rules
+as ``queries:`` (our form), HAROS ``rules:`` (those with a ``query``) and HAROS's pyflwor
+plugin entries in a configuration's ``user_data``.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterable
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import yaml
+
+from ..model.diagnostic import SEVERITY_RANK, Diagnostic, Severity
+from ..model.finding import Finding
+from ..model.location import NOWHERE, Location
+from ..model.model import Model
+from ..model.runtime import Configuration, Link
+from . import compile, config_scope, model_scope
+from .errors import QueryError
+from .interpreter import Evaluator
+from .results import best_location, entities, entity_ids, label, location_of, plain
+from .suppress import Suppressions
+from .syntax import Literal
+
+CATALOGUE_DIR = Path(__file__).resolve().parent.parent.parent / "queries"
+QUERY_ERROR = "query-error"
+# diagnostics whose codes a catalogue rule reports as findings (``check`` shows them once)
+ABSORBED_CODES = frozenset({"LAUNCH_FILE_MISSING", "PACKAGE_NOT_FOUND", "NODE_NOT_FOUND"})
+
+
+@dataclass(frozen=True)
+class Rule:
+    id: str
+    severity: Severity
+    title: str
+    query: str
+    description: str = ""
+    message: str | None = None
+    scope: str = "configuration"  # configuration | model | auto
+    configurations: tuple[str, ...] | None = None  # only these (None: all)
+    origin: str = ""
+
+
+class CatalogueError(ValueError):
+    pass
+
+
+def _rule(data: Any, origin: str, default_id: str = "", scope: str = "auto") -> Rule:
+    if isinstance(data, str):
+        data = {"query": data}
+    if not isinstance(data, dict) or not isinstance(data.get("query"), str):
+        raise CatalogueError(f"{origin}: a rule needs a 'query' string")
+    severity: Any = str(data.get("severity", "warning"))
+    if severity not in SEVERITY_RANK:
+        raise CatalogueError(f"{origin}: severity must be one of {', '.join(SEVERITY_RANK)}")
+    rule_id = str(data.get("id") or default_id or data.get("name") or "query")
+    return Rule(rule_id, severity, str(data.get("title") or data.get("name") or rule_id),
+                data["query"], str(data.get("description", "")),
+                data.get("message") or data.get("details"),
+                str(data.get("scope", scope)), None, origin)
+
+
+def load_catalogue(folder: Path | str | None = None) -> list[Rule]:
+    """The shipped rules, one YAML file each, sorted by id."""
+    folder = Path(folder) if folder is not None else CATALOGUE_DIR
+    rules = []
+    for path in sorted(folder.glob("*.yaml")):
+        data = yaml.safe_load(path.read_text("utf-8"))
+        rules.append(_rule(data, str(path), path.stem, "configuration"))
+    return rules
+
+
+def project_rules(project: Any) -> list[Rule]:
+    """``queries:``, HAROS ``rules:`` with a ``query``, and pyflwor plugin user_data."""
+    rules: list[Rule] = []
+    origin = getattr(project, "path", "project")
+    for i, item in enumerate(getattr(project, "queries", None) or ()):
+        rules.append(_rule(item, f"{origin}: queries[{i}]", f"project-query-{i + 1}"))
+    for key, item in (getattr(project, "rules", None) or {}).items():
+        if isinstance(item, dict) and "query" in item:
+            scope = "configuration" if item.get("scope") == "configuration" else "auto"
+            rules.append(_rule({**item, "id": key}, f"{origin}: rules.{key}", key, scope))
+    for spec in getattr(project, "configurations", None) or ():
+        entries = (spec.user_data or {}).get("haros_plugin_pyflwor") or ()
+        for i, item in enumerate(entries):
+            rule = _rule(item, f"{origin}: configurations.{spec.name}.user_data",
+                         f"{spec.name}-query-{i + 1}", "configuration")
+            rules.append(Rule(**{**rule.__dict__, "configurations": (spec.name,)}))
+    return rules
+
+
+_NOWHERE_IN_QUERY = Literal(None)
+_FIELD = re.compile(r"\{([A-Za-z_][A-Za-z_0-9]*(?:\.[A-Za-z_][A-Za-z_0-9]*)*)\}")
+
+
+def render(template: str, match: Any, evaluator: Evaluator) -> str:
+    """Fill ``{name.field}`` from a match through the query allow-list."""
+    if isinstance(match, dict):
+        names = dict(match)
+    elif isinstance(match, tuple):
+        names = {str(i): v for i, v in enumerate(match)}
+    else:
+        names = {"self": match, "0": match}
+    names["entities"] = ", ".join(label(e) for e in entities(match))
+
+    def fill(found: re.Match[str]) -> str:
+        head, *fields = found.group(1).split(".")
+        if head not in names:
+            return found.group(0)
+        value = names[head]
+        try:
+            for name in fields:
+                value = evaluator.attribute(value, name, _NOWHERE_IN_QUERY)
+        except QueryError:
+            return ""
+        if isinstance(value, list | tuple) and not value:
+            return "none"
+        if isinstance(value, list | tuple):
+            return ", ".join(dict.fromkeys(
+                v.node.name if isinstance(v, Link) else label(v) if entities(v)
+                else str(plain(v)) for v in value))
+        return label(value) if entities(value) else str(plain(value))
+
+    return _FIELD.sub(fill, template)
+
+
+def _finding(rule: Rule, match: Any, config: Configuration | None,
+             evaluator: Evaluator) -> Finding:
+    involved = entities(match)
+    if rule.message:
+        message = render(rule.message, match, evaluator)
+    else:
+        message = "; ".join(label(e) for e in involved) or str(plain(match))
+    where = best_location(involved)
+    if not where.file and isinstance(match, Diagnostic):
+        where = match.location
+    return Finding(rule.id, rule.severity, rule.title, " ".join(message.split()),
+                   config.name if config else None, entity_ids(involved), where)
+
+
+def _scopes(rule: Rule, query: Any, model: Model) -> Iterable[tuple[Configuration | None,
+                                                                    dict[str, Any]]]:
+    per_config = rule.scope == "configuration" or (rule.scope == "auto"
+                                                  and query.needs_configuration)
+    if not per_config:
+        yield None, model_scope(model)
+        return
+    for config in model.configurations:
+        if rule.configurations is None or config.name in rule.configurations:
+            yield config, config_scope(config, model)
+
+
+def run_rule(rule: Rule, model: Model) -> list[Finding]:
+    """A rule's findings over every configuration (or the model, for model rules)."""
+    return [finding for finding, _places in _run(rule, model)]
+
+
+def _run(rule: Rule, model: Model) -> list[tuple[Finding, list[Location]]]:
+    """Findings, each with the places of what it involves (for suppressions)."""
+    try:
+        query = compile(rule.query)
+    except QueryError as err:
+        return [(_error_finding(rule, err, None), [])]
+    found: list[tuple[Finding, list[Location]]] = []
+    for config, scope in _scopes(rule, query, model):
+        evaluator = Evaluator(query.text, scope)
+        try:
+            value = evaluator.run(query.tree)
+        except QueryError as err:
+            found.append((_error_finding(rule, err, config), []))
+            continue
+        matches = value if isinstance(value, list) else [value]
+        for match in matches:
+            if match is None or match is False or match == ():
+                continue
+            finding = _finding(rule, match, config, evaluator)
+            places = [finding.location, *(location_of(e) for e in entities(match))]
+            found.append((finding, places))
+    return found
+
+
+def _error_finding(rule: Rule, err: QueryError, config: Configuration | None) -> Finding:
+    return Finding(QUERY_ERROR, "error", f"Query {rule.id} failed",
+                   f"{rule.origin}: {err}", config.name if config else None, (), NOWHERE)
+
+
+def run_catalogue(model: Model, project: Any = None,
+                  catalogue: list[Rule] | None = None) -> list[Finding]:
+    """Every rule's findings, suppressions applied, sorted by severity then place."""
+    rules = list(load_catalogue() if catalogue is None else catalogue)
+    if project is not None:
+        rules.extend(project_rules(project))
+    roots = list(getattr(project, "workspace", None) or ())
+    suppressions = Suppressions(roots)
+    found: list[Finding] = []
+    for rule in rules:
+        for finding, places in _run(rule, model):
+            if suppressions.applies(rule.id, places):
+                continue
+            found.append(finding)
+    found.sort(key=lambda f: (-SEVERITY_RANK[f.severity], f.rule, f.configuration or "",
+                              f.location.file or "", f.location.line))
+    return found
+
+
+def explain(rule: Rule) -> str:
+    return f"{rule.id} ({rule.severity}): {rule.title}\n\n{rule.description.strip()}\n\n" \
+           f"Query:\n{rule.query.strip()}\n"
+
+
+__all__ = ["ABSORBED_CODES", "Rule", "explain", "load_catalogue", "location_of",
+           "project_rules", "run_catalogue", "run_rule"]

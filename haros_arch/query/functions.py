@@ -1,0 +1,236 @@
+"""The functions a query may call. Each is a plain function of query values.
+
+Functions that do work proportional to their input charge the evaluator's step budget
+through ``charge``, so they cannot be used to escape the limits.
+"""
+
+from __future__ import annotations
+
+from collections import deque
+from collections.abc import Callable, Iterable
+from dataclasses import dataclass
+from typing import Any
+
+from ..model.runtime import Link, NodeInstance, Resource
+from .errors import QueryLimitError, QueryTypeError
+
+Charge = Callable[[int], None]
+
+
+@dataclass(frozen=True)
+class Function:
+    """A whitelisted function: its name, arity bounds and implementation."""
+
+    name: str
+    impl: Callable[..., Any]
+    min_args: int = 1
+    max_args: int = 1
+    charged: bool = False  # impl takes ``charge`` as its first argument
+
+    def __repr__(self) -> str:
+        return f"<function {self.name}>"
+
+
+def _items(value: Any) -> list[Any]:
+    if isinstance(value, str) or not isinstance(value, list | tuple | set | frozenset | dict):
+        raise QueryTypeError(f"expected a collection, got {type(value).__name__}")
+    return list(value)
+
+
+def _len(charge: Charge, value: Any) -> int:
+    if isinstance(value, str | list | tuple | set | frozenset | dict):
+        return len(value)
+    raise QueryTypeError(f"len() of {type(value).__name__}")
+
+
+def _aggregate(name: str, impl: Callable[..., Any]) -> Callable[..., Any]:
+    def run(charge: Charge, *args: Any) -> Any:
+        items = _items(args[0]) if len(args) == 1 else list(args)
+        charge(len(items))
+        try:
+            return impl(items)
+        except (TypeError, ValueError) as err:
+            raise QueryTypeError(f"{name}(): {err}") from None
+    return run
+
+
+def _abs(charge: Charge, value: Any) -> Any:
+    if isinstance(value, int | float):
+        return abs(value)
+    raise QueryTypeError(f"abs() of {type(value).__name__}")
+
+
+def is_rosglobal(charge: Charge, name: Any) -> bool:
+    return isinstance(name, str) and name.startswith("/")
+
+
+MAX_DISTANCE_INPUT = 4096
+
+
+def edit_distance(charge: Charge, a: Any, b: Any) -> int:
+    """Levenshtein distance between two strings."""
+    if not isinstance(a, str) or not isinstance(b, str):
+        raise QueryTypeError("edit_distance() takes two strings")
+    if len(a) > MAX_DISTANCE_INPUT or len(b) > MAX_DISTANCE_INPUT:
+        raise QueryLimitError(f"edit_distance() on strings longer than {MAX_DISTANCE_INPUT}")
+    charge(1 + len(a) * len(b) // 64)
+    if len(a) < len(b):
+        a, b = b, a
+    previous = list(range(len(b) + 1))
+    for i, ca in enumerate(a, 1):
+        current = [i]
+        for j, cb in enumerate(b, 1):
+            current.append(min(previous[j] + 1, current[j - 1] + 1,
+                               previous[j - 1] + (ca != cb)))
+        previous = current
+    return previous[-1]
+
+
+def name_similarity(charge: Charge, a: Any, b: Any) -> float:
+    """1.0 for equal names, towards 0.0 as the edit distance grows (over the longer)."""
+    longest = max(len(a), len(b)) if isinstance(a, str) and isinstance(b, str) else 0
+    if not longest:
+        return 1.0 if a == b else 0.0
+    return 1.0 - edit_distance(charge, a, b) / longest
+
+
+def _downstream(entity: Any) -> Iterable[Any]:
+    """Who an entity sends to: node -> topics it publishes / services it calls -> nodes."""
+    if isinstance(entity, NodeInstance):
+        for link in entity.links:
+            if link.kind in ("publish", "client", "action-client", "write"):
+                yield link.resource
+    elif isinstance(entity, Resource):
+        for link in entity.links:
+            if link.kind in ("subscribe", "server", "action-server", "read"):
+                yield link.node
+
+
+def reachable(charge: Charge, source: Any, target: Any) -> bool:
+    """True when data can flow from ``source`` to ``target`` (nodes or resources)."""
+    if isinstance(source, Link):
+        source = source.node
+    if isinstance(target, Link):
+        target = target.node
+    if not isinstance(source, NodeInstance | Resource):
+        raise QueryTypeError("reachable() takes node instances, topics, services, "
+                             "actions or parameters")
+    seen = {id(source)}
+    queue = deque([source])
+    while queue:
+        current = queue.popleft()
+        charge(1)
+        if current is target and current is not source:
+            return True
+        for following in _downstream(current):
+            if following is target:
+                return True
+            if id(following) not in seen:
+                seen.add(id(following))
+                queue.append(following)
+    return False
+
+
+_RELIABILITY = {"best_effort": 0, "reliable": 1}
+_DURABILITY = {"volatile": 0, "transient_local": 1}
+
+
+def qos_incompatible(charge: Charge, offered: Any, requested: Any) -> str:
+    """Why a publisher's QoS cannot serve a subscriber's, or "" when it can (or unknown).
+
+    Follows the ROS 2 request-vs-offered rules: reliability, durability, deadline and
+    liveliness lease duration, where both sides give them.
+    """
+    if not isinstance(offered, dict) or not isinstance(requested, dict):
+        return ""
+
+    def rank(table: dict[str, int], side: dict[str, Any], key: str) -> int | None:
+        value = side.get(key)
+        return table.get(str(value).lower()) if value is not None else None
+
+    off, req = rank(_RELIABILITY, offered, "reliability"), rank(_RELIABILITY, requested,
+                                                                   "reliability")
+    if off is not None and req is not None and off < req:
+        return "the publisher is best-effort but the subscriber requires reliable"
+    off, req = rank(_DURABILITY, offered, "durability"), rank(_DURABILITY, requested,
+                                                                 "durability")
+    if off is not None and req is not None and off < req:
+        return "the publisher is volatile but the subscriber requires transient-local"
+    for key, what in (("deadline", "deadline"), ("liveliness_lease_duration",
+                                                  "liveliness lease duration")):
+        a, b = offered.get(key), requested.get(key)
+        if isinstance(a, int | float) and isinstance(b, int | float) and a > b:
+            return f"the publisher offers a longer {what} ({a}) than the subscriber " \
+                   f"requests ({b})"
+    return ""
+
+
+def _str(charge: Charge, value: Any) -> str:
+    if isinstance(value, str | int | float | bool) or value is None:
+        return str(value)
+    raise QueryTypeError(f"str() of {type(value).__name__}")
+
+
+def _number(kind: type) -> Callable[[Charge, Any], Any]:
+    def convert(charge: Charge, value: Any) -> Any:
+        if isinstance(value, str | int | float | bool):
+            try:
+                return kind(value)
+            except ValueError as err:
+                raise QueryTypeError(str(err)) from None
+        raise QueryTypeError(f"{kind.__name__}() of {type(value).__name__}")
+    return convert
+
+
+def _bool(charge: Charge, value: Any) -> bool:
+    return bool(value)
+
+
+def _round(charge: Charge, value: Any, digits: Any = 0) -> Any:
+    if isinstance(value, int | float) and isinstance(digits, int):
+        return round(value, digits)
+    raise QueryTypeError("round() takes a number")
+
+
+_MANY = 1 << 20
+FUNCTIONS: dict[str, Function] = {f.name: f for f in (
+    Function("len", _len, charged=True),
+    Function("min", _aggregate("min", min), 1, _MANY, charged=True),
+    Function("max", _aggregate("max", max), 1, _MANY, charged=True),
+    Function("sum", _aggregate("sum", sum), 1, _MANY, charged=True),
+    Function("any", _aggregate("any", any), charged=True),
+    Function("all", _aggregate("all", all), charged=True),
+    Function("abs", _abs, charged=True),
+    Function("bool", _bool, charged=True),
+    Function("int", _number(int), charged=True),
+    Function("float", _number(float), charged=True),
+    Function("str", _str, charged=True),
+    Function("round", _round, 1, 2, charged=True),
+    Function("is_rosglobal", is_rosglobal, charged=True),
+    Function("edit_distance", edit_distance, 2, 2, charged=True),
+    Function("name_similarity", name_similarity, 2, 2, charged=True),
+    Function("reachable", reachable, 2, 2, charged=True),
+    Function("qos_incompatible", qos_incompatible, 2, 2, charged=True),
+)}
+
+
+_PATH_PREFIXES = ("/home/", "/opt/", "/usr/", "/tmp/", "/mnt/", "/media/", "/root/",
+                  "/var/", "/etc/", "/srv/")
+_FILE_SUFFIXES = (".yaml", ".yml", ".urdf", ".xacro", ".launch", ".xml", ".json", ".pgm",
+                  ".png", ".bag", ".db3", ".csv", ".txt", ".so", ".py", ".cfg", ".ini")
+
+
+def is_absolute_path(charge: Charge, value: Any) -> bool:
+    """True when a value (or a word of it) looks like an absolute filesystem path."""
+    if not isinstance(value, str):
+        return False
+    charge(1 + len(value) // 256)
+    for word in value.replace("=", " ").split():
+        word = word.strip("'\"")
+        if word.startswith(_PATH_PREFIXES) or (
+                word.startswith("/") and word.lower().endswith(_FILE_SUFFIXES)):
+            return True
+    return False
+
+
+FUNCTIONS["is_absolute_path"] = Function("is_absolute_path", is_absolute_path, charged=True)

@@ -1,0 +1,132 @@
+"""Every shipped query has a fixture that triggers it and one that must not.
+
+``fixtures/queries/catalogue/<id>.yaml`` holds ``trigger`` and ``clean`` (one
+configuration each, in the JSON model's shape), ``expect`` (entity ids the findings
+must name) and optionally ``message_has`` (text the message must contain).
+"""
+
+from __future__ import annotations
+
+from types import SimpleNamespace
+
+import pytest
+import yaml
+from conftest import FIXTURES, ROOT, only_case
+
+from haros_arch.model.load import from_data
+from haros_arch.query.catalogue import load_catalogue, project_rules, run_catalogue, run_rule
+
+CASES = FIXTURES / "queries" / "catalogue"
+RULES = {rule.id: rule for rule in load_catalogue()}
+IDS = sorted(i for i in RULES if only_case() in (None, i))
+
+
+def configuration(doc: dict) -> object:
+    return from_data({"project": "p", "configurations": [{"name": "c", **(doc or {})}]})
+
+
+def test_every_rule_has_a_fixture_and_the_required_fields():
+    assert sorted(p.stem for p in CASES.glob("*.yaml")) == sorted(RULES)
+    for path in (ROOT / "queries").glob("*.yaml"):
+        data = yaml.safe_load(path.read_text())
+        assert data["id"] == path.stem
+        assert data["severity"] in ("error", "warning", "info")
+        assert {"title", "description", "query"} <= set(data)
+        assert "Fix" in data["description"], f"{path.name}: say how to fix it"
+
+
+@pytest.mark.parametrize("rule_id", IDS)
+def test_rule_triggers_on_its_fixture(rule_id):
+    case = yaml.safe_load((CASES / f"{rule_id}.yaml").read_text())
+    findings = run_rule(RULES[rule_id], configuration(case["trigger"]))
+    assert findings, f"{rule_id} found nothing in its trigger fixture"
+    assert all(f.rule == rule_id and f.configuration == "c" for f in findings)
+    named = {e for f in findings for e in f.entities}
+    assert set(case["expect"]) <= named
+    for text in case.get("message_has", ()):
+        assert any(text in f.message for f in findings), (text, findings)
+    assert all("{" not in f.message for f in findings), "unfilled message template"
+
+
+@pytest.mark.parametrize("rule_id", IDS)
+def test_rule_is_silent_on_its_clean_fixture(rule_id):
+    case = yaml.safe_load((CASES / f"{rule_id}.yaml").read_text())
+    assert run_rule(RULES[rule_id], configuration(case["clean"])) == []
+
+
+def test_findings_point_at_the_source_line():
+    case = yaml.safe_load((CASES / "global-names.yaml").read_text())
+    (finding,) = run_rule(RULES["global-names"], configuration(case["trigger"]))
+    assert (finding.location.file, finding.location.line) == ("base/src/driver.cpp", 30)
+    assert finding.severity == "info"
+
+
+def test_inline_suppressions_in_source_and_launch_files(write_tree):
+    root = write_tree({
+        "base/src/driver.cpp": "int x;\n// haros-arch: ignore global-names\n"
+                               "pub = nh.advertise<nav_msgs::Odometry>(\"/odom\", 1);\n",
+        "base/launch/robot.launch": "<launch>\n  <node name=\"a\"/> "
+                                    "<!-- haros-arch: ignore duplicate-node-names -->\n"
+                                    "  <node name=\"a\"/>\n</launch>\n",
+    })
+    model = from_data({"configurations": [{"name": "c", "nodes": [
+        {"name": "/a", "location": {"file": "base/launch/robot.launch", "line": 2}},
+        {"name": "/a", "id": "node:/a#2",
+         "location": {"file": "base/launch/robot.launch", "line": 3}}],
+        "links": [{"kind": "publish", "node": "/driver", "name": "/odom", "given": "/odom",
+                   "queue_size": 1, "location": {"file": "base/src/driver.cpp", "line": 3}},
+                  {"kind": "publish", "node": "/driver", "name": "/tf", "given": "/tf",
+                   "location": {"file": "base/src/driver.cpp", "line": 1}}]}]})
+    rules = [RULES["global-names"], RULES["duplicate-node-names"]]
+    kept = run_catalogue(model, SimpleNamespace(workspace=[str(root)]), rules)
+    assert [(f.rule, f.entities) for f in kept] == [
+        ("global-names", ("node:/driver", "topic:/tf"))]
+    unsuppressed = run_catalogue(model, SimpleNamespace(workspace=["/nowhere"]), rules)
+    assert len(unsuppressed) == 3
+
+
+def test_project_queries_haros_rules_and_plugin_user_data_run():
+    project = SimpleNamespace(
+        path="project.yaml",
+        queries=[{"id": "no-cmd-vel", "severity": "error", "title": "No cmd_vel",
+                  "query": "topics[self.name == '/cmd_vel']",
+                  "message": "{self.name} is used"},
+                 "configs/nodes[len(self.remaps) > 0]"],
+        rules={"type_check_topics": {
+            "name": "Message Types Must Match", "description": "d", "tags": ["x"],
+            "scope": "configuration",
+            "query": "for p in <nodes/publishers | nodes/subscribers>,\n"
+                     "    s in <nodes/publishers | nodes/subscribers>\n"
+                     "where p.topic_name == s.topic_name and p.type != s.type\n"
+                     "return p, s"}, "not_a_query": {"name": "metric"}},
+        configurations=[SimpleNamespace(name="c", user_data={"haros_plugin_pyflwor": [
+            {"name": "Query 6 - One Publisher Per Topic",
+             "details": "Found {n} topics with multiple publishers - {entities}",
+             "query": "topics[len(self.publishers) > 1]"}]})])
+    model = from_data({"configurations": [{"name": "c", "nodes": [
+        {"name": "/teleop", "remaps": [["cmd", "/cmd_vel"]]}], "links": [
+        {"kind": "publish", "node": "/teleop", "name": "/cmd_vel", "type": "a/B"},
+        {"kind": "publish", "node": "/planner", "name": "/cmd_vel", "type": "a/B"},
+        {"kind": "subscribe", "node": "/base", "name": "/cmd_vel", "type": "a/C"}]}]})
+    rules = project_rules(project)
+    assert [r.id for r in rules] == ["no-cmd-vel", "project-query-2", "type_check_topics",
+                                     "c-query-1"]
+    found = run_catalogue(model, project, catalogue=[])
+    by_rule: dict[str, list] = {}
+    for finding in found:
+        by_rule.setdefault(finding.rule, []).append(finding)
+    assert by_rule["no-cmd-vel"][0].message == "/cmd_vel is used"
+    assert by_rule["no-cmd-vel"][0].severity == "error"
+    assert [f.entities for f in by_rule["project-query-2"]] == [("node:/teleop",)]
+    # HAROS's rule compares every pair both ways: 2 publishers x 1 subscriber, twice
+    assert len(by_rule["type_check_topics"]) == 4
+    assert len(by_rule["c-query-1"]) == 1
+
+
+def test_a_broken_project_query_is_an_error_finding_not_a_crash():
+    project = SimpleNamespace(path="p.yaml", queries=["topics[len(self.publishers) >]"],
+                              rules={}, configurations=[])
+    (finding,) = run_catalogue(from_data({"configurations": [{"name": "c"}]}), project,
+                               catalogue=[])
+    assert finding.rule == "query-error" and finding.severity == "error"
+    assert "^" in finding.message
