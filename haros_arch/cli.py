@@ -240,7 +240,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     err = Console(stderr=True, soft_wrap=True)
     handlers = {"extract": cmd_extract, "check": cmd_check, "explain": cmd_explain,
                 "capture": cmd_capture, "compare": cmd_compare, "report": cmd_report,
-                "launch": cmd_launch}
+                "launch": cmd_launch, "query": cmd_query}
     try:
         return handlers[args.command](args, out, err)
     except KeyboardInterrupt:
