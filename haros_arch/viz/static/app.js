@@ -258,4 +258,4 @@ function renderPackages() {
 
 skeleton();
 setConfig(0);
-window.harosReport = {ready: true, loadMs: performance.now() - started};
+window.harosReport = {ready: true, scriptMs: performance.now() - started, readyAt: performance.now()};

@@ -1,0 +1,133 @@
+"""How fast the HTML report opens for a large configuration, in headless Chromium.
+
+Generates a model with 300 node instances and 1,000 topics (plus services and
+parameters), writes the report, opens it in Debian's chromium and prints the time from
+navigation to the first drawn graph, and how long a click on a node and on a finding take.
+
+    .venv/bin/python bench/report_scale.py [--nodes 300] [--topics 1000]
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import random
+import sys
+import tempfile
+import time
+from typing import Any
+
+from haros_arch.viz import write_report
+from haros_arch.viz.browser import CHROMIUM_ARGS, chromium_path, why_no_browser
+
+
+def scale_model(nodes: int, topics: int, seed: int = 7) -> dict[str, Any]:
+    # A fleet: robots of ten nodes each, data flowing down a pipeline inside a robot
+    # (each topic read by one to three later nodes), some topics read by fleet nodes.
+    rng = random.Random(seed)
+    per = 10
+    robots = max(1, nodes // per)
+    where = {"package": "fleet", "file": "fleet/src/node.cpp", "line": 12, "column": 3}
+    node_names = [f"/robot{i // per}/node{i % per}" for i in range(nodes)]
+    topic_names = [f"/robot{t % robots}/topic{t // robots}" for t in range(topics)]
+    links: list[dict[str, Any]] = []
+    pubs: dict[str, list[str]] = {t: [] for t in topic_names}
+    subs: dict[str, list[str]] = {t: [] for t in topic_names}
+    for t, topic in enumerate(topic_names):
+        robot = t % robots
+        stage = rng.randrange(per - 1)
+        pubs[topic].append(node_names[robot * per + stage])
+        for later in rng.sample(range(stage + 1, per), min(per - stage - 1, rng.randint(1, 3))):
+            subs[topic].append(node_names[robot * per + later])
+        if rng.random() < 0.05:
+            subs[topic].append(node_names[rng.randrange(nodes)])
+    for topic in topic_names:
+        for kind, users in (("publish", pubs[topic]), ("subscribe", subs[topic])):
+            links += [{"kind": kind, "node": n, "name": topic, "given": topic.rsplit("/", 1)[1],
+                       "type": "std_msgs/String", "queue_size": 10, "qos": None,
+                       "conditions": [], "location": where} for n in dict.fromkeys(users)]
+    services = []
+    for i in range(nodes // 3):
+        name = f"{node_names[i]}/reset"
+        caller = rng.choice(node_names)
+        services.append({"name": name, "id": f"service:{name}", "types": ["std_srvs/Empty"],
+                         "servers": [node_names[i]], "clients": [caller], "conditions": []})
+        links += [{"kind": k, "node": n, "name": name, "given": "reset", "type": "std_srvs/Empty",
+                   "queue_size": None, "qos": None, "conditions": [], "location": where}
+                  for k, n in (("server", node_names[i]), ("client", caller))]
+    params = []
+    for i in range(nodes):
+        name = f"{node_names[i]}/rate"
+        params.append({"name": name, "id": f"parameter:{name}", "type": "double", "value": 10.0,
+                       "readers": [node_names[i]], "writers": ["<launch>"], "conditions": []})
+        links.append({"kind": "read", "node": node_names[i], "name": name, "given": "~rate",
+                      "type": "double", "queue_size": None, "qos": None, "conditions": [],
+                      "location": where})
+    config = {
+        "name": "fleet", "launch": ["fleet/launch/fleet.launch"], "args": {},
+        "nodes": [{"name": n, "id": f"node:{n}", "node": "fleet/node",
+                   "namespace": n.rsplit("/", 1)[0] + "/", "remaps": [], "args": "",
+                   "conditions": [], "location": where} for n in node_names],
+        "topics": [{"name": t, "id": f"topic:{t}", "types": ["std_msgs/String"],
+                    "publishers": pubs[t], "subscribers": list(dict.fromkeys(subs[t])),
+                    "conditions": []} for t in topic_names],
+        "services": services, "actions": [], "parameters": params, "links": links,
+        "diagnostics": []}
+    return {"schema": "haros-arch/1", "project": "fleet", "packages": [], "diagnostics": [],
+            "configurations": [config]}
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--nodes", type=int, default=300)
+    parser.add_argument("--topics", type=int, default=1000)
+    args = parser.parse_args()
+    reason = why_no_browser()
+    if reason:
+        print(f"report_scale: cannot run: {reason}", file=sys.stderr)
+        return 2
+    from playwright.sync_api import sync_playwright
+
+    model = scale_model(args.nodes, args.topics)
+    config = model["configurations"][0]
+    findings = [{"rule": "bench", "severity": "warning", "title": "sample", "message": "m",
+                 "configuration": "fleet", "entities": [config["topics"][0]["id"]],
+                 "location": {"file": None, "line": 0}}]
+    with tempfile.TemporaryDirectory() as folder:
+        path = os.path.join(folder, "report.html")
+        started = time.perf_counter()
+        write_report(model, findings, folder, path)
+        written = time.perf_counter() - started
+        size = os.path.getsize(path)
+        with sync_playwright() as driver:
+            browser = driver.chromium.launch(executable_path=chromium_path(), args=CHROMIUM_ARGS)
+            page = browser.new_page(viewport={"width": 1400, "height": 800})
+            page.goto(f"file://{path}")
+            page.wait_for_function("window.harosReport && window.harosReport.ready",
+                                   timeout=60000)
+            ready = page.evaluate("window.harosReport.readyAt")
+            script = page.evaluate("window.harosReport.scriptMs")
+            drawn = page.eval_on_selector_all("#graph .vertex", "els => els.length")
+            clicks = []
+            target = config["nodes"][150]
+            page.fill("#search", target["name"])
+            page.press("#search", "Enter")  # selects it and zooms to it
+            page.wait_for_timeout(500)
+            for selector in (f'#graph .vertex[data-id="{target["id"]}"]', "#findings .item"):
+                page.evaluate("window.__t = performance.now()")
+                page.click(selector)
+                clicks.append(page.evaluate(
+                    "new Promise(r => requestAnimationFrame(() => r(performance.now() - window.__t)))"))
+            browser.close()
+    print(f"model: {len(config['nodes'])} node instances, {len(config['topics'])} topics, "
+          f"{len(config['services'])} services, {len(config['parameters'])} parameters, "
+          f"{len(config['links'])} links; {drawn} vertices drawn")
+    print(f"report: {size / 1e6:.2f} MB written in {written:.2f} s")
+    print(f"open to first drawn graph: {ready / 1000:.2f} s (our script {script / 1000:.2f} s); "
+          f"budget 3 s -> {ready / 3000:.2f} of budget")
+    print(f"click a node: {clicks[0]:.0f} ms; click a finding: {clicks[1]:.0f} ms")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
