@@ -116,8 +116,8 @@ def main() -> int:
             for selector in (f'#graph .vertex[data-id="{target["id"]}"]', "#findings .item"):
                 page.evaluate("window.__t = performance.now()")
                 page.click(selector)
-                clicks.append(page.evaluate(
-                    "new Promise(r => requestAnimationFrame(() => r(performance.now() - window.__t)))"))
+                clicks.append(page.evaluate("new Promise(r => requestAnimationFrame("
+                                            "() => r(performance.now() - window.__t)))"))
             browser.close()
     print(f"model: {len(config['nodes'])} node instances, {len(config['topics'])} topics, "
           f"{len(config['services'])} services, {len(config['parameters'])} parameters, "
