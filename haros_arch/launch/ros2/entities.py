@@ -96,6 +96,7 @@ class Opaque(Subst):
     """A value we do not compute (``$(command)``, an unknown call): always unknown."""
 
     origin: str
+    report: bool = True  # False when the reason was reported already (a syntax error)
 
 
 # -- conditions --------------------------------------------------------------------

@@ -73,7 +73,7 @@ class Frontend:
             return parse(raw)
         except SubstitutionSyntax as err:
             self.report("LAUNCH_BAD_VALUE", ent, detail=f"{name}=\"{raw}\": {err}")
-            return (e.Opaque(f"{name}=\"{raw}\" cannot be parsed"),)
+            return (e.Opaque(f"{name}=\"{raw}\" cannot be parsed", report=False),)
 
     def flag(self, ent: Entity, name: str, default: bool) -> bool:
         raw = self.text(ent, name)

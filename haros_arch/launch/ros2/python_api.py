@@ -400,6 +400,9 @@ def ignored(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
 
 
 def param_file(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    given = arg(a, k, 0, "param_file", "source_file")
+    if isinstance(given, e.ParamFile):
+        return given  # ParameterFile(RewrittenYaml(...))
     return e.ParamFile(to_text(arg(a, k, 0, "param_file")), location=i.where(n))
 
 

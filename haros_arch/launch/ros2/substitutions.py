@@ -312,7 +312,8 @@ class Evaluator:
         return Value.unknown("unreadable file") if content is None else Value.of(content)
 
     def s_Opaque(self, s: e.Opaque) -> Value:
-        self.report("LAUNCH_UNSUPPORTED", detail=s.origin)
+        if s.report:
+            self.report("LAUNCH_UNSUPPORTED", detail=s.origin)
         return Value.unknown(s.origin)
 
     # -- conditions ------------------------------------------------------------------

@@ -1,0 +1,202 @@
+"""Python launch files interpreted statically: the subset, and hostile files."""
+
+from __future__ import annotations
+
+from conftest import package_xml
+
+from haros_arch.launch import load
+from haros_arch.workspace import scan
+
+HEADER = """
+import os
+from ament_index_python.packages import get_package_share_directory
+from launch import LaunchDescription
+from launch.actions import (DeclareLaunchArgument, GroupAction, IncludeLaunchDescription,
+                            OpaqueFunction, TimerAction)
+from launch.conditions import IfCondition, LaunchConfigurationEquals, UnlessCondition
+from launch.launch_description_sources import PythonLaunchDescriptionSource
+from launch.substitutions import LaunchConfiguration, PythonExpression, TextSubstitution
+from launch_ros.actions import Node, PushRosNamespace, SetParameter
+"""
+
+
+def run(write_tree, body: str, args: dict[str, str] | None = None,
+        extra: dict[str, str] | None = None, env: dict[str, str] | None = None):
+    files = {"src/pkg/package.xml": package_xml("pkg", "ament_python"),
+             "src/pkg/launch/main.launch.py": HEADER + body}
+    files.update(extra or {})
+    root = write_tree(files)
+    ws = scan([str(root / "src")], env or {})
+    return load(str(root / "src/pkg/launch/main.launch.py"), ws, args or {}, env or {}), root
+
+
+def codes(model) -> list[str]:
+    return sorted({d.code for d in model.diagnostics})
+
+
+def test_helpers_loops_comprehensions_and_strings(write_tree):
+    model, _ = run(write_tree, """
+ROBOTS = [('alpha', 1), ('beta', 2)]
+
+def driver(name, index, prefix='unit'):
+    return Node(package='drive', executable='base_node', name=f'{prefix}_{index}',
+                namespace=name, parameters=[{'id': index, 'frame': name + '/base',
+                                             'limits': {'v': 0.5 * index, 'w': [1, 2]}}],
+                remappings=[('cmd', '/{}/cmd'.format(name))])
+
+def generate_launch_description():
+    nodes = [driver(name, i) for name, i in ROBOTS if i > 0]
+    extra = []
+    for name, i in ROBOTS:
+        if i == 2:
+            extra.append(Node(package='p', executable='e', name='only_' + name))
+    cfg = os.path.join(get_package_share_directory('pkg'), 'config', 'x.yaml')
+    return LaunchDescription(nodes + extra + [
+        Node(package='p', executable='e', name='with_file', parameters=[{'cfg': cfg}])])
+""")
+    assert [n.name for n in model.nodes] == [
+        "/alpha/unit_1", "/beta/unit_2", "/only_beta", "/with_file"]
+    assert model.nodes[0].remaps == [("cmd", "/alpha/cmd")]
+    params = {p.name: p.value for p in model.params}
+    assert params["/beta/unit_2/limits.v"] == 1.0
+    assert params["/alpha/unit_1/limits.w"] == [1, 2]
+    assert params["/alpha/unit_1/frame"] == "alpha/base"
+    assert params["/with_file/cfg"].endswith("src/pkg/config/x.yaml")
+    assert model.diagnostics == []
+
+
+def test_conditions_known_unknown_and_config_equals(write_tree):
+    model, _ = run(write_tree, """
+def generate_launch_description():
+    mode = LaunchConfiguration('mode')
+    return LaunchDescription([
+        DeclareLaunchArgument('mode', default_value='sim'),
+        DeclareLaunchArgument('robot'),
+        Node(package='p', executable='e', name='sim', condition=LaunchConfigurationEquals('mode', 'sim')),
+        Node(package='p', executable='e', name='real', condition=UnlessCondition(
+            PythonExpression(["'", mode, "' == 'sim'"]))),
+        Node(package='p', executable='e', name='maybe',
+             condition=IfCondition(LaunchConfiguration('robot'))),
+    ])
+""")
+    assert [n.name for n in model.nodes] == ["/sim", "/maybe"]
+    [cond] = model.nodes[1].conditions
+    assert (cond.text, cond.statement, cond.kind) == (
+        "LaunchConfiguration('robot')", "if", "launch")
+    assert model.args == {"mode": "sim", "robot": None}
+
+
+def test_include_group_namespace_and_launch_arguments(write_tree):
+    model, _ = run(write_tree, """
+def generate_launch_description():
+    here = os.path.dirname(__file__) if False else None
+    part = os.path.join(get_package_share_directory('pkg'), 'launch', 'part.launch.py')
+    return LaunchDescription([
+        SetParameter(name='use_sim_time', value=True),
+        GroupAction([
+            PushRosNamespace('fleet'),
+            IncludeLaunchDescription(PythonLaunchDescriptionSource(part),
+                                     launch_arguments={'robot': 'r7'}.items()),
+        ]),
+        Node(package='p', executable='e', name='after'),
+    ])
+""", extra={"src/pkg/launch/part.launch.py": HEADER + """
+def generate_launch_description():
+    robot = LaunchConfiguration('robot')
+    return LaunchDescription([
+        DeclareLaunchArgument('robot', default_value='r0'),
+        Node(package='p', executable='e', name=[robot, '_driver'], namespace=robot),
+    ])
+"""})
+    assert [n.name for n in model.nodes] == ["/fleet/r7/r7_driver", "/after"]
+    assert [p.name for p in model.params] == ["/fleet/r7/r7_driver/use_sim_time",
+                                              "/after/use_sim_time"]
+    assert model.files == ["pkg/launch/main.launch.py", "pkg/launch/part.launch.py"]
+
+
+def test_opaque_function_runs_in_the_scope_it_is_reached_in(write_tree):
+    model, _ = run(write_tree, """
+def setup(context, *args, **kwargs):
+    count = int(LaunchConfiguration('count').perform(context))
+    mode = context.launch_configurations['mode']
+    nodes = [Node(package='p', executable='w', name=f'worker_{i}') for i in range(count)]
+    if mode == 'debug':
+        nodes.append(Node(package='p', executable='d', name='debugger'))
+    return nodes
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('count', default_value='2'),
+        DeclareLaunchArgument('mode'),
+        OpaqueFunction(function=setup),
+        TimerAction(period=3.0, actions=[Node(package='p', executable='late', name='late')]),
+    ])
+""", args={"count": "3"})
+    names = [n.name for n in model.nodes]
+    assert names == ["/worker_0", "/worker_1", "/worker_2", "/debugger", "/late"]
+    debugger, late = model.nodes[3], model.nodes[4]
+    assert debugger.conditions and debugger.conditions[0].text == "mode == 'debug'"
+    assert [c.statement for c in late.conditions] == ["timer"]
+
+
+def test_hostile_system_call_and_imports_run_nothing(write_tree, tmp_path):
+    marker = tmp_path / "pwned"
+    model, _ = run(write_tree, f"""
+import subprocess
+import evil_helper
+os.system('touch {marker}')
+subprocess.run(['touch', '{marker}'])
+__import__('os').system('touch {marker}')
+
+def generate_launch_description():
+    os.system('touch {marker}')
+    eval("__import__('os').system('touch {marker}')")
+    open('{marker}', 'w')
+    evil_helper.go()
+    return LaunchDescription([Node(package='p', executable='e', name='n')])
+""", extra={"src/pkg/launch/evil_helper.py": f"open('{marker}', 'w').write('x')\n"})
+    assert not marker.exists()
+    assert [n.name for n in model.nodes] == ["/n"]
+    messages = " ".join(d.message for d in model.diagnostics)
+    assert "os.system" in messages and "eval" in messages and "evil_helper.go" in messages
+    assert codes(model) == ["LAUNCH_PY_UNSUPPORTED"]
+
+
+def test_hostile_loops_recursion_and_huge_values_are_bounded(write_tree):
+    model, _ = run(write_tree, """
+def forever():
+    while True:
+        pass
+
+def deep(n):
+    return deep(n + 1)
+
+def generate_launch_description():
+    forever()
+    return LaunchDescription([Node(package='p', executable='e', name='ok')])
+""")
+    assert [n.name for n in model.nodes] == ["/ok"]
+    assert "while loops" in " ".join(d.message for d in model.diagnostics)
+    for body in ("deep(0)", "'x' * 10**12", "[0] * (10 ** 9)", "2 ** 10 ** 10",
+                 "[[i for i in range(9999)] for j in range(9999)]",
+                 "[1 for _ in 'a' * 1000 for _ in 'b' * 1000]"):
+        hostile, _ = run(write_tree, f"""
+def deep(n):
+    return deep(n + 1)
+
+def generate_launch_description():
+    value = {body}
+    return LaunchDescription([Node(package='p', executable='e', name='n')])
+""")
+        assert "LAUNCH_PY_BUDGET" in codes(hostile), body
+        assert hostile.nodes == []
+
+
+def test_hostile_sources_are_refused_before_interpretation(write_tree):
+    nested, _ = run(write_tree, "x = " + "(" * 5000 + "1" + ")" * 5000 + "\n")
+    assert codes(nested) in (["LAUNCH_PY_SYNTAX"], ["LAUNCH_PY_BUDGET"])
+    huge, _ = run(write_tree, "x = '" + "a" * 600_000 + "'\n")
+    assert codes(huge) == ["LAUNCH_PY_BUDGET"]
+    broken, _ = run(write_tree, "def generate_launch_description(:\n")
+    assert codes(broken) == ["LAUNCH_PY_SYNTAX"]
+    assert broken.diagnostics[0].location.line > 0
