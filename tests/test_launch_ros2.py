@@ -6,8 +6,8 @@ import pytest
 from conftest import package_xml
 
 from haros_arch.launch import load
-from haros_arch.launch.ros2 import is_ros2
 from haros_arch.launch.ros2 import entities as e
+from haros_arch.launch.ros2 import is_ros2
 from haros_arch.launch.ros2.naming import (
     node_namespace,
     params_for_node,
@@ -149,7 +149,7 @@ def test_command_is_never_run_and_file_content_stays_in_workspace(write_tree, tm
     marker = tmp_path / "ran"
     outside = tmp_path.parent / "secret_outside.txt"
     outside.write_text("secret")
-    model, root = run(write_tree, "main.launch.xml", f"""
+    model, _root = run(write_tree, "main.launch.xml", f"""
         <launch>
           <node pkg="p" exec="e" name="a">
             <param name="desc" value="$(command 'touch {marker}')"/>

@@ -72,7 +72,8 @@ def generate_launch_description():
     return LaunchDescription([
         DeclareLaunchArgument('mode', default_value='sim'),
         DeclareLaunchArgument('robot'),
-        Node(package='p', executable='e', name='sim', condition=LaunchConfigurationEquals('mode', 'sim')),
+        Node(package='p', executable='e', name='sim',
+             condition=LaunchConfigurationEquals('mode', 'sim')),
         Node(package='p', executable='e', name='real', condition=UnlessCondition(
             PythonExpression(["'", mode, "' == 'sim'"]))),
         Node(package='p', executable='e', name='maybe',
