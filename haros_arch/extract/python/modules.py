@@ -20,8 +20,8 @@ from ...files import read_text
 from ...model.location import Location
 from ...workspace import Workspace
 
-MAX_PY_BYTES = 1024 * 1024
-MAX_AST_NODES = 400_000
+MAX_PY_BYTES = 512 * 1024
+MAX_AST_NODES = 200_000
 
 FunctionNode = ast.FunctionDef | ast.AsyncFunctionDef
 

@@ -1,0 +1,283 @@
+"""The Python extractor (rospy, rclpy) on the fixture workspace ``fixtures/python/ws``.
+
+Each script or module is extracted once per module (module-scoped fixture); tests
+compare the calls against what a reading of the fixture gives, row by row.
+"""
+
+from __future__ import annotations
+
+import os
+
+import pytest
+
+from haros_arch.extract import extract_node
+from haros_arch.extract.python import PythonResult, extract_python
+from haros_arch.model.source import Node, PrimitiveCall
+from haros_arch.workspace import Workspace, scan
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+WS = os.path.join(os.path.dirname(HERE), "fixtures", "python", "ws")
+ROS1 = os.path.join(WS, "src", "ros1_demo")
+ROS2 = os.path.join(WS, "src", "ros2_demo")
+DEFAULT_QOS = {"depth": 10, "history": "keep_last", "reliability": "reliable",
+               "durability": "volatile"}
+
+
+def row(call: PrimitiveCall) -> tuple[object, ...]:
+    """kind, name, type, queue size, latch, callback, line, conditions."""
+    return (call.kind, call.name, call.type, call.queue_size, call.latch, call.callback,
+            call.location.line, tuple((c.statement, c.text) for c in call.conditions))
+
+
+def codes(result: PythonResult) -> list[str]:
+    return [d.code for d in result.diagnostics]
+
+
+@pytest.fixture(scope="module")
+def ws() -> Workspace:
+    return scan([WS])
+
+
+@pytest.fixture(scope="module")
+def extracted(ws: Workspace) -> dict[str, PythonResult]:
+    cache: dict[str, PythonResult] = {}
+    return cache
+
+
+def extract(ws: Workspace, cache: dict[str, PythonResult], path: str) -> PythonResult:
+    if path not in cache:
+        package = "ros1_demo" if path.startswith(ROS1) else "ros2_demo"
+        cache[path] = extract_python([path], ws, package=package)
+    return cache[path]
+
+
+@pytest.fixture
+def ros1(ws: Workspace, extracted: dict[str, PythonResult]):
+    return lambda name: extract(ws, extracted, os.path.join(ROS1, "scripts", name))
+
+
+@pytest.fixture
+def ros2(ws: Workspace, extracted: dict[str, PythonResult]):
+    return lambda name: extract(ws, extracted, os.path.join(ROS2, "ros2_demo", name))
+
+
+# -- rospy ------------------------------------------------------------------------------
+
+def test_rospy_topics(ros1) -> None:
+    result = ros1("topics.py")
+    assert result.rosname == "topics"
+    assert result.anonymous is True
+    wait = ("if", "rospy.get_param('~wait', False)")
+    loop = ("while", "not rospy.is_shutdown()")
+    assert [row(c) for c in result.calls] == [
+        ("publish", "relay_out", "std_msgs/String", 10, True, None, 20, ()),
+        ("subscribe", "relay_in", "std_msgs/String", 1, False, "Relay.forward", 21, ()),
+        ("publish", "chatter", "std_msgs/String", 10, False, None, 29, ()),
+        ("subscribe", "chatter", "std_msgs/Int32", None, False, "on_chatter", 30, ()),
+        # a star import from the package's own messages, resolved through msg/
+        ("publish", "/status", "ros1_demo/Status", 1, False, None, 31, ()),
+        ("subscribe", "camera/image", "sensor_msgs/Image", None, False, None, 32, ()),
+        ("read", "~wait", "bool", None, False, None, 34, ()),
+        ("subscribe", "odom", "std_msgs/Header", None, False, None, 35, (wait,)),
+        ("publish", "fast", "std_msgs/String", 20, False, None, 37,
+         (("else", wait[1]), ("if", "RATE > 5"))),
+        ("publish", "slow", "std_msgs/String", None, False, None, 39,
+         (("else", wait[1]), ("else", "RATE > 5"))),
+        ("publish", "?/cmd", "std_msgs/Float64", 1, False, None, 41,
+         (("for", "side in ('left', 'right')"),)),
+        ("subscribe", "loop", "std_msgs/String", None, False, "on_chatter", 44,
+         (loop, ("try", ""))),
+        ("publish", "errors", "std_msgs/String", 1, False, None, 46,
+         (loop, ("except", "rospy.ROSException"))),
+    ]
+    assert codes(result) == ["PY_DYNAMIC_NAME"]
+
+
+def test_locations_are_workspace_relative_with_columns(ros1) -> None:
+    call = ros1("topics.py").calls[0]
+    assert call.location.package == "ros1_demo"
+    assert call.location.file == "src/ros1_demo/scripts/topics.py"
+    assert (call.location.line, call.location.column) == (20, 20)
+    condition = ros1("topics.py").calls[7].conditions[0]
+    assert (condition.kind, condition.location.line, condition.location.column) == (
+        "source", 34, 5)
+
+
+def test_rospy_services_and_parameters(ros1) -> None:
+    result = ros1("services_params.py")
+    assert result.rosname == "services_params"
+    assert result.anonymous is False
+    assert [row(c) for c in result.calls] == [
+        # a helper called twice, each with its own name
+        ("server", "reset", "ros1_demo/Reset", None, False, "handle_reset", 14, ()),
+        ("server", "arm/reset", "ros1_demo/Reset", None, False, "handle_reset", 14, ()),
+        ("read", "~topic", "str", None, False, None, 21, ()),
+        ("read", "gain", "double", None, False, None, 23, ()),
+        ("subscribe", "?", "ros1_demo/Reset", None, False, "Controller.on_scan", 26, ()),
+        # class attribute + module constant, through f-string, % and str.format
+        ("client", "arm/elbow/reset", "ros1_demo/Reset", None, False, None, 27, ()),
+        ("client", "arm/elbow/stop", "ros1_demo/Reset", None, False, None, 28, ()),
+        ("client", "arm/?", "ros1_demo/Reset", None, False, None, 29, ()),
+        ("client", "calibrate", None, None, False, None, 39, ()),
+        ("write", "/robot/mode", "str", None, False, None, 40, ()),
+        ("write", "~count", "int", None, False, None, 41, ()),
+        ("read", "~debug", None, None, False, None, 42, ()),
+        ("write", "~debug", None, None, False, None, 43,
+         (("if", "rospy.has_param('~debug')"),)),
+        ("read", "frame_id", None, None, False, None, 44, ()),
+        ("read", "?", None, None, False, None, 45, ()),
+    ]
+
+
+def test_parameter_valued_name(ros1) -> None:
+    scan_sub = ros1("services_params.py").calls[4]
+    assert (scan_sub.name, scan_sub.name_param, scan_sub.name_default) == ("?", "~topic", "scan")
+    others = [c for c in ros1("services_params.py").calls if c is not scan_sub]
+    assert all(c.name_param is None for c in others)
+
+
+def test_actionlib_and_tf2(ros1) -> None:
+    result = ros1("actions_tf.py")
+    assert result.rosname == "actions_tf"
+    assert [row(c) for c in result.calls] == [
+        ("action-server", "dock", "ros1_demo/Dock", None, False, "Docker.execute", 11, ()),
+        ("action-server", "undock", "ros1_demo/Dock", None, False, "goal_cb", 25, ()),
+        ("action-client", "/station/dock", "ros1_demo/Dock", None, False, None, 26, ()),
+        ("action-client", "undock", "ros1_demo/Dock", None, False, None, 27, ()),
+        ("publish", "/tf", "tf2_msgs/TFMessage", None, False, None, 28, ()),
+        ("publish", "/tf_static", "tf2_msgs/TFMessage", None, True, None, 29, ()),
+        ("subscribe", "/tf", "tf2_msgs/TFMessage", None, False, None, 31, ()),
+        ("subscribe", "/tf_static", "tf2_msgs/TFMessage", None, False, None, 31, ()),
+    ]
+    assert codes(result) == []
+
+
+def test_modules_of_the_same_package(ros1) -> None:
+    result = ros1("uses_module.py")
+    assert result.rosname == "uses_module"
+    assert [(c.kind, c.name, c.type, c.queue_size, c.location.file, c.location.line)
+            for c in result.calls] == [
+        # SCAN_TOPIC = PREFIX + 'scan', PREFIX from a relative import in that module
+        ("subscribe", "front_scan", "std_msgs/String", None,
+         "src/ros1_demo/scripts/uses_module.py", 8),
+        ("publish", "status_a", "std_msgs/String", 5, "src/ros1_demo/src/ros1_demo/names.py", 11),
+        ("publish", "front_scan_status", "std_msgs/String", 2,
+         "src/ros1_demo/src/ros1_demo/names.py", 11),
+    ]
+
+
+def test_python2_file_is_read_after_repair(ros1) -> None:
+    result = ros1("legacy.py")
+    assert codes(result) == ["PY_PYTHON2"]
+    assert result.diagnostics[0].location.line == 10
+    assert result.rosname == "legacy"
+    assert [row(c) for c in result.calls] == [
+        ("publish", "legacy", "std_msgs/String", 1, False, None, 7, ())]
+
+
+def test_syntax_error_is_a_diagnostic(ros1) -> None:
+    result = ros1("broken.py")
+    assert result.calls == []
+    assert codes(result) == ["PY_PARSE_ERROR"]
+    location = result.diagnostics[0].location
+    assert (location.file, location.line, location.column) == (
+        "src/ros1_demo/scripts/broken.py", 3, 10)
+
+
+# -- rclpy ------------------------------------------------------------------------------
+
+def test_rclpy_node_subclass(ros2) -> None:
+    result = ros2("talker.py")
+    assert (result.rosname, result.namespace) == ("talker", "robot")
+    debug = (("if", "self.has_parameter('debug')"),)
+    assert [row(c) for c in result.calls] == [
+        ("declare", "~topic", "str", None, False, None, 16, ()),
+        ("declare", "~limits.speed", "double", None, False, None, 17, ()),
+        ("declare", "~limits.enabled", "bool", None, False, None, 17, ()),
+        ("read", "~topic", None, None, False, None, 18, ()),
+        ("publish", "?", "std_msgs/msg/String", 10, False, None, 19, ()),
+        ("publish", "~status", "std_msgs/msg/String", 1, False, None, 20, ()),
+        ("subscribe", "scan", "std_msgs/msg/String", 5, False, "Talker.on_scan", 22, ()),
+        ("subscribe", "imu", "std_msgs/msg/String", 5, False, "Talker.on_scan", 23, ()),
+        ("subscribe", "map", "std_msgs/msg/String", None, False, "Talker.on_scan", 24, ()),
+        ("server", "add", "example_interfaces/srv/AddTwoInts", None, False, "Talker.add", 26,
+         ()),
+        ("client", "/calc/add", "example_interfaces/srv/AddTwoInts", None, False, None, 27,
+         ()),
+        ("read", "~limits.speed", None, None, False, None, 28, ()),
+        ("read", "~limits.enabled", None, None, False, None, 28, ()),
+        ("read", "~debug", None, None, False, None, 29, ()),
+        ("write", "~debug", "bool", None, False, None, 30, debug),
+    ]
+    topic = result.calls[4]
+    assert (topic.name_param, topic.name_default) == ("~topic", "chatter")
+
+
+def test_rclpy_qos(ros2) -> None:
+    qos = {c.name: c.qos for c in ros2("talker.py").calls if c.kind in ("publish", "subscribe")}
+    assert qos["?"] == DEFAULT_QOS
+    assert qos["~status"] == {**DEFAULT_QOS, "depth": 1, "durability": "transient_local"}
+    assert qos["scan"] == {**DEFAULT_QOS, "depth": 5, "reliability": "best_effort"}
+    assert qos["imu"] == {**DEFAULT_QOS, "depth": 5, "reliability": "best_effort"}
+    assert qos["map"] == {"depth": None, "history": "system_default",
+                          "reliability": "system_default", "durability": "system_default"}
+    old = {c.name: c.qos for c in ros2("old_style.py").calls}
+    assert old == {"events": {**DEFAULT_QOS, "depth": 0, "history": "keep_all"},
+                   "heartbeat": {**DEFAULT_QOS, "depth": 2}}
+
+
+def test_rclpy_create_node_actions_tf_filters(ros2) -> None:
+    result = ros2("actions.py")
+    assert result.rosname == "actions"
+    loop = (("for", "name in ('left', 'right')"),)
+    assert [row(c) for c in result.calls] == [
+        ("action-server", "fibonacci", "example_interfaces/action/Fibonacci", None, False,
+         "execute", 17, ()),
+        ("action-client", "other/fibonacci", "example_interfaces/action/Fibonacci", None,
+         False, None, 18, ()),
+        ("publish", "/tf", "tf2_msgs/msg/TFMessage", 100, False, None, 19, ()),
+        ("publish", "/tf_static", "tf2_msgs/msg/TFMessage", 1, False, None, 20, ()),
+        ("subscribe", "/tf", "tf2_msgs/msg/TFMessage", 100, False, None, 22, ()),
+        ("subscribe", "/tf_static", "tf2_msgs/msg/TFMessage", 1, False, None, 22, ()),
+        ("subscribe", "camera/image", "sensor_msgs/msg/Image", None, False, None, 23, ()),
+        ("publish", "?/image_raw", "sensor_msgs/msg/Image", 1, False, None, 25, loop),
+    ]
+    static = result.calls[3].qos
+    assert static is not None and static["durability"] == "transient_local"
+
+
+def test_rclpy_node_init_and_node_constructor(ros2) -> None:
+    result = ros2("old_style.py")
+    assert result.rosname == "old_style"
+    assert [row(c) for c in result.calls] == [
+        ("subscribe", "events", "std_msgs/msg/String", 0, False, "Monitor.on_event", 12, ()),
+        ("publish", "heartbeat", "std_msgs/msg/String", 2, False, None, 20, ()),
+    ]
+
+
+def test_class_of_another_module_built_with_arguments(ros2) -> None:
+    result = ros2("uses_common.py")
+    assert result.rosname == "uses_common"
+    assert [(c.kind, c.name, c.queue_size, c.callback, c.location.file, c.location.line)
+            for c in result.calls] == [
+        ("publish", "shared", 3, None, "src/ros2_demo/ros2_demo/common.py", 10),
+        ("subscribe", "shared/echo", 1, "Chatter.on_echo",
+         "src/ros2_demo/ros2_demo/common.py", 13),
+    ]
+
+
+def test_module_alone_keeps_unknown_arguments(ros2) -> None:
+    result = ros2("common.py")
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("publish", "?"), ("subscribe", "?/echo")]
+
+
+# -- the pipeline's entry --------------------------------------------------------------
+
+def test_extract_node_fills_a_python_node(ws: Workspace) -> None:
+    node = Node("ros1_demo", "topics.py", kind="script", language="python",
+                sources=["src/ros1_demo/scripts/topics.py"])
+    diagnostics = extract_node(node, ws)
+    assert node.rosname == "topics"
+    assert len(node.calls) == 13
+    assert [d.code for d in diagnostics] == ["PY_DYNAMIC_NAME"]

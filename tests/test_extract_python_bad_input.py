@@ -1,0 +1,104 @@
+"""Bad Python input gives diagnostics or a result in bounded work, never an exception."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from haros_arch.extract.python import extract_python
+from haros_arch.extract.python.modules import MAX_AST_NODES, MAX_PY_BYTES
+from haros_arch.workspace import scan
+
+from conftest import package_xml
+
+
+def run(folder: Path, name: str):
+    ws = scan([str(folder)])
+    return extract_python([str(folder / "pkg" / "scripts" / name)], ws, package="pkg")
+
+
+def codes(result) -> list[str]:
+    return [d.code for d in result.diagnostics]
+
+
+def test_file_above_the_size_limit_is_skipped(write_tree) -> None:
+    line = "rospy.Publisher('t', String, queue_size=1)\n"
+    big = "import rospy\n" + line * (5 * 1024 * 1024 // len(line) + 1)
+    folder = write_tree({"pkg/package.xml": package_xml("pkg"), "pkg/scripts/big.py": big})
+    result = run(folder, "big.py")
+    assert len(big) > MAX_PY_BYTES
+    assert result.calls == []
+    assert codes(result) == ["FILE_TOO_LARGE"]
+
+
+def test_generated_file_under_the_size_limit_is_bounded(write_tree) -> None:
+    # many small statements: below the byte limit, above the AST node bound
+    line = "x = [1, 2, 3, 4, 5, 6, 7, 8, 9]\n"
+    text = "import rospy\n" + line * (MAX_AST_NODES // 14 + 1)  # 14 nodes a line
+    folder = write_tree({"pkg/package.xml": package_xml("pkg"), "pkg/scripts/gen.py": text})
+    result = run(folder, "gen.py")
+    assert len(text) < MAX_PY_BYTES
+    assert codes(result) == ["PY_TOO_COMPLEX"]
+
+
+def test_many_calls_give_results(write_tree) -> None:
+    calls = "".join(f"rospy.Publisher('t{i}', String, queue_size=1)\n" for i in range(2000))
+    text = "import rospy\nfrom std_msgs.msg import String\n" + calls
+    folder = write_tree({"pkg/package.xml": package_xml("pkg"), "pkg/scripts/many.py": text})
+    result = run(folder, "many.py")
+    assert len(result.calls) == 2000
+    assert result.calls[-1].name == "t1999"
+
+
+@pytest.mark.parametrize("text,line", [
+    ("import rospy\nrospy.Publisher('a', String\n", 2),            # unclosed call
+    ("import rospy\nx = (" * 1 + "(" * 300 + "1" + ")" * 300 + ")\n", 2),  # nesting
+    ("def f():\n\treturn 1\n        return 2\n", 3),              # inconsistent indent
+    ("import rospy\nx = 'a\x00b'\n", None),                       # null byte
+])
+def test_unparsable_files(write_tree, text: str, line: int | None) -> None:
+    folder = write_tree({"pkg/package.xml": package_xml("pkg"), "pkg/scripts/bad.py": text})
+    result = run(folder, "bad.py")
+    assert result.calls == []
+    assert codes(result) == ["PY_PARSE_ERROR"]
+    if line is not None:
+        assert result.diagnostics[0].location.line == line
+
+
+def test_deep_expression_is_evaluated_in_bounded_depth(write_tree) -> None:
+    name = " + ".join(["'a'"] * 500)  # parses, but deeper than the evaluator goes
+    text = f"import rospy\nfrom std_msgs.msg import String\nrospy.Publisher({name}, String)\n"
+    folder = write_tree({"pkg/package.xml": package_xml("pkg"), "pkg/scripts/deep.py": text})
+    result = run(folder, "deep.py")
+    assert [c.kind for c in result.calls] == ["publish"]
+    assert "?" in result.calls[0].name
+
+
+def test_expression_too_deep_for_the_parser(write_tree) -> None:
+    name = " + ".join(["'a'"] * 5000)
+    text = f"import rospy\nrospy.Publisher({name}, String)\n"
+    folder = write_tree({"pkg/package.xml": package_xml("pkg"), "pkg/scripts/deep.py": text})
+    assert codes(run(folder, "deep.py")) == ["PY_PARSE_ERROR"]
+
+
+def test_recursive_helpers_terminate(write_tree) -> None:
+    text = (
+        "import rospy\nfrom std_msgs.msg import String\n"
+        "def a(n):\n    rospy.Publisher(n, String)\n    return b(n + '/x')\n"
+        "def b(n):\n    return a(n)\n"
+        "a('top')\n")
+    folder = write_tree({"pkg/package.xml": package_xml("pkg"), "pkg/scripts/rec.py": text})
+    result = run(folder, "rec.py")
+    assert [c.name for c in result.calls][0] == "top"
+    assert len(result.calls) <= 5
+
+
+def test_not_utf8_is_read_with_replacement(write_tree, tmp_path: Path) -> None:
+    folder = write_tree({"pkg/package.xml": package_xml("pkg"), "pkg/scripts/enc.py": ""})
+    (folder / "pkg" / "scripts" / "enc.py").write_bytes(
+        b"import rospy\nfrom std_msgs.msg import String\n# caf\xe9\n"
+        b"rospy.Publisher('ok', String)\n")
+    result = run(folder, "enc.py")
+    assert [c.name for c in result.calls] == ["ok"]
+    assert codes(result) == ["FILE_ENCODING"]
