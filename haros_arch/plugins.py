@@ -15,6 +15,7 @@ import os
 import re
 from collections.abc import Mapping
 from dataclasses import dataclass
+from typing import Protocol
 
 from lxml import etree
 
@@ -23,13 +24,23 @@ from .diagnostics import Diagnostic
 from .files import read_bytes, read_text
 from .manifest import xml_parser
 from .model.conditions import Condition
+from .model.location import Location
 from .model.source import Node, Package
-from .workspace import Workspace
 
 NODE_PLUGIN_KINDS = ("nodelet",)
 _EXPORT = re.compile(
     r"(PLUGINLIB_EXPORT_CLASS|PLUGINLIB_DECLARE_CLASS|RCLCPP_COMPONENTS_REGISTER_NODE)"
     r"\s*\(([^)]*)\)")
+
+
+class Files(Protocol):
+    """What the build-file stage needs of a workspace (``Workspace`` is one)."""
+
+    root: str
+
+    def location(self, path: str, line: int = 0, column: int = 0) -> Location: ...
+
+    def relpath(self, path: str) -> str: ...
 
 
 @dataclass(frozen=True)
@@ -47,7 +58,7 @@ def library_name(path: str) -> str:
     return name[3:] if name.startswith("lib") and len(name) > 3 else name
 
 
-def nodelets(package: Package, workspace: Workspace,
+def nodelets(package: Package, workspace: Files,
              libraries: Mapping[str, Library]) -> tuple[list[Node], list[Diagnostic]]:
     """Nodes for the classes of the package's nodelet plugin descriptions."""
     nodes: list[Node] = []
@@ -88,7 +99,7 @@ def nodelets(package: Package, workspace: Workspace,
     return nodes, found
 
 
-def exported_classes(path: str, workspace: Workspace) -> list[tuple[str, int]]:
+def exported_classes(path: str, workspace: Files) -> list[tuple[str, int]]:
     """Classes a C++ file exports with a pluginlib or rclcpp_components macro, with lines."""
     text, _ = read_text(path, workspace.location(path))
     if not text or ("PLUGINLIB_" not in text and "RCLCPP_COMPONENTS_" not in text):
@@ -105,7 +116,7 @@ def exported_classes(path: str, workspace: Workspace) -> list[tuple[str, int]]:
     return out
 
 
-def narrow(sources: list[str], cls: str, workspace: Workspace) -> list[str]:
+def narrow(sources: list[str], cls: str, workspace: Files) -> list[str]:
     """A library's sources without the files that export only other classes.
 
     A library often bundles several nodelets or components, one per file; the node of
@@ -122,7 +133,7 @@ def narrow(sources: list[str], cls: str, workspace: Workspace) -> list[str]:
 
 
 def _exporting(type_name: str, libraries: Mapping[str, Library],
-               workspace: Workspace) -> Library | None:
+               workspace: Files) -> Library | None:
     """The library whose sources export ``type_name`` with a pluginlib macro."""
     for library in libraries.values():
         for source in library.sources:

@@ -18,13 +18,14 @@ from ..model.source import Node, Package
 from ..workspace import Workspace
 from .interpreter import Interpreter
 from .lexer import CMakeSyntaxError, Invocation, tokenize
-from .nodes import SourceMap, components, executables, scripts
+from .nodes import PackageFiles, SourceMap, components, executables, scripts
 from .targets import Target
 
 __all__ = ["Target", "interpret", "parse_package", "read_commands", "targets_of"]
 
 
-def read_commands(path: str, workspace: Workspace) -> tuple[list[Invocation], list[Diagnostic]]:
+def read_commands(path: str, workspace: Workspace | PackageFiles,
+                  ) -> tuple[list[Invocation], list[Diagnostic]]:
     """Tokenise a CMake file; a syntax error keeps the commands read before it."""
     text, found = read_text(path, workspace.location(path))
     if text is None:
@@ -44,14 +45,19 @@ def read_commands(path: str, workspace: Workspace) -> tuple[list[Invocation], li
 
 def interpret(package: Package, workspace: Workspace) -> tuple[Interpreter, list[Diagnostic]]:
     """Run the package's top-level CMakeLists.txt (and what it includes)."""
+    return _interpret(package, workspace, PackageFiles(package, workspace))
+
+
+def _interpret(package: Package, workspace: Workspace,
+               files: PackageFiles) -> tuple[Interpreter, list[Diagnostic]]:
     found: list[Diagnostic] = []
 
     def reader(path: str) -> list[Invocation]:
-        commands, problems = read_commands(path, workspace)
+        commands, problems = read_commands(path, files)
         found.extend(problems)
         return commands
 
-    interpreter = Interpreter(package.root, workspace.environment, reader, workspace.location)
+    interpreter = Interpreter(package.root, workspace.environment, reader, files.location)
     path = os.path.join(package.root, "CMakeLists.txt")
     if os.path.isfile(path):
         interpreter.run_file(reader(path))
@@ -66,21 +72,22 @@ def targets_of(package: Package, workspace: Workspace) -> tuple[list[Target], li
 
 def parse_package(package: Package, workspace: Workspace) -> tuple[list[Node], list[Diagnostic]]:
     """The runnable nodes a CMake-built package has, with their sources."""
-    interpreter, found = interpret(package, workspace)
-    sources = SourceMap(interpreter, workspace)
-    nodes = executables(interpreter, package, workspace, sources)
-    nodes.extend(components(interpreter, package, workspace, sources))
+    files = PackageFiles(package, workspace)
+    interpreter, found = _interpret(package, workspace, files)
+    sources = SourceMap(interpreter, files)
+    nodes = executables(interpreter, package, files, sources)
+    nodes.extend(components(interpreter, package, files, sources))
     libraries: dict[str, plugins.Library] = {}
     for target in interpreter.targets.values():
         if target.kind == "library":
             library = plugins.Library(sources.linked(target), target.conditions)
             libraries.setdefault(target.name, library)
             libraries.setdefault(target.output_name or target.name, library)
-    nodelets, problems = plugins.nodelets(package, workspace, libraries)
+    nodelets, problems = plugins.nodelets(package, files, libraries)
     nodes.extend(nodelets)
     found.extend(problems)
     found.extend(sources.diagnostics)
-    nodes.extend(scripts(interpreter, package, workspace, found))
+    nodes.extend(scripts(interpreter, package, files, found))
     return _unique(nodes), found
 
 

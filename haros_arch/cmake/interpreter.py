@@ -169,6 +169,8 @@ class Interpreter:
                 values.append(arg.text)
             elif arg.kind == "quoted":
                 values.append(self.expand(arg.text))
+            elif "$" not in arg.text and ";" not in arg.text:
+                values.append(arg.text)
             else:
                 values.extend(item.replace("\\;", ";")
                               for item in split_list(self.expand(arg.text)))

@@ -14,6 +14,9 @@ from collections.abc import Callable
 from typing import Protocol
 
 
+_LIST_SEPARATOR = re.compile(r"(?<!\\);")
+
+
 class Scope(Protocol):
     def get(self, name: str) -> str | None: ...
     def set(self, name: str, value: str) -> None: ...
@@ -24,7 +27,9 @@ def split_list(value: str | None) -> list[str]:
     """A CMake list: ``;``-separated, empty items dropped, ``\\;`` kept."""
     if not value:
         return []
-    return [item for item in re.split(r"(?<!\\);", value) if item]
+    if "\\;" not in value:
+        return [item for item in value.split(";") if item]
+    return [item for item in _LIST_SEPARATOR.split(value) if item]
 
 
 def cmake_regex(pattern: str) -> re.Pattern[str] | None:

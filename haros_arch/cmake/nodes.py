@@ -16,8 +16,9 @@ from .. import diagnostics as diag
 from ..diagnostics import Diagnostic
 from ..files import read_text
 from ..model.conditions import Condition
+from ..model.location import Location
 from ..model.source import Node, Package
-from ..plugins import narrow
+from ..plugins import Files, narrow
 from ..workspace import Workspace
 from .commands import C_SUFFIXES
 from .interpreter import BINARY_ROOT, Interpreter
@@ -28,10 +29,32 @@ _GENEX = re.compile(r"^\$<(TARGET_OBJECTS|BUILD_INTERFACE):([^<>]*)>$")
 _COMPONENT_MACRO = re.compile(r"RCLCPP_COMPONENTS_REGISTER_NODE\s*\(\s*([A-Za-z_][\w:]*)\s*\)")
 
 
+class PackageFiles:
+    """Locations and relative paths of one package's files, cached: a package's build
+    files name the same paths many times, and the workspace answers for any path."""
+
+    def __init__(self, package: Package, workspace: Workspace) -> None:
+        self.root = workspace.root
+        self.workspace = workspace
+        self.package = package
+        self._relative: dict[str, str] = {}
+
+    def relpath(self, path: str) -> str:
+        rel = self._relative.get(path)
+        if rel is None:
+            rel = self._relative[path] = self.workspace.relpath(path)
+        return rel
+
+    def location(self, path: str, line: int = 0, column: int = 0) -> Location:
+        if path.startswith(self.package.root + os.sep):
+            return Location(self.package.name, self.relpath(path), line, column)
+        return self.workspace.location(path, line, column)
+
+
 class SourceMap:
     """Workspace-relative C/C++ sources of targets, with package-local libraries linked in."""
 
-    def __init__(self, it: Interpreter, workspace: Workspace) -> None:
+    def __init__(self, it: Interpreter, workspace: Files) -> None:
         self.targets = it.targets
         self.workspace = workspace
         self.diagnostics: list[Diagnostic] = []
@@ -80,7 +103,7 @@ class SourceMap:
         return list(dict.fromkeys(out))
 
 
-def executables(it: Interpreter, package: Package, workspace: Workspace,
+def executables(it: Interpreter, package: Package, workspace: Files,
                 sources: SourceMap) -> list[Node]:
     return [Node(package=package.name, executable=t.output_name or t.name,
                  kind="executable", language="cpp", sources=sources.linked(t),
@@ -89,7 +112,7 @@ def executables(it: Interpreter, package: Package, workspace: Workspace,
             for t in it.targets.values() if t.kind == "executable"]
 
 
-def components(it: Interpreter, package: Package, workspace: Workspace,
+def components(it: Interpreter, package: Package, workspace: Files,
                sources: SourceMap) -> list[Node]:
     nodes: list[Node] = []
     registered: set[str] = set()
@@ -121,7 +144,7 @@ def components(it: Interpreter, package: Package, workspace: Workspace,
     return nodes
 
 
-def _registered_in(path: str, workspace: Workspace) -> Iterable[tuple[str, int]]:
+def _registered_in(path: str, workspace: Files) -> Iterable[tuple[str, int]]:
     text, _ = read_text(path, workspace.location(path))
     if not text or "RCLCPP_COMPONENTS_REGISTER_NODE" not in text:
         return
@@ -141,7 +164,7 @@ def is_python(path: str) -> bool:
     return first.startswith(b"#!") and b"python" in first
 
 
-def _script_source(path: str, workspace: Workspace) -> str:
+def _script_source(path: str, workspace: Files) -> str:
     """A symlinked script's source is the file it points to, when in the workspace."""
     real = os.path.realpath(path)
     if real != os.path.abspath(path) and workspace.relpath(real) != real:
@@ -149,7 +172,7 @@ def _script_source(path: str, workspace: Workspace) -> str:
     return workspace.relpath(path)
 
 
-def scripts(it: Interpreter, package: Package, workspace: Workspace,
+def scripts(it: Interpreter, package: Package, workspace: Files,
             found: list[Diagnostic]) -> list[Node]:
     """Installed Python programs, and for catkin packages the rosrun convention."""
     nodes: dict[str, Node] = {}
