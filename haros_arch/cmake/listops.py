@@ -13,7 +13,6 @@ import re
 from collections.abc import Callable
 from typing import Protocol
 
-
 _LIST_SEPARATOR = re.compile(r"(?<!\\);")
 
 
