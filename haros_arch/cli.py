@@ -18,7 +18,6 @@ from . import __version__
 from .diagnostics import CATALOGUE
 from .model.diagnostic import SEVERITY_RANK
 from .model.model import Model
-from .model.serialise import dumps
 from .pipeline import analyse
 from .project import ProjectError, load
 from .report.text import print_diagnostics, print_summary
@@ -108,7 +107,9 @@ def cmd_extract(args: argparse.Namespace, out: Console, err: Console) -> int:
     model = _analyse(args.project, err)
     if model is None:
         return EXIT_USAGE
-    _write(dumps(model), args.output)
+    from .query.command import extract_document
+
+    _write(extract_document(model, args.project), args.output)
     if not args.quiet:
         summary = out if args.output else err
         print_summary(model, summary)

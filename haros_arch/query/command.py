@@ -178,3 +178,12 @@ def query(args: Any, out: Console, err: Console, analyse: Analyse) -> int:
 
 def project_file_of(path: str) -> Project | None:
     return load(path) if os.path.isfile(path) else None
+
+
+def extract_document(model: Model, project_path: str) -> str:
+    """``extract``'s JSON: the model plus the catalogue's findings under ``findings``."""
+    try:
+        project: Project | None = load(project_path)
+    except ProjectError:
+        project = None
+    return json.dumps(document(model, project), indent=2, ensure_ascii=False) + "\n"
