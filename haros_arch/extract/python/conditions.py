@@ -20,8 +20,9 @@ _SPACE = re.compile(r"\s+")
 MAX_TEXT = 200
 
 
-def source_text(source: str, node: ast.AST) -> str:
-    text = ast.get_source_segment(source, node)
+def source_text(lines: list[str], node: ast.AST) -> str:
+    """The source of ``node`` from the module's ``lines`` (offsets are UTF-8 bytes)."""
+    text = _segment(lines, node)
     if text is None:
         try:
             text = ast.unparse(node)
@@ -44,3 +45,16 @@ def is_main_guard(test: ast.expr) -> bool:
 
 def condition(statement: str, text: str, location: Location) -> Condition:
     return Condition(text, "source", statement, location)
+
+
+def _segment(lines: list[str], node: ast.AST) -> str | None:
+    first, last = getattr(node, "lineno", None), getattr(node, "end_lineno", None)
+    start, end = getattr(node, "col_offset", None), getattr(node, "end_col_offset", None)
+    if first is None or last is None or start is None or end is None or last > len(lines) \
+            or last - first > 20:
+        return None
+    chunk = [line.encode("utf-8") for line in lines[first - 1:last]]
+    if len(chunk) == 1:
+        return chunk[0][start:end].decode("utf-8", "replace")
+    chunk[0], chunk[-1] = chunk[0][start:], chunk[-1][:end]
+    return b"".join(chunk).decode("utf-8", "replace")

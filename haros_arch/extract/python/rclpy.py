@@ -39,6 +39,8 @@ NODE_METHODS: dict[str, PyFunction] = {
     "set_parameters": PyFunction("write", name=None, special="set-parameters"),
     "set_parameters_atomically": PyFunction("write", name=None, special="set-parameters"),
     "undeclare_parameter": PyFunction("write"),
+    # AsyncParameterClient only (parameters of another node)
+    "delete_parameters": PyFunction("write", name=None, special="parameter-names"),
 }
 
 ROWS: dict[tuple[str, str], PyFunction] = {

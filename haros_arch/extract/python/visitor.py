@@ -420,7 +420,7 @@ class Walker:
     # -- text and places ----------------------------------------------------------------
 
     def _text(self, frame: Frame, node: ast.AST) -> str:
-        return source_text(frame.module.text, node)
+        return source_text(frame.module.lines, node)
 
     def _where(self, frame: Frame, node: ast.AST) -> Location:
         return self.loader.location(frame.module.path, getattr(node, "lineno", 0),
