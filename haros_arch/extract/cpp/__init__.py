@@ -104,7 +104,7 @@ def _translation_unit(path: str, text: str, setup: IncludeSetup, workspace: Work
             "CPP_PARSE_ERROR", workspace.location(os.path.abspath(loc.file.name),
                                                   loc.line, loc.column),
             detail=error.spelling))
-    finder = CallFinder(tu, source, owned, where)
+    finder = CallFinder(tu, source, owned, where, ros2=setup.ros2)
     finder.run()
     calls.extend(sorted(finder.calls, key=lambda c: (
         c.location.file or "", c.location.line, c.location.column)))

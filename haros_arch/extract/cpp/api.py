@@ -1,14 +1,18 @@
-"""The roscpp API as data: which calls are ROS primitives and where their values are.
+"""The ROS C++ APIs as data: which calls are ROS primitives and where their values are.
 
 Adding an API is adding rows. A row is keyed by the qualified name of the class or
 namespace that declares the function and the function's name, as libclang sees the
 declaration the call refers to (so the same row serves our stand-in headers and the
-real ones).
+real ones). A constructor is keyed by its class and the class's own name
+(``("tf2_ros::TransformBroadcaster", "TransformBroadcaster")``); it matches a variable
+declaration, a ``new``, and ``std::make_shared<T>`` / ``make_unique`` / ``boost::make_shared``.
 
 Type sources (``type_from``), tried in order until one gives a type:
 
 - ``template``: the first explicit template argument of the call
   (``advertise<std_msgs::String>``);
+- ``class``: the first template argument of the class the call constructs or is made
+  on (``SimpleActionServer<pkg::DoAction>``, ``message_filters::Subscriber<M>``);
 - ``callback``: the first parameter of the callback (``const std_msgs::String::ConstPtr&``);
 - ``service-callback``: the first parameter of a service callback, a request type
   (``example::GetCounter::Request&`` or ``GetCounterRequest&``) named by its service;
@@ -17,6 +21,9 @@ Type sources (``type_from``), tried in order until one gives a type:
   (``double``, ``int``, ``str``, ``bool``);
 - ``template-value``: the first explicit template argument as a parameter type
   (``nh.param<std::string>(...)``).
+
+``fixed_type`` is a ROS 1 type name used when none of those gives one (image_transport
+topics are ``sensor_msgs/Image``); in a ROS 2 node it is written ``pkg/msg/Name``.
 """
 
 from __future__ import annotations
@@ -25,10 +32,13 @@ from dataclasses import dataclass
 
 from ...model.source import CallKind
 
+# (kind, name relative to the call's name's namespace or global, ROS 1 type)
+Sibling = tuple[CallKind, str, str]
+
 
 @dataclass(frozen=True)
 class RosFunction:
-    """How one roscpp function maps to a primitive call."""
+    """How one C++ function or constructor maps to a primitive call."""
 
     kind: CallKind
     name_arg: int = 0
@@ -37,14 +47,33 @@ class RosFunction:
     queue_arg: int | None = None
     latch_arg: int | None = None
     callback_arg: int | None = None
-    # True when the name is resolved in the namespace of the NodeHandle the call is made on
+    qos_arg: int | None = None
+    # where the namespace comes from: the object of a member call (on_handle), or the
+    # argument at handle_arg; with optional_handle, argument 0 is a handle only when its
+    # type is one, and the other indexes count from the argument after it
     on_handle: bool = True
+    handle_arg: int | None = None
+    optional_handle: bool = False
+    # a name fixed by the API (tf's "/tf") instead of one read from an argument
+    fixed_name: str | None = None
+    fixed_type: str | None = None
+    latched: bool = False
+    # the ROS action name of a type such as pkg::DoAction is pkg/Do
+    action_type: bool = False
+    # the default value of a parameter read, for parameter-valued names
+    default_arg: int | None = None
+    # the variable a parameter read writes its value into
+    out_arg: int | None = None
+    siblings: tuple[Sibling, ...] = ()
+    # each of the following calls is made once per element of a list or map argument
+    per_element: bool = False
 
 
 NODE_HANDLE = "ros::NodeHandle"
 
-_PARAM_READ = RosFunction("read", type_from=("value",), type_arg=1)
-_PARAM_READ_DEFAULT = RosFunction("read", type_from=("value", "template-value"), type_arg=1)
+_PARAM_READ = RosFunction("read", type_from=("value",), type_arg=1, out_arg=1)
+_PARAM_READ_DEFAULT = RosFunction(
+    "read", type_from=("value", "template-value"), type_arg=1, out_arg=1, default_arg=2)
 _PARAM_WRITE = RosFunction("write", type_from=("value",), type_arg=1)
 
 ROSCPP: dict[tuple[str, str], RosFunction] = {
@@ -54,7 +83,7 @@ ROSCPP: dict[tuple[str, str], RosFunction] = {
     (NODE_HANDLE, "subscribe"): RosFunction(
         "subscribe", type_from=("template", "callback"), queue_arg=1, callback_arg=2),
     ("ros::topic", "waitForMessage"): RosFunction(
-        "subscribe", type_from=("template",), on_handle=False),
+        "subscribe", type_from=("template",), on_handle=False, handle_arg=1),
     # services
     (NODE_HANDLE, "advertiseService"): RosFunction(
         "server", type_from=("service-callback", "template"), callback_arg=1),
@@ -72,16 +101,85 @@ ROSCPP: dict[tuple[str, str], RosFunction] = {
     (NODE_HANDLE, "setParam"): _PARAM_WRITE,
     (NODE_HANDLE, "deleteParam"): RosFunction("write"),
     # parameters through ros::param
-    ("ros::param", "get"): RosFunction("read", type_from=("value",), type_arg=1, on_handle=False),
+    ("ros::param", "get"): RosFunction(
+        "read", type_from=("value",), type_arg=1, out_arg=1, on_handle=False),
     ("ros::param", "getCached"): RosFunction(
-        "read", type_from=("value",), type_arg=1, on_handle=False),
+        "read", type_from=("value",), type_arg=1, out_arg=1, on_handle=False),
     ("ros::param", "param"): RosFunction(
-        "read", type_from=("value", "template-value"), type_arg=1, on_handle=False),
+        "read", type_from=("value", "template-value"), type_arg=1, out_arg=1, default_arg=2,
+        on_handle=False),
     ("ros::param", "has"): RosFunction("read", on_handle=False),
     ("ros::param", "search"): RosFunction("read", on_handle=False),
     ("ros::param", "set"): RosFunction("write", type_from=("value",), type_arg=1, on_handle=False),
     ("ros::param", "del"): RosFunction("write", on_handle=False),
 }
+
+_IMAGE = "sensor_msgs/Image"
+_CAMERA_INFO: tuple[Sibling, ...] = (("publish", "camera_info", "sensor_msgs/CameraInfo"),)
+_CAMERA_INFO_IN: tuple[Sibling, ...] = (
+    ("subscribe", "camera_info", "sensor_msgs/CameraInfo"),)
+_TF = "tf2_msgs/TFMessage"
+
+# Libraries on top of roscpp / rclcpp: actionlib, image_transport, message_filters, tf2_ros
+LIBRARIES: dict[tuple[str, str], RosFunction] = {
+    ("actionlib::SimpleActionServer", "SimpleActionServer"): RosFunction(
+        "action-server", type_from=("class",), action_type=True, on_handle=False,
+        optional_handle=True),
+    ("actionlib::SimpleActionClient", "SimpleActionClient"): RosFunction(
+        "action-client", type_from=("class",), action_type=True, on_handle=False,
+        optional_handle=True),
+    ("actionlib::ActionServer", "ActionServer"): RosFunction(
+        "action-server", type_from=("class",), action_type=True, on_handle=False,
+        handle_arg=0, name_arg=1),
+    ("actionlib::ActionClient", "ActionClient"): RosFunction(
+        "action-client", type_from=("class",), action_type=True, on_handle=False,
+        optional_handle=True),
+    ("rclcpp_action", "create_server"): RosFunction(
+        "action-server", type_from=("template",), on_handle=False, handle_arg=0, name_arg=1),
+    ("rclcpp_action", "create_client"): RosFunction(
+        "action-client", type_from=("template",), on_handle=False, handle_arg=0, name_arg=1),
+    ("image_transport::ImageTransport", "advertise"): RosFunction(
+        "publish", fixed_type=_IMAGE, queue_arg=1, latch_arg=2),
+    ("image_transport::ImageTransport", "subscribe"): RosFunction(
+        "subscribe", fixed_type=_IMAGE, queue_arg=1, callback_arg=2),
+    ("image_transport::ImageTransport", "advertiseCamera"): RosFunction(
+        "publish", fixed_type=_IMAGE, queue_arg=1, latch_arg=4, siblings=_CAMERA_INFO),
+    ("image_transport::ImageTransport", "subscribeCamera"): RosFunction(
+        "subscribe", fixed_type=_IMAGE, queue_arg=1, callback_arg=2, siblings=_CAMERA_INFO_IN),
+    ("image_transport", "create_publisher"): RosFunction(
+        "publish", fixed_type=_IMAGE, on_handle=False, handle_arg=0, name_arg=1),
+    ("image_transport", "create_subscription"): RosFunction(
+        "subscribe", fixed_type=_IMAGE, on_handle=False, handle_arg=0, name_arg=1,
+        callback_arg=2),
+    ("image_transport", "create_camera_publisher"): RosFunction(
+        "publish", fixed_type=_IMAGE, on_handle=False, handle_arg=0, name_arg=1,
+        siblings=_CAMERA_INFO),
+    ("image_transport", "create_camera_subscription"): RosFunction(
+        "subscribe", fixed_type=_IMAGE, on_handle=False, handle_arg=0, name_arg=1,
+        callback_arg=2, siblings=_CAMERA_INFO_IN),
+    ("message_filters::Subscriber", "Subscriber"): RosFunction(
+        "subscribe", type_from=("class",), on_handle=False, handle_arg=0, name_arg=1,
+        queue_arg=2, qos_arg=2),
+    ("message_filters::Subscriber", "subscribe"): RosFunction(
+        "subscribe", type_from=("class",), on_handle=False, handle_arg=0, name_arg=1,
+        queue_arg=2, qos_arg=2),
+    ("tf2_ros::TransformBroadcaster", "TransformBroadcaster"): RosFunction(
+        "publish", fixed_name="/tf", fixed_type=_TF, on_handle=False),
+    ("tf2_ros::StaticTransformBroadcaster", "StaticTransformBroadcaster"): RosFunction(
+        "publish", fixed_name="/tf_static", fixed_type=_TF, on_handle=False, latched=True),
+    ("tf2_ros::TransformListener", "TransformListener"): RosFunction(
+        "subscribe", fixed_name="/tf", fixed_type=_TF, on_handle=False,
+        siblings=(("subscribe", "/tf_static", _TF),)),
+    ("tf::TransformBroadcaster", "TransformBroadcaster"): RosFunction(
+        "publish", fixed_name="/tf", fixed_type="tf/tfMessage", on_handle=False),
+    ("tf::TransformListener", "TransformListener"): RosFunction(
+        "subscribe", fixed_name="/tf", fixed_type="tf/tfMessage", on_handle=False,
+        siblings=(("subscribe", "/tf_static", "tf/tfMessage"),)),
+}
+
+# Calls that construct their template argument with the arguments they are given.
+FACTORIES = frozenset({("std", "make_shared"), ("std", "make_unique"),
+                       ("boost", "make_shared"), ("std", "allocate_shared")})
 
 # Functions that name the node: (scope, function) -> the index of the name argument, for
 # each number of written arguments (ros::init(argc, argv, name) and ros::init(remaps, name)).
@@ -91,10 +189,54 @@ NODE_NAME: dict[tuple[str, str], dict[int, int]] = {
 
 # Classes whose objects are node handles, and functions that return a handle in a fixed
 # namespace: (scope, function) -> namespace.
-HANDLE_CLASSES = frozenset({NODE_HANDLE})
+HANDLE_CLASSES = frozenset({NODE_HANDLE, "image_transport::ImageTransport"})
 HANDLE_FACTORIES: dict[tuple[str, str], str] = {
     ("nodelet::Nodelet", "getNodeHandle"): "",
     ("nodelet::Nodelet", "getMTNodeHandle"): "",
     ("nodelet::Nodelet", "getPrivateNodeHandle"): "~",
     ("nodelet::Nodelet", "getMTPrivateNodeHandle"): "~",
 }
+
+# rclcpp: the same rows for a Node and a LifecycleNode. QoS is the argument at qos_arg:
+# a depth, an rclcpp::QoS expression or an rmw_qos_profile_t (see ``qos``).
+_RCLCPP_NODE: dict[str, RosFunction] = {
+    "create_publisher": RosFunction("publish", type_from=("template",), qos_arg=1),
+    "create_subscription": RosFunction(
+        "subscribe", type_from=("template", "callback"), qos_arg=1, callback_arg=2),
+    "create_service": RosFunction(
+        "server", type_from=("template", "service-callback"), callback_arg=1),
+    "create_client": RosFunction("client", type_from=("template",)),
+    "create_generic_publisher": RosFunction("publish", type_arg=1, qos_arg=2),
+    "create_generic_subscription": RosFunction("subscribe", type_arg=1, qos_arg=2),
+    "declare_parameter": RosFunction(
+        "declare", type_from=("template-value", "value"), type_arg=1, default_arg=1,
+        on_handle=False),
+    "declare_parameters": RosFunction(
+        "declare", type_from=("template-value",), on_handle=False, per_element=True),
+    "get_parameter": RosFunction(
+        "read", type_from=("value",), type_arg=1, out_arg=1, on_handle=False),
+    "get_parameter_or": RosFunction(
+        "read", type_from=("value",), type_arg=1, out_arg=1, default_arg=2, on_handle=False),
+    "get_parameters": RosFunction("read", on_handle=False, per_element=True),
+    "has_parameter": RosFunction("read", on_handle=False),
+    "set_parameter": RosFunction("write", on_handle=False),
+    "set_parameters": RosFunction("write", on_handle=False, per_element=True),
+    "set_parameters_atomically": RosFunction("write", on_handle=False, per_element=True),
+    "undeclare_parameter": RosFunction("write", on_handle=False),
+}
+RCLCPP_NODES = ("rclcpp::Node", "rclcpp_lifecycle::LifecycleNode")
+RCLCPP: dict[tuple[str, str], RosFunction] = {
+    (cls, name): row for cls in RCLCPP_NODES for name, row in _RCLCPP_NODE.items()}
+RCLCPP_PARAMETER = "rclcpp::Parameter"  # set_parameter(rclcpp::Parameter("name", value))
+
+# rclcpp::Node("name", "ns", options) and its derived classes' ": Node("name")", and
+# std::make_shared<rclcpp::Node>("name"): the argument indexes of name and namespace.
+RCLCPP_NODE_NAME: dict[tuple[str, str], tuple[int, int]] = {
+    ("rclcpp::Node", "Node"): (0, 1),
+    ("rclcpp_lifecycle::LifecycleNode", "LifecycleNode"): (0, 1),
+    ("rclcpp::Node", "make_shared"): (0, 1),
+}
+# (class, method) -> the argument that names the sub-namespace
+RCLCPP_SUB_NODE: dict[tuple[str, str], int] = {("rclcpp::Node", "create_sub_node"): 0}
+
+ALL: dict[tuple[str, str], RosFunction] = {**ROSCPP, **LIBRARIES, **RCLCPP}

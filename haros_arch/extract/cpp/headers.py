@@ -38,14 +38,28 @@ from ...diagnostics import Diagnostic
 from ...files import read_text
 from ...model.location import Location
 from ...workspace import Workspace
-from . import interfaces, toolchain
+from . import interfaces, ros2_interfaces, toolchain
 
 STANDIN = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "standin")
 STD_STANDIN = os.path.join(STANDIN, "std")  # the C and C++ standard library stand-in
 PRELUDE = os.path.join(STANDIN, "haros_prelude.h")  # what is precompiled
 # CXTranslationUnit_ForSerialization | Incomplete (a header, not a whole program)
 _PCH_OPTIONS = 0x10 | 0x02
-SHADOWED = ("ros/", "boost/")  # prefixes only our stand-ins provide in the default mode
+# Prefixes only our stand-ins provide in the default mode; a header of one of these
+# libraries we have no stand-in for includes the library's umbrella stand-in.
+UMBRELLAS = {
+    "rclcpp/": "rclcpp/rclcpp.hpp", "rclcpp_action/": "rclcpp_action/rclcpp_action.hpp",
+    "rclcpp_lifecycle/": "rclcpp_lifecycle/lifecycle_node.hpp",
+    "rclcpp_components/": "rclcpp_components/register_node_macro.hpp",
+    "rmw/": "rmw/qos_profiles.h", "tf2/": "tf2_ros/buffer.h", "tf2_ros/": "tf2_ros/buffer.h",
+    "tf2_geometry_msgs/": "tf2_ros/buffer.h",
+    "image_transport/": "image_transport/image_transport.h",
+    "message_filters/": "message_filters/subscriber.h",
+    "actionlib/": "actionlib/server/simple_action_server.h", "nodelet/": "nodelet/nodelet.h",
+    "pluginlib/": "pluginlib/class_list_macros.hpp",
+}
+SHADOWED = ("ros/", "boost/", "tf/", *UMBRELLAS)
+_ROS2_HEADER = re.compile(r"([A-Za-z_]\w*)/(msg|srv|action)/([a-z0-9_]+)\.hpp")
 
 _INCLUDE = re.compile(r'^[ \t]*#[ \t]*include[ \t]*([<"])([^>"\n]+)[>"]', re.MULTILINE)
 _MESSAGE_HEADER = re.compile(r"([A-Za-z_]\w*)/([A-Z]\w*)\.h")
@@ -67,6 +81,7 @@ class IncludeSetup:
         self.diagnostics: list[Diagnostic] = []
         self._handled: set[str] = set()
         self._scanned: set[str] = set()
+        self.ros2 = False  # a source includes rclcpp or a ROS 2 message header
 
     def arguments(self) -> list[str]:
         flags = toolchain.base_arguments(self.system_headers)
@@ -103,13 +118,25 @@ class IncludeSetup:
 
     def _prepare(self, header: str, folder: str, quoted: bool, where: Location) -> str | None:
         """Make ``header`` resolvable; return the real file it resolves to, if any."""
+        if header.startswith(("rclcpp", "rclcpp_")) or _ROS2_HEADER.fullmatch(header):
+            self.ros2 = True
         if header in self._handled:
             return None
         if quoted and os.path.isfile(os.path.join(folder, header)):
             return os.path.join(folder, header)
+        ros2 = _ROS2_HEADER.fullmatch(header)
+        if ros2 is not None and (not self.system_headers or self._resolve(header) is None):
+            self._ros2_interface(header, ros2.group(1), ros2.group(2), ros2.group(3), where)
+            return None
         if not self.system_headers and header.startswith(SHADOWED):
             if not os.path.isfile(os.path.join(STANDIN, header)):
-                self._empty(header, where)
+                umbrella = next((u for p, u in UMBRELLAS.items() if header.startswith(p)), None)
+                if umbrella is None:
+                    self._empty(header, where)
+                else:
+                    self._handled.add(header)
+                    self._write(header, f"// haros_arch: stands in for {header}\n"
+                                        f"#include <{umbrella}>\n")
             return None
         message = _MESSAGE_HEADER.fullmatch(header)
         if message is not None and self._message(
@@ -117,6 +144,11 @@ class IncludeSetup:
         ):
             return None
         found = self._resolve(header)
+        if found is None and self.system_headers and os.path.isfile(os.path.join(STANDIN, header)):
+            # an API header the system lacks (Debian ships pluginlib's macros only as .hpp)
+            self._handled.add(header)
+            self._write(header, f'#include "{os.path.join(STANDIN, header)}"\n')
+            return None
         if found is None:
             self._empty(header, where)
         return found
@@ -125,6 +157,10 @@ class IncludeSetup:
         """Synthesise a message / service header when that is what ``header`` is."""
         definition = self._definition(package, name)
         real = self._resolve(header)
+        if definition is None and (real is None or not self.system_headers) and (
+            self._action(package, name, where)
+        ):
+            return True
         if definition is None and real is not None and (
             package not in interfaces.MESSAGE_PACKAGES or self.system_headers
         ):
@@ -158,6 +194,59 @@ class IncludeSetup:
         if text is None:
             return None
         return interfaces.parse_definition(package, name, text)
+
+    def _action(self, package: str, name: str, where: Location) -> bool:
+        """``pkg/DoAction.h``, ``pkg/DoGoal.h``, ...: the headers of ``action/Do.action``."""
+        folder = self.workspace.find(package)
+        for part in interfaces.ACTION_PARTS:
+            base = name.removesuffix(part)
+            if base == name or not base or folder is None:
+                continue
+            path = os.path.join(folder, "action", base + ".action")
+            if not os.path.isfile(path):
+                continue
+            text, found = read_text(path, self.workspace.location(path))
+            self.diagnostics.extend(found)
+            definition = interfaces.parse_definition(package, base, text or "")
+            source = interfaces.render_action(definition)
+            for each in interfaces.ACTION_PARTS:
+                self._handled.add(f"{package}/{base}{each}.h")
+                self._write(f"{package}/{base}{each}.h", source)
+            for dep in interfaces.dependencies(definition):
+                self._prepare(f"{dep}.h", "", False, where)
+            return True
+        return False
+
+    def _ros2_interface(self, header: str, package: str, kind: str, snake: str,
+                        where: Location) -> None:
+        """Synthesise ``pkg/msg/name.hpp`` (or srv, action) from its definition file."""
+        self._handled.add(header)
+        folder = self.workspace.find(package)
+        extension = {"msg": ".msg", "srv": ".srv", "action": ".action"}[kind]
+        names = []
+        if folder is not None and os.path.isdir(os.path.join(folder, kind)):
+            names = [f[: -len(extension)] for f in sorted(os.listdir(os.path.join(folder, kind)))
+                     if f.endswith(extension)]
+        names += [key.split("/")[1] for key in interfaces.WELL_KNOWN
+                  if key.startswith(package + "/")]
+        name = ros2_interfaces.camel_case(snake, names)
+        definition: interfaces.Interface | None = None
+        path = os.path.join(folder, kind, name + extension) if folder is not None else ""
+        if path and os.path.isfile(path):
+            text, found = read_text(path, self.workspace.location(path))
+            self.diagnostics.extend(found)
+            definition = interfaces.parse_definition(package, name, text or "")
+        elif f"{package}/{name}" in interfaces.WELL_KNOWN:
+            definition = interfaces.parse_definition(
+                package, name, interfaces.WELL_KNOWN[f"{package}/{name}"])
+        elif package not in interfaces.MESSAGE_PACKAGES:
+            self.diagnostics.append(diag.make("CPP_MESSAGE_UNKNOWN", where, header=header))
+        if definition is None:
+            definition = interfaces.Interface(package, name, [[]], known=False)
+        self._write(header, ros2_interfaces.render(definition, kind))
+        for dep in ros2_interfaces.dependencies(definition):
+            if dep not in self._handled:
+                self._prepare(dep, "", False, where)
 
     def _resolve(self, header: str) -> str | None:
         system = toolchain.system_include_dirs() if self.system_headers else (STD_STANDIN,)

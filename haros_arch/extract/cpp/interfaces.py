@@ -17,6 +17,8 @@ MESSAGE_PACKAGES = frozenset({
     "diagnostic_msgs", "shape_msgs", "stereo_msgs", "trajectory_msgs", "visualization_msgs",
     "rosgraph_msgs", "tf2_msgs", "map_msgs", "control_msgs", "move_base_msgs", "roscpp",
     "topic_tools", "gazebo_msgs", "pcl_msgs", "dynamic_reconfigure", "mavros_msgs",
+    "builtin_interfaces", "example_interfaces", "rcl_interfaces", "action_msgs",
+    "lifecycle_msgs", "unique_identifier_msgs", "tf", "turtlesim", "action_tutorials_interfaces",
 })
 
 # Definitions for messages that nodes use most, in .msg syntax ("---" splits services).
@@ -36,6 +38,12 @@ WELL_KNOWN: dict[str, str] = {
     **{f"std_msgs/{t.capitalize()}MultiArray": f"{t}[] data" for t in (
         "int8", "int16", "int32", "int64", "uint8", "uint16", "uint32", "uint64",
         "float32", "float64")},
+    "builtin_interfaces/Time": "int32 sec\nuint32 nanosec",
+    "builtin_interfaces/Duration": "int32 sec\nuint32 nanosec",
+    "tf2_msgs/TFMessage": "geometry_msgs/TransformStamped[] transforms",
+    "sensor_msgs/CameraInfo": "Header header\nuint32 height\nuint32 width\n"
+                              "string distortion_model\nfloat64[] D\nfloat64[9] K\n"
+                              "float64[9] R\nfloat64[12] P",
     "std_srvs/Empty": "---",
     "std_srvs/Trigger": "---\nbool success\nstring message",
     "std_srvs/SetBool": "bool data\n---\nbool success\nstring message",
@@ -125,7 +133,7 @@ def parse_definition(package: str, name: str, text: str) -> Interface:
         kind, array, size, fname, _, value = match.groups()
         sections[-1].append(Field(kind, fname, size if array else None,
                                   value.strip() if value is not None else None))
-    return Interface(package, name, sections[:2])
+    return Interface(package, name, sections[:3])
 
 
 def dependencies(interface: Interface) -> list[str]:
@@ -207,3 +215,41 @@ def _cpp_type(kind: str, package: str) -> str:
 
 def _number(text: str) -> str:
     return text if re.fullmatch(r"-?\d+(\.\d*)?([eE]-?\d+)?", text) else "0"
+
+
+ACTION_PARTS = ("Action", "ActionGoal", "ActionResult", "ActionFeedback", "Goal", "Result",
+                "Feedback")
+
+
+def render_action(interface: Interface) -> str:
+    """C++ source of the header that declares ROS 1 action ``interface`` (3 sections):
+    ``NameAction``, ``NameGoal`` ... as ``genaction`` makes them, for every part's header."""
+    pkg, name = interface.package, interface.name
+    sections = [*interface.sections, [], [], []][:3]
+    guard = f"HAROS_SYNTH_{pkg.upper()}_{name.upper()}_ACTION_H"
+    lines = [f"// synthesised by haros_arch for action {pkg}/{name}", f"#ifndef {guard}",
+             f"#define {guard}", "#include <stdint.h>", "#include <string>",
+             "#include <vector>", "#include <boost/shared_ptr.hpp>", "#include <ros/time.h>",
+             "#include <std_msgs/Header.h>"]
+    lines += [f"#include <{dep}.h>" for dep in dependencies(interface)]
+    lines.append(f"namespace {pkg} {{")
+    for part, fields in zip(("Goal", "Result", "Feedback"), sections, strict=True):
+        lines += _struct(f"{name}{part}", fields, pkg)
+    for part in ("Goal", "Result", "Feedback"):
+        wrapper = f"{name}Action{part}"
+        lines += _struct(wrapper, [Field("std_msgs/Header", "header", None)], pkg)[:-3]
+        lines += [f"  {name}{part} {part.lower()};",
+                  f"  typedef {name}{part} _{part.lower()}_type;",
+                  f"  typedef boost::shared_ptr<{wrapper}> Ptr;",
+                  f"  typedef boost::shared_ptr<{wrapper} const> ConstPtr;", "};"]
+        lines += _pointers(wrapper)
+    lines += _struct(f"{name}Action", [], pkg)[:-3]
+    for part in ("Goal", "Result", "Feedback"):
+        lines += [f"  {name}Action{part} action_{part.lower()};",
+                  f"  typedef {name}Action{part} _action_{part.lower()}_type;",
+                  f"  typedef {name}{part} {part};"]
+    lines += [f"  typedef boost::shared_ptr<{name}Action> Ptr;",
+              f"  typedef boost::shared_ptr<{name}Action const> ConstPtr;", "};"]
+    lines += _pointers(f"{name}Action")
+    lines += [f"}}  // namespace {pkg}", "#endif", ""]
+    return "\n".join(lines)

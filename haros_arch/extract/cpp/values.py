@@ -76,6 +76,9 @@ class Scope:
         self.source = source
         # variable key -> the expressions written to it; None for an unknown write
         self.writes: dict[tuple[str, int], list[Cursor | None]] = {}
+        # variable key -> (call, argument index) of the last call it was passed to by
+        # reference: a parameter read writes its value this way
+        self.passed: dict[tuple[str, int], tuple[Cursor, int]] = {}
         if body is not None:
             self._collect(body)
 
@@ -103,8 +106,11 @@ class Scope:
         if call.spelling == "operator=" and len(args) == 2:
             self._write_ref(args[0], args[1])
             return
-        for arg in args:  # an lvalue passed as it is: bound to a non-const reference
-            if arg.kind == CursorKind.DECL_REF_EXPR:
+        for index, arg in enumerate(args):  # an lvalue passed as it is: a reference
+            if arg.kind in (CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR) and (
+                arg.referenced is not None
+            ):
+                self.passed[_key(arg.referenced)] = (call, index)
                 self._write_ref(arg, None)
         children = list(call.get_children())
         if children and children[0].kind == CursorKind.MEMBER_REF_EXPR:
@@ -136,6 +142,10 @@ class Scope:
 
     # -- values -----------------------------------------------------------------------
 
+    def passed_to(self, decl: Cursor) -> tuple[Cursor, int] | None:
+        """The last call ``decl`` was passed to by reference, and at which index."""
+        return self.passed.get(_key(decl))
+
     def variable(self, decl: Cursor) -> Cursor | None:
         """The one expression variable ``decl`` holds, when there is exactly one."""
         if decl.kind not in (CursorKind.VAR_DECL, CursorKind.FIELD_DECL):
@@ -143,7 +153,7 @@ class Scope:
         writes = self.writes.get(_key(decl))
         if writes is not None:
             return writes[0] if len(writes) == 1 else None
-        if decl.type.is_const_qualified():
+        if decl.type.is_const_qualified() or _string_constant(decl):
             definition = decl.get_definition() or decl
             return initializer(definition)
         return None
@@ -172,7 +182,10 @@ class Scope:
         if target is None:  # an implicit conversion wrapping the real expression
             inner = operand(call)
             return self.string(inner, depth + 1) if inner is not None else UNKNOWN
-        if target.kind == CursorKind.CONSTRUCTOR and call.type.spelling.endswith("string"):
+        if target.kind == CursorKind.CONSTRUCTOR and (
+            call.type.get_canonical().get_declaration().spelling in ("basic_string",
+                                                                     "string_view")
+        ):
             if not args:
                 return ("",)
             return self.string(args[0], depth + 1) if len(args) == 1 else UNKNOWN
@@ -230,6 +243,17 @@ def initializer(decl: Cursor) -> Cursor | None:
     return exprs[-1] if exprs else None
 
 
+def _string_constant(decl: Cursor) -> bool:
+    """``static const char* kTopic = "x";`` outside functions: the usual way to write a
+    name constant, whose pointer is not const but is not written either."""
+    parent = decl.semantic_parent
+    if parent is None or parent.kind not in (CursorKind.NAMESPACE, CursorKind.TRANSLATION_UNIT):
+        return False
+    ctype = decl.type.get_canonical()
+    return ctype.kind == TypeKind.POINTER and ctype.get_pointee().is_const_qualified() and (
+        ctype.get_pointee().get_canonical().kind in (TypeKind.CHAR_S, TypeKind.CHAR_U))
+
+
 def _default_constructed(init: Cursor) -> bool:
     init = strip(init)
     return (init.kind == CursorKind.CALL_EXPR and init.referenced is not None
@@ -240,6 +264,8 @@ def _default_constructed(init: Cursor) -> bool:
 def _plain_value(decl: Cursor) -> bool:
     """True for variables of a builtin or string type, the values we resolve."""
     ctype = decl.type.get_canonical()
+    if ctype.kind in (TypeKind.LVALUEREFERENCE, TypeKind.RVALUEREFERENCE):
+        ctype = ctype.get_pointee().get_canonical()
     return ctype.kind != TypeKind.RECORD or ctype.get_declaration().spelling == "basic_string"
 
 

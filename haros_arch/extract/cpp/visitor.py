@@ -1,9 +1,10 @@
-"""Finding roscpp calls in a parsed translation unit.
+"""Finding ROS calls (roscpp, rclcpp and the libraries on them) in a parsed translation unit.
 
 Every function defined in the workspace's own files is walked with the stack of control
 statements around each expression (``conditions.ConditionReader``); a call whose target
-is a row of ``api.ROSCPP`` becomes a ``PrimitiveCall``. A call's location is the line
-and column of the called function's name (``advertise`` in ``n.advertise<M>(...)``).
+is a row of ``api.ALL`` becomes a ``PrimitiveCall``. A call's location is the line and
+column of the called function's name (``advertise`` in ``n.advertise<M>(...)``), or of
+the constructed object for a constructor.
 """
 
 from __future__ import annotations
@@ -19,7 +20,18 @@ from ...model.location import Location
 from ...model.source import PrimitiveCall
 from . import api, msg_types
 from .conditions import ConditionReader
-from .values import UNKNOWN, Parts, Scope, render, strip, written_arguments
+from .handles import (
+    Namespaces,
+    callback,
+    callback_name,
+    is_handle,
+    join_name,
+    parameters,
+    qualified_name,
+    record_class,
+)
+from .qos import qos as qos_of
+from .values import Scope, render, strip, written_arguments
 
 _CONTAINERS = frozenset({
     CursorKind.NAMESPACE, CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL,
@@ -30,47 +42,30 @@ _FUNCTIONS = frozenset({
     CursorKind.FUNCTION_DECL, CursorKind.CXX_METHOD, CursorKind.CONSTRUCTOR,
     CursorKind.DESTRUCTOR, CursorKind.FUNCTION_TEMPLATE, CursorKind.CONVERSION_FUNCTION,
 })
-_SCOPES = _CONTAINERS | {CursorKind.CLASS_TEMPLATE}
-_API_NAMES = frozenset(name for _, name in [*api.ROSCPP, *api.NODE_NAME])
+_API_NAMES = frozenset(
+    [name for _, name in [*api.ALL, *api.NODE_NAME, *api.RCLCPP_NODE_NAME, *api.FACTORIES]])
 MAX_DEPTH = 16
-
-
-def qualified_name(cursor: Cursor | None) -> str:
-    """``ros::NodeHandle`` for the NodeHandle class declaration, and so on."""
-    parts: list[str] = []
-    while cursor is not None and cursor.kind in _SCOPES:
-        if cursor.spelling:
-            parts.append(cursor.spelling)
-        cursor = cursor.semantic_parent
-    return "::".join(reversed(parts))
-
-
-def join_name(namespace: str, name: str) -> str:
-    """A name as seen from a handle in ``namespace`` (``~`` private, ``""`` the node's)."""
-    if not namespace or name.startswith(("/", "~")):
-        return name
-    if namespace == "~" or namespace.endswith("/"):
-        return namespace + name
-    return f"{namespace}/{name}"
-
-
-def _normalise(namespace: str) -> str:
-    if namespace.startswith("~/"):
-        namespace = "~" + namespace[2:]
-    return namespace.rstrip("/") if len(namespace) > 1 else namespace
+_PARAM_KINDS = ("read", "declare")
+_VALUE_METHODS = frozenset({"c_str", "str", "as_string", "as_int", "as_double", "as_bool",
+                            "get_value", "value_to_string"})
 
 
 class CallFinder:
     """Collects the primitive calls and the node name of one translation unit."""
 
     def __init__(self, tu: TranslationUnit, source: dict[str, bytes],
-                 owned: Callable[[str], bool], where: Callable[[Cursor], Location]) -> None:
+                 owned: Callable[[str], bool], where: Callable[[Cursor], Location],
+                 ros2: bool = False) -> None:
         self.tu = tu
         self.source = source
         self.owned = owned
         self.where = where
         self.reader = ConditionReader(source, where)
         self.macros: dict[str, str] = {}
+        self.ros2 = ros2
+        self.namespaces = Namespaces(self.macros, source)
+        self._fixed: set[tuple[str, str]] = set()  # fixed-name calls already found
+        self._declared: dict[str, str] = {}  # ROS 2 parameter -> its declared default
         self.calls: list[PrimitiveCall] = []
         self.rosname: str | None = None
         self.diagnostics: list[Diagnostic] = []
@@ -79,6 +74,9 @@ class CallFinder:
         functions = list(self._definitions(self.tu.cursor, top=True))
         for function in functions:
             self._function(function)
+        for call in self.calls:  # get_parameter("p") of a declare_parameter("p", default)
+            if call.name_param is not None and call.name_default is None:
+                call.name_default = self._declared.get(call.name_param)
 
     def _definitions(self, parent: Cursor, top: bool = False) -> Iterator[Cursor]:
         for cursor in parent.get_children():
@@ -92,6 +90,8 @@ class CallFinder:
                     self.macros[tokens[0]] = tokens[1]
             elif kind in _FUNCTIONS and cursor.is_definition():
                 yield cursor
+            elif kind == CursorKind.FIELD_DECL:
+                self._field(cursor)
             elif kind in _CONTAINERS:
                 yield from self._definitions(cursor)
 
@@ -109,6 +109,27 @@ class CallFinder:
 
     # -- one call ---------------------------------------------------------------------
 
+    def _row(self, call: Cursor) -> tuple[api.RosFunction | None, Cursor | None]:
+        """The API row a call matches and the class whose template argument types it."""
+        target = call.referenced
+        if target is None:
+            return None, None
+        key = (qualified_name(target.semantic_parent), target.spelling)
+        if key in api.FACTORIES:
+            ref = self._template_argument(call)
+            decl = ref.type.get_canonical().get_declaration() if ref is not None else None
+            if decl is None or decl.kind == CursorKind.NO_DECL_FOUND:
+                return None, None
+            return api.ALL.get((qualified_name(decl), decl.spelling)), decl
+        if target.kind == CursorKind.CONSTRUCTOR:
+            return api.ALL.get(key), call.type.get_canonical().get_declaration()
+        spec = api.ALL.get(key)
+        if spec is not None and "class" in spec.type_from:
+            callee = self._callee(call)
+            objects = [c for c in callee.get_children() if c.kind.is_expression()]
+            return spec, record_class(objects[0]) if objects else None
+        return spec, None
+
     def _call(self, call: Cursor, conditions: tuple[Condition, ...], scope: Scope) -> None:
         target = call.referenced
         if target is None:
@@ -120,37 +141,209 @@ class CallFinder:
             if index is not None:
                 self.rosname = render(scope.string(args[index]))
             return
-        spec = api.ROSCPP.get(key)
-        if spec is None or len(args) <= spec.name_arg:
+        if key in api.FACTORIES:
+            ref = self._template_argument(call)
+            decl = ref.type.get_canonical().get_declaration() if ref is not None else None
+            if decl is not None:
+                key = (qualified_name(decl), decl.spelling)
+        if key in api.RCLCPP_NODE_NAME:
+            self._node_name(api.RCLCPP_NODE_NAME[key], args, scope)
             return
-        location = self.where(self._callee(call))
+        spec, cls = self._row(call)
+        if spec is not None:
+            self._emit(spec, call, args, cls, conditions, scope)
+
+    def _node_name(self, where: tuple[int, int], args: list[Cursor], scope: Scope) -> None:
+        name_arg, ns_arg = where
+        if self.rosname is not None or name_arg >= len(args):
+            return
+        name = render(scope.string(args[name_arg]))
+        if ns_arg < len(args) and strip(args[ns_arg]).type.spelling != "rclcpp::NodeOptions":
+            namespace = render(scope.string(args[ns_arg])).strip("/")
+            if namespace:
+                name = f"/{namespace}/{name}"
+        self.rosname = name
+
+    def _emit(self, spec: api.RosFunction, call: Cursor, args: list[Cursor],
+              cls: Cursor | None, conditions: tuple[Condition, ...], scope: Scope) -> None:
+        shift, handle_arg = 0, spec.handle_arg
+        if spec.optional_handle and args and is_handle(args[0]):
+            shift, handle_arg = 1, 0
+
+        def arg(index: int | None) -> Cursor | None:
+            if index is None or index + shift >= len(args):
+                return None
+            return args[index + shift]
+
+        callee = self._callee(call)
+        target = call.referenced
+        location = self.where(call if target is not None and (
+            target.kind == CursorKind.CONSTRUCTOR) else callee)
+        names: list[tuple[str, tuple[str, str | None] | None]]
+        if spec.fixed_name is not None:
+            if (spec.kind, spec.fixed_name) in self._fixed:
+                return
+            self._fixed.add((spec.kind, spec.fixed_name))
+            names = [(spec.fixed_name, None)]
+        else:
+            name_expr = arg(spec.name_arg)
+            if name_expr is None:
+                return
+            names = self._names(spec, call, name_expr, args, scope)
+        namespace: str | None = None
+        if spec.fixed_name is None:
+            if spec.on_handle:
+                namespace = render(self.namespaces.of_call(call, callee, scope))
+            elif handle_arg is not None and handle_arg < len(args):
+                namespace = render(self.namespaces.of(args[handle_arg], scope))
+        function = callback(args, None if spec.callback_arg is None
+                            else spec.callback_arg + shift)
+        ctype = self._type(spec, call, args, function, cls)
+        qos = None
+        queue = scope.integer(arg(spec.queue_arg)) if arg(spec.queue_arg) is not None else None
+        if self.ros2 and arg(spec.qos_arg) is not None:
+            qos = qos_of(arg(spec.qos_arg), scope)
+            queue = qos.get("depth") if qos else None
+        latch_expr = arg(spec.latch_arg)
+        latch = spec.latched or (latch_expr is not None and scope.boolean(latch_expr) is True)
+        if spec.kind == "declare" and len(names) == 1:
+            declared = self._parameter(spec, call, scope)
+            if declared is not None and declared[1] is not None:
+                self._declared[declared[0]] = declared[1]
+        for written, source in names:
+            name = _private(written)
+            if namespace is not None:
+                name = join_name(namespace, name)
+            self.calls.append(PrimitiveCall(
+                kind=spec.kind, name=name, type=ctype, queue_size=queue, qos=qos,
+                latch=latch, callback=callback_name(function), conditions=conditions,
+                location=location,
+                name_param=source[0] if source else None,
+                name_default=source[1] if source else None))
+            if "?" in name:
+                self.diagnostics.append(diag.make(
+                    "CPP_DYNAMIC_NAME", location, kind=spec.kind, name=name))
+            for kind, sibling, stype in spec.siblings:
+                full = sibling if sibling.startswith("/") else join_name(
+                    name.rpartition("/")[0] if "/" in name else "", sibling)
+                self.calls.append(PrimitiveCall(
+                    kind=kind, name=full, type=self._ros_type(stype), queue_size=queue,
+                    latch=latch, conditions=conditions, location=location))
+
+    def _names(self, spec: api.RosFunction, call: Cursor, expr: Cursor, args: list[Cursor],
+               scope: Scope) -> list[tuple[str, tuple[str, str | None] | None]]:
+        """The names a call gives (several for set_parameters({...})), each with the
+        parameter its value comes from, if any."""
+        if spec.per_element:
+            if call.spelling in ("declare_parameters", "get_parameters") and len(args) >= 2:
+                prefix = render(scope.string(expr))
+                return [((prefix + "." if prefix else "") + "?", None)]
+            return [self._name(e, scope) for e in _elements(expr)]
+        return [self._name(expr, scope)]
+
+    def _name(self, expr: Cursor, scope: Scope) -> tuple[str, tuple[str, str | None] | None]:
+        inner = strip(expr)
+        target = inner.referenced if inner.kind == CursorKind.CALL_EXPR else None
+        if target is not None and target.kind == CursorKind.CONSTRUCTOR and (
+            qualified_name(target.semantic_parent) == api.RCLCPP_PARAMETER
+        ):
+            values = written_arguments(inner)
+            return (render(scope.string(values[0])) if values else "?", None)
+        parts = scope.string(expr)
+        if None in parts:
+            source = self._parameter_source(expr, scope, 0)
+            if source is not None:
+                return ("?", source)
+        return (render(parts), None)
+
+    def _parameter_source(self, expr: Cursor, scope: Scope,
+                          depth: int) -> tuple[str, str | None] | None:
+        """The parameter (name, default) whose value ``expr`` holds, if it is one."""
+        expr = strip(expr)
+        if depth > MAX_DEPTH:
+            return None
+        if expr.kind in (CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR):
+            decl = expr.referenced
+            if decl is None:
+                return None
+            passed = scope.passed_to(decl)
+            if passed is not None:
+                call, index = passed
+                spec, _ = self._row(call)
+                if spec is not None and spec.out_arg == index and spec.kind in _PARAM_KINDS:
+                    return self._parameter(spec, call, scope)
+            value = scope.variable(decl)
+            return None if value is None else self._parameter_source(value, scope, depth + 1)
+        if expr.kind != CursorKind.CALL_EXPR:
+            return None
+        spec, _ = self._row(expr)
+        if spec is not None and spec.kind in _PARAM_KINDS:
+            return self._parameter(spec, expr, scope)
+        children = list(expr.get_children())
+        if expr.spelling in _VALUE_METHODS and children and (
+            children[0].kind == CursorKind.MEMBER_REF_EXPR
+        ):
+            objects = [c for c in children[0].get_children() if c.kind.is_expression()]
+            return self._parameter_source(objects[0], scope, depth + 1) if objects else None
+        inner = [c for c in children if c.kind.is_expression()]
+        if expr.referenced is None or (
+            expr.referenced.kind == CursorKind.CONSTRUCTOR and len(inner) == 1
+        ):
+            return self._parameter_source(inner[-1], scope, depth + 1) if inner else None
+        return None
+
+    def _parameter(self, spec: api.RosFunction, call: Cursor,
+                   scope: Scope) -> tuple[str, str | None] | None:
+        args = written_arguments(call)
+        if spec.name_arg >= len(args):
+            return None
         name = render(scope.string(args[spec.name_arg]))
         if spec.on_handle:
-            name = join_name(render(self._handle(call, scope)), name)
-        callback = _callback(args, spec.callback_arg)
-        self.calls.append(PrimitiveCall(
-            kind=spec.kind,
-            name=name,
-            type=self._type(spec, call, args, callback),
-            queue_size=(scope.integer(args[spec.queue_arg])
-                        if spec.queue_arg is not None and spec.queue_arg < len(args) else None),
-            latch=(spec.latch_arg is not None and spec.latch_arg < len(args)
-                   and scope.boolean(args[spec.latch_arg]) is True),
-            callback=_callback_name(callback),
-            conditions=conditions,
-            location=location,
-        ))
-        if "?" in name:
-            self.diagnostics.append(diag.make(
-                "CPP_DYNAMIC_NAME", location, kind=spec.kind, name=name))
+            name = join_name(render(self.namespaces.of_call(call, self._callee(call), scope)),
+                             name)
+        default: str | None = None
+        index = spec.default_arg
+        if index is not None and index >= len(args) and spec.out_arg == len(args) - 1:
+            index = spec.out_arg  # nh.param<T>(name, default) returns the value
+        if index is not None and index < len(args):
+            parts = scope.string(args[index])
+            if None not in parts:
+                default = render(parts)
+        return (name, default)
+
+    def _field(self, field: Cursor) -> None:
+        """A member whose mere construction is a primitive (a tf broadcaster)."""
+        decl = field.type.get_canonical().get_declaration()
+        if decl is None or decl.kind == CursorKind.NO_DECL_FOUND:
+            return
+        spec = api.ALL.get((qualified_name(decl), decl.spelling))
+        if spec is None or spec.fixed_name is None:
+            return
+        self._emit(spec, field, [], decl, (), Scope(None, self.macros, self.source))
 
     @staticmethod
     def _callee(call: Cursor) -> Cursor:
         children = list(call.get_children())
         return strip(children[0]) if children else call
 
+    def _ros_type(self, name: str) -> str:
+        """A ROS 1 type name, written the ROS 2 way (``pkg/msg/Name``) in a ROS 2 node."""
+        if not self.ros2 or name.count("/") != 1:
+            return name
+        package, base = name.split("/")
+        return f"{package}/msg/{base}"
+
     def _type(self, spec: api.RosFunction, call: Cursor, args: list[Cursor],
-              callback: Cursor | None) -> str | None:
+              function: Cursor | None, cls: Cursor | None) -> str | None:
+        found = self._declared_type(spec, call, args, function, cls)
+        if found is not None and spec.action_type and found.endswith("Action"):
+            found = found.removesuffix("Action")
+        if found is None and spec.fixed_type is not None:
+            found = self._ros_type(spec.fixed_type)
+        return found
+
+    def _declared_type(self, spec: api.RosFunction, call: Cursor, args: list[Cursor],
+                       function: Cursor | None, cls: Cursor | None) -> str | None:
         for source in spec.type_from:
             found: str | None = None
             if source in ("template", "template-value"):
@@ -158,8 +351,14 @@ class CallFinder:
                 if ref is not None:
                     found = (msg_types.message_type(ref.type) if source == "template"
                              else msg_types.param_type(ref.type))
-            elif source in ("callback", "service-callback") and callback is not None:
-                params = _parameters(callback)
+            elif source == "class" and cls is not None:
+                ctype = cls.type
+                if ctype.get_num_template_arguments() > 0:
+                    found = msg_types.message_type(ctype.get_template_argument_type(0))
+            elif source in ("callback", "service-callback") and function is not None:
+                params = parameters(function)
+                if source == "service-callback" and len(params) == 3:
+                    params = params[1:]  # ROS 2: (request header, request, response)
                 if params:
                     found = msg_types.message_type(params[0], source == "service-callback")
             elif source in ("arg", "value") and spec.type_arg is not None and (
@@ -180,132 +379,21 @@ class CallFinder:
                 return child
         return None
 
-    # -- node handles -----------------------------------------------------------------
 
-    def _handle(self, call: Cursor, scope: Scope) -> Parts:
-        """The namespace of the NodeHandle a member call is made on."""
-        callee = self._callee(call)
-        if callee.kind != CursorKind.MEMBER_REF_EXPR:
-            return UNKNOWN
-        objects = [c for c in callee.get_children() if c.kind.is_expression()]
-        if not objects:  # implicit this->: a member function of NodeHandle itself
-            return UNKNOWN
-        return self._namespace(objects[0], scope, 0)
-
-    def _namespace(self, expr: Cursor, scope: Scope, depth: int) -> Parts:
-        expr = strip(expr)
-        if depth > MAX_DEPTH:
-            return UNKNOWN
-        if expr.kind == CursorKind.DECL_REF_EXPR:
-            decl = expr.referenced
-            if decl is None or decl.kind != CursorKind.VAR_DECL:
-                return UNKNOWN
-            value = scope.variable(decl)
-            return UNKNOWN if value is None else self._namespace(value, scope, depth + 1)
-        if expr.kind == CursorKind.MEMBER_REF_EXPR and expr.referenced is not None:
-            value = _member_initialiser(expr.referenced)
-            if value is None:
-                return ("",)  # a member no constructor initialises: the default handle
-            return self._namespace(value, Scope(None, self.macros, self.source), depth + 1)
-        if expr.kind == CursorKind.UNARY_OPERATOR:  # *pointer
-            inner = [c for c in expr.get_children() if c.kind.is_expression()]
-            return self._namespace(inner[0], scope, depth + 1) if inner else UNKNOWN
-        if expr.kind != CursorKind.CALL_EXPR:
-            return UNKNOWN
-        target = expr.referenced
-        if target is None:
-            inner = [c for c in expr.get_children() if c.kind.is_expression()]
-            return self._namespace(inner[-1], scope, depth + 1) if inner else UNKNOWN
-        factory = (qualified_name(target.semantic_parent), target.spelling)
-        if factory in api.HANDLE_FACTORIES:
-            return (api.HANDLE_FACTORIES[factory],)
-        if target.kind != CursorKind.CONSTRUCTOR or (
-            qualified_name(target.semantic_parent) not in api.HANDLE_CLASSES
-        ):
-            return UNKNOWN
-        args = written_arguments(expr)
-        if not args:
-            return ("",)
-        if _is_handle(args[0]):
-            parent = render(self._namespace(args[0], scope, depth + 1))
-            if len(args) == 1:
-                return (parent,)
-            child = render(scope.string(args[1]))
-            return (_normalise(join_name(parent, child)) if parent else _normalise(child),)
-        return (_normalise(render(scope.string(args[0]))),)
+def _private(name: str) -> str:
+    """ROS 2's ``~/name`` written the ROS 1 way, ``~name``."""
+    return "~" + name[2:] if name.startswith("~/") else name
 
 
-def _is_handle(expr: Cursor) -> bool:
-    decl = expr.type.get_canonical().get_declaration()
-    return qualified_name(decl) in api.HANDLE_CLASSES
-
-
-def _member_initialiser(field: Cursor) -> Cursor | None:
-    """What the constructors of ``field``'s class initialise or assign it with."""
-    owner = field.semantic_parent
-    if owner is None:
-        return None
-    for member in owner.get_children():
-        if member.kind != CursorKind.CONSTRUCTOR:
-            continue
-        definition = member.get_definition()
-        if definition is None:
-            continue
-        children = list(definition.get_children())
-        for i, child in enumerate(children[:-1]):
-            if child.kind == CursorKind.MEMBER_REF and child.referenced == field:
-                return children[i + 1]
-        for node in definition.walk_preorder():
-            if node.kind == CursorKind.CALL_EXPR and node.spelling == "operator=":
-                args = list(node.get_arguments())
-                if len(args) == 2 and strip(args[0]).kind == CursorKind.MEMBER_REF_EXPR and (
-                    strip(args[0]).referenced == field
-                ):
-                    return args[1]
-    return None
-
-
-def _callback(args: list[Cursor], index: int | None) -> Cursor | None:
-    """The function, method or lambda a callback argument names, where cheap."""
-    if index is None or index >= len(args):
-        return None
-    return _callable(args[index], 0)
-
-
-def _callable(expr: Cursor, depth: int) -> Cursor | None:
-    expr = strip(expr)
-    if depth > 6:
-        return None
-    if expr.kind == CursorKind.DECL_REF_EXPR and expr.referenced is not None and (
-        expr.referenced.kind in _FUNCTIONS
-    ):
-        return expr.referenced
-    if expr.kind == CursorKind.LAMBDA_EXPR:
-        return expr
-    if expr.kind == CursorKind.UNARY_OPERATOR:  # &Class::method
-        inner = [c for c in expr.get_children() if c.kind.is_expression()]
-        return _callable(inner[0], depth + 1) if inner else None
-    if expr.kind == CursorKind.CALL_EXPR:
-        # boost::function<...>(f), boost::bind(&Class::method, this, _1)
-        for arg in written_arguments(expr):
-            found = _callable(arg, depth + 1)
-            if found is not None:
+def _elements(expr: Cursor, depth: int = 0) -> list[Cursor]:
+    """The elements of a braced list argument (``{a, b}``), else the argument itself."""
+    inner = strip(expr)
+    if inner.kind == CursorKind.INIT_LIST_EXPR:
+        return [c for c in inner.get_children() if c.kind.is_expression()]
+    if inner.kind == CursorKind.CALL_EXPR and depth < 3:
+        children = [c for c in inner.get_children() if c.kind.is_expression()]
+        if len(children) == 1:
+            found = _elements(children[0], depth + 1)
+            if len(found) != 1 or found[0] != children[0]:
                 return found
-        inner = [c for c in expr.get_children() if c.kind.is_expression()]
-        if expr.referenced is None and len(inner) == 1:
-            return _callable(inner[0], depth + 1)
-    return None
-
-
-def _callback_name(callback: Cursor | None) -> str | None:
-    if callback is None or callback.kind == CursorKind.LAMBDA_EXPR:
-        return None
-    if callback.kind == CursorKind.CXX_METHOD:
-        return f"{qualified_name(callback.semantic_parent).split('::')[-1]}::{callback.spelling}"
-    return callback.spelling
-
-
-def _parameters(callback: Cursor) -> list:
-    if callback.kind == CursorKind.LAMBDA_EXPR:
-        return [c.type for c in callback.get_children() if c.kind == CursorKind.PARM_DECL]
-    return list(callback.type.argument_types())
+    return [expr]

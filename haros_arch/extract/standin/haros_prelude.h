@@ -4,5 +4,14 @@
 #include "std/haros_std.h"
 #include <boost/shared_ptr.hpp>
 #include <boost/function.hpp>
-#include <boost/bind.hpp>
 #include <ros/ros.h>
+#include <rclcpp/rclcpp.hpp>
+#include <rclcpp_lifecycle/lifecycle_node.hpp>
+#include <rclcpp_action/rclcpp_action.hpp>
+#include <rclcpp_components/register_node_macro.hpp>
+#include <tf2_ros/buffer.h>
+#include <image_transport/image_transport.h>
+#include <message_filters/subscriber.h>
+#include <actionlib/server/simple_action_server.h>
+#include <nodelet/nodelet.h>
+#include <pluginlib/class_list_macros.hpp>

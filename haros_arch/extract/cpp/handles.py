@@ -1,0 +1,266 @@
+"""Namespaces of node handles and nodes, and the callbacks calls are given.
+
+A ROS 1 ``NodeHandle`` is followed back to its construction (``NodeHandle("~")``,
+``NodeHandle("ns")``, ``NodeHandle(parent, "ns")``, a nodelet's ``getPrivateNodeHandle()``,
+a member set in a constructor); an ``image_transport::ImageTransport`` has its handle's
+namespace. A ROS 2 node (``rclcpp::Node``, ``this``, a ``SharedPtr``) is the node's own
+namespace, ``""``, unless it comes from ``create_sub_node("ns")``.
+"""
+
+from __future__ import annotations
+
+from clang.cindex import Cursor, CursorKind, TypeKind
+
+from . import api
+from .values import UNKNOWN, Parts, Scope, render, strip, written_arguments
+
+MAX_DEPTH = 16
+_SCOPES = frozenset({
+    CursorKind.NAMESPACE, CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL,
+    CursorKind.CLASS_TEMPLATE, CursorKind.CLASS_TEMPLATE_PARTIAL_SPECIALIZATION,
+})
+_FUNCTIONS = frozenset({
+    CursorKind.FUNCTION_DECL, CursorKind.CXX_METHOD, CursorKind.CONSTRUCTOR,
+    CursorKind.DESTRUCTOR, CursorKind.FUNCTION_TEMPLATE, CursorKind.CONVERSION_FUNCTION,
+})
+_POINTERS = ("shared_ptr", "unique_ptr", "weak_ptr")
+
+
+def qualified_name(cursor: Cursor | None) -> str:
+    """``ros::NodeHandle`` for the NodeHandle class declaration, and so on."""
+    parts: list[str] = []
+    while cursor is not None and cursor.kind in _SCOPES:
+        if cursor.spelling:
+            parts.append(cursor.spelling)
+        cursor = cursor.semantic_parent
+    return "::".join(reversed(parts))
+
+
+def join_name(namespace: str, name: str) -> str:
+    """A name as seen from a handle in ``namespace`` (``~`` private, ``""`` the node's)."""
+    if not namespace or name.startswith(("/", "~")):
+        return name
+    if namespace == "~" or namespace.endswith("/"):
+        return namespace + name
+    return f"{namespace}/{name}"
+
+
+def normalise(namespace: str) -> str:
+    if namespace.startswith("~/"):
+        namespace = "~" + namespace[2:]
+    return namespace.rstrip("/") if len(namespace) > 1 else namespace
+
+
+def record_class(cursor: Cursor) -> Cursor | None:
+    """The class an expression's value is, through references, pointers, smart pointers."""
+    ctype = cursor.type.get_canonical()
+    for _ in range(4):
+        while ctype.kind in (TypeKind.LVALUEREFERENCE, TypeKind.RVALUEREFERENCE,
+                             TypeKind.POINTER):
+            ctype = ctype.get_pointee().get_canonical()
+        if ctype.kind != TypeKind.RECORD:
+            return None
+        decl = ctype.get_declaration()
+        if decl.spelling in _POINTERS and ctype.get_num_template_arguments() > 0:
+            ctype = ctype.get_template_argument_type(0).get_canonical()
+            continue
+        return decl
+    return None
+
+
+def is_ros2_node(decl: Cursor | None, depth: int = 0) -> bool:
+    """True for rclcpp::Node, LifecycleNode and the classes derived from them."""
+    if decl is None or depth > 8:
+        return False
+    if qualified_name(decl) in api.RCLCPP_NODES:
+        return True
+    definition = decl.get_definition() or decl
+    for child in definition.get_children():
+        if child.kind == CursorKind.CXX_BASE_SPECIFIER:
+            base = child.type.get_canonical().get_declaration()
+            if is_ros2_node(base, depth + 1):
+                return True
+    return False
+
+
+def is_handle(expr: Cursor) -> bool:
+    """True for an expression that is a node handle or a ROS 2 node."""
+    decl = record_class(expr)
+    return decl is not None and (qualified_name(decl) in api.HANDLE_CLASSES
+                                 or is_ros2_node(decl))
+
+
+class Namespaces:
+    """Evaluates the namespace of handle expressions within one translation unit."""
+
+    def __init__(self, macros: dict[str, str], source: dict[str, bytes]) -> None:
+        self.macros = macros
+        self.source = source
+
+    def of_call(self, call: Cursor, callee: Cursor, scope: Scope) -> Parts:
+        """The namespace of the handle or node a member call is made on."""
+        if callee.kind != CursorKind.MEMBER_REF_EXPR:
+            target = call.referenced
+            if target is not None and is_ros2_node(target.semantic_parent):
+                return ("",)  # create_publisher(...) inside a Node subclass
+            return UNKNOWN
+        objects = [c for c in callee.get_children() if c.kind.is_expression()]
+        if not objects:  # implicit this->
+            target = call.referenced
+            parent = target.semantic_parent if target is not None else None
+            return ("",) if is_ros2_node(parent) else UNKNOWN
+        return self.of(objects[0], scope)
+
+    def of(self, expr: Cursor, scope: Scope, depth: int = 0) -> Parts:
+        """The namespace of the handle ``expr`` stands for."""
+        found = self._namespace(expr, scope, depth)
+        if found == UNKNOWN and is_ros2_node(record_class(expr)):
+            return ("",)  # a node's own namespace, unless it is a sub node
+        return found
+
+    def _namespace(self, expr: Cursor, scope: Scope, depth: int) -> Parts:
+        expr = strip(expr)
+        if depth > MAX_DEPTH:
+            return UNKNOWN
+        kind = expr.kind
+        if kind == CursorKind.CXX_THIS_EXPR:
+            return ("",) if is_ros2_node(record_class(expr)) else UNKNOWN
+        if kind == CursorKind.DECL_REF_EXPR:
+            decl = expr.referenced
+            if decl is None or decl.kind != CursorKind.VAR_DECL:
+                return UNKNOWN
+            value = scope.variable(decl)
+            return UNKNOWN if value is None else self.of(value, scope, depth + 1)
+        if kind == CursorKind.MEMBER_REF_EXPR and expr.referenced is not None:
+            value = member_initialiser(expr.referenced)
+            if value is None:
+                # a member no constructor initialises: the default handle
+                return ("",) if is_handle(expr) else UNKNOWN
+            return self.of(value, Scope(None, self.macros, self.source), depth + 1)
+        if kind == CursorKind.CXX_NEW_EXPR:
+            inner = [c for c in expr.get_children() if c.kind.is_expression()]
+            return self.of(inner[-1], scope, depth + 1) if inner else UNKNOWN
+        if kind == CursorKind.UNARY_OPERATOR:  # *pointer
+            inner = [c for c in expr.get_children() if c.kind.is_expression()]
+            return self.of(inner[0], scope, depth + 1) if inner else UNKNOWN
+        if kind != CursorKind.CALL_EXPR:
+            return UNKNOWN
+        target = expr.referenced
+        inner = [c for c in expr.get_children() if c.kind.is_expression()]
+        if target is None:
+            return self.of(inner[-1], scope, depth + 1) if inner else UNKNOWN
+        owner = qualified_name(target.semantic_parent)
+        factory = (owner, target.spelling)
+        if factory in api.HANDLE_FACTORIES:
+            return (api.HANDLE_FACTORIES[factory],)
+        if factory in api.RCLCPP_SUB_NODE or target.spelling in ("operator->", "get"):
+            return self._sub_node(expr, factory, scope, depth)
+        if target.kind != CursorKind.CONSTRUCTOR or owner not in api.HANDLE_CLASSES:
+            if target.kind == CursorKind.CONSTRUCTOR and len(inner) == 1:  # a copy
+                return self.of(inner[0], scope, depth + 1)
+            return UNKNOWN
+        args = written_arguments(expr)
+        if not args:
+            return ("",)
+        if is_handle(args[0]):
+            parent = render(self.of(args[0], scope, depth + 1))
+            if len(args) == 1 or owner != api.NODE_HANDLE:
+                return (parent,)
+            child = render(scope.string(args[1]))
+            return (normalise(join_name(parent, child)) if parent else normalise(child),)
+        return (normalise(render(scope.string(args[0]))),)
+
+    def _sub_node(self, call: Cursor, factory: tuple[str, str], scope: Scope,
+                  depth: int) -> Parts:
+        """``node->create_sub_node("ns")``, ``pointer->``, ``pointer.get()``."""
+        target = call.referenced
+        children = [c for c in call.get_children() if c.kind.is_expression()]
+        if children and children[0].kind == CursorKind.MEMBER_REF_EXPR:
+            objects = [c for c in children[0].get_children() if c.kind.is_expression()]
+        else:  # operator-> as a call: the object and the operator
+            objects = [c for c in children if strip(c).referenced != target]
+        parent = self.of(objects[0], scope, depth + 1) if objects else ("",)
+        if factory not in api.RCLCPP_SUB_NODE:
+            return parent
+        args = written_arguments(call)
+        index = api.RCLCPP_SUB_NODE[factory]
+        if index >= len(args):
+            return parent
+        child = render(scope.string(args[index]))
+        return (normalise(join_name(render(parent), child)),)
+
+
+def member_initialiser(field: Cursor) -> Cursor | None:
+    """What the constructors of ``field``'s class initialise or assign it with."""
+    owner = field.semantic_parent
+    if owner is None:
+        return None
+    for member in owner.get_children():
+        if member.kind != CursorKind.CONSTRUCTOR:
+            continue
+        definition = member.get_definition()
+        if definition is None:
+            continue
+        children = list(definition.get_children())
+        for i, child in enumerate(children[:-1]):
+            if child.kind == CursorKind.MEMBER_REF and child.referenced == field:
+                return children[i + 1]
+        for node in definition.walk_preorder():
+            if node.kind == CursorKind.CALL_EXPR and node.spelling == "operator=":
+                args = list(node.get_arguments())
+                if len(args) == 2 and strip(args[0]).kind == CursorKind.MEMBER_REF_EXPR and (
+                    strip(args[0]).referenced == field
+                ):
+                    return args[1]
+    return None
+
+
+def callback(args: list[Cursor], index: int | None) -> Cursor | None:
+    """The function, method or lambda a callback argument names, where cheap."""
+    if index is None or index >= len(args):
+        return None
+    return _callable(args[index], 0)
+
+
+def _callable(expr: Cursor, depth: int) -> Cursor | None:
+    expr = strip(expr)
+    if depth > 6:
+        return None
+    if expr.kind == CursorKind.DECL_REF_EXPR and expr.referenced is not None and (
+        expr.referenced.kind in _FUNCTIONS
+    ):
+        return expr.referenced
+    if expr.kind == CursorKind.LAMBDA_EXPR:
+        return expr
+    if expr.kind == CursorKind.UNARY_OPERATOR:  # &Class::method
+        inner = [c for c in expr.get_children() if c.kind.is_expression()]
+        return _callable(inner[0], depth + 1) if inner else None
+    if expr.kind == CursorKind.CALL_EXPR:
+        # boost::function<...>(f), boost::bind(&Class::method, this, _1), std::bind(...)
+        for arg in written_arguments(expr):
+            found = _callable(arg, depth + 1)
+            if found is not None:
+                return found
+        inner = [c for c in expr.get_children() if c.kind.is_expression()]
+        if expr.referenced is None and len(inner) == 1:
+            return _callable(inner[0], depth + 1)
+        if expr.referenced is not None and expr.referenced.kind == CursorKind.CONSTRUCTOR:
+            for child in inner:  # std::function<...>(lambda) copies
+                found = _callable(child, depth + 1)
+                if found is not None:
+                    return found
+    return None
+
+
+def callback_name(function: Cursor | None) -> str | None:
+    if function is None or function.kind == CursorKind.LAMBDA_EXPR:
+        return None
+    if function.kind == CursorKind.CXX_METHOD:
+        return f"{qualified_name(function.semantic_parent).split('::')[-1]}::{function.spelling}"
+    return function.spelling
+
+
+def parameters(function: Cursor) -> list:
+    if function.kind == CursorKind.LAMBDA_EXPR:
+        return [c.type for c in function.get_children() if c.kind == CursorKind.PARM_DECL]
+    return list(function.type.argument_types())

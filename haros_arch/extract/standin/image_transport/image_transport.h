@@ -1,0 +1,59 @@
+// haros_arch stand-in: image_transport for ROS 1 and ROS 2 (declarations only)
+#ifndef HAROS_STANDIN_IMAGE_TRANSPORT_H
+#define HAROS_STANDIN_IMAGE_TRANSPORT_H
+#include <string>
+#include <memory>
+#include <functional>
+#include <boost/shared_ptr.hpp>
+#include <boost/function.hpp>
+namespace image_transport {
+class Publisher {
+public:
+  Publisher();
+  template<class M> void publish(const M& message) const;
+  uint32_t getNumSubscribers() const;
+  std::string getTopic() const;
+  void shutdown();
+};
+class Subscriber {
+public:
+  Subscriber();
+  std::string getTopic() const;
+  void shutdown();
+};
+class CameraPublisher {
+public:
+  CameraPublisher();
+  template<class I, class C> void publish(const I& image, const C& info) const;
+  uint32_t getNumSubscribers() const;
+  void shutdown();
+};
+class CameraSubscriber { public: CameraSubscriber(); void shutdown(); };
+class TransportHints {
+public:
+  template<class... A> explicit TransportHints(A&&... args);
+};
+class ImageTransport {
+public:
+  template<class N> explicit ImageTransport(const N& handle);
+  Publisher advertise(const std::string& base_topic, uint32_t queue_size, bool latch = false);
+  template<class C> Subscriber subscribe(const std::string& base_topic, uint32_t queue_size,
+      const C& callback);
+  template<class C, class... A> Subscriber subscribe(const std::string& base_topic,
+      uint32_t queue_size, const C& callback, A&&... more);
+  CameraPublisher advertiseCamera(const std::string& base_topic, uint32_t queue_size,
+      bool latch = false);
+  template<class C, class... A> CameraSubscriber subscribeCamera(const std::string& base_topic,
+      uint32_t queue_size, const C& callback, A&&... more);
+};
+template<class N> Publisher create_publisher(N node, const std::string& base_topic,
+    const void* qos = nullptr);
+template<class N, class C> Subscriber create_subscription(N node, const std::string& base_topic,
+    const C& callback, const std::string& transport = "raw", const void* qos = nullptr);
+template<class N> CameraPublisher create_camera_publisher(N node, const std::string& base_topic,
+    const void* qos = nullptr);
+template<class N, class C> CameraSubscriber create_camera_subscription(N node,
+    const std::string& base_topic, const C& callback, const std::string& transport = "raw",
+    const void* qos = nullptr);
+}
+#endif

@@ -1,0 +1,2 @@
+// haros_arch stand-in
+#include <image_transport/image_transport.h>

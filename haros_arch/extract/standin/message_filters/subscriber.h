@@ -1,0 +1,41 @@
+// haros_arch stand-in: message_filters (declarations only)
+#ifndef HAROS_STANDIN_MESSAGE_FILTERS_H
+#define HAROS_STANDIN_MESSAGE_FILTERS_H
+#include <string>
+#include <memory>
+#include <functional>
+#include <boost/shared_ptr.hpp>
+#include <boost/function.hpp>
+namespace message_filters {
+template<class M> class Subscriber {
+public:
+  Subscriber();
+  template<class N, class... A> Subscriber(N&& node, const std::string& topic, A&&... more);
+  template<class N, class... A> void subscribe(N&& node, const std::string& topic, A&&... more);
+  void unsubscribe();
+  template<class C> void registerCallback(const C& callback);
+};
+struct NullType {};
+namespace sync_policies {
+template<class... M> struct ApproximateTime { explicit ApproximateTime(uint32_t queue_size); void setMaxIntervalDuration(...); };
+template<class... M> struct ExactTime { explicit ExactTime(uint32_t queue_size); };
+}
+template<class P> class Synchronizer {
+public:
+  template<class... F> Synchronizer(const P& policy, F&... filters);
+  template<class... F> void connectInput(F&... filters);
+  template<class C> void registerCallback(const C& callback);
+  template<class C, class T> void registerCallback(const C& callback, T* object);
+};
+template<class... M> class TimeSynchronizer {
+public:
+  template<class... F> TimeSynchronizer(F&&... args);
+  template<class C> void registerCallback(const C& callback);
+  template<class C, class T> void registerCallback(const C& callback, T* object);
+};
+template<class M> class Cache {
+public:
+  template<class F> Cache(F& filter, unsigned int size);
+};
+}
+#endif

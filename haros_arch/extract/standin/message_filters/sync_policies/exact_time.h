@@ -1,0 +1,2 @@
+// haros_arch stand-in
+#include <message_filters/subscriber.h>

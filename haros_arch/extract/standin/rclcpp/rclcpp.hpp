@@ -1,0 +1,389 @@
+// haros_arch stand-in: rclcpp, the ROS 2 C++ client library (declarations only)
+#ifndef HAROS_STANDIN_RCLCPP_HPP
+#define HAROS_STANDIN_RCLCPP_HPP
+#include <chrono>
+#include <functional>
+#include <future>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+#include <rmw/qos_profiles.h>
+#define RCLCPP_SMART_PTR_DEFINITIONS(T) \
+  using SharedPtr = std::shared_ptr<T>; using ConstSharedPtr = std::shared_ptr<const T>; \
+  using UniquePtr = std::unique_ptr<T>; using WeakPtr = std::weak_ptr<T>;
+#define RCLCPP_SMART_PTR_ALIASES_ONLY(T) RCLCPP_SMART_PTR_DEFINITIONS(T)
+#define RCLCPP_DISABLE_COPY(T)
+#define RCLCPP_PUBLIC
+#define RCLCPP_LOCAL
+namespace rcl_interfaces { namespace msg {
+struct ParameterDescriptor {
+  std::string name; uint8_t type; std::string description; std::string additional_constraints;
+  bool read_only; bool dynamic_typing;
+  struct Range { double from_value, to_value, step; };
+  std::vector<Range> floating_point_range; std::vector<Range> integer_range;
+};
+struct SetParametersResult { bool successful; std::string reason; };
+struct FloatingPointRange { double from_value, to_value, step; };
+struct IntegerRange { long from_value, to_value, step; };
+} }
+namespace builtin_interfaces { namespace msg {
+struct Time { int32_t sec; uint32_t nanosec; };
+struct Duration { int32_t sec; uint32_t nanosec; };
+} }
+namespace rclcpp {
+void init(int argc, char const* const argv[]);
+bool ok();
+bool shutdown();
+void on_shutdown(std::function<void()> callback);
+template<class R, class P> bool sleep_for(const std::chrono::duration<R, P>& d);
+std::vector<std::string> init_and_remove_ros_arguments(int argc, char const* const argv[]);
+std::vector<std::string> remove_ros_arguments(int argc, char const* const argv[]);
+enum class ParameterType { PARAMETER_NOT_SET, PARAMETER_BOOL, PARAMETER_INTEGER,
+  PARAMETER_DOUBLE, PARAMETER_STRING, PARAMETER_BYTE_ARRAY, PARAMETER_BOOL_ARRAY,
+  PARAMETER_INTEGER_ARRAY, PARAMETER_DOUBLE_ARRAY, PARAMETER_STRING_ARRAY };
+class ParameterValue {
+public:
+  ParameterValue();
+  template<class T> explicit ParameterValue(const T& v);
+  ParameterType get_type() const;
+  template<class T> T get() const;
+};
+class Parameter {
+public:
+  Parameter();
+  explicit Parameter(const std::string& name);
+  template<class T> Parameter(const std::string& name, const T& value);
+  const std::string& get_name() const;
+  ParameterType get_type() const;
+  std::string get_type_name() const;
+  ParameterValue get_parameter_value() const;
+  template<class T> T get_value() const;
+  bool as_bool() const;
+  int64_t as_int() const;
+  double as_double() const;
+  const std::string& as_string() const;
+  const std::vector<bool>& as_bool_array() const;
+  const std::vector<int64_t>& as_integer_array() const;
+  const std::vector<double>& as_double_array() const;
+  const std::vector<std::string>& as_string_array() const;
+  std::string value_to_string() const;
+};
+class Duration {
+public:
+  Duration(int32_t seconds, uint32_t nanoseconds);
+  template<class R, class P> Duration(const std::chrono::duration<R, P>& d);
+  Duration(const builtin_interfaces::msg::Duration& d);
+  static Duration from_seconds(double seconds);
+  static Duration from_nanoseconds(int64_t ns);
+  double seconds() const;
+  int64_t nanoseconds() const;
+  template<class D> D to_chrono() const;
+  operator builtin_interfaces::msg::Duration() const;
+  bool operator<(const Duration& o) const;
+  bool operator>(const Duration& o) const;
+  bool operator>=(const Duration& o) const;
+  bool operator<=(const Duration& o) const;
+  Duration operator+(const Duration& o) const;
+  Duration operator-(const Duration& o) const;
+  Duration operator*(double s) const;
+};
+class Time {
+public:
+  Time();
+  Time(int32_t seconds, uint32_t nanoseconds);
+  explicit Time(int64_t nanoseconds);
+  Time(const builtin_interfaces::msg::Time& t);
+  double seconds() const;
+  int64_t nanoseconds() const;
+  operator builtin_interfaces::msg::Time() const;
+  Duration operator-(const Time& o) const;
+  Time operator+(const Duration& d) const;
+  Time operator-(const Duration& d) const;
+  bool operator<(const Time& o) const;
+  bool operator>(const Time& o) const;
+  bool operator>=(const Time& o) const;
+  bool operator<=(const Time& o) const;
+  bool operator==(const Time& o) const;
+};
+class Clock {
+public:
+  RCLCPP_SMART_PTR_DEFINITIONS(Clock)
+  Clock();
+  Time now();
+  bool sleep_for(Duration d);
+};
+class Rate {
+public:
+  explicit Rate(double rate);
+  template<class R, class P> explicit Rate(const std::chrono::duration<R, P>& period);
+  bool sleep();
+  void reset();
+};
+typedef Rate WallRate;
+class Logger {
+public:
+  const char* get_name() const;
+  Logger get_child(const std::string& suffix);
+};
+Logger get_logger(const std::string& name);
+namespace haros { void log(const Logger& logger, const char* format, ...); }
+// QoS
+enum class ReliabilityPolicy { BestEffort, Reliable, SystemDefault };
+enum class DurabilityPolicy { Volatile, TransientLocal, SystemDefault };
+enum class HistoryPolicy { KeepLast, KeepAll, SystemDefault };
+struct QoSInitialization {
+  QoSInitialization(rmw_qos_history_policy_t history, size_t depth);
+  static QoSInitialization from_rmw(const rmw_qos_profile_t& profile);
+};
+struct KeepLast : QoSInitialization { explicit KeepLast(size_t depth); };
+struct KeepAll : QoSInitialization { KeepAll(); };
+class QoS {
+public:
+  QoS(const QoSInitialization& init, const rmw_qos_profile_t& profile = rmw_qos_profile_default);
+  QoS(size_t history_depth);
+  rmw_qos_profile_t& get_rmw_qos_profile();
+  QoS& keep_last(size_t depth);
+  QoS& keep_all();
+  QoS& reliable();
+  QoS& best_effort();
+  QoS& reliability(rmw_qos_reliability_policy_t r);
+  QoS& reliability(ReliabilityPolicy r);
+  QoS& durability_volatile();
+  QoS& transient_local();
+  QoS& durability(rmw_qos_durability_policy_t d);
+  QoS& durability(DurabilityPolicy d);
+  QoS& history(rmw_qos_history_policy_t h);
+  QoS& history(HistoryPolicy h);
+  template<class R, class P> QoS& deadline(const std::chrono::duration<R, P>& d);
+  template<class R, class P> QoS& lifespan(const std::chrono::duration<R, P>& d);
+  size_t depth() const;
+};
+class SensorDataQoS : public QoS { public: explicit SensorDataQoS(const QoSInitialization& i = KeepLast(5)); };
+class ParametersQoS : public QoS { public: explicit ParametersQoS(const QoSInitialization& i = KeepLast(1000)); };
+class ParameterEventsQoS : public QoS { public: explicit ParameterEventsQoS(const QoSInitialization& i = KeepLast(1000)); };
+class ServicesQoS : public QoS { public: explicit ServicesQoS(const QoSInitialization& i = KeepLast(10)); };
+class RosoutQoS : public QoS { public: explicit RosoutQoS(const QoSInitialization& i = KeepLast(1000)); };
+class SystemDefaultsQoS : public QoS { public: explicit SystemDefaultsQoS(const QoSInitialization& i = KeepLast(10)); };
+class ClockQoS : public QoS { public: explicit ClockQoS(const QoSInitialization& i = KeepLast(1)); };
+// entities
+class CallbackGroup { public: RCLCPP_SMART_PTR_DEFINITIONS(CallbackGroup) };
+enum class CallbackGroupType { MutuallyExclusive, Reentrant };
+struct PublisherOptions { std::shared_ptr<CallbackGroup> callback_group; };
+struct SubscriptionOptions { std::shared_ptr<CallbackGroup> callback_group; };
+template<class A = void> using PublisherOptionsWithAllocator = PublisherOptions;
+template<class A = void> using SubscriptionOptionsWithAllocator = SubscriptionOptions;
+class PublisherBase {
+public:
+  RCLCPP_SMART_PTR_DEFINITIONS(PublisherBase)
+  const char* get_topic_name() const;
+  size_t get_subscription_count() const;
+};
+template<class M, class A = void> class Publisher : public PublisherBase {
+public:
+  RCLCPP_SMART_PTR_DEFINITIONS(Publisher)
+  void publish(const M& msg);
+  void publish(std::unique_ptr<M> msg);
+};
+class SubscriptionBase {
+public:
+  RCLCPP_SMART_PTR_DEFINITIONS(SubscriptionBase)
+  const char* get_topic_name() const;
+};
+template<class M, class A = void> class Subscription : public SubscriptionBase {
+public:
+  RCLCPP_SMART_PTR_DEFINITIONS(Subscription)
+};
+class GenericPublisher : public PublisherBase { public: RCLCPP_SMART_PTR_DEFINITIONS(GenericPublisher) };
+class GenericSubscription : public SubscriptionBase { public: RCLCPP_SMART_PTR_DEFINITIONS(GenericSubscription) };
+class ServiceBase { public: RCLCPP_SMART_PTR_DEFINITIONS(ServiceBase) };
+template<class S> class Service : public ServiceBase {
+public:
+  RCLCPP_SMART_PTR_DEFINITIONS(Service)
+  void send_response(rmw_request_id_t& header, typename S::Response& response);
+};
+class ClientBase {
+public:
+  RCLCPP_SMART_PTR_DEFINITIONS(ClientBase)
+  bool service_is_ready() const;
+  template<class R = long, class P = std::ratio<1>>
+  bool wait_for_service(std::chrono::duration<R, P> timeout = std::chrono::duration<R, P>(-1));
+  const char* get_service_name() const;
+};
+template<class S> class Client : public ClientBase {
+public:
+  RCLCPP_SMART_PTR_DEFINITIONS(Client)
+  using SharedRequest = std::shared_ptr<typename S::Request>;
+  using SharedResponse = std::shared_ptr<typename S::Response>;
+  using SharedFuture = std::shared_future<SharedResponse>;
+  struct FutureAndRequestId : std::future<SharedResponse> { std::shared_future<SharedResponse> future; long request_id; };
+  using SharedFutureAndRequestId = FutureAndRequestId;
+  FutureAndRequestId async_send_request(SharedRequest request);
+  template<class F> FutureAndRequestId async_send_request(SharedRequest request, F&& callback);
+};
+class TimerBase {
+public:
+  RCLCPP_SMART_PTR_DEFINITIONS(TimerBase)
+  void cancel();
+  void reset();
+  bool is_canceled();
+};
+template<class F> class WallTimer : public TimerBase { public: RCLCPP_SMART_PTR_DEFINITIONS(WallTimer) };
+class NodeOptions {
+public:
+  NodeOptions();
+  NodeOptions& use_intra_process_comms(bool v);
+  NodeOptions& allow_undeclared_parameters(bool v);
+  NodeOptions& automatically_declare_parameters_from_overrides(bool v);
+  NodeOptions& parameter_overrides(const std::vector<Parameter>& p);
+  NodeOptions& append_parameter_override(const std::string& name, const ParameterValue& v);
+  NodeOptions& arguments(const std::vector<std::string>& a);
+  NodeOptions& start_parameter_services(bool v);
+  NodeOptions& start_parameter_event_publisher(bool v);
+};
+namespace node_interfaces {
+class NodeBaseInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeBaseInterface) const char* get_name() const; };
+class NodeTopicsInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeTopicsInterface) };
+class NodeParametersInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeParametersInterface) };
+class NodeLoggingInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeLoggingInterface) };
+class NodeClockInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeClockInterface) };
+class NodeGraphInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeGraphInterface) };
+class NodeServicesInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeServicesInterface) };
+class NodeTimersInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeTimersInterface) };
+class NodeWaitablesInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeWaitablesInterface) };
+struct OnSetParametersCallbackHandle { RCLCPP_SMART_PTR_DEFINITIONS(OnSetParametersCallbackHandle) };
+}
+using OnSetParametersCallbackHandle = node_interfaces::OnSetParametersCallbackHandle;
+// the node: its primitives are what the extractor's API table lists
+#define HAROS_RCLCPP_NODE_API(NodeT) \
+  const char* get_name() const; \
+  const char* get_namespace() const; \
+  const char* get_fully_qualified_name() const; \
+  rclcpp::Logger get_logger() const; \
+  rclcpp::Clock::SharedPtr get_clock(); \
+  rclcpp::Time now() const; \
+  std::shared_ptr<NodeT> shared_from_this(); \
+  rclcpp::CallbackGroup::SharedPtr create_callback_group(rclcpp::CallbackGroupType t, bool automatically_add = true); \
+  template<class M, class A = void> std::shared_ptr<rclcpp::Publisher<M>> create_publisher( \
+      const std::string& topic, const rclcpp::QoS& qos, \
+      const rclcpp::PublisherOptions& options = rclcpp::PublisherOptions()); \
+  template<class M, class C> std::shared_ptr<rclcpp::Subscription<M>> create_subscription( \
+      const std::string& topic, const rclcpp::QoS& qos, C&& callback, \
+      const rclcpp::SubscriptionOptions& options = rclcpp::SubscriptionOptions()); \
+  std::shared_ptr<rclcpp::GenericPublisher> create_generic_publisher(const std::string& topic, \
+      const std::string& type, const rclcpp::QoS& qos); \
+  template<class C> std::shared_ptr<rclcpp::GenericSubscription> create_generic_subscription( \
+      const std::string& topic, const std::string& type, const rclcpp::QoS& qos, C&& callback); \
+  template<class S, class C> std::shared_ptr<rclcpp::Service<S>> create_service( \
+      const std::string& name, C&& callback, \
+      const rmw_qos_profile_t& qos = rmw_qos_profile_services_default, \
+      rclcpp::CallbackGroup::SharedPtr group = nullptr); \
+  template<class S> std::shared_ptr<rclcpp::Client<S>> create_client(const std::string& name, \
+      const rmw_qos_profile_t& qos = rmw_qos_profile_services_default, \
+      rclcpp::CallbackGroup::SharedPtr group = nullptr); \
+  template<class R, class P, class C> rclcpp::TimerBase::SharedPtr create_wall_timer( \
+      std::chrono::duration<R, P> period, C callback, \
+      rclcpp::CallbackGroup::SharedPtr group = nullptr); \
+  template<class R, class P, class C> rclcpp::TimerBase::SharedPtr create_timer( \
+      std::chrono::duration<R, P> period, C callback, \
+      rclcpp::CallbackGroup::SharedPtr group = nullptr); \
+  const rclcpp::ParameterValue& declare_parameter(const std::string& name, \
+      const rclcpp::ParameterValue& default_value = rclcpp::ParameterValue(), \
+      const rcl_interfaces::msg::ParameterDescriptor& descriptor = \
+          rcl_interfaces::msg::ParameterDescriptor(), bool ignore_override = false); \
+  template<class T> auto declare_parameter(const std::string& name, const T& default_value, \
+      const rcl_interfaces::msg::ParameterDescriptor& descriptor = \
+          rcl_interfaces::msg::ParameterDescriptor(), bool ignore_override = false) -> T; \
+  template<class T> std::vector<T> declare_parameters(const std::string& ns, \
+      const std::map<std::string, T>& parameters, bool ignore_overrides = false); \
+  void undeclare_parameter(const std::string& name); \
+  bool has_parameter(const std::string& name) const; \
+  rclcpp::Parameter get_parameter(const std::string& name) const; \
+  template<class T> bool get_parameter(const std::string& name, T& value) const; \
+  template<class T> bool get_parameter_or(const std::string& name, T& value, \
+      const T& alternative) const; \
+  std::vector<rclcpp::Parameter> get_parameters(const std::vector<std::string>& names) const; \
+  template<class T> bool get_parameters(const std::string& prefix, \
+      std::map<std::string, T>& values) const; \
+  rcl_interfaces::msg::SetParametersResult set_parameter(const rclcpp::Parameter& p); \
+  std::vector<rcl_interfaces::msg::SetParametersResult> set_parameters( \
+      const std::vector<rclcpp::Parameter>& p); \
+  rcl_interfaces::msg::SetParametersResult set_parameters_atomically( \
+      const std::vector<rclcpp::Parameter>& p); \
+  template<class C> rclcpp::OnSetParametersCallbackHandle::SharedPtr \
+      add_on_set_parameters_callback(C callback); \
+  rclcpp::node_interfaces::NodeBaseInterface::SharedPtr get_node_base_interface(); \
+  rclcpp::node_interfaces::NodeTopicsInterface::SharedPtr get_node_topics_interface(); \
+  rclcpp::node_interfaces::NodeParametersInterface::SharedPtr get_node_parameters_interface(); \
+  rclcpp::node_interfaces::NodeLoggingInterface::SharedPtr get_node_logging_interface(); \
+  rclcpp::node_interfaces::NodeClockInterface::SharedPtr get_node_clock_interface(); \
+  rclcpp::node_interfaces::NodeGraphInterface::SharedPtr get_node_graph_interface(); \
+  rclcpp::node_interfaces::NodeServicesInterface::SharedPtr get_node_services_interface(); \
+  rclcpp::node_interfaces::NodeTimersInterface::SharedPtr get_node_timers_interface(); \
+  rclcpp::node_interfaces::NodeWaitablesInterface::SharedPtr get_node_waitables_interface(); \
+  size_t count_publishers(const std::string& topic) const; \
+  size_t count_subscribers(const std::string& topic) const;
+class Node : public std::enable_shared_from_this<Node> {
+public:
+  RCLCPP_SMART_PTR_DEFINITIONS(Node)
+  explicit Node(const std::string& node_name, const NodeOptions& options = NodeOptions());
+  Node(const std::string& node_name, const std::string& namespace_,
+       const NodeOptions& options = NodeOptions());
+  virtual ~Node();
+  template<class... A> static SharedPtr make_shared(A&&... args);
+  HAROS_RCLCPP_NODE_API(Node)
+  Node::SharedPtr create_sub_node(const std::string& sub_namespace);
+};
+namespace executors {
+class Executor {
+public:
+  void add_node(std::shared_ptr<Node> node);
+  template<class N> void add_node(std::shared_ptr<N> node);
+  void spin();
+  void spin_some();
+  void cancel();
+};
+class SingleThreadedExecutor : public Executor { public: SingleThreadedExecutor(); };
+class MultiThreadedExecutor : public Executor {
+public:
+  explicit MultiThreadedExecutor(const void* options = nullptr, size_t threads = 0);
+};
+class StaticSingleThreadedExecutor : public Executor { public: StaticSingleThreadedExecutor(); };
+}
+using executors::Executor;
+enum class FutureReturnCode { SUCCESS, INTERRUPTED, TIMEOUT };
+namespace executor { using FutureReturnCode = rclcpp::FutureReturnCode; }
+template<class N> void spin(std::shared_ptr<N> node);
+template<class N> void spin_some(std::shared_ptr<N> node);
+template<class N, class F> FutureReturnCode spin_until_future_complete(std::shared_ptr<N> node,
+                                                                       const F& future);
+template<class N, class F, class R, class P> FutureReturnCode spin_until_future_complete(
+    std::shared_ptr<N> node, const F& future, std::chrono::duration<R, P> timeout);
+namespace contexts { class DefaultContext { public: RCLCPP_SMART_PTR_DEFINITIONS(DefaultContext) }; }
+class Event { public: RCLCPP_SMART_PTR_DEFINITIONS(Event) };
+class WaitSet { public: WaitSet(); };
+}  // namespace rclcpp
+#define HAROS_RCLCPP_LOG(logger, ...) ::rclcpp::haros::log(logger, __VA_ARGS__)
+#define HAROS_RCLCPP_STREAM(logger, args) do { std::stringstream haros_ss; haros_ss << args; } while (0)
+#define RCLCPP_DEBUG(logger, ...) HAROS_RCLCPP_LOG(logger, __VA_ARGS__)
+#define RCLCPP_INFO(logger, ...) HAROS_RCLCPP_LOG(logger, __VA_ARGS__)
+#define RCLCPP_WARN(logger, ...) HAROS_RCLCPP_LOG(logger, __VA_ARGS__)
+#define RCLCPP_ERROR(logger, ...) HAROS_RCLCPP_LOG(logger, __VA_ARGS__)
+#define RCLCPP_FATAL(logger, ...) HAROS_RCLCPP_LOG(logger, __VA_ARGS__)
+#define RCLCPP_DEBUG_ONCE(logger, ...) HAROS_RCLCPP_LOG(logger, __VA_ARGS__)
+#define RCLCPP_INFO_ONCE(logger, ...) HAROS_RCLCPP_LOG(logger, __VA_ARGS__)
+#define RCLCPP_WARN_ONCE(logger, ...) HAROS_RCLCPP_LOG(logger, __VA_ARGS__)
+#define RCLCPP_ERROR_ONCE(logger, ...) HAROS_RCLCPP_LOG(logger, __VA_ARGS__)
+#define RCLCPP_DEBUG_THROTTLE(logger, clock, ms, ...) HAROS_RCLCPP_LOG(logger, __VA_ARGS__)
+#define RCLCPP_INFO_THROTTLE(logger, clock, ms, ...) HAROS_RCLCPP_LOG(logger, __VA_ARGS__)
+#define RCLCPP_WARN_THROTTLE(logger, clock, ms, ...) HAROS_RCLCPP_LOG(logger, __VA_ARGS__)
+#define RCLCPP_ERROR_THROTTLE(logger, clock, ms, ...) HAROS_RCLCPP_LOG(logger, __VA_ARGS__)
+#define RCLCPP_DEBUG_EXPRESSION(logger, e, ...) HAROS_RCLCPP_LOG(logger, __VA_ARGS__)
+#define RCLCPP_INFO_EXPRESSION(logger, e, ...) HAROS_RCLCPP_LOG(logger, __VA_ARGS__)
+#define RCLCPP_WARN_EXPRESSION(logger, e, ...) HAROS_RCLCPP_LOG(logger, __VA_ARGS__)
+#define RCLCPP_DEBUG_STREAM(logger, args) HAROS_RCLCPP_STREAM(logger, args)
+#define RCLCPP_INFO_STREAM(logger, args) HAROS_RCLCPP_STREAM(logger, args)
+#define RCLCPP_WARN_STREAM(logger, args) HAROS_RCLCPP_STREAM(logger, args)
+#define RCLCPP_ERROR_STREAM(logger, args) HAROS_RCLCPP_STREAM(logger, args)
+#define RCLCPP_FATAL_STREAM(logger, args) HAROS_RCLCPP_STREAM(logger, args)
+#endif

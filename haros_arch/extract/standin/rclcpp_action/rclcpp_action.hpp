@@ -1,0 +1,67 @@
+// haros_arch stand-in: rclcpp_action (declarations only)
+#ifndef HAROS_STANDIN_RCLCPP_ACTION_HPP
+#define HAROS_STANDIN_RCLCPP_ACTION_HPP
+#include <rclcpp/rclcpp.hpp>
+#include <array>
+namespace rclcpp_action {
+using GoalUUID = std::array<uint8_t, 16>;
+enum class GoalResponse { REJECT = 1, ACCEPT_AND_EXECUTE = 2, ACCEPT_AND_DEFER = 3 };
+enum class CancelResponse { REJECT = 1, ACCEPT = 2 };
+enum class ResultCode { UNKNOWN = 0, SUCCEEDED = 4, CANCELED = 5, ABORTED = 6 };
+template<class A> class ServerGoalHandle {
+public:
+  RCLCPP_SMART_PTR_DEFINITIONS(ServerGoalHandle)
+  bool is_canceling() const;
+  bool is_active() const;
+  bool is_executing() const;
+  std::shared_ptr<const typename A::Goal> get_goal() const;
+  const GoalUUID& get_goal_id() const;
+  void publish_feedback(std::shared_ptr<typename A::Feedback> feedback);
+  void succeed(std::shared_ptr<typename A::Result> result);
+  void abort(std::shared_ptr<typename A::Result> result);
+  void canceled(std::shared_ptr<typename A::Result> result);
+  void execute();
+};
+template<class A> class ClientGoalHandle {
+public:
+  RCLCPP_SMART_PTR_DEFINITIONS(ClientGoalHandle)
+  struct WrappedResult {
+    GoalUUID goal_id;
+    ResultCode code;
+    std::shared_ptr<typename A::Result> result;
+  };
+  const GoalUUID& get_goal_id() const;
+  int8_t get_status();
+};
+template<class A> class Server { public: RCLCPP_SMART_PTR_DEFINITIONS(Server) };
+template<class A> class Client {
+public:
+  RCLCPP_SMART_PTR_DEFINITIONS(Client)
+  using Goal = typename A::Goal;
+  using GoalHandle = ClientGoalHandle<A>;
+  using WrappedResult = typename GoalHandle::WrappedResult;
+  struct SendGoalOptions {
+    SendGoalOptions();
+    std::function<void(std::shared_ptr<GoalHandle>)> goal_response_callback;
+    std::function<void(std::shared_ptr<GoalHandle>, const std::shared_ptr<const typename A::Feedback>)> feedback_callback;
+    std::function<void(const WrappedResult&)> result_callback;
+  };
+  bool action_server_is_ready() const;
+  template<class R = long, class P = std::ratio<1>>
+  bool wait_for_action_server(std::chrono::duration<R, P> timeout = std::chrono::duration<R, P>(-1));
+  std::shared_future<std::shared_ptr<GoalHandle>> async_send_goal(
+      const Goal& goal, const SendGoalOptions& options = SendGoalOptions());
+  std::shared_future<WrappedResult> async_get_result(std::shared_ptr<GoalHandle> handle);
+  std::shared_future<int> async_cancel_goal(std::shared_ptr<GoalHandle> handle);
+  std::shared_future<int> async_cancel_all_goals();
+};
+template<class A, class N, class G, class C, class H>
+typename Server<A>::SharedPtr create_server(N node, const std::string& name, G handle_goal,
+    C handle_cancel, H handle_accepted,
+    const rcl_interfaces::msg::ParameterDescriptor& options = rcl_interfaces::msg::ParameterDescriptor(),
+    rclcpp::CallbackGroup::SharedPtr group = nullptr);
+template<class A, class N>
+typename Client<A>::SharedPtr create_client(N node, const std::string& name,
+    rclcpp::CallbackGroup::SharedPtr group = nullptr);
+}
+#endif

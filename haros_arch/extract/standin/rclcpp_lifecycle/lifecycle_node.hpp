@@ -1,0 +1,31 @@
+// haros_arch stand-in: rclcpp_lifecycle::LifecycleNode (declarations only)
+#ifndef HAROS_STANDIN_RCLCPP_LIFECYCLE_HPP
+#define HAROS_STANDIN_RCLCPP_LIFECYCLE_HPP
+#include <rclcpp/rclcpp.hpp>
+namespace rclcpp_lifecycle {
+class State { public: uint8_t id() const; const std::string& label() const; };
+template<class M, class A = void> class LifecyclePublisher : public rclcpp::Publisher<M> {
+public:
+  RCLCPP_SMART_PTR_DEFINITIONS(LifecyclePublisher)
+  void on_activate();
+  void on_deactivate();
+};
+namespace node_interfaces { struct LifecycleNodeInterface {
+  enum class CallbackReturn { SUCCESS, FAILURE, ERROR };
+}; }
+class LifecycleNode : public std::enable_shared_from_this<LifecycleNode>,
+                      public node_interfaces::LifecycleNodeInterface {
+public:
+  RCLCPP_SMART_PTR_DEFINITIONS(LifecycleNode)
+  explicit LifecycleNode(const std::string& node_name,
+                         const rclcpp::NodeOptions& options = rclcpp::NodeOptions());
+  LifecycleNode(const std::string& node_name, const std::string& namespace_,
+                const rclcpp::NodeOptions& options = rclcpp::NodeOptions());
+  virtual ~LifecycleNode();
+  HAROS_RCLCPP_NODE_API(LifecycleNode)
+  const State& configure();
+  const State& activate();
+  const State& deactivate();
+};
+}
+#endif

@@ -1,0 +1,27 @@
+// haros_arch stand-in: rmw QoS profiles (declarations only)
+#ifndef HAROS_STANDIN_RMW_QOS_PROFILES_H
+#define HAROS_STANDIN_RMW_QOS_PROFILES_H
+#include <cstddef>
+extern "C" {
+typedef enum { RMW_QOS_POLICY_HISTORY_SYSTEM_DEFAULT, RMW_QOS_POLICY_HISTORY_KEEP_LAST,
+               RMW_QOS_POLICY_HISTORY_KEEP_ALL } rmw_qos_history_policy_t;
+typedef enum { RMW_QOS_POLICY_RELIABILITY_SYSTEM_DEFAULT, RMW_QOS_POLICY_RELIABILITY_RELIABLE,
+               RMW_QOS_POLICY_RELIABILITY_BEST_EFFORT } rmw_qos_reliability_policy_t;
+typedef enum { RMW_QOS_POLICY_DURABILITY_SYSTEM_DEFAULT,
+               RMW_QOS_POLICY_DURABILITY_TRANSIENT_LOCAL,
+               RMW_QOS_POLICY_DURABILITY_VOLATILE } rmw_qos_durability_policy_t;
+typedef struct rmw_qos_profile_t {
+  rmw_qos_history_policy_t history;
+  size_t depth;
+  rmw_qos_reliability_policy_t reliability;
+  rmw_qos_durability_policy_t durability;
+} rmw_qos_profile_t;
+extern const rmw_qos_profile_t rmw_qos_profile_default;
+extern const rmw_qos_profile_t rmw_qos_profile_sensor_data;
+extern const rmw_qos_profile_t rmw_qos_profile_services_default;
+extern const rmw_qos_profile_t rmw_qos_profile_parameters;
+extern const rmw_qos_profile_t rmw_qos_profile_parameter_events;
+extern const rmw_qos_profile_t rmw_qos_profile_system_default;
+typedef struct rmw_request_id_t { long sequence_number; } rmw_request_id_t;
+}
+#endif

@@ -1,0 +1,178 @@
+"""The C++ API rows beyond roscpp's NodeHandle: actionlib, image_transport,
+message_filters, tf2_ros, nodelet, ros::topic, rclcpp (QoS, parameters, sub nodes),
+rclcpp_action, and names that are the values of parameters.
+
+Each fixture source is parsed once per module; tests read the result.
+"""
+
+from __future__ import annotations
+
+import os
+
+import pytest
+
+from haros_arch.extract.cpp import CppResult, extract_cpp
+from haros_arch.model.source import PrimitiveCall
+from haros_arch.workspace import Workspace, scan
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+FIXTURES = os.path.join(os.path.dirname(HERE), "fixtures", "cpp")
+ROS1 = os.path.join(FIXTURES, "features")
+ROS1_SRC = os.path.join(ROS1, "src", "demo", "src")
+ROS2 = os.path.join(FIXTURES, "ros2")
+ROS2_SRC = os.path.join(ROS2, "src", "demo2", "src")
+HAVE_ROS = os.path.isfile("/usr/include/ros/ros.h")
+KEEP_LAST_10 = {"history": "keep_last", "depth": 10, "reliability": "reliable",
+                "durability": "volatile"}
+SENSOR_DATA = {"history": "keep_last", "depth": 5, "reliability": "best_effort",
+               "durability": "volatile"}
+
+
+def row(call: PrimitiveCall) -> tuple[object, ...]:
+    return (call.kind, call.name, call.type, call.queue_size, call.latch, call.location.line)
+
+
+def codes(result: CppResult) -> list[str]:
+    return [d.code for d in result.diagnostics]
+
+
+@pytest.fixture(scope="module")
+def ros1_ws() -> Workspace:
+    return scan([ROS1])
+
+
+@pytest.fixture(scope="module")
+def ros2_ws() -> Workspace:
+    return scan([ROS2])
+
+
+@pytest.fixture(scope="module")
+def libraries(ros1_ws: Workspace) -> CppResult:
+    return extract_cpp([os.path.join(ROS1_SRC, "libraries.cpp")], ros1_ws)
+
+
+@pytest.fixture(scope="module")
+def talker(ros2_ws: Workspace) -> CppResult:
+    return extract_cpp([os.path.join(ROS2_SRC, "talker.cpp")], ros2_ws)
+
+
+@pytest.fixture(scope="module")
+def mover(ros2_ws: Workspace) -> CppResult:
+    return extract_cpp([os.path.join(ROS2_SRC, "mover.cpp")], ros2_ws)
+
+
+# -- ROS 1 libraries -------------------------------------------------------------------
+
+LIBRARIES = [
+    ("read", "~input_topic", "str", None, False, 27),            # nodelet private handle
+    ("subscribe", "?", "std_msgs/String", 1, False, 28),          # name from a parameter
+    ("publish", "~status", "std_msgs/String", 1, False, 29),
+    ("read", "~rate", "double", None, False, 30),                 # getMTPrivateNodeHandle
+    ("read", "output_topic", "str", None, False, 31),
+    ("publish", "?", "std_msgs/String", 1, False, 32),
+    ("publish", "/tf", "tf2_msgs/TFMessage", None, False, 43),    # a broadcaster member
+    ("action-server", "do", "demo/Do", None, False, 59),
+    ("action-client", "delegate", "demo/Do", None, False, 60),
+    ("publish", "vision/raw", "sensor_msgs/Image", 1, False, 63),
+    ("publish", "vision/camera/image", "sensor_msgs/Image", 2, False, 64),
+    ("publish", "vision/camera/camera_info", "sensor_msgs/CameraInfo", 2, False, 64),
+    ("subscribe", "vision/input", "sensor_msgs/Image", 3, False, 65),
+    ("subscribe", "left/image", "sensor_msgs/Image", 4, False, 67),
+    ("publish", "/tf_static", "tf2_msgs/TFMessage", None, True, 69),
+    ("subscribe", "/tf", "tf2_msgs/TFMessage", None, False, 71),
+    ("subscribe", "/tf_static", "tf2_msgs/TFMessage", None, False, 71),
+    ("subscribe", "~once", "std_msgs/String", None, False, 74),   # waitForMessage(.., priv)
+]
+
+
+def test_ros1_libraries(libraries: CppResult) -> None:
+    assert [row(c) for c in libraries.calls] == LIBRARIES
+    assert libraries.rosname == "libraries"
+    assert "CPP_PARSE_ERROR" not in codes(libraries)
+    assert "CPP_INCLUDE_MISSING" not in codes(libraries)
+
+
+def test_names_from_parameters(libraries: CppResult) -> None:
+    params = [(c.name, c.name_param, c.name_default) for c in libraries.calls
+              if c.name_param is not None]
+    assert params == [("?", "~input_topic", "scan"), ("?", "output_topic", "out")]
+
+
+def test_callbacks_of_library_calls(libraries: CppResult) -> None:
+    by_line = {(c.location.line, c.kind): c for c in libraries.calls}
+    assert by_line[(28, "subscribe")].callback == "Camera::onString"
+    assert by_line[(65, "subscribe")].callback == "onImage"
+
+
+@pytest.mark.skipif(not HAVE_ROS, reason="needs the ROS 1 headers in /usr/include")
+def test_ros1_libraries_with_system_headers(ros1_ws: Workspace, libraries: CppResult) -> None:
+    real = extract_cpp([os.path.join(ROS1_SRC, "libraries.cpp")], ros1_ws,
+                       system_headers=True)
+    assert [row(c) for c in real.calls] == [row(c) for c in libraries.calls]
+    assert [(c.name_param, c.name_default) for c in real.calls] == [
+        (c.name_param, c.name_default) for c in libraries.calls]
+
+
+# -- rclcpp ----------------------------------------------------------------------------
+
+TALKER = [
+    ("publish", "chatter", "std_msgs/msg/String", 10, KEEP_LAST_10),
+    ("publish", "status", "demo2/msg/Status", 5,                      # const char* constant
+     {**KEEP_LAST_10, "depth": 5, "reliability": "best_effort"}),
+    ("publish", "~latched", "std_msgs/msg/String", 1,
+     {**KEEP_LAST_10, "depth": 1, "durability": "transient_local"}),
+    ("publish", "all", "std_msgs/msg/String", None,                   # through a variable
+     {"history": "keep_all", "reliability": "reliable", "durability": "volatile"}),
+    ("publish", "defaults", "std_msgs/msg/String", 0,
+     {"history": "system_default", "depth": 0, "reliability": "system_default",
+      "durability": "system_default"}),
+    ("subscribe", "input", "std_msgs/msg/String", 10, KEEP_LAST_10),
+    ("subscribe", "scan", "sensor_msgs/msg/LaserScan", 5, SENSOR_DATA),
+    ("subscribe", "raw", "std_msgs/msg/String", 5, SENSOR_DATA),      # rmw profile
+    ("server", "set_mode", "demo2/srv/SetMode", None, None),
+    ("client", "~reset", "std_srvs/srv/Trigger", None, None),
+    ("declare", "rate", "double", None, None),
+    ("declare", "frame_id", "str", None, None),
+    ("read", "rate", "double", None, None),
+    ("write", "ready", None, None, None),
+    ("write", "left", None, None, None),
+    ("write", "right", None, None, None),
+    ("declare", "topic", "str", None, None),
+    ("read", "topic", None, None, None),
+    ("publish", "?", "std_msgs/msg/String", 1, {**KEEP_LAST_10, "depth": 1}),
+    ("publish", "arm/joint", "std_msgs/msg/String", 3, {**KEEP_LAST_10, "depth": 3}),
+]
+
+
+def test_rclcpp_node(talker: CppResult) -> None:
+    assert [(c.kind, c.name, c.type, c.queue_size, c.qos) for c in talker.calls] == TALKER
+    assert talker.rosname == "/robot/talker"
+    assert "CPP_PARSE_ERROR" not in codes(talker)
+
+
+def test_rclcpp_callbacks_and_parameter_names(talker: CppResult) -> None:
+    calls = {(c.kind, c.name): c for c in talker.calls}
+    assert calls[("subscribe", "input")].callback == "Talker::onInput"
+    assert calls[("server", "set_mode")].callback == "Talker::onSetMode"
+    dynamic = calls[("publish", "?")]
+    assert (dynamic.name_param, dynamic.name_default) == ("topic", "cmd")
+
+
+def test_ros2_libraries(mover: CppResult) -> None:
+    assert [(c.kind, c.name, c.type, c.queue_size, c.latch) for c in mover.calls] == [
+        ("action-server", "move", "demo2/action/Move", None, False),
+        ("action-client", "follow", "demo2/action/Move", None, False),
+        ("publish", "/tf", "tf2_msgs/msg/TFMessage", None, False),          # make_shared
+        ("publish", "/tf_static", "tf2_msgs/msg/TFMessage", None, True),    # make_unique
+        ("subscribe", "/tf", "tf2_msgs/msg/TFMessage", None, False),
+        ("subscribe", "/tf_static", "tf2_msgs/msg/TFMessage", None, False),
+        ("publish", "camera/image", "sensor_msgs/msg/Image", 1, False),
+        ("publish", "camera/camera_info", "sensor_msgs/msg/CameraInfo", 1, False),
+        ("publish", "debug", "sensor_msgs/msg/Image", None, False),
+        ("subscribe", "left/image", "sensor_msgs/msg/Image", 5, False),
+        ("declare", "verbose", "bool", None, False),
+    ]
+    assert mover.rosname == "/base/mover"
+    assert mover.calls[-1].conditions[0].text == "argc > 1"
+    assert mover.calls[-2].qos == SENSOR_DATA
+    assert "CPP_PARSE_ERROR" not in codes(mover)
