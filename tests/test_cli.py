@@ -59,9 +59,13 @@ def test_missing_launch_file_is_a_diagnostic(write_tree):
     })
     result = run("check", str(root / "project.yaml"), "--format", "json")
     assert result.returncode == 1
-    found = json.loads(result.stdout)["diagnostics"]
-    assert [(d["code"], d["location"]["line"]) for d in found] == [
-        ("LAUNCH_FILE_MISSING", 4), ("PACKAGE_NOT_FOUND", 4)]
+    # the catalogue query launch-missing-reference turns these diagnostics into findings
+    report = json.loads(result.stdout)
+    found = [(f["rule"], f["location"]["line"]) for f in report["findings"]]
+    assert found == [("launch-missing-reference", 4), ("launch-missing-reference", 4)]
+    messages = " ".join(f["message"] for f in report["findings"])
+    assert "pkg/launch/nope.launch does not exist" in messages
+    assert "package other_pkg" in messages
 
 
 def test_cpp_syntax_errors_are_diagnostics_and_the_rest_is_kept(write_tree):
