@@ -282,6 +282,7 @@ class Link:
         "node": lambda link: link.node.name,
         "name": lambda link: link.rosname.full,
         "given": lambda link: link.rosname.given,
+        "resource": lambda link: link.resource.id,
     }
 
     @property
