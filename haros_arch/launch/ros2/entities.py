@@ -174,6 +174,15 @@ class ParamFile:
     root_key: Text | None = None
     rewrites: list[tuple[Text, Any]] = field(default_factory=list)
     location: Location = NOWHERE
+    replacements: list[tuple[Text, Text]] = field(default_factory=list)  # ReplaceString
+    condition: Cond | None = None  # ReplaceString(condition=...): replace only if true
+
+
+@dataclass(frozen=True, eq=False)
+class FileRef(Subst):
+    """A rewritten parameter file used where a path is expected (its source path)."""
+
+    file: ParamFile
 
 
 @dataclass(frozen=True)

@@ -706,6 +706,8 @@ def to_text(value: Any) -> e.Text:
         return (str(value),)
     if isinstance(value, Unk):
         return (e.Opaque(value.why),)
+    if isinstance(value, e.ParamFile):
+        return (e.FileRef(value),)
     return (e.Opaque(f"{type(value).__name__} value"),)
 
 

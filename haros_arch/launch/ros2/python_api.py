@@ -415,6 +415,15 @@ def rewritten_yaml(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
                        i.where(n))
 
 
+def replace_string(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """nav2_common's ``ReplaceString``: the file with text replaced (if its condition)."""
+    replacements = k.get("replacements") or {}
+    pairs = [(to_text(key), to_text(val)) for key, val in replacements.items()] if isinstance(
+        replacements, dict) else []
+    return e.ParamFile(to_text(arg(a, k, 0, "source_file")), location=i.where(n),
+                       replacements=pairs, condition=cond(i, k.get("condition"), n))
+
+
 def parameter_value(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     value_type = k.get("value_type")
     as_text = isinstance(value_type, Unk) is False and getattr(
@@ -463,6 +472,7 @@ API: dict[str, Builder] = {
     "AnonName": lambda i, a, k, n: e.Anon(to_text(arg(a, k, 0, "name"))),
     "NotSubstitution": logic("not", 1), "AndSubstitution": logic("and", 2),
     "OrSubstitution": logic("or", 2), "EqualsSubstitution": logic("equals", 2),
+    "NotEqualsSubstitution": logic("notequals", 2),
     "IfElseSubstitution": logic("if", 3),
     "Command": opaque("Command (never run)"), "FindExecutable": opaque("FindExecutable"),
     "ExecutableInPackage": opaque("ExecutableInPackage"),
@@ -492,7 +502,7 @@ API: dict[str, Builder] = {
     "EmitEvent": ignored, "AppendEnvironmentVariable": ignored, "SetROSLogDir": ignored,
     "SetUseSimTime": ignored,
     "ParameterFile": param_file, "RewrittenYaml": rewritten_yaml,
-    "ReplaceString": param_file, "ParameterValue": parameter_value,
+    "ReplaceString": replace_string, "ParameterValue": parameter_value,
     "len": builtin(len, str, list, tuple, dict), "str": builtin(str, str, int, float, bool),
     "int": builtin(int, str, int, float, bool), "float": builtin(float, str, int, float),
     "bool": builtin(bool, *SCALARS), "list": builtin(list, str, list, tuple, dict),

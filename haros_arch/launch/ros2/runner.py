@@ -234,8 +234,12 @@ class Runner:
             perform_composable(self, node, scope, container)
 
     # -- parameter files -------------------------------------------------------------
-    def param_file(self, entry: e.ParamFile, scope: Scope, where: Location) -> Any:
+    def param_file(self, entry: e.ParamFile, scope: Scope, where: Location,
+                   depth: int = 0) -> Any:
         """The parsed document of a parameter file, rewritten as asked; None if unknown."""
+        if len(entry.path) == 1 and isinstance(entry.path[0], e.FileRef) and depth < 8:
+            document = self.param_file(entry.path[0].file, scope, where, depth + 1)
+            return None if document is None else self.rewrite(document, entry, scope, where)
         path = self.value(entry.path, scope, where)
         if path is None or path.literal is None:
             self.report("LAUNCH_PARAM_FILE", where,
@@ -248,6 +252,9 @@ class Runner:
             if not found:
                 self.report("LAUNCH_PARAM_FILE", where, detail=f"cannot read {file}")
             return None
+        text = self.replace(text, entry, scope, where)
+        if text is None:
+            return None
         try:
             document = yaml.safe_load(text)
         except yaml.YAMLError as err:
@@ -256,11 +263,34 @@ class Runner:
                 file, mark.line + 1 if mark else 0, mark.column + 1 if mark else 0),
                 detail=str(getattr(err, "problem", err)))
             return None
-        if file not in self.stack:
-            rel = self.workspace.relpath(file)
-            if rel not in self.model.files:
-                self.model.files.append(rel)
+        rel = self.workspace.relpath(file)
+        if rel not in self.model.files:
+            self.model.files.append(rel)
         return self.rewrite(document, entry, scope, where)
+
+    def replace(self, text: str, entry: e.ParamFile, scope: Scope,
+                where: Location) -> str | None:
+        """nav2_common's ``ReplaceString``: plain text replacements, if its condition holds."""
+        if not entry.replacements:
+            return text
+        truth = True if entry.condition is None else self.evaluator(scope, where).truth(
+            entry.condition)
+        if truth is False:
+            return text
+        if truth is None:
+            self.report("LAUNCH_PARAM_FILE", where,
+                        detail="text replacements in a parameter file under a condition "
+                               "not known statically")
+            return None
+        for old, new in entry.replacements:
+            before, after = self.value(old, scope, where), self.value(new, scope, where)
+            if before is None or after is None or before.literal is None or (
+                    after.literal is None):
+                self.report("LAUNCH_PARAM_FILE", where,
+                            detail="a text replacement in a parameter file is not known")
+                return None
+            text = text.replace(before.literal, after.literal)
+        return text
 
     def rewrite(self, document: Any, entry: e.ParamFile, scope: Scope,
                 where: Location) -> Any:

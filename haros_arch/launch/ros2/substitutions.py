@@ -262,11 +262,12 @@ class Evaluator:
         return None
 
     def s_Logic(self, s: e.Logic) -> Value:
-        if s.op == "equals":
+        if s.op in ("equals", "notequals"):
             left, right = (self.value(op) for op in s.operands)
             if left.literal is None or right.literal is None:
                 return Value.unknown("equals with unknown operands")
-            return Value.of(str(_normal(left.literal) == _normal(right.literal)).lower())
+            same = _normal(left.literal) == _normal(right.literal)
+            return Value.of(str(same != (s.op == "notequals")).lower())
         if s.op == "if":
             test = self.truth_of(self.value(s.operands[0]), "$(if)")
             if test is None:
@@ -310,6 +311,9 @@ class Evaluator:
                                    MAX_FILE_CONTENT)
         self.runner.model.diagnostics.extend(found)
         return Value.unknown("unreadable file") if content is None else Value.of(content)
+
+    def s_FileRef(self, s: e.FileRef) -> Value:
+        return self.value(s.file.path)
 
     def s_Opaque(self, s: e.Opaque) -> Value:
         if s.report:

@@ -1,0 +1,394 @@
+"""Compare ``haros_arch.launch`` with the real ROS 2 launch code on real launch files.
+
+The real side runs ros2/launch and ros2/launch_ros (jazzy) through the real
+``LaunchService`` in a scratch virtual environment, with process start intercepted:
+``Node.execute`` performs the node's substitutions and records what launch_ros computed
+(package, executable, name, namespace, remappings, parameters after parameter files and
+substitutions, via launch_ros's own ``to_parameters_list``), then starts nothing;
+``LoadComposableNodes.execute`` records each load request; ``ExecuteLocal.execute``
+starts nothing. ``rclpy``, message packages and ``ament_index_python`` are small
+stand-ins written by this script (the package index maps each package name to its
+source folder, as our workspace scan does). Our side runs ``haros_arch.launch.load``.
+
+Nothing fetched is committed and CI never runs this. To reproduce:
+
+1. Sources (any way of getting them; branch jazzy where there is one), in one folder
+   SRC: ``launch`` (github ros2/launch), ``launch_ros`` (ros2/launch_ros), and the launch
+   files to compare: ``demos`` (ros2/demos), ``navigation2`` (ros-navigation/navigation2,
+   at least nav2_bringup and nav2_common), ``turtlebot3`` (ROBOTIS-GIT/turtlebot3),
+   ``ros2_control_demos`` (ros-controls/ros2_control_demos).
+2. A scratch venv (not .venv)::
+
+       python3 -m venv /tmp/bench/venv
+       /tmp/bench/venv/bin/pip install pyyaml lark osrf-pycommon setuptools
+       for p in launch/launch launch/launch_xml launch/launch_yaml launch_ros/launch_ros; do
+           /tmp/bench/venv/bin/pip install --no-deps --no-build-isolation SRC/$p; done
+
+3. Run with our venv::
+
+       .venv/bin/python bench/launch_ros2_compare.py SRC --real-python /tmp/bench/venv/bin/python \\
+           --targets demos navigation2/nav2_bringup turtlebot3 ros2_control_demos
+
+It prints, per launch file, whether each side could run it, then the agreement per
+field over the nodes both sides found.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import textwrap
+from collections import Counter
+from typing import Any
+
+STANDIN_FILES = {
+    "standin_finder.py": '''
+import importlib.abc, importlib.machinery, sys, types
+from unittest import mock
+PREFIXES = ("rclpy", "composition_interfaces", "lifecycle_msgs", "rcl_interfaces",
+            "builtin_interfaces", "std_msgs", "launch_testing_ros", "rosgraph_msgs")
+class _Module(types.ModuleType):
+    def __getattr__(self, name):
+        if name.startswith("__"):
+            raise AttributeError(name)
+        value = mock.MagicMock(name=f"{self.__name__}.{name}")
+        setattr(self, name, value)
+        return value
+class Finder(importlib.abc.MetaPathFinder, importlib.abc.Loader):
+    def find_spec(self, name, path, target=None):
+        if name.split(".")[0] in PREFIXES and name != "rclpy.parameter":
+            return importlib.machinery.ModuleSpec(name, self, is_package=True)
+        return None
+    def create_module(self, spec):
+        module = _Module(spec.name)
+        module.__path__ = []
+        return module
+    def exec_module(self, module):
+        pass
+sys.meta_path.insert(0, Finder())
+''',
+    "rclpy_parameter.py": '''
+import enum
+class Parameter:
+    class Type(enum.Enum):
+        BOOL = 1
+        INTEGER = 2
+        DOUBLE = 3
+        STRING = 4
+        BYTE_ARRAY = 5
+        BOOL_ARRAY = 6
+        INTEGER_ARRAY = 7
+        DOUBLE_ARRAY = 8
+        STRING_ARRAY = 9
+        def check(self, v):
+            T = Parameter.Type
+            seq = isinstance(v, (list, tuple))
+            return {T.BOOL: isinstance(v, bool),
+                    T.INTEGER: isinstance(v, int) and not isinstance(v, bool),
+                    T.DOUBLE: isinstance(v, float), T.STRING: isinstance(v, str),
+                    T.BYTE_ARRAY: seq and all(isinstance(x, bytes) for x in v) and len(v) > 0,
+                    T.BOOL_ARRAY: seq and all(isinstance(x, bool) for x in v),
+                    T.INTEGER_ARRAY: seq and all(
+                        isinstance(x, int) and not isinstance(x, bool) for x in v),
+                    T.DOUBLE_ARRAY: seq and all(isinstance(x, float) for x in v),
+                    T.STRING_ARRAY: seq and all(isinstance(x, str) for x in v)}[self]
+    def __init__(self, name, type_=None, value=None):
+        self.name, self.type_, self.value = name, type_, value
+    def to_parameter_msg(self):
+        return (self.name, list(self.value) if isinstance(self.value, tuple) else self.value)
+''',
+    "ament_index_python/__init__.py": "",
+    "ament_index_python/packages.py": '''
+import json, os
+_MAP = json.loads(os.environ.get("BENCH_PACKAGES", "{}"))
+class PackageNotFoundError(KeyError):
+    pass
+def get_package_share_directory(name, print_warning=True):
+    if name not in _MAP:
+        raise PackageNotFoundError(name)
+    return _MAP[name]
+def get_package_prefix(name):
+    return os.path.dirname(get_package_share_directory(name))
+def get_packages_with_prefixes():
+    return {k: os.path.dirname(v) for k, v in _MAP.items()}
+''',
+}
+
+REAL_RUNNER = '''
+import json, os, sys
+sys.path.insert(0, os.environ["BENCH_STANDINS"])
+import standin_finder  # noqa: F401
+import importlib.util
+spec = importlib.util.spec_from_file_location(
+    "rclpy.parameter", os.path.join(os.environ["BENCH_STANDINS"], "rclpy_parameter.py"))
+param_module = importlib.util.module_from_spec(spec); spec.loader.exec_module(param_module)
+import rclpy
+sys.modules["rclpy.parameter"] = param_module; rclpy.parameter = param_module
+import launch, launch.actions
+from launch.utilities import perform_substitutions, normalize_to_list_of_substitutions
+from launch.launch_description_sources import AnyLaunchDescriptionSource
+from launch.launch_description_sources import PythonLaunchDescriptionSource
+import launch_ros.actions
+from launch_ros.actions import node as node_mod, load_composable_nodes as lcn
+from launch_ros.actions.composable_node_container import ComposableNodeContainer
+from launch_ros.utilities import evaluate_parameters, to_parameters_list
+from launch_ros.utilities.normalize_parameters import normalize_parameter_dict
+from launch_ros.parameter_descriptions import ParameterFile
+
+RECORDS = []
+
+def _value(v):
+    return list(v) if isinstance(v, tuple) else v
+
+def _params(context, name, ns, params):
+    collected = []
+    for param in context.launch_configurations.get("global_params", None) or []:
+        if isinstance(param, tuple):
+            collected.append(normalize_parameter_dict({param[0]: param[1]}))
+        else:
+            collected.append(ParameterFile(param))
+    collected.extend(params or [])
+    if not collected:
+        return {}
+    out = {}
+    evaluated = evaluate_parameters(context, collected)
+    for p in to_parameters_list(context, name or "", ns or "", evaluated):
+        out[p.name] = _value(p.value)
+    return out
+
+def node_execute(self, context):
+    self._perform_substitutions(context)
+    name = self._Node__expanded_node_name
+    ns = self._Node__expanded_node_namespace
+    if not ns or ns.startswith("<"):
+        ns = ""  # unspecified: the node runs in the root namespace
+    full = self.node_name.replace("<node_namespace_unspecified>", "")
+    RECORDS.append({
+        "name": full if full.startswith("/") else "/" + full, "package": perform_substitutions(
+            context, normalize_to_list_of_substitutions(self.node_package)),
+        "executable": perform_substitutions(
+            context, normalize_to_list_of_substitutions(self.node_executable)),
+        "namespace": ns or "/",
+        "remaps": [list(r) for r in (self._Node__expanded_remappings or [])],
+        "params": _params(context, name, ns, self._Node__parameters),
+        "container": None, "composable": False})
+    return None
+
+def load_execute(self, context):
+    target = self._LoadComposableNodes__target_container
+    if isinstance(target, ComposableNodeContainer):
+        container = target.node_name
+    else:
+        container = perform_substitutions(context, normalize_to_list_of_substitutions(target))
+    for description in self._LoadComposableNodes__composable_node_descriptions:
+        request = lcn.get_composable_node_load_request(description, context)
+        if request is None:
+            continue
+        ns = request.node_namespace if isinstance(request.node_namespace, str) else ""
+        name = request.node_name or "<node_name_unspecified>"
+        params = request.parameters if isinstance(request.parameters, list) else []
+        remaps = request.remap_rules if isinstance(request.remap_rules, list) else []
+        RECORDS.append({
+            "name": (ns.rstrip("/") + "/" + name) if ns else "/" + name,
+            "package": request.package_name, "executable": request.plugin_name,
+            "namespace": ns or "", "remaps": [r.split(":=", 1) for r in remaps],
+            "params": {k: _value(v) for k, v in params}, "container": container,
+            "composable": True})
+    return None
+
+class _Request:
+    """A fresh LoadNode request each time (the stand-in module would share one)."""
+
+    def __init__(self):
+        self.package_name = self.plugin_name = self.node_name = self.node_namespace = ""
+        self.remap_rules, self.parameters, self.extra_arguments = [], [], []
+
+lcn.composition_interfaces.srv.LoadNode.Request = _Request
+node_mod.Node.execute = node_execute
+launch_ros.actions.LifecycleNode.execute = node_execute
+lcn.LoadComposableNodes.execute = load_execute
+launch.actions.ExecuteLocal.execute = lambda self, context: None
+
+path = sys.argv[1]
+args = json.loads(sys.argv[2])
+service = launch.LaunchService(noninteractive=True, debug=bool(os.environ.get("BENCH_DEBUG")))
+source = (PythonLaunchDescriptionSource if path.endswith(".py") else AnyLaunchDescriptionSource)
+service.include_launch_description(launch.actions.IncludeLaunchDescription(
+    source(path), launch_arguments=list(args.items())))
+code = service.run(shutdown_when_idle=True)
+print("@@RESULT@@" + json.dumps({"code": code, "nodes": RECORDS}, default=str))
+'''
+
+
+def write_standins(folder: str) -> None:
+    for rel, text in STANDIN_FILES.items():
+        path = os.path.join(folder, rel)
+        os.makedirs(os.path.dirname(path), exist_ok=True)
+        with open(path, "w") as handle:
+            handle.write(textwrap.dedent(text))
+    with open(os.path.join(folder, "real_runner.py"), "w") as handle:
+        handle.write(REAL_RUNNER)
+
+
+def run_real(python: str, standins: str, path: str, packages: dict[str, str],
+             extra_path: list[str]) -> dict[str, Any]:
+    env = dict(os.environ, BENCH_STANDINS=standins, BENCH_PACKAGES=json.dumps(packages),
+               PYTHONPATH=os.pathsep.join(extra_path))
+    try:
+        done = subprocess.run([python, os.path.join(standins, "real_runner.py"), path, "{}"],
+                              capture_output=True, text=True, timeout=60, env=env)
+    except subprocess.TimeoutExpired:
+        return {"error": "timeout"}
+    for line in done.stdout.splitlines():
+        if line.startswith("@@RESULT@@"):
+            result: dict[str, Any] = json.loads(line[len("@@RESULT@@"):])
+            if result["code"] != 0:
+                result["error"] = _last_error(done.stderr + done.stdout)
+            return result
+    return {"error": _last_error(done.stderr)}
+
+
+def _last_error(text: str) -> str:
+    lines = [line for line in text.splitlines() if line.strip()]
+    errors = [line for line in lines if "[ERROR]" in line or "Error" in line]
+    return (errors or lines or ["no output"])[-1][:200]
+
+
+def run_ours(path: str, workspace: Any) -> dict[str, Any]:
+    from haros_arch.launch import load
+
+    model = load(path, workspace, {}, {})
+    params: dict[str, dict[str, Any]] = {}
+    for param in model.params:
+        params.setdefault(str(param.node), {})[str(param.key)] = param.value
+    nodes = []
+    for decl in model.nodes:
+        ns = decl.namespace.rstrip("/") or "/"
+        nodes.append({"name": decl.name, "package": decl.package,
+                      "executable": decl.executable, "namespace": ns,
+                      "remaps": [list(r) for r in decl.remaps],
+                      "params": params.get(decl.name, {}), "container": decl.container,
+                      "composable": decl.composable,
+                      "conditional": bool(decl.conditions)})
+    return {"nodes": nodes, "diagnostics": [str(d) for d in model.diagnostics]}
+
+
+def _norm(value: Any) -> Any:
+    if isinstance(value, str) and os.path.isabs(value) and os.path.exists(value):
+        return os.path.realpath(value)
+    if isinstance(value, list):
+        return [_norm(v) for v in value]
+    return value
+
+
+def compare(ours: list[dict[str, Any]], real: list[dict[str, Any]], tally: Counter[str],
+            notes: list[str]) -> None:
+    def key(node: dict[str, Any]) -> str:
+        return str(node["name"]).replace("<node_name_unspecified>", "?")
+
+    real_by = {key(n): n for n in real}
+    ours_by = {key(n): n for n in ours}
+    for name in sorted(set(real_by) | set(ours_by)):
+        tally["nodes.total"] += 1
+        if name not in ours_by:
+            tally["nodes.missing_in_ours"] += 1
+            notes.append(f"  only real: {name}")
+            continue
+        if name not in real_by:
+            tally["nodes.extra_in_ours"] += 1
+            conditional = " (conditional)" if ours_by[name].get("conditional") else ""
+            notes.append(f"  only ours: {name}{conditional}")
+            continue
+        tally["nodes.matched"] += 1
+        mine, theirs = ours_by[name], real_by[name]
+        for field in ("package", "executable", "namespace", "container"):
+            a, b = mine[field], theirs[field]
+            if field == "namespace" and theirs["composable"] and b == "":
+                b = a  # an empty request namespace: the container decides
+            same = a == b
+            tally[f"{field}.{'agree' if same else 'differ'}"] += 1
+            if not same:
+                notes.append(f"  {name} {field}: ours {a!r} real {b!r}")
+        same = mine["remaps"] == theirs["remaps"]
+        tally[f"remaps.{'agree' if same else 'differ'}"] += 1
+        if not same:
+            notes.append(f"  {name} remaps: ours {mine['remaps']} real {theirs['remaps']}")
+        for pname in sorted(set(mine["params"]) | set(theirs["params"])):
+            a, b = mine["params"].get(pname, "<absent>"), theirs["params"].get(pname, "<absent>")
+            same = _norm(a) == _norm(b)
+            tally[f"params.{'agree' if same else 'differ'}"] += 1
+            if not same:
+                notes.append(f"  {name} param {pname}: ours {a!r} real {b!r}"[:240])
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("src", help="folder with launch, launch_ros and the target repos")
+    parser.add_argument("--real-python", required=True, help="python of the scratch venv")
+    parser.add_argument("--targets", nargs="+", required=True,
+                        help="folders under SRC whose launch files are compared")
+    parser.add_argument("--limit", type=int, default=0)
+    parser.add_argument("-v", "--verbose", action="store_true")
+    options = parser.parse_args()
+    sys.path.insert(0, os.path.join(os.path.dirname(__file__), ".."))
+    from haros_arch.workspace import scan
+
+    roots = [os.path.join(options.src, t) for t in options.targets]
+    workspace = scan(roots, {})
+    packages = {name: pkg.root for name, pkg in workspace.packages.items()}
+    # launch reads its substitution grammar from share/launch/frontend/grammar.lark
+    packages.setdefault("launch", os.path.join(options.src, "launch", "launch", "share", "launch"))
+    extra_path = [os.path.join(options.src, "navigation2", "nav2_common")]
+    files: list[str] = []
+    for root in roots:
+        for folder, dirs, names in os.walk(root):
+            dirs[:] = [d for d in dirs if d not in ("test", "tests", ".git")]
+            for name in sorted(names):
+                if name.endswith((".launch.py", ".launch.xml", ".launch.yaml")) or (
+                        name.endswith("_launch.py") or (
+                            name.endswith(".py") and os.path.basename(folder) == "launch")):
+                    files.append(os.path.join(folder, name))
+    if options.limit:
+        files = files[:options.limit]
+    tally: Counter[str] = Counter()
+    with tempfile.TemporaryDirectory() as standins:
+        write_standins(standins)
+        for path in files:
+            rel = os.path.relpath(path, options.src)
+            real = run_real(options.real_python, standins, path, packages, extra_path)
+            ours = run_ours(path, workspace)
+            tally["files"] += 1
+            if "error" in real:
+                tally["files.real_failed"] += 1
+                print(f"{rel}: real launch failed: {real['error']}")
+                if options.verbose:
+                    print(f"  (ours: {len(ours['nodes'])} nodes)")
+                continue
+            tally["files.compared"] += 1
+            notes: list[str] = []
+            compare(ours["nodes"], real["nodes"], tally, notes)
+            status = "agree" if not notes else f"{len(notes)} difference(s)"
+            print(f"{rel}: {len(real['nodes'])} real / {len(ours['nodes'])} ours nodes: {status}")
+            if options.verbose or notes:
+                for note in (notes if options.verbose else notes[:40]):
+                    print(note)
+    print("\nsummary")
+    for key in sorted(tally):
+        print(f"  {key}: {tally[key]}")
+    for field in ("package", "executable", "namespace", "container", "remaps", "params"):
+        agree, differ = tally[f"{field}.agree"], tally[f"{field}.differ"]
+        if agree + differ:
+            print(f"  {field}: {agree}/{agree + differ} agree "
+                  f"({100.0 * agree / (agree + differ):.1f}%)")
+    matched, total = tally["nodes.matched"], tally["nodes.total"]
+    if total:
+        print(f"  node names: {matched}/{total} found by both ({100.0 * matched / total:.1f}%)")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
