@@ -47,22 +47,22 @@ def features_ws() -> Workspace:
 
 @pytest.fixture(scope="module")
 def active(paper_ws: Workspace) -> CppResult:
-    return extract_cpp([os.path.join(PAPER_SRC, "active.cpp")], paper_ws)
+    return extract_cpp([os.path.join(PAPER_SRC, "active.cpp")], paper_ws, cache_dir=None)
 
 
 @pytest.fixture(scope="module")
 def reactive(paper_ws: Workspace) -> CppResult:
-    return extract_cpp([os.path.join(PAPER_SRC, "reactive.cpp")], paper_ws)
+    return extract_cpp([os.path.join(PAPER_SRC, "reactive.cpp")], paper_ws, cache_dir=None)
 
 
 @pytest.fixture(scope="module")
 def names(features_ws: Workspace) -> CppResult:
-    return extract_cpp([os.path.join(FEATURES_SRC, "names.cpp")], features_ws)
+    return extract_cpp([os.path.join(FEATURES_SRC, "names.cpp")], features_ws, cache_dir=None)
 
 
 @pytest.fixture(scope="module")
 def conditions(features_ws: Workspace) -> CppResult:
-    return extract_cpp([os.path.join(FEATURES_SRC, "conditions.cpp")], features_ws)
+    return extract_cpp([os.path.join(FEATURES_SRC, "conditions.cpp")], features_ws, cache_dir=None)
 
 
 # -- the running example ---------------------------------------------------------------
@@ -104,7 +104,8 @@ def test_system_headers_give_the_same_calls(
 ) -> None:
     standin = request.getfixturevalue(source.removesuffix(".cpp"))
     workspace = request.getfixturevalue("paper_ws" if folder == PAPER_SRC else "features_ws")
-    real = extract_cpp([os.path.join(folder, source)], workspace, system_headers=True)
+    real = extract_cpp([os.path.join(folder, source)], workspace, system_headers=True,
+                       cache_dir=None)
     assert [summary(c) for c in real.calls] == [summary(c) for c in standin.calls]
     assert [c.location for c in real.calls] == [c.location for c in standin.calls]
     assert real.rosname == standin.rosname
@@ -189,7 +190,7 @@ def test_condition_location(conditions: CppResult) -> None:
 # -- bad input -------------------------------------------------------------------------
 
 def test_syntax_error_keeps_the_other_calls(features_ws: Workspace) -> None:
-    result = extract_cpp([os.path.join(FEATURES_SRC, "broken.cpp")], features_ws)
+    result = extract_cpp([os.path.join(FEATURES_SRC, "broken.cpp")], features_ws, cache_dir=None)
     errors = [d for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"]
     assert [(d.location.file, d.location.line) for d in errors] == [
         ("src/demo/src/broken.cpp", 9)]
@@ -197,7 +198,7 @@ def test_syntax_error_keeps_the_other_calls(features_ws: Workspace) -> None:
 
 
 def test_missing_include_gets_an_empty_stand_in(features_ws: Workspace) -> None:
-    result = extract_cpp([os.path.join(FEATURES_SRC, "missing.cpp")], features_ws)
+    result = extract_cpp([os.path.join(FEATURES_SRC, "missing.cpp")], features_ws, cache_dir=None)
     missing = [d for d in result.diagnostics if d.code == "CPP_INCLUDE_MISSING"]
     assert [(d.location.line, "acme_driver/driver.hpp" in d.message) for d in missing] == [
         (3, True)]
@@ -207,7 +208,7 @@ def test_missing_include_gets_an_empty_stand_in(features_ws: Workspace) -> None:
 
 
 def test_unreadable_source_is_a_diagnostic(features_ws: Workspace) -> None:
-    result = extract_cpp([os.path.join(FEATURES_SRC, "nope.cpp")], features_ws)
+    result = extract_cpp([os.path.join(FEATURES_SRC, "nope.cpp")], features_ws, cache_dir=None)
     assert result.calls == [] and codes(result) == ["FILE_UNREADABLE"]
 
 
@@ -220,6 +221,6 @@ def test_no_system_header_is_needed(
         raise AssertionError("the default mode must not look at the system's headers")
 
     monkeypatch.setattr(toolchain, "system_include_dirs", no_system)
-    again = extract_cpp([os.path.join(FEATURES_SRC, "names.cpp")], features_ws)
+    again = extract_cpp([os.path.join(FEATURES_SRC, "names.cpp")], features_ws, cache_dir=None)
     assert [summary(c) for c in again.calls] == [summary(c) for c in names.calls]
     assert codes(again) == codes(names)

@@ -48,17 +48,17 @@ def ros2_ws() -> Workspace:
 
 @pytest.fixture(scope="module")
 def libraries(ros1_ws: Workspace) -> CppResult:
-    return extract_cpp([os.path.join(ROS1_SRC, "libraries.cpp")], ros1_ws)
+    return extract_cpp([os.path.join(ROS1_SRC, "libraries.cpp")], ros1_ws, cache_dir=None)
 
 
 @pytest.fixture(scope="module")
 def talker(ros2_ws: Workspace) -> CppResult:
-    return extract_cpp([os.path.join(ROS2_SRC, "talker.cpp")], ros2_ws)
+    return extract_cpp([os.path.join(ROS2_SRC, "talker.cpp")], ros2_ws, cache_dir=None)
 
 
 @pytest.fixture(scope="module")
 def mover(ros2_ws: Workspace) -> CppResult:
-    return extract_cpp([os.path.join(ROS2_SRC, "mover.cpp")], ros2_ws)
+    return extract_cpp([os.path.join(ROS2_SRC, "mover.cpp")], ros2_ws, cache_dir=None)
 
 
 # -- ROS 1 libraries -------------------------------------------------------------------
@@ -107,7 +107,7 @@ def test_callbacks_of_library_calls(libraries: CppResult) -> None:
 @pytest.mark.skipif(not HAVE_ROS, reason="needs the ROS 1 headers in /usr/include")
 def test_ros1_libraries_with_system_headers(ros1_ws: Workspace, libraries: CppResult) -> None:
     real = extract_cpp([os.path.join(ROS1_SRC, "libraries.cpp")], ros1_ws,
-                       system_headers=True)
+                       system_headers=True, cache_dir=None)
     assert [row(c) for c in real.calls] == [row(c) for c in libraries.calls]
     assert [(c.name_param, c.name_default) for c in real.calls] == [
         (c.name_param, c.name_default) for c in libraries.calls]

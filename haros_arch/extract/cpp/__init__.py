@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import os
 from collections.abc import Sequence
+from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
 
 from clang.cindex import Cursor, TranslationUnit, TranslationUnitLoadError
@@ -22,7 +23,7 @@ from ...files import MAX_FILE_BYTES, read_text
 from ...model.location import Location
 from ...model.source import PrimitiveCall
 from ...workspace import Workspace
-from . import toolchain
+from . import cache, toolchain
 from .headers import STANDIN, IncludeSetup
 from .visitor import CallFinder
 
@@ -43,13 +44,21 @@ class CppResult:
 
 
 def extract_cpp(sources: list[str], workspace: Workspace, *,
-                include_dirs: Sequence[str] = (), system_headers: bool = False) -> CppResult:
-    """The roscpp calls in the translation units ``sources`` (absolute paths) of a node.
+                include_dirs: Sequence[str] = (), system_headers: bool = False,
+                cache_dir: str | None = cache.AUTO, jobs: int | None = None) -> CppResult:
+    """The ROS calls in the translation units ``sources`` (absolute paths) of a node.
 
     With ``system_headers`` the installed ROS headers are used instead of the stand-ins.
+    ``cache_dir`` is where results are kept between runs (``"auto"``: see
+    ``cache.default_folder``; None: no cache). ``jobs`` translation units are parsed at a
+    time in worker processes (default: the number of cores, at most the sources).
     """
     result = CppResult()
     setup = IncludeSetup(workspace, include_dirs, system_headers)
+    store = None
+    if cache_dir is not None:
+        folder = cache.default_folder(workspace.root) if cache_dir == cache.AUTO else cache_dir
+        store = cache.Cache(folder, setup.generated)
     try:
         texts: dict[str, str] = {}
         for path in sources:
@@ -59,24 +68,63 @@ def extract_cpp(sources: list[str], workspace: Workspace, *,
             if text is not None:
                 texts[path] = text
                 setup.scan(path, text)
-        found_calls: list[PrimitiveCall] = []
-        for path, text in texts.items():
-            _translation_unit(path, text, setup, workspace, result, found_calls)
+        units = _units(texts, setup, store, jobs)
     finally:
         setup.close()
     result.diagnostics[:0] = setup.diagnostics
     seen: set[tuple[object, ...]] = set()
-    for call in found_calls:
-        key = (call.kind, call.name, call.location)
-        if key not in seen:
-            seen.add(key)
-            result.calls.append(call)
+    for unit in units:
+        result.diagnostics.extend(d for d in unit.diagnostics if d not in result.diagnostics)
+        if unit.rosname is not None and result.rosname is None:
+            result.rosname = unit.rosname
+        for call in unit.calls:
+            key = (call.kind, call.name, call.location)
+            if key not in seen:
+                seen.add(key)
+                result.calls.append(call)
     return result
 
 
-def _translation_unit(path: str, text: str, setup: IncludeSetup, workspace: Workspace,
-                      result: CppResult, calls: list[PrimitiveCall]) -> None:
-    """Parse one source file and add what it gives to ``result`` and ``calls``."""
+def _units(texts: dict[str, str], setup: IncludeSetup, store: cache.Cache | None,
+           jobs: int | None) -> list[CppResult]:
+    """Each translation unit's result, from the cache or parsed (in parallel)."""
+    args = setup.arguments()
+    keys = {path: cache.key(setup.workspace.relpath(path), text, args, setup.generated)
+            for path, text in texts.items()}
+    done: dict[str, CppResult] = {}
+    if store is not None:
+        for path, entry in keys.items():
+            data = store.load(entry)
+            if data is not None:
+                try:
+                    calls, rosname, found = cache.from_data(data)
+                except (ValueError, TypeError, KeyError):
+                    continue
+                done[path] = CppResult(calls, rosname, found)
+    todo = [path for path in texts if path not in done]
+    workers = min(len(todo), jobs or os.cpu_count() or 1)
+    parsed: list[tuple[CppResult, list[str]]]
+    if workers > 1:
+        with ProcessPoolExecutor(max_workers=workers) as pool:
+            parsed = list(pool.map(_translation_unit, todo, [texts[p] for p in todo],
+                                   [setup] * len(todo)))
+    else:
+        parsed = [_translation_unit(path, texts[path], setup) for path in todo]
+    for path, (unit, headers) in zip(todo, parsed, strict=True):
+        done[path] = unit
+        if store is not None and headers:
+            store.store(keys[path], headers, cache.to_data(
+                unit.calls, unit.rosname, unit.diagnostics))
+    return [done[path] for path in texts]
+
+
+def _translation_unit(path: str, text: str,
+                      setup: IncludeSetup) -> tuple[CppResult, list[str]]:
+    """What one source file gives, and the workspace / synthesised headers it read
+    (empty when the result must not be cached)."""
+    workspace = setup.workspace
+    result = CppResult()
+    before = len(setup.diagnostics)
     data = text.encode("utf-8")
     source = SourceCache(workspace.root, {path: data})
 
@@ -95,7 +143,7 @@ def _translation_unit(path: str, text: str, setup: IncludeSetup, workspace: Work
 
     tu = _parse(path, text, setup, workspace, result)
     if tu is None:
-        return
+        return result, []
     errors = [d for d in tu.diagnostics if d.severity >= ClangDiagnostic.Error
               and d.location.file is not None and owned(d.location.file.name)]
     for error in errors[:MAX_ERRORS_PER_FILE]:
@@ -106,11 +154,19 @@ def _translation_unit(path: str, text: str, setup: IncludeSetup, workspace: Work
             detail=error.spelling))
     finder = CallFinder(tu, source, owned, where, ros2=setup.ros2)
     finder.run()
-    calls.extend(sorted(finder.calls, key=lambda c: (
-        c.location.file or "", c.location.line, c.location.column)))
+    result.calls = sorted(finder.calls, key=lambda c: (
+        c.location.file or "", c.location.line, c.location.column))
     result.diagnostics.extend(finder.diagnostics)
-    if finder.rosname is not None and result.rosname is None:
-        result.rosname = finder.rosname
+    result.diagnostics[:0] = setup.diagnostics[before:]
+    result.rosname = finder.rosname
+    headers = [path]
+    for include in tu.get_includes():
+        name = os.path.abspath(include.include.name)
+        if name.startswith((workspace.root + os.sep, setup.generated + os.sep)) or (
+            setup.system_headers and not name.startswith(STANDIN + os.sep)
+        ):
+            headers.append(name)
+    return result, sorted(set(headers))
 
 
 def _parse(path: str, text: str, setup: IncludeSetup, workspace: Workspace,

@@ -1,0 +1,148 @@
+"""A persistent cache of what each C++ translation unit gives.
+
+An entry is found by a key over the tool (our version, libclang's, the stand-in
+headers), the parse flags and the source text; it holds the calls, node name and
+diagnostics, and the content hash of every header the parse read from the workspace or
+synthesised. It is used only when all those headers are unchanged. Entries are JSON
+(never pickle: the cache lives in the analysed workspace, which we do not trust); one
+that does not read back is ignored.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import functools
+import hashlib
+import json
+import os
+import tempfile
+from collections.abc import Iterable
+from typing import Any
+
+from ... import __version__
+from ...diagnostics import Diagnostic
+from ...model.conditions import Condition
+from ...model.location import Location
+from ...model.source import PrimitiveCall
+from .headers import STANDIN
+
+AUTO = "auto"  # cache_dir value: the default folder (see ``default_folder``)
+FORMAT = 1
+GENERATED = "<generated>"
+
+
+def default_folder(workspace_root: str) -> str:
+    """``$XDG_CACHE_HOME/haros-arch`` (``~/.cache/haros-arch``); ``.haros-arch-cache`` in
+    the workspace when there is no home folder. Entries name files by absolute path, so
+    one folder serves every workspace."""
+    xdg = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
+    if xdg.startswith("~"):
+        return os.path.join(workspace_root, ".haros-arch-cache")
+    return os.path.join(xdg, "haros-arch")
+
+
+@functools.lru_cache(maxsize=1)
+def tool_version() -> str:
+    """Our version, libclang's, and a hash of the stand-in headers and of this
+    extractor's own code (so a changed extractor never reads an older one's entries)."""
+    from . import toolchain
+
+    digest = hashlib.sha256(f"{__version__}/{FORMAT}".encode())
+    try:
+        import clang.cindex as ci
+
+        version = ci.conf.lib.clang_getClangVersion()
+        digest.update(ci._CXString.from_result(version).encode())
+    except Exception:  # an old binding: the rest still keys the cache
+        digest.update(b"libclang")
+    here = os.path.dirname(os.path.abspath(__file__))
+    code: list[tuple[str, list[str], list[str]]] = [
+        (here, [], sorted(f for f in os.listdir(here) if f.endswith(".py")))]
+    for folder, _dirs, files in [*code, *sorted(os.walk(STANDIN))]:
+        for name in sorted(files):
+            path = os.path.join(folder, name)
+            digest.update(name.encode())
+            with open(path, "rb") as handle:
+                digest.update(handle.read())
+    digest.update(repr(toolchain.base_arguments(False)).encode())
+    return digest.hexdigest()
+
+
+def key(path: str, text: str, args: Iterable[str], generated: str) -> str:
+    digest = hashlib.sha256(tool_version().encode())
+    digest.update(path.encode() + b"\0" + text.encode("utf-8", "replace") + b"\0")
+    for arg in args:
+        digest.update(arg.replace(generated, GENERATED).encode() + b"\0")
+    return digest.hexdigest()
+
+
+def fingerprint(path: str) -> str | None:
+    """The content hash of a file, None when it cannot be read."""
+    try:
+        with open(path, "rb") as handle:
+            return hashlib.sha256(handle.read()).hexdigest()
+    except OSError:
+        return None
+
+
+class Cache:
+    """Entries in ``folder``; ``generated`` is this run's folder of synthesised headers."""
+
+    def __init__(self, folder: str, generated: str) -> None:
+        self.folder = os.path.join(folder, "cpp")
+        self.generated = generated
+
+    def load(self, entry: str) -> dict[str, Any] | None:
+        """The stored result for key ``entry`` if its headers are unchanged."""
+        try:
+            with open(os.path.join(self.folder, entry + ".json"), encoding="utf-8") as handle:
+                data = json.load(handle)
+            for name, digest in data["headers"]:
+                if fingerprint(name.replace(GENERATED, self.generated, 1)) != digest:
+                    return None
+            result: dict[str, Any] = data["result"]
+            return result
+        except (OSError, ValueError, KeyError, TypeError):
+            return None
+
+    def store(self, entry: str, headers: Iterable[str], result: dict[str, Any]) -> None:
+        listed = []
+        for name in headers:
+            digest = fingerprint(name)
+            if digest is None:
+                return
+            listed.append([name.replace(self.generated, GENERATED, 1), digest])
+        try:
+            os.makedirs(self.folder, exist_ok=True)
+            fd, temporary = tempfile.mkstemp(dir=self.folder, suffix=".tmp")
+            with os.fdopen(fd, "w", encoding="utf-8") as handle:
+                json.dump({"headers": listed, "result": result}, handle)
+            os.replace(temporary, os.path.join(self.folder, entry + ".json"))
+        except OSError:
+            pass  # a cache that cannot be written is no cache, not an error
+
+
+# -- the result as JSON ----------------------------------------------------------------
+
+def to_data(calls: list[PrimitiveCall], rosname: str | None,
+            diagnostics: list[Diagnostic]) -> dict[str, Any]:
+    return {"calls": [dataclasses.asdict(c) for c in calls], "rosname": rosname,
+            "diagnostics": [dataclasses.asdict(d) for d in diagnostics]}
+
+
+def from_data(data: dict[str, Any]) -> tuple[list[PrimitiveCall], str | None, list[Diagnostic]]:
+    """Raises ValueError / TypeError / KeyError for data that is not ours."""
+    calls = []
+    for item in data["calls"]:
+        item = dict(item)
+        item["location"] = Location(**item["location"])
+        item["conditions"] = tuple(
+            Condition(**{**c, "location": Location(**c["location"])})
+            for c in item["conditions"])
+        calls.append(PrimitiveCall(**item))
+    diagnostics = [Diagnostic(**{**d, "location": Location(**d["location"])})
+                   for d in data["diagnostics"]]
+    rosname = data["rosname"]
+    if rosname is not None and not isinstance(rosname, str):
+        raise TypeError("rosname")
+    return calls, rosname, diagnostics
