@@ -220,6 +220,12 @@ CATALOGUE: dict[str, Entry] = {
         "warning", "node type {node} is not in the workspace; its interface is unknown",
         "A launch file starts an executable that no workspace package builds; the "
         "instance is kept without publishers, subscribers or other links."),
+    "NODE_PACKAGE_UNKNOWN": Entry(
+        "warning", "package {name} of node {node} is neither in the workspace nor "
+                   "installed; its interface is unknown",
+        "A launch file starts a node from a package this machine does not have (it may "
+        "be installed where the system runs). The instance is kept without links; "
+        "describe it with hints if it matters."),
     "NODE_NAME_DUPLICATE": Entry(
         "error", "node name {name} is used twice (also at {other})",
         "Two node instances of one configuration resolve to the same name; at run time "

@@ -84,7 +84,7 @@ def test_launch_parameters_and_unknown_nodes():
     assert (param.name, param.value, param.type, param.writer_names) == (
         "/frequency", 1.0, "double", ["<launch>"])
     assert config.nodes[0].node is None
-    assert [d.code for d in config.diagnostics] == ["PACKAGE_NOT_FOUND"]
+    assert [d.code for d in config.diagnostics] == ["NODE_PACKAGE_UNKNOWN"]
 
 
 def test_duplicate_node_names_are_reported():
@@ -105,3 +105,21 @@ def test_ros2_parameters_belong_to_their_node():
         ("/arm/ctrl/gains.kp", 2.0, ["/arm/ctrl"])]
     assert [t.name for t in config.topics] == ["/arm/out"]
     assert config.nodes[0].ros_version == 2
+
+
+def test_nodelets_loaded_by_the_nodelet_executable_get_their_interface():
+    plugin = node("stereo", "stereo/disparity", call("publish", "disparity", "x/Disparity"))
+    plugin.kind = "nodelet"
+    config = graph([
+        NodeDecl("/manager", "nodelet", "nodelet", args="manager"),
+        NodeDecl("/cam/disparity", "nodelet", "nodelet", "/cam/",
+                 args="load stereo/disparity /manager"),
+        NodeDecl("/cam/other", "nodelet", "nodelet", "/cam/",
+                 args="standalone stereo/missing"),
+    ], nodes=[plugin])
+    assert [t.name for t in config.topics] == ["/cam/disparity"]
+    assert config.node("/cam/disparity").node is plugin
+    assert config.node("/manager").node is None
+    assert [(d.code, d.message) for d in config.diagnostics] == [
+        ("NODE_PACKAGE_UNKNOWN", "package stereo of node stereo/missing is neither in "
+                                 "the workspace nor installed; its interface is unknown")]

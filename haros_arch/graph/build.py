@@ -117,18 +117,33 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
 
 def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
               config: Configuration) -> NodeInstance:
-    node = nodes.get(f"{decl.package}/{decl.executable}")
-    if node is None:
-        if workspace.find(decl.package) is None:
-            config.diagnostics.append(diag.make("PACKAGE_NOT_FOUND", decl.location,
-                                                name=decl.package))
-        else:
-            config.diagnostics.append(diag.make(
-                "NODE_NOT_FOUND", decl.location, node=f"{decl.package}/{decl.executable}"))
+    key = f"{decl.package}/{decl.executable}"
+    plugin = nodelet_plugin(decl)
+    if plugin is not None:
+        key = f"{plugin.partition('/')[0]}/{plugin}"
+    node = nodes.get(key)
+    if node is None and plugin is None and decl.package == "nodelet":
+        pass  # a nodelet manager: its interface is what the nodelets loaded into it do
+    elif node is None and workspace.find(key.partition("/")[0]) is None:
+        config.diagnostics.append(diag.make("NODE_PACKAGE_UNKNOWN", decl.location,
+                                            name=key.partition("/")[0], node=plugin or key))
+    elif node is None:
+        config.diagnostics.append(diag.make("NODE_NOT_FOUND", decl.location,
+                                            node=plugin or key))
     remaps = list(decl.remaps) + remaps_in_args(decl.args)
     return NodeInstance(decl.name, node, namespace=decl.namespace, remaps=remaps,
                         args=decl.args, conditions=decl.conditions, location=decl.location,
                         ros_version=getattr(decl, "ros_version", 1))
+
+
+def nodelet_plugin(decl: NodeDecl) -> str | None:
+    """``pkg/Name`` for ``<node pkg="nodelet" type="nodelet" args="load pkg/Name mgr">``."""
+    if (decl.package, decl.executable) != ("nodelet", "nodelet"):
+        return None
+    words = decl.args.split()
+    if len(words) >= 2 and words[0] in ("load", "standalone") and "/" in words[1]:
+        return words[1]
+    return None
 
 
 def link(instance: NodeInstance, call: PrimitiveCall, remaps: Mapping[str, str],
