@@ -18,14 +18,28 @@ def model():
 
 def test_both_configurations_and_the_monitor_switch(model):
     robot, without = model.configurations
-    assert [n.name for n in robot.nodes] == ["/robot1/driver", "/robot1/controller",
-                                             "/monitor"]
-    assert [n.name for n in without.nodes] == ["/robot2/driver", "/robot2/controller"]
+    assert [n.name for n in robot.nodes] == ["/robot1/driver", "/robot1/battery",
+                                             "/robot1/controller", "/monitor"]
+    assert [n.name for n in without.nodes] == ["/robot2/driver", "/robot2/battery",
+                                               "/robot2/controller"]
 
 
-def test_foreach_in_cmake_finds_all_three_nodes(model):
+def test_foreach_in_cmake_and_the_python_script_give_all_nodes(model):
     assert sorted(n.name for n in model.nodes) == [
-        "demo_robot/controller", "demo_robot/driver", "demo_robot/monitor"]
+        "demo_robot/battery_monitor.py", "demo_robot/controller", "demo_robot/driver",
+        "demo_robot/monitor"]
+
+
+def test_the_python_node_joins_the_graph(model):
+    robot = model.configurations[0]
+    battery = robot.node("/robot1/battery")
+    assert battery is not None and battery.node.language == "python"
+    assert sorted((link.kind, link.name) for link in battery.links) == [
+        ("client", "/robot1/driver/reset"), ("publish", "/robot1/battery/low"),
+        ("read", "/robot1/battery/threshold"), ("subscribe", "/robot1/battery/level")]
+    low = robot.topic("/robot1/battery/low")
+    assert low.publishers[0].latch is True
+    assert robot.parameter("/robot1/battery/threshold").value == 0.25
 
 
 def test_the_planted_mistakes_are_visible(model):
@@ -43,6 +57,6 @@ def test_private_handles_and_conditional_client(model):
     robot = model.configurations[0]
     reset = robot.service("/robot1/driver/reset")
     assert reset is not None
-    (client,) = reset.clients
+    client = next(link for link in reset.clients if link.node.name == "/robot1/controller")
     assert [(c.statement, c.text) for c in client.conditions] == [("if", "use_reset")]
     assert robot.parameter("/robot1/driver/port").value == "/dev/ttyUSB0"
