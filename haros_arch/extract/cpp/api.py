@@ -67,6 +67,9 @@ class RosFunction:
     siblings: tuple[Sibling, ...] = ()
     # each of the following calls is made once per element of a list or map argument
     per_element: bool = False
+    # overloads that take the name at another index: the first of these indexes whose
+    # argument is a string is the name (rclcpp_action's node-interfaces overloads)
+    name_candidates: tuple[int, ...] = ()
 
 
 NODE_HANDLE = "ros::NodeHandle"
@@ -135,9 +138,11 @@ LIBRARIES: dict[tuple[str, str], RosFunction] = {
         "action-client", type_from=("class",), action_type=True, on_handle=False,
         optional_handle=True),
     ("rclcpp_action", "create_server"): RosFunction(
-        "action-server", type_from=("template",), on_handle=False, handle_arg=0, name_arg=1),
+        "action-server", type_from=("template",), on_handle=False, name_arg=1,
+        name_candidates=(1, 4)),
     ("rclcpp_action", "create_client"): RosFunction(
-        "action-client", type_from=("template",), on_handle=False, handle_arg=0, name_arg=1),
+        "action-client", type_from=("template",), on_handle=False, name_arg=1,
+        name_candidates=(1, 4)),
     ("image_transport::ImageTransport", "advertise"): RosFunction(
         "publish", fixed_type=_IMAGE, queue_arg=1, latch_arg=2),
     ("image_transport::ImageTransport", "subscribe"): RosFunction(

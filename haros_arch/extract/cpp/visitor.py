@@ -158,7 +158,9 @@ class CallFinder:
         if self.rosname is not None or name_arg >= len(args):
             return
         name = render(scope.string(args[name_arg]))
-        if ns_arg < len(args) and strip(args[ns_arg]).type.spelling != "rclcpp::NodeOptions":
+        if ns_arg < len(args) and (
+            strip(args[ns_arg]).type.get_canonical().get_declaration().spelling != "NodeOptions"
+        ):
             namespace = render(scope.string(args[ns_arg])).strip("/")
             if namespace:
                 name = f"/{namespace}/{name}"
@@ -187,6 +189,10 @@ class CallFinder:
             names = [(spec.fixed_name, None)]
         else:
             name_expr = arg(spec.name_arg)
+            for index in spec.name_candidates:
+                if index < len(args) and msg_types.param_type(args[index].type) == "str":
+                    name_expr = args[index]
+                    break
             if name_expr is None:
                 return
             names = self._names(spec, call, name_expr, args, scope)

@@ -45,7 +45,7 @@ enum class ParameterType { PARAMETER_NOT_SET, PARAMETER_BOOL, PARAMETER_INTEGER,
 class ParameterValue {
 public:
   ParameterValue();
-  template<class T> explicit ParameterValue(const T& v);
+  template<class T> ParameterValue(const T& v);
   ParameterType get_type() const;
   template<class T> T get() const;
 };
@@ -252,6 +252,8 @@ class NodeServicesInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeServicesI
 class NodeTimersInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeTimersInterface) };
 class NodeWaitablesInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeWaitablesInterface) };
 struct OnSetParametersCallbackHandle { RCLCPP_SMART_PTR_DEFINITIONS(OnSetParametersCallbackHandle) };
+struct PreSetParametersCallbackHandle { RCLCPP_SMART_PTR_DEFINITIONS(PreSetParametersCallbackHandle) };
+struct PostSetParametersCallbackHandle { RCLCPP_SMART_PTR_DEFINITIONS(PostSetParametersCallbackHandle) };
 }
 using OnSetParametersCallbackHandle = node_interfaces::OnSetParametersCallbackHandle;
 // the node: its primitives are what the extractor's API table lists
@@ -293,7 +295,8 @@ using OnSetParametersCallbackHandle = node_interfaces::OnSetParametersCallbackHa
           rcl_interfaces::msg::ParameterDescriptor(), bool ignore_override = false); \
   template<class T> auto declare_parameter(const std::string& name, const T& default_value, \
       const rcl_interfaces::msg::ParameterDescriptor& descriptor = \
-          rcl_interfaces::msg::ParameterDescriptor(), bool ignore_override = false) -> T; \
+          rcl_interfaces::msg::ParameterDescriptor(), bool ignore_override = false) \
+      -> typename std::enable_if<!__is_array(T), T>::type; \
   template<class T> std::vector<T> declare_parameters(const std::string& ns, \
       const std::map<std::string, T>& parameters, bool ignore_overrides = false); \
   void undeclare_parameter(const std::string& name); \
@@ -312,6 +315,10 @@ using OnSetParametersCallbackHandle = node_interfaces::OnSetParametersCallbackHa
       const std::vector<rclcpp::Parameter>& p); \
   template<class C> rclcpp::OnSetParametersCallbackHandle::SharedPtr \
       add_on_set_parameters_callback(C callback); \
+  template<class C> rclcpp::node_interfaces::PreSetParametersCallbackHandle::SharedPtr \
+      add_pre_set_parameters_callback(C callback); \
+  template<class C> rclcpp::node_interfaces::PostSetParametersCallbackHandle::SharedPtr \
+      add_post_set_parameters_callback(C callback); \
   rclcpp::node_interfaces::NodeBaseInterface::SharedPtr get_node_base_interface(); \
   rclcpp::node_interfaces::NodeTopicsInterface::SharedPtr get_node_topics_interface(); \
   rclcpp::node_interfaces::NodeParametersInterface::SharedPtr get_node_parameters_interface(); \
@@ -361,6 +368,30 @@ template<class N, class F, class R, class P> FutureReturnCode spin_until_future_
     std::shared_ptr<N> node, const F& future, std::chrono::duration<R, P> timeout);
 namespace contexts { class DefaultContext { public: RCLCPP_SMART_PTR_DEFINITIONS(DefaultContext) }; }
 class Event { public: RCLCPP_SMART_PTR_DEFINITIONS(Event) };
+class SyncParametersClient {
+public:
+  RCLCPP_SMART_PTR_DEFINITIONS(SyncParametersClient)
+  template<class... A> explicit SyncParametersClient(A&&... args);
+  template<class R = long, class P = std::ratio<1>>
+  bool wait_for_service(std::chrono::duration<R, P> timeout = std::chrono::duration<R, P>(-1));
+  std::vector<Parameter> get_parameters(const std::vector<std::string>& names);
+  std::vector<rcl_interfaces::msg::SetParametersResult> set_parameters(
+      const std::vector<Parameter>& parameters);
+  template<class T> T get_parameter(const std::string& name, const T& default_value);
+  bool has_parameter(const std::string& name);
+};
+class AsyncParametersClient : public SyncParametersClient {
+public:
+  RCLCPP_SMART_PTR_DEFINITIONS(AsyncParametersClient)
+  template<class... A> explicit AsyncParametersClient(A&&... args);
+};
+class ParameterEventHandler {
+public:
+  template<class N> explicit ParameterEventHandler(N node);
+  template<class C> std::shared_ptr<void> add_parameter_callback(const std::string& name, C cb,
+      const std::string& node_name = "");
+  template<class C> std::shared_ptr<void> add_parameter_event_callback(C cb);
+};
 class WaitSet { public: WaitSet(); };
 }  // namespace rclcpp
 #define HAROS_RCLCPP_LOG(logger, ...) ::rclcpp::haros::log(logger, __VA_ARGS__)

@@ -63,5 +63,11 @@ typename Server<A>::SharedPtr create_server(N node, const std::string& name, G h
 template<class A, class N>
 typename Client<A>::SharedPtr create_client(N node, const std::string& name,
     rclcpp::CallbackGroup::SharedPtr group = nullptr);
+template<class A, class B, class G, class L, class W>
+typename Client<A>::SharedPtr create_client(B base, G graph, L logging, W waitables,
+    const std::string& name, rclcpp::CallbackGroup::SharedPtr group = nullptr);
+template<class A, class B, class C, class L, class W, class G, class X, class H>
+typename Server<A>::SharedPtr create_server(B base, C clock, L logging, W waitables,
+    const std::string& name, G handle_goal, X handle_cancel, H handle_accepted, ...);
 }
 #endif

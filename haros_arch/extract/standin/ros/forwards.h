@@ -7,6 +7,8 @@
 #include <vector>
 #include <boost/shared_ptr.hpp>
 #include <boost/function.hpp>
+#include <boost/bind/bind.hpp>
+#include <boost/thread.hpp>
 namespace ros {
 typedef std::map<std::string, std::string> M_string;
 typedef std::vector<std::string> V_string;
@@ -17,6 +19,17 @@ class ServiceServer;
 class ServiceClient;
 class Timer;
 class CallbackQueueInterface;
+class SingleSubscriberPublisher {
+public:
+  template<class M> void publish(const M& message) const;
+  std::string getTopic() const;
+  std::string getSubscriberName() const;
+};
+typedef boost::function<void(const SingleSubscriberPublisher&)> SubscriberStatusCallback;
+typedef std::vector<Publisher> V_Publisher;
+typedef std::vector<Subscriber> V_Subscriber;
+typedef std::vector<ServiceServer> V_ServiceServer;
+typedef std::vector<ServiceClient> V_ServiceClient;
 class TransportHints {
 public:
   TransportHints();

@@ -26,6 +26,11 @@ public:
   // topics
   template<class M>
   Publisher advertise(const std::string& topic, uint32_t queue_size, bool latch = false);
+  template<class M>
+  Publisher advertise(const std::string& topic, uint32_t queue_size,
+                      const SubscriberStatusCallback& connect_cb,
+                      const SubscriberStatusCallback& disconnect_cb = SubscriberStatusCallback(),
+                      const VoidConstPtr& tracked_object = VoidConstPtr(), bool latch = false);
   template<class M, class T>
   Subscriber subscribe(const std::string& topic, uint32_t queue_size, void (T::*fp)(M),
                        T* obj, const TransportHints& hints = TransportHints());
@@ -35,6 +40,14 @@ public:
   template<class M, class T>
   Subscriber subscribe(const std::string& topic, uint32_t queue_size, void (T::*fp)(M),
                        const boost::shared_ptr<T>& obj,
+                       const TransportHints& hints = TransportHints());
+  template<class M, class T>
+  Subscriber subscribe(const std::string& topic, uint32_t queue_size,
+                       void (T::*fp)(const boost::shared_ptr<M const>&), T* obj,
+                       const TransportHints& hints = TransportHints());
+  template<class M>
+  Subscriber subscribe(const std::string& topic, uint32_t queue_size,
+                       void (*fp)(const boost::shared_ptr<M const>&),
                        const TransportHints& hints = TransportHints());
   template<class M>
   Subscriber subscribe(const std::string& topic, uint32_t queue_size, void (*fp)(M),

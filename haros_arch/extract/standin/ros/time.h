@@ -30,6 +30,7 @@ public:
   explicit Time(double t);
   Time(uint32_t s, uint32_t n);
   static Time now();
+  static void init();
   static bool isValid();
   static bool waitForValid();
   double toSec() const;

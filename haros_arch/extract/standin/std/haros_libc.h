@@ -58,6 +58,12 @@ typedef __builtin_va_list va_list;
 #define EXIT_FAILURE 1
 #define RAND_MAX 2147483647
 #define EOF (-1)
+#define BUFSIZ 8192
+#define _IONBF 2
+#define _IOLBF 1
+#define _IOFBF 0
+#define SCHED_FIFO 1
+#define SCHED_RR 2
 #define SIGINT 2
 #define SIGTERM 15
 #define SIG_DFL ((void (*)(int))0)
@@ -65,6 +71,16 @@ typedef __builtin_va_list va_list;
 #define errno (*__errno_location())
 #define assert(expr) ((void)(expr))
 #define CLOCK_MONOTONIC 1
+#define ICANON 2
+#define ECHO 8
+#define TCSANOW 0
+#define VMIN 6
+#define VTIME 5
+#define VEOL 11
+#define VEOF 4
+#define POLLIN 1
+#define O_RDWR 2
+#define O_RDONLY 0
 #define CLOCK_REALTIME 0
 extern "C" {
 int* __errno_location();
@@ -88,6 +104,8 @@ size_t fread(void* ptr, size_t size, size_t n, FILE* stream);
 size_t fwrite(const void* ptr, size_t size, size_t n, FILE* stream);
 char* fgets(char* s, int size, FILE* stream);
 int fflush(FILE* stream);
+int setvbuf(FILE* stream, char* buf, int mode, size_t size);
+struct sched_param { int sched_priority; };
 void perror(const char* s);
 void* malloc(size_t size);
 void* calloc(size_t n, size_t size);
@@ -178,6 +196,12 @@ int close(int fd);
 ssize_t read(int fd, void* buf, size_t count);
 ssize_t write(int fd, const void* buf, size_t count);
 int open(const char* path, int flags, ...);
+struct termios { unsigned c_iflag, c_oflag, c_cflag, c_lflag; unsigned char c_cc[32]; };
+int tcgetattr(int fd, struct termios* t);
+int tcsetattr(int fd, int when, const struct termios* t);
+struct pollfd { int fd; short events; short revents; };
+int poll(struct pollfd* fds, unsigned long n, int timeout);
+int ioctl(int fd, unsigned long request, ...);
 typedef void (*sighandler_t)(int);
 sighandler_t signal(int signum, sighandler_t handler);
 }
