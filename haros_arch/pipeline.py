@@ -11,6 +11,7 @@ from collections.abc import Mapping
 from . import cmake, graph, launch, pysetup
 from . import diagnostics as diag
 from .extract import extract_node
+from .graph.build import nodelet_plugin
 from .launch.model import LaunchModel
 from .model.location import Location
 from .model.model import Model
@@ -36,7 +37,9 @@ def analyse(project: Project, environment: Mapping[str, str] | None = None) -> M
             model.diagnostics.append(diag.make(
                 "PACKAGE_NOT_FOUND", Location(file=os.path.relpath(project.path)), name=name))
     for launched in launches.values():
-        wanted.extend(decl.package for decl in launched.nodes)
+        for decl in launched.nodes:
+            plugin = nodelet_plugin(decl)
+            wanted.append(plugin.partition("/")[0] if plugin else decl.package)
     nodes: dict[str, Node] = {}
     for name in dict.fromkeys(wanted):
         package = workspace.packages.get(name)
