@@ -102,6 +102,20 @@ class Parameter:
         return (self.name, list(self.value) if isinstance(self.value, tuple) else self.value)
 ''',
     "ament_index_python/__init__.py": "",
+    "ament_index_python/resources.py": '''
+import json, os
+_MAP = json.loads(os.environ.get("BENCH_PACKAGES", "{}"))
+def has_resource(kind, name):
+    return kind == "packages" and name in _MAP
+def get_resource(kind, name):
+    if not has_resource(kind, name):
+        raise LookupError(name)
+    return "", os.path.dirname(_MAP[name])
+def get_resources(kind):
+    return {k: os.path.dirname(v) for k, v in _MAP.items()} if kind == "packages" else {}
+''',
+    "bin/xacro": "#!/bin/sh\necho '<robot name=\"standin\"/>'\n",
+    "bin/ros2": "#!/bin/sh\nexit 0\n",
     "ament_index_python/packages.py": '''
 import json, os
 _MAP = json.loads(os.environ.get("BENCH_PACKAGES", "{}"))
@@ -230,14 +244,18 @@ def write_standins(folder: str) -> None:
         os.makedirs(os.path.dirname(path), exist_ok=True)
         with open(path, "w") as handle:
             handle.write(textwrap.dedent(text))
+        if rel.startswith("bin/"):
+            os.chmod(path, 0o755)
     with open(os.path.join(folder, "real_runner.py"), "w") as handle:
         handle.write(REAL_RUNNER)
 
 
 def run_real(python: str, standins: str, path: str, packages: dict[str, str],
-             extra_path: list[str]) -> dict[str, Any]:
+             extra_path: list[str], given_env: dict[str, str]) -> dict[str, Any]:
     env = dict(os.environ, BENCH_STANDINS=standins, BENCH_PACKAGES=json.dumps(packages),
-               PYTHONPATH=os.pathsep.join(extra_path))
+               PYTHONPATH=os.pathsep.join(extra_path),
+               PATH=os.path.join(standins, "bin") + os.pathsep + os.environ.get("PATH", ""))
+    env.update(given_env)
     try:
         done = subprocess.run([python, os.path.join(standins, "real_runner.py"), path, "{}"],
                               capture_output=True, text=True, timeout=60, env=env)
@@ -258,20 +276,25 @@ def _last_error(text: str) -> str:
     return (errors or lines or ["no output"])[-1][:200]
 
 
-def run_ours(path: str, workspace: Any) -> dict[str, Any]:
+def run_ours(path: str, workspace: Any, env: dict[str, str]) -> dict[str, Any]:
     from haros_arch.launch import load
 
-    model = load(path, workspace, {}, {})
-    params: dict[str, dict[str, Any]] = {}
+    model = load(path, workspace, {}, env)
+    # parameters go to the node of that name; unnamed nodes ('/?') share a name, so
+    # those go to the one declared at the same place
+    params: dict[int, dict[str, Any]] = {}
     for param in model.params:
-        params.setdefault(str(param.node), {})[str(param.key)] = param.value
+        same = [i for i, d in enumerate(model.nodes) if d.name == param.node]
+        here = [i for i in same if model.nodes[i].location == param.location]
+        if same:
+            params.setdefault((here or same)[0], {})[str(param.key)] = param.value
     nodes = []
-    for decl in model.nodes:
+    for index, decl in enumerate(model.nodes):
         ns = decl.namespace.rstrip("/") or "/"
         nodes.append({"name": decl.name, "package": decl.package,
                       "executable": decl.executable, "namespace": ns,
                       "remaps": [list(r) for r in decl.remaps],
-                      "params": params.get(decl.name, {}), "container": decl.container,
+                      "params": params.get(index, {}), "container": decl.container,
                       "composable": decl.composable,
                       "conditional": bool(decl.conditions)})
     return {"nodes": nodes, "diagnostics": [str(d) for d in model.diagnostics]}
@@ -290,8 +313,16 @@ def compare(ours: list[dict[str, Any]], real: list[dict[str, Any]], tally: Count
     def key(node: dict[str, Any]) -> str:
         return str(node["name"]).replace("<node_name_unspecified>", "?")
 
-    real_by = {key(n): n for n in real}
-    ours_by = {key(n): n for n in ours}
+    def keyed(nodes: list[dict[str, Any]]) -> dict[str, dict[str, Any]]:
+        out: dict[str, dict[str, Any]] = {}
+        for node in nodes:  # same names (unnamed nodes): pair them in launch order
+            name, index = key(node), 1
+            while (name if index == 1 else f"{name}#{index}") in out:
+                index += 1
+            out[name if index == 1 else f"{name}#{index}"] = node
+        return out
+
+    real_by, ours_by = keyed(real), keyed(ours)
     for name in sorted(set(real_by) | set(ours_by)):
         tally["nodes.total"] += 1
         if name not in ours_by:
@@ -332,6 +363,10 @@ def main() -> int:
     parser.add_argument("--targets", nargs="+", required=True,
                         help="folders under SRC whose launch files are compared")
     parser.add_argument("--limit", type=int, default=0)
+    parser.add_argument("--launch-share", help="share/launch of the launch sources used "
+                        "(default SRC/launch/launch/share/launch)")
+    parser.add_argument("--env", action="append", default=[], metavar="NAME=VALUE",
+                        help="environment for both sides (e.g. TURTLEBOT3_MODEL=burger)")
     parser.add_argument("-v", "--verbose", action="store_true")
     options = parser.parse_args()
     sys.path.insert(0, os.path.join(os.path.dirname(__file__), ".."))
@@ -341,16 +376,19 @@ def main() -> int:
     workspace = scan(roots, {})
     packages = {name: pkg.root for name, pkg in workspace.packages.items()}
     # launch reads its substitution grammar from share/launch/frontend/grammar.lark
-    packages.setdefault("launch", os.path.join(options.src, "launch", "launch", "share", "launch"))
+    packages.setdefault("launch", options.launch_share or os.path.join(
+        options.src, "launch", "launch", "share", "launch"))
+    given_env = dict(item.split("=", 1) for item in options.env)
     extra_path = [os.path.join(options.src, "navigation2", "nav2_common")]
     files: list[str] = []
     for root in roots:
         for folder, dirs, names in os.walk(root):
             dirs[:] = [d for d in dirs if d not in ("test", "tests", ".git")]
             for name in sorted(names):
-                if name.endswith((".launch.py", ".launch.xml", ".launch.yaml")) or (
-                        name.endswith("_launch.py") or (
-                            name.endswith(".py") and os.path.basename(folder) == "launch")):
+                if name.endswith((".launch.py", ".launch.xml", ".launch.yaml", "_launch.py",
+                                  "_launch.xml", "_launch.yaml")) or (
+                        name.endswith((".py", ".xml", ".yaml"))
+                        and os.path.basename(folder) == "launch"):
                     files.append(os.path.join(folder, name))
     if options.limit:
         files = files[:options.limit]
@@ -359,8 +397,9 @@ def main() -> int:
         write_standins(standins)
         for path in files:
             rel = os.path.relpath(path, options.src)
-            real = run_real(options.real_python, standins, path, packages, extra_path)
-            ours = run_ours(path, workspace)
+            real = run_real(options.real_python, standins, path, packages, extra_path,
+                            given_env)
+            ours = run_ours(path, workspace, given_env)
             tally["files"] += 1
             if "error" in real:
                 tally["files.real_failed"] += 1

@@ -201,3 +201,40 @@ def test_hostile_sources_are_refused_before_interpretation(write_tree):
     broken, _ = run(write_tree, "def generate_launch_description(:\n")
     assert codes(broken) == ["LAUNCH_PY_SYNTAX"]
     assert broken.diagnostics[0].location.line > 0
+
+
+def test_event_handlers_and_rewritten_parameter_files(write_tree):
+    model, _ = run(write_tree, """
+from launch.actions import RegisterEventHandler
+from launch.event_handlers import OnProcessExit
+from launch_ros.descriptions import ParameterFile
+from nav2_common.launch import ReplaceString, RewrittenYaml
+
+def generate_launch_description():
+    ns = LaunchConfiguration('ns')
+    base = os.path.join(get_package_share_directory('pkg'), 'config', 'robot.yaml')
+    replaced = ReplaceString(source_file=base, replacements={'<robot>': ('/', ns)},
+                             condition=IfCondition(LaunchConfiguration('use_ns')))
+    params = ParameterFile(RewrittenYaml(source_file=replaced, root_key=ns,
+                                         param_rewrites={'rate': '50'}, convert_types=True))
+    spawner = Node(package='cm', executable='spawner', name='spawner')
+    return LaunchDescription([
+        DeclareLaunchArgument('ns', default_value='r1'),
+        DeclareLaunchArgument('use_ns', default_value='true'),
+        spawner,
+        RegisterEventHandler(OnProcessExit(target_action=spawner, on_exit=[
+            Node(package='cm', executable='spawner', name='second')])),
+        GroupAction([PushRosNamespace(ns),
+                     Node(package='p', executable='e', name='ctrl', parameters=[params])]),
+    ])
+""", extra={"src/pkg/config/robot.yaml": """
+        ctrl:
+          ros__parameters:
+            rate: 10
+            frame: <robot>/base
+        """})
+    second = model.nodes[1]
+    assert [(c.statement, c.kind) for c in second.conditions] == [("event", "launch")]
+    params = {p.name: p.value for p in model.params if p.node == "/r1/ctrl"}
+    assert params == {"/r1/ctrl/rate": 50, "/r1/ctrl/frame": "/r1/base"}
+    assert "pkg/config/robot.yaml" in model.files

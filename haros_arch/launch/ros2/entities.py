@@ -237,6 +237,7 @@ class Delayed(Action):
 
     actions: list[Action]
     why: str
+    statement: str = "timer"  # the condition's statement: "timer" or "event"
 
 
 @dataclass

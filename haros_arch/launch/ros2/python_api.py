@@ -356,7 +356,7 @@ def event_handler(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
             contents.extend(actions(i, value, n))
         elif value is not None:
             i.unsupported(n, f"{label} with a callable is not interpreted")
-    return e.Delayed(contents, f"on event {label}", location=i.where(n))
+    return e.Delayed(contents, f"on event {label}", "event", location=i.where(n))
 
 
 def register_handler(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
@@ -474,6 +474,7 @@ API: dict[str, Builder] = {
     "OrSubstitution": logic("or", 2), "EqualsSubstitution": logic("equals", 2),
     "NotEqualsSubstitution": logic("notequals", 2),
     "IfElseSubstitution": logic("if", 3),
+    "FileContent": lambda i, a, k, n: e.FileContent(to_text(arg(a, k, 0, "path"))),
     "Command": opaque("Command (never run)"), "FindExecutable": opaque("FindExecutable"),
     "ExecutableInPackage": opaque("ExecutableInPackage"),
     "IfCondition": if_condition(False), "UnlessCondition": if_condition(True),
@@ -520,6 +521,16 @@ BUILTINS = frozenset(("len", "str", "int", "float", "bool", "list", "tuple", "di
 
 # -- methods --------------------------------------------------------------------------------
 Method = Callable[[Interpreter, Any, Args, Kwargs, ast.AST], Any]
+
+
+def m_find(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``FindPackageShare('pkg').find('pkg')``: the share folder, now."""
+    if isinstance(owner, e.FindPackage) and a and isinstance(a[0], str):
+        found = i.workspace.find(a[0])
+        if found is not None and owner.share:
+            return found
+        return Lazy((e.FindPackage((a[0],), owner.share),))
+    return i.unsupported(n, ".find() on a value not known statically")
 
 
 def m_add_action(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
@@ -619,7 +630,7 @@ def m_dict(name: str) -> Method:
 
 
 METHODS: dict[str, Method] = {
-    "add_action": m_add_action, "append": m_list("append"), "extend": m_list("extend"),
+    "add_action": m_add_action, "find": m_find, "append": m_list("append"), "extend": m_list("extend"),
     "insert": m_list("insert"), "items": m_dict("items"), "keys": m_dict("keys"),
     "values": m_dict("values"), "get": m_dict("get"), "update": m_dict("update"),
     "copy": m_dict("copy"), "perform": m_str("perform"),

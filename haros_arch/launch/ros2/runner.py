@@ -206,7 +206,8 @@ class Runner:
     def do_Delayed(self, action: e.Delayed, scope: Scope) -> None:
         inner = scope.copy()
         inner.conditions = (*scope.conditions,
-                            Condition(action.why, "launch", "timer", action.location))
+                            Condition(action.why, "launch", action.statement,
+                                      action.location))
         self.run(action.actions, inner)
 
     def do_Callback(self, action: e.Callback, scope: Scope) -> None:
