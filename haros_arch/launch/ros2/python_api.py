@@ -630,7 +630,8 @@ def m_dict(name: str) -> Method:
 
 
 METHODS: dict[str, Method] = {
-    "add_action": m_add_action, "find": m_find, "append": m_list("append"), "extend": m_list("extend"),
+    "add_action": m_add_action, "find": m_find, "append": m_list("append"),
+    "extend": m_list("extend"),
     "insert": m_list("insert"), "items": m_dict("items"), "keys": m_dict("keys"),
     "values": m_dict("values"), "get": m_dict("get"), "update": m_dict("update"),
     "copy": m_dict("copy"), "perform": m_str("perform"),
