@@ -1,0 +1,2 @@
+// haros_arch stand-in
+#include <boost/thread.hpp>

@@ -1,0 +1,54 @@
+// haros_arch stand-in: boost threads (declarations only)
+#ifndef HAROS_STANDIN_BOOST_THREAD_HPP
+#define HAROS_STANDIN_BOOST_THREAD_HPP
+#include <boost/function.hpp>
+namespace boost {
+namespace posix_time {
+struct time_duration { long total_milliseconds() const; };
+time_duration milliseconds(long n);
+time_duration seconds(long n);
+time_duration microseconds(long n);
+}
+class thread {
+public:
+  struct id_type { };
+  thread();
+  template<class F, class... A> explicit thread(F f, A... args);
+  void join();
+  void detach();
+  bool joinable() const;
+  void interrupt();
+  static unsigned hardware_concurrency();
+};
+namespace this_thread {
+void sleep(const posix_time::time_duration& d);
+template<class D> void sleep_for(const D& d);
+void yield();
+void interruption_point();
+thread::id_type get_id();
+}
+class thread_group {
+public:
+  template<class F> thread* create_thread(F f);
+  void join_all();
+};
+class mutex { public: mutex(); void lock(); void unlock(); bool try_lock(); };
+typedef mutex recursive_mutex;
+typedef mutex timed_mutex;
+class shared_mutex : public mutex { public: void lock_shared(); void unlock_shared(); };
+template<class M> class lock_guard { public: explicit lock_guard(M& m); };
+template<class M> class unique_lock { public: explicit unique_lock(M& m); void lock(); void unlock(); };
+template<class M> class shared_lock { public: explicit shared_lock(M& m); };
+template<class M> class upgrade_lock { public: explicit upgrade_lock(M& m); };
+namespace detail { template<class M> struct scoped { explicit scoped(M& m); }; }
+class condition_variable {
+public:
+  void notify_one();
+  void notify_all();
+  template<class L> void wait(L& lock);
+  template<class L, class D> bool timed_wait(L& lock, const D& d);
+};
+typedef condition_variable condition_variable_any;
+}
+#define BOOST_FOREACH(var, col) for (var : col)
+#endif
