@@ -18,6 +18,7 @@ from .model.model import Model
 from .model.runtime import Configuration
 from .model.source import Node, Package
 from .project import ConfigurationSpec, Project
+from .rosrun import script_node
 from .workspace import Workspace, scan
 
 
@@ -48,6 +49,8 @@ def analyse(project: Project, environment: Mapping[str, str] | None = None) -> M
         model.packages.append(package)
         model.diagnostics.extend(_analyse_package(package, workspace))
         nodes.update((node.name, node) for node in package.nodes)
+    for launched in launches.values():
+        model.diagnostics.extend(_rosrun_scripts(launched, workspace, nodes))
 
     project_file = Location(file=os.path.relpath(project.path))
     if project.nodes:
@@ -74,6 +77,23 @@ def _analyse_package(package: Package, workspace: Workspace) -> list[diag.Diagno
         package.nodes, found = cmake.parse_package(package, workspace)
     for node in package.nodes:
         found.extend(extract_node(node, workspace))
+    return found
+
+
+def _rosrun_scripts(launched: LaunchModel, workspace: Workspace,
+                    nodes: dict[str, Node]) -> list[diag.Diagnostic]:
+    """Scripts that launch files start and only rosrun's search of the package finds."""
+    found: list[diag.Diagnostic] = []
+    for decl in launched.nodes:
+        key = f"{decl.package}/{decl.executable}"
+        package = workspace.packages.get(decl.package)
+        if key in nodes or package is None or getattr(decl, "ros_version", 1) != 1:
+            continue
+        node = script_node(package, decl.executable, workspace)
+        if node is not None:
+            package.nodes.append(node)
+            nodes[key] = node
+            found.extend(extract_node(node, workspace))
     return found
 
 

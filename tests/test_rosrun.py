@@ -1,0 +1,41 @@
+"""Scripts that only rosrun's search of the package finds (ROS 1) still get analysed."""
+
+from __future__ import annotations
+
+import os
+
+from conftest import package_xml
+
+from haros_arch.pipeline import analyse
+from haros_arch.project import load
+
+
+def test_a_launched_script_outside_scripts_folder_is_found(write_tree):
+    root = write_tree({
+        "src/pkg/package.xml": package_xml("pkg"),
+        "src/pkg/CMakeLists.txt": "project(pkg)\n",
+        "src/pkg/test/checker.py": """
+            #!/usr/bin/env python3
+            import rospy
+            from std_msgs.msg import String
+            rospy.init_node("checker")
+            rospy.Subscriber("chatter", String, lambda m: None)
+            """,
+        "src/pkg/test/not_executable.py": "import rospy\n",
+        "src/pkg/launch/t.launch": """
+            <launch>
+              <test test-name="t" pkg="pkg" type="checker.py" />
+              <node name="n" pkg="pkg" type="not_executable.py" />
+            </launch>
+            """,
+        "project.yaml": "project: p\nconfigurations:\n  c: [pkg/launch/t.launch]\n",
+    })
+    os.chmod(root / "src/pkg/test/checker.py", 0o755)
+    model = analyse(load(str(root / "project.yaml")), {"PATH": ""})
+    (config,) = model.configurations
+    checker = config.node("/t")
+    assert checker is not None and checker.node is not None
+    assert checker.node.sources == ["pkg/test/checker.py"]
+    assert [(link.kind, link.name) for link in checker.links] == [("subscribe", "/chatter")]
+    assert config.node("/n").node is None
+    assert [d.code for d in config.diagnostics] == ["NODE_NOT_FOUND"]
