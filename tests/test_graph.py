@@ -123,3 +123,25 @@ def test_nodelets_loaded_by_the_nodelet_executable_get_their_interface():
     assert [(d.code, d.message) for d in config.diagnostics] == [
         ("NODE_PACKAGE_UNKNOWN", "package stereo of node stereo/missing is neither in "
                                  "the workspace nor installed; its interface is unknown")]
+
+
+def test_namespace_reads_and_searched_names_follow_the_parameter_server():
+    reader = node("p", "r", call("read", "gains"), call("read", "global_example"),
+                  call("read", "~rate"), call("read", "missing"))
+    reader.calls[1].searched = True
+    reader.calls[2].has_default = True
+    reader.calls[3].searched = True
+    config = graph([NodeDecl("/foo/r", "p", "r", "/foo/")], params=[
+        ParamDecl("/global_example", "g", "str"),
+        ParamDecl("/foo/gains/P", 1.0, "double"), ParamDecl("/foo/gains/I", 2.0, "double"),
+    ], nodes=[reader])
+    gains = config.parameter("/foo/gains")
+    assert (gains.value, gains.type, gains.writer_names) == (
+        {"P": 1.0, "I": 2.0}, "dict", ["<launch>"])
+    assert config.parameter("/foo/gains/P").read_as_part_of is gains
+    assert config.parameter("/foo/gains/P").is_read
+    names = sorted(link.name for link in config.links)
+    # searched: found at the root; the missing one stays in the node's namespace
+    assert names == ["/foo/gains", "/foo/missing", "/foo/r/rate", "/global_example"]
+    assert config.parameter("/foo/r/rate").has_default
+    assert not config.parameter("/foo/missing").has_default

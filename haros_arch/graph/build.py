@@ -8,7 +8,7 @@ from typing import Any
 
 from .. import diagnostics as diag
 from ..launch.model import LaunchModel, NodeDecl
-from ..model.rosname import RosName, resolve_remaps
+from ..model.rosname import RosName, namespace_of, resolve_remaps
 from ..model.runtime import (
     LINK_CLASSES,
     Action,
@@ -112,7 +112,36 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
         remaps = resolve_remaps(instance.remaps, instance.namespace, instance.name)
         for call in instance.node.calls:
             link(instance, call, remaps, resources, config)
+    _namespace_values(config)
     return config
+
+
+def _namespace_values(config: Configuration) -> None:
+    """A parameter read as a whole namespace (``get_param("gains")`` when the launch file
+    sets ``gains/P``, ``gains/I``) holds the dictionary of what is set under it, as the
+    parameter server answers."""
+    set_params = [p for p in config.parameters if p.set_by_launch]
+    for param in config.parameters:
+        if param.set_by_launch or not param.readers or param.is_unresolved:
+            continue
+        prefix = param.name.rstrip("/") + "/"
+        below = [p for p in set_params if p.name.startswith(prefix)]
+        if not below:
+            continue
+        tree: dict[str, Any] = {}
+        for child in below:
+            *path, leaf = child.name[len(prefix):].split("/")
+            branch = tree
+            for key in path:
+                branch = branch.setdefault(key, {})
+            branch[leaf] = child.value
+        for child in below:
+            child.read_as_part_of = param
+        param.value = tree
+        param.launch_type = "dict"
+        param.set_by_launch = True
+        param.launch_location = below[0].launch_location
+        param.launch_conditions = below[0].launch_conditions
 
 
 def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
@@ -151,6 +180,8 @@ def link(instance: NodeInstance, call: PrimitiveCall, remaps: Mapping[str, str],
     """Instantiate one primitive call for a node instance: resolve, remap, connect."""
     given = _given_name(call, instance, resources)
     rosname = RosName.make(given, instance.namespace, instance.name, remaps)
+    if call.searched:
+        rosname = _search(rosname, instance, resources)
     resource = resources.get(RESOURCE_OF_KIND[call.kind], rosname.full)
     made = LINK_CLASSES[call.kind](
         node=instance, resource=resource, rosname=rosname, type=call.type,
@@ -183,6 +214,25 @@ def _given_name(call: PrimitiveCall, instance: NodeInstance, resources: Resource
     if isinstance(param, Parameter) and param.set_by_launch and isinstance(param.value, str):
         value = param.value
     return call.name if value is None else call.name.replace(UNKNOWN_MARK, value, 1)
+
+
+def _search(name: RosName, instance: NodeInstance, resources: Resources) -> RosName:
+    """searchParam: the closest set parameter from the node's namespace up to the root,
+    else the name in the node's own namespace."""
+    if name.is_global or name.is_unresolved:
+        return name
+    namespace = instance.namespace.rstrip("/")
+    levels = []
+    while True:
+        levels.append(f"{namespace}/{name.given.lstrip('~/')}")
+        if not namespace:
+            break
+        namespace = namespace.rsplit("/", 1)[0]
+    for full in levels:
+        found = resources.by_name.get((Parameter, full))
+        if isinstance(found, Parameter) and (found.set_by_launch or found.writers):
+            return RosName(name.given, full, namespace_of(full))
+    return name
 
 
 def _node_scoped(name: str) -> str:

@@ -206,6 +206,8 @@ class Parameter(Resource):
     set_by_launch: bool = field(default=False, metadata=INDEX)
     launch_location: Location = field(default=NOWHERE, metadata=INDEX)
     launch_conditions: tuple[Condition, ...] = field(default=(), metadata=INDEX)
+    # set under a namespace that a node reads whole (``get_param("gains")``)
+    read_as_part_of: Parameter | None = field(default=None, metadata=INDEX)
 
     JSON_VIEWS: ClassVar[dict[str, Callable[[Any], Any]]] = {
         "type": lambda p: p.type,
@@ -214,6 +216,7 @@ class Parameter(Resource):
         "conditions": lambda p: p.conditions,
         "location": lambda p: p.location,
         "candidates": lambda p: [c.id for c in p.candidates],
+        "read_as_part_of": lambda p: p.read_as_part_of.id if p.read_as_part_of else None,
     }
 
     @property
@@ -241,6 +244,17 @@ class Parameter(Resource):
     @property
     def readers(self) -> list[Link]:
         return self._of("read")
+
+    @property
+    def is_read(self) -> bool:
+        """Read by name, or as part of a namespace that a node reads whole."""
+        return bool(self.readers) or self.read_as_part_of is not None
+
+    @property
+    def has_default(self) -> bool:
+        """Every read of it gives a default in code, so an unset value is harmless."""
+        return bool(self.readers) and all(
+            link.call is not None and link.call.has_default for link in self.readers)
 
     @property
     def writers(self) -> list[Link]:

@@ -62,6 +62,11 @@ class PrimitiveCall:
     name_param: str | None = None
     name_default: str | None = None
     origin: str = "source"  # "source", or "hint" when a project-file hint made it
+    # parameter reads: whether the code gives a default, and the default when known
+    has_default: bool = False
+    default: Any = None
+    # searchParam / search_param: the name is looked up in the enclosing namespaces
+    searched: bool = False
 
 
 @dataclass

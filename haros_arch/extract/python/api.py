@@ -44,6 +44,7 @@ class PyFunction:
     fixed_latch: bool = False
     fixed_qos: str | None = None  # a QoS preset name, for tf2 broadcasters
     special: str | None = None
+    search: bool = False  # the name is searched up the namespaces (rospy.search_param)
 
 
 @dataclass(frozen=True)

@@ -140,3 +140,15 @@ def param_type(value: object) -> str | None:
     if isinstance(value, Seq):
         return "list"
     return None
+
+
+def plain_value(value: object) -> object:
+    """A value as JSON data when it is fully known (a default in code), else None."""
+    if isinstance(value, bool | int | float):
+        return value
+    if isinstance(value, Value):
+        return value.literal
+    if isinstance(value, Seq):
+        items = [plain_value(item) for item in value.items]
+        return None if any(item is None for item in items) else items
+    return None

@@ -34,6 +34,7 @@ from .objects import (
     Seq,
     SuperInit,
     param_type,
+    plain_value,
     text_of,
 )
 from .values import MAX_CALL_DEPTH, Evaluator, argument, unknown_params
@@ -324,10 +325,15 @@ class Walker:
             value = _eval(ev, argument(call, spec.name), frame)
             self._set_name(base, value, version)
         if spec.value is not None:
-            value = _eval(ev, argument(call, spec.value), frame)
+            value_expr = argument(call, spec.value)
+            value = _eval(ev, value_expr, frame)
             base.type = param_type(value)
+            if value_expr is not None and spec.kind in ("read", "declare"):
+                base.has_default = True
+                base.default = plain_value(value)
             if spec.kind == "declare":
                 ev.declared[base.name.removeprefix("~")] = value
+        base.searched = spec.search
         self._add(base)
 
     def _special(self, spec: PyFunction, call: ast.Call, frame: Frame, base: PrimitiveCall,

@@ -1,0 +1,37 @@
+"""Parameter reads record their defaults; search_param is marked as a searched name."""
+
+from __future__ import annotations
+
+from haros_arch.extract.python import extract_python
+from haros_arch.workspace import Workspace
+
+
+def test_defaults_and_searches(tmp_path):
+    source = tmp_path / "node.py"
+    source.write_text(
+        "import rospy\n"
+        "rospy.init_node('n')\n"
+        "a = rospy.get_param('~a', 0.5)\n"
+        "b = rospy.get_param('b')\n"
+        "c = rospy.search_param('global_example')\n"
+        "d = rospy.get_param('~d', [1, 2])\n"
+        "e = rospy.get_param('~e', some_runtime_value)\n")
+    result = extract_python([str(source)], Workspace(root=str(tmp_path)), package="p")
+    got = [(c.name, c.has_default, c.default, c.searched) for c in result.calls]
+    assert got == [("~a", True, 0.5, False), ("b", False, None, False),
+                   ("global_example", False, None, True), ("~d", True, [1, 2], False),
+                   ("~e", True, None, False)]
+
+
+def test_rclpy_declare_gives_the_default(tmp_path):
+    source = tmp_path / "node.py"
+    source.write_text(
+        "import rclpy\nfrom rclpy.node import Node\n"
+        "class N(Node):\n"
+        "    def __init__(self):\n"
+        "        super().__init__('n')\n"
+        "        self.declare_parameter('rate', 10)\n"
+        "        self.declare_parameter('name')\n")
+    result = extract_python([str(source)], Workspace(root=str(tmp_path)), package="p")
+    got = [(c.kind, c.name, c.has_default, c.default) for c in result.calls]
+    assert got == [("declare", "~rate", True, 10), ("declare", "~name", False, None)]
