@@ -38,6 +38,8 @@ from __future__ import annotations
 import argparse
 import json
 import os
+import re
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -181,6 +183,10 @@ def node_execute(self, context):
     if not ns or ns.startswith("<"):
         ns = ""  # unspecified: the node runs in the root namespace
     full = self.node_name.replace("<node_namespace_unspecified>", "")
+    words = [perform_substitutions(context, normalize_to_list_of_substitutions(a))
+             for a in (self._Node__arguments or [])]
+    if "--ros-args" in words:
+        words = words[:words.index("--ros-args")]
     RECORDS.append({
         "name": full if full.startswith("/") else "/" + full, "package": perform_substitutions(
             context, normalize_to_list_of_substitutions(self.node_package)),
@@ -188,6 +194,7 @@ def node_execute(self, context):
             context, normalize_to_list_of_substitutions(self.node_executable)),
         "namespace": ns or "/",
         "remaps": [list(r) for r in (self._Node__expanded_remappings or [])],
+        "args": " ".join(words),
         "params": _params(context, name, ns, self._Node__parameters),
         "container": None, "composable": False})
     return None
@@ -209,7 +216,7 @@ def load_execute(self, context):
         RECORDS.append({
             "name": (ns.rstrip("/") + "/" + name) if ns else "/" + name,
             "package": request.package_name, "executable": request.plugin_name,
-            "namespace": ns or "", "remaps": [r.split(":=", 1) for r in remaps],
+            "namespace": ns or "", "remaps": [r.split(":=", 1) for r in remaps], "args": "",
             "params": {k: _value(v) for k, v in params}, "container": container,
             "composable": True})
     return None
@@ -248,6 +255,57 @@ def write_standins(folder: str) -> None:
             os.chmod(path, 0o755)
     with open(os.path.join(folder, "real_runner.py"), "w") as handle:
         handle.write(REAL_RUNNER)
+
+
+_INSTALL = re.compile(r"install\s*\(\s*DIRECTORY\s+([^)]*?)\s+DESTINATION\s+share/"
+                      r"(?:\$\{PROJECT_NAME\}|[\w-]+)(/[^\s)]*)?", re.S)
+
+
+def install_tree(packages: dict[str, str], dest: str) -> dict[str, str]:
+    """An install-like ``share/<pkg>`` tree (copies), from CMake install(DIRECTORY).
+
+    Both sides then read the same files where ``colcon build`` would put them (for
+    example ros2_control_demos installs ``bringup/config`` as ``share/<pkg>/config``).
+    Packages without such rules are linked as they are. Returns source file -> installed
+    path.
+    """
+    installed: dict[str, str] = {}
+
+    def merge(src: str, dst: str, depth: int = 0) -> None:
+        if depth > 12 or os.path.basename(src) in (".git", "build", "install", "log"):
+            return
+        if os.path.isdir(src):
+            os.makedirs(dst, exist_ok=True)
+            for entry in sorted(os.listdir(src)):
+                merge(os.path.join(src, entry), os.path.join(dst, entry), depth + 1)
+        elif os.path.isfile(src) and not os.path.lexists(dst) and (
+                os.path.getsize(src) < 4 * 1024 * 1024):
+            shutil.copy2(src, dst)  # a copy, as colcon installs (not a symlink install)
+            installed.setdefault(os.path.realpath(src), dst)
+
+    for name, root in packages.items():
+        share = os.path.join(dest, "share", name)
+        os.makedirs(share, exist_ok=True)
+        merge(os.path.join(root, "package.xml"), os.path.join(share, "package.xml"))
+        rules: list[tuple[str, str]] = []
+        cmake = os.path.join(root, "CMakeLists.txt")
+        if os.path.isfile(cmake):
+            with open(cmake, errors="replace") as handle:
+                text = re.sub(r"#[^\n]*", "", handle.read())
+            for match in _INSTALL.finditer(text):
+                sub = (match.group(2) or "").strip("/")
+                for item in match.group(1).split():
+                    if item.isupper():
+                        break  # FILES_MATCHING, PATTERN, USE_SOURCE_PERMISSIONS...
+                    rules.append((item, sub))
+        if not rules:
+            rules = [(entry, "") for entry in os.listdir(root) if entry != "package.xml"]
+        for item, sub in rules:
+            src = os.path.join(root, item.rstrip("/"))
+            target = os.path.join(share, sub) if item.endswith("/") else os.path.join(
+                share, sub, os.path.basename(item.rstrip("/")))
+            merge(src, target)
+    return installed
 
 
 def run_real(python: str, standins: str, path: str, packages: dict[str, str],
@@ -293,10 +351,10 @@ def run_ours(path: str, workspace: Any, env: dict[str, str]) -> dict[str, Any]:
         ns = decl.namespace.rstrip("/") or "/"
         nodes.append({"name": decl.name, "package": decl.package,
                       "executable": decl.executable, "namespace": ns,
-                      "remaps": [list(r) for r in decl.remaps],
+                      "remaps": [list(r) for r in decl.remaps], "args": decl.args,
                       "params": params.get(index, {}), "container": decl.container,
                       "composable": decl.composable,
-                      "conditional": bool(decl.conditions)})
+                      "conditional": ",".join(c.statement for c in decl.conditions)})
     return {"nodes": nodes, "diagnostics": [str(d) for d in model.diagnostics]}
 
 
@@ -311,7 +369,10 @@ def _norm(value: Any) -> Any:
 def compare(ours: list[dict[str, Any]], real: list[dict[str, Any]], tally: Counter[str],
             notes: list[str]) -> None:
     def key(node: dict[str, Any]) -> str:
-        return str(node["name"]).replace("<node_name_unspecified>", "?")
+        name = str(node["name"]).replace("<node_name_unspecified>", "?")
+        if "?" in name:  # unnamed: tell them apart by what they run
+            name += f" [{node['package']}/{node['executable']} {node['args']}]"
+        return name
 
     def keyed(nodes: list[dict[str, Any]]) -> dict[str, dict[str, Any]]:
         out: dict[str, dict[str, Any]] = {}
@@ -331,12 +392,13 @@ def compare(ours: list[dict[str, Any]], real: list[dict[str, Any]], tally: Count
             continue
         if name not in real_by:
             tally["nodes.extra_in_ours"] += 1
-            conditional = " (conditional)" if ours_by[name].get("conditional") else ""
+            statements = ours_by[name].get("conditional")
+            conditional = f" (conditional: {statements})" if statements else ""
             notes.append(f"  only ours: {name}{conditional}")
             continue
         tally["nodes.matched"] += 1
         mine, theirs = ours_by[name], real_by[name]
-        for field in ("package", "executable", "namespace", "container"):
+        for field in ("package", "executable", "namespace", "container", "args"):
             a, b = mine[field], theirs[field]
             if field == "namespace" and theirs["composable"] and b == "":
                 b = a  # an empty request namespace: the container decides
@@ -373,12 +435,18 @@ def main() -> int:
     from haros_arch.workspace import scan
 
     roots = [os.path.join(options.src, t) for t in options.targets]
-    workspace = scan(roots, {})
-    packages = {name: pkg.root for name, pkg in workspace.packages.items()}
+    sources = scan(roots, {})
+    prefix = tempfile.mkdtemp(prefix="bench_install_")
+    installed = install_tree({n: p.root for n, p in sources.packages.items()}, prefix)
+    empty = os.path.join(prefix, "empty")
+    os.makedirs(empty)
+    given_env = dict(item.split("=", 1) for item in options.env)
+    ours_env = dict(given_env, AMENT_PREFIX_PATH=prefix)
+    workspace = scan([empty], ours_env)
+    packages = {name: os.path.join(prefix, "share", name) for name in sources.packages}
     # launch reads its substitution grammar from share/launch/frontend/grammar.lark
     packages.setdefault("launch", options.launch_share or os.path.join(
         options.src, "launch", "launch", "share", "launch"))
-    given_env = dict(item.split("=", 1) for item in options.env)
     extra_path = [os.path.join(options.src, "navigation2", "nav2_common")]
     files: list[str] = []
     for root in roots:
@@ -395,11 +463,16 @@ def main() -> int:
     tally: Counter[str] = Counter()
     with tempfile.TemporaryDirectory() as standins:
         write_standins(standins)
-        for path in files:
-            rel = os.path.relpath(path, options.src)
+        for source in files:
+            rel = os.path.relpath(source, options.src)
+            path = installed.get(os.path.realpath(source))
+            if path is None:
+                tally["files.not_installed"] += 1
+                print(f"{rel}: not installed by its package; skipped")
+                continue
             real = run_real(options.real_python, standins, path, packages, extra_path,
                             given_env)
-            ours = run_ours(path, workspace, given_env)
+            ours = run_ours(path, workspace, ours_env)
             tally["files"] += 1
             if "error" in real:
                 tally["files.real_failed"] += 1
@@ -418,7 +491,8 @@ def main() -> int:
     print("\nsummary")
     for key in sorted(tally):
         print(f"  {key}: {tally[key]}")
-    for field in ("package", "executable", "namespace", "container", "remaps", "params"):
+    for field in ("package", "executable", "namespace", "container", "args", "remaps",
+                  "params"):
         agree, differ = tally[f"{field}.agree"], tally[f"{field}.differ"]
         if agree + differ:
             print(f"  {field}: {agree}/{agree + differ} agree "

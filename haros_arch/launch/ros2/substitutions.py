@@ -16,6 +16,7 @@ from typing import TYPE_CHECKING
 from ...files import read_text
 from ...model.location import Location
 from ...model.values import Unknown, Value
+from ...workspace import installed_roots
 from .. import expression
 from . import entities as e
 
@@ -301,11 +302,12 @@ class Evaluator:
         if path is None:
             return Value.unknown("file-content of an unknown path")
         full = os.path.realpath(path)
-        roots = [os.path.realpath(r) for r in self.runner.workspace.roots or
-                 [self.runner.workspace.root]]
+        workspace = self.runner.workspace
+        roots = [os.path.realpath(r) for r in [*(workspace.roots or [workspace.root]),
+                                               *installed_roots(workspace.environment)]]
         if not any(full == r or full.startswith(r + os.sep) for r in roots):
-            self.report("LAUNCH_UNSUPPORTED",
-                        detail=f"$(file-content) of {path} outside the workspace is not read")
+            self.report("LAUNCH_UNSUPPORTED", detail=f"$(file-content) of {path} outside "
+                        "the workspace and installed packages is not read")
             return Value.unknown("file outside the workspace")
         content, found = read_text(full, self.runner.workspace.location(full),
                                    MAX_FILE_CONTENT)
