@@ -13,6 +13,7 @@ from collections.abc import Callable, Iterable
 from typing import Any
 
 from . import syntax as s
+from .access import _CACHE as _READERS
 from .access import PRIMITIVES, STRING_METHODS, Method, Pair, readers_of
 from .errors import QueryError, QueryLimitError, QueryNameError, QueryTypeError
 from .functions import Function
@@ -56,6 +57,7 @@ class Evaluator:
         self.until_clock = _CLOCK_EVERY
         self.plans: dict[int, Plan] = {}
         self.caches: dict[int, dict[Any, Any]] = {}
+        self.handlers: dict[type, Callable[[Any], Any]] = {}
 
     # ---- limits
     def charge(self, steps: int = 1) -> None:
@@ -80,7 +82,9 @@ class Evaluator:
             raise QueryLimitError("the query recursed too deeply", self.text, node.pos) from None
 
     def eval(self, node: s.Expr) -> Any:
-        handler: Callable[[Any], Any] = getattr(self, "_eval_" + type(node).__name__)
+        handler = self.handlers.get(type(node))
+        if handler is None:
+            handler = self.handlers[type(node)] = getattr(self, "_eval_" + type(node).__name__)
         return handler(node)
 
     def truth(self, node: s.Expr) -> bool:
@@ -124,7 +128,13 @@ class Evaluator:
         return read(value)
 
     def _eval_Attr(self, node: s.Attr) -> Any:
-        return self.attribute(self.eval(node.obj), node.name, node)
+        value = self.eval(node.obj)
+        read = _READERS.get(type(value))
+        if read is not None:  # the common case: a model value's allowed field
+            getter = read.get(node.name)
+            if getter is not None:
+                return getter(value)
+        return self.attribute(value, node.name, node)
 
     def _eval_Index(self, node: s.Index) -> Any:
         container, key = self.eval(node.obj), self.eval(node.key)
