@@ -11,6 +11,7 @@ import json
 import os
 import sys
 from collections.abc import Sequence
+from functools import partial
 
 from rich.console import Console
 
@@ -18,7 +19,7 @@ from . import __version__
 from .diagnostics import CATALOGUE
 from .model.diagnostic import SEVERITY_RANK
 from .model.model import Model
-from .pipeline import analyse
+from .pipeline import Options, analyse
 from .project import ProjectError, load
 from .report.text import print_diagnostics, print_summary
 
@@ -36,6 +37,7 @@ def _parser() -> argparse.ArgumentParser:
     extract.add_argument("project", help="project file (YAML)")
     extract.add_argument("-o", "--output", help="write the JSON here (default: stdout)")
     extract.add_argument("-q", "--quiet", action="store_true", help="no summary")
+    _run_options(extract)
 
     check = sub.add_parser("check", help="run the query catalogue and report findings and "
                            "diagnostics; exit 1 at --fail-on or above")
@@ -43,6 +45,7 @@ def _parser() -> argparse.ArgumentParser:
     check.add_argument("--format", choices=("text", "json", "sarif", "junit"), default="text")
     check.add_argument("--fail-on", choices=(*SEVERITY_RANK, "never"), default="error")
     check.add_argument("-o", "--output", help="write the report here (default: stdout)")
+    _run_options(check)
 
     query = sub.add_parser("query", help="evaluate a query and print its matches")
     query.add_argument("project", nargs="?", help="project file (YAML)")
@@ -68,6 +71,7 @@ def _parser() -> argparse.ArgumentParser:
     report.add_argument("--model", help="render this saved JSON model instead of extracting")
     report.add_argument("--workspace", help="folder the model's file paths are relative to")
     report.add_argument("-o", "--output", required=True, help="the HTML file to write")
+    _run_options(report)
 
     launch = sub.add_parser("launch", help="nodes and parameters a ROS 1 launch file "
                             "would start (like roslaunch --nodes --dump-params)")
@@ -81,7 +85,21 @@ def _parser() -> argparse.ArgumentParser:
     return parser
 
 
-def _analyse(path: str, console: Console) -> Model | None:
+def _run_options(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--no-cache", action="store_true",
+                        help="parse every source again (a cold run); the cache is not read "
+                             "or written")
+    parser.add_argument("--jobs", type=int, metavar="N",
+                        help="parse C++ sources in N worker processes (default: one per core)")
+
+
+def _options(args: argparse.Namespace) -> Options:
+    jobs = getattr(args, "jobs", None)
+    return Options(cache_dir=None if getattr(args, "no_cache", False) else Options.cache_dir,
+                   jobs=max(1, jobs) if jobs is not None else None)
+
+
+def _analyse(path: str, console: Console, options: Options | None = None) -> Model | None:
     try:
         project = load(path)
     except ProjectError as err:
@@ -92,7 +110,7 @@ def _analyse(path: str, console: Console) -> Model | None:
         console.print(f"haros-arch: {path}: workspace folder {missing[0]} does not exist",
                       highlight=False)
         return None
-    return analyse(project)
+    return analyse(project, options=options)
 
 
 def _write(text: str, output: str | None) -> None:
@@ -104,7 +122,7 @@ def _write(text: str, output: str | None) -> None:
 
 
 def cmd_extract(args: argparse.Namespace, out: Console, err: Console) -> int:
-    model = _analyse(args.project, err)
+    model = _analyse(args.project, err, _options(args))
     if model is None:
         return EXIT_USAGE
     from .query.command import extract_document
@@ -122,7 +140,7 @@ def cmd_extract(args: argparse.Namespace, out: Console, err: Console) -> int:
 def cmd_check(args: argparse.Namespace, out: Console, err: Console) -> int:
     from .query.command import check
 
-    return check(args, out, err, _analyse)
+    return check(args, out, err, partial(_analyse, options=_options(args)))
 
 
 def cmd_query(args: argparse.Namespace, out: Console, err: Console) -> int:
@@ -195,7 +213,7 @@ def cmd_report(args: argparse.Namespace, out: Console, err: Console) -> int:
         if args.model:
             data = read_model(args.model)
         else:
-            model = _analyse(args.project, err)
+            model = _analyse(args.project, err, _options(args))
             if model is None or project is None:
                 return EXIT_USAGE
             data, findings = model_data(model), project_findings(model, project)

@@ -1,16 +1,17 @@
 """The whole pipeline in one function: project file to model.
 
-    project ─ workspace.scan ─ cmake.parse_package ─ extract_node ─ launch.load ─ graph.build
+    project ─ workspace.scan ─ cmake.parse_package ─ extract_nodes ─ launch.load ─ graph.build
 """
 
 from __future__ import annotations
 
 import os
 from collections.abc import Mapping
+from dataclasses import dataclass
 
 from . import cmake, graph, launch, pysetup
 from . import diagnostics as diag
-from .extract import extract_node
+from .extract import AUTO_CACHE, extract_node, extract_nodes
 from .graph.build import nodelet_plugin
 from .launch.model import LaunchModel
 from .model.location import Location
@@ -22,8 +23,19 @@ from .rosrun import script_node
 from .workspace import Workspace, scan
 
 
-def analyse(project: Project, environment: Mapping[str, str] | None = None) -> Model:
+@dataclass(frozen=True)
+class Options:
+    """How to run: ``cache_dir`` of source results (None: no cache, a cold run), and
+    ``jobs`` worker processes parsing C++ (None: one per core)."""
+
+    cache_dir: str | None = AUTO_CACHE
+    jobs: int | None = None
+
+
+def analyse(project: Project, environment: Mapping[str, str] | None = None,
+            options: Options | None = None) -> Model:
     """Scan the workspace, read build files and sources, and build every configuration."""
+    options = options or Options()
     env = {**(os.environ if environment is None else environment), **project.environment}
     workspace = scan(project.workspace, env)
     model = Model(project.name, diagnostics=list(workspace.diagnostics))
@@ -47,8 +59,11 @@ def analyse(project: Project, environment: Mapping[str, str] | None = None) -> M
         if package is None:
             continue
         model.packages.append(package)
-        model.diagnostics.extend(_analyse_package(package, workspace))
+        model.diagnostics.extend(_read_build_files(package, workspace))
         nodes.update((node.name, node) for node in package.nodes)
+    model.diagnostics.extend(extract_nodes(  # every C++ source once, in parallel, cached
+        [n for p in model.packages for n in p.nodes], workspace,
+        cache_dir=options.cache_dir, jobs=options.jobs))
     for launched in launches.values():
         model.diagnostics.extend(_rosrun_scripts(launched, workspace, nodes))
 
@@ -69,14 +84,13 @@ def analyse(project: Project, environment: Mapping[str, str] | None = None) -> M
     return model
 
 
-def _analyse_package(package: Package, workspace: Workspace) -> list[diag.Diagnostic]:
+def _read_build_files(package: Package, workspace: Workspace) -> list[diag.Diagnostic]:
+    """The package's nodes and their sources, from its CMakeLists.txt or setup.py."""
     found: list[diag.Diagnostic] = []
     if package.build_type == "ament_python":
         package.nodes, found = pysetup.parse_package(package, workspace)
     elif package.build_type in ("catkin", "ament_cmake", "cmake"):
         package.nodes, found = cmake.parse_package(package, workspace)
-    for node in package.nodes:
-        found.extend(extract_node(node, workspace))
     return found
 
 

@@ -1,21 +1,51 @@
 """Source extraction: the ROS primitive calls in each node's sources.
 
-Entry point: ``extract_node(node, workspace)`` fills ``node.calls`` and
-``node.rosname`` and returns the diagnostics; C++ goes through libclang.
+Entry points: ``extract_nodes(nodes, workspace)`` fills ``calls`` and ``rosname`` of
+every node and returns the diagnostics, parsing each C++ translation unit of all the
+nodes once, in parallel, through the persistent cache; ``extract_node`` does one node.
+C++ goes through libclang, Python through ``ast``.
 """
 
 from __future__ import annotations
 
 import os
+from collections.abc import Sequence
 
 from ..diagnostics import Diagnostic
 from ..model.source import Node
 from ..workspace import Workspace
 
+AUTO_CACHE = "auto"  # cache_dir: the default cache folder (``cpp.cache.default_folder``)
+
+
+def extract_nodes(nodes: Sequence[Node], workspace: Workspace, *,
+                  cache_dir: str | None = AUTO_CACHE,
+                  jobs: int | None = None) -> list[Diagnostic]:
+    """Extract every node; C++ nodes in one batch (``cpp.extract_cpp_nodes``): a source
+    shared by several nodes is parsed once. ``cache_dir`` None: no cache; ``jobs``: worker
+    processes (default: the number of cores)."""
+    found: list[Diagnostic] = []
+    cpp = [node for node in nodes if node.language == "cpp" and node.sources]
+    if cpp:
+        from .cpp import extract_cpp_nodes  # libclang loads only when there is C++ to parse
+
+        batch = extract_cpp_nodes([_paths(node, workspace) for node in cpp], workspace,
+                                  cache_dir=cache_dir, jobs=jobs)
+        for node, result in zip(cpp, batch.results, strict=True):
+            node.calls, node.rosname = result.calls, result.rosname
+        found.extend(batch.all_diagnostics())
+    for node in nodes:
+        if node.language != "cpp":
+            found.extend(extract_node(node, workspace))
+    return found
+
+
+def _paths(node: Node, workspace: Workspace) -> list[str]:
+    return [s if os.path.isabs(s) else os.path.join(workspace.root, s) for s in node.sources]
+
 
 def extract_node(node: Node, workspace: Workspace) -> list[Diagnostic]:
-    sources = [os.path.join(workspace.root, s) if not os.path.isabs(s) else s
-               for s in node.sources]
+    sources = _paths(node, workspace)
     if node.language == "cpp" and sources:
         from .cpp import extract_cpp  # libclang loads only when there is C++ to parse
 

@@ -27,7 +27,7 @@ from . import cache, toolchain
 from .headers import STANDIN, IncludeSetup
 from .visitor import CallFinder
 
-__all__ = ["CppResult", "extract_cpp"]
+__all__ = ["CppBatch", "CppResult", "extract_cpp", "extract_cpp_nodes"]
 
 # CXTranslationUnit_DetailedPreprocessingRecord (for #define constants) | KeepGoing
 PARSE_OPTIONS = 0x01 | 0x200
@@ -43,6 +43,21 @@ class CppResult:
     diagnostics: list[Diagnostic] = field(default_factory=list)
 
 
+@dataclass
+class CppBatch:
+    """What the C++ nodes of a workspace give: one result per node, in order, with the
+    diagnostics of its translation units; ``diagnostics`` are those of the batch as a
+    whole (headers missing or synthesised from a bad definition, unreadable sources)."""
+
+    results: list[CppResult] = field(default_factory=list)
+    diagnostics: list[Diagnostic] = field(default_factory=list)
+
+    def all_diagnostics(self) -> list[Diagnostic]:
+        """Every diagnostic once (a translation unit shared by nodes reports once)."""
+        return list(dict.fromkeys(
+            [*self.diagnostics, *(d for r in self.results for d in r.diagnostics)]))
+
+
 def extract_cpp(sources: list[str], workspace: Workspace, *,
                 include_dirs: Sequence[str] = (), system_headers: bool = False,
                 cache_dir: str | None = cache.AUTO, jobs: int | None = None) -> CppResult:
@@ -53,28 +68,53 @@ def extract_cpp(sources: list[str], workspace: Workspace, *,
     ``cache.default_folder``; None: no cache). ``jobs`` translation units are parsed at a
     time in worker processes (default: the number of cores, at most the sources).
     """
-    result = CppResult()
+    batch = extract_cpp_nodes([sources], workspace, include_dirs=include_dirs,
+                              system_headers=system_headers, cache_dir=cache_dir, jobs=jobs)
+    result = batch.results[0]
+    result.diagnostics[:0] = batch.diagnostics
+    return result
+
+
+def extract_cpp_nodes(nodes: Sequence[Sequence[str]], workspace: Workspace, *,
+                      include_dirs: Sequence[str] = (), system_headers: bool = False,
+                      cache_dir: str | None = cache.AUTO,
+                      jobs: int | None = None) -> CppBatch:
+    """The ROS calls of several nodes, each given by its translation units' paths.
+
+    Every translation unit is read and parsed once however many nodes build it, all of
+    them in one pool of worker processes; options as for ``extract_cpp``.
+    """
+    batch = CppBatch()
     setup = IncludeSetup(workspace, include_dirs, system_headers)
     store = None
     if cache_dir is not None:
         folder = cache.default_folder(workspace.root) if cache_dir == cache.AUTO else cache_dir
-        store = cache.Cache(folder, setup.generated)
+        store = cache.Cache(folder, setup.generated, setup.written)
+    read: list[Diagnostic] = []
     try:
         texts: dict[str, str] = {}
-        for path in sources:
-            path = os.path.abspath(path)
+        ros2: dict[str, bool] = {}
+        for path in dict.fromkeys(os.path.abspath(p) for sources in nodes for p in sources):
             text, found = read_text(path, workspace.location(path))
-            result.diagnostics.extend(found)
+            read.extend(found)
             if text is not None:
                 texts[path] = text
-                setup.scan(path, text)
-        units = _units(texts, setup, store, jobs)
+                ros2[path] = setup.scan(path, text)
+        units = _units(texts, ros2, setup, store, jobs)
     finally:
         setup.close()
-    result.diagnostics[:0] = setup.diagnostics
+    batch.diagnostics = [*setup.diagnostics, *read]
+    for sources in nodes:
+        batch.results.append(_node_result(
+            [units[p] for p in dict.fromkeys(map(os.path.abspath, sources)) if p in units]))
+    return batch
+
+
+def _node_result(units: list[CppResult]) -> CppResult:
+    result = CppResult()
     seen: set[tuple[object, ...]] = set()
     for unit in units:
-        result.diagnostics.extend(d for d in unit.diagnostics if d not in result.diagnostics)
+        result.diagnostics.extend(unit.diagnostics)
         if unit.rosname is not None and result.rosname is None:
             result.rosname = unit.rosname
         for call in unit.calls:
@@ -82,14 +122,16 @@ def extract_cpp(sources: list[str], workspace: Workspace, *,
             if key not in seen:
                 seen.add(key)
                 result.calls.append(call)
+    result.diagnostics = list(dict.fromkeys(result.diagnostics))
     return result
 
 
-def _units(texts: dict[str, str], setup: IncludeSetup, store: cache.Cache | None,
-           jobs: int | None) -> list[CppResult]:
+def _units(texts: dict[str, str], ros2: dict[str, bool], setup: IncludeSetup,
+           store: cache.Cache | None, jobs: int | None) -> dict[str, CppResult]:
     """Each translation unit's result, from the cache or parsed (in parallel)."""
-    args = setup.arguments()
-    keys = {path: cache.key(setup.workspace.relpath(path), text, args, setup.generated)
+    args = setup.arguments(pch=False)
+    keys = {path: cache.key(setup.workspace.relpath(path), text,
+                            [*args, f"ros2={ros2[path]}"], setup.generated)
             for path, text in texts.items()}
     done: dict[str, CppResult] = {}
     if store is not None:
@@ -102,23 +144,41 @@ def _units(texts: dict[str, str], setup: IncludeSetup, store: cache.Cache | None
                     continue
                 done[path] = CppResult(calls, rosname, found)
     todo = [path for path in texts if path not in done]
+    tasks = [(path, texts[path], ros2[path]) for path in todo]
     workers = min(len(todo), jobs or os.cpu_count() or 1)
     parsed: list[tuple[CppResult, list[str]]]
+    if todo:
+        setup.materialise()
+        setup.arguments()  # the PCH, built once here and shared by forked workers
     if workers > 1:
-        with ProcessPoolExecutor(max_workers=workers) as pool:
-            parsed = list(pool.map(_translation_unit, todo, [texts[p] for p in todo],
-                                   [setup] * len(todo)))
+        with ProcessPoolExecutor(max_workers=workers, initializer=_start_worker,
+                                 initargs=(setup,)) as pool:
+            parsed = list(pool.map(_worker_unit, tasks,
+                                   chunksize=max(1, len(tasks) // (workers * 4))))
     else:
-        parsed = [_translation_unit(path, texts[path], setup) for path in todo]
+        parsed = [_translation_unit(*task, setup) for task in tasks]
     for path, (unit, headers) in zip(todo, parsed, strict=True):
         done[path] = unit
         if store is not None and headers:
             store.store(keys[path], headers, cache.to_data(
                 unit.calls, unit.rosname, unit.diagnostics))
-    return [done[path] for path in texts]
+    return {path: done[path] for path in texts}
 
 
-def _translation_unit(path: str, text: str,
+_WORKER_SETUP: IncludeSetup | None = None
+
+
+def _start_worker(setup: IncludeSetup) -> None:
+    global _WORKER_SETUP
+    _WORKER_SETUP = setup
+
+
+def _worker_unit(task: tuple[str, str, bool]) -> tuple[CppResult, list[str]]:
+    assert _WORKER_SETUP is not None
+    return _translation_unit(*task, _WORKER_SETUP)
+
+
+def _translation_unit(path: str, text: str, ros2: bool,
                       setup: IncludeSetup) -> tuple[CppResult, list[str]]:
     """What one source file gives, and the workspace / synthesised headers it read
     (empty when the result must not be cached)."""
@@ -152,7 +212,7 @@ def _translation_unit(path: str, text: str,
             "CPP_PARSE_ERROR", workspace.location(os.path.abspath(loc.file.name),
                                                   loc.line, loc.column),
             detail=error.spelling))
-    finder = CallFinder(tu, source, owned, where, ros2=setup.ros2)
+    finder = CallFinder(tu, source, owned, where, ros2=ros2)
     finder.run()
     result.calls = sorted(finder.calls, key=lambda c: (
         c.location.file or "", c.location.line, c.location.column))

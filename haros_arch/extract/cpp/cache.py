@@ -16,7 +16,7 @@ import hashlib
 import json
 import os
 import tempfile
-from collections.abc import Iterable
+from collections.abc import Iterable, Mapping
 from typing import Any
 
 from ... import __version__
@@ -88,9 +88,19 @@ def fingerprint(path: str) -> str | None:
 class Cache:
     """Entries in ``folder``; ``generated`` is this run's folder of synthesised headers."""
 
-    def __init__(self, folder: str, generated: str) -> None:
+    def __init__(self, folder: str, generated: str,
+                 synthesised: Mapping[str, str] | None = None) -> None:
         self.folder = os.path.join(folder, "cpp")
         self.generated = generated
+        self.synthesised = {} if synthesised is None else synthesised  # path -> text, unwritten
+        self._digests: dict[str, str | None] = {}  # a header shared by entries: hashed once
+
+    def _fingerprint(self, path: str) -> str | None:
+        if path not in self._digests:
+            text = self.synthesised.get(path)
+            self._digests[path] = fingerprint(path) if text is None else hashlib.sha256(
+                text.encode("utf-8")).hexdigest()
+        return self._digests[path]
 
     def load(self, entry: str) -> dict[str, Any] | None:
         """The stored result for key ``entry`` if its headers are unchanged."""
@@ -98,7 +108,7 @@ class Cache:
             with open(os.path.join(self.folder, entry + ".json"), encoding="utf-8") as handle:
                 data = json.load(handle)
             for name, digest in data["headers"]:
-                if fingerprint(name.replace(GENERATED, self.generated, 1)) != digest:
+                if self._fingerprint(name.replace(GENERATED, self.generated, 1)) != digest:
                     return None
             result: dict[str, Any] = data["result"]
             return result

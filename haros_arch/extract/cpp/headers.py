@@ -66,6 +66,10 @@ _MESSAGE_HEADER = re.compile(r"([A-Za-z_]\w*)/([A-Z]\w*)\.h")
 _NOT_FOUND = re.compile(r"^'([^']+)' file not found")
 
 
+def is_ros2_header(header: str) -> bool:
+    return header.startswith("rclcpp") or _ROS2_HEADER.fullmatch(header) is not None
+
+
 class IncludeSetup:
     """The folders and flags of one extraction; call ``close`` when done."""
 
@@ -80,10 +84,14 @@ class IncludeSetup:
                            if os.path.isdir(inc) and inc not in self.user_dirs]
         self.diagnostics: list[Diagnostic] = []
         self._handled: set[str] = set()
-        self._scanned: set[str] = set()
-        self.ros2 = False  # a source includes rclcpp or a ROS 2 message header
+        self._scanned: dict[str, bool] = {}  # file -> ROS 2 code (see ``scan``)
+        self.written: dict[str, str] = {}  # synthesised header path -> its text
+        self._on_disk = False
+        self._tops: dict[str, list[str]] | None = None  # see ``_resolve``
 
-    def arguments(self) -> list[str]:
+    def arguments(self, pch: bool = True) -> list[str]:
+        """The parse flags; without ``pch`` the precompiled stand-ins are left out (the
+        flags that key the cache, which must not name this process's PCH file)."""
         flags = toolchain.base_arguments(self.system_headers)
         args = ["-I", self.generated]
         if not self.system_headers:
@@ -93,33 +101,41 @@ class IncludeSetup:
         if self.system_headers:
             return args + flags
         args += ["-isystem", STD_STANDIN, *flags]
-        pch = precompiled_prelude(flags)
-        return [*args, "-include-pch", pch] if pch is not None else args
+        made = precompiled_prelude(flags) if pch else None
+        return [*args, "-include-pch", made] if made is not None else args
 
     def close(self) -> None:
-        shutil.rmtree(self.generated, ignore_errors=True)
+        if self._on_disk:
+            shutil.rmtree(self.generated, ignore_errors=True)
+        else:
+            os.rmdir(self.generated)
 
     # -- before parsing ---------------------------------------------------------------
 
-    def scan(self, path: str, text: str) -> None:
-        """Prepare every header that ``path`` (with contents ``text``) includes."""
+    def scan(self, path: str, text: str) -> bool:
+        """Prepare every header that ``path`` (with contents ``text``) includes; True when
+        it or a workspace header it includes is ROS 2 code (includes rclcpp or a ROS 2
+        message header)."""
         if path in self._scanned:
-            return
-        self._scanned.add(path)
+            return self._scanned[path]
+        self._scanned[path] = False  # a header that includes itself back
+        ros2 = False
+        file = self.workspace.location(path)
         for match in _INCLUDE.finditer(text):
             header = match.group(2).strip()
+            ros2 = ros2 or is_ros2_header(header)
             line = text.count("\n", 0, match.start()) + 1
-            where = self.workspace.location(path, line, match.start(2) - match.start() + 1)
+            where = Location(file.package, file.file, line, match.start(2) - match.start() + 1)
             found = self._prepare(header, os.path.dirname(path), match.group(1) == '"', where)
             if found and self._inside(found):
                 more, _ = read_text(found, self.workspace.location(found))
                 if more is not None:
-                    self.scan(found, more)
+                    ros2 = self.scan(found, more) or ros2
+        self._scanned[path] = ros2
+        return ros2
 
     def _prepare(self, header: str, folder: str, quoted: bool, where: Location) -> str | None:
         """Make ``header`` resolvable; return the real file it resolves to, if any."""
-        if header.startswith(("rclcpp", "rclcpp_")) or _ROS2_HEADER.fullmatch(header):
-            self.ros2 = True
         if header in self._handled:
             return None
         if quoted and os.path.isfile(os.path.join(folder, header)):
@@ -250,7 +266,18 @@ class IncludeSetup:
 
     def _resolve(self, header: str) -> str | None:
         system = toolchain.system_include_dirs() if self.system_headers else (STD_STANDIN,)
-        folders = [*self.user_dirs, *system]
+        if self._tops is None:  # the include folders by their entries: few stat calls
+            self._tops = {}
+            for folder in self.user_dirs:
+                try:
+                    entries = os.listdir(folder)
+                except OSError:
+                    continue
+                for entry in entries:
+                    self._tops.setdefault(entry, []).append(folder)
+        top = header.replace("\\", "/").split("/", 1)[0]
+        near = self.user_dirs if top in (".", "..") else self._tops.get(top, ())
+        folders = [*near, *system]
         for folder in folders:
             candidate = os.path.join(folder, header)
             if os.path.isfile(candidate):
@@ -271,9 +298,17 @@ class IncludeSetup:
         path = os.path.normpath(os.path.join(self.generated, header))
         if not path.startswith(self.generated + os.sep):
             return  # "../" in a header name: nothing to create
-        os.makedirs(os.path.dirname(path), exist_ok=True)
-        with open(path, "w", encoding="utf-8") as handle:
-            handle.write(text)
+        self.written[path] = text
+        if self._on_disk:
+            _write_file(path, text)
+
+    def materialise(self) -> None:
+        """Write the synthesised headers, before the first parse (until then they are
+        only in memory: a run answered from the cache writes none)."""
+        if not self._on_disk:
+            self._on_disk = True
+            for path, text in self.written.items():
+                _write_file(path, text)
 
     # -- after parsing ----------------------------------------------------------------
 
@@ -322,3 +357,9 @@ def precompiled_prelude(flags: Sequence[str]) -> str | None:
             path = None
         _PCH[key] = path
         return path
+
+
+def _write_file(path: str, text: str) -> None:
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    with open(path, "w", encoding="utf-8") as handle:
+        handle.write(text)
