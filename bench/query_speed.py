@@ -71,7 +71,8 @@ def main() -> None:
             m = model(links)
             ours, n_ours = timed(lambda m=m, q=compiled: q.run(query.model_scope(m)))
             theirs_text, ratio = "-", "-"
-            pairs = links * links * (1 if "Fig. 5" in name else 4) // 4
+            pairs = 0 if not text.startswith("for") else \
+                links * links * (1 if "Fig. 5" in name else 4) // 4
             if pyflwor is not None and pairs > args.pyflwor_max_pairs:
                 theirs_text, ratio = "skipped", f"({pairs:,} pairs)"
             elif pyflwor is not None and links <= args.skip_pyflwor_above:
