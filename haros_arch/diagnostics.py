@@ -187,6 +187,10 @@ CATALOGUE: dict[str, Entry] = {
         "The header names a message or service whose .msg / .srv file is neither in the "
         "workspace nor installed; its type name is known but its fields are not, so code "
         "that reads them may give C++ errors."),
+    "CPP_COMPILE_COMMANDS": Entry(
+        "warning", "{path} is not used: {detail}",
+        "A compile_commands.json could not be read (too large, not JSON, not a list of "
+        "compile commands); sources are parsed with the default flags."),
     "CPP_DYNAMIC_NAME": Entry(
         "info", "the name of this {kind} call is computed at run time; kept as '{name}'",
         "The extractor could not resolve every part of the name statically."),

@@ -63,7 +63,8 @@ def analyse(project: Project, environment: Mapping[str, str] | None = None,
         nodes.update((node.name, node) for node in package.nodes)
     model.diagnostics.extend(extract_nodes(  # every C++ source once, in parallel, cached
         [n for p in model.packages for n in p.nodes], workspace,
-        cache_dir=options.cache_dir, jobs=options.jobs))
+        cache_dir=options.cache_dir, jobs=options.jobs,
+        compile_commands=[project.compile_commands] if project.compile_commands else None))
     for launched in launches.values():
         model.diagnostics.extend(_rosrun_scripts(launched, workspace, nodes))
 

@@ -54,6 +54,8 @@ class Project:
     rules: dict[str, Any] = field(default_factory=dict)
     queries: list[Any] = field(default_factory=list)
     environment: dict[str, str] = field(default_factory=dict)
+    # a compile_commands.json (or its folder) for the C++ flags; None: looked for
+    compile_commands: str | None = None
 
     @property
     def folder(self) -> str:
@@ -126,7 +128,7 @@ def _scalar_text(value: Any) -> str:
 
 
 TOP_KEYS = ("project", "packages", "configurations", "nodes", "rules", "queries",
-            "workspace", "environment", "analysis", "repositories")
+            "workspace", "environment", "analysis", "repositories", "compile_commands")
 CONFIG_KEYS = ("launch", "hints", "user_data", "args", "environment", "description")
 
 
@@ -158,6 +160,8 @@ def load(path: str) -> Project:
         "nodes": lambda n: setattr(project, "nodes", reader.any_map(n, "nodes")),
         "rules": lambda n: setattr(project, "rules", reader.any_map(n, "rules")),
         "queries": lambda n: setattr(project, "queries", _queries(reader, n)),
+        "compile_commands": lambda n: setattr(
+            project, "compile_commands", reader.string(n, "compile_commands")),
         "analysis": lambda n: None,
         "repositories": lambda n: None,  # HAROS fetched these; we analyse what is on disk
     }
@@ -173,6 +177,9 @@ def load(path: str) -> Project:
     else:
         src = os.path.join(folder, "src")
         project.workspace = [src if os.path.isdir(src) else folder]
+    if project.compile_commands is not None:
+        project.compile_commands = os.path.normpath(os.path.join(folder,
+                                                                 project.compile_commands))
     names = [c.name for c in project.configurations]
     for config in project.configurations:
         if names.count(config.name) > 1:

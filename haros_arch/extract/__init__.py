@@ -19,18 +19,20 @@ AUTO_CACHE = "auto"  # cache_dir: the default cache folder (``cpp.cache.default_
 
 
 def extract_nodes(nodes: Sequence[Node], workspace: Workspace, *,
-                  cache_dir: str | None = AUTO_CACHE,
-                  jobs: int | None = None) -> list[Diagnostic]:
+                  cache_dir: str | None = AUTO_CACHE, jobs: int | None = None,
+                  compile_commands: Sequence[str] | None = None) -> list[Diagnostic]:
     """Extract every node; C++ nodes in one batch (``cpp.extract_cpp_nodes``): a source
     shared by several nodes is parsed once. ``cache_dir`` None: no cache; ``jobs``: worker
-    processes (default: the number of cores)."""
+    processes (default: the number of cores); ``compile_commands``: the
+    compile_commands.json files to take flags from (None: those in the workspace)."""
     found: list[Diagnostic] = []
     cpp = [node for node in nodes if node.language == "cpp" and node.sources]
     if cpp:
         from .cpp import extract_cpp_nodes  # libclang loads only when there is C++ to parse
 
         batch = extract_cpp_nodes([_paths(node, workspace) for node in cpp], workspace,
-                                  cache_dir=cache_dir, jobs=jobs)
+                                  cache_dir=cache_dir, jobs=jobs,
+                                  compile_commands=compile_commands)
         for node, result in zip(cpp, batch.results, strict=True):
             node.calls, node.rosname = result.calls, result.rosname
         found.extend(batch.all_diagnostics())

@@ -24,6 +24,7 @@ from ...model.location import Location
 from ...model.source import PrimitiveCall
 from ...workspace import Workspace
 from . import cache, toolchain
+from . import compile_commands as commands
 from .headers import STANDIN, IncludeSetup
 from .visitor import CallFinder
 
@@ -60,16 +61,21 @@ class CppBatch:
 
 def extract_cpp(sources: list[str], workspace: Workspace, *,
                 include_dirs: Sequence[str] = (), system_headers: bool = False,
-                cache_dir: str | None = cache.AUTO, jobs: int | None = None) -> CppResult:
+                cache_dir: str | None = cache.AUTO, jobs: int | None = None,
+                compile_commands: Sequence[str] | None = None) -> CppResult:
     """The ROS calls in the translation units ``sources`` (absolute paths) of a node.
 
     With ``system_headers`` the installed ROS headers are used instead of the stand-ins.
     ``cache_dir`` is where results are kept between runs (``"auto"``: see
     ``cache.default_folder``; None: no cache). ``jobs`` translation units are parsed at a
     time in worker processes (default: the number of cores, at most the sources).
+    ``compile_commands`` are the compile_commands.json files whose include folders,
+    macros and standard each source is parsed with (None: those found in the workspace,
+    see ``compile_commands.find``).
     """
     batch = extract_cpp_nodes([sources], workspace, include_dirs=include_dirs,
-                              system_headers=system_headers, cache_dir=cache_dir, jobs=jobs)
+                              system_headers=system_headers, cache_dir=cache_dir, jobs=jobs,
+                              compile_commands=compile_commands)
     result = batch.results[0]
     result.diagnostics[:0] = batch.diagnostics
     return result
@@ -77,15 +83,18 @@ def extract_cpp(sources: list[str], workspace: Workspace, *,
 
 def extract_cpp_nodes(nodes: Sequence[Sequence[str]], workspace: Workspace, *,
                       include_dirs: Sequence[str] = (), system_headers: bool = False,
-                      cache_dir: str | None = cache.AUTO,
-                      jobs: int | None = None) -> CppBatch:
+                      cache_dir: str | None = cache.AUTO, jobs: int | None = None,
+                      compile_commands: Sequence[str] | None = None) -> CppBatch:
     """The ROS calls of several nodes, each given by its translation units' paths.
 
     Every translation unit is read and parsed once however many nodes build it, all of
     them in one pool of worker processes; options as for ``extract_cpp``.
     """
     batch = CppBatch()
-    setup = IncludeSetup(workspace, include_dirs, system_headers)
+    if compile_commands is None:
+        compile_commands = commands.find(workspace)
+    units, batch.diagnostics = commands.load(compile_commands, workspace)
+    setup = IncludeSetup(workspace, include_dirs, system_headers, units)
     store = None
     if cache_dir is not None:
         folder = cache.default_folder(workspace.root) if cache_dir == cache.AUTO else cache_dir
@@ -100,13 +109,14 @@ def extract_cpp_nodes(nodes: Sequence[Sequence[str]], workspace: Workspace, *,
             if text is not None:
                 texts[path] = text
                 ros2[path] = setup.scan(path, text)
-        units = _units(texts, ros2, setup, store, jobs)
+        results = _units(texts, ros2, setup, store, jobs)
     finally:
         setup.close()
-    batch.diagnostics = [*setup.diagnostics, *read]
+    batch.diagnostics += [*setup.diagnostics, *read]
     for sources in nodes:
         batch.results.append(_node_result(
-            [units[p] for p in dict.fromkeys(map(os.path.abspath, sources)) if p in units]))
+            [results[p] for p in dict.fromkeys(map(os.path.abspath, sources))
+             if p in results]))
     return batch
 
 
@@ -129,9 +139,9 @@ def _node_result(units: list[CppResult]) -> CppResult:
 def _units(texts: dict[str, str], ros2: dict[str, bool], setup: IncludeSetup,
            store: cache.Cache | None, jobs: int | None) -> dict[str, CppResult]:
     """Each translation unit's result, from the cache or parsed (in parallel)."""
-    args = setup.arguments(pch=False)
     keys = {path: cache.key(setup.workspace.relpath(path), text,
-                            [*args, f"ros2={ros2[path]}"], setup.generated)
+                            [*setup.arguments(False, path), f"ros2={ros2[path]}"],
+                            setup.generated)
             for path, text in texts.items()}
     done: dict[str, CppResult] = {}
     if store is not None:
@@ -149,7 +159,8 @@ def _units(texts: dict[str, str], ros2: dict[str, bool], setup: IncludeSetup,
     parsed: list[tuple[CppResult, list[str]]]
     if todo:
         setup.materialise()
-        setup.arguments()  # the PCH, built once here and shared by forked workers
+    for path in todo:  # the PCHs (one per C++ standard), built here, shared by workers
+        setup.arguments(source=path)
     if workers > 1:
         with ProcessPoolExecutor(max_workers=workers, initializer=_start_worker,
                                  initargs=(setup,)) as pool:
@@ -235,7 +246,8 @@ def _parse(path: str, text: str, setup: IncludeSetup, workspace: Workspace,
     unsaved = [(path, text)]
     for _attempt in range(2):
         try:
-            tu = toolchain.index().parse(path, args=setup.arguments(), unsaved_files=unsaved,
+            tu = toolchain.index().parse(path, args=setup.arguments(source=path),
+                                         unsaved_files=unsaved,
                                          options=PARSE_OPTIONS)
         except TranslationUnitLoadError as err:
             result.diagnostics.append(diag.make(

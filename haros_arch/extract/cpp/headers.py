@@ -29,7 +29,7 @@ import re
 import shutil
 import tempfile
 import threading
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 
 from clang.cindex import TranslationUnitLoadError, TranslationUnitSaveError
 
@@ -39,6 +39,7 @@ from ...files import read_text
 from ...model.location import Location
 from ...workspace import Workspace
 from . import interfaces, ros2_interfaces, toolchain
+from .compile_commands import UnitFlags
 
 STANDIN = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "standin")
 STD_STANDIN = os.path.join(STANDIN, "std")  # the C and C++ standard library stand-in
@@ -74,14 +75,17 @@ class IncludeSetup:
     """The folders and flags of one extraction; call ``close`` when done."""
 
     def __init__(self, workspace: Workspace, include_dirs: Sequence[str],
-                 system_headers: bool) -> None:
+                 system_headers: bool, units: Mapping[str, UnitFlags] | None = None) -> None:
         self.workspace = workspace
+        self.units = dict(units or {})  # real source path -> its compile command's flags
         self.system_headers = system_headers
         self.generated = tempfile.mkdtemp(prefix="haros-arch-cpp-")
         self.user_dirs = [os.path.abspath(d) for d in include_dirs]
         self.user_dirs += [inc for inc in (os.path.join(p.root, "include")
                                            for p in workspace.packages.values() if p.root)
                            if os.path.isdir(inc) and inc not in self.user_dirs]
+        for unit in self.units.values():  # so that the scan before parsing finds them
+            self.user_dirs += [d for d in unit.include_dirs if d not in self.user_dirs]
         self.diagnostics: list[Diagnostic] = []
         self._handled: set[str] = set()
         self._scanned: dict[str, bool] = {}  # file -> ROS 2 code (see ``scan``)
@@ -89,13 +93,18 @@ class IncludeSetup:
         self._on_disk = False
         self._tops: dict[str, list[str]] | None = None  # see ``_resolve``
 
-    def arguments(self, pch: bool = True) -> list[str]:
-        """The parse flags; without ``pch`` the precompiled stand-ins are left out (the
-        flags that key the cache, which must not name this process's PCH file)."""
-        flags = toolchain.base_arguments(self.system_headers)
+    def arguments(self, pch: bool = True, source: str | None = None) -> list[str]:
+        """The parse flags (of translation unit ``source``: its compile command's include
+        folders, macros and standard, after our stand-ins); without ``pch`` the
+        precompiled stand-ins are left out (the flags that key the cache, which must not
+        name this process's PCH file)."""
+        unit = self.units.get(os.path.realpath(source)) if source and self.units else None
+        flags = toolchain.base_arguments(self.system_headers, unit.std if unit else None)
         args = ["-I", self.generated]
         if not self.system_headers:
             args += ["-I", STANDIN]
+        if unit is not None:
+            args += unit.arguments()
         for folder in self.user_dirs:
             args += ["-I", folder]
         if self.system_headers:

@@ -79,13 +79,14 @@ def _version_key(text: str) -> tuple[int, ...]:
     return tuple(int(p) for p in text.split(".") if p.isdigit())
 
 
-def base_arguments(system_headers: bool = True) -> list[str]:
+def base_arguments(system_headers: bool = True, std: str | None = None) -> list[str]:
     """Language flags, and the system include path when ``system_headers`` is set.
 
     Without it nothing of the system is searched (``-nostdinc``): the caller puts our
-    stand-in standard library on the path instead.
+    stand-in standard library on the path instead. ``std`` is the C++ standard (default
+    C++17; a compile command's ``-std`` may name another).
     """
-    args = ["-x", "c++", "-std=c++17", "-nostdinc", "-nostdinc++", "-fsyntax-only",
+    args = ["-x", "c++", f"-std={std or 'c++17'}", "-nostdinc", "-nostdinc++", "-fsyntax-only",
             "-Wno-everything"]
     if system_headers:
         for folder in system_include_dirs():
