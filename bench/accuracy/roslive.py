@@ -16,11 +16,13 @@ import socket
 import subprocess
 import tempfile
 import time
+import xmlrpc.client
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from haros_arch.live.capture import CaptureError, capture
+CALLER = "/accuracy_bench"
+
 
 
 def free_port() -> int:
@@ -98,10 +100,24 @@ def stop(popen: subprocess.Popen[bytes], grace: float = 15.0) -> list[int]:
     return stubborn
 
 
-def signature(live: dict[str, Any]) -> str:
-    """What must stay unchanged for the graph to count as settled (not parameter values)."""
-    return json.dumps([live["nodes"], live["topics"], live["services"],
-                       [p["name"] for p in live["parameters"]]], sort_keys=True)
+def signature(uri: str, timeout: float = 5.0) -> str:
+    """What must stay unchanged for the graph to count as settled: nodes, topics, types,
+    services and parameter names (not values), read straight from the master."""
+    master = xmlrpc.client.ServerProxy(uri, transport=_Transport(timeout))
+    state = [master.getSystemState(CALLER), master.getTopicTypes(CALLER),
+             master.getParamNames(CALLER)]
+    return json.dumps(state, sort_keys=True)
+
+
+class _Transport(xmlrpc.client.Transport):
+    def __init__(self, timeout: float) -> None:
+        super().__init__()
+        self.timeout = timeout
+
+    def make_connection(self, host: Any) -> Any:
+        connection = super().make_connection(host)
+        connection.timeout = self.timeout
+        return connection
 
 
 @dataclass
@@ -125,9 +141,9 @@ def _wait_for_master(uri: str, core: subprocess.Popen[bytes], seconds: float) ->
         if core.poll() is not None:
             raise RuntimeError(f"roscore exited with {core.returncode}")
         try:
-            capture(uri, timeout=2.0)
+            signature(uri, 2.0)
             return
-        except CaptureError:
+        except (OSError, xmlrpc.client.Error):
             time.sleep(0.3)
     raise RuntimeError("roscore did not answer in time")
 
@@ -183,8 +199,8 @@ def _settle(uri: str, settle: float, min_wait: float, timeout: float) -> bool:
     while time.monotonic() - started < timeout:
         time.sleep(0.5)
         try:
-            now = signature(capture(uri, timeout=5.0))
-        except CaptureError:
+            now = signature(uri)
+        except (OSError, xmlrpc.client.Error):
             continue
         if now != last:
             last, since = now, time.monotonic()

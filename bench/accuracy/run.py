@@ -45,7 +45,8 @@ DEBS = ["catkin", "ros-core-dev", "ros-base-dev", "rosout", "rosbash", "python3-
         "python3-sensor-msgs", "python3-actionlib", "python3-actionlib-msgs",
         "python3-dynamic-reconfigure", "libtf-dev", "python3-tf", "libtf2-ros-dev",
         "python3-tf2-ros", "libangles-dev", "python3-angles", "python3-nodelet",
-        "qtbase5-dev", "libboost-thread-dev", "g++", "cmake"]
+        "qtbase5-dev", "libboost-thread-dev", "g++", "cmake",
+        "python-is-python3"]  # scripts of the tutorials start with `#!/usr/bin/env python`
 
 # (repository, pinned commit, folder of the repository that holds packages)
 SOURCES = [
@@ -236,7 +237,10 @@ def score_all(ws: Path, configs: list[dict[str, Any]], timeout: float) -> None:
     order = [c["name"] for c in configurations()]
     results = [previous[n] for n in order if n in previous]
     results_file.write_text(json.dumps(results, indent=1) + "\n")
-    (HERE / "results.md").write_text(scoring.markdown(results, _header()))
+    unscored = [f"`{c['name']}` ({(runs.get(c['name']) or {}).get('error') or 'no capture'})"
+                for c in configurations() if c["name"] not in previous]
+    header = _header() + ([f"Not scored: {'; '.join(unscored)}."] if unscored else [])
+    (HERE / "results.md").write_text(scoring.markdown(results, header))
     log(f"wrote {HERE / 'results.md'}")
 
 
