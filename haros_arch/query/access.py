@@ -47,8 +47,9 @@ class Pair:
 
 
 _LINK = ("kind", "node", "rosname", "name", "type", "queue_size", "qos", "latch",
-         "conditions", "location", "call", "resource")
-_RESOURCE = ("name", "id", "rosname", "types", "conditions", "is_unresolved", "links")
+         "conditions", "location", "call", "resource", "origin")
+_RESOURCE = ("name", "id", "rosname", "types", "conditions", "is_unresolved", "links",
+             "candidates")
 
 # class -> the attribute names a query may read; subclasses add to their bases'
 FIELDS: dict[type, tuple[str, ...]] = {
@@ -60,18 +61,21 @@ FIELDS: dict[type, tuple[str, ...]] = {
     Node: ("package", "executable", "name", "kind", "language", "sources", "calls",
            "rosname", "conditions", "location"),
     PrimitiveCall: ("kind", "name", "type", "queue_size", "qos", "latch", "callback",
-                    "conditions", "location"),
+                    "conditions", "location", "name_param", "name_default", "origin",
+                    "has_default", "default", "searched"),
     Configuration: ("name", "launch", "args", "nodes", "topics", "services", "actions",
                     "parameters", "links", "diagnostics"),
     NodeInstance: ("name", "id", "node", "namespace", "remaps", "args", "conditions",
                    "location", "rosname", "links", "publishers", "subscribers", "servers",
-                   "clients", "action_servers", "action_clients", "reads", "writes"),
+                   "clients", "action_servers", "action_clients", "reads", "writes",
+                   "origin", "ros_version"),
     Resource: _RESOURCE,
     Topic: ("publishers", "subscribers", "is_disconnected"),
     Service: ("servers", "clients", "is_disconnected"),
     Action: ("servers", "clients", "is_disconnected"),
     Parameter: ("value", "type", "launch_type", "set_by_launch", "launch_location",
-                "location", "readers", "writers", "reads", "writes"),
+                "location", "readers", "writers", "reads", "writes", "is_read",
+                "has_default", "read_as_part_of"),
     Link: _LINK,
     PublishLink: ("topic", "topic_name"),
     SubscribeLink: ("topic", "topic_name"),

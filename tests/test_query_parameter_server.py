@@ -1,0 +1,67 @@
+"""The parameter and condition queries follow the parameter server and real semantics."""
+
+from __future__ import annotations
+
+import os
+
+from conftest import package_xml
+
+from haros_arch.pipeline import analyse
+from haros_arch.project import load
+from haros_arch.query import run_catalogue
+
+NODE = """
+#!/usr/bin/env python3
+import rospy
+from std_msgs.msg import String
+
+def main():
+    rospy.init_node("talker")
+    gains = rospy.get_param("gains")           # the whole namespace
+    rate = rospy.get_param("~rate", 10)        # has a default: fine if unset
+    port = rospy.get_param("~port")            # no default and never set
+    found = rospy.search_param("robot_model")  # set at the root
+    pub = rospy.Publisher("chatter", String, queue_size=10)
+    if rate > 5:
+        fast = rospy.Publisher("fast", String, queue_size=10)
+
+try:
+    main()
+except rospy.ROSInterruptException:
+    pass
+"""
+
+LAUNCH = """
+<launch>
+  <param name="robot_model" value="small" />
+  <group ns="foo">
+    <group ns="gains"><param name="P" value="1.0" /><param name="I" value="2.0" /></group>
+    <node name="talker" pkg="pkg" type="talker.py" />
+  </group>
+</launch>
+"""
+
+
+def test_catalogue_on_parameter_server_semantics(write_tree):
+    root = write_tree({
+        "src/pkg/package.xml": package_xml("pkg"),
+        "src/pkg/CMakeLists.txt": "project(pkg)\n",
+        "src/pkg/scripts/talker.py": NODE,
+        "src/pkg/launch/a.launch": LAUNCH,
+        "project.yaml": "project: p\nconfigurations:\n  c: [pkg/launch/a.launch]\n",
+    })
+    os.chmod(root / "src/pkg/scripts/talker.py", 0o755)
+    project = load(str(root / "project.yaml"))
+    model = analyse(project, {"PATH": ""})
+    findings = run_catalogue(model, project)
+    by_rule: dict[str, list[str]] = {}
+    for finding in findings:
+        by_rule.setdefault(finding.rule, []).append(finding.message)
+    # only ~port is read without a default and never set
+    assert len(by_rule["parameter-read-not-set"]) == 1
+    assert "/foo/talker/port" in by_rule["parameter-read-not-set"][0]
+    # gains/P and gains/I are read as the gains namespace; robot_model is found by search
+    assert "parameter-set-not-read" not in by_rule
+    # the publisher under `if` is conditional; the one in the try body is not
+    (conditional,) = by_rule["conditional-communication"]
+    assert "/foo/fast" in conditional
