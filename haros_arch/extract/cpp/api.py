@@ -70,6 +70,8 @@ class RosFunction:
     # overloads that take the name at another index: the first of these indexes whose
     # argument is a string is the name (rclcpp_action's node-interfaces overloads)
     name_candidates: tuple[int, ...] = ()
+    # searchParam: the name is looked up in the enclosing namespaces
+    searched: bool = False
 
 
 NODE_HANDLE = "ros::NodeHandle"
@@ -100,7 +102,7 @@ ROSCPP: dict[tuple[str, str], RosFunction] = {
     (NODE_HANDLE, "getParamCached"): _PARAM_READ,
     (NODE_HANDLE, "param"): _PARAM_READ_DEFAULT,
     (NODE_HANDLE, "hasParam"): RosFunction("read"),
-    (NODE_HANDLE, "searchParam"): RosFunction("read"),
+    (NODE_HANDLE, "searchParam"): RosFunction("read", searched=True),
     (NODE_HANDLE, "setParam"): _PARAM_WRITE,
     (NODE_HANDLE, "deleteParam"): RosFunction("write"),
     # parameters through ros::param
@@ -112,7 +114,7 @@ ROSCPP: dict[tuple[str, str], RosFunction] = {
         "read", type_from=("value", "template-value"), type_arg=1, out_arg=1, default_arg=2,
         on_handle=False),
     ("ros::param", "has"): RosFunction("read", on_handle=False),
-    ("ros::param", "search"): RosFunction("read", on_handle=False),
+    ("ros::param", "search"): RosFunction("read", on_handle=False, searched=True),
     ("ros::param", "set"): RosFunction("write", type_from=("value",), type_arg=1, on_handle=False),
     ("ros::param", "del"): RosFunction("write", on_handle=False),
 }
@@ -245,3 +247,16 @@ RCLCPP_NODE_NAME: dict[tuple[str, str], tuple[int, int]] = {
 RCLCPP_SUB_NODE: dict[tuple[str, str], int] = {("rclcpp::Node", "create_sub_node"): 0}
 
 ALL: dict[tuple[str, str], RosFunction] = {**ROSCPP, **LIBRARIES, **RCLCPP}
+
+# ``nh.subscribe(ops)`` / ``nh.advertise(ops)``: the call is made there (its handle,
+# location and conditions), with the topic, queue and type of the row that filled ``ops``
+_SUBSCRIBE_OPTIONS = RosFunction(
+    "subscribe", type_from=("template", "callback"), queue_arg=1, callback_arg=2)
+_ADVERTISE_OPTIONS = RosFunction("publish", type_from=("template",), queue_arg=1)
+OPTIONS: dict[tuple[str, str], RosFunction] = {
+    ("ros::SubscribeOptions", "init"): _SUBSCRIBE_OPTIONS,
+    ("ros::SubscribeOptions", "create"): _SUBSCRIBE_OPTIONS,
+    ("ros::AdvertiseOptions", "init"): _ADVERTISE_OPTIONS,
+    ("ros::AdvertiseOptions", "create"): _ADVERTISE_OPTIONS,
+}
+OPTION_CLASSES = frozenset(owner for owner, _ in OPTIONS)

@@ -67,12 +67,14 @@ class CallFinder:
         self._fixed: set[tuple[str, str]] = set()  # fixed-name calls already found
         self._declared: dict[str, str] = {}  # ROS 2 parameter -> its declared default
         self.calls: list[PrimitiveCall] = []
+        self.functions: list[Cursor] = []
+        self._scope: Scope | None = None  # of the function being walked
         self.rosname: str | None = None
         self.diagnostics: list[Diagnostic] = []
 
     def run(self) -> None:
-        functions = list(self._definitions(self.tu.cursor, top=True))
-        for function in functions:
+        self.functions = list(self._definitions(self.tu.cursor, top=True))
+        for function in self.functions:
             self._function(function)
         for call in self.calls:  # get_parameter("p") of a declare_parameter("p", default)
             if call.name_param is not None and call.name_default is None:
@@ -96,7 +98,7 @@ class CallFinder:
                 yield from self._definitions(cursor)
 
     def _function(self, function: Cursor) -> None:
-        scope = Scope(function, self.macros, self.source)
+        scope = self._scope = Scope(function, self.macros, self.source)
         stack: list[tuple[Cursor, tuple[Condition, ...]]] = [
             (child, ()) for child in reversed(list(function.get_children()))
             if child.kind != CursorKind.PARM_DECL]
@@ -150,8 +152,48 @@ class CallFinder:
             self._node_name(api.RCLCPP_NODE_NAME[key], args, scope)
             return
         spec, cls = self._row(call)
+        if spec is not None and len(args) == 1 and record_class(args[0]) is not None and (
+            qualified_name(record_class(args[0])) in api.OPTION_CLASSES
+        ):
+            filled = self._options(args[0], scope)
+            if filled is not None:
+                fill_spec, fill_call, fill_scope = filled
+                self._emit(fill_spec, fill_call, written_arguments(fill_call), None,
+                           conditions, fill_scope, at=call, at_scope=scope)
+                return
         if spec is not None:
             self._emit(spec, call, args, cls, conditions, scope)
+
+    def _options(self, expr: Cursor,
+                 scope: Scope) -> tuple[api.RosFunction, Cursor, Scope] | None:
+        """The ``ops.init<M>(...)`` or ``Options::create<M>(...)`` call that filled the
+        options object ``expr`` (in this function, else in any function of the file)."""
+        expr = strip(expr)
+        decl = expr.referenced if expr.kind in (
+            CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR) else None
+        if decl is None:
+            return None
+        value = scope.variable(decl)
+        if value is not None:
+            inner = _creator(value)
+            if inner is not None:
+                return inner[0], inner[1], scope
+        for function in [scope.body, *self.functions]:
+            if function is None:
+                continue
+            for node in function.walk_preorder():
+                if node.kind != CursorKind.CALL_EXPR or node.spelling not in ("init", "create"):
+                    continue
+                target = node.referenced
+                row = api.OPTIONS.get((qualified_name(target.semantic_parent), node.spelling)
+                                      ) if target is not None else None
+                callee = self._callee(node)
+                objects = [c for c in callee.get_children() if c.kind.is_expression()]
+                if row is not None and objects and strip(objects[0]).referenced == decl:
+                    found = scope if function == scope.body else Scope(
+                        function, self.macros, self.source)
+                    return row, node, found
+        return None
 
     def _node_name(self, where: tuple[int, int], args: list[Cursor], scope: Scope) -> None:
         name_arg, ns_arg = where
@@ -167,7 +209,10 @@ class CallFinder:
         self.rosname = name
 
     def _emit(self, spec: api.RosFunction, call: Cursor, args: list[Cursor],
-              cls: Cursor | None, conditions: tuple[Condition, ...], scope: Scope) -> None:
+              cls: Cursor | None, conditions: tuple[Condition, ...], scope: Scope,
+              at: Cursor | None = None, at_scope: Scope | None = None) -> None:
+        """Emit ``call`` of ``spec``; ``at`` is the call that makes it, when another one
+        (``nh.subscribe(ops)`` for ``ops.init<M>(...)``) gives its location and handle."""
         shift, handle_arg = 0, spec.handle_arg
         if spec.optional_handle and args and is_handle(args[0]):
             shift, handle_arg = 1, 0
@@ -177,9 +222,10 @@ class CallFinder:
                 return None
             return args[index + shift]
 
-        callee = self._callee(call)
-        target = call.referenced
-        location = self.where(call if target is not None and (
+        site = at or call
+        callee = self._callee(site)
+        target = site.referenced
+        location = self.where(site if target is not None and (
             target.kind == CursorKind.CONSTRUCTOR) else callee)
         names: list[tuple[str, tuple[str, str | None] | None]]
         if spec.fixed_name is not None:
@@ -199,7 +245,7 @@ class CallFinder:
         namespace: str | None = None
         if spec.fixed_name is None:
             if spec.on_handle:
-                namespace = render(self.namespaces.of_call(call, callee, scope))
+                namespace = render(self.namespaces.of_call(site, callee, at_scope or scope))
             elif handle_arg is not None and handle_arg < len(args):
                 namespace = render(self.namespaces.of(args[handle_arg], scope))
         function = callback(args, None if spec.callback_arg is None
@@ -216,6 +262,7 @@ class CallFinder:
             declared = self._parameter(spec, call, scope)
             if declared is not None and declared[1] is not None:
                 self._declared[declared[0]] = declared[1]
+        has_default, default = self._default(spec, args, scope)
         for written, source in names:
             name = _private(written)
             if namespace is not None:
@@ -225,7 +272,9 @@ class CallFinder:
                 latch=latch, callback=callback_name(function), conditions=conditions,
                 location=location,
                 name_param=source[0] if source else None,
-                name_default=source[1] if source else None))
+                name_default=source[1] if source else None,
+                has_default=has_default, default=default,
+                searched=spec.searched))
             if "?" in name:
                 self.diagnostics.append(diag.make(
                     "CPP_DYNAMIC_NAME", location, kind=spec.kind, name=name))
@@ -316,6 +365,25 @@ class CallFinder:
             if None not in parts:
                 default = render(parts)
         return (name, default)
+
+    @staticmethod
+    def _default(spec: api.RosFunction, args: list[Cursor],
+                 scope: Scope) -> tuple[bool, object]:
+        """Whether a parameter read gives a default, and its value when it is a literal."""
+        index = spec.default_arg
+        if index is None:
+            return False, None
+        if index >= len(args) and spec.out_arg == len(args) - 1:
+            index = spec.out_arg  # nh.param<T>(name, default) returns the value
+        if index >= len(args):
+            return False, None
+        expr = args[index]
+        for read in (scope.boolean, scope.integer):
+            value = read(expr)
+            if value is not None:
+                return True, value
+        parts = scope.string(expr)
+        return True, (render(parts) if parts and None not in parts else None)
 
     def _field(self, field: Cursor) -> None:
         """A member whose mere construction is a primitive (a tf broadcaster)."""

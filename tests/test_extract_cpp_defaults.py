@@ -1,0 +1,34 @@
+"""C++ parameter reads record whether the code gives a default; searchParam is marked."""
+
+from __future__ import annotations
+
+from haros_arch.extract.cpp import extract_cpp
+from haros_arch.workspace import Workspace
+
+SOURCE = """
+#include <ros/ros.h>
+#include <string>
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "n");
+  ros::NodeHandle nh("~");
+  double rate; int n; std::string frame; bool on;
+  nh.param("rate", rate, 0.5);
+  nh.param("n", n, 3);
+  nh.param<std::string>("frame", frame, "base_link");
+  on = nh.param("on", true);
+  nh.getParam("plain", rate);
+  std::string key;
+  nh.searchParam("robot_model", key);
+  return 0;
+}
+"""
+
+
+def test_defaults_and_searches(tmp_path):
+    source = tmp_path / "n.cpp"
+    source.write_text(SOURCE)
+    result = extract_cpp([str(source)], Workspace(root=str(tmp_path)), cache_dir=None)
+    got = [(c.name, c.has_default, c.default, c.searched) for c in result.calls]
+    assert got == [("~rate", True, None, False), ("~n", True, 3, False),
+                   ("~frame", True, "base_link", False), ("~on", True, True, False),
+                   ("~plain", False, None, False), ("~robot_model", False, None, True)]
