@@ -334,18 +334,34 @@ def _last_error(text: str) -> str:
     return (errors or lines or ["no output"])[-1][:200]
 
 
+def _tag_parameters() -> None:
+    """Remember which node each parameter was made for (unnamed nodes share '/?')."""
+    from haros_arch.launch.ros2 import nodes
+
+    original = nodes.node_params
+    if getattr(original, "bench", False):
+        return
+
+    def tagged(runner: Any, *args: Any, **kwargs: Any) -> None:
+        before = len(runner.model.params)
+        original(runner, *args, **kwargs)
+        for param in runner.model.params[before:]:
+            param.bench_node_index = len(runner.model.nodes) - 1
+
+    tagged.bench = True  # type: ignore[attr-defined]
+    nodes.node_params = tagged
+
+
 def run_ours(path: str, workspace: Any, env: dict[str, str]) -> dict[str, Any]:
     from haros_arch.launch import load
 
+    _tag_parameters()
     model = load(path, workspace, {}, env)
-    # parameters go to the node of that name; unnamed nodes ('/?') share a name, so
-    # those go to the one declared at the same place
     params: dict[int, dict[str, Any]] = {}
     for param in model.params:
-        same = [i for i, d in enumerate(model.nodes) if d.name == param.node]
-        here = [i for i in same if model.nodes[i].location == param.location]
-        if same:
-            params.setdefault((here or same)[0], {})[str(param.key)] = param.value
+        index = getattr(param, "bench_node_index", None)
+        if index is not None:
+            params.setdefault(index, {})[str(param.key)] = param.value
     nodes = []
     for index, decl in enumerate(model.nodes):
         ns = decl.namespace.rstrip("/") or "/"
@@ -384,6 +400,12 @@ def compare(ours: list[dict[str, Any]], real: list[dict[str, Any]], tally: Count
         return out
 
     real_by, ours_by = keyed(real), keyed(ours)
+    for name in [n for n in ours_by if "?" in n and n not in real_by]:
+        pattern = re.escape(name.split(" [")[0]).replace(re.escape("?"), ".+")
+        found = [r for r in real_by if r not in ours_by and re.fullmatch(pattern, r)]
+        if len(found) == 1:  # $(anon x): 'x_?' stands for the one real name
+            tally["nodes.matched_by_pattern"] += 1
+            real_by[name] = real_by.pop(found[0])
     for name in sorted(set(real_by) | set(ours_by)):
         tally["nodes.total"] += 1
         if name not in ours_by:
@@ -441,7 +463,8 @@ def main() -> int:
     empty = os.path.join(prefix, "empty")
     os.makedirs(empty)
     given_env = dict(item.split("=", 1) for item in options.env)
-    ours_env = dict(given_env, AMENT_PREFIX_PATH=prefix)
+    # both sides see the same environment: this process's, the given values, the prefix
+    ours_env = dict(os.environ, **given_env, AMENT_PREFIX_PATH=prefix)
     workspace = scan([empty], ours_env)
     packages = {name: os.path.join(prefix, "share", name) for name in sources.packages}
     # launch reads its substitution grammar from share/launch/frontend/grammar.lark

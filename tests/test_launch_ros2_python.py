@@ -17,6 +17,7 @@ from launch.conditions import IfCondition, LaunchConfigurationEquals, UnlessCond
 from launch.launch_description_sources import PythonLaunchDescriptionSource
 from launch.substitutions import LaunchConfiguration, PythonExpression, TextSubstitution
 from launch_ros.actions import Node, PushRosNamespace, SetParameter
+from launch_ros.descriptions import ParameterFile
 """
 
 
@@ -238,3 +239,41 @@ def generate_launch_description():
     params = {p.name: p.value for p in model.params if p.node == "/r1/ctrl"}
     assert params == {"/r1/ctrl/rate": 50, "/r1/ctrl/frame": "/r1/base"}
     assert "pkg/config/robot.yaml" in model.files
+
+
+def test_opaque_function_reads_yaml_and_evaluates_conditions(write_tree, tmp_path):
+    outside = tmp_path.parent / "outside_config.yaml"
+    outside.write_text("names: [leak]\n")
+    model, _ = run(write_tree, f"""
+import yaml
+
+def setup(context):
+    path = os.path.join(get_package_share_directory('pkg'), 'config', 'sensors.yaml')
+    with open(path, 'r') as handle:
+        config = yaml.safe_load(handle)
+    with open('{outside}') as other:
+        leaked = yaml.safe_load(other)
+    with open(path, 'w') as bad:
+        pass
+    composed = IfCondition(LaunchConfiguration('composed')).evaluate(context)
+    nodes = [Node(package='drv', executable='lidar', name=name,
+                  parameters=[{{'rate': config['rate']}}]) for name in config['names']]
+    if composed:
+        nodes.append(Node(package='p', executable='container', name='box'))
+    return nodes
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('composed', default_value='true'),
+        OpaqueFunction(function=setup),
+        Node(package='p', executable='e', name='cfg', parameters=[
+            ParameterFile(os.path.join(get_package_share_directory('pkg'), 'config',
+                                       'subst.yaml'), allow_substs=True)]),
+    ])
+""", extra={"src/pkg/config/sensors.yaml": "names: [front, rear]\nrate: 15\n",
+            "src/pkg/config/subst.yaml": "cfg:\n  ros__parameters:\n    mode: $(var composed)\n"})
+    assert [n.name for n in model.nodes] == ["/front", "/rear", "/box", "/cfg"]
+    assert {p.name: p.value for p in model.params} == {
+        "/cfg/mode": True, "/front/rate": 15, "/rear/rate": 15}
+    messages = " ".join(d.message for d in model.diagnostics)
+    assert "outside the workspace" in messages and "open() other than for reading" in messages

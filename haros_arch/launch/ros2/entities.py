@@ -176,6 +176,7 @@ class ParamFile:
     location: Location = NOWHERE
     replacements: list[tuple[Text, Text]] = field(default_factory=list)  # ReplaceString
     condition: Cond | None = None  # ReplaceString(condition=...): replace only if true
+    allow_substs: bool = False  # $(...) in the file's text is substituted first
 
 
 @dataclass(frozen=True, eq=False)

@@ -210,9 +210,10 @@ class Frontend:
             ent = child
             if "from" in ent.attrs:
                 path = self.text(ent, "from")
-                self.text(ent, "allow_substs")
+                substs = self.flag(ent, "allow_substs", False)
                 if path is not None:
-                    out.append(e.ParamFile(path, location=self.where(ent)))
+                    out.append(e.ParamFile(path, location=self.where(ent),
+                                           allow_substs=substs))
                 self.leftovers(ent)
                 continue
             name = self.text(ent, "name", True)

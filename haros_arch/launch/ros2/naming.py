@@ -216,22 +216,20 @@ def pattern_matches(pattern: str, node: str) -> bool:
     return re.fullmatch(regex or "/", node) is not None
 
 
-def could_match(pattern: str, node: str) -> bool:
-    """True when a node whose name has ``?`` parts might match ``pattern``."""
-    known = re.escape(node).replace(re.escape(UNKNOWN_MARK), ".+")
-    plain = pattern.replace("**", "x").replace("*", "x")
-    return pattern_matches(pattern, node.replace(UNKNOWN_MARK, "x")) or re.fullmatch(
-        known, plain) is not None
+def names_a_node(document: Any) -> bool:
+    """True when a parameter file has entries for particular nodes (not only ``/**``)."""
+    return any(pattern != "/**" for pattern, _ in node_patterns(document))
 
 
 def params_for_node(document: Any, node: str) -> list[tuple[str, Any]]:
     """The parameters a parameter file gives the node ``node``, in file order.
 
-    Later entries override earlier ones, as rcl applies them in order.
+    Later entries override earlier ones, as rcl applies them in order. For a node whose
+    name has unknown parts only the ``/**`` entries are certain to apply.
     """
     found: dict[str, Any] = {}
     for pattern, params in node_patterns(document):
-        if pattern_matches(pattern, node):
+        if pattern == "/**" or pattern_matches(pattern, node):
             for name, value in flatten(params):
                 found[name] = value
     return list(found.items())

@@ -89,10 +89,10 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
             document = runner.param_file(entry, scope, location)
             if document is None:
                 continue
-            if UNKNOWN_MARK in node:
+            if UNKNOWN_MARK in node and naming.names_a_node(document):
                 runner.report("LAUNCH_PARAM_FILE", location,
-                              detail=f"parameter file applied to {node}, whose name is "
-                                     "not known: its entries are not matched")
+                              detail=f"parameter file applied to {node}, whose name is not "
+                                     "known: only its /** entries are used")
             for name, leaf in naming.params_for_node(document, node):
                 found[name] = (leaf, location)
         else:

@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import ast
 import operator
+import os
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
@@ -34,6 +35,7 @@ MAX_DEPTH = 100
 MAX_STEPS = 200_000
 MAX_CALL_DEPTH = 40
 MAX_SIZE = 100_000  # items of a container or characters of a string
+MAX_READ = 1024 * 1024  # bytes of a file read by open() / yaml.safe_load
 
 
 class Budget(Exception):
@@ -86,6 +88,13 @@ class Ref:
 class Func:
     node: ast.FunctionDef | ast.Lambda
     closure: dict[str, Any]
+
+
+@dataclass(frozen=True)
+class ReadOnlyFile:
+    """What ``open(path)`` gives: only ``read()`` and ``yaml.safe_load`` use it."""
+
+    path: str
 
 
 @dataclass
@@ -238,6 +247,8 @@ class Interpreter:
             raise _Break()
         elif isinstance(stmt, ast.Continue):
             raise _Continue()
+        elif isinstance(stmt, ast.With):
+            self.with_(stmt, env)
         elif isinstance(stmt, ast.While):
             self.unsupported(stmt, "while loops are not interpreted (never run)")
         else:
@@ -282,6 +293,37 @@ class Interpreter:
                 self.block(stmt.orelse, env)
             finally:
                 self.guards.pop()
+
+    def with_(self, stmt: ast.With, env: dict[str, Any]) -> None:
+        """``with open(path) as f:``: a read-only handle on a file we may read."""
+        for item in stmt.items:
+            value = self.eval(item.context_expr, env)
+            if not isinstance(value, ReadOnlyFile):
+                self.unsupported(stmt, "with statements other than open() are not "
+                                       "interpreted")
+                return
+            if item.optional_vars is not None:
+                self.assign(item.optional_vars, value, env)
+        self.block(stmt.body, env)
+
+    def read(self, path: Any, node: ast.AST) -> str | None:
+        """The text of a file of the workspace or an installed package (bounded)."""
+        from ...files import read_text
+        from ...workspace import installed_roots
+
+        if not isinstance(path, str):
+            self.unsupported(node, "a file whose path is not known statically")
+            return None
+        full = os.path.realpath(path)
+        roots = [os.path.realpath(r) for r in [*(self.workspace.roots or
+                                                 [self.workspace.root]),
+                                               *installed_roots(self.environment)]]
+        if not any(full.startswith(root + os.sep) for root in roots):
+            self.unsupported(node, f"{path} is outside the workspace; not read")
+            return None
+        text, found = read_text(full, self.workspace.location(full), MAX_READ)
+        self.diagnostics.extend(found)
+        return text
 
     def for_(self, stmt: ast.For, env: dict[str, Any]) -> None:
         items = self.iterable(self.eval(stmt.iter, env), stmt.iter)
@@ -646,7 +688,7 @@ _COMPARE: dict[type, Callable[[Any, Any], bool]] = {
     ast.NotIn: lambda a, b: a not in b, ast.Is: operator.is_, ast.IsNot: operator.is_not,
 }
 _KNOWN_ROOTS = ("launch", "launch_ros", "launch_xml", "launch_yaml", "os", "ament_index_python",
-                "nav2_common", "builtins", "pathlib")
+                "nav2_common", "builtins", "pathlib", "yaml")
 
 
 def _known_module(qualified: str) -> bool:

@@ -15,6 +15,8 @@ import os
 from collections.abc import Callable
 from typing import Any
 
+import yaml
+
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
 from ...model.values import Value
@@ -25,6 +27,7 @@ from .python import (
     Interpreter,
     LaunchDescription,
     Lazy,
+    ReadOnlyFile,
     Unk,
     _Flow,
     concat,
@@ -401,9 +404,11 @@ def ignored(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
 
 def param_file(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     given = arg(a, k, 0, "param_file", "source_file")
-    if isinstance(given, e.ParamFile):
-        return given  # ParameterFile(RewrittenYaml(...))
-    return e.ParamFile(to_text(arg(a, k, 0, "param_file")), location=i.where(n))
+    substs = arg(a, k, 1, "allow_substs", default=False) is True
+    if isinstance(given, e.ParamFile):  # ParameterFile(RewrittenYaml(...))
+        given.allow_substs = given.allow_substs or substs
+        return given
+    return e.ParamFile(to_text(given), location=i.where(n), allow_substs=substs)
 
 
 def rewritten_yaml(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
@@ -442,6 +447,27 @@ def builtin(function: Callable[..., Any], *types: type) -> Builder:
         except (TypeError, ValueError, OverflowError) as err:
             return i.unsupported(n, f"{function.__name__}() fails: {err}")
     return build
+
+
+def open_file(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``open(path)`` / ``open(path, 'r')``: read-only; any other mode is refused."""
+    mode = arg(a, k, 1, "mode", default="r")
+    if mode not in ("r", "rt") or not a or not isinstance(a[0], str):
+        return i.unsupported(n, "open() other than for reading a known path is not run")
+    return ReadOnlyFile(a[0])
+
+
+def safe_load(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``yaml.safe_load(f)`` on a file we may read, with the safe loader (bounded)."""
+    source = a[0] if a else None
+    text = i.read(source.path, n) if isinstance(source, ReadOnlyFile) else (
+        source if isinstance(source, str) else None)
+    if text is None:
+        return Unk("YAML not known statically")
+    try:
+        return yaml.safe_load(text)
+    except yaml.YAMLError as err:
+        return i.unsupported(n, f"YAML cannot be read: {err}")
 
 
 def bounded_range(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
@@ -513,10 +539,12 @@ API: dict[str, Builder] = {
     "enumerate": builtin(lambda x: list(enumerate(x)), list, tuple, str),
     "zip": builtin(lambda *x: list(zip(*x, strict=False)), list, tuple), "range": bounded_range,
     "print": ignored, "isinstance": lambda i, a, k, n: Unk("isinstance"),
+    "all": builtin(all, list, tuple), "any": builtin(any, list, tuple),
+    "open": open_file, "safe_load": safe_load,
 }
 BUILTINS = frozenset(("len", "str", "int", "float", "bool", "list", "tuple", "dict",
                       "sorted", "min", "max", "abs", "enumerate", "zip", "range", "print",
-                      "isinstance"))
+                      "isinstance", "all", "any", "open"))
 
 
 # -- methods --------------------------------------------------------------------------------
@@ -531,6 +559,31 @@ def m_find(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
             return found
         return Lazy((e.FindPackage((a[0],), owner.share),))
     return i.unsupported(n, ".find() on a value not known statically")
+
+
+def m_read(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    if isinstance(owner, ReadOnlyFile):
+        text = i.read(owner.path, n)
+        return Unk("unreadable file") if text is None else text
+    return i.unsupported(n, ".read() on a value not known statically")
+
+
+def m_evaluate(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``IfCondition(...).evaluate(context)`` inside an OpaqueFunction."""
+    if not (isinstance(owner, e.Cond) and a and isinstance(a[0], Context)):
+        return i.unsupported(n, ".evaluate() outside an OpaqueFunction")
+    value = a[0].perform(owner.expression)
+    if not isinstance(value, str):
+        return Unk(f"condition {owner.source}")
+    if owner.equals is not None:
+        expected = a[0].perform(owner.equals)
+        if not isinstance(expected, str):
+            return Unk(f"condition {owner.source}")
+        return (value == expected) != owner.negate
+    lowered = value.strip().lower()
+    if lowered not in ("true", "1", "false", "0"):
+        return i.unsupported(n, f"condition value {value!r} is not a boolean")
+    return (lowered in ("true", "1")) != owner.negate
 
 
 def m_add_action(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
@@ -630,8 +683,8 @@ def m_dict(name: str) -> Method:
 
 
 METHODS: dict[str, Method] = {
-    "add_action": m_add_action, "find": m_find, "append": m_list("append"),
-    "extend": m_list("extend"),
+    "add_action": m_add_action, "find": m_find, "read": m_read, "evaluate": m_evaluate,
+    "append": m_list("append"), "extend": m_list("extend"),
     "insert": m_list("insert"), "items": m_dict("items"), "keys": m_dict("keys"),
     "values": m_dict("values"), "get": m_dict("get"), "update": m_dict("update"),
     "copy": m_dict("copy"), "perform": m_str("perform"),

@@ -254,6 +254,8 @@ class Runner:
                 self.report("LAUNCH_PARAM_FILE", where, detail=f"cannot read {file}")
             return None
         text = self.replace(text, entry, scope, where)
+        if text is not None and entry.allow_substs:
+            text = self.substitute(text, scope, where)
         if text is None:
             return None
         try:
@@ -268,6 +270,22 @@ class Runner:
         if rel not in self.model.files:
             self.model.files.append(rel)
         return self.rewrite(document, entry, scope, where)
+
+    def substitute(self, text: str, scope: Scope, where: Location) -> str | None:
+        """``allow_substs``: the file's ``$(...)`` performed before it is read as YAML."""
+        from .substitutions import SubstitutionSyntax, parse
+
+        try:
+            value = self.value(parse(text), scope, where)
+        except SubstitutionSyntax as err:
+            self.report("LAUNCH_PARAM_FILE", where,
+                        detail=f"substitutions in a parameter file cannot be read: {err}")
+            return None
+        if value is None or value.literal is None:
+            self.report("LAUNCH_PARAM_FILE", where, detail="a parameter file uses "
+                        "substitutions whose values are not known statically")
+            return None
+        return value.literal
 
     def replace(self, text: str, entry: e.ParamFile, scope: Scope,
                 where: Location) -> str | None:
