@@ -14,6 +14,7 @@ from collections.abc import Sequence
 from functools import partial
 
 from rich.console import Console
+from rich.markup import escape
 
 from . import __version__
 from .diagnostics import CATALOGUE
@@ -103,11 +104,12 @@ def _analyse(path: str, console: Console, options: Options | None = None) -> Mod
     try:
         project = load(path)
     except ProjectError as err:
-        console.print(f"haros-arch: {err}", highlight=False)
+        console.print(f"haros-arch: {escape(str(err))}", highlight=False)
         return None
     missing = [w for w in project.workspace if not os.path.isdir(w)]
     if missing:
-        console.print(f"haros-arch: {path}: workspace folder {missing[0]} does not exist",
+        console.print(f"haros-arch: {escape(path)}: workspace folder {escape(missing[0])} "
+                      "does not exist",
                       highlight=False)
         return None
     return analyse(project, options=options)
@@ -167,7 +169,8 @@ def cmd_capture(args: argparse.Namespace, out: Console, err: Console) -> int:
     try:
         data = capture(args.master)
     except CaptureError as error:
-        err.print(f"haros-arch: cannot capture from {args.master}: {error}", highlight=False)
+        err.print(f"haros-arch: cannot capture from {escape(args.master)}: "
+                  f"{escape(str(error))}", highlight=False)
         return EXIT_USAGE
     _write(json.dumps(data, indent=2) + "\n", args.output)
     return EXIT_OK
@@ -183,7 +186,7 @@ def cmd_compare(args: argparse.Namespace, out: Console, err: Console) -> int:
             live = json.load(handle)
         result = compare(model, live, args.config)
     except (OSError, ValueError, KeyError, CompareError) as error:
-        err.print(f"haros-arch: cannot compare: {error}", highlight=False)
+        err.print(f"haros-arch: cannot compare: {escape(str(error))}", highlight=False)
         return EXIT_USAGE
     if args.format == "json":
         _write(json.dumps(result.to_data(), indent=2) + "\n", None)
@@ -194,9 +197,9 @@ def cmd_compare(args: argparse.Namespace, out: Console, err: Console) -> int:
                   f"{score.recall:.3f}  ({len(score.matched)} matched, {len(score.ours)} "
                   f"ours, {len(score.live)} live)", highlight=False)
         for item in score.missing:
-            out.print(f"      missing: {show(item)}", highlight=False)
+            out.print(f"      missing: {escape(show(item))}", highlight=False)
         for item in score.extra:
-            out.print(f"      extra:   {show(item)}", highlight=False)
+            out.print(f"      extra:   {escape(show(item))}", highlight=False)
     return EXIT_OK
 
 
@@ -219,7 +222,7 @@ def cmd_report(args: argparse.Namespace, out: Console, err: Console) -> int:
             data, findings = model_data(model), project_findings(model, project)
         write_report(data, findings, workspace_root(project, args.workspace), args.output)
     except (ProjectError, ReportError) as error:
-        err.print(f"haros-arch: {error}", highlight=False)
+        err.print(f"haros-arch: {escape(str(error))}", highlight=False)
         return EXIT_USAGE
     out.print(f"wrote {args.output}", highlight=False)
     return EXIT_OK
@@ -265,9 +268,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     except KeyboardInterrupt:
         return 130
     except Exception as error:  # a bug of ours: one clear line, no traceback
-        err.print(f"haros-arch: internal error: {type(error).__name__}: {error} "
-                  "(please report it; set HAROS_ARCH_DEBUG=1 for the traceback)",
-                  highlight=False)
+        err.print(f"haros-arch: internal error: {type(error).__name__}: "
+                  f"{escape(str(error))} (please report it; set HAROS_ARCH_DEBUG=1 for "
+                  "the traceback)", highlight=False)
         if os.environ.get("HAROS_ARCH_DEBUG"):
             raise
         return EXIT_INTERNAL

@@ -111,3 +111,16 @@ def test_explain_lists_codes(capsys):
     assert main(["explain", "LAUNCH_UNKNOWN_TAG"]) == 0
     assert "roslaunch ignores tags" in capsys.readouterr().out
     assert main(["explain", "NO_SUCH_CODE"]) == 2
+
+
+def test_text_that_looks_like_markup_is_printed_as_it_is(write_tree):
+    root = write_tree({
+        "src/pkg/package.xml": package_xml("pkg"),
+        "src/pkg/launch/a.launch": '<launch><node name="x" pkg="[/c1]" type="[bold]t"/>'
+                                   "</launch>\n",
+        "project.yaml": "project: '[red]p'\nconfigurations:\n  c: [pkg/launch/a.launch]\n",
+    })
+    result = run("extract", str(root / "project.yaml"), "-o", str(root / "m.json"))
+    assert result.returncode == 0, result.stderr
+    assert "[red]p" in result.stdout
+    assert "[/c1]/[bold]t" in result.stdout

@@ -115,3 +115,11 @@ def test_compare_lists_what_is_missing(master, paper_model, tmp_path, capsys):
 def test_capture_from_nowhere_is_a_clean_error(capsys):
     assert main(["capture", "--master", f"http://127.0.0.1:{free_port()}"]) == 2
     assert "cannot capture" in capsys.readouterr().err
+
+
+def test_capture_survives_keys_that_getparam_refuses(master):
+    uri, proxy = master
+    proxy.setParam("/roslaunch", "/weird", {"/c1": 1, "~d1": 2, "ok": {"x": True}})
+    live = capture(uri)
+    names = {p["name"] for p in live["parameters"]}
+    assert {"/weird/c1", "/weird/~d1", "/weird/ok/x"} <= names

@@ -42,7 +42,7 @@ def _leaves(prefix: str, value: Any) -> list[tuple[str, Any]]:
     if isinstance(value, dict) and value:
         found = []
         for key, item in value.items():
-            found.extend(_leaves(f"{prefix.rstrip('/')}/{key}", item))
+            found.extend(_leaves(f"{prefix.rstrip('/')}/{str(key).strip('/')}", item))
         return found
     return [(prefix, value)]
 
@@ -55,11 +55,10 @@ def capture(uri: str, timeout: float = 10.0) -> dict[str, Any]:
         master = xmlrpc.client.ServerProxy(uri, allow_none=True)
         publishers, subscribers, services = _call(master, "getSystemState")
         types = dict(_call(master, "getTopicTypes"))
-        names = _call(master, "getParamNames")
-        params: dict[str, Any] = {}
-        for name in sorted(names):
-            for leaf, value in _leaves(name, _call(master, "getParam", name)):
-                params[leaf] = _plain(value)
+        # the whole tree in one call: some names that getParamNames lists (keys that
+        # start with "/" or "~" inside a YAML dictionary) cannot be read one by one
+        params = {leaf: _plain(value)
+                  for leaf, value in _leaves("/", _call(master, "getParam", "/"))}
     finally:
         socket.setdefaulttimeout(previous)
     topics: dict[str, dict[str, Any]] = {}

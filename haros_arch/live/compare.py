@@ -103,9 +103,16 @@ def compare(model: dict[str, Any], live: dict[str, Any], name: str | None = None
         Score("service links", ours_links("server"),
               {(n, s["name"]) for s in live["services"] for n in s["servers"]
                if not IGNORED_SERVICES.search(s["name"])}),
-        # only parameters someone sets can be on the master; code defaults are not
-        Score("parameters", {p["name"] for p in config["parameters"] if p["writers"]},
+        # only parameters someone sets can be on the master (code defaults are not), and
+        # only leaves (a namespace read whole shows as its leaves)
+        Score("parameters", _leaf_parameters(config),
               {p["name"] for p in live["parameters"]
                if not IGNORED_PARAMS.match(p["name"])}),
     ]
     return Comparison(config["name"], scores)
+
+
+def _leaf_parameters(config: dict[str, Any]) -> set[str]:
+    names = {p["name"] for p in config["parameters"] if p["writers"]}
+    return {name for name in names
+            if not any(other.startswith(name.rstrip("/") + "/") for other in names)}

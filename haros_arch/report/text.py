@@ -6,6 +6,7 @@ from collections import defaultdict
 from collections.abc import Iterable
 
 from rich.console import Console
+from rich.markup import escape
 
 from ..model.diagnostic import SEVERITY_RANK, Diagnostic
 from ..model.model import Model
@@ -19,19 +20,20 @@ def print_diagnostics(diagnostics: Iterable[Diagnostic], console: Console) -> No
         by_file[item.location.file or "<project>"].append(item)
     colours = {"error": "red", "warning": "yellow", "info": "blue"}
     for file in sorted(by_file):
-        console.print(f"[bold]{file}[/bold]", highlight=False)
+        console.print(f"[bold]{escape(file)}[/bold]", highlight=False)
         for item in sorted(by_file[file], key=lambda d: (d.location.line, d.location.column)):
             where = f"{file}:{item.location.line}:{item.location.column}"
             colour = colours.get(item.severity, "white")
-            console.print(f"  {where}: [{colour}]{item.severity}[/{colour}]: "
-                          f"{item.message} [dim]\\[{item.code}][/dim]", highlight=False)
+            console.print(f"  {escape(where)}: [{colour}]{item.severity}[/{colour}]: "
+                          f"{escape(item.message)} [dim]\\[{item.code}][/dim]",
+                          highlight=False)
 
 
 def print_summary(model: Model, console: Console) -> None:
     """Per configuration: its node instances and each resource with who uses it."""
     nodes = model.nodes
     calls = sum(len(node.calls) for node in nodes)
-    console.print(f"[bold]{model.project}[/bold]: {len(model.packages)} package(s), "
+    console.print(f"[bold]{escape(model.project)}[/bold]: {len(model.packages)} package(s), "
                   f"{len(nodes)} node(s), {calls} ROS call(s) found in source",
                   highlight=False)
     for config in model.configurations:
@@ -39,22 +41,24 @@ def print_summary(model: Model, console: Console) -> None:
             ("nodes", config.nodes), ("topics", config.topics),
             ("services", config.services), ("actions", config.actions),
             ("parameters", config.parameters)))
-        console.print(f"\n[bold]configuration {config.name}[/bold]: {counts}",
+        console.print(f"\n[bold]configuration {escape(config.name)}[/bold]: {counts}",
                       highlight=False)
         for instance in config.nodes:
             runs = instance.node.name if instance.node else "? (not in the workspace)"
             conditional = " [dim](conditional)[/dim]" if instance.conditions else ""
-            console.print(f"  node  {instance.name}  [dim]{runs}[/dim]{conditional}",
+            console.print(f"  node  {escape(instance.name)}  [dim]{escape(runs)}[/dim]"
+                          f"{conditional}",
                           highlight=False)
         for label, resources in (("topic", config.topics), ("service", config.services),
                                  ("action", config.actions),
                                  ("param", config.parameters)):
             for resource in resources:
                 types = ", ".join(resource.types) or "?"
-                console.print(f"  {label:<7} {resource.name}  [dim]{types}[/dim]",
+                console.print(f"  {label:<7} {escape(resource.name)}  "
+                              f"[dim]{escape(types)}[/dim]",
                               highlight=False)
                 for line in _uses(resource):
-                    console.print(f"            {line}", highlight=False)
+                    console.print(f"            {escape(line)}", highlight=False)
 
 
 def _uses(resource: Resource) -> list[str]:
