@@ -17,10 +17,7 @@ reaches them, with ``context`` standing for the launch context of that moment.
 from __future__ import annotations
 
 import ast
-import operator
 import os
-from collections.abc import Callable
-from dataclasses import dataclass, field
 from typing import Any
 
 from ... import diagnostics as diag
@@ -28,88 +25,34 @@ from ...diagnostics import Diagnostic
 from ...model.location import Location
 from ...workspace import Workspace
 from . import entities as e
-
-MAX_SOURCE = 512 * 1024
-MAX_NODES = 100_000
-MAX_DEPTH = 100
-MAX_STEPS = 200_000
-MAX_CALL_DEPTH = 40
-MAX_SIZE = 100_000  # items of a container or characters of a string
-MAX_READ = 1024 * 1024  # bytes of a file read by open() / yaml.safe_load
-
-
-class Budget(Exception):
-    """A bound was reached: interpretation stops."""
-
-
-class Unsupported(Exception):
-    """A construct outside the subset, where a value cannot stand for it."""
-
-
-class _Flow(Exception):
-    """return / break / continue, as control flow of the interpreted code."""
-
-
-class _Return(_Flow):
-    def __init__(self, value: Any) -> None:
-        self.value = value
+from .python_expressions import Expressions, _Bound
+from .python_values import (
+    MAX_CALL_DEPTH,
+    MAX_DEPTH,
+    MAX_NODES,
+    MAX_READ,
+    MAX_SIZE,
+    MAX_SOURCE,
+    MAX_STEPS,
+    Budget,
+    Func,
+    LaunchDescription,
+    ReadOnlyFile,
+    Ref,
+    Unk,
+    _Break,
+    _Continue,
+    _Flow,
+    _known_module,
+    _load,
+    _Return,
+    _source,
+)
 
 
-class _Break(_Flow):
-    pass
+class Interpreter(Expressions):
+    """Statements, calls and the module; expressions come from ``Expressions``."""
 
-
-class _Continue(_Flow):
-    pass
-
-
-@dataclass(frozen=True)
-class Unk:
-    """A value we do not know; ``why`` says what it came from."""
-
-    why: str
-
-
-@dataclass(frozen=True)
-class Lazy:
-    """A string with substitutions or unknown parts, computed when the action runs."""
-
-    text: e.Text
-
-
-@dataclass(frozen=True)
-class Ref:
-    """A module or a name imported from one: ``launch_ros.actions.Node``."""
-
-    qualified: str
-
-
-@dataclass
-class Func:
-    node: ast.FunctionDef | ast.Lambda
-    closure: dict[str, Any]
-
-
-@dataclass(frozen=True)
-class ReadOnlyFile:
-    """What ``open(path)`` gives: only ``read()`` and ``yaml.safe_load`` use it."""
-
-    path: str
-
-
-@dataclass
-class LaunchDescription:
-    actions: list[Any] = field(default_factory=list)
-
-
-@dataclass(frozen=True)
-class Context:
-    """The ``context`` an ``OpaqueFunction`` receives: reads the runner's scope."""
-
-    perform: Callable[[e.Text], Any]
-
-
-class Interpreter:
     def __init__(self, path: str, workspace: Workspace, environment: dict[str, str]) -> None:
         self.path = path
         self.workspace = workspace
@@ -119,7 +62,8 @@ class Interpreter:
         self.steps = 0
         self.depth = 0
         self.guards: list[str] = []  # texts of unknown Python `if` tests we are under
-        from .python_api import API, BUILTINS, METHODS
+        from .python_api import API, BUILTINS
+        from .python_methods import METHODS
 
         self.api = API
         self.builtins = BUILTINS
@@ -401,371 +345,6 @@ class Interpreter:
             return None
         finally:
             self.depth = max(self.depth - 1, 0)
-
-    # -- expressions ---------------------------------------------------------------------
-    def lookup(self, name: str, env: dict[str, Any], node: ast.AST) -> Any:
-        scope: dict[str, Any] | None = env
-        while scope is not None:
-            if name in scope:
-                return scope[name]
-            scope = scope.get("__closure__")
-        if name in self.globals:
-            return self.globals[name]
-        if name in self.builtins:
-            return Ref(name)
-        if name in ("True", "False", "None"):
-            return {"True": True, "False": False, "None": None}[name]
-        return self.unsupported(node, f"name {name} is not defined here")
-
-    def eval(self, node: ast.expr, env: dict[str, Any]) -> Any:
-        self.tick()
-        handler = getattr(self, "e_" + type(node).__name__, None)
-        if handler is None:
-            return self.unsupported(node, f"{type(node).__name__} is not interpreted")
-        return self.sized(handler(node, env))
-
-    def e_Constant(self, node: ast.Constant, env: dict[str, Any]) -> Any:
-        return node.value
-
-    def e_Name(self, node: ast.Name, env: dict[str, Any]) -> Any:
-        return self.lookup(node.id, env, node)
-
-    def e_List(self, node: ast.List | ast.Tuple | ast.Set, env: dict[str, Any]) -> Any:
-        out: list[Any] = []
-        for elt in node.elts:
-            if isinstance(elt, ast.Starred):
-                items = self.iterable(self.eval(elt.value, env), elt)
-                out.extend(items or [])
-            else:
-                out.append(self.eval(elt, env))
-            self.sized(out)
-        return tuple(out) if isinstance(node, ast.Tuple) else out
-
-    e_Tuple = e_List
-    e_Set = e_List
-
-    def e_Dict(self, node: ast.Dict, env: dict[str, Any]) -> Any:
-        out: dict[Any, Any] = {}
-        for key, value in zip(node.keys, node.values, strict=False):
-            if key is None:
-                merged = self.eval(value, env)
-                if isinstance(merged, dict):
-                    out.update(merged)
-                continue
-            k = self.eval(key, env)
-            out[_hashable(k)] = self.eval(value, env)
-        return out
-
-    def e_JoinedStr(self, node: ast.JoinedStr, env: dict[str, Any]) -> Any:
-        parts: list[Any] = []
-        for value in node.values:
-            if isinstance(value, ast.FormattedValue):
-                parts.append(self.eval(value.value, env))
-            else:
-                parts.append(self.eval(value, env))
-        return concat(parts)
-
-    def e_BinOp(self, node: ast.BinOp, env: dict[str, Any]) -> Any:
-        return self.binop(node.op, self.eval(node.left, env), self.eval(node.right, env), node)
-
-    def binop(self, op: ast.operator, left: Any, right: Any, node: ast.AST) -> Any:
-        if isinstance(op, ast.Add) and (is_stringy(left) or is_stringy(right)) and not (
-                isinstance(left, list) or isinstance(right, list)):
-            return concat([left, right])
-        if isinstance(left, Unk) or isinstance(right, Unk):
-            return Unk("arithmetic on an unknown value")
-        if isinstance(op, ast.Mult):
-            count = right if isinstance(right, int) else left if isinstance(left, int) else 0
-            other = left if isinstance(right, int) else right
-            if isinstance(other, (str, list, tuple)) and len(other) * max(count, 0) > MAX_SIZE:
-                raise Budget(f"a value with more than {MAX_SIZE} items or characters")
-        if isinstance(op, ast.Pow) and isinstance(right, (int, float)) and abs(right) > 256:
-            raise Budget("an exponent above 256")
-        if isinstance(op, ast.LShift) and isinstance(right, int) and right > 256:
-            raise Budget("a shift above 256 bits")
-        if isinstance(op, ast.Mod) and isinstance(left, str) and (
-                isinstance(right, (Lazy, e.Subst)) or (
-                    isinstance(right, tuple) and any(is_lazy(x) for x in right))):
-            return self.unsupported(node, "%-formatting with substitutions")
-        function = _BINARY.get(type(op))
-        known = (str, int, float, bool, list, tuple, type(None))
-        if function is None or not isinstance(left, known) or not isinstance(right, known):
-            return self.unsupported(node, "operation on values not known statically")
-        try:
-            return function(left, right)
-        except (TypeError, ValueError, ZeroDivisionError, OverflowError, IndexError) as err:
-            return self.unsupported(node, f"operation fails: {err}")
-
-    def e_UnaryOp(self, node: ast.UnaryOp, env: dict[str, Any]) -> Any:
-        value = self.eval(node.operand, env)
-        if isinstance(node.op, ast.Not):
-            truth = self.truth(value)
-            return Unk("not of an unknown value") if truth is None else not truth
-        if isinstance(value, (int, float)) and not isinstance(value, bool):
-            return -value if isinstance(node.op, ast.USub) else value
-        return Unk("unary operation")
-
-    def e_BoolOp(self, node: ast.BoolOp, env: dict[str, Any]) -> Any:
-        is_and = isinstance(node.op, ast.And)
-        result: Any = None
-        for operand in node.values:
-            result = self.eval(operand, env)
-            truth = self.truth(result)
-            if truth is None:
-                return Unk("boolean of an unknown value")
-            if truth != is_and:
-                return result
-        return result
-
-    def e_Compare(self, node: ast.Compare, env: dict[str, Any]) -> Any:
-        left = self.eval(node.left, env)
-        for op, comparator in zip(node.ops, node.comparators, strict=False):
-            right = self.eval(comparator, env)
-            if _opaque(left) or _opaque(right):
-                return Unk(f"comparison {_source(node)}")
-            function = _COMPARE.get(type(op))
-            if function is None:
-                return Unk("comparison")
-            try:
-                if not function(left, right):
-                    return False
-            except TypeError:
-                return Unk("comparison")
-            left = right
-        return True
-
-    def e_IfExp(self, node: ast.IfExp, env: dict[str, Any]) -> Any:
-        truth = self.truth(self.eval(node.test, env))
-        if truth is None:
-            return Unk(f"conditional expression {_source(node.test)}")
-        return self.eval(node.body if truth else node.orelse, env)
-
-    def e_Subscript(self, node: ast.Subscript, env: dict[str, Any]) -> Any:
-        value = self.eval(node.value, env)
-        key = self.eval(node.slice, env)
-        if isinstance(value, _Environ):
-            return value.get(self, [key], node)
-        if isinstance(value, Context) and isinstance(node.value, ast.Attribute):
-            return value.perform((e.Var(_text_of(key)),))
-        if isinstance(key, slice) or isinstance(value, (dict, list, tuple, str)):
-            try:
-                return value[_hashable(key)]
-            except (KeyError, IndexError, TypeError):
-                return self.unsupported(node, f"{_source(node)} is not known statically")
-        return Unk("subscript")
-
-    def e_Slice(self, node: ast.Slice, env: dict[str, Any]) -> Any:
-        parts = [None if p is None else self.eval(p, env)
-                 for p in (node.lower, node.upper, node.step)]
-        if any(p is not None and not isinstance(p, int) for p in parts):
-            return Unk("slice")
-        return slice(*parts)
-
-    def e_Attribute(self, node: ast.Attribute, env: dict[str, Any]) -> Any:
-        owner = self.eval(node.value, env)
-        if isinstance(owner, Ref):
-            if owner.qualified == "os" and node.attr == "environ":
-                return _Environ()
-            return Ref(f"{owner.qualified}.{node.attr}")
-        if isinstance(owner, Context) and node.attr == "launch_configurations":
-            return owner
-        return _Bound(owner, node.attr)
-
-    def e_Call(self, node: ast.Call, env: dict[str, Any]) -> Any:
-        func = self.eval(node.func, env)
-        args: list[Any] = []
-        for arg in node.args:
-            if isinstance(arg, ast.Starred):
-                args.extend(self.iterable(self.eval(arg.value, env), arg) or [])
-            else:
-                args.append(self.eval(arg, env))
-        kwargs: dict[str, Any] = {}
-        for keyword in node.keywords:
-            value = self.eval(keyword.value, env)
-            if keyword.arg is None:
-                if isinstance(value, dict):
-                    kwargs.update({str(k): v for k, v in value.items()})
-            else:
-                kwargs[keyword.arg] = value
-        result = self.call(func, args, kwargs, node)
-        if self.guards and isinstance(result, e.Action):
-            result = self.guarded(result, node)
-        return result
-
-    def guarded(self, action: e.Action, node: ast.AST) -> e.Action:
-        """An action made under a Python ``if`` whose test is unknown: conditional."""
-        text = " and ".join(self.guards)
-        cond = e.Cond((e.Opaque(f"Python test {text}"),), source=text)
-        if action.condition is None:
-            action.condition = cond
-            return action
-        return e.Group([action], scoped=False, condition=cond, location=action.location)
-
-    def e_Lambda(self, node: ast.Lambda, env: dict[str, Any]) -> Any:
-        return Func(node, env)
-
-    def e_ListComp(self, node: ast.ListComp | ast.GeneratorExp | ast.SetComp,
-                   env: dict[str, Any]) -> Any:
-        out: list[Any] = []
-        self.comprehension(node.generators, 0, dict(env, __closure__=env),
-                           lambda scope: out.append(self.eval(node.elt, scope)))
-        return out
-
-    e_GeneratorExp = e_ListComp
-    e_SetComp = e_ListComp
-
-    def e_DictComp(self, node: ast.DictComp, env: dict[str, Any]) -> Any:
-        out: dict[Any, Any] = {}
-
-        def add(scope: dict[str, Any]) -> None:
-            out[_hashable(self.eval(node.key, scope))] = self.eval(node.value, scope)
-
-        self.comprehension(node.generators, 0, dict(env, __closure__=env), add)
-        return out
-
-    def comprehension(self, generators: list[ast.comprehension], index: int,
-                      env: dict[str, Any], emit: Callable[[dict[str, Any]], None]) -> None:
-        if index == len(generators):
-            emit(env)
-            return
-        gen = generators[index]
-        for item in self.iterable(self.eval(gen.iter, env), gen.iter) or []:
-            self.tick()
-            self.assign(gen.target, item, env)
-            tests = [self.truth(self.eval(cond, env)) for cond in gen.ifs]
-            if None in tests:
-                self.unsupported(gen, "comprehension filter not known statically")
-                continue
-            if all(tests):
-                self.comprehension(generators, index + 1, env, emit)
-
-    def truth(self, value: Any) -> bool | None:
-        if _opaque(value):
-            return None
-        try:
-            return bool(value)
-        except Exception:
-            return None
-
-
-@dataclass
-class _Bound:
-    """``owner.attr`` waiting to be called (a method of a known value)."""
-
-    owner: Any
-    attr: str
-
-    def call(self, interp: Interpreter, args: list[Any], kwargs: dict[str, Any],
-             node: ast.AST) -> Any:
-        handler = interp.methods.get(self.attr)
-        if handler is None:
-            return interp.unsupported(node, f"method .{self.attr}() is not interpreted")
-        return handler(interp, self.owner, args, kwargs, node)
-
-
-class _Environ:
-    """``os.environ``: reads the configuration's environment."""
-
-    def get(self, interp: Interpreter, args: list[Any], node: ast.AST) -> Any:
-        name = args[0] if args else None
-        if isinstance(name, str) and name in interp.environment:
-            return interp.environment[name]
-        if len(args) > 1:
-            return args[1]
-        return Lazy((e.Opaque(f"environment variable {name}"),)) if isinstance(
-            name, str) else Unk("environment")
-
-
-_BINARY: dict[type, Callable[[Any, Any], Any]] = {
-    ast.Add: operator.add, ast.Sub: operator.sub, ast.Mult: operator.mul,
-    ast.Div: operator.truediv, ast.FloorDiv: operator.floordiv, ast.Mod: operator.mod,
-    ast.Pow: operator.pow, ast.LShift: operator.lshift, ast.RShift: operator.rshift,
-    ast.BitAnd: operator.and_, ast.BitOr: operator.or_,
-}
-_COMPARE: dict[type, Callable[[Any, Any], bool]] = {
-    ast.Eq: operator.eq, ast.NotEq: operator.ne, ast.Lt: operator.lt, ast.LtE: operator.le,
-    ast.Gt: operator.gt, ast.GtE: operator.ge, ast.In: lambda a, b: a in b,
-    ast.NotIn: lambda a, b: a not in b, ast.Is: operator.is_, ast.IsNot: operator.is_not,
-}
-_KNOWN_ROOTS = ("launch", "launch_ros", "launch_xml", "launch_yaml", "os", "ament_index_python",
-                "nav2_common", "builtins", "pathlib", "yaml")
-
-
-def _known_module(qualified: str) -> bool:
-    return qualified.split(".")[0] in _KNOWN_ROOTS
-
-
-def _source(node: ast.AST) -> str:
-    try:
-        text = ast.unparse(node)
-    except Exception:
-        text = "?"
-    return text if len(text) <= 200 else text[:197] + "..."
-
-
-def _load(target: ast.expr) -> ast.expr:
-    copy = ast.parse(ast.unparse(target), mode="eval").body
-    return ast.copy_location(copy, target)
-
-
-def _hashable(value: Any) -> Any:
-    if isinstance(value, list):
-        return tuple(_hashable(v) for v in value)
-    if isinstance(value, dict):
-        return Unk("dict key")
-    return value
-
-
-def _opaque(value: Any) -> bool:
-    return isinstance(value, (Unk, Lazy, e.Subst, e.Cond, e.Action))
-
-
-def is_lazy(value: Any) -> bool:
-    return isinstance(value, (Lazy, e.Subst, Unk))
-
-
-def is_stringy(value: Any) -> bool:
-    return isinstance(value, (str, Lazy, e.Subst, Unk))
-
-
-def _text_of(value: Any) -> e.Text:
-    return to_text(value)
-
-
-def to_text(value: Any) -> e.Text:
-    """A launch text (str / substitution / list of them) as our ``Text``."""
-    if isinstance(value, str):
-        return (value,)
-    if isinstance(value, Lazy):
-        return value.text
-    if isinstance(value, e.Subst):
-        return (value,)
-    if isinstance(value, (list, tuple)):
-        return e.text(*(to_text(v) for v in value))
-    if isinstance(value, bool):
-        return (str(value).lower(),)
-    if isinstance(value, (int, float)):
-        return (str(value),)
-    if isinstance(value, Unk):
-        return (e.Opaque(value.why),)
-    if isinstance(value, e.ParamFile):
-        return (e.FileRef(value),)
-    return (e.Opaque(f"{type(value).__name__} value"),)
-
-
-def concat(parts: list[Any]) -> Any:
-    """Join strings, substitutions and unknowns: a str when all parts are known."""
-    out: list[str | e.Subst] = []
-    for part in parts:
-        if isinstance(part, (int, float)) and not isinstance(part, bool):
-            out.append(str(part))
-        elif isinstance(part, (str, Lazy, e.Subst, Unk)):
-            out.extend(to_text(part))
-        else:
-            out.append(e.Opaque(f"{type(part).__name__} in a string"))
-    if all(isinstance(p, str) for p in out):
-        return "".join(p for p in out if isinstance(p, str))
-    return Lazy(tuple(out))
 
 
 def parse_python(text: str, path: str, workspace: Workspace,

@@ -1,0 +1,337 @@
+"""Expressions of the static Python interpreter: one handler per ``ast`` node kind.
+
+``Expressions.eval`` dispatches on the node's class name (``e_Call``, ``e_BinOp``, ...);
+a kind without a handler gives an unknown value and a diagnostic. Every evaluation
+counts against the step budget and every value built is size-checked.
+"""
+
+from __future__ import annotations
+
+import ast
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
+
+from . import entities as e
+from .python_values import (
+    _BINARY,
+    _COMPARE,
+    MAX_SIZE,
+    Budget,
+    Context,
+    Func,
+    Lazy,
+    Ref,
+    Unk,
+    _hashable,
+    _opaque,
+    _source,
+    _text_of,
+    concat,
+    is_lazy,
+    is_stringy,
+)
+
+if TYPE_CHECKING:
+    from .python import Interpreter
+
+
+class Expressions:
+    """The expression half of ``Interpreter`` (statements and calls live there)."""
+
+    globals: dict[str, Any]
+    builtins: frozenset[str]
+    methods: dict[str, Any]
+    environment: dict[str, str]
+    guards: list[str]
+
+    def tick(self) -> None:
+        raise NotImplementedError
+
+    def sized(self, value: Any) -> Any:
+        raise NotImplementedError
+
+    def unsupported(self, node: ast.AST | None, detail: str) -> Unk:
+        raise NotImplementedError
+
+    def call(self, func: Any, args: list[Any], kwargs: dict[str, Any], node: ast.AST) -> Any:
+        raise NotImplementedError
+
+    def assign(self, target: ast.expr, value: Any, env: dict[str, Any]) -> None:
+        raise NotImplementedError
+
+    def iterable(self, value: Any, node: ast.AST) -> list[Any] | None:
+        raise NotImplementedError
+
+    # -- expressions ---------------------------------------------------------------------
+    def lookup(self, name: str, env: dict[str, Any], node: ast.AST) -> Any:
+        scope: dict[str, Any] | None = env
+        while scope is not None:
+            if name in scope:
+                return scope[name]
+            scope = scope.get("__closure__")
+        if name in self.globals:
+            return self.globals[name]
+        if name in self.builtins:
+            return Ref(name)
+        if name in ("True", "False", "None"):
+            return {"True": True, "False": False, "None": None}[name]
+        return self.unsupported(node, f"name {name} is not defined here")
+
+    def eval(self, node: ast.expr, env: dict[str, Any]) -> Any:
+        self.tick()
+        handler = getattr(self, "e_" + type(node).__name__, None)
+        if handler is None:
+            return self.unsupported(node, f"{type(node).__name__} is not interpreted")
+        return self.sized(handler(node, env))
+
+    def e_Constant(self, node: ast.Constant, env: dict[str, Any]) -> Any:
+        return node.value
+
+    def e_Name(self, node: ast.Name, env: dict[str, Any]) -> Any:
+        return self.lookup(node.id, env, node)
+
+    def e_List(self, node: ast.List | ast.Tuple | ast.Set, env: dict[str, Any]) -> Any:
+        out: list[Any] = []
+        for elt in node.elts:
+            if isinstance(elt, ast.Starred):
+                items = self.iterable(self.eval(elt.value, env), elt)
+                out.extend(items or [])
+            else:
+                out.append(self.eval(elt, env))
+            self.sized(out)
+        return tuple(out) if isinstance(node, ast.Tuple) else out
+
+    e_Tuple = e_List
+    e_Set = e_List
+
+    def e_Dict(self, node: ast.Dict, env: dict[str, Any]) -> Any:
+        out: dict[Any, Any] = {}
+        for key, value in zip(node.keys, node.values, strict=False):
+            if key is None:
+                merged = self.eval(value, env)
+                if isinstance(merged, dict):
+                    out.update(merged)
+                continue
+            k = self.eval(key, env)
+            out[_hashable(k)] = self.eval(value, env)
+        return out
+
+    def e_JoinedStr(self, node: ast.JoinedStr, env: dict[str, Any]) -> Any:
+        parts: list[Any] = []
+        for value in node.values:
+            if isinstance(value, ast.FormattedValue):
+                parts.append(self.eval(value.value, env))
+            else:
+                parts.append(self.eval(value, env))
+        return concat(parts)
+
+    def e_BinOp(self, node: ast.BinOp, env: dict[str, Any]) -> Any:
+        return self.binop(node.op, self.eval(node.left, env), self.eval(node.right, env), node)
+
+    def binop(self, op: ast.operator, left: Any, right: Any, node: ast.AST) -> Any:
+        if isinstance(op, ast.Add) and (is_stringy(left) or is_stringy(right)) and not (
+                isinstance(left, list) or isinstance(right, list)):
+            return concat([left, right])
+        if isinstance(left, Unk) or isinstance(right, Unk):
+            return Unk("arithmetic on an unknown value")
+        if isinstance(op, ast.Mult):
+            count = right if isinstance(right, int) else left if isinstance(left, int) else 0
+            other = left if isinstance(right, int) else right
+            if isinstance(other, (str, list, tuple)) and len(other) * max(count, 0) > MAX_SIZE:
+                raise Budget(f"a value with more than {MAX_SIZE} items or characters")
+        if isinstance(op, ast.Pow) and isinstance(right, (int, float)) and abs(right) > 256:
+            raise Budget("an exponent above 256")
+        if isinstance(op, ast.LShift) and isinstance(right, int) and right > 256:
+            raise Budget("a shift above 256 bits")
+        if isinstance(op, ast.Mod) and isinstance(left, str) and (
+                isinstance(right, (Lazy, e.Subst)) or (
+                    isinstance(right, tuple) and any(is_lazy(x) for x in right))):
+            return self.unsupported(node, "%-formatting with substitutions")
+        function = _BINARY.get(type(op))
+        known = (str, int, float, bool, list, tuple, type(None))
+        if function is None or not isinstance(left, known) or not isinstance(right, known):
+            return self.unsupported(node, "operation on values not known statically")
+        try:
+            return function(left, right)
+        except (TypeError, ValueError, ZeroDivisionError, OverflowError, IndexError) as err:
+            return self.unsupported(node, f"operation fails: {err}")
+
+    def e_UnaryOp(self, node: ast.UnaryOp, env: dict[str, Any]) -> Any:
+        value = self.eval(node.operand, env)
+        if isinstance(node.op, ast.Not):
+            truth = self.truth(value)
+            return Unk("not of an unknown value") if truth is None else not truth
+        if isinstance(value, (int, float)) and not isinstance(value, bool):
+            return -value if isinstance(node.op, ast.USub) else value
+        return Unk("unary operation")
+
+    def e_BoolOp(self, node: ast.BoolOp, env: dict[str, Any]) -> Any:
+        is_and = isinstance(node.op, ast.And)
+        result: Any = None
+        for operand in node.values:
+            result = self.eval(operand, env)
+            truth = self.truth(result)
+            if truth is None:
+                return Unk("boolean of an unknown value")
+            if truth != is_and:
+                return result
+        return result
+
+    def e_Compare(self, node: ast.Compare, env: dict[str, Any]) -> Any:
+        left = self.eval(node.left, env)
+        for op, comparator in zip(node.ops, node.comparators, strict=False):
+            right = self.eval(comparator, env)
+            if _opaque(left) or _opaque(right):
+                return Unk(f"comparison {_source(node)}")
+            function = _COMPARE.get(type(op))
+            if function is None:
+                return Unk("comparison")
+            try:
+                if not function(left, right):
+                    return False
+            except TypeError:
+                return Unk("comparison")
+            left = right
+        return True
+
+    def e_IfExp(self, node: ast.IfExp, env: dict[str, Any]) -> Any:
+        truth = self.truth(self.eval(node.test, env))
+        if truth is None:
+            return Unk(f"conditional expression {_source(node.test)}")
+        return self.eval(node.body if truth else node.orelse, env)
+
+    def e_Subscript(self, node: ast.Subscript, env: dict[str, Any]) -> Any:
+        value = self.eval(node.value, env)
+        key = self.eval(node.slice, env)
+        if isinstance(value, _Environ):
+            return value.get(self, [key], node)
+        if isinstance(value, Context) and isinstance(node.value, ast.Attribute):
+            return value.perform((e.Var(_text_of(key)),))
+        if isinstance(key, slice) or isinstance(value, (dict, list, tuple, str)):
+            try:
+                return value[_hashable(key)]
+            except (KeyError, IndexError, TypeError):
+                return self.unsupported(node, f"{_source(node)} is not known statically")
+        return Unk("subscript")
+
+    def e_Slice(self, node: ast.Slice, env: dict[str, Any]) -> Any:
+        parts = [None if p is None else self.eval(p, env)
+                 for p in (node.lower, node.upper, node.step)]
+        if any(p is not None and not isinstance(p, int) for p in parts):
+            return Unk("slice")
+        return slice(*parts)
+
+    def e_Attribute(self, node: ast.Attribute, env: dict[str, Any]) -> Any:
+        owner = self.eval(node.value, env)
+        if isinstance(owner, Ref):
+            if owner.qualified == "os" and node.attr == "environ":
+                return _Environ()
+            return Ref(f"{owner.qualified}.{node.attr}")
+        if isinstance(owner, Context) and node.attr == "launch_configurations":
+            return owner
+        return _Bound(owner, node.attr)
+
+    def e_Call(self, node: ast.Call, env: dict[str, Any]) -> Any:
+        func = self.eval(node.func, env)
+        args: list[Any] = []
+        for arg in node.args:
+            if isinstance(arg, ast.Starred):
+                args.extend(self.iterable(self.eval(arg.value, env), arg) or [])
+            else:
+                args.append(self.eval(arg, env))
+        kwargs: dict[str, Any] = {}
+        for keyword in node.keywords:
+            value = self.eval(keyword.value, env)
+            if keyword.arg is None:
+                if isinstance(value, dict):
+                    kwargs.update({str(k): v for k, v in value.items()})
+            else:
+                kwargs[keyword.arg] = value
+        result = self.call(func, args, kwargs, node)
+        if self.guards and isinstance(result, e.Action):
+            result = self.guarded(result, node)
+        return result
+
+    def guarded(self, action: e.Action, node: ast.AST) -> e.Action:
+        """An action made under a Python ``if`` whose test is unknown: conditional."""
+        text = " and ".join(self.guards)
+        cond = e.Cond((e.Opaque(f"Python test {text}"),), source=text)
+        if action.condition is None:
+            action.condition = cond
+            return action
+        return e.Group([action], scoped=False, condition=cond, location=action.location)
+
+    def e_Lambda(self, node: ast.Lambda, env: dict[str, Any]) -> Any:
+        return Func(node, env)
+
+    def e_ListComp(self, node: ast.ListComp | ast.GeneratorExp | ast.SetComp,
+                   env: dict[str, Any]) -> Any:
+        out: list[Any] = []
+        self.comprehension(node.generators, 0, dict(env, __closure__=env),
+                           lambda scope: out.append(self.eval(node.elt, scope)))
+        return out
+
+    e_GeneratorExp = e_ListComp
+    e_SetComp = e_ListComp
+
+    def e_DictComp(self, node: ast.DictComp, env: dict[str, Any]) -> Any:
+        out: dict[Any, Any] = {}
+
+        def add(scope: dict[str, Any]) -> None:
+            out[_hashable(self.eval(node.key, scope))] = self.eval(node.value, scope)
+
+        self.comprehension(node.generators, 0, dict(env, __closure__=env), add)
+        return out
+
+    def comprehension(self, generators: list[ast.comprehension], index: int,
+                      env: dict[str, Any], emit: Callable[[dict[str, Any]], None]) -> None:
+        if index == len(generators):
+            emit(env)
+            return
+        gen = generators[index]
+        for item in self.iterable(self.eval(gen.iter, env), gen.iter) or []:
+            self.tick()
+            self.assign(gen.target, item, env)
+            tests = [self.truth(self.eval(cond, env)) for cond in gen.ifs]
+            if None in tests:
+                self.unsupported(gen, "comprehension filter not known statically")
+                continue
+            if all(tests):
+                self.comprehension(generators, index + 1, env, emit)
+
+    def truth(self, value: Any) -> bool | None:
+        if _opaque(value):
+            return None
+        try:
+            return bool(value)
+        except Exception:
+            return None
+
+
+@dataclass
+class _Bound:
+    """``owner.attr`` waiting to be called (a method of a known value)."""
+
+    owner: Any
+    attr: str
+
+    def call(self, interp: Interpreter, args: list[Any], kwargs: dict[str, Any],
+             node: ast.AST) -> Any:
+        handler = interp.methods.get(self.attr)
+        if handler is None:
+            return interp.unsupported(node, f"method .{self.attr}() is not interpreted")
+        return handler(interp, self.owner, args, kwargs, node)
+
+
+class _Environ:
+    """``os.environ``: reads the configuration's environment."""
+
+    def get(self, interp: Expressions, args: list[Any], node: ast.AST) -> Any:
+        name = args[0] if args else None
+        if isinstance(name, str) and name in interp.environment:
+            return interp.environment[name]
+        if len(args) > 1:
+            return args[1]
+        return Lazy((e.Opaque(f"environment variable {name}"),)) if isinstance(
+            name, str) else Unk("environment")

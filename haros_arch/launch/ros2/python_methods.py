@@ -1,0 +1,225 @@
+"""Builtins and methods of known values for the static Python interpreter.
+
+``builtin`` wraps a safe Python builtin for known arguments; ``open`` gives a read-only
+handle on a workspace file and ``yaml.safe_load`` reads it with the safe loader;
+``METHODS`` maps a method name (``str.format``, ``list.append``,
+``LaunchDescription.add_action``, ``LaunchConfiguration.perform``,
+``IfCondition.evaluate``...) to its handler. Calls not listed are never made.
+"""
+
+from __future__ import annotations
+
+import ast
+from collections.abc import Callable
+from typing import TYPE_CHECKING, Any
+
+import yaml
+
+from . import entities as e
+from .python_values import Context, LaunchDescription, Lazy, ReadOnlyFile, Unk, concat, to_text
+
+if TYPE_CHECKING:
+    from .python import Interpreter
+
+Args = list[Any]
+Kwargs = dict[str, Any]
+Builder = Callable[["Interpreter", Args, Kwargs, ast.AST], Any]
+
+
+def arg(args: Args, kwargs: Kwargs, index: int, *names: str, default: Any = None) -> Any:
+    if index < len(args):
+        return args[index]
+    for name in names:
+        if name in kwargs:
+            return kwargs[name]
+    return default
+
+
+# -- builtins --------------------------------------------------------------------------------
+def builtin(function: Callable[..., Any], *types: type) -> Builder:
+    def build(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+        if k or any(not isinstance(v, types) for v in a):
+            return Unk(f"{function.__name__}() of values not known statically")
+        try:
+            return function(*a)
+        except (TypeError, ValueError, OverflowError) as err:
+            return i.unsupported(n, f"{function.__name__}() fails: {err}")
+    return build
+
+
+def open_file(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``open(path)`` / ``open(path, 'r')``: read-only; any other mode is refused."""
+    mode = arg(a, k, 1, "mode", default="r")
+    if mode not in ("r", "rt") or not a or not isinstance(a[0], str):
+        return i.unsupported(n, "open() other than for reading a known path is not run")
+    return ReadOnlyFile(a[0])
+
+
+def safe_load(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``yaml.safe_load(f)`` on a file we may read, with the safe loader (bounded)."""
+    source = a[0] if a else None
+    text = i.read(source.path, n) if isinstance(source, ReadOnlyFile) else (
+        source if isinstance(source, str) else None)
+    if text is None:
+        return Unk("YAML not known statically")
+    try:
+        return yaml.safe_load(text)
+    except yaml.YAMLError as err:
+        return i.unsupported(n, f"YAML cannot be read: {err}")
+
+
+def bounded_range(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    if not all(isinstance(v, int) for v in a) or not a:
+        return Unk("range of unknown bounds")
+    values = range(*a)
+    if len(values) > 10_000:
+        return i.unsupported(n, "range() above 10000 items is not expanded")
+    return list(values)
+
+
+# -- methods --------------------------------------------------------------------------------
+Method = Callable[["Interpreter", Any, Args, Kwargs, ast.AST], Any]
+
+
+def m_find(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``FindPackageShare('pkg').find('pkg')``: the share folder, now."""
+    if isinstance(owner, e.FindPackage) and a and isinstance(a[0], str):
+        found = i.workspace.find(a[0])
+        if found is not None and owner.share:
+            return found
+        return Lazy((e.FindPackage((a[0],), owner.share),))
+    return i.unsupported(n, ".find() on a value not known statically")
+
+
+def m_read(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    if isinstance(owner, ReadOnlyFile):
+        text = i.read(owner.path, n)
+        return Unk("unreadable file") if text is None else text
+    return i.unsupported(n, ".read() on a value not known statically")
+
+
+def m_evaluate(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``IfCondition(...).evaluate(context)`` inside an OpaqueFunction."""
+    if not (isinstance(owner, e.Cond) and a and isinstance(a[0], Context)):
+        return i.unsupported(n, ".evaluate() outside an OpaqueFunction")
+    value = a[0].perform(owner.expression)
+    if not isinstance(value, str):
+        return Unk(f"condition {owner.source}")
+    if owner.equals is not None:
+        expected = a[0].perform(owner.equals)
+        if not isinstance(expected, str):
+            return Unk(f"condition {owner.source}")
+        return (value == expected) != owner.negate
+    lowered = value.strip().lower()
+    if lowered not in ("true", "1", "false", "0"):
+        return i.unsupported(n, f"condition value {value!r} is not a boolean")
+    return (lowered in ("true", "1")) != owner.negate
+
+
+def m_add_action(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    if isinstance(owner, LaunchDescription) and a:
+        owner.actions.append(a[0])
+        return None
+    return i.unsupported(n, "add_action on a value not known statically")
+
+
+def m_list(name: str) -> Method:
+    def call(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
+        if isinstance(owner, LaunchDescription) and name in ("append", "extend"):
+            owner = owner.actions
+        if isinstance(owner, list):
+            if name == "append" and len(a) == 1:
+                owner.append(a[0])
+            elif name == "extend" and len(a) == 1 and isinstance(a[0], (list, tuple)):
+                owner.extend(a[0])
+            elif name == "insert" and len(a) == 2 and isinstance(a[0], int):
+                owner.insert(a[0], a[1])
+            else:
+                return i.unsupported(n, f"list.{name} with these arguments")
+            i.sized(owner)
+            return None
+        return i.unsupported(n, f".{name}() on a value not known statically")
+    return call
+
+
+def m_str(name: str) -> Method:
+    def call(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
+        if name == "perform":
+            if isinstance(owner, (e.Subst, Lazy)) and a and isinstance(a[0], Context):
+                return a[0].perform(to_text(owner))
+            return Unk("perform() outside an OpaqueFunction")
+        if name == "format" and isinstance(owner, str) and any(
+                isinstance(v, (Lazy, e.Subst, Unk)) for v in [*a, *k.values()]):
+            return _format_lazy(owner, a, k)
+        if not isinstance(owner, str) or not all(
+                isinstance(v, (str, int, float, list, tuple)) for v in [*a, *k.values()]):
+            if name == "join" and isinstance(owner, str) and a and isinstance(a[0], list):
+                pieces: list[Any] = []
+                for index, item in enumerate(a[0]):
+                    pieces.extend([owner, item] if index else [item])
+                return concat(pieces)
+            return Unk(f"str.{name}() of a value not known statically")
+        try:
+            return i.sized(getattr(owner, name)(*a, **k))
+        except (TypeError, ValueError, IndexError, KeyError) as err:
+            return i.unsupported(n, f"str.{name}() fails: {err}")
+    return call
+
+
+def _format_lazy(template: str, a: Args, k: Kwargs) -> Any:
+    """``'{}/{}'.format(LaunchConfiguration('ns'), 'x')`` for simple ``{}`` fields."""
+    pieces: list[Any] = []
+    rest = template
+    index = 0
+    while "{" in rest:
+        before, _, after = rest.partition("{")
+        field_name, _, rest = after.partition("}")
+        pieces.append(before)
+        if field_name == "":
+            pieces.append(a[index] if index < len(a) else Unk("format"))
+            index += 1
+        elif field_name.isdigit():
+            pieces.append(a[int(field_name)] if int(field_name) < len(a) else Unk("format"))
+        else:
+            pieces.append(k.get(field_name, Unk("format")))
+    pieces.append(rest)
+    return concat(pieces)
+
+
+def m_dict(name: str) -> Method:
+    def call(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
+        if isinstance(owner, Context) and name == "get" and a:
+            return owner.perform((e.Var(to_text(a[0]), to_text(a[1]) if len(a) > 1
+                                        else None),))
+        if hasattr(owner, "get") and not isinstance(owner, dict) and name == "get":
+            return owner.get(i, a, n)
+        if not isinstance(owner, dict):
+            return i.unsupported(n, f".{name}() on a value not known statically")
+        if name == "items":
+            return list(owner.items())
+        if name == "keys":
+            return list(owner)
+        if name == "values":
+            return list(owner.values())
+        if name == "get" and a:
+            return owner.get(a[0], a[1] if len(a) > 1 else None)
+        if name == "update" and a and isinstance(a[0], dict):
+            owner.update(a[0])
+            return None
+        if name == "copy":
+            return dict(owner)
+        return i.unsupported(n, f"dict.{name} with these arguments")
+    return call
+
+
+METHODS: dict[str, Method] = {
+    "add_action": m_add_action, "find": m_find, "read": m_read, "evaluate": m_evaluate,
+    "append": m_list("append"), "extend": m_list("extend"),
+    "insert": m_list("insert"), "items": m_dict("items"), "keys": m_dict("keys"),
+    "values": m_dict("values"), "get": m_dict("get"), "update": m_dict("update"),
+    "copy": m_dict("copy"), "perform": m_str("perform"),
+    **{name: m_str(name) for name in (
+        "format", "join", "replace", "split", "strip", "lstrip", "rstrip", "lower", "upper",
+        "startswith", "endswith", "capitalize", "title", "rsplit", "removeprefix",
+        "removesuffix")},
+}

@@ -1,0 +1,187 @@
+"""Values of the static Python interpreter, its bounds, and how they become launch text.
+
+``Unk`` is a value we do not know; ``Lazy`` a string with substitutions or unknown parts
+(a ``Text``, computed when the action runs); ``Ref`` a module or an imported name;
+``Func`` a function of the interpreted file; ``ReadOnlyFile`` what ``open()`` gives.
+"""
+
+from __future__ import annotations
+
+import ast
+import operator
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from typing import Any
+
+from . import entities as e
+
+MAX_SOURCE = 512 * 1024
+MAX_NODES = 100_000
+MAX_DEPTH = 100
+MAX_STEPS = 200_000
+MAX_CALL_DEPTH = 40
+MAX_SIZE = 100_000  # items of a container or characters of a string
+MAX_READ = 1024 * 1024  # bytes of a file read by open() / yaml.safe_load
+
+
+class Budget(Exception):
+    """A bound was reached: interpretation stops."""
+
+
+class Unsupported(Exception):
+    """A construct outside the subset, where a value cannot stand for it."""
+
+
+class _Flow(Exception):
+    """return / break / continue, as control flow of the interpreted code."""
+
+
+class _Return(_Flow):
+    def __init__(self, value: Any) -> None:
+        self.value = value
+
+
+class _Break(_Flow):
+    pass
+
+
+class _Continue(_Flow):
+    pass
+
+
+@dataclass(frozen=True)
+class Unk:
+    """A value we do not know; ``why`` says what it came from."""
+
+    why: str
+
+
+@dataclass(frozen=True)
+class Lazy:
+    """A string with substitutions or unknown parts, computed when the action runs."""
+
+    text: e.Text
+
+
+@dataclass(frozen=True)
+class Ref:
+    """A module or a name imported from one: ``launch_ros.actions.Node``."""
+
+    qualified: str
+
+
+@dataclass
+class Func:
+    node: ast.FunctionDef | ast.Lambda
+    closure: dict[str, Any]
+
+
+@dataclass(frozen=True)
+class ReadOnlyFile:
+    """What ``open(path)`` gives: only ``read()`` and ``yaml.safe_load`` use it."""
+
+    path: str
+
+
+@dataclass
+class LaunchDescription:
+    actions: list[Any] = field(default_factory=list)
+
+
+@dataclass(frozen=True)
+class Context:
+    """The ``context`` an ``OpaqueFunction`` receives: reads the runner's scope."""
+
+    perform: Callable[[e.Text], Any]
+
+
+_BINARY: dict[type, Callable[[Any, Any], Any]] = {
+    ast.Add: operator.add, ast.Sub: operator.sub, ast.Mult: operator.mul,
+    ast.Div: operator.truediv, ast.FloorDiv: operator.floordiv, ast.Mod: operator.mod,
+    ast.Pow: operator.pow, ast.LShift: operator.lshift, ast.RShift: operator.rshift,
+    ast.BitAnd: operator.and_, ast.BitOr: operator.or_,
+}
+_COMPARE: dict[type, Callable[[Any, Any], bool]] = {
+    ast.Eq: operator.eq, ast.NotEq: operator.ne, ast.Lt: operator.lt, ast.LtE: operator.le,
+    ast.Gt: operator.gt, ast.GtE: operator.ge, ast.In: lambda a, b: a in b,
+    ast.NotIn: lambda a, b: a not in b, ast.Is: operator.is_, ast.IsNot: operator.is_not,
+}
+_KNOWN_ROOTS = ("launch", "launch_ros", "launch_xml", "launch_yaml", "os", "ament_index_python",
+                "nav2_common", "builtins", "pathlib", "yaml")
+
+
+def _known_module(qualified: str) -> bool:
+    return qualified.split(".")[0] in _KNOWN_ROOTS
+
+
+def _source(node: ast.AST) -> str:
+    try:
+        text = ast.unparse(node)
+    except Exception:
+        text = "?"
+    return text if len(text) <= 200 else text[:197] + "..."
+
+
+def _load(target: ast.expr) -> ast.expr:
+    copy = ast.parse(ast.unparse(target), mode="eval").body
+    return ast.copy_location(copy, target)
+
+
+def _hashable(value: Any) -> Any:
+    if isinstance(value, list):
+        return tuple(_hashable(v) for v in value)
+    if isinstance(value, dict):
+        return Unk("dict key")
+    return value
+
+
+def _opaque(value: Any) -> bool:
+    return isinstance(value, (Unk, Lazy, e.Subst, e.Cond, e.Action))
+
+
+def is_lazy(value: Any) -> bool:
+    return isinstance(value, (Lazy, e.Subst, Unk))
+
+
+def is_stringy(value: Any) -> bool:
+    return isinstance(value, (str, Lazy, e.Subst, Unk))
+
+
+def _text_of(value: Any) -> e.Text:
+    return to_text(value)
+
+
+def to_text(value: Any) -> e.Text:
+    """A launch text (str / substitution / list of them) as our ``Text``."""
+    if isinstance(value, str):
+        return (value,)
+    if isinstance(value, Lazy):
+        return value.text
+    if isinstance(value, e.Subst):
+        return (value,)
+    if isinstance(value, (list, tuple)):
+        return e.text(*(to_text(v) for v in value))
+    if isinstance(value, bool):
+        return (str(value).lower(),)
+    if isinstance(value, (int, float)):
+        return (str(value),)
+    if isinstance(value, Unk):
+        return (e.Opaque(value.why),)
+    if isinstance(value, e.ParamFile):
+        return (e.FileRef(value),)
+    return (e.Opaque(f"{type(value).__name__} value"),)
+
+
+def concat(parts: list[Any]) -> Any:
+    """Join strings, substitutions and unknowns: a str when all parts are known."""
+    out: list[str | e.Subst] = []
+    for part in parts:
+        if isinstance(part, (int, float)) and not isinstance(part, bool):
+            out.append(str(part))
+        elif isinstance(part, (str, Lazy, e.Subst, Unk)):
+            out.extend(to_text(part))
+        else:
+            out.append(e.Opaque(f"{type(part).__name__} in a string"))
+    if all(isinstance(p, str) for p in out):
+        return "".join(p for p in out if isinstance(p, str))
+    return Lazy(tuple(out))
