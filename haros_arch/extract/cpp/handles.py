@@ -12,7 +12,7 @@ from __future__ import annotations
 from clang.cindex import Cursor, CursorKind, TypeKind
 
 from . import api
-from .values import UNKNOWN, Parts, Scope, render, strip, written_arguments
+from .values import UNKNOWN, CallSites, Parts, Scope, render, strip, written_arguments
 
 MAX_DEPTH = 16
 _SCOPES = frozenset({
@@ -96,6 +96,7 @@ class Namespaces:
     def __init__(self, macros: dict[str, str], source: dict[str, bytes]) -> None:
         self.macros = macros
         self.source = source
+        self.sites: CallSites | None = None  # set once the file's functions are known
 
     def of_call(self, call: Cursor, callee: Cursor, scope: Scope) -> Parts:
         """The namespace of the handle or node a member call is made on."""
@@ -127,6 +128,8 @@ class Namespaces:
             return ("",) if is_ros2_node(record_class(expr)) else UNKNOWN
         if kind == CursorKind.DECL_REF_EXPR:
             decl = expr.referenced
+            if decl is not None and scope.is_parameter(decl) and scope.sites is not None:
+                return scope.sites.agreed(decl, lambda a, s: self.of(a, s, depth + 1), UNKNOWN)
             if decl is None or decl.kind != CursorKind.VAR_DECL:
                 return UNKNOWN
             value = scope.variable(decl)
@@ -136,7 +139,7 @@ class Namespaces:
             if value is None:
                 # a member no constructor initialises: the default handle
                 return ("",) if is_handle(expr) else UNKNOWN
-            return self.of(value, Scope(None, self.macros, self.source), depth + 1)
+            return self.of(value, Scope(None, self.macros, self.source, self.sites), depth + 1)
         if kind == CursorKind.CXX_NEW_EXPR:
             inner = [c for c in expr.get_children() if c.kind.is_expression()]
             return self.of(inner[-1], scope, depth + 1) if inner else UNKNOWN

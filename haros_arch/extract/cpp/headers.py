@@ -48,6 +48,7 @@ PRELUDE = os.path.join(STANDIN, "haros_prelude.h")  # what is precompiled
 _PCH_OPTIONS = 0x10 | 0x02
 # Prefixes only our stand-ins provide in the default mode; a header of one of these
 # libraries we have no stand-in for includes the library's umbrella stand-in.
+QT = "haros_qt.h"  # the Qt stand-in every Qt header includes
 UMBRELLAS = {
     "rclcpp/": "rclcpp/rclcpp.hpp", "rclcpp_action/": "rclcpp_action/rclcpp_action.hpp",
     "rclcpp_lifecycle/": "rclcpp_lifecycle/lifecycle_node.hpp",
@@ -58,13 +59,25 @@ UMBRELLAS = {
     "message_filters/": "message_filters/subscriber.h",
     "actionlib/": "actionlib/server/simple_action_server.h", "nodelet/": "nodelet/nodelet.h",
     "pluginlib/": "pluginlib/class_list_macros.hpp",
+    # libraries beside ROS that node classes use: minimal stand-ins keep them parsing
+    "opencv2/": "opencv2/opencv.hpp", "opencv/": "opencv2/opencv.hpp",
+    "cv_bridge/": "cv_bridge/cv_bridge.h", "Eigen/": "Eigen/Dense", "eigen3/": "Eigen/Dense",
+    **{f"Qt{m}/": QT for m in ("Core", "Gui", "Widgets", "Network", "Concurrent", "Test")},
 }
 SHADOWED = ("ros/", "boost/", "tf/", *UMBRELLAS)
+_QT_HEADER = re.compile(r"Q[A-Z][A-Za-z]*(\.h)?")  # <QObject>, <QTimer>, <QWidget>
 _ROS2_HEADER = re.compile(r"([A-Za-z_]\w*)/(msg|srv|action)/([a-z0-9_]+)\.hpp")
 
 _INCLUDE = re.compile(r'^[ \t]*#[ \t]*include[ \t]*([<"])([^>"\n]+)[>"]', re.MULTILINE)
 _MESSAGE_HEADER = re.compile(r"([A-Za-z_]\w*)/([A-Z]\w*)\.h")
 _NOT_FOUND = re.compile(r"^'([^']+)' file not found")
+
+
+_ROS_PREFIXES = ("ros/", "boost/", "tf/", "rclcpp", "rmw/", "tf2", "image_transport/",
+                 "message_filters/", "actionlib/", "nodelet/", "pluginlib/")
+_LIBRARY_UMBRELLAS = frozenset({"opencv2/opencv.hpp", "cv_bridge/cv_bridge.h", "Eigen/Dense",
+                                QT})
+_LIBRARY_HEADERS = ("sensor_msgs/image_encodings.",)
 
 
 def is_ros2_header(header: str) -> bool:
@@ -153,15 +166,28 @@ class IncludeSetup:
         if ros2 is not None and (not self.system_headers or self._resolve(header) is None):
             self._ros2_interface(header, ros2.group(1), ros2.group(2), ros2.group(3), where)
             return None
-        if not self.system_headers and header.startswith(SHADOWED):
-            if not os.path.isfile(os.path.join(STANDIN, header)):
-                umbrella = next((u for p, u in UMBRELLAS.items() if header.startswith(p)), None)
+        qt = _QT_HEADER.fullmatch(header) is not None
+        if not self.system_headers and (header.startswith(SHADOWED) or qt):
+            standin = os.path.join(STANDIN, header)
+            if os.path.isfile(standin) and not header.startswith(_ROS_PREFIXES):
+                self._handled.add(header)
+                self._scan_standin(standin)  # what it includes (a message header) is ready
+            elif not os.path.isfile(standin):
+                umbrella = QT if qt else next(
+                    (u for p, u in UMBRELLAS.items() if header.startswith(p)), None)
                 if umbrella is None:
                     self._empty(header, where)
                 else:
                     self._handled.add(header)
                     self._write(header, f"// haros_arch: stands in for {header}\n"
                                         f"#include <{umbrella}>\n")
+                    if umbrella in _LIBRARY_UMBRELLAS:
+                        self._scan_standin(os.path.join(STANDIN, umbrella))
+            return None
+        if not self.system_headers and os.path.isfile(os.path.join(STANDIN, header)) and (
+            header.startswith(_LIBRARY_HEADERS)
+        ):
+            self._handled.add(header)  # sensor_msgs/image_encodings.h
             return None
         message = _MESSAGE_HEADER.fullmatch(header)
         if message is not None and self._message(
@@ -177,6 +203,15 @@ class IncludeSetup:
         if found is None:
             self._empty(header, where)
         return found
+
+    def _scan_standin(self, path: str) -> None:
+        """Prepare what a library stand-in includes (cv_bridge: ``sensor_msgs/Image.h``)."""
+        if path not in self._scanned:
+            text, _ = read_text(path, Location(file=path))
+            before = len(self.diagnostics)
+            if text is not None:
+                self.scan(path, text)
+            del self.diagnostics[before:]  # nothing to report about our own headers
 
     def _message(self, header: str, package: str, name: str, where: Location) -> bool:
         """Synthesise a message / service header when that is what ``header`` is."""

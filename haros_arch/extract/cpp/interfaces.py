@@ -79,6 +79,7 @@ WELL_KNOWN: dict[str, str] = {
                        "float64[9] linear_acceleration_covariance",
     "sensor_msgs/JointState": "Header header\nstring[] name\nfloat64[] position\n"
                               "float64[] velocity\nfloat64[] effort",
+    "sensor_msgs/CompressedImage": "Header header\nstring format\nuint8[] data\n",
     "sensor_msgs/Image": "Header header\nuint32 height\nuint32 width\nstring encoding\n"
                          "uint8 is_bigendian\nuint32 step\nuint8[] data",
 }

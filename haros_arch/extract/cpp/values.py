@@ -4,17 +4,21 @@ A string value is a tuple of parts, each a known ``str`` or ``None`` for a part 
 only known at run time; ``render`` writes the unknown parts as ``?``. Resolved:
 literals (also through ``#define``), ``const`` / ``constexpr`` variables, local variables
 written exactly once (at their declaration or by one assignment), ``std::string``
-construction, ``+`` concatenation and ``.c_str()``. Anything else is unknown.
+construction, ``+`` concatenation and ``.c_str()``, and a function's parameter when every
+call of the function in the same file passes the same value (``CallSites``). Anything
+else is unknown.
 """
 
 from __future__ import annotations
 
 import re
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
+from typing import TypeVar
 
 from clang.cindex import Cursor, CursorKind, TypeKind
 
 Parts = tuple[str | None, ...]
+Value = TypeVar("Value")
 UNKNOWN: Parts = (None,)
 MAX_DEPTH = 24
 
@@ -71,7 +75,9 @@ class Scope:
     """What the values of one function body depend on: its variables' writes, macros."""
 
     def __init__(self, body: Cursor | None, macros: dict[str, str],
-                 source: dict[str, bytes]) -> None:
+                 source: dict[str, bytes], sites: CallSites | None = None) -> None:
+        self.body = body
+        self.sites = sites
         self.macros = macros
         self.source = source
         # variable key -> the expressions written to it; None for an unknown write
@@ -168,11 +174,19 @@ class Scope:
             return UNKNOWN if text is None else (text,)
         if kind in (CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR):
             decl = cursor.referenced
+            if decl is not None and self.is_parameter(decl):
+                return self.sites.agreed(  # type: ignore[union-attr]
+                    decl, lambda arg, scope: scope.string(arg, depth + 1), UNKNOWN)
             value = self.variable(decl) if decl is not None else None
             return UNKNOWN if value is None else self.string(value, depth + 1)
         if kind == CursorKind.CALL_EXPR:
             return self._string_call(cursor, depth)
         return UNKNOWN
+
+    def is_parameter(self, decl: Cursor) -> bool:
+        """A parameter this function never assigns, whose callers may tell its value."""
+        return self.sites is not None and decl.kind == CursorKind.PARM_DECL and all(
+            w is None for w in self.writes.get(_key(decl), []))
 
     def _string_call(self, call: Cursor, depth: int) -> Parts:
         args = written_arguments(call)
@@ -206,6 +220,9 @@ class Scope:
             return self._int_token(token) if token else None
         if cursor.kind in (CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR):
             decl = cursor.referenced
+            if decl is not None and self.is_parameter(decl):
+                return self.sites.agreed(  # type: ignore[union-attr]
+                    decl, lambda arg, scope: scope.integer(arg, depth + 1), None)
             value = self.variable(decl) if decl is not None else None
             return None if value is None else self.integer(value, depth + 1)
         return None
@@ -235,6 +252,77 @@ class Scope:
             value = self.variable(cursor.referenced)
             return None if value is None else self.boolean(value)
         return None
+
+
+class CallSites:
+    """The calls of the file's own functions, so that a parameter's value can be read at
+    its callers: ``setup(nh, "scan")`` makes ``topic`` of ``void setup(NodeHandle& nh,
+    const std::string& topic)`` the string ``scan``, when every call agrees."""
+
+    MAX_SITES = 16
+
+    def __init__(self, functions: list[Cursor], macros: dict[str, str],
+                 source: dict[str, bytes]) -> None:
+        self.functions = functions
+        self.macros = macros
+        self.source = source
+        self._index: dict[tuple[str, int], list[tuple[Cursor, Cursor]]] | None = None
+        self._scopes: dict[tuple[str, int], Scope] = {}
+        self._active: set[tuple[str, int]] = set()  # parameters being read (recursion)
+
+    def agreed(self, parm: Cursor, read: Callable[[Cursor, Scope], Value],
+               unknown: Value) -> Value:
+        """``read`` of the argument each call passes for ``parm``, when all agree."""
+        key = _key(parm)
+        if key in self._active:
+            return unknown
+        self._active.add(key)
+        try:
+            values = [read(arg, scope) for arg, scope in self._arguments(parm)]
+        finally:
+            self._active.discard(key)
+        if not values or any(v != values[0] for v in values):
+            return unknown
+        return values[0]
+
+    def _arguments(self, parm: Cursor) -> list[tuple[Cursor, Scope]]:
+        function = parm.semantic_parent
+        if function is None:
+            return []
+        params = [c for c in function.get_children() if c.kind == CursorKind.PARM_DECL]
+        index = next((i for i, p in enumerate(params) if p.spelling == parm.spelling), None)
+        sites = self._sites().get(_key(function.canonical), [])
+        if index is None or len(sites) > self.MAX_SITES:
+            return []
+        found = []
+        for call, caller in sites:
+            args = list(call.get_arguments())
+            if index >= len(args) or is_default_argument(args[index]):
+                return []  # a call that does not say: the value is not known
+            found.append((args[index], self._scope(caller)))
+        return found
+
+    def _sites(self) -> dict[tuple[str, int], list[tuple[Cursor, Cursor]]]:
+        if self._index is None:
+            self._index = {}
+            for function in self.functions:
+                for node in function.walk_preorder():
+                    if node.kind == CursorKind.CALL_EXPR and node.referenced is not None and (
+                        node.referenced.kind in _CALLABLE
+                    ):
+                        self._index.setdefault(_key(node.referenced.canonical), []).append(
+                            (node, function))
+        return self._index
+
+    def _scope(self, function: Cursor) -> Scope:
+        key = _key(function)
+        if key not in self._scopes:
+            self._scopes[key] = Scope(function, self.macros, self.source, self)
+        return self._scopes[key]
+
+
+_CALLABLE = frozenset({CursorKind.FUNCTION_DECL, CursorKind.CXX_METHOD, CursorKind.CONSTRUCTOR,
+                       CursorKind.FUNCTION_TEMPLATE})
 
 
 def initializer(decl: Cursor) -> Cursor | None:

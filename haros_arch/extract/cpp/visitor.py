@@ -31,7 +31,7 @@ from .handles import (
     record_class,
 )
 from .qos import qos as qos_of
-from .values import Scope, render, strip, written_arguments
+from .values import CallSites, Scope, render, strip, written_arguments
 
 _CONTAINERS = frozenset({
     CursorKind.NAMESPACE, CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL,
@@ -68,12 +68,14 @@ class CallFinder:
         self._declared: dict[str, str] = {}  # ROS 2 parameter -> its declared default
         self.calls: list[PrimitiveCall] = []
         self.functions: list[Cursor] = []
+        self.sites: CallSites | None = None
         self._scope: Scope | None = None  # of the function being walked
         self.rosname: str | None = None
         self.diagnostics: list[Diagnostic] = []
 
     def run(self) -> None:
         self.functions = list(self._definitions(self.tu.cursor, top=True))
+        self.sites = self.namespaces.sites = CallSites(self.functions, self.macros, self.source)
         for function in self.functions:
             self._function(function)
         for call in self.calls:  # get_parameter("p") of a declare_parameter("p", default)
@@ -98,7 +100,7 @@ class CallFinder:
                 yield from self._definitions(cursor)
 
     def _function(self, function: Cursor) -> None:
-        scope = self._scope = Scope(function, self.macros, self.source)
+        scope = self._scope = Scope(function, self.macros, self.source, self.sites)
         stack: list[tuple[Cursor, tuple[Condition, ...]]] = [
             (child, ()) for child in reversed(list(function.get_children()))
             if child.kind != CursorKind.PARM_DECL]
@@ -191,7 +193,7 @@ class CallFinder:
                 objects = [c for c in callee.get_children() if c.kind.is_expression()]
                 if row is not None and objects and strip(objects[0]).referenced == decl:
                     found = scope if function == scope.body else Scope(
-                        function, self.macros, self.source)
+                        function, self.macros, self.source, self.sites)
                     return row, node, found
         return None
 
@@ -393,7 +395,7 @@ class CallFinder:
         spec = api.ALL.get((qualified_name(decl), decl.spelling))
         if spec is None or spec.fixed_name is None:
             return
-        self._emit(spec, field, [], decl, (), Scope(None, self.macros, self.source))
+        self._emit(spec, field, [], decl, (), Scope(None, self.macros, self.source, self.sites))
 
     @staticmethod
     def _callee(call: Cursor) -> Cursor:
@@ -448,10 +450,27 @@ class CallFinder:
     def _template_argument(self, call: Cursor) -> Cursor | None:
         """The first type written as a template argument of the called function."""
         callee = self._callee(call)
+        target = call.referenced
+        owner = target.semantic_parent if target is not None else None
         for child in callee.get_children():
-            if child.kind == CursorKind.TYPE_REF:
+            if child.kind == CursorKind.TYPE_REF and (
+                owner is None or child.referenced != owner  # not ``Class::`` of Class::f<M>
+            ):
                 return child
         return None
+
+
+def _creator(expr: Cursor, depth: int = 0) -> tuple[api.RosFunction, Cursor] | None:
+    """``Options::create<M>(...)`` in ``expr`` (through copies and conversions)."""
+    expr = strip(expr)
+    if expr.kind != CursorKind.CALL_EXPR or depth > 4:
+        return None
+    target = expr.referenced
+    if target is not None and target.spelling == "create":
+        row = api.OPTIONS.get((qualified_name(target.semantic_parent), "create"))
+        return (row, expr) if row is not None else None
+    inner = [c for c in expr.get_children() if c.kind.is_expression()]
+    return _creator(inner[-1], depth + 1) if len(inner) == 1 else None
 
 
 def _private(name: str) -> str:

@@ -40,6 +40,7 @@ public:
   TransportHints& reliable();
 };
 typedef boost::shared_ptr<void const> VoidConstPtr;
+typedef boost::shared_ptr<void> VoidPtr;
 class Exception {
 public:
   explicit Exception(const std::string& what);

@@ -7,6 +7,46 @@
 #include <ros/service_server.h>
 #include <ros/timer.h>
 namespace ros {
+// what subscribe(ops) / advertise(ops) take; init<M> / create<M> hold the topic
+struct SubscribeOptions {
+  SubscribeOptions();
+  template<class M>
+  void init(const std::string& topic, uint32_t queue_size,
+            const boost::function<void(const boost::shared_ptr<M const>&)>& callback);
+  template<class M>
+  static SubscribeOptions create(const std::string& topic, uint32_t queue_size,
+                                 const boost::function<void(const boost::shared_ptr<M const>&)>& callback,
+                                 const VoidConstPtr& tracked_object = VoidConstPtr(),
+                                 CallbackQueueInterface* queue = 0);
+  std::string topic;
+  uint32_t queue_size;
+  std::string md5sum;
+  std::string datatype;
+  CallbackQueueInterface* callback_queue;
+  bool allow_concurrent_callbacks;
+  VoidConstPtr tracked_object;
+  TransportHints transport_hints;
+};
+struct AdvertiseOptions {
+  AdvertiseOptions();
+  template<class M>
+  void init(const std::string& topic, uint32_t queue_size,
+            const SubscriberStatusCallback& connect_cb = SubscriberStatusCallback(),
+            const SubscriberStatusCallback& disconnect_cb = SubscriberStatusCallback());
+  template<class M>
+  static AdvertiseOptions create(const std::string& topic, uint32_t queue_size,
+                                 const SubscriberStatusCallback& connect_cb,
+                                 const SubscriberStatusCallback& disconnect_cb,
+                                 const VoidConstPtr& tracked_object,
+                                 CallbackQueueInterface* queue);
+  std::string topic;
+  uint32_t queue_size;
+  std::string md5sum;
+  std::string datatype;
+  CallbackQueueInterface* callback_queue;
+  VoidConstPtr tracked_object;
+  bool latch;
+};
 class NodeHandle {
 public:
   NodeHandle(const std::string& ns = std::string(), const M_string& remappings = M_string());
@@ -57,6 +97,9 @@ public:
                        const boost::function<void(const boost::shared_ptr<M const>&)>& callback,
                        const VoidConstPtr& tracked_object = VoidConstPtr(),
                        const TransportHints& hints = TransportHints());
+
+  Publisher advertise(AdvertiseOptions& ops);
+  Subscriber subscribe(SubscribeOptions& ops);
 
   // services
   template<class MReq, class MRes>

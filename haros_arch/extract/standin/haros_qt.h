@@ -1,0 +1,239 @@
+// haros_arch stand-in: the Qt basics ROS nodes with a GUI use (declarations only).
+// Every Qt header (<QObject>, <QtWidgets/QWidget>, ...) includes this one file.
+#ifndef HAROS_STANDIN_QT_H
+#define HAROS_STANDIN_QT_H
+#include <string>
+#include <vector>
+#define Q_OBJECT
+#define Q_GADGET
+#define Q_SIGNALS public
+#define Q_SLOTS
+#define signals public
+#define slots
+#define emit
+#define Q_EMIT
+#define Q_DECL_OVERRIDE override
+#define Q_UNUSED(x) (void)(x)
+#define Q_PROPERTY(x)
+#define Q_INVOKABLE
+#define Q_DECLARE_METATYPE(x)
+#define SIGNAL(x) "2" #x
+#define SLOT(x) "1" #x
+class QString {
+public:
+  QString();
+  QString(const char* text);
+  QString(const QString& other);
+  static QString fromStdString(const std::string& text);
+  static QString number(double value, char format = 'g', int precision = 6);
+  std::string toStdString() const;
+  QString arg(const QString& a) const;
+  QString arg(double a) const;
+  bool isEmpty() const;
+  int size() const;
+  int toInt(bool* ok = nullptr) const;
+  double toDouble(bool* ok = nullptr) const;
+  QString& operator=(const QString& other);
+  QString operator+(const QString& other) const;
+  bool operator==(const QString& other) const;
+};
+template<class T> class QList {
+public:
+  QList();
+  void append(const T& value);
+  int size() const;
+  T& operator[](int i);
+  const T& at(int i) const;
+  bool isEmpty() const;
+  void clear();
+};
+template<class T> class QVector : public QList<T> {};
+class QStringList : public QList<QString> {};
+class QVariant {
+public:
+  QVariant();
+  template<class T> QVariant(const T& value);
+  QString toString() const;
+  int toInt(bool* ok = nullptr) const;
+  double toDouble(bool* ok = nullptr) const;
+  bool toBool() const;
+};
+class QObject {
+public:
+  explicit QObject(QObject* parent = nullptr);
+  virtual ~QObject();
+  static bool connect(const QObject* sender, const char* signal, const QObject* receiver,
+                      const char* method);
+  template<class A, class B, class C, class D>
+  static bool connect(A sender, B signal, C receiver, D method);
+  template<class A, class B, class C>
+  static bool connect(A sender, B signal, C functor);
+  static bool disconnect(const QObject* sender, const char* signal, const QObject* receiver,
+                         const char* method);
+  void setObjectName(const QString& name);
+  QString objectName() const;
+  QObject* parent() const;
+  void deleteLater();
+  bool blockSignals(bool block);
+  void installEventFilter(QObject* filter);
+};
+class QEvent { public: virtual ~QEvent(); int type() const; void accept(); void ignore(); };
+class QTimerEvent : public QEvent {};
+class QCloseEvent : public QEvent {};
+class QShowEvent : public QEvent {};
+class QResizeEvent : public QEvent {};
+class QPaintEvent : public QEvent {};
+class QKeyEvent : public QEvent { public: int key() const; QString text() const; };
+class QMouseEvent : public QEvent { public: int x() const; int y() const; int button() const; };
+class QWheelEvent : public QEvent {};
+class QTimer : public QObject {
+public:
+  explicit QTimer(QObject* parent = nullptr);
+  void start();
+  void start(int msec);
+  void stop();
+  void setInterval(int msec);
+  int interval() const;
+  void setSingleShot(bool single);
+  bool isActive() const;
+  template<class F> static void singleShot(int msec, F functor);
+  static void singleShot(int msec, const QObject* receiver, const char* member);
+  void timeout();
+};
+class QThread : public QObject {
+public:
+  explicit QThread(QObject* parent = nullptr);
+  void start();
+  void quit();
+  bool wait(unsigned long msec = 0xffffffff);
+  bool isRunning() const;
+  static void msleep(unsigned long msec);
+  static void sleep(unsigned long secs);
+protected:
+  virtual void run();
+};
+class QMutex { public: QMutex(); void lock(); void unlock(); bool tryLock(int timeout = 0); };
+class QMutexLocker { public: explicit QMutexLocker(QMutex* mutex); ~QMutexLocker(); };
+class QPointF { public: QPointF(); QPointF(double x, double y); double x() const; double y() const; };
+class QPoint { public: QPoint(); QPoint(int x, int y); int x() const; int y() const; };
+class QSize { public: QSize(); QSize(int w, int h); int width() const; int height() const; };
+class QRect { public: QRect(); QRect(int x, int y, int w, int h); int width() const; int height() const; };
+class QColor { public: QColor(); QColor(int r, int g, int b, int a = 255); QColor(const char* name); };
+class QImage {
+public:
+  enum Format { Format_RGB888, Format_RGB32, Format_ARGB32, Format_Grayscale8, Format_Indexed8 };
+  QImage();
+  QImage(int width, int height, Format format);
+  QImage(const unsigned char* data, int width, int height, int bytes_per_line, Format format);
+  QImage copy() const;
+  QImage scaled(int w, int h) const;
+  QImage rgbSwapped() const;
+  bool isNull() const;
+  int width() const;
+  int height() const;
+  unsigned char* bits();
+};
+class QPixmap { public: QPixmap(); static QPixmap fromImage(const QImage& image); };
+class QPen { public: QPen(); QPen(const QColor& color); void setWidth(int width); };
+class QBrush { public: QBrush(); QBrush(const QColor& color); };
+class QPaintDevice { public: virtual ~QPaintDevice(); };
+class QPainter {
+public:
+  QPainter();
+  explicit QPainter(QPaintDevice* device);
+  void setPen(const QPen& pen);
+  void setBrush(const QBrush& brush);
+  void drawLine(const QPointF& a, const QPointF& b);
+  void drawLine(int x1, int y1, int x2, int y2);
+  void drawImage(const QRect& target, const QImage& image);
+  void drawImage(int x, int y, const QImage& image);
+  void drawText(int x, int y, const QString& text);
+  void drawEllipse(const QPointF& center, double rx, double ry);
+  void fillRect(const QRect& rect, const QColor& color);
+  void translate(double dx, double dy);
+  void rotate(double angle);
+  void scale(double sx, double sy);
+};
+class QLayout : public QObject { public: void addWidget(class QWidget* widget); };
+class QWidget : public QObject, public QPaintDevice {
+public:
+  explicit QWidget(QWidget* parent = nullptr);
+  void show();
+  void hide();
+  void close();
+  void update();
+  void repaint();
+  void resize(int w, int h);
+  void setFixedSize(int w, int h);
+  void setMinimumSize(int w, int h);
+  void setWindowTitle(const QString& title);
+  void setLayout(QLayout* layout);
+  void setEnabled(bool enabled);
+  void setVisible(bool visible);
+  void setFocusPolicy(int policy);
+  void setFocus();
+  int width() const;
+  int height() const;
+  QRect rect() const;
+protected:
+  virtual void paintEvent(QPaintEvent* event);
+  virtual void keyPressEvent(QKeyEvent* event);
+  virtual void keyReleaseEvent(QKeyEvent* event);
+  virtual void mousePressEvent(QMouseEvent* event);
+  virtual void mouseReleaseEvent(QMouseEvent* event);
+  virtual void mouseMoveEvent(QMouseEvent* event);
+  virtual void resizeEvent(QResizeEvent* event);
+  virtual void closeEvent(QCloseEvent* event);
+  virtual void timerEvent(QTimerEvent* event);
+};
+class QFrame : public QWidget { public: explicit QFrame(QWidget* parent = nullptr); };
+class QMainWindow : public QWidget {
+public:
+  explicit QMainWindow(QWidget* parent = nullptr);
+  void setCentralWidget(QWidget* widget);
+};
+class QDialog : public QWidget { public: explicit QDialog(QWidget* parent = nullptr); int exec(); };
+class QLabel : public QFrame {
+public:
+  explicit QLabel(QWidget* parent = nullptr);
+  QLabel(const QString& text, QWidget* parent = nullptr);
+  void setText(const QString& text);
+  void setPixmap(const QPixmap& pixmap);
+};
+class QAbstractButton : public QWidget {
+public:
+  void setText(const QString& text);
+  bool isChecked() const;
+  void setChecked(bool checked);
+  void clicked(bool checked = false);
+  void toggled(bool checked);
+};
+class QPushButton : public QAbstractButton {
+public:
+  explicit QPushButton(QWidget* parent = nullptr);
+  QPushButton(const QString& text, QWidget* parent = nullptr);
+};
+class QCheckBox : public QAbstractButton { public: explicit QCheckBox(QWidget* parent = nullptr); };
+class QLineEdit : public QWidget {
+public:
+  explicit QLineEdit(QWidget* parent = nullptr);
+  QString text() const;
+  void setText(const QString& text);
+};
+class QSlider : public QWidget { public: explicit QSlider(QWidget* parent = nullptr); int value() const; void setValue(int v); void setRange(int a, int b); };
+class QSpinBox : public QWidget { public: explicit QSpinBox(QWidget* parent = nullptr); int value() const; void setValue(int v); };
+class QComboBox : public QWidget { public: explicit QComboBox(QWidget* parent = nullptr); void addItem(const QString& text); QString currentText() const; int currentIndex() const; };
+class QBoxLayout : public QLayout { public: void addLayout(QLayout* layout); void addStretch(int stretch = 0); };
+class QVBoxLayout : public QBoxLayout { public: QVBoxLayout(); explicit QVBoxLayout(QWidget* parent); };
+class QHBoxLayout : public QBoxLayout { public: QHBoxLayout(); explicit QHBoxLayout(QWidget* parent); };
+class QGridLayout : public QLayout { public: QGridLayout(); explicit QGridLayout(QWidget* parent); void addWidget(QWidget* w, int row, int col); };
+class QCoreApplication : public QObject {
+public:
+  QCoreApplication(int& argc, char** argv);
+  static int exec();
+  static void quit();
+  static void processEvents();
+  static QCoreApplication* instance();
+};
+class QApplication : public QCoreApplication { public: QApplication(int& argc, char** argv); };
+#endif

@@ -1,0 +1,172 @@
+// haros_arch stand-in: the OpenCV basics ROS image nodes use (declarations only). Every
+// OpenCV header (<opencv2/core/core.hpp>, <opencv2/highgui.hpp>, ...) includes this file.
+#ifndef HAROS_STANDIN_OPENCV_HPP
+#define HAROS_STANDIN_OPENCV_HPP
+#include <string>
+#include <vector>
+#define CV_8U 0
+#define CV_8S 1
+#define CV_16U 2
+#define CV_16S 3
+#define CV_32S 4
+#define CV_32F 5
+#define CV_64F 6
+#define CV_8UC1 0
+#define CV_8UC3 16
+#define CV_8UC4 24
+#define CV_16UC1 2
+#define CV_32FC1 5
+#define CV_32FC3 21
+#define CV_64FC1 6
+#define CV_PI 3.1415926535897932384626433832795
+#define CV_AA 16
+#define CV_RGB(r, g, b) cv::Scalar((b), (g), (r))
+#define CV_BGR2GRAY 6
+#define CV_RGB2GRAY 7
+#define CV_GRAY2BGR 8
+#define CV_BGR2RGB 4
+#define CV_WINDOW_AUTOSIZE 1
+namespace cv {
+typedef unsigned char uchar;
+template<class T> class Point_ {
+public:
+  Point_(); Point_(T x, T y);
+  T x, y;
+};
+typedef Point_<int> Point;
+typedef Point_<int> Point2i;
+typedef Point_<float> Point2f;
+typedef Point_<double> Point2d;
+template<class T> class Point3_ { public: Point3_(); Point3_(T x, T y, T z); T x, y, z; };
+typedef Point3_<float> Point3f;
+typedef Point3_<double> Point3d;
+template<class T> class Size_ { public: Size_(); Size_(T w, T h); T width, height; T area() const; };
+typedef Size_<int> Size;
+typedef Size_<float> Size2f;
+template<class T> class Rect_ {
+public:
+  Rect_(); Rect_(T x, T y, T w, T h);
+  T x, y, width, height;
+  T area() const;
+};
+typedef Rect_<int> Rect;
+class Scalar { public: Scalar(); Scalar(double v0, double v1 = 0, double v2 = 0, double v3 = 0); double operator[](int i) const; };
+template<class T, int n> class Vec { public: Vec(); T& operator[](int i); const T& operator[](int i) const; };
+typedef Vec<uchar, 3> Vec3b;
+typedef Vec<float, 3> Vec3f;
+typedef Vec<double, 3> Vec3d;
+class Range { public: Range(); Range(int start, int end); static Range all(); };
+class Mat {
+public:
+  Mat();
+  Mat(int rows, int cols, int type);
+  Mat(int rows, int cols, int type, const Scalar& value);
+  Mat(int rows, int cols, int type, void* data, size_t step = 0);
+  Mat(Size size, int type);
+  Mat(Size size, int type, const Scalar& value);
+  Mat(const Mat& m, const Rect& roi);
+  Mat(const Mat& m);
+  Mat& operator=(const Mat& m);
+  Mat& operator=(const Scalar& s);
+  Mat operator()(const Rect& roi) const;
+  Mat clone() const;
+  void copyTo(Mat& m) const;
+  void copyTo(Mat& m, const Mat& mask) const;
+  void convertTo(Mat& m, int rtype, double alpha = 1, double beta = 0) const;
+  Mat reshape(int cn, int rows = 0) const;
+  Mat row(int y) const;
+  Mat col(int x) const;
+  Mat t() const;
+  Mat inv() const;
+  double dot(const Mat& m) const;
+  void create(int rows, int cols, int type);
+  void release();
+  bool empty() const;
+  bool isContinuous() const;
+  size_t total() const;
+  int type() const;
+  int depth() const;
+  int channels() const;
+  size_t elemSize() const;
+  Size size() const;
+  template<class T> T& at(int row, int col);
+  template<class T> const T& at(int row, int col) const;
+  template<class T> T& at(int i);
+  template<class T> T& at(Point pt);
+  template<class T> T* ptr(int row = 0);
+  uchar* ptr(int row = 0);
+  static Mat zeros(int rows, int cols, int type);
+  static Mat zeros(Size size, int type);
+  static Mat ones(int rows, int cols, int type);
+  static Mat eye(int rows, int cols, int type);
+  int rows, cols, dims, flags;
+  uchar* data;
+  size_t step;
+};
+typedef Mat InputArray;
+typedef Mat OutputArray;
+typedef Mat InputOutputArray;
+template<class T> class Mat_ : public Mat { public: Mat_(); Mat_(int rows, int cols); T& operator()(int r, int c); };
+typedef Mat_<double> Mat1d;
+Mat operator+(const Mat& a, const Mat& b);
+Mat operator-(const Mat& a, const Mat& b);
+Mat operator*(const Mat& a, const Mat& b);
+Mat operator*(const Mat& a, double s);
+enum { COLOR_BGR2GRAY = 6, COLOR_RGB2GRAY = 7, COLOR_GRAY2BGR = 8, COLOR_BGR2RGB = 4,
+       COLOR_RGB2BGR = 4, COLOR_BGR2HSV = 40, COLOR_HSV2BGR = 54, COLOR_BGRA2BGR = 1 };
+enum { INTER_NEAREST = 0, INTER_LINEAR = 1, INTER_CUBIC = 2, INTER_AREA = 3 };
+enum { THRESH_BINARY = 0, THRESH_BINARY_INV = 1, THRESH_OTSU = 8 };
+enum { WINDOW_NORMAL = 0, WINDOW_AUTOSIZE = 1 };
+enum { LINE_8 = 8, LINE_AA = 16, FILLED = -1 };
+enum { FONT_HERSHEY_SIMPLEX = 0, FONT_HERSHEY_PLAIN = 1 };
+enum { RETR_EXTERNAL = 0, RETR_LIST = 1, RETR_TREE = 3, CHAIN_APPROX_SIMPLE = 2 };
+enum { CAP_PROP_FRAME_WIDTH = 3, CAP_PROP_FRAME_HEIGHT = 4, CAP_PROP_FPS = 5 };
+enum { IMREAD_COLOR = 1, IMREAD_GRAYSCALE = 0, IMREAD_UNCHANGED = -1 };
+void cvtColor(const Mat& src, Mat& dst, int code, int dst_cn = 0);
+void resize(const Mat& src, Mat& dst, Size size, double fx = 0, double fy = 0, int interpolation = 1);
+void GaussianBlur(const Mat& src, Mat& dst, Size ksize, double sx, double sy = 0, int border = 4);
+void blur(const Mat& src, Mat& dst, Size ksize);
+void medianBlur(const Mat& src, Mat& dst, int ksize);
+double threshold(const Mat& src, Mat& dst, double thresh, double maxval, int type);
+void Canny(const Mat& src, Mat& edges, double t1, double t2, int aperture = 3, bool l2 = false);
+void flip(const Mat& src, Mat& dst, int code);
+void split(const Mat& src, std::vector<Mat>& channels);
+void merge(const std::vector<Mat>& channels, Mat& dst);
+void inRange(const Mat& src, const Scalar& lower, const Scalar& upper, Mat& dst);
+void findContours(Mat& image, std::vector<std::vector<Point> >& contours, int mode, int method);
+void drawContours(Mat& image, const std::vector<std::vector<Point> >& contours, int index, const Scalar& color, int thickness = 1);
+void circle(Mat& img, Point center, int radius, const Scalar& color, int thickness = 1, int line = 8, int shift = 0);
+void line(Mat& img, Point a, Point b, const Scalar& color, int thickness = 1, int line = 8, int shift = 0);
+void rectangle(Mat& img, Point a, Point b, const Scalar& color, int thickness = 1, int line = 8, int shift = 0);
+void rectangle(Mat& img, Rect rect, const Scalar& color, int thickness = 1, int line = 8, int shift = 0);
+void putText(Mat& img, const std::string& text, Point org, int font, double scale, Scalar color, int thickness = 1, int line = 8, bool bottom_left = false);
+void normalize(const Mat& src, Mat& dst, double alpha = 1, double beta = 0, int norm = 4, int dtype = -1);
+void minMaxLoc(const Mat& src, double* min, double* max = 0, Point* min_loc = 0, Point* max_loc = 0);
+void undistort(const Mat& src, Mat& dst, const Mat& camera, const Mat& distortion);
+Mat imread(const std::string& path, int flags = 1);
+bool imwrite(const std::string& path, const Mat& img);
+void imshow(const std::string& window, const Mat& img);
+void namedWindow(const std::string& window, int flags = 1);
+void destroyWindow(const std::string& window);
+void destroyAllWindows();
+int waitKey(int delay = 0);
+void startWindowThread();
+class VideoCapture {
+public:
+  VideoCapture();
+  explicit VideoCapture(int device);
+  explicit VideoCapture(const std::string& path);
+  bool open(int device);
+  bool open(const std::string& path);
+  bool isOpened() const;
+  bool read(Mat& image);
+  bool grab();
+  bool retrieve(Mat& image, int channel = 0);
+  VideoCapture& operator>>(Mat& image);
+  bool set(int prop, double value);
+  double get(int prop) const;
+  void release();
+};
+class VideoWriter { public: VideoWriter(); bool isOpened() const; void write(const Mat& image); };
+}  // namespace cv
+#endif

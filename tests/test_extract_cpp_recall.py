@@ -1,0 +1,108 @@
+"""Recall on code shaped like real nodes: classes that use Qt, OpenCV / cv_bridge and
+Eigen still parse and keep their ROS calls; subscribe / advertise with SubscribeOptions /
+AdvertiseOptions; names, queues and handles passed from call sites in the same file."""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+import pytest
+
+from haros_arch.extract.cpp import CppResult, extract_cpp
+from haros_arch.workspace import Workspace, scan
+
+FIXTURE = Path(__file__).resolve().parent.parent / "fixtures" / "cpp" / "libraries"
+SRC = FIXTURE / "src" / "vision" / "src"
+
+
+def rows(result: CppResult) -> list[tuple[object, ...]]:
+    return [(c.kind, c.name, c.type, c.queue_size, c.callback, c.location.line,
+             tuple(x.text for x in c.conditions)) for c in result.calls]
+
+
+@pytest.fixture(scope="module")
+def ws() -> Workspace:
+    return scan([str(FIXTURE)])
+
+
+@pytest.fixture(scope="module")
+def results(ws: Workspace) -> dict[str, CppResult]:
+    files = ["blob_tracker.cpp", "teleop_panel.cpp", "options.cpp", "helpers.cpp"]
+    return {name: extract_cpp([str(SRC / name)], ws, cache_dir=None) for name in files}
+
+
+def test_opencv_cv_bridge_and_eigen_classes_keep_their_calls(
+        results: dict[str, CppResult]) -> None:
+    result = results["blob_tracker.cpp"]
+    assert result.rosname == "blob_tracker"
+    assert rows(result) == [
+        ("subscribe", "camera/image_raw", "sensor_msgs/Image", 1, "BlobTracker::onImage", 14,
+         ()),
+        ("publish", "tracker/debug", "sensor_msgs/Image", 1, None, 15, ()),
+        ("publish", "tracker/target", "geometry_msgs/PointStamped", 5, None, 16, ()),
+    ]
+    assert result.diagnostics == []  # every OpenCV / Eigen / cv_bridge use resolved
+
+
+def test_qt_widget_keeps_its_calls(results: dict[str, CppResult]) -> None:
+    result = results["teleop_panel.cpp"]
+    assert result.rosname == "teleop_panel"
+    assert rows(result) == [
+        ("read", "~max_speed", "double", None, None, 19, ()),
+        ("publish", "cmd_vel", "geometry_msgs/Twist", 1, None, 20, ()),
+        ("subscribe", "teleop/enable", "std_msgs/Bool", 1, "TeleopPanel::onEnable", 21, ()),
+    ]
+    assert result.diagnostics == []
+
+
+def test_subscribe_and_advertise_options(results: dict[str, CppResult]) -> None:
+    """The call is where nh.subscribe(ops) is (its handle, line and conditions); topic,
+    queue, type and callback come from ops.init<M>(...) or Options::create<M>(...)."""
+    assert rows(results["options.cpp"]) == [
+        ("subscribe", "~count", "std_msgs/Int32", 3, "onCount", 14, ()),
+        ("subscribe", "robot/chatter", "std_msgs/String", 7, "onChat", 28, ()),
+        ("publish", "robot/echo", "std_msgs/String", 2, None, 32, ("argc > 1",)),
+    ]
+    assert results["options.cpp"].diagnostics == []
+
+
+def test_values_from_call_sites_in_the_same_file(results: dict[str, CppResult]) -> None:
+    """One call site, or all agreeing: the value (the handle's namespace too); call sites
+    that disagree: '?', never a guess."""
+    assert rows(results["helpers.cpp"]) == [
+        ("publish", "ranger/?/range", "std_msgs/Float64", 8, None, 9, ()),
+        ("subscribe", "~scan", "sensor_msgs/LaserScan", 1, "onScan", 15, ()),
+        ("publish", "ranger/?", "std_msgs/Float64", 1, None, 19, ()),
+    ]
+
+
+def test_a_helper_that_calls_itself_stays_unknown(tmp_path: Path) -> None:
+    package = tmp_path / "src" / "loop"
+    (package / "src").mkdir(parents=True)
+    (package / "package.xml").write_text(
+        '<package format="2"><name>loop</name><version>1.0.0</version>'
+        '<description>d</description><maintainer email="a@b.c">a</maintainer>'
+        '<license>BSD</license></package>\n')
+    source = package / "src" / "loop.cpp"
+    source.write_text(
+        "#include <ros/ros.h>\n#include <std_msgs/Empty.h>\n"
+        "void chain(ros::NodeHandle& nh, const std::string& t, int n) {\n"
+        "  if (n > 0) { chain(nh, t + \"/x\", n - 1); return; }\n"
+        "  static ros::Publisher p = nh.advertise<std_msgs::Empty>(t, 1);\n}\n"
+        "int main(int argc, char** argv) {\n  ros::init(argc, argv, \"loop\");\n"
+        "  ros::NodeHandle nh;\n  chain(nh, \"base\", 3);\n}\n")
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "?/?")]  # it ends
+
+
+def test_library_headers_come_from_the_stand_ins_only(ws: Workspace, tmp_path: Path) -> None:
+    """A Qt / OpenCV header the machine has is not read: results do not depend on it."""
+    fake = tmp_path / "include"
+    (fake / "opencv2").mkdir(parents=True)
+    (fake / "opencv2" / "opencv.hpp").write_text('#error "system OpenCV must not be read"\n')
+    (fake / "QTimer").write_text('#error "system Qt must not be read"\n')
+    result = extract_cpp([str(SRC / "teleop_panel.cpp")], ws, cache_dir=None,
+                         include_dirs=[str(fake)])
+    assert [c.name for c in result.calls] == ["~max_speed", "cmd_vel", "teleop/enable"]
+    assert os.path.isfile(fake / "QTimer")
