@@ -34,9 +34,11 @@ def test_the_python_node_joins_the_graph(model):
     robot = model.configurations[0]
     battery = robot.node("/robot1/battery")
     assert battery is not None and battery.node.language == "python"
-    assert sorted((link.kind, link.name) for link in battery.links) == [
-        ("client", "/robot1/driver/reset"), ("publish", "/robot1/battery/low"),
-        ("read", "/robot1/battery/threshold"), ("subscribe", "/robot1/battery/level")]
+    assert sorted((link.kind, link.name) for link in battery.links
+                  if link.origin != "action") == [
+        ("action-client", "/robot1/dock"), ("client", "/robot1/driver/reset"),
+        ("publish", "/robot1/battery/low"), ("read", "/robot1/battery/threshold"),
+        ("subscribe", "/robot1/battery/level")]
     low = robot.topic("/robot1/battery/low")
     assert low.publishers[0].latch is True
     assert robot.parameter("/robot1/battery/threshold").value == 0.25
@@ -60,3 +62,13 @@ def test_private_handles_and_conditional_client(model):
     client = next(link for link in reset.clients if link.node.name == "/robot1/controller")
     assert [(c.statement, c.text) for c in client.conditions] == [("if", "use_reset")]
     assert robot.parameter("/robot1/driver/port").value == "/dev/ttyUSB0"
+
+
+def test_the_dock_action_joins_cpp_server_and_python_client(model):
+    robot = model.configurations[0]
+    (dock,) = robot.actions
+    assert (dock.name, dock.types) == ("/robot1/dock", ["demo_robot/Dock"])
+    assert [link.node.name for link in dock.servers] == ["/robot1/driver"]
+    assert [link.node.name for link in dock.clients] == ["/robot1/battery"]
+    goal = robot.topic("/robot1/dock/goal")
+    assert goal.types == ["demo_robot/DockActionGoal"] and not goal.is_disconnected

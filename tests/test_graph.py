@@ -145,3 +145,27 @@ def test_namespace_reads_and_searched_names_follow_the_parameter_server():
     assert names == ["/foo/gains", "/foo/missing", "/foo/r/rate", "/global_example"]
     assert config.parameter("/foo/r/rate").has_default
     assert not config.parameter("/foo/missing").has_default
+
+
+def test_actions_are_also_their_topics_and_services():
+    server = node("p", "server", call("action-server", "fib", "tut/Fibonacci"))
+    client = node("p", "client", call("action-client", "/fib", "tut/Fibonacci"))
+    ros2 = node("p", "ros2", call("action-server", "nav", "nav2_msgs/action/NavigateToPose"))
+    decl2 = NodeDecl("/bt", "p", "ros2")
+    decl2.ros_version = 2
+    config = graph([NodeDecl("/s", "p", "server"), NodeDecl("/c", "p", "client"), decl2],
+                   nodes=[server, client, ros2])
+    goal = config.topic("/fib/goal")
+    assert goal.types == ["tut/FibonacciActionGoal"]
+    assert [link.node.name for link in goal.publishers] == ["/c"]
+    assert [link.node.name for link in goal.subscribers] == ["/s"]
+    assert all(link.origin == "action" for link in goal.links)
+    feedback = config.topic("/fib/feedback")
+    assert [link.node.name for link in feedback.publishers] == ["/s"]
+    assert not any(t.is_disconnected for t in config.topics if t.name.startswith("/fib/"))
+    (action,) = [a for a in config.actions if a.name == "/fib"]
+    assert action.servers and action.clients
+    send_goal = config.service("/nav/_action/send_goal")
+    assert send_goal.types == ["nav2_msgs/action/NavigateToPose_SendGoal"]
+    assert [link.node.name for link in send_goal.servers] == ["/bt"]
+    assert config.topic("/nav/_action/status").types == ["action_msgs/msg/GoalStatusArray"]

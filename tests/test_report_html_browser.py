@@ -89,8 +89,20 @@ def page(browser: Any, example: dict[str, Any]) -> Iterator[Watched]:
 
 
 def entity_ids(config: dict[str, Any]) -> set[str]:
+    """What the graph draws by default: all but the topics and services inside actions."""
+    wire = {link["resource"] for link in config["links"] if link["origin"] == "action"}
+    wire -= {link["resource"] for link in config["links"] if link["origin"] != "action"}
     return {item["id"] for key in ("nodes", "topics", "services", "actions", "parameters")
-            for item in config[key]}
+            for item in config[key]} - wire
+
+
+def test_actions_fold_their_topics_until_asked(page: Watched, example) -> None:
+    drawn = page.ids("#graph .vertex")
+    assert "action:/robot1/dock" in drawn
+    assert "topic:/robot1/dock/goal" not in drawn
+    page.page.check('input[data-filter="hideActionWire"]')
+    drawn = page.ids("#graph .vertex")
+    assert {"topic:/robot1/dock/goal", "topic:/robot1/dock/feedback"} <= drawn
 
 
 def test_every_entity_of_the_first_configuration_is_drawn(page: Watched, example) -> None:

@@ -23,6 +23,7 @@ from ..model.runtime import (
 from ..model.source import Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK
 from ..workspace import Workspace
+from .actions import action_links
 
 RESOURCE_OF_KIND: dict[str, type[Resource]] = {
     "publish": Topic, "subscribe": Topic, "server": Service, "client": Service,
@@ -112,6 +113,11 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
         remaps = resolve_remaps(instance.remaps, instance.namespace, instance.name)
         for call in instance.node.calls:
             link(instance, call, remaps, resources, config)
+    for action, call in action_links(config):
+        suffix = call.name[len(action.rosname.full):]
+        name = RosName(action.rosname.given.rstrip("/") + suffix, call.name,
+                       namespace_of(call.name))
+        link(action.node, call, {}, resources, config, name)
     _namespace_values(config)
     return config
 
@@ -176,12 +182,15 @@ def nodelet_plugin(decl: NodeDecl) -> str | None:
 
 
 def link(instance: NodeInstance, call: PrimitiveCall, remaps: Mapping[str, str],
-         resources: Resources, config: Configuration) -> Link:
-    """Instantiate one primitive call for a node instance: resolve, remap, connect."""
-    given = _given_name(call, instance, resources)
-    rosname = RosName.make(given, instance.namespace, instance.name, remaps)
-    if call.searched:
-        rosname = _search(rosname, instance, resources)
+         resources: Resources, config: Configuration, rosname: RosName | None = None
+         ) -> Link:
+    """Instantiate one primitive call for a node instance: resolve, remap, connect.
+    ``rosname`` gives the resolved name when the caller already knows it."""
+    if rosname is None:
+        given = _given_name(call, instance, resources)
+        rosname = RosName.make(given, instance.namespace, instance.name, remaps)
+        if call.searched:
+            rosname = _search(rosname, instance, resources)
     resource = resources.get(RESOURCE_OF_KIND[call.kind], rosname.full)
     made = LINK_CLASSES[call.kind](
         node=instance, resource=resource, rosname=rosname, type=call.type,

@@ -49,16 +49,23 @@ def print_summary(model: Model, console: Console) -> None:
             console.print(f"  node  {escape(instance.name)}  [dim]{escape(runs)}[/dim]"
                           f"{conditional}",
                           highlight=False)
+        folded = 0
         for label, resources in (("topic", config.topics), ("service", config.services),
                                  ("action", config.actions),
                                  ("param", config.parameters)):
             for resource in resources:
+                if resource.links and all(link.origin == "action" for link in resource.links):
+                    folded += 1  # the topics and services an action is made of
+                    continue
                 types = ", ".join(resource.types) or "?"
                 console.print(f"  {label:<7} {escape(resource.name)}  "
                               f"[dim]{escape(types)}[/dim]",
                               highlight=False)
                 for line in _uses(resource):
                     console.print(f"            {escape(line)}", highlight=False)
+        if folded:
+            console.print(f"  [dim](and {folded} topics and services inside its actions)[/dim]",
+                          highlight=False)
 
 
 def _uses(resource: Resource) -> list[str]:

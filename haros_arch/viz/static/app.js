@@ -10,8 +10,8 @@ const app = {
   sources: DATA.sources || {},
   findings: DATA.findings || [],
   index: null, view: null, drawn: null, sim: null, selected: null,
-  options: {hideParameters: false, hideServices: false, hideInfra: true, hideSingleEnded: false,
-            hideDisconnected: false, collapsed: new Set()},
+  options: {hideParameters: false, hideServices: false, hideInfra: true, hideActionWire: true,
+            hideSingleEnded: false, hideDisconnected: false, collapsed: new Set()},
   layout: 'layered',
 };
 
@@ -35,6 +35,7 @@ function skeleton() {
 
   ui.filters = el('section', {id: 'filters'}, el('h3', {}, 'Show'),
     [['hideParameters', 'parameters'], ['hideServices', 'services and actions'], ['hideInfra', 'rosout and tf'],
+     ['hideActionWire', 'the topics and services inside actions'],
      ['hideSingleEnded', 'topics missing a publisher or subscriber'], ['hideDisconnected', 'unconnected elements']]
       .map(([key, label]) => {
         const box = el('input', {type: 'checkbox', 'data-filter': key});

@@ -82,6 +82,8 @@ function buildView(index, options) {
     (options.hideParameters && e.kind === 'parameter') ||
     (options.hideServices && (e.kind === 'service' || e.kind === 'action')) ||
     (options.hideInfra && e.kind !== 'node' && INFRA.test(e.name)) ||
+    (options.hideActionWire && e.kind !== 'node' && e.kind !== 'action' && e.links.length > 0 &&
+      e.links.every(entry => entry.link.origin === 'action')) ||
     (options.hideSingleEnded && e.kind === 'topic' &&
       (!(e.item.publishers || []).length || !(e.item.subscribers || []).length)));
   const vertices = new Map(), edges = new Map();

@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """Battery monitor: warns the driver when the battery runs low."""
 
+import actionlib
 import rospy
+from demo_robot.msg import DockAction, DockGoal
 from std_msgs.msg import Float32
 from std_srvs.srv import Empty
 
@@ -14,10 +16,12 @@ class BatteryMonitor:
         self.low_pub = rospy.Publisher(LOW_TOPIC, Float32, queue_size=1, latch=True)
         self.level_sub = rospy.Subscriber("battery/level", Float32, self.on_level)
         self.reset = rospy.ServiceProxy("driver/reset", Empty)
+        self.dock = actionlib.SimpleActionClient("dock", DockAction)
 
     def on_level(self, msg):
         if msg.data < self.threshold:
             self.low_pub.publish(msg)
+            self.dock.send_goal(DockGoal(station="home"))
 
 
 if __name__ == "__main__":

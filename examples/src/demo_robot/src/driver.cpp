@@ -6,11 +6,13 @@
 #include <nav_msgs/Odometry.h>
 #include <std_srvs/Empty.h>
 #include <demo_robot/Status.h>
+#include <demo_robot/DockAction.h>
+#include <actionlib/server/simple_action_server.h>
 
 class Driver
 {
 public:
-  Driver() : private_nh_("~")
+  Driver() : private_nh_("~"), dock_server_(nh_, "dock", false)
   {
     private_nh_.param<std::string>("port", port_, "/dev/ttyACM0");
     nh_.getParam("wheel_radius", wheel_radius_);
@@ -19,6 +21,7 @@ public:
     // BUG for the demo: the controller publishes geometry_msgs/Twist on cmd_vel
     cmd_sub_ = nh_.subscribe("cmd_vel", 1, &Driver::onCommand, this);
     reset_srv_ = private_nh_.advertiseService("reset", &Driver::onReset, this);
+    dock_server_.start();
   }
 
 private:
@@ -43,6 +46,7 @@ private:
   ros::Publisher status_pub_;
   ros::Subscriber cmd_sub_;
   ros::ServiceServer reset_srv_;
+  actionlib::SimpleActionServer<demo_robot::DockAction> dock_server_;
   std::string port_;
   double wheel_radius_ = 0.1;
 };
