@@ -106,3 +106,29 @@ def test_library_headers_come_from_the_stand_ins_only(ws: Workspace, tmp_path: P
                          include_dirs=[str(fake)])
     assert [c.name for c in result.calls] == ["~max_speed", "cmd_vel", "teleop/enable"]
     assert os.path.isfile(fake / "QTimer")
+
+
+def test_variant_random_and_pthread_in_a_node_class(tmp_path: Path) -> None:
+    package = tmp_path / "src" / "noise"
+    (package / "src").mkdir(parents=True)
+    (package / "package.xml").write_text(
+        '<package format="3"><name>noise</name><version>1.0.0</version>'
+        '<description>d</description><maintainer email="a@b.c">a</maintainer>'
+        '<license>BSD</license></package>\n')
+    source = package / "src" / "noise.cpp"
+    source.write_text(
+        "#include <pthread.h>\n#include <random>\n#include <variant>\n"
+        "#include \"rclcpp/rclcpp.hpp\"\n#include \"std_msgs/msg/float64.hpp\"\n"
+        "class Noise : public rclcpp::Node {\n public:\n"
+        "  Noise() : Node(\"noise\"), gen_(rd_()), dist_(0.0, 1.0) {\n"
+        "    pub_ = create_publisher<std_msgs::msg::Float64>(\"noise\", 10);\n"
+        "    value_ = 1.0;\n    if (std::holds_alternative<double>(value_)) {}\n  }\n"
+        " private:\n  std::random_device rd_;\n  std::mt19937 gen_;\n"
+        "  std::uniform_real_distribution<double> dist_;\n"
+        "  std::variant<int, double> value_;\n  pthread_t thread_;\n"
+        "  rclcpp::Publisher<std_msgs::msg::Float64>::SharedPtr pub_;\n};\n")
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    assert [(c.kind, c.name, c.type) for c in result.calls] == [
+        ("publish", "noise", "std_msgs/msg/Float64")]
+    assert result.rosname == "noise"
+    assert [d.code for d in result.diagnostics] == []

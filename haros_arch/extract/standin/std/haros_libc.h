@@ -205,4 +205,11 @@ int ioctl(int fd, unsigned long request, ...);
 typedef void (*sighandler_t)(int);
 sighandler_t signal(int signum, sighandler_t handler);
 }
+typedef unsigned long pthread_t;
+typedef struct { char haros_opaque[56]; } pthread_attr_t;
+typedef struct { char haros_opaque[40]; } pthread_mutex_t;
+int pthread_create(pthread_t* thread, const pthread_attr_t* attr, void* (*start)(void*), void* arg);
+int pthread_join(pthread_t thread, void** result);
+int pthread_attr_init(pthread_attr_t* attr);
+pthread_t pthread_self(void);
 #endif

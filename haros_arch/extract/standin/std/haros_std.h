@@ -965,6 +965,39 @@ public:
 enum class launch { async = 1, deferred = 2 };
 template<class F, class... A> future<int> async(launch policy, F&& f, A&&... args);
 template<class F, class... A> future<int> async(F&& f, A&&... args);
+// <variant>, <random>
+template<class... T> class variant {
+public:
+  variant();
+  template<class U> variant(U&& value);
+  template<class U> variant& operator=(U&& value);
+  size_t index() const noexcept;
+};
+template<class T, class... V> bool holds_alternative(const variant<V...>& v) noexcept;
+template<class T, class... V> T& get(variant<V...>& v);
+template<class T, class... V> const T& get(const variant<V...>& v);
+template<class T, class... V> T* get_if(variant<V...>* v) noexcept;
+template<class F, class... V> auto visit(F&& f, V&&... v) -> decltype(f(0));
+struct monostate {};
+class random_device { public: random_device(); unsigned int operator()(); };
+template<class U> class haros_engine {
+public:
+  haros_engine();
+  explicit haros_engine(U seed);
+  void seed(U value);
+  U operator()();
+};
+typedef haros_engine<unsigned int> mt19937;
+typedef haros_engine<unsigned long long> mt19937_64;
+typedef haros_engine<unsigned int> default_random_engine;
+typedef haros_engine<unsigned int> minstd_rand;
+template<class T = double> class uniform_real_distribution {
+public: uniform_real_distribution(T a = 0, T b = 1); template<class G> T operator()(G& g); };
+template<class T = int> class uniform_int_distribution {
+public: uniform_int_distribution(T a = 0, T b = 2147483647); template<class G> T operator()(G& g); };
+template<class T = double> class normal_distribution {
+public: normal_distribution(T mean = 0, T stddev = 1); template<class G> T operator()(G& g); };
+class bernoulli_distribution { public: bernoulli_distribution(double p = 0.5); template<class G> bool operator()(G& g); };
 }  // namespace std
 namespace __gnu_cxx {}
 #endif
