@@ -240,7 +240,10 @@ class Runner:
         """The parsed document of a parameter file, rewritten as asked; None if unknown."""
         if len(entry.path) == 1 and isinstance(entry.path[0], e.FileRef) and depth < 8:
             document = self.param_file(entry.path[0].file, scope, where, depth + 1)
-            return None if document is None else self.rewrite(document, entry, scope, where)
+            if document is None:
+                return None
+            return self.substituted(self.rewrite(document, entry, scope, where), entry,
+                                    scope, where)
         path = self.value(entry.path, scope, where)
         if path is None or path.literal is None:
             self.report("LAUNCH_PARAM_FILE", where,
@@ -254,8 +257,9 @@ class Runner:
                 self.report("LAUNCH_PARAM_FILE", where, detail=f"cannot read {file}")
             return None
         text = self.replace(text, entry, scope, where)
-        if text is not None and entry.allow_substs:
-            text = self.substitute(text, scope, where)
+        rewritten = bool(entry.rewrites) or entry.root_key is not None
+        if text is not None and entry.allow_substs and not rewritten:
+            text = self.substitute(text, scope, where)  # the file as written, comments too
         if text is None:
             return None
         try:
@@ -269,7 +273,27 @@ class Runner:
         rel = self.workspace.relpath(file)
         if rel not in self.model.files:
             self.model.files.append(rel)
-        return self.rewrite(document, entry, scope, where)
+        if not rewritten:
+            return document
+        return self.substituted(self.rewrite(document, entry, scope, where), entry, scope,
+                                where)
+
+    def substituted(self, document: Any, entry: e.ParamFile, scope: Scope,
+                    where: Location) -> Any:
+        """``allow_substs`` on a rewritten file: launch_ros substitutes in the YAML that
+        the rewrite dumped (without the source's comments), then reads it again."""
+        if not entry.allow_substs:
+            return document
+        text = self.substitute(yaml.safe_dump(document, default_flow_style=False), scope,
+                               where)
+        if text is None:
+            return None
+        try:
+            return yaml.safe_load(text)
+        except yaml.YAMLError:
+            self.report("LAUNCH_PARAM_FILE", where, detail="a parameter file is not valid "
+                        "YAML after its substitutions")
+            return None
 
     def substitute(self, text: str, scope: Scope, where: Location) -> str | None:
         """``allow_substs``: the file's ``$(...)`` performed before it is read as YAML."""
