@@ -17,7 +17,7 @@ def model():
 
 
 def test_both_configurations_and_the_monitor_switch(model):
-    robot, without = model.configurations
+    robot, without, _rover = model.configurations
     assert [n.name for n in robot.nodes] == ["/robot1/driver", "/robot1/battery",
                                              "/robot1/controller", "/monitor"]
     assert [n.name for n in without.nodes] == ["/robot2/driver", "/robot2/battery",
@@ -27,7 +27,8 @@ def test_both_configurations_and_the_monitor_switch(model):
 def test_foreach_in_cmake_and_the_python_script_give_all_nodes(model):
     assert sorted(n.name for n in model.nodes) == [
         "demo_robot/battery_monitor.py", "demo_robot/controller", "demo_robot/driver",
-        "demo_robot/monitor"]
+        "demo_robot/monitor", "demo_rover/demo_rover::LidarFilter",
+        "demo_rover/lidar_filter_node", "demo_rover/safety_stop.py"]
 
 
 def test_the_python_node_joins_the_graph(model):
@@ -72,3 +73,22 @@ def test_the_dock_action_joins_cpp_server_and_python_client(model):
     assert [link.node.name for link in dock.clients] == ["/robot1/battery"]
     goal = robot.topic("/robot1/dock/goal")
     assert goal.types == ["demo_robot/DockActionGoal"] and not goal.is_disconnected
+
+
+def test_the_ros2_rover_component_and_python_node(model):
+    rover = model.configuration("rover")
+    assert sorted(n.name for n in rover.nodes) == [
+        "/rover/lidar_filter", "/rover/rover_container", "/rover/safety_stop"]
+    lidar = rover.node("/rover/lidar_filter")
+    assert lidar.ros_version == 2 and lidar.node.kind == "component"
+    scan = rover.topic("/rover/scan_filtered")
+    assert scan.types == ["sensor_msgs/msg/LaserScan"]
+    (publisher,) = scan.publishers
+    (subscriber,) = scan.subscribers
+    assert publisher.qos["reliability"] == "best_effort"
+    assert subscriber.qos["reliability"] == "reliable"
+    # the parameter file's value for lidar_filter, the dict's for safety_stop
+    assert rover.parameter("/rover/lidar_filter/min_range").value == 0.25
+    assert rover.parameter("/rover/safety_stop/stop_distance").value == 0.5
+    assert rover.topic("/rover/lidar/scan") is not None  # the launch file's remap
+    assert rover.diagnostics == []

@@ -8,7 +8,7 @@ from typing import Any
 
 from .. import diagnostics as diag
 from ..launch.model import LaunchModel, NodeDecl
-from ..model.rosname import RosName, namespace_of, resolve_remaps
+from ..model.rosname import RosName, namespace_of, remap, resolve, resolve_remaps
 from ..model.runtime import (
     LINK_CLASSES,
     Action,
@@ -157,8 +157,8 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
     if plugin is not None:
         key = f"{plugin.partition('/')[0]}/{plugin}"
     node = nodes.get(key)
-    if node is None and plugin is None and decl.package == "nodelet":
-        pass  # a nodelet manager: its interface is what the nodelets loaded into it do
+    if node is None and plugin is None and is_container(decl):
+        pass  # a nodelet manager or component container: its interface is its plugins'
     elif node is None and workspace.find(key.partition("/")[0]) is None:
         config.diagnostics.append(diag.make("NODE_PACKAGE_UNKNOWN", decl.location,
                                             name=key.partition("/")[0], node=plugin or key))
@@ -169,6 +169,12 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
     return NodeInstance(decl.name, node, namespace=decl.namespace, remaps=remaps,
                         args=decl.args, conditions=decl.conditions, location=decl.location,
                         ros_version=getattr(decl, "ros_version", 1))
+
+
+def is_container(decl: NodeDecl) -> bool:
+    """A nodelet manager or an rclcpp component container (their plugins do the work)."""
+    return decl.package == "nodelet" or (
+        decl.package == "rclcpp_components" and decl.executable.startswith("component_container"))
 
 
 def nodelet_plugin(decl: NodeDecl) -> str | None:
@@ -188,7 +194,8 @@ def link(instance: NodeInstance, call: PrimitiveCall, remaps: Mapping[str, str],
     ``rosname`` gives the resolved name when the caller already knows it."""
     if rosname is None:
         given = _given_name(call, instance, resources)
-        rosname = RosName.make(given, instance.namespace, instance.name, remaps)
+        rosname = _handle_name(given, call, instance, remaps) or RosName.make(
+            given, instance.namespace, instance.name, remaps)
         if call.searched:
             rosname = _search(rosname, instance, resources)
     resource = resources.get(RESOURCE_OF_KIND[call.kind], rosname.full)
@@ -201,6 +208,26 @@ def link(instance: NodeInstance, call: PrimitiveCall, remaps: Mapping[str, str],
     resource.links.append(made)
     config.links.append(made)
     return made
+
+
+def _handle_name(given: str, call: PrimitiveCall, instance: NodeInstance,
+                 remaps: Mapping[str, str]) -> RosName | None:
+    """A ROS 1 name given on a NodeHandle with a namespace: roscpp resolves (and remaps)
+    the handle's namespace first, then the name within it, then remaps the result
+    (``NodeHandle input("input")`` with ``input:=turtle1`` subscribes ``/turtle1/pose``).
+    None when the call has no such namespace."""
+    namespace = call.handle_namespace
+    if not namespace or instance.ros_version != 1:
+        return None
+    prefix = namespace if namespace == "~" or namespace.endswith("/") else namespace + "/"
+    if not given.startswith(prefix) or len(given) == len(prefix):
+        return None
+    written = given[len(prefix):]
+    if written.startswith(("/", "~")):
+        return None
+    handle = RosName.make(namespace, instance.namespace, instance.name, remaps).full
+    full = remap(resolve(written, handle), remaps)
+    return RosName(given, full, namespace_of(full))
 
 
 def _given_name(call: PrimitiveCall, instance: NodeInstance, resources: Resources) -> str:
