@@ -8,7 +8,7 @@ from typing import Any
 
 from .. import diagnostics as diag
 from ..launch.model import LaunchModel, NodeDecl
-from ..model.rosname import RosName, namespace_of, resolve_remaps
+from ..model.rosname import RosName, namespace_of, remap, resolve, resolve_remaps
 from ..model.runtime import (
     LINK_CLASSES,
     Action,
@@ -194,7 +194,8 @@ def link(instance: NodeInstance, call: PrimitiveCall, remaps: Mapping[str, str],
     ``rosname`` gives the resolved name when the caller already knows it."""
     if rosname is None:
         given = _given_name(call, instance, resources)
-        rosname = RosName.make(given, instance.namespace, instance.name, remaps)
+        rosname = _handle_name(given, call, instance, remaps) or RosName.make(
+            given, instance.namespace, instance.name, remaps)
         if call.searched:
             rosname = _search(rosname, instance, resources)
     resource = resources.get(RESOURCE_OF_KIND[call.kind], rosname.full)
@@ -207,6 +208,26 @@ def link(instance: NodeInstance, call: PrimitiveCall, remaps: Mapping[str, str],
     resource.links.append(made)
     config.links.append(made)
     return made
+
+
+def _handle_name(given: str, call: PrimitiveCall, instance: NodeInstance,
+                 remaps: Mapping[str, str]) -> RosName | None:
+    """A ROS 1 name given on a NodeHandle with a namespace: roscpp resolves (and remaps)
+    the handle's namespace first, then the name within it, then remaps the result
+    (``NodeHandle input("input")`` with ``input:=turtle1`` subscribes ``/turtle1/pose``).
+    None when the call has no such namespace."""
+    namespace = call.handle_namespace
+    if not namespace or instance.ros_version != 1:
+        return None
+    prefix = namespace if namespace == "~" or namespace.endswith("/") else namespace + "/"
+    if not given.startswith(prefix) or len(given) == len(prefix):
+        return None
+    written = given[len(prefix):]
+    if written.startswith(("/", "~")):
+        return None
+    handle = RosName.make(namespace, instance.namespace, instance.name, remaps).full
+    full = remap(resolve(written, handle), remaps)
+    return RosName(given, full, namespace_of(full))
 
 
 def _given_name(call: PrimitiveCall, instance: NodeInstance, resources: Resources) -> str:

@@ -68,7 +68,8 @@ def _node(data: dict[str, Any], package: str) -> Node:
     calls = [PrimitiveCall(c.get("kind", "publish"), str(c.get("name", "")), c.get("type"),
                            c.get("queue_size"), c.get("qos"), bool(c.get("latch", False)),
                            c.get("callback"), conditions(c.get("conditions")),
-                           location(c.get("location")))
+                           location(c.get("location")),
+                           handle_namespace=c.get("handle_namespace"))
              for c in data.get("calls", ())]
     return Node(data.get("package", package), executable, data.get("kind", "executable"),
                 data.get("language", "cpp"), list(data.get("sources", ())), calls,

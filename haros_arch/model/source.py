@@ -67,6 +67,10 @@ class PrimitiveCall:
     default: Any = None
     # searchParam / search_param: the name is looked up in the enclosing namespaces
     searched: bool = False
+    # ROS 1: the namespace of the NodeHandle the call is made on, as written (``input``,
+    # ``~``, ``/robot``), when ``name`` was joined to it; roscpp remaps that namespace
+    # before it resolves the name in it, so the graph resolves it first
+    handle_namespace: str | None = None
 
 
 @dataclass

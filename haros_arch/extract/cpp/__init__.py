@@ -23,7 +23,7 @@ from ...files import MAX_FILE_BYTES, read_text
 from ...model.location import Location
 from ...model.source import PrimitiveCall
 from ...workspace import Workspace
-from . import cache, toolchain
+from . import cache, links, toolchain
 from . import compile_commands as commands
 from .headers import STANDIN, IncludeSetup
 from .visitor import CallFinder
@@ -42,6 +42,9 @@ class CppResult:
     calls: list[PrimitiveCall] = field(default_factory=list)
     rosname: str | None = None
     diagnostics: list[Diagnostic] = field(default_factory=list)
+    # what a translation unit passes to the functions of the node's other files
+    # (``links``); empty in a node's result, whose calls are filled with them
+    facts: list[links.Fact] = field(default_factory=list)
 
 
 @dataclass
@@ -123,11 +126,14 @@ def extract_cpp_nodes(nodes: Sequence[Sequence[str]], workspace: Workspace, *,
 def _node_result(units: list[CppResult]) -> CppResult:
     result = CppResult()
     seen: set[tuple[object, ...]] = set()
+    facts = [fact for unit in units for fact in unit.facts]
     for unit in units:
         result.diagnostics.extend(unit.diagnostics)
         if unit.rosname is not None and result.rosname is None:
             result.rosname = unit.rosname
-        for call in unit.calls:
+        calls, found = links.resolve(unit.calls, facts)
+        result.diagnostics.extend(found)
+        for call in calls:
             key = (call.kind, call.name, call.location)
             if key not in seen:
                 seen.add(key)
@@ -149,10 +155,10 @@ def _units(texts: dict[str, str], ros2: dict[str, bool], setup: IncludeSetup,
             data = store.load(entry)
             if data is not None:
                 try:
-                    calls, rosname, found = cache.from_data(data)
+                    calls, rosname, found, facts = cache.from_data(data)
                 except (ValueError, TypeError, KeyError):
                     continue
-                done[path] = CppResult(calls, rosname, found)
+                done[path] = CppResult(calls, rosname, found, facts)
     todo = [path for path in texts if path not in done]
     tasks = [(path, texts[path], ros2[path]) for path in todo]
     workers = min(len(todo), jobs or os.cpu_count() or 1)
@@ -172,7 +178,7 @@ def _units(texts: dict[str, str], ros2: dict[str, bool], setup: IncludeSetup,
         done[path] = unit
         if store is not None and headers:
             store.store(keys[path], headers, cache.to_data(
-                unit.calls, unit.rosname, unit.diagnostics))
+                unit.calls, unit.rosname, unit.diagnostics, unit.facts))
     return {path: done[path] for path in texts}
 
 
@@ -230,6 +236,7 @@ def _translation_unit(path: str, text: str, ros2: bool,
     result.diagnostics.extend(finder.diagnostics)
     result.diagnostics[:0] = setup.diagnostics[before:]
     result.rosname = finder.rosname
+    result.facts = finder.facts
     headers = [path]
     for include in tu.get_includes():
         name = os.path.abspath(include.include.name)

@@ -135,12 +135,15 @@ class Cache:
 # -- the result as JSON ----------------------------------------------------------------
 
 def to_data(calls: list[PrimitiveCall], rosname: str | None,
-            diagnostics: list[Diagnostic]) -> dict[str, Any]:
+            diagnostics: list[Diagnostic],
+            facts: list[tuple[str, int, str, str]] | None = None) -> dict[str, Any]:
     return {"calls": [dataclasses.asdict(c) for c in calls], "rosname": rosname,
-            "diagnostics": [dataclasses.asdict(d) for d in diagnostics]}
+            "diagnostics": [dataclasses.asdict(d) for d in diagnostics],
+            "facts": [list(f) for f in facts or ()]}
 
 
-def from_data(data: dict[str, Any]) -> tuple[list[PrimitiveCall], str | None, list[Diagnostic]]:
+def from_data(data: dict[str, Any]) -> tuple[list[PrimitiveCall], str | None,
+                                             list[Diagnostic], list[tuple[str, int, str, str]]]:
     """Raises ValueError / TypeError / KeyError for data that is not ours."""
     calls = []
     for item in data["calls"]:
@@ -155,4 +158,10 @@ def from_data(data: dict[str, Any]) -> tuple[list[PrimitiveCall], str | None, li
     rosname = data["rosname"]
     if rosname is not None and not isinstance(rosname, str):
         raise TypeError("rosname")
-    return calls, rosname, diagnostics
+    facts = []
+    for usr, index, value, site in data.get("facts", ()):
+        if not (isinstance(usr, str) and isinstance(index, int) and isinstance(value, str)
+                and isinstance(site, str)):
+            raise TypeError("facts")
+        facts.append((usr, index, value, site))
+    return calls, rosname, diagnostics, facts

@@ -158,7 +158,10 @@ class Namespaces:
             return (api.HANDLE_FACTORIES[factory],)
         if factory in api.RCLCPP_SUB_NODE or target.spelling in ("operator->", "get"):
             return self._sub_node(expr, factory, scope, depth)
-        if target.kind != CursorKind.CONSTRUCTOR or owner not in api.HANDLE_CLASSES:
+        made = qualified_name(record_class(expr))
+        if target.spelling in ("make_shared", "make_unique") and made in api.HANDLE_CLASSES:
+            owner = made  # boost::make_shared<ros::NodeHandle>("ns")
+        elif target.kind != CursorKind.CONSTRUCTOR or owner not in api.HANDLE_CLASSES:
             if target.kind == CursorKind.CONSTRUCTOR and len(inner) == 1:  # a copy
                 return self.of(inner[0], scope, depth + 1)
             return UNKNOWN

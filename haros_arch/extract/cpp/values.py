@@ -18,6 +18,11 @@ from typing import TypeVar
 from clang.cindex import Cursor, CursorKind, TypeKind
 
 Parts = tuple[str | None, ...]
+# A part standing for "the argument the callers in other files pass": PLACEHOLDER, the
+# function's USR, SEPARATOR, the parameter's index, PLACEHOLDER. A ROS 1 node's
+# translation units are joined by ``links.resolve`` once all of them are read.
+PLACEHOLDER = "\x00"
+SEPARATOR = "\x01"
 Value = TypeVar("Value")
 UNKNOWN: Parts = (None,)
 MAX_DEPTH = 24
@@ -196,6 +201,9 @@ class Scope:
         if target is None:  # an implicit conversion wrapping the real expression
             inner = operand(call)
             return self.string(inner, depth + 1) if inner is not None else UNKNOWN
+        if target.spelling == "getName" and not args and target.semantic_parent is not None \
+                and target.semantic_parent.spelling == "this_node":
+            return ("~",)  # ros::this_node::getName(): the node's own (private) name
         if target.kind == CursorKind.CONSTRUCTOR and (
             call.type.get_canonical().get_declaration().spelling in ("basic_string",
                                                                      "string_view")
@@ -262,10 +270,13 @@ class CallSites:
     MAX_SITES = 16
 
     def __init__(self, functions: list[Cursor], macros: dict[str, str],
-                 source: dict[str, bytes]) -> None:
+                 source: dict[str, bytes], external: bool = False) -> None:
         self.functions = functions
         self.macros = macros
         self.source = source
+        # a parameter of a function no call in this file calls: a placeholder part that
+        # the calls in the node's other files fill (ROS 1)
+        self.external = external
         self._index: dict[tuple[str, int], list[tuple[Cursor, Cursor]]] | None = None
         self._scopes: dict[tuple[str, int], Scope] = {}
         self._active: set[tuple[str, int]] = set()  # parameters being read (recursion)
@@ -276,6 +287,10 @@ class CallSites:
         key = _key(parm)
         if key in self._active:
             return unknown
+        if self.external and isinstance(unknown, tuple):
+            marker = self.placeholder(parm)
+            if marker is not None:
+                return (marker,)  # type: ignore[return-value]
         self._active.add(key)
         try:
             values = [read(arg, scope) for arg, scope in self._arguments(parm)]
@@ -284,6 +299,35 @@ class CallSites:
         if not values or any(v != values[0] for v in values):
             return unknown
         return values[0]
+
+    def placeholder(self, parm: Cursor) -> str | None:
+        """The placeholder part of ``parm`` when no call in this file calls its function
+        (other files of the node may), else None."""
+        function = parm.semantic_parent
+        if function is None or function.kind not in _CALLABLE or (
+            self._sites().get(_key(function.canonical))
+        ):
+            return None
+        params = [c for c in function.get_children() if c.kind == CursorKind.PARM_DECL]
+        index = next((i for i, p in enumerate(params) if p.spelling == parm.spelling), None)
+        usr = function.canonical.get_usr()
+        if index is None or not usr or PLACEHOLDER in usr or SEPARATOR in usr:
+            return None
+        return f"{PLACEHOLDER}{usr}{SEPARATOR}{index}{PLACEHOLDER}"
+
+    def external_sites(self) -> Iterator[tuple[Cursor, Cursor, Cursor]]:
+        """(callee, call, caller) for the calls of functions not defined here."""
+        defined = {_key(f.canonical) for f in self.functions}
+        for key, sites in self._sites().items():
+            if key in defined:
+                continue
+            for call, caller in sites:
+                callee = _callee(call)
+                if callee is not None:
+                    yield callee, call, caller
+
+    def scope(self, function: Cursor) -> Scope:
+        return self._scope(function)
 
     def _arguments(self, parm: Cursor) -> list[tuple[Cursor, Scope]]:
         function = parm.semantic_parent
@@ -307,10 +351,9 @@ class CallSites:
             self._index = {}
             for function in self.functions:
                 for node in function.walk_preorder():
-                    if node.kind == CursorKind.CALL_EXPR and node.referenced is not None and (
-                        node.referenced.kind in _CALLABLE
-                    ):
-                        self._index.setdefault(_key(node.referenced.canonical), []).append(
+                    callee = _callee(node) if node.kind == CursorKind.CALL_EXPR else None
+                    if callee is not None:
+                        self._index.setdefault(_key(callee.canonical), []).append(
                             (node, function))
         return self._index
 
@@ -323,6 +366,25 @@ class CallSites:
 
 _CALLABLE = frozenset({CursorKind.FUNCTION_DECL, CursorKind.CXX_METHOD, CursorKind.CONSTRUCTOR,
                        CursorKind.FUNCTION_TEMPLATE})
+_MAKERS = frozenset({"make_shared", "make_unique", "allocate_shared"})
+
+
+def _callee(call: Cursor) -> Cursor | None:
+    """The function a call calls; for ``std::make_shared<T>(args)`` / ``make_unique``
+    (std or boost) the one constructor of ``T`` that takes as many arguments."""
+    target = call.referenced
+    if target is None or target.kind not in _CALLABLE:
+        return None
+    if target.spelling not in _MAKERS or target.kind == CursorKind.CONSTRUCTOR:
+        return target
+    ctype = call.type.get_canonical()
+    if ctype.kind != TypeKind.RECORD or ctype.get_num_template_arguments() < 1:
+        return None
+    decl = ctype.get_template_argument_type(0).get_canonical().get_declaration()
+    count = len(written_arguments(call))
+    found = [c for c in decl.get_children() if c.kind == CursorKind.CONSTRUCTOR
+             and len([p for p in c.get_children() if p.kind == CursorKind.PARM_DECL]) == count]
+    return found[0] if len(found) == 1 else None
 
 
 def initializer(decl: Cursor) -> Cursor | None:

@@ -30,8 +30,9 @@ from .handles import (
     qualified_name,
     record_class,
 )
+from .links import Fact, argument_facts
 from .qos import qos as qos_of
-from .values import CallSites, Scope, render, strip, written_arguments
+from .values import PLACEHOLDER, CallSites, Scope, render, strip, written_arguments
 
 _CONTAINERS = frozenset({
     CursorKind.NAMESPACE, CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL,
@@ -72,12 +73,16 @@ class CallFinder:
         self._scope: Scope | None = None  # of the function being walked
         self.rosname: str | None = None
         self.diagnostics: list[Diagnostic] = []
+        self.facts: list[Fact] = []  # what this file passes to other files' functions
 
     def run(self) -> None:
         self.functions = list(self._definitions(self.tu.cursor, top=True))
-        self.sites = self.namespaces.sites = CallSites(self.functions, self.macros, self.source)
+        self.sites = self.namespaces.sites = CallSites(self.functions, self.macros, self.source,
+                                                       external=not self.ros2)
         for function in self.functions:
             self._function(function)
+        if not self.ros2:
+            self.facts = argument_facts(self.sites, self.namespaces, self.owned)
         for call in self.calls:  # get_parameter("p") of a declare_parameter("p", default)
             if call.name_param is not None and call.name_default is None:
                 call.name_default = self._declared.get(call.name_param)
@@ -266,9 +271,14 @@ class CallFinder:
                 self._declared[declared[0]] = declared[1]
         has_default, default = self._default(spec, args, scope)
         for written, source in names:
-            name = _private(written)
+            # getName() is "~": only as the start of a name is it the node's own name
+            name = _private(written[:1] + written[1:].replace("~", "?"))
+            handle_namespace = None
             if namespace is not None:
                 name = join_name(namespace, name)
+                if namespace and not self.ros2 and not _private(written).startswith(
+                        ("/", "~")):
+                    handle_namespace = namespace
             self.calls.append(PrimitiveCall(
                 kind=spec.kind, name=name, type=ctype, queue_size=queue, qos=qos,
                 latch=latch, callback=callback_name(function), conditions=conditions,
@@ -276,8 +286,8 @@ class CallFinder:
                 name_param=source[0] if source else None,
                 name_default=source[1] if source else None,
                 has_default=has_default, default=default,
-                searched=spec.searched))
-            if "?" in name:
+                searched=spec.searched, handle_namespace=handle_namespace))
+            if "?" in name and PLACEHOLDER not in name:
                 self.diagnostics.append(diag.make(
                     "CPP_DYNAMIC_NAME", location, kind=spec.kind, name=name))
             for kind, sibling, stype in spec.siblings:

@@ -19,6 +19,22 @@
 #define Q_DECLARE_METATYPE(x)
 #define SIGNAL(x) "2" #x
 #define SLOT(x) "1" #x
+typedef double qreal;
+typedef unsigned int QRgb;
+inline QRgb qRgb(int r, int g, int b) { return 0xff000000u | (r << 16) | (g << 8) | b; }
+inline int qRed(QRgb rgb) { return (rgb >> 16) & 0xff; }
+inline int qGreen(QRgb rgb) { return (rgb >> 8) & 0xff; }
+inline int qBlue(QRgb rgb) { return rgb & 0xff; }
+namespace Qt {
+enum WindowType { Widget = 0, Window = 1, Dialog = 3, Tool = 11, FramelessWindowHint = 0x800 };
+typedef int WindowFlags;
+enum GlobalColor { black = 2, white = 3, red = 7, green = 8, blue = 9 };
+enum Key { Key_Escape = 0x01000000, Key_Left = 0x01000012, Key_Up, Key_Right, Key_Down,
+           Key_Space = 0x20 };
+enum FocusPolicy { NoFocus = 0, TabFocus = 1, ClickFocus = 2, StrongFocus = 11 };
+enum AlignmentFlag { AlignLeft = 1, AlignRight = 2, AlignHCenter = 4, AlignCenter = 0x84 };
+}
+class QStringList;
 class QString {
 public:
   QString();
@@ -36,6 +52,11 @@ public:
   QString& operator=(const QString& other);
   QString operator+(const QString& other) const;
   bool operator==(const QString& other) const;
+  QStringList split(const QString& separator) const;
+  QString& replace(const QString& before, const QString& after);
+  bool startsWith(const QString& text) const;
+  bool endsWith(const QString& text) const;
+  bool contains(const QString& text) const;
 };
 template<class T> class QList {
 public:
@@ -46,6 +67,10 @@ public:
   const T& at(int i) const;
   bool isEmpty() const;
   void clear();
+  T& first();
+  T& last();
+  void push_back(const T& value);
+  void resize(int size);
 };
 template<class T> class QVector : public QList<T> {};
 class QStringList : public QList<QString> {};
@@ -114,12 +139,40 @@ protected:
 };
 class QMutex { public: QMutex(); void lock(); void unlock(); bool tryLock(int timeout = 0); };
 class QMutexLocker { public: explicit QMutexLocker(QMutex* mutex); ~QMutexLocker(); };
-class QPointF { public: QPointF(); QPointF(double x, double y); double x() const; double y() const; };
 class QPoint { public: QPoint(); QPoint(int x, int y); int x() const; int y() const; };
+class QPointF {
+public:
+  QPointF();
+  QPointF(double x, double y);
+  QPointF(const QPoint& p);
+  double x() const;
+  double y() const;
+  double& rx();
+  double& ry();
+  void setX(double x);
+  void setY(double y);
+  QPoint toPoint() const;
+  QPointF& operator+=(const QPointF& p);
+  QPointF& operator-=(const QPointF& p);
+  QPointF& operator*=(double c);
+};
+QPointF operator+(const QPointF& a, const QPointF& b);
+QPointF operator-(const QPointF& a, const QPointF& b);
+QPointF operator*(const QPointF& p, double c);
+QPointF operator*(double c, const QPointF& p);
+QPointF operator/(const QPointF& p, double c);
+class QTransform {
+public:
+  QTransform();
+  QTransform& rotate(double angle);
+  QTransform& translate(double dx, double dy);
+  QTransform& scale(double sx, double sy);
+};
 class QSize { public: QSize(); QSize(int w, int h); int width() const; int height() const; };
 class QRect { public: QRect(); QRect(int x, int y, int w, int h); int width() const; int height() const; };
 class QColor { public: QColor(); QColor(int r, int g, int b, int a = 255); QColor(const char* name); };
-class QImage {
+class QPaintDevice { public: virtual ~QPaintDevice(); };
+class QImage : public QPaintDevice {
 public:
   enum Format { Format_RGB888, Format_RGB32, Format_ARGB32, Format_Grayscale8, Format_Indexed8 };
   QImage();
@@ -132,11 +185,17 @@ public:
   int width() const;
   int height() const;
   unsigned char* bits();
+  bool load(const QString& file, const char* format = nullptr);
+  void fill(unsigned int pixel);
+  void fill(const QColor& color);
+  QRgb pixel(const QPoint& position) const;
+  QRgb pixel(int x, int y) const;
+  QImage transformed(const QTransform& matrix) const;
+  QSize size() const;
 };
 class QPixmap { public: QPixmap(); static QPixmap fromImage(const QImage& image); };
 class QPen { public: QPen(); QPen(const QColor& color); void setWidth(int width); };
 class QBrush { public: QBrush(); QBrush(const QColor& color); };
-class QPaintDevice { public: virtual ~QPaintDevice(); };
 class QPainter {
 public:
   QPainter();
@@ -147,6 +206,8 @@ public:
   void drawLine(int x1, int y1, int x2, int y2);
   void drawImage(const QRect& target, const QImage& image);
   void drawImage(int x, int y, const QImage& image);
+  void drawImage(const QPointF& point, const QImage& image);
+  void drawLine(const QPoint& a, const QPoint& b);
   void drawText(int x, int y, const QString& text);
   void drawEllipse(const QPointF& center, double rx, double ry);
   void fillRect(const QRect& rect, const QColor& color);
@@ -186,7 +247,10 @@ protected:
   virtual void closeEvent(QCloseEvent* event);
   virtual void timerEvent(QTimerEvent* event);
 };
-class QFrame : public QWidget { public: explicit QFrame(QWidget* parent = nullptr); };
+class QFrame : public QWidget {
+public:
+  explicit QFrame(QWidget* parent = nullptr, Qt::WindowFlags f = Qt::Widget);
+};
 class QMainWindow : public QWidget {
 public:
   explicit QMainWindow(QWidget* parent = nullptr);

@@ -13,6 +13,7 @@ namespace ros {
 typedef std::map<std::string, std::string> M_string;
 typedef std::vector<std::string> V_string;
 class NodeHandle;
+typedef boost::shared_ptr<NodeHandle> NodeHandlePtr;
 class Publisher;
 class Subscriber;
 class ServiceServer;

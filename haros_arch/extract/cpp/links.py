@@ -1,0 +1,119 @@
+"""Values that cross the translation units of one ROS 1 node.
+
+A handle or a string passed to a function (a constructor, ``std::make_shared<T>``,
+``new T``, a member initialiser) defined in another file of the same node is not known
+in that file: ``values.CallSites`` writes it as a placeholder part naming the function
+(by USR) and the parameter's index. Every file records what it passes to the functions
+it calls but does not define (``argument_facts``: the handle's namespace, or the string),
+and ``resolve`` fills each node's placeholders with what its own files pass, once all of
+them are read (a file shared by two nodes is filled per node). Callers that disagree
+give one call per value (up to ``MAX_VALUES``); a parameter no file of the node passes
+stays ``?``.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import re
+from collections.abc import Callable, Iterable
+
+from clang.cindex import Cursor
+
+from ... import diagnostics as diag
+from ...diagnostics import Diagnostic
+from ...model.source import PrimitiveCall
+from . import msg_types
+from .handles import Namespaces, is_handle, join_name, normalise
+from .values import PLACEHOLDER, SEPARATOR, CallSites, Scope, is_default_argument, render
+
+Fact = tuple[str, int, str, str]  # callee USR, parameter index, value passed, call site
+MAX_VALUES = 8
+MAX_DEPTH = 8
+_MARK = re.compile(f"{PLACEHOLDER}([^{PLACEHOLDER}{SEPARATOR}]*){SEPARATOR}(\\d+){PLACEHOLDER}")
+_SPLIT = "\x02"
+
+
+def argument_facts(sites: CallSites, namespaces: Namespaces,
+                   owned: Callable[[str], bool]) -> list[Fact]:
+    """What this file passes, as handles' namespaces or strings, to the workspace
+    functions it calls but does not define."""
+    facts: list[Fact] = []
+    for callee, call, caller in sites.external_sites():
+        where = callee.location.file
+        usr = callee.canonical.get_usr()
+        if where is None or not owned(where.name) or not usr:
+            continue
+        scope = sites.scope(caller)
+        at = call.location
+        site = f"{at.file.name if at.file else ''}:{at.offset}"
+        for index, arg in enumerate(call.get_arguments()):
+            if is_default_argument(arg):
+                continue
+            value = _value(arg, scope, namespaces)
+            if value is not None:
+                facts.append((usr, index, value, site))
+    return list(dict.fromkeys(facts))
+
+
+def _value(arg: Cursor, scope: Scope, namespaces: Namespaces) -> str | None:
+    if is_handle(arg):
+        return render(namespaces.of(arg, scope))
+    if msg_types.param_type(arg.type) == "str":
+        return render(scope.string(arg))
+    return None
+
+
+def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact]
+            ) -> tuple[list[PrimitiveCall], list[Diagnostic]]:
+    """The calls with their placeholders filled from ``facts`` (of the same node)."""
+    passed: dict[str, dict[str, dict[int, str]]] = {}  # USR -> call site -> index -> value
+    for usr, index, value, site in facts:
+        passed.setdefault(usr, {}).setdefault(site, {})[index] = value
+    out: list[PrimitiveCall] = []
+    found: list[Diagnostic] = []
+    for call in calls:
+        if PLACEHOLDER not in call.name and PLACEHOLDER not in (call.handle_namespace or ""):
+            out.append(call)
+            continue
+        namespace = call.handle_namespace
+        written = call.name
+        if namespace:
+            prefix = namespace if namespace == "~" or namespace.endswith("/") else (
+                namespace + "/")
+            written = call.name[len(prefix):] if call.name.startswith(prefix) else call.name
+        text = f"{namespace or ''}{_SPLIT}{written}"
+        for filled in _expand(text, passed, 0):
+            ns, _, name = filled.partition(_SPLIT)
+            ns = normalise(ns) if ns else ""
+            made = dataclasses.replace(
+                call, name=join_name(ns, name) if ns else name,
+                handle_namespace=ns if ns and not name.startswith(("/", "~")) else None)
+            out.append(made)
+            if "?" in made.name:
+                found.append(diag.make("CPP_DYNAMIC_NAME", made.location, kind=made.kind,
+                                       name=made.name))
+    return out, found
+
+
+def _expand(text: str, passed: dict[str, dict[str, dict[int, str]]],
+            depth: int) -> list[str]:
+    """``text`` with its placeholders filled: the placeholders of one function take the
+    values of the same call site together (``attach(n, "left")``, ``attach(base,
+    "right")`` never give ``base/left``)."""
+    match = _MARK.search(text)
+    if match is None:
+        return [text]
+    usr = match.group(1)
+    sites = list(passed.get(usr, {}).values()) if depth < MAX_DEPTH else []
+    out: list[str] = []
+    for values in sites or [{}]:
+        def fill(found: re.Match[str], values: dict[int, str] = values) -> str:
+            if found.group(1) != usr:
+                return found.group(0)
+            return values.get(int(found.group(2)), "?")
+        for filled in _expand(_MARK.sub(fill, text), passed, depth + 1):
+            if filled not in out:
+                out.append(filled)
+    if len(out) > MAX_VALUES:
+        return [_MARK.sub("?", text)]
+    return out

@@ -1,0 +1,145 @@
+"""Handles and names that cross the translation units of one ROS 1 node (a NodeHandle
+made in main.cpp, given to a class defined in another file), and the NodeHandle
+namespace kept apart so that the graph can remap it as roscpp does."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from haros_arch.extract.cpp import CppBatch, extract_cpp_nodes
+from haros_arch.graph import build
+from haros_arch.launch.model import LaunchModel, NodeDecl
+from haros_arch.model import Configuration, Node, PrimitiveCall
+from haros_arch.workspace import Workspace, scan
+
+HEADER = """#include <ros/ros.h>
+#include <std_msgs/Int8.h>
+#include <std_msgs/Empty.h>
+class Sensors {
+ public:
+  Sensors(ros::NodeHandle& n, const std::string& topic);
+ private:
+  ros::Publisher pub_;
+};
+class Motors {
+ public:
+  explicit Motors(const ros::NodeHandle& nh);
+  void spin();
+ private:
+  ros::NodeHandle nh_;
+  ros::Subscriber sub_;
+};
+void attach(ros::NodeHandle& nh, const std::string& name);
+"""
+
+SENSORS = """#include "robot/parts.h"
+Sensors::Sensors(ros::NodeHandle& n, const std::string& topic) {
+  pub_ = n.advertise<std_msgs::Int8>(topic, 1);
+}
+Motors::Motors(const ros::NodeHandle& nh) : nh_(nh) {
+  sub_ = nh_.subscribe<std_msgs::Empty>("stop", 1, &Motors::onStop, this);
+}
+void attach(ros::NodeHandle& nh, const std::string& name) {
+  static ros::Publisher p = nh.advertise<std_msgs::Empty>(name, 1);
+}
+"""
+
+MAIN = """#include <memory>
+#include "robot/parts.h"
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "driver");
+  ros::NodeHandle n;
+  ros::NodeHandle base("base");
+  Sensors front(n, "laser");
+  auto motors = std::make_shared<Motors>(ros::NodeHandle(base, "motors"));
+  attach(n, "left");
+  attach(base, "right");
+  ros::spin();
+}
+"""
+
+OTHER = """#include "robot/parts.h"
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "other");
+  ros::NodeHandle p("~");
+  Sensors* s = new Sensors(p, "range");
+}
+"""
+
+
+@pytest.fixture(scope="module")
+def batch(tmp_path_factory: pytest.TempPathFactory) -> tuple[CppBatch, Path]:
+    root = tmp_path_factory.mktemp("ws")
+    package = root / "src" / "robot"
+    (package / "src").mkdir(parents=True)
+    (package / "include" / "robot").mkdir(parents=True)
+    (package / "package.xml").write_text(
+        '<package format="2"><name>robot</name><version>1.0.0</version>'
+        '<description>d</description><maintainer email="a@b.c">a</maintainer>'
+        '<license>BSD</license></package>\n')
+    (package / "include" / "robot" / "parts.h").write_text(HEADER.replace(
+        "  void spin();", "  void spin();\n  void onStop(const std_msgs::Empty::ConstPtr&);"))
+    for name, text in (("parts.cpp", SENSORS), ("main.cpp", MAIN), ("other.cpp", OTHER)):
+        (package / "src" / name).write_text(text)
+    src = package / "src"
+    ws = scan([str(root)])
+    nodes = [[str(src / "main.cpp"), str(src / "parts.cpp")],
+             [str(src / "other.cpp"), str(src / "parts.cpp")],
+             [str(src / "parts.cpp")]]
+    return extract_cpp_nodes(nodes, ws, cache_dir=None, jobs=1), root
+
+
+def rows(calls: list[PrimitiveCall]) -> list[tuple[object, ...]]:
+    return sorted((c.kind, c.name, c.handle_namespace) for c in calls)
+
+
+def test_handles_and_names_follow_constructors_and_functions_across_files(
+        batch: tuple[CppBatch, Path]) -> None:
+    """Constructor, make_shared and member initialiser; callers that disagree give one
+    call per value."""
+    result = batch[0].results[0]
+    assert rows(result.calls) == [
+        ("publish", "base/right", "base"),
+        ("publish", "laser", None),
+        ("publish", "left", None),
+        ("subscribe", "base/motors/stop", "base/motors"),
+    ]
+    assert result.rosname == "driver"
+    assert [d.code for d in result.diagnostics] == []
+
+
+def test_a_shared_file_is_filled_per_node(batch: tuple[CppBatch, Path]) -> None:
+    other = batch[0].results[1]
+    # no caller in this node: the handle of Motors and attach's arguments stay unknown
+    assert rows(other.calls) == [
+        ("publish", "?/?", "?"), ("publish", "~range", "~"), ("subscribe", "?/stop", "?")]
+    assert "CPP_DYNAMIC_NAME" in [d.code for d in other.diagnostics]
+    alone = batch[0].results[2]
+    assert all("\x00" not in c.name for c in alone.calls)
+
+
+def test_the_graph_remaps_a_handle_namespace_before_the_name_in_it() -> None:
+    """roscpp: ``NodeHandle input("input")`` with ``input:=turtlesim1/turtle1`` gives
+    /turtlesim1/turtle1/pose; the full name is remapped too."""
+    calls = [PrimitiveCall("subscribe", "input/pose", "turtlesim/Pose",
+                           handle_namespace="input"),
+             PrimitiveCall("publish", "output/cmd_vel", "geometry_msgs/Twist",
+                           handle_namespace="output"),
+             PrimitiveCall("publish", "output/status", "std_msgs/String",
+                           handle_namespace="output"),
+             PrimitiveCall("read", "~gain", "double", handle_namespace="~")]
+    mimic = Node("turtlesim", "mimic", calls=calls)
+    decl = NodeDecl("/mimic", "turtlesim", "mimic", "/", remaps=[
+        ("input", "turtlesim1/turtle1"), ("output", "/turtlesim2/turtle1"),
+        ("/turtlesim2/turtle1/status", "/status")])
+    config = build(Configuration("c"), LaunchModel(nodes=[decl]), Workspace(root="/x"),
+                   {"turtlesim/mimic": mimic})
+    assert sorted(link.rosname.full for link in config.links) == [
+        "/mimic/gain", "/status", "/turtlesim1/turtle1/pose", "/turtlesim2/turtle1/cmd_vel"]
+    decl2 = NodeDecl("/r/mimic", "turtlesim", "mimic", "/r/")
+    config = build(Configuration("c"), LaunchModel(nodes=[decl2]), Workspace(root="/x"),
+                   {"turtlesim/mimic": mimic})
+    assert sorted(link.rosname.full for link in config.links) == [
+        "/r/input/pose", "/r/mimic/gain", "/r/output/cmd_vel", "/r/output/status"]
