@@ -176,6 +176,13 @@ class Loader:
         return roots
 
 
+def submodule(package_init: str, name: str) -> str | None:
+    """The file of module ``name`` inside the package whose ``__init__.py`` is given."""
+    if os.path.basename(package_init) != "__init__.py" or not name.isidentifier():
+        return None
+    return _module_file(os.path.dirname(package_init), [name])
+
+
 def _module_file(base: str, parts: list[str]) -> str | None:
     if not parts:
         init = os.path.join(base, "__init__.py")
@@ -241,9 +248,13 @@ def add_import(module: Module, loader: Loader, statement: ast.Import | ast.Impor
                     local_imports[alias.asname] = (local, None)
                 else:
                     imports[alias.asname] = alias.name
-            else:
+            else:  # ``import pkg.sub`` binds ``pkg``: the package's own, when it is
                 top = alias.name.split(".")[0]
-                imports.setdefault(top, top)
+                own = loader.resolve_import(module.path, 0, top) if local is not None else None
+                if own is not None:
+                    local_imports.setdefault(top, (own, None))
+                else:
+                    imports.setdefault(top, top)
         return
     source = statement.module or ""
     local = loader.resolve_import(module.path, statement.level, source)

@@ -18,7 +18,7 @@ from typing import Any
 
 from ...model.values import Value
 from . import msg_types, rclpy, rospy
-from .modules import ClassInfo, FunctionInfo, Loader, Module
+from .modules import ClassInfo, FunctionInfo, Loader, Module, submodule
 from .objects import (
     BoundMethod,
     Frame,
@@ -274,7 +274,10 @@ class Evaluator:
         if isinstance(base, Ref):
             return Ref(f"{base.qualname}.{attr}")
         if isinstance(base, ModuleRef):
-            return self.lookup(base.module, attr)
+            found = self.lookup(base.module, attr)
+            inner = submodule(base.module.path, attr) if isinstance(found, Opaque) else None
+            other = self.loader.load(inner) if inner is not None else None
+            return ModuleRef(other) if other is not None else found
         if isinstance(base, Instance):
             if attr in base.attrs:
                 return base.attrs[attr]
@@ -356,6 +359,8 @@ class Evaluator:
                                self.eval(default, frame) if default is not None else None)
             self.param_defaults[value.name] = value.default
             return value
+        if key == ("rospy", "get_name") and not expr.args:
+            return Value.of("~")  # the node's own name: private names resolve to it
         if key == ("rclpy", "AsyncParameterClient"):
             remote = argument(expr, rclpy.PARAMETER_CLIENT)
             return ParameterClient(text_of(self.eval(remote, frame)) if remote is not None

@@ -396,8 +396,8 @@ class Walker:
             call.name = _param_name(text)
         elif version == 2 and text.text.startswith("~/"):
             call.name = "~" + text.text[2:]
-        else:
-            call.name = text.text or "?"
+        else:  # get_name() is "~": only as the start of a name is it the node's name
+            call.name = (text.text[:1] + text.text[1:].replace("~", "?")) or "?"
 
     def _type(self, expr: ast.expr | None, frame: Frame, version: int,
               action: bool) -> str | None:
