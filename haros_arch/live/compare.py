@@ -1,4 +1,11 @@
-"""Compare an extracted configuration with a captured live system: precision and recall."""
+"""Compare an extracted configuration with a captured live system: precision and recall.
+
+Several nodes may advertise the same service; the ROS 1 master keeps only the last one
+to register (``lookupService`` answers one provider). A service link of ours is scored
+as matched when the live provider of that service is one of our providers for it: our
+other providers of the same name are neither extra nor missing (the running system
+cannot show them).
+"""
 
 from __future__ import annotations
 
@@ -84,6 +91,7 @@ def compare(model: dict[str, Any], live: dict[str, Any], name: str | None = None
         return {(link["node"], link["name"]) for link in links if link["kind"] == kind}
 
     live_topics = [t for t in live["topics"] if not IGNORED_TOPICS.match(t["name"])]
+    live_servers = {s["name"]: set(s["servers"]) for s in live["services"]}
     live_nodes = {n for n in live["nodes"] if not IGNORED_NODES.match(n)}
     scores = [
         Score("nodes", {n["name"] for n in config["nodes"]}, live_nodes),
@@ -100,7 +108,7 @@ def compare(model: dict[str, Any], live: dict[str, Any], name: str | None = None
         Score("services", {s["name"] for s in config["services"]},
               {s["name"] for s in live["services"]
                if not IGNORED_SERVICES.search(s["name"])}),
-        Score("service links", ours_links("server"),
+        Score("service links", _shadowed(ours_links("server"), live_servers),
               {(n, s["name"]) for s in live["services"] for n in s["servers"]
                if not IGNORED_SERVICES.search(s["name"])}),
         # only parameters someone sets can be on the master (code defaults are not), and
@@ -110,6 +118,15 @@ def compare(model: dict[str, Any], live: dict[str, Any], name: str | None = None
                if not IGNORED_PARAMS.match(p["name"])}),
     ]
     return Comparison(config["name"], scores)
+
+
+def _shadowed(ours: set[tuple[str, str]],
+              live: dict[str, set[str]]) -> set[tuple[str, str]]:
+    """Our service links without the providers the master cannot show: of several of our
+    nodes serving one name, only the one the master holds is kept."""
+    return {(node, name) for node, name in ours
+            if not live.get(name) or node in live[name]
+            or not any((other, name) in ours for other in live[name])}
 
 
 def _leaf_parameters(config: dict[str, Any]) -> set[str]:
