@@ -146,6 +146,8 @@ def test_actionlib_and_tf2(ros1) -> None:
         ("action-client", "undock", "ros1_demo/Dock", None, False, None, 27, ()),
         ("publish", "/tf", "tf2_msgs/TFMessage", None, False, None, 28, ()),
         ("publish", "/tf_static", "tf2_msgs/TFMessage", None, True, None, 29, ()),
+        # tf2_ros.Buffer() serves ~tf2_frames (debug=True by default)
+        ("server", "~tf2_frames", "tf2_msgs/FrameGraph", None, False, None, 30, ()),
         ("subscribe", "/tf", "tf2_msgs/TFMessage", None, False, None, 31, ()),
         ("subscribe", "/tf_static", "tf2_msgs/TFMessage", None, False, None, 31, ()),
     ]

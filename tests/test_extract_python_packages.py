@@ -38,3 +38,16 @@ def test_a_script_calling_its_own_package_module(tmp_path: Path) -> None:
     assert sorted((c.kind, c.name) for c in result.calls) == [
         ("action-server", "~"), ("client", "backup/?"), ("publish", "chatter")]
     assert result.rosname == "speaker"
+
+
+def test_a_tf2_buffer_serves_its_frames_unless_debug_is_off(tmp_path: Path) -> None:
+    source = tmp_path / "pointer.py"
+    source.write_text(
+        "import rospy\nimport tf2_ros\nrospy.init_node('pointer')\n"
+        "buffer = tf2_ros.Buffer()\nlistener = tf2_ros.TransformListener(buffer)\n"
+        "quiet = tf2_ros.Buffer(rospy.Duration(10), debug=False)\n")
+    result = extract_python([str(source)], scan([str(tmp_path)]), package="p")
+    assert [(c.kind, c.name, c.type) for c in result.calls] == [
+        ("server", "~tf2_frames", "tf2_msgs/FrameGraph"),
+        ("subscribe", "/tf", "tf2_msgs/TFMessage"),
+        ("subscribe", "/tf_static", "tf2_msgs/TFMessage")]

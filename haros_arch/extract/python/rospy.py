@@ -55,6 +55,10 @@ ROWS: dict[tuple[str, str], PyFunction] = {
         fixed_latch=True),
     ("tf2_ros", "TransformListener"): PyFunction(
         "subscribe", name=None, fixed_type="tf2_msgs/TFMessage", special="tf-listener"),
+    # tf2_ros.Buffer(cache_time=None, debug=True) serves ~tf2_frames unless debug=False
+    ("tf2_ros", "Buffer"): PyFunction(
+        "server", name=None, fixed_name="~tf2_frames", fixed_type="tf2_msgs/FrameGraph",
+        special="tf2-buffer"),
     ("tf", "TransformBroadcaster"): PyFunction(
         "publish", name=None, fixed_name="/tf", fixed_type="tf2_msgs/TFMessage"),
     ("tf", "TransformListener"): PyFunction(

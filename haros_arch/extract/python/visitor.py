@@ -20,7 +20,7 @@ from ...model.location import Location
 from ...model.source import PrimitiveCall
 from ...model.values import Unknown, Value
 from . import rclpy, rospy
-from .api import PyFunction
+from .api import Arg, PyFunction
 from .conditions import condition, is_main_guard, source_text
 from .modules import ClassInfo, FunctionInfo, Loader, Module, add_import
 from .msg_types import ros_type
@@ -345,6 +345,11 @@ class Walker:
             return [replace(base, name=f"/{topic}", qos=qos.get(topic),
                             queue_size=qos[topic]["depth"] if qos else None)
                     for topic in ("tf", "tf_static")]
+        if spec.special == "tf2-buffer":
+            debug = argument(call, Arg(1, "debug"))
+            if debug is not None and _eval(ev, debug, frame) is False:
+                return []
+            return [replace(base, name=spec.fixed_name or "?")]
         made: list[PrimitiveCall] = []
         if spec.special == "declare-parameters":
             prefix = text_of(_eval(ev, call.args[0] if call.args else argument(
@@ -444,8 +449,6 @@ def _eval(ev: Evaluator, expr: ast.expr | None, frame: Frame) -> object:
 
 
 def _kw(keyword: str) -> object:
-    from .api import Arg
-
     return Arg(None, keyword)
 
 
