@@ -33,7 +33,8 @@ def as_data(model: LaunchModel) -> dict[str, Any]:
         "name": n.name, "package": n.package, "executable": n.executable,
         "namespace": n.namespace, "args": n.args, "remaps": [list(r) for r in n.remaps],
         "machine": n.machine, "respawn": n.respawn, "required": n.required,
-        "test": n.is_test, "conditions": to_data(list(n.conditions)),
+        "test": n.is_test, "ros_version": n.ros_version, "composable": n.composable,
+        "container": n.container, "conditions": to_data(list(n.conditions)),
         "location": to_data(n.location)} for n in model.nodes]
     return {"nodes": nodes, "parameters": leaf_parameters(model),
             "includes": model.files[1:], "cleared": model.clear_params,
@@ -45,7 +46,8 @@ def as_text(model: LaunchModel) -> str:
     lines = ["nodes:"]
     for node in model.nodes:
         cond = "".join(f"  [{c}]" for c in node.conditions)
-        lines.append(f"  {node.name}  ({node.package}/{node.executable}){cond}")
+        loaded = f"  in {node.container}" if node.composable and node.container else ""
+        lines.append(f"  {node.name}  ({node.package}/{node.executable}){loaded}{cond}")
         if node.args:
             lines.append(f"      args: {node.args}")
         for source, target in node.remaps:
