@@ -120,7 +120,7 @@ function renderLists() {
   ui.diagnostics.replaceChildren(el('h3', {}, `Extraction diagnostics (${diags.length})`),
     ...diags.slice(0, 500).map(d => diagnosticItem(d, app)),
     ...(diags.length > 500 ? [el('p', {class: 'muted'}, `${diags.length - 500} more not listed`)] : []));
-  const groups = [...new Set([...app.index.entities.values()].map(e => e.group).filter(Boolean))].sort();
+  const groups = [...new Set([...app.index.entities.values()].map(e => e.group).filter(Boolean))].sort(compareText);
   ui.namespaces.replaceChildren(el('h3', {}, 'Namespaces'), ...(groups.length ? groups.map(name => {
     const box = el('input', {type: 'checkbox', 'data-namespace': name});
     box.checked = app.options.collapsed.has(name);

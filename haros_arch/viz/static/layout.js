@@ -172,8 +172,9 @@ function mean(list) {
   return list.length ? sum / list.length : 0;
 }
 
+// Natural order: /robot2/ before /robot10/.
 function compareText(a, b) {
-  return (a || '') < (b || '') ? -1 : (a || '') > (b || '') ? 1 : 0;
+  return String(a || '').localeCompare(String(b || ''), 'en', {numeric: true});
 }
 
 function forceLayout(vertices, edges, onTick) {
