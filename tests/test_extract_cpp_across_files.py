@@ -143,3 +143,27 @@ def test_the_graph_remaps_a_handle_namespace_before_the_name_in_it() -> None:
                    {"turtlesim/mimic": mimic})
     assert sorted(link.rosname.full for link in config.links) == [
         "/r/input/pose", "/r/mimic/gain", "/r/output/cmd_vel", "/r/output/status"]
+
+
+def test_ros1_tf_listener_and_broadcaster(tmp_path: Path) -> None:
+    package = tmp_path / "src" / "follow"
+    (package / "src").mkdir(parents=True)
+    (package / "package.xml").write_text(
+        '<package format="2"><name>follow</name><version>1.0.0</version>'
+        '<description>d</description><maintainer email="a@b.c">a</maintainer>'
+        '<license>BSD</license></package>\n')
+    source = package / "src" / "follow.cpp"
+    source.write_text(
+        "#include <ros/ros.h>\n#include <tf/transform_listener.h>\n"
+        "#include <tf/transform_broadcaster.h>\n"
+        "int main(int argc, char** argv) {\n  ros::init(argc, argv, \"follow\");\n"
+        "  ros::NodeHandle node;\n  tf::TransformListener listener;\n"
+        "  tf::TransformBroadcaster out;\n  tf::StampedTransform t;\n"
+        "  try { listener.lookupTransform(\"/a\", \"/b\", ros::Time(0), t); }\n"
+        "  catch (tf::TransformException& ex) { return 1; }\n"
+        "  out.sendTransform(tf::StampedTransform(t, ros::Time::now(), \"a\", \"c\"));\n}\n")
+    batch = extract_cpp_nodes([[str(source)]], scan([str(tmp_path)]), cache_dir=None, jobs=1)
+    result = batch.results[0]
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("subscribe", "/tf"), ("subscribe", "/tf_static"), ("publish", "/tf")]
+    assert [d.code for d in result.diagnostics] == []
