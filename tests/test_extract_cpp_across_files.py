@@ -164,6 +164,9 @@ def test_ros1_tf_listener_and_broadcaster(tmp_path: Path) -> None:
         "  out.sendTransform(tf::StampedTransform(t, ros::Time::now(), \"a\", \"c\"));\n}\n")
     batch = extract_cpp_nodes([[str(source)]], scan([str(tmp_path)]), cache_dir=None, jobs=1)
     result = batch.results[0]
-    assert [(c.kind, c.name) for c in result.calls] == [
-        ("subscribe", "/tf"), ("subscribe", "/tf_static"), ("publish", "/tf")]
+    # tf is tf2 underneath since Hydro: the topics carry tf2_msgs/TFMessage
+    assert [(c.kind, c.name, c.type) for c in result.calls] == [
+        ("subscribe", "/tf", "tf2_msgs/TFMessage"),
+        ("subscribe", "/tf_static", "tf2_msgs/TFMessage"),
+        ("publish", "/tf", "tf2_msgs/TFMessage")]
     assert [d.code for d in result.diagnostics] == []

@@ -178,10 +178,10 @@ LIBRARIES: dict[tuple[str, str], RosFunction] = {
         "subscribe", fixed_name="/tf", fixed_type=_TF, on_handle=False,
         siblings=(("subscribe", "/tf_static", _TF),)),
     ("tf::TransformBroadcaster", "TransformBroadcaster"): RosFunction(
-        "publish", fixed_name="/tf", fixed_type="tf/tfMessage", on_handle=False),
+        "publish", fixed_name="/tf", fixed_type=_TF, on_handle=False),
     ("tf::TransformListener", "TransformListener"): RosFunction(
-        "subscribe", fixed_name="/tf", fixed_type="tf/tfMessage", on_handle=False,
-        siblings=(("subscribe", "/tf_static", "tf/tfMessage"),)),
+        "subscribe", fixed_name="/tf", fixed_type=_TF, on_handle=False,
+        siblings=(("subscribe", "/tf_static", _TF),)),
 }
 
 # Calls that construct their template argument with the arguments they are given.
