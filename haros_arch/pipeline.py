@@ -20,6 +20,7 @@ from .model.runtime import Configuration
 from .model.source import Node, Package
 from .project import ConfigurationSpec, Project
 from .rosrun import script_node
+from .share import share_source
 from .workspace import Workspace, scan
 
 
@@ -121,7 +122,9 @@ def launch_path(entry: str, project: Project, workspace: Workspace) -> str | Non
     folder = workspace.find(package)
     if folder is None:
         return None
-    return os.path.join(folder, rest)
+    path = os.path.join(folder, rest)
+    # not in the source: maybe a ROS 2 launch file named where its package installs it
+    return path if os.path.exists(path) else share_source(workspace, path)
 
 
 def _load_launch(spec: ConfigurationSpec, project: Project, workspace: Workspace,

@@ -27,6 +27,8 @@ class Workspace:
     diagnostics: list[Diagnostic] = field(default_factory=list)
     environment: Mapping[str, str] = field(default_factory=dict)
     _installed: dict[str, str | None] = field(default_factory=dict)
+    # package name -> {share-relative path: source file}, filled by haros_arch.share
+    share_maps: dict[str, dict[str, str]] = field(default_factory=dict, repr=False)
 
     def relpath(self, path: str) -> str:
         """A path relative to the workspace root when inside it, else absolute."""

@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING
 
 from .lexer import Invocation
 from .listops import run_list, run_math, run_string, split_list
-from .targets import Program, Registration, Target
+from .targets import Install, Program, Registration, Target
 
 if TYPE_CHECKING:
     from .interpreter import Interpreter
@@ -357,6 +357,9 @@ def _catkin_install_python(it: Interpreter, command: Invocation, args: list[str]
 
 @handles("install")
 def _install(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    if args[:1] in (["DIRECTORY"], ["FILES"], ["PROGRAMS"]) and "DESTINATION" in args[:-1]:
+        it.installs.append(Install(args[0], args[1:], it.source_dir, it.current_conditions(),
+                                   command.line, command.column, command.file))
     if args[:1] == ["PROGRAMS"]:
         rename = args[args.index("RENAME") + 1] if "RENAME" in args[:-1] else None
         _programs(it, command, args[1:], rename)
@@ -387,6 +390,22 @@ def _programs(it: Interpreter, command: Invocation, args: list[str],
         name = rename if rename and len(files) == 1 else os.path.basename(path)
         it.programs.append(Program(path, name, it.current_conditions(), command.line,
                                    command.column, command.file))
+
+
+@handles("ament_auto_package")
+def _ament_auto_package(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    """``INSTALL_TO_SHARE dir...`` installs those folders into ``share/<project>``."""
+    if "INSTALL_TO_SHARE" not in args:
+        return
+    folders: list[str] = []
+    for arg in args[args.index("INSTALL_TO_SHARE") + 1:]:
+        if arg.isupper() and arg.replace("_", "").isalpha():
+            break  # the next keyword (INSTALL_TO_PATH, USE_SCOPED_HEADER_INSTALL_DIR...)
+        folders.append(arg)
+    destination = f"share/{it.get('PROJECT_NAME') or ''}"
+    it.installs.append(Install("DIRECTORY", [*folders, "DESTINATION", destination],
+                               it.source_dir, it.current_conditions(), command.line,
+                               command.column, command.file))
 
 
 @handles("rclcpp_components_register_node")

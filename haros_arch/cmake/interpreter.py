@@ -28,7 +28,7 @@ from .commands import HANDLERS
 from .conditions import Evaluator
 from .lexer import Argument, Invocation
 from .listops import split_list
-from .targets import Program, Registration, Target
+from .targets import Install, Program, Registration, Target
 
 _VAR_REF = re.compile(r"\$(ENV|CACHE)?\{([^${}]*)\}")
 MAX_STEPS = 200_000
@@ -76,6 +76,7 @@ class Interpreter:
         self.targets: dict[str, Target] = {}
         self.programs: list[Program] = []
         self.program_dirs: list[Program] = []
+        self.installs: list[Install] = []  # for haros_arch.share
         self.registrations: list[Registration] = []
         self.definitions: dict[str, Definition] = {}
         self.conditions: list[Condition] = []  # enclosing if / while not decided

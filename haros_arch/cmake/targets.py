@@ -45,3 +45,19 @@ class Registration:
     line: int
     column: int
     file: str
+
+
+@dataclass
+class Install:
+    """``install(DIRECTORY|FILES|PROGRAMS ... DESTINATION ...)`` (and ament_auto_package's
+    ``INSTALL_TO_SHARE``): what the package puts in its install space, read by
+    ``haros_arch.share``. ``args`` are as given after the form; relative paths are
+    relative to ``source_dir``."""
+
+    form: str  # "DIRECTORY" | "FILES" | "PROGRAMS"
+    args: list[str]
+    source_dir: str
+    conditions: tuple[Condition, ...]
+    line: int
+    column: int
+    file: str

@@ -253,12 +253,13 @@ class Interpreter(Expressions):
     def read(self, path: Any, node: ast.AST) -> str | None:
         """The text of a file of the workspace or an installed package (bounded)."""
         from ...files import read_text
+        from ...share import share_source
         from ...workspace import installed_roots
 
         if not isinstance(path, str):
             self.unsupported(node, "a file whose path is not known statically")
             return None
-        full = os.path.realpath(path)
+        full = os.path.realpath(share_source(self.workspace, path))
         roots = [os.path.realpath(r) for r in [*(self.workspace.roots or
                                                  [self.workspace.root]),
                                                *installed_roots(self.environment)]]

@@ -20,6 +20,7 @@ from ...files import read_text
 from ...model.conditions import Condition
 from ...model.location import Location
 from ...model.values import Unknown, Value
+from ...share import share_source
 from ...workspace import Workspace
 from ..model import LaunchModel, NodeDecl, ParamDecl
 from . import entities as e
@@ -88,7 +89,8 @@ class Runner:
 
     # -- files ---------------------------------------------------------------------
     def run_file(self, path: str, scope: Scope, where: Location) -> None:
-        path = os.path.abspath(path)
+        reached = os.path.abspath(path)  # $(dirname) is where the file was found
+        path = share_source(self.workspace, reached)  # the source file installed there
         if path in self.stack or len(self.stack) >= MAX_INCLUDE_DEPTH:
             self.report("LAUNCH_BAD_VALUE", where,
                         detail=f"include cycle or depth: {self.workspace.relpath(path)}")
@@ -102,7 +104,7 @@ class Runner:
         self.model.files.append(self.workspace.relpath(path))
         self.stack.append(path)
         outer = scope.file
-        scope.file = path
+        scope.file = reached
         try:
             self.run(actions, scope)
         finally:
@@ -249,7 +251,7 @@ class Runner:
             self.report("LAUNCH_PARAM_FILE", where,
                         detail=f"parameter file {path} is not known statically")
             return None
-        file = path.literal
+        file = share_source(self.workspace, path.literal)
         text, found = read_text(file, self.workspace.location(file), MAX_PARAM_FILE)
         self.model.diagnostics.extend(found)
         if text is None:

@@ -16,6 +16,7 @@ from typing import TYPE_CHECKING
 from ...files import read_text
 from ...model.location import Location
 from ...model.values import Unknown, Value
+from ...share import share_source
 from ...workspace import installed_roots
 from .. import expression
 from . import entities as e
@@ -301,7 +302,7 @@ class Evaluator:
         path = self.value(s.path).literal
         if path is None:
             return Value.unknown("file-content of an unknown path")
-        full = os.path.realpath(path)
+        full = os.path.realpath(share_source(self.runner.workspace, path))
         workspace = self.runner.workspace
         roots = [os.path.realpath(r) for r in [*(workspace.roots or [workspace.root]),
                                                *installed_roots(workspace.environment)]]

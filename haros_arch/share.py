@@ -1,0 +1,398 @@
+"""A package's share folder as ROS 2 sees it after ``colcon build``, without building.
+
+ROS 2 launch files find a package's files under ``install/<pkg>/share/<pkg>/``
+(``$(find-pkg-share pkg)``, ``FindPackageShare``, ``get_package_share_directory``), and
+what lies there is what the package's build rules install: CMake
+``install(DIRECTORY|FILES|PROGRAMS ... DESTINATION share/${PROJECT_NAME}[/sub])`` (with
+``FILES_MATCHING``, ``PATTERN`` / ``REGEX`` and ``EXCLUDE``, a trailing ``/`` installing
+a folder's contents), ``ament_auto_package(INSTALL_TO_SHARE ...)``, and ament_python's
+``setup(data_files=[(destination, [files])])`` (read with ``ast``; ``glob``,
+``os.path.join``, concatenation, formatting and simple comprehensions are evaluated
+over the package folder, nothing is run).
+
+Entry point: ``share_map(package, workspace)`` maps each share-relative path
+(``config/rover.yaml``) to the absolute source file installed there, cached per package
+on the workspace. ``share_source(workspace, path)`` turns a path under a workspace
+package's folder, as ``Workspace.find`` gives it, into the source file it stands for in
+the install space; a path the build rules do not install stays as it is (the installed
+layout usually mirrors the source). ROS 1 (devel space = source) does not use this.
+"""
+
+from __future__ import annotations
+
+import ast
+import glob
+import os
+import posixpath
+import re
+from collections.abc import Iterator
+from dataclasses import dataclass, field
+
+from .cmake import interpret
+from .cmake.interpreter import BINARY_ROOT
+from .cmake.targets import Install
+from .files import read_text
+from .model.source import Package
+from .workspace import Workspace
+
+MAX_FILES = 20_000  # files in one package's share map
+MAX_DEPTH = 16  # folder depth walked under an installed folder
+_KEYWORDS = frozenset((
+    "DESTINATION", "TYPE", "RENAME", "FILE_PERMISSIONS", "DIRECTORY_PERMISSIONS",
+    "PERMISSIONS", "USE_SOURCE_PERMISSIONS", "OPTIONAL", "MESSAGE_NEVER", "CONFIGURATIONS",
+    "COMPONENT", "EXCLUDE_FROM_ALL", "FILES_MATCHING", "PATTERN", "REGEX", "EXCLUDE"))
+
+
+def share_map(package: Package, workspace: Workspace) -> dict[str, str]:
+    """Share-relative path → absolute source file, for one workspace package."""
+    cached = workspace.share_maps.get(package.name)
+    if cached is not None:
+        return cached
+    found: dict[str, str] = {}
+    setup_py = os.path.join(package.root, "setup.py")
+    if os.path.isfile(os.path.join(package.root, "CMakeLists.txt")):
+        _from_cmake(package, workspace, found)
+        # ament_package() / catkin_package() install the manifest
+        found.setdefault("package.xml", os.path.join(package.root, "package.xml"))
+    elif os.path.isfile(setup_py):
+        _from_setup_py(package, workspace, setup_py, found)
+    workspace.share_maps[package.name] = found
+    return found
+
+
+def share_source(workspace: Workspace, path: str) -> str:
+    """The source file that ``path``, a path in a workspace package's share folder as
+    ``Workspace.find`` gives it (the package's source folder), stands for; ``path``
+    itself when the package's build rules install nothing there."""
+    path = os.path.normpath(os.path.abspath(path))
+    package = workspace.package_of(path)
+    if package is None or path == package.root:
+        return path
+    relative = os.path.relpath(path, package.root).replace(os.sep, "/")
+    return share_map(package, workspace).get(relative, path)
+
+
+# -- CMake -----------------------------------------------------------------------------
+def _from_cmake(package: Package, workspace: Workspace, found: dict[str, str]) -> None:
+    interpreter, _ = interpret(package, workspace)  # the build stage reports problems
+    for install in interpreter.installs:
+        for relative, source in installed_files(install, package):
+            if len(found) >= MAX_FILES:
+                return
+            found[relative] = source  # a later rule overwrites, as ``cmake --install``
+
+
+def installed_files(install: Install, package: Package) -> Iterator[tuple[str, str]]:
+    """(share-relative path, source file) for each file one install rule puts into the
+    package's share folder."""
+    items, options = _split(install.args)
+    sub = _share_sub(options.destination, package.name)
+    if sub is None:
+        return
+    root = os.path.realpath(package.root)
+    for item in items:
+        if not item or item.startswith("$<") or item.startswith(BINARY_ROOT):
+            continue  # generated or unknown: nothing to read
+        source = os.path.normpath(os.path.join(install.source_dir, item))
+        real = os.path.realpath(source)
+        if real != root and not real.startswith(root + os.sep):
+            continue  # outside the package: not read
+        if install.form == "DIRECTORY":
+            base = sub if item.endswith("/") else posixpath.join(sub, os.path.basename(source))
+            yield from _directory(source, base, options)
+        elif os.path.isfile(source):
+            rename = options.rename if len(items) == 1 else None
+            yield posixpath.normpath(posixpath.join(sub, rename or os.path.basename(source))), \
+                source
+
+
+@dataclass
+class _Options:
+    destination: str = ""
+    rename: str | None = None
+    files_matching: bool = False
+    rules: list[tuple[re.Pattern[str], bool]] = field(default_factory=list)  # (rule, EXCLUDE)
+
+    def excluded(self, path: str) -> bool:
+        return any(exclude and rule.search(path) for rule, exclude in self.rules)
+
+    def matched(self, path: str) -> bool:
+        return any(not exclude and rule.search(path) for rule, exclude in self.rules)
+
+
+def _split(args: list[str]) -> tuple[list[str], _Options]:
+    """The paths before the first keyword, and the options that decide where files go."""
+    at = next((i for i, word in enumerate(args) if word in _KEYWORDS), len(args))
+    items, options = args[:at], _Options()
+    while at < len(args):
+        word = args[at]
+        following = args[at + 1] if at + 1 < len(args) else None
+        if word == "DESTINATION" and following is not None:
+            options.destination, at = following, at + 1
+        elif word == "RENAME" and following is not None:
+            options.rename, at = following, at + 1
+        elif word in ("PATTERN", "REGEX") and following is not None:
+            try:
+                rule = _glob_regex(following) if word == "PATTERN" else re.compile(following)
+            except re.error:
+                rule = re.compile(r"(?!)")  # a regex Python cannot read matches nothing
+            options.rules.append((rule, False))
+            at += 1
+        elif word == "EXCLUDE" and options.rules:
+            options.rules[-1] = (options.rules[-1][0], True)
+        elif word == "FILES_MATCHING":
+            options.files_matching = True
+        at += 1
+    return items, options
+
+
+def _share_sub(destination: str, name: str) -> str | None:
+    """``share/<name>/sub`` → ``sub`` (``""`` for the share folder itself), else None."""
+    text = destination.replace("\\", "/")
+    if text.startswith("/share/"):  # ${CMAKE_INSTALL_PREFIX}/share/..., the prefix unknown
+        text = text[1:]
+    text = posixpath.normpath(text) if text else ""
+    head = f"share/{name}"
+    if text == head:
+        return ""
+    if text.startswith(head + "/"):
+        return text[len(head) + 1:]
+    return None
+
+
+def _glob_regex(pattern: str) -> re.Pattern[str]:
+    """CMake's ``PATTERN``: a glob matched against the end of the path, whole names only."""
+    out = [{"*": "[^/]*", "?": "[^/]"}.get(char, re.escape(char)) for char in pattern]
+    return re.compile("/" + "".join(out) + "$")
+
+
+def _directory(folder: str, base: str, options: _Options) -> Iterator[tuple[str, str]]:
+    """The files ``install(DIRECTORY folder ...)`` installs, under ``base``."""
+    if not os.path.isdir(folder):
+        return
+    top = folder.count(os.sep)
+    count = 0
+    for current, dirs, names in os.walk(folder):
+        if current.count(os.sep) - top >= MAX_DEPTH:
+            dirs[:] = []
+        dirs[:] = sorted(d for d in dirs if not options.excluded(
+            os.path.join(current, d).replace(os.sep, "/")))
+        for name in sorted(names):
+            path = os.path.join(current, name)
+            posix = path.replace(os.sep, "/")
+            if options.excluded(posix) or (options.files_matching and
+                                           not options.matched(posix)):
+                continue
+            if not os.path.isfile(path):
+                continue
+            count += 1
+            if count > MAX_FILES:
+                return
+            relative = os.path.relpath(path, folder).replace(os.sep, "/")
+            yield posixpath.normpath(posixpath.join(base, relative)), path
+
+
+# -- ament_python setup.py ----------------------------------------------------------------
+class _Unknown:
+    pass
+
+
+UNKNOWN = _Unknown()
+
+
+def _from_setup_py(package: Package, workspace: Workspace, path: str,
+                   found: dict[str, str]) -> None:
+    text, _ = read_text(path, workspace.location(path))
+    if text is None:
+        return
+    try:
+        tree = ast.parse(text, filename=path)
+    except (SyntaxError, ValueError, RecursionError):
+        return  # pysetup reports it
+    reader = _SetupReader(package.root)
+    data_files: object = UNKNOWN
+    for statement in tree.body:
+        reader.statement(statement)
+        for node in ast.walk(statement):
+            if isinstance(node, ast.Call) and _dotted(node.func) in ("setup",
+                                                                     "setuptools.setup"):
+                for keyword in node.keywords:
+                    if keyword.arg == "data_files":
+                        data_files = reader.value(keyword.value)
+    if not isinstance(data_files, list):
+        return
+    root = os.path.realpath(package.root)
+    for entry in data_files:
+        if not (isinstance(entry, list) and len(entry) == 2 and isinstance(entry[1], list)):
+            continue
+        sub = _share_sub(entry[0], package.name)
+        if sub is None:
+            continue
+        for item in entry[1]:
+            if not isinstance(item, str) or len(found) >= MAX_FILES:
+                continue
+            source = os.path.normpath(os.path.join(package.root, item))
+            real = os.path.realpath(source)
+            if real.startswith(root + os.sep) and os.path.isfile(source):
+                found[posixpath.normpath(posixpath.join(sub, os.path.basename(source)))] = source
+
+
+def _str_method(text: str, method: str, args: list[object], keywords: bool) -> object:
+    """``'sep'.join([...])`` and positional ``'...{}'.format(...)`` over known strings."""
+    if method == "join" and len(args) == 1 and isinstance(args[0], list) and all(
+            isinstance(a, str) for a in args[0]):
+        return text.join(str(a) for a in args[0])
+    if method == "format" and not keywords and all(isinstance(a, str) for a in args) and all(
+            re.fullmatch(r"\d*", f) for f in re.findall(r"\{([^{}]*)\}", text)):
+        try:
+            return text.format(*args)
+        except (IndexError, ValueError):
+            return UNKNOWN
+    return UNKNOWN
+
+
+def _dotted(node: ast.expr) -> str | None:
+    if isinstance(node, ast.Name):
+        return node.id
+    if isinstance(node, ast.Attribute):
+        owner = _dotted(node.value)
+        return f"{owner}.{node.attr}" if owner else None
+    return None
+
+
+class _SetupReader:
+    """Module-level names of a setup.py and the values of expressions over them: literals,
+    ``+``, ``%s`` / f-string / ``format`` text, ``os.path`` helpers, ``glob`` over the
+    package folder, ``sorted`` / ``list``, and one-``for`` comprehensions."""
+
+    def __init__(self, root: str) -> None:
+        self.root = root
+        self.names: dict[str, object] = {}
+        self.aliases: dict[str, str] = {}  # local name -> dotted origin (imports)
+
+    def statement(self, node: ast.stmt) -> None:
+        if isinstance(node, ast.Import):
+            for alias in node.names:
+                self.aliases[alias.asname or alias.name.split(".")[0]] = (
+                    alias.name if alias.asname else alias.name.split(".")[0])
+        elif isinstance(node, ast.ImportFrom) and node.module:
+            for alias in node.names:
+                self.aliases[alias.asname or alias.name] = f"{node.module}.{alias.name}"
+        elif isinstance(node, ast.Assign) and len(node.targets) == 1 and isinstance(
+                node.targets[0], ast.Name):
+            self.names[node.targets[0].id] = self.value(node.value)
+        elif isinstance(node, ast.AugAssign) and isinstance(node.target, ast.Name) and (
+                isinstance(node.op, ast.Add)):
+            self.names[node.target.id] = self._add(self.names.get(node.target.id, UNKNOWN),
+                                                   self.value(node.value))
+        elif isinstance(node, ast.Expr) and isinstance(node.value, ast.Call):
+            call = node.value
+            if isinstance(call.func, ast.Attribute) and isinstance(call.func.value, ast.Name):
+                owner = self.names.get(call.func.value.id)
+                if isinstance(owner, list) and len(call.args) == 1:
+                    item = self.value(call.args[0])
+                    if call.func.attr == "append":
+                        owner.append(item)
+                    elif call.func.attr == "extend":
+                        owner.extend(item if isinstance(item, list) else [UNKNOWN])
+
+    def value(self, node: ast.expr, env: dict[str, object] | None = None) -> object:
+        env = env or {}
+        if isinstance(node, ast.Constant):
+            return node.value
+        if isinstance(node, ast.Name):
+            return env.get(node.id, self.names.get(node.id, UNKNOWN))
+        if isinstance(node, (ast.List, ast.Tuple)):
+            return [self.value(e, env) for e in node.elts]
+        if isinstance(node, ast.BinOp):
+            left, right = self.value(node.left, env), self.value(node.right, env)
+            if isinstance(node.op, ast.Add):
+                return self._add(left, right)
+            if isinstance(node.op, ast.Mod) and isinstance(left, str):
+                operands = right if isinstance(right, list) else [right]
+                if all(isinstance(o, str) for o in operands) and re.fullmatch(
+                        r"(?:[^%]|%%|%s)*", left) and left.count("%s") == len(operands):
+                    return left % tuple(operands)
+            return UNKNOWN
+        if isinstance(node, ast.JoinedStr):
+            parts = []
+            for part in node.values:
+                piece = (self.value(part.value, env) if isinstance(part, ast.FormattedValue)
+                         and part.format_spec is None and part.conversion == -1
+                         else self.value(part, env))
+                if not isinstance(piece, str):
+                    return UNKNOWN
+                parts.append(piece)
+            return "".join(parts)
+        if isinstance(node, ast.ListComp) and len(node.generators) == 1:
+            return self._comprehension(node, env)
+        if isinstance(node, ast.Call):
+            return self._call(node, env)
+        return UNKNOWN
+
+    @staticmethod
+    def _add(left: object, right: object) -> object:
+        if isinstance(left, str) and isinstance(right, str):
+            return left + right
+        if isinstance(left, list) and isinstance(right, list):
+            return left + right
+        return UNKNOWN
+
+    def _comprehension(self, node: ast.ListComp, env: dict[str, object]) -> object:
+        generator = node.generators[0]
+        items = self.value(generator.iter, env)
+        if not isinstance(items, list) or not isinstance(generator.target, ast.Name) or (
+                generator.is_async) or len(items) > MAX_FILES:
+            return UNKNOWN
+        out = []
+        for item in items:
+            inner = {**env, generator.target.id: item}
+            tests = [self.value(test, inner) for test in generator.ifs]
+            if any(not isinstance(t, bool) for t in tests):
+                return UNKNOWN
+            if all(tests):
+                out.append(self.value(node.elt, inner))
+        return out
+
+    def _call(self, node: ast.Call, env: dict[str, object]) -> object:
+        args = [self.value(a, env) for a in node.args]
+        if isinstance(node.func, ast.Attribute) and node.func.attr in ("format", "join"):
+            text = self.value(node.func.value, env)
+            if isinstance(text, str):
+                return _str_method(text, node.func.attr, args, bool(node.keywords))
+        name = _dotted(node.func)
+        if name is None:
+            return UNKNOWN
+        head, _, rest = name.partition(".")
+        name = f"{self.aliases.get(head, head)}.{rest}" if rest else self.aliases.get(head, head)
+        keywords = {k.arg: self.value(k.value, env) for k in node.keywords if k.arg}
+        texts = [a for a in args if isinstance(a, str)]
+        if name in ("os.path.join", "posixpath.join") and args and len(texts) == len(args):
+            return posixpath.join(*texts)
+        if name in ("os.path.dirname", "os.path.basename") and len(args) == 1 and isinstance(
+                args[0], str):
+            return (posixpath.dirname if name.endswith("dirname") else posixpath.basename)(
+                args[0])
+        if name in ("os.path.isfile", "os.path.isdir") and len(args) == 1 and isinstance(
+                args[0], str) and not os.path.isabs(args[0]):
+            test = os.path.isfile if name.endswith("isfile") else os.path.isdir
+            return test(os.path.join(self.root, args[0]))
+        if name in ("glob.glob", "glob") and len(args) == 1 and isinstance(args[0], str):
+            return self._glob(args[0], keywords.get("recursive") is True)
+        if name in ("sorted", "list") and len(args) == 1 and isinstance(args[0], list):
+            strings = [a for a in args[0] if isinstance(a, str)]
+            if name == "sorted":
+                return sorted(strings) if len(strings) == len(args[0]) else UNKNOWN
+            return list(args[0])
+        return UNKNOWN
+
+    def _glob(self, pattern: str, recursive: bool) -> object:
+        """``glob`` as setup.py runs it, from the package folder; inside it only."""
+        if os.path.isabs(pattern) or ".." in pattern.split("/"):
+            return UNKNOWN
+        out: list[str] = []
+        for match in glob.iglob(pattern, root_dir=self.root, recursive=recursive):
+            out.append(match.replace(os.sep, "/"))
+            if len(out) > MAX_FILES:
+                return UNKNOWN
+        return list(sorted(out))
