@@ -5,6 +5,14 @@ to register (``lookupService`` answers one provider). A service link of ours is 
 as matched when the live provider of that service is one of our providers for it: our
 other providers of the same name are neither extra nor missing (the running system
 cannot show them).
+
+A parameter counts as set by our model when a launch file or a node sets it, except when
+it ends up deleted (``rospy.delete_param``, ``ros::param::del``,
+``NodeHandle::deleteParam``: write links with ``deletes``). Launch files set parameters
+before any node runs, so a parameter that some node deletes is gone at the end unless
+some node's last write to it is a set; deleting a namespace deletes what is under it.
+A node's writes are ordered by their place in one source file; when they are in several
+files their order is unknown and the parameter counts as set.
 """
 
 from __future__ import annotations
@@ -130,6 +138,32 @@ def _shadowed(ours: set[tuple[str, str]],
 
 
 def _leaf_parameters(config: dict[str, Any]) -> set[str]:
-    names = {p["name"] for p in config["parameters"] if p["writers"]}
+    deleted = _deleted_parameters(config.get("links", []))
+    names = {p["name"] for p in config["parameters"] if p["writers"]
+             and not any(p["name"] == d or p["name"].startswith(d.rstrip("/") + "/")
+                         for d in deleted)}
     return {name for name in names
             if not any(other.startswith(name.rstrip("/") + "/") for other in names)}
+
+
+def _deleted_parameters(links: list[dict[str, Any]]) -> set[str]:
+    """Parameters some node deletes and no node sets after (or without) deleting."""
+    writes: dict[str, dict[str, list[dict[str, Any]]]] = {}
+    for link in links:
+        if link["kind"] == "write":
+            writes.setdefault(link["name"], {}).setdefault(link["node"], []).append(link)
+    return {name for name, by_node in writes.items()
+            if any(w.get("deletes") for ws in by_node.values() for w in ws)
+            and not any(_sets_last(ws) for ws in by_node.values())}
+
+
+def _sets_last(writes: list[dict[str, Any]]) -> bool:
+    """Whether one node's last write to a parameter sets it (in doubt: yes)."""
+    if all(w.get("deletes") for w in writes):
+        return False
+    files = {(w.get("location") or {}).get("file") for w in writes}
+    if len(files) != 1 or None in files:
+        return True
+    last = max(writes, key=lambda w: ((w.get("location") or {}).get("line") or 0,
+                                      (w.get("location") or {}).get("column") or 0))
+    return not last.get("deletes")

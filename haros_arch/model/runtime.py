@@ -382,6 +382,15 @@ class ParamReadLink(_ParamLink):
 class ParamWriteLink(_ParamLink):
     KIND = "write"
 
+    # a write that deletes the parameter (rospy.delete_param, ros::param::del, ...)
+    JSON_VIEWS: ClassVar[dict[str, Callable[[Any], Any]]] = {
+        "deletes": lambda link: link.deletes,
+    }
+
+    @property
+    def deletes(self) -> bool:
+        return self.call is not None and self.call.deletes
+
 
 LINK_CLASSES: dict[str, type[Link]] = {
     cls.KIND: cls

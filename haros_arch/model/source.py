@@ -71,6 +71,9 @@ class PrimitiveCall:
     # ``~``, ``/robot``), when ``name`` was joined to it; roscpp remaps that namespace
     # before it resolves the name in it, so the graph resolves it first
     handle_namespace: str | None = None
+    # parameter writes that delete the parameter (rospy.delete_param, ros::param::del,
+    # NodeHandle::deleteParam)
+    deletes: bool = False
 
 
 @dataclass

@@ -72,6 +72,8 @@ class RosFunction:
     name_candidates: tuple[int, ...] = ()
     # searchParam: the name is looked up in the enclosing namespaces
     searched: bool = False
+    # deleteParam, ros::param::del: a parameter write that deletes it
+    deletes: bool = False
 
 
 NODE_HANDLE = "ros::NodeHandle"
@@ -104,7 +106,7 @@ ROSCPP: dict[tuple[str, str], RosFunction] = {
     (NODE_HANDLE, "hasParam"): RosFunction("read"),
     (NODE_HANDLE, "searchParam"): RosFunction("read", searched=True),
     (NODE_HANDLE, "setParam"): _PARAM_WRITE,
-    (NODE_HANDLE, "deleteParam"): RosFunction("write"),
+    (NODE_HANDLE, "deleteParam"): RosFunction("write", deletes=True),
     # parameters through ros::param
     ("ros::param", "get"): RosFunction(
         "read", type_from=("value",), type_arg=1, out_arg=1, on_handle=False),
@@ -116,7 +118,7 @@ ROSCPP: dict[tuple[str, str], RosFunction] = {
     ("ros::param", "has"): RosFunction("read", on_handle=False),
     ("ros::param", "search"): RosFunction("read", on_handle=False, searched=True),
     ("ros::param", "set"): RosFunction("write", type_from=("value",), type_arg=1, on_handle=False),
-    ("ros::param", "del"): RosFunction("write", on_handle=False),
+    ("ros::param", "del"): RosFunction("write", on_handle=False, deletes=True),
 }
 
 _IMAGE = "sensor_msgs/Image"

@@ -286,7 +286,8 @@ class CallFinder:
                 name_param=source[0] if source else None,
                 name_default=source[1] if source else None,
                 has_default=has_default, default=default,
-                searched=spec.searched, handle_namespace=handle_namespace))
+                searched=spec.searched, handle_namespace=handle_namespace,
+                deletes=spec.deletes))
             if "?" in name and PLACEHOLDER not in name:
                 self.diagnostics.append(diag.make(
                     "CPP_DYNAMIC_NAME", location, kind=spec.kind, name=name))

@@ -45,6 +45,7 @@ class PyFunction:
     fixed_qos: str | None = None  # a QoS preset name, for tf2 broadcasters
     special: str | None = None
     search: bool = False  # the name is searched up the namespaces (rospy.search_param)
+    deletes: bool = False  # a parameter write that deletes it (rospy.delete_param)
 
 
 @dataclass(frozen=True)

@@ -36,7 +36,7 @@ ROWS: dict[tuple[str, str], PyFunction] = {
     ("rospy", "search_param"): PyFunction("read", name=_PARAM_NAME, search=True),
     ("rospy", "set_param"): PyFunction(
         "write", name=_PARAM_NAME, value=Arg(1, "param_value")),
-    ("rospy", "delete_param"): PyFunction("write", name=_PARAM_NAME),
+    ("rospy", "delete_param"): PyFunction("write", name=_PARAM_NAME, deletes=True),
     # actions (actionlib; the action type is the spec's name without "Action")
     ("actionlib", "SimpleActionServer"): PyFunction(
         "action-server", type=Arg(1, "ActionSpec"), callback=Arg(2, "execute_cb")),

@@ -334,6 +334,7 @@ class Walker:
             if spec.kind == "declare":
                 ev.declared[base.name.removeprefix("~")] = value
         base.searched = spec.search
+        base.deletes = spec.deletes
         self._add(base)
 
     def _special(self, spec: PyFunction, call: ast.Call, frame: Frame, base: PrimitiveCall,
