@@ -31,6 +31,11 @@ Nothing fetched is committed and CI never runs this. To reproduce:
 
 It prints, per launch file, whether each side could run it, then the agreement per
 field over the nodes both sides found.
+
+The real side always runs in the install-like tree. Ours does too, unless
+``--ours-from-source``: then ours reads the source folders as they are, finding each
+package's share folder through its install rules (``haros_arch.share``), starts each
+launch file by its installed name, and writes path values as installed before comparing.
 """
 
 from __future__ import annotations
@@ -374,6 +379,51 @@ def run_ours(path: str, workspace: Any, env: dict[str, str]) -> dict[str, Any]:
     return {"nodes": nodes, "diagnostics": [str(d) for d in model.diagnostics]}
 
 
+def share_form(source: str, workspace: Any) -> str:
+    """A source launch file named as ``ros2 launch pkg file`` finds it: through the
+    package's share folder (as ``Workspace.find`` gives it), when installed."""
+    from haros_arch.share import share_map
+
+    package = workspace.package_of(source)
+    if package is None:
+        return source
+    real = os.path.realpath(source)
+    for relative, file in share_map(package, workspace).items():
+        if os.path.realpath(file) == real:
+            return os.path.join(package.root, relative)
+    return source
+
+
+def as_installed(result: dict[str, Any], workspace: Any, installed: dict[str, str],
+                 prefix: str) -> dict[str, Any]:
+    """Our values from a source run, with paths into packages written as installed."""
+    from haros_arch.share import share_source
+
+    roots = sorted(((p.root, os.path.join(prefix, "share", n))
+                    for n, p in workspace.packages.items()), key=lambda r: -len(r[0]))
+
+    def convert(value: Any) -> Any:
+        if isinstance(value, list):
+            return [convert(v) for v in value]
+        if not isinstance(value, str):
+            return value
+        if os.path.isabs(value):
+            file = installed.get(os.path.realpath(share_source(workspace, value)))
+            if file is not None:
+                return file
+        for root, share in roots:
+            value = value.replace(root + os.sep, share + os.sep)
+            if value == root:
+                value = share
+        return value
+
+    for node in result["nodes"]:
+        node["params"] = {k: convert(v) for k, v in node["params"].items()}
+        node["args"] = convert(node["args"])
+        node["remaps"] = convert(node["remaps"])
+    return result
+
+
 def _norm(value: Any) -> Any:
     if isinstance(value, str) and os.path.isabs(value) and os.path.exists(value):
         return os.path.realpath(value)
@@ -451,6 +501,10 @@ def main() -> int:
                         "(default SRC/launch/launch/share/launch)")
     parser.add_argument("--env", action="append", default=[], metavar="NAME=VALUE",
                         help="environment for both sides (e.g. TURTLEBOT3_MODEL=burger)")
+    parser.add_argument("--ours-from-source", action="store_true",
+                        help="run our side on the source folders (share folders from the "
+                        "packages' install rules, haros_arch.share) instead of the "
+                        "install-like tree; our path values are compared as installed")
     parser.add_argument("-v", "--verbose", action="store_true")
     options = parser.parse_args()
     sys.path.insert(0, os.path.join(os.path.dirname(__file__), ".."))
@@ -495,7 +549,11 @@ def main() -> int:
                 continue
             real = run_real(options.real_python, standins, path, packages, extra_path,
                             given_env)
-            ours = run_ours(path, workspace, ours_env)
+            if options.ours_from_source:
+                ours = as_installed(run_ours(share_form(source, sources), sources, ours_env),
+                                    sources, installed, prefix)
+            else:
+                ours = run_ours(path, workspace, ours_env)
             tally["files"] += 1
             if "error" in real:
                 tally["files.real_failed"] += 1
