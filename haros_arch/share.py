@@ -37,6 +37,7 @@ from .workspace import Workspace
 
 MAX_FILES = 20_000  # files in one package's share map
 MAX_DEPTH = 16  # folder depth walked under an installed folder
+MAX_VISITED = 100_000  # files looked at under one installed folder
 _KEYWORDS = frozenset((
     "DESTINATION", "TYPE", "RENAME", "FILE_PERMISSIONS", "DIRECTORY_PERMISSIONS",
     "PERMISSIONS", "USE_SOURCE_PERMISSIONS", "OPTIONAL", "MESSAGE_NEVER", "CONFIGURATIONS",
@@ -99,7 +100,7 @@ def installed_files(install: Install, package: Package) -> Iterator[tuple[str, s
             continue  # outside the package: not read
         if install.form == "DIRECTORY":
             base = sub if item.endswith("/") else posixpath.join(sub, os.path.basename(source))
-            yield from _directory(source, base, options)
+            yield from _directory(source, base, options, root)
         elif os.path.isfile(source):
             rename = options.rename if len(items) == 1 else None
             yield posixpath.normpath(posixpath.join(sub, rename or os.path.basename(source))), \
@@ -166,28 +167,30 @@ def _glob_regex(pattern: str) -> re.Pattern[str]:
     return re.compile("/" + "".join(out) + "$")
 
 
-def _directory(folder: str, base: str, options: _Options) -> Iterator[tuple[str, str]]:
+def _directory(folder: str, base: str, options: _Options,
+               root: str) -> Iterator[tuple[str, str]]:
     """The files ``install(DIRECTORY folder ...)`` installs, under ``base``."""
     if not os.path.isdir(folder):
         return
     top = folder.count(os.sep)
-    count = 0
+    seen = 0
     for current, dirs, names in os.walk(folder):
         if current.count(os.sep) - top >= MAX_DEPTH:
             dirs[:] = []
         dirs[:] = sorted(d for d in dirs if not options.excluded(
             os.path.join(current, d).replace(os.sep, "/")))
         for name in sorted(names):
+            seen += 1
+            if seen > MAX_VISITED:
+                return
             path = os.path.join(current, name)
             posix = path.replace(os.sep, "/")
             if options.excluded(posix) or (options.files_matching and
                                            not options.matched(posix)):
                 continue
-            if not os.path.isfile(path):
-                continue
-            count += 1
-            if count > MAX_FILES:
-                return
+            real = os.path.realpath(path)
+            if not real.startswith(root + os.sep) or not os.path.isfile(real):
+                continue  # a link out of the package, or not a file
             relative = os.path.relpath(path, folder).replace(os.sep, "/")
             yield posixpath.normpath(posixpath.join(base, relative)), path
 

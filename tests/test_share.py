@@ -300,3 +300,14 @@ def test_project_names_launch_files_where_they_are_installed(tmp_path: Path) -> 
     codes = {d.code for c in model.configurations for d in c.diagnostics} | {
         d.code for d in model.diagnostics}
     assert "LAUNCH_FILE_MISSING" not in codes
+
+
+def test_links_out_of_the_package_are_not_mapped(write_tree) -> None:
+    ws = cmake_package(write_tree, """
+        project(pkg)
+        install(DIRECTORY config DESTINATION share/${PROJECT_NAME})
+        """, {"config/own.yaml": "a: 1\n", "../secret.yaml": "b: 2\n"})
+    root = ws.packages["pkg"].root
+    os.symlink(os.path.join(root, "..", "secret.yaml"), os.path.join(root, "config", "s.yaml"))
+    assert mapped(ws, "pkg") == {"config/own.yaml": "pkg/config/own.yaml",
+                                 "package.xml": "pkg/package.xml"}
