@@ -10,8 +10,9 @@ Steps (each can be run alone; see README.md beside this file):
   build    catkin_make the workspace with Debian's catkin
   capture  for each configuration: roscore + roslaunch on a fresh loopback port, wait until
            the graph settles, `haros-arch capture` to live/NAME.json, shut everything down
-  score    write projects/NAME.yaml, `haros-arch extract` it, compare with live/NAME.json,
-           write results.md and results.json
+  score    write projects/NAME.yaml, `haros-arch extract` it, compare with live/NAME.json;
+           again with the hints of hints.yaml (projects_hints/NAME.yaml); write
+           results.md and results.json (both tables: without hints, with hints)
 """
 
 from __future__ import annotations
@@ -188,6 +189,12 @@ def capture_all(ws: Path, configs: list[dict[str, Any]], timeout: float) -> None
 
 # ---- score ---------------------------------------------------------------------------
 
+PASSES = ("without_hints", "with_hints")
+# per pass: the folder of project files (here and in WS) and of models (in WS)
+PROJECTS = {"without_hints": "projects", "with_hints": "projects_hints"}
+MODELS = {"without_hints": "haros_models", "with_hints": "haros_models_hints"}
+
+
 def project_data(config: dict[str, Any]) -> dict[str, Any]:
     """The project file for one configuration; it lives in WS/haros_projects/."""
     spec: dict[str, Any] = {"launch": [config["launch"]]}
@@ -198,49 +205,112 @@ def project_data(config: dict[str, Any]) -> dict[str, Any]:
             "configurations": {config["name"]: spec}}
 
 
-def score_all(ws: Path, configs: list[dict[str, Any]], timeout: float) -> None:
-    projects, models = HERE / "projects", ws / "haros_models"
-    ws_projects = ws / "haros_projects"
-    for folder in (projects, models, ws_projects):
+def load_hints() -> dict[str, Any]:
+    """hints.yaml: global ``nodes:`` hints and per-configuration ``hints:``."""
+    with open(HERE / "hints.yaml") as handle:
+        data = yaml.safe_load(handle) or {}
+    # plain data (no shared objects), so that safe_dump writes no YAML aliases
+    return json.loads(json.dumps(data))
+
+
+def hinted_project(config: dict[str, Any], hints: dict[str, Any],
+                   model: dict[str, Any] | None) -> dict[str, Any] | None:
+    """The project with hints: the node hints of the node types this configuration runs
+    (as extracted without hints) and its own configuration hints; None when none apply."""
+    name = config["name"]
+    launched = {n.get("node") for c in (model or {}).get("configurations", [])
+                for n in c.get("nodes", [])}
+    nodes = {t: h for t, h in (hints.get("nodes") or {}).items() if t in launched}
+    own = (hints.get("configurations") or {}).get(name)
+    if not nodes and not own:
+        return None
+    data = project_data(config)
+    if own:
+        data["configurations"][name]["hints"] = own
+    if nodes:
+        data["nodes"] = nodes
+    return data
+
+
+def _extract_and_compare(ws: Path, name: str, data: dict[str, Any], which: str,
+                         live: dict[str, Any], timeout: float
+                         ) -> tuple[dict[str, Any], dict[str, Any] | None]:
+    """Write the project file (here and in WS), extract it, compare with the capture."""
+    text = "%YAML 1.1\n---\n" + yaml.safe_dump(data, sort_keys=False)
+    here, ws_projects = HERE / PROJECTS[which], ws / f"haros_{PROJECTS[which]}"
+    models = ws / MODELS[which]
+    for folder in (here, ws_projects, models):
         folder.mkdir(parents=True, exist_ok=True)
+    (here / f"{name}.yaml").write_text(text)
+    (ws_projects / f"{name}.yaml").write_text(text)
+    model_file = models / f"{name}.json"
+    result: dict[str, Any] = {"configuration": name, "hints": which == "with_hints"}
+    model = None
+    started = time.monotonic()
+    try:
+        model_file.unlink(missing_ok=True)
+        done = subprocess.run([*HAROS, "extract", str(ws_projects / f"{name}.yaml"),
+                               "-o", str(model_file), "-q"], capture_output=True,
+                              text=True, timeout=timeout)
+        if not model_file.exists() or done.returncode not in (0, 1):
+            raise RuntimeError(f"extract exit {done.returncode}: "
+                               f"{(done.stderr or done.stdout).strip()[-300:]}")
+        model = json.loads(model_file.read_text())
+        result.update(compare(model, live, name).to_data())
+    except (RuntimeError, CompareError, subprocess.SubprocessError, ValueError) as err:
+        result["error"] = str(err)
+    result["extract_seconds"] = round(time.monotonic() - started, 1)
+    return result, model
+
+
+def _previous_results(results_file: Path) -> dict[str, dict[str, dict[str, Any]]]:
+    if not results_file.exists():
+        return {which: {} for which in PASSES}
+    data = json.loads(results_file.read_text())
+    if isinstance(data, list):  # written before the with-hints pass existed
+        data = {"without_hints": data}
+    return {which: {r["configuration"]: r for r in data.get(which, [])} for which in PASSES}
+
+
+def score_all(ws: Path, configs: list[dict[str, Any]], timeout: float) -> None:
+    """Score each configuration twice: the extractor alone, and with hints.yaml."""
     runs_file = HERE / "live" / "runs.json"
     runs = json.loads(runs_file.read_text()) if runs_file.exists() else {}
     results_file = HERE / "results.json"
-    previous = {r["configuration"]: r for r in json.loads(results_file.read_text())} \
-        if results_file.exists() else {}
+    previous = _previous_results(results_file)
+    hints = load_hints()
     for config in configs:
         name = config["name"]
         live_file = HERE / "live" / f"{name}.json"
         if not live_file.exists():
             log(f"score {name}: no capture, skipped")
             continue
-        text = "%YAML 1.1\n---\n" + yaml.safe_dump(project_data(config), sort_keys=False)
-        (projects / f"{name}.yaml").write_text(text)
-        (ws_projects / f"{name}.yaml").write_text(text)
-        model_file = models / f"{name}.json"
-        result: dict[str, Any] = {"configuration": name, "run": runs.get(name)}
-        started = time.monotonic()
-        try:
-            done = subprocess.run([*HAROS, "extract", str(ws_projects / f"{name}.yaml"),
-                                   "-o", str(model_file), "-q"], capture_output=True,
-                                  text=True, timeout=timeout)
-            if not model_file.exists() or done.returncode not in (0, 1):
-                raise RuntimeError(f"extract exit {done.returncode}: "
-                                   f"{(done.stderr or done.stdout).strip()[-300:]}")
-            model = json.loads(model_file.read_text())
-            result.update(compare(model, json.loads(live_file.read_text()), name).to_data())
-        except (RuntimeError, CompareError, subprocess.SubprocessError, ValueError) as err:
-            result["error"] = str(err)
-        result["extract_seconds"] = round(time.monotonic() - started, 1)
-        previous[name] = result
-        log(f"score {name}: {_summary(result)}")
+        live = json.loads(live_file.read_text())
+        plain, model = _extract_and_compare(ws, name, project_data(config),
+                                            "without_hints", live, timeout)
+        plain["run"] = runs.get(name)
+        previous["without_hints"][name] = plain
+        log(f"score {name}: {_summary(plain)}")
+        hinted_data = hinted_project(config, hints, model)
+        stale = HERE / PROJECTS["with_hints"] / f"{name}.yaml"
+        if hinted_data is None:
+            stale.unlink(missing_ok=True)
+            hinted = {**plain, "hints": False}
+        else:
+            hinted, _model = _extract_and_compare(ws, name, hinted_data, "with_hints", live,
+                                                  timeout)
+            hinted["run"] = runs.get(name)
+            log(f"score {name} with hints: {_summary(hinted)}")
+        previous["with_hints"][name] = hinted
     order = [c["name"] for c in configurations()]
-    results = [previous[n] for n in order if n in previous]
+    results = {which: [previous[which][n] for n in order if n in previous[which]]
+               for which in PASSES}
     results_file.write_text(json.dumps(results, indent=1) + "\n")
     unscored = [f"`{c['name']}` ({(runs.get(c['name']) or {}).get('error') or 'no capture'})"
-                for c in configurations() if c["name"] not in previous]
+                for c in configurations() if c["name"] not in previous["without_hints"]]
     header = _header() + ([f"Not scored: {'; '.join(unscored)}."] if unscored else [])
-    (HERE / "results.md").write_text(scoring.markdown(results, header))
+    (HERE / "results.md").write_text(
+        scoring.markdown(results["without_hints"], results["with_hints"], header))
     log(f"wrote {HERE / 'results.md'}")
 
 

@@ -44,13 +44,10 @@ def _cell(score: dict[str, Any] | None) -> str:
     return f"{score['precision']:.2f}/{score['recall']:.2f} ({score['matched']}/{score['live']})"
 
 
-def markdown(results: list[dict[str, Any]], header: list[str]) -> str:
-    """results.md: overall table, per-configuration table, then every miss."""
-    lines = ["# Accuracy benchmark: results", "", *header, ""]
+def _overall(results: list[dict[str, Any]]) -> list[str]:
     summed = totals(results)
-    lines += ["## Overall (micro-averaged over all scored configurations)", "",
-              "| element | matched | extracted | live | precision | recall |",
-              "|---|---:|---:|---:|---:|---:|"]
+    lines = ["| element | matched | extracted | live | precision | recall |",
+             "|---|---:|---:|---:|---:|---:|"]
     for kind in KINDS:
         s = summed[kind]
         lines.append(f"| {kind} | {s['matched']:.0f} | {s['ours']:.0f} | {s['live']:.0f} | "
@@ -61,20 +58,26 @@ def markdown(results: list[dict[str, Any]], header: list[str]) -> str:
     lines += [f"| **all** | {all_matched:.0f} | {all_ours:.0f} | {all_live:.0f} | "
               f"{all_matched / all_ours if all_ours else 1:.3f} | "
               f"{all_matched / all_live if all_live else 1:.3f} |", ""]
-    perfect = sum(1 for r in results if r.get("scores") and all(
+    return lines
+
+
+def _perfect(results: list[dict[str, Any]]) -> int:
+    return sum(1 for r in results if r.get("scores") and all(
         s["precision"] == 1 and s["recall"] == 1 for s in r["scores"]))
-    lines += [f"{len(results)} configurations; {perfect} match the running system exactly.",
-              "", "## Per configuration", "",
-              "A cell is `precision/recall (matched/live)`, or `N ✓` when all N agree.", "",
-              "| configuration | run | " + " | ".join(SHORT[k] for k in KINDS) + " |",
-              "|---|---|" + "---|" * len(KINDS)]
+
+
+def _table(results: list[dict[str, Any]]) -> list[str]:
+    lines = ["| configuration | run | " + " | ".join(SHORT[k] for k in KINDS) + " |",
+             "|---|---|" + "---|" * len(KINDS)]
     for result in results:
         cells = [_cell(_score(result, kind)) for kind in KINDS]
         lines.append(f"| {result['configuration']} | {_run_note(result)} | "
                      + " | ".join(cells) + " |")
-    lines += ["", "## Every difference", "",
-              "`missing`: on the running system, not in our model (hurts recall). "
-              "`extra`: in our model, not on the running system (hurts precision).", ""]
+    return [*lines, ""]
+
+
+def _differences(results: list[dict[str, Any]]) -> list[str]:
+    lines: list[str] = []
     for result in results:
         diffs = []
         if result.get("error"):
@@ -84,8 +87,47 @@ def markdown(results: list[dict[str, Any]], header: list[str]) -> str:
                 for item in score[what]:
                     diffs.append(f"- {score['kind']} {what}: `{item}`")
         if diffs:
-            lines += [f"### {result['configuration']}", "", *diffs, ""]
-    return "\n".join(lines) + "\n"
+            lines += [f"#### {result['configuration']}", "", *diffs, ""]
+    return lines
+
+
+def markdown(plain: list[dict[str, Any]], hinted: list[dict[str, Any]],
+             header: list[str]) -> str:
+    """results.md: both overall tables (without / with hints), per-configuration tables,
+    then every difference."""
+    with_hints = [r for r in hinted if r.get("hints")]
+    names = {r["configuration"] for r in with_hints}
+    lines = ["# Accuracy benchmark: results", "", *header, "",
+             "Each configuration is scored twice. **Without hints**: the project file has "
+             "no hints (`projects/NAME.yaml`), the extractor alone. **With hints**: the "
+             "project file adds the hints of `hints.yaml` (`projects_hints/NAME.yaml`), "
+             "written from the packages' documentation and sources, for what only exists "
+             f"at run time; {len(with_hints)} configurations get hints "
+             f"({', '.join(f'`{r}`' for r in sorted(names)) or 'none'}), the others have "
+             "the same project file and score in both passes.", "",
+             "## Overall, without hints (the extractor alone)", "",
+             "Micro-averaged over all scored configurations.", "",
+             *_overall(plain),
+             f"{len(plain)} configurations; {_perfect(plain)} match the running system "
+             "exactly.", "",
+             "## Overall, with hints (`hints.yaml`)", "",
+             *_overall(hinted),
+             f"{len(hinted)} configurations; {_perfect(hinted)} match the running system "
+             "exactly.", "",
+             "## Per configuration, without hints", "",
+             "A cell is `precision/recall (matched/live)`, or `N ✓` when all N agree.", "",
+             *_table(plain),
+             "## Per configuration, with hints (only those that get hints)", "",
+             *_table(with_hints),
+             "## Every difference", "",
+             "`missing`: on the running system, not in our model (hurts recall). "
+             "`extra`: in our model, not on the running system (hurts precision).", "",
+             "### With hints (what remains; configurations without hints are the same "
+             "without them)", "",
+             *_differences(hinted),
+             "### Without hints, the configurations that get hints", "",
+             *_differences([r for r in plain if r["configuration"] in names])]
+    return "\n".join(lines).rstrip("\n") + "\n"
 
 
 def _run_note(result: dict[str, Any]) -> str:
