@@ -6,6 +6,11 @@ const DATA = JSON.parse(document.getElementById('haros-data').textContent);
 const MODEL = DATA.model || {};
 const CONFIGS = MODEL.configurations || [];
 
+// Above this many vertices (after filters) a configuration opens with its namespaces
+// collapsed into boxes.
+const BIG = 60;
+const READABLE = 0.6;  // the least zoom an opened namespace is shown at
+
 const app = {
   sources: DATA.sources || {},
   findings: DATA.findings || [],
@@ -50,23 +55,29 @@ function skeleton() {
 
   ui.svg = d3.select(el('div')).append('svg').attr('id', 'graph');
   const defs = ui.svg.append('defs');
-  for (const kind of ['topic', 'service', 'action', 'parameter']) {
-    defs.append('marker').attr('id', 'arrow-' + kind).attr('class', 'arrow k-' + kind)
-      .attr('viewBox', '0 -5 10 10').attr('refX', 9).attr('refY', 0)
-      .attr('markerWidth', 7).attr('markerHeight', 7).attr('orient', 'auto')
-      .append('path').attr('d', 'M0,-5L10,0L0,5Z');
+  // Each arrowhead also in a dimmed variant, which report.css puts on dimmed edges.
+  for (const kind of ['topic', 'service', 'action', 'parameter', 'aggregate']) {
+    for (const dim of ['', '-dim']) {
+      const marker = defs.append('marker').attr('id', 'arrow-' + kind + dim)
+        .attr('class', 'arrow k-' + kind + (dim ? ' dim' : ''))
+        .attr('viewBox', '0 -5 10 10').attr('refX', 9).attr('refY', 0).attr('orient', 'auto');
+      if (kind === 'aggregate') marker.attr('markerUnits', 'userSpaceOnUse').attr('markerWidth', 12).attr('markerHeight', 12);
+      else marker.attr('markerWidth', 7).attr('markerHeight', 7);
+      marker.append('path').attr('d', 'M0,-5L10,0L0,5Z');
+    }
   }
   ui.viewport = ui.svg.append('g').attr('class', 'viewport');
   ui.zoom = d3.zoom().scaleExtent([0.05, 4]).on('zoom', event => ui.viewport.attr('transform', event.transform));
   ui.svg.call(ui.zoom).on('dblclick.zoom', null).on('click', () => clearSelection());
   ui.packages = el('div', {id: 'packages', hidden: true});
-  ui.stage = el('div', {id: 'stage'}, ui.svg.node(), legend(), ui.packages);
+  ui.hint = el('div', {id: 'hint', hidden: true});
+  ui.stage = el('div', {id: 'stage'}, ui.svg.node(), ui.hint, legend(), ui.packages);
   ui.panel = el('aside', {id: 'panel'});
   document.body.append(header, el('main', {}, side, ui.stage, ui.panel));
 
   ui.config.addEventListener('change', () => setConfig(Number(ui.config.value)));
   ui.layout.addEventListener('change', () => { app.layout = ui.layout.value; renderGraph(); });
-  ui.fit.addEventListener('click', fit);
+  ui.fit.addEventListener('click', () => fit());
   ui.search.addEventListener('input', () => search(false));
   ui.search.addEventListener('keydown', event => { if (event.key === 'Enter') search(true); });
   ui.tabGraph.addEventListener('click', () => showTab('graph'));
@@ -103,6 +114,11 @@ function setConfig(i) {
   app.index = indexConfiguration(config);
   app.options.collapsed.clear();
   app.selected = null;
+  app.focus = null;
+  // A big configuration opens with every namespace collapsed into a box.
+  const size = buildView(app.index, app.options).vertices.length;
+  app.big = size > BIG ? size : 0;
+  if (app.big) for (const name of namespaceNames()) app.options.collapsed.add(name);
   renderLists();
   renderGraph();
   if (!ui.packages.hidden) renderPackages();
@@ -120,8 +136,13 @@ function renderLists() {
   ui.diagnostics.replaceChildren(el('h3', {}, `Extraction diagnostics (${diags.length})`),
     ...diags.slice(0, 500).map(d => diagnosticItem(d, app)),
     ...(diags.length > 500 ? [el('p', {class: 'muted'}, `${diags.length - 500} more not listed`)] : []));
-  const groups = [...new Set([...app.index.entities.values()].map(e => e.group).filter(Boolean))].sort(compareText);
-  ui.namespaces.replaceChildren(el('h3', {}, 'Namespaces'), ...(groups.length ? groups.map(name => {
+  const groups = namespaceNames();
+  const all = open => el('a', {href: '#', class: 'all', 'data-all': open ? 'open' : 'collapse', onclick: event => {
+    event.preventDefault(); setCollapsed(open ? [] : groups);
+  }}, open ? 'open all' : 'collapse all');
+  ui.namespaces.replaceChildren(el('h3', {}, 'Namespaces'),
+    ...(groups.length > 1 ? [el('div', {class: 'all-row'}, all(true), ' \u00b7 ', all(false))] : []),
+    ...(groups.length ? groups.map(name => {
     const box = el('input', {type: 'checkbox', 'data-namespace': name});
     box.checked = app.options.collapsed.has(name);
     box.addEventListener('change', () => toggleCollapse(name));
@@ -129,35 +150,75 @@ function renderLists() {
   }) : [el('p', {class: 'muted'}, 'everything is in /')]));
 }
 
+function namespaceNames() {
+  return [...new Set([...app.index.entities.values()].map(e => e.group).filter(Boolean))].sort(compareText);
+}
+
+// Opening a namespace lays out its content and zooms to it; the others stay as they are.
 function toggleCollapse(name) {
   const set = app.options.collapsed;
-  if (set.has(name)) set.delete(name); else set.add(name);
-  for (const box of ui.namespaces.querySelectorAll('input')) box.checked = set.has(box.getAttribute('data-namespace'));
+  const opening = set.has(name);
+  if (opening) set.delete(name); else set.add(name);
+  syncCollapsed();
+  renderGraph(opening ? name : null);
+}
+
+function setCollapsed(names) {
+  app.options.collapsed.clear();
+  for (const name of names) app.options.collapsed.add(name);
+  syncCollapsed();
   renderGraph();
 }
 
-function renderGraph() {
+function syncCollapsed() {
+  const set = app.options.collapsed;
+  for (const box of ui.namespaces.querySelectorAll('input')) box.checked = set.has(box.getAttribute('data-namespace'));
+}
+
+function showHint() {
+  const shut = app.options.collapsed.size;
+  ui.hint.hidden = !shut || !ui.packages.hidden;
+  if (!shut) return;
+  const total = namespaceNames().length;
+  ui.hint.replaceChildren(
+    el('strong', {}, 'Click a namespace to open it.'), ' ',
+    app.big && shut === total ? `This configuration has ${app.big.toLocaleString('en')} elements, so its ${total} namespaces start collapsed; ` +
+      'each box counts what it holds, and a thick arrow stands for every link between two boxes (hover for the count). ' +
+      'Search + Enter opens the namespace of a name. '
+      : `${shut} of ${total} namespaces collapsed. `,
+    el('a', {href: '#', id: 'open-all', onclick: event => { event.preventDefault(); setCollapsed([]); }}, 'open all'));
+}
+
+function renderGraph(opened) {
   if (app.sim) { app.sim.stop(); app.sim = null; }
   app.view = buildView(app.index, app.options);
   const handlers = {
     click: v => v.kind === 'namespace' ? toggleCollapse(v.name) : app.select(v.id, false),
     collapse: toggleCollapse,
   };
-  layeredLayout(app.view.vertices, app.view.edges);
+  const stage = ui.svg.node().getBoundingClientRect();
+  layeredLayout(app.view.vertices, app.view.edges, {aspect: stage.width && stage.height ? stage.width / stage.height : 1.6});
   app.drawn = drawGraph(ui.viewport, app.view, handlers);
   if (app.layout === 'force') app.sim = forceLayout(app.view.vertices, app.view.edges, () => app.drawn.update());
-  fit();
+  const inside = opened && app.layout !== 'force' ? app.view.vertices.filter(v => v.group === opened) : [];
+  showHint();
+  if (inside.length) fit(inside, READABLE); else fit();
   reapplyFocus();
 }
 
-function fit() {
-  const vs = app.view ? app.view.vertices : [];
+// Fit these vertices (or all) to the stage; never below scale `least`, then showing the
+// start (left, top) of what is fitted: data flows from there.
+function fit(only, least = 0) {
+  const vs = only || (app.view ? app.view.vertices : []);
   const box = ui.svg.node().getBoundingClientRect();
   if (!vs.length || !box.width) return;
   const x0 = Math.min(...vs.map(v => v.x - v.w / 2)) - 40, x1 = Math.max(...vs.map(v => v.x + v.w / 2)) + 40;
   const y0 = Math.min(...vs.map(v => v.y - v.h / 2)) - 50, y1 = Math.max(...vs.map(v => v.y + v.h / 2)) + 40;
-  const k = Math.min(1.4, box.width / (x1 - x0), box.height / (y1 - y0));
-  const t = d3.zoomIdentity.translate(box.width / 2 - k * (x0 + x1) / 2, box.height / 2 - k * (y0 + y1) / 2).scale(k);
+  const top = ui.hint.hidden ? 0 : ui.hint.offsetHeight + 8;  // keep clear of the hint
+  const k = Math.max(least, Math.min(1.4, box.width / (x1 - x0), (box.height - top) / (y1 - y0)));
+  const tx = k * (x1 - x0) > box.width ? -k * x0 : box.width / 2 - k * (x0 + x1) / 2;
+  const ty = k * (y1 - y0) > box.height - top ? top - k * y0 : top + (box.height - top) / 2 - k * (y0 + y1) / 2;
+  const t = d3.zoomIdentity.translate(tx, ty).scale(k);
   ui.svg.call(ui.zoom.transform, t);
 }
 
@@ -191,6 +252,11 @@ function reapplyFocus() {
 app.select = (id, centre) => {
   const entity = app.index.entities.get(id);
   if (!entity) return;
+  if (centre && app.options.collapsed.has(entity.group)) {
+    app.options.collapsed.delete(entity.group);
+    syncCollapsed();
+    renderGraph();
+  }
   app.selected = id;
   const ids = new Set([id]);
   for (const entry of entity.links) { ids.add(entry.node.id); ids.add(entry.resource.id); }
@@ -249,6 +315,7 @@ function showTab(name) {
   ui.packages.hidden = !packages;
   ui.svg.style('display', packages ? 'none' : null);
   document.getElementById('legend').hidden = packages;
+  showHint();
   if (packages) renderPackages();
 }
 

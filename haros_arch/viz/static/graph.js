@@ -15,6 +15,7 @@ const USERS = {
 const COLLECTIONS = {node: 'nodes', topic: 'topics', service: 'services', action: 'actions', parameter: 'parameters'};
 const INFRA = /^(.*\/)?(rosout|rosout_agg|tf|tf_static)$/;
 const CHAR_W = 6.7;
+const SMALL_W = 6.1;
 
 function entityId(kind, item) {
   return item.id || (kind + ':' + item.name);
@@ -91,13 +92,16 @@ function buildView(index, options) {
     if (e.group && options.collapsed.has(e.group)) {
       const id = 'namespace:' + e.group;
       if (!vertices.has(id)) vertices.set(id, makeVertex({id, kind: 'namespace', name: e.group, group: '', members: []}));
-      vertices.get(id).entity.members.push(e);
       return vertices.get(id);
     }
     if (!vertices.has(e.id)) vertices.set(e.id, makeVertex(e));
     return vertices.get(e.id);
   };
-  for (const e of index.entities.values()) if (!hidden(e)) vertexFor(e);
+  for (const e of index.entities.values()) {
+    if (hidden(e)) continue;
+    const v = vertexFor(e);
+    if (v.kind === 'namespace') v.entity.members.push(e);
+  }
   for (const entry of index.links) {
     if (hidden(entry.node) || hidden(entry.resource)) continue;
     const n = vertexFor(entry.node), r = vertexFor(entry.resource);
@@ -109,6 +113,7 @@ function buildView(index, options) {
   }
   for (const edge of edges.values()) {
     edge.conditional = edge.links.every(l => (l.link.conditions || []).length > 0);
+    edge.aggregate = edge.source.kind === 'namespace' || edge.target.kind === 'namespace';
   }
   let list = [...vertices.values()];
   if (options.hideDisconnected) {
@@ -116,19 +121,33 @@ function buildView(index, options) {
     for (const edge of edges.values()) { used.add(edge.source); used.add(edge.target); }
     list = list.filter(v => used.has(v));
   }
-  for (const v of list) if (v.kind === 'namespace') v.label = v.name + '  (' + v.entity.members.length + ')';
   for (const v of list) {
-    if (v.kind !== 'namespace' && v.group && v.name.startsWith(v.group)) v.label = v.name.slice(v.group.length);
+    if (v.kind === 'namespace') v.counts = memberCounts(v.entity.members);
+    else if (v.group && v.name.startsWith(v.group)) v.label = v.name.slice(v.group.length);
   }
-  for (const v of list) v.w = Math.max(v.kind === 'parameter' ? 50 : 70, v.label.length * CHAR_W + 28);
+  for (const v of list) {
+    v.w = Math.max(v.kind === 'parameter' ? 50 : 70, v.label.length * CHAR_W + 28,
+      ...(v.counts || []).map(line => line.length * SMALL_W + 28));
+  }
   return {vertices: list, edges: [...edges.values()]};
 }
 
 function makeVertex(e) {
   return {
     id: e.id, kind: e.kind, name: e.name, group: e.group, entity: e, label: e.name,
-    w: 0, h: e.kind === 'parameter' ? 22 : 28, x: 0, y: 0,
+    w: 0, h: e.kind === 'parameter' ? 22 : e.kind === 'namespace' ? 56 : 28, x: 0, y: 0,
   };
+}
+
+const PLURAL = {node: 'nodes', topic: 'topics', service: 'services', action: 'actions', parameter: 'parameters'};
+
+// What a collapsed namespace holds (as drawn), in two lines: "10 nodes · 34 topics",
+// "3 services · 10 parameters".
+function memberCounts(members) {
+  const n = new Map();
+  for (const m of members) n.set(m.kind, (n.get(m.kind) || 0) + 1);
+  const say = kinds => kinds.filter(k => n.get(k)).map(k => `${n.get(k)} ${n.get(k) === 1 ? k : PLURAL[k]}`).join(' \u00b7 ');
+  return [say(['node', 'topic']), say(['service', 'action', 'parameter'])].filter(Boolean);
 }
 
 // ---- drawing -------------------------------------------------------------------------
@@ -151,12 +170,43 @@ function roundedRect(w, h, r) {
     `L${-w},${-h + r} A${r},${r} 0 0 1 ${-w + r},${-h} Z`;
 }
 
+// In the layered layout (e.points set) an edge leaves the side of its source facing its
+// target, runs straight to the edge of the source's column, through every column it
+// crosses at its dummy's height, and into the target the same way: it only bends in the
+// gaps between columns (one smooth cubic per gap, horizontal at both ends), so it never
+// runs across a vertex of a column. Without points (force layout, the grid of collapsed
+// namespaces) it is one free curve.
 function edgePath(e) {
   const s = e.source, t = e.target;
+  if (!e.points) return curveThrough(freeEnds(s, t), 30);
+  const mid = e.points;
+  const firstX = mid.length ? mid[0][0] : t.x, lastX = mid.length ? mid[mid.length - 1][0] : s.x;
+  if (!mid.length && Math.abs(t.x - s.x) < 1) {  // same column: round the right side
+    const x1 = s.x + s.w / 2, x2 = t.x + t.w / 2 + 4, bulge = Math.max(x1, x2) + 50;
+    return `M${x1},${s.y} C${bulge},${s.y} ${bulge},${t.y} ${x2},${t.y}`;
+  }
+  const out = firstX >= s.x ? 1 : -1, into = t.x >= lastX ? 1 : -1;
+  const sw = s.colW || s.w, tw = t.colW || t.w;
+  return curveThrough([[s.x + out * s.w / 2, s.y], [s.x + out * Math.max(sw, s.w) / 2, s.y], ...mid,
+    [t.x - into * Math.max(tw, t.w) / 2, t.y], [t.x - into * (t.w / 2 + 4), t.y]], 0);
+}
+
+function freeEnds(s, t) {
   const forward = t.x >= s.x;
-  const x1 = s.x + (forward ? s.w / 2 : -s.w / 2), x2 = t.x + (forward ? -t.w / 2 - 4 : t.w / 2 + 4);
-  const dx = Math.max(30, Math.abs(x2 - x1) / 2) * (forward ? 1 : -1);
-  return `M${x1},${s.y} C${x1 + dx},${s.y} ${x2 - dx},${t.y} ${x2},${t.y}`;
+  return [[s.x + (forward ? s.w / 2 : -s.w / 2), s.y], [t.x + (forward ? -t.w / 2 - 4 : t.w / 2 + 4), t.y]];
+}
+
+// Cubic segments, horizontal at every point (at least `reach` long handles).
+function curveThrough(points, reach) {
+  const pts = points.filter((p, i) => i === 0 || Math.abs(p[0] - points[i - 1][0]) + Math.abs(p[1] - points[i - 1][1]) > 0.5);
+  let d = `M${pts[0][0]},${pts[0][1]}`;
+  for (let i = 1; i < pts.length; i++) {
+    const [x1, y1] = pts[i - 1], [x2, y2] = pts[i];
+    if (Math.abs(y2 - y1) < 0.5) { d += ` L${x2},${y2}`; continue; }
+    const dx = Math.max(reach, Math.abs(x2 - x1) / 2) * (x2 >= x1 ? 1 : -1);
+    d += ` C${x1 + dx},${y1} ${x2 - dx},${y2} ${x2},${y2}`;
+  }
+  return d;
 }
 
 function conditionText(conditions) {
@@ -167,7 +217,7 @@ function conditionText(conditions) {
 }
 
 function vertexTitle(v) {
-  if (v.kind === 'namespace') return `namespace ${v.name}: ${v.entity.members.length} entities (click to expand)`;
+  if (v.kind === 'namespace') return `namespace ${v.name}: ${v.counts.join(', ')} (click to open)`;
   const item = v.entity.item;
   const lines = [`${v.kind} ${v.name}`];
   if (item.node) lines.push(`runs ${item.node}`);
@@ -179,13 +229,31 @@ function vertexTitle(v) {
   return lines.join('\n');
 }
 
+const TITLE_LINKS = 12;
+
 function edgeTitle(e) {
-  return e.links.map(({link}) => {
+  const lines = e.links.slice(0, TITLE_LINKS).map(({link}) => {
     const given = link.given && link.given !== link.name ? ` (given "${link.given}")` : '';
     const cond = conditionText(link.conditions);
     return `${link.node} ${link.kind} ${link.name}${given}` + (link.type ? `\n  ${link.type}` : '') +
       (cond ? '\n  only if: ' + cond.replace(/\n/g, '\n           ') : '');
-  }).join('\n');
+  });
+  if (e.links.length > TITLE_LINKS) lines.push(`\u2026 and ${e.links.length - TITLE_LINKS} more`);
+  const head = e.aggregate ? [`${e.links.length} link${e.links.length === 1 ? '' : 's'} from ${e.source.name} to ${e.target.name}`] : [];
+  return [...head, ...lines].join('\n');
+}
+
+function edgeClass(e) {
+  return `edge k-${e.aggregate ? 'aggregate' : e.kind}` + (e.conditional ? ' conditional' : '');
+}
+
+function edgeMarker(e) {
+  return `url(#arrow-${e.aggregate ? 'aggregate' : RESOURCE_OF[e.kind] || 'topic'})`;
+}
+
+// Aggregated edges grow with the number of links they stand for.
+function edgeWidth(e) {
+  return e.aggregate ? Math.min(6, 1.2 + Math.log2(e.links.length)) : null;
 }
 
 function drawGraph(root, view, handlers) {
@@ -195,8 +263,10 @@ function drawGraph(root, view, handlers) {
   const vertexLayer = root.append('g').attr('class', 'vertices');
 
   const edgeSel = edgeLayer.selectAll('path').data(view.edges).join('path')
-    .attr('class', e => `edge k-${e.kind}` + (e.conditional ? ' conditional' : ''))
-    .attr('marker-end', e => `url(#arrow-${RESOURCE_OF[e.kind] || 'topic'})`)
+    .attr('class', edgeClass)
+    .attr('data-source', e => e.source.id).attr('data-target', e => e.target.id)
+    .attr('marker-end', edgeMarker)
+    .style('stroke-width', edgeWidth)
     .attr('d', edgePath);
   edgeSel.append('title').text(edgeTitle);
 
@@ -206,7 +276,10 @@ function drawGraph(root, view, handlers) {
     .attr('data-id', v => v.id)
     .attr('transform', v => `translate(${v.x},${v.y})`);
   vertexSel.append('path').attr('class', 'shape').attr('d', shapePath);
-  vertexSel.append('text').attr('class', 'label').attr('dy', '0.35em').text(v => v.label);
+  vertexSel.append('text').attr('class', 'label').attr('y', v => v.counts ? -v.h / 2 + 16 : 0)
+    .attr('dy', '0.35em').text(v => v.label);
+  vertexSel.filter(v => v.counts).selectAll('text.counts').data(v => v.counts).join('text')
+    .attr('class', 'counts').attr('y', (_, i) => 5 + i * 13).attr('dy', '0.35em').text(line => line);
   vertexSel.filter(v => v.entity.unresolved).append('g').attr('class', 'badge')
     .attr('transform', v => `translate(${v.w / 2 - 2},${-v.h / 2})`)
     .call(g => { g.append('circle').attr('r', 7); g.append('text').attr('dy', '0.35em').text('?'); });
