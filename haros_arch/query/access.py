@@ -62,7 +62,7 @@ FIELDS: dict[type, tuple[str, ...]] = {
            "rosname", "conditions", "location"),
     PrimitiveCall: ("kind", "name", "type", "queue_size", "qos", "latch", "callback",
                     "conditions", "location", "name_param", "name_default", "origin",
-                    "has_default", "default", "searched", "handle_namespace"),
+                    "has_default", "default", "searched", "handle_namespace", "deletes"),
     Configuration: ("name", "launch", "args", "nodes", "topics", "services", "actions",
                     "parameters", "links", "diagnostics"),
     NodeInstance: ("name", "id", "node", "namespace", "remaps", "args", "conditions",
