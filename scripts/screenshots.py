@@ -2,11 +2,14 @@
 
     .venv/bin/python scripts/screenshots.py   # writes docs/report-*.png
 
+The last one is the first view of bench/report_scale.py's 300-node fleet.
+
 Needs what `scripts/setup` installs (D3 from npm, playwright) and Debian's chromium.
 """
 
 from __future__ import annotations
 
+import importlib.util
 import subprocess
 import sys
 import tempfile
@@ -14,6 +17,7 @@ from pathlib import Path
 
 from playwright.sync_api import sync_playwright
 
+from haros_arch.viz import write_report
 from haros_arch.viz.browser import CHROMIUM_ARGS, chromium_path
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -25,6 +29,14 @@ SHOTS = [
     ("report-qos.png", "rover", "qos-incompatible", None),
     ("report-unresolved.png", "robot", None, "topic:/?/status"),
 ]
+
+
+def scale_model() -> dict:
+    spec = importlib.util.spec_from_file_location("report_scale", ROOT / "bench/report_scale.py")
+    assert spec and spec.loader
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module.scale_model(300, 1000)  # type: ignore[no-any-return]
 
 
 def main() -> int:
@@ -48,6 +60,14 @@ def main() -> int:
                 page.screenshot(path=str(DOCS / name))
                 page.close()
                 print(f"wrote docs/{name}")
+            fleet = Path(tmp) / "fleet.html"
+            write_report(scale_model(), [], tmp, str(fleet))
+            page = browser.new_page(viewport={"width": 1500, "height": 760})
+            page.goto(fleet.as_uri())
+            page.wait_for_function("window.harosReport && window.harosReport.ready")
+            page.wait_for_timeout(400)
+            page.locator("#stage").screenshot(path=str(DOCS / "report-scale.png"))
+            print("wrote docs/report-scale.png")
             browser.close()
     return 0
 

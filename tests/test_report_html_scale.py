@@ -77,6 +77,9 @@ def test_a_big_configuration_opens_with_namespaces_collapsed(page: Watched, flee
     assert page.ids("#graph .vertex") == {f"namespace:{name}" for name in held}
     hint = page.page.inner_text("#hint")
     assert "Click a namespace to open it" in hint
+    assert page.page.is_hidden("#legend svg")  # folded, not over the boxes
+    page.page.click("#legend-fold")
+    assert page.page.is_visible("#legend svg")
     assert f"{len(held)} namespaces" in hint
     for name, count in held.items():
         text = page.page.text_content(f'#graph .vertex[data-id="namespace:{name}"]')
@@ -188,4 +191,5 @@ def test_small_configurations_open_expanded(browser: Any, tmp_path: Path) -> Non
     watched = Watched(browser, path)
     assert not any(i.startswith("namespace:") for i in watched.ids("#graph .vertex"))
     assert watched.page.is_hidden("#hint")
+    assert watched.page.is_visible("#legend svg")
     assert watched.problems == []

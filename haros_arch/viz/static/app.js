@@ -85,8 +85,11 @@ function skeleton() {
   document.addEventListener('keydown', event => { if (event.key === 'Escape') clearSelection(); });
 }
 
+// The legend folds to its title (it starts folded on a big configuration).
 function legend() {
-  const box = el('div', {id: 'legend'});
+  const fold = el('button', {id: 'legend-fold', type: 'button', title: 'show or hide the legend'}, 'legend');
+  const box = el('div', {id: 'legend'}, fold);
+  fold.addEventListener('click', () => foldLegend(!box.classList.contains('folded')));
   const svg = d3.select(box).append('svg').attr('width', 150).attr('height', 178);
   const samples = [['node', 'node instance'], ['topic', 'topic'], ['service', 'service'], ['action', 'action'], ['parameter', 'parameter']];
   samples.forEach(([kind, label], i) => {
@@ -106,6 +109,10 @@ function legend() {
   return box;
 }
 
+function foldLegend(folded) {
+  document.getElementById('legend').classList.toggle('folded', folded);
+}
+
 // ---- state changes -------------------------------------------------------------------------
 
 function setConfig(i) {
@@ -119,6 +126,7 @@ function setConfig(i) {
   const size = buildView(app.index, app.options).vertices.length;
   app.big = size > BIG ? size : 0;
   if (app.big) for (const name of namespaceNames()) app.options.collapsed.add(name);
+  foldLegend(!!app.big);
   renderLists();
   renderGraph();
   if (!ui.packages.hidden) renderPackages();

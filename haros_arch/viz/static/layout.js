@@ -128,11 +128,15 @@ function layeredLayout(vertices, edges, opts = {}) {
       if (!v.dummy) lane.rank.push((i + 0.5) / row.length);
     });
   }
-  const ordered = [...lanes.values()].sort((a, b) => mean(a.rank) - mean(b.rank) || compareText(a.name, b.name));
-  let top = 0;
+  const ordered = [...lanes.values()].sort((a, b) => (separate ? 0 : mean(a.rank) - mean(b.rank)) || compareText(a.name, b.name));
+  const blocks = [];
   for (const lane of ordered) {
     const rows = lane.rows.filter(row => row.length);
-    if (lane.name === GRID) { top = grid(rows.flat(), top, opts.aspect || 1.6) + LANE_GAP; continue; }
+    const members = rows.flat();
+    if (lane.name === GRID) {
+      blocks.push({members, height: grid(members, 0, opts.aspect || 1.6)});
+      continue;
+    }
     const same = new Map();
     for (const row of rows) for (const v of row) same.set(v, [...inc.get(v), ...out.get(v)].filter(u => u.lane === lane.name));
     for (const row of rows) stack(row, row.map((_, i) => i * 40));
@@ -141,11 +145,27 @@ function layeredLayout(vertices, edges, opts = {}) {
         stack(row, row.map(v => { const near = same.get(v); return near.length ? meanY(near) : v.y; }));
       }
     }
-    const members = rows.flat();
     const low = Math.min(...members.map(v => v.y - v.h / 2));
-    const shift = top + (lane.name ? LANE_LABEL : 0) - low;  // '' is the root namespace
+    const shift = (lane.name ? LANE_LABEL : 0) - low;  // '' is the root namespace
     for (const v of members) v.y += shift;
-    top = Math.max(...members.map(v => v.y + v.h / 2)) + LANE_GAP;
+    blocks.push({members, height: Math.max(...members.map(v => v.y + v.h / 2))});
+  }
+  // Lanes are stacked; lanes layered each on its own start at the left, so they are set
+  // in as many columns as make the whole largest on the stage.
+  for (const b of blocks) {
+    b.left = Math.min(...b.members.map(v => v.x - (v.colW || v.w) / 2));
+    b.width = Math.max(...b.members.map(v => v.x + (v.colW || v.w) / 2)) - b.left;
+  }
+  const columns = separate ? packColumns(blocks, opts.aspect || 1.6) : [blocks];
+  let left = 0;
+  for (const column of columns) {
+    let top = 0;
+    for (const b of column) {
+      const dx = separate ? left - b.left : 0;
+      for (const v of b.members) { v.y += top; v.x += dx; }
+      top += b.height + LANE_GAP;
+    }
+    left += Math.max(...column.map(b => b.width)) + LANE_GAP * 2;
   }
 
   // Each edge follows the chain of its pair (reversed when the edge was turned around),
@@ -158,6 +178,28 @@ function layeredLayout(vertices, edges, opts = {}) {
     e.points = (forward ? chain : chain.slice().reverse()).flatMap(d => forward
       ? [[d.x - d.colW / 2, d.y], [d.x + d.colW / 2, d.y]] : [[d.x + d.colW / 2, d.y], [d.x - d.colW / 2, d.y]]);
   }
+}
+
+// Blocks in order, split into columns of about equal height; the number of columns
+// that makes the whole largest on a stage of this aspect.
+function packColumns(blocks, aspect) {
+  const total = blocks.reduce((sum, b) => sum + b.height + LANE_GAP, 0);
+  let best = [blocks], bestScale = 0;
+  for (let k = 1; k <= Math.min(blocks.length, 12); k++) {
+    const target = Math.max(total / k, ...blocks.map(b => b.height));
+    const columns = [[]];
+    let height = 0;
+    for (const b of blocks) {
+      if (height > 0 && height + b.height > target) { columns.push([]); height = 0; }
+      columns[columns.length - 1].push(b);
+      height += b.height + LANE_GAP;
+    }
+    const width = columns.reduce((sum, c) => sum + Math.max(...c.map(b => b.width)) + LANE_GAP * 2, 0);
+    const tall = Math.max(...columns.map(c => c.reduce((sum, b) => sum + b.height + LANE_GAP, 0)));
+    const scale = Math.min(aspect / width, 1 / tall);
+    if (scale > bestScale) { bestScale = scale; best = columns; }
+  }
+  return best;
 }
 
 // Longest-path layers over a topological order of these pairs, then every source
