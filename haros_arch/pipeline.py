@@ -103,7 +103,7 @@ def _rosrun_scripts(launched: LaunchModel, workspace: Workspace,
     for decl in launched.nodes:
         key = f"{decl.package}/{decl.executable}"
         package = workspace.packages.get(decl.package)
-        if key in nodes or package is None or getattr(decl, "ros_version", 1) != 1:
+        if key in nodes or package is None or decl.ros_version != 1:
             continue
         node = script_node(package, decl.executable, workspace)
         if node is not None:

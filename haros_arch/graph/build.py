@@ -168,7 +168,7 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
     remaps = list(decl.remaps) + remaps_in_args(decl.args)
     return NodeInstance(decl.name, node, namespace=decl.namespace, remaps=remaps,
                         args=decl.args, conditions=decl.conditions, location=decl.location,
-                        ros_version=getattr(decl, "ros_version", 1))
+                        ros_version=decl.ros_version)
 
 
 def is_container(decl: NodeDecl) -> bool:
