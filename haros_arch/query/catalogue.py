@@ -11,6 +11,7 @@ plugin entries in a configuration's ``user_data``.
 from __future__ import annotations
 
 import re
+import sys
 from collections.abc import Iterable
 from dataclasses import dataclass
 from pathlib import Path
@@ -30,7 +31,10 @@ from .results import best_location, entities, entity_ids, label, location_of, pl
 from .suppress import Suppressions
 from .syntax import Literal
 
-CATALOGUE_DIR = Path(__file__).resolve().parent.parent.parent / "queries"
+# queries/ of the source tree (editable installs), else where a wheel puts it
+CATALOGUE_DIRS = (Path(__file__).resolve().parent.parent.parent / "queries",
+                  Path(sys.prefix) / "share" / "haros-arch" / "queries")
+CATALOGUE_DIR = next((d for d in CATALOGUE_DIRS if d.is_dir()), CATALOGUE_DIRS[0])
 QUERY_ERROR = "query-error"
 # diagnostics whose codes a catalogue rule reports as findings (``check`` shows them once)
 ABSORBED_CODES = frozenset({"LAUNCH_FILE_MISSING", "PACKAGE_NOT_FOUND", "NODE_NOT_FOUND"})
@@ -71,6 +75,8 @@ def _rule(data: Any, origin: str, default_id: str = "", scope: str = "auto") -> 
 def load_catalogue(folder: Path | str | None = None) -> list[Rule]:
     """The shipped rules, one YAML file each, sorted by id."""
     folder = Path(folder) if folder is not None else CATALOGUE_DIR
+    if not folder.is_dir():
+        raise CatalogueError(f"the query catalogue is not at {folder}")
     rules = []
     for path in sorted(folder.glob("*.yaml")):
         data = yaml.safe_load(path.read_text("utf-8"))
