@@ -172,9 +172,12 @@ CATALOGUE: dict[str, Entry] = {
         "parameters it would set are unknown."),
     # sources
     "CPP_PARSE_ERROR": Entry(
-        "warning", "C++ error: {detail}",
+        "info", "C++ error: {detail}",
         "libclang reported an error in this translation unit; calls in the parts it "
-        "could parse are still extracted."),
+        "could parse are still extracted. Sources are parsed against our stand-in headers "
+        "(no ROS install needed), so in code that builds with the real headers this "
+        "usually marks an API our stand-ins do not declare, not a mistake in the code; "
+        "it is information, and does not fail `check --fail-on warning`."),
     "CPP_PARSE_FAILED": Entry(
         "error", "C++ file could not be parsed: {detail}",
         "libclang could not produce a translation unit; the file gives no calls."),
@@ -182,6 +185,12 @@ CATALOGUE: dict[str, Entry] = {
         "info", "header {header} not found; an empty stand-in was used",
         "The header is neither in the workspace nor on the system; declarations from "
         "it are unknown to the extractor."),
+    "CPP_MESSAGE_FIELD": Entry(
+        "info", "C++ error on a message known only by name: {detail}",
+        "The code reads a field of a message whose definition is neither in the workspace "
+        "nor installed (its header was synthesised without fields, see "
+        "CPP_MESSAGE_UNKNOWN), so clang cannot check it. Not a mistake in the code; "
+        "calls around it are still extracted."),
     "CPP_MESSAGE_UNKNOWN": Entry(
         "info", "no definition found for {header}; it was synthesised without fields",
         "The header names a message or service whose .msg / .srv file is neither in the "

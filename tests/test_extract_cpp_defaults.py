@@ -32,3 +32,18 @@ def test_defaults_and_searches(tmp_path):
     assert got == [("~rate", True, None, False), ("~n", True, 3, False),
                    ("~frame", True, "base_link", False), ("~on", True, True, False),
                    ("~plain", False, None, False), ("~robot_model", False, None, True)]
+
+
+def test_errors_on_fields_of_messages_known_only_by_name_are_not_code_errors(tmp_path):
+    source = tmp_path / "n.cpp"
+    source.write_text(
+        "#include <rclcpp/rclcpp.hpp>\n"
+        "#include <unknown_msgs/msg/grid.hpp>\n"
+        "void f(const unknown_msgs::msg::Grid & g) { auto w = g.info.width; (void)w; }\n"
+        "int main() { int x = ; return 0; }\n")
+    result = extract_cpp([str(source)], Workspace(root=str(tmp_path)), cache_dir=None)
+    found = [(d.code, d.location.line) for d in result.diagnostics
+             if d.code.startswith("CPP_") and d.code != "CPP_MESSAGE_UNKNOWN"]
+    assert ("CPP_MESSAGE_FIELD", 3) in found
+    assert ("CPP_PARSE_ERROR", 4) in found
+    assert ("CPP_PARSE_ERROR", 3) not in found

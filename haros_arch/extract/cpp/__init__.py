@@ -10,6 +10,7 @@ and walks the functions defined in the workspace for calls listed in ``api.ROSCP
 from __future__ import annotations
 
 import os
+import re
 from collections.abc import Sequence
 from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
@@ -33,6 +34,25 @@ __all__ = ["CppBatch", "CppResult", "extract_cpp", "extract_cpp_nodes"]
 # CXTranslationUnit_DetailedPreprocessingRecord (for #define constants) | KeepGoing
 PARSE_OPTIONS = 0x01 | 0x200
 MAX_ERRORS_PER_FILE = 50
+_HEADER = re.compile(r"no definition found for (\S+);")
+_MEMBER = re.compile(r"^no member named '\w+' in '(?:struct |class )?(?:::)?(\w+)::")
+
+
+def _fieldless_packages(found: Sequence[Diagnostic]) -> set[str]:
+    """Packages whose message headers were synthesised without fields."""
+    packages = set()
+    for item in found:
+        match = _HEADER.search(item.message) if item.code == "CPP_MESSAGE_UNKNOWN" else None
+        if match:
+            packages.add(match.group(1).split("/")[0])
+    return packages
+
+
+def _names_fieldless_type(spelling: str, packages: set[str]) -> bool:
+    """A clang error about a field of a message we know only by name: our limit, not a
+    mistake in the code."""
+    match = _MEMBER.match(spelling)
+    return match is not None and match.group(1) in packages
 
 
 @dataclass
@@ -223,11 +243,13 @@ def _translation_unit(path: str, text: str, ros2: bool,
         return result, []
     errors = [d for d in tu.diagnostics if d.severity >= ClangDiagnostic.Error
               and d.location.file is not None and owned(d.location.file.name)]
+    fieldless = _fieldless_packages(setup.diagnostics)
     for error in errors[:MAX_ERRORS_PER_FILE]:
         loc = error.location
+        code = ("CPP_MESSAGE_FIELD" if _names_fieldless_type(error.spelling, fieldless)
+                else "CPP_PARSE_ERROR")
         result.diagnostics.append(diag.make(
-            "CPP_PARSE_ERROR", workspace.location(os.path.abspath(loc.file.name),
-                                                  loc.line, loc.column),
+            code, workspace.location(os.path.abspath(loc.file.name), loc.line, loc.column),
             detail=error.spelling))
     finder = CallFinder(tu, source, owned, where, ros2=ros2)
     finder.run()

@@ -20,7 +20,7 @@ from collections.abc import Iterable, Mapping
 from typing import Any
 
 from ... import __version__
-from ...diagnostics import Diagnostic
+from ...diagnostics import CATALOGUE, Diagnostic
 from ...model.conditions import Condition
 from ...model.location import Location
 from ...model.source import PrimitiveCall
@@ -153,7 +153,9 @@ def from_data(data: dict[str, Any]) -> tuple[list[PrimitiveCall], str | None,
             Condition(**{**c, "location": Location(**c["location"])})
             for c in item["conditions"])
         calls.append(PrimitiveCall(**item))
-    diagnostics = [Diagnostic(**{**d, "location": Location(**d["location"])})
+    # the severity comes from today's catalogue, not from when the entry was written
+    diagnostics = [Diagnostic(**{**d, "location": Location(**d["location"]),
+                                 "severity": _severity(d["code"], d["severity"])})
                    for d in data["diagnostics"]]
     rosname = data["rosname"]
     if rosname is not None and not isinstance(rosname, str):
@@ -165,3 +167,8 @@ def from_data(data: dict[str, Any]) -> tuple[list[PrimitiveCall], str | None,
             raise TypeError("facts")
         facts.append((usr, index, value, site))
     return calls, rosname, diagnostics, facts
+
+
+def _severity(code: str, stored: str) -> Any:
+    entry = CATALOGUE.get(code)
+    return entry.severity if entry is not None else stored
