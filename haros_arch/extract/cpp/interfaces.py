@@ -82,6 +82,48 @@ WELL_KNOWN: dict[str, str] = {
     "sensor_msgs/CompressedImage": "Header header\nstring format\nuint8[] data\n",
     "sensor_msgs/Image": "Header header\nuint32 height\nuint32 width\nstring encoding\n"
                          "uint8 is_bigendian\nuint32 step\nuint8[] data",
+    # ROS 2 interfaces that demos and examples use most
+    "example_interfaces/AddTwoInts": "int64 a\nint64 b\n---\nint64 sum",
+    "example_interfaces/Fibonacci": "int32 order\n---\nint32[] sequence\n---\nint32[] sequence",
+    "action_tutorials_interfaces/Fibonacci": "int32 order\n---\nint32[] sequence\n---\n"
+                                             "int32[] partial_sequence",
+    "nav_msgs/MapMetaData": "time map_load_time\nfloat32 resolution\nuint32 width\n"
+                            "uint32 height\ngeometry_msgs/Pose origin",
+    "nav_msgs/OccupancyGrid": "Header header\nMapMetaData info\nint8[] data",
+    "rcl_interfaces/ParameterType": "\n".join(
+        f"uint8 PARAMETER_{kind}={number}" for number, kind in enumerate((
+            "NOT_SET", "BOOL", "INTEGER", "DOUBLE", "STRING", "BYTE_ARRAY", "BOOL_ARRAY",
+            "INTEGER_ARRAY", "DOUBLE_ARRAY", "STRING_ARRAY"))),
+    "rcl_interfaces/ParameterValue": "uint8 type\nbool bool_value\nint64 integer_value\n"
+                                     "float64 double_value\nstring string_value\n"
+                                     "byte[] byte_array_value\nbool[] bool_array_value\n"
+                                     "int64[] integer_array_value\n"
+                                     "float64[] double_array_value\n"
+                                     "string[] string_array_value",
+    "rcl_interfaces/Parameter": "string name\nParameterValue value",
+    "rcl_interfaces/ParameterEvent": "time stamp\nstring node\nParameter[] new_parameters\n"
+                                     "Parameter[] changed_parameters\n"
+                                     "Parameter[] deleted_parameters",
+    "rcl_interfaces/ListParametersResult": "string[] names\nstring[] prefixes",
+    "rcl_interfaces/ListParameters": "uint64 DEPTH_RECURSIVE=0\nstring[] prefixes\n"
+                                     "uint64 depth\n---\nListParametersResult result",
+    "rcl_interfaces/LoggerLevel": "string name\nuint32 level",
+    "rcl_interfaces/SetLoggerLevelsResult": "bool successful\nstring reason",
+    "rcl_interfaces/SetLoggerLevels": "LoggerLevel[] levels\n---\n"
+                                      "SetLoggerLevelsResult[] results",
+    "rcl_interfaces/GetLoggerLevels": "string[] names\n---\nLoggerLevel[] levels",
+    "lifecycle_msgs/State": "\n".join(f"uint8 {name}={number}" for name, number in (
+        ("PRIMARY_STATE_UNKNOWN", 0), ("PRIMARY_STATE_UNCONFIGURED", 1),
+        ("PRIMARY_STATE_INACTIVE", 2), ("PRIMARY_STATE_ACTIVE", 3),
+        ("PRIMARY_STATE_FINALIZED", 4), ("TRANSITION_STATE_CONFIGURING", 10),
+        ("TRANSITION_STATE_CLEANINGUP", 11), ("TRANSITION_STATE_SHUTTINGDOWN", 12),
+        ("TRANSITION_STATE_ACTIVATING", 13), ("TRANSITION_STATE_DEACTIVATING", 14),
+        ("TRANSITION_STATE_ERRORPROCESSING", 15))) + "\nuint8 id\nstring label",
+    "lifecycle_msgs/Transition": "\n".join(f"uint8 {name}={number}" for name, number in (
+        ("TRANSITION_CREATE", 0), ("TRANSITION_CONFIGURE", 1), ("TRANSITION_CLEANUP", 2),
+        ("TRANSITION_ACTIVATE", 3), ("TRANSITION_DEACTIVATE", 4),
+        ("TRANSITION_UNCONFIGURED_SHUTDOWN", 5), ("TRANSITION_INACTIVE_SHUTDOWN", 6),
+        ("TRANSITION_ACTIVE_SHUTDOWN", 7), ("TRANSITION_DESTROY", 8))) + "\nuint8 id\nstring label",
 }
 
 PRIMITIVES = {

@@ -106,12 +106,12 @@ def _struct(name: str, fields: list[Field], package: str) -> list[str]:
                 value = fld.constant if re.fullmatch(r"-?\d+(\.\d*)?([eE]-?\d+)?",
                                                      fld.constant) else "0"
                 lines.append(f"  static constexpr {cpp} {fld.name} = {value};")
-        elif fld.array is not None and fld.array:
-            lines.append(f"  std::array<{cpp}, {fld.array}> {fld.name};")
-        elif fld.array is not None:
-            lines.append(f"  std::vector<{cpp}> {fld.name};")
         else:
-            lines.append(f"  {cpp} {fld.name};")
+            if fld.array is not None and fld.array:
+                cpp = f"std::array<{cpp}, {fld.array}>"
+            elif fld.array is not None:
+                cpp = f"std::vector<{cpp}>"
+            lines += [f"  {cpp} {fld.name};", f"  using _{fld.name}_type = {cpp};"]
     lines += [f"  using SharedPtr = std::shared_ptr<{name}>;",
               f"  using ConstSharedPtr = std::shared_ptr<const {name}>;",
               f"  using UniquePtr = std::unique_ptr<{name}>;",

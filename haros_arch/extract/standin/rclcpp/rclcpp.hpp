@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 #include <rmw/qos_profiles.h>
+#include <rcl/haros_rcl.h>
 #define RCLCPP_SMART_PTR_DEFINITIONS(T) \
   using SharedPtr = std::shared_ptr<T>; using ConstSharedPtr = std::shared_ptr<const T>; \
   using UniquePtr = std::unique_ptr<T>; using WeakPtr = std::weak_ptr<T>;
@@ -27,6 +28,7 @@ struct SetParametersResult { bool successful; std::string reason; };
 struct FloatingPointRange { double from_value, to_value, step; };
 struct IntegerRange { long from_value, to_value, step; };
 } }
+namespace rcl_interfaces { namespace msg { struct ParameterEvent; } }
 namespace builtin_interfaces { namespace msg {
 struct Time { int32_t sec; uint32_t nanosec; };
 struct Duration { int32_t sec; uint32_t nanosec; };
@@ -92,7 +94,9 @@ class Time {
 public:
   Time();
   Time(int32_t seconds, uint32_t nanoseconds);
-  explicit Time(int64_t nanoseconds);
+  explicit Time(int64_t nanoseconds, rcl_clock_type_t clock_type = RCL_SYSTEM_TIME);
+  Time(int32_t seconds, uint32_t nanoseconds, rcl_clock_type_t clock_type);
+  rcl_clock_type_t get_clock_type() const;
   Time(const builtin_interfaces::msg::Time& t);
   double seconds() const;
   int64_t nanoseconds() const;
@@ -109,8 +113,9 @@ public:
 class Clock {
 public:
   RCLCPP_SMART_PTR_DEFINITIONS(Clock)
-  Clock();
+  explicit Clock(rcl_clock_type_t clock_type = RCL_SYSTEM_TIME);
   Time now();
+  rcl_clock_type_t get_clock_type() const;
   bool sleep_for(Duration d);
 };
 class Rate {
@@ -123,6 +128,9 @@ public:
 typedef Rate WallRate;
 class Logger {
 public:
+  enum class Level { Unset = 0, Debug = 10, Info = 20, Warn = 30, Error = 40, Fatal = 50 };
+  void set_level(Level level);
+  Level get_effective_level() const;
   const char* get_name() const;
   Logger get_child(const std::string& suffix);
 };
@@ -132,6 +140,9 @@ namespace haros { void log(const Logger& logger, const char* format, ...); }
 enum class ReliabilityPolicy { BestEffort, Reliable, SystemDefault };
 enum class DurabilityPolicy { Volatile, TransientLocal, SystemDefault };
 enum class HistoryPolicy { KeepLast, KeepAll, SystemDefault };
+enum class LivelinessPolicy { Automatic, ManualByTopic, SystemDefault, BestAvailable };
+enum class QosPolicyKind { AvoidRosNamespaceConventions, Deadline, Depth, Durability, History,
+  Lifespan, Liveliness, LivelinessLeaseDuration, Reliability, Invalid };
 struct QoSInitialization {
   QoSInitialization(rmw_qos_history_policy_t history, size_t depth);
   static QoSInitialization from_rmw(const rmw_qos_profile_t& profile);
@@ -143,6 +154,25 @@ public:
   QoS(const QoSInitialization& init, const rmw_qos_profile_t& profile = rmw_qos_profile_default);
   QoS(size_t history_depth);
   rmw_qos_profile_t& get_rmw_qos_profile();
+  const rmw_qos_profile_t& get_rmw_qos_profile() const;
+  QoS& liveliness(rmw_qos_liveliness_policy_t l);
+  QoS& liveliness(LivelinessPolicy l);
+  QoS& liveliness_lease_duration(rmw_time_t d);
+  QoS& liveliness_lease_duration(const Duration& d);
+  QoS& deadline(rmw_time_t d);
+  QoS& deadline(const Duration& d);
+  QoS& lifespan(rmw_time_t d);
+  QoS& lifespan(const Duration& d);
+  QoS& avoid_ros_namespace_conventions(bool v);
+  HistoryPolicy history() const;
+  ReliabilityPolicy reliability() const;
+  DurabilityPolicy durability() const;
+  LivelinessPolicy liveliness() const;
+  Duration deadline() const;
+  Duration lifespan() const;
+  Duration liveliness_lease_duration() const;
+  bool avoid_ros_namespace_conventions() const;
+  bool operator==(const QoS& o) const;
   QoS& keep_last(size_t depth);
   QoS& keep_all();
   QoS& reliable();
@@ -169,10 +199,89 @@ class ClockQoS : public QoS { public: explicit ClockQoS(const QoSInitialization&
 // entities
 class CallbackGroup { public: RCLCPP_SMART_PTR_DEFINITIONS(CallbackGroup) };
 enum class CallbackGroupType { MutuallyExclusive, Reentrant };
-struct PublisherOptions { std::shared_ptr<CallbackGroup> callback_group; };
-struct SubscriptionOptions { std::shared_ptr<CallbackGroup> callback_group; };
-template<class A = void> using PublisherOptionsWithAllocator = PublisherOptions;
-template<class A = void> using SubscriptionOptionsWithAllocator = SubscriptionOptions;
+// QoS events: one info type with the fields of each rmw event status
+struct QOSEventInfo {
+  int32_t total_count; int32_t total_count_change; int32_t alive_count;
+  int32_t not_alive_count; int32_t alive_count_change; int32_t not_alive_count_change;
+  int last_policy_kind; size_t current_count; int32_t current_count_change;
+};
+using QOSDeadlineOfferedInfo = QOSEventInfo;
+using QOSDeadlineRequestedInfo = QOSEventInfo;
+using QOSLivelinessChangedInfo = QOSEventInfo;
+using QOSLivelinessLostInfo = QOSEventInfo;
+using QOSMessageLostInfo = QOSEventInfo;
+using QOSOfferedIncompatibleQoSInfo = QOSEventInfo;
+using QOSRequestedIncompatibleQoSInfo = QOSEventInfo;
+using IncompatibleTypeInfo = QOSEventInfo;
+using MatchedInfo = QOSEventInfo;
+struct PublisherEventCallbacks {
+  std::function<void(QOSDeadlineOfferedInfo&)> deadline_callback;
+  std::function<void(QOSLivelinessLostInfo&)> liveliness_callback;
+  std::function<void(QOSOfferedIncompatibleQoSInfo&)> incompatible_qos_callback;
+  std::function<void(IncompatibleTypeInfo&)> incompatible_type_callback;
+  std::function<void(MatchedInfo&)> matched_callback;
+};
+struct SubscriptionEventCallbacks {
+  std::function<void(QOSDeadlineRequestedInfo&)> deadline_callback;
+  std::function<void(QOSLivelinessChangedInfo&)> liveliness_callback;
+  std::function<void(QOSRequestedIncompatibleQoSInfo&)> incompatible_qos_callback;
+  std::function<void(QOSMessageLostInfo&)> message_lost_callback;
+  std::function<void(IncompatibleTypeInfo&)> incompatible_type_callback;
+  std::function<void(MatchedInfo&)> matched_callback;
+};
+enum class IntraProcessSetting { Enable, Disable, NodeDefault };
+enum class TopicStatisticsState { Enable, Disable, NodeDefault };
+using QosCallbackResult = rcl_interfaces::msg::SetParametersResult;
+using QosCallback = std::function<QosCallbackResult(const class QoS&)>;
+class QosOverridingOptions {
+public:
+  QosOverridingOptions();
+  QosOverridingOptions(std::initializer_list<QosPolicyKind> policy_kinds,
+                       QosCallback validation_callback = nullptr, std::string id = "");
+  static QosOverridingOptions with_default_policies(QosCallback validation_callback = nullptr,
+                                                    std::string id = "");
+  const std::string& get_id() const;
+};
+namespace detail {
+struct TopicStatisticsOptions {
+  TopicStatisticsState state; std::string publish_topic;
+  std::chrono::milliseconds publish_period;
+};
+struct ContentFilterOptions {
+  std::string filter_expression; std::vector<std::string> expression_parameters;
+};
+}
+struct PublisherOptionsBase {
+  std::shared_ptr<CallbackGroup> callback_group;
+  IntraProcessSetting use_intra_process_comm;
+  PublisherEventCallbacks event_callbacks;
+  bool use_default_callbacks;
+  QosOverridingOptions qos_overriding_options;
+  int require_unique_network_flow_endpoints;
+};
+struct SubscriptionOptionsBase {
+  std::shared_ptr<CallbackGroup> callback_group;
+  IntraProcessSetting use_intra_process_comm;
+  SubscriptionEventCallbacks event_callbacks;
+  bool use_default_callbacks;
+  bool ignore_local_publications;
+  detail::TopicStatisticsOptions topic_stats_options;
+  QosOverridingOptions qos_overriding_options;
+  detail::ContentFilterOptions content_filter_options;
+  int require_unique_network_flow_endpoints;
+};
+template<class A = void> struct PublisherOptionsWithAllocator : PublisherOptionsBase {
+  PublisherOptionsWithAllocator();
+  PublisherOptionsWithAllocator(const PublisherOptionsBase& base);
+  std::shared_ptr<A> allocator;
+};
+template<class A = void> struct SubscriptionOptionsWithAllocator : SubscriptionOptionsBase {
+  SubscriptionOptionsWithAllocator();
+  SubscriptionOptionsWithAllocator(const SubscriptionOptionsBase& base);
+  std::shared_ptr<A> allocator;
+};
+using PublisherOptions = PublisherOptionsWithAllocator<std::allocator<void>>;
+using SubscriptionOptions = SubscriptionOptionsWithAllocator<std::allocator<void>>;
 class PublisherBase {
 public:
   RCLCPP_SMART_PTR_DEFINITIONS(PublisherBase)
@@ -184,6 +293,10 @@ public:
   RCLCPP_SMART_PTR_DEFINITIONS(Publisher)
   void publish(const M& msg);
   void publish(std::unique_ptr<M> msg);
+  bool can_loan_messages() const;
+  struct LoanedMessage { M& get(); bool is_valid() const; };
+  LoanedMessage borrow_loaned_message();
+  void publish(LoanedMessage&& loaned);
 };
 class SubscriptionBase {
 public:
@@ -193,6 +306,10 @@ public:
 template<class M, class A = void> class Subscription : public SubscriptionBase {
 public:
   RCLCPP_SMART_PTR_DEFINITIONS(Subscription)
+  bool is_cft_enabled() const;
+  void set_content_filter(const std::string& expression,
+                          const std::vector<std::string>& parameters = {});
+  detail::ContentFilterOptions get_content_filter() const;
 };
 class GenericPublisher : public PublisherBase { public: RCLCPP_SMART_PTR_DEFINITIONS(GenericPublisher) };
 class GenericSubscription : public SubscriptionBase { public: RCLCPP_SMART_PTR_DEFINITIONS(GenericSubscription) };
@@ -201,6 +318,8 @@ template<class S> class Service : public ServiceBase {
 public:
   RCLCPP_SMART_PTR_DEFINITIONS(Service)
   void send_response(rmw_request_id_t& header, typename S::Response& response);
+  void configure_introspection(std::shared_ptr<Clock> clock, const QoS& qos,
+                               rcl_service_introspection_state_t state);
 };
 class ClientBase {
 public:
@@ -220,6 +339,8 @@ public:
   using SharedFutureAndRequestId = FutureAndRequestId;
   FutureAndRequestId async_send_request(SharedRequest request);
   template<class F> FutureAndRequestId async_send_request(SharedRequest request, F&& callback);
+  void configure_introspection(std::shared_ptr<Clock> clock, const QoS& qos,
+                               rcl_service_introspection_state_t state);
 };
 class TimerBase {
 public:
@@ -240,6 +361,14 @@ public:
   NodeOptions& arguments(const std::vector<std::string>& a);
   NodeOptions& start_parameter_services(bool v);
   NodeOptions& start_parameter_event_publisher(bool v);
+  NodeOptions& enable_logger_service(bool v);
+  NodeOptions& enable_topic_statistics(bool v);
+  NodeOptions& enable_rosout(bool v);
+  NodeOptions& use_global_arguments(bool v);
+  NodeOptions& context(std::shared_ptr<class Context> c);
+  const std::vector<std::string>& arguments() const;
+  const std::vector<Parameter>& parameter_overrides() const;
+  bool use_intra_process_comms() const;
 };
 namespace node_interfaces {
 class NodeBaseInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeBaseInterface) const char* get_name() const; };
@@ -341,24 +470,61 @@ public:
   HAROS_RCLCPP_NODE_API(Node)
   Node::SharedPtr create_sub_node(const std::string& sub_namespace);
 };
+enum class FutureReturnCode { SUCCESS, INTERRUPTED, TIMEOUT };
+class Context { public: RCLCPP_SMART_PTR_DEFINITIONS(Context) bool is_valid() const; };
+namespace memory_strategy { class MemoryStrategy { public: RCLCPP_SMART_PTR_DEFINITIONS(MemoryStrategy) }; }
+struct ExecutorOptions {
+  ExecutorOptions();
+  std::shared_ptr<memory_strategy::MemoryStrategy> memory_strategy;
+  std::shared_ptr<Context> context;
+  size_t max_conditions;
+};
 namespace executors {
 class Executor {
 public:
-  void add_node(std::shared_ptr<Node> node);
-  template<class N> void add_node(std::shared_ptr<N> node);
-  void spin();
-  void spin_some();
+  RCLCPP_SMART_PTR_DEFINITIONS(Executor)
+  explicit Executor(const ExecutorOptions& options = ExecutorOptions());
+  virtual ~Executor();
+  void add_node(std::shared_ptr<Node> node, bool notify = true);
+  template<class N> void add_node(std::shared_ptr<N> node, bool notify = true);
+  void remove_node(std::shared_ptr<Node> node, bool notify = true);
+  template<class N> void remove_node(std::shared_ptr<N> node, bool notify = true);
+  void add_callback_group(std::shared_ptr<CallbackGroup> group,
+                          std::shared_ptr<node_interfaces::NodeBaseInterface> node,
+                          bool notify = true);
+  virtual void spin();
+  void spin_some(std::chrono::nanoseconds max_duration = std::chrono::nanoseconds(0));
+  void spin_all(std::chrono::nanoseconds max_duration);
+  void spin_once(std::chrono::nanoseconds timeout = std::chrono::nanoseconds(-1));
+  template<class N> void spin_node_some(std::shared_ptr<N> node);
+  template<class N, class R = long, class P = std::ratio<1>> void spin_node_once(
+      std::shared_ptr<N> node, std::chrono::duration<R, P> timeout = std::chrono::duration<R, P>(-1));
+  template<class F, class R = long, class P = std::milli> FutureReturnCode
+  spin_until_future_complete(const F& future,
+                             std::chrono::duration<R, P> timeout = std::chrono::duration<R, P>(-1));
   void cancel();
+  bool is_spinning();
 };
-class SingleThreadedExecutor : public Executor { public: SingleThreadedExecutor(); };
+class SingleThreadedExecutor : public Executor {
+public:
+  explicit SingleThreadedExecutor(const ExecutorOptions& options = ExecutorOptions());
+};
 class MultiThreadedExecutor : public Executor {
 public:
-  explicit MultiThreadedExecutor(const void* options = nullptr, size_t threads = 0);
+  explicit MultiThreadedExecutor(const ExecutorOptions& options = ExecutorOptions(),
+                                 size_t number_of_threads = 0, bool yield_before_execute = false,
+                                 std::chrono::nanoseconds timeout = std::chrono::nanoseconds(-1));
+  size_t get_number_of_threads();
+};
+class EventsExecutor : public Executor {
+public:
+  explicit EventsExecutor(const ExecutorOptions& options = ExecutorOptions());
 };
 class StaticSingleThreadedExecutor : public Executor { public: StaticSingleThreadedExecutor(); };
 }
 using executors::Executor;
-enum class FutureReturnCode { SUCCESS, INTERRUPTED, TIMEOUT };
+std::ostream& operator<<(std::ostream& os, const FutureReturnCode& code);
+std::string to_string(const FutureReturnCode& code);
 namespace executor { using FutureReturnCode = rclcpp::FutureReturnCode; }
 template<class N> void spin(std::shared_ptr<N> node);
 template<class N> void spin_some(std::shared_ptr<N> node);
@@ -366,7 +532,18 @@ template<class N, class F> FutureReturnCode spin_until_future_complete(std::shar
                                                                        const F& future);
 template<class N, class F, class R, class P> FutureReturnCode spin_until_future_complete(
     std::shared_ptr<N> node, const F& future, std::chrono::duration<R, P> timeout);
-namespace contexts { class DefaultContext { public: RCLCPP_SMART_PTR_DEFINITIONS(DefaultContext) }; }
+namespace contexts {
+class DefaultContext : public Context { public: RCLCPP_SMART_PTR_DEFINITIONS(DefaultContext) };
+DefaultContext::SharedPtr get_global_default_context();
+}
+class TimeSource {
+public:
+  TimeSource();
+  template<class N> explicit TimeSource(std::shared_ptr<N> node);
+  template<class N> void attachNode(std::shared_ptr<N> node);
+  void detachNode();
+  void attachClock(std::shared_ptr<Clock> clock);
+};
 class Event { public: RCLCPP_SMART_PTR_DEFINITIONS(Event) };
 class SyncParametersClient {
 public:
@@ -379,11 +556,34 @@ public:
       const std::vector<Parameter>& parameters);
   template<class T> T get_parameter(const std::string& name, const T& default_value);
   bool has_parameter(const std::string& name);
+  struct ListParametersResult { std::vector<std::string> names; std::vector<std::string> prefixes; };
+  ListParametersResult list_parameters(const std::vector<std::string>& prefixes, uint64_t depth);
+  template<class C> std::shared_ptr<void> on_parameter_event(C&& callback);
+  template<class N, class C> static std::shared_ptr<void> on_parameter_event(N node,
+                                                                             C&& callback);
+  void delete_parameters(const std::vector<std::string>& names);
 };
-class AsyncParametersClient : public SyncParametersClient {
+class AsyncParametersClient {
 public:
   RCLCPP_SMART_PTR_DEFINITIONS(AsyncParametersClient)
   template<class... A> explicit AsyncParametersClient(A&&... args);
+  template<class R = long, class P = std::ratio<1>>
+  bool wait_for_service(std::chrono::duration<R, P> timeout = std::chrono::duration<R, P>(-1));
+  bool service_is_ready() const;
+  template<class C = std::nullptr_t> std::shared_future<std::vector<Parameter>> get_parameters(
+      const std::vector<std::string>& names, C callback = nullptr);
+  template<class C = std::nullptr_t>
+  std::shared_future<std::vector<rcl_interfaces::msg::SetParametersResult>> set_parameters(
+      const std::vector<Parameter>& parameters, C callback = nullptr);
+  template<class C = std::nullptr_t>
+  std::shared_future<rcl_interfaces::msg::SetParametersResult> set_parameters_atomically(
+      const std::vector<Parameter>& parameters, C callback = nullptr);
+  template<class C = std::nullptr_t>
+  std::shared_future<SyncParametersClient::ListParametersResult> list_parameters(
+      const std::vector<std::string>& prefixes, uint64_t depth, C callback = nullptr);
+  template<class C> std::shared_ptr<void> on_parameter_event(C&& callback);
+  template<class N, class C> static std::shared_ptr<void> on_parameter_event(N node,
+                                                                             C&& callback);
 };
 class ParameterEventHandler {
 public:
@@ -391,6 +591,14 @@ public:
   template<class C> std::shared_ptr<void> add_parameter_callback(const std::string& name, C cb,
       const std::string& node_name = "");
   template<class C> std::shared_ptr<void> add_parameter_event_callback(C cb);
+  void remove_parameter_callback(std::shared_ptr<void> handle);
+  void remove_parameter_event_callback(std::shared_ptr<void> handle);
+  static bool get_parameter_from_event(const rcl_interfaces::msg::ParameterEvent& event,
+      Parameter& parameter, const std::string& parameter_name, const std::string& node_name = "");
+  static Parameter get_parameter_from_event(const rcl_interfaces::msg::ParameterEvent& event,
+      const std::string& parameter_name, const std::string& node_name = "");
+  static std::vector<Parameter> get_parameters_from_event(
+      const rcl_interfaces::msg::ParameterEvent& event);
 };
 class WaitSet { public: WaitSet(); };
 }  // namespace rclcpp

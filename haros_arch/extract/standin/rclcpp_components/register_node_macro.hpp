@@ -2,6 +2,29 @@
 #ifndef HAROS_STANDIN_RCLCPP_COMPONENTS_REGISTER_NODE_MACRO_HPP
 #define HAROS_STANDIN_RCLCPP_COMPONENTS_REGISTER_NODE_MACRO_HPP
 #include <rclcpp/rclcpp.hpp>
+namespace rclcpp_components {
+class NodeInstanceWrapper {
+public:
+  NodeInstanceWrapper();
+  template<class N, class I> NodeInstanceWrapper(std::shared_ptr<N> node, I interface_getter);
+  std::shared_ptr<void> get_node_instance() const;
+  rclcpp::node_interfaces::NodeBaseInterface::SharedPtr get_node_base_interface();
+};
+class NodeFactory {
+public:
+  RCLCPP_SMART_PTR_DEFINITIONS(NodeFactory)
+  virtual ~NodeFactory();
+  virtual NodeInstanceWrapper create_node_instance(const rclcpp::NodeOptions& options) = 0;
+};
+template<class N> class NodeFactoryTemplate : public NodeFactory {
+public:
+  NodeInstanceWrapper create_node_instance(const rclcpp::NodeOptions& options) override;
+};
+class ComponentManager : public rclcpp::Node {
+public:
+  template<class... A> explicit ComponentManager(A&&... args);
+};
+}
 namespace haros_standin { template<class T> struct component_registration { typedef T type; }; }
 #define RCLCPP_COMPONENTS_REGISTER_NODE(NodeClass) \
   static haros_standin::component_registration<NodeClass> haros_component_registration;

@@ -10,11 +10,25 @@ typedef enum { RMW_QOS_POLICY_RELIABILITY_SYSTEM_DEFAULT, RMW_QOS_POLICY_RELIABI
 typedef enum { RMW_QOS_POLICY_DURABILITY_SYSTEM_DEFAULT,
                RMW_QOS_POLICY_DURABILITY_TRANSIENT_LOCAL,
                RMW_QOS_POLICY_DURABILITY_VOLATILE } rmw_qos_durability_policy_t;
+typedef enum { RMW_QOS_POLICY_LIVELINESS_SYSTEM_DEFAULT, RMW_QOS_POLICY_LIVELINESS_AUTOMATIC,
+               RMW_QOS_POLICY_LIVELINESS_MANUAL_BY_NODE,
+               RMW_QOS_POLICY_LIVELINESS_MANUAL_BY_TOPIC,
+               RMW_QOS_POLICY_LIVELINESS_UNKNOWN } rmw_qos_liveliness_policy_t;
+typedef struct rmw_time_t { unsigned long long sec; unsigned long long nsec; } rmw_time_t;
+#define RMW_QOS_POLICY_DEPTH_SYSTEM_DEFAULT 0
+#define RMW_QOS_DEADLINE_DEFAULT {0, 0}
+#define RMW_QOS_LIFESPAN_DEFAULT {0, 0}
+#define RMW_QOS_LIVELINESS_LEASE_DURATION_DEFAULT {0, 0}
 typedef struct rmw_qos_profile_t {
   rmw_qos_history_policy_t history;
   size_t depth;
   rmw_qos_reliability_policy_t reliability;
   rmw_qos_durability_policy_t durability;
+  rmw_time_t deadline;
+  rmw_time_t lifespan;
+  rmw_qos_liveliness_policy_t liveliness;
+  rmw_time_t liveliness_lease_duration;
+  bool avoid_ros_namespace_conventions;
 } rmw_qos_profile_t;
 extern const rmw_qos_profile_t rmw_qos_profile_default;
 extern const rmw_qos_profile_t rmw_qos_profile_sensor_data;
@@ -22,6 +36,8 @@ extern const rmw_qos_profile_t rmw_qos_profile_services_default;
 extern const rmw_qos_profile_t rmw_qos_profile_parameters;
 extern const rmw_qos_profile_t rmw_qos_profile_parameter_events;
 extern const rmw_qos_profile_t rmw_qos_profile_system_default;
+extern const rmw_qos_profile_t rmw_qos_profile_unknown;
+extern const rmw_qos_profile_t rmw_qos_profile_rosout_default;
 typedef struct rmw_request_id_t { long sequence_number; } rmw_request_id_t;
 }
 #endif

@@ -18,6 +18,19 @@ typedef __UINTMAX_TYPE__ uintmax_t;
 typedef long ssize_t;
 typedef long time_t;
 typedef int pid_t;
+#define PRId8 "d"
+#define PRId16 "d"
+#define PRId32 "d"
+#define PRId64 "ld"
+#define PRIu8 "u"
+#define PRIu16 "u"
+#define PRIu32 "u"
+#define PRIu64 "lu"
+#define PRIi32 "i"
+#define PRIi64 "li"
+#define PRIx32 "x"
+#define PRIx64 "lx"
+#define PRIuPTR "lu"
 typedef unsigned int useconds_t;
 typedef __builtin_va_list va_list;
 #define va_start(ap, param) __builtin_va_start(ap, param)

@@ -10,7 +10,7 @@ using ::int64_t; using ::uint8_t; using ::uint16_t; using ::uint32_t; using ::ui
 using ::printf; using ::fprintf; using ::snprintf; using ::sprintf; using ::FILE;
 using ::getenv; using ::exit; using ::abort; using ::atoi; using ::atof; using ::strtol;
 using ::strtod; using ::malloc; using ::free; using ::memcpy; using ::memset;
-using ::strlen; using ::strcmp; using ::rand; using ::srand; using ::time; using ::time_t;
+using ::strlen; using ::strcmp; using ::strncmp; using ::strncpy; using ::strcpy; using ::rand; using ::srand; using ::time; using ::time_t;
 using ::sqrt; using ::pow; using ::exp; using ::log; using ::log10; using ::sin;
 using ::cos; using ::tan; using ::asin; using ::acos; using ::atan; using ::atan2;
 using ::fabs; using ::floor; using ::ceil; using ::round; using ::trunc; using ::fmod;
@@ -51,6 +51,10 @@ template<class T> struct enable_if<true, T> { typedef T type; };
 template<bool B, class T = void> using enable_if_t = typename enable_if<B, T>::type;
 template<bool B, class T, class F> struct conditional { typedef T type; };
 template<class T, class F> struct conditional<false, T, F> { typedef F type; };
+template<class T> struct remove_pointer { typedef T type; };
+template<class T> struct remove_pointer<T*> { typedef T type; };
+template<class T> struct remove_pointer<T* const> { typedef T type; };
+template<class T> using remove_pointer_t = typename remove_pointer<T>::type;
 template<class T> struct remove_reference { typedef T type; };
 template<class T> struct remove_reference<T&> { typedef T type; };
 template<class T> struct remove_reference<T&&> { typedef T type; };
@@ -685,6 +689,12 @@ ostream& scientific(ostream& os);
 ostream& boolalpha(ostream& os);
 ostream& hex(ostream& os);
 ostream& dec(ostream& os);
+ostream& left(ostream& os);
+ostream& right(ostream& os);
+ostream& internal(ostream& os);
+ostream& noboolalpha(ostream& os);
+ostream& showpos(ostream& os);
+ostream& defaultfloat(ostream& os);
 extern ostream cout;
 extern ostream cerr;
 extern ostream clog;
@@ -998,6 +1008,43 @@ public: uniform_int_distribution(T a = 0, T b = 2147483647); template<class G> T
 template<class T = double> class normal_distribution {
 public: normal_distribution(T mean = 0, T stddev = 1); template<class G> T operator()(G& g); };
 class bernoulli_distribution { public: bernoulli_distribution(double p = 0.5); template<class G> bool operator()(G& g); };
+namespace pmr {  // <memory_resource>
+class memory_resource {
+public:
+  virtual ~memory_resource();
+  void* allocate(size_t bytes, size_t alignment = alignof(long double));
+  void deallocate(void* p, size_t bytes, size_t alignment = alignof(long double));
+protected:
+  virtual void* do_allocate(size_t bytes, size_t alignment) = 0;
+  virtual void do_deallocate(void* p, size_t bytes, size_t alignment) = 0;
+  virtual bool do_is_equal(const memory_resource& other) const noexcept = 0;
+};
+memory_resource* new_delete_resource() noexcept;
+memory_resource* get_default_resource() noexcept;
+memory_resource* set_default_resource(memory_resource* r) noexcept;
+template<class T = unsigned char> class polymorphic_allocator {
+public:
+  typedef T value_type;
+  polymorphic_allocator() noexcept;
+  polymorphic_allocator(memory_resource* r);
+  template<class U> polymorphic_allocator(const polymorphic_allocator<U>& o) noexcept;
+  T* allocate(size_t n);
+  void deallocate(T* p, size_t n);
+  memory_resource* resource() const;
+};
+class monotonic_buffer_resource : public memory_resource {
+public:
+  monotonic_buffer_resource();
+  explicit monotonic_buffer_resource(memory_resource* upstream);
+  monotonic_buffer_resource(void* buffer, size_t size, memory_resource* upstream = get_default_resource());
+protected:
+  void* do_allocate(size_t bytes, size_t alignment) override;
+  void do_deallocate(void* p, size_t bytes, size_t alignment) override;
+  bool do_is_equal(const memory_resource& other) const noexcept override;
+};
+class unsynchronized_pool_resource : public monotonic_buffer_resource {};
+class synchronized_pool_resource : public monotonic_buffer_resource {};
+}  // namespace pmr
 }  // namespace std
 namespace __gnu_cxx {}
 #endif
