@@ -219,6 +219,13 @@ CATALOGUE: dict[str, Entry] = {
     "PY_DYNAMIC_NAME": Entry(
         "info", "the name of this {kind} call is computed at run time; kept as '{name}'",
         "The Python extractor could not resolve every part of the name statically."),
+    "PY_SEVERAL_NODES": Entry(
+        "info", "this code names several nodes ({names}); the model keeps '{name}' and "
+                "gives it the calls of all",
+        "A Python executable that creates several rclpy nodes (two Node subclasses, "
+        "create_node called twice), or calls rospy.init_node with different names on "
+        "different branches, is one node in the model: it takes the first name, and "
+        "the ROS calls of every node are attributed to it."),
     # hints
     "HINT_INVALID": Entry(
         "error", "{detail}",

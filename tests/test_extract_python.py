@@ -83,14 +83,17 @@ def test_rospy_topics(ros1) -> None:
          (("else", wait[1]), ("if", "RATE > 5"))),
         ("publish", "slow", "std_msgs/String", None, False, None, 39,
          (("else", wait[1]), ("else", "RATE > 5"))),
-        ("publish", "?/cmd", "std_msgs/Float64", 1, False, None, 41,
+        # a loop over a known tuple is unrolled: one call per item
+        ("publish", "left/cmd", "std_msgs/Float64", 1, False, None, 41,
+         (("for", "side in ('left', 'right')"),)),
+        ("publish", "right/cmd", "std_msgs/Float64", 1, False, None, 41,
          (("for", "side in ('left', 'right')"),)),
         ("subscribe", "loop", "std_msgs/String", None, False, "on_chatter", 44,
          (loop, ("try", ""))),
         ("publish", "errors", "std_msgs/String", 1, False, None, 46,
          (loop, ("except", "rospy.ROSException"))),
     ]
-    assert codes(result) == ["PY_DYNAMIC_NAME"]
+    assert codes(result) == []
 
 
 def test_locations_are_workspace_relative_with_columns(ros1) -> None:
@@ -242,7 +245,8 @@ def test_rclpy_create_node_actions_tf_filters(ros2) -> None:
         ("subscribe", "/tf", "tf2_msgs/msg/TFMessage", 100, False, None, 22, ()),
         ("subscribe", "/tf_static", "tf2_msgs/msg/TFMessage", 1, False, None, 22, ()),
         ("subscribe", "camera/image", "sensor_msgs/msg/Image", None, False, None, 23, ()),
-        ("publish", "?/image_raw", "sensor_msgs/msg/Image", 1, False, None, 25, loop),
+        ("publish", "left/image_raw", "sensor_msgs/msg/Image", 1, False, None, 25, loop),
+        ("publish", "right/image_raw", "sensor_msgs/msg/Image", 1, False, None, 25, loop),
     ]
     static = result.calls[3].qos
     assert static is not None and static["durability"] == "transient_local"
@@ -281,5 +285,5 @@ def test_extract_node_fills_a_python_node(ws: Workspace) -> None:
                 sources=["src/ros1_demo/scripts/topics.py"])
     diagnostics = extract_node(node, ws)
     assert node.rosname == "topics"
-    assert len(node.calls) == 13
-    assert [d.code for d in diagnostics] == ["PY_DYNAMIC_NAME"]
+    assert len(node.calls) == 14
+    assert [d.code for d in diagnostics] == []

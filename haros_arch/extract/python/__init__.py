@@ -33,6 +33,8 @@ class PythonResult:
     diagnostics: list[Diagnostic] = field(default_factory=list)
     namespace: str | None = None
     anonymous: bool = False
+    # every fully known name the code gives a node, in the order met (``rosname`` is one)
+    names: list[str] = field(default_factory=list)
 
 
 def extract_python(sources: list[str], workspace: Workspace, *,
@@ -50,6 +52,11 @@ def extract_python(sources: list[str], workspace: Workspace, *,
     walker.run(modules)
     result.rosname, result.namespace = walker.rosname, walker.namespace
     result.anonymous = walker.anonymous
+    result.names = list(walker.names)
+    if len(walker.names) > 1:  # the model's node is one: it keeps the first name
+        result.diagnostics.append(diag.make(
+            "PY_SEVERAL_NODES", walker.names_at[1], names=", ".join(walker.names),
+            name=result.rosname))
     seen: set[tuple[object, ...]] = set()
     calls = sorted(walker.calls, key=lambda c: (
         c.location.file or "", c.location.line, c.location.column))

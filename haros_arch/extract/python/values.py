@@ -40,6 +40,10 @@ from .strings import arith, number, percent, string_method
 
 MAX_EVAL_DEPTH = 60
 MAX_CALL_DEPTH = 4
+MAX_UNROLL = 32  # a for loop over a known sequence is walked once per item, up to this
+# methods of an rclpy node that give its own name; in a name they are the private '~'
+NAME_METHODS = ("get_name", "get_fully_qualified_name")
+NAMESPACE = "node namespace"  # origin of the unknown get_namespace() gives
 
 
 class Evaluator:
@@ -105,6 +109,27 @@ class Evaluator:
         if name == "self" and frame.instance is not None:
             return frame.instance
         return self.lookup(frame.module, name)
+
+    def iteration(self, expr: ast.expr, frame: Frame) -> tuple[object, ...] | None:
+        """The items a ``for`` loop over ``expr`` takes, when known and at most
+        ``MAX_UNROLL``: a list or tuple, ``range(...)`` of integers, ``enumerate(...)``."""
+        if isinstance(expr, ast.Call) and isinstance(expr.func, ast.Name) \
+                and not expr.keywords and isinstance(self.eval(expr.func, frame), Opaque):
+            args = [self.eval(a, frame) for a in expr.args]
+            bounds = [a for a in args if isinstance(a, int) and not isinstance(a, bool)]
+            if expr.func.id == "range" and 1 <= len(bounds) == len(args) <= 3 \
+                    and (len(bounds) < 3 or bounds[2] != 0):
+                steps = range(*bounds)
+                return tuple(steps) if len(steps) <= MAX_UNROLL else None
+            if expr.func.id == "enumerate" and len(args) == 1 and isinstance(args[0], Seq):
+                items = args[0].items
+                return tuple(Seq((i, item)) for i, item in enumerate(items)) \
+                    if len(items) <= MAX_UNROLL else None
+            return None
+        value = self.eval(expr, frame)
+        if isinstance(value, Seq) and len(value.items) <= MAX_UNROLL:
+            return value.items
+        return None
 
     # -- classes ------------------------------------------------------------------------
 
@@ -284,7 +309,8 @@ class Evaluator:
             method = self.method(base.cls, attr)
             if method is not None:
                 return BoundMethod(base, method)
-            if attr in rclpy.NODE_METHODS and self.is_node_class(base.cls):
+            if (attr in rclpy.NODE_METHODS or attr in NAME_METHODS
+                    or attr == "get_namespace") and self.is_node_class(base.cls):
                 return NodeMethod(attr)
             return Opaque(f"self.{attr}")
         if isinstance(base, ClassInfo):
@@ -296,7 +322,8 @@ class Evaluator:
             return Opaque(attr)
         if isinstance(base, ParameterClient) and attr in rclpy.NODE_METHODS:
             return NodeMethod(attr, base.remote)
-        if isinstance(base, NodeHandle) and attr in rclpy.NODE_METHODS:
+        if isinstance(base, NodeHandle) and (attr in rclpy.NODE_METHODS or attr in NAME_METHODS
+                                             or attr == "get_namespace"):
             return NodeMethod(attr)
         if isinstance(base, ParamObject):
             if attr in ("value", "string_value", "integer_value", "double_value",
@@ -361,6 +388,8 @@ class Evaluator:
             return value
         if key == ("rospy", "get_name") and not expr.args:
             return Value.of("~")  # the node's own name: private names resolve to it
+        if key == ("rospy", "get_namespace") and not expr.args:
+            return Value.unknown(NAMESPACE)  # relative names resolve in it
         if key == ("rclpy", "AsyncParameterClient"):
             remote = argument(expr, rclpy.PARAMETER_CLIENT)
             return ParameterClient(text_of(self.eval(remote, frame)) if remote is not None
@@ -370,6 +399,10 @@ class Evaluator:
         return Opaque(ref.qualname)
 
     def _node_method(self, name: str, expr: ast.Call, frame: Frame) -> object:
+        if name in NAME_METHODS and not expr.args:
+            return Value.of("~")  # the node's own name: as rospy.get_name()
+        if name == "get_namespace" and not expr.args:
+            return Value.unknown(NAMESPACE)
         if name in ("get_parameter", "declare_parameter", "get_parameter_or"):
             found = argument(expr, rclpy.NODE_METHODS[name].name)
             text = text_of(self.eval(found, frame)).text if found is not None else "?"

@@ -6,6 +6,8 @@ again wherever it is called in the package (``helper('scan')``, ``self.setup()``
 function that is walked at one of its call sites does not count as an entry, so its
 calls carry the caller's values and conditions. Statements are dispatched by node type
 (one method per kind, one fallback), and calls are matched against the API tables.
+A ``for`` loop over a known list, tuple or ``range`` of at most ``MAX_UNROLL`` items is
+walked once per item, so ``for side in ['left', 'right']`` gives one call per side.
 """
 
 from __future__ import annotations
@@ -37,7 +39,7 @@ from .objects import (
     plain_value,
     text_of,
 )
-from .values import MAX_CALL_DEPTH, Evaluator, argument, unknown_params
+from .values import MAX_CALL_DEPTH, NAMESPACE, Evaluator, argument, unknown_params
 
 Conditions = tuple[Condition, ...]
 MAX_STEPS = 200_000
@@ -53,6 +55,9 @@ class Walker:
         self.rosname: str | None = None
         self.namespace: str | None = None
         self.anonymous = False
+        # every fully known node name the code gives, in walk order, and where
+        self.names: list[str] = []
+        self.names_at: list[Location] = []
         self.steps = 0
         self._inlined: set[int] = set()
         self._active: set[int] = set()
@@ -150,10 +155,15 @@ class Walker:
 
     def _For(self, statement: ast.For | ast.AsyncFor, frame: Frame, conds: Conditions) -> None:
         self._expr(statement.iter, frame, conds)
-        self.evaluator.bind(statement.target, Opaque("loop variable"), frame)
         text = f"{self._text(frame, statement.target)} in {self._text(frame, statement.iter)}"
         loop = condition("for", text, self._where(frame, statement))
-        self._block(statement.body, frame, (*conds, loop))
+        items = self.evaluator.iteration(statement.iter, frame)
+        # a loop over a known, short sequence is unrolled: one walk of the body per item
+        for item in items if items else (Opaque("loop variable"),):
+            self.evaluator.bind(statement.target, item, frame)
+            self._block(statement.body, frame, (*conds, loop))
+        if items:  # after the loop its variable is unknown to the rest of the walk
+            self.evaluator.bind(statement.target, Opaque("loop variable"), frame)
         self._block(statement.orelse, frame, conds)
 
     _AsyncFor = _For
@@ -249,7 +259,7 @@ class Walker:
                 self._node_name(names[target.key], call, frame)
             elif target.key in rows:
                 self._record(rows[target.key], call, frame, conds, version)
-        elif isinstance(target, NodeMethod):
+        elif isinstance(target, NodeMethod) and target.name in rclpy.NODE_METHODS:
             start = len(self.calls)
             self._record(rclpy.NODE_METHODS[target.name], call, frame, conds, 2)
             if target.remote is not None:
@@ -279,10 +289,18 @@ class Walker:
             self._active.discard(id(info.node))
 
     def _node_name(self, spec: object, call: ast.Call, frame: Frame, offset: int = 0) -> None:
+        """Record a name the code gives a node; the node's is the first fully known one
+        (or the first, when none is), and every other known name is kept in ``names``."""
         ev = self.evaluator
         name_expr = argument(call, getattr(spec, "name", None))
-        if self.rosname is None and name_expr is not None:
-            self.rosname = text_of(ev.eval(name_expr, frame)).text
+        if name_expr is None:
+            return
+        name = text_of(ev.eval(name_expr, frame)).text
+        if "?" not in name and name not in self.names:
+            self.names.append(name)
+            self.names_at.append(self._where(frame, call))
+        if self.rosname is None or ("?" in self.rosname and "?" not in name):
+            self.rosname, self.namespace, self.anonymous = name, None, False
             ns_expr = argument(call, getattr(spec, "namespace", None))
             if ns_expr is not None:
                 self.namespace = text_of(ev.eval(ns_expr, frame)).text
@@ -398,9 +416,10 @@ class Walker:
                 default = ev.param_defaults.get(name)
                 if isinstance(default, Value) and default.is_known:
                     call.name_default = default.text
+        text = _in_namespace(text)
         if version == 2 and call.kind in _PARAM_KINDS:
             call.name = _param_name(text)
-        elif version == 2 and text.text.startswith("~/"):
+        elif text.text.startswith("~/"):  # f"{get_name()}/x": the private name ~x
             call.name = "~" + text.text[2:]
         else:  # get_name() is "~": only as the start of a name is it the node's name
             call.name = (text.text[:1] + text.text[1:].replace("~", "?")) or "?"
@@ -437,6 +456,16 @@ class Walker:
     def _where(self, frame: Frame, node: ast.AST) -> Location:
         return self.loader.location(frame.module.path, getattr(node, "lineno", 0),
                                     getattr(node, "col_offset", -1) + 1)
+
+
+def _in_namespace(text: Value) -> Value:
+    """``f"{get_namespace()}/x"`` is the relative name ``x``: it resolves in the node's
+    namespace (rospy's namespace ends in '/', rclpy's does not)."""
+    parts = text.parts
+    if len(parts) >= 2 and isinstance(parts[0], Unknown) and parts[0].origin == NAMESPACE \
+            and isinstance(parts[1], str) and parts[1].strip("/"):
+        return Value.of(parts[1].lstrip("/"), *parts[2:])
+    return text
 
 
 def _remote(remote: Value, name: str) -> str:

@@ -1,0 +1,92 @@
+"""A for loop over a known, short sequence is unrolled: one call per item, each with the
+loop's condition; longer or unknown sequences keep '?'."""
+
+from __future__ import annotations
+
+from haros_arch.extract.python import PythonResult, extract_python
+from haros_arch.workspace import Workspace
+
+HEAD = ("import rclpy\nfrom rclpy.node import Node\nfrom sensor_msgs.msg import Image\n"
+        "class Cam(Node):\n"
+        "    def __init__(self):\n"
+        "        super().__init__('cam')\n")
+
+
+def run(tmp_path, body: str) -> PythonResult:
+    source = tmp_path / "node.py"
+    source.write_text(HEAD + body)
+    return extract_python([str(source)], Workspace(root=str(tmp_path)), package="p")
+
+
+def names(result: PythonResult) -> list[tuple[str, tuple[str, ...]]]:
+    return [(c.name, tuple(x.text for x in c.conditions)) for c in result.calls]
+
+
+def test_list_of_strings(tmp_path) -> None:
+    result = run(tmp_path,
+                 "        for side in ['left', 'right']:\n"
+                 "            self.create_publisher(Image, f'{side}/image', 10)\n")
+    loop = ("side in ['left', 'right']",)
+    assert names(result) == [("left/image", loop), ("right/image", loop)]
+    assert [d.code for d in result.diagnostics] == []
+    assert {c.location.line for c in result.calls} == {8}
+
+
+def test_range_with_literal_bounds(tmp_path) -> None:
+    result = run(tmp_path,
+                 "        for i in range(1, 4):\n"
+                 "            self.create_publisher(Image, 'camera%d/image' % i, 10)\n")
+    assert [n for n, _ in names(result)] == ["camera1/image", "camera2/image",
+                                             "camera3/image"]
+
+
+def test_sequence_from_an_attribute_and_tuple_targets(tmp_path) -> None:
+    result = run(tmp_path,
+                 "        self.sides = ('front', 'back')\n"
+                 "        for i, side in enumerate(self.sides):\n"
+                 "            self.create_subscription(Image, f'{side}/image_{i}', None, 1)\n"
+                 "        for name, depth in [('a', 1), ('b', 5)]:\n"
+                 "            self.create_publisher(Image, name, depth)\n")
+    got = [(c.kind, c.name, c.queue_size) for c in result.calls]
+    assert got == [("subscribe", "front/image_0", 1), ("subscribe", "back/image_1", 1),
+                   ("publish", "a", 1), ("publish", "b", 5)]
+
+
+def test_nested_loops(tmp_path) -> None:
+    result = run(tmp_path,
+                 "        for robot in ['r1', 'r2']:\n"
+                 "            for side in ['left', 'right']:\n"
+                 "                self.create_publisher(Image, f'{robot}/{side}', 10)\n")
+    assert [n for n, _ in names(result)] == ["r1/left", "r1/right", "r2/left", "r2/right"]
+    assert all(len(c) == 2 for _, c in names(result))
+
+
+def test_long_or_unknown_sequences_keep_unknown(tmp_path) -> None:
+    result = run(tmp_path,
+                 "        for i in range(33):\n"
+                 "            self.create_publisher(Image, f'big{i}', 10)\n"
+                 "        for t in self.get_topics():\n"
+                 "            self.create_publisher(Image, t + '/out', 10)\n"
+                 "        for i in range(n):\n"
+                 "            self.create_publisher(Image, f'n{i}', 10)\n"
+                 "        for i in range(0, 4, 0):\n"
+                 "            self.create_publisher(Image, f'z{i}', 10)\n")
+    assert [n for n, _ in names(result)] == ["big?", "?/out", "n?", "z?"]
+    assert [d.code for d in result.diagnostics] == ["PY_DYNAMIC_NAME"] * 4
+
+
+def test_a_range_defined_in_the_module_is_that_function(tmp_path) -> None:
+    result = run(tmp_path,
+                 "        for i in range(2):\n"
+                 "            self.create_publisher(Image, f'x{i}', 10)\n"
+                 "def range(n):\n"
+                 "    return ['a']\n")
+    assert [n for n, _ in names(result)] == ["xa"]  # what the helper returns
+
+
+def test_loop_variable_is_unknown_after_the_loop(tmp_path) -> None:
+    result = run(tmp_path,
+                 "        for side in ['left', 'right']:\n"
+                 "            pass\n"
+                 "        self.create_publisher(Image, side, 10)\n")
+    assert [n for n, _ in names(result)] == ["?"]
