@@ -1,0 +1,65 @@
+"""The stand-in headers cover the rclcpp, rmw, rcl / rcutils, class_loader and std APIs
+that ROS 2 demos use beyond the basics (executor members, QoS liveliness and deadlines,
+publisher / subscription options, parameter events, std::pmr), and the fields of common
+ROS 2 interfaces whose packages are not in the workspace."""
+
+from __future__ import annotations
+
+import os
+
+import pytest
+
+from haros_arch.extract.cpp import CppResult, extract_cpp, interfaces, ros2_interfaces
+from haros_arch.workspace import scan
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.join(os.path.dirname(HERE), "fixtures", "cpp", "ros2_apis")
+SOURCE = os.path.join(ROOT, "src", "api_demo", "src", "map_relay.cpp")
+
+
+@pytest.fixture(scope="module")
+def relay() -> CppResult:
+    return extract_cpp([SOURCE], scan([ROOT]), cache_dir=None)
+
+
+def test_parses_without_errors(relay: CppResult) -> None:
+    found = [(d.code, d.message) for d in relay.diagnostics
+             if d.code in ("CPP_PARSE_ERROR", "CPP_MESSAGE_FIELD", "CPP_INCLUDE_MISSING")]
+    assert found == []
+
+
+def test_calls(relay: CppResult) -> None:
+    rows = [(c.kind, c.name, c.type, c.queue_size, c.location.line) for c in relay.calls]
+    assert rows == [
+        ("publish", "map_out", "nav_msgs/msg/OccupancyGrid", 3, 38),
+        ("subscribe", "map_in", "nav_msgs/msg/OccupancyGrid", 10, 45),
+        ("subscribe", "/parameter_events", "rcl_interfaces/msg/ParameterEvent", 10, 51),
+        ("client", "add_two_ints", "example_interfaces/srv/AddTwoInts", None, 60),
+    ]
+    assert relay.rosname == "map_relay"
+
+
+@pytest.mark.parametrize(("name", "kind", "fields"), [
+    ("example_interfaces/AddTwoInts", "srv", ["int64_t a;", "int64_t sum;"]),
+    ("example_interfaces/Fibonacci", "action", ["int32_t order;",
+                                                "std::vector<int32_t> sequence;"]),
+    ("nav_msgs/OccupancyGrid", "msg", ["nav_msgs::msg::MapMetaData info;",
+                                       "std::vector<int8_t> data;"]),
+    ("nav_msgs/MapMetaData", "msg", ["uint32_t width;", "geometry_msgs::msg::Pose origin;"]),
+    ("rcl_interfaces/ParameterEvent", "msg", [
+        "std::vector<rcl_interfaces::msg::Parameter> changed_parameters;", "std::string node;"]),
+    ("rcl_interfaces/ParameterValue", "msg", ["int64_t integer_value;"]),
+    ("lifecycle_msgs/State", "msg", ["static constexpr uint8_t PRIMARY_STATE_ACTIVE = 3;"]),
+])
+def test_well_known_ros2_interfaces(name: str, kind: str, fields: list[str]) -> None:
+    package, base = name.split("/")
+    definition = interfaces.parse_definition(package, base, interfaces.WELL_KNOWN[name])
+    source = ros2_interfaces.render(definition, kind)
+    for field in fields:
+        assert field in source
+
+
+def test_fields_declare_their_type_alias() -> None:
+    definition = interfaces.parse_definition("sensor_msgs", "Image",
+                                             interfaces.WELL_KNOWN["sensor_msgs/Image"])
+    assert "using _step_type = uint32_t;" in ros2_interfaces.render(definition, "msg")
