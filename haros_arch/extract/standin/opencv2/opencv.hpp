@@ -15,6 +15,10 @@
 #define CV_8UC3 16
 #define CV_8UC4 24
 #define CV_16UC1 2
+#define CV_8UC2 8
+#define CV_16SC1 3
+#define CV_16UC3 18
+#define CV_32SC1 4
 #define CV_32FC1 5
 #define CV_32FC3 21
 #define CV_64FC1 6

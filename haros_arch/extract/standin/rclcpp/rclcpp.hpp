@@ -30,8 +30,8 @@ struct IntegerRange { long from_value, to_value, step; };
 } }
 namespace rcl_interfaces { namespace msg { struct ParameterEvent; } }
 namespace builtin_interfaces { namespace msg {
-struct Time { int32_t sec; uint32_t nanosec; };
-struct Duration { int32_t sec; uint32_t nanosec; };
+struct Time { int32_t sec; uint32_t nanosec; using _sec_type = int32_t; using _nanosec_type = uint32_t; };
+struct Duration { int32_t sec; uint32_t nanosec; using _sec_type = int32_t; using _nanosec_type = uint32_t; };
 } }
 namespace rclcpp {
 void init(int argc, char const* const argv[]);
@@ -97,7 +97,7 @@ public:
   explicit Time(int64_t nanoseconds, rcl_clock_type_t clock_type = RCL_SYSTEM_TIME);
   Time(int32_t seconds, uint32_t nanoseconds, rcl_clock_type_t clock_type);
   rcl_clock_type_t get_clock_type() const;
-  Time(const builtin_interfaces::msg::Time& t);
+  Time(const builtin_interfaces::msg::Time& t, rcl_clock_type_t clock_type = RCL_ROS_TIME);
   double seconds() const;
   int64_t nanoseconds() const;
   operator builtin_interfaces::msg::Time() const;
@@ -426,6 +426,9 @@ using OnSetParametersCallbackHandle = node_interfaces::OnSetParametersCallbackHa
       const rcl_interfaces::msg::ParameterDescriptor& descriptor = \
           rcl_interfaces::msg::ParameterDescriptor(), bool ignore_override = false) \
       -> typename std::enable_if<!__is_array(T), T>::type; \
+  std::string declare_parameter(const std::string& name, const char* default_value, \
+      const rcl_interfaces::msg::ParameterDescriptor& descriptor = \
+          rcl_interfaces::msg::ParameterDescriptor(), bool ignore_override = false); \
   template<class T> std::vector<T> declare_parameters(const std::string& ns, \
       const std::map<std::string, T>& parameters, bool ignore_overrides = false); \
   void undeclare_parameter(const std::string& name); \
@@ -458,7 +461,12 @@ using OnSetParametersCallbackHandle = node_interfaces::OnSetParametersCallbackHa
   rclcpp::node_interfaces::NodeTimersInterface::SharedPtr get_node_timers_interface(); \
   rclcpp::node_interfaces::NodeWaitablesInterface::SharedPtr get_node_waitables_interface(); \
   size_t count_publishers(const std::string& topic) const; \
-  size_t count_subscribers(const std::string& topic) const;
+  size_t count_subscribers(const std::string& topic) const; \
+  using OnSetParametersCallbackHandle = rclcpp::node_interfaces::OnSetParametersCallbackHandle; \
+  using PreSetParametersCallbackHandle = \
+      rclcpp::node_interfaces::PreSetParametersCallbackHandle; \
+  using PostSetParametersCallbackHandle = \
+      rclcpp::node_interfaces::PostSetParametersCallbackHandle;
 class Node : public std::enable_shared_from_this<Node> {
 public:
   RCLCPP_SMART_PTR_DEFINITIONS(Node)

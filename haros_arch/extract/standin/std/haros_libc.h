@@ -31,6 +31,11 @@ typedef int pid_t;
 #define PRIx32 "x"
 #define PRIx64 "lx"
 #define PRIuPTR "lu"
+#define PRIxPTR "lx"
+#define PRIXPTR "lX"
+#define PRIX32 "X"
+#define PRIX64 "lX"
+#define PRIdPTR "ld"
 typedef unsigned int useconds_t;
 typedef __builtin_va_list va_list;
 #define va_start(ap, param) __builtin_va_start(ap, param)

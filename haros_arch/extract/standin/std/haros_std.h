@@ -7,6 +7,7 @@
 namespace std {
 using ::size_t; using ::ptrdiff_t; using ::int8_t; using ::int16_t; using ::int32_t;
 using ::int64_t; using ::uint8_t; using ::uint16_t; using ::uint32_t; using ::uint64_t;
+using ::intptr_t; using ::uintptr_t; using ::intmax_t; using ::uintmax_t;
 using ::printf; using ::fprintf; using ::snprintf; using ::sprintf; using ::FILE;
 using ::getenv; using ::exit; using ::abort; using ::atoi; using ::atof; using ::strtol;
 using ::strtod; using ::malloc; using ::free; using ::memcpy; using ::memset;
