@@ -69,7 +69,12 @@ def _node(data: dict[str, Any], package: str) -> Node:
                            c.get("queue_size"), c.get("qos"), bool(c.get("latch", False)),
                            c.get("callback"), conditions(c.get("conditions")),
                            location(c.get("location")),
-                           handle_namespace=c.get("handle_namespace"))
+                           name_param=c.get("name_param"), name_default=c.get("name_default"),
+                           origin=str(c.get("origin", "source")),
+                           has_default=bool(c.get("has_default", False)),
+                           default=c.get("default"), searched=bool(c.get("searched", False)),
+                           handle_namespace=c.get("handle_namespace"),
+                           deletes=bool(c.get("deletes", False)))
              for c in data.get("calls", ())]
     return Node(data.get("package", package), executable, data.get("kind", "executable"),
                 data.get("language", "cpp"), list(data.get("sources", ())), calls,
@@ -91,6 +96,7 @@ class _Resources:
     def __init__(self, config: Configuration) -> None:
         self.config = config
         self.by_key: dict[tuple[type[Resource], str], Resource] = {}
+        self.by_id: dict[str, Resource] = {}
 
     def add(self, cls: type[Resource], data: dict[str, Any]) -> Resource:
         name = str(data.get("name", ""))
@@ -104,6 +110,7 @@ class _Resources:
                 resource.launch_location = location(data.get("location"))
                 resource.launch_conditions = conditions(data.get("conditions"))
         self.by_key.setdefault((cls, name), resource)
+        self.by_id.setdefault(resource.id, resource)
         self._collection(cls).append(resource)
         return resource
 
@@ -133,7 +140,9 @@ def _configuration(data: dict[str, Any], nodes: dict[str, Node]) -> Configuratio
             name, nodes.get(item.get("node") or ""), item.get("id") or f"node:{name}",
             item.get("namespace") or namespace_of(name),
             [tuple(pair) for pair in item.get("remaps", ())], item.get("args", ""),
-            conditions(item.get("conditions")), location(item.get("location")))
+            conditions(item.get("conditions")), location(item.get("location")),
+            origin=str(item.get("origin", "launch")),
+            ros_version=int(item.get("ros_version", 1) or 1))
         config.nodes.append(instance)
         by_name.setdefault(name, instance)
     resources = _Resources(config)
@@ -155,18 +164,41 @@ def _configuration(data: dict[str, Any], nodes: dict[str, Node]) -> Configuratio
             config.nodes.append(instance)
             by_name[node_name] = instance
         full = str(item.get("name", ""))
-        resource = resources.get(_RESOURCE_OF_KIND[kind], full)
+        named = resources.by_id.get(str(item.get("resource", "")))
+        resource = named if isinstance(named, _RESOURCE_OF_KIND[kind]) else resources.get(
+            _RESOURCE_OF_KIND[kind], full)
         rosname = RosName(str(item.get("given", full)), full, namespace_of(full))
         link = LINK_CLASSES[kind](
             node=instance, resource=resource, rosname=rosname, type=item.get("type"),
             queue_size=item.get("queue_size"), qos=item.get("qos"),
             latch=bool(item.get("latch", False)),
-            conditions=conditions(item.get("conditions")), location=location(item.get("location")))
+            conditions=conditions(item.get("conditions")), location=location(item.get("location")),
+            origin=str(item.get("origin", "source")))
+        link.call = _call_of(instance, kind, link.location)
         instance.links.append(link)
         resource.links.append(link)
         config.links.append(link)
+    for key in ("topics", "services", "actions", "parameters"):
+        for item in data.get(key, ()):
+            owner = resources.by_id.get(str(item.get("id", "")))
+            if owner is None:
+                continue
+            owner.candidates = [resources.by_id[i] for i in item.get("candidates") or ()
+                                   if i in resources.by_id]
+            whole = resources.by_id.get(str(item.get("read_as_part_of") or ""))
+            if isinstance(owner, Parameter) and isinstance(whole, Parameter):
+                owner.read_as_part_of = whole
     config.diagnostics = [_diagnostic(d) for d in data.get("diagnostics", ())]
     return config
+
+
+def _call_of(instance: NodeInstance, kind: str, where: Location) -> PrimitiveCall | None:
+    """The source call a link was made from: same node type, kind and place."""
+    if instance.node is None:
+        return None
+    kinds = ("read", "declare") if kind == "read" else (kind,)
+    return next((call for call in instance.node.calls
+                 if call.kind in kinds and call.location == where), None)
 
 
 def from_data(data: Any) -> Model:
