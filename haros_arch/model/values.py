@@ -74,3 +74,19 @@ class Value:
 
     def __str__(self) -> str:
         return self.text
+
+
+def scalar_type(value: object) -> str | None:
+    """The ROS parameter type of a Python scalar: bool, int, double or str (None if not one).
+
+    ``bool`` is tested before ``int``, which it subclasses in Python.
+    """
+    if isinstance(value, bool):
+        return "bool"
+    if isinstance(value, int):
+        return "int"
+    if isinstance(value, float):
+        return "double"
+    if isinstance(value, str):
+        return "str"
+    return None

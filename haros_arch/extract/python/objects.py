@@ -9,7 +9,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any
 
-from ...model.values import Value
+from ...model.values import Value, scalar_type
 from .modules import ClassInfo, FunctionInfo, Module
 
 
@@ -129,12 +129,8 @@ def text_of(value: object) -> Value:
 
 def param_type(value: object) -> str | None:
     """A parameter type from the Python value it is given (as the C++ extractor names them)."""
-    if isinstance(value, bool):
-        return "bool"
-    if isinstance(value, int):
-        return "int"
-    if isinstance(value, float):
-        return "double"
+    if isinstance(value, bool | int | float):
+        return scalar_type(value)
     if isinstance(value, Value):
         return "str"
     if isinstance(value, Seq):

@@ -18,6 +18,7 @@ from typing import Any
 
 import yaml
 
+from ...model.values import scalar_type
 from .. import expression
 
 MAX_YAML_NODES = 100_000
@@ -65,20 +66,13 @@ def convert_value(text: str, kind: str) -> Any:
 
 
 def type_name(value: Any) -> str:
-    if isinstance(value, bool):
-        return "bool"
-    if isinstance(value, int):
-        return "int"
-    if isinstance(value, float):
-        return "double"
-    if isinstance(value, str):
-        return "str"
+    scalar = scalar_type(value)
+    if scalar is not None:  # a Binary is a str, so it is typed "str" here
+        return scalar
     if isinstance(value, (list, tuple)):
         return "list"
     if isinstance(value, dict):
         return "dict"
-    if isinstance(value, Binary):
-        return "binary"
     return "yaml"
 
 

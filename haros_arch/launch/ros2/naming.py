@@ -25,7 +25,7 @@ from typing import Any
 
 import yaml
 
-from ...model.values import UNKNOWN_MARK
+from ...model.values import UNKNOWN_MARK, scalar_type
 
 PARAMS_KEY = "ros__parameters"
 MAX_PARAM_DEPTH = 32
@@ -157,14 +157,9 @@ def flatten(values: Any, prefix: str = "", depth: int = 0) -> Iterator[tuple[str
 
 def param_type(value: Any) -> str | None:
     """The ROS 2 parameter type of a value as YAML gives it (None if unknown)."""
-    if isinstance(value, bool):
-        return "bool"
-    if isinstance(value, int):
-        return "int"
-    if isinstance(value, float):
-        return "double"
-    if isinstance(value, str):
-        return "str"
+    scalar = scalar_type(value)
+    if scalar is not None:
+        return scalar
     if isinstance(value, (list, tuple)) and value:
         kinds = {param_type(item) for item in value}
         if kinds == {"int", "double"}:
