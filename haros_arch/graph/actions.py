@@ -17,6 +17,7 @@ from __future__ import annotations
 
 from dataclasses import replace
 
+from ..model.rosname import RosName, namespace_of
 from ..model.runtime import Configuration, Link
 from ..model.source import CallKind, PrimitiveCall
 
@@ -47,26 +48,29 @@ def _type(template: str, action_type: str | None) -> str | None:
     return template.format(pkg=parts[0], name=parts[-1])
 
 
-def wire_calls(link: Link) -> list[PrimitiveCall]:
-    """The topic and service calls that an action link stands for, as calls whose
-    names are already resolved (they take the action's full name)."""
+def wire_calls(link: Link) -> list[tuple[PrimitiveCall, RosName]]:
+    """The topic and service calls that an action link stands for, each with its name:
+    the action's name (as written and as resolved) with the wire suffix."""
     serving = link.kind == "action-server"
     rows = ROS2 if link.node.ros_version == 2 else ROS1
     made = []
     for suffix, server_kind, client_kind, template in rows:
         kind: CallKind = server_kind if serving else client_kind  # type: ignore[assignment]
-        base = link.call or PrimitiveCall(kind, link.rosname.full)
-        made.append(replace(
-            base, kind=kind, name=f"{link.rosname.full.rstrip('/')}/{suffix}",
+        full = f"{link.rosname.full.rstrip('/')}/{suffix}"
+        base = link.call or PrimitiveCall(kind, full)
+        call = replace(
+            base, kind=kind, name=full,
             type=_type(template, link.type), queue_size=None, qos=None, latch=False,
             callback=None, name_param=None, name_default=None, origin="action",
             conditions=tuple(c for c in link.conditions
-                             if c not in link.node.conditions)))
+                             if c not in link.node.conditions))
+        given = f"{link.rosname.given.rstrip('/')}/{suffix}"
+        made.append((call, RosName(given, full, namespace_of(full))))
     return made
 
 
-def action_links(config: Configuration) -> list[tuple[Link, PrimitiveCall]]:
-    """Every action link of the configuration with each call it stands for."""
-    return [(link, call) for link in list(config.links)
+def action_links(config: Configuration) -> list[tuple[Link, PrimitiveCall, RosName]]:
+    """Every action link of the configuration with each call it stands for and its name."""
+    return [(link, call, name) for link in list(config.links)
             if link.kind in ("action-server", "action-client")
-            for call in wire_calls(link)]
+            for call, name in wire_calls(link)]

@@ -113,10 +113,7 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
         remaps = resolve_remaps(instance.remaps, instance.namespace, instance.name)
         for call in instance.node.calls:
             link(instance, call, remaps, resources, config)
-    for action, call in action_links(config):
-        suffix = call.name[len(action.rosname.full):]
-        name = RosName(action.rosname.given.rstrip("/") + suffix, call.name,
-                       namespace_of(call.name))
+    for action, call, name in action_links(config):
         link(action.node, call, {}, resources, config, name)
     _namespace_values(config)
     return config
