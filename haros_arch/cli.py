@@ -74,8 +74,8 @@ def _parser() -> argparse.ArgumentParser:
     report.add_argument("-o", "--output", required=True, help="the HTML file to write")
     _run_options(report)
 
-    launch = sub.add_parser("launch", help="nodes and parameters a ROS 1 launch file "
-                            "would start (like roslaunch --nodes --dump-params)")
+    launch = sub.add_parser("launch", help="nodes and parameters a ROS 1 or ROS 2 launch "
+                            "file would start (like roslaunch --nodes --dump-params)")
     launch.add_argument("file", nargs="+", metavar="FILE", help="a path, or PKG PATH/IN/PKG")
     launch.add_argument("--arg", action="append", default=[], metavar="NAME:=VALUE")
     launch.add_argument("--workspace", default=".", help="workspace folder (default: .)")
