@@ -179,6 +179,15 @@ LIBRARIES: dict[tuple[str, str], RosFunction] = {
     ("tf2_ros::TransformListener", "TransformListener"): RosFunction(
         "subscribe", fixed_name="/tf", fixed_type=_TF, on_handle=False,
         siblings=(("subscribe", "/tf_static", _TF),)),
+    # dynamic_reconfigure's server lives in the (private) namespace of its handle
+    ("dynamic_reconfigure::Server", "Server"): RosFunction(
+        "server", fixed_name="~set_parameters", fixed_type="dynamic_reconfigure/Reconfigure",
+        on_handle=False,
+        siblings=(("publish", "~parameter_descriptions", "dynamic_reconfigure/ConfigDescription"),
+                  ("publish", "~parameter_updates", "dynamic_reconfigure/Config"))),
+    ("diagnostic_updater::Updater", "Updater"): RosFunction(
+        "publish", fixed_name="/diagnostics", fixed_type="diagnostic_msgs/DiagnosticArray",
+        on_handle=False),
     ("tf::TransformBroadcaster", "TransformBroadcaster"): RosFunction(
         "publish", fixed_name="/tf", fixed_type=_TF, on_handle=False),
     ("tf::TransformListener", "TransformListener"): RosFunction(

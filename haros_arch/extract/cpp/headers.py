@@ -61,6 +61,8 @@ UMBRELLAS = {
     "message_filters/": "message_filters/subscriber.h",
     "actionlib/": "actionlib/server/simple_action_server.h", "nodelet/": "nodelet/nodelet.h",
     "pluginlib/": "pluginlib/class_list_macros.hpp",
+    "dynamic_reconfigure/": "dynamic_reconfigure/server.h",
+    "diagnostic_updater/": "diagnostic_updater/diagnostic_updater.h",
     # libraries beside ROS that node classes use: minimal stand-ins keep them parsing
     "opencv2/": "opencv2/opencv.hpp", "opencv/": "opencv2/opencv.hpp",
     "cv_bridge/": "cv_bridge/cv_bridge.h", "Eigen/": "Eigen/Dense", "eigen3/": "Eigen/Dense",

@@ -67,6 +67,11 @@ WELL_KNOWN: dict[str, str] = {
                          "geometry_msgs/PoseWithCovariance pose\n"
                          "geometry_msgs/TwistWithCovariance twist",
     "nav_msgs/Path": "Header header\ngeometry_msgs/PoseStamped[] poses",
+    "nav_msgs/GetMap": "---\nnav_msgs/OccupancyGrid map",
+    "nav_msgs/SetMap": "nav_msgs/OccupancyGrid map\n"
+                       "geometry_msgs/PoseWithCovarianceStamped initial_pose\n---\nbool success",
+    "geometry_msgs/PoseWithCovarianceStamped": "Header header\nPoseWithCovariance pose",
+    "geometry_msgs/PoseArray": "Header header\nPose[] poses",
     "sensor_msgs/LaserScan": "Header header\nfloat32 angle_min\nfloat32 angle_max\n"
                              "float32 angle_increment\nfloat32 time_increment\n"
                              "float32 scan_time\nfloat32 range_min\nfloat32 range_max\n"

@@ -32,7 +32,11 @@ public:
   template<class F> thread* create_thread(F f);
   void join_all();
 };
-class mutex { public: mutex(); void lock(); void unlock(); bool try_lock(); };
+class mutex {
+public:
+  mutex(); void lock(); void unlock(); bool try_lock();
+  class scoped_lock { public: explicit scoped_lock(mutex& m); void lock(); void unlock(); };
+};
 typedef mutex recursive_mutex;
 typedef mutex timed_mutex;
 class shared_mutex : public mutex { public: void lock_shared(); void unlock_shared(); };

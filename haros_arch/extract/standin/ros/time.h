@@ -9,6 +9,8 @@ public:
   Duration();
   explicit Duration(double t);
   Duration(int32_t s, int32_t n);
+  Duration& fromSec(double t);
+  Duration& fromNSec(int64_t t);
   double toSec() const;
   int64_t toNSec() const;
   bool sleep() const;

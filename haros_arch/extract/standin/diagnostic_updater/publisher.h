@@ -1,0 +1,2 @@
+// haros_arch stand-in
+#include <diagnostic_updater/diagnostic_updater.h>
