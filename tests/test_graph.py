@@ -87,12 +87,13 @@ def test_launch_parameters_and_unknown_nodes():
     assert [d.code for d in config.diagnostics] == ["NODE_PACKAGE_UNKNOWN"]
 
 
-def test_duplicate_node_names_are_reported():
+def test_duplicate_node_names_keep_apart_and_are_left_to_the_query():
+    # the duplicate-node-names query (or roslaunch's LAUNCH_NODE_DUPLICATE) says it once
     config = graph([NodeDecl("/x", "p", "n", location=Location("p", "a.launch", 2)),
                     NodeDecl("/x", "p", "n", location=Location("p", "a.launch", 3))],
                    nodes=[node("p", "n")])
-    assert [(d.code, d.location.line) for d in config.diagnostics] == [
-        ("NODE_NAME_DUPLICATE", 3)]
+    assert [n.id for n in config.nodes] == ["node:/x", "node:/x#2"]
+    assert config.diagnostics == []
 
 
 def test_ros2_parameters_belong_to_their_node():

@@ -99,10 +99,8 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
     seen: dict[str, NodeInstance] = {}
     for decl in launch.nodes:
         instance = _instance(decl, nodes, workspace, config)
-        if instance.name in seen and UNKNOWN_MARK not in instance.name:
-            config.diagnostics.append(diag.make(
-                "NODE_NAME_DUPLICATE", instance.location, name=instance.name,
-                other=seen[instance.name].location))
+        # two instances with one name keep apart by id; the duplicate-node-names query
+        # reports them (and roslaunch's own refusal is LAUNCH_NODE_DUPLICATE)
         instance.id = f"node:{instance.name}"
         if instance.name in seen:
             instance.id += f"#{sum(1 for n in config.nodes if n.name == instance.name) + 1}"

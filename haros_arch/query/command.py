@@ -54,7 +54,11 @@ def check(args: Any, out: Console, err: Console, analyse: Analyse) -> int:
     if model is None:
         return EXIT_USAGE
     findings = run_catalogue(model, project)
-    diagnostics = [d for d in model.all_diagnostics if d.code not in ABSORBED_CODES]
+    # launch-missing-reference reports a configuration's missing references as findings;
+    # the project file's own (a listed package not in the workspace) stay diagnostics
+    absorbed = {d for config in model.configurations for d in config.diagnostics
+                if d.code in ABSORBED_CODES}
+    diagnostics = [d for d in model.all_diagnostics if d not in absorbed]
     fmt = getattr(args, "format", "text")
     if fmt == "json":
         _write(json.dumps({"diagnostics": to_data(diagnostics),
