@@ -13,6 +13,7 @@ import pytest
 import yaml
 from conftest import FIXTURES, ROOT, only_case
 
+from haros_arch import query
 from haros_arch.model.load import from_data
 from haros_arch.query.catalogue import load_catalogue, project_rules, run_catalogue, run_rule
 
@@ -130,3 +131,22 @@ def test_a_broken_project_query_is_an_error_finding_not_a_crash():
                                catalogue=[])
     assert finding.rule == "query-error" and finding.severity == "error"
     assert "^" in finding.message
+
+
+def test_an_action_is_one_finding_not_one_per_wire_topic():
+    # a global, partly unknown action name: the action link is reported, not the five
+    # topics actionlib puts on the wire for it (``direct_links`` leaves those out)
+    wire = [("publish", "goal"), ("publish", "cancel"), ("subscribe", "status"),
+            ("subscribe", "feedback"), ("subscribe", "result")]
+    model = configuration({"links": [
+        {"kind": "action-client", "node": "/ui", "name": "/?/dock", "given": "/?/dock",
+         "type": "dock_msgs/Dock"},
+        *({"kind": kind, "node": "/ui", "name": f"/?/dock/{suffix}",
+           "given": f"/?/dock/{suffix}", "origin": "action"} for kind, suffix in wire)]})
+    for rule_id in ("global-names", "unresolved-names"):
+        found = run_rule(RULES[rule_id], model)
+        assert [f.entities for f in found] == [("node:/ui", "action:/?/dock")], rule_id
+    config = model.configurations[0]
+    assert query.compile("direct_links").run(query.config_scope(config, model)) == [
+        config.links[0]]
+    assert len(query.compile("config/direct_links").run(query.config_scope(config))) == 1

@@ -422,6 +422,12 @@ class Configuration:
     def __repr__(self) -> str:
         return f"Configuration({self.name})"
 
+    @property
+    def direct_links(self) -> list[Link]:
+        """``links`` without the topic and service links that an action link stands for
+        (``origin == "action"``): what the code (or a hint) asked for by name."""
+        return [link for link in self.links if link.origin != "action"]
+
     def node(self, name: str) -> NodeInstance | None:
         return next((n for n in self.nodes if n.name == name), None)
 
