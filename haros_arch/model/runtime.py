@@ -294,6 +294,7 @@ class Link:
     JSON_HEAD: ClassVar[dict[str, Callable[[Any], Any]]] = {
         "kind": lambda link: link.kind,
         "node": lambda link: link.node.name,
+        "node_id": lambda link: link.node.id,  # tells apart two instances of one name
         "name": lambda link: link.rosname.full,
         "given": lambda link: link.rosname.given,
         "resource": lambda link: link.resource.id,
