@@ -21,6 +21,10 @@ def main():
     rate = rospy.get_param("~rate", 10)        # has a default: fine if unset
     port = rospy.get_param("~port")            # no default and never set
     found = rospy.search_param("robot_model")  # set at the root
+    rospy.delete_param("~scratch")             # a delete does not set it ...
+    scratch = rospy.get_param("~scratch")      # ... so this read fails
+    rospy.delete_param("/legacy")              # nor does a search find a deleted one
+    legacy = rospy.get_param(rospy.search_param("legacy"))
     pub = rospy.Publisher("chatter", String, queue_size=10)
     if rate > 5:
         fast = rospy.Publisher("fast", String, queue_size=10)
@@ -57,9 +61,10 @@ def test_catalogue_on_parameter_server_semantics(write_tree):
     by_rule: dict[str, list[str]] = {}
     for finding in findings:
         by_rule.setdefault(finding.rule, []).append(finding.message)
-    # only ~port is read without a default and never set
-    assert len(by_rule["parameter-read-not-set"]) == 1
-    assert "/foo/talker/port" in by_rule["parameter-read-not-set"][0]
+    # ~port and ~scratch are read without a default and never set (~scratch is only
+    # deleted); the search for legacy finds no /legacy, which is only deleted
+    assert sorted(m.split()[0] for m in by_rule["parameter-read-not-set"]) == [
+        "/foo/legacy", "/foo/talker/port", "/foo/talker/scratch"]
     # gains/P and gains/I are read as the gains namespace; robot_model is found by search
     assert "parameter-set-not-read" not in by_rule
     # the publisher under `if` is conditional; the one in the try body is not

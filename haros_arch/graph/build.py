@@ -261,7 +261,7 @@ def _search(name: RosName, instance: NodeInstance, resources: Resources) -> RosN
         namespace = namespace.rsplit("/", 1)[0]
     for full in levels:
         found = resources.by_name.get((Parameter, full))
-        if isinstance(found, Parameter) and (found.set_by_launch or found.writers):
+        if isinstance(found, Parameter) and found.is_set:
             return RosName(name.given, full, namespace_of(full))
     return name
 

@@ -261,6 +261,17 @@ class Parameter(Resource):
         return self._of("write")
 
     @property
+    def setters(self) -> list[Link]:
+        """Writes that give it a value (``writers`` without those that delete it)."""
+        return [link for link in self.writers
+                if not (isinstance(link, ParamWriteLink) and link.deletes)]
+
+    @property
+    def is_set(self) -> bool:
+        """A launch file or a node gives it a value; deleting it does not."""
+        return self.set_by_launch or bool(self.setters)
+
+    @property
     def writer_names(self) -> list[str]:
         names = _names(self.writers)
         return [LAUNCH_WRITER, *names] if self.set_by_launch else names
@@ -269,7 +280,7 @@ class Parameter(Resource):
     def conditions(self) -> tuple[Condition, ...]:
         """A launch-set parameter exists under the launch conditions (or when written)."""
         if self.set_by_launch:
-            return self.launch_conditions if not self.writers else ()
+            return self.launch_conditions if not self.setters else ()
         return super().conditions
 
 
