@@ -170,3 +170,19 @@ def test_actions_are_also_their_topics_and_services():
     assert send_goal.types == ["nav2_msgs/action/NavigateToPose_SendGoal"]
     assert [link.node.name for link in send_goal.servers] == ["/bt"]
     assert config.topic("/nav/_action/status").types == ["action_msgs/msg/GoalStatusArray"]
+
+
+def test_a_delete_is_not_a_set():
+    sim = Condition("$(arg sim)", "launch", "if")
+    cleaner = node("p", "cleaner", PrimitiveCall("write", "/calib", deletes=True),
+                   PrimitiveCall("write", "/mode"), PrimitiveCall("write", "/old", deletes=True))
+    config = graph([NodeDecl("/cleaner", "p", "cleaner")],
+                   params=[ParamDecl("/calib", 1.0, "double", conditions=(sim,)),
+                           ParamDecl("/mode", "a", "str", conditions=(sim,))],
+                   nodes=[cleaner])
+    calib, mode, old = (config.parameter(n) for n in ("/calib", "/mode", "/old"))
+    # set under the launch condition and deleted by a node: it exists only under it
+    assert calib.conditions == (sim,) and calib.is_set and calib.setters == []
+    # a node sets it whatever the launch file does
+    assert mode.conditions == () and [w.node.name for w in mode.setters] == ["/cleaner"]
+    assert not old.is_set and [w.node.name for w in old.writers] == ["/cleaner"]
