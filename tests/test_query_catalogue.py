@@ -150,3 +150,33 @@ def test_an_action_is_one_finding_not_one_per_wire_topic():
     assert query.compile("direct_links").run(query.config_scope(config, model)) == [
         config.links[0]]
     assert len(query.compile("config/direct_links").run(query.config_scope(config))) == 1
+
+
+def test_the_same_finding_at_the_same_place_is_said_once():
+    # the listener subscribes to /chatter twice (two callbacks): one pair, one warning
+    model = configuration({"links": [
+        {"kind": "publish", "node": "/talker", "name": "/chatter1", "given": "chatter",
+         "type": "std_msgs/String", "location": {"file": "demo/talker.py", "line": 4}},
+        *({"kind": "subscribe", "node": "/listener", "name": "/chatter", "given": "chatter",
+           "type": "std_msgs/String", "location": {"file": "demo/listener.py", "line": line}}
+          for line in (7, 8))]})
+    found = run_catalogue(model, None, [RULES["similar-disconnected-topics"]])
+    assert [(f.location.file, f.location.line) for f in found] == [("demo/talker.py", 4)]
+
+
+def test_a_type_mismatch_with_a_server_points_at_each_client_call():
+    model = configuration({"links": [
+        {"kind": "server", "node": "/server", "name": "/add", "type": "a/Add",
+         "location": {"file": "a/server.cpp", "line": 10}},
+        *({"kind": "client", "node": "/client", "name": "/add", "type": "b/Bad",
+           "location": {"file": "b/client.py", "line": line}} for line in (20, 30)),
+        {"kind": "action-server", "node": "/server", "name": "/dock", "type": "a/Dock",
+         "location": {"file": "a/server.cpp", "line": 12}},
+        {"kind": "action-client", "node": "/client", "name": "/dock", "type": "b/Dock",
+         "location": {"file": "b/client.py", "line": 40}}]})
+    found = run_catalogue(model, None, [RULES["service-type-mismatch"],
+                                        RULES["action-type-mismatch"]])
+    assert sorted((f.rule, f.location.file, f.location.line) for f in found) == [
+        ("action-type-mismatch", "b/client.py", 40),
+        ("service-type-mismatch", "b/client.py", 20),
+        ("service-type-mismatch", "b/client.py", 30)]

@@ -212,6 +212,9 @@ def run_catalogue(model: Model, project: Any = None,
             if suppressions.applies(rule.id, places):
                 continue
             found.append(finding)
+    # two matches that say the same thing at the same place (a node subscribing twice
+    # to one topic pairs twice with the same publisher) are one finding
+    found = list(dict.fromkeys(found))
     found.sort(key=lambda f: (-SEVERITY_RANK[f.severity], f.rule, f.configuration or "",
                               f.location.file or "", f.location.line))
     return found
