@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import os
 import shlex
 from collections.abc import Mapping
 from typing import Any
@@ -22,7 +23,7 @@ from ..model.runtime import (
 )
 from ..model.source import Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK
-from ..workspace import Workspace
+from ..workspace import Workspace, installed_roots
 from .actions import action_links
 
 RESOURCE_OF_KIND: dict[str, type[Resource]] = {
@@ -114,7 +115,19 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
     for action, call, name in action_links(config):
         link(action.node, call, {}, resources, config, name)
     _namespace_values(config)
+    config.package_paths = package_paths(launch, workspace)
     return config
+
+
+def package_paths(launch: LaunchModel, workspace: Workspace) -> list[str]:
+    """The folders (workspace roots, installed package roots) that launch values lead
+    into: ``$(find pkg)/maps/a.yaml`` is an absolute path here, but not a hard-coded one."""
+    roots = {os.path.normpath(r) for r in (*workspace.roots,
+                                           *installed_roots(workspace.environment)) if r}
+    texts = [p.value for p in launch.params if isinstance(p.value, str)]
+    texts += [d.args for d in launch.nodes]
+    return sorted(root for root in roots
+                  if any(root.rstrip("/") + "/" in text for text in texts))
 
 
 def _namespace_values(config: Configuration) -> None:

@@ -195,6 +195,7 @@ def _configuration(data: dict[str, Any], nodes: dict[str, Node],
             if isinstance(owner, Parameter) and isinstance(whole, Parameter):
                 owner.read_as_part_of = whole
     _wire_calls(config)
+    config.package_paths = [str(p) for p in data.get("package_paths", ())]
     for instance in config.nodes:  # a hint-made node type lists what its instances use
         if instance.node is not None and instance.node.name in hinted:
             calls = instance.node.calls

@@ -430,6 +430,9 @@ class Configuration:
     parameters: list[Parameter] = field(default_factory=list)
     links: list[Link] = field(default_factory=list)
     diagnostics: list[Diagnostic] = field(default_factory=list)
+    # the workspace and installed-package folders that launch values lead into, as
+    # $(find pkg) / FindPackageShare resolved them here: paths under them are portable
+    package_paths: list[str] = field(default_factory=list)
 
     def __repr__(self) -> str:
         return f"Configuration({self.name})"

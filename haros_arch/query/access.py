@@ -64,7 +64,7 @@ FIELDS: dict[type, tuple[str, ...]] = {
                     "conditions", "location", "name_param", "name_default", "origin",
                     "has_default", "default", "searched", "handle_namespace", "deletes"),
     Configuration: ("name", "launch", "args", "nodes", "topics", "services", "actions",
-                    "parameters", "links", "direct_links", "diagnostics"),
+                    "parameters", "links", "direct_links", "diagnostics", "package_paths"),
     NodeInstance: ("name", "id", "node", "namespace", "remaps", "args", "conditions",
                    "location", "rosname", "links", "publishers", "subscribers", "servers",
                    "clients", "action_servers", "action_clients", "reads", "writes",
