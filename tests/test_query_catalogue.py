@@ -76,12 +76,12 @@ def test_inline_suppressions_in_source_and_launch_files(write_tree):
          "location": {"file": "base/launch/robot.launch", "line": 3}}],
         "links": [{"kind": "publish", "node": "/driver", "name": "/odom", "given": "/odom",
                    "queue_size": 1, "location": {"file": "base/src/driver.cpp", "line": 3}},
-                  {"kind": "publish", "node": "/driver", "name": "/tf", "given": "/tf",
+                  {"kind": "publish", "node": "/driver", "name": "/status", "given": "/status",
                    "location": {"file": "base/src/driver.cpp", "line": 1}}]}]})
     rules = [RULES["global-names"], RULES["duplicate-node-names"]]
     kept = run_catalogue(model, SimpleNamespace(workspace=[str(root)]), rules)
     assert [(f.rule, f.entities) for f in kept] == [
-        ("global-names", ("node:/driver", "topic:/tf"))]
+        ("global-names", ("node:/driver", "topic:/status"))]
     unsuppressed = run_catalogue(model, SimpleNamespace(workspace=["/nowhere"]), rules)
     assert len(unsuppressed) == 3
 

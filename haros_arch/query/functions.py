@@ -241,3 +241,23 @@ def is_absolute_path(charge: Charge, value: Any, portable: Any = ()) -> bool:
 
 FUNCTIONS["is_absolute_path"] = Function("is_absolute_path", is_absolute_path, max_args=2,
                                          charged=True)
+
+
+# topics the ROS client libraries and standard tools use by convention, under names
+# the node's author does not choose: tf, diagnostics, logging, simulated time, ROS 2
+# parameter events, and dynamic_reconfigure's description / update topics of a node
+_INFRASTRUCTURE = frozenset({"/tf", "/tf_static", "/diagnostics", "/diagnostics_agg",
+                             "/rosout", "/rosout_agg", "/clock", "/parameter_events"})
+_INFRASTRUCTURE_OWN = frozenset({"parameter_descriptions", "parameter_updates"})
+
+
+def is_infrastructure(charge: Charge, name: Any) -> bool:
+    """True for a topic name that ROS libraries and tools use by convention."""
+    if not isinstance(name, str):
+        return False
+    charge(1)
+    return name in _INFRASTRUCTURE or name.rsplit("/", 1)[-1] in _INFRASTRUCTURE_OWN
+
+
+FUNCTIONS["is_infrastructure"] = Function("is_infrastructure", is_infrastructure,
+                                          charged=True)
