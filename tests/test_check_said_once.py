@@ -101,3 +101,30 @@ def test_a_listed_package_missing_from_the_workspace_is_shown(write_tree):
                                        "  c: []\n"})
     assert [code for code, _file, _line in about(check(root), "NOT_FOUND", "missing")] == [
         "PACKAGE_NOT_FOUND"]
+
+
+DYNAMIC_NODE = """
+    #!/usr/bin/env python
+    import sys
+    import rospy
+    from sensor_msgs.msg import Image
+    rospy.init_node("cam")
+    pub = rospy.Publisher(sys.argv[1], Image, queue_size=10)
+    """
+
+
+def test_a_run_time_name_is_said_once(write_tree):
+    # the launched node's name: unresolved-names, per instance; the other node's (not
+    # launched): the extractor's diagnostic
+    root = ros1_workspace(write_tree, {"one.launch": """
+        <launch>
+          <node name="cam" pkg="cams" type="cam"/>
+        </launch>
+        """}, "[cams/launch/one.launch]")
+    for script in ("cam", "spare"):
+        (root / f"src/cams/scripts/{script}").write_text(DYNAMIC_NODE.lstrip()
+                                                        .replace("\n    ", "\n"))
+        (root / f"src/cams/scripts/{script}").chmod(0o755)
+    assert about(check(root), "DYNAMIC_NAME", "unresolved") == [
+        ("PY_DYNAMIC_NAME", "cams/scripts/spare", 6),
+        ("unresolved-names", "cams/scripts/cam", 6)]
