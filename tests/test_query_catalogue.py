@@ -133,6 +133,9 @@ def test_a_broken_project_query_is_an_error_finding_not_a_crash():
     assert "^" in finding.message
 
 
+DOCKING = {"text": "has_dock", "kind": "source", "statement": "if"}
+
+
 def test_an_action_is_one_finding_not_one_per_wire_topic():
     # a global, partly unknown action name: the action link is reported, not the five
     # topics actionlib puts on the wire for it (``direct_links`` leaves those out)
@@ -140,10 +143,11 @@ def test_an_action_is_one_finding_not_one_per_wire_topic():
             ("subscribe", "feedback"), ("subscribe", "result")]
     model = configuration({"links": [
         {"kind": "action-client", "node": "/ui", "name": "/?/dock", "given": "/?/dock",
-         "type": "dock_msgs/Dock"},
+         "type": "dock_msgs/Dock", "conditions": [DOCKING]},
         *({"kind": kind, "node": "/ui", "name": f"/?/dock/{suffix}",
-           "given": f"/?/dock/{suffix}", "origin": "action"} for kind, suffix in wire)]})
-    for rule_id in ("global-names", "unresolved-names"):
+           "given": f"/?/dock/{suffix}", "origin": "action", "conditions": [DOCKING]}
+          for kind, suffix in wire)]})
+    for rule_id in ("global-names", "unresolved-names", "conditional-communication"):
         found = run_rule(RULES[rule_id], model)
         assert [f.entities for f in found] == [("node:/ui", "action:/?/dock")], rule_id
     config = model.configurations[0]
