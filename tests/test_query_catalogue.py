@@ -184,3 +184,14 @@ def test_a_type_mismatch_with_a_server_points_at_each_client_call():
         ("action-type-mismatch", "b/client.py", 40),
         ("service-type-mismatch", "b/client.py", 20),
         ("service-type-mismatch", "b/client.py", 30)]
+
+
+def test_a_long_value_is_shortened_in_the_message():
+    # a binfile's base64 text read as a string: the message names it, not the megabyte
+    blob = "QUJD" * 50_000
+    model = configuration({
+        "parameters": [{"name": "/cam/calib", "type": "binary", "value": blob,
+                        "writers": ["<launch>"]}],
+        "links": [{"kind": "read", "node": "/cam", "name": "/cam/calib", "type": "str"}]})
+    (finding,) = run_rule(RULES["parameter-type-mismatch"], model)
+    assert "set as binary (QUJDQUJD" in finding.message and len(finding.message) < 300

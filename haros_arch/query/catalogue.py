@@ -147,12 +147,19 @@ def render(template: str, match: Any, evaluator: Evaluator) -> str:
         if isinstance(value, list | tuple) and not value:
             return "none"
         if isinstance(value, list | tuple):
-            return ", ".join(dict.fromkeys(
+            return _shorten(", ".join(dict.fromkeys(
                 v.node.name if isinstance(v, Link) else label(v) if entities(v)
-                else str(plain(v)) for v in value))
-        return label(value) if entities(value) else str(plain(value))
+                else str(plain(v)) for v in value)))
+        return label(value) if entities(value) else _shorten(str(plain(value)))
 
     return _FIELD.sub(fill, template)
+
+
+MESSAGE_VALUE = 120  # characters of one filled-in value (a binfile, a YAML map) in a message
+
+
+def _shorten(text: str) -> str:
+    return text if len(text) <= MESSAGE_VALUE else text[:MESSAGE_VALUE - 1] + "…"
 
 
 def _finding(rule: Rule, match: Any, config: Configuration | None,
