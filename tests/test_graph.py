@@ -186,22 +186,3 @@ def test_a_delete_is_not_a_set():
     # a node sets it whatever the launch file does
     assert mode.conditions == () and [w.node.name for w in mode.setters] == ["/cleaner"]
     assert not old.is_set and [w.node.name for w in old.writers] == ["/cleaner"]
-
-
-def test_ros2_nodes_launched_without_a_name_take_their_code_name():
-    ctrl = Node("p", "ctrl", calls=[call("declare", "gain", "double")], rosname="controller")
-    talker = Node("p", "talker", calls=[call("publish", "chatter", "std_msgs/msg/String")],
-                  rosname="talker")
-    listener = Node("p", "listener", calls=[call("subscribe", "chatter",
-                                                 "std_msgs/msg/String")], rosname="listener")
-    decls = [NodeDecl("/arm/?", "p", "ctrl", "/arm/"), NodeDecl("/?", "p", "talker"),
-             NodeDecl("/?", "p", "listener"), NodeDecl("/?", "p", "unknown")]
-    for decl in decls:
-        decl.ros_version = 2
-    config = graph(decls, params=[ParamDecl("/arm/?/gain", 2.0, "double", node="/arm/?",
-                                            key="gain")],
-                   nodes=[ctrl, talker, listener])
-    assert [n.name for n in config.nodes] == ["/arm/controller", "/talker", "/listener", "/?"]
-    gain = config.parameter("/arm/controller/gain")
-    assert gain.value == 2.0 and [r.node.name for r in gain.readers] == ["/arm/controller"]
-    assert not config.topic("/chatter").is_disconnected

@@ -5,11 +5,10 @@ from __future__ import annotations
 import os
 import shlex
 from collections.abc import Mapping
-from dataclasses import replace
 from typing import Any
 
 from .. import diagnostics as diag
-from ..launch.model import LaunchModel, NodeDecl, ParamDecl
+from ..launch.model import LaunchModel, NodeDecl
 from ..model.rosname import RosName, namespace_of, remap, resolve, resolve_remaps
 from ..model.runtime import (
     LINK_CLASSES,
@@ -90,10 +89,8 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
     """Fill ``config`` with node instances, resources and links; ``nodes`` by pkg/exec."""
     resources = Resources(config)
     config.diagnostics.extend(launch.diagnostics)
-    named = {id(decl): full for decl in launch.nodes
-             if (full := named_by_code(decl, nodes)) is not None}
     for param in launch.params:
-        parameter = resources.get(Parameter, _param_name(param, launch, named))
+        parameter = resources.get(Parameter, param.name)
         assert isinstance(parameter, Parameter)
         parameter.launch_type = param.type
         parameter.value = param.value
@@ -102,8 +99,6 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
         parameter.launch_conditions = param.conditions
     seen: dict[str, NodeInstance] = {}
     for decl in launch.nodes:
-        if id(decl) in named:
-            decl = replace(decl, name=named[id(decl)])
         instance = _instance(decl, nodes, workspace, config)
         # two instances with one name keep apart by id; the duplicate-node-names query
         # reports them (and roslaunch's own refusal is LAUNCH_NODE_DUPLICATE)
@@ -133,30 +128,6 @@ def package_paths(launch: LaunchModel, workspace: Workspace) -> list[str]:
     texts += [d.args for d in launch.nodes]
     return sorted(root for root in roots
                   if any(root.rstrip("/") + "/" in text for text in texts))
-
-
-def named_by_code(decl: NodeDecl, nodes: Mapping[str, Node]) -> str | None:
-    """ROS 2: the full name of a node launched without a name, which takes the one its
-    code gives (``rclcpp::Node("talker")``, ``Node("talker")`` in rclpy). None when the
-    launch names it or the code's name is not known."""
-    if decl.ros_version != 2 or decl.name.rsplit("/", 1)[-1] != UNKNOWN_MARK:
-        return None
-    node = nodes.get(f"{decl.package}/{decl.executable}")
-    own = (node.rosname or "").strip("/") if node is not None else ""
-    if not own or UNKNOWN_MARK in own or "/" in own:
-        return None
-    return f"{decl.namespace.rstrip('/')}/{own}"
-
-
-def _param_name(param: ParamDecl, launch: LaunchModel, named: Mapping[int, str]) -> str:
-    """A ROS 2 launch parameter of a node named by its code moves to that name, when no
-    other node of the launch shares the unknown name it was given for."""
-    if param.node is None or param.key is None or UNKNOWN_MARK not in param.node:
-        return param.name
-    owners = [d for d in launch.nodes if d.name == param.node]
-    if len(owners) != 1 or id(owners[0]) not in named:
-        return param.name
-    return f"{named[id(owners[0])]}/{param.key}"
 
 
 def _namespace_values(config: Configuration) -> None:
