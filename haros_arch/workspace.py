@@ -97,10 +97,20 @@ def scan(roots: Iterable[str], environment: Mapping[str, str] | None = None) -> 
 
 
 def _package_folders(top: str) -> Iterable[str]:
-    """Folders holding a package.xml, honouring ignore markers; packages do not nest."""
+    """Folders holding a package.xml, honouring ignore markers; packages do not nest.
+
+    Symbolic links to folders are followed, as catkin and colcon do (a workspace's src/
+    often links checkouts kept elsewhere); each real folder is visited once, so a link
+    cycle ends the walk there.
+    """
     stack = [(top, 0)]
+    visited: set[str] = set()
     while stack:
         folder, depth = stack.pop()
+        real = os.path.realpath(folder)
+        if real in visited:
+            continue
+        visited.add(real)
         try:
             entries = sorted(os.listdir(folder))
         except OSError:
@@ -116,7 +126,7 @@ def _package_folders(top: str) -> Iterable[str]:
             path = os.path.join(folder, entry)
             if entry.startswith(".") or entry in SKIP_FOLDERS:
                 continue
-            if os.path.isdir(path) and not os.path.islink(path):
+            if os.path.isdir(path):
                 stack.append((path, depth + 1))
 
 
