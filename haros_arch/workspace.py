@@ -51,6 +51,21 @@ class Workspace:
         package = self.package_of(path)
         return Location(package.name if package else None, self.relpath(path), line, column)
 
+    def readable(self, path: str) -> bool:
+        """Whether the analysis may read ``path``: it lies (after resolving links) in a
+        workspace folder, in a workspace package (which may be a link to a checkout kept
+        elsewhere) or in an installed package's prefix; never anywhere else on disk."""
+        real = os.path.realpath(path)
+        roots = [*self.roots, self.root, *installed_roots(self.environment),
+                 *(package.root for package in self.packages.values())]
+        for root in roots:
+            if not root:
+                continue
+            top = os.path.realpath(root)
+            if real == top or real.startswith(top.rstrip(os.sep) + os.sep):
+                return True
+        return False
+
     def find(self, name: str) -> str | None:
         """Absolute folder of package ``name``, in the workspace or installed."""
         if name in self.packages:
