@@ -311,7 +311,7 @@ class Evaluator:
                 return BoundMethod(base, method)
             if (attr in rclpy.NODE_METHODS or attr in NAME_METHODS
                     or attr == "get_namespace") and self.is_node_class(base.cls):
-                return NodeMethod(attr)
+                return NodeMethod(attr, owner=base)
             return Opaque(f"self.{attr}")
         if isinstance(base, ClassInfo):
             for c in self.mro(base):
@@ -324,7 +324,7 @@ class Evaluator:
             return NodeMethod(attr, base.remote)
         if isinstance(base, NodeHandle) and (attr in rclpy.NODE_METHODS or attr in NAME_METHODS
                                              or attr == "get_namespace"):
-            return NodeMethod(attr)
+            return NodeMethod(attr, owner=base)
         if isinstance(base, ParamObject):
             if attr in ("value", "string_value", "integer_value", "double_value",
                         "bool_value"):

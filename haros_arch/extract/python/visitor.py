@@ -29,6 +29,8 @@ from .msg_types import ros_type
 from .objects import (
     BoundMethod,
     Frame,
+    Instance,
+    NodeHandle,
     NodeMethod,
     Opaque,
     ParamValue,
@@ -58,6 +60,10 @@ class Walker:
         # every fully known node name the code gives, in walk order, and where
         self.names: list[str] = []
         self.names_at: list[Location] = []
+        # the names given to rclpy nodes (each a node of the process), in walk order, and
+        # the names each Node subclass was given (for methods walked without a caller)
+        self.rclpy_names: list[str] = []
+        self._class_names: dict[int, list[str]] = {}
         self.steps = 0
         self._inlined: set[int] = set()
         self._active: set[int] = set()
@@ -251,17 +257,31 @@ class Walker:
         version = frame.module.version
         if isinstance(target, SuperInit):
             if frame.instance is not None and ev.is_node_class(frame.instance.cls):
-                self._node_name(rclpy.NODE_NAMES[("rclpy", "Node")], call, frame, offset=0)
+                node_spec = rclpy.NODE_NAMES[("rclpy", "Node")]
+                name = self._node_name(node_spec, call, frame, 2)
+                self._logger_services(node_spec, call, frame, conds, name)
+                if name is not None:
+                    frame.instance.node_name = name
+                    given = self._class_names.setdefault(id(frame.instance.cls), [])
+                    if name not in given:
+                        given.append(name)
         elif isinstance(target, Ref):
             names = rospy.NODE_NAMES if version == 1 else rclpy.NODE_NAMES
             rows = rospy.ROWS if version == 1 else rclpy.ROWS
             if target.key in names:
-                self._node_name(names[target.key], call, frame)
+                name = self._node_name(names[target.key], call, frame, version)
+                self._logger_services(names[target.key], call, frame, conds, name)
             elif target.key in rows:
-                self._record(rows[target.key], call, frame, conds, version)
+                spec = rows[target.key]
+                start = len(self.calls)
+                self._record(spec, call, frame, conds, version)
+                if spec.owner is not None:
+                    self._made_on(self.calls[start:], _eval(ev, argument(
+                        call, spec.owner), frame))
         elif isinstance(target, NodeMethod) and target.name in rclpy.NODE_METHODS:
             start = len(self.calls)
             self._record(rclpy.NODE_METHODS[target.name], call, frame, conds, 2)
+            self._made_on(self.calls[start:], target.owner)
             if target.remote is not None:
                 for made in self.calls[start:]:
                     made.name = _remote(target.remote, made.name)
@@ -288,17 +308,43 @@ class Walker:
         finally:
             self._active.discard(id(info.node))
 
-    def _node_name(self, spec: object, call: ast.Call, frame: Frame, offset: int = 0) -> None:
+    def _logger_services(self, spec: object, call: ast.Call, frame: Frame, conds: Conditions,
+                         name: str | None) -> None:
+        """``enable_logger_service=True``: the node serves its logger levels."""
+        flag = argument(call, getattr(spec, "logger_service", None))
+        if flag is None or self.evaluator.eval(flag, frame) is not True:
+            return
+        for service, kind in rclpy.LOGGER_SERVICES:
+            self._add(PrimitiveCall("server", service, kind, conditions=conds,
+                                    location=self._where(frame, call), node_name=name))
+
+    def _made_on(self, calls: list[PrimitiveCall], owner: object) -> None:
+        """The calls are made on the rclpy node ``owner``: they carry its name."""
+        name: str | None = None
+        if isinstance(owner, Instance):
+            known = self._class_names.get(id(owner.cls), [])
+            name = owner.node_name or (known[0] if len(known) == 1 else None)
+        elif isinstance(owner, NodeHandle):
+            name = text_of(owner.name).text if owner.name is not None else None
+        if name is not None and "?" not in name:
+            for made in calls:
+                made.node_name = name
+
+    def _node_name(self, spec: object, call: ast.Call, frame: Frame,
+                   version: int) -> str | None:
         """Record a name the code gives a node; the node's is the first fully known one
-        (or the first, when none is), and every other known name is kept in ``names``."""
+        (or the first, when none is), and every other known name is kept in ``names``.
+        The name, when fully known."""
         ev = self.evaluator
         name_expr = argument(call, getattr(spec, "name", None))
         if name_expr is None:
-            return
+            return None
         name = text_of(ev.eval(name_expr, frame)).text
         if "?" not in name and name not in self.names:
             self.names.append(name)
             self.names_at.append(self._where(frame, call))
+        if "?" not in name and version == 2 and name not in self.rclpy_names:
+            self.rclpy_names.append(name)
         if self.rosname is None or ("?" in self.rosname and "?" not in name):
             self.rosname, self.namespace, self.anonymous = name, None, False
             ns_expr = argument(call, getattr(spec, "namespace", None))
@@ -307,6 +353,7 @@ class Walker:
             anon_expr = argument(call, getattr(spec, "anonymous", None))
             if anon_expr is not None:
                 self.anonymous = ev.eval(anon_expr, frame) is True
+        return None if "?" in name else name
 
     def _record(self, spec: PyFunction, call: ast.Call, frame: Frame, conds: Conditions,
                 version: int) -> None:
