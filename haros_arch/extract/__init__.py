@@ -61,5 +61,6 @@ def extract_node(node: Node, workspace: Workspace) -> list[Diagnostic]:
         found = extract_python(sources, workspace, package=node.package)
         node.calls = found.calls
         node.rosname = found.rosname
+        node.rosnames = found.nodes
         return found.diagnostics
     return []

@@ -24,6 +24,7 @@ from ..model.source import Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK
 from ..workspace import Workspace
 from .actions import action_links
+from .processes import process_nodes, process_params
 
 RESOURCE_OF_KIND: dict[str, type[Resource]] = {
     "publish": Topic, "subscribe": Topic, "server": Service, "client": Service,
@@ -88,7 +89,7 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
     """Fill ``config`` with node instances, resources and links; ``nodes`` by pkg/exec."""
     resources = Resources(config)
     config.diagnostics.extend(launch.diagnostics)
-    for param in launch.params:
+    for param in process_params(launch, nodes):
         parameter = resources.get(Parameter, param.name)
         assert isinstance(parameter, Parameter)
         parameter.launch_type = param.type
@@ -97,7 +98,7 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
         parameter.launch_location = param.location
         parameter.launch_conditions = param.conditions
     seen: dict[str, NodeInstance] = {}
-    for decl in launch.nodes:
+    for decl, own in process_nodes(launch.nodes, nodes):
         instance = _instance(decl, nodes, workspace, config)
         if instance.name in seen and UNKNOWN_MARK not in instance.name:
             config.diagnostics.append(diag.make(
@@ -111,7 +112,7 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
         if instance.node is None:
             continue
         remaps = resolve_remaps(instance.remaps, instance.namespace, instance.name)
-        for call in instance.node.calls:
+        for call in instance.node.calls_of(own):
             link(instance, call, remaps, resources, config)
     for action, call, name in action_links(config):
         link(action.node, call, {}, resources, config, name)
