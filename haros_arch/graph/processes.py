@@ -1,5 +1,10 @@
 """Several ROS 2 nodes in one process: one node instance each.
 
+A ROS 2 launch ``Node`` without ``name=`` runs its executable's node under the name the
+code gives it (``rclcpp::Node("talker")``, ``rclpy.create_node("talker")``): the
+instance takes that name, in the launch namespace, and the parameters the launch file
+gave the unnamed node (``/ns/?``) go to it.
+
 An rclpy executable that creates two nodes (two ``Node`` subclasses added to one
 executor, ``create_node`` called twice) has them in ``Node.rosnames``, and each of its
 calls names the node it is made on (``PrimitiveCall.node_name``). A launch ``Node`` that
@@ -68,13 +73,29 @@ def process_params(launch: LaunchModel, nodes: Mapping[str, Node]) -> list[Param
 
 def _own_names(decl: NodeDecl, nodes: Mapping[str, Node]) -> list[str]:
     node = nodes.get(node_key(decl))
-    if node is None or decl.ros_version != 2 or len(node.rosnames) < 2:
+    if node is None or decl.ros_version != 2:
         return []
-    return list(node.rosnames)
+    if len(node.rosnames) >= 2:
+        return list(node.rosnames)
+    # one node: a launch Node without name= runs it under the name its code gives it
+    if _unnamed(decl) and node.rosname and UNKNOWN_MARK not in node.rosname:
+        return [node.rosname]
+    return []
+
+
+def _unnamed(decl: NodeDecl) -> bool:
+    return decl.name.rsplit("/", 1)[-1] == UNKNOWN_MARK
 
 
 def _renamed(decl: NodeDecl, own: str) -> str:
-    """A node of the process: the launch name when one is given, else its own name."""
-    if decl.name.rsplit("/", 1)[-1] != UNKNOWN_MARK:
+    """A node of the process: the launch name when one is given, else its own name.
+
+    The code may give a namespace too (``rclcpp::Node("talker", "ns")``): it holds
+    unless the launch file gives one (``namespace=``, ``PushRosNamespace``), which
+    replaces it, as ``__ns:=`` does."""
+    if not _unnamed(decl):
         return decl.name
-    return decl.namespace.rstrip("/") + "/" + own
+    namespace = decl.namespace.rstrip("/")
+    if not namespace and own.startswith("/"):
+        return own
+    return namespace + "/" + own.rsplit("/", 1)[-1]
