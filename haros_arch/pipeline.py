@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import os
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from . import cmake, graph, launch, pysetup
 from . import diagnostics as diag
@@ -141,8 +141,10 @@ def _load_launch(spec: ConfigurationSpec, project: Project, workspace: Workspace
             continue
         loaded = launch.load(path, workspace, spec.args, {**env, **spec.environment})
         merged.files.extend(loaded.files)
+        offset = len(merged.nodes)
         merged.nodes.extend(loaded.nodes)
-        merged.params.extend(loaded.params)
+        merged.params.extend(param if param.owner is None else replace(
+            param, owner=param.owner + offset) for param in loaded.params)
         merged.args.update(loaded.args)
         merged.diagnostics.extend(loaded.diagnostics)
     return merged

@@ -83,3 +83,25 @@ def test_launch_name_wins_over_the_code_name(write_tree):
     config = build(workspace(write_tree, LAUNCH.format(extra="name='speaker',")))
     assert [n.name for n in config.nodes] == ["/speaker"]
     assert config.parameter("/speaker/rate").set_by_launch
+
+
+def test_two_unnamed_nodes_keep_their_own_launch_parameters(write_tree):
+    # robot_state_publisher is not in the workspace: it stays /? with its parameter;
+    # the talker's parameter goes to /talker only
+    launch = """
+        from launch import LaunchDescription
+        from launch_ros.actions import Node
+
+        def generate_launch_description():
+            return LaunchDescription([
+                Node(package='robot_state_publisher', executable='robot_state_publisher',
+                     parameters=[{'robot_description': '<robot/>'}]),
+                Node(package='talk', executable='talker', parameters=[{'rate': 5.0}]),
+            ])
+        """
+    config = build(workspace(write_tree, launch))
+    assert [n.name for n in config.nodes] == ["/?", "/talker"]
+    assert config.parameter("/talker/rate").value == 5.0
+    assert config.parameter("/talker/robot_description") is None
+    assert config.parameter("/?/robot_description").set_by_launch
+    assert config.parameter("/?/rate") is None
