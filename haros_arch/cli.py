@@ -38,6 +38,8 @@ def _parser() -> argparse.ArgumentParser:
     extract.add_argument("project", help="project file (YAML)")
     extract.add_argument("-o", "--output", help="write the JSON here (default: stdout)")
     extract.add_argument("-q", "--quiet", action="store_true", help="no summary")
+    extract.add_argument("-v", "--verbose", action="store_true",
+                         help="list info-level diagnostics one by one (default: counted per code)")
     _run_options(extract)
 
     check = sub.add_parser("check", help="run the query catalogue and report findings and "
@@ -46,6 +48,8 @@ def _parser() -> argparse.ArgumentParser:
     check.add_argument("--format", choices=("text", "json", "sarif", "junit"), default="text")
     check.add_argument("--fail-on", choices=(*SEVERITY_RANK, "never"), default="error")
     check.add_argument("-o", "--output", help="write the report here (default: stdout)")
+    check.add_argument("-v", "--verbose", action="store_true",
+                       help="list info-level diagnostics one by one (default: counted per code)")
     _run_options(check)
 
     query = sub.add_parser("query", help="evaluate a query and print its matches")
@@ -133,7 +137,7 @@ def cmd_extract(args: argparse.Namespace, out: Console, err: Console) -> int:
     if not args.quiet:
         summary = out if args.output else err
         print_summary(model, summary)
-        print_diagnostics(model.all_diagnostics, summary)
+        print_diagnostics(model.all_diagnostics, summary, verbose=args.verbose)
         if args.output:
             summary.print(f"wrote {args.output}", highlight=False)
     return EXIT_OK

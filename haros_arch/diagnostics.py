@@ -220,12 +220,12 @@ CATALOGUE: dict[str, Entry] = {
         "info", "the name of this {kind} call is computed at run time; kept as '{name}'",
         "The Python extractor could not resolve every part of the name statically."),
     "PY_SEVERAL_NODES": Entry(
-        "info", "this code names several nodes ({names}); the model keeps '{name}' and "
-                "gives it the calls of all",
+        "info", "this code names several nodes ({names}); {outcome}",
         "A Python executable that creates several rclpy nodes (two Node subclasses, "
-        "create_node called twice), or calls rospy.init_node with different names on "
-        "different branches, is one node in the model: it takes the first name, and "
-        "the ROS calls of every node are attributed to it."),
+        "create_node called twice) runs them in one process: each becomes a node instance "
+        "of its own with the calls made on it (a launch name= renames them all, as in ROS "
+        "2). rospy.init_node called with different names on different branches is one "
+        "node: the model takes the first name and gives it the calls of all."),
     # hints
     "HINT_INVALID": Entry(
         "error", "{detail}",

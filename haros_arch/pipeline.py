@@ -7,11 +7,11 @@ from __future__ import annotations
 
 import os
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from . import cmake, graph, launch, pysetup
 from . import diagnostics as diag
-from .extract import AUTO_CACHE, extract_node, extract_nodes
+from .extract import AUTO_CACHE, extract_nodes
 from .graph.build import nodelet_plugin
 from .launch.model import LaunchModel
 from .model.location import Location
@@ -62,12 +62,12 @@ def analyse(project: Project, environment: Mapping[str, str] | None = None,
         model.packages.append(package)
         model.diagnostics.extend(_read_build_files(package, workspace))
         nodes.update((node.name, node) for node in package.nodes)
+    for launched in launches.values():
+        _rosrun_scripts(launched, workspace, nodes)
     model.diagnostics.extend(extract_nodes(  # every C++ source once, in parallel, cached
         [n for p in model.packages for n in p.nodes], workspace,
         cache_dir=options.cache_dir, jobs=options.jobs,
         compile_commands=[project.compile_commands] if project.compile_commands else None))
-    for launched in launches.values():
-        model.diagnostics.extend(_rosrun_scripts(launched, workspace, nodes))
 
     project_file = Location(file=os.path.relpath(project.path))
     if project.nodes:
@@ -97,9 +97,9 @@ def _read_build_files(package: Package, workspace: Workspace) -> list[diag.Diagn
 
 
 def _rosrun_scripts(launched: LaunchModel, workspace: Workspace,
-                    nodes: dict[str, Node]) -> list[diag.Diagnostic]:
-    """Scripts that launch files start and only rosrun's search of the package finds."""
-    found: list[diag.Diagnostic] = []
+                    nodes: dict[str, Node]) -> None:
+    """Scripts that launch files start and only rosrun's search of the package finds:
+    added to their package, to be extracted with every other node."""
     for decl in launched.nodes:
         key = f"{decl.package}/{decl.executable}"
         package = workspace.packages.get(decl.package)
@@ -109,8 +109,6 @@ def _rosrun_scripts(launched: LaunchModel, workspace: Workspace,
         if node is not None:
             package.nodes.append(node)
             nodes[key] = node
-            found.extend(extract_node(node, workspace))
-    return found
 
 
 def launch_path(entry: str, project: Project, workspace: Workspace) -> str | None:
@@ -143,8 +141,10 @@ def _load_launch(spec: ConfigurationSpec, project: Project, workspace: Workspace
             continue
         loaded = launch.load(path, workspace, spec.args, {**env, **spec.environment})
         merged.files.extend(loaded.files)
+        offset = len(merged.nodes)
         merged.nodes.extend(loaded.nodes)
-        merged.params.extend(loaded.params)
+        merged.params.extend(param if param.owner is None else replace(
+            param, owner=param.owner + offset) for param in loaded.params)
         merged.args.update(loaded.args)
         merged.diagnostics.extend(loaded.diagnostics)
     return merged

@@ -51,6 +51,21 @@ class Workspace:
         package = self.package_of(path)
         return Location(package.name if package else None, self.relpath(path), line, column)
 
+    def readable(self, path: str) -> bool:
+        """Whether the analysis may read ``path``: it lies (after resolving links) in a
+        workspace folder, in a workspace package (which may be a link to a checkout kept
+        elsewhere) or in an installed package's prefix; never anywhere else on disk."""
+        real = os.path.realpath(path)
+        roots = [*self.roots, self.root, *installed_roots(self.environment),
+                 *(package.root for package in self.packages.values())]
+        for root in roots:
+            if not root:
+                continue
+            top = os.path.realpath(root)
+            if real == top or real.startswith(top.rstrip(os.sep) + os.sep):
+                return True
+        return False
+
     def find(self, name: str) -> str | None:
         """Absolute folder of package ``name``, in the workspace or installed."""
         if name in self.packages:
@@ -97,10 +112,20 @@ def scan(roots: Iterable[str], environment: Mapping[str, str] | None = None) -> 
 
 
 def _package_folders(top: str) -> Iterable[str]:
-    """Folders holding a package.xml, honouring ignore markers; packages do not nest."""
+    """Folders holding a package.xml, honouring ignore markers; packages do not nest.
+
+    Symbolic links to folders are followed, as catkin and colcon do (a workspace's src/
+    often links checkouts kept elsewhere); each real folder is visited once, so a link
+    cycle ends the walk there.
+    """
     stack = [(top, 0)]
+    visited: set[str] = set()
     while stack:
         folder, depth = stack.pop()
+        real = os.path.realpath(folder)
+        if real in visited:
+            continue
+        visited.add(real)
         try:
             entries = sorted(os.listdir(folder))
         except OSError:
@@ -116,7 +141,7 @@ def _package_folders(top: str) -> Iterable[str]:
             path = os.path.join(folder, entry)
             if entry.startswith(".") or entry in SKIP_FOLDERS:
                 continue
-            if os.path.isdir(path) and not os.path.islink(path):
+            if os.path.isdir(path):
                 stack.append((path, depth + 1))
 
 

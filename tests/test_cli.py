@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 import subprocess
 import sys
 
@@ -128,3 +129,31 @@ def test_text_that_looks_like_markup_is_printed_as_it_is(write_tree):
     assert result.returncode == 0, result.stderr
     assert "[red]p" in result.stdout
     assert "[/c1]/[bold]t" in result.stdout
+
+
+def test_check_text_counts_info_diagnostics_unless_verbose(write_tree):
+    root = write_tree({
+        "src/pkg/package.xml": package_xml("pkg"),
+        "src/pkg/CMakeLists.txt": "project(pkg)\nadd_executable(n src/n.cpp)\n",
+        "src/pkg/src/n.cpp": """
+            #include <ros/ros.h>
+            int main(int argc, char** argv) {
+              ros::init(argc, argv, "n");
+              int x = ;
+              int y = ;
+              return 0;
+            }
+            """,
+        "src/pkg/launch/a.launch": '<launch><node name="n" pkg="pkg" type="n"/>\n'
+                                   '<node name="m" pkg="pkg" type="missing"/></launch>\n',
+        "project.yaml": "project: p\nconfigurations:\n  c: [pkg/launch/a.launch]\n",
+    })
+    compact = run("check", str(root / "project.yaml"), "--fail-on", "never")
+    assert compact.returncode == 0
+    # the two C++ errors (info) are counted under their code with the first place seen
+    assert "2 info diagnostic(s), not listed (--verbose lists them)" in compact.stdout
+    assert re.search(r"^ +2 CPP_PARSE_ERROR +first at pkg/src/n\.cpp:4:", compact.stdout, re.M)
+    assert "pkg/src/n.cpp:5:" not in compact.stdout
+    verbose = run("check", str(root / "project.yaml"), "--fail-on", "never", "-v")
+    assert "pkg/src/n.cpp:4:" in verbose.stdout and "pkg/src/n.cpp:5:" in verbose.stdout
+    assert "not listed" not in verbose.stdout

@@ -35,17 +35,44 @@ TWO_CLASSES = (
     "    main()\n")
 
 
-def test_two_node_classes_keep_the_first_name_and_say_so(tmp_path) -> None:
+def test_two_node_classes_are_two_nodes_each_with_its_calls(tmp_path) -> None:
     result = run(tmp_path, TWO_CLASSES)
     assert result.rosname == "talker"
     assert result.names == ["talker", "listener"]
+    assert result.nodes == ["talker", "listener"]
     several = [d for d in result.diagnostics if d.code == "PY_SEVERAL_NODES"]
     assert len(several) == 1
     assert "talker, listener" in several[0].message
     assert several[0].severity == "info"
     assert several[0].location.line == 10  # where the second name is given
-    assert [(c.kind, c.name) for c in result.calls] == [
-        ("publish", "chatter"), ("subscribe", "chatter")]
+    assert [(c.kind, c.name, c.node_name) for c in result.calls] == [
+        ("publish", "chatter", "talker"), ("subscribe", "chatter", "listener")]
+
+
+def test_one_class_two_names_keeps_a_call_per_node(tmp_path) -> None:
+    result = run(tmp_path,
+                 "import rclpy\nfrom rclpy.node import Node\nfrom std_msgs.msg import String\n"
+                 "class Wheel(Node):\n"
+                 "    def __init__(self, side):\n"
+                 "        super().__init__(side + '_wheel')\n"
+                 "        self.create_publisher(String, 'speed', 1)\n"
+                 "        self.create_timer(0.1, self.tick)\n"
+                 "    def tick(self):\n"
+                 "        self.create_client(String, 'reset')\n"
+                 "left, right = Wheel('left'), Wheel('right')\n")
+    assert result.nodes == ["left_wheel", "right_wheel"]
+    assert [(c.kind, c.node_name) for c in result.calls] == [
+        ("publish", "left_wheel"), ("publish", "right_wheel"),
+        ("client", None)]  # a callback of a class with two names: node not known
+
+
+def test_one_node_has_no_node_names(tmp_path) -> None:
+    result = run(tmp_path,
+                 "import rclpy\nfrom std_msgs.msg import String\n"
+                 "node = rclpy.create_node('solo')\n"
+                 "node.create_publisher(String, 'x', 1)\n")
+    assert result.nodes == []
+    assert [c.node_name for c in result.calls] == [None]
 
 
 def test_create_node_twice(tmp_path) -> None:
@@ -59,6 +86,7 @@ def test_create_node_twice(tmp_path) -> None:
     assert (result.rosname, result.namespace) == ("sender", "robot")
     assert result.names == ["sender", "receiver"]
     assert [d.code for d in result.diagnostics] == ["PY_SEVERAL_NODES"]
+    assert [c.node_name for c in result.calls] == ["sender", "receiver"]
 
 
 def test_one_node_named_in_two_places_is_one_name(tmp_path) -> None:
@@ -131,3 +159,4 @@ def test_rospy_init_node_on_two_branches(tmp_path) -> None:
                  "    rospy.init_node('right_driver')\n")
     assert result.rosname == "left_driver"
     assert [d.code for d in result.diagnostics] == ["PY_SEVERAL_NODES"]
+    assert result.nodes == []  # rospy: one node per process, whatever its name

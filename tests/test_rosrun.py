@@ -39,3 +39,29 @@ def test_a_launched_script_outside_scripts_folder_is_found(write_tree):
     assert [(link.kind, link.name) for link in checker.links] == [("subscribe", "/chatter")]
     assert config.node("/n").node is None
     assert [d.code for d in config.diagnostics] == ["NODE_NOT_FOUND"]
+
+
+def test_launched_scripts_are_extracted_in_the_one_batch(write_tree, monkeypatch):
+    # found by rosrun's search, the script is extracted with every other node (one
+    # extract_nodes call, its cache and its worker pool), not on its own afterwards
+    from haros_arch import pipeline
+
+    root = write_tree({
+        "src/pkg/package.xml": package_xml("pkg"),
+        "src/pkg/CMakeLists.txt": "project(pkg)\n",
+        "src/pkg/test/relay": "#!/usr/bin/env python3\nimport rospy\n",
+        "src/pkg/launch/r.launch": '<launch><node name="r" pkg="pkg" type="relay" /></launch>\n',
+        "project.yaml": "project: p\nconfigurations:\n  c: [pkg/launch/r.launch]\n",
+    })
+    os.chmod(root / "src/pkg/test/relay", 0o755)
+    batches: list[list[str]] = []
+    real = pipeline.extract_nodes
+
+    def recording(nodes, *args, **kwargs):
+        batches.append([node.name for node in nodes])
+        return real(nodes, *args, **kwargs)
+
+    monkeypatch.setattr(pipeline, "extract_nodes", recording)
+    model = analyse(load(str(root / "project.yaml")), {"PATH": ""})
+    assert batches == [["pkg/relay"]]
+    assert model.configurations[0].node("/r").node is not None

@@ -1,5 +1,7 @@
 from __future__ import annotations
 
+import os
+
 from conftest import FIXTURES, package_xml
 
 from haros_arch.manifest import condition_holds
@@ -90,3 +92,35 @@ def test_rep149_conditions():
     assert condition_holds("($ROS_VERSION == 1 or $ROS_DISTRO == humble)", env) is True
     assert condition_holds("$ROS_VERSION >= 2", env) is True
     assert condition_holds("$ROS_VERSION ==", env) is None
+
+
+def test_symlinked_checkouts_are_followed_once_and_cycles_end(write_tree):
+    # src/ links to a checkout kept elsewhere (as catkin and colcon allow), and a link
+    # inside it points back up: the package is found once and the walk ends
+    root = write_tree({
+        "elsewhere/robot_nav/package.xml": package_xml("robot_nav"),
+        "ws/src/local_pkg/package.xml": package_xml("local_pkg"),
+    })
+    os.symlink(root / "elsewhere", root / "ws/src/external")
+    os.symlink(root / "ws/src", root / "elsewhere/loop")
+    os.symlink(root / "elsewhere/robot_nav", root / "ws/src/again")
+    ws = scan([str(root / "ws/src")])
+    assert sorted(ws.packages) == ["local_pkg", "robot_nav"]
+    assert not [d for d in ws.diagnostics if d.code == "PACKAGE_DUPLICATE"]
+    assert ws.packages["robot_nav"].root.startswith(str(root / "ws/src"))
+
+
+def test_readable_covers_linked_packages_and_nothing_else(write_tree):
+    root = write_tree({
+        "elsewhere/robot_nav/package.xml": package_xml("robot_nav"),
+        "elsewhere/robot_nav/config/planner.yaml": "a: 1\n",
+        "elsewhere/secret.yaml": "b: 2\n",
+        "ws/src/local_pkg/package.xml": package_xml("local_pkg"),
+    })
+    os.symlink(root / "elsewhere/robot_nav", root / "ws/src/robot_nav")
+    ws = scan([str(root / "ws/src")], {})
+    assert ws.readable(str(root / "ws/src/robot_nav/config/planner.yaml"))
+    assert ws.readable(str(root / "elsewhere/robot_nav/config/planner.yaml"))
+    assert not ws.readable(str(root / "elsewhere/secret.yaml"))
+    assert not ws.readable(str(root / "ws/src/robot_nav/../secret.yaml"))
+    assert not ws.readable("/etc/passwd")

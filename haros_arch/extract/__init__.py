@@ -61,5 +61,9 @@ def extract_node(node: Node, workspace: Workspace) -> list[Diagnostic]:
         found = extract_python(sources, workspace, package=node.package)
         node.calls = found.calls
         node.rosname = found.rosname
+        if found.rosname and found.namespace and found.namespace.strip("/"):
+            # as the C++ side writes it: the namespace the code gives, then the name
+            node.rosname = f"/{found.namespace.strip('/')}/{found.rosname}"
+        node.rosnames = found.nodes
         return found.diagnostics
     return []

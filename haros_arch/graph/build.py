@@ -25,6 +25,7 @@ from ..model.source import Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK
 from ..workspace import Workspace, installed_roots
 from .actions import action_links
+from .processes import process_nodes, process_params
 
 RESOURCE_OF_KIND: dict[str, type[Resource]] = {
     "publish": Topic, "subscribe": Topic, "server": Service, "client": Service,
@@ -89,7 +90,7 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
     """Fill ``config`` with node instances, resources and links; ``nodes`` by pkg/exec."""
     resources = Resources(config)
     config.diagnostics.extend(launch.diagnostics)
-    for param in launch.params:
+    for param in process_params(launch, nodes):
         parameter = resources.get(Parameter, param.name)
         assert isinstance(parameter, Parameter)
         parameter.launch_type = param.type
@@ -98,7 +99,7 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
         parameter.launch_location = param.location
         parameter.launch_conditions = param.conditions
     seen: dict[str, NodeInstance] = {}
-    for decl in launch.nodes:
+    for decl, own in process_nodes(launch.nodes, nodes):
         instance = _instance(decl, nodes, workspace, config)
         # two instances with one name keep apart by id; the duplicate-node-names query
         # reports them (and roslaunch's own refusal is LAUNCH_NODE_DUPLICATE)
@@ -110,7 +111,7 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
         if instance.node is None:
             continue
         remaps = resolve_remaps(instance.remaps, instance.namespace, instance.name)
-        for call in instance.node.calls:
+        for call in instance.node.calls_of(own):
             link(instance, call, remaps, resources, config)
     for action, call, name in action_links(config):
         link(action.node, call, {}, resources, config, name)

@@ -52,6 +52,9 @@ class ParamDecl:
     location: Location = NOWHERE
     node: str | None = None  # ROS 2: full name of the node that owns the parameter
     key: str | None = None  # ROS 2: the parameter's dotted name within that node
+    # ROS 2: index in LaunchModel.nodes of the node declaration it was given to (several
+    # unnamed nodes share the name ``/?`` until the graph names them from their code)
+    owner: int | None = None
 
 
 @dataclass

@@ -75,12 +75,14 @@ def _node(data: dict[str, Any], package: str) -> Node:
                            has_default=bool(c.get("has_default", False)),
                            default=c.get("default"), searched=bool(c.get("searched", False)),
                            handle_namespace=c.get("handle_namespace"),
-                           deletes=bool(c.get("deletes", False)))
+                           deletes=bool(c.get("deletes", False)),
+                           node_name=c.get("node_name"))
              for c in data.get("calls", ())]
     return Node(data.get("package", package), executable, data.get("kind", "executable"),
                 data.get("language", "cpp"), list(data.get("sources", ())), calls,
                 data.get("rosname"), conditions(data.get("conditions")),
-                location(data.get("location")))
+                location(data.get("location")),
+                [str(n) for n in data.get("rosnames", ()) if isinstance(n, str)])
 
 
 def _package(data: dict[str, Any]) -> Package:

@@ -2,7 +2,9 @@
 
 Dataclass fields are written in declaration order. Field metadata steers it:
 ``{"json": False}`` leaves an index or back-reference out, ``{"json": "key"}`` renames
-it, ``{"ref": True}`` writes a referenced entity as its ``name``. A class may add
+it, ``{"ref": True}`` writes a referenced entity as its ``name``, ``{"optional": True}``
+writes a field only when it differs from its default (fields added to ``haros-arch/1``
+after the fact, so documents without them stay as they were). A class may add
 computed entries with ``JSON_HEAD`` (written first) and ``JSON_VIEWS`` (written last),
 each a mapping from key to a function of the object.
 """
@@ -46,6 +48,8 @@ def _dataclass_to_data(obj: Any) -> dict[str, Any]:
         if key is False:
             continue
         value = getattr(obj, f.name)
+        if f.metadata.get("optional") and value == _default(f):
+            continue
         if f.metadata.get("ref"):
             data[key] = None if value is None else value.name
         else:
@@ -53,6 +57,12 @@ def _dataclass_to_data(obj: Any) -> dict[str, Any]:
     for key, view in getattr(obj, "JSON_VIEWS", {}).items():
         data[key] = to_data(view(obj))
     return data
+
+
+def _default(f: dataclasses.Field[Any]) -> Any:
+    if f.default_factory is not dataclasses.MISSING:
+        return f.default_factory()
+    return None if f.default is dataclasses.MISSING else f.default
 
 
 def model_to_data(model: Model) -> dict[str, Any]:

@@ -74,6 +74,9 @@ class PrimitiveCall:
     # parameter writes that delete the parameter (rospy.delete_param, ros::param::del,
     # NodeHandle::deleteParam)
     deletes: bool = False
+    # the name the code gives the ROS node this call is made on, when its executable
+    # creates several (``Node.rosnames``); None: the executable's one node
+    node_name: str | None = field(default=None, metadata={"optional": True})
 
 
 def wire_call(action: PrimitiveCall, kind: CallKind, name: str, type_: str | None,
@@ -107,6 +110,10 @@ class Node:
     rosname: str | None = None
     conditions: tuple[Condition, ...] = ()
     location: Location = NOWHERE
+    # ROS 2: one process may create several nodes (two rclpy Node subclasses added to one
+    # executor, create_node twice): their names in order, each call's ``node_name`` one of
+    # them; empty when the executable creates one node (``rosname``)
+    rosnames: list[str] = field(default_factory=list, metadata={"optional": True})
 
     JSON_VIEWS: ClassVar[dict[str, str]] = {}
 
@@ -116,6 +123,15 @@ class Node:
 
     def __repr__(self) -> str:
         return f"Node({self.name})"
+
+    def calls_of(self, rosname: str | None) -> list[PrimitiveCall]:
+        """The calls of the ROS node ``rosname`` of this executable (one of ``rosnames``):
+        its own, and, for the first, the calls no node could be told for. None: all."""
+        if rosname is None or not self.rosnames:
+            return list(self.calls)
+        first = rosname == self.rosnames[0]
+        return [c for c in self.calls if c.node_name == rosname
+                or (first and c.node_name not in self.rosnames)]
 
 
 @dataclass(eq=False)

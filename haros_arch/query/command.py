@@ -79,7 +79,7 @@ def check(args: Any, out: Console, err: Console, analyse: Analyse) -> int:
             handle = open(args.output, "w", encoding="utf-8")  # noqa: SIM115
             console = Console(file=handle, soft_wrap=True, no_color=True)
         try:
-            _print_text(findings, diagnostics, console)
+            _print_text(findings, diagnostics, console, getattr(args, 'verbose', True))
         finally:
             if handle:
                 handle.close()
@@ -87,14 +87,14 @@ def check(args: Any, out: Console, err: Console, analyse: Analyse) -> int:
 
 
 def _print_text(findings: list[Finding], diagnostics: list[Diagnostic],
-                console: Console) -> None:
+                console: Console, verbose: bool = True) -> None:
     from ..report.findings import count, print_findings
     from ..report.text import count_by_severity, print_diagnostics
 
     if diagnostics:
         console.print("[bold]Diagnostics[/bold] (problems reading the workspace)",
                       highlight=False)
-        print_diagnostics(diagnostics, console)
+        print_diagnostics(diagnostics, console, verbose)
         console.print()
     print_findings(findings, console)
     counts = count(findings)

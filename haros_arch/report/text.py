@@ -13,10 +13,18 @@ from ..model.model import Model
 from ..model.runtime import LAUNCH_WRITER, Parameter, Resource
 
 
-def print_diagnostics(diagnostics: Iterable[Diagnostic], console: Console) -> None:
-    """Diagnostics grouped by file, each with line:col, severity, message and code."""
+def print_diagnostics(diagnostics: Iterable[Diagnostic], console: Console,
+                      verbose: bool = True) -> None:
+    """Diagnostics grouped by file, each with line:col, severity, message and code.
+
+    Without ``verbose``, info-level diagnostics (mostly gaps of the C++ stand-in headers:
+    there can be hundreds on a real workspace) are not listed one by one but counted per
+    code at the end, with the first place each code was seen.
+    """
+    items = list(diagnostics)
+    shown = items if verbose else [d for d in items if d.severity != "info"]
     by_file: dict[str, list[Diagnostic]] = defaultdict(list)
-    for item in diagnostics:
+    for item in shown:
         by_file[item.location.file or "<project>"].append(item)
     colours = {"error": "red", "warning": "yellow", "info": "blue"}
     for file in sorted(by_file):
@@ -27,6 +35,25 @@ def print_diagnostics(diagnostics: Iterable[Diagnostic], console: Console) -> No
             console.print(f"  {escape(where)}: [{colour}]{item.severity}[/{colour}]: "
                           f"{escape(item.message)} [dim]\\[{item.code}][/dim]",
                           highlight=False)
+    if not verbose:
+        _print_info_counts([d for d in items if d.severity == "info"], console)
+
+
+def _print_info_counts(infos: list[Diagnostic], console: Console) -> None:
+    if not infos:
+        return
+    by_code: dict[str, list[Diagnostic]] = defaultdict(list)
+    for item in infos:
+        by_code[item.code].append(item)
+    console.print(f"[blue]{len(infos)} info diagnostic(s)[/blue], not listed "
+                  "(--verbose lists them):", highlight=False)
+    for code, group in sorted(by_code.items(), key=lambda kv: (-len(kv[1]), kv[0])):
+        first = min(group, key=lambda d: (d.location.file or "", d.location.line,
+                                          d.location.column))
+        where = f"{first.location.file or '<project>'}:{first.location.line}:" \
+                f"{first.location.column}"
+        console.print(f"  {len(group):>5} {escape(code)}  [dim]first at {escape(where)}: "
+                      f"{escape(first.message)}[/dim]", highlight=False)
 
 
 def print_summary(model: Model, console: Console) -> None:

@@ -35,6 +35,9 @@ class PythonResult:
     anonymous: bool = False
     # every fully known name the code gives a node, in the order met (``rosname`` is one)
     names: list[str] = field(default_factory=list)
+    # ROS 2: the rclpy nodes the process creates, when several (each call's ``node_name``
+    # is one of them, or None when the walk could not tell which node it is made on)
+    nodes: list[str] = field(default_factory=list)
 
 
 def extract_python(sources: list[str], workspace: Workspace, *,
@@ -53,18 +56,26 @@ def extract_python(sources: list[str], workspace: Workspace, *,
     result.rosname, result.namespace = walker.rosname, walker.namespace
     result.anonymous = walker.anonymous
     result.names = list(walker.names)
-    if len(walker.names) > 1:  # the model's node is one: it keeps the first name
+    if len(walker.rclpy_names) > 1:  # one process, several ROS 2 nodes
+        result.nodes = list(walker.rclpy_names)
+    if len(walker.names) > 1:
+        outcome = ("each is a node of its own with its own calls" if result.nodes else
+                   f"the model keeps '{result.rosname}' and gives it the calls of all")
         result.diagnostics.append(diag.make(
             "PY_SEVERAL_NODES", walker.names_at[1], names=", ".join(walker.names),
-            name=result.rosname))
+            outcome=outcome))
     seen: set[tuple[object, ...]] = set()
     calls = sorted(walker.calls, key=lambda c: (
         c.location.file or "", c.location.line, c.location.column))
-    # a call site also reached with its names known does not keep its '?' variant
-    known = {(c.kind, c.location) for c in calls if "?" not in c.name}
     for call in calls:
-        key = (call.kind, call.name, call.location)
-        if key in seen or ("?" in call.name and (call.kind, call.location) in known):
+        if call.node_name not in result.nodes:
+            call.node_name = None
+    # a call site also reached with its names known does not keep its '?' variant
+    known = {(c.kind, c.location, c.node_name) for c in calls if "?" not in c.name}
+    for call in calls:
+        key = (call.kind, call.name, call.location, call.node_name)
+        if key in seen or ("?" in call.name and (
+                call.kind, call.location, call.node_name) in known):
             continue
         seen.add(key)
         result.calls.append(call)

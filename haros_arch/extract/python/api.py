@@ -46,6 +46,7 @@ class PyFunction:
     special: str | None = None
     search: bool = False  # the name is searched up the namespaces (rospy.search_param)
     deletes: bool = False  # a parameter write that deletes it (rospy.delete_param)
+    owner: Arg | None = None  # rclpy: the node the primitive is made on (``ActionServer(node``)
 
 
 @dataclass(frozen=True)
@@ -55,3 +56,4 @@ class NodeName:
     name: Arg
     namespace: Arg | None = None
     anonymous: Arg | None = None
+    logger_service: Arg | None = None  # rclpy: True gives the node its logger services

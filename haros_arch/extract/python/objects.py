@@ -64,6 +64,8 @@ class NodeHandle:
 class Instance:
     cls: ClassInfo
     attrs: dict[str, object] = field(default_factory=dict)
+    # an rclpy node: the name its __init__ gives it (``super().__init__('talker')``)
+    node_name: str | None = None
 
 
 @dataclass(frozen=True)
@@ -79,6 +81,8 @@ class NodeMethod:
     name: str
     # the node whose parameters a parameter client's method reads or writes
     remote: Value | None = None
+    # the node it is a method of: an ``Instance`` of a Node subclass or a ``NodeHandle``
+    owner: object = None
 
 
 @dataclass(frozen=True)

@@ -39,35 +39,52 @@ NODE_METHODS: dict[str, PyFunction] = {
     "set_parameters": PyFunction("write", name=None, special="set-parameters"),
     "set_parameters_atomically": PyFunction("write", name=None, special="set-parameters"),
     "undeclare_parameter": PyFunction("write"),
+    # AsyncParameterClient: sets the parameters a YAML file names, unknown statically
+    "load_parameter_file": PyFunction("write", name=None, fixed_name="~?"),
     # AsyncParameterClient only (parameters of another node)
     "delete_parameters": PyFunction("write", name=None, special="parameter-names"),
 }
 
+# the node a class of ROWS is made on: its first argument
+NODE = Arg(0, "node")
+
 ROWS: dict[tuple[str, str], PyFunction] = {
     ("rclpy", "ActionServer"): PyFunction(
-        "action-server", name=Arg(2, "action_name"), type=Arg(1, "action_type"),
+        "action-server", owner=NODE, name=Arg(2, "action_name"), type=Arg(1, "action_type"),
         callback=Arg(3, "execute_callback")),
     ("rclpy", "ActionClient"): PyFunction(
-        "action-client", name=Arg(2, "action_name"), type=Arg(1, "action_type")),
+        "action-client", owner=NODE, name=Arg(2, "action_name"), type=Arg(1, "action_type")),
     ("tf2_ros", "TransformBroadcaster"): PyFunction(
-        "publish", name=None, fixed_name="/tf", fixed_type="tf2_msgs/msg/TFMessage",
-        fixed_qos="tf"),
+        "publish", owner=NODE, name=None, fixed_name="/tf",
+        fixed_type="tf2_msgs/msg/TFMessage", fixed_qos="tf"),
     ("tf2_ros", "StaticTransformBroadcaster"): PyFunction(
-        "publish", name=None, fixed_name="/tf_static", fixed_type="tf2_msgs/msg/TFMessage",
-        fixed_qos="tf_static"),
+        "publish", owner=NODE, name=None, fixed_name="/tf_static",
+        fixed_type="tf2_msgs/msg/TFMessage", fixed_qos="tf_static"),
+    # TransformListener(buffer, node)
     ("tf2_ros", "TransformListener"): PyFunction(
-        "subscribe", name=None, fixed_type="tf2_msgs/msg/TFMessage", special="tf-listener"),
+        "subscribe", owner=Arg(1, "node"), name=None, fixed_type="tf2_msgs/msg/TFMessage",
+        special="tf-listener"),
     # message_filters.Subscriber(node, msg_type, topic, qos_profile=...)
     ("message_filters", "Subscriber"): PyFunction(
-        "subscribe", name=Arg(2, "topic"), type=Arg(1, "msg_type"), qos=Arg(3, "qos_profile")),
+        "subscribe", owner=NODE, name=Arg(2, "topic"), type=Arg(1, "msg_type"),
+        qos=Arg(3, "qos_profile")),
 }
 
+_LOGGER = Arg(None, "enable_logger_service")
 NODE_NAMES: dict[tuple[str, str], NodeName] = {
-    ("rclpy", "create_node"): NodeName(Arg(0, "node_name"), namespace=Arg(None, "namespace")),
-    ("rclpy", "Node"): NodeName(Arg(0, "node_name"), namespace=Arg(None, "namespace")),
+    ("rclpy", "create_node"): NodeName(
+        Arg(0, "node_name"), namespace=Arg(None, "namespace"), logger_service=_LOGGER),
+    ("rclpy", "Node"): NodeName(
+        Arg(0, "node_name"), namespace=Arg(None, "namespace"), logger_service=_LOGGER),
     ("rclpy", "LifecycleNode"): NodeName(
-        Arg(0, "node_name"), namespace=Arg(None, "namespace")),
+        Arg(0, "node_name"), namespace=Arg(None, "namespace"), logger_service=_LOGGER),
 }
+
+# the services a node made with ``enable_logger_service=True`` serves
+LOGGER_SERVICES = (
+    ("~get_logger_levels", "rcl_interfaces/srv/GetLoggerLevels"),
+    ("~set_logger_levels", "rcl_interfaces/srv/SetLoggerLevels"),
+)
 
 # AsyncParameterClient(node, remote_node_name): its get/set_parameters name that node's
 PARAMETER_CLIENT = Arg(1, "remote_node_name")

@@ -13,7 +13,6 @@ walked once per item, so ``for side in ['left', 'right']`` gives one call per si
 from __future__ import annotations
 
 import ast
-from dataclasses import replace
 
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
@@ -22,23 +21,25 @@ from ...model.location import Location
 from ...model.source import PrimitiveCall
 from ...model.values import Unknown, Value
 from . import rclpy, rospy
-from .api import Arg, PyFunction
+from .api import PyFunction
 from .conditions import condition, is_main_guard, source_text
 from .modules import ClassInfo, FunctionInfo, Loader, Module, add_import
 from .msg_types import ros_type
 from .objects import (
     BoundMethod,
     Frame,
+    Instance,
+    NodeHandle,
     NodeMethod,
     Opaque,
     ParamValue,
     Ref,
-    Seq,
     SuperInit,
     param_type,
     plain_value,
     text_of,
 )
+from .specials import evaluate, param_name, special_calls
 from .values import MAX_CALL_DEPTH, NAMESPACE, Evaluator, argument, unknown_params
 
 Conditions = tuple[Condition, ...]
@@ -58,6 +59,10 @@ class Walker:
         # every fully known node name the code gives, in walk order, and where
         self.names: list[str] = []
         self.names_at: list[Location] = []
+        # the names given to rclpy nodes (each a node of the process), in walk order, and
+        # the names each Node subclass was given (for methods walked without a caller)
+        self.rclpy_names: list[str] = []
+        self._class_names: dict[int, list[str]] = {}
         self.steps = 0
         self._inlined: set[int] = set()
         self._active: set[int] = set()
@@ -251,17 +256,31 @@ class Walker:
         version = frame.module.version
         if isinstance(target, SuperInit):
             if frame.instance is not None and ev.is_node_class(frame.instance.cls):
-                self._node_name(rclpy.NODE_NAMES[("rclpy", "Node")], call, frame, offset=0)
+                node_spec = rclpy.NODE_NAMES[("rclpy", "Node")]
+                name = self._node_name(node_spec, call, frame, 2)
+                self._logger_services(node_spec, call, frame, conds, name)
+                if name is not None:
+                    frame.instance.node_name = name
+                    given = self._class_names.setdefault(id(frame.instance.cls), [])
+                    if name not in given:
+                        given.append(name)
         elif isinstance(target, Ref):
             names = rospy.NODE_NAMES if version == 1 else rclpy.NODE_NAMES
             rows = rospy.ROWS if version == 1 else rclpy.ROWS
             if target.key in names:
-                self._node_name(names[target.key], call, frame)
+                name = self._node_name(names[target.key], call, frame, version)
+                self._logger_services(names[target.key], call, frame, conds, name)
             elif target.key in rows:
-                self._record(rows[target.key], call, frame, conds, version)
+                spec = rows[target.key]
+                start = len(self.calls)
+                self._record(spec, call, frame, conds, version)
+                if spec.owner is not None:
+                    self._made_on(self.calls[start:], evaluate(ev, argument(
+                        call, spec.owner), frame))
         elif isinstance(target, NodeMethod) and target.name in rclpy.NODE_METHODS:
             start = len(self.calls)
             self._record(rclpy.NODE_METHODS[target.name], call, frame, conds, 2)
+            self._made_on(self.calls[start:], target.owner)
             if target.remote is not None:
                 for made in self.calls[start:]:
                     made.name = _remote(target.remote, made.name)
@@ -288,17 +307,43 @@ class Walker:
         finally:
             self._active.discard(id(info.node))
 
-    def _node_name(self, spec: object, call: ast.Call, frame: Frame, offset: int = 0) -> None:
+    def _logger_services(self, spec: object, call: ast.Call, frame: Frame, conds: Conditions,
+                         name: str | None) -> None:
+        """``enable_logger_service=True``: the node serves its logger levels."""
+        flag = argument(call, getattr(spec, "logger_service", None))
+        if flag is None or self.evaluator.eval(flag, frame) is not True:
+            return
+        for service, kind in rclpy.LOGGER_SERVICES:
+            self._add(PrimitiveCall("server", service, kind, conditions=conds,
+                                    location=self._where(frame, call), node_name=name))
+
+    def _made_on(self, calls: list[PrimitiveCall], owner: object) -> None:
+        """The calls are made on the rclpy node ``owner``: they carry its name."""
+        name: str | None = None
+        if isinstance(owner, Instance):
+            known = self._class_names.get(id(owner.cls), [])
+            name = owner.node_name or (known[0] if len(known) == 1 else None)
+        elif isinstance(owner, NodeHandle):
+            name = text_of(owner.name).text if owner.name is not None else None
+        if name is not None and "?" not in name:
+            for made in calls:
+                made.node_name = name
+
+    def _node_name(self, spec: object, call: ast.Call, frame: Frame,
+                   version: int) -> str | None:
         """Record a name the code gives a node; the node's is the first fully known one
-        (or the first, when none is), and every other known name is kept in ``names``."""
+        (or the first, when none is), and every other known name is kept in ``names``.
+        The name, when fully known."""
         ev = self.evaluator
         name_expr = argument(call, getattr(spec, "name", None))
         if name_expr is None:
-            return
+            return None
         name = text_of(ev.eval(name_expr, frame)).text
         if "?" not in name and name not in self.names:
             self.names.append(name)
             self.names_at.append(self._where(frame, call))
+        if "?" not in name and version == 2 and name not in self.rclpy_names:
+            self.rclpy_names.append(name)
         if self.rosname is None or ("?" in self.rosname and "?" not in name):
             self.rosname, self.namespace, self.anonymous = name, None, False
             ns_expr = argument(call, getattr(spec, "namespace", None))
@@ -307,6 +352,7 @@ class Walker:
             anon_expr = argument(call, getattr(spec, "anonymous", None))
             if anon_expr is not None:
                 self.anonymous = ev.eval(anon_expr, frame) is True
+        return None if "?" in name else name
 
     def _record(self, spec: PyFunction, call: ast.Call, frame: Frame, conds: Conditions,
                 version: int) -> None:
@@ -319,14 +365,14 @@ class Walker:
             base.type = self._type(argument(call, spec.type), frame, version,
                                    spec.kind.startswith("action"))
         if spec.queue is not None:
-            queue = _eval(ev, argument(call, spec.queue), frame)
+            queue = evaluate(ev, argument(call, spec.queue), frame)
             base.queue_size = queue if isinstance(queue, int) and not isinstance(
                 queue, bool) else None
         if spec.latch is not None:
-            base.latch = _eval(ev, argument(call, spec.latch), frame) is True
+            base.latch = evaluate(ev, argument(call, spec.latch), frame) is True
         base.latch = base.latch or spec.fixed_latch
         if spec.qos is not None:
-            base.qos = ev.qos(_eval(ev, argument(call, spec.qos), frame))
+            base.qos = ev.qos(evaluate(ev, argument(call, spec.qos), frame))
         elif spec.fixed_qos is not None:
             base.qos = dict(rclpy.PRESETS[spec.fixed_qos])
         if base.qos is not None and isinstance(base.qos.get("depth"), int):
@@ -334,17 +380,17 @@ class Walker:
         if spec.callback is not None:
             base.callback = self._callback(argument(call, spec.callback), frame)
         if spec.special:
-            for made in self._special(spec, call, frame, base, version):
+            for made in special_calls(ev, spec, call, frame, base, version):
                 self._add(made)
             return
         if spec.fixed_name is not None:
             base.name = spec.fixed_name
         elif spec.name is not None:
-            value = _eval(ev, argument(call, spec.name), frame)
+            value = evaluate(ev, argument(call, spec.name), frame)
             self._set_name(base, value, version)
         if spec.value is not None:
             value_expr = argument(call, spec.value)
-            value = _eval(ev, value_expr, frame)
+            value = evaluate(ev, value_expr, frame)
             base.type = param_type(value)
             if value_expr is not None and spec.kind in ("read", "declare"):
                 base.has_default = True
@@ -355,55 +401,11 @@ class Walker:
         base.deletes = spec.deletes
         self._add(base)
 
-    def _special(self, spec: PyFunction, call: ast.Call, frame: Frame, base: PrimitiveCall,
-                 version: int) -> list[PrimitiveCall]:
-        ev = self.evaluator
-        if spec.special == "tf-listener":
-            qos = ({"tf": rclpy.PRESETS["tf"], "tf_static": rclpy.PRESETS["tf_static"]}
-                   if version == 2 else {})
-            return [replace(base, name=f"/{topic}", qos=qos.get(topic),
-                            queue_size=qos[topic]["depth"] if qos else None)
-                    for topic in ("tf", "tf_static")]
-        if spec.special == "tf2-buffer":
-            debug = argument(call, Arg(1, "debug"))
-            if debug is not None and _eval(ev, debug, frame) is False:
-                return []
-            return [replace(base, name=spec.fixed_name or "?")]
-        made: list[PrimitiveCall] = []
-        if spec.special == "declare-parameters":
-            prefix = text_of(_eval(ev, call.args[0] if call.args else argument(
-                call, _kw("namespace")), frame)).text
-            items = call.args[1] if len(call.args) > 1 else argument(call, _kw("parameters"))
-            for element in _elements(items):
-                pair = element.elts if isinstance(element, ast.Tuple) else [element]
-                name = text_of(ev.eval(pair[0], frame)).text
-                full = f"{prefix}.{name}" if prefix else name
-                value = ev.eval(pair[1], frame) if len(pair) > 1 else None
-                ev.declared[full] = value
-                made.append(replace(base, name=f"~{full}", type=param_type(value)))
-        elif spec.special == "parameter-names":
-            items = call.args[0] if call.args else argument(call, _kw("names"))
-            listed = _eval(ev, items, frame)
-            for item in listed.items if isinstance(listed, Seq) else ():
-                made.append(replace(base, name=_param_name(text_of(item))))
-        elif spec.special == "set-parameters":
-            items = call.args[0] if call.args else argument(call, _kw("parameter_list"))
-            for element in _elements(items):
-                if isinstance(element, ast.Call) and element.args:
-                    name = _param_name(text_of(ev.eval(element.args[0], frame)))
-                    value_expr = element.args[2] if len(element.args) > 2 else argument(
-                        element, _kw("value"))
-                    made.append(replace(base, name=name, type=param_type(
-                        _eval(ev, value_expr, frame))))
-        if not made:
-            made.append(replace(base, name="~?"))
-        return made
-
     def _set_name(self, call: PrimitiveCall, value: object, version: int) -> None:
         ev = self.evaluator
         text = text_of(value)
         if isinstance(value, ParamValue):
-            call.name_param = _param_name(Value.of(value.name)) if version == 2 else value.name
+            call.name_param = param_name(Value.of(value.name)) if version == 2 else value.name
             default = value.default if value.default is not None else ev.declared.get(
                 value.name.removeprefix("~"))
             if isinstance(default, Value) and default.is_known:
@@ -412,13 +414,13 @@ class Walker:
             params = [p.origin for p in text.parts if isinstance(p, Unknown)]
             if len(params) == 1 and params[0].startswith("parameter "):
                 name = params[0].removeprefix("parameter ")
-                call.name_param = _param_name(Value.of(name)) if version == 2 else name
+                call.name_param = param_name(Value.of(name)) if version == 2 else name
                 default = ev.param_defaults.get(name)
                 if isinstance(default, Value) and default.is_known:
                     call.name_default = default.text
         text = _in_namespace(text)
         if version == 2 and call.kind in _PARAM_KINDS:
-            call.name = _param_name(text)
+            call.name = param_name(text)
         elif text.text.startswith("~/"):  # f"{get_name()}/x": the private name ~x
             call.name = "~" + text.text[2:]
         else:  # get_name() is "~": only as the start of a name is it the node's name
@@ -472,23 +474,3 @@ def _remote(remote: Value, name: str) -> str:
     """A parameter of another node: ``~x`` of node ``board`` is ``board/x``."""
     node = remote.text.rstrip("/")
     return f"{node}/{name.removeprefix('~')}" if node else name
-
-
-def _eval(ev: Evaluator, expr: ast.expr | None, frame: Frame) -> object:
-    return None if expr is None else ev.eval(expr, frame)
-
-
-def _kw(keyword: str) -> object:
-    return Arg(None, keyword)
-
-
-def _elements(expr: ast.expr | None) -> list[ast.expr]:
-    if isinstance(expr, ast.List | ast.Tuple):
-        return list(expr.elts)
-    return []
-
-
-def _param_name(text: Value) -> str:
-    """A ROS 2 parameter name as a private name of its node (``~use_sim_time``)."""
-    name = text.text
-    return name if name.startswith(("~", "/")) else "~" + name

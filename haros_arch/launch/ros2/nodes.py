@@ -99,8 +99,11 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
             written, value = entry
             for name, leaf in flat(ev.value(written).text, convert(value, ev)):
                 found[name] = (leaf, where)
+    owner = len(runner.model.nodes) - 1  # the declaration just appended
     for name, (leaf, location) in found.items():
-        runner.model.params.append(make_param(node, name, leaf, scope.conditions, location))
+        param = make_param(node, name, leaf, scope.conditions, location)
+        param.owner = owner
+        runner.model.params.append(param)
 
 
 def flat(key: str, value: Any) -> list[tuple[str, Any]]:

@@ -1,0 +1,58 @@
+"""rclpy QoS values: an ``int`` depth, a ``QoSProfile(...)`` call, a preset profile
+(``qos_profile_sensor_data``, ``QoSPresetProfiles.SENSOR_DATA.value``), as a dictionary
+of policies (``rclpy.DEFAULT_QOS`` for what is not given).
+"""
+
+from __future__ import annotations
+
+import ast
+from typing import Any
+
+from ...model.values import Value
+from . import rclpy
+from .objects import Frame, QoS, Ref
+from .scopes import EvaluatorBase
+
+
+class QoSProfiles(EvaluatorBase):
+    def qos(self, value: object) -> dict[str, Any] | None:
+        if isinstance(value, bool):
+            return None
+        if isinstance(value, int):
+            return {**rclpy.DEFAULT_QOS, "depth": value}
+        if isinstance(value, QoS):
+            return value.as_dict()
+        if isinstance(value, Ref):
+            parts = value.qualname.split(".")
+            if parts[-1] in rclpy.PRESETS:
+                return dict(rclpy.PRESETS[parts[-1]])
+            if len(parts) >= 2 and parts[-1] == "value" and parts[-2] in rclpy.PRESET_ENUM:
+                return dict(rclpy.PRESETS[rclpy.PRESET_ENUM[parts[-2]]])
+        return None
+
+    def qos_profile(self, expr: ast.Call, frame: Frame) -> QoS:
+        policies: dict[str, Any] = dict(rclpy.DEFAULT_QOS)
+        for keyword in expr.keywords:
+            if keyword.arg == "depth":
+                depth = self.eval(keyword.value, frame)
+                policies["depth"] = depth if isinstance(depth, int) else None
+            elif keyword.arg in rclpy.POLICIES:
+                policies[keyword.arg] = _policy(self.eval(keyword.value, frame),
+                                                rclpy.POLICIES[keyword.arg])
+            elif keyword.arg is None:
+                base = self.qos(self.eval(keyword.value, frame))
+                if base:
+                    policies.update(base)
+        return QoS(tuple(policies.items()))
+
+
+def _policy(value: object, words: tuple[str, ...]) -> str | None:
+    """``ReliabilityPolicy.BEST_EFFORT`` (or its older spellings) -> ``best_effort``."""
+    if isinstance(value, Ref):
+        last = value.qualname.split(".")[-1].lower()
+        for word in sorted(words, key=len, reverse=True):
+            if last == word or last.endswith("_" + word):
+                return word
+    if isinstance(value, Value) and value.literal in words:
+        return value.literal
+    return None

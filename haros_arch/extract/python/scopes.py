@@ -1,0 +1,110 @@
+"""Where the value of a name comes from, for the Python evaluator: the frame's locals,
+then the module (its imports, classes, functions, constants, star imports of the
+package, ``from pkg.msg import *`` of interface packages); and the items a ``for`` loop
+over a known sequence takes.
+
+``EvaluatorBase`` is the state the parts of the evaluator share (``values.Evaluator``
+is them together).
+"""
+
+from __future__ import annotations
+
+import ast
+
+from . import msg_types
+from .modules import Loader, Module
+from .objects import Frame, ModuleRef, Opaque, Ref, Seq
+
+MAX_UNROLL = 32  # a for loop over a known sequence is walked once per item, up to this
+
+
+class EvaluatorBase:
+    """What every part of the evaluator sees: the loader, the parameters met so far,
+    and ``eval`` (``values.Evaluator.eval``)."""
+
+    def __init__(self, loader: Loader) -> None:
+        self.loader = loader
+        self.depth = 0
+        # rclpy parameters declared so far: name -> default value
+        self.declared: dict[str, object] = {}
+        # defaults of the parameters read so far, for names built from their values
+        self.param_defaults: dict[str, object] = {}
+        self._computing: set[tuple[str, str]] = set()
+
+    def eval(self, expr: ast.expr, frame: Frame) -> object:
+        raise NotImplementedError
+
+
+class Scopes(EvaluatorBase):
+    def lookup(self, module: Module, name: str) -> object:
+        if name in module.local_imports:
+            path, symbol = module.local_imports[name]
+            other = self.loader.load(path)
+            if other is None:
+                return Opaque(name)
+            return ModuleRef(other) if symbol is None else self.lookup(other, symbol)
+        if name in module.imports:
+            return Ref(module.imports[name])
+        if name in module.classes:
+            return module.classes[name]
+        if name in module.functions:
+            return module.functions[name]
+        if name in module.constants:
+            key = (module.path, name)
+            if name not in module.values and key not in self._computing:
+                self._computing.add(key)
+                try:
+                    module.values[name] = self.eval(module.constants[name], Frame(module))
+                finally:
+                    self._computing.discard(key)
+            return module.values.get(name, Opaque(name))
+        for path in module.local_stars:
+            other = self.loader.load(path)
+            if other is not None and other is not module:
+                found = self.lookup(other, name)
+                if not isinstance(found, Opaque):
+                    return found
+        return self._star_interface(module, name)
+
+    def _star_interface(self, module: Module, name: str) -> object:
+        guesses: list[str] = []
+        for star in dict.fromkeys(module.stars):
+            parts = star.split(".")
+            if len(parts) != 2 or parts[1] not in msg_types.INTERFACE_MODULES:
+                continue
+            names = msg_types.interface_names(self.loader.workspace, parts[0], parts[1])
+            if names is None:
+                guesses.append(star)
+            elif name in names:
+                return Ref(f"{star}.{name}")
+        if len(guesses) == 1 and name[:1].isupper():
+            return Ref(f"{guesses[0]}.{name}")
+        return Opaque(name)
+
+    def name(self, name: str, frame: Frame) -> object:
+        if name in frame.locals:
+            return frame.locals[name]
+        if name == "self" and frame.instance is not None:
+            return frame.instance
+        return self.lookup(frame.module, name)
+
+    def iteration(self, expr: ast.expr, frame: Frame) -> tuple[object, ...] | None:
+        """The items a ``for`` loop over ``expr`` takes, when known and at most
+        ``MAX_UNROLL``: a list or tuple, ``range(...)`` of integers, ``enumerate(...)``."""
+        if isinstance(expr, ast.Call) and isinstance(expr.func, ast.Name) \
+                and not expr.keywords and isinstance(self.eval(expr.func, frame), Opaque):
+            args = [self.eval(a, frame) for a in expr.args]
+            bounds = [a for a in args if isinstance(a, int) and not isinstance(a, bool)]
+            if expr.func.id == "range" and 1 <= len(bounds) == len(args) <= 3 \
+                    and (len(bounds) < 3 or bounds[2] != 0):
+                steps = range(*bounds)
+                return tuple(steps) if len(steps) <= MAX_UNROLL else None
+            if expr.func.id == "enumerate" and len(args) == 1 and isinstance(args[0], Seq):
+                items = args[0].items
+                return tuple(Seq((i, item)) for i, item in enumerate(items)) \
+                    if len(items) <= MAX_UNROLL else None
+            return None
+        value = self.eval(expr, frame)
+        if isinstance(value, Seq) and len(value.items) <= MAX_UNROLL:
+            return value.items
+        return None

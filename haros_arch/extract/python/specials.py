@@ -1,0 +1,83 @@
+"""Calls that give several primitives, or none, from one argument list (the rows of the
+API tables with a ``special`` handler), and small helpers the walker shares with them.
+"""
+
+from __future__ import annotations
+
+import ast
+from dataclasses import replace
+
+from ...model.source import PrimitiveCall
+from ...model.values import Value
+from . import rclpy
+from .api import Arg, PyFunction
+from .objects import Frame, Seq, param_type, text_of
+from .values import Evaluator, argument
+
+
+def special_calls(ev: Evaluator, spec: PyFunction, call: ast.Call, frame: Frame,
+                  base: PrimitiveCall, version: int) -> list[PrimitiveCall]:
+    """The primitives of a call whose row names a ``special`` handler (none or several
+    from one argument list): one per parameter of ``declare_parameters`` /
+    ``get_parameters`` / ``set_parameters``, ``/tf`` and ``/tf_static`` for a
+    ``TransformListener``, a tf2 buffer's frames service unless ``debug=False``."""
+    if spec.special == "tf-listener":
+        qos = ({"tf": rclpy.PRESETS["tf"], "tf_static": rclpy.PRESETS["tf_static"]}
+               if version == 2 else {})
+        return [replace(base, name=f"/{topic}", qos=qos.get(topic),
+                        queue_size=qos[topic]["depth"] if qos else None)
+                for topic in ("tf", "tf_static")]
+    if spec.special == "tf2-buffer":
+        debug = argument(call, Arg(1, "debug"))
+        if debug is not None and evaluate(ev, debug, frame) is False:
+            return []
+        return [replace(base, name=spec.fixed_name or "?")]
+    made: list[PrimitiveCall] = []
+    if spec.special == "declare-parameters":
+        prefix = text_of(evaluate(ev, call.args[0] if call.args else argument(
+            call, _kw("namespace")), frame)).text
+        items = call.args[1] if len(call.args) > 1 else argument(call, _kw("parameters"))
+        for element in _elements(items):
+            pair = element.elts if isinstance(element, ast.Tuple) else [element]
+            name = text_of(ev.eval(pair[0], frame)).text
+            full = f"{prefix}.{name}" if prefix else name
+            value = ev.eval(pair[1], frame) if len(pair) > 1 else None
+            ev.declared[full] = value
+            made.append(replace(base, name=f"~{full}", type=param_type(value)))
+    elif spec.special == "parameter-names":
+        items = call.args[0] if call.args else argument(call, _kw("names"))
+        listed = evaluate(ev, items, frame)
+        for item in listed.items if isinstance(listed, Seq) else ():
+            made.append(replace(base, name=param_name(text_of(item))))
+    elif spec.special == "set-parameters":
+        items = call.args[0] if call.args else argument(call, _kw("parameter_list"))
+        for element in _elements(items):
+            if isinstance(element, ast.Call) and element.args:
+                name = param_name(text_of(ev.eval(element.args[0], frame)))
+                value_expr = element.args[2] if len(element.args) > 2 else argument(
+                    element, _kw("value"))
+                made.append(replace(base, name=name, type=param_type(
+                    evaluate(ev, value_expr, frame))))
+    if not made:
+        made.append(replace(base, name="~?"))
+    return made
+
+
+def evaluate(ev: Evaluator, expr: ast.expr | None, frame: Frame) -> object:
+    return None if expr is None else ev.eval(expr, frame)
+
+
+def _kw(keyword: str) -> object:
+    return Arg(None, keyword)
+
+
+def _elements(expr: ast.expr | None) -> list[ast.expr]:
+    if isinstance(expr, ast.List | ast.Tuple):
+        return list(expr.elts)
+    return []
+
+
+def param_name(text: Value) -> str:
+    """A ROS 2 parameter name as a private name of its node (``~use_sim_time``)."""
+    name = text.text
+    return name if name.startswith(("~", "/")) else "~" + name

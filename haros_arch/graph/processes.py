@@ -1,0 +1,115 @@
+"""Several ROS 2 nodes in one process: one node instance each.
+
+A ROS 2 launch ``Node`` without ``name=`` runs its executable's node under the name the
+code gives it (``rclcpp::Node("talker")``, ``rclpy.create_node("talker")``): the
+instance takes that name, in the launch namespace, and the parameters the launch file
+gave the unnamed node (``/ns/?``) go to it.
+
+An rclpy executable that creates two nodes (two ``Node`` subclasses added to one
+executor, ``create_node`` called twice) has them in ``Node.rosnames``, and each of its
+calls names the node it is made on (``PrimitiveCall.node_name``). A launch ``Node`` that
+starts it gives one node instance per ROS node, named as ROS 2 names them: without
+``name=`` each keeps the name its code gives it, in the launch namespace; with
+``name=`` (``__node:=``) every node of the process takes that name, as rcl renames them
+all. Namespace, remaps and arguments apply to all of them. Parameters the launch file
+gives the unnamed node (``/ns/?``) are given to each, as launch_ros passes them to the
+whole process.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator, Mapping, Sequence
+from dataclasses import replace
+
+from ..launch.model import LaunchModel, NodeDecl, ParamDecl
+from ..model.source import Node
+from ..model.values import UNKNOWN_MARK
+
+
+def node_key(decl: NodeDecl) -> str:
+    return f"{decl.package}/{decl.executable}"
+
+
+def process_nodes(decls: Sequence[NodeDecl], nodes: Mapping[str, Node]
+                  ) -> Iterator[tuple[NodeDecl, str | None]]:
+    """Each declaration, or one per ROS node of its process, with the name the code
+    gives that node (None: the executable's only node)."""
+    for decl in decls:
+        owns = _own_names(decl, nodes)
+        if not owns:
+            yield decl, None
+            continue
+        for own in owns:
+            name = _renamed(decl, own)
+            yield (decl if name == decl.name else replace(decl, name=name)), own
+
+
+def process_params(launch: LaunchModel, nodes: Mapping[str, Node]) -> list[ParamDecl]:
+    """The launch parameters, those given to an unnamed node moved to the name(s) its
+    code gives it (each node of a several-node process gets a copy).
+
+    A parameter knows the declaration it was given to (``owner``), so two unnamed nodes
+    in one namespace (both ``/?`` until named) keep their own parameters; one without an
+    owner follows every declaration of that name, as before."""
+    by_owner: dict[int, list[str]] = {}
+    renamed: dict[str, list[str]] = {}
+    kept: set[str] = set()
+    for index, decl in enumerate(launch.nodes):
+        owns = _own_names(decl, nodes)
+        names = [_renamed(decl, own) for own in owns]
+        if owns and names[0] != decl.name:
+            by_owner[index] = names
+            renamed.setdefault(decl.name, []).extend(names)
+        else:
+            kept.add(decl.name)
+    if not renamed:
+        return list(launch.params)
+    params: list[ParamDecl] = []
+    for param in launch.params:
+        if param.node is None:
+            params.append(param)
+            continue
+        if param.owner is not None:
+            targets = by_owner.get(param.owner)
+            keep = targets is None
+        else:
+            targets = renamed.get(param.node)
+            keep = targets is None or param.node in kept
+        if keep:
+            params.append(param)
+        if not targets:
+            continue
+        rest = param.name[len(param.node):]
+        params.extend(replace(param, name=target + rest, node=target)
+                      for target in dict.fromkeys(targets))
+    return params
+
+
+def _own_names(decl: NodeDecl, nodes: Mapping[str, Node]) -> list[str]:
+    node = nodes.get(node_key(decl))
+    if node is None or decl.ros_version != 2:
+        return []
+    if len(node.rosnames) >= 2:
+        return list(node.rosnames)
+    # one node: a launch Node without name= runs it under the name its code gives it
+    if _unnamed(decl) and node.rosname and UNKNOWN_MARK not in node.rosname:
+        return [node.rosname]
+    return []
+
+
+def _unnamed(decl: NodeDecl) -> bool:
+    return decl.name.rsplit("/", 1)[-1] == UNKNOWN_MARK
+
+
+def _renamed(decl: NodeDecl, own: str) -> str:
+    """A node of the process: the launch name when one is given, else its own name.
+
+    The code may give a namespace too (``rclcpp::Node("talker", "ns")``): it holds
+    unless the launch file gives one (``namespace=``, ``PushRosNamespace``), which
+    replaces it, as ``__ns:=`` does."""
+    if not _unnamed(decl):
+        return decl.name
+    namespace = decl.namespace.rstrip("/")
+    if not namespace and own.startswith("/"):
+        return own
+    return namespace + "/" + own.rsplit("/", 1)[-1]

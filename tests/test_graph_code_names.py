@@ -1,0 +1,107 @@
+"""A ROS 2 launch ``Node`` without ``name=`` runs its node under the name the code gives
+it: the instance, its private names and the launch parameters follow that name."""
+
+from __future__ import annotations
+
+import os
+
+from conftest import package_xml
+
+from haros_arch.pipeline import Options, analyse
+from haros_arch.project import load
+
+SETUP = """
+    from setuptools import setup
+    setup(name='{pkg}', packages=['{pkg}'],
+          entry_points={{'console_scripts': ['{exe} = {pkg}.{exe}:main']}})
+    """
+
+TALKER = """
+    import rclpy
+    from std_msgs.msg import String
+
+    def main():
+        rclpy.init()
+        node = rclpy.create_node('talker'{namespace})
+        node.declare_parameter('rate', 1.0)
+        node.create_publisher(String, 'chatter', 10)
+        node.create_publisher(String, '~/status', 10)
+        rclpy.spin(node)
+    """
+
+
+def workspace(write_tree, launch: str, namespace: str = ""):
+    return write_tree({
+        "src/talk/package.xml": package_xml("talk", build_type="ament_python"),
+        "src/talk/setup.py": SETUP.format(pkg="talk", exe="talker"),
+        "src/talk/resource/talk": "",
+        "src/talk/talk/__init__.py": "",
+        "src/talk/talk/talker.py": TALKER.format(namespace=namespace),
+        "src/talk/launch/talk.launch.py": launch,
+        "project.yaml": "project: p\nconfigurations:\n  c: [talk/launch/talk.launch.py]\n",
+    })
+
+
+def build(root):
+    model = analyse(load(str(root / "project.yaml")), {"PATH": os.environ.get("PATH", "")},
+                    Options(cache_dir=None))
+    return model.configuration("c")
+
+
+LAUNCH = """
+    from launch import LaunchDescription
+    from launch_ros.actions import Node
+
+    def generate_launch_description():
+        return LaunchDescription([
+            Node(package='talk', executable='talker', {extra}
+                 parameters=[{{'rate': 5.0}}]),
+        ])
+    """
+
+
+def test_unnamed_node_takes_its_code_name_in_the_launch_namespace(write_tree):
+    config = build(workspace(write_tree, LAUNCH.format(extra="namespace='robot',")))
+    assert [n.name for n in config.nodes] == ["/robot/talker"]
+    assert sorted((link.kind, link.name) for link in config.links) == [
+        ("publish", "/robot/chatter"), ("publish", "/robot/talker/status"),
+        ("read", "/robot/talker/rate")]
+    rate = config.parameter("/robot/talker/rate")
+    assert rate is not None and rate.set_by_launch and rate.value == 5.0
+    assert config.parameter("/robot/?/rate") is None
+
+
+def test_code_namespace_holds_unless_the_launch_gives_one(write_tree):
+    config = build(workspace(write_tree, LAUNCH.format(extra=""), ", namespace='arm'"))
+    assert [n.name for n in config.nodes] == ["/arm/talker"]
+    config = build(workspace(write_tree, LAUNCH.format(extra="namespace='robot',"),
+                             ", namespace='arm'"))
+    assert [n.name for n in config.nodes] == ["/robot/talker"]
+
+
+def test_launch_name_wins_over_the_code_name(write_tree):
+    config = build(workspace(write_tree, LAUNCH.format(extra="name='speaker',")))
+    assert [n.name for n in config.nodes] == ["/speaker"]
+    assert config.parameter("/speaker/rate").set_by_launch
+
+
+def test_two_unnamed_nodes_keep_their_own_launch_parameters(write_tree):
+    # robot_state_publisher is not in the workspace: it stays /? with its parameter;
+    # the talker's parameter goes to /talker only
+    launch = """
+        from launch import LaunchDescription
+        from launch_ros.actions import Node
+
+        def generate_launch_description():
+            return LaunchDescription([
+                Node(package='robot_state_publisher', executable='robot_state_publisher',
+                     parameters=[{'robot_description': '<robot/>'}]),
+                Node(package='talk', executable='talker', parameters=[{'rate': 5.0}]),
+            ])
+        """
+    config = build(workspace(write_tree, launch))
+    assert [n.name for n in config.nodes] == ["/?", "/talker"]
+    assert config.parameter("/talker/rate").value == 5.0
+    assert config.parameter("/talker/robot_description") is None
+    assert config.parameter("/?/robot_description").set_by_launch
+    assert config.parameter("/?/rate") is None
