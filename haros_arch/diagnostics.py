@@ -246,10 +246,6 @@ CATALOGUE: dict[str, Entry] = {
         "A launch file starts a node from a package this machine does not have (it may "
         "be installed where the system runs). The instance is kept without links; "
         "describe it with hints if it matters."),
-    "NODE_NAME_DUPLICATE": Entry(
-        "error", "node name {name} is used twice (also at {other})",
-        "Two node instances of one configuration resolve to the same name; at run time "
-        "the second would shut the first down."),
 }
 
 

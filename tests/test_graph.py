@@ -87,12 +87,13 @@ def test_launch_parameters_and_unknown_nodes():
     assert [d.code for d in config.diagnostics] == ["NODE_PACKAGE_UNKNOWN"]
 
 
-def test_duplicate_node_names_are_reported():
+def test_duplicate_node_names_keep_apart_and_are_left_to_the_query():
+    # the duplicate-node-names query (or roslaunch's LAUNCH_NODE_DUPLICATE) says it once
     config = graph([NodeDecl("/x", "p", "n", location=Location("p", "a.launch", 2)),
                     NodeDecl("/x", "p", "n", location=Location("p", "a.launch", 3))],
                    nodes=[node("p", "n")])
-    assert [(d.code, d.location.line) for d in config.diagnostics] == [
-        ("NODE_NAME_DUPLICATE", 3)]
+    assert [n.id for n in config.nodes] == ["node:/x", "node:/x#2"]
+    assert config.diagnostics == []
 
 
 def test_ros2_parameters_belong_to_their_node():
@@ -169,3 +170,19 @@ def test_actions_are_also_their_topics_and_services():
     assert send_goal.types == ["nav2_msgs/action/NavigateToPose_SendGoal"]
     assert [link.node.name for link in send_goal.servers] == ["/bt"]
     assert config.topic("/nav/_action/status").types == ["action_msgs/msg/GoalStatusArray"]
+
+
+def test_a_delete_is_not_a_set():
+    sim = Condition("$(arg sim)", "launch", "if")
+    cleaner = node("p", "cleaner", PrimitiveCall("write", "/calib", deletes=True),
+                   PrimitiveCall("write", "/mode"), PrimitiveCall("write", "/old", deletes=True))
+    config = graph([NodeDecl("/cleaner", "p", "cleaner")],
+                   params=[ParamDecl("/calib", 1.0, "double", conditions=(sim,)),
+                           ParamDecl("/mode", "a", "str", conditions=(sim,))],
+                   nodes=[cleaner])
+    calib, mode, old = (config.parameter(n) for n in ("/calib", "/mode", "/old"))
+    # set under the launch condition and deleted by a node: it exists only under it
+    assert calib.conditions == (sim,) and calib.is_set and calib.setters == []
+    # a node sets it whatever the launch file does
+    assert mode.conditions == () and [w.node.name for w in mode.setters] == ["/cleaner"]
+    assert not old.is_set and [w.node.name for w in old.writers] == ["/cleaner"]

@@ -9,6 +9,7 @@ from conftest import FIXTURES
 
 from haros_arch.pipeline import analyse
 from haros_arch.project import load
+from haros_arch.query.catalogue import load_catalogue, run_rule
 
 
 @pytest.fixture(scope="module")
@@ -78,12 +79,15 @@ def test_unknown_argument_makes_the_node_conditional(model):
     assert model.configuration("two_robots").node("/logger").conditions == ()
 
 
-def test_collision_is_reported(two):
+def test_collision_is_reported_once(model, two):
     found = [(d.code, d.location.file, d.location.line) for d in two.diagnostics
-             if d.code == "NODE_NAME_DUPLICATE"]
-    assert found == [("NODE_NAME_DUPLICATE", "fleet/launch/fleet.launch", 15)]
+             if "DUPLICATE" in d.code]
+    assert found == [("LAUNCH_NODE_DUPLICATE", "fleet/launch/fleet.launch", 15)]
     ids = [n.id for n in two.nodes if n.name == "/robot_b/driver"]
     assert len(set(ids)) == 2
+    # roslaunch refuses it already: the catalogue query does not say it again
+    (rule,) = [r for r in load_catalogue() if r.id == "duplicate-node-names"]
+    assert run_rule(rule, model) == []
 
 
 def test_candidates_for_the_unknown_plan_topic(model):

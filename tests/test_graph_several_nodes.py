@@ -14,6 +14,7 @@ from haros_arch.model.model import Model
 from haros_arch.model.serialise import model_to_data
 from haros_arch.pipeline import Options, analyse
 from haros_arch.project import load
+from haros_arch.query.catalogue import load_catalogue, run_rule
 
 CASE = FIXTURES / "python" / "several_nodes"
 
@@ -77,7 +78,10 @@ def test_launch_name_renames_every_node_of_the_process(model: Model) -> None:
     wheels = [n for n in config.nodes if n.name == "/wheels"]
     assert len(wheels) == 2  # rcl gives both nodes the name: a real clash, reported
     assert [len(n.links) for n in wheels] == [1, 2]  # left: status; right: status, command
-    assert "NODE_NAME_DUPLICATE" in [d.code for d in config.diagnostics]
+    # said once, by the duplicate-node-names query (ROS 2 launch does not refuse it)
+    (rule,) = [r for r in load_catalogue() if r.id == "duplicate-node-names"]
+    found = [f for f in run_rule(rule, model) if f.configuration == "pair"]
+    assert [f.entities for f in found] == [("node:/wheels", "node:/wheels#2")]
 
 
 def test_the_model_round_trips_and_single_node_json_is_unchanged(model: Model) -> None:

@@ -121,8 +121,10 @@ def test_same_as_roslaunch(index: int, oracle: dict[int, dict[str, Any]]) -> Non
         assert {k: v for k, v in row.items() if k != "name"} == \
             {k: v for k, v in theirs.items() if k != "name"}
     our_params: dict[str, Any] = {}
+    our_types: dict[str, str | None] = {}
     for param in model.params:
         our_params.update(flatten(param.name, param.value))
+        our_types[param.name] = param.type
     their_params: dict[str, Any] = {}
     for key, value in expected["params"].items():
         their_params.update(flatten(key, value))
@@ -132,6 +134,8 @@ def test_same_as_roslaunch(index: int, oracle: dict[int, dict[str, Any]]) -> Non
             assert our_params[key] is None, key  # never run: unknown
         elif isinstance(value, dict) and "binary" in value:
             assert our_params[key] == value["binary"], key
+            if key in our_types:  # a binfile: roslaunch gives an xmlrpc Binary
+                assert our_types[key] == "binary", key
         elif isinstance(value, str) and "/fixtures/" in value:
             assert our_params[key] == value, key
         else:

@@ -1,31 +1,63 @@
-"""A saved JSON model reads back with the call-level facts that queries use."""
+"""A saved JSON model reads back with the call-level facts that queries use, and a
+reloaded model answers queries exactly like the one in memory."""
 
 from __future__ import annotations
 
 import json
 import os
 
-from conftest import ROOT
+import pytest
+from conftest import FIXTURES, ROOT
 
+from haros_arch import query
 from haros_arch.model.load import from_data
 from haros_arch.model.serialise import model_to_data
 from haros_arch.pipeline import analyse
 from haros_arch.project import load
+from haros_arch.query.catalogue import run_catalogue
+
+# the example (actions, parameters, ROS 1 and 2); the fleet (a duplicate node name,
+# configuration hints that add links no node type lists)
+PROJECTS = [ROOT / "examples/project.yaml", FIXTURES / "graph_fleet/project.yaml"]
 
 
-def test_round_trip_keeps_links_calls_and_instances():
-    model = analyse(load(str(ROOT / "examples/project.yaml")), {"PATH": os.environ["PATH"]})
+def saved_and_reloaded(path):
+    model = analyse(load(str(path)), {"PATH": os.environ["PATH"]})
     data = json.loads(json.dumps(model_to_data(model)))
-    again = from_data(data)
+    return model, data, from_data(data)
+
+
+@pytest.fixture(scope="module", params=PROJECTS, ids=lambda p: p.parent.name)
+def models(request):
+    return saved_and_reloaded(request.param)
+
+
+def test_round_trip_keeps_links_calls_and_instances(models):
+    model, data, again = models
     for before, after in zip(model.configurations, again.configurations, strict=True):
-        assert [(n.name, n.ros_version, n.origin) for n in before.nodes] == [
-            (n.name, n.ros_version, n.origin) for n in after.nodes]
-        assert [(link.kind, link.name, link.origin) for link in before.links] == [
-            (link.kind, link.name, link.origin) for link in after.links]
-        with_call = [link for link in after.links if link.origin == "source"]
-        assert all(link.call is not None for link in with_call if link.node.node is not None)
+        assert [(n.id, n.ros_version, n.origin) for n in before.nodes] == [
+            (n.id, n.ros_version, n.origin) for n in after.nodes]
+        assert [(link.kind, link.name, link.origin, link.node.id) for link in before.links] \
+            == [(link.kind, link.name, link.origin, link.node.id) for link in after.links]
+        # every link has its call, as the graph made it: source calls, a configuration
+        # hint's calls, and the topics and services an action stands for on the wire
+        assert all(link.call is not None for link in after.links)
+        assert [link.call for link in before.links] == [link.call for link in after.links]
+    assert json.loads(json.dumps(model_to_data(again)))["configurations"] == data[
+        "configurations"]
+
+
+def test_a_reloaded_model_answers_queries_like_the_one_in_memory(models):
+    model, _data, again = models
+    assert run_catalogue(again) == run_catalogue(model)
+    text = "links[self.origin == 'action' or self.origin == 'hint']/call/location"
+    for before, after in zip(model.configurations, again.configurations, strict=True):
+        expected = query.compile(text).run(query.config_scope(before, model))
+        assert query.compile(text).run(query.config_scope(after, again)) == expected
+
+
+def test_reads_keep_their_defaults():
+    _model, _data, again = saved_and_reloaded(ROOT / "examples/project.yaml")
     robot = again.configuration("robot")
     threshold = robot.parameter("/robot1/battery/threshold")
     assert threshold.readers[0].call.has_default and threshold.readers[0].call.default == 0.2
-    assert json.loads(json.dumps(model_to_data(again)))["configurations"] == data[
-        "configurations"]

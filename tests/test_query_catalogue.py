@@ -13,6 +13,7 @@ import pytest
 import yaml
 from conftest import FIXTURES, ROOT, only_case
 
+from haros_arch import query
 from haros_arch.model.load import from_data
 from haros_arch.query.catalogue import load_catalogue, project_rules, run_catalogue, run_rule
 
@@ -75,12 +76,12 @@ def test_inline_suppressions_in_source_and_launch_files(write_tree):
          "location": {"file": "base/launch/robot.launch", "line": 3}}],
         "links": [{"kind": "publish", "node": "/driver", "name": "/odom", "given": "/odom",
                    "queue_size": 1, "location": {"file": "base/src/driver.cpp", "line": 3}},
-                  {"kind": "publish", "node": "/driver", "name": "/tf", "given": "/tf",
+                  {"kind": "publish", "node": "/driver", "name": "/status", "given": "/status",
                    "location": {"file": "base/src/driver.cpp", "line": 1}}]}]})
     rules = [RULES["global-names"], RULES["duplicate-node-names"]]
     kept = run_catalogue(model, SimpleNamespace(workspace=[str(root)]), rules)
     assert [(f.rule, f.entities) for f in kept] == [
-        ("global-names", ("node:/driver", "topic:/tf"))]
+        ("global-names", ("node:/driver", "topic:/status"))]
     unsuppressed = run_catalogue(model, SimpleNamespace(workspace=["/nowhere"]), rules)
     assert len(unsuppressed) == 3
 
@@ -130,3 +131,67 @@ def test_a_broken_project_query_is_an_error_finding_not_a_crash():
                                catalogue=[])
     assert finding.rule == "query-error" and finding.severity == "error"
     assert "^" in finding.message
+
+
+DOCKING = {"text": "has_dock", "kind": "source", "statement": "if"}
+
+
+def test_an_action_is_one_finding_not_one_per_wire_topic():
+    # a global, partly unknown action name: the action link is reported, not the five
+    # topics actionlib puts on the wire for it (``direct_links`` leaves those out)
+    wire = [("publish", "goal"), ("publish", "cancel"), ("subscribe", "status"),
+            ("subscribe", "feedback"), ("subscribe", "result")]
+    model = configuration({"links": [
+        {"kind": "action-client", "node": "/ui", "name": "/?/dock", "given": "/?/dock",
+         "type": "dock_msgs/Dock", "conditions": [DOCKING]},
+        *({"kind": kind, "node": "/ui", "name": f"/?/dock/{suffix}",
+           "given": f"/?/dock/{suffix}", "origin": "action", "conditions": [DOCKING]}
+          for kind, suffix in wire)]})
+    for rule_id in ("global-names", "unresolved-names", "conditional-communication"):
+        found = run_rule(RULES[rule_id], model)
+        assert [f.entities for f in found] == [("node:/ui", "action:/?/dock")], rule_id
+    config = model.configurations[0]
+    assert query.compile("direct_links").run(query.config_scope(config, model)) == [
+        config.links[0]]
+    assert len(query.compile("config/direct_links").run(query.config_scope(config))) == 1
+
+
+def test_the_same_finding_at_the_same_place_is_said_once():
+    # the listener subscribes to /chatter twice (two callbacks): one pair, one warning
+    model = configuration({"links": [
+        {"kind": "publish", "node": "/talker", "name": "/chatter1", "given": "chatter",
+         "type": "std_msgs/String", "location": {"file": "demo/talker.py", "line": 4}},
+        *({"kind": "subscribe", "node": "/listener", "name": "/chatter", "given": "chatter",
+           "type": "std_msgs/String", "location": {"file": "demo/listener.py", "line": line}}
+          for line in (7, 8))]})
+    found = run_catalogue(model, None, [RULES["similar-disconnected-topics"]])
+    assert [(f.location.file, f.location.line) for f in found] == [("demo/talker.py", 4)]
+
+
+def test_a_type_mismatch_with_a_server_points_at_each_client_call():
+    model = configuration({"links": [
+        {"kind": "server", "node": "/server", "name": "/add", "type": "a/Add",
+         "location": {"file": "a/server.cpp", "line": 10}},
+        *({"kind": "client", "node": "/client", "name": "/add", "type": "b/Bad",
+           "location": {"file": "b/client.py", "line": line}} for line in (20, 30)),
+        {"kind": "action-server", "node": "/server", "name": "/dock", "type": "a/Dock",
+         "location": {"file": "a/server.cpp", "line": 12}},
+        {"kind": "action-client", "node": "/client", "name": "/dock", "type": "b/Dock",
+         "location": {"file": "b/client.py", "line": 40}}]})
+    found = run_catalogue(model, None, [RULES["service-type-mismatch"],
+                                        RULES["action-type-mismatch"]])
+    assert sorted((f.rule, f.location.file, f.location.line) for f in found) == [
+        ("action-type-mismatch", "b/client.py", 40),
+        ("service-type-mismatch", "b/client.py", 20),
+        ("service-type-mismatch", "b/client.py", 30)]
+
+
+def test_a_long_value_is_shortened_in_the_message():
+    # a binfile's base64 text read as a string: the message names it, not the megabyte
+    blob = "QUJD" * 50_000
+    model = configuration({
+        "parameters": [{"name": "/cam/calib", "type": "binary", "value": blob,
+                        "writers": ["<launch>"]}],
+        "links": [{"kind": "read", "node": "/cam", "name": "/cam/calib", "type": "str"}]})
+    (finding,) = run_rule(RULES["parameter-type-mismatch"], model)
+    assert "set as binary (QUJDQUJD" in finding.message and len(finding.message) < 300

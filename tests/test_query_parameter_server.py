@@ -21,6 +21,14 @@ def main():
     rate = rospy.get_param("~rate", 10)        # has a default: fine if unset
     port = rospy.get_param("~port")            # no default and never set
     found = rospy.search_param("robot_model")  # set at the root
+    rospy.delete_param("~scratch")             # a delete does not set it ...
+    scratch = rospy.get_param("~scratch")      # ... so this read fails
+    rospy.delete_param("/legacy")              # nor does a search find a deleted one
+    legacy = rospy.search_param("legacy")      # (a search only looks: it cannot fail)
+    if rospy.has_param("~optional"):           # checked before it is read
+        optional = rospy.get_param("~optional")
+    if rospy.has_param("~optional"):           # checks another name: this read fails
+        other = rospy.get_param("~optional_b")
     pub = rospy.Publisher("chatter", String, queue_size=10)
     if rate > 5:
         fast = rospy.Publisher("fast", String, queue_size=10)
@@ -57,9 +65,14 @@ def test_catalogue_on_parameter_server_semantics(write_tree):
     by_rule: dict[str, list[str]] = {}
     for finding in findings:
         by_rule.setdefault(finding.rule, []).append(finding.message)
-    # only ~port is read without a default and never set
-    assert len(by_rule["parameter-read-not-set"]) == 1
-    assert "/foo/talker/port" in by_rule["parameter-read-not-set"][0]
+    # ~port, ~scratch and ~optional_b are read without a default or a check and never
+    # set (~scratch is only deleted)
+    assert sorted(m.split()[0] for m in by_rule["parameter-read-not-set"]) == [
+        "/foo/talker/optional_b", "/foo/talker/port", "/foo/talker/scratch"]
+    # the search for legacy does not stop at /legacy, which is only deleted
+    config = model.configurations[0]
+    assert [r.node.name for r in config.parameter("/foo/legacy").readers] == ["/foo/talker"]
+    assert config.parameter("/legacy").readers == []
     # gains/P and gains/I are read as the gains namespace; robot_model is found by search
     assert "parameter-set-not-read" not in by_rule
     # the publisher under `if` is conditional; the one in the try body is not

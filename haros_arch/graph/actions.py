@@ -15,11 +15,9 @@ live system's topics and services match the model and reports can fold them away
 
 from __future__ import annotations
 
-from dataclasses import replace
-
 from ..model.rosname import RosName, namespace_of
 from ..model.runtime import Configuration, Link
-from ..model.source import CallKind, PrimitiveCall
+from ..model.source import CallKind, PrimitiveCall, wire_call
 
 # (suffix, kind for the server, kind for the client, type template) per ROS version;
 # in a type template {pkg} and {name} come from the action type pkg/Name
@@ -57,13 +55,9 @@ def wire_calls(link: Link) -> list[tuple[PrimitiveCall, RosName]]:
     for suffix, server_kind, client_kind, template in rows:
         kind: CallKind = server_kind if serving else client_kind  # type: ignore[assignment]
         full = f"{link.rosname.full.rstrip('/')}/{suffix}"
-        base = link.call or PrimitiveCall(kind, full)
-        call = replace(
-            base, kind=kind, name=full,
-            type=_type(template, link.type), queue_size=None, qos=None, latch=False,
-            callback=None, name_param=None, name_default=None, origin="action",
-            conditions=tuple(c for c in link.conditions
-                             if c not in link.node.conditions))
+        call = wire_call(link.call or PrimitiveCall(kind, full), kind, full,
+                         _type(template, link.type),
+                         tuple(c for c in link.conditions if c not in link.node.conditions))
         given = f"{link.rosname.given.rstrip('/')}/{suffix}"
         made.append((call, RosName(given, full, namespace_of(full))))
     return made

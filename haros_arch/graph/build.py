@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import os
 import shlex
 from collections.abc import Mapping
 from typing import Any
@@ -22,7 +23,7 @@ from ..model.runtime import (
 )
 from ..model.source import Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK
-from ..workspace import Workspace
+from ..workspace import Workspace, installed_roots
 from .actions import action_links
 from .processes import process_nodes, process_params
 
@@ -100,10 +101,8 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
     seen: dict[str, NodeInstance] = {}
     for decl, own in process_nodes(launch.nodes, nodes):
         instance = _instance(decl, nodes, workspace, config)
-        if instance.name in seen and UNKNOWN_MARK not in instance.name:
-            config.diagnostics.append(diag.make(
-                "NODE_NAME_DUPLICATE", instance.location, name=instance.name,
-                other=seen[instance.name].location))
+        # two instances with one name keep apart by id; the duplicate-node-names query
+        # reports them (and roslaunch's own refusal is LAUNCH_NODE_DUPLICATE)
         instance.id = f"node:{instance.name}"
         if instance.name in seen:
             instance.id += f"#{sum(1 for n in config.nodes if n.name == instance.name) + 1}"
@@ -117,7 +116,19 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
     for action, call, name in action_links(config):
         link(action.node, call, {}, resources, config, name)
     _namespace_values(config)
+    config.package_paths = package_paths(launch, workspace)
     return config
+
+
+def package_paths(launch: LaunchModel, workspace: Workspace) -> list[str]:
+    """The folders (workspace roots, installed package roots) that launch values lead
+    into: ``$(find pkg)/maps/a.yaml`` is an absolute path here, but not a hard-coded one."""
+    roots = {os.path.normpath(r) for r in (*workspace.roots,
+                                           *installed_roots(workspace.environment)) if r}
+    texts = [p.value for p in launch.params if isinstance(p.value, str)]
+    texts += [d.args for d in launch.nodes]
+    return sorted(root for root in roots
+                  if any(root.rstrip("/") + "/" in text for text in texts))
 
 
 def _namespace_values(config: Configuration) -> None:
@@ -264,7 +275,7 @@ def _search(name: RosName, instance: NodeInstance, resources: Resources) -> RosN
         namespace = namespace.rsplit("/", 1)[0]
     for full in levels:
         found = resources.by_name.get((Parameter, full))
-        if isinstance(found, Parameter) and (found.set_by_launch or found.writers):
+        if isinstance(found, Parameter) and found.is_set:
             return RosName(name.given, full, namespace_of(full))
     return name
 

@@ -19,13 +19,14 @@ from .runtime import (
     LINK_CLASSES,
     Action,
     Configuration,
+    Link,
     NodeInstance,
     Parameter,
     Resource,
     Service,
     Topic,
 )
-from .source import Dependency, Node, Package, PrimitiveCall
+from .source import Dependency, Node, Package, PrimitiveCall, wire_call
 from .values import UNKNOWN_MARK
 
 _RESOURCE_OF_KIND: dict[str, type[Resource]] = {
@@ -132,14 +133,17 @@ class _Resources:
         return collections[cls]
 
 
-def _configuration(data: dict[str, Any], nodes: dict[str, Node]) -> Configuration:
+def _configuration(data: dict[str, Any], nodes: dict[str, Node],
+                   hinted: dict[str, Node]) -> Configuration:
     config = Configuration(str(data.get("name", "")), list(data.get("launch", ())),
                            dict(data.get("args", {})))
     by_name: dict[str, NodeInstance] = {}
+    by_id: dict[str, NodeInstance] = {}
     for item in data.get("nodes", ()):
         name = str(item.get("name", ""))
         instance = NodeInstance(
-            name, nodes.get(item.get("node") or ""), item.get("id") or f"node:{name}",
+            name, _node_type(nodes, hinted, item.get("node")),
+            item.get("id") or f"node:{name}",
             item.get("namespace") or namespace_of(name),
             [tuple(pair) for pair in item.get("remaps", ())], item.get("args", ""),
             conditions(item.get("conditions")), location(item.get("location")),
@@ -147,6 +151,7 @@ def _configuration(data: dict[str, Any], nodes: dict[str, Node]) -> Configuratio
             ros_version=int(item.get("ros_version", 1) or 1))
         config.nodes.append(instance)
         by_name.setdefault(name, instance)
+        by_id.setdefault(instance.id, instance)
     resources = _Resources(config)
     for key, cls in (("topics", Topic), ("services", Service), ("actions", Action),
                      ("parameters", Parameter)):
@@ -157,7 +162,7 @@ def _configuration(data: dict[str, Any], nodes: dict[str, Node]) -> Configuratio
         if kind not in LINK_CLASSES:
             raise ModelDataError(f"unknown link kind {kind!r}")
         node_name = str(item.get("node", ""))
-        found = by_name.get(node_name)
+        found = by_id.get(str(item.get("node_id", ""))) or by_name.get(node_name)
         if found is not None:
             instance = found
         else:
@@ -176,7 +181,8 @@ def _configuration(data: dict[str, Any], nodes: dict[str, Node]) -> Configuratio
             latch=bool(item.get("latch", False)),
             conditions=conditions(item.get("conditions")), location=location(item.get("location")),
             origin=str(item.get("origin", "source")))
-        link.call = _call_of(instance, kind, link.location)
+        link.call = _call_of(instance, kind, link.location) or _call_from(
+            link, item, kind)
         instance.links.append(link)
         resource.links.append(link)
         config.links.append(link)
@@ -190,8 +196,28 @@ def _configuration(data: dict[str, Any], nodes: dict[str, Node]) -> Configuratio
             whole = resources.by_id.get(str(item.get("read_as_part_of") or ""))
             if isinstance(owner, Parameter) and isinstance(whole, Parameter):
                 owner.read_as_part_of = whole
+    _wire_calls(config)
+    config.package_paths = [str(p) for p in data.get("package_paths", ())]
+    for instance in config.nodes:  # a hint-made node type lists what its instances use
+        if instance.node is not None and instance.node.name in hinted:
+            calls = instance.node.calls
+            calls.extend(link.call for link in instance.links if link.call is not None
+                         and link.origin != "action" and link.call not in calls)
     config.diagnostics = [_diagnostic(d) for d in data.get("diagnostics", ())]
     return config
+
+
+def _node_type(nodes: dict[str, Node], hinted: dict[str, Node], name: Any) -> Node | None:
+    """The node type an instance runs. One that no package of the document lists was
+    made by a project-file ``nodes:`` hint (it has no package in the workspace); it is
+    made again, and its calls are its instances' links."""
+    if not name:
+        return None
+    found = nodes.get(str(name)) or hinted.get(str(name))
+    if found is None:
+        package, _, executable = str(name).partition("/")
+        found = hinted[str(name)] = Node(package, executable)
+    return found
 
 
 def _call_of(instance: NodeInstance, kind: str, where: Location) -> PrimitiveCall | None:
@@ -201,6 +227,36 @@ def _call_of(instance: NodeInstance, kind: str, where: Location) -> PrimitiveCal
     kinds = ("read", "declare") if kind == "read" else (kind,)
     return next((call for call in instance.node.calls
                  if call.kind in kinds and call.location == where), None)
+
+
+def _call_from(link: Link, data: dict[str, Any], kind: str) -> PrimitiveCall | None:
+    """The call of a link that its node type does not list (a configuration hint's, a
+    node instance's without a known type), rebuilt from the link as the graph made it.
+    Action wire links get theirs from their action's call afterwards (``_wire_calls``)."""
+    if link.origin == "action":
+        return None
+    own = tuple(c for c in link.conditions if c not in link.node.conditions)
+    return PrimitiveCall(kind, link.rosname.given, link.type,  # type: ignore[arg-type]
+                         link.queue_size, link.qos, link.latch, None, own, link.location,
+                         origin=link.origin, deletes=bool(data.get("deletes", False)))
+
+
+def _wire_calls(config: Configuration) -> None:
+    """A topic or service link that an action stands for gets the call the graph gave
+    it: its action call's, under the wire's kind, name and type."""
+    actions = [link for link in config.links
+               if link.kind in ("action-server", "action-client") and link.call is not None]
+    for link in config.links:
+        if link.origin != "action" or link.call is not None:
+            continue
+        action = next((a for a in actions if a.node is link.node
+                       and a.location == link.location
+                       and link.name.startswith(a.name.rstrip("/") + "/")), None)
+        if action is not None and action.call is not None:
+            link.call = wire_call(action.call, link.kind,  # type: ignore[arg-type]
+                                  link.name, link.type,
+                                  tuple(c for c in action.conditions
+                                        if c not in action.node.conditions))
 
 
 def from_data(data: Any) -> Model:
@@ -213,6 +269,8 @@ def from_data(data: Any) -> Model:
     model = Model(str(data.get("project", "")))
     model.packages = [_package(p) for p in data.get("packages", ())]
     nodes = {node.name: node for package in model.packages for node in package.nodes}
-    model.configurations = [_configuration(c, nodes) for c in data.get("configurations", ())]
+    hinted: dict[str, Node] = {}
+    model.configurations = [_configuration(c, nodes, hinted)
+                            for c in data.get("configurations", ())]
     model.diagnostics = [_diagnostic(d) for d in data.get("diagnostics", ())]
     return model

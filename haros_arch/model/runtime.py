@@ -261,6 +261,17 @@ class Parameter(Resource):
         return self._of("write")
 
     @property
+    def setters(self) -> list[Link]:
+        """Writes that give it a value (``writers`` without those that delete it)."""
+        return [link for link in self.writers
+                if not (isinstance(link, ParamWriteLink) and link.deletes)]
+
+    @property
+    def is_set(self) -> bool:
+        """A launch file or a node gives it a value; deleting it does not."""
+        return self.set_by_launch or bool(self.setters)
+
+    @property
     def writer_names(self) -> list[str]:
         names = _names(self.writers)
         return [LAUNCH_WRITER, *names] if self.set_by_launch else names
@@ -269,7 +280,7 @@ class Parameter(Resource):
     def conditions(self) -> tuple[Condition, ...]:
         """A launch-set parameter exists under the launch conditions (or when written)."""
         if self.set_by_launch:
-            return self.launch_conditions if not self.writers else ()
+            return self.launch_conditions if not self.setters else ()
         return super().conditions
 
 
@@ -294,6 +305,7 @@ class Link:
     JSON_HEAD: ClassVar[dict[str, Callable[[Any], Any]]] = {
         "kind": lambda link: link.kind,
         "node": lambda link: link.node.name,
+        "node_id": lambda link: link.node.id,  # tells apart two instances of one name
         "name": lambda link: link.rosname.full,
         "given": lambda link: link.rosname.given,
         "resource": lambda link: link.resource.id,
@@ -418,9 +430,18 @@ class Configuration:
     parameters: list[Parameter] = field(default_factory=list)
     links: list[Link] = field(default_factory=list)
     diagnostics: list[Diagnostic] = field(default_factory=list)
+    # the workspace and installed-package folders that launch values lead into, as
+    # $(find pkg) / FindPackageShare resolved them here: paths under them are portable
+    package_paths: list[str] = field(default_factory=list)
 
     def __repr__(self) -> str:
         return f"Configuration({self.name})"
+
+    @property
+    def direct_links(self) -> list[Link]:
+        """``links`` without the topic and service links that an action link stands for
+        (``origin == "action"``): what the code (or a hint) asked for by name."""
+        return [link for link in self.links if link.origin != "action"]
 
     def node(self, name: str) -> NodeInstance | None:
         return next((n for n in self.nodes if n.name == name), None)

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any, ClassVar, Literal
 
 from .conditions import Condition
@@ -77,6 +77,16 @@ class PrimitiveCall:
     # the name the code gives the ROS node this call is made on, when its executable
     # creates several (``Node.rosnames``); None: the executable's one node
     node_name: str | None = field(default=None, metadata={"optional": True})
+
+
+def wire_call(action: PrimitiveCall, kind: CallKind, name: str, type_: str | None,
+              conditions: tuple[Condition, ...]) -> PrimitiveCall:
+    """One topic or service call that an action call stands for on the wire (the
+    action's ``goal`` topic, ``_action/send_goal`` service, ...): the action call's place
+    and facts under the wire's kind, full name and type, with ``origin`` "action"."""
+    return replace(action, kind=kind, name=name, type=type_, queue_size=None, qos=None,
+                   latch=False, callback=None, name_param=None, name_default=None,
+                   origin="action", conditions=conditions)
 
 
 @dataclass

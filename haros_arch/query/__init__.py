@@ -39,7 +39,7 @@ CONSTANTS: dict[str, Any] = {"True": True, "False": False, "None": None,
                              "true": True, "false": False}
 # names only a configuration scope has; a query that uses them runs per configuration
 CONFIG_NAMES = frozenset({"config", "c", "topics", "services", "actions", "parameters",
-                          "links"})
+                          "links", "direct_links"})
 
 
 def model_scope(model: Model) -> dict[str, Any]:
@@ -57,7 +57,7 @@ def config_scope(config: Configuration, model: Model | None = None) -> dict[str,
     scope.update({"config": config, "c": config, "nodes": config.nodes,
                   "topics": config.topics, "services": config.services,
                   "actions": config.actions, "parameters": config.parameters,
-                  "links": config.links})
+                  "links": config.links, "direct_links": config.direct_links})
     if model is None:
         scope["configs"] = [config]
     return scope

@@ -38,6 +38,23 @@ CATALOGUE_DIR = next((d for d in CATALOGUE_DIRS if d.is_dir()), CATALOGUE_DIRS[0
 QUERY_ERROR = "query-error"
 # diagnostics whose codes a catalogue rule reports as findings (``check`` shows them once)
 ABSORBED_CODES = frozenset({"LAUNCH_FILE_MISSING", "PACKAGE_NOT_FOUND", "NODE_NOT_FOUND"})
+# a name computed at run time, said by the extractor about a call; where a configuration
+# instantiates the call, the graph says it better: unresolved-names reports the name per
+# node instance, or a launch value or code default has completed it
+DYNAMIC_NAME_CODES = frozenset({"CPP_DYNAMIC_NAME", "PY_DYNAMIC_NAME"})
+
+
+def absorbed(model: Model) -> set[Diagnostic]:
+    """The diagnostics that the graph or catalogue rules say better: a configuration's
+    missing references (launch-missing-reference), and run-time names of calls that
+    some configuration instantiates. ``check`` shows each problem once."""
+    found = {d for config in model.configurations for d in config.diagnostics
+             if d.code in ABSORBED_CODES}
+    linked = {link.location for config in model.configurations
+              for link in config.direct_links}
+    found.update(d for d in model.diagnostics
+                 if d.code in DYNAMIC_NAME_CODES and d.location in linked)
+    return found
 
 
 @dataclass(frozen=True)
@@ -130,12 +147,19 @@ def render(template: str, match: Any, evaluator: Evaluator) -> str:
         if isinstance(value, list | tuple) and not value:
             return "none"
         if isinstance(value, list | tuple):
-            return ", ".join(dict.fromkeys(
+            return _shorten(", ".join(dict.fromkeys(
                 v.node.name if isinstance(v, Link) else label(v) if entities(v)
-                else str(plain(v)) for v in value))
-        return label(value) if entities(value) else str(plain(value))
+                else str(plain(v)) for v in value)))
+        return label(value) if entities(value) else _shorten(str(plain(value)))
 
     return _FIELD.sub(fill, template)
+
+
+MESSAGE_VALUE = 120  # characters of one filled-in value (a binfile, a YAML map) in a message
+
+
+def _shorten(text: str) -> str:
+    return text if len(text) <= MESSAGE_VALUE else text[:MESSAGE_VALUE - 1] + "…"
 
 
 def _finding(rule: Rule, match: Any, config: Configuration | None,
@@ -212,6 +236,9 @@ def run_catalogue(model: Model, project: Any = None,
             if suppressions.applies(rule.id, places):
                 continue
             found.append(finding)
+    # two matches that say the same thing at the same place (a node subscribing twice
+    # to one topic pairs twice with the same publisher) are one finding
+    found = list(dict.fromkeys(found))
     found.sort(key=lambda f: (-SEVERITY_RANK[f.severity], f.rule, f.configuration or "",
                               f.location.file or "", f.location.line))
     return found
@@ -222,5 +249,5 @@ def explain(rule: Rule) -> str:
            f"Query:\n{rule.query.strip()}\n"
 
 
-__all__ = ["ABSORBED_CODES", "Rule", "explain", "load_catalogue", "location_of",
+__all__ = ["ABSORBED_CODES", "Rule", "absorbed", "explain", "load_catalogue", "location_of",
            "project_rules", "run_catalogue", "run_rule"]

@@ -20,7 +20,7 @@ from ..model.model import Model
 from ..model.serialise import model_to_data, to_data
 from ..project import Project, ProjectError, load
 from . import CONFIG_NAMES, QueryError, compile, config_scope, model_scope
-from .catalogue import ABSORBED_CODES, load_catalogue, project_rules, run_catalogue
+from .catalogue import absorbed, load_catalogue, project_rules, run_catalogue
 from .results import entities, label, location_of, plain
 
 EXIT_OK, EXIT_FINDINGS, EXIT_USAGE = 0, 1, 2
@@ -54,7 +54,8 @@ def check(args: Any, out: Console, err: Console, analyse: Analyse) -> int:
     if model is None:
         return EXIT_USAGE
     findings = run_catalogue(model, project)
-    diagnostics = [d for d in model.all_diagnostics if d.code not in ABSORBED_CODES]
+    said = absorbed(model)  # what catalogue rules report as findings
+    diagnostics = [d for d in model.all_diagnostics if d not in said]
     fmt = getattr(args, "format", "text")
     if fmt == "json":
         _write(json.dumps({"diagnostics": to_data(diagnostics),

@@ -220,17 +220,44 @@ _FILE_SUFFIXES = (".yaml", ".yml", ".urdf", ".xacro", ".launch", ".xml", ".json"
                   ".png", ".bag", ".db3", ".csv", ".txt", ".so", ".py", ".cfg", ".ini")
 
 
-def is_absolute_path(charge: Charge, value: Any) -> bool:
-    """True when a value (or a word of it) looks like an absolute filesystem path."""
+def is_absolute_path(charge: Charge, value: Any, portable: Any = ()) -> bool:
+    """True when a value (or a word of it) looks like an absolute filesystem path that
+    is not under one of the ``portable`` folders (``config.package_paths``: where
+    ``$(find pkg)`` led)."""
     if not isinstance(value, str):
         return False
-    charge(1 + len(value) // 256)
+    folders = [f.rstrip("/") + "/" for f in _items(portable) if isinstance(f, str)] \
+        if portable else []
+    charge(1 + len(value) // 256 + len(folders))
     for word in value.replace("=", " ").split():
         word = word.strip("'\"")
+        if any(word.startswith(folder) for folder in folders):
+            continue
         if word.startswith(_PATH_PREFIXES) or (
                 word.startswith("/") and word.lower().endswith(_FILE_SUFFIXES)):
             return True
     return False
 
 
-FUNCTIONS["is_absolute_path"] = Function("is_absolute_path", is_absolute_path, charged=True)
+FUNCTIONS["is_absolute_path"] = Function("is_absolute_path", is_absolute_path, max_args=2,
+                                         charged=True)
+
+
+# topics the ROS client libraries and standard tools use by convention, under names
+# the node's author does not choose: tf, diagnostics, logging, simulated time, ROS 2
+# parameter events, and dynamic_reconfigure's description / update topics of a node
+_INFRASTRUCTURE = frozenset({"/tf", "/tf_static", "/diagnostics", "/diagnostics_agg",
+                             "/rosout", "/rosout_agg", "/clock", "/parameter_events"})
+_INFRASTRUCTURE_OWN = frozenset({"parameter_descriptions", "parameter_updates"})
+
+
+def is_infrastructure(charge: Charge, name: Any) -> bool:
+    """True for a topic name that ROS libraries and tools use by convention."""
+    if not isinstance(name, str):
+        return False
+    charge(1)
+    return name in _INFRASTRUCTURE or name.rsplit("/", 1)[-1] in _INFRASTRUCTURE_OWN
+
+
+FUNCTIONS["is_infrastructure"] = Function("is_infrastructure", is_infrastructure,
+                                          charged=True)

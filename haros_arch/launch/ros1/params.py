@@ -66,8 +66,10 @@ def convert_value(text: str, kind: str) -> Any:
 
 
 def type_name(value: Any) -> str:
+    if isinstance(value, Binary):  # before str, which it subclasses here
+        return "binary"  # roslaunch's xmlrpc Binary: an XML-RPC base64 value
     scalar = scalar_type(value)
-    if scalar is not None:  # a Binary is a str, so it is typed "str" here
+    if scalar is not None:
         return scalar
     if isinstance(value, (list, tuple)):
         return "list"

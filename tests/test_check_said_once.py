@@ -1,0 +1,130 @@
+"""``haros-arch check`` says each problem once, even where two mechanisms can see it."""
+
+from __future__ import annotations
+
+import json
+
+from conftest import package_xml
+
+from haros_arch.cli import main
+
+SETUP = """
+    from setuptools import setup
+    setup(name="cams", packages=["cams"],
+          entry_points={"console_scripts": ["cam = cams.cam:main"]})
+    """
+ROS2_NODE = """
+    import rclpy
+    from sensor_msgs.msg import Image
+    def main():
+        rclpy.init()
+        node = rclpy.create_node("cam")
+        node.create_publisher(Image, "image", 10)
+    """
+ROS1_NODE = """
+    #!/usr/bin/env python
+    import rospy
+    from sensor_msgs.msg import Image
+    rospy.init_node("cam")
+    pub = rospy.Publisher("image", Image, queue_size=10)
+    """
+
+
+def check(root) -> dict:
+    out = root / "check.json"
+    main(["check", str(root / "project.yaml"), "--format", "json", "-o", str(out),
+          "--fail-on", "never"])
+    return json.loads(out.read_text())
+
+
+def about(report: dict, *words: str) -> list[tuple[str, str, int]]:
+    """Every diagnostic and finding whose code or rule names one of ``words``."""
+    found = [(d["code"], d["location"]["file"], d["location"]["line"])
+             for d in report["diagnostics"] if any(w in d["code"] for w in words)]
+    found += [(f["rule"], f["location"]["file"], f["location"]["line"])
+              for f in report["findings"] if any(w in f["rule"] for w in words)]
+    return found
+
+
+def ros1_workspace(write_tree, launch: dict[str, str], config: str):
+    files = {"src/cams/package.xml": package_xml("cams"),
+             "src/cams/CMakeLists.txt": "project(cams)\n",
+             "src/cams/scripts/cam": ROS1_NODE,
+             "project.yaml": f"project: p\nconfigurations:\n  c: {config}\n"}
+    files.update({f"src/cams/launch/{name}": text for name, text in launch.items()})
+    root = write_tree(files)
+    (root / "src/cams/scripts/cam").chmod(0o755)
+    return root
+
+
+def test_a_ros1_duplicate_in_one_launch_file_is_roslaunchs_error_only(write_tree):
+    root = ros1_workspace(write_tree, {"two.launch": """
+        <launch>
+          <node name="cam" pkg="cams" type="cam"/>
+          <node name="cam" pkg="cams" type="cam"/>
+        </launch>
+        """}, "[cams/launch/two.launch]")
+    assert about(check(root), "DUPLICATE", "duplicate") == [
+        ("LAUNCH_NODE_DUPLICATE", "cams/launch/two.launch", 3)]
+
+
+def test_a_ros1_duplicate_across_launch_files_is_the_querys(write_tree):
+    root = ros1_workspace(write_tree, {
+        "a.launch": '<launch>\n  <node name="cam" pkg="cams" type="cam"/>\n</launch>\n',
+        "b.launch": '<launch>\n  <node name="cam" pkg="cams" type="cam"/>\n</launch>\n',
+    }, "[cams/launch/a.launch, cams/launch/b.launch]")
+    assert about(check(root), "DUPLICATE", "duplicate") == [
+        ("duplicate-node-names", "cams/launch/a.launch", 2)]
+
+
+def test_a_ros2_duplicate_is_reported_once(write_tree):
+    root = write_tree({
+        "src/cams/package.xml": package_xml("cams", "ament_python"),
+        "src/cams/setup.py": SETUP,
+        "src/cams/cams/__init__.py": "",
+        "src/cams/cams/cam.py": ROS2_NODE,
+        "src/cams/launch/two.launch.xml": """
+            <launch>
+              <node pkg="cams" exec="cam" name="cam"/>
+              <node pkg="cams" exec="cam" name="cam"/>
+            </launch>
+            """,
+        "project.yaml": "project: p\nconfigurations:\n  c: [cams/launch/two.launch.xml]\n",
+    })
+    assert about(check(root), "DUPLICATE", "duplicate") == [
+        ("duplicate-node-names", "cams/launch/two.launch.xml", 2)]
+
+
+def test_a_listed_package_missing_from_the_workspace_is_shown(write_tree):
+    root = write_tree({"src/cams/package.xml": package_xml("cams"),
+                       "project.yaml": "project: p\npackages: [nope]\nconfigurations:\n"
+                                       "  c: []\n"})
+    assert [code for code, _file, _line in about(check(root), "NOT_FOUND", "missing")] == [
+        "PACKAGE_NOT_FOUND"]
+
+
+DYNAMIC_NODE = """
+    #!/usr/bin/env python
+    import sys
+    import rospy
+    from sensor_msgs.msg import Image
+    rospy.init_node("cam")
+    pub = rospy.Publisher(sys.argv[1], Image, queue_size=10)
+    """
+
+
+def test_a_run_time_name_is_said_once(write_tree):
+    # the launched node's name: unresolved-names, per instance; the other node's (not
+    # launched): the extractor's diagnostic
+    root = ros1_workspace(write_tree, {"one.launch": """
+        <launch>
+          <node name="cam" pkg="cams" type="cam"/>
+        </launch>
+        """}, "[cams/launch/one.launch]")
+    for script in ("cam", "spare"):
+        (root / f"src/cams/scripts/{script}").write_text(DYNAMIC_NODE.lstrip()
+                                                        .replace("\n    ", "\n"))
+        (root / f"src/cams/scripts/{script}").chmod(0o755)
+    assert about(check(root), "DYNAMIC_NAME", "unresolved") == [
+        ("PY_DYNAMIC_NAME", "cams/scripts/spare", 6),
+        ("unresolved-names", "cams/scripts/cam", 6)]
