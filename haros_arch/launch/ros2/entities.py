@@ -56,8 +56,18 @@ class FindPackage(Subst):  # $(find-pkg-share) / $(find-pkg-prefix) / FindPackag
 
 
 @dataclass(frozen=True)
-class FindExec(Subst):  # $(find-exec) / $(exec-in-pkg): a path outside the graph
-    what: Text
+class FindExec(Subst):
+    """``$(find-exec name)`` / ``FindExecutable`` (``package`` None: searched on PATH), or
+    ``$(exec-in-pkg exe pkg)`` / ``ExecutableInPackage`` (``<prefix>/lib/<pkg>/<exe>``)."""
+
+    name: Text
+    package: Text | None = None
+
+
+@dataclass(frozen=True)
+class GlobalParam(Subst):  # $(param name [default]) / launch_ros's Parameter
+    name: Text
+    default: Text | None = None
 
 
 @dataclass(frozen=True)
@@ -152,6 +162,11 @@ class SetRemap(Action):
 class SetParam(Action):
     name: Text
     value: Any
+
+
+@dataclass
+class SetParamFile(Action):  # SetParametersFromFile / <set_parameters_from_file>
+    path: Text
 
 
 @dataclass

@@ -18,6 +18,7 @@ from typing import Any
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
 from ...model.values import Value
+from ...share import install_prefix
 from . import entities as e
 from .python import Interpreter
 from .python_methods import (
@@ -85,8 +86,8 @@ def package_directory(share: bool) -> Builder:
     def build(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
         name = arg(a, k, 0, "package_name")
         if isinstance(name, str):
-            found = i.workspace.find(name)
-            if found is not None and share:
+            found = i.workspace.find(name) if share else install_prefix(i.workspace, name)
+            if found is not None:
                 return found
         return Lazy((e.FindPackage(to_text(name), share),))
     return build
@@ -123,6 +124,14 @@ def getenv(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     if default is not None or len(a) > 1:
         return default
     return Lazy((e.Opaque(f"environment variable {name}"),))
+
+
+def find_executable(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    return e.FindExec(to_text(arg(a, k, 0, "name")))
+
+
+def executable_in_package(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    return e.FindExec(to_text(arg(a, k, 0, "executable")), to_text(arg(a, k, 1, "package")))
 
 
 def python_expression(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
@@ -331,6 +340,10 @@ def set_parameter(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
                                 param_value(arg(a, k, 1, "value"))), k, n)
 
 
+def set_parameters_from_file(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    return finish(i, e.SetParamFile(to_text(arg(a, k, 0, "filename"))), k, n)
+
+
 def set_env(unset: bool) -> Builder:
     def build(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
         value = None if unset else to_text(arg(a, k, 1, "value", default=""))
@@ -453,8 +466,10 @@ API: dict[str, Builder] = {
     "NotEqualsSubstitution": logic("notequals", 2),
     "IfElseSubstitution": logic("if", 3),
     "FileContent": lambda i, a, k, n: e.FileContent(to_text(arg(a, k, 0, "path"))),
-    "Command": opaque("Command (never run)"), "FindExecutable": opaque("FindExecutable"),
-    "ExecutableInPackage": opaque("ExecutableInPackage"),
+    "Command": opaque("Command (never run)"), "FindExecutable": find_executable,
+    "ExecutableInPackage": executable_in_package,
+    "AnySubstitution": logic("any", 64), "AllSubstitution": logic("all", 64),
+    "LaunchLogDir": opaque("LaunchLogDir (known at run time)"),
     "IfCondition": if_condition(False), "UnlessCondition": if_condition(True),
     "LaunchConfigurationEquals": config_equals(False),
     "LaunchConfigurationNotEquals": config_equals(True),
@@ -471,8 +486,10 @@ API: dict[str, Builder] = {
     "FrontendLaunchDescriptionSource": description_source,
     "GroupAction": group, "PushRosNamespace": push_namespace,
     "PushROSNamespace": push_namespace, "SetRemap": set_remap,
-    "SetParameter": set_parameter, "SetEnvironmentVariable": set_env(False),
-    "UnsetEnvironmentVariable": set_env(True), "TimerAction": timer,
+    "SetParameter": set_parameter, "SetParametersFromFile": set_parameters_from_file,
+    "SetEnvironmentVariable": set_env(False),
+    "UnsetEnvironmentVariable": set_env(True), "TimerAction": timer, "ROSTimer": timer,
+    "RosTimer": timer,
     "RegisterEventHandler": register_handler, "OnProcessExit": event_handler,
     "OnProcessStart": event_handler, "OnExecutionComplete": event_handler,
     "OnShutdown": event_handler, "OnProcessIO": event_handler,

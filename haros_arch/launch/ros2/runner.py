@@ -40,7 +40,8 @@ class Scope:
     configs: dict[str, Value | None]
     namespace: str | None = None
     remaps: list[tuple[str, str]] = field(default_factory=list)
-    params: list[tuple[str, Any, Location]] = field(default_factory=list)
+    # SetParameter (name, value, where), and SetParametersFromFile as (None, file, where)
+    params: list[tuple[str | None, Any, Location]] = field(default_factory=list)
     conditions: tuple[Condition, ...] = ()
     environment: dict[str, str] = field(default_factory=dict)
     file: str = ""
@@ -181,6 +182,17 @@ class Runner:
         name = self.value(action.name, scope, action.location)
         if name is not None:
             scope.params.append((name.text, action.value, action.location))
+
+    def do_SetParamFile(self, action: e.SetParamFile, scope: Scope) -> None:
+        """``SetParametersFromFile``: the file's path is performed now; each node in
+        scope reads the file and takes what its patterns give it."""
+        path = self.value(action.path, scope, action.location) or Value.unknown()
+        if path.literal is None:
+            self.report("LAUNCH_PARAM_FILE", action.location,
+                        detail=f"parameter file {path} is not known statically")
+            return
+        entry = e.ParamFile((path.literal,), location=action.location)
+        scope.params.append((None, entry, action.location))
 
     def do_SetEnv(self, action: e.SetEnv, scope: Scope) -> None:
         name = self.value(action.name, scope, action.location)
