@@ -1,0 +1,72 @@
+"""launch_ros's scoped global actions: SetParametersFromFile, SetParameter, SetRemap,
+PushROSNamespace, inside and outside a group; SetUseSimTime and SetROSLogDir (the launch
+process's own node: nothing in the graph); ROSTimer. fixtures/launch_ros2/src/rover_fleet
+has the same launch in XML and Python."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import pytest
+from conftest import FIXTURES
+
+from haros_arch.launch import load
+from haros_arch.workspace import scan
+
+ROOT = FIXTURES / "launch_ros2" / "src"
+
+
+def run(name: str, args: dict[str, str] | None = None) -> Any:
+    workspace = scan([str(ROOT)], {})
+    return load(str(ROOT / "rover_fleet" / "launch" / name), workspace, args or {}, {})
+
+
+def params_of(model: Any, node: str) -> dict[str, Any]:
+    return {p.key: p.value for p in model.params if p.node == node}
+
+
+@pytest.mark.parametrize("name", ["scopes.launch.xml", "scopes_launch.py"])
+def test_group_scoped_parameter_file_parameter_and_remap(name: str) -> None:
+    model = run(name, {"robot": "r7"})
+    assert [n.name for n in model.nodes] == ["/r7/driver", "/r7/watch", "/driver", "/late"]
+    driver, watch, outside, late = model.nodes
+    # the file's /** and /**/driver entries, then the node's own rate wins
+    assert params_of(model, "/r7/driver") == {
+        "use_sim_time": True, "frame_prefix": "fleet", "rate": 50, "limits.speed": 1.5,
+        "level": 3}
+    assert {k: v for k, v in params_of(model, "/r7/watch").items()
+            if k not in ("level_seen", "mode")} == {
+        "use_sim_time": True, "frame_prefix": "fleet", "level": 3}
+    assert driver.remaps == watch.remaps == [("cmd_vel", "/r7/cmd")]
+    # outside the group: none of it
+    assert params_of(model, "/driver") == {} and outside.remaps == []
+    assert [c.statement for c in late.conditions] == ["timer"]
+    assert "rover_fleet/config/common.yaml" in model.files
+    assert model.diagnostics == []
+
+
+def test_param_substitution_reads_set_parameter_in_scope() -> None:
+    model = run("scopes.launch.xml")
+    watch = params_of(model, "/r1/watch")
+    assert (watch["level_seen"], watch["mode"]) == (3, "idle")
+
+
+def test_parameter_file_with_unknown_path_is_reported(write_tree) -> None:
+    from conftest import package_xml
+
+    root = write_tree({
+        "src/p/package.xml": package_xml("p", "ament_cmake"),
+        "src/p/launch/a.launch.xml": """<launch>
+  <arg name="params"/>
+  <group>
+    <set_parameters_from_file filename="$(var params)"/>
+    <node pkg="p" exec="e" name="n"/>
+  </group>
+</launch>"""})
+    workspace = scan([str(root / "src")], {})
+    model = load(str(root / "src/p/launch/a.launch.xml"), workspace, {}, {})
+    assert [n.name for n in model.nodes] == ["/n"]
+    assert sorted({d.code for d in model.diagnostics}) == [
+        "LAUNCH_ARG_UNSET", "LAUNCH_PARAM_FILE"]
+    assert [d.location.line for d in model.diagnostics
+            if d.code == "LAUNCH_PARAM_FILE"] == [4]
