@@ -137,3 +137,43 @@ def test_each_condition_decided_or_kept(write_tree, form: str) -> None:
     # the import is refused, not run; the unset argument is reported
     assert "LAUNCH_UNSUPPORTED" in {d.code for d in model.diagnostics}
     assert "LAUNCH_ARG_UNSET" in {d.code for d in model.diagnostics}
+
+
+def test_nav2_common_launch_config_as_bool_and_has_node_params(write_tree) -> None:
+    root = write_tree({
+        "src/p/package.xml": package_xml("p", "ament_python"),
+        "src/p/config/params.yaml": "slam_toolbox:\n  ros__parameters:\n    mode: mapping\n",
+        "src/p/launch/nav.launch.py": """
+import os
+from ament_index_python.packages import get_package_share_directory
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.conditions import IfCondition
+from launch.substitutions import PythonExpression
+from launch_ros.actions import Node
+from nav2_common.launch import HasNodeParams, LaunchConfigAsBool
+
+def generate_launch_description():
+    params = os.path.join(get_package_share_directory('p'), 'config', 'params.yaml')
+    slam = LaunchConfigAsBool('slam')
+    return LaunchDescription([
+        DeclareLaunchArgument('slam', default_value='yes'),
+        DeclareLaunchArgument('sim'),
+        Node(package='p', executable='e', name='slam_node', condition=IfCondition(slam)),
+        Node(package='p', executable='e', name='sim_node',
+             condition=IfCondition(LaunchConfigAsBool('sim'))),
+        Node(package='p', executable='e', name='with_own',
+             condition=IfCondition(HasNodeParams(source_file=params,
+                                                node_name='slam_toolbox'))),
+        Node(package='p', executable='e', name='without_own',
+             condition=IfCondition(PythonExpression(['not ', HasNodeParams(
+                 source_file=params, node_name='slam_toolbox')]))),
+        Node(package='p', executable='e', name='amcl_params',
+             condition=IfCondition(HasNodeParams(params, 'amcl'))),
+    ])
+"""})
+    workspace = scan([str(root / "src")], {})
+    model = load(str(root / "src/p/launch/nav.launch.py"), workspace, {}, {})
+    assert [(n.name, bool(n.conditions)) for n in model.nodes] == [
+        ("/slam_node", False), ("/sim_node", True), ("/with_own", False)]
+    assert "LAUNCH_PY_UNSUPPORTED" not in {d.code for d in model.diagnostics}

@@ -92,6 +92,12 @@ class Logic(Subst):  # $(not) $(and) $(or) $(equals) $(if) and their Python clas
 
 
 @dataclass(frozen=True)
+class NodeParamsIn(Subst):  # nav2_common's HasNodeParams: 'True' if the file names node
+    path: Text
+    node: str
+
+
+@dataclass(frozen=True)
 class PathJoin(Subst):
     parts: tuple[Text, ...]
 

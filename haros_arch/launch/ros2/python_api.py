@@ -134,6 +134,17 @@ def executable_in_package(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any
     return e.FindExec(to_text(arg(a, k, 0, "executable")), to_text(arg(a, k, 1, "package")))
 
 
+def launch_config_as_bool(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    return e.Logic("asbool", ((e.Var(to_text(arg(a, k, 0, "name"))),),))
+
+
+def has_node_params(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    node = arg(a, k, 1, "node_name")
+    if not isinstance(node, str):
+        return Unk("HasNodeParams with a node name not known statically")
+    return e.NodeParamsIn(to_text(arg(a, k, 0, "source_file")), node)
+
+
 def python_expression(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     return e.Eval(to_text(arg(a, k, 0, "expression", default=[])))
 
@@ -499,6 +510,7 @@ API: dict[str, Builder] = {
     "SetUseSimTime": ignored,
     "ParameterFile": param_file, "RewrittenYaml": rewritten_yaml,
     "ReplaceString": replace_string, "ParameterValue": parameter_value,
+    "LaunchConfigAsBool": launch_config_as_bool, "HasNodeParams": has_node_params,
     "len": builtin(len, str, list, tuple, dict), "str": builtin(str, str, int, float, bool),
     "int": builtin(int, str, int, float, bool), "float": builtin(float, str, int, float),
     "bool": builtin(bool, *SCALARS), "list": builtin(list, str, list, tuple, dict),

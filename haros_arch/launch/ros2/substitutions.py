@@ -350,6 +350,12 @@ class Evaluator:
                 return Value.unknown("equals with unknown operands")
             same = equal(left.literal, right.literal)
             return Value.of(str(same != (s.op == "notequals")).lower())
+        if s.op == "asbool":  # nav2_common's LaunchConfigAsBool: never an error
+            literal = self.value(s.operands[0]).literal
+            if literal is None:
+                return Value.unknown("LaunchConfigAsBool of an unknown value")
+            truth = literal.strip().lower() in ("true", "1", "yes", "on")
+            return Value.of(str(truth))
         if s.op == "if":
             test = self.truth_of(self.value(s.operands[0]), "$(if)", typed=True)
             if test is None:
@@ -367,6 +373,14 @@ class Evaluator:
         else:  # or, any
             result = True if True in truths else (None if None in truths else False)
         return Value.unknown(f"$({s.op})") if result is None else Value.of(str(result).lower())
+
+    def s_NodeParamsIn(self, s: e.NodeParamsIn) -> Value:
+        """nav2_common's ``HasNodeParams``: does the YAML file have a top-level key for
+        the node (as written, no wildcards)."""
+        document = self.runner.param_file(e.ParamFile(s.path), self.scope, self.location)
+        if document is None:
+            return Value.unknown("HasNodeParams of a file not read")
+        return Value.of(str(isinstance(document, dict) and s.node in document))
 
     def s_PathJoin(self, s: e.PathJoin) -> Value:
         parts: list[str | Value] = []
