@@ -117,9 +117,10 @@ def has_resource(kind, name):
 def get_resource(kind, name):
     if not has_resource(kind, name):
         raise LookupError(name)
-    return "", os.path.dirname(_MAP[name])
+    return "", os.path.dirname(os.path.dirname(_MAP[name]))  # the prefix
 def get_resources(kind):
-    return {k: os.path.dirname(v) for k, v in _MAP.items()} if kind == "packages" else {}
+    return {k: os.path.dirname(os.path.dirname(v)) for k, v in _MAP.items()} if (
+        kind == "packages") else {}
 ''',
     "bin/xacro": "#!/bin/sh\necho '<robot name=\"standin\"/>'\n",
     "bin/ros2": "#!/bin/sh\nexit 0\n",
@@ -132,10 +133,10 @@ def get_package_share_directory(name, print_warning=True):
     if name not in _MAP:
         raise PackageNotFoundError(name)
     return _MAP[name]
-def get_package_prefix(name):
-    return os.path.dirname(get_package_share_directory(name))
+def get_package_prefix(name):  # <prefix>/share/<name> -> <prefix>
+    return os.path.dirname(os.path.dirname(get_package_share_directory(name)))
 def get_packages_with_prefixes():
-    return {k: os.path.dirname(v) for k, v in _MAP.items()}
+    return {k: os.path.dirname(os.path.dirname(v)) for k, v in _MAP.items()}
 ''',
 }
 
@@ -397,10 +398,12 @@ def share_form(source: str, workspace: Any) -> str:
 def as_installed(result: dict[str, Any], workspace: Any, installed: dict[str, str],
                  prefix: str) -> dict[str, Any]:
     """Our values from a source run, with paths into packages written as installed."""
-    from haros_arch.share import share_source
+    from haros_arch.share import install_prefix, share_source
 
     roots = sorted(((p.root, os.path.join(prefix, "share", n))
                     for n, p in workspace.packages.items()), key=lambda r: -len(r[0]))
+    # our install prefix of a package (<install>/<pkg>) is the merged prefix here
+    roots += [(str(install_prefix(workspace, n)), prefix) for n in workspace.packages]
 
     def convert(value: Any) -> Any:
         if isinstance(value, list):
