@@ -70,3 +70,39 @@ def test_parameter_file_with_unknown_path_is_reported(write_tree) -> None:
         "LAUNCH_ARG_UNSET", "LAUNCH_PARAM_FILE"]
     assert [d.location.line for d in model.diagnostics
             if d.code == "LAUNCH_PARAM_FILE"] == [4]
+
+
+def test_with_not_interpreted_leaves_its_names_unknown_and_classes_are_skipped(
+        write_tree) -> None:
+    from conftest import package_xml
+
+    root = write_tree({
+        "src/p/package.xml": package_xml("p", "ament_python"),
+        "src/p/launch/sim.launch.py": """
+import os
+from typing import TypedDict
+from ament_index_python.packages import get_package_share_directory
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+class RobotConfig(TypedDict):
+    name: str
+
+def generate_launch_description():
+    urdf = os.path.join(get_package_share_directory('missing_sim'), 'robot.urdf')
+    with open(urdf, 'r') as infp:
+        robot_description = infp.read()
+        names = [n for n in ('a', 'b')]
+    return LaunchDescription([
+        Node(package='robot_state_publisher', executable='robot_state_publisher',
+             parameters=[{'robot_description': robot_description, 'rate': 5}]),
+    ])
+"""})
+    workspace = scan([str(root / "src")], {})
+    model = load(str(root / "src/p/launch/sim.launch.py"), workspace, {}, {})
+    assert [n.executable for n in model.nodes] == ["robot_state_publisher"]
+    assert {p.key: p.value for p in model.params} == {"robot_description": None, "rate": 5}
+    found = [(d.code, d.location.line) for d in model.diagnostics]
+    assert ("LAUNCH_PY_UNSUPPORTED", 12) in found  # the with, not run
+    assert not any("not defined" in d.message or "ClassDef" in d.message
+                   for d in model.diagnostics)
