@@ -106,3 +106,29 @@ def generate_launch_description():
     assert ("LAUNCH_PY_UNSUPPORTED", 12) in found  # the with, not run
     assert not any("not defined" in d.message or "ClassDef" in d.message
                    for d in model.diagnostics)
+
+
+def test_unset_environment_variable_is_an_unknown_value_not_an_unsupported_construct(
+        write_tree) -> None:
+    from conftest import package_xml
+
+    root = write_tree({
+        "src/p/package.xml": package_xml("p", "ament_python"),
+        "src/p/launch/bot.launch.py": """
+import os
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+MODEL = os.environ['ROBOT_MODEL']
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package='p', executable='e', name='driver',
+             parameters=[{'model': MODEL, 'home': os.getenv('FLEET_HOME', '/srv')}]),
+    ])
+"""})
+    workspace = scan([str(root / "src")], {})
+    model = load(str(root / "src/p/launch/bot.launch.py"), workspace, {}, {})
+    assert {p.key: p.value for p in model.params} == {"model": None, "home": "/srv"}
+    assert [(d.code, d.location.line) for d in model.diagnostics] == [
+        ("LAUNCH_UNKNOWN_VALUE", 5)]

@@ -81,6 +81,10 @@ class Interpreter(Expressions):
             self.diagnostics.append(found)
         return Unk(detail)
 
+    def unknown_value(self, node: ast.AST, detail: str) -> None:
+        self.diagnostics.append(diag.make("LAUNCH_UNKNOWN_VALUE", self.where(node),
+                                          detail=detail))
+
     def tick(self) -> None:
         self.steps += 1
         if self.steps > MAX_STEPS:

@@ -123,7 +123,8 @@ def getenv(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     default = arg(a, k, 1, "default")
     if default is not None or len(a) > 1:
         return default
-    return Lazy((e.Opaque(f"environment variable {name}"),))
+    i.unknown_value(n, f"environment variable {name} is not set in the configuration")
+    return Lazy((e.Opaque(f"environment variable {name}", report=False),))
 
 
 def find_executable(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
