@@ -132,3 +132,48 @@ def generate_launch_description():
     assert {p.key: p.value for p in model.params} == {"model": None, "home": "/srv"}
     assert [(d.code, d.location.line) for d in model.diagnostics] == [
         ("LAUNCH_UNKNOWN_VALUE", 5)]
+
+
+def test_rewritten_yaml_key_and_value_rewrites(write_tree) -> None:
+    from conftest import package_xml
+
+    root = write_tree({
+        "src/p/package.xml": package_xml("p", "ament_python"),
+        "src/p/config/nav.yaml": """costmap:
+  ros__parameters:
+    filters: [keepout, inflation]
+    keepout:
+      enabled: KEEPOUT_ZONE_ENABLED
+controller_old:
+  ros__parameters:
+    rate: 10
+""",
+        "src/p/launch/nav.launch.py": """
+import os
+from ament_index_python.packages import get_package_share_directory
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+from launch_ros.descriptions import ParameterFile
+from nav2_common.launch import RewrittenYaml
+
+def generate_launch_description():
+    params = ParameterFile(RewrittenYaml(
+        source_file=os.path.join(get_package_share_directory('p'), 'config', 'nav.yaml'),
+        root_key='', param_rewrites={},
+        key_rewrites={'controller_old': 'controller'},
+        value_rewrites={'KEEPOUT_ZONE_ENABLED': LaunchConfiguration('keepout')},
+        convert_types=True))
+    return LaunchDescription([
+        DeclareLaunchArgument('keepout', default_value='False'),
+        Node(package='p', executable='c', name='costmap', parameters=[params]),
+        Node(package='p', executable='c', name='controller', parameters=[params]),
+    ])
+"""})
+    workspace = scan([str(root / "src")], {})
+    model = load(str(root / "src/p/launch/nav.launch.py"), workspace, {}, {})
+    assert {p.name: p.value for p in model.params} == {
+        "/costmap/filters": ["keepout", "inflation"], "/costmap/keepout.enabled": False,
+        "/controller/rate": 10}
+    assert model.diagnostics == []

@@ -198,6 +198,8 @@ class ParamFile:
     replacements: list[tuple[Text, Text]] = field(default_factory=list)  # ReplaceString
     condition: Cond | None = None  # ReplaceString(condition=...): replace only if true
     allow_substs: bool = False  # $(...) in the file's text is substituted first
+    key_rewrites: list[tuple[Text, Text]] = field(default_factory=list)  # RewrittenYaml
+    value_rewrites: list[tuple[Text, Text]] = field(default_factory=list)
 
 
 @dataclass(frozen=True, eq=False)

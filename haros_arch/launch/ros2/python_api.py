@@ -435,8 +435,14 @@ def rewritten_yaml(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     pairs = [(to_text(key), to_text(val) if not isinstance(val, (bool, int, float))
               else val) for key, val in rewrites.items()] if isinstance(rewrites, dict) else []
     root = k.get("root_key")
+
+    def text_pairs(given: Any) -> list[tuple[e.Text, e.Text]]:
+        return [(to_text(key), to_text(val)) for key, val in given.items()] if isinstance(
+            given, dict) else []
+
     return e.ParamFile(to_text(arg(a, k, 0, "source_file")), text_or_none(root), pairs,
-                       i.where(n))
+                       i.where(n), key_rewrites=text_pairs(k.get("key_rewrites")),
+                       value_rewrites=text_pairs(k.get("value_rewrites")))
 
 
 def replace_string(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:

@@ -271,7 +271,8 @@ class Runner:
                 self.report("LAUNCH_PARAM_FILE", where, detail=f"cannot read {file}")
             return None
         text = self.replace(text, entry, scope, where)
-        rewritten = bool(entry.rewrites) or entry.root_key is not None
+        rewritten = bool(entry.rewrites or entry.key_rewrites or entry.value_rewrites) or (
+            entry.root_key is not None)
         if text is not None and entry.allow_substs and not rewritten:
             text = self.substitute(text, scope, where)  # the file as written, comments too
         if text is None:
@@ -349,6 +350,16 @@ class Runner:
             text = text.replace(before.literal, after.literal)
         return text
 
+    def known_pairs(self, pairs: list[tuple[e.Text, e.Text]], scope: Scope,
+                    where: Location) -> dict[str, str | None]:
+        """Rewrite pairs performed; a value not known statically becomes None."""
+        out: dict[str, str | None] = {}
+        for key, val in pairs:
+            name, value = self.value(key, scope, where), self.value(val, scope, where)
+            if name is not None and name.literal is not None:
+                out[name.literal] = value.literal if value is not None else None
+        return out
+
     def rewrite(self, document: Any, entry: e.ParamFile, scope: Scope,
                 where: Location) -> Any:
         """nav2_common's ``RewrittenYaml``: replace keys' values, wrap in ``root_key``."""
@@ -366,11 +377,39 @@ class Runner:
                 else:
                     rewrites[name.literal] = val
             document = _rewrite(document, rewrites, ())
+        keys = self.known_pairs(entry.key_rewrites, scope, where)
+        if keys:
+            document = _rename_keys(document, {old: new for old, new in keys.items()
+                                               if new is not None}, 0)
+        values = self.known_pairs(entry.value_rewrites, scope, where)
+        if values:
+            document = _rewrite_values(document, {
+                old: None if new is None else naming.yaml_value(new)
+                for old, new in values.items()}, 0)
         if entry.root_key is not None:
             root = self.value(entry.root_key, scope, where)
             if root is not None and root.text:
                 document = {root.text: document}
         return document
+
+
+def _rename_keys(node: Any, renames: dict[str, str], depth: int) -> Any:
+    """RewrittenYaml's ``key_rewrites``: a key renamed wherever it appears."""
+    if not isinstance(node, dict) or depth > naming.MAX_PARAM_DEPTH:
+        return node
+    return {renames.get(str(key), key): _rename_keys(value, renames, depth + 1)
+            for key, value in node.items()}
+
+
+def _rewrite_values(node: Any, values: dict[str, Any], depth: int) -> Any:
+    """RewrittenYaml's ``value_rewrites``: a leaf whose text is a key is replaced."""
+    if depth > naming.MAX_PARAM_DEPTH:
+        return node
+    if isinstance(node, dict):
+        return {key: _rewrite_values(value, values, depth + 1) for key, value in node.items()}
+    if isinstance(node, list):
+        return [_rewrite_values(value, values, depth + 1) for value in node]
+    return values.get(str(node), node)
 
 
 def _rewrite(node: Any, rewrites: dict[str, Any], path: tuple[str, ...]) -> Any:
