@@ -28,9 +28,12 @@ from .python_methods import (
     arg,
     bounded_range,
     builtin,
+    cond,
     open_file,
     safe_load,
+    text_or_none,
 )
+from .python_nav2 import NAV2_COMMON
 from .python_values import (
     Budget,
     Context,
@@ -41,19 +44,6 @@ from .python_values import (
     concat,
     to_text,
 )
-
-
-def text_or_none(value: Any) -> e.Text | None:
-    return None if value is None else to_text(value)
-
-
-def cond(interp: Interpreter, value: Any, node: ast.AST) -> e.Cond | None:
-    if value is None:
-        return None
-    if isinstance(value, e.Cond):
-        return value
-    interp.unsupported(node, "condition is not known statically")
-    return e.Cond((e.Opaque("condition"),), source="?")
 
 
 def finish(interp: Interpreter, action: e.Action, kwargs: Kwargs, node: ast.AST) -> e.Action:
@@ -133,17 +123,6 @@ def find_executable(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
 
 def executable_in_package(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     return e.FindExec(to_text(arg(a, k, 0, "executable")), to_text(arg(a, k, 1, "package")))
-
-
-def launch_config_as_bool(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
-    return e.Logic("asbool", ((e.Var(to_text(arg(a, k, 0, "name"))),),))
-
-
-def has_node_params(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
-    node = arg(a, k, 1, "node_name")
-    if not isinstance(node, str):
-        return Unk("HasNodeParams with a node name not known statically")
-    return e.NodeParamsIn(to_text(arg(a, k, 0, "source_file")), node)
 
 
 def python_expression(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
@@ -430,30 +409,6 @@ def param_file(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     return e.ParamFile(to_text(given), location=i.where(n), allow_substs=substs)
 
 
-def rewritten_yaml(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
-    rewrites = k.get("param_rewrites") or {}
-    pairs = [(to_text(key), to_text(val) if not isinstance(val, (bool, int, float))
-              else val) for key, val in rewrites.items()] if isinstance(rewrites, dict) else []
-    root = k.get("root_key")
-
-    def text_pairs(given: Any) -> list[tuple[e.Text, e.Text]]:
-        return [(to_text(key), to_text(val)) for key, val in given.items()] if isinstance(
-            given, dict) else []
-
-    return e.ParamFile(to_text(arg(a, k, 0, "source_file")), text_or_none(root), pairs,
-                       i.where(n), key_rewrites=text_pairs(k.get("key_rewrites")),
-                       value_rewrites=text_pairs(k.get("value_rewrites")))
-
-
-def replace_string(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
-    """nav2_common's ``ReplaceString``: the file with text replaced (if its condition)."""
-    replacements = k.get("replacements") or {}
-    pairs = [(to_text(key), to_text(val)) for key, val in replacements.items()] if isinstance(
-        replacements, dict) else []
-    return e.ParamFile(to_text(arg(a, k, 0, "source_file")), location=i.where(n),
-                       replacements=pairs, condition=cond(i, k.get("condition"), n))
-
-
 def parameter_value(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     value_type = k.get("value_type")
     as_text = isinstance(value_type, Unk) is False and getattr(
@@ -515,9 +470,7 @@ API: dict[str, Builder] = {
     "LogInfo": ignored, "ExecuteProcess": ignored, "Shutdown": ignored,
     "EmitEvent": ignored, "AppendEnvironmentVariable": ignored, "SetROSLogDir": ignored,
     "SetUseSimTime": ignored,
-    "ParameterFile": param_file, "RewrittenYaml": rewritten_yaml,
-    "ReplaceString": replace_string, "ParameterValue": parameter_value,
-    "LaunchConfigAsBool": launch_config_as_bool, "HasNodeParams": has_node_params,
+    "ParameterFile": param_file, "ParameterValue": parameter_value, **NAV2_COMMON,
     "len": builtin(len, str, list, tuple, dict), "str": builtin(str, str, int, float, bool),
     "int": builtin(int, str, int, float, bool), "float": builtin(float, str, int, float),
     "bool": builtin(bool, *SCALARS), "list": builtin(list, str, list, tuple, dict),
