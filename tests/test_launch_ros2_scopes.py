@@ -177,3 +177,54 @@ def generate_launch_description():
         "/costmap/filters": ["keepout", "inflation"], "/costmap/keepout.enabled": False,
         "/controller/rate": 10}
     assert model.diagnostics == []
+
+
+RESET_XML = """<launch>
+  <arg name="robot" default="r1"/>
+  <arg name="rate" default="5"/>
+  <group>
+    <push_ros_namespace namespace="ns1"/>
+    <set_parameter name="level" value="2"/>
+    <set_remap from="a" to="b"/>
+    <reset><keep name="robot" value="$(var robot)_kept"/></reset>
+    <node pkg="p" exec="e" name="$(var robot)">
+      <param name="rate" value="$(var rate 9)"/>
+    </node>
+  </group>
+</launch>"""
+
+RESET_PY = """
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, GroupAction, ResetLaunchConfigurations
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node, PushROSNamespace, SetParameter, SetRemap
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('robot', default_value='r1'),
+        DeclareLaunchArgument('rate', default_value='5'),
+        GroupAction([
+            PushROSNamespace('ns1'), SetParameter(name='level', value=2),
+            SetRemap(src='a', dst='b'),
+            ResetLaunchConfigurations({'robot': [LaunchConfiguration('robot'), '_kept']}),
+            Node(package='p', executable='e', name=LaunchConfiguration('robot'),
+                 parameters=[{'rate': LaunchConfiguration('rate', default='9')}]),
+        ]),
+    ])
+"""
+
+
+@pytest.mark.parametrize(("name", "text"), [("r.launch.xml", RESET_XML),
+                                            ("r.launch.py", RESET_PY)])
+def test_reset_launch_configurations_clears_namespace_remaps_and_globals(
+        write_tree, name: str, text: str) -> None:
+    from conftest import package_xml
+
+    root = write_tree({"src/p/package.xml": package_xml("p", "ament_python"),
+                       f"src/p/launch/{name}": text})
+    workspace = scan([str(root / "src")], {})
+    model = load(str(root / "src/p/launch" / name), workspace, {}, {})
+    [node] = model.nodes
+    assert (node.name, node.remaps) == ("/r1_kept", [])
+    assert {p.key: p.value for p in model.params} == {"rate": 9}
+    assert model.diagnostics == []

@@ -154,6 +154,11 @@ class Group(Action):
 
 
 @dataclass
+class ResetConfigs(Action):  # ResetLaunchConfigurations / <reset>
+    keeps: list[tuple[Text, Text]] | None = None  # None: clear all
+
+
+@dataclass
 class PushNamespace(Action):
     namespace: Text
 

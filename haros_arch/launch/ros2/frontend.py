@@ -52,6 +52,7 @@ class Frontend:
             "ros_timer": self.timer, "shutdown": self.ignored, "append_env": self.ignored,
             # the launch process's own ROS node and log folder: nothing in the graph
             "set_use_sim_time": self.ignored, "set_ros_log_dir": self.ignored,
+            "reset": self.reset,
         }
 
     # -- helpers -------------------------------------------------------------------
@@ -138,6 +139,18 @@ class Frontend:
             return None
         default = self.text(ent, "default")
         return e.DeclareArg(name, default)
+
+    def reset(self, ent: Entity) -> e.Action | None:
+        keeps: list[tuple[e.Text, e.Text]] = []
+        for child in ent.children:
+            if child.tag != "keep":
+                self.report("LAUNCH_UNKNOWN_TAG", child, tag=child.tag)
+                continue
+            name, value = self.text(child, "name", True), self.text(child, "value", True)
+            self.leftovers(child)
+            if name is not None and value is not None:
+                keeps.append((name, value))
+        return e.ResetConfigs(keeps if ent.children else None)
 
     def let(self, ent: Entity) -> e.Action | None:
         name, value = self.text(ent, "name", True), self.text(ent, "value", True)

@@ -317,6 +317,15 @@ def group(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
                              scoped is not False, forwarding is not False, pairs), k, n)
 
 
+def reset_configurations(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    given = arg(a, k, 0, "launch_configurations")
+    keeps = [(to_text(key), to_text(val)) for key, val in given.items()] if isinstance(
+        given, dict) else None
+    if given is not None and keeps is None:
+        i.unsupported(n, "launch configurations to keep not known statically")
+    return finish(i, e.ResetConfigs(keeps), k, n)
+
+
 def push_namespace(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     return finish(i, e.PushNamespace(to_text(arg(a, k, 0, "namespace"))), k, n)
 
@@ -458,6 +467,7 @@ API: dict[str, Builder] = {
     "AnyLaunchDescriptionSource": description_source,
     "FrontendLaunchDescriptionSource": description_source,
     "GroupAction": group, "PushRosNamespace": push_namespace,
+    "ResetLaunchConfigurations": reset_configurations,
     "PushROSNamespace": push_namespace, "SetRemap": set_remap,
     "SetParameter": set_parameter, "SetParametersFromFile": set_parameters_from_file,
     "SetEnvironmentVariable": set_env(False),

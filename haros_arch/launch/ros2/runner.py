@@ -168,6 +168,21 @@ class Runner:
                 inner.configs[name.literal] = self.value(val, scope, action.location)
         self.run(action.actions, inner)
 
+    def do_ResetConfigs(self, action: e.ResetConfigs, scope: Scope) -> None:
+        """``ResetLaunchConfigurations``: every launch configuration goes, the pushed
+        namespace, SetRemap and SetParameter(s) with them (launch_ros keeps those as
+        launch configurations), except the ones given, performed before the reset."""
+        kept: dict[str, Value | None] = {}
+        for key, val in action.keeps or []:
+            name = self.value(key, scope, action.location)
+            if name is not None and name.literal is not None:
+                kept[name.literal] = self.value(val, scope, action.location)
+        scope.configs.clear()
+        scope.configs.update(kept)
+        scope.namespace = None
+        scope.remaps.clear()
+        scope.params.clear()
+
     def do_PushNamespace(self, action: e.PushNamespace, scope: Scope) -> None:
         value = self.value(action.namespace, scope, action.location)
         if value is not None:
