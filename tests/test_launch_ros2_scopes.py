@@ -88,11 +88,16 @@ from launch_ros.actions import Node
 class RobotConfig(TypedDict):
     name: str
 
+class Pipeline:
+    def nodes(self):
+        return []
+
 def generate_launch_description():
     urdf = os.path.join(get_package_share_directory('missing_sim'), 'robot.urdf')
     with open(urdf, 'r') as infp:
         robot_description = infp.read()
         names = [n for n in ('a', 'b')]
+    Pipeline()
     return LaunchDescription([
         Node(package='robot_state_publisher', executable='robot_state_publisher',
              parameters=[{'robot_description': robot_description, 'rate': 5}]),
@@ -103,9 +108,11 @@ def generate_launch_description():
     assert [n.executable for n in model.nodes] == ["robot_state_publisher"]
     assert {p.key: p.value for p in model.params} == {"robot_description": None, "rate": 5}
     found = [(d.code, d.location.line) for d in model.diagnostics]
-    assert ("LAUNCH_PY_UNSUPPORTED", 12) in found  # the with, not run
+    assert ("LAUNCH_PY_UNSUPPORTED", 16) in found  # the with, not run
     assert not any("not defined" in d.message or "ClassDef" in d.message
                    for d in model.diagnostics)
+    # a class is not interpreted: where it is used, that use is reported, by name
+    assert [d.location.line for d in model.diagnostics if "Pipeline" in d.message] == [19]
 
 
 def test_unset_environment_variable_is_an_unknown_value_not_an_unsupported_construct(

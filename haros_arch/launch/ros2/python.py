@@ -314,6 +314,8 @@ class Interpreter(Expressions):
             return self.unsupported(node, f"call to {name} is not interpreted (never run)")
         if isinstance(func, _Bound):
             return func.call(self, args, kwargs, node)
+        if isinstance(func, Unk) and func.why.startswith("class "):
+            return self.unsupported(node, f"call to {func.why}")
         return self.unsupported(node, "call to a value that is not known statically")
 
     def call_function(self, func: Func, args: list[Any], kwargs: dict[str, Any],
