@@ -137,6 +137,12 @@ def test_each_condition_decided_or_kept(write_tree, form: str) -> None:
     # the import is refused, not run; the unset argument is reported
     assert "LAUNCH_UNSUPPORTED" in {d.code for d in model.diagnostics}
     assert "LAUNCH_ARG_UNSET" in {d.code for d in model.diagnostics}
+    # real launch cannot build $(any)/$(all) from XML (its parse passes args=): an error
+    bad = sorted(d.location.line for d in model.diagnostics if d.code == "LAUNCH_BAD_VALUE")
+    expected = [] if form == "python" else [
+        number for number, line in enumerate(xml_file().splitlines(), 1)
+        if 'name="any"' in line or 'name="all' in line]
+    assert bad == expected and (form == "python" or len(expected) == 3)
 
 
 def test_nav2_common_launch_config_as_bool_and_has_node_params(write_tree) -> None:

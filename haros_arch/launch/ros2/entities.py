@@ -89,6 +89,7 @@ class ThisFile(Subst):  # $(filename) / $(dirname) / ThisLaunchFile(Dir)
 class Logic(Subst):  # $(not) $(and) $(or) $(equals) $(if) and their Python classes
     op: str
     operands: tuple[Text, ...]
+    frontend: bool = False  # written as $(...) in XML / YAML
 
 
 @dataclass(frozen=True)

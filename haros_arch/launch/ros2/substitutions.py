@@ -160,7 +160,7 @@ def make(name: str, args: list[e.Text], raw: str) -> e.Subst:
     if name in ("not", "and", "or", "equals", "not-equals", "if", "any", "all"):
         arity(*{"not": (1, 1), "and": (2, 2), "or": (2, 2), "equals": (2, 2),
                 "not-equals": (2, 2), "if": (2, 3), "any": (0, 64), "all": (0, 64)}[name])
-        return e.Logic(name.replace("-", ""), tuple(args))
+        return e.Logic(name.replace("-", ""), tuple(args), frontend=True)
     if name == "command":
         return e.Opaque(f"$(command) is never run; its output is unknown: {raw}")
     if name == "file-content":
@@ -363,6 +363,11 @@ class Evaluator:
             if test:
                 return self.value(s.operands[1])
             return self.value(s.operands[2]) if len(s.operands) > 2 else Value()
+        if s.frontend and s.op in ("any", "all"):
+            self.report("LAUNCH_BAD_VALUE", detail=f"$({s.op} ...) cannot be built by "
+                        "launch's XML/YAML front end (jazzy to rolling: its parse passes "
+                        "'args=' to a constructor taking *args); the real launch fails "
+                        "here. Evaluated as meant")
         truths = [self.truth_of(self.value(op), f"$({s.op})", typed=True)
                   for op in s.operands]
         result: bool | None
