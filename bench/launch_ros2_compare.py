@@ -30,7 +30,11 @@ Nothing fetched is committed and CI never runs this. To reproduce:
            --targets demos navigation2/nav2_bringup turtlebot3 ros2_control_demos
 
 It prints, per launch file, whether each side could run it, then the agreement per
-field over the nodes both sides found.
+field over the nodes both sides found. The real side records parameters with launch_ros's
+``to_parameters_list``, which matches a parameter file's ``/**`` and exact node names
+only; a running node gets rcl's wildcards too (``/**/driver``), as ours does, so such
+entries show as differences. Our own fixture packages (fixtures/launch_ros2/src,
+fixtures/share_ros2/src) can be copied under SRC and given as targets too.
 
 The real side always runs in the install-like tree. Ours does too, unless
 ``--ours-from-source``: then ours reads the source folders as they are, finding each
