@@ -30,7 +30,11 @@ Nothing fetched is committed and CI never runs this. To reproduce:
            --targets demos navigation2/nav2_bringup turtlebot3 ros2_control_demos
 
 It prints, per launch file, whether each side could run it, then the agreement per
-field over the nodes both sides found.
+field over the nodes both sides found. The real side records parameters with launch_ros's
+``to_parameters_list``, which matches a parameter file's ``/**`` and exact node names
+only; a running node gets rcl's wildcards too (``/**/driver``), as ours does, so such
+entries show as differences. Our own fixture packages (fixtures/launch_ros2/src,
+fixtures/share_ros2/src) can be copied under SRC and given as targets too.
 
 The real side always runs in the install-like tree. Ours does too, unless
 ``--ours-from-source``: then ours reads the source folders as they are, finding each
@@ -117,9 +121,10 @@ def has_resource(kind, name):
 def get_resource(kind, name):
     if not has_resource(kind, name):
         raise LookupError(name)
-    return "", os.path.dirname(_MAP[name])
+    return "", os.path.dirname(os.path.dirname(_MAP[name]))  # the prefix
 def get_resources(kind):
-    return {k: os.path.dirname(v) for k, v in _MAP.items()} if kind == "packages" else {}
+    return {k: os.path.dirname(os.path.dirname(v)) for k, v in _MAP.items()} if (
+        kind == "packages") else {}
 ''',
     "bin/xacro": "#!/bin/sh\necho '<robot name=\"standin\"/>'\n",
     "bin/ros2": "#!/bin/sh\nexit 0\n",
@@ -132,10 +137,10 @@ def get_package_share_directory(name, print_warning=True):
     if name not in _MAP:
         raise PackageNotFoundError(name)
     return _MAP[name]
-def get_package_prefix(name):
-    return os.path.dirname(get_package_share_directory(name))
+def get_package_prefix(name):  # <prefix>/share/<name> -> <prefix>
+    return os.path.dirname(os.path.dirname(get_package_share_directory(name)))
 def get_packages_with_prefixes():
-    return {k: os.path.dirname(v) for k, v in _MAP.items()}
+    return {k: os.path.dirname(os.path.dirname(v)) for k, v in _MAP.items()}
 ''',
 }
 
@@ -397,10 +402,12 @@ def share_form(source: str, workspace: Any) -> str:
 def as_installed(result: dict[str, Any], workspace: Any, installed: dict[str, str],
                  prefix: str) -> dict[str, Any]:
     """Our values from a source run, with paths into packages written as installed."""
-    from haros_arch.share import share_source
+    from haros_arch.share import install_prefix, share_source
 
     roots = sorted(((p.root, os.path.join(prefix, "share", n))
                     for n, p in workspace.packages.items()), key=lambda r: -len(r[0]))
+    # our install prefix of a package (<install>/<pkg>) is the merged prefix here
+    roots += [(str(install_prefix(workspace, n)), prefix) for n in workspace.packages]
 
     def convert(value: Any) -> Any:
         if isinstance(value, list):

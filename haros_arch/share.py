@@ -16,6 +16,13 @@ on the workspace. ``share_source(workspace, path)`` turns a path under a workspa
 package's folder, as ``Workspace.find`` gives it, into the source file it stands for in
 the install space; a path the build rules do not install stays as it is (the installed
 layout usually mirrors the source). ROS 1 (devel space = source) does not use this.
+
+The install prefix of a workspace package (``$(find-pkg-prefix)``, ``FindPackagePrefix``,
+``get_package_prefix``) is where colcon's default isolated install puts it,
+``<install>/<pkg>`` with ``<install>`` beside the workspace's ``src`` folder
+(``install_prefix``); ``share_source`` reads ``<install>/<pkg>/share/<pkg>/...`` through
+the share map too. ``lib_executables`` names what colcon installs in ``lib/<pkg>``: the
+executables and scripts of the package's CMakeLists.txt or setup.py entry points.
 """
 
 from __future__ import annotations
@@ -28,7 +35,9 @@ import re
 from collections.abc import Iterator
 from dataclasses import dataclass, field
 
+from . import pysetup
 from .cmake import interpret
+from .cmake import parse_package as cmake_nodes
 from .cmake.interpreter import BINARY_ROOT
 from .cmake.targets import Install
 from .files import read_text
@@ -61,16 +70,68 @@ def share_map(package: Package, workspace: Workspace) -> dict[str, str]:
     return found
 
 
+def install_base(workspace: Workspace) -> str:
+    """The folder colcon would install the workspace into: ``install`` beside ``src``."""
+    root = os.path.normpath(workspace.root)
+    top = os.path.dirname(root) if os.path.basename(root) == "src" else root
+    return os.path.join(top, "install")
+
+
+def install_prefix(workspace: Workspace, name: str) -> str | None:
+    """The install prefix of package ``name`` (``<prefix>/share/<name>`` is its share
+    folder): ``<install>/<name>`` for a workspace package, the prefix it was found under
+    for an installed one; None when the package is not found."""
+    if name in workspace.packages:
+        return os.path.join(install_base(workspace), name)
+    share = workspace.find(name)
+    if share is None:
+        return None
+    parent = os.path.dirname(os.path.normpath(share))
+    if os.path.basename(parent) == "share":
+        return os.path.dirname(parent)
+    return None  # a ROS_PACKAGE_PATH folder: no prefix layout
+
+
+def lib_executables(package: Package, workspace: Workspace) -> frozenset[str]:
+    """The executables and scripts the package installs in ``lib/<pkg>`` (cached)."""
+    cached = workspace.lib_executables.get(package.name)
+    if cached is not None:
+        return cached
+    if package.build_type == "ament_python":
+        nodes, _ = pysetup.parse_package(package, workspace)  # the build stage reports
+    elif os.path.isfile(os.path.join(package.root, "CMakeLists.txt")):
+        nodes, _ = cmake_nodes(package, workspace)
+    else:
+        nodes = []
+    found = frozenset(n.executable for n in nodes if n.kind in ("executable", "script"))
+    workspace.lib_executables[package.name] = found
+    return found
+
+
 def share_source(workspace: Workspace, path: str) -> str:
     """The source file that ``path``, a path in a workspace package's share folder as
-    ``Workspace.find`` gives it (the package's source folder), stands for; ``path``
-    itself when the package's build rules install nothing there."""
+    ``Workspace.find`` gives it (the package's source folder) or as its install prefix
+    gives it (``<install>/<pkg>/share/<pkg>/...``), stands for; ``path`` itself when the
+    package's build rules install nothing there."""
     path = os.path.normpath(os.path.abspath(path))
+    path = _from_prefix(workspace, path)
     package = workspace.package_of(path)
     if package is None or path == package.root:
         return path
     relative = os.path.relpath(path, package.root).replace(os.sep, "/")
     return share_map(package, workspace).get(relative, path)
+
+
+def _from_prefix(workspace: Workspace, path: str) -> str:
+    """``<install>/<pkg>/share/<pkg>/rest`` -> ``<pkg source>/rest``; else ``path``."""
+    base = install_base(workspace)
+    if not path.startswith(base + os.sep):
+        return path
+    parts = os.path.relpath(path, base).split(os.sep)
+    if len(parts) < 3 or parts[1] != "share" or parts[2] != parts[0] or (
+            parts[0] not in workspace.packages):
+        return path
+    return os.path.join(workspace.packages[parts[0]].root, *parts[3:])
 
 
 # -- CMake -----------------------------------------------------------------------------

@@ -29,6 +29,8 @@ class Workspace:
     _installed: dict[str, str | None] = field(default_factory=dict)
     # package name -> {share-relative path: source file}, filled by haros_arch.share
     share_maps: dict[str, dict[str, str]] = field(default_factory=dict, repr=False)
+    # package name -> executables colcon installs in lib/<pkg>, filled by haros_arch.share
+    lib_executables: dict[str, frozenset[str]] = field(default_factory=dict, repr=False)
 
     def relpath(self, path: str) -> str:
         """A path relative to the workspace root when inside it, else absolute."""

@@ -56,8 +56,18 @@ class FindPackage(Subst):  # $(find-pkg-share) / $(find-pkg-prefix) / FindPackag
 
 
 @dataclass(frozen=True)
-class FindExec(Subst):  # $(find-exec) / $(exec-in-pkg): a path outside the graph
-    what: Text
+class FindExec(Subst):
+    """``$(find-exec name)`` / ``FindExecutable`` (``package`` None: searched on PATH), or
+    ``$(exec-in-pkg exe pkg)`` / ``ExecutableInPackage`` (``<prefix>/lib/<pkg>/<exe>``)."""
+
+    name: Text
+    package: Text | None = None
+
+
+@dataclass(frozen=True)
+class GlobalParam(Subst):  # $(param name [default]) / launch_ros's Parameter
+    name: Text
+    default: Text | None = None
 
 
 @dataclass(frozen=True)
@@ -79,6 +89,13 @@ class ThisFile(Subst):  # $(filename) / $(dirname) / ThisLaunchFile(Dir)
 class Logic(Subst):  # $(not) $(and) $(or) $(equals) $(if) and their Python classes
     op: str
     operands: tuple[Text, ...]
+    frontend: bool = False  # written as $(...) in XML / YAML
+
+
+@dataclass(frozen=True)
+class NodeParamsIn(Subst):  # nav2_common's HasNodeParams: 'True' if the file names node
+    path: Text
+    node: str
 
 
 @dataclass(frozen=True)
@@ -138,6 +155,11 @@ class Group(Action):
 
 
 @dataclass
+class ResetConfigs(Action):  # ResetLaunchConfigurations / <reset>
+    keeps: list[tuple[Text, Text]] | None = None  # None: clear all
+
+
+@dataclass
 class PushNamespace(Action):
     namespace: Text
 
@@ -152,6 +174,11 @@ class SetRemap(Action):
 class SetParam(Action):
     name: Text
     value: Any
+
+
+@dataclass
+class SetParamFile(Action):  # SetParametersFromFile / <set_parameters_from_file>
+    path: Text
 
 
 @dataclass
@@ -177,6 +204,8 @@ class ParamFile:
     replacements: list[tuple[Text, Text]] = field(default_factory=list)  # ReplaceString
     condition: Cond | None = None  # ReplaceString(condition=...): replace only if true
     allow_substs: bool = False  # $(...) in the file's text is substituted first
+    key_rewrites: list[tuple[Text, Text]] = field(default_factory=list)  # RewrittenYaml
+    value_rewrites: list[tuple[Text, Text]] = field(default_factory=list)
 
 
 @dataclass(frozen=True, eq=False)

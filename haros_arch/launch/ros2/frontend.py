@@ -49,6 +49,10 @@ class Frontend:
             "set_remap": self.set_remap, "set_env": self.set_env, "unset_env": self.set_env,
             "load_composable_node": self.load_composable, "timer": self.timer,
             "log": self.ignored, "set_launch_configuration": self.let,
+            "ros_timer": self.timer, "shutdown": self.ignored, "append_env": self.ignored,
+            # the launch process's own ROS node and log folder: nothing in the graph
+            "set_use_sim_time": self.ignored, "set_ros_log_dir": self.ignored,
+            "reset": self.reset,
         }
 
     # -- helpers -------------------------------------------------------------------
@@ -136,6 +140,18 @@ class Frontend:
         default = self.text(ent, "default")
         return e.DeclareArg(name, default)
 
+    def reset(self, ent: Entity) -> e.Action | None:
+        keeps: list[tuple[e.Text, e.Text]] = []
+        for child in ent.children:
+            if child.tag != "keep":
+                self.report("LAUNCH_UNKNOWN_TAG", child, tag=child.tag)
+                continue
+            name, value = self.text(child, "name", True), self.text(child, "value", True)
+            self.leftovers(child)
+            if name is not None and value is not None:
+                keeps.append((name, value))
+        return e.ResetConfigs(keeps if ent.children else None)
+
     def let(self, ent: Entity) -> e.Action | None:
         name, value = self.text(ent, "name", True), self.text(ent, "value", True)
         return None if name is None or value is None else e.SetConfig(name, value)
@@ -180,9 +196,8 @@ class Frontend:
         return None if name is None or value is None else e.SetParam(name, value)
 
     def set_pfile(self, ent: Entity) -> e.Action | None:
-        self.text(ent, "filename")
-        return e.Unsupported("set_parameters_from_file is not applied; "
-                             "the parameters it sets are unknown")
+        path = self.text(ent, "filename", True)
+        return None if path is None else e.SetParamFile(path)
 
     def set_remap(self, ent: Entity) -> e.Action | None:
         src, dst = self.text(ent, "from", True), self.text(ent, "to", True)

@@ -80,21 +80,27 @@ def perform_composable(runner: Runner, component: e.ComposableNode, scope: Scope
 def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamEntry],
                 scope: Scope, where: Location) -> None:
     found: dict[str, tuple[Any, Location]] = {}
-    for key, value, location in scope.params:
+
+    def read_file(entry: e.ParamFile, location: Location) -> None:
+        document = runner.param_file(entry, scope, location)
+        if document is None:
+            return
+        if UNKNOWN_MARK in node and naming.names_a_node(document):
+            runner.report("LAUNCH_PARAM_FILE", location,
+                          detail=f"parameter file applied to {node}, whose name is not "
+                                 "known: only its /** entries are used")
+        for name, leaf in naming.params_for_node(document, node):
+            found[name] = (leaf, location)
+
+    for key, value, location in scope.params:  # SetParameter(s), SetParametersFromFile
+        if key is None:
+            read_file(value, location)
+            continue
         for name, leaf in flat(key, convert(value, ev)):
             found[name] = (leaf, location)
     for entry in entries:
         if isinstance(entry, e.ParamFile):
-            location = entry.location if entry.location.file else where
-            document = runner.param_file(entry, scope, location)
-            if document is None:
-                continue
-            if UNKNOWN_MARK in node and naming.names_a_node(document):
-                runner.report("LAUNCH_PARAM_FILE", location,
-                              detail=f"parameter file applied to {node}, whose name is not "
-                                     "known: only its /** entries are used")
-            for name, leaf in naming.params_for_node(document, node):
-                found[name] = (leaf, location)
+            read_file(entry, entry.location if entry.location.file else where)
         else:
             written, value = entry
             for name, leaf in flat(ev.value(written).text, convert(value, ev)):

@@ -81,6 +81,10 @@ class Interpreter(Expressions):
             self.diagnostics.append(found)
         return Unk(detail)
 
+    def unknown_value(self, node: ast.AST, detail: str) -> None:
+        self.diagnostics.append(diag.make("LAUNCH_UNKNOWN_VALUE", self.where(node),
+                                          detail=detail))
+
     def tick(self) -> None:
         self.steps += 1
         if self.steps > MAX_STEPS:
@@ -104,6 +108,8 @@ class Interpreter(Expressions):
                 continue  # docstring
             elif isinstance(stmt, ast.If) and "__name__" in ast.dump(stmt.test):
                 continue  # if __name__ == '__main__': never run
+            elif isinstance(stmt, ast.ClassDef):  # never run; a use of it is reported
+                self.globals[stmt.name] = Unk(f"class {stmt.name} (not interpreted)")
             else:
                 self.unsupported(stmt, f"module-level {type(stmt).__name__} is not "
                                        "interpreted (never run)")
@@ -245,6 +251,8 @@ class Interpreter(Expressions):
             if not isinstance(value, ReadOnlyFile):
                 self.unsupported(stmt, "with statements other than open() are not "
                                        "interpreted")
+                for name in _assigned(stmt.body):  # what the body sets is unknown
+                    env[name] = Unk(f"{name} set in a with statement not interpreted")
                 return
             if item.optional_vars is not None:
                 self.assign(item.optional_vars, value, env)
@@ -306,6 +314,8 @@ class Interpreter(Expressions):
             return self.unsupported(node, f"call to {name} is not interpreted (never run)")
         if isinstance(func, _Bound):
             return func.call(self, args, kwargs, node)
+        if isinstance(func, Unk) and func.why.startswith("class "):
+            return self.unsupported(node, f"call to {func.why}")
         return self.unsupported(node, "call to a value that is not known statically")
 
     def call_function(self, func: Func, args: list[Any], kwargs: dict[str, Any],
@@ -386,3 +396,22 @@ def parse_python(text: str, path: str, workspace: Workspace,
         actions = None
     return actions, interp.diagnostics
 
+
+def _assigned(body: list[ast.stmt]) -> set[str]:
+    """The plain names a block assigns (its nested functions' locals excluded)."""
+    names: set[str] = set()
+    stack: list[ast.AST] = list(body)
+    while stack:
+        node = stack.pop()
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda,
+                             ast.ClassDef)):
+            if not isinstance(node, ast.Lambda):
+                names.add(node.name)
+            continue
+        if isinstance(node, ast.comprehension):  # its variable is its own
+            stack.extend([node.iter, *node.ifs])
+            continue
+        if isinstance(node, ast.Name) and isinstance(node.ctx, ast.Store):
+            names.add(node.id)
+        stack.extend(ast.iter_child_nodes(node))
+    return names

@@ -18,6 +18,7 @@ from typing import Any
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
 from ...model.values import Value
+from ...share import install_prefix
 from . import entities as e
 from .python import Interpreter
 from .python_methods import (
@@ -27,9 +28,12 @@ from .python_methods import (
     arg,
     bounded_range,
     builtin,
+    cond,
     open_file,
     safe_load,
+    text_or_none,
 )
+from .python_nav2 import NAV2_COMMON
 from .python_values import (
     Budget,
     Context,
@@ -40,19 +44,6 @@ from .python_values import (
     concat,
     to_text,
 )
-
-
-def text_or_none(value: Any) -> e.Text | None:
-    return None if value is None else to_text(value)
-
-
-def cond(interp: Interpreter, value: Any, node: ast.AST) -> e.Cond | None:
-    if value is None:
-        return None
-    if isinstance(value, e.Cond):
-        return value
-    interp.unsupported(node, "condition is not known statically")
-    return e.Cond((e.Opaque("condition"),), source="?")
 
 
 def finish(interp: Interpreter, action: e.Action, kwargs: Kwargs, node: ast.AST) -> e.Action:
@@ -85,8 +76,8 @@ def package_directory(share: bool) -> Builder:
     def build(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
         name = arg(a, k, 0, "package_name")
         if isinstance(name, str):
-            found = i.workspace.find(name)
-            if found is not None and share:
+            found = i.workspace.find(name) if share else install_prefix(i.workspace, name)
+            if found is not None:
                 return found
         return Lazy((e.FindPackage(to_text(name), share),))
     return build
@@ -122,7 +113,16 @@ def getenv(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     default = arg(a, k, 1, "default")
     if default is not None or len(a) > 1:
         return default
-    return Lazy((e.Opaque(f"environment variable {name}"),))
+    i.unknown_value(n, f"environment variable {name} is not set in the configuration")
+    return Lazy((e.Opaque(f"environment variable {name}", report=False),))
+
+
+def find_executable(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    return e.FindExec(to_text(arg(a, k, 0, "name")))
+
+
+def executable_in_package(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    return e.FindExec(to_text(arg(a, k, 0, "executable")), to_text(arg(a, k, 1, "package")))
 
 
 def python_expression(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
@@ -317,6 +317,15 @@ def group(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
                              scoped is not False, forwarding is not False, pairs), k, n)
 
 
+def reset_configurations(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    given = arg(a, k, 0, "launch_configurations")
+    keeps = [(to_text(key), to_text(val)) for key, val in given.items()] if isinstance(
+        given, dict) else None
+    if given is not None and keeps is None:
+        i.unsupported(n, "launch configurations to keep not known statically")
+    return finish(i, e.ResetConfigs(keeps), k, n)
+
+
 def push_namespace(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     return finish(i, e.PushNamespace(to_text(arg(a, k, 0, "namespace"))), k, n)
 
@@ -329,6 +338,10 @@ def set_remap(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
 def set_parameter(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     return finish(i, e.SetParam(to_text(arg(a, k, 0, "name")),
                                 param_value(arg(a, k, 1, "value"))), k, n)
+
+
+def set_parameters_from_file(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    return finish(i, e.SetParamFile(to_text(arg(a, k, 0, "filename"))), k, n)
 
 
 def set_env(unset: bool) -> Builder:
@@ -405,24 +418,6 @@ def param_file(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     return e.ParamFile(to_text(given), location=i.where(n), allow_substs=substs)
 
 
-def rewritten_yaml(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
-    rewrites = k.get("param_rewrites") or {}
-    pairs = [(to_text(key), to_text(val) if not isinstance(val, (bool, int, float))
-              else val) for key, val in rewrites.items()] if isinstance(rewrites, dict) else []
-    root = k.get("root_key")
-    return e.ParamFile(to_text(arg(a, k, 0, "source_file")), text_or_none(root), pairs,
-                       i.where(n))
-
-
-def replace_string(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
-    """nav2_common's ``ReplaceString``: the file with text replaced (if its condition)."""
-    replacements = k.get("replacements") or {}
-    pairs = [(to_text(key), to_text(val)) for key, val in replacements.items()] if isinstance(
-        replacements, dict) else []
-    return e.ParamFile(to_text(arg(a, k, 0, "source_file")), location=i.where(n),
-                       replacements=pairs, condition=cond(i, k.get("condition"), n))
-
-
 def parameter_value(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     value_type = k.get("value_type")
     as_text = isinstance(value_type, Unk) is False and getattr(
@@ -453,8 +448,10 @@ API: dict[str, Builder] = {
     "NotEqualsSubstitution": logic("notequals", 2),
     "IfElseSubstitution": logic("if", 3),
     "FileContent": lambda i, a, k, n: e.FileContent(to_text(arg(a, k, 0, "path"))),
-    "Command": opaque("Command (never run)"), "FindExecutable": opaque("FindExecutable"),
-    "ExecutableInPackage": opaque("ExecutableInPackage"),
+    "Command": opaque("Command (never run)"), "FindExecutable": find_executable,
+    "ExecutableInPackage": executable_in_package,
+    "AnySubstitution": logic("any", 64), "AllSubstitution": logic("all", 64),
+    "LaunchLogDir": opaque("LaunchLogDir (known at run time)"),
     "IfCondition": if_condition(False), "UnlessCondition": if_condition(True),
     "LaunchConfigurationEquals": config_equals(False),
     "LaunchConfigurationNotEquals": config_equals(True),
@@ -470,9 +467,12 @@ API: dict[str, Builder] = {
     "AnyLaunchDescriptionSource": description_source,
     "FrontendLaunchDescriptionSource": description_source,
     "GroupAction": group, "PushRosNamespace": push_namespace,
+    "ResetLaunchConfigurations": reset_configurations,
     "PushROSNamespace": push_namespace, "SetRemap": set_remap,
-    "SetParameter": set_parameter, "SetEnvironmentVariable": set_env(False),
-    "UnsetEnvironmentVariable": set_env(True), "TimerAction": timer,
+    "SetParameter": set_parameter, "SetParametersFromFile": set_parameters_from_file,
+    "SetEnvironmentVariable": set_env(False),
+    "UnsetEnvironmentVariable": set_env(True), "TimerAction": timer, "ROSTimer": timer,
+    "RosTimer": timer,
     "RegisterEventHandler": register_handler, "OnProcessExit": event_handler,
     "OnProcessStart": event_handler, "OnExecutionComplete": event_handler,
     "OnShutdown": event_handler, "OnProcessIO": event_handler,
@@ -480,8 +480,7 @@ API: dict[str, Builder] = {
     "LogInfo": ignored, "ExecuteProcess": ignored, "Shutdown": ignored,
     "EmitEvent": ignored, "AppendEnvironmentVariable": ignored, "SetROSLogDir": ignored,
     "SetUseSimTime": ignored,
-    "ParameterFile": param_file, "RewrittenYaml": rewritten_yaml,
-    "ReplaceString": replace_string, "ParameterValue": parameter_value,
+    "ParameterFile": param_file, "ParameterValue": parameter_value, **NAV2_COMMON,
     "len": builtin(len, str, list, tuple, dict), "str": builtin(str, str, int, float, bool),
     "int": builtin(int, str, int, float, bool), "float": builtin(float, str, int, float),
     "bool": builtin(bool, *SCALARS), "list": builtin(list, str, list, tuple, dict),

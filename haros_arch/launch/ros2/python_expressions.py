@@ -54,6 +54,10 @@ class Expressions:
     def unsupported(self, node: ast.AST | None, detail: str) -> Unk:
         raise NotImplementedError
 
+    def unknown_value(self, node: ast.AST, detail: str) -> None:
+        """Report a value that cannot be known statically (LAUNCH_UNKNOWN_VALUE)."""
+        raise NotImplementedError
+
     def call(self, func: Any, args: list[Any], kwargs: dict[str, Any], node: ast.AST) -> Any:
         raise NotImplementedError
 
@@ -333,5 +337,8 @@ class _Environ:
             return interp.environment[name]
         if len(args) > 1:
             return args[1]
-        return Lazy((e.Opaque(f"environment variable {name}"),)) if isinstance(
-            name, str) else Unk("environment")
+        if not isinstance(name, str):
+            return Unk("environment")
+        interp.unknown_value(node, f"environment variable {name} is not set in the "
+                                   "configuration")
+        return Lazy((e.Opaque(f"environment variable {name}", report=False),))

@@ -35,6 +35,19 @@ def arg(args: Args, kwargs: Kwargs, index: int, *names: str, default: Any = None
     return default
 
 
+def text_or_none(value: Any) -> e.Text | None:
+    return None if value is None else to_text(value)
+
+
+def cond(interp: Interpreter, value: Any, node: ast.AST) -> e.Cond | None:
+    if value is None:
+        return None
+    if isinstance(value, e.Cond):
+        return value
+    interp.unsupported(node, "condition is not known statically")
+    return e.Cond((e.Opaque("condition"),), source="?")
+
+
 # -- builtins --------------------------------------------------------------------------------
 def builtin(function: Callable[..., Any], *types: type) -> Builder:
     def build(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:

@@ -40,7 +40,8 @@ class Scope:
     configs: dict[str, Value | None]
     namespace: str | None = None
     remaps: list[tuple[str, str]] = field(default_factory=list)
-    params: list[tuple[str, Any, Location]] = field(default_factory=list)
+    # SetParameter (name, value, where), and SetParametersFromFile as (None, file, where)
+    params: list[tuple[str | None, Any, Location]] = field(default_factory=list)
     conditions: tuple[Condition, ...] = ()
     environment: dict[str, str] = field(default_factory=dict)
     file: str = ""
@@ -167,6 +168,21 @@ class Runner:
                 inner.configs[name.literal] = self.value(val, scope, action.location)
         self.run(action.actions, inner)
 
+    def do_ResetConfigs(self, action: e.ResetConfigs, scope: Scope) -> None:
+        """``ResetLaunchConfigurations``: every launch configuration goes, the pushed
+        namespace, SetRemap and SetParameter(s) with them (launch_ros keeps those as
+        launch configurations), except the ones given, performed before the reset."""
+        kept: dict[str, Value | None] = {}
+        for key, val in action.keeps or []:
+            name = self.value(key, scope, action.location)
+            if name is not None and name.literal is not None:
+                kept[name.literal] = self.value(val, scope, action.location)
+        scope.configs.clear()
+        scope.configs.update(kept)
+        scope.namespace = None
+        scope.remaps.clear()
+        scope.params.clear()
+
     def do_PushNamespace(self, action: e.PushNamespace, scope: Scope) -> None:
         value = self.value(action.namespace, scope, action.location)
         if value is not None:
@@ -181,6 +197,17 @@ class Runner:
         name = self.value(action.name, scope, action.location)
         if name is not None:
             scope.params.append((name.text, action.value, action.location))
+
+    def do_SetParamFile(self, action: e.SetParamFile, scope: Scope) -> None:
+        """``SetParametersFromFile``: the file's path is performed now; each node in
+        scope reads the file and takes what its patterns give it."""
+        path = self.value(action.path, scope, action.location) or Value.unknown()
+        if path.literal is None:
+            self.report("LAUNCH_PARAM_FILE", action.location,
+                        detail=f"parameter file {path} is not known statically")
+            return
+        entry = e.ParamFile((path.literal,), location=action.location)
+        scope.params.append((None, entry, action.location))
 
     def do_SetEnv(self, action: e.SetEnv, scope: Scope) -> None:
         name = self.value(action.name, scope, action.location)
@@ -259,7 +286,8 @@ class Runner:
                 self.report("LAUNCH_PARAM_FILE", where, detail=f"cannot read {file}")
             return None
         text = self.replace(text, entry, scope, where)
-        rewritten = bool(entry.rewrites) or entry.root_key is not None
+        rewritten = bool(entry.rewrites or entry.key_rewrites or entry.value_rewrites) or (
+            entry.root_key is not None)
         if text is not None and entry.allow_substs and not rewritten:
             text = self.substitute(text, scope, where)  # the file as written, comments too
         if text is None:
@@ -337,6 +365,16 @@ class Runner:
             text = text.replace(before.literal, after.literal)
         return text
 
+    def known_pairs(self, pairs: list[tuple[e.Text, e.Text]], scope: Scope,
+                    where: Location) -> dict[str, str | None]:
+        """Rewrite pairs performed; a value not known statically becomes None."""
+        out: dict[str, str | None] = {}
+        for key, val in pairs:
+            name, value = self.value(key, scope, where), self.value(val, scope, where)
+            if name is not None and name.literal is not None:
+                out[name.literal] = value.literal if value is not None else None
+        return out
+
     def rewrite(self, document: Any, entry: e.ParamFile, scope: Scope,
                 where: Location) -> Any:
         """nav2_common's ``RewrittenYaml``: replace keys' values, wrap in ``root_key``."""
@@ -354,11 +392,39 @@ class Runner:
                 else:
                     rewrites[name.literal] = val
             document = _rewrite(document, rewrites, ())
+        keys = self.known_pairs(entry.key_rewrites, scope, where)
+        if keys:
+            document = _rename_keys(document, {old: new for old, new in keys.items()
+                                               if new is not None}, 0)
+        values = self.known_pairs(entry.value_rewrites, scope, where)
+        if values:
+            document = _rewrite_values(document, {
+                old: None if new is None else naming.yaml_value(new)
+                for old, new in values.items()}, 0)
         if entry.root_key is not None:
             root = self.value(entry.root_key, scope, where)
             if root is not None and root.text:
                 document = {root.text: document}
         return document
+
+
+def _rename_keys(node: Any, renames: dict[str, str], depth: int) -> Any:
+    """RewrittenYaml's ``key_rewrites``: a key renamed wherever it appears."""
+    if not isinstance(node, dict) or depth > naming.MAX_PARAM_DEPTH:
+        return node
+    return {renames.get(str(key), key): _rename_keys(value, renames, depth + 1)
+            for key, value in node.items()}
+
+
+def _rewrite_values(node: Any, values: dict[str, Any], depth: int) -> Any:
+    """RewrittenYaml's ``value_rewrites``: a leaf whose text is a key is replaced."""
+    if depth > naming.MAX_PARAM_DEPTH:
+        return node
+    if isinstance(node, dict):
+        return {key: _rewrite_values(value, values, depth + 1) for key, value in node.items()}
+    if isinstance(node, list):
+        return [_rewrite_values(value, values, depth + 1) for value in node]
+    return values.get(str(node), node)
 
 
 def _rewrite(node: Any, rewrites: dict[str, Any], path: tuple[str, ...]) -> Any:

@@ -9,6 +9,7 @@ in the configuration) becomes an ``Unknown`` part, with a diagnostic where it ma
 
 from __future__ import annotations
 
+import math
 import os
 import re
 from typing import TYPE_CHECKING
@@ -16,7 +17,7 @@ from typing import TYPE_CHECKING
 from ...files import read_text
 from ...model.location import Location
 from ...model.values import Unknown, Value
-from ...share import share_source
+from ...share import install_prefix, lib_executables, share_source
 from ...workspace import installed_roots
 from .. import expression
 from . import entities as e
@@ -130,11 +131,22 @@ def make(name: str, args: list[e.Text], raw: str) -> e.Subst:
     if name in ("find-pkg-share", "find-pkg-prefix", "find"):
         arity(1, 1)
         return e.FindPackage(args[0], share=name != "find-pkg-prefix")
-    if name in ("find-exec", "exec-in-pkg"):
+    if name == "find-exec":
+        arity(1, 1)
+        return e.FindExec(args[0])
+    if name == "exec-in-pkg":
+        arity(2, 2)
+        return e.FindExec(args[0], args[1])
+    if name == "param":
         arity(1, 2)
-        return e.FindExec(e.text(*args))
+        return e.GlobalParam(args[0], args[1] if len(args) > 1 else None)
+    if name in ("launch_log_dir", "log_dir"):
+        arity(0, 0)
+        return e.Opaque("the launch log folder is only known at run time", report=False)
     if name == "eval":
         arity(1, 64)
+        if len(args) == 2:  # $(eval 'expression' 'module,...'): the modules it may use
+            return e.Eval(args[0])
         joined: list[str | e.Subst] = []
         for index, arg in enumerate(args):
             joined.extend(((" ",) if index else ()) + arg)
@@ -145,10 +157,10 @@ def make(name: str, args: list[e.Text], raw: str) -> e.Subst:
     if name in ("dirname", "filename"):
         arity(0, 0)
         return e.ThisFile(directory=name == "dirname")
-    if name in ("not", "and", "or", "equals", "if"):
+    if name in ("not", "and", "or", "equals", "not-equals", "if", "any", "all"):
         arity(*{"not": (1, 1), "and": (2, 2), "or": (2, 2), "equals": (2, 2),
-                "if": (2, 3)}[name])
-        return e.Logic(name, tuple(args))
+                "not-equals": (2, 2), "if": (2, 3), "any": (0, 64), "all": (0, 64)}[name])
+        return e.Logic(name.replace("-", ""), tuple(args), frontend=True)
     if name == "command":
         return e.Opaque(f"$(command) is never run; its output is unknown: {raw}")
     if name == "file-content":
@@ -225,10 +237,75 @@ class Evaluator:
             return Value.unknown(f"find {name}")
         if s.share:
             return Value.of(found)
-        return Value.of(Unknown(f"install prefix of {name}"))
+        prefix = install_prefix(self.runner.workspace, name)
+        if prefix is None:
+            self.report("LAUNCH_UNKNOWN_VALUE", detail=f"package {name} has no install "
+                        "prefix (found outside an ament prefix)")
+            return Value.unknown(f"install prefix of {name}")
+        return Value.of(prefix)
 
     def s_FindExec(self, s: e.FindExec) -> Value:
-        return Value.unknown("path of an executable")
+        name = self.known(s.name)
+        if name is None:
+            return Value.unknown("executable with an unknown name")
+        if s.package is not None:
+            return self.in_package(name, s.package)
+        if "/" in name:
+            return Value.of(name)  # which() takes a path as it is
+        path = self.env_value("PATH")
+        for folder in (path or "").split(os.pathsep):
+            candidate = os.path.join(folder, name)
+            if folder and os.path.isfile(candidate) and os.access(candidate, os.X_OK):
+                return Value.of(candidate)
+        self.report("LAUNCH_UNKNOWN_VALUE", detail=f"executable {name} is not found on "
+                    "the PATH of the configuration")
+        return Value.unknown(f"find-exec {name}")
+
+    def in_package(self, executable: str, package_text: e.Text) -> Value:
+        """``$(exec-in-pkg)``: ``<prefix>/lib/<pkg>/<exe>`` when the package installs it."""
+        package = self.known(package_text)
+        if package is None:
+            return Value.unknown("package with an unknown name")
+        workspace = self.runner.workspace
+        prefix = install_prefix(workspace, package)
+        if prefix is None:
+            if workspace.find(package) is None:
+                self.report("PACKAGE_NOT_FOUND", name=package)
+            else:
+                self.report("LAUNCH_UNKNOWN_VALUE", detail=f"package {package} has no "
+                            "install prefix (found outside an ament prefix)")
+            return Value.unknown(f"exec-in-pkg {executable} {package}")
+        path = os.path.join(prefix, "lib", package, executable)
+        own = workspace.packages.get(package)
+        if own is not None and executable in lib_executables(own, workspace):
+            return Value.of(path)
+        if own is None and os.path.isfile(path):
+            return Value.of(path)
+        self.report("LAUNCH_UNKNOWN_VALUE", detail=f"package {package} installs no "
+                    f"executable {executable} in lib/{package}")
+        return Value.unknown(f"exec-in-pkg {executable} {package}")
+
+    def env_value(self, name: str) -> str | None:
+        """An environment variable as the launch sees it here (set_env / unset_env)."""
+        if name in self.scope.environment:
+            return self.scope.environment[name]
+        if name in self.runner.environment and name + "\0unset" not in self.scope.environment:
+            return self.runner.environment[name]
+        return None
+
+    def s_GlobalParam(self, s: e.GlobalParam) -> Value:
+        """``$(param name)``: the value a ``SetParameter`` in scope gave ``name``."""
+        name = self.known(s.name)
+        if name is None:
+            return Value.unknown("parameter with an unknown name")
+        for key, value, _ in self.scope.params:
+            if key == name:
+                return _param_text(value, self)
+        if s.default is not None:
+            return self.value(s.default)
+        self.report("LAUNCH_UNKNOWN_VALUE", detail=f"$(param {name}): no SetParameter "
+                    "in scope sets it")
+        return Value.unknown(f"param {name}")
 
     def s_Eval(self, s: e.Eval) -> Value:
         source = self.value(s.expression)
@@ -251,14 +328,17 @@ class Evaluator:
         path = self.scope.file
         return Value.of(os.path.dirname(path) if s.directory else path)
 
-    def truth_of(self, value: Value, what: str) -> bool | None:
+    def truth_of(self, value: Value, what: str, typed: bool = False) -> bool | None:
+        """A condition's truth (``true``/``1``/``false``/``0``, any case, as
+        ``IfCondition``); ``typed``: a boolean as ``$(not)``/``$(and)``/``$(or)``/``$(if)``
+        read it (also YAML's ``yes``/``no``/``on``/``off``)."""
         literal = value.literal
         if literal is None:
             return None
         lowered = literal.strip().lower()
-        if lowered in ("true", "1"):
+        if lowered in ("true", "1") or (typed and lowered in _YAML_TRUE):
             return True
-        if lowered in ("false", "0"):
+        if lowered in ("false", "0") or (typed and lowered in _YAML_FALSE):
             return False
         self.report("LAUNCH_BAD_VALUE", detail=f"{what} \"{literal}\" is not a boolean")
         return None
@@ -268,24 +348,44 @@ class Evaluator:
             left, right = (self.value(op) for op in s.operands)
             if left.literal is None or right.literal is None:
                 return Value.unknown("equals with unknown operands")
-            same = _normal(left.literal) == _normal(right.literal)
+            same = equal(left.literal, right.literal)
             return Value.of(str(same != (s.op == "notequals")).lower())
+        if s.op == "asbool":  # nav2_common's LaunchConfigAsBool: never an error
+            literal = self.value(s.operands[0]).literal
+            if literal is None:
+                return Value.unknown("LaunchConfigAsBool of an unknown value")
+            truth = literal.strip().lower() in ("true", "1", "yes", "on")
+            return Value.of(str(truth))
         if s.op == "if":
-            test = self.truth_of(self.value(s.operands[0]), "$(if)")
+            test = self.truth_of(self.value(s.operands[0]), "$(if)", typed=True)
             if test is None:
                 return Value.unknown("$(if) with an unknown condition")
             if test:
                 return self.value(s.operands[1])
             return self.value(s.operands[2]) if len(s.operands) > 2 else Value()
-        truths = [self.truth_of(self.value(op), f"$({s.op})") for op in s.operands]
+        if s.frontend and s.op in ("any", "all"):
+            self.report("LAUNCH_BAD_VALUE", detail=f"$({s.op} ...) cannot be built by "
+                        "launch's XML/YAML front end (jazzy to rolling: its parse passes "
+                        "'args=' to a constructor taking *args); the real launch fails "
+                        "here. Evaluated as meant")
+        truths = [self.truth_of(self.value(op), f"$({s.op})", typed=True)
+                  for op in s.operands]
         result: bool | None
         if s.op == "not":
             result = None if truths[0] is None else not truths[0]
-        elif s.op == "and":
+        elif s.op in ("and", "all"):
             result = False if False in truths else (None if None in truths else True)
-        else:
+        else:  # or, any
             result = True if True in truths else (None if None in truths else False)
         return Value.unknown(f"$({s.op})") if result is None else Value.of(str(result).lower())
+
+    def s_NodeParamsIn(self, s: e.NodeParamsIn) -> Value:
+        """nav2_common's ``HasNodeParams``: does the YAML file have a top-level key for
+        the node (as written, no wildcards)."""
+        document = self.runner.param_file(e.ParamFile(s.path), self.scope, self.location)
+        if document is None:
+            return Value.unknown("HasNodeParams of a file not read")
+        return Value.of(str(isinstance(document, dict) and s.node in document))
 
     def s_PathJoin(self, s: e.PathJoin) -> Value:
         parts: list[str | Value] = []
@@ -338,7 +438,26 @@ class Evaluator:
         return (not result) if cond.negate else result
 
 
-def _normal(text: str) -> str:
-    """``$(equals)`` compares booleans case-insensitively, like launch does."""
-    lowered = text.strip().lower()
-    return lowered if lowered in ("true", "false") else text
+def _param_text(value: object, ev: Evaluator) -> Value:
+    """A ``SetParameter`` value as ``$(param)`` gives it: ``str()`` of the typed value."""
+    from .nodes import convert
+
+    typed = convert(value, ev)
+    return Value.unknown("parameter value not known statically") if typed is None else (
+        Value.of(str(typed)))
+
+
+_YAML_TRUE = frozenset(("yes", "on"))
+_YAML_FALSE = frozenset(("no", "off"))
+
+
+def equal(left: str, right: str) -> bool:
+    """``EqualsSubstitution``: booleans by truth (``1`` equals ``True``), numbers by value
+    (``math.isclose``), anything else as text."""
+    bools = ("true", "false", "1", "0")
+    if left.lower() in bools and right.lower() in bools:
+        return (left.lower() in ("true", "1")) == (right.lower() in ("true", "1"))
+    try:
+        return math.isclose(float(left), float(right))
+    except ValueError:
+        return left == right

@@ -1,0 +1,237 @@
+"""launch_ros's scoped global actions: SetParametersFromFile, SetParameter, SetRemap,
+PushROSNamespace, inside and outside a group; SetUseSimTime and SetROSLogDir (the launch
+process's own node: nothing in the graph); ROSTimer. fixtures/launch_ros2/src/rover_fleet
+has the same launch in XML and Python."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import pytest
+from conftest import FIXTURES
+
+from haros_arch.launch import load
+from haros_arch.workspace import scan
+
+ROOT = FIXTURES / "launch_ros2" / "src"
+
+
+def run(name: str, args: dict[str, str] | None = None) -> Any:
+    workspace = scan([str(ROOT)], {})
+    return load(str(ROOT / "rover_fleet" / "launch" / name), workspace, args or {}, {})
+
+
+def params_of(model: Any, node: str) -> dict[str, Any]:
+    return {p.key: p.value for p in model.params if p.node == node}
+
+
+@pytest.mark.parametrize("name", ["scopes.launch.xml", "scopes_launch.py"])
+def test_group_scoped_parameter_file_parameter_and_remap(name: str) -> None:
+    model = run(name, {"robot": "r7"})
+    assert [n.name for n in model.nodes] == ["/r7/driver", "/r7/watch", "/driver", "/late"]
+    driver, watch, outside, late = model.nodes
+    # the file's /** and /**/driver entries, then the node's own rate wins
+    assert params_of(model, "/r7/driver") == {
+        "use_sim_time": True, "frame_prefix": "fleet", "rate": 50, "limits.speed": 1.5,
+        "level": 3}
+    assert {k: v for k, v in params_of(model, "/r7/watch").items()
+            if k not in ("level_seen", "mode")} == {
+        "use_sim_time": True, "frame_prefix": "fleet", "level": 3}
+    assert driver.remaps == watch.remaps == [("cmd_vel", "/r7/cmd")]
+    # outside the group: none of it
+    assert params_of(model, "/driver") == {} and outside.remaps == []
+    assert [c.statement for c in late.conditions] == ["timer"]
+    assert "rover_fleet/config/common.yaml" in model.files
+    assert model.diagnostics == []
+
+
+def test_param_substitution_reads_set_parameter_in_scope() -> None:
+    model = run("scopes.launch.xml")
+    watch = params_of(model, "/r1/watch")
+    assert (watch["level_seen"], watch["mode"]) == (3, "idle")
+
+
+def test_parameter_file_with_unknown_path_is_reported(write_tree) -> None:
+    from conftest import package_xml
+
+    root = write_tree({
+        "src/p/package.xml": package_xml("p", "ament_cmake"),
+        "src/p/launch/a.launch.xml": """<launch>
+  <arg name="params"/>
+  <group>
+    <set_parameters_from_file filename="$(var params)"/>
+    <node pkg="p" exec="e" name="n"/>
+  </group>
+</launch>"""})
+    workspace = scan([str(root / "src")], {})
+    model = load(str(root / "src/p/launch/a.launch.xml"), workspace, {}, {})
+    assert [n.name for n in model.nodes] == ["/n"]
+    assert sorted({d.code for d in model.diagnostics}) == [
+        "LAUNCH_ARG_UNSET", "LAUNCH_PARAM_FILE"]
+    assert [d.location.line for d in model.diagnostics
+            if d.code == "LAUNCH_PARAM_FILE"] == [4]
+
+
+def test_with_not_interpreted_leaves_its_names_unknown_and_classes_are_skipped(
+        write_tree) -> None:
+    from conftest import package_xml
+
+    root = write_tree({
+        "src/p/package.xml": package_xml("p", "ament_python"),
+        "src/p/launch/sim.launch.py": """
+import os
+from typing import TypedDict
+from ament_index_python.packages import get_package_share_directory
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+class RobotConfig(TypedDict):
+    name: str
+
+class Pipeline:
+    def nodes(self):
+        return []
+
+def generate_launch_description():
+    urdf = os.path.join(get_package_share_directory('missing_sim'), 'robot.urdf')
+    with open(urdf, 'r') as infp:
+        robot_description = infp.read()
+        names = [n for n in ('a', 'b')]
+    Pipeline()
+    return LaunchDescription([
+        Node(package='robot_state_publisher', executable='robot_state_publisher',
+             parameters=[{'robot_description': robot_description, 'rate': 5}]),
+    ])
+"""})
+    workspace = scan([str(root / "src")], {})
+    model = load(str(root / "src/p/launch/sim.launch.py"), workspace, {}, {})
+    assert [n.executable for n in model.nodes] == ["robot_state_publisher"]
+    assert {p.key: p.value for p in model.params} == {"robot_description": None, "rate": 5}
+    found = [(d.code, d.location.line) for d in model.diagnostics]
+    assert ("LAUNCH_PY_UNSUPPORTED", 16) in found  # the with, not run
+    assert not any("not defined" in d.message or "ClassDef" in d.message
+                   for d in model.diagnostics)
+    # a class is not interpreted: where it is used, that use is reported, by name
+    assert [d.location.line for d in model.diagnostics if "Pipeline" in d.message] == [19]
+
+
+def test_unset_environment_variable_is_an_unknown_value_not_an_unsupported_construct(
+        write_tree) -> None:
+    from conftest import package_xml
+
+    root = write_tree({
+        "src/p/package.xml": package_xml("p", "ament_python"),
+        "src/p/launch/bot.launch.py": """
+import os
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+MODEL = os.environ['ROBOT_MODEL']
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package='p', executable='e', name='driver',
+             parameters=[{'model': MODEL, 'home': os.getenv('FLEET_HOME', '/srv')}]),
+    ])
+"""})
+    workspace = scan([str(root / "src")], {})
+    model = load(str(root / "src/p/launch/bot.launch.py"), workspace, {}, {})
+    assert {p.key: p.value for p in model.params} == {"model": None, "home": "/srv"}
+    assert [(d.code, d.location.line) for d in model.diagnostics] == [
+        ("LAUNCH_UNKNOWN_VALUE", 5)]
+
+
+def test_rewritten_yaml_key_and_value_rewrites(write_tree) -> None:
+    from conftest import package_xml
+
+    root = write_tree({
+        "src/p/package.xml": package_xml("p", "ament_python"),
+        "src/p/config/nav.yaml": """costmap:
+  ros__parameters:
+    filters: [keepout, inflation]
+    keepout:
+      enabled: KEEPOUT_ZONE_ENABLED
+controller_old:
+  ros__parameters:
+    rate: 10
+""",
+        "src/p/launch/nav.launch.py": """
+import os
+from ament_index_python.packages import get_package_share_directory
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+from launch_ros.descriptions import ParameterFile
+from nav2_common.launch import RewrittenYaml
+
+def generate_launch_description():
+    params = ParameterFile(RewrittenYaml(
+        source_file=os.path.join(get_package_share_directory('p'), 'config', 'nav.yaml'),
+        root_key='', param_rewrites={},
+        key_rewrites={'controller_old': 'controller'},
+        value_rewrites={'KEEPOUT_ZONE_ENABLED': LaunchConfiguration('keepout')},
+        convert_types=True))
+    return LaunchDescription([
+        DeclareLaunchArgument('keepout', default_value='False'),
+        Node(package='p', executable='c', name='costmap', parameters=[params]),
+        Node(package='p', executable='c', name='controller', parameters=[params]),
+    ])
+"""})
+    workspace = scan([str(root / "src")], {})
+    model = load(str(root / "src/p/launch/nav.launch.py"), workspace, {}, {})
+    assert {p.name: p.value for p in model.params} == {
+        "/costmap/filters": ["keepout", "inflation"], "/costmap/keepout.enabled": False,
+        "/controller/rate": 10}
+    assert model.diagnostics == []
+
+
+RESET_XML = """<launch>
+  <arg name="robot" default="r1"/>
+  <arg name="rate" default="5"/>
+  <group>
+    <push_ros_namespace namespace="ns1"/>
+    <set_parameter name="level" value="2"/>
+    <set_remap from="a" to="b"/>
+    <reset><keep name="robot" value="$(var robot)_kept"/></reset>
+    <node pkg="p" exec="e" name="$(var robot)">
+      <param name="rate" value="$(var rate 9)"/>
+    </node>
+  </group>
+</launch>"""
+
+RESET_PY = """
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, GroupAction, ResetLaunchConfigurations
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node, PushROSNamespace, SetParameter, SetRemap
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('robot', default_value='r1'),
+        DeclareLaunchArgument('rate', default_value='5'),
+        GroupAction([
+            PushROSNamespace('ns1'), SetParameter(name='level', value=2),
+            SetRemap(src='a', dst='b'),
+            ResetLaunchConfigurations({'robot': [LaunchConfiguration('robot'), '_kept']}),
+            Node(package='p', executable='e', name=LaunchConfiguration('robot'),
+                 parameters=[{'rate': LaunchConfiguration('rate', default='9')}]),
+        ]),
+    ])
+"""
+
+
+@pytest.mark.parametrize(("name", "text"), [("r.launch.xml", RESET_XML),
+                                            ("r.launch.py", RESET_PY)])
+def test_reset_launch_configurations_clears_namespace_remaps_and_globals(
+        write_tree, name: str, text: str) -> None:
+    from conftest import package_xml
+
+    root = write_tree({"src/p/package.xml": package_xml("p", "ament_python"),
+                       f"src/p/launch/{name}": text})
+    workspace = scan([str(root / "src")], {})
+    model = load(str(root / "src/p/launch" / name), workspace, {}, {})
+    [node] = model.nodes
+    assert (node.name, node.remaps) == ("/r1_kept", [])
+    assert {p.key: p.value for p in model.params} == {"rate": 9}
+    assert model.diagnostics == []
