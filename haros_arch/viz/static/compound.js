@@ -11,13 +11,16 @@
 // in the gaps between columns. e.points: where the edge enters and leaves each column
 // (and box border) it crosses, from source to target.
 //
-// Boxes (open or collapsed) that would stretch over many layers (a fleet of robots that
-// call each other) are set out instead as rows in natural name order shaped for the
+// Boxes (open or collapsed) that would stretch over many layers, or make a strip several
+// times wider than the stage (a fleet of robots that call each other) are set out instead
+// as rows in natural name order shaped for the
 // stage (opts.aspect = width / height); their edges are free curves.
 
 const LAYER_GAP = 90;
 const PORT_GAP = 40;
 const WRAP_LAYERS = 6;
+const WRAP_MIN = 4;  // ... or this many, when laid out in layers they would be too wide
+const WIDE = 4;
 const SHELF_GAP_X = 60;
 const SHELF_GAP_Y = 44;
 const BLOCK_GAP = 50;
@@ -95,7 +98,8 @@ function arrange(lv, levels, boxItem, aspect, isRoot) {
   const inner = dag.filter(([a, b]) => !a.port && !b.port);
   let layer = layering(lv.items, inner.map(([a, b]) => [a, b]));
   lv.free = new Set();
-  if (boxy.length > 1 && new Set(boxy.map(v => layer.get(v))).size > WRAP_LAYERS) {
+  const spread = new Set(boxy.map(v => layer.get(v))).size;
+  if (boxy.length > 1 && (spread > WRAP_LAYERS || (spread >= WRAP_MIN && tooWide(lv.items, layer, aspect)))) {
     lv.free = new Set(boxy);
     const rest = lv.items.filter(v => !lv.free.has(v));
     layer = layering(rest, inner.filter(([a, b]) => !lv.free.has(a) && !lv.free.has(b)).map(([a, b]) => [a, b]));
@@ -158,6 +162,20 @@ function arrange(lv, levels, boxItem, aspect, isRoot) {
     v.w = child.w; v.h = child.h;
   }
   coordinates(lv, layers, layer, out, inc, aspect, isRoot);
+}
+
+// Would these items, in these layers, make a strip much wider than the stage? Boxes
+// count as one size whether open or not, so opening one never flips the decision.
+function tooWide(items, layer, aspect) {
+  const width = new Map(), height = new Map();
+  for (const v of items) {
+    const boxy = v.kind === 'box' || v.kind === 'namespace';
+    const l = layer.get(v), w = boxy ? 300 : v.w, h = boxy ? 120 : v.h;
+    width.set(l, Math.max(width.get(l) || 0, w));
+    height.set(l, (height.get(l) || 0) + h + ROW_GAP);
+  }
+  const wide = [...width.values()].reduce((sum, w) => sum + w + LAYER_GAP, 0);
+  return wide / Math.max(...height.values()) > WIDE * aspect;
 }
 
 function innerItem(v, name, boxItem) {
