@@ -128,6 +128,7 @@ function setConfig(i) {
   const size = buildView(app.index, app.options).vertices.length;
   app.big = size > BIG ? size : 0;
   if (app.big) openLevels();
+  for (const [name, box] of app.index.tree.boxes) if (box.params) app.options.collapsed.add(name);
   foldLegend(!!app.big);
   renderLists();
   renderGraph();
@@ -170,7 +171,7 @@ function namespaceNames() {
 function openLevels() {
   const boxes = app.index.tree.boxes, set = app.options.collapsed;
   const deepest = Math.max(0, ...[...boxes.values()].map(b => b.depth));
-  const shut = d => { set.clear(); for (const [name, b] of boxes) if (b.depth > d) set.add(name); };
+  const shut = d => { set.clear(); for (const [name, b] of boxes) if (b.depth > d || b.params) set.add(name); };
   let d = 0;
   while (d < deepest) {
     shut(d + 1);

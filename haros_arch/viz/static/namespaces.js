@@ -19,6 +19,7 @@
 
 const PREFIX_AT = 40;
 const PREFIX_MIN = 3;
+const PARAM_BOX = 8;
 
 function namespaceTree(entities) {
   const spaces = new Set();
@@ -26,6 +27,14 @@ function namespaceTree(entities) {
     if (e.kind !== 'node') continue;
     for (const ns of ancestors(e.item.namespace || '/')) spaces.add(ns);
   }
+  // A namespace holding PARAM_BOX parameters or more (a node's private ones, a rosparam
+  // file's sections) is a box of its own, collapsed at first.
+  const params = new Map();
+  for (const e of entities) {
+    if (e.kind === 'parameter') for (const ns of ancestors(parentOf(e.name))) params.set(ns, (params.get(ns) || 0) + 1);
+  }
+  const paramSpaces = new Set([...params].filter(([ns, n]) => n >= PARAM_BOX && !spaces.has(ns)).map(([ns]) => ns));
+  for (const ns of paramSpaces) for (const up of ancestors(ns)) spaces.add(up);
   const home = new Map();  // namespace -> direct entities
   const deepest = e => {
     const parts = e.kind === 'node' ? ancestors(e.item.namespace || '/') : ancestors(parentOf(e.name));
@@ -51,7 +60,7 @@ function namespaceTree(entities) {
     const elements = inner.length + direct.length;
     if (ns !== '/' && elements === 1) return inner[0] || {entity: direct[0]};
     if (ns !== '/' && elements === 0) return null;
-    const box = {name: ns, base: ns, members: [], children: [], parent: null};
+    const box = {name: ns, base: ns, members: [], children: [], parent: null, params: paramSpaces.has(ns)};
     for (const piece of inner) {
       if (piece.entity) box.members.push(piece.entity);
       else { box.children.push(piece); piece.parent = box; }
