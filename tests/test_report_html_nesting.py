@@ -193,3 +193,38 @@ def test_a_flat_big_namespace_is_grouped_by_first_word(browser: Any,  # noqa: F8
     assert "node:/camera_0_0" in shown and "topic:/camera/topic0" in shown
     assert watched.page.text_content('#graph .group[data-group="/camera*"]').startswith("/camera*")
     assert watched.problems == []
+
+
+def test_many_private_parameters_are_one_box_collapsed_at_first(browser: Any,  # noqa: F811
+                                                                 tmp_path: Path) -> None:
+    where = {"package": "p", "file": "p/src/talker.cpp", "line": 3, "column": 1}
+    names = [f"/talker/param{i}" for i in range(10)]
+
+    def link(kind: str, node: str, name: str) -> dict[str, Any]:
+        return {"kind": kind, "node": node, "name": name, "given": name, "type": "int",
+                "queue_size": None, "qos": None, "conditions": [], "location": where}
+
+    config = {
+        "name": "c", "launch": [], "args": {}, "diagnostics": [], "services": [], "actions": [],
+        "nodes": [{"name": n, "id": f"node:{n}", "node": "p/talker", "namespace": "/",
+                   "remaps": [], "args": "", "conditions": [], "location": where}
+                  for n in ("/talker", "/listener")],
+        "topics": [{"name": "/chatter", "id": "topic:/chatter", "types": ["std_msgs/String"],
+                    "publishers": ["/talker"], "subscribers": ["/listener"], "conditions": []}],
+        "parameters": [{"name": n, "id": f"parameter:{n}", "type": "int", "value": 1,
+                        "readers": ["/talker"], "writers": [], "conditions": []} for n in names],
+        "links": [link("publish", "/talker", "/chatter"),
+                  link("subscribe", "/listener", "/chatter"),
+                  *(link("read", "/talker", n) for n in names)]}
+    model = {"schema": "haros-arch/1", "project": "p", "packages": [], "diagnostics": [],
+             "configurations": [config]}
+    path = tmp_path / "params.html"
+    write_report(model, [], str(tmp_path), str(path))
+    watched = Watched(browser, path)
+    assert watched.ids("#graph .vertex") == {"node:/talker", "node:/listener", "topic:/chatter",
+                                             "namespace:/talker/"}
+    assert "10 parameters" in watched.page.text_content(watched.vertex("namespace:/talker/"))
+    watched.page.click(watched.vertex("namespace:/talker/"))
+    assert {f"parameter:{n}" for n in names} <= watched.ids("#graph .vertex")
+    assert watched.page.is_visible('#graph .group[data-group="/talker/"]')
+    assert watched.problems == []
