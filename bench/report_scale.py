@@ -7,7 +7,10 @@ opens), and how long it takes to open a namespace, click a node in it and a find
 search + Enter a name in a collapsed namespace, and open every namespace (the whole
 graph laid out with its dummy points).
 
-    .venv/bin/python bench/report_scale.py [--nodes 300] [--topics 1000]
+    PYTHONPATH=. .venv/bin/python bench/report_scale.py [--nodes 300] [--topics 1000]
+        [--shape robots|nested|flat]
+
+(PYTHONPATH=. so that this checkout's haros_arch is measured, not an installed one.)
 """
 
 from __future__ import annotations
@@ -23,23 +26,40 @@ from typing import Any
 from haros_arch.viz import write_report
 from haros_arch.viz.browser import CHROMIUM_ARGS, chromium_path, why_no_browser
 
+# Subsystems of a robot (shape "nested") and first words of names (shape "flat").
+PARTS = ("sensors", "sensors", "sensors", "base", "base", "base", "arm", "arm", "arm", "arm")
+WORDS = ("camera", "lidar", "imu", "gps", "odom", "planner", "controller", "arm", "gripper",
+         "battery", "map", "localization", "perception", "safety", "teleop")
 
-def scale_model(nodes: int, topics: int, seed: int = 7) -> dict[str, Any]:
+
+def scale_model(nodes: int, topics: int, seed: int = 7, shape: str = "robots") -> dict[str, Any]:
     # A fleet: robots of ten nodes each, data flowing down a pipeline inside a robot
     # (each topic read by one to three later nodes), some topics read by fleet nodes.
+    # shape "robots": /robot3/node4; "nested": /robot3/base/node4, a topic in the
+    # namespace of its publisher; "flat": everything in /, as /camera_3_4 and /camera/topic7.
     rng = random.Random(seed)
     per = 10
     robots = max(1, nodes // per)
     where = {"package": "fleet", "file": "fleet/src/node.cpp", "line": 12, "column": 3}
     node_names = [f"/robot{i // per}/node{i % per}" for i in range(nodes)]
     topic_names = [f"/robot{t % robots}/topic{t // robots}" for t in range(topics)]
+    if shape == "nested":
+        node_names = [f"/robot{i // per}/{PARTS[i % per]}/node{i % per}" for i in range(nodes)]
+    if shape == "flat":
+        node_names = [f"/{WORDS[i // per % len(WORDS)]}_{i // per}_{i % per}" for i in range(nodes)]
     links: list[dict[str, Any]] = []
-    pubs: dict[str, list[str]] = {t: [] for t in topic_names}
-    subs: dict[str, list[str]] = {t: [] for t in topic_names}
-    for t, topic in enumerate(topic_names):
+    pubs: dict[str, list[str]] = {}
+    subs: dict[str, list[str]] = {}
+    for t in range(topics):
         robot = t % robots
         stage = rng.randrange(per - 1)
-        pubs[topic].append(node_names[robot * per + stage])
+        publisher = node_names[robot * per + stage]
+        if shape != "robots":  # the topic is named where its publisher is
+            base = (publisher.rsplit("/", 1)[0] if shape == "nested"
+                    else "/" + publisher[1:].split("_")[0])
+            topic_names[t] = f"{base}/topic{t}"
+        topic = topic_names[t]
+        pubs[topic], subs[topic] = [publisher], []
         for later in rng.sample(range(stage + 1, per), min(per - stage - 1, rng.randint(1, 3))):
             subs[topic].append(node_names[robot * per + later])
         if rng.random() < 0.05:
@@ -84,6 +104,9 @@ def main() -> int:
     parser = argparse.ArgumentParser()
     parser.add_argument("--nodes", type=int, default=300)
     parser.add_argument("--topics", type=int, default=1000)
+    parser.add_argument("--shape", choices=("robots", "nested", "flat"), default="robots",
+                        help="robots: /robot3/node4; nested: /robot3/base/node4; "
+                             "flat: all in /, as /camera_3_4")
     args = parser.parse_args()
     reason = why_no_browser()
     if reason:
@@ -91,7 +114,7 @@ def main() -> int:
         return 2
     from playwright.sync_api import sync_playwright
 
-    model = scale_model(args.nodes, args.topics)
+    model = scale_model(args.nodes, args.topics, shape=args.shape)
     config = model["configurations"][0]
     findings = [{"rule": "bench", "severity": "warning", "title": "sample", "message": "m",
                  "configuration": "fleet", "entities": [config["topics"][0]["id"]],
@@ -112,7 +135,14 @@ def main() -> int:
             script = page.evaluate("window.harosReport.scriptMs")
             drawn = page.eval_on_selector_all("#graph .vertex", "els => els.length")
             target = config["nodes"][150]
-            space = target["namespace"]
+
+            def box_of_target() -> str | None:
+                """The drawn namespace box that holds the target node, if any."""
+                boxes = page.eval_on_selector_all(
+                    "#graph .vertex.k-namespace",
+                    "els => els.map(e => e.getAttribute('data-id').slice('namespace:'.length))")
+                inside = [b for b in boxes if target["name"].startswith(b.rstrip("*"))]
+                return max(inside, key=len) if inside else None
 
             def timed(act: Any) -> float:
                 page.evaluate("window.__t = performance.now()")
@@ -122,13 +152,16 @@ def main() -> int:
                 page.wait_for_timeout(400)  # let the zoom transition end
                 return float(took)
 
-            times = {
-                "open a namespace": timed(lambda: page.click(
-                    f'#graph .vertex[data-id="namespace:{space}"]')),
-                "click a node": timed(lambda: page.click(
-                    f'#graph .vertex[data-id="{target["id"]}"]')),
-                "click a finding": timed(lambda: page.click("#findings .item")),
-            }
+            times: dict[str, float] = {}
+            space = box_of_target()
+            while space:  # open the boxes around the target, outermost first
+                what = "open a namespace" if not times else f"open {space} inside it"
+                box = f'#graph .vertex[data-id="namespace:{space}"]'
+                times[what] = timed(lambda box=box: page.click(box))
+                space = box_of_target()
+            times["click a node"] = timed(lambda: page.click(
+                f'#graph .vertex[data-id="{target["id"]}"]', force=True))
+            times["click a finding"] = timed(lambda: page.click("#findings .item"))
             other = config["nodes"][40]["name"]
             page.fill("#search", other)
             times["search + Enter (opens its namespace)"] = timed(

@@ -1,8 +1,9 @@
 """Take the README's screenshots of the example workspace's report (headless Chromium).
 
-    .venv/bin/python scripts/screenshots.py   # writes docs/report-*.png
+    PYTHONPATH=. .venv/bin/python scripts/screenshots.py   # writes docs/report-*.png
 
-The last one is the first view of bench/report_scale.py's 300-node fleet.
+The last two are from bench/report_scale.py's fleets: the first view of 300 nodes, and
+six robots of the nested shape (/robot1/sensors/, base/, arm/) with /robot1/base/ opened.
 
 Needs what `scripts/setup` installs (D3 from npm, playwright) and Debian's chromium.
 """
@@ -31,12 +32,12 @@ SHOTS = [
 ]
 
 
-def scale_model() -> dict:
+def scale_model(shape: str = "robots", nodes: int = 300, topics: int = 1000) -> dict:
     spec = importlib.util.spec_from_file_location("report_scale", ROOT / "bench/report_scale.py")
     assert spec and spec.loader
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
-    return module.scale_model(300, 1000)  # type: ignore[no-any-return]
+    return module.scale_model(nodes, topics, shape=shape)  # type: ignore[no-any-return]
 
 
 def main() -> int:
@@ -68,6 +69,16 @@ def main() -> int:
             page.wait_for_timeout(400)
             page.locator("#stage").screenshot(path=str(DOCS / "report-scale.png"))
             print("wrote docs/report-scale.png")
+            nested = Path(tmp) / "nested.html"
+            write_report(scale_model("nested", 60, 150), [], tmp, str(nested))
+            page = browser.new_page(viewport={"width": 1500, "height": 760})
+            page.goto(nested.as_uri())
+            page.wait_for_function("window.harosReport && window.harosReport.ready")
+            page.click('#graph .vertex[data-id="namespace:/robot1/base/"]')
+            page.click("#fit")
+            page.wait_for_timeout(400)
+            page.locator("#stage").screenshot(path=str(DOCS / "report-nested.png"))
+            print("wrote docs/report-nested.png")
             browser.close()
     return 0
 

@@ -122,10 +122,13 @@ function setConfig(i) {
   app.options.collapsed.clear();
   app.selected = null;
   app.focus = null;
-  // A big configuration opens with every namespace collapsed into a box.
+  app.touched = false;
+  // A big configuration opens with its namespaces collapsed into boxes, as many levels
+  // open as keep it readable.
   const size = buildView(app.index, app.options).vertices.length;
   app.big = size > BIG ? size : 0;
-  if (app.big) for (const name of namespaceNames()) app.options.collapsed.add(name);
+  if (app.big) openLevels();
+  for (const [name, box] of app.index.tree.boxes) if (box.params) app.options.collapsed.add(name);
   foldLegend(!!app.big);
   renderLists();
   renderGraph();
@@ -154,16 +157,33 @@ function renderLists() {
     const box = el('input', {type: 'checkbox', 'data-namespace': name});
     box.checked = app.options.collapsed.has(name);
     box.addEventListener('change', () => toggleCollapse(name));
-    return el('label', {class: 'check'}, box, ' collapse ', el('code', {}, name));
+    const depth = app.index.tree.boxes.get(name).depth;
+    return el('label', {class: 'check', style: `padding-left: ${(depth - 1) * 14}px`}, box, ' collapse ', el('code', {}, name));
   }) : [el('p', {class: 'muted'}, 'everything is in /')]));
 }
 
+// Every namespace box, parents before their children.
 function namespaceNames() {
-  return [...new Set([...app.index.entities.values()].map(e => e.group).filter(Boolean))].sort(compareText);
+  return [...app.index.tree.boxes.keys()].sort(compareText);
+}
+
+// Boxes deeper than d collapsed, for the largest d that draws at most BIG elements.
+function openLevels() {
+  const boxes = app.index.tree.boxes, set = app.options.collapsed;
+  const deepest = Math.max(0, ...[...boxes.values()].map(b => b.depth));
+  const shut = d => { set.clear(); for (const [name, b] of boxes) if (b.depth > d || b.params) set.add(name); };
+  let d = 0;
+  while (d < deepest) {
+    shut(d + 1);
+    if (buildView(app.index, app.options).vertices.length > BIG) break;
+    d++;
+  }
+  shut(d);
 }
 
 // Opening a namespace lays out its content and zooms to it; the others stay as they are.
 function toggleCollapse(name) {
+  app.touched = true;
   const set = app.options.collapsed;
   const opening = set.has(name);
   if (opening) set.delete(name); else set.add(name);
@@ -172,6 +192,7 @@ function toggleCollapse(name) {
 }
 
 function setCollapsed(names) {
+  app.touched = true;
   app.options.collapsed.clear();
   for (const name of names) app.options.collapsed.add(name);
   syncCollapsed();
@@ -184,16 +205,17 @@ function syncCollapsed() {
 }
 
 function showHint() {
-  const shut = app.options.collapsed.size;
+  const shut = app.view ? app.view.vertices.filter(v => v.kind === 'namespace').length : 0;
   ui.hint.hidden = !shut || !ui.packages.hidden;
   if (!shut) return;
-  const total = namespaceNames().length;
+  const prefixed = [...app.index.tree.boxes.values()].some(b => b.prefix);
   ui.hint.replaceChildren(
     el('strong', {}, 'Click a namespace to open it.'), ' ',
-    app.big && shut === total ? `This configuration has ${app.big.toLocaleString('en')} elements, so its ${total} namespaces start collapsed; ` +
+    app.big && !app.touched ? `This configuration has ${app.big.toLocaleString('en')} elements, so ${shut} namespaces start collapsed; ` +
       'each box counts what it holds, and a thick arrow stands for every link between two boxes (hover for the count). ' +
+      (prefixed ? 'Names that share their first word (camera_driver, /camera/image) are boxed together as /camera*. ' : '') +
       'Search + Enter opens the namespace of a name. '
-      : `${shut} of ${total} namespaces collapsed. `,
+      : `${shut} namespace${shut === 1 ? '' : 's'} collapsed. `,
     el('a', {href: '#', id: 'open-all', onclick: event => { event.preventDefault(); setCollapsed([]); }}, 'open all'));
 }
 
@@ -205,29 +227,37 @@ function renderGraph(opened) {
     collapse: toggleCollapse,
   };
   const stage = ui.svg.node().getBoundingClientRect();
-  layeredLayout(app.view.vertices, app.view.edges, {aspect: stage.width && stage.height ? stage.width / stage.height : 1.6});
+  const opts = {aspect: stage.width && stage.height ? stage.width / stage.height : 1.6, tree: app.view.tree};
+  app.view.rects = layeredLayout(app.view.vertices, app.view.edges, opts);
+  if (app.layout === 'force') app.view.rects = new Map();
   app.drawn = drawGraph(ui.viewport, app.view, handlers);
-  if (app.layout === 'force') app.sim = forceLayout(app.view.vertices, app.view.edges, () => app.drawn.update());
-  const inside = opened && app.layout !== 'force' ? app.view.vertices.filter(v => v.group === opened) : [];
+  if (app.layout === 'force') app.sim = forceLayout(app.view.vertices, app.view.edges, () => app.drawn.update(), opts);
+  const inside = opened && app.layout !== 'force' ? app.view.vertices.filter(v => v.path.includes(opened)) : [];
   showHint();
   if (inside.length) fit(inside, READABLE); else fit();
   reapplyFocus();
 }
 
-// Fit these vertices (or all) to the stage; never below scale `least`, then showing the
-// start (left, top) of what is fitted: data flows from there.
+// Fit these vertices (or all, with the namespace boxes) to the stage, never below scale
+// `least`: centred across, from the top down (data flows from the top left), and when
+// too big for the stage showing its start.
 function fit(only, least = 0) {
   const vs = only || (app.view ? app.view.vertices : []);
   const box = ui.svg.node().getBoundingClientRect();
   if (!vs.length || !box.width) return;
-  const x0 = Math.min(...vs.map(v => v.x - v.w / 2)) - 40, x1 = Math.max(...vs.map(v => v.x + v.w / 2)) + 40;
-  const y0 = Math.min(...vs.map(v => v.y - v.h / 2)) - 50, y1 = Math.max(...vs.map(v => v.y + v.h / 2)) + 40;
+  let x0 = Math.min(...vs.map(v => v.x - v.w / 2)), x1 = Math.max(...vs.map(v => v.x + v.w / 2));
+  let y0 = Math.min(...vs.map(v => v.y - v.h / 2)), y1 = Math.max(...vs.map(v => v.y + v.h / 2));
+  const names = only ? new Set(vs.flatMap(v => v.path)) : null;
+  for (const [name, r] of groupRects(app.view)) {
+    if (names && !names.has(name)) continue;
+    x0 = Math.min(x0, r.x0); x1 = Math.max(x1, r.x1); y0 = Math.min(y0, r.y0); y1 = Math.max(y1, r.y1);
+  }
+  x0 -= 30; x1 += 30; y0 -= 20; y1 += 30;
   const top = ui.hint.hidden ? 0 : ui.hint.offsetHeight + 8;  // keep clear of the hint
   const k = Math.max(least, Math.min(1.4, box.width / (x1 - x0), (box.height - top) / (y1 - y0)));
   const tx = k * (x1 - x0) > box.width ? -k * x0 : box.width / 2 - k * (x0 + x1) / 2;
-  const ty = k * (y1 - y0) > box.height - top ? top - k * y0 : top + (box.height - top) / 2 - k * (y0 + y1) / 2;
-  const t = d3.zoomIdentity.translate(tx, ty).scale(k);
-  ui.svg.call(ui.zoom.transform, t);
+  const ty = top - k * y0;
+  ui.svg.call(ui.zoom.transform, d3.zoomIdentity.translate(tx, ty).scale(k));
 }
 
 function centreOn(id) {
@@ -260,8 +290,8 @@ function reapplyFocus() {
 app.select = (id, centre) => {
   const entity = app.index.entities.get(id);
   if (!entity) return;
-  if (centre && app.options.collapsed.has(entity.group)) {
-    app.options.collapsed.delete(entity.group);
+  if (centre && entity.path.some(name => app.options.collapsed.has(name))) {
+    for (const name of entity.path) app.options.collapsed.delete(name);
     syncCollapsed();
     renderGraph();
   }

@@ -21,14 +21,6 @@ function entityId(kind, item) {
   return item.id || (kind + ':' + item.name);
 }
 
-function groupOf(kind, item) {
-  const name = kind === 'node' ? (item.namespace || '/') : String(item.name || '');
-  const parts = name.split('/').filter(Boolean);
-  const needed = kind === 'node' ? 1 : 2;
-  if (parts.length < needed || parts[0].includes('?')) return '';
-  return '/' + parts[0] + '/';
-}
-
 // Everything about one configuration that does not depend on filters.
 function indexConfiguration(config) {
   const entities = new Map();
@@ -36,18 +28,16 @@ function indexConfiguration(config) {
     for (const item of config[COLLECTIONS[kind]] || []) {
       const id = entityId(kind, item);
       entities.set(id, {
-        id, kind, item, name: String(item.name || ''), group: groupOf(kind, item),
+        id, kind, item, name: String(item.name || ''), group: '', path: [],
         unresolved: String(item.name || '').includes('?'),
         conditional: (item.conditions || []).length > 0,
         links: [],
       });
     }
   }
-  // Namespaces are those of node instances; a resource joins one when its name is in it.
-  const spaces = new Set([...entities.values()].filter(e => e.kind === 'node').map(e => e.group));
-  for (const e of entities.values()) {
-    if (e.kind !== 'node' && !spaces.has(e.group)) e.group = '';
-  }
+  // Namespace boxes, nested; every entity gets the path of boxes around it.
+  const tree = namespaceTree([...entities.values()]);
+  for (const e of entities.values()) e.group = e.path.length ? e.path[e.path.length - 1] : '';
   const byName = new Map();
   for (const e of entities.values()) {
     const key = e.kind + ':' + e.name;
@@ -66,7 +56,7 @@ function indexConfiguration(config) {
     node.links.push(entry);
     resource.links.push(entry);
   }
-  return {config, entities, links};
+  return {config, entities, links, tree};
 }
 
 function findResource(link, kind, entities, byName) {
@@ -88,13 +78,25 @@ function buildView(index, options) {
     (options.hideSingleEnded && e.kind === 'topic' &&
       (!(e.item.publishers || []).length || !(e.item.subscribers || []).length)));
   const vertices = new Map(), edges = new Map();
+  const boxes = index.tree.boxes;
   const vertexFor = e => {
-    if (e.group && options.collapsed.has(e.group)) {
-      const id = 'namespace:' + e.group;
-      if (!vertices.has(id)) vertices.set(id, makeVertex({id, kind: 'namespace', name: e.group, group: '', members: []}));
+    const shut = e.path.findIndex(name => options.collapsed.has(name));
+    if (shut >= 0) {
+      const name = e.path[shut], id = 'namespace:' + name;
+      if (!vertices.has(id)) {
+        const path = e.path.slice(0, shut);
+        const v = makeVertex({id, kind: 'namespace', name, group: path.length ? path[path.length - 1] : '', path, members: [], box: boxes.get(name)});
+        v.label = boxes.get(name).label;
+        vertices.set(id, v);
+      }
       return vertices.get(id);
     }
-    if (!vertices.has(e.id)) vertices.set(e.id, makeVertex(e));
+    if (!vertices.has(e.id)) {
+      const v = makeVertex(e);
+      const base = e.group ? boxes.get(e.group).base : '/';
+      if (base !== '/' && v.name.startsWith(base)) v.label = v.name.slice(base.length);
+      vertices.set(e.id, v);
+    }
     return vertices.get(e.id);
   };
   for (const e of index.entities.values()) {
@@ -123,18 +125,17 @@ function buildView(index, options) {
   }
   for (const v of list) {
     if (v.kind === 'namespace') v.counts = memberCounts(v.entity.members);
-    else if (v.group && v.name.startsWith(v.group)) v.label = v.name.slice(v.group.length);
   }
   for (const v of list) {
     v.w = Math.max(v.kind === 'parameter' ? 50 : 70, v.label.length * CHAR_W + 28,
       ...(v.counts || []).map(line => line.length * SMALL_W + 28));
   }
-  return {vertices: list, edges: [...edges.values()]};
+  return {vertices: list, edges: [...edges.values()], tree: index.tree, rects: new Map()};
 }
 
 function makeVertex(e) {
   return {
-    id: e.id, kind: e.kind, name: e.name, group: e.group, entity: e, label: e.name,
+    id: e.id, kind: e.kind, name: e.name, group: e.group, path: e.path, entity: e, label: e.name,
     w: 0, h: e.kind === 'parameter' ? 22 : e.kind === 'namespace' ? 56 : 28, x: 0, y: 0,
   };
 }
@@ -217,7 +218,7 @@ function conditionText(conditions) {
 }
 
 function vertexTitle(v) {
-  if (v.kind === 'namespace') return `namespace ${v.name}: ${v.counts.join(', ')} (click to open)`;
+  if (v.kind === 'namespace') return `${boxTitle(v.entity.box)}: ${v.counts.join(', ')} (click to open)`;
   const item = v.entity.item;
   const lines = [`${v.kind} ${v.name}`];
   if (item.node) lines.push(`runs ${item.node}`);
@@ -305,27 +306,54 @@ function drawGraph(root, view, handlers) {
   };
 }
 
-// A light box behind each namespace's members, labelled; clicking the label collapses it.
-function drawGroups(layer, view, handlers) {
-  const boxes = new Map();
+// A light box behind each open namespace, around its members and the boxes inside it,
+// labelled; clicking the label collapses it. The layered layout leaves room for the boxes
+// (view.rects); after a drag, or in the force layout, they grow to hold what they hold.
+const BOX_PAD = 14;
+const BOX_TOP = 26;
+
+function groupRects(view) {
+  const rects = new Map();
+  const grow = (name, x0, y0, x1, y1) => {
+    const r = rects.get(name);
+    if (!r) rects.set(name, {x0, y0, x1, y1});
+    else { r.x0 = Math.min(r.x0, x0); r.y0 = Math.min(r.y0, y0); r.x1 = Math.max(r.x1, x1); r.y1 = Math.max(r.y1, y1); }
+  };
+  for (const [name, r] of view.rects || []) grow(name, r.x0, r.y0, r.x1, r.y1);
   for (const v of view.vertices) {
-    if (!v.group) continue;
-    const b = boxes.get(v.group) || {name: v.group, x0: Infinity, y0: Infinity, x1: -Infinity, y1: -Infinity, n: 0};
-    b.x0 = Math.min(b.x0, v.x - v.w / 2); b.x1 = Math.max(b.x1, v.x + v.w / 2);
-    b.y0 = Math.min(b.y0, v.y - v.h / 2); b.y1 = Math.max(b.y1, v.y + v.h / 2); b.n++;
-    boxes.set(v.group, b);
+    if (v.group) grow(v.group, v.x - v.w / 2 - BOX_PAD, v.y - v.h / 2 - BOX_TOP, v.x + v.w / 2 + BOX_PAD, v.y + v.h / 2 + BOX_PAD);
   }
-  const data = [...boxes.values()].filter(b => b.n > 1);
+  const names = [...rects.keys()].sort((a, b) => view.tree.boxes.get(b).depth - view.tree.boxes.get(a).depth);
+  for (const name of names) {
+    const up = view.tree.boxes.get(name).path;
+    const r = rects.get(name);
+    if (up.length) grow(up[up.length - 1], r.x0 - BOX_PAD, r.y0 - BOX_TOP, r.x1 + BOX_PAD, r.y1 + BOX_PAD);
+  }
+  return rects;
+}
+
+function drawGroups(layer, view, handlers) {
+  const rects = groupRects(view);
+  const data = [...rects].map(([name, r]) => ({name, box: view.tree.boxes.get(name), ...r}))
+    .sort((a, b) => a.box.depth - b.box.depth);
   const sel = layer.selectAll('g.group').data(data, b => b.name).join(enter => {
     const g = enter.append('g').attr('class', 'group');
     g.append('rect').attr('rx', 10);
-    g.append('text').attr('class', 'group-label');
+    const label = g.append('text').attr('class', 'group-label');
+    label.append('tspan');
+    label.append('title');
     return g;
   });
-  sel.attr('data-group', b => b.name);
-  sel.select('rect').attr('x', b => b.x0 - 14).attr('y', b => b.y0 - 26)
-    .attr('width', b => b.x1 - b.x0 + 28).attr('height', b => b.y1 - b.y0 + 40);
-  sel.select('text').attr('x', b => b.x0 - 6).attr('y', b => b.y0 - 10)
-    .text(b => `${b.name}  \u2212 collapse`)
+  sel.order();
+  sel.attr('data-group', b => b.name).attr('class', b => 'group depth-' + Math.min(b.box.depth, 4));
+  sel.select('rect').attr('x', b => b.x0).attr('y', b => b.y0)
+    .attr('width', b => b.x1 - b.x0).attr('height', b => b.y1 - b.y0);
+  sel.select('text').attr('x', b => b.x0 + 8).attr('y', b => b.y0 + 16)
     .on('click', (event, b) => { event.stopPropagation(); handlers.collapse(b.name); });
+  sel.select('text tspan').text(b => `${b.box.label}  \u2212 collapse`);
+  sel.select('text title').text(b => boxTitle(b.box) + ' (click to collapse)');
+}
+
+function boxTitle(box) {
+  return box.prefix ? `names starting with ${box.name.slice(0, -1)}` : `namespace ${box.name}`;
 }
