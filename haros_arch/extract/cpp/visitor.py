@@ -452,8 +452,9 @@ class CallFinder:
                 spec.type_arg < len(args)
             ):
                 ctype = strip(args[spec.type_arg]).type
-                found = (msg_types.message_type(ctype) if source == "arg"
-                         else msg_types.param_type(ctype))
+                # ros::service::call(name, request, response): the request names its service
+                found = (msg_types.message_type(ctype, spec.kind in ("client", "server"))
+                         if source == "arg" else msg_types.param_type(ctype))
             if found is not None:
                 return found
         return None

@@ -1,0 +1,55 @@
+"""ROS calls anywhere in an expression: loop and branch conditions, ternaries, ``&&``,
+returns and other calls' arguments, each with the conditions under which it runs; and
+all of them still found after more clang errors than clang reports by default (a
+generated dynamic_reconfigure config known only by name, as in navigation's amcl)."""
+
+from __future__ import annotations
+
+import os
+
+import pytest
+
+from haros_arch.extract.cpp import CppResult, extract_cpp
+from haros_arch.workspace import scan
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.join(os.path.dirname(HERE), "fixtures", "cpp", "expressions")
+LOCALISER = os.path.join(ROOT, "src", "localiser", "src", "localiser.cpp")
+
+
+@pytest.fixture(scope="module")
+def localiser() -> CppResult:
+    return extract_cpp([LOCALISER], scan([ROOT]), cache_dir=None)
+
+
+def test_more_errors_than_clang_reports_by_default(localiser: CppResult) -> None:
+    fields = [d for d in localiser.diagnostics if d.code == "CPP_MESSAGE_FIELD"]
+    assert len(fields) == 24  # every one reported, none lost to an error limit
+    assert [d for d in localiser.diagnostics if d.code == "CPP_PARSE_ERROR"] == []
+
+
+@pytest.mark.parametrize(("kind", "name", "ctype", "line", "conditions"), [
+    ("publish", "status", "std_msgs/String", 48, ()),                 # return
+    ("client", "static_map", "nav_msgs/GetMap", 59, ()),              # while condition
+    ("read", "~use_map_topic", None, 74, ()),                         # if condition
+    ("subscribe", "map", "nav_msgs/OccupancyGrid", 76, (("if", 'pnh.hasParam("use_map_topic")'),)),
+    ("read", "~retries", "int", 78, ()),                              # for condition
+    ("read", "~ready", "bool", 83, ()),                               # do-while condition
+    ("read", "~mode", "int", 84, ()),                                 # switch condition
+    ("publish", "pose_fast", "std_msgs/String", 89, (("if", "fast"),)),
+    ("publish", "pose_slow", "std_msgs/String", 90, (("else", "fast"),)),
+    ("read", "~rate", "double", 91, (("if", "fast"),)),               # fast && ...
+    ("publish", "particles", "std_msgs/String", 95, ()),              # argument of a call
+    ("read", "~fallback_rate", "double", 97, (("else", "ready"),)),   # ready || ...
+])
+def test_call_in_expression(localiser: CppResult, kind: str, name: str, ctype: str | None,
+                            line: int, conditions: tuple[tuple[str, str], ...]) -> None:
+    found = [c for c in localiser.calls if (c.kind, c.name) == (kind, name)]
+    assert len(found) == 1
+    call = found[0]
+    assert (call.type, call.location.line) == (ctype, line)
+    assert tuple((c.statement, c.text) for c in call.conditions) == conditions
+
+
+def test_no_other_calls(localiser: CppResult) -> None:
+    assert len(localiser.calls) == 12
