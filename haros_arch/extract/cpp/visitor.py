@@ -19,6 +19,7 @@ from ...model.conditions import Condition
 from ...model.location import Location
 from ...model.source import PrimitiveCall
 from . import api, msg_types
+from .call_sites import CallSites
 from .conditions import ConditionReader
 from .handles import (
     Namespaces,
@@ -32,7 +33,7 @@ from .handles import (
 )
 from .links import Fact, argument_facts
 from .qos import qos as qos_of
-from .values import PLACEHOLDER, CallSites, Scope, render, strip, written_arguments
+from .values import PLACEHOLDER, Scope, render, strip, written_arguments
 
 _CONTAINERS = frozenset({
     CursorKind.NAMESPACE, CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL,
@@ -78,11 +79,10 @@ class CallFinder:
     def run(self) -> None:
         self.functions = list(self._definitions(self.tu.cursor, top=True))
         self.sites = self.namespaces.sites = CallSites(self.functions, self.macros, self.source,
-                                                       external=not self.ros2)
+                                                       external=True)
         for function in self.functions:
             self._function(function)
-        if not self.ros2:
-            self.facts = argument_facts(self.sites, self.namespaces, self.owned)
+        self.facts = argument_facts(self.sites, self.namespaces, self.owned)
         for call in self.calls:  # get_parameter("p") of a declare_parameter("p", default)
             if call.name_param is not None and call.name_default is None:
                 call.name_default = self._declared.get(call.name_param)
@@ -375,7 +375,7 @@ class CallFinder:
             index = spec.out_arg  # nh.param<T>(name, default) returns the value
         if index is not None and index < len(args):
             parts = scope.string(args[index])
-            if None not in parts:
+            if _known(parts):
                 default = render(parts)
         return (name, default)
 
@@ -396,7 +396,7 @@ class CallFinder:
             if value is not None:
                 return True, value
         parts = scope.string(expr)
-        return True, (render(parts) if parts and None not in parts else None)
+        return True, (render(parts) if parts and _known(parts) else None)
 
     def _field(self, field: Cursor) -> None:
         """A member whose mere construction is a primitive (a tf broadcaster)."""
@@ -483,6 +483,11 @@ def _creator(expr: Cursor, depth: int = 0) -> tuple[api.RosFunction, Cursor] | N
         return (row, expr) if row is not None else None
     inner = [c for c in expr.get_children() if c.kind.is_expression()]
     return _creator(inner[-1], depth + 1) if len(inner) == 1 else None
+
+
+def _known(parts: tuple[str | None, ...]) -> bool:
+    """A value with no unknown part and no placeholder for what other calls pass."""
+    return all(part is not None and PLACEHOLDER not in part for part in parts)
 
 
 def _private(name: str) -> str:
