@@ -56,6 +56,8 @@ def test_node_name_from_several_constructions_is_unknown(relays: CppResult) -> N
 
 
 def test_defaults_of_the_constructor(camera: CppResult) -> None:
+    """make_shared<CameraNode>(topic), topic a string variable: passing it on to a
+    constructor does not change it."""
     assert rows(camera) == [
         ("publish", "image", "std_msgs/msg/String", 5, "camera.cpp", 14),
         ("publish", "camera_node/info", "std_msgs/msg/String", 1, "camera.cpp", 15),
