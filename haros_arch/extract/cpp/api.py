@@ -74,6 +74,9 @@ class RosFunction:
     searched: bool = False
     # deleteParam, ros::param::del: a parameter write that deletes it
     deletes: bool = False
+    # the call's name is the name argument's then this (a parameter client's remote node
+    # + "/get_parameters"); no name argument, or an empty one, is the node's own "~"
+    name_suffix: str | None = None
 
 
 NODE_HANDLE = "ros::NodeHandle"
@@ -195,6 +198,29 @@ LIBRARIES: dict[tuple[str, str], RosFunction] = {
         siblings=(("subscribe", "/tf_static", _TF),)),
 }
 
+# rclcpp parameter clients: the services of the remote node they are made for (argument
+# 1, 2 or 4 by overload: after the node, the executor and node, or four node interfaces),
+# and the parameter events they may subscribe to.
+_PARAMETER_SERVICES: tuple[Sibling, ...] = tuple(
+    ("client", name, f"rcl_interfaces/srv/{kind}") for name, kind in (
+        ("get_parameter_types", "GetParameterTypes"), ("set_parameters", "SetParameters"),
+        ("set_parameters_atomically", "SetParametersAtomically"),
+        ("describe_parameters", "DescribeParameters"), ("list_parameters", "ListParameters")))
+_PARAMETER_CLIENT = RosFunction(
+    "client", name_arg=1, name_candidates=(1, 2, 4), on_handle=False,
+    name_suffix="get_parameters", fixed_type="rcl_interfaces/srv/GetParameters",
+    siblings=_PARAMETER_SERVICES)
+_PARAMETER_EVENTS = RosFunction(
+    "subscribe", fixed_name="/parameter_events",
+    fixed_type="rcl_interfaces/msg/ParameterEvent", on_handle=False)
+RCLCPP_LIBRARIES: dict[tuple[str, str], RosFunction] = {
+    ("rclcpp::AsyncParametersClient", "AsyncParametersClient"): _PARAMETER_CLIENT,
+    ("rclcpp::SyncParametersClient", "SyncParametersClient"): _PARAMETER_CLIENT,
+    ("rclcpp::AsyncParametersClient", "on_parameter_event"): _PARAMETER_EVENTS,
+    ("rclcpp::SyncParametersClient", "on_parameter_event"): _PARAMETER_EVENTS,
+    ("rclcpp::ParameterEventHandler", "ParameterEventHandler"): _PARAMETER_EVENTS,
+}
+
 # Calls that construct their template argument with the arguments they are given.
 FACTORIES = frozenset({("std", "make_shared"), ("std", "make_unique"),
                        ("boost", "make_shared"), ("std", "allocate_shared")})
@@ -257,7 +283,8 @@ RCLCPP_NODE_NAME: dict[tuple[str, str], tuple[int, int]] = {
 # (class, method) -> the argument that names the sub-namespace
 RCLCPP_SUB_NODE: dict[tuple[str, str], int] = {("rclcpp::Node", "create_sub_node"): 0}
 
-ALL: dict[tuple[str, str], RosFunction] = {**ROSCPP, **LIBRARIES, **RCLCPP}
+ALL: dict[tuple[str, str], RosFunction] = {**ROSCPP, **LIBRARIES, **RCLCPP,
+                                            **RCLCPP_LIBRARIES}
 
 # ``nh.subscribe(ops)`` / ``nh.advertise(ops)``: the call is made there (its handle,
 # location and conditions), with the topic, queue and type of the row that filled ``ops``

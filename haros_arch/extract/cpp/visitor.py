@@ -242,13 +242,21 @@ class CallFinder:
             names = [(spec.fixed_name, None)]
         else:
             name_expr = arg(spec.name_arg)
+            if spec.name_suffix is not None and name_expr is not None and (
+                msg_types.param_type(name_expr.type) != "str"
+            ):
+                name_expr = None  # SyncParametersClient(node, qos): no remote, the node
             for index in spec.name_candidates:
                 if index < len(args) and msg_types.param_type(args[index].type) == "str":
                     name_expr = args[index]
                     break
-            if name_expr is None:
+            if name_expr is None and spec.name_suffix is None:
                 return
-            names = self._names(spec, call, name_expr, args, scope)
+            names = [("", None)] if name_expr is None else self._names(
+                spec, call, name_expr, args, scope)
+            if spec.name_suffix is not None:  # a parameter client: the remote's services
+                names = [(join_name(name or "~", spec.name_suffix), source)
+                         for name, source in names]
         namespace: str | None = None
         if spec.fixed_name is None:
             if spec.on_handle:
@@ -292,8 +300,11 @@ class CallFinder:
                 self.diagnostics.append(diag.make(
                     "CPP_DYNAMIC_NAME", location, kind=spec.kind, name=name))
             for kind, sibling, stype in spec.siblings:
-                full = sibling if sibling.startswith("/") else join_name(
-                    name.rpartition("/")[0] if "/" in name else "", sibling)
+                if spec.name_suffix is not None:  # beside it, in the remote node's name
+                    full = name.removesuffix(spec.name_suffix) + sibling
+                else:
+                    full = sibling if sibling.startswith("/") else join_name(
+                        name.rpartition("/")[0] if "/" in name else "", sibling)
                 self.calls.append(PrimitiveCall(
                     kind=kind, name=full, type=self._ros_type(stype), queue_size=queue,
                     latch=latch, conditions=conditions, location=location))
