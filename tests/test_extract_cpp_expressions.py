@@ -54,3 +54,19 @@ def test_call_in_expression(localiser: CppResult, kind: str, name: str, ctype: s
 
 def test_no_other_calls(localiser: CppResult) -> None:
     assert len(localiser.calls) == 13
+
+
+def test_member_initialisers() -> None:
+    """A lambda called in a member initialiser, a lambda passed in one, and a default
+    member initialiser of a ROS 2 node class."""
+    source = os.path.join(ROOT, "src", "sampler", "src", "sampler.cpp")
+    found = extract_cpp([source], scan([ROOT]), cache_dir=None)
+    rows = [(c.kind, c.name, c.queue_size, c.location.line,
+             tuple((x.statement, x.text) for x in c.conditions)) for c in found.calls]
+    assert rows == [
+        ("subscribe", "samples", 10, 19, ()),
+        ("publish", "heartbeat", 1, 25, (("if", "!heartbeat_"),)),
+        ("publish", "status", 5, 34, ()),
+    ]
+    assert found.rosname == "sampler"
+    assert [d.code for d in found.diagnostics] == []

@@ -33,7 +33,7 @@ from .handles import (
 )
 from .links import Fact, argument_facts
 from .qos import qos as qos_of
-from .values import PLACEHOLDER, Scope, render, strip, written_arguments
+from .values import PLACEHOLDER, Scope, initializer, render, strip, written_arguments
 
 _CONTAINERS = frozenset({
     CursorKind.NAMESPACE, CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL,
@@ -101,6 +101,8 @@ class CallFinder:
                 yield cursor
             elif kind == CursorKind.FIELD_DECL:
                 self._field(cursor)
+                if initializer(cursor) is not None:
+                    yield cursor  # a default member initialiser: walked like a function
             elif kind in _CONTAINERS:
                 yield from self._definitions(cursor)
 
