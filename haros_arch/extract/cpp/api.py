@@ -20,7 +20,12 @@ Type sources (``type_from``), tried in order until one gives a type:
 - ``value``: the C++ type of a parameter's value at ``type_arg``, as a parameter type
   (``double``, ``int``, ``str``, ``bool``);
 - ``template-value``: the first explicit template argument as a parameter type
-  (``nh.param<std::string>(...)``).
+  (``nh.param<std::string>(...)``);
+- ``type-name``: the string at ``type_arg`` names the type
+  (``create_generic_publisher(topic, "std_msgs/msg/String", qos)``).
+
+A message type that is a ``rclcpp::TypeAdapter<Custom, Ros>`` (or a custom type one
+adapts) is its ROS message type (``call_types``).
 
 ``fixed_type`` is a ROS 1 type name used when none of those gives one (image_transport
 topics are ``sensor_msgs/Image``); in a ROS 2 node it is written ``pkg/msg/Name``.
@@ -250,8 +255,10 @@ _RCLCPP_NODE: dict[str, RosFunction] = {
     "create_service": RosFunction(
         "server", type_from=("template", "service-callback"), callback_arg=1),
     "create_client": RosFunction("client", type_from=("template",)),
-    "create_generic_publisher": RosFunction("publish", type_arg=1, qos_arg=2),
-    "create_generic_subscription": RosFunction("subscribe", type_arg=1, qos_arg=2),
+    "create_generic_publisher": RosFunction(
+        "publish", type_from=("type-name",), type_arg=1, qos_arg=2),
+    "create_generic_subscription": RosFunction(
+        "subscribe", type_from=("type-name",), type_arg=1, qos_arg=2),
     "declare_parameter": RosFunction(
         "declare", type_from=("template-value", "value"), type_arg=1, default_arg=1,
         on_handle=False),

@@ -10,6 +10,8 @@
 #include <vector>
 #include <rmw/qos_profiles.h>
 #include <rcl/haros_rcl.h>
+#include <rclcpp/serialization.hpp>
+#include <rclcpp/type_adapter.hpp>
 #define RCLCPP_SMART_PTR_DEFINITIONS(T) \
   using SharedPtr = std::shared_ptr<T>; using ConstSharedPtr = std::shared_ptr<const T>; \
   using UniquePtr = std::unique_ptr<T>; using WeakPtr = std::weak_ptr<T>;
@@ -293,6 +295,8 @@ public:
   RCLCPP_SMART_PTR_DEFINITIONS(Publisher)
   void publish(const M& msg);
   void publish(std::unique_ptr<M> msg);
+  void publish(const SerializedMessage& msg);
+  template<class T> void publish(const T& msg);  // an adapted type's custom type
   bool can_loan_messages() const;
   struct LoanedMessage { M& get(); bool is_valid() const; };
   LoanedMessage borrow_loaned_message();
@@ -311,7 +315,11 @@ public:
                           const std::vector<std::string>& parameters = {});
   detail::ContentFilterOptions get_content_filter() const;
 };
-class GenericPublisher : public PublisherBase { public: RCLCPP_SMART_PTR_DEFINITIONS(GenericPublisher) };
+class GenericPublisher : public PublisherBase {
+public:
+  RCLCPP_SMART_PTR_DEFINITIONS(GenericPublisher)
+  void publish(const SerializedMessage& msg);
+};
 class GenericSubscription : public SubscriptionBase { public: RCLCPP_SMART_PTR_DEFINITIONS(GenericSubscription) };
 class ServiceBase { public: RCLCPP_SMART_PTR_DEFINITIONS(ServiceBase) };
 template<class S> class Service : public ServiceBase {
