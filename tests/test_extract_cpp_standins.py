@@ -81,3 +81,17 @@ def test_type_adapters_serialized_messages_and_generic_topics() -> None:
         ("subscribe", "tapped", "sensor_msgs/msg/Image", 1, 58),
     ]
     assert [d.code for d in found.diagnostics] == []
+
+
+def test_lifecycle_rcl_std_and_opencv_apis_parse() -> None:
+    """Lifecycle callbacks and publishers, lifecycle and statistics interface fields,
+    Node::list_parameters / get_node_options, Publisher QoS checks, rcl errors,
+    RCLCPP_DEBUG_FUNCTION, std::regex, std::async into a shared_future, real-time
+    pthread / clock_nanosleep calls and OpenCV's imdecode / floodFill / compare."""
+    source = os.path.join(ROOT, "src", "api_demo", "src", "lifecycle_monitor.cpp")
+    found = extract_cpp([source], scan([ROOT]), cache_dir=None)
+    assert [(c.kind, c.name, c.type, c.location.line) for c in found.calls] == [
+        ("publish", "monitor/report", "std_msgs/msg/String", 30),
+        ("publish", "probe", "std_msgs/msg/String", 74),
+    ]
+    assert [(d.code, d.message) for d in found.diagnostics] == []
