@@ -63,3 +63,35 @@ def test_fields_declare_their_type_alias() -> None:
     definition = interfaces.parse_definition("sensor_msgs", "Image",
                                              interfaces.WELL_KNOWN["sensor_msgs/Image"])
     assert "using _step_type = uint32_t;" in ros2_interfaces.render(definition, "msg")
+
+
+def test_type_adapters_serialized_messages_and_generic_topics() -> None:
+    """rclcpp::TypeAdapter<Custom, Ros> (as the template argument, through adapt_type<>::as
+    and through RCLCPP_USING_CUSTOM_TYPE_AS_ROS_MESSAGE_TYPE) gives the ROS message type;
+    SerializedMessage and Serialization parse; a generic publisher's or subscription's
+    type is the string it is given."""
+    source = os.path.join(ROOT, "src", "api_demo", "src", "adapted_relay.cpp")
+    found = extract_cpp([source], scan([ROOT]), cache_dir=None)
+    assert [(c.kind, c.name, c.type, c.queue_size, c.location.line) for c in found.calls] == [
+        ("publish", "text_out", "std_msgs/msg/String", 10, 43),
+        ("publish", "readings", "std_msgs/msg/String", 10, 44),
+        ("publish", "text_raw", "std_msgs/msg/String", 10, 45),
+        ("subscribe", "text_in", "std_msgs/msg/String", 10, 46),
+        ("publish", "forwarded", "std_msgs/msg/String", 5, 57),
+        ("subscribe", "tapped", "sensor_msgs/msg/Image", 1, 58),
+    ]
+    assert [d.code for d in found.diagnostics] == []
+
+
+def test_lifecycle_rcl_std_and_opencv_apis_parse() -> None:
+    """Lifecycle callbacks and publishers, lifecycle and statistics interface fields,
+    Node::list_parameters / get_node_options, Publisher QoS checks, rcl errors,
+    RCLCPP_DEBUG_FUNCTION, std::regex, std::async into a shared_future, real-time
+    pthread / clock_nanosleep calls and OpenCV's imdecode / floodFill / compare."""
+    source = os.path.join(ROOT, "src", "api_demo", "src", "lifecycle_monitor.cpp")
+    found = extract_cpp([source], scan([ROOT]), cache_dir=None)
+    assert [(c.kind, c.name, c.type, c.location.line) for c in found.calls] == [
+        ("publish", "monitor/report", "std_msgs/msg/String", 30),
+        ("publish", "probe", "std_msgs/msg/String", 74),
+    ]
+    assert [(d.code, d.message) for d in found.diagnostics] == []

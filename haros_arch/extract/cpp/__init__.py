@@ -150,7 +150,7 @@ def _node_result(units: list[CppResult]) -> CppResult:
     for unit in units:
         result.diagnostics.extend(unit.diagnostics)
         if unit.rosname is not None and result.rosname is None:
-            result.rosname = unit.rosname
+            result.rosname = links.resolve_name(unit.rosname, facts)
         calls, found = links.resolve(unit.calls, facts)
         result.diagnostics.extend(found)
         for call in calls:

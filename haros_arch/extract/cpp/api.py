@@ -20,7 +20,12 @@ Type sources (``type_from``), tried in order until one gives a type:
 - ``value``: the C++ type of a parameter's value at ``type_arg``, as a parameter type
   (``double``, ``int``, ``str``, ``bool``);
 - ``template-value``: the first explicit template argument as a parameter type
-  (``nh.param<std::string>(...)``).
+  (``nh.param<std::string>(...)``);
+- ``type-name``: the string at ``type_arg`` names the type
+  (``create_generic_publisher(topic, "std_msgs/msg/String", qos)``).
+
+A message type that is a ``rclcpp::TypeAdapter<Custom, Ros>`` (or a custom type one
+adapts) is its ROS message type (``call_types``).
 
 ``fixed_type`` is a ROS 1 type name used when none of those gives one (image_transport
 topics are ``sensor_msgs/Image``); in a ROS 2 node it is written ``pkg/msg/Name``.
@@ -74,6 +79,9 @@ class RosFunction:
     searched: bool = False
     # deleteParam, ros::param::del: a parameter write that deletes it
     deletes: bool = False
+    # the call's name is the name argument's then this (a parameter client's remote node
+    # + "/get_parameters"); no name argument, or an empty one, is the node's own "~"
+    name_suffix: str | None = None
 
 
 NODE_HANDLE = "ros::NodeHandle"
@@ -195,6 +203,29 @@ LIBRARIES: dict[tuple[str, str], RosFunction] = {
         siblings=(("subscribe", "/tf_static", _TF),)),
 }
 
+# rclcpp parameter clients: the services of the remote node they are made for (argument
+# 1, 2 or 4 by overload: after the node, the executor and node, or four node interfaces),
+# and the parameter events they may subscribe to.
+_PARAMETER_SERVICES: tuple[Sibling, ...] = tuple(
+    ("client", name, f"rcl_interfaces/srv/{kind}") for name, kind in (
+        ("get_parameter_types", "GetParameterTypes"), ("set_parameters", "SetParameters"),
+        ("set_parameters_atomically", "SetParametersAtomically"),
+        ("describe_parameters", "DescribeParameters"), ("list_parameters", "ListParameters")))
+_PARAMETER_CLIENT = RosFunction(
+    "client", name_arg=1, name_candidates=(1, 2, 4), on_handle=False,
+    name_suffix="get_parameters", fixed_type="rcl_interfaces/srv/GetParameters",
+    siblings=_PARAMETER_SERVICES)
+_PARAMETER_EVENTS = RosFunction(
+    "subscribe", fixed_name="/parameter_events",
+    fixed_type="rcl_interfaces/msg/ParameterEvent", on_handle=False)
+RCLCPP_LIBRARIES: dict[tuple[str, str], RosFunction] = {
+    ("rclcpp::AsyncParametersClient", "AsyncParametersClient"): _PARAMETER_CLIENT,
+    ("rclcpp::SyncParametersClient", "SyncParametersClient"): _PARAMETER_CLIENT,
+    ("rclcpp::AsyncParametersClient", "on_parameter_event"): _PARAMETER_EVENTS,
+    ("rclcpp::SyncParametersClient", "on_parameter_event"): _PARAMETER_EVENTS,
+    ("rclcpp::ParameterEventHandler", "ParameterEventHandler"): _PARAMETER_EVENTS,
+}
+
 # Calls that construct their template argument with the arguments they are given.
 FACTORIES = frozenset({("std", "make_shared"), ("std", "make_unique"),
                        ("boost", "make_shared"), ("std", "allocate_shared")})
@@ -224,8 +255,10 @@ _RCLCPP_NODE: dict[str, RosFunction] = {
     "create_service": RosFunction(
         "server", type_from=("template", "service-callback"), callback_arg=1),
     "create_client": RosFunction("client", type_from=("template",)),
-    "create_generic_publisher": RosFunction("publish", type_arg=1, qos_arg=2),
-    "create_generic_subscription": RosFunction("subscribe", type_arg=1, qos_arg=2),
+    "create_generic_publisher": RosFunction(
+        "publish", type_from=("type-name",), type_arg=1, qos_arg=2),
+    "create_generic_subscription": RosFunction(
+        "subscribe", type_from=("type-name",), type_arg=1, qos_arg=2),
     "declare_parameter": RosFunction(
         "declare", type_from=("template-value", "value"), type_arg=1, default_arg=1,
         on_handle=False),
@@ -257,7 +290,8 @@ RCLCPP_NODE_NAME: dict[tuple[str, str], tuple[int, int]] = {
 # (class, method) -> the argument that names the sub-namespace
 RCLCPP_SUB_NODE: dict[tuple[str, str], int] = {("rclcpp::Node", "create_sub_node"): 0}
 
-ALL: dict[tuple[str, str], RosFunction] = {**ROSCPP, **LIBRARIES, **RCLCPP}
+ALL: dict[tuple[str, str], RosFunction] = {**ROSCPP, **LIBRARIES, **RCLCPP,
+                                            **RCLCPP_LIBRARIES}
 
 # ``nh.subscribe(ops)`` / ``nh.advertise(ops)``: the call is made there (its handle,
 # location and conditions), with the topic, queue and type of the row that filled ``ops``

@@ -3,7 +3,10 @@
 ``branches(node)`` answers, for one statement, which of its children run under which
 extra conditions; the visitor stacks them on the way down, so a call carries one
 ``Condition`` per enclosing ``if`` / ``else`` / loop / ``switch`` + ``case`` / ``try`` /
-``catch``. A call in an ``else`` branch gets statement ``else`` with the text of its
+``catch``, and one for the branch of a ``?:`` or the right side of ``&&`` / ``||`` it
+is on (``if`` with the text of what is tested, ``else`` when it runs if that is false).
+A call in a loop's or an ``if``'s own condition runs at least once, so it has none of
+them. A call in an ``else`` branch gets statement ``else`` with the text of its
 ``if``; a ``try`` block's condition has empty text; a ``catch`` block's text is its
 exception declaration; ``default:`` is a ``case`` with text ``default``. Condition
 texts are taken from the source as written (macros unexpanded), whitespace collapsed.
@@ -24,6 +27,8 @@ _LOOPS = {CursorKind.FOR_STMT: "for", CursorKind.CXX_FOR_RANGE_STMT: "for",
           CursorKind.WHILE_STMT: "while"}
 _LABELS = (CursorKind.CASE_STMT, CursorKind.DEFAULT_STMT)
 _SPACE = re.compile(r"\s+")
+_ELSE = re.compile(r"\belse\b")
+_SHORT_CIRCUIT = re.compile(r"^\s*(&&|\|\||\band\b|\bor\b)\s*$")
 
 
 class ConditionReader:
@@ -51,6 +56,17 @@ class ConditionReader:
         if kind == CursorKind.CXX_TRY_STMT and children:
             return [(children[0], (self._condition(node, "try", ""),)),
                     *((c, ()) for c in children[1:])]
+        if kind == CursorKind.CONDITIONAL_OPERATOR and len(children) == 3:
+            text = self._text(children[0])
+            return [(children[0], ()), (children[1], (self._condition(node, "if", text),)),
+                    (children[2], (self._condition(node, "else", text),))]
+        if kind == CursorKind.BINARY_OPERATOR and len(children) == 2:
+            operator = self._between(children[0], children[1], _SHORT_CIRCUIT)
+            if operator:  # ``a && f()`` calls f if a; ``a || f()`` calls it if not a
+                statement = "if" if operator in ("&&", "and") else "else"
+                text = self._text(children[0])
+                return [(children[0], ()),
+                        (children[1], (self._condition(node, statement, text),))]
         if kind == CursorKind.CXX_CATCH_STMT and children:
             catch = self._condition(node, "catch", self._parens(node.extent.start))
             return [(c, (catch,)) for c in children]
@@ -60,7 +76,7 @@ class ConditionReader:
         if len(children) < 2:
             return [(c, ()) for c in children]
         text = self._parens(node.extent.start)
-        has_else = len(children) >= 3 and self._between(children[-2], children[-1]) == "else"
+        has_else = len(children) >= 3 and self._between(children[-2], children[-1], _ELSE) == "else"
         then = len(children) - (2 if has_else else 1)
         out: list[Branch] = [(c, ()) for c in children[:then]]
         out.append((children[then], (self._condition(node, "if", text),)))
@@ -138,13 +154,15 @@ class ConditionReader:
             return "?"
         return _clean(text[start.offset:end.offset])
 
-    def _between(self, first: Cursor, second: Cursor) -> str:
+    def _between(self, first: Cursor, second: Cursor, pattern: re.Pattern[str]) -> str:
+        """What ``pattern`` finds in the source text between two sibling nodes, or ""."""
         end, start = first.extent.end, second.extent.start
         text = self._bytes(end.file)
         if text is None or start.file is None or start.file.name != end.file.name:
             return ""
         between = text[end.offset:start.offset].decode("utf-8", "replace")
-        return "else" if re.search(r"\belse\b", between) else ""
+        found = pattern.search(between)
+        return found.group(found.lastindex or 0) if found else ""
 
 
 def _clean(raw: bytes) -> str:

@@ -12,7 +12,8 @@ from __future__ import annotations
 from clang.cindex import Cursor, CursorKind, TypeKind
 
 from . import api
-from .values import UNKNOWN, CallSites, Parts, Scope, render, strip, written_arguments
+from .call_sites import CallSites, member_initialiser
+from .values import PLACEHOLDER, UNKNOWN, Parts, Scope, render, strip, written_arguments
 
 MAX_DEPTH = 16
 _SCOPES = frozenset({
@@ -115,8 +116,10 @@ class Namespaces:
     def of(self, expr: Cursor, scope: Scope, depth: int = 0) -> Parts:
         """The namespace of the handle ``expr`` stands for."""
         found = self._namespace(expr, scope, depth)
-        if found == UNKNOWN and is_ros2_node(record_class(expr)):
-            return ("",)  # a node's own namespace, unless it is a sub node
+        if (found == UNKNOWN or any(PLACEHOLDER in (p or "") for p in found)) and (
+            is_ros2_node(record_class(expr))
+        ):
+            return ("",)  # a node's own namespace, unless it is a known sub node
         return found
 
     def _namespace(self, expr: Cursor, scope: Scope, depth: int) -> Parts:
@@ -135,11 +138,12 @@ class Namespaces:
             value = scope.variable(decl)
             return UNKNOWN if value is None else self.of(value, scope, depth + 1)
         if kind == CursorKind.MEMBER_REF_EXPR and expr.referenced is not None:
-            value = member_initialiser(expr.referenced)
-            if value is None:
+            found = member_initialiser(expr.referenced)
+            if found is None:
                 # a member no constructor initialises: the default handle
                 return ("",) if is_handle(expr) else UNKNOWN
-            return self.of(value, Scope(None, self.macros, self.source, self.sites), depth + 1)
+            return self.of(found[0], Scope(None, self.macros, self.source, self.sites),
+                           depth + 1)
         if kind == CursorKind.CXX_NEW_EXPR:
             inner = [c for c in expr.get_children() if c.kind.is_expression()]
             return self.of(inner[-1], scope, depth + 1) if inner else UNKNOWN
@@ -194,31 +198,6 @@ class Namespaces:
             return parent
         child = render(scope.string(args[index]))
         return (normalise(join_name(render(parent), child)),)
-
-
-def member_initialiser(field: Cursor) -> Cursor | None:
-    """What the constructors of ``field``'s class initialise or assign it with."""
-    owner = field.semantic_parent
-    if owner is None:
-        return None
-    for member in owner.get_children():
-        if member.kind != CursorKind.CONSTRUCTOR:
-            continue
-        definition = member.get_definition()
-        if definition is None:
-            continue
-        children = list(definition.get_children())
-        for i, child in enumerate(children[:-1]):
-            if child.kind == CursorKind.MEMBER_REF and child.referenced == field:
-                return children[i + 1]
-        for node in definition.walk_preorder():
-            if node.kind == CursorKind.CALL_EXPR and node.spelling == "operator=":
-                args = list(node.get_arguments())
-                if len(args) == 2 and strip(args[0]).kind == CursorKind.MEMBER_REF_EXPR and (
-                    strip(args[0]).referenced == field
-                ):
-                    return args[1]
-    return None
 
 
 def callback(args: list[Cursor], index: int | None) -> Cursor | None:

@@ -19,6 +19,7 @@ MESSAGE_PACKAGES = frozenset({
     "topic_tools", "gazebo_msgs", "pcl_msgs", "dynamic_reconfigure", "mavros_msgs",
     "builtin_interfaces", "example_interfaces", "rcl_interfaces", "action_msgs",
     "lifecycle_msgs", "unique_identifier_msgs", "tf", "turtlesim", "action_tutorials_interfaces",
+    "statistics_msgs",
 })
 
 # Definitions for messages that nodes use most, in .msg syntax ("---" splits services).
@@ -129,6 +130,19 @@ WELL_KNOWN: dict[str, str] = {
         ("TRANSITION_ACTIVATE", 3), ("TRANSITION_DEACTIVATE", 4),
         ("TRANSITION_UNCONFIGURED_SHUTDOWN", 5), ("TRANSITION_INACTIVE_SHUTDOWN", 6),
         ("TRANSITION_ACTIVE_SHUTDOWN", 7), ("TRANSITION_DESTROY", 8))) + "\nuint8 id\nstring label",
+    "lifecycle_msgs/TransitionDescription": "Transition transition\nState start_state\n"
+                                            "State goal_state",
+    "lifecycle_msgs/TransitionEvent": "uint64 timestamp\nTransition transition\n"
+                                      "State start_state\nState goal_state",
+    "lifecycle_msgs/ChangeState": "Transition transition\n---\nbool success",
+    "lifecycle_msgs/GetState": "---\nState current_state",
+    "lifecycle_msgs/GetAvailableStates": "---\nState[] available_states",
+    "lifecycle_msgs/GetAvailableTransitions": "---\nTransitionDescription[] "
+                                              "available_transitions",
+    "statistics_msgs/StatisticDataPoint": "uint8 data_type\nfloat64 data",
+    "statistics_msgs/MetricsMessage": "string measurement_source_name\nstring metrics_source\n"
+                                      "string unit\ntime window_start\ntime window_stop\n"
+                                      "StatisticDataPoint[] statistics",
 }
 
 PRIMITIVES = {

@@ -1,14 +1,15 @@
-"""Values that cross the translation units of one ROS 1 node.
+"""Values that cross the translation units of one node, or its calls.
 
 A handle or a string passed to a function (a constructor, ``std::make_shared<T>``,
 ``new T``, a member initialiser) defined in another file of the same node is not known
-in that file: ``values.CallSites`` writes it as a placeholder part naming the function
-(by USR) and the parameter's index. Every file records what it passes to the functions
-it calls but does not define (``argument_facts``: the handle's namespace, or the string),
-and ``resolve`` fills each node's placeholders with what its own files pass, once all of
-them are read (a file shared by two nodes is filled per node). Callers that disagree
-give one call per value (up to ``MAX_VALUES``); a parameter no file of the node passes
-stays ``?``.
+in that file, and one that callers in the same file disagree on is not one value:
+``call_sites.CallSites`` writes it as a placeholder part naming the function (by USR)
+and the parameter's index. Every file records what it passes to those functions
+(``argument_facts``: the handle's namespace, or the string; a default where the call
+leaves the argument out), and ``resolve`` fills each node's placeholders with what its
+own files pass, once all of them are read (a file shared by two nodes is filled per
+node). Callers that disagree give one call per value (up to ``MAX_VALUES``); a
+parameter no file of the node passes stays ``?``.
 """
 
 from __future__ import annotations
@@ -17,14 +18,15 @@ import dataclasses
 import re
 from collections.abc import Callable, Iterable
 
-from clang.cindex import Cursor
+from clang.cindex import Cursor, CursorKind
 
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
 from ...model.source import PrimitiveCall
 from . import msg_types
+from .call_sites import CallSites, argument
 from .handles import Namespaces, is_handle, join_name, normalise
-from .values import PLACEHOLDER, SEPARATOR, CallSites, Scope, is_default_argument, render
+from .values import PLACEHOLDER, SEPARATOR, Scope, key_of, render
 
 Fact = tuple[str, int, str, str]  # callee USR, parameter index, value passed, call site
 MAX_VALUES = 8
@@ -38,20 +40,26 @@ def argument_facts(sites: CallSites, namespaces: Namespaces,
     """What this file passes, as handles' namespaces or strings, to the workspace
     functions it calls but does not define."""
     facts: list[Fact] = []
-    for callee, call, caller in sites.external_sites():
-        where = callee.location.file
-        usr = callee.canonical.get_usr()
-        if where is None or not owned(where.name) or not usr:
-            continue
-        scope = sites.scope(caller)
-        at = call.location
-        site = f"{at.file.name if at.file else ''}:{at.offset}"
-        for index, arg in enumerate(call.get_arguments()):
-            if is_default_argument(arg):
+    done: set[tuple[str, int]] = set()
+    for _round in range(MAX_DEPTH):  # reading a value may give another function a mark
+        todo = list(sites.passing_sites(done))
+        if not todo:
+            break
+        for callee, call, caller in todo:
+            where = callee.location.file
+            usr = callee.canonical.get_usr()
+            done.add(key_of(callee.canonical))
+            if where is None or not owned(where.name) or not usr:
                 continue
-            value = _value(arg, scope, namespaces)
-            if value is not None:
-                facts.append((usr, index, value, site))
+            scope = sites.scope(caller)
+            at = call.location
+            site = f"{at.file.name if at.file else ''}:{at.offset}"
+            params = [c for c in callee.get_children() if c.kind == CursorKind.PARM_DECL]
+            for index, parm in enumerate(params):
+                arg = argument(call, parm, index)
+                value = _value(arg, scope, namespaces) if arg is not None else None
+                if value is not None:
+                    facts.append((usr, index, value, site))
     return list(dict.fromkeys(facts))
 
 
@@ -93,6 +101,19 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact]
                 found.append(diag.make("CPP_DYNAMIC_NAME", made.location, kind=made.kind,
                                        name=made.name))
     return out, found
+
+
+def resolve_name(name: str, facts: Iterable[Fact]) -> str:
+    """A node name (``Node(name)`` in a constructor) with its placeholders filled: the
+    one value the node's files pass, else ``?`` where they pass none or several."""
+    if PLACEHOLDER not in name:
+        return name
+    passed: dict[str, dict[str, dict[int, str]]] = {}
+    for usr, index, value, site in facts:
+        passed.setdefault(usr, {}).setdefault(site, {})[index] = value
+    found = _expand(name, passed, 0)
+    return found[0] if len(found) == 1 and PLACEHOLDER not in found[0] else (
+        _MARK.sub("?", name))
 
 
 def _expand(text: str, passed: dict[str, dict[str, dict[int, str]]],

@@ -7,11 +7,14 @@ same struct: its namespaces and name give the ROS 1 name.
 
 from __future__ import annotations
 
+from collections.abc import Mapping
+
 from clang.cindex import Cursor, CursorKind, Type, TypeKind
 
 _RECORDS = (CursorKind.STRUCT_DECL, CursorKind.CLASS_DECL, CursorKind.CLASS_TEMPLATE,
             CursorKind.CLASS_TEMPLATE_PARTIAL_SPECIALIZATION)
-_POINTERS = ("shared_ptr", "MessageEvent")
+_POINTERS = ("shared_ptr", "MessageEvent", "unique_ptr")
+_ADAPTERS = ("TypeAdapter", "ImplicitTypeAdapter")
 _REFERENCES = (TypeKind.LVALUEREFERENCE, TypeKind.RVALUEREFERENCE, TypeKind.POINTER)
 
 _PARAM_TYPES = {
@@ -22,9 +25,12 @@ _PARAM_TYPES = {
 }
 
 
-def message_type(ctype: Type, service: bool = False) -> str | None:
-    """The ROS name of the message (or, with ``service``, service) type ``ctype`` holds."""
-    record = _record(ctype)
+def message_type(ctype: Type, service: bool = False,
+                 adapters: Mapping[str, Type] | None = None) -> str | None:
+    """The ROS name of the message (or, with ``service``, service) type ``ctype`` holds;
+    a type adapter (``rclcpp::TypeAdapter<Custom, Ros>``) or a custom type ``adapters``
+    maps to its ROS message type (by canonical spelling) holds that ROS type."""
+    record = _record(ctype, 0, adapters or {})
     if record is None:
         return None
     decl, templated = record
@@ -69,7 +75,8 @@ def _bare(ctype: Type) -> Type:
     return ctype
 
 
-def _record(ctype: Type, depth: int = 0) -> tuple[Cursor, bool] | None:
+def _record(ctype: Type, depth: int, adapters: Mapping[str, Type]
+            ) -> tuple[Cursor, bool] | None:
     """The struct a (reference to / pointer to / shared_ptr of) type names."""
     ctype = ctype.get_canonical()
     while ctype.kind in _REFERENCES:
@@ -79,8 +86,40 @@ def _record(ctype: Type, depth: int = 0) -> tuple[Cursor, bool] | None:
     decl = ctype.get_declaration()
     arguments = ctype.get_num_template_arguments()
     if decl.spelling in _POINTERS and arguments > 0:
-        return _record(ctype.get_template_argument_type(0), depth + 1)
+        return _record(ctype.get_template_argument_type(0), depth + 1, adapters)
+    adapted = ros_type_of_adapter(ctype)
+    if adapted is None:
+        adapted = adapters.get(ctype.spelling)
+    if adapted is not None:
+        return _record(adapted, depth + 1, {})
     return decl, arguments > 0
+
+
+def ros_type_of_adapter(ctype: Type) -> Type | None:
+    """The ROS message type of ``rclcpp::TypeAdapter<Custom, Ros>`` (also written
+    ``rclcpp::adapt_type<Custom>::as<Ros>``) or of an ``ImplicitTypeAdapter`` of it."""
+    ctype = ctype.get_canonical()
+    decl = ctype.get_declaration()
+    if decl.spelling not in _ADAPTERS or _namespaces(decl.semantic_parent) != ["rclcpp"]:
+        return None
+    if decl.spelling == "TypeAdapter" and ctype.get_num_template_arguments() >= 2:
+        ros = ctype.get_template_argument_type(1)
+        return ros if ros.get_canonical().kind != TypeKind.VOID else None
+    for child in (decl.get_definition() or decl).get_children():
+        if child.kind == CursorKind.CXX_BASE_SPECIFIER:  # ImplicitTypeAdapter<C>
+            return ros_type_of_adapter(child.type)
+    return None
+
+
+def adapted_types(specialisation: Cursor) -> tuple[str, Type] | None:
+    """(custom type's canonical spelling, ROS message type) for a specialisation of
+    ``rclcpp::TypeAdapter<Custom, Ros>`` or ``rclcpp::ImplicitTypeAdapter<Custom>``."""
+    ctype = specialisation.type.get_canonical()
+    if ctype.get_num_template_arguments() < 1:
+        return None
+    ros = ros_type_of_adapter(ctype)
+    custom = ctype.get_template_argument_type(0).get_canonical()
+    return (custom.spelling, ros) if ros is not None else None
 
 
 def _namespaces(cursor: Cursor | None) -> list[str]:

@@ -4,18 +4,21 @@ A string value is a tuple of parts, each a known ``str`` or ``None`` for a part 
 only known at run time; ``render`` writes the unknown parts as ``?``. Resolved:
 literals (also through ``#define``), ``const`` / ``constexpr`` variables, local variables
 written exactly once (at their declaration or by one assignment), ``std::string``
-construction, ``+`` concatenation and ``.c_str()``, and a function's parameter when every
-call of the function in the same file passes the same value (``CallSites``). Anything
-else is unknown.
+construction, ``+`` concatenation and ``.c_str()``, a function's parameter from the
+calls of the function (``call_sites.CallSites``), and a class member from what a
+constructor initialises it with. Anything else is unknown.
 """
 
 from __future__ import annotations
 
 import re
-from collections.abc import Callable, Iterator
-from typing import TypeVar
+from collections.abc import Iterator
+from typing import TYPE_CHECKING, TypeVar
 
 from clang.cindex import Cursor, CursorKind, TypeKind
+
+if TYPE_CHECKING:
+    from .call_sites import CallSites
 
 Parts = tuple[str | None, ...]
 # A part standing for "the argument the callers in other files pass": PLACEHOLDER, the
@@ -121,8 +124,9 @@ class Scope:
             if arg.kind in (CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR) and (
                 arg.referenced is not None
             ):
-                self.passed[_key(arg.referenced)] = (call, index)
-                self._write_ref(arg, None)
+                self.passed[key_of(arg.referenced)] = (call, index)
+                if _may_write(call, index):
+                    self._write_ref(arg, None)
         children = list(call.get_children())
         if children and children[0].kind == CursorKind.MEMBER_REF_EXPR:
             method = call.referenced
@@ -139,7 +143,7 @@ class Scope:
         self._write(decl, value)
 
     def _write(self, decl: Cursor, value: Cursor | None) -> None:
-        self.writes.setdefault(_key(decl), []).append(value)
+        self.writes.setdefault(key_of(decl), []).append(value)
 
     def operator(self, node: Cursor, children: list[Cursor]) -> str:
         """The operator token between the two operands of a binary operator."""
@@ -155,13 +159,13 @@ class Scope:
 
     def passed_to(self, decl: Cursor) -> tuple[Cursor, int] | None:
         """The last call ``decl`` was passed to by reference, and at which index."""
-        return self.passed.get(_key(decl))
+        return self.passed.get(key_of(decl))
 
     def variable(self, decl: Cursor) -> Cursor | None:
         """The one expression variable ``decl`` holds, when there is exactly one."""
         if decl.kind not in (CursorKind.VAR_DECL, CursorKind.FIELD_DECL):
             return None
-        writes = self.writes.get(_key(decl))
+        writes = self.writes.get(key_of(decl))
         if writes is not None:
             return writes[0] if len(writes) == 1 else None
         if decl.type.is_const_qualified() or _string_constant(decl):
@@ -183,15 +187,27 @@ class Scope:
                 return self.sites.agreed(  # type: ignore[union-attr]
                     decl, lambda arg, scope: scope.string(arg, depth + 1), UNKNOWN)
             value = self.variable(decl) if decl is not None else None
-            return UNKNOWN if value is None else self.string(value, depth + 1)
+            if value is None and decl is not None:
+                found = self.field(decl)
+                return UNKNOWN if found is None else found[1].string(found[0], depth + 1)
+            return self.string(value, depth + 1)
         if kind == CursorKind.CALL_EXPR:
             return self._string_call(cursor, depth)
         return UNKNOWN
 
+    def field(self, decl: Cursor) -> tuple[Cursor, Scope] | None:
+        """A member this function does not write: the value its class's constructor
+        gives it, and the scope to read that value in."""
+        if decl.kind != CursorKind.FIELD_DECL or self.sites is None or (
+            key_of(decl) in self.writes
+        ):
+            return None
+        return self.sites.field(decl)
+
     def is_parameter(self, decl: Cursor) -> bool:
         """A parameter this function never assigns, whose callers may tell its value."""
         return self.sites is not None and decl.kind == CursorKind.PARM_DECL and all(
-            w is None for w in self.writes.get(_key(decl), []))
+            w is None for w in self.writes.get(key_of(decl), []))
 
     def _string_call(self, call: Cursor, depth: int) -> Parts:
         args = written_arguments(call)
@@ -232,7 +248,10 @@ class Scope:
                 return self.sites.agreed(  # type: ignore[union-attr]
                     decl, lambda arg, scope: scope.integer(arg, depth + 1), None)
             value = self.variable(decl) if decl is not None else None
-            return None if value is None else self.integer(value, depth + 1)
+            if value is None and decl is not None:
+                found = self.field(decl)
+                return None if found is None else found[1].integer(found[0], depth + 1)
+            return self.integer(value, depth + 1)
         return None
 
     def token(self, cursor: Cursor) -> str | None:
@@ -262,131 +281,6 @@ class Scope:
         return None
 
 
-class CallSites:
-    """The calls of the file's own functions, so that a parameter's value can be read at
-    its callers: ``setup(nh, "scan")`` makes ``topic`` of ``void setup(NodeHandle& nh,
-    const std::string& topic)`` the string ``scan``, when every call agrees."""
-
-    MAX_SITES = 16
-
-    def __init__(self, functions: list[Cursor], macros: dict[str, str],
-                 source: dict[str, bytes], external: bool = False) -> None:
-        self.functions = functions
-        self.macros = macros
-        self.source = source
-        # a parameter of a function no call in this file calls: a placeholder part that
-        # the calls in the node's other files fill (ROS 1)
-        self.external = external
-        self._index: dict[tuple[str, int], list[tuple[Cursor, Cursor]]] | None = None
-        self._scopes: dict[tuple[str, int], Scope] = {}
-        self._active: set[tuple[str, int]] = set()  # parameters being read (recursion)
-
-    def agreed(self, parm: Cursor, read: Callable[[Cursor, Scope], Value],
-               unknown: Value) -> Value:
-        """``read`` of the argument each call passes for ``parm``, when all agree."""
-        key = _key(parm)
-        if key in self._active:
-            return unknown
-        if self.external and isinstance(unknown, tuple):
-            marker = self.placeholder(parm)
-            if marker is not None:
-                return (marker,)  # type: ignore[return-value]
-        self._active.add(key)
-        try:
-            values = [read(arg, scope) for arg, scope in self._arguments(parm)]
-        finally:
-            self._active.discard(key)
-        if not values or any(v != values[0] for v in values):
-            return unknown
-        return values[0]
-
-    def placeholder(self, parm: Cursor) -> str | None:
-        """The placeholder part of ``parm`` when no call in this file calls its function
-        (other files of the node may), else None."""
-        function = parm.semantic_parent
-        if function is None or function.kind not in _CALLABLE or (
-            self._sites().get(_key(function.canonical))
-        ):
-            return None
-        params = [c for c in function.get_children() if c.kind == CursorKind.PARM_DECL]
-        index = next((i for i, p in enumerate(params) if p.spelling == parm.spelling), None)
-        usr = function.canonical.get_usr()
-        if index is None or not usr or PLACEHOLDER in usr or SEPARATOR in usr:
-            return None
-        return f"{PLACEHOLDER}{usr}{SEPARATOR}{index}{PLACEHOLDER}"
-
-    def external_sites(self) -> Iterator[tuple[Cursor, Cursor, Cursor]]:
-        """(callee, call, caller) for the calls of functions not defined here."""
-        defined = {_key(f.canonical) for f in self.functions}
-        for key, sites in self._sites().items():
-            if key in defined:
-                continue
-            for call, caller in sites:
-                callee = _callee(call)
-                if callee is not None:
-                    yield callee, call, caller
-
-    def scope(self, function: Cursor) -> Scope:
-        return self._scope(function)
-
-    def _arguments(self, parm: Cursor) -> list[tuple[Cursor, Scope]]:
-        function = parm.semantic_parent
-        if function is None:
-            return []
-        params = [c for c in function.get_children() if c.kind == CursorKind.PARM_DECL]
-        index = next((i for i, p in enumerate(params) if p.spelling == parm.spelling), None)
-        sites = self._sites().get(_key(function.canonical), [])
-        if index is None or len(sites) > self.MAX_SITES:
-            return []
-        found = []
-        for call, caller in sites:
-            args = list(call.get_arguments())
-            if index >= len(args) or is_default_argument(args[index]):
-                return []  # a call that does not say: the value is not known
-            found.append((args[index], self._scope(caller)))
-        return found
-
-    def _sites(self) -> dict[tuple[str, int], list[tuple[Cursor, Cursor]]]:
-        if self._index is None:
-            self._index = {}
-            for function in self.functions:
-                for node in function.walk_preorder():
-                    callee = _callee(node) if node.kind == CursorKind.CALL_EXPR else None
-                    if callee is not None:
-                        self._index.setdefault(_key(callee.canonical), []).append(
-                            (node, function))
-        return self._index
-
-    def _scope(self, function: Cursor) -> Scope:
-        key = _key(function)
-        if key not in self._scopes:
-            self._scopes[key] = Scope(function, self.macros, self.source, self)
-        return self._scopes[key]
-
-
-_CALLABLE = frozenset({CursorKind.FUNCTION_DECL, CursorKind.CXX_METHOD, CursorKind.CONSTRUCTOR,
-                       CursorKind.FUNCTION_TEMPLATE})
-_MAKERS = frozenset({"make_shared", "make_unique", "allocate_shared"})
-
-
-def _callee(call: Cursor) -> Cursor | None:
-    """The function a call calls; for ``std::make_shared<T>(args)`` / ``make_unique``
-    (std or boost) the one constructor of ``T`` that takes as many arguments."""
-    target = call.referenced
-    if target is None or target.kind not in _CALLABLE:
-        return None
-    if target.spelling not in _MAKERS or target.kind == CursorKind.CONSTRUCTOR:
-        return target
-    ctype = call.type.get_canonical()
-    if ctype.kind != TypeKind.RECORD or ctype.get_num_template_arguments() < 1:
-        return None
-    decl = ctype.get_template_argument_type(0).get_canonical().get_declaration()
-    count = len(written_arguments(call))
-    found = [c for c in decl.get_children() if c.kind == CursorKind.CONSTRUCTOR
-             and len([p for p in c.get_children() if p.kind == CursorKind.PARM_DECL]) == count]
-    return found[0] if len(found) == 1 else None
-
-
 def initializer(decl: Cursor) -> Cursor | None:
     """The expression a variable declaration initialises it with, if any."""
     exprs = [c for c in decl.get_children() if c.kind.is_expression()]
@@ -404,6 +298,27 @@ def _string_constant(decl: Cursor) -> bool:
         ctype.get_pointee().get_canonical().kind in (TypeKind.CHAR_S, TypeKind.CHAR_U))
 
 
+def _may_write(call: Cursor, index: int) -> bool:
+    """Whether the call may change a variable passed as its argument ``index``: unless
+    the parameter is a value or a const reference (``make_shared<T>(args)`` forwards to
+    a constructor, which takes names by value or const reference)."""
+    target = call.referenced
+    if target is None:
+        return True
+    if target.spelling in ("make_shared", "make_unique", "allocate_shared"):
+        return False
+    ftype = target.type
+    if ftype.kind != TypeKind.FUNCTIONPROTO:
+        return True
+    types = list(ftype.argument_types())
+    if index >= len(types):
+        return True  # a C variadic
+    ptype = types[index]
+    if ptype.kind == TypeKind.LVALUEREFERENCE:
+        return not ptype.get_pointee().is_const_qualified()
+    return False
+
+
 def _default_constructed(init: Cursor) -> bool:
     init = strip(init)
     return (init.kind == CursorKind.CALL_EXPR and init.referenced is not None
@@ -419,7 +334,7 @@ def _plain_value(decl: Cursor) -> bool:
     return ctype.kind != TypeKind.RECORD or ctype.get_declaration().spelling == "basic_string"
 
 
-def _key(decl: Cursor) -> tuple[str, int]:
+def key_of(decl: Cursor) -> tuple[str, int]:
     where = decl.location
     return (where.file.name if where.file else "", where.offset)
 

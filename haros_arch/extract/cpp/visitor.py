@@ -19,6 +19,9 @@ from ...model.conditions import Condition
 from ...model.location import Location
 from ...model.source import PrimitiveCall
 from . import api, msg_types
+from .call_sites import CallSites
+from .call_types import CallTypes, template_argument
+from .call_types import callee as callee_of_call
 from .conditions import ConditionReader
 from .handles import (
     Namespaces,
@@ -26,13 +29,12 @@ from .handles import (
     callback_name,
     is_handle,
     join_name,
-    parameters,
     qualified_name,
     record_class,
 )
 from .links import Fact, argument_facts
 from .qos import qos as qos_of
-from .values import PLACEHOLDER, CallSites, Scope, render, strip, written_arguments
+from .values import PLACEHOLDER, Scope, initializer, render, strip, written_arguments
 
 _CONTAINERS = frozenset({
     CursorKind.NAMESPACE, CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL,
@@ -64,6 +66,7 @@ class CallFinder:
         self.reader = ConditionReader(source, where)
         self.macros: dict[str, str] = {}
         self.ros2 = ros2
+        self.types = CallTypes(ros2)
         self.namespaces = Namespaces(self.macros, source)
         self._fixed: set[tuple[str, str]] = set()  # fixed-name calls already found
         self._declared: dict[str, str] = {}  # ROS 2 parameter -> its declared default
@@ -78,11 +81,10 @@ class CallFinder:
     def run(self) -> None:
         self.functions = list(self._definitions(self.tu.cursor, top=True))
         self.sites = self.namespaces.sites = CallSites(self.functions, self.macros, self.source,
-                                                       external=not self.ros2)
+                                                       external=True)
         for function in self.functions:
             self._function(function)
-        if not self.ros2:
-            self.facts = argument_facts(self.sites, self.namespaces, self.owned)
+        self.facts = argument_facts(self.sites, self.namespaces, self.owned)
         for call in self.calls:  # get_parameter("p") of a declare_parameter("p", default)
             if call.name_param is not None and call.name_default is None:
                 call.name_default = self._declared.get(call.name_param)
@@ -101,7 +103,11 @@ class CallFinder:
                 yield cursor
             elif kind == CursorKind.FIELD_DECL:
                 self._field(cursor)
+                if initializer(cursor) is not None:
+                    yield cursor  # a default member initialiser: walked like a function
             elif kind in _CONTAINERS:
+                if cursor.spelling in ("TypeAdapter", "ImplicitTypeAdapter"):
+                    self.types.adapter(cursor)
                 yield from self._definitions(cursor)
 
     def _function(self, function: Cursor) -> None:
@@ -125,7 +131,7 @@ class CallFinder:
             return None, None
         key = (qualified_name(target.semantic_parent), target.spelling)
         if key in api.FACTORIES:
-            ref = self._template_argument(call)
+            ref = template_argument(call)
             decl = ref.type.get_canonical().get_declaration() if ref is not None else None
             if decl is None or decl.kind == CursorKind.NO_DECL_FOUND:
                 return None, None
@@ -134,7 +140,7 @@ class CallFinder:
             return api.ALL.get(key), call.type.get_canonical().get_declaration()
         spec = api.ALL.get(key)
         if spec is not None and "class" in spec.type_from:
-            callee = self._callee(call)
+            callee = callee_of_call(call)
             objects = [c for c in callee.get_children() if c.kind.is_expression()]
             return spec, record_class(objects[0]) if objects else None
         return spec, None
@@ -151,7 +157,7 @@ class CallFinder:
                 self.rosname = render(scope.string(args[index]))
             return
         if key in api.FACTORIES:
-            ref = self._template_argument(call)
+            ref = template_argument(call)
             decl = ref.type.get_canonical().get_declaration() if ref is not None else None
             if decl is not None:
                 key = (qualified_name(decl), decl.spelling)
@@ -194,7 +200,7 @@ class CallFinder:
                 target = node.referenced
                 row = api.OPTIONS.get((qualified_name(target.semantic_parent), node.spelling)
                                       ) if target is not None else None
-                callee = self._callee(node)
+                callee = callee_of_call(node)
                 objects = [c for c in callee.get_children() if c.kind.is_expression()]
                 if row is not None and objects and strip(objects[0]).referenced == decl:
                     found = scope if function == scope.body else Scope(
@@ -230,7 +236,7 @@ class CallFinder:
             return args[index + shift]
 
         site = at or call
-        callee = self._callee(site)
+        callee = callee_of_call(site)
         target = site.referenced
         location = self.where(site if target is not None and (
             target.kind == CursorKind.CONSTRUCTOR) else callee)
@@ -242,13 +248,21 @@ class CallFinder:
             names = [(spec.fixed_name, None)]
         else:
             name_expr = arg(spec.name_arg)
+            if spec.name_suffix is not None and name_expr is not None and (
+                msg_types.param_type(name_expr.type) != "str"
+            ):
+                name_expr = None  # SyncParametersClient(node, qos): no remote, the node
             for index in spec.name_candidates:
                 if index < len(args) and msg_types.param_type(args[index].type) == "str":
                     name_expr = args[index]
                     break
-            if name_expr is None:
+            if name_expr is None and spec.name_suffix is None:
                 return
-            names = self._names(spec, call, name_expr, args, scope)
+            names = [("", None)] if name_expr is None else self._names(
+                spec, call, name_expr, args, scope)
+            if spec.name_suffix is not None:  # a parameter client: the remote's services
+                names = [(join_name(name or "~", spec.name_suffix), source)
+                         for name, source in names]
         namespace: str | None = None
         if spec.fixed_name is None:
             if spec.on_handle:
@@ -257,7 +271,7 @@ class CallFinder:
                 namespace = render(self.namespaces.of(args[handle_arg], scope))
         function = callback(args, None if spec.callback_arg is None
                             else spec.callback_arg + shift)
-        ctype = self._type(spec, call, args, function, cls)
+        ctype = self.types.of_call(spec, call, args, function, cls, scope)
         qos = None
         queue = scope.integer(arg(spec.queue_arg)) if arg(spec.queue_arg) is not None else None
         if self.ros2 and arg(spec.qos_arg) is not None:
@@ -292,10 +306,13 @@ class CallFinder:
                 self.diagnostics.append(diag.make(
                     "CPP_DYNAMIC_NAME", location, kind=spec.kind, name=name))
             for kind, sibling, stype in spec.siblings:
-                full = sibling if sibling.startswith("/") else join_name(
-                    name.rpartition("/")[0] if "/" in name else "", sibling)
+                if spec.name_suffix is not None:  # beside it, in the remote node's name
+                    full = name.removesuffix(spec.name_suffix) + sibling
+                else:
+                    full = sibling if sibling.startswith("/") else join_name(
+                        name.rpartition("/")[0] if "/" in name else "", sibling)
                 self.calls.append(PrimitiveCall(
-                    kind=kind, name=full, type=self._ros_type(stype), queue_size=queue,
+                    kind=kind, name=full, type=self.types.ros_type(stype), queue_size=queue,
                     latch=latch, conditions=conditions, location=location))
 
     def _names(self, spec: api.RosFunction, call: Cursor, expr: Cursor, args: list[Cursor],
@@ -367,7 +384,7 @@ class CallFinder:
             return None
         name = render(scope.string(args[spec.name_arg]))
         if spec.on_handle:
-            name = join_name(render(self.namespaces.of_call(call, self._callee(call), scope)),
+            name = join_name(render(self.namespaces.of_call(call, callee_of_call(call), scope)),
                              name)
         default: str | None = None
         index = spec.default_arg
@@ -375,7 +392,7 @@ class CallFinder:
             index = spec.out_arg  # nh.param<T>(name, default) returns the value
         if index is not None and index < len(args):
             parts = scope.string(args[index])
-            if None not in parts:
+            if _known(parts):
                 default = render(parts)
         return (name, default)
 
@@ -396,7 +413,7 @@ class CallFinder:
             if value is not None:
                 return True, value
         parts = scope.string(expr)
-        return True, (render(parts) if parts and None not in parts else None)
+        return True, (render(parts) if parts and _known(parts) else None)
 
     def _field(self, field: Cursor) -> None:
         """A member whose mere construction is a primitive (a tf broadcaster)."""
@@ -407,68 +424,6 @@ class CallFinder:
         if spec is None or spec.fixed_name is None:
             return
         self._emit(spec, field, [], decl, (), Scope(None, self.macros, self.source, self.sites))
-
-    @staticmethod
-    def _callee(call: Cursor) -> Cursor:
-        children = list(call.get_children())
-        return strip(children[0]) if children else call
-
-    def _ros_type(self, name: str) -> str:
-        """A ROS 1 type name, written the ROS 2 way (``pkg/msg/Name``) in a ROS 2 node."""
-        if not self.ros2 or name.count("/") != 1:
-            return name
-        package, base = name.split("/")
-        return f"{package}/msg/{base}"
-
-    def _type(self, spec: api.RosFunction, call: Cursor, args: list[Cursor],
-              function: Cursor | None, cls: Cursor | None) -> str | None:
-        found = self._declared_type(spec, call, args, function, cls)
-        if found is not None and spec.action_type and found.endswith("Action"):
-            found = found.removesuffix("Action")
-        if found is None and spec.fixed_type is not None:
-            found = self._ros_type(spec.fixed_type)
-        return found
-
-    def _declared_type(self, spec: api.RosFunction, call: Cursor, args: list[Cursor],
-                       function: Cursor | None, cls: Cursor | None) -> str | None:
-        for source in spec.type_from:
-            found: str | None = None
-            if source in ("template", "template-value"):
-                ref = self._template_argument(call)
-                if ref is not None:
-                    found = (msg_types.message_type(ref.type) if source == "template"
-                             else msg_types.param_type(ref.type))
-            elif source == "class" and cls is not None:
-                ctype = cls.type
-                if ctype.get_num_template_arguments() > 0:
-                    found = msg_types.message_type(ctype.get_template_argument_type(0))
-            elif source in ("callback", "service-callback") and function is not None:
-                params = parameters(function)
-                if source == "service-callback" and len(params) == 3:
-                    params = params[1:]  # ROS 2: (request header, request, response)
-                if params:
-                    found = msg_types.message_type(params[0], source == "service-callback")
-            elif source in ("arg", "value") and spec.type_arg is not None and (
-                spec.type_arg < len(args)
-            ):
-                ctype = strip(args[spec.type_arg]).type
-                found = (msg_types.message_type(ctype) if source == "arg"
-                         else msg_types.param_type(ctype))
-            if found is not None:
-                return found
-        return None
-
-    def _template_argument(self, call: Cursor) -> Cursor | None:
-        """The first type written as a template argument of the called function."""
-        callee = self._callee(call)
-        target = call.referenced
-        owner = target.semantic_parent if target is not None else None
-        for child in callee.get_children():
-            if child.kind == CursorKind.TYPE_REF and (
-                owner is None or child.referenced != owner  # not ``Class::`` of Class::f<M>
-            ):
-                return child
-        return None
 
 
 def _creator(expr: Cursor, depth: int = 0) -> tuple[api.RosFunction, Cursor] | None:
@@ -482,6 +437,11 @@ def _creator(expr: Cursor, depth: int = 0) -> tuple[api.RosFunction, Cursor] | N
         return (row, expr) if row is not None else None
     inner = [c for c in expr.get_children() if c.kind.is_expression()]
     return _creator(inner[-1], depth + 1) if len(inner) == 1 else None
+
+
+def _known(parts: tuple[str | None, ...]) -> bool:
+    """A value with no unknown part and no placeholder for what other calls pass."""
+    return all(part is not None and PLACEHOLDER not in part for part in parts)
 
 
 def _private(name: str) -> str:

@@ -30,8 +30,10 @@
 #define CV_GRAY2BGR 8
 #define CV_BGR2RGB 4
 #define CV_WINDOW_AUTOSIZE 1
+typedef unsigned char uchar;  // global in OpenCV (cvdef.h)
+typedef unsigned short ushort;
 namespace cv {
-typedef unsigned char uchar;
+using ::uchar;
 template<class T> class Point_ {
 public:
   Point_(); Point_(T x, T y);
@@ -76,6 +78,8 @@ public:
   Mat clone() const;
   void copyTo(Mat& m) const;
   void copyTo(Mat& m, const Mat& mask) const;
+  void copyTo(Mat&& m) const;  // a region of another matrix
+  void copyTo(Mat&& m, const Mat& mask) const;
   void convertTo(Mat& m, int rtype, double alpha = 1, double beta = 0) const;
   Mat reshape(int cn, int rows = 0) const;
   Mat row(int y) const;
@@ -105,6 +109,8 @@ public:
   static Mat eye(int rows, int cols, int type);
   int rows, cols, dims, flags;
   uchar* data;
+  const uchar* datastart;
+  const uchar* dataend;
   size_t step;
 };
 typedef Mat InputArray;
@@ -117,7 +123,9 @@ Mat operator-(const Mat& a, const Mat& b);
 Mat operator*(const Mat& a, const Mat& b);
 Mat operator*(const Mat& a, double s);
 enum { COLOR_BGR2GRAY = 6, COLOR_RGB2GRAY = 7, COLOR_GRAY2BGR = 8, COLOR_BGR2RGB = 4,
-       COLOR_RGB2BGR = 4, COLOR_BGR2HSV = 40, COLOR_HSV2BGR = 54, COLOR_BGRA2BGR = 1 };
+       COLOR_RGB2BGR = 4, COLOR_BGR2HSV = 40, COLOR_HSV2BGR = 54, COLOR_BGRA2BGR = 1,
+       COLOR_YUV2BGR_UYVY = 108, COLOR_YUV2BGR_YUYV = 116 };
+enum CmpTypes { CMP_EQ = 0, CMP_GT = 1, CMP_GE = 2, CMP_LT = 3, CMP_LE = 4, CMP_NE = 5 };
 enum { INTER_NEAREST = 0, INTER_LINEAR = 1, INTER_CUBIC = 2, INTER_AREA = 3 };
 enum { THRESH_BINARY = 0, THRESH_BINARY_INV = 1, THRESH_OTSU = 8 };
 enum { WINDOW_NORMAL = 0, WINDOW_AUTOSIZE = 1 };
@@ -125,7 +133,11 @@ enum { LINE_8 = 8, LINE_AA = 16, FILLED = -1 };
 enum { FONT_HERSHEY_SIMPLEX = 0, FONT_HERSHEY_PLAIN = 1 };
 enum { RETR_EXTERNAL = 0, RETR_LIST = 1, RETR_TREE = 3, CHAIN_APPROX_SIMPLE = 2 };
 enum { CAP_PROP_FRAME_WIDTH = 3, CAP_PROP_FRAME_HEIGHT = 4, CAP_PROP_FPS = 5 };
-enum { IMREAD_COLOR = 1, IMREAD_GRAYSCALE = 0, IMREAD_UNCHANGED = -1 };
+enum ImreadModes { IMREAD_COLOR = 1, IMREAD_GRAYSCALE = 0, IMREAD_UNCHANGED = -1 };
+Mat imdecode(const std::vector<uchar>& buf, int flags);
+int floodFill(Mat& image, Point seed, const Scalar& value);
+void compare(const Mat& a, double b, Mat& dst, int cmpop);
+void compare(const Mat& a, const Mat& b, Mat& dst, int cmpop);
 void cvtColor(const Mat& src, Mat& dst, int code, int dst_cn = 0);
 void resize(const Mat& src, Mat& dst, Size size, double fx = 0, double fy = 0, int interpolation = 1);
 void GaussianBlur(const Mat& src, Mat& dst, Size ksize, double sx, double sy = 0, int border = 4);

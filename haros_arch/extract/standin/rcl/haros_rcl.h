@@ -16,6 +16,18 @@ typedef int rcl_ret_t;
 typedef struct rcutils_error_string_t { char str[1024]; } rcutils_error_string_t;
 rcutils_error_string_t rcutils_get_error_string(void);
 void rcutils_reset_error(void);
+typedef rcutils_error_string_t rcl_error_string_t;
+rcl_error_string_t rcl_get_error_string(void);
+void rcl_reset_error(void);
+typedef struct rcutils_allocator_s { void* state; } rcutils_allocator_t;
+typedef rcutils_allocator_t rcl_allocator_t;
+rcutils_allocator_t rcutils_get_default_allocator(void);
+rcl_allocator_t rcl_get_default_allocator(void);
+#define RCUTILS_RET_LOGGING_SEVERITY_STRING_INVALID 1040
+#define RCUTILS_RET_LOGGING_SEVERITY_MAP_INVALID 1041
+rcutils_ret_t rcutils_logging_severity_level_from_string(const char* severity_string,
+                                                         rcutils_allocator_t allocator,
+                                                         int* severity);
 bool rcutils_error_is_set(void);
 bool rcutils_cli_option_exist(char** begin, char** end, const char* option);
 char* rcutils_cli_get_option(char** begin, char** end, const char* option);

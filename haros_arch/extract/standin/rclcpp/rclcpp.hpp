@@ -10,6 +10,8 @@
 #include <vector>
 #include <rmw/qos_profiles.h>
 #include <rcl/haros_rcl.h>
+#include <rclcpp/serialization.hpp>
+#include <rclcpp/type_adapter.hpp>
 #define RCLCPP_SMART_PTR_DEFINITIONS(T) \
   using SharedPtr = std::shared_ptr<T>; using ConstSharedPtr = std::shared_ptr<const T>; \
   using UniquePtr = std::unique_ptr<T>; using WeakPtr = std::weak_ptr<T>;
@@ -25,6 +27,7 @@ struct ParameterDescriptor {
   std::vector<Range> floating_point_range; std::vector<Range> integer_range;
 };
 struct SetParametersResult { bool successful; std::string reason; };
+struct ListParametersResult { std::vector<std::string> names; std::vector<std::string> prefixes; };
 struct FloatingPointRange { double from_value, to_value, step; };
 struct IntegerRange { long from_value, to_value, step; };
 } }
@@ -293,6 +296,10 @@ public:
   RCLCPP_SMART_PTR_DEFINITIONS(Publisher)
   void publish(const M& msg);
   void publish(std::unique_ptr<M> msg);
+  void publish(const SerializedMessage& msg);
+  template<class T> void publish(const T& msg);  // an adapted type's custom type
+  bool assert_liveliness() const;
+  rclcpp::QoS get_actual_qos() const;
   bool can_loan_messages() const;
   struct LoanedMessage { M& get(); bool is_valid() const; };
   LoanedMessage borrow_loaned_message();
@@ -310,8 +317,13 @@ public:
   void set_content_filter(const std::string& expression,
                           const std::vector<std::string>& parameters = {});
   detail::ContentFilterOptions get_content_filter() const;
+  rclcpp::QoS get_actual_qos() const;
 };
-class GenericPublisher : public PublisherBase { public: RCLCPP_SMART_PTR_DEFINITIONS(GenericPublisher) };
+class GenericPublisher : public PublisherBase {
+public:
+  RCLCPP_SMART_PTR_DEFINITIONS(GenericPublisher)
+  void publish(const SerializedMessage& msg);
+};
 class GenericSubscription : public SubscriptionBase { public: RCLCPP_SMART_PTR_DEFINITIONS(GenericSubscription) };
 class ServiceBase { public: RCLCPP_SMART_PTR_DEFINITIONS(ServiceBase) };
 template<class S> class Service : public ServiceBase {
@@ -388,6 +400,9 @@ using OnSetParametersCallbackHandle = node_interfaces::OnSetParametersCallbackHa
 // the node: its primitives are what the extractor's API table lists
 #define HAROS_RCLCPP_NODE_API(NodeT) \
   const char* get_name() const; \
+  const rclcpp::NodeOptions& get_node_options() const; \
+  rcl_interfaces::msg::ListParametersResult list_parameters( \
+      const std::vector<std::string>& prefixes, uint64_t depth) const; \
   const char* get_namespace() const; \
   const char* get_fully_qualified_name() const; \
   rclcpp::Logger get_logger() const; \
@@ -609,6 +624,10 @@ public:
       const rcl_interfaces::msg::ParameterEvent& event);
 };
 class WaitSet { public: WaitSet(); };
+class UnsupportedEventTypeException : public std::runtime_error {
+public:
+  explicit UnsupportedEventTypeException(const std::string& what);
+};
 }  // namespace rclcpp
 #define HAROS_RCLCPP_LOG(logger, ...) ::rclcpp::haros::log(logger, __VA_ARGS__)
 #define HAROS_RCLCPP_STREAM(logger, args) do { std::stringstream haros_ss; haros_ss << args; } while (0)
@@ -626,6 +645,8 @@ class WaitSet { public: WaitSet(); };
 #define RCLCPP_WARN_THROTTLE(logger, clock, ms, ...) HAROS_RCLCPP_LOG(logger, __VA_ARGS__)
 #define RCLCPP_ERROR_THROTTLE(logger, clock, ms, ...) HAROS_RCLCPP_LOG(logger, __VA_ARGS__)
 #define RCLCPP_DEBUG_EXPRESSION(logger, e, ...) HAROS_RCLCPP_LOG(logger, __VA_ARGS__)
+#define RCLCPP_DEBUG_FUNCTION(logger, f, ...) HAROS_RCLCPP_LOG(logger, __VA_ARGS__)
+#define RCLCPP_INFO_FUNCTION(logger, f, ...) HAROS_RCLCPP_LOG(logger, __VA_ARGS__)
 #define RCLCPP_INFO_EXPRESSION(logger, e, ...) HAROS_RCLCPP_LOG(logger, __VA_ARGS__)
 #define RCLCPP_WARN_EXPRESSION(logger, e, ...) HAROS_RCLCPP_LOG(logger, __VA_ARGS__)
 #define RCLCPP_DEBUG_STREAM(logger, args) HAROS_RCLCPP_STREAM(logger, args)

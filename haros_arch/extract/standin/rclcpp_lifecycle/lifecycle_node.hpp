@@ -9,6 +9,7 @@ public:
   RCLCPP_SMART_PTR_DEFINITIONS(LifecyclePublisher)
   void on_activate();
   void on_deactivate();
+  bool is_activated() const;
 };
 namespace node_interfaces { struct LifecycleNodeInterface {
   enum class CallbackReturn { SUCCESS, FAILURE, ERROR };
@@ -23,6 +24,13 @@ public:
                 const rclcpp::NodeOptions& options = rclcpp::NodeOptions());
   virtual ~LifecycleNode();
   HAROS_RCLCPP_NODE_API(LifecycleNode)
+  using CallbackReturn = node_interfaces::LifecycleNodeInterface::CallbackReturn;
+  virtual CallbackReturn on_configure(const State& state);
+  virtual CallbackReturn on_activate(const State& state);
+  virtual CallbackReturn on_deactivate(const State& state);
+  virtual CallbackReturn on_cleanup(const State& state);
+  virtual CallbackReturn on_shutdown(const State& state);
+  virtual CallbackReturn on_error(const State& state);
   const State& configure();
   const State& activate();
   const State& deactivate();

@@ -19,7 +19,8 @@ void spin();
 void spinOnce();
 void waitForShutdown();
 void start();
-CallbackQueueInterface* getGlobalCallbackQueue();
+class CallbackQueue;
+CallbackQueue* getGlobalCallbackQueue();
 namespace this_node {
 const std::string& getName();
 const std::string& getNamespace();

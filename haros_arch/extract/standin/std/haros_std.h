@@ -667,6 +667,7 @@ public:
   istream& operator>>(int& v);
   istream& operator>>(unsigned& v);
   istream& operator>>(long& v);
+  istream& operator>>(unsigned long& v);
   istream& operator>>(float& v);
   istream& operator>>(double& v);
   istream& operator>>(string& s);
@@ -798,6 +799,8 @@ template<class R1, class P1, class R2, class P2>
 bool operator>=(const duration<R1, P1>& a, const duration<R2, P2>& b);
 template<class R1, class P1, class R2, class P2>
 bool operator==(const duration<R1, P1>& a, const duration<R2, P2>& b);
+template<class R1, class P1, class R2, class P2>
+bool operator!=(const duration<R1, P1>& a, const duration<R2, P2>& b);
 typedef duration<long, nano> nanoseconds;
 typedef duration<long, micro> microseconds;
 typedef duration<long, milli> milliseconds;
@@ -956,6 +959,8 @@ template<class T> class shared_future {
 public:
   shared_future() noexcept;
   shared_future(future<T>&& f) noexcept;
+  template<class U> shared_future(future<U>&& f) noexcept;  // std::async's result
+  shared_future share() const noexcept;
   const T& get() const;
   bool valid() const noexcept;
   void wait() const;

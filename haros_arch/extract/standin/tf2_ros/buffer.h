@@ -20,16 +20,60 @@ class ExtrapolationException : public TransformException { public: using Transfo
 class InvalidArgumentException : public TransformException { public: using TransformException::TransformException; };
 struct TimePointZero_t {};
 extern const TimePointZero_t TimePointZero;
+typedef double tf2Scalar;
 class Quaternion {
 public:
   Quaternion();
   Quaternion(double x, double y, double z, double w);
   void setRPY(double roll, double pitch, double yaw);
+  void setRotation(const class Vector3& axis, double angle);
   double x() const; double y() const; double z() const; double w() const;
+  double getAngle() const;
   Quaternion normalized() const;
+  Quaternion inverse() const;
+  Quaternion operator*(const Quaternion& q) const;
 };
-class Vector3 { public: Vector3(); Vector3(double x, double y, double z); double x() const; double y() const; double z() const; };
-class Transform { public: Transform(); void setOrigin(const Vector3& v); void setRotation(const Quaternion& q); };
+class Vector3 {
+public:
+  Vector3(); Vector3(double x, double y, double z);
+  double x() const; double y() const; double z() const;
+  double getX() const; double getY() const; double getZ() const;
+  void setX(double v); void setY(double v); void setZ(double v);
+  void setValue(double x, double y, double z);
+  double length() const; double length2() const;
+  Vector3 operator+(const Vector3& v) const; Vector3 operator-(const Vector3& v) const;
+  Vector3 operator*(double s) const;
+  double operator[](int i) const; double& operator[](int i);
+};
+class Matrix3x3 {
+public:
+  Matrix3x3(); explicit Matrix3x3(const Quaternion& q);
+  void getRPY(double& roll, double& pitch, double& yaw, unsigned int solution = 1) const;
+  void getEulerYPR(double& yaw, double& pitch, double& roll, unsigned int solution = 1) const;
+  void getRotation(Quaternion& q) const;
+  void setRPY(double roll, double pitch, double yaw);
+  const Vector3& operator[](int i) const;
+};
+class Transform {
+public:
+  Transform(); Transform(const Quaternion& q, const Vector3& v = Vector3());
+  void setOrigin(const Vector3& v); void setRotation(const Quaternion& q);
+  void setIdentity();
+  Vector3& getOrigin(); const Vector3& getOrigin() const;
+  Quaternion getRotation() const;
+  Matrix3x3& getBasis(); const Matrix3x3& getBasis() const;
+  Transform inverse() const;
+  Transform inverseTimes(const Transform& t) const;
+  Transform operator*(const Transform& t) const;
+  Vector3 operator*(const Vector3& v) const;
+  static const Transform& getIdentity();
+};
+template<class T> class Stamped : public T {
+public:
+  Stamped(); Stamped(const T& input, const ros::Time& stamp, const std::string& frame_id);
+  ros::Time stamp_; std::string frame_id_;
+};
+double angle(const Quaternion& a, const Quaternion& b);
 template<class A, class B> void fromMsg(const A& a, B& b);
 template<class A> A toMsg(const A& a);
 template<class A, class B> B& toMsg(const A& a, B& b);
@@ -49,6 +93,8 @@ public:
   template<class M, class... A> M& transform(const M& in, M& out, const std::string& target, A&&... more) const;
   template<class M, class... A> M transform(const M& in, const std::string& target, A&&... more) const;
   void setUsingDedicatedThread(bool v);
+  template<class M> bool setTransform(const M& transform, const std::string& authority,
+                                      bool is_static = false);
   template<class I> void setCreateTimerInterface(I i);
 };
 class TransformListener {

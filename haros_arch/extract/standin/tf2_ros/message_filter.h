@@ -17,5 +17,6 @@ public:
   template<class D> void setTolerance(const D& tolerance);
   void setQueueSize(uint32_t size);
   void clear();
+  template<class P> void add(const P& message);
 };
 }  // namespace tf2_ros

@@ -1,0 +1,234 @@
+"""The calls of a file's own functions, so that a parameter's value can be read where the
+function is called, and the values a constructor gives a class's members.
+
+``setup(nh, "scan")`` makes ``topic`` of ``void setup(NodeHandle& nh, const std::string&
+topic)`` the string ``scan``. A constructor is called by ``T obj(args)``, ``new T(args)``
+and ``std::make_shared<T>(args)`` / ``make_unique`` (std or boost); an argument a call
+leaves out is the parameter's default. When the calls disagree, or no call in the file
+calls the function (a node's other files may), a string parameter is a placeholder part
+(see ``values.PLACEHOLDER``) that ``links.resolve`` fills with each value the node's
+files pass: one ROS call per value.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterator
+
+from clang.cindex import Cursor, CursorKind, TypeKind
+
+from .values import (
+    PLACEHOLDER,
+    SEPARATOR,
+    Scope,
+    Value,
+    initializer,
+    is_default_argument,
+    key_of,
+    strip,
+    written_arguments,
+)
+
+_CALLABLE = frozenset({CursorKind.FUNCTION_DECL, CursorKind.CXX_METHOD, CursorKind.CONSTRUCTOR,
+                       CursorKind.FUNCTION_TEMPLATE})
+_MAKERS = frozenset({"make_shared", "make_unique", "allocate_shared"})
+
+
+class CallSites:
+    """The calls of the functions of one translation unit, by the function they call."""
+
+    MAX_SITES = 16
+
+    def __init__(self, functions: list[Cursor], macros: dict[str, str],
+                 source: dict[str, bytes], external: bool = False) -> None:
+        self.functions = functions
+        self.macros = macros
+        self.source = source
+        # a string parameter whose value is not one the file agrees on: a placeholder
+        # part that the calls in the node's files fill (``links``)
+        self.external = external
+        self.marked: set[tuple[str, int]] = set()  # functions given a placeholder
+        self._index: dict[tuple[str, int], list[tuple[Cursor, Cursor]]] | None = None
+        self._scopes: dict[tuple[str, int], Scope] = {}
+        self._active: set[tuple[str, int]] = set()  # parameters being read (recursion)
+
+    def agreed(self, parm: Cursor, read: Callable[[Cursor, Scope], Value],
+               unknown: Value) -> Value:
+        """``read`` of the argument each call passes for ``parm``, when all agree."""
+        key = key_of(parm)
+        if key in self._active:
+            return unknown
+        strings = self.external and isinstance(unknown, tuple)
+        if strings and not self._sites().get(self._function_key(parm)):
+            marker = self.placeholder(parm)
+            if marker is not None:
+                return (marker,)  # type: ignore[return-value]
+        self._active.add(key)
+        try:
+            values = [read(arg, scope) for arg, scope in self._arguments(parm)]
+        finally:
+            self._active.discard(key)
+        if values and all(v == values[0] for v in values):
+            return values[0]
+        if strings and len(values) > 1:
+            marker = self.placeholder(parm)
+            if marker is not None:
+                return (marker,)  # type: ignore[return-value]
+        return unknown
+
+    def placeholder(self, parm: Cursor) -> str | None:
+        """The placeholder part of ``parm`` (None for a parameter of no function)."""
+        function = parm.semantic_parent
+        if function is None or function.kind not in _CALLABLE:
+            return None
+        index = _index_of(function, parm)
+        usr = function.canonical.get_usr()
+        if index is None or not usr or PLACEHOLDER in usr or SEPARATOR in usr:
+            return None
+        self.marked.add(key_of(function.canonical))
+        return f"{PLACEHOLDER}{usr}{SEPARATOR}{index}{PLACEHOLDER}"
+
+    def passing_sites(self, done: set[tuple[str, int]]
+                      ) -> Iterator[tuple[Cursor, Cursor, Cursor]]:
+        """(callee, call, caller) for the calls of functions not defined here and of
+        those given a placeholder, except the functions in ``done``."""
+        defined = {key_of(f.canonical) for f in self.functions}
+        for key, sites in list(self._sites().items()):
+            if key in done or (key in defined and key not in self.marked):
+                continue
+            for call, caller in sites:
+                callee = callee_of(call)
+                if callee is not None:
+                    yield callee, call, caller
+
+    def scope(self, function: Cursor) -> Scope:
+        key = key_of(function)
+        if key not in self._scopes:
+            self._scopes[key] = Scope(function, self.macros, self.source, self)
+        return self._scopes[key]
+
+    def field(self, field: Cursor) -> tuple[Cursor, Scope] | None:
+        """What a member holds: the value a constructor of its class initialises or
+        assigns it with (read in that constructor), else its default initialiser."""
+        found = member_initialiser(field)
+        if found is not None:
+            value, constructor = found
+            return value, self.scope(constructor)
+        value = initializer(field)
+        return (value, Scope(None, self.macros, self.source, self)) if value is not None \
+            else None
+
+    def _function_key(self, parm: Cursor) -> tuple[str, int]:
+        function = parm.semantic_parent
+        return key_of(function.canonical) if function is not None else ("", -1)
+
+    def _arguments(self, parm: Cursor) -> list[tuple[Cursor, Scope]]:
+        function = parm.semantic_parent
+        if function is None:
+            return []
+        index = _index_of(function, parm)
+        sites = self._sites().get(key_of(function.canonical), [])
+        if index is None or len(sites) > self.MAX_SITES:
+            return []
+        found = []
+        for call, caller in sites:
+            arg = argument(call, parm, index)
+            if arg is None:
+                return []  # a call that does not say: the value is not known
+            found.append((arg, self.scope(caller)))
+        return found
+
+    def _sites(self) -> dict[tuple[str, int], list[tuple[Cursor, Cursor]]]:
+        if self._index is None:
+            self._index = {}
+            for function in self.functions:
+                for node in function.walk_preorder():
+                    callee = callee_of(node) if node.kind == CursorKind.CALL_EXPR else None
+                    if callee is not None:
+                        self._index.setdefault(key_of(callee.canonical), []).append(
+                            (node, function))
+        return self._index
+
+
+def argument(call: Cursor, parm: Cursor, index: int) -> Cursor | None:
+    """What ``call`` passes for parameter ``parm`` (at ``index``): the written argument,
+    or the parameter's default when the call leaves it out."""
+    args = list(call.get_arguments())
+    if index < len(args) and not is_default_argument(args[index]):
+        return args[index]
+    return default_argument(parm)
+
+
+def default_argument(parm: Cursor) -> Cursor | None:
+    """The default value a parameter declaration gives (on any declaration of it)."""
+    function = parm.semantic_parent
+    if function is None:
+        return None
+    index = _index_of(function, parm)
+    declarations = [function, function.canonical]
+    definition = function.get_definition()
+    if definition is not None:
+        declarations.append(definition)
+    for declaration in declarations:
+        params = [c for c in declaration.get_children() if c.kind == CursorKind.PARM_DECL]
+        if index is not None and index < len(params):
+            value = [c for c in params[index].get_children() if c.kind.is_expression()]
+            if value:
+                return value[-1]
+    return None
+
+
+def callee_of(call: Cursor) -> Cursor | None:
+    """The function a call calls; for ``std::make_shared<T>(args)`` / ``make_unique``
+    (std or boost) the one constructor of ``T`` that takes that many arguments (with
+    its defaults)."""
+    target = call.referenced
+    if target is None or target.kind not in _CALLABLE:
+        return None
+    if target.spelling not in _MAKERS or target.kind == CursorKind.CONSTRUCTOR:
+        return target
+    ctype = call.type.get_canonical()
+    if ctype.kind != TypeKind.RECORD or ctype.get_num_template_arguments() < 1:
+        return None
+    decl = ctype.get_template_argument_type(0).get_canonical().get_declaration()
+    count = len(written_arguments(call))
+    found = [c for c in decl.get_children()
+             if c.kind == CursorKind.CONSTRUCTOR and _takes(c, count)]
+    return found[0] if len(found) == 1 else None
+
+
+def member_initialiser(field: Cursor) -> tuple[Cursor, Cursor] | None:
+    """What a constructor of ``field``'s class initialises or assigns it with, and the
+    constructor (its definition, where this file has it)."""
+    owner = field.semantic_parent
+    if owner is None:
+        return None
+    for member in owner.get_children():
+        if member.kind != CursorKind.CONSTRUCTOR:
+            continue
+        definition = member.get_definition()
+        if definition is None:
+            continue
+        children = list(definition.get_children())
+        for i, child in enumerate(children[:-1]):
+            if child.kind == CursorKind.MEMBER_REF and child.referenced == field:
+                return children[i + 1], definition
+        for node in definition.walk_preorder():
+            if node.kind == CursorKind.CALL_EXPR and node.spelling == "operator=":
+                args = list(node.get_arguments())
+                if len(args) == 2 and strip(args[0]).kind == CursorKind.MEMBER_REF_EXPR and (
+                    strip(args[0]).referenced == field
+                ):
+                    return args[1], definition
+    return None
+
+
+def _takes(constructor: Cursor, count: int) -> bool:
+    params = [p for p in constructor.get_children() if p.kind == CursorKind.PARM_DECL]
+    required = sum(1 for p in params if not any(c.kind.is_expression()
+                                                for c in p.get_children()))
+    return required <= count <= len(params)
+
+
+def _index_of(function: Cursor, parm: Cursor) -> int | None:
+    params = [c for c in function.get_children() if c.kind == CursorKind.PARM_DECL]
+    return next((i for i, p in enumerate(params) if p.spelling == parm.spelling), None)

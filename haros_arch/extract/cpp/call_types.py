@@ -1,0 +1,115 @@
+"""The ROS type a primitive call gives its topic, service, action or parameter.
+
+Read from the sources its API row names (``api.RosFunction.type_from``): a template
+argument, the class the call is made on or constructs, the callback's parameter, an
+argument's C++ type, or an argument that names the type as a string
+(``create_generic_publisher(topic, "std_msgs/msg/String", qos)``). A custom type that a
+``rclcpp::TypeAdapter`` specialisation of the translation unit adapts is its ROS type.
+"""
+
+from __future__ import annotations
+
+from clang.cindex import Cursor, CursorKind, Type
+
+from . import api, msg_types
+from .handles import parameters
+from .values import Scope, render, strip
+
+_INTERFACE = ("msg", "srv", "action")
+
+
+class CallTypes:
+    """Types of the calls of one translation unit (ROS 1 or ROS 2 spelling)."""
+
+    def __init__(self, ros2: bool) -> None:
+        self.ros2 = ros2
+        self.adapters: dict[str, Type] = {}  # custom type's spelling -> ROS message type
+
+    def adapter(self, specialisation: Cursor) -> None:
+        """Record what a ``TypeAdapter`` / ``ImplicitTypeAdapter`` specialisation adapts."""
+        found = msg_types.adapted_types(specialisation)
+        if found is not None:
+            self.adapters[found[0]] = found[1]
+
+    def ros_type(self, name: str) -> str:
+        """A ROS 1 type name, written the ROS 2 way (``pkg/msg/Name``) in a ROS 2 node."""
+        if not self.ros2 or name.count("/") != 1:
+            return name
+        package, base = name.split("/")
+        return f"{package}/msg/{base}"
+
+    def of_call(self, spec: api.RosFunction, call: Cursor, args: list[Cursor],
+                function: Cursor | None, cls: Cursor | None, scope: Scope) -> str | None:
+        found = self._declared(spec, call, args, function, cls, scope)
+        if found is not None and spec.action_type and found.endswith("Action"):
+            found = found.removesuffix("Action")
+        if found is None and spec.fixed_type is not None:
+            found = self.ros_type(spec.fixed_type)
+        return found
+
+    def _message(self, ctype: Type, service: bool = False) -> str | None:
+        return msg_types.message_type(ctype, service, self.adapters)
+
+    def _declared(self, spec: api.RosFunction, call: Cursor, args: list[Cursor],
+                  function: Cursor | None, cls: Cursor | None, scope: Scope) -> str | None:
+        for source in spec.type_from:
+            found: str | None = None
+            if source in ("template", "template-value"):
+                ref = template_argument(call)
+                if ref is not None:
+                    found = (self._message(ref.type) if source == "template"
+                             else msg_types.param_type(ref.type))
+            elif source == "class" and cls is not None:
+                ctype = cls.type
+                if ctype.get_num_template_arguments() > 0:
+                    found = self._message(ctype.get_template_argument_type(0))
+            elif source in ("callback", "service-callback") and function is not None:
+                params = parameters(function)
+                if source == "service-callback" and len(params) == 3:
+                    params = params[1:]  # ROS 2: (request header, request, response)
+                if params:
+                    found = self._message(params[0], source == "service-callback")
+            elif source in ("arg", "value", "type-name") and spec.type_arg is not None and (
+                spec.type_arg < len(args)
+            ):
+                arg = args[spec.type_arg]
+                ctype = strip(arg).type
+                if source == "type-name":
+                    found = _type_name(render(scope.string(arg)))
+                elif source == "arg":
+                    # ros::service::call(name, request, response): the request names its
+                    # service
+                    found = self._message(ctype, spec.kind in ("client", "server"))
+                else:
+                    found = msg_types.param_type(ctype)
+            if found is not None:
+                return found
+        return None
+
+
+def callee(call: Cursor) -> Cursor:
+    """The expression a call calls (its function's name, or the member it calls)."""
+    children = list(call.get_children())
+    return strip(children[0]) if children else call
+
+
+def template_argument(call: Cursor) -> Cursor | None:
+    """The first type written as a template argument of the called function."""
+    target = call.referenced
+    owner = target.semantic_parent if target is not None else None
+    for child in callee(call).get_children():
+        if child.kind == CursorKind.TYPE_REF and (
+            owner is None or child.referenced != owner  # not ``Class::`` of Class::f<M>
+        ):
+            return child
+    return None
+
+
+def _type_name(text: str) -> str | None:
+    """A ROS 2 type as a string names it (``pkg/msg/Name``; ``pkg/Name`` is a message)."""
+    parts = text.split("/")
+    if "?" in text or not all(parts):
+        return None
+    if len(parts) == 2:
+        return f"{parts[0]}/msg/{parts[1]}"
+    return text if len(parts) == 3 and parts[1] in _INTERFACE else None
