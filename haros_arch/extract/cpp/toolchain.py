@@ -87,7 +87,7 @@ def base_arguments(system_headers: bool = True, std: str | None = None) -> list[
     C++17; a compile command's ``-std`` may name another).
     """
     args = ["-x", "c++", f"-std={std or 'c++17'}", "-nostdinc", "-nostdinc++", "-fsyntax-only",
-            "-Wno-everything"]
+            "-Wno-everything", "-ferror-limit=0"]
     if system_headers:
         for folder in system_include_dirs():
             args += ["-isystem", folder]
