@@ -329,6 +329,10 @@ class CallSites:
     def scope(self, function: Cursor) -> Scope:
         return self._scope(function)
 
+    def callers(self, function: Cursor) -> list[tuple[Cursor, Cursor]]:
+        """(call, calling function) for the calls of ``function`` in this file."""
+        return self._sites().get(_key(function.canonical), [])
+
     def _arguments(self, parm: Cursor) -> list[tuple[Cursor, Scope]]:
         function = parm.semantic_parent
         if function is None:
