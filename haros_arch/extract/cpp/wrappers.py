@@ -28,7 +28,7 @@ from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
-from clang.cindex import Cursor, CursorKind, conf
+from clang.cindex import Cursor, CursorKind, TypeKind, conf
 
 from ...model.conditions import Condition
 from . import api, msg_types
@@ -50,6 +50,8 @@ DEPENDENT: dict[str, api.RosFunction] = {
     name: row for (owner, name), row in api.ALL.items()
     if owner in (api.NODE_HANDLE, *api.RCLCPP_NODES)}
 _ARGUMENTS = ("queue_arg", "latch_arg", "callback_arg", "qos_arg", "default_arg")
+_BUILTINS = frozenset({TypeKind.BOOL, TypeKind.INT, TypeKind.LONG, TypeKind.DOUBLE,
+                       TypeKind.FLOAT, TypeKind.UINT, TypeKind.ULONG, TypeKind.LONGLONG})
 _THIS_CALLS = frozenset({"shared_from_this", "get", "weak_from_this"})
 
 
@@ -170,7 +172,7 @@ class Wrappers:
             return
         for decl in _overloads(head):
             callee = _key(decl.canonical)
-            if not _fits(decl, len(args)):
+            if not _fits(decl, args):
                 continue
             for wrapper in self.summaries.get(callee, ()):
                 yield wrapper, args, None, callee
@@ -379,7 +381,7 @@ class Wrappers:
         if target is not None:
             return self.summaries.get(_key(target.canonical), [])
         children = list(call.get_children())
-        args = len(written_arguments(call))
+        args = written_arguments(call)
         for decl in _overloads(children[0]) if children else []:
             found = self.summaries.get(_key(decl.canonical))
             if found and _fits(decl, args):
@@ -512,10 +514,21 @@ def _overloads(head: Cursor) -> list[Cursor]:
         CursorKind.FUNCTION_TEMPLATE, CursorKind.FUNCTION_DECL, CursorKind.CXX_METHOD)]
 
 
-def _fits(decl: Cursor, count: int) -> bool:
+def _fits(decl: Cursor, args: list[Cursor]) -> bool:
+    """Whether overload ``decl`` may be the one called with ``args``: their number, and
+    no builtin value (``true``, ``0.25``) passed for a class parameter (a descriptor)."""
     params = _parameters(decl)
     required = [p for p in params if not any(c.kind.is_expression() for c in p.get_children())]
-    return len(required) <= count <= len(params)
+    if not len(required) <= len(args) <= len(params):
+        return False
+    for param, arg in zip(params, args, strict=False):
+        wanted = param.type.get_canonical()
+        if wanted.kind in (TypeKind.LVALUEREFERENCE, TypeKind.RVALUEREFERENCE):
+            wanted = wanted.get_pointee().get_canonical()
+        given = strip(arg).type.get_canonical()
+        if wanted.kind == TypeKind.RECORD and given.kind in _BUILTINS:
+            return False
+    return True
 
 
 def _targets(call: Cursor) -> list[Key]:
