@@ -50,6 +50,8 @@ DEPENDENT: dict[str, api.RosFunction] = {
     name: row for (owner, name), row in api.ALL.items()
     if owner in (api.NODE_HANDLE, *api.RCLCPP_NODES)}
 _ARGUMENTS = ("queue_arg", "latch_arg", "callback_arg", "qos_arg", "default_arg")
+_API_NAMES = frozenset(
+    [*DEPENDENT, *(name for _, name in api.ALL), *(name for _, name in api.FACTORIES)])
 _BUILTINS = frozenset({TypeKind.BOOL, TypeKind.INT, TypeKind.LONG, TypeKind.DOUBLE,
                        TypeKind.FLOAT, TypeKind.UINT, TypeKind.ULONG, TypeKind.LONGLONG})
 _THIS_CALLS = frozenset({"shared_from_this", "get", "weak_from_this"})
@@ -93,7 +95,11 @@ class Wrappers:
     def build(self) -> None:
         finder = self.finder
         functions = [f for f in finder.functions if _parameters(f)]
-        calls = {_key(f.canonical): list(_calls(f)) for f in functions}
+        # the calls that may be of the API or of a wrapper (by name; "" depends on a
+        # template parameter)
+        wanted = {"", *_API_NAMES, *(f.spelling for f in functions)}
+        calls = {_key(f.canonical): [c for c in _calls(f) if c.spelling in wanted]
+                 for f in functions}
         todo = functions
         for _round in range(MAX_DEPTH):
             changed: set[Key] = set()
