@@ -68,14 +68,14 @@ def test_subscribe_and_advertise_options(results: dict[str, CppResult]) -> None:
 
 
 def test_values_from_call_sites_in_the_same_file(results: dict[str, CppResult]) -> None:
-    """One call site, or all agreeing: the value (the handle's namespace too); call sites
-    that disagree: one call per value they pass, never a guess."""
+    """Helpers that pass their name parameter to ROS are wrappers (``wrappers``): each
+    call site is a call, with its own name, handle and queue, at the call site."""
     assert rows(results["helpers.cpp"]) == [
-        ("publish", "ranger/left/range", "std_msgs/Float64", 8, None, 9, ()),
-        ("publish", "ranger/right/range", "std_msgs/Float64", 8, None, 9, ()),
-        ("subscribe", "~scan", "sensor_msgs/LaserScan", 1, "onScan", 15, ()),
-        ("publish", "ranger/log_a", "std_msgs/Float64", 1, None, 19, ()),
-        ("publish", "ranger/log_b", "std_msgs/Float64", 1, None, 19, ()),
+        ("publish", "ranger/left/range", "std_msgs/Float64", 8, None, 27, ()),
+        ("publish", "ranger/right/range", "std_msgs/Float64", 8, None, 28, ()),
+        ("subscribe", "~scan", "sensor_msgs/LaserScan", 1, "onScan", 29, ()),
+        ("publish", "ranger/log_a", "std_msgs/Float64", 1, None, 30, ()),
+        ("publish", "ranger/log_b", "std_msgs/Float64", 1, None, 31, ()),
     ]
 
 

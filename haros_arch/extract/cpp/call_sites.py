@@ -106,6 +106,10 @@ class CallSites:
             self._scopes[key] = Scope(function, self.macros, self.source, self)
         return self._scopes[key]
 
+    def callers(self, function: Cursor) -> list[tuple[Cursor, Cursor]]:
+        """(call, calling function) for the calls of ``function`` in this file."""
+        return self._sites().get(key_of(function.canonical), [])
+
     def field(self, field: Cursor) -> tuple[Cursor, Scope] | None:
         """What a member holds: the value a constructor of its class initialises or
         assigns it with (read in that constructor), else its default initialiser."""

@@ -63,6 +63,7 @@ UMBRELLAS = {
     "pluginlib/": "pluginlib/class_list_macros.hpp",
     "dynamic_reconfigure/": "dynamic_reconfigure/server.h",
     "diagnostic_updater/": "diagnostic_updater/diagnostic_updater.h",
+    "bondcpp/": "bondcpp/bond.hpp",
     # libraries beside ROS that node classes use: minimal stand-ins keep them parsing
     "opencv2/": "opencv2/opencv.hpp", "opencv/": "opencv2/opencv.hpp",
     "cv_bridge/": "cv_bridge/cv_bridge.h", "Eigen/": "Eigen/Dense", "eigen3/": "Eigen/Dense",

@@ -35,6 +35,7 @@ from .handles import (
 from .links import Fact, argument_facts
 from .qos import qos as qos_of
 from .values import PLACEHOLDER, Scope, initializer, render, strip, written_arguments
+from .wrappers import Wrappers
 
 _CONTAINERS = frozenset({
     CursorKind.NAMESPACE, CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL,
@@ -77,11 +78,13 @@ class CallFinder:
         self.rosname: str | None = None
         self.diagnostics: list[Diagnostic] = []
         self.facts: list[Fact] = []  # what this file passes to other files' functions
+        self.wrappers = Wrappers(self)  # the file's functions that wrap the ROS API
 
     def run(self) -> None:
         self.functions = list(self._definitions(self.tu.cursor, top=True))
         self.sites = self.namespaces.sites = CallSites(self.functions, self.macros, self.source,
                                                        external=True)
+        self.wrappers.build()
         for function in self.functions:
             self._function(function)
         self.facts = argument_facts(self.sites, self.namespaces, self.owned)
@@ -117,7 +120,9 @@ class CallFinder:
             if child.kind != CursorKind.PARM_DECL]
         while stack:
             node, conditions = stack.pop()
-            if node.kind == CursorKind.CALL_EXPR and node.spelling in _API_NAMES:
+            if node.kind == CursorKind.CALL_EXPR and (
+                node.spelling in _API_NAMES or node.spelling in self.wrappers.names
+            ):
                 self._call(node, conditions, scope)
             branches = self.reader.branches(node)
             stack.extend((child, conditions + extra) for child, extra in reversed(branches))
@@ -146,6 +151,8 @@ class CallFinder:
         return spec, None
 
     def _call(self, call: Cursor, conditions: tuple[Condition, ...], scope: Scope) -> None:
+        if self.wrappers.emit(call, conditions, scope):
+            return
         target = call.referenced
         if target is None:
             return

@@ -1,0 +1,566 @@
+"""Functions of the workspace that wrap the ROS API, summarised as API rows of their own.
+
+Real nodes often reach ROS through their own functions: a base class's
+``create_publisher<MessageT>(topic_name, qos)`` that calls a free factory that calls
+rclcpp, or ``declare_or_get_parameter(name, default)``. A function whose parameter flows
+into the name argument of a ROS call (a row of ``api.ALL``, or of another wrapper) is a
+*wrapper*: it gets a derived row of the same kind whose argument indexes are its own
+parameters (``Wrapper``). A call of it is then a ROS call at the call site, with the
+name, type (the call's template argument when the inner type is the wrapper's template
+parameter, or the value / callback it passes on), QoS, queue, default, handle and
+conditions of that call site; the call inside the wrapper is no longer emitted on its own
+(its name would be ``?``).
+
+Summaries are built per translation unit from every function defined in its workspace
+files (headers included): first the functions that call the API with a parameter-valued
+name, then, up to ``MAX_DEPTH`` times, those that call such a wrapper. Calls inside
+templates whose target depends on a template parameter (``node->declare_parameter(name,
+v)`` with ``NodeT node``) match the node API rows by method name (``DEPENDENT``). A
+recursive function is not a wrapper (its calls are read as before, its name stays
+unknown). A name the wrapper builds (``"radar/" + name``) keeps the parts it adds; a name
+fixed in the wrapper is not a wrapper's: that call stays where it is, once.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+from clang.cindex import Cursor, CursorKind, TypeKind, conf
+
+from ...model.conditions import Condition
+from . import api, msg_types
+from .call_types import template_argument
+from .handles import callback, callback_name, is_handle, join_name, qualified_name
+from .qos import qos as qos_of
+from .values import Parts, Scope, strip, written_arguments
+
+if TYPE_CHECKING:
+    from .visitor import CallFinder
+
+__all__ = ["DEPENDENT", "MAX_DEPTH", "Wrapper", "Wrappers"]
+
+MAX_DEPTH = 4  # a wrapper of a wrapper ... of an API call
+MAX_OVERLOADS = 8
+Key = tuple[str, int]
+# what a member call on an object whose type is a template parameter may be: the node
+# handle's and rclcpp node's methods, by name
+DEPENDENT: dict[str, api.RosFunction] = {
+    name: row for (owner, name), row in api.ALL.items()
+    if owner in (api.NODE_HANDLE, *api.RCLCPP_NODES)}
+_ARGUMENTS = ("queue_arg", "latch_arg", "callback_arg", "qos_arg", "default_arg")
+_API_NAMES = frozenset(
+    [*DEPENDENT, *(name for _, name in api.ALL), *(name for _, name in api.FACTORIES)])
+_BUILTINS = frozenset({TypeKind.BOOL, TypeKind.INT, TypeKind.LONG, TypeKind.DOUBLE,
+                       TypeKind.FLOAT, TypeKind.UINT, TypeKind.ULONG, TypeKind.LONGLONG})
+_THIS_CALLS = frozenset({"shared_from_this", "get", "weak_from_this"})
+
+
+@dataclass(frozen=True)
+class Wrapper:
+    """The ROS call a call of one wrapper makes: ``row`` reads the call site's
+    arguments; the name is ``before`` + the name argument + ``after``; ``namespace`` is
+    that of a handle the wrapper holds itself (None: from the call site, as ``row``
+    says); ``through`` are the functions it was derived through (recursion)."""
+
+    row: api.RosFunction
+    before: Parts = ()
+    after: Parts = ()
+    namespace: str | None = None
+    through: frozenset[Key] = frozenset()
+    # what the wrapper gives itself (a QoS, queue, latch or callback it writes, or the
+    # default value of its parameter that gives it): the call's fields, where the call
+    # site gives none
+    own: tuple[tuple[str, object], ...] = ()
+
+    def same(self, other: Wrapper) -> bool:
+        return (self.row, self.before, self.after, self.namespace) == (
+            other.row, other.before, other.after, other.namespace)
+
+
+class Wrappers:
+    """The wrappers of one translation unit, and the calls inside them."""
+
+    def __init__(self, finder: CallFinder) -> None:
+        self.finder = finder
+        self.summaries: dict[Key, list[Wrapper]] = {}
+        self.names: frozenset[str] = frozenset()  # the wrappers' spellings
+        self._inner: dict[Key, Key] = {}  # call inside a wrapper -> the wrapper
+        self._kept: set[Key] = set()  # wrappers whose inner calls are still emitted
+        self._recursive: set[Key] = set()
+
+    # -- building -----------------------------------------------------------------------
+
+    def build(self) -> None:
+        finder = self.finder
+        # a constructor is no wrapper: the values its callers pass flow into its
+        # parameters and members (call_sites), and its calls stay where they are written
+        functions = [f for f in finder.functions if _parameters(f)
+                     and f.kind != CursorKind.CONSTRUCTOR]
+        # the calls that may be of the API or of a wrapper (by name; "" depends on a
+        # template parameter)
+        wanted = {"", *_API_NAMES, *(f.spelling for f in functions)}
+        calls = {_key(f.canonical): [c for c in _calls(f) if c.spelling in wanted]
+                 for f in functions}
+        todo = functions
+        for _round in range(MAX_DEPTH):
+            changed: set[Key] = set()
+            for function in todo:
+                key = _key(function.canonical)
+                if key in self._recursive:
+                    continue
+                for call in calls[key]:
+                    if self._summarise(function, key, call):
+                        changed.add(key)
+            if not changed:
+                break
+            # the functions that call one that changed are read again
+            todo = [f for f in functions if any(
+                self._calls_one_of(call, changed) for call in calls[_key(f.canonical)])]
+        # a recursive function is no wrapper, nor is one made through it
+        self.summaries = {
+            key: found for key, found in self.summaries.items() if key not in self._recursive
+            and not any(self._recursive & w.through for w in found)}
+        self._inner = {call: owner for call, owner in self._inner.items()
+                       if owner in self.summaries}
+        sites = finder.sites
+        main = finder.tu.spelling
+        for function in functions:
+            key = _key(function.canonical)
+            if key in self.summaries and not finder.ros2 and sites is not None and (
+                function.location.file is not None and function.location.file.name == main
+                and not sites.callers(function)
+            ):
+                self._kept.add(key)  # ROS 1: callers in the node's other files (links)
+        self.names = frozenset(f.spelling for f in functions
+                               if _key(f.canonical) in self.summaries)
+        if self.names:
+            self.names |= {""}  # a call that depends on a template parameter
+
+    def _summarise(self, function: Cursor, key: Key, call: Cursor) -> bool:
+        added = False
+        for wrapper, args, cls, callee in self._inner_rows(call):
+            if callee == key or key in wrapper.through:
+                self._recursive.add(key)
+                return False
+            lifted = self._lift(function, wrapper, call, args, cls)
+            if lifted is None:
+                continue
+            found = self.summaries.setdefault(key, [])
+            self._inner[_key(call)] = key
+            if not any(lifted.same(w) for w in found):
+                found.append(lifted)
+                added = True
+        return added
+
+    def _calls_one_of(self, call: Cursor, keys: set[Key]) -> bool:
+        return any(k in keys for k in _targets(call))
+
+    def _inner_rows(self, call: Cursor) -> Iterator[
+            tuple[Wrapper, list[Cursor], Cursor | None, Key | None]]:
+        """The rows ``call`` matches: (row, its arguments, class, the wrapper called)."""
+        args = written_arguments(call)
+        target = call.referenced
+        if target is not None:
+            callee = _key(target.canonical)
+            for wrapper in self.summaries.get(callee, ()):
+                yield wrapper, args, None, callee
+            spec, cls = self.finder._row(call)
+            if spec is not None:
+                yield Wrapper(spec), args, cls, None
+            return
+        children = list(call.get_children())
+        head = children[0] if children else None
+        if head is None:
+            return
+        if head.kind == CursorKind.MEMBER_REF_EXPR:
+            spec = DEPENDENT.get(_member_name(head))
+            if spec is not None:
+                yield Wrapper(spec), args, None, None
+            return
+        for decl in _overloads(head):
+            callee = _key(decl.canonical)
+            if not _fits(decl, args):
+                continue
+            for wrapper in self.summaries.get(callee, ()):
+                yield wrapper, args, None, callee
+            spec = api.ALL.get((qualified_name(decl.semantic_parent), decl.spelling))
+            if spec is not None:
+                yield Wrapper(spec), args, None, None
+
+    def _lift(self, function: Cursor, inner: Wrapper, call: Cursor, args: list[Cursor],
+              cls: Cursor | None) -> Wrapper | None:
+        """``inner`` as made by ``function`` at ``call``, in terms of ``function``'s
+        parameters; None unless its name comes from one of them."""
+        spec = inner.row
+        if spec.fixed_name is not None or spec.per_element:
+            return None
+        params = _parameters(function)
+        shift = 1 if spec.optional_handle and args and is_handle(args[0]) else 0
+
+        def arg(index: int | None) -> Cursor | None:
+            if index is None or index + shift >= len(args):
+                return None
+            return args[index + shift]
+
+        name_expr = arg(spec.name_arg)
+        for index in spec.name_candidates:
+            if index < len(args) and msg_types.param_type(args[index].type) == "str":
+                name_expr = args[index]
+                break
+        if name_expr is None:
+            return None
+        scope = self.finder.sites.scope(function) if self.finder.sites else None
+        shape = _name_shape(name_expr, params, scope, 0)
+        if shape is None:
+            return None
+        before, name_arg, after = shape
+        fields: dict[str, object] = {
+            field: _parameter_index(arg(getattr(spec, field)), params) for field in _ARGUMENTS}
+        fields.update(self._handle(function, spec, call, args, shift, params, scope))
+        fields.update(self._type(function, spec, call, args, shift, params, cls))
+        namespace = fields.pop("namespace", None)
+        if inner.namespace is not None:
+            namespace = inner.namespace
+        own = dict(inner.own)
+        for field, value in self._own(spec, args, shift, arg, fields, params, scope).items():
+            if value is not None and value is not False:
+                own.setdefault(field, value)
+        row = dataclasses.replace(
+            spec, name_arg=name_arg, optional_handle=False, name_candidates=(),
+            out_arg=None, **fields)  # type: ignore[arg-type]
+        return Wrapper(row, (*inner.before, *before), (*after, *inner.after),
+                       namespace if isinstance(namespace, str) else None,
+                       inner.through | {_key(function.canonical)}, tuple(own.items()))
+
+    def _own(self, spec: api.RosFunction, args: list[Cursor], shift: int,
+             arg: Callable[[int | None], Cursor | None], fields: dict[str, object],
+             params: list[Cursor], scope: Scope | None) -> dict[str, object]:
+        """The QoS (ROS 2) or queue (ROS 1), latch and callback the wrapper writes itself
+        (or the default value of the parameter that gives it)."""
+        if scope is None:
+            return {}
+        found: dict[str, object] = {}
+        if fields.get("callback_arg") is None and spec.callback_arg is not None:
+            found["callback"] = callback_name(callback(args, spec.callback_arg + shift))
+        if spec.latch_arg is not None and fields.get("latch_arg") is None:
+            latch = arg(spec.latch_arg)
+            found["latch"] = latch is not None and scope.boolean(latch) is True
+        field = "qos_arg" if self.finder.ros2 else "queue_arg"
+        index = fields.get(field)
+        expr: Cursor | None = None
+        if isinstance(index, int):
+            expr = next((c for c in params[index].get_children() if c.kind.is_expression()),
+                        None)
+        elif getattr(spec, field) is not None:
+            expr = arg(getattr(spec, field))
+        if expr is None:
+            return found
+        if self.finder.ros2:
+            qos = qos_of(expr, scope)
+            found.update(qos=qos, queue_size=qos.get("depth") if qos else None)
+        else:
+            found["queue_size"] = scope.integer(expr)
+        return found
+
+    def _handle(self, function: Cursor, spec: api.RosFunction, call: Cursor,
+                args: list[Cursor], shift: int, params: list[Cursor],
+                scope: Scope | None) -> dict[str, object]:
+        """Where the derived row's handle is: the call site's object (``on_handle``), one
+        of its arguments (``handle_arg``), or a namespace fixed in the wrapper."""
+        none: dict[str, object] = {"on_handle": False, "handle_arg": None}
+        if spec.on_handle:
+            callee = strip(next(iter(call.get_children()), call))
+            objects = [c for c in callee.get_children() if c.kind.is_expression()] if (
+                callee.kind == CursorKind.MEMBER_REF_EXPR) else []
+            handle = objects[0] if objects else None
+        elif spec.handle_arg is not None:
+            index = 0 if shift else spec.handle_arg
+            handle = args[index] if index < len(args) else None
+            if handle is None:
+                return none
+        else:
+            return none
+        if handle is None or _is_this(handle):
+            if function.semantic_parent is not None and function.semantic_parent.kind in (
+                CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL, CursorKind.CLASS_TEMPLATE
+            ):
+                return {"on_handle": True, "handle_arg": None}
+            return none
+        passed = _parameter_index(handle, params)
+        if passed is not None:
+            return {"on_handle": False, "handle_arg": passed}
+        if scope is not None and is_handle(handle):
+            parts = self.finder.namespaces.of(handle, scope)
+            if None not in parts:
+                return {**none, "namespace": "".join(p for p in parts if p is not None)}
+        return none
+
+    def _type(self, function: Cursor, spec: api.RosFunction, call: Cursor,
+              args: list[Cursor], shift: int, params: list[Cursor],
+              cls: Cursor | None) -> dict[str, object]:
+        """The derived row's type sources: the call site's template argument for the
+        wrapper's first template parameter, its value or callback arguments, or the type
+        fixed in the wrapper."""
+        templates = [c for c in function.get_children()
+                     if c.kind == CursorKind.TEMPLATE_TYPE_PARAMETER]
+        sources: list[str] = []
+        type_arg: int | None = None
+        for source in spec.type_from:
+            if source in ("template", "template-value"):
+                ref = template_argument(call)
+                decl = ref.referenced if ref is not None else None
+                if decl is not None and decl.kind == CursorKind.TEMPLATE_TYPE_PARAMETER:
+                    if templates and _key(decl) == _key(templates[0]):
+                        sources.append(source)
+                    continue
+            elif source in ("value", "arg") and spec.type_arg is not None:
+                index = _parameter_index(
+                    args[spec.type_arg + shift] if spec.type_arg + shift < len(args)
+                    else None, params)
+                if index is not None:
+                    sources.append(source)
+                    if source == "value":
+                        sources.append("template-value")
+                    type_arg = index
+                    continue
+            elif source in ("callback", "service-callback") and spec.callback_arg is not None:
+                index = _parameter_index(
+                    args[spec.callback_arg + shift] if spec.callback_arg + shift < len(args)
+                    else None, params)
+                if index is not None:
+                    sources.append(source)
+                    continue
+            if sources:
+                continue
+            fixed = self._fixed_type(spec, source, call, args, shift, cls)
+            if fixed is not None:
+                return {"type_from": tuple(sources), "type_arg": type_arg,
+                        "fixed_type": fixed}
+        return {"type_from": tuple(dict.fromkeys(sources)), "type_arg": type_arg,
+                "fixed_type": spec.fixed_type}
+
+    def _fixed_type(self, spec: api.RosFunction, source: str, call: Cursor,
+                    args: list[Cursor], shift: int, cls: Cursor | None) -> str | None:
+        """The type one source gives inside the wrapper, when it does not depend on a
+        template parameter."""
+        function = callback(args, None if spec.callback_arg is None
+                            else spec.callback_arg + shift)
+        one = dataclasses.replace(spec, type_from=(source,), fixed_type=None)
+        empty = Scope(None, self.finder.macros, self.finder.source, self.finder.sites)
+        found = self.finder.types.of_call(one, call, args, function, cls, empty)
+        return None if found is None or _dependent_name(found) else found
+
+    # -- at a call site -----------------------------------------------------------------
+
+    def emit(self, call: Cursor, conditions: tuple[Condition, ...], scope: Scope) -> bool:
+        """Emit the ROS calls a call of a wrapper makes; True when ``call`` is done with
+        (a wrapper's call, or a call inside a wrapper that its callers make instead)."""
+        owner = self._inner.get(_key(call))
+        if owner is not None and owner not in self._kept:
+            return True
+        wrappers = self._called(call)
+        if not wrappers:
+            return False
+        finder = self.finder
+        args = written_arguments(call)
+        for wrapper in wrappers:
+            row = wrapper.row
+            if row.name_arg >= len(args):
+                continue
+            named = _NamedScope(scope, args[row.name_arg], wrapper.before, wrapper.after) if (
+                wrapper.before or wrapper.after) else scope
+            start = len(finder.calls)
+            finder._emit(row, call, args, None, conditions, named)
+            for made in finder.calls[start:]:
+                if wrapper.namespace:
+                    if not finder.ros2 and not made.name.startswith(("/", "~")):
+                        made.handle_namespace = wrapper.namespace  # remapped first (ROS 1)
+                    made.name = join_name(wrapper.namespace, made.name)
+                for field, value in wrapper.own:
+                    if getattr(made, field) in (None, False) and (
+                        field not in ("qos", "queue_size") or made.queue_size is None
+                    ):
+                        setattr(made, field, value)
+        return True
+
+    def _called(self, call: Cursor) -> list[Wrapper]:
+        """The wrappers ``call`` calls (through the overloads a dependent call names)."""
+        target = call.referenced
+        if target is not None:
+            return self.summaries.get(_key(target.canonical), [])
+        children = list(call.get_children())
+        args = written_arguments(call)
+        for decl in _overloads(children[0]) if children else []:
+            found = self.summaries.get(_key(decl.canonical))
+            if found and _fits(decl, args):
+                return found
+        return []
+
+
+class _NamedScope(Scope):
+    """A call site's scope in which the wrapper's name argument reads as the name the
+    wrapper makes of it (``before`` + argument + ``after``)."""
+
+    def __init__(self, scope: Scope, arg: Cursor, before: Parts, after: Parts) -> None:
+        self.__dict__.update(scope.__dict__)
+        self._arg, self._before, self._after = arg, before, after
+
+    def string(self, cursor: Cursor, depth: int = 0) -> Parts:
+        parts = super().string(cursor, depth)
+        return (*self._before, *parts, *self._after) if cursor == self._arg else parts
+
+
+def _name_shape(expr: Cursor, params: list[Cursor], scope: Scope | None,
+                depth: int) -> tuple[Parts, int, Parts] | None:
+    """``expr`` as (parts before, index of the wrapper's parameter, parts after), when it
+    is a parameter with known text around it."""
+    expr = strip(expr)
+    if depth > 8:
+        return None
+    index = _parameter_index(expr, params)
+    if index is not None:
+        return (), index, ()
+    kind = expr.kind
+    if kind in (CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR):
+        decl = expr.referenced
+        value = scope.variable(decl) if scope is not None and decl is not None else None
+        return _name_shape(value, params, scope, depth + 1) if value is not None else None
+    operands: list[Cursor] = []
+    if kind == CursorKind.CALL_EXPR and expr.spelling == "operator+":
+        operands = written_arguments(expr)
+    elif kind == CursorKind.BINARY_OPERATOR and scope is not None:
+        children = list(expr.get_children())
+        if len(children) == 2 and scope.operator(expr, children) == "+":
+            operands = children
+    elif kind == CursorKind.CALL_EXPR:
+        inner = [c for c in expr.get_children() if c.kind.is_expression()]
+        target = expr.referenced
+        if len(inner) == 1 and (target is None or target.kind == CursorKind.CONSTRUCTOR
+                                or expr.spelling in ("c_str", "str")):
+            found = inner[0]
+            if found.kind == CursorKind.MEMBER_REF_EXPR:  # name.c_str()
+                objects = [c for c in found.get_children() if c.kind.is_expression()]
+                found = objects[0] if objects else found
+            return _name_shape(found, params, scope, depth + 1)
+    if len(operands) != 2 or scope is None:
+        return None
+    left = _name_shape(operands[0], params, scope, depth + 1)
+    if left is not None:
+        return left[0], left[1], (*left[2], *scope.string(operands[1]))
+    right = _name_shape(operands[1], params, scope, depth + 1)
+    if right is not None:
+        return (*scope.string(operands[0]), *right[0]), right[1], right[2]
+    return None
+
+
+def _parameters(function: Cursor) -> list[Cursor]:
+    return [c for c in function.get_children() if c.kind == CursorKind.PARM_DECL]
+
+
+def _parameter_index(expr: Cursor | None, params: list[Cursor]) -> int | None:
+    """The index of the wrapper's parameter ``expr`` is (as it is, or dereferenced)."""
+    if expr is None:
+        return None
+    expr = strip(expr)
+    if expr.kind == CursorKind.UNARY_OPERATOR:  # *node
+        inner = [c for c in expr.get_children() if c.kind.is_expression()]
+        expr = strip(inner[0]) if len(inner) == 1 else expr
+    if expr.kind != CursorKind.DECL_REF_EXPR or expr.referenced is None or (
+        expr.referenced.kind != CursorKind.PARM_DECL
+    ):
+        return None
+    where = _key(expr.referenced)
+    for index, param in enumerate(params):
+        if _key(param) == where:
+            return index
+    return None
+
+
+def _is_this(expr: Cursor) -> bool:
+    """``this``, ``*this``, ``shared_from_this()``: the object the wrapper is a method of."""
+    expr = strip(expr)
+    if expr.kind == CursorKind.CXX_THIS_EXPR:
+        return True
+    if expr.kind == CursorKind.UNARY_OPERATOR:
+        inner = [c for c in expr.get_children() if c.kind.is_expression()]
+        return len(inner) == 1 and _is_this(inner[0])
+    if expr.kind == CursorKind.CALL_EXPR and expr.spelling in _THIS_CALLS:
+        callee = next(iter(expr.get_children()), None)
+        objects = [c for c in callee.get_children() if c.kind.is_expression()] if (
+            callee is not None and callee.kind == CursorKind.MEMBER_REF_EXPR) else []
+        return not objects or _is_this(objects[0])
+    return False
+
+
+def _member_name(member: Cursor) -> str:
+    """The method a dependent member call names (``node->template create_publisher<M>``:
+    ``create_publisher``); its cursor has no spelling."""
+    if member.spelling:
+        return member.spelling
+    tokens = [t.spelling for t in member.get_tokens()]
+    depth, name = 0, ""
+    for index, token in enumerate(tokens):
+        if token in ("(", "["):
+            depth += 1
+        elif token in (")", "]"):
+            depth -= 1
+        elif token in ("->", ".") and depth == 0:
+            rest = [t for t in tokens[index + 1:] if t != "template"]
+            name = rest[0] if rest else ""
+    return name
+
+
+def _overloads(head: Cursor) -> list[Cursor]:
+    """The functions an unresolved call's name may be (``ns::create_publisher<M>(...)``
+    with dependent arguments)."""
+    found: list[Cursor] = []
+    for child in [head, *head.get_children()]:
+        if child.kind == CursorKind.OVERLOADED_DECL_REF:
+            count = min(conf.lib.clang_getNumOverloadedDecls(child), MAX_OVERLOADS)
+            found += [conf.lib.clang_getOverloadedDecl(child, i) for i in range(count)]
+    return [d for d in found if d is not None and d.kind in (
+        CursorKind.FUNCTION_TEMPLATE, CursorKind.FUNCTION_DECL, CursorKind.CXX_METHOD)]
+
+
+def _fits(decl: Cursor, args: list[Cursor]) -> bool:
+    """Whether overload ``decl`` may be the one called with ``args``: their number, and
+    no builtin value (``true``, ``0.25``) passed for a class parameter (a descriptor)."""
+    params = _parameters(decl)
+    required = [p for p in params if not any(c.kind.is_expression() for c in p.get_children())]
+    if not len(required) <= len(args) <= len(params):
+        return False
+    for param, arg in zip(params, args, strict=False):
+        wanted = param.type.get_canonical()
+        if wanted.kind in (TypeKind.LVALUEREFERENCE, TypeKind.RVALUEREFERENCE):
+            wanted = wanted.get_pointee().get_canonical()
+        given = strip(arg).type.get_canonical()
+        if wanted.kind == TypeKind.RECORD and given.kind in _BUILTINS:
+            return False
+    return True
+
+
+def _targets(call: Cursor) -> list[Key]:
+    target = call.referenced
+    if target is not None:
+        return [_key(target.canonical)]
+    children = list(call.get_children())
+    return [_key(d.canonical) for d in _overloads(children[0])] if children else []
+
+
+def _calls(function: Cursor) -> Iterator[Cursor]:
+    for node in function.walk_preorder():
+        if node.kind == CursorKind.CALL_EXPR:
+            yield node
+
+
+def _dependent_name(name: str) -> bool:
+    return "type-parameter" in name
+
+
+def _key(cursor: Cursor) -> Key:
+    where = cursor.location
+    return (where.file.name if where.file else "", where.offset)
+

@@ -1,0 +1,164 @@
+"""Functions that wrap the ROS API (``extract.cpp.wrappers``): a call of a wrapper is a ROS
+call at the call site, with the call site's name, type, QoS, handle and conditions; the
+call inside the wrapper is not reported on its own.
+
+``radar`` (ROS 2) is shaped like Nav2: a lifecycle node base class whose member templates
+call free factory templates that call rclcpp on a ``NodeT``, a parameter wrapper with a
+default, plain functions that make publishers. ``sonar`` (ROS 1): a class whose own
+handle makes the publishers, a chain of three wrappers, two functions that call each
+other.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from haros_arch.extract.cpp import CppResult, extract_cpp
+from haros_arch.model.source import PrimitiveCall
+from haros_arch.workspace import Workspace, scan
+
+FIXTURE = Path(__file__).resolve().parent.parent / "fixtures" / "cpp" / "wrappers"
+RADAR = FIXTURE / "src" / "radar" / "src" / "radar_node.cpp"
+SONAR = FIXTURE / "src" / "sonar" / "src" / "sonar_node.cpp"
+NODE = "src/radar/src/radar_node.cpp"
+
+
+def row(call: PrimitiveCall) -> tuple[object, ...]:
+    return (call.kind, call.name, call.type, call.queue_size, call.location.file,
+            call.location.line, tuple(c.text for c in call.conditions))
+
+
+@pytest.fixture(scope="module")
+def ws() -> Workspace:
+    return scan([str(FIXTURE)])
+
+
+@pytest.fixture(scope="module")
+def radar(ws: Workspace) -> CppResult:
+    return extract_cpp([str(RADAR)], ws, cache_dir=None)
+
+
+@pytest.fixture(scope="module")
+def sonar(ws: Workspace) -> CppResult:
+    return extract_cpp([str(SONAR)], ws, cache_dir=None)
+
+
+def topics(result: CppResult) -> list[tuple[object, ...]]:
+    return [row(c) for c in result.calls if c.kind in ("publish", "subscribe")]
+
+
+def test_base_class_member_templates_are_calls_at_the_call_site(radar: CppResult) -> None:
+    """ManagedNode::create_publisher<MessageT> -> factory::create_publisher<MessageT>
+    (NodeT) -> node->create_publisher<MessageT>: the type is the call site's template
+    argument, the QoS the call site's (or the wrapper's default, 10), the condition the
+    call site's."""
+    found = topics(radar)
+    assert (("publish", "points", "sensor_msgs/msg/PointCloud2", 10, NODE, 48, ())
+            in found)
+    assert (("publish", "far", "sensor_msgs/msg/Range", 1, NODE, 50, ("range_ > 10.0",))
+            in found)
+    assert ("subscribe", "command", "std_msgs/msg/String", 10, NODE, 52, ()) in found
+
+
+def test_parameter_wrapper_with_a_default(radar: CppResult) -> None:
+    declared = {c.name: (c.type, c.has_default, c.default, c.location.line)
+                for c in radar.calls if c.kind == "declare"}
+    assert declared["range"] == ("double", True, None, 46)  # 40.0: a float, not read
+    assert declared["frame_id"] == ("str", True, "radar_link", 47)
+    reads = {c.name for c in radar.calls if c.kind == "read"}
+    assert {"range", "frame_id"} <= reads  # has_parameter / get_parameter in the wrapper
+
+
+def test_free_function_wrappers_give_one_call_per_call_site(radar: CppResult) -> None:
+    found = topics(radar)
+    assert ("publish", "left_status", "std_msgs/msg/String", 5, NODE, 58, ()) in found
+    assert ("publish", "right_status", "std_msgs/msg/String", 5, NODE, 59, ()) in found
+
+
+def test_a_name_the_wrapper_builds_keeps_its_prefix(radar: CppResult) -> None:
+    assert ("publish", "radar/debug", "std_msgs/msg/String", 1, NODE, 60, ()) in topics(radar)
+
+
+def test_a_fixed_name_stays_where_it_is_written_once(radar: CppResult) -> None:
+    """start_heartbeat() is called twice: ROS makes two publishers on one topic, the graph
+    has one; the call is the one in the function, not one per call site."""
+    beats = [row(c) for c in radar.calls if c.name == "heartbeat"]
+    assert beats == [("publish", "heartbeat", "std_msgs/msg/Empty", 1, NODE, 31, ())]
+    # a fixed name inside a template wrapper (its call depends on NodeT): once, there
+    overrides = [(c.kind, c.location.file, c.location.line) for c in radar.calls
+                 if c.name == "allow_qos_overrides"]
+    assert ("declare", "src/radar/include/radar/factories.hpp", 27) in overrides
+    assert len({c[1:] for c in overrides}) == 1
+
+
+def test_the_calls_inside_wrappers_are_not_reported_with_unknown_names(
+        radar: CppResult) -> None:
+    assert [c.name for c in radar.calls if "?" in c.name] == []
+    assert "CPP_DYNAMIC_NAME" not in [d.code for d in radar.diagnostics]
+    assert [c for c in radar.calls
+            if c.location.file == "src/radar/include/radar/managed_node.hpp"] == []
+
+
+def test_a_function_that_keeps_its_string_to_itself_is_not_a_wrapper(
+        radar: CppResult) -> None:
+    """log_topic(node, "not_a_topic") only logs its string."""
+    assert [c for c in radar.calls if "not_a_topic" in c.name] == []
+    assert [c for c in radar.calls if c.location.file == NODE and c.location.line == 63] == []
+
+
+def test_every_call_of_the_node(radar: CppResult) -> None:
+    assert sorted(found[:2] for found in topics(radar)) == [
+        ("publish", "far"), ("publish", "heartbeat"), ("publish", "left_status"),
+        ("publish", "points"), ("publish", "radar/debug"), ("publish", "right_status"),
+        ("subscribe", "command")]
+
+
+def test_a_handle_the_wrapper_holds_names_the_namespace(sonar: CppResult) -> None:
+    """Board::channel uses the board's own handle (NodeHandle(parent, "board")): the
+    namespace is the board's; the queue the call site's, or the parameter's default."""
+    found = {c.name: (c.queue_size, c.handle_namespace, c.location.line)
+             for c in sonar.calls}
+    assert found["board/channels/front"] == (3, "board", 64)
+    assert found["board/channels/rear"] == (7, "board", 65)
+
+
+def test_a_chain_of_wrappers(sonar: CppResult) -> None:
+    """level3 -> level2 -> level1 -> advertise: the name level3 builds, on the handle the
+    call site passes, at the call site; under the call site's conditions."""
+    found = {c.name: row(c)[2:] for c in sonar.calls}
+    assert found["~echo/raw"] == ("std_msgs/String", 2, "src/sonar/src/sonar_node.cpp", 66,
+                                  ())
+    assert found["diagnostics"] == ("std_msgs/String", 2, "src/sonar/src/sonar_node.cpp",
+                                    68, ("argc > 2",))
+
+
+def test_functions_that_call_each_other_are_no_wrappers(sonar: CppResult) -> None:
+    """ping -> pong -> ping: how deep it goes is known at run time; the advertise in ping
+    is read as before (its name unknown), once, and ends."""
+    unknown = [(c.name, c.location.line) for c in sonar.calls if "?" in c.name]
+    assert unknown == [("?/?", 54)]
+
+
+def test_wrappers_deeper_than_the_bound_still_end(tmp_path: Path) -> None:
+    """A chain longer than MAX_DEPTH: the outer functions are no wrappers; the call the
+    innermost summarised wrapper is given still has its name from the one call site."""
+    package = tmp_path / "src" / "deep"
+    (package / "src").mkdir(parents=True)
+    (package / "package.xml").write_text(
+        '<package format="2"><name>deep</name><version>1.0.0</version>'
+        '<description>d</description><maintainer email="a@b.c">a</maintainer>'
+        '<license>BSD</license></package>\n')
+    levels = ["void f0(ros::NodeHandle& nh, const std::string& t) {\n"
+              "  static ros::Publisher p = nh.advertise<std_msgs::Empty>(t, 1);\n}\n"]
+    for i in range(1, 8):
+        levels.append(f"void f{i}(ros::NodeHandle& nh, const std::string& t) "
+                      f"{{ f{i - 1}(nh, t); }}\n")
+    source = package / "src" / "deep.cpp"
+    source.write_text(
+        "#include <ros/ros.h>\n#include <std_msgs/Empty.h>\n" + "".join(levels)
+        + "int main(int argc, char** argv) {\n  ros::init(argc, argv, \"deep\");\n"
+        "  ros::NodeHandle nh;\n  f7(nh, \"bottom\");\n}\n")
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "bottom")]
