@@ -53,12 +53,13 @@ class Workspace:
         package = self.package_of(path)
         return Location(package.name if package else None, self.relpath(path), line, column)
 
-    def readable(self, path: str) -> bool:
+    def readable(self, path: str, environment: Mapping[str, str] | None = None) -> bool:
         """Whether the analysis may read ``path``: it lies (after resolving links) in a
         workspace folder, in a workspace package (which may be a link to a checkout kept
         elsewhere) or in an installed package's prefix; never anywhere else on disk."""
         real = os.path.realpath(path)
-        roots = [*self.roots, self.root, *installed_roots(self.environment),
+        env = self.environment if environment is None else environment
+        roots = [*self.roots, self.root, *installed_roots(env),
                  *(package.root for package in self.packages.values())]
         for root in roots:
             if not root:

@@ -124,3 +124,21 @@ def test_readable_covers_linked_packages_and_nothing_else(write_tree):
     assert not ws.readable(str(root / "elsewhere/secret.yaml"))
     assert not ws.readable(str(root / "ws/src/robot_nav/../secret.yaml"))
     assert not ws.readable("/etc/passwd")
+
+
+def test_launch_reads_parameter_files_of_a_linked_package(write_tree):
+    from haros_arch import launch
+
+    root = write_tree({
+        "elsewhere/robot_nav/package.xml": package_xml("robot_nav"),
+        "elsewhere/robot_nav/config/planner.yaml": "max_vel: 0.5\n",
+        "elsewhere/robot_nav/launch/nav.launch": (
+            '<launch><rosparam file="$(find robot_nav)/config/planner.yaml" '
+            'command="load" ns="planner"/></launch>\n'),
+    })
+    os.makedirs(root / "ws/src")
+    os.symlink(root / "elsewhere/robot_nav", root / "ws/src/robot_nav")
+    ws = scan([str(root / "ws/src")], {})
+    loaded = launch.load(str(root / "ws/src/robot_nav/launch/nav.launch"), ws, {}, {})
+    assert [(p.name, p.value) for p in loaded.params] == [("/planner/max_vel", 0.5)]
+    assert not [d for d in loaded.diagnostics if d.code == "LAUNCH_UNKNOWN_VALUE"]

@@ -16,7 +16,6 @@ from ...files import read_bytes
 from ...model.conditions import Condition
 from ...model.location import Location
 from ...model.values import Value
-from ...workspace import installed_roots
 from ..model import ParamDecl
 from .params import Binary, ParamError, convert_value, flatten, join, load_yaml, type_name
 from .scope import PrivateParam, Scope, canonical
@@ -82,10 +81,7 @@ def param_value(loader: Ros1Loader, source: str, text: str, kind: str, scope: Sc
 def read_param_file(loader: Ros1Loader, path: str, scope: Scope, element: Element
                     ) -> bytes | None:
     path = os.path.realpath(path)
-    roots = [*loader.workspace.roots, loader.workspace.root,
-             *installed_roots(loader.environment)]
-    if not any(path == r or path.startswith(os.path.realpath(r) + os.sep)
-               for r in roots if r):
+    if not loader.workspace.readable(path, loader.environment):
         loader.report("LAUNCH_UNKNOWN_VALUE", scope, element, detail=(
             f"{path} is outside the workspace and installed packages; it is not read"))
         return None

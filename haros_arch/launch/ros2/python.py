@@ -262,16 +262,12 @@ class Interpreter(Expressions):
         """The text of a file of the workspace or an installed package (bounded)."""
         from ...files import read_text
         from ...share import share_source
-        from ...workspace import installed_roots
 
         if not isinstance(path, str):
             self.unsupported(node, "a file whose path is not known statically")
             return None
         full = os.path.realpath(share_source(self.workspace, path))
-        roots = [os.path.realpath(r) for r in [*(self.workspace.roots or
-                                                 [self.workspace.root]),
-                                               *installed_roots(self.environment)]]
-        if not any(full.startswith(root + os.sep) for root in roots):
+        if not self.workspace.readable(full, self.environment):
             self.unsupported(node, f"{path} is outside the workspace; not read")
             return None
         text, found = read_text(full, self.workspace.location(full), MAX_READ)

@@ -18,7 +18,6 @@ from ...files import read_text
 from ...model.location import Location
 from ...model.values import Unknown, Value
 from ...share import install_prefix, lib_executables, share_source
-from ...workspace import installed_roots
 from .. import expression
 from . import entities as e
 
@@ -403,10 +402,7 @@ class Evaluator:
         if path is None:
             return Value.unknown("file-content of an unknown path")
         full = os.path.realpath(share_source(self.runner.workspace, path))
-        workspace = self.runner.workspace
-        roots = [os.path.realpath(r) for r in [*(workspace.roots or [workspace.root]),
-                                               *installed_roots(workspace.environment)]]
-        if not any(full == r or full.startswith(r + os.sep) for r in roots):
+        if not self.runner.workspace.readable(full):
             self.report("LAUNCH_UNSUPPORTED", detail=f"$(file-content) of {path} outside "
                         "the workspace and installed packages is not read")
             return Value.unknown("file outside the workspace")
