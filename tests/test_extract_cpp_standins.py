@@ -90,7 +90,16 @@ def test_lifecycle_rcl_std_and_opencv_apis_parse() -> None:
     pthread / clock_nanosleep calls and OpenCV's imdecode / floodFill / compare."""
     source = os.path.join(ROOT, "src", "api_demo", "src", "lifecycle_monitor.cpp")
     found = extract_cpp([source], scan([ROOT]), cache_dir=None)
+    lifecycle = "lifecycle_msgs/srv/"
     assert [(c.kind, c.name, c.type, c.location.line) for c in found.calls] == [
+        # what LifecycleNode("lifecycle_monitor") makes by itself: its transitions and
+        # the services of its state machine, under the node's name
+        ("publish", "~transition_event", "lifecycle_msgs/msg/TransitionEvent", 28),
+        ("server", "~change_state", lifecycle + "ChangeState", 28),
+        ("server", "~get_state", lifecycle + "GetState", 28),
+        ("server", "~get_available_states", lifecycle + "GetAvailableStates", 28),
+        ("server", "~get_available_transitions", lifecycle + "GetAvailableTransitions", 28),
+        ("server", "~get_transition_graph", lifecycle + "GetAvailableTransitions", 28),
         ("publish", "monitor/report", "std_msgs/msg/String", 30),
         ("publish", "probe", "std_msgs/msg/String", 74),
     ]

@@ -287,6 +287,19 @@ RCLCPP_NODE_NAME: dict[tuple[str, str], tuple[int, int]] = {
     ("rclcpp_lifecycle::LifecycleNode", "LifecycleNode"): (0, 1),
     ("rclcpp::Node", "make_shared"): (0, 1),
 }
+# What a node class's constructor creates by itself: rclcpp_lifecycle's LifecycleNode
+# publishes its transitions and serves its state machine under the node's own name.
+_LIFECYCLE = "lifecycle_msgs/srv/"
+IMPLICIT: dict[tuple[str, str], RosFunction] = {
+    ("rclcpp_lifecycle::LifecycleNode", "LifecycleNode"): RosFunction(
+        "publish", fixed_name="~transition_event",
+        fixed_type="lifecycle_msgs/msg/TransitionEvent", on_handle=False,
+        siblings=tuple(("server", f"~{name}", _LIFECYCLE + kind) for name, kind in (
+            ("change_state", "ChangeState"), ("get_state", "GetState"),
+            ("get_available_states", "GetAvailableStates"),
+            ("get_available_transitions", "GetAvailableTransitions"),
+            ("get_transition_graph", "GetAvailableTransitions")))),
+}
 # (class, method) -> the argument that names the sub-namespace
 RCLCPP_SUB_NODE: dict[tuple[str, str], int] = {("rclcpp::Node", "create_sub_node"): 0}
 

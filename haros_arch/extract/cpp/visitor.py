@@ -170,6 +170,8 @@ class CallFinder:
                 key = (qualified_name(decl), decl.spelling)
         if key in api.RCLCPP_NODE_NAME:
             self._node_name(api.RCLCPP_NODE_NAME[key], args, scope)
+            if key in api.IMPLICIT:
+                self._emit(api.IMPLICIT[key], call, args, None, conditions, scope)
             return
         spec, cls = self._row(call)
         if spec is not None and len(args) == 1 and record_class(args[0]) is not None and (
