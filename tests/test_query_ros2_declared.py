@@ -1,0 +1,52 @@
+"""ROS 2: declare_parameter(name, default) gives the parameter a value, so reading it
+afterwards is no 'read but never set'; reading one never declared is."""
+
+from __future__ import annotations
+
+import os
+
+from conftest import package_xml
+
+from haros_arch.pipeline import Options, analyse
+from haros_arch.project import load
+from haros_arch.query.catalogue import load_catalogue, run_rule
+
+TALKER = """
+    import rclpy
+
+    def main():
+        rclpy.init()
+        node = rclpy.create_node('talker')
+        node.declare_parameter('gain', 2.0)
+        gain = node.get_parameter('gain').value
+        rate = node.get_parameter('undeclared_rate').value
+    """
+
+LAUNCH = """
+    from launch import LaunchDescription
+    from launch_ros.actions import Node
+
+    def generate_launch_description():
+        return LaunchDescription([Node(package='talk', executable='talker')])
+    """
+
+
+def test_declared_with_a_default_is_set(write_tree):
+    root = write_tree({
+        "src/talk/package.xml": package_xml("talk", build_type="ament_python"),
+        "src/talk/setup.py": "from setuptools import setup\n"
+                             "setup(name='talk', packages=['talk'], entry_points="
+                             "{'console_scripts': ['talker = talk.talker:main']})\n",
+        "src/talk/resource/talk": "",
+        "src/talk/talk/__init__.py": "",
+        "src/talk/talk/talker.py": TALKER,
+        "src/talk/launch/talk.launch.py": LAUNCH,
+        "project.yaml": "project: p\nconfigurations:\n  c: [talk/launch/talk.launch.py]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {"PATH": os.environ.get("PATH", "")},
+                    Options(cache_dir=None))
+    rule = next(r for r in load_catalogue() if r.id == "parameter-read-not-set")
+    found = sorted(e for f in run_rule(rule, model) for e in f.entities
+                   if e.startswith("parameter:"))
+    # gain has a default in its declaration; undeclared_rate is never declared nor set
+    assert found == ["parameter:/talker/undeclared_rate"]
