@@ -19,6 +19,8 @@ TALKER = """
         node = rclpy.create_node('talker')
         node.declare_parameter('gain', 2.0)
         gain = node.get_parameter('gain').value
+        node.declare_parameter('port', rclpy.Parameter.Type.STRING)
+        port = node.get_parameter('port').value
         rate = node.get_parameter('undeclared_rate').value
     """
 
@@ -48,5 +50,24 @@ def test_declared_with_a_default_is_set(write_tree):
     rule = next(r for r in load_catalogue() if r.id == "parameter-read-not-set")
     found = sorted(e for f in run_rule(rule, model) for e in f.entities
                    if e.startswith("parameter:"))
-    # gain has a default in its declaration; undeclared_rate is never declared nor set
-    assert found == ["parameter:/talker/undeclared_rate"]
+    # gain has a default in its declaration; port is declared by type only (no value);
+    # undeclared_rate is never declared nor set
+    assert found == ["parameter:/talker/port", "parameter:/talker/undeclared_rate"]
+
+
+def test_a_declaration_by_type_has_that_type_and_no_default(tmp_path):
+    from haros_arch.extract.python import extract_python
+    from haros_arch.workspace import scan
+
+    source = tmp_path / "n.py"
+    source.write_text(
+        "import rclpy\nfrom rcl_interfaces.msg import ParameterType\n"
+        "node = rclpy.create_node('n')\n"
+        "node.declare_parameter('port', rclpy.Parameter.Type.STRING)\n"
+        "node.declare_parameter('ids', ParameterType.PARAMETER_INTEGER_ARRAY)\n"
+        "node.declare_parameter('gain', 2.0)\n")
+    found = extract_python([str(source)], scan([str(tmp_path)]))
+    declared = {c.name: (c.type, c.has_default) for c in found.calls if c.kind == "declare"}
+    assert declared["~port"] == ("str", False)
+    assert declared["~ids"][1] is False and declared["~ids"][0] != "str"
+    assert declared["~gain"] == ("double", True)

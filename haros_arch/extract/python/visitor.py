@@ -390,9 +390,13 @@ class Walker:
             self._set_name(base, value, version)
         if spec.value is not None:
             value_expr = argument(call, spec.value)
+            declared_type = type_only(value_expr) if spec.kind == "declare" else None
             value = evaluate(ev, value_expr, frame)
             base.type = param_type(value)
-            if value_expr is not None and spec.kind in ("read", "declare"):
+            if declared_type is not None:
+                # declare_parameter('port', Parameter.Type.STRING): a type, no value
+                base.type = declared_type
+            elif value_expr is not None and spec.kind in ("read", "declare"):
                 base.has_default = True
                 base.default = plain_value(value)
             if spec.kind == "declare":
@@ -474,3 +478,24 @@ def _remote(remote: Value, name: str) -> str:
     """A parameter of another node: ``~x`` of node ``board`` is ``board/x``."""
     node = remote.text.rstrip("/")
     return f"{node}/{name.removeprefix('~')}" if node else name
+
+
+# rclpy's parameter types (Parameter.Type.X, ParameterType.PARAMETER_X) as the model
+# names parameter types, for declarations that give a type and no value
+_DECLARED_TYPES: dict[str, str | None] = {
+    "BOOL": param_type(True), "INTEGER": param_type(0), "DOUBLE": param_type(0.0),
+    "STRING": "str", **{f"{kind}_ARRAY": "list" for kind in (
+        "BYTE", "BOOL", "INTEGER", "DOUBLE", "STRING")}}
+
+
+def type_only(expr: ast.expr | None) -> str | None:
+    """The parameter type a ``declare_parameter`` value argument names when it is a type
+    rather than a value, else None."""
+    if not isinstance(expr, ast.Attribute):
+        return None
+    owner = expr.value
+    owner_name = owner.attr if isinstance(owner, ast.Attribute) else (
+        owner.id if isinstance(owner, ast.Name) else "")
+    if owner_name not in ("Type", "ParameterType"):
+        return None
+    return _DECLARED_TYPES.get(expr.attr.removeprefix("PARAMETER_"))
