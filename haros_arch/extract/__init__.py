@@ -35,6 +35,7 @@ def extract_nodes(nodes: Sequence[Node], workspace: Workspace, *,
                                   compile_commands=compile_commands)
         for node, result in zip(cpp, batch.results, strict=True):
             node.calls, node.rosname = result.calls, result.rosname
+            node.rosnames = result.rosnames
         found.extend(batch.all_diagnostics())
     for node in nodes:
         if node.language != "cpp":
@@ -54,6 +55,7 @@ def extract_node(node: Node, workspace: Workspace) -> list[Diagnostic]:
         result = extract_cpp(sources, workspace)
         node.calls = result.calls
         node.rosname = result.rosname
+        node.rosnames = result.rosnames
         return result.diagnostics
     if node.language == "python" and sources:
         from .python import extract_python

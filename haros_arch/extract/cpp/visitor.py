@@ -69,13 +69,18 @@ class CallFinder:
         self.ros2 = ros2
         self.types = CallTypes(ros2)
         self.namespaces = Namespaces(self.macros, source)
-        self._fixed: set[tuple[str, str]] = set()  # fixed-name calls already found
+        self._fixed: set[tuple[str, str, str | None]] = set()  # fixed-name calls already found
         self._declared: dict[str, str] = {}  # ROS 2 parameter -> its declared default
         self.calls: list[PrimitiveCall] = []
         self.functions: list[Cursor] = []
         self.sites: CallSites | None = None
         self._scope: Scope | None = None  # of the function being walked
         self.rosname: str | None = None
+        # every rclcpp node the file constructs: (owner, name), in the order met; the
+        # owner (``owner_of``) is the class whose constructor names it (``: Node("x")``)
+        # or the free function that makes it (``make_shared<rclcpp::Node>("x")`` in main)
+        self.node_names: list[tuple[str, str]] = []
+        self._owner: str | None = None  # of the function being walked
         self.diagnostics: list[Diagnostic] = []
         self.facts: list[Fact] = []  # what this file passes to other files' functions
         self.wrappers = Wrappers(self)  # the file's functions that wrap the ROS API
@@ -115,6 +120,7 @@ class CallFinder:
 
     def _function(self, function: Cursor) -> None:
         scope = self._scope = Scope(function, self.macros, self.source, self.sites)
+        self._owner = owner_of(function)
         stack: list[tuple[Cursor, tuple[Condition, ...]]] = [
             (child, ()) for child in reversed(list(function.get_children()))
             if child.kind != CursorKind.PARM_DECL]
@@ -219,7 +225,7 @@ class CallFinder:
 
     def _node_name(self, where: tuple[int, int], args: list[Cursor], scope: Scope) -> None:
         name_arg, ns_arg = where
-        if self.rosname is not None or name_arg >= len(args):
+        if name_arg >= len(args):
             return
         name = render(scope.string(args[name_arg]))
         if ns_arg < len(args) and (
@@ -228,7 +234,10 @@ class CallFinder:
             namespace = render(scope.string(args[ns_arg])).strip("/")
             if namespace:
                 name = f"/{namespace}/{name}"
-        self.rosname = name
+        if self._owner is not None:
+            self.node_names.append((self._owner, name))
+        if self.rosname is None:
+            self.rosname = name
 
     def _emit(self, spec: api.RosFunction, call: Cursor, args: list[Cursor],
               cls: Cursor | None, conditions: tuple[Condition, ...], scope: Scope,
@@ -251,9 +260,11 @@ class CallFinder:
             target.kind == CursorKind.CONSTRUCTOR) else callee)
         names: list[tuple[str, tuple[str, str | None] | None]]
         if spec.fixed_name is not None:
-            if (spec.kind, spec.fixed_name) in self._fixed:
+            # once per node: per owner when the file names several nodes
+            owner = self._owner if self._owner in dict(self.node_names) else ""
+            if (spec.kind, spec.fixed_name, owner) in self._fixed:
                 return
-            self._fixed.add((spec.kind, spec.fixed_name))
+            self._fixed.add((spec.kind, spec.fixed_name, owner))
             names = [(spec.fixed_name, None)]
         else:
             name_expr = arg(spec.name_arg)
@@ -310,7 +321,7 @@ class CallFinder:
                 name_default=source[1] if source else None,
                 has_default=has_default, default=default,
                 searched=spec.searched, handle_namespace=handle_namespace,
-                deletes=spec.deletes))
+                deletes=spec.deletes, node_name=self._owner))
             if "?" in name and PLACEHOLDER not in name:
                 self.diagnostics.append(diag.make(
                     "CPP_DYNAMIC_NAME", location, kind=spec.kind, name=name))
@@ -322,7 +333,8 @@ class CallFinder:
                         name.rpartition("/")[0] if "/" in name else "", sibling)
                 self.calls.append(PrimitiveCall(
                     kind=kind, name=full, type=self.types.ros_type(stype), queue_size=queue,
-                    latch=latch, conditions=conditions, location=location))
+                    latch=latch, conditions=conditions, location=location,
+                    node_name=self._owner))
 
     def _names(self, spec: api.RosFunction, call: Cursor, expr: Cursor, args: list[Cursor],
                scope: Scope) -> list[tuple[str, tuple[str, str | None] | None]]:
@@ -446,6 +458,24 @@ def _creator(expr: Cursor, depth: int = 0) -> tuple[api.RosFunction, Cursor] | N
         return (row, expr) if row is not None else None
     inner = [c for c in expr.get_children() if c.kind.is_expression()]
     return _creator(inner[-1], depth + 1) if len(inner) == 1 else None
+
+
+_CLASSES = frozenset({
+    CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL, CursorKind.CLASS_TEMPLATE,
+    CursorKind.CLASS_TEMPLATE_PARTIAL_SPECIALIZATION,
+})
+
+
+def owner_of(function: Cursor) -> str:
+    """Whose node a function's calls are made on, as far as the file tells: its class
+    (``ns::Driver`` for a method, a default member initialiser), else the free function
+    itself (``main()``). In a translation unit's result a call's ``node_name`` is its
+    owner; the node's result turns it into the name that owner's constructor gives."""
+    parent = function.semantic_parent
+    if parent is not None and parent.kind in _CLASSES:
+        return qualified_name(parent)
+    scope = qualified_name(parent)
+    return f"{scope}::{function.spelling}()" if scope else f"{function.spelling}()"
 
 
 def _known(parts: tuple[str | None, ...]) -> bool:
