@@ -32,7 +32,8 @@ def rows(result: CppResult) -> set[tuple[str, str, str | None]]:
 
 @pytest.fixture(scope="module")
 def base() -> CppResult:
-    return extract(BASE / "main.cpp", BASE / "base_driver.cpp", BASE / "odometry.cpp")
+    return extract(BASE / "main.cpp", BASE / "base_driver.cpp", BASE / "odometry.cpp",
+                   BASE / "devices.cpp")
 
 
 def test_each_class_names_its_node_and_its_calls(base: CppResult) -> None:
@@ -46,13 +47,20 @@ def test_each_class_names_its_node_and_its_calls(base: CppResult) -> None:
         ("publish", "battery", "rover_base_node"),
         ("publish", "odom", "odometry_node"),
         ("subscribe", "wheel_speed", "odometry_node"),
+        # a device class, constructed by the driver only, publishes on the driver's node
+        ("publish", "battery_voltage", "rover_base_node"),
+        # constructed by both nodes: no one node (the graph gives it to the first)
+        ("publish", "heartbeat", None),
     }
 
 
 def test_the_order_of_the_sources_does_not_change_the_nodes() -> None:
-    again = extract(BASE / "odometry.cpp", BASE / "main.cpp", BASE / "base_driver.cpp")
+    again = extract(BASE / "devices.cpp", BASE / "odometry.cpp", BASE / "main.cpp",
+                    BASE / "base_driver.cpp")
     assert again.rosnames == ["rover_base_node", "odometry_node"]
+    assert again.rosname == "odometry_node"  # as before: the first file's name
     assert ("publish", "odom", "odometry_node") in rows(again)
+    assert ("publish", "battery_voltage", "rover_base_node") in rows(again)
 
 
 def test_nodes_made_in_free_functions() -> None:
@@ -79,15 +87,19 @@ def test_a_node_of_one_file_only_is_one_node() -> None:
 def test_node_names_survive_the_cache(tmp_path: object) -> None:
     workspace = scan([str(CASE)])
     sources = [str(BASE / "main.cpp"), str(BASE / "base_driver.cpp"),
-               str(BASE / "odometry.cpp")]
+               str(BASE / "odometry.cpp"), str(BASE / "devices.cpp")]
     first = extract_cpp(sources, workspace, cache_dir=str(tmp_path), jobs=1)
     cached = extract_cpp(sources, workspace, cache_dir=str(tmp_path), jobs=1)
     assert cached.rosnames == first.rosnames == ["rover_base_node", "odometry_node"]
     assert rows(cached) == rows(first)
-    data = to_data([], None, [], [], [("rover::Odometry", "odometry_node")])
-    assert from_data(data)[4] == [("rover::Odometry", "odometry_node")]
+    data = to_data([], None, [], [], [("rover::Odometry", "odometry_node")],
+                   [("rover::BaseDriver", "rover::devices::Battery")])
+    assert from_data(data)[4:] == ([("rover::Odometry", "odometry_node")],
+                                   [("rover::BaseDriver", "rover::devices::Battery")])
     with pytest.raises(TypeError):
         from_data({**data, "node_names": [["rover::Odometry", 3]]})
+    with pytest.raises(TypeError):
+        from_data({**data, "constructions": [[None, "rover::devices::Battery"]]})
 
 
 @pytest.fixture(scope="module")
@@ -111,6 +123,20 @@ def test_the_executable_has_two_node_instances(model: Model) -> None:
     driver = links(model, "/rover_base_node")
     assert ("subscribe", "/cmd_vel") in driver and ("publish", "/battery") in driver
     assert ("publish", "/wheel_speed") in driver and ("publish", "/odom") not in driver
+    assert ("publish", "/battery_voltage") in driver
+    assert ("publish", "/heartbeat") in driver  # no one node: the first node's
     topic = next(t for t in config.topics if t.name == "/wheel_speed")
     assert [p.node.name for p in topic.publishers] == ["/rover_base_node"]
     assert [s.node.name for s in topic.subscribers] == ["/odometry_node"]
+
+
+def test_constructions_in_a_cycle_give_no_node() -> None:
+    from haros_arch.extract.cpp import _node_of
+
+    owners = {"A": ["a"], "B": ["b"]}
+    made_by = {"X": ["Y"], "Y": ["X"], "Z": ["A", "W"], "W": ["A"]}
+    names = ["a", "b"]
+    assert _node_of("X", owners, made_by, names, {}, 0) is None
+    assert _node_of("Z", owners, made_by, names, {}, 0) == "a"  # A directly and via W
+    assert _node_of("Z", owners, {"Z": ["A", "B"]}, names, {}, 0) is None
+    assert _node_of("A", owners, made_by, [], {}, 0) is None  # one node: no node names

@@ -72,6 +72,7 @@ class CppResult:
     # ``node_name`` is its owner (``visitor.owner_of``)
     rosnames: list[str] = field(default_factory=list)
     node_names: list[tuple[str, str]] = field(default_factory=list)
+    constructions: list[tuple[str, str]] = field(default_factory=list)  # visitor's
 
 
 @dataclass
@@ -174,10 +175,13 @@ def _node_result(paths_units: list[tuple[str, CppResult]]) -> CppResult:
 def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
                 facts: list[links.Fact]) -> None:
     """The executable's nodes when its files construct several with fully known names
-    (in the order met, files by path), and each call's node: the name its owner's
-    constructor gives, when that owner gives exactly one; else None (the first node)."""
+    (in the order met, files by path), and each call's node (``_node_of``); None where
+    no one node can be told (the graph gives those calls to the first node)."""
     owners: dict[str, list[str]] = {}
+    made_by: dict[str, list[str]] = {}
     for _, unit in units:
+        for maker, made in unit.constructions:
+            made_by.setdefault(made, []).append(maker)
         for owner, written in unit.node_names:
             name = links.resolve_name(written, facts)
             owners.setdefault(owner, [])
@@ -188,13 +192,38 @@ def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
     if len(result.rosnames) < 2:
         result.rosnames = []
     calls = []
+    nodes: dict[str, str | None] = {}
     for call in result.calls:
-        named = owners.get(call.node_name or "", [])
-        node = named[0] if len(named) == 1 and named[0] in result.rosnames else None
+        node = _node_of(call.node_name, owners, made_by, result.rosnames, nodes, 0)
         # a copy: a translation unit's calls are shared by the nodes that build it
         calls.append(call if call.node_name is None and node is None
                      else dataclasses.replace(call, node_name=node))
     result.calls = calls
+
+
+MAX_CONSTRUCTION_DEPTH = 8
+
+
+def _node_of(owner: str | None, owners: dict[str, list[str]],
+             made_by: dict[str, list[str]], rosnames: list[str],
+             known: dict[str, str | None], depth: int) -> str | None:
+    """The node an owner's calls are made on: the one name its constructor gives, else
+    the one node of every owner that constructs it (bounded, cycles give None)."""
+    if owner is None or not rosnames:
+        return None
+    if owner in known:
+        return known[owner]
+    known[owner] = None  # while it is being found: a cycle gives None
+    named = owners.get(owner)
+    found: str | None = None
+    if named:
+        found = named[0] if len(named) == 1 and named[0] in rosnames else None
+    elif depth < MAX_CONSTRUCTION_DEPTH:
+        makers = {_node_of(maker, owners, made_by, rosnames, known, depth + 1)
+                  for maker in made_by.get(owner, ())}
+        found = makers.pop() if len(makers) == 1 else None
+    known[owner] = found
+    return found
 
 
 def _units(texts: dict[str, str], ros2: dict[str, bool], setup: IncludeSetup,
@@ -210,10 +239,11 @@ def _units(texts: dict[str, str], ros2: dict[str, bool], setup: IncludeSetup,
             data = store.load(entry)
             if data is not None:
                 try:
-                    calls, rosname, found, facts, named = cache.from_data(data)
+                    calls, rosname, found, facts, named, made = cache.from_data(data)
                 except (ValueError, TypeError, KeyError):
                     continue
-                done[path] = CppResult(calls, rosname, found, facts, node_names=named)
+                done[path] = CppResult(calls, rosname, found, facts, node_names=named,
+                                       constructions=made)
     todo = [path for path in texts if path not in done]
     tasks = [(path, texts[path], ros2[path]) for path in todo]
     workers = min(len(todo), jobs or os.cpu_count() or 1)
@@ -233,7 +263,8 @@ def _units(texts: dict[str, str], ros2: dict[str, bool], setup: IncludeSetup,
         done[path] = unit
         if store is not None and headers:
             store.store(keys[path], headers, cache.to_data(
-                unit.calls, unit.rosname, unit.diagnostics, unit.facts, unit.node_names))
+                unit.calls, unit.rosname, unit.diagnostics, unit.facts, unit.node_names,
+                unit.constructions))
     return {path: done[path] for path in texts}
 
 
@@ -295,6 +326,7 @@ def _translation_unit(path: str, text: str, ros2: bool,
     result.rosname = finder.rosname
     result.facts = finder.facts
     result.node_names = finder.node_names
+    result.constructions = finder.constructions
     headers = [path]
     for include in tu.get_includes():
         name = os.path.abspath(include.include.name)

@@ -137,16 +137,18 @@ class Cache:
 def to_data(calls: list[PrimitiveCall], rosname: str | None,
             diagnostics: list[Diagnostic],
             facts: list[tuple[str, int, str, str]] | None = None,
-            node_names: list[tuple[str, str]] | None = None) -> dict[str, Any]:
+            node_names: list[tuple[str, str]] | None = None,
+            constructions: list[tuple[str, str]] | None = None) -> dict[str, Any]:
     return {"calls": [dataclasses.asdict(c) for c in calls], "rosname": rosname,
             "diagnostics": [dataclasses.asdict(d) for d in diagnostics],
             "facts": [list(f) for f in facts or ()],
-            "node_names": [list(n) for n in node_names or ()]}
+            "node_names": [list(n) for n in node_names or ()],
+            "constructions": [list(n) for n in constructions or ()]}
 
 
 def from_data(data: dict[str, Any]) -> tuple[
         list[PrimitiveCall], str | None, list[Diagnostic], list[tuple[str, int, str, str]],
-        list[tuple[str, str]]]:
+        list[tuple[str, str]], list[tuple[str, str]]]:
     """Raises ValueError / TypeError / KeyError for data that is not ours."""
     calls = []
     for item in data["calls"]:
@@ -169,12 +171,17 @@ def from_data(data: dict[str, Any]) -> tuple[
                 and isinstance(site, str)):
             raise TypeError("facts")
         facts.append((usr, index, value, site))
-    node_names = []
-    for owner, name in data.get("node_names", ()):
-        if not (isinstance(owner, str) and isinstance(name, str)):
-            raise TypeError("node_names")
-        node_names.append((owner, name))
-    return calls, rosname, diagnostics, facts, node_names
+    return (calls, rosname, diagnostics, facts, _pairs(data, "node_names"),
+            _pairs(data, "constructions"))
+
+
+def _pairs(data: dict[str, Any], key: str) -> list[tuple[str, str]]:
+    pairs = []
+    for first, second in data.get(key, ()):
+        if not (isinstance(first, str) and isinstance(second, str)):
+            raise TypeError(key)
+        pairs.append((first, second))
+    return pairs
 
 
 def _severity(code: str, stored: str) -> Any:

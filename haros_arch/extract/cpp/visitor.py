@@ -33,6 +33,7 @@ from .handles import (
     record_class,
 )
 from .links import Fact, argument_facts
+from .owners import constructed_class, owner_of
 from .qos import qos as qos_of
 from .values import PLACEHOLDER, Scope, initializer, render, strip, written_arguments
 from .wrappers import Wrappers
@@ -81,6 +82,10 @@ class CallFinder:
         # or the free function that makes it (``make_shared<rclcpp::Node>("x")`` in main)
         self.node_names: list[tuple[str, str]] = []
         self._owner: str | None = None  # of the function being walked
+        # (owner, class of the workspace it constructs): the class's calls are made on
+        # its constructor's node when it names none itself (a device object given the
+        # node's handle)
+        self.constructions: list[tuple[str, str]] = []
         self.diagnostics: list[Diagnostic] = []
         self.facts: list[Fact] = []  # what this file passes to other files' functions
         self.wrappers = Wrappers(self)  # the file's functions that wrap the ROS API
@@ -130,6 +135,8 @@ class CallFinder:
                 node.spelling in _API_NAMES or node.spelling in self.wrappers.names
             ):
                 self._call(node, conditions, scope)
+            if node.kind == CursorKind.CALL_EXPR:
+                self._construction(node)
             branches = self.reader.branches(node)
             stack.extend((child, conditions + extra) for child, extra in reversed(branches))
 
@@ -191,6 +198,14 @@ class CallFinder:
                 return
         if spec is not None:
             self._emit(spec, call, args, cls, conditions, scope)
+
+    def _construction(self, call: Cursor) -> None:
+        """Record that the function being walked constructs a class of the workspace."""
+        name = constructed_class(call, self.owned)
+        if name is not None and self._owner is not None and name != self._owner and (
+            (self._owner, name) not in self.constructions
+        ):
+            self.constructions.append((self._owner, name))
 
     def _options(self, expr: Cursor,
                  scope: Scope) -> tuple[api.RosFunction, Cursor, Scope] | None:
@@ -458,24 +473,6 @@ def _creator(expr: Cursor, depth: int = 0) -> tuple[api.RosFunction, Cursor] | N
         return (row, expr) if row is not None else None
     inner = [c for c in expr.get_children() if c.kind.is_expression()]
     return _creator(inner[-1], depth + 1) if len(inner) == 1 else None
-
-
-_CLASSES = frozenset({
-    CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL, CursorKind.CLASS_TEMPLATE,
-    CursorKind.CLASS_TEMPLATE_PARTIAL_SPECIALIZATION,
-})
-
-
-def owner_of(function: Cursor) -> str:
-    """Whose node a function's calls are made on, as far as the file tells: its class
-    (``ns::Driver`` for a method, a default member initialiser), else the free function
-    itself (``main()``). In a translation unit's result a call's ``node_name`` is its
-    owner; the node's result turns it into the name that owner's constructor gives."""
-    parent = function.semantic_parent
-    if parent is not None and parent.kind in _CLASSES:
-        return qualified_name(parent)
-    scope = qualified_name(parent)
-    return f"{scope}::{function.spelling}()" if scope else f"{function.spelling}()"
 
 
 def _known(parts: tuple[str | None, ...]) -> bool:
