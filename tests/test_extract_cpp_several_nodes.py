@@ -140,3 +140,20 @@ def test_constructions_in_a_cycle_give_no_node() -> None:
     assert _node_of("Z", owners, made_by, names, {}, 0) == "a"  # A directly and via W
     assert _node_of("Z", owners, {"Z": ["A", "B"]}, names, {}, 0) is None
     assert _node_of("A", owners, made_by, [], {}, 0) is None  # one node: no node names
+
+
+def test_a_component_library_is_one_node_per_plugin() -> None:
+    """The same classes built as a component library: each is loaded as a plugin of its
+    own, so the library's node has no process nodes and its calls no node names."""
+    from haros_arch.extract import extract_nodes
+    from haros_arch.model.source import Node
+
+    sources = [str(BASE / name) for name in ("base_driver.cpp", "odometry.cpp")]
+    library = Node("rover_base", "rover::Odometry", "component", "cpp", sources)
+    process = Node("rover_base", "base_ros", "executable", "cpp", list(sources))
+    extract_nodes([library, process], scan([str(CASE)]), cache_dir=None)
+    assert process.rosnames == ["rover_base_node", "odometry_node"]
+    assert {c.node_name for c in process.calls} == {  # None: the shared heartbeat
+        "rover_base_node", "odometry_node", None}
+    assert library.rosnames == [] and library.calls
+    assert {c.node_name for c in library.calls} == {None}
