@@ -65,9 +65,12 @@ def test_the_order_of_the_sources_does_not_change_the_nodes() -> None:
 
 def test_nodes_made_in_free_functions() -> None:
     helpers = extract(SINGLE / "helpers.cpp")
-    assert helpers.rosnames == ["watchdog", "helper_node"]
+    assert helpers.rosnames == ["watchdog", "helper_node", "log_node"]
     assert rows(helpers) == {("subscribe", "heartbeat", "watchdog"),
-                             ("publish", "heartbeat", "helper_node")}
+                             ("publish", "heartbeat", "helper_node"),
+                             # main makes two nodes: its calls go by the handle's node
+                             ("publish", "log", "log_node"),
+                             ("subscribe", "log", "helper_node")}
 
 
 def test_one_node_keeps_its_name_and_no_node_names() -> None:

@@ -15,6 +15,9 @@ from clang.cindex import Cursor, CursorKind
 from . import api
 from .call_types import template_argument
 from .handles import qualified_name
+from .values import initializer, strip
+
+MAX_DEPTH = 6
 
 _CLASSES = frozenset({
     CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL, CursorKind.CLASS_TEMPLATE,
@@ -52,3 +55,38 @@ def constructed_class(call: Cursor, owned: Callable[[str], bool]) -> str | None:
     if where is None or not owned(where.name):
         return None
     return qualified_name(cls) or None
+
+
+def handle_node(callee: Cursor) -> tuple[str, Cursor, tuple[str, str]] | None:
+    """The node a call is made on when it is a local variable initialised by a node
+    construction (``auto node = rclcpp::Node::make_shared("x"); node->create_x(...)``):
+    the variable as an owner, the construction call and its ``api.RCLCPP_NODE_NAME``
+    key."""
+    objects = [c for c in callee.get_children() if c.kind.is_expression()]
+    handle = strip(objects[0]) if objects else None
+    for _ in range(MAX_DEPTH):  # through the smart pointer's operator->
+        if handle is None or handle.kind == CursorKind.DECL_REF_EXPR:
+            break
+        inner = [c for c in handle.get_children() if c.kind.is_expression()]
+        handle = strip(inner[0]) if inner else None
+    variable = handle.referenced if handle is not None and handle.kind == (
+        CursorKind.DECL_REF_EXPR) else None
+    if variable is None or variable.kind != CursorKind.VAR_DECL:
+        return None
+    value = initializer(variable)
+    for _ in range(MAX_DEPTH):
+        if value is None:
+            return None
+        value = strip(value)
+        target = value.referenced if value.kind == CursorKind.CALL_EXPR else None
+        if target is not None:
+            key = (qualified_name(target.semantic_parent), target.spelling)
+            if key in api.FACTORIES:
+                ref = template_argument(value)
+                decl = ref.type.get_canonical().get_declaration() if ref is not None else None
+                key = (qualified_name(decl), decl.spelling) if decl is not None else key
+            if key in api.RCLCPP_NODE_NAME:
+                return f"{variable.get_usr()}", value, key
+        inner = [c for c in value.get_children() if c.kind.is_expression()]
+        value = inner[0] if len(inner) == 1 else None
+    return None

@@ -33,7 +33,7 @@ from .handles import (
     record_class,
 )
 from .links import Fact, argument_facts
-from .owners import constructed_class, owner_of
+from .owners import constructed_class, handle_node, owner_of
 from .qos import qos as qos_of
 from .values import PLACEHOLDER, Scope, initializer, render, strip, written_arguments
 from .wrappers import Wrappers
@@ -238,10 +238,12 @@ class CallFinder:
                     return row, node, found
         return None
 
-    def _node_name(self, where: tuple[int, int], args: list[Cursor], scope: Scope) -> None:
+    def _node_name(self, where: tuple[int, int], args: list[Cursor], scope: Scope,
+                   owner: str | None = None) -> None:
         name_arg, ns_arg = where
         if name_arg >= len(args):
             return
+        owner = owner or self._owner
         name = render(scope.string(args[name_arg]))
         if ns_arg < len(args) and (
             strip(args[ns_arg]).type.get_canonical().get_declaration().spelling != "NodeOptions"
@@ -249,8 +251,8 @@ class CallFinder:
             namespace = render(scope.string(args[ns_arg])).strip("/")
             if namespace:
                 name = f"/{namespace}/{name}"
-        if self._owner is not None:
-            self.node_names.append((self._owner, name))
+        if owner is not None and (owner, name) not in self.node_names:
+            self.node_names.append((owner, name))
         if self.rosname is None:
             self.rosname = name
 
@@ -276,10 +278,10 @@ class CallFinder:
         names: list[tuple[str, tuple[str, str | None] | None]]
         if spec.fixed_name is not None:
             # once per node: per owner when the file names several nodes
-            owner = self._owner if self._owner in dict(self.node_names) else ""
-            if (spec.kind, spec.fixed_name, owner) in self._fixed:
+            once = self._owner if self._owner in dict(self.node_names) else ""
+            if (spec.kind, spec.fixed_name, once) in self._fixed:
                 return
-            self._fixed.add((spec.kind, spec.fixed_name, owner))
+            self._fixed.add((spec.kind, spec.fixed_name, once))
             names = [(spec.fixed_name, None)]
         else:
             name_expr = arg(spec.name_arg)
@@ -299,6 +301,13 @@ class CallFinder:
                 names = [(join_name(name or "~", spec.name_suffix), source)
                          for name, source in names]
         namespace: str | None = None
+        owner = self._owner
+        if spec.on_handle:  # node->create_x(...), node = rclcpp::Node::make_shared("x")
+            made = handle_node(callee)
+            if made is not None:
+                owner = made[0]
+                self._node_name(api.RCLCPP_NODE_NAME[made[2]], written_arguments(made[1]),
+                                at_scope or scope, owner)
         if spec.fixed_name is None:
             if spec.on_handle:
                 namespace = render(self.namespaces.of_call(site, callee, at_scope or scope))
@@ -336,7 +345,7 @@ class CallFinder:
                 name_default=source[1] if source else None,
                 has_default=has_default, default=default,
                 searched=spec.searched, handle_namespace=handle_namespace,
-                deletes=spec.deletes, node_name=self._owner))
+                deletes=spec.deletes, node_name=owner))
             if "?" in name and PLACEHOLDER not in name:
                 self.diagnostics.append(diag.make(
                     "CPP_DYNAMIC_NAME", location, kind=spec.kind, name=name))
@@ -349,7 +358,7 @@ class CallFinder:
                 self.calls.append(PrimitiveCall(
                     kind=kind, name=full, type=self.types.ros_type(stype), queue_size=queue,
                     latch=latch, conditions=conditions, location=location,
-                    node_name=self._owner))
+                    node_name=owner))
 
     def _names(self, spec: api.RosFunction, call: Cursor, expr: Cursor, args: list[Cursor],
                scope: Scope) -> list[tuple[str, tuple[str, str | None] | None]]:
