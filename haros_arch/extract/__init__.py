@@ -1,6 +1,7 @@
 """Source extraction: the ROS primitive calls in each node's sources.
 
-Entry points: ``extract_nodes(nodes, workspace)`` fills ``calls`` and ``rosname`` of
+Entry points: ``extract_nodes(nodes, workspace)`` fills ``calls``, ``rosname`` and
+``rosnames`` (ROS 2: several nodes in one executable's process) of
 every node and returns the diagnostics, parsing each C++ translation unit of all the
 nodes once, in parallel, through the persistent cache; ``extract_node`` does one node.
 C++ goes through libclang, Python through ``ast``.
@@ -10,6 +11,7 @@ from __future__ import annotations
 
 import os
 from collections.abc import Sequence
+from dataclasses import replace
 
 from ..diagnostics import Diagnostic
 from ..model.source import Node
@@ -35,11 +37,21 @@ def extract_nodes(nodes: Sequence[Node], workspace: Workspace, *,
                                   compile_commands=compile_commands)
         for node, result in zip(cpp, batch.results, strict=True):
             node.calls, node.rosname = result.calls, result.rosname
+            _process_nodes(node, result.rosnames)
         found.extend(batch.all_diagnostics())
     for node in nodes:
         if node.language != "cpp":
             found.extend(extract_node(node, workspace))
     return found
+
+
+def _process_nodes(node: Node, rosnames: list[str]) -> None:
+    """The C++ nodes of an executable's process; a component library's classes are
+    loaded one by one (each its own plugin), never together: one node, no node names."""
+    if node.kind == "executable":
+        node.rosnames = rosnames
+    elif rosnames:
+        node.calls = [replace(c, node_name=None) if c.node_name else c for c in node.calls]
 
 
 def _paths(node: Node, workspace: Workspace) -> list[str]:
@@ -54,6 +66,7 @@ def extract_node(node: Node, workspace: Workspace) -> list[Diagnostic]:
         result = extract_cpp(sources, workspace)
         node.calls = result.calls
         node.rosname = result.rosname
+        _process_nodes(node, result.rosnames)
         return result.diagnostics
     if node.language == "python" and sources:
         from .python import extract_python

@@ -9,6 +9,7 @@ and walks the functions defined in the workspace for calls listed in ``api.ROSCP
 
 from __future__ import annotations
 
+import dataclasses
 import os
 import re
 from collections.abc import Sequence
@@ -65,6 +66,13 @@ class CppResult:
     # what a translation unit passes to the functions of the node's other files
     # (``links``); empty in a node's result, whose calls are filled with them
     facts: list[links.Fact] = field(default_factory=list)
+    # ROS 2: the nodes the executable creates, when several (``Node.rosnames``); each
+    # call's ``node_name`` is one of them or None (the first node's). In a translation
+    # unit's result: every node construction as (owner, name), and each call's
+    # ``node_name`` is its owner (``visitor.owner_of``)
+    rosnames: list[str] = field(default_factory=list)
+    node_names: list[tuple[str, str]] = field(default_factory=list)
+    constructions: list[tuple[str, str]] = field(default_factory=list)  # visitor's
 
 
 @dataclass
@@ -138,13 +146,14 @@ def extract_cpp_nodes(nodes: Sequence[Sequence[str]], workspace: Workspace, *,
     batch.diagnostics += [*setup.diagnostics, *read]
     for sources in nodes:
         batch.results.append(_node_result(
-            [results[p] for p in dict.fromkeys(map(os.path.abspath, sources))
+            [(p, results[p]) for p in dict.fromkeys(map(os.path.abspath, sources))
              if p in results]))
     return batch
 
 
-def _node_result(units: list[CppResult]) -> CppResult:
+def _node_result(paths_units: list[tuple[str, CppResult]]) -> CppResult:
     result = CppResult()
+    units = [unit for _, unit in paths_units]
     seen: set[tuple[object, ...]] = set()
     facts = [fact for unit in units for fact in unit.facts]
     for unit in units:
@@ -159,7 +168,62 @@ def _node_result(units: list[CppResult]) -> CppResult:
                 seen.add(key)
                 result.calls.append(call)
     result.diagnostics = list(dict.fromkeys(result.diagnostics))
+    _name_nodes(result, sorted(paths_units, key=lambda pair: pair[0]), facts)
     return result
+
+
+def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
+                facts: list[links.Fact]) -> None:
+    """The executable's nodes when its files construct several with fully known names
+    (in the order met, files by path), and each call's node (``_node_of``); None where
+    no one node can be told (the graph gives those calls to the first node)."""
+    owners: dict[str, list[str]] = {}
+    made_by: dict[str, list[str]] = {}
+    for _, unit in units:
+        for maker, made in unit.constructions:
+            made_by.setdefault(made, []).append(maker)
+        for owner, written in unit.node_names:
+            name = links.resolve_name(written, facts)
+            owners.setdefault(owner, [])
+            if name not in owners[owner]:
+                owners[owner].append(name)
+            if "?" not in name and name not in result.rosnames:
+                result.rosnames.append(name)
+    if len(result.rosnames) < 2:
+        result.rosnames = []
+    calls = []
+    nodes: dict[str, str | None] = {}
+    for call in result.calls:
+        node = _node_of(call.node_name, owners, made_by, result.rosnames, nodes, 0)
+        # a copy: a translation unit's calls are shared by the nodes that build it
+        calls.append(call if call.node_name is None and node is None
+                     else dataclasses.replace(call, node_name=node))
+    result.calls = calls
+
+
+MAX_CONSTRUCTION_DEPTH = 8
+
+
+def _node_of(owner: str | None, owners: dict[str, list[str]],
+             made_by: dict[str, list[str]], rosnames: list[str],
+             known: dict[str, str | None], depth: int) -> str | None:
+    """The node an owner's calls are made on: the one name its constructor gives, else
+    the one node of every owner that constructs it (bounded, cycles give None)."""
+    if owner is None or not rosnames:
+        return None
+    if owner in known:
+        return known[owner]
+    known[owner] = None  # while it is being found: a cycle gives None
+    named = owners.get(owner)
+    found: str | None = None
+    if named:
+        found = named[0] if len(named) == 1 and named[0] in rosnames else None
+    elif depth < MAX_CONSTRUCTION_DEPTH:
+        makers = {_node_of(maker, owners, made_by, rosnames, known, depth + 1)
+                  for maker in made_by.get(owner, ())}
+        found = makers.pop() if len(makers) == 1 else None
+    known[owner] = found
+    return found
 
 
 def _units(texts: dict[str, str], ros2: dict[str, bool], setup: IncludeSetup,
@@ -175,10 +239,11 @@ def _units(texts: dict[str, str], ros2: dict[str, bool], setup: IncludeSetup,
             data = store.load(entry)
             if data is not None:
                 try:
-                    calls, rosname, found, facts = cache.from_data(data)
+                    calls, rosname, found, facts, named, made = cache.from_data(data)
                 except (ValueError, TypeError, KeyError):
                     continue
-                done[path] = CppResult(calls, rosname, found, facts)
+                done[path] = CppResult(calls, rosname, found, facts, node_names=named,
+                                       constructions=made)
     todo = [path for path in texts if path not in done]
     tasks = [(path, texts[path], ros2[path]) for path in todo]
     workers = min(len(todo), jobs or os.cpu_count() or 1)
@@ -198,7 +263,8 @@ def _units(texts: dict[str, str], ros2: dict[str, bool], setup: IncludeSetup,
         done[path] = unit
         if store is not None and headers:
             store.store(keys[path], headers, cache.to_data(
-                unit.calls, unit.rosname, unit.diagnostics, unit.facts))
+                unit.calls, unit.rosname, unit.diagnostics, unit.facts, unit.node_names,
+                unit.constructions))
     return {path: done[path] for path in texts}
 
 
@@ -259,6 +325,8 @@ def _translation_unit(path: str, text: str, ros2: bool,
     result.diagnostics[:0] = setup.diagnostics[before:]
     result.rosname = finder.rosname
     result.facts = finder.facts
+    result.node_names = finder.node_names
+    result.constructions = finder.constructions
     headers = [path]
     for include in tu.get_includes():
         name = os.path.abspath(include.include.name)

@@ -136,14 +136,19 @@ class Cache:
 
 def to_data(calls: list[PrimitiveCall], rosname: str | None,
             diagnostics: list[Diagnostic],
-            facts: list[tuple[str, int, str, str]] | None = None) -> dict[str, Any]:
+            facts: list[tuple[str, int, str, str]] | None = None,
+            node_names: list[tuple[str, str]] | None = None,
+            constructions: list[tuple[str, str]] | None = None) -> dict[str, Any]:
     return {"calls": [dataclasses.asdict(c) for c in calls], "rosname": rosname,
             "diagnostics": [dataclasses.asdict(d) for d in diagnostics],
-            "facts": [list(f) for f in facts or ()]}
+            "facts": [list(f) for f in facts or ()],
+            "node_names": [list(n) for n in node_names or ()],
+            "constructions": [list(n) for n in constructions or ()]}
 
 
-def from_data(data: dict[str, Any]) -> tuple[list[PrimitiveCall], str | None,
-                                             list[Diagnostic], list[tuple[str, int, str, str]]]:
+def from_data(data: dict[str, Any]) -> tuple[
+        list[PrimitiveCall], str | None, list[Diagnostic], list[tuple[str, int, str, str]],
+        list[tuple[str, str]], list[tuple[str, str]]]:
     """Raises ValueError / TypeError / KeyError for data that is not ours."""
     calls = []
     for item in data["calls"]:
@@ -166,7 +171,17 @@ def from_data(data: dict[str, Any]) -> tuple[list[PrimitiveCall], str | None,
                 and isinstance(site, str)):
             raise TypeError("facts")
         facts.append((usr, index, value, site))
-    return calls, rosname, diagnostics, facts
+    return (calls, rosname, diagnostics, facts, _pairs(data, "node_names"),
+            _pairs(data, "constructions"))
+
+
+def _pairs(data: dict[str, Any], key: str) -> list[tuple[str, str]]:
+    pairs = []
+    for first, second in data.get(key, ()):
+        if not (isinstance(first, str) and isinstance(second, str)):
+            raise TypeError(key)
+        pairs.append((first, second))
+    return pairs
 
 
 def _severity(code: str, stored: str) -> Any:

@@ -33,6 +33,7 @@ from .handles import (
     record_class,
 )
 from .links import Fact, argument_facts
+from .owners import constructed_class, handle_node, owner_of
 from .qos import qos as qos_of
 from .values import PLACEHOLDER, Scope, initializer, render, strip, written_arguments
 from .wrappers import Wrappers
@@ -69,13 +70,22 @@ class CallFinder:
         self.ros2 = ros2
         self.types = CallTypes(ros2)
         self.namespaces = Namespaces(self.macros, source)
-        self._fixed: set[tuple[str, str]] = set()  # fixed-name calls already found
+        self._fixed: set[tuple[str, str, str | None]] = set()  # fixed-name calls already found
         self._declared: dict[str, str] = {}  # ROS 2 parameter -> its declared default
         self.calls: list[PrimitiveCall] = []
         self.functions: list[Cursor] = []
         self.sites: CallSites | None = None
         self._scope: Scope | None = None  # of the function being walked
         self.rosname: str | None = None
+        # every rclcpp node the file constructs: (owner, name), in the order met; the
+        # owner (``owner_of``) is the class whose constructor names it (``: Node("x")``)
+        # or the free function that makes it (``make_shared<rclcpp::Node>("x")`` in main)
+        self.node_names: list[tuple[str, str]] = []
+        self._owner: str | None = None  # of the function being walked
+        # (owner, class of the workspace it constructs): the class's calls are made on
+        # its constructor's node when it names none itself (a device object given the
+        # node's handle)
+        self.constructions: list[tuple[str, str]] = []
         self.diagnostics: list[Diagnostic] = []
         self.facts: list[Fact] = []  # what this file passes to other files' functions
         self.wrappers = Wrappers(self)  # the file's functions that wrap the ROS API
@@ -115,6 +125,7 @@ class CallFinder:
 
     def _function(self, function: Cursor) -> None:
         scope = self._scope = Scope(function, self.macros, self.source, self.sites)
+        self._owner = owner_of(function)
         stack: list[tuple[Cursor, tuple[Condition, ...]]] = [
             (child, ()) for child in reversed(list(function.get_children()))
             if child.kind != CursorKind.PARM_DECL]
@@ -124,6 +135,8 @@ class CallFinder:
                 node.spelling in _API_NAMES or node.spelling in self.wrappers.names
             ):
                 self._call(node, conditions, scope)
+            if node.kind == CursorKind.CALL_EXPR:
+                self._construction(node)
             branches = self.reader.branches(node)
             stack.extend((child, conditions + extra) for child, extra in reversed(branches))
 
@@ -186,6 +199,14 @@ class CallFinder:
         if spec is not None:
             self._emit(spec, call, args, cls, conditions, scope)
 
+    def _construction(self, call: Cursor) -> None:
+        """Record that the function being walked constructs a class of the workspace."""
+        name = constructed_class(call, self.owned)
+        if name is not None and self._owner is not None and name != self._owner and (
+            (self._owner, name) not in self.constructions
+        ):
+            self.constructions.append((self._owner, name))
+
     def _options(self, expr: Cursor,
                  scope: Scope) -> tuple[api.RosFunction, Cursor, Scope] | None:
         """The ``ops.init<M>(...)`` or ``Options::create<M>(...)`` call that filled the
@@ -217,10 +238,12 @@ class CallFinder:
                     return row, node, found
         return None
 
-    def _node_name(self, where: tuple[int, int], args: list[Cursor], scope: Scope) -> None:
+    def _node_name(self, where: tuple[int, int], args: list[Cursor], scope: Scope,
+                   owner: str | None = None) -> None:
         name_arg, ns_arg = where
-        if self.rosname is not None or name_arg >= len(args):
+        if name_arg >= len(args):
             return
+        owner = owner or self._owner
         name = render(scope.string(args[name_arg]))
         if ns_arg < len(args) and (
             strip(args[ns_arg]).type.get_canonical().get_declaration().spelling != "NodeOptions"
@@ -228,7 +251,10 @@ class CallFinder:
             namespace = render(scope.string(args[ns_arg])).strip("/")
             if namespace:
                 name = f"/{namespace}/{name}"
-        self.rosname = name
+        if owner is not None and (owner, name) not in self.node_names:
+            self.node_names.append((owner, name))
+        if self.rosname is None:
+            self.rosname = name
 
     def _emit(self, spec: api.RosFunction, call: Cursor, args: list[Cursor],
               cls: Cursor | None, conditions: tuple[Condition, ...], scope: Scope,
@@ -251,9 +277,11 @@ class CallFinder:
             target.kind == CursorKind.CONSTRUCTOR) else callee)
         names: list[tuple[str, tuple[str, str | None] | None]]
         if spec.fixed_name is not None:
-            if (spec.kind, spec.fixed_name) in self._fixed:
+            # once per node: per owner when the file names several nodes
+            once = self._owner if self._owner in dict(self.node_names) else ""
+            if (spec.kind, spec.fixed_name, once) in self._fixed:
                 return
-            self._fixed.add((spec.kind, spec.fixed_name))
+            self._fixed.add((spec.kind, spec.fixed_name, once))
             names = [(spec.fixed_name, None)]
         else:
             name_expr = arg(spec.name_arg)
@@ -273,6 +301,13 @@ class CallFinder:
                 names = [(join_name(name or "~", spec.name_suffix), source)
                          for name, source in names]
         namespace: str | None = None
+        owner = self._owner
+        if spec.on_handle:  # node->create_x(...), node = rclcpp::Node::make_shared("x")
+            made = handle_node(callee)
+            if made is not None:
+                owner = made[0]
+                self._node_name(api.RCLCPP_NODE_NAME[made[2]], written_arguments(made[1]),
+                                at_scope or scope, owner)
         if spec.fixed_name is None:
             if spec.on_handle:
                 namespace = render(self.namespaces.of_call(site, callee, at_scope or scope))
@@ -310,7 +345,7 @@ class CallFinder:
                 name_default=source[1] if source else None,
                 has_default=has_default, default=default,
                 searched=spec.searched, handle_namespace=handle_namespace,
-                deletes=spec.deletes))
+                deletes=spec.deletes, node_name=owner))
             if "?" in name and PLACEHOLDER not in name:
                 self.diagnostics.append(diag.make(
                     "CPP_DYNAMIC_NAME", location, kind=spec.kind, name=name))
@@ -322,7 +357,8 @@ class CallFinder:
                         name.rpartition("/")[0] if "/" in name else "", sibling)
                 self.calls.append(PrimitiveCall(
                     kind=kind, name=full, type=self.types.ros_type(stype), queue_size=queue,
-                    latch=latch, conditions=conditions, location=location))
+                    latch=latch, conditions=conditions, location=location,
+                    node_name=owner))
 
     def _names(self, spec: api.RosFunction, call: Cursor, expr: Cursor, args: list[Cursor],
                scope: Scope) -> list[tuple[str, tuple[str, str | None] | None]]:

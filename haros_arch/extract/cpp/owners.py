@@ -1,0 +1,92 @@
+"""Whose ROS 2 node a C++ call is made on, when one executable creates several.
+
+Every function's calls have an owner (``owner_of``): the class of a method, else the free
+function itself. A node construction (``: Node("name")``, ``make_shared<rclcpp::Node>``)
+names its owner's node; a class of the workspace that names none takes the node of the
+owners that construct it (``constructed_class``), as a device object given the node.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from clang.cindex import Cursor, CursorKind
+
+from . import api
+from .call_types import template_argument
+from .handles import qualified_name
+from .values import initializer, strip
+
+MAX_DEPTH = 6
+
+_CLASSES = frozenset({
+    CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL, CursorKind.CLASS_TEMPLATE,
+    CursorKind.CLASS_TEMPLATE_PARTIAL_SPECIALIZATION,
+})
+
+
+def owner_of(function: Cursor) -> str:
+    """Whose node a function's calls are made on, as far as the file tells: its class
+    (``ns::Driver`` for a method, a default member initialiser), else the free function
+    itself (``main()``). In a translation unit's result a call's ``node_name`` is its
+    owner; the node's result turns it into the name that owner's constructor gives."""
+    parent = function.semantic_parent
+    if parent is not None and parent.kind in _CLASSES:
+        return qualified_name(parent)
+    scope = qualified_name(parent)
+    return f"{scope}::{function.spelling}()" if scope else f"{function.spelling}()"
+
+
+def constructed_class(call: Cursor, owned: Callable[[str], bool]) -> str | None:
+    """The class of the workspace a call constructs (``T(...)``, ``new T(...)``,
+    ``std::make_shared<T>(...)``), by its qualified name."""
+    target = call.referenced
+    if target is None:
+        return None
+    cls: Cursor | None = None
+    if target.kind == CursorKind.CONSTRUCTOR:
+        cls = target.semantic_parent
+    elif (qualified_name(target.semantic_parent), target.spelling) in api.FACTORIES:
+        ref = template_argument(call)
+        cls = ref.type.get_canonical().get_declaration() if ref is not None else None
+    if cls is None or cls.kind not in _CLASSES:
+        return None
+    where = cls.location.file
+    if where is None or not owned(where.name):
+        return None
+    return qualified_name(cls) or None
+
+
+def handle_node(callee: Cursor) -> tuple[str, Cursor, tuple[str, str]] | None:
+    """The node a call is made on when it is a local variable initialised by a node
+    construction (``auto node = rclcpp::Node::make_shared("x"); node->create_x(...)``):
+    the variable as an owner, the construction call and its ``api.RCLCPP_NODE_NAME``
+    key."""
+    objects = [c for c in callee.get_children() if c.kind.is_expression()]
+    handle = strip(objects[0]) if objects else None
+    for _ in range(MAX_DEPTH):  # through the smart pointer's operator->
+        if handle is None or handle.kind == CursorKind.DECL_REF_EXPR:
+            break
+        inner = [c for c in handle.get_children() if c.kind.is_expression()]
+        handle = strip(inner[0]) if inner else None
+    variable = handle.referenced if handle is not None and handle.kind == (
+        CursorKind.DECL_REF_EXPR) else None
+    if variable is None or variable.kind != CursorKind.VAR_DECL:
+        return None
+    value = initializer(variable)
+    for _ in range(MAX_DEPTH):
+        if value is None:
+            return None
+        value = strip(value)
+        target = value.referenced if value.kind == CursorKind.CALL_EXPR else None
+        if target is not None:
+            key = (qualified_name(target.semantic_parent), target.spelling)
+            if key in api.FACTORIES:
+                ref = template_argument(value)
+                decl = ref.type.get_canonical().get_declaration() if ref is not None else None
+                key = (qualified_name(decl), decl.spelling) if decl is not None else key
+            if key in api.RCLCPP_NODE_NAME:
+                return f"{variable.get_usr()}", value, key
+        inner = [c for c in value.get_children() if c.kind.is_expression()]
+        value = inner[0] if len(inner) == 1 else None
+    return None

@@ -1,0 +1,162 @@
+"""Several ROS 2 nodes in one C++ executable (``fixtures/cpp/several_nodes``): two
+classes deriving from rclcpp::Node, each naming itself in its base initialiser, added to
+one executor by main; or plain nodes made in free functions. Each call is made on the
+node of the class (or function) it is in, and the graph makes one instance per node."""
+
+from __future__ import annotations
+
+import os
+
+import pytest
+from conftest import FIXTURES
+
+from haros_arch.extract.cpp import CppResult, extract_cpp
+from haros_arch.extract.cpp.cache import from_data, to_data
+from haros_arch.model.model import Model
+from haros_arch.pipeline import Options, analyse
+from haros_arch.project import load
+from haros_arch.workspace import scan
+
+CASE = FIXTURES / "cpp" / "several_nodes"
+BASE = CASE / "src" / "rover_base" / "src"
+SINGLE = CASE / "src" / "rover_single" / "src"
+
+
+def extract(*paths: os.PathLike[str]) -> CppResult:
+    return extract_cpp([str(p) for p in paths], scan([str(CASE)]), cache_dir=None)
+
+
+def rows(result: CppResult) -> set[tuple[str, str, str | None]]:
+    return {(c.kind, c.name, c.node_name) for c in result.calls}
+
+
+@pytest.fixture(scope="module")
+def base() -> CppResult:
+    return extract(BASE / "main.cpp", BASE / "base_driver.cpp", BASE / "odometry.cpp",
+                   BASE / "devices.cpp")
+
+
+def test_each_class_names_its_node_and_its_calls(base: CppResult) -> None:
+    # files by path: base_driver.cpp, then odometry.cpp
+    assert base.rosnames == ["rover_base_node", "odometry_node"]
+    assert base.rosname == "rover_base_node"
+    assert rows(base) == {
+        ("declare", "port", "rover_base_node"),
+        ("subscribe", "cmd_vel", "rover_base_node"),
+        ("publish", "wheel_speed", "rover_base_node"),  # in a lambda of a method
+        ("publish", "battery", "rover_base_node"),
+        ("publish", "odom", "odometry_node"),
+        ("subscribe", "wheel_speed", "odometry_node"),
+        # a device class, constructed by the driver only, publishes on the driver's node
+        ("publish", "battery_voltage", "rover_base_node"),
+        # constructed by both nodes: no one node (the graph gives it to the first)
+        ("publish", "heartbeat", None),
+    }
+
+
+def test_the_order_of_the_sources_does_not_change_the_nodes() -> None:
+    again = extract(BASE / "devices.cpp", BASE / "odometry.cpp", BASE / "main.cpp",
+                    BASE / "base_driver.cpp")
+    assert again.rosnames == ["rover_base_node", "odometry_node"]
+    assert again.rosname == "odometry_node"  # as before: the first file's name
+    assert ("publish", "odom", "odometry_node") in rows(again)
+    assert ("publish", "battery_voltage", "rover_base_node") in rows(again)
+
+
+def test_nodes_made_in_free_functions() -> None:
+    helpers = extract(SINGLE / "helpers.cpp")
+    assert helpers.rosnames == ["watchdog", "helper_node", "log_node"]
+    assert rows(helpers) == {("subscribe", "heartbeat", "watchdog"),
+                             ("publish", "heartbeat", "helper_node"),
+                             # main makes two nodes: its calls go by the handle's node
+                             ("publish", "log", "log_node"),
+                             ("subscribe", "log", "helper_node")}
+
+
+def test_one_node_keeps_its_name_and_no_node_names() -> None:
+    single = extract(SINGLE / "monitor.cpp")
+    assert single.rosname == "battery_monitor"
+    assert single.rosnames == []
+    assert rows(single) == {("subscribe", "battery", None), ("publish", "alarm", None)}
+
+
+def test_a_node_of_one_file_only_is_one_node() -> None:
+    """The driver's file alone: one name, so calls carry no node name."""
+    alone = extract(BASE / "base_driver.cpp")
+    assert alone.rosnames == []
+    assert {c.node_name for c in alone.calls} == {None}
+
+
+def test_node_names_survive_the_cache(tmp_path: object) -> None:
+    workspace = scan([str(CASE)])
+    sources = [str(BASE / "main.cpp"), str(BASE / "base_driver.cpp"),
+               str(BASE / "odometry.cpp"), str(BASE / "devices.cpp")]
+    first = extract_cpp(sources, workspace, cache_dir=str(tmp_path), jobs=1)
+    cached = extract_cpp(sources, workspace, cache_dir=str(tmp_path), jobs=1)
+    assert cached.rosnames == first.rosnames == ["rover_base_node", "odometry_node"]
+    assert rows(cached) == rows(first)
+    data = to_data([], None, [], [], [("rover::Odometry", "odometry_node")],
+                   [("rover::BaseDriver", "rover::devices::Battery")])
+    assert from_data(data)[4:] == ([("rover::Odometry", "odometry_node")],
+                                   [("rover::BaseDriver", "rover::devices::Battery")])
+    with pytest.raises(TypeError):
+        from_data({**data, "node_names": [["rover::Odometry", 3]]})
+    with pytest.raises(TypeError):
+        from_data({**data, "constructions": [[None, "rover::devices::Battery"]]})
+
+
+@pytest.fixture(scope="module")
+def model() -> Model:
+    return analyse(load(str(CASE / "project.yaml")), {"PATH": os.environ.get("PATH", "")},
+                   Options(cache_dir=None))
+
+
+def links(model: Model, node: str) -> list[tuple[str, str]]:
+    config = model.configuration("base")
+    return sorted((link.kind, link.name) for link in config.links if link.node.name == node)
+
+
+def test_the_executable_has_two_node_instances(model: Model) -> None:
+    node = {n.executable: n for p in model.packages for n in p.nodes}["base_ros"]
+    assert node.rosnames == ["rover_base_node", "odometry_node"]
+    config = model.configuration("base")
+    assert [n.name for n in config.nodes] == ["/rover_base_node", "/odometry_node"]
+    assert links(model, "/odometry_node") == [
+        ("publish", "/odom"), ("subscribe", "/wheel_speed")]
+    driver = links(model, "/rover_base_node")
+    assert ("subscribe", "/cmd_vel") in driver and ("publish", "/battery") in driver
+    assert ("publish", "/wheel_speed") in driver and ("publish", "/odom") not in driver
+    assert ("publish", "/battery_voltage") in driver
+    assert ("publish", "/heartbeat") in driver  # no one node: the first node's
+    topic = next(t for t in config.topics if t.name == "/wheel_speed")
+    assert [p.node.name for p in topic.publishers] == ["/rover_base_node"]
+    assert [s.node.name for s in topic.subscribers] == ["/odometry_node"]
+
+
+def test_constructions_in_a_cycle_give_no_node() -> None:
+    from haros_arch.extract.cpp import _node_of
+
+    owners = {"A": ["a"], "B": ["b"]}
+    made_by = {"X": ["Y"], "Y": ["X"], "Z": ["A", "W"], "W": ["A"]}
+    names = ["a", "b"]
+    assert _node_of("X", owners, made_by, names, {}, 0) is None
+    assert _node_of("Z", owners, made_by, names, {}, 0) == "a"  # A directly and via W
+    assert _node_of("Z", owners, {"Z": ["A", "B"]}, names, {}, 0) is None
+    assert _node_of("A", owners, made_by, [], {}, 0) is None  # one node: no node names
+
+
+def test_a_component_library_is_one_node_per_plugin() -> None:
+    """The same classes built as a component library: each is loaded as a plugin of its
+    own, so the library's node has no process nodes and its calls no node names."""
+    from haros_arch.extract import extract_nodes
+    from haros_arch.model.source import Node
+
+    sources = [str(BASE / name) for name in ("base_driver.cpp", "odometry.cpp")]
+    library = Node("rover_base", "rover::Odometry", "component", "cpp", sources)
+    process = Node("rover_base", "base_ros", "executable", "cpp", list(sources))
+    extract_nodes([library, process], scan([str(CASE)]), cache_dir=None)
+    assert process.rosnames == ["rover_base_node", "odometry_node"]
+    assert {c.node_name for c in process.calls} == {  # None: the shared heartbeat
+        "rover_base_node", "odometry_node", None}
+    assert library.rosnames == [] and library.calls
+    assert {c.node_name for c in library.calls} == {None}
