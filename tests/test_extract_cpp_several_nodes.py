@@ -160,3 +160,37 @@ def test_a_component_library_is_one_node_per_plugin() -> None:
         "rover_base_node", "odometry_node", None}
     assert library.rosnames == [] and library.calls
     assert {c.node_name for c in library.calls} == {None}
+
+
+def test_a_node_that_renames_itself_is_no_node_of_the_process(tmp_path) -> None:
+    """nav2's internal client nodes: made as "_" with their own ``__node:=`` argument,
+    which wins over the process's (and a launch ``name=``), so they are not named here."""
+    source = tmp_path / "manager.cpp"
+    source.write_text("""
+#include <memory>
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+
+class Manager : public rclcpp::Node
+{
+public:
+  Manager() : Node("manager")
+  {
+    auto options = rclcpp::NodeOptions().arguments({"--ros-args", "-r", "__node:=manager_client"});
+    client_node_ = rclcpp::Node::make_shared("_", options);
+    pub_ = create_publisher<std_msgs::msg::String>("status", 10);
+  }
+  rclcpp::Node::SharedPtr client_node_;
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+};
+
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<Manager>());
+  return 0;
+}
+""")
+    found = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    assert found.rosname == "manager"
+    assert found.rosnames == []

@@ -244,6 +244,8 @@ class CallFinder:
         if name_arg >= len(args):
             return
         owner = owner or self._owner
+        if any(_renames_itself(arg) for arg in args):
+            return  # its own ``__node:=`` argument names it at run time (nav2's helpers)
         name = render(scope.string(args[name_arg]))
         if ns_arg < len(args) and (
             strip(args[ns_arg]).type.get_canonical().get_declaration().spelling != "NodeOptions"
@@ -506,3 +508,21 @@ def _elements(expr: Cursor, depth: int = 0) -> list[Cursor]:
             if len(found) != 1 or found[0] != children[0]:
                 return found
     return [expr]
+
+
+def _renames_itself(arg: Cursor) -> bool:
+    """Whether a node's options carry a ``__node:=`` remap of their own: node-local
+    arguments win over the process's, so neither the name in code nor a launch
+    ``name=`` names that node (nav2's internal client nodes, made as ``"_"``)."""
+    expr = strip(arg)
+    if expr.type.get_canonical().get_declaration().spelling != "NodeOptions":
+        return False
+    target = expr.referenced if expr.kind == CursorKind.DECL_REF_EXPR else None
+    source = target if target is not None and target.kind == CursorKind.VAR_DECL else expr
+    for count, token in enumerate(source.get_tokens()):
+        if count > 400:
+            return False
+        if "__node:=" in token.spelling:
+            return True
+    return False
+
