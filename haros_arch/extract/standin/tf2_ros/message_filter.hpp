@@ -1,21 +1,3 @@
-// haros_arch stand-in
+// haros_arch stand-in: tf2_ros::MessageFilter is the same class in ROS 2
 #pragma once
-#include <string>
-#include <vector>
-#include <tf2_ros/buffer.h>
-
-namespace tf2_ros {
-// Filters messages until their frames can be transformed; no graph primitive of its own.
-template<class M> class MessageFilter {
-public:
-  template<class... A> MessageFilter(A&&... args);
-  template<class C> void registerCallback(const C& callback);
-  template<class C, class T> void registerCallback(C callback, T* object);
-  template<class F> void connectInput(F& filter);
-  void setTargetFrame(const std::string& frame);
-  void setTargetFrames(const std::vector<std::string>& frames);
-  template<class D> void setTolerance(const D& tolerance);
-  void setQueueSize(uint32_t size);
-  void clear();
-};
-}  // namespace tf2_ros
+#include <tf2_ros/message_filter.h>
