@@ -206,13 +206,23 @@ def _value(node: ast.expr, names: dict[str, object]) -> object:
             and node.func.attr == "format" and not node.keywords):
         template = _value(node.func.value, names)
         args = [_value(a, names) for a in node.args]
-        if isinstance(template, str) and all(isinstance(a, str) for a in args) and all(
-                re.fullmatch(r"\d*", field) for field in re.findall(r"\{([^{}]*)\}", template)):
-            try:
-                return template.format(*args)
-            except (IndexError, ValueError):
-                return UNKNOWN
+        if isinstance(template, str):
+            formatted = format_positional(template, args)
+            return UNKNOWN if formatted is None else formatted
     return UNKNOWN
+
+
+def format_positional(template: str, args: list[object]) -> str | None:
+    """``template.format(*args)`` when every field is positional (``{}``, ``{0}``) and
+    every argument a known string; None otherwise (never a format spec or attribute,
+    so nothing but string building happens)."""
+    if not all(isinstance(a, str) for a in args) or not all(
+            re.fullmatch(r"\d*", field) for field in re.findall(r"\{([^{}]*)\}", template)):
+        return None
+    try:
+        return template.format(*args)
+    except (IndexError, ValueError):
+        return None
 
 
 # -- setup.cfg ---------------------------------------------------------------------

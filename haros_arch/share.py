@@ -306,12 +306,9 @@ def _str_method(text: str, method: str, args: list[object], keywords: bool) -> o
     if method == "join" and len(args) == 1 and isinstance(args[0], list) and all(
             isinstance(a, str) for a in args[0]):
         return text.join(str(a) for a in args[0])
-    if method == "format" and not keywords and all(isinstance(a, str) for a in args) and all(
-            re.fullmatch(r"\d*", f) for f in re.findall(r"\{([^{}]*)\}", text)):
-        try:
-            return text.format(*args)
-        except (IndexError, ValueError):
-            return UNKNOWN
+    if method == "format" and not keywords:
+        formatted = pysetup.format_positional(text, args)
+        return UNKNOWN if formatted is None else formatted
     return UNKNOWN
 
 
