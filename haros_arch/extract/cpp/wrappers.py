@@ -308,6 +308,13 @@ class Wrappers:
                      if c.kind == CursorKind.TEMPLATE_TYPE_PARAMETER]
         sources: list[str] = []
         type_arg: int | None = None
+
+        def passed(index: int | None) -> int | None:
+            """The wrapper parameter the inner call's argument ``index`` is, if any."""
+            if index is None or index + shift >= len(args):
+                return None
+            return _parameter_index(args[index + shift], params)
+
         for source in spec.type_from:
             if source in ("template", "template-value"):
                 ref = template_argument(call)
@@ -317,22 +324,17 @@ class Wrappers:
                         sources.append(source)
                     continue
             elif source in ("value", "arg") and spec.type_arg is not None:
-                index = _parameter_index(
-                    args[spec.type_arg + shift] if spec.type_arg + shift < len(args)
-                    else None, params)
+                index = passed(spec.type_arg)
                 if index is not None:
                     sources.append(source)
                     if source == "value":
                         sources.append("template-value")
                     type_arg = index
                     continue
-            elif source in ("callback", "service-callback") and spec.callback_arg is not None:
-                index = _parameter_index(
-                    args[spec.callback_arg + shift] if spec.callback_arg + shift < len(args)
-                    else None, params)
-                if index is not None:
-                    sources.append(source)
-                    continue
+            elif source in ("callback", "service-callback") and (
+                    passed(spec.callback_arg) is not None):
+                sources.append(source)
+                continue
             if sources:
                 continue
             fixed = self._fixed_type(spec, source, call, args, shift, cls)
