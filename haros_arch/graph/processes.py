@@ -48,36 +48,20 @@ def process_params(launch: LaunchModel, nodes: Mapping[str, Node]) -> list[Param
     """The launch parameters, those given to an unnamed node moved to the name(s) its
     code gives it (each node of a several-node process gets a copy).
 
-    A parameter knows the declaration it was given to (``owner``), so two unnamed nodes
-    in one namespace (both ``/?`` until named) keep their own parameters; one without an
-    owner follows every declaration of that name, as before."""
+    A ROS 2 parameter knows the declaration it was given to (``owner``), so two unnamed
+    nodes in one namespace (both ``/?`` until named) keep their own parameters."""
     by_owner: dict[int, list[str]] = {}
-    renamed: dict[str, list[str]] = {}
-    kept: set[str] = set()
     for index, decl in enumerate(launch.nodes):
-        owns = _own_names(decl, nodes)
-        names = [_renamed(decl, own) for own in owns]
-        if owns and names[0] != decl.name:
+        names = [_renamed(decl, own) for own in _own_names(decl, nodes)]
+        if names and names[0] != decl.name:
             by_owner[index] = names
-            renamed.setdefault(decl.name, []).extend(names)
-        else:
-            kept.add(decl.name)
-    if not renamed:
+    if not by_owner:
         return list(launch.params)
     params: list[ParamDecl] = []
     for param in launch.params:
-        if param.node is None:
+        targets = by_owner.get(param.owner) if param.owner is not None else None
+        if not targets or param.node is None:
             params.append(param)
-            continue
-        if param.owner is not None:
-            targets = by_owner.get(param.owner)
-            keep = targets is None
-        else:
-            targets = renamed.get(param.node)
-            keep = targets is None or param.node in kept
-        if keep:
-            params.append(param)
-        if not targets:
             continue
         rest = param.name[len(param.node):]
         params.extend(replace(param, name=target + rest, node=target)
