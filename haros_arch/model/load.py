@@ -26,7 +26,7 @@ from .runtime import (
     Service,
     Topic,
 )
-from .source import Dependency, Node, Package, PrimitiveCall, wire_call
+from .source import Completeness, Dependency, Node, Package, PrimitiveCall, wire_call
 from .values import UNKNOWN_MARK
 
 _RESOURCE_OF_KIND: dict[str, type[Resource]] = {
@@ -82,7 +82,16 @@ def _node(data: dict[str, Any], package: str) -> Node:
                 data.get("language", "cpp"), list(data.get("sources", ())), calls,
                 data.get("rosname"), conditions(data.get("conditions")),
                 location(data.get("location")),
-                [str(n) for n in data.get("rosnames", ()) if isinstance(n, str)])
+                [str(n) for n in data.get("rosnames", ()) if isinstance(n, str)],
+                _completeness(data.get("completeness")),
+                [str(r) for r in data.get("completeness_reasons", ()) if isinstance(r, str)])
+
+
+def _completeness(value: Any) -> Completeness:
+    """A saved node's completeness; documents without it (older ones) mean complete."""
+    if value in ("complete", "partial", "model", "unknown"):
+        return value
+    return "complete"
 
 
 def _package(data: dict[str, Any]) -> Package:

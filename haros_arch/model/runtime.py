@@ -16,7 +16,7 @@ from .conditions import Condition
 from .diagnostic import Diagnostic
 from .location import NOWHERE, Location
 from .rosname import RosName, namespace_of
-from .source import Node, PrimitiveCall
+from .source import KNOWN_COMPLETENESS, Node, PrimitiveCall
 from .values import UNKNOWN_MARK
 
 INDEX: dict[str, Any] = {"json": False}
@@ -44,7 +44,26 @@ class NodeInstance:
     ros_version: int = 1  # 2: ROS 2 naming (node-scoped parameters)
     links: list[Link] = field(default_factory=list, metadata=INDEX)
 
-    JSON_VIEWS: ClassVar[dict[str, Callable[[Any], Any]]] = {}
+    JSON_VIEWS: ClassVar[dict[str, Callable[[Any], Any]]] = {
+        "completeness": lambda n: n.completeness,
+    }
+
+    @property
+    def completeness(self) -> str:
+        """How much of this instance's interface is known: its node's completeness, or
+        "unknown" when no node model is known for what it runs."""
+        return "unknown" if self.node is None else self.node.completeness
+
+    @property
+    def completeness_reasons(self) -> list[str]:
+        if self.node is None:
+            return ["no source and no interface model for what it runs"]
+        return list(self.node.completeness_reasons)
+
+    @property
+    def is_complete(self) -> bool:
+        """Every link of this instance is known (complete source or interface model)."""
+        return self.completeness in KNOWN_COMPLETENESS
 
     @property
     def rosname(self) -> RosName:
@@ -442,6 +461,12 @@ class Configuration:
         """``links`` without the topic and service links that an action link stands for
         (``origin == "action"``): what the code (or a hint) asked for by name."""
         return [link for link in self.links if link.origin != "action"]
+
+    @property
+    def incomplete_nodes(self) -> list[NodeInstance]:
+        """The node instances whose interface is partly or wholly unknown: a link they
+        may have is not in ``links``, so an absence is not a fact where they could be."""
+        return [n for n in self.nodes if not n.is_complete]
 
     def node(self, name: str) -> NodeInstance | None:
         return next((n for n in self.nodes if n.name == name), None)

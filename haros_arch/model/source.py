@@ -11,6 +11,13 @@ from .location import NOWHERE, Location
 BuildType = Literal["catkin", "ament_cmake", "ament_python", "cmake", "unknown"]
 NodeKind = Literal["executable", "nodelet", "component", "script"]
 Language = Literal["cpp", "python"]
+# How much of a node's interface is known (DESIGN.md, "Completeness"): "complete" (its
+# sources read clean), "partial" (calls may be missing: parse errors, plugin names left;
+# ``completeness_reasons`` says why), "model" (from an interface model), "unknown" (no
+# source and no model). Checks that claim something is absent trust only "complete" and
+# "model" nodes.
+Completeness = Literal["complete", "partial", "model", "unknown"]
+KNOWN_COMPLETENESS = ("complete", "model")
 
 # The kinds of primitive calls; the same words are used for graph links.
 CALL_KINDS = (
@@ -114,8 +121,24 @@ class Node:
     # executor, create_node twice): their names in order, each call's ``node_name`` one of
     # them; empty when the executable creates one node (``rosname``)
     rosnames: list[str] = field(default_factory=list, metadata={"optional": True})
+    completeness: Completeness = field(default="complete", metadata={"optional": True})
+    # why calls may be missing (the first few reasons, each with its file:line)
+    completeness_reasons: list[str] = field(default_factory=list,
+                                            metadata={"optional": True})
 
     JSON_VIEWS: ClassVar[dict[str, str]] = {}
+
+    @property
+    def is_complete(self) -> bool:
+        """Every call of the node is known: its sources read clean, or a model gave it."""
+        return self.completeness in KNOWN_COMPLETENESS
+
+    def mark_partial(self, reason: str, limit: int = 5) -> None:
+        """Calls may be missing for ``reason``; keeps the first ``limit`` reasons."""
+        if self.completeness == "complete":
+            self.completeness = "partial"
+        if len(self.completeness_reasons) < limit and reason not in self.completeness_reasons:
+            self.completeness_reasons.append(reason)
 
     @property
     def name(self) -> str:
