@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import os
 
-from haros_arch.extract.cpp import CppResult, extract_cpp
+from haros_arch.extract.cpp import CppResult, extract_cpp, synthesis
 from haros_arch.workspace import scan
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -35,3 +35,44 @@ def test_qt_module_headers_beside_their_folders() -> None:
     assert rows(result) == [("publish", "frames", "std_msgs/msg/String", 13)]
     assert "CPP_INCLUDE_MISSING" not in codes(result)
     assert "CPP_PARSE_ERROR" not in codes(result)
+
+
+def test_unknown_vendor_type_costs_no_call() -> None:
+    result = extract("vendor_member.cpp")
+    assert rows(result) == [
+        ("declare", "gain", "double", 13),
+        ("publish", "out", "std_msgs/msg/String", 14),
+        ("subscribe", "in", "std_msgs/msg/String", 15),
+    ]
+    assert "CPP_PARSE_ERROR" not in codes(result)
+    assert "CPP_NAMES_DECLARED" in codes(result)
+
+
+def test_names_are_declared_as_they_are_used() -> None:
+    names = synthesis.Names()
+    text = (b"class A : public vendor::Base {};\nvendor::Tmpl<int> t;\nUnknown u;\n"
+            b"int x = ns::CONSTANT;\n")
+    names.learn([
+        ("use of undeclared identifier 'vendor'", text, text.index(b"vendor")),
+        ("use of undeclared identifier 'vendor'", text, text.index(b"vendor::Tmpl")),
+        ("unknown type name 'Unknown'", text, text.index(b"Unknown")),
+        ("use of undeclared identifier 'ns'", text, text.index(b"ns::")),
+        ("no member named 'apply' in 'vendor::Base'", None, 0),
+    ])
+    header = names.header()
+    assert "namespace vendor {" in header
+    assert "struct Base : haros_any {" in header
+    assert "template <class... T> struct Tmpl : haros_any {" in header
+    assert "struct Unknown : haros_any {" in header
+    assert "extern haros_any CONSTANT;" in header
+    assert "static haros_any apply;" in header
+
+
+def test_unresolved_calls_are_kept_by_name() -> None:
+    result = extract("invalid_object.cpp")
+    assert rows(result) == [
+        ("declare", "rate", "double", 11),
+        ("publish", "status", "vendor_msgs/msg/Status", 12),
+        ("publish", "frames", "?", 13),
+    ]
+    assert codes(result).count("CPP_CALL_UNRESOLVED") == 3

@@ -303,6 +303,16 @@ IMPLICIT: dict[tuple[str, str], RosFunction] = {
 # (class, method) -> the argument that names the sub-namespace
 RCLCPP_SUB_NODE: dict[tuple[str, str], int] = {("rclcpp::Node", "create_sub_node"): 0}
 
+# Calls clang could not resolve (made on an object of a class it does not know, or of
+# one an error made invalid), matched by the function's name alone: rclcpp's node
+# methods and rclcpp_action's functions in ROS 2 code, a NodeHandle's in ROS 1 code.
+UNRESOLVED_ROS2: dict[str, RosFunction] = {
+    **_RCLCPP_NODE,
+    "create_server": LIBRARIES[("rclcpp_action", "create_server")],
+}
+UNRESOLVED_ROS1: dict[str, RosFunction] = {
+    name: row for (owner, name), row in ROSCPP.items() if owner == NODE_HANDLE}
+
 ALL: dict[tuple[str, str], RosFunction] = {**ROSCPP, **LIBRARIES, **RCLCPP,
                                             **RCLCPP_LIBRARIES}
 
