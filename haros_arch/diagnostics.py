@@ -196,6 +196,19 @@ CATALOGUE: dict[str, Entry] = {
         "type that is unknown or was made invalid by an error). The call is kept as the "
         "ROS API function of that name, its name and values read as usual, its type as "
         "written when that names a ROS interface, else '?'."),
+    "CPP_NODE_PARTIAL": Entry(
+        "warning", "node {node}: its calls may be incomplete, {count} error(s) left in "
+        "its C++ sources (first: {first})",
+        "Some of the node's code could not be parsed even after the names clang did not "
+        "know were declared: calls in that code may be missing. The node model is "
+        "'partial' (completeness, with the first reasons); checks that claim something "
+        "is absent do not trust it."),
+    "PY_NODE_PARTIAL": Entry(
+        "warning", "node {node}: its calls may be incomplete, {count} of its Python "
+        "sources could not be read or analysed in full (first: {first})",
+        "A source of the node could not be read or parsed, or was too large to analyse: "
+        "calls in it may be missing. The node model is 'partial' (completeness, with "
+        "the first reasons); checks that claim something is absent do not trust it."),
     "CPP_INCLUDE_MISSING": Entry(
         "info", "header {header} not found; an empty stand-in was used",
         "The header is neither in the workspace nor on the system; declarations from "

@@ -5,7 +5,9 @@ from __future__ import annotations
 
 import os
 
+from haros_arch.extract import extract_nodes
 from haros_arch.extract.cpp import CppResult, extract_cpp, synthesis
+from haros_arch.model.source import Node
 from haros_arch.workspace import scan
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -76,3 +78,38 @@ def test_unresolved_calls_are_kept_by_name() -> None:
         ("publish", "frames", "?", 13),
     ]
     assert codes(result).count("CPP_CALL_UNRESOLVED") == 3
+
+
+def test_completeness_of_nodes() -> None:
+    workspace = scan([ROOT])
+    base = "src/vendor_node/src/"
+    clean = Node("vendor_node", "filtered", sources=[base + "vendor_member.cpp"])
+    broken = Node("vendor_node", "helper", sources=[base + "invalid_object.cpp"])
+    nothing = Node("vendor_node", "ghost", sources=[])
+    found = extract_nodes([clean, broken, nothing], workspace, cache_dir=None, jobs=1)
+    assert (clean.completeness, clean.completeness_reasons) == ("complete", [])
+    assert broken.completeness == "partial"
+    assert broken.completeness_reasons[0].startswith(base + "invalid_object.cpp:9: ")
+    assert nothing.completeness == "unknown"
+    partial = [d for d in found if d.code == "CPP_NODE_PARTIAL"]
+    assert [(d.severity, "vendor_node/helper" in d.message) for d in partial] == [
+        ("warning", True)]
+
+
+def test_completeness_of_python_nodes(tmp_path) -> None:
+    package = tmp_path / "src" / "py_node"
+    (package / "scripts").mkdir(parents=True)
+    (package / "package.xml").write_text(
+        '<package format="2"><name>py_node</name><version>0.0.1</version>'
+        '<description>d</description><maintainer email="a@b.c">m</maintainer>'
+        "<license>BSD</license></package>\n")
+    (package / "scripts" / "good.py").write_text(
+        "import rospy\nrospy.init_node('good')\nrospy.Publisher('out', String)\n")
+    (package / "scripts" / "bad.py").write_text("import rospy\ndef broken(:\n")
+    workspace = scan([str(tmp_path / "src")])
+    good = Node("py_node", "good.py", language="python", sources=["py_node/scripts/good.py"])
+    bad = Node("py_node", "bad.py", language="python", sources=["py_node/scripts/bad.py"])
+    found = extract_nodes([good, bad], workspace, cache_dir=None)
+    assert (good.completeness, bad.completeness) == ("complete", "partial")
+    assert bad.completeness_reasons[0].startswith("py_node/scripts/bad.py:2")
+    assert [d.code for d in found if d.code.endswith("NODE_PARTIAL")] == ["PY_NODE_PARTIAL"]
