@@ -15,7 +15,8 @@ grouped by cause (the unit's first clang error kind left after synthesis, or, in
 without errors, the API form), the clang errors (at most 50 per file) per unit before
 and after the names clang did not know were declared (``CPP_NAMES_DECLARED``), and
 the cold extraction time per unit. ``--misses N`` lists N missed sites per workspace;
-``--no-synthesis`` turns the declaration of unknown names off (the numbers before it).
+``--no-synthesis`` turns the declaration of unknown names off; ``--timing`` first
+extracts the same units without it and prints the ratio of the two cold times.
 """
 
 from __future__ import annotations
@@ -99,7 +100,7 @@ def sites(path: str) -> list[tuple[int, str, str]]:
     return found
 
 
-def census(spec: str, jobs: int) -> None:
+def census(spec: str, jobs: int, timing: bool) -> None:
     root, _, only = spec.partition(":")
     root = os.path.abspath(root)
     workspace = scan([root], dict(os.environ))
@@ -114,6 +115,14 @@ def census(spec: str, jobs: int) -> None:
         nodes += [n for n in package.nodes if n.language == "cpp" and n.sources]
     units = sorted({os.path.join(workspace.root, s) for n in nodes for s in n.sources
                     if "/test/" not in f"/{s}" and "/tests/" not in f"/{s}"})
+    baseline = None
+    if timing:  # the same units without the declaration of unknown names, first
+        from haros_arch.extract.cpp import synthesis
+        rounds, synthesis.MAX_ROUNDS = synthesis.MAX_ROUNDS, 0
+        started = time.perf_counter()
+        extract_cpp_nodes([[unit] for unit in units], workspace, cache_dir=None, jobs=jobs)
+        baseline = time.perf_counter() - started
+        synthesis.MAX_ROUNDS = rounds
     started = time.perf_counter()
     # one "node" per translation unit: each result holds that unit's calls and errors
     batch = extract_cpp_nodes([[unit] for unit in units], workspace, cache_dir=None,
@@ -165,7 +174,9 @@ def census(spec: str, jobs: int) -> None:
     print(f"   clang errors: {before_after[0]} before synthesis in {before_after[2]} units, "
           f"{before_after[1]} after in {before_after[3]} units")
     print(f"   cold extraction {elapsed:.1f} s, {1000 * elapsed / max(len(units), 1):.0f} ms "
-          f"per unit (jobs {jobs})")
+          f"per unit (jobs {jobs})" + ("" if baseline is None else
+                                       f"; without synthesis {baseline:.1f} s, ratio "
+                                       f"{elapsed / max(baseline, 1e-9):.2f}"))
     for cause, count in causes.most_common(12):
         print(f"   miss {count:4}  {cause}")
     return_missed.extend(missed)
@@ -180,6 +191,7 @@ def main() -> None:
     parser.add_argument("--jobs", type=int, default=1)
     parser.add_argument("--misses", type=int, default=0)
     parser.add_argument("--no-synthesis", action="store_true")
+    parser.add_argument("--timing", action="store_true")
     args = parser.parse_args()
     if args.no_synthesis:
         try:
@@ -189,7 +201,7 @@ def main() -> None:
             pass  # a version without it
     for spec in args.workspaces:
         return_missed.clear()
-        census(spec, args.jobs)
+        census(spec, args.jobs, args.timing)
         for line in return_missed[:args.misses]:
             print("     " + line)
 

@@ -113,3 +113,16 @@ def test_completeness_of_python_nodes(tmp_path) -> None:
     assert (good.completeness, bad.completeness) == ("complete", "partial")
     assert bad.completeness_reasons[0].startswith("py_node/scripts/bad.py:2")
     assert [d.code for d in found if d.code.endswith("NODE_PARTIAL")] == ["PY_NODE_PARTIAL"]
+
+
+def test_parameter_forms_of_real_nodes() -> None:
+    result = extract("parameters.cpp")
+    assert [(c.kind, c.name, c.type, c.has_default, c.default) for c in result.calls] == [
+        ("declare", "gain", "double", False, None),
+        ("declare", "frame_id", "str", True, "map"),
+        ("declare", "map_file", None, True, None),
+        ("declare", "limits.?", None, False, None),
+        ("read", "retries", "int", True, 3),
+        ("read", "mode", "str", False, None),
+    ]
+    assert "CPP_PARSE_ERROR" not in codes(result)
