@@ -5,9 +5,12 @@ from __future__ import annotations
 
 import os
 
+import pytest
+
 from haros_arch.extract import extract_nodes
 from haros_arch.extract.cpp import CppResult, extract_cpp, synthesis
-from haros_arch.model.source import Node
+from haros_arch.manifest import ros_version
+from haros_arch.model.source import Dependency, Node, Package
 from haros_arch.workspace import scan
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -126,3 +129,18 @@ def test_parameter_forms_of_real_nodes() -> None:
         ("read", "mode", "str", False, None),
     ]
     assert "CPP_PARSE_ERROR" not in codes(result)
+
+
+def test_ros_version_comes_from_the_package() -> None:
+    result = extract("tf_only.cpp")
+    assert rows(result) == [("publish", "/tf", "tf2_msgs/msg/TFMessage", 14)]
+
+
+@pytest.mark.parametrize(("build_type", "depends", "version"), [
+    ("ament_cmake", [], 2), ("ament_python", [], 2), ("cmake", ["rclcpp"], 2),
+    ("catkin", ["roscpp"], 1), ("cmake", ["catkin"], 1), ("cmake", ["eigen"], None),
+])
+def test_package_ros_version(build_type: str, depends: list[str], version: int | None) -> None:
+    package = Package("p", "p", build_type=build_type,  # type: ignore[arg-type]
+                      dependencies=[Dependency(d, "depend") for d in depends])
+    assert ros_version(package) == version

@@ -22,6 +22,7 @@ from clang.cindex import Diagnostic as ClangDiagnostic
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
 from ...files import MAX_FILE_BYTES, read_text
+from ...manifest import ros_version
 from ...model.location import Location
 from ...model.source import PrimitiveCall
 from ...workspace import Workspace
@@ -139,7 +140,7 @@ def extract_cpp_nodes(nodes: Sequence[Sequence[str]], workspace: Workspace, *,
             read.extend(found)
             if text is not None:
                 texts[path] = text
-                ros2[path] = setup.scan(path, text)
+                ros2[path] = _is_ros2(path, setup.scan(path, text), workspace)
         results = _units(texts, ros2, setup, store, jobs)
     finally:
         setup.close()
@@ -149,6 +150,16 @@ def extract_cpp_nodes(nodes: Sequence[Sequence[str]], workspace: Workspace, *,
             [(p, results[p]) for p in dict.fromkeys(map(os.path.abspath, sources))
              if p in results]))
     return batch
+
+
+def _is_ros2(path: str, included: bool, workspace: Workspace) -> bool:
+    """ROS 2 code: as its package's manifest says (``manifest.ros_version``), else when
+    it or a workspace header it includes includes rclcpp or a ROS 2 interface
+    (``included``). Never by headers alone where the package tells: ROS 2 code that
+    includes only tf2_ros headers is ROS 2."""
+    package = workspace.package_of(path)
+    version = ros_version(package) if package is not None else None
+    return included if version is None else version == 2
 
 
 def _node_result(paths_units: list[tuple[str, CppResult]]) -> CppResult:
