@@ -32,6 +32,10 @@ CASES: list[tuple[str, dict[str, str]]] = [
     ("args.launch", {}),
     ("args.launch", {"sim": "true", "robot": "scout", "use_lidar": "false"}),
     ("machines.launch", {}),
+    # ROS 1 files named *.launch.xml, started on their own: by content, by package
+    ("xml_suffix.launch", {}),
+    ("../../robot_base/launch/includes/mobile_base.launch.xml", {"manager": "mgr"}),
+    ("../../robot_base/launch/includes/planning_pipeline.launch.xml", {}),
 ]
 REFUSED: dict[str, str] = {
     "refused_if_unless.launch": "LAUNCH_IF_AND_UNLESS",
