@@ -40,6 +40,7 @@ CASES: list[tuple[str, dict[str, str]]] = [
     ("../../robot_base/launch/includes/planning_pipeline.launch.xml", {}),
     # $(find) through ROS_PACKAGE_PATH: searched recursively, rosbuild packages too
     ("package_path.launch", {}),
+    ("private_top.launch", {}),  # ~name no node takes: /roslaunch/name
 ]
 REFUSED: dict[str, str] = {
     "refused_if_unless.launch": "LAUNCH_IF_AND_UNLESS",

@@ -95,8 +95,15 @@ def read_param_file(loader: Ros1Loader, path: str, scope: Scope, element: Elemen
 def add_param(loader: Ros1Loader, name: str, value: Any, kind: str | None,
               conditions: tuple[Condition, ...], location: Location,
               source: str = "value") -> None:
-    loader.model.params.append(ParamDecl(canonical(name), value, kind, conditions,
-                                       location, source))
+    loader.model.params.append(ParamDecl(server_name(name), value, kind, conditions,
+                                         location, source))
+
+
+def server_name(name: str) -> str:
+    """The parameter server's name for a launch parameter: roslaunch sets a ``~name``
+    left at the top (no node took it) as the caller ``/roslaunch``, so the master
+    stores it as ``/roslaunch/name``."""
+    return canonical("/roslaunch/" + name[1:] if name.startswith("~") else name)
 
 def tag_rosparam(loader: Ros1Loader, element: Element, scope: Scope) -> None:
     command = loader.text(element, "command", scope) or "load"
@@ -115,7 +122,7 @@ def tag_rosparam(loader: Ros1Loader, element: Element, scope: Scope) -> None:
     if command == "dump":
         return
     if command == "delete":
-        loader.model.deleted_params.append(canonical(full))
+        loader.model.deleted_params.append(server_name(full))
         return
     where = loader.where(scope, element)
     if file is not None:
