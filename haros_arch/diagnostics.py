@@ -140,6 +140,10 @@ CATALOGUE: dict[str, Entry] = {
         "error", "{path} requires argument {name}, which the include does not pass",
         "An included file uses an argument it declares without a value, and the <include> "
         "gives none; roslaunch refuses this. The value is kept unknown."),
+    "LAUNCH_TEST_LEFT_OUT": Entry(
+        "info", "<test> {name} is started by rostest only; left out of this configuration",
+        "roslaunch does not start <test> nodes, rostest does. A configuration that is a "
+        "rostest run says so in the project file (rostest: true) and keeps them."),
     "LAUNCH_UNKNOWN_VALUE": Entry(
         "info", "{detail}; what depends on it keeps '?'",
         "A substitution's value cannot be known statically (an unset environment "

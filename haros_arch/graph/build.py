@@ -177,7 +177,7 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
     remaps = list(decl.remaps) + remaps_in_args(decl.args)
     return NodeInstance(decl.name, node, namespace=decl.namespace, remaps=remaps,
                         args=decl.args, conditions=decl.conditions, location=decl.location,
-                        ros_version=decl.ros_version)
+                        ros_version=decl.ros_version, test=decl.is_test)
 
 
 def is_container(decl: NodeDecl) -> bool:

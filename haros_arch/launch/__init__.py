@@ -11,9 +11,9 @@ from collections.abc import Mapping
 from ..workspace import Workspace
 from . import ros1, ros2
 from .dialect import ros_version
-from .model import LaunchModel, NodeDecl, ParamDecl
+from .model import LaunchModel, NodeDecl, ParamDecl, without_tests
 
-__all__ = ["LaunchModel", "NodeDecl", "ParamDecl", "load"]
+__all__ = ["LaunchModel", "NodeDecl", "ParamDecl", "load", "without_tests"]
 
 
 def load(path: str, workspace: Workspace, args: Mapping[str, str] | None = None,
