@@ -241,19 +241,25 @@ class _Request:
         self.remap_rules, self.parameters, self.extra_arguments = [], [], []
 
 if not hasattr(launch.substitutions, "PathSubstitution"):
-    # launch >= 3.7 (newer than the sources here): a path join of one part that grows
-    # by "/ part"; written for the bench from launch's documentation of it
-    from launch.substitutions import PathJoinSubstitution
+    # launch >= 3.7 (newer than the sources here): a path join whose parts are each a
+    # list of substitutions, grown by "/ part"; written for the bench from its documentation
+    from launch.substitution import Substitution
 
-    def _join_more(self, more):
-        return PathJoinSubstitution(
-            list(self.substitutions) + [normalize_to_list_of_substitutions(more)])
+    class PathSubstitution(Substitution):
+        def __init__(self, path, more=()):
+            super().__init__()
+            self.parts = [normalize_to_list_of_substitutions(path), *more]
 
-    class PathSubstitution(PathJoinSubstitution):
-        def __init__(self, path):
-            super().__init__([path])
+        def __truediv__(self, part):
+            return PathSubstitution(self.parts[0], [*self.parts[1:],
+                                                    normalize_to_list_of_substitutions(part)])
 
-    PathJoinSubstitution.__truediv__ = _join_more
+        def describe(self):
+            return "PathSubstitution"
+
+        def perform(self, context):
+            return os.path.join(*[perform_substitutions(context, p) for p in self.parts])
+
     launch.substitutions.PathSubstitution = PathSubstitution
 
 lcn.composition_interfaces.srv.LoadNode.Request = _Request

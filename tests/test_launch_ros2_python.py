@@ -312,3 +312,16 @@ def generate_launch_description():
 """, extra={"src/pkg/launch/ekf.yaml": "ekf_local:\n  ros__parameters:\n    freq: 30.0\n"})
     assert [(p.key, p.value) for p in model.params] == [("freq", 30.0)]
     assert codes(model) == []
+
+
+def test_an_argument_with_a_space_stays_one_argument(write_tree):
+    # ros2_control_demos' spawners: "--controller-ros-args", "-r ~/cmd_vel:=/cmd_vel"
+    model, _ = run(write_tree, """
+def generate_launch_description():
+    return LaunchDescription([Node(
+        package='controller_manager', executable='spawner', name='spawner',
+        arguments=['base', '--controller-ros-args', '-r ~/cmd_vel:=/cmd_vel', ''])])
+""")
+    import shlex
+    assert shlex.split(model.nodes[0].args) == [
+        "base", "--controller-ros-args", "-r ~/cmd_vel:=/cmd_vel", ""]
