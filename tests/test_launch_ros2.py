@@ -264,3 +264,24 @@ def test_escaped_quotes_reach_eval(write_tree):
         </launch>
     """)
     assert [(n.name, n.conditions) for n in model.nodes] == [("/ndt", ())]
+
+
+def test_allow_substs_file_with_an_unknown_value_is_read(write_tree):
+    model, _ = run(write_tree, "main.launch.xml", """
+        <launch>
+          <arg name="robot" default="r1"/>
+          <node pkg="p" exec="e" name="cfg">
+            <param from="$(find-pkg-share pkg)/config/p.yaml" allow_substs="true"/>
+          </node>
+        </launch>
+    """, extra={"src/pkg/config/p.yaml": """
+        cfg:
+          ros__parameters:
+            frame: $(var robot)/base
+            port: $(env ROBOT_PORT_UNSET)
+            $(env SIDE_UNSET)_limit: 2.0
+            rate: 10
+    """})
+    assert {p.name: p.value for p in model.params} == {
+        "/cfg/frame": "r1/base", "/cfg/port": None, "/cfg/?_limit": 2.0, "/cfg/rate": 10}
+    assert "LAUNCH_UNKNOWN_VALUE" in codes(model)
