@@ -240,6 +240,13 @@ CATALOGUE: dict[str, Entry] = {
         "A configuration hint names a node instance that no launch file of the "
         "configuration starts."),
     # graph
+    "NODE_NAME_GUESSED": Entry(
+        "info", "{name}: launched without name= and its code is not known; named after "
+        "its executable {executable}, which is a guess",
+        "A ROS 2 node is named by its code (rclcpp::Node(\"name\"), rclpy's "
+        "Node('name')) unless the launch file renames it. Without the code the "
+        "executable's name stands in, as packages usually name the two alike; when "
+        "they differ, the instance's name (and its parameters) are wrong."),
     "NODE_NOT_FOUND": Entry(
         "warning", "node type {node} is not in the workspace; its interface is unknown",
         "A launch file starts an executable that no workspace package builds; the "
