@@ -160,3 +160,19 @@ def test_the_type_mismatch_query_is_fast_on_10000_links():
     compiled = query.compile(text)
     # a tight budget proves the join: nested loops would need 25,000,000 bindings
     assert compiled.run(query.model_scope(big), max_steps=200_000)
+
+
+def test_a_sub_expression_without_bound_variables_is_evaluated_once():
+    big = big_model(4000)
+    # the inner path reads no variable of the outer filter: filtered once, not 4000 times
+    text = "configs/links[len(<configs/links[self.type == 'std_msgs/Int32']>) > 0]"
+    compiled = query.compile(text)
+    assert len(compiled.run(query.model_scope(big), max_steps=100_000)) == 4000
+    # one that reads the outer 'self' is evaluated per item, and still right
+    correlated = ("configs/links[some q in <configs/links[self.type == 'std_msgs/Int32']> "
+                  "satisfies (q.name == self.name)]")
+    names = {link.name for link in big.configurations[0].links
+             if link.type == "std_msgs/Int32"}
+    found = query.compile(correlated).run(query.model_scope(big))
+    assert {link.name for link in found} == names
+    assert all(link.name in names for link in found)
