@@ -36,6 +36,7 @@ CATALOGUE_DIRS = (Path(__file__).resolve().parent.parent.parent / "queries",
                   Path(sys.prefix) / "share" / "haros-arch" / "queries")
 CATALOGUE_DIR = next((d for d in CATALOGUE_DIRS if d.is_dir()), CATALOGUE_DIRS[0])
 QUERY_ERROR = "query-error"
+UNDECIDED = "-undecided"  # suffix of the id of a rule's info on matches it cannot decide
 # diagnostics whose codes a catalogue rule reports as findings (``check`` shows them once)
 ABSORBED_CODES = frozenset({"LAUNCH_FILE_MISSING", "PACKAGE_NOT_FOUND", "NODE_NOT_FOUND"})
 # a name computed at run time, said by the extractor about a call; where a configuration
@@ -68,6 +69,10 @@ class Rule:
     scope: str = "configuration"  # configuration | model | auto
     configurations: tuple[str, ...] | None = None  # only these (None: all)
     origin: str = ""
+    # the key of a match that lists the nodes of partial or unknown interface that could
+    # be the missing side: a match where it is not empty is not a finding; they are
+    # counted in one info per configuration (the rule's id + UNDECIDED)
+    undecided_by: str | None = None
 
 
 class CatalogueError(ValueError):
@@ -86,7 +91,8 @@ def _rule(data: Any, origin: str, default_id: str = "", scope: str = "auto") -> 
     return Rule(rule_id, severity, str(data.get("title") or data.get("name") or rule_id),
                 data["query"], str(data.get("description", "")),
                 data.get("message") or data.get("details"),
-                str(data.get("scope", scope)), None, origin)
+                str(data.get("scope", scope)), None, origin,
+                str(data["undecided_by"]) if data.get("undecided_by") else None)
 
 
 def load_catalogue(folder: Path | str | None = None) -> list[Rule]:
@@ -208,13 +214,52 @@ def _run(rule: Rule, model: Model) -> list[tuple[Finding, list[Location]]]:
             found.append((_error_finding(rule, err, config), []))
             continue
         matches = value if isinstance(value, list) else [value]
+        undecided: list[tuple[Any, list[Any]]] = []
         for match in matches:
             if match is None or match is False or match == ():
+                continue
+            unseen = _unseen(rule, match)
+            if unseen:
+                undecided.append((match, unseen))
                 continue
             finding = _finding(rule, match, config, evaluator)
             places = [finding.location, *(location_of(e) for e in entities(match))]
             found.append((finding, places))
+        if undecided:
+            found.append((_undecided_finding(rule, undecided, config), []))
     return found
+
+
+def _unseen(rule: Rule, match: Any) -> list[Any]:
+    if rule.undecided_by is None or not isinstance(match, dict):
+        return []
+    nodes = match.get(rule.undecided_by)
+    return list(nodes) if isinstance(nodes, list | tuple) else []
+
+
+UNDECIDED_NAMED = 5  # nodes named in an undecided info (the ones that could be most)
+
+
+def _undecided_finding(rule: Rule, undecided: list[tuple[Any, list[Any]]],
+                       config: Configuration | None) -> Finding:
+    """One info for the matches of a rule that nodes of partial or unknown interface
+    could contradict: how many, and which nodes could be the missing side."""
+    counts: dict[Any, int] = {}
+    for _match, nodes in undecided:
+        for node in nodes:
+            counts[node] = counts.get(node, 0) + 1
+    ranked = sorted(counts, key=lambda n: (-counts[n], getattr(n, "name", str(n))))
+    named = ", ".join(f"{label(n).removeprefix('node ')} ({counts[n]})"
+                      for n in ranked[:UNDECIDED_NAMED])
+    more = f" and {len(ranked) - UNDECIDED_NAMED} more" if len(ranked) > UNDECIDED_NAMED \
+        else ""
+    first = "; ".join(label(e) for e in entities(undecided[0][0])[:1])
+    message = (f"{len(undecided)} possible finding(s) not reported (first: {first}): "
+               f"node(s) whose interface is partial or unknown could be the missing side: "
+               f"{named}{more}")
+    return Finding(rule.id + UNDECIDED, "info", f"{rule.title}: not decided",
+                   message, config.name if config else None,
+                   entity_ids(ranked[:UNDECIDED_NAMED]), NOWHERE)
 
 
 def _error_finding(rule: Rule, err: QueryError, config: Configuration | None) -> Finding:

@@ -12,6 +12,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from ..model.runtime import Link, NodeInstance, Resource
+from .absence import similar_to, unknown_users
 from .errors import QueryLimitError, QueryTypeError
 
 Charge = Callable[[int], None]
@@ -261,3 +262,8 @@ def is_infrastructure(charge: Charge, name: Any) -> bool:
 
 FUNCTIONS["is_infrastructure"] = Function("is_infrastructure", is_infrastructure,
                                           charged=True)
+
+
+# checks that claim an absence, and similar-name pairing through an index (absence.py)
+FUNCTIONS["unknown_users"] = Function("unknown_users", unknown_users, 2, 2, charged=True)
+FUNCTIONS["similar_to"] = Function("similar_to", similar_to, 2, 2, charged=True)
