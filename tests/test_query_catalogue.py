@@ -15,7 +15,13 @@ from conftest import FIXTURES, ROOT, only_case
 
 from haros_arch import query
 from haros_arch.model.load import from_data
-from haros_arch.query.catalogue import UNDECIDED, load_catalogue, project_rules, run_catalogue, run_rule
+from haros_arch.query.catalogue import (
+    UNDECIDED,
+    load_catalogue,
+    project_rules,
+    run_catalogue,
+    run_rule,
+)
 
 CASES = FIXTURES / "queries" / "catalogue"
 RULES = {rule.id: rule for rule in load_catalogue()}
