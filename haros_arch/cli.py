@@ -49,7 +49,8 @@ def _parser() -> argparse.ArgumentParser:
     check.add_argument("--fail-on", choices=(*SEVERITY_RANK, "never"), default="error")
     check.add_argument("-o", "--output", help="write the report here (default: stdout)")
     check.add_argument("-v", "--verbose", action="store_true",
-                       help="list info-level diagnostics one by one (default: counted per code)")
+                       help="list every finding of a rule (default: the first few) and "
+                            "info-level diagnostics one by one (default: counted per code)")
     _run_options(check)
 
     query = sub.add_parser("query", help="evaluate a query and print its matches")

@@ -240,3 +240,20 @@ def test_an_absence_an_unknown_node_could_fill_is_no_finding_but_one_info(rule_i
     if "decided" in case:  # an unknown node that cannot be the missing side: still found
         found = run_rule(RULES[rule_id], configuration(case["decided"]))
         assert [f.rule for f in found] == [rule_id], found
+
+
+def test_a_read_of_a_name_known_only_at_run_time_could_be_the_missing_reader():
+    # the HAROS paper's talker: getParam(name read from stdin) may read /frequency
+    doc = {"parameters": [{"name": "/frequency", "type": "double", "value": 1.0,
+                           "writers": ["<launch>"]}],
+           "links": [{"kind": "read", "node": "/talker", "name": "/?", "given": "?"}]}
+    model = configuration(doc)
+    from haros_arch.graph.candidates import find_candidates
+
+    find_candidates(model.configurations[0])
+    found = run_rule(RULES["parameter-set-not-read"], model)
+    assert [(f.rule, f.entities) for f in found] == [
+        ("parameter-set-not-read" + UNDECIDED, ("node:/talker",))]
+    doc["links"][0].update(name="/rate", given="rate")  # a known name: decided
+    found = run_rule(RULES["parameter-set-not-read"], configuration(doc))
+    assert [f.rule for f in found] == ["parameter-set-not-read"]

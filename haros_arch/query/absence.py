@@ -1,7 +1,8 @@
 """Query functions for checks that claim something is absent, and that must stay fast.
 
-``unknown_users(config, resource)``: the node instances of partial or unknown interface
-that could use the resource through a call the model does not show. A check that says
+``unknown_users(config, resource)``: the node instances of partial or unknown interface,
+or with a name not known statically, that could use the resource through a call the
+model does not show. A check that says
 "nobody publishes this" or "nobody reads this" is a fact only when this list is empty.
 
 ``similar_to(word, items)``: the items (resources, links or strings) whose own name is the
@@ -22,26 +23,42 @@ from .errors import QueryTypeError
 
 Charge = Callable[[int], None]
 
-_NODES: WeakKeyDictionary[Configuration, tuple[int, dict[str, NodeInstance],
-                                               list[NodeInstance]]] = WeakKeyDictionary()
 
+class _Known:
+    """What ``unknown_users`` needs of a configuration, built once per configuration."""
 
-def _node_index(config: Configuration) -> tuple[dict[str, NodeInstance], list[NodeInstance]]:
-    """Node instances by name, and those whose interface is not completely known."""
-    known = _NODES.get(config)
-    if known is None or known[0] != len(config.nodes):
-        by_name: dict[str, NodeInstance] = {}
+    def __init__(self, config: Configuration) -> None:
+        self.size = (len(config.nodes), len(config.links))
+        self.by_name: dict[str, NodeInstance] = {}
         for node in config.nodes:
-            by_name.setdefault(node.name, node)
-        known = (len(config.nodes), by_name, config.incomplete_nodes)
-        _NODES[config] = known
-    return known[1], known[2]
+            self.by_name.setdefault(node.name, node)
+        self.incomplete = config.incomplete_nodes
+        # resource -> nodes that use a name with "?" that may stand for it
+        self.guessed: dict[int, list[NodeInstance]] = {}
+        for collection in (config.topics, config.services, config.actions,
+                           config.parameters):
+            for unresolved in collection:
+                if not unresolved.is_unresolved:
+                    continue
+                users = list(dict.fromkeys(link.node for link in unresolved.links))
+                for candidate in unresolved.candidates:
+                    self.guessed.setdefault(id(candidate), []).extend(users)
+
+
+_KNOWN: WeakKeyDictionary[Configuration, _Known] = WeakKeyDictionary()
+
+
+def _known(config: Configuration) -> _Known:
+    known = _KNOWN.get(config)
+    if known is None or known.size != (len(config.nodes), len(config.links)):
+        known = _KNOWN[config] = _Known(config)
+    return known
 
 
 def owner_of(config: Configuration, parameter: Parameter) -> NodeInstance | None:
     """The node instance a parameter is private to (``/ns/node/param`` of ``/ns/node``;
     a ROS 2 parameter always belongs to its node), or None for a shared one."""
-    by_name, _ = _node_index(config)
+    by_name = _known(config).by_name
     name = parameter.name
     while "/" in name.rstrip("/"):
         name = name.rstrip("/").rsplit("/", 1)[0]
@@ -52,26 +69,28 @@ def owner_of(config: Configuration, parameter: Parameter) -> NodeInstance | None
 
 
 def unknown_users(charge: Charge, config: Any, resource: Any) -> list[NodeInstance]:
-    """The incomplete node instances that could use ``resource`` unseen.
+    """The node instances that could use ``resource`` through a call the model does not
+    show: those of partial or unknown interface, and those that use a name with ``?``
+    that may stand for it (a ``getParam(name_read_at_run_time)``).
 
-    Any of them could publish, subscribe, serve or call any topic, service or action
-    name, and read or set any shared parameter; a private parameter (ROS 1
-    ``/node/param``, every ROS 2 parameter) only its own node."""
+    A node of partial or unknown interface could publish, subscribe, serve or call any
+    topic, service or action name, and read or set any shared parameter; a private
+    parameter (ROS 1 ``/node/param``, every ROS 2 parameter) only its own node."""
     if isinstance(resource, Link):
         resource = resource.resource
     if not isinstance(config, Configuration) or not isinstance(resource, Resource):
         raise QueryTypeError("unknown_users() takes a configuration and a topic, service, "
                              "action, parameter or link")
-    _, incomplete = _node_index(config)
+    known = _known(config)
     charge(1)
-    if not incomplete:
-        return []
-    if isinstance(resource, Parameter):
+    found: list[NodeInstance] = list(known.incomplete)
+    if found and isinstance(resource, Parameter):
         owner = owner_of(config, resource)
         if owner is not None:
-            return [] if owner.is_complete else [owner]
-    charge(len(incomplete) // 64)
-    return list(incomplete)
+            found = [] if owner.is_complete else [owner]
+    found.extend(known.guessed.get(id(resource), ()))
+    charge(len(found) // 64)
+    return list(dict.fromkeys(found))
 
 
 MAX_DISTANCE = 2

@@ -13,7 +13,7 @@ from __future__ import annotations
 import re
 import sys
 from collections.abc import Iterable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any
 
@@ -255,11 +255,13 @@ def _undecided_finding(rule: Rule, undecided: list[tuple[Any, list[Any]]],
         else ""
     first = "; ".join(label(e) for e in entities(undecided[0][0])[:1])
     message = (f"{len(undecided)} possible finding(s) not reported (first: {first}): "
-               f"node(s) whose interface is partial or unknown could be the missing side: "
+               f"node(s) of partial or unknown interface, or using a name not known "
+               f"statically, could be the missing side: "
                f"{named}{more}")
     return Finding(rule.id + UNDECIDED, "info", f"{rule.title}: not decided",
                    message, config.name if config else None,
-                   entity_ids(ranked[:UNDECIDED_NAMED]), NOWHERE)
+                   entity_ids(ranked[:UNDECIDED_NAMED]),
+                   best_location(entities(undecided[0][0])))
 
 
 def _error_finding(rule: Rule, err: QueryError, config: Configuration | None) -> Finding:
@@ -281,12 +283,27 @@ def run_catalogue(model: Model, project: Any = None,
             if suppressions.applies(rule.id, places):
                 continue
             found.append(finding)
-    # two matches that say the same thing at the same place (a node subscribing twice
-    # to one topic pairs twice with the same publisher) are one finding
-    found = list(dict.fromkeys(found))
+    found = merge(found)
     found.sort(key=lambda f: (-SEVERITY_RANK[f.severity], f.rule, f.configuration or "",
                               f.location.file or "", f.location.line))
     return found
+
+
+def merge(findings: Iterable[Finding]) -> list[Finding]:
+    """One problem, one finding: two matches that say the same thing at the same place (a
+    node subscribing twice to one topic pairs twice with the same publisher) are one,
+    and so is the same finding in several configurations, which it then lists."""
+    merged: dict[tuple[Any, ...], Finding] = {}
+    for finding in findings:
+        key = (finding.rule, finding.severity, finding.title, finding.message,
+               finding.entities, finding.location)
+        known = merged.get(key)
+        if known is None:
+            merged[key] = finding
+            continue
+        configs = tuple(dict.fromkeys((*known.configurations, *finding.configurations)))
+        merged[key] = replace(known, configurations=configs)
+    return list(merged.values())
 
 
 def explain(rule: Rule) -> str:
@@ -295,4 +312,4 @@ def explain(rule: Rule) -> str:
 
 
 __all__ = ["ABSORBED_CODES", "Rule", "absorbed", "explain", "load_catalogue", "location_of",
-           "project_rules", "run_catalogue", "run_rule"]
+           "merge", "project_rules", "run_catalogue", "run_rule"]

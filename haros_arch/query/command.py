@@ -96,7 +96,7 @@ def _print_text(findings: list[Finding], diagnostics: list[Diagnostic],
                       highlight=False)
         print_diagnostics(diagnostics, console, verbose)
         console.print()
-    print_findings(findings, console)
+    print_findings(findings, console, verbose)
     counts = count(findings)
     diag_counts = count_by_severity(diagnostics)
     console.print(", ".join(f"{n} {k}(s)" for k, n in counts.items())

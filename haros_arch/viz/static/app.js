@@ -136,7 +136,9 @@ function setConfig(i) {
   showPanel(overview(config));
 }
 
-app.configFindings = () => app.findings.filter(f => !f.configuration || !app.config || f.configuration === app.config.name);
+// a finding lists every configuration it was found in (one problem, one finding)
+app.configFindings = () => app.findings.filter(f => !f.configuration || !app.config ||
+  (f.configurations || [f.configuration]).includes(app.config.name));
 app.findingsFor = id => app.configFindings().filter(f => (f.entities || []).includes(id));
 
 function renderLists() {

@@ -140,7 +140,7 @@ function findingPanel(finding, app) {
     el('div', {class: 'panel-kind'}, 'finding'),
     el('h2', {class: 'panel-title'}, finding.title || finding.rule),
     field('rule', finding.rule), field('severity', severityBadge(finding.severity)),
-    finding.configuration ? field('configuration', finding.configuration) : null,
+    finding.configuration ? field('configurations', (finding.configurations || [finding.configuration]).join(', ')) : null,
     el('p', {class: 'message'}, finding.message || ''),
     el('h4', {}, `Involves (${involved.length})`),
     el('div', {}, involved.map(e => el('div', {}, e.kind === 'missing' ? el('code', {}, e.id) : entityLink(e, app)))),
