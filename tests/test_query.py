@@ -176,3 +176,18 @@ def test_a_sub_expression_without_bound_variables_is_evaluated_once():
     found = query.compile(correlated).run(query.model_scope(big))
     assert {link.name for link in found} == names
     assert all(link.name in names for link in found)
+
+
+def test_similar_to_finds_what_comparing_every_pair_finds():
+    import random
+
+    from haros_arch.query.absence import similar_to
+    from haros_arch.query.functions import edit_distance
+
+    rng = random.Random(7)
+    words = ["".join(rng.choice("ab_") for _ in range(rng.randint(0, 9))) for _ in range(300)]
+    words.append("x" * 70)  # too long to index: compared one by one
+    for word in [*words[:60], "x" * 69]:
+        found = similar_to(lambda _n: None, word, words)
+        expected = [w for w in words if edit_distance(lambda _n: None, word, w) <= 2]
+        assert found == expected, word

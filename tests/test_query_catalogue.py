@@ -257,3 +257,19 @@ def test_a_read_of_a_name_known_only_at_run_time_could_be_the_missing_reader():
     doc["links"][0].update(name="/rate", given="rate")  # a known name: decided
     found = run_rule(RULES["parameter-set-not-read"], configuration(doc))
     assert [f.rule for f in found] == ["parameter-set-not-read"]
+
+
+def test_a_rule_that_hits_the_step_budget_is_a_query_limit_warning(monkeypatch):
+    from haros_arch.query import catalogue
+    from haros_arch.query.command import _exit_code
+
+    monkeypatch.setattr(catalogue, "STEPS", 50)
+    model = configuration({"links": [
+        {"kind": "publish", "node": f"/n{i}", "name": f"/t{i}", "type": "a/B"}
+        for i in range(40)]})
+    rule = catalogue.Rule("pairs", "error", "Pairs",
+                          "for a in <links>, b in <links> where a.name != b.name return a")
+    (finding,) = run_rule(rule, model)
+    assert (finding.rule, finding.severity) == ("query-limit", "warning")
+    assert "steps" in finding.message and "Query pairs" in finding.title
+    assert _exit_code([finding], [], "error") == 0

@@ -25,8 +25,8 @@ from ..model.location import NOWHERE, Location
 from ..model.model import Model
 from ..model.runtime import Configuration, Link
 from . import compile, config_scope, model_scope
-from .errors import QueryError
-from .interpreter import Evaluator
+from .errors import QueryError, QueryLimitError
+from .interpreter import DEFAULT_STEPS, Evaluator
 from .results import best_location, entities, entity_ids, label, location_of, plain
 from .suppress import Suppressions
 from .syntax import Literal
@@ -36,6 +36,11 @@ CATALOGUE_DIRS = (Path(__file__).resolve().parent.parent.parent / "queries",
                   Path(sys.prefix) / "share" / "haros-arch" / "queries")
 CATALOGUE_DIR = next((d for d in CATALOGUE_DIRS if d.is_dir()), CATALOGUE_DIRS[0])
 QUERY_ERROR = "query-error"
+QUERY_LIMIT = "query-limit"  # a rule stopped by the step budget: a warning, not an error
+# The step budget (deterministic) bounds a rule's work; the clock is only a safety net
+# far above it, so findings do not depend on how busy the machine is.
+SAFETY_SECONDS = 300.0
+STEPS = DEFAULT_STEPS
 UNDECIDED = "-undecided"  # suffix of the id of a rule's info on matches it cannot decide
 # diagnostics whose codes a catalogue rule reports as findings (``check`` shows them once)
 ABSORBED_CODES = frozenset({"LAUNCH_FILE_MISSING", "PACKAGE_NOT_FOUND", "NODE_NOT_FOUND"})
@@ -207,9 +212,12 @@ def _run(rule: Rule, model: Model) -> list[tuple[Finding, list[Location]]]:
         return [(_error_finding(rule, err, None), [])]
     found: list[tuple[Finding, list[Location]]] = []
     for config, scope in _scopes(rule, query, model):
-        evaluator = Evaluator(query.text, scope)
+        evaluator = Evaluator(query.text, scope, STEPS, SAFETY_SECONDS)
         try:
             value = evaluator.run(query.tree)
+        except QueryLimitError as err:
+            found.append((_limit_finding(rule, err, config), []))
+            continue
         except QueryError as err:
             found.append((_error_finding(rule, err, config), []))
             continue
@@ -262,6 +270,15 @@ def _undecided_finding(rule: Rule, undecided: list[tuple[Any, list[Any]]],
                    message, config.name if config else None,
                    entity_ids(ranked[:UNDECIDED_NAMED]),
                    best_location(entities(undecided[0][0])))
+
+
+def _limit_finding(rule: Rule, err: QueryError, config: Configuration | None) -> Finding:
+    """A rule that hit a limit: said as such, with the rule's findings unknown here; a
+    warning, so that ``--fail-on error`` does not fail on it alone."""
+    first = str(err).splitlines()[0]
+    return Finding(QUERY_LIMIT, "warning", f"Query {rule.id} stopped at a limit",
+                   f"{rule.origin}: {first}; its findings in this configuration are not "
+                   "known", config.name if config else None, (), NOWHERE)
 
 
 def _error_finding(rule: Rule, err: QueryError, config: Configuration | None) -> Finding:
