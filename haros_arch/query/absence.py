@@ -184,7 +184,7 @@ def similar_to(charge: Charge, word: Any, items: Any) -> list[Any]:
             size = cut[part + 1] - cut[part]
             for shift in range(-MAX_DISTANCE, MAX_DISTANCE + 1):
                 begin = cut[part] + shift
-                if 0 <= begin and begin + size <= len(word):
+                if begin >= 0 and begin + size <= len(word):
                     places.update(index.get((length, part, word[begin:begin + size]), ()))
     charge(1 + len(places))
     pattern = masks(word)
