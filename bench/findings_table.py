@@ -36,7 +36,7 @@ def run_check(project: Path, root: Path, seconds: int) -> dict[str, Any]:
     result = subprocess.run(
         [sys.executable, "-m", "haros_arch.cli", "check", str(project), "--format", "json",
          "--fail-on", "never", "--jobs", "1"], capture_output=True, text=True, env=env,
-        timeout=seconds, check=False)
+        timeout=seconds, check=False, cwd=root)
     if result.returncode != 0:
         raise SystemExit(f"{project}: check failed: {result.stderr[-2000:]}")
     data: dict[str, Any] = json.loads(result.stdout)
