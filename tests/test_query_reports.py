@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 import subprocess
 import sys
 from xml.etree import ElementTree as ET
@@ -56,8 +57,10 @@ def test_junit_has_a_failing_case_per_finding(findings):
 
 
 def test_check_text_groups_findings_by_rule_with_what_where_why():
-    result = run("check", str(FIXTURES / "paper_minimal/project.yaml"), "--fail-on", "info")
+    result = run("check", str(FIXTURES / "paper_minimal/project.yaml"), "--fail-on", "info",
+                 "-v")
     assert result.returncode == 1, result.stderr
+    assert re.search(r"queries: [0-9.]+ s; .*parameter-set-not-read [0-9.]+ s", result.stdout)
     # the talker reads a parameter whose name it reads from stdin: it may read
     # /frequency, so "set but never read" is not decided, one info that says why
     assert "info Parameter set but never read: not decided " \
