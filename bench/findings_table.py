@@ -31,14 +31,15 @@ HERE = Path(__file__).resolve().parent
 ROOT = HERE.parent
 
 
-def run_check(project: Path, root: Path, seconds: int) -> dict[str, Any]:
+def run_check(project: Path, root: Path, seconds: int) -> dict[str, Any] | None:
     env = {**os.environ, "PYTHONPATH": str(root), "COLUMNS": "200"}
     result = subprocess.run(
         [sys.executable, "-m", "haros_arch.cli", "check", str(project), "--format", "json",
          "--fail-on", "never", "--jobs", "1"], capture_output=True, text=True, env=env,
         timeout=seconds, check=False, cwd=root)
     if result.returncode != 0:
-        raise SystemExit(f"{project}: check failed: {result.stderr[-2000:]}")
+        print(f"{project.stem}: check failed: {result.stderr.strip()[-600:]}", flush=True)
+        return None
     data: dict[str, Any] = json.loads(result.stdout)
     return data
 
@@ -50,6 +51,8 @@ def measure(args: argparse.Namespace) -> None:
     totals: Counter[str] = Counter()
     for project in projects:
         data = run_check(project, Path(args.root).resolve(), args.seconds)
+        if data is None:
+            continue
         findings = data["findings"]
         counts = Counter(f["severity"] for f in findings)
         totals.update(counts)

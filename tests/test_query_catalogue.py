@@ -273,3 +273,17 @@ def test_a_rule_that_hits_the_step_budget_is_a_query_limit_warning(monkeypatch):
     assert (finding.rule, finding.severity) == ("query-limit", "warning")
     assert "steps" in finding.message and "Query pairs" in finding.title
     assert _exit_code([finding], [], "error") == 0
+
+
+def test_a_dynamic_reconfigure_server_reads_its_private_parameters_unseen():
+    # velodyne's LaserScanNodelet: dynamic_reconfigure reads "ring" from its .cfg
+    doc = {"parameters": [
+        {"name": "/laserscan/ring", "type": "int", "value": -1, "writers": ["<launch>"]},
+        {"name": "/driver/rpm", "type": "double", "value": 600.0, "writers": ["<launch>"]}],
+        "links": [{"kind": "publish", "node": "/laserscan",
+                   "name": "/laserscan/parameter_updates", "given": "~parameter_updates"},
+                  {"kind": "publish", "node": "/driver", "name": "/packets"}]}
+    found = run_rule(RULES["parameter-set-not-read"], configuration(doc))
+    assert sorted((f.rule, f.entities) for f in found) == [
+        ("parameter-set-not-read", ("parameter:/driver/rpm",)),
+        ("parameter-set-not-read" + UNDECIDED, ("node:/laserscan",))]

@@ -32,6 +32,11 @@ class _Known:
         for node in config.nodes:
             self.by_name.setdefault(node.name, node)
         self.incomplete = config.incomplete_nodes
+        # nodes with a ROS 1 dynamic_reconfigure server: it reads and sets every field of
+        # its .cfg under the node's private namespace, names we do not read
+        self.reconfigurable = {id(link.node) for link in config.links
+                               if link.kind == "publish"
+                               and link.rosname.full == link.node.name + "/parameter_updates"}
         # resource -> nodes that use a name with "?" that may stand for it
         self.guessed: dict[int, list[NodeInstance]] = {}
         for collection in (config.topics, config.services, config.actions,
@@ -74,7 +79,9 @@ def unknown_users(charge: Charge, config: Any, resource: Any) -> list[NodeInstan
 
     A node of partial or unknown interface could publish, subscribe, serve or call any
     topic, service or action name, and read or set any shared parameter; a private
-    parameter (ROS 1 ``/node/param``, every ROS 2 parameter) only its own node."""
+    parameter (ROS 1 ``/node/param``, every ROS 2 parameter) only its own node, which
+    also reads and sets it unseen when it runs a dynamic_reconfigure server (the
+    fields of its .cfg)."""
     if isinstance(resource, Link):
         resource = resource.resource
     if not isinstance(config, Configuration) or not isinstance(resource, Resource):
@@ -83,10 +90,11 @@ def unknown_users(charge: Charge, config: Any, resource: Any) -> list[NodeInstan
     known = _known(config)
     charge(1)
     found: list[NodeInstance] = list(known.incomplete)
-    if found and isinstance(resource, Parameter):
+    if isinstance(resource, Parameter):
         owner = owner_of(config, resource)
         if owner is not None:
-            found = [] if owner.is_complete else [owner]
+            unseen = not owner.is_complete or id(owner) in known.reconfigurable
+            found = [owner] if unseen else []
     found.extend(known.guessed.get(id(resource), ()))
     charge(len(found) // 64)
     return list(dict.fromkeys(found))
