@@ -45,7 +45,7 @@ def run_check(project: Path, root: Path, seconds: int) -> dict[str, Any] | None:
 
 
 def measure(args: argparse.Namespace) -> None:
-    projects = [Path(p) for p in args.projects] or sorted(
+    projects = [Path(p).resolve() for p in args.projects] or sorted(
         (HERE / "findings_projects").glob("*.yaml"))
     kept: list[dict[str, Any]] = []
     totals: Counter[str] = Counter()
