@@ -23,6 +23,7 @@ from ..model.runtime import (
 )
 from ..model.source import Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK
+from ..models.commands import command_node
 from ..workspace import Workspace, installed_roots
 from .actions import action_links
 from .processes import process_nodes, process_params
@@ -165,7 +166,7 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
     plugin = nodelet_plugin(decl)
     if plugin is not None:
         key = f"{plugin.partition('/')[0]}/{plugin}"
-    node = nodes.get(key)
+    node = nodes.get(key) or command_node(decl)  # rostopic pub: its arguments say
     if node is None and plugin is None and is_container(decl):
         pass  # a nodelet manager or component container: its interface is its plugins'
     elif node is None and workspace.find(key.partition("/")[0]) is None:

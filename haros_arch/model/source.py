@@ -125,6 +125,9 @@ class Node:
     # why calls may be missing (the first few reasons, each with its file:line)
     completeness_reasons: list[str] = field(default_factory=list,
                                             metadata={"optional": True})
+    # the interface model this node was taken from (``haros_arch.models``), e.g.
+    # "noetic/amcl 1.17.3 ros-planning/navigation@0123abcd"; None: from its source
+    model: str | None = field(default=None, metadata={"optional": True})
 
     JSON_VIEWS: ClassVar[dict[str, str]] = {}
 
