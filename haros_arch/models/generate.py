@@ -1,0 +1,275 @@
+"""``haros-arch models build LIST``: interface models from pinned public sources.
+
+The list (YAML) pins where each model comes from::
+
+    - repository: github:ros-planning/navigation
+      branch: noetic-devel            # for people; the commit is what counts
+      commit: 9d7f5a1...              # 40 hex digits
+      distro: noetic
+      packages: [amcl, move_base, map_server]
+
+Each entry's source tree is expected at ``SOURCES/<owner>+<name>@<commit[:12]>``
+(``scripts/models-fetch`` puts it there from a local git mirror). Each package is one
+unit of work, run by the same code as a workspace analysis (workspace scan, build
+files, C++ and Python extraction): on a local process pool by default, or on a Dask
+distributed cluster (``--scheduler ADDRESS``; the optional ``dask`` extra). A node whose
+sources gave warnings or errors, or none at all, is ``partial``, with the reasons. An
+override file ``OVERRIDES/<distro>/<package>.yaml`` (hint format, reviewed like code)
+may complete a model; what it adds has origin ``override``.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+from collections.abc import Callable, Iterable, Sequence
+from concurrent.futures import ProcessPoolExecutor
+from dataclasses import dataclass, field
+from typing import Any
+
+import yaml
+
+from .. import __version__
+from ..diagnostics import Diagnostic
+from ..extract import AUTO_CACHE, extract_nodes
+from ..files import read_text
+from ..graph.hints import apply_node_hints
+from ..model.location import Location
+from ..model.source import Node
+from ..model.values import UNKNOWN_MARK
+from ..pipeline import read_build_files
+from ..workspace import scan
+from .format import InterfaceModel, dumps
+
+OVERRIDES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "overrides")
+COMMIT = re.compile(r"^[0-9a-f]{40}$")
+REPOSITORY = re.compile(r"^github:[A-Za-z0-9_.-]+/[A-Za-z0-9_.-]+$")
+OVERRIDE_KEYS = ("complete",)  # an override node block may also say why it is complete
+
+
+class ListError(ValueError):
+    """The list file cannot be used; ``str()`` says where and why."""
+
+
+@dataclass(frozen=True)
+class Entry:
+    """One pinned repository of the list."""
+
+    repository: str
+    commit: str
+    distro: str
+    packages: tuple[str, ...]
+    branch: str = ""
+
+    @property
+    def folder(self) -> str:
+        """Where its tree is expected under the sources folder."""
+        owner_name = self.repository.removeprefix("github:").replace("/", "+")
+        return f"{owner_name}@{self.commit[:12]}"
+
+
+@dataclass(frozen=True)
+class Task:
+    """One package to model: picklable, so it can go to another process or machine."""
+
+    entry: Entry
+    package: str
+    tree: str
+    overrides: str
+    cache_dir: str | None = AUTO_CACHE
+
+
+@dataclass
+class Outcome:
+    """What one package gave: its model document (None when it could not be made) and
+    a report line of what was extracted and what stayed partial."""
+
+    package: str
+    distro: str
+    text: str | None = None
+    nodes: list[str] = field(default_factory=list)
+    calls: int = 0
+    unresolved: int = 0
+    partial: dict[str, list[str]] = field(default_factory=dict)
+    problem: str | None = None
+
+
+def read_list(path: str) -> list[Entry]:
+    """The entries of a list file; raises ``ListError`` naming the entry at fault."""
+    text, problems = read_text(path, Location(file=path))
+    if text is None:
+        raise ListError(problems[0].message if problems else f"{path}: cannot read")
+    try:
+        data = yaml.safe_load(text)
+    except yaml.YAMLError as error:
+        raise ListError(f"{path}: invalid YAML: {error}") from None
+    if not isinstance(data, list):
+        raise ListError(f"{path}: the list is a YAML sequence of repositories")
+    entries = []
+    for index, item in enumerate(data, 1):
+        where = f"{path}: entry {index}"
+        if not isinstance(item, dict):
+            raise ListError(f"{where}: must be a mapping")
+        repository, commit = str(item.get("repository", "")), str(item.get("commit", ""))
+        if not REPOSITORY.match(repository):
+            raise ListError(f"{where}: repository must be github:owner/name")
+        if not COMMIT.match(commit):
+            raise ListError(f"{where}: commit must be 40 hexadecimal digits")
+        packages = item.get("packages")
+        if not isinstance(packages, list) or not packages or not all(
+                isinstance(p, str) and re.match(r"^[A-Za-z0-9_]+$", p) for p in packages):
+            raise ListError(f"{where}: packages must be a list of package names")
+        distro = str(item.get("distro", ""))
+        if not re.match(r"^[a-z]+$", distro):
+            raise ListError(f"{where}: distro must be a distribution name (noetic, jazzy)")
+        entries.append(Entry(repository, commit, distro, tuple(packages),
+                             str(item.get("branch", ""))))
+    return entries
+
+
+def tasks(entries: Iterable[Entry], sources: str, overrides: str = OVERRIDES,
+          only: Sequence[str] = (), cache_dir: str | None = AUTO_CACHE) -> list[Task]:
+    return [Task(entry, package, os.path.join(sources, entry.folder), overrides, cache_dir)
+            for entry in entries for package in entry.packages
+            if not only or package in only]
+
+
+def build_package(task: Task) -> Outcome:
+    """Model one package with the workspace pipeline. A bug of ours met on one package
+    is reported as that package's problem; the other packages go on."""
+    outcome = Outcome(task.package, task.entry.distro)
+    try:
+        return _build(task, outcome)
+    except Exception as error:  # a bug of ours: this package is not modelled
+        if os.environ.get("HAROS_ARCH_DEBUG"):
+            raise
+        outcome.text = None
+        outcome.problem = f"internal error: {type(error).__name__}: {error}"
+        return outcome
+
+
+def _build(task: Task, outcome: Outcome) -> Outcome:
+    if not os.path.isdir(task.tree):
+        outcome.problem = f"no source tree at {task.tree} (run scripts/models-fetch)"
+        return outcome
+    workspace = scan([task.tree], {})
+    package = workspace.packages.get(task.package)
+    if package is None:
+        outcome.problem = f"no package {task.package} in {task.entry.repository}"
+        return outcome
+    found = read_build_files(package, workspace)
+    found += extract_nodes(package.nodes, workspace, cache_dir=task.cache_dir, jobs=1)
+    for node in package.nodes:
+        _mark_partial(node, found)
+    override = _apply_override(task, package.nodes, found)
+    model = InterfaceModel(
+        task.package, task.entry.distro, package.nodes, package.version,
+        {"repository": task.entry.repository, "branch": task.entry.branch,
+         "commit": task.entry.commit, "path": package.path},
+        {"name": "haros-arch", "version": __version__}, override)
+    outcome.text = dumps(model)
+    outcome.nodes = [n.executable for n in package.nodes]
+    outcome.calls = sum(len(n.calls) for n in package.nodes)
+    outcome.unresolved = sum(1 for n in package.nodes for c in n.calls
+                             if UNKNOWN_MARK in c.name and c.name_param is None)
+    outcome.partial = {n.executable: list(n.completeness_reasons) for n in package.nodes
+                       if n.completeness == "partial"}
+    return outcome
+
+
+def _mark_partial(node: Node, found: list[Diagnostic]) -> None:
+    """Calls may be missing where the node's own sources did not parse cleanly (C++
+    errors, often from headers of other libraries) or gave warnings or errors; the
+    reasons name the first few places and how many there were."""
+    if not node.sources:
+        node.mark_partial("no source files were found for it in the build files")
+        return
+    files = set(node.sources)
+    problems = [item for item in found if item.location.file in files and (
+        item.severity in ("warning", "error") or item.code.endswith("_PARSE_ERROR"))]
+    for item in problems[:3]:
+        node.mark_partial(f"{item.location.file}:{item.location.line}: {item.code} "
+                          f"{item.message}")
+    if len(problems) > 3:
+        node.mark_partial(f"{len(problems)} parse errors or warnings in its sources in all")
+
+
+def _apply_override(task: Task, nodes: list[Node], found: list[Diagnostic]) -> str | None:
+    """The reviewed override of the package, if any: hint-format calls per node, and
+    ``complete: <why>`` to say the node's interface is now whole."""
+    relative = os.path.join(task.entry.distro, task.package + ".yaml")
+    path = os.path.join(task.overrides, relative)
+    if not os.path.isfile(path):
+        return None
+    text, problems = read_text(path, Location(file=path))
+    found.extend(problems)
+    data = yaml.safe_load(text) if text else None
+    blocks = data.get("nodes") if isinstance(data, dict) else None
+    if not isinstance(blocks, dict):
+        return None
+    by_name = {node.name: node for node in nodes}
+    where = Location(file=relative)
+    plain = {name: {k: v for k, v in block.items() if k not in OVERRIDE_KEYS}
+             for name, block in blocks.items() if isinstance(block, dict)}
+    apply_node_hints(by_name, plain, where)
+    for name, node in by_name.items():
+        for call in node.calls:
+            if call.origin == "hint":
+                call.origin = "override"
+        block = blocks.get(name)
+        if isinstance(block, dict) and isinstance(block.get("complete"), str):
+            node.completeness = "complete"
+            node.completeness_reasons = [f"completed by override {relative}: "
+                                         f"{block['complete']}"]
+        if node not in nodes:  # a node the build files do not show
+            nodes.append(node)
+    return relative
+
+
+def run(work: Sequence[Task], jobs: int | None = None, scheduler: str | None = None
+        ) -> list[Outcome]:
+    """Every task, on a local process pool (``jobs`` workers) or a Dask cluster."""
+    if scheduler:
+        return _on_dask(work, scheduler)
+    if jobs == 1 or len(work) <= 1:
+        return [build_package(task) for task in work]
+    with ProcessPoolExecutor(max_workers=jobs) as pool:
+        return list(pool.map(build_package, work))
+
+
+def _on_dask(work: Sequence[Task], scheduler: str) -> list[Outcome]:
+    from distributed import Client  # the optional 'dask' extra
+
+    with Client(scheduler) as client:
+        futures = client.map(build_package, list(work), pure=False)
+        return list(client.gather(futures))
+
+
+def write(outcomes: Iterable[Outcome], output: str) -> list[str]:
+    """Write each model to ``OUTPUT/<distro>/<package>.json``; the paths written."""
+    written = []
+    for outcome in outcomes:
+        if outcome.text is None:
+            continue
+        folder = os.path.join(output, outcome.distro)
+        os.makedirs(folder, exist_ok=True)
+        path = os.path.join(folder, outcome.package + ".json")
+        with open(path, "w", encoding="utf-8") as handle:
+            handle.write(outcome.text)
+        written.append(path)
+    return written
+
+
+def report(outcomes: Iterable[Outcome], say: Callable[[str], Any]) -> None:
+    """One line per package, then each partial node's reasons."""
+    for outcome in outcomes:
+        name = f"{outcome.distro}/{outcome.package}"
+        if outcome.problem:
+            say(f"{name}: not modelled: {outcome.problem}")
+            continue
+        state = f"{len(outcome.partial)} partial" if outcome.partial else "complete"
+        say(f"{name}: {len(outcome.nodes)} nodes, {outcome.calls} calls, "
+            f"{outcome.unresolved} names unknown statically, {state}")
+        for node, reasons in outcome.partial.items():
+            for reason in reasons:
+                say(f"    {node}: {reason}")

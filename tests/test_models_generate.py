@@ -1,0 +1,85 @@
+"""`haros-arch models build`: interface models from pinned sources, by our extractor."""
+
+from __future__ import annotations
+
+import json
+import os
+
+import pytest
+
+from haros_arch.cli import main
+from haros_arch.models.format import from_document
+from haros_arch.models.generate import ListError, build_package, read_list, run, tasks
+
+FIXTURE = os.path.join(os.path.dirname(__file__), "..", "fixtures", "models", "generate")
+LIST = os.path.join(FIXTURE, "list.yaml")
+SOURCES = os.path.join(FIXTURE, "sources")
+OVERRIDES = os.path.join(FIXTURE, "overrides")
+
+
+def _outcome(overrides: str = OVERRIDES):
+    (task,) = tasks(read_list(LIST), SOURCES, overrides, cache_dir=None)
+    return build_package(task)
+
+
+def test_a_package_is_modelled_with_its_source_and_what_stayed_partial():
+    outcome = _outcome(overrides=os.path.join(FIXTURE, "none"))
+    model = from_document(json.loads(outcome.text))
+    assert model.source == {"repository": "github:example/tiny_drivers", "branch": "main",
+                            "commit": "0123456789abcdef0123456789abcdef01234567",
+                            "path": "tiny_driver"}
+    assert (model.package, model.distro, model.version) == ("tiny_driver", "noetic", "2.0.1")
+    laser = model.node("laser")
+    publish = next(c for c in laser.calls if c.kind == "publish")
+    assert (publish.name, publish.name_param, publish.name_default, publish.type) == (
+        "?", "~topic", "scan", "sensor_msgs/LaserScan")
+    rate = next(c for c in laser.calls if c.name == "~rate")
+    assert rate.has_default and rate.default == 10.0
+    assert laser.completeness == "complete"
+    broken = model.node("broken")
+    assert broken.completeness == "partial" and broken.calls == []
+    assert "PY_PARSE_ERROR" in broken.completeness_reasons[0]
+    assert list(outcome.partial) == ["broken"] and outcome.unresolved == 1  # relay's '?'
+
+
+def test_an_override_completes_a_partial_model():
+    model = from_document(json.loads(_outcome().text))
+    broken = model.node("broken")
+    assert [(c.kind, c.name, c.type, c.origin) for c in broken.calls] == [
+        ("publish", "out", "std_msgs/String", "override")]
+    assert broken.completeness == "complete"
+    assert "noetic/tiny_driver.yaml" in broken.completeness_reasons[0]
+    assert model.override == "noetic/tiny_driver.yaml"
+
+
+def test_the_cli_writes_one_file_per_package_and_reports(tmp_path, capsys):
+    code = main(["models", "build", LIST, "--sources", SOURCES, "--overrides", OVERRIDES,
+                 "-o", str(tmp_path), "--jobs", "1", "--no-cache"])
+    out = capsys.readouterr().out
+    assert code == 0
+    assert "noetic/tiny_driver: 3 nodes" in out and "complete" in out
+    assert (tmp_path / "noetic" / "tiny_driver.json").is_file()
+
+
+def test_a_missing_tree_or_a_bad_list_is_reported(tmp_path, capsys):
+    code = main(["models", "build", LIST, "--sources", str(tmp_path), "-o", str(tmp_path)])
+    assert code == 1 and "no source tree" in capsys.readouterr().out
+    bad = tmp_path / "bad.yaml"
+    bad.write_text("- repository: github:a/b\n  commit: 12\n")
+    with pytest.raises(ListError, match="entry 1: commit"):
+        read_list(str(bad))
+    assert main(["models", "build", str(bad)]) == 2
+
+
+def test_a_process_pool_gives_the_same_models():
+    work = tasks(read_list(LIST), SOURCES, OVERRIDES, cache_dir=None) * 2
+    first, second = run(work, jobs=2)
+    assert first.text == second.text == _outcome().text
+
+
+def test_a_dask_cluster_gives_the_same_models():
+    distributed = pytest.importorskip("distributed")
+    work = tasks(read_list(LIST), SOURCES, OVERRIDES, cache_dir=None)
+    with distributed.LocalCluster(n_workers=1, processes=False, dashboard_address=None) as cluster:
+        (outcome,) = run(work, scheduler=cluster.scheduler_address)
+    assert outcome.text == _outcome().text
