@@ -19,7 +19,7 @@ from .model.model import Model
 from .model.runtime import Configuration
 from .model.source import Node, Package
 from .models.attach import Attacher
-from .models.library import Library
+from .models.library import DATA, Library
 from .project import ConfigurationSpec, Project
 from .rosrun import script_node
 from .share import share_source
@@ -28,11 +28,13 @@ from .workspace import Workspace, scan
 
 @dataclass(frozen=True)
 class Options:
-    """How to run: ``cache_dir`` of source results (None: no cache, a cold run), and
-    ``jobs`` worker processes parsing C++ (None: one per core)."""
+    """How to run: ``cache_dir`` of source results (None: no cache, a cold run),
+    ``jobs`` worker processes parsing C++ (None: one per core), and whether nodes
+    without source take the shipped interface models (``models``)."""
 
     cache_dir: str | None = AUTO_CACHE
     jobs: int | None = None
+    models: bool = True
 
 
 def analyse(project: Project, environment: Mapping[str, str] | None = None,
@@ -72,7 +74,8 @@ def analyse(project: Project, environment: Mapping[str, str] | None = None,
         compile_commands=[project.compile_commands] if project.compile_commands else None))
 
     project_file = Location(file=os.path.relpath(project.path))
-    models = Attacher(Library(project.models), project.distro, model.packages)
+    models = Attacher(Library(project.models, DATA if options.models else None),
+                      project.distro, model.packages)
     if project.nodes:
         model.diagnostics.extend(graph.apply_node_hints(nodes, project.nodes, project_file))
 

@@ -20,12 +20,13 @@ FIXTURE = os.path.join(os.path.dirname(__file__), "..", "fixtures", "models", "i
 INSTALLED = os.path.join(FIXTURE, "opt", "ros", "noetic", "share")
 
 
-def _analyse(project_file: str = "project.yaml", env: dict | None = None, **changes):
+def _analyse(project_file: str = "project.yaml", env: dict | None = None,
+             shipped: bool = True, **changes):
     project = load(os.path.join(FIXTURE, project_file))
     for key, value in changes.items():
         setattr(project, key, value)
     environment = {"ROS_PACKAGE_PATH": INSTALLED} if env is None else env
-    model = analyse(project, environment, Options(cache_dir=None, jobs=1))
+    model = analyse(project, environment, Options(cache_dir=None, jobs=1, models=shipped))
     (config,) = model.configurations
     return model, config
 
@@ -53,9 +54,20 @@ def test_an_installed_only_node_takes_the_users_model():
 
 
 def test_without_a_model_the_node_stays_unknown():
-    _model, config = _analyse(models=[])
+    _model, config = _analyse(models=[], shipped=False)
     amcl = _instance(config, "/amcl")
     assert amcl.completeness == "unknown" and amcl.links == []
+    assert "NODE_PACKAGE_UNKNOWN" not in {d.code for d in config.diagnostics}  # installed
+
+
+def test_without_the_users_model_the_shipped_one_is_used():
+    _model, config = _analyse(models=[])
+    amcl = _instance(config, "/amcl")
+    assert amcl.completeness == "model"
+    assert amcl.node.model.startswith("noetic/amcl ") and "ros-planning/navigation@" in (
+        amcl.node.model)
+    scan = next(t for t in config.topics if t.name == "/base_scan")
+    assert [link.node.name for link in scan.subscribers] == ["/amcl"]
 
 
 def test_a_package_not_found_at_all_takes_the_model_too():
@@ -111,7 +123,7 @@ def test_the_distribution_comes_from_the_project_then_the_environment_then_the_l
     assert choose_distro(None, {"ROS_DISTRO": "melodic"}, ros1)[0] == "melodic"
     assert choose_distro(None, {}, ros1)[0] == "noetic"
     assert choose_distro(None, {}, ros2)[0] == "jazzy"
-    _model, config = _analyse(distro="melodic")
+    _model, config = _analyse(distro="melodic", shipped=False)
     assert _instance(config, "/amcl").completeness == "unknown"  # the user's is noetic
 
 

@@ -177,21 +177,47 @@ def _build(task: Task, outcome: Outcome) -> Outcome:
     return outcome
 
 
+def _api_names() -> frozenset[str]:
+    """The ROS API's C++ functions and node classes, from the extractor's tables."""
+    from ..extract.cpp import api
+
+    tables = (api.ROSCPP, api.LIBRARIES, api.RCLCPP, api.RCLCPP_LIBRARIES)
+    return frozenset({name for table in tables for _, name in table}
+                     | {cls for table in tables for cls, _ in table})
+
+
+def _loses_calls(item: Diagnostic, api_names: frozenset[str]) -> bool:
+    """Whether a diagnostic means calls may be missing: a warning or error, or a C++
+    error that names a ROS API function or node class (a call that did not type-check,
+    a node class clang gave up on). C++ errors about other libraries' types (a header
+    of SDL or OpenCV we do not have) leave the ROS calls alone."""
+    if item.severity in ("warning", "error"):
+        return True
+    if not item.code.endswith("_PARSE_ERROR"):
+        return False
+    quoted = {word.removeprefix("const ").strip() for word in item.message.split("'")[1::2]}
+    return bool(quoted & api_names)
+
+
 def _mark_partial(node: Node, found: list[Diagnostic]) -> None:
-    """Calls may be missing where the node's own sources did not parse cleanly (C++
-    errors, often from headers of other libraries) or gave warnings or errors; the
-    reasons name the first few places and how many there were."""
+    """Calls may be missing where the node's own sources gave warnings or errors, or
+    C++ errors on ROS API calls; the reasons name the first few places and the count."""
     if not node.sources:
         node.mark_partial("no source files were found for it in the build files")
         return
+    names = _api_names() if node.language == "cpp" else frozenset()
     files = set(node.sources)
-    problems = [item for item in found if item.location.file in files and (
-        item.severity in ("warning", "error") or item.code.endswith("_PARSE_ERROR"))]
+    errors = [item for item in found if item.location.file in files
+              and (item.severity != "info" or item.code.endswith("_PARSE_ERROR"))]
+    problems = [item for item in errors if _loses_calls(item, names)]
+    if not node.calls and errors and not problems:  # nothing found where parsing failed
+        node.mark_partial(f"no ROS calls found, and its sources did not parse cleanly "
+                          f"({len(errors)} errors)")
     for item in problems[:3]:
         node.mark_partial(f"{item.location.file}:{item.location.line}: {item.code} "
                           f"{item.message}")
     if len(problems) > 3:
-        node.mark_partial(f"{len(problems)} parse errors or warnings in its sources in all")
+        node.mark_partial(f"{len(problems)} such errors or warnings in its sources in all")
 
 
 def _apply_override(task: Task, nodes: list[Node], found: list[Diagnostic]) -> str | None:
