@@ -111,3 +111,23 @@ def test_cpp_errors_on_ros_calls_make_a_model_partial_and_others_do_not():
         assert node.completeness == "partial"
         assert node.completeness_reasons == [f"joy/src/joy.cpp:54: CPP_PARSE_ERROR "
                                              f"{problem.message}"]
+
+
+def test_an_override_puts_a_call_under_the_condition_its_caller_writes(tmp_path):
+    folder = tmp_path / "noetic"
+    folder.mkdir()
+    (folder / "tiny_driver.yaml").write_text(
+        "nodes:\n  tiny_driver/laser:\n    conditions:\n"
+        "      - calls: tiny_driver/scripts/laser:7\n"
+        "        text: argv[1] == '--replay'\n        at: tiny_driver/scripts/laser:3\n"
+        "      - calls: tiny_driver/scripts/laser:99\n        text: x\n        at: a:1\n")
+    (task,) = tasks(read_list(LIST), SOURCES, str(tmp_path), cache_dir=None)
+    outcome = build_package(task)
+    model = from_document(json.loads(outcome.text))
+    publish = next(c for c in model.node("laser").calls if c.kind == "publish")
+    (problem,) = outcome.override_problems
+    assert "names no call" in problem
+    (condition,) = publish.conditions
+    assert (condition.text, condition.location.file, condition.location.line) == (
+        "argv[1] == '--replay'", "tiny_driver/scripts/laser", 3)
+    assert publish.origin == "override"

@@ -30,10 +30,12 @@ from typing import Any
 import yaml
 
 from .. import __version__
+from .. import diagnostics as diag
 from ..diagnostics import Diagnostic
 from ..extract import AUTO_CACHE, extract_nodes
 from ..files import read_text
 from ..graph.hints import apply_node_hints
+from ..model.conditions import Condition
 from ..model.location import Location
 from ..model.source import Node
 from ..model.values import UNKNOWN_MARK
@@ -44,7 +46,9 @@ from .format import InterfaceModel, dumps
 OVERRIDES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "overrides")
 COMMIT = re.compile(r"^[0-9a-f]{40}$")
 REPOSITORY = re.compile(r"^github:[A-Za-z0-9_.-]+/[A-Za-z0-9_.-]+$")
-OVERRIDE_KEYS = ("complete",)  # an override node block may also say why it is complete
+# an override node block may also say why the node is now complete, and put calls the
+# extractor took as unconditional under the condition that guards them
+OVERRIDE_KEYS = ("complete", "conditions")
 
 
 class ListError(ValueError):
@@ -92,6 +96,7 @@ class Outcome:
     unresolved: int = 0
     partial: dict[str, list[str]] = field(default_factory=dict)
     problem: str | None = None
+    override_problems: list[str] = field(default_factory=list)
 
 
 def read_list(path: str) -> list[Entry]:
@@ -162,6 +167,8 @@ def _build(task: Task, outcome: Outcome) -> Outcome:
     for node in package.nodes:
         _mark_partial(node, found)
     override = _apply_override(task, package.nodes, found)
+    outcome.override_problems = [f"{d.location.file}: {d.message}" for d in found
+                                 if d.code == "HINT_INVALID"]
     model = InterfaceModel(
         task.package, task.entry.distro, package.nodes, package.version,
         {"repository": task.entry.repository, "branch": task.entry.branch,
@@ -243,6 +250,8 @@ def _apply_override(task: Task, nodes: list[Node], found: list[Diagnostic]) -> s
             if call.origin == "hint":
                 call.origin = "override"
         block = blocks.get(name)
+        if isinstance(block, dict):
+            _override_conditions(node, block.get("conditions"), relative, found)
         if isinstance(block, dict) and isinstance(block.get("complete"), str):
             node.completeness = "complete"
             node.completeness_reasons = [f"completed by override {relative}: "
@@ -250,6 +259,32 @@ def _apply_override(task: Task, nodes: list[Node], found: list[Diagnostic]) -> s
         if node not in nodes:  # a node the build files do not show
             nodes.append(node)
     return relative
+
+
+def _override_conditions(node: Node, entries: Any, relative: str,
+                         found: list[Diagnostic]) -> None:
+    """``conditions: [{calls: file:line, text: ..., at: file:line}]``: the calls made at
+    ``calls`` exist only under ``text``, written at ``at`` (a caller's ``if`` the
+    extractor does not carry into the function it calls)."""
+    for entry in entries if isinstance(entries, list) else []:
+        calls, at = _place(entry.get("calls")), _place(entry.get("at"))
+        text = entry.get("text")
+        hit = [c for c in node.calls if calls and (c.location.file, c.location.line) == calls]
+        if not hit or not isinstance(text, str) or at is None:
+            found.append(diag.make("HINT_INVALID", Location(file=relative), detail=(
+                f"{node.name}: override condition {entry!r} names no call of the node")))
+            continue
+        where = Location(node.package, at[0], at[1])
+        for call in hit:
+            call.conditions = (*call.conditions, Condition(text, "source", "if", where))
+            call.origin = "override"
+
+
+def _place(text: Any) -> tuple[str, int] | None:
+    if not isinstance(text, str) or ":" not in text:
+        return None
+    file, _, line = text.rpartition(":")
+    return (file, int(line)) if line.isdigit() else None
 
 
 def run(work: Sequence[Task], jobs: int | None = None, scheduler: str | None = None
@@ -296,6 +331,8 @@ def report(outcomes: Iterable[Outcome], say: Callable[[str], Any]) -> None:
         state = f"{len(outcome.partial)} partial" if outcome.partial else "complete"
         say(f"{name}: {len(outcome.nodes)} nodes, {outcome.calls} calls, "
             f"{outcome.unresolved} names unknown statically, {state}")
+        for problem in outcome.override_problems:
+            say(f"    override not used: {problem}")
         for node, reasons in outcome.partial.items():
             for reason in reasons:
                 say(f"    {node}: {reason}")
