@@ -86,15 +86,15 @@ def test_launch_name_wins_over_the_code_name(write_tree):
 
 
 def test_two_unnamed_nodes_keep_their_own_launch_parameters(write_tree):
-    # robot_state_publisher is not in the workspace: it stays /? with its parameter;
-    # the talker's parameter goes to /talker only
+    # acme_driver is not in the workspace and has no interface model: it stays /? with
+    # its parameter; the talker's parameter goes to /talker only
     launch = """
         from launch import LaunchDescription
         from launch_ros.actions import Node
 
         def generate_launch_description():
             return LaunchDescription([
-                Node(package='robot_state_publisher', executable='robot_state_publisher',
+                Node(package='acme_driver', executable='acme_driver',
                      parameters=[{'robot_description': '<robot/>'}]),
                 Node(package='talk', executable='talker', parameters=[{'rate': 5.0}]),
             ])
