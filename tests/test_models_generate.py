@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import os
+from pathlib import Path
 
 import pytest
 
@@ -131,3 +132,23 @@ def test_an_override_puts_a_call_under_the_condition_its_caller_writes(tmp_path)
     assert (condition.text, condition.location.file, condition.location.line) == (
         "argv[1] == '--replay'", "tiny_driver/scripts/laser", 3)
     assert publish.origin == "override"
+
+
+def test_trees_listed_with_an_entry_are_needed_and_recorded(tmp_path):
+    listed = tmp_path / "list.yaml"
+    listed.write_text(Path(LIST).read_text(encoding="utf-8") + (
+        "  with:\n    - repository: github:example/tiny_msgs\n"
+        "      commit: 89abcdef0123456789abcdef0123456789abcdef\n"))
+    (entry,) = read_list(str(listed))
+    assert entry.context_folders == ["example+tiny_msgs@89abcdef0123"]
+    (task,) = tasks([entry], SOURCES, OVERRIDES, cache_dir=None)
+    assert "example+tiny_msgs@89abcdef0123" in build_package(task).problem
+    (tmp_path / "sources").symlink_to(SOURCES)
+    msgs = tmp_path / "more" / "example+tiny_msgs@89abcdef0123" / "tiny_msgs"
+    msgs.mkdir(parents=True)
+    (task,) = tasks([entry], str(tmp_path / "sources"), OVERRIDES, cache_dir=None)
+    task = type(task)(task.entry, task.package, task.tree, task.overrides, None,
+                      (str(msgs.parent),))
+    model = from_document(json.loads(build_package(task).text))
+    assert model.source["with"] == ("github:example/tiny_msgs@"
+                                    "89abcdef0123456789abcdef0123456789abcdef")

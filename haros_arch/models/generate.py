@@ -7,6 +7,9 @@ The list (YAML) pins where each model comes from::
       commit: 9d7f5a1...              # 40 hex digits
       distro: noetic
       packages: [amcl, move_base, map_server]
+      with:                           # scanned too (message and library packages the
+        - repository: github:ros-planning/navigation_msgs   # code includes), not modelled
+          commit: 793d06f...
 
 Each entry's source tree is expected at ``SOURCES/<owner>+<name>@<commit[:12]>``
 (``scripts/models-fetch`` puts it there from a local git mirror). Each package is one
@@ -64,12 +67,23 @@ class Entry:
     distro: str
     packages: tuple[str, ...]
     branch: str = ""
+    # (repository, commit) of trees scanned with it: the message packages and libraries
+    # its code includes, so their types are known; they are not modelled
+    context: tuple[tuple[str, str], ...] = ()
 
     @property
     def folder(self) -> str:
         """Where its tree is expected under the sources folder."""
-        owner_name = self.repository.removeprefix("github:").replace("/", "+")
-        return f"{owner_name}@{self.commit[:12]}"
+        return folder_of(self.repository, self.commit)
+
+    @property
+    def context_folders(self) -> list[str]:
+        return [folder_of(repository, commit) for repository, commit in self.context]
+
+
+def folder_of(repository: str, commit: str) -> str:
+    """``<owner>+<name>@<commit[:12]>``: a pinned tree's folder under the sources folder."""
+    return f"{repository.removeprefix('github:').replace('/', '+')}@{commit[:12]}"
 
 
 @dataclass(frozen=True)
@@ -81,6 +95,7 @@ class Task:
     tree: str
     overrides: str
     cache_dir: str | None = AUTO_CACHE
+    context: tuple[str, ...] = ()  # the folders of the entry's context trees
 
 
 @dataclass
@@ -115,11 +130,12 @@ def read_list(path: str) -> list[Entry]:
         where = f"{path}: entry {index}"
         if not isinstance(item, dict):
             raise ListError(f"{where}: must be a mapping")
-        repository, commit = str(item.get("repository", "")), str(item.get("commit", ""))
-        if not REPOSITORY.match(repository):
-            raise ListError(f"{where}: repository must be github:owner/name")
-        if not COMMIT.match(commit):
-            raise ListError(f"{where}: commit must be 40 hexadecimal digits")
+        repository, commit = _pinned(item, where)
+        context = item.get("with") or []
+        if not isinstance(context, list):
+            raise ListError(f"{where}: 'with' must be a list of repository and commit")
+        pins = tuple(_pinned(other, f"{where}, with {number}")
+                     for number, other in enumerate(context, 1))
         packages = item.get("packages")
         if not isinstance(packages, list) or not packages or not all(
                 isinstance(p, str) and re.match(r"^[A-Za-z0-9_]+$", p) for p in packages):
@@ -128,13 +144,25 @@ def read_list(path: str) -> list[Entry]:
         if not re.match(r"^[a-z]+$", distro):
             raise ListError(f"{where}: distro must be a distribution name (noetic, jazzy)")
         entries.append(Entry(repository, commit, distro, tuple(packages),
-                             str(item.get("branch", ""))))
+                             str(item.get("branch", "")), pins))
     return entries
+
+
+def _pinned(item: Any, where: str) -> tuple[str, str]:
+    if not isinstance(item, dict):
+        raise ListError(f"{where}: must be a mapping")
+    repository, commit = str(item.get("repository", "")), str(item.get("commit", ""))
+    if not REPOSITORY.match(repository):
+        raise ListError(f"{where}: repository must be github:owner/name")
+    if not COMMIT.match(commit):
+        raise ListError(f"{where}: commit must be 40 hexadecimal digits")
+    return repository, commit
 
 
 def tasks(entries: Iterable[Entry], sources: str, overrides: str = OVERRIDES,
           only: Sequence[str] = (), cache_dir: str | None = AUTO_CACHE) -> list[Task]:
-    return [Task(entry, package, os.path.join(sources, entry.folder), overrides, cache_dir)
+    return [Task(entry, package, os.path.join(sources, entry.folder), overrides, cache_dir,
+                 tuple(os.path.join(sources, f) for f in entry.context_folders))
             for entry in entries for package in entry.packages
             if not only or package in only]
 
@@ -154,10 +182,11 @@ def build_package(task: Task) -> Outcome:
 
 
 def _build(task: Task, outcome: Outcome) -> Outcome:
-    if not os.path.isdir(task.tree):
-        outcome.problem = f"no source tree at {task.tree} (run scripts/models-fetch)"
+    missing = [t for t in (task.tree, *task.context) if not os.path.isdir(t)]
+    if missing:
+        outcome.problem = f"no source tree at {missing[0]} (run scripts/models-fetch)"
         return outcome
-    workspace = scan([task.tree], {})
+    workspace = scan([task.tree, *task.context], {})
     package = workspace.packages.get(task.package)
     if package is None:
         outcome.problem = f"no package {task.package} in {task.entry.repository}"
@@ -172,7 +201,9 @@ def _build(task: Task, outcome: Outcome) -> Outcome:
     model = InterfaceModel(
         task.package, task.entry.distro, package.nodes, package.version,
         {"repository": task.entry.repository, "branch": task.entry.branch,
-         "commit": task.entry.commit, "path": package.path},
+         "commit": task.entry.commit, "path": package.path,
+         **({"with": ", ".join(f"{r}@{c}" for r, c in task.entry.context)}
+            if task.entry.context else {})},
         {"name": "haros-arch", "version": __version__}, override)
     outcome.text = dumps(model)
     outcome.nodes = [n.executable for n in package.nodes]
