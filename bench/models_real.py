@@ -18,6 +18,7 @@ pinned model sources):
     husky          github:husky/husky@noetic-devel
     turtlebot3     github:ROBOTIS-GIT/turtlebot3@noetic (without turtlebot3_description)
     jackal         github:jackal/jackal@noetic-devel (navigation + control)
+    fetch          github:fetchrobotics/fetch_ros@melodic-devel (without fetch_description)
     nav2_bringup   github:ros-navigation/navigation2@jazzy, nav2_bringup only
 """
 
@@ -57,6 +58,7 @@ CASES = [
     Case("jackal", "jackal", ["jackal_navigation/launch/amcl_demo.launch",
                               "jackal_control/launch/control.launch",
                               "jackal_control/launch/teleop.launch"]),
+    Case("fetch", "fetch_ros", ["fetch_navigation/launch/fetch_nav.launch"]),
     Case("nav2_bringup", "nav2_bringup", ["nav2_bringup/launch/bringup_launch.py"],
          {"map": "map.yaml", "use_composition": "False"}),
 ]
