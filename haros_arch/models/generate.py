@@ -195,6 +195,7 @@ def _build(task: Task, outcome: Outcome) -> Outcome:
     found += extract_nodes(package.nodes, workspace, cache_dir=task.cache_dir, jobs=1)
     for node in package.nodes:
         _mark_partial(node, found)
+        _mark_unextracted(node, task.tree)
     override = _apply_override(task, package.nodes, found)
     outcome.override_problems = [f"{d.location.file}: {d.message}" for d in found
                                  if d.code == "HINT_INVALID"]
@@ -256,6 +257,31 @@ def _mark_partial(node: Node, found: list[Diagnostic]) -> None:
                           f"{item.message}")
     if len(problems) > 3:
         node.mark_partial(f"{len(problems)} such errors or warnings in its sources in all")
+
+
+def _mark_unextracted(node: Node, root: str) -> None:
+    """A recall check on the extractor: a line of the node's C++ sources that calls a
+    ROS API function as a member (``nh.subscribe(``, ``->create_publisher<``) with no
+    extracted call within two lines of it means calls may be missing (code in a class
+    template, say); such a node is partial, with the first places."""
+    if node.language != "cpp":
+        return
+    names = sorted((n for n in _api_names() if "::" not in n and len(n) > 4), key=len)
+    pattern = re.compile(r"(?:\.|->)\s*(" + "|".join(map(re.escape, names)) + r")\s*[<(]")
+    seen = {(c.location.file, c.location.line) for c in node.calls}
+    missing: list[str] = []
+    for source in node.sources:
+        text, _problems = read_text(os.path.join(root, source), Location(file=source))
+        for number, line in enumerate((text or "").splitlines(), 1):
+            code = line.split("//", 1)[0]
+            if code.lstrip().startswith("*") or not pattern.search(code):
+                continue
+            if not any((source, near) in seen for near in range(number - 2, number + 3)):
+                missing.append(f"{source}:{number}: {code.strip()[:80]}")
+    for place in missing[:3]:
+        node.mark_partial(f"{place} calls the ROS API, but no call was extracted there")
+    if len(missing) > 3:
+        node.mark_partial(f"{len(missing)} such call sites in all")
 
 
 def _apply_override(task: Task, nodes: list[Node], found: list[Diagnostic]) -> str | None:
