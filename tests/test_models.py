@@ -156,3 +156,49 @@ def test_shipped_models_are_found(package, distro):
     if found is None:
         pytest.skip("not generated yet")
     assert found.distro == distro and found.source.get("commit")
+
+
+LISTENER = """
+    import rclpy
+    from sensor_msgs.msg import JointState
+
+    def main():
+        rclpy.init()
+        node = rclpy.create_node('arm_monitor')
+        node.create_subscription(JointState, 'joint_states', lambda m: None, 10)
+        rclpy.spin(node)
+    """
+
+
+def test_a_ros2_system_takes_the_jazzy_model_named_as_its_code_names_itself(write_tree):
+    from conftest import package_xml
+
+    root = write_tree({
+        "src/arm/package.xml": package_xml("arm", build_type="ament_python"),
+        "src/arm/setup.py": "from setuptools import setup\nsetup(name='arm', packages=["
+                            "'arm'], entry_points={'console_scripts': ['monitor = "
+                            "arm.monitor:main']})\n",
+        "src/arm/resource/arm": "",
+        "src/arm/arm/__init__.py": "",
+        "src/arm/arm/monitor.py": LISTENER,
+        "src/arm/launch/arm.launch.py": """
+            from launch import LaunchDescription
+            from launch_ros.actions import Node
+
+            def generate_launch_description():
+                return LaunchDescription([
+                    Node(package='joint_state_publisher', executable='joint_state_publisher'),
+                    Node(package='arm', executable='monitor'),
+                ])
+            """,
+        "project.yaml": "project: p\nconfigurations:\n  c: [arm/launch/arm.launch.py]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {}, Options(cache_dir=None, jobs=1))
+    (config,) = model.configurations
+    jsp = _instance(config, "/joint_state_publisher")
+    assert jsp.completeness == "model" and jsp.node.model.startswith("jazzy/")
+    topic = next(t for t in config.topics if t.name == "/joint_states")
+    assert ([p.node.name for p in topic.publishers], [s.node.name for s in topic.subscribers]
+            ) == (["/joint_state_publisher"], ["/arm_monitor"])
+    assert topic.publishers[0].qos["reliability"] == "reliable"
+    assert "ROS 2" in next(d for d in config.diagnostics if d.code == "MODEL_DISTRO").message
