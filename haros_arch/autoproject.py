@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import os
 import re
+import stat
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 
@@ -54,6 +55,8 @@ def is_launch_file(path: str) -> bool:
             os.path.dirname(path)) != "launch":
         return False
     try:
+        if not os.path.isfile(path) or not stat.S_ISREG(os.stat(path).st_mode):
+            return False
         with open(path, "rb") as handle:
             head = handle.read(64 * 1024)
     except OSError:
@@ -66,8 +69,9 @@ def is_launch_file(path: str) -> bool:
 
 
 def is_project_file(path: str) -> bool:
-    return os.path.isfile(path) and path.lower().endswith((".yaml", ".yml")) and \
-        not is_launch_file(path)
+    """A YAML file that is not a launch file (``load`` then reads it, or says why not)."""
+    return os.path.exists(path) and not os.path.isdir(path) and path.lower().endswith(
+        (".yaml", ".yml")) and not is_launch_file(path)
 
 
 def workspace_of(path: str) -> str:

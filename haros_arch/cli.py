@@ -274,7 +274,7 @@ def cmd_compare(args: argparse.Namespace, out: Console, err: Console) -> int:
         with open(args.live, encoding="utf-8") as handle:
             live = json.load(handle)
         result = compare(model, live, args.config)
-    except (OSError, ValueError, KeyError, CompareError) as error:
+    except (OSError, ValueError, KeyError, RecursionError, CompareError) as error:
         err.print(f"haros-arch: cannot compare: {escape(str(error))}", highlight=False)
         return EXIT_USAGE
     if args.format == "json":

@@ -127,7 +127,7 @@ def query(args: Any, out: Console, err: Console, analyse: Analyse) -> int:
         try:
             with open(args.model, encoding="utf-8") as handle:
                 model = from_data(json.load(handle))
-        except (OSError, ValueError, ModelDataError) as error:
+        except (OSError, ValueError, RecursionError, ModelDataError) as error:
             err.print(f"haros-arch: cannot read model {args.model}: {error}", highlight=False)
             return EXIT_USAGE
     elif args.project:
