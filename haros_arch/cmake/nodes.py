@@ -74,6 +74,8 @@ class SourceMap:
             if match:
                 source = os.path.normpath(os.path.join(os.path.dirname(target.file),
                                                        match.group(2)))
+            if not source.startswith("$<") and not os.path.splitext(source)[1]:
+                source = _with_suffix(source)  # CMake tries the known extensions
             if source.startswith("$<") or not source.endswith(C_SUFFIXES):
                 continue  # other generator expressions are unknown at this stage
             if source.startswith(BINARY_ROOT):
@@ -162,6 +164,16 @@ def is_python(path: str) -> bool:
     except OSError:
         return False
     return first.startswith(b"#!") and b"python" in first
+
+
+def _with_suffix(source: str) -> str:
+    """A source named without its extension (``add_executable(x src/main)``): the file
+    with the first C or C++ extension that exists, as CMake looks for it (CMP0115 OLD,
+    the behaviour of projects requiring CMake before 3.20); else as written."""
+    if os.path.isfile(source):
+        return source
+    return next((source + suffix for suffix in C_SUFFIXES
+                 if os.path.isfile(source + suffix)), source)
 
 
 def _script_source(path: str, workspace: Files) -> str:
