@@ -202,3 +202,28 @@ def test_a_ros2_system_takes_the_jazzy_model_named_as_its_code_names_itself(writ
             ) == (["/joint_state_publisher"], ["/arm_monitor"])
     assert topic.publishers[0].qos["reliability"] == "reliable"
     assert "ROS 2" in next(d for d in config.diagnostics if d.code == "MODEL_DISTRO").message
+
+
+def test_a_name_from_each_element_of_a_list_parameter_gives_one_link_each():
+    _model, config = _analyse("project_mux.yaml")
+    mux = _instance(config, "/twist_mux")
+    assert sorted(link.name for link in mux.subscribers) == ["/joy_teleop/cmd_vel",
+                                                             "/nav/cmd_vel"]
+    joy = next(t for t in config.topics if t.name == "/joy_teleop/cmd_vel")
+    assert [p.node.name for p in joy.publishers] == ["/joy_cmd"]
+    assert not any(t.is_unresolved for t in config.topics)
+
+
+def test_without_the_list_the_name_stays_unknown():
+    from haros_arch.graph.build import element_calls
+    from haros_arch.model.source import PrimitiveCall
+
+    call = PrimitiveCall("subscribe", "?", "geometry_msgs/Twist", name_param="~topics",
+                         name_each="topic")
+    _model, config = _analyse("project_mux.yaml")
+    mux = _instance(config, "/twist_mux")
+
+    class NoParameters:
+        by_name: dict = {}
+
+    assert element_calls(call, mux, NoParameters()) == [call]  # type: ignore[arg-type]

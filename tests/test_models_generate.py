@@ -180,3 +180,19 @@ def test_a_ros_call_in_the_text_with_no_extracted_call_makes_a_model_partial(tmp
         found, PrimitiveCall("subscribe", "?", location=Location("p", "src/filter.cpp", 7))])
     _mark_unextracted(whole, str(tmp_path))
     assert whole.completeness == "complete"
+
+
+def test_an_override_names_a_call_by_each_element_of_a_list_parameter(tmp_path):
+    folder = tmp_path / "noetic"
+    folder.mkdir()
+    (folder / "tiny_driver.yaml").write_text(
+        "nodes:\n  tiny_driver/relay:\n    names:\n"
+        "      - calls: tiny_driver/scripts/relay:8\n        param: ~topics\n"
+        "        each: .\n")
+    (task,) = tasks(read_list(LIST), SOURCES, str(tmp_path), cache_dir=None)
+    outcome = build_package(task)
+    subscribe = next(c for c in from_document(json.loads(outcome.text)).node("relay").calls
+                     if c.kind == "subscribe")
+    assert (subscribe.name_param, subscribe.name_each, subscribe.origin) == (
+        "~topics", ".", "override")
+    assert outcome.override_problems == []

@@ -77,7 +77,7 @@ def node_from_data(data: dict[str, Any], package: str) -> Node:
                            default=c.get("default"), searched=bool(c.get("searched", False)),
                            handle_namespace=c.get("handle_namespace"),
                            deletes=bool(c.get("deletes", False)),
-                           node_name=c.get("node_name"))
+                           node_name=c.get("node_name"), name_each=c.get("name_each"))
              for c in data.get("calls", ())]
     return Node(data.get("package", package), executable, data.get("kind", "executable"),
                 data.get("language", "cpp"), list(data.get("sources", ())), calls,

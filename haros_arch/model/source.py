@@ -84,6 +84,11 @@ class PrimitiveCall:
     # the name the code gives the ROS node this call is made on, when its executable
     # creates several (``Node.rosnames``); None: the executable's one node
     node_name: str | None = field(default=None, metadata={"optional": True})
+    # a name taken from each element of a list parameter (twist_mux's ``~topics``: one
+    # subscription per ``topics[i].topic``): ``name_param`` is the list, ``name_each``
+    # the element's field (``.``: the element itself); the graph makes one call per
+    # element the launch file gives
+    name_each: str | None = field(default=None, metadata={"optional": True})
 
 
 def wire_call(action: PrimitiveCall, kind: CallKind, name: str, type_: str | None,

@@ -40,7 +40,7 @@ from ..files import read_text
 from ..graph.hints import apply_node_hints
 from ..model.conditions import Condition
 from ..model.location import Location
-from ..model.source import Node
+from ..model.source import Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK
 from ..pipeline import read_build_files
 from ..workspace import scan
@@ -49,9 +49,10 @@ from .format import InterfaceModel, dumps
 OVERRIDES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "overrides")
 COMMIT = re.compile(r"^[0-9a-f]{40}$")
 REPOSITORY = re.compile(r"^github:[A-Za-z0-9_.-]+/[A-Za-z0-9_.-]+$")
-# an override node block may also say why the node is now complete, and put calls the
-# extractor took as unconditional under the condition that guards them
-OVERRIDE_KEYS = ("complete", "conditions")
+# an override node block may also say why the node is now complete, put calls the
+# extractor took as unconditional under the condition that guards them, and name calls
+# by the elements of a list parameter
+OVERRIDE_KEYS = ("complete", "conditions", "names")
 
 
 class ListError(ValueError):
@@ -309,6 +310,7 @@ def _apply_override(task: Task, nodes: list[Node], found: list[Diagnostic]) -> s
         block = blocks.get(name)
         if isinstance(block, dict):
             _override_conditions(node, block.get("conditions"), relative, found)
+            _override_names(node, block.get("names"), relative, found)
         if isinstance(block, dict) and isinstance(block.get("complete"), str):
             node.completeness = "complete"
             node.completeness_reasons = [f"completed by override {relative}: "
@@ -324,17 +326,38 @@ def _override_conditions(node: Node, entries: Any, relative: str,
     ``calls`` exist only under ``text``, written at ``at`` (a caller's ``if`` the
     extractor does not carry into the function it calls)."""
     for entry in entries if isinstance(entries, list) else []:
-        calls, at = _place(entry.get("calls")), _place(entry.get("at"))
-        text = entry.get("text")
-        hit = [c for c in node.calls if calls and (c.location.file, c.location.line) == calls]
-        if not hit or not isinstance(text, str) or at is None:
-            found.append(diag.make("HINT_INVALID", Location(file=relative), detail=(
-                f"{node.name}: override condition {entry!r} names no call of the node")))
-            continue
-        where = Location(node.package, at[0], at[1])
-        for call in hit:
-            call.conditions = (*call.conditions, Condition(text, "source", "if", where))
-            call.origin = "override"
+        at, text = _place(entry.get("at")), entry.get("text")
+        for call in _calls_at(node, entry, relative, found,
+                              isinstance(text, str) and at is not None):
+            where = Location(node.package, at[0], at[1]) if at else Location()
+            call.conditions = (*call.conditions, Condition(str(text), "source", "if", where))
+
+
+def _override_names(node: Node, entries: Any, relative: str,
+                    found: list[Diagnostic]) -> None:
+    """``names: [{calls: file:line, param: ~topics, each: topic}]``: the calls made at
+    ``calls`` are named by the field ``each`` of every element of the list parameter
+    ``param`` (a name the code reads through a helper the extractor cannot follow)."""
+    for entry in entries if isinstance(entries, list) else []:
+        param, each = entry.get("param"), entry.get("each")
+        for call in _calls_at(node, entry, relative, found,
+                              isinstance(param, str) and isinstance(each, str)):
+            call.name_param, call.name_each = str(param), str(each)
+
+
+def _calls_at(node: Node, entry: Any, relative: str, found: list[Diagnostic],
+              usable: bool) -> list[PrimitiveCall]:
+    """The node's calls at an override entry's ``calls: file:line`` (marked as changed by
+    the override); none, and a diagnostic, when the entry is malformed or names none."""
+    place = _place(entry.get("calls")) if isinstance(entry, dict) else None
+    hit = [c for c in node.calls if place and (c.location.file, c.location.line) == place]
+    if not hit or not usable:
+        found.append(diag.make("HINT_INVALID", Location(file=relative), detail=(
+            f"{node.name}: override entry {entry!r} names no call of the node")))
+        return []
+    for call in hit:
+        call.origin = "override"
+    return hit
 
 
 def _place(text: Any) -> tuple[str, int] | None:
