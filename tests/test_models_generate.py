@@ -39,7 +39,7 @@ def test_a_package_is_modelled_with_its_source_and_what_stayed_partial():
     assert laser.completeness == "complete"
     broken = model.node("broken")
     assert broken.completeness == "partial" and broken.calls == []
-    assert "PY_PARSE_ERROR" in broken.completeness_reasons[0]
+    assert "syntax error" in broken.completeness_reasons[0]
     assert list(outcome.partial) == ["broken"] and outcome.unresolved == 1  # relay's '?'
 
 
@@ -84,34 +84,6 @@ def test_a_dask_cluster_gives_the_same_models():
     with distributed.LocalCluster(n_workers=1, processes=False, dashboard_address=None) as cluster:
         (outcome,) = run(work, scheduler=cluster.scheduler_address)
     assert outcome.text == _outcome().text
-
-
-def test_cpp_errors_on_ros_calls_make_a_model_partial_and_others_do_not():
-    from haros_arch.diagnostics import make
-    from haros_arch.model.location import Location
-    from haros_arch.model.source import Node, PrimitiveCall
-    from haros_arch.models.generate import _mark_partial
-
-    where = Location(file="joy/src/joy.cpp", line=54)
-    sdl = make("CPP_PARSE_ERROR", where, detail="use of undeclared identifier 'SDL_Quit'")
-    api = make("CPP_PARSE_ERROR", where,
-               detail="no matching member function for call to 'declare_parameter'")
-    base = make("CPP_PARSE_ERROR", where, detail="cannot initialize object parameter of "
-                "type 'const rclcpp::Node' with an expression of type 'joy::Joy'")
-    clean = Node("joy", "joy_node", sources=["joy/src/joy.cpp"],
-                 calls=[PrimitiveCall("publish", "joy", "sensor_msgs/msg/Joy")])
-    _mark_partial(clean, [sdl])
-    assert clean.completeness == "complete"
-    empty = Node("joy", "joy_node", sources=["joy/src/joy.cpp"])
-    _mark_partial(empty, [sdl])
-    assert empty.completeness == "partial"
-    assert "no ROS calls found" in empty.completeness_reasons[0]
-    for problem in (api, base):
-        node = Node("joy", "joy_node", sources=["joy/src/joy.cpp"])
-        _mark_partial(node, [sdl, problem])
-        assert node.completeness == "partial"
-        assert node.completeness_reasons == [f"joy/src/joy.cpp:54: CPP_PARSE_ERROR "
-                                             f"{problem.message}"]
 
 
 def test_an_override_puts_a_call_under_the_condition_its_caller_writes(tmp_path):

@@ -15,8 +15,9 @@ Each entry's source tree is expected at ``SOURCES/<owner>+<name>@<commit[:12]>``
 (``scripts/models-fetch`` puts it there from a local git mirror). Each package is one
 unit of work, run by the same code as a workspace analysis (workspace scan, build
 files, C++ and Python extraction): on a local process pool by default, or on a Dask
-distributed cluster (``--scheduler ADDRESS``; the optional ``dask`` extra). A node whose
-sources gave warnings or errors, or none at all, is ``partial``, with the reasons. An
+distributed cluster (``--scheduler ADDRESS``; the optional ``dask`` extra). A node is
+``partial`` where extraction says so (its sources kept errors) and where a line of its
+C++ calls a ROS API function with no extracted call there (``_mark_unextracted``). An
 override file ``OVERRIDES/<distro>/<package>.yaml`` (hint format, reviewed like code)
 may complete a model; what it adds has origin ``override``.
 """
@@ -194,8 +195,7 @@ def _build(task: Task, outcome: Outcome) -> Outcome:
         return outcome
     found = read_build_files(package, workspace)
     found += extract_nodes(package.nodes, workspace, cache_dir=task.cache_dir, jobs=1)
-    for node in package.nodes:
-        _mark_partial(node, found)
+    for node in package.nodes:  # extraction marked it partial where sources had errors
         _mark_unextracted(node, task.tree)
     override = _apply_override(task, package.nodes, found)
     outcome.override_problems = [f"{d.location.file}: {d.message}" for d in found
@@ -213,51 +213,16 @@ def _build(task: Task, outcome: Outcome) -> Outcome:
     outcome.unresolved = sum(1 for n in package.nodes for c in n.calls
                              if UNKNOWN_MARK in c.name and c.name_param is None)
     outcome.partial = {n.executable: list(n.completeness_reasons) for n in package.nodes
-                       if n.completeness == "partial"}
+                       if n.completeness in ("partial", "unknown")}
     return outcome
 
 
 def _api_names() -> frozenset[str]:
-    """The ROS API's C++ functions and node classes, from the extractor's tables."""
+    """The ROS API's C++ function names, from the extractor's tables."""
     from ..extract.cpp import api
 
     tables = (api.ROSCPP, api.LIBRARIES, api.RCLCPP, api.RCLCPP_LIBRARIES)
-    return frozenset({name for table in tables for _, name in table}
-                     | {cls for table in tables for cls, _ in table})
-
-
-def _loses_calls(item: Diagnostic, api_names: frozenset[str]) -> bool:
-    """Whether a diagnostic means calls may be missing: a warning or error, or a C++
-    error that names a ROS API function or node class (a call that did not type-check,
-    a node class clang gave up on). C++ errors about other libraries' types (a header
-    of SDL or OpenCV we do not have) leave the ROS calls alone."""
-    if item.severity in ("warning", "error"):
-        return True
-    if not item.code.endswith("_PARSE_ERROR"):
-        return False
-    quoted = {word.removeprefix("const ").strip() for word in item.message.split("'")[1::2]}
-    return bool(quoted & api_names)
-
-
-def _mark_partial(node: Node, found: list[Diagnostic]) -> None:
-    """Calls may be missing where the node's own sources gave warnings or errors, or
-    C++ errors on ROS API calls; the reasons name the first few places and the count."""
-    if not node.sources:
-        node.mark_partial("no source files were found for it in the build files")
-        return
-    names = _api_names() if node.language == "cpp" else frozenset()
-    files = set(node.sources)
-    errors = [item for item in found if item.location.file in files
-              and (item.severity != "info" or item.code.endswith("_PARSE_ERROR"))]
-    problems = [item for item in errors if _loses_calls(item, names)]
-    if not node.calls and errors and not problems:  # nothing found where parsing failed
-        node.mark_partial(f"no ROS calls found, and its sources did not parse cleanly "
-                          f"({len(errors)} errors)")
-    for item in problems[:3]:
-        node.mark_partial(f"{item.location.file}:{item.location.line}: {item.code} "
-                          f"{item.message}")
-    if len(problems) > 3:
-        node.mark_partial(f"{len(problems)} such errors or warnings in its sources in all")
+    return frozenset(name for table in tables for _, name in table)
 
 
 def _mark_unextracted(node: Node, root: str) -> None:
