@@ -285,6 +285,28 @@ CATALOGUE: dict[str, Entry] = {
         "A launch file starts a node from a package this machine does not have (it may "
         "be installed where the system runs). The instance is kept without links; "
         "describe it with hints if it matters."),
+    # interface models (haros_arch.models)
+    "MODEL_DISTRO": Entry(
+        "info", "interface models of distribution {distro} ({why})",
+        "Nodes of packages without source in the workspace take the interface model of "
+        "this ROS distribution: the project file's 'distro', else ROS_DISTRO in the "
+        "configuration's environment, else noetic for ROS 1 launch files and jazzy for "
+        "ROS 2 ones."),
+    "MODEL_USED": Entry(
+        "info", "node {node} ({where}) takes the interface model {model}",
+        "The node's package has no source in the workspace; its interface comes from a "
+        "model (the project's 'models:' files first, then the shipped ones), generated "
+        "by haros-arch from the named repository and commit. Its links have origin "
+        "'model'."),
+    "MODEL_NODE_MISSING": Entry(
+        "warning", "the interface model {model} has no node {node} (it has: {nodes}); "
+                   "its interface is unknown",
+        "The package's model does not list the executable the launch file starts: a "
+        "different distribution or version, or a node the generator did not find."),
+    "MODEL_INVALID": Entry(
+        "warning", "interface model not used: {detail}",
+        "A model file (listed under 'models:' in the project file, or shipped) could not "
+        "be read; nodes it would describe stay of unknown interface."),
 }
 
 

@@ -2,8 +2,8 @@
 
 A YAML file compatible with HAROS project files (``project``, ``packages``,
 ``configurations``, ``nodes``, ``rules``) plus our keys (``workspace``, per-configuration
-``args`` and ``environment``, ``queries``). Every problem is a ``ProjectError`` that
-names the file and line, and the CLI exits with code 2.
+``args`` and ``environment``, ``queries``, interface ``models`` and ``distro``). Every
+problem is a ``ProjectError`` that names the file and line, and the CLI exits with code 2.
 """
 
 from __future__ import annotations
@@ -58,6 +58,11 @@ class Project:
     environment: dict[str, str] = field(default_factory=dict)
     # a compile_commands.json (or its folder) for the C++ flags; None: looked for
     compile_commands: str | None = None
+    # interface models: the user's model files or folders (win over the shipped ones),
+    # and the ROS distribution whose models to use (None: from the environment or the
+    # launch files; see haros_arch.models)
+    models: list[str] = field(default_factory=list)
+    distro: str | None = None
 
     @property
     def folder(self) -> str:
@@ -138,7 +143,8 @@ def _scalar_text(value: Any) -> str:
 
 
 TOP_KEYS = ("project", "packages", "configurations", "nodes", "rules", "queries",
-            "workspace", "environment", "analysis", "repositories", "compile_commands")
+            "workspace", "environment", "analysis", "repositories", "compile_commands",
+            "models", "distro")
 CONFIG_KEYS = ("launch", "hints", "user_data", "args", "environment", "description",
                "rostest")
 
@@ -176,6 +182,8 @@ def load(path: str) -> Project:
         "queries": lambda n: setattr(project, "queries", _queries(reader, n)),
         "compile_commands": lambda n: setattr(
             project, "compile_commands", reader.string(n, "compile_commands")),
+        "models": lambda n: setattr(project, "models", reader.strings(n, "models")),
+        "distro": lambda n: setattr(project, "distro", reader.string(n, "distro")),
         "analysis": lambda n: None,
         "repositories": lambda n: None,  # HAROS fetched these; we analyse what is on disk
     }
@@ -194,6 +202,7 @@ def load(path: str) -> Project:
     if project.compile_commands is not None:
         project.compile_commands = os.path.normpath(os.path.join(folder,
                                                                  project.compile_commands))
+    project.models = [os.path.normpath(os.path.join(folder, m)) for m in project.models]
     names = [c.name for c in project.configurations]
     for config in project.configurations:
         if names.count(config.name) > 1:
