@@ -40,7 +40,9 @@ def _parser() -> argparse.ArgumentParser:
     extract.add_argument("-o", "--output", help="write the JSON here (default: stdout)")
     extract.add_argument("-q", "--quiet", action="store_true", help="no summary")
     extract.add_argument("-v", "--verbose", action="store_true",
-                         help="list info-level diagnostics one by one (default: counted per code)")
+                         help="list every node instance and resource (default: counts per "
+                              "kind and the nodes whose interface is not fully known) and "
+                              "info-level diagnostics one by one (default: counted per code)")
     _run_options(extract)
 
     check = sub.add_parser("check", help="run the query catalogue and report findings and "
@@ -50,7 +52,8 @@ def _parser() -> argparse.ArgumentParser:
     check.add_argument("--fail-on", choices=(*SEVERITY_RANK, "never"), default="error")
     check.add_argument("-o", "--output", help="write the report here (default: stdout)")
     check.add_argument("-v", "--verbose", action="store_true",
-                       help="list info-level diagnostics one by one (default: counted per code)")
+                       help="list every finding of a rule (default: the first few) and "
+                            "info-level diagnostics one by one (default: counted per code)")
     _run_options(check)
 
     query = sub.add_parser("query", help="evaluate a query and print its matches")
@@ -184,7 +187,7 @@ def cmd_extract(args: argparse.Namespace, out: Console, err: Console) -> int:
     _write(extract_document(model, args.project), args.output)
     if not args.quiet:
         summary = out if args.output else err
-        print_summary(model, summary)
+        print_summary(model, summary, verbose=args.verbose)
         print_diagnostics(model.all_diagnostics, summary, verbose=args.verbose)
         if args.output:
             summary.print(f"wrote {args.output}", highlight=False)

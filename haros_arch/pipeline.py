@@ -47,7 +47,11 @@ def analyse(project: Project, environment: Mapping[str, str] | None = None,
 
     launches: dict[str, LaunchModel] = {}
     for spec in project.configurations:
-        launches[spec.name] = _load_launch(spec, project, workspace, env)
+        launched = _load_launch(spec, project, workspace, env)
+        # roslaunch starts no <test> node; rostest does (a configuration says it is one)
+        rostest = spec.rostest if spec.rostest is not None else any(
+            entry.endswith(".test") for entry in spec.launch)
+        launches[spec.name] = launched if rostest else launch.without_tests(launched)
 
     wanted = list(project.packages) or sorted(workspace.packages)
     for name in project.packages:

@@ -40,6 +40,8 @@ class ConfigurationSpec:
     launch_lines: list[int] = field(default_factory=list)  # where each launch entry is
     hints: dict[str, Any] = field(default_factory=dict)
     user_data: dict[str, Any] = field(default_factory=dict)
+    # run by rostest: its <test> nodes are started too; None: when a launch file is a .test
+    rostest: bool | None = None
     line: int = 0
 
 
@@ -101,6 +103,12 @@ class _Reader:
             raise self.fail(node, f"{what} must be a string")
         return str(node.value)
 
+    def boolean(self, node: Node, what: str) -> bool:
+        value = self.plain(node) if isinstance(node, ScalarNode) else None
+        if not isinstance(value, bool):
+            raise self.fail(node, f"{what} must be true or false")
+        return value
+
     def strings(self, node: Node, what: str) -> list[str]:
         return [text for text, _line in self.strings_at(node, what)]
 
@@ -137,7 +145,8 @@ def _scalar_text(value: Any) -> str:
 TOP_KEYS = ("project", "packages", "configurations", "nodes", "rules", "queries",
             "workspace", "environment", "analysis", "repositories", "compile_commands",
             "models", "distro")
-CONFIG_KEYS = ("launch", "hints", "user_data", "args", "environment", "description")
+CONFIG_KEYS = ("launch", "hints", "user_data", "args", "environment", "description",
+               "rostest")
 
 
 def load(path: str) -> Project:
@@ -243,6 +252,8 @@ def _configuration(
             spec.user_data = reader.any_map(value, what)
         elif key == "description":
             reader.string(value, what)
+        elif key == "rostest":
+            spec.rostest = reader.boolean(value, what)
         else:
             raise reader.fail(key_node, f"unknown key '{key}' in configuration '{name}' "
                                         f"(expected one of: {', '.join(CONFIG_KEYS)})")

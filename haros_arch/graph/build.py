@@ -27,7 +27,7 @@ from ..model.values import UNKNOWN_MARK
 from ..models.commands import command_node
 from ..workspace import Workspace, installed_roots
 from .actions import action_links
-from .processes import process_nodes, process_params
+from .processes import guessed_names, process_nodes, process_params
 
 RESOURCE_OF_KIND: dict[str, type[Resource]] = {
     "publish": Topic, "subscribe": Topic, "server": Service, "client": Service,
@@ -92,6 +92,7 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
     """Fill ``config`` with node instances, resources and links; ``nodes`` by pkg/exec."""
     resources = Resources(config)
     config.diagnostics.extend(launch.diagnostics)
+    config.diagnostics.extend(guessed_names(launch, nodes))
     for param in process_params(launch, nodes):
         parameter = resources.get(Parameter, param.name)
         assert isinstance(parameter, Parameter)
@@ -180,7 +181,7 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
     remaps = list(decl.remaps) + remaps_in_args(decl.args)
     return NodeInstance(decl.name, node, namespace=decl.namespace, remaps=remaps,
                         args=decl.args, conditions=decl.conditions, location=decl.location,
-                        ros_version=decl.ros_version)
+                        ros_version=decl.ros_version, test=decl.is_test)
 
 
 def is_container(decl: NodeDecl) -> bool:

@@ -159,7 +159,8 @@ def _configuration(data: dict[str, Any], nodes: dict[str, Node],
             [tuple(pair) for pair in item.get("remaps", ())], item.get("args", ""),
             conditions(item.get("conditions")), location(item.get("location")),
             origin=str(item.get("origin", "launch")),
-            ros_version=int(item.get("ros_version", 1) or 1))
+            ros_version=int(item.get("ros_version", 1) or 1),
+            test=bool(item.get("test", False)))
         config.nodes.append(instance)
         by_name.setdefault(name, instance)
         by_id.setdefault(instance.id, instance)
