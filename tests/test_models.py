@@ -132,8 +132,15 @@ def test_a_bad_model_file_is_a_diagnostic(tmp_path):
     bad.write_text('{"schema": "haros-arch-model/1", "package": "x", "nodes": 3}')
     broken = tmp_path / "broken.json"
     broken.write_text('{"schema": \n')
-    library = Library([str(bad), str(broken), str(tmp_path / "missing.json")], shipped=None)
-    assert [d.code for d in library.diagnostics] == ["MODEL_INVALID"] * 3
+    kind = tmp_path / "kind.json"
+    kind.write_text('{"schema": "haros-arch-model/1", "package": "y", "nodes": '
+                    '[{"executable": "y", "calls": [{"kind": "teleport", "name": "x"}]}]}')
+    deep = tmp_path / "deep.json"
+    deep.write_text("[" * 100_000 + "]" * 100_000)
+    library = Library([str(bad), str(broken), str(tmp_path / "missing.json"), str(kind),
+                       str(deep)], shipped=None)
+    assert [d.code for d in library.diagnostics] == ["MODEL_INVALID"] * 5
+    assert "teleport" in library.diagnostics[3].message
     assert library.diagnostics[1].location.line == 2
     assert library.find("x", "noetic") is None
 
@@ -227,3 +234,19 @@ def test_without_the_list_the_name_stays_unknown():
         by_name: dict = {}
 
     assert element_calls(call, mux, NoParameters()) == [call]  # type: ignore[arg-type]
+
+
+def test_every_shipped_model_reads_clean_and_names_its_source():
+    from haros_arch.models.library import DATA, read_model
+
+    found: list = []
+    files = [os.path.join(DATA, distro, name) for distro in sorted(os.listdir(DATA))
+             for name in sorted(os.listdir(os.path.join(DATA, distro)))]
+    assert len(files) >= 60
+    for path in files:
+        model = read_model(path, found)
+        assert model is not None and model.distro == os.path.basename(os.path.dirname(path))
+        assert model.package + ".json" == os.path.basename(path)
+        assert model.source["repository"].startswith("github:")
+        assert len(model.source["commit"]) == 40
+    assert found == []
