@@ -250,3 +250,26 @@ def test_every_shipped_model_reads_clean_and_names_its_source():
         assert model.source["repository"].startswith("github:")
         assert len(model.source["commit"]) == 40
     assert found == []
+
+
+def test_a_nodelet_of_a_package_without_source_takes_its_model(write_tree):
+    from conftest import package_xml
+
+    root = write_tree({
+        "src/cam/package.xml": package_xml("cam"),
+        "src/cam/CMakeLists.txt": "project(cam)\n",
+        "src/cam/launch/cam.launch": """
+            <launch>
+              <node pkg="nodelet" type="nodelet" name="manager" args="manager"/>
+              <node pkg="nodelet" type="nodelet" name="rectify"
+                    args="load image_proc/rectify manager"/>
+            </launch>
+            """,
+        "project.yaml": "project: p\nconfigurations:\n  c: [cam/launch/cam.launch]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {}, Options(cache_dir=None, jobs=1))
+    (config,) = model.configurations
+    rectify = _instance(config, "/rectify")
+    assert rectify.node is not None and rectify.node.model.startswith("noetic/image_proc ")
+    assert {(link.kind, link.name) for link in rectify.links} >= {
+        ("subscribe", "/image_mono"), ("publish", "/image_rect")}
