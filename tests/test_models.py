@@ -273,3 +273,34 @@ def test_a_nodelet_of_a_package_without_source_takes_its_model(write_tree):
     assert rectify.node is not None and rectify.node.model.startswith("noetic/image_proc ")
     assert {(link.kind, link.name) for link in rectify.links} >= {
         ("subscribe", "/image_mono"), ("publish", "/image_rect")}
+
+
+def test_ros2_list_names_come_from_the_parameters_under_a_prefix(write_tree):
+    root = write_tree({
+        "src/base/package.xml": _package_xml("base"),
+        "src/base/launch/mux.launch.py": """
+            from launch import LaunchDescription
+            from launch_ros.actions import Node
+
+            def generate_launch_description():
+                return LaunchDescription([
+                    Node(package='twist_mux', executable='twist_mux', name='twist_mux',
+                         parameters=[{'topics': {
+                             'navigation': {'topic': 'cmd_vel_nav', 'priority': 10},
+                             'joystick': {'topic': 'joy_vel', 'priority': 100}}}]),
+                ])
+            """,
+        "project.yaml": "project: p\nconfigurations:\n  c: [base/launch/mux.launch.py]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {}, Options(cache_dir=None, jobs=1))
+    (config,) = model.configurations
+    mux = _instance(config, "/twist_mux")
+    assert mux.node.model.startswith("jazzy/twist_mux ")
+    assert sorted(link.name for link in mux.subscribers
+                  if link.type == "geometry_msgs/msg/Twist") == ["/cmd_vel_nav", "/joy_vel"]
+
+
+def _package_xml(name: str) -> str:
+    from conftest import package_xml
+
+    return package_xml(name, build_type="ament_cmake")
