@@ -124,7 +124,11 @@ RosparamLoader.add_implicit_resolver("!radians", re.compile(r"^rad\([^\)]*\)$"),
 
 def load_yaml(text: str) -> Any:
     """One YAML document, safely; aliases are bounded (no billion laughs)."""
-    loader = RosparamLoader(text)
+    try:
+        # the reader refuses control characters (DEL, form feed, ...) as it is made
+        loader = RosparamLoader(text)
+    except yaml.YAMLError as err:
+        raise ParamError(f"invalid YAML: {err}") from None
     try:
         node = loader.get_single_node()
         if node is None:
