@@ -46,3 +46,62 @@ def test_deep_substitutions_in_a_yaml_launch_file_are_a_diagnostic(write_tree) -
     text = 'launch:\n- let: {name: a, value: "' + "$(eval " * 3000 + "1" + ")" * 3000 + '"}\n'
     model = launch(write_tree, "deep.launch.yaml", text)
     assert "nested more than" in messages(model)
+
+
+# -- string and number building: the evaluators check the size before they make a value ----
+BUILDING = {
+    "format width from an argument": "'{0:{1}}'.format('a', 10**10)",
+    "%* width": "'%*d' % (10**9, 1)",
+    "join of big strings": "','.join(['x' * 10**5] * 10**5)",
+    "replace of the empty string": "('x' * 10**5).replace('', 'y' * 10**5)",
+    "range built whole": "len(range(10**9))",
+    "sum of lists": "len(sum([[1] * 10**4] * 10**4, []))",
+    "power chain": "((10**200)**200)**200",
+    "squaring": "(10**1000 * 10**1000) * (10**1000 * 10**1000)",
+    "str of a shared structure": "len(str([[[1] * 1000] * 1000] * 1000))",
+    "f-string width": "f'{1:{10**10}}'",
+}
+
+
+@pytest.mark.parametrize("case", sorted(BUILDING))
+def test_eval_refuses_to_build_huge_values(case: str) -> None:
+    from haros_arch.launch.expression import BUILTINS, Unknown, evaluate
+
+    started = time.monotonic()
+    result = evaluate(BUILDING[case], None, BUILTINS)
+    assert time.monotonic() - started < 5
+    assert isinstance(result, Unknown) and result.kind == "limit", result
+
+
+def test_format_fields_do_not_reach_attributes() -> None:
+    from haros_arch.launch.expression import BUILTINS, Unknown, evaluate
+
+    result = evaluate("'{0.__class__}'.format(1)", None, BUILTINS)
+    assert isinstance(result, Unknown) and "attribute" in result.reason
+    assert evaluate("'{0.real}'.format(1)", None, BUILTINS) != "1"
+    # what real launch files write still works
+    assert evaluate("'{0:{1}}|{2:>4}|{k}'.format('a', 3, 7, k=1)", None, BUILTINS) == "a  |   7|1"
+    assert evaluate("'%5.1f|%*d' % (3.14159, 3, 7)", None, BUILTINS) == "  3.1|  7"
+    assert evaluate("','.join(['a', 'b'])", None, BUILTINS) == "a,b"
+
+
+PYTHON_BUILDING = {
+    "format width": "x = '{0:{1}}'.format('a', 10**10)",
+    "%* width": "x = '%*d' % (10**9, 1)",
+    "power chain": "x = (((10**200)**200)**200)**200",
+    "squaring": "x = 10**200\n    for i in range(40):\n        x = x * x",
+    "join": "x = ''.join(['x' * 10**5] * 10**5)",
+    "attribute field": "x = '{0.__class__}'.format(1)",
+}
+
+
+@pytest.mark.parametrize("case", sorted(PYTHON_BUILDING))
+def test_python_launch_refuses_to_build_huge_values(write_tree, case: str) -> None:
+    text = ("from launch import LaunchDescription\n"
+            "from launch_ros.actions import Node\n\n"
+            "def generate_launch_description():\n"
+            f"    {PYTHON_BUILDING[case]}\n"
+            "    return LaunchDescription([Node(package='pkg', executable='n', name=x)])\n")
+    model = launch(write_tree, "big_launch.py", text)
+    assert model.diagnostics, "the bound is said"
+    assert all(n.name != "{0.__class__}" and "class" not in str(n.name) for n in model.nodes)

@@ -15,8 +15,19 @@ from typing import TYPE_CHECKING, Any
 
 import yaml
 
+from ...evaluate import budget
 from . import entities as e
-from .python_values import Context, LaunchDescription, Lazy, ReadOnlyFile, Unk, concat, to_text
+from .python_values import (
+    MAX_SIZE,
+    Budget,
+    Context,
+    LaunchDescription,
+    Lazy,
+    ReadOnlyFile,
+    Unk,
+    concat,
+    to_text,
+)
 
 if TYPE_CHECKING:
     from .python import Interpreter
@@ -172,6 +183,12 @@ def m_str(name: str) -> Method:
                     pieces.extend([owner, item] if index else [item])
                 return concat(pieces)
             return Unk(f"str.{name}() of a value not known statically")
+        try:  # the size of what it would make, before making it
+            budget.str_method_length(owner, name, a, k, MAX_SIZE)
+        except budget.OverBudget as err:
+            if err.kind == "limit":
+                raise Budget(err.reason) from None
+            return i.unsupported(n, f"str.{name}(): {err.reason}")
         try:
             return i.sized(getattr(owner, name)(*a, **k))
         except (TypeError, ValueError, IndexError, KeyError) as err:
