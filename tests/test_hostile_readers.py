@@ -105,3 +105,29 @@ def test_python_launch_refuses_to_build_huge_values(write_tree, case: str) -> No
     model = launch(write_tree, "big_launch.py", text)
     assert model.diagnostics, "the bound is said"
     assert all(n.name != "{0.__class__}" and "class" not in str(n.name) for n in model.nodes)
+
+
+# -- YAML: aliases and nesting are bounded the same way on every path -----------------------
+def _alias_bomb() -> str:
+    lines = ["a0: &a0 [x, x, x, x, x, x, x, x, x, x]"]
+    for i in range(1, 9):
+        lines.append(f"a{i}: &a{i} [" + ", ".join([f"*a{i - 1}"] * 10) + "]")
+    return "\n".join(lines) + "\nnode:\n  ros__parameters:\n    p: *a8\n"
+
+
+def test_alias_bomb_in_a_ros2_parameter_file_is_a_diagnostic(write_tree) -> None:
+    text = ('<launch><node pkg="pkg" exec="n" name="n">'
+            '<param from="$(find-pkg-share pkg)/config/bomb.yaml"/></node></launch>')
+    model = launch(write_tree, "bomb.launch.xml", text,
+                   {"src/pkg/config/bomb.yaml": _alias_bomb()})
+    assert "aliases expanded" in messages(model)
+    with pytest.raises(ParamError, match="aliases expanded"):  # the ROS 1 path, shared
+        load_yaml(_alias_bomb())
+
+
+def test_yaml_launch_file_nested_thousands_deep_is_a_diagnostic(write_tree) -> None:
+    model = launch(write_tree, "deep.launch.yaml", "launch: " + "[" * 5000 + "]" * 5000)
+    assert "LAUNCH_YAML_SYNTAX" in messages(model) and "nested" in messages(model)
+    model = launch(write_tree, "deep2.launch.yaml",
+                   "launch:\n- let: {name: a, value: " + "[" * 150 + "]" * 150 + "}\n")
+    assert "nested more than" in messages(model)

@@ -15,6 +15,7 @@ from typing import TYPE_CHECKING, Any
 
 import yaml
 
+from ... import safe_yaml
 from ...evaluate import budget
 from . import entities as e
 from .python_values import (
@@ -87,7 +88,7 @@ def safe_load(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     if text is None:
         return Unk("YAML not known statically")
     try:
-        return yaml.safe_load(text)
+        return safe_yaml.load(text)
     except yaml.YAMLError as err:
         return i.unsupported(n, f"YAML cannot be read: {err}")
 
