@@ -18,7 +18,7 @@ MAX_DEPTH = 100
 
 
 class YAMLLimit(yaml.YAMLError):
-    """The document passes a bound."""
+    """The document passes a bound, or holds a number Python refuses to read."""
 
 
 def compose(text: str, loader: type[yaml.SafeLoader] = yaml.SafeLoader) -> yaml.Node | None:
@@ -28,6 +28,8 @@ def compose(text: str, loader: type[yaml.SafeLoader] = yaml.SafeLoader) -> yaml.
         node = reader.get_single_node()
     except RecursionError:
         raise YAMLLimit(f"YAML nested more than {MAX_DEPTH} levels deep") from None
+    except ValueError as err:  # int() of a huge number in a %YAML directive
+        raise YAMLLimit(f"YAML cannot be read: {err}") from None
     finally:
         reader.dispose()
     if node is not None:
@@ -46,6 +48,8 @@ def load(text: str, loader: type[yaml.SafeLoader] = yaml.SafeLoader) -> Any:
         return reader.construct_document(node)
     except RecursionError:
         raise YAMLLimit(f"YAML nested more than {MAX_DEPTH} levels deep") from None
+    except ValueError as err:  # an integer of more than 4300 digits, a %YAML directive
+        raise YAMLLimit(f"YAML cannot be read: {err}") from None
     finally:
         reader.dispose()
 

@@ -131,3 +131,17 @@ def test_yaml_launch_file_nested_thousands_deep_is_a_diagnostic(write_tree) -> N
     model = launch(write_tree, "deep2.launch.yaml",
                    "launch:\n- let: {name: a, value: " + "[" * 150 + "]" * 150 + "}\n")
     assert "nested more than" in messages(model)
+
+
+@pytest.mark.parametrize("text", ["%YAML " + "9" * 5000 + "\n---\na: 1\n", "a: " + "9" * 5000])
+def test_huge_numbers_in_yaml_are_refused(text: str, tmp_path) -> None:
+    from haros_arch.project import ProjectError
+    from haros_arch.project import load as load_project
+
+    with pytest.raises(ParamError):
+        load_yaml(text)
+    if text.startswith("%YAML"):
+        path = tmp_path / "project.yaml"
+        path.write_text(text.replace("a: ", "project: "))
+        with pytest.raises(ProjectError):
+            load_project(str(path))
