@@ -145,3 +145,17 @@ def test_huge_numbers_in_yaml_are_refused(text: str, tmp_path) -> None:
         path.write_text(text.replace("a: ", "project: "))
         with pytest.raises(ProjectError):
             load_project(str(path))
+
+
+def test_query_round_and_int_stay_bounded() -> None:
+    from haros_arch import query
+    from haros_arch.model import Model
+    from haros_arch.query.errors import QueryError
+
+    scope = query.model_scope(Model("m"))
+    started = time.monotonic()
+    assert query.search("return round(5, 0-1000000000)", scope) == [0]
+    assert time.monotonic() - started < 5
+    assert query.search("return round(1250, 0-2)", scope) == [1200]
+    with pytest.raises(QueryError, match="infinity"):
+        query.search("return int(float('1e400'))", scope)

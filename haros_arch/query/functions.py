@@ -168,7 +168,7 @@ def _number(kind: type) -> Callable[[Charge, Any], Any]:
         if isinstance(value, str | int | float | bool):
             try:
                 return kind(value)
-            except ValueError as err:
+            except (ValueError, OverflowError) as err:  # int(inf), a 5,000-digit string
                 raise QueryTypeError(str(err)) from None
         raise QueryTypeError(f"{kind.__name__}() of {type(value).__name__}")
     return convert
@@ -180,6 +180,8 @@ def _bool(charge: Charge, value: Any) -> bool:
 
 def _round(charge: Charge, value: Any, digits: Any = 0) -> Any:
     if isinstance(value, int | float) and isinstance(digits, int):
+        if isinstance(value, int) and digits < 0 and -digits > value.bit_length() // 3 + 2:
+            return 0  # Python would compute 10 ** -digits first: round(5, -10**9) never ends
         return round(value, digits)
     raise QueryTypeError("round() takes a number")
 
