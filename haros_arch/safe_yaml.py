@@ -15,6 +15,7 @@ import yaml
 
 MAX_NODES = 100_000
 MAX_DEPTH = 100
+MAX_OPEN_BRACKETS = 1_000  # "[" / "{" open at once in the text, checked before it is read
 
 
 class YAMLLimit(yaml.YAMLError):
@@ -23,6 +24,7 @@ class YAMLLimit(yaml.YAMLError):
 
 def compose(text: str, loader: type[yaml.SafeLoader] = yaml.SafeLoader) -> yaml.Node | None:
     """The document's node tree, checked against the bounds."""
+    _check_flow_depth(text)
     reader = loader(text)
     try:
         node = reader.get_single_node()
@@ -39,6 +41,7 @@ def compose(text: str, loader: type[yaml.SafeLoader] = yaml.SafeLoader) -> yaml.
 
 def load(text: str, loader: type[yaml.SafeLoader] = yaml.SafeLoader) -> Any:
     """``yaml.safe_load`` with the bounds (one document)."""
+    _check_flow_depth(text)
     reader = loader(text)
     try:
         node = reader.get_single_node()
@@ -52,6 +55,22 @@ def load(text: str, loader: type[yaml.SafeLoader] = yaml.SafeLoader) -> Any:
         raise YAMLLimit(f"YAML cannot be read: {err}") from None
     finally:
         reader.dispose()
+
+
+def _check_flow_depth(text: str) -> None:
+    """Refuse ``[[[[...`` before the reader sees it: the scanner's work grows with the
+    square of the flow nesting (a 200,000-deep document never ends). Brackets in quoted
+    text count too; no real file has a thousand of them open at once."""
+    if text.count("[") + text.count("{") <= MAX_OPEN_BRACKETS:
+        return
+    depth = 0
+    for char in text:
+        if char in "[{":
+            depth += 1
+            if depth > MAX_OPEN_BRACKETS:
+                raise YAMLLimit(f"YAML nested more than {MAX_DEPTH} levels deep")
+        elif char in "]}" and depth:
+            depth -= 1
 
 
 def check(root: yaml.Node) -> None:

@@ -159,3 +159,11 @@ def test_query_round_and_int_stay_bounded() -> None:
     assert query.search("return round(1250, 0-2)", scope) == [1200]
     with pytest.raises(QueryError, match="infinity"):
         query.search("return int(float('1e400'))", scope)
+
+
+def test_yaml_opening_brackets_without_end_is_refused_at_once() -> None:
+    started = time.monotonic()
+    with pytest.raises(ParamError, match="nested"):
+        load_yaml("baud: " + "[" * 200_000)
+    assert time.monotonic() - started < 5
+    assert load_yaml('a: "' + "[" * 300 + '"') == {"a": "[" * 300}  # in a string: fine
