@@ -167,3 +167,13 @@ def test_yaml_opening_brackets_without_end_is_refused_at_once() -> None:
         load_yaml("baud: " + "[" * 200_000)
     assert time.monotonic() - started < 5
     assert load_yaml('a: "' + "[" * 300 + '"') == {"a": "[" * 300}  # in a string: fine
+
+
+def test_billion_laughs_through_ros1_args_is_a_diagnostic(write_tree) -> None:
+    args = "".join(f'<arg name="a{i + 1}" default="' + f"$(arg a{i})" * 10 + '"/>'
+                   for i in range(9))
+    text = (f'<launch><arg name="a0" default="xxxxxxxxxx"/>{args}'
+            '<node pkg="pkg" type="n" name="n"><param name="p" value="$(arg a9)"/></node>'
+            '</launch>')
+    model = launch(write_tree, "laughs.launch", text, build="catkin")
+    assert "longer than 100000 characters" in messages(model)

@@ -28,6 +28,8 @@ EVAL_BUILTINS: Mapping[str, Any] = {
     "true": True, "false": False, "True": True, "False": False,
 }
 
+MAX_VALUE = 100_000  # characters of a substituted value (roslaunch has no bound)
+
 
 class SubstitutionError(Exception):
     """A substitution that roslaunch would reject (wrong arity, unknown command)."""
@@ -110,7 +112,16 @@ def substitute(text: str, ctx: Context) -> Value:
     return value
 
 
+def _size(value: Value) -> int:
+    return sum(len(p) if isinstance(p, str) else 1 for p in value.parts)
+
+
 def _replace(value: Value, old: str, new: Value) -> Value:
+    # the size it would have, before it is made: $(arg) of $(arg) ... ("billion laughs")
+    grown = sum(len(p) + p.count(old) * (_size(new) - len(old)) if isinstance(p, str) else 1
+                for p in value.parts)
+    if grown > MAX_VALUE:
+        raise SubstitutionError(f"the value would be longer than {MAX_VALUE} characters")
     parts: list[str | Unknown | Value] = []
     for part in value.parts:
         if isinstance(part, str) and old in part:
