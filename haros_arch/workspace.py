@@ -145,7 +145,8 @@ def _package_folders(top: str, ignore: tuple[str, ...] = IGNORE_MARKERS,
 
     Symbolic links to folders are followed, as catkin, colcon and rospkg do (a
     workspace's src/ often links checkouts kept elsewhere); each real folder is visited
-    once, so a link cycle ends the walk there. ``budget`` (one count, shared by several
+    once, so a link cycle ends the walk there, and a link to the folder itself or to one
+    above it (``/``, ``..``) is not followed. ``budget`` (one count, shared by several
     walks) bounds how many folders are listed.
     """
     stack = [(top, 0)]
@@ -175,8 +176,15 @@ def _package_folders(top: str, ignore: tuple[str, ...] = IGNORE_MARKERS,
             path = os.path.join(folder, entry)
             if entry.startswith(".") or entry in skip:
                 continue
+            if os.path.islink(path) and _is_ancestor(os.path.realpath(path), real):
+                continue  # a link to "/" or to a folder above would walk it all again
             if os.path.isdir(path):
                 stack.append((path, depth + 1))
+
+
+def _is_ancestor(target: str, real: str) -> bool:
+    """``target`` is ``real`` or a folder above it (both real paths)."""
+    return real == target or real.startswith(target.rstrip(os.sep) + os.sep)
 
 
 def manifest_of(folder: str) -> str:

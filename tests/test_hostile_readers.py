@@ -177,3 +177,19 @@ def test_billion_laughs_through_ros1_args_is_a_diagnostic(write_tree) -> None:
             '</launch>')
     model = launch(write_tree, "laughs.launch", text, build="catkin")
     assert "longer than 100000 characters" in messages(model)
+
+
+def test_scan_does_not_follow_links_to_root_or_ancestors(write_tree) -> None:
+    import os
+
+    root = write_tree({"ws/src/good/package.xml": package_xml("good"),
+                       "elsewhere/kept/package.xml": package_xml("kept")})
+    os.symlink("/", root / "ws/src/slash")
+    os.symlink(root / "ws", root / "ws/src/good_parent")
+    os.makedirs(root / "ws/src/deep/er")
+    os.symlink("../..", root / "ws/src/deep/er/up")
+    os.symlink(root / "elsewhere", root / "ws/src/external")  # a checkout kept elsewhere
+    started = time.monotonic()
+    workspace = scan([str(root / "ws/src")], {})
+    assert time.monotonic() - started < 5
+    assert sorted(workspace.packages) == ["good", "kept"]
