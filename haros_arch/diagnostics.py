@@ -8,12 +8,18 @@ locations, never on prose.
 
 from __future__ import annotations
 
+import os
+import traceback
+from collections.abc import Callable
 from dataclasses import dataclass
+from typing import TypeVar
 
 from .model.diagnostic import SEVERITY_RANK, Diagnostic, Severity
 from .model.location import NOWHERE, Location
 
-__all__ = ["CATALOGUE", "SEVERITY_RANK", "Diagnostic", "Entry", "Severity", "make"]
+__all__ = ["CATALOGUE", "SEVERITY_RANK", "Diagnostic", "Entry", "Severity", "make", "per_file"]
+
+T = TypeVar("T")
 
 
 @dataclass(frozen=True)
@@ -307,6 +313,12 @@ CATALOGUE: dict[str, Entry] = {
         "warning", "interface model not used: {detail}",
         "A model file (listed under 'models:' in the project file, or shipped) could not "
         "be read; nodes it would describe stay of unknown interface."),
+    # our own bugs, kept to the file that shows them
+    "INTERNAL": Entry(
+        "error", "internal error while reading {path}: {detail} (at {at}; please report it "
+                 "with this file)",
+        "An unexpected exception in haros-arch while it read this file. What the file "
+        "would have added to the model is missing; the run went on with the other files."),
 }
 
 
@@ -314,3 +326,18 @@ def make(code: str, location: Location = NOWHERE, **params: object) -> Diagnosti
     """Build a diagnostic from the catalogue entry ``code``, filling its template."""
     entry = CATALOGUE[code]
     return Diagnostic(code, entry.severity, entry.template.format(**params), location)
+
+
+def per_file(where: Location, path: str, found: list[Diagnostic],
+             action: Callable[[], T], default: T) -> T:
+    """``action()``, the work of one file; an exception that escapes it (a bug of ours)
+    becomes an INTERNAL diagnostic at ``where`` and ``default`` stands for its result, so
+    the run goes on with the other files."""
+    try:
+        return action()
+    except Exception as err:  # only around one file's work
+        frames = traceback.extract_tb(err.__traceback__)
+        at = f"{os.path.basename(frames[-1].filename)}:{frames[-1].lineno}" if frames else "?"
+        detail = f"{type(err).__name__}: {str(err)[:200]}"
+        found.append(make("INTERNAL", where, path=path, detail=detail, at=at))
+        return default

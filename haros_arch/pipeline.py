@@ -99,7 +99,14 @@ def analyse(project: Project, environment: Mapping[str, str] | None = None,
 
 
 def read_build_files(package: Package, workspace: Workspace) -> list[diag.Diagnostic]:
-    """The package's nodes and their sources, from its CMakeLists.txt or setup.py."""
+    """The package's nodes and their sources, from its CMakeLists.txt or setup.py; an
+    unexpected exception is an INTERNAL diagnostic for the package."""
+    found: list[diag.Diagnostic] = []
+    return diag.per_file(package.location, package.path, found,
+                    lambda: _read_build_files(package, workspace), found)
+
+
+def _read_build_files(package: Package, workspace: Workspace) -> list[diag.Diagnostic]:
     found: list[diag.Diagnostic] = []
     if package.build_type == "ament_python":
         package.nodes, found = pysetup.parse_package(package, workspace)
@@ -151,7 +158,10 @@ def _load_launch(spec: ConfigurationSpec, project: Project, workspace: Workspace
         if not os.path.isfile(path):
             merged.diagnostics.append(diag.make("LAUNCH_FILE_MISSING", where, path=entry))
             continue
-        loaded = launch.load(path, workspace, spec.args, {**env, **spec.environment})
+        loaded = diag.per_file(  # one launch file (and its includes): a bug stays with it
+            where, entry, merged.diagnostics,
+            lambda: launch.load(path, workspace, spec.args,  # noqa: B023 (called at once)
+                                {**env, **spec.environment}), LaunchModel())
         merged.files.extend(loaded.files)
         offset = len(merged.nodes)
         merged.nodes.extend(loaded.nodes)

@@ -117,8 +117,12 @@ def scan(roots: Iterable[str], environment: Mapping[str, str] | None = None) -> 
                 continue
             seen.add(real)
             manifest = manifest_of(folder)
-            package, found = parse_manifest(
-                manifest, Location(None, ws.relpath(manifest)), ws.relpath(folder), env)
+            where = Location(None, ws.relpath(manifest))
+            nothing: tuple[Package | None, list[Diagnostic]] = (None, [])
+            package, found = diag.per_file(
+                where, ws.relpath(manifest), ws.diagnostics,
+                lambda: parse_manifest(manifest, where, ws.relpath(folder), env),  # noqa: B023
+                nothing)
             ws.diagnostics.extend(found)
             if package is None:
                 continue

@@ -3,6 +3,7 @@ campaign found: each ends with a diagnostic (or the reader's documented error) q
 
 from __future__ import annotations
 
+import shutil
 import time
 
 import pytest
@@ -193,3 +194,54 @@ def test_scan_does_not_follow_links_to_root_or_ancestors(write_tree) -> None:
     workspace = scan([str(root / "ws/src")], {})
     assert time.monotonic() - started < 5
     assert sorted(workspace.packages) == ["good", "kept"]
+
+
+# -- an exception that escapes one file's work is a diagnostic for that file ----------------
+def test_a_bug_in_one_launch_file_is_an_internal_diagnostic(monkeypatch, tmp_path) -> None:
+    from conftest import FIXTURES
+
+    import haros_arch.launch as launch_module
+    from haros_arch.pipeline import analyse
+    from haros_arch.project import load as load_project
+
+    real = launch_module.load
+
+    def buggy(path, *args, **kwargs):
+        if path.endswith("broken.launch"):
+            raise KeyError("a bug of ours")
+        return real(path, *args, **kwargs)
+
+    monkeypatch.setattr(launch_module, "load", buggy)
+    src = FIXTURES / "paper_minimal" / "src"
+    broken = tmp_path / "src" / "example" / "launch"
+    shutil.copytree(src, tmp_path / "src")
+    (broken / "broken.launch").write_text("<launch/>")
+    project = tmp_path / "project.yaml"
+    project.write_text("project: p\npackages: [example]\nconfigurations:\n"
+                       "  good: {launch: [example/launch/minimal.launch]}\n"
+                       "  bad: {launch: [example/launch/broken.launch]}\n")
+    model = analyse(load_project(str(project)), {})
+    configs = {c.name: c for c in model.configurations}
+    assert configs["good"].nodes, "the other file's work is kept"
+    internal = [d for c in model.configurations for d in c.diagnostics
+                if d.code == "INTERNAL"] + [d for d in model.diagnostics if d.code == "INTERNAL"]
+    assert internal and "broken.launch" in internal[0].message
+    assert "KeyError" in internal[0].message and internal[0].location.line == 5
+
+
+def test_a_bug_in_one_manifest_is_an_internal_diagnostic(monkeypatch, write_tree) -> None:
+    import haros_arch.workspace as workspace_module
+
+    real = workspace_module.parse_manifest
+
+    def buggy(path, *args, **kwargs):
+        if "/bad/" in path:
+            raise AttributeError("a bug of ours")
+        return real(path, *args, **kwargs)
+
+    monkeypatch.setattr(workspace_module, "parse_manifest", buggy)
+    root = write_tree({"src/good/package.xml": package_xml("good"),
+                       "src/bad/package.xml": package_xml("bad")})
+    workspace = scan([str(root / "src")], {})
+    assert sorted(workspace.packages) == ["good"]
+    assert [d.code for d in workspace.diagnostics] == ["INTERNAL"]
