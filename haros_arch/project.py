@@ -17,6 +17,7 @@ import yaml
 from yaml.nodes import MappingNode, Node, ScalarNode, SequenceNode
 
 from .files import read_text
+from .model.diagnostic import SEVERITY_RANK
 from .model.location import Location
 
 
@@ -178,7 +179,7 @@ def load(path: str) -> Project:
         "configurations": lambda n: setattr(
             project, "configurations", _configurations(reader, n)),
         "nodes": lambda n: setattr(project, "nodes", reader.any_map(n, "nodes")),
-        "rules": lambda n: setattr(project, "rules", reader.any_map(n, "rules")),
+        "rules": lambda n: setattr(project, "rules", _rules(reader, n)),
         "queries": lambda n: setattr(project, "queries", _queries(reader, n)),
         "compile_commands": lambda n: setattr(
             project, "compile_commands", reader.string(n, "compile_commands")),
@@ -267,8 +268,30 @@ def _set_launch(spec: ConfigurationSpec, entries: list[tuple[str, int]]) -> None
     spec.launch_lines = [line for _text, line in entries]
 
 
+def _check_severities(reader: _Reader, node: Node) -> None:
+    """Each query or rule's ``severity`` is one the findings know (said here, with its
+    line, instead of when the queries run)."""
+    items = node.value if isinstance(node, SequenceNode) else [
+        value for _key, value in node.value] if isinstance(node, MappingNode) else []
+    for item in items:
+        if not isinstance(item, MappingNode):
+            continue
+        for key, value in item.value:
+            if isinstance(key, ScalarNode) and key.value == "severity" and not (
+                    isinstance(value, ScalarNode) and value.value in SEVERITY_RANK):
+                raise reader.fail(value, "severity must be one of "
+                                         + ", ".join(SEVERITY_RANK))
+
+
+def _rules(reader: _Reader, node: Node) -> dict[str, Any]:
+    rules = reader.any_map(node, "rules")
+    _check_severities(reader, node)
+    return rules
+
+
 def _queries(reader: _Reader, node: Node) -> list[Any]:
     if not isinstance(node, SequenceNode):
         raise reader.fail(node, "queries must be a list")
+    _check_severities(reader, node)
     result = reader.plain(node)
     return result if isinstance(result, list) else []

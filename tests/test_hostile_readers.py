@@ -245,3 +245,17 @@ def test_a_bug_in_one_manifest_is_an_internal_diagnostic(monkeypatch, write_tree
     workspace = scan([str(root / "src")], {})
     assert sorted(workspace.packages) == ["good"]
     assert [d.code for d in workspace.diagnostics] == ["INTERNAL"]
+
+
+@pytest.mark.parametrize("key", ["queries", "rules"])
+def test_bad_severity_of_the_projects_own_query_is_a_project_error(tmp_path, key: str) -> None:
+    from haros_arch.project import ProjectError
+    from haros_arch.project import load as load_project
+
+    item = ('  - query: "nodes"\n    severity: fatal\n' if key == "queries"
+            else '  mine:\n    query: "nodes"\n    severity: [1]\n')
+    path = tmp_path / "project.yaml"
+    path.write_text(f"project: p\n{key}:\n{item}")
+    with pytest.raises(ProjectError, match="severity must be one of") as caught:
+        load_project(str(path))
+    assert (":4:" if key == "queries" else ":5:") in str(caught.value)  # the severity's line
