@@ -259,3 +259,35 @@ def test_bad_severity_of_the_projects_own_query_is_a_project_error(tmp_path, key
     with pytest.raises(ProjectError, match="severity must be one of") as caught:
         load_project(str(path))
     assert (":4:" if key == "queries" else ":5:") in str(caught.value)  # the severity's line
+
+
+# -- every output writes any name -------------------------------------------------------------
+HOSTILE_NAME = "/bad\udc80\x1b[31m\x00\x7f\x0c"
+
+
+def test_text_junit_and_html_write_names_with_surrogates_and_control_characters() -> None:
+    import io
+    import json
+    from xml.dom import minidom
+
+    from rich.console import Console
+
+    from haros_arch.diagnostics import make
+    from haros_arch.model.location import Location
+    from haros_arch.report.junit import to_junit
+    from haros_arch.report.text import print_diagnostics
+    from haros_arch.viz.html import json_for_script
+
+    found = make("INTERNAL", Location(None, "a\udc80.py", 3), path=HOSTILE_NAME,
+                 detail="x", at="y")
+    stream = io.StringIO()
+    print_diagnostics([found], Console(file=stream, soft_wrap=True, no_color=True))
+    text = stream.getvalue()
+    text.encode("utf-8")
+    assert "\\udc80" in text and "\\x1b[31m" in text
+    assert not {"\x1b", "\x00", "\x7f", "\x0c"} & set(text)  # the name's raw characters
+    junit = to_junit([], [found], [])
+    minidom.parseString(junit.encode("utf-8"))  # well-formed XML 1.0
+    assert "\\udc80" in junit
+    script = json_for_script({"name": HOSTILE_NAME})
+    assert json.loads(script.encode("utf-8")) == {"name": HOSTILE_NAME}

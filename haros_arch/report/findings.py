@@ -6,10 +6,10 @@ from __future__ import annotations
 from collections.abc import Iterable
 
 from rich.console import Console
-from rich.markup import escape
 
 from ..model.diagnostic import SEVERITY_RANK
 from ..model.finding import Finding
+from .escape import escape
 
 _COLOURS = {"error": "red", "warning": "yellow", "info": "blue"}
 FIRST_FEW = 3  # findings listed per rule without --verbose

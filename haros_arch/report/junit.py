@@ -11,6 +11,7 @@ from xml.etree import ElementTree as ET
 
 from ..model.diagnostic import Diagnostic
 from ..model.finding import Finding
+from .escape import printable
 
 
 def to_junit(findings: Iterable[Finding], diagnostics: Iterable[Diagnostic] = (),
@@ -39,4 +40,6 @@ def to_junit(findings: Iterable[Finding], diagnostics: Iterable[Diagnostic] = ()
     root.set("tests", str(total))
     root.set("failures", str(failures))
     ET.indent(root)
-    return '<?xml version="1.0" encoding="UTF-8"?>\n' + ET.tostring(root, "unicode") + "\n"
+    # names may hold control characters or lone surrogates, which XML 1.0 cannot carry
+    return printable('<?xml version="1.0" encoding="UTF-8"?>\n' + ET.tostring(root, "unicode")
+                     + "\n")

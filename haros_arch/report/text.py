@@ -6,11 +6,11 @@ from collections import defaultdict
 from collections.abc import Iterable
 
 from rich.console import Console
-from rich.markup import escape
 
 from ..model.diagnostic import SEVERITY_RANK, Diagnostic
 from ..model.model import Model
 from ..model.runtime import LAUNCH_WRITER, Configuration, NodeInstance, Parameter, Resource
+from .escape import escape
 
 
 def print_diagnostics(diagnostics: Iterable[Diagnostic], console: Console,

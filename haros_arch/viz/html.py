@@ -14,6 +14,7 @@ import hashlib
 import html
 import json
 import os
+import re
 from collections.abc import Iterable
 from pathlib import Path
 from typing import Any
@@ -48,9 +49,15 @@ def find_d3() -> Path:
         "haros-arch checkout, or set HAROS_ARCH_D3 to a d3.min.js (version 7)")
 
 
+_SURROGATE = re.compile("[\ud800-\udfff]")
+
+
 def json_for_script(data: Any) -> str:
     """JSON that is safe inside a ``<script type="application/json">`` element."""
     text = json.dumps(data, ensure_ascii=False, separators=(",", ":"))
+    # a lone surrogate (a name from a Python literal '\udc80') cannot be written as UTF-8;
+    # in JSON text it only occurs inside strings, where \uXXXX gives it back to the page
+    text = _SURROGATE.sub(lambda m: f"\\u{ord(m.group()):04x}", text)
     return "".join(_JSON_ESCAPES.get(ch, ch) for ch in text) if _needs_escape(text) else text
 
 
