@@ -17,6 +17,7 @@ from dataclasses import dataclass
 
 from . import diagnostics as diag
 from .diagnostics import Diagnostic
+from .evaluate import budget
 from .files import read_text
 from .model.location import Location
 from .model.source import Node, Package
@@ -196,6 +197,8 @@ def _value(node: ast.expr, names: dict[str, object]) -> object:
     if isinstance(node, ast.BinOp):
         left, right = _value(node.left, names), _value(node.right, names)
         if isinstance(node.op, ast.Add) and isinstance(left, str) and isinstance(right, str):
+            if len(left) + len(right) > budget.MAX_LENGTH:  # a = a + a, line after line
+                return UNKNOWN
             return left + right
         if isinstance(node.op, ast.Mod) and isinstance(left, str) and re.fullmatch(
                 r"(?:[^%]|%%|%s)*", left):

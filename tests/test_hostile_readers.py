@@ -291,3 +291,18 @@ def test_text_junit_and_html_write_names_with_surrogates_and_control_characters(
     assert "\\udc80" in junit
     script = json_for_script({"name": HOSTILE_NAME})
     assert json.loads(script.encode("utf-8")) == {"name": HOSTILE_NAME}
+
+
+@pytest.mark.parametrize("grow", ["name = name + name", "n = n * n"])
+def test_python_node_reader_stops_doubling_values(write_tree, grow: str) -> None:
+    from haros_arch.extract.python import extract_python
+
+    text = ("import rospy\nfrom std_msgs.msg import String\nname = 'x' * 1\nname = 'abcdefgh'\n"
+            "n = 10 ** 1\nn = 99999999999999999999\n" + (grow + "\n") * 40
+            + "rospy.init_node('n')\nrospy.Publisher(name + str(n), String, queue_size=1)\n")
+    folder = write_tree({"pkg/package.xml": package_xml("pkg"), "pkg/scripts/grow.py": text})
+    started = time.monotonic()
+    result = extract_python([str(folder / "pkg" / "scripts" / "grow.py")], scan([str(folder)]),
+                            package="pkg")
+    assert time.monotonic() - started < 10
+    assert len(result.calls) == 1 and len(str(result.calls[0].name)) < 1000

@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import ast
 
+from ...evaluate import budget
 from ...model.values import Value
 from . import rclpy, rospy
 from .calls import MAX_CALL_DEPTH, argument, unknown_params
@@ -84,6 +85,13 @@ class Evaluator(Instances, QoSProfiles):
 
     def _BinOp(self, expr: ast.BinOp, frame: Frame) -> object:
         left, right = self.eval(expr.left, frame), self.eval(expr.right, frame)
+        try:  # the size of what it would make, before making it (a = a + a, x = x * x)
+            if isinstance(expr.op, ast.Add):
+                budget.check_size("a value", _length(left) + _length(right))
+            elif isinstance(expr.op, ast.Mult):
+                budget.check_int_op("*", left, right)
+        except budget.OverBudget as err:
+            return Opaque(err.reason)
         if isinstance(expr.op, ast.Add):
             if isinstance(left, Value) or isinstance(right, Value):
                 return Value.of(text_of(left), text_of(right))
@@ -254,3 +262,12 @@ class Evaluator(Instances, QoSProfiles):
             elif not isinstance(statement, ast.Expr | ast.Pass):
                 break
         return Opaque(f"{info.qualname}()")
+
+
+def _length(value: object) -> int:
+    """Characters (or items) a value adds to a concatenation."""
+    if isinstance(value, Value):
+        return sum(len(p) if isinstance(p, str) else 1 for p in value.parts)
+    if isinstance(value, Seq):
+        return len(value.items)
+    return len(value) if isinstance(value, str) else 1
