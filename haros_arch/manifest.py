@@ -153,6 +153,33 @@ def parse_manifest(
     return package, found
 
 
+_ROS2_DEPENDENCIES = frozenset({"rclcpp", "rclpy", "ament_cmake", "ament_cmake_auto",
+                                "ament_cmake_python", "ament_python", "rclcpp_lifecycle",
+                                "rclcpp_components", "rosidl_default_generators"})
+_ROS1_DEPENDENCIES = frozenset({"roscpp", "rospy", "catkin", "nodelet", "message_generation"})
+
+
+def ros_version(package: Package) -> int | None:
+    """Whether a package is ROS 1 or ROS 2 code, from its package.xml: its build tool
+    (catkin, ament_*), else the build type (ament_cmake / ament_python), else the ROS
+    client libraries and build tools it depends on, else format 1 (ROS 1 only); None when
+    nothing says (a plain CMake package)."""
+    for dep in package.dependencies:  # the build tool says it first
+        if dep.kind in ("buildtool_depend", "buildtool_export_depend"):
+            if dep.name == "catkin":
+                return 1
+            if dep.name.startswith("ament_"):
+                return 2
+    if package.build_type in ("ament_cmake", "ament_python"):
+        return 2
+    names = {dep.name for dep in package.dependencies}
+    if names & _ROS2_DEPENDENCIES:
+        return 2
+    if names & _ROS1_DEPENDENCIES or package.format == 1:  # rosbuild ones read as format 1
+        return 1
+    return None
+
+
 def _plugins(root: etree._Element, rel_folder: str) -> list[Plugin]:
     """``<export><host plugin="${prefix}/plugins.xml"/></export>``, in both manifests."""
     export = root.find("export")

@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import re
 
+from ..manifest import ros_version as manifest_ros_version
 from ..model.source import Package
 from ..workspace import Workspace
 
@@ -37,21 +38,8 @@ HEAD = 256 * 1024
 
 
 def package_ros_version(package: Package | None) -> int | None:
-    """1 for a catkin or format 1 package (rosbuild ones are read as format 1), 2 for
-    an ament one, else None."""
-    if package is None:
-        return None
-    for dep in package.dependencies:
-        if dep.kind in ("buildtool_depend", "buildtool_export_depend"):
-            if dep.name == "catkin":
-                return 1
-            if dep.name.startswith("ament_"):
-                return 2
-    if package.build_type in ("ament_cmake", "ament_python"):
-        return 2
-    if package.format == 1:
-        return 1
-    return None
+    """1 or 2 as the package's manifest says (``manifest.ros_version``), else None."""
+    return None if package is None else manifest_ros_version(package)
 
 
 def ros_version(path: str, workspace: Workspace | None = None,

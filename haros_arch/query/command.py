@@ -14,11 +14,12 @@ from typing import Any
 from rich.console import Console
 from rich.markup import escape
 
+from ..autoproject import open_project
 from ..model.diagnostic import SEVERITY_RANK, Diagnostic
 from ..model.finding import Finding
 from ..model.model import Model
 from ..model.serialise import model_to_data, to_data
-from ..project import Project, ProjectError, load
+from ..project import Project, ProjectError
 from . import CONFIG_NAMES, QueryError, compile, config_scope, model_scope
 from .catalogue import absorbed, load_catalogue, project_rules, run_catalogue
 from .results import entities, label, location_of, plain
@@ -46,14 +47,15 @@ def document(model: Model, project: Project | None) -> dict[str, Any]:
 def check(args: Any, out: Console, err: Console, analyse: Analyse) -> int:
     """Diagnostics and catalogue findings, in text, JSON, SARIF or JUnit."""
     try:
-        project = load(args.project)
+        project = open_project(args.project)
     except ProjectError as error:
         err.print(f"haros-arch: {error}", highlight=False)
         return EXIT_USAGE
     model = analyse(args.project, err)
     if model is None:
         return EXIT_USAGE
-    findings = run_catalogue(model, project)
+    seconds: dict[str, float] = {}
+    findings = run_catalogue(model, project, seconds=seconds)
     said = absorbed(model)  # what catalogue rules report as findings
     diagnostics = [d for d in model.all_diagnostics if d not in said]
     fmt = getattr(args, "format", "text")
@@ -80,6 +82,8 @@ def check(args: Any, out: Console, err: Console, analyse: Analyse) -> int:
             console = Console(file=handle, soft_wrap=True, no_color=True)
         try:
             _print_text(findings, diagnostics, console, getattr(args, 'verbose', True))
+            if getattr(args, "verbose", False):
+                _print_seconds(seconds, console)
         finally:
             if handle:
                 handle.close()
@@ -96,13 +100,20 @@ def _print_text(findings: list[Finding], diagnostics: list[Diagnostic],
                       highlight=False)
         print_diagnostics(diagnostics, console, verbose)
         console.print()
-    print_findings(findings, console)
+    print_findings(findings, console, verbose)
     counts = count(findings)
     diag_counts = count_by_severity(diagnostics)
     console.print(", ".join(f"{n} {k}(s)" for k, n in counts.items())
                   + f" from {len(load_catalogue())} shipped queries; "
                   + ", ".join(f"{n} {k}(s)" for k, n in diag_counts.items())
                   + " in diagnostics", highlight=False)
+
+
+def _print_seconds(seconds: dict[str, float], console: Console) -> None:
+    """Each rule's time, slowest first (``check -v``)."""
+    console.print(f"queries: {sum(seconds.values()):.2f} s; "
+                  + ", ".join(f"{rule} {spent:.3f} s" for rule, spent in sorted(
+                      seconds.items(), key=lambda kv: -kv[1])), highlight=False)
 
 
 def _exit_code(findings: list[Finding], diagnostics: list[Diagnostic], fail_on: str) -> int:
@@ -126,7 +137,7 @@ def query(args: Any, out: Console, err: Console, analyse: Analyse) -> int:
         try:
             with open(args.model, encoding="utf-8") as handle:
                 model = from_data(json.load(handle))
-        except (OSError, ValueError, ModelDataError) as error:
+        except (OSError, ValueError, RecursionError, ModelDataError) as error:
             err.print(f"haros-arch: cannot read model {args.model}: {error}", highlight=False)
             return EXIT_USAGE
     elif args.project:
@@ -178,13 +189,13 @@ def query(args: Any, out: Console, err: Console, analyse: Analyse) -> int:
 
 
 def project_file_of(path: str) -> Project | None:
-    return load(path) if os.path.isfile(path) else None
+    return open_project(path) if os.path.exists(path) else None
 
 
 def extract_document(model: Model, project_path: str) -> str:
     """``extract``'s JSON: the model plus the catalogue's findings under ``findings``."""
     try:
-        project: Project | None = load(project_path)
+        project: Project | None = open_project(project_path)
     except ProjectError:
         project = None
     return json.dumps(document(model, project), indent=2, ensure_ascii=False) + "\n"

@@ -17,7 +17,8 @@ def to_junit(findings: Iterable[Finding], diagnostics: Iterable[Diagnostic] = ()
              checked: Iterable[str] = ()) -> str:
     cases: dict[str, list[tuple[str, str, str, str]]] = {rule: [] for rule in checked}
     for f in findings:
-        name = f"{f.configuration}: {f.location}" if f.configuration else str(f.location)
+        configs = ", ".join(f.configurations)
+        name = f"{configs}: {f.location}" if configs else str(f.location)
         cases.setdefault(f.rule, []).append((name, f.severity, f.title, f.message + (
             f"\ninvolves: {', '.join(f.entities)}" if f.entities else "")))
     for d in diagnostics:

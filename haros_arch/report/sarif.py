@@ -45,7 +45,8 @@ def to_sarif(findings: Iterable[Finding], diagnostics: Iterable[Diagnostic] = ()
             "ruleId": finding.rule, "level": LEVELS[finding.severity],
             "message": {"text": f"{finding.title}: {finding.message}"},
             "properties": {"entities": list(finding.entities),
-                           "configuration": finding.configuration},
+                           "configuration": finding.configuration,
+                           "configurations": list(finding.configurations)},
         }
         if finding.location.file:
             result["locations"] = [_location(finding.location)]
