@@ -90,6 +90,26 @@ def _parser() -> argparse.ArgumentParser:
     launch.add_argument("--workspace", default=".", help="workspace folder (default: .)")
     launch.add_argument("--format", choices=("text", "json"), default="text")
 
+    models = sub.add_parser("models", help="interface models of packages without source")
+    models_sub = models.add_subparsers(dest="models_command", required=True)
+    build = models_sub.add_parser("build", help="run the extractor on the pinned sources "
+                                  "of a list of packages and write their model files")
+    build.add_argument("list", help="the list (YAML: repository, commit, distro, packages)")
+    build.add_argument("-o", "--output", default="models",
+                       help="write OUTPUT/<distro>/<package>.json (default: ./models)")
+    build.add_argument("--sources", default="sources",
+                       help="folder holding each entry's tree as <owner>+<name>@<commit12> "
+                            "(scripts/models-fetch fills it; default: ./sources)")
+    build.add_argument("--overrides", help="folder of <distro>/<package>.yaml override "
+                                           "files (default: the shipped ones)")
+    build.add_argument("--only", action="append", default=[], metavar="PACKAGE",
+                       help="model only this package (repeatable)")
+    build.add_argument("--jobs", type=int, metavar="N",
+                       help="local worker processes (default: one per core)")
+    build.add_argument("--scheduler", metavar="ADDRESS",
+                       help="run on this Dask distributed scheduler (needs the 'dask' extra)")
+    build.add_argument("--no-cache", action="store_true", help="parse every source again")
+
     init = sub.add_parser("init", help="write a project file for a workspace or launch "
                           "file: the configurations check would choose, to edit")
     init.add_argument("path", help="workspace or package folder, or a launch file")
@@ -341,6 +361,30 @@ def cmd_launch(args: argparse.Namespace, out: Console, err: Console) -> int:
     return EXIT_OK
 
 
+def cmd_models(args: argparse.Namespace, out: Console, err: Console) -> int:
+    from .models import generate
+
+    try:
+        entries = generate.read_list(args.list)
+    except generate.ListError as error:
+        err.print(f"haros-arch: {escape(str(error))}", highlight=False)
+        return EXIT_USAGE
+    if args.scheduler:
+        try:
+            import distributed  # noqa: F401
+        except ImportError:
+            err.print("haros-arch: --scheduler needs dask.distributed "
+                      "(pip install 'haros-arch[dask]')", highlight=False)
+            return EXIT_USAGE
+    work = generate.tasks(entries, args.sources, args.overrides or generate.OVERRIDES,
+                          args.only, None if args.no_cache else generate.AUTO_CACHE)
+    outcomes = generate.run(work, jobs=args.jobs, scheduler=args.scheduler)
+    generate.report(outcomes, lambda line: out.print(escape(line), highlight=False))
+    written = generate.write(outcomes, args.output)
+    out.print(f"wrote {len(written)} model files under {escape(args.output)}", highlight=False)
+    return EXIT_OK if all(o.text is not None for o in outcomes) else EXIT_FINDINGS
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     args = _parser().parse_args(argv)
     if any(":=" not in a for a in getattr(args, "arg", [])) and args.command != "launch":
@@ -353,7 +397,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     err = Console(stderr=True, soft_wrap=True)
     handlers = {"extract": cmd_extract, "check": cmd_check, "explain": cmd_explain,
                 "capture": cmd_capture, "compare": cmd_compare, "report": cmd_report,
-                "launch": cmd_launch, "query": cmd_query, "init": cmd_init}
+                "launch": cmd_launch, "query": cmd_query, "init": cmd_init,
+                "models": cmd_models}
     try:
         return handlers[args.command](args, out, err)
     except KeyboardInterrupt:

@@ -136,11 +136,13 @@ def test_ros_version_comes_from_the_package() -> None:
     assert rows(result) == [("publish", "/tf", "tf2_msgs/msg/TFMessage", 14)]
 
 
-@pytest.mark.parametrize(("build_type", "depends", "version"), [
-    ("ament_cmake", [], 2), ("ament_python", [], 2), ("cmake", ["rclcpp"], 2),
-    ("catkin", ["roscpp"], 1), ("cmake", ["catkin"], 1), ("cmake", ["eigen"], None),
+@pytest.mark.parametrize(("build_type", "depends", "version", "fmt"), [
+    ("ament_cmake", [], 2, 2), ("ament_python", [], 2, 2), ("cmake", ["rclcpp"], 2, 2),
+    ("catkin", ["roscpp"], 1, 2), ("cmake", ["catkin"], 1, 2), ("cmake", ["eigen"], None, 2),
+    ("cmake", ["eigen"], 1, 1),  # package.xml format 1 is ROS 1 only (ROS 2 needs 2 or 3)
 ])
-def test_package_ros_version(build_type: str, depends: list[str], version: int | None) -> None:
+def test_package_ros_version(build_type: str, depends: list[str], version: int | None,
+                             fmt: int) -> None:
     package = Package("p", "p", build_type=build_type,  # type: ignore[arg-type]
-                      dependencies=[Dependency(d, "depend") for d in depends])
+                      format=fmt, dependencies=[Dependency(d, "depend") for d in depends])
     assert ros_version(package) == version

@@ -5,6 +5,7 @@ from __future__ import annotations
 import os
 import shlex
 from collections.abc import Mapping
+from dataclasses import replace
 from typing import Any
 
 from .. import diagnostics as diag
@@ -23,9 +24,10 @@ from ..model.runtime import (
 )
 from ..model.source import Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK
+from ..models.commands import command_node
 from ..workspace import Workspace, installed_roots
 from .actions import action_links
-from .processes import process_nodes, process_params
+from .processes import guessed_names, process_nodes, process_params
 
 RESOURCE_OF_KIND: dict[str, type[Resource]] = {
     "publish": Topic, "subscribe": Topic, "server": Service, "client": Service,
@@ -90,6 +92,7 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
     """Fill ``config`` with node instances, resources and links; ``nodes`` by pkg/exec."""
     resources = Resources(config)
     config.diagnostics.extend(launch.diagnostics)
+    config.diagnostics.extend(guessed_names(launch, nodes))
     for param in process_params(launch, nodes):
         parameter = resources.get(Parameter, param.name)
         assert isinstance(parameter, Parameter)
@@ -112,7 +115,8 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
             continue
         remaps = resolve_remaps(instance.remaps, instance.namespace, instance.name)
         for call in instance.node.calls_of(own):
-            link(instance, call, remaps, resources, config)
+            for each in element_calls(call, instance, resources):  # list parameters
+                link(instance, each, remaps, resources, config)
     for action, call, name in action_links(config):
         link(action.node, call, {}, resources, config, name)
     _namespace_values(config)
@@ -165,7 +169,7 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
     plugin = nodelet_plugin(decl)
     if plugin is not None:
         key = f"{plugin.partition('/')[0]}/{plugin}"
-    node = nodes.get(key)
+    node = nodes.get(key) or command_node(decl)  # rostopic pub: its arguments say
     if node is None and plugin is None and is_container(decl):
         pass  # a nodelet manager or component container: its interface is its plugins'
     elif node is None and workspace.find(key.partition("/")[0]) is None:
@@ -177,7 +181,7 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
     remaps = list(decl.remaps) + remaps_in_args(decl.args)
     return NodeInstance(decl.name, node, namespace=decl.namespace, remaps=remaps,
                         args=decl.args, conditions=decl.conditions, location=decl.location,
-                        ros_version=decl.ros_version)
+                        ros_version=decl.ros_version, test=decl.is_test)
 
 
 def is_container(decl: NodeDecl) -> bool:
@@ -259,6 +263,36 @@ def _given_name(call: PrimitiveCall, instance: NodeInstance, resources: Resource
     if isinstance(param, Parameter) and param.set_by_launch and isinstance(param.value, str):
         value = param.value
     return call.name if value is None else call.name.replace(UNKNOWN_MARK, value, 1)
+
+
+def element_calls(call: PrimitiveCall, instance: NodeInstance, resources: Resources
+                  ) -> list[PrimitiveCall]:
+    """A call named by each element of a list parameter (``name_each``): one call per
+    element of the value the launch file gives the parameter, named by the element's
+    field (``.``: the element itself); without such a value, the call as it is (its
+    name keeps its ``?``)."""
+    if call.name_each is None or call.name_param is None:
+        return [call]
+    source = _node_scoped(call.name_param) if instance.ros_version == 2 else call.name_param
+    param = resources.by_name.get(
+        (Parameter, RosName.make(source, instance.namespace, instance.name).full))
+    value = param.value if isinstance(param, Parameter) and param.set_by_launch else None
+    elements = list(value.values()) if isinstance(value, dict) else value
+    if not isinstance(elements, list):
+        return [call]
+    names = [name for name in (_element_name(item, call.name_each) for item in elements)
+             if name is not None]
+    if not names:
+        return [call]
+    return [replace(call, name=name, name_param=None, name_default=None, name_each=None)
+            for name in names]
+
+
+def _element_name(item: Any, field: str) -> str | None:
+    if field == ".":
+        return item if isinstance(item, str) else None
+    value = item.get(field) if isinstance(item, dict) else None
+    return value if isinstance(value, str) else None
 
 
 def _search(name: RosName, instance: NodeInstance, resources: Resources) -> RosName:

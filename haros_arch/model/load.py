@@ -63,7 +63,8 @@ def _diagnostic(data: dict[str, Any]) -> Diagnostic:
                       str(data.get("message", "")), location(data.get("location")))
 
 
-def _node(data: dict[str, Any], package: str) -> Node:
+def node_from_data(data: dict[str, Any], package: str) -> Node:
+    """A node model (a package's node entry) from its data; also reads interface models."""
     name = str(data.get("name", ""))
     executable = data.get("executable") or name.partition("/")[2] or name
     calls = [PrimitiveCall(c.get("kind", "publish"), str(c.get("name", "")), c.get("type"),
@@ -76,7 +77,7 @@ def _node(data: dict[str, Any], package: str) -> Node:
                            default=c.get("default"), searched=bool(c.get("searched", False)),
                            handle_namespace=c.get("handle_namespace"),
                            deletes=bool(c.get("deletes", False)),
-                           node_name=c.get("node_name"))
+                           node_name=c.get("node_name"), name_each=c.get("name_each"))
              for c in data.get("calls", ())]
     return Node(data.get("package", package), executable, data.get("kind", "executable"),
                 data.get("language", "cpp"), list(data.get("sources", ())), calls,
@@ -84,7 +85,8 @@ def _node(data: dict[str, Any], package: str) -> Node:
                 location(data.get("location")),
                 [str(n) for n in data.get("rosnames", ()) if isinstance(n, str)],
                 _completeness(data.get("completeness")),
-                [str(r) for r in data.get("completeness_reasons", ()) if isinstance(r, str)])
+                [str(r) for r in data.get("completeness_reasons", ()) if isinstance(r, str)],
+                data.get("model") if isinstance(data.get("model"), str) else None)
 
 
 def _completeness(value: Any) -> Completeness:
@@ -100,7 +102,7 @@ def _package(data: dict[str, Any]) -> Package:
             for d in data.get("dependencies", ()) if isinstance(d, dict)]
     return Package(name, data.get("path", name), data.get("build_type", "unknown"),
                    data.get("version", ""), int(data.get("format", 1)), deps, [],
-                   [_node(n, name) for n in data.get("nodes", ())],
+                   [node_from_data(n, name) for n in data.get("nodes", ())],
                    location(data.get("location")))
 
 
@@ -157,7 +159,8 @@ def _configuration(data: dict[str, Any], nodes: dict[str, Node],
             [tuple(pair) for pair in item.get("remaps", ())], item.get("args", ""),
             conditions(item.get("conditions")), location(item.get("location")),
             origin=str(item.get("origin", "launch")),
-            ros_version=int(item.get("ros_version", 1) or 1))
+            ros_version=int(item.get("ros_version", 1) or 1),
+            test=bool(item.get("test", False)))
         config.nodes.append(instance)
         by_name.setdefault(name, instance)
         by_id.setdefault(instance.id, instance)

@@ -90,6 +90,11 @@ def path_join(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     return e.PathJoin(tuple(to_text(p) for p in parts))
 
 
+def path_substitution(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``PathSubstitution(path)``: a path join of one part, grown by ``/ part``."""
+    return e.PathJoin((to_text(arg(a, k, 0, "path")),))
+
+
 def os_path_join(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     if all(isinstance(p, str) for p in a):
         return os.path.join(*a) if a else Unk("os.path.join()")
@@ -438,7 +443,8 @@ API: dict[str, Builder] = {
     "join": os_path_join, "dirname": os_path(os.path.dirname),
     "basename": os_path(os.path.basename), "abspath": os_path(os.path.normpath),
     "realpath": os_path(os.path.normpath), "getenv": getenv,
-    "PathJoinSubstitution": path_join, "TextSubstitution": text_substitution,
+    "PathJoinSubstitution": path_join, "PathSubstitution": path_substitution,
+    "TextSubstitution": text_substitution,
     "PythonExpression": python_expression,
     "ThisLaunchFileDir": lambda i, a, k, n: e.ThisFile(True),
     "ThisLaunchFile": lambda i, a, k, n: e.ThisFile(False),

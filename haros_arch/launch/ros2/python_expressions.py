@@ -30,6 +30,7 @@ from .python_values import (
     concat,
     is_lazy,
     is_stringy,
+    to_text,
 )
 
 if TYPE_CHECKING:
@@ -134,6 +135,11 @@ class Expressions:
         return self.binop(node.op, self.eval(node.left, env), self.eval(node.right, env), node)
 
     def binop(self, op: ast.operator, left: Any, right: Any, node: ast.AST) -> Any:
+        if isinstance(op, ast.Div) and isinstance(left, e.PathJoin):
+            # PathJoinSubstitution / part, as pathlib.Path does (launch >= 3.7)
+            if isinstance(right, Unk):
+                return Unk("a path part not known statically")
+            return e.PathJoin((*left.parts, to_text(right)))
         if isinstance(op, ast.Add) and (is_stringy(left) or is_stringy(right)) and not (
                 isinstance(left, list) or isinstance(right, list)):
             return concat([left, right])
