@@ -33,12 +33,14 @@ def configuration(doc: dict) -> object:
     node type of its own); a fixture lists a node with ``node: null`` to say its
     interface is unknown."""
     doc = dict(doc or {})
+    packages = doc.pop("packages", [])
     listed = {n["name"] for n in doc.get("nodes", ())}
     implied = dict.fromkeys(link["node"] for link in doc.get("links", ())
                             if link["node"] not in listed)
     doc["nodes"] = [*doc.get("nodes", ()),
                     *({"name": n, "node": f"known{n.replace('/', '_')}/node"} for n in implied)]
-    return from_data({"project": "p", "configurations": [{"name": "c", **doc}]})
+    return from_data({"project": "p", "packages": packages,
+                      "configurations": [{"name": "c", **doc}]})
 
 
 def test_every_rule_has_a_fixture_and_the_required_fields():
