@@ -156,6 +156,8 @@ function findingPanel(finding, app) {
     el('h4', {}, `Involves (${involved.length})`),
     el('div', {}, involved.map(e => el('div', {}, e.kind === 'missing' ? el('code', {}, e.id) : entityLink(e, app)))),
     codeBlock(finding.location, app.sources),
+    ...((finding.also || []).length ? [el('h4', {}, `The same problem at (${finding.also.length})`),
+      ...finding.also.map(loc => codeBlock(loc, app.sources, 1))] : []),
   ];
 }
 
