@@ -412,10 +412,9 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
                             [*unsaved, (header, names.header())], workspace, result)
         if again is None:
             break
-        tu = again
-        if len(_errors(tu)) >= len(errors):
-            break  # declaring more made it no better
-        best, errors = tu, _errors(tu)
+        tu = again  # errors come in waves: a class made valid shows its other members
+        if len(_errors(tu)) < len(errors):
+            best, errors = tu, _errors(tu)
     if best is not original:
         result.diagnostics.append(diag.make(
             "CPP_NAMES_DECLARED", workspace.location(path), count=names.count,

@@ -135,6 +135,11 @@ class Names:
             return
         rest = text[found.end():found.end() + 2]
         last = self._last_use(use, rest)
+        if use == "any" and not scope and len(written) == 1 and (
+            last == "value" or rest.lstrip()[:1] == b"("
+        ):
+            return  # an unqualified function or variable: in a class, often a member
+            # clang could not find (an invalid base); declaring it would shadow it
         node = self.root
         for part in scope:
             node = node.children.setdefault(part, _Name(known=True))
