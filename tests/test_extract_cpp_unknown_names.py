@@ -144,3 +144,22 @@ def test_package_ros_version(build_type: str, depends: list[str], version: int |
     package = Package("p", "p", build_type=build_type,  # type: ignore[arg-type]
                       dependencies=[Dependency(d, "depend") for d in depends])
     assert ros_version(package) == version
+
+
+def test_ros1_forms_of_real_nodes() -> None:
+    result = extract_cpp([os.path.join(ROOT, "src", "legacy_node", "src", "forms.cpp")],
+                         scan([ROOT]), cache_dir=None, jobs=1)
+    assert [(c.kind, c.name, c.queue_size, c.callback,
+             tuple((k.statement, k.text) for k in c.conditions)) for c in result.calls] == [
+        ("publish", "planner/plan", 7, None, ()),
+        ("subscribe", "planner/goal", 1, "Planner::onGoal", (("switch", "mode == 1"),)),
+        ("subscribe", "planner/goal_alt", 1, "Planner::onGoal", (("switch", "mode == 2"),)),
+        ("subscribe", "planner/goal_any", 1, None,
+         (("switch", "mode != 1 && mode != 2"),)),
+    ]
+
+
+def test_lowercase_message_of_a_missing_package() -> None:
+    result = extract_cpp([os.path.join(ROOT, "src", "legacy_node", "src", "lowercase.cpp")],
+                         scan([ROOT]), cache_dir=None, jobs=1)
+    assert rows(result) == [("publish", "final_waypoints", "waypoint_follower/lane", 10)]

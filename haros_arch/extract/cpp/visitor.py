@@ -233,7 +233,7 @@ class CallFinder:
                 made.type == "?"
             ):
                 self.calls[index] = dataclasses.replace(
-                    made, type=msg_types.written_type(written, self.ros2) or "?")
+                    made, type=msg_types.written_type(written, self.ros2, True) or "?")
         self.diagnostics.append(diag.make(
             "CPP_CALL_UNRESOLVED", self.calls[before].location, function=function,
             type=self.calls[before].type or "?"))
