@@ -79,8 +79,9 @@ def test_unresolved_calls_are_kept_by_name() -> None:
         ("declare", "rate", "double", 11),
         ("publish", "status", "vendor_msgs/msg/Status", 12),
         ("publish", "frames", "?", 13),
+        ("publish", "echo", "std_msgs/msg/String", 14),
     ]
-    assert codes(result).count("CPP_CALL_UNRESOLVED") == 3
+    assert codes(result).count("CPP_CALL_UNRESOLVED") == 4
 
 
 def test_completeness_of_nodes() -> None:

@@ -534,7 +534,9 @@ def _recovered_name(expr: Cursor) -> str:
         name = ""
         tokens = [t.spelling for t in itertools.islice(head.get_tokens(), 40)]
         for before, token in itertools.pairwise(tokens):
-            if before in ("->", ".") and token.isidentifier():
+            if before in ("->", ".", "template") and token.isidentifier() and (
+                token != "template"  # node->template create_service<T>(...)
+            ):
                 name = token
         return name
     return ""
