@@ -164,3 +164,11 @@ def test_lowercase_message_of_a_missing_package() -> None:
     result = extract_cpp([os.path.join(ROOT, "src", "legacy_node", "src", "lowercase.cpp")],
                          scan([ROOT]), cache_dir=None, jobs=1)
     assert rows(result) == [("publish", "final_waypoints", "waypoint_follower/lane", 10)]
+
+
+def test_declared_names_are_cached_with_the_unit(tmp_path) -> None:
+    source = [os.path.join(SOURCES, "vendor_member.cpp")]
+    first = extract_cpp(source, scan([ROOT]), cache_dir=str(tmp_path), jobs=1)
+    again = extract_cpp(source, scan([ROOT]), cache_dir=str(tmp_path), jobs=1)
+    assert rows(again) == rows(first) and len(rows(first)) == 3
+    assert "CPP_NAMES_DECLARED" in codes(again)
