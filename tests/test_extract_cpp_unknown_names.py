@@ -172,3 +172,21 @@ def test_declared_names_are_cached_with_the_unit(tmp_path) -> None:
     again = extract_cpp(source, scan([ROOT]), cache_dir=str(tmp_path), jobs=1)
     assert rows(again) == rows(first) and len(rows(first)) == 3
     assert "CPP_NAMES_DECLARED" in codes(again)
+
+
+def test_parameters_through_the_parameters_interface() -> None:
+    result = extract("params_interface.cpp")
+    assert [(c.kind, c.name, c.location.line) for c in result.calls] == [
+        ("read", "max_range", 10), ("declare", "max_range", 11), ("read", "max_range", 13),
+        ("write", "interactive", 14)]
+    assert "CPP_PARSE_ERROR" not in codes(result)
+    assert "CPP_CALL_UNRESOLVED" not in codes(result)
+
+
+def test_rclcpp_free_factories() -> None:
+    result = extract("free_factories.cpp")
+    assert [(c.kind, c.name, c.type, c.queue_size) for c in result.calls] == [
+        ("publish", "out", "std_msgs/msg/String", 3),
+        ("subscribe", "in", "std_msgs/msg/String", 4),
+        ("subscribe", "in_too", "std_msgs/msg/String", None)]
+    assert "CPP_PARSE_ERROR" not in codes(result)
