@@ -84,7 +84,9 @@ def _node(data: dict[str, Any], package: str) -> Node:
                 location(data.get("location")),
                 [str(n) for n in data.get("rosnames", ()) if isinstance(n, str)],
                 _completeness(data.get("completeness")),
-                [str(r) for r in data.get("completeness_reasons", ()) if isinstance(r, str)])
+                [str(r) for r in data.get("completeness_reasons", ()) if isinstance(r, str)],
+                plugin_class=data.get("plugin_class") if isinstance(
+                    data.get("plugin_class"), str) else None)
 
 
 def _completeness(value: Any) -> Completeness:

@@ -9,7 +9,7 @@ from .conditions import Condition
 from .location import NOWHERE, Location
 
 BuildType = Literal["catkin", "ament_cmake", "ament_python", "cmake", "unknown"]
-NodeKind = Literal["executable", "nodelet", "component", "script"]
+NodeKind = Literal["executable", "nodelet", "component", "plugin", "script"]
 Language = Literal["cpp", "python"]
 # How much of a node's interface is known (DESIGN.md, "Completeness"): "complete" (its
 # sources read clean), "partial" (calls may be missing: parse errors, plugin names left;
@@ -105,7 +105,7 @@ class SourceFile:
 
 @dataclass(eq=False)
 class Node:
-    """A build target that can run: executable, nodelet/component library or script."""
+    """A build target that can run: executable, nodelet/component/plugin class or script."""
 
     package: str
     executable: str
@@ -125,6 +125,9 @@ class Node:
     # why calls may be missing (the first few reasons, each with its file:line)
     completeness_reasons: list[str] = field(default_factory=list,
                                             metadata={"optional": True})
+    # a nodelet or plugin class: its C++ type (``executable`` is its pluginlib lookup
+    # name, ``pkg/Name`` or the type itself)
+    plugin_class: str | None = field(default=None, metadata={"optional": True})
 
     JSON_VIEWS: ClassVar[dict[str, str]] = {}
 
