@@ -44,7 +44,8 @@ def run(project: Project, jobs: int, enabled: bool,
         found = attach(config, *args)
         resolved.setdefault(config.name, []).extend(
             f"{instance.name}: {calls[0].location.file if calls else '(no calls)'} "
-            f"({len(calls)} calls)" for instance, calls in found)
+            f"({len(calls)} calls)" for instance, calls in found
+            if not calls or calls[0].origin != "plugin")  # not the loading reads
         return found
 
     graph_build = importlib.import_module("haros_arch.graph.build")
