@@ -17,11 +17,12 @@ from rich.console import Console
 from rich.markup import escape
 
 from . import __version__
+from .autoproject import is_project_file, open_choice, open_project, select
 from .diagnostics import CATALOGUE
 from .model.diagnostic import SEVERITY_RANK
 from .model.model import Model
 from .pipeline import Options, analyse
-from .project import ProjectError, load
+from .project import ProjectError
 from .report.text import print_diagnostics, print_summary
 
 EXIT_OK, EXIT_FINDINGS, EXIT_USAGE, EXIT_INTERNAL = 0, 1, 2, 3
@@ -35,7 +36,7 @@ def _parser() -> argparse.ArgumentParser:
     sub = parser.add_subparsers(dest="command", required=True)
 
     extract = sub.add_parser("extract", help="write the JSON model of a project")
-    extract.add_argument("project", help="project file (YAML)")
+    extract.add_argument("project", help=PROJECT_HELP)
     extract.add_argument("-o", "--output", help="write the JSON here (default: stdout)")
     extract.add_argument("-q", "--quiet", action="store_true", help="no summary")
     extract.add_argument("-v", "--verbose", action="store_true",
@@ -44,7 +45,7 @@ def _parser() -> argparse.ArgumentParser:
 
     check = sub.add_parser("check", help="run the query catalogue and report findings and "
                            "diagnostics; exit 1 at --fail-on or above")
-    check.add_argument("project", help="project file (YAML)")
+    check.add_argument("project", help=PROJECT_HELP)
     check.add_argument("--format", choices=("text", "json", "sarif", "junit"), default="text")
     check.add_argument("--fail-on", choices=(*SEVERITY_RANK, "never"), default="error")
     check.add_argument("-o", "--output", help="write the report here (default: stdout)")
@@ -53,11 +54,12 @@ def _parser() -> argparse.ArgumentParser:
     _run_options(check)
 
     query = sub.add_parser("query", help="evaluate a query and print its matches")
-    query.add_argument("project", nargs="?", help="project file (YAML)")
+    query.add_argument("project", nargs="?", help=PROJECT_HELP)
     query.add_argument("expression", help="the query (pyflwor path or FLWR syntax)")
     query.add_argument("--model", help="query this saved JSON model instead of extracting")
     query.add_argument("--config", help="run in this configuration's scope")
     query.add_argument("--format", choices=("text", "json"), default="text")
+    _choice_options(query)
 
     capture = sub.add_parser("capture", help="read a running ROS 1 master's graph (XML-RPC)")
     capture.add_argument("--master", default=os.environ.get("ROS_MASTER_URI",
@@ -72,7 +74,7 @@ def _parser() -> argparse.ArgumentParser:
     compare.add_argument("--format", choices=("text", "json"), default="text")
 
     report = sub.add_parser("report", help="write the interactive HTML report (one file)")
-    report.add_argument("project", nargs="?", help="project file (YAML)")
+    report.add_argument("project", nargs="?", help=PROJECT_HELP)
     report.add_argument("--model", help="render this saved JSON model instead of extracting")
     report.add_argument("--workspace", help="folder the model's file paths are relative to")
     report.add_argument("-o", "--output", required=True, help="the HTML file to write")
@@ -85,12 +87,32 @@ def _parser() -> argparse.ArgumentParser:
     launch.add_argument("--workspace", default=".", help="workspace folder (default: .)")
     launch.add_argument("--format", choices=("text", "json"), default="text")
 
-    explain = sub.add_parser("explain", help="explain a diagnostic code (or list them all)")
+    init = sub.add_parser("init", help="write a project file for a workspace or launch "
+                          "file: the configurations check would choose, to edit")
+    init.add_argument("path", help="workspace or package folder, or a launch file")
+    init.add_argument("-o", "--output", help="write it here (default: stdout)")
+    _choice_options(init)
+
+    explain = sub.add_parser("explain", help="explain a diagnostic code or a rule id (or "
+                             "list them all)")
     explain.add_argument("code", nargs="?")
     return parser
 
 
+PROJECT_HELP = ("project file (YAML), or a workspace / package folder or a launch file "
+                "(configurations chosen as 'init' would)")
+
+
+def _choice_options(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--launch", action="append", default=[], metavar="FILE",
+                        help="without a project file: analyse this launch file as a "
+                             "configuration (repeatable) instead of choosing")
+    parser.add_argument("--arg", action="append", default=[], metavar="NAME:=VALUE",
+                        help="a launch argument for every configuration (repeatable)")
+
+
 def _run_options(parser: argparse.ArgumentParser) -> None:
+    _choice_options(parser)
     parser.add_argument("--no-cache", action="store_true",
                         help="parse every source again (a cold run); the cache is not read "
                              "or written")
@@ -106,10 +128,16 @@ def _options(args: argparse.Namespace) -> Options:
 
 def _analyse(path: str, console: Console, options: Options | None = None) -> Model | None:
     try:
-        project = load(path)
+        choice = open_choice(path)
     except ProjectError as err:
         console.print(f"haros-arch: {escape(str(err))}", highlight=False)
         return None
+    project = choice.project
+    for note in choice.notes:
+        console.print(f"haros-arch: {escape(note)}", highlight=False)
+    for spec in choice.project.configurations if choice.notes else ():
+        console.print(f"  configuration {escape(spec.name)}: {escape(', '.join(spec.launch))}",
+                      highlight=False)
     missing = [w for w in project.workspace if not os.path.isdir(w)]
     if missing:
         console.print(f"haros-arch: {escape(path)}: workspace folder {escape(missing[0])} "
@@ -156,14 +184,51 @@ def cmd_query(args: argparse.Namespace, out: Console, err: Console) -> int:
 
 
 def cmd_explain(args: argparse.Namespace, out: Console, err: Console) -> int:
-    codes = [args.code] if args.code else sorted(CATALOGUE)
-    for code in codes:
-        entry = CATALOGUE.get(code)
-        if entry is None:
-            err.print(f"haros-arch: unknown diagnostic code {code}", highlight=False)
-            return EXIT_USAGE
-        out.print(f"[bold]{code}[/bold] ({entry.severity})\n  {entry.explanation}",
+    from .query.catalogue import load_catalogue
+
+    rules = {rule.id: rule for rule in load_catalogue()}
+    if args.code and args.code not in CATALOGUE and args.code not in rules:
+        err.print(f"haros-arch: {escape(args.code)} is neither a diagnostic code nor a "
+                  "rule id ('haros-arch explain' lists them)", highlight=False)
+        return EXIT_USAGE
+    codes = [args.code] if args.code in CATALOGUE else [] if args.code else sorted(CATALOGUE)
+    ids = [args.code] if args.code in rules else [] if args.code else sorted(rules)
+    if not args.code:
+        out.print("[bold]Diagnostic codes[/bold] (problems reading the workspace)",
                   highlight=False)
+    for code in codes:
+        entry = CATALOGUE[code]
+        out.print(f"[bold]{code}[/bold] ({entry.severity})\n  {escape(entry.explanation)}",
+                  highlight=False)
+    if not args.code:
+        out.print("\n[bold]Rules[/bold] (the query catalogue's findings)", highlight=False)
+    for rule_id in ids:
+        rule = rules[rule_id]
+        out.print(f"[bold]{rule_id}[/bold] ({rule.severity}): {escape(rule.title)}\n  "
+                  f"{escape(' '.join(rule.description.split()))}", highlight=False)
+    return EXIT_OK
+
+
+def cmd_init(args: argparse.Namespace, out: Console, err: Console) -> int:
+    from .autoproject import project_text
+
+    try:
+        choice = open_choice(args.path)
+    except ProjectError as error:
+        err.print(f"haros-arch: {escape(str(error))}", highlight=False)
+        return EXIT_USAGE
+    if is_project_file(args.path):
+        err.print(f"haros-arch: {escape(args.path)} is already a project file",
+                  highlight=False)
+        return EXIT_USAGE
+    for note in choice.notes:
+        err.print(f"haros-arch: {escape(note)}", highlight=False)
+    # the workspace is written relative to the file's folder (stdout: the current one)
+    target = os.path.abspath(args.output or "haros-arch.yaml")
+    choice.project.path = target
+    _write(project_text(choice), args.output)
+    if args.output:
+        err.print(f"wrote {escape(args.output)}", highlight=False)
     return EXIT_OK
 
 
@@ -189,7 +254,7 @@ def cmd_compare(args: argparse.Namespace, out: Console, err: Console) -> int:
         with open(args.live, encoding="utf-8") as handle:
             live = json.load(handle)
         result = compare(model, live, args.config)
-    except (OSError, ValueError, KeyError, CompareError) as error:
+    except (OSError, ValueError, KeyError, RecursionError, CompareError) as error:
         err.print(f"haros-arch: cannot compare: {escape(str(error))}", highlight=False)
         return EXIT_USAGE
     if args.format == "json":
@@ -215,7 +280,7 @@ def cmd_report(args: argparse.Namespace, out: Console, err: Console) -> int:
         err.print("haros-arch: report needs a PROJECT file or --model FILE", highlight=False)
         return EXIT_USAGE
     try:
-        project = load(args.project) if args.project else None
+        project = open_project(args.project) if args.project else None
         findings: list = []
         if args.model:
             data = read_model(args.model)
@@ -262,11 +327,17 @@ def cmd_launch(args: argparse.Namespace, out: Console, err: Console) -> int:
 
 def main(argv: Sequence[str] | None = None) -> int:
     args = _parser().parse_args(argv)
+    if any(":=" not in a for a in getattr(args, "arg", [])) and args.command != "launch":
+        print("haros-arch: --arg takes NAME:=VALUE", file=sys.stderr)
+        return EXIT_USAGE
+    if args.command != "launch":
+        select(getattr(args, "launch", []),
+               dict(a.split(":=", 1) for a in getattr(args, "arg", [])))
     out = Console(soft_wrap=True)
     err = Console(stderr=True, soft_wrap=True)
     handlers = {"extract": cmd_extract, "check": cmd_check, "explain": cmd_explain,
                 "capture": cmd_capture, "compare": cmd_compare, "report": cmd_report,
-                "launch": cmd_launch, "query": cmd_query}
+                "launch": cmd_launch, "query": cmd_query, "init": cmd_init}
     try:
         return handlers[args.command](args, out, err)
     except KeyboardInterrupt:

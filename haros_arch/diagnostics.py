@@ -197,6 +197,34 @@ CATALOGUE: dict[str, Entry] = {
     "CPP_PARSE_FAILED": Entry(
         "error", "C++ file could not be parsed: {detail}",
         "libclang could not produce a translation unit; the file gives no calls."),
+    "CPP_NAMES_DECLARED": Entry(
+        "info", "{count} name(s) unknown to the parse declared permissively ({names}); "
+        "clang errors in this unit: {before} before, {after} after",
+        "Names clang did not know (a type, namespace, template or base class of a library "
+        "whose headers are not available) would make the classes that use them invalid "
+        "and hide their calls. The extractor declared them as permissive stand-ins (a "
+        "namespace; a class constructible from and convertible to anything, with any "
+        "member; a template taking any arguments) and parsed the unit again."),
+    "CPP_CALL_UNRESOLVED": Entry(
+        "info", "this {function} call could not be resolved by the parse; it is kept by "
+        "its name, with type {type}",
+        "clang could not tell which function this call is (the object it is made on has a "
+        "type that is unknown or was made invalid by an error). The call is kept as the "
+        "ROS API function of that name, its name and values read as usual, its type as "
+        "written when that names a ROS interface, else '?'."),
+    "CPP_NODE_PARTIAL": Entry(
+        "warning", "node {node}: its calls may be incomplete, {count} error(s) left in "
+        "its C++ sources (first: {first})",
+        "Some of the node's code could not be parsed even after the names clang did not "
+        "know were declared: calls in that code may be missing. The node model is "
+        "'partial' (completeness, with the first reasons); checks that claim something "
+        "is absent do not trust it."),
+    "PY_NODE_PARTIAL": Entry(
+        "warning", "node {node}: its calls may be incomplete, {count} of its Python "
+        "sources could not be read or analysed in full (first: {first})",
+        "A source of the node could not be read or parsed, or was too large to analyse: "
+        "calls in it may be missing. The node model is 'partial' (completeness, with "
+        "the first reasons); checks that claim something is absent do not trust it."),
     "CPP_INCLUDE_MISSING": Entry(
         "info", "header {header} not found; an empty stand-in was used",
         "The header is neither in the workspace nor on the system; declarations from "

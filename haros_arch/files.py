@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import os
+import stat
 
 from . import diagnostics as diag
 from .diagnostics import Diagnostic
@@ -11,11 +12,23 @@ from .model.location import Location
 MAX_FILE_BYTES = 8 * 1024 * 1024
 
 
+def _refuse_special(path: str, location: Location) -> list[Diagnostic]:
+    """A FIFO, socket or device would block or never end: only regular files are read."""
+    mode = os.stat(path).st_mode
+    if stat.S_ISREG(mode):
+        return []
+    return [diag.make("FILE_UNREADABLE", location, path=location.file or path,
+                      detail="not a regular file")]
+
+
 def read_text(
     path: str, location: Location, limit: int = MAX_FILE_BYTES
 ) -> tuple[str | None, list[Diagnostic]]:
     """Read ``path`` as text. Problems become diagnostics at ``location``; never raises."""
     try:
+        special = _refuse_special(path, location)
+        if special:
+            return None, special
         size = os.path.getsize(path)
         if size > limit:
             return None, [diag.make("FILE_TOO_LARGE", location, path=location.file or path,
@@ -39,6 +52,9 @@ def read_bytes(
 ) -> tuple[bytes | None, list[Diagnostic]]:
     """Read ``path`` as bytes (for XML parsers that honour the declared encoding)."""
     try:
+        special = _refuse_special(path, location)
+        if special:
+            return None, special
         size = os.path.getsize(path)
         if size > limit:
             return None, [diag.make("FILE_TOO_LARGE", location, path=location.file or path,

@@ -149,6 +149,26 @@ def parse_manifest(
     return package, found
 
 
+_ROS2_DEPENDENCIES = frozenset({"rclcpp", "rclpy", "ament_cmake", "ament_cmake_auto",
+                                "ament_cmake_python", "ament_python", "rclcpp_lifecycle",
+                                "rclcpp_components", "rosidl_default_generators"})
+_ROS1_DEPENDENCIES = frozenset({"roscpp", "rospy", "catkin", "nodelet", "message_generation"})
+
+
+def ros_version(package: Package) -> int | None:
+    """Whether a package is ROS 1 or ROS 2 code, from its package.xml: the build type
+    (ament_cmake / ament_python), else the ROS client libraries and build tools it
+    depends on; None when nothing says (a plain CMake package)."""
+    if package.build_type in ("ament_cmake", "ament_python"):
+        return 2
+    names = {dep.name for dep in package.dependencies}
+    if names & _ROS2_DEPENDENCIES:
+        return 2
+    if names & _ROS1_DEPENDENCIES:
+        return 1
+    return None
+
+
 def _line(element: etree._Element) -> int:
     line = element.sourceline
     return line if isinstance(line, int) else 0

@@ -76,6 +76,8 @@ class _Reader:
         loader = yaml.SafeLoader("")
         try:
             return loader.construct_object(node, deep=True)
+        except RecursionError:
+            raise self.fail(node, "value nested too deeply") from None
         except yaml.YAMLError as err:
             raise self.fail(node, f"invalid value: {getattr(err, 'problem', err)}") from None
 
@@ -145,6 +147,9 @@ def load(path: str) -> Project:
         raise ProjectError(path, line, col, f"invalid YAML: {err.problem or err}") from None
     except yaml.YAMLError as err:
         raise ProjectError(path, 0, 0, f"invalid YAML: {err}") from None
+    except RecursionError:
+        raise ProjectError(path, 0, 0, "the YAML is nested too deeply to be a project "
+                                       "file") from None
     reader = _Reader(path)
     if document is None:
         raise ProjectError(path, 1, 1, "the project file is empty")

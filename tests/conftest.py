@@ -2,11 +2,19 @@
 
 from __future__ import annotations
 
+import atexit
 import os
+import shutil
+import tempfile
 import textwrap
 from pathlib import Path
 
 import pytest
+
+# the suite's parse cache is its own, never the user's ~/.cache (set before any test imports
+# haros_arch, so every cache path is computed under it)
+os.environ["XDG_CACHE_HOME"] = tempfile.mkdtemp(prefix="haros-arch-test-cache-")
+atexit.register(shutil.rmtree, os.environ["XDG_CACHE_HOME"], True)
 
 ROOT = Path(__file__).resolve().parent.parent
 FIXTURES = ROOT / "fixtures"

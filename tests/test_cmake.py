@@ -82,6 +82,19 @@ def test_output_name_target_sources_and_missing_source(write_tree):
     assert [(d.code, d.location.line) for d in found] == [("CMAKE_SOURCE_MISSING", 5)]
 
 
+def test_source_named_without_extension(write_tree):
+    ws, pkg = workspace_with(write_tree, """
+        project(pkg)
+        add_executable(demo src/demo)
+        add_executable(lost src/lost)
+        add_executable(header src/a.cpp include/pkg/util.h)
+        """, sources=("src/a.cpp", "src/demo.cc", "include/pkg/util.h"))
+    nodes, found = parse_package(pkg, ws)
+    assert [(n.executable, n.sources) for n in nodes] == [
+        ("demo", ["pkg/src/demo.cc"]), ("lost", []), ("header", ["pkg/src/a.cpp"])]
+    assert [(d.code, d.location.line) for d in found] == [("CMAKE_SOURCE_MISSING", 3)]
+
+
 def test_unknown_condition_makes_targets_conditional(write_tree):
     ws, pkg = workspace_with(write_tree, """
         project(pkg)

@@ -12,8 +12,9 @@ import os
 from collections.abc import Callable
 from typing import TYPE_CHECKING
 
+from . import listops
 from .lexer import Invocation
-from .listops import run_list, run_math, run_string, split_list
+from .listops import RegexLimit, run_list, run_math, run_string, split_list
 from .targets import Install, Program, Registration, Target
 
 if TYPE_CHECKING:
@@ -42,7 +43,9 @@ def _set(it: Interpreter, command: Invocation, args: list[str]) -> None:
     if "CACHE" in values:
         at = values.index("CACHE")
         if name not in it.cache or "FORCE" in values[at:]:
-            it.cache[name] = ";".join(values[:at])
+            joined = ";".join(values[:at])
+            it._bounded(name, joined)
+            it.cache[name] = joined
         return
     if values[-1:] == ["PARENT_SCOPE"]:
         it.set_parent(name, ";".join(values[:-1]) if values[:-1] else None)
@@ -72,12 +75,32 @@ def _option(it: Interpreter, command: Invocation, args: list[str]) -> None:
 
 @handles("list")
 def _list(it: Interpreter, command: Invocation, args: list[str]) -> None:
-    run_list(args, it)
+    try:
+        run_list(args, it)
+    except RegexLimit as slow:
+        _slow_regex(it, command, slow)
+        # list(FILTER l ...) / list(TRANSFORM l REPLACE ... [OUTPUT_VARIABLE out])
+        names = args[1:2] + [args[i + 1] for i, a in enumerate(args[:-1])
+                             if a == "OUTPUT_VARIABLE"]
+        for name in names:
+            it.unset(name)
 
 
 @handles("string")
 def _string(it: Interpreter, command: Invocation, args: list[str]) -> None:
-    run_string(args, it)
+    try:
+        run_string(args, it)
+    except RegexLimit as slow:
+        _slow_regex(it, command, slow)
+        # string(REGEX MATCH|MATCHALL re out ...) / string(REGEX REPLACE re with out ...)
+        out = 4 if args[1:2] == ["REPLACE"] else 3
+        if len(args) > out:
+            it.unset(args[out])
+
+
+def _slow_regex(it: Interpreter, command: Invocation, slow: RegexLimit) -> None:
+    it.limit(command, f"regular expression {str(slow)[:80]!r} ran past "
+                      f"{listops.REGEX_SECONDS} s; what it sets stays unknown")
 
 
 @handles("math")

@@ -12,6 +12,8 @@ import os
 import re
 from collections.abc import Callable, Collection, Mapping
 
+from .listops import RegexLimit, cmake_regex
+
 Truth = bool | None
 
 _TRUE = {"1", "ON", "YES", "TRUE", "Y"}
@@ -143,9 +145,12 @@ class Evaluator:
         if op.startswith("STR"):
             return _compare(op[3:], left, right)
         if op == "MATCHES":
+            pattern = cmake_regex(right)
+            if pattern is None:
+                return None
             try:
-                return re.search(right, left) is not None
-            except re.error:
+                return pattern.search(left) is not None
+            except RegexLimit:  # too slow to tell: unknown, as any undecided condition
                 return None
         if op.startswith("VERSION_"):
             return _compare(op[8:], _version(left), _version(right))

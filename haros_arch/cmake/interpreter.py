@@ -34,6 +34,8 @@ _VAR_REF = re.compile(r"\$(ENV|CACHE)?\{([^${}]*)\}")
 MAX_STEPS = 200_000
 MAX_LOOP = 10_000
 MAX_DEPTH = 64
+MAX_BLOCK_DEPTH = 200  # if / foreach / while blocks inside each other
+MAX_VALUE = 1_000_000  # characters in one variable's value or one command's arguments
 BINARY_ROOT = "/<build>"  # CMAKE_BINARY_DIR: generated files have no source to read
 
 Reader = Callable[[str], list[Invocation]]
@@ -86,6 +88,8 @@ class Interpreter:
         self.diagnostics: list[Diagnostic] = []
         self.steps = 0
         self.depth = 0
+        self.block_depth = 0
+        self.current: Invocation | None = None  # the command being run, for limits
         self._enter_directory(source_dir)
         scope = self.scopes[-1]
         scope.update({"CMAKE_SOURCE_DIR": source_dir, "PROJECT_SOURCE_DIR": source_dir,
@@ -100,8 +104,17 @@ class Interpreter:
         return self.cache.get(name) if value is None else value
 
     def set(self, name: str, value: str) -> None:
+        self._bounded(name, value)
         self.scopes[-1][name] = value
         self.assigned.add(name)
+
+    def _bounded(self, name: str, value: str) -> None:
+        """A value past ``MAX_VALUE`` (a list or string doubled in a loop or through
+        macro arguments) stops the file, with a limit diagnostic at the command."""
+        if len(value) > MAX_VALUE and self.current is not None:
+            self.limit(self.current, f"the value of {name[:60]} grew past {MAX_VALUE} "
+                                     "characters")
+            raise _Stop
 
     def unset(self, name: str) -> None:
         self.scopes[-1].pop(name, None)
@@ -112,6 +125,7 @@ class Interpreter:
         if value is None:
             self.scopes[-2].pop(name, None)
         else:
+            self._bounded(name, value)
             self.scopes[-2][name] = value
             self.assigned.add(name)
 
@@ -177,6 +191,10 @@ class Interpreter:
             else:
                 values.extend(item.replace("\\;", ";")
                               for item in split_list(self.expand(arg.text)))
+            if len(values) > MAX_VALUE // 8 and self.current is not None:
+                self.limit(self.current, "a command's arguments expand to more than "
+                                         f"{MAX_VALUE // 8} items")
+                raise _Stop
         return values
 
     def where(self, command: Invocation) -> Location:
@@ -201,13 +219,21 @@ class Interpreter:
     def step(self, commands: list[Invocation], index: int) -> int:
         self.steps += 1
         command = commands[index]
+        self.current = command
         if self.steps > MAX_STEPS:
             self.limit(command, f"more than {MAX_STEPS} commands evaluated")
             raise _Stop
         name = command.name
         block = _BLOCKS.get(name)
         if block is not None:
-            return block(self, commands, index)
+            if self.block_depth >= MAX_BLOCK_DEPTH:
+                self.limit(command, f"blocks nested deeper than {MAX_BLOCK_DEPTH}")
+                raise _Stop
+            self.block_depth += 1
+            try:
+                return block(self, commands, index)
+            finally:
+                self.block_depth -= 1
         if name == "break":
             raise _Break
         if name == "continue":

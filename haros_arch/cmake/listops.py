@@ -13,6 +13,8 @@ import re
 from collections.abc import Callable
 from typing import Protocol
 
+import regex
+
 _LIST_SEPARATOR = re.compile(r"(?<!\\);")
 
 
@@ -31,16 +33,51 @@ def split_list(value: str | None) -> list[str]:
     return [item for item in _LIST_SEPARATOR.split(value) if item]
 
 
-def cmake_regex(pattern: str) -> re.Pattern[str] | None:
-    """CMake regular expressions are close to Python's; bad ones give None."""
+REGEX_SECONDS = 0.5  # one match, search or replace; a backtracking pattern stops there
+
+
+class RegexLimit(Exception):
+    """A CMake regular expression ran past ``REGEX_SECONDS`` (a backtracking pattern on a
+    long value): what it would have set stays unknown."""
+
+
+class BoundedRegex:
+    """A compiled CMake regular expression whose every use is bounded in time."""
+
+    def __init__(self, compiled: regex.Pattern[str]) -> None:
+        self.compiled = compiled
+        self.groups = compiled.groups
+
+    def search(self, text: str) -> regex.Match[str] | None:
+        try:
+            return self.compiled.search(text, timeout=REGEX_SECONDS)
+        except TimeoutError:
+            raise RegexLimit(self.compiled.pattern) from None
+
+    def finditer(self, text: str) -> list[regex.Match[str]]:
+        try:
+            return list(self.compiled.finditer(text, timeout=REGEX_SECONDS))
+        except TimeoutError:
+            raise RegexLimit(self.compiled.pattern) from None
+
+    def sub(self, replace: Callable[[regex.Match[str]], str], text: str) -> str:
+        try:
+            return self.compiled.sub(replace, text, timeout=REGEX_SECONDS)
+        except TimeoutError:
+            raise RegexLimit(self.compiled.pattern) from None
+
+
+def cmake_regex(pattern: str) -> BoundedRegex | None:
+    """CMake regular expressions are close to Python's; bad ones give None. They run on
+    the ``regex`` engine, which takes a time bound."""
     try:
-        return re.compile(pattern)
-    except (re.error, RecursionError):
+        return BoundedRegex(regex.compile(pattern))
+    except (regex.error, RecursionError, ValueError):
         return None
 
 
-def _replacement(text: str) -> Callable[[re.Match[str]], str]:
-    def replace(match: re.Match[str]) -> str:
+def _replacement(text: str) -> Callable[[regex.Match[str]], str]:
+    def replace(match: regex.Match[str]) -> str:
         def group(ref: re.Match[str]) -> str:
             index = int(ref.group(1))
             return (match.group(index) or "") if index <= (match.re.groups or 0) else ""
@@ -95,10 +132,10 @@ def run_list(args: list[str], scope: Scope) -> None:
         put(sorted(items, key=str.lower if "INSENSITIVE" in rest else None,
                    reverse="DESCENDING" in rest))
     elif sub == "FILTER" and len(rest) >= 3 and rest[1] == "REGEX":
-        regex = cmake_regex(rest[2])
-        if regex is not None:
+        pattern = cmake_regex(rest[2])
+        if pattern is not None:
             keep = rest[0] == "INCLUDE"
-            put([item for item in items if (regex.search(item) is not None) == keep])
+            put([item for item in items if (pattern.search(item) is not None) == keep])
     elif sub == "TRANSFORM" and rest:
         _transform(items, rest, var, scope)
 
@@ -115,8 +152,8 @@ def _transform(items: list[str], rest: list[str], var: str, scope: Scope) -> Non
     elif action in ("TOUPPER", "TOLOWER", "STRIP"):
         done = [x.upper() if action == "TOUPPER" else x.lower() if action == "TOLOWER"
                 else x.strip() for x in items]
-    elif action == "REPLACE" and len(rest) >= 2 and (regex := cmake_regex(rest[0])):
-        done = [regex.sub(_replacement(rest[1]), x) for x in items]
+    elif action == "REPLACE" and len(rest) >= 2 and (pattern := cmake_regex(rest[0])):
+        done = [pattern.sub(_replacement(rest[1]), x) for x in items]
     elif action == "GENEX_STRIP":
         done = [x for x in items if not x.startswith("$<")]
     else:
@@ -195,16 +232,16 @@ def _transform_one(sub: str, text: str) -> str:
 
 
 def _string_regex(mode: str, rest: list[str], scope: Scope) -> None:
-    regex = cmake_regex(rest[0])
-    if regex is None:
+    pattern = cmake_regex(rest[0])
+    if pattern is None:
         return
     if mode == "MATCH" and len(rest) >= 3:
-        found = regex.search("".join(rest[2:]))
+        found = pattern.search("".join(rest[2:]))
         scope.set(rest[1], found.group() if found else "")
     elif mode == "MATCHALL" and len(rest) >= 3:
-        scope.set(rest[1], ";".join(m.group() for m in regex.finditer("".join(rest[2:]))))
+        scope.set(rest[1], ";".join(m.group() for m in pattern.finditer("".join(rest[2:]))))
     elif mode == "REPLACE" and len(rest) >= 4:
-        scope.set(rest[2], regex.sub(_replacement(rest[1]), "".join(rest[3:])))
+        scope.set(rest[2], pattern.sub(_replacement(rest[1]), "".join(rest[3:])))
 
 
 _OPERATORS: dict[type, Callable[..., int]] = {

@@ -51,6 +51,14 @@ class PackageFiles:
         return self.workspace.location(path, line, column)
 
 
+def _with_extension(source: str) -> str | None:
+    """A source named without its extension (``add_executable(x src/demo)``) is the
+    first existing file with a C/C++ one appended, as CMake looks for it."""
+    if os.path.isfile(source):
+        return None  # another language's file, or a header
+    return next((source + ext for ext in C_SUFFIXES if os.path.isfile(source + ext)), None)
+
+
 class SourceMap:
     """Workspace-relative C/C++ sources of targets, with package-local libraries linked in."""
 
@@ -74,8 +82,13 @@ class SourceMap:
             if match:
                 source = os.path.normpath(os.path.join(os.path.dirname(target.file),
                                                        match.group(2)))
-            if source.startswith("$<") or not source.endswith(C_SUFFIXES):
+            if source.startswith("$<"):
                 continue  # other generator expressions are unknown at this stage
+            if not source.endswith(C_SUFFIXES):
+                found = _with_extension(source)
+                if found is None and (os.path.splitext(source)[1] or os.path.isfile(source)):
+                    continue  # a header, or another language's file
+                source = found or source
             if source.startswith(BINARY_ROOT):
                 continue  # generated at build time
             if not os.path.isfile(source):

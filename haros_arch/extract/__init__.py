@@ -13,6 +13,7 @@ import os
 from collections.abc import Sequence
 from dataclasses import replace
 
+from .. import diagnostics as diag
 from ..diagnostics import Diagnostic
 from ..model.source import Node
 from ..workspace import Workspace
@@ -39,10 +40,45 @@ def extract_nodes(nodes: Sequence[Node], workspace: Workspace, *,
             node.calls, node.rosname = result.calls, result.rosname
             _process_nodes(node, result.rosnames)
         found.extend(batch.all_diagnostics())
+        for node, result in zip(cpp, batch.results, strict=True):
+            found.extend(completeness(node, [*batch.diagnostics, *result.diagnostics]))
     for node in nodes:
         if node.language != "cpp":
             found.extend(extract_node(node, workspace))
+        elif not node.sources:
+            completeness(node, [])
     return found
+
+
+# What leaves a node's calls partly unknown, per language: the code of the diagnostic of
+# each cause (an error left in a C++ unit, a file that could not be read or parsed)
+_PARTIAL_CAUSES = {
+    "cpp": ("CPP_PARSE_ERROR", "CPP_PARSE_FAILED", "FILE_UNREADABLE"),
+    "python": ("PY_PARSE_ERROR", "PY_TOO_COMPLEX", "FILE_UNREADABLE"),
+}
+_PARTIAL_CODE = {"cpp": "CPP_NODE_PARTIAL", "python": "PY_NODE_PARTIAL"}
+
+
+def completeness(node: Node, found: Sequence[Diagnostic]) -> list[Diagnostic]:
+    """Mark ``node`` partial when the diagnostics of its sources say calls may be
+    missing (``Node.mark_partial``, each reason with its file:line), unknown when it has
+    no source; the warning that says so, if any."""
+    if not node.sources:
+        node.completeness = "unknown"
+        node.completeness_reasons = ["no source file of the node was found"]
+        return []
+    # a unit's errors are in its files and the headers they include; an unreadable
+    # file counts when it is one of the node's
+    causes = [d for d in found if d.code in _PARTIAL_CAUSES.get(node.language, ())
+              and (d.code != "FILE_UNREADABLE" or d.location.file in node.sources)]
+    if not causes:
+        return []
+    for cause in causes:
+        where = f"{cause.location.file}:{cause.location.line}" if cause.location.file else ""
+        node.mark_partial(f"{where}: {cause.message}" if where else cause.message)
+    first = node.completeness_reasons[0]
+    return [diag.make(_PARTIAL_CODE[node.language], node.location, node=node.name,
+                      count=len(causes), first=first)]
 
 
 def _process_nodes(node: Node, rosnames: list[str]) -> None:
@@ -67,7 +103,7 @@ def extract_node(node: Node, workspace: Workspace) -> list[Diagnostic]:
         node.calls = result.calls
         node.rosname = result.rosname
         _process_nodes(node, result.rosnames)
-        return result.diagnostics
+        return [*result.diagnostics, *completeness(node, result.diagnostics)]
     if node.language == "python" and sources:
         from .python import extract_python
 
@@ -78,5 +114,5 @@ def extract_node(node: Node, workspace: Workspace) -> list[Diagnostic]:
             # as the C++ side writes it: the namespace the code gives, then the name
             node.rosname = f"/{found.namespace.strip('/')}/{found.rosname}"
         node.rosnames = found.nodes
-        return found.diagnostics
-    return []
+        return [*found.diagnostics, *completeness(node, found.diagnostics)]
+    return completeness(node, [])

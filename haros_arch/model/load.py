@@ -277,11 +277,17 @@ def from_data(data: Any) -> Model:
     schema = data.get("schema")
     if schema is not None and not str(schema).startswith("haros-arch/"):
         raise ModelDataError(f"unknown schema {schema!r}")
-    model = Model(str(data.get("project", "")))
-    model.packages = [_package(p) for p in data.get("packages", ())]
-    nodes = {node.name: node for package in model.packages for node in package.nodes}
-    hinted: dict[str, Node] = {}
-    model.configurations = [_configuration(c, nodes, hinted)
-                            for c in data.get("configurations", ())]
-    model.diagnostics = [_diagnostic(d) for d in data.get("diagnostics", ())]
+    try:
+        model = Model(str(data.get("project", "")))
+        model.packages = [_package(p) for p in data.get("packages", ())]
+        nodes = {node.name: node for package in model.packages for node in package.nodes}
+        hinted: dict[str, Node] = {}
+        model.configurations = [_configuration(c, nodes, hinted)
+                                for c in data.get("configurations", ())]
+        model.diagnostics = [_diagnostic(d) for d in data.get("diagnostics", ())]
+    except (AttributeError, TypeError, KeyError, ValueError, RecursionError) as err:
+        # a field of the wrong type (a list where an object belongs, ...): the document is
+        # not one extract writes; say so instead of failing inside the reader
+        raise ModelDataError(f"not a haros-arch model: a field has the wrong type or shape "
+                             f"({type(err).__name__}: {err})") from None
     return model

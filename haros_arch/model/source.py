@@ -121,7 +121,7 @@ class Node:
     # executor, create_node twice): their names in order, each call's ``node_name`` one of
     # them; empty when the executable creates one node (``rosname``)
     rosnames: list[str] = field(default_factory=list, metadata={"optional": True})
-    completeness: Completeness = field(default="complete", metadata={"optional": True})
+    completeness: Completeness = "complete"
     # why calls may be missing (the first few reasons, each with its file:line)
     completeness_reasons: list[str] = field(default_factory=list,
                                             metadata={"optional": True})
@@ -129,6 +129,8 @@ class Node:
     # name, ``pkg/Name`` or the type itself)
     plugin_class: str | None = field(default=None, metadata={"optional": True})
 
+    # the node's name (``pkg/exec``, ``pkg/Class``) first, as DESIGN's JSON contract says
+    JSON_HEAD: ClassVar[dict[str, Any]] = {"name": lambda node: node.name}
     JSON_VIEWS: ClassVar[dict[str, str]] = {}
 
     @property

@@ -14,11 +14,12 @@ from typing import Any
 from rich.console import Console
 from rich.markup import escape
 
+from ..autoproject import open_project
 from ..model.diagnostic import SEVERITY_RANK, Diagnostic
 from ..model.finding import Finding
 from ..model.model import Model
 from ..model.serialise import model_to_data, to_data
-from ..project import Project, ProjectError, load
+from ..project import Project, ProjectError
 from . import CONFIG_NAMES, QueryError, compile, config_scope, model_scope
 from .catalogue import absorbed, load_catalogue, project_rules, run_catalogue
 from .results import entities, label, location_of, plain
@@ -46,7 +47,7 @@ def document(model: Model, project: Project | None) -> dict[str, Any]:
 def check(args: Any, out: Console, err: Console, analyse: Analyse) -> int:
     """Diagnostics and catalogue findings, in text, JSON, SARIF or JUnit."""
     try:
-        project = load(args.project)
+        project = open_project(args.project)
     except ProjectError as error:
         err.print(f"haros-arch: {error}", highlight=False)
         return EXIT_USAGE
@@ -126,7 +127,7 @@ def query(args: Any, out: Console, err: Console, analyse: Analyse) -> int:
         try:
             with open(args.model, encoding="utf-8") as handle:
                 model = from_data(json.load(handle))
-        except (OSError, ValueError, ModelDataError) as error:
+        except (OSError, ValueError, RecursionError, ModelDataError) as error:
             err.print(f"haros-arch: cannot read model {args.model}: {error}", highlight=False)
             return EXIT_USAGE
     elif args.project:
@@ -178,13 +179,13 @@ def query(args: Any, out: Console, err: Console, analyse: Analyse) -> int:
 
 
 def project_file_of(path: str) -> Project | None:
-    return load(path) if os.path.isfile(path) else None
+    return open_project(path) if os.path.exists(path) else None
 
 
 def extract_document(model: Model, project_path: str) -> str:
     """``extract``'s JSON: the model plus the catalogue's findings under ``findings``."""
     try:
-        project: Project | None = load(project_path)
+        project: Project | None = open_project(project_path)
     except ProjectError:
         project = None
     return json.dumps(document(model, project), indent=2, ensure_ascii=False) + "\n"

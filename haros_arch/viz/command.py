@@ -20,8 +20,8 @@ def read_model(path: str) -> dict[str, Any]:
             data = json.load(handle)
     except OSError as err:
         raise ReportError(f"cannot read {path}: {err.strerror or err}") from err
-    except ValueError as err:
-        raise ReportError(f"{path} is not JSON: {err}") from err
+    except (ValueError, RecursionError) as err:
+        raise ReportError(f"{path} is not JSON (or nested too deeply): {err}") from err
     if not isinstance(data, dict) or not isinstance(data.get("configurations"), list):
         raise ReportError(f"{path} is not a haros-arch model (schema {SCHEMA})")
     return data

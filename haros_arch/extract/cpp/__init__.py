@@ -12,7 +12,7 @@ from __future__ import annotations
 import dataclasses
 import os
 import re
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
 
@@ -22,10 +22,11 @@ from clang.cindex import Diagnostic as ClangDiagnostic
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
 from ...files import MAX_FILE_BYTES, read_text
+from ...manifest import ros_version
 from ...model.location import Location
 from ...model.source import PrimitiveCall
 from ...workspace import Workspace
-from . import cache, links, toolchain
+from . import cache, links, synthesis, toolchain
 from . import compile_commands as commands
 from .headers import STANDIN, IncludeSetup
 from .visitor import CallFinder
@@ -139,7 +140,7 @@ def extract_cpp_nodes(nodes: Sequence[Sequence[str]], workspace: Workspace, *,
             read.extend(found)
             if text is not None:
                 texts[path] = text
-                ros2[path] = setup.scan(path, text)
+                ros2[path] = _is_ros2(path, setup.scan(path, text), workspace)
         results = _units(texts, ros2, setup, store, jobs)
     finally:
         setup.close()
@@ -149,6 +150,16 @@ def extract_cpp_nodes(nodes: Sequence[Sequence[str]], workspace: Workspace, *,
             [(p, results[p]) for p in dict.fromkeys(map(os.path.abspath, sources))
              if p in results]))
     return batch
+
+
+def _is_ros2(path: str, included: bool, workspace: Workspace) -> bool:
+    """ROS 2 code: as its package's manifest says (``manifest.ros_version``), else when
+    it or a workspace header it includes includes rclcpp or a ROS 2 interface
+    (``included``). Never by headers alone where the package tells: ROS 2 code that
+    includes only tf2_ros headers is ROS 2."""
+    package = workspace.package_of(path)
+    version = ros_version(package) if package is not None else None
+    return included if version is None else version == 2
 
 
 def _node_result(paths_units: list[tuple[str, CppResult]]) -> CppResult:
@@ -304,7 +315,7 @@ def _translation_unit(path: str, text: str, ros2: bool,
             return workspace.location(path)
         return workspace.location(os.path.abspath(loc.file.name), loc.line, loc.column)
 
-    tu = _parse(path, text, setup, workspace, result)
+    tu = _parse(path, text, setup, workspace, result, source, owned)
     if tu is None:
         return result, []
     errors = [d for d in tu.diagnostics if d.severity >= ClangDiagnostic.Error
@@ -338,17 +349,17 @@ def _translation_unit(path: str, text: str, ros2: bool,
 
 
 def _parse(path: str, text: str, setup: IncludeSetup, workspace: Workspace,
-           result: CppResult) -> TranslationUnit | None:
-    """Parse ``path``; headers clang still misses are stood in for and parsed again."""
+           result: CppResult, source: SourceCache,
+           owned: Callable[[str], bool]) -> TranslationUnit | None:
+    """Parse ``path``; headers clang still misses are stood in for and parsed again, then
+    names it does not know are declared (``synthesis``) and parsed again while that
+    leaves fewer errors."""
     unsaved = [(path, text)]
+    args = setup.arguments(source=path)
+    tu: TranslationUnit | None = None
     for _attempt in range(2):
-        try:
-            tu = toolchain.index().parse(path, args=setup.arguments(source=path),
-                                         unsaved_files=unsaved,
-                                         options=PARSE_OPTIONS)
-        except TranslationUnitLoadError as err:
-            result.diagnostics.append(diag.make(
-                "CPP_PARSE_FAILED", workspace.location(path), detail=str(err) or "libclang"))
+        tu = _parse_once(path, args, unsaved, workspace, result)
+        if tu is None:
             return None
         missing = [
             (d.spelling, workspace.location(os.path.abspath(d.location.file.name),
@@ -357,8 +368,59 @@ def _parse(path: str, text: str, setup: IncludeSetup, workspace: Workspace,
             if d.severity >= ClangDiagnostic.Error and d.location.file is not None
             and "file not found" in d.spelling]
         if not missing or not setup.repair(missing):
-            return tu
-    return tu
+            break
+    assert tu is not None
+    return _synthesise(path, tu, args, unsaved, setup, workspace, result, source, owned)
+
+
+def _parse_once(path: str, args: list[str], unsaved: list[tuple[str, str]],
+                workspace: Workspace, result: CppResult) -> TranslationUnit | None:
+    try:
+        return toolchain.index().parse(path, args=args, unsaved_files=unsaved,
+                                       options=PARSE_OPTIONS)
+    except TranslationUnitLoadError as err:
+        result.diagnostics.append(diag.make(
+            "CPP_PARSE_FAILED", workspace.location(path), detail=str(err) or "libclang"))
+        return None
+
+
+def _errors(tu: TranslationUnit) -> list[ClangDiagnostic]:
+    return [d for d in tu.diagnostics if d.severity >= ClangDiagnostic.Error]
+
+
+def _synthesise(path: str, tu: TranslationUnit, args: list[str],
+                unsaved: list[tuple[str, str]], setup: IncludeSetup, workspace: Workspace,
+                result: CppResult, source: SourceCache,
+                owned: Callable[[str], bool]) -> TranslationUnit:
+    """The parse with the fewest errors once the unknown names are declared."""
+
+    def mine(unit: TranslationUnit) -> list[ClangDiagnostic]:
+        return [d for d in _errors(unit)
+                if d.location.file is not None and owned(d.location.file.name)]
+
+    original = best = tu
+    errors = _errors(tu)
+    before = len(mine(tu))
+    names = synthesis.Names()
+    header = os.path.join(setup.generated, synthesis.HEADER_NAME)
+    for _round in range(synthesis.MAX_ROUNDS):
+        learnt = names.learn([(d.spelling, source.get(d.location.file.name),
+                               d.location.offset) for d in mine(tu)])
+        if not learnt:
+            break
+        again = _parse_once(path, [*args, "-include", header],
+                            [*unsaved, (header, names.header())], workspace, result)
+        if again is None:
+            break
+        tu = again
+        if len(_errors(tu)) >= len(errors):
+            break  # declaring more made it no better
+        best, errors = tu, _errors(tu)
+    if best is not original:
+        result.diagnostics.append(diag.make(
+            "CPP_NAMES_DECLARED", workspace.location(path), count=names.count,
+            names=", ".join(names.first()), before=before, after=len(mine(best))))
+    return best
 
 
 class SourceCache(dict[str, bytes]):

@@ -22,7 +22,9 @@ Type sources (``type_from``), tried in order until one gives a type:
 - ``template-value``: the first explicit template argument as a parameter type
   (``nh.param<std::string>(...)``);
 - ``type-name``: the string at ``type_arg`` names the type
-  (``create_generic_publisher(topic, "std_msgs/msg/String", qos)``).
+  (``create_generic_publisher(topic, "std_msgs/msg/String", qos)``);
+- ``result``: the parameter type of the value the call returns
+  (``declare_parameter<double>("gain")``).
 
 A message type that is a ``rclcpp::TypeAdapter<Custom, Ros>`` (or a custom type one
 adapts) is its ROS message type (``call_types``).
@@ -260,8 +262,8 @@ _RCLCPP_NODE: dict[str, RosFunction] = {
     "create_generic_subscription": RosFunction(
         "subscribe", type_from=("type-name",), type_arg=1, qos_arg=2),
     "declare_parameter": RosFunction(
-        "declare", type_from=("template-value", "value"), type_arg=1, default_arg=1,
-        on_handle=False),
+        "declare", type_from=("template-value", "value", "result"), type_arg=1,
+        default_arg=1, on_handle=False),
     "declare_parameters": RosFunction(
         "declare", type_from=("template-value",), on_handle=False, per_element=True),
     "get_parameter": RosFunction(
@@ -302,6 +304,16 @@ IMPLICIT: dict[tuple[str, str], RosFunction] = {
 }
 # (class, method) -> the argument that names the sub-namespace
 RCLCPP_SUB_NODE: dict[tuple[str, str], int] = {("rclcpp::Node", "create_sub_node"): 0}
+
+# Calls clang could not resolve (made on an object of a class it does not know, or of
+# one an error made invalid), matched by the function's name alone: rclcpp's node
+# methods and rclcpp_action's functions in ROS 2 code, a NodeHandle's in ROS 1 code.
+UNRESOLVED_ROS2: dict[str, RosFunction] = {
+    **_RCLCPP_NODE,
+    "create_server": LIBRARIES[("rclcpp_action", "create_server")],
+}
+UNRESOLVED_ROS1: dict[str, RosFunction] = {
+    name: row for (owner, name), row in ROSCPP.items() if owner == NODE_HANDLE}
 
 ALL: dict[tuple[str, str], RosFunction] = {**ROSCPP, **LIBRARIES, **RCLCPP,
                                             **RCLCPP_LIBRARIES}

@@ -82,6 +82,8 @@ class CallTypes:
                     found = self._message(ctype, spec.kind in ("client", "server"))
                 else:
                     found = msg_types.param_type(ctype)
+            elif source == "result" and call.kind == CursorKind.CALL_EXPR:
+                found = msg_types.param_type(call.type)
             if found is not None:
                 return found
         return None

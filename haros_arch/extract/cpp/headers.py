@@ -46,6 +46,8 @@ STD_STANDIN = os.path.join(STANDIN, "std")  # the C and C++ standard library sta
 PRELUDE = os.path.join(STANDIN, "haros_prelude.h")  # what is precompiled
 # CXTranslationUnit_ForSerialization | Incomplete (a header, not a whole program)
 _PCH_OPTIONS = 0x10 | 0x02
+# a second folder of synthesised headers, for a header whose name is a folder of others
+OVERFLOW = ".overflow"
 # Prefixes only our stand-ins provide in the default mode; a header of one of these
 # libraries we have no stand-in for includes the library's umbrella stand-in.
 QT = "haros_qt.h"  # the Qt stand-in every Qt header includes
@@ -70,7 +72,7 @@ UMBRELLAS = {
     **{f"Qt{m}/": QT for m in ("Core", "Gui", "Widgets", "Network", "Concurrent", "Test")},
 }
 SHADOWED = ("ros/", "boost/", "tf/", *UMBRELLAS)
-_QT_HEADER = re.compile(r"Q[A-Z][A-Za-z]*(\.h)?")  # <QObject>, <QTimer>, <QWidget>
+_QT_HEADER = re.compile(r"Q[A-Z][A-Za-z]*(\.h)?|Qt[A-Z][A-Za-z]*")  # <QObject>, <QtGui>
 _ROS2_HEADER = re.compile(r"([A-Za-z_]\w*)/(msg|srv|action)/([a-z0-9_]+)\.hpp")
 
 _INCLUDE = re.compile(r'^[ \t]*#[ \t]*include[ \t]*([<"])([^>"\n]+)[>"]', re.MULTILINE)
@@ -108,6 +110,8 @@ class IncludeSetup:
         self._handled: set[str] = set()
         self._scanned: dict[str, bool] = {}  # file -> ROS 2 code (see ``scan``)
         self.written: dict[str, str] = {}  # synthesised header path -> its text
+        self.overflow = os.path.join(self.generated, OVERFLOW)
+        self._folders: set[str] = set()  # the folders of the written headers
         self._on_disk = False
         self._tops: dict[str, list[str]] | None = None  # see ``_resolve``
 
@@ -118,7 +122,7 @@ class IncludeSetup:
         name this process's PCH file)."""
         unit = self.units.get(os.path.realpath(source)) if source and self.units else None
         flags = toolchain.base_arguments(self.system_headers, unit.std if unit else None)
-        args = ["-I", self.generated]
+        args = ["-I", self.generated, "-I", self.overflow]
         if not self.system_headers:
             args += ["-I", STANDIN]
         if unit is not None:
@@ -344,12 +348,24 @@ class IncludeSetup:
         self.diagnostics.append(diag.make("CPP_INCLUDE_MISSING", where, header=header))
 
     def _write(self, header: str, text: str) -> None:
-        path = os.path.normpath(os.path.join(self.generated, header))
-        if not path.startswith(self.generated + os.sep):
-            return  # "../" in a header name: nothing to create
+        """Synthesise ``header``; in the overflow folder when its name is a folder of
+        headers already written, or under a name written as a file (``<QtGui>`` beside
+        ``<QtGui/QImage>``)."""
+        for root in (self.generated, self.overflow):
+            path = os.path.normpath(os.path.join(root, header))
+            if not path.startswith(root + os.sep):
+                return  # "../" in a header name: nothing to create
+            if not self._clashes(path, root):
+                break
+        else:
+            return  # clashes in both folders: clang reports the header as not found
         self.written[path] = text
+        self._folders.update(_parents(path, root))
         if self._on_disk:
             _write_file(path, text)
+
+    def _clashes(self, path: str, root: str) -> bool:
+        return path in self._folders or any(p in self.written for p in _parents(path, root))
 
     def materialise(self) -> None:
         """Write the synthesised headers, before the first parse (until then they are
@@ -406,6 +422,16 @@ def precompiled_prelude(flags: Sequence[str]) -> str | None:
             path = None
         _PCH[key] = path
         return path
+
+
+def _parents(path: str, root: str) -> list[str]:
+    """The folders between ``root`` (excluded) and ``path``."""
+    found = []
+    folder = os.path.dirname(path)
+    while folder.startswith(root + os.sep):
+        found.append(folder)
+        folder = os.path.dirname(folder)
+    return found
 
 
 def _write_file(path: str, text: str) -> None:

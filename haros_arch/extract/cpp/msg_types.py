@@ -7,6 +7,7 @@ same struct: its namespaces and name give the ROS 1 name.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Mapping
 
 from clang.cindex import Cursor, CursorKind, Type, TypeKind
@@ -48,7 +49,42 @@ def message_type(ctype: Type, service: bool = False,
     scopes = _namespaces(parent)
     if not scopes or not name:
         return None
+    if _synthesised(decl):  # declared for a name the parse did not know (``synthesis``)
+        return written_type("::".join([*scopes, name]), None) or "?"
     return "/".join([*scopes, name])
+
+
+_POINTER_SUFFIXES = ("SharedPtr", "ConstSharedPtr", "UniquePtr", "Ptr", "ConstPtr")
+_INTERFACE_FOLDERS = ("msg", "srv", "action")
+_INTERFACE_PACKAGE = re.compile(r"[a-z][a-z0-9_]*")
+
+
+def written_type(text: str, ros2: bool | None) -> str | None:
+    """The ROS interface a C++ type written ``text`` names, when it looks like one:
+    ``pkg::msg::Name`` (ROS 2), ``pkg::Name`` with ``pkg`` a message package (a name
+    ending in ``_msgs``, ``_srvs`` or ``_interfaces``; ROS 1); None otherwise. ``ros2``
+    None: either form."""
+    parts = [p for p in text.replace(" ", "").lstrip(":").split("::") if p]
+    while parts and parts[-1] in _POINTER_SUFFIXES:
+        parts.pop()
+    if any(not p.isidentifier() for p in parts) or len(parts) not in (2, 3):
+        return None
+    if not _INTERFACE_PACKAGE.fullmatch(parts[0]):
+        return None
+    if len(parts) == 3 and parts[1] in _INTERFACE_FOLDERS and ros2 is not False:
+        return "/".join(parts)
+    if len(parts) == 2 and ros2 is not True and parts[0].endswith(
+        ("_msgs", "_srvs", "_interfaces")
+    ):
+        return "/".join(parts)
+    return None
+
+
+def _synthesised(decl: Cursor) -> bool:
+    for child in decl.get_children():
+        if child.kind == CursorKind.CXX_BASE_SPECIFIER and child.type.spelling == "haros_any":
+            return True
+    return False
 
 
 def param_type(ctype: Type) -> str | None:

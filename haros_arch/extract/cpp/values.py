@@ -183,11 +183,13 @@ class Scope:
             return UNKNOWN if text is None else (text,)
         if kind in (CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR):
             decl = cursor.referenced
-            if decl is not None and self.is_parameter(decl):
+            if decl is None:  # a name in a template that clang could not bind
+                return UNKNOWN
+            if self.is_parameter(decl):
                 return self.sites.agreed(  # type: ignore[union-attr]
                     decl, lambda arg, scope: scope.string(arg, depth + 1), UNKNOWN)
-            value = self.variable(decl) if decl is not None else None
-            if value is None and decl is not None:
+            value = self.variable(decl)
+            if value is None:
                 found = self.field(decl)
                 return UNKNOWN if found is None else found[1].string(found[0], depth + 1)
             return self.string(value, depth + 1)
@@ -244,11 +246,13 @@ class Scope:
             return self._int_token(token) if token else None
         if cursor.kind in (CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR):
             decl = cursor.referenced
-            if decl is not None and self.is_parameter(decl):
+            if decl is None:
+                return None
+            if self.is_parameter(decl):
                 return self.sites.agreed(  # type: ignore[union-attr]
                     decl, lambda arg, scope: scope.integer(arg, depth + 1), None)
-            value = self.variable(decl) if decl is not None else None
-            if value is None and decl is not None:
+            value = self.variable(decl)
+            if value is None:
                 found = self.field(decl)
                 return None if found is None else found[1].integer(found[0], depth + 1)
             return self.integer(value, depth + 1)

@@ -9,6 +9,8 @@ the constructed object for a constructor.
 
 from __future__ import annotations
 
+import dataclasses
+import itertools
 from collections.abc import Callable, Iterator
 
 from clang.cindex import Cursor, CursorKind, TranslationUnit
@@ -135,6 +137,10 @@ class CallFinder:
                 node.spelling in _API_NAMES or node.spelling in self.wrappers.names
             ):
                 self._call(node, conditions, scope)
+            elif node.kind in (CursorKind.UNEXPOSED_EXPR, CursorKind.CALL_EXPR) and (
+                not node.spelling and _recovered_name(node) in self._unresolved_rows()
+            ):
+                self._unresolved(node, conditions, scope)
             if node.kind == CursorKind.CALL_EXPR:
                 self._construction(node)
             branches = self.reader.branches(node)
@@ -168,6 +174,7 @@ class CallFinder:
             return
         target = call.referenced
         if target is None:
+            self._unresolved(call, conditions, scope)
             return
         key = (qualified_name(target.semantic_parent), target.spelling)
         args = written_arguments(call)
@@ -198,6 +205,41 @@ class CallFinder:
                 return
         if spec is not None:
             self._emit(spec, call, args, cls, conditions, scope)
+
+    def _unresolved(self, call: Cursor, conditions: tuple[Condition, ...],
+                    scope: Scope) -> None:
+        """A call clang could not resolve, kept when its name is an API function's: its
+        name and values read as usual, its type as written (``?`` when that is not a
+        ROS interface), and a diagnostic that says so."""
+        recovered = call.kind != CursorKind.CALL_EXPR or not call.spelling
+        function = _recovered_name(call) if recovered else call.spelling
+        spec = self._unresolved_rows().get(function)
+        if spec is None or (spec.kind == "action-server" and "rclcpp_action" not in
+                            _callee_text(call)):
+            return
+        if spec.name_candidates or (self.ros2 and spec.on_handle):
+            # ROS 2: made on the node itself, in its namespace
+            spec = dataclasses.replace(spec, name_candidates=(), on_handle=False)
+        args = ([c for c in list(call.get_children())[1:] if c.kind.is_expression()]
+                if call.kind != CursorKind.CALL_EXPR else written_arguments(call))
+        before = len(self.calls)
+        self._emit(spec, call, args, None, conditions, scope)
+        if len(self.calls) == before:
+            return
+        written = _written_template(call)
+        for index in range(before, len(self.calls)):
+            made = self.calls[index]
+            if (made.type is None and spec.kind not in ("read", "write", "declare")) or (
+                made.type == "?"
+            ):
+                self.calls[index] = dataclasses.replace(
+                    made, type=msg_types.written_type(written, self.ros2) or "?")
+        self.diagnostics.append(diag.make(
+            "CPP_CALL_UNRESOLVED", self.calls[before].location, function=function,
+            type=self.calls[before].type or "?"))
+
+    def _unresolved_rows(self) -> dict[str, api.RosFunction]:
+        return api.UNRESOLVED_ROS2 if self.ros2 else api.UNRESOLVED_ROS1
 
     def _construction(self, call: Cursor) -> None:
         """Record that the function being walked constructs a class of the workspace."""
@@ -471,6 +513,56 @@ class CallFinder:
         if spec is None or spec.fixed_name is None:
             return
         self._emit(spec, field, [], decl, (), Scope(None, self.macros, self.source, self.sites))
+
+
+def _recovered_name(expr: Cursor) -> str:
+    """The function a call clang kept only as a recovery expression names
+    (``this->declare_parameter(...)`` on an invalid class), or ""."""
+    children = list(expr.get_children())
+    if len(children) < 2:
+        return ""
+    head = children[0]
+    if head.kind == CursorKind.OVERLOADED_DECL_REF:
+        return head.spelling
+    if head.kind in (CursorKind.MEMBER_REF_EXPR, CursorKind.DECL_REF_EXPR):
+        if head.spelling:
+            return head.spelling
+        inner = [c for c in head.get_children() if c.kind == CursorKind.OVERLOADED_DECL_REF]
+        if inner:
+            return inner[-1].spelling
+        # ``obj->f`` on an object of an invalid type: the name after the last -> or .
+        name = ""
+        tokens = [t.spelling for t in itertools.islice(head.get_tokens(), 40)]
+        for before, token in itertools.pairwise(tokens):
+            if before in ("->", ".") and token.isidentifier():
+                name = token
+        return name
+    return ""
+
+
+def _callee_text(call: Cursor) -> str:
+    """The tokens of a call before its arguments (``rclcpp_action::create_server<A>``)."""
+    text = []
+    for count, token in enumerate(call.get_tokens()):
+        if token.spelling == "(" or count > 60:
+            break
+        text.append(token.spelling)
+    return "".join(text)
+
+
+def _written_template(call: Cursor) -> str:
+    """The first template argument as written in the call (``pkg::msg::Foo``)."""
+    text = _callee_text(call)
+    start = text.find("<")
+    if start < 0:
+        return ""
+    depth, end = 0, len(text)
+    for i in range(start, len(text)):
+        depth += {"<": 1, ">": -1}.get(text[i], 0)
+        if depth == 0 or (depth == 1 and text[i] == ","):
+            end = i
+            break
+    return text[start + 1:end]
 
 
 def _creator(expr: Cursor, depth: int = 0) -> tuple[api.RosFunction, Cursor] | None:

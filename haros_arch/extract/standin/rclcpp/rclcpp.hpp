@@ -19,6 +19,15 @@
 #define RCLCPP_DISABLE_COPY(T)
 #define RCLCPP_PUBLIC
 #define RCLCPP_LOCAL
+// rclcpp/version.h: the stand-ins follow the Jazzy API (rclcpp 28)
+#define RCLCPP_VERSION_MAJOR (28)
+#define RCLCPP_VERSION_MINOR (1)
+#define RCLCPP_VERSION_PATCH (0)
+#define RCLCPP_VERSION_STR "28.1.0"
+#define RCLCPP_VERSION_GTE(major, minor, patch) ( \
+  (major < RCLCPP_VERSION_MAJOR) ? true : (major > RCLCPP_VERSION_MAJOR) ? false : \
+  (minor < RCLCPP_VERSION_MINOR) ? true : (minor > RCLCPP_VERSION_MINOR) ? false : \
+  (patch <= RCLCPP_VERSION_PATCH))
 namespace rcl_interfaces { namespace msg {
 struct ParameterDescriptor {
   std::string name; uint8_t type; std::string description; std::string additional_constraints;
@@ -44,7 +53,7 @@ void on_shutdown(std::function<void()> callback);
 template<class R, class P> bool sleep_for(const std::chrono::duration<R, P>& d);
 std::vector<std::string> init_and_remove_ros_arguments(int argc, char const* const argv[]);
 std::vector<std::string> remove_ros_arguments(int argc, char const* const argv[]);
-enum class ParameterType { PARAMETER_NOT_SET, PARAMETER_BOOL, PARAMETER_INTEGER,
+enum ParameterType : unsigned char { PARAMETER_NOT_SET, PARAMETER_BOOL, PARAMETER_INTEGER,
   PARAMETER_DOUBLE, PARAMETER_STRING, PARAMETER_BYTE_ARRAY, PARAMETER_BOOL_ARRAY,
   PARAMETER_INTEGER_ARRAY, PARAMETER_DOUBLE_ARRAY, PARAMETER_STRING_ARRAY };
 class ParameterValue {
@@ -441,6 +450,12 @@ using OnSetParametersCallbackHandle = node_interfaces::OnSetParametersCallbackHa
       const rcl_interfaces::msg::ParameterDescriptor& descriptor = \
           rcl_interfaces::msg::ParameterDescriptor(), bool ignore_override = false) \
       -> typename std::enable_if<!__is_array(T), T>::type; \
+  template<class T> T declare_parameter(const std::string& name, \
+      const rcl_interfaces::msg::ParameterDescriptor& descriptor = \
+          rcl_interfaces::msg::ParameterDescriptor(), bool ignore_override = false); \
+  const rclcpp::ParameterValue& declare_parameter(const std::string& name, \
+      rclcpp::ParameterType type, const rcl_interfaces::msg::ParameterDescriptor& descriptor = \
+          rcl_interfaces::msg::ParameterDescriptor(), bool ignore_override = false); \
   std::string declare_parameter(const std::string& name, const char* default_value, \
       const rcl_interfaces::msg::ParameterDescriptor& descriptor = \
           rcl_interfaces::msg::ParameterDescriptor(), bool ignore_override = false); \

@@ -85,6 +85,9 @@ template<class A> double getYaw(const A& a);
 namespace tf2_ros {
 class Buffer {
 public:
+  typedef std::shared_ptr<Buffer> SharedPtr;
+  typedef std::shared_ptr<const Buffer> ConstSharedPtr;
+  typedef std::unique_ptr<Buffer> UniquePtr;
   template<class... A> explicit Buffer(A&&... args);
   template<class T, class... A> haros_standin::any_message lookupTransform(
       const std::string& target, const std::string& source, const T& time, A&&... more) const;

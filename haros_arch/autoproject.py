@@ -1,0 +1,291 @@
+"""A project without a project file: what ``haros-arch check src/`` or ``check x.launch``
+analyses.
+
+Given a workspace (or package) folder, the configurations are the ones a user would
+start by hand: one per launch file of the workspace's packages that no other launch file
+of the workspace includes, with every argument at its default. Given one launch file,
+that file is the one configuration, and the workspace is found from its package (up to
+the catkin / colcon workspace root). ``--launch`` and ``--arg`` choose instead.
+``init`` writes the same choice as a project file to edit.
+
+Which files include which is read with the launch loaders themselves (never by text
+search), so a file reached through ``$(find pkg)``, ``FindPackageShare`` or
+``get_package_share_directory`` counts as included.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import stat
+from collections.abc import Iterable, Mapping, Sequence
+from dataclasses import dataclass, field
+
+import yaml
+
+from .project import ConfigurationSpec, Project, ProjectError
+from .workspace import IGNORE_MARKERS, SKIP_FOLDERS, Workspace, scan
+
+# file names that are launch files wherever they are
+LAUNCH_SUFFIXES = (".launch", ".launch.xml", ".launch.py", ".launch.yaml", ".launch.yml",
+                   "_launch.py", "_launch.xml", "_launch.yaml")
+# in a folder named launch/, these are launch files when their content says so
+LAUNCH_FOLDER_SUFFIXES = (".py", ".xml", ".yaml", ".yml")
+MAX_LAUNCH_FILES = 400  # per workspace: more are left out, with a note
+MAX_SEARCH_DEPTH = 6    # folders below a package searched for launch files
+_PY_LAUNCH = re.compile(rb"generate_launch_description")
+_XML_LAUNCH = re.compile(rb"<launch[\s>]")
+_YAML_LAUNCH = re.compile(rb"^launch\s*:", re.MULTILINE)
+
+
+@dataclass
+class Choice:
+    """What was chosen for a path without a project file, to tell the user."""
+
+    project: Project
+    notes: list[str] = field(default_factory=list)
+
+
+def is_launch_file(path: str) -> bool:
+    """A launch file by name, or a file in a ``launch/`` folder whose content is one."""
+    name = os.path.basename(path).lower()
+    if name.endswith(LAUNCH_SUFFIXES):
+        return True
+    if not name.endswith(LAUNCH_FOLDER_SUFFIXES) or os.path.basename(
+            os.path.dirname(path)) != "launch":
+        return False
+    try:
+        if not os.path.isfile(path) or not stat.S_ISREG(os.stat(path).st_mode):
+            return False
+        with open(path, "rb") as handle:
+            head = handle.read(64 * 1024)
+    except OSError:
+        return False
+    if name.endswith(".py"):
+        return _PY_LAUNCH.search(head) is not None
+    if name.endswith(".xml"):
+        return _XML_LAUNCH.search(head) is not None
+    return _YAML_LAUNCH.search(head) is not None
+
+
+def is_project_file(path: str) -> bool:
+    """A YAML file that is not a launch file (``load`` then reads it, or says why not)."""
+    return os.path.exists(path) and not os.path.isdir(path) and path.lower().endswith(
+        (".yaml", ".yml")) and not is_launch_file(path)
+
+
+def workspace_of(path: str) -> str:
+    """The workspace folder to scan for a launch file or a package folder: the
+    ``src`` folder of the catkin / colcon workspace holding its package, else the
+    repository (a folder with ``.git``) holding it, else the package's parent."""
+    here = os.path.abspath(path if os.path.isdir(path) else os.path.dirname(path))
+    package = None
+    probe = here
+    while True:
+        if os.path.isfile(os.path.join(probe, "package.xml")) or os.path.isfile(
+                os.path.join(probe, "manifest.xml")):
+            package = probe
+            break
+        parent = os.path.dirname(probe)
+        if parent == probe:
+            break
+        probe = parent
+    start = package or here
+    probe = start
+    for _ in range(8):  # a src/ folder above the package: the workspace's sources
+        parent = os.path.dirname(probe)
+        if parent == probe:
+            break
+        if os.path.basename(probe) == "src" and os.path.isdir(probe):
+            return probe
+        probe = parent
+    probe = start
+    for _ in range(8):
+        if os.path.isdir(os.path.join(probe, ".git")):
+            return probe
+        parent = os.path.dirname(probe)
+        if parent == probe:
+            break
+        probe = parent
+    return os.path.dirname(start) if package else start
+
+
+def find_launch_files(workspace: Workspace) -> list[str]:
+    """Every launch file inside the workspace's packages, in a stable order."""
+    found: list[str] = []
+    for name in sorted(workspace.packages):
+        root = workspace.packages[name].root
+        if not root:
+            continue
+        stack = [(root, 0)]
+        while stack and len(found) < MAX_LAUNCH_FILES:
+            folder, depth = stack.pop()
+            try:
+                entries = sorted(os.listdir(folder))
+            except OSError:
+                continue
+            if folder != root and ("package.xml" in entries or any(
+                    m in entries for m in IGNORE_MARKERS)):
+                continue
+            for entry in reversed(entries):
+                path = os.path.join(folder, entry)
+                if entry.startswith(".") or entry in SKIP_FOLDERS:
+                    continue
+                if os.path.isdir(path) and not os.path.islink(path):
+                    if depth < MAX_SEARCH_DEPTH and entry not in ("test", "tests"):
+                        stack.append((path, depth + 1))
+                elif os.path.isfile(path) and is_launch_file(path):
+                    found.append(path)
+    return sorted(found)
+
+
+def _config_name(path: str, workspace: Workspace, taken: set[str]) -> str:
+    package = workspace.package_of(path) if hasattr(workspace, "package_of") else None
+    stem = os.path.basename(path)
+    for suffix in sorted(LAUNCH_SUFFIXES + LAUNCH_FOLDER_SUFFIXES, key=len, reverse=True):
+        if stem.lower().endswith(suffix):
+            stem = stem[: -len(suffix)]
+            break
+    base = f"{package.name}/{stem}" if package is not None else stem
+    name, n = base, 2
+    while name in taken:
+        name, n = f"{base}#{n}", n + 1
+    taken.add(name)
+    return name
+
+
+def _entry(path: str, workspace: Workspace) -> str:
+    """A launch entry as a project file writes it: ``pkg/relative/path``."""
+    package = workspace.package_of(path) if hasattr(workspace, "package_of") else None
+    if package is not None and package.root:
+        return f"{package.name}/{os.path.relpath(path, package.root)}"
+    return os.path.abspath(path)
+
+
+def root_launch_files(files: Sequence[str], workspace: Workspace,
+                      environment: Mapping[str, str]) -> tuple[list[str], list[str]]:
+    """The files no other file of ``files`` includes (loaded with arguments at their
+    defaults), and the included ones."""
+    from .launch import load as load_launch
+
+    real = {os.path.realpath(f): f for f in files}
+    included: set[str] = set()
+    for path in files:
+        try:
+            loaded = load_launch(path, workspace, {}, dict(environment))
+        except RecursionError:
+            continue
+        for other in loaded.files[1:]:  # relative to the workspace root
+            key = os.path.realpath(os.path.join(workspace.root, other))
+            if key in real and key != os.path.realpath(path):
+                included.add(key)
+    roots = [f for f in files if os.path.realpath(f) not in included]
+    return roots, [real[k] for k in sorted(included)]
+
+
+def choose(path: str, launch: Iterable[str] = (), args: Mapping[str, str] | None = None,
+           environment: Mapping[str, str] | None = None) -> Choice:
+    """The project for ``path`` (a workspace or package folder, or a launch file)
+    without a project file. Raises ``ProjectError`` when there is nothing to analyse."""
+    env = dict(os.environ if environment is None else environment)
+    given = dict(args or {})
+    if not os.path.exists(path):
+        raise ProjectError(path, 0, 0, "no such file or folder")
+    chosen_files = [os.path.abspath(p) for p in launch]
+    if os.path.isfile(path):
+        if not is_launch_file(path):
+            raise ProjectError(path, 0, 0, "not a project file (.yaml), a launch file or "
+                                           "a folder")
+        chosen_files = [os.path.abspath(path), *chosen_files]
+    folder = workspace_of(path)
+    if os.path.isdir(path):
+        top = os.path.abspath(path)
+        src = os.path.join(top, "src")
+        folder = src if os.path.isdir(src) else top
+    workspace = scan([folder], env)
+    if not workspace.packages:
+        raise ProjectError(path, 0, 0, f"no ROS package (package.xml) under {folder}")
+    named = os.path.abspath(path if os.path.isdir(path) else folder)
+    if os.path.basename(named) == "src":  # a workspace is known by the folder above src/
+        named = os.path.dirname(named)
+    name = os.path.basename(named) or "workspace"
+    project = Project(name=name, path=os.path.join(folder, ".haros-arch"),
+                      workspace=[folder])
+    choice = Choice(project)
+    if chosen_files:
+        missing = [f for f in chosen_files if not os.path.isfile(f)]
+        if missing:
+            raise ProjectError(missing[0], 0, 0, "launch file not found")
+        roots = chosen_files
+    else:
+        files = find_launch_files(workspace)
+        if len(files) >= MAX_LAUNCH_FILES:
+            choice.notes.append(f"more than {MAX_LAUNCH_FILES} launch files: only the "
+                                "first are considered (choose with --launch)")
+        roots, included = root_launch_files(files, workspace, env)
+        choice.notes.append(f"{len(workspace.packages)} packages in {folder}; "
+                            f"{len(files)} launch files, {len(included)} included by "
+                            f"others, {len(roots)} configurations (one per launch file "
+                            "no other includes, arguments at their defaults)")
+    taken: set[str] = set()
+    for file in roots:
+        spec = ConfigurationSpec(_config_name(file, workspace, taken),
+                                 [_entry(file, workspace)], dict(given))
+        project.configurations.append(spec)
+    if not project.configurations:
+        choice.notes.append("no launch file found: only the packages' nodes are analysed")
+    return choice
+
+
+def project_text(choice: Choice) -> str:
+    """The chosen project as a project file (for ``haros-arch init``)."""
+    project = choice.project
+    data: dict[str, object] = {"project": project.name}
+    folder = os.path.dirname(project.path)
+    data["workspace"] = os.path.relpath(project.workspace[0], folder) if project.workspace \
+        else "."
+    configurations: dict[str, object] = {}
+    for spec in project.configurations:
+        entry: dict[str, object] = {"launch": list(spec.launch)}
+        if spec.args:
+            entry["args"] = dict(spec.args)
+        configurations[spec.name] = entry
+    data["configurations"] = configurations
+    head = ("# haros-arch project file, written by 'haros-arch init'. One configuration per\n"
+            "# launch file that no other launch file includes, arguments at their defaults;\n"
+            "# edit freely (see README.md, 'Project file').\n%YAML 1.1\n---\n")
+    return head + yaml.safe_dump(data, sort_keys=False, default_flow_style=False)
+
+
+# what the command line chose for paths that are not project files (--launch, --arg)
+_selection: tuple[tuple[str, ...], tuple[tuple[str, str], ...]] = ((), ())
+_chosen: dict[tuple[object, ...], Choice] = {}
+
+
+def select(launch: Iterable[str] = (), args: Mapping[str, str] | None = None) -> None:
+    """Set the launch files and arguments that ``open_project`` uses for a path that is
+    not a project file (the command line's ``--launch`` and ``--arg``)."""
+    global _selection
+    _selection = (tuple(launch), tuple(sorted((args or {}).items())))
+
+
+def open_choice(path: str) -> Choice:
+    """The project for ``path``: a project file is loaded; a folder or a launch file is
+    chosen as ``choose`` does, once per process (commands ask more than once)."""
+    from .project import load
+
+    if is_project_file(path):
+        project = load(path)
+        launch, args = _selection
+        for spec in project.configurations:
+            spec.args.update(dict(args))
+        return Choice(project)
+    key = (os.path.abspath(path), *_selection)
+    if key not in _chosen:
+        launch, args = _selection
+        _chosen[key] = choose(path, launch, dict(args))
+    return _chosen[key]
+
+
+def open_project(path: str) -> Project:
+    return open_choice(path).project

@@ -1,0 +1,211 @@
+"""Permissive declarations for the names clang does not know, so that one unknown name
+(a vendor library's type, a namespace whose header is missing, an unknown base class or
+template) does not make a node's class invalid and cost it every call.
+
+From the errors of a parse (``unknown type name 'X'``, ``use of undeclared identifier
+'ns'``, ``no type named 'Y' in namespace 'ns'``, ``no template named 'T'``, ``expected
+class name``, ``no member named 'm' in 'Synthesised'``) and the source text at each
+error, ``Names`` collects what each unknown name is used as: a scope (``ns::``), a type,
+a template (``T<``), a value. ``Names.header()`` renders them over one class,
+``haros_any``, that can be built from anything, converts to anything, and has every
+member it was asked for (static members of its own type, so ``obj.m(args)``,
+``ptr->m`` and ``m`` as a value all parse); scopes become namespaces, or nested classes
+when the name is also a type. The header is prepended to the unit (``-include``) and the
+unit parsed again, for at most ``MAX_ROUNDS`` rounds, while the errors go down.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterable
+from dataclasses import dataclass, field
+
+MAX_ROUNDS = 3  # extra parses of a unit with unknown names (0: no synthesis)
+MAX_NAMES = 400  # names declared for one unit
+HEADER_NAME = "haros_synthesised_names.h"
+
+_IDENT = re.compile(rb"[A-Za-z_]\w*")
+_NAME_AT = re.compile(rb"[A-Za-z_]\w*(?:\s*::\s*(?:template\s+)?[A-Za-z_]\w*)*")
+_SCOPE_BEFORE = re.compile(rb"(?:[A-Za-z_]\w*\s*::\s*)+$")
+_KEYWORDS = frozenset({
+    "const", "volatile", "unsigned", "signed", "int", "long", "short", "char", "bool",
+    "double", "float", "void", "auto", "struct", "class", "typename", "template",
+    "namespace", "public", "private", "protected", "virtual", "static", "return", "new",
+    "delete", "operator", "this", "using", "typedef", "enum", "union", "if", "else",
+    "for", "while", "do", "switch", "case", "default", "break", "continue", "sizeof",
+    "true", "false", "nullptr", "decltype", "inline", "extern", "constexpr", "final",
+    "override", "noexcept", "std", "haros_any"})
+
+# message -> (how the name at the location is used: "type", "template", "any")
+_MESSAGES: tuple[tuple[re.Pattern[str], str], ...] = (
+    (re.compile(r"^unknown type name '([\w:]+)'"), "type"),
+    (re.compile(r"^no type named '(\w+)' in namespace '([\w:]+)'"), "type"),
+    (re.compile(r"^no template named '(\w+)' in namespace '([\w:]+)'"), "template"),
+    (re.compile(r"^no template named '(\w+)'$"), "template"),
+    (re.compile(r"^use of undeclared identifier '(\w+)'"), "any"),
+    (re.compile(r"^no member named '(\w+)' in namespace '([\w:]+)'"), "any"),
+    (re.compile(r"^expected class name$"), "type"),
+    (re.compile(r"^unknown class name '(\w+)'"), "type"),
+)
+_MEMBER = re.compile(r"^no member named '(\w+)' in '(?:(?:struct|class) )?([\w:]+)'")
+
+# binary operators for any operand of a synthesised class (and nothing else)
+_OPERATORS = "template <bool C, class R> struct haros_if {};\n" \
+    "template <class R> struct haros_if<true, R> { typedef R type; };\n" + "".join(
+        f"template <class A, class B> typename haros_if<__is_base_of(haros_any, A) || "
+        f"__is_base_of(haros_any, B), {r}>::type operator{o}(const A &, const B &);\n"
+        for r, ops in (("haros_any", "+ - / % | ^ & *"), ("bool", "== != < > <= >= && ||"))
+        for o in ops.split())
+
+_PRELUDE = """\
+// haros_arch: permissive declarations of names the parse did not know
+#pragma clang system_header
+struct haros_any {
+  template <class... A> haros_any(A &&...) {}
+  template <class T> operator T &() const;
+  haros_any *operator->() const;
+  haros_any &operator*() const;
+  template <class... A> haros_any &operator()(A &&...) const;
+  template <class A> haros_any &operator[](A &&) const;
+  template <class A> haros_any &operator=(A &&);
+  haros_any &operator++(); haros_any &operator--();
+  haros_any &operator++(int); haros_any &operator--(int);
+  bool operator!() const;
+%s};
+%s"""
+
+
+@dataclass
+class _Name:
+    """One unknown name (or a known namespace enclosing some) and its uses."""
+
+    uses: set[str] = field(default_factory=set)  # scope, type, template, value
+    known: bool = False  # a real namespace, reopened
+    children: dict[str, _Name] = field(default_factory=dict)
+
+
+class Names:
+    """The unknown names of one translation unit, collected over the rounds."""
+
+    def __init__(self) -> None:
+        self.root = _Name(known=True)
+        self.members: set[str] = set()
+        self.count = 0
+
+    def learn(self, errors: Iterable[tuple[str, bytes | None, int]]) -> bool:
+        """Read ``(message, source bytes of its file, byte offset)`` errors; True when a
+        name was learnt that was not known before."""
+        before = (self.count, len(self.members))
+        for message, text, offset in errors:
+            if self.count >= MAX_NAMES:
+                break
+            self._learn_one(message, text, offset)
+        return (self.count, len(self.members)) != before
+
+    def _learn_one(self, message: str, text: bytes | None, offset: int) -> None:
+        member = _MEMBER.match(message)
+        if member is not None and "namespace" not in message:
+            if self._synthesised(member.group(2)) and member.group(1) not in _KEYWORDS:
+                self.members.add(member.group(1))
+            return
+        for pattern, use in _MESSAGES:
+            match = pattern.match(message)
+            if match is None:
+                continue
+            if text is None:
+                return
+            scope = match.group(2).split("::") if match.lastindex == 2 else []
+            self._from_source(text, offset, use, scope)
+            return
+
+    def _from_source(self, text: bytes, offset: int, use: str, scope: list[str]) -> None:
+        """The qualified name written at ``offset``: the unknown part and what follows."""
+        found = _NAME_AT.match(text, offset)
+        if found is None:
+            return
+        written = [p.strip().removeprefix(b"template").strip().decode()
+                   for p in found.group(0).split(b"::")]
+        if not scope:  # the known scope written before the name: ``known::``
+            before = _SCOPE_BEFORE.search(text[max(0, offset - 200):offset])
+            if before is not None:
+                scope = [p.strip().decode() for p in before.group(0).split(b"::") if p.strip()]
+                if "std" in scope:
+                    return  # never reopen the standard library
+        if any(p in _KEYWORDS for p in written) or any(p in _KEYWORDS for p in scope):
+            return
+        rest = text[found.end():found.end() + 2]
+        last = self._last_use(use, rest)
+        node = self.root
+        for part in scope:
+            node = node.children.setdefault(part, _Name(known=True))
+        for i, part in enumerate(written):
+            if part not in node.children:
+                node.children[part] = _Name()
+                self.count += 1
+            node = node.children[part]
+            if not node.known:
+                node.uses.add("scope" if i < len(written) - 1 else last)
+
+    @staticmethod
+    def _last_use(use: str, after: bytes) -> str:
+        if after.startswith(b"<"):
+            return "template"
+        if use != "any":
+            return use
+        rest = after.lstrip()
+        if not rest or rest[:1] in b"(){},>&*" or _IDENT.match(rest):
+            return "type"
+        return "value"
+
+    def _synthesised(self, qualified: str) -> bool:
+        if qualified == "haros_any":
+            return True
+        node = self.root
+        for part in qualified.split("::"):
+            if part not in node.children:
+                return False
+            node = node.children[part]
+        return not node.known
+
+    def header(self) -> str:
+        members = "".join(f"  static haros_any {m};\n" for m in sorted(self.members))
+        lines = [_PRELUDE % (members, _OPERATORS)]
+        for name, node in sorted(self.root.children.items()):
+            lines.extend(_render(name, node, "", nested=False))
+        return "\n".join(lines) + "\n"
+
+    def first(self, limit: int = 5) -> list[str]:
+        """The qualified names of the first few declared names."""
+        found: list[str] = []
+        stack = [("", self.root)]
+        while stack and len(found) < limit:
+            prefix, node = stack.pop(0)
+            for name, child in node.children.items():
+                qualified = f"{prefix}{name}"
+                if not child.known and len(found) < limit:
+                    found.append(qualified)
+                stack.append((qualified + "::", child))
+        return found
+
+    def __bool__(self) -> bool:
+        return bool(self.count or self.members)
+
+
+def _render(name: str, node: _Name, indent: str, nested: bool) -> list[str]:
+    space = _is_namespace(node) and not nested
+    inner: list[str] = []
+    for child, sub in sorted(node.children.items()):
+        inner.extend(_render(child, sub, indent + "  ", nested=not space))
+    if space:
+        return [f"{indent}namespace {name} {{", *inner, f"{indent}}}"]
+    if node.uses == {"value"}:
+        return [f"{indent}{'static ' if nested else 'extern '}haros_any {name};"]
+    head = "template <class... T> " if "template" in node.uses else ""
+    return [f"{indent}{head}struct {name} : haros_any {{",
+            f"{indent}  using haros_any::haros_any;",
+            f"{indent}  using haros_any::operator=;",
+            *inner, f"{indent}}};"]
+
+
+def _is_namespace(node: _Name) -> bool:
+    return node.known or node.uses <= {"scope"}

@@ -1,0 +1,138 @@
+"""No project file: a workspace folder or a launch file is analysed as a user would."""
+
+from __future__ import annotations
+
+import json
+import textwrap
+from pathlib import Path
+
+import pytest
+
+from haros_arch.autoproject import choose, is_launch_file, workspace_of
+from haros_arch.cli import main
+from haros_arch.project import ProjectError, load
+
+ROS1_PKG = """<package format="2"><name>{name}</name><version>0.1.0</version>
+<description>d</description><maintainer email="a@b.c">a</maintainer><license>BSD</license>
+<buildtool_depend>catkin</buildtool_depend></package>"""
+ROS2_PKG = """<package format="3"><name>{name}</name><version>0.1.0</version>
+<description>d</description><maintainer email="a@b.c">a</maintainer><license>BSD</license>
+<buildtool_depend>ament_cmake</buildtool_depend>
+<export><build_type>ament_cmake</build_type></export></package>"""
+
+
+def write(path: Path, text: str) -> Path:
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(textwrap.dedent(text))
+    return path
+
+
+@pytest.fixture()
+def ws(tmp_path: Path) -> Path:
+    src = tmp_path / "robot_ws" / "src"
+    bringup = src / "bringup"
+    write(bringup / "package.xml", ROS1_PKG.format(name="bringup"))
+    write(bringup / "CMakeLists.txt", "project(bringup)\n")
+    write(bringup / "launch" / "robot.launch", """\
+        <launch>
+          <arg name="model" default="small"/>
+          <include file="$(find bringup)/launch/base.launch"/>
+          <include file="$(find drivers)/launch/laser.launch.xml"/>
+        </launch>""")
+    write(bringup / "launch" / "base.launch", """\
+        <launch><node pkg="bringup" type="base_node" name="base"/></launch>""")
+    write(bringup / "launch" / "sim.launch", """\
+        <launch><node pkg="bringup" type="sim_node" name="sim"/></launch>""")
+    drivers = src / "drivers"
+    write(drivers / "package.xml", ROS1_PKG.format(name="drivers"))
+    write(drivers / "CMakeLists.txt", "project(drivers)\n")
+    # a ROS 1 file with the .launch.xml suffix, reached only through an include
+    write(drivers / "launch" / "laser.launch.xml", """\
+        <launch><node pkg="drivers" type="laser" name="laser"/></launch>""")
+    rover = src / "rover"
+    write(rover / "package.xml", ROS2_PKG.format(name="rover"))
+    write(rover / "CMakeLists.txt", "project(rover)\n"
+          "install(DIRECTORY launch DESTINATION share/${PROJECT_NAME})\n")
+    write(rover / "launch" / "rover.launch.py", """\
+        import os
+        from ament_index_python.packages import get_package_share_directory
+        from launch import LaunchDescription
+        from launch.actions import IncludeLaunchDescription
+        from launch.launch_description_sources import PythonLaunchDescriptionSource
+
+        def generate_launch_description():
+            share = get_package_share_directory('rover')
+            return LaunchDescription([IncludeLaunchDescription(PythonLaunchDescriptionSource(
+                os.path.join(share, 'launch', 'drive_launch.py')))])
+        """)
+    write(rover / "launch" / "drive_launch.py", """\
+        from launch import LaunchDescription
+        from launch_ros.actions import Node
+
+        def generate_launch_description():
+            return LaunchDescription([Node(package='rover', executable='drive', name='drive')])
+        """)
+    write(rover / "launch" / "notes.py", "print('not a launch file')\n")
+    return tmp_path / "robot_ws"
+
+
+def test_workspace_gives_one_configuration_per_top_launch_file(ws: Path) -> None:
+    choice = choose(str(ws), environment={})
+    configs = {c.name: c.launch for c in choice.project.configurations}
+    assert configs == {"bringup/robot": ["bringup/launch/robot.launch"],
+                       "bringup/sim": ["bringup/launch/sim.launch"],
+                       "rover/rover": ["rover/launch/rover.launch.py"]}
+    assert choice.project.name == "robot_ws"
+    assert choice.project.workspace == [str(ws / "src")]
+    assert "3 included by others, 3 configurations" in choice.notes[0]
+
+
+def test_launch_file_is_the_configuration_and_finds_its_workspace(ws: Path) -> None:
+    launch = ws / "src" / "rover" / "launch" / "drive_launch.py"
+    assert workspace_of(str(launch)) == str(ws / "src")
+    choice = choose(str(launch), args={"x": "1"}, environment={})
+    [config] = choice.project.configurations
+    assert config.launch == ["rover/launch/drive_launch.py"] and config.args == {"x": "1"}
+
+
+def test_launch_file_detection(ws: Path) -> None:
+    folder = ws / "src" / "rover" / "launch"
+    assert is_launch_file(str(folder / "drive_launch.py"))
+    assert not is_launch_file(str(folder / "notes.py"))
+
+
+def test_not_a_workspace(tmp_path: Path) -> None:
+    with pytest.raises(ProjectError, match="no ROS package"):
+        choose(str(tmp_path), environment={})
+
+
+def test_check_and_extract_take_a_folder(ws: Path, tmp_path: Path, capsys) -> None:
+    out = tmp_path / "model.json"
+    assert main(["extract", str(ws), "-o", str(out), "--no-cache", "-q"]) == 0
+    data = json.loads(out.read_text())
+    names = {c["name"]: sorted(n["name"] for n in c["nodes"]) for c in data["configurations"]}
+    assert names == {"bringup/robot": ["/base", "/laser"], "bringup/sim": ["/sim"],
+                     "rover/rover": ["/drive"]}
+    assert main(["check", str(ws), "--fail-on", "never", "--no-cache",
+                 "--launch", str(ws / "src" / "bringup" / "launch" / "sim.launch")]) == 0
+    said = capsys.readouterr()
+    assert "configuration bringup/sim" in said.err
+
+
+def test_init_writes_a_project_file_that_loads(ws: Path, tmp_path: Path) -> None:
+    target = tmp_path / "project.yaml"
+    assert main(["init", str(ws), "-o", str(target), "--arg", "model:=big"]) == 0
+    project = load(str(target))
+    assert project.workspace == [str(ws / "src")]
+    assert [c.name for c in project.configurations] == ["bringup/robot", "bringup/sim",
+                                                         "rover/rover"]
+    assert all(c.args == {"model": "big"} for c in project.configurations)
+
+
+def test_explain_takes_rule_ids(capsys) -> None:
+    assert main(["explain", "parameter-set-not-read"]) == 0
+    assert "Parameter set but never read" in capsys.readouterr().out
+    assert main(["explain", "no-such-thing"]) == 2
+    assert main(["explain"]) == 0
+    listing = capsys.readouterr().out
+    assert "LAUNCH_UNKNOWN_TAG" in listing and "topic-type-mismatch" in listing

@@ -1,0 +1,65 @@
+"""CMake growth and depth are bounded: each hostile file ends quickly with a CMAKE_LIMIT
+diagnostic at its line, and what came before it is kept."""
+
+from __future__ import annotations
+
+import time
+
+import pytest
+
+from haros_arch.cmake import listops
+from haros_arch.cmake.interpreter import Interpreter
+from haros_arch.cmake.lexer import tokenize
+
+PREFIX = "project(p)\nadd_executable(kept src/kept.cpp)\n"
+
+CASES = {
+    "nested ifs": ("if(TRUE)\n" * 3000 + "endif()\n" * 3000, "nested deeper"),
+    "nested foreach": ("foreach(i a)\n" * 3000 + "endforeach()\n" * 3000, "nested deeper"),
+    "list doubling": ("set(a x)\nforeach(i RANGE 200)\n  list(APPEND a ${a})\nendforeach()\n",
+                      "arguments expand"),
+    "macro ARGN doubling": ("macro(m)\n  set(a ${ARGN} ${ARGN})\n  m(${a})\nendmacro()\n"
+                            "set(a x y)\nm(${a})\n", "arguments expand"),
+    "string doubling": ("set(s " + "x" * 60 + ")\nforeach(i RANGE 60)\n"
+                        "  string(APPEND s ${s})\nendforeach()\n", "grew past"),
+    "cache doubling": ("set(s " + "x" * 60 + ")\nforeach(i RANGE 60)\n"
+                       "  set(s ${s}${s} CACHE STRING \"\" FORCE)\n  set(s ${s}${s})\n"
+                       "endforeach()\n", "grew past"),
+}
+
+
+def run(text: str) -> Interpreter:
+    it = Interpreter("/pkg", {})
+    it.run_file(tokenize(text, "CMakeLists.txt"))
+    return it
+
+
+@pytest.mark.parametrize("case", sorted(CASES))
+def test_growth_and_depth_end_with_a_limit(case: str) -> None:
+    body, detail = CASES[case]
+    started = time.monotonic()
+    it = run(PREFIX + body)
+    assert time.monotonic() - started < 5
+    limits = [d for d in it.diagnostics if d.code == "CMAKE_LIMIT"]
+    assert len(limits) == 1 and detail in limits[0].message
+    assert limits[0].location.line > 2
+    assert "kept" in it.targets  # what came before the limit is kept
+
+
+def test_regex_past_its_time_bound_leaves_the_value_unknown(monkeypatch) -> None:
+    # a pattern that backtracks on any engine given a small enough bound
+    monkeypatch.setattr(listops, "REGEX_SECONDS", 0.000001)
+    text = ("set(s " + "a" * 5000 + "c)\nset(out before)\n"
+            "string(REGEX MATCH \"(a|aa)*(b|c)$\" out ${s})\n")
+    it = run(PREFIX + text)
+    assert it.get("out") is None
+    assert [d.code for d in it.diagnostics] == ["CMAKE_LIMIT"]
+
+
+def test_regex_still_works() -> None:
+    it = run("string(REGEX REPLACE \"([a-z]+)_([0-9]+)\" \"\\\\2-\\\\1\" out \"node_42\")\n"
+             "list(APPEND l a1 b2 a3)\nlist(FILTER l INCLUDE REGEX \"^a\")\n"
+             "if(\"abc\" MATCHES \"^a.c$\")\n  set(m yes)\nendif()\n")
+    assert it.get("out") == "42-node"
+    assert it.get("l") == "a1;a3"
+    assert it.get("m") == "yes"

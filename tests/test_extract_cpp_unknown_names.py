@@ -1,0 +1,146 @@
+"""Names the stand-in headers do not know never stop a run nor cost a node its calls:
+fixtures/cpp/unknown_names."""
+
+from __future__ import annotations
+
+import os
+
+import pytest
+
+from haros_arch.extract import extract_nodes
+from haros_arch.extract.cpp import CppResult, extract_cpp, synthesis
+from haros_arch.manifest import ros_version
+from haros_arch.model.source import Dependency, Node, Package
+from haros_arch.workspace import scan
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.join(os.path.dirname(HERE), "fixtures", "cpp", "unknown_names")
+SOURCES = os.path.join(ROOT, "src", "vendor_node", "src")
+
+
+def extract(name: str) -> CppResult:
+    return extract_cpp([os.path.join(SOURCES, name)], scan([ROOT]), cache_dir=None, jobs=1)
+
+
+def rows(result: CppResult) -> list[tuple[str, str, str | None, int]]:
+    return [(c.kind, c.name, c.type, c.location.line) for c in result.calls]
+
+
+def codes(result: CppResult) -> list[str]:
+    return [d.code for d in result.diagnostics]
+
+
+def test_unbound_name_in_a_value_is_unknown_not_a_crash() -> None:
+    result = extract("unbound_name.cpp")
+    assert ("publish", "?", "std_msgs/msg/String", 11) in rows(result)
+
+
+def test_qt_module_headers_beside_their_folders() -> None:
+    result = extract("qt_umbrella.cpp")
+    assert rows(result) == [("publish", "frames", "std_msgs/msg/String", 13)]
+    assert "CPP_INCLUDE_MISSING" not in codes(result)
+    assert "CPP_PARSE_ERROR" not in codes(result)
+
+
+def test_unknown_vendor_type_costs_no_call() -> None:
+    result = extract("vendor_member.cpp")
+    assert rows(result) == [
+        ("declare", "gain", "double", 13),
+        ("publish", "out", "std_msgs/msg/String", 14),
+        ("subscribe", "in", "std_msgs/msg/String", 15),
+    ]
+    assert "CPP_PARSE_ERROR" not in codes(result)
+    assert "CPP_NAMES_DECLARED" in codes(result)
+
+
+def test_names_are_declared_as_they_are_used() -> None:
+    names = synthesis.Names()
+    text = (b"class A : public vendor::Base {};\nvendor::Tmpl<int> t;\nUnknown u;\n"
+            b"int x = ns::CONSTANT;\n")
+    names.learn([
+        ("use of undeclared identifier 'vendor'", text, text.index(b"vendor")),
+        ("use of undeclared identifier 'vendor'", text, text.index(b"vendor::Tmpl")),
+        ("unknown type name 'Unknown'", text, text.index(b"Unknown")),
+        ("use of undeclared identifier 'ns'", text, text.index(b"ns::")),
+        ("no member named 'apply' in 'vendor::Base'", None, 0),
+    ])
+    header = names.header()
+    assert "namespace vendor {" in header
+    assert "struct Base : haros_any {" in header
+    assert "template <class... T> struct Tmpl : haros_any {" in header
+    assert "struct Unknown : haros_any {" in header
+    assert "extern haros_any CONSTANT;" in header
+    assert "static haros_any apply;" in header
+
+
+def test_unresolved_calls_are_kept_by_name() -> None:
+    result = extract("invalid_object.cpp")
+    assert rows(result) == [
+        ("declare", "rate", "double", 11),
+        ("publish", "status", "vendor_msgs/msg/Status", 12),
+        ("publish", "frames", "?", 13),
+    ]
+    assert codes(result).count("CPP_CALL_UNRESOLVED") == 3
+
+
+def test_completeness_of_nodes() -> None:
+    workspace = scan([ROOT])
+    base = "src/vendor_node/src/"
+    clean = Node("vendor_node", "filtered", sources=[base + "vendor_member.cpp"])
+    broken = Node("vendor_node", "helper", sources=[base + "invalid_object.cpp"])
+    nothing = Node("vendor_node", "ghost", sources=[])
+    found = extract_nodes([clean, broken, nothing], workspace, cache_dir=None, jobs=1)
+    assert (clean.completeness, clean.completeness_reasons) == ("complete", [])
+    assert broken.completeness == "partial"
+    assert broken.completeness_reasons[0].startswith(base + "invalid_object.cpp:9: ")
+    assert nothing.completeness == "unknown"
+    partial = [d for d in found if d.code == "CPP_NODE_PARTIAL"]
+    assert [(d.severity, "vendor_node/helper" in d.message) for d in partial] == [
+        ("warning", True)]
+
+
+def test_completeness_of_python_nodes(tmp_path) -> None:
+    package = tmp_path / "src" / "py_node"
+    (package / "scripts").mkdir(parents=True)
+    (package / "package.xml").write_text(
+        '<package format="2"><name>py_node</name><version>0.0.1</version>'
+        '<description>d</description><maintainer email="a@b.c">m</maintainer>'
+        "<license>BSD</license></package>\n")
+    (package / "scripts" / "good.py").write_text(
+        "import rospy\nrospy.init_node('good')\nrospy.Publisher('out', String)\n")
+    (package / "scripts" / "bad.py").write_text("import rospy\ndef broken(:\n")
+    workspace = scan([str(tmp_path / "src")])
+    good = Node("py_node", "good.py", language="python", sources=["py_node/scripts/good.py"])
+    bad = Node("py_node", "bad.py", language="python", sources=["py_node/scripts/bad.py"])
+    found = extract_nodes([good, bad], workspace, cache_dir=None)
+    assert (good.completeness, bad.completeness) == ("complete", "partial")
+    assert bad.completeness_reasons[0].startswith("py_node/scripts/bad.py:2")
+    assert [d.code for d in found if d.code.endswith("NODE_PARTIAL")] == ["PY_NODE_PARTIAL"]
+
+
+def test_parameter_forms_of_real_nodes() -> None:
+    result = extract("parameters.cpp")
+    assert [(c.kind, c.name, c.type, c.has_default, c.default) for c in result.calls] == [
+        ("declare", "gain", "double", False, None),
+        ("declare", "frame_id", "str", True, "map"),
+        ("declare", "map_file", None, True, None),
+        ("declare", "limits.?", None, False, None),
+        ("read", "retries", "int", True, 3),
+        ("read", "mode", "str", False, None),
+    ]
+    assert "CPP_PARSE_ERROR" not in codes(result)
+
+
+def test_ros_version_comes_from_the_package() -> None:
+    result = extract("tf_only.cpp")
+    assert rows(result) == [("publish", "/tf", "tf2_msgs/msg/TFMessage", 14)]
+
+
+@pytest.mark.parametrize(("build_type", "depends", "version"), [
+    ("ament_cmake", [], 2), ("ament_python", [], 2), ("cmake", ["rclcpp"], 2),
+    ("catkin", ["roscpp"], 1), ("cmake", ["catkin"], 1), ("cmake", ["eigen"], None),
+])
+def test_package_ros_version(build_type: str, depends: list[str], version: int | None) -> None:
+    package = Package("p", "p", build_type=build_type,  # type: ignore[arg-type]
+                      dependencies=[Dependency(d, "depend") for d in depends])
+    assert ros_version(package) == version

@@ -1,0 +1,70 @@
+"""Hostile files end with a clear message, never a hang or a traceback: FIFOs where a
+project file or package.xml belongs, YAML and JSON nested thousands deep, saved models whose
+fields have the wrong types."""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+from conftest import package_xml
+
+from haros_arch.cli import main
+from haros_arch.workspace import scan
+
+
+def run_cli(*args: str, timeout: float = 30) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, "-m", "haros_arch.cli", *args], capture_output=True,
+                          text=True, timeout=timeout)
+
+
+@pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="needs FIFOs")
+def test_fifo_project_file_is_refused_not_waited_on(tmp_path: Path) -> None:
+    fifo = tmp_path / "project.yaml"
+    os.mkfifo(fifo)
+    done = run_cli("check", str(fifo))
+    assert done.returncode == 2
+    assert "not a regular file" in done.stderr
+
+
+@pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="needs FIFOs")
+def test_fifo_in_the_workspace_is_a_diagnostic(tmp_path: Path) -> None:
+    good = tmp_path / "src" / "good"
+    good.mkdir(parents=True)
+    (good / "package.xml").write_text(package_xml("good"))
+    bad = tmp_path / "src" / "bad"
+    bad.mkdir()
+    os.mkfifo(bad / "package.xml")
+    workspace = scan([str(tmp_path / "src")], {})
+    assert sorted(workspace.packages) == ["good"]
+    assert any("not a regular file" in d.message for d in workspace.diagnostics)
+
+
+def test_deep_project_file(tmp_path: Path, capsys) -> None:
+    deep = tmp_path / "project.yaml"
+    deep.write_text("nodes: " + "[" * 20000 + "]" * 20000 + "\n")
+    assert main(["check", str(deep)]) == 2
+    assert "nested too deep" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("document", [
+    {"schema": "haros-arch/1", "packages": [{"name": "p", "nodes": ["not an object"]}]},
+    {"schema": "haros-arch/1", "configurations": [{"name": "c", "nodes": 5}]},
+    {"schema": "haros-arch/1", "configurations": [{"name": "c", "links": [{"location": 3}]}]},
+])
+def test_model_with_wrong_field_types(tmp_path: Path, capsys, document: dict) -> None:
+    saved = tmp_path / "model.json"
+    saved.write_text(json.dumps(document))
+    assert main(["query", "--model", str(saved), "configs"]) == 2
+    assert "not a haros-arch model" in capsys.readouterr().err
+
+
+def test_model_nested_too_deep(tmp_path: Path, capsys) -> None:
+    saved = tmp_path / "model.json"
+    saved.write_text('{"configurations": ' + "[" * 100000 + "]" * 100000 + "}")
+    assert main(["query", "--model", str(saved), "configs"]) == 2
+    assert main(["report", "--model", str(saved), "-o", str(tmp_path / "r.html")]) == 2
