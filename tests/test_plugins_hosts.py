@@ -43,6 +43,7 @@ def test_move_base_gets_planner_recovery_and_costmap_layer_calls_under_their_nam
     move_base = Node("move_base", "move_base", calls=[call("publish", "~goal")])
     navfn = plugin("navfn", "navfn/NavfnROS", "navfn::NavfnROS",
                    call("publish", "~?/plan", "nav_msgs/Path", handle_namespace="~?"),
+                   call("publish", "?", "nav_msgs/Path"),  # unknown: stays unknown
                    call("read", "~?/tolerance", "double", handle_namespace="~?"))
     recovery = plugin("rec", "rec/Spin", "rec::Spin", call("read", "~?/speed", "double"))
     trajectory = plugin("base_local_planner", "base_local_planner/TrajectoryPlannerROS",
@@ -63,6 +64,7 @@ def test_move_base_gets_planner_recovery_and_costmap_layer_calls_under_their_nam
     config = graph([NodeDecl("/move_base", "move_base", "move_base")], params,
                    [move_base, navfn, recovery, static, trajectory])
     assert links_of(config, "/move_base") == [
+        ("publish", "/?"),
         ("publish", "/move_base/NavfnROS/plan"),
         # not set: move_base's default local planner, initialised with its short name
         ("publish", "/move_base/TrajectoryPlannerROS/local_plan"),
@@ -173,3 +175,18 @@ def test_spawner_arguments_are_read_as_its_argparse_does():
     assert (spawn.controllers, spawn.manager, spawn.param_files, spawn.controller_type,
             spawn.ros_args) == (["a", "b"], "/x/cm", ["/p.yaml"], "pkg/T",
                                 ["-r", "~/in:=/out"])
+
+
+def test_framework_calls_a_plugin_shares_with_its_host_are_made_once():
+    # nav2 plugins include the host's LifecycleNode header: its calls are the host's
+    shared = call("read", "use_sim_time", "bool", line=40)
+    server = Node("nav2_smoother", "smoother_server", calls=[shared])
+    first = plugin("s", "s/A", "s::A", shared, call("declare", "?.tolerance", "double"))
+    second = plugin("s", "s/B", "s::B", shared)
+    config = graph([ros2(NodeDecl("/smoother_server", "nav2_smoother", "smoother_server"))],
+                   [ParamDecl("/smoother_server/smoother_plugins", ["a", "b"]),
+                    ParamDecl("/smoother_server/a.plugin", "s/A"),
+                    ParamDecl("/smoother_server/b.plugin", "s/B")], [server, first, second])
+    reads = [link.resource.name for link in config.links if link.kind == "read"]
+    assert reads.count("/smoother_server/use_sim_time") == 1
+    assert "/smoother_server/a.tolerance" in reads

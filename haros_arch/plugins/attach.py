@@ -78,6 +78,7 @@ def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance
     instances are added to ``config.nodes``, problems to ``config.diagnostics``."""
     index = plugin_index(nodes)
     owned: set[int] = set()  # instances that have their own copy of their node model
+    made: dict[int, set[tuple[Any, ...]]] = {}  # per host instance: calls it has
     out: list[tuple[NodeInstance, list[PrimitiveCall]]] = []
     for decl, instance in started:
         host = host_of(decl.package, decl.executable, decl.ros_version)
@@ -97,10 +98,32 @@ def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance
                     reader = _plugin_instance(instance, choice, node, config)
                     out.append((reader, list(node.calls)))
                 else:
-                    out.append((instance, [_under(call, slot.prefix + _given(choice, slot),
-                                                  choice.conditions) for call in node.calls]))
+                    calls = [_under(call, slot.prefix + _given(choice, slot),
+                                    choice.conditions) for call in node.calls]
+                    out.append((instance, _new(calls, instance, made)))
                 out.extend(_loading_reads(choice, instance, reader))
     return out
+
+
+def _new(calls: list[PrimitiveCall], host: NodeInstance,
+         made: dict[int, set[tuple[Any, ...]]]) -> list[PrimitiveCall]:
+    """The calls the host does not make already: a header of the host's framework that a
+    plugin includes (nav2's LifecycleNode) is code the host runs once, not once more per
+    plugin."""
+    seen = made.get(id(host))
+    if seen is None:
+        seen = made[id(host)] = {_key(c) for c in (host.node.calls if host.node else ())}
+    out = []
+    for call in calls:
+        key = _key(call)
+        if key not in seen:
+            seen.add(key)
+            out.append(call)
+    return out
+
+
+def _key(call: PrimitiveCall) -> tuple[Any, ...]:
+    return (call.kind, call.name, call.type, call.location, call.name_param)
 
 
 def _loading_reads(choice: Choice, host: NodeInstance, own: NodeInstance,
@@ -399,7 +422,8 @@ def _named(name: str | None, plugin: str) -> Any:
     for lead in ("~/", "~", ""):
         if name.startswith(lead + UNKNOWN_MARK):
             rest = name[len(lead) + 1:]
-            if not rest or rest[0] in "/.":
+            # a prefix only: a name that is wholly unknown is not the plugin name
+            if rest[:1] in ("/", ".") and len(rest) > 1:
                 return lead + plugin + rest
     return name
 
