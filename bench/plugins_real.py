@@ -8,8 +8,9 @@ twice over the same workspace, with and without plugin attachment, and prints pe
 configuration: the host instances (nodes started as a host of ``plugins.hosts``), the
 plugins resolved (calls attached) and unresolved (PLUGIN_NOT_FOUND /
 PLUGIN_CLASS_UNKNOWN), the node instances plugins added (ros2_control controllers), the
-links added, and the parameters "set but never read" (set by launch, read by no link)
-before and after. ``--list`` prints the resolved plugins and the diagnostics.
+links added, and the parameters "set but never read" (set by launch, read by no link;
+in brackets those of node instances whose interface is complete) before and after.
+``--list`` prints the resolved plugins and the diagnostics.
 """
 
 from __future__ import annotations
@@ -33,9 +34,14 @@ from haros_arch.project import ConfigurationSpec, Project  # noqa: E402
 UNRESOLVED = ("PLUGIN_NOT_FOUND", "PLUGIN_CLASS_UNKNOWN")
 
 
-def set_not_read(config: Configuration) -> int:
-    return sum(1 for p in config.parameters
-               if p.set_by_launch and not p.is_read and "?" not in p.name)
+def set_not_read(config: Configuration) -> str:
+    """Parameters set and never read: all, and those of complete node instances only
+    (what a check that trusts only complete nodes may report)."""
+    never = [p for p in config.parameters
+             if p.set_by_launch and not p.is_read and "?" not in p.name]
+    unsure = [n.name.rstrip("/") + "/" for n in config.nodes if not n.is_complete]
+    trusted = [p for p in never if not p.name.startswith(tuple(unsure))]
+    return f"{len(never)} ({len(trusted)} of complete nodes)"
 
 
 def run(project: Project, jobs: int, enabled: bool,

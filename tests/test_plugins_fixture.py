@@ -47,7 +47,7 @@ def test_move_base_loads_planner_recovery_and_layer_from_the_workspace(layer: st
 
 
 def test_spawned_controller_is_a_node_with_its_parameter_file():
-    config = configuration("bringup/launch/control.launch.xml")
+    config = configuration("ros2_bringup/launch/control.launch.xml")
     follower = config.node("/robot/follower")
     assert follower.origin == "plugin" and follower.node.name == "ros2_ctrl/ros2_ctrl/Follower"
     assert links(config, "/robot/follower") == [

@@ -190,3 +190,21 @@ def test_framework_calls_a_plugin_shares_with_its_host_are_made_once():
     reads = [link.resource.name for link in config.links if link.kind == "read"]
     assert reads.count("/smoother_server/use_sim_time") == 1
     assert "/smoother_server/a.tolerance" in reads
+
+
+def test_a_manager_named_only_by_its_code_serves_the_spawners_of_its_namespace(tmp_path):
+    # launch_ros names the node as ros2_control_node's code does ("controller_manager");
+    # when that is not known the instance is /robot/?, and the spawner's -c default
+    # (controller_manager, in its namespace) still reaches it
+    params = tmp_path / "c.yaml"
+    params.write_text("/robot/controller_manager:\n  ros__parameters:\n"
+                      "    bcast:\n      type: my/Bcast\n")
+    bcast = plugin("my", "my/Bcast", "my::Bcast", call("publish", "joint_states", "x/J"))
+    decls = [ros2(NodeDecl("/robot/?", "controller_manager", "ros2_control_node", "/robot/")),
+             ros2(NodeDecl("/robot/spawner", "controller_manager", "spawner", "/robot/",
+                           args=f"bcast --param-file {params}")),
+             ros2(NodeDecl("/other/spawner", "controller_manager", "spawner", "/other/",
+                           args=f"bcast --param-file {params}"))]
+    config = graph(decls, nodes=[bcast], root=str(tmp_path))
+    assert [n.name for n in config.nodes if n.origin == "plugin"] == ["/robot/bcast"]
+    assert links_of(config, "/robot/bcast") == [("publish", "/robot/joint_states")]

@@ -41,6 +41,7 @@ from ..model.rosname import namespace_of
 from ..model.runtime import Configuration, NodeInstance, Parameter, Resource
 from ..model.source import Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK
+from ..share import share_source
 from ..workspace import Workspace
 from .hosts import SPAWNER, Slot, host_of
 
@@ -329,6 +330,8 @@ def _spawned(host: NodeInstance, started: Sequence[tuple[NodeDecl, NodeInstance]
         documents = [doc for path in spawn.param_files
                      if (doc := _param_file(path, decl, workspace, config)) is not None]
         namespace = host.namespace.rstrip("/")
+        manager = host.name if UNKNOWN_MARK not in host.name else _manager_name(
+            decl, spawn.manager)
         for controller in spawn.controllers[:MAX_PLUGINS]:
             node_name = f"{namespace}/{controller}"
             own: dict[str, Any] = {}
@@ -336,11 +339,11 @@ def _spawned(host: NodeInstance, started: Sequence[tuple[NodeDecl, NodeInstance]
             for document, _ in documents:
                 own.update(params_for_node(document, node_name))
                 managed.update((key, value) for key, value in params_for_node(
-                    document, host.name) if key == f"{controller}.type")
+                    document, manager) if key == f"{controller}.type")
             where = documents[0][1] if documents else decl.location
             _set_params(params, node_name, own, where, instance.conditions)
-            _set_params(params, host.name, managed, where, instance.conditions)
-            typed = _parameter(params, f"{host.name}/{controller}.type")
+            _set_params(params, manager, managed, where, instance.conditions)
+            typed = _parameter(params, f"{manager}/{controller}.type")
             cls = spawn.controller_type or _text(own.get("type")) or (
                 _text(typed.value) if typed else None)
             reads = (f"{node_name}/type",) if "type" in own else (
@@ -356,6 +359,8 @@ def _param_file(path: str, decl: NodeDecl, workspace: Workspace,
     """A spawner's parameter file, read with the safe loader from the workspace only."""
     if UNKNOWN_MARK in path or not os.path.isabs(path):
         return None
+    if not os.path.isfile(path):  # a path in a package's share folder, as installed
+        path = share_source(workspace, path)
     where = workspace.location(path, 1, 0)
     if not os.path.isfile(path) or not workspace.readable(path):
         config.diagnostics.append(diag.make("PLUGIN_PARAM_FILE", decl.location, path=path))
