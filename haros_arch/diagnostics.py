@@ -96,11 +96,13 @@ CATALOGUE: dict[str, Entry] = {
         "builds and no PLUGINLIB_EXPORT_CLASS in a library names the class; the nodelet or "
         "plugin is kept without sources."),
     "PLUGIN_NOT_FOUND": Entry(
-        "warning", "plugin class {plugin} loaded by {host} is not exported by a package of "
-        "the workspace",
+        "warning", "plugin class {plugin} loaded by {host} is not exported by an analysed "
+        "package",
         "A host node (controller manager, nav2 server or costmap, move_base) is told to "
-        "load a plugin class that no package of the workspace exports in a plugin "
-        "description; the host instance is partial: the plugin's calls are unknown."),
+        "load a plugin class that no analysed package exports in a plugin description (it "
+        "comes from an installed package, its package is not among the project file's "
+        "packages, or the name is wrong); the host instance is partial: the plugin's "
+        "calls are unknown."),
     "PLUGIN_CLASS_UNKNOWN": Entry(
         "warning", "the class of plugin {plugin} loaded by {host} is not known",
         "The parameter that gives the plugin's class (``<name>.plugin``, ``<name>.type``, "
