@@ -405,10 +405,11 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
     header = os.path.join(setup.generated, synthesis.HEADER_NAME)
     if synthesis.MAX_ROUNDS < 1 or not names.learn(_located(mine(tu), source)):
         return tu
-    # Errors come in waves: a class made valid shows its other members. The next waves
-    # are found cheaply, without function bodies (the names that make a class invalid
-    # are in declarations), then the unit is parsed in full with all of them (twice when
-    # that shows members of the declared classes used in function bodies).
+    # Errors can come in waves: a class made valid shows its other members. With more
+    # than one round, the next waves are looked for without function bodies (the names
+    # that make a class invalid are in declarations); then the unit is parsed in full
+    # with all the names (twice when that shows members of declared classes used in
+    # function bodies).
     for _round in range(synthesis.MAX_ROUNDS - 1):
         probe = _parse_once(path, [*args, "-include", header],
                             [*unsaved, (header, names.header())], workspace, result,
