@@ -10,7 +10,8 @@ them, and prints: the node instances that took a model (and its completeness), t
 links the models added, the topics they connect between the workspace's nodes and the
 modelled ones, and the "subscriber without publisher" / "publisher without subscriber"
 findings before and after (``--list`` prints the remaining ones, to check against the
-sources).
+sources), with the number the catalogue leaves undecided because a node of partial or
+unknown interface runs in the configuration (and the nodes it names).
 
 Trees (from the mirrors the `fetch` tool brings; see scripts/models-fetch for the
 pinned model sources):
@@ -36,6 +37,7 @@ from haros_arch.model.model import Model
 from haros_arch.pipeline import Options, analyse
 from haros_arch.project import ConfigurationSpec, Project
 from haros_arch.query import run_catalogue
+from haros_arch.query.catalogue import UNDECIDED
 
 ABSENCE = ("subscriber-without-publisher", "publisher-without-subscriber")
 
@@ -79,8 +81,19 @@ def _connected(model: Model) -> set[str]:
 
 
 def _absences(model: Model) -> list[str]:
+    """The absence findings, and the catalogue's one info per rule for those it leaves
+    undecided (a node of partial or unknown interface could be the missing side)."""
     return sorted(f"{f.rule}: {f.message}" for f in run_catalogue(model)
-                  if f.rule in ABSENCE)
+                  if f.rule.removesuffix(UNDECIDED) in ABSENCE)
+
+
+def _undecided(lines: list[str], rule: str) -> str:
+    """How many matches the rule's undecided info stands for, and the nodes it names."""
+    line = next((x for x in lines if x.startswith(rule + UNDECIDED + ":")), None)
+    if line is None:
+        return "0"
+    count = line.split(": ", 1)[1].split(" ", 1)[0]
+    return f"{count} ({line.rsplit('missing side: ', 1)[-1]})"
 
 
 def measure(case: Case, root: str, listing: bool) -> None:
@@ -91,7 +104,8 @@ def measure(case: Case, root: str, listing: bool) -> None:
     modelled = [n for n in config.nodes if n.node is not None and n.node.model]
     added = [link for link in config.links if link.origin == "model"]
     joined = sorted({link.resource.name for link in added
-                     if any(other.origin != "model" for other in link.resource.links)})
+                     if any(other.node.node is not None and not other.node.node.model
+                            for other in link.resource.links)})
     connected = {"before": _connected(before), "after": _connected(after)}
     unknown = [n.name for n in config.nodes if n.node is None]
     was, now = _absences(before), _absences(after)
@@ -101,16 +115,17 @@ def measure(case: Case, root: str, listing: bool) -> None:
     for node in modelled:
         state = node.completeness
         print(f"    {node.name}: {node.node.model if node.node else ''} [{state}]")
-    print(f"  links added by models {len(added)}; topics/services joining workspace and "
-          f"modelled nodes {len(joined)}")
+    print(f"  links added by models {len(added)}; resources joining the workspace's own "
+          f"nodes and modelled ones {len(joined)}")
     for name in joined:
         print(f"    {name}")
     print(f"  topics with a publisher and a subscriber: before {len(connected['before'])}, "
           f"after {len(connected['after'])}: "
           f"{', '.join(sorted(connected['after'] - connected['before']))}")
     for rule in ABSENCE:
-        print(f"  {rule}: before {sum(1 for f in was if f.startswith(rule))}, after "
-              f"{sum(1 for f in now if f.startswith(rule))}")
+        print(f"  {rule}: before {sum(1 for f in was if f.startswith(rule + ':'))}, after "
+              f"{sum(1 for f in now if f.startswith(rule + ':'))}; undecided before "
+              f"{_undecided(was, rule)}, after {_undecided(now, rule)}")
     gone = sorted(set(was) - set(now))
     new = sorted(set(now) - set(was))
     print(f"  findings gone {len(gone)}, new {len(new)}")

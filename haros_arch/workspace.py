@@ -36,6 +36,9 @@ class Workspace:
     share_maps: dict[str, dict[str, str]] = field(default_factory=dict, repr=False)
     # package name -> executables colcon installs in lib/<pkg>, filled by haros_arch.share
     lib_executables: dict[str, frozenset[str]] = field(default_factory=dict, repr=False)
+    # package folder -> package, for package_of; rebuilt when the packages change
+    _index: dict[str, Package] = field(default_factory=dict, repr=False)
+    _index_key: tuple[int, int] = field(default=(0, -1), repr=False)
 
     def relpath(self, path: str) -> str:
         """A path relative to the workspace root when inside it, else absolute."""
@@ -44,15 +47,27 @@ class Workspace:
         return path if rel.startswith("..") else rel
 
     def package_of(self, path: str) -> Package | None:
-        """The workspace package whose folder holds ``path``."""
-        path = os.path.abspath(path)
-        best: Package | None = None
-        for package in self.packages.values():
-            if (path == package.root or path.startswith(package.root + os.sep)) and (
-                best is None or len(package.root) > len(best.root)
-            ):
-                best = package
-        return best
+        """The workspace package whose folder holds ``path`` (the innermost one): the
+        path's folders looked up from the deepest, in an index of package folders."""
+        index = self._roots_index()
+        here = os.path.abspath(path)
+        while True:
+            found = index.get(here)
+            if found is not None:
+                return found
+            parent = os.path.dirname(here)
+            if parent == here:
+                return None
+            here = parent
+
+    def _roots_index(self) -> dict[str, Package]:
+        # packages are added (by the scan, by models), never moved: their number tells
+        key = (id(self.packages), len(self.packages))
+        if self._index_key != key:
+            self._index = {package.root: package for package in self.packages.values()
+                           if package.root}
+            self._index_key = key
+        return self._index
 
     def location(self, path: str, line: int = 0, column: int = 0) -> Location:
         package = self.package_of(path)

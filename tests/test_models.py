@@ -132,8 +132,15 @@ def test_a_bad_model_file_is_a_diagnostic(tmp_path):
     bad.write_text('{"schema": "haros-arch-model/1", "package": "x", "nodes": 3}')
     broken = tmp_path / "broken.json"
     broken.write_text('{"schema": \n')
-    library = Library([str(bad), str(broken), str(tmp_path / "missing.json")], shipped=None)
-    assert [d.code for d in library.diagnostics] == ["MODEL_INVALID"] * 3
+    kind = tmp_path / "kind.json"
+    kind.write_text('{"schema": "haros-arch-model/1", "package": "y", "nodes": '
+                    '[{"executable": "y", "calls": [{"kind": "teleport", "name": "x"}]}]}')
+    deep = tmp_path / "deep.json"
+    deep.write_text("[" * 100_000 + "]" * 100_000)
+    library = Library([str(bad), str(broken), str(tmp_path / "missing.json"), str(kind),
+                       str(deep)], shipped=None)
+    assert [d.code for d in library.diagnostics] == ["MODEL_INVALID"] * 5
+    assert "teleport" in library.diagnostics[3].message
     assert library.diagnostics[1].location.line == 2
     assert library.find("x", "noetic") is None
 
@@ -227,3 +234,73 @@ def test_without_the_list_the_name_stays_unknown():
         by_name: dict = {}
 
     assert element_calls(call, mux, NoParameters()) == [call]  # type: ignore[arg-type]
+
+
+def test_every_shipped_model_reads_clean_and_names_its_source():
+    from haros_arch.models.library import DATA, read_model
+
+    found: list = []
+    files = [os.path.join(DATA, distro, name) for distro in sorted(os.listdir(DATA))
+             for name in sorted(os.listdir(os.path.join(DATA, distro)))]
+    assert len(files) >= 60
+    for path in files:
+        model = read_model(path, found)
+        assert model is not None and model.distro == os.path.basename(os.path.dirname(path))
+        assert model.package + ".json" == os.path.basename(path)
+        assert model.source["repository"].startswith("github:")
+        assert len(model.source["commit"]) == 40
+    assert found == []
+
+
+def test_a_nodelet_of_a_package_without_source_takes_its_model(write_tree):
+    from conftest import package_xml
+
+    root = write_tree({
+        "src/cam/package.xml": package_xml("cam"),
+        "src/cam/CMakeLists.txt": "project(cam)\n",
+        "src/cam/launch/cam.launch": """
+            <launch>
+              <node pkg="nodelet" type="nodelet" name="manager" args="manager"/>
+              <node pkg="nodelet" type="nodelet" name="rectify"
+                    args="load image_proc/rectify manager"/>
+            </launch>
+            """,
+        "project.yaml": "project: p\nconfigurations:\n  c: [cam/launch/cam.launch]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {}, Options(cache_dir=None, jobs=1))
+    (config,) = model.configurations
+    rectify = _instance(config, "/rectify")
+    assert rectify.node is not None and rectify.node.model.startswith("noetic/image_proc ")
+    assert {(link.kind, link.name) for link in rectify.links} >= {
+        ("subscribe", "/image_mono"), ("publish", "/image_rect")}
+
+
+def test_ros2_list_names_come_from_the_parameters_under_a_prefix(write_tree):
+    root = write_tree({
+        "src/base/package.xml": _package_xml("base"),
+        "src/base/launch/mux.launch.py": """
+            from launch import LaunchDescription
+            from launch_ros.actions import Node
+
+            def generate_launch_description():
+                return LaunchDescription([
+                    Node(package='twist_mux', executable='twist_mux', name='twist_mux',
+                         parameters=[{'topics': {
+                             'navigation': {'topic': 'cmd_vel_nav', 'priority': 10},
+                             'joystick': {'topic': 'joy_vel', 'priority': 100}}}]),
+                ])
+            """,
+        "project.yaml": "project: p\nconfigurations:\n  c: [base/launch/mux.launch.py]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {}, Options(cache_dir=None, jobs=1))
+    (config,) = model.configurations
+    mux = _instance(config, "/twist_mux")
+    assert mux.node.model.startswith("jazzy/twist_mux ")
+    assert sorted(link.name for link in mux.subscribers
+                  if link.type == "geometry_msgs/msg/Twist") == ["/cmd_vel_nav", "/joy_vel"]
+
+
+def _package_xml(name: str) -> str:
+    from conftest import package_xml
+
+    return package_xml(name, build_type="ament_cmake")

@@ -269,14 +269,17 @@ def element_calls(call: PrimitiveCall, instance: NodeInstance, resources: Resour
                   ) -> list[PrimitiveCall]:
     """A call named by each element of a list parameter (``name_each``): one call per
     element of the value the launch file gives the parameter, named by the element's
-    field (``.``: the element itself); without such a value, the call as it is (its
-    name keeps its ``?``)."""
+    field (``.``: the element itself; in ROS 2 the elements may be the parameters
+    ``name.<key>.<field>``); without such a value, the call as it is (its name keeps
+    its ``?``)."""
     if call.name_each is None or call.name_param is None:
         return [call]
     source = _node_scoped(call.name_param) if instance.ros_version == 2 else call.name_param
-    param = resources.by_name.get(
-        (Parameter, RosName.make(source, instance.namespace, instance.name).full))
+    full = RosName.make(source, instance.namespace, instance.name).full
+    param = resources.by_name.get((Parameter, full))
     value = param.value if isinstance(param, Parameter) and param.set_by_launch else None
+    if value is None and instance.ros_version == 2:
+        value = _dotted_groups(full, resources)
     elements = list(value.values()) if isinstance(value, dict) else value
     if not isinstance(elements, list):
         return [call]
@@ -286,6 +289,20 @@ def element_calls(call: PrimitiveCall, instance: NodeInstance, resources: Resour
         return [call]
     return [replace(call, name=name, name_param=None, name_default=None, name_each=None)
             for name in names]
+
+
+def _dotted_groups(full: str, resources: Resources) -> dict[str, dict[str, Any]] | None:
+    """ROS 2 parameters under a prefix, by their next segment (``topics.nav.topic`` and
+    ``topics.nav.priority`` give ``{"nav": {"topic": ..., "priority": ...}}``), as
+    ``list_parameters({prefix})`` lists them; None when the launch file sets none."""
+    groups: dict[str, dict[str, Any]] = {}
+    for (cls, name), found in resources.by_name.items():
+        if cls is Parameter and name.startswith(full + ".") and isinstance(
+                found, Parameter) and found.set_by_launch:
+            key, _, field = name[len(full) + 1:].partition(".")
+            if key and field and "." not in field:
+                groups.setdefault(key, {})[field] = found.value
+    return groups or None
 
 
 def _element_name(item: Any, field: str) -> str | None:

@@ -30,10 +30,12 @@ from typing import Any
 from .. import __version__
 from ..model.load import node_from_data
 from ..model.serialise import to_data
-from ..model.source import Node
+from ..model.source import CALL_KINDS, Node
 
 SCHEMA = "haros-arch-model/1"
 SCHEMA_PREFIX = "haros-arch-model/"
+_TEXT_FIELDS = ("type", "name_param", "name_default", "name_each", "handle_namespace",
+                "node_name", "callback")
 
 
 class ModelFileError(ValueError):
@@ -101,6 +103,12 @@ def from_document(data: Any, path: str = "") -> InterfaceModel:
     calls = [c for n in nodes for c in _list(n.get("calls"))]
     if not all(isinstance(c, dict) and isinstance(c.get("name", ""), str) for c in calls):
         raise ModelFileError("each call must be an object with a string 'name'")
+    for call in calls:
+        if call.get("kind", "publish") not in CALL_KINDS:
+            raise ModelFileError(f"a call's kind is {call.get('kind')!r}, expected one of "
+                                 f"{', '.join(CALL_KINDS)}")
+        if not all(isinstance(call.get(key), str | None) for key in _TEXT_FIELDS):
+            raise ModelFileError(f"a call's {', '.join(_TEXT_FIELDS)} must be strings")
     try:
         built = [node_from_data(n, package) for n in nodes]
     except (TypeError, ValueError, AttributeError) as error:

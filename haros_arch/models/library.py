@@ -75,6 +75,9 @@ def read_model(path: str, found: list[Diagnostic]) -> InterfaceModel | None:
         return None
     try:
         data = json.loads(text)
+    except RecursionError:
+        found.append(diag.make("MODEL_INVALID", where, detail="nested too deeply"))
+        return None
     except ValueError as error:
         line = getattr(error, "lineno", 0)
         found.append(diag.make("MODEL_INVALID", Location(file=where.file, line=line),
