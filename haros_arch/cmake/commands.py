@@ -432,6 +432,15 @@ def _ament_auto_package(it: Interpreter, command: Invocation, args: list[str]) -
                                command.column, command.file))
 
 
+@handles("pluginlib_export_plugin_description_file")
+def _export_plugin_description(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    """ROS 2 pluginlib: ``(base_package description.xml)`` exports the plugin classes
+    the file describes, as ``<base_package plugin="..."/>`` does in a package.xml."""
+    if len(args) >= 2:
+        path = args[1] if os.path.isabs(args[1]) else os.path.join(it.source_dir, args[1])
+        it.plugin_descriptions.append((args[0], os.path.normpath(path)))
+
+
 @handles("rclcpp_components_register_node")
 def _register_node(it: Interpreter, command: Invocation, args: list[str]) -> None:
     if not args or "PLUGIN" not in args[:-1]:
