@@ -48,6 +48,7 @@ import argparse
 import json
 import os
 import re
+import shlex
 import shutil
 import subprocess
 import sys
@@ -56,6 +57,7 @@ import textwrap
 from collections import Counter
 from typing import Any
 
+COMMAND_OUTPUT = '<robot name="standin"/>'  # what the stand-in xacro prints
 STANDIN_FILES = {
     "standin_finder.py": '''
 import importlib.abc, importlib.machinery, sys, types
@@ -126,7 +128,7 @@ def get_resources(kind):
     return {k: os.path.dirname(os.path.dirname(v)) for k, v in _MAP.items()} if (
         kind == "packages") else {}
 ''',
-    "bin/xacro": "#!/bin/sh\necho '<robot name=\"standin\"/>'\n",
+    "bin/xacro": f"#!/bin/sh\necho '{COMMAND_OUTPUT}'\n",
     "bin/ros2": "#!/bin/sh\nexit 0\n",
     "ament_index_python/packages.py": '''
 import json, os
@@ -204,7 +206,7 @@ def node_execute(self, context):
             context, normalize_to_list_of_substitutions(self.node_executable)),
         "namespace": ns or "/",
         "remaps": [list(r) for r in (self._Node__expanded_remappings or [])],
-        "args": " ".join(words),
+        "args": " ".join(words), "argv": words,
         "params": _params(context, name, ns, self._Node__parameters),
         "container": None, "composable": False})
     return None
@@ -237,6 +239,28 @@ class _Request:
     def __init__(self):
         self.package_name = self.plugin_name = self.node_name = self.node_namespace = ""
         self.remap_rules, self.parameters, self.extra_arguments = [], [], []
+
+if not hasattr(launch.substitutions, "PathSubstitution"):
+    # launch >= 3.7 (newer than the sources here): a path join whose parts are each a
+    # list of substitutions, grown by "/ part"; written for the bench from its documentation
+    from launch.substitution import Substitution
+
+    class PathSubstitution(Substitution):
+        def __init__(self, path, more=()):
+            super().__init__()
+            self.parts = [normalize_to_list_of_substitutions(path), *more]
+
+        def __truediv__(self, part):
+            return PathSubstitution(self.parts[0], [*self.parts[1:],
+                                                    normalize_to_list_of_substitutions(part)])
+
+        def describe(self):
+            return "PathSubstitution"
+
+        def perform(self, context):
+            return os.path.join(*[perform_substitutions(context, p) for p in self.parts])
+
+    launch.substitutions.PathSubstitution = PathSubstitution
 
 lcn.composition_interfaces.srv.LoadNode.Request = _Request
 node_mod.Node.execute = node_execute
@@ -431,6 +455,13 @@ def as_installed(result: dict[str, Any], workspace: Any, installed: dict[str, st
     return result
 
 
+def _split(args: str) -> list[str]:
+    try:
+        return shlex.split(args)
+    except ValueError:
+        return args.split()
+
+
 def _norm(value: Any) -> Any:
     if isinstance(value, str) and os.path.isabs(value) and os.path.exists(value):
         return os.path.realpath(value)
@@ -479,8 +510,12 @@ def compare(ours: list[dict[str, Any]], real: list[dict[str, Any]], tally: Count
         mine, theirs = ours_by[name], real_by[name]
         for field in ("package", "executable", "namespace", "container", "args"):
             a, b = mine[field], theirs[field]
+            if field == "args" and "argv" in theirs:  # one argv, however it is quoted
+                a, b = _split(a), theirs["argv"]
             if field == "namespace" and theirs["composable"] and b == "":
                 b = a  # an empty request namespace: the container decides
+            if field == "container" and isinstance(b, str) and b and not b.startswith("/"):
+                b = "/" + b  # <name>/_container/load_node from launch_ros' node, in "/"
             same = a == b
             tally[f"{field}.{'agree' if same else 'differ'}"] += 1
             if not same:
@@ -492,9 +527,27 @@ def compare(ours: list[dict[str, Any]], real: list[dict[str, Any]], tally: Count
         for pname in sorted(set(mine["params"]) | set(theirs["params"])):
             a, b = mine["params"].get(pname, "<absent>"), theirs["params"].get(pname, "<absent>")
             same = _norm(a) == _norm(b)
+            if b == COMMAND_OUTPUT:  # a Command's output: never run, so unknown (None)
+                same = a is None
+                tally["params.command_output"] += 1
             tally[f"params.{'agree' if same else 'differ'}"] += 1
             if not same:
                 notes.append(f"  {name} param {pname}: ours {a!r} real {b!r}"[:240])
+
+
+FACTS = ("package", "executable", "namespace", "container", "args", "remaps")
+
+
+def share(agree: int, total: int) -> str:
+    return f"{agree}/{total} ({100.0 * agree / total if total else 100.0:.1f}%)"
+
+
+def summary(counts: Counter[str]) -> str:
+    facts = [sum(counts[f"{f}.{k}"] for f in FACTS) for k in ("agree", "differ")]
+    params = [counts[f"params.{k}"] for k in ("agree", "differ")]
+    return (f"node names {share(counts['nodes.matched'], counts['nodes.total'])}, "
+            f"node facts {share(facts[0], sum(facts))}, "
+            f"parameters {share(params[0], sum(params))}")
 
 
 def main() -> int:
@@ -545,37 +598,51 @@ def main() -> int:
     if options.limit:
         files = files[:options.limit]
     tally: Counter[str] = Counter()
+    per_target: dict[str, Counter[str]] = {t: Counter() for t in options.targets}
     with tempfile.TemporaryDirectory() as standins:
         write_standins(standins)
         for source in files:
             rel = os.path.relpath(source, options.src)
-            path = installed.get(os.path.realpath(source))
-            if path is None:
-                tally["files.not_installed"] += 1
-                print(f"{rel}: not installed by its package; skipped")
-                continue
-            real = run_real(options.real_python, standins, path, packages, extra_path,
-                            given_env)
-            if options.ours_from_source:
-                ours = as_installed(run_ours(share_form(source, sources), sources, ours_env),
-                                    sources, installed, prefix)
-            else:
-                ours = run_ours(path, workspace, ours_env)
-            tally["files"] += 1
-            if "error" in real:
-                tally["files.real_failed"] += 1
-                print(f"{rel}: real launch failed: {real['error']}")
-                if options.verbose:
-                    print(f"  (ours: {len(ours['nodes'])} nodes)")
-                continue
-            tally["files.compared"] += 1
-            notes: list[str] = []
-            compare(ours["nodes"], real["nodes"], tally, notes)
-            status = "agree" if not notes else f"{len(notes)} difference(s)"
-            print(f"{rel}: {len(real['nodes'])} real / {len(ours['nodes'])} ours nodes: {status}")
-            if options.verbose or notes:
-                for note in (notes if options.verbose else notes[:40]):
-                    print(note)
+            target = next(t for t in options.targets
+                          if os.path.realpath(source).startswith(
+                              os.path.realpath(os.path.join(options.src, t)) + os.sep))
+            mark = Counter(tally)
+            try:
+                path = installed.get(os.path.realpath(source))
+                if path is None:
+                    tally["files.not_installed"] += 1
+                    print(f"{rel}: not installed by its package; skipped")
+                    continue
+                real = run_real(options.real_python, standins, path, packages, extra_path,
+                                given_env)
+                if options.ours_from_source:
+                    ours = as_installed(run_ours(share_form(source, sources), sources, ours_env),
+                                        sources, installed, prefix)
+                else:
+                    ours = run_ours(path, workspace, ours_env)
+                tally["files"] += 1
+                if "error" in real:
+                    tally["files.real_failed"] += 1
+                    print(f"{rel}: real launch failed: {real['error']}")
+                    if options.verbose:
+                        print(f"  (ours: {len(ours['nodes'])} nodes)")
+                    continue
+                tally["files.compared"] += 1
+                notes: list[str] = []
+                compare(ours["nodes"], real["nodes"], tally, notes)
+                status = "agree" if not notes else f"{len(notes)} difference(s)"
+                print(f"{rel}: {len(real['nodes'])} real / {len(ours['nodes'])} ours nodes: "
+                      f"{status}")
+                if options.verbose or notes:
+                    for note in (notes if options.verbose else notes[:40]):
+                        print(note)
+            finally:
+                per_target[target].update(tally - mark)
+    print("\nper repository (node facts: package, executable, namespace, container, args, "
+          "remaps of the nodes both found; parameters of those nodes)")
+    for target, counts in per_target.items():
+        print(f"  {target}: {counts['files.compared']} file(s) compared, "
+              f"{counts['files.real_failed']} the real launch refused; " + summary(counts))
     print("\nsummary")
     for key in sorted(tally):
         print(f"  {key}: {tally[key]}")

@@ -13,6 +13,7 @@ import base64
 import json
 import sys
 
+import rosgraph.names
 import roslaunch.config
 import roslaunch.loader
 import roslaunch.xmlloader
@@ -55,7 +56,10 @@ def dump(path, args):
             "required": bool(getattr(node, "required", False)),
             "test": type(node).__name__ == "Test",
         })
-    params = {key: _json(p.value) for key, p in config.params.items()}
+    # as the master stores them: roslaunch sets them as the caller /roslaunch, so a
+    # private name left at the top (no node took it) is /roslaunch/name
+    params = {rosgraph.names.resolve_name(key, "/roslaunch"): _json(p.value)
+              for key, p in config.params.items()}
     return {"nodes": nodes, "params": params, "clear_params": list(config.clear_params)}
 
 

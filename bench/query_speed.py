@@ -5,7 +5,8 @@
 Models have 100, 1,000 and 10,000 links (half publishers, half subscribers, one topic
 per two publisher/subscriber pairs, one link in ten of another type). Prints seconds
 and the ratio pyflwor / ours for each query and size. pyflwor-ext needs
-``collections.MutableSet`` on Python >= 3.10, which is patched in here.
+``collections.MutableSet`` on Python >= 3.10, which is patched in here. Then the time of
+each shipped catalogue query on an Autoware-size configuration (bench/catalogue_speed.py).
 """
 
 from __future__ import annotations
@@ -84,6 +85,11 @@ def main() -> None:
                     ratio += f" (results differ: {n_ours} vs {n_theirs})"
             print(f"{name:32} {links:>6} {ours:>10.4f} {theirs_text:>12} {ratio:>8}",
                   flush=True)
+    print()
+    sys.argv = sys.argv[:1]
+    from catalogue_speed import main as catalogue
+
+    catalogue()
 
 
 if __name__ == "__main__":

@@ -40,7 +40,9 @@ def _parser() -> argparse.ArgumentParser:
     extract.add_argument("-o", "--output", help="write the JSON here (default: stdout)")
     extract.add_argument("-q", "--quiet", action="store_true", help="no summary")
     extract.add_argument("-v", "--verbose", action="store_true",
-                         help="list info-level diagnostics one by one (default: counted per code)")
+                         help="list every node instance and resource (default: counts per "
+                              "kind and the nodes whose interface is not fully known) and "
+                              "info-level diagnostics one by one (default: counted per code)")
     _run_options(extract)
 
     check = sub.add_parser("check", help="run the query catalogue and report findings and "
@@ -50,7 +52,8 @@ def _parser() -> argparse.ArgumentParser:
     check.add_argument("--fail-on", choices=(*SEVERITY_RANK, "never"), default="error")
     check.add_argument("-o", "--output", help="write the report here (default: stdout)")
     check.add_argument("-v", "--verbose", action="store_true",
-                       help="list info-level diagnostics one by one (default: counted per code)")
+                       help="list every finding of a rule (default: the first few) and "
+                            "info-level diagnostics one by one (default: counted per code)")
     _run_options(check)
 
     query = sub.add_parser("query", help="evaluate a query and print its matches")
@@ -86,6 +89,26 @@ def _parser() -> argparse.ArgumentParser:
     launch.add_argument("--arg", action="append", default=[], metavar="NAME:=VALUE")
     launch.add_argument("--workspace", default=".", help="workspace folder (default: .)")
     launch.add_argument("--format", choices=("text", "json"), default="text")
+
+    models = sub.add_parser("models", help="interface models of packages without source")
+    models_sub = models.add_subparsers(dest="models_command", required=True)
+    build = models_sub.add_parser("build", help="run the extractor on the pinned sources "
+                                  "of a list of packages and write their model files")
+    build.add_argument("list", help="the list (YAML: repository, commit, distro, packages)")
+    build.add_argument("-o", "--output", default="models",
+                       help="write OUTPUT/<distro>/<package>.json (default: ./models)")
+    build.add_argument("--sources", default="sources",
+                       help="folder holding each entry's tree as <owner>+<name>@<commit12> "
+                            "(scripts/models-fetch fills it; default: ./sources)")
+    build.add_argument("--overrides", help="folder of <distro>/<package>.yaml override "
+                                           "files (default: the shipped ones)")
+    build.add_argument("--only", action="append", default=[], metavar="PACKAGE",
+                       help="model only this package (repeatable)")
+    build.add_argument("--jobs", type=int, metavar="N",
+                       help="local worker processes (default: one per core)")
+    build.add_argument("--scheduler", metavar="ADDRESS",
+                       help="run on this Dask distributed scheduler (needs the 'dask' extra)")
+    build.add_argument("--no-cache", action="store_true", help="parse every source again")
 
     init = sub.add_parser("init", help="write a project file for a workspace or launch "
                           "file: the configurations check would choose, to edit")
@@ -164,7 +187,7 @@ def cmd_extract(args: argparse.Namespace, out: Console, err: Console) -> int:
     _write(extract_document(model, args.project), args.output)
     if not args.quiet:
         summary = out if args.output else err
-        print_summary(model, summary)
+        print_summary(model, summary, verbose=args.verbose)
         print_diagnostics(model.all_diagnostics, summary, verbose=args.verbose)
         if args.output:
             summary.print(f"wrote {args.output}", highlight=False)
@@ -184,9 +207,22 @@ def cmd_query(args: argparse.Namespace, out: Console, err: Console) -> int:
 
 
 def cmd_explain(args: argparse.Namespace, out: Console, err: Console) -> int:
-    from .query.catalogue import load_catalogue
+    from .query.catalogue import QUERY_LIMIT, UNDECIDED, load_catalogue
 
     rules = {rule.id: rule for rule in load_catalogue()}
+    if args.code == QUERY_LIMIT:
+        out.print(f"[bold]{QUERY_LIMIT}[/bold] (warning)\n  A rule used more than its step "
+                  "budget in a configuration and was stopped; its findings there are not "
+                  "known. It never fails --fail-on error by itself.", highlight=False)
+        return EXIT_OK
+    if args.code and args.code.endswith(UNDECIDED) and args.code[:-len(UNDECIDED)] in rules:
+        base = args.code[:-len(UNDECIDED)]
+        out.print(f"[bold]{escape(args.code)}[/bold] (info): the matches of {escape(base)} "
+                  "that a node of partial or unknown interface (or one using a name not "
+                  "known statically, or serving dynamic_reconfigure) could contradict, "
+                  "counted in one finding per configuration with the nodes in the way; "
+                  "they are not reported as findings.", highlight=False)
+        args.code = base
     if args.code and args.code not in CATALOGUE and args.code not in rules:
         err.print(f"haros-arch: {escape(args.code)} is neither a diagnostic code nor a "
                   "rule id ('haros-arch explain' lists them)", highlight=False)
@@ -325,6 +361,30 @@ def cmd_launch(args: argparse.Namespace, out: Console, err: Console) -> int:
     return EXIT_OK
 
 
+def cmd_models(args: argparse.Namespace, out: Console, err: Console) -> int:
+    from .models import generate
+
+    try:
+        entries = generate.read_list(args.list)
+    except generate.ListError as error:
+        err.print(f"haros-arch: {escape(str(error))}", highlight=False)
+        return EXIT_USAGE
+    if args.scheduler:
+        try:
+            import distributed  # noqa: F401
+        except ImportError:
+            err.print("haros-arch: --scheduler needs dask.distributed "
+                      "(pip install 'haros-arch[dask]')", highlight=False)
+            return EXIT_USAGE
+    work = generate.tasks(entries, args.sources, args.overrides or generate.OVERRIDES,
+                          args.only, None if args.no_cache else generate.AUTO_CACHE)
+    outcomes = generate.run(work, jobs=args.jobs, scheduler=args.scheduler)
+    generate.report(outcomes, lambda line: out.print(escape(line), highlight=False))
+    written = generate.write(outcomes, args.output)
+    out.print(f"wrote {len(written)} model files under {escape(args.output)}", highlight=False)
+    return EXIT_OK if all(o.text is not None for o in outcomes) else EXIT_FINDINGS
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     args = _parser().parse_args(argv)
     if any(":=" not in a for a in getattr(args, "arg", [])) and args.command != "launch":
@@ -337,7 +397,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     err = Console(stderr=True, soft_wrap=True)
     handlers = {"extract": cmd_extract, "check": cmd_check, "explain": cmd_explain,
                 "capture": cmd_capture, "compare": cmd_compare, "report": cmd_report,
-                "launch": cmd_launch, "query": cmd_query, "init": cmd_init}
+                "launch": cmd_launch, "query": cmd_query, "init": cmd_init,
+                "models": cmd_models}
     try:
         return handlers[args.command](args, out, err)
     except KeyboardInterrupt:

@@ -159,6 +159,10 @@ CATALOGUE: dict[str, Entry] = {
         "error", "{path} requires argument {name}, which the include does not pass",
         "An included file uses an argument it declares without a value, and the <include> "
         "gives none; roslaunch refuses this. The value is kept unknown."),
+    "LAUNCH_TEST_LEFT_OUT": Entry(
+        "info", "<test> {name} is started by rostest only; left out of this configuration",
+        "roslaunch does not start <test> nodes, rostest does. A configuration that is a "
+        "rostest run says so in the project file (rostest: true) and keeps them."),
     "LAUNCH_UNKNOWN_VALUE": Entry(
         "info", "{detail}; what depends on it keeps '?'",
         "A substitution's value cannot be known statically (an unset environment "
@@ -283,6 +287,13 @@ CATALOGUE: dict[str, Entry] = {
         "A configuration hint names a node instance that no launch file of the "
         "configuration starts."),
     # graph
+    "NODE_NAME_GUESSED": Entry(
+        "info", "{name}: launched without name= and its code is not known; named after "
+        "its executable {executable}, which is a guess",
+        "A ROS 2 node is named by its code (rclcpp::Node(\"name\"), rclpy's "
+        "Node('name')) unless the launch file renames it. Without the code the "
+        "executable's name stands in, as packages usually name the two alike; when "
+        "they differ, the instance's name (and its parameters) are wrong."),
     "NODE_NOT_FOUND": Entry(
         "warning", "node type {node} is not in the workspace; its interface is unknown",
         "A launch file starts an executable that no workspace package builds; the "
@@ -293,6 +304,28 @@ CATALOGUE: dict[str, Entry] = {
         "A launch file starts a node from a package this machine does not have (it may "
         "be installed where the system runs). The instance is kept without links; "
         "describe it with hints if it matters."),
+    # interface models (haros_arch.models)
+    "MODEL_DISTRO": Entry(
+        "info", "interface models of distribution {distro} ({why})",
+        "Nodes of packages without source in the workspace take the interface model of "
+        "this ROS distribution: the project file's 'distro', else ROS_DISTRO in the "
+        "configuration's environment, else noetic for ROS 1 launch files and jazzy for "
+        "ROS 2 ones."),
+    "MODEL_USED": Entry(
+        "info", "node {node} ({where}) takes the interface model {model}",
+        "The node's package has no source in the workspace; its interface comes from a "
+        "model (the project's 'models:' files first, then the shipped ones), generated "
+        "by haros-arch from the named repository and commit. Its links have origin "
+        "'model'."),
+    "MODEL_NODE_MISSING": Entry(
+        "warning", "the interface model {model} has no node {node} (it has: {nodes}); "
+                   "its interface is unknown",
+        "The package's model does not list the executable the launch file starts: a "
+        "different distribution or version, or a node the generator did not find."),
+    "MODEL_INVALID": Entry(
+        "warning", "interface model not used: {detail}",
+        "A model file (listed under 'models:' in the project file, or shipped) could not "
+        "be read; nodes it would describe stay of unknown interface."),
 }
 
 

@@ -1,7 +1,9 @@
-"""package.xml (formats 1, 2 and 3) read with a hardened XML parser."""
+"""package.xml (formats 1, 2 and 3) and rosbuild's manifest.xml, read with a hardened XML
+parser."""
 
 from __future__ import annotations
 
+import os
 import re
 from collections.abc import Mapping
 from typing import cast
@@ -96,7 +98,11 @@ def _num(text: str) -> tuple[int | str, ...]:
 def parse_manifest(
     path: str, location: Location, rel_folder: str, env: Mapping[str, str]
 ) -> tuple[Package | None, list[Diagnostic]]:
-    """Read one package.xml; ``location`` names the manifest file."""
+    """Read one package.xml, or a rosbuild ``manifest.xml`` (the package is named by its
+    folder, depends are ``<depend package=>``; read as a format 1 catkin package: ROS 1,
+    built with CMake); ``location`` names the manifest file."""
+    if os.path.basename(path) == "manifest.xml":
+        return _parse_rosbuild(path, location, rel_folder)
     data, found = read_bytes(path, location)
     if data is None:
         return None, found
@@ -142,9 +148,7 @@ def parse_manifest(
                 text = (element.text or "").strip()
                 if active(element) and text in BUILD_TYPES:
                     build_type = cast(BuildType, text)
-            elif element.get("plugin"):
-                plugin = element.get("plugin", "").replace("${prefix}", rel_folder)
-                package.plugins.append(Plugin(element.tag, plugin))
+    package.plugins.extend(_plugins(root, rel_folder))
     package.build_type = build_type
     return package, found
 
@@ -156,17 +160,59 @@ _ROS1_DEPENDENCIES = frozenset({"roscpp", "rospy", "catkin", "nodelet", "message
 
 
 def ros_version(package: Package) -> int | None:
-    """Whether a package is ROS 1 or ROS 2 code, from its package.xml: the build type
-    (ament_cmake / ament_python), else the ROS client libraries and build tools it
-    depends on; None when nothing says (a plain CMake package)."""
+    """Whether a package is ROS 1 or ROS 2 code, from its package.xml: its build tool
+    (catkin, ament_*), else the build type (ament_cmake / ament_python), else the ROS
+    client libraries and build tools it depends on, else format 1 (ROS 1 only); None when
+    nothing says (a plain CMake package)."""
+    for dep in package.dependencies:  # the build tool says it first
+        if dep.kind in ("buildtool_depend", "buildtool_export_depend"):
+            if dep.name == "catkin":
+                return 1
+            if dep.name.startswith("ament_"):
+                return 2
     if package.build_type in ("ament_cmake", "ament_python"):
         return 2
     names = {dep.name for dep in package.dependencies}
     if names & _ROS2_DEPENDENCIES:
         return 2
-    if names & _ROS1_DEPENDENCIES:
+    if names & _ROS1_DEPENDENCIES or package.format == 1:  # rosbuild ones read as format 1
         return 1
     return None
+
+
+def _plugins(root: etree._Element, rel_folder: str) -> list[Plugin]:
+    """``<export><host plugin="${prefix}/plugins.xml"/></export>``, in both manifests."""
+    export = root.find("export")
+    if export is None:
+        return []
+    return [Plugin(element.tag, element.get("plugin", "").replace("${prefix}", rel_folder))
+            for element in export
+            if isinstance(element.tag, str) and element.tag != "build_type"
+            and element.get("plugin")]
+
+
+def _parse_rosbuild(path: str, location: Location,
+                    rel_folder: str) -> tuple[Package | None, list[Diagnostic]]:
+    data, found = read_bytes(path, location)
+    if data is None:
+        return None, found
+    try:
+        root = etree.fromstring(data, xml_parser())
+    except etree.XMLSyntaxError as err:
+        line, col = err.position if err.position else (0, 0)
+        where = Location(None, location.file, line, col)
+        return None, [*found, diag.make("PACKAGE_XML_SYNTAX", where, detail=err.msg)]
+    if root.tag != "package":
+        return None, found  # some other tool's manifest.xml: no ROS package, nothing wrong
+    name = os.path.basename(os.path.dirname(os.path.abspath(path)))
+    package = Package(name=name, path=rel_folder, format=1, build_type="catkin",
+                      version=(root.findtext("version") or "").strip(),
+                      location=Location(name, location.file, _line(root), 0))
+    for element in root.iter("depend"):
+        if element.get("package"):
+            package.dependencies.append(Dependency(element.get("package", ""), "depend"))
+    package.plugins.extend(_plugins(root, rel_folder))
+    return package, found
 
 
 def _line(element: etree._Element) -> int:

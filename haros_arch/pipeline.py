@@ -18,6 +18,8 @@ from .model.location import Location
 from .model.model import Model
 from .model.runtime import Configuration
 from .model.source import Node, Package
+from .models.attach import Attacher
+from .models.library import DATA, Library
 from .project import ConfigurationSpec, Project
 from .rosrun import script_node
 from .share import share_source
@@ -26,11 +28,13 @@ from .workspace import Workspace, scan
 
 @dataclass(frozen=True)
 class Options:
-    """How to run: ``cache_dir`` of source results (None: no cache, a cold run), and
-    ``jobs`` worker processes parsing C++ (None: one per core)."""
+    """How to run: ``cache_dir`` of source results (None: no cache, a cold run),
+    ``jobs`` worker processes parsing C++ (None: one per core), and whether nodes
+    without source take the shipped interface models (``models``)."""
 
     cache_dir: str | None = AUTO_CACHE
     jobs: int | None = None
+    models: bool = True
 
 
 def analyse(project: Project, environment: Mapping[str, str] | None = None,
@@ -43,7 +47,11 @@ def analyse(project: Project, environment: Mapping[str, str] | None = None,
 
     launches: dict[str, LaunchModel] = {}
     for spec in project.configurations:
-        launches[spec.name] = _load_launch(spec, project, workspace, env)
+        launched = _load_launch(spec, project, workspace, env)
+        # roslaunch starts no <test> node; rostest does (a configuration says it is one)
+        rostest = spec.rostest if spec.rostest is not None else any(
+            entry.endswith(".test") for entry in spec.launch)
+        launches[spec.name] = launched if rostest else launch.without_tests(launched)
 
     wanted = list(project.packages) or sorted(workspace.packages)
     for name in project.packages:
@@ -60,7 +68,7 @@ def analyse(project: Project, environment: Mapping[str, str] | None = None,
         if package is None:
             continue
         model.packages.append(package)
-        model.diagnostics.extend(_read_build_files(package, workspace))
+        model.diagnostics.extend(read_build_files(package, workspace))
         nodes.update((node.name, node) for node in package.nodes)
     for launched in launches.values():
         _rosrun_scripts(launched, workspace, nodes)
@@ -70,13 +78,17 @@ def analyse(project: Project, environment: Mapping[str, str] | None = None,
         compile_commands=[project.compile_commands] if project.compile_commands else None))
 
     project_file = Location(file=os.path.relpath(project.path))
+    models = Attacher(Library(project.models, DATA if options.models else None),
+                      project.distro, model.packages)
     if project.nodes:
         model.diagnostics.extend(graph.apply_node_hints(nodes, project.nodes, project_file))
 
     for spec in project.configurations:
         config = Configuration(spec.name, list(spec.launch), dict(spec.args),
                                {**env, **spec.environment})
-        graph.build(config, launches[spec.name], workspace, nodes)
+        known = models.nodes_for(launches[spec.name], workspace, nodes, config.environment,
+                                 config.diagnostics)  # interface models (no source here)
+        graph.build(config, launches[spec.name], workspace, known)
         if spec.hints:
             where = Location(file=project_file.file, line=spec.line, column=1)
             config.diagnostics.extend(graph.apply_hints(config, spec.hints, nodes, where))
@@ -86,7 +98,7 @@ def analyse(project: Project, environment: Mapping[str, str] | None = None,
     return model
 
 
-def _read_build_files(package: Package, workspace: Workspace) -> list[diag.Diagnostic]:
+def read_build_files(package: Package, workspace: Workspace) -> list[diag.Diagnostic]:
     """The package's nodes and their sources, from its CMakeLists.txt or setup.py."""
     found: list[diag.Diagnostic] = []
     if package.build_type == "ament_python":

@@ -2,8 +2,8 @@
 
 A YAML file compatible with HAROS project files (``project``, ``packages``,
 ``configurations``, ``nodes``, ``rules``) plus our keys (``workspace``, per-configuration
-``args`` and ``environment``, ``queries``). Every problem is a ``ProjectError`` that
-names the file and line, and the CLI exits with code 2.
+``args`` and ``environment``, ``queries``, interface ``models`` and ``distro``). Every
+problem is a ``ProjectError`` that names the file and line, and the CLI exits with code 2.
 """
 
 from __future__ import annotations
@@ -40,6 +40,8 @@ class ConfigurationSpec:
     launch_lines: list[int] = field(default_factory=list)  # where each launch entry is
     hints: dict[str, Any] = field(default_factory=dict)
     user_data: dict[str, Any] = field(default_factory=dict)
+    # run by rostest: its <test> nodes are started too; None: when a launch file is a .test
+    rostest: bool | None = None
     line: int = 0
 
 
@@ -56,6 +58,11 @@ class Project:
     environment: dict[str, str] = field(default_factory=dict)
     # a compile_commands.json (or its folder) for the C++ flags; None: looked for
     compile_commands: str | None = None
+    # interface models: the user's model files or folders (win over the shipped ones),
+    # and the ROS distribution whose models to use (None: from the environment or the
+    # launch files; see haros_arch.models)
+    models: list[str] = field(default_factory=list)
+    distro: str | None = None
 
     @property
     def folder(self) -> str:
@@ -96,6 +103,12 @@ class _Reader:
             raise self.fail(node, f"{what} must be a string")
         return str(node.value)
 
+    def boolean(self, node: Node, what: str) -> bool:
+        value = self.plain(node) if isinstance(node, ScalarNode) else None
+        if not isinstance(value, bool):
+            raise self.fail(node, f"{what} must be true or false")
+        return value
+
     def strings(self, node: Node, what: str) -> list[str]:
         return [text for text, _line in self.strings_at(node, what)]
 
@@ -130,8 +143,10 @@ def _scalar_text(value: Any) -> str:
 
 
 TOP_KEYS = ("project", "packages", "configurations", "nodes", "rules", "queries",
-            "workspace", "environment", "analysis", "repositories", "compile_commands")
-CONFIG_KEYS = ("launch", "hints", "user_data", "args", "environment", "description")
+            "workspace", "environment", "analysis", "repositories", "compile_commands",
+            "models", "distro")
+CONFIG_KEYS = ("launch", "hints", "user_data", "args", "environment", "description",
+               "rostest")
 
 
 def load(path: str) -> Project:
@@ -167,6 +182,8 @@ def load(path: str) -> Project:
         "queries": lambda n: setattr(project, "queries", _queries(reader, n)),
         "compile_commands": lambda n: setattr(
             project, "compile_commands", reader.string(n, "compile_commands")),
+        "models": lambda n: setattr(project, "models", reader.strings(n, "models")),
+        "distro": lambda n: setattr(project, "distro", reader.string(n, "distro")),
         "analysis": lambda n: None,
         "repositories": lambda n: None,  # HAROS fetched these; we analyse what is on disk
     }
@@ -185,6 +202,7 @@ def load(path: str) -> Project:
     if project.compile_commands is not None:
         project.compile_commands = os.path.normpath(os.path.join(folder,
                                                                  project.compile_commands))
+    project.models = [os.path.normpath(os.path.join(folder, m)) for m in project.models]
     names = [c.name for c in project.configurations]
     for config in project.configurations:
         if names.count(config.name) > 1:
@@ -234,6 +252,8 @@ def _configuration(
             spec.user_data = reader.any_map(value, what)
         elif key == "description":
             reader.string(value, what)
+        elif key == "rostest":
+            spec.rostest = reader.boolean(value, what)
         else:
             raise reader.fail(key_node, f"unknown key '{key}' in configuration '{name}' "
                                         f"(expected one of: {', '.join(CONFIG_KEYS)})")

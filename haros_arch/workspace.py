@@ -6,15 +6,19 @@ import os
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 
+from lxml import etree
+
 from . import diagnostics as diag
 from .diagnostics import Diagnostic
-from .manifest import parse_manifest
+from .files import read_bytes
+from .manifest import parse_manifest, xml_parser
 from .model.location import Location
 from .model.source import Package
 
 IGNORE_MARKERS = ("CATKIN_IGNORE", "COLCON_IGNORE", "AMENT_IGNORE")
-SKIP_FOLDERS = {"build", "devel", "install", "log", "node_modules", "__pycache__"}
+SKIP_FOLDERS = frozenset({"build", "devel", "install", "log", "node_modules", "__pycache__"})
 MAX_DEPTH = 12
+MAX_PATH_FOLDERS = 50_000  # folders listed when indexing ROS_PACKAGE_PATH
 
 
 @dataclass
@@ -27,10 +31,14 @@ class Workspace:
     diagnostics: list[Diagnostic] = field(default_factory=list)
     environment: Mapping[str, str] = field(default_factory=dict)
     _installed: dict[str, str | None] = field(default_factory=dict)
+    _path_index: dict[str, str] | None = field(default=None, repr=False)
     # package name -> {share-relative path: source file}, filled by haros_arch.share
     share_maps: dict[str, dict[str, str]] = field(default_factory=dict, repr=False)
     # package name -> executables colcon installs in lib/<pkg>, filled by haros_arch.share
     lib_executables: dict[str, frozenset[str]] = field(default_factory=dict, repr=False)
+    # package folder -> package, for package_of; rebuilt when the packages change
+    _index: dict[str, Package] = field(default_factory=dict, repr=False)
+    _index_key: tuple[int, int] = field(default=(0, -1), repr=False)
 
     def relpath(self, path: str) -> str:
         """A path relative to the workspace root when inside it, else absolute."""
@@ -39,15 +47,27 @@ class Workspace:
         return path if rel.startswith("..") else rel
 
     def package_of(self, path: str) -> Package | None:
-        """The workspace package whose folder holds ``path``."""
-        path = os.path.abspath(path)
-        best: Package | None = None
-        for package in self.packages.values():
-            if (path == package.root or path.startswith(package.root + os.sep)) and (
-                best is None or len(package.root) > len(best.root)
-            ):
-                best = package
-        return best
+        """The workspace package whose folder holds ``path`` (the innermost one): the
+        path's folders looked up from the deepest, in an index of package folders."""
+        index = self._roots_index()
+        here = os.path.abspath(path)
+        while True:
+            found = index.get(here)
+            if found is not None:
+                return found
+            parent = os.path.dirname(here)
+            if parent == here:
+                return None
+            here = parent
+
+    def _roots_index(self) -> dict[str, Package]:
+        # packages are added (by the scan, by models), never moved: their number tells
+        key = (id(self.packages), len(self.packages))
+        if self._index_key != key:
+            self._index = {package.root: package for package in self.packages.values()
+                           if package.root}
+            self._index_key = key
+        return self._index
 
     def location(self, path: str, line: int = 0, column: int = 0) -> Location:
         package = self.package_of(path)
@@ -74,7 +94,10 @@ class Workspace:
         if name in self.packages:
             return self.packages[name].root
         if name not in self._installed:
-            self._installed[name] = _find_installed(name, self.environment)
+            if self._path_index is None:
+                self._path_index = package_path_index(self.environment)
+            self._installed[name] = _find_installed(name, self.environment,
+                                                    self._path_index)
         return self._installed[name]
 
 
@@ -93,7 +116,7 @@ def scan(roots: Iterable[str], environment: Mapping[str, str] | None = None) -> 
             if real in seen:
                 continue
             seen.add(real)
-            manifest = os.path.join(folder, "package.xml")
+            manifest = manifest_of(folder)
             package, found = parse_manifest(
                 manifest, Location(None, ws.relpath(manifest)), ws.relpath(folder), env)
             ws.diagnostics.extend(found)
@@ -114,12 +137,16 @@ def scan(roots: Iterable[str], environment: Mapping[str, str] | None = None) -> 
     return ws
 
 
-def _package_folders(top: str) -> Iterable[str]:
-    """Folders holding a package.xml, honouring ignore markers; packages do not nest.
+def _package_folders(top: str, ignore: tuple[str, ...] = IGNORE_MARKERS,
+                     skip: frozenset[str] = SKIP_FOLDERS,
+                     budget: list[int] | None = None) -> Iterable[str]:
+    """Folders holding a package.xml or a rosbuild manifest.xml, honouring the ``ignore``
+    markers and leaving out the ``skip`` folders; packages do not nest.
 
-    Symbolic links to folders are followed, as catkin and colcon do (a workspace's src/
-    often links checkouts kept elsewhere); each real folder is visited once, so a link
-    cycle ends the walk there.
+    Symbolic links to folders are followed, as catkin, colcon and rospkg do (a
+    workspace's src/ often links checkouts kept elsewhere); each real folder is visited
+    once, so a link cycle ends the walk there. ``budget`` (one count, shared by several
+    walks) bounds how many folders are listed.
     """
     stack = [(top, 0)]
     visited: set[str] = set()
@@ -129,23 +156,33 @@ def _package_folders(top: str) -> Iterable[str]:
         if real in visited:
             continue
         visited.add(real)
+        if budget is not None:
+            if budget[0] <= 0:
+                return
+            budget[0] -= 1
         try:
             entries = sorted(os.listdir(folder))
         except OSError:
             continue
-        if any(marker in entries for marker in IGNORE_MARKERS):
+        if any(marker in entries for marker in ignore):
             continue
-        if "package.xml" in entries:
+        if "package.xml" in entries or "manifest.xml" in entries:
             yield folder
             continue
-        if depth >= MAX_DEPTH:
+        if depth >= MAX_DEPTH or "rospack_nosubdirs" in entries:
             continue
         for entry in reversed(entries):
             path = os.path.join(folder, entry)
-            if entry.startswith(".") or entry in SKIP_FOLDERS:
+            if entry.startswith(".") or entry in skip:
                 continue
             if os.path.isdir(path):
                 stack.append((path, depth + 1))
+
+
+def manifest_of(folder: str) -> str:
+    """The manifest that makes ``folder`` a package: package.xml, else manifest.xml."""
+    xml = os.path.join(folder, "package.xml")
+    return xml if os.path.exists(xml) else os.path.join(folder, "manifest.xml")
 
 
 def installed_roots(env: Mapping[str, str]) -> list[str]:
@@ -161,13 +198,47 @@ def installed_roots(env: Mapping[str, str]) -> list[str]:
     return roots
 
 
-def _find_installed(name: str, env: Mapping[str, str]) -> str | None:
-    for root in installed_roots(env):
-        candidate = os.path.join(root, name)
-        if os.path.isfile(os.path.join(candidate, "package.xml")):
-            return candidate
-        if os.path.isfile(os.path.join(root, "package.xml")) and os.path.basename(
-            root.rstrip(os.sep)
-        ) == name:
-            return root
+def package_path_index(env: Mapping[str, str]) -> dict[str, str]:
+    """Package name -> folder for every package on ``ROS_PACKAGE_PATH``, as rospkg (and
+    so roslaunch's ``$(find)``) finds them: each entry searched recursively, following
+    links, not below a folder with a package.xml or manifest.xml (a rosbuild package is
+    named by its folder), nor into hidden folders, a ``CATKIN_IGNORE``d one or one with
+    ``rospack_nosubdirs``; a metapackage is no package here; an earlier entry wins.
+    Bounded: MAX_DEPTH levels, MAX_PATH_FOLDERS folders listed in all."""
+    index: dict[str, str] = {}
+    budget = [MAX_PATH_FOLDERS]
+    entries = [e for e in env.get("ROS_PACKAGE_PATH", "").split(os.pathsep) if e]
+    for entry in entries:
+        for folder in _package_folders(entry, ("CATKIN_IGNORE",), frozenset(), budget):
+            name = _package_name(folder)
+            if name is not None:
+                index.setdefault(name, folder)
+    return index
+
+
+def _package_name(folder: str) -> str | None:
+    """The name rospkg gives the package in ``folder`` (None for a metapackage)."""
+    manifest = manifest_of(folder)
+    if os.path.basename(manifest) == "manifest.xml":
+        return os.path.basename(os.path.abspath(folder))
+    data, _found = read_bytes(manifest, Location(None, manifest))
+    if data is None:
+        return None
+    try:
+        root = etree.fromstring(data, xml_parser())
+    except etree.XMLSyntaxError:
+        return None
+    name = (root.findtext("name") or "").strip()
+    return name if name and root.find("export/metapackage") is None else None
+
+
+def _find_installed(name: str, env: Mapping[str, str],
+                    path_index: dict[str, str]) -> str | None:
+    if name in path_index:
+        return path_index[name]
+    for var in ("AMENT_PREFIX_PATH", "CMAKE_PREFIX_PATH"):
+        for prefix in env.get(var, "").split(os.pathsep):
+            candidate = os.path.join(prefix, "share", name)
+            if prefix and os.path.isfile(os.path.join(candidate, "package.xml")):
+                return candidate
     return None

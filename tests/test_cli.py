@@ -27,8 +27,14 @@ def test_extract_writes_the_json_model(tmp_path):
     model = json.loads(out.read_text())
     assert model["schema"] == "haros-arch/1"
     assert [t["name"] for t in model["configurations"][0]["topics"]] == ["/chatter"]
-    assert "configuration minimal" in result.stdout
-    assert "/chatter" in result.stdout
+    # a summary: counts per kind, not every resource (-v lists them)
+    assert "configuration minimal: 2 nodes, 1 topics, 1 services, 0 actions, " \
+        "2 parameters, 5 links" in result.stdout
+    assert "every node's interface is known" in result.stdout
+    assert "/chatter" not in result.stdout
+    verbose = run("extract", str(FIXTURES / "paper_minimal/project.yaml"), "-o", str(out),
+                  "-v")
+    assert "topic   /chatter" in verbose.stdout and "read by: /talker" in verbose.stdout
 
 
 def test_malformed_project_file_exits_2_with_file_and_line(tmp_path):
@@ -120,6 +126,13 @@ def test_explain_lists_codes(capsys):
     assert main(["explain", "LAUNCH_UNKNOWN_TAG"]) == 0
     assert "roslaunch ignores tags" in capsys.readouterr().out
     assert main(["explain", "NO_SUCH_CODE"]) == 2
+    capsys.readouterr()
+    # the ids of findings that are not rules of their own: what they are, and the rule
+    assert main(["explain", "parameter-set-not-read-undecided"]) == 0
+    text = capsys.readouterr().out
+    assert "partial or unknown interface" in text and "Parameter set but never read" in text
+    assert main(["explain", "query-limit"]) == 0
+    assert "step budget" in capsys.readouterr().out
 
 
 def test_text_that_looks_like_markup_is_printed_as_it_is(write_tree):
@@ -129,10 +142,13 @@ def test_text_that_looks_like_markup_is_printed_as_it_is(write_tree):
                                    "</launch>\n",
         "project.yaml": "project: '[red]p'\nconfigurations:\n  c: [pkg/launch/a.launch]\n",
     })
-    result = run("extract", str(root / "project.yaml"), "-o", str(root / "m.json"))
+    result = run("extract", str(root / "project.yaml"), "-o", str(root / "m.json"), "-v")
     assert result.returncode == 0, result.stderr
     assert "[red]p" in result.stdout
     assert "[/c1]/[bold]t" in result.stdout
+    # the node's package is nowhere: its interface is unknown, and the summary says so
+    assert "1 node(s) whose interface is not fully known (1 unknown)" in result.stdout
+    assert re.search(r"/x  \?, unknown: no source", result.stdout)
 
 
 def test_check_text_counts_info_diagnostics_unless_verbose(write_tree):

@@ -86,22 +86,31 @@ def test_launch_name_wins_over_the_code_name(write_tree):
 
 
 def test_two_unnamed_nodes_keep_their_own_launch_parameters(write_tree):
-    # robot_state_publisher is not in the workspace: it stays /? with its parameter;
-    # the talker's parameter goes to /talker only
+    # acme_driver is not in the workspace and has no interface model: named after its
+    # executable, a guess said in a diagnostic, with its parameter; the talker's parameter
+    # goes to /talker only; an executable not known statically leaves the name unknown
     launch = """
         from launch import LaunchDescription
         from launch_ros.actions import Node
 
         def generate_launch_description():
             return LaunchDescription([
-                Node(package='robot_state_publisher', executable='robot_state_publisher',
+                Node(package='acme_driver', executable='acme_driver',
                      parameters=[{'robot_description': '<robot/>'}]),
                 Node(package='talk', executable='talker', parameters=[{'rate': 5.0}]),
+                Node(package='other', executable=EnvironmentVariable('EXE_UNSET'),
+                     parameters=[{'x': 1}]),
             ])
         """
-    config = build(workspace(write_tree, launch))
-    assert [n.name for n in config.nodes] == ["/?", "/talker"]
+    config = build(workspace(write_tree, launch.replace(
+        "from launch_ros.actions import Node",
+        "from launch_ros.actions import Node\n        "
+        "from launch.substitutions import EnvironmentVariable")))
+    assert [n.name for n in config.nodes] == ["/acme_driver", "/talker", "/?"]
     assert config.parameter("/talker/rate").value == 5.0
     assert config.parameter("/talker/robot_description") is None
-    assert config.parameter("/?/robot_description").set_by_launch
-    assert config.parameter("/?/rate") is None
+    assert config.parameter("/acme_driver/robot_description").set_by_launch
+    assert config.parameter("/acme_driver/rate") is None
+    assert config.parameter("/?/x").set_by_launch
+    guessed = [d for d in config.diagnostics if d.code == "NODE_NAME_GUESSED"]
+    assert [(d.location.line, "guess" in d.message) for d in guessed] == [(7, True)]

@@ -68,3 +68,17 @@ def test_model_nested_too_deep(tmp_path: Path, capsys) -> None:
     saved.write_text('{"configurations": ' + "[" * 100000 + "]" * 100000 + "}")
     assert main(["query", "--model", str(saved), "configs"]) == 2
     assert main(["report", "--model", str(saved), "-o", str(tmp_path / "r.html")]) == 2
+
+
+def test_package_of_is_the_innermost_package_folder(tmp_path: Path) -> None:
+    from haros_arch.model.source import Package
+
+    workspace = scan([str(tmp_path)], {})
+    outer, inner = Package("outer", "outer"), Package("inner", "outer/sub/inner")
+    outer.root, inner.root = str(tmp_path / "outer"), str(tmp_path / "outer" / "sub" / "inner")
+    workspace.packages.update(outer=outer, inner=inner)
+    assert workspace.package_of(str(tmp_path / "outer" / "sub" / "inner" / "a.cpp")) is inner
+    assert workspace.package_of(str(tmp_path / "outer" / "sub" / "b.cpp")) is outer
+    assert workspace.package_of(str(tmp_path / "outer")) is outer
+    assert workspace.package_of(str(tmp_path / "outerx" / "c.cpp")) is None
+    assert workspace.package_of("/") is None

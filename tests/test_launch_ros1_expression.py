@@ -39,6 +39,8 @@ def names(name: str) -> object:
     ("False and nothing", False),
     ("True or nothing", True),
     ("'same' if nothing else 'same'", "same"),
+    ("sorted(set('ndt_yabloc'.split('_')).intersection(['ndt', 'artag']))", ["ndt"]),
+    ("set([1, 2]).union({3}) == {1, 2, 3}, {1}.issubset([1, 2])", (True, True)),
 ])
 def test_evaluates(text: str, expected: object) -> None:
     assert evaluate(text, names) == expected

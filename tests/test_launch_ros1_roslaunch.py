@@ -22,6 +22,8 @@ from haros_arch.workspace import scan
 
 ROOT = Path(__file__).resolve().parent.parent
 WS = ROOT / "fixtures" / "launch_ros1" / "ws" / "src"
+PACKAGE_PATH = ROOT / "fixtures" / "launch_ros1" / "package_path"  # not in the workspace
+ROS_PACKAGE_PATH = f"{WS}:{PACKAGE_PATH}"
 LAUNCH = WS / "robot_bringup" / "launch"
 ORACLE = ROOT / "bench" / "launch_roslaunch_dump.py"
 SYSTEM_PYTHON = "/usr/bin/python3"
@@ -32,12 +34,26 @@ CASES: list[tuple[str, dict[str, str]]] = [
     ("args.launch", {}),
     ("args.launch", {"sim": "true", "robot": "scout", "use_lidar": "false"}),
     ("machines.launch", {}),
+    # ROS 1 files named *.launch.xml, started on their own: by content, by package
+    ("xml_suffix.launch", {}),
+    ("../../robot_base/launch/includes/mobile_base.launch.xml", {"manager": "mgr"}),
+    ("../../robot_base/launch/includes/planning_pipeline.launch.xml", {}),
+    # $(find) through ROS_PACKAGE_PATH: searched recursively, rosbuild packages too
+    ("package_path.launch", {}),
+    ("private_top.launch", {}),  # ~name no node takes: /roslaunch/name
 ]
 REFUSED: dict[str, str] = {
     "refused_if_unless.launch": "LAUNCH_IF_AND_UNLESS",
     "refused_duplicate.launch": "LAUNCH_NODE_DUPLICATE",
     "refused_missing_arg.launch": "LAUNCH_ARG_REQUIRED",
     "refused_cycle.launch": "LAUNCH_INCLUDE_CYCLE",
+}
+# roslaunch refuses these because a package is not found; a package we cannot find may be
+# installed where we do not look, so ours is a warning: the value is unknown, and said so
+NOT_FOUND: dict[str, str] = {
+    "refused_find_ignored.launch": "package ghost is not found",  # under CATKIN_IGNORE
+    "refused_find_nested.launch": "package nested_hidden is not found",  # in a package
+    "refused_find_hidden.launch": "package secret is not found",  # in a .folder
 }
 
 
@@ -57,7 +73,7 @@ pytestmark = pytest.mark.skipif(
 
 def oracle_env(tmp: Path) -> dict[str, str]:
     return {"PATH": "/usr/bin:/bin", "HOME": str(tmp), "ROS_HOME": str(tmp),
-            "ROS_PACKAGE_PATH": str(WS), "LANG": "C.UTF-8"}
+            "ROS_PACKAGE_PATH": ROS_PACKAGE_PATH, "LANG": "C.UTF-8"}
 
 
 def run_roslaunch(files: list[tuple[str, dict[str, str]]], tmp: Path) -> list[dict[str, Any]]:
@@ -74,12 +90,12 @@ def run_roslaunch(files: list[tuple[str, dict[str, str]]], tmp: Path) -> list[di
 @pytest.fixture(scope="module")
 def oracle(tmp_path_factory: pytest.TempPathFactory) -> dict[int, dict[str, Any]]:
     tmp = tmp_path_factory.mktemp("roslaunch")
-    cases = CASES + [(name, {}) for name in REFUSED]
+    cases = CASES + [(name, {}) for name in REFUSED] + [(name, {}) for name in NOT_FOUND]
     return dict(enumerate(run_roslaunch(cases, tmp)))
 
 
 def ours(name: str, args: dict[str, str]) -> LaunchModel:
-    env = {"ROS_PACKAGE_PATH": str(WS)}
+    env = {"ROS_PACKAGE_PATH": ROS_PACKAGE_PATH}
     workspace = scan([str(WS)], env)
     return load(str(LAUNCH / name), workspace, args, env)
 
@@ -150,3 +166,13 @@ def test_refused_like_roslaunch(name: str, oracle: dict[int, dict[str, Any]]) ->
     model = ours(name, {})
     codes = {d.code for d in model.diagnostics if d.severity == "error"}
     assert REFUSED[name] in codes
+
+
+@pytest.mark.parametrize("name", list(NOT_FOUND))
+def test_not_found_like_roslaunch(name: str, oracle: dict[int, dict[str, Any]]) -> None:
+    theirs = oracle[len(CASES) + len(REFUSED) + list(NOT_FOUND).index(name)]
+    assert "ResourceNotFound" in theirs.get("error", ""), theirs
+    model = ours(name, {})
+    assert [p.value for p in model.params] == [None]
+    assert any(d.code == "LAUNCH_UNKNOWN_VALUE" and NOT_FOUND[name] in d.message
+               for d in model.diagnostics)

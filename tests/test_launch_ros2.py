@@ -234,3 +234,54 @@ def test_yaml_launch_and_include_with_args(write_tree):
     assert model.files == ["pkg/launch/main.launch.yaml", "pkg/launch/part.launch.xml"]
     bad, _ = run(write_tree, "bad.launch.yaml", "launch: [\n  - node: {pkg: p\n")
     assert codes(bad) == ["LAUNCH_YAML_SYNTAX"]
+
+
+def test_backslash_escapes_as_launch_reads_them():
+    # checked against launch's parse_substitution (jazzy): every literal is unescaped
+    assert parse("[\\'ndt\\',\\'yabloc\\']") == ("['ndt','yabloc']",)
+    assert parse("\\$(var x)") == ("$(var x)",)
+    assert parse("a\\b") == ("ab",) and parse("a\\") == ("a\\",)
+    assert parse("$(env A\\)b x)") == (e.Env(("A)b",), ("x",)),)
+    assert parse("$(env A\\ b)") == (e.Env(("A\\",), ("b",)),)
+    assert parse("$(env A\\'b)") == (e.Env(("A'b",), None),)
+
+
+def test_escaped_quotes_reach_eval(write_tree):
+    # Autoware's pose_twist_estimator.launch.xml: a list written with \' then eval'd
+    model, _ = run(write_tree, "main.launch.xml", """
+        <launch>
+          <arg name="pose_source" default="ndt"/>
+          <let name="available" value="[\\'ndt\\',\\'yabloc\\']"/>
+          <let name="split"
+               value="list(set('$(var pose_source)'.split('_')).intersection($(var available)))"/>
+          <let name="sources" value="$(eval $(var split))"/>
+          <group if="$(eval &quot;'ndt' in $(var sources)&quot;)">
+            <node pkg="p" exec="ndt" name="ndt"/>
+          </group>
+          <group if="$(eval &quot;'yabloc' in $(var sources)&quot;)">
+            <node pkg="p" exec="yabloc" name="yabloc"/>
+          </group>
+        </launch>
+    """)
+    assert [(n.name, n.conditions) for n in model.nodes] == [("/ndt", ())]
+
+
+def test_allow_substs_file_with_an_unknown_value_is_read(write_tree):
+    model, _ = run(write_tree, "main.launch.xml", """
+        <launch>
+          <arg name="robot" default="r1"/>
+          <node pkg="p" exec="e" name="cfg">
+            <param from="$(find-pkg-share pkg)/config/p.yaml" allow_substs="true"/>
+          </node>
+        </launch>
+    """, extra={"src/pkg/config/p.yaml": """
+        cfg:
+          ros__parameters:
+            frame: $(var robot)/base
+            port: $(env ROBOT_PORT_UNSET)
+            $(env SIDE_UNSET)_limit: 2.0
+            rate: 10
+    """})
+    assert {p.name: p.value for p in model.params} == {
+        "/cfg/frame": "r1/base", "/cfg/port": None, "/cfg/?_limit": 2.0, "/cfg/rate": 10}
+    assert "LAUNCH_UNKNOWN_VALUE" in codes(model)

@@ -103,3 +103,47 @@ def test_include_through_the_prefix_reads_the_installed_source(write_tree) -> No
     assert model.files[-1] == os.path.join("src", "cell", "launch", "bringup",
                                            "part.launch.xml")
     assert model.diagnostics == []
+
+
+def test_symlink_install_reads_the_sources_it_links(tmp_path: Path) -> None:
+    # colcon build --symlink-install: install/<pkg>/share/<pkg>/... are links into src/;
+    # what they lead to is read (a workspace folder), a link leading out of the
+    # workspace is not
+    src = tmp_path / "ws/src/bot"
+    (src / "launch").mkdir(parents=True)
+    (src / "config").mkdir()
+    (src / "package.xml").write_text(package_xml("bot", "ament_cmake"))
+    (src / "config/names.yaml").write_text("names: [left, right]\n")
+    (src / "config/desc.txt").write_text("<robot/>")
+    (tmp_path / "secret.yaml").write_text("names: [stolen]\n")
+    (src / "launch/bot.launch.py").write_text(
+        "import os, yaml\n"
+        "from launch import LaunchDescription\n"
+        "from launch_ros.actions import Node\n"
+        "def generate_launch_description():\n"
+        "    here = os.path.dirname(os.path.realpath(__file__))\n"
+        "    with open(os.path.join(here, '..', 'config', 'names.yaml')) as f:\n"
+        "        names = yaml.safe_load(f)['names']\n"
+        "    return LaunchDescription([Node(package='bot', executable='e', name=n)\n"
+        "                              for n in names])\n")
+    (src / "launch/desc.launch.xml").write_text(
+        '<launch><node pkg="bot" exec="e" name="d">'
+        '<param name="desc" value="$(file-content $(dirname)/../config/desc.txt)"/>'
+        "</node></launch>")
+    share = tmp_path / "ws/install/bot/share/bot"
+    share.mkdir(parents=True)
+    for entry in ("launch", "package.xml"):
+        (share / entry).symlink_to(src / entry)
+    (share / "config").mkdir()
+    for entry in ("names.yaml", "desc.txt"):
+        (share / "config" / entry).symlink_to(src / "config" / entry)
+    (share / "config/leak.yaml").symlink_to(tmp_path / "secret.yaml")
+    env = {"AMENT_PREFIX_PATH": str(tmp_path / "ws/install/bot")}
+    workspace = scan([str(tmp_path / "ws/src")], env)
+    model = load(str(share / "launch/bot.launch.py"), workspace, {}, env)
+    assert [n.name for n in model.nodes] == ["/left", "/right"]
+    assert model.diagnostics == []
+    assert workspace.readable(str(share / "config/names.yaml"))
+    assert not workspace.readable(str(share / "config/leak.yaml"))
+    model = load(str(share / "launch/desc.launch.xml"), workspace, {}, env)
+    assert [(p.name, p.value) for p in model.params] == [("/d/desc", "<robot/>")]

@@ -277,3 +277,71 @@ def generate_launch_description():
         "/cfg/mode": True, "/front/rate": 15, "/rear/rate": 15}
     messages = " ".join(d.message for d in model.diagnostics)
     assert "outside the workspace" in messages and "open() other than for reading" in messages
+
+
+def test_path_substitution_grows_with_slash(write_tree):
+    model, root = run(write_tree, """
+from launch.substitutions import PathSubstitution
+from launch_ros.substitutions import FindPackageShare
+
+def generate_launch_description():
+    base = PathSubstitution(FindPackageShare('pkg'))
+    urdf = base / 'urdf' / LaunchConfiguration('model', default='bot.urdf')
+    return LaunchDescription([
+        Node(package='p', executable='e', name='n',
+             parameters=[{'urdf': urdf, 'config': PathSubstitution('/etc') / 'x.yaml'}]),
+    ])
+""")
+    assert {p.key: p.value for p in model.params} == {
+        "urdf": str(root / "src/pkg/urdf/bot.urdf"), "config": "/etc/x.yaml"}
+    assert codes(model) == []
+
+
+def test_file_is_the_launch_file_path(write_tree):
+    # nav2's dual_ekf_navsat.launch.py: parameters beside the launch file, by __file__
+    model, _root = run(write_tree, """
+from launch_ros.actions import Node
+
+def generate_launch_description():
+    launch_dir = os.path.dirname(os.path.realpath(__file__))
+    params = os.path.join(launch_dir, 'ekf.yaml')
+    return LaunchDescription([
+        Node(package='robot_localization', executable='ekf_node', name='ekf_local',
+             parameters=[params]),
+    ])
+""", extra={"src/pkg/launch/ekf.yaml": "ekf_local:\n  ros__parameters:\n    freq: 30.0\n"})
+    assert [(p.key, p.value) for p in model.params] == [("freq", 30.0)]
+    assert codes(model) == []
+
+
+def test_an_argument_with_a_space_stays_one_argument(write_tree):
+    # ros2_control_demos' spawners: "--controller-ros-args", "-r ~/cmd_vel:=/cmd_vel"
+    model, _ = run(write_tree, """
+def generate_launch_description():
+    return LaunchDescription([Node(
+        package='controller_manager', executable='spawner', name='spawner',
+        arguments=['base', '--controller-ros-args', '-r ~/cmd_vel:=/cmd_vel', ''])])
+""")
+    import shlex
+    assert shlex.split(model.nodes[0].args) == [
+        "base", "--controller-ros-args", "-r ~/cmd_vel:=/cmd_vel", ""]
+
+
+def test_pathlib_paths_of_known_parts(write_tree):
+    # autoware_default_adapi: a node's namespace and name from a pathlib path
+    model, _ = run(write_tree, """
+import pathlib
+
+def api_node(name):
+    full = pathlib.Path('adapi/node') / name
+    return Node(package='p', executable='e', namespace=str(full.parent), name=full.name,
+                parameters=[{'file': (full / 'x.yaml').with_suffix('.json').as_posix(),
+                             'joined': os.path.join(full, 'y')}])
+
+def generate_launch_description():
+    return LaunchDescription([api_node('interface')])
+""")
+    assert [n.name for n in model.nodes] == ["/adapi/node/interface"]
+    assert {p.key: p.value for p in model.params} == {
+        "file": "adapi/node/interface/x.json", "joined": "adapi/node/interface/y"}
+    assert codes(model) == []

@@ -194,8 +194,8 @@ def test_framework_calls_a_plugin_shares_with_its_host_are_made_once():
 
 def test_a_manager_named_only_by_its_code_serves_the_spawners_of_its_namespace(tmp_path):
     # launch_ros names the node as ros2_control_node's code does ("controller_manager");
-    # when that is not known the instance is /robot/?, and the spawner's -c default
-    # (controller_manager, in its namespace) still reaches it
+    # when that is not known the graph names it after its executable (a guess), and the
+    # spawner's -c default (controller_manager, in its namespace) still reaches it
     params = tmp_path / "c.yaml"
     params.write_text("/robot/controller_manager:\n  ros__parameters:\n"
                       "    bcast:\n      type: my/Bcast\n")

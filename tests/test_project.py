@@ -92,6 +92,8 @@ def test_workspace_defaults_to_project_folder_without_src(tmp_path):
     ("project: p\nconfigurations:\n  a:\n    args: [1]\n", 4, "must be a mapping"),
     ("project: p\nconfigurations:\n  a:\n    hints: {}\n", 3, "names no launch files"),
     ("project: p\nconfigurations: [{launch: [x]}]\n", 2, "needs a 'name'"),
+    ("project: p\nconfigurations:\n  a:\n    launch: [x]\n    rostest: yes please\n", 5,
+     "true or false"),
     ("- just\n- a list\n", 1, "must be a mapping"),
     ("project: {a: 1}\n", 1, "must be a string"),
     ("project: p\nconfigurations: {a: [x], a: [y]}\n", 2, "defined twice"),

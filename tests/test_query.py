@@ -160,3 +160,35 @@ def test_the_type_mismatch_query_is_fast_on_10000_links():
     compiled = query.compile(text)
     # a tight budget proves the join: nested loops would need 25,000,000 bindings
     assert compiled.run(query.model_scope(big), max_steps=200_000)
+
+
+def test_a_sub_expression_without_bound_variables_is_evaluated_once():
+    big = big_model(4000)
+    # the inner path reads no variable of the outer filter: filtered once, not 4000 times
+    text = "configs/links[len(<configs/links[self.type == 'std_msgs/Int32']>) > 0]"
+    compiled = query.compile(text)
+    assert len(compiled.run(query.model_scope(big), max_steps=100_000)) == 4000
+    # one that reads the outer 'self' is evaluated per item, and still right
+    correlated = ("configs/links[some q in <configs/links[self.type == 'std_msgs/Int32']> "
+                  "satisfies (q.name == self.name)]")
+    small = big_model(400)
+    names = {link.name for link in small.configurations[0].links
+             if link.type == "std_msgs/Int32"}
+    found = query.compile(correlated).run(query.model_scope(small))
+    assert {link.name for link in found} == names
+    assert all(link.name in names for link in found)
+
+
+def test_similar_to_finds_what_comparing_every_pair_finds():
+    import random
+
+    from haros_arch.query.absence import similar_to
+    from haros_arch.query.functions import edit_distance
+
+    rng = random.Random(7)
+    words = ["".join(rng.choice("ab_") for _ in range(rng.randint(0, 9))) for _ in range(300)]
+    words.append("x" * 70)  # too long to index: compared one by one
+    for word in [*words[:60], "x" * 69]:
+        found = similar_to(lambda _n: None, word, words)
+        expected = [w for w in words if edit_distance(lambda _n: None, word, w) <= 2]
+        assert found == expected, word

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 import subprocess
 import sys
 from xml.etree import ElementTree as ET
@@ -55,12 +56,17 @@ def test_junit_has_a_failing_case_per_finding(findings):
     assert int(root.get("failures")) == len(findings)
 
 
-def test_check_text_groups_findings_by_severity_with_what_where_why():
-    result = run("check", str(FIXTURES / "paper_minimal/project.yaml"), "--fail-on", "info")
+def test_check_text_groups_findings_by_rule_with_what_where_why():
+    result = run("check", str(FIXTURES / "paper_minimal/project.yaml"), "--fail-on", "info",
+                 "-v")
     assert result.returncode == 1, result.stderr
-    assert "INFOS" in result.stdout
-    assert "example/launch/minimal.launch:" in result.stdout
-    assert "[parameter-set-not-read]" in result.stdout
+    assert re.search(r"queries: [0-9.]+ s; .*parameter-set-not-read [0-9.]+ s", result.stdout)
+    # the talker reads a parameter whose name it reads from stdin: it may read
+    # /frequency, so "set but never read" is not decided, one info that says why
+    assert "info Parameter set but never read: not decided " \
+        "[parameter-set-not-read-undecided]: 1" in result.stdout
+    assert "example/launch/minimal.launch:2: 1 possible finding(s)" in result.stdout
+    assert "/talker (1)" in result.stdout
     assert "Traceback" not in result.stderr
 
 
@@ -73,9 +79,11 @@ def test_check_formats_and_fail_on(tmp_path):
                "--fail-on", "never").returncode == 0
     log = json.loads(out.read_text())
     assert log["version"] == "2.1.0"
-    assert {r["ruleId"] for r in log["runs"][0]["results"]} >= {"parameter-set-not-read"}
+    assert {r["ruleId"] for r in log["runs"][0]["results"]} >= {
+        "parameter-set-not-read-undecided"}
     data = json.loads(run("check", project, "--format", "json").stdout)
-    assert {f["rule"] for f in data["findings"]} >= {"parameter-set-not-read"}
+    assert {f["rule"] for f in data["findings"]} >= {"parameter-set-not-read-undecided"}
+    assert data["findings"][0]["configurations"] == ["minimal"]
     junit = run("check", project, "--format", "junit").stdout
     assert ET.fromstring(junit).tag == "testsuites"
 
@@ -85,7 +93,7 @@ def test_extract_writes_findings_into_the_json_model(tmp_path):
     assert run("extract", str(FIXTURES / "paper_minimal/project.yaml"), "-o", str(out),
                "-q").returncode == 0
     data = json.loads(out.read_text())
-    assert any(f["rule"] == "parameter-set-not-read" for f in data["findings"])
+    assert any(f["rule"] == "parameter-set-not-read-undecided" for f in data["findings"])
     assert set(data["findings"][0]) >= {"rule", "severity", "title", "message",
                                         "configuration", "entities", "location"}
 
@@ -125,3 +133,57 @@ def test_query_on_a_project_with_config(tmp_path):
     wrong = run("query", str(FIXTURES / "paper_minimal/project.yaml"), "nodes",
                 "--config", "nope")
     assert wrong.returncode == 2
+
+
+def test_the_same_finding_in_two_configurations_is_one_listing_both():
+    config = {"links": [{"kind": "publish", "node": "/driver", "name": "/odom",
+                         "given": "/odom", "location": {"file": "a/driver.cpp", "line": 3}}],
+              "nodes": [{"name": "/driver", "node": "a/driver"}]}
+    model = from_data({"configurations": [{"name": "sim", **config},
+                                          {"name": "robot", **config}]})
+    found = [f for f in run_catalogue(model) if f.rule == "global-names"]
+    assert [(f.configuration, f.configurations) for f in found] == [
+        ("sim", ("sim", "robot"))]
+    assert "sim, robot: a/driver.cpp:3" in to_junit(found)
+    sarif = to_sarif(found)["runs"][0]["results"][0]
+    assert sarif["properties"]["configurations"] == ["sim", "robot"]
+
+
+def test_text_lists_the_first_few_findings_of_a_rule_and_all_with_verbose():
+    from io import StringIO
+
+    from rich.console import Console
+
+    from haros_arch.model.finding import Finding
+    from haros_arch.model.location import Location
+    from haros_arch.report.findings import FIRST_FEW, print_findings
+
+    findings = [Finding("queue-size-one", "info", "Queue size 1", f"link {i}", "c", (),
+                        Location("p", "p/a.cpp", i)) for i in range(FIRST_FEW + 2)]
+    findings.append(Finding("topic-type-mismatch", "error", "Topic type mismatch", "m", "c"))
+
+    def text(verbose: bool) -> str:
+        out = StringIO()
+        print_findings(findings, Console(file=out, width=200), verbose)
+        return out.getvalue()
+
+    short = text(False)
+    assert short.index("[topic-type-mismatch]: 1") < short.index("[queue-size-one]: 5")
+    assert "link 2" in short and "link 3" not in short and "... and 2 more" in short
+    assert "link 4" in text(True) and "more" not in text(True)
+
+
+def test_a_finding_at_two_call_sites_keeps_both_places_in_sarif_and_junit():
+    jsonschema = pytest.importorskip("jsonschema")
+    links = [{"kind": "subscribe", "node": "/safety", "name": "/bumper", "type": "a/B",
+              "queue_size": 1, "location": {"file": "s/safety.cpp", "line": line}}
+             for line in (7, 9)]
+    model = from_data({"configurations": [{"name": "c", "links": links, "nodes": [
+        {"name": "/safety", "node": "s/safety"}]}]})
+    (found,) = [f for f in run_catalogue(model) if f.rule == "queue-size-one"]
+    assert found.location.line == 7 and [str(p) for p in found.also] == ["s/safety.cpp:9"]
+    log = to_sarif([found], [], {}, "/ws")
+    jsonschema.validate(log, json.loads(SCHEMA.read_text()))
+    related = log["runs"][0]["results"][0]["relatedLocations"]
+    assert related[0]["physicalLocation"]["region"]["startLine"] == 9
+    assert "also at: s/safety.cpp:9" in to_junit([found])

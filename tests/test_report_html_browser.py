@@ -215,3 +215,76 @@ def test_hostile_names_are_text_and_candidates_light_up(browser: Any, tmp_path: 
     assert page.eval_on_selector_all("img", "els => els.length") == 0
     assert watched.dialogs == []
     assert watched.problems == []
+
+
+def test_findings_by_rule_incomplete_nodes_and_diagnostics_per_configuration(
+        browser: Any, tmp_path: Path) -> None:
+    def where(file: str, line: int = 1) -> dict[str, Any]:
+        return {"package": "demo", "file": file, "line": line, "column": 1}
+
+    def config(name: str, launch: str) -> dict[str, Any]:
+        return {
+            "name": name, "launch": [launch], "args": {}, "services": [], "actions": [],
+            "parameters": [], "diagnostics": [], "topics": [
+                {"name": "/scan", "id": "topic:/scan", "types": ["a/B"], "publishers": [],
+                 "subscribers": ["/slam"], "conditions": []}],
+            "nodes": [
+                {"name": "/slam", "id": "node:/slam", "node": "demo/slam", "namespace": "/",
+                 "remaps": [], "args": "", "conditions": [], "location": where(launch),
+                 "completeness": "partial"},
+                {"name": "/driver", "id": "node:/driver", "node": None, "namespace": "/",
+                 "remaps": [], "args": "", "conditions": [], "location": where(launch),
+                 "completeness": "unknown"}],
+            "links": [{"kind": "subscribe", "node": "/slam", "name": "/scan", "given": "scan",
+                       "type": "a/B", "queue_size": 5, "qos": None, "conditions": [],
+                       "location": where("demo/src/slam.cpp", 2)}]}
+
+    long_line = "x = " + "y" * 400
+    (tmp_path / "demo/src").mkdir(parents=True)
+    (tmp_path / "demo/src/slam.cpp").write_text(f"int a;\n{long_line}\n")
+    model = {"schema": "haros-arch/1", "project": "p", "packages": [{
+        "name": "demo", "path": "demo", "build_type": "catkin", "nodes": [{
+            "name": "demo/slam", "package": "demo", "executable": "slam", "kind": "executable",
+            "language": "cpp", "sources": ["demo/src/slam.cpp"], "calls": [],
+            "completeness": "partial",
+            "completeness_reasons": ["demo/src/slam.cpp:9: C++ error: unknown type"]}]}],
+        "configurations": [config("sim", "demo/launch/sim.launch"),
+                           config("real", "demo/launch/real.launch")],
+        "diagnostics": [
+            {"code": "LAUNCH_X", "severity": "warning", "message": "in sim only",
+             "location": where("demo/launch/sim.launch", 3)},
+            {"code": "CPP_X", "severity": "info", "message": "in the slam source",
+             "location": where("demo/src/slam.cpp", 2)}]}
+    findings = [Finding("queue-size-one", "info", "Queue size 1", f"link {i}", "sim",
+                        ("node:/slam", "topic:/scan"), Location("demo", "demo/src/slam.cpp", 2),
+                        configurations=("sim", "real")) for i in range(4)]
+    findings.append(Finding("topic-type-mismatch", "error", "Topic type mismatch", "m",
+                            "sim", ("topic:/scan",)))
+    path = tmp_path / "r.html"
+    write_report(model, findings, str(tmp_path), str(path))
+    watched = Watched(browser, path)
+    page = watched.page
+    # findings grouped by rule, most severe first, with counts; entries name entities
+    groups = page.eval_on_selector_all(
+        "#findings .finding-group", "els => els.map(e => [e.dataset.rule, "
+        "e.querySelector('summary .count').textContent])")
+    assert groups == [["topic-type-mismatch", "1"], ["queue-size-one", "4"]]
+    assert "/slam" in page.inner_text('#findings .finding-group[data-rule="queue-size-one"]')
+    # nodes of partial or unknown interface are drawn apart, with why on hover
+    assert watched.ids("#graph .vertex.incomplete") == {"node:/slam", "node:/driver"}
+    title = page.text_content('#graph .vertex[data-id="node:/slam"] title') or ""
+    assert "interface partial" in title and "slam.cpp:9: C++ error" in title
+    assert "no source" in (page.text_content('#graph .vertex[data-id="node:/driver"] title')
+                           or "")
+    # diagnostics of this configuration's files only
+    text = page.inner_text("#diagnostics")
+    assert "in sim only" in text and "in the slam source" in text
+    page.select_option("#config", label="real")
+    text = page.inner_text("#diagnostics")
+    assert "in sim only" not in text and "in the slam source" in text
+    assert page.eval_on_selector_all("#findings .item.finding", "els => els.length") == 4
+    # the source panel wraps long lines
+    page.click('#findings .finding-group[data-rule="queue-size-one"] .item')
+    width = page.eval_on_selector(".code-lines", "e => [e.scrollWidth, e.clientWidth]")
+    assert width[0] <= width[1] + 1
+    assert watched.problems == []

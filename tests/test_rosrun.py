@@ -28,7 +28,9 @@ def test_a_launched_script_outside_scripts_folder_is_found(write_tree):
               <node name="n" pkg="pkg" type="not_executable.py" />
             </launch>
             """,
-        "project.yaml": "project: p\nconfigurations:\n  c: [pkg/launch/t.launch]\n",
+        # a rostest configuration: its <test> nodes run (roslaunch leaves them out)
+        "project.yaml": "project: p\nconfigurations:\n  c:\n    launch: [pkg/launch/t.launch]"
+                        "\n    rostest: true\n",
     })
     os.chmod(root / "src/pkg/test/checker.py", 0o755)
     model = analyse(load(str(root / "project.yaml")), {"PATH": ""})

@@ -142,3 +142,56 @@ def test_launch_reads_parameter_files_of_a_linked_package(write_tree):
     loaded = launch.load(str(root / "ws/src/robot_nav/launch/nav.launch"), ws, {}, {})
     assert [(p.name, p.value) for p in loaded.params] == [("/planner/max_vel", 0.5)]
     assert not [d for d in loaded.diagnostics if d.code == "LAUNCH_UNKNOWN_VALUE"]
+
+
+def test_rosbuild_packages_are_packages(write_tree):
+    root = write_tree({
+        "src/stack/old_driver/manifest.xml": """
+            <package>
+              <description brief="old">A rosbuild package.</description>
+              <depend package="roscpp"/>
+              <export><nodelet plugin="${prefix}/plugins.xml"/></export>
+            </package>""",
+        "src/stack/old_driver/launch/driver.launch":
+            '<launch><param name="dir" value="$(find old_driver)"/></launch>',
+        "src/both/package.xml": package_xml("both_pkg"),
+        "src/both/manifest.xml": "<package/>",
+        "src/broken/manifest.xml": "<package>",
+        "src/web/manifest.xml": "<manifest><icon/></manifest>",  # not ROS: quietly no package
+    })
+    ws = scan([str(root / "src")], {})
+    old = ws.packages["old_driver"]
+    assert (old.format, old.build_type, old.path) == (1, "catkin", "stack/old_driver")
+    assert [(d.name, d.kind) for d in old.dependencies] == [("roscpp", "depend")]
+    assert [(p.kind, p.file) for p in old.plugins] == [
+        ("nodelet", "stack/old_driver/plugins.xml")]
+    assert "both_pkg" in ws.packages and "both" not in ws.packages  # package.xml wins
+    assert [(d.code, d.location.file) for d in ws.diagnostics] == [
+        ("PACKAGE_XML_SYNTAX", "broken/manifest.xml")]
+    from haros_arch.launch import load
+    model = load(str(root / "src/stack/old_driver/launch/driver.launch"), ws, {}, {})
+    assert [p.value for p in model.params] == [str(root / "src/stack/old_driver")]
+
+
+def test_ros_package_path_is_searched_recursively(write_tree):
+    root = write_tree({
+        "opt/repo/group/deep_pkg/package.xml": package_xml("deep"),
+        "opt/repo/group/deep_pkg/inner/package.xml": package_xml("inner"),
+        "opt/repo/skipped/CATKIN_IGNORE": "",
+        "opt/repo/skipped/ghost/package.xml": package_xml("ghost"),
+        "opt/repo/meta/package.xml": package_xml("meta").replace(
+            "</package>", "<export><metapackage/></export></package>"),
+        "opt/repo/meta/under_meta/package.xml": package_xml("under_meta"),
+        "opt/repo/nosub/rospack_nosubdirs": "",
+        "opt/repo/nosub/below/package.xml": package_xml("below"),
+        "opt/repo/rosbuild_one/manifest.xml": "<package/>",
+        "first/deep/package.xml": package_xml("deep"),
+        "ws/src/mine/package.xml": package_xml("mine"),
+    })
+    env = {"ROS_PACKAGE_PATH": f"{root / 'first'}:{root / 'opt'}"}
+    ws = scan([str(root / "ws/src")], env)
+    assert ws.find("deep") == str(root / "first/deep")  # the earlier entry wins
+    assert ws.find("rosbuild_one") == str(root / "opt/repo/rosbuild_one")
+    for name in ("inner", "ghost", "meta", "under_meta", "below"):
+        assert ws.find(name) is None, name
+    assert ws.find("mine") == str(root / "ws/src/mine")

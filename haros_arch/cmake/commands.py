@@ -301,12 +301,13 @@ LIBRARY_FLAGS = ("STATIC", "SHARED", "MODULE", "OBJECT", "EXCLUDE_FROM_ALL",
 
 
 @handles("add_executable", "cs_add_executable", "cuda_add_executable",
-         "ament_auto_add_executable")
+         "ament_auto_add_executable", "rosbuild_add_executable")
 def _add_executable(it: Interpreter, command: Invocation, args: list[str]) -> None:
     _add_target(it, command, args, "executable", EXECUTABLE_FLAGS)
 
 
-@handles("add_library", "cs_add_library", "cuda_add_library", "ament_auto_add_library")
+@handles("add_library", "cs_add_library", "cuda_add_library", "ament_auto_add_library",
+         "rosbuild_add_library")
 def _add_library(it: Interpreter, command: Invocation, args: list[str]) -> None:
     _add_target(it, command, args, "library", LIBRARY_FLAGS)
 

@@ -5,6 +5,7 @@ from __future__ import annotations
 import os
 import shlex
 from collections.abc import Mapping
+from dataclasses import replace
 from typing import Any
 
 from .. import diagnostics as diag
@@ -23,10 +24,11 @@ from ..model.runtime import (
 )
 from ..model.source import Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK
+from ..models.commands import command_node
 from ..plugins.attach import attach as attach_plugins
 from ..workspace import Workspace, installed_roots
 from .actions import action_links
-from .processes import process_nodes, process_params
+from .processes import guessed_names, process_nodes, process_params
 
 RESOURCE_OF_KIND: dict[str, type[Resource]] = {
     "publish": Topic, "subscribe": Topic, "server": Service, "client": Service,
@@ -91,6 +93,7 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
     """Fill ``config`` with node instances, resources and links; ``nodes`` by pkg/exec."""
     resources = Resources(config)
     config.diagnostics.extend(launch.diagnostics)
+    config.diagnostics.extend(guessed_names(launch, nodes))
     for param in process_params(launch, nodes):
         parameter = resources.get(Parameter, param.name)
         assert isinstance(parameter, Parameter)
@@ -115,11 +118,13 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
             continue
         remaps = resolve_remaps(instance.remaps, instance.namespace, instance.name)
         for call in instance.node.calls_of(own):
-            link(instance, call, remaps, resources, config)
+            for each in element_calls(call, instance, resources):  # list parameters
+                link(instance, each, remaps, resources, config)
     for instance, calls in attach_plugins(config, started, nodes, resources, workspace):
         remaps = resolve_remaps(instance.remaps, instance.namespace, instance.name)
         for call in calls:
-            link(instance, call, remaps, resources, config)
+            for each in element_calls(call, instance, resources):
+                link(instance, each, remaps, resources, config)
     for action, call, name in action_links(config):
         link(action.node, call, {}, resources, config, name)
     _namespace_values(config)
@@ -172,7 +177,7 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
     plugin = nodelet_plugin(decl)
     if plugin is not None:
         key = f"{plugin.partition('/')[0]}/{plugin}"
-    node = nodes.get(key)
+    node = nodes.get(key) or command_node(decl)  # rostopic pub: its arguments say
     if node is None and plugin is None and is_container(decl):
         pass  # a nodelet manager or component container: its interface is its plugins'
     elif node is None and workspace.find(key.partition("/")[0]) is None:
@@ -184,7 +189,7 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
     remaps = list(decl.remaps) + remaps_in_args(decl.args)
     return NodeInstance(decl.name, node, namespace=decl.namespace, remaps=remaps,
                         args=decl.args, conditions=decl.conditions, location=decl.location,
-                        ros_version=decl.ros_version)
+                        ros_version=decl.ros_version, test=decl.is_test)
 
 
 def is_container(decl: NodeDecl) -> bool:
@@ -266,6 +271,53 @@ def _given_name(call: PrimitiveCall, instance: NodeInstance, resources: Resource
     if isinstance(param, Parameter) and param.set_by_launch and isinstance(param.value, str):
         value = param.value
     return call.name if value is None else call.name.replace(UNKNOWN_MARK, value, 1)
+
+
+def element_calls(call: PrimitiveCall, instance: NodeInstance, resources: Resources
+                  ) -> list[PrimitiveCall]:
+    """A call named by each element of a list parameter (``name_each``): one call per
+    element of the value the launch file gives the parameter, named by the element's
+    field (``.``: the element itself; in ROS 2 the elements may be the parameters
+    ``name.<key>.<field>``); without such a value, the call as it is (its name keeps
+    its ``?``)."""
+    if call.name_each is None or call.name_param is None:
+        return [call]
+    source = _node_scoped(call.name_param) if instance.ros_version == 2 else call.name_param
+    full = RosName.make(source, instance.namespace, instance.name).full
+    param = resources.by_name.get((Parameter, full))
+    value = param.value if isinstance(param, Parameter) and param.set_by_launch else None
+    if value is None and instance.ros_version == 2:
+        value = _dotted_groups(full, resources)
+    elements = list(value.values()) if isinstance(value, dict) else value
+    if not isinstance(elements, list):
+        return [call]
+    names = [name for name in (_element_name(item, call.name_each) for item in elements)
+             if name is not None]
+    if not names:
+        return [call]
+    return [replace(call, name=name, name_param=None, name_default=None, name_each=None)
+            for name in names]
+
+
+def _dotted_groups(full: str, resources: Resources) -> dict[str, dict[str, Any]] | None:
+    """ROS 2 parameters under a prefix, by their next segment (``topics.nav.topic`` and
+    ``topics.nav.priority`` give ``{"nav": {"topic": ..., "priority": ...}}``), as
+    ``list_parameters({prefix})`` lists them; None when the launch file sets none."""
+    groups: dict[str, dict[str, Any]] = {}
+    for (cls, name), found in resources.by_name.items():
+        if cls is Parameter and name.startswith(full + ".") and isinstance(
+                found, Parameter) and found.set_by_launch:
+            key, _, field = name[len(full) + 1:].partition(".")
+            if key and field and "." not in field:
+                groups.setdefault(key, {})[field] = found.value
+    return groups or None
+
+
+def _element_name(item: Any, field: str) -> str | None:
+    if field == ".":
+        return item if isinstance(item, str) else None
+    value = item.get(field) if isinstance(item, dict) else None
+    return value if isinstance(value, str) else None
 
 
 def _search(name: RosName, instance: NodeInstance, resources: Resources) -> RosName:

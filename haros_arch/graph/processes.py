@@ -3,7 +3,9 @@
 A ROS 2 launch ``Node`` without ``name=`` runs its executable's node under the name the
 code gives it (``rclcpp::Node("talker")``, ``rclpy.create_node("talker")``): the
 instance takes that name, in the launch namespace, and the parameters the launch file
-gave the unnamed node (``/ns/?``) go to it.
+gave the unnamed node (``/ns/?``) go to it. Without its code (nor an interface model)
+the executable's name stands in, as packages usually name the two alike; that is a
+guess, and ``guessed_names`` says so for each.
 
 An rclpy executable that creates two nodes (two ``Node`` subclasses added to one
 executor, ``create_node`` called twice) has them in ``Node.rosnames``, and each of its
@@ -21,6 +23,8 @@ from __future__ import annotations
 from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import replace
 
+from .. import diagnostics as diag
+from ..diagnostics import Diagnostic
 from ..launch.model import LaunchModel, NodeDecl, ParamDecl
 from ..model.source import Node
 from ..model.values import UNKNOWN_MARK
@@ -69,8 +73,21 @@ def process_params(launch: LaunchModel, nodes: Mapping[str, Node]) -> list[Param
     return params
 
 
+def guessed_names(launch: LaunchModel, nodes: Mapping[str, Node]) -> list[Diagnostic]:
+    """One note for each unnamed node named after its executable (``_own_names``)."""
+    return [diag.make("NODE_NAME_GUESSED", decl.location, name=_renamed(decl, names[0]),
+                      executable=decl.executable)
+            for decl in launch.nodes
+            if nodes.get(node_key(decl)) is None and (names := _own_names(decl, nodes))]
+
+
 def _own_names(decl: NodeDecl, nodes: Mapping[str, Node]) -> list[str]:
     node = nodes.get(node_key(decl))
+    if node is None and decl.ros_version == 2 and _unnamed(decl) and not decl.composable \
+            and decl.executable and UNKNOWN_MARK not in decl.executable:
+        # no code: rcl would use the name the code gives; the executable's name is the
+        # usual one (a guess, said in NODE_NAME_GUESSED)
+        return [decl.executable]
     if node is None or decl.ros_version != 2:
         return []
     if len(node.rosnames) >= 2:

@@ -1,7 +1,7 @@
 """Launch files: which node instances and parameters a configuration starts.
 
 Entry point: ``load(path, workspace, args, environment)`` picks the interpreter by the
-file's format.
+launch system the file is written for (``dialect.ros_version``).
 """
 
 from __future__ import annotations
@@ -10,13 +10,14 @@ from collections.abc import Mapping
 
 from ..workspace import Workspace
 from . import ros1, ros2
-from .model import LaunchModel, NodeDecl, ParamDecl
+from .dialect import ros_version
+from .model import LaunchModel, NodeDecl, ParamDecl, without_tests
 
-__all__ = ["LaunchModel", "NodeDecl", "ParamDecl", "load"]
+__all__ = ["LaunchModel", "NodeDecl", "ParamDecl", "load", "without_tests"]
 
 
 def load(path: str, workspace: Workspace, args: Mapping[str, str] | None = None,
          environment: Mapping[str, str] | None = None) -> LaunchModel:
-    if ros2.is_ros2(path):  # .py / .yaml / .launch.xml, or ROS 2 tags (exec=, <let>, ...)
+    if ros_version(path, workspace) == 2:  # by content, then package, then name
         return ros2.load(path, workspace, args, environment)
     return ros1.load(path, workspace, args, environment)

@@ -131,6 +131,8 @@ _STR_METHODS = frozenset((
 ))
 _LIST_METHODS = frozenset(("index", "count"))
 _DICT_METHODS = frozenset(("get", "keys", "values", "items"))
+_SET_METHODS = frozenset(("intersection", "union", "difference", "symmetric_difference",
+                          "issubset", "issuperset", "isdisjoint"))  # none changes the set
 _PADDING = frozenset(("zfill", "center", "ljust", "rjust"))
 
 _BINARY: dict[type, Callable[[Any, Any], Any]] = {
@@ -363,12 +365,18 @@ class _Interpreter:
             allowed = _LIST_METHODS
         elif isinstance(owner, dict):
             allowed = _DICT_METHODS
+        elif isinstance(owner, (set, frozenset)):
+            allowed = _SET_METHODS
         else:
             allowed = frozenset()
         if name not in allowed:
             raise _Stop(Unknown(f"method {type(owner).__name__}.{name} is not supported",
                                 "unsupported"))
-        self.step(len(owner) if isinstance(owner, (str, list, tuple, dict)) else 1)
+        self.step(len(owner) if isinstance(owner, (str, list, tuple, dict, set, frozenset))
+                  else 1)
+        if isinstance(owner, (set, frozenset)):  # the result is no larger than its inputs
+            self.step(sum(len(a) if isinstance(a, (str, list, tuple, dict, set, frozenset))
+                          else 1 for a in args))
         if isinstance(owner, str):
             self.check_string_method(owner, name, args)
         bound = getattr(owner, name)

@@ -6,9 +6,11 @@ remappings are kept as written, because a node resolves them in its own namespac
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass, field
 from typing import Any
 
+from .. import diagnostics as diag
 from ..diagnostics import Diagnostic
 from ..model.conditions import Condition
 from ..model.location import NOWHERE, Location
@@ -67,3 +69,24 @@ class LaunchModel:
     clear_params: list[str] = field(default_factory=list)  # namespaces cleared first
     deleted_params: list[str] = field(default_factory=list)  # <rosparam command="delete">
     machines: dict[str, str] = field(default_factory=dict)  # name -> address
+
+
+def without_tests(model: LaunchModel) -> LaunchModel:
+    """``model`` as roslaunch runs it: ``<test>`` nodes are started by rostest only, so
+    they are left out (each said in an info diagnostic); their parameters stay, as
+    roslaunch sets them all the same."""
+    if not any(node.is_test for node in model.nodes):
+        return model
+    kept: list[NodeDecl] = []
+    index: dict[int, int] = {}
+    notes: list[Diagnostic] = []
+    for number, node in enumerate(model.nodes):
+        if node.is_test:
+            notes.append(diag.make("LAUNCH_TEST_LEFT_OUT", node.location, name=node.name))
+            continue
+        index[number] = len(kept)
+        kept.append(node)
+    params = [p if p.owner is None else dataclasses.replace(p, owner=index.get(p.owner))
+              for p in model.params]
+    return dataclasses.replace(model, nodes=kept, params=params,
+                               diagnostics=[*model.diagnostics, *notes])

@@ -7,6 +7,7 @@ name are created when the document does not list them.
 
 from __future__ import annotations
 
+import gc
 from typing import Any
 
 from .conditions import Condition
@@ -63,7 +64,8 @@ def _diagnostic(data: dict[str, Any]) -> Diagnostic:
                       str(data.get("message", "")), location(data.get("location")))
 
 
-def _node(data: dict[str, Any], package: str) -> Node:
+def node_from_data(data: dict[str, Any], package: str) -> Node:
+    """A node model (a package's node entry) from its data; also reads interface models."""
     name = str(data.get("name", ""))
     executable = data.get("executable") or name.partition("/")[2] or name
     calls = [PrimitiveCall(c.get("kind", "publish"), str(c.get("name", "")), c.get("type"),
@@ -76,7 +78,7 @@ def _node(data: dict[str, Any], package: str) -> Node:
                            default=c.get("default"), searched=bool(c.get("searched", False)),
                            handle_namespace=c.get("handle_namespace"),
                            deletes=bool(c.get("deletes", False)),
-                           node_name=c.get("node_name"))
+                           node_name=c.get("node_name"), name_each=c.get("name_each"))
              for c in data.get("calls", ())]
     return Node(data.get("package", package), executable, data.get("kind", "executable"),
                 data.get("language", "cpp"), list(data.get("sources", ())), calls,
@@ -85,6 +87,7 @@ def _node(data: dict[str, Any], package: str) -> Node:
                 [str(n) for n in data.get("rosnames", ()) if isinstance(n, str)],
                 _completeness(data.get("completeness")),
                 [str(r) for r in data.get("completeness_reasons", ()) if isinstance(r, str)],
+                data.get("model") if isinstance(data.get("model"), str) else None,
                 plugin_class=data.get("plugin_class") if isinstance(
                     data.get("plugin_class"), str) else None)
 
@@ -102,7 +105,7 @@ def _package(data: dict[str, Any]) -> Package:
             for d in data.get("dependencies", ()) if isinstance(d, dict)]
     return Package(name, data.get("path", name), data.get("build_type", "unknown"),
                    data.get("version", ""), int(data.get("format", 1)), deps, [],
-                   [_node(n, name) for n in data.get("nodes", ())],
+                   [node_from_data(n, name) for n in data.get("nodes", ())],
                    location(data.get("location")))
 
 
@@ -111,6 +114,10 @@ class _Resources:
         self.config = config
         self.by_key: dict[tuple[type[Resource], str], Resource] = {}
         self.by_id: dict[str, Resource] = {}
+        # how many resources of a kind carry a name (``/?`` may be many): kept as they
+        # are added, so naming the next one costs nothing (counting them each time made
+        # loading quadratic in the links that name unlisted or unknown resources)
+        self.count: dict[tuple[type[Resource], str], int] = {}
 
     def add(self, cls: type[Resource], data: dict[str, Any]) -> Resource:
         name = str(data.get("name", ""))
@@ -125,6 +132,7 @@ class _Resources:
                 resource.launch_conditions = conditions(data.get("conditions"))
         self.by_key.setdefault((cls, name), resource)
         self.by_id.setdefault(resource.id, resource)
+        self.count[(cls, name)] = self.count.get((cls, name), 0) + 1
         self._collection(cls).append(resource)
         return resource
 
@@ -132,8 +140,8 @@ class _Resources:
         found = self.by_key.get((cls, name))
         if found is not None and (UNKNOWN_MARK not in name or not found.links):
             return found
-        same = sum(1 for key in self.by_key if key == (cls, name))
-        repeats = sum(1 for r in self._collection(cls) if r.name == name) + same - 1
+        same = 1 if (cls, name) in self.by_key else 0
+        repeats = self.count.get((cls, name), 0) + same - 1
         suffix = f"#{repeats + 1}" if found is not None else ""
         return self.add(cls, {"name": name, "id": f"{cls.__name__.lower()}:{name}{suffix}"})
 
@@ -159,7 +167,8 @@ def _configuration(data: dict[str, Any], nodes: dict[str, Node],
             [tuple(pair) for pair in item.get("remaps", ())], item.get("args", ""),
             conditions(item.get("conditions")), location(item.get("location")),
             origin=str(item.get("origin", "launch")),
-            ros_version=int(item.get("ros_version", 1) or 1))
+            ros_version=int(item.get("ros_version", 1) or 1),
+            test=bool(item.get("test", False)))
         config.nodes.append(instance)
         by_name.setdefault(name, instance)
         by_id.setdefault(instance.id, instance)
@@ -168,6 +177,7 @@ def _configuration(data: dict[str, Any], nodes: dict[str, Node],
                      ("parameters", Parameter)):
         for item in data.get(key, ()):
             resources.add(cls, item)
+    call_index: dict[int, dict[tuple[str, Location], PrimitiveCall]] = {}
     for item in data.get("links", ()):
         kind = item.get("kind", "")
         if kind not in LINK_CLASSES:
@@ -192,7 +202,7 @@ def _configuration(data: dict[str, Any], nodes: dict[str, Node],
             latch=bool(item.get("latch", False)),
             conditions=conditions(item.get("conditions")), location=location(item.get("location")),
             origin=str(item.get("origin", "source")))
-        link.call = _call_of(instance, kind, link.location) or _call_from(
+        link.call = _call_of(instance, kind, link.location, call_index) or _call_from(
             link, item, kind)
         instance.links.append(link)
         resource.links.append(link)
@@ -231,13 +241,22 @@ def _node_type(nodes: dict[str, Node], hinted: dict[str, Node], name: Any) -> No
     return found
 
 
-def _call_of(instance: NodeInstance, kind: str, where: Location) -> PrimitiveCall | None:
-    """The source call a link was made from: same node type, kind and place."""
-    if instance.node is None:
+def _call_of(instance: NodeInstance, kind: str, where: Location,
+             index: dict[int, dict[tuple[str, Location], PrimitiveCall]]
+             ) -> PrimitiveCall | None:
+    """The source call a link was made from: same node type, kind and place (the first
+    such call; ``index`` holds each node type's calls by kind and place, made once)."""
+    node = instance.node
+    if node is None:
         return None
-    kinds = ("read", "declare") if kind == "read" else (kind,)
-    return next((call for call in instance.node.calls
-                 if call.kind in kinds and call.location == where), None)
+    calls = index.get(id(node))
+    if calls is None:
+        calls = index[id(node)] = {}
+        for call in node.calls:
+            calls.setdefault((call.kind, call.location), call)
+    if kind == "read":
+        return calls.get(("read", where)) or calls.get(("declare", where))
+    return calls.get((kind, where))
 
 
 def _call_from(link: Link, data: dict[str, Any], kind: str) -> PrimitiveCall | None:
@@ -255,14 +274,15 @@ def _call_from(link: Link, data: dict[str, Any], kind: str) -> PrimitiveCall | N
 def _wire_calls(config: Configuration) -> None:
     """A topic or service link that an action stands for gets the call the graph gave
     it: its action call's, under the wire's kind, name and type."""
-    actions = [link for link in config.links
-               if link.kind in ("action-server", "action-client") and link.call is not None]
+    actions: dict[tuple[int, Location], list[Link]] = {}  # by node and place
+    for link in config.links:
+        if link.kind in ("action-server", "action-client") and link.call is not None:
+            actions.setdefault((id(link.node), link.location), []).append(link)
     for link in config.links:
         if link.origin != "action" or link.call is not None:
             continue
-        action = next((a for a in actions if a.node is link.node
-                       and a.location == link.location
-                       and link.name.startswith(a.name.rstrip("/") + "/")), None)
+        action = next((a for a in actions.get((id(link.node), link.location), ())
+                       if link.name.startswith(a.name.rstrip("/") + "/")), None)
         if action is not None and action.call is not None:
             link.call = wire_call(action.call, link.kind,  # type: ignore[arg-type]
                                   link.name, link.type,
@@ -277,6 +297,10 @@ def from_data(data: Any) -> Model:
     schema = data.get("schema")
     if schema is not None and not str(schema).startswith("haros-arch/"):
         raise ModelDataError(f"unknown schema {schema!r}")
+    # the collector would walk every object made so far again and again while hundreds of
+    # thousands are made (half the load time of a 300,000-link model): paused, then run
+    paused = gc.isenabled()
+    gc.disable()
     try:
         model = Model(str(data.get("project", "")))
         model.packages = [_package(p) for p in data.get("packages", ())]
@@ -290,4 +314,7 @@ def from_data(data: Any) -> Model:
         # not one extract writes; say so instead of failing inside the reader
         raise ModelDataError(f"not a haros-arch model: a field has the wrong type or shape "
                              f"({type(err).__name__}: {err})") from None
+    finally:
+        if paused:
+            gc.enable()
     return model

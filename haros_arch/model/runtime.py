@@ -42,6 +42,8 @@ class NodeInstance:
     location: Location = NOWHERE
     origin: str = "launch"  # "launch", or "hint" when a project-file hint created it
     ros_version: int = 1  # 2: ROS 2 naming (node-scoped parameters)
+    # a roslaunch <test>: only rostest starts it (kept in rostest configurations only)
+    test: bool = field(default=False, metadata={"optional": True})
     links: list[Link] = field(default_factory=list, metadata=INDEX)
 
     JSON_VIEWS: ClassVar[dict[str, Callable[[Any], Any]]] = {

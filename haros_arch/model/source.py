@@ -84,6 +84,11 @@ class PrimitiveCall:
     # the name the code gives the ROS node this call is made on, when its executable
     # creates several (``Node.rosnames``); None: the executable's one node
     node_name: str | None = field(default=None, metadata={"optional": True})
+    # a name taken from each element of a list parameter (twist_mux's ``~topics``: one
+    # subscription per ``topics[i].topic``): ``name_param`` is the list, ``name_each``
+    # the element's field (``.``: the element itself); the graph makes one call per
+    # element the launch file gives
+    name_each: str | None = field(default=None, metadata={"optional": True})
 
 
 def wire_call(action: PrimitiveCall, kind: CallKind, name: str, type_: str | None,
@@ -125,6 +130,9 @@ class Node:
     # why calls may be missing (the first few reasons, each with its file:line)
     completeness_reasons: list[str] = field(default_factory=list,
                                             metadata={"optional": True})
+    # the interface model this node was taken from (``haros_arch.models``), e.g.
+    # "noetic/amcl 1.17.3 ros-planning/navigation@0123abcd"; None: from its source
+    model: str | None = field(default=None, metadata={"optional": True})
     # a nodelet or plugin class: its C++ type (``executable`` is its pluginlib lookup
     # name, ``pkg/Name`` or the type itself)
     plugin_class: str | None = field(default=None, metadata={"optional": True})

@@ -88,7 +88,8 @@ def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance
             continue
         for slot in host.slots:
             if slot.names == SPAWNER:
-                choices = list(_spawned(instance, started, params, workspace, config))
+                choices = list(_spawned(decl, instance, started, params, workspace,
+                                        config))
             else:
                 choices = list(_chosen(instance, slot, params))
             for choice in choices:
@@ -309,30 +310,32 @@ def _manager_name(spawner: NodeDecl, manager: str) -> str:
     return f"{namespace}/{manager}"
 
 
-def _serves(instance: NodeInstance, manager: str) -> bool:
+def _serves(host: NodeDecl, instance: NodeInstance, manager: str) -> bool:
+    """Whether the spawner's manager ``manager`` is this instance. A manager launched
+    without a name is named by ros2_control_node's code (``controller_manager``); when
+    that code is not known the instance is ``/ns/?`` or named after its executable (the
+    graph's guess)."""
     if instance.name == manager:
         return True
-    # a manager whose name its code would give (package not in the workspace): ``/ns/?``
-    return (instance.name.rsplit("/", 1)[-1] == UNKNOWN_MARK
+    return (host.name.rsplit("/", 1)[-1] in (UNKNOWN_MARK, host.executable)
             and namespace_of(instance.name) == namespace_of(manager)
             and manager.rsplit("/", 1)[-1] == MANAGER_NAME)
 
 
-def _spawned(host: NodeInstance, started: Sequence[tuple[NodeDecl, NodeInstance]],
-             params: Params, workspace: Workspace,
-             config: Configuration) -> Iterator[Choice]:
+def _spawned(host_decl: NodeDecl, host: NodeInstance,
+             started: Sequence[tuple[NodeDecl, NodeInstance]], params: Params,
+             workspace: Workspace, config: Configuration) -> Iterator[Choice]:
     """The controllers the spawners of the configuration load into ``host``."""
     for decl, instance in started:
         if (decl.package, decl.executable) not in SPAWNERS:
             continue
         spawn = spawn_args(decl)
-        if not _serves(host, _manager_name(decl, spawn.manager)):
+        if not _serves(host_decl, host, _manager_name(decl, spawn.manager)):
             continue
         documents = [doc for path in spawn.param_files
                      if (doc := _param_file(path, decl, workspace, config)) is not None]
         namespace = host.namespace.rstrip("/")
-        manager = host.name if UNKNOWN_MARK not in host.name else _manager_name(
-            decl, spawn.manager)
+        manager = _manager_name(decl, spawn.manager)
         for controller in spawn.controllers[:MAX_PLUGINS]:
             node_name = f"{namespace}/{controller}"
             own: dict[str, Any] = {}

@@ -70,8 +70,8 @@ FIELDS: dict[type, tuple[str, ...]] = {
     NodeInstance: ("name", "id", "node", "namespace", "remaps", "args", "conditions",
                    "location", "rosname", "links", "publishers", "subscribers", "servers",
                    "clients", "action_servers", "action_clients", "reads", "writes",
-                   "origin", "ros_version", "completeness", "completeness_reasons",
-                   "is_complete"),
+                   "origin", "ros_version", "test", "completeness",
+                   "completeness_reasons", "is_complete"),
     Resource: _RESOURCE,
     Topic: ("publishers", "subscribers", "is_disconnected"),
     Service: ("servers", "clients", "is_disconnected"),
@@ -103,7 +103,15 @@ def _calls(kind: str) -> Callable[[Node], list[PrimitiveCall]]:
 
 
 # computed names that the model does not have under that name (HAROS's spellings)
+def _is_latched(link: Link) -> bool:
+    """A late subscriber still gets the last message: ROS 1 ``latch`` or ROS 2
+    transient-local durability."""
+    return link.latch or (isinstance(link.qos, dict)
+                          and str(link.qos.get("durability", "")).lower() == "transient_local")
+
+
 VIEWS: dict[type, dict[str, Callable[[Any], Any]]] = {
+    Link: {"is_latched": _is_latched},
     Parameter: {"reads": lambda p: p.readers, "writes": lambda p: p.writers},
     Node: {"advertise": _calls("publish"), "subscribe": _calls("subscribe"),
            "service": _calls("server"), "client": _calls("client"),

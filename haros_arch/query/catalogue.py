@@ -12,8 +12,9 @@ from __future__ import annotations
 
 import re
 import sys
+import time
 from collections.abc import Iterable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any
 
@@ -25,8 +26,8 @@ from ..model.location import NOWHERE, Location
 from ..model.model import Model
 from ..model.runtime import Configuration, Link
 from . import compile, config_scope, model_scope
-from .errors import QueryError
-from .interpreter import Evaluator
+from .errors import QueryError, QueryLimitError
+from .interpreter import DEFAULT_STEPS, Evaluator
 from .results import best_location, entities, entity_ids, label, location_of, plain
 from .suppress import Suppressions
 from .syntax import Literal
@@ -36,6 +37,12 @@ CATALOGUE_DIRS = (Path(__file__).resolve().parent.parent.parent / "queries",
                   Path(sys.prefix) / "share" / "haros-arch" / "queries")
 CATALOGUE_DIR = next((d for d in CATALOGUE_DIRS if d.is_dir()), CATALOGUE_DIRS[0])
 QUERY_ERROR = "query-error"
+QUERY_LIMIT = "query-limit"  # a rule stopped by the step budget: a warning, not an error
+# The step budget (deterministic) bounds a rule's work; the clock is only a safety net
+# far above it, so findings do not depend on how busy the machine is.
+SAFETY_SECONDS = 300.0
+STEPS = DEFAULT_STEPS
+UNDECIDED = "-undecided"  # suffix of the id of a rule's info on matches it cannot decide
 # diagnostics whose codes a catalogue rule reports as findings (``check`` shows them once)
 ABSORBED_CODES = frozenset({"LAUNCH_FILE_MISSING", "PACKAGE_NOT_FOUND", "NODE_NOT_FOUND"})
 # a name computed at run time, said by the extractor about a call; where a configuration
@@ -68,6 +75,10 @@ class Rule:
     scope: str = "configuration"  # configuration | model | auto
     configurations: tuple[str, ...] | None = None  # only these (None: all)
     origin: str = ""
+    # the key of a match that lists the nodes of partial or unknown interface that could
+    # be the missing side: a match where it is not empty is not a finding; they are
+    # counted in one info per configuration (the rule's id + UNDECIDED)
+    undecided_by: str | None = None
 
 
 class CatalogueError(ValueError):
@@ -86,7 +97,8 @@ def _rule(data: Any, origin: str, default_id: str = "", scope: str = "auto") -> 
     return Rule(rule_id, severity, str(data.get("title") or data.get("name") or rule_id),
                 data["query"], str(data.get("description", "")),
                 data.get("message") or data.get("details"),
-                str(data.get("scope", scope)), None, origin)
+                str(data.get("scope", scope)), None, origin,
+                str(data["undecided_by"]) if data.get("undecided_by") else None)
 
 
 def load_catalogue(folder: Path | str | None = None) -> list[Rule]:
@@ -201,20 +213,72 @@ def _run(rule: Rule, model: Model) -> list[tuple[Finding, list[Location]]]:
         return [(_error_finding(rule, err, None), [])]
     found: list[tuple[Finding, list[Location]]] = []
     for config, scope in _scopes(rule, query, model):
-        evaluator = Evaluator(query.text, scope)
+        evaluator = Evaluator(query.text, scope, STEPS, SAFETY_SECONDS)
         try:
             value = evaluator.run(query.tree)
+        except QueryLimitError as err:
+            found.append((_limit_finding(rule, err, config), []))
+            continue
         except QueryError as err:
             found.append((_error_finding(rule, err, config), []))
             continue
         matches = value if isinstance(value, list) else [value]
+        undecided: list[tuple[Any, list[Any]]] = []
         for match in matches:
             if match is None or match is False or match == ():
+                continue
+            unseen = _unseen(rule, match)
+            if unseen:
+                undecided.append((match, unseen))
                 continue
             finding = _finding(rule, match, config, evaluator)
             places = [finding.location, *(location_of(e) for e in entities(match))]
             found.append((finding, places))
+        if undecided:
+            found.append((_undecided_finding(rule, undecided, config), []))
     return found
+
+
+def _unseen(rule: Rule, match: Any) -> list[Any]:
+    if rule.undecided_by is None or not isinstance(match, dict):
+        return []
+    nodes = match.get(rule.undecided_by)
+    return list(nodes) if isinstance(nodes, list | tuple) else []
+
+
+UNDECIDED_NAMED = 5  # nodes named in an undecided info (the ones that could be most)
+
+
+def _undecided_finding(rule: Rule, undecided: list[tuple[Any, list[Any]]],
+                       config: Configuration | None) -> Finding:
+    """One info for the matches of a rule that nodes of partial or unknown interface
+    could contradict: how many, and which nodes could be the missing side."""
+    counts: dict[Any, int] = {}
+    for _match, nodes in undecided:
+        for node in nodes:
+            counts[node] = counts.get(node, 0) + 1
+    ranked = sorted(counts, key=lambda n: (-counts[n], getattr(n, "name", str(n))))
+    named = ", ".join(f"{label(n).removeprefix('node ')} ({counts[n]})"
+                      for n in ranked[:UNDECIDED_NAMED])
+    more = f" and {len(ranked) - UNDECIDED_NAMED} more" if len(ranked) > UNDECIDED_NAMED \
+        else ""
+    first = "; ".join(label(e) for e in entities(undecided[0][0])[:1])
+    message = (f"{len(undecided)} possible finding(s) not reported (first: {first}): "
+               f"these nodes could be the missing side unseen (interface partial or "
+               f"unknown, a name with '?', or dynamic_reconfigure): {named}{more}")
+    return Finding(rule.id + UNDECIDED, "info", f"{rule.title}: not decided",
+                   message, config.name if config else None,
+                   entity_ids(ranked[:UNDECIDED_NAMED]),
+                   best_location(entities(undecided[0][0])))
+
+
+def _limit_finding(rule: Rule, err: QueryError, config: Configuration | None) -> Finding:
+    """A rule that hit a limit: said as such, with the rule's findings unknown here; a
+    warning, so that ``--fail-on error`` does not fail on it alone."""
+    first = str(err).splitlines()[0]
+    return Finding(QUERY_LIMIT, "warning", f"Query {rule.id} stopped at a limit",
+                   f"{rule.origin}: {first}; its findings in this configuration are not "
+                   "known", config.name if config else None, (), NOWHERE)
 
 
 def _error_finding(rule: Rule, err: QueryError, config: Configuration | None) -> Finding:
@@ -223,8 +287,10 @@ def _error_finding(rule: Rule, err: QueryError, config: Configuration | None) ->
 
 
 def run_catalogue(model: Model, project: Any = None,
-                  catalogue: list[Rule] | None = None) -> list[Finding]:
-    """Every rule's findings, suppressions applied, sorted by severity then place."""
+                  catalogue: list[Rule] | None = None,
+                  seconds: dict[str, float] | None = None) -> list[Finding]:
+    """Every rule's findings, suppressions applied, sorted by severity then place;
+    ``seconds`` gets each rule's time (over every configuration)."""
     rules = list(load_catalogue() if catalogue is None else catalogue)
     if project is not None:
         rules.extend(project_rules(project))
@@ -232,16 +298,38 @@ def run_catalogue(model: Model, project: Any = None,
     suppressions = Suppressions(roots)
     found: list[Finding] = []
     for rule in rules:
+        start = time.perf_counter()
         for finding, places in _run(rule, model):
             if suppressions.applies(rule.id, places):
                 continue
             found.append(finding)
-    # two matches that say the same thing at the same place (a node subscribing twice
-    # to one topic pairs twice with the same publisher) are one finding
-    found = list(dict.fromkeys(found))
+        if seconds is not None:
+            seconds[rule.id] = seconds.get(rule.id, 0.0) + time.perf_counter() - start
+    found = merge(found)
     found.sort(key=lambda f: (-SEVERITY_RANK[f.severity], f.rule, f.configuration or "",
                               f.location.file or "", f.location.line))
     return found
+
+
+def merge(findings: Iterable[Finding]) -> list[Finding]:
+    """One problem, one finding: matches that say the same thing about the same entities
+    are one finding, wherever they are found: at two call sites (a node subscribing to
+    one topic twice; the second place is in ``also``) or in several configurations
+    (``configurations`` lists them)."""
+    merged: dict[tuple[Any, ...], Finding] = {}
+    for finding in findings:
+        key = (finding.rule, finding.severity, finding.title, finding.message,
+               finding.entities)
+        known = merged.get(key)
+        if known is None:
+            merged[key] = finding
+            continue
+        configs = tuple(dict.fromkeys((*known.configurations, *finding.configurations)))
+        places = tuple(p for p in dict.fromkeys((*known.also, finding.location,
+                                                 *finding.also))
+                       if p != known.location)
+        merged[key] = replace(known, configurations=configs, also=places)
+    return list(merged.values())
 
 
 def explain(rule: Rule) -> str:
@@ -250,4 +338,4 @@ def explain(rule: Rule) -> str:
 
 
 __all__ = ["ABSORBED_CODES", "Rule", "absorbed", "explain", "load_catalogue", "location_of",
-           "project_rules", "run_catalogue", "run_rule"]
+           "merge", "project_rules", "run_catalogue", "run_rule"]

@@ -54,7 +54,8 @@ def check(args: Any, out: Console, err: Console, analyse: Analyse) -> int:
     model = analyse(args.project, err)
     if model is None:
         return EXIT_USAGE
-    findings = run_catalogue(model, project)
+    seconds: dict[str, float] = {}
+    findings = run_catalogue(model, project, seconds=seconds)
     said = absorbed(model)  # what catalogue rules report as findings
     diagnostics = [d for d in model.all_diagnostics if d not in said]
     fmt = getattr(args, "format", "text")
@@ -81,6 +82,8 @@ def check(args: Any, out: Console, err: Console, analyse: Analyse) -> int:
             console = Console(file=handle, soft_wrap=True, no_color=True)
         try:
             _print_text(findings, diagnostics, console, getattr(args, 'verbose', True))
+            if getattr(args, "verbose", False):
+                _print_seconds(seconds, console)
         finally:
             if handle:
                 handle.close()
@@ -97,13 +100,20 @@ def _print_text(findings: list[Finding], diagnostics: list[Diagnostic],
                       highlight=False)
         print_diagnostics(diagnostics, console, verbose)
         console.print()
-    print_findings(findings, console)
+    print_findings(findings, console, verbose)
     counts = count(findings)
     diag_counts = count_by_severity(diagnostics)
     console.print(", ".join(f"{n} {k}(s)" for k, n in counts.items())
                   + f" from {len(load_catalogue())} shipped queries; "
                   + ", ".join(f"{n} {k}(s)" for k, n in diag_counts.items())
                   + " in diagnostics", highlight=False)
+
+
+def _print_seconds(seconds: dict[str, float], console: Console) -> None:
+    """Each rule's time, slowest first (``check -v``)."""
+    console.print(f"queries: {sum(seconds.values()):.2f} s; "
+                  + ", ".join(f"{rule} {spent:.3f} s" for rule, spent in sorted(
+                      seconds.items(), key=lambda kv: -kv[1])), highlight=False)
 
 
 def _exit_code(findings: list[Finding], diagnostics: list[Diagnostic], fail_on: str) -> int:

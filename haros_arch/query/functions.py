@@ -12,6 +12,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from ..model.runtime import Link, NodeInstance, Resource
+from .absence import distance, similar_to, unknown_users
 from .errors import QueryLimitError, QueryTypeError
 
 Charge = Callable[[int], None]
@@ -74,16 +75,7 @@ def edit_distance(charge: Charge, a: Any, b: Any) -> int:
     if len(a) > MAX_DISTANCE_INPUT or len(b) > MAX_DISTANCE_INPUT:
         raise QueryLimitError(f"edit_distance() on strings longer than {MAX_DISTANCE_INPUT}")
     charge(1 + len(a) * len(b) // 64)
-    if len(a) < len(b):
-        a, b = b, a
-    previous = list(range(len(b) + 1))
-    for i, ca in enumerate(a, 1):
-        current = [i]
-        for j, cb in enumerate(b, 1):
-            current.append(min(previous[j] + 1, current[j - 1] + 1,
-                               previous[j - 1] + (ca != cb)))
-        previous = current
-    return previous[-1]
+    return distance(a, b)
 
 
 def name_similarity(charge: Charge, a: Any, b: Any) -> float:
@@ -261,3 +253,23 @@ def is_infrastructure(charge: Charge, name: Any) -> bool:
 
 FUNCTIONS["is_infrastructure"] = Function("is_infrastructure", is_infrastructure,
                                           charged=True)
+
+
+# checks that claim an absence, and similar-name pairing through an index (absence.py)
+FUNCTIONS["unknown_users"] = Function("unknown_users", unknown_users, 2, 2, charged=True)
+FUNCTIONS["similar_to"] = Function("similar_to", similar_to, 2, 2, charged=True)
+
+
+# topics that rviz's tools publish when an operator clicks: 2D Pose Estimate, 2D Nav Goal
+# (ROS 1 and ROS 2) and Publish Point; nodes subscribe to them to wait for a person
+_TOOL_INPUTS = frozenset({"/initialpose", "/move_base_simple/goal", "/goal_pose",
+                          "/clicked_point"})
+
+
+def is_tool_input(charge: Charge, name: Any) -> bool:
+    """True for a topic that an operator's tool (rviz) publishes by convention."""
+    charge(1)
+    return isinstance(name, str) and name in _TOOL_INPUTS
+
+
+FUNCTIONS["is_tool_input"] = Function("is_tool_input", is_tool_input, charged=True)

@@ -58,6 +58,8 @@ class Evaluator:
         self.plans: dict[int, Plan] = {}
         self.caches: dict[int, dict[Any, Any]] = {}
         self.handlers: dict[type, Callable[[Any], Any]] = {}
+        self.hoisted: set[int] = set()  # sub-expressions evaluated once (syntax.invariants)
+        self.memo: dict[int, Any] = {}
 
     # ---- limits
     def charge(self, steps: int = 1) -> None:
@@ -76,6 +78,8 @@ class Evaluator:
 
     # ---- entry
     def run(self, node: s.Expr) -> Any:
+        self.hoisted = s.invariants(node)
+        self.memo = {}
         try:
             return self.eval(node)
         except RecursionError:
@@ -85,7 +89,12 @@ class Evaluator:
         handler = self.handlers.get(type(node))
         if handler is None:
             handler = self.handlers[type(node)] = getattr(self, "_eval_" + type(node).__name__)
-        return handler(node)
+        if id(node) not in self.hoisted:
+            return handler(node)
+        value = self.memo.get(id(node), MISSING)
+        if value is MISSING:
+            value = self.memo[id(node)] = handler(node)
+        return value
 
     def truth(self, node: s.Expr) -> bool:
         return bool(self.eval(node))

@@ -160,3 +160,76 @@ def depth(node: Expr) -> int:
         deepest = max(deepest, level)
         stack.extend((child, level + 1) for child in children(item))
     return deepest
+
+
+def unbound_names(node: Expr, found: dict[int, frozenset[str]] | None = None
+                  ) -> frozenset[str]:
+    """The names ``node`` reads that no binder inside it binds: a path step's ``self``, a
+    quantifier's variable, a FLWR's ``for`` and ``let`` variables are bound in their
+    bodies. ``found`` collects the answer for every sub-expression (by ``id``)."""
+    found = {} if found is None else found
+    known = found.get(id(node))
+    if known is not None:
+        return known
+
+    def free(child: Expr | None) -> frozenset[str]:
+        return frozenset() if child is None else unbound_names(child, found)
+
+    names: set[str] = set()
+    if isinstance(node, Name):
+        names.add(node.name)
+    elif isinstance(node, Path):
+        names.add(node.steps[0].name)
+        for step in node.steps:
+            names |= free(step.where) - {"self"}
+            found[id(step)] = free(step.where) - {"self"}
+    elif isinstance(node, Quantified):
+        names |= free(node.source) | (free(node.condition) - {node.var})
+    elif isinstance(node, Flwr):
+        bound: set[str] = set()
+        for var, source in (*node.fors, *node.lets):
+            names |= free(source) - bound
+            bound.add(var)
+        for part in (node.where, *node.returns):
+            names |= free(part) - bound
+    else:
+        for child in children(node):
+            names |= free(child)
+    result = frozenset(names)
+    found[id(node)] = result
+    return result
+
+
+def binders(node: Expr) -> set[str]:
+    """Every name a binder anywhere in ``node`` binds (``self`` when a path filters)."""
+    names: set[str] = set()
+    stack = [node]
+    while stack:
+        item = stack.pop()
+        if isinstance(item, Step) and item.where is not None:
+            names.add("self")
+        elif isinstance(item, Quantified):
+            names.add(item.var)
+        elif isinstance(item, Flwr):
+            names.update(var for var, _ in (*item.fors, *item.lets))
+        stack.extend(children(item))
+    return names
+
+
+def invariants(root: Expr) -> set[int]:
+    """The ``id``s of the largest sub-expressions below ``root`` that read no bound
+    variable: their value is the same on every iteration of an enclosing filter,
+    quantifier or FLWR, so an evaluation computes each once (``parameters[...]`` inside a
+    ``for`` is not filtered again for every outer binding)."""
+    free: dict[int, frozenset[str]] = {}
+    unbound_names(root, free)
+    bound = binders(root)
+    hoisted: set[int] = set()
+    stack = list(children(root))
+    while stack:
+        item = stack.pop()
+        if not isinstance(item, Literal | Name | Step) and not (free[id(item)] & bound):
+            hoisted.add(id(item))
+            continue
+        stack.extend(children(item))
+    return hoisted

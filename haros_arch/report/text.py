@@ -10,7 +10,7 @@ from rich.markup import escape
 
 from ..model.diagnostic import SEVERITY_RANK, Diagnostic
 from ..model.model import Model
-from ..model.runtime import LAUNCH_WRITER, Parameter, Resource
+from ..model.runtime import LAUNCH_WRITER, Configuration, NodeInstance, Parameter, Resource
 
 
 def print_diagnostics(diagnostics: Iterable[Diagnostic], console: Console,
@@ -56,8 +56,13 @@ def _print_info_counts(infos: list[Diagnostic], console: Console) -> None:
                       f"{escape(first.message)}[/dim]", highlight=False)
 
 
-def print_summary(model: Model, console: Console) -> None:
-    """Per configuration: its node instances and each resource with who uses it."""
+INCOMPLETE_LISTED = 10  # nodes of partial or unknown interface named without --verbose
+
+
+def print_summary(model: Model, console: Console, verbose: bool = False) -> None:
+    """Per configuration: counts per kind and the node instances whose interface is
+    partial or unknown (with why); ``verbose`` lists every node instance and resource
+    with who uses it."""
     nodes = model.nodes
     calls = sum(len(node.calls) for node in nodes)
     console.print(f"[bold]{escape(model.project)}[/bold]: {len(model.packages)} package(s), "
@@ -67,32 +72,64 @@ def print_summary(model: Model, console: Console) -> None:
         counts = ", ".join(f"{len(items)} {label}" for label, items in (
             ("nodes", config.nodes), ("topics", config.topics),
             ("services", config.services), ("actions", config.actions),
-            ("parameters", config.parameters)))
+            ("parameters", config.parameters), ("links", config.links)))
         console.print(f"\n[bold]configuration {escape(config.name)}[/bold]: {counts}",
                       highlight=False)
-        for instance in config.nodes:
-            runs = instance.node.name if instance.node else "? (not in the workspace)"
-            conditional = " [dim](conditional)[/dim]" if instance.conditions else ""
-            console.print(f"  node  {escape(instance.name)}  [dim]{escape(runs)}[/dim]"
-                          f"{conditional}",
+        _print_incomplete(config.incomplete_nodes, console, verbose)
+        if verbose:
+            _print_everything(config, console)
+    if not verbose and model.configurations:
+        console.print("[dim](-v lists every node, topic, service, action and parameter)"
+                      "[/dim]", highlight=False)
+
+
+def _print_incomplete(incomplete: list[NodeInstance], console: Console,
+                      verbose: bool) -> None:
+    if not incomplete:
+        console.print("  every node's interface is known", highlight=False)
+        return
+    by_kind: dict[str, int] = defaultdict(int)
+    for instance in incomplete:
+        by_kind[instance.completeness] += 1
+    console.print(f"  {len(incomplete)} node(s) whose interface is not fully known ("
+                  + ", ".join(f"{n} {kind}" for kind, n in sorted(by_kind.items()))
+                  + "): checks that claim an absence do not decide where they could be "
+                  "the missing side", highlight=False)
+    shown = incomplete if verbose else incomplete[:INCOMPLETE_LISTED]
+    for instance in shown:
+        runs = instance.node.name if instance.node else "?"
+        reasons = "; ".join(instance.completeness_reasons[:2])
+        console.print(f"    {escape(instance.name)}  [dim]{escape(runs)}, "
+                      f"{instance.completeness}: {escape(reasons)}[/dim]", highlight=False)
+    if len(incomplete) > len(shown):
+        console.print(f"    [dim]... and {len(incomplete) - len(shown)} more[/dim]",
+                      highlight=False)
+
+
+def _print_everything(config: Configuration, console: Console) -> None:
+    for instance in config.nodes:
+        runs = instance.node.name if instance.node else "? (not in the workspace)"
+        conditional = " [dim](conditional)[/dim]" if instance.conditions else ""
+        console.print(f"  node  {escape(instance.name)}  [dim]{escape(runs)}[/dim]"
+                      f"{conditional}",
+                      highlight=False)
+    folded = 0
+    for label, resources in (("topic", config.topics), ("service", config.services),
+                             ("action", config.actions),
+                             ("param", config.parameters)):
+        for resource in resources:
+            if resource.links and all(link.origin == "action" for link in resource.links):
+                folded += 1  # the topics and services an action is made of
+                continue
+            types = ", ".join(resource.types) or "?"
+            console.print(f"  {label:<7} {escape(resource.name)}  "
+                          f"[dim]{escape(types)}[/dim]",
                           highlight=False)
-        folded = 0
-        for label, resources in (("topic", config.topics), ("service", config.services),
-                                 ("action", config.actions),
-                                 ("param", config.parameters)):
-            for resource in resources:
-                if resource.links and all(link.origin == "action" for link in resource.links):
-                    folded += 1  # the topics and services an action is made of
-                    continue
-                types = ", ".join(resource.types) or "?"
-                console.print(f"  {label:<7} {escape(resource.name)}  "
-                              f"[dim]{escape(types)}[/dim]",
-                              highlight=False)
-                for line in _uses(resource):
-                    console.print(f"            {escape(line)}", highlight=False)
-        if folded:
-            console.print(f"  [dim](and {folded} topics and services inside its actions)[/dim]",
-                          highlight=False)
+            for line in _uses(resource):
+                console.print(f"            {escape(line)}", highlight=False)
+    if folded:
+        console.print(f"  [dim](and {folded} topics and services inside its actions)[/dim]",
+                      highlight=False)
 
 
 def _uses(resource: Resource) -> list[str]:

@@ -200,15 +200,24 @@ def callee_of(call: Cursor) -> Cursor | None:
     return found[0] if len(found) == 1 else None
 
 
+# methods a host calls once, right after construction, to set a plugin or nodelet up
+INIT_METHODS = frozenset({"onInit", "initialize", "init", "configure", "on_configure",
+                          "on_init"})
+
+
 def member_initialiser(field: Cursor) -> tuple[Cursor, Cursor] | None:
-    """What a constructor of ``field``'s class initialises or assigns it with, and the
-    constructor (its definition, where this file has it)."""
+    """What a constructor of ``field``'s class initialises or assigns it with, or else an
+    initialisation method (``onInit``, ``initialize``, ...), and that function (its
+    definition, where this file has it)."""
     owner = field.semantic_parent
     if owner is None:
         return None
-    for member in owner.get_children():
-        if member.kind != CursorKind.CONSTRUCTOR:
-            continue
+    members = list(owner.get_children())
+    # constructors first, then the methods that initialise a plugin or nodelet after it
+    # is made (``onInit``: ``private_nh_ = getPrivateNodeHandle();``, the nodelet idiom)
+    ordered = [m for m in members if m.kind == CursorKind.CONSTRUCTOR] + [
+        m for m in members if m.kind == CursorKind.CXX_METHOD and m.spelling in INIT_METHODS]
+    for member in ordered:
         definition = member.get_definition()
         if definition is None:
             continue

@@ -17,6 +17,7 @@ from ...model.conditions import Condition
 from ...model.location import Location
 from ...model.values import Value
 from ..model import ParamDecl
+from ..partial_yaml import MARK, marked_text, unknown_parts
 from .params import Binary, ParamError, convert_value, flatten, join, load_yaml, type_name
 from .scope import PrivateParam, Scope, canonical
 
@@ -25,7 +26,6 @@ if TYPE_CHECKING:
 
 Element = etree._Element
 MAX_PARAM_FILE = 2 * 1024 * 1024
-SENTINEL = "\u2047haros_unknown\u2047"
 
 
 def tag_param(loader: Ros1Loader, element: Element, scope: Scope,
@@ -95,8 +95,15 @@ def read_param_file(loader: Ros1Loader, path: str, scope: Scope, element: Elemen
 def add_param(loader: Ros1Loader, name: str, value: Any, kind: str | None,
               conditions: tuple[Condition, ...], location: Location,
               source: str = "value") -> None:
-    loader.model.params.append(ParamDecl(canonical(name), value, kind, conditions,
-                                       location, source))
+    loader.model.params.append(ParamDecl(server_name(name), value, kind, conditions,
+                                         location, source))
+
+
+def server_name(name: str) -> str:
+    """The parameter server's name for a launch parameter: roslaunch sets a ``~name``
+    left at the top (no node took it) as the caller ``/roslaunch``, so the master
+    stores it as ``/roslaunch/name``."""
+    return canonical("/roslaunch/" + name[1:] if name.startswith("~") else name)
 
 def tag_rosparam(loader: Ros1Loader, element: Element, scope: Scope) -> None:
     command = loader.text(element, "command", scope) or "load"
@@ -115,7 +122,7 @@ def tag_rosparam(loader: Ros1Loader, element: Element, scope: Scope) -> None:
     if command == "dump":
         return
     if command == "delete":
-        loader.model.deleted_params.append(canonical(full))
+        loader.model.deleted_params.append(server_name(full))
         return
     where = loader.where(scope, element)
     if file is not None:
@@ -132,7 +139,7 @@ def tag_rosparam(loader: Ros1Loader, element: Element, scope: Scope) -> None:
         subst = True  # unknown: substitute, as values do not change otherwise
     if subst:
         value = loader.resolve(text, scope, element)
-        text = "".join(p if isinstance(p, str) else SENTINEL for p in value.parts)
+        text = marked_text(value)
     try:
         data_value = load_yaml(text)
     except ParamError as err:
@@ -149,22 +156,10 @@ def tag_rosparam(loader: Ros1Loader, element: Element, scope: Scope) -> None:
             "cannot load non-dictionary values into the global namespace '/'"))
         return
     for name, leaf in flatten(full, data_value):
-        leaf = _unknown_parts(leaf)
-        add_param(loader, name.replace(SENTINEL, "?"), leaf,
+        leaf = unknown_parts(leaf)
+        add_param(loader, name.replace(MARK, "?"), leaf,
                        type_name(leaf) if leaf is not None else None,
                        scope.conditions, where, "rosparam")
-
-
-def _unknown_parts(value: Any) -> Any:
-    """Strings that held an unknown substitution become unknown (None)."""
-    if isinstance(value, str) and SENTINEL in value:
-        return None
-    if isinstance(value, list):
-        items = [_unknown_parts(v) for v in value]
-        return None if any(i is None and v is not None for i, v in zip(items, value,
-                                                                         strict=True)) \
-            else items
-    return value
 
 
 __all__ = ["Value", "add_param", "tag_param", "tag_rosparam"]

@@ -9,7 +9,6 @@ performs it. ``is_ros2(path)`` tells a ROS 2 launch file from a roslaunch one.
 from __future__ import annotations
 
 import os
-import re
 from collections.abc import Mapping
 
 import yaml
@@ -19,6 +18,7 @@ from ...files import read_bytes, read_text
 from ...model.location import Location
 from ...model.values import Value
 from ...workspace import Workspace
+from ..dialect import ros_version
 from ..model import LaunchModel
 from . import entities as e
 from .frontend import Frontend, xml_entities, yaml_entities
@@ -26,23 +26,9 @@ from .runner import Runner, Scope
 
 __all__ = ["is_ros2", "load"]
 
-_ROS2_MARKS = re.compile(rb"\bexec\s*=|<let\b|\$\(var\b|<push[-_]ros[-_]namespace\b|"
-                         rb"<node_container\b|<set_remap\b|<set_parameter\b|"
-                         rb"\bnamespace\s*=|<executable\b|\$\(find-pkg-share\b")
-
-
-def is_ros2(path: str, head: bytes | None = None) -> bool:
-    """True for Python and YAML launch files, and XML ones written with ROS 2 tags."""
-    lower = path.lower()
-    if lower.endswith((".py", ".yaml", ".yml", ".launch.xml")):
-        return True
-    if head is None:
-        try:
-            with open(path, "rb") as handle:
-                head = handle.read(256 * 1024)
-        except OSError:
-            return False
-    return _ROS2_MARKS.search(head) is not None
+def is_ros2(path: str, head: bytes | None = None, workspace: Workspace | None = None) -> bool:
+    """True for a ROS 2 launch file (``dialect.ros_version``: content, package, name)."""
+    return ros_version(path, workspace, head) == 2
 
 
 def parse_file(path: str, runner: Runner, where: Location) -> list[e.Action] | None:

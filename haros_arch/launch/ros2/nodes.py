@@ -8,6 +8,7 @@ parameter whose value cannot be known is still declared, with value ``None``.
 
 from __future__ import annotations
 
+import shlex
 from typing import TYPE_CHECKING, Any
 
 from ...model.location import Location
@@ -25,6 +26,12 @@ COMPONENT_CONTAINER = ("rclcpp_components", "component_container")
 
 def _text(ev: Evaluator, t: e.Text | None, default: str = "?") -> str:
     return default if t is None else ev.value(t).text
+
+
+def _quoted(word: str) -> str:
+    """One argument of a Python ``arguments=[...]`` list in the command line: quoted
+    when it holds a space (``"-r ~/cmd_vel:=/cmd_vel"`` stays one argument)."""
+    return shlex.quote(word) if not word or any(c.isspace() for c in word) else word
 
 
 def perform_node(runner: Runner, action: e.NodeAction, scope: Scope) -> None:
@@ -47,7 +54,8 @@ def perform_node(runner: Runner, action: e.NodeAction, scope: Scope) -> None:
               *parsed.remaps]
     runner.model.nodes.append(node_decl(
         name=full, package=_text(ev, action.package), executable=_text(ev, action.executable),
-        namespace=naming.with_slash(namespace), args=" ".join(plain), remaps=remaps,
+        namespace=naming.with_slash(namespace),
+        args=" ".join(plain if action.split else map(_quoted, plain)), remaps=remaps,
         conditions=scope.conditions, location=where))
     entries: list[e.ParamEntry] = list(action.parameters)
     entries += [e.ParamFile((path,), location=where) for path in parsed.params_files]

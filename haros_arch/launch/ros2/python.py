@@ -58,7 +58,8 @@ class Interpreter(Expressions):
         self.workspace = workspace
         self.environment = environment
         self.diagnostics: list[Diagnostic] = []
-        self.globals: dict[str, Any] = {}
+        # launch imports the file from its path: __file__ is that path, as given
+        self.globals: dict[str, Any] = {"__file__": path}
         self.steps = 0
         self.depth = 0
         self.guards: list[str] = []  # texts of unknown Python `if` tests we are under

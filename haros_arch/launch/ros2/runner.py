@@ -23,6 +23,7 @@ from ...model.values import Unknown, Value
 from ...share import share_source
 from ...workspace import Workspace
 from ..model import LaunchModel, NodeDecl, ParamDecl
+from ..partial_yaml import marked_text, unknown_parts
 from . import entities as e
 from . import naming
 from .substitutions import Evaluator
@@ -293,7 +294,7 @@ class Runner:
         if text is None:
             return None
         try:
-            document = yaml.safe_load(text)
+            document = unknown_parts(yaml.safe_load(text))
         except yaml.YAMLError as err:
             mark = getattr(err, "problem_mark", None)
             self.report("LAUNCH_YAML_SYNTAX", self.workspace.location(
@@ -319,7 +320,7 @@ class Runner:
         if text is None:
             return None
         try:
-            return yaml.safe_load(text)
+            return unknown_parts(yaml.safe_load(text))
         except yaml.YAMLError:
             self.report("LAUNCH_PARAM_FILE", where, detail="a parameter file is not valid "
                         "YAML after its substitutions")
@@ -335,11 +336,12 @@ class Runner:
             self.report("LAUNCH_PARAM_FILE", where,
                         detail=f"substitutions in a parameter file cannot be read: {err}")
             return None
-        if value is None or value.literal is None:
-            self.report("LAUNCH_PARAM_FILE", where, detail="a parameter file uses "
-                        "substitutions whose values are not known statically")
+        if value is None:
             return None
-        return value.literal
+        if value.literal is None:  # read it all the same: what they make stays unknown
+            self.report("LAUNCH_UNKNOWN_VALUE", where, detail="a parameter file uses "
+                        "substitutions whose values are not known statically")
+        return marked_text(value)
 
     def replace(self, text: str, entry: e.ParamFile, scope: Scope,
                 where: Location) -> str | None:

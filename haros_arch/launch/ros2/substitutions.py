@@ -43,11 +43,20 @@ def parse(raw: str) -> e.Text:
 
 
 def _fragments(raw: str, pos: int, stop: str) -> tuple[e.Text, int]:
-    """Literal text and substitutions up to a character in ``stop`` (not consumed)."""
+    """Literal text and substitutions up to a character in ``stop`` (not consumed).
+
+    A backslash escapes the character after it, as launch's grammar and its
+    ``replace_escaped_characters`` have it: ``\\'`` is ``'``, ``\\$(`` is no
+    substitution, ``\\)`` does not end an argument; in an argument a backslash before a
+    space stays (the space ends the argument)."""
     out: list[str | e.Subst] = []
     buf: list[str] = []
     while pos < len(raw):
         char = raw[pos]
+        if char == "\\" and pos + 1 < len(raw) and not (stop and raw[pos + 1] in " \t\n"):
+            buf.append(raw[pos + 1])
+            pos += 2
+            continue
         if raw.startswith("$(", pos):
             if buf:
                 out.append("".join(buf))

@@ -90,7 +90,7 @@ function legend() {
   const fold = el('button', {id: 'legend-fold', type: 'button', title: 'show or hide the legend'}, 'legend');
   const box = el('div', {id: 'legend'}, fold);
   fold.addEventListener('click', () => foldLegend(!box.classList.contains('folded')));
-  const svg = d3.select(box).append('svg').attr('width', 150).attr('height', 178);
+  const svg = d3.select(box).append('svg').attr('width', 150).attr('height', 202);
   const samples = [['node', 'node instance'], ['topic', 'topic'], ['service', 'service'], ['action', 'action'], ['parameter', 'parameter']];
   samples.forEach(([kind, label], i) => {
     const v = {kind, w: 40, h: kind === 'parameter' ? 14 : 18};
@@ -106,6 +106,9 @@ function legend() {
   u.append('g').attr('class', 'badge').attr('transform', 'translate(18,-9)')
     .call(g => { g.append('circle').attr('r', 6); g.append('text').attr('dy', '0.35em').text('?'); });
   svg.append('text').attr('x', 54).attr('y', y + 28).text('name has ?');
+  const p = svg.append('g').attr('class', 'vertex k-node incomplete').attr('transform', `translate(26,${y + 48})`);
+  p.append('path').attr('class', 'shape').attr('d', shapePath({kind: 'node', w: 40, h: 18}));
+  svg.append('text').attr('x', 54).attr('y', y + 52).text('partial interface');
   return box;
 }
 
@@ -118,7 +121,7 @@ function foldLegend(folded) {
 function setConfig(i) {
   const config = CONFIGS[i] || {name: '(no configuration)'};
   app.config = config;
-  app.index = indexConfiguration(config);
+  app.index = indexConfiguration(config, app.nodeModels);
   app.options.collapsed.clear();
   app.selected = null;
   app.focus = null;
@@ -136,14 +139,55 @@ function setConfig(i) {
   showPanel(overview(config));
 }
 
-app.configFindings = () => app.findings.filter(f => !f.configuration || !app.config || f.configuration === app.config.name);
+// a finding lists every configuration it was found in (one problem, one finding)
+app.configFindings = () => app.findings.filter(f => !f.configuration || !app.config ||
+  (f.configurations || [f.configuration]).includes(app.config.name));
 app.findingsFor = id => app.configFindings().filter(f => (f.entities || []).includes(id));
+
+// node models by name ("pkg/exec"), for the completeness of the instances that run them
+app.nodeModels = new Map((MODEL.packages || []).flatMap(p => (p.nodes || []).map(n => [n.name || `${n.package}/${n.executable}`, n])));
+
+// The workspace's diagnostics that concern this configuration: those in files it reads
+// (its launch files, the sources of the nodes it runs) and those of no file.
+function configDiagnostics(config) {
+  const files = new Set();
+  for (const link of config.links || []) if (link.location && link.location.file) files.add(link.location.file);
+  for (const node of config.nodes || []) {
+    if (node.location && node.location.file) files.add(node.location.file);
+    const model = node.node ? app.nodeModels.get(node.node) : null;
+    for (const source of (model && model.sources) || []) files.add(source);
+    for (const call of (model && model.calls) || []) if (call.location && call.location.file) files.add(call.location.file);
+  }
+  for (const launch of config.launch || []) files.add(launch);
+  const mine = (MODEL.diagnostics || []).filter(d => !d.location || !d.location.file || files.has(d.location.file));
+  return [...(config.diagnostics || []), ...mine];
+}
+
+// Findings grouped by rule (most severe first), each group with its count, folded
+// open when there are few.
+function findingGroups(found) {
+  const groups = new Map();
+  for (const f of found) {
+    if (!groups.has(f.rule)) groups.set(f.rule, []);
+    groups.get(f.rule).push(f);
+  }
+  const rank = items => Math.min(...items.map(f => SEVERITIES.indexOf(f.severity)));
+  return [...groups.entries()].sort((a, b) => rank(a[1]) - rank(b[1]) || compareText(a[0], b[0]))
+    .map(([rule, items]) => {
+      const group = el('details', {class: 'finding-group', 'data-rule': rule},
+        el('summary', {}, severityBadge(items[0].severity), el('span', {class: 'item-title'}, items[0].title || rule),
+          el('span', {class: 'count'}, String(items.length))),
+        ...items.map(f => findingItem(f, app)));
+      if (groups.size <= 3 || items.length <= 3) group.open = true;
+      return group;
+    });
+}
 
 function renderLists() {
   const found = bySeverity(app.configFindings());
   ui.findings.replaceChildren(el('h3', {}, `Findings (${found.length})`),
-    ...(found.length ? found.map(f => findingItem(f, app)) : [el('p', {class: 'muted'}, 'No query findings.')]));
-  const diags = bySeverity([...(app.config.diagnostics || []), ...(MODEL.diagnostics || [])]);
+    ...(found.length ? findingGroups(found) : [el('p', {class: 'muted'}, 'No query findings.')]));
+  const diags = bySeverity(configDiagnostics(app.config));
   ui.diagnostics.replaceChildren(el('h3', {}, `Extraction diagnostics (${diags.length})`),
     ...diags.slice(0, 500).map(d => diagnosticItem(d, app)),
     ...(diags.length > 500 ? [el('p', {class: 'muted'}, `${diags.length - 500} more not listed`)] : []));

@@ -22,7 +22,18 @@ function entityId(kind, item) {
 }
 
 // Everything about one configuration that does not depend on filters.
-function indexConfiguration(config) {
+// How much of a node instance's interface is known, and why not: the instance's
+// completeness (from the JSON model), the reasons from its node model.
+const KNOWN_INTERFACE = ['complete', 'model'];
+function interfaceOf(item, nodeModels) {
+  const model = item.node ? nodeModels.get(item.node) : null;
+  const completeness = item.completeness || (item.node ? (model && model.completeness) || 'complete' : 'unknown');
+  let reasons = (model && model.completeness_reasons) || [];
+  if (!item.node) reasons = ['no source and no interface model for what it runs'];
+  return {completeness, reasons, incomplete: !KNOWN_INTERFACE.includes(completeness)};
+}
+
+function indexConfiguration(config, nodeModels = new Map()) {
   const entities = new Map();
   for (const kind of Object.keys(COLLECTIONS)) {
     for (const item of config[COLLECTIONS[kind]] || []) {
@@ -32,6 +43,7 @@ function indexConfiguration(config) {
         unresolved: String(item.name || '').includes('?'),
         conditional: (item.conditions || []).length > 0,
         links: [],
+        ...(kind === 'node' ? {iface: interfaceOf(item, nodeModels)} : {}),
       });
     }
   }
@@ -225,6 +237,10 @@ function vertexTitle(v) {
   if (item.types && item.types.length) lines.push(item.types.join(', '));
   if (item.type) lines.push(String(item.type));
   if (v.entity.unresolved) lines.push('name not known statically (?)');
+  if (v.entity.iface && v.entity.iface.incomplete) {
+    lines.push(`interface ${v.entity.iface.completeness}: what it publishes, subscribes, serves or reads is not all known`);
+    for (const reason of v.entity.iface.reasons.slice(0, 3)) lines.push('  ' + reason);
+  }
   const cond = conditionText(item.conditions);
   if (cond) lines.push('only if:\n' + cond);
   return lines.join('\n');
@@ -273,7 +289,8 @@ function drawGraph(root, view, handlers) {
 
   const vertexSel = vertexLayer.selectAll('g').data(view.vertices, v => v.id).join('g')
     .attr('class', v => `vertex k-${v.kind}` + (v.entity.unresolved ? ' unresolved' : '') +
-      (v.entity.conditional ? ' conditional' : ''))
+      (v.entity.conditional ? ' conditional' : '') +
+      (v.entity.iface && v.entity.iface.incomplete ? ' incomplete iface-' + v.entity.iface.completeness : ''))
     .attr('data-id', v => v.id)
     .attr('transform', v => `translate(${v.x},${v.y})`);
   vertexSel.append('path').attr('class', 'shape').attr('d', shapePath);

@@ -74,6 +74,12 @@ function entityPanel(entity, app) {
   }
   if (entity.kind === 'node') {
     parts.push(field('runs', item.node || '? (not found in the workspace)'));
+    if (entity.iface && entity.iface.incomplete) {
+      parts.push(field('interface', entity.iface.completeness));
+      parts.push(el('p', {class: 'warn'}, 'Not all of what this node publishes, subscribes, serves or reads is known, ' +
+        'so checks that say something is missing do not decide where it could be the missing side.'));
+      for (const reason of entity.iface.reasons.slice(0, 5)) parts.push(el('div', {class: 'muted reason'}, reason));
+    }
     parts.push(field('namespace', item.namespace || '/'));
     if (item.args) parts.push(field('args', item.args));
     if ((item.remaps || []).length) {
@@ -125,11 +131,16 @@ function entityLink(entity, app) {
 
 // ---- findings and diagnostics --------------------------------------------------------
 
+function shorten(text, most) {
+  return text.length <= most ? text : text.slice(0, most - 1) + '\u2026';
+}
+
 function findingItem(finding, app) {
+  const names = (finding.entities || []).map(id => (app.index.entities.get(id) || {name: id}).name);
   const item = el('div', {class: 'item finding', 'data-rule': finding.rule, onclick: () => app.showFinding(finding)},
     severityBadge(finding.severity),
-    el('span', {class: 'item-title'}, finding.title || finding.rule),
-    el('span', {class: 'item-sub'}, finding.rule));
+    el('span', {class: 'item-title'}, names.length ? names.slice(0, 2).join(' \u00b7 ') : (finding.title || finding.rule)),
+    el('span', {class: 'item-sub'}, shorten(finding.message || finding.rule, 160)));
   item.__finding = finding;
   return item;
 }
@@ -140,11 +151,13 @@ function findingPanel(finding, app) {
     el('div', {class: 'panel-kind'}, 'finding'),
     el('h2', {class: 'panel-title'}, finding.title || finding.rule),
     field('rule', finding.rule), field('severity', severityBadge(finding.severity)),
-    finding.configuration ? field('configuration', finding.configuration) : null,
+    finding.configuration ? field('configurations', (finding.configurations || [finding.configuration]).join(', ')) : null,
     el('p', {class: 'message'}, finding.message || ''),
     el('h4', {}, `Involves (${involved.length})`),
     el('div', {}, involved.map(e => el('div', {}, e.kind === 'missing' ? el('code', {}, e.id) : entityLink(e, app)))),
     codeBlock(finding.location, app.sources),
+    ...((finding.also || []).length ? [el('h4', {}, `The same problem at (${finding.also.length})`),
+      ...finding.also.map(loc => codeBlock(loc, app.sources, 1))] : []),
   ];
 }
 

@@ -1,0 +1,126 @@
+"""Give a configuration's node instances without source their interface models.
+
+A launch file starts ``amcl/amcl``; package ``amcl`` is installed (found through
+``ROS_PACKAGE_PATH`` / ``AMENT_PREFIX_PATH`` with no source) or not on this machine at
+all. Its node then takes the interface model of the configuration's distribution, and
+is used by the graph exactly like an extracted node: its completeness is ``model`` (or
+``partial`` when the model says calls may be missing), ``Node.model`` names the model
+and its version, and every link made from it has ``origin: "model"``.
+
+The distribution is the project file's ``distro:``, else ``ROS_DISTRO`` in the
+configuration's environment, else guessed from its launch files (ROS 1: noetic, ROS 2:
+jazzy); a ``MODEL_DISTRO`` diagnostic says which, and ``MODEL_USED`` which model each
+node took.
+"""
+
+from __future__ import annotations
+
+import copy
+from collections.abc import Mapping
+from dataclasses import replace
+
+from .. import diagnostics as diag
+from ..diagnostics import Diagnostic
+from ..graph.build import is_container, nodelet_plugin
+from ..launch.model import LaunchModel, NodeDecl
+from ..model.location import Location
+from ..model.source import Node, Package
+from ..workspace import Workspace
+from .commands import command_node
+from .format import InterfaceModel
+from .library import Library
+
+DEFAULT_DISTRO = {1: "noetic", 2: "jazzy"}
+
+
+def choose_distro(setting: str | None, environment: Mapping[str, str],
+                  launch: LaunchModel) -> tuple[str, str]:
+    """The distribution whose models a configuration uses, and why that one."""
+    if setting:
+        return setting, "the project file's 'distro'"
+    if environment.get("ROS_DISTRO"):
+        return environment["ROS_DISTRO"], "ROS_DISTRO in the configuration's environment"
+    version = 2 if any(d.ros_version == 2 for d in launch.nodes) else 1
+    return DEFAULT_DISTRO[version], f"guessed: its launch files are ROS {version}"
+
+
+class Attacher:
+    """Interface models for the configurations of one analysis; each modelled node is
+    made once and listed in ``packages`` (so the JSON model shows it)."""
+
+    def __init__(self, library: Library, distro: str | None,
+                 packages: list[Package]) -> None:
+        self.library = library
+        self.distro = distro
+        self.packages = packages
+        self._made: dict[tuple[str, str, str], Node] = {}
+
+    def nodes_for(self, launch: LaunchModel, workspace: Workspace, nodes: Mapping[str, Node],
+                  environment: Mapping[str, str], found: list[Diagnostic]
+                  ) -> dict[str, Node]:
+        """``nodes`` plus a modelled node for each launched node type that no workspace
+        package provides; problems and choices go to ``found``."""
+        result = dict(nodes)
+        chosen: tuple[str, str] | None = None
+        for decl in launch.nodes:
+            key = _key(decl)
+            package = key.partition("/")[0]
+            if (key in result or package in workspace.packages or command_node(decl)
+                    or (nodelet_plugin(decl) is None and is_container(decl))):
+                continue
+            if chosen is None:
+                chosen = choose_distro(self.distro, environment, launch)
+                found.append(diag.make("MODEL_DISTRO", decl.location, distro=chosen[0],
+                                       why=chosen[1]))
+            model = self.library.find(package, chosen[0])
+            if model is None:
+                continue
+            executable = key.partition("/")[2]
+            node = self._node(model, executable)
+            if node is None:
+                found.append(diag.make("MODEL_NODE_MISSING", decl.location, node=key,
+                                       model=model.label,
+                                       nodes=", ".join(n.executable for n in model.nodes)
+                                       or "none"))
+                continue
+            result[key] = node
+            where = workspace.find(package)
+            found.append(diag.make(
+                "MODEL_USED", decl.location, node=key, model=model.label,
+                where=f"installed at {where} without source" if where else "not found"))
+        found.extend(self.library.diagnostics)
+        self.library.diagnostics.clear()
+        return result
+
+    def _node(self, model: InterfaceModel, executable: str) -> Node | None:
+        key = (model.distro or "", model.package, executable)
+        if key in self._made:
+            return self._made[key]
+        source = model.node(executable)
+        if source is None:
+            return None
+        node = copy.deepcopy(source)
+        node.model = model.label
+        if node.completeness == "complete":
+            node.completeness = "model"
+        elif node.completeness == "partial":
+            node.completeness_reasons = [f"interface model {model.label}: {r}"
+                                         for r in node.completeness_reasons]
+        node.calls = [replace(c, origin="model") if c.origin != "action" else c
+                      for c in node.calls]
+        node.location = Location(file=model.path) if model.path else node.location
+        self._made[key] = node
+        owner = next((p for p in self.packages if p.name == model.package
+                      and not p.path), None)
+        if owner is None:
+            owner = Package(model.package, "", version=model.version)
+            self.packages.append(owner)
+        owner.nodes.append(node)
+        return node
+
+
+def _key(decl: NodeDecl) -> str:
+    plugin = nodelet_plugin(decl)
+    if plugin is not None:
+        return f"{plugin.partition('/')[0]}/{plugin}"
+    return f"{decl.package}/{decl.executable}"

@@ -1,0 +1,129 @@
+"""The interface model file: one package's nodes for one ROS distribution.
+
+A versioned serialisation of the model classes (``Node``, ``PrimitiveCall``) through the
+one generic serialiser, under a header that says where it comes from::
+
+    {"schema": "haros-arch-model/1", "package": "amcl", "distro": "noetic",
+     "version": "1.17.3",                       # the package's package.xml version
+     "source": {"repository": "github:ros-planning/navigation",
+                "branch": "noetic-devel", "commit": "<40 hex>", "path": "amcl"},
+     "generator": {"name": "haros-arch", "version": "0.1.0"},
+     "override": "overrides/noetic/amcl.yaml",  # when one completed it, else absent
+     "nodes": [{"package": "amcl", "executable": "amcl", "kind": "executable",
+                "language": "cpp", "rosname": "amcl",
+                "calls": [{"kind": "subscribe", "name": "scan", ...}],
+                "completeness": "partial", "completeness_reasons": [...]}]}
+
+Calls keep the names as the code writes them (``~initial_pose``, ``scan``,
+``/map``), their types, queue sizes or QoS, parameter reads with their defaults, and
+``name_param`` / ``name_default`` for names taken from parameters. Files and lines
+are relative to the repository. Users write their own files in the same format.
+"""
+
+from __future__ import annotations
+
+import json
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+from .. import __version__
+from ..model.load import node_from_data
+from ..model.serialise import to_data
+from ..model.source import CALL_KINDS, Node
+
+SCHEMA = "haros-arch-model/1"
+SCHEMA_PREFIX = "haros-arch-model/"
+_TEXT_FIELDS = ("type", "name_param", "name_default", "name_each", "handle_namespace",
+                "node_name", "callback")
+
+
+class ModelFileError(ValueError):
+    """The data is not an interface model this reader understands."""
+
+
+@dataclass
+class InterfaceModel:
+    """One package's nodes for one distribution, with where they come from."""
+
+    package: str
+    distro: str | None
+    nodes: list[Node] = field(default_factory=list)
+    version: str = ""
+    source: dict[str, str] = field(default_factory=dict)
+    generator: dict[str, str] = field(default_factory=dict)
+    override: str | None = None
+    path: str = ""  # the file it was read from (not written)
+
+    @property
+    def label(self) -> str:
+        """How the output names it: ``noetic/amcl 1.17.3 ros-planning/navigation@0123abcd``."""
+        where = self.source.get("repository", "").removeprefix("github:")
+        commit = self.source.get("commit", "")[:8]
+        origin = f" {where}@{commit}" if where and commit else f" {where}" if where else ""
+        version = f" {self.version}" if self.version else ""
+        return f"{self.distro or 'any'}/{self.package}{version}{origin}"
+
+    def node(self, executable: str) -> Node | None:
+        return next((n for n in self.nodes if n.executable == executable), None)
+
+
+def to_document(model: InterfaceModel) -> dict[str, Any]:
+    data: dict[str, Any] = {
+        "schema": SCHEMA, "package": model.package, "distro": model.distro,
+        "version": model.version, "source": dict(model.source),
+        "generator": dict(model.generator) or {"name": "haros-arch", "version": __version__},
+    }
+    if model.override:
+        data["override"] = model.override
+    data["nodes"] = [to_data(node) for node in model.nodes]
+    return data
+
+
+def dumps(model: InterfaceModel) -> str:
+    return json.dumps(to_document(model), indent=1, ensure_ascii=False, sort_keys=False) + "\n"
+
+
+def from_document(data: Any, path: str = "") -> InterfaceModel:
+    """An interface model from its data; raises ``ModelFileError`` saying what is wrong."""
+    if not isinstance(data, dict):
+        raise ModelFileError("an interface model is a JSON object")
+    schema = data.get("schema")
+    if not isinstance(schema, str) or not schema.startswith(SCHEMA_PREFIX):
+        raise ModelFileError(f"schema is {schema!r}, expected {SCHEMA!r}")
+    package = data.get("package")
+    if not isinstance(package, str) or not package:
+        raise ModelFileError("'package' must be the package's name")
+    distro = data.get("distro")
+    if distro is not None and not isinstance(distro, str):
+        raise ModelFileError("'distro' must be a distribution name (noetic, jazzy, ...)")
+    nodes = data.get("nodes")
+    if not isinstance(nodes, list) or not all(isinstance(n, dict) for n in nodes):
+        raise ModelFileError("'nodes' must be a list of node objects")
+    calls = [c for n in nodes for c in _list(n.get("calls"))]
+    if not all(isinstance(c, dict) and isinstance(c.get("name", ""), str) for c in calls):
+        raise ModelFileError("each call must be an object with a string 'name'")
+    for call in calls:
+        if call.get("kind", "publish") not in CALL_KINDS:
+            raise ModelFileError(f"a call's kind is {call.get('kind')!r}, expected one of "
+                                 f"{', '.join(CALL_KINDS)}")
+        if not all(isinstance(call.get(key), str | None) for key in _TEXT_FIELDS):
+            raise ModelFileError(f"a call's {', '.join(_TEXT_FIELDS)} must be strings")
+    try:
+        built = [node_from_data(n, package) for n in nodes]
+    except (TypeError, ValueError, AttributeError) as error:
+        raise ModelFileError(f"a node entry cannot be read: {error}") from None
+    return InterfaceModel(package, distro, built, str(data.get("version") or ""),
+                          _strings(data.get("source")), _strings(data.get("generator")),
+                          data.get("override") if isinstance(data.get("override"), str)
+                          else None, path)
+
+
+def _list(value: Any) -> Sequence[Any]:
+    return value if isinstance(value, list) else []
+
+
+def _strings(value: Any) -> dict[str, str]:
+    if not isinstance(value, dict):
+        return {}
+    return {str(k): str(v) for k, v in value.items() if v is not None}

@@ -1,0 +1,383 @@
+"""``haros-arch models build LIST``: interface models from pinned public sources.
+
+The list (YAML) pins where each model comes from::
+
+    - repository: github:ros-planning/navigation
+      branch: noetic-devel            # for people; the commit is what counts
+      commit: 9d7f5a1...              # 40 hex digits
+      distro: noetic
+      packages: [amcl, move_base, map_server]
+      with:                           # scanned too (message and library packages the
+        - repository: github:ros-planning/navigation_msgs   # code includes), not modelled
+          commit: 793d06f...
+
+Each entry's source tree is expected at ``SOURCES/<owner>+<name>@<commit[:12]>``
+(``scripts/models-fetch`` puts it there from a local git mirror). Each package is one
+unit of work, run by the same code as a workspace analysis (workspace scan, build
+files, C++ and Python extraction): on a local process pool by default, or on a Dask
+distributed cluster (``--scheduler ADDRESS``; the optional ``dask`` extra). A node is
+``partial`` where extraction says so (its sources kept errors) and where a line of its
+C++ calls a ROS API function with no extracted call there (``_mark_unextracted``). An
+override file ``OVERRIDES/<distro>/<package>.yaml`` (hint format, reviewed like code)
+may complete a model; what it adds has origin ``override``.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+from collections.abc import Callable, Iterable, Sequence
+from concurrent.futures import ProcessPoolExecutor
+from dataclasses import dataclass, field
+from typing import Any
+
+import yaml
+
+from .. import __version__
+from .. import diagnostics as diag
+from ..diagnostics import Diagnostic
+from ..extract import AUTO_CACHE, extract_nodes
+from ..files import read_text
+from ..graph.hints import apply_node_hints
+from ..model.conditions import Condition
+from ..model.location import Location
+from ..model.source import Node, PrimitiveCall
+from ..model.values import UNKNOWN_MARK
+from ..pipeline import read_build_files
+from ..workspace import scan
+from .format import InterfaceModel, dumps
+
+OVERRIDES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "overrides")
+COMMIT = re.compile(r"^[0-9a-f]{40}$")
+REPOSITORY = re.compile(r"^github:[A-Za-z0-9_.-]+/[A-Za-z0-9_.-]+$")
+# an override node block may also say why the node is now complete, put calls the
+# extractor took as unconditional under the condition that guards them, and name calls
+# by the elements of a list parameter
+OVERRIDE_KEYS = ("complete", "conditions", "names")
+
+
+class ListError(ValueError):
+    """The list file cannot be used; ``str()`` says where and why."""
+
+
+@dataclass(frozen=True)
+class Entry:
+    """One pinned repository of the list."""
+
+    repository: str
+    commit: str
+    distro: str
+    packages: tuple[str, ...]
+    branch: str = ""
+    # (repository, commit) of trees scanned with it: the message packages and libraries
+    # its code includes, so their types are known; they are not modelled
+    context: tuple[tuple[str, str], ...] = ()
+
+    @property
+    def folder(self) -> str:
+        """Where its tree is expected under the sources folder."""
+        return folder_of(self.repository, self.commit)
+
+    @property
+    def context_folders(self) -> list[str]:
+        return [folder_of(repository, commit) for repository, commit in self.context]
+
+
+def folder_of(repository: str, commit: str) -> str:
+    """``<owner>+<name>@<commit[:12]>``: a pinned tree's folder under the sources folder."""
+    return f"{repository.removeprefix('github:').replace('/', '+')}@{commit[:12]}"
+
+
+@dataclass(frozen=True)
+class Task:
+    """One package to model: picklable, so it can go to another process or machine."""
+
+    entry: Entry
+    package: str
+    tree: str
+    overrides: str
+    cache_dir: str | None = AUTO_CACHE
+    context: tuple[str, ...] = ()  # the folders of the entry's context trees
+
+
+@dataclass
+class Outcome:
+    """What one package gave: its model document (None when it could not be made) and
+    a report line of what was extracted and what stayed partial."""
+
+    package: str
+    distro: str
+    text: str | None = None
+    nodes: list[str] = field(default_factory=list)
+    calls: int = 0
+    unresolved: int = 0
+    partial: dict[str, list[str]] = field(default_factory=dict)
+    problem: str | None = None
+    override_problems: list[str] = field(default_factory=list)
+
+
+def read_list(path: str) -> list[Entry]:
+    """The entries of a list file; raises ``ListError`` naming the entry at fault."""
+    text, problems = read_text(path, Location(file=path))
+    if text is None:
+        raise ListError(problems[0].message if problems else f"{path}: cannot read")
+    try:
+        data = yaml.safe_load(text)
+    except yaml.YAMLError as error:
+        raise ListError(f"{path}: invalid YAML: {error}") from None
+    if not isinstance(data, list):
+        raise ListError(f"{path}: the list is a YAML sequence of repositories")
+    entries = []
+    for index, item in enumerate(data, 1):
+        where = f"{path}: entry {index}"
+        if not isinstance(item, dict):
+            raise ListError(f"{where}: must be a mapping")
+        repository, commit = _pinned(item, where)
+        context = item.get("with") or []
+        if not isinstance(context, list):
+            raise ListError(f"{where}: 'with' must be a list of repository and commit")
+        pins = tuple(_pinned(other, f"{where}, with {number}")
+                     for number, other in enumerate(context, 1))
+        packages = item.get("packages")
+        if not isinstance(packages, list) or not packages or not all(
+                isinstance(p, str) and re.match(r"^[A-Za-z0-9_]+$", p) for p in packages):
+            raise ListError(f"{where}: packages must be a list of package names")
+        distro = str(item.get("distro", ""))
+        if not re.match(r"^[a-z]+$", distro):
+            raise ListError(f"{where}: distro must be a distribution name (noetic, jazzy)")
+        entries.append(Entry(repository, commit, distro, tuple(packages),
+                             str(item.get("branch", "")), pins))
+    return entries
+
+
+def _pinned(item: Any, where: str) -> tuple[str, str]:
+    if not isinstance(item, dict):
+        raise ListError(f"{where}: must be a mapping")
+    repository, commit = str(item.get("repository", "")), str(item.get("commit", ""))
+    if not REPOSITORY.match(repository):
+        raise ListError(f"{where}: repository must be github:owner/name")
+    if not COMMIT.match(commit):
+        raise ListError(f"{where}: commit must be 40 hexadecimal digits")
+    return repository, commit
+
+
+def tasks(entries: Iterable[Entry], sources: str, overrides: str = OVERRIDES,
+          only: Sequence[str] = (), cache_dir: str | None = AUTO_CACHE) -> list[Task]:
+    return [Task(entry, package, os.path.join(sources, entry.folder), overrides, cache_dir,
+                 tuple(os.path.join(sources, f) for f in entry.context_folders))
+            for entry in entries for package in entry.packages
+            if not only or package in only]
+
+
+def build_package(task: Task) -> Outcome:
+    """Model one package with the workspace pipeline. A bug of ours met on one package
+    is reported as that package's problem; the other packages go on."""
+    outcome = Outcome(task.package, task.entry.distro)
+    try:
+        return _build(task, outcome)
+    except Exception as error:  # a bug of ours: this package is not modelled
+        if os.environ.get("HAROS_ARCH_DEBUG"):
+            raise
+        outcome.text = None
+        outcome.problem = f"internal error: {type(error).__name__}: {error}"
+        return outcome
+
+
+def _build(task: Task, outcome: Outcome) -> Outcome:
+    missing = [t for t in (task.tree, *task.context) if not os.path.isdir(t)]
+    if missing:
+        outcome.problem = f"no source tree at {missing[0]} (run scripts/models-fetch)"
+        return outcome
+    workspace = scan([task.tree, *task.context], {})
+    package = workspace.packages.get(task.package)
+    if package is None:
+        outcome.problem = f"no package {task.package} in {task.entry.repository}"
+        return outcome
+    found = read_build_files(package, workspace)
+    found += extract_nodes(package.nodes, workspace, cache_dir=task.cache_dir, jobs=1)
+    for node in package.nodes:  # extraction marked it partial where sources had errors
+        _mark_unextracted(node, task.tree)
+    override = _apply_override(task, package.nodes, found)
+    outcome.override_problems = [f"{d.location.file}: {d.message}" for d in found
+                                 if d.code == "HINT_INVALID"]
+    model = InterfaceModel(
+        task.package, task.entry.distro, package.nodes, package.version,
+        {"repository": task.entry.repository, "branch": task.entry.branch,
+         "commit": task.entry.commit, "path": package.path,
+         **({"with": ", ".join(f"{r}@{c}" for r, c in task.entry.context)}
+            if task.entry.context else {})},
+        {"name": "haros-arch", "version": __version__}, override)
+    outcome.text = dumps(model)
+    outcome.nodes = [n.executable for n in package.nodes]
+    outcome.calls = sum(len(n.calls) for n in package.nodes)
+    outcome.unresolved = sum(1 for n in package.nodes for c in n.calls
+                             if UNKNOWN_MARK in c.name and c.name_param is None)
+    outcome.partial = {n.executable: list(n.completeness_reasons) for n in package.nodes
+                       if n.completeness in ("partial", "unknown")}
+    return outcome
+
+
+def _api_names() -> frozenset[str]:
+    """The ROS API's C++ function names, from the extractor's tables."""
+    from ..extract.cpp import api
+
+    tables = (api.ROSCPP, api.LIBRARIES, api.RCLCPP, api.RCLCPP_LIBRARIES)
+    return frozenset(name for table in tables for _, name in table)
+
+
+def _mark_unextracted(node: Node, root: str) -> None:
+    """A recall check on the extractor: a line of the node's C++ sources that calls a
+    ROS API function as a member (``nh.subscribe(``, ``->create_publisher<``) with no
+    extracted call within two lines of it means calls may be missing (code in a class
+    template, say); such a node is partial, with the first places."""
+    if node.language != "cpp":
+        return
+    names = sorted((n for n in _api_names() if "::" not in n and len(n) > 4), key=len)
+    pattern = re.compile(r"(?:\.|->)\s*(" + "|".join(map(re.escape, names)) + r")\s*[<(]")
+    seen = {(c.location.file, c.location.line) for c in node.calls}
+    missing: list[str] = []
+    for source in node.sources:
+        text, _problems = read_text(os.path.join(root, source), Location(file=source))
+        for number, line in enumerate((text or "").splitlines(), 1):
+            code = line.split("//", 1)[0]
+            if code.lstrip().startswith("*") or not pattern.search(code):
+                continue
+            if not any((source, near) in seen for near in range(number - 2, number + 3)):
+                missing.append(f"{source}:{number}: {code.strip()[:80]}")
+    for place in missing[:3]:
+        node.mark_partial(f"{place} calls the ROS API, but no call was extracted there")
+    if len(missing) > 3:
+        node.mark_partial(f"{len(missing)} such call sites in all")
+
+
+def _apply_override(task: Task, nodes: list[Node], found: list[Diagnostic]) -> str | None:
+    """The reviewed override of the package, if any: hint-format calls per node, and
+    ``complete: <why>`` to say the node's interface is now whole."""
+    relative = os.path.join(task.entry.distro, task.package + ".yaml")
+    path = os.path.join(task.overrides, relative)
+    if not os.path.isfile(path):
+        return None
+    text, problems = read_text(path, Location(file=path))
+    found.extend(problems)
+    data = yaml.safe_load(text) if text else None
+    blocks = data.get("nodes") if isinstance(data, dict) else None
+    if not isinstance(blocks, dict):
+        return None
+    by_name = {node.name: node for node in nodes}
+    where = Location(file=relative)
+    plain = {name: {k: v for k, v in block.items() if k not in OVERRIDE_KEYS}
+             for name, block in blocks.items() if isinstance(block, dict)}
+    apply_node_hints(by_name, plain, where)
+    for name, node in by_name.items():
+        for call in node.calls:
+            if call.origin == "hint":
+                call.origin = "override"
+        block = blocks.get(name)
+        if isinstance(block, dict):
+            _override_conditions(node, block.get("conditions"), relative, found)
+            _override_names(node, block.get("names"), relative, found)
+        if isinstance(block, dict) and isinstance(block.get("complete"), str):
+            node.completeness = "complete"
+            node.completeness_reasons = [f"completed by override {relative}: "
+                                         f"{block['complete']}"]
+        if node not in nodes:  # a node the build files do not show
+            nodes.append(node)
+    return relative
+
+
+def _override_conditions(node: Node, entries: Any, relative: str,
+                         found: list[Diagnostic]) -> None:
+    """``conditions: [{calls: file:line, text: ..., at: file:line}]``: the calls made at
+    ``calls`` exist only under ``text``, written at ``at`` (a caller's ``if`` the
+    extractor does not carry into the function it calls)."""
+    for entry in entries if isinstance(entries, list) else []:
+        at, text = _place(entry.get("at")), entry.get("text")
+        for call in _calls_at(node, entry, relative, found,
+                              isinstance(text, str) and at is not None):
+            where = Location(node.package, at[0], at[1]) if at else Location()
+            call.conditions = (*call.conditions, Condition(str(text), "source", "if", where))
+
+
+def _override_names(node: Node, entries: Any, relative: str,
+                    found: list[Diagnostic]) -> None:
+    """``names: [{calls: file:line, param: ~topics, each: topic}]``: the calls made at
+    ``calls`` are named by the field ``each`` of every element of the list parameter
+    ``param`` (a name the code reads through a helper the extractor cannot follow)."""
+    for entry in entries if isinstance(entries, list) else []:
+        param, each = entry.get("param"), entry.get("each")
+        for call in _calls_at(node, entry, relative, found,
+                              isinstance(param, str) and isinstance(each, str)):
+            call.name_param, call.name_each = str(param), str(each)
+
+
+def _calls_at(node: Node, entry: Any, relative: str, found: list[Diagnostic],
+              usable: bool) -> list[PrimitiveCall]:
+    """The node's calls at an override entry's ``calls: file:line`` (marked as changed by
+    the override); none, and a diagnostic, when the entry is malformed or names none."""
+    place = _place(entry.get("calls")) if isinstance(entry, dict) else None
+    hit = [c for c in node.calls if place and (c.location.file, c.location.line) == place]
+    if not hit or not usable:
+        found.append(diag.make("HINT_INVALID", Location(file=relative), detail=(
+            f"{node.name}: override entry {entry!r} names no call of the node")))
+        return []
+    for call in hit:
+        call.origin = "override"
+    return hit
+
+
+def _place(text: Any) -> tuple[str, int] | None:
+    if not isinstance(text, str) or ":" not in text:
+        return None
+    file, _, line = text.rpartition(":")
+    return (file, int(line)) if line.isdigit() else None
+
+
+def run(work: Sequence[Task], jobs: int | None = None, scheduler: str | None = None
+        ) -> list[Outcome]:
+    """Every task, on a local process pool (``jobs`` workers) or a Dask cluster."""
+    if scheduler:
+        return _on_dask(work, scheduler)
+    if jobs == 1 or len(work) <= 1:
+        return [build_package(task) for task in work]
+    with ProcessPoolExecutor(max_workers=jobs) as pool:
+        return list(pool.map(build_package, work))
+
+
+def _on_dask(work: Sequence[Task], scheduler: str) -> list[Outcome]:
+    from distributed import Client  # the optional 'dask' extra
+
+    with Client(scheduler) as client:
+        futures = client.map(build_package, list(work), pure=False)
+        return list(client.gather(futures))
+
+
+def write(outcomes: Iterable[Outcome], output: str) -> list[str]:
+    """Write each model to ``OUTPUT/<distro>/<package>.json``; the paths written."""
+    written = []
+    for outcome in outcomes:
+        if outcome.text is None:
+            continue
+        folder = os.path.join(output, outcome.distro)
+        os.makedirs(folder, exist_ok=True)
+        path = os.path.join(folder, outcome.package + ".json")
+        with open(path, "w", encoding="utf-8") as handle:
+            handle.write(outcome.text)
+        written.append(path)
+    return written
+
+
+def report(outcomes: Iterable[Outcome], say: Callable[[str], Any]) -> None:
+    """One line per package, then each partial node's reasons."""
+    for outcome in outcomes:
+        name = f"{outcome.distro}/{outcome.package}"
+        if outcome.problem:
+            say(f"{name}: not modelled: {outcome.problem}")
+            continue
+        state = f"{len(outcome.partial)} partial" if outcome.partial else "complete"
+        say(f"{name}: {len(outcome.nodes)} nodes, {outcome.calls} calls, "
+            f"{outcome.unresolved} names unknown statically, {state}")
+        for problem in outcome.override_problems:
+            say(f"    override not used: {problem}")
+        for node, reasons in outcome.partial.items():
+            for reason in reasons:
+                say(f"    {node}: {reason}")

@@ -1,0 +1,200 @@
+"""Query functions for checks that claim something is absent, and that must stay fast.
+
+``unknown_users(config, resource)``: the node instances of partial or unknown interface,
+or with a name not known statically, that could use the resource through a call the
+model does not show. A check that says
+"nobody publishes this" or "nobody reads this" is a fact only when this list is empty.
+
+``similar_to(word, items)``: the items (resources, links or strings) whose own name is the
+word or within edit distance 2 of it, through an index built once per list, not by
+comparing every pair.
+"""
+
+from __future__ import annotations
+
+from collections import OrderedDict
+from collections.abc import Callable
+from typing import Any
+from weakref import WeakKeyDictionary
+
+from ..model.runtime import Configuration, Link, NodeInstance, Parameter, Resource
+from .errors import QueryTypeError
+
+Charge = Callable[[int], None]
+
+
+class _Known:
+    """What ``unknown_users`` needs of a configuration, built once per configuration."""
+
+    def __init__(self, config: Configuration) -> None:
+        self.size = (len(config.nodes), len(config.links))
+        self.by_name: dict[str, NodeInstance] = {}
+        for node in config.nodes:
+            self.by_name.setdefault(node.name, node)
+        self.incomplete = config.incomplete_nodes
+        # nodes with a ROS 1 dynamic_reconfigure server: it reads and sets every field of
+        # its .cfg under the node's private namespace, names we do not read
+        self.reconfigurable = {id(link.node) for link in config.links
+                               if link.kind == "publish"
+                               and link.rosname.full == link.node.name + "/parameter_updates"}
+        # resource -> nodes that use a name with "?" that may stand for it
+        self.guessed: dict[int, list[NodeInstance]] = {}
+        for collection in (config.topics, config.services, config.actions,
+                           config.parameters):
+            for unresolved in collection:
+                if not unresolved.is_unresolved:
+                    continue
+                users = list(dict.fromkeys(link.node for link in unresolved.links))
+                for candidate in unresolved.candidates:
+                    self.guessed.setdefault(id(candidate), []).extend(users)
+
+
+_KNOWN: WeakKeyDictionary[Configuration, _Known] = WeakKeyDictionary()
+
+
+def _known(config: Configuration) -> _Known:
+    known = _KNOWN.get(config)
+    if known is None or known.size != (len(config.nodes), len(config.links)):
+        known = _KNOWN[config] = _Known(config)
+    return known
+
+
+def owner_of(config: Configuration, parameter: Parameter) -> NodeInstance | None:
+    """The node instance a parameter is private to (``/ns/node/param`` of ``/ns/node``;
+    a ROS 2 parameter always belongs to its node), or None for a shared one."""
+    by_name = _known(config).by_name
+    name = parameter.name
+    while "/" in name.rstrip("/"):
+        name = name.rstrip("/").rsplit("/", 1)[0]
+        found = by_name.get(name)
+        if found is not None:
+            return found
+    return None
+
+
+def unknown_users(charge: Charge, config: Any, resource: Any) -> list[NodeInstance]:
+    """The node instances that could use ``resource`` through a call the model does not
+    show: those of partial or unknown interface, and those that use a name with ``?``
+    that may stand for it (a ``getParam(name_read_at_run_time)``).
+
+    A node of partial or unknown interface could publish, subscribe, serve or call any
+    topic, service or action name, and read or set any shared parameter; a private
+    parameter (ROS 1 ``/node/param``, every ROS 2 parameter) only its own node, which
+    also reads and sets it unseen when it runs a dynamic_reconfigure server (the
+    fields of its .cfg)."""
+    if isinstance(resource, Link):
+        resource = resource.resource
+    if not isinstance(config, Configuration) or not isinstance(resource, Resource):
+        raise QueryTypeError("unknown_users() takes a configuration and a topic, service, "
+                             "action, parameter or link")
+    known = _known(config)
+    charge(1)
+    found: list[NodeInstance] = list(known.incomplete)
+    if isinstance(resource, Parameter):
+        owner = owner_of(config, resource)
+        if owner is not None:
+            unseen = not owner.is_complete or id(owner) in known.reconfigurable
+            found = [owner] if unseen else []
+    found.extend(known.guessed.get(id(resource), ()))
+    charge(len(found) // 64)
+    return list(dict.fromkeys(found))
+
+
+MAX_DISTANCE = 2
+_PARTS = MAX_DISTANCE + 1
+_INDEXES: OrderedDict[int, tuple[Any, dict[tuple[int, int, str], list[int]]]] = OrderedDict()
+_KEEP_INDEXES = 16
+
+
+def _own(item: Any) -> str | None:
+    if isinstance(item, str):
+        return item
+    if isinstance(item, Link | Resource):
+        return item.rosname.own
+    return None
+
+
+def _bounds(length: int) -> list[int]:
+    """Where a word of this length is cut into three parts."""
+    return [length * k // _PARTS for k in range(_PARTS + 1)]
+
+
+def _index(items: list[Any], charge: Charge) -> dict[tuple[int, int, str], list[int]]:
+    """(length, part number, part) -> places of the items whose own name has it.
+
+    Two edits change at most two of a word's three parts, so a word within distance 2
+    of another holds one of its parts unchanged, shifted by at most two characters (the
+    pigeonhole filter of PassJoin): three entries per name, some 75 look-ups per probe.
+    """
+    cached = _INDEXES.get(id(items))
+    if cached is not None and cached[0] is items:
+        _INDEXES.move_to_end(id(items))
+        return cached[1]
+    index: dict[tuple[int, int, str], list[int]] = {}
+    for place, item in enumerate(items):
+        own = _own(item)
+        if own is None:
+            raise QueryTypeError("similar_to() compares names: strings, resources or links")
+        cut = _bounds(len(own))
+        for part in range(_PARTS):
+            index.setdefault((len(own), part, own[cut[part]:cut[part + 1]]), []).append(place)
+    charge(len(items))
+    _INDEXES[id(items)] = (items, index)
+    while len(_INDEXES) > _KEEP_INDEXES:
+        _INDEXES.popitem(last=False)
+    return index
+
+
+def distance(word: str, other: str, pattern: dict[str, int] | None = None) -> int:
+    """Levenshtein distance, bit-parallel (Myers 1999, as Hyyrö writes it): one pass
+    over ``other`` with the columns of the table for ``word`` packed in an integer.
+    ``pattern`` is ``word``'s bit masks per character (``masks(word)``), to reuse."""
+    if not word:
+        return len(other)
+    pattern = masks(word) if pattern is None else pattern
+    full = (1 << len(word)) - 1
+    top = 1 << (len(word) - 1)
+    plus, minus, score = full, 0, len(word)
+    for char in other:
+        equal = pattern.get(char, 0)
+        vertical = equal | minus
+        horizontal = (((equal & plus) + plus) ^ plus) | equal
+        up = minus | ~(horizontal | plus)
+        down = plus & horizontal
+        if up & top:
+            score += 1
+        elif down & top:
+            score -= 1
+        up = (up << 1) | 1
+        down <<= 1
+        plus = (down | ~(vertical | up)) & full
+        minus = up & vertical & full
+    return score
+
+
+def masks(word: str) -> dict[str, int]:
+    found: dict[str, int] = {}
+    for i, char in enumerate(word):
+        found[char] = found.get(char, 0) | (1 << i)
+    return found
+
+
+def similar_to(charge: Charge, word: Any, items: Any) -> list[Any]:
+    """The items whose own name equals ``word``'s or is within edit distance 2 of it."""
+    word = _own(word)
+    if word is None or not isinstance(items, list):
+        raise QueryTypeError("similar_to() takes a name (or a resource or link) and a list")
+    index = _index(items, charge)
+    places: set[int] = set()
+    for length in range(max(0, len(word) - MAX_DISTANCE), len(word) + MAX_DISTANCE + 1):
+        cut = _bounds(length)
+        for part in range(_PARTS):
+            size = cut[part + 1] - cut[part]
+            for shift in range(-MAX_DISTANCE, MAX_DISTANCE + 1):
+                begin = cut[part] + shift
+                if begin >= 0 and begin + size <= len(word):
+                    places.update(index.get((length, part, word[begin:begin + size]), ()))
+    charge(1 + len(places))
+    pattern = masks(word)
+    return [items[place] for place in sorted(places)
+            if distance(word, _own(items[place]) or "", pattern) <= MAX_DISTANCE]

@@ -1,0 +1,50 @@
+"""Which launch system a file is for: by content, then package, then name (dialect)."""
+
+from __future__ import annotations
+
+from conftest import package_xml
+
+from haros_arch.launch.dialect import ros_version
+from haros_arch.workspace import scan
+
+NEUTRAL = '<launch><arg name="a" default="1"/><include file="x.xml"/></launch>'
+
+
+def catkin_xml(name: str) -> str:
+    return (f'<?xml version="1.0"?>\n<package format="2"><name>{name}</name>'
+            "<version>0.1.0</version><description>d</description>"
+            '<maintainer email="a@b.c">m</maintainer><license>MIT</license>'
+            "<buildtool_depend>catkin</buildtool_depend></package>\n")
+
+
+def test_content_decides_before_the_suffix(write_tree):
+    root = write_tree({
+        "a.launch.xml": '<launch><node pkg="p" type="t" name="n"/></launch>',
+        "b.launch.xml": '<launch><arg name="m"/><param name="x" value="$(arg m)"/></launch>',
+        "c.launch": '<launch><node pkg="p" exec="t" name="n"/></launch>',
+        "d.launch.xml": '<launch><!-- <node pkg="p" type="t"/> --><let name="a" value="1"/>'
+                        "</launch>",
+    })
+    assert ros_version(str(root / "a.launch.xml")) == 1
+    assert ros_version(str(root / "b.launch.xml")) == 1
+    assert ros_version(str(root / "c.launch")) == 2
+    assert ros_version(str(root / "d.launch.xml")) == 2  # comments say nothing
+
+
+def test_package_decides_a_file_that_could_be_either(write_tree):
+    root = write_tree({
+        "src/old/package.xml": catkin_xml("old"),
+        "src/old/launch/x.launch.xml": NEUTRAL,
+        "src/new/package.xml": package_xml("new", "ament_cmake"),
+        "src/new/launch/x.launch": NEUTRAL,
+        "src/first/package.xml": '<package><name>first</name></package>',
+        "src/first/launch/x.launch.xml": NEUTRAL,
+        "src/loose/x.launch.xml": NEUTRAL,
+    })
+    ws = scan([str(root / "src")], {})
+    assert ros_version(str(root / "src/old/launch/x.launch.xml"), ws) == 1
+    assert ros_version(str(root / "src/new/launch/x.launch"), ws) == 2
+    assert ros_version(str(root / "src/first/launch/x.launch.xml"), ws) == 1  # format 1
+    assert ros_version(str(root / "src/loose/x.launch.xml"), ws) == 2  # name, at last
+    assert ros_version("missing.launch.xml", ws) == 2 and ros_version("m.launch", ws) == 1
+    assert ros_version("x.launch.py") == 2 and ros_version("x.launch.yaml") == 2

@@ -1,0 +1,306 @@
+"""Interface models: nodes of packages with no source in the workspace take a model."""
+
+from __future__ import annotations
+
+import json
+import os
+
+import pytest
+
+from haros_arch.launch.model import LaunchModel, NodeDecl
+from haros_arch.model.load import from_data
+from haros_arch.model.serialise import model_to_data
+from haros_arch.models.attach import choose_distro
+from haros_arch.models.format import dumps, from_document
+from haros_arch.models.library import Library
+from haros_arch.pipeline import Options, analyse
+from haros_arch.project import load
+
+FIXTURE = os.path.join(os.path.dirname(__file__), "..", "fixtures", "models", "installed_only")
+INSTALLED = os.path.join(FIXTURE, "opt", "ros", "noetic", "share")
+
+
+def _analyse(project_file: str = "project.yaml", env: dict | None = None,
+             shipped: bool = True, **changes):
+    project = load(os.path.join(FIXTURE, project_file))
+    for key, value in changes.items():
+        setattr(project, key, value)
+    environment = {"ROS_PACKAGE_PATH": INSTALLED} if env is None else env
+    model = analyse(project, environment, Options(cache_dir=None, jobs=1, models=shipped))
+    (config,) = model.configurations
+    return model, config
+
+
+def _instance(config, name):
+    return next(n for n in config.nodes if n.name == name)
+
+
+def test_an_installed_only_node_takes_the_users_model():
+    _model, config = _analyse()
+    amcl = _instance(config, "/amcl")
+    assert amcl.completeness == "model"
+    assert amcl.node.model == "noetic/amcl 1.17.3 example/navigation@01234567"
+    scan = next(t for t in config.topics if t.name == "/base_scan")
+    assert [link.node.name for link in scan.publishers] == ["/laser_driver"]
+    assert [link.node.name for link in scan.subscribers] == ["/amcl"]
+    assert {link.origin for link in amcl.links} == {"model"}
+    pose = next(t for t in config.topics if t.name == "/amcl_pose")
+    assert not pose.is_disconnected
+    codes = {d.code: d for d in config.diagnostics}
+    assert "installed at" in codes["MODEL_USED"].message
+    assert codes["MODEL_USED"].location.line == 4
+    assert "noetic" in codes["MODEL_DISTRO"].message
+    assert "NODE_PACKAGE_UNKNOWN" not in codes and "NODE_NOT_FOUND" not in codes
+
+
+def test_without_a_model_the_node_stays_unknown():
+    _model, config = _analyse(models=[], shipped=False)
+    amcl = _instance(config, "/amcl")
+    assert amcl.completeness == "unknown" and amcl.links == []
+    assert "NODE_PACKAGE_UNKNOWN" not in {d.code for d in config.diagnostics}  # installed
+
+
+def test_without_the_users_model_the_shipped_one_is_used():
+    _model, config = _analyse(models=[])
+    amcl = _instance(config, "/amcl")
+    assert amcl.completeness == "model"
+    assert amcl.node.model.startswith("noetic/amcl ") and "ros-planning/navigation@" in (
+        amcl.node.model)
+    scan = next(t for t in config.topics if t.name == "/base_scan")
+    assert [link.node.name for link in scan.subscribers] == ["/amcl"]
+
+
+def test_a_package_not_found_at_all_takes_the_model_too():
+    _model, config = _analyse(env={})
+    assert _instance(config, "/amcl").completeness == "model"
+    used = next(d for d in config.diagnostics if d.code == "MODEL_USED")
+    assert "not found" in used.message
+
+
+def test_the_json_model_names_the_model_and_reads_back():
+    model, _config = _analyse()
+    data = model_to_data(model)
+    (package,) = [p for p in data["packages"] if p["name"] == "amcl"]
+    (node,) = package["nodes"]
+    assert node["completeness"] == "model" and node["model"].startswith("noetic/amcl 1.17.3")
+    links = [link for link in data["configurations"][0]["links"] if link["node"] == "/amcl"]
+    assert links and {link["origin"] for link in links} == {"model"}
+    again = from_data(json.loads(json.dumps(data)))
+    amcl = _instance(again.configurations[0], "/amcl")
+    assert amcl.completeness == "model" and amcl.node.model == node["model"]
+
+
+def test_rostopic_pub_publishes_what_its_arguments_say():
+    _model, config = _analyse()
+    pub = _instance(config, "/initial_pose")
+    (link,) = pub.links
+    assert (link.kind, link.name, link.type) == (
+        "publish", "/initialpose", "geometry_msgs/PoseWithCovarianceStamped")
+    assert link.latch and link.queue_size == 100 and link.origin == "arguments"
+    topic = next(t for t in config.topics if t.name == "/initialpose")
+    assert [s.node.name for s in topic.subscribers] == ["/amcl"]
+
+
+def test_rostopic_pub_with_a_rate_does_not_latch():
+    from haros_arch.models.commands import command_node
+
+    node = command_node(NodeDecl("/p", "rostopic", "rostopic",
+                                 args="pub -r 10 /cmd geometry_msgs/Twist '{}' __name:=x"))
+    (call,) = node.calls
+    assert (call.name, call.type, call.latch) == ("/cmd", "geometry_msgs/Twist", False)
+    assert command_node(NodeDecl("/e", "rostopic", "rostopic", args="echo /cmd")) is None
+    ros2 = command_node(NodeDecl("/p", "", "ros2", args="topic pub --qos-reliability "
+                                 "best_effort -r 5 cmd_vel geometry_msgs/msg/Twist '{}'"))
+    (call,) = ros2.calls
+    assert (call.name, call.type, call.qos) == ("cmd_vel", "geometry_msgs/msg/Twist",
+                                                 {"reliability": "best_effort"})
+
+
+def test_the_distribution_comes_from_the_project_then_the_environment_then_the_launch():
+    ros1 = LaunchModel(nodes=[NodeDecl("/a", "p", "a")])
+    ros2 = LaunchModel(nodes=[NodeDecl("/a", "p", "a", ros_version=2)])
+    assert choose_distro("humble", {"ROS_DISTRO": "jazzy"}, ros2)[0] == "humble"
+    assert choose_distro(None, {"ROS_DISTRO": "melodic"}, ros1)[0] == "melodic"
+    assert choose_distro(None, {}, ros1)[0] == "noetic"
+    assert choose_distro(None, {}, ros2)[0] == "jazzy"
+    _model, config = _analyse(distro="melodic", shipped=False)
+    assert _instance(config, "/amcl").completeness == "unknown"  # the user's is noetic
+
+
+def test_a_bad_model_file_is_a_diagnostic(tmp_path):
+    bad = tmp_path / "bad.json"
+    bad.write_text('{"schema": "haros-arch-model/1", "package": "x", "nodes": 3}')
+    broken = tmp_path / "broken.json"
+    broken.write_text('{"schema": \n')
+    kind = tmp_path / "kind.json"
+    kind.write_text('{"schema": "haros-arch-model/1", "package": "y", "nodes": '
+                    '[{"executable": "y", "calls": [{"kind": "teleport", "name": "x"}]}]}')
+    deep = tmp_path / "deep.json"
+    deep.write_text("[" * 100_000 + "]" * 100_000)
+    library = Library([str(bad), str(broken), str(tmp_path / "missing.json"), str(kind),
+                       str(deep)], shipped=None)
+    assert [d.code for d in library.diagnostics] == ["MODEL_INVALID"] * 5
+    assert "teleport" in library.diagnostics[3].message
+    assert library.diagnostics[1].location.line == 2
+    assert library.find("x", "noetic") is None
+
+
+def test_a_model_file_round_trips():
+    with open(os.path.join(FIXTURE, "models", "amcl.json"), encoding="utf-8") as handle:
+        first = from_document(json.load(handle))
+    again = from_document(json.loads(dumps(first)))
+    assert again.label == first.label
+    (node,) = again.nodes
+    assert [(c.kind, c.name, c.type) for c in node.calls][:2] == [
+        ("subscribe", "scan", "sensor_msgs/LaserScan"),
+        ("publish", "amcl_pose", "geometry_msgs/PoseWithCovarianceStamped")]
+    assert node.calls[3].default == 30 and node.calls[3].has_default
+
+
+@pytest.mark.parametrize("package, distro", [("amcl", "noetic"), ("nav2_amcl", "jazzy")])
+def test_shipped_models_are_found(package, distro):
+    found = Library().find(package, distro)
+    if found is None:
+        pytest.skip("not generated yet")
+    assert found.distro == distro and found.source.get("commit")
+
+
+LISTENER = """
+    import rclpy
+    from sensor_msgs.msg import JointState
+
+    def main():
+        rclpy.init()
+        node = rclpy.create_node('arm_monitor')
+        node.create_subscription(JointState, 'joint_states', lambda m: None, 10)
+        rclpy.spin(node)
+    """
+
+
+def test_a_ros2_system_takes_the_jazzy_model_named_as_its_code_names_itself(write_tree):
+    from conftest import package_xml
+
+    root = write_tree({
+        "src/arm/package.xml": package_xml("arm", build_type="ament_python"),
+        "src/arm/setup.py": "from setuptools import setup\nsetup(name='arm', packages=["
+                            "'arm'], entry_points={'console_scripts': ['monitor = "
+                            "arm.monitor:main']})\n",
+        "src/arm/resource/arm": "",
+        "src/arm/arm/__init__.py": "",
+        "src/arm/arm/monitor.py": LISTENER,
+        "src/arm/launch/arm.launch.py": """
+            from launch import LaunchDescription
+            from launch_ros.actions import Node
+
+            def generate_launch_description():
+                return LaunchDescription([
+                    Node(package='joint_state_publisher', executable='joint_state_publisher'),
+                    Node(package='arm', executable='monitor'),
+                ])
+            """,
+        "project.yaml": "project: p\nconfigurations:\n  c: [arm/launch/arm.launch.py]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {}, Options(cache_dir=None, jobs=1))
+    (config,) = model.configurations
+    jsp = _instance(config, "/joint_state_publisher")
+    assert jsp.completeness == "model" and jsp.node.model.startswith("jazzy/")
+    topic = next(t for t in config.topics if t.name == "/joint_states")
+    assert ([p.node.name for p in topic.publishers], [s.node.name for s in topic.subscribers]
+            ) == (["/joint_state_publisher"], ["/arm_monitor"])
+    assert topic.publishers[0].qos["reliability"] == "reliable"
+    assert "ROS 2" in next(d for d in config.diagnostics if d.code == "MODEL_DISTRO").message
+
+
+def test_a_name_from_each_element_of_a_list_parameter_gives_one_link_each():
+    _model, config = _analyse("project_mux.yaml")
+    mux = _instance(config, "/twist_mux")
+    assert sorted(link.name for link in mux.subscribers) == ["/joy_teleop/cmd_vel",
+                                                             "/nav/cmd_vel"]
+    joy = next(t for t in config.topics if t.name == "/joy_teleop/cmd_vel")
+    assert [p.node.name for p in joy.publishers] == ["/joy_cmd"]
+    assert not any(t.is_unresolved for t in config.topics)
+
+
+def test_without_the_list_the_name_stays_unknown():
+    from haros_arch.graph.build import element_calls
+    from haros_arch.model.source import PrimitiveCall
+
+    call = PrimitiveCall("subscribe", "?", "geometry_msgs/Twist", name_param="~topics",
+                         name_each="topic")
+    _model, config = _analyse("project_mux.yaml")
+    mux = _instance(config, "/twist_mux")
+
+    class NoParameters:
+        by_name: dict = {}
+
+    assert element_calls(call, mux, NoParameters()) == [call]  # type: ignore[arg-type]
+
+
+def test_every_shipped_model_reads_clean_and_names_its_source():
+    from haros_arch.models.library import DATA, read_model
+
+    found: list = []
+    files = [os.path.join(DATA, distro, name) for distro in sorted(os.listdir(DATA))
+             for name in sorted(os.listdir(os.path.join(DATA, distro)))]
+    assert len(files) >= 60
+    for path in files:
+        model = read_model(path, found)
+        assert model is not None and model.distro == os.path.basename(os.path.dirname(path))
+        assert model.package + ".json" == os.path.basename(path)
+        assert model.source["repository"].startswith("github:")
+        assert len(model.source["commit"]) == 40
+    assert found == []
+
+
+def test_a_nodelet_of_a_package_without_source_takes_its_model(write_tree):
+    from conftest import package_xml
+
+    root = write_tree({
+        "src/cam/package.xml": package_xml("cam"),
+        "src/cam/CMakeLists.txt": "project(cam)\n",
+        "src/cam/launch/cam.launch": """
+            <launch>
+              <node pkg="nodelet" type="nodelet" name="manager" args="manager"/>
+              <node pkg="nodelet" type="nodelet" name="rectify"
+                    args="load image_proc/rectify manager"/>
+            </launch>
+            """,
+        "project.yaml": "project: p\nconfigurations:\n  c: [cam/launch/cam.launch]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {}, Options(cache_dir=None, jobs=1))
+    (config,) = model.configurations
+    rectify = _instance(config, "/rectify")
+    assert rectify.node is not None and rectify.node.model.startswith("noetic/image_proc ")
+    assert {(link.kind, link.name) for link in rectify.links} >= {
+        ("subscribe", "/image_mono"), ("publish", "/image_rect")}
+
+
+def test_ros2_list_names_come_from_the_parameters_under_a_prefix(write_tree):
+    root = write_tree({
+        "src/base/package.xml": _package_xml("base"),
+        "src/base/launch/mux.launch.py": """
+            from launch import LaunchDescription
+            from launch_ros.actions import Node
+
+            def generate_launch_description():
+                return LaunchDescription([
+                    Node(package='twist_mux', executable='twist_mux', name='twist_mux',
+                         parameters=[{'topics': {
+                             'navigation': {'topic': 'cmd_vel_nav', 'priority': 10},
+                             'joystick': {'topic': 'joy_vel', 'priority': 100}}}]),
+                ])
+            """,
+        "project.yaml": "project: p\nconfigurations:\n  c: [base/launch/mux.launch.py]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {}, Options(cache_dir=None, jobs=1))
+    (config,) = model.configurations
+    mux = _instance(config, "/twist_mux")
+    assert mux.node.model.startswith("jazzy/twist_mux ")
+    assert sorted(link.name for link in mux.subscribers
+                  if link.type == "geometry_msgs/msg/Twist") == ["/cmd_vel_nav", "/joy_vel"]
+
+
+def _package_xml(name: str) -> str:
+    from conftest import package_xml
+
+    return package_xml(name, build_type="ament_cmake")

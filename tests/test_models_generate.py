@@ -1,0 +1,170 @@
+"""`haros-arch models build`: interface models from pinned sources, by our extractor."""
+
+from __future__ import annotations
+
+import json
+import os
+from pathlib import Path
+
+import pytest
+
+from haros_arch.cli import main
+from haros_arch.models.format import from_document
+from haros_arch.models.generate import ListError, build_package, read_list, run, tasks
+
+FIXTURE = os.path.join(os.path.dirname(__file__), "..", "fixtures", "models", "generate")
+LIST = os.path.join(FIXTURE, "list.yaml")
+SOURCES = os.path.join(FIXTURE, "sources")
+OVERRIDES = os.path.join(FIXTURE, "overrides")
+
+
+def _outcome(overrides: str = OVERRIDES):
+    (task,) = tasks(read_list(LIST), SOURCES, overrides, cache_dir=None)
+    return build_package(task)
+
+
+def test_a_package_is_modelled_with_its_source_and_what_stayed_partial():
+    outcome = _outcome(overrides=os.path.join(FIXTURE, "none"))
+    model = from_document(json.loads(outcome.text))
+    assert model.source == {"repository": "github:example/tiny_drivers", "branch": "main",
+                            "commit": "0123456789abcdef0123456789abcdef01234567",
+                            "path": "tiny_driver"}
+    assert (model.package, model.distro, model.version) == ("tiny_driver", "noetic", "2.0.1")
+    laser = model.node("laser")
+    publish = next(c for c in laser.calls if c.kind == "publish")
+    assert (publish.name, publish.name_param, publish.name_default, publish.type) == (
+        "?", "~topic", "scan", "sensor_msgs/LaserScan")
+    rate = next(c for c in laser.calls if c.name == "~rate")
+    assert rate.has_default and rate.default == 10.0
+    assert laser.completeness == "complete"
+    broken = model.node("broken")
+    assert broken.completeness == "partial" and broken.calls == []
+    assert "syntax error" in broken.completeness_reasons[0]
+    assert list(outcome.partial) == ["broken"] and outcome.unresolved == 1  # relay's '?'
+
+
+def test_an_override_completes_a_partial_model():
+    model = from_document(json.loads(_outcome().text))
+    broken = model.node("broken")
+    assert [(c.kind, c.name, c.type, c.origin) for c in broken.calls] == [
+        ("publish", "out", "std_msgs/String", "override")]
+    assert broken.completeness == "complete"
+    assert "noetic/tiny_driver.yaml" in broken.completeness_reasons[0]
+    assert model.override == "noetic/tiny_driver.yaml"
+
+
+def test_the_cli_writes_one_file_per_package_and_reports(tmp_path, capsys):
+    code = main(["models", "build", LIST, "--sources", SOURCES, "--overrides", OVERRIDES,
+                 "-o", str(tmp_path), "--jobs", "1", "--no-cache"])
+    out = capsys.readouterr().out
+    assert code == 0
+    assert "noetic/tiny_driver: 3 nodes" in out and "complete" in out
+    assert (tmp_path / "noetic" / "tiny_driver.json").is_file()
+
+
+def test_a_missing_tree_or_a_bad_list_is_reported(tmp_path, capsys):
+    code = main(["models", "build", LIST, "--sources", str(tmp_path), "-o", str(tmp_path)])
+    assert code == 1 and "no source tree" in capsys.readouterr().out
+    bad = tmp_path / "bad.yaml"
+    bad.write_text("- repository: github:a/b\n  commit: 12\n")
+    with pytest.raises(ListError, match="entry 1: commit"):
+        read_list(str(bad))
+    assert main(["models", "build", str(bad)]) == 2
+
+
+def test_a_process_pool_gives_the_same_models():
+    work = tasks(read_list(LIST), SOURCES, OVERRIDES, cache_dir=None) * 2
+    first, second = run(work, jobs=2)
+    assert first.text == second.text == _outcome().text
+
+
+def test_a_dask_cluster_gives_the_same_models():
+    distributed = pytest.importorskip("distributed")
+    work = tasks(read_list(LIST), SOURCES, OVERRIDES, cache_dir=None)
+    with distributed.LocalCluster(n_workers=1, processes=False, dashboard_address=None) as cluster:
+        (outcome,) = run(work, scheduler=cluster.scheduler_address)
+    assert outcome.text == _outcome().text
+
+
+def test_an_override_puts_a_call_under_the_condition_its_caller_writes(tmp_path):
+    folder = tmp_path / "noetic"
+    folder.mkdir()
+    (folder / "tiny_driver.yaml").write_text(
+        "nodes:\n  tiny_driver/laser:\n    conditions:\n"
+        "      - calls: tiny_driver/scripts/laser:7\n"
+        "        text: argv[1] == '--replay'\n        at: tiny_driver/scripts/laser:3\n"
+        "      - calls: tiny_driver/scripts/laser:99\n        text: x\n        at: a:1\n")
+    (task,) = tasks(read_list(LIST), SOURCES, str(tmp_path), cache_dir=None)
+    outcome = build_package(task)
+    model = from_document(json.loads(outcome.text))
+    publish = next(c for c in model.node("laser").calls if c.kind == "publish")
+    (problem,) = outcome.override_problems
+    assert "names no call" in problem
+    (condition,) = publish.conditions
+    assert (condition.text, condition.location.file, condition.location.line) == (
+        "argv[1] == '--replay'", "tiny_driver/scripts/laser", 3)
+    assert publish.origin == "override"
+
+
+def test_trees_listed_with_an_entry_are_needed_and_recorded(tmp_path):
+    listed = tmp_path / "list.yaml"
+    listed.write_text(Path(LIST).read_text(encoding="utf-8") + (
+        "  with:\n    - repository: github:example/tiny_msgs\n"
+        "      commit: 89abcdef0123456789abcdef0123456789abcdef\n"))
+    (entry,) = read_list(str(listed))
+    assert entry.context_folders == ["example+tiny_msgs@89abcdef0123"]
+    (task,) = tasks([entry], SOURCES, OVERRIDES, cache_dir=None)
+    assert "example+tiny_msgs@89abcdef0123" in build_package(task).problem
+    (tmp_path / "sources").symlink_to(SOURCES)
+    msgs = tmp_path / "more" / "example+tiny_msgs@89abcdef0123" / "tiny_msgs"
+    msgs.mkdir(parents=True)
+    (task,) = tasks([entry], str(tmp_path / "sources"), OVERRIDES, cache_dir=None)
+    task = type(task)(task.entry, task.package, task.tree, task.overrides, None,
+                      (str(msgs.parent),))
+    model = from_document(json.loads(build_package(task).text))
+    assert model.source["with"] == ("github:example/tiny_msgs@"
+                                    "89abcdef0123456789abcdef0123456789abcdef")
+
+
+def test_a_ros_call_in_the_text_with_no_extracted_call_makes_a_model_partial(tmp_path):
+    from haros_arch.model.location import Location
+    from haros_arch.model.source import Node, PrimitiveCall
+    from haros_arch.models.generate import _mark_unextracted
+
+    (tmp_path / "src").mkdir()
+    (tmp_path / "src" / "filter.cpp").write_text(
+        "void f(ros::NodeHandle& nh) {\n"
+        "  // nh.subscribe(\"commented\", 1, cb);\n"
+        "  pub_ = nh.advertise<nav_msgs::Odometry>(\"odometry/filtered\", 20);\n"
+        "\n\n"
+        "  subs_.push_back(nh_.subscribe<sensor_msgs::Imu>(\n"
+        "      imu_topic, 10, cb));\n"
+        "}\n")
+    found = PrimitiveCall("publish", "odometry/filtered", "nav_msgs/Odometry",
+                          location=Location("p", "src/filter.cpp", 3, 10))
+    node = Node("p", "filter", sources=["src/filter.cpp"], calls=[found])
+    _mark_unextracted(node, str(tmp_path))
+    assert node.completeness == "partial"
+    assert node.completeness_reasons == [
+        "src/filter.cpp:6: subs_.push_back(nh_.subscribe<sensor_msgs::Imu>( calls the ROS "
+        "API, but no call was extracted there"]
+    whole = Node("p", "filter", sources=["src/filter.cpp"], calls=[
+        found, PrimitiveCall("subscribe", "?", location=Location("p", "src/filter.cpp", 7))])
+    _mark_unextracted(whole, str(tmp_path))
+    assert whole.completeness == "complete"
+
+
+def test_an_override_names_a_call_by_each_element_of_a_list_parameter(tmp_path):
+    folder = tmp_path / "noetic"
+    folder.mkdir()
+    (folder / "tiny_driver.yaml").write_text(
+        "nodes:\n  tiny_driver/relay:\n    names:\n"
+        "      - calls: tiny_driver/scripts/relay:8\n        param: ~topics\n"
+        "        each: .\n")
+    (task,) = tasks(read_list(LIST), SOURCES, str(tmp_path), cache_dir=None)
+    outcome = build_package(task)
+    subscribe = next(c for c in from_document(json.loads(outcome.text)).node("relay").calls
+                     if c.kind == "subscribe")
+    assert (subscribe.name_param, subscribe.name_each, subscribe.origin) == (
+        "~topics", ".", "override")
+    assert outcome.override_problems == []
