@@ -93,7 +93,7 @@ def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance
             else:
                 choices = list(_chosen(instance, slot, params))
             for choice in choices:
-                node = _lookup(choice, slot, index)
+                node = _lookup(choice, index)
                 reader = instance
                 if node is None:
                     _missing(config, instance, choice, owned)
@@ -157,15 +157,11 @@ def plugin_index(nodes: Mapping[str, Node]) -> dict[str, Node]:
     return index
 
 
-def _lookup(choice: Choice, slot: Slot, index: Mapping[str, Node]) -> Node | None:
+def _lookup(choice: Choice, index: Mapping[str, Node]) -> Node | None:
+    """The plugin node of the chosen class, by its lookup name or its C++ type."""
     if not choice.cls or UNKNOWN_MARK in choice.cls:
         return None
-    node = index.get(choice.cls.strip().lstrip(":"))
-    if node is None:
-        # pluginlib accepts ``pkg/Class`` for a class exported as ``pkg::Class`` (nav2
-        # configurations use both spellings)
-        node = index.get(choice.cls.strip().replace("/", "::"))
-    return node
+    return index.get(choice.cls.strip().lstrip(":"))
 
 
 def _given(choice: Choice, slot: Slot) -> str:
