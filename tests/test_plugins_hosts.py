@@ -193,9 +193,9 @@ def test_framework_calls_a_plugin_shares_with_its_host_are_made_once():
 
 
 def test_a_manager_named_only_by_its_code_serves_the_spawners_of_its_namespace(tmp_path):
-    # launch_ros names the node as ros2_control_node's code does ("controller_manager");
-    # when that is not known the graph names it after its executable (a guess), and the
-    # spawner's -c default (controller_manager, in its namespace) still reaches it
+    # launch_ros names the node as ros2_control_node's code does ("controller_manager",
+    # which its interface model gives when its source is not here); the spawner's -c
+    # default (controller_manager, in its namespace) reaches it
     params = tmp_path / "c.yaml"
     params.write_text("/robot/controller_manager:\n  ros__parameters:\n"
                       "    bcast:\n      type: my/Bcast\n")
@@ -205,7 +205,10 @@ def test_a_manager_named_only_by_its_code_serves_the_spawners_of_its_namespace(t
                            args=f"bcast --param-file {params}")),
              ros2(NodeDecl("/other/spawner", "controller_manager", "spawner", "/other/",
                            args=f"bcast --param-file {params}"))]
-    config = graph(decls, nodes=[bcast], root=str(tmp_path))
+    manager = Node("controller_manager", "ros2_control_node", rosname="controller_manager",
+                   completeness="model")
+    config = graph(decls, nodes=[bcast, manager], root=str(tmp_path))
+    assert config.node("/robot/controller_manager") is not None
     assert [n.name for n in config.nodes if n.origin == "plugin"] == ["/robot/bcast"]
     assert links_of(config, "/robot/bcast") == [("publish", "/robot/joint_states")]
 

@@ -88,8 +88,8 @@ def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance
             continue
         for slot in host.slots:
             if slot.names == SPAWNER:
-                choices = list(_spawned(decl, instance, started, params, workspace,
-                                        config))
+                choices = list(_spawned(instance, started, params, workspace, config,
+                                        unnamed=decl.name_guessed))
             else:
                 choices = list(_chosen(instance, slot, params))
             for choice in choices:
@@ -306,32 +306,32 @@ def _manager_name(spawner: NodeDecl, manager: str) -> str:
     return f"{namespace}/{manager}"
 
 
-def _serves(host: NodeDecl, instance: NodeInstance, manager: str) -> bool:
-    """Whether the spawner's manager ``manager`` is this instance. A manager launched
-    without a name is named by ros2_control_node's code (``controller_manager``); when
-    that code is not known the instance is ``/ns/?`` or named after its executable (the
-    graph's guess)."""
+def _serves(instance: NodeInstance, manager: str, unnamed: bool = False) -> bool:
     if instance.name == manager:
         return True
-    return (host.name.rsplit("/", 1)[-1] in (UNKNOWN_MARK, host.executable)
+    # a manager the launch file does not name runs under the name its code gives it,
+    # controller_manager (ros2_control_node's): ``/ns/?`` when that is not known, or a
+    # name guessed from its executable
+    return ((unnamed or instance.name.rsplit("/", 1)[-1] == UNKNOWN_MARK)
             and namespace_of(instance.name) == namespace_of(manager)
             and manager.rsplit("/", 1)[-1] == MANAGER_NAME)
 
 
-def _spawned(host_decl: NodeDecl, host: NodeInstance,
-             started: Sequence[tuple[NodeDecl, NodeInstance]], params: Params,
-             workspace: Workspace, config: Configuration) -> Iterator[Choice]:
+def _spawned(host: NodeInstance, started: Sequence[tuple[NodeDecl, NodeInstance]],
+             params: Params, workspace: Workspace,
+             config: Configuration, unnamed: bool = False) -> Iterator[Choice]:
     """The controllers the spawners of the configuration load into ``host``."""
     for decl, instance in started:
         if (decl.package, decl.executable) not in SPAWNERS:
             continue
         spawn = spawn_args(decl)
-        if not _serves(host_decl, host, _manager_name(decl, spawn.manager)):
+        if not _serves(host, _manager_name(decl, spawn.manager), unnamed):
             continue
         documents = [doc for path in spawn.param_files
                      if (doc := _param_file(path, decl, workspace, config)) is not None]
         namespace = host.namespace.rstrip("/")
-        manager = _manager_name(decl, spawn.manager)
+        manager = host.name if UNKNOWN_MARK not in host.name and not unnamed else \
+            _manager_name(decl, spawn.manager)
         for controller in spawn.controllers[:MAX_PLUGINS]:
             node_name = f"{namespace}/{controller}"
             own: dict[str, Any] = {}
