@@ -1,0 +1,474 @@
+"""What a change does to the architecture: two models compared, for code review.
+
+Configurations are matched by name. In each, node instances (by ROS name), topics,
+services, actions and parameters (by name) and links (by kind, node instance and
+resource name) are added, removed or changed; a change names the fields that differ
+(what an instance runs, its remaps and arguments; a resource's types; a link's type,
+QoS, queue size, latching and a read's default; a parameter's value and type).
+Findings are matched by rule, entities and configuration, never by line, so code that
+moves does not make them appear and disappear. Every entry carries the file:line of
+the side it lives on: the new one, or the old one for what was removed.
+
+``--rev BASE..HEAD`` analyses both revisions from git objects (``git archive``), each
+written in turn into the same folder, so the C++ parse cache (keyed by path and text)
+serves every file the change did not touch.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import fcntl
+import hashlib
+import io
+import json
+import os
+import shutil
+import subprocess
+import tarfile
+import tempfile
+from collections.abc import Iterable, Iterator
+from dataclasses import dataclass, field
+from typing import Any
+
+from .model.diagnostic import SEVERITY_RANK
+from .model.finding import Finding
+from .model.load import from_data, location
+from .model.location import NOWHERE, Location
+from .model.model import Model
+from .model.runtime import Configuration, Link
+from .model.serialise import to_data
+
+KINDS = ("node", "topic", "service", "action", "link", "parameter")
+FAIL_ON = {"new-error": "error", "new-warning": "warning", "never": None}
+
+
+@dataclass
+class Change:
+    """One element added, removed or changed; ``fields`` maps a changed field to its
+    (old, new) values; ``location`` is where it lives (the old side when removed)."""
+
+    kind: str
+    key: str
+    status: str  # "added", "removed", "changed"
+    location: str = ""
+    fields: dict[str, tuple[Any, Any]] = field(default_factory=dict)
+
+    def to_data(self) -> dict[str, Any]:
+        data: dict[str, Any] = {"kind": self.kind, "key": self.key, "status": self.status,
+                                "location": self.location}
+        if self.fields:
+            data["fields"] = {k: {"old": o, "new": n} for k, (o, n) in self.fields.items()}
+        return data
+
+
+@dataclass
+class FindingChange:
+    """A finding that appears ("new") or disappears ("gone") in one configuration."""
+
+    status: str
+    finding: Finding
+    configuration: str | None
+
+    @property
+    def location(self) -> str:
+        return "" if self.finding.location == NOWHERE else str(self.finding.location)
+
+    def to_data(self) -> dict[str, Any]:
+        return {"status": self.status, "configuration": self.configuration,
+                "rule": self.finding.rule, "severity": self.finding.severity,
+                "title": self.finding.title, "message": self.finding.message,
+                "entities": list(self.finding.entities), "location": self.location}
+
+
+@dataclass
+class ConfigDiff:
+    name: str
+    status: str  # "added", "removed", "changed", "same"
+    changes: list[Change] = field(default_factory=list)
+    findings: list[FindingChange] = field(default_factory=list)
+
+
+@dataclass
+class DiffResult:
+    old: str
+    new: str
+    configurations: list[ConfigDiff] = field(default_factory=list)
+
+    @property
+    def findings(self) -> list[FindingChange]:
+        return [f for c in self.configurations for f in c.findings]
+
+    @property
+    def changes(self) -> list[Change]:
+        return [ch for c in self.configurations for ch in c.changes]
+
+    def counts(self) -> dict[str, int]:
+        found: dict[str, int] = {}
+        for change in self.changes:
+            found[change.status] = found.get(change.status, 0) + 1
+        for item in self.findings:
+            key = f"{item.status} {item.finding.severity}"
+            found[key] = found.get(key, 0) + 1
+        return found
+
+    def fails(self, fail_on: str) -> bool:
+        """A new finding at or above ``fail_on`` (new-error, new-warning; never)."""
+        floor = FAIL_ON[fail_on]
+        return floor is not None and any(
+            f.status == "new" and SEVERITY_RANK[f.finding.severity] >= SEVERITY_RANK[floor]
+            for f in self.findings)
+
+    def to_data(self) -> dict[str, Any]:
+        return {"old": self.old, "new": self.new, "summary": self.counts(),
+                "configurations": [
+                    {"name": c.name, "status": c.status,
+                     "changes": [ch.to_data() for ch in c.changes],
+                     "findings": [f.to_data() for f in c.findings]}
+                    for c in self.configurations]}
+
+
+# ------------------------------------------------------------------ comparing
+
+
+def _where(loc: Location) -> str:
+    return "" if loc == NOWHERE else str(loc)
+
+
+def _link_fields(link: Link) -> dict[str, Any]:
+    found: dict[str, Any] = {"type": link.type, "qos": to_data(link.qos),
+                             "queue_size": link.queue_size, "latch": link.latch}
+    if link.kind == "read" and link.call is not None:
+        found["default"] = to_data(link.call.default) if link.call.has_default else None
+    return found
+
+
+def _elements(config: Configuration) -> dict[tuple[str, str], tuple[dict[str, Any], str]]:
+    """Every comparable element: (kind, key) -> (fields, location)."""
+    found: dict[tuple[str, str], tuple[dict[str, Any], str]] = {}
+    for node in config.nodes:
+        found["node", node.name] = ({
+            "runs": node.node.name if node.node is not None else None,
+            "remaps": [list(r) for r in node.remaps], "args": node.args,
+            "conditions": to_data(node.conditions)}, _where(node.location))
+    for kind, resources in (("topic", config.topics), ("service", config.services),
+                            ("action", config.actions)):
+        for resource in resources:
+            first = resource.links[0].location if resource.links else NOWHERE
+            found[kind, resource.name] = ({"types": resource.types}, _where(first))
+    for param in config.parameters:
+        found["parameter", param.name] = ({"value": to_data(param.value),
+                                           "type": param.type}, _where(param.location))
+    grouped: dict[str, list[Link]] = {}
+    for link in config.direct_links:
+        grouped.setdefault(f"{link.kind} {link.node.name} {link.name}", []).append(link)
+    for key, links in grouped.items():
+        variants = [_link_fields(link) for link in links]
+        if len(variants) == 1:
+            fields = variants[0]
+        else:  # several calls for one link: each field is the set of values they give
+            fields = {name: sorted({json.dumps(v[name], sort_keys=True) for v in variants})
+                      for name in variants[0]}
+        found["link", key] = (fields, _where(links[0].location))
+    return found
+
+
+def _finding_keys(findings: Iterable[Finding]
+                  ) -> dict[tuple[str | None, str, tuple[str, ...]], Finding]:
+    keyed: dict[tuple[str | None, str, tuple[str, ...]], Finding] = {}
+    for finding in findings:
+        for config in finding.configurations or (finding.configuration,):
+            keyed.setdefault((config, finding.rule, tuple(sorted(finding.entities))), finding)
+    return keyed
+
+
+def _order(kind_key: tuple[str, str]) -> tuple[int, str]:
+    return KINDS.index(kind_key[0]), kind_key[1]
+
+
+def compare_configuration(old: Configuration | None, new: Configuration | None
+                          ) -> list[Change]:
+    before = _elements(old) if old is not None else {}
+    after = _elements(new) if new is not None else {}
+    changes: list[Change] = []
+    for kind_key in sorted(before.keys() | after.keys(), key=_order):
+        kind, key = kind_key
+        if kind_key not in after:
+            changes.append(Change(kind, key, "removed", before[kind_key][1]))
+        elif kind_key not in before:
+            changes.append(Change(kind, key, "added", after[kind_key][1]))
+        else:
+            (was, _), (now, where) = before[kind_key], after[kind_key]
+            differ = {name: (was.get(name), now.get(name))
+                      for name in dict.fromkeys([*was, *now])
+                      if was.get(name) != now.get(name)}
+            if differ:
+                changes.append(Change(kind, key, "changed", where, differ))
+    return changes
+
+
+def compare(old: Model, new: Model, old_findings: Iterable[Finding] = (),
+            new_findings: Iterable[Finding] = (), old_label: str = "old",
+            new_label: str = "new") -> DiffResult:
+    """The difference between two models and their findings."""
+    result = DiffResult(old_label, new_label)
+    before = {c.name: c for c in old.configurations}
+    after = {c.name: c for c in new.configurations}
+    found_before, found_after = _finding_keys(old_findings), _finding_keys(new_findings)
+    names: list[str | None] = [*dict.fromkeys([*before, *after])]
+    if any(k[0] is None for k in (*found_before, *found_after)):
+        names.append(None)  # findings about the model as a whole
+    for name in names:
+        if name is None:
+            diff = ConfigDiff("", "same")
+        else:
+            status = ("added" if name not in before else "removed" if name not in after
+                      else "same")
+            diff = ConfigDiff(name, status)
+            if status == "same":
+                diff.changes = compare_configuration(before[name], after[name])
+                diff.status = "changed" if diff.changes else "same"
+        for key in sorted(found_after.keys() - found_before.keys(), key=str):
+            if key[0] == name:
+                diff.findings.append(FindingChange("new", found_after[key], name))
+        for key in sorted(found_before.keys() - found_after.keys(), key=str):
+            if key[0] == name:
+                diff.findings.append(FindingChange("gone", found_before[key], name))
+        if diff.findings and diff.status == "same":
+            diff.status = "changed"
+        result.configurations.append(diff)
+    return result
+
+
+# ------------------------------------------------------------------ inputs
+
+
+class DiffError(Exception):
+    """An input that cannot be compared: said in one line, never a traceback."""
+
+
+def finding_from_data(data: dict[str, Any]) -> Finding:
+    return Finding(str(data["rule"]), data.get("severity", "info"), str(data.get("title", "")),
+                   str(data.get("message", "")), data.get("configuration"),
+                   tuple(str(e) for e in data.get("entities", ())),
+                   location(data.get("location")),
+                   tuple(str(c) for c in data.get("configurations", ())))
+
+
+def load_saved(path: str) -> tuple[Model, list[Finding]]:
+    """A model written by ``haros-arch extract -o`` and its findings (the document's
+    ``findings``; the catalogue's when the document has none)."""
+    from .model.load import ModelDataError
+
+    try:
+        with open(path, encoding="utf-8") as handle:
+            data = json.load(handle)
+        model = from_data(data)
+        if isinstance(data.get("findings"), list):
+            findings = [finding_from_data(f) for f in data["findings"]]
+        else:
+            from .query.catalogue import run_catalogue
+
+            findings = run_catalogue(model)
+    except OSError as err:
+        raise DiffError(f"cannot read {path}: {err.strerror or err}") from None
+    except (ValueError, RecursionError, ModelDataError) as err:
+        raise DiffError(f"{path} is not a haros-arch model: {err}") from None
+    except (KeyError, TypeError, AttributeError) as err:
+        raise DiffError(f"{path}: a finding has the wrong shape ({err})") from None
+    if any(f.severity not in SEVERITY_RANK for f in findings):
+        raise DiffError(f"{path}: a finding has an unknown severity")
+    return model, findings
+
+
+def _git(repo: str, *args: str) -> bytes:
+    try:
+        done = subprocess.run(["git", "-C", repo, *args], capture_output=True, timeout=300,
+                              check=False)
+    except (OSError, subprocess.TimeoutExpired) as err:
+        raise DiffError(f"git {args[0]}: {err}") from None
+    if done.returncode != 0:
+        message = done.stderr.decode("utf-8", "replace").strip().splitlines()
+        raise DiffError(f"git {args[0]} {' '.join(args[1:])}: "
+                        f"{message[-1] if message else 'failed'}")
+    return done.stdout
+
+
+def split_range(text: str) -> tuple[str, str]:
+    base, dots, head = text.partition("..")
+    if not base or head.startswith("."):
+        raise DiffError(f"--rev takes BASE..HEAD (two revisions), not {text!r}")
+    return base, (head if dots and head else "HEAD")
+
+
+@contextlib.contextmanager
+def _tree_folder(root: str) -> Iterator[str]:
+    """One folder per repository, the same on every run (the parse cache is keyed by
+    file path), held under a lock while a revision is analysed in it."""
+    digest = hashlib.sha256(os.path.realpath(root).encode()).hexdigest()[:12]
+    base = os.path.join(tempfile.gettempdir(), f"haros-arch-diff-{os.getuid()}-{digest}")
+    os.makedirs(base, mode=0o700, exist_ok=True)
+    with open(os.path.join(base, "lock"), "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        try:
+            yield os.path.join(base, "tree")
+        finally:
+            fcntl.flock(lock, fcntl.LOCK_UN)
+
+
+def _unpack(root: str, rev: str, folder: str) -> None:
+    """The revision's tree, from git objects: nothing in the working tree is touched
+    and nothing from the repository runs."""
+    shutil.rmtree(folder, ignore_errors=True)
+    os.makedirs(folder)
+    archive = _git(root, "archive", "--format=tar", rev)
+    with tarfile.open(fileobj=io.BytesIO(archive)) as tar:
+        members = [m for m in tar.getmembers() if _inside(m)]
+        tar.extractall(folder, members=members, filter="data")
+
+
+def _inside(member: tarfile.TarInfo) -> bool:
+    """A file, folder or symbolic link that stays in the tree (no other kind)."""
+    if not (member.isfile() or member.isdir() or member.issym()):
+        return False
+    name = os.path.normpath(member.name)
+    if os.path.isabs(name) or name.startswith(".."):
+        return False
+    if member.issym():
+        target = os.path.normpath(os.path.join(os.path.dirname(name), member.linkname))
+        return not (os.path.isabs(member.linkname) or target.startswith(".."))
+    return True
+
+
+def analyse_revision(root: str, rev: str, path: str, folder: str, options: Any = None
+                     ) -> tuple[Model, list[Finding], list[str]]:
+    """The model and findings of PATH (a project file or a folder, relative to the
+    repository root) at revision ``rev``, analysed in ``folder``; and notes to print."""
+    from .autoproject import open_choice
+    from .pipeline import analyse
+    from .project import ProjectError
+    from .query.catalogue import run_catalogue
+
+    _git(root, "rev-parse", "--verify", "--quiet", f"{rev}^{{commit}}")
+    _unpack(root, rev, folder)
+    here = os.getcwd()
+    os.chdir(folder)  # file names in the model are then relative to the repository root
+    try:
+        if not os.path.exists(path):
+            raise DiffError(f"{path} does not exist at {rev}")
+        try:
+            choice = open_choice(path)
+        except ProjectError as err:
+            raise DiffError(f"{rev}: {err}") from None
+        model = analyse(choice.project, options=options)
+        findings = run_catalogue(model, choice.project)
+    finally:
+        os.chdir(here)
+    return model, findings, [f"{rev}: {note}" for note in choice.notes]
+
+
+def compare_revisions(spec: str, path: str = ".", repo: str = ".", options: Any = None
+                      ) -> tuple[DiffResult, list[str]]:
+    base, head = split_range(spec)
+    root = _git(repo, "rev-parse", "--show-toplevel").decode().strip()
+    if os.path.isabs(path):
+        path = os.path.relpath(path, root)
+    sides = []
+    notes: list[str] = []
+    with _tree_folder(root) as folder:
+        for rev in (base, head):
+            model, findings, said = analyse_revision(root, rev, path, folder, options)
+            sides.append((model, findings))
+            notes.extend(said)
+    (old, old_found), (new, new_found) = sides
+    return compare(old, new, old_found, new_found, base, head), notes
+
+
+# ------------------------------------------------------------------ output
+
+MARK = {"added": "+", "removed": "-", "changed": "~", "new": "+", "gone": "-"}
+
+
+def _value(value: Any) -> str:
+    return json.dumps(value, sort_keys=True, ensure_ascii=False)
+
+
+def summary(result: DiffResult) -> str:
+    counts = result.counts()
+    parts = [f"{counts[s]} {s}" for s in ("added", "removed", "changed") if counts.get(s)]
+    found = [f"{counts[k]} {k}" for k in sorted(counts, key=lambda k: (
+        k.split()[0] != "new", -SEVERITY_RANK.get(k.split()[-1], 0)))
+        if " " in k]
+    configs = [f"configuration {c.name} {c.status}" for c in result.configurations
+               if c.status in ("added", "removed")]
+    text = ", ".join([*configs, *parts]) or "no change to the graph"
+    findings = ", ".join(f"{f} finding(s)" for f in found) or "no finding appears or disappears"
+    return f"{result.old}..{result.new}: {text}; {findings}"
+
+
+def _change_line(change: Change) -> str:
+    where = f"  ({change.location})" if change.location else ""
+    line = f"{MARK[change.status]} {change.kind} {change.key}{where}"
+    details = "; ".join(f"{name}: {_value(old)} -> {_value(new)}"
+                        for name, (old, new) in change.fields.items())
+    return f"{line}\n    {details}" if details else line
+
+
+def _finding_line(item: FindingChange) -> str:
+    where = f"  ({item.location})" if item.location else ""
+    return (f"{MARK[item.status]} {item.status} {item.finding.severity} "
+            f"[{item.finding.rule}] {item.finding.message}{where}")
+
+
+def to_text(result: DiffResult) -> str:
+    lines = [summary(result)]
+    for config in result.configurations:
+        if config.status == "same":
+            continue
+        title = f"configuration {config.name}" if config.name else "the whole model"
+        lines.append(f"\n{title} ({config.status})")
+        lines.extend("  " + _change_line(c).replace("\n", "\n  ") for c in config.changes)
+        lines.extend("  " + _finding_line(f) for f in config.findings)
+    return "\n".join(lines) + "\n"
+
+
+def _md(text: str) -> str:
+    """Text for a Markdown table cell or list item: no markup from the analysed code."""
+    escaped = text.replace("\\", "\\\\").replace("|", "\\|").replace("<", "&lt;")
+    for char in "`*_[]#":
+        escaped = escaped.replace(char, "\\" + char)
+    return escaped.replace("\n", " ")
+
+
+def to_markdown(result: DiffResult) -> str:
+    """A pull-request comment: the summary and the new findings first, the rest folded."""
+    new = [f for f in result.findings if f.status == "new"]
+    lines = ["### haros-arch: architecture diff", "", _md(summary(result)), ""]
+    if new:
+        lines.append("**New findings**")
+        lines.append("")
+        lines.extend(f"- {_md(_finding_line(f))}" for f in new)
+        lines.append("")
+    for config in result.configurations:
+        if config.status == "same":
+            continue
+        title = f"configuration {config.name}" if config.name else "the whole model"
+        lines.append(f"<details><summary>{_md(title)}: {config.status}, "
+                     f"{len(config.changes)} change(s), {len(config.findings)} "
+                     "finding change(s)</summary>")
+        lines.append("")
+        if config.changes:
+            lines.append("| | kind | name | where | what changed |")
+            lines.append("|---|---|---|---|---|")
+            for change in config.changes:
+                what = "; ".join(f"{name}: {_value(old)} → {_value(new)}"
+                                 for name, (old, new) in change.fields.items())
+                lines.append(f"| {change.status} | {change.kind} | {_md(change.key)} | "
+                             f"{_md(change.location)} | {_md(what)} |")
+            lines.append("")
+        lines.extend(f"- {_md(_finding_line(f))}" for f in config.findings)
+        lines.extend(["", "</details>", ""])
+    return "\n".join(lines).rstrip("\n") + "\n"
+
+
+def to_json(result: DiffResult) -> str:
+    return json.dumps(result.to_data(), indent=2, ensure_ascii=False) + "\n"
