@@ -1,0 +1,250 @@
+"""``haros-arch diff``: known changes to the bundled example give exactly their diff;
+findings match by rule, entities and configuration (not by line); ``--rev`` analyses
+git revisions without touching the working tree and reuses the C++ parse cache."""
+
+from __future__ import annotations
+
+import json
+import os
+import shutil
+import subprocess
+from collections.abc import Callable
+from pathlib import Path
+
+import pytest
+from conftest import ROOT
+
+from haros_arch import diff
+from haros_arch.autoproject import open_choice
+from haros_arch.cli import main
+from haros_arch.pipeline import analyse
+from haros_arch.query.catalogue import run_catalogue
+
+ROBOT = "src/demo_robot/launch/robot.launch"
+SAFETY = "src/demo_rover/scripts/safety_stop.py"
+FILTER = "src/demo_rover/src/lidar_filter.cpp"
+
+
+def edit(path: str, old: str, new: str) -> Callable[[Path], None]:
+    def apply(root: Path) -> None:
+        file = root / path
+        text = file.read_text()
+        assert old in text
+        file.write_text(text.replace(old, new, 1))
+    return apply
+
+
+def side(root: Path) -> tuple:
+    here = os.getcwd()
+    os.chdir(root)
+    try:
+        choice = open_choice("project.yaml")
+        model = analyse(choice.project)
+        return model, run_catalogue(model, choice.project)
+    finally:
+        os.chdir(here)
+
+
+@pytest.fixture(scope="module")
+def base(tmp_path_factory: pytest.TempPathFactory) -> tuple:
+    root = tmp_path_factory.mktemp("base")
+    shutil.copytree(ROOT / "examples", root, dirs_exist_ok=True)
+    return side(root)
+
+
+def lines(result: diff.DiffResult) -> list[str]:
+    """Each configuration's changes and findings, as the text output writes them."""
+    return [line for line in diff.to_text(result).splitlines()[1:] if line]
+
+
+CASES = {
+    "new publisher": edit(SAFETY, '"cmd_vel", 10)\n', '"cmd_vel", 10)\n'
+                          '        self.create_publisher(Twist, "stopped", 10)\n'),
+    "topic renamed on one side": edit(SAFETY, '"scan_filtered"', '"scan_clean"'),
+    "dropped remap": edit(ROBOT, '      <remap from="scan" to="base_scan" />\n', ""),
+    "parameter default changed": edit(SAFETY, '"stop_distance", 0.3', '"stop_distance", 0.4'),
+    "node no longer launched": edit(
+        ROBOT, '    <node name="battery" pkg="demo_robot" type="battery_monitor.py">\n'
+               '      <param name="threshold" value="0.25" />\n    </node>\n', ""),
+    "qos change": edit(FILTER, '"scan_filtered", rclcpp::SensorDataQoS()',
+                       '"scan_filtered", 10'),
+    "code moved": edit(SAFETY, '"""Stops', '\n\n\n"""Stops'),
+}
+PY = "demo_rover/scripts/safety_stop.py"
+BATTERY = "demo_robot/scripts/battery_monitor.py"
+CONTROLLER = "demo_robot/src/controller.cpp:31:33"
+QOS_ERROR = ("- gone error [qos-incompatible] /rover/lidar_filter -> /rover/safety_stop on "
+             "/rover/scan_filtered: the publisher is best-effort but the subscriber requires "
+             "reliable  (demo_rover/src/lidar_filter.cpp:19:18)")
+# the robot cases: configuration robot; robot_without_monitor (robot2) changes alike
+EXPECTED = {
+    "new publisher": [
+        "configuration rover (changed)",
+        f"+ topic /rover/stopped  ({PY}:19:9)",
+        f"+ link publish /rover/safety_stop /rover/stopped  ({PY}:19:9)"],
+    # nothing publishes scan_clean now, but the container of unknown interface could:
+    # no new finding; the QoS mismatch with the filter's publisher is gone
+    "topic renamed on one side": [
+        "configuration rover (changed)",
+        f"+ topic /rover/scan_clean  ({PY}:17:9)",
+        f"+ link subscribe /rover/safety_stop /rover/scan_clean  ({PY}:17:9)",
+        f"- link subscribe /rover/safety_stop /rover/scan_filtered  ({PY}:17:9)",
+        QOS_ERROR],
+    "dropped remap": [
+        "configuration robot (changed)",
+        "~ node /robot1/controller  (demo_robot/launch/robot.launch:13)",
+        '    remaps: [["scan", "base_scan"]] -> []',
+        f"- topic /robot1/base_scan  ({CONTROLLER})",
+        f"+ topic /robot1/scan  ({CONTROLLER})",
+        f"- link subscribe /robot1/controller /robot1/base_scan  ({CONTROLLER})",
+        f"+ link subscribe /robot1/controller /robot1/scan  ({CONTROLLER})",
+        "+ new warning [subscriber-without-publisher] /robot1/controller subscribes to "
+        f"/robot1/scan but nothing publishes it  ({CONTROLLER})",
+        "- gone warning [subscriber-without-publisher] /robot1/controller subscribes to "
+        f"/robot1/base_scan but nothing publishes it  ({CONTROLLER})"],
+    # the launch file still sets 0.5: only the code's default changed
+    "parameter default changed": [
+        "configuration rover (changed)",
+        f"~ link read /rover/safety_stop /rover/safety_stop/stop_distance  ({PY}:14:30)",
+        "    default: 0.3 -> 0.4"],
+    "node no longer launched": [
+        "configuration robot (changed)",
+        "- node /robot1/battery  (demo_robot/launch/robot.launch:10)",
+        f"- topic /robot1/battery/level  ({BATTERY}:17:26)",
+        f"- topic /robot1/battery/low  ({BATTERY}:16:24)",
+        f"- link action-client /robot1/battery /robot1/dock  ({BATTERY}:19:21)",
+        f"- link client /robot1/battery /robot1/driver/reset  ({BATTERY}:18:22)",
+        f"- link publish /robot1/battery /robot1/battery/low  ({BATTERY}:16:24)",
+        f"- link read /robot1/battery /robot1/battery/threshold  ({BATTERY}:15:26)",
+        f"- link subscribe /robot1/battery /robot1/battery/level  ({BATTERY}:17:26)",
+        "- parameter /robot1/battery/threshold  (demo_robot/launch/robot.launch:11)",
+        "- gone info [publisher-without-subscriber] /robot1/battery publishes "
+        f"/robot1/battery/low but nothing subscribes to it  ({BATTERY}:16:24)",
+        "- gone warning [subscriber-without-publisher] /robot1/battery subscribes to "
+        f"/robot1/battery/level but nothing publishes it  ({BATTERY}:17:26)"],
+    "qos change": [
+        "configuration rover (changed)",
+        "~ link publish /rover/lidar_filter /rover/scan_filtered  "
+        "(demo_rover/src/lidar_filter.cpp:19:18)",
+        '    qos: {"depth": 5, "durability": "volatile", "history": "keep_last", '
+        '"reliability": "best_effort"} -> {"depth": 10, "durability": "volatile", '
+        '"history": "keep_last", "reliability": "reliable"}; queue_size: 5 -> 10',
+        QOS_ERROR],
+    # lines moved: no link, resource or finding changes (they are not keyed by line)
+    "code moved": [],
+}
+
+
+def _robot2(lines: list[str]) -> list[str]:
+    return [line.replace("/robot1/", "/robot2/").replace(
+        "configuration robot ", "configuration robot_without_monitor ") for line in lines]
+
+
+@pytest.mark.parametrize("case", sorted(CASES))
+def test_each_known_change_gives_exactly_its_diff(case: str, base: tuple,
+                                                  tmp_path: Path) -> None:
+    shutil.copytree(ROOT / "examples", tmp_path, dirs_exist_ok=True)
+    CASES[case](tmp_path)
+    model, findings = side(tmp_path)
+    result = diff.compare(base[0], model, base[1], findings)
+    expected = EXPECTED[case]
+    if expected and expected[0].startswith("configuration robot "):
+        # the second robot configuration (robot2) changes alike
+        expected = expected + _robot2(expected)
+    assert [line.strip() for line in lines(result)] == [e.strip() for e in expected]
+
+
+def git(repo: Path, *args: str) -> str:
+    return subprocess.run(["git", "-C", str(repo), "-c", "user.name=t", "-c",
+                           "user.email=t@t", *args], check=True, capture_output=True,
+                          text=True).stdout
+
+
+@pytest.fixture
+def repo(tmp_path: Path) -> Path:
+    """The example in a git repository: a base commit, then a head commit that drops a
+    remap (a new warning) and raises the controller's max_speed."""
+    root = tmp_path / "repo"
+    shutil.copytree(ROOT / "examples", root)
+    git(root, "init", "-q")
+    git(root, "add", "-A")
+    git(root, "commit", "-qm", "base")
+    CASES["dropped remap"](root)
+    edit(ROBOT, 'value="0.8"', 'value="1.2"')(root)
+    git(root, "commit", "-qam", "head")
+    return root
+
+
+def run(argv: list[str], cwd: Path, capsys: pytest.CaptureFixture[str]
+        ) -> tuple[int, str, str]:
+    here = os.getcwd()
+    os.chdir(cwd)
+    try:
+        code = main(argv)
+    finally:
+        os.chdir(here)
+    said = capsys.readouterr()
+    return code, said.out, said.err
+
+
+def test_rev_analyses_git_objects_and_reuses_the_parse_cache(
+        repo: Path, tmp_path: Path, capsys: pytest.CaptureFixture[str],
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "cache"))
+    (repo / ROBOT).write_text("not committed")  # the working tree is not read or touched
+    code, out, _ = run(["diff", "--rev", "HEAD~1..HEAD", "project.yaml", "--jobs", "1",
+                     "--format", "json"], repo, capsys)
+    assert code == 0
+    data = json.loads(out)
+    robot = next(c for c in data["configurations"] if c["name"] == "robot")
+    assert {"kind": "parameter", "key": "/robot1/controller/max_speed", "status": "changed",
+            "location": "demo_robot/launch/robot.launch:14",
+            "fields": {"value": {"old": 0.8, "new": 1.2}}} in robot["changes"]
+    assert [(f["status"], f["rule"], f["entities"]) for f in robot["findings"]] == [
+        ("new", "subscriber-without-publisher",
+         ["node:/robot1/controller", "topic:/robot1/scan"]),
+        ("gone", "subscriber-without-publisher",
+         ["node:/robot1/controller", "topic:/robot1/base_scan"])]
+    assert data["summary"] == {"changed": 4, "added": 4, "removed": 4,
+                               "new warning": 2, "gone warning": 2}
+    assert (repo / ROBOT).read_text() == "not committed"
+    assert git(repo, "status", "--porcelain").split() == ["M", ROBOT]
+    # both revisions were parsed at one path: the four unchanged C++ sources once each
+    cached = list((tmp_path / "cache" / "haros-arch" / "cpp").glob("*.json"))
+    assert len(cached) == len(list((repo / "src").rglob("*.cpp"))) == 4
+
+
+def test_saved_models_markdown_and_fail_on(repo: Path, tmp_path: Path,
+                                           capsys: pytest.CaptureFixture[str]) -> None:
+    old, new = tmp_path / "old.json", tmp_path / "new.json"
+    git(repo, "checkout", "-q", "HEAD~1")
+    assert run(["extract", "project.yaml", "-q", "-o", str(old)], repo, capsys)[0] == 0
+    git(repo, "checkout", "-q", "-")
+    assert run(["extract", "project.yaml", "-q", "-o", str(new)], repo, capsys)[0] == 0
+    code, out, _ = run(["diff", str(old), str(new), "--format", "markdown", "--fail-on",
+                     "new-warning"], repo, capsys)
+    assert code == 1  # a new warning appears
+    assert out.splitlines()[2].endswith(
+        "new.json: 4 added, 4 removed, 4 changed; 2 new warning finding(s), "
+        "2 gone warning finding(s)")
+    assert "**New findings**" in out
+    assert out.count("<details>") == out.count("</details>") == 2
+    assert "| changed | parameter | /robot1/controller/max\\_speed |" in out
+    assert run(["diff", str(old), str(new), "--fail-on", "new-error"], repo, capsys)[0] == 0
+    # the same model on both sides: nothing changes, nothing fails
+    code, out, _ = run(["diff", str(new), str(new), "--fail-on", "new-warning"], repo, capsys)
+    assert code == 0 and out.endswith("no change to the graph; no finding appears or "
+                                      "disappears\n")
+
+
+def test_bad_inputs_say_so(repo: Path, tmp_path: Path,
+                           capsys: pytest.CaptureFixture[str]) -> None:
+    broken = tmp_path / "broken.json"
+    broken.write_text("{not json")
+    assert main(["diff", str(broken), str(broken)]) == 2
+    assert "is not a haros-arch model" in capsys.readouterr().err
+    code, _, err = run(["diff", "--rev", "HEAD~1..nosuchrev"], repo, capsys)
+    assert code == 2 and "nosuchrev" in err
+    code, _, err = run(["diff", "--rev", "HEAD~1..HEAD", "missing.yaml"], repo, capsys)
+    assert code == 2 and "missing.yaml does not exist at HEAD~1" in err
+    assert main(["diff", str(broken)]) == 2
