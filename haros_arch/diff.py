@@ -363,7 +363,9 @@ def analyse_revision(root: str, rev: str, path: str, folder: str, options: Any =
         findings = run_catalogue(model, choice.project)
     finally:
         os.chdir(here)
-    return model, findings, [f"{rev}: {note}" for note in choice.notes]
+    # the notes name the temporary tree: said from the repository root instead
+    return model, findings, [f"{rev}: " + note.replace(folder + os.sep, "").replace(
+        folder, ".") for note in choice.notes]
 
 
 def compare_revisions(spec: str, path: str = ".", repo: str = ".", options: Any = None

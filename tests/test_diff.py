@@ -193,7 +193,7 @@ def test_rev_analyses_git_objects_and_reuses_the_parse_cache(
     monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "cache"))
     (repo / ROBOT).write_text("not committed")  # the working tree is not read or touched
     code, out, _ = run(["diff", "--rev", "HEAD~1..HEAD", "project.yaml", "--jobs", "1",
-                     "--format", "json"], repo, capsys)
+                        "--format", "json"], repo, capsys)
     assert code == 0
     data = json.loads(out)
     robot = next(c for c in data["configurations"] if c["name"] == "robot")
@@ -248,3 +248,10 @@ def test_bad_inputs_say_so(repo: Path, tmp_path: Path,
     code, _, err = run(["diff", "--rev", "HEAD~1..HEAD", "missing.yaml"], repo, capsys)
     assert code == 2 and "missing.yaml does not exist at HEAD~1" in err
     assert main(["diff", str(broken)]) == 2
+
+
+def test_rev_notes_name_the_repository_not_the_temporary_tree(
+        repo: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    code, _, err = run(["diff", "--rev", "HEAD~1..HEAD", "src"], repo, capsys)
+    assert code == 0
+    assert "HEAD~1: 2 packages in src;" in err and "haros-arch-diff" not in err
