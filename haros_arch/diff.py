@@ -371,7 +371,10 @@ def analyse_revision(root: str, rev: str, path: str, folder: str, options: Any =
 def compare_revisions(spec: str, path: str = ".", repo: str = ".", options: Any = None
                       ) -> tuple[DiffResult, list[str]]:
     base, head = split_range(spec)
-    root = _git(repo, "rev-parse", "--show-toplevel").decode().strip()
+    if _git(repo, "rev-parse", "--is-bare-repository").strip() == b"true":
+        root = _git(repo, "rev-parse", "--absolute-git-dir").decode().strip()
+    else:  # PATH is relative to the root of the repository's work tree
+        root = _git(repo, "rev-parse", "--show-toplevel").decode().strip()
     if os.path.isabs(path):
         path = os.path.relpath(path, root)
     sides = []
