@@ -293,8 +293,11 @@ def cmd_diff(args: argparse.Namespace, out: Console, err: Console) -> int:
     except diff.DiffError as error:
         err.print(f"haros-arch: diff: {escape(str(error))}", highlight=False)
         return EXIT_USAGE
-    render = {"text": diff.to_text, "json": diff.to_json, "markdown": diff.to_markdown}
-    _write(render[args.format](result), args.output)
+    if args.format == "text" and not args.output:
+        diff.print_text(result, out)
+    else:
+        render = {"text": diff.to_text, "json": diff.to_json, "markdown": diff.to_markdown}
+        _write(render[args.format](result), args.output)
     if args.output:
         err.print(escape(diff.summary(result)), highlight=False)
     return EXIT_FINDINGS if result.fails(args.fail_on) else EXIT_OK

@@ -22,6 +22,7 @@ import hashlib
 import io
 import json
 import os
+import re
 import shutil
 import subprocess
 import tarfile
@@ -39,6 +40,9 @@ from .model.runtime import Configuration, Link
 from .model.serialise import to_data
 
 KINDS = ("node", "topic", "service", "action", "link", "parameter")
+# "topic:/?#2": the second unresolved "/?" of a configuration; the number depends on the
+# order the graph met them in, which an unrelated change may shift
+REPEAT = re.compile(r"#\d+$")
 FAIL_ON = {"new-error": "error", "new-warning": "warning", "never": None}
 
 
@@ -152,9 +156,12 @@ def _elements(config: Configuration) -> dict[tuple[str, str], tuple[dict[str, An
             "conditions": to_data(node.conditions)}, _where(node.location))
     for kind, resources in (("topic", config.topics), ("service", config.services),
                             ("action", config.actions)):
-        for resource in resources:
+        for resource in resources:  # unresolved names ("/?") may repeat: one entry
             first = resource.links[0].location if resource.links else NOWHERE
-            found[kind, resource.name] = ({"types": resource.types}, _where(first))
+            known = found.get((kind, resource.name))
+            types = sorted({*resource.types, *(known[0]["types"] if known else ())})
+            found[kind, resource.name] = ({"types": types},
+                                          known[1] if known else _where(first))
     for param in config.parameters:
         found["parameter", param.name] = ({"value": to_data(param.value),
                                            "type": param.type}, _where(param.location))
@@ -177,7 +184,8 @@ def _finding_keys(findings: Iterable[Finding]
     keyed: dict[tuple[str | None, str, tuple[str, ...]], Finding] = {}
     for finding in findings:
         for config in finding.configurations or (finding.configuration,):
-            keyed.setdefault((config, finding.rule, tuple(sorted(finding.entities))), finding)
+            entities = tuple(sorted(REPEAT.sub("", e) for e in finding.entities))
+            keyed.setdefault((config, finding.rule, entities), finding)
     return keyed
 
 
@@ -214,17 +222,19 @@ def compare(old: Model, new: Model, old_findings: Iterable[Finding] = (),
     before = {c.name: c for c in old.configurations}
     after = {c.name: c for c in new.configurations}
     found_before, found_after = _finding_keys(old_findings), _finding_keys(new_findings)
-    names: list[str | None] = [*dict.fromkeys([*before, *after])]
-    if any(k[0] is None for k in (*found_before, *found_after)):
+    keys = [*found_before, *found_after]
+    names: list[str | None] = [*dict.fromkeys(
+        [*before, *after, *(k[0] for k in keys if k[0] is not None)])]
+    if any(k[0] is None for k in keys):
         names.append(None)  # findings about the model as a whole
     for name in names:
         if name is None:
             diff = ConfigDiff("", "same")
-        else:
-            status = ("added" if name not in before else "removed" if name not in after
-                      else "same")
+        else:  # (a configuration only findings name is compared by its findings)
+            status = ("same" if (name in before) == (name in after)
+                      else "added" if name not in before else "removed")
             diff = ConfigDiff(name, status)
-            if status == "same":
+            if name in before and name in after:
                 diff.changes = compare_configuration(before[name], after[name])
                 diff.status = "changed" if diff.changes else "same"
         for key in sorted(found_after.keys() - found_before.keys(), key=str):
@@ -434,6 +444,21 @@ def to_text(result: DiffResult) -> str:
         lines.extend("  " + _change_line(c).replace("\n", "\n  ") for c in config.changes)
         lines.extend("  " + _finding_line(f) for f in config.findings)
     return "\n".join(lines) + "\n"
+
+
+STYLE = {"+": "green", "-": "red", "~": "yellow"}
+
+
+def print_text(result: DiffResult, console: Any) -> None:
+    """``to_text`` on a rich console: the summary in bold, additions green, removals red,
+    changes yellow (plain when the console has no colour)."""
+    from rich.markup import escape
+
+    for number, line in enumerate(to_text(result).splitlines()):
+        style = "bold" if number == 0 or line.startswith("configuration") else \
+            STYLE.get(line.strip()[:1], "")
+        text = escape(line)
+        console.print(f"[{style}]{text}[/{style}]" if style else text, highlight=False)
 
 
 def _md(text: str) -> str:

@@ -17,6 +17,9 @@ from conftest import ROOT
 from haros_arch import diff
 from haros_arch.autoproject import open_choice
 from haros_arch.cli import main
+from haros_arch.model.finding import Finding
+from haros_arch.model.location import Location
+from haros_arch.model.model import Model
 from haros_arch.pipeline import analyse
 from haros_arch.query.catalogue import run_catalogue
 
@@ -230,7 +233,10 @@ def test_saved_models_markdown_and_fail_on(repo: Path, tmp_path: Path,
     assert "**New findings**" in out
     assert out.count("<details>") == out.count("</details>") == 2
     assert "| changed | parameter | /robot1/controller/max\\_speed |" in out
-    assert run(["diff", str(old), str(new), "--fail-on", "new-error"], repo, capsys)[0] == 0
+    code, out, _ = run(["diff", str(old), str(new), "--fail-on", "new-error"], repo, capsys)
+    assert code == 0
+    assert "  ~ parameter /robot1/controller/max_speed  (demo_robot/launch/robot.launch:14)" \
+        "\n      value: 0.8 -> 1.2\n" in out
     # the same model on both sides: nothing changes, nothing fails
     code, out, _ = run(["diff", str(new), str(new), "--fail-on", "new-warning"], repo, capsys)
     assert code == 0 and out.endswith("no change to the graph; no finding appears or "
@@ -255,3 +261,18 @@ def test_rev_notes_name_the_repository_not_the_temporary_tree(
     code, _, err = run(["diff", "--rev", "HEAD~1..HEAD", "src"], repo, capsys)
     assert code == 0
     assert "HEAD~1: 2 packages in src;" in err and "haros-arch-diff" not in err
+
+
+def test_findings_match_by_rule_entities_and_configuration_not_line_or_repeat() -> None:
+    def found(line: int, topic: str, config: str = "c") -> Finding:
+        return Finding("r", "warning", "t", f"m {line}", config, ("node:/a", topic),
+                       Location(file="a.py", line=line), (config,))
+
+    same = diff.compare(Model("p"), Model("p"), [found(3, "topic:/?#2")],
+                        [found(9, "topic:/?#3")])
+    assert same.findings == []
+    moved = diff.compare(Model("p"), Model("p"), [found(3, "topic:/x")],
+                         [found(3, "topic:/y"), found(3, "topic:/x", "d")])
+    assert [(f.status, f.configuration, f.finding.entities[1]) for f in moved.findings] == [
+        ("new", "c", "topic:/y"), ("gone", "c", "topic:/x"), ("new", "d", "topic:/x")]
+    assert moved.fails("new-warning") and not moved.fails("new-error")
