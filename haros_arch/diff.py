@@ -5,7 +5,10 @@ services, actions and parameters (by name) and links (by kind, node instance and
 resource name) are added, removed or changed; a change names the fields that differ
 (what an instance runs, its remaps and arguments; a resource's types; a link's type,
 QoS, queue size, latching and a read's default; a parameter's value and type).
-Findings are matched by rule, entities and configuration, never by line, so code that
+A node instance that moved to another name (same executable, same base name) is one
+instance renamed, and what lived under its old name and is the same under the new one is
+not listed again. Findings are matched by rule, entities and configuration, never by
+line, so code that
 moves does not make them appear and disappear. Every entry carries the file:line of
 the side it lives on: the new one, or the old one for what was removed.
 
@@ -39,6 +42,7 @@ from .model.model import Model
 from .model.runtime import Configuration, Link
 from .model.serialise import to_data
 
+Elements = dict[tuple[str, str], tuple[dict[str, Any], str]]
 KINDS = ("node", "topic", "service", "action", "link", "parameter")
 # "topic:/?#2": the second unresolved "/?" of a configuration; the number depends on the
 # order the graph met them in, which an unrelated change may shift
@@ -53,7 +57,7 @@ class Change:
 
     kind: str
     key: str
-    status: str  # "added", "removed", "changed"
+    status: str  # "added", "removed", "changed", "renamed" (a node instance)
     location: str = ""
     fields: dict[str, tuple[Any, Any]] = field(default_factory=dict)
 
@@ -87,7 +91,7 @@ class FindingChange:
 @dataclass
 class ConfigDiff:
     name: str
-    status: str  # "added", "removed", "changed", "same"
+    status: str  # "added", "removed", "changed", "renamed" (a node instance), "same"
     changes: list[Change] = field(default_factory=list)
     findings: list[FindingChange] = field(default_factory=list)
 
@@ -146,7 +150,7 @@ def _link_fields(link: Link) -> dict[str, Any]:
     return found
 
 
-def _elements(config: Configuration) -> dict[tuple[str, str], tuple[dict[str, Any], str]]:
+def _elements(config: Configuration) -> Elements:
     """Every comparable element: (kind, key) -> (fields, location)."""
     found: dict[tuple[str, str], tuple[dict[str, Any], str]] = {}
     for node in config.nodes:
@@ -195,8 +199,8 @@ def _order(kind_key: tuple[str, str]) -> tuple[int, str]:
 
 def compare_configuration(old: Configuration | None, new: Configuration | None
                           ) -> list[Change]:
-    before = _elements(old) if old is not None else {}
-    after = _elements(new) if new is not None else {}
+    before: Elements = _elements(old) if old is not None else {}
+    after: Elements = _elements(new) if new is not None else {}
     changes: list[Change] = []
     for kind_key in sorted(before.keys() | after.keys(), key=_order):
         kind, key = kind_key
@@ -211,7 +215,55 @@ def compare_configuration(old: Configuration | None, new: Configuration | None
                       if was.get(name) != now.get(name)}
             if differ:
                 changes.append(Change(kind, key, "changed", where, differ))
-    return changes
+    return _renamed(changes, before, after)
+
+
+def _renamed(changes: list[Change], before: Elements, after: Elements) -> list[Change]:
+    """A node instance removed and one added that runs the same executable under the same
+    base name (a new namespace or a renamed parent) is one instance renamed; what lived
+    under its old name and is the same under the new one (its private parameters,
+    topics, services, and its links to them) moved with it, and is not listed again."""
+    removed = [c.key for c in changes if c.kind == "node" and c.status == "removed"]
+    added = [c.key for c in changes if c.kind == "node" and c.status == "added"]
+    pairs: dict[str, str] = {}
+    for old in removed:
+        runs = before["node", old][0]["runs"]
+        same = [new for new in added if runs is not None and after["node", new][0]["runs"]
+                == runs and new.rsplit("/", 1)[-1] == old.rsplit("/", 1)[-1]]
+        if len(same) == 1 and sum(1 for o in removed if before["node", o][0]["runs"] == runs
+                                  and o.rsplit("/", 1)[-1] == old.rsplit("/", 1)[-1]) == 1:
+            pairs[old] = same[0]
+    if not pairs:
+        return changes
+    hidden: set[tuple[str, str]] = set()
+    for old, new in pairs.items():
+        def moved(name: str, old: str = old, new: str = new) -> str | None:
+            return new + name[len(old):] if name.startswith(old + "/") else None
+
+        for change in changes:
+            if change.status != "removed" or change.kind == "node":
+                continue
+            if change.kind == "link":
+                kind, node, name = change.key.split(" ", 2)
+                target = moved(name) if node == old else None
+                key = f"{kind} {new} {target}" if target else None
+            else:
+                key = moved(change.key)
+            if key is not None and (change.kind, key) in after \
+                    and after[change.kind, key][0] == before[change.kind, change.key][0]:
+                hidden |= {(change.kind, change.key), (change.kind, key)}
+    kept: list[Change] = []
+    for change in changes:
+        if change.kind == "node" and change.key in pairs:
+            new = pairs[change.key]
+            (was, _), (now, where) = before["node", change.key], after["node", new]
+            differ = {"name": (change.key, new), **{
+                name: (was[name], now[name]) for name in was if was[name] != now[name]}}
+            kept.append(Change("node", new, "renamed", where, differ))
+        elif not (change.kind == "node" and change.key in pairs.values()) and (
+                change.status == "changed" or (change.kind, change.key) not in hidden):
+            kept.append(change)
+    return kept
 
 
 def compare(old: Model, new: Model, old_findings: Iterable[Finding] = (),
@@ -400,7 +452,7 @@ def compare_revisions(spec: str, path: str = ".", repo: str = ".", options: Any 
 
 # ------------------------------------------------------------------ output
 
-MARK = {"added": "+", "removed": "-", "changed": "~", "new": "+", "gone": "-"}
+MARK = {"added": "+", "removed": "-", "changed": "~", "renamed": "~", "new": "+", "gone": "-"}
 
 
 def _value(value: Any) -> str:
@@ -409,7 +461,8 @@ def _value(value: Any) -> str:
 
 def summary(result: DiffResult) -> str:
     counts = result.counts()
-    parts = [f"{counts[s]} {s}" for s in ("added", "removed", "changed") if counts.get(s)]
+    parts = [f"{counts[s]} {s}" for s in ("added", "removed", "changed", "renamed")
+             if counts.get(s)]
     found = [f"{counts[k]} {k}" for k in sorted(counts, key=lambda k: (
         k.split()[0] != "new", -SEVERITY_RANK.get(k.split()[-1], 0)))
         if " " in k]

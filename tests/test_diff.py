@@ -71,6 +71,9 @@ CASES = {
                '      <param name="threshold" value="0.25" />\n    </node>\n', ""),
     "qos change": edit(FILTER, '"scan_filtered", rclcpp::SensorDataQoS()',
                        '"scan_filtered", 10'),
+    "node moved to a namespace": edit(
+        ROBOT, '<node name="battery" pkg="demo_robot"',
+        '<node name="battery" ns="power" pkg="demo_robot"'),
     "code moved": edit(SAFETY, '"""Stops', '\n\n\n"""Stops'),
 }
 PY = "demo_rover/scripts/safety_stop.py"
@@ -133,6 +136,30 @@ EXPECTED = {
         '"reliability": "best_effort"} -> {"depth": 10, "durability": "volatile", '
         '"history": "keep_last", "reliability": "reliable"}; queue_size: 5 -> 10',
         QOS_ERROR],
+    # one instance renamed: its private parameters and topics moved with it and are not
+    # listed; what it reaches outside its name (the driver's reset, the dock action) now
+    # resolves in its new namespace, where nothing serves it
+    "node moved to a namespace": [
+        "configuration robot (changed)",
+        "~ node /robot1/power/battery  (demo_robot/launch/robot.launch:10)",
+        '    name: "/robot1/battery" -> "/robot1/power/battery"',
+        *[f"+ topic /robot1/power/dock/{end}  ({BATTERY}:19:21)"
+          for end in ("cancel", "feedback", "goal", "result", "status")],
+        f"+ service /robot1/power/driver/reset  ({BATTERY}:18:22)",
+        f"+ action /robot1/power/dock  ({BATTERY}:19:21)",
+        f"- link action-client /robot1/battery /robot1/dock  ({BATTERY}:19:21)",
+        f"+ link action-client /robot1/power/battery /robot1/power/dock  ({BATTERY}:19:21)",
+        f"- link client /robot1/battery /robot1/driver/reset  ({BATTERY}:18:22)",
+        "+ link client /robot1/power/battery /robot1/power/driver/reset  "
+        f"({BATTERY}:18:22)",
+        "+ new info [publisher-without-subscriber] /robot1/power/battery publishes "
+        f"/robot1/power/battery/low but nothing subscribes to it  ({BATTERY}:16:24)",
+        "+ new warning [subscriber-without-publisher] /robot1/power/battery subscribes to "
+        f"/robot1/power/battery/level but nothing publishes it  ({BATTERY}:17:26)",
+        "- gone info [publisher-without-subscriber] /robot1/battery publishes "
+        f"/robot1/battery/low but nothing subscribes to it  ({BATTERY}:16:24)",
+        "- gone warning [subscriber-without-publisher] /robot1/battery subscribes to "
+        f"/robot1/battery/level but nothing publishes it  ({BATTERY}:17:26)"],
     # lines moved: no link, resource or finding changes (they are not keyed by line)
     "code moved": [],
 }
