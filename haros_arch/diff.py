@@ -8,9 +8,8 @@ QoS, queue size, latching and a read's default; a parameter's value and type).
 A node instance that moved to another name (same executable, same base name) is one
 instance renamed, and what lived under its old name and is the same under the new one is
 not listed again. Findings are matched by rule, entities and configuration, never by
-line, so code that
-moves does not make them appear and disappear. Every entry carries the file:line of
-the side it lives on: the new one, or the old one for what was removed.
+line, so code that moves does not make them appear and disappear. Every entry carries
+the file:line of the side it lives on: the new one, or the old one for what was removed.
 
 ``--rev BASE..HEAD`` analyses both revisions from git objects (``git archive``), each
 written in turn into the same folder, so the C++ parse cache (keyed by path and text)
@@ -32,6 +31,7 @@ import tarfile
 import tempfile
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
+from itertools import takewhile
 from typing import Any
 
 from .model.diagnostic import SEVERITY_RANK
@@ -225,14 +225,23 @@ def _renamed(changes: list[Change], before: Elements, after: Elements) -> list[C
     topics, services, and its links to them) moved with it, and is not listed again."""
     removed = [c.key for c in changes if c.kind == "node" and c.status == "removed"]
     added = [c.key for c in changes if c.kind == "node" and c.status == "added"]
+    def candidates(old: str, among: list[str], side: Elements, runs: Any) -> list[str]:
+        """Same executable and base name; of those, the ones sharing the most leading
+        namespaces with ``old`` (/a/x/n pairs with /a/y/n, not with /b/y/n)."""
+        same = [n for n in among if runs is not None and side["node", n][0]["runs"] == runs
+                and n.rsplit("/", 1)[-1] == old.rsplit("/", 1)[-1]]
+        shared = {n: sum(1 for _ in takewhile(
+            lambda pair: pair[0] == pair[1],
+            zip(n.split("/"), old.split("/"), strict=False))) for n in same}
+        return [n for n in same if shared[n] == max(shared.values())]
+
     pairs: dict[str, str] = {}
     for old in removed:
         runs = before["node", old][0]["runs"]
-        same = [new for new in added if runs is not None and after["node", new][0]["runs"]
-                == runs and new.rsplit("/", 1)[-1] == old.rsplit("/", 1)[-1]]
-        if len(same) == 1 and sum(1 for o in removed if before["node", o][0]["runs"] == runs
-                                  and o.rsplit("/", 1)[-1] == old.rsplit("/", 1)[-1]) == 1:
-            pairs[old] = same[0]
+        best = candidates(old, added, after, runs)
+        # one-to-one: the added instance's best match among the removed is this one
+        if len(best) == 1 and candidates(best[0], removed, before, runs) == [old]:
+            pairs[old] = best[0]
     if not pairs:
         return changes
     hidden: set[tuple[str, str]] = set()

@@ -303,3 +303,19 @@ def test_findings_match_by_rule_entities_and_configuration_not_line_or_repeat() 
     assert [(f.status, f.configuration, f.finding.entities[1]) for f in moved.findings] == [
         ("new", "c", "topic:/y"), ("gone", "c", "topic:/x"), ("new", "d", "topic:/x")]
     assert moved.fails("new-warning") and not moved.fails("new-error")
+
+
+def test_renames_pair_instances_by_their_nearest_namespace() -> None:
+    from haros_arch.model.runtime import Configuration, NodeInstance
+    from haros_arch.model.source import Node
+
+    def model(prefix: str) -> Model:
+        runs = Node("teleop", "kb")
+        config = Configuration("c", nodes=[NodeInstance(f"/{robot}/{prefix}/kb", runs)
+                                           for robot in ("alpha", "beta")])
+        return Model("p", configurations=[config])
+
+    result = diff.compare(model("joy"), model("keys"))
+    assert [(c.status, c.key, c.fields["name"]) for c in result.changes] == [
+        ("renamed", "/alpha/keys/kb", ("/alpha/joy/kb", "/alpha/keys/kb")),
+        ("renamed", "/beta/keys/kb", ("/beta/joy/kb", "/beta/keys/kb"))]
