@@ -3,13 +3,15 @@
 Configurations are matched by name. In each, node instances (by ROS name), topics,
 services, actions and parameters (by name) and links (by kind, node instance and
 resource name) are added, removed or changed; a change names the fields that differ
-(what an instance runs, its remaps and arguments; a resource's types; a link's type,
-QoS, queue size, latching and a read's default; a parameter's value and type).
+(what an instance runs, its remaps, arguments, conditions and completeness; a resource's
+types; a link's type, QoS, queue size, latching and a read's default; a parameter's
+value and type).
 A node instance that moved to another name (same executable, same base name) is one
 instance renamed, and what lived under its old name and is the same under the new one is
 not listed again. Findings are matched by rule, entities and configuration, never by
 line, so code that moves does not make them appear and disappear. Every entry carries
 the file:line of the side it lives on: the new one, or the old one for what was removed.
+The diagnostics ``check`` shows are compared by code, file and message.
 
 ``--rev BASE..HEAD`` analyses both revisions from git objects (``git archive``), each
 written in turn into the same folder, so the C++ parse cache (keyed by path and text)
@@ -34,7 +36,7 @@ from dataclasses import dataclass, field
 from itertools import takewhile
 from typing import Any
 
-from .model.diagnostic import SEVERITY_RANK
+from .model.diagnostic import SEVERITY_RANK, Diagnostic
 from .model.finding import Finding
 from .model.load import from_data, location
 from .model.location import NOWHERE, Location
@@ -89,6 +91,19 @@ class FindingChange:
 
 
 @dataclass
+class DiagnosticChange:
+    """A diagnostic (a problem reading the workspace) that appears or disappears."""
+
+    status: str  # "new", "gone"
+    diagnostic: Diagnostic
+
+    def to_data(self) -> dict[str, Any]:
+        return {"status": self.status, "code": self.diagnostic.code,
+                "severity": self.diagnostic.severity, "message": self.diagnostic.message,
+                "location": _where(self.diagnostic.location)}
+
+
+@dataclass
 class ConfigDiff:
     name: str
     status: str  # "added", "removed", "changed", "renamed" (a node instance), "same"
@@ -101,6 +116,7 @@ class DiffResult:
     old: str
     new: str
     configurations: list[ConfigDiff] = field(default_factory=list)
+    diagnostics: list[DiagnosticChange] = field(default_factory=list)
 
     @property
     def findings(self) -> list[FindingChange]:
@@ -117,6 +133,9 @@ class DiffResult:
         for item in self.findings:
             key = f"{item.status} {item.finding.severity}"
             found[key] = found.get(key, 0) + 1
+        for said in self.diagnostics:
+            key = f"{said.status} {said.diagnostic.severity} diagnostic"
+            found[key] = found.get(key, 0) + 1
         return found
 
     def fails(self, fail_on: str) -> bool:
@@ -132,7 +151,8 @@ class DiffResult:
                     {"name": c.name, "status": c.status,
                      "changes": [ch.to_data() for ch in c.changes],
                      "findings": [f.to_data() for f in c.findings]}
-                    for c in self.configurations]}
+                    for c in self.configurations],
+                "diagnostics": [d.to_data() for d in self.diagnostics]}
 
 
 # ------------------------------------------------------------------ comparing
@@ -157,7 +177,9 @@ def _elements(config: Configuration) -> Elements:
         found["node", node.name] = ({
             "runs": node.node.name if node.node is not None else None,
             "remaps": [list(r) for r in node.remaps], "args": node.args,
-            "conditions": to_data(node.conditions)}, _where(node.location))
+            "conditions": to_data(node.conditions),
+            # a change that makes an interface unknown matters: absences are not facts
+            "completeness": node.completeness}, _where(node.location))
     for kind, resources in (("topic", config.topics), ("service", config.services),
                             ("action", config.actions)):
         for resource in resources:  # unresolved names ("/?") may repeat: one entry
@@ -307,7 +329,21 @@ def compare(old: Model, new: Model, old_findings: Iterable[Finding] = (),
         if diff.findings and diff.status == "same":
             diff.status = "changed"
         result.configurations.append(diff)
+    was, now = _diagnostic_keys(old), _diagnostic_keys(new)
+    result.diagnostics = [
+        *(DiagnosticChange("new", now[k]) for k in sorted(now.keys() - was.keys())),
+        *(DiagnosticChange("gone", was[k]) for k in sorted(was.keys() - now.keys()))]
     return result
+
+
+def _diagnostic_keys(model: Model) -> dict[tuple[str, str, str], Diagnostic]:
+    """The diagnostics ``check`` shows (not those a finding says better), by code, file
+    and message: not by line, so moved code does not churn."""
+    from .query.catalogue import absorbed
+
+    said = absorbed(model)
+    return {(d.code, d.location.file or "", d.message): d
+            for d in model.all_diagnostics if d not in said}
 
 
 # ------------------------------------------------------------------ inputs
@@ -472,14 +508,19 @@ def summary(result: DiffResult) -> str:
     counts = result.counts()
     parts = [f"{counts[s]} {s}" for s in ("added", "removed", "changed", "renamed")
              if counts.get(s)]
-    found = [f"{counts[k]} {k}" for k in sorted(counts, key=lambda k: (
-        k.split()[0] != "new", -SEVERITY_RANK.get(k.split()[-1], 0)))
-        if " " in k]
+    def ranked(keys: Iterable[str]) -> list[str]:  # new before gone, errors first
+        return sorted(keys, key=lambda k: (k.split()[0] != "new",
+                                           -SEVERITY_RANK.get(k.split()[1], 0)))
+
+    found = [f"{counts[k]} {k}" for k in ranked(
+        k for k in counts if " " in k and not k.endswith(" diagnostic"))]
+    said = [f"{counts[k]} {k}(s)" for k in ranked(k for k in counts
+                                                  if k.endswith(" diagnostic"))]
     configs = [f"configuration {c.name} {c.status}" for c in result.configurations
                if c.status in ("added", "removed")]
     text = ", ".join([*configs, *parts]) or "no change to the graph"
     findings = ", ".join(f"{f} finding(s)" for f in found) or "no finding appears or disappears"
-    return f"{result.old}..{result.new}: {text}; {findings}"
+    return f"{result.old}..{result.new}: {text}; {', '.join([findings, *said])}"
 
 
 def _change_line(change: Change) -> str:
@@ -505,7 +546,17 @@ def to_text(result: DiffResult) -> str:
         lines.append(f"\n{title} ({config.status})")
         lines.extend("  " + _change_line(c).replace("\n", "\n  ") for c in config.changes)
         lines.extend("  " + _finding_line(f) for f in config.findings)
+    if result.diagnostics:
+        lines.append("\ndiagnostics")
+        lines.extend("  " + _diagnostic_line(d) for d in result.diagnostics)
     return "\n".join(lines) + "\n"
+
+
+def _diagnostic_line(item: DiagnosticChange) -> str:
+    said = item.diagnostic
+    where = f"  ({said.location})" if said.location != NOWHERE else ""
+    return f"{MARK[item.status]} {item.status} {said.severity} [{said.code}] " \
+           f"{said.message}{where}"
 
 
 STYLE = {"+": "green", "-": "red", "~": "yellow"}
@@ -517,7 +568,8 @@ def print_text(result: DiffResult, console: Any) -> None:
     from rich.markup import escape
 
     for number, line in enumerate(to_text(result).splitlines()):
-        style = "bold" if number == 0 or line.startswith("configuration") else \
+        style = "bold" if number == 0 or line.startswith(("configuration", "diagnostics",
+                                                          "the whole model")) else \
             STYLE.get(line.strip()[:1], "")
         text = escape(line)
         console.print(f"[{style}]{text}[/{style}]" if style else text, highlight=False)
@@ -558,6 +610,11 @@ def to_markdown(result: DiffResult) -> str:
                              f"{_md(change.location)} | {_md(what)} |")
             lines.append("")
         lines.extend(f"- {_md(_finding_line(f))}" for f in config.findings)
+        lines.extend(["", "</details>", ""])
+    if result.diagnostics:
+        lines.extend([f"<details><summary>diagnostics: {len(result.diagnostics)} "
+                      "change(s)</summary>", ""])
+        lines.extend(f"- {_md(_diagnostic_line(d))}" for d in result.diagnostics)
         lines.extend(["", "</details>", ""])
     return "\n".join(lines).rstrip("\n") + "\n"
 
