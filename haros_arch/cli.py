@@ -223,9 +223,22 @@ def cmd_query(args: argparse.Namespace, out: Console, err: Console) -> int:
 
 
 def cmd_explain(args: argparse.Namespace, out: Console, err: Console) -> int:
-    from .query.catalogue import load_catalogue
+    from .query.catalogue import QUERY_LIMIT, UNDECIDED, load_catalogue
 
     rules = {rule.id: rule for rule in load_catalogue()}
+    if args.code == QUERY_LIMIT:
+        out.print(f"[bold]{QUERY_LIMIT}[/bold] (warning)\n  A rule used more than its step "
+                  "budget in a configuration and was stopped; its findings there are not "
+                  "known. It never fails --fail-on error by itself.", highlight=False)
+        return EXIT_OK
+    if args.code and args.code.endswith(UNDECIDED) and args.code[:-len(UNDECIDED)] in rules:
+        base = args.code[:-len(UNDECIDED)]
+        out.print(f"[bold]{escape(args.code)}[/bold] (info): the matches of {escape(base)} "
+                  "that a node of partial or unknown interface (or one using a name not "
+                  "known statically, or serving dynamic_reconfigure) could contradict, "
+                  "counted in one finding per configuration with the nodes in the way; "
+                  "they are not reported as findings.", highlight=False)
+        args.code = base
     if args.code and args.code not in CATALOGUE and args.code not in rules:
         err.print(f"haros-arch: {escape(args.code)} is neither a diagnostic code nor a "
                   "rule id ('haros-arch explain' lists them)", highlight=False)

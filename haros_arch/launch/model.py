@@ -40,6 +40,9 @@ class NodeDecl:
     is_test: bool = False
     ros_version: int = 1  # 2: ROS 2 naming rules apply (launch.ros2)
     composable: bool = False  # ROS 2: a component loaded into a container
+    # launched without a name and named by the graph after its executable (no code, no
+    # model): the real name is the one its code gives, which may differ
+    name_guessed: bool = False
     container: str | None = None  # ROS 2: full name of the container it is loaded into
 
 

@@ -87,7 +87,9 @@ def node_from_data(data: dict[str, Any], package: str) -> Node:
                 [str(n) for n in data.get("rosnames", ()) if isinstance(n, str)],
                 _completeness(data.get("completeness")),
                 [str(r) for r in data.get("completeness_reasons", ()) if isinstance(r, str)],
-                data.get("model") if isinstance(data.get("model"), str) else None)
+                data.get("model") if isinstance(data.get("model"), str) else None,
+                plugin_class=data.get("plugin_class") if isinstance(
+                    data.get("plugin_class"), str) else None)
 
 
 def _completeness(value: Any) -> Completeness:

@@ -10,8 +10,9 @@ a template (``T<``), a value. ``Names.header()`` renders them over one class,
 ``haros_any``, that can be built from anything, converts to anything, and has every
 member it was asked for (static members of its own type, so ``obj.m(args)``,
 ``ptr->m`` and ``m`` as a value all parse); scopes become namespaces, or nested classes
-when the name is also a type. The header is prepended to the unit (``-include``) and the
-unit parsed again, for at most ``MAX_ROUNDS`` rounds, while the errors go down.
+when the name is also a type. The header is prepended to the unit (``-include``); the
+unit is parsed again without function bodies for the next wave of names (up to
+``MAX_ROUNDS - 1`` times), then in full, and that parse is kept when it has fewer errors.
 """
 
 from __future__ import annotations
@@ -20,7 +21,7 @@ import re
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 
-MAX_ROUNDS = 3  # extra parses of a unit with unknown names (0: no synthesis)
+MAX_ROUNDS = 2  # parses of a unit with the unknown names declared (0: no synthesis)
 MAX_NAMES = 400  # names declared for one unit
 HEADER_NAME = "haros_synthesised_names.h"
 
@@ -135,6 +136,11 @@ class Names:
             return
         rest = text[found.end():found.end() + 2]
         last = self._last_use(use, rest)
+        if use == "any" and not scope and len(written) == 1 and (
+            last == "value" or rest.lstrip()[:1] == b"("
+        ):
+            return  # an unqualified function or variable: in a class, often a member
+            # clang could not find (an invalid base); declaring it would shadow it
         node = self.root
         for part in scope:
             node = node.children.setdefault(part, _Name(known=True))
