@@ -487,10 +487,13 @@ def compare_revisions(spec: str, path: str = ".", repo: str = ".", options: Any 
     sides = []
     notes: list[str] = []
     with _tree_folder(root) as folder:
-        for rev in (base, head):
-            model, findings, said = analyse_revision(root, rev, path, folder, options)
-            sides.append((model, findings))
-            notes.extend(said)
+        try:
+            for rev in (base, head):
+                model, findings, said = analyse_revision(root, rev, path, folder, options)
+                sides.append((model, findings))
+                notes.extend(said)
+        finally:  # the cache keeps what the next run needs: the files are not
+            shutil.rmtree(folder, ignore_errors=True)
     (old, old_found), (new, new_found) = sides
     return compare(old, new, old_found, new_found, base, head), notes
 

@@ -248,6 +248,12 @@ def test_rev_analyses_git_objects_and_reuses_the_parse_cache(
         repo: Path, tmp_path: Path, capsys: pytest.CaptureFixture[str],
         monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "cache"))
+    from haros_arch.extract.cpp import cache
+
+    stored: list[str] = []  # a unit is stored when it missed the cache and was parsed
+    store = cache.Cache.store
+    monkeypatch.setattr(cache.Cache, "store", lambda self, entry, headers, result: (
+        stored.append(entry), store(self, entry, headers, result))[1])
     (repo / ROBOT).write_text("not committed")  # the working tree is not read or touched
     code, out, _ = run(["diff", "--rev", "HEAD~1..HEAD", "project.yaml", "--jobs", "1",
                         "--format", "json"], repo, capsys)
@@ -266,9 +272,10 @@ def test_rev_analyses_git_objects_and_reuses_the_parse_cache(
                                "new warning": 2, "gone warning": 2}
     assert (repo / ROBOT).read_text() == "not committed"
     assert git(repo, "status", "--porcelain").split() == ["M", ROBOT]
-    # both revisions were parsed at one path: the four unchanged C++ sources once each
+    # both revisions were written at one path: the head's four unchanged C++ sources hit
+    # the entries the base's parse stored
     cached = list((tmp_path / "cache" / "haros-arch" / "cpp").glob("*.json"))
-    assert len(cached) == len(list((repo / "src").rglob("*.cpp"))) == 4
+    assert len(stored) == len(cached) == len(list((repo / "src").rglob("*.cpp"))) == 4
 
 
 def test_saved_models_markdown_and_fail_on(repo: Path, tmp_path: Path,
