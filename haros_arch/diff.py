@@ -14,8 +14,9 @@ the file:line of the side it lives on: the new one, or the old one for what was 
 The diagnostics ``check`` shows are compared by code, file and message.
 
 ``--rev BASE..HEAD`` analyses both revisions from git objects (``git archive``), each
-written in turn into the same folder, so the C++ parse cache (keyed by path and text)
-serves every file the change did not touch.
+written in turn into the same folder on every run: a C++ parse cache entry holds the
+workspace headers it read by path, so the head and later runs (the next pull request)
+reuse the entries of every file the change did not touch.
 """
 
 from __future__ import annotations
@@ -409,8 +410,8 @@ def split_range(text: str) -> tuple[str, str]:
 
 @contextlib.contextmanager
 def _tree_folder(root: str) -> Iterator[str]:
-    """One folder per repository, the same on every run (the parse cache is keyed by
-    file path), held under a lock while a revision is analysed in it."""
+    """One folder per repository, the same on every run (a parse cache entry names the
+    workspace headers it read by path), held under a lock while in use."""
     digest = hashlib.sha256(os.path.realpath(root).encode()).hexdigest()[:12]
     base = os.path.join(tempfile.gettempdir(), f"haros-arch-diff-{os.getuid()}-{digest}")
     os.makedirs(base, mode=0o700, exist_ok=True)

@@ -223,6 +223,10 @@ def repo(tmp_path: Path) -> Path:
     remap (a new warning) and raises the controller's max_speed."""
     root = tmp_path / "repo"
     shutil.copytree(ROOT / "examples", root)
+    # a header of the workspace: cache entries name it by path, and check it is unchanged
+    (root / "src/demo_robot/src/limits.h").write_text("#define MAX_SPEED 1.0\n")
+    edit("src/demo_robot/src/driver.cpp", "#include <string>\n",
+         '#include <string>\n#include "limits.h"\n')(root)
     git(root, "init", "-q")
     git(root, "add", "-A")
     git(root, "commit", "-qm", "base")
@@ -276,6 +280,10 @@ def test_rev_analyses_git_objects_and_reuses_the_parse_cache(
     # the entries the base's parse stored
     cached = list((tmp_path / "cache" / "haros-arch" / "cpp").glob("*.json"))
     assert len(stored) == len(cached) == len(list((repo / "src").rglob("*.cpp"))) == 4
+    # and a later run (the next pull request) at the same path parses nothing again
+    assert run(["diff", "--rev", "HEAD~1..HEAD", "project.yaml", "--jobs", "1"], repo,
+               capsys)[0] == 0
+    assert len(stored) == 4
 
 
 def test_saved_models_markdown_and_fail_on(repo: Path, tmp_path: Path,
