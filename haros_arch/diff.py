@@ -587,40 +587,65 @@ def _md(text: str) -> str:
     return escaped.replace("\n", " ")
 
 
-def to_markdown(result: DiffResult) -> str:
-    """A pull-request comment: the summary and the new findings first, the rest folded."""
+# GitHub refuses comments over 65,536 characters: the details stop before that
+MARKDOWN_LIMIT = 60_000
+
+
+def to_markdown(result: DiffResult, limit: int = MARKDOWN_LIMIT) -> str:
+    """A pull-request comment: the summary and the new findings first, the rest folded;
+    configurations whose entries read the same are one block; past ``limit`` characters
+    the rest is counted, not shown."""
     new = [f for f in result.findings if f.status == "new"]
-    lines = ["### haros-arch: architecture diff", "", _md(summary(result)), ""]
+    head = ["### haros-arch: architecture diff", "", _md(summary(result)), ""]
     if new:
-        lines.append("**New findings**")
-        lines.append("")
-        lines.extend(f"- {_md(_finding_line(f))}" for f in new)
-        lines.append("")
+        head.extend(["**New findings**", "", *(f"- {_md(_finding_line(f))}" for f in new),
+                     ""])
+    blocks: dict[tuple[str, ...], list[ConfigDiff]] = {}
     for config in result.configurations:
-        if config.status == "same":
-            continue
-        title = f"configuration {config.name}" if config.name else "the whole model"
-        lines.append(f"<details><summary>{_md(title)}: {config.status}, "
-                     f"{len(config.changes)} change(s), {len(config.findings)} "
-                     "finding change(s)</summary>")
-        lines.append("")
-        if config.changes:
-            lines.append("| | kind | name | where | what changed |")
-            lines.append("|---|---|---|---|---|")
-            for change in config.changes:
-                what = "; ".join(f"{name}: {_value(old)} → {_value(new)}"
-                                 for name, (old, new) in change.fields.items())
-                lines.append(f"| {change.status} | {change.kind} | {_md(change.key)} | "
-                             f"{_md(change.location)} | {_md(what)} |")
-            lines.append("")
-        lines.extend(f"- {_md(_finding_line(f))}" for f in config.findings)
-        lines.extend(["", "</details>", ""])
+        if config.status != "same":
+            blocks.setdefault(_block_rows(config), []).append(config)
+    body: list[str] = []
+    for rows, configs in blocks.items():
+        names = ", ".join(c.name or "the whole model" for c in configs)
+        first = configs[0]
+        title = (f"{'configurations' if len(configs) > 1 else 'configuration'} {names}: "
+                 f"{first.status}, {len(first.changes)} change(s), {len(first.findings)} "
+                 "finding change(s)")
+        body.extend([f"<details><summary>{_md(title)}</summary>", ""])
+        body.extend(rows)
+        body.extend(["", "</details>", ""])
     if result.diagnostics:
-        lines.extend([f"<details><summary>diagnostics: {len(result.diagnostics)} "
-                      "change(s)</summary>", ""])
-        lines.extend(f"- {_md(_diagnostic_line(d))}" for d in result.diagnostics)
-        lines.extend(["", "</details>", ""])
+        body.extend([f"<details><summary>diagnostics: {len(result.diagnostics)} "
+                     "change(s)</summary>", ""])
+        body.extend(f"- {_md(_diagnostic_line(d))}" for d in result.diagnostics)
+        body.extend(["", "</details>", ""])
+    lines, size = list(head), sum(len(line) + 1 for line in head)
+    for number, line in enumerate(body):
+        if size + len(line) > limit:
+            rest = sum(1 for b in body[number:] if b.startswith(("| ", "- ")))
+            inside = sum(1 for b in lines if b.startswith("<details>")) > sum(
+                1 for b in lines if b == "</details>")
+            lines.extend(["", *(["</details>", ""] if inside else []),
+                          f"*{rest} more entries left out (the comment's size limit): "
+                          "run haros-arch diff for all of them*"])
+            break
+        lines.append(line)
+        size += len(line) + 1
     return "\n".join(lines).rstrip("\n") + "\n"
+
+
+def _block_rows(config: ConfigDiff) -> tuple[str, ...]:
+    rows: list[str] = []
+    if config.changes:
+        rows.extend(["| | kind | name | where | what changed |", "|---|---|---|---|---|"])
+        for change in config.changes:
+            what = "; ".join(f"{name}: {_value(old)} → {_value(new)}"
+                             for name, (old, new) in change.fields.items())
+            rows.append(f"| {change.status} | {change.kind} | {_md(change.key)} | "
+                        f"{_md(change.location)} | {_md(what)} |")
+        rows.append("")
+    rows.extend(f"- {_md(_finding_line(f))}" for f in config.findings)
+    return tuple(rows)
 
 
 def to_json(result: DiffResult) -> str:

@@ -361,3 +361,21 @@ def test_renames_pair_instances_by_their_nearest_namespace() -> None:
     assert [(c.status, c.key, c.fields["name"]) for c in result.changes] == [
         ("renamed", "/alpha/keys/kb", ("/alpha/joy/kb", "/alpha/keys/kb")),
         ("renamed", "/beta/keys/kb", ("/beta/joy/kb", "/beta/keys/kb"))]
+
+
+def test_markdown_groups_alike_configurations_and_stays_under_its_limit() -> None:
+    from haros_arch.model.runtime import Configuration, NodeInstance
+
+    def model(names: list[str]) -> Model:
+        return Model("p", configurations=[
+            Configuration(c, nodes=[NodeInstance(n) for n in names]) for c in ("a", "b")])
+
+    result = diff.compare(model([f"/n{i}" for i in range(40)]), model([]))
+    text = diff.to_markdown(result)
+    assert text.count("<details>") == 1 and "configurations a, b: changed, 40 change(s)" in text
+    short = diff.to_markdown(result, limit=600)
+    assert len(short) < 800 and short.count("<details>") == short.count("</details>") == 1
+    shown = short.count("| removed | node |")
+    assert shown and short.rstrip().endswith(
+        f"*{40 - shown} more entries left out (the comment's size limit): run haros-arch "
+        "diff for all of them*")
