@@ -535,9 +535,12 @@ def _change_line(change: Change) -> str:
     return f"{line}\n    {details}" if details else line
 
 
-def _finding_line(item: FindingChange) -> str:
+def _finding_line(item: FindingChange, mark: bool = True) -> str:
+    """The finding as a line; ``mark``: led by + or - (not in a Markdown list, where
+    "- -" would open a nested one)."""
     where = f"  ({item.location})" if item.location else ""
-    return (f"{MARK[item.status]} {item.status} {item.finding.severity} "
+    lead = f"{MARK[item.status]} " if mark else ""
+    return (f"{lead}{item.status} {item.finding.severity} "
             f"[{item.finding.rule}] {item.finding.message}{where}")
 
 
@@ -556,11 +559,11 @@ def to_text(result: DiffResult) -> str:
     return "\n".join(lines) + "\n"
 
 
-def _diagnostic_line(item: DiagnosticChange) -> str:
+def _diagnostic_line(item: DiagnosticChange, mark: bool = True) -> str:
     said = item.diagnostic
     where = f"  ({said.location})" if said.location != NOWHERE else ""
-    return f"{MARK[item.status]} {item.status} {said.severity} [{said.code}] " \
-           f"{said.message}{where}"
+    lead = f"{MARK[item.status]} " if mark else ""
+    return f"{lead}{item.status} {said.severity} [{said.code}] {said.message}{where}"
 
 
 STYLE = {"+": "green", "-": "red", "~": "yellow"}
@@ -598,8 +601,8 @@ def to_markdown(result: DiffResult, limit: int = MARKDOWN_LIMIT) -> str:
     new = [f for f in result.findings if f.status == "new"]
     head = ["### haros-arch: architecture diff", "", _md(summary(result)), ""]
     if new:
-        head.extend(["**New findings**", "", *(f"- {_md(_finding_line(f))}" for f in new),
-                     ""])
+        head.extend(["**New findings**", "",
+                     *(f"- {_md(_finding_line(f, mark=False))}" for f in new), ""])
     blocks: dict[tuple[str, ...], list[ConfigDiff]] = {}
     for config in result.configurations:
         if config.status != "same":
@@ -617,7 +620,7 @@ def to_markdown(result: DiffResult, limit: int = MARKDOWN_LIMIT) -> str:
     if result.diagnostics:
         body.extend([f"<details><summary>diagnostics: {len(result.diagnostics)} "
                      "change(s)</summary>", ""])
-        body.extend(f"- {_md(_diagnostic_line(d))}" for d in result.diagnostics)
+        body.extend(f"- {_md(_diagnostic_line(d, mark=False))}" for d in result.diagnostics)
         body.extend(["", "</details>", ""])
     lines, size = list(head), sum(len(line) + 1 for line in head)
     for number, line in enumerate(body):
@@ -644,7 +647,7 @@ def _block_rows(config: ConfigDiff) -> tuple[str, ...]:
             rows.append(f"| {change.status} | {change.kind} | {_md(change.key)} | "
                         f"{_md(change.location)} | {_md(what)} |")
         rows.append("")
-    rows.extend(f"- {_md(_finding_line(f))}" for f in config.findings)
+    rows.extend(f"- {_md(_finding_line(f, mark=False))}" for f in config.findings)
     return tuple(rows)
 
 

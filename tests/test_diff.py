@@ -300,6 +300,8 @@ def test_saved_models_markdown_and_fail_on(repo: Path, tmp_path: Path,
         "new.json: 4 added, 4 removed, 4 changed; 2 new warning finding(s), "
         "2 gone warning finding(s)")
     assert "**New findings**" in out
+    assert "\n- - " not in out  # a nested list, not what we mean
+    assert "\n- new warning \\[subscriber-without-publisher\\] /robot1/controller" in out
     assert out.count("<details>") == out.count("</details>") == 2
     assert "| changed | parameter | /robot1/controller/max\\_speed |" in out
     code, out, _ = run(["diff", str(old), str(new), "--fail-on", "new-error"], repo, capsys)
