@@ -29,6 +29,7 @@ import json
 import os
 import re
 import shutil
+import stat
 import subprocess
 import tarfile
 import tempfile
@@ -403,9 +404,11 @@ def _git(repo: str, *args: str) -> bytes:
 
 def split_range(text: str) -> tuple[str, str]:
     base, dots, head = text.partition("..")
-    if not base or head.startswith("."):
+    head = head if dots and head else "HEAD"
+    # a revision is never an option of git ("--output=..." would write a file)
+    if not base or head.startswith(".") or base.startswith("-") or head.startswith("-"):
         raise DiffError(f"--rev takes BASE..HEAD (two revisions), not {text!r}")
-    return base, (head if dots and head else "HEAD")
+    return base, head
 
 
 @contextlib.contextmanager
@@ -415,6 +418,10 @@ def _tree_folder(root: str) -> Iterator[str]:
     digest = hashlib.sha256(os.path.realpath(root).encode()).hexdigest()[:12]
     base = os.path.join(tempfile.gettempdir(), f"haros-arch-diff-{os.getuid()}-{digest}")
     os.makedirs(base, mode=0o700, exist_ok=True)
+    state = os.lstat(base)  # made by us, for us alone (not another user's or a link)
+    if not stat.S_ISDIR(state.st_mode) or state.st_uid != os.getuid() \
+            or state.st_mode & 0o077:
+        raise DiffError(f"{base} is not a private folder of this user")
     with open(os.path.join(base, "lock"), "w") as lock:
         fcntl.flock(lock, fcntl.LOCK_EX)
         try:

@@ -325,6 +325,8 @@ def test_bad_inputs_say_so(repo: Path, tmp_path: Path,
     code, _, err = run(["diff", "--rev", "HEAD~1..HEAD", "missing.yaml"], repo, capsys)
     assert code == 2 and "missing.yaml does not exist at HEAD~1" in err
     assert main(["diff", str(broken)]) == 2
+    code, _, err = run(["diff", "--rev=--output=x..HEAD"], repo, capsys)
+    assert code == 2 and "--rev takes BASE..HEAD" in err and not (repo / "x").exists()
 
 
 def test_rev_notes_name_the_repository_not_the_temporary_tree(
