@@ -1,4 +1,5 @@
-"""The ROS 1 launch tree: includes with their arguments, groups, remaps, conditions."""
+"""The launch tree (ROS 1 and ROS 2): includes with their arguments, groups, remaps,
+conditions and the nodes with their final names."""
 
 from __future__ import annotations
 
@@ -6,7 +7,8 @@ from pathlib import Path
 from typing import Any
 
 from haros_arch.launch import load
-from haros_arch.model.launch_tree import LaunchItem, item_from_data
+from haros_arch.model.launch_tree import LaunchArg, LaunchItem, item_from_data
+from haros_arch.model.location import Location
 from haros_arch.model.serialise import to_data
 from haros_arch.workspace import scan
 
@@ -55,6 +57,7 @@ def shape(item: LaunchItem) -> Any:
 
 
 def tree(tmp_path: Path, args: dict[str, str]) -> LaunchItem:
+    """The ROS 1 fixture's tree."""
     (tmp_path / "pkg" / "launch").mkdir(parents=True)
     (tmp_path / "pkg" / "package.xml").write_text(PACKAGE)
     (tmp_path / "pkg" / "launch" / "main.launch").write_text(MAIN)
@@ -114,3 +117,101 @@ def test_tree_round_trips_through_json(tmp_path: Path) -> None:
     root = tree(tmp_path, {"mode": "true"})
     again = item_from_data(to_data(root))
     assert again is not None and shape(again) == shape(root)
+
+
+PACKAGE2 = """<package format="3"><name>pkg2</name><version>0.0.0</version>
+<description>x</description><maintainer email="a@b.c">a</maintainer><license>MIT</license>
+<buildtool_depend>ament_cmake</buildtool_depend>
+<export><build_type>ament_cmake</build_type></export></package>"""
+
+BRINGUP = """import os
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, GroupAction, IncludeLaunchDescription
+from launch.conditions import IfCondition
+from launch.launch_description_sources import PythonLaunchDescriptionSource
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node, PushRosNamespace, SetRemap
+
+
+def generate_launch_description():
+    here = os.path.dirname(__file__)
+    use_sim = LaunchConfiguration('use_sim')
+    return LaunchDescription([
+        DeclareLaunchArgument('use_sim', default_value='false'),
+        DeclareLaunchArgument('robot', default_value='r1'),
+        GroupAction([
+            PushRosNamespace(LaunchConfiguration('robot')),
+            SetRemap(src='scan', dst='base_scan'),
+            Node(package='pkg2', executable='drv', name='driver'),
+            IncludeLaunchDescription(
+                PythonLaunchDescriptionSource(os.path.join(here, 'sim.launch.py')),
+                launch_arguments={'world': 'empty'}.items(),
+                condition=IfCondition(use_sim)),
+        ]),
+        Node(package='pkg2', executable='viz', name='viz', condition=IfCondition(use_sim)),
+        IncludeLaunchDescription(
+            PythonLaunchDescriptionSource(os.path.join(here, 'sim.launch.py')),
+            launch_arguments={'world': 'house'}.items()),
+    ])
+"""
+
+SIM = """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('world', default_value='default'),
+        DeclareLaunchArgument('gui', default_value='true'),
+        Node(package='pkg2', executable='sim', name='sim',
+             parameters=[{'world': LaunchConfiguration('world')}]),
+    ])
+"""
+
+
+def tree2(tmp_path: Path, args: dict[str, str]) -> LaunchItem:
+    """The ROS 2 fixture's tree."""
+    folder = tmp_path / "pkg2" / "launch"
+    folder.mkdir(parents=True, exist_ok=True)
+    (tmp_path / "pkg2" / "package.xml").write_text(PACKAGE2)
+    (folder / "bringup.launch.py").write_text(BRINGUP)
+    (folder / "sim.launch.py").write_text(SIM)
+    workspace = scan([str(tmp_path)], {})
+    model = load(str(folder / "bringup.launch.py"), workspace, args, {})
+    assert len(model.tree) == 1
+    return model.tree[0]
+
+
+def test_ros2_tree_with_sim_on(tmp_path: Path) -> None:
+    remap = [("scan", "base_scan")]
+    sim = ("file", "pkg2/launch/sim.launch.py")
+    assert shape(tree2(tmp_path, {"use_sim": "true"})) == (
+        "file", "pkg2/launch/bringup.launch.py", 0, "/", "", None, False,
+        [("use_sim", "true", "command line", 14), ("robot", "r1", "default", 15)], [], [], [
+            ("group", "", 16, "/r1", "", None, False, [], remap, [], [
+                ("node", "/r1/driver", 19, "/r1/", "pkg2/drv", None, False, [], remap, [],
+                 []),
+                (*sim, 20, "/r1", "", ("if", "use_sim", {"use_sim": "true"}, True), False,
+                 [("world", "empty", "include", 20), ("gui", "true", "default", 10)], [], [],
+                 [("node", "/r1/sim", 11, "/r1/", "pkg2/sim", None, False, [], remap,
+                   ["/r1/sim/world"], [])])]),
+            ("node", "/viz", 25, "/", "pkg2/viz", ("if", "use_sim", {"use_sim": "true"}, True),
+             False, [], [], [], []),
+            (*sim, 26, "/", "", None, False,
+             [("world", "house", "include", 26), ("gui", "true", "default", 10)], [], [], [
+                 ("node", "/sim", 11, "/", "pkg2/sim", None, False, [], [], ["/sim/world"],
+                  [])])])
+
+
+def test_ros2_tree_names_what_a_false_condition_leaves_out(tmp_path: Path) -> None:
+    root = tree2(tmp_path, {})
+    group, viz = root.children[0], root.children[1]
+    assert group.pushed == ["r1"] and group.namespace == "/r1"
+    off = ("if", "use_sim", {"use_sim": "false"}, False)
+    assert shape(group.children[1]) == (
+        "include", "pkg2/launch/sim.launch.py", 20, "", "", off, True, [], [], [], [])
+    assert shape(viz) == ("node", "viz", 25, "", "pkg2/viz", off, True, [], [], [], [])
+    assert root.arg("use_sim") == LaunchArg("use_sim", "false", "default", Location(
+        "pkg2", "pkg2/launch/bringup.launch.py", 14, 9))
