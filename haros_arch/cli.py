@@ -89,6 +89,9 @@ def _parser() -> argparse.ArgumentParser:
     launch.add_argument("--arg", action="append", default=[], metavar="NAME:=VALUE")
     launch.add_argument("--workspace", default=".", help="workspace folder (default: .)")
     launch.add_argument("--format", choices=("text", "json"), default="text")
+    launch.add_argument("--tree", action="store_true",
+                        help="show how the files make the nodes: includes with their "
+                             "arguments, groups, remaps, conditions")
 
     models = sub.add_parser("models", help="interface models of packages without source")
     models_sub = models.add_subparsers(dest="models_command", required=True)
@@ -355,6 +358,11 @@ def cmd_launch(args: argparse.Namespace, out: Console, err: Console) -> int:
     model = load_launch(path, workspace, given, dict(os.environ))
     if args.format == "json":
         out.print(json.dumps(as_data(model), indent=2), highlight=False, markup=False)
+    elif args.tree:
+        from .launch.tree_view import as_rich
+
+        out.print(as_rich(model.tree), highlight=False, crop=False)
+        print_diagnostics(model.diagnostics, err)
     else:
         out.print(as_text(model), highlight=False, markup=False)
         print_diagnostics(model.diagnostics, err)

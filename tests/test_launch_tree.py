@@ -3,9 +3,11 @@ conditions and the nodes with their final names."""
 
 from __future__ import annotations
 
+import json
 from pathlib import Path
 from typing import Any
 
+from haros_arch.cli import main
 from haros_arch.launch import load
 from haros_arch.model.launch_tree import LaunchArg, LaunchItem, item_from_data
 from haros_arch.model.location import Location
@@ -215,3 +217,21 @@ def test_ros2_tree_names_what_a_false_condition_leaves_out(tmp_path: Path) -> No
     assert shape(viz) == ("node", "viz", 25, "", "pkg2/viz", off, True, [], [], [], [])
     assert root.arg("use_sim") == LaunchArg("use_sim", "false", "default", Location(
         "pkg2", "pkg2/launch/bringup.launch.py", 14, 9))
+
+
+def test_cli_prints_the_tree_and_json_includes_it(tmp_path: Path, capsys: Any) -> None:
+    tree(tmp_path, {})
+    main_file = str(tmp_path / "pkg/launch/main.launch")
+    code = main(["launch", main_file, "--workspace", str(tmp_path), "--tree",
+                 "--arg", "mode:=false"])
+    assert code == 0
+    lines = [line.rstrip() for line in capsys.readouterr().out.splitlines()]
+    assert "│   ├── arg use_cam = true  (include pkg/launch/main.launch:8)" in lines
+    assert "├── group  pkg/launch/main.launch:17  (left out)" in lines
+    assert "│   ├── if $(arg mode) with mode=false: false" in lines
+    assert "│   └── node /r1/driver  pkg/drv  pkg/launch/sub.launch:4" in lines
+    code = main(["launch", main_file, "--workspace", str(tmp_path), "--format", "json"])
+    assert code == 0
+    data = json.loads(capsys.readouterr().out)
+    assert [c["name"] for c in data["tree"][0]["children"]] == [
+        "pkg/launch/sub.launch", "/sensors/", "", "/talker"]

@@ -39,7 +39,7 @@ def as_data(model: LaunchModel) -> dict[str, Any]:
     return {"nodes": nodes, "parameters": leaf_parameters(model),
             "includes": model.files[1:], "cleared": model.clear_params,
             "deleted": model.deleted_params,
-            "diagnostics": to_data(model.diagnostics)}
+            "diagnostics": to_data(model.diagnostics), "tree": to_data(model.tree)}
 
 
 def as_text(model: LaunchModel) -> str:
