@@ -361,6 +361,8 @@ def cmd_launch(args: argparse.Namespace, out: Console, err: Console) -> int:
     elif args.tree:
         from .launch.tree_view import as_rich
 
+        if not out.is_terminal:  # a file or a pipe: whole lines, not cut at 80 columns
+            out.width = 1_000
         out.print(as_rich(model.tree), highlight=False, crop=False)
         print_diagnostics(model.diagnostics, err)
     else:

@@ -8,6 +8,7 @@ from rich.tree import Tree
 from ..model.launch_tree import LaunchCondition, LaunchItem
 
 MAX_SHOWN = 20_000  # items drawn at most; the rest is counted
+MAX_PARAMS = 8  # a scope's parameters listed one by one up to this many
 
 
 def as_rich(items: list[LaunchItem]) -> Tree:
@@ -65,6 +66,9 @@ def _add(parent: Tree, item: LaunchItem, budget: list[int]) -> None:
                        f"[dim]({arg.origin}{where})[/]")
         for source, target in current.remaps:
             branch.add(f"remap {escape(source)} -> {escape(target)}")
-        for name in current.params:
+        shown = current.params if len(current.params) <= MAX_PARAMS else current.params[:3]
+        for name in shown:
             branch.add(f"param {escape(name)}")
+        if len(shown) < len(current.params):
+            branch.add(f"[dim]... {len(current.params) - len(shown)} more parameters[/]")
         stack.extend((branch, child) for child in reversed(current.children))

@@ -307,9 +307,10 @@ class Runner:
     def do_NodeAction(self, action: e.NodeAction, scope: Scope) -> None:
         from .nodes import perform_node
 
+        guard = self.take_guard()
         nodes_before, params_before = len(self.model.nodes), len(self.model.params)
         perform_node(self, action, scope)
-        for item in node_items(self.model, nodes_before, params_before, self.take_guard()):
+        for item in node_items(self.model, nodes_before, params_before, guard):
             scope.item.add(item)
 
     def do_LoadComposable(self, action: e.LoadComposable, scope: Scope) -> None:
@@ -317,10 +318,11 @@ class Runner:
 
         target = self.value(action.target, scope, action.location) or Value.unknown()
         container = target.text if target.text.startswith("/") else "/" + target.text
+        guard = self.take_guard()
         nodes_before, params_before = len(self.model.nodes), len(self.model.params)
         for node in action.nodes:
             perform_composable(self, node, scope, container)
-        for item in node_items(self.model, nodes_before, params_before, self.take_guard()):
+        for item in node_items(self.model, nodes_before, params_before, guard):
             scope.item.add(item)
 
     # -- parameter files -------------------------------------------------------------
