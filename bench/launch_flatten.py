@@ -13,6 +13,7 @@ many nodes and parameters were left out (``-v``: each difference).
 
 from __future__ import annotations
 
+import json
 import re
 import sys
 import tempfile
@@ -31,6 +32,11 @@ def leaves(params: dict[str, Any]) -> dict[str, Any]:
     for key, value in params.items():
         flat(key, value, out)
     return {k: v for k, v in out.items() if v != {}}
+
+
+def typed(params: dict[str, Any]) -> dict[str, str]:
+    """Values as JSON: an int parameter (1) is not a double one (1.0)."""
+    return {k: json.dumps(v, sort_keys=True) for k, v in params.items()}
 
 
 def main(argv: list[str]) -> int:
@@ -75,12 +81,12 @@ def main(argv: list[str]) -> int:
         counts["nodes left out"] += len(original["nodes"]) - len(nodes)
         counts["params"] += len(leaves(original["params"]))
         counts["params left out"] += len(leaves(original["params"])) - len(theirs)
-        same = leaves(mine["params"]) == theirs and sorted(
+        same = typed(leaves(mine["params"])) == typed(theirs) and sorted(
             mine["nodes"], key=lambda n: str(n["name"])) == nodes
         counts["agree" if same else "differ"] += 1
         if not same and verbose:
-            ours = leaves(mine["params"])
-            diff = {k: (ours.get(k), v) for k, v in theirs.items() if ours.get(k) != v}
+            ours, want = typed(leaves(mine["params"])), typed(theirs)
+            diff = {k: (ours.get(k), v) for k, v in want.items() if ours.get(k) != v}
             extra = sorted(set(ours) - set(theirs))
             print(f"differ: {path}: params {dict(list(diff.items())[:3])} extra {extra[:3]}")
     for key, value in counts.items():

@@ -104,7 +104,8 @@ def _typed(value: Any) -> dict[str, str]:
         return {"type": "str", "value": value}
     if isinstance(value, str):  # roslaunch strips value=: a YAML (JSON) quoted string
         return {"type": "yaml", "value": json.dumps(value)}
-    return {"type": "yaml", "value": yaml.safe_dump(value, default_flow_style=True).strip()}
+    return {"type": "yaml", "value": yaml.safe_dump(value, default_flow_style=True,
+                                                   sort_keys=False).strip()}
 
 
 def _comment(text: str) -> str:
