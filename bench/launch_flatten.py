@@ -34,6 +34,18 @@ def leaves(params: dict[str, Any]) -> dict[str, Any]:
     return {k: v for k, v in out.items() if v != {}}
 
 
+ANON = re.compile(r"_[A-Za-z0-9_]*_\d+_\d+(?=/|$)")  # roslaunch's anon: _host_pid_random
+
+
+def unanon(data: dict[str, Any]) -> dict[str, Any]:
+    """Random anonymous names made one (each roslaunch run draws new ones)."""
+    if "error" in data:
+        return data
+    nodes = [{**n, "name": ANON.sub("_ANON", n["name"] or "")} for n in data["nodes"]]
+    return {**data, "nodes": nodes,
+            "params": {ANON.sub("_ANON", k): v for k, v in data["params"].items()}}
+
+
 def typed(params: dict[str, Any]) -> dict[str, str]:
     """Values as JSON: an int parameter (1) is not a double one (1.0)."""
     return {k: json.dumps(v, sort_keys=True) for k, v in params.items()}
@@ -56,8 +68,8 @@ def main(argv: list[str]) -> int:
             out.write_text(text)
             flats.append(out)
             notes.append(said)
-        originals = roslaunch(files, env)
-        flattened = roslaunch(flats, env)
+        originals = [unanon(d) for d in roslaunch(files, env)]
+        flattened = [unanon(d) for d in roslaunch(flats, env)]
     for path, original, mine, said in zip(files, originals, flattened, notes, strict=True):
         counts["files"] += 1
         if "error" in original:

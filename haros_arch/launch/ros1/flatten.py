@@ -13,6 +13,8 @@ from __future__ import annotations
 
 import json
 import math
+import re
+from collections import Counter
 from typing import Any
 
 import yaml
@@ -21,6 +23,8 @@ from lxml import etree
 from ..model import LaunchModel, NodeDecl
 from .dump import leaf_parameters
 from .params import Binary
+
+_ANON = re.compile(r"^(.*/)([^/?$]+)_\?$")  # what $(anon x) gives: x_ and an unknown
 
 
 def flatten(model: LaunchModel) -> tuple[str, list[str]]:
@@ -36,9 +40,15 @@ def flatten(model: LaunchModel) -> tuple[str, list[str]]:
         root.append(etree.Comment(f" flattened by haros-arch from {_comment(model.files[0])} "))
     for name, address in model.machines.items():
         etree.SubElement(root, "machine", name=name, address=address)
+    anon = anonymous_names(model)
     for ns in dict.fromkeys(model.clear_params):
+        ns = _anon_prefix(ns, anon)
+        if "?" in ns:
+            note(f"namespace {ns} (clear_params) is not known statically; left out")
+            continue
         etree.SubElement(root, "group", ns=ns, clear_params="true")
     for name, value in leaf_parameters(model).items():
+        name = _anon_prefix(name, anon)
         if value is None or "?" in name:
             note(f"parameter {name} is not known statically; left out")
             continue
@@ -50,22 +60,44 @@ def flatten(model: LaunchModel) -> tuple[str, list[str]]:
             continue
         etree.SubElement(root, "param", {"name": name, **_typed(value)})
     for node in model.nodes:
-        _node(root, node, note)
+        _node(root, node, anon.get(node.name), note)
     for name in model.deleted_params:
         etree.SubElement(root, "rosparam", command="delete", param=name)
     text = etree.tostring(root, pretty_print=True, encoding="unicode")
     return text, notes
 
 
-def _node(root: etree._Element, node: NodeDecl, note: Any) -> None:
+def anonymous_names(model: LaunchModel) -> dict[str, str]:
+    """``/ns/x_?`` of a node named ``$(anon x)`` -> ``/ns/$(anon x)``. A name two such
+    nodes share (``$(anon x)`` in two includes: two names) is left out: one ``$(anon x)``
+    in the flat file would give them one name."""
+    seen = Counter(node.name for node in model.nodes)
+    out: dict[str, str] = {}
+    for node in model.nodes:
+        match = _ANON.match(node.name)
+        if node.anonymous and match and seen[node.name] == 1:
+            out[node.name] = f"{match.group(1)}$(anon {match.group(2)})"
+    return out
+
+
+def _anon_prefix(name: str, anon: dict[str, str]) -> str:
+    """A parameter or namespace under an anonymous node, written with ``$(anon)``."""
+    for rendered, written in anon.items():
+        if name == rendered or name.startswith(rendered + "/"):
+            return written + name[len(rendered):]
+    return name
+
+
+def _node(root: etree._Element, node: NodeDecl, anon: str | None, note: Any) -> None:
     where = f" ({node.location})" if node.location.file else ""
     if node.conditions:
         conds = " and ".join(str(c) for c in node.conditions)
         note(f"node {node.name}{where} runs only {conds}, not known statically; left out")
         return
-    base = node.name.rsplit("/", 1)[-1]
-    if "?" in node.name or "?" in node.package or "?" in node.executable or "$(" in (
-            node.args + node.name):
+    base = (anon or node.name).rsplit("/", 1)[-1]
+    written = [node.package, node.executable, *(f"{a} {b}" for a, b in node.remaps)]
+    if ("?" in node.name and anon is None) or "$(" in node.args + node.name or any(
+            "?" in text for text in written):
         note(f"node {node.name}{where} has parts not known statically; left out")
         return
     attrs = {"pkg": node.package, "type": node.executable}
