@@ -43,7 +43,8 @@ def unanon(data: dict[str, Any]) -> dict[str, Any]:
         return data
     nodes = [{**n, "name": ANON.sub("_ANON", n["name"] or "")} for n in data["nodes"]]
     return {**data, "nodes": nodes,
-            "params": {ANON.sub("_ANON", k): v for k, v in data["params"].items()}}
+            "params": {ANON.sub("_ANON", k): v for k, v in data["params"].items()},
+            "clear_params": [ANON.sub("_ANON", k) for k in data["clear_params"]]}
 
 
 def typed(params: dict[str, Any]) -> dict[str, str]:
@@ -93,7 +94,9 @@ def main(argv: list[str]) -> int:
         counts["nodes left out"] += len(original["nodes"]) - len(nodes)
         counts["params"] += len(leaves(original["params"]))
         counts["params left out"] += len(leaves(original["params"])) - len(theirs)
-        same = typed(leaves(mine["params"])) == typed(theirs) and sorted(
+        cleared = sorted(original["clear_params"]) == sorted(mine["clear_params"]) or any(
+            n.startswith("namespace ") for n in said)
+        same = cleared and typed(leaves(mine["params"])) == typed(theirs) and sorted(
             mine["nodes"], key=lambda n: str(n["name"])) == nodes
         counts["agree" if same else "differ"] += 1
         if not same and verbose:

@@ -57,7 +57,8 @@ def unanon(data: dict[str, Any]) -> dict[str, Any]:
         return data
     nodes = [{**n, "name": ANON.sub("_ANON", n["name"] or "")} for n in data["nodes"]]
     params = {ANON.sub("_ANON", k): v for k, v in data["params"].items()}
-    return {**data, "nodes": nodes, "params": params}
+    cleared = [ANON.sub("_ANON", k) for k in data["clear_params"]]
+    return {**data, "nodes": nodes, "params": params, "clear_params": cleared}
 
 
 def node_key(node: dict[str, Any]) -> str:
@@ -82,6 +83,7 @@ def test_roslaunch_reads_the_flattened_file_as_the_original(
     theirs = {k: v for k, v in leaves(original["params"]).items() if kept(k)}
     assert typed(leaves(flat["params"])) == typed(theirs)
     kept_nodes = [n for n in original["nodes"] if kept(n["name"])]
+    assert sorted(flat["clear_params"]) == sorted(original["clear_params"])
     assert sorted(flat["nodes"], key=node_key) == sorted(kept_nodes, key=node_key)
 
 
