@@ -10,8 +10,11 @@ from typing import Any
 from haros_arch.cli import main
 from haros_arch.launch import load
 from haros_arch.model.launch_tree import LaunchArg, LaunchItem, item_from_data
+from haros_arch.model.load import from_data
 from haros_arch.model.location import Location
-from haros_arch.model.serialise import to_data
+from haros_arch.model.model import Model
+from haros_arch.model.runtime import Configuration
+from haros_arch.model.serialise import model_to_data, to_data
 from haros_arch.workspace import scan
 
 PACKAGE = """<package format="2"><name>pkg</name><version>0.0.0</version>
@@ -235,3 +238,13 @@ def test_cli_prints_the_tree_and_json_includes_it(tmp_path: Path, capsys: Any) -
     data = json.loads(capsys.readouterr().out)
     assert [c["name"] for c in data["tree"][0]["children"]] == [
         "pkg/launch/sub.launch", "/sensors/", "", "/talker"]
+
+
+def test_a_saved_model_keeps_each_configuration_launch_tree(tmp_path: Path) -> None:
+    root = tree(tmp_path, {"mode": "true"})
+    model = Model("p", configurations=[Configuration("c", launch_tree=[root])])
+    again = from_data(json.loads(json.dumps(model_to_data(model))))
+    assert [shape(i) for i in again.configurations[0].launch_tree] == [shape(root)]
+    old = model_to_data(Model("p", configurations=[Configuration("c")]))
+    assert "launch_tree" not in old["configurations"][0]  # documents stay as they were
+    assert from_data(old).configurations[0].launch_tree == []
