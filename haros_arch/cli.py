@@ -12,6 +12,7 @@ import os
 import sys
 from collections.abc import Sequence
 from functools import partial
+from typing import TYPE_CHECKING
 
 from rich.console import Console
 from rich.markup import escape
@@ -24,6 +25,10 @@ from .model.model import Model
 from .pipeline import Options, analyse
 from .project import ProjectError
 from .report.text import print_diagnostics, print_summary
+
+if TYPE_CHECKING:
+    from .launch.model import LaunchModel
+    from .workspace import Workspace
 
 EXIT_OK, EXIT_FINDINGS, EXIT_USAGE, EXIT_INTERNAL = 0, 1, 2, 3
 
@@ -89,6 +94,12 @@ def _parser() -> argparse.ArgumentParser:
     launch.add_argument("--arg", action="append", default=[], metavar="NAME:=VALUE")
     launch.add_argument("--workspace", default=".", help="workspace folder (default: .)")
     launch.add_argument("--format", choices=("text", "json"), default="text")
+    launch.add_argument("--flatten", action="store_true",
+                        help="write one roslaunch XML file with every include inlined and "
+                             "every argument and decided condition applied (ROS 1)")
+    launch.add_argument("--tree", action="store_true",
+                        help="show how the files make the nodes: includes with their "
+                             "arguments, groups, remaps, conditions")
 
     models = sub.add_parser("models", help="interface models of packages without source")
     models_sub = models.add_subparsers(dest="models_command", required=True)
@@ -401,11 +412,36 @@ def cmd_launch(args: argparse.Namespace, out: Console, err: Console) -> int:
         path = os.path.join(folder, args.file[1])
     given = dict(a.split(":=", 1) for a in args.arg)
     model = load_launch(path, workspace, given, dict(os.environ))
+    if args.flatten:
+        return _flatten(path, workspace, model, out, err)
     if args.format == "json":
         out.print(json.dumps(as_data(model), indent=2), highlight=False, markup=False)
+    elif args.tree:
+        from .launch.tree_view import as_rich
+
+        if not out.is_terminal:  # a file or a pipe: whole lines, not cut at 80 columns
+            out.width = 1_000
+        out.print(as_rich(model.tree), highlight=False, crop=False)
+        print_diagnostics(model.diagnostics, err)
     else:
         out.print(as_text(model), highlight=False, markup=False)
         print_diagnostics(model.diagnostics, err)
+    return EXIT_OK
+
+
+def _flatten(path: str, workspace: Workspace, model: LaunchModel, out: Console,
+             err: Console) -> int:
+    from .launch.dialect import ros_version
+    from .launch.ros1.flatten import flatten
+
+    if ros_version(path, workspace) != 1:
+        err.print("haros-arch: --flatten writes ROS 1 launch files only", highlight=False)
+        return EXIT_USAGE
+    text, notes = flatten(model)
+    out.print(text, highlight=False, markup=False, end="")
+    for line in notes:
+        err.print(f"note: {escape(line)}", highlight=False)
+    print_diagnostics(model.diagnostics, err)
     return EXIT_OK
 
 
