@@ -32,7 +32,6 @@ import shutil
 import stat
 import subprocess
 import tarfile
-import tempfile
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
 from itertools import takewhile
@@ -414,9 +413,12 @@ def split_range(text: str) -> tuple[str, str]:
 @contextlib.contextmanager
 def _tree_folder(root: str) -> Iterator[str]:
     """One folder per repository, the same on every run (a parse cache entry names the
-    workspace headers it read by path), held under a lock while in use."""
+    workspace headers it read by path), in the cache folder, held under a lock while in
+    use."""
+    from .extract.cpp.cache import default_folder
+
     digest = hashlib.sha256(os.path.realpath(root).encode()).hexdigest()[:12]
-    base = os.path.join(tempfile.gettempdir(), f"haros-arch-diff-{os.getuid()}-{digest}")
+    base = os.path.join(default_folder(root), "diff", digest)  # beside the parse cache
     os.makedirs(base, mode=0o700, exist_ok=True)
     state = os.lstat(base)  # made by us, for us alone (not another user's or a link)
     if not stat.S_ISDIR(state.st_mode) or state.st_uid != os.getuid() \
