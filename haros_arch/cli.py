@@ -121,6 +121,22 @@ def _parser() -> argparse.ArgumentParser:
                        help="run on this Dask distributed scheduler (needs the 'dask' extra)")
     build.add_argument("--no-cache", action="store_true", help="parse every source again")
 
+    diff = sub.add_parser("diff", help="what a change does to the architecture: two saved "
+                          "models, or two git revisions (--rev BASE..HEAD)")
+    diff.add_argument("sides", nargs="*", metavar="OLD NEW | PATH",
+                      help="two saved models (extract -o); with --rev, the project file or "
+                           "workspace folder relative to the repository root (default: .)")
+    diff.add_argument("--rev", metavar="BASE..HEAD",
+                      help="analyse both revisions from git objects (the working tree is "
+                           "not touched)")
+    diff.add_argument("--repo", default=".", help="the git repository (default: .)")
+    diff.add_argument("--format", choices=("text", "json", "markdown"), default="text")
+    diff.add_argument("--fail-on", choices=("new-error", "new-warning", "never"),
+                      default="never", help="exit 1 when a new finding at or above this "
+                                            "severity appears (default: never)")
+    diff.add_argument("-o", "--output", help="write the diff here (default: stdout)")
+    _run_options(diff)
+
     init = sub.add_parser("init", help="write a project file for a workspace or launch "
                           "file: the configurations check would choose, to edit")
     init.add_argument("path", help="workspace or package folder, or a launch file")
@@ -279,6 +295,38 @@ def cmd_init(args: argparse.Namespace, out: Console, err: Console) -> int:
     return EXIT_OK
 
 
+def cmd_diff(args: argparse.Namespace, out: Console, err: Console) -> int:
+    from . import diff
+
+    try:
+        if args.rev:
+            if len(args.sides) > 1:
+                err.print("haros-arch: diff --rev takes at most one PATH", highlight=False)
+                return EXIT_USAGE
+            result, notes = diff.compare_revisions(
+                args.rev, args.sides[0] if args.sides else ".", args.repo, _options(args))
+            for note in notes:
+                err.print(f"haros-arch: {escape(note)}", highlight=False)
+        elif len(args.sides) == 2:
+            (old, old_found), (new, new_found) = (diff.load_saved(p) for p in args.sides)
+            result = diff.compare(old, new, old_found, new_found, *args.sides)
+        else:
+            err.print("haros-arch: diff takes OLD NEW (saved models) or --rev BASE..HEAD "
+                      "[PATH]", highlight=False)
+            return EXIT_USAGE
+    except diff.DiffError as error:
+        err.print(f"haros-arch: diff: {escape(str(error))}", highlight=False)
+        return EXIT_USAGE
+    if args.format == "text" and not args.output:
+        diff.print_text(result, out)
+    else:
+        render = {"text": diff.to_text, "json": diff.to_json, "markdown": diff.to_markdown}
+        _write(render[args.format](result), args.output)
+    if args.output:
+        err.print(escape(diff.summary(result)), highlight=False)
+    return EXIT_FINDINGS if result.fails(args.fail_on) else EXIT_OK
+
+
 def cmd_capture(args: argparse.Namespace, out: Console, err: Console) -> int:
     from .live import CaptureError, capture
 
@@ -434,7 +482,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     handlers = {"extract": cmd_extract, "check": cmd_check, "explain": cmd_explain,
                 "capture": cmd_capture, "compare": cmd_compare, "report": cmd_report,
                 "launch": cmd_launch, "query": cmd_query, "init": cmd_init,
-                "models": cmd_models}
+                "models": cmd_models, "diff": cmd_diff}
     try:
         return handlers[args.command](args, out, err)
     except KeyboardInterrupt:

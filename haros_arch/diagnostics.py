@@ -111,7 +111,8 @@ CATALOGUE: dict[str, Entry] = {
     "PLUGIN_PARAM_FILE": Entry(
         "warning", "parameter file {path} of a controller spawner cannot be read",
         "A controller_manager spawner's --param-file names a file that does not exist, "
-        "lies outside the workspace and installed packages, or is not YAML; the "
+        "lies outside the workspace and installed packages, is not YAML, or is too big "
+        "once its YAML aliases are expanded; the "
         "controllers it configures keep no parameters from it."),
     # launch files
     "LAUNCH_FILE_MISSING": Entry(

@@ -24,8 +24,9 @@ def configuration(launch: str, models: bool = True, **args: str) -> Configuratio
 
 
 def links(config: Configuration, node: str) -> list[tuple[str, str, str]]:
+    # not those of move_base's own interface model
     return sorted((link.kind, link.resource.name, link.origin) for link in config.links
-                  if link.node.name == node)
+                  if link.node.name == node and link.origin in ("source", "plugin"))
 
 
 @pytest.mark.parametrize("layer", ["true", "false"])

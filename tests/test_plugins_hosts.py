@@ -211,3 +211,19 @@ def test_a_manager_named_only_by_its_code_serves_the_spawners_of_its_namespace(t
     assert config.node("/robot/controller_manager") is not None
     assert [n.name for n in config.nodes if n.origin == "plugin"] == ["/robot/bcast"]
     assert links_of(config, "/robot/bcast") == [("publish", "/robot/joint_states")]
+
+
+def test_a_hostile_or_broken_spawner_file_is_a_diagnostic(tmp_path):
+    bomb = tmp_path / "bomb.yaml"
+    lines = ["a0: &a0 [x, x, x, x, x, x, x, x, x, x]"]
+    lines += [f"a{i}: &a{i} [{', '.join(['*a' + str(i - 1)] * 10)}]" for i in range(1, 9)]
+    bomb.write_text("\n".join(lines) + "\n")
+    broken = tmp_path / "broken.yaml"
+    broken.write_text("a: [\n")
+    decls = [ros2(NodeDecl("/controller_manager", "controller_manager", "ros2_control_node")),
+             ros2(NodeDecl("/s1", "controller_manager", "spawner", args=f"c --param-file {bomb}")),
+             ros2(NodeDecl("/s2", "controller_manager", "spawner",
+                           args=f"c --param-file {broken} --param-file {tmp_path}/none.yaml"))]
+    config = graph(decls, root=str(tmp_path))
+    codes = [d.code for d in config.diagnostics if d.code.startswith("PLUGIN")]
+    assert codes.count("PLUGIN_PARAM_FILE") == 3

@@ -123,7 +123,8 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
     for instance, calls in attach_plugins(config, started, nodes, resources, workspace):
         remaps = resolve_remaps(instance.remaps, instance.namespace, instance.name)
         for call in calls:
-            link(instance, call, remaps, resources, config)
+            for each in element_calls(call, instance, resources):
+                link(instance, each, remaps, resources, config)
     for action, call, name in action_links(config):
         link(action.node, call, {}, resources, config, name)
     _namespace_values(config)

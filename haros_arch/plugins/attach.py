@@ -49,6 +49,7 @@ SPAWNERS = (("controller_manager", "spawner"), ("controller_manager", "spawner.p
 MANAGER_NAME = "controller_manager"
 _ROS_ARG_FLAGS = ("-r", "--remap", "-p", "--param", "--params-file")
 MAX_PLUGINS = 200  # per slot: a hostile list stays bounded
+MAX_PARAM_VALUES = 100_000  # values in one spawner parameter file, aliases counted out
 
 
 class Params(Protocol):
@@ -92,7 +93,7 @@ def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance
             else:
                 choices = list(_chosen(instance, slot, params))
             for choice in choices:
-                node = _lookup(choice, slot, index)
+                node = _lookup(choice, index)
                 reader = instance
                 if node is None:
                     _missing(config, instance, choice, owned)
@@ -156,15 +157,11 @@ def plugin_index(nodes: Mapping[str, Node]) -> dict[str, Node]:
     return index
 
 
-def _lookup(choice: Choice, slot: Slot, index: Mapping[str, Node]) -> Node | None:
+def _lookup(choice: Choice, index: Mapping[str, Node]) -> Node | None:
+    """The plugin node of the chosen class, by its lookup name or its C++ type."""
     if not choice.cls or UNKNOWN_MARK in choice.cls:
         return None
-    node = index.get(choice.cls.strip().lstrip(":"))
-    if node is None:
-        # pluginlib accepts ``pkg/Class`` for a class exported as ``pkg::Class`` (nav2
-        # configurations use both spellings)
-        node = index.get(choice.cls.strip().replace("/", "::"))
-    return node
+    return index.get(choice.cls.strip().lstrip(":"))
 
 
 def _given(choice: Choice, slot: Slot) -> str:
@@ -373,10 +370,29 @@ def _param_file(path: str, decl: NodeDecl, workspace: Workspace,
     if text is None:
         return None
     try:
-        return yaml.safe_load(text), where
+        document = yaml.safe_load(text)
     except yaml.YAMLError:
+        document = None
+    if document is None or not _bounded(document):
         config.diagnostics.append(diag.make("PLUGIN_PARAM_FILE", decl.location, path=path))
         return None
+    return document, where
+
+
+def _bounded(document: Any, limit: int = MAX_PARAM_VALUES) -> bool:
+    """Whether the document has at most ``limit`` values when walked as a tree: YAML
+    aliases share a value, and a file of aliases to aliases is huge once flattened."""
+    stack, seen = [document], 0
+    while stack:
+        value = stack.pop()
+        seen += 1
+        if seen > limit:
+            return False
+        if isinstance(value, dict):
+            stack.extend(value.values())
+        elif isinstance(value, list):
+            stack.extend(value)
+    return True
 
 
 def _set_params(params: Params, node_name: str, values: Mapping[str, Any],

@@ -16,6 +16,7 @@ from typing import Any
 import yaml
 
 from ... import diagnostics as diag
+from ... import safe_yaml
 from ...files import read_text
 from ...model.conditions import Condition
 from ...model.launch_tree import ArgOrigin, LaunchArg, LaunchCondition, LaunchItem
@@ -356,7 +357,7 @@ class Runner:
         if text is None:
             return None
         try:
-            document = unknown_parts(yaml.safe_load(text))
+            document = unknown_parts(safe_yaml.load(text))
         except yaml.YAMLError as err:
             mark = getattr(err, "problem_mark", None)
             self.report("LAUNCH_YAML_SYNTAX", self.workspace.location(
@@ -382,7 +383,7 @@ class Runner:
         if text is None:
             return None
         try:
-            return unknown_parts(yaml.safe_load(text))
+            return unknown_parts(safe_yaml.load(text))
         except yaml.YAMLError:
             self.report("LAUNCH_PARAM_FILE", where, detail="a parameter file is not valid "
                         "YAML after its substitutions")
