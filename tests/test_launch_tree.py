@@ -248,3 +248,29 @@ def test_a_saved_model_keeps_each_configuration_launch_tree(tmp_path: Path) -> N
     old = model_to_data(Model("p", configurations=[Configuration("c")]))
     assert "launch_tree" not in old["configurations"][0]  # documents stay as they were
     assert from_data(old).configurations[0].launch_tree == []
+
+
+def test_ros1_condition_on_the_environment_names_the_variable(tmp_path: Path) -> None:
+    (tmp_path / "pkg" / "launch").mkdir(parents=True)
+    (tmp_path / "pkg" / "package.xml").write_text(PACKAGE)
+    (tmp_path / "pkg" / "launch" / "env.launch").write_text(
+        '<launch><group if="$(optenv LOGITECH 0)"><node pkg="pkg" type="a" name="a"/>'
+        '</group></launch>')
+    workspace = scan([str(tmp_path)], {})
+    for env, values, holds in (({}, {"$LOGITECH": None}, False),
+                               ({"LOGITECH": "1"}, {"$LOGITECH": "1"}, True)):
+        model = load(str(tmp_path / "pkg/launch/env.launch"), workspace, {}, env)
+        cond = model.tree[0].children[0].condition
+        assert cond is not None and (cond.values, cond.holds) == (values, holds)
+
+
+def test_ros2_condition_on_the_environment_names_the_variable(tmp_path: Path) -> None:
+    folder = tmp_path / "pkg2" / "launch"
+    folder.mkdir(parents=True)
+    (tmp_path / "pkg2" / "package.xml").write_text(PACKAGE2)
+    (folder / "env.launch.xml").write_text(
+        '<launch><node pkg="pkg2" exec="a" name="a" if="$(env USE_A false)"/></launch>')
+    workspace = scan([str(tmp_path)], {})
+    model = load(str(folder / "env.launch.xml"), workspace, {}, {"USE_A": "true"})
+    cond = model.tree[0].children[0].condition
+    assert cond is not None and (cond.values, cond.holds) == ({"$USE_A": "true"}, True)

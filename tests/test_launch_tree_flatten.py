@@ -13,6 +13,7 @@ from test_launch_ros1_roslaunch import CASES, ROS_PACKAGE_PATH, run_roslaunch
 from test_launch_ros1_roslaunch import pytestmark as needs_roslaunch
 from test_launch_tree import tree
 
+from haros_arch.cli import main
 from haros_arch.launch import load
 from haros_arch.launch.ros1.dump import leaf_parameters
 from haros_arch.launch.ros1.flatten import flatten
@@ -142,3 +143,17 @@ def test_an_anonymous_node_keeps_its_anon_name(tmp_path: Path) -> None:
     assert notes == []
     assert '<node pkg="robot_base" type="helper_node" name="$(anon helper)"/>' in (
         path.read_text())
+
+
+def test_cli_flatten_writes_xml_and_says_what_it_leaves_out(tmp_path: Path,
+                                                            capsys: Any) -> None:
+    tree(tmp_path, {})
+    main_file = str(tmp_path / "pkg/launch/main.launch")
+    assert main(["launch", main_file, "--workspace", str(tmp_path), "--flatten"]) == 0
+    out, err = capsys.readouterr()
+    assert out.startswith("<launch>") and '<node pkg="pkg" type="t" name="talker">' in out
+    assert "note: node /moder (pkg/launch/main.launch:18) runs only if ($(arg mode))" in err
+    ros2 = tmp_path / "x.launch.py"
+    ros2.write_text("from launch import LaunchDescription\n")
+    assert main(["launch", str(ros2), "--workspace", str(tmp_path), "--flatten"]) == 2
+    assert "ROS 1 launch files only" in capsys.readouterr().err

@@ -15,17 +15,21 @@ from ..model.values import Value
 from .model import LaunchModel
 
 _ROS1_ARG = re.compile(r"\$\(\s*arg\s+([^\s)]+)\s*\)|\barg\(\s*['\"]([^'\"]+)['\"]\s*\)")
+_ROS1_ENV = re.compile(r"\$\(\s*(?:opt)?env\s+([^\s)]+)")
 MAX_SKIPPED = 100
 
 
 def ros1_condition(text: str, statement: str, args: Mapping[str, Value | None],
-                   holds: bool | None) -> LaunchCondition:
-    """The record of an ``if=``/``unless=``: the ``$(arg)``s it reads and their values."""
+                   holds: bool | None, environment: Mapping[str, str]) -> LaunchCondition:
+    """The record of an ``if=``/``unless=``: the ``$(arg)``s it reads and their values,
+    and the environment variables (``$NAME``; None when unset)."""
     values: dict[str, str | None] = {}
     for match in _ROS1_ARG.finditer(text):
         name = match.group(1) or match.group(2)
         value = args.get(name)
         values[name] = value.text if value is not None else None
+    for match in _ROS1_ENV.finditer(text):
+        values["$" + match.group(1)] = environment.get(match.group(1))
     return LaunchCondition(text, statement, values, holds)
 
 

@@ -74,6 +74,7 @@ class LaunchItem:
 
 
 MAX_CHILDREN = 5_000
+MAX_DEPTH = 256  # items nested deeper are not read back (includes nest 32 deep at most)
 
 
 def _location(data: Any) -> Location:
@@ -85,7 +86,7 @@ def _location(data: Any) -> Location:
 
 def item_from_data(data: Any, depth: int = 0) -> LaunchItem | None:
     """The inverse of ``serialise.to_data`` for one item; None if it is not one."""
-    if not isinstance(data, dict) or depth > 64:
+    if not isinstance(data, dict) or depth > MAX_DEPTH:
         return None
     cond = data.get("condition")
     condition = LaunchCondition(

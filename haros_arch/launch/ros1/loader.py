@@ -163,14 +163,15 @@ class Ros1Loader:
                 continue
             raw = element.get(attribute, "")
             if value.literal is None:
-                self.guard = ros1_condition(raw, attribute, scope.args, None)
+                self.guard = ros1_condition(raw, attribute, scope.args, None,
+                                            self.environment)
                 return scope.conditional(raw, attribute, self.where(scope, element))
             truth = value.literal.strip().lower()
             if truth not in ("true", "1", "false", "0"):
                 self.fail(scope, element, f"{attribute}=\"{value.literal}\" is not a boolean")
                 return None
             holds = (truth in ("true", "1")) == (attribute == "if")
-            self.guard = ros1_condition(raw, attribute, scope.args, holds)
+            self.guard = ros1_condition(raw, attribute, scope.args, holds, self.environment)
             if not holds:
                 return None
         return scope

@@ -14,7 +14,8 @@ MAX_PARTS = 200
 
 def variables(text: e.Text | None) -> list[str]:
     """The launch configurations a text reads (``LaunchConfiguration``, ``$(var)``),
-    inside other substitutions too; bounded."""
+    inside other substitutions too, and its environment variables as ``$NAME``;
+    bounded."""
     found: list[str] = []
     stack: list[object] = list(text or ())
     seen = 0
@@ -23,6 +24,10 @@ def variables(text: e.Text | None) -> list[str]:
         part = stack.pop(0)
         if isinstance(part, e.Var):
             name = written(part.name)
+            if name not in found:
+                found.append(name)
+        elif isinstance(part, e.Env):
+            name = "$" + written(part.name)
             if name not in found:
                 found.append(name)
         elif isinstance(part, tuple):
@@ -47,10 +52,13 @@ def written(text: e.Text | None) -> str:
     return "".join(out)
 
 
-def condition(cond: e.Cond, configs: Mapping[str, Value | None],
-              holds: bool | None) -> LaunchCondition:
+def condition(cond: e.Cond, configs: Mapping[str, Value | None], holds: bool | None,
+              environment: Mapping[str, str]) -> LaunchCondition:
     values: dict[str, str | None] = {}
     for name in variables((*cond.expression, *(cond.equals or ()))):
+        if name.startswith("$"):
+            values[name] = environment.get(name[1:])
+            continue
         value = configs.get(name)
         values[name] = value.text if value is not None else None
     return LaunchCondition(cond.source or written(cond.expression),

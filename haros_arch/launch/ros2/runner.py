@@ -89,7 +89,8 @@ class Runner:
         if cond is None:
             return scope
         truth = self.evaluator(scope, location).truth(cond)
-        self.guard = recording.condition(cond, scope.configs, truth)
+        self.guard = recording.condition(cond, scope.configs, truth,
+                                         {**self.environment, **scope.environment})
         if truth is None:
             statement = "unless" if cond.negate else "if"
             made = Condition(cond.source or "?", "launch", statement, location)
