@@ -85,7 +85,7 @@ class _Reader:
             return loader.construct_object(node, deep=True)
         except RecursionError:
             raise self.fail(node, "value nested too deeply") from None
-        except yaml.YAMLError as err:
+        except (yaml.YAMLError, ValueError) as err:  # ValueError: an int of 5,000 digits
             raise self.fail(node, f"invalid value: {getattr(err, 'problem', err)}") from None
 
     def mapping(self, node: Node, what: str) -> list[tuple[str, Node, Node]]:
@@ -160,7 +160,7 @@ def load(path: str) -> Project:
         mark = err.problem_mark or err.context_mark
         line, col = (mark.line + 1, mark.column + 1) if mark else (0, 0)
         raise ProjectError(path, line, col, f"invalid YAML: {err.problem or err}") from None
-    except yaml.YAMLError as err:
+    except (yaml.YAMLError, ValueError) as err:  # ValueError: "%YAML 99999...9"
         raise ProjectError(path, 0, 0, f"invalid YAML: {err}") from None
     except RecursionError:
         raise ProjectError(path, 0, 0, "the YAML is nested too deeply to be a project "

@@ -33,6 +33,8 @@ from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass
 from typing import Any, Literal
 
+from ..evaluate import budget
+
 __all__ = ["BUILTINS", "MATH", "Limits", "Unknown", "evaluate", "is_unknown"]
 
 UnknownKind = Literal["unknown", "unsupported", "undefined", "error", "syntax", "limit"]
@@ -105,12 +107,29 @@ def _bounded_round(value: Any, digits: Any = None) -> Any:
     return round(value) if digits is None else round(value, digits)
 
 
+def _str(*args: Any) -> str:
+    if args:
+        budget.check_text(args[0])
+    return str(*args)
+
+
+def _range(*args: Any) -> list[int]:
+    budget.check_size("a list", budget.range_length(args))
+    return list(range(*args))
+
+
+def _sum(items: Any, *start: Any) -> Any:
+    if start:
+        budget.sum_length(items, start[0])
+    return sum(items, *start)
+
+
 BUILTINS: Mapping[str, Callable[..., Any]] = {
-    "len": len, "int": int, "float": float, "str": str, "bool": bool, "abs": abs,
+    "len": len, "int": int, "float": float, "str": _str, "bool": bool, "abs": abs,
     "min": min, "max": max, "round": _bounded_round, "list": list, "tuple": tuple,
-    "dict": dict, "sorted": sorted, "sum": sum, "any": any, "all": all,
+    "dict": dict, "sorted": sorted, "sum": _sum, "any": any, "all": all,
     "set": set, "reversed": lambda x: list(reversed(x)),
-    "range": lambda *a: list(range(*a)),
+    "range": _range,
 }
 
 MATH: Mapping[str, Any] = {
@@ -150,6 +169,8 @@ _COMPARE: dict[type, Callable[[Any, Any], Any]] = {
     ast.Gt: operator.gt, ast.GtE: operator.ge, ast.In: lambda a, b: a in b,
     ast.NotIn: lambda a, b: a not in b, ast.Is: operator.is_, ast.IsNot: operator.is_not,
 }
+
+_INT_OPS: dict[type, str] = {ast.Mult: "*", ast.Pow: "**", ast.LShift: "<<"}
 
 _CONVERSIONS: dict[int, Callable[[object], str]] = {115: str, 114: repr, 97: ascii}
 
@@ -237,6 +258,8 @@ class _Interpreter:
         spec = self.eval(node.format_spec) if node.format_spec is not None else ""
         self.known(value, spec)
         _check_format(str(spec))
+        field = "{0:" + str(spec).replace("{", "{{").replace("}", "}}") + "}"
+        self.guard(lambda: budget.format_length(field, [value], {}, self.limits.length))
         conversion = _CONVERSIONS.get(node.conversion)
         if conversion is not None:
             value = conversion(value)
@@ -268,6 +291,7 @@ class _Interpreter:
         self.check_size(op, left, right)
         if op is ast.Mod and isinstance(left, str):
             _check_format(left)
+            self.guard(lambda: budget.percent_length(left, right, self.limits.length))
         return self.guard(lambda: _BINARY[op](left, right))
 
     def check_size(self, op: type, left: Any, right: Any) -> None:
@@ -287,6 +311,9 @@ class _Interpreter:
             raise _Stop(Unknown("exponent too large", "limit"))
         elif op is ast.LShift and isinstance(right, int) and right > limits.int_bits:
             raise _Stop(Unknown(f"integer larger than {limits.int_bits} bits", "limit"))
+        symbol = _INT_OPS.get(op)
+        if symbol is not None and not isinstance(left, bool) and not isinstance(right, bool):
+            self.guard(lambda: budget.check_int_op(symbol, left, right, limits.int_bits))
 
     def eval_Compare(self, node: ast.Compare) -> Any:
         left = self.eval(node.left)
@@ -379,6 +406,8 @@ class _Interpreter:
                           else 1 for a in args))
         if isinstance(owner, str):
             self.check_string_method(owner, name, args)
+            self.guard(lambda: budget.str_method_length(owner, name, args, kwargs,
+                                                        self.limits.length))
         bound = getattr(owner, name)
         result = self.guard(lambda: bound(*args, **kwargs))
         if name in ("keys", "values", "items"):
@@ -479,6 +508,9 @@ class _Interpreter:
     def guard(action: Callable[[], Any]) -> Any:
         try:
             return action()
+        except budget.OverBudget as err:
+            kind: UnknownKind = "unsupported" if err.kind == "unsupported" else "limit"
+            raise _Stop(Unknown(err.reason, kind)) from None
         except (ArithmeticError, TypeError, ValueError, LookupError, AttributeError) as err:
             raise _Stop(Unknown(f"{type(err).__name__}: {err}", "error")) from None
 

@@ -13,6 +13,7 @@ from typing import Any
 from .. import diagnostics as diag
 from ..diagnostics import Diagnostic
 from ..model.conditions import Condition
+from ..model.launch_tree import LaunchItem
 from ..model.location import NOWHERE, Location
 
 
@@ -72,6 +73,7 @@ class LaunchModel:
     clear_params: list[str] = field(default_factory=list)  # namespaces cleared first
     deleted_params: list[str] = field(default_factory=list)  # <rosparam command="delete">
     machines: dict[str, str] = field(default_factory=dict)  # name -> address
+    tree: list[LaunchItem] = field(default_factory=list)  # the files as written
 
 
 def without_tests(model: LaunchModel) -> LaunchModel:

@@ -405,25 +405,30 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
     header = os.path.join(setup.generated, synthesis.HEADER_NAME)
     if synthesis.MAX_ROUNDS < 1 or not names.learn(_located(mine(tu), source)):
         return tu
-    # Errors come in waves: a class made valid shows its other members. The next waves
-    # are found cheaply, without function bodies (the names that make a class invalid
-    # are in declarations), then the unit is parsed in full with all of them (twice when
-    # that shows members of the declared classes used in function bodies).
+    # Errors come in waves: a class made valid shows its other members. With more than
+    # one round, the next waves are looked for without function bodies (the names that
+    # make a class invalid are in declarations); then the unit is parsed in full with
+    # all the names, and once more when that shows more (a wave, or members of declared
+    # classes used in function bodies); the parse with the fewest errors is kept.
     for _round in range(synthesis.MAX_ROUNDS - 1):
         probe = _parse_once(path, [*args, "-include", header],
                             [*unsaved, (header, names.header())], workspace, result,
                             PARSE_OPTIONS | SKIP_FUNCTION_BODIES)
         if probe is None or not names.learn(_located(mine(probe), source)):
             break
-    again = _parse_once(path, [*args, "-include", header],
-                        [*unsaved, (header, names.header())], workspace, result)
-    if again is None or len(_errors(again)) >= len(_errors(tu)):
+    best = tu
+    for _full in range(2):  # a second time when the first shows more names (a wave)
+        again = _parse_once(path, [*args, "-include", header],
+                            [*unsaved, (header, names.header())], workspace, result)
+        if again is None:
+            break
+        if len(_errors(again)) < len(_errors(best)):
+            best = again
+        if not names.learn(_located(mine(again), source)):
+            break
+    if best is tu:
         return tu  # declaring them made it no better: the parse as it was
-    if names.learn(_located(mine(again), source)):  # members used in function bodies
-        last = _parse_once(path, [*args, "-include", header],
-                           [*unsaved, (header, names.header())], workspace, result)
-        if last is not None and len(_errors(last)) < len(_errors(again)):
-            again = last
+    again = best
     result.diagnostics.append(diag.make(
         "CPP_NAMES_DECLARED", workspace.location(path), count=names.count,
         names=", ".join(names.first()), before=before, after=len(mine(again))))

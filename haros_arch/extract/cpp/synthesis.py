@@ -10,9 +10,11 @@ a template (``T<``), a value. ``Names.header()`` renders them over one class,
 ``haros_any``, that can be built from anything, converts to anything, and has every
 member it was asked for (static members of its own type, so ``obj.m(args)``,
 ``ptr->m`` and ``m`` as a value all parse); scopes become namespaces, or nested classes
-when the name is also a type. The header is prepended to the unit (``-include``); the
-unit is parsed again without function bodies for the next wave of names (up to
-``MAX_ROUNDS - 1`` times), then in full, and that parse is kept when it has fewer errors.
+when the name is also a type. The header is prepended to the unit (``-include``) and the
+unit parsed again in full, and that parse is kept when it has fewer errors. With
+``MAX_ROUNDS`` above 1, parses without function bodies look for further waves of names
+first (a class made valid shows its other members); on real workspaces they changed
+little and cost a parse each, so the default is one round.
 """
 
 from __future__ import annotations
@@ -21,7 +23,7 @@ import re
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 
-MAX_ROUNDS = 2  # parses of a unit with the unknown names declared (0: no synthesis)
+MAX_ROUNDS = 1  # rounds of declaring unknown names (0: none; more: probes for waves)
 MAX_NAMES = 400  # names declared for one unit
 HEADER_NAME = "haros_synthesised_names.h"
 

@@ -18,10 +18,9 @@ from typing import Any
 
 import yaml
 
+from ... import safe_yaml
 from ...model.values import scalar_type
 from .. import expression
-
-MAX_YAML_NODES = 100_000
 
 
 class ParamError(ValueError):
@@ -123,37 +122,11 @@ RosparamLoader.add_implicit_resolver("!radians", re.compile(r"^rad\([^\)]*\)$"),
 
 
 def load_yaml(text: str) -> Any:
-    """One YAML document, safely; aliases are bounded (no billion laughs)."""
-    loader = RosparamLoader(text)
+    """One YAML document, safely; aliases and nesting are bounded (``safe_yaml``)."""
     try:
-        node = loader.get_single_node()
-        if node is None:
-            return None
-        _check_size(node)
-        return loader.construct_document(node)
-    except yaml.YAMLError as err:
+        return safe_yaml.load(text, RosparamLoader)
+    except yaml.YAMLError as err:  # the reader refuses control characters (DEL, form feed)
         raise ParamError(f"invalid YAML: {err}") from None
-    except RecursionError:
-        raise ParamError("YAML nested too deeply") from None
-    finally:
-        loader.dispose()
-
-
-def _check_size(root: yaml.Node) -> None:
-    """Count nodes with aliases expanded; refuse documents that would explode."""
-    count = 0
-    stack: list[yaml.Node] = [root]
-    while stack:
-        node = stack.pop()
-        count += 1
-        if count > MAX_YAML_NODES:
-            raise ParamError(f"YAML document has more than {MAX_YAML_NODES} values "
-                             "(aliases expanded)")
-        if isinstance(node, yaml.SequenceNode):
-            stack.extend(node.value)
-        elif isinstance(node, yaml.MappingNode):
-            for key, value in node.value:
-                stack.extend((key, value))
 
 
 def join(namespace: str, name: str) -> str:

@@ -16,6 +16,7 @@ import yaml
 from lxml import etree
 
 from ... import diagnostics as diag
+from ... import safe_yaml
 from ...diagnostics import Diagnostic
 from ...manifest import xml_parser
 from ...model.location import Location
@@ -324,7 +325,7 @@ def xml_entities(data: bytes) -> Entity:
 
 
 def yaml_entities(text: str) -> Entity:
-    node = yaml.compose(text, Loader=yaml.SafeLoader)
+    node = safe_yaml.compose(text)
     if not isinstance(node, yaml.MappingNode) or len(node.value) != 1:
         raise ValueError("a YAML launch file is one mapping with the key 'launch'")
     key, body = node.value[0]

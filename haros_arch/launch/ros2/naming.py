@@ -25,6 +25,7 @@ from typing import Any
 
 import yaml
 
+from ... import safe_yaml
 from ...model.values import UNKNOWN_MARK, scalar_type
 
 PARAMS_KEY = "ros__parameters"
@@ -175,7 +176,7 @@ def param_type(value: Any) -> str | None:
 def yaml_value(text: str) -> Any:
     """A parameter given as text (``-p``, a substitution) is read as YAML, like launch_ros."""
     try:
-        value = yaml.safe_load(text)
+        value = safe_yaml.load(text)
     except yaml.YAMLError:
         return text
     if value is None or isinstance(value, dict):

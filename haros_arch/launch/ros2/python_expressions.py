@@ -13,6 +13,7 @@ from dataclasses import dataclass
 from pathlib import PurePosixPath
 from typing import TYPE_CHECKING, Any
 
+from ...evaluate import budget
 from . import entities as e
 from .python_values import (
     _BINARY,
@@ -169,6 +170,16 @@ class Expressions:
         known = (str, int, float, bool, list, tuple, type(None))
         if function is None or not isinstance(left, known) or not isinstance(right, known):
             return self.unsupported(node, "operation on values not known statically")
+        try:  # the size of what it would make, before making it
+            if isinstance(op, ast.Mod) and isinstance(left, str):
+                budget.percent_length(left, right, MAX_SIZE)
+            symbol = {ast.Mult: "*", ast.Pow: "**", ast.LShift: "<<"}.get(type(op))
+            if symbol is not None:
+                budget.check_int_op(symbol, left, right)
+        except budget.OverBudget as err:
+            if err.kind == "limit":
+                raise Budget(err.reason) from None
+            return self.unsupported(node, err.reason)
         try:
             return function(left, right)
         except (TypeError, ValueError, ZeroDivisionError, OverflowError, IndexError) as err:

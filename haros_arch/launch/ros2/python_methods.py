@@ -16,8 +16,20 @@ from typing import TYPE_CHECKING, Any
 
 import yaml
 
+from ... import safe_yaml
+from ...evaluate import budget
 from . import entities as e
-from .python_values import Context, LaunchDescription, Lazy, ReadOnlyFile, Unk, concat, to_text
+from .python_values import (
+    MAX_SIZE,
+    Budget,
+    Context,
+    LaunchDescription,
+    Lazy,
+    ReadOnlyFile,
+    Unk,
+    concat,
+    to_text,
+)
 
 if TYPE_CHECKING:
     from .python import Interpreter
@@ -77,7 +89,7 @@ def safe_load(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     if text is None:
         return Unk("YAML not known statically")
     try:
-        return yaml.safe_load(text)
+        return safe_yaml.load(text)
     except yaml.YAMLError as err:
         return i.unsupported(n, f"YAML cannot be read: {err}")
 
@@ -173,6 +185,12 @@ def m_str(name: str) -> Method:
                     pieces.extend([owner, item] if index else [item])
                 return concat(pieces)
             return Unk(f"str.{name}() of a value not known statically")
+        try:  # the size of what it would make, before making it
+            budget.str_method_length(owner, name, a, k, MAX_SIZE)
+        except budget.OverBudget as err:
+            if err.kind == "limit":
+                raise Budget(err.reason) from None
+            return i.unsupported(n, f"str.{name}(): {err.reason}")
         try:
             return i.sized(getattr(owner, name)(*a, **k))
         except (TypeError, ValueError, IndexError, KeyError) as err:

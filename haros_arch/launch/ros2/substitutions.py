@@ -26,6 +26,7 @@ if TYPE_CHECKING:
 
 MAX_FILE_CONTENT = 64 * 1024
 MAX_TEXT = 100_000
+MAX_NESTING = 50  # $( inside $( ... deeper than any real file; deeper is refused
 _NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_-]*")
 
 
@@ -36,13 +37,13 @@ class SubstitutionSyntax(Exception):
 # -- parsing -----------------------------------------------------------------------
 def parse(raw: str) -> e.Text:
     """``"$(var ns)/scan"`` -> ``(Var(("ns",)), "/scan")``."""
-    parts, pos = _fragments(raw, 0, stop="")
+    parts, pos = _fragments(raw, 0, stop="", depth=0)
     if pos != len(raw):
         raise SubstitutionSyntax(f"unexpected ')' at column {pos + 1}")
     return parts
 
 
-def _fragments(raw: str, pos: int, stop: str) -> tuple[e.Text, int]:
+def _fragments(raw: str, pos: int, stop: str, depth: int) -> tuple[e.Text, int]:
     """Literal text and substitutions up to a character in ``stop`` (not consumed).
 
     A backslash escapes the character after it, as launch's grammar and its
@@ -61,7 +62,7 @@ def _fragments(raw: str, pos: int, stop: str) -> tuple[e.Text, int]:
             if buf:
                 out.append("".join(buf))
                 buf = []
-            subst, pos = _substitution(raw, pos + 2)
+            subst, pos = _substitution(raw, pos + 2, depth + 1)
             out.append(subst)
             continue
         if stop and char in stop:
@@ -70,7 +71,7 @@ def _fragments(raw: str, pos: int, stop: str) -> tuple[e.Text, int]:
             if buf:
                 out.append("".join(buf))
                 buf = []
-            quoted, pos = _quoted(raw, pos + 1, char)
+            quoted, pos = _quoted(raw, pos + 1, char, depth)
             out.extend(quoted)
             continue
         buf.append(char)
@@ -80,7 +81,7 @@ def _fragments(raw: str, pos: int, stop: str) -> tuple[e.Text, int]:
     return tuple(out), pos
 
 
-def _quoted(raw: str, pos: int, quote: str) -> tuple[e.Text, int]:
+def _quoted(raw: str, pos: int, quote: str, depth: int) -> tuple[e.Text, int]:
     """A quoted argument: backslash escapes, nested substitutions, up to ``quote``."""
     out: list[str | e.Subst] = []
     buf: list[str] = []
@@ -94,7 +95,7 @@ def _quoted(raw: str, pos: int, quote: str) -> tuple[e.Text, int]:
             if buf:
                 out.append("".join(buf))
                 buf = []
-            subst, pos = _substitution(raw, pos + 2)
+            subst, pos = _substitution(raw, pos + 2, depth + 1)
             out.append(subst)
             continue
         if char == quote:
@@ -106,7 +107,10 @@ def _quoted(raw: str, pos: int, quote: str) -> tuple[e.Text, int]:
     raise SubstitutionSyntax(f"unclosed quote {quote}")
 
 
-def _substitution(raw: str, pos: int) -> tuple[e.Subst, int]:
+def _substitution(raw: str, pos: int, depth: int) -> tuple[e.Subst, int]:
+    if depth > MAX_NESTING:
+        raise SubstitutionSyntax(f"substitutions nested more than {MAX_NESTING} deep "
+                                 f"at column {pos - 1}")
     match = _NAME.match(raw, pos)
     if match is None:
         raise SubstitutionSyntax(f"substitution without a name at column {pos + 1}")
@@ -120,7 +124,7 @@ def _substitution(raw: str, pos: int) -> tuple[e.Subst, int]:
             raise SubstitutionSyntax(f"$({name} ...) is not closed")
         if raw[pos] == ")":
             return make(name, args, raw), pos + 1
-        arg, pos = _fragments(raw, pos, stop=" \t\n)")
+        arg, pos = _fragments(raw, pos, stop=" \t\n)", depth=depth)
         args.append(arg)
 
 

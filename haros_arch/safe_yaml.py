@@ -1,0 +1,74 @@
+"""YAML from the workspace, read with bounds: the safe loader, at most ``MAX_NODES`` values
+with aliases expanded (no "billion laughs"), at most ``MAX_DEPTH`` levels of nesting.
+
+Every reader of YAML the workspace holds (rosparam files and ``<rosparam>`` in ROS 1, ROS 2
+parameter files, ROS 2 YAML launch files, ``yaml.safe_load`` in Python launch files) goes
+through ``load`` / ``compose``; a document past a bound raises ``YAMLLimit``, a
+``yaml.YAMLError``, so each reader's existing handling of bad YAML says so.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import yaml
+
+MAX_NODES = 100_000
+MAX_DEPTH = 100
+
+
+class YAMLLimit(yaml.YAMLError):
+    """The document passes a bound, or holds a number Python refuses to read."""
+
+
+def compose(text: str, loader: type[yaml.SafeLoader] = yaml.SafeLoader) -> yaml.Node | None:
+    """The document's node tree, checked against the bounds."""
+    reader = loader(text)
+    try:
+        node = reader.get_single_node()
+    except RecursionError:
+        raise YAMLLimit(f"YAML nested more than {MAX_DEPTH} levels deep") from None
+    except ValueError as err:  # int() of a huge number in a %YAML directive
+        raise YAMLLimit(f"YAML cannot be read: {err}") from None
+    finally:
+        reader.dispose()
+    if node is not None:
+        check(node)
+    return node
+
+
+def load(text: str, loader: type[yaml.SafeLoader] = yaml.SafeLoader) -> Any:
+    """``yaml.safe_load`` with the bounds (one document)."""
+    reader = loader(text)
+    try:
+        node = reader.get_single_node()
+        if node is None:
+            return None
+        check(node)
+        return reader.construct_document(node)
+    except RecursionError:
+        raise YAMLLimit(f"YAML nested more than {MAX_DEPTH} levels deep") from None
+    except ValueError as err:  # an integer of more than 4300 digits, a %YAML directive
+        raise YAMLLimit(f"YAML cannot be read: {err}") from None
+    finally:
+        reader.dispose()
+
+
+def check(root: yaml.Node) -> None:
+    """Count values with aliases expanded and measure the nesting; refuse documents past
+    the bounds before anything is constructed from them."""
+    count = 0
+    stack: list[tuple[yaml.Node, int]] = [(root, 1)]
+    while stack:
+        node, depth = stack.pop()
+        count += 1
+        if count > MAX_NODES:
+            raise YAMLLimit(f"YAML document has more than {MAX_NODES} values "
+                            "(aliases expanded)")
+        if depth > MAX_DEPTH:
+            raise YAMLLimit(f"YAML nested more than {MAX_DEPTH} levels deep")
+        if isinstance(node, yaml.SequenceNode):
+            stack.extend((item, depth + 1) for item in node.value)
+        elif isinstance(node, yaml.MappingNode):
+            for key, value in node.value:
+                stack.extend(((key, depth + 1), (value, depth + 1)))

@@ -1,0 +1,300 @@
+"""Fuzz targets: one per reader entry point, seeded from the files under fixtures/.
+
+Each target takes bytes (a mutation of a real input) and runs one reader on them; it may end
+with a diagnostic or with the reader's documented error (``ProjectError``, ``QueryError``,
+``ModelDataError``, ...), never with another exception, and never after more than
+``TIME_BOUND`` seconds (an alarm interrupts it: ``Hang``). ``tests/test_fuzz.py`` runs every
+target briefly; ``scripts/fuzz SECONDS`` runs each longer and prints executions and findings.
+"""
+
+from __future__ import annotations
+
+import json
+import signal
+import tempfile
+import time
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager, suppress
+from dataclasses import dataclass
+from pathlib import Path
+
+from hypothesis import strategies as st
+
+ROOT = Path(__file__).resolve().parent.parent
+FIXTURES = ROOT / "fixtures"
+TIME_BOUND = 10.0  # seconds per example
+MAX_SEED = 64 * 1024  # bytes of a seed file kept
+
+
+class Hang(Exception):
+    """An example ran past TIME_BOUND."""
+
+
+@contextmanager
+def time_bound(seconds: float = TIME_BOUND) -> Iterator[None]:
+    """Interrupt the example with ``Hang`` once it runs past ``seconds`` (main thread only)."""
+
+    def alarm(signum, frame):
+        raise Hang(f"example ran past {seconds} s")
+
+    if not hasattr(signal, "SIGALRM"):
+        yield
+        return
+    previous = signal.signal(signal.SIGALRM, alarm)
+    signal.setitimer(signal.ITIMER_REAL, seconds)
+    try:
+        yield
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, previous)
+
+
+# -- mutations of real inputs --------------------------------------------------------------
+
+ODD = ["\ud800", "\udfff", "\x00", "\x7f", "\x0c", "\x1b", "\u202e", "\ufeff", "\u2028",
+       "\U0001f600", "e\u0301", "\x85"]
+HUGE = ["9" * 5000, "10**10", "10**200", "1e400", "-1e400", "nan", "inf", "99999999999999999999"]
+
+
+def _encode(text: str) -> bytes:
+    return text.encode("utf-8", "surrogatepass")
+
+
+@st.composite
+def mutated(draw: st.DrawFn, seeds: list[bytes], tokens: list[str]) -> bytes:
+    """A seed with a few mutations: byte flips, truncation, duplication, deep nesting, huge
+    numbers, odd unicode (lone surrogates, control characters) and format tokens."""
+    data = bytearray(draw(st.sampled_from(seeds)))
+    for _ in range(draw(st.integers(0, 4))):
+        op = draw(st.integers(0, 7))
+        at = draw(st.integers(0, len(data))) if data else 0
+        if op == 0 and data:  # byte flip
+            i = min(at, len(data) - 1)
+            data[i] ^= 1 << draw(st.integers(0, 7))
+        elif op == 1:  # truncation
+            del data[at:]
+        elif op == 2:  # duplicate a slice, maybe many times
+            end = draw(st.integers(at, min(len(data), at + 200)))
+            data[at:at] = bytes(data[at:end]) * draw(st.sampled_from([1, 2, 10, 1000]))
+        elif op == 3:  # deep nesting with the format's own brackets
+            open_, close = draw(st.sampled_from(NESTING))
+            depth = draw(st.sampled_from([10, 100, 3000]))
+            data[at:at] = _encode(open_ * depth + close * depth)
+        elif op == 4:
+            data[at:at] = _encode(draw(st.sampled_from(HUGE)))
+        elif op == 5:
+            data[at:at] = _encode(draw(st.sampled_from(ODD)))
+        elif op == 6 and tokens:
+            data[at:at] = _encode(draw(st.sampled_from(tokens)))
+        elif op == 7:
+            data[at:at] = draw(st.binary(max_size=8))
+    return bytes(data)
+
+
+NESTING = [("[", "]"), ("{", "}"), ("(", ")"), ("<group>", "</group>"), ("- ", ""),
+           ("if(TRUE)\n", "endif()\n"), ("$(eval ", ")")]
+
+
+def _seeds(patterns: list[str]) -> list[bytes]:
+    found = []
+    for pattern in patterns:
+        for path in sorted(FIXTURES.glob(pattern)):
+            if path.is_file() and not path.is_symlink():
+                found.append(path.read_bytes()[:MAX_SEED])
+    return found or [b""]
+
+
+# -- a small workspace the readers run in -------------------------------------------------
+
+PACKAGE_XML = ('<?xml version="1.0"?>\n<package format="2"><name>{name}</name>'
+               '<version>0.1.0</version><description>d</description>'
+               '<maintainer email="m@e.org">m</maintainer><license>BSD</license>'
+               '<buildtool_depend>{tool}</buildtool_depend></package>\n')
+
+
+class _Workspace:
+    """A ROS 1 package and a ROS 2 package in a temporary folder, made once per process."""
+
+    def __init__(self) -> None:
+        from haros_arch.workspace import scan
+
+        self.root = Path(tempfile.mkdtemp(prefix="haros-arch-fuzz-"))
+        for name, tool in (("fz1", "catkin"), ("fz2", "ament_cmake")):
+            folder = self.root / "src" / name
+            (folder / "launch").mkdir(parents=True)
+            (folder / "config").mkdir()
+            (folder / "package.xml").write_text(PACKAGE_XML.format(name=name, tool=tool))
+            (folder / "CMakeLists.txt").write_text(f"project({name})\n")
+        self.workspace = scan([str(self.root / "src")], {"ROS_DISTRO": "noetic"})
+
+    def write(self, rel: str, data: bytes) -> str:
+        path = self.root / "src" / rel
+        path.write_bytes(data)
+        return str(path)
+
+
+_WS: _Workspace | None = None
+
+
+def workspace() -> _Workspace:
+    global _WS
+    if _WS is None:
+        _WS = _Workspace()
+    return _WS
+
+
+# -- the targets ----------------------------------------------------------------------------
+
+
+def _project(data: bytes) -> None:
+    from haros_arch.project import ProjectError, load
+
+    path = workspace().write("project.yaml", data)
+    with suppress(ProjectError):
+        load(path)
+
+
+def _package_xml(data: bytes) -> None:
+    from haros_arch.manifest import parse_manifest
+    from haros_arch.model.source import Location
+
+    path = workspace().write("fz1/package.xml.fuzz", data)
+    parse_manifest(path, Location("fz1", "package.xml"), "fz1", {"ROS_DISTRO": "noetic"})
+
+
+def _cmake(data: bytes) -> None:
+    from haros_arch.cmake import interpret
+
+    ws = workspace()
+    ws.write("fz1/CMakeLists.txt", data)
+    interpret(ws.workspace.packages["fz1"], ws.workspace)
+
+
+def _launch(rel: str) -> Callable[[bytes], None]:
+    def run(data: bytes) -> None:
+        from haros_arch.launch import load
+
+        ws = workspace()
+        load(ws.write(rel, data), ws.workspace, {"x": "1"}, {"ROS_DISTRO": "noetic"})
+
+    return run
+
+
+def _rosparam(data: bytes) -> None:
+    """rosparam YAML, both through the ROS 1 reader and as a ROS 2 parameter file."""
+    from haros_arch.launch import load
+    from haros_arch.launch.ros1.params import ParamError, load_yaml
+
+    with suppress(ParamError):
+        load_yaml(data.decode("utf-8", "surrogateescape"))
+    ws = workspace()
+    ws.write("fz2/config/params.yaml", data)
+    launch = ws.write("fz2/launch/params.launch.xml",
+                      b'<launch><node pkg="fz2" exec="n" name="n">'
+                      b'<param from="$(find-pkg-share fz2)/config/params.yaml"/>'
+                      b'</node></launch>')
+    load(launch, ws.workspace, {}, {"ROS_DISTRO": "humble"})
+
+
+_MODEL_JSON: str | None = None
+
+
+def _query(data: bytes) -> None:
+    from haros_arch.model.load import from_data
+    from haros_arch.query import compile, model_scope
+    from haros_arch.query.errors import QueryError
+
+    global _MODEL_JSON
+    if _MODEL_JSON is None:
+        _MODEL_JSON = (FIXTURES / "paper_minimal" / "expected.json").read_text()
+    model = from_data(json.loads(_MODEL_JSON))
+    text = data.decode("utf-8", "surrogateescape")
+    with suppress(QueryError):
+        compile(text).run(model_scope(model), max_seconds=5)
+
+
+def _saved_model(data: bytes) -> None:
+    from haros_arch.model.load import ModelDataError, from_data
+
+    try:
+        document = json.loads(data)
+    except (ValueError, RecursionError):
+        return  # not JSON: the CLI's reader says so before the model reader runs
+    with suppress(ModelDataError):
+        from_data(document)
+
+
+def _query_seeds() -> list[bytes]:
+    import yaml
+
+    found = []
+    for path in sorted((ROOT / "queries").glob("*.yaml")):
+        query = yaml.safe_load(path.read_text()).get("query")
+        if isinstance(query, str):
+            found.append(query.encode())
+    return [*found, b"nodes[name = '/a']", b"count(topics) > 1", b"round(5, 2)"]
+
+
+@dataclass
+class Target:
+    name: str
+    run: Callable[[bytes], None]
+    seed_patterns: list[str]
+    tokens: list[str]
+    extra_seeds: Callable[[], list[bytes]] | None = None
+
+    def seeds(self) -> list[bytes]:
+        return _seeds(self.seed_patterns) + (self.extra_seeds() if self.extra_seeds else [])
+
+    def strategy(self) -> st.SearchStrategy[bytes]:
+        return mutated(self.seeds(), self.tokens)
+
+    def check(self, data: bytes) -> float:
+        """Run one example under the time bound; the seconds it took."""
+        started = time.monotonic()
+        with time_bound():
+            self.run(data)
+        return time.monotonic() - started
+
+
+EVAL = ["$(eval ", "'{0:{1}}'.format('a', 10**10)", "'%*d' % (10**9, 1)", "'x' * 10**9",
+        "range(10**9)", "sum([[1]] * 10**6, [])", "((10**200)**200)**200", "'{0.__class__}'",
+        "__import__", ".__class__", "$(arg x)", "$(env HOME)", "$(find fz1)", "$(anon a)",
+        "$(dirname)", "$(optenv A b)", "$(var x)", "$(find-pkg-share fz2)"]
+ROS1_TOKENS = [*EVAL, '<arg name="y" default="$(arg x)$(arg x)"/>', '<include file="',
+               '<group ns="a">', '<node pkg="fz1" type="n" name="n"/>', '<rosparam>',
+               '<param name="p" value="', 'if="', '&#', '<!ENTITY']
+ROS2_TOKENS = [*EVAL, '<let name="y" value="$(var x)$(var x)"/>', '<include file="',
+               '<node pkg="fz2" exec="n" name="n">', 'OpaqueFunction', 'lambda',
+               'LaunchConfiguration(', 'DeclareLaunchArgument(', 'for i in ', 'while ', 'def f(',
+               'import os', 'IfCondition(', 'PythonExpression([', '**']
+YAML_TOKENS = ["&a ", "*a", "<<: *a", "!!binary ", "!!python/object ", "deg(", "rad(", "? ",
+               "--- ", "...\n", "\t", "\x7f", "\x0c", "{", "[", ": ", "- ", "'", '"']
+CMAKE_TOKENS = ["${", "}", "set(a ${a} ${a})", "list(APPEND a ${a})", "string(REGEX MATCH ",
+                "(a*)*b", "macro(m)", "function(f)", "foreach(i RANGE 10000)", "while(1)",
+                "include(", "add_subdirectory(", "[==[", "]==]", "$ENV{", "endif()", "if("]
+QUERY_TOKENS = ["round(5, -10**9)", "int(float('1e400'))", "10**10**10", "[", "]", "(", ")",
+                "for x in ", "let x := ", "where ", "return ", "count(", "nodes", "topics",
+                "'x' * 10**9", "__class__", ".name", "//", "=~", "'\\'", "1e400"]
+
+TARGETS: dict[str, Target] = {t.name: t for t in [
+    Target("project", _project, ["*/project*.yaml", "*/*/project*.yaml"],
+           [*YAML_TOKENS, "launch: ", "queries: ", "workspace: ", "severity: "]),
+    Target("package_xml", _package_xml, ["**/package.xml", "**/manifest.xml"],
+           ['condition="$ROS_VERSION == 1"', "<depend>", "<export>", "&#", "<!ENTITY"]),
+    Target("cmake", _cmake, ["**/CMakeLists.txt", "**/*.cmake"], CMAKE_TOKENS),
+    Target("ros1_launch", _launch("fz1/launch/f.launch"),
+           ["launch_ros1/**/*.launch", "launch_ros1/**/*.launch.xml"], ROS1_TOKENS),
+    Target("ros2_xml_launch", _launch("fz2/launch/f.launch.xml"),
+           ["launch_ros2/**/*.launch.xml", "**/*.launch.xml"], ROS2_TOKENS),
+    Target("ros2_yaml_launch", _launch("fz2/launch/f.launch.yaml"),
+           ["**/*.launch.yaml"], ROS2_TOKENS + YAML_TOKENS),
+    Target("ros2_python_launch", _launch("fz2/launch/f_launch.py"),
+           ["**/*_launch.py", "**/*.launch.py"], ROS2_TOKENS),
+    Target("rosparam_yaml", _rosparam, ["launch_ros1/**/*.yaml", "launch_ros2/**/config/*.yaml",
+                                        "launch_ros2/**/params/*.yaml"], YAML_TOKENS),
+    Target("query", _query, [], QUERY_TOKENS, _query_seeds),
+    Target("saved_model", _saved_model, ["paper_minimal/expected.json"],
+           ['"nodes": ', '"configurations": [', "null", "1e400", '"\\ud800"', "[[[[", "{}"]),
+]}
+
