@@ -7,6 +7,7 @@ from pathlib import Path
 from haros_arch.graph import build
 from haros_arch.launch.model import LaunchModel, NodeDecl, ParamDecl
 from haros_arch.model import Configuration, Location, Node, PrimitiveCall
+from haros_arch.model.values import UNKNOWN_MARK
 from haros_arch.plugins.attach import spawn_args
 from haros_arch.workspace import Workspace
 
@@ -211,6 +212,16 @@ def test_a_manager_named_only_by_its_code_serves_the_spawners_of_its_namespace(t
     assert config.node("/robot/controller_manager") is not None
     assert [n.name for n in config.nodes if n.origin == "plugin"] == ["/robot/bcast"]
     assert links_of(config, "/robot/bcast") == [("publish", "/robot/joint_states")]
+    assert all(p.is_read for p in config.parameters if p.set_by_launch)
+    # a manager whose code is here but does not say its name: the spawner still reaches
+    # it, and the <name>.type it sets is not put under a name no instance has (it would
+    # be "set but never read")
+    manager = Node("controller_manager", "ros2_control_node")
+    config = graph(decls, nodes=[bcast, manager], root=str(tmp_path))
+    assert UNKNOWN_MARK in config.nodes[0].name or config.nodes[0].name.endswith(
+        "/ros2_control_node")
+    assert [n.name for n in config.nodes if n.origin == "plugin"] == ["/robot/bcast"]
+    assert not [p.name for p in config.parameters if p.set_by_launch]
 
 
 def test_a_hostile_or_broken_spawner_file_is_a_diagnostic(tmp_path):

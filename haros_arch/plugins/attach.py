@@ -342,10 +342,11 @@ def _spawned(host: NodeInstance, started: Sequence[tuple[NodeDecl, NodeInstance]
                     document, manager) if key == f"{controller}.type")
             where = documents[0][1] if documents else decl.location
             _set_params(params, node_name, own, where, instance.conditions)
-            _set_params(params, manager, managed, where, instance.conditions)
+            if manager == host.name:  # else no instance has the manager's real name
+                _set_params(params, manager, managed, where, instance.conditions)
             typed = _parameter(params, f"{manager}/{controller}.type")
-            cls = spawn.controller_type or _text(own.get("type")) or (
-                _text(typed.value) if typed else None)
+            cls = spawn.controller_type or _text(own.get("type")) or _text(
+                managed.get(f"{controller}.type")) or (_text(typed.value) if typed else None)
             reads = (f"{node_name}/type",) if "type" in own else (
                 (typed.name,) if typed else ())
             if typed is not None and not _text(own.get("type")) and not managed:
