@@ -16,7 +16,9 @@ without errors, the API form), the clang errors (at most 50 per file) per unit b
 and after the names clang did not know were declared (``CPP_NAMES_DECLARED``), and
 the cold extraction time per unit. ``--misses N`` lists N missed sites per workspace;
 ``--no-synthesis`` turns the declaration of unknown names off; ``--timing`` first
-extracts the same units without it and prints the ratio of the two cold times.
+extracts the same units without it and prints the ratio of the two cold times. Times are
+this process's CPU time (with ``--jobs 1`` every parse is in it), so the load of other
+processes on the machine does not change them.
 """
 
 from __future__ import annotations
@@ -119,15 +121,15 @@ def census(spec: str, jobs: int, timing: bool) -> None:
     if timing:  # the same units without the declaration of unknown names, first
         from haros_arch.extract.cpp import synthesis
         rounds, synthesis.MAX_ROUNDS = synthesis.MAX_ROUNDS, 0
-        started = time.perf_counter()
+        started = time.process_time()
         extract_cpp_nodes([[unit] for unit in units], workspace, cache_dir=None, jobs=jobs)
-        baseline = time.perf_counter() - started
+        baseline = time.process_time() - started
         synthesis.MAX_ROUNDS = rounds
-    started = time.perf_counter()
+    started = time.process_time()
     # one "node" per translation unit: each result holds that unit's calls and errors
     batch = extract_cpp_nodes([[unit] for unit in units], workspace, cache_dir=None,
                               jobs=jobs)
-    elapsed = time.perf_counter() - started
+    elapsed = time.process_time() - started
     before_after = [0, 0, 0, 0]  # errors before, after; units with errors before, after
     calls: dict[str, dict[int, set[str]]] = collections.defaultdict(
         lambda: collections.defaultdict(set))
@@ -173,7 +175,7 @@ def census(spec: str, jobs: int, timing: bool) -> None:
     print("   by kind: " + ", ".join(f"{k} {v[0]}/{v[1]}" for k, v in sorted(per_kind.items())))
     print(f"   clang errors: {before_after[0]} before synthesis in {before_after[2]} units, "
           f"{before_after[1]} after in {before_after[3]} units")
-    print(f"   cold extraction {elapsed:.1f} s, {1000 * elapsed / max(len(units), 1):.0f} ms "
+    print(f"   cold extraction {elapsed:.1f} s CPU, {1000 * elapsed / max(len(units), 1):.0f} ms "
           f"per unit (jobs {jobs})" + ("" if baseline is None else
                                        f"; without synthesis {baseline:.1f} s, ratio "
                                        f"{elapsed / max(baseline, 1e-9):.2f}"))

@@ -9,7 +9,7 @@ workspaces under /work/ws) with the haros_arch of ``--root`` (default: this chec
 give another checkout to measure before a change), prints the count of findings per
 severity and per rule, and writes the warnings and errors to ``--out``. The second
 form prints them as a markdown table joined with ``--verdicts`` (default:
-``bench/findings_verdicts.yaml``: for each project, rule and message, ``true`` or
+``bench/findings_verdicts.yaml``: for each project, rule and message, ``verdict`` true or
 ``false`` and why, written by reading the source each finding points at) and the share
 of true ones.
 """
@@ -84,9 +84,9 @@ def table(args: argparse.Namespace) -> None:
     judged = true = 0
     for f in findings:
         v = lookup.get((f["project"], f["rule"], f["message"]))
-        verdict = "?" if v is None else "true" if v["true"] else "false"
+        verdict = "?" if v is None else "true" if v["verdict"] else "false"
         judged += v is not None
-        true += bool(v and v["true"])
+        true += bool(v and v["verdict"])
         configs = ", ".join(f.get("configurations") or [f.get("configuration") or ""])
         message = f["message"].replace("|", "\\|")
         why = (v or {}).get("why", "").replace("|", "\\|")

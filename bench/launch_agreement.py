@@ -1,6 +1,6 @@
 """Agreement of our ROS 1 launch interpreter with the real roslaunch on folders.
 
-    .venv/bin/python bench/launch_agreement.py FOLDER [FOLDER ...] [-v]
+    .venv/bin/python bench/launch_agreement.py FOLDER [FOLDER ...] [-v] [--env NAME=VALUE ...]
 
 Every ``*.launch``, ``*.launch.xml``, ``*.test`` (and other ``*.xml`` with a ``<launch>``
 root) under each FOLDER is loaded by Debian's roslaunch (``/usr/bin/python3``, through
@@ -11,8 +11,9 @@ FOLDERs should be ROS 1 repositories: a ``*.launch.xml`` there is handed to rosl
 and to ours as it decides. Prints, per folder and in total, the share of roslaunch's node
 instances (all fields: name, namespace, package, type, args, remaps, machine, respawn,
 required, test) and of its parameters (name, value and type) we reproduce exactly, and
-each difference (``-v``). Files that roslaunch refuses are counted apart, with whether we
-report an error too.
+each difference (``-v``). ``--env`` sets a variable for both sides (a robot's env-hook
+defaults, e.g. ``TURTLEBOT_BASE=kobuki``). Files that roslaunch refuses are counted
+apart, with whether we report an error too.
 """
 
 from __future__ import annotations
@@ -45,10 +46,10 @@ def launch_files(folder: Path) -> list[Path]:
     return out
 
 
-def environment(package_path: str, home: str) -> dict[str, str]:
+def environment(package_path: str, home: str, extra: dict[str, str]) -> dict[str, str]:
     """The environment both sides see."""
     return {"PATH": "/usr/bin:/bin", "HOME": home, "ROS_HOME": home, "LANG": "C.UTF-8",
-            "ROS_PACKAGE_PATH": package_path}
+            **extra, "ROS_PACKAGE_PATH": package_path}
 
 
 def roslaunch(files: list[Path], env: dict[str, str]) -> list[dict[str, Any]]:
@@ -81,11 +82,12 @@ def same_value(ours: Any, theirs: Any) -> bool:
     return ours == theirs and type(ours) is type(theirs)
 
 
-def compare(folder: Path, package_path: str, verbose: bool) -> list[int]:
+def compare(folder: Path, package_path: str, extra: dict[str, str],
+            verbose: bool) -> list[int]:
     """[nodes agreeing, nodes, parameters agreeing, parameters, refused, refused seen]"""
     files = launch_files(folder)
     with tempfile.TemporaryDirectory() as home:
-        env = environment(package_path, home)
+        env = environment(package_path, home, extra)
         workspace = scan([str(folder)], env)
         return _compare(folder, files, roslaunch(files, env), workspace, env, verbose)
 
@@ -153,11 +155,13 @@ def share(agree: int, total: int) -> str:
 
 def main(argv: list[str]) -> int:
     verbose = "-v" in argv
-    folders = [Path(a).resolve() for a in argv if a != "-v"]
+    extra = dict(argv[i + 1].split("=", 1) for i, a in enumerate(argv[:-1]) if a == "--env")
+    values = {argv[i + 1] for i, a in enumerate(argv[:-1]) if a == "--env"}
+    folders = [Path(a).resolve() for a in argv if a not in ("-v", "--env") and a not in values]
     package_path = ":".join(str(f) for f in folders)
     grand = [0] * 6
     for folder in folders:
-        counts = compare(folder, package_path, verbose)
+        counts = compare(folder, package_path, extra, verbose)
         grand = [a + b for a, b in zip(grand, counts, strict=True)]
         print(f"{folder.name}: nodes {share(*counts[0:2])}, parameters "
               f"{share(*counts[2:4])}, all {share(counts[0] + counts[2], counts[1] + counts[3])}"

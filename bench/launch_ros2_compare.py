@@ -514,6 +514,8 @@ def compare(ours: list[dict[str, Any]], real: list[dict[str, Any]], tally: Count
                 a, b = _split(a), theirs["argv"]
             if field == "namespace" and theirs["composable"] and b == "":
                 b = a  # an empty request namespace: the container decides
+            if field == "container" and isinstance(b, str) and b and not b.startswith("/"):
+                b = "/" + b  # <name>/_container/load_node from launch_ros' node, in "/"
             same = a == b
             tally[f"{field}.{'agree' if same else 'differ'}"] += 1
             if not same:

@@ -274,12 +274,19 @@ def open_choice(path: str) -> Choice:
     chosen as ``choose`` does, once per process (commands ask more than once)."""
     from .project import load
 
+    key: tuple[object, ...]
     if is_project_file(path):
-        project = load(path)
-        launch, args = _selection
-        for spec in project.configurations:
-            spec.args.update(dict(args))
-        return Choice(project)
+        try:  # read once per command (and again only when the file changed)
+            key = (os.path.abspath(path), os.stat(path).st_mtime_ns, *_selection)
+        except OSError:
+            key = (os.path.abspath(path), None, *_selection)
+        if key not in _chosen:
+            project = load(path)
+            launch, args = _selection
+            for spec in project.configurations:
+                spec.args.update(dict(args))
+            _chosen[key] = Choice(project)
+        return _chosen[key]
     key = (os.path.abspath(path), *_selection)
     if key not in _chosen:
         launch, args = _selection

@@ -12,6 +12,7 @@ import os
 import sys
 from collections.abc import Sequence
 from functools import partial
+from typing import TYPE_CHECKING
 
 from rich.console import Console
 from rich.markup import escape
@@ -24,6 +25,10 @@ from .model.model import Model
 from .pipeline import Options, analyse
 from .project import ProjectError
 from .report.text import print_diagnostics, print_summary
+
+if TYPE_CHECKING:
+    from .launch.model import LaunchModel
+    from .workspace import Workspace
 
 EXIT_OK, EXIT_FINDINGS, EXIT_USAGE, EXIT_INTERNAL = 0, 1, 2, 3
 
@@ -89,6 +94,12 @@ def _parser() -> argparse.ArgumentParser:
     launch.add_argument("--arg", action="append", default=[], metavar="NAME:=VALUE")
     launch.add_argument("--workspace", default=".", help="workspace folder (default: .)")
     launch.add_argument("--format", choices=("text", "json"), default="text")
+    launch.add_argument("--flatten", action="store_true",
+                        help="write one roslaunch XML file with every include inlined and "
+                             "every argument and decided condition applied (ROS 1)")
+    launch.add_argument("--tree", action="store_true",
+                        help="show how the files make the nodes: includes with their "
+                             "arguments, groups, remaps, conditions")
 
     models = sub.add_parser("models", help="interface models of packages without source")
     models_sub = models.add_subparsers(dest="models_command", required=True)
@@ -109,6 +120,22 @@ def _parser() -> argparse.ArgumentParser:
     build.add_argument("--scheduler", metavar="ADDRESS",
                        help="run on this Dask distributed scheduler (needs the 'dask' extra)")
     build.add_argument("--no-cache", action="store_true", help="parse every source again")
+
+    diff = sub.add_parser("diff", help="what a change does to the architecture: two saved "
+                          "models, or two git revisions (--rev BASE..HEAD)")
+    diff.add_argument("sides", nargs="*", metavar="OLD NEW | PATH",
+                      help="two saved models (extract -o); with --rev, the project file or "
+                           "workspace folder relative to the repository root (default: .)")
+    diff.add_argument("--rev", metavar="BASE..HEAD",
+                      help="analyse both revisions from git objects (the working tree is "
+                           "not touched)")
+    diff.add_argument("--repo", default=".", help="the git repository (default: .)")
+    diff.add_argument("--format", choices=("text", "json", "markdown"), default="text")
+    diff.add_argument("--fail-on", choices=("new-error", "new-warning", "never"),
+                      default="never", help="exit 1 when a new finding at or above this "
+                                            "severity appears (default: never)")
+    diff.add_argument("-o", "--output", help="write the diff here (default: stdout)")
+    _run_options(diff)
 
     init = sub.add_parser("init", help="write a project file for a workspace or launch "
                           "file: the configurations check would choose, to edit")
@@ -207,9 +234,22 @@ def cmd_query(args: argparse.Namespace, out: Console, err: Console) -> int:
 
 
 def cmd_explain(args: argparse.Namespace, out: Console, err: Console) -> int:
-    from .query.catalogue import load_catalogue
+    from .query.catalogue import QUERY_LIMIT, UNDECIDED, load_catalogue
 
     rules = {rule.id: rule for rule in load_catalogue()}
+    if args.code == QUERY_LIMIT:
+        out.print(f"[bold]{QUERY_LIMIT}[/bold] (warning)\n  A rule used more than its step "
+                  "budget in a configuration and was stopped; its findings there are not "
+                  "known. It never fails --fail-on error by itself.", highlight=False)
+        return EXIT_OK
+    if args.code and args.code.endswith(UNDECIDED) and args.code[:-len(UNDECIDED)] in rules:
+        base = args.code[:-len(UNDECIDED)]
+        out.print(f"[bold]{escape(args.code)}[/bold] (info): the matches of {escape(base)} "
+                  "that a node of partial or unknown interface (or one using a name not "
+                  "known statically, or serving dynamic_reconfigure) could contradict, "
+                  "counted in one finding per configuration with the nodes in the way; "
+                  "they are not reported as findings.", highlight=False)
+        args.code = base
     if args.code and args.code not in CATALOGUE and args.code not in rules:
         err.print(f"haros-arch: {escape(args.code)} is neither a diagnostic code nor a "
                   "rule id ('haros-arch explain' lists them)", highlight=False)
@@ -253,6 +293,38 @@ def cmd_init(args: argparse.Namespace, out: Console, err: Console) -> int:
     if args.output:
         err.print(f"wrote {escape(args.output)}", highlight=False)
     return EXIT_OK
+
+
+def cmd_diff(args: argparse.Namespace, out: Console, err: Console) -> int:
+    from . import diff
+
+    try:
+        if args.rev:
+            if len(args.sides) > 1:
+                err.print("haros-arch: diff --rev takes at most one PATH", highlight=False)
+                return EXIT_USAGE
+            result, notes = diff.compare_revisions(
+                args.rev, args.sides[0] if args.sides else ".", args.repo, _options(args))
+            for note in notes:
+                err.print(f"haros-arch: {escape(note)}", highlight=False)
+        elif len(args.sides) == 2:
+            (old, old_found), (new, new_found) = (diff.load_saved(p) for p in args.sides)
+            result = diff.compare(old, new, old_found, new_found, *args.sides)
+        else:
+            err.print("haros-arch: diff takes OLD NEW (saved models) or --rev BASE..HEAD "
+                      "[PATH]", highlight=False)
+            return EXIT_USAGE
+    except diff.DiffError as error:
+        err.print(f"haros-arch: diff: {escape(str(error))}", highlight=False)
+        return EXIT_USAGE
+    if args.format == "text" and not args.output:
+        diff.print_text(result, out)
+    else:
+        render = {"text": diff.to_text, "json": diff.to_json, "markdown": diff.to_markdown}
+        _write(render[args.format](result), args.output)
+    if args.output:
+        err.print(escape(diff.summary(result)), highlight=False)
+    return EXIT_FINDINGS if result.fails(args.fail_on) else EXIT_OK
 
 
 def cmd_capture(args: argparse.Namespace, out: Console, err: Console) -> int:
@@ -340,11 +412,36 @@ def cmd_launch(args: argparse.Namespace, out: Console, err: Console) -> int:
         path = os.path.join(folder, args.file[1])
     given = dict(a.split(":=", 1) for a in args.arg)
     model = load_launch(path, workspace, given, dict(os.environ))
+    if args.flatten:
+        return _flatten(path, workspace, model, out, err)
     if args.format == "json":
         out.print(json.dumps(as_data(model), indent=2), highlight=False, markup=False)
+    elif args.tree:
+        from .launch.tree_view import as_rich
+
+        if not out.is_terminal:  # a file or a pipe: whole lines, not cut at 80 columns
+            out.width = 1_000
+        out.print(as_rich(model.tree), highlight=False, crop=False)
+        print_diagnostics(model.diagnostics, err)
     else:
         out.print(as_text(model), highlight=False, markup=False)
         print_diagnostics(model.diagnostics, err)
+    return EXIT_OK
+
+
+def _flatten(path: str, workspace: Workspace, model: LaunchModel, out: Console,
+             err: Console) -> int:
+    from .launch.dialect import ros_version
+    from .launch.ros1.flatten import flatten
+
+    if ros_version(path, workspace) != 1:
+        err.print("haros-arch: --flatten writes ROS 1 launch files only", highlight=False)
+        return EXIT_USAGE
+    text, notes = flatten(model)
+    out.print(text, highlight=False, markup=False, end="")
+    for line in notes:
+        err.print(f"note: {escape(line)}", highlight=False)
+    print_diagnostics(model.diagnostics, err)
     return EXIT_OK
 
 
@@ -385,7 +482,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     handlers = {"extract": cmd_extract, "check": cmd_check, "explain": cmd_explain,
                 "capture": cmd_capture, "compare": cmd_compare, "report": cmd_report,
                 "launch": cmd_launch, "query": cmd_query, "init": cmd_init,
-                "models": cmd_models}
+                "models": cmd_models, "diff": cmd_diff}
     try:
         return handlers[args.command](args, out, err)
     except KeyboardInterrupt:

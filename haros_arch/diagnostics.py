@@ -95,12 +95,31 @@ CATALOGUE: dict[str, Entry] = {
     "PLUGIN_XML_SYNTAX": Entry(
         "error", "plugin description is not well-formed XML: {detail}",
         "A plugin description file exported in package.xml could not be parsed; its "
-        "nodelets are unknown."),
+        "nodelets and plugin classes are unknown."),
     "PLUGIN_LIBRARY_UNKNOWN": Entry(
         "warning", "no target of the package builds library {library} of plugin {plugin}",
         "The plugin description names a library that no add_library of the package "
-        "builds and no PLUGINLIB_EXPORT_CLASS in a library names the class; the nodelet "
-        "is kept without sources."),
+        "builds and no PLUGINLIB_EXPORT_CLASS in a library names the class; the nodelet or "
+        "plugin is kept without sources."),
+    "PLUGIN_NOT_FOUND": Entry(
+        "warning", "plugin class {plugin} loaded by {host} is not exported by an analysed "
+        "package",
+        "A host node (controller manager, nav2 server or costmap, move_base) is told to "
+        "load a plugin class that no analysed package exports in a plugin description (it "
+        "comes from an installed package, its package is not among the project file's "
+        "packages, or the name is wrong); the host instance is partial: the plugin's "
+        "calls are unknown."),
+    "PLUGIN_CLASS_UNKNOWN": Entry(
+        "warning", "the class of plugin {plugin} loaded by {host} is not known",
+        "The parameter that gives the plugin's class (``<name>.plugin``, ``<name>.type``, "
+        "``base_global_planner``, a spawner's parameter file) is not set or its value is "
+        "not known statically; the host instance is partial."),
+    "PLUGIN_PARAM_FILE": Entry(
+        "warning", "parameter file {path} of a controller spawner cannot be read",
+        "A controller_manager spawner's --param-file names a file that does not exist, "
+        "lies outside the workspace and installed packages, is not YAML, or is too big "
+        "once its YAML aliases are expanded; the "
+        "controllers it configures keep no parameters from it."),
     # launch files
     "LAUNCH_FILE_MISSING": Entry(
         "error", "launch file {path} does not exist",

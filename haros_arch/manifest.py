@@ -203,8 +203,7 @@ def _parse_rosbuild(path: str, location: Location,
         where = Location(None, location.file, line, col)
         return None, [*found, diag.make("PACKAGE_XML_SYNTAX", where, detail=err.msg)]
     if root.tag != "package":
-        return None, [*found, diag.make("PACKAGE_XML_INVALID", location,
-                                        detail=f"root element is <{root.tag}>")]
+        return None, found  # some other tool's manifest.xml: no ROS package, nothing wrong
     name = os.path.basename(os.path.dirname(os.path.abspath(path)))
     package = Package(name=name, path=rel_folder, format=1, build_type="catkin",
                       version=(root.findtext("version") or "").strip(),

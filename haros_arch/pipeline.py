@@ -89,6 +89,7 @@ def analyse(project: Project, environment: Mapping[str, str] | None = None,
         known = models.nodes_for(launches[spec.name], workspace, nodes, config.environment,
                                  config.diagnostics)  # interface models (no source here)
         graph.build(config, launches[spec.name], workspace, known)
+        config.launch_tree = launches[spec.name].tree
         if spec.hints:
             where = Location(file=project_file.file, line=spec.line, column=1)
             config.diagnostics.extend(graph.apply_hints(config, spec.hints, nodes, where))
@@ -163,6 +164,7 @@ def _load_launch(spec: ConfigurationSpec, project: Project, workspace: Workspace
             lambda: launch.load(path, workspace, spec.args,  # noqa: B023 (called at once)
                                 {**env, **spec.environment}), LaunchModel())
         merged.files.extend(loaded.files)
+        merged.tree.extend(loaded.tree)
         offset = len(merged.nodes)
         merged.nodes.extend(loaded.nodes)
         merged.params.extend(param if param.owner is None else replace(

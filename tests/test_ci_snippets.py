@@ -9,6 +9,7 @@ import os
 import re
 import shlex
 import shutil
+import subprocess
 from pathlib import Path
 
 import pytest
@@ -43,7 +44,13 @@ def commands(value) -> list[str]:
 def test_the_three_snippets_have_their_tools_shape() -> None:
     found = snippets()
     assert set(found) == {".github/workflows/architecture.yml", ".gitlab-ci.yml",
-                          ".pre-commit-config.yaml"}
+                          ".pre-commit-config.yaml", ".github/workflows/architecture-diff.yml"}
+    pull = found[".github/workflows/architecture-diff.yml"]["jobs"]["haros-arch-diff"]
+    assert pull["permissions"]["pull-requests"] == "write"
+    assert pull["steps"][0]["with"]["fetch-depth"] == 0
+    posted = next(s["run"] for s in pull["steps"] if "gh pr comment" in s.get("run", ""))
+    assert any(s.get("run", "").endswith(f"-o {posted.split()[-1]} --fail-on never")
+               for s in pull["steps"])
     workflow = found[".github/workflows/architecture.yml"]
     steps = workflow["jobs"]["haros-arch"]["steps"]
     upload = next(s for s in steps if str(s.get("uses", "")).startswith(
@@ -64,9 +71,14 @@ def test_the_three_snippets_have_their_tools_shape() -> None:
 
 @pytest.mark.parametrize("command", sorted({c for s in snippets().values()
                                             for c in commands(s)}))
-def test_each_command_runs_on_the_example(command: str, tmp_path: Path) -> None:
+def test_each_command_runs_on_the_example(command: str, tmp_path: Path,
+                                          monkeypatch: pytest.MonkeyPatch) -> None:
     shutil.copytree(ROOT / "examples", tmp_path / "repo")
     argv = shlex.split(command)[1:]
+    if argv[0] == "diff":  # a pull request: the base branch, then a commit dropping a remap
+        _pull_request(tmp_path / "repo")
+        monkeypatch.setenv("GITHUB_BASE_REF", "main")
+        argv = [os.path.expandvars(a) for a in argv]
     here = os.getcwd()
     os.chdir(tmp_path / "repo")
     try:
@@ -79,5 +91,21 @@ def test_each_command_runs_on_the_example(command: str, tmp_path: Path) -> None:
         written = tmp_path / "repo" / argv[argv.index("-o") + 1]
         if "sarif" in argv:
             assert json.loads(written.read_text())["runs"][0]["results"]
+        if "markdown" in argv:
+            assert written.read_text().startswith("### haros-arch: architecture diff")
         if "junit" in argv:
             assert etree.parse(str(written)).getroot().tag in ("testsuites", "testsuite")
+
+
+def _pull_request(root: Path) -> None:
+    def git(*args: str) -> None:
+        subprocess.run(["git", "-C", str(root), "-c", "user.name=t", "-c", "user.email=t@t",
+                        *args], check=True, capture_output=True)
+
+    git("init", "-q")
+    git("add", "-A")
+    git("commit", "-qm", "base")
+    git("update-ref", "refs/remotes/origin/main", "HEAD")
+    launch = root / "src/demo_robot/launch/robot.launch"
+    launch.write_text(launch.read_text().replace('<remap from="scan" to="base_scan" />', ""))
+    git("commit", "-qam", "drop a remap")

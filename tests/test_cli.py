@@ -126,6 +126,13 @@ def test_explain_lists_codes(capsys):
     assert main(["explain", "LAUNCH_UNKNOWN_TAG"]) == 0
     assert "roslaunch ignores tags" in capsys.readouterr().out
     assert main(["explain", "NO_SUCH_CODE"]) == 2
+    capsys.readouterr()
+    # the ids of findings that are not rules of their own: what they are, and the rule
+    assert main(["explain", "parameter-set-not-read-undecided"]) == 0
+    text = capsys.readouterr().out
+    assert "partial or unknown interface" in text and "Parameter set but never read" in text
+    assert main(["explain", "query-limit"]) == 0
+    assert "step budget" in capsys.readouterr().out
 
 
 def test_text_that_looks_like_markup_is_printed_as_it_is(write_tree):

@@ -130,3 +130,22 @@ def test_syntax_error_keeps_commands_before_it(write_tree):
     assert [n.executable for n in nodes] == ["first"]
     assert [(d.code, d.location.file, d.location.line) for d in found] == [
         ("CMAKE_SYNTAX", "pkg/CMakeLists.txt", 3)]
+
+
+def test_rosbuild_package_executables(write_tree):
+    root = write_tree({
+        "src/old/manifest.xml": '<package><depend package="roscpp"/></package>',
+        "src/old/CMakeLists.txt": """
+            include($ENV{ROS_ROOT}/core/rosbuild/rosbuild.cmake)
+            rosbuild_init()
+            rosbuild_add_library(old_helpers src/helpers.cpp)
+            rosbuild_add_executable(old_node src/node.cpp)
+            target_link_libraries(old_node old_helpers)
+            """,
+        "src/old/src/node.cpp": "int main() { return 0; }\n",
+        "src/old/src/helpers.cpp": "int helper() { return 1; }\n",
+    })
+    ws = scan([str(root / "src")], {})
+    nodes, _found = parse_package(ws.packages["old"], ws)
+    assert [(n.executable, sorted(n.sources)) for n in nodes] == [
+        ("old_node", ["old/src/helpers.cpp", "old/src/node.cpp"])]

@@ -79,8 +79,9 @@ def test_unresolved_calls_are_kept_by_name() -> None:
         ("declare", "rate", "double", 11),
         ("publish", "status", "vendor_msgs/msg/Status", 12),
         ("publish", "frames", "?", 13),
+        ("publish", "echo", "std_msgs/msg/String", 14),
     ]
-    assert codes(result).count("CPP_CALL_UNRESOLVED") == 3
+    assert codes(result).count("CPP_CALL_UNRESOLVED") == 4
 
 
 def test_completeness_of_nodes() -> None:
@@ -146,3 +147,48 @@ def test_package_ros_version(build_type: str, depends: list[str], version: int |
     package = Package("p", "p", build_type=build_type,  # type: ignore[arg-type]
                       format=fmt, dependencies=[Dependency(d, "depend") for d in depends])
     assert ros_version(package) == version
+
+
+def test_ros1_forms_of_real_nodes() -> None:
+    result = extract_cpp([os.path.join(ROOT, "src", "legacy_node", "src", "forms.cpp")],
+                         scan([ROOT]), cache_dir=None, jobs=1)
+    assert [(c.kind, c.name, c.queue_size, c.callback,
+             tuple((k.statement, k.text) for k in c.conditions)) for c in result.calls] == [
+        ("publish", "planner/plan", 7, None, ()),
+        ("subscribe", "planner/goal", 1, "Planner::onGoal", (("switch", "mode == 1"),)),
+        ("subscribe", "planner/goal_alt", 1, "Planner::onGoal", (("switch", "mode == 2"),)),
+        ("subscribe", "planner/goal_any", 1, None,
+         (("switch", "mode != 1 && mode != 2"),)),
+    ]
+
+
+def test_lowercase_message_of_a_missing_package() -> None:
+    result = extract_cpp([os.path.join(ROOT, "src", "legacy_node", "src", "lowercase.cpp")],
+                         scan([ROOT]), cache_dir=None, jobs=1)
+    assert rows(result) == [("publish", "final_waypoints", "waypoint_follower/lane", 10)]
+
+
+def test_declared_names_are_cached_with_the_unit(tmp_path) -> None:
+    source = [os.path.join(SOURCES, "vendor_member.cpp")]
+    first = extract_cpp(source, scan([ROOT]), cache_dir=str(tmp_path), jobs=1)
+    again = extract_cpp(source, scan([ROOT]), cache_dir=str(tmp_path), jobs=1)
+    assert rows(again) == rows(first) and len(rows(first)) == 3
+    assert "CPP_NAMES_DECLARED" in codes(again)
+
+
+def test_parameters_through_the_parameters_interface() -> None:
+    result = extract("params_interface.cpp")
+    assert [(c.kind, c.name, c.location.line) for c in result.calls] == [
+        ("read", "max_range", 10), ("declare", "max_range", 11), ("read", "max_range", 13),
+        ("write", "interactive", 14)]
+    assert "CPP_PARSE_ERROR" not in codes(result)
+    assert "CPP_CALL_UNRESOLVED" not in codes(result)
+
+
+def test_rclcpp_free_factories() -> None:
+    result = extract("free_factories.cpp")
+    assert [(c.kind, c.name, c.type, c.queue_size) for c in result.calls] == [
+        ("publish", "out", "std_msgs/msg/String", 3),
+        ("subscribe", "in", "std_msgs/msg/String", 4),
+        ("subscribe", "in_too", "std_msgs/msg/String", None)]
+    assert "CPP_PARSE_ERROR" not in codes(result)

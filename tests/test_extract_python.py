@@ -196,10 +196,10 @@ def test_rclpy_node_subclass(ros2) -> None:
     assert (result.rosname, result.namespace) == ("talker", "robot")
     debug = (("if", "self.has_parameter('debug')"),)
     assert [row(c) for c in result.calls] == [
-        ("declare", "~topic", "str", None, False, None, 16, ()),
-        ("declare", "~limits.speed", "double", None, False, None, 17, ()),
-        ("declare", "~limits.enabled", "bool", None, False, None, 17, ()),
-        ("read", "~topic", None, None, False, None, 18, ()),
+        ("declare", "topic", "str", None, False, None, 16, ()),
+        ("declare", "limits.speed", "double", None, False, None, 17, ()),
+        ("declare", "limits.enabled", "bool", None, False, None, 17, ()),
+        ("read", "topic", None, None, False, None, 18, ()),
         ("publish", "?", "std_msgs/msg/String", 10, False, None, 19, ()),
         ("publish", "~status", "std_msgs/msg/String", 1, False, None, 20, ()),
         ("subscribe", "scan", "std_msgs/msg/String", 5, False, "Talker.on_scan", 22, ()),
@@ -209,13 +209,13 @@ def test_rclpy_node_subclass(ros2) -> None:
          ()),
         ("client", "/calc/add", "example_interfaces/srv/AddTwoInts", None, False, None, 27,
          ()),
-        ("read", "~limits.speed", None, None, False, None, 28, ()),
-        ("read", "~limits.enabled", None, None, False, None, 28, ()),
-        ("read", "~debug", None, None, False, None, 29, ()),
-        ("write", "~debug", "bool", None, False, None, 30, debug),
+        ("read", "limits.speed", None, None, False, None, 28, ()),
+        ("read", "limits.enabled", None, None, False, None, 28, ()),
+        ("read", "debug", None, None, False, None, 29, ()),
+        ("write", "debug", "bool", None, False, None, 30, debug),
     ]
     topic = result.calls[4]
-    assert (topic.name_param, topic.name_default) == ("~topic", "chatter")
+    assert (topic.name_param, topic.name_default) == ("topic", "chatter")
 
 
 def test_rclpy_qos(ros2) -> None:

@@ -34,4 +34,4 @@ def test_rclpy_declare_gives_the_default(tmp_path):
         "        self.declare_parameter('name')\n")
     result = extract_python([str(source)], Workspace(root=str(tmp_path)), package="p")
     got = [(c.kind, c.name, c.has_default, c.default) for c in result.calls]
-    assert got == [("declare", "~rate", True, 10), ("declare", "~name", False, None)]
+    assert got == [("declare", "rate", True, 10), ("declare", "name", False, None)]

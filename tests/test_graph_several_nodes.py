@@ -34,7 +34,7 @@ def test_the_executable_knows_its_nodes_and_each_call_its_node(model: Model) -> 
     pair = {n.executable: n for p in model.packages for n in p.nodes}["pair"]
     assert pair.rosnames == ["sensor", "monitor"]
     assert {(c.kind, c.name, c.node_name) for c in pair.calls} >= {
-        ("declare", "~rate", "sensor"), ("publish", "reading", "sensor"),
+        ("declare", "rate", "sensor"), ("publish", "reading", "sensor"),
         ("subscribe", "reading", "monitor"), ("publish", "~alarm", "monitor"),
         ("action-server", "calibrate", "monitor")}
 

@@ -325,3 +325,23 @@ def generate_launch_description():
     import shlex
     assert shlex.split(model.nodes[0].args) == [
         "base", "--controller-ros-args", "-r ~/cmd_vel:=/cmd_vel", ""]
+
+
+def test_pathlib_paths_of_known_parts(write_tree):
+    # autoware_default_adapi: a node's namespace and name from a pathlib path
+    model, _ = run(write_tree, """
+import pathlib
+
+def api_node(name):
+    full = pathlib.Path('adapi/node') / name
+    return Node(package='p', executable='e', namespace=str(full.parent), name=full.name,
+                parameters=[{'file': (full / 'x.yaml').with_suffix('.json').as_posix(),
+                             'joined': os.path.join(full, 'y')}])
+
+def generate_launch_description():
+    return LaunchDescription([api_node('interface')])
+""")
+    assert [n.name for n in model.nodes] == ["/adapi/node/interface"]
+    assert {p.key: p.value for p in model.params} == {
+        "file": "adapi/node/interface/x.json", "joined": "adapi/node/interface/y"}
+    assert codes(model) == []

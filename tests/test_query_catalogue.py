@@ -33,12 +33,14 @@ def configuration(doc: dict) -> object:
     node type of its own); a fixture lists a node with ``node: null`` to say its
     interface is unknown."""
     doc = dict(doc or {})
+    packages = doc.pop("packages", [])
     listed = {n["name"] for n in doc.get("nodes", ())}
     implied = dict.fromkeys(link["node"] for link in doc.get("links", ())
                             if link["node"] not in listed)
     doc["nodes"] = [*doc.get("nodes", ()),
                     *({"name": n, "node": f"known{n.replace('/', '_')}/node"} for n in implied)]
-    return from_data({"project": "p", "configurations": [{"name": "c", **doc}]})
+    return from_data({"project": "p", "packages": packages,
+                      "configurations": [{"name": "c", **doc}]})
 
 
 def test_every_rule_has_a_fixture_and_the_required_fields():
@@ -187,7 +189,7 @@ def test_the_same_finding_at_the_same_place_is_said_once():
     assert [(f.location.file, f.location.line) for f in found] == [("demo/talker.py", 4)]
 
 
-def test_a_type_mismatch_with_a_server_points_at_each_client_call():
+def test_a_type_mismatch_at_two_client_calls_is_one_finding_naming_both():
     model = configuration({"links": [
         {"kind": "server", "node": "/server", "name": "/add", "type": "a/Add",
          "location": {"file": "a/server.cpp", "line": 10}},
@@ -199,10 +201,11 @@ def test_a_type_mismatch_with_a_server_points_at_each_client_call():
          "location": {"file": "b/client.py", "line": 40}}]})
     found = run_catalogue(model, None, [RULES["service-type-mismatch"],
                                         RULES["action-type-mismatch"]])
-    assert sorted((f.rule, f.location.file, f.location.line) for f in found) == [
-        ("action-type-mismatch", "b/client.py", 40),
-        ("service-type-mismatch", "b/client.py", 20),
-        ("service-type-mismatch", "b/client.py", 30)]
+    # one problem, one finding: the client's second call site is a place of the same one
+    assert sorted((f.rule, f.location.file, f.location.line, tuple(map(str, f.also)))
+                  for f in found) == [
+        ("action-type-mismatch", "b/client.py", 40, ()),
+        ("service-type-mismatch", "b/client.py", 20, ("b/client.py:30",))]
 
 
 def test_a_long_value_is_shortened_in_the_message():

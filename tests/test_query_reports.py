@@ -171,3 +171,19 @@ def test_text_lists_the_first_few_findings_of_a_rule_and_all_with_verbose():
     assert short.index("[topic-type-mismatch]: 1") < short.index("[queue-size-one]: 5")
     assert "link 2" in short and "link 3" not in short and "... and 2 more" in short
     assert "link 4" in text(True) and "more" not in text(True)
+
+
+def test_a_finding_at_two_call_sites_keeps_both_places_in_sarif_and_junit():
+    jsonschema = pytest.importorskip("jsonschema")
+    links = [{"kind": "subscribe", "node": "/safety", "name": "/bumper", "type": "a/B",
+              "queue_size": 1, "location": {"file": "s/safety.cpp", "line": line}}
+             for line in (7, 9)]
+    model = from_data({"configurations": [{"name": "c", "links": links, "nodes": [
+        {"name": "/safety", "node": "s/safety"}]}]})
+    (found,) = [f for f in run_catalogue(model) if f.rule == "queue-size-one"]
+    assert found.location.line == 7 and [str(p) for p in found.also] == ["s/safety.cpp:9"]
+    log = to_sarif([found], [], {}, "/ws")
+    jsonschema.validate(log, json.loads(SCHEMA.read_text()))
+    related = log["runs"][0]["results"][0]["relatedLocations"]
+    assert related[0]["physicalLocation"]["region"]["startLine"] == 9
+    assert "also at: s/safety.cpp:9" in to_junit([found])

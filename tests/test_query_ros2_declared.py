@@ -68,6 +68,6 @@ def test_a_declaration_by_type_has_that_type_and_no_default(tmp_path):
         "node.declare_parameter('gain', 2.0)\n")
     found = extract_python([str(source)], scan([str(tmp_path)]))
     declared = {c.name: (c.type, c.has_default) for c in found.calls if c.kind == "declare"}
-    assert declared["~port"] == ("str", False)
-    assert declared["~ids"][1] is False and declared["~ids"][0] != "str"
-    assert declared["~gain"] == ("double", True)
+    assert declared["port"] == ("str", False)
+    assert declared["ids"][1] is False and declared["ids"][0] != "str"
+    assert declared["gain"] == ("double", True)

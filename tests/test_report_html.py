@@ -96,6 +96,21 @@ def test_only_files_inside_the_workspace_are_read(write_tree) -> None:
     assert collect_snippets(data, str(root / "ws")) == {"a.cpp": {"1": "inside"}}
 
 
+def test_sources_of_a_package_linked_into_the_workspace_are_read(write_tree) -> None:
+    # a workspace whose src links to checkouts elsewhere: their packages' files are
+    # embedded; a link to a folder that holds no package is not followed
+    root = write_tree({"checkouts/repo/pkg/package.xml": "<package/>\n",
+                       "checkouts/repo/pkg/src/a.cpp": "in the package\n",
+                       "private/notes.txt": "not a package\n", "ws/src/.keep": ""})
+    (root / "ws/src/repo").symlink_to(root / "checkouts/repo")
+    (root / "ws/src/private").symlink_to(root / "private")
+    data = {"x": [{"file": "src/repo/pkg/src/a.cpp", "line": 1},
+                  {"file": "src/private/notes.txt", "line": 1},
+                  {"file": "src/repo/../../../private/notes.txt", "line": 1}]}
+    assert collect_snippets(data, str(root / "ws")) == {
+        "src/repo/pkg/src/a.cpp": {"1": "in the package"}}
+
+
 def test_missing_d3_is_a_clear_error(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setenv("HAROS_ARCH_D3", str(tmp_path / "none.js"))
     with pytest.raises(ReportError, match="D3 is not installed"):

@@ -157,6 +157,7 @@ def test_rosbuild_packages_are_packages(write_tree):
         "src/both/package.xml": package_xml("both_pkg"),
         "src/both/manifest.xml": "<package/>",
         "src/broken/manifest.xml": "<package>",
+        "src/web/manifest.xml": "<manifest><icon/></manifest>",  # not ROS: quietly no package
     })
     ws = scan([str(root / "src")], {})
     old = ws.packages["old_driver"]

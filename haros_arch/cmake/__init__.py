@@ -2,7 +2,8 @@
 
 Entry point: ``parse_package(package, workspace)``. It interprets the package's
 CMakeLists.txt (with its includes and subdirectories), then turns what was recorded
-into nodes: executables, ROS 2 components, nodelets (through ``haros_arch.plugins``)
+into nodes: executables, ROS 2 components, nodelets and host plugins (through
+``haros_arch.plugins``)
 and Python scripts.
 """
 
@@ -14,7 +15,7 @@ from .. import diagnostics as diag
 from .. import plugins
 from ..diagnostics import Diagnostic
 from ..files import read_text
-from ..model.source import Node, Package
+from ..model.source import Node, Package, Plugin
 from ..workspace import Workspace
 from .interpreter import Interpreter
 from .lexer import CMakeSyntaxError, Invocation, tokenize
@@ -80,11 +81,14 @@ def parse_package(package: Package, workspace: Workspace) -> tuple[list[Node], l
     libraries: dict[str, plugins.Library] = {}
     for target in interpreter.targets.values():
         if target.kind == "library":
-            library = plugins.Library(sources.linked(target), target.conditions)
+            library = plugins.Library(sources.linked(target), target.conditions,
+                                      sources.own(target))
             libraries.setdefault(target.name, library)
             libraries.setdefault(target.output_name or target.name, library)
-    nodelets, problems = plugins.nodelets(package, files, libraries)
-    nodes.extend(nodelets)
+    described = [Plugin(base, files.relpath(path))
+                 for base, path in interpreter.plugin_descriptions]
+    classes, problems = plugins.plugin_classes(package, files, libraries, described)
+    nodes.extend(classes)
     found.extend(problems)
     found.extend(sources.diagnostics)
     nodes.extend(scripts(interpreter, package, files, found))

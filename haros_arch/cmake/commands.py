@@ -301,12 +301,13 @@ LIBRARY_FLAGS = ("STATIC", "SHARED", "MODULE", "OBJECT", "EXCLUDE_FROM_ALL",
 
 
 @handles("add_executable", "cs_add_executable", "cuda_add_executable",
-         "ament_auto_add_executable")
+         "ament_auto_add_executable", "rosbuild_add_executable")
 def _add_executable(it: Interpreter, command: Invocation, args: list[str]) -> None:
     _add_target(it, command, args, "executable", EXECUTABLE_FLAGS)
 
 
-@handles("add_library", "cs_add_library", "cuda_add_library", "ament_auto_add_library")
+@handles("add_library", "cs_add_library", "cuda_add_library", "ament_auto_add_library",
+         "rosbuild_add_library")
 def _add_library(it: Interpreter, command: Invocation, args: list[str]) -> None:
     _add_target(it, command, args, "library", LIBRARY_FLAGS)
 
@@ -429,6 +430,15 @@ def _ament_auto_package(it: Interpreter, command: Invocation, args: list[str]) -
     it.installs.append(Install("DIRECTORY", [*folders, "DESTINATION", destination],
                                it.source_dir, it.current_conditions(), command.line,
                                command.column, command.file))
+
+
+@handles("pluginlib_export_plugin_description_file")
+def _export_plugin_description(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    """ROS 2 pluginlib: ``(base_package description.xml)`` exports the plugin classes
+    the file describes, as ``<base_package plugin="..."/>`` does in a package.xml."""
+    if len(args) >= 2:
+        path = args[1] if os.path.isabs(args[1]) else os.path.join(it.source_dir, args[1])
+        it.plugin_descriptions.append((args[0], os.path.normpath(path)))
 
 
 @handles("rclcpp_components_register_node")

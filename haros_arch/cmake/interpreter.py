@@ -80,6 +80,8 @@ class Interpreter:
         self.program_dirs: list[Program] = []
         self.installs: list[Install] = []  # for haros_arch.share
         self.registrations: list[Registration] = []
+        # pluginlib_export_plugin_description_file: (base package, absolute path)
+        self.plugin_descriptions: list[tuple[str, str]] = []
         self.definitions: dict[str, Definition] = {}
         self.conditions: list[Condition] = []  # enclosing if / while not decided
         self.returns: list[Condition] = []  # return() under a condition not decided

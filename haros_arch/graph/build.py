@@ -25,6 +25,7 @@ from ..model.runtime import (
 from ..model.source import Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK
 from ..models.commands import command_node
+from ..plugins.attach import attach as attach_plugins
 from ..workspace import Workspace, installed_roots
 from .actions import action_links
 from .processes import guessed_names, process_nodes, process_params
@@ -102,8 +103,10 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
         parameter.launch_location = param.location
         parameter.launch_conditions = param.conditions
     seen: dict[str, NodeInstance] = {}
+    started: list[tuple[NodeDecl, NodeInstance]] = []
     for decl, own in process_nodes(launch.nodes, nodes):
         instance = _instance(decl, nodes, workspace, config)
+        started.append((decl, instance))
         # two instances with one name keep apart by id; the duplicate-node-names query
         # reports them (and roslaunch's own refusal is LAUNCH_NODE_DUPLICATE)
         instance.id = f"node:{instance.name}"
@@ -116,6 +119,11 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
         remaps = resolve_remaps(instance.remaps, instance.namespace, instance.name)
         for call in instance.node.calls_of(own):
             for each in element_calls(call, instance, resources):  # list parameters
+                link(instance, each, remaps, resources, config)
+    for instance, calls in attach_plugins(config, started, nodes, resources, workspace):
+        remaps = resolve_remaps(instance.remaps, instance.namespace, instance.name)
+        for call in calls:
+            for each in element_calls(call, instance, resources):
                 link(instance, each, remaps, resources, config)
     for action, call, name in action_links(config):
         link(action.node, call, {}, resources, config, name)

@@ -43,9 +43,11 @@ def process_nodes(decls: Sequence[NodeDecl], nodes: Mapping[str, Node]
         if not owns:
             yield decl, None
             continue
+        guessed = nodes.get(node_key(decl)) is None  # named after its executable
         for own in owns:
             name = _renamed(decl, own)
-            yield (decl if name == decl.name else replace(decl, name=name)), own
+            yield (decl if name == decl.name else replace(
+                decl, name=name, name_guessed=guessed)), own
 
 
 def process_params(launch: LaunchModel, nodes: Mapping[str, Node]) -> list[ParamDecl]:

@@ -13,6 +13,7 @@ from typing import Any
 from .. import diagnostics as diag
 from ..diagnostics import Diagnostic
 from ..model.conditions import Condition
+from ..model.launch_tree import LaunchItem
 from ..model.location import NOWHERE, Location
 
 
@@ -40,6 +41,9 @@ class NodeDecl:
     is_test: bool = False
     ros_version: int = 1  # 2: ROS 2 naming rules apply (launch.ros2)
     composable: bool = False  # ROS 2: a component loaded into a container
+    # launched without a name and named by the graph after its executable (no code, no
+    # model): the real name is the one its code gives, which may differ
+    name_guessed: bool = False
     container: str | None = None  # ROS 2: full name of the container it is loaded into
 
 
@@ -69,6 +73,7 @@ class LaunchModel:
     clear_params: list[str] = field(default_factory=list)  # namespaces cleared first
     deleted_params: list[str] = field(default_factory=list)  # <rosparam command="delete">
     machines: dict[str, str] = field(default_factory=dict)  # name -> address
+    tree: list[LaunchItem] = field(default_factory=list)  # the files as written
 
 
 def without_tests(model: LaunchModel) -> LaunchModel:

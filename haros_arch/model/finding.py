@@ -14,6 +14,7 @@ class Finding:
 
     ``configuration`` is the first configuration it was found in and ``configurations``
     all of them (the same finding in several configurations is one finding);
+    ``also`` lists other places where the same problem shows (a second call site);
     ``entities`` holds the ``id``s of the runtime entities involved ("node:/talker",
     "topic:/chatter", ...), so a report can highlight them; ``location`` is the most
     useful place to look (a source line or a launch file line).
@@ -27,6 +28,7 @@ class Finding:
     entities: tuple[str, ...] = ()
     location: Location = field(default=NOWHERE)
     configurations: tuple[str, ...] = ()
+    also: tuple[Location, ...] = ()  # other places of the same problem (call sites)
 
     def __post_init__(self) -> None:
         if not self.configurations and self.configuration is not None:

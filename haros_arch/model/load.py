@@ -12,6 +12,7 @@ from typing import Any
 
 from .conditions import Condition
 from .diagnostic import Diagnostic
+from .launch_tree import item_from_data
 from .location import NOWHERE, Location
 from .model import Model
 from .rosname import RosName, namespace_of
@@ -87,7 +88,9 @@ def node_from_data(data: dict[str, Any], package: str) -> Node:
                 [str(n) for n in data.get("rosnames", ()) if isinstance(n, str)],
                 _completeness(data.get("completeness")),
                 [str(r) for r in data.get("completeness_reasons", ()) if isinstance(r, str)],
-                data.get("model") if isinstance(data.get("model"), str) else None)
+                data.get("model") if isinstance(data.get("model"), str) else None,
+                plugin_class=data.get("plugin_class") if isinstance(
+                    data.get("plugin_class"), str) else None)
 
 
 def _completeness(value: Any) -> Completeness:
@@ -217,6 +220,8 @@ def _configuration(data: dict[str, Any], nodes: dict[str, Node],
                 owner.read_as_part_of = whole
     _wire_calls(config)
     config.package_paths = [str(p) for p in data.get("package_paths", ())]
+    config.launch_tree = [item for item in map(item_from_data, data.get("launch_tree") or ())
+                          if item is not None]
     for instance in config.nodes:  # a hint-made node type lists what its instances use
         if instance.node is not None and instance.node.name in hinted:
             calls = instance.node.calls

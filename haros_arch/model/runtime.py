@@ -14,6 +14,7 @@ from typing import Any, ClassVar
 
 from .conditions import Condition
 from .diagnostic import Diagnostic
+from .launch_tree import LaunchItem
 from .location import NOWHERE, Location
 from .rosname import RosName, namespace_of
 from .source import KNOWN_COMPLETENESS, Node, PrimitiveCall
@@ -454,6 +455,8 @@ class Configuration:
     # the workspace and installed-package folders that launch values lead into, as
     # $(find pkg) / FindPackageShare resolved them here: paths under them are portable
     package_paths: list[str] = field(default_factory=list)
+    # how the launch files make the nodes: one tree per launch file named (launch_tree.py)
+    launch_tree: list[LaunchItem] = field(default_factory=list, metadata={"optional": True})
 
     def __repr__(self) -> str:
         return f"Configuration({self.name})"

@@ -9,7 +9,7 @@ from .conditions import Condition
 from .location import NOWHERE, Location
 
 BuildType = Literal["catkin", "ament_cmake", "ament_python", "cmake", "unknown"]
-NodeKind = Literal["executable", "nodelet", "component", "script"]
+NodeKind = Literal["executable", "nodelet", "component", "plugin", "script"]
 Language = Literal["cpp", "python"]
 # How much of a node's interface is known (DESIGN.md, "Completeness"): "complete" (its
 # sources read clean), "partial" (calls may be missing: parse errors, plugin names left;
@@ -110,7 +110,7 @@ class SourceFile:
 
 @dataclass(eq=False)
 class Node:
-    """A build target that can run: executable, nodelet/component library or script."""
+    """A build target that can run: executable, nodelet/component/plugin class or script."""
 
     package: str
     executable: str
@@ -133,6 +133,9 @@ class Node:
     # the interface model this node was taken from (``haros_arch.models``), e.g.
     # "noetic/amcl 1.17.3 ros-planning/navigation@0123abcd"; None: from its source
     model: str | None = field(default=None, metadata={"optional": True})
+    # a nodelet or plugin class: its C++ type (``executable`` is its pluginlib lookup
+    # name, ``pkg/Name`` or the type itself)
+    plugin_class: str | None = field(default=None, metadata={"optional": True})
 
     # the node's name (``pkg/exec``, ``pkg/Class``) first, as DESIGN's JSON contract says
     JSON_HEAD: ClassVar[dict[str, Any]] = {"name": lambda node: node.name}

@@ -102,7 +102,8 @@ def unknown_users(charge: Charge, config: Any, resource: Any) -> list[NodeInstan
 
 MAX_DISTANCE = 2
 _PARTS = MAX_DISTANCE + 1
-_INDEXES: OrderedDict[int, tuple[Any, dict[tuple[int, int, str], list[int]]]] = OrderedDict()
+_Index = tuple[dict[tuple[int, int, str], list[int]], list[str], list[frozenset[str]]]
+_INDEXES: OrderedDict[int, tuple[Any, _Index]] = OrderedDict()
 _KEEP_INDEXES = 16
 
 
@@ -119,8 +120,9 @@ def _bounds(length: int) -> list[int]:
     return [length * k // _PARTS for k in range(_PARTS + 1)]
 
 
-def _index(items: list[Any], charge: Charge) -> dict[tuple[int, int, str], list[int]]:
-    """(length, part number, part) -> places of the items whose own name has it.
+def _index(items: list[Any], charge: Charge) -> _Index:
+    """(length, part number, part) -> places of the items whose own name has it; and
+    each item's own name and the set of its characters.
 
     Two edits change at most two of a word's three parts, so a word within distance 2
     of another holds one of its parts unchanged, shifted by at most two characters (the
@@ -131,18 +133,21 @@ def _index(items: list[Any], charge: Charge) -> dict[tuple[int, int, str], list[
         _INDEXES.move_to_end(id(items))
         return cached[1]
     index: dict[tuple[int, int, str], list[int]] = {}
+    owns: list[str] = []
     for place, item in enumerate(items):
         own = _own(item)
         if own is None:
             raise QueryTypeError("similar_to() compares names: strings, resources or links")
+        owns.append(own)
         cut = _bounds(len(own))
         for part in range(_PARTS):
             index.setdefault((len(own), part, own[cut[part]:cut[part + 1]]), []).append(place)
     charge(len(items))
-    _INDEXES[id(items)] = (items, index)
+    found = (index, owns, [frozenset(own) for own in owns])
+    _INDEXES[id(items)] = (items, found)
     while len(_INDEXES) > _KEEP_INDEXES:
         _INDEXES.popitem(last=False)
-    return index
+    return found
 
 
 def distance(word: str, other: str, pattern: dict[str, int] | None = None) -> int:
@@ -184,7 +189,7 @@ def similar_to(charge: Charge, word: Any, items: Any) -> list[Any]:
     word = _own(word)
     if word is None or not isinstance(items, list):
         raise QueryTypeError("similar_to() takes a name (or a resource or link) and a list")
-    index = _index(items, charge)
+    index, owns, letters = _index(items, charge)
     places: set[int] = set()
     for length in range(max(0, len(word) - MAX_DISTANCE), len(word) + MAX_DISTANCE + 1):
         cut = _bounds(length)
@@ -195,6 +200,9 @@ def similar_to(charge: Charge, word: Any, items: Any) -> list[Any]:
                 if begin >= 0 and begin + size <= len(word):
                     places.update(index.get((length, part, word[begin:begin + size]), ()))
     charge(1 + len(places))
-    pattern = masks(word)
+    pattern, mine = masks(word), frozenset(word)
+    # an edit adds or takes away at most two letters of the set of letters used: a
+    # cheap test before the distance
     return [items[place] for place in sorted(places)
-            if distance(word, _own(items[place]) or "", pattern) <= MAX_DISTANCE]
+            if len(letters[place] ^ mine) <= 2 * MAX_DISTANCE
+            and distance(word, owns[place], pattern) <= MAX_DISTANCE]

@@ -60,7 +60,7 @@ FIELDS: dict[type, tuple[str, ...]] = {
     Dependency: ("name", "kind", "condition"),
     Node: ("package", "executable", "name", "kind", "language", "sources", "calls",
            "rosname", "conditions", "location", "completeness", "completeness_reasons",
-           "is_complete"),
+           "is_complete", "model"),
     PrimitiveCall: ("kind", "name", "type", "queue_size", "qos", "latch", "callback",
                     "conditions", "location", "name_param", "name_default", "origin",
                     "has_default", "default", "searched", "handle_namespace", "deletes"),
@@ -113,6 +113,8 @@ def _is_latched(link: Link) -> bool:
 VIEWS: dict[type, dict[str, Callable[[Any], Any]]] = {
     Link: {"is_latched": _is_latched},
     Parameter: {"reads": lambda p: p.readers, "writes": lambda p: p.writers},
+    # what it runs is known from an interface model (its code is not in the workspace)
+    NodeInstance: {"is_modelled": lambda n: n.node is not None and n.node.model is not None},
     Node: {"advertise": _calls("publish"), "subscribe": _calls("subscribe"),
            "service": _calls("server"), "client": _calls("client"),
            "read_param": _calls("read"), "write_param": _calls("write")},

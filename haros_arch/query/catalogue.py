@@ -264,9 +264,8 @@ def _undecided_finding(rule: Rule, undecided: list[tuple[Any, list[Any]]],
         else ""
     first = "; ".join(label(e) for e in entities(undecided[0][0])[:1])
     message = (f"{len(undecided)} possible finding(s) not reported (first: {first}): "
-               f"node(s) of partial or unknown interface, using a name not known "
-               f"statically or serving dynamic_reconfigure could be the missing side: "
-               f"{named}{more}")
+               f"these nodes could be the missing side unseen (interface partial or "
+               f"unknown, a name with '?', or dynamic_reconfigure): {named}{more}")
     return Finding(rule.id + UNDECIDED, "info", f"{rule.title}: not decided",
                    message, config.name if config else None,
                    entity_ids(ranked[:UNDECIDED_NAMED]),
@@ -313,19 +312,23 @@ def run_catalogue(model: Model, project: Any = None,
 
 
 def merge(findings: Iterable[Finding]) -> list[Finding]:
-    """One problem, one finding: two matches that say the same thing at the same place (a
-    node subscribing twice to one topic pairs twice with the same publisher) are one,
-    and so is the same finding in several configurations, which it then lists."""
+    """One problem, one finding: matches that say the same thing about the same entities
+    are one finding, wherever they are found: at two call sites (a node subscribing to
+    one topic twice; the second place is in ``also``) or in several configurations
+    (``configurations`` lists them)."""
     merged: dict[tuple[Any, ...], Finding] = {}
     for finding in findings:
         key = (finding.rule, finding.severity, finding.title, finding.message,
-               finding.entities, finding.location)
+               finding.entities)
         known = merged.get(key)
         if known is None:
             merged[key] = finding
             continue
         configs = tuple(dict.fromkeys((*known.configurations, *finding.configurations)))
-        merged[key] = replace(known, configurations=configs)
+        places = tuple(p for p in dict.fromkeys((*known.also, finding.location,
+                                                 *finding.also))
+                       if p != known.location)
+        merged[key] = replace(known, configurations=configs, also=places)
     return list(merged.values())
 
 

@@ -260,3 +260,18 @@ FUNCTIONS["is_infrastructure"] = Function("is_infrastructure", is_infrastructure
 # checks that claim an absence, and similar-name pairing through an index (absence.py)
 FUNCTIONS["unknown_users"] = Function("unknown_users", unknown_users, 2, 2, charged=True)
 FUNCTIONS["similar_to"] = Function("similar_to", similar_to, 2, 2, charged=True)
+
+
+# topics that rviz's tools publish when an operator clicks: 2D Pose Estimate, 2D Nav Goal
+# (ROS 1 and ROS 2) and Publish Point; nodes subscribe to them to wait for a person
+_TOOL_INPUTS = frozenset({"/initialpose", "/move_base_simple/goal", "/goal_pose",
+                          "/clicked_point"})
+
+
+def is_tool_input(charge: Charge, name: Any) -> bool:
+    """True for a topic that an operator's tool (rviz) publishes by convention."""
+    charge(1)
+    return isinstance(name, str) and name in _TOOL_INPUTS
+
+
+FUNCTIONS["is_tool_input"] = Function("is_tool_input", is_tool_input, charged=True)

@@ -44,6 +44,9 @@ def print_findings(findings: Iterable[Finding], console: Console,
                 if finding.configurations else ""
             console.print(f"  {escape(where)}: {escape(finding.message)}{configs}",
                           highlight=False)
+            if finding.also:
+                console.print(f"      [dim]also at: {escape(', '.join(map(str, finding.also)))}"
+                              "[/dim]", highlight=False)
             if finding.entities:
                 console.print(f"      [dim]involves: {escape(', '.join(finding.entities))}"
                               "[/dim]", highlight=False)

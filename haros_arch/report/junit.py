@@ -21,7 +21,8 @@ def to_junit(findings: Iterable[Finding], diagnostics: Iterable[Diagnostic] = ()
         configs = ", ".join(f.configurations)
         name = f"{configs}: {f.location}" if configs else str(f.location)
         cases.setdefault(f.rule, []).append((name, f.severity, f.title, f.message + (
-            f"\ninvolves: {', '.join(f.entities)}" if f.entities else "")))
+            f"\ninvolves: {', '.join(f.entities)}" if f.entities else "") + (
+            f"\nalso at: {', '.join(map(str, f.also))}" if f.also else "")))
     for d in diagnostics:
         cases.setdefault(d.code, []).append((str(d.location), d.severity, d.code, d.message))
     root = ET.Element("testsuites", name="haros-arch")

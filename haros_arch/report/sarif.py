@@ -50,6 +50,11 @@ def to_sarif(findings: Iterable[Finding], diagnostics: Iterable[Diagnostic] = ()
         }
         if finding.location.file:
             result["locations"] = [_location(finding.location)]
+        related = [_location(where, "the same problem") for where in finding.also
+                   if where.file]
+        if related:
+            result["relatedLocations"] = [{"id": i + 1, **place}
+                                          for i, place in enumerate(related)]
         rules.setdefault(finding.rule, (finding.title, ""))
         results.append(result)
     for diagnostic in diagnostics:

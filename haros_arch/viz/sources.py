@@ -1,7 +1,8 @@
 """The lines of source around every location of the model, to embed in the report.
 
-Only files inside the workspace root are read (a saved model could name any path), each
-through ``files.read_text`` with a size bound, and the total embedded text is bounded too.
+Only files inside the workspace root are read (a saved model could name any path), or in
+a ROS package that a link inside the root leads to (linked checkouts), each through
+``files.read_text`` with a size bound, and the total embedded text is bounded too.
 """
 
 from __future__ import annotations
@@ -34,14 +35,38 @@ def locations(data: Any) -> Iterator[tuple[str, int]]:
 
 
 def inside(root: str, file: str) -> str | None:
-    """The real path of ``file`` (relative to ``root``) when it lies inside ``root``."""
+    """The real path of ``file`` (relative to ``root``) when it lies inside ``root``, or
+    in a ROS package that a link inside ``root`` leads to (a workspace whose ``src``
+    links to checkouts elsewhere); never a path that climbs out with ``..``."""
     if os.path.isabs(file):
         return None
     base = os.path.realpath(root)
     path = os.path.realpath(os.path.join(base, file))
-    if path != base and path.startswith(base + os.sep) and os.path.isfile(path):
+    if not os.path.isfile(path):
+        return None
+    if path != base and path.startswith(base + os.sep):
         return path
-    return None
+    lexical = os.path.normpath(os.path.join(root, file))
+    if not lexical.startswith(os.path.normpath(root) + os.sep):
+        return None
+    return path if _linked_package(lexical, os.path.normpath(root), path) else None
+
+
+def _linked_package(lexical: str, root: str, real: str) -> bool:
+    """A link inside the workspace, on the way to the file, leads to a folder that holds
+    the file's ROS package (a package.xml above the file, at or below the link's target)."""
+    folder = os.path.dirname(lexical)
+    while folder.startswith(root + os.sep):
+        if os.path.islink(folder):
+            target = os.path.realpath(folder)
+            above = os.path.dirname(real)
+            while above == target or above.startswith(target + os.sep):
+                if os.path.isfile(os.path.join(above, "package.xml")):
+                    return True
+                above = os.path.dirname(above)
+            return False
+        folder = os.path.dirname(folder)
+    return False
 
 
 def collect_snippets(data: Any, workspace_root: str) -> dict[str, dict[str, str]]:

@@ -35,6 +35,7 @@ __all__ = ["CppBatch", "CppResult", "extract_cpp", "extract_cpp_nodes"]
 
 # CXTranslationUnit_DetailedPreprocessingRecord (for #define constants) | KeepGoing
 PARSE_OPTIONS = 0x01 | 0x200
+SKIP_FUNCTION_BODIES = 0x40  # CXTranslationUnit_SkipFunctionBodies
 MAX_ERRORS_PER_FILE = 50
 _HEADER = re.compile(r"no definition found for (\S+);")
 _MEMBER = re.compile(r"^no member named '\w+' in '(?:struct |class )?(?:::)?(\w+)::")
@@ -374,10 +375,11 @@ def _parse(path: str, text: str, setup: IncludeSetup, workspace: Workspace,
 
 
 def _parse_once(path: str, args: list[str], unsaved: list[tuple[str, str]],
-                workspace: Workspace, result: CppResult) -> TranslationUnit | None:
+                workspace: Workspace, result: CppResult,
+                options: int = PARSE_OPTIONS) -> TranslationUnit | None:
     try:
         return toolchain.index().parse(path, args=args, unsaved_files=unsaved,
-                                       options=PARSE_OPTIONS)
+                                       options=options)
     except TranslationUnitLoadError as err:
         result.diagnostics.append(diag.make(
             "CPP_PARSE_FAILED", workspace.location(path), detail=str(err) or "libclang"))
@@ -398,29 +400,46 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
         return [d for d in _errors(unit)
                 if d.location.file is not None and owned(d.location.file.name)]
 
-    original = best = tu
-    errors = _errors(tu)
     before = len(mine(tu))
     names = synthesis.Names()
     header = os.path.join(setup.generated, synthesis.HEADER_NAME)
-    for _round in range(synthesis.MAX_ROUNDS):
-        learnt = names.learn([(d.spelling, source.get(d.location.file.name),
-                               d.location.offset) for d in mine(tu)])
-        if not learnt:
+    if synthesis.MAX_ROUNDS < 1 or not names.learn(_located(mine(tu), source)):
+        return tu
+    # Errors come in waves: a class made valid shows its other members. With more than
+    # one round, the next waves are looked for without function bodies (the names that
+    # make a class invalid are in declarations); then the unit is parsed in full with
+    # all the names, and once more when that shows more (a wave, or members of declared
+    # classes used in function bodies); the parse with the fewest errors is kept.
+    for _round in range(synthesis.MAX_ROUNDS - 1):
+        probe = _parse_once(path, [*args, "-include", header],
+                            [*unsaved, (header, names.header())], workspace, result,
+                            PARSE_OPTIONS | SKIP_FUNCTION_BODIES)
+        if probe is None or not names.learn(_located(mine(probe), source)):
             break
+    best = tu
+    for _full in range(2):  # a second time when the first shows more names (a wave)
         again = _parse_once(path, [*args, "-include", header],
                             [*unsaved, (header, names.header())], workspace, result)
         if again is None:
             break
-        tu = again
-        if len(_errors(tu)) >= len(errors):
-            break  # declaring more made it no better
-        best, errors = tu, _errors(tu)
-    if best is not original:
-        result.diagnostics.append(diag.make(
-            "CPP_NAMES_DECLARED", workspace.location(path), count=names.count,
-            names=", ".join(names.first()), before=before, after=len(mine(best))))
-    return best
+        if len(_errors(again)) < len(_errors(best)):
+            best = again
+        if not names.learn(_located(mine(again), source)):
+            break
+    if best is tu:
+        return tu  # declaring them made it no better: the parse as it was
+    again = best
+    result.diagnostics.append(diag.make(
+        "CPP_NAMES_DECLARED", workspace.location(path), count=names.count,
+        names=", ".join(names.first()), before=before, after=len(mine(again))))
+    return again
+
+
+def _located(errors: list[ClangDiagnostic],
+             source: SourceCache) -> list[tuple[str, bytes | None, int]]:
+    """Errors as ``synthesis.Names.learn`` reads them: message, file bytes, offset."""
+    return [(d.spelling, source.get(d.location.file.name), d.location.offset)
+            for d in errors if d.location.file is not None]
 
 
 class SourceCache(dict[str, bytes]):

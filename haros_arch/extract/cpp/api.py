@@ -221,6 +221,14 @@ _PARAMETER_EVENTS = RosFunction(
     "subscribe", fixed_name="/parameter_events",
     fixed_type="rcl_interfaces/msg/ParameterEvent", on_handle=False)
 RCLCPP_LIBRARIES: dict[tuple[str, str], RosFunction] = {
+    # rclcpp::create_publisher<M>(node, topic, qos, options), as nav2's factories call it
+    ("rclcpp", "create_publisher"): RosFunction(
+        "publish", type_from=("template",), on_handle=False, name_arg=1, qos_arg=2),
+    # (node, topic, qos, callback, ...) or (parameters, topics, topic, qos, callback, ...):
+    # the name is the first string of arguments 1 and 2
+    ("rclcpp", "create_subscription"): RosFunction(
+        "subscribe", type_from=("template", "callback"), on_handle=False, name_arg=1,
+        qos_arg=2, callback_arg=3, name_candidates=(1, 2)),
     ("rclcpp::AsyncParametersClient", "AsyncParametersClient"): _PARAMETER_CLIENT,
     ("rclcpp::SyncParametersClient", "SyncParametersClient"): _PARAMETER_CLIENT,
     ("rclcpp::AsyncParametersClient", "on_parameter_event"): _PARAMETER_EVENTS,
@@ -278,8 +286,16 @@ _RCLCPP_NODE: dict[str, RosFunction] = {
     "undeclare_parameter": RosFunction("write", on_handle=False),
 }
 RCLCPP_NODES = ("rclcpp::Node", "rclcpp_lifecycle::LifecycleNode")
+# a node's parameters interface (node->get_node_parameters_interface()) has the same
+# parameter methods: slam_toolbox keeps one and declares through it
+RCLCPP_PARAMETERS_INTERFACE = "rclcpp::node_interfaces::NodeParametersInterface"
+_INTERFACE_METHODS = ("declare_parameter", "undeclare_parameter", "has_parameter",
+                      "get_parameter", "get_parameters", "set_parameters",
+                      "set_parameters_atomically")
 RCLCPP: dict[tuple[str, str], RosFunction] = {
-    (cls, name): row for cls in RCLCPP_NODES for name, row in _RCLCPP_NODE.items()}
+    **{(cls, name): row for cls in RCLCPP_NODES for name, row in _RCLCPP_NODE.items()},
+    **{(RCLCPP_PARAMETERS_INTERFACE, name): _RCLCPP_NODE[name] for name in _INTERFACE_METHODS},
+}
 RCLCPP_PARAMETER = "rclcpp::Parameter"  # set_parameter(rclcpp::Parameter("name", value))
 
 # rclcpp::Node("name", "ns", options) and its derived classes' ": Node("name")", and

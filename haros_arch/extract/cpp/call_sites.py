@@ -221,6 +221,7 @@ def member_initialiser(field: Cursor) -> tuple[Cursor, Cursor] | None:
         definition = member.get_definition()
         if definition is None:
             continue
+        constructor = member.kind == CursorKind.CONSTRUCTOR
         children = list(definition.get_children())
         for i, child in enumerate(children[:-1]):
             if child.kind == CursorKind.MEMBER_REF and child.referenced == field:
@@ -230,9 +231,18 @@ def member_initialiser(field: Cursor) -> tuple[Cursor, Cursor] | None:
                 args = list(node.get_arguments())
                 if len(args) == 2 and strip(args[0]).kind == CursorKind.MEMBER_REF_EXPR and (
                     strip(args[0]).referenced == field
-                ):
+                ) and (constructor or not _uses_parameter(args[1])):
                     return args[1], definition
     return None
+
+
+def _uses_parameter(expr: Cursor) -> bool:
+    """Whether an expression reads a function parameter: in an initialisation method the
+    host gives it (a plugin's ``initialize(name)``), which no call site here shows, so a
+    member set from it stays unknown for the plugin's host to fill."""
+    return any(node.kind == CursorKind.DECL_REF_EXPR and node.referenced is not None
+               and node.referenced.kind == CursorKind.PARM_DECL
+               for node in expr.walk_preorder())
 
 
 def _takes(constructor: Cursor, count: int) -> bool:

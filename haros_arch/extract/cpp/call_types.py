@@ -48,7 +48,7 @@ class CallTypes:
         return found
 
     def _message(self, ctype: Type, service: bool = False) -> str | None:
-        return msg_types.message_type(ctype, service, self.adapters)
+        return msg_types.message_type(ctype, service, self.adapters, self.ros2)
 
     def _declared(self, spec: api.RosFunction, call: Cursor, args: list[Cursor],
                   function: Cursor | None, cls: Cursor | None, scope: Scope) -> str | None:

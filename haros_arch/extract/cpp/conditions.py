@@ -2,13 +2,14 @@
 
 ``branches(node)`` answers, for one statement, which of its children run under which
 extra conditions; the visitor stacks them on the way down, so a call carries one
-``Condition`` per enclosing ``if`` / ``else`` / loop / ``switch`` + ``case`` / ``try`` /
-``catch``, and one for the branch of a ``?:`` or the right side of ``&&`` / ``||`` it
-is on (``if`` with the text of what is tested, ``else`` when it runs if that is false).
+``Condition`` per enclosing ``if`` / ``else`` / loop / ``switch`` / ``try`` / ``catch``,
+and one for the branch of a ``?:`` or the right side of ``&&`` / ``||`` it is on
+(``if`` with the text of what is tested, ``else`` when it runs if that is false).
 A call in a loop's or an ``if``'s own condition runs at least once, so it has none of
 them. A call in an ``else`` branch gets statement ``else`` with the text of its
 ``if``; a ``try`` block's condition has empty text; a ``catch`` block's text is its
-exception declaration; ``default:`` is a ``case`` with text ``default``. Condition
+exception declaration; a ``switch``'s is its value against the ``case`` labels the
+call follows (``mode == 1``; after ``default:``, ``mode != 1 && mode != 2``). Condition
 texts are taken from the source as written (macros unexpanded), whitespace collapsed.
 """
 
@@ -85,29 +86,41 @@ class ConditionReader:
         return out
 
     def _switch_body(self, body: Cursor, switch: Condition) -> list[Branch]:
-        """Statements of a switch body, each under the ``case`` labels it follows."""
+        """Statements of a switch body, each under one condition: the switch's value
+        equal to the ``case`` labels it follows (``mode == 1``), or, after ``default:``,
+        different from every other label (``mode != 1 && mode != 2``)."""
         if body.kind != CursorKind.COMPOUND_STMT:
             return [(body, (switch,))]
-        out: list[Branch] = []
-        label: Condition | None = None
+        groups: list[tuple[Cursor, list[str], Cursor]] = []  # (first label, texts, stmt)
         for statement in body.get_children():
-            if statement.kind in _LABELS:
-                texts: list[str] = []
-                start = statement
-                while statement.kind in _LABELS:
-                    inner = list(statement.get_children())
-                    if statement.kind == CursorKind.CASE_STMT:
-                        texts.append(self._text(inner[0]) if inner else "?")
-                    else:
-                        texts.append("default")
-                    if not inner:
-                        break
-                    statement = inner[-1]
-                label = self._condition(start, "case", ", ".join(texts))
-                if statement.kind in _LABELS:
-                    continue
-            conditions = (switch, label) if label is not None else (switch,)
-            out.append((statement, conditions))
+            if statement.kind not in _LABELS:
+                groups.append((statement, [], statement))
+                continue
+            texts: list[str] = []
+            start = statement
+            while statement.kind in _LABELS:
+                inner = list(statement.get_children())
+                if statement.kind == CursorKind.CASE_STMT:
+                    texts.append(self._text(inner[0]) if inner else "?")
+                else:
+                    texts.append("default")
+                if not inner:
+                    break
+                statement = inner[-1]
+            groups.append((start, texts, statement))
+        labels = [t for _, texts, _ in groups for t in texts if t != "default"]
+        value = switch.text
+        out: list[Branch] = []
+        condition = switch
+        for start, texts, statement in groups:
+            if texts:
+                if "default" in texts:
+                    text = " && ".join(f"{value} != {t}" for t in labels) or "default"
+                else:
+                    text = " || ".join(f"{value} == {t}" for t in texts)
+                condition = self._condition(start, "switch", text)
+            if statement.kind not in _LABELS:
+                out.append((statement, (condition,)))
         return out
 
     # -- text -------------------------------------------------------------------------

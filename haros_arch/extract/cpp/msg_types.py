@@ -27,7 +27,8 @@ _PARAM_TYPES = {
 
 
 def message_type(ctype: Type, service: bool = False,
-                 adapters: Mapping[str, Type] | None = None) -> str | None:
+                 adapters: Mapping[str, Type] | None = None,
+                 ros2: bool | None = None) -> str | None:
     """The ROS name of the message (or, with ``service``, service) type ``ctype`` holds;
     a type adapter (``rclcpp::TypeAdapter<Custom, Ros>``) or a custom type ``adapters``
     maps to its ROS message type (by canonical spelling) holds that ROS type."""
@@ -50,7 +51,7 @@ def message_type(ctype: Type, service: bool = False,
     if not scopes or not name:
         return None
     if _synthesised(decl):  # declared for a name the parse did not know (``synthesis``)
-        return written_type("::".join([*scopes, name]), None) or "?"
+        return written_type("::".join([*scopes, name]), ros2, used_as_message=True) or "?"
     return "/".join([*scopes, name])
 
 
@@ -59,11 +60,12 @@ _INTERFACE_FOLDERS = ("msg", "srv", "action")
 _INTERFACE_PACKAGE = re.compile(r"[a-z][a-z0-9_]*")
 
 
-def written_type(text: str, ros2: bool | None) -> str | None:
+def written_type(text: str, ros2: bool | None, used_as_message: bool = False) -> str | None:
     """The ROS interface a C++ type written ``text`` names, when it looks like one:
     ``pkg::msg::Name`` (ROS 2), ``pkg::Name`` with ``pkg`` a message package (a name
-    ending in ``_msgs``, ``_srvs`` or ``_interfaces``; ROS 1); None otherwise. ``ros2``
-    None: either form."""
+    ending in ``_msgs``, ``_srvs`` or ``_interfaces``, or any package when the code uses
+    the type as a message: ``waypoint_follower::lane``; ROS 1); None otherwise.
+    ``ros2`` None: either form."""
     parts = [p for p in text.replace(" ", "").lstrip(":").split("::") if p]
     while parts and parts[-1] in _POINTER_SUFFIXES:
         parts.pop()
@@ -73,9 +75,9 @@ def written_type(text: str, ros2: bool | None) -> str | None:
         return None
     if len(parts) == 3 and parts[1] in _INTERFACE_FOLDERS and ros2 is not False:
         return "/".join(parts)
-    if len(parts) == 2 and ros2 is not True and parts[0].endswith(
-        ("_msgs", "_srvs", "_interfaces")
-    ):
+    if len(parts) == 2 and ros2 is not True and ((used_as_message and ros2 is False) or (
+        parts[0].endswith(("_msgs", "_srvs", "_interfaces"))
+    )):
         return "/".join(parts)
     return None
 

@@ -11,7 +11,10 @@ a template (``T<``), a value. ``Names.header()`` renders them over one class,
 member it was asked for (static members of its own type, so ``obj.m(args)``,
 ``ptr->m`` and ``m`` as a value all parse); scopes become namespaces, or nested classes
 when the name is also a type. The header is prepended to the unit (``-include``) and the
-unit parsed again, for at most ``MAX_ROUNDS`` rounds, while the errors go down.
+unit parsed again in full, and that parse is kept when it has fewer errors. With
+``MAX_ROUNDS`` above 1, parses without function bodies look for further waves of names
+first (a class made valid shows its other members); on real workspaces they changed
+little and cost a parse each, so the default is one round.
 """
 
 from __future__ import annotations
@@ -20,7 +23,7 @@ import re
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 
-MAX_ROUNDS = 3  # extra parses of a unit with unknown names (0: no synthesis)
+MAX_ROUNDS = 1  # rounds of declaring unknown names (0: none; more: probes for waves)
 MAX_NAMES = 400  # names declared for one unit
 HEADER_NAME = "haros_synthesised_names.h"
 
@@ -135,6 +138,11 @@ class Names:
             return
         rest = text[found.end():found.end() + 2]
         last = self._last_use(use, rest)
+        if use == "any" and not scope and len(written) == 1 and (
+            last == "value" or rest.lstrip()[:1] == b"("
+        ):
+            return  # an unqualified function or variable: in a class, often a member
+            # clang could not find (an invalid base); declaring it would shadow it
         node = self.root
         for part in scope:
             node = node.children.setdefault(part, _Name(known=True))

@@ -132,7 +132,9 @@ class Scope:
             method = call.referenced
             if method is not None and not method.is_const_method():
                 for obj in children[0].get_children():
-                    self._write_ref(strip(obj), None)
+                    obj = strip(obj)
+                    if obj.type.get_canonical().kind != TypeKind.POINTER:
+                        self._write_ref(obj, None)  # p->m() changes *p, not p
 
     def _write_ref(self, target: Cursor, value: Cursor | None) -> None:
         decl = target.referenced if target.kind == CursorKind.DECL_REF_EXPR else None

@@ -233,7 +233,7 @@ class CallFinder:
                 made.type == "?"
             ):
                 self.calls[index] = dataclasses.replace(
-                    made, type=msg_types.written_type(written, self.ros2) or "?")
+                    made, type=msg_types.written_type(written, self.ros2, True) or "?")
         self.diagnostics.append(diag.make(
             "CPP_CALL_UNRESOLVED", self.calls[before].location, function=function,
             type=self.calls[before].type or "?"))
@@ -534,7 +534,9 @@ def _recovered_name(expr: Cursor) -> str:
         name = ""
         tokens = [t.spelling for t in itertools.islice(head.get_tokens(), 40)]
         for before, token in itertools.pairwise(tokens):
-            if before in ("->", ".") and token.isidentifier():
+            if before in ("->", ".", "template") and token.isidentifier() and (
+                token != "template"  # node->template create_service<T>(...)
+            ):
                 name = token
         return name
     return ""

@@ -40,7 +40,7 @@ NODE_METHODS: dict[str, PyFunction] = {
     "set_parameters_atomically": PyFunction("write", name=None, special="set-parameters"),
     "undeclare_parameter": PyFunction("write"),
     # AsyncParameterClient: sets the parameters a YAML file names, unknown statically
-    "load_parameter_file": PyFunction("write", name=None, fixed_name="~?"),
+    "load_parameter_file": PyFunction("write", name=None, fixed_name="?"),
     # AsyncParameterClient only (parameters of another node)
     "delete_parameters": PyFunction("write", name=None, special="parameter-names"),
 }

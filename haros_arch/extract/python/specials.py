@@ -43,7 +43,7 @@ def special_calls(ev: Evaluator, spec: PyFunction, call: ast.Call, frame: Frame,
             full = f"{prefix}.{name}" if prefix else name
             value = ev.eval(pair[1], frame) if len(pair) > 1 else None
             ev.declared[full] = value
-            made.append(replace(base, name=f"~{full}", type=param_type(value)))
+            made.append(replace(base, name=full, type=param_type(value)))
     elif spec.special == "parameter-names":
         items = call.args[0] if call.args else argument(call, _kw("names"))
         listed = evaluate(ev, items, frame)
@@ -59,7 +59,7 @@ def special_calls(ev: Evaluator, spec: PyFunction, call: ast.Call, frame: Frame,
                 made.append(replace(base, name=name, type=param_type(
                     evaluate(ev, value_expr, frame))))
     if not made:
-        made.append(replace(base, name="~?"))
+        made.append(replace(base, name="?"))
     return made
 
 
@@ -78,6 +78,7 @@ def _elements(expr: ast.expr | None) -> list[ast.expr]:
 
 
 def param_name(text: Value) -> str:
-    """A ROS 2 parameter name as a private name of its node (``~use_sim_time``)."""
+    """A ROS 2 parameter name as rclcpp's extraction writes it, relative to its node
+    (``use_sim_time``; the graph resolves it in the node's own scope)."""
     name = text.text
-    return name if name.startswith(("~", "/")) else "~" + name
+    return name[2:] if name.startswith("~/") else name.removeprefix("~")

@@ -10,6 +10,7 @@ from typing import Any
 
 from ...model.serialise import to_data
 from ..model import LaunchModel
+from .params import Binary
 
 
 def leaf_parameters(model: LaunchModel) -> dict[str, Any]:
@@ -25,7 +26,8 @@ def _leaves(name: str, value: Any, out: dict[str, Any]) -> None:
             _leaves(f"{name.rstrip('/')}/{key}", item, out)
         return
     out.pop(name, None)  # a later value of the same name wins, in launch order
-    out[name] = str(value) if isinstance(value, str) else value
+    # plain text, but a binary value keeps its kind (a str holding base64)
+    out[name] = str(value) if isinstance(value, str) and not isinstance(value, Binary) else value
 
 
 def as_data(model: LaunchModel) -> dict[str, Any]:
@@ -39,7 +41,7 @@ def as_data(model: LaunchModel) -> dict[str, Any]:
     return {"nodes": nodes, "parameters": leaf_parameters(model),
             "includes": model.files[1:], "cleared": model.clear_params,
             "deleted": model.deleted_params,
-            "diagnostics": to_data(model.diagnostics)}
+            "diagnostics": to_data(model.diagnostics), "tree": to_data(model.tree)}
 
 
 def as_text(model: LaunchModel) -> str:

@@ -18,10 +18,12 @@ from lxml import etree
 from ... import diagnostics as diag
 from ...files import read_bytes
 from ...manifest import xml_parser
+from ...model.launch_tree import ArgOrigin, LaunchArg, LaunchCondition, LaunchItem
 from ...model.location import Location
 from ...model.values import Value
 from ...workspace import Workspace
 from ..model import LaunchModel, NodeDecl
+from ..tree import MAX_SKIPPED, node_items, param_names, ros1_condition
 from . import tags_params
 from .scope import Scope, canonical, global_ns, is_legal_name
 from .substitution import ArgUndefined, Context, SubstitutionError, substitute
@@ -63,6 +65,8 @@ class Ros1Loader:
         self.default_machine: str | None = None
         self.node_names: dict[str, Location] = {}
         self.includes = 0
+        # the if/unless of the element being handled, for the launch tree
+        self.guard: LaunchCondition | None = None
         self.tags: dict[str, Callable[[Element, Scope], None]] = {
             "node": self.tag_node, "test": self.tag_node, "param": self.tag_param,
             "remap": self.tag_remap, "arg": self.tag_arg, "group": self.tag_group,
@@ -149,6 +153,7 @@ class Ros1Loader:
 
     def condition(self, element: Element, scope: Scope) -> Scope | None:
         """Apply if/unless: None drops the element, else the scope to use inside it."""
+        self.guard = None
         if element.get("if") is not None and element.get("unless") is not None:
             self.report("LAUNCH_IF_AND_UNLESS", scope, element, tag=element.tag)
             return None
@@ -156,16 +161,44 @@ class Ros1Loader:
             value = self.value(element, attribute, scope)
             if value is None:
                 continue
+            raw = element.get(attribute, "")
             if value.literal is None:
-                return scope.conditional(element.get(attribute, ""), attribute,
-                                         self.where(scope, element))
+                self.guard = ros1_condition(raw, attribute, scope.args, None,
+                                            self.environment)
+                return scope.conditional(raw, attribute, self.where(scope, element))
             truth = value.literal.strip().lower()
             if truth not in ("true", "1", "false", "0"):
                 self.fail(scope, element, f"{attribute}=\"{value.literal}\" is not a boolean")
                 return None
-            if (truth in ("true", "1")) != (attribute == "if"):
+            holds = (truth in ("true", "1")) == (attribute == "if")
+            self.guard = ros1_condition(raw, attribute, scope.args, holds, self.environment)
+            if not holds:
                 return None
         return scope
+
+    def take_guard(self) -> LaunchCondition | None:
+        guard, self.guard = self.guard, None
+        return guard
+
+    def skipped(self, element: Element, scope: Scope, guard: LaunchCondition) -> None:
+        """A node, include or group a decided condition leaves out: named as written,
+        with what it would have started."""
+        item = scope.item.add(self.raw_item(element, scope))
+        item.condition = guard
+        if element.tag == "group":
+            for inner in element.iter("node", "test", "include"):
+                if inner is not element and len(item.children) < MAX_SKIPPED:
+                    item.add(self.raw_item(inner, scope))
+
+    def raw_item(self, element: Element, scope: Scope) -> LaunchItem:
+        where = self.where(scope, element)
+        if element.tag == "include":
+            return LaunchItem("include", element.get("file", ""), where, skipped=True)
+        if element.tag == "group":
+            return LaunchItem("group", element.get("ns", ""), where, skipped=True)
+        return LaunchItem("node", element.get("name") or element.get("test-name") or "", where,
+                          detail=f"{element.get('pkg', '')}/{element.get('type', '')}",
+                          skipped=True)
 
     # -- traversal ------------------------------------------------------------
     def parse(self, path: str, location: Location) -> Element | None:
@@ -210,8 +243,17 @@ class Ros1Loader:
                 self.report("LAUNCH_UNKNOWN_TAG", scope, child, tag=child.tag)
                 continue
             inner = self.condition(child, scope)
-            if inner is not None and self.check(child, inner):
+            if inner is None:
+                if self.guard is not None and child.tag in ("node", "test", "include",
+                                                            "group"):
+                    self.skipped(child, scope, self.guard)
+                continue
+            if self.check(child, inner):
+                params_before = len(self.model.params)
                 handler(child, inner)
+                if child.tag in ("param", "rosparam"):
+                    scope.item.params.extend(param_names(self.model, params_before))
+            self.guard = None
 
     # -- tags -----------------------------------------------------------------
     def tag_param(self, element: Element, scope: Scope, local: bool = False) -> None:
@@ -234,6 +276,7 @@ class Ros1Loader:
         if name not in scope.arg_names:
             scope.arg_names.append(name)
         target = scope.args if scope.include_args is None else scope.include_args
+        given = name in target
         if value is not None:
             if name in target and not scope.pass_all_args:
                 self.fail(scope, element,
@@ -242,11 +285,34 @@ class Ros1Loader:
             target[name] = value
         elif default is not None and name not in target:
             target[name] = default
+        self.record_arg(name, scope, element, given, value is not None, default is not None)
+
+    def record_arg(self, name: str, scope: Scope, element: Element, given: bool,
+                   fixed: bool, has_default: bool) -> None:
+        """The argument on the tree: passed by an ``<include>``, or declared here."""
+        where = self.where(scope, element)
+        if scope.include_args is not None:  # an <arg> inside an <include>
+            final = scope.include_args.get(name)
+            scope.item.args[:] = [a for a in scope.item.args if a.name != name]
+            scope.item.args.append(LaunchArg(
+                name, final.text if final is not None else None, "include", where))
+            return
+        if scope.item.arg(name) is not None and not fixed:
+            return  # given by the including file or the command line
+        final = scope.args.get(name)
+        origin: ArgOrigin = "value" if fixed else "unset" if final is None else (
+            "default" if has_default and not given else "include")
+        scope.item.args.append(LaunchArg(
+            name, final.text if final is not None else None, origin, where))
 
     def tag_group(self, element: Element, scope: Scope) -> None:
+        guard = self.take_guard()
         inner = self.ns_clear_params(element, scope)
         if inner is not None:
             inner.private = list(inner.private)
+            inner.item = scope.item.add(LaunchItem(
+                "group", inner.ns if element.get("ns") else "", self.where(scope, element),
+                namespace=inner.ns, condition=guard))
             self.children(element, inner)
 
     def ns_clear_params(self, element: Element, scope: Scope, node_name: str | None = None,
@@ -275,6 +341,7 @@ class Ros1Loader:
         pair = self.remap_pair(element, scope)
         if pair is not None:
             scope.add_remap(pair)
+            scope.item.remaps.append(pair)
 
     def remap_pair(self, element: Element, scope: Scope) -> tuple[str, str] | None:
         source = canonical(self.text(element, "from", scope) or "")
@@ -309,6 +376,13 @@ class Ros1Loader:
             self.default_machine = name
 
     def tag_node(self, element: Element, scope: Scope) -> None:
+        guard = self.take_guard()
+        nodes_before, params_before = len(self.model.nodes), len(self.model.params)
+        self.node(element, scope)
+        for item in node_items(self.model, nodes_before, params_before, guard):
+            scope.item.add(item)
+
+    def node(self, element: Element, scope: Scope) -> None:
         is_test = element.tag == "test"
         if is_test:
             for attribute in ("respawn", "respawn_delay", "output"):
@@ -402,22 +476,31 @@ class Ros1Loader:
             env=list(env.env), is_test=is_test))
 
     def tag_include(self, element: Element, scope: Scope) -> None:
+        guard = self.take_guard()
         path = self.value(element, "file", scope)
+        where = self.where(scope, element)
         if path is None or path.literal is None:
             self.report("LAUNCH_UNSUPPORTED", scope, element,
                         detail=f"include file \"{element.get('file')}\" is not known statically")
+            scope.item.add(LaunchItem("include", element.get("file", ""), where,
+                                      condition=guard))
             return
         pass_all = self.flag(element, "pass_all_args", scope, False)
         filename = os.path.abspath(path.literal)
         inner = self.ns_clear_params(element, scope, include=filename)
         if inner is None:
             return
+        inner.item = scope.item.add(LaunchItem(
+            "file", self.workspace.relpath(filename), where, namespace=inner.ns,
+            condition=guard))
         if pass_all:
             assert inner.include_args is not None
             for name, value in scope.args.items():
                 inner.include_args[name] = value
                 if name not in inner.arg_names:
                     inner.arg_names.append(name)
+                inner.item.args.append(LaunchArg(name, value.text if value is not None
+                                                 else None, "include", where))
             inner.pass_all_args = True
         inner.filename = scope.filename  # the include's children substitute as the parent
         for child in element:
@@ -428,6 +511,7 @@ class Ros1Loader:
                 self.report("LAUNCH_UNKNOWN_TAG", scope, child, tag=child.tag)
                 continue
             inner_child = self.condition(child, inner)
+            self.guard = None
             if inner_child is not None and self.check(child, inner_child):
                 (self.tag_arg if tag == "arg" else self.tag_env)(child, inner)
         inner.filename = filename
@@ -470,6 +554,11 @@ def load(path: str, workspace: Workspace, args: Mapping[str, str] | None = None,
     loader = Ros1Loader(workspace, env)
     given = {k: Value.of(v) for k, v in (args or {}).items()}
     scope = Scope.root(os.path.abspath(path), given, env.get("ROS_NAMESPACE", "/"))
+    scope.item = LaunchItem("file", workspace.relpath(os.path.abspath(path)),
+                            workspace.location(os.path.abspath(path)), namespace=scope.ns,
+                            args=[LaunchArg(k, v.text, "command line")
+                                  for k, v in given.items()])
+    loader.model.tree.append(scope.item)
     loader.load_file(path, scope)
     loader.model.args = {k: (v.text if v is not None else None)
                          for k, v in scope.args.items()}

@@ -15,6 +15,7 @@ from dataclasses import dataclass, field, replace
 from typing import Any
 
 from ...model.conditions import Condition
+from ...model.launch_tree import LaunchItem
 from ...model.location import NOWHERE, Location
 from ...model.values import Unknown, Value
 from .params import join
@@ -71,6 +72,8 @@ class Scope:
     conditions: tuple[Condition, ...] = ()
     in_include: bool = False
     stack: tuple[str, ...] = ()
+    # the launch tree's file or group being read (shared by the scopes made from it)
+    item: LaunchItem = field(default_factory=lambda: LaunchItem("file", ""))
 
     @classmethod
     def root(cls, path: str, args: dict[str, Value], namespace: str = "/") -> Scope:

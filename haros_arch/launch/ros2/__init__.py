@@ -15,8 +15,10 @@ import yaml
 from lxml import etree
 
 from ...files import read_bytes, read_text
+from ...model.launch_tree import LaunchItem
 from ...model.location import Location
 from ...model.values import Value
+from ...share import share_source
 from ...workspace import Workspace
 from ..dialect import ros_version
 from ..model import LaunchModel
@@ -89,6 +91,9 @@ def load(path: str, workspace: Workspace, args: Mapping[str, str] | None = None,
     runner = Runner(workspace, env, parse_file)
     scope = Scope({k: Value.of(v) for k, v in (args or {}).items()})
     path = os.path.abspath(path)
+    scope.item = LaunchItem("file", workspace.relpath(share_source(workspace, path)),
+                            workspace.location(path), namespace="/")
+    runner.model.tree.append(scope.item)
     runner.run_file(path, scope, workspace.location(path))
     model = runner.model
     for name, value in (args or {}).items():

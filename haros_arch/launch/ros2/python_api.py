@@ -13,6 +13,7 @@ from __future__ import annotations
 import ast
 import os
 from collections.abc import Callable
+from pathlib import PurePosixPath
 from typing import Any
 
 from ... import diagnostics as diag
@@ -95,7 +96,15 @@ def path_substitution(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     return e.PathJoin((to_text(arg(a, k, 0, "path")),))
 
 
+def pure_path(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``pathlib.Path(...)`` of known strings: a pure path (no file is looked at)."""
+    if k or not all(isinstance(p, (str, PurePosixPath)) for p in a):
+        return Unk("a pathlib path of values not known statically")
+    return PurePosixPath(*a)
+
+
 def os_path_join(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    a = [str(p) if isinstance(p, PurePosixPath) else p for p in a]
     if all(isinstance(p, str) for p in a):
         return os.path.join(*a) if a else Unk("os.path.join()")
     return Lazy((e.PathJoin(tuple(to_text(p) for p in a)),))
@@ -103,8 +112,8 @@ def os_path_join(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
 
 def os_path(function: Callable[[str], Any]) -> Builder:
     def build(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
-        if a and isinstance(a[0], str):
-            return function(a[0])
+        if a and isinstance(a[0], (str, PurePosixPath)):
+            return function(str(a[0]))
         if function is os.path.dirname and a and isinstance(a[0], Lazy):
             return Unk("dirname of a path not known statically")
         return Unk(f"{function.__name__} of a value not known statically")
@@ -444,6 +453,7 @@ API: dict[str, Builder] = {
     "basename": os_path(os.path.basename), "abspath": os_path(os.path.normpath),
     "realpath": os_path(os.path.normpath), "getenv": getenv,
     "PathJoinSubstitution": path_join, "PathSubstitution": path_substitution,
+    "Path": pure_path, "PurePath": pure_path, "PurePosixPath": pure_path,
     "TextSubstitution": text_substitution,
     "PythonExpression": python_expression,
     "ThisLaunchFileDir": lambda i, a, k, n: e.ThisFile(True),
@@ -487,7 +497,8 @@ API: dict[str, Builder] = {
     "EmitEvent": ignored, "AppendEnvironmentVariable": ignored, "SetROSLogDir": ignored,
     "SetUseSimTime": ignored,
     "ParameterFile": param_file, "ParameterValue": parameter_value, **NAV2_COMMON,
-    "len": builtin(len, str, list, tuple, dict), "str": builtin(str, str, int, float, bool),
+    "len": builtin(len, str, list, tuple, dict),
+    "str": builtin(str, str, int, float, bool, PurePosixPath),
     "int": builtin(int, str, int, float, bool), "float": builtin(float, str, int, float),
     "bool": builtin(bool, *SCALARS), "list": builtin(list, str, list, tuple, dict),
     "tuple": builtin(tuple, str, list, tuple), "dict": builtin(dict, list, tuple, dict),

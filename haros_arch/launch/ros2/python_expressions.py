@@ -10,6 +10,7 @@ from __future__ import annotations
 import ast
 from collections.abc import Callable
 from dataclasses import dataclass
+from pathlib import PurePosixPath
 from typing import TYPE_CHECKING, Any
 
 from ...evaluate import budget
@@ -36,6 +37,8 @@ from .python_values import (
 
 if TYPE_CHECKING:
     from .python import Interpreter
+
+_PATH_ATTRIBUTES = frozenset(("parent", "name", "stem", "suffix", "parts"))
 
 
 class Expressions:
@@ -136,6 +139,10 @@ class Expressions:
         return self.binop(node.op, self.eval(node.left, env), self.eval(node.right, env), node)
 
     def binop(self, op: ast.operator, left: Any, right: Any, node: ast.AST) -> Any:
+        if isinstance(op, ast.Div) and (isinstance(left, PurePosixPath) or isinstance(
+                right, PurePosixPath)) and isinstance(left, (str, PurePosixPath)) \
+                and isinstance(right, (str, PurePosixPath)):
+            return PurePosixPath(left) / right  # pathlib, pure: no file is looked at
         if isinstance(op, ast.Div) and isinstance(left, e.PathJoin):
             # PathJoinSubstitution / part, as pathlib.Path does (launch >= 3.7)
             if isinstance(right, Unk):
@@ -251,6 +258,8 @@ class Expressions:
             return Ref(f"{owner.qualified}.{node.attr}")
         if isinstance(owner, Context) and node.attr == "launch_configurations":
             return owner
+        if isinstance(owner, PurePosixPath) and node.attr in _PATH_ATTRIBUTES:
+            return getattr(owner, node.attr)
         return _Bound(owner, node.attr)
 
     def e_Call(self, node: ast.Call, env: dict[str, Any]) -> Any:

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import ast
 from collections.abc import Callable
+from pathlib import PurePosixPath
 from typing import TYPE_CHECKING, Any
 
 import yaml
@@ -243,12 +244,26 @@ def m_dict(name: str) -> Method:
     return call
 
 
+def m_path(name: str) -> Method:
+    """``as_posix``, ``joinpath``, ``with_name``, ``with_suffix`` of a pure path."""
+    def call(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
+        if not isinstance(owner, PurePosixPath) or k or not all(
+                isinstance(v, (str, PurePosixPath)) for v in a):
+            return Unk(f"Path.{name}() of a value not known statically")
+        try:
+            return getattr(owner, name)(*a)
+        except (TypeError, ValueError) as err:
+            return i.unsupported(n, f"Path.{name}() fails: {err}")
+    return call
+
+
 METHODS: dict[str, Method] = {
     "add_action": m_add_action, "find": m_find, "read": m_read, "evaluate": m_evaluate,
     "append": m_list("append"), "extend": m_list("extend"),
     "insert": m_list("insert"), "items": m_dict("items"), "keys": m_dict("keys"),
     "values": m_dict("values"), "get": m_dict("get"), "update": m_dict("update"),
     "copy": m_dict("copy"), "perform": m_str("perform"),
+    **{name: m_path(name) for name in ("as_posix", "joinpath", "with_name", "with_suffix")},
     **{name: m_str(name) for name in (
         "format", "join", "replace", "split", "strip", "lstrip", "rstrip", "lower", "upper",
         "startswith", "endswith", "capitalize", "title", "rsplit", "removeprefix",

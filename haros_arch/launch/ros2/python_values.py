@@ -11,6 +11,7 @@ import ast
 import operator
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from pathlib import PurePosixPath
 from typing import Any
 
 from . import entities as e
@@ -155,6 +156,8 @@ def to_text(value: Any) -> e.Text:
     """A launch text (str / substitution / list of them) as our ``Text``."""
     if isinstance(value, str):
         return (value,)
+    if isinstance(value, PurePosixPath):  # pathlib.Path(...) of known parts
+        return (str(value),)
     if isinstance(value, Lazy):
         return value.text
     if isinstance(value, e.Subst):
@@ -178,7 +181,7 @@ def concat(parts: list[Any]) -> Any:
     for part in parts:
         if isinstance(part, (int, float)) and not isinstance(part, bool):
             out.append(str(part))
-        elif isinstance(part, (str, Lazy, e.Subst, Unk)):
+        elif isinstance(part, (str, Lazy, e.Subst, Unk, PurePosixPath)):
             out.extend(to_text(part))
         else:
             out.append(e.Opaque(f"{type(part).__name__} in a string"))

@@ -19,14 +19,16 @@ from ... import diagnostics as diag
 from ... import safe_yaml
 from ...files import read_text
 from ...model.conditions import Condition
+from ...model.launch_tree import ArgOrigin, LaunchArg, LaunchCondition, LaunchItem
 from ...model.location import Location
 from ...model.values import Unknown, Value
 from ...share import share_source
 from ...workspace import Workspace
 from ..model import LaunchModel, NodeDecl, ParamDecl
 from ..partial_yaml import marked_text, unknown_parts
+from ..tree import node_items
 from . import entities as e
-from . import naming
+from . import naming, recording
 from .substitutions import Evaluator
 
 MAX_INCLUDE_DEPTH = 24
@@ -47,6 +49,8 @@ class Scope:
     conditions: tuple[Condition, ...] = ()
     environment: dict[str, str] = field(default_factory=dict)
     file: str = ""
+    # the launch tree's file or group being performed (shared by copies of the scope)
+    item: LaunchItem = field(default_factory=lambda: LaunchItem("file", ""))
 
     def copy(self) -> Scope:
         return replace(self, configs=dict(self.configs), remaps=list(self.remaps),
@@ -63,6 +67,7 @@ class Runner:
         self.stack: list[str] = []
         self.performed = 0
         self.anon: dict[str, Unknown] = {}
+        self.guard: LaunchCondition | None = None  # the condition of the action at hand
 
     # -- diagnostics and values --------------------------------------------------
     def report(self, code: str, location: Location, **params: object) -> None:
@@ -84,6 +89,8 @@ class Runner:
         if cond is None:
             return scope
         truth = self.evaluator(scope, location).truth(cond)
+        self.guard = recording.condition(cond, scope.configs, truth,
+                                         {**self.environment, **scope.environment})
         if truth is None:
             statement = "unless" if cond.negate else "if"
             made = Condition(cond.source or "?", "launch", statement, location)
@@ -122,8 +129,14 @@ class Runner:
                 self.report("LAUNCH_PY_BUDGET", action.location,
                             detail=f"more than {MAX_ACTIONS} launch actions")
                 return
+            self.guard = None
             inner = self.condition(action.condition, scope, action.location)
             if inner is None:
+                left_out = recording.skipped(action, self.guard) if self.guard else None
+                if left_out is not None:
+                    if left_out.kind == "include" and os.path.isabs(left_out.name):
+                        left_out.name = self.workspace.relpath(left_out.name)
+                    scope.item.add(left_out)
                 continue
             handler = getattr(self, "do_" + type(action).__name__, None)
             if handler is None:
@@ -142,7 +155,12 @@ class Runner:
             finally:
                 scope.conditions = saved
 
+    def take_guard(self) -> LaunchCondition | None:
+        guard, self.guard = self.guard, None
+        return guard
+
     def do_DeclareArg(self, action: e.DeclareArg, scope: Scope) -> None:
+        self.record_arg(action, scope)
         if action.name in scope.configs:
             return
         if action.default is None:
@@ -154,6 +172,23 @@ class Runner:
             value = scope.configs[action.name]
             self.model.args[action.name] = value.text if value is not None else None
 
+    def record_arg(self, action: e.DeclareArg, scope: Scope) -> None:
+        """The argument on the tree, unless the including file gave it already."""
+        if scope.item.arg(action.name) is not None:
+            return
+        if action.name in scope.configs:
+            given = scope.configs[action.name]
+            origin: ArgOrigin = "command line" if len(self.stack) == 1 else "include"
+            scope.item.args.append(LaunchArg(
+                action.name, given.text if given is not None else None, origin,
+                action.location))
+            return
+        value = None if action.default is None else self.value(
+            action.default, scope, action.location)
+        scope.item.args.append(LaunchArg(
+            action.name, value.text if value is not None else None,
+            "unset" if action.default is None else "default", action.location))
+
     def do_SetConfig(self, action: e.SetConfig, scope: Scope) -> None:
         name = self.value(action.name, scope, action.location)
         if name is None or name.literal is None:
@@ -162,6 +197,9 @@ class Runner:
 
     def do_Group(self, action: e.Group, scope: Scope) -> None:
         inner = scope.copy() if action.scoped else scope
+        inner.item = scope.item.add(LaunchItem(
+            "group", "", action.location, namespace=scope.namespace or "/",
+            condition=self.take_guard()))
         if action.scoped and not action.forwarding:
             inner.configs = {}
         for key, val in action.configs:
@@ -189,16 +227,20 @@ class Runner:
         value = self.value(action.namespace, scope, action.location)
         if value is not None:
             scope.namespace = naming.push_namespace(scope.namespace, value.text)
+            scope.item.pushed.append(value.text)
+            scope.item.namespace = scope.namespace or "/"
 
     def do_SetRemap(self, action: e.SetRemap, scope: Scope) -> None:
         src = self.value(action.source, scope, action.location) or Value()
         dst = self.value(action.target, scope, action.location) or Value()
         scope.remaps.append((src.text, dst.text))
+        scope.item.remaps.append((src.text, dst.text))
 
     def do_SetParam(self, action: e.SetParam, scope: Scope) -> None:
         name = self.value(action.name, scope, action.location)
         if name is not None:
             scope.params.append((name.text, action.value, action.location))
+            scope.item.params.append(name.text)
 
     def do_SetParamFile(self, action: e.SetParamFile, scope: Scope) -> None:
         """``SetParametersFromFile``: the file's path is performed now; each node in
@@ -210,6 +252,7 @@ class Runner:
             return
         entry = e.ParamFile((path.literal,), location=action.location)
         scope.params.append((None, entry, action.location))
+        scope.item.params.append(path.literal)
 
     def do_SetEnv(self, action: e.SetEnv, scope: Scope) -> None:
         name = self.value(action.name, scope, action.location)
@@ -228,11 +271,22 @@ class Runner:
             self.report("LAUNCH_UNSUPPORTED", action.location,
                         detail=f"included file {path} is not known statically")
             return
+        item = LaunchItem("file", self.workspace.relpath(share_source(
+            self.workspace, os.path.abspath(path.literal))), action.location,
+            namespace=scope.namespace or "/", condition=self.take_guard())
         for key, val in action.args:
             name = self.value(key, scope, action.location)
             if name is not None and name.literal is not None:
-                scope.configs[name.literal] = self.value(val, scope, action.location)
-        self.run_file(path.literal, scope, action.location)
+                value = self.value(val, scope, action.location)
+                scope.configs[name.literal] = value
+                item.args.append(LaunchArg(name.literal, value.text if value is not None
+                                           else None, "include", action.location))
+        outer = scope.item
+        scope.item = outer.add(item)
+        try:
+            self.run_file(path.literal, scope, action.location)
+        finally:
+            scope.item = outer
 
     def do_Delayed(self, action: e.Delayed, scope: Scope) -> None:
         inner = scope.copy()
@@ -255,15 +309,23 @@ class Runner:
     def do_NodeAction(self, action: e.NodeAction, scope: Scope) -> None:
         from .nodes import perform_node
 
+        guard = self.take_guard()
+        nodes_before, params_before = len(self.model.nodes), len(self.model.params)
         perform_node(self, action, scope)
+        for item in node_items(self.model, nodes_before, params_before, guard):
+            scope.item.add(item)
 
     def do_LoadComposable(self, action: e.LoadComposable, scope: Scope) -> None:
         from .nodes import perform_composable
 
         target = self.value(action.target, scope, action.location) or Value.unknown()
         container = target.text if target.text.startswith("/") else "/" + target.text
+        guard = self.take_guard()
+        nodes_before, params_before = len(self.model.nodes), len(self.model.params)
         for node in action.nodes:
             perform_composable(self, node, scope, container)
+        for item in node_items(self.model, nodes_before, params_before, guard):
+            scope.item.add(item)
 
     # -- parameter files -------------------------------------------------------------
     def param_file(self, entry: e.ParamFile, scope: Scope, where: Location,

@@ -244,8 +244,9 @@ class Evaluator:
         if name is None:
             return Value.unknown("package with an unknown name")
         found = self.runner.workspace.find(name)
-        if found is None:
-            self.report("PACKAGE_NOT_FOUND", name=name)
+        if found is None:  # installed on the robot, perhaps: unknown here, as in ROS 1
+            self.report("LAUNCH_UNKNOWN_VALUE", detail=f"package {name} is not in the "
+                        "workspace nor installed here")
             return Value.unknown(f"find {name}")
         if s.share:
             return Value.of(found)
@@ -282,7 +283,8 @@ class Evaluator:
         prefix = install_prefix(workspace, package)
         if prefix is None:
             if workspace.find(package) is None:
-                self.report("PACKAGE_NOT_FOUND", name=package)
+                self.report("LAUNCH_UNKNOWN_VALUE", detail=f"package {package} is not in "
+                            "the workspace nor installed here")
             else:
                 self.report("LAUNCH_UNKNOWN_VALUE", detail=f"package {package} has no "
                             "install prefix (found outside an ament prefix)")

@@ -90,7 +90,7 @@ function legend() {
   const fold = el('button', {id: 'legend-fold', type: 'button', title: 'show or hide the legend'}, 'legend');
   const box = el('div', {id: 'legend'}, fold);
   fold.addEventListener('click', () => foldLegend(!box.classList.contains('folded')));
-  const svg = d3.select(box).append('svg').attr('width', 150).attr('height', 178);
+  const svg = d3.select(box).append('svg').attr('width', 150).attr('height', 202);
   const samples = [['node', 'node instance'], ['topic', 'topic'], ['service', 'service'], ['action', 'action'], ['parameter', 'parameter']];
   samples.forEach(([kind, label], i) => {
     const v = {kind, w: 40, h: kind === 'parameter' ? 14 : 18};
@@ -106,6 +106,9 @@ function legend() {
   u.append('g').attr('class', 'badge').attr('transform', 'translate(18,-9)')
     .call(g => { g.append('circle').attr('r', 6); g.append('text').attr('dy', '0.35em').text('?'); });
   svg.append('text').attr('x', 54).attr('y', y + 28).text('name has ?');
+  const p = svg.append('g').attr('class', 'vertex k-node incomplete').attr('transform', `translate(26,${y + 48})`);
+  p.append('path').attr('class', 'shape').attr('d', shapePath({kind: 'node', w: 40, h: 18}));
+  svg.append('text').attr('x', 54).attr('y', y + 52).text('partial interface');
   return box;
 }
 

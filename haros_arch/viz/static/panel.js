@@ -131,12 +131,16 @@ function entityLink(entity, app) {
 
 // ---- findings and diagnostics --------------------------------------------------------
 
+function shorten(text, most) {
+  return text.length <= most ? text : text.slice(0, most - 1) + '\u2026';
+}
+
 function findingItem(finding, app) {
   const names = (finding.entities || []).map(id => (app.index.entities.get(id) || {name: id}).name);
   const item = el('div', {class: 'item finding', 'data-rule': finding.rule, onclick: () => app.showFinding(finding)},
     severityBadge(finding.severity),
     el('span', {class: 'item-title'}, names.length ? names.slice(0, 2).join(' \u00b7 ') : (finding.title || finding.rule)),
-    el('span', {class: 'item-sub'}, finding.message || finding.rule));
+    el('span', {class: 'item-sub'}, shorten(finding.message || finding.rule, 160)));
   item.__finding = finding;
   return item;
 }
@@ -152,6 +156,8 @@ function findingPanel(finding, app) {
     el('h4', {}, `Involves (${involved.length})`),
     el('div', {}, involved.map(e => el('div', {}, e.kind === 'missing' ? el('code', {}, e.id) : entityLink(e, app)))),
     codeBlock(finding.location, app.sources),
+    ...((finding.also || []).length ? [el('h4', {}, `The same problem at (${finding.also.length})`),
+      ...finding.also.map(loc => codeBlock(loc, app.sources, 1))] : []),
   ];
 }
 

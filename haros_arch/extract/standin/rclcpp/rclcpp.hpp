@@ -392,11 +392,37 @@ public:
   bool use_intra_process_comms() const;
 };
 namespace node_interfaces {
-class NodeBaseInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeBaseInterface) const char* get_name() const; };
+class NodeBaseInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeBaseInterface)
+  const char* get_name() const; const char* get_namespace() const;
+  const char* get_fully_qualified_name() const; std::shared_ptr<class Context> get_context();
+  template<class... A> std::shared_ptr<CallbackGroup> create_callback_group(A&&... args);
+  std::shared_ptr<CallbackGroup> get_default_callback_group(); };
 class NodeTopicsInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeTopicsInterface) };
-class NodeParametersInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeParametersInterface) };
-class NodeLoggingInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeLoggingInterface) };
-class NodeClockInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeClockInterface) };
+// rclcpp's parameter API on the node's parameters interface (api.RCLCPP_INTERFACES)
+class NodeParametersInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeParametersInterface)
+  const rclcpp::ParameterValue& declare_parameter(const std::string& name,
+      const rclcpp::ParameterValue& default_value = rclcpp::ParameterValue(),
+      const rcl_interfaces::msg::ParameterDescriptor& descriptor =
+          rcl_interfaces::msg::ParameterDescriptor(), bool ignore_override = false);
+  const rclcpp::ParameterValue& declare_parameter(const std::string& name,
+      rclcpp::ParameterType type, const rcl_interfaces::msg::ParameterDescriptor& descriptor =
+          rcl_interfaces::msg::ParameterDescriptor(), bool ignore_override = false);
+  void undeclare_parameter(const std::string& name);
+  bool has_parameter(const std::string& name) const;
+  rclcpp::Parameter get_parameter(const std::string& name) const;
+  bool get_parameter(const std::string& name, rclcpp::Parameter& parameter) const;
+  std::vector<rclcpp::Parameter> get_parameters(const std::vector<std::string>& names) const;
+  bool get_parameters_by_prefix(const std::string& prefix,
+      std::map<std::string, rclcpp::Parameter>& parameters) const;
+  std::vector<rcl_interfaces::msg::SetParametersResult> set_parameters(
+      const std::vector<rclcpp::Parameter>& parameters);
+  rcl_interfaces::msg::SetParametersResult set_parameters_atomically(
+      const std::vector<rclcpp::Parameter>& parameters);
+  const std::map<std::string, rclcpp::ParameterValue>& get_parameter_overrides() const; };
+class NodeLoggingInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeLoggingInterface)
+  rclcpp::Logger get_logger() const; const char* get_logger_name() const; };
+class NodeClockInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeClockInterface)
+  std::shared_ptr<rclcpp::Clock> get_clock(); };
 class NodeGraphInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeGraphInterface) };
 class NodeServicesInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeServicesInterface) };
 class NodeTimersInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeTimersInterface) };
@@ -639,6 +665,21 @@ public:
       const rcl_interfaces::msg::ParameterEvent& event);
 };
 class WaitSet { public: WaitSet(); };
+// rclcpp/create_publisher.hpp, create_subscription.hpp: the free functions on a node
+template<class M, class A = std::allocator<void>, class P = rclcpp::Publisher<M>, class N,
+         class... R>
+std::shared_ptr<P> create_publisher(N&& node, const std::string& topic_name,
+                                    const rclcpp::QoS& qos, R&&... rest);
+template<class M, class C, class A = std::allocator<void>, class... T, class N, class... R>
+std::shared_ptr<rclcpp::Subscription<M>> create_subscription(
+    N&& node, const std::string& topic_name, const rclcpp::QoS& qos, C&& callback,
+    R&&... rest);
+template<class M, class C, class A = std::allocator<void>, class... T>
+std::shared_ptr<rclcpp::Subscription<M>> create_subscription(
+    std::shared_ptr<node_interfaces::NodeParametersInterface> parameters,
+    std::shared_ptr<node_interfaces::NodeTopicsInterface> topics,
+    const std::string& topic_name, const rclcpp::QoS& qos, C&& callback,
+    const SubscriptionOptionsWithAllocator<A>& options = SubscriptionOptionsWithAllocator<A>());
 class UnsupportedEventTypeException : public std::runtime_error {
 public:
   explicit UnsupportedEventTypeException(const std::string& what);

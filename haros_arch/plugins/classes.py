@@ -1,10 +1,12 @@
-"""Nodelets: pluginlib exports of a package, read down to the library that builds them.
+"""Plugin classes: pluginlib exports of a package, read down to the library that builds them.
 
-package.xml ``<export><nodelet plugin="${prefix}/nodelets.xml"/>`` names a plugin
-description; its ``<library path="lib/libfoo">`` holds ``<class name="pkg/Name"
-type="ns::Class"/>`` entries. Each class becomes a ``Node`` of kind ``nodelet`` whose
-executable is the name launch files use (``pkg/Name``) and whose sources are those of
-the library target ``foo``. When no target builds that library, the class is looked
+package.xml ``<export><nodelet plugin="${prefix}/nodelets.xml"/>`` (any export tag, and
+ROS 2's ``pluginlib_export_plugin_description_file``) names a plugin description; its
+``<library path="lib/libfoo">`` elements (one, or several in ``<class_libraries>``) hold
+``<class name="pkg/Name" type="ns::Class" base_class_type="..."/>`` entries. Each class
+becomes a ``Node`` of kind ``nodelet`` or ``plugin`` whose executable is the name launch
+files and hosts use (``pkg/Name``, else the type) and whose sources are those of the
+library target ``foo``. When no target builds that library, the class is looked
 for in ``PLUGINLIB_EXPORT_CLASS`` / ``PLUGINLIB_DECLARE_CLASS`` of the package's
 libraries.
 """
@@ -13,19 +15,20 @@ from __future__ import annotations
 
 import os
 import re
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from typing import Protocol
 
 from lxml import etree
 
-from . import diagnostics as diag
-from .diagnostics import Diagnostic
-from .files import read_bytes, read_text
-from .manifest import xml_parser
-from .model.conditions import Condition
-from .model.location import Location
-from .model.source import Node, Package
+from .. import diagnostics as diag
+from ..diagnostics import Diagnostic
+from ..files import read_bytes, read_text
+from ..manifest import xml_parser
+from ..model.conditions import Condition
+from ..model.location import Location
+from ..model.source import Node, NodeKind, Package, Plugin
+from .hosts import plugin_bases
 
 NODE_PLUGIN_KINDS = ("nodelet",)
 _EXPORT = re.compile(
@@ -45,10 +48,13 @@ class Files(Protocol):
 
 @dataclass(frozen=True)
 class Library:
-    """A library target as far as plugins care: its sources and conditions."""
+    """A library target as far as plugins care: its sources (with those of the package
+    libraries it links, for nodelets) and conditions; ``own``: the target's own sources
+    (a host plugin links its host's framework library, whose code is the host's)."""
 
     sources: list[str]  # workspace-relative
     conditions: tuple[Condition, ...] = ()
+    own: list[str] | None = None
 
 
 def library_name(path: str) -> str:
@@ -58,32 +64,36 @@ def library_name(path: str) -> str:
     return name[3:] if name.startswith("lib") and len(name) > 3 else name
 
 
-def nodelets(package: Package, workspace: Files,
-             libraries: Mapping[str, Library]) -> tuple[list[Node], list[Diagnostic]]:
-    """Nodes for the classes of the package's nodelet plugin descriptions."""
+def plugin_classes(package: Package, workspace: Files, libraries: Mapping[str, Library],
+                   described: Sequence[Plugin] = ()) -> tuple[list[Node], list[Diagnostic]]:
+    """Nodes for the classes of the package's plugin descriptions: package.xml exports
+    and ``described`` (ROS 2's ``pluginlib_export_plugin_description_file``).
+
+    A nodelet (export tag ``nodelet``) is a ``nodelet`` node; a class some host of
+    ``hosts.HOSTS`` loads (its export tag or base class is one the table names) is a
+    ``plugin`` node. Each is named by its pluginlib lookup name (``name``, else
+    ``type``) and keeps its C++ type in ``plugin_class``. Classes nothing loads (rviz,
+    rqt panels) are not nodes.
+    """
+    bases = plugin_bases()
     nodes: list[Node] = []
     found: list[Diagnostic] = []
-    for plugin in package.plugins:
-        if plugin.kind not in NODE_PLUGIN_KINDS:
+    for plugin in [*package.plugins, *described]:
+        if plugin.kind not in NODE_PLUGIN_KINDS and plugin.kind not in bases and not any(
+                base.startswith(plugin.kind + "::") for base in bases):
             continue
         path = os.path.join(workspace.root, plugin.file)
-        data, problems = read_bytes(path, workspace.location(path))
-        found.extend(problems)
-        if data is None:
-            continue
-        try:
-            root = etree.fromstring(data, xml_parser())
-        except etree.XMLSyntaxError as err:
-            line, column = err.position if err.position else (0, 0)
-            found.append(diag.make("PLUGIN_XML_SYNTAX", workspace.location(path, line, column),
-                                   detail=err.msg))
+        root = _read_description(path, workspace, found)
+        if root is None:
             continue
         elements = [root] if root.tag == "library" else list(root.iter("library"))
         for element in elements:
             wanted = library_name(element.get("path", ""))
             for cls in element.iter("class"):
                 name = cls.get("name") or cls.get("type")
-                if not name:
+                base = cls.get("base_class_type", "")
+                if not name or (plugin.kind not in NODE_PLUGIN_KINDS and base
+                                and base not in bases and plugin.kind not in bases):
                     continue
                 where = workspace.location(path, _line(cls), 0)
                 type_name = cls.get("type", "")
@@ -91,12 +101,29 @@ def nodelets(package: Package, workspace: Files,
                 if library is None:
                     found.append(diag.make("PLUGIN_LIBRARY_UNKNOWN", where,
                                            library=wanted, plugin=name))
-                nodes.append(Node(package.name, name, "nodelet", "cpp",
-                                  narrow(library.sources, type_name, workspace)
-                                  if library else [],
+                kind: NodeKind = "nodelet" if plugin.kind in NODE_PLUGIN_KINDS else "plugin"
+                files = [] if library is None else library.sources if (
+                    kind == "nodelet" or library.own is None) else library.own
+                nodes.append(Node(package.name, name, kind, "cpp",
+                                  narrow(files, type_name, workspace),
                                   conditions=library.conditions if library else (),
-                                  location=where))
+                                  location=where, plugin_class=type_name or None))
     return nodes, found
+
+
+def _read_description(path: str, workspace: Files,
+                      found: list[Diagnostic]) -> etree._Element | None:
+    data, problems = read_bytes(path, workspace.location(path))
+    found.extend(problems)
+    if data is None:
+        return None
+    try:
+        return etree.fromstring(data, xml_parser())
+    except etree.XMLSyntaxError as err:
+        line, column = err.position if err.position else (0, 0)
+        found.append(diag.make("PLUGIN_XML_SYNTAX", workspace.location(path, line, column),
+                               detail=err.msg))
+        return None
 
 
 def exported_classes(path: str, workspace: Files) -> list[tuple[str, int]]:

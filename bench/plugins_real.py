@@ -1,0 +1,100 @@
+"""Plugins on real workspaces: what hosts load and what it changes in the graph.
+
+    .venv/bin/python bench/plugins_real.py WORKSPACE LAUNCH [LAUNCH ...]
+        [--arg NAME:=VALUE ...] [--jobs N] [--list]
+
+Each LAUNCH (``pkg/path/in/package`` or a path) is one configuration. The pipeline runs
+twice over the same workspace, with and without plugin attachment, and prints per
+configuration: the host instances (nodes started as a host of ``plugins.hosts``), the
+plugins resolved (calls attached) and unresolved (PLUGIN_NOT_FOUND /
+PLUGIN_CLASS_UNKNOWN), the node instances plugins added (ros2_control controllers), the
+links added, and the parameters "set but never read" (set by launch, read by no link;
+in brackets those of node instances whose interface is complete) before and after.
+``--list`` prints the resolved plugins and the diagnostics.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import os
+import sys
+from typing import Any
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.dirname(HERE))
+
+from haros_arch import pipeline  # noqa: E402
+from haros_arch.model.model import Model  # noqa: E402
+from haros_arch.model.runtime import Configuration  # noqa: E402
+from haros_arch.plugins.attach import attach  # noqa: E402
+from haros_arch.plugins.hosts import host_of  # noqa: E402
+from haros_arch.project import ConfigurationSpec, Project  # noqa: E402
+
+UNRESOLVED = ("PLUGIN_NOT_FOUND", "PLUGIN_CLASS_UNKNOWN")
+
+
+def set_not_read(config: Configuration) -> str:
+    """Parameters set and never read: all, and those of complete node instances only
+    (what a check that trusts only complete nodes may report)."""
+    never = [p for p in config.parameters
+             if p.set_by_launch and not p.is_read and "?" not in p.name]
+    unsure = [n.name.rstrip("/") + "/" for n in config.nodes if not n.is_complete]
+    trusted = [p for p in never if not p.name.startswith(tuple(unsure))]
+    return f"{len(never)} ({len(trusted)} of complete nodes)"
+
+
+def run(project: Project, jobs: int, enabled: bool,
+        resolved: dict[str, list[str]]) -> Model:
+    def recording(config: Configuration, *args: Any) -> Any:
+        found = attach(config, *args)
+        resolved.setdefault(config.name, []).extend(
+            f"{instance.name}: {calls[0].location.file if calls else '(no calls)'} "
+            f"({len(calls)} calls)" for instance, calls in found
+            if not calls or calls[0].origin != "plugin")  # not the loading reads
+        return found
+
+    graph_build = importlib.import_module("haros_arch.graph.build")
+    graph_build.attach_plugins = recording if enabled else (lambda *a: [])
+    return pipeline.analyse(project, dict(os.environ),
+                            pipeline.Options(cache_dir=pipeline.AUTO_CACHE, jobs=jobs))
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("workspace")
+    parser.add_argument("launch", nargs="+")
+    parser.add_argument("--arg", action="append", default=[])
+    parser.add_argument("--jobs", type=int, default=1)
+    parser.add_argument("--list", action="store_true")
+    args = parser.parse_args()
+    launch_args = dict(a.split(":=", 1) for a in args.arg)
+    project = Project("plugins", os.path.join(args.workspace, "bench.yaml"),
+                      workspace=[os.path.abspath(args.workspace)],
+                      configurations=[ConfigurationSpec(os.path.basename(launch), [launch],
+                                                        dict(launch_args))
+                                      for launch in args.launch])
+    resolved: dict[str, list[str]] = {}
+    before = run(project, args.jobs, False, {})
+    after = run(project, args.jobs, True, resolved)
+    for old, new in zip(before.configurations, after.configurations, strict=True):
+        hosts = [n for n in new.nodes if n.origin != "plugin" and n.node is not None
+                 and host_of(n.node.package, n.node.executable, n.ros_version)]
+        hosts_unknown = [n for n in new.nodes if n.node is None]
+        unresolved = [d for d in new.diagnostics if d.code in UNRESOLVED]
+        added = [n for n in new.nodes if n.origin == "plugin"]
+        print(f"{new.name}: host instances {len(hosts)} (+{len(hosts_unknown)} instances of "
+              f"unknown nodes), plugins resolved {len(resolved.get(new.name, []))} "
+              f"unresolved {len(unresolved)}, instances added {len(added)}, links "
+              f"{len(old.links)} -> {len(new.links)} (+{len(new.links) - len(old.links)}), "
+              f"set but never read {set_not_read(old)} -> {set_not_read(new)}")
+        if args.list:
+            for line in resolved.get(new.name, []):
+                print("   resolved", line)
+            for found in unresolved:
+                print(f"   {found.code} {found.location.file}:{found.location.line} "
+                      f"{found.message}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,109 @@
+"""How the launch files of a configuration make its nodes: the launch tree.
+
+One type for ROS 1 and ROS 2. A ``LaunchItem`` is a launch file (reached by an include,
+or the file the configuration names), a group (``<group>``, ``GroupAction``), a node, or
+a part that a decided condition left out (``skipped``: what the other value would have
+started). Each keeps the arguments it was given, with where their values came from, and
+the remaps and parameters set in its scope. The loaders record it as they walk.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any, Literal
+
+from .location import NOWHERE, Location
+
+# where an argument's value came from: its declared default, a value fixed where it is
+# declared, the file that included this one, the command line (or project file), or none
+ArgOrigin = Literal["default", "value", "include", "command line", "unset"]
+ItemKind = Literal["file", "group", "node", "include"]
+OPTIONAL: dict[str, Any] = {"optional": True}
+
+
+@dataclass
+class LaunchArg:
+    name: str
+    value: str | None  # final text, ``?`` for unknown parts; None when nothing set it
+    origin: ArgOrigin = "default"
+    location: Location = NOWHERE  # where that value was written
+
+
+@dataclass
+class LaunchCondition:
+    """An ``if``/``unless`` (``IfCondition``/``UnlessCondition``) on an item."""
+
+    text: str  # as written
+    statement: str = "if"
+    values: dict[str, str | None] = field(default_factory=dict)  # arguments it reads
+    holds: bool | None = None  # the part is kept (True), left out (False) or unknown
+
+
+@dataclass
+class LaunchItem:
+    kind: ItemKind
+    name: str  # file: its path; group: its namespace; node: its final full name
+    location: Location = NOWHERE  # file: the include that reached it; else where written
+    namespace: str = field(default="", metadata=OPTIONAL)  # in effect for its contents
+    detail: str = field(default="", metadata=OPTIONAL)  # node: package/executable
+    condition: LaunchCondition | None = field(default=None, metadata=OPTIONAL)
+    skipped: bool = field(default=False, metadata=OPTIONAL)  # left out by its condition
+    args: list[LaunchArg] = field(default_factory=list, metadata=OPTIONAL)
+    pushed: list[str] = field(default_factory=list, metadata=OPTIONAL)  # ROS 2 namespaces
+    remaps: list[tuple[str, str]] = field(default_factory=list, metadata=OPTIONAL)
+    params: list[str] = field(default_factory=list, metadata=OPTIONAL)  # names set here
+    children: list[LaunchItem] = field(default_factory=list, metadata=OPTIONAL)
+
+    def add(self, child: LaunchItem) -> LaunchItem:
+        if len(self.children) < MAX_CHILDREN:
+            self.children.append(child)
+        return child
+
+    def arg(self, name: str) -> LaunchArg | None:
+        return next((a for a in self.args if a.name == name), None)
+
+    def walk(self) -> list[LaunchItem]:
+        """This item and every item under it, depth first (iterative: bounded stack)."""
+        out: list[LaunchItem] = []
+        stack = [self]
+        while stack:
+            item = stack.pop()
+            out.append(item)
+            stack.extend(reversed(item.children))
+        return out
+
+
+MAX_CHILDREN = 5_000
+MAX_DEPTH = 256  # items nested deeper are not read back (includes nest 32 deep at most)
+
+
+def _location(data: Any) -> Location:
+    if not isinstance(data, dict):
+        return NOWHERE
+    return Location(data.get("package"), data.get("file"), int(data.get("line") or 0),
+                    int(data.get("column") or 0))
+
+
+def item_from_data(data: Any, depth: int = 0) -> LaunchItem | None:
+    """The inverse of ``serialise.to_data`` for one item; None if it is not one."""
+    if not isinstance(data, dict) or depth > MAX_DEPTH:
+        return None
+    cond = data.get("condition")
+    condition = LaunchCondition(
+        str(cond.get("text", "")), str(cond.get("statement", "if")),
+        dict(cond.get("values") or {}), cond.get("holds")) if isinstance(cond, dict) else None
+    item = LaunchItem(
+        data.get("kind", "file"), str(data.get("name", "")), _location(data.get("location")),
+        str(data.get("namespace", "")), str(data.get("detail", "")), condition,
+        bool(data.get("skipped", False)),
+        [LaunchArg(str(a.get("name", "")), a.get("value"), a.get("origin", "default"),
+                   _location(a.get("location"))) for a in data.get("args") or ()
+         if isinstance(a, dict)],
+        [str(p) for p in data.get("pushed") or ()],
+        [(str(r[0]), str(r[1])) for r in data.get("remaps") or () if len(r) == 2],
+        [str(p) for p in data.get("params") or ()])
+    for child in data.get("children") or ():
+        made = item_from_data(child, depth + 1)
+        if made is not None:
+            item.children.append(made)
+    return item

@@ -1,0 +1,64 @@
+"""Plugins end to end on fixtures/build/plugins: classes exported by package.xml and by
+CMake, extracted from their libraries, attached to move_base and controller_manager."""
+
+from __future__ import annotations
+
+import os
+
+import pytest
+from conftest import FIXTURES
+
+from haros_arch import pipeline
+from haros_arch.model.runtime import Configuration
+from haros_arch.project import ConfigurationSpec, Project
+
+ROOT = str(FIXTURES / "build" / "plugins")
+
+
+def configuration(launch: str, models: bool = True, **args: str) -> Configuration:
+    project = Project("plugins", os.path.join(ROOT, "project.yaml"), workspace=[ROOT],
+                      configurations=[ConfigurationSpec("c", [launch], dict(args))])
+    model = pipeline.analyse(project, {}, pipeline.Options(cache_dir=None, jobs=1,
+                                                           models=models))
+    return model.configurations[0]
+
+
+def links(config: Configuration, node: str) -> list[tuple[str, str, str]]:
+    # not those of move_base's own interface model
+    return sorted((link.kind, link.resource.name, link.origin) for link in config.links
+                  if link.node.name == node and link.origin in ("source", "plugin"))
+
+
+@pytest.mark.parametrize("layer", ["true", "false"])
+def test_move_base_loads_planner_recovery_and_layer_from_the_workspace(layer: str):
+    # move_base's own interface model is left out: the links below are its plugins'
+    config = configuration("bringup/launch/move_base.launch", models=False, layer=layer)
+    expected = [
+        ("publish", "/move_base/Straight/plan", "source"),
+        ("read", "/move_base/Straight/step", "source"),
+        ("read", "/move_base/base_global_planner", "plugin"),
+        ("read", "/move_base/recovery_behaviors", "plugin"),
+        ("read", "/move_base/spin/speed", "source"),
+    ]
+    if layer == "true":  # the layer's topic parameter, set under its plugin name
+        expected += [("read", "/move_base/global_costmap/laser/topic", "source"),
+                     ("read", "/move_base/global_costmap/plugins", "plugin"),
+                     ("subscribe", "/front/scan", "source")]
+    assert links(config, "/move_base") == sorted(expected)
+    (missing,) = [d for d in config.diagnostics if d.code == "PLUGIN_NOT_FOUND"]
+    assert "base_local_planner/TrajectoryPlannerROS" in missing.message  # move_base's default
+
+
+def test_spawned_controller_is_a_node_with_its_parameter_file():
+    # ros2_control_node (no source, no jazzy model here) is launched unnamed: the spawner
+    # reaches it under the name its code gives (controller_manager) whatever it is called
+    config = configuration("ros2_bringup/launch/control.launch.xml")
+    follower = config.node("/robot/follower")
+    assert follower.origin == "plugin" and follower.node.name == "ros2_ctrl/ros2_ctrl/Follower"
+    assert links(config, "/robot/follower") == [
+        ("read", "/robot/follower/gain", "source"),
+        ("read", "/robot/follower/type", "plugin"),
+        ("subscribe", "/cmds", "source"),  # --controller-ros-args -r ~/commands:=/cmds
+    ]
+    never_read = [p.name for p in config.parameters if p.set_by_launch and not p.is_read]
+    assert never_read == ["/robot/follower/unused"]

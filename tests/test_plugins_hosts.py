@@ -1,0 +1,240 @@
+"""Hosts get the calls of the plugins their parameters name (plugins.hosts / attach)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from haros_arch.graph import build
+from haros_arch.launch.model import LaunchModel, NodeDecl, ParamDecl
+from haros_arch.model import Configuration, Location, Node, PrimitiveCall
+from haros_arch.model.values import UNKNOWN_MARK
+from haros_arch.plugins.attach import spawn_args
+from haros_arch.workspace import Workspace
+
+
+def call(kind, name, type_=None, line=1, **more):
+    return PrimitiveCall(kind, name, type_, 10, location=Location("p", "p/src/x.cpp", line, 3),
+                         **more)
+
+
+def plugin(package, lookup, cls, *calls):
+    return Node(package, lookup, "plugin", calls=list(calls), plugin_class=cls)
+
+
+def graph(decls, params=(), nodes=(), root="/nowhere"):
+    launch = LaunchModel(nodes=list(decls), params=list(params))
+    return build(Configuration("c"), launch, Workspace(root=root), {n.name: n for n in nodes})
+
+
+def ros2(decl: NodeDecl) -> NodeDecl:
+    decl.ros_version = 2
+    return decl
+
+
+def where(line):
+    return Location("bringup", "bringup/launch/nav.launch", line, 0)
+
+
+def links_of(config, node):
+    return sorted((link.kind, link.resource.name) for link in config.links
+                  if link.node.name == node)
+
+
+def test_move_base_gets_planner_recovery_and_costmap_layer_calls_under_their_names():
+    move_base = Node("move_base", "move_base", calls=[call("publish", "~goal")])
+    navfn = plugin("navfn", "navfn/NavfnROS", "navfn::NavfnROS",
+                   call("publish", "~?/plan", "nav_msgs/Path", handle_namespace="~?"),
+                   call("publish", "?", "nav_msgs/Path"),  # unknown: stays unknown
+                   call("read", "~?/tolerance", "double", handle_namespace="~?"))
+    recovery = plugin("rec", "rec/Spin", "rec::Spin", call("read", "~?/speed", "double"))
+    trajectory = plugin("base_local_planner", "base_local_planner/TrajectoryPlannerROS",
+                        "base_local_planner::TrajectoryPlannerROS",
+                        call("publish", "~?/local_plan", "nav_msgs/Path"))
+    static = plugin("costmap_2d", "costmap_2d::StaticLayer", "costmap_2d::StaticLayer",
+                    call("subscribe", "?", "nav_msgs/OccupancyGrid",
+                         name_param="~?/map_topic", name_default="map"))
+    params = [
+        ParamDecl("/move_base/base_global_planner", "navfn/NavfnROS", "str",
+                  location=where(3)),
+        ParamDecl("/move_base/recovery_behaviors", [{"name": "spin", "type": "rec/Spin"}],
+                  location=where(4)),
+        ParamDecl("/move_base/global_costmap/plugins",
+                  [{"name": "static", "type": "costmap_2d::StaticLayer"}], location=where(5)),
+        ParamDecl("/move_base/global_costmap/static/map_topic", "/map", "str"),
+    ]
+    config = graph([NodeDecl("/move_base", "move_base", "move_base")], params,
+                   [move_base, navfn, recovery, static, trajectory])
+    assert links_of(config, "/move_base") == [
+        ("publish", "/?"),
+        ("publish", "/move_base/NavfnROS/plan"),
+        # not set: move_base's default local planner, initialised with its short name
+        ("publish", "/move_base/TrajectoryPlannerROS/local_plan"),
+        ("publish", "/move_base/goal"),
+        ("read", "/move_base/NavfnROS/tolerance"),
+        # the parameters that choose the plugins: move_base reads them to load them
+        ("read", "/move_base/base_global_planner"),
+        ("read", "/move_base/global_costmap/plugins"),
+        ("read", "/move_base/recovery_behaviors"),
+        ("read", "/move_base/spin/speed"),
+        ("subscribe", "/map"),
+    ]
+    assert [d.code for d in config.diagnostics] == []
+    assert config.node("/move_base").is_complete
+
+
+def test_a_plugin_not_in_the_workspace_is_a_diagnostic_and_only_that_instance_is_partial():
+    move_base = Node("move_base", "move_base", calls=[call("publish", "~goal")])
+    defaults = [plugin("navfn", "navfn/NavfnROS", "navfn::NavfnROS"),
+                plugin("base_local_planner", "base_local_planner/TrajectoryPlannerROS",
+                       "base_local_planner::TrajectoryPlannerROS")]
+    params = [ParamDecl("/a/move_base/base_local_planner", "dwa/DWAPlannerROS", "str",
+                        location=where(7))]
+    config = graph([NodeDecl("/a/move_base", "move_base", "move_base", "/a/"),
+                    NodeDecl("/b/move_base", "move_base", "move_base", "/b/")],
+                   params, [move_base, *defaults])
+    (found,) = [d for d in config.diagnostics if d.code.startswith("PLUGIN")]
+    assert (found.code, found.location.line) == ("PLUGIN_NOT_FOUND", 7)
+    partial, other = config.node("/a/move_base"), config.node("/b/move_base")
+    assert partial.completeness == "partial"
+    assert "dwa/DWAPlannerROS" in partial.completeness_reasons[0]
+    assert "bringup/launch/nav.launch:7" in partial.completeness_reasons[0]
+    # the node model is shared: the other instance and the model itself stay complete
+    assert other.completeness == "complete" and move_base.completeness == "complete"
+    assert other.node is move_base and partial.node is not move_base
+
+
+def test_nav2_server_plugins_take_their_names_from_the_list_and_defaults():
+    navfn = plugin("nav2_navfn_planner", "nav2_navfn_planner::NavfnPlanner",
+                   "nav2_navfn_planner::NavfnPlanner",
+                   call("declare", "?.tolerance", "double"))
+    smac = plugin("smac", "smac/Smac", "smac::Smac", call("declare", "?.tolerance", "double"),
+                  call("publish", "unsmoothed_plan", "nav_msgs/Path"))
+    decls = [ros2(NodeDecl("/planner_server", "nav2_planner", "planner_server")),
+             ros2(NodeDecl("/r2/planner_server", "nav2_planner", "planner_server", "/r2/"))]
+    params = [ParamDecl("/r2/planner_server/planner_plugins", ["A"]),
+              ParamDecl("/r2/planner_server/A.plugin", "smac::Smac", location=where(9))]
+    config = graph(decls, params, [navfn, smac])
+    # no list: nav2's default plugin name and class
+    assert links_of(config, "/planner_server") == [
+        ("read", "/planner_server/GridBased.tolerance")]
+    assert links_of(config, "/r2/planner_server") == [
+        ("publish", "/r2/unsmoothed_plan"), ("read", "/r2/planner_server/A.plugin"),
+        ("read", "/r2/planner_server/A.tolerance"),
+        ("read", "/r2/planner_server/planner_plugins")]
+
+
+def test_a_conditional_choice_makes_the_plugin_calls_conditional():
+    from haros_arch.model import Condition
+    smac = plugin("smac", "smac/Smac", "smac::Smac", call("publish", "plan", "nav_msgs/Path"))
+    when = (Condition("$(arg smac)", "launch"),)
+    config = graph([ros2(NodeDecl("/planner_server", "nav2_planner", "planner_server"))],
+                   [ParamDecl("/planner_server/planner_plugins", ["S"]),
+                    ParamDecl("/planner_server/S.plugin", "smac/Smac", conditions=when)],
+                   [smac])
+    (link,) = [link for link in config.links if link.kind == "publish"]
+    assert link.conditions == when
+
+
+def test_spawned_ros2_controllers_are_nodes_in_the_managers_namespace(tmp_path: Path):
+    params = tmp_path / "controllers.yaml"
+    params.write_text(
+        # rcl: a key without a leading "/" names a node in the root namespace
+        "/robot/follower:\n  ros__parameters:\n    type: my/Follower\n    gain: 2.0\n"
+        "/robot/controller_manager:\n  ros__parameters:\n    broadcaster:\n"
+        "      type: my/Bcast\n")
+    follower = plugin("my", "my/Follower", "my::Follower",
+                      call("subscribe", "~/commands", "std_msgs/msg/String"),
+                      call("declare", "gain", "double"))
+    bcast = plugin("my", "my/Bcast", "my::Bcast",
+                   call("publish", "joint_states", "sensor_msgs/msg/JointState"))
+    decls = [ros2(NodeDecl("/robot/controller_manager", "controller_manager",
+                           "ros2_control_node", "/robot/")),
+             ros2(NodeDecl("/robot/spawner", "controller_manager", "spawner", "/robot/",
+                           args=f"follower broadcaster missing --param-file {params} "
+                                "--controller-ros-args -r ~/commands:=/cmds"))]
+    config = graph(decls, nodes=[follower, bcast], root=str(tmp_path))
+    added = {n.name: n for n in config.nodes if n.origin == "plugin"}
+    assert sorted(added) == ["/robot/broadcaster", "/robot/follower"]
+    assert added["/robot/follower"].node is follower
+    assert links_of(config, "/robot/follower") == [("read", "/robot/follower/gain"),
+                                                    ("read", "/robot/follower/type"),
+                                                    ("subscribe", "/cmds")]
+    # the broadcaster's class is the manager's parameter in the file: the manager reads it
+    assert links_of(config, "/robot/controller_manager") == [
+        ("read", "/robot/controller_manager/broadcaster.type")]
+    assert links_of(config, "/robot/broadcaster") == [("publish", "/robot/joint_states")]
+    gain = config.parameter("/robot/follower/gain")
+    assert gain.set_by_launch and gain.value == 2.0 and gain.is_read
+    codes = [d.code for d in config.diagnostics if d.code.startswith("PLUGIN")]
+    assert codes == ["PLUGIN_CLASS_UNKNOWN"]  # "missing" has no type anywhere
+
+
+def test_spawner_arguments_are_read_as_its_argparse_does():
+    spawn = spawn_args(NodeDecl("/s", "controller_manager", "spawner", args=(
+        "a b -c /x/cm --param-file /p.yaml --inactive -t pkg/T "
+        "--controller-ros-args -r ~/in:=/out")))
+    assert (spawn.controllers, spawn.manager, spawn.param_files, spawn.controller_type,
+            spawn.ros_args) == (["a", "b"], "/x/cm", ["/p.yaml"], "pkg/T",
+                                ["-r", "~/in:=/out"])
+
+
+def test_framework_calls_a_plugin_shares_with_its_host_are_made_once():
+    # nav2 plugins include the host's LifecycleNode header: its calls are the host's
+    shared = call("read", "use_sim_time", "bool", line=40)
+    server = Node("nav2_smoother", "smoother_server", calls=[shared])
+    first = plugin("s", "s/A", "s::A", shared, call("declare", "?.tolerance", "double"))
+    second = plugin("s", "s/B", "s::B", shared)
+    config = graph([ros2(NodeDecl("/smoother_server", "nav2_smoother", "smoother_server"))],
+                   [ParamDecl("/smoother_server/smoother_plugins", ["a", "b"]),
+                    ParamDecl("/smoother_server/a.plugin", "s/A"),
+                    ParamDecl("/smoother_server/b.plugin", "s/B")], [server, first, second])
+    reads = [link.resource.name for link in config.links if link.kind == "read"]
+    assert reads.count("/smoother_server/use_sim_time") == 1
+    assert "/smoother_server/a.tolerance" in reads
+
+
+def test_a_manager_named_only_by_its_code_serves_the_spawners_of_its_namespace(tmp_path):
+    # launch_ros names the node as ros2_control_node's code does ("controller_manager",
+    # which its interface model gives when its source is not here); the spawner's -c
+    # default (controller_manager, in its namespace) reaches it
+    params = tmp_path / "c.yaml"
+    params.write_text("/robot/controller_manager:\n  ros__parameters:\n"
+                      "    bcast:\n      type: my/Bcast\n")
+    bcast = plugin("my", "my/Bcast", "my::Bcast", call("publish", "joint_states", "x/J"))
+    decls = [ros2(NodeDecl("/robot/?", "controller_manager", "ros2_control_node", "/robot/")),
+             ros2(NodeDecl("/robot/spawner", "controller_manager", "spawner", "/robot/",
+                           args=f"bcast --param-file {params}")),
+             ros2(NodeDecl("/other/spawner", "controller_manager", "spawner", "/other/",
+                           args=f"bcast --param-file {params}"))]
+    manager = Node("controller_manager", "ros2_control_node", rosname="controller_manager",
+                   completeness="model")
+    config = graph(decls, nodes=[bcast, manager], root=str(tmp_path))
+    assert config.node("/robot/controller_manager") is not None
+    assert [n.name for n in config.nodes if n.origin == "plugin"] == ["/robot/bcast"]
+    assert links_of(config, "/robot/bcast") == [("publish", "/robot/joint_states")]
+    assert all(p.is_read for p in config.parameters if p.set_by_launch)
+    # a manager whose code is here but does not say its name: the spawner still reaches
+    # it, and the <name>.type it sets is not put under a name no instance has (it would
+    # be "set but never read")
+    manager = Node("controller_manager", "ros2_control_node")
+    config = graph(decls, nodes=[bcast, manager], root=str(tmp_path))
+    assert UNKNOWN_MARK in config.nodes[0].name or config.nodes[0].name.endswith(
+        "/ros2_control_node")
+    assert [n.name for n in config.nodes if n.origin == "plugin"] == ["/robot/bcast"]
+    assert not [p.name for p in config.parameters if p.set_by_launch]
+
+
+def test_a_hostile_or_broken_spawner_file_is_a_diagnostic(tmp_path):
+    bomb = tmp_path / "bomb.yaml"
+    lines = ["a0: &a0 [x, x, x, x, x, x, x, x, x, x]"]
+    lines += [f"a{i}: &a{i} [{', '.join(['*a' + str(i - 1)] * 10)}]" for i in range(1, 9)]
+    bomb.write_text("\n".join(lines) + "\n")
+    broken = tmp_path / "broken.yaml"
+    broken.write_text("a: [\n")
+    decls = [ros2(NodeDecl("/controller_manager", "controller_manager", "ros2_control_node")),
+             ros2(NodeDecl("/s1", "controller_manager", "spawner", args=f"c --param-file {bomb}")),
+             ros2(NodeDecl("/s2", "controller_manager", "spawner",
+                           args=f"c --param-file {broken} --param-file {tmp_path}/none.yaml"))]
+    config = graph(decls, root=str(tmp_path))
+    codes = [d.code for d in config.diagnostics if d.code.startswith("PLUGIN")]
+    assert codes.count("PLUGIN_PARAM_FILE") == 3
