@@ -17,7 +17,7 @@ from dataclasses import dataclass
 
 from . import diagnostics as diag
 from .diagnostics import Diagnostic
-from .evaluate import budget
+from .evaluate import budget, syntax
 from .files import read_text
 from .model.location import Location
 from .model.source import Node, Package
@@ -96,7 +96,7 @@ def _from_setup_py(path: str, workspace: Workspace,
     if text is None:
         return [], {}
     try:
-        tree = ast.parse(text, filename=path)
+        tree = syntax.parse(text, path)
     except (SyntaxError, ValueError, RecursionError) as err:
         line = getattr(err, "lineno", 0) or 0
         column = getattr(err, "offset", 0) or 0

@@ -306,3 +306,16 @@ def test_python_node_reader_stops_doubling_values(write_tree, grow: str) -> None
                             package="pkg")
     assert time.monotonic() - started < 10
     assert len(result.calls) == 1 and len(str(result.calls[0].name)) < 1000
+
+
+def test_compiler_warnings_about_workspace_python_are_not_printed(write_tree) -> None:
+    import warnings
+
+    text = ("from launch import LaunchDescription\n"
+            "def generate_launch_description():\n"
+            "    x = 1if True else '\\d'\n"
+            "    return LaunchDescription([])\n")
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        launch(write_tree, "warn_launch.py", text)
+    assert not [w for w in caught if issubclass(w.category, SyntaxWarning)]

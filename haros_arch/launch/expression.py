@@ -33,7 +33,7 @@ from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass
 from typing import Any, Literal
 
-from ..evaluate import budget
+from ..evaluate import budget, syntax
 
 __all__ = ["BUILTINS", "MATH", "Limits", "Unknown", "evaluate", "is_unknown"]
 
@@ -542,7 +542,7 @@ def evaluate(text: str, names: Callable[[str], object] | None = None,
     if len(text) > limits.text:
         return Unknown(f"expression longer than {limits.text} characters", "limit")
     try:
-        tree = ast.parse(text.strip(), mode="eval")
+        tree = syntax.parse(text.strip(), mode="eval")
     except SyntaxError as err:
         return Unknown(f"not a Python expression: {err.msg}", "syntax")
     except (RecursionError, MemoryError, ValueError):

@@ -16,6 +16,7 @@ from dataclasses import dataclass, field
 
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
+from ...evaluate import syntax
 from ...files import read_text
 from ...model.location import Location
 from ...workspace import Workspace
@@ -196,7 +197,7 @@ def _module_file(base: str, parts: list[str]) -> str | None:
 
 
 def _ast_parse(text: str, path: str) -> ast.Module:
-    return ast.parse(text, filename=path)
+    return syntax.parse(text, path)
 
 
 def _index(module: Module, loader: Loader) -> None:

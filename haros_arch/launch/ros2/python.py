@@ -22,6 +22,7 @@ from typing import Any
 
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
+from ...evaluate import syntax
 from ...model.location import Location
 from ...workspace import Workspace
 from . import entities as e
@@ -364,7 +365,7 @@ def parse_python(text: str, path: str, workspace: Workspace,
         return None, [diag.make("LAUNCH_PY_BUDGET", where,
                                 detail=f"file larger than {MAX_SOURCE} characters")]
     try:
-        tree = ast.parse(text, filename=path)
+        tree = syntax.parse(text, path)
     except SyntaxError as err:
         return None, [diag.make("LAUNCH_PY_SYNTAX", workspace.location(
             path, err.lineno or 0, err.offset or 0), detail=err.msg)]
