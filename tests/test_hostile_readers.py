@@ -319,3 +319,14 @@ def test_compiler_warnings_about_workspace_python_are_not_printed(write_tree) ->
         warnings.simplefilter("always")
         launch(write_tree, "warn_launch.py", text)
     assert not [w for w in caught if issubclass(w.category, SyntaxWarning)]
+
+
+def test_comparing_huge_shared_lists_is_charged_by_their_size() -> None:
+    from haros_arch.launch.expression import BUILTINS, Unknown, evaluate
+
+    started = time.monotonic()
+    result = evaluate("[[[1] * 1000] * 1000] * 1000 == [[[1] * 1000] * 1000] * 1000", None,
+                      BUILTINS)
+    assert time.monotonic() - started < 5
+    assert isinstance(result, Unknown) and result.kind == "limit"
+    assert evaluate("[1, 2] == [1, 2] and 'ab' in 'xaby'", None, BUILTINS) is True

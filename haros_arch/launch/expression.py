@@ -170,6 +170,7 @@ _COMPARE: dict[type, Callable[[Any, Any], Any]] = {
     ast.NotIn: lambda a, b: a not in b, ast.Is: operator.is_, ast.IsNot: operator.is_not,
 }
 
+_SIZED = (str, bytes, list, tuple, dict, set, frozenset)
 _INT_OPS: dict[type, str] = {ast.Mult: "*", ast.Pow: "**", ast.LShift: "<<"}
 
 _CONVERSIONS: dict[int, Callable[[object], str]] = {115: str, 114: repr, 97: ascii}
@@ -320,6 +321,9 @@ class _Interpreter:
         for op, comparator in zip(node.ops, node.comparators, strict=True):
             right = self.eval(comparator)
             self.known(left, right)
+            if isinstance(left, _SIZED) and isinstance(right, _SIZED):  # == walks both
+                bound = self.limits.steps
+                self.step(min(budget.text_length(left, bound), budget.text_length(right, bound)))
             compare = _COMPARE[type(op)]
             outcome = self.guard(lambda: compare(left, right))  # noqa: B023 (called at once)
             if not outcome:
