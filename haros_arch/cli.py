@@ -11,18 +11,17 @@ import json
 import os
 import sys
 from collections.abc import Sequence
-from functools import partial
 from typing import TYPE_CHECKING
 
 from rich.console import Console
 from rich.markup import escape
 
 from . import __version__
-from .autoproject import is_project_file, open_choice, open_project, select
+from .api import Analysis, analyse_path
+from .autoproject import is_project_file, open_choice, select
 from .diagnostics import CATALOGUE
 from .model.diagnostic import SEVERITY_RANK
-from .model.model import Model
-from .pipeline import Options, analyse
+from .pipeline import Options
 from .project import ProjectError
 from .report.text import print_diagnostics, print_summary
 
@@ -176,25 +175,23 @@ def _options(args: argparse.Namespace) -> Options:
                    jobs=max(1, jobs) if jobs is not None else None)
 
 
-def _analyse(path: str, console: Console, options: Options | None = None) -> Model | None:
+def _analyse(path: str, console: Console, options: Options | None = None
+             ) -> Analysis | None:
+    """The analysis of ``path``, its notes and errors printed on ``console``."""
     try:
-        choice = open_choice(path)
+        analysis = analyse_path(path, options)
     except ProjectError as err:
         console.print(f"haros-arch: {escape(str(err))}", highlight=False)
         return None
-    project = choice.project
-    for note in choice.notes:
+    for note in analysis.notes:
         console.print(f"haros-arch: {escape(note)}", highlight=False)
-    for spec in choice.project.configurations if choice.notes else ():
+    for spec in analysis.project.configurations if analysis.notes else ():
         console.print(f"  configuration {escape(spec.name)}: {escape(', '.join(spec.launch))}",
                       highlight=False)
-    missing = [w for w in project.workspace if not os.path.isdir(w)]
-    if missing:
-        console.print(f"haros-arch: {escape(path)}: workspace folder {escape(missing[0])} "
-                      "does not exist",
-                      highlight=False)
+    if analysis.model is None:
+        console.print(f"haros-arch: {escape(analysis.error or path)}", highlight=False)
         return None
-    return analyse(project, options=options)
+    return analysis
 
 
 def _write(text: str, output: str | None) -> None:
@@ -206,12 +203,14 @@ def _write(text: str, output: str | None) -> None:
 
 
 def cmd_extract(args: argparse.Namespace, out: Console, err: Console) -> int:
-    model = _analyse(args.project, err, _options(args))
-    if model is None:
+    analysis = _analyse(args.project, err, _options(args))
+    if analysis is None or analysis.model is None:
         return EXIT_USAGE
-    from .query.command import extract_document
+    from .query.command import document
 
-    _write(extract_document(model, args.project), args.output)
+    model = analysis.model
+    _write(json.dumps(document(model, analysis.project), indent=2, ensure_ascii=False) + "\n",
+           args.output)
     if not args.quiet:
         summary = out if args.output else err
         print_summary(model, summary, verbose=args.verbose)
@@ -222,15 +221,92 @@ def cmd_extract(args: argparse.Namespace, out: Console, err: Console) -> int:
 
 
 def cmd_check(args: argparse.Namespace, out: Console, err: Console) -> int:
+    """Diagnostics and catalogue findings, in text, JSON, SARIF or JUnit."""
     from .query.command import check
 
-    return check(args, out, err, partial(_analyse, options=_options(args)))
+    analysis = _analyse(args.project, err, _options(args))
+    if analysis is None or analysis.model is None:
+        return EXIT_USAGE
+    checked = check(analysis.model, analysis.project)
+    fmt = getattr(args, "format", "text")
+    verbose = getattr(args, "verbose", False)
+    if fmt == "json":
+        from .report.json import check_json
+
+        _write(check_json(checked), args.output)
+    elif fmt == "sarif":
+        from .report.sarif import dumps as sarif
+
+        rules = {r.id: (r.title, r.description.strip()) for r in checked.rules}
+        workspace = analysis.project.workspace
+        _write(sarif(checked.findings, checked.diagnostics, rules,
+                     workspace[0] if workspace else None), args.output)
+    elif fmt == "junit":
+        from .report.junit import to_junit
+
+        _write(to_junit(checked.findings, checked.diagnostics,
+                        [r.id for r in checked.rules]), args.output)
+    else:
+        from .report.results import print_check, print_seconds
+
+        console, handle = out, None
+        if args.output:
+            handle = open(args.output, "w", encoding="utf-8")  # noqa: SIM115
+            console = Console(file=handle, soft_wrap=True, no_color=True)
+        try:
+            print_check(checked, console, getattr(args, "verbose", True))
+            if verbose:
+                print_seconds(checked.seconds, console)
+        finally:
+            if handle:
+                handle.close()
+    return checked.exit_code(args.fail_on)
 
 
 def cmd_query(args: argparse.Namespace, out: Console, err: Console) -> int:
-    from .query.command import query
+    """Evaluate one expression and print its matches with their locations."""
+    from .query import QueryError, compile
+    from .query.command import NoConfiguration, query
 
-    return query(args, out, err, _analyse)
+    try:
+        compiled = compile(args.expression)
+    except QueryError as error:
+        err.print(escape(str(error)), highlight=False)
+        return EXIT_USAGE
+    if args.model:
+        from .model.load import ModelDataError, from_data
+
+        try:
+            with open(args.model, encoding="utf-8") as handle:
+                model = from_data(json.load(handle))
+        except (OSError, ValueError, RecursionError, ModelDataError) as error:
+            err.print(f"haros-arch: cannot read model {args.model}: {error}", highlight=False)
+            return EXIT_USAGE
+    elif args.project:
+        analysis = _analyse(args.project, err)
+        if analysis is None or analysis.model is None:
+            return EXIT_USAGE
+        model = analysis.model
+    else:
+        err.print("haros-arch: query needs a PROJECT file or --model FILE", highlight=False)
+        return EXIT_USAGE
+    try:
+        matches = query(model, compiled, args.config)
+    except NoConfiguration as error:
+        err.print(f"haros-arch: {error}", highlight=False)
+        return EXIT_USAGE
+    except QueryError as error:
+        err.print(escape(str(error)), highlight=False)
+        return EXIT_USAGE
+    if args.format == "json":
+        from .report.json import matches_json
+
+        out.print(matches_json(matches), highlight=False, markup=False, soft_wrap=True)
+        return EXIT_OK
+    from .report.results import print_matches
+
+    print_matches(matches, out)
+    return EXIT_OK
 
 
 def cmd_explain(args: argparse.Namespace, out: Console, err: Console) -> int:
@@ -341,7 +417,7 @@ def cmd_capture(args: argparse.Namespace, out: Console, err: Console) -> int:
 
 
 def cmd_compare(args: argparse.Namespace, out: Console, err: Console) -> int:
-    from .live.compare import CompareError, compare, show
+    from .live.compare import CompareError, compare
 
     try:
         with open(args.model, encoding="utf-8") as handle:
@@ -355,15 +431,9 @@ def cmd_compare(args: argparse.Namespace, out: Console, err: Console) -> int:
     if args.format == "json":
         _write(json.dumps(result.to_data(), indent=2) + "\n", None)
         return EXIT_OK
-    out.print(f"configuration {result.configuration}", highlight=False)
-    for score in result.scores:
-        out.print(f"  {score.kind:<16} precision {score.precision:.3f}  recall "
-                  f"{score.recall:.3f}  ({len(score.matched)} matched, {len(score.ours)} "
-                  f"ours, {len(score.live)} live)", highlight=False)
-        for item in score.missing:
-            out.print(f"      missing: {escape(show(item))}", highlight=False)
-        for item in score.extra:
-            out.print(f"      extra:   {escape(show(item))}", highlight=False)
+    from .report.results import print_comparison
+
+    print_comparison(result, out)
     return EXIT_OK
 
 
@@ -375,15 +445,17 @@ def cmd_report(args: argparse.Namespace, out: Console, err: Console) -> int:
         err.print("haros-arch: report needs a PROJECT file or --model FILE", highlight=False)
         return EXIT_USAGE
     try:
-        project = open_project(args.project) if args.project else None
+        project = open_choice(args.project).project if args.project else None
         findings: list = []
         if args.model:
             data = read_model(args.model)
         else:
-            model = _analyse(args.project, err, _options(args))
-            if model is None or project is None:
+            analysis = _analyse(args.project, err, _options(args))
+            if analysis is None or analysis.model is None:
                 return EXIT_USAGE
-            data, findings = model_data(model), project_findings(model, project)
+            project = analysis.project
+            data = model_data(analysis.model)
+            findings = project_findings(analysis.model, project)
         write_report(data, findings, workspace_root(project, args.workspace), args.output)
     except (ProjectError, ReportError) as error:
         err.print(f"haros-arch: {escape(str(error))}", highlight=False)
