@@ -207,10 +207,10 @@ def cmd_extract(args: argparse.Namespace, out: Console, err: Console) -> int:
     if analysis is None or analysis.model is None:
         return EXIT_USAGE
     from .query.command import document
+    from .report.json import document_json
 
     model = analysis.model
-    _write(json.dumps(document(model, analysis.project), indent=2, ensure_ascii=False) + "\n",
-           args.output)
+    _write(document_json(document(model, analysis.project)), args.output)
     if not args.quiet:
         summary = out if args.output else err
         print_summary(model, summary, verbose=args.verbose)

@@ -5,17 +5,14 @@ Nothing here prints: the CLI picks a reporter (``haros_arch/report``) for the re
 
 from __future__ import annotations
 
-import json
-import os
 from dataclasses import dataclass, field
 from typing import Any
 
-from ..autoproject import open_project
 from ..model.diagnostic import SEVERITY_RANK, Diagnostic
 from ..model.finding import Finding
 from ..model.model import Model
 from ..model.serialise import model_to_data, to_data
-from ..project import Project, ProjectError
+from ..project import Project
 from . import CONFIG_NAMES, Query, config_scope, model_scope
 from .catalogue import Rule, absorbed, load_catalogue, project_rules, run_catalogue
 
@@ -88,16 +85,3 @@ def query(model: Model, compiled: Query, config: str | None = None) -> list[Matc
     else:
         scopes = [(None, model_scope(model))]
     return [Match(name, match) for name, scope in scopes for match in compiled.run(scope)]
-
-
-def project_file_of(path: str) -> Project | None:
-    return open_project(path) if os.path.exists(path) else None
-
-
-def extract_document(model: Model, project_path: str) -> str:
-    """``extract``'s JSON: the model plus the catalogue's findings under ``findings``."""
-    try:
-        project: Project | None = open_project(project_path)
-    except ProjectError:
-        project = None
-    return json.dumps(document(model, project), indent=2, ensure_ascii=False) + "\n"

@@ -1,14 +1,19 @@
-"""JSON of the ``check`` and ``query`` commands' results."""
+"""JSON of the ``extract``, ``check`` and ``query`` commands' results."""
 
 from __future__ import annotations
 
 import json
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from ..model.serialise import to_data
 
 if TYPE_CHECKING:
     from ..query.command import Checked, Match
+
+
+def document_json(data: dict[str, Any]) -> str:
+    """``extract``'s JSON model (with its ``findings``), as written to a file."""
+    return json.dumps(data, indent=2, ensure_ascii=False) + "\n"
 
 
 def check_json(checked: Checked) -> str:
