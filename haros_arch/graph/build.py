@@ -179,7 +179,9 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
         key = f"{plugin.partition('/')[0]}/{plugin}"
     node = nodes.get(key) or command_node(decl)  # rostopic pub: its arguments say
     if node is None and plugin is None and is_container(decl):
-        pass  # a nodelet manager or component container: its interface is its plugins'
+        # a nodelet manager or component container: what it loads are node instances of
+        # their own; the process's own interface is its loader's services, known
+        node = container_node(decl)
     elif node is None and workspace.find(key.partition("/")[0]) is None:
         config.diagnostics.append(diag.make("NODE_PACKAGE_UNKNOWN", decl.location,
                                             name=key.partition("/")[0], node=plugin or key))
@@ -196,6 +198,35 @@ def is_container(decl: NodeDecl) -> bool:
     """A nodelet manager or an rclcpp component container (their plugins do the work)."""
     return decl.package == "nodelet" or (
         decl.package == "rclcpp_components" and decl.executable.startswith("component_container"))
+
+
+# the loader services a container's own node serves (rclcpp_components' ComponentManager;
+# nodelet's Loader in a manager), private to the container's node
+_CONTAINER_SERVICES = {
+    2: (("~/_container/load_node", "composition_interfaces/srv/LoadNode"),
+        ("~/_container/unload_node", "composition_interfaces/srv/UnloadNode"),
+        ("~/_container/list_nodes", "composition_interfaces/srv/ListNodes")),
+    1: (("~load_nodelet", "nodelet/NodeletLoad"), ("~unload_nodelet", "nodelet/NodeletUnload"),
+        ("~list", "nodelet/NodeletList")),
+}
+_CONTAINERS: dict[tuple[str, str, int], Node] = {}
+
+
+def container_node(decl: NodeDecl) -> Node | None:
+    """The node type of a nodelet manager (``nodelet manager``) or a component container:
+    known whole (completeness ``model``), as the services its loader serves."""
+    if decl.package == "nodelet" and decl.args.split()[:1] != ["manager"]:
+        return None
+    version = 2 if decl.package == "rclcpp_components" else 1
+    key = (decl.package, decl.executable, version)
+    if key not in _CONTAINERS:
+        _CONTAINERS[key] = Node(
+            decl.package, decl.executable,
+            calls=[PrimitiveCall("server", name, type_) for name, type_ in
+                   _CONTAINER_SERVICES[version]],
+            completeness="model", model="built-in: the loader services of a "
+            + ("component container" if version == 2 else "nodelet manager"))
+    return _CONTAINERS[key]
 
 
 def nodelet_plugin(decl: NodeDecl) -> str | None:

@@ -162,7 +162,7 @@ def _configuration(data: dict[str, Any], nodes: dict[str, Node],
     for item in data.get("nodes", ()):
         name = str(item.get("name", ""))
         instance = NodeInstance(
-            name, _node_type(nodes, hinted, item.get("node")),
+            name, _node_type(nodes, hinted, item.get("node"), item.get("completeness")),
             item.get("id") or f"node:{name}",
             item.get("namespace") or namespace_of(name),
             [tuple(pair) for pair in item.get("remaps", ())], item.get("args", ""),
@@ -231,16 +231,19 @@ def _configuration(data: dict[str, Any], nodes: dict[str, Node],
     return config
 
 
-def _node_type(nodes: dict[str, Node], hinted: dict[str, Node], name: Any) -> Node | None:
-    """The node type an instance runs. One that no package of the document lists was
-    made by a project-file ``nodes:`` hint (it has no package in the workspace); it is
-    made again, and its calls are its instances' links."""
+def _node_type(nodes: dict[str, Node], hinted: dict[str, Node], name: Any,
+               completeness: Any = None) -> Node | None:
+    """The node type an instance runs. One that no package of the document lists (made
+    by a project-file ``nodes:`` hint, an interface model, a container's loader) is made
+    again, with the completeness its instance was written with, and its calls are its
+    instances' links."""
     if not name:
         return None
     found = nodes.get(str(name)) or hinted.get(str(name))
     if found is None:
         package, _, executable = str(name).partition("/")
-        found = hinted[str(name)] = Node(package, executable)
+        found = hinted[str(name)] = Node(package, executable,
+                                         completeness=_completeness(completeness))
     return found
 
 
