@@ -365,3 +365,39 @@ def test_a_launch_file_box_shows_its_lines(page: Watched, example) -> None:
     source = (example["root"] / top["name"]).read_text().splitlines()[first - 1]
     assert source.strip() in panel
     assert page.page.eval_on_selector_all("#launch .lt.chosen", "els => els.length") == 1
+
+
+def test_launch_rows_find_nodes_named_in_code_and_leave_out_skipped(
+        browser: Any, tmp_path: Path) -> None:
+    def where(line: int) -> dict[str, Any]:
+        return {"package": "demo", "file": "demo/launch/a.launch.py", "line": line, "column": 1}
+
+    config = {
+        "name": "c", "launch": ["demo/launch/a.launch.py"], "args": {}, "topics": [],
+        "services": [], "actions": [], "parameters": [], "diagnostics": [], "links": [],
+        "nodes": [{"name": "/rsp", "id": "node:/rsp", "node": "demo/rsp", "namespace": "/",
+                   "remaps": [], "args": "", "conditions": [], "location": where(3)}],
+        "launch_tree": [{"kind": "file", "name": "demo/launch/a.launch.py", "children": [
+            {"kind": "node", "name": "/?", "detail": "demo/rsp", "location": where(3)},
+            {"kind": "node", "name": "/rsp", "detail": "demo/other", "location": where(5),
+             "skipped": True, "condition": {"text": "use_sim", "values": {"use_sim": "false"},
+                                            "holds": False}}]}]}
+    (tmp_path / "demo/launch").mkdir(parents=True)
+    (tmp_path / "demo/launch/a.launch.py").write_text(
+        "".join(f"line_{n} = {n}\n" for n in range(1, 8)))
+    path = tmp_path / "r.html"
+    write_report({"schema": "haros-arch/1", "project": "p", "packages": [],
+                  "configurations": [config], "diagnostics": []}, [], str(tmp_path), str(path))
+    watched = Watched(browser, path)
+    page = watched.page
+    page.click("#tab-launch")
+    assert watched.ids("#launch .lt-node") == {"node:/rsp", None}
+    skipped = page.inner_text('#launch .lt-node.skipped').lower()
+    assert "not started" in skipped and "use_sim" in skipped and "false" in skipped
+    page.click("#launch .lt-node.skipped")
+    assert page.is_hidden("#graph")
+    assert "line_5 = 5" in page.inner_text("#panel")
+    page.click('#launch .lt-node[data-id="node:/rsp"]')
+    assert watched.ids("#graph .vertex.selected") == {"node:/rsp"}
+    assert "line_3 = 3" in page.inner_text("#panel")
+    assert watched.problems == []

@@ -418,10 +418,9 @@ function renderLaunch() {
 
 // A node row selects its node in the graph; any other box (or a node not in the graph)
 // shows its launch lines.
-app.chooseLaunchItem = (item, box) => {
-  const id = 'node:' + item.name;
-  if (item.kind === 'node' && !item.skipped && app.index.entities.has(id)) {
-    app.select(id, true);
+app.chooseLaunchItem = (item, box, node) => {
+  if (node && app.index.entities.has(node.id)) {
+    app.select(node.id, true);
     return;
   }
   markLaunchSelection(ui.launch, null);

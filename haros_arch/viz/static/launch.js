@@ -10,6 +10,7 @@ function launchView(config, app) {
       'or no launch file).')];
   }
   const budget = {left: LAUNCH_MAX_ITEMS};
+  app.launchNodes = launchNodeMatcher(config);
   const boxes = trees.map(item => launchItem(item, app, budget));
   if (budget.left < 0) boxes.push(el('p', {class: 'muted'}, `${-budget.left} more items not drawn`));
   return boxes;
@@ -32,6 +33,33 @@ function launchItem(root, app, budget) {
   return top;
 }
 
+// The node instance of the graph that a started node row made: the one of the same name,
+// else the one launched at the same line (a name the launch file does not give, "/?" in
+// the tree, that the node's code sets). Null for a part left out.
+function launchNodeMatcher(config) {
+  const byName = new Map(), byLine = new Map();
+  for (const node of config.nodes || []) {
+    byName.set(node.name, node);
+    const loc = node.location || {};
+    if (!loc.file) continue;
+    const key = loc.file + ':' + loc.line;
+    if (!byLine.has(key)) byLine.set(key, []);
+    byLine.get(key).push(node);
+  }
+  return item => {
+    if (item.skipped) return null;
+    if (byName.has(item.name)) return byName.get(item.name);
+    const loc = item.location || {};
+    const there = byLine.get(loc.file + ':' + loc.line) || [];
+    const same = there.filter(n => !item.detail || n.node === item.detail);
+    return same.length === 1 ? same[0] : there.length === 1 ? there[0] : null;
+  };
+}
+
+function launchValue(value) {
+  return value === null || value === undefined ? '(unset)' : value === '' ? '""' : value;
+}
+
 function launchConditionText(c) {
   const values = Object.entries(c.values || {}).map(([k, v]) => `${k}=${v === null || v === undefined ? '?' : v}`);
   const state = c.holds === true ? 'holds' : c.holds === false ? 'false' : 'unknown';
@@ -47,15 +75,16 @@ function launchBox(item, app) {
   const loc = item.location || {};
   const parts = [];
   if (kind === 'node') {
-    const id = 'node:' + item.name;
-    const row = el('div', {class: classes.join(' '), 'data-id': id, 'data-kind': 'node'},
-      el('span', {class: 'lt-name'}, item.name),
+    const node = app.launchNodes ? app.launchNodes(item) : null;
+    const row = el('div', {class: classes.join(' '), 'data-id': node ? node.id : null, 'data-kind': 'node', 'data-name': item.name},
+      el('span', {class: 'lt-name'}, node ? node.name : item.name),
+      node && node.name !== item.name ? el('span', {class: 'muted'}, `(launch file: ${item.name}) `) : null,
       el('span', {class: 'lt-detail muted'}, item.detail || ''),
       item.skipped ? el('span', {class: 'lt-tag'}, 'not started') : null,
       c ? el('div', {class: 'lt-cond'}, launchConditionText(c)) : null,
       (item.remaps || []).length ? el('div', {class: 'lt-remaps'}, item.remaps.map(([a, b]) =>
         el('div', {class: 'lt-remap'}, el('code', {}, a), ' \u2192 ', el('code', {}, b)))) : null);
-    row.addEventListener('click', event => { event.stopPropagation(); app.chooseLaunchItem(item, row); });
+    row.addEventListener('click', event => { event.stopPropagation(); app.chooseLaunchItem(item, row, node); });
     return row;
   }
   if (kind === 'file') {
@@ -73,7 +102,7 @@ function launchBox(item, app) {
   if (c) parts.push(el('div', {class: 'lt-cond'}, launchConditionText(c)));
   if ((item.args || []).length) {
     parts.push(el('div', {class: 'lt-args'}, item.args.map(a => el('div', {class: 'lt-arg', 'data-arg': a.name},
-      el('code', {}, a.name), ' = ', el('code', {}, a.value === null || a.value === undefined ? '(unset)' : a.value),
+      el('code', {}, a.name), ' = ', el('code', {}, launchValue(a.value)),
       el('span', {class: 'muted'}, ` ${a.origin || ''}`)))));
   }
   if ((item.remaps || []).length) {
@@ -96,7 +125,7 @@ function launchItemPanel(item, app) {
   if (item.condition) parts.push(field('condition', launchConditionText(item.condition)));
   if (item.skipped) parts.push(el('p', {class: 'warn'}, 'Left out by its condition: not started in this configuration.'));
   for (const a of item.args || []) {
-    parts.push(field(a.name, `${a.value === null || a.value === undefined ? '(unset)' : a.value}  (${a.origin || '?'}` +
+    parts.push(field(a.name, `${launchValue(a.value)}  (${a.origin || '?'}` +
       (a.location && a.location.file ? ` at ${where(a.location)})` : ')')));
   }
   if (item.kind === 'file') {
