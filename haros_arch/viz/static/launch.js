@@ -124,9 +124,10 @@ function launchItemPanel(item, app) {
   if (item.namespace) parts.push(field('namespace', item.namespace));
   if (item.condition) parts.push(field('condition', launchConditionText(item.condition)));
   if (item.skipped) parts.push(el('p', {class: 'warn'}, 'Left out by its condition: not started in this configuration.'));
-  for (const a of item.args || []) {
-    parts.push(field(a.name, `${launchValue(a.value)}  (${a.origin || '?'}` +
-      (a.location && a.location.file ? ` at ${where(a.location)})` : ')')));
+  if ((item.args || []).length) {
+    parts.push(el('h4', {}, 'Arguments'), ...item.args.map(a => el('div', {class: 'lt-panel-arg'},
+      el('code', {}, a.name), ' = ', el('code', {}, launchValue(a.value)),
+      el('span', {class: 'muted'}, ` ${a.origin || '?'}` + (a.location && a.location.file ? ` at ${where(a.location)}` : '')))));
   }
   if (item.kind === 'file') {
     if (loc.line) parts.push(el('h4', {}, 'Included at'), codeBlock(loc, app.sources));
