@@ -375,8 +375,9 @@ def test_launch_rows_find_nodes_named_in_code_and_leave_out_skipped(
     config = {
         "name": "c", "launch": ["demo/launch/a.launch.py"], "args": {}, "topics": [],
         "services": [], "actions": [], "parameters": [], "diagnostics": [], "links": [],
-        "nodes": [{"name": "/rsp", "id": "node:/rsp", "node": "demo/rsp", "namespace": "/",
-                   "remaps": [], "args": "", "conditions": [], "location": where(3)}],
+        "nodes": [{"name": name, "id": "node:" + name, "node": "demo/rsp", "namespace": "/",
+                   "remaps": [], "args": "", "conditions": [], "location": where(3)}
+                  for name in ("/rsp", "/ddc")],  # one executable, two nodes
         "launch_tree": [{"kind": "file", "name": "demo/launch/a.launch.py", "children": [
             {"kind": "node", "name": "/?", "detail": "demo/rsp", "location": where(3)},
             {"kind": "node", "name": "/rsp", "detail": "demo/other", "location": where(5),
@@ -390,8 +391,11 @@ def test_launch_rows_find_nodes_named_in_code_and_leave_out_skipped(
                   "configurations": [config], "diagnostics": []}, [], str(tmp_path), str(path))
     watched = Watched(browser, path)
     page = watched.page
+    page.click('#graph .vertex[data-id="node:/ddc"]')
     page.click("#tab-launch")
     assert watched.ids("#launch .lt-node") == {"node:/rsp", None}
+    assert watched.ids("#launch .lt-node.chosen") == {"node:/rsp"}
+    assert "/rsp, /ddc" in page.inner_text("#launch .lt-node.chosen")
     skipped = page.inner_text('#launch .lt-node.skipped').lower()
     assert "not started" in skipped and "use_sim" in skipped and "false" in skipped
     page.click("#launch .lt-node.skipped")

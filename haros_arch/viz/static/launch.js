@@ -33,9 +33,10 @@ function launchItem(root, app, budget) {
   return top;
 }
 
-// The node instance of the graph that a started node row made: the one of the same name,
-// else the one launched at the same line (a name the launch file does not give, "/?" in
-// the tree, that the node's code sets). Null for a part left out.
+// The node instances of the graph that a started node row made: the one of the same name,
+// else those launched at the same line (a name the launch file does not give, "/?" in the
+// tree, that the node's code sets; one executable may make several nodes). None for a
+// part left out.
 function launchNodeMatcher(config) {
   const byName = new Map(), byLine = new Map();
   for (const node of config.nodes || []) {
@@ -47,12 +48,12 @@ function launchNodeMatcher(config) {
     byLine.get(key).push(node);
   }
   return item => {
-    if (item.skipped) return null;
-    if (byName.has(item.name)) return byName.get(item.name);
+    if (item.skipped) return [];
+    if (byName.has(item.name)) return [byName.get(item.name)];
     const loc = item.location || {};
     const there = byLine.get(loc.file + ':' + loc.line) || [];
     const same = there.filter(n => !item.detail || n.node === item.detail);
-    return same.length === 1 ? same[0] : there.length === 1 ? there[0] : null;
+    return same.length ? same : there;
   };
 }
 
@@ -75,15 +76,17 @@ function launchBox(item, app) {
   const loc = item.location || {};
   const parts = [];
   if (kind === 'node') {
-    const node = app.launchNodes ? app.launchNodes(item) : null;
+    const nodes = app.launchNodes ? app.launchNodes(item) : [];
+    const node = nodes[0] || null;
     const row = el('div', {class: classes.join(' '), 'data-id': node ? node.id : null, 'data-kind': 'node', 'data-name': item.name},
-      el('span', {class: 'lt-name'}, node ? node.name : item.name),
-      node && node.name !== item.name ? el('span', {class: 'muted'}, `(launch file: ${item.name}) `) : null,
+      el('span', {class: 'lt-name'}, nodes.length ? nodes.map(n => n.name).join(', ') : item.name),
+      node && (nodes.length > 1 || node.name !== item.name) ? el('span', {class: 'muted'}, `(launch file: ${item.name}) `) : null,
       el('span', {class: 'lt-detail muted'}, item.detail || ''),
       item.skipped ? el('span', {class: 'lt-tag'}, 'not started') : null,
       c ? el('div', {class: 'lt-cond'}, launchConditionText(c)) : null,
       (item.remaps || []).length ? el('div', {class: 'lt-remaps'}, item.remaps.map(([a, b]) =>
         el('div', {class: 'lt-remap'}, el('code', {}, a), ' \u2192 ', el('code', {}, b)))) : null);
+    row.__ids = nodes.map(n => n.id);
     row.addEventListener('click', event => { event.stopPropagation(); app.chooseLaunchItem(item, row, node); });
     return row;
   }
@@ -143,7 +146,7 @@ function launchItemPanel(item, app) {
 function markLaunchSelection(container, id) {
   for (const row of container.querySelectorAll('.lt.chosen')) row.classList.remove('chosen');
   if (!id) return null;
-  const row = [...container.querySelectorAll('.lt-node')].find(r => r.getAttribute('data-id') === id);
+  const row = [...container.querySelectorAll('.lt-node')].find(r => (r.__ids || []).includes(id));
   if (row) row.classList.add('chosen');
   return row || null;
 }
