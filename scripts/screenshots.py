@@ -4,6 +4,8 @@
 
 The last two are from bench/report_scale.py's fleets: the first view of 300 nodes, and
 six robots of the nested shape (/robot1/sensors/, base/, arm/) with /robot1/base/ opened.
+With ``--husky DIR`` (a checkout of husky/husky, ROS 1 noetic branch, under DIR/src) it
+also takes docs/report-launch.png, the Launch view of husky_gazebo/husky_playpen.
 
 Needs what `scripts/setup` installs (D3 from npm, playwright) and Debian's chromium.
 """
@@ -15,6 +17,7 @@ import subprocess
 import sys
 import tempfile
 from pathlib import Path
+from typing import Any
 
 from playwright.sync_api import sync_playwright
 
@@ -40,7 +43,24 @@ def scale_model(shape: str = "robots", nodes: int = 300, topics: int = 1000) -> 
     return module.scale_model(nodes, topics, shape=shape)  # type: ignore[no-any-return]
 
 
+def launch_shot(browser: Any, husky: str, tmp: str) -> None:
+    report = Path(tmp) / "husky.html"
+    subprocess.run([sys.executable, "-m", "haros_arch.cli", "report", husky, "-o", str(report),
+                    "--jobs", "1"], check=True, stdout=subprocess.DEVNULL)
+    page = browser.new_page(viewport={"width": 1500, "height": 900})
+    page.goto(report.as_uri())
+    page.wait_for_function("window.harosReport && window.harosReport.ready")
+    page.select_option("#config", label="husky_gazebo/husky_playpen")
+    page.click("#tab-launch")
+    page.click('#launch .lt-file[data-name="husky_control/launch/control.launch"] > .lt-head')
+    page.wait_for_timeout(300)
+    page.screenshot(path=str(DOCS / "report-launch.png"))
+    page.close()
+    print("wrote docs/report-launch.png")
+
+
 def main() -> int:
+    husky = sys.argv[sys.argv.index("--husky") + 1] if "--husky" in sys.argv[:-1] else None
     with tempfile.TemporaryDirectory() as tmp:
         report = Path(tmp) / "report.html"
         subprocess.run([sys.executable, "-m", "haros_arch.cli", "report",
@@ -79,6 +99,8 @@ def main() -> int:
             page.wait_for_timeout(400)
             page.locator("#stage").screenshot(path=str(DOCS / "report-nested.png"))
             print("wrote docs/report-nested.png")
+            if husky:
+                launch_shot(browser, husky, tmp)
             browser.close()
     return 0
 

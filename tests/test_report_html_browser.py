@@ -194,7 +194,12 @@ def test_hostile_names_are_text_and_candidates_light_up(browser: Any, tmp_path: 
         "links": [{"kind": "publish", "node": "/a", "name": name, "given": XSS, "type": XSS,
                    "queue_size": 1, "qos": None, "conditions": [
                        {"text": XSS, "kind": "source", "statement": "if", "location": where}],
-                   "location": where} for name in (XSS, "/?")]}
+                   "location": where} for name in (XSS, "/?")],
+        "launch_tree": [{"kind": "file", "name": XSS, "location": where,
+                         "args": [{"name": XSS, "value": XSS, "origin": XSS}], "children": [
+                             {"kind": "node", "name": "/a", "detail": XSS, "location": where,
+                              "remaps": [[XSS, XSS]], "condition": {
+                                  "text": XSS, "values": {XSS: XSS}, "holds": None}}]}]}
     (tmp_path / "demo/src").mkdir(parents=True)
     (tmp_path / "demo/src/a.cpp").write_text(f'pub("{XSS}");\n')
     finding = Finding("probe", "error", XSS, XSS, None, ("topic:x",),
@@ -212,6 +217,10 @@ def test_hostile_names_are_text_and_candidates_light_up(browser: Any, tmp_path: 
     assert watched.ids("#graph .vertex.candidate") == {"topic:x"}
     assert XSS in page.inner_text("#panel")
     page.click("#tab-packages")
+    page.click("#tab-launch")
+    assert XSS in page.inner_text("#launch")
+    page.click("#launch .lt-file > .lt-head")
+    assert XSS in page.inner_text("#panel")
     assert page.eval_on_selector_all("img", "els => els.length") == 0
     assert watched.dialogs == []
     assert watched.problems == []
@@ -287,4 +296,112 @@ def test_findings_by_rule_incomplete_nodes_and_diagnostics_per_configuration(
     page.click('#findings .finding-group[data-rule="queue-size-one"] .item')
     width = page.eval_on_selector(".code-lines", "e => [e.scrollWidth, e.clientWidth]")
     assert width[0] <= width[1] + 1
+    assert watched.problems == []
+
+
+def launch_items(config: dict[str, Any]) -> list[dict[str, Any]]:
+    out, stack = [], list(reversed(config["launch_tree"]))
+    while stack:
+        item = stack.pop()
+        out.append(item)
+        stack.extend(reversed(item.get("children", [])))
+    return out
+
+
+def test_launch_view_draws_the_tree_as_nested_boxes(page: Watched, example) -> None:
+    config = example["data"]["configurations"][0]
+    items = launch_items(config)
+    page.page.click("#tab-launch")
+    assert page.page.is_hidden("#graph")
+    files = page.page.eval_on_selector_all(
+        "#launch .lt-file", "els => els.map(e => e.dataset.name)")
+    assert files == [i["name"] for i in items if i["kind"] == "file"]
+    rows = page.ids("#launch .lt-node")
+    assert rows == {"node:" + i["name"] for i in items if i["kind"] == "node"}
+    # a node inside a group is drawn inside that group's box, inside its file's box
+    group = next(i for i in items if i["kind"] == "group" and i.get("children"))
+    child = group["children"][0]
+    inside = page.page.eval_on_selector(
+        f'#launch .lt-node[data-id="node:{child["name"]}"]',
+        "e => [e.parentElement.closest('.lt').dataset.kind,"
+        " e.parentElement.closest('.lt-file') !== null]")
+    assert inside == ["group", True]
+    text = page.page.inner_text("#launch")
+    for arg in items[0]["args"]:
+        assert arg["name"] in text and str(arg["value"]) in text and arg["origin"] in text
+    remapped = next(i for i in items if i.get("remaps"))
+    row = page.page.inner_text(f'#launch .lt-node[data-id="node:{remapped["name"]}"]')
+    assert f"{remapped['remaps'][0][0]} \u2192 {remapped['remaps'][0][1]}" in row
+    conditional = next(i for i in items if i.get("condition"))
+    box = f'#launch .lt[data-id="node:{conditional["name"]}"]'
+    assert page.page.eval_on_selector(box, "e => getComputedStyle(e).borderStyle") == "dashed"
+    assert conditional["condition"]["text"] in page.page.inner_text(box)
+    assert "holds" in page.page.inner_text(box)
+
+
+def test_launch_view_and_graph_select_each_other(page: Watched, example) -> None:
+    config = example["data"]["configurations"][0]
+    node = config["nodes"][1]
+    # graph -> launch: the node chosen in the graph is marked when the view opens
+    page.page.click(page.vertex(node["id"]))
+    page.page.click("#tab-launch")
+    assert page.ids("#launch .lt-node.chosen") == {node["id"]}
+    # launch -> graph: a node row switches to the graph with that node selected
+    other = config["nodes"][2]
+    page.page.click(f'#launch .lt-node[data-id="{other["id"]}"]')
+    assert page.page.is_visible("#graph")
+    assert page.ids("#graph .vertex.selected") == {other["id"]}
+    where = other["location"]
+    assert f"{where['file']}:{where['line']}" in page.page.inner_text("#panel")
+
+
+def test_a_launch_file_box_shows_its_lines(page: Watched, example) -> None:
+    top = example["data"]["configurations"][0]["launch_tree"][0]
+    page.page.click("#tab-launch")
+    page.page.click(f'#launch .lt-file[data-name="{top["name"]}"] > .lt-head')
+    panel = page.page.inner_text("#panel")
+    assert top["name"] in panel
+    first = min(a["location"]["line"] for a in top["args"] if a["location"]["line"])
+    source = (example["root"] / top["name"]).read_text().splitlines()[first - 1]
+    assert source.strip() in panel
+    assert page.page.eval_on_selector_all("#launch .lt.chosen", "els => els.length") == 1
+
+
+def test_launch_rows_find_nodes_named_in_code_and_leave_out_skipped(
+        browser: Any, tmp_path: Path) -> None:
+    def where(line: int) -> dict[str, Any]:
+        return {"package": "demo", "file": "demo/launch/a.launch.py", "line": line, "column": 1}
+
+    config = {
+        "name": "c", "launch": ["demo/launch/a.launch.py"], "args": {}, "topics": [],
+        "services": [], "actions": [], "parameters": [], "diagnostics": [], "links": [],
+        "nodes": [{"name": name, "id": "node:" + name, "node": "demo/rsp", "namespace": "/",
+                   "remaps": [], "args": "", "conditions": [], "location": where(3)}
+                  for name in ("/rsp", "/ddc")],  # one executable, two nodes
+        "launch_tree": [{"kind": "file", "name": "demo/launch/a.launch.py", "children": [
+            {"kind": "node", "name": "/?", "detail": "demo/rsp", "location": where(3)},
+            {"kind": "node", "name": "/rsp", "detail": "demo/other", "location": where(5),
+             "skipped": True, "condition": {"text": "use_sim", "values": {"use_sim": "false"},
+                                            "holds": False}}]}]}
+    (tmp_path / "demo/launch").mkdir(parents=True)
+    (tmp_path / "demo/launch/a.launch.py").write_text(
+        "".join(f"line_{n} = {n}\n" for n in range(1, 8)))
+    path = tmp_path / "r.html"
+    write_report({"schema": "haros-arch/1", "project": "p", "packages": [],
+                  "configurations": [config], "diagnostics": []}, [], str(tmp_path), str(path))
+    watched = Watched(browser, path)
+    page = watched.page
+    page.click('#graph .vertex[data-id="node:/ddc"]')
+    page.click("#tab-launch")
+    assert watched.ids("#launch .lt-node") == {"node:/rsp", None}
+    assert watched.ids("#launch .lt-node.chosen") == {"node:/rsp"}
+    assert "/rsp, /ddc" in page.inner_text("#launch .lt-node.chosen")
+    skipped = page.inner_text('#launch .lt-node.skipped').lower()
+    assert "not started" in skipped and "use_sim" in skipped and "false" in skipped
+    page.click("#launch .lt-node.skipped")
+    assert page.is_hidden("#graph")
+    assert "line_5 = 5" in page.inner_text("#panel")
+    page.click('#launch .lt-node[data-id="node:/rsp"]')
+    assert watched.ids("#graph .vertex.selected") == {"node:/rsp"}
+    assert "line_3 = 3" in page.inner_text("#panel")
     assert watched.problems == []

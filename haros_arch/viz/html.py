@@ -27,7 +27,8 @@ VENDORED_D3 = Path(__file__).resolve().parent / "vendor" / "d3.min.js"
 REPO_D3 = Path(__file__).resolve().parents[2] / "node_modules" / "d3" / "dist" / "d3.min.js"
 
 # concatenated in this order
-MODULES = ("layout.js", "compound.js", "namespaces.js", "graph.js", "panel.js", "app.js")
+MODULES = ("layout.js", "compound.js", "namespaces.js", "graph.js", "panel.js", "launch.js",
+           "app.js")
 
 _JSON_ESCAPES = {"<": "\\u003c", ">": "\\u003e", "&": "\\u0026",
                  "\u2028": "\\u2028", "\u2029": "\\u2029"}

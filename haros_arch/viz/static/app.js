@@ -31,11 +31,12 @@ function skeleton() {
     el('option', {value: 'layered'}, 'layered layout'), el('option', {value: 'force'}, 'force layout'));
   ui.tabGraph = el('button', {class: 'tab active', id: 'tab-graph'}, 'Graph');
   ui.tabPackages = el('button', {class: 'tab', id: 'tab-packages'}, 'Packages');
+  ui.tabLaunch = el('button', {class: 'tab', id: 'tab-launch'}, 'Launch');
   ui.fit = el('button', {id: 'fit', title: 'fit the graph to the window'}, 'Fit');
   const header = el('header', {id: 'top'},
     el('h1', {}, el('span', {class: 'logo'}, 'haros-arch'), ' ', MODEL.project || ''),
     el('label', {class: 'control'}, 'configuration ', ui.config),
-    el('div', {class: 'tabs'}, ui.tabGraph, ui.tabPackages),
+    el('div', {class: 'tabs'}, ui.tabGraph, ui.tabPackages, ui.tabLaunch),
     ui.search, ui.layout, ui.fit);
 
   ui.filters = el('section', {id: 'filters'}, el('h3', {}, 'Show'),
@@ -70,8 +71,9 @@ function skeleton() {
   ui.zoom = d3.zoom().scaleExtent([0.05, 4]).on('zoom', event => ui.viewport.attr('transform', event.transform));
   ui.svg.call(ui.zoom).on('dblclick.zoom', null).on('click', () => clearSelection());
   ui.packages = el('div', {id: 'packages', hidden: true});
+  ui.launch = el('div', {id: 'launch', hidden: true});
   ui.hint = el('div', {id: 'hint', hidden: true});
-  ui.stage = el('div', {id: 'stage'}, ui.svg.node(), ui.hint, legend(), ui.packages);
+  ui.stage = el('div', {id: 'stage'}, ui.svg.node(), ui.hint, legend(), ui.packages, ui.launch);
   ui.panel = el('aside', {id: 'panel'});
   document.body.append(header, el('main', {}, side, ui.stage, ui.panel));
 
@@ -82,6 +84,7 @@ function skeleton() {
   ui.search.addEventListener('keydown', event => { if (event.key === 'Enter') search(true); });
   ui.tabGraph.addEventListener('click', () => showTab('graph'));
   ui.tabPackages.addEventListener('click', () => showTab('packages'));
+  ui.tabLaunch.addEventListener('click', () => showTab('launch'));
   document.addEventListener('keydown', event => { if (event.key === 'Escape') clearSelection(); });
 }
 
@@ -136,6 +139,7 @@ function setConfig(i) {
   renderLists();
   renderGraph();
   if (!ui.packages.hidden) renderPackages();
+  if (!ui.launch.hidden) renderLaunch();
   showPanel(overview(config));
 }
 
@@ -250,7 +254,7 @@ function syncCollapsed() {
 
 function showHint() {
   const shut = app.view ? app.view.vertices.filter(v => v.kind === 'namespace').length : 0;
-  ui.hint.hidden = !shut || !ui.packages.hidden;
+  ui.hint.hidden = !shut || !ui.packages.hidden || !ui.launch.hidden;
   if (!shut) return;
   const prefixed = [...app.index.tree.boxes.values()].some(b => b.prefix);
   ui.hint.replaceChildren(
@@ -391,15 +395,38 @@ function search(go) {
 }
 
 function showTab(name) {
-  const packages = name === 'packages';
-  ui.tabGraph.classList.toggle('active', !packages);
+  const packages = name === 'packages', launch = name === 'launch';
+  ui.tabGraph.classList.toggle('active', !packages && !launch);
   ui.tabPackages.classList.toggle('active', packages);
+  ui.tabLaunch.classList.toggle('active', launch);
   ui.packages.hidden = !packages;
-  ui.svg.style('display', packages ? 'none' : null);
-  document.getElementById('legend').hidden = packages;
+  ui.launch.hidden = !launch;
+  ui.svg.style('display', packages || launch ? 'none' : null);
+  document.getElementById('legend').hidden = packages || launch;
   showHint();
   if (packages) renderPackages();
+  if (launch) renderLaunch();
 }
+
+// The Launch view, with the node selected in the graph marked and scrolled to.
+function renderLaunch() {
+  ui.launch.replaceChildren(el('h2', {class: 'view-title'}, 'Launch: the files, groups and nodes of this configuration'),
+    ...launchView(app.config, app));
+  const row = markLaunchSelection(ui.launch, app.selected);
+  if (row) row.scrollIntoView({block: 'center'});
+}
+
+// A node row selects its node in the graph; any other box (or a node not in the graph)
+// shows its launch lines.
+app.chooseLaunchItem = (item, box, node) => {
+  if (node && app.index.entities.has(node.id)) {
+    app.select(node.id, true);
+    return;
+  }
+  markLaunchSelection(ui.launch, null);
+  box.classList.add('chosen');
+  showPanel(launchItemPanel(item, app));
+};
 
 function renderPackages() {
   ui.packages.replaceChildren(el('h2', {class: 'view-title'}, 'Packages: the nodes each provides and their interfaces'),
