@@ -63,3 +63,16 @@ def test_regex_still_works() -> None:
     assert it.get("out") == "42-node"
     assert it.get("l") == "a1;a3"
     assert it.get("m") == "yes"
+
+
+def test_blocks_found_once_still_branch_right_on_every_pass() -> None:
+    # the marks of a block are kept per opening command and reused on every pass of the
+    # loop (and in every slice that holds the block)
+    it = run("set(out)\nforeach(i 1 2 3 4)\n"
+             "  if(i EQUAL 1)\n    list(APPEND out one)\n"
+             "  elseif(i EQUAL 2)\n    if(TRUE)\n      list(APPEND out two)\n    endif()\n"
+             "  elseif(i EQUAL 3)\n    foreach(j a b)\n      list(APPEND out three${j})\n"
+             "    endforeach()\n"
+             "  else()\n    list(APPEND out other)\n  endif()\nendforeach()\n")
+    assert it.get("out") == "one;two;threea;threeb;other"
+    assert it.diagnostics == []

@@ -89,6 +89,9 @@ class Interpreter:
         self.steps = 0
         self.depth = 0
         self.block_depth = 0
+        # opening command (by identity) -> distances to its middle and closing commands
+        # (kept with the command itself, so its id is never reused while cached)
+        self._blocks: dict[int, tuple[Invocation, list[int]]] = {}
         self.current: Invocation | None = None  # the command being run, for limits
         self._enter_directory(source_dir)
         scope = self.scopes[-1]
@@ -251,7 +254,18 @@ class Interpreter:
 
     def block_end(self, commands: list[Invocation], index: int, opener: str,
                   closer: str, middles: tuple[str, ...] = ()) -> list[int]:
-        """Indexes of the middle keywords at depth 0 and of the closing command."""
+        """Indexes of the middle keywords at depth 0 and of the closing command.
+
+        A block's body runs as a slice of the list that holds it, so the distances from
+        the opening command to its marks are the same in every slice that holds the
+        block: they are found once per opening command (a loop over nested blocks would
+        otherwise scan each block again on every pass)."""
+        head = commands[index]
+        cached = self._blocks.get(id(head))
+        if cached is not None and cached[0] is head:  # the same command, still alive
+            known = cached[1]
+            if index + known[-1] < len(commands):
+                return [index + offset for offset in known]
         depth = 0
         marks: list[int] = []
         for position in range(index + 1, len(commands)):
@@ -261,11 +275,12 @@ class Interpreter:
             elif name == closer:
                 if depth == 0:
                     marks.append(position)
+                    self._blocks[id(head)] = (head, [mark - index for mark in marks])
                     return marks
                 depth -= 1
             elif depth == 0 and name in middles:
                 marks.append(position)
-        marks.append(len(commands))
+        marks.append(len(commands))  # not closed: to the end of this list, not kept
         return marks
 
     def evaluate(self, args: list[str]) -> bool | None:
