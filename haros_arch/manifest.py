@@ -129,7 +129,7 @@ def parse_manifest(
         name=name,
         path=rel_folder,
         version=(root.findtext("version") or "").strip(),
-        format=int(root.get("format", "1")) if root.get("format", "1").isdigit() else 1,
+        format=_format(root.get("format", "1")),
         location=Location(name, location.file, _line(root), 0),
     )
     for tag in DEPEND_TAGS:
@@ -151,6 +151,12 @@ def parse_manifest(
     package.plugins.extend(_plugins(root, rel_folder))
     package.build_type = build_type
     return package, found
+
+
+def _format(text: str) -> int:
+    """REP 127/140/149's format number (1, 2, 3); anything else, however long, reads as 1."""
+    text = text.strip()
+    return int(text) if text.isdigit() and len(text) <= 3 else 1
 
 
 _ROS2_DEPENDENCIES = frozenset({"rclcpp", "rclpy", "ament_cmake", "ament_cmake_auto",

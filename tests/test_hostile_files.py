@@ -82,3 +82,14 @@ def test_package_of_is_the_innermost_package_folder(tmp_path: Path) -> None:
     assert workspace.package_of(str(tmp_path / "outer")) is outer
     assert workspace.package_of(str(tmp_path / "outerx" / "c.cpp")) is None
     assert workspace.package_of("/") is None
+
+
+def test_package_xml_with_a_huge_format_number(tmp_path: Path) -> None:
+    # found by scripts/fuzz: int() of a 5,000-digit format raised ValueError
+    package = tmp_path / "src" / "p"
+    package.mkdir(parents=True)
+    (package / "package.xml").write_text(
+        package_xml("p").replace('format="2"', 'format="' + "9" * 5001 + '"'))
+    workspace = scan([str(tmp_path / "src")], {})
+    assert workspace.packages["p"].format == 1
+    assert not any(d.code == "INTERNAL" for d in workspace.diagnostics)
