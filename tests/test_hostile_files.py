@@ -93,3 +93,12 @@ def test_package_xml_with_a_huge_format_number(tmp_path: Path) -> None:
     workspace = scan([str(tmp_path / "src")], {})
     assert workspace.packages["p"].format == 1
     assert not any(d.code == "INTERNAL" for d in workspace.diagnostics)
+
+
+def test_query_with_a_number_of_thousands_of_digits() -> None:
+    # found by scripts/fuzz: int() of a 5,001-digit literal escaped as lark's VisitError
+    from haros_arch import query
+
+    with pytest.raises(query.QueryLimitError, match="characters long"):
+        query.compile("topics[len(self.publishers) > " + "9" * 5001 + "]")
+    assert query.compile("topics[len(self.publishers) > 99999]") is not None

@@ -19,6 +19,7 @@ from .errors import QueryError, QuerySyntaxError
 
 MAX_QUERY_CHARS = 20_000
 MAX_DEPTH = 120
+MAX_NUMBER_CHARS = 400  # a literal number (a float past 1e308 is inf anyway)
 
 
 @functools.lru_cache(maxsize=1)
@@ -183,6 +184,11 @@ class _Build(Transformer[Token, s.Expr]):
         return s.Name(self._name(items[0]), pos=_pos(meta))
 
     def number(self, meta: Any, items: list[Token]) -> s.Literal:
+        if len(items[0]) > MAX_NUMBER_CHARS:  # int() of thousands of digits raises
+            from .errors import QueryLimitError
+
+            raise QueryLimitError(f"a number {len(items[0])} characters long; the limit is "
+                                  f"{MAX_NUMBER_CHARS}", self.text, _pos(meta))
         return s.Literal(_number(items[0]), pos=_pos(meta))
 
     def string(self, meta: Any, items: list[Token]) -> s.Literal:
