@@ -102,3 +102,12 @@ def test_query_with_a_number_of_thousands_of_digits() -> None:
     with pytest.raises(query.QueryLimitError, match="characters long"):
         query.compile("topics[len(self.publishers) > " + "9" * 5001 + "]")
     assert query.compile("topics[len(self.publishers) > 99999]") is not None
+
+
+def test_model_with_an_infinite_line_number(tmp_path: Path, capsys) -> None:
+    # found by scripts/fuzz: a location line of 1e999 (JSON infinity) raised OverflowError
+    saved = tmp_path / "model.json"
+    saved.write_text('{"schema": "haros-arch/1", "configurations": [{"name": "c", "nodes": '
+                     '[{"name": "/a", "location": {"file": "a.launch", "line": 1e999}}]}]}')
+    assert main(["query", "--model", str(saved), "configs"]) == 2
+    assert "not a haros-arch model" in capsys.readouterr().err

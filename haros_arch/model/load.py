@@ -315,7 +315,8 @@ def from_data(data: Any) -> Model:
         model.configurations = [_configuration(c, nodes, hinted)
                                 for c in data.get("configurations", ())]
         model.diagnostics = [_diagnostic(d) for d in data.get("diagnostics", ())]
-    except (AttributeError, TypeError, KeyError, ValueError, RecursionError) as err:
+    except (AttributeError, TypeError, KeyError, ValueError, OverflowError,
+            RecursionError) as err:
         # a field of the wrong type (a list where an object belongs, ...): the document is
         # not one extract writes; say so instead of failing inside the reader
         raise ModelDataError(f"not a haros-arch model: a field has the wrong type or shape "
