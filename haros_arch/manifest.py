@@ -6,7 +6,7 @@ from __future__ import annotations
 import os
 import re
 from collections.abc import Mapping
-from typing import cast
+from typing import Any, cast
 
 from lxml import etree
 
@@ -95,6 +95,20 @@ def _num(text: str) -> tuple[int | str, ...]:
     return tuple(int(p) if p.isdigit() else p for p in text.split("."))
 
 
+def _read_root(path: str, location: Location) -> tuple[Any, list[Diagnostic]]:
+    """The root element of a manifest (package.xml or rosbuild's manifest.xml), or None
+    with the diagnostics that say why (unreadable, not well-formed)."""
+    data, found = read_bytes(path, location)
+    if data is None:
+        return None, found
+    try:
+        return etree.fromstring(data, xml_parser()), found
+    except etree.XMLSyntaxError as err:
+        line, col = err.position if err.position else (0, 0)
+        where = Location(None, location.file, line, col)
+        return None, [*found, diag.make("PACKAGE_XML_SYNTAX", where, detail=err.msg)]
+
+
 def parse_manifest(
     path: str, location: Location, rel_folder: str, env: Mapping[str, str]
 ) -> tuple[Package | None, list[Diagnostic]]:
@@ -103,15 +117,9 @@ def parse_manifest(
     built with CMake); ``location`` names the manifest file."""
     if os.path.basename(path) == "manifest.xml":
         return _parse_rosbuild(path, location, rel_folder)
-    data, found = read_bytes(path, location)
-    if data is None:
+    root, found = _read_root(path, location)
+    if root is None:
         return None, found
-    try:
-        root = etree.fromstring(data, xml_parser())
-    except etree.XMLSyntaxError as err:
-        line, col = err.position if err.position else (0, 0)
-        where = Location(None, location.file, line, col)
-        return None, [*found, diag.make("PACKAGE_XML_SYNTAX", where, detail=err.msg)]
     if root.tag != "package":
         return None, [*found, diag.make("PACKAGE_XML_INVALID", location,
                                         detail=f"root element is <{root.tag}>")]
@@ -199,15 +207,9 @@ def _plugins(root: etree._Element, rel_folder: str) -> list[Plugin]:
 
 def _parse_rosbuild(path: str, location: Location,
                     rel_folder: str) -> tuple[Package | None, list[Diagnostic]]:
-    data, found = read_bytes(path, location)
-    if data is None:
+    root, found = _read_root(path, location)
+    if root is None:
         return None, found
-    try:
-        root = etree.fromstring(data, xml_parser())
-    except etree.XMLSyntaxError as err:
-        line, col = err.position if err.position else (0, 0)
-        where = Location(None, location.file, line, col)
-        return None, [*found, diag.make("PACKAGE_XML_SYNTAX", where, detail=err.msg)]
     if root.tag != "package":
         return None, found  # some other tool's manifest.xml: no ROS package, nothing wrong
     name = os.path.basename(os.path.dirname(os.path.abspath(path)))
