@@ -25,6 +25,7 @@ from ..model.runtime import (
 from ..model.source import Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK
 from ..models.commands import command_node
+from ..plugins.attach import PluginModels
 from ..plugins.attach import attach as attach_plugins
 from ..workspace import Workspace, installed_roots
 from .actions import action_links
@@ -89,8 +90,10 @@ def remaps_in_args(args: str) -> list[tuple[str, str]]:
 
 
 def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
-          nodes: Mapping[str, Node]) -> Configuration:
-    """Fill ``config`` with node instances, resources and links; ``nodes`` by pkg/exec."""
+          nodes: Mapping[str, Node], plugin_models: PluginModels | None = None,
+          ) -> Configuration:
+    """Fill ``config`` with node instances, resources and links; ``nodes`` by pkg/exec;
+    ``plugin_models`` finds plugin classes of packages without source in their models."""
     resources = Resources(config)
     config.diagnostics.extend(launch.diagnostics)
     config.diagnostics.extend(guessed_names(launch, nodes))
@@ -120,7 +123,8 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
         for call in instance.node.calls_of(own):
             for each in element_calls(call, instance, resources):  # list parameters
                 link(instance, each, remaps, resources, config)
-    for instance, calls in attach_plugins(config, started, nodes, resources, workspace):
+    for instance, calls in attach_plugins(config, started, nodes, resources, workspace,
+                                           plugin_models):
         remaps = resolve_remaps(instance.remaps, instance.namespace, instance.name)
         for call in calls:
             for each in element_calls(call, instance, resources):

@@ -147,8 +147,9 @@ class Node:
         return self.completeness in KNOWN_COMPLETENESS
 
     def mark_partial(self, reason: str, limit: int = 5) -> None:
-        """Calls may be missing for ``reason``; keeps the first ``limit`` reasons."""
-        if self.completeness == "complete":
+        """Calls may be missing for ``reason``; keeps the first ``limit`` reasons. A
+        node known whole from its source or its interface model becomes partial."""
+        if self.completeness in KNOWN_COMPLETENESS:
             self.completeness = "partial"
         if len(self.completeness_reasons) < limit and reason not in self.completeness_reasons:
             self.completeness_reasons.append(reason)

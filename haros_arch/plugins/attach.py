@@ -15,9 +15,12 @@ or C++ type). Its calls then go
   the parameters of the spawner's ``--param-file`` and the remaps of its
   ``--controller-ros-args``.
 
-A plugin whose class is not known, or not found in the workspace, is a diagnostic at the
-parameter that names it, and the host instance becomes partial: it gets its own copy of
-its node model (node models are shared by instances) marked partial with the reason.
+A class whose package has no source in the workspace is looked up in the interface
+models (``models``: the plugin nodes of the package's model, ``haros_arch.models``), as a
+host without source takes its model. A plugin whose class is not known, or found neither
+in the workspace nor in a model, is a diagnostic at the parameter that names it, and the
+host instance becomes partial (a modelled one too): it gets its own copy of its node
+model (node models are shared by instances) marked partial with the reason.
 """
 
 from __future__ import annotations
@@ -25,7 +28,7 @@ from __future__ import annotations
 import copy
 import os
 import shlex
-from collections.abc import Iterator, Mapping, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, replace
 from typing import Any, Protocol
 
@@ -52,6 +55,10 @@ MAX_PLUGINS = 200  # per slot: a hostile list stays bounded
 MAX_PARAM_VALUES = 100_000  # values in one spawner parameter file, aliases counted out
 
 
+# a plugin class (lookup name or C++ type) to its node in an interface model, if any
+PluginModels = Callable[[str], Node | None]
+
+
 class Params(Protocol):
     """The configuration's parameters by name (``graph.build.Resources`` is one)."""
 
@@ -75,9 +82,11 @@ class Choice:
 
 def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance]],
            nodes: Mapping[str, Node], params: Params, workspace: Workspace,
+           models: PluginModels | None = None,
            ) -> list[tuple[NodeInstance, list[PrimitiveCall]]]:
     """The plugin calls each host instance (or a plugin's own instance) makes; plugin
-    instances are added to ``config.nodes``, problems to ``config.diagnostics``."""
+    instances are added to ``config.nodes``, problems to ``config.diagnostics``;
+    ``models`` finds the classes of packages without source."""
     index = plugin_index(nodes)
     owned: set[int] = set()  # instances that have their own copy of their node model
     made: dict[int, set[tuple[Any, ...]]] = {}  # per host instance: calls it has
@@ -93,7 +102,7 @@ def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance
             else:
                 choices = list(_chosen(instance, slot, params))
             for choice in choices:
-                node = _lookup(choice, index)
+                node = _lookup(choice, index, workspace, models)
                 reader = instance
                 if node is None:
                     _missing(config, instance, choice, owned)
@@ -157,11 +166,26 @@ def plugin_index(nodes: Mapping[str, Node]) -> dict[str, Node]:
     return index
 
 
-def _lookup(choice: Choice, index: Mapping[str, Node]) -> Node | None:
-    """The plugin node of the chosen class, by its lookup name or its C++ type."""
+def _lookup(choice: Choice, index: Mapping[str, Node], workspace: Workspace,
+            models: PluginModels | None) -> Node | None:
+    """The plugin node of the chosen class, by its lookup name or its C++ type: from the
+    workspace, else, when no workspace package can hold it, from an interface model."""
     if not choice.cls or UNKNOWN_MARK in choice.cls:
         return None
-    return index.get(choice.cls.strip().lstrip(":"))
+    cls = choice.cls.strip().lstrip(":")
+    found = index.get(cls)
+    if found is None and models is not None and not any(
+            package in workspace.packages for package in class_packages(cls)):
+        found = models(cls)
+    return found
+
+
+def class_packages(cls: str) -> list[str]:
+    """The packages that may export a plugin class, by pluginlib's naming convention: the
+    first part of a lookup name ``pkg/Name``, else the first namespace of ``pkg::Class``."""
+    cls = cls.strip().lstrip(":")
+    first = cls.split("/", 1)[0] if "/" in cls else cls.split("::", 1)[0]
+    return [first] if first and first != cls else []
 
 
 def _given(choice: Choice, slot: Slot) -> str:
