@@ -238,3 +238,99 @@ def test_a_hostile_or_broken_spawner_file_is_a_diagnostic(tmp_path):
     config = graph(decls, root=str(tmp_path))
     codes = [d.code for d in config.diagnostics if d.code.startswith("PLUGIN")]
     assert codes.count("PLUGIN_PARAM_FILE") == 3
+
+
+_COSTMAP_FILE = {"global_costmap": {"global_costmap": {"ros__parameters": {
+    "plugins": ["obstacle_layer", "inflation_layer"],
+    "obstacle_layer": {"plugin": "nav2_costmap_2d::ObstacleLayer",
+                       "observation_sources": "scan cloud",
+                       "scan": {"topic": "/scan", "data_type": "LaserScan"},
+                       "cloud": {"topic": "points", "data_type": "PointCloud2"}}}}},
+    "planner_server": {"ros__parameters": {"expected_planner_frequency": 1.0}}}
+
+
+def _costmap_graph(version: str = ""):
+    from haros_arch.model.source import Package
+    costmap = Node("nav2_costmap_2d", "nav2_costmap_2d",
+                   calls=[call("publish", "costmap", "nav_msgs/msg/OccupancyGrid")])
+    obstacle = plugin("nav2_costmap_2d", "nav2_costmap_2d::ObstacleLayer",
+                      "nav2_costmap_2d::ObstacleLayer",
+                      call("read", "?.observation_sources", "str", 2),
+                      call("read", "?.?.marking", "bool", 3))
+    inflation = plugin("nav2_costmap_2d", "nav2_costmap_2d::InflationLayer",
+                       "nav2_costmap_2d::InflationLayer",
+                       call("read", "?.inflation_radius", "double", 4))
+    decl = ros2(NodeDecl("/planner_server", "nav2_planner", "planner_server",
+                         remaps=[("/tf", "tf")]))
+    decl.param_files.append((_COSTMAP_FILE, where(2)))
+    workspace = Workspace(root="/nowhere")
+    if version:
+        workspace.packages["nav2_costmap_2d"] = Package("nav2_costmap_2d", "/nowhere/c",
+                                                         version=version)
+    launch = LaunchModel(nodes=[decl])
+    return build(Configuration("c"), launch, workspace,
+                 {n.name: n for n in (costmap, obstacle, inflation)})
+
+
+def test_nav2_planner_server_makes_its_costmap_node_with_layers_and_sources():
+    config = _costmap_graph()
+    costmap = config.node("/global_costmap/global_costmap")
+    assert costmap.origin == "plugin" and costmap.namespace == "/global_costmap/"
+    assert costmap.remaps == [("/tf", "tf")]  # the process's arguments
+    assert links_of(config, "/global_costmap/global_costmap") == [
+        ("publish", "/global_costmap/costmap"),
+        ("read", "/global_costmap/global_costmap/inflation_layer.inflation_radius"),
+        ("read", "/global_costmap/global_costmap/obstacle_layer.cloud.data_type"),
+        ("read", "/global_costmap/global_costmap/obstacle_layer.cloud.marking"),
+        ("read", "/global_costmap/global_costmap/obstacle_layer.cloud.topic"),
+        ("read", "/global_costmap/global_costmap/obstacle_layer.observation_sources"),
+        ("read", "/global_costmap/global_costmap/obstacle_layer.plugin"),
+        ("read", "/global_costmap/global_costmap/obstacle_layer.scan.data_type"),
+        ("read", "/global_costmap/global_costmap/obstacle_layer.scan.marking"),
+        ("read", "/global_costmap/global_costmap/obstacle_layer.scan.topic"),
+        ("read", "/global_costmap/global_costmap/plugins"),
+        ("subscribe", "/global_costmap/points"),
+        ("subscribe", "/scan"),
+    ]
+    types = {link.resource.name: link.type for link in config.links if link.kind == "subscribe"}
+    assert types == {"/scan": "sensor_msgs/msg/LaserScan",
+                     "/global_costmap/points": "sensor_msgs/msg/PointCloud2"}
+    scan = next(link for link in config.links if link.resource.name == "/scan")
+    assert scan.location.line == 2  # the parameter file that names the topic
+    # the planner's own entry of the file is not the costmap's
+    assert not [p for p in config.parameters
+                if p.name.startswith("/global_costmap/") and "expected" in p.name]
+    assert [d.code for d in config.diagnostics if d.code.startswith("PLUGIN")
+            and "costmap" in d.message] == []
+
+
+def test_nav2_from_1_4_resolves_a_relative_source_topic_in_the_parent_namespace():
+    config = _costmap_graph("1.5.0")
+    assert ("subscribe", "/points") in links_of(config, "/global_costmap/global_costmap")
+
+
+def test_ros1_costmap_obstacle_layer_subscribes_its_observation_sources():
+    move_base = Node("move_base", "move_base")
+    obstacle = plugin("costmap_2d", "costmap_2d::ObstacleLayer", "costmap_2d::ObstacleLayer",
+                      call("read", "~?/?/topic", "str", 2, handle_namespace="~?/?"))
+    defaults = [plugin("navfn", "navfn/NavfnROS", "navfn::NavfnROS"),
+                plugin("base_local_planner", "base_local_planner/TrajectoryPlannerROS",
+                       "base_local_planner::TrajectoryPlannerROS")]
+    params = [
+        ParamDecl("/move_base/global_costmap/plugins",
+                  [{"name": "obstacles", "type": "costmap_2d::ObstacleLayer"}]),
+        ParamDecl("/move_base/global_costmap/obstacles/observation_sources", "laser",
+                  location=where(5)),
+        ParamDecl("/move_base/global_costmap/obstacles/laser/data_type", "LaserScan"),
+        ParamDecl("/move_base/global_costmap/obstacles/laser/topic", "scan",
+                  location=where(6)),
+    ]
+    config = graph([NodeDecl("/r/move_base", "move_base", "move_base", "/r/")],
+                   [ParamDecl("/r" + p.name, p.value, location=p.location) for p in params],
+                   [move_base, obstacle, *defaults])
+    links = links_of(config, "/r/move_base")
+    assert ("subscribe", "/r/scan") in links
+    assert ("read", "/r/move_base/global_costmap/obstacles/laser/topic") in links
+    assert ("read", "/r/move_base/global_costmap/obstacles/laser/data_type") in links
+    (scan,) = [link for link in config.links if link.kind == "subscribe"]
+    assert (scan.type, scan.location.line) == ("sensor_msgs/LaserScan", 6)

@@ -45,6 +45,9 @@ class NodeDecl:
     # model): the real name is the one its code gives, which may differ
     name_guessed: bool = False
     container: str | None = None  # ROS 2: full name of the container it is loaded into
+    # ROS 2: the parameter files given to the process, as read (rewritten), with where:
+    # they apply by node name to every node the process makes (a nav2 server's costmap)
+    param_files: list[tuple[Any, Location]] = field(default_factory=list, repr=False)
 
 
 @dataclass

@@ -41,7 +41,7 @@ class NodeInstance:
     args: str = ""
     conditions: tuple[Condition, ...] = ()
     location: Location = NOWHERE
-    origin: str = "launch"  # "launch", or "hint" when a project-file hint created it
+    origin: str = "launch"  # "launch", "hint" (a project-file hint), "plugin" (a host made it)
     ros_version: int = 1  # 2: ROS 2 naming (node-scoped parameters)
     # a roslaunch <test>: only rostest starts it (kept in rostest configurations only)
     test: bool = field(default=False, metadata={"optional": True})

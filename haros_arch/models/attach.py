@@ -97,15 +97,16 @@ class Attacher:
                       ) -> Callable[[str], Node | None]:
         """For plugin attachment (``plugins.attach``): a plugin class of a package without
         source to its node in that package's model (kind ``plugin``, by lookup name or
-        C++ type), for the configuration's distribution."""
+        C++ type; or any node by ``pkg/exec``, for the nodes hosts make), for the
+        configuration's distribution."""
         distro = choose_distro(self.distro, environment, launch)[0]
 
         def find(cls: str) -> Node | None:
             for package in class_packages(cls):
                 model = self.library.find(package, distro)
                 source = None if model is None else next(
-                    (n for n in model.nodes if n.kind == "plugin" and cls in (
-                        n.executable, (n.plugin_class or "").lstrip(":"))), None)
+                    (n for n in model.nodes if n.name == cls or (n.kind == "plugin" and cls in (
+                        n.executable, (n.plugin_class or "").lstrip(":")))), None)
                 if model is not None and source is not None:
                     return self._node(model, source.executable)
             return None

@@ -46,7 +46,7 @@ from ..model.source import Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK
 from ..share import share_source
 from ..workspace import Workspace
-from .hosts import SPAWNER, Slot, host_of
+from .hosts import SPAWNER, Child, Slot, Sources, host_of, sources_of
 
 SPAWNERS = (("controller_manager", "spawner"), ("controller_manager", "spawner.py"))
 MANAGER_NAME = "controller_manager"
@@ -90,31 +90,84 @@ def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance
     index = plugin_index(nodes)
     owned: set[int] = set()  # instances that have their own copy of their node model
     made: dict[int, set[tuple[Any, ...]]] = {}  # per host instance: calls it has
+    loaded: set[tuple[int, str]] = set()  # (instance, parameter) read to load a plugin
     out: list[tuple[NodeInstance, list[PrimitiveCall]]] = []
-    for decl, instance in started:
-        host = host_of(decl.package, decl.executable, decl.ros_version)
-        if host is None:
+    for decl, started_instance in started:
+        top = host_of(decl.package, decl.executable, decl.ros_version)
+        if top is None:
             continue
-        for slot in host.slots:
-            if slot.names == SPAWNER:
-                choices = list(_spawned(instance, started, params, workspace, config,
-                                        unnamed=decl.name_guessed))
-            else:
-                choices = list(_chosen(instance, slot, params))
-            for choice in choices:
-                node = _lookup(choice, index, workspace, models)
-                reader = instance
-                if node is None:
-                    _missing(config, instance, choice, owned)
-                elif slot.placement == "node":
-                    reader = _plugin_instance(instance, choice, node, config)
-                    out.append((reader, list(node.calls)))
+        hosts = [(top, started_instance)]
+        for child in top.children:
+            own, node = _child_instance(decl, started_instance, child, nodes, models,
+                                        params, config)
+            out.append((own, list(node.calls) if node else []))
+            inner = host_of(child.package, child.executable, decl.ros_version)
+            if inner is not None:
+                hosts.append((inner, own))
+        for host, instance in hosts:
+            for slot in host.slots:
+                if slot.names == SPAWNER:
+                    choices = list(_spawned(instance, started, params, workspace, config,
+                                            unnamed=decl.name_guessed))
                 else:
-                    calls = [_under(call, slot.prefix + _given(choice, slot),
-                                    choice.conditions) for call in node.calls]
-                    out.append((instance, _new(calls, instance, made)))
-                out.extend(_loading_reads(choice, instance, reader))
+                    choices = list(_chosen(instance, slot, params))
+                for choice in choices:
+                    out.extend(_load(choice, slot, instance, index, workspace, models,
+                                     params, config, owned, made, loaded))
     return out
+
+
+def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str, Node],
+          workspace: Workspace, models: PluginModels | None, params: Params,
+          config: Configuration, owned: set[int], made: dict[int, set[tuple[Any, ...]]],
+          loaded: set[tuple[int, str]]) -> list[tuple[NodeInstance, list[PrimitiveCall]]]:
+    """The calls one chosen plugin adds: to the host, or to a node of its own."""
+    out: list[tuple[NodeInstance, list[PrimitiveCall]]] = []
+    node = _lookup(choice, index, workspace, models)
+    reader = instance
+    if node is None:
+        _missing(config, instance, choice, owned)
+    elif slot.placement == "node":
+        reader = _plugin_instance(instance, choice, node, config)
+        out.append((reader, list(node.calls)))
+    else:
+        plugin = slot.prefix + _given(choice, slot)
+        calls = [_under(call, plugin, choice.conditions) for call in node.calls]
+        row = sources_of(choice.cls or "", instance.ros_version) or sources_of(
+            node.plugin_class or "", instance.ros_version)
+        if row is not None:
+            calls = _per_source(calls, row, plugin, choice, instance, node, params,
+                                workspace)
+        out.append((instance, _new(calls, instance, made)))
+    for own, reads in _loading_reads(choice, instance, reader):
+        kept = [r for r in reads if (id(own), r.name) not in loaded]
+        loaded.update((id(own), r.name) for r in kept)
+        if kept:
+            out.append((own, kept))
+    return out
+
+
+def _child_instance(decl: NodeDecl, host: NodeInstance, child: Child,
+                    nodes: Mapping[str, Node], models: PluginModels | None, params: Params,
+                    config: Configuration) -> tuple[NodeInstance, Node | None]:
+    """The node ``child`` the host's code makes in its process: in the host's namespace
+    plus the child's, with the host's remaps (arguments of the process) and the entries
+    of the process's parameter files that name it."""
+    key = f"{child.package}/{child.executable}"
+    node = nodes.get(key) or (models(key) if models is not None else None)
+    namespace = host.namespace.rstrip("/") + "/" + child.namespace + "/"
+    name = namespace + child.name
+    instance = NodeInstance(name, node, namespace=namespace, remaps=list(host.remaps),
+                            args=host.args, conditions=host.conditions,
+                            location=host.location, origin="plugin",
+                            ros_version=host.ros_version)
+    taken = sum(1 for n in config.nodes if n.name == name)
+    instance.id = f"node:{name}" + (f"#{taken + 1}" if taken else "")
+    config.nodes.append(instance)
+    for document, where in decl.param_files:
+        _set_params(params, name, dict(params_for_node(document, name)), where,
+                    host.conditions)
+    return instance, node
 
 
 def _new(calls: list[PrimitiveCall], host: NodeInstance,
@@ -476,3 +529,80 @@ def _named(name: str | None, plugin: str) -> Any:
                 return lead + plugin + rest
     return name
 
+
+
+# -- names taken from a plugin's source list (costmap observation sources) ---------------
+
+
+def _per_source(calls: list[PrimitiveCall], row: Sources, plugin: str, choice: Choice,
+                instance: NodeInstance, node: Node, params: Params, workspace: Workspace,
+                ) -> list[PrimitiveCall]:
+    """The plugin's calls with one copy per listed source of those made under
+    ``<plugin>.<source>`` (``obstacle_layer.?.topic``), and a subscription per source.
+    Without a value for the list the calls stay as they are; with an unknown one a
+    subscription to an unknown topic says so."""
+    base = instance.name.rstrip("/") + "/"
+    listed = _parameter(params, base + row.names.format(plugin=plugin))
+    if listed is None:
+        return calls
+    conditions = (*choice.conditions, *listed.launch_conditions)
+    if not isinstance(listed.value, str):
+        return [*calls, PrimitiveCall("subscribe", UNKNOWN_MARK, location=listed.launch_location,
+                                      conditions=conditions, origin="plugin")]
+    sources = listed.value.split()[:MAX_PLUGINS]
+    separator = "." if instance.ros_version == 2 else "/"
+    marks = [lead + plugin + separator + UNKNOWN_MARK + separator for lead in ("", "~", "~/")]
+    out: list[PrimitiveCall] = []
+    for call in calls:
+        mark = next((m for m in marks if call.name.startswith(m)), None)
+        if mark is None:
+            out.append(call)
+            continue
+        for source in sources:  # an empty list: the code reads none of them
+            out.append(replace(call, name=_source_named(call.name, mark, source),
+                               handle_namespace=_source_named(call.handle_namespace, mark,
+                                                              source),
+                               name_param=_source_named(call.name_param, mark, source)))
+    parent = _parent_rule(row, node, workspace)
+    for source in sources:
+        topic_key = base + row.topic.format(plugin=plugin, source=source)
+        type_key = base + row.data_type.format(plugin=plugin, source=source)
+        topic_param, type_param = _parameter(params, topic_key), _parameter(params, type_key)
+        topic = source if topic_param is None else _text(topic_param.value) or UNKNOWN_MARK
+        data_type = row.default_type if type_param is None else _text(type_param.value)
+        if parent and not topic.startswith(("/", UNKNOWN_MARK)):
+            namespace = instance.namespace.rstrip("/")
+            topic = namespace[:namespace.rfind("/")] + "/" + topic
+        given = topic_param or listed
+        out.append(PrimitiveCall(
+            "subscribe", topic, dict(row.types).get(data_type or ""),
+            location=given.launch_location,
+            conditions=(*conditions, *(topic_param.launch_conditions if topic_param else ())),
+            origin="plugin"))
+        for read in (topic_key, type_key):
+            key = read[len(base):]
+            name = key if instance.ros_version == 2 else "~" + key
+            if not any(c.kind == "read" and c.name == name for c in out):
+                out.append(PrimitiveCall("read", name, location=given.launch_location,
+                                         conditions=conditions, origin="plugin"))
+    return out
+
+
+def _source_named(name: str | None, mark: str, source: str) -> Any:
+    """``layer.?.topic`` (or the handle ``~layer/?``) with ``?`` the source's name."""
+    if name is not None and name == mark[:-1]:
+        return mark[:-2] + source
+    if name is None or not name.startswith(mark):
+        return name
+    return mark[:-2] + source + name[len(mark) - 1:]
+
+
+def _parent_rule(row: Sources, node: Node, workspace: Workspace) -> bool:
+    """Whether the plugin's version resolves relative topics in the parent namespace."""
+    if row.parent_since is None:
+        return False
+    package = workspace.packages.get(node.package)
+    version = package.version if package is not None else (
+        node.model.split()[1] if node.model and len(node.model.split()) > 1 else "")
+    numbers = tuple(int(part) for part in version.split(".")[:3] if part.isdigit())
+    return bool(numbers) and numbers >= row.parent_since

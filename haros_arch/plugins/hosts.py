@@ -22,6 +22,13 @@ A host is recognised by the package and executable a launch file starts. Each of
 - ``bases``: the export tags / base classes of the classes it loads (``nav_core``,
   ``nav2_core::GlobalPlanner``); these classes are extracted as plugin nodes.
 
+A host may also create nodes of its own in its process (``Child``): nav2's planner server
+makes the costmap node ``global_costmap`` in the namespace ``<its namespace>/global_costmap``,
+itself the host of the costmap's layers. A ``Sources`` row says which plugin classes
+subscribe to topics named by a parameter list (a costmap obstacle layer's
+``observation_sources``: one subscription per source, on its ``topic``, of the type its
+``data_type`` names), and their calls that read ``<layer>.?.<key>`` are one read per source.
+
 Names are relative to the host's node (its private namespace); ROS 2 keys use ``.``.
 """
 
@@ -44,17 +51,54 @@ class Slot:
 
 
 @dataclass(frozen=True)
+class Child:
+    """A node the host's code creates in its own process, named ``name`` in the host's
+    namespace plus ``namespace`` (``/ns/global_costmap/global_costmap``), whose node model
+    and host row are those of ``package``/``executable`` (the standalone costmap node);
+    it gets the parameter files of the host's process."""
+
+    name: str
+    namespace: str
+    package: str
+    executable: str
+
+
+@dataclass(frozen=True)
 class Host:
     package: str
     executables: tuple[str, ...]
     ros_version: int
     slots: tuple[Slot, ...]
+    children: tuple[Child, ...] = ()
+
+
+@dataclass(frozen=True)
+class Sources:
+    """Topics a plugin subscribes to, one per source its ``names`` parameter lists
+    (separated by spaces), each on the topic ``topic`` gives (default: the source's
+    name), of the type ``data_type`` names (``types``; ``default_type`` when not set).
+    Keys are relative to the plugin (``{plugin}.observation_sources``) with ``{source}``
+    for the source's name. A relative topic resolves in the node's namespace, or, from
+    version ``parent_since`` of the plugin's package on, in the parent of that namespace
+    (nav2's ``joinWithParentNamespace``)."""
+
+    classes: tuple[str, ...]
+    ros_version: int
+    names: str
+    topic: str
+    data_type: str
+    types: tuple[tuple[str, str], ...]
+    default_type: str
+    parent_since: tuple[int, ...] | None = None
 
 
 SPAWNER = "*spawner"
 
 _NAV2_COSTMAP = (Slot("plugins", "{name}.plugin", ("nav2_costmap_2d",
-                                                    "nav2_costmap_2d::Layer")),
+                                                    "nav2_costmap_2d::Layer"),
+                      defaults=(("static_layer", "nav2_costmap_2d::StaticLayer"),
+                                ("obstacle_layer", "nav2_costmap_2d::ObstacleLayer"),
+                                ("inflation_layer", "nav2_costmap_2d::InflationLayer"))),
                  Slot("filters", "{name}.plugin", ("nav2_costmap_2d",
                                                     "nav2_costmap_2d::Layer")))
 
@@ -78,9 +122,12 @@ HOSTS: tuple[Host, ...] = (
         Slot(SPAWNER, "{name}/type", ("controller_interface",
                                       "controller_interface::ControllerBase"),
              placement="node"),)),
+    # nav2's planner and controller servers make their costmap nodes in their constructor
+    # (``Costmap2DROS("global_costmap", get_namespace(), ...)``)
     Host("nav2_planner", ("planner_server",), 2, (
         Slot("planner_plugins", "{name}.plugin", ("nav2_core", "nav2_core::GlobalPlanner"),
-             defaults=(("GridBased", "nav2_navfn_planner::NavfnPlanner"),)),)),
+             defaults=(("GridBased", "nav2_navfn_planner::NavfnPlanner"),)),),
+         (Child("global_costmap", "global_costmap", "nav2_costmap_2d", "nav2_costmap_2d"),)),
     Host("nav2_controller", ("controller_server",), 2, (
         Slot("controller_plugins", "{name}.plugin", ("nav2_core", "nav2_core::Controller"),
              defaults=(("FollowPath", "dwb_core::DWBLocalPlanner"),)),
@@ -90,7 +137,8 @@ HOSTS: tuple[Host, ...] = (
              ("nav2_core", "nav2_core::ProgressChecker"),
              defaults=(("progress_checker", "nav2_controller::SimpleProgressChecker"),)),
         Slot("progress_checker_plugin", "{name}.plugin",
-             ("nav2_core", "nav2_core::ProgressChecker")),)),
+             ("nav2_core", "nav2_core::ProgressChecker")),),
+         (Child("local_costmap", "local_costmap", "nav2_costmap_2d", "nav2_costmap_2d"),)),
     Host("nav2_behaviors", ("behavior_server",), 2, (
         Slot("behavior_plugins", "{name}.plugin", ("nav2_core", "nav2_core::Behavior")),)),
     Host("nav2_smoother", ("smoother_server",), 2, (
@@ -113,6 +161,30 @@ HOSTS: tuple[Host, ...] = (
         _ros1_costmap("local_costmap/"))),
     Host("costmap_2d", ("costmap_2d_node",), 1, (_ros1_costmap("costmap/"),)),
 )
+
+
+SOURCES: tuple[Sources, ...] = (
+    # nav2_costmap_2d/plugins/obstacle_layer.cpp (VoxelLayer runs its onInitialize)
+    Sources(("nav2_costmap_2d::ObstacleLayer", "nav2_costmap_2d::VoxelLayer"), 2,
+            "{plugin}.observation_sources", "{plugin}.{source}.topic",
+            "{plugin}.{source}.data_type",
+            (("LaserScan", "sensor_msgs/msg/LaserScan"),
+             ("PointCloud2", "sensor_msgs/msg/PointCloud2")), "LaserScan", (1, 4)),
+    # costmap_2d/plugins/obstacle_layer.cpp: NodeHandle("~/" + name), a global handle
+    # subscribes
+    Sources(("costmap_2d::ObstacleLayer", "costmap_2d::VoxelLayer"), 1,
+            "{plugin}/observation_sources", "{plugin}/{source}/topic",
+            "{plugin}/{source}/data_type",
+            (("LaserScan", "sensor_msgs/LaserScan"), ("PointCloud", "sensor_msgs/PointCloud"),
+             ("PointCloud2", "sensor_msgs/PointCloud2")), "PointCloud"),
+)
+
+
+def sources_of(cls: str, ros_version: int) -> Sources | None:
+    """The ``Sources`` row of a plugin class (lookup name or C++ type), if any."""
+    cls = cls.strip().lstrip(":")
+    return next((row for row in SOURCES
+                 if cls in row.classes and row.ros_version == ros_version), None)
 
 
 def host_of(package: str, executable: str, ros_version: int) -> Host | None:

@@ -93,6 +93,7 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
         document = runner.param_file(entry, scope, location)
         if document is None:
             return
+        runner.model.nodes[-1].param_files.append((document, location))
         if UNKNOWN_MARK in node and naming.names_a_node(document):
             runner.report("LAUNCH_PARAM_FILE", location,
                           detail=f"parameter file applied to {node}, whose name is not "
