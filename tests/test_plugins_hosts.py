@@ -334,3 +334,32 @@ def test_ros1_costmap_obstacle_layer_subscribes_its_observation_sources():
     assert ("read", "/r/move_base/global_costmap/obstacles/laser/data_type") in links
     (scan,) = [link for link in config.links if link.kind == "subscribe"]
     assert (scan.type, scan.location.line) == ("sensor_msgs/LaserScan", 6)
+
+
+def test_ros1_mavros_loads_exported_plugins_its_black_and_white_lists_let_through():
+    def mavros_plugin(name, *calls):
+        node = plugin("mavros", name, f"mavros::std_plugins::{name}", *calls)
+        node.plugin_base = "mavros::plugin::PluginBase"
+        return node
+
+    mavros = Node("mavros", "mavros_node", calls=[call("read", "~fcu_url", "str")])
+    plugins = [mavros_plugin("imu", call("publish", "~imu/data", "sensor_msgs/Imu")),
+               mavros_plugin("vibration", call("publish", "~vibration/raw", "V")),
+               mavros_plugin("safety_area", call("read", "~safety_area/p1/x", "double")),
+               plugin("other", "other/imu2", "o::Imu", call("publish", "~wrong", "X"))]
+    params = [ParamDecl("/mavros/plugin_blacklist", ["VIB*", "safety_*"], location=where(3)),
+              ParamDecl("/mavros/plugin_whitelist", ["safety_area"])]
+    config = graph([NodeDecl("/mavros", "mavros", "mavros_node")], params,
+                   [mavros, *plugins])
+    assert links_of(config, "/mavros") == [
+        ("publish", "/mavros/imu/data"),
+        ("read", "/mavros/fcu_url"),
+        ("read", "/mavros/plugin_blacklist"),
+        ("read", "/mavros/plugin_whitelist"),
+        ("read", "/mavros/safety_area/p1/x"),  # black-listed, then white-listed
+    ]
+    # an allow list alone: everything else is denied
+    config = graph([NodeDecl("/mavros", "mavros", "mavros_node")],
+                   [ParamDecl("/mavros/plugin_whitelist", ["imu"])], [mavros, *plugins])
+    assert [k for k in links_of(config, "/mavros") if k[0] == "publish"] == [
+        ("publish", "/mavros/imu/data")]

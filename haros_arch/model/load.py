@@ -90,7 +90,9 @@ def node_from_data(data: dict[str, Any], package: str) -> Node:
                 [str(r) for r in data.get("completeness_reasons", ()) if isinstance(r, str)],
                 data.get("model") if isinstance(data.get("model"), str) else None,
                 plugin_class=data.get("plugin_class") if isinstance(
-                    data.get("plugin_class"), str) else None)
+                    data.get("plugin_class"), str) else None,
+                plugin_base=data.get("plugin_base") if isinstance(
+                    data.get("plugin_base"), str) else None)
 
 
 def _completeness(value: Any) -> Completeness:

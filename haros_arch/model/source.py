@@ -136,6 +136,9 @@ class Node:
     # a nodelet or plugin class: its C++ type (``executable`` is its pluginlib lookup
     # name, ``pkg/Name`` or the type itself)
     plugin_class: str | None = field(default=None, metadata={"optional": True})
+    # a plugin class: the base class its plugin description names (``base_class_type``),
+    # by which a host that loads every exported class of a base finds it (mavros)
+    plugin_base: str | None = field(default=None, metadata={"optional": True})
 
     # the node's name (``pkg/exec``, ``pkg/Class``) first, as DESIGN's JSON contract says
     JSON_HEAD: ClassVar[dict[str, Any]] = {"name": lambda node: node.name}

@@ -26,6 +26,7 @@ model (node models are shared by instances) marked partial with the reason.
 from __future__ import annotations
 
 import copy
+import fnmatch
 import os
 import shlex
 from collections.abc import Callable, Iterator, Mapping, Sequence
@@ -37,7 +38,13 @@ import yaml
 from .. import diagnostics as diag
 from ..files import read_text
 from ..launch.model import NodeDecl
-from ..launch.ros2.naming import params_for_node, parse_ros_args
+from ..launch.ros2.naming import (
+    flatten,
+    node_patterns,
+    params_for_node,
+    parse_ros_args,
+    pattern_matches,
+)
 from ..model.conditions import Condition
 from ..model.location import Location
 from ..model.rosname import namespace_of
@@ -46,7 +53,7 @@ from ..model.source import Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK
 from ..share import share_source
 from ..workspace import Workspace
-from .hosts import SPAWNER, Child, Slot, Sources, host_of, sources_of
+from .hosts import EXPORTED, SPAWNER, Child, Slot, Sources, host_of, sources_of
 
 SPAWNERS = (("controller_manager", "spawner"), ("controller_manager", "spawner.py"))
 MANAGER_NAME = "controller_manager"
@@ -78,6 +85,7 @@ class Choice:
     conditions: tuple[Condition, ...] = ()
     reads: tuple[str, ...] = ()
     remaps: tuple[tuple[str, str], ...] = ()  # a spawner's --controller-ros-args
+    node: Node | None = None  # the class's node when the choice was made from it
 
 
 def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance]],
@@ -109,18 +117,21 @@ def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance
                 if slot.names == SPAWNER:
                     choices = list(_spawned(instance, started, params, workspace, config,
                                             unnamed=decl.name_guessed))
+                elif slot.names == EXPORTED:
+                    choices = list(_exported(instance, slot, params, nodes))
                 else:
                     choices = list(_chosen(instance, slot, params))
                 for choice in choices:
                     out.extend(_load(choice, slot, instance, index, workspace, models,
-                                     params, config, owned, made, loaded))
+                                     params, config, owned, made, loaded, decl))
     return out
 
 
 def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str, Node],
           workspace: Workspace, models: PluginModels | None, params: Params,
           config: Configuration, owned: set[int], made: dict[int, set[tuple[Any, ...]]],
-          loaded: set[tuple[int, str]]) -> list[tuple[NodeInstance, list[PrimitiveCall]]]:
+          loaded: set[tuple[int, str]], decl: NodeDecl,
+          ) -> list[tuple[NodeInstance, list[PrimitiveCall]]]:
     """The calls one chosen plugin adds: to the host, or to a node of its own."""
     out: list[tuple[NodeInstance, list[PrimitiveCall]]] = []
     node = _lookup(choice, index, workspace, models)
@@ -129,6 +140,8 @@ def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str
         _missing(config, instance, choice, owned)
     elif slot.placement == "node":
         reader = _plugin_instance(instance, choice, node, config)
+        if slot.names == EXPORTED:  # a node the process makes: its files apply by name
+            _process_params(decl, reader, params)
         out.append((reader, list(node.calls)))
     else:
         plugin = slot.prefix + _given(choice, slot)
@@ -164,10 +177,62 @@ def _child_instance(decl: NodeDecl, host: NodeInstance, child: Child,
     taken = sum(1 for n in config.nodes if n.name == name)
     instance.id = f"node:{name}" + (f"#{taken + 1}" if taken else "")
     config.nodes.append(instance)
-    for document, where in decl.param_files:
-        _set_params(params, name, dict(params_for_node(document, name)), where,
-                    host.conditions)
+    _process_params(decl, instance, params)
     return instance, node
+
+
+def _process_params(decl: NodeDecl, instance: NodeInstance, params: Params) -> None:
+    """The entries of the process's parameter files that name a node it makes (not the
+    ``/**`` ones: those are the launched node's, and a node the code makes has them only
+    where it declares them)."""
+    for document, where in decl.param_files:
+        values = {name: value for pattern, entries in node_patterns(document)
+                  if pattern != "/**" and pattern_matches(pattern, instance.name)
+                  for name, value in flatten(entries)}
+        _set_params(params, instance.name, values, where, instance.conditions)
+
+
+def _exported(instance: NodeInstance, slot: Slot, params: Params,
+              nodes: Mapping[str, Node]) -> Iterator[Choice]:
+    """Every plugin class exported with one of the slot's bases that the host's deny and
+    allow lists let through (mavros' is_plugin_allowed: fnmatch, case folded)."""
+    assert slot.lists is not None
+    base = instance.name.rstrip("/") + "/"
+    deny, allow = (_parameter(params, base + key) for key in slot.lists)
+    denied, allowed = _patterns(deny), _patterns(allow)
+    if denied is None or allowed is None:  # a list whose value is not known
+        unknown = deny if denied is None else allow
+        assert unknown is not None
+        yield Choice("", UNKNOWN_MARK, unknown.launch_location, unknown.launch_conditions)
+        return
+    if not denied and allowed:
+        denied = ["*"]
+    conditions = tuple(c for p in (deny, allow) if p for c in p.launch_conditions)
+    given = deny or allow
+    where = given.launch_location if given is not None else instance.location
+    reads = tuple(p.name for p in (deny, allow) if p)
+    found = sorted((n for n in nodes.values() if n.kind == "plugin"
+                    and (n.plugin_base in slot.bases)), key=lambda n: n.name)
+    for node in found[:MAX_PLUGINS * 5]:
+        name = node.executable.casefold()
+        if any(fnmatch.fnmatchcase(name, p) for p in denied) and not any(
+                fnmatch.fnmatchcase(name, p) for p in allowed):
+            continue
+        yield Choice(node.rosname or node.executable, node.executable, where, conditions,
+                     reads, node=node)
+
+
+def _patterns(parameter: Parameter | None) -> list[str] | None:
+    """A list parameter's glob patterns, case folded; [] when not set, None when its
+    value is not known."""
+    if parameter is None:
+        return []
+    value = parameter.value
+    if isinstance(value, str):
+        value = [value]
+    if not isinstance(value, list) or not all(isinstance(v, str) for v in value):
+        return None
+    return [v.casefold() for v in value]
 
 
 def _new(calls: list[PrimitiveCall], host: NodeInstance,
@@ -223,6 +288,8 @@ def _lookup(choice: Choice, index: Mapping[str, Node], workspace: Workspace,
             models: PluginModels | None) -> Node | None:
     """The plugin node of the chosen class, by its lookup name or its C++ type: from the
     workspace, else, when no workspace package can hold it, from an interface model."""
+    if choice.node is not None:
+        return choice.node
     if not choice.cls or UNKNOWN_MARK in choice.cls:
         return None
     cls = choice.cls.strip().lstrip(":")

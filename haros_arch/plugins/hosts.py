@@ -7,7 +7,9 @@ A host is recognised by the package and executable a launch file starts. Each of
 - ``names``: the parameter holding the list of plugin names (nav2's ``planner_plugins``,
   a costmap's ``plugins``), or None when each plugin is named by ``type_of`` alone
   (move_base's ``base_global_planner``), or the special ``"*spawner"`` for controllers
-  that controller_manager spawners name (their args).
+  that controller_manager spawners name (their args), or ``"*exported"`` for every
+  class the analysed packages export with one of ``bases`` that the deny and allow
+  lists (``lists``) let through (mavros).
 - ``type_of``: the parameter giving one plugin's class, with ``{name}`` for the plugin
   name (``{name}.plugin``, ``{name}/type``); None when ``names`` holds ``{name, type}``
   mappings (move_base's ``recovery_behaviors``, ROS 1 costmap ``plugins``) or the class
@@ -48,6 +50,13 @@ class Slot:
     # the plugin name is the last segment of the class's lookup name (move_base's
     # planners: ``navfn/NavfnROS`` is initialised as ``NavfnROS``)
     name_from_class: bool = False
+    # ``names`` is EXPORTED: the deny and allow lists (parameters holding glob patterns
+    # matched against lookup names, case folded); allowed is what no deny pattern
+    # matches, or an allow pattern does; an allow list alone denies the rest
+    lists: tuple[str, str] | None = None
+    # a node of its own named by its code: the regular expression that finds that name
+    # in the class's sources (group 1), as the class's ``rosname``
+    node_name: str | None = None
 
 
 @dataclass(frozen=True)
@@ -93,6 +102,7 @@ class Sources:
 
 
 SPAWNER = "*spawner"
+EXPORTED = "*exported"  # every class exported with one of the slot's bases
 
 _NAV2_COSTMAP = (Slot("plugins", "{name}.plugin", ("nav2_costmap_2d",
                                                     "nav2_costmap_2d::Layer"),
@@ -160,6 +170,18 @@ HOSTS: tuple[Host, ...] = (
         _ros1_costmap("global_costmap/"),
         _ros1_costmap("local_costmap/"))),
     Host("costmap_2d", ("costmap_2d_node",), 1, (_ros1_costmap("costmap/"),)),
+    # mavros (mavros/src/lib/mavros.cpp, mavros_uas.cpp) loads every class its plugin
+    # loader declares unless its lists say otherwise; ROS 1 plugins make their calls on
+    # the mavros node through handles their code names (``~imu``); a ROS 2 plugin is a
+    # node of its own, ``Plugin(uas, "imu")`` (plugin.hpp: Node::make_shared(subnode, ...)),
+    # in the process's namespace
+    Host("mavros", ("mavros_node",), 1, (
+        Slot(EXPORTED, None, ("mavros", "mavros::plugin::PluginBase"),
+             lists=("plugin_blacklist", "plugin_whitelist")),)),
+    Host("mavros", ("mavros_node",), 2, (
+        Slot(EXPORTED, None, ("mavros", "mavros::plugin::PluginFactory"), placement="node",
+             lists=("plugin_denylist", "plugin_allowlist"),
+             node_name=r'\b(?:Plugin|MissionBase)\s*\(\s*uas_?\s*,\s*"([^"\\]+)"'),)),
 )
 
 
@@ -194,6 +216,13 @@ def host_of(package: str, executable: str, ros_version: int) -> Host | None:
                 and host.ros_version == ros_version):
             return host
     return None
+
+
+def node_name_patterns() -> dict[str, str]:
+    """Base class (or export tag) → the pattern that finds a plugin node's name in its
+    class's sources, for the hosts whose plugins are nodes named by their code."""
+    return {base: slot.node_name for host in HOSTS for slot in host.slots
+            if slot.node_name for base in slot.bases if "::" in base}
 
 
 def plugin_bases() -> frozenset[str]:
