@@ -8,7 +8,7 @@ from haros_arch.graph import build
 from haros_arch.launch.model import LaunchModel, NodeDecl, ParamDecl
 from haros_arch.model import Configuration, Location, Node, PrimitiveCall
 from haros_arch.model.values import UNKNOWN_MARK
-from haros_arch.plugins.attach import spawn_args
+from haros_arch.plugins.attach import ros1_spawn_args, spawn_args
 from haros_arch.workspace import Workspace
 
 
@@ -363,3 +363,42 @@ def test_ros1_mavros_loads_exported_plugins_its_black_and_white_lists_let_throug
                    [ParamDecl("/mavros/plugin_whitelist", ["imu"])], [mavros, *plugins])
     assert [k for k in links_of(config, "/mavros") if k[0] == "publish"] == [
         ("publish", "/mavros/imu/data")]
+
+
+def _ros1_controllers(decls, extra_nodes=()):
+    diff = plugin("diff_drive_controller", "diff_drive_controller/DiffDriveController",
+                  "diff_drive_controller::DiffDriveController",
+                  call("subscribe", "?/cmd_vel", "geometry_msgs/Twist", handle_namespace="?"),
+                  call("read", "?/publish_rate", "double", handle_namespace="?"))
+    params = [ParamDecl("/r/base/type", "diff_drive_controller/DiffDriveController",
+                        location=where(4)),
+              ParamDecl("/r/joints/type", "joint_state_controller/JointStateController",
+                        location=where(5))]
+    return graph(decls, params, [diff, *extra_nodes])
+
+
+def test_ros1_spawned_controllers_without_a_manager_in_the_configuration_are_own_instances():
+    spawner = NodeDecl("/r/spawner", "controller_manager", "spawner", "/r/",
+                       args="base joints --timeout 10")
+    config = _ros1_controllers([spawner])
+    base = config.node("/r/base")
+    assert base.origin == "plugin" and base.node.name.endswith("DiffDriveController")
+    assert links_of(config, "/r/base") == [
+        ("read", "/r/base/publish_rate"), ("read", "/r/base/type"),
+        ("subscribe", "/r/base/cmd_vel")]
+    (missing,) = [d for d in config.diagnostics if d.code == "PLUGIN_NOT_FOUND"]
+    assert missing.location.line == 5 and "JointStateController" in missing.message
+
+
+def test_ros1_spawned_controllers_go_to_the_instance_serving_their_manager():
+    hardware = Node("robot_base", "base_node",
+                    calls=[call("server", "controller_manager/load_controller", "L")])
+    spawner = NodeDecl("/spawner", "controller_manager", "spawner", "/",
+                       args="--namespace=r base")
+    config = _ros1_controllers([NodeDecl("/r/base_node", "robot_base", "base_node", "/r/"),
+                                spawner], [hardware])
+    assert config.node("/r/base") is None
+    assert ("subscribe", "/r/base/cmd_vel") in links_of(config, "/r/base_node")
+    assert ("read", "/r/base/type") in links_of(config, "/r/base_node")
+    assert ros1_spawn_args(NodeDecl("/c", "controller_manager", "controller_manager",
+                                    args="spawn a b")) == (["a", "b"], "")

@@ -47,7 +47,7 @@ from ..launch.ros2.naming import (
 )
 from ..model.conditions import Condition
 from ..model.location import Location
-from ..model.rosname import namespace_of
+from ..model.rosname import namespace_of, resolve
 from ..model.runtime import Configuration, NodeInstance, Parameter, Resource
 from ..model.source import Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK
@@ -56,6 +56,7 @@ from ..workspace import Workspace
 from .hosts import EXPORTED, SPAWNER, Child, Slot, Sources, host_of, sources_of
 
 SPAWNERS = (("controller_manager", "spawner"), ("controller_manager", "spawner.py"))
+ROS1_SPAWNERS = (("controller_manager", "spawner"), ("controller_manager", "controller_manager"))
 MANAGER_NAME = "controller_manager"
 _ROS_ARG_FLAGS = ("-r", "--remap", "-p", "--param", "--params-file")
 MAX_PLUGINS = 200  # per slot: a hostile list stays bounded
@@ -124,6 +125,7 @@ def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance
                 for choice in choices:
                     out.extend(_load(choice, slot, instance, index, workspace, models,
                                      params, config, owned, made, loaded, decl))
+    out.extend(ros1_controllers(config, started, index, params, workspace, models, owned))
     return out
 
 
@@ -315,14 +317,16 @@ def _given(choice: Choice, slot: Slot) -> str:
     return choice.name
 
 
+def _not_found(choice: Choice, host: str) -> diag.Diagnostic:
+    if not choice.cls or UNKNOWN_MARK in choice.cls:
+        return diag.make("PLUGIN_CLASS_UNKNOWN", choice.location, plugin=choice.name,
+                         host=host)
+    return diag.make("PLUGIN_NOT_FOUND", choice.location, plugin=choice.cls, host=host)
+
+
 def _missing(config: Configuration, instance: NodeInstance, choice: Choice,
              owned: set[int]) -> None:
-    if not choice.cls or UNKNOWN_MARK in choice.cls:
-        found = diag.make("PLUGIN_CLASS_UNKNOWN", choice.location, plugin=choice.name,
-                          host=instance.name)
-    else:
-        found = diag.make("PLUGIN_NOT_FOUND", choice.location, plugin=choice.cls,
-                          host=instance.name)
+    found = _not_found(choice, instance.name)
     config.diagnostics.append(found)
     where = choice.location
     own_partial(instance, f"{found.message} ({where.file}:{where.line})", owned)
@@ -673,3 +677,96 @@ def _parent_rule(row: Sources, node: Node, workspace: Workspace) -> bool:
         node.model.split()[1] if node.model and len(node.model.split()) > 1 else "")
     numbers = tuple(int(part) for part in version.split(".")[:3] if part.isdigit())
     return bool(numbers) and numbers >= row.parent_since
+
+
+# -- ROS 1 ros_control ------------------------------------------------------------------
+
+
+def ros1_spawn_args(decl: NodeDecl) -> tuple[list[str], str]:
+    """The controllers a ROS 1 ``spawner`` (or ``controller_manager spawn|load``) names,
+    and its ``--namespace`` (the controller manager's, "" when not given)."""
+    try:
+        words = shlex.split(decl.args)
+    except ValueError:
+        words = decl.args.split()
+    if decl.executable == "controller_manager":
+        if not words or words[0] not in ("spawn", "load"):
+            return [], ""
+        words = words[1:]
+    takes_value = {"--wait-for", "--namespace", "--timeout", "--shutdown-timeout"}
+    controllers: list[str] = []
+    namespace = ""
+    index = 0
+    while index < len(words):
+        word = words[index]
+        option, _, value = word.partition("=")
+        if option in takes_value:
+            if not value:
+                value = words[index + 1] if index + 1 < len(words) else ""
+                index += 1
+            if option == "--namespace":
+                namespace = value
+        elif not word.startswith("-"):
+            controllers.append(word)
+        index += 1
+    return controllers, namespace
+
+
+def ros1_controllers(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance]],
+                     index: Mapping[str, Node], params: Params, workspace: Workspace,
+                     models: PluginModels | None, owned: set[int],
+                     ) -> list[tuple[NodeInstance, list[PrimitiveCall]]]:
+    """The controllers ROS 1 spawners load. The controller manager answers at
+    ``<namespace>/controller_manager/load_controller`` (the spawner's ``--namespace``,
+    in its own namespace) and loads controller ``c`` with the class ``<namespace>/c/type``
+    and the handle ``<namespace>/c``. The instance that serves that service hosts the
+    controller's calls; when the configuration has none (the manager lives in Gazebo or
+    in a hardware node started elsewhere) the controller is a node instance of its own,
+    ``<namespace>/c``, standing for its part of that unknown process."""
+    out: list[tuple[NodeInstance, list[PrimitiveCall]]] = []
+    for decl, spawner in started:
+        if decl.ros_version != 1 or (decl.package, decl.executable) not in ROS1_SPAWNERS:
+            continue
+        controllers, given = ros1_spawn_args(decl)
+        manager = resolve(given, spawner.namespace, spawner.name)
+        host = _serving(config, manager.rstrip("/") + "/controller_manager/load_controller")
+        for controller in controllers[:MAX_PLUGINS]:
+            full = f"{manager.rstrip('/')}/{controller}"
+            typed = _parameter(params, full + "/type")
+            choice = Choice(controller, _text(typed.value) if typed else None,
+                            typed.launch_location if typed else decl.location,
+                            (*spawner.conditions, *(typed.launch_conditions if typed else ())),
+                            (typed.name,) if typed else ())
+            node = _lookup(choice, index, workspace, models)
+            reader = host
+            if node is None:
+                if host is not None:
+                    _missing(config, host, choice, owned)
+                else:
+                    config.diagnostics.append(_not_found(choice, spawner.name))
+            elif host is not None:
+                out.append((host, [_under(c, controller, choice.conditions)
+                                   for c in node.calls]))
+                if typed is not None:  # the manager reads the class, by its full name
+                    out.append((host, [PrimitiveCall(
+                        "read", typed.name, location=choice.location,
+                        conditions=choice.conditions, origin="plugin")]))
+                continue
+            else:
+                namespace = manager.rstrip("/") + "/"
+                reader = NodeInstance(full, node, namespace=namespace,
+                                      conditions=choice.conditions, location=choice.location,
+                                      origin="plugin", ros_version=1)
+                taken = sum(1 for n in config.nodes if n.name == full)
+                reader.id = f"node:{full}" + (f"#{taken + 1}" if taken else "")
+                config.nodes.append(reader)
+                out.append((reader, [_under(c, controller, ()) for c in node.calls]))
+            if reader is not None:
+                out.extend(_loading_reads(choice, reader, reader))
+    return out
+
+
+def _serving(config: Configuration, service: str) -> NodeInstance | None:
+    """The node instance that serves ``service``, if the configuration has one."""
+    return next((link.node for link in config.links
+                 if link.kind == "server" and link.resource.name == service), None)

@@ -127,11 +127,6 @@ HOSTS: tuple[Host, ...] = (
                                       "controller_interface::ControllerInterface",
                                       "controller_interface::ChainableControllerInterface"),
              placement="node"),)),
-    # ros_control: controllers use the handle ``<manager namespace>/<name>``
-    Host("controller_manager", ("controller_manager",), 1, (
-        Slot(SPAWNER, "{name}/type", ("controller_interface",
-                                      "controller_interface::ControllerBase"),
-             placement="node"),)),
     # nav2's planner and controller servers make their costmap nodes in their constructor
     # (``Costmap2DROS("global_costmap", get_namespace(), ...)``)
     Host("nav2_planner", ("planner_server",), 2, (
@@ -218,6 +213,13 @@ def host_of(package: str, executable: str, ros_version: int) -> Host | None:
     return None
 
 
+# ROS 1 ros_control: a ControllerManager lives inside a robot's hardware node or Gazebo's
+# gazebo_ros_control, not in a node of its own; its spawners name the controllers (see
+# ``attach.ros1_controllers``), each loaded with the handle ``<manager namespace>/<name>``
+# and the class ``<name>/type`` there
+ROS1_CONTROLLER_BASES = ("controller_interface", "controller_interface::ControllerBase")
+
+
 def node_name_patterns() -> dict[str, str]:
     """Base class (or export tag) → the pattern that finds a plugin node's name in its
     class's sources, for the hosts whose plugins are nodes named by their code."""
@@ -227,4 +229,5 @@ def node_name_patterns() -> dict[str, str]:
 
 def plugin_bases() -> frozenset[str]:
     """Export tags and base classes of every class some host loads."""
-    return frozenset(base for host in HOSTS for slot in host.slots for base in slot.bases)
+    return frozenset((*ROS1_CONTROLLER_BASES, *(
+        base for host in HOSTS for slot in host.slots for base in slot.bases)))
