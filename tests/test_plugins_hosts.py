@@ -402,3 +402,15 @@ def test_ros1_spawned_controllers_go_to_the_instance_serving_their_manager():
     assert ("read", "/r/base/type") in links_of(config, "/r/base_node")
     assert ros1_spawn_args(NodeDecl("/c", "controller_manager", "controller_manager",
                                     args="spawn a b")) == (["a", "b"], "")
+
+
+def test_ros2_plugin_nodes_leave_their_hosts_framework_calls_to_the_host():
+    framework = call("publish", "/diagnostics", "diagnostic_msgs/msg/DiagnosticArray", 268)
+    mavros = Node("mavros", "mavros_node", calls=[framework])
+    imu = plugin("mavros", "imu", "mavros::plugin::PluginFactoryTemplate<Imu>", framework,
+                 call("publish", "~/data", "sensor_msgs/msg/Imu", 40))
+    imu.plugin_base, imu.rosname = "mavros::plugin::PluginFactory", "imu"
+    config = graph([ros2(NodeDecl("/mavros/mavros", "mavros", "mavros_node", "/mavros/"))],
+                   nodes=[mavros, imu])
+    assert links_of(config, "/mavros/imu") == [("publish", "/mavros/imu/data")]
+    assert links_of(config, "/mavros/mavros") == [("publish", "/diagnostics")]

@@ -144,7 +144,7 @@ def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str
         reader = _plugin_instance(instance, choice, node, config)
         if slot.names == EXPORTED:  # a node the process makes: its files apply by name
             _process_params(decl, reader, params)
-        out.append((reader, list(node.calls)))
+        out.append((reader, _not_hosts(node.calls, instance)))
     else:
         plugin = slot.prefix + _given(choice, slot)
         calls = [_under(call, plugin, choice.conditions) for call in node.calls]
@@ -252,6 +252,14 @@ def _new(calls: list[PrimitiveCall], host: NodeInstance,
             seen.add(key)
             out.append(call)
     return out
+
+
+def _not_hosts(calls: list[PrimitiveCall], host: NodeInstance) -> list[PrimitiveCall]:
+    """A plugin node's calls but those its host's node model makes at the same place: a
+    header of the host's framework that the plugin includes (mavros' UAS members) is
+    code of the host's node, not of the plugin's."""
+    hosts = {(c.kind, c.location) for c in (host.node.calls if host.node else ())}
+    return [c for c in calls if (c.kind, c.location) not in hosts]
 
 
 def _key(call: PrimitiveCall) -> tuple[Any, ...]:
