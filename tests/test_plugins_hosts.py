@@ -414,3 +414,10 @@ def test_ros2_plugin_nodes_leave_their_hosts_framework_calls_to_the_host():
                    nodes=[mavros, imu])
     assert links_of(config, "/mavros/imu") == [("publish", "/mavros/imu/data")]
     assert links_of(config, "/mavros/mavros") == [("publish", "/diagnostics")]
+
+
+def test_mavros_with_no_exported_plugin_in_view_is_partial():
+    mavros = Node("mavros", "mavros_node", calls=[call("read", "~fcu_url", "str")])
+    config = graph([NodeDecl("/mavros", "mavros", "mavros_node")], nodes=[mavros])
+    assert [d.code for d in config.diagnostics] == ["PLUGIN_CLASS_UNKNOWN"]
+    assert config.node("/mavros").completeness == "partial"

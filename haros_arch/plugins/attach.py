@@ -215,6 +215,8 @@ def _exported(instance: NodeInstance, slot: Slot, params: Params,
     reads = tuple(p.name for p in (deny, allow) if p)
     found = sorted((n for n in nodes.values() if n.kind == "plugin"
                     and (n.plugin_base in slot.bases)), key=lambda n: n.name)
+    if not found:  # its plugins' packages have no source here: what it loads is unknown
+        yield Choice("*", None, where, conditions, reads)
     for node in found[:MAX_PLUGINS * 5]:
         name = node.executable.casefold()
         if any(fnmatch.fnmatchcase(name, p) for p in denied) and not any(
