@@ -312,7 +312,9 @@ def test_nav2_from_1_4_resolves_a_relative_source_topic_in_the_parent_namespace(
 def test_ros1_costmap_obstacle_layer_subscribes_its_observation_sources():
     move_base = Node("move_base", "move_base")
     obstacle = plugin("costmap_2d", "costmap_2d::ObstacleLayer", "costmap_2d::ObstacleLayer",
-                      call("read", "~?/?/topic", "str", 2, handle_namespace="~?/?"))
+                      call("read", "~?/?/topic", "str", 2, handle_namespace="~?/?"),
+                      # message_filters::Subscriber(g_nh, topic, 50): topic unknown here
+                      call("subscribe", "?", "sensor_msgs/LaserScan", 154))
     defaults = [plugin("navfn", "navfn/NavfnROS", "navfn::NavfnROS"),
                 plugin("base_local_planner", "base_local_planner/TrajectoryPlannerROS",
                        "base_local_planner::TrajectoryPlannerROS")]

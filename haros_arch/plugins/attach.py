@@ -619,9 +619,10 @@ def _per_source(calls: list[PrimitiveCall], row: Sources, plugin: str, choice: C
                 instance: NodeInstance, node: Node, params: Params, workspace: Workspace,
                 ) -> list[PrimitiveCall]:
     """The plugin's calls with one copy per listed source of those made under
-    ``<plugin>.<source>`` (``obstacle_layer.?.topic``), and a subscription per source.
-    Without a value for the list the calls stay as they are; with an unknown one a
-    subscription to an unknown topic says so."""
+    ``<plugin>.<source>`` (``obstacle_layer.?.topic``), and a subscription per source
+    instead of the plugin's subscriptions to topics it could not name. Without a value
+    for the list the calls stay as they are; with an unknown one a subscription to an
+    unknown topic says so."""
     base = instance.name.rstrip("/") + "/"
     listed = _parameter(params, base + row.names.format(plugin=plugin))
     if listed is None:
@@ -635,6 +636,8 @@ def _per_source(calls: list[PrimitiveCall], row: Sources, plugin: str, choice: C
     marks = [lead + plugin + separator + UNKNOWN_MARK + separator for lead in ("", "~", "~/")]
     out: list[PrimitiveCall] = []
     for call in calls:
+        if call.kind == "subscribe" and call.name.lstrip("~/") == UNKNOWN_MARK:
+            continue  # a source's subscription, named by its topic below
         mark = next((m for m in marks if call.name.startswith(m)), None)
         if mark is None:
             out.append(call)
