@@ -423,3 +423,21 @@ def test_mavros_with_no_exported_plugin_in_view_is_partial():
     config = graph([NodeDecl("/mavros", "mavros", "mavros_node")], nodes=[mavros])
     assert [d.code for d in config.diagnostics] == ["PLUGIN_CLASS_UNKNOWN"]
     assert config.node("/mavros").completeness == "partial"
+
+
+def test_a_voxel_layer_runs_its_obstacle_layer_code_too():
+    move_base = Node("move_base", "move_base")
+    obstacle = plugin("costmap_2d", "costmap_2d::ObstacleLayer", "costmap_2d::ObstacleLayer",
+                      call("read", "~?/observation_sources", "str", 78, handle_namespace="~?"))
+    voxel = plugin("costmap_2d", "costmap_2d::VoxelLayer", "costmap_2d::VoxelLayer",
+                   call("read", "~?/z_voxels", "int", 60, handle_namespace="~?"))
+    defaults = [plugin("navfn", "navfn/NavfnROS", "navfn::NavfnROS"),
+                plugin("base_local_planner", "base_local_planner/TrajectoryPlannerROS",
+                       "base_local_planner::TrajectoryPlannerROS")]
+    params = [ParamDecl("/move_base/local_costmap/plugins",
+                        [{"name": "voxels", "type": "costmap_2d::VoxelLayer"}])]
+    config = graph([NodeDecl("/move_base", "move_base", "move_base")], params,
+                   [move_base, obstacle, voxel, *defaults])
+    links = links_of(config, "/move_base")
+    assert ("read", "/move_base/local_costmap/voxels/z_voxels") in links
+    assert ("read", "/move_base/local_costmap/voxels/observation_sources") in links

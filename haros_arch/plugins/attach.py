@@ -53,7 +53,7 @@ from ..model.source import Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK
 from ..share import share_source
 from ..workspace import Workspace
-from .hosts import EXPORTED, SPAWNER, Child, Slot, Sources, host_of, sources_of
+from .hosts import EXPORTED, EXTENDS, SPAWNER, Child, Slot, Sources, host_of, sources_of
 
 SPAWNERS = (("controller_manager", "spawner"), ("controller_manager", "spawner.py"))
 ROS1_SPAWNERS = (("controller_manager", "spawner"), ("controller_manager", "controller_manager"))
@@ -147,7 +147,8 @@ def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str
         out.append((reader, _not_hosts(node.calls, instance)))
     else:
         plugin = slot.prefix + _given(choice, slot)
-        calls = [_under(call, plugin, choice.conditions) for call in node.calls]
+        calls = [_under(call, plugin, choice.conditions)
+                 for call in _with_base(node, index, workspace, models)]
         row = sources_of(choice.cls or "", instance.ros_version) or sources_of(
             node.plugin_class or "", instance.ros_version)
         if row is not None:
@@ -160,6 +161,17 @@ def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str
         if kept:
             out.append((own, kept))
     return out
+
+
+def _with_base(node: Node, index: Mapping[str, Node], workspace: Workspace,
+               models: PluginModels | None) -> list[PrimitiveCall]:
+    """A plugin's calls and those of the exported class whose code it runs (``EXTENDS``)."""
+    base = EXTENDS.get((node.plugin_class or "").lstrip(":")) or EXTENDS.get(node.executable)
+    found = _lookup(Choice("", base, node.location), index, workspace, models) if base else None
+    if found is None or found is node:
+        return list(node.calls)
+    own = {_key(c) for c in node.calls}
+    return [*node.calls, *(c for c in found.calls if _key(c) not in own)]
 
 
 def _child_instance(decl: NodeDecl, host: NodeInstance, child: Child,

@@ -197,6 +197,15 @@ SOURCES: tuple[Sources, ...] = (
 )
 
 
+# plugin classes whose code runs another exported class's (their base class's
+# onInitialize), which their own sources do not hold: voxel_layer.cpp calls
+# ObstacleLayer::onInitialize (nav2 and ROS 1 costmap_2d)
+EXTENDS: dict[str, str] = {
+    "nav2_costmap_2d::VoxelLayer": "nav2_costmap_2d::ObstacleLayer",
+    "costmap_2d::VoxelLayer": "costmap_2d::ObstacleLayer",
+}
+
+
 def sources_of(cls: str, ros_version: int) -> Sources | None:
     """The ``Sources`` row of a plugin class (lookup name or C++ type), if any."""
     cls = cls.strip().lstrip(":")
