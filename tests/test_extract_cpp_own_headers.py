@@ -1,0 +1,54 @@
+"""A package whose headers our stand-ins also provide (rclcpp_components, image_transport,
+...) is extracted against its own headers: a header of its include folder wins over the
+umbrella stand-in, while the stand-in files themselves keep their place."""
+
+from __future__ import annotations
+
+from haros_arch.extract.cpp import extract_cpp
+from haros_arch.workspace import scan
+from tests.conftest import package_xml
+
+MANAGER = """
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+namespace rclcpp_components {
+class ComponentManager : public rclcpp::Node {
+public:
+  ComponentManager() : rclcpp::Node("component_manager") {
+    pub_ = create_publisher<std_msgs::msg::String>("loaded", 10);
+  }
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+};
+}
+"""
+
+MAIN = """
+#include <memory>
+#include "rclcpp_components/component_manager.hpp"
+int main() {
+  auto node = std::make_shared<rclcpp_components::ComponentManager>();
+  return 0;
+}
+"""
+
+
+def _workspace(write_tree, package: str, nested: bool = False):
+    include = f"{package}/include/{package}/" + (f"{package}/" if nested else "")
+    root = write_tree({
+        f"{package}/package.xml": package_xml(package, "ament_cmake"),
+        include + "component_manager.hpp": MANAGER,
+        f"{package}/src/container.cpp": MAIN,
+    })
+    return root, root / package / "src" / "container.cpp"
+
+
+def test_own_header_wins_over_the_umbrella_stand_in(write_tree) -> None:
+    root, main = _workspace(write_tree, "rclcpp_components")
+    result = extract_cpp([str(main)], scan([str(root)]), cache_dir=None)
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "loaded")]
+
+
+def test_own_header_in_the_nested_ros2_layout(write_tree) -> None:
+    root, main = _workspace(write_tree, "rclcpp_components", nested=True)
+    result = extract_cpp([str(main)], scan([str(root)]), cache_dir=None)
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "loaded")]
