@@ -304,3 +304,61 @@ def _package_xml(name: str) -> str:
     from conftest import package_xml
 
     return package_xml(name, build_type="ament_cmake")
+
+
+@pytest.mark.parametrize(("schema", "readable"), [
+    ("haros-arch-model/1", True), ("haros-arch-model/2", True),
+    ("haros-arch-model/3", False), ("haros-arch-model/" + "9" * 5000, False)])
+def test_model_files_of_older_versions_read_and_newer_ones_are_refused(schema, readable):
+    from haros_arch.models.format import ModelFileError
+
+    data = {"schema": schema, "package": "p", "distro": "noetic", "nodes": []}
+    if readable:
+        assert from_document(data).package == "p"
+    else:
+        with pytest.raises(ModelFileError, match="schema version"):
+            from_document(data)
+
+
+FILTER_MODEL = {
+    "schema": "haros-arch-model/2", "package": "fusion", "distro": "noetic", "nodes": [{
+        "package": "fusion", "executable": "ekf", "rosname": "ekf", "calls": [
+            {"kind": "subscribe", "name": "?", "type": "sensor_msgs/Imu",
+             "name_param": "~imu", "name_each": "#"},
+            {"kind": "subscribe", "name": "?", "type": "nav_msgs/Odometry",
+             "name_param": "~odom", "name_each": "#"},
+            {"kind": "subscribe", "name": "?", "type": "geometry_msgs/TwistStamped",
+             "name_param": "~twist", "name_each": "#"}]}]}
+
+
+def test_names_from_a_numbered_family_of_parameters_come_from_launch_and_yaml(write_tree):
+    from conftest import package_xml
+
+    root = write_tree({
+        "src/robot/package.xml": package_xml("robot"),
+        "src/robot/CMakeLists.txt": "project(robot)\n",
+        "src/robot/config/ekf.yaml": "imu0: imu/data\nimu1: /imu2/data\nimu3: skipped\n",
+        "src/robot/launch/ekf.launch": """
+            <launch>
+              <node pkg="fusion" type="ekf" name="ekf">
+                <rosparam command="load" file="$(find robot)/config/ekf.yaml"/>
+                <param name="odom0" value="wheel/odom"/>
+              </node>
+            </launch>
+            """,
+        "models/fusion.json": json.dumps(FILTER_MODEL),
+        "project.yaml": "project: p\nmodels: [models]\n"
+                        "configurations:\n  c: [robot/launch/ekf.launch]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {}, Options(cache_dir=None, jobs=1))
+    (config,) = model.configurations
+    ekf = _instance(config, "/ekf")
+    # imu0, imu1 and odom0 are set; imu3 is not read (imu2 is not set); twist0 is not set
+    assert sorted(link.name for link in ekf.subscribers) == [
+        "/?", "/imu/data", "/imu2/data", "/wheel/odom"]
+    unknown = next(link for link in ekf.subscribers if link.name == "/?")
+    assert unknown.type == "geometry_msgs/TwistStamped"
+    (why,) = [d.message for d in config.diagnostics if d.code == "NAME_PARAM_UNSET"]
+    assert why == ("/ekf: the name of this subscribe is the value of the parameters "
+                   "~twist0, ~twist1, ..., which the configuration does not set; it stays "
+                   "unknown")

@@ -168,3 +168,36 @@ def test_an_override_names_a_call_by_each_element_of_a_list_parameter(tmp_path):
     assert (subscribe.name_param, subscribe.name_each, subscribe.origin) == (
         "~topics", ".", "override")
     assert outcome.override_problems == []
+
+
+def test_an_override_names_calls_by_a_numbered_family_rewrites_and_drops(tmp_path):
+    folder = tmp_path / "noetic"
+    folder.mkdir()
+    (folder / "tiny_driver.yaml").write_text(
+        "nodes:\n"
+        "  tiny_driver/relay:\n    names:\n"
+        "      - {calls: tiny_driver/scripts/relay:8, name: '?', param: ~input,"
+        " numbered: true}\n"
+        "  tiny_driver/laser:\n    rosname: laser\n    drop: [tiny_driver/scripts/laser]\n")
+    (task,) = tasks(read_list(LIST), SOURCES, str(tmp_path), cache_dir=None)
+    outcome = build_package(task)
+    model = from_document(json.loads(outcome.text))
+    subscribe = next(c for c in model.node("relay").calls if c.kind == "subscribe")
+    assert (subscribe.name, subscribe.name_param, subscribe.name_each, subscribe.origin) == (
+        "?", "~input", "#", "override")
+    assert model.node("laser").calls == []
+    assert json.loads(outcome.text)["schema"] == "haros-arch-model/2"
+    assert outcome.override_problems == []
+
+
+def test_an_override_entry_that_mixes_each_and_numbered_is_refused(tmp_path):
+    folder = tmp_path / "noetic"
+    folder.mkdir()
+    (folder / "tiny_driver.yaml").write_text(
+        "nodes:\n  tiny_driver/relay:\n    names:\n"
+        "      - {calls: tiny_driver/scripts/relay:8, param: ~input, each: ., numbered: true}\n"
+        "    drop: [tiny_driver/scripts/nowhere]\n")
+    (task,) = tasks(read_list(LIST), SOURCES, str(tmp_path), cache_dir=None)
+    problems = build_package(task).override_problems
+    assert len(problems) == 2 and "tiny_driver/scripts/nowhere" in problems[0]
+    assert "names no call" in problems[1]
