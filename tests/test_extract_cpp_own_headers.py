@@ -52,3 +52,26 @@ def test_own_header_in_the_nested_ros2_layout(write_tree) -> None:
     root, main = _workspace(write_tree, "rclcpp_components", nested=True)
     result = extract_cpp([str(main)], scan([str(root)]), cache_dir=None)
     assert [(c.kind, c.name) for c in result.calls] == [("publish", "loaded")]
+
+
+
+def test_a_package_whose_api_the_extractor_knows_keeps_the_stand_ins_first(write_tree) -> None:
+    from haros_arch.extract.cpp.headers import IncludeSetup
+
+    root = write_tree({
+        "tf2_ros/package.xml": package_xml("tf2_ros"),
+        "tf2_ros/include/tf2_ros/transform_listener.h": "namespace tf2_ros {}\n",
+        "tf2_ros/src/echo.cpp": "int main() { return 0; }\n",
+        "rclcpp_components/package.xml": package_xml("rclcpp_components"),
+        "rclcpp_components/include/rclcpp_components/component_manager.hpp": MANAGER,
+        "rclcpp_components/src/container.cpp": MAIN,
+    })
+    echo = str(root / "tf2_ros" / "src" / "echo.cpp")
+    container = str(root / "rclcpp_components" / "src" / "container.cpp")
+    setup = IncludeSetup(scan([str(root)]), [], False, sources=[echo, container])
+    try:
+        own = str(root / "rclcpp_components" / "include")
+        assert setup.arguments(False, container)[:2] == ["-I", own]
+        assert str(root / "tf2_ros" / "include") not in setup.arguments(False, echo)[:2]
+    finally:
+        setup.close()

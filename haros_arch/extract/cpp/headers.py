@@ -17,9 +17,10 @@ resolved the way the preprocessor will, and:
 - any other header that is not found becomes an empty header and a
   ``CPP_INCLUDE_MISSING`` diagnostic;
 - a package's own headers win over the stand-ins: a unit of a package our stand-ins also
-  provide (rclcpp_components, image_transport, diagnostic_updater, ...) is parsed with
-  the package's ``include`` folder first and without the precompiled stand-ins (whose
-  classes its own headers define again).
+  provide (rclcpp_components, bondcpp, class_loader, ...) is parsed with the package's
+  ``include`` folder first and without the precompiled stand-ins (whose classes its own
+  headers define again); not a package whose API the extractor knows by its stand-ins
+  (tf2_ros, image_transport, ...: the API tables name its classes).
 
 With ``system_headers=True`` the stand-ins are left out and only headers that the system
 lacks are synthesised, so the real ROS headers are used.
@@ -42,7 +43,7 @@ from ...diagnostics import Diagnostic
 from ...files import read_text
 from ...model.location import Location
 from ...workspace import Workspace
-from . import interfaces, ros2_interfaces, toolchain
+from . import api, interfaces, ros2_interfaces, toolchain
 from .compile_commands import UnitFlags
 
 STANDIN = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "standin")
@@ -84,9 +85,14 @@ _MESSAGE_HEADER = re.compile(r"([A-Za-z_]\w*)/([A-Z]\w*)\.h")
 _NOT_FOUND = re.compile(r"^'([^']+)' file not found")
 
 
-# the packages whose headers the stand-ins provide (rclcpp, image_transport, ...)
+# the packages whose headers the stand-ins provide (rclcpp_components, bondcpp, ...) and
+# whose own headers win when they are modelled; not those whose classes the API tables
+# name (tf2_ros, image_transport, ...): their stand-ins are the API the extractor knows,
+# and their own sources are modelled against them
 _STANDIN_PACKAGES = frozenset({p.rstrip("/") for p in SHADOWED} | {
-    f for f in os.listdir(STANDIN) if os.path.isdir(os.path.join(STANDIN, f))} - {"std"})
+    f for f in os.listdir(STANDIN) if os.path.isdir(os.path.join(STANDIN, f))}) - {
+    "std", *(row[0].split("::")[0] for table in (api.ROSCPP, api.LIBRARIES, api.RCLCPP,
+                                                 api.RCLCPP_LIBRARIES) for row in table)}
 
 _ROS_PREFIXES = ("ros/", "boost/", "tf/", "rclcpp", "rmw/", "tf2", "image_transport/",
                  "message_filters/", "actionlib/", "nodelet/", "pluginlib/")
