@@ -362,3 +362,39 @@ def test_names_from_a_numbered_family_of_parameters_come_from_launch_and_yaml(wr
     assert why == ("/ekf: the name of this subscribe is the value of the parameters "
                    "~twist0, ~twist1, ..., which the configuration does not set; it stays "
                    "unknown")
+
+
+def test_topic_tools_nodes_take_their_topics_from_their_arguments(write_tree):
+    from conftest import package_xml
+
+    root = write_tree({
+        "src/robot/package.xml": package_xml("robot"),
+        "src/robot/CMakeLists.txt": "project(robot)\n",
+        "src/robot/launch/tools.launch": """
+            <launch>
+              <node pkg="topic_tools" type="relay" name="relay" args="scan front/scan"/>
+              <node pkg="topic_tools" type="relay" name="echo" args="odom"/>
+              <node pkg="topic_tools" type="mux" name="mux" args="cmd_vel nav_vel joy_vel"/>
+              <node pkg="topic_tools" type="throttle" name="slow"
+                    args="messages camera/image 2.0"/>
+              <node pkg="topic_tools" type="drop" name="drop" args="imu 1 2 imu_half"/>
+            </launch>
+            """,
+        "project.yaml": "project: p\nconfigurations:\n  c: [robot/launch/tools.launch]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {}, Options(cache_dir=None, jobs=1))
+    (config,) = model.configurations
+
+    def sides(name):
+        node = _instance(config, name)
+        return (sorted(link.name for link in node.subscribers),
+                sorted(link.name for link in node.publishers))
+
+    assert sides("/relay") == (["/scan"], ["/front/scan"])
+    assert sides("/echo") == (["/odom"], ["/odom_relay"])
+    assert sides("/mux") == (["/joy_vel", "/nav_vel"], ["/cmd_vel", "/mux/selected"])
+    assert sides("/slow") == (["/camera/image"], ["/camera/image_throttle"])
+    assert sides("/drop") == (["/imu"], ["/imu_half"])
+    mux = _instance(config, "/mux")
+    assert mux.completeness == "model" and "/mux/select" in {
+        link.name for link in mux.links if link.kind == "server"}
