@@ -30,7 +30,7 @@ import shlex
 from typing import Any
 
 from ..launch.model import NodeDecl
-from ..model.source import Node, PrimitiveCall
+from ..model.source import CallKind, Node, PrimitiveCall
 
 ROS1_VALUE_OPTIONS = {"-r", "--rate", "-f", "--file"}
 ROS2_VALUE_OPTIONS = {"-r", "--rate", "-p", "--print", "-t", "--times", "-w",
@@ -58,7 +58,7 @@ def command_node(decl: NodeDecl) -> Node | None:
 def _topic_tools(decl: NodeDecl, words: list[str]) -> Node | None:
     """A ROS 1 topic_tools node from its arguments (see the module's docstring)."""
     tool, args = decl.executable, [w for w in words if not w.startswith("__")]
-    calls: list[tuple[str, str, str | None]] = []  # (kind, name, type)
+    calls: list[tuple[CallKind, str, str | None]] = []  # (kind, name, type)
     params = {"relay": ["~unreliable", "~lazy", "~stealth"],
               "mux": ["~lazy", "~latch", "~initial_topic",
                       "~wait_publisher_initialization", "~wait_publisher_second"],
@@ -70,7 +70,8 @@ def _topic_tools(decl: NodeDecl, words: list[str]) -> Node | None:
         calls = [("subscribe", args[0], None),
                  ("publish", args[1] if len(args) > 1 else args[0] + "_relay", None)]
     elif tool in ("mux", "demux") and len(args) >= 2:
-        one, many = ("publish", "subscribe") if tool == "mux" else ("subscribe", "publish")
+        one: CallKind = "publish" if tool == "mux" else "subscribe"
+        many: CallKind = "subscribe" if tool == "mux" else "publish"
         calls = [(one, args[0], None), *((many, name, None) for name in args[1:]),
                  ("publish", f"{tool}/selected", "std_msgs/String")]
         kind = tool.capitalize()
