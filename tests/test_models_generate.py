@@ -178,14 +178,18 @@ def test_an_override_names_calls_by_a_numbered_family_rewrites_and_drops(tmp_pat
         "  tiny_driver/relay:\n    names:\n"
         "      - {calls: tiny_driver/scripts/relay:8, name: '?', param: ~input,"
         " numbered: true}\n"
-        "  tiny_driver/laser:\n    rosname: laser\n    drop: [tiny_driver/scripts/laser]\n")
+        "  tiny_driver/laser:\n    rosname: laser\n    drop: [tiny_driver/scripts/laser]\n"
+        "    partial: its topics follow a file it reads\n")
     (task,) = tasks(read_list(LIST), SOURCES, str(tmp_path), cache_dir=None)
     outcome = build_package(task)
     model = from_document(json.loads(outcome.text))
     subscribe = next(c for c in model.node("relay").calls if c.kind == "subscribe")
     assert (subscribe.name, subscribe.name_param, subscribe.name_each, subscribe.origin) == (
         "?", "~input", "#", "override")
-    assert model.node("laser").calls == []
+    laser = model.node("laser")
+    assert laser.calls == [] and laser.completeness == "partial"
+    assert laser.completeness_reasons == [
+        "override noetic/tiny_driver.yaml: its topics follow a file it reads"]
     assert json.loads(outcome.text)["schema"] == "haros-arch-model/2"
     assert outcome.override_problems == []
 
