@@ -115,8 +115,11 @@ def measure(case: Case, root: str, listing: bool) -> None:
     for node in modelled:
         state = node.completeness
         print(f"    {node.name}: {node.node.model if node.node else ''} [{state}]")
-    print(f"  links added by models {len(added)}; resources joining the workspace's own "
-          f"nodes and modelled ones {len(joined)}")
+    unnamed = [link for link in added if "?" in link.name
+               and link.kind in ("publish", "subscribe", "server", "client")]
+    print(f"  links added by models {len(added)} (topics and services named '?': "
+          f"{len(unnamed)}); resources joining the workspace's own nodes and modelled "
+          f"ones {len(joined)}")
     for name in joined:
         print(f"    {name}")
     print(f"  topics with a publisher and a subscriber: before {len(connected['before'])}, "
