@@ -398,3 +398,28 @@ def test_topic_tools_nodes_take_their_topics_from_their_arguments(write_tree):
     mux = _instance(config, "/mux")
     assert mux.completeness == "model" and "/mux/select" in {
         link.name for link in mux.links if link.kind == "server"}
+
+
+def test_a_ros1_spawner_calls_the_controller_manager_of_its_namespace_argument(write_tree):
+    from conftest import package_xml
+
+    root = write_tree({
+        "src/robot/package.xml": package_xml("robot"),
+        "src/robot/CMakeLists.txt": "project(robot)\n",
+        "src/robot/launch/control.launch": """
+            <launch>
+              <node pkg="controller_manager" type="spawner" name="spawner"
+                    args="--namespace arm --wait-for ready joint_state_controller"/>
+            </launch>
+            """,
+        "project.yaml": "project: p\nconfigurations:\n  c: [robot/launch/control.launch]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {}, Options(cache_dir=None, jobs=1))
+    (config,) = model.configurations
+    spawner = _instance(config, "/spawner")
+    assert sorted((link.kind, link.name) for link in spawner.links
+                  if link.kind in ("client", "subscribe")) == [
+        ("client", "/arm/controller_manager/load_controller"),
+        ("client", "/arm/controller_manager/switch_controller"),
+        ("client", "/arm/controller_manager/unload_controller"),
+        ("subscribe", "/ready")]

@@ -1,5 +1,6 @@
-"""Nodes whose interface is their command line: ``rostopic pub`` / ``ros2 topic pub``, and
-ROS 1 topic_tools' ``relay``, ``mux``, ``demux``, ``throttle`` and ``drop``.
+"""Nodes whose interface is their command line: ``rostopic pub`` / ``ros2 topic pub``,
+ROS 1 topic_tools' ``relay``, ``mux``, ``demux``, ``throttle`` and ``drop``, and ROS 1
+controller_manager's ``spawner``.
 
 A launch file that starts ``<node pkg="rostopic" type="rostopic" args="pub /initialpose
 geometry_msgs/PoseWithCovarianceStamped '{...}'"/>`` runs a publisher of that topic and
@@ -22,6 +23,13 @@ under ``demux/`` (demux.cpp:247-295); ``throttle messages IN RATE [OUT]`` and ``
 bytes IN RATE WINDOW [OUT]`` (default ``IN_throttle``, throttle.cpp:181-246); ``drop IN X
 Y [OUT]`` (default ``IN_drop``, drop.cpp:65-90). Their messages are of any type
 (``ShapeShifter``): the calls have none.
+
+controller_manager's ROS 1 ``spawner`` (ros_control ``controller_manager/scripts/spawner``,
+noetic-devel): the services are NS + ``controller_manager/load_controller``,
+``switch_controller`` and ``unload_controller`` with NS the ``--namespace`` argument
+(default empty, a ``/`` added, lines 95-117), called through rospy.ServiceProxy (lines
+59-62, 124-137); ``--wait-for TOPIC`` subscribes TOPIC (std_msgs/Bool, line 160); it reads
+``/use_sim_time`` (line 140).
 """
 
 from __future__ import annotations
@@ -52,7 +60,33 @@ def command_node(decl: NodeDecl) -> Node | None:
         return _ros2_topic(decl, words[1:])
     if decl.package == "topic_tools" and decl.ros_version == 1:
         return _topic_tools(decl, words)
+    if (decl.package, decl.executable) == ("controller_manager", "spawner") and (
+            decl.ros_version == 1):
+        return _spawner(decl, words)
     return None
+
+
+def _spawner(decl: NodeDecl, words: list[str]) -> Node | None:
+    """A ROS 1 controller spawner from its arguments (see the module's docstring)."""
+    positional, values, _flags = _positional(
+        words, {"--wait-for", "--namespace", "--timeout", "--shutdown-timeout"})
+    if not positional:  # argparse refuses it: no controller named
+        return None
+    namespace = values.get("--namespace", "")
+    if namespace and not namespace.endswith("/"):
+        namespace += "/"
+    calls = [PrimitiveCall("client", f"{namespace}controller_manager/{verb}_controller",
+                           f"controller_manager_msgs/{verb.capitalize()}Controller",
+                           location=decl.location, origin="arguments")
+             for verb in ("load", "switch", "unload")]
+    if values.get("--wait-for"):
+        calls.append(PrimitiveCall("subscribe", values["--wait-for"], "std_msgs/Bool",
+                                   location=decl.location, origin="arguments"))
+    calls.append(PrimitiveCall("read", "/use_sim_time", location=decl.location,
+                               origin="arguments"))
+    node = _node(decl, "controller_manager", calls[0], "python")
+    node.calls = calls
+    return node
 
 
 def _topic_tools(decl: NodeDecl, words: list[str]) -> Node | None:
