@@ -423,3 +423,30 @@ def test_a_ros1_spawner_calls_the_controller_manager_of_its_namespace_argument(w
         ("client", "/arm/controller_manager/switch_controller"),
         ("client", "/arm/controller_manager/unload_controller"),
         ("subscribe", "/ready")]
+
+
+def test_ros2_topic_tools_take_their_topics_from_their_parameters(write_tree):
+    root = write_tree({
+        "src/base/package.xml": _package_xml("base"),
+        "src/base/launch/tools.launch.py": """
+            from launch import LaunchDescription
+            from launch_ros.actions import Node
+
+            def generate_launch_description():
+                return LaunchDescription([
+                    Node(package='topic_tools', executable='relay', name='relay',
+                         parameters=[{'input_topic': 'scan', 'output_topic': 'scan_out'}]),
+                    Node(package='topic_tools', executable='mux', name='mux',
+                         parameters=[{'input_topics': ['nav_vel', 'joy_vel']}]),
+                ])
+            """,
+        "project.yaml": "project: p\nconfigurations:\n  c: [base/launch/tools.launch.py]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {}, Options(cache_dir=None, jobs=1))
+    (config,) = model.configurations
+    relay, mux = _instance(config, "/relay"), _instance(config, "/mux")
+    assert ([link.name for link in relay.subscribers], [link.name for link in relay.publishers]
+            ) == (["/scan"], ["/scan_out"])
+    assert (sorted(link.name for link in mux.subscribers),
+            [link.name for link in mux.publishers]) == (["/joy_vel", "/nav_vel"],
+                                                        ["/mux/selected"])

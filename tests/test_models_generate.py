@@ -205,3 +205,19 @@ def test_an_override_entry_that_mixes_each_and_numbered_is_refused(tmp_path):
     problems = build_package(task).override_problems
     assert len(problems) == 2 and "tiny_driver/scripts/nowhere" in problems[0]
     assert "names no call" in problems[1]
+
+
+def test_an_override_names_a_call_by_the_value_of_a_parameter_with_a_default(tmp_path):
+    folder = tmp_path / "noetic"
+    folder.mkdir()
+    (folder / "tiny_driver.yaml").write_text(
+        "nodes:\n  tiny_driver/relay:\n    names:\n"
+        "      - {calls: tiny_driver/scripts/relay:8, name: '?', param: ~input,"
+        " default: chatter}\n")
+    (task,) = tasks(read_list(LIST), SOURCES, str(tmp_path), cache_dir=None)
+    outcome = build_package(task)
+    subscribe = next(c for c in from_document(json.loads(outcome.text)).node("relay").calls
+                     if c.kind == "subscribe")
+    assert (subscribe.name_param, subscribe.name_default, subscribe.name_each) == (
+        "~input", "chatter", None)
+    assert outcome.override_problems == []

@@ -327,21 +327,27 @@ def _override_names(node: Node, entries: Any, relative: str,
     """``names: [{calls: file:line, param: ~topics, each: topic}]``: the calls made at
     ``calls`` are named by the field ``each`` of every element of the list parameter
     ``param`` (a name the code reads through a helper the extractor cannot follow);
+    without ``each``, by the value of ``param`` (``default:`` the code's default);
     ``numbered: true`` instead of ``each``: by each parameter ``param0``, ``param1``, ...
     (robot_localization's ``imu0``); ``name``: the name as the code writes it, where the
     extractor could not tell (``?`` for the parameter's value alone)."""
     for entry in entries if isinstance(entries, list) else []:
+        if not isinstance(entry, dict):
+            entry = {}
         param, each, name = entry.get("param"), entry.get("each"), entry.get("name")
-        numbered = entry.get("numbered") is True
-        usable = (isinstance(param, str) and (isinstance(each, str) != numbered)) or (
-            param is None and each is None and not numbered and isinstance(name, str))
-        for call in _calls_at(node, entry, relative, found,
-                              usable and (name is None or isinstance(name, str))):
+        default, numbered = entry.get("default"), entry.get("numbered") is True
+        if param is not None:  # named by the parameter's value, elements or family
+            usable = isinstance(param, str) and (
+                each is None or (isinstance(each, str) and not numbered))
+        else:  # only the name as the code writes it
+            usable = each is None and not numbered and isinstance(name, str)
+        usable = usable and all(v is None or isinstance(v, str) for v in (name, default))
+        for call in _calls_at(node, entry, relative, found, usable):
             if isinstance(name, str):
                 call.name, call.handle_namespace = name, None
             if isinstance(param, str):
-                call.name_param, call.name_default = param, None
-                call.name_each = NUMBERED if numbered else str(each)
+                call.name_param, call.name_default = param, default
+                call.name_each = NUMBERED if numbered else each
 
 
 def _calls_at(node: Node, entry: Any, relative: str, found: list[Diagnostic],
