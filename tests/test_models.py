@@ -450,3 +450,31 @@ def test_ros2_topic_tools_take_their_topics_from_their_parameters(write_tree):
     assert (sorted(link.name for link in mux.subscribers),
             [link.name for link in mux.publishers]) == (["/joy_vel", "/nav_vel"],
                                                         ["/mux/selected"])
+
+
+def test_a_modelled_node_launched_without_name_takes_its_section_of_a_parameter_file(
+        write_tree):
+    root = write_tree({
+        "src/base/package.xml": _package_xml("base"),
+        "src/base/config/ekf.yaml": "ekf_filter_node:\n  ros__parameters:\n"
+                                    "    imu0: imu/data\n    odom0: wheel/odom\n"
+                                    "other_node:\n  ros__parameters:\n    imu0: nowhere\n",
+        "src/base/launch/ekf.launch.py": """
+            import os
+            from launch import LaunchDescription
+            from launch_ros.actions import Node
+
+            def generate_launch_description():
+                here = os.path.dirname(os.path.abspath(__file__))
+                return LaunchDescription([
+                    Node(package='robot_localization', executable='ekf_node',
+                         parameters=[os.path.join(here, '..', 'config', 'ekf.yaml')]),
+                ])
+            """,
+        "project.yaml": "project: p\nconfigurations:\n  c: [base/launch/ekf.launch.py]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {}, Options(cache_dir=None, jobs=1))
+    (config,) = model.configurations
+    ekf = _instance(config, "/ekf_filter_node")  # the name its code (and model) gives it
+    names = {link.name for link in ekf.subscribers}
+    assert {"/imu/data", "/wheel/odom"} <= names and "/nowhere" not in names
