@@ -31,6 +31,13 @@ def _analyse(project_file: str = "project.yaml", env: dict | None = None,
     return model, config
 
 
+def _configuration(root):
+    """The one configuration of the project file at ``root``, analysed."""
+    model = analyse(load(str(root / "project.yaml")), {}, Options(cache_dir=None, jobs=1))
+    (config,) = model.configurations
+    return config
+
+
 def _instance(config, name):
     return next(n for n in config.nodes if n.name == name)
 
@@ -200,8 +207,7 @@ def test_a_ros2_system_takes_the_jazzy_model_named_as_its_code_names_itself(writ
             """,
         "project.yaml": "project: p\nconfigurations:\n  c: [arm/launch/arm.launch.py]\n",
     })
-    model = analyse(load(str(root / "project.yaml")), {}, Options(cache_dir=None, jobs=1))
-    (config,) = model.configurations
+    config = _configuration(root)
     jsp = _instance(config, "/joint_state_publisher")
     assert jsp.completeness == "model" and jsp.node.model.startswith("jazzy/")
     topic = next(t for t in config.topics if t.name == "/joint_states")
@@ -267,8 +273,7 @@ def test_a_nodelet_of_a_package_without_source_takes_its_model(write_tree):
             """,
         "project.yaml": "project: p\nconfigurations:\n  c: [cam/launch/cam.launch]\n",
     })
-    model = analyse(load(str(root / "project.yaml")), {}, Options(cache_dir=None, jobs=1))
-    (config,) = model.configurations
+    config = _configuration(root)
     rectify = _instance(config, "/rectify")
     assert rectify.node is not None and rectify.node.model.startswith("noetic/image_proc ")
     assert {(link.kind, link.name) for link in rectify.links} >= {
@@ -292,8 +297,7 @@ def test_ros2_list_names_come_from_the_parameters_under_a_prefix(write_tree):
             """,
         "project.yaml": "project: p\nconfigurations:\n  c: [base/launch/mux.launch.py]\n",
     })
-    model = analyse(load(str(root / "project.yaml")), {}, Options(cache_dir=None, jobs=1))
-    (config,) = model.configurations
+    config = _configuration(root)
     mux = _instance(config, "/twist_mux")
     assert mux.node.model.startswith("jazzy/twist_mux ")
     assert sorted(link.name for link in mux.subscribers
@@ -350,8 +354,7 @@ def test_names_from_a_numbered_family_of_parameters_come_from_launch_and_yaml(wr
         "project.yaml": "project: p\nmodels: [models]\n"
                         "configurations:\n  c: [robot/launch/ekf.launch]\n",
     })
-    model = analyse(load(str(root / "project.yaml")), {}, Options(cache_dir=None, jobs=1))
-    (config,) = model.configurations
+    config = _configuration(root)
     ekf = _instance(config, "/ekf")
     # imu0, imu1 and odom0 are set; imu3 is not read (imu2 is not set); twist0 is not set
     assert sorted(link.name for link in ekf.subscribers) == [
@@ -382,8 +385,7 @@ def test_topic_tools_nodes_take_their_topics_from_their_arguments(write_tree):
             """,
         "project.yaml": "project: p\nconfigurations:\n  c: [robot/launch/tools.launch]\n",
     })
-    model = analyse(load(str(root / "project.yaml")), {}, Options(cache_dir=None, jobs=1))
-    (config,) = model.configurations
+    config = _configuration(root)
 
     def sides(name):
         node = _instance(config, name)
@@ -414,8 +416,7 @@ def test_a_ros1_spawner_calls_the_controller_manager_of_its_namespace_argument(w
             """,
         "project.yaml": "project: p\nconfigurations:\n  c: [robot/launch/control.launch]\n",
     })
-    model = analyse(load(str(root / "project.yaml")), {}, Options(cache_dir=None, jobs=1))
-    (config,) = model.configurations
+    config = _configuration(root)
     spawner = _instance(config, "/spawner")
     assert sorted((link.kind, link.name) for link in spawner.links
                   if link.kind in ("client", "subscribe")) == [
@@ -442,8 +443,7 @@ def test_ros2_topic_tools_take_their_topics_from_their_parameters(write_tree):
             """,
         "project.yaml": "project: p\nconfigurations:\n  c: [base/launch/tools.launch.py]\n",
     })
-    model = analyse(load(str(root / "project.yaml")), {}, Options(cache_dir=None, jobs=1))
-    (config,) = model.configurations
+    config = _configuration(root)
     relay, mux = _instance(config, "/relay"), _instance(config, "/mux")
     assert ([link.name for link in relay.subscribers], [link.name for link in relay.publishers]
             ) == (["/scan"], ["/scan_out"])
@@ -473,8 +473,7 @@ def test_a_modelled_node_launched_without_name_takes_its_section_of_a_parameter_
             """,
         "project.yaml": "project: p\nconfigurations:\n  c: [base/launch/ekf.launch.py]\n",
     })
-    model = analyse(load(str(root / "project.yaml")), {}, Options(cache_dir=None, jobs=1))
-    (config,) = model.configurations
+    config = _configuration(root)
     ekf = _instance(config, "/ekf_filter_node")  # the name its code (and model) gives it
     names = {link.name for link in ekf.subscribers}
     assert {"/imu/data", "/wheel/odom"} <= names and "/nowhere" not in names
