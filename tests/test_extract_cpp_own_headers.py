@@ -75,3 +75,34 @@ def test_a_package_whose_api_the_extractor_knows_keeps_the_stand_ins_first(write
         assert str(root / "tf2_ros" / "include") not in setup.arguments(False, echo)[:2]
     finally:
         setup.close()
+
+
+EXPORTED = """
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+#include "teleop/teleop_export.h"
+namespace teleop {
+class TELEOP_EXPORT Teleop : public rclcpp::Node {
+public:
+  Teleop() : rclcpp::Node("teleop") {
+    pub_ = create_publisher<std_msgs::msg::String>("cmd", 10);
+  }
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+};
+}
+int main() {
+  auto node = std::make_shared<teleop::Teleop>();
+  return 0;
+}
+"""
+
+
+def test_a_generated_export_header_defines_its_macros(write_tree) -> None:
+    root = write_tree({
+        "teleop/package.xml": package_xml("teleop", "ament_cmake"),
+        "teleop/src/teleop.cpp": EXPORTED,
+    })
+    main = root / "teleop" / "src" / "teleop.cpp"
+    result = extract_cpp([str(main)], scan([str(root)]), cache_dir=None)
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "cmd")]
+    assert not [d for d in result.diagnostics if d.code == "CPP_INCLUDE_MISSING"]

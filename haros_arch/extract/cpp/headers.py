@@ -15,7 +15,9 @@ resolved the way the preprocessor will, and:
   needs to be installed; the stand-ins are precompiled once per process (a PCH), which
   brings a translation unit down to a few milliseconds;
 - any other header that is not found becomes an empty header and a
-  ``CPP_INCLUDE_MISSING`` diagnostic;
+  ``CPP_INCLUDE_MISSING`` diagnostic, except ``<name>_export.h``, which CMake's
+  generate_export_header writes at build time: it defines ``NAME_EXPORT`` and its
+  siblings empty;
 - a package's own headers win over the stand-ins: a unit of a package our stand-ins also
   provide (rclcpp_components, bondcpp, class_loader, ...) is parsed with the package's
   ``include`` folder first and without the precompiled stand-ins (whose classes its own
@@ -93,6 +95,12 @@ _STANDIN_PACKAGES = frozenset({p.rstrip("/") for p in SHADOWED} | {
     f for f in os.listdir(STANDIN) if os.path.isdir(os.path.join(STANDIN, f))}) - {
     "std", *(row[0].split("::")[0] for table in (api.ROSCPP, api.LIBRARIES, api.RCLCPP,
                                                  api.RCLCPP_LIBRARIES) for row in table)}
+
+# ``<name>_export.h`` from CMake's generate_export_header (not in the source tree): its
+# macros, defined empty, as for a static build
+_EXPORT_HEADER = re.compile(r"([A-Za-z_]\w*)_export\.hp?p?")
+_EXPORT_MACROS = ("EXPORT", "NO_EXPORT", "DEPRECATED", "DEPRECATED_EXPORT",
+                  "DEPRECATED_NO_EXPORT")
 
 _ROS_PREFIXES = ("ros/", "boost/", "tf/", "rclcpp", "rmw/", "tf2", "image_transport/",
                  "message_filters/", "actionlib/", "nodelet/", "pluginlib/")
@@ -394,6 +402,13 @@ class IncludeSetup:
 
     def _empty(self, header: str, where: Location) -> None:
         self._handled.add(header)
+        export = _EXPORT_HEADER.fullmatch(os.path.basename(header))
+        if export is not None:  # CMake's generate_export_header writes it at build time
+            name = export.group(1).upper()
+            self._write(header, f"// {header}, as CMake's generate_export_header writes "
+                                "it, created by haros_arch\n" + "".join(
+                                    f"#define {name}_{macro}\n" for macro in _EXPORT_MACROS))
+            return
         self._write(header, f"// empty stand-in for {header}, created by haros_arch\n")
         self.diagnostics.append(diag.make("CPP_INCLUDE_MISSING", where, header=header))
 
