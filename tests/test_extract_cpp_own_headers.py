@@ -80,9 +80,9 @@ def test_a_package_whose_api_the_extractor_knows_keeps_the_stand_ins_first(write
 EXPORTED = """
 #include <rclcpp/rclcpp.hpp>
 #include <std_msgs/msg/string.hpp>
-#include "teleop/teleop_export.h"
+#include "teleop/Teleop_export.h"
 namespace teleop {
-class TELEOP_EXPORT Teleop : public rclcpp::Node {
+class TELEOP_EXPORT Teleop : public rclcpp::Node {  // Teleop_export.h is no message
 public:
   Teleop() : rclcpp::Node("teleop") {
     pub_ = create_publisher<std_msgs::msg::String>("cmd", 10);

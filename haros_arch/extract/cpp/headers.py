@@ -246,6 +246,9 @@ class IncludeSetup:
         ):
             self._handled.add(header)  # sensor_msgs/image_encodings.h
             return None
+        if _EXPORT_HEADER.fullmatch(os.path.basename(header)) and self._resolve(header) is None:
+            self._empty(header, where)  # CMake's export header, not a message's
+            return None
         message = _MESSAGE_HEADER.fullmatch(header)
         if message is not None and self._message(
             header, message.group(1), message.group(2), where
