@@ -209,3 +209,25 @@ def test_an_override_names_a_call_by_the_value_of_a_parameter_with_a_default(tmp
     assert (subscribe.name_param, subscribe.name_default, subscribe.name_each) == (
         "~input", "chatter", None)
     assert outcome.override_problems == []
+
+
+def test_an_override_puts_the_calls_of_an_unknown_handle_in_a_namespace():
+    from haros_arch.model.location import Location
+    from haros_arch.model.source import Node, PrimitiveCall
+    from haros_arch.models.generate import _override_handles
+
+    def call(kind, name, file="src/f.cpp"):
+        return PrimitiveCall(kind, name, location=Location("p", file, 3),
+                             handle_namespace="?" if name.startswith("?/") else None)
+
+    node = Node("p", "filter", calls=[call("read", "?/rate"), call("read", "/global"),
+                                       call("publish", "?/out"),
+                                       call("read", "?/other", "src/g.cpp")])
+    found: list = []
+    _override_handles(node, [{"file": "src/f.cpp", "kinds": ["read"], "namespace": "~"},
+                             {"file": "src/none.cpp", "kinds": ["read"], "namespace": "~"}],
+                      "noetic/p.yaml", found)
+    assert [(c.name, c.origin) for c in node.calls] == [
+        ("~rate", "override"), ("/global", "source"), ("?/out", "source"),
+        ("?/other", "source")]
+    assert [d.code for d in found] == ["HINT_INVALID"]

@@ -54,7 +54,7 @@ REPOSITORY = re.compile(r"^github:[A-Za-z0-9_.-]+/[A-Za-z0-9_.-]+$")
 # extractor took as unconditional under the condition that guards them, name calls by
 # the elements of a list parameter or a numbered family of parameters, and drop the
 # calls of source files the node links but never runs (a library's other classes)
-OVERRIDE_KEYS = ("complete", "partial", "conditions", "names", "drop")
+OVERRIDE_KEYS = ("complete", "partial", "conditions", "names", "drop", "handles")
 
 
 class ListError(ValueError):
@@ -278,6 +278,7 @@ def _apply_override(task: Task, nodes: list[Node], found: list[Diagnostic]) -> s
         if isinstance(block, dict) and isinstance(block.get("rosname"), str):
             node.rosnames = []  # the one ROS node the override names
         if isinstance(block, dict):
+            _override_handles(node, block.get("handles"), relative, found)
             _override_drop(node, block.get("drop"), relative, found)
             _override_conditions(node, block.get("conditions"), relative, found)
             _override_names(node, block.get("names"), relative, found)
@@ -303,6 +304,28 @@ def _override_conditions(node: Node, entries: Any, relative: str,
                               isinstance(text, str) and at is not None):
             where = Location(node.package, at[0], at[1]) if at else Location()
             call.conditions = (*call.conditions, Condition(str(text), "source", "if", where))
+
+
+def _override_handles(node: Node, entries: Any, relative: str,
+                      found: list[Diagnostic]) -> None:
+    """``handles: [{file: F, kinds: [read], namespace: "~"}]``: the calls of those kinds
+    made in F whose handle the extractor could not tell (names ``?/x``, a NodeHandle a
+    constructor takes) are made on a handle of that namespace (``~x``; ``ns/x``)."""
+    for entry in entries if isinstance(entries, list) else []:
+        fields = entry if isinstance(entry, dict) else {}
+        file, kinds, namespace = fields.get("file"), fields.get("kinds"), fields.get(
+            "namespace")
+        hit = [c for c in node.calls if c.location.file == file and c.kind in kinds
+               and c.name.startswith(UNKNOWN_MARK + "/")] if isinstance(kinds, list) else []
+        if not hit or not isinstance(namespace, str):
+            found.append(diag.make("HINT_INVALID", Location(file=relative), detail=(
+                f"{node.name}: handles entry {entry!r} names no call of the node")))
+            continue
+        for call in hit:
+            rest = call.name[len(UNKNOWN_MARK) + 1:]
+            call.name = namespace + rest if namespace.endswith(("~", "/")) else (
+                f"{namespace}/{rest}" if namespace else rest)
+            call.handle_namespace, call.origin = None, "override"
 
 
 def _override_drop(node: Node, files: Any, relative: str, found: list[Diagnostic]) -> None:
