@@ -34,6 +34,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.dirname(HERE))
 
 from haros_arch import cmake  # noqa: E402
+from haros_arch.extract import completeness  # noqa: E402
 from haros_arch.extract.cpp import extract_cpp_nodes  # noqa: E402
 from haros_arch.workspace import scan  # noqa: E402
 
@@ -168,11 +169,21 @@ def census(spec: str, jobs: int, timing: bool) -> None:
                          if unit_errors else f"clean unit: {form}")
                 causes[cause] += 1
                 missed.append(f"{rel}:{line} {category} ({cause})")
+    by_unit = dict(zip(units, batch.results, strict=True))
+    states: collections.Counter[str] = collections.Counter()
+    for node in nodes:  # each node's completeness from the diagnostics of its units
+        found = [*batch.diagnostics, *(d for s in node.sources
+                                       for d in getattr(by_unit.get(
+                                           os.path.join(workspace.root, s)), "diagnostics", ()))]
+        node.completeness, node.completeness_reasons = "complete", []
+        completeness(node, found)
+        states[node.completeness] += 1
     hit = sum(v[0] for v in per_kind.values())
     total = sum(v[1] for v in per_kind.values())
     print(f"== {os.path.basename(root)}{':' + only if only else ''}: {len(nodes)} C++ nodes, "
           f"{len(units)} units; call sites {hit}/{total} = {100 * hit / max(total, 1):.0f}%")
     print("   by kind: " + ", ".join(f"{k} {v[0]}/{v[1]}" for k, v in sorted(per_kind.items())))
+    print("   nodes: " + ", ".join(f"{k} {v}" for k, v in sorted(states.items())))
     print(f"   clang errors: {before_after[0]} before synthesis in {before_after[2]} units, "
           f"{before_after[1]} after in {before_after[3]} units")
     print(f"   cold extraction {elapsed:.1f} s CPU, {1000 * elapsed / max(len(units), 1):.0f} ms "

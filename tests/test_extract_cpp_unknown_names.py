@@ -3,6 +3,7 @@ fixtures/cpp/unknown_names."""
 
 from __future__ import annotations
 
+import json
 import os
 
 import pytest
@@ -192,3 +193,56 @@ def test_rclcpp_free_factories() -> None:
         ("subscribe", "in", "std_msgs/msg/String", 4),
         ("subscribe", "in_too", "std_msgs/msg/String", None)]
     assert "CPP_PARSE_ERROR" not in codes(result)
+
+
+def _errors_where(tmp_path, *defines: str) -> tuple[CppResult, Node]:
+    """errors_where.cpp extracted as a node, built with ``defines``."""
+    source = os.path.join(SOURCES, "errors_where.cpp")
+    commands = tmp_path / "compile_commands.json"
+    commands.write_text(json.dumps([{
+        "directory": str(tmp_path), "file": source,
+        "arguments": ["c++", *(f"-D{d}" for d in defines), "-c", source]}]))
+    workspace = scan([ROOT])
+    node = Node("vendor_node", "talker", sources=[workspace.relpath(source)])
+    found = extract_nodes([node], workspace, cache_dir=None, jobs=1,
+                          compile_commands=[str(commands)])
+    return CppResult(node.calls, diagnostics=found), node
+
+
+def test_an_error_in_code_that_calls_no_ros_api_leaves_the_node_complete(tmp_path) -> None:
+    result, node = _errors_where(tmp_path)
+    assert rows(result) == [("publish", "out", "std_msgs/msg/String", 21)]
+    assert ("CPP_PARSE_ERROR", 10) in [(d.code, d.location.line) for d in result.diagnostics]
+    # the call site under an #ifdef the build does not take is no missed call
+    assert (node.completeness, node.completeness_reasons) == ("complete", [])
+    assert "CPP_NODE_PARTIAL" not in codes(result)
+
+
+def test_an_error_inside_a_function_that_calls_the_api_makes_the_node_partial(
+        tmp_path) -> None:
+    result, node = _errors_where(tmp_path, "NEAR_CALL")
+    assert node.completeness == "partial"
+    where = "src/vendor_node/src/errors_where.cpp:33: "
+    assert node.completeness_reasons == [
+        where + 'pub_ = create_publisher<std_msgs::msg::String>("restart", 10 +); calls '
+        "the ROS API, but no call was extracted there",
+        where + "C++ error in restart (lines 31-34), which calls the ROS API: expected "
+        "expression"]
+    assert codes(result).count("CPP_NODE_PARTIAL") == 1
+
+
+def test_a_call_site_with_no_call_extracted_is_a_reason() -> None:
+    from haros_arch.extract.cpp import recall
+
+    text = ("void f(ros::NodeHandle & nh) {\n"
+            "  // nh.subscribe(\"commented\", 1, cb);\n"
+            "  pub_ = nh.advertise<nav_msgs::Odometry>(\"odometry/filtered\", 20);\n"
+            "  /* a->create_publisher<T>(\"old\", 1); */ auto p = declare_parameter<int>(\"n\");\n"
+            "void Base::create_publisher(const std::string & name) {\n"
+            "  subs_.push_back(nh_.subscribe<sensor_msgs::Imu>(\n"
+            "      imu_topic, 10, cb));\n"
+            "  helper->make_pub(\"x\");\n"
+            "}\n")
+    sites = recall.call_sites(text, ["make_pub"])
+    assert [s.line for s in sites] == [3, 4, 6, 8]  # no comment, no definition
+    assert [s.line for s in recall.missed(sites, {3}, [(8, 8)])] == [6]

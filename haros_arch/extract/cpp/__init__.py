@@ -16,7 +16,7 @@ from collections.abc import Callable, Sequence
 from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
 
-from clang.cindex import Cursor, TranslationUnit, TranslationUnitLoadError
+from clang.cindex import Cursor, CursorKind, TranslationUnit, TranslationUnitLoadError
 from clang.cindex import Diagnostic as ClangDiagnostic
 
 from ... import diagnostics as diag
@@ -26,7 +26,7 @@ from ...manifest import ros_version
 from ...model.location import Location
 from ...model.source import PrimitiveCall
 from ...workspace import Workspace
-from . import cache, links, synthesis, toolchain
+from . import cache, links, recall, synthesis, toolchain
 from . import compile_commands as commands
 from .headers import STANDIN, IncludeSetup
 from .visitor import CallFinder
@@ -334,6 +334,7 @@ def _translation_unit(path: str, text: str, ros2: bool,
     result.calls = sorted(finder.calls, key=lambda c: (
         c.location.file or "", c.location.line, c.location.column))
     result.diagnostics.extend(finder.diagnostics)
+    result.diagnostics.extend(_hidden(path, errors, finder, source, fieldless, workspace))
     result.diagnostics[:0] = setup.diagnostics[before:]
     result.rosname = finder.rosname
     result.facts = finder.facts
@@ -347,6 +348,61 @@ def _translation_unit(path: str, text: str, ros2: bool,
         ):
             headers.append(name)
     return result, sorted(set(headers))
+
+
+def _hidden(path: str, errors: list[ClangDiagnostic], finder: CallFinder,
+            source: SourceCache, fieldless: set[str], workspace: Workspace
+            ) -> list[Diagnostic]:
+    """Where the errors left can hide a ROS call (``recall``): the API call sites of the
+    unit's source and of the workspace headers with errors that have no call extracted
+    near them (nor a call of the same name the parse resolved to another function), and
+    the errors inside a function that holds such a site. None in a unit without
+    errors: there the parse read every call, and the walk judged each."""
+    errors = [e for e in errors if not _names_fieldless_type(e.spelling, fieldless)]
+    if not errors:
+        return []
+    files = dict.fromkeys([path, *(os.path.abspath(e.location.file.name) for e in errors)])
+    functions: dict[str, list[recall.Function]] = {}
+    silent: dict[str, list[tuple[int, int]]] = {}
+    for function in finder.functions:
+        start, end = function.extent.start, function.extent.end
+        if start.file is None:
+            continue
+        name = os.path.abspath(start.file.name)
+        functions.setdefault(name, []).append((start.line, end.line, function.spelling))
+        if function.kind != CursorKind.FIELD_DECL and finder.wrappers.silent(function):
+            silent.setdefault(name, []).append((start.line, end.line))
+    lines: dict[str | None, set[int]] = {}
+    for call in finder.calls:
+        lines.setdefault(call.location.file, set()).add(call.location.line)
+    for name, line in finder.resolved:
+        lines.setdefault(workspace.relpath(name), set()).add(line)
+    for name, ranges in recall.skipped_lines(finder.tu).items():
+        silent.setdefault(name, []).extend(ranges)  # no code of this build
+    wrappers = sorted(n for n in finder.wrappers.names if n)
+    found: list[Diagnostic] = []
+    for name in files:
+        data = source.get(name)
+        if data is None:
+            continue
+        sites = recall.call_sites(data.decode("utf-8", "replace"), wrappers)
+        if not sites:
+            continue
+        relative = workspace.relpath(name)
+        for site in recall.missed(sites, lines.get(relative, set()), silent.get(name, ())):
+            found.append(diag.make("CPP_CALL_MISSED", workspace.location(name, site.line),
+                                   text=site.text))
+        for error in errors:
+            loc = error.location
+            if os.path.abspath(loc.file.name) != name:
+                continue
+            around = recall.holding(loc.line, functions.get(name, ()), sites)
+            if around is not None:
+                found.append(diag.make(
+                    "CPP_ERROR_NEAR_CALL", workspace.location(name, loc.line, loc.column),
+                    function=around[2], start=around[0], end=around[1],
+                    detail=error.spelling))
+    return found[:recall.MAX_REASONS]
 
 
 def _parse(path: str, text: str, setup: IncludeSetup, workspace: Workspace,

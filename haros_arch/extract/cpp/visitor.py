@@ -76,6 +76,9 @@ class CallFinder:
         self._declared: dict[str, str] = {}  # ROS 2 parameter -> its declared default
         self.calls: list[PrimitiveCall] = []
         self.functions: list[Cursor] = []
+        # (file, line) of the calls of an API function's name that the parse resolved,
+        # ROS or not (``set_parameters`` of a parameter client): read, so not hidden
+        self.resolved: set[tuple[str, int]] = set()
         self.sites: CallSites | None = None
         self._scope: Scope | None = None  # of the function being walked
         self.rosname: str | None = None
@@ -137,6 +140,8 @@ class CallFinder:
                 node.spelling in _API_NAMES or node.spelling in self.wrappers.names
             ):
                 self._call(node, conditions, scope)
+                if node.referenced is not None and node.location.file is not None:
+                    self.resolved.add((node.location.file.name, node.location.line))
             elif node.kind in (CursorKind.UNEXPOSED_EXPR, CursorKind.CALL_EXPR) and (
                 not node.spelling and _recovered_name(node) in self._unresolved_rows()
             ):

@@ -139,6 +139,12 @@ class Wrappers:
         if self.names:
             self.names |= {""}  # a call that depends on a template parameter
 
+    def silent(self, function: Cursor) -> bool:
+        """Whether the calls inside ``function`` are emitted where it is called, not
+        where they are written (a wrapper whose callers are in this unit)."""
+        key = _key(function.canonical)
+        return key in self.summaries and key not in self._kept
+
     def _summarise(self, function: Cursor, key: Key, call: Cursor) -> bool:
         added = False
         for wrapper, args, cls, callee in self._inner_rows(call):
