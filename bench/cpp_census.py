@@ -171,6 +171,13 @@ def census(spec: str, jobs: int, timing: bool) -> None:
                 missed.append(f"{rel}:{line} {category} ({cause})")
     by_unit = dict(zip(units, batch.results, strict=True))
     states: collections.Counter[str] = collections.Counter()
+    hiding: collections.Counter[str] = collections.Counter()  # what makes nodes partial
+    for result in batch.results:
+        for item in result.diagnostics:
+            if item.code == "CPP_ERROR_NEAR_CALL":
+                hiding[_QUOTED.sub("…", item.message.split(": ", 1)[-1])[:80]] += 1
+            elif item.code == "CPP_CALL_MISSED":
+                hiding["call site with no call extracted"] += 1
     for node in nodes:  # each node's completeness from the diagnostics of its units
         found = [*batch.diagnostics, *(d for s in node.sources
                                        for d in getattr(by_unit.get(
@@ -184,6 +191,8 @@ def census(spec: str, jobs: int, timing: bool) -> None:
           f"{len(units)} units; call sites {hit}/{total} = {100 * hit / max(total, 1):.0f}%")
     print("   by kind: " + ", ".join(f"{k} {v[0]}/{v[1]}" for k, v in sorted(per_kind.items())))
     print("   nodes: " + ", ".join(f"{k} {v}" for k, v in sorted(states.items())))
+    for reason, count in hiding.most_common(8):
+        print(f"   partial {count:4}  {reason}")
     print(f"   clang errors: {before_after[0]} before synthesis in {before_after[2]} units, "
           f"{before_after[1]} after in {before_after[3]} units")
     print(f"   cold extraction {elapsed:.1f} s CPU, {1000 * elapsed / max(len(units), 1):.0f} ms "

@@ -246,3 +246,28 @@ def test_a_call_site_with_no_call_extracted_is_a_reason() -> None:
     sites = recall.call_sites(text, ["make_pub"])
     assert [s.line for s in sites] == [3, 4, 6, 8]  # no comment, no definition
     assert [s.line for s in recall.missed(sites, {3}, [(8, 8)])] == [6]
+
+
+def test_fields_of_messages_known_only_by_name_leave_no_error() -> None:
+    result = extract("message_fields.cpp")
+    assert rows(result) == [
+        ("publish", "markers", "visualization_msgs/msg/Marker", 17),
+        ("subscribe", "tracks", "radar_msgs/msg/Track", 18),
+        ("declare", "limit", "double", 25),
+        ("server", "reset", "radar_msgs/srv/Reset", 26),
+    ]
+    # fields and constants (``Marker::SPHERE``) are declared on the message's struct; the
+    # unqualified ``Pose2`` of ``using namespace vendor_geometry`` is not ambiguous
+    assert [c for c in codes(result) if c in ("CPP_PARSE_ERROR", "CPP_MESSAGE_FIELD")] == []
+
+
+def test_fields_are_declared_static_on_the_record() -> None:
+    names = synthesis.Names(["radar_msgs"])
+    names.learn([("no member named 'position' in 'radar_msgs::Track'", None, 0),
+                 ("no member named 'SPHERE' in 'visualization_msgs::msg::Marker'", None, 0),
+                 ("no member named 'size' in 'mavros::router::Endpoint'", None, 0)])
+    header = names.header()
+    assert "#define HAROS_FIELDS_radar_msgs__Track static haros_any position;" in header
+    assert ("#define HAROS_FIELDS_visualization_msgs__msg__Marker static haros_any SPHERE;"
+            in header)
+    assert "Endpoint" not in header  # a class of the workspace is no message

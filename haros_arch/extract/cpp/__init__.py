@@ -457,7 +457,7 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
                 if d.location.file is not None and owned(d.location.file.name)]
 
     before = len(mine(tu))
-    names = synthesis.Names()
+    names = synthesis.Names(_fieldless_packages(setup.diagnostics))
     header = os.path.join(setup.generated, synthesis.HEADER_NAME)
     if synthesis.MAX_ROUNDS < 1 or not names.learn(_located(mine(tu), source)):
         return tu

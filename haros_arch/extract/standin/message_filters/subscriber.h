@@ -7,7 +7,7 @@
 #include <boost/shared_ptr.hpp>
 #include <boost/function.hpp>
 namespace message_filters {
-template<class M> class Subscriber {
+template<class M, class NodeType = void> class Subscriber {
 public:
   Subscriber();
   template<class N, class... A> Subscriber(N&& node, const std::string& topic, A&&... more);

@@ -16,6 +16,11 @@
   using SharedPtr = std::shared_ptr<T>; using ConstSharedPtr = std::shared_ptr<const T>; \
   using UniquePtr = std::unique_ptr<T>; using WeakPtr = std::weak_ptr<T>;
 #define RCLCPP_SMART_PTR_ALIASES_ONLY(T) RCLCPP_SMART_PTR_DEFINITIONS(T)
+#define RCLCPP_SMART_PTR_DEFINITIONS_NOT_COPYABLE(T) RCLCPP_SMART_PTR_DEFINITIONS(T)
+#define RCLCPP_SHARED_PTR_DEFINITIONS(T) \
+  using SharedPtr = std::shared_ptr<T>; using ConstSharedPtr = std::shared_ptr<const T>;
+#define RCLCPP_WEAK_PTR_DEFINITIONS(T) using WeakPtr = std::weak_ptr<T>;
+#define RCLCPP_UNIQUE_PTR_DEFINITIONS(T) using UniquePtr = std::unique_ptr<T>;
 #define RCLCPP_DISABLE_COPY(T)
 #define RCLCPP_PUBLIC
 #define RCLCPP_LOCAL
