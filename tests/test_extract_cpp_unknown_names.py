@@ -271,3 +271,13 @@ def test_fields_are_declared_static_on_the_record() -> None:
     assert ("#define HAROS_FIELDS_visualization_msgs__msg__Marker static haros_any SPHERE;"
             in header)
     assert "Endpoint" not in header  # a class of the workspace is no message
+
+
+def test_a_name_that_made_a_use_ambiguous_is_withdrawn() -> None:
+    names = synthesis.Names()
+    text = b"VerticeMap m;\n"
+    names.learn([("unknown type name 'VerticeMap'", text, 0)])
+    assert "struct VerticeMap : haros_any" in names.header()
+    # once the real typedef is valid, the declared name makes every use ambiguous
+    assert names.learn([("reference to 'VerticeMap' is ambiguous", text, 0)])
+    assert "VerticeMap" not in names.header()

@@ -54,6 +54,7 @@ _MESSAGES: tuple[tuple[re.Pattern[str], str], ...] = (
 )
 _MEMBER = re.compile(
     r"^no member named '(\w+)' in '(?:const )?(?:(?:struct|class) )?([\w:]+)(<.*>)?'")
+_AMBIGUOUS = re.compile(r"^reference to '(\w+)' is ambiguous")
 _RECORD = re.compile(r"[a-z]\w*(?:::\w+)+")  # a message's struct: ``pkg::msg::Name``
 _USING = re.compile(rb"\busing\s+namespace\s+(?:::)?([A-Za-z_][\w:]*)\s*;")
 
@@ -105,13 +106,16 @@ class Names:
         # by name (their synthesised struct opens a hook, ``interfaces.fields_hook``)
         self.fields: dict[str, set[str]] = {}
         self.using: set[str] = set()  # namespaces named by ``using namespace``
+        # unknown names that made a use ambiguous (the real declaration was invalid only
+        # until other names were declared): no longer declared
+        self.withdrawn: set[str] = set()
         self._read: set[int] = set()  # the files whose using-directives were read
         self.count = 0
 
     def learn(self, errors: Iterable[tuple[str, bytes | None, int]]) -> bool:
         """Read ``(message, source bytes of its file, byte offset)`` errors; True when a
         name was learnt that was not known before."""
-        before = (self.count, len(self.members))
+        before = (self.count, len(self.members), len(self.withdrawn))
         for message, text, offset in errors:
             if self.count >= MAX_NAMES:
                 break
@@ -119,9 +123,13 @@ class Names:
                 self._read.add(id(text))
                 self.using.update(m.decode() for m in _USING.findall(text))
             self._learn_one(message, text, offset)
-        return (self.count, len(self.members)) != before
+        return (self.count, len(self.members), len(self.withdrawn)) != before
 
     def _learn_one(self, message: str, text: bytes | None, offset: int) -> None:
+        ambiguous = _AMBIGUOUS.match(message)
+        if ambiguous is not None:
+            self.withdrawn.add(ambiguous.group(1))
+            return
         member = _MEMBER.match(message)
         if member is not None and "namespace" not in message:
             name, record = member.group(1), member.group(2)
@@ -208,7 +216,7 @@ class Names:
         hidden = self._found_by_using()
         for name, node in sorted(self.root.children.items()):
             if name not in hidden:
-                lines.extend(_render(name, node, "", nested=False))
+                lines.extend(_render(name, node, "", nested=False, withdrawn=self.withdrawn))
         return "\n".join(lines) + "\n"
 
     def _message(self, record: str) -> bool:
@@ -220,16 +228,22 @@ class Names:
     def _found_by_using(self) -> set[str]:
         """Unknown names used unqualified that a ``using namespace`` of a namespace
         declared here also gives (``Pose2`` and ``karto::Pose2`` after ``using namespace
-        karto``): declared once, in the namespace, or the unqualified use is ambiguous."""
+        karto``): declared once, in the namespace (with what was learnt of the
+        unqualified one), or the unqualified use is ambiguous."""
         found: set[str] = set()
-        for space in self.using:
+        for space in sorted(self.using):
             node: _Name | None = self.root
             for part in space.split("::"):
                 node = node.children.get(part) if node is not None else None
-            if node is not None:
-                found.update(n for n, child in node.children.items() if not child.known)
-        return {n for n in found if n in self.root.children
-                and not self.root.children[n].known and not self.root.children[n].children}
+            if node is None or node is self.root:
+                continue
+            for name, child in node.children.items():
+                top = self.root.children.get(name)
+                if child.known or top is None or top.known or name in found:
+                    continue
+                _merge(child, top)
+                found.add(name)
+        return found
 
     def first(self, limit: int = 5) -> list[str]:
         """The qualified names of the first few declared names."""
@@ -248,11 +262,23 @@ class Names:
         return bool(self.count or self.members or self.fields)
 
 
-def _render(name: str, node: _Name, indent: str, nested: bool) -> list[str]:
+def _merge(into: _Name, other: _Name) -> None:
+    into.uses |= other.uses
+    for name, child in other.children.items():
+        if name in into.children:
+            _merge(into.children[name], child)
+        else:
+            into.children[name] = child
+
+
+def _render(name: str, node: _Name, indent: str, nested: bool,
+            withdrawn: set[str] | frozenset[str] = frozenset()) -> list[str]:
+    if name in withdrawn and not node.known:
+        return []
     space = _is_namespace(node) and not nested
     inner: list[str] = []
     for child, sub in sorted(node.children.items()):
-        inner.extend(_render(child, sub, indent + "  ", nested=not space))
+        inner.extend(_render(child, sub, indent + "  ", nested=not space, withdrawn=withdrawn))
     if space:
         return [f"{indent}namespace {name} {{", *inner, f"{indent}}}"]
     if node.uses == {"value"}:
