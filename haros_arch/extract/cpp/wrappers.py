@@ -35,7 +35,15 @@ from . import api, msg_types
 from .call_types import template_argument
 from .handles import callback, callback_name, is_handle, join_name, qualified_name
 from .qos import qos as qos_of
-from .values import Parts, Scope, strip, written_arguments
+from .values import (
+    PLACEHOLDER,
+    SEPARATOR,
+    Parts,
+    Scope,
+    initializer,
+    strip,
+    written_arguments,
+)
 
 if TYPE_CHECKING:
     from .visitor import CallFinder
@@ -99,6 +107,10 @@ class Wrappers:
         # parameters and members (call_sites), and its calls stay where they are written
         functions = [f for f in finder.functions if _parameters(f)
                      and f.kind != CursorKind.CONSTRUCTOR]
+        # lambdas with parameters: a function may return one that passes a parameter
+        # on as a name (nav2 MPPI's ``getParamGetter(ns)``: ``getParam(x, "name", d)``)
+        functions += [lam for f in finder.functions for lam in _lambdas(f)
+                      if _parameters(lam)]
         # the calls that may be of the API or of a wrapper (by name; "" depends on a
         # template parameter)
         wanted = {"", *_API_NAMES, *(f.spelling for f in functions)}
@@ -134,8 +146,9 @@ class Wrappers:
                 and not sites.callers(function)
             ):
                 self._kept.add(key)  # ROS 1: callers in the node's other files (links)
-        self.names = frozenset(f.spelling for f in functions
-                               if _key(f.canonical) in self.summaries)
+        self.names = frozenset(
+            "operator()" if f.kind == CursorKind.LAMBDA_EXPR else f.spelling
+            for f in functions if _key(f.canonical) in self.summaries)
         if self.names:
             self.names |= {""}  # a call that depends on a template parameter
 
@@ -167,7 +180,7 @@ class Wrappers:
     def _inner_rows(self, call: Cursor) -> Iterator[
             tuple[Wrapper, list[Cursor], Cursor | None, Key | None]]:
         """The rows ``call`` matches: (row, its arguments, class, the wrapper called)."""
-        args = written_arguments(call)
+        args = _arguments(call)
         target = call.referenced
         if target is not None:
             callee = _key(target.canonical)
@@ -182,9 +195,17 @@ class Wrappers:
         if head is None:
             return
         if head.kind == CursorKind.MEMBER_REF_EXPR:
-            spec = DEPENDENT.get(_member_name(head))
+            name = _member_name(head)
+            spec = DEPENDENT.get(name)
             if spec is not None:
                 yield Wrapper(spec), args, None, None
+            # a method of the unit called on a dependent object (``this`` in a generic
+            # lambda: its overloads are named): the wrappers among them
+            for decl in _overloads(head):
+                callee = _key(decl.canonical)
+                if _fits(decl, args):
+                    for wrapper in self.summaries.get(callee, ()):
+                        yield wrapper, args, None, callee
             return
         for decl in _overloads(head):
             callee = _key(decl.canonical)
@@ -373,13 +394,19 @@ class Wrappers:
         if not wrappers:
             return False
         finder = self.finder
-        args = written_arguments(call)
+        args = _arguments(call)
+        bound = _made_with(call, scope)
+        done: set[tuple[object, ...]] = set()
         for wrapper in wrappers:
             row = wrapper.row
             if row.name_arg >= len(args):
                 continue
-            named = _NamedScope(scope, args[row.name_arg], wrapper.before, wrapper.after) if (
-                wrapper.before or wrapper.after) else scope
+            before, after = _bind(wrapper.before, bound), _bind(wrapper.after, bound)
+            if (row, before, after) in done:
+                continue  # two summaries that differ only in the value now bound
+            done.add((row, before, after))
+            named = _NamedScope(scope, args[row.name_arg], before, after) if (
+                before or after) else scope
             start = len(finder.calls)
             finder._emit(row, call, args, None, conditions, named)
             for made in finder.calls[start:]:
@@ -437,6 +464,12 @@ def _name_shape(expr: Cursor, params: list[Cursor], scope: Scope | None,
         value = scope.variable(decl) if scope is not None and decl is not None else None
         return _name_shape(value, params, scope, depth + 1) if value is not None else None
     operands: list[Cursor] = []
+    if kind == CursorKind.CONDITIONAL_OPERATOR:
+        # ``ns.empty() ? name : ns + "." + name``: the branch that keeps the most text
+        branches = [c for c in expr.get_children() if c.kind.is_expression()][1:]
+        shapes = [found for b in branches
+                  if (found := _name_shape(b, params, scope, depth + 1)) is not None]
+        return max(shapes, key=lambda f: len(f[0]) + len(f[2])) if shapes else None
     if kind == CursorKind.CALL_EXPR and expr.spelling == "operator+":
         operands = written_arguments(expr)
     elif kind == CursorKind.BINARY_OPERATOR and scope is not None:
@@ -558,10 +591,69 @@ def _targets(call: Cursor) -> list[Key]:
     return [_key(d.canonical) for d in _overloads(children[0])] if children else []
 
 
-def _calls(function: Cursor) -> Iterator[Cursor]:
+def _arguments(call: Cursor) -> list[Cursor]:
+    """A call's written arguments; of a call of a lambda (``getParam(x, "name")``, an
+    ``operator()`` call), without the lambda object clang lists first."""
+    args = written_arguments(call)
+    if call.spelling == "operator()" and args:
+        target = call.referenced
+        parent = target.semantic_parent if target is not None else None
+        if parent is not None and parent.spelling.startswith("(lambda at "):
+            return args[1:]
+    return args
+
+
+def _made_with(call: Cursor, scope: Scope) -> dict[str, Parts]:
+    """For a call of a lambda held in a variable that a function call made
+    (``auto getParam = handler->getParamGetter(ns)``), the placeholder part of each of
+    that function's parameters (``call_sites.placeholder``) and the value this site's
+    maker passes for it: the lambda's captures are that call's arguments."""
+    if call.spelling != "operator()":
+        return {}
+    objects = written_arguments(call)
+    held = strip(objects[0]) if objects else None
+    decl = held.referenced if held is not None and held.kind == CursorKind.DECL_REF_EXPR \
+        else None
+    made = initializer(decl) if decl is not None and decl.kind == CursorKind.VAR_DECL \
+        else None
+    made = strip(made) if made is not None else None
+    maker = made.referenced if made is not None and made.kind == CursorKind.CALL_EXPR \
+        else None
+    if maker is None:
+        return {}
+    usr = maker.canonical.get_usr()
+    return {f"{PLACEHOLDER}{usr}{SEPARATOR}{index}{PLACEHOLDER}": scope.string(arg)
+            for index, arg in enumerate(written_arguments(made))}
+
+
+def _bind(parts: Parts, bound: dict[str, Parts]) -> Parts:
+    if not bound:
+        return parts
+    found: list[str | None] = []
+    for part in parts:
+        found.extend(bound[part] if isinstance(part, str) and part in bound else (part,))
+    return tuple(found)
+
+
+def _lambdas(function: Cursor) -> Iterator[Cursor]:
+    if function.kind == CursorKind.FIELD_DECL:
+        return
     for node in function.walk_preorder():
+        if node.kind == CursorKind.LAMBDA_EXPR:
+            yield node
+
+
+def _calls(function: Cursor) -> Iterator[Cursor]:
+    """The calls in ``function``'s body, not those of the lambdas it makes (a lambda is
+    summarised on its own: its body runs when it is called, not where it is written)."""
+    stack = list(reversed(list(function.get_children())))
+    while stack:
+        node = stack.pop()
+        if node.kind == CursorKind.LAMBDA_EXPR:
+            continue
         if node.kind == CursorKind.CALL_EXPR:
             yield node
+        stack.extend(reversed(list(node.get_children())))
 
 
 def _dependent_name(name: str) -> bool:
