@@ -216,6 +216,9 @@ def test_an_error_in_code_that_calls_no_ros_api_leaves_the_node_complete(tmp_pat
     # the call site under an #ifdef the build does not take is no missed call
     assert (node.completeness, node.completeness_reasons) == ("complete", [])
     assert "CPP_NODE_PARTIAL" not in codes(result)
+    # no error can cost a call: the unknown names are not declared (no second parse)
+    assert "CPP_NAMES_DECLARED" not in codes(result)
+    assert ("CPP_PARSE_ERROR", 43) in [(d.code, d.location.line) for d in result.diagnostics]
 
 
 def test_an_error_inside_a_function_that_calls_the_api_makes_the_node_partial(
@@ -229,6 +232,7 @@ def test_an_error_inside_a_function_that_calls_the_api_makes_the_node_partial(
         where + "C++ error in restart (lines 31-34), which calls the ROS API: expected "
         "expression"]
     assert codes(result).count("CPP_NODE_PARTIAL") == 1
+    assert "CPP_NAMES_DECLARED" in codes(result)  # this error may hide one: parsed again
 
 
 def test_a_call_site_with_no_call_extracted_is_a_reason() -> None:

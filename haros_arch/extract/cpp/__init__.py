@@ -459,8 +459,10 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
     before = len(mine(tu))
     names = synthesis.Names(_fieldless_packages(setup.diagnostics))
     header = os.path.join(setup.generated, synthesis.HEADER_NAME)
-    if synthesis.MAX_ROUNDS < 1 or not names.learn(_located(mine(tu), source)):
-        return tu
+    if synthesis.MAX_ROUNDS < 1 or not _can_hide(tu, mine(tu), source) or not names.learn(
+        _located(mine(tu), source)
+    ):
+        return tu  # nothing to declare, or no error where it could cost a call
     # Errors come in waves: a class made valid shows its other members. With more than
     # one round, the next waves are looked for without function bodies (the names that
     # make a class invalid are in declarations); then the unit is parsed in full with
@@ -480,7 +482,8 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
             break
         if len(_errors(again)) < len(_errors(best)):
             best = again
-        if not names.learn(_located(mine(again), source)):
+        left = mine(again)
+        if not _can_hide(again, left, source) or not names.learn(_located(left, source)):
             break
     if best is tu:
         return tu  # declaring them made it no better: the parse as it was
@@ -489,6 +492,32 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
         "CPP_NAMES_DECLARED", workspace.location(path), count=names.count,
         names=", ".join(names.first()), before=before, after=len(mine(again))))
     return again
+
+
+def _can_hide(tu: TranslationUnit, errors: list[ClangDiagnostic],
+              source: SourceCache) -> bool:
+    """Whether any of ``errors`` can cost a call (``recall``): one outside every function
+    the unit defines (a declaration: it may make a class invalid, and every call in its
+    methods with it), or one inside a function whose text calls the ROS API. Errors
+    only inside functions that make no ROS call are left as they are: declaring the
+    names they miss would cost a parse and change no call."""
+    if not errors:
+        return False
+    files = {os.path.abspath(e.location.file.name) for e in errors}
+    functions = recall.definitions(tu, files)
+    sites: dict[str, list[recall.Site]] = {}
+    for error in errors:
+        name = os.path.abspath(error.location.file.name)
+        line = error.location.line
+        around = [f for f in functions.get(name, ()) if f[0] <= line <= f[1]]
+        if not around:
+            return True
+        if name not in sites:
+            data = source.get(name)
+            sites[name] = recall.call_sites(data.decode("utf-8", "replace")) if data else []
+        if recall.holding(line, around, sites[name]) is not None:
+            return True
+    return False
 
 
 def _located(errors: list[ClangDiagnostic],

@@ -111,6 +111,31 @@ def holding(line: int, functions: Iterable[Function], sites: Sequence[Site]
     return None
 
 
+def definitions(tu: TranslationUnit, files: set[str]) -> dict[str, list[Function]]:
+    """The functions the unit defines in ``files`` (absolute paths), per file, in
+    namespaces and classes at any depth: what ``holding`` looks in."""
+    from .visitor import CONTAINERS, FUNCTIONS
+
+    found: dict[str, list[Function]] = {}
+    stack = list(tu.cursor.get_children())
+    while stack:
+        cursor = stack.pop()
+        where = cursor.location.file
+        if where is None:
+            continue
+        name = os.path.abspath(where.name)
+        if name not in files:
+            continue  # a namespace or class opened in another file: its own cursor
+        kind = cursor.kind
+        if kind in FUNCTIONS and cursor.is_definition():
+            extent = cursor.extent
+            found.setdefault(name, []).append(
+                (extent.start.line, extent.end.line, cursor.spelling))
+        elif kind in CONTAINERS:
+            stack.extend(cursor.get_children())
+    return found
+
+
 class _RangeList(ctypes.Structure):
     _fields_ = [("count", ctypes.c_uint), ("ranges", ctypes.POINTER(SourceRange))]
 

@@ -103,10 +103,12 @@ class Wrappers:
 
     def build(self) -> None:
         finder = self.finder
-        # a constructor is no wrapper: the values its callers pass flow into its
-        # parameters and members (call_sites), and its calls stay where they are written
-        functions = [f for f in finder.functions if _parameters(f)
-                     and f.kind != CursorKind.CONSTRUCTOR]
+        # a constructor is no wrapper (the values its callers pass flow into its
+        # parameters and members, call_sites, and its calls stay where they are
+        # written), except one of a class template: the type of its call is the
+        # construction's (nav2's ServiceServer<ServiceT>(name, node, callback))
+        functions = [f for f in finder.functions if _parameters(f) and (
+            f.kind != CursorKind.CONSTRUCTOR or _of_class_template(f))]
         # lambdas with parameters: a function may return one that passes a parameter
         # on as a name (nav2 MPPI's ``getParamGetter(ns)``: ``getParam(x, "name", d)``)
         functions += [lam for f in finder.functions for lam in _lambdas(f)
@@ -158,6 +160,31 @@ class Wrappers:
         key = _key(function.canonical)
         return key in self.summaries and key not in self._kept
 
+    def _constructed(self, call: Cursor, args: list[Cursor]) -> list[Key]:
+        """The wrapper constructors ``std::make_shared<C>(args)`` may call (C a class
+        template of the unit whose constructor wraps the API), resolved or dependent."""
+        target = call.referenced
+        heads = [target] if target is not None else [
+            d for c in list(call.get_children())[:1] for d in _overloads(c)]
+        if not any((qualified_name(d.semantic_parent), d.spelling) in api.FACTORIES
+                   for d in heads):
+            return []
+        head = next(iter(call.get_children()), None)
+        classes = [c.referenced for c in (head.walk_preorder() if head is not None else ())
+                   if c.kind in (CursorKind.TEMPLATE_REF, CursorKind.TYPE_REF)
+                   and c.referenced is not None]
+        pattern = next((c for c in classes if c.kind == CursorKind.CLASS_TEMPLATE), None)
+        if pattern is None:
+            return []
+        found = []
+        for child in pattern.get_children():
+            key = _key(child.canonical)
+            if (child.kind == CursorKind.CONSTRUCTOR or (
+                child.kind == CursorKind.FUNCTION_TEMPLATE and _is_constructor(child)
+            )) and key in self.summaries and _fits(child, args):
+                found.append(key)
+        return found
+
     def _summarise(self, function: Cursor, key: Key, call: Cursor) -> bool:
         added = False
         for wrapper, args, cls, callee in self._inner_rows(call):
@@ -183,13 +210,16 @@ class Wrappers:
         args = _arguments(call)
         target = call.referenced
         if target is not None:
-            callee = _key(target.canonical)
-            for wrapper in self.summaries.get(callee, ()):
-                yield wrapper, args, None, callee
+            for callee in self._constructed(call, args) or [_key(target.canonical)]:
+                for wrapper in self.summaries.get(callee, ()):
+                    yield wrapper, args, None, callee
             spec, cls = self.finder._row(call)
             if spec is not None:
                 yield Wrapper(spec), args, cls, None
             return
+        for callee in self._constructed(call, args):
+            for wrapper in self.summaries.get(callee, ()):
+                yield wrapper, args, None, callee
         children = list(call.get_children())
         head = children[0] if children else None
         if head is None:
@@ -333,6 +363,11 @@ class Wrappers:
         fixed in the wrapper."""
         templates = [c for c in function.get_children()
                      if c.kind == CursorKind.TEMPLATE_TYPE_PARAMETER]
+        if _of_class_template(function) and _is_constructor(function):
+            # a constructor of a class template: the class's first parameter is what a
+            # construction's template argument gives (make_shared<Server<T>>)
+            templates = [c for c in function.semantic_parent.get_children()
+                         if c.kind == CursorKind.TEMPLATE_TYPE_PARAMETER]
         sources: list[str] = []
         type_arg: int | None = None
 
@@ -425,7 +460,8 @@ class Wrappers:
         """The wrappers ``call`` calls (through the overloads a dependent call names)."""
         target = call.referenced
         if target is not None:
-            return self.summaries.get(_key(target.canonical), [])
+            return [w for key in self._constructed(call, _arguments(call))
+                    or [_key(target.canonical)] for w in self.summaries.get(key, ())]
         children = list(call.get_children())
         args = written_arguments(call)
         for decl in _overloads(children[0]) if children else []:
@@ -570,8 +606,11 @@ def _fits(decl: Cursor, args: list[Cursor]) -> bool:
     """Whether overload ``decl`` may be the one called with ``args``: their number, and
     no builtin value (``true``, ``0.25``) passed for a class parameter (a descriptor)."""
     params = _parameters(decl)
+    variadic = bool(params) and params[-1].type.spelling.endswith("...")
+    if variadic:
+        params = params[:-1]  # a pack (``R&&... rest``): any number of arguments
     required = [p for p in params if not any(c.kind.is_expression() for c in p.get_children())]
-    if not len(required) <= len(args) <= len(params):
+    if not len(required) <= len(args) <= (len(args) if variadic else len(params)):
         return False
     for param, arg in zip(params, args, strict=False):
         wanted = param.type.get_canonical()
@@ -589,6 +628,19 @@ def _targets(call: Cursor) -> list[Key]:
         return [_key(target.canonical)]
     children = list(call.get_children())
     return [_key(d.canonical) for d in _overloads(children[0])] if children else []
+
+
+def _is_constructor(function: Cursor) -> bool:
+    """A constructor, or a constructor template (``ServiceServer<ServiceT>``)."""
+    parent = function.semantic_parent
+    return function.kind == CursorKind.CONSTRUCTOR or (
+        parent is not None and function.spelling.split("<")[0] == parent.spelling)
+
+
+def _of_class_template(function: Cursor) -> bool:
+    parent = function.semantic_parent
+    return parent is not None and parent.kind in (
+        CursorKind.CLASS_TEMPLATE, CursorKind.CLASS_TEMPLATE_PARTIAL_SPECIALIZATION)
 
 
 def _arguments(call: Cursor) -> list[Cursor]:
