@@ -11,9 +11,10 @@ clients, action servers and clients, parameter declarations, reads and writes; r
 rclcpp, actionlib, rclcpp_action, image_transport, message_filters forms), and whether
 the extraction (no cache, each translation unit parsed once) has a call of that kind
 within a line or two. Prints recall by call site per workspace and per kind, the misses
-grouped by cause (the unit's first clang error kind left after synthesis, or, in a unit
-without errors, the API form), the clang errors (at most 50 per file) per unit before
-and after the names clang did not know were declared (``CPP_NAMES_DECLARED``), and
+grouped by cause (the clang error left in the function that holds the site, else the
+API form, in a unit with errors elsewhere or in a clean one), the nodes complete and
+partial with what makes them partial, the clang errors (at most 50 per file) per unit
+before and after the names clang did not know were declared (``CPP_NAMES_DECLARED``), and
 the cold extraction time per unit. ``--misses N`` lists N missed sites per workspace;
 ``--no-synthesis`` turns the declaration of unknown names off; ``--timing`` first
 extracts the same units without it and prints the ratio of the two cold times. Times are
@@ -75,6 +76,7 @@ _DEFINITION = re.compile(r"^\s*(virtual\s+|static\s+|inline\s+)*[\w:<>,\s*&]+\s+
                          r"(create_publisher|declare_parameter|get_parameter)\w*\s*\(")
 _DECLARED = re.compile(r"(\d+) name\(s\) .* errors in this unit: (\d+) before, (\d+) after")
 _QUOTED = re.compile(r"'[^']*'")
+_SPAN = re.compile(r"\(lines (\d+)-(\d+)\)")
 
 
 def sites(path: str) -> list[tuple[int, str, str]]:
@@ -135,7 +137,13 @@ def census(spec: str, jobs: int, timing: bool) -> None:
     calls: dict[str, dict[int, set[str]]] = collections.defaultdict(
         lambda: collections.defaultdict(set))
     errors: dict[str, list[str]] = {}
+    near: dict[str, list[tuple[int, int, str]]] = collections.defaultdict(list)
     for unit, result in zip(units, batch.results, strict=True):
+        for item in result.diagnostics:  # errors in a function that calls the API
+            span = _SPAN.search(item.message) if item.code == "CPP_ERROR_NEAR_CALL" else None
+            if span and item.location.file:
+                near[item.location.file].append(
+                    (int(span.group(1)), int(span.group(2)), item.message.split(": ", 1)[-1]))
         for call in result.calls:
             if call.location.file:
                 calls[call.location.file][call.location.line].add(call.kind)
@@ -165,8 +173,13 @@ def census(spec: str, jobs: int, timing: bool) -> None:
             per_kind[category][0] += ok
             per_kind[category][1] += 1
             if not ok:
-                cause = (f"unit with errors: {_QUOTED.sub('…', unit_errors[0])[:70]}"
-                         if unit_errors else f"clean unit: {form}")
+                inside = [m for a, b, m in near.get(rel, ()) if a <= line <= b]
+                if inside:
+                    cause = f"error in its function: {_QUOTED.sub('…', inside[0])[:70]}"
+                elif unit_errors:
+                    cause = f"errors only elsewhere in the unit: {form}"
+                else:
+                    cause = f"clean unit: {form}"
                 causes[cause] += 1
                 missed.append(f"{rel}:{line} {category} ({cause})")
     by_unit = dict(zip(units, batch.results, strict=True))
