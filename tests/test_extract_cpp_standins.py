@@ -104,3 +104,26 @@ def test_lifecycle_rcl_std_and_opencv_apis_parse() -> None:
         ("publish", "probe", "std_msgs/msg/String", 74),
     ]
     assert [(d.code, d.message) for d in found.diagnostics] == []
+
+
+def test_xmlrpc_values_as_ros_1_nodes_read_them(tmp_path) -> None:
+    """move_base's recovery behaviours: ``list[i]["name"]`` (a string key), conversions
+    to std::string / double / int, iteration over a struct."""
+    from haros_arch.workspace import Workspace
+
+    source = tmp_path / "n.cpp"
+    source.write_text(
+        "#include <ros/ros.h>\n#include <string>\n"
+        "void f(ros::NodeHandle& n) {\n"
+        "  XmlRpc::XmlRpcValue v;\n"
+        "  n.getParam(\"~recovery_behaviors\", v);\n"
+        "  for (int i = 0; i < v.size(); ++i) {\n"
+        "    std::string name = v[i][\"name\"];\n"
+        "    double x = static_cast<double>(v[i][\"x\"]);\n"
+        "    int k = v[i][\"k\"];\n"
+        "  }\n"
+        "  for (auto it = v.begin(); it != v.end(); ++it) { std::string key = it->first; }\n"
+        "}\n")
+    result = extract_cpp([str(source)], Workspace(root=str(tmp_path)), cache_dir=None)
+    assert [(c.kind, c.name) for c in result.calls] == [("read", "~recovery_behaviors")]
+    assert [d.message for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"] == []
