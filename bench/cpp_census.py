@@ -137,12 +137,12 @@ def census(spec: str, jobs: int, timing: bool) -> None:
     calls: dict[str, dict[int, set[str]]] = collections.defaultdict(
         lambda: collections.defaultdict(set))
     errors: dict[str, list[str]] = {}
-    near: dict[str, list[tuple[int, int, str]]] = collections.defaultdict(list)
+    spans: dict[str, list[tuple[int, int, str]]] = collections.defaultdict(list)
     for unit, result in zip(units, batch.results, strict=True):
         for item in result.diagnostics:  # errors in a function that calls the API
             span = _SPAN.search(item.message) if item.code == "CPP_ERROR_NEAR_CALL" else None
             if span and item.location.file:
-                near[item.location.file].append(
+                spans[item.location.file].append(
                     (int(span.group(1)), int(span.group(2)), item.message.split(": ", 1)[-1]))
         for call in result.calls:
             if call.location.file:
@@ -173,7 +173,7 @@ def census(spec: str, jobs: int, timing: bool) -> None:
             per_kind[category][0] += ok
             per_kind[category][1] += 1
             if not ok:
-                inside = [m for a, b, m in near.get(rel, ()) if a <= line <= b]
+                inside = [m for a, b, m in spans.get(rel, ()) if a <= line <= b]
                 if inside:
                     cause = f"error in its function: {_QUOTED.sub('…', inside[0])[:70]}"
                 elif unit_errors:
@@ -206,6 +206,10 @@ def census(spec: str, jobs: int, timing: bool) -> None:
     print("   nodes: " + ", ".join(f"{k} {v}" for k, v in sorted(states.items())))
     for reason, count in hiding.most_common(8):
         print(f"   partial {count:4}  {reason}")
+    failed = sum(any(d.code == "CPP_PARSE_FAILED" for d in r.diagnostics)
+                 for r in batch.results)
+    if failed:
+        print(f"   units libclang could not parse: {failed}")
     print(f"   clang errors: {before_after[0]} before synthesis in {before_after[2]} units, "
           f"{before_after[1]} after in {before_after[3]} units")
     print(f"   cold extraction {elapsed:.1f} s CPU, {1000 * elapsed / max(len(units), 1):.0f} ms "

@@ -36,6 +36,7 @@ __all__ = ["CppBatch", "CppResult", "extract_cpp", "extract_cpp_nodes"]
 # CXTranslationUnit_DetailedPreprocessingRecord (for #define constants) | KeepGoing
 PARSE_OPTIONS = 0x01 | 0x200
 SKIP_FUNCTION_BODIES = 0x40  # CXTranslationUnit_SkipFunctionBodies
+ROS1_PLACEHOLDERS = os.path.join(STANDIN, "boost", "bind.hpp")
 MAX_ERRORS_PER_FILE = 50
 _HEADER = re.compile(r"no definition found for (\S+);")
 _MEMBER = re.compile(r"^no member named '\w+' in '(?:struct |class )?(?:::)?(\w+)::")
@@ -316,7 +317,7 @@ def _translation_unit(path: str, text: str, ros2: bool,
             return workspace.location(path)
         return workspace.location(os.path.abspath(loc.file.name), loc.line, loc.column)
 
-    tu = _parse(path, text, setup, workspace, result, source, owned)
+    tu = _parse(path, text, setup, workspace, result, source, owned, ros2)
     if tu is None:
         return result, []
     errors = [d for d in tu.diagnostics if d.severity >= ClangDiagnostic.Error
@@ -407,12 +408,16 @@ def _hidden(path: str, errors: list[ClangDiagnostic], finder: CallFinder,
 
 def _parse(path: str, text: str, setup: IncludeSetup, workspace: Workspace,
            result: CppResult, source: SourceCache,
-           owned: Callable[[str], bool]) -> TranslationUnit | None:
+           owned: Callable[[str], bool], ros2: bool = False) -> TranslationUnit | None:
     """Parse ``path``; headers clang still misses are stood in for and parsed again, then
     names it does not know are declared (``synthesis``) and parsed again while that
     leaves fewer errors."""
     unsaved = [(path, text)]
     args = setup.arguments(source=path)
+    if not ros2 and not setup.system_headers:
+        # ROS 1 (Boost before 1.73): roscpp's headers bring boost::bind's _1, _2 into the
+        # global namespace; ROS 2 code has std::placeholders there instead
+        args = [*args, "-include", ROS1_PLACEHOLDERS]
     tu: TranslationUnit | None = None
     for _attempt in range(2):
         tu = _parse_once(path, args, unsaved, workspace, result)

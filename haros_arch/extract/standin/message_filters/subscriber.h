@@ -13,6 +13,7 @@ public:
   template<class N, class... A> Subscriber(N&& node, const std::string& topic, A&&... more);
   template<class N, class... A> void subscribe(N&& node, const std::string& topic, A&&... more);
   void unsubscribe();
+  std::string getTopic() const;
   template<class C> void registerCallback(const C& callback);
 };
 struct NullType {};

@@ -446,6 +446,7 @@ template<class It, class F> F for_each(It first, It last, F f);
 template<class It, class O> O copy(It first, It last, O out);
 template<class It, class O, class F> O transform(It first, It last, O out, F f);
 template<class It, class T> void fill(It first, It last, const T& v);
+template<class It, class N, class T> It fill_n(It first, N count, const T& v);
 template<class It> void reverse(It first, It last);
 template<class It> It min_element(It first, It last);
 template<class It> It max_element(It first, It last);
