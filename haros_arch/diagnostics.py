@@ -210,6 +210,19 @@ CATALOGUE: dict[str, Entry] = {
     "CPP_PARSE_FAILED": Entry(
         "error", "C++ file could not be parsed: {detail}",
         "libclang could not produce a translation unit; the file gives no calls."),
+    "CPP_CALL_MISSED": Entry(
+        "info", "{text} calls the ROS API, but no call was extracted there",
+        "A grep finds a call of a ROS API function (or of one of the unit's own wrappers "
+        "of it) on this line, and the extraction has no call within two lines of it: an "
+        "error made the code around it unreadable to the parse (a class made invalid), "
+        "or the walk does not reach it. The node is 'partial'."),
+    "CPP_ERROR_NEAR_CALL": Entry(
+        "info", "C++ error in {function} (lines {start}-{end}), which calls the ROS API: "
+        "{detail}",
+        "An error the parse could not get past is inside a function that calls the ROS "
+        "API, so a call there may be missing or read with a wrong name or type. The node "
+        "is 'partial'. Errors in code that calls no ROS API cannot hide a call and leave "
+        "the node complete."),
     "CPP_NAMES_DECLARED": Entry(
         "info", "{count} name(s) unknown to the parse declared permissively ({names}); "
         "clang errors in this unit: {before} before, {after} after",
@@ -226,10 +239,12 @@ CATALOGUE: dict[str, Entry] = {
         "ROS API function of that name, its name and values read as usual, its type as "
         "written when that names a ROS interface, else '?'."),
     "CPP_NODE_PARTIAL": Entry(
-        "warning", "node {node}: its calls may be incomplete, {count} error(s) left in "
-        "its C++ sources (first: {first})",
+        "warning", "node {node}: its calls may be incomplete, {count} place(s) in its C++ "
+        "sources where a ROS call may be missing (first: {first})",
         "Some of the node's code could not be parsed even after the names clang did not "
-        "know were declared: calls in that code may be missing. The node model is "
+        "know were declared, and that code calls the ROS API (CPP_CALL_MISSED: a call "
+        "site with no call extracted; CPP_ERROR_NEAR_CALL: an error inside a function "
+        "that calls the API): calls there may be missing. The node model is "
         "'partial' (completeness, with the first reasons); checks that claim something "
         "is absent do not trust it."),
     "PY_NODE_PARTIAL": Entry(
