@@ -309,7 +309,12 @@ def _given_name(call: PrimitiveCall, instance: NodeInstance, resources: Resource
     value: str | None = call.name_default
     if isinstance(param, Parameter) and param.set_by_launch and isinstance(param.value, str):
         value = param.value
-    return call.name if value is None else call.name.replace(UNKNOWN_MARK, value, 1)
+    if value is None:
+        return call.name
+    if value.startswith(("/", "~")) and (
+            call.name == UNKNOWN_MARK or call.name.endswith("/" + UNKNOWN_MARK)):
+        return value  # a global or private name is not resolved in the handle's namespace
+    return call.name.replace(UNKNOWN_MARK, value, 1)
 
 
 def element_calls(call: PrimitiveCall, instance: NodeInstance, resources: Resources
