@@ -26,6 +26,7 @@ from ..model.source import Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK
 from ..models.commands import command_node
 from ..plugins.attach import attach as attach_plugins
+from ..robot.attach import attach as attach_descriptions
 from ..workspace import Workspace, installed_roots
 from .actions import action_links
 from .processes import guessed_names, process_nodes, process_params
@@ -120,7 +121,8 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
         for call in instance.node.calls_of(own):
             for each in element_calls(call, instance, resources):  # list parameters
                 link(instance, each, remaps, resources, config)
-    for instance, calls in attach_plugins(config, started, nodes, resources, workspace):
+    for instance, calls in [*attach_plugins(config, started, nodes, resources, workspace),
+                            *attach_descriptions(config, launch, started, workspace)]:
         remaps = resolve_remaps(instance.remaps, instance.namespace, instance.name)
         for call in calls:
             for each in element_calls(call, instance, resources):

@@ -61,6 +61,9 @@ class ParamDecl:
     # ROS 2: index in LaunchModel.nodes of the node declaration it was given to (several
     # unnamed nodes share the name ``/?`` until the graph names them from their code)
     owner: int | None = None
+    # ROS 1 ``command=``: the command line the value comes from, ``?`` for unknown parts
+    # (it is never run; robot descriptions read the xacro file it names)
+    command: str | None = None
 
 
 @dataclass
