@@ -3,7 +3,9 @@
     .venv/bin/python bench/gazebo_real.py WORKSPACE [WORKSPACE ...] --launch LAUNCH
         [--launch LAUNCH ...] [--arg NAME:=VALUE ...] [--env NAME=VALUE ...] [--jobs N]
 
-Each LAUNCH (``pkg/path/in/package`` or a path) is one configuration. The pipeline runs
+Each LAUNCH (``pkg/path/in/package`` or a path; several joined by ``+``: one
+configuration of them all, a simulation with the nodes that use its sensors) is one
+configuration. The pipeline runs
 twice, with and without the robot-description stage (``robot.attach``), and prints per
 configuration: the descriptions read (files, links, joints, completeness), each plugin
 with the node instance that makes its calls, the diagnostics of the stage, the links
@@ -49,7 +51,7 @@ def main() -> None:
     env = {**os.environ, **dict(e.split("=", 1) for e in args.env)}
     roots = [os.path.abspath(w) for w in args.workspace]
     project = Project("gazebo", os.path.join(roots[0], "bench.yaml"), workspace=roots,
-                      configurations=[ConfigurationSpec(os.path.basename(launch), [launch],
+                      configurations=[ConfigurationSpec(os.path.basename(launch), launch.split("+"),
                                                         dict(launch_args))
                                       for launch in args.launch])
     before = run(project, env, args.jobs, False)

@@ -35,7 +35,7 @@ from ..launch.model import LaunchModel, NodeDecl, ParamDecl
 from ..model.conditions import Condition
 from ..model.location import NOWHERE, Location
 from ..model.robot import DescribedPlugin, RobotDescription
-from ..model.rosname import as_namespace, clean, resolve
+from ..model.rosname import as_namespace, clean, namespace_of, resolve
 from ..model.runtime import Configuration, NodeInstance
 from ..model.source import CallKind, Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK
@@ -149,8 +149,18 @@ def _description(spawn: Spawn, launch: LaunchModel, workspace: Workspace,
             _note(config, decl.location, f"parameter {name} {what}")
             return None
         return _from_command(param, name, workspace, config)
-    _note(config, decl.location, "the spawner's description (-topic, -database) is not "
-                                 "read")
+    if spawn.topic is not None:  # ROS 2: robot_state_publisher's latched description
+        topic = resolve(spawn.topic, decl.namespace)
+        for param in reversed(launch.params):
+            if (param.key == "robot_description" and param.node is not None
+                    and clean(namespace_of(param.node) + "robot_description") == topic):
+                if param.command is None:
+                    break
+                return _from_command(param, topic, workspace, config)
+        _note(config, decl.location, f"no node of the configuration is given the "
+                                     f"description published on {topic} by a xacro command")
+        return None
+    _note(config, decl.location, "the spawner's description (-database, -stdin) is not read")
     return None
 
 

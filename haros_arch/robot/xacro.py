@@ -355,7 +355,7 @@ class _Expander:
         functions = {**expression.BUILTINS, **expression.MATH}
         result = expression.evaluate(_str(inner), names, functions)
         if isinstance(result, expression.Unknown):
-            if result.kind in ("undefined", "error", "syntax"):
+            if result.kind != "unknown":  # refused or wrong, not just unknown inputs
                 self.report(element, "ROBOT_DESCRIPTION_XACRO",
                             detail=f"${{{text}}}: {result.reason}")
             return Partial(UNKNOWN_MARK, tuple(reasons) or (f"${{{text}}}: {result.reason}",))
@@ -589,6 +589,8 @@ def _conditional(negate: bool) -> Callable[[_Expander, Element, _Scope, int], li
         truth = self.condition(element, scope)
         if isinstance(truth, bool):
             return self.content(element, scope, depth) if truth != negate else []
+        for reason in truth.reasons:
+            self.unknown(element, reason)
         where = self.where(element)
         text = f"{'unless' if negate else 'if'} {truth.text} ({where.file}:{where.line})"
         made = self.content(element, scope, depth)

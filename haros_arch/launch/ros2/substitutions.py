@@ -429,6 +429,10 @@ class Evaluator:
     def s_FileRef(self, s: e.FileRef) -> Value:
         return self.value(s.file.path)
 
+    def s_Command(self, s: e.Command) -> Value:
+        return self.s_Opaque(e.Opaque("Command (never run) is not evaluated; its value is "
+                                      "unknown"))
+
     def s_Opaque(self, s: e.Opaque) -> Value:
         if s.report:
             self.report("LAUNCH_UNSUPPORTED", detail=s.origin)

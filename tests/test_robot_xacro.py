@@ -1,0 +1,155 @@
+"""The static xacro reader (robot/xacro.py) on fixtures/robot and small inline files."""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+from conftest import FIXTURES
+from lxml import etree
+
+from haros_arch.robot import xacro
+from haros_arch.workspace import Workspace, scan
+
+ROS1 = str(FIXTURES / "robot" / "ros1")
+BOT = os.path.join(ROS1, "bot_description", "urdf", "bot.urdf.xacro")
+
+
+def expand(path: str, env: dict[str, str] | None = None, **args: str) -> xacro.Description:
+    workspace = scan([ROS1], env or {})
+    return xacro.expand(path, args, workspace, env or {})
+
+
+def plugins(description: xacro.Description) -> list[tuple[str | None, str | None]]:
+    """Each plugin's name and the condition of the if that keeps it (on an ancestor)."""
+    assert description.root is not None
+    return [(p.get("name"), next((a.get(xacro.CONDITION) for a in p.iterancestors()
+                                  if a.get(xacro.CONDITION)), p.get(xacro.CONDITION)))
+            for p in description.root.iter("plugin")]
+
+
+def test_includes_macros_blocks_and_properties_expand_as_xacro_does():
+    description = expand(BOT, {"BOT_CAMERA": "0"})
+    root = description.root
+    assert root is not None
+    assert [os.path.basename(f) for f in description.files] == ["bot.urdf.xacro",
+                                                                "parts.xacro"]
+    # a macro with a block parameter (*origin) and a forwarded default (radius:=^|...)
+    joint = root.find("joint[@name='left_wheel_joint']")
+    assert joint is not None
+    assert joint.find("origin").get("xyz") == "0 0.2 0"
+    assert joint.find("axis").get("xyz") == "0 1 0"
+    assert root.find("joint[@name='right_wheel_joint']/axis").get("xyz") == "0 -1 0"
+    cylinder = root.find("link[@name='left_wheel']/visual/geometry/cylinder")
+    # 0.05 * 0.8 as Python (and xacro) writes it
+    assert (cylinder.get("radius"), cylinder.get("length")) == ("0.05", "0.04000000000000001")
+    # a macro default referring to a property of the included file; an arg's default
+    assert root.find("link[@name='laser']") is not None
+    laser = root.find(".//plugin[@name='laser_controller']")
+    assert laser.findtext("topicName") == "front/scan"
+    assert laser.findtext("frameName") == "laser"
+    assert root.find(".//plugin[@name='diff_drive']").findtext("wheelDiameter") == "0.1"
+    # decided conditions: the camera (BOT_CAMERA=0) is left out, unless keeps the drive
+    assert plugins(description) == [("laser_controller", None), ("diff_drive", None),
+                                    ("imu", None), ("lights", None)]
+    assert description.unknown == [] and description.diagnostics == []
+    # nothing of xacro's is left in the document
+    assert not [e for e in root.iter() if isinstance(e.tag, str) and "xacro" in e.tag]
+
+
+def test_arguments_given_override_defaults():
+    description = expand(BOT, {"BOT_CAMERA": "1"}, laser_enabled="false",
+                         laser_topic="x/scan")
+    assert [name for name, _ in plugins(description)] == [
+        "camera_controller", "diff_drive", "imu", "lights"]
+
+
+def test_an_undecided_condition_keeps_its_content_marked_with_the_condition():
+    description = expand(BOT)  # BOT_CAMERA is not set
+    assert ("camera_controller", "if $(arg camera_enabled) "
+            "(bot_description/urdf/bot.urdf.xacro:21)") in plugins(description)
+    assert description.unknown == [
+        "environment variable BOT_CAMERA is not set (bot_description/urdf/bot.urdf.xacro:21)"]
+
+
+def write(tmp_path: Path, name: str, text: str) -> str:
+    path = tmp_path / name
+    path.write_text(text)
+    return str(path)
+
+
+def tmp_expand(tmp_path: Path, text: str, **args: str) -> xacro.Description:
+    path = write(tmp_path, "robot.urdf.xacro",
+                 '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">'
+                 + text + "</robot>")
+    return xacro.expand(path, args, Workspace(str(tmp_path), [str(tmp_path)]), {})
+
+
+def codes(description: xacro.Description) -> list[tuple[str, int]]:
+    return [(d.code, d.location.line) for d in description.diagnostics]
+
+
+def test_expressions_use_the_safe_evaluator_and_run_nothing(tmp_path: Path):
+    description = tmp_expand(
+        tmp_path, '<xacro:property name="n" value="3"/>\n'
+                  '<a v="${n * 2 + 1}" w="${pi/2 > 1}" x="${__import__(\'os\')}"/>')
+    a = description.root.find("a")
+    assert (a.get("v"), a.get("w"), a.get("x")) == ("7", "True", "?")
+    assert codes(description) == [("ROBOT_DESCRIPTION_XACRO", 2)]
+    assert description.unknown  # the refused expression is unknown, said why
+
+
+def test_lazy_properties_and_scopes(tmp_path: Path):
+    description = tmp_expand(
+        tmp_path, '<xacro:property name="a" value="${b}"/><xacro:property name="b" value="2"/>'
+                  '<xacro:macro name="m" params="b"><x v="${a} ${b}"/></xacro:macro>'
+                  '<xacro:m b="5"/><y v="${a}"/>')
+    # a is evaluated where it is defined (global b), the macro's b is its own
+    assert description.root.find("x").get("v") == "2 5"
+    assert description.root.find("y").get("v") == "2"
+
+
+def test_unknown_macro_and_missing_include_are_diagnostics_with_their_line(tmp_path: Path):
+    description = tmp_expand(tmp_path, '\n<xacro:nope/>\n<xacro:include filename="gone.xacro"/>')
+    assert codes(description) == [("ROBOT_DESCRIPTION_XACRO", 2),
+                                  ("ROBOT_DESCRIPTION_FILE", 3)]
+    assert len(description.unknown) == 2 and description.root is not None
+
+
+def test_an_include_outside_the_workspace_is_not_read(tmp_path: Path):
+    inside = tmp_path / "ws"
+    inside.mkdir()
+    outside = write(tmp_path, "secret.xacro", "<robot><leak/></robot>")
+    path = write(inside, "robot.xacro", '<robot xmlns:xacro="http://ros.org/wiki/xacro">'
+                 f'<xacro:include filename="{outside}"/></robot>')
+    description = xacro.expand(path, {}, Workspace(str(inside), [str(inside)]), {})
+    assert description.root.find("leak") is None
+    assert description.unknown and "outside the workspace" in description.unknown[0]
+
+
+def test_recursion_stops_at_the_bound(tmp_path: Path):
+    description = tmp_expand(tmp_path, '<xacro:macro name="m" params=""><xacro:m/></xacro:macro>'
+                                       "<xacro:m/>")
+    assert description.root is None
+    assert [code for code, _ in codes(description)] == ["ROBOT_DESCRIPTION_LIMIT"]
+    path = write(tmp_path, "self.xacro", '<robot xmlns:xacro="http://ros.org/wiki/xacro">'
+                 '<xacro:include filename="self.xacro"/></robot>')
+    looped = xacro.expand(path, {}, Workspace(str(tmp_path), [str(tmp_path)]), {})
+    assert looped.root is None
+    assert [d.code for d in looped.diagnostics] == ["ROBOT_DESCRIPTION_LIMIT"]
+
+
+def test_values_grown_by_properties_are_bounded(tmp_path: Path):
+    props = '<xacro:property name="p0" value="xxxxxxxxxx"/>' + "".join(
+        f'<xacro:property name="p{i}" value="${{p{i - 1}}}${{p{i - 1}}}"/>' for i in range(1, 30))
+    description = tmp_expand(tmp_path, props + '<a v="${p29}"/>')
+    assert description.root is None  # 10 * 2**29 characters are never made
+    assert [code for code, _ in codes(description)] == ["ROBOT_DESCRIPTION_LIMIT"]
+
+
+def test_a_plain_sdf_reads_as_it_is():
+    sdf = str(FIXTURES / "robot" / "ros2" / "bot2_description" / "models" / "bot2.sdf")
+    description = xacro.expand(sdf, {}, scan([str(FIXTURES / "robot" / "ros2")], {}), {})
+    assert [p.get("name") for p in description.root.iter("plugin")] == ["imu_driver",
+                                                                        "states"]
+    assert etree.QName(description.root).localname == "sdf"
