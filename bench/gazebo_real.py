@@ -10,7 +10,8 @@ twice, with and without the robot-description stage (``robot.attach``), and prin
 configuration: the descriptions read (files, links, joints, completeness), each plugin
 with the node instance that makes its calls, the diagnostics of the stage, the links
 before and after, and every topic a plugin publishes or subscribes to with its type and
-the nodes on the other side (``-`` when none: a sensor topic nothing reads).
+the nodes on the other side (``-`` when none: a sensor topic nothing reads; ``node as
+/?/scan?`` when a name with unknown parts has it as a candidate).
 """
 
 from __future__ import annotations
@@ -74,9 +75,14 @@ def main() -> None:
                 print(f"  {found.code} {found.location.file}:{found.location.line} "
                       f"{found.message}")
         made = [link for link in new.links if link.origin == "description"]
+        unresolved = [r for r in (*new.topics, *new.services) if "?" in r.name]
         for link in sorted(made, key=lambda x: (x.resource.name, x.kind)):
             peers = [peer.node.name for peer in link.resource.links
                      if peer.kind != link.kind and peer.node is not link.node]
+            # a name with unknown parts that may be this one (``?/scan``): a candidate
+            peers += [f"{peer.node.name} as {other.name}?" for other in unresolved
+                      if link.resource in other.candidates for peer in other.links
+                      if peer.kind != link.kind]
             print(f"    {link.kind:9} {link.resource.name} [{link.type}] by {link.node.name}"
                   f" | other side: {', '.join(sorted(set(peers))) or '-'}")
 

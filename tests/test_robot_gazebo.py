@@ -109,6 +109,9 @@ def test_ros2_plugins_are_nodes_of_their_own_with_namespace_and_remappings():
     (description,) = config.robot_descriptions
     assert description.name == "/robot_description"
     assert description.links == ["front_base_link"]
+    (control,) = description.ros2_control
+    assert (control.name, control.hardware, control.joints, control.location.line) == (
+        "GazeboSystem", "gazebo_ros2_control/GazeboSystem", ["front_wheel_joint"], 28)
 
 
 def test_ros2_spawner_file_is_read_as_it_is():

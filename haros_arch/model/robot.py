@@ -29,6 +29,16 @@ class DescribedPlugin:
 
 
 @dataclass
+class DescribedControl:
+    """A ``<ros2_control>`` system of the description: its hardware plugin and joints."""
+
+    name: str
+    hardware: str | None = None  # ``<hardware><plugin>``: gazebo_ros2_control/GazeboSystem
+    joints: list[str] = field(default_factory=list)
+    location: Location = NOWHERE
+
+
+@dataclass
 class RobotDescription:
     name: str  # the parameter (``/robot_description``) or the file the spawner names
     file: str | None = None  # the top file read (workspace-relative), None if unknown
@@ -37,6 +47,7 @@ class RobotDescription:
     links: list[str] = field(default_factory=list)
     joints: list[str] = field(default_factory=list)
     plugins: list[DescribedPlugin] = field(default_factory=list)
+    ros2_control: list[DescribedControl] = field(default_factory=list, metadata=OPTIONAL)
     completeness: str = "complete"  # complete | partial
     completeness_reasons: list[str] = field(default_factory=list, metadata=OPTIONAL)
 
@@ -49,9 +60,13 @@ def description_from_data(data: Any) -> RobotDescription | None:
                                _location(p.get("location")), p.get("node"),
                                [str(c) for c in p.get("conditions") or ()])
                for p in data.get("plugins") or () if isinstance(p, dict)]
+    controls = [DescribedControl(str(c.get("name", "")), c.get("hardware"),
+                                 [str(j) for j in c.get("joints") or ()],
+                                 _location(c.get("location")))
+                for c in data.get("ros2_control") or () if isinstance(c, dict)]
     return RobotDescription(
         str(data.get("name", "")), data.get("file"), _location(data.get("location")),
         [str(f) for f in data.get("files") or ()], [str(x) for x in data.get("links") or ()],
-        [str(x) for x in data.get("joints") or ()], plugins,
+        [str(x) for x in data.get("joints") or ()], plugins, controls,
         str(data.get("completeness", "complete")),
         [str(r) for r in data.get("completeness_reasons") or ()])

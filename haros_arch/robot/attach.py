@@ -34,7 +34,7 @@ from .. import diagnostics as diag
 from ..launch.model import LaunchModel, NodeDecl, ParamDecl
 from ..model.conditions import Condition
 from ..model.location import NOWHERE, Location
-from ..model.robot import DescribedPlugin, RobotDescription
+from ..model.robot import DescribedControl, DescribedPlugin, RobotDescription
 from ..model.rosname import as_namespace, clean, namespace_of, resolve
 from ..model.runtime import Configuration, NodeInstance
 from ..model.source import CallKind, Node, PrimitiveCall
@@ -225,6 +225,11 @@ def _expanded(path: str, args: dict[str, str | xacro.Partial], name: str, where:
         [workspace.relpath(f) for f in expanded.files])
     if expanded.root is not None:
         record.links, record.joints = _links_joints(expanded.root)
+        record.ros2_control = [
+            DescribedControl(element.get("name") or "", element.findtext("hardware/plugin"),
+                             [j.get("name") or "" for j in element.iterfind("joint")],
+                             _where(element, workspace))
+            for element in expanded.root.iter("ros2_control")]
     if expanded.root is None and not expanded.unknown:
         expanded.unknown.append(f"{workspace.relpath(path)} is not read")
     for reason in expanded.unknown:
@@ -233,11 +238,13 @@ def _expanded(path: str, args: dict[str, str | xacro.Partial], name: str, where:
 
 
 def _links_joints(root: etree._Element) -> tuple[list[str], list[str]]:
+    """The robot's (or SDF model's) links and joints, not a ros2_control's joints."""
     links: list[str] = []
     joints: list[str] = []
     for element in root.iter("link", "joint"):
         name = element.get("name")
-        if name is None or element.getparent() is None:
+        parent = element.getparent()
+        if name is None or parent is None or parent.tag not in ("robot", "model"):
             continue
         (links if element.tag == "link" else joints).append(name)
     return links, joints
