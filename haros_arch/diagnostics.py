@@ -145,6 +145,11 @@ CATALOGUE: dict[str, Entry] = {
         "A <plugin> of a robot description names a library that is not in the table of "
         "Gazebo plugins (haros_arch/robot/gazebo_plugins.py); its topics and services are "
         "unknown and the Gazebo node instance is partial."),
+    "BRIDGE_CONFIG_FILE": Entry(
+        "warning", "config file {path} of a ros_gz bridge cannot be read",
+        "A ros_gz_bridge parameter_bridge's config_file does not exist, lies outside the "
+        "workspace and installed packages, or is not a YAML list of bridge entries; the "
+        "topics it would bridge are unknown and the bridge's node is partial."),
     "GAZEBO_NOT_STARTED": Entry(
         "info", "no launch file of the configuration starts Gazebo; its node is taken as "
         "{name}",

@@ -9,11 +9,13 @@ from conftest import FIXTURES
 
 from haros_arch import pipeline
 from haros_arch.model.load import from_data
+from haros_arch.model.location import NOWHERE
 from haros_arch.model.model import Model
 from haros_arch.model.runtime import Configuration
 from haros_arch.model.serialise import model_to_data
 from haros_arch.project import ConfigurationSpec, Project
 from haros_arch.robot.attach import xacro_command
+from haros_arch.robot.bridge import _from_arguments
 
 ROS1 = str(FIXTURES / "robot" / "ros1")
 ROS2 = str(FIXTURES / "robot" / "ros2")
@@ -140,3 +142,39 @@ def test_robot_descriptions_survive_the_json_model():
 ])
 def test_xacro_command_lines(command: str, expected: object):
     assert xacro_command(command) == expected
+
+
+def test_gz_systems_make_no_ros_calls_and_bridges_make_their_topics_ros_topics():
+    config = configuration(ROS2, "bot2_description/launch/gz.launch.py")
+    assert made(config) == [
+        ("/image_bridge", "publish", "/camera/image_raw", "sensor_msgs/msg/Image"),
+        ("/parameter_bridge", "publish", "/clock", "rosgraph_msgs/msg/Clock"),
+        ("/parameter_bridge", "publish", "/joint_states", "sensor_msgs/msg/JointState"),
+        ("/parameter_bridge", "publish", "/scan", "sensor_msgs/msg/LaserScan"),
+        ("/parameter_bridge", "subscribe", "/cmd_vel", "geometry_msgs/msg/Twist"),
+        ("/parameter_bridge", "subscribe", "/joint_states", "sensor_msgs/msg/JointState"),
+    ]
+    assert config.node("/parameter_bridge").completeness == "complete"
+    (description,) = config.robot_descriptions
+    assert [(p.filename, p.node) for p in description.plugins] == [
+        ("gz-sim-diff-drive-system", None), ("libgazebo_ros_imu_sensor.so", None)]
+    # a gazebo_ros plugin does not load in gz sim: not a gz system, said at its line
+    assert [(d.code, d.location.line) for d in config.diagnostics
+            if d.code == "GAZEBO_PLUGIN_UNKNOWN"] == [("GAZEBO_PLUGIN_UNKNOWN", 8)]
+
+
+@pytest.mark.parametrize(("argument", "expected"), [
+    ("/chatter@std_msgs/msg/String@gz.msgs.StringMsg",
+     [("publish", "std_msgs/msg/String"), ("subscribe", "std_msgs/msg/String")]),
+    ("/chatter@std_msgs/msg/String[gz.msgs.StringMsg", [("publish", "std_msgs/msg/String")]),
+    ("/chatter@std_msgs/msg/String]gz.msgs.StringMsg", [("subscribe", "std_msgs/msg/String")]),
+    ("/world/default/control@ros_gz_interfaces/srv/ControlWorld",  # gz types inferred
+     [("server", "ros_gz_interfaces/srv/ControlWorld")]),
+    ("/chatter@std_msgs/msg/String", []),  # a topic needs its gz type: refused
+    ("/world/default/control@ros_gz_interfaces/srv/ControlWorld@gz.msgs.WorldControl"
+     "@gz.msgs.Boolean", [("server", "ros_gz_interfaces/srv/ControlWorld")]),
+    ("not-a-bridge", []),
+])
+def test_parameter_bridge_arguments(argument: str, expected: list[tuple[str, str]]):
+    calls = list(_from_arguments([argument], NOWHERE))
+    assert [(c.kind, c.type) for c in calls] == expected

@@ -43,17 +43,21 @@ from ..plugins.attach import own_partial
 from ..share import share_source
 from ..workspace import Workspace
 from . import xacro
-from .gazebo_plugins import Entity, Plugin, plugin_row
+from .bridge import bridges
+from .gazebo_plugins import Entity, Plugin, gz_system, plugin_row
 
 FILE = xacro.FILE
-SPAWNERS = {("gazebo_ros", "spawn_model"): 1, ("gazebo_ros", "spawn_entity.py"): 2}
+SPAWNERS = {("gazebo_ros", "spawn_model"): 1, ("gazebo_ros", "spawn_entity.py"): 2,
+            ("ros_gz_sim", "create"): 2, ("ros_ign_gazebo", "create"): 2}
+GZ_SPAWNERS = (("ros_gz_sim", "create"), ("ros_ign_gazebo", "create"))
 GAZEBO_EXECUTABLES = ("gzserver", "gazebo", "debug", "gzserver_with_gdb", "perf")
 GAZEBO_NAME = "/gazebo"
 MAX_PLUGINS = 500  # per description
 # spawner options that take a value (``-J`` takes two)
 _VALUED = {"-file", "-param", "-topic", "-database", "-model", "-entity", "-robot_namespace",
            "-gazebo_namespace", "-reference_frame", "-x", "-y", "-z", "-R", "-P", "-Y",
-           "-timeout", "-package_to_model", "-spawn_service_timeout"}
+           "-timeout", "-package_to_model", "-spawn_service_timeout", "-name", "-world",
+           "-string"}
 
 
 @dataclass
@@ -89,7 +93,7 @@ def spawn_args(decl: NodeDecl, ros_version: int) -> Spawn:
                 spawn.param = value
             elif word == "-topic":
                 spawn.topic = value
-            elif word in ("-model", "-entity"):
+            elif word in ("-model", "-entity", "-name"):
                 spawn.model = value
             elif word == "-robot_namespace":
                 spawn.robot_namespace = value
@@ -110,6 +114,9 @@ def attach(config: Configuration, launch: LaunchModel,
         if ros_version is None:
             continue
         spawn = spawn_args(decl, ros_version)
+        if (decl.package, decl.executable) in GZ_SPAWNERS:
+            _gz(spawn, launch, workspace, config)
+            continue
         host = _host(config, started, decl, ros_version)
         made = _description(spawn, launch, workspace, config)
         if made is None:
@@ -124,7 +131,36 @@ def attach(config: Configuration, launch: LaunchModel,
             continue
         for element in _plugins(expanded.root):
             out.extend(_plugin(element, spawn, host, record, config, workspace, owned))
+    out.extend(bridges(config, launch, started, workspace))
     return out
+
+
+def _gz(spawn: Spawn, launch: LaunchModel, workspace: Workspace,
+        config: Configuration) -> None:
+    """A description spawned into gz sim: its systems talk gz transport, not ROS (a
+    ros_gz bridge makes their topics ROS topics), so none is a node of the graph; the
+    description is kept, and a library that is not a gz system is a diagnostic."""
+    made = _description(spawn, launch, workspace, config)
+    if made is None:
+        return
+    record, expanded = made
+    config.robot_descriptions.append(record)
+    if expanded.root is None:
+        return
+    for element in _plugins(expanded.root):
+        filename = element.get("filename") or ""
+        where = _where(element, workspace)
+        record.plugins.append(DescribedPlugin(element.get("name") or "", filename, where,
+                                              conditions=[c.text for c in _conditions(
+                                                  element, where)]))
+        reason = gz_system(filename)
+        if reason is None:
+            found = diag.make("GAZEBO_PLUGIN_UNKNOWN", where, filename=filename,
+                              host="gz sim")
+            config.diagnostics.append(found)
+            _partial(record, f"{found.message} ({where.file}:{where.line})")
+        elif reason:
+            _partial(record, f"{filename}: {reason} ({where.file}:{where.line})")
 
 
 # -- the description --------------------------------------------------------------------

@@ -187,6 +187,25 @@ PLUGINS: tuple[Plugin, ...] = (
 )
 
 
+GZ_PREFIXES = ("gz-sim", "ignition-gazebo", "gz_ros2_control", "ign_ros2_control")
+# gz sim systems that are ROS nodes after all; the others talk gz transport only
+GZ_ROS = {"gz_ros2_control-system": "the controllers its controller manager loads are not "
+                                    "read",
+          "ign_ros2_control-system": "the controllers its controller manager loads are not "
+                                     "read"}
+
+
+def gz_system(filename: str) -> str | None:
+    """For a gz sim system library: "" (no ROS interface: ros_gz bridges make its gz
+    topics ROS topics) or why its ROS interface is not known; None for any other."""
+    base = filename.rsplit("/", 1)[-1]
+    base = base[3:] if base.startswith("lib") else base
+    base = base[:-3] if base.endswith(".so") else base
+    if not base.startswith(GZ_PREFIXES):
+        return None
+    return GZ_ROS.get(base, "")
+
+
 def plugin_row(filename: str, ros_version: int) -> Plugin | None:
     """The row of a ``<plugin filename=...>`` (``libgazebo_ros_imu.so`` or ``gazebo_ros_imu``)."""
     base = filename.rsplit("/", 1)[-1]
