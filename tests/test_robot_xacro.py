@@ -153,3 +153,22 @@ def test_a_plain_sdf_reads_as_it_is():
     assert [p.get("name") for p in description.root.iter("plugin")] == ["imu_driver",
                                                                         "states"]
     assert etree.QName(description.root).localname == "sdf"
+
+
+def test_hostile_macro_parameters_are_read_in_bounded_time(tmp_path: Path):
+    # an unterminated quote after a long default: xacro's own pattern backtracks
+    # exponentially on it; ours reads it in linear time
+    default = "x" * 5_000 + "'"
+    description = tmp_expand(tmp_path, f'<xacro:macro name="m" params="a:={default}">'
+                                       '<x/></xacro:macro><xacro:m a="1"/>')
+    assert description.root is not None
+    too_long = tmp_expand(tmp_path, f'<xacro:macro name="m" params="{"a " * 6_000}"/>')
+    assert [code for code, _ in codes(too_long)] == ["ROBOT_DESCRIPTION_LIMIT"]
+
+
+def test_a_long_value_copied_everywhere_is_bounded(tmp_path: Path):
+    long = "y" * 90_000
+    uses = "".join('<a v="${p}"/>' for _ in range(300))  # 27 million characters
+    description = tmp_expand(tmp_path, f'<xacro:property name="p" value="{long}"/>{uses}')
+    assert description.root is None
+    assert [code for code, _ in codes(description)] == ["ROBOT_DESCRIPTION_LIMIT"]

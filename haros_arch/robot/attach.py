@@ -26,6 +26,7 @@ import os
 import shlex
 from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
+from functools import partial
 from typing import cast
 
 from lxml import etree
@@ -114,24 +115,34 @@ def attach(config: Configuration, launch: LaunchModel,
         if ros_version is None:
             continue
         spawn = spawn_args(decl, ros_version)
-        if (decl.package, decl.executable) in GZ_SPAWNERS:
-            _gz(spawn, launch, workspace, config)
-            continue
-        host = _host(config, started, decl, ros_version)
-        made = _description(spawn, launch, workspace, config)
-        if made is None:
-            own_partial(host, f"the robot description spawned at {decl.location.file}:"
-                              f"{decl.location.line} is not known", owned)
-            continue
-        record, expanded = made
-        config.robot_descriptions.append(record)
-        for reason in expanded.unknown[:3]:
-            own_partial(host, f"robot description: {reason}", owned)
-        if expanded.root is None:
-            continue
+        out.extend(diag.per_file(  # a bug of ours in one description: the run goes on
+            decl.location, decl.location.file or "", config.diagnostics,
+            partial(_spawned, spawn, started, launch, workspace, config, owned), []))
+    out.extend(bridges(config, launch, started, workspace))
+    return out
+
+
+def _spawned(spawn: Spawn, started: Sequence[tuple[NodeDecl, NodeInstance]],
+             launch: LaunchModel, workspace: Workspace, config: Configuration,
+             owned: set[int]) -> list[tuple[NodeInstance, list[PrimitiveCall]]]:
+    decl = spawn.decl
+    if (decl.package, decl.executable) in GZ_SPAWNERS:
+        _gz(spawn, launch, workspace, config)
+        return []
+    host = _host(config, started, decl, spawn.ros_version)
+    made = _description(spawn, launch, workspace, config)
+    if made is None:
+        own_partial(host, f"the robot description spawned at {decl.location.file}:"
+                          f"{decl.location.line} is not known", owned)
+        return []
+    record, expanded = made
+    config.robot_descriptions.append(record)
+    for reason in expanded.unknown[:3]:
+        own_partial(host, f"robot description: {reason}", owned)
+    out: list[tuple[NodeInstance, list[PrimitiveCall]]] = []
+    if expanded.root is not None:
         for element in _plugins(expanded.root):
             out.extend(_plugin(element, spawn, host, record, config, workspace, owned))
-    out.extend(bridges(config, launch, started, workspace))
     return out
 
 
@@ -158,9 +169,9 @@ def _gz(spawn: Spawn, launch: LaunchModel, workspace: Workspace,
             found = diag.make("GAZEBO_PLUGIN_UNKNOWN", where, filename=filename,
                               host="gz sim")
             config.diagnostics.append(found)
-            _partial(record, f"{found.message} ({where.file}:{where.line})")
+            _record_partial(record, f"{found.message} ({where.file}:{where.line})")
         elif reason:
-            _partial(record, f"{filename}: {reason} ({where.file}:{where.line})")
+            _record_partial(record, f"{filename}: {reason} ({where.file}:{where.line})")
 
 
 # -- the description --------------------------------------------------------------------
@@ -269,7 +280,7 @@ def _expanded(path: str, args: dict[str, str | xacro.Partial], name: str, where:
     if expanded.root is None and not expanded.unknown:
         expanded.unknown.append(f"{workspace.relpath(path)} is not read")
     for reason in expanded.unknown:
-        _partial(record, reason)
+        _record_partial(record, reason)
     return record, expanded
 
 
@@ -297,7 +308,7 @@ def _plugins(root: etree._Element) -> Iterator[etree._Element]:
         yield element
 
 
-def _partial(record: RobotDescription, reason: str) -> None:
+def _record_partial(record: RobotDescription, reason: str) -> None:
     record.completeness = "partial"
     if len(record.completeness_reasons) < 5 and reason not in record.completeness_reasons:
         record.completeness_reasons.append(reason)
@@ -344,7 +355,7 @@ def _plugin(element: etree._Element, spawn: Spawn, host: NodeInstance,
         config.diagnostics.append(found)
         reason = f"{found.message} ({where.file}:{where.line})"
         own_partial(host, reason, owned)
-        _partial(record, reason)
+        _record_partial(record, reason)
         return []
     if row.partial:
         own_partial(host, f"Gazebo plugin {name}: {row.partial} ({where.file}:{where.line})",

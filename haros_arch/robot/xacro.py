@@ -44,14 +44,19 @@ MAX_FILES = 64
 MAX_DEPTH = 32  # includes and macro calls nested
 MAX_ELEMENTS = 50_000
 MAX_TEXT = 100_000  # characters of one evaluated value
+MAX_PARAMS_TEXT = 10_000  # characters of a macro's params
+MAX_CHARACTERS = 20_000_000  # characters of all evaluated text
 MAX_FILE_BYTES = 4 * 1024 * 1024
 # a private attribute on elements kept under an ``if`` whose value is not known
 CONDITION = "{urn:haros-arch}condition"
 FILE = "{urn:haros-arch}file"  # the file an element comes from (on roots and MARKED)
 MARKED = ("plugin", "ros2_control")
 _TOKENS = re.compile(r"\$\$+[{(]|\$\{[^}]*\}|\$\([^)]*\)|[^$]+|\$[^{($]+|\$$|\$")
+# xacro's ``re_macro_arg``, with its default's ``(?:'.*?'|".*?"|[^\s'"]+)+`` written so
+# that each character is matched one way only (theirs backtracks exponentially on an
+# unterminated quote)
 _MACRO_ARG = re.compile(
-    r"""^\s*([^\s:=]+?)\s*:?=\s*(\^\|?)?(\$\{.*?\}|\$\(.*?\)|(?:'.*?'|".*?"|[^\s'"]+)+|)"""
+    r"""^\s*([^\s:=]+?)\s*:?=\s*(\^\|?)?(\$\{.*?\}|\$\(.*?\)|(?:'[^']*'|"[^"]*"|[^\s'"])+|)"""
     r"""(?:\s+|$)(.*)""", re.S)
 
 
@@ -168,6 +173,7 @@ class _Expander:
         self.workspace = workspace
         self.environment = environment
         self.elements = 0
+        self.characters = 0  # of evaluated text made
         self.files: list[str] = []  # the stack of files being read
 
     # -- diagnostics and unknowns ----------------------------------------------------------
@@ -302,8 +308,14 @@ class _Expander:
         if isinstance(value, Partial):
             for reason in value.reasons:
                 self.unknown(element, reason)
-            return value.text
-        return _str(value)
+        made = _str(value)
+        if made is not text:
+            self.characters += len(made)
+            if self.characters > MAX_CHARACTERS:
+                self.report(element, "ROBOT_DESCRIPTION_LIMIT",
+                            detail=f"more than {MAX_CHARACTERS} characters of values")
+                raise _Stop
+        return made
 
     def evaluate(self, element: Element, text: str, scope: _Scope) -> Any:
         """xacro's ``eval_text``: one ``${}`` or ``$()`` alone keeps its type."""
@@ -538,7 +550,12 @@ def _macro(self: _Expander, element: Element, scope: _Scope, depth: int) -> list
         return []
     params: list[tuple[str, tuple[str | None, str | None] | None]] = []
     rest = element.get("params") or ""
-    for _ in range(1000):
+    if len(rest) > MAX_PARAMS_TEXT:
+        self.report(element, "ROBOT_DESCRIPTION_LIMIT",
+                    detail=f"macro {name} has parameters longer than {MAX_PARAMS_TEXT} "
+                           "characters")
+        raise _Stop
+    for _ in range(MAX_PARAMS_TEXT):
         if not rest.strip():
             break
         match = _MACRO_ARG.match(rest)
