@@ -172,3 +172,16 @@ def test_a_long_value_copied_everywhere_is_bounded(tmp_path: Path):
     description = tmp_expand(tmp_path, f'<xacro:property name="p" value="{long}"/>{uses}')
     assert description.root is None
     assert [code for code, _ in codes(description)] == ["ROBOT_DESCRIPTION_LIMIT"]
+
+
+def test_an_include_with_a_namespace_keeps_its_macros_and_properties_apart(tmp_path: Path):
+    write(tmp_path, "parts.xacro", '<robot xmlns:xacro="http://www.ros.org/wiki/xacro">'
+          '<xacro:property name="k" value="9"/>'
+          '<xacro:macro name="m" params="v"><p v="${v} ${k}"/></xacro:macro></robot>')
+    description = tmp_expand(tmp_path, '<xacro:property name="k" value="1"/>'
+                                       '<xacro:include filename="parts.xacro" ns="parts"/>'
+                                       '<xacro:parts.m v="${k}"/><q k="${k}"/><xacro:m v="0"/>')
+    root = description.root
+    assert root.find("p").get("v") == "1 9"  # the argument in the caller's scope
+    assert root.find("q").get("k") == "1"
+    assert codes(description) == [("ROBOT_DESCRIPTION_XACRO", 1)]  # m is parts.m only

@@ -91,6 +91,9 @@ INLINE = {
         '<xacro:if value="0"><c/></xacro:if><xacro:unless value="false"><d/></xacro:unless>'
         '<xacro:element xacro:name="${\'e\' + \'f\'}" k="1"><xacro:attribute name="z" '
         'value="n${3*3}"/></xacro:element>',  # (a number alone breaks theirs)
+    "an include with its own namespace":
+        '<xacro:property name="k" value="1"/><xacro:include filename="parts.xacro" ns="p"/>'
+        '<xacro:p.m v="${k}"/>',
     "arguments and escapes":
         '<xacro:arg name="n" default="4"/><a v="$(arg n)" w="${int(\'$(arg n)\') + 1}" '
         'd="$${not evaluated}"/>',
@@ -100,6 +103,9 @@ INLINE = {
 @pytest.mark.parametrize("name", list(INLINE))
 def test_constructs_expand_as_the_real_xacro_does(name: str, tmp_path: Path,
                                                   monkeypatch: pytest.MonkeyPatch):
+    (tmp_path / "parts.xacro").write_text(
+        '<robot xmlns:xacro="http://www.ros.org/wiki/xacro"><xacro:property name="k" '
+        'value="9"/><xacro:macro name="m" params="v"><p v="${v} ${k}"/></xacro:macro></robot>')
     path = tmp_path / "robot.urdf.xacro"
     path.write_text('<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">'
                     + INLINE[name] + "</robot>")

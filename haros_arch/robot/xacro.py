@@ -92,16 +92,21 @@ class _Macro:
     params: list[tuple[str, tuple[str | None, str | None] | None]]
     body: Element
     where: tuple[str, int]
+    # the scope of the file included with ns= that defines it: its body sees that
+    # file's properties first (others see the caller's, as xacro scopes them)
+    home: _Scope | None = None
 
 
 class _Scope:
     """Properties and macros, looked up through the enclosing scopes."""
 
-    def __init__(self, parent: _Scope | None = None) -> None:
+    def __init__(self, parent: _Scope | None = None, namespace: bool = False) -> None:
         self.parent = parent
+        self.namespace = namespace  # the scope of a file included with ns=
         self.values: dict[str, Any] = {}
         self.lazy: dict[str, str] = {}  # name -> unevaluated text
         self.macros: dict[str, _Macro] = {}
+        self.namespaces: dict[str, _Scope] = {}  # xacro:include ns=: its own macros
 
     def owner(self, name: str) -> _Scope | None:
         scope: _Scope | None = self
@@ -112,10 +117,14 @@ class _Scope:
         return None
 
     def macro(self, name: str) -> _Macro | None:
+        """The macro ``name`` (``ns.name``: of the file included with ``ns=``)."""
+        head, dot, rest = name.partition(".")
         scope: _Scope | None = self
         while scope is not None:
-            if name in scope.macros:
+            if not dot and name in scope.macros:
                 return scope.macros[name]
+            if dot and head in scope.namespaces:
+                return scope.namespaces[head].macro(rest)
             scope = scope.parent
         return None
 
@@ -443,7 +452,7 @@ class _Expander:
                         detail=f"unknown macro xacro:{name}")
             self.unknown(element, f"macro {name} is not defined")
             return []
-        inner = _Scope(scope)
+        inner = _Scope(macro.home or scope)
         given = {str(k): str(v) for k, v in element.attrib.items()}
         params = [p for p, _ in macro.params]
         for key, value in given.items():
@@ -567,7 +576,8 @@ def _macro(self: _Expander, element: Element, scope: _Scope, depth: int) -> list
             params.append((words[0], None))
             rest = words[1] if len(words) > 1 else ""
     path = self.files[-1] if self.files else self.description.path
-    scope.macros[name] = _Macro(name, params, element, (path, line_of(element)))
+    scope.macros[name] = _Macro(name, params, element, (path, line_of(element)),
+                                scope if scope.namespace else None)
     return []
 
 
@@ -587,15 +597,17 @@ def _include(self: _Expander, element: Element, scope: _Scope, depth: int) -> li
     if not os.path.isabs(path):
         here = self.files[-1] if self.files else self.description.path
         path = os.path.join(os.path.dirname(here), path)
-    if element.get("ns"):
-        self.report(element, "ROBOT_DESCRIPTION_XACRO",
-                    detail="xacro:include ns= is read without its namespace")
+    namespace = self.text_of(element, element.get("ns") or "", scope)
     optional = element.get("optional") in ("true", "1")
     if optional and not os.path.isfile(path):
         return []
     root = self.read(path, element)
     if root is None:
         return []
+    if namespace:  # its macros and properties are its own, called as ns.name
+        inner = _Scope(scope, namespace=True)
+        scope.namespaces[namespace] = inner
+        scope = inner
     self.process(root, scope, depth + 1)
     return list(root)
 
