@@ -178,3 +178,22 @@ def test_gz_systems_make_no_ros_calls_and_bridges_make_their_topics_ros_topics()
 def test_parameter_bridge_arguments(argument: str, expected: list[tuple[str, str]]):
     calls = list(_from_arguments([argument], NOWHERE))
     assert [(c.kind, c.type) for c in calls] == expected
+
+
+def test_ros1_textfile_description_in_a_namespace():
+    # spawn_model adds its namespace as robotNamespace to plugins that have none
+    config = configuration(ROS1, "bot_gazebo/launch/textfile.launch")
+    assert made(config) == [
+        ("/gazebo", "publish", "/plain/ground_truth/odom", "nav_msgs/Odometry"),
+        ("/gazebo", "publish", "/plain/joint_states", "sensor_msgs/JointState"),
+    ]
+    assert config.robot_descriptions[0].name == "/plain/robot_description"
+
+
+def test_ros2_xml_command_substitution_gives_the_description():
+    config = configuration(ROS2, "bot2_description/launch/sim.launch.xml")
+    (description,) = config.robot_descriptions
+    assert (description.name, description.links) == ("/xml/robot_description",
+                                                     ["x_base_link"])
+    assert ("/bot2/lidar_driver", "publish", "/bot2/scan", "sensor_msgs/msg/LaserScan") \
+        in made(config)

@@ -61,7 +61,8 @@ class ParamDecl:
     # ROS 2: index in LaunchModel.nodes of the node declaration it was given to (several
     # unnamed nodes share the name ``/?`` until the graph names them from their code)
     owner: int | None = None
-    # ROS 1 ``command=``: the command line the value comes from, ``?`` for unknown parts
+    # ROS 1 ``command=`` / ``textfile=`` (``cat FILE``), ROS 2 ``Command()`` /
+    # ``$(command)``: the command line the value comes from, ``?`` for unknown parts
     # (it is never run; robot descriptions read the xacro file it names)
     command: str | None = None
 

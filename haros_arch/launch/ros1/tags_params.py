@@ -8,6 +8,7 @@ is never run: the parameter exists with an unknown value.
 from __future__ import annotations
 
 import os
+import shlex
 from typing import TYPE_CHECKING, Any
 
 from lxml import etree
@@ -54,7 +55,9 @@ def tag_param(loader: Ros1Loader, element: Element, scope: Scope,
         loader.fail(scope, element, f"invalid <param> {name}: unknown type '{kind}'")
         return
     where = loader.where(scope, element)
-    command = raw.text if source == "command" else None
+    # the command line the value comes from (textfile: the file's content, as cat gives it)
+    command = raw.text if source == "command" else (
+        f"cat {shlex.quote(raw.text)}" if source == "textfile" else None)
     declared = type_name(value) if value is not None else (
         None if kind == "auto" else kind)
     if name.startswith("~") or local:

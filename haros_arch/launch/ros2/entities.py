@@ -122,6 +122,7 @@ class Command(Subst):
     kept for the readers that understand it (robot descriptions read xacro's file)."""
 
     command: Text
+    origin: str = "Command (never run) is not evaluated; its value is unknown"
 
 
 # -- conditions --------------------------------------------------------------------
