@@ -373,6 +373,9 @@ def _plugin(element: etree._Element, spawn: Spawn, host: NodeInstance,
     if row.partial:
         instance.node.mark_partial(f"{row.partial} ({where.file}:{where.line})")
     described.node = instance.name
+    taken = sum(1 for n in config.nodes if n.name == instance.name)
+    if taken:  # two robots' plugins of one name in one namespace: kept apart by id
+        instance.id += f"#{taken + 1}"
     config.nodes.append(instance)
     return [(instance, calls)]
 
