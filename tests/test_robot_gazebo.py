@@ -100,8 +100,12 @@ def test_ros2_plugins_are_nodes_of_their_own_with_namespace_and_remappings():
         ("/bot2/drive", "publish", "/bot2/odom", "nav_msgs/msg/Odometry"),
         ("/bot2/drive", "subscribe", "/bot2/cmd_vel", "geometry_msgs/msg/Twist"),
         ("/bot2/lidar_driver", "publish", "/bot2/scan", "sensor_msgs/msg/LaserScan"),
+        # a depth camera: its sensor's name, and the depth topics
         ("/camera_driver", "publish", "/cam/camera_info", "sensor_msgs/msg/CameraInfo"),
+        ("/camera_driver", "publish", "/cam/depth/camera_info", "sensor_msgs/msg/CameraInfo"),
+        ("/camera_driver", "publish", "/cam/depth/image_raw", "sensor_msgs/msg/Image"),
         ("/camera_driver", "publish", "/cam/image_raw", "sensor_msgs/msg/Image"),
+        ("/camera_driver", "publish", "/cam/points", "sensor_msgs/msg/PointCloud2"),
     ]
     drive = config.node("/bot2/drive")
     assert drive.origin == "description" and drive.node.name == \

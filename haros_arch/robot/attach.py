@@ -447,6 +447,9 @@ def _template(element: etree._Element, row: Plugin, text: str, depth: int = 0) -
 def _truth(element: etree._Element, entity: Entity) -> bool | None:
     if entity.when is None:
         return True
+    if entity.when == "@depth":
+        sensor = next(element.iterancestors("sensor"), None)
+        return sensor is not None and sensor.get("type") == "depth"
     values = []
     for key in entity.when.split("|"):
         text = _child(element, key)

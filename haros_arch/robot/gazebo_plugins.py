@@ -36,7 +36,9 @@ class Entity:
     kind: str  # publish | subscribe | server | read (the call kinds)
     name: str  # template over child elements: ``{topicName}``, ``{cameraName}/image_raw``
     type: str  # canonical type of the row's ROS version, or a ``{element}`` template
-    when: str | None = None  # a child element that must be true for it to exist
+    # a child element that must be true for it to exist (``a|b``: either), or ``@depth``:
+    # the plugin's <sensor> is a depth camera
+    when: str | None = None
     when_default: bool = True  # its value when absent
 
 
@@ -151,16 +153,19 @@ PLUGINS: tuple[Plugin, ...] = (
                "hector_gazebo_plugins/SetReferenceGeoPose")),
         defaults=(("topicName", "fix"), ("velocityTopicName", "fix_velocity"))),
     # -- ROS 2: gazebo_ros_pkgs (ros2) -----------------------------------------------------
+    # one plugin for cameras and depth cameras: a <sensor type="depth"> adds the depth
+    # image, its info and the point cloud; <triggered> a trigger subscription
     _ros2("gazebo_ros_camera", entities=(
         Entity("publish", "{camera_name}/image_raw", "sensor_msgs/msg/Image"),
-        Entity("publish", "{camera_name}/camera_info", "sensor_msgs/msg/CameraInfo")),
-        defaults=(("camera_name", "{@sensor}"),)),
-    _ros2("gazebo_ros_depth_camera", entities=(
-        Entity("publish", "{camera_name}/image_raw", "sensor_msgs/msg/Image"),
         Entity("publish", "{camera_name}/camera_info", "sensor_msgs/msg/CameraInfo"),
-        Entity("publish", "{camera_name}/depth/image_raw", "sensor_msgs/msg/Image"),
-        Entity("publish", "{camera_name}/depth/camera_info", "sensor_msgs/msg/CameraInfo"),
-        Entity("publish", "{camera_name}/points", "sensor_msgs/msg/PointCloud2")),
+        Entity("publish", "{camera_name}/depth/image_raw", "sensor_msgs/msg/Image",
+               when="@depth"),
+        Entity("publish", "{camera_name}/depth/camera_info", "sensor_msgs/msg/CameraInfo",
+               when="@depth"),
+        Entity("publish", "{camera_name}/points", "sensor_msgs/msg/PointCloud2",
+               when="@depth"),
+        Entity("subscribe", "{camera_name}/image_trigger", "std_msgs/msg/Empty",
+               when="triggered", when_default=False)),
         defaults=(("camera_name", "{@sensor}"),)),
     _ros2("gazebo_ros_imu_sensor", entities=(
         Entity("publish", "~/out", "sensor_msgs/msg/Imu"),)),
@@ -177,6 +182,27 @@ PLUGINS: tuple[Plugin, ...] = (
         Entity("subscribe", "cmd_vel", "geometry_msgs/msg/Twist"),
         Entity("publish", "odom", "nav_msgs/msg/Odometry", when="publish_odom"),
         Entity("publish", "/tf", "tf2_msgs/msg/TFMessage", when="publish_odom_tf"))),
+    _ros2("gazebo_ros_ackermann_drive", entities=(
+        Entity("subscribe", "cmd_vel", "geometry_msgs/msg/Twist"),
+        Entity("publish", "odom", "nav_msgs/msg/Odometry", when="publish_odom",
+               when_default=False),
+        Entity("publish", "distance", "std_msgs/msg/Float32", when="publish_distance",
+               when_default=False),
+        Entity("publish", "steerangle", "std_msgs/msg/Float32", when="publish_steerangle",
+               when_default=False),
+        Entity("publish", "/tf", "tf2_msgs/msg/TFMessage", when="publish_odom_tf|publish_wheel_tf",
+               when_default=False))),
+    _ros2("gazebo_ros_tricycle_drive", entities=(
+        Entity("subscribe", "cmd_vel", "geometry_msgs/msg/Twist"),
+        Entity("publish", "joint_states", "sensor_msgs/msg/JointState",
+               when="publish_wheel_joint_state", when_default=False),
+        Entity("publish", "odom", "nav_msgs/msg/Odometry", when="publish_odom",
+               when_default=False))),
+    _ros2("gazebo_ros_gps_sensor", entities=(
+        Entity("publish", "~/out", "sensor_msgs/msg/NavSatFix"),
+        Entity("publish", "~/vel", "geometry_msgs/msg/Vector3Stamped"))),
+    _ros2("gazebo_ros_ft_sensor", entities=(
+        Entity("publish", "wrench", "geometry_msgs/msg/WrenchStamped"),)),
     _ros2("gazebo_ros_joint_state_publisher", entities=(
         Entity("publish", "joint_states", "sensor_msgs/msg/JointState"),)),
     _ros2("gazebo_ros_p3d", entities=(Entity("publish", "odom", "nav_msgs/msg/Odometry"),)),
