@@ -118,6 +118,22 @@ PLUGINS: tuple[Plugin, ...] = (
         Entity("publish", "joint_states", "sensor_msgs/JointState"),)),
     # p3d refuses to load without <topicName>
     _ros1("gazebo_ros_p3d", entities=(Entity("publish", "{topicName}", "nav_msgs/Odometry"),)),
+    # ft_sensor and f3d need <topicName> (no default); range and block_laser have one
+    _ros1("gazebo_ros_ft_sensor", entities=(
+        Entity("publish", "{topicName}", "geometry_msgs/WrenchStamped"),)),
+    _ros1("gazebo_ros_f3d", entities=(
+        Entity("publish", "{topicName}", "geometry_msgs/WrenchStamped"),)),
+    _ros1("gazebo_ros_range", entities=(Entity("publish", "{topicName}", "sensor_msgs/Range"),),
+          defaults=(("topicName", "/range"),)),
+    _ros1("gazebo_ros_block_laser", entities=(
+        Entity("publish", "{topicName}", "sensor_msgs/PointCloud"),),
+        defaults=(("topicName", "/world"),)),
+    _ros1("gazebo_ros_tricycle_drive", namespace="model", entities=(
+        Entity("subscribe", "{commandTopic}", "geometry_msgs/Twist"),
+        Entity("publish", "{odometryTopic}", "nav_msgs/Odometry"),
+        Entity("publish", "joint_states", "sensor_msgs/JointState",
+               when="publishWheelJointState", when_default=False)),
+        defaults=_DRIVE_1_DEFAULTS),
     _ros1("gazebo_ros_bumper", entities=(
         Entity("publish", "{bumperTopicName}", "gazebo_msgs/ContactsState"),),
         defaults=(("bumperTopicName", "bumper_states"),)),
