@@ -126,7 +126,8 @@ def test_ros2_spawner_file_is_read_as_it_is():
         ("/imu_driver", "publish", "/imu", "sensor_msgs/msg/Imu"),
         ("/states", "publish", "/joint_states", "sensor_msgs/msg/JointState"),
     ]
-    assert config.robot_descriptions[0].file == "bot2_description/models/bot2.sdf"
+    assert (config.robot_descriptions[0].name, config.robot_descriptions[0].file) == (
+        "bot2_description/models/bot2.sdf", "bot2_description/models/bot2.sdf")
 
 
 def test_robot_descriptions_survive_the_json_model():

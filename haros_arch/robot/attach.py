@@ -186,7 +186,8 @@ def _description(spawn: Spawn, launch: LaunchModel, workspace: Workspace,
             return None
         if not os.path.isfile(path):
             path = share_source(workspace, path)
-        return _expanded(path, {}, spawn.file, decl.location, workspace, config)
+        return _expanded(path, {}, workspace.relpath(path), decl.location, workspace,
+                         config)
     if spawn.param is not None:
         name = resolve(spawn.param, decl.namespace)
         param = _last_param(launch.params, name)
