@@ -364,7 +364,8 @@ def _plugin(element: etree._Element, spawn: Spawn, host: NodeInstance,
     conditions = (*spawn.decl.conditions, *conditions)
     if spawn.ros_version == 1:
         namespace = _ros1_namespace(element, row, spawn, host)
-        calls = list(_calls(element, row, where, conditions, namespace))
+        calls = list(_calls(element, row, where, conditions, namespace,
+                            as_namespace(host.namespace)))
         described.node = host.name
         return [(host, calls)]
     instance = _ros2_instance(element, name, spawn, host, where, conditions)
@@ -467,7 +468,10 @@ def _truth(element: etree._Element, entity: Entity) -> bool | None:
 
 def _calls(element: etree._Element, row: Plugin, where: Location,
            conditions: tuple[Condition, ...], namespace: str | None,
-           ) -> Iterator[PrimitiveCall]:
+           home: str = "/") -> Iterator[PrimitiveCall]:
+    """The plugin's calls. ROS 1 (``namespace``: its node handle's): a relative name is
+    joined to that namespace and written relative to the gazebo node's (``home``) when it
+    lies in it, as the node resolves it; a name the description writes global stays so."""
     for entity in row.entities:
         truth = _truth(element, entity)
         if truth is False:
@@ -484,6 +488,8 @@ def _calls(element: etree._Element, row: Plugin, where: Location,
             kind = f"{package}/msg/{message}"
         if namespace is not None and not name.startswith("/"):
             name = clean(namespace + name)
+            if name.startswith(home) and len(name) > len(home):
+                name = name[len(home):]
         yield PrimitiveCall(cast(CallKind, entity.kind), name,
                             kind if entity.kind != "read" else None,
                             conditions=(*conditions, *extra), location=where,
