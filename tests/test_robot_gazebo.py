@@ -202,3 +202,11 @@ def test_ros2_xml_command_substitution_gives_the_description():
                                                      ["x_base_link"])
     assert ("/bot2/lidar_driver", "publish", "/bot2/scan", "sensor_msgs/msg/LaserScan") \
         in made(config)
+
+
+def test_ros2_python_xacro_process_file_gives_the_description():
+    config = configuration(ROS2, "bot2_description/launch/process_file.launch.py")
+    (description,) = config.robot_descriptions
+    assert (description.name, description.links) == ("/pf/robot_description",
+                                                     ["pf_base_link"])
+    assert ("/bot2/drive", "publish", "/bot2/odom", "nav_msgs/msg/Odometry") in made(config)
