@@ -185,3 +185,16 @@ def test_an_include_with_a_namespace_keeps_its_macros_and_properties_apart(tmp_p
     assert root.find("p").get("v") == "1 9"  # the argument in the caller's scope
     assert root.find("q").get("k") == "1"
     assert codes(description) == [("ROBOT_DESCRIPTION_XACRO", 1)]  # m is parts.m only
+
+
+def test_load_yaml_reads_a_workspace_file_with_xacro_angle_tags(tmp_path: Path):
+    write(tmp_path, "limits.yaml", "joint:\n  min: !degrees -90\n  max: !radians pi/4\n")
+    write(tmp_path, "bad.yaml", "joint: !python/object:os.system ls\n")
+    description = tmp_expand(
+        tmp_path, '<xacro:property name="c" value="${xacro.load_yaml(\'limits.yaml\')}"/>'
+                  '<j lo="${c[\'joint\'][\'min\']}" hi="${c[\'joint\'][\'max\']}"/>\n'
+                  '<k v="${load_yaml(\'bad.yaml\')}"/>')
+    j = description.root.find("j")
+    assert (float(j.get("lo")), float(j.get("hi"))) == (-1.5707963267948966, 0.7853981633974483)
+    assert description.root.find("k").get("v") == "?"  # the safe loader refuses the tag
+    assert codes(description) == [("ROBOT_DESCRIPTION_XACRO", 2)]

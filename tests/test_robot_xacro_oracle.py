@@ -94,6 +94,9 @@ INLINE = {
     "an include with its own namespace":
         '<xacro:property name="k" value="1"/><xacro:include filename="parts.xacro" ns="p"/>'
         '<xacro:p.m v="${k}"/>',
+    "yaml files":
+        '<xacro:property name="c" value="${xacro.load_yaml(\'limits.yaml\')}"/>'
+        '<j lo="${c[\'joint\'][\'min\']}" hi="${c[\'joint\'][\'max\']}" n="${len(c)}"/>',
     "arguments and escapes":
         '<xacro:arg name="n" default="4"/><a v="$(arg n)" w="${int(\'$(arg n)\') + 1}" '
         'd="$${not evaluated}"/>',
@@ -106,6 +109,7 @@ def test_constructs_expand_as_the_real_xacro_does(name: str, tmp_path: Path,
     (tmp_path / "parts.xacro").write_text(
         '<robot xmlns:xacro="http://www.ros.org/wiki/xacro"><xacro:property name="k" '
         'value="9"/><xacro:macro name="m" params="v"><p v="${v} ${k}"/></xacro:macro></robot>')
+    (tmp_path / "limits.yaml").write_text("joint:\n  min: !degrees -90\n  max: !radians pi/4\n")
     path = tmp_path / "robot.urdf.xacro"
     path.write_text('<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">'
                     + INLINE[name] + "</robot>")

@@ -22,16 +22,19 @@ and ``MAX_ELEMENTS`` elements made. Problems are diagnostics with the file and l
 from __future__ import annotations
 
 import copy
+import math
 import os
 import re
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
+import yaml
 from lxml import etree
 
 from .. import diagnostics as diag
-from ..files import read_bytes
+from .. import safe_yaml
+from ..files import read_bytes, read_text
 from ..launch import expression
 from ..manifest import xml_parser
 from ..model.diagnostic import Diagnostic
@@ -51,6 +54,7 @@ MAX_FILE_BYTES = 4 * 1024 * 1024
 CONDITION = "{urn:haros-arch}condition"
 FILE = "{urn:haros-arch}file"  # the file an element comes from (on roots and MARKED)
 MARKED = ("plugin", "ros2_control")
+_XACRO_FUNCTION = re.compile(r"\bxacro\.(load_yaml)\s*\(")
 _TOKENS = re.compile(r"\$\$+[{(]|\$\{[^}]*\}|\$\([^)]*\)|[^$]+|\$[^{($]+|\$$|\$")
 # xacro's ``re_macro_arg``, with its default's ``(?:'.*?'|".*?"|[^\s'"]+)+`` written so
 # that each character is matched one way only (theirs backtracks exponentially on an
@@ -373,14 +377,38 @@ class _Expander:
                 return expression.Unknown(f"{name} is a block", "unsupported")
             return value
 
-        functions = {**expression.BUILTINS, **expression.MATH}
-        result = expression.evaluate(_str(inner), names, functions)
+        functions = {**expression.BUILTINS, **expression.MATH,
+                     "load_yaml": self.load_yaml, "xacro_load_yaml": self.load_yaml}
+        # xacro's own functions are attributes of its ``xacro`` name: called by name here
+        source = _XACRO_FUNCTION.sub(r"xacro_\1(", _str(inner))
+        result = expression.evaluate(source, names, functions)
         if isinstance(result, expression.Unknown):
             if result.kind != "unknown":  # refused or wrong, not just unknown inputs
                 self.report(element, "ROBOT_DESCRIPTION_XACRO",
                             detail=f"${{{text}}}: {result.reason}")
             return Partial(UNKNOWN_MARK, tuple(reasons) or (f"${{{text}}}: {result.reason}",))
         return result
+
+    def load_yaml(self, path: object) -> object:
+        """``xacro.load_yaml(file)``: a workspace YAML file, read with the safe loader
+        (bounded); relative to the file being read, as xacro's ``abs_filename_spec``."""
+        if not isinstance(path, str):
+            return expression.Unknown("load_yaml of a file not known")
+        if not os.path.isabs(path):
+            here = self.files[-1] if self.files else self.description.path
+            path = os.path.join(os.path.dirname(here), path)
+        if not self.workspace.readable(path, self.environment) or not os.path.isfile(path):
+            return expression.Unknown(f"{self.workspace.relpath(path)} is not read")
+        text, found = read_text(path, self.workspace.location(path, 1), MAX_FILE_BYTES)
+        self.description.diagnostics.extend(found)
+        try:
+            value = safe_yaml.load(text, _YamlLoader) if text is not None else None
+        except yaml.YAMLError as err:
+            problem = getattr(err, "problem", None) or type(err).__name__
+            return expression.Unknown(f"{self.workspace.relpath(path)} is not YAML: "
+                                      f"{problem}", "error")
+        return expression.Unknown(f"{self.workspace.relpath(path)} is empty") \
+            if value is None else value
 
     def lookup(self, element: Element, name: str, scope: _Scope) -> Any:
         owner = scope.owner(name)
@@ -698,6 +726,26 @@ _HANDLERS: dict[str, Callable[[_Expander, Element, _Scope, int], list[Element]]]
     "insert_block": _insert_block, "call": _dynamic_call, "element": _named_element,
     "attribute": _attribute,
 }
+
+
+class _YamlLoader(yaml.SafeLoader):
+    """The safe loader with xacro's angle tags: ``!degrees 90`` is radians,
+    ``!radians pi/2`` an expression of the safe evaluator."""
+
+
+def _angle(factor: float) -> Callable[[yaml.SafeLoader, yaml.Node], Any]:
+    def construct(loader: yaml.SafeLoader, node: yaml.Node) -> Any:
+        text = loader.construct_scalar(node)  # type: ignore[arg-type]
+        value = expression.evaluate(str(text), None, expression.MATH)
+        if isinstance(value, (int, float)) and not isinstance(value, bool):
+            return float(value) * factor
+        raise yaml.constructor.ConstructorError(None, None, f"angle {text!r} is not a number",
+                                                node.start_mark)
+    return construct
+
+
+_YamlLoader.add_constructor("!degrees", _angle(math.pi / 180.0))
+_YamlLoader.add_constructor("!radians", _angle(1.0))
 
 
 def _literal(value: Any) -> Any:
