@@ -198,3 +198,12 @@ def test_load_yaml_reads_a_workspace_file_with_xacro_angle_tags(tmp_path: Path):
     assert (float(j.get("lo")), float(j.get("hi"))) == (-1.5707963267948966, 0.7853981633974483)
     assert description.root.find("k").get("v") == "?"  # the safe loader refuses the tag
     assert codes(description) == [("ROBOT_DESCRIPTION_XACRO", 2)]
+
+
+def test_macro_arguments_are_read_as_numbers_as_xacro_does(tmp_path: Path):
+    description = tmp_expand(tmp_path, '<xacro:macro name="w" params="reflect s:=2.5">'
+                                       '<a v="${reflect * 3}" s="${s * 2}"/></xacro:macro>'
+                                       '<xacro:w reflect="-1"/>')
+    a = description.root.find("a")
+    assert (a.get("v"), a.get("s")) == ("-3", "5.0")
+    assert not description.diagnostics

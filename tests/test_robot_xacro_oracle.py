@@ -94,6 +94,10 @@ INLINE = {
     "an include with its own namespace":
         '<xacro:property name="k" value="1"/><xacro:include filename="parts.xacro" ns="p"/>'
         '<xacro:p.m v="${k}"/>',
+    "macro arguments read as numbers":
+        '<xacro:macro name="w" params="reflect s:=2.5 q:=\'x\'">'
+        '<a v="${reflect * 3}" s="${s * 2}" q="${q}"/></xacro:macro>'
+        '<xacro:w reflect="-1"/><xacro:w reflect="0.5" s="1" q="y"/>',
     "yaml files":
         '<xacro:property name="c" value="${xacro.load_yaml(\'limits.yaml\')}"/>'
         '<j lo="${c[\'joint\'][\'min\']}" hi="${c[\'joint\'][\'max\']}" n="${len(c)}"/>',

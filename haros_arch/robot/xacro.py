@@ -490,7 +490,7 @@ class _Expander:
                 self.report(element, "ROBOT_DESCRIPTION_XACRO",
                             detail=f"invalid parameter {key} of macro {name}")
                 continue
-            inner.values[key] = self.evaluate(element, value, scope)
+            inner.values[key] = _literal(self.evaluate(element, value, scope))
         blocks: list[Element] = []
         for child in [c for c in element if isinstance(c.tag, str)]:
             holder = etree.Element("block")  # blocks are evaluated in the caller's scope
@@ -516,7 +516,7 @@ class _Expander:
             if forward is not None and scope.owner(forward) is not None:
                 inner.values[param] = self.lookup(element, forward, scope)
             elif text is not None:
-                inner.values[param] = self.evaluate(element, text, scope)
+                inner.values[param] = _literal(self.evaluate(element, text, scope))
             else:
                 inner.values[param] = Partial(UNKNOWN_MARK, (f"{param} is not given",))
         body = copy.deepcopy(macro.body)
