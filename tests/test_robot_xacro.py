@@ -207,3 +207,11 @@ def test_macro_arguments_are_read_as_numbers_as_xacro_does(tmp_path: Path):
     a = description.root.find("a")
     assert (a.get("v"), a.get("s")) == ("-3", "5.0")
     assert not description.diagnostics
+
+
+def test_text_after_a_xacro_element_is_evaluated_and_kept(tmp_path: Path):
+    description = tmp_expand(tmp_path, '<xacro:property name="n" value="2"/>'
+                                       '<x>a<xacro:if value="1"><y/></xacro:if>${n}b'
+                                       '<xacro:if value="0"><z/></xacro:if>${n+1}</x>')
+    x = description.root.find("x")
+    assert (x.text, x.find("y").tail, len(x)) == ("a", "2b3", 1)

@@ -252,39 +252,27 @@ class _Expander:
             raise _Stop
         if parent.text:
             parent.text = self.text_of(parent, parent.text, scope)
-        child = parent[0] if len(parent) else None
-        while child is not None:
-            following = child.getnext()
+        made: list[Element] = []  # the children as they come out, put back at once
+        for child in list(parent):
             self.elements += 1
             if self.elements > MAX_ELEMENTS:
                 self.report(child, "ROBOT_DESCRIPTION_LIMIT",
                             detail=f"more than {MAX_ELEMENTS} elements")
                 raise _Stop
-            if isinstance(child.tag, str):
-                replacement = self.element(child, scope, depth)
-                if replacement is not None:
-                    self.splice(child, replacement)
-            if child.tail:
-                child.tail = self.text_of(parent, child.tail, scope)
-            child = following
-
-    def splice(self, old: Element, new: list[Element]) -> None:
-        """Put ``new`` (processed elements) where ``old`` is, keeping ``old``'s tail."""
-        parent = old.getparent()
-        if parent is None:
-            return
-        index = parent.index(old)
-        tail = old.tail
-        parent.remove(old)
-        for offset, element in enumerate(new):
-            parent.insert(index + offset, element)
-        if tail and tail.strip():
-            if new:
-                new[-1].tail = (new[-1].tail or "") + tail
-            elif index > 0:
-                parent[index - 1].tail = (parent[index - 1].tail or "") + tail
-            else:
-                parent.text = (parent.text or "") + tail
+            replacement = self.element(child, scope, depth) \
+                if isinstance(child.tag, str) else None
+            tail = self.text_of(parent, child.tail, scope) if child.tail else child.tail
+            if replacement is None:
+                child.tail = tail
+                made.append(child)
+                continue
+            made.extend(replacement)
+            if tail and tail.strip():  # text after a xacro element stays where it was
+                if made:
+                    made[-1].tail = (made[-1].tail or "") + tail
+                else:
+                    parent.text = (parent.text or "") + tail
+        parent[:] = made
 
     def element(self, element: Element, scope: _Scope, depth: int) -> list[Element] | None:
         """Handle one child; a list replaces it (empty: removed), None keeps it."""
