@@ -215,3 +215,31 @@ def test_text_after_a_xacro_element_is_evaluated_and_kept(tmp_path: Path):
                                        '<xacro:if value="0"><z/></xacro:if>${n+1}</x>')
     x = description.root.find("x")
     assert (x.text, x.find("y").tail, len(x)) == ("a", "2b3", 1)
+
+
+def test_find_in_a_ros2_package_reads_the_file_its_install_rules_put_there(tmp_path: Path):
+    package = tmp_path / "arm_description"
+    (package / "description" / "control").mkdir(parents=True)
+    (package / "urdf").mkdir()
+    (package / "package.xml").write_text(
+        '<package format="3"><name>arm_description</name><version>1.0.0</version>'
+        '<description>d</description><maintainer email="a@b.c">a</maintainer>'
+        '<license>MIT</license><buildtool_depend>ament_cmake</buildtool_depend>'
+        '<export><build_type>ament_cmake</build_type></export></package>')
+    (package / "CMakeLists.txt").write_text(
+        "cmake_minimum_required(VERSION 3.8)\nproject(arm_description)\n"
+        "find_package(ament_cmake REQUIRED)\n"
+        "install(DIRECTORY description/control urdf DESTINATION share/${PROJECT_NAME})\n"
+        "ament_package()\n")
+    (package / "description" / "control" / "arm.ros2_control.xacro").write_text(
+        '<robot xmlns:xacro="http://ros.org/wiki/xacro"><xacro:macro name="control">'
+        '<ros2_control name="Arm" type="system"/></xacro:macro></robot>')
+    top = package / "urdf" / "arm.urdf.xacro"
+    top.write_text('<robot name="arm" xmlns:xacro="http://ros.org/wiki/xacro">'
+                   '<xacro:include filename="$(find arm_description)/control/'
+                   'arm.ros2_control.xacro"/><xacro:control/></robot>')
+    description = xacro.expand(str(top), {}, scan([str(tmp_path)], {}), {})
+    assert description.root.find("ros2_control").get("name") == "Arm"
+    assert [os.path.relpath(f, tmp_path) for f in description.files] == [
+        "arm_description/urdf/arm.urdf.xacro",
+        "arm_description/description/control/arm.ros2_control.xacro"]

@@ -39,6 +39,7 @@ from ..launch import expression
 from ..manifest import xml_parser
 from ..model.diagnostic import Diagnostic
 from ..model.values import UNKNOWN_MARK
+from ..share import share_source
 from ..workspace import Workspace
 
 Element = etree._Element
@@ -208,7 +209,7 @@ class _Expander:
         if len(self.description.files) >= MAX_FILES:
             self.report(at, "ROBOT_DESCRIPTION_LIMIT", detail=f"more than {MAX_FILES} files")
             raise _Stop
-        path = os.path.abspath(path)
+        path = _source(self.workspace, os.path.abspath(path))
         if not self.workspace.readable(path, self.environment):
             self.unknown(at, f"{self.workspace.relpath(path)} is outside the workspace")
             return None
@@ -385,6 +386,7 @@ class _Expander:
         if not os.path.isabs(path):
             here = self.files[-1] if self.files else self.description.path
             path = os.path.join(os.path.dirname(here), path)
+        path = _source(self.workspace, path)
         if not self.workspace.readable(path, self.environment) or not os.path.isfile(path):
             return expression.Unknown(f"{self.workspace.relpath(path)} is not read")
         text, found = read_text(path, self.workspace.location(path, 1), MAX_FILE_BYTES)
@@ -734,6 +736,13 @@ def _angle(factor: float) -> Callable[[yaml.SafeLoader, yaml.Node], Any]:
 
 _YamlLoader.add_constructor("!degrees", _angle(math.pi / 180.0))
 _YamlLoader.add_constructor("!radians", _angle(1.0))
+
+
+def _source(workspace: Workspace, path: str) -> str:
+    """The file ``path`` names: itself, or, for a path in a ROS 2 package's share folder
+    (``$(find pkg)/ros2_control/x.xacro`` installed from ``description/ros2_control``),
+    the source file its install rules put there."""
+    return path if os.path.isfile(path) else share_source(workspace, path)
 
 
 def _literal(value: Any) -> Any:
