@@ -78,6 +78,15 @@ _DRIVE_1 = (
 )
 _DRIVE_1_DEFAULTS = (("commandTopic", "cmd_vel"), ("odometryTopic", "odom"))
 
+# ROS 2 drives: cmd_vel, odom when <publish_odom> (false when absent), /tf when either tf
+_DRIVE_2 = (
+    Entity("subscribe", "cmd_vel", "geometry_msgs/msg/Twist"),
+    Entity("publish", "odom", "nav_msgs/msg/Odometry", when="publish_odom",
+           when_default=False),
+)
+_WHEEL_TF_2 = Entity("publish", "/tf", "tf2_msgs/msg/TFMessage",
+                     when="publish_odom_tf|publish_wheel_tf", when_default=False)
+
 PLUGINS: tuple[Plugin, ...] = (
     # -- ROS 1: gazebo_ros_pkgs (noetic-devel) -------------------------------------------
     _ros1("gazebo_ros_camera", "gazebo_ros_triggered_camera", namespace="sensor",
@@ -188,32 +197,21 @@ PLUGINS: tuple[Plugin, ...] = (
     # ray sensor: <output_type> chooses the message (PointCloud2 when absent)
     _ros2("gazebo_ros_ray_sensor", entities=(Entity("publish", "~/out", "{output_type}"),),
           defaults=(("output_type", "sensor_msgs/PointCloud2"),)),
-    _ros2("gazebo_ros_diff_drive", entities=(
-        Entity("subscribe", "cmd_vel", "geometry_msgs/msg/Twist"),
-        Entity("publish", "odom", "nav_msgs/msg/Odometry", when="publish_odom",
-               when_default=False),
-        Entity("publish", "/tf", "tf2_msgs/msg/TFMessage", when="publish_odom_tf|publish_wheel_tf",
-               when_default=False))),
+    _ros2("gazebo_ros_diff_drive", entities=(*_DRIVE_2, _WHEEL_TF_2)),
     _ros2("gazebo_ros_planar_move", entities=(
         Entity("subscribe", "cmd_vel", "geometry_msgs/msg/Twist"),
         Entity("publish", "odom", "nav_msgs/msg/Odometry", when="publish_odom"),
         Entity("publish", "/tf", "tf2_msgs/msg/TFMessage", when="publish_odom_tf"))),
     _ros2("gazebo_ros_ackermann_drive", entities=(
-        Entity("subscribe", "cmd_vel", "geometry_msgs/msg/Twist"),
-        Entity("publish", "odom", "nav_msgs/msg/Odometry", when="publish_odom",
-               when_default=False),
+        *_DRIVE_2, _WHEEL_TF_2,
         Entity("publish", "distance", "std_msgs/msg/Float32", when="publish_distance",
                when_default=False),
         Entity("publish", "steerangle", "std_msgs/msg/Float32", when="publish_steerangle",
-               when_default=False),
-        Entity("publish", "/tf", "tf2_msgs/msg/TFMessage", when="publish_odom_tf|publish_wheel_tf",
                when_default=False))),
     _ros2("gazebo_ros_tricycle_drive", entities=(
-        Entity("subscribe", "cmd_vel", "geometry_msgs/msg/Twist"),
+        *_DRIVE_2,
         Entity("publish", "joint_states", "sensor_msgs/msg/JointState",
-               when="publish_wheel_joint_state", when_default=False),
-        Entity("publish", "odom", "nav_msgs/msg/Odometry", when="publish_odom",
-               when_default=False))),
+               when="publish_wheel_joint_state", when_default=False))),
     _ros2("gazebo_ros_gps_sensor", entities=(
         Entity("publish", "~/out", "sensor_msgs/msg/NavSatFix"),
         Entity("publish", "~/vel", "geometry_msgs/msg/Vector3Stamped"))),
