@@ -35,7 +35,8 @@ CODES = ("ROBOT_DESCRIPTION_XACRO", "ROBOT_DESCRIPTION_FILE", "ROBOT_DESCRIPTION
 def run(project: Project, env: dict[str, str], jobs: int, enabled: bool) -> Model:
     graph_build = importlib.import_module("haros_arch.graph.build")
     robot_attach = importlib.import_module("haros_arch.robot.attach")
-    graph_build.attach_descriptions = robot_attach.attach if enabled else (lambda *a: [])
+    graph_build.attach_descriptions = robot_attach.attach if enabled else (
+        lambda *a: robot_attach.Attached([], []))
     return pipeline.analyse(project, env,
                             pipeline.Options(cache_dir=pipeline.AUTO_CACHE, jobs=jobs))
 

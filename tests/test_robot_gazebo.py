@@ -117,7 +117,7 @@ def test_ros2_plugins_are_nodes_of_their_own_with_namespace_and_remappings():
     assert description.links == ["front_base_link"]
     (control,) = description.ros2_control
     assert (control.name, control.hardware, control.joints, control.location.line) == (
-        "GazeboSystem", "gazebo_ros2_control/GazeboSystem", ["front_wheel_joint"], 28)
+        "GazeboSystem", "gazebo_ros2_control/GazeboSystem", ["front_wheel_joint"], 33)
 
 
 def test_ros2_spawner_file_is_read_as_it_is():
@@ -210,3 +210,19 @@ def test_ros2_python_xacro_process_file_gives_the_description():
     assert (description.name, description.links) == ("/pf/robot_description",
                                                      ["pf_base_link"])
     assert ("/bot2/drive", "publish", "/bot2/odom", "nav_msgs/msg/Odometry") in made(config)
+
+
+def test_gazebo_ros2_control_starts_a_controller_manager_that_hosts_the_spawned_controllers():
+    # the plugin's <parameters> file gives the controller's class; its package is not
+    # in the workspace here, so the host says which class it could not find
+    config = configuration(ROS2, "bot2_description/launch/sim.launch.py")
+    manager = config.node("/controller_manager")
+    assert manager is not None and manager.origin == "description"
+    (missing,) = [d for d in config.diagnostics if d.code == "PLUGIN_NOT_FOUND"]
+    assert "diff_drive_controller/DiffDriveController" in missing.message
+    assert "/controller_manager" in missing.message
+    assert (missing.location.file, missing.location.line) == (
+        "bot2_description/params/controllers.yaml", 1)
+    (separation,) = [p for p in config.parameters if p.name == "/base/wheel_separation"]
+    assert separation.value == 0.3 and separation.set_by_launch
+    assert config.node("/gazebo_ros2_control").completeness == "partial"

@@ -121,8 +121,11 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
         for call in instance.node.calls_of(own):
             for each in element_calls(call, instance, resources):  # list parameters
                 link(instance, each, remaps, resources, config)
-    for instance, calls in [*attach_plugins(config, started, nodes, resources, workspace),
-                            *attach_descriptions(config, launch, started, workspace)]:
+    # robot descriptions first: a ros2_control Gazebo plugin starts a controller manager
+    # whose controllers the plugin hosts load
+    described = attach_descriptions(config, launch, started, workspace, resources)
+    for instance, calls in [*attach_plugins(config, [*started, *described.managers], nodes,
+                                            resources, workspace), *described.calls]:
         remaps = resolve_remaps(instance.remaps, instance.namespace, instance.name)
         for call in calls:
             for each in element_calls(call, instance, resources):

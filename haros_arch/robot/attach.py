@@ -27,20 +27,24 @@ import shlex
 from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
 from functools import partial
-from typing import cast
+from typing import Any, cast
 
+import yaml
 from lxml import etree
 
 from .. import diagnostics as diag
+from .. import safe_yaml
+from ..files import read_text
 from ..launch.model import LaunchModel, NodeDecl, ParamDecl
+from ..launch.ros2.naming import params_for_node
 from ..model.conditions import Condition
 from ..model.location import NOWHERE, Location
 from ..model.robot import DescribedControl, DescribedPlugin, RobotDescription
 from ..model.rosname import as_namespace, clean, namespace_of, resolve
-from ..model.runtime import Configuration, NodeInstance
+from ..model.runtime import Configuration, NodeInstance, Parameter
 from ..model.source import CallKind, Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK
-from ..plugins.attach import own_partial
+from ..plugins.attach import Params, own_partial
 from ..share import share_source
 from ..workspace import Workspace
 from . import xacro
@@ -53,6 +57,8 @@ SPAWNERS = {("gazebo_ros", "spawn_model"): 1, ("gazebo_ros", "spawn_entity.py"):
 GZ_SPAWNERS = (("ros_gz_sim", "create"), ("ros_ign_gazebo", "create"))
 GAZEBO_EXECUTABLES = ("gzserver", "gazebo", "debug", "gzserver_with_gdb", "perf")
 GAZEBO_NAME = "/gazebo"
+MANAGER = "controller_manager"  # the node ros2_control's Gazebo plugins start
+GZ_MANAGERS = ("gz_ros2_control-system", "ign_ros2_control-system")
 MAX_PLUGINS = 500  # per description
 # spawner options that take a value (``-J`` takes two)
 _VALUED = {"-file", "-param", "-topic", "-database", "-model", "-entity", "-robot_namespace",
@@ -103,31 +109,44 @@ def spawn_args(decl: NodeDecl, ros_version: int) -> Spawn:
     return spawn
 
 
+@dataclass
+class Attached:
+    """What the descriptions of a configuration add: calls by node instance, and the
+    controller managers their ros2_control plugins start (as if a launch file started
+    ``ros2_control_node``: the plugin host table then loads their controllers)."""
+
+    calls: list[tuple[NodeInstance, list[PrimitiveCall]]]
+    managers: list[tuple[NodeDecl, NodeInstance]]
+
+
 def attach(config: Configuration, launch: LaunchModel,
            started: Sequence[tuple[NodeDecl, NodeInstance]], workspace: Workspace,
-           ) -> list[tuple[NodeInstance, list[PrimitiveCall]]]:
+           params: Params) -> Attached:
     """The calls of the Gazebo plugins of the spawned descriptions, by node instance;
-    instances made here are added to ``config.nodes``."""
-    out: list[tuple[NodeInstance, list[PrimitiveCall]]] = []
+    instances made here are added to ``config.nodes``, the parameters a ros2_control
+    plugin's ``<parameters>`` files set to ``params``."""
+    out = Attached([], [])
     owned: set[int] = set()
     for decl, _ in started:
         ros_version = SPAWNERS.get((decl.package, decl.executable))
         if ros_version is None:
             continue
         spawn = spawn_args(decl, ros_version)
-        out.extend(diag.per_file(  # a bug of ours in one description: the run goes on
+        out.calls.extend(diag.per_file(  # a bug of ours in one description: the run goes on
             decl.location, decl.location.file or "", config.diagnostics,
-            partial(_spawned, spawn, started, launch, workspace, config, owned), []))
-    out.extend(bridges(config, launch, started, workspace))
+            partial(_spawned, spawn, started, launch, workspace, config, owned, params,
+                    out.managers), []))
+    out.calls.extend(bridges(config, launch, started, workspace))
     return out
 
 
 def _spawned(spawn: Spawn, started: Sequence[tuple[NodeDecl, NodeInstance]],
              launch: LaunchModel, workspace: Workspace, config: Configuration,
-             owned: set[int]) -> list[tuple[NodeInstance, list[PrimitiveCall]]]:
+             owned: set[int], params: Params, managers: list[tuple[NodeDecl, NodeInstance]],
+             ) -> list[tuple[NodeInstance, list[PrimitiveCall]]]:
     decl = spawn.decl
     if (decl.package, decl.executable) in GZ_SPAWNERS:
-        _gz(spawn, launch, workspace, config)
+        _gz(spawn, launch, workspace, config, params, managers)
         return []
     host = _host(config, started, decl, spawn.ros_version)
     made = _description(spawn, launch, workspace, config)
@@ -142,12 +161,13 @@ def _spawned(spawn: Spawn, started: Sequence[tuple[NodeDecl, NodeInstance]],
     out: list[tuple[NodeInstance, list[PrimitiveCall]]] = []
     if expanded.root is not None:
         for element in _plugins(expanded.root):
-            out.extend(_plugin(element, spawn, host, record, config, workspace, owned))
+            out.extend(_plugin(element, spawn, host, record, config, workspace, owned,
+                               params, managers))
     return out
 
 
-def _gz(spawn: Spawn, launch: LaunchModel, workspace: Workspace,
-        config: Configuration) -> None:
+def _gz(spawn: Spawn, launch: LaunchModel, workspace: Workspace, config: Configuration,
+        params: Params, managers: list[tuple[NodeDecl, NodeInstance]]) -> None:
     """A description spawned into gz sim: its systems talk gz transport, not ROS (a
     ros_gz bridge makes their topics ROS topics), so none is a node of the graph; the
     description is kept, and a library that is not a gz system is a diagnostic."""
@@ -165,6 +185,9 @@ def _gz(spawn: Spawn, launch: LaunchModel, workspace: Workspace,
                                               conditions=[c.text for c in _conditions(
                                                   element, where)]))
         reason = gz_system(filename)
+        if reason is not None and _base(filename) in GZ_MANAGERS:
+            managers.append(_manager(element, spawn, where, _conditions(element, where),
+                                     workspace, config, params))
         if reason is None:
             found = diag.make("GAZEBO_PLUGIN_UNKNOWN", where, filename=filename,
                               host="gz sim")
@@ -342,7 +365,8 @@ def _host(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance]
 # -- one plugin -------------------------------------------------------------------------
 def _plugin(element: etree._Element, spawn: Spawn, host: NodeInstance,
             record: RobotDescription, config: Configuration, workspace: Workspace,
-            owned: set[int]) -> list[tuple[NodeInstance, list[PrimitiveCall]]]:
+            owned: set[int], params: Params, managers: list[tuple[NodeDecl, NodeInstance]],
+            ) -> list[tuple[NodeInstance, list[PrimitiveCall]]]:
     filename = element.get("filename") or ""
     name = element.get("name") or ""
     where = _where(element, workspace)
@@ -368,6 +392,9 @@ def _plugin(element: etree._Element, spawn: Spawn, host: NodeInstance,
                             as_namespace(host.namespace)))
         described.node = host.name
         return [(host, calls)]
+    if row.manager:
+        managers.append(_manager(element, spawn, where, conditions, workspace, config,
+                                 params))
     instance = _ros2_instance(element, name, spawn, host, where, conditions)
     calls = list(_calls(element, row, where, conditions, None))
     instance.node = Node("gazebo_plugins", _base(filename), kind="plugin", calls=calls,
@@ -380,6 +407,74 @@ def _plugin(element: etree._Element, spawn: Spawn, host: NodeInstance,
         instance.id += f"#{taken + 1}"
     config.nodes.append(instance)
     return [(instance, calls)]
+
+
+def _manager(element: etree._Element, spawn: Spawn, where: Location,
+             conditions: tuple[Condition, ...], workspace: Workspace,
+             config: Configuration, params: Params) -> tuple[NodeDecl, NodeInstance]:
+    """The controller manager a gazebo_ros2_control / gz_ros2_control plugin starts:
+    ``controller_manager`` in the plugin's ``<ros><namespace>``, with the parameters of
+    its ``<parameters>`` files, as a launch file's ``ros2_control_node`` would be."""
+    namespace = as_namespace(spawn.robot_namespace or _child(element, "ros/namespace") or "/")
+    name = clean(namespace + MANAGER)
+    decl = NodeDecl(name, "controller_manager", "ros2_control_node", namespace=namespace,
+                    conditions=(*spawn.decl.conditions, *conditions), location=where,
+                    ros_version=2)
+    instance = NodeInstance(name, None, namespace=namespace, conditions=decl.conditions,
+                            location=where, origin="description", ros_version=2)
+    taken = sum(1 for n in config.nodes if n.name == name)
+    instance.id = f"node:{name}" + (f"#{taken + 1}" if taken else "")
+    config.nodes.append(instance)
+    for file in element.iterfind("parameters"):
+        document = _yaml_file((file.text or "").strip(), where, workspace, config)
+        if document is None:
+            continue
+        for node in _node_names(document, namespace):
+            for key, value in params_for_node(document, node):
+                parameter = params.get(Parameter, f"{node}/{key}")
+                assert isinstance(parameter, Parameter)
+                if not parameter.set_by_launch:
+                    parameter.value, parameter.set_by_launch = value, True
+                    parameter.launch_location = workspace.location(
+                        share_source(workspace, (file.text or "").strip()), 1)
+                    parameter.launch_conditions = decl.conditions
+    return decl, instance
+
+
+def _node_names(document: Any, namespace: str) -> list[str]:
+    """The nodes a ROS 2 parameter file names, in ``namespace`` (its own ``/`` keys
+    as they are); ``/**`` is for every node and names none."""
+    if not isinstance(document, dict):
+        return []
+    names = []
+    for key in list(document)[:MAX_PLUGINS]:
+        text = str(key)
+        if "*" in text:
+            continue
+        names.append(text if text.startswith("/") else clean(namespace + text))
+    return names
+
+
+def _yaml_file(path: str, where: Location, workspace: Workspace,
+               config: Configuration) -> Any:
+    """A YAML file a plugin element names, read with the safe loader (None if not)."""
+    if not path or UNKNOWN_MARK in path or not os.path.isabs(path):
+        return None
+    path = path if os.path.isfile(path) else share_source(workspace, path)
+    if not os.path.isfile(path) or not workspace.readable(path):
+        config.diagnostics.append(diag.make("ROBOT_DESCRIPTION_FILE", where,
+                                            path=workspace.relpath(path),
+                                            detail="no such file in the workspace"))
+        return None
+    text, found = read_text(path, workspace.location(path, 1))
+    config.diagnostics.extend(found)
+    try:
+        return safe_yaml.load(text) if text is not None else None
+    except yaml.YAMLError:
+        config.diagnostics.append(diag.make("ROBOT_DESCRIPTION_FILE", where,
+                                            path=workspace.relpath(path),
+                                            detail="not YAML"))
+        return None
 
 
 def _where(element: etree._Element, workspace: Workspace) -> Location:

@@ -51,6 +51,7 @@ class Plugin:
     namespace: str = "plain"  # ROS 1 rule (module docstring)
     # why the interface is not all known (what it loads in turn), or None
     partial: str | None = None
+    manager: bool = False  # it starts a ros2_control controller manager node
 
 
 def _ros1(*filenames: str, entities: tuple[Entity, ...], namespace: str = "plain",
@@ -59,8 +60,9 @@ def _ros1(*filenames: str, entities: tuple[Entity, ...], namespace: str = "plain
 
 
 def _ros2(*filenames: str, entities: tuple[Entity, ...],
-          defaults: tuple[tuple[str, str], ...] = (), partial: str | None = None) -> Plugin:
-    return Plugin(filenames, 2, entities, defaults, "ros2", partial)
+          defaults: tuple[tuple[str, str], ...] = (), partial: str | None = None,
+          manager: bool = False) -> Plugin:
+    return Plugin(filenames, 2, entities, defaults, "ros2", partial, manager)
 
 
 _CAMERA_1 = (
@@ -222,17 +224,18 @@ PLUGINS: tuple[Plugin, ...] = (
     _ros2("gazebo_ros_p3d", entities=(Entity("publish", "odom", "nav_msgs/msg/Odometry"),)),
     _ros2("gazebo_ros_bumper", entities=(
         Entity("publish", "bumper_states", "gazebo_msgs/msg/ContactsState"),)),
-    _ros2("gazebo_ros2_control", entities=(),
-          partial="the controllers its controller manager loads are not read"),
+    # gazebo_ros2_control: a controller manager node (controller_manager in the plugin's
+    # namespace) that loads the controllers spawners name, as ros2_control_node does
+    _ros2("gazebo_ros2_control", entities=(), manager=True,
+          partial="the plugin node's own calls (how it reads the description) are not "
+                  "in the table"),
 )
 
 
 GZ_PREFIXES = ("gz-sim", "ignition-gazebo", "gz_ros2_control", "ign_ros2_control")
-# gz sim systems that are ROS nodes after all; the others talk gz transport only
-GZ_ROS = {"gz_ros2_control-system": "the controllers its controller manager loads are not "
-                                    "read",
-          "ign_ros2_control-system": "the controllers its controller manager loads are not "
-                                     "read"}
+# gz sim systems that are ROS nodes after all (gz_ros2_control starts a controller
+# manager, robot/attach.py); the others talk gz transport only
+GZ_ROS: dict[str, str] = {}
 
 
 def gz_system(filename: str) -> str | None:
