@@ -5,6 +5,7 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
+import pytest
 from conftest import FIXTURES
 from lxml import etree
 
@@ -243,3 +244,14 @@ def test_find_in_a_ros2_package_reads_the_file_its_install_rules_put_there(tmp_p
     assert [os.path.relpath(f, tmp_path) for f in description.files] == [
         "arm_description/urdf/arm.urdf.xacro",
         "arm_description/description/control/arm.ros2_control.xacro"]
+
+
+def test_expensive_expressions_stop_at_the_step_bound_and_the_deadline(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch):
+    heavy = '<a v="${sum([i * i for i in range(10 ** 6)])}"/>'
+    description = tmp_expand(tmp_path, heavy)
+    assert description.root.find("a").get("v") == "?"  # past the steps of one expression
+    monkeypatch.setattr(xacro, "MAX_SECONDS", 0.0)
+    stopped = tmp_expand(tmp_path, heavy * 3)
+    assert stopped.root is None
+    assert [code for code, _ in codes(stopped)] == ["ROBOT_DESCRIPTION_LIMIT"]

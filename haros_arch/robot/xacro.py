@@ -25,6 +25,7 @@ import copy
 import math
 import os
 import re
+import time
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
@@ -50,6 +51,11 @@ MAX_ELEMENTS = 50_000
 MAX_TEXT = 100_000  # characters of one evaluated value
 MAX_PARAMS_TEXT = 10_000  # characters of a macro's params
 MAX_CHARACTERS = 20_000_000  # characters of all evaluated text
+# an expression's evaluation steps (URDF arithmetic takes tens), and the seconds one
+# description may take in all: many expressions each just under the step bound stop
+# there, like a query at its deadline
+EXPRESSION_LIMITS = expression.Limits(steps=20_000)
+MAX_SECONDS = 20.0
 MAX_FILE_BYTES = 4 * 1024 * 1024
 # a private attribute on elements kept under an ``if`` whose value is not known
 CONDITION = "{urn:haros-arch}condition"
@@ -188,6 +194,7 @@ class _Expander:
         self.environment = environment
         self.elements = 0
         self.characters = 0  # of evaluated text made
+        self.deadline = time.monotonic() + MAX_SECONDS
         self.files: list[str] = []  # the stack of files being read
 
     # -- diagnostics and unknowns ----------------------------------------------------------
@@ -370,7 +377,11 @@ class _Expander:
                      "load_yaml": self.load_yaml, "xacro_load_yaml": self.load_yaml}
         # xacro's own functions are attributes of its ``xacro`` name: called by name here
         source = _XACRO_FUNCTION.sub(r"xacro_\1(", _str(inner))
-        result = expression.evaluate(source, names, functions)
+        if time.monotonic() > self.deadline:
+            self.report(element, "ROBOT_DESCRIPTION_LIMIT",
+                        detail=f"expanding took more than {MAX_SECONDS:g} s")
+            raise _Stop
+        result = expression.evaluate(source, names, functions, EXPRESSION_LIMITS)
         if isinstance(result, expression.Unknown):
             if result.kind != "unknown":  # refused or wrong, not just unknown inputs
                 self.report(element, "ROBOT_DESCRIPTION_XACRO",
