@@ -151,15 +151,16 @@ def test_xacro_command_lines(command: str, expected: object):
 
 def test_gz_systems_make_no_ros_calls_and_bridges_make_their_topics_ros_topics():
     config = configuration(ROS2, "bot2_description/launch/gz.launch.py")
+    # the bridges' jazzy interface models name the nodes (ros_gz_bridge, ros_gz_image)
+    # and know their parameters; the topics come from their arguments and config file
     assert made(config) == [
-        ("/image_bridge", "publish", "/camera/image_raw", "sensor_msgs/msg/Image"),
-        ("/parameter_bridge", "publish", "/clock", "rosgraph_msgs/msg/Clock"),
-        ("/parameter_bridge", "publish", "/joint_states", "sensor_msgs/msg/JointState"),
-        ("/parameter_bridge", "publish", "/scan", "sensor_msgs/msg/LaserScan"),
-        ("/parameter_bridge", "subscribe", "/cmd_vel", "geometry_msgs/msg/Twist"),
-        ("/parameter_bridge", "subscribe", "/joint_states", "sensor_msgs/msg/JointState"),
+        ("/ros_gz_bridge", "publish", "/clock", "rosgraph_msgs/msg/Clock"),
+        ("/ros_gz_bridge", "publish", "/joint_states", "sensor_msgs/msg/JointState"),
+        ("/ros_gz_bridge", "publish", "/scan", "sensor_msgs/msg/LaserScan"),
+        ("/ros_gz_bridge", "subscribe", "/cmd_vel", "geometry_msgs/msg/Twist"),
+        ("/ros_gz_bridge", "subscribe", "/joint_states", "sensor_msgs/msg/JointState"),
+        ("/ros_gz_image", "publish", "/camera/image_raw", "sensor_msgs/msg/Image"),
     ]
-    assert config.node("/parameter_bridge").completeness == "complete"
     (description,) = config.robot_descriptions
     assert [(p.filename, p.node) for p in description.plugins] == [
         ("gz-sim-diff-drive-system", None), ("libgazebo_ros_imu_sensor.so", None)]
@@ -226,3 +227,17 @@ def test_gazebo_ros2_control_starts_a_controller_manager_that_hosts_the_spawned_
     (separation,) = [p for p in config.parameters if p.name == "/base/wheel_separation"]
     assert separation.value == 0.3 and separation.set_by_launch
     assert config.node("/gazebo_ros2_control").completeness == "partial"
+
+
+def test_a_bridge_without_a_model_gets_a_node_of_its_own():
+    model = analyse(ROS2, "bot2_description/launch/gz.launch.py")
+    config = model.configurations[0]
+    assert config.node("/ros_gz_bridge").node.model is not None  # the shipped model
+    without = pipeline.analyse(
+        Project("robot", os.path.join(ROS2, "project.yaml"), workspace=[ROS2],
+                configurations=[ConfigurationSpec(
+                    "c", ["bot2_description/launch/gz.launch.py"], {})]),
+        {}, pipeline.Options(cache_dir=None, jobs=1, models=False)).configurations[0]
+    bridge = [n for n in without.nodes if n.node is not None
+              and n.node.executable == "parameter_bridge"]
+    assert [(n.completeness, len(n.node.calls)) for n in bridge] == [("complete", 5)]

@@ -10,8 +10,9 @@ and subscribes, ``[`` gz to ROS: it publishes, ``]`` ROS to gz: it subscribes; a
 Facts from ros_gz's ``ros_gz_bridge/src/parameter_bridge.cpp``, ``bridge_config.cpp``,
 ``ros_gz_bridge.cpp`` and ``ros_gz_image/src/image_bridge.cpp``.
 
-A bridge instance with no source and no interface model gets a node made here; one whose
-config file cannot be read is partial.
+A bridge instance with no source gets these calls: with no interface model, on a node
+made here (partial when its config file cannot be read); with one (the model knows the
+bridge's parameters, not the topics they name), beside the model's calls.
 """
 
 from __future__ import annotations
@@ -49,8 +50,11 @@ def bridges(config: Configuration, launch: LaunchModel,
     out = []
     for decl, instance in started:
         key = (decl.package, decl.executable)
-        if instance.node is not None or key not in (*PARAMETER_BRIDGES, *IMAGE_BRIDGES):
+        modelled = instance.node is not None and instance.node.model is not None
+        if (instance.node is not None and not modelled) or key not in (
+                *PARAMETER_BRIDGES, *IMAGE_BRIDGES):
             continue
+        # the calls go on a node of their own: a model's node is shared by its instances
         node = Node(decl.package, decl.executable, location=decl.location)
         positional, params = _arguments(decl.args)
         if key in IMAGE_BRIDGES:
@@ -62,7 +66,8 @@ def bridges(config: Configuration, launch: LaunchModel,
             path = _launch_param(launch, decl, "config_file") or params.get("config_file")
             if path:
                 node.calls.extend(_from_file(path, decl, node, workspace, config))
-        instance.node = node
+        if not modelled:  # a modelled instance stays as its model says (partial)
+            instance.node = node
         out.append((instance, list(node.calls)))
     return out
 
