@@ -1,0 +1,206 @@
+"""capture --ros2 and compare against a real DDS domain on loopback.
+
+A child process (tests/ros2_system.py) plays a running ROS 2 system with Cyclone DDS alone:
+participants, readers and writers named and typed as rmw names them, and the
+``ros_discovery_info`` writer that says which node owns which. The capture joins the same
+random domain, restricted to the loopback interface, from this process.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import random
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+from conftest import FIXTURES
+
+from haros_arch.cli import main
+from haros_arch.live import CaptureError, capture_ros2, compare
+from haros_arch.live.ros2 import action_type, ros_name, ros_type, service_type
+from haros_arch.model.serialise import model_to_data
+from haros_arch.pipeline import analyse
+from haros_arch.project import load
+
+pytest.importorskip("cyclonedds", reason="the 'live' extra is not installed")
+
+HERE = Path(__file__).parent
+LOOPBACK = (
+    "<CycloneDDS><Domain id='any'><General><Interfaces><NetworkInterface address='127.0.0.1'/>"
+    "</Interfaces><AllowMulticast>false</AllowMulticast></General><Discovery>"
+    "<ParticipantIndex>auto</ParticipantIndex><MaxAutoParticipantIndex>20"
+    "</MaxAutoParticipantIndex><Peers><Peer address='127.0.0.1'/></Peers></Discovery>"
+    "</Domain></CycloneDDS>")
+STRING, INT32, INT64 = (f"std_msgs::msg::dds_::{t}_" for t in ("String", "Int32", "Int64"))
+EMPTY, TRIGGER = "std_srvs::srv::dds_::Empty_", "std_srvs::srv::dds_::Trigger_"
+FIB = "example_interfaces::action::dds_::Fibonacci_"
+CANCEL = "action_msgs::srv::dds_::CancelGoal_"
+STATUS = "action_msgs::msg::dds_::GoalStatusArray_"
+
+
+def topic(name: str, type_: str, writes: bool, **qos) -> dict:
+    return {"topic": name, "type": type_, "writes": writes, "qos": qos}
+
+
+def service(name: str, type_: str, serves: bool) -> list[dict]:
+    """The request and reply topics of a service's server (or client)."""
+    return [topic(f"rq/{name}Request", f"{type_}Request_", not serves),
+            topic(f"rr/{name}Reply", f"{type_}Response_", serves)]
+
+
+def action(name: str, serves: bool) -> list[dict]:
+    return [*service(f"{name}/_action/send_goal", FIB[:-1] + "_SendGoal_", serves),
+            *service(f"{name}/_action/get_result", FIB[:-1] + "_GetResult_", serves),
+            *service(f"{name}/_action/cancel_goal", CANCEL, serves),
+            topic(f"rt/{name}/_action/feedback", FIB[:-1] + "_FeedbackMessage_", serves),
+            topic(f"rt/{name}/_action/status", STATUS, serves)]
+
+
+# the fixture live_ros2 as it runs, with one difference of each kind: /monitor is not
+# running and /rogue is (serving /ping), /status is not published, /count is published as
+# Int64 (the model: Int32), /chatter is offered best effort (the model: reliable), and a
+# DDS participant that is no ROS node publishes rt/debug
+SYSTEM = [
+    {"nodes": [
+        {"namespace": "/", "name": "talker", "endpoints": [
+            topic("rt/chatter", STRING, True, reliability="best_effort", deadline=2),
+            topic("rt/count", INT64, True),
+            topic("rt/rosout", "rcl_interfaces::msg::dds_::Log_", True,
+                  durability="transient_local"),
+            *service("talker/get_parameters", "rcl_interfaces::srv::dds_::GetParameters_", True),
+            *service("reset", EMPTY, True),
+            *action("fib", True)]},
+        {"namespace": "/", "name": "listener", "endpoints": [
+            topic("rt/chatter", STRING, False),
+            topic("rt/count", INT64, False),
+            *service("reset", EMPTY, False),
+            *action("fib", False)]}]},
+    {"nodes": [{"namespace": "/", "name": "rogue", "endpoints": service("ping", TRIGGER, True)}]},
+    {"nodes": [{"namespace": "/", "name": "-", "endpoints": [topic("rt/debug", STRING, True)]}],
+     "discovery_info": False},
+]
+
+
+@pytest.fixture
+def domain(monkeypatch):
+    monkeypatch.setenv("CYCLONEDDS_URI", LOOPBACK)
+    return random.randint(1, 200)
+
+
+def run_system(domain: int, tmp_path: Path, spec: list, width: int = 16):
+    """Start the system; the caller closes its stdin to stop it."""
+    spec_path = tmp_path / "system.json"
+    spec_path.write_text(json.dumps(spec))
+    env = {**os.environ, "PYTHONPATH": os.pathsep.join([str(HERE.parent), str(HERE)])}
+    child = subprocess.Popen(
+        [sys.executable, str(HERE / "ros2_system.py"), str(domain), str(spec_path), str(width)],
+        stdin=subprocess.PIPE, stdout=subprocess.PIPE, env=env, text=True)
+    assert child.stdout is not None and child.stdout.readline().strip() == "ready"
+    return child
+
+
+def stop(child) -> None:
+    child.stdin.close()
+    child.wait(timeout=10)
+
+
+@pytest.fixture(scope="module")
+def demo_model():
+    project = load(str(FIXTURES / "live_ros2/project.yaml"))
+    return json.loads(json.dumps(model_to_data(analyse(project, {"PATH": ""}))))
+
+
+def test_ros2_names_undone_as_rmw_made_them():
+    assert ros_name("rt/robot/scan") == ("topic", "/robot/scan")
+    assert ros_name("rq/add_two_intsRequest") == ("request", "/add_two_ints")
+    assert ros_name("rr/fib/_action/get_resultReply") == ("reply", "/fib/_action/get_result")
+    assert ros_name("ros_discovery_info") is None
+    assert ros_type(STRING) == "std_msgs/msg/String"
+    assert ros_type("MyDdsType") is None
+    assert service_type("std_srvs/srv/Trigger_Request") == "std_srvs/srv/Trigger"
+    assert action_type("example_interfaces/action/Fibonacci_SendGoal") \
+        == "example_interfaces/action/Fibonacci"
+
+
+@pytest.mark.parametrize("width", [16, 24], ids=["iron-and-later", "humble"])
+def test_capture_reads_nodes_endpoints_and_qos(domain, tmp_path, width):
+    child = run_system(domain, tmp_path, SYSTEM, width)
+    try:
+        live = capture_ros2(domain, 0.7)
+    finally:
+        stop(child)
+    assert live["ros"] == 2 and live["parameters"] is None
+    assert live["nodes"] == ["/listener", "/rogue", "/talker"]
+    topics = {t["name"]: t for t in live["topics"]}
+    assert set(topics) == {"/chatter", "/count", "/rosout", "/debug",
+                           "/fib/_action/feedback", "/fib/_action/status"}
+    chatter = topics["/chatter"]
+    assert (chatter["types"], chatter["publishers"], chatter["subscribers"]) \
+        == (["std_msgs/msg/String"], ["/talker"], ["/listener"])
+    offered = next(e["qos"] for e in chatter["endpoints"] if e["kind"] == "publish")
+    assert offered == {"reliability": "best_effort", "durability": "volatile",
+                       "history": "keep_last", "depth": 10, "deadline": 2.0,
+                       "liveliness": "automatic", "lease_duration": None}
+    # a participant that announces no node: its writer is nobody's, and said to be
+    assert topics["/debug"]["publishers"] == [] and live["unowned_endpoints"] == 1
+    services = {s["name"]: s for s in live["services"]}
+    assert services["/reset"] == {"name": "/reset", "types": ["std_srvs/srv/Empty"],
+                                  "servers": ["/talker"], "clients": ["/listener"]}
+    assert services["/ping"]["servers"] == ["/rogue"]
+    assert live["actions"] == [{"name": "/fib", "types": ["example_interfaces/action/Fibonacci"],
+                                "servers": ["/talker"], "clients": ["/listener"]}]
+
+
+def test_compare_shows_every_kind_of_difference_once(domain, tmp_path, demo_model, capsys):
+    child = run_system(domain, tmp_path, SYSTEM)
+    live_path, model_path = tmp_path / "live.json", tmp_path / "model.json"
+    try:
+        assert main(["capture", "--ros2", "--domain", str(domain), "--seconds", "0.7",
+                     "-o", str(live_path)]) == 0
+    finally:
+        stop(child)
+    result = compare(demo_model, json.loads(live_path.read_text()))
+    found = {s.kind: (s.missing, s.extra, s.differs) for s in result.scores}
+    assert found == {
+        "nodes": (["/rogue"], ["/monitor"], None),
+        "topics": (["/debug"], ["/status"], None),
+        # (a topic only on one side brings its type along)
+        "topic types": ([("/count", "std_msgs/msg/Int64"), ("/debug", "std_msgs/msg/String")],
+                        [("/count", "std_msgs/msg/Int32"), ("/status", "std_msgs/msg/String")],
+                        None),
+        "publish links": ([], [("/talker", "/status")], None),
+        "subscribe links": ([], [("/monitor", "/status")], None),
+        "services": (["/ping"], [], None),
+        "service links": ([("/rogue", "/ping")], [], None),
+        "service client links": ([], [], None),
+        "actions": ([], [], None),
+        "action server links": ([], [], None),
+        "action client links": ([], [], None),
+        "qos": (found["qos"][0], found["qos"][1],
+                ["/talker /chatter publish reliability: model reliable, live best_effort"]),
+    }
+    model_path.write_text(json.dumps(demo_model))
+    capsys.readouterr()
+    assert main(["compare", str(model_path), str(live_path), "--both"]) == 0
+    out = capsys.readouterr().out
+    assert "differs: /talker /chatter publish reliability: model reliable, live best_effort" \
+        in out
+    assert "missing: /rogue" in out and "extra:   /monitor" in out
+    assert "both:    /listener /reset" in out  # a service client link seen live and modelled
+
+
+def test_capture_without_the_binding_says_what_to_install(monkeypatch, capsys):
+    monkeypatch.setitem(sys.modules, "cyclonedds", None)
+    monkeypatch.setitem(sys.modules, "haros_arch.live.dds_types", None)
+    with pytest.raises(CaptureError, match="pip install"):
+        capture_ros2(0, 0.1)
+    assert main(["capture", "--ros2", "--seconds", "0.1"]) == 2
+    assert "haros-arch[live]" in capsys.readouterr().err
+
+
+def test_capture_refuses_a_domain_dds_cannot_have(capsys):
+    assert main(["capture", "--ros2", "--domain", "999", "--seconds", "0.1"]) == 2
+    assert "outside 0..232" in capsys.readouterr().err
