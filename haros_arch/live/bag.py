@@ -33,13 +33,13 @@ def capture_bag(path: str) -> dict[str, Any]:
         raise CaptureError(NEEDS) from None
     where = Path(path)
     if not where.exists():
-        raise CaptureError(f"{path}: no such file or folder")
+        raise CaptureError("no such file or folder")
     if where.is_file() and where.suffix == ".bag":
         return _rosbag1(where)
     folder = where if where.is_dir() else where.parent
     if not (folder / "metadata.yaml").is_file():
-        raise CaptureError(f"{path}: neither a ROS 1 .bag nor a ROS 2 bag "
-                           f"(no metadata.yaml in {folder})")
+        raise CaptureError(f"neither a ROS 1 .bag nor a ROS 2 bag (no metadata.yaml in "
+                           f"{folder})")
     return _rosbag2(folder)
 
 
@@ -51,7 +51,7 @@ def _rosbag1(path: Path) -> dict[str, Any]:
         with Reader(path) as reader:
             connections = list(reader.connections)
     except Exception as error:  # rosbags raises several kinds on a damaged file
-        raise CaptureError(f"{path}: {error}") from None
+        raise CaptureError(str(error) or type(error).__name__) from None
     callerids = False
     for connection in connections:
         callerid = getattr(connection.ext, "callerid", None) or None
@@ -86,7 +86,7 @@ def _rosbag2(folder: Path) -> dict[str, Any]:
         with Reader(folder) as reader:
             connections = list(reader.connections)
     except Exception as error:  # rosbags raises several kinds on a damaged bag
-        raise CaptureError(f"{folder}: {error}") from None
+        raise CaptureError(str(error) or type(error).__name__) from None
     for connection in connections:
         profiles = getattr(connection.ext, "offered_qos_profiles", None) or [None]
         for profile in profiles:
