@@ -13,6 +13,8 @@ import os
 import random
 import subprocess
 import sys
+import threading
+import time
 from pathlib import Path
 
 import pytest
@@ -73,6 +75,7 @@ SYSTEM = [
             *service("talker/get_parameters", "rcl_interfaces::srv::dds_::GetParameters_", True),
             *service("reset", EMPTY, True),
             *action("fib", True)]},
+        {"namespace": "/", "name": "launch_ros_4242"},  # made by `ros2 launch`: ignored
         {"namespace": "/", "name": "listener", "endpoints": [
             topic("rt/chatter", STRING, False),
             topic("rt/count", INT64, False),
@@ -133,7 +136,7 @@ def test_capture_reads_nodes_endpoints_and_qos(domain, tmp_path, width):
     finally:
         stop(child)
     assert live["ros"] == 2 and live["parameters"] is None
-    assert live["nodes"] == ["/listener", "/rogue", "/talker"]
+    assert live["nodes"] == ["/launch_ros_4242", "/listener", "/rogue", "/talker"]
     topics = {t["name"]: t for t in live["topics"]}
     assert set(topics) == {"/chatter", "/count", "/rosout", "/debug",
                            "/fib/_action/feedback", "/fib/_action/status"}
@@ -190,6 +193,28 @@ def test_compare_shows_every_kind_of_difference_once(domain, tmp_path, demo_mode
         in out
     assert "missing: /rogue" in out and "extra:   /monitor" in out
     assert "both:    /listener /reset" in out  # a service client link seen live and modelled
+
+
+def test_capture_writes_nothing(domain):
+    """The capture's participant has readers only: an observer in the domain sees no writer
+    of it (DDS announces the participant itself; that is all)."""
+    from cyclonedds.builtin import BuiltinDataReader, BuiltinTopicDcpsPublication
+    from cyclonedds.domain import DomainParticipant
+
+    observer = DomainParticipant(domain)
+    publications = BuiltinDataReader(observer, BuiltinTopicDcpsPublication)
+    found = []
+    worker = threading.Thread(target=lambda: found.append(capture_ros2(domain, 0.5)))
+    worker.start()
+    seen = []
+    while worker.is_alive():
+        seen.extend(s for s in publications.take(N=64) if s.participant_key != observer.guid)
+        time.sleep(0.05)
+    worker.join()
+    seen.extend(s for s in publications.take(N=64) if s.participant_key != observer.guid)
+    for entity in (publications, observer):
+        entity.__del__()
+    assert found and found[0]["topics"] == [] and seen == []
 
 
 def test_capture_without_the_binding_says_what_to_install(monkeypatch, capsys):
