@@ -11,7 +11,7 @@ import json
 import os
 import sys
 from collections.abc import Sequence
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from rich.console import Console
 from rich.markup import escape
@@ -99,6 +99,8 @@ def _parser() -> argparse.ArgumentParser:
     report.add_argument("--model", help="render this saved JSON model instead of extracting")
     report.add_argument("--workspace", help="folder the model's file paths are relative to")
     report.add_argument("-o", "--output", required=True, help="the HTML file to write")
+    report.add_argument("--live", metavar="LIVE",
+                        help="show this capture ('haros-arch capture') beside each graph")
     _run_options(report)
 
     launch = sub.add_parser("launch", help="nodes and parameters a ROS 1 or ROS 2 launch "
@@ -451,7 +453,8 @@ def cmd_compare(args: argparse.Namespace, out: Console, err: Console) -> int:
         with open(args.live, encoding="utf-8") as handle:
             live = json.load(handle)
         result = compare(model, live, args.config)
-    except (OSError, ValueError, KeyError, RecursionError, CompareError) as error:
+    except (OSError, ValueError, KeyError, TypeError, AttributeError, RecursionError,
+            CompareError) as error:
         err.print(f"haros-arch: cannot compare: {escape(str(error))}", highlight=False)
         return EXIT_USAGE
     if args.format == "json":
@@ -482,12 +485,27 @@ def cmd_report(args: argparse.Namespace, out: Console, err: Console) -> int:
             project = analysis.project
             data = model_data(analysis.model)
             findings = project_findings(analysis.model, project)
-        write_report(data, findings, workspace_root(project, args.workspace), args.output)
+        live = _live_comparison(data, args.live) if args.live else None
+        write_report(data, findings, workspace_root(project, args.workspace), args.output,
+                     live)
     except (ProjectError, ReportError) as error:
         err.print(f"haros-arch: {escape(str(error))}", highlight=False)
         return EXIT_USAGE
     out.print(f"wrote {args.output}", highlight=False)
     return EXIT_OK
+
+
+def _live_comparison(model: dict[str, Any], path: str) -> dict[str, Any]:
+    """Each configuration of ``model`` compared with the capture in ``path``."""
+    from .live.compare import CompareError, compare_all
+    from .viz import ReportError
+
+    try:
+        with open(path, encoding="utf-8") as handle:
+            return compare_all(model, json.load(handle))
+    except (OSError, ValueError, KeyError, TypeError, AttributeError, RecursionError,
+            CompareError) as error:
+        raise ReportError(f"cannot compare with {path}: {error}") from None
 
 
 def cmd_launch(args: argparse.Namespace, out: Console, err: Console) -> int:

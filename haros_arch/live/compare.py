@@ -171,6 +171,13 @@ def compare(model: dict[str, Any], live: dict[str, Any], name: str | None = None
     return Comparison(config["name"], [s for s in scores if _observed(s.kind, observed)])
 
 
+def compare_all(model: dict[str, Any], live: dict[str, Any]) -> dict[str, dict[str, Any]]:
+    """Every configuration of a model against one capture, as data by configuration name
+    (what the HTML report shows beside each configuration's graph)."""
+    return {config["name"]: compare(model, live, config["name"]).to_data()
+            for config in model.get("configurations", [])}
+
+
 def _observed(kind: str, observed: set[str]) -> bool:
     """Whether the capture can see this kind (action links: when it sees actions)."""
     return kind in observed or (kind.startswith("action ") and "actions" in observed)
