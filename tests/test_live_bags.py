@@ -120,6 +120,29 @@ def test_ros2_bag_gives_offered_qos_and_compare_holds_it_to_the_model(tmp_path, 
         in scores["qos"].matched
 
 
+@pytest.mark.parametrize("storage", [StoragePlugin.SQLITE3, StoragePlugin.MCAP],
+                         ids=["db3", "mcap"])
+def test_a_data_file_without_its_metadata_and_service_events(tmp_path, storage):
+    """A .db3 / .mcap shared alone keeps its topics and QoS; a recorded service-event topic
+    (service introspection) is the service, not a topic."""
+    bag = tmp_path / "run"
+    with Writer2(bag, version=9, storage_plugin=storage) as writer:
+        for topic, msgtype in (("/chatter", "std_msgs/msg/String"),
+                               ("/reset/_service_event", "std_srvs/srv/Empty_Event")):
+            # (the definition is never read: only the connection's names and QoS)
+            writer.add_connection(topic, msgtype, msgdef="uint8 structure_needs_at_least_one",
+                                  rihs01="RIHS01_" + "0" * 64,
+                                  offered_qos_profiles=[profile(QosReliability.RELIABLE)])
+    (bag / "metadata.yaml").unlink()
+    alone = next(p for p in bag.iterdir() if p.suffix in (".db3", ".mcap"))
+    live = capture_bag(str(alone))
+    assert [t["name"] for t in live["topics"]] == ["/chatter"]
+    assert live["services"] == [{"name": "/reset", "types": ["std_srvs/srv/Empty"],
+                                 "servers": [], "clients": []}]
+    assert live["observed"] == ["topics", "topic types", "qos", "services"]
+    assert live["topics"][0]["endpoints"][0]["qos"]["reliability"] == "reliable"
+
+
 def test_a_file_that_is_no_bag_is_a_clean_error(tmp_path, capsys):
     junk = tmp_path / "junk.bag"
     junk.write_bytes(b"#ROSBAG V2.0\n" + b"\xff" * 64)
@@ -127,8 +150,11 @@ def test_a_file_that_is_no_bag_is_a_clean_error(tmp_path, capsys):
         capture_bag(str(junk))
     assert main(["capture", "--bag", str(junk)]) == 2
     assert "cannot capture from" in capsys.readouterr().err
-    (tmp_path / "lone.mcap").write_bytes(b"")
-    assert main(["capture", "--bag", str(tmp_path / "lone.mcap")]) == 2
+    (tmp_path / "lone.txt").write_bytes(b"")
+    assert main(["capture", "--bag", str(tmp_path / "lone.txt")]) == 2
     assert "neither a ROS 1 .bag nor a ROS 2 bag" in capsys.readouterr().err
+    (tmp_path / "lone.mcap").write_bytes(b"\x89MCAP0\r\n" + b"\0" * 40)
+    assert main(["capture", "--bag", str(tmp_path / "lone.mcap")]) == 2
+    assert "cannot capture from" in capsys.readouterr().err
     assert main(["capture", "--bag", str(tmp_path / "missing.bag")]) == 2
     assert "no such file" in capsys.readouterr().err

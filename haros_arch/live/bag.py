@@ -37,10 +37,11 @@ def capture_bag(path: str) -> dict[str, Any]:
     if where.is_file() and where.suffix == ".bag":
         return _rosbag1(where)
     folder = where if where.is_dir() else where.parent
-    if not (folder / "metadata.yaml").is_file():
-        raise CaptureError(f"neither a ROS 1 .bag nor a ROS 2 bag (no metadata.yaml in "
-                           f"{folder})")
-    return _rosbag2(folder)
+    if (folder / "metadata.yaml").is_file():
+        return _rosbag2(folder)
+    if where.is_file() and where.suffix in STORAGES:  # a data file on its own
+        return _rosbag2(where)
+    raise CaptureError(f"neither a ROS 1 .bag nor a ROS 2 bag (no metadata.yaml in {folder})")
 
 
 def _rosbag1(path: Path) -> dict[str, Any]:
@@ -78,13 +79,24 @@ def _as_ros1(data: dict[str, Any]) -> dict[str, Any]:
             "services": [], "parameters": None}
 
 
-def _rosbag2(folder: Path) -> dict[str, Any]:
-    from rosbags.rosbag2 import Reader
-
+def _rosbag2(where: Path) -> dict[str, Any]:
+    """A bag folder (its metadata.yaml), or one .db3 / .mcap file on its own: both keep
+    every connection's topic, type and offered QoS (in the file since Foxy's db3 schema
+    3 and in every mcap's channel metadata)."""
     graph = Graph()
     try:
-        with Reader(folder) as reader:
-            connections = list(reader.connections)
+        if where.is_dir():
+            from rosbags.rosbag2 import Reader
+
+            with Reader(where) as reader:
+                connections = list(reader.connections)
+        else:
+            reader = _storage_reader(where)
+            reader.open()
+            try:
+                connections = list(reader.connections)
+            finally:
+                reader.close()
     except Exception as error:  # rosbags raises several kinds on a damaged bag
         raise CaptureError(str(error) or type(error).__name__) from None
     for connection in connections:
@@ -93,12 +105,28 @@ def _rosbag2(folder: Path) -> dict[str, Any]:
             graph.endpoints.append(Endpoint(
                 "topic", connection.topic, connection.msgtype, True, None,
                 _qos(profile) if profile is not None else None))
-    storage = sorted({f.suffix.lstrip(".") for f in folder.iterdir()
-                      if f.suffix in (".db3", ".mcap")})
+    files = where.iterdir() if where.is_dir() else [where]
+    storage = sorted({STORAGES[f.suffix] for f in files if f.suffix in STORAGES})
     # a ROS 2 bag names no publishing node: its endpoints are all "unowned", and compare
     # holds their QoS against every publisher of the topic in the model
-    return graph.to_data({"kind": "bag", "format": "rosbag2", "file": str(folder),
+    data = graph.to_data({"kind": "bag", "format": "rosbag2", "file": str(where),
                           "storage": storage}, ["topics", "topic types", "qos"])
+    if data["services"]:  # recorded service events (`ros2 bag record --all-services`)
+        data["observed"].append("services")
+    return data
+
+
+STORAGES = {".db3": "sqlite3", ".mcap": "mcap"}
+
+
+def _storage_reader(path: Path) -> Any:
+    if path.suffix == ".mcap":
+        from rosbags.rosbag2.storage_mcap import McapReader
+
+        return McapReader(path)
+    from rosbags.rosbag2.storage_sqlite3 import Sqlite3Reader
+
+    return Sqlite3Reader(path)
 
 
 def _qos(profile: Any) -> dict[str, Any]:

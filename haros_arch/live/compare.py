@@ -32,11 +32,11 @@ IGNORED_NODES = re.compile(r"^/rosout$")
 IGNORED_TOPICS = re.compile(r"^/rosout(_agg)?$")
 IGNORED_SERVICES = re.compile(r"(/get_loggers|/set_logger_level)$")
 IGNORED_PARAMS = re.compile(r"^(/run_id|/rosdistro|/rosversion|/roslaunch/.*)$")
-# what every ROS 2 node has (rcl's rosout and parameter services), and the nodes that
-# tools make on their own: the ros2 CLI's daemon, `ros2 launch`'s launch_ros_<pid>, the
-# hidden node of a Humble tf2_ros TransformListener
+# what every ROS 2 node has (rcl's rosout and parameter services), rosbag2's recorder's
+# split events, and the nodes that tools make on their own: the ros2 CLI's daemon,
+# `ros2 launch`'s launch_ros_<pid>, the hidden node of a Humble tf2_ros TransformListener
 IGNORED_ROS2_NODES = re.compile(r"^/(_ros2cli_|launch_ros_\d+$|transform_listener_impl_)")
-IGNORED_ROS2_TOPICS = re.compile(r"^/(rosout|parameter_events)$")
+IGNORED_ROS2_TOPICS = re.compile(r"^/(rosout|parameter_events|events/write_split)$")
 IGNORED_ROS2_SERVICES = re.compile(
     r"/(describe_parameters|get_parameter_types|get_parameters|list_parameters"
     r"|set_parameters|set_parameters_atomically|get_type_description)$")

@@ -28,6 +28,9 @@ REQUEST_PREFIX, REQUEST_SUFFIX = "rq/", "Request"
 REPLY_PREFIX, REPLY_SUFFIX = "rr/", "Reply"
 ACTION_INFIX = "/_action/"
 ACTION_SEND_GOAL = "send_goal"
+# service introspection (Jazzy and later): a topic beside each service whose node turned
+# it on, `/add/_service_event` of type `pkg/srv/Add_Event`; it says the service exists
+SERVICE_EVENT = "/_service_event"
 
 _DDS_TYPE = re.compile(r"^(?P<pkg>\w+)::(?P<kind>\w+)::dds_::(?P<name>\w+)_$")
 _SERVICE_PART = re.compile(r"_(Request|Response)$")
@@ -103,6 +106,13 @@ class Graph:
         unowned = 0
         for end in self.endpoints:
             unowned += end.node is None
+            if end.role == "topic" and end.name.endswith(SERVICE_EVENT):
+                service = services.setdefault(end.name[:-len(SERVICE_EVENT)], {
+                    "name": end.name[:-len(SERVICE_EVENT)], "types": [], "servers": [],
+                    "clients": []})
+                if end.type and end.type.endswith("_Event"):
+                    _add(service["types"], end.type[:-len("_Event")])
+                continue
             if end.role == "topic":
                 topic = topics.setdefault(end.name, {
                     "name": end.name, "types": [], "publishers": [], "subscribers": [],
