@@ -128,6 +128,36 @@ def test_ros2_names_undone_as_rmw_made_them():
         == "example_interfaces/action/Fibonacci"
 
 
+@pytest.mark.parametrize("store", ["ROS2_HUMBLE", "ROS2_JAZZY"])
+def test_discovery_info_reads_what_the_real_message_definitions_encode(store):
+    """Our IDL types against rosbags' CDR encoder fed with rmw_dds_common's own message
+    definitions (Humble: a Gid is 24 bytes, Jazzy: 16)."""
+    rosbags = pytest.importorskip("rosbags.typesys", reason="the 'live' extra is not installed")
+    import numpy
+
+    from haros_arch.live.dds import decode_entities
+
+    types = rosbags.get_typestore(getattr(rosbags.Stores, store))
+    gid_type = types.types["rmw_dds_common/msg/Gid"]
+    node_type = types.types["rmw_dds_common/msg/NodeEntitiesInfo"]
+    info_type = types.types["rmw_dds_common/msg/ParticipantEntitiesInfo"]
+    width = 24 if store == "ROS2_HUMBLE" else 16
+
+    def gid(first: int):
+        return gid_type(data=numpy.array([first] * 16 + [0] * (width - 16), dtype=numpy.uint8))
+
+    message = info_type(gid=gid(1), node_entities_info_seq=[
+        node_type(node_namespace="/robot", node_name="driver", reader_gid_seq=[gid(2)],
+                  writer_gid_seq=[gid(3), gid(4)])])
+    sample = decode_entities(types.serialize_cdr(message, info_type.__msgtype__))
+    assert sample is not None and bytes(sample.gid.data)[:16] == bytes([1] * 16)
+    (node,) = sample.node_entities_info_seq
+    assert (node.node_namespace, node.node_name) == ("/robot", "driver")
+    assert [bytes(g.data)[:16] for g in node.writer_gid_seq] == [bytes([3] * 16),
+                                                                  bytes([4] * 16)]
+    assert len(bytes(sample.gid.data)) == width
+
+
 @pytest.mark.parametrize("width", [16, 24], ids=["iron-and-later", "humble"])
 def test_capture_reads_nodes_endpoints_and_qos(domain, tmp_path, width):
     child = run_system(domain, tmp_path, SYSTEM, width)

@@ -40,9 +40,10 @@ def discovery_types() -> dict[int, tuple[Any, Any, Any]]:
     return BY_WIDTH
 
 
-def decode_entities(data: bytes) -> Any:
+def decode_entities(data: bytes | memoryview) -> Any:
     """A ``ParticipantEntitiesInfo`` sample from its CDR bytes, with whichever GID width
     re-encodes to the same length (a wrong width reads garbage or fails)."""
+    data = bytes(data)
     for _gid_type, _node_type, kind in discovery_types().values():
         try:
             sample = kind.deserialize(data)
