@@ -90,24 +90,51 @@ SYSTEM = [
 @pytest.fixture
 def domain(monkeypatch):
     monkeypatch.setenv("CYCLONEDDS_URI", LOOPBACK)
-    return random.randint(1, 200)
+    return random.randint(1, 232)
 
 
-def run_system(domain: int, tmp_path: Path, spec: list, width: int = 16):
-    """Start the system; the caller closes its stdin to stop it."""
-    spec_path = tmp_path / "system.json"
-    spec_path.write_text(json.dumps(spec))
-    env = {**os.environ, "PYTHONPATH": os.pathsep.join([str(HERE.parent), str(HERE)])}
-    child = subprocess.Popen(
-        [sys.executable, str(HERE / "ros2_system.py"), str(domain), str(spec_path), str(width)],
-        stdin=subprocess.PIPE, stdout=subprocess.PIPE, env=env, text=True)
-    assert child.stdout is not None and child.stdout.readline().strip() == "ready"
-    return child
+class System:
+    """The system in its child process, and an observer here that waits until this
+    process's domain has discovered all of it: the capture then runs in a domain that
+    already knows the system, so a loaded machine does not make it miss a slow announcer."""
 
+    def __init__(self, domain: int, tmp_path: Path, spec: list, width: int = 16) -> None:
+        from cyclonedds.builtin import (
+            BuiltinDataReader,
+            BuiltinTopicDcpsPublication,
+            BuiltinTopicDcpsSubscription,
+        )
+        from cyclonedds.domain import DomainParticipant
 
-def stop(child) -> None:
-    child.stdin.close()
-    child.wait(timeout=10)
+        spec_path = tmp_path / "system.json"
+        spec_path.write_text(json.dumps(spec))
+        env = {**os.environ, "PYTHONPATH": os.pathsep.join([str(HERE.parent), str(HERE)])}
+        self.child = subprocess.Popen(
+            [sys.executable, str(HERE / "ros2_system.py"), str(domain), str(spec_path),
+             str(width)], stdin=subprocess.PIPE, stdout=subprocess.PIPE, env=env, text=True)
+        assert self.child.stdout is not None
+        assert self.child.stdout.readline().strip() == "ready"
+        self.observer = DomainParticipant(domain)
+        self.readers = [BuiltinDataReader(self.observer, topic) for topic in (
+            BuiltinTopicDcpsPublication, BuiltinTopicDcpsSubscription)]
+        ends = [e for p in spec for n in p["nodes"] for e in n.get("endpoints", [])]
+        want = [sum(e["writes"] for e in ends) + sum(p.get("discovery_info", True)
+                                                     for p in spec),
+                sum(not e["writes"] for e in ends)]
+        seen: list[set] = [set(), set()]
+        limit = time.monotonic() + 20
+        while any(len(s) < w for s, w in zip(seen, want, strict=True)) and time.monotonic() < limit:
+            for found, reader in zip(seen, self.readers, strict=True):
+                found.update(s.key for s in reader.take(N=256)
+                             if s.participant_key != self.observer.guid)
+            time.sleep(0.05)
+
+    def stop(self) -> None:
+        for entity in (*self.readers, self.observer):
+            entity.__del__()
+        assert self.child.stdin is not None
+        self.child.stdin.close()
+        self.child.wait(timeout=10)
 
 
 @pytest.fixture(scope="module")
@@ -160,11 +187,11 @@ def test_discovery_info_reads_what_the_real_message_definitions_encode(store):
 
 @pytest.mark.parametrize("width", [16, 24], ids=["iron-and-later", "humble"])
 def test_capture_reads_nodes_endpoints_and_qos(domain, tmp_path, width):
-    child = run_system(domain, tmp_path, SYSTEM, width)
+    system = System(domain, tmp_path, SYSTEM, width)
     try:
         live = capture_ros2(domain, 0.7)
     finally:
-        stop(child)
+        system.stop()
     assert live["ros"] == 2 and live["parameters"] is None
     assert live["nodes"] == ["/launch_ros_4242", "/listener", "/rogue", "/talker"]
     topics = {t["name"]: t for t in live["topics"]}
@@ -188,13 +215,13 @@ def test_capture_reads_nodes_endpoints_and_qos(domain, tmp_path, width):
 
 
 def test_compare_shows_every_kind_of_difference_once(domain, tmp_path, demo_model, capsys):
-    child = run_system(domain, tmp_path, SYSTEM)
+    system = System(domain, tmp_path, SYSTEM)
     live_path, model_path = tmp_path / "live.json", tmp_path / "model.json"
     try:
         assert main(["capture", "--ros2", "--domain", str(domain), "--seconds", "0.7",
                      "-o", str(live_path)]) == 0
     finally:
-        stop(child)
+        system.stop()
     result = compare(demo_model, json.loads(live_path.read_text()))
     found = {s.kind: (s.missing, s.extra, s.differs) for s in result.scores}
     assert found == {

@@ -155,36 +155,47 @@ def _listen(builtin: dict[str, Any], entities: list[Any],
     deadline = time.monotonic() + max(0.0, seconds)
     while True:
         for name, reader in builtin.items():
-            for sample in reader.take(N=256):
+            for sample in _drain(reader.take):
                 info = getattr(sample, "sample_info", None)
                 if info is not None and info.instance_state != InstanceState.Alive:
                     seen[name].pop(sample.key, None)  # the endpoint is gone
                 elif info is None or info.valid_data:
                     seen[name][sample.key] = sample
         for reader in entities:
-            for sample in _take_entities(reader):
-                owners[_gid(sample.gid.data)] = sample
+            for sample in _drain(lambda N, reader=reader: _take_entities(reader, N)):
+                if sample is not None:
+                    owners[_gid(sample.gid.data)] = sample
         if time.monotonic() >= deadline:
             return seen, owners
         time.sleep(0.05)
 
 
-def _take_entities(reader: Any) -> list[Any]:
+BATCH = 256
+MOST_PER_PASS = 100_000  # samples of one reader in one pass; the next pass takes the rest
+
+
+def _drain(take: Any) -> list[Any]:
+    """What a reader holds now, in batches (bounded: a flood waits for the next pass)."""
+    found: list[Any] = []
+    while len(found) < MOST_PER_PASS:
+        batch = take(N=BATCH)
+        found.extend(batch)
+        if len(batch) < BATCH:
+            break
+    return found
+
+
+def _take_entities(reader: Any, count: int) -> list[Any]:
     """``ros_discovery_info`` samples, decoded here to read both GID widths: what
-    ``DataReader.take`` does, with our decoder in place of the one-width type's."""
+    ``DataReader.take`` does, with our decoder in place of the one-width type's (None for
+    a sample without data or that neither width reads)."""
     from cyclonedds._clayer import ddspy_take
     from cyclonedds.core import InstanceState, SampleState, ViewState
 
-    taken = ddspy_take(reader._ref, SampleState.Any | ViewState.Any | InstanceState.Any, 256)
+    taken = ddspy_take(reader._ref, SampleState.Any | ViewState.Any | InstanceState.Any, count)
     if isinstance(taken, int):  # a DDS return code
         return []
-    found = []
-    for data, info in taken:
-        if info.valid_data:
-            sample = decode_entities(data)
-            if sample is not None:
-                found.append(sample)
-    return found
+    return [decode_entities(data) if info.valid_data else None for data, info in taken]
 
 
 def _graph(own: Any, seen: dict[str, dict[Any, Any]], owners: dict[Any, Any]) -> Graph:
