@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import sys
 
 import pytest
 from conftest import FIXTURES
@@ -158,3 +159,10 @@ def test_a_file_that_is_no_bag_is_a_clean_error(tmp_path, capsys):
     assert "cannot capture from" in capsys.readouterr().err
     assert main(["capture", "--bag", str(tmp_path / "missing.bag")]) == 2
     assert "no such file" in capsys.readouterr().err
+
+
+def test_capture_without_rosbags_says_what_to_install(monkeypatch, tmp_path, capsys):
+    monkeypatch.setitem(sys.modules, "rosbags", None)
+    (tmp_path / "run.bag").write_bytes(b"#ROSBAG V2.0\n")
+    assert main(["capture", "--bag", str(tmp_path / "run.bag")]) == 2
+    assert "haros-arch[live]" in capsys.readouterr().err
