@@ -2,12 +2,11 @@
 
 The capture joins a DDS domain as one participant with readers and no writer: the
 built-in topics ``DCPSPublication`` and ``DCPSSubscription`` (every reader and writer in
-the domain: its DDS topic, type and QoS; DDS announces participants with ``DCPSParticipant``
-on its own) and ROS 2's ``ros_discovery_info`` (which node owns which reader and writer, by
-GID). It reads for a
-bounded time and leaves. DDS discovery interoperates across vendors, so Fast DDS and Connext
-nodes are seen too; QoS that a vendor does not put in discovery (history, for most) is left
-out of an endpoint's QoS, not guessed.
+the domain: its DDS topic, type and QoS) and ROS 2's ``ros_discovery_info`` (which node
+owns which reader and writer, by GID). DDS itself announces the participant; nothing else
+is sent. It reads for a bounded time and leaves. DDS discovery interoperates across
+vendors, so Fast DDS and Connext nodes are seen too; QoS that a vendor does not put in
+discovery (history, for most) is left out of an endpoint's QoS, not guessed.
 
 ``ros_discovery_info`` carries ``rmw_dds_common/msg/ParticipantEntitiesInfo``; the types
 below follow its message definition (a ``Gid`` is ``char[16] data`` since Iron, ``char[24]``
@@ -23,11 +22,9 @@ from .capture import CaptureError
 from .ros2 import Endpoint, Graph, node_name, ros_name, ros_type
 
 DISCOVERY_TOPIC = "ros_discovery_info"
-DISCOVERY_TYPE = "rmw_dds_common::msg::dds_::ParticipantEntitiesInfo_"
 INFINITE = 0x7FFFFFFFFFFFFFFF  # DDS_INFINITY, in nanoseconds
 NEEDS = ("'haros-arch capture --ros2' needs Eclipse Cyclone DDS's Python binding: "
          "pip install 'haros-arch[live]' (or: pip install cyclonedds)")
-
 
 
 def discovery_types() -> dict[int, tuple[Any, Any, Any]]:
@@ -42,7 +39,8 @@ def discovery_types() -> dict[int, tuple[Any, Any, Any]]:
 
 def decode_entities(data: bytes | memoryview) -> Any:
     """A ``ParticipantEntitiesInfo`` sample from its CDR bytes, with whichever GID width
-    re-encodes to the same length (a wrong width reads garbage or fails)."""
+    re-encodes to the same length, trailing zeros aside (a wrong width fails, or reads the
+    zeros after a 16-byte GUID as an empty node list: shorter)."""
     data = bytes(data)
     for _gid_type, _node_type, kind in discovery_types().values():
         try:
