@@ -140,7 +140,7 @@ def test_a_data_file_without_its_metadata_and_service_events(tmp_path, storage):
     assert [t["name"] for t in live["topics"]] == ["/chatter"]
     assert live["services"] == [{"name": "/reset", "types": ["std_srvs/srv/Empty"],
                                  "servers": [], "clients": []}]
-    assert live["observed"] == ["topics", "topic types", "qos", "services"]
+    assert live["observed"] == ["topics", "topic types", "qos", "services", "service types"]
     assert live["topics"][0]["endpoints"][0]["qos"]["reliability"] == "reliable"
 
 

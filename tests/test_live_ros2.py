@@ -37,7 +37,7 @@ LOOPBACK = (
     "</MaxAutoParticipantIndex><Peers><Peer address='127.0.0.1'/></Peers></Discovery>"
     "</Domain></CycloneDDS>")
 STRING, INT32, INT64 = (f"std_msgs::msg::dds_::{t}_" for t in ("String", "Int32", "Int64"))
-EMPTY, TRIGGER = "std_srvs::srv::dds_::Empty_", "std_srvs::srv::dds_::Trigger_"
+TRIGGER = "std_srvs::srv::dds_::Trigger_"
 FIB = "example_interfaces::action::dds_::Fibonacci_"
 CANCEL = "action_msgs::srv::dds_::CancelGoal_"
 STATUS = "action_msgs::msg::dds_::GoalStatusArray_"
@@ -63,8 +63,9 @@ def action(name: str, serves: bool) -> list[dict]:
 
 # the fixture live_ros2 as it runs, with one difference of each kind: /monitor is not
 # running and /rogue is (serving /ping), /status is not published, /count is published as
-# Int64 (the model: Int32), /chatter is offered best effort (the model: reliable), and a
-# DDS participant that is no ROS node publishes rt/debug
+# Int64 (the model: Int32), /reset is served as a Trigger (the model: Empty) and
+# /listener does not call it, /chatter is offered best effort (the model: reliable), and
+# a DDS participant that is no ROS node publishes rt/debug
 SYSTEM = [
     {"nodes": [
         {"namespace": "/", "name": "talker", "endpoints": [
@@ -73,13 +74,12 @@ SYSTEM = [
             topic("rt/rosout", "rcl_interfaces::msg::dds_::Log_", True,
                   durability="transient_local"),
             *service("talker/get_parameters", "rcl_interfaces::srv::dds_::GetParameters_", True),
-            *service("reset", EMPTY, True),
+            *service("reset", TRIGGER, True),
             *action("fib", True)]},
         {"namespace": "/", "name": "launch_ros_4242"},  # made by `ros2 launch`: ignored
         {"namespace": "/", "name": "listener", "endpoints": [
             topic("rt/chatter", STRING, False),
             topic("rt/count", INT64, False),
-            *service("reset", EMPTY, False),
             *action("fib", False)]}]},
     {"nodes": [{"namespace": "/", "name": "rogue", "endpoints": service("ping", TRIGGER, True)}]},
     {"nodes": [{"namespace": "/", "name": "-", "endpoints": [topic("rt/debug", STRING, True)]}],
@@ -207,8 +207,8 @@ def test_capture_reads_nodes_endpoints_and_qos(domain, tmp_path, width):
     # a participant that announces no node: its writer is nobody's, and said to be
     assert topics["/debug"]["publishers"] == [] and live["unowned_endpoints"] == 1
     services = {s["name"]: s for s in live["services"]}
-    assert services["/reset"] == {"name": "/reset", "types": ["std_srvs/srv/Empty"],
-                                  "servers": ["/talker"], "clients": ["/listener"]}
+    assert services["/reset"] == {"name": "/reset", "types": ["std_srvs/srv/Trigger"],
+                                  "servers": ["/talker"], "clients": []}
     assert services["/ping"]["servers"] == ["/rogue"]
     assert live["actions"] == [{"name": "/fib", "types": ["example_interfaces/action/Fibonacci"],
                                 "servers": ["/talker"], "clients": ["/listener"]}]
@@ -234,9 +234,12 @@ def test_compare_shows_every_kind_of_difference_once(domain, tmp_path, demo_mode
         "publish links": ([], [("/talker", "/status")], None),
         "subscribe links": ([], [("/monitor", "/status")], None),
         "services": (["/ping"], [], None),
+        "service types": ([("/ping", "std_srvs/srv/Trigger"), ("/reset", "std_srvs/srv/Trigger")],
+                          [("/reset", "std_srvs/srv/Empty")], None),
         "service links": ([("/rogue", "/ping")], [], None),
-        "service client links": ([], [], None),
+        "service client links": ([], [("/listener", "/reset")], None),
         "actions": ([], [], None),
+        "action types": ([], [], None),
         "action server links": ([], [], None),
         "action client links": ([], [], None),
         "qos": (found["qos"][0], found["qos"][1],
@@ -249,7 +252,7 @@ def test_compare_shows_every_kind_of_difference_once(domain, tmp_path, demo_mode
     assert "differs: /talker /chatter publish reliability: model reliable, live best_effort" \
         in out
     assert "missing: /rogue" in out and "extra:   /monitor" in out
-    assert "both:    /listener /reset" in out  # a service client link seen live and modelled
+    assert "both:    /listener /fib" in out  # an action client link seen live and modelled
 
 
 def test_capture_writes_nothing(domain):

@@ -112,7 +112,7 @@ def _rosbag2(where: Path) -> dict[str, Any]:
     data = graph.to_data({"kind": "bag", "format": "rosbag2", "file": str(where),
                           "storage": storage}, ["topics", "topic types", "qos"])
     if data["services"]:  # recorded service events (`ros2 bag record --all-services`)
-        data["observed"].append("services")
+        data["observed"] += ["services", "service types"]
     return data
 
 

@@ -150,12 +150,14 @@ def compare(model: dict[str, Any], live: dict[str, Any], name: str | None = None
               live_links(live_topics, "subscribers")),
         Score("services", {s["name"] for s in config["services"]},
               {s["name"] for s in live_services}),
+        Score("service types", _typed(config["services"]), _typed(live_services)),
         Score("service links", _shadowed(ours_links("server"), live_servers),
               live_links(live_services, "servers")),
         Score("service client links", ours_links("client"),
               live_links(live_services, "clients")),
         Score("actions", {a["name"] for a in config.get("actions", [])},
               {a["name"] for a in live_actions}),
+        Score("action types", _typed(config.get("actions", [])), _typed(live_actions)),
         Score("action server links", ours_links("action-server"),
               live_links(live_actions, "servers")),
         Score("action client links", ours_links("action-client"),
@@ -178,8 +180,13 @@ def compare_all(model: dict[str, Any], live: dict[str, Any]) -> dict[str, dict[s
             for config in model.get("configurations", [])}
 
 
+def _typed(records: list[dict[str, Any]]) -> set[tuple[str, str]]:
+    return {(r["name"], ty) for r in records for ty in r.get("types") or ()}
+
+
 def _observed(kind: str, observed: set[str]) -> bool:
-    """Whether the capture can see this kind (action links: when it sees actions)."""
+    """Whether the capture can see this kind (one that sees actions sees their types and
+    servers and clients too)."""
     return kind in observed or (kind.startswith("action ") and "actions" in observed)
 
 

@@ -134,7 +134,8 @@ def capture_ros2(domain: int = 0, seconds: float = 3.0) -> dict[str, Any]:
         return _graph(participant.guid, seen[0], seen[1]).to_data(
             {"kind": "dds", "domain": domain, "seconds": seconds},
             ["nodes", "topics", "topic types", "publish links", "subscribe links",
-             "services", "service links", "service client links", "actions", "qos"])
+             "services", "service types", "service links", "service client links",
+             "actions", "qos"])
     except DDSException as error:
         raise CaptureError(f"DDS domain {domain}: {error}") from None
     finally:  # leave the domain now (the binding keeps every entity until deleted)
