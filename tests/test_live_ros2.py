@@ -289,3 +289,12 @@ def test_capture_without_the_binding_says_what_to_install(monkeypatch, capsys):
 def test_capture_refuses_a_domain_dds_cannot_have(capsys):
     assert main(["capture", "--ros2", "--domain", "999", "--seconds", "0.1"]) == 2
     assert "outside 0..232" in capsys.readouterr().err
+
+
+def test_a_domain_that_cannot_be_joined_is_a_clean_error(monkeypatch, capsys):
+    monkeypatch.setenv("CYCLONEDDS_URI", "<CycloneDDS><Domain><General><Interfaces>"
+                       "<NetworkInterface name='haros-no-such-if'/></Interfaces></General>"
+                       "</Domain></CycloneDDS>")
+    domain = str(random.randint(1, 232))
+    assert main(["capture", "--ros2", "--domain", domain, "--seconds", "0.1"]) == 2
+    assert f"cannot join DDS domain {domain}" in capsys.readouterr().err
