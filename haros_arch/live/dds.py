@@ -6,7 +6,8 @@ the domain: its DDS topic, type and QoS) and ROS 2's ``ros_discovery_info`` (whi
 owns which reader and writer, by GID). DDS itself announces the participant; nothing else
 is sent. It reads for a bounded time and leaves. DDS discovery interoperates across
 vendors, so Fast DDS and Connext nodes are seen too; QoS that a vendor does not put in
-discovery (history, for most) is left out of an endpoint's QoS, not guessed.
+discovery (history, for most) is left out of an endpoint's QoS, not guessed. Nodes on a
+middleware that is not DDS (``rmw_zenoh``) are not seen.
 
 ``ros_discovery_info`` carries ``rmw_dds_common/msg/ParticipantEntitiesInfo``; the types
 below follow its message definition (a ``Gid`` is ``char[16] data`` since Iron, ``char[24]``
