@@ -201,7 +201,7 @@ def _qos_score(links: list[dict[str, Any]], live_topics: list[dict[str, Any]]) -
             if end.get("qos") is not None:
                 offered.setdefault((end.get("node"), topic["name"], end["kind"]), []).append(
                     end["qos"])
-    score = Score("qos", differs=[])
+    score, differs = Score("qos"), set()
     for link in links:
         key = (link["node"], link["name"], link["kind"])
         ends = offered.get(key) or offered.get((None, *key[1:]))
@@ -217,11 +217,9 @@ def _qos_score(links: list[dict[str, Any]], live_topics: list[dict[str, Any]]) -
             score.ours.add((*key, f"{policy}={value}"))
             score.live.update((*key, f"{policy}={v}") for v in values)
             if value not in values:
-                assert score.differs is not None
-                score.differs.append(f"{link['node']} {link['name']} {link['kind']} "
-                                     f"{policy}: model {value}, live "
-                                     f"{', '.join(sorted({str(v) for v in values}))}")
-    score.differs = sorted(set(score.differs or ()))
+                differs.add(f"{link['node']} {link['name']} {link['kind']} {policy}: model "
+                            f"{value}, live {', '.join(sorted({str(v) for v in values}))}")
+    score.differs = sorted(differs)
     return score
 
 
