@@ -289,6 +289,9 @@ def test_capture_without_the_binding_says_what_to_install(monkeypatch, capsys):
 def test_capture_refuses_a_domain_dds_cannot_have(capsys):
     assert main(["capture", "--ros2", "--domain", "999", "--seconds", "0.1"]) == 2
     assert "outside 0..232" in capsys.readouterr().err
+    for seconds in ("0", "nan", "601"):  # bounded in time
+        assert main(["capture", "--ros2", "--seconds", seconds]) == 2
+        assert "--seconds must be" in capsys.readouterr().err
 
 
 def test_a_domain_that_cannot_be_joined_is_a_clean_error(monkeypatch, capsys):
