@@ -59,10 +59,14 @@ def main() -> None:
         participant = DomainParticipant(domain, qos=Qos(Policy.Userdata(b"enclave=/;")))
         keep.append(participant)
         nodes = []
+        topics: dict[str, Topic] = {}  # one Topic per name in a participant, as rmw does
         for node in participant_spec["nodes"]:
             readers, writers = [], []
             for end in node.get("endpoints", []):
-                topic = Topic(participant, end["topic"], message_type(end["type"]))
+                if end["topic"] not in topics:
+                    topics[end["topic"]] = Topic(participant, end["topic"],
+                                                 message_type(end["type"]))
+                topic = topics[end["topic"]]
                 made = (DataWriter if end["writes"] else DataReader)(
                     participant, topic, qos=qos_of(end.get("qos", {})))
                 keep.append(made)
