@@ -162,7 +162,7 @@ def test_discovery_info_reads_what_the_real_message_definitions_encode(store):
     rosbags = pytest.importorskip("rosbags.typesys", reason="the 'live' extra is not installed")
     import numpy
 
-    from haros_arch.live.dds import decode_entities
+    from haros_arch.live.entities import read_entities
 
     types = rosbags.get_typestore(getattr(rosbags.Stores, store))
     gid_type = types.types["rmw_dds_common/msg/Gid"]
@@ -176,13 +176,14 @@ def test_discovery_info_reads_what_the_real_message_definitions_encode(store):
     message = info_type(gid=gid(1), node_entities_info_seq=[
         node_type(node_namespace="/robot", node_name="driver", reader_gid_seq=[gid(2)],
                   writer_gid_seq=[gid(3), gid(4)])])
-    sample = decode_entities(types.serialize_cdr(message, info_type.__msgtype__))
-    assert sample is not None and bytes(sample.gid.data)[:16] == bytes([1] * 16)
-    (node,) = sample.node_entities_info_seq
-    assert (node.node_namespace, node.node_name) == ("/robot", "driver")
-    assert [bytes(g.data)[:16] for g in node.writer_gid_seq] == [bytes([3] * 16),
-                                                                  bytes([4] * 16)]
-    assert len(bytes(sample.gid.data)) == width
+    for big_endian in (False, True):
+        sample = read_entities(types.serialize_cdr(message, info_type.__msgtype__,
+                                                   little_endian=not big_endian))
+        assert sample is not None and sample.gid == bytes([1] * 16 + [0] * (width - 16))
+        (node,) = sample.nodes
+        assert (node.namespace, node.name) == ("/robot", "driver")
+        assert [g[:16] for g in node.writers] == [bytes([3] * 16), bytes([4] * 16)]
+        assert [g[:16] for g in node.readers] == [bytes([2] * 16)]
 
 
 @pytest.mark.parametrize("width", [16, 24], ids=["iron-and-later", "humble"])

@@ -9,9 +9,10 @@ vendors, so Fast DDS and Connext nodes are seen too; QoS that a vendor does not 
 discovery (history, for most) is left out of an endpoint's QoS, not guessed. Nodes on a
 middleware that is not DDS (``rmw_zenoh``) are not seen.
 
-``ros_discovery_info`` carries ``rmw_dds_common/msg/ParticipantEntitiesInfo``; the types
-below follow its message definition (a ``Gid`` is ``char[16] data`` since Iron, ``char[24]``
-before: both are read).
+``ros_discovery_info`` carries ``rmw_dds_common/msg/ParticipantEntitiesInfo``: its readers'
+types are in ``dds_types`` (a ``Gid`` is ``char[16] data`` since Iron, ``char[24]`` before:
+one reader each), its samples are read by ``entities`` (bounded: any participant may write
+them).
 """
 
 from __future__ import annotations
@@ -20,6 +21,7 @@ import time
 from typing import Any
 
 from .capture import CaptureError
+from .entities import ParticipantEntities, read_entities
 from .ros2 import Endpoint, Graph, node_name, ros_name, ros_type
 
 DISCOVERY_TOPIC = "ros_discovery_info"
@@ -38,25 +40,9 @@ def discovery_types() -> dict[int, tuple[Any, Any, Any]]:
     return BY_WIDTH
 
 
-def decode_entities(data: bytes | memoryview) -> Any:
-    """A ``ParticipantEntitiesInfo`` sample from its CDR bytes, with whichever GID width
-    re-encodes to the same length, trailing zeros aside (a wrong width fails, or reads the
-    zeros after a 16-byte GUID as an empty node list: shorter)."""
-    data = bytes(data)
-    for _gid_type, _node_type, kind in discovery_types().values():
-        try:
-            sample = kind.deserialize(data)
-            again = sample.serialize()
-        except Exception:  # a wrong width may fail anywhere in the binding's decoder
-            continue
-        if len(again.rstrip(b"\0")) == len(data.rstrip(b"\0")):
-            return sample
-    return None
-
-
-def _gid(data: Any) -> bytes:
+def _gid(data: bytes) -> bytes:
     """The 16 bytes of a GID that are the endpoint's DDS GUID."""
-    return bytes(data)[:16]
+    return data[:16]
 
 
 def qos_data(qos: Any) -> dict[str, Any]:
@@ -144,14 +130,18 @@ def capture_ros2(domain: int = 0, seconds: float = 3.0) -> dict[str, Any]:
             entity.__del__()
 
 
+Seen = dict[str, dict[Any, Any]]  # built-in topic -> endpoint key -> its sample
+Owners = dict[bytes, ParticipantEntities]  # participant GUID -> its nodes and their GIDs
+
+
 def _listen(builtin: dict[str, Any], entities: list[Any],
-            seconds: float) -> tuple[dict[str, dict[Any, Any]], dict[bytes, Any]]:
+            seconds: float) -> tuple[Seen, Owners]:
     """Endpoints alive at the end of ``seconds`` (per built-in topic, by key) and each
     participant's last ``ParticipantEntitiesInfo`` (by its GUID)."""
     from cyclonedds.core import InstanceState
 
-    seen: dict[str, dict[Any, Any]] = {name: {} for name in builtin}
-    owners: dict[bytes, Any] = {}
+    seen: Seen = {name: {} for name in builtin}
+    owners: Owners = {}
     deadline = time.monotonic() + max(0.0, seconds)
     while True:
         for name, reader in builtin.items():
@@ -164,7 +154,7 @@ def _listen(builtin: dict[str, Any], entities: list[Any],
         for reader in entities:
             for sample in _drain(lambda N, reader=reader: _take_entities(reader, N)):
                 if sample is not None:
-                    owners[_gid(sample.gid.data)] = sample
+                    owners[_gid(sample.gid)] = sample
         if time.monotonic() >= deadline:
             return seen, owners
         time.sleep(0.05)
@@ -186,27 +176,27 @@ def _drain(take: Any) -> list[Any]:
 
 
 def _take_entities(reader: Any, count: int) -> list[Any]:
-    """``ros_discovery_info`` samples, decoded here to read both GID widths: what
-    ``DataReader.take`` does, with our decoder in place of the one-width type's (None for
-    a sample without data or that neither width reads)."""
+    """``ros_discovery_info`` samples: what ``DataReader.take`` does, with our bounded
+    decoder of both GID widths in place of the binding's (None for a sample without data or
+    that is not one)."""
     from cyclonedds._clayer import ddspy_take
     from cyclonedds.core import InstanceState, SampleState, ViewState
 
     taken = ddspy_take(reader._ref, SampleState.Any | ViewState.Any | InstanceState.Any, count)
     if isinstance(taken, int):  # a DDS return code
         return []
-    return [decode_entities(data) if info.valid_data else None for data, info in taken]
+    return [read_entities(data) if info.valid_data else None for data, info in taken]
 
 
-def _graph(own: Any, seen: dict[str, dict[Any, Any]], owners: dict[Any, Any]) -> Graph:
+def _graph(own: Any, seen: Seen, owners: Owners) -> Graph:
     graph = Graph()
     owner_of: dict[bytes, str] = {}
     for info in owners.values():
-        for node in info.node_entities_info_seq:
-            name = node_name(node.node_namespace, node.node_name)
+        for node in info.nodes:
+            name = node_name(node.namespace, node.name)
             graph.nodes.add(name)
-            for gid in (*node.reader_gid_seq, *node.writer_gid_seq):
-                owner_of[_gid(gid.data)] = name
+            for gid in (*node.readers, *node.writers):
+                owner_of[_gid(gid)] = name
     for kind in ("publications", "subscriptions"):
         for sample in seen[kind].values():
             if sample.participant_key == own:
