@@ -481,7 +481,7 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
         if probe is None or not names.learn(_located(mine(probe), source)):
             break
     best = tu
-    for _full in range(2):  # a second time when the first shows more names (a wave)
+    for _full in range(synthesis.FULL_PARSES):  # more: again when one shows more names
         again = _parse_once(path, [*args, "-include", header],
                             [*unsaved, (header, names.header())], workspace, result)
         if again is None:
