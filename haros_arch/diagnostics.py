@@ -120,6 +120,43 @@ CATALOGUE: dict[str, Entry] = {
         "lies outside the workspace and installed packages, is not YAML, or is too big "
         "once its YAML aliases are expanded; the "
         "controllers it configures keep no parameters from it."),
+    "ROBOT_DESCRIPTION_XACRO": Entry(
+        "warning", "xacro: {detail}",
+        "A xacro construct of a robot description is wrong (an unknown macro or block, a "
+        "parameter not given, an expression Python would reject) or outside what is read "
+        "statically; the part it makes is left out or written ?, and the description is "
+        "partial."),
+    "ROBOT_DESCRIPTION_FILE": Entry(
+        "warning", "robot description file {path} cannot be read: {detail}",
+        "A file of a robot description (the top file or a xacro:include) does not exist "
+        "or is not well-formed XML; what it holds is unknown and the description is "
+        "partial."),
+    "ROBOT_DESCRIPTION_LIMIT": Entry(
+        "warning", "robot description is too big to read: {detail}",
+        "Reading a robot description stopped at a bound (files read, include and macro "
+        "nesting, elements made, the length of a value); its plugins are unknown."),
+    "ROBOT_DESCRIPTION_UNKNOWN": Entry(
+        "info", "the robot description a spawner hands to Gazebo is not known: {detail}",
+        "A Gazebo spawner names a description that is not read statically (a parameter "
+        "no launch file sets with a xacro command, a -topic or -database source, a path "
+        "with unknown parts); the Gazebo node instance is partial."),
+    "GAZEBO_PLUGIN_UNKNOWN": Entry(
+        "warning", "Gazebo plugin {filename} loaded by {host} is not known",
+        "A <plugin> of a robot description names a library that is not in the table of "
+        "Gazebo plugins (haros_arch/robot/gazebo_plugins.py); its topics and services are "
+        "unknown and the Gazebo node instance is partial."),
+    "BRIDGE_CONFIG_FILE": Entry(
+        "warning", "config file {path} of a ros_gz bridge cannot be read",
+        "A ros_gz_bridge parameter_bridge's config_file does not exist, lies outside the "
+        "workspace and installed packages, or is not a YAML list of bridge entries; the "
+        "topics it would bridge are unknown and the bridge's node is partial."),
+    "GAZEBO_NOT_STARTED": Entry(
+        "info", "no launch file of the configuration starts Gazebo; its node is taken as "
+        "{name}",
+        "A spawner hands a robot description to Gazebo, but Gazebo is started from a "
+        "launch file outside the analysed packages; a node instance of that name stands "
+        "for it, with the calls of the description's plugins and an unknown interface "
+        "otherwise."),
     # launch files
     "LAUNCH_FILE_MISSING": Entry(
         "error", "launch file {path} does not exist",
@@ -315,6 +352,13 @@ CATALOGUE: dict[str, Entry] = {
         "Node('name')) unless the launch file renames it. Without the code the "
         "executable's name stands in, as packages usually name the two alike; when "
         "they differ, the instance's name (and its parameters) are wrong."),
+    "NAME_PARAM_UNSET": Entry(
+        "info", "{node}: the name of this {kind} is the value of the {what}, which the "
+        "configuration does not set; it stays unknown",
+        "The code (or its interface model) takes a topic or service name from a "
+        "parameter (robot_localization's imu0, twist_mux's topics list) and neither the "
+        "launch files nor their parameter files set it, and the code gives no default: "
+        "the link's name stays '?'. Set the parameter where the node is launched."),
     "NODE_NOT_FOUND": Entry(
         "warning", "node type {node} is not in the workspace; its interface is unknown",
         "A launch file starts an executable that no workspace package builds; the "
