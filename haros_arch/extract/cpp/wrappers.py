@@ -141,10 +141,15 @@ class Wrappers:
             # the functions that call one that changed are read again
             todo = [f for f in functions if any(
                 self._calls_one_of(call, changed) for call in calls[_key(f.canonical)])]
-        # a recursive function is no wrapper, nor is one made through it
+        # a recursive function is no wrapper, nor is one made through it; a class
+        # template's constructor is one only where the construction gives the type (its
+        # other calls stay in it, named by what its callers pass: call_sites, links)
+        constructors = {_key(f.canonical) for f in functions if _is_constructor(f)}
         self.summaries = {
-            key: found for key, found in self.summaries.items() if key not in self._recursive
-            and not any(self._recursive & w.through for w in found)}
+            key: kept for key, found in self.summaries.items() if key not in self._recursive
+            and not any(self._recursive & w.through for w in found)
+            and (kept := [w for w in found if key not in constructors
+                          or "template" in w.row.type_from])}
         self._inner = {call: owner for call, owner in self._inner.items()
                        if owner in self.summaries}
         sites = finder.sites
