@@ -154,3 +154,44 @@ def test_ros_1_code_has_boost_placeholders_in_the_global_namespace(tmp_path) -> 
     result = extract_cpp([str(source)], Workspace(root=str(tmp_path)), cache_dir=None)
     assert [(c.kind, c.name) for c in result.calls] == [("subscribe", "?/scan")]  # nh: a parameter
     assert [d.message for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"] == []
+
+
+def test_nav2_lifecycle_and_std_forms_parse_clean(tmp_path) -> None:
+    """What nav2's LifecycleNode, SimpleActionServer and robot_state_publisher use: the
+    four-argument rclcpp_lifecycle constructor, managed entities, the current state,
+    pre-shutdown callbacks, rcl_action's default options, std::void_t, duration::max,
+    std::ios seek / tell; message_filters' synchronizer bounds."""
+    from haros_arch.workspace import Workspace
+
+    (tmp_path / "package.xml").write_text(
+        '<package format="3"><name>p</name><version>0.0.1</version><description>d'
+        '</description><maintainer email="a@b.c">m</maintainer><license>BSD</license>'
+        "<depend>rclcpp</depend><export><build_type>ament_cmake</build_type></export>"
+        "</package>\n")
+    source = tmp_path / "n.cpp"
+    source.write_text(
+        "#include <chrono>\n#include <fstream>\n#include <type_traits>\n"
+        "#include <rclcpp_lifecycle/lifecycle_node.hpp>\n"
+        "#include <rclcpp_action/rclcpp_action.hpp>\n#include <std_msgs/msg/string.hpp>\n"
+        "#include <message_filters/subscriber.h>\n#include <message_filters/synchronizer.h>\n"
+        "template<class T, class = void> struct has_x : std::false_type {};\n"
+        "template<class T> struct has_x<T, std::void_t<decltype(T::x)>> : std::true_type {};\n"
+        "class Managed : public rclcpp_lifecycle::LifecycleNode {\n"
+        "public:\n"
+        "  Managed() : rclcpp_lifecycle::LifecycleNode(\"managed\", \"\", rclcpp::NodeOptions(),"
+        " false) {\n"
+        "    auto pub = create_publisher<std_msgs::msg::String>(\"out\", 1);\n"
+        "    add_managed_entity(pub);\n"
+        "    auto id = get_current_state().id(); (void)id;\n"
+        "    auto handle = get_node_base_interface()->get_context()->add_pre_shutdown_callback(\n"
+        "      [] {});\n"
+        "    get_node_base_interface()->get_context()->remove_pre_shutdown_callback(handle);\n"
+        "    auto options = rcl_action_server_get_default_options(); (void)options;\n"
+        "    auto forever = std::chrono::nanoseconds::max(); (void)forever;\n"
+        "    std::ifstream file(\"urdf\");\n"
+        "    file.seekg(0, std::ios::end); auto size = file.tellg(); (void)size;\n"
+        "  }\n"
+        "};\n")
+    result = extract_cpp([str(source)], Workspace(root=str(tmp_path)), cache_dir=None)
+    assert ("publish", "out") in [(c.kind, c.name) for c in result.calls]
+    assert [d.message for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"] == []

@@ -196,3 +196,25 @@ def test_a_class_template_whose_constructor_makes_the_service(ws: Workspace) -> 
         ("server", "reset", "std_srvs/srv/Empty", "src/radar/src/services.cpp", 9),
         ("server", "trigger", "std_srvs/srv/Trigger", "src/radar/src/services.cpp", 11),
     ]
+
+
+def test_a_class_template_constructor_that_types_nothing_keeps_its_calls(tmp_path) -> None:
+    """laser_assembler's BaseAssembler<T>(max_size_param_name) reads the parameter its
+    derived class names; the type does not come from the construction, so the read stays
+    in the constructor (named by what callers pass) rather than waiting for a
+    construction this unit may not show."""
+    (tmp_path / "base.h").write_text(
+        "#include <ros/ros.h>\n#include <string>\n"
+        "template<class T> class Base {\n"
+        "public:\n"
+        "  explicit Base(const std::string & name) {\n"
+        "    ros::NodeHandle private_ns(\"~\");\n"
+        "    private_ns.param(name, size_, 400);\n"
+        "  }\n"
+        "  int size_;\n"
+        "};\n")
+    (tmp_path / "n.cpp").write_text('#include "base.h"\nvoid f() {}\n')
+    result = extract_cpp([str(tmp_path / "n.cpp")], Workspace(root=str(tmp_path)),
+                         cache_dir=None)
+    assert [(c.kind, c.location.file, c.location.line) for c in result.calls] == [
+        ("read", "base.h", 7)]

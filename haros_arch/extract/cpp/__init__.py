@@ -465,8 +465,9 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
     before = len(mine(tu))
     names = synthesis.Names(_fieldless_packages(setup.diagnostics))
     header = os.path.join(setup.generated, synthesis.HEADER_NAME)
-    if synthesis.MAX_ROUNDS < 1 or not _can_hide(tu, mine(tu), source) or not names.learn(
-        _located(mine(tu), source)
+    fieldless = _fieldless_packages(setup.diagnostics)
+    if synthesis.MAX_ROUNDS < 1 or not _can_hide(tu, mine(tu), source, fieldless) or (
+        not names.learn(_located(mine(tu), source))
     ):
         return tu  # nothing to declare, or no error where it could cost a call
     # Errors come in waves: a class made valid shows its other members. With more than
@@ -481,7 +482,7 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
         if probe is None or not names.learn(_located(mine(probe), source)):
             break
     best = tu
-    for _full in range(2):  # a second time when the first shows more names (a wave)
+    for _full in range(synthesis.FULL_PARSES):  # more: again when one shows more names
         again = _parse_once(path, [*args, "-include", header],
                             [*unsaved, (header, names.header())], workspace, result)
         if again is None:
@@ -489,7 +490,9 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
         if len(_errors(again)) < len(_errors(best)):
             best = again
         left = mine(again)
-        if not _can_hide(again, left, source) or not names.learn(_located(left, source)):
+        if not _can_hide(again, left, source, fieldless) or not names.learn(
+            _located(left, source)
+        ):
             break
     if best is tu:
         return tu  # declaring them made it no better: the parse as it was
@@ -501,12 +504,14 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
 
 
 def _can_hide(tu: TranslationUnit, errors: list[ClangDiagnostic],
-              source: SourceCache) -> bool:
+              source: SourceCache, fieldless: set[str]) -> bool:
     """Whether any of ``errors`` can cost a call (``recall``): one outside every function
     the unit defines (a declaration: it may make a class invalid, and every call in its
     methods with it), or one inside a function whose text calls the ROS API. Errors
-    only inside functions that make no ROS call are left as they are: declaring the
-    names they miss would cost a parse and change no call."""
+    only inside functions that make no ROS call, and those on fields of messages known
+    only by name (clang reads on past them), are left as they are: declaring the names
+    they miss would cost a parse and change no call."""
+    errors = [e for e in errors if not _names_fieldless_type(e.spelling, fieldless)]
     if not errors:
         return False
     files = {os.path.abspath(e.location.file.name) for e in errors}

@@ -109,14 +109,22 @@ class Wrappers:
         # construction's (nav2's ServiceServer<ServiceT>(name, node, callback))
         functions = [f for f in finder.functions if _parameters(f) and (
             f.kind != CursorKind.CONSTRUCTOR or _of_class_template(f))]
-        # lambdas with parameters: a function may return one that passes a parameter
-        # on as a name (nav2 MPPI's ``getParamGetter(ns)``: ``getParam(x, "name", d)``)
-        functions += [lam for f in finder.functions for lam in _lambdas(f)
-                      if _parameters(lam)]
+        # each function's calls, and its lambdas: one with parameters may be returned
+        # and pass one on as a name (nav2 MPPI's ``getParamGetter(ns)``:
+        # ``getParam(x, "name", d)``), so it is summarised like a function
+        found: dict[Key, list[Cursor]] = {}
+        todo = [f for f in finder.functions if f.kind != CursorKind.FIELD_DECL]
+        while todo:
+            function = todo.pop()
+            inner, lambdas = _scan(function)
+            found[_key(function.canonical)] = inner
+            todo += lambdas
+            functions += [lam for lam in lambdas if _parameters(lam)]
         # the calls that may be of the API or of a wrapper (by name; "" depends on a
         # template parameter)
         wanted = {"", *_API_NAMES, *(f.spelling for f in functions)}
-        calls = {_key(f.canonical): [c for c in _calls(f) if c.spelling in wanted]
+        calls = {_key(f.canonical): [c for c in found.get(_key(f.canonical), ())
+                                     if c.spelling in wanted]
                  for f in functions}
         todo = functions
         for _round in range(MAX_DEPTH):
@@ -133,10 +141,15 @@ class Wrappers:
             # the functions that call one that changed are read again
             todo = [f for f in functions if any(
                 self._calls_one_of(call, changed) for call in calls[_key(f.canonical)])]
-        # a recursive function is no wrapper, nor is one made through it
+        # a recursive function is no wrapper, nor is one made through it; a class
+        # template's constructor is one only where the construction gives the type (its
+        # other calls stay in it, named by what its callers pass: call_sites, links)
+        constructors = {_key(f.canonical) for f in functions if _is_constructor(f)}
         self.summaries = {
-            key: found for key, found in self.summaries.items() if key not in self._recursive
-            and not any(self._recursive & w.through for w in found)}
+            key: kept for key, found in self.summaries.items() if key not in self._recursive
+            and not any(self._recursive & w.through for w in found)
+            and (kept := [w for w in found if key not in constructors
+                          or "template" in w.row.type_from])}
         self._inner = {call: owner for call, owner in self._inner.items()
                        if owner in self.summaries}
         sites = finder.sites
@@ -687,25 +700,22 @@ def _bind(parts: Parts, bound: dict[str, Parts]) -> Parts:
     return tuple(found)
 
 
-def _lambdas(function: Cursor) -> Iterator[Cursor]:
-    if function.kind == CursorKind.FIELD_DECL:
-        return
-    for node in function.walk_preorder():
-        if node.kind == CursorKind.LAMBDA_EXPR:
-            yield node
-
-
-def _calls(function: Cursor) -> Iterator[Cursor]:
-    """The calls in ``function``'s body, not those of the lambdas it makes (a lambda is
-    summarised on its own: its body runs when it is called, not where it is written)."""
+def _scan(function: Cursor) -> tuple[list[Cursor], list[Cursor]]:
+    """The calls in ``function``'s body, in order, and the lambdas it makes; not the
+    calls inside those (a lambda's body runs when it is called, not where it is
+    written): one walk of the body."""
+    calls: list[Cursor] = []
+    lambdas: list[Cursor] = []
     stack = list(reversed(list(function.get_children())))
     while stack:
         node = stack.pop()
         if node.kind == CursorKind.LAMBDA_EXPR:
+            lambdas.append(node)
             continue
         if node.kind == CursorKind.CALL_EXPR:
-            yield node
+            calls.append(node)
         stack.extend(reversed(list(node.get_children())))
+    return calls, lambdas
 
 
 def _dependent_name(name: str) -> bool:

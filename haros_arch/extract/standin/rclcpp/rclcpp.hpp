@@ -540,7 +540,12 @@ public:
   Node::SharedPtr create_sub_node(const std::string& sub_namespace);
 };
 enum class FutureReturnCode { SUCCESS, INTERRUPTED, TIMEOUT };
-class Context { public: RCLCPP_SMART_PTR_DEFINITIONS(Context) bool is_valid() const; };
+class PreShutdownCallbackHandle {};
+class Context { public: RCLCPP_SMART_PTR_DEFINITIONS(Context) bool is_valid() const;
+  template<class C> PreShutdownCallbackHandle add_pre_shutdown_callback(C callback);
+  bool remove_pre_shutdown_callback(const PreShutdownCallbackHandle& handle);
+  template<class C> void add_on_shutdown_callback(C callback);
+  bool shutdown(const std::string& reason); };
 namespace memory_strategy { class MemoryStrategy { public: RCLCPP_SMART_PTR_DEFINITIONS(MemoryStrategy) }; }
 struct ExecutorOptions {
   ExecutorOptions();

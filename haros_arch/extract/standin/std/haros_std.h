@@ -68,6 +68,7 @@ template<class T> struct is_arithmetic : integral_constant<bool, __is_arithmetic
 template<class T> struct is_integral : integral_constant<bool, __is_integral(T)> {};
 template<class T> struct is_floating_point : integral_constant<bool, __is_floating_point(T)> {};
 template<class B, class D> struct is_base_of : integral_constant<bool, __is_base_of(B, D)> {};
+template<class...> using void_t = void;
 template<class T> struct is_pointer : false_type {};
 template<class T> struct is_pointer<T*> : true_type {};
 template<class T> struct is_enum : integral_constant<bool, __is_enum(T)> {};
@@ -643,9 +644,14 @@ public:
   typedef int openmode;
   static const openmode in = 1, out = 2, app = 4, binary = 8, trunc = 16, ate = 32;
   static const fmtflags fixed = 1, scientific = 2, boolalpha = 4, hex = 8, dec = 16;
+  typedef int seekdir;
+  typedef long pos_type;
+  typedef long off_type;
+  static const seekdir beg = 0, cur = 1, end = 2;
   fmtflags setf(fmtflags f);
   int precision(int p);
 };
+typedef ios_base ios;
 class ostream : public ios_base {
 public:
   ostream& operator<<(bool v);
@@ -687,6 +693,10 @@ public:
   int get();
   int peek();
   istream& read(char* s, long n);
+  istream& seekg(long pos);
+  istream& seekg(long off, ios_base::seekdir dir);
+  long tellg();
+  long gcount() const;
   bool good() const;
   bool fail() const;
   bool eof() const;
@@ -786,6 +796,8 @@ public:
   template<class R2, class P2> constexpr duration(const duration<R2, P2>& d);
   constexpr R count() const;
   static constexpr duration zero();
+  static constexpr duration max();
+  static constexpr duration min();
   duration operator-() const;
   duration& operator+=(const duration& d);
   duration& operator-=(const duration& d);
