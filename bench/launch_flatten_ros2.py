@@ -34,6 +34,8 @@ def left_out_causes(flat: Flat) -> Counter[str]:
             causes["parameter value not known"] += 1
         elif "runs only" in note:
             causes["node under an undecided condition"] += 1
+        elif "no name" in note:
+            causes["component with no name (launch_ros's XML / YAML need one)"] += 1
         elif "start at once" in note:
             causes["node started by an event handler (written to start at once)"] += 1
         else:
@@ -76,22 +78,22 @@ def ours(files: list[str], workspace: Any, env: dict[str, str], out: str,
         counts["files"] += 1
         try:
             model = load(path, workspace, {}, env)
-            flat = collect(model)
-        except Exception:  # noqa: BLE001  (a bench counts our own bugs)
+        except Exception:
             counts["loader or flattener raised"] += 1
             if verbose:
                 print(f"raised: {path}\n{traceback.format_exc()[-600:]}")
             continue
         counts["nodes"] += len(model.nodes)
         counts["parameters"] += len(model.params)
-        counts["nodes left out"] += len(flat.left_out)
-        counts["parameters left out"] += len(flat.params_left_out)
-        left.update(left_out_causes(flat))
         if model.nodes:
             counts["files with nodes"] += 1
         counts["flattened"] += 1
-        want = facts(model, flat)
         for fmt in FORMATS:
+            flat = collect(model, fmt)
+            want = facts(model, flat)
+            counts[f"nodes left out ({fmt})"] += len(flat.left_out)
+            counts[f"parameters left out ({fmt})"] += len(flat.params_left_out)
+            left.update(f"{fmt}: {c}" for c in left_out_causes(flat).elements())
             text, _ = flatten(model, fmt)
             target = os.path.join(out, f"flat{index}{SUFFIX[fmt]}")
             with open(target, "w") as handle:
@@ -148,19 +150,9 @@ def real(files: list[str], src: str, python: str, verbose: bool) -> None:
                 continue
             counts["real launch runs the original"] += 1
             model = load(path, workspace, {}, env)
-            flat = collect(model)
-            gone = [re.compile(".+".join(map(re.escape, n.split()[1].split("?"))) + "$")
-                    for n in flat.notes if n.startswith("node ") and "left out" in n]
-            gone_params = {tuple(n.split()[1].split(":", 1)) for n in flat.notes
-                           if n.startswith("parameter ")}
-            theirs = []
-            for node in original["nodes"]:
-                if any(p.match(str(node["name"])) for p in gone):
-                    continue
-                params = {k: v for k, v in node["params"].items()
-                          if (node["name"], k) not in gone_params}
-                theirs.append({**node, "params": params})
             for fmt in FORMATS:
+                flat = collect(model, fmt)
+                theirs = kept_nodes(original["nodes"], model, flat)
                 text, _ = flatten(model, fmt)
                 target = os.path.join(flats, f"flat{index}{SUFFIX[fmt]}")
                 with open(target, "w") as handle:
@@ -194,6 +186,26 @@ def real(files: list[str], src: str, python: str, verbose: bool) -> None:
     print("differences, by cause")
     for key, value in sorted(causes.items()) or [("none", 0)]:
         print(f"  {key}: {value}")
+
+
+def kept_nodes(nodes: list[dict[str, Any]], model: Any, flat: Flat) -> list[dict[str, Any]]:
+    """The real launch's nodes less those the flattener says it leaves out (each matched
+    by name, ``?`` for an unknown part or no name, and by package and executable), and
+    their parameters less those it leaves out."""
+    rest = list(nodes)
+    for index in sorted(flat.left_out):
+        decl = model.nodes[index]
+        pattern = re.compile("(.+|<node_name_unspecified>)".join(
+            map(re.escape, decl.name.split("?"))) + "$")
+        for node in rest:
+            if pattern.match(str(node["name"])) and all(
+                    "?" in ours or ours == node[key] for key, ours in (
+                        ("package", decl.package), ("executable", decl.executable))):
+                rest.remove(node)
+                break
+    gone = {(model.nodes[i].name, key) for i, key in flat.params_left_out}
+    return [{**node, "params": {k: v for k, v in node["params"].items()
+                                if (node["name"], k) not in gone}} for node in rest]
 
 
 def _root(src: str, path: str) -> str:

@@ -45,7 +45,7 @@ def roundtrip(root: Path, name: str, args: dict[str, str], fmt: str,
               out: Path) -> tuple[list[str], list[str], str]:
     workspace = scan([str(root)], {})
     model = load(str(root / name), workspace, args, {})
-    flat = collect(model)
+    flat = collect(model, fmt)
     text, _ = flatten(model, fmt)
     path = out / f"flat{SUFFIX[fmt]}"
     path.write_text(text)
@@ -145,7 +145,7 @@ def small(tmp_path: Path, fmt: str) -> tuple[str, list[str], Any, Any]:
 @pytest.mark.parametrize("fmt", ["xml", "yaml", "python"])
 def test_a_small_bringup_in_each_format(tmp_path: Path, fmt: str) -> None:
     text, notes, model, again = small(tmp_path, fmt)
-    assert facts(again) == facts(model, collect(model))
+    assert facts(again) == facts(model, collect(model, fmt))
     names = sorted(n.name for n in again.nodes)
     assert names == ["/after", "/first", "/late", "/later", "/robot/box", "/robot/cam",
                      "/robot/driver"]
@@ -199,3 +199,36 @@ def test_cli_flatten_ros2_yaml_and_python(tmp_path: Path, capsys: Any) -> None:
     out, _ = capsys.readouterr()
     assert "def generate_launch_description():" in out and "Node(package='pkg'" in out
     assert main(["launch", file, "--workspace", str(tmp_path), "--format", "yaml"]) == 2
+
+
+def test_a_yaml_launch_file_keeps_a_plain_string_a_string(tmp_path: Path) -> None:
+    """launch_yaml gives ``value: 'false'`` as the string (launch_xml's ``value="false"``
+    is the boolean); with a substitution the text is read as YAML, as launch_ros does."""
+    pkg = write(tmp_path, {"launch/a.launch.yaml": (
+        "launch:\n- arg: {name: x, default: 'false'}\n- node:\n    pkg: pkg\n    exec: e\n"
+        "    name: n\n    param:\n    - {name: s, value: 'false'}\n"
+        "    - {name: t, value: false}\n    - {name: u, value: \"'1'\"}\n"
+        "    - {name: v, value: $(var x)}\n    - {name: y, value: [a, 'true']}\n")})
+    model = load(str(pkg / "launch/a.launch.yaml"), scan([str(tmp_path)], {}), {}, {})
+    assert {p.key: p.value for p in model.params} == {
+        "s": "false", "t": False, "u": "'1'", "v": False, "y": ["a", "true"]}
+
+
+def test_a_component_with_no_name_is_kept_in_python_only(tmp_path: Path) -> None:
+    """launch_ros's XML and YAML ``composable_node`` need ``name=`` (the real launch
+    refuses the file without it); Python's ``ComposableNode`` does not."""
+    pkg = write(tmp_path, {"launch/c.launch.py": (
+        "from launch import LaunchDescription\n"
+        "from launch_ros.actions import ComposableNodeContainer\n"
+        "from launch_ros.descriptions import ComposableNode\n"
+        "def generate_launch_description():\n"
+        "    return LaunchDescription([ComposableNodeContainer(name='box', namespace='',\n"
+        "        package='rclcpp_components', executable='component_container',\n"
+        "        composable_node_descriptions=[ComposableNode(package='pkg',\n"
+        "                                                     plugin='pkg::Cam')])])\n")})
+    model = load(str(pkg / "launch/c.launch.py"), scan([str(tmp_path)], {}), {}, {})
+    text, notes = flatten(model, "xml")
+    assert "<composable_node" not in text and "no name" in notes[0]
+    text, notes = flatten(model, "python")
+    assert "ComposableNode(package='pkg', plugin='pkg::Cam', namespace='/')" in text
+    assert notes == []

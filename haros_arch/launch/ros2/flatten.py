@@ -11,11 +11,12 @@ the same conditions (``node_container``), else loaded into it by name
 timer of the same period.
 
 Three formats of the same content: ROS 2 XML, YAML and Python. A parameter value is
-written as launch_ros reads it back: text that is YAML for the value (``'1'`` for the
-string "1"), checked by reading it back as the loader does. What cannot be written (a
-part not known statically, a condition not decided, a node started by an event
-handler, which is written to start at once) is said both in a comment at its place and
-in the notes returned. ``facts`` is what a flattened file must keep: the test and
+written as launch_ros reads it back: in XML and in a Python string, text that is YAML
+for the value (``'1'`` for the string "1"), checked by reading it back as the loader
+does; in YAML, the value as YAML types it (launch_yaml keeps a string a string). What
+cannot be written (a part not known statically, a condition not decided, a component
+with no name in XML or YAML, a node started by an event handler, which is written to
+start at once) is said both in a comment at its place and in the notes returned. ``facts`` is what a flattened file must keep: the test and
 ``bench/launch_flatten.py`` compare it between the original and the flat file.
 """
 
@@ -66,13 +67,14 @@ class Flat:
 
 def flatten(model: LaunchModel, fmt: str = "xml") -> tuple[str, list[str]]:
     """The flattened launch file's text in ``fmt`` and notes on what it leaves out."""
-    flat = collect(model)
+    flat = collect(model, fmt)
     writer = {"xml": as_xml, "yaml": as_yaml, "python": as_python}[fmt]
     return writer(flat), flat.notes
 
 
-def collect(model: LaunchModel) -> Flat:
-    """What the flattened file holds, in launch order, with what it leaves out said."""
+def collect(model: LaunchModel, fmt: str = "python") -> Flat:
+    """What the flattened file in ``fmt`` holds, in launch order, with what it leaves out
+    said."""
     flat = Flat(model.files[0] if model.files else "")
     params: dict[int, list[tuple[str, Any]]] = {}
     for param in model.params:
@@ -81,7 +83,12 @@ def collect(model: LaunchModel) -> Flat:
     made: dict[int, FlatNode] = {}
     for index, decl in enumerate(model.nodes):
         node = _node(index, decl, params.get(index, []), flat)
-        if node is not None:
+        if node is not None and decl.composable and fmt != "python" and (
+                _base(decl) is None):
+            _leave_out(flat, index, f"node {decl.name}{_where(decl)} is a component with "
+                       f"no name, which launch_ros's {fmt} front end refuses; left out "
+                       "(--format python keeps it)")
+        elif node is not None:
             made[index] = node
     containers: dict[str, FlatNode] = {}
     names = [d.name for d in model.nodes if not d.composable]
@@ -313,7 +320,8 @@ def _yaml_component(node: FlatNode) -> dict[str, Any]:
 def _yaml_body(node: FlatNode) -> dict[str, Any]:
     body: dict[str, Any] = {}
     if node.params:
-        body["param"] = [{"name": k, "value": param_text(v)} for k, v in node.params]
+        # launch_yaml gives the value as YAML typed it; a string stays a string
+        body["param"] = [{"name": k, "value": v} for k, v in node.params]
     if node.decl.remaps:
         body["remap"] = [{"from": a, "to": b} for a, b in node.decl.remaps]
     return body
