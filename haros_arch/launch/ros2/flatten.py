@@ -16,8 +16,9 @@ for the value (``'1'`` for the string "1"), checked by reading it back as the lo
 does; in YAML, the value as YAML types it (launch_yaml keeps a string a string). What
 cannot be written (a part not known statically, a condition not decided, a component
 with no name in XML or YAML, a node started by an event handler, which is written to
-start at once) is said both in a comment at its place and in the notes returned. ``facts`` is what a flattened file must keep: the test and
-``bench/launch_flatten.py`` compare it between the original and the flat file.
+start at once) is said both in a comment at its place and in the notes returned.
+``facts`` is what a flattened file must keep: the test and ``bench/launch_flatten.py``
+compare it between the original and the flat file.
 """
 
 from __future__ import annotations

@@ -328,7 +328,7 @@ def _plain(raw: Any) -> Any:
     except SubstitutionSyntax:
         return raw
     if all(isinstance(p, str) for p in parts):
-        return e.ParamValue("".join(parts), as_text=True)
+        return e.ParamValue("".join(p for p in parts if isinstance(p, str)), as_text=True)
     return parts
 
 
