@@ -142,7 +142,6 @@ class Resource:
     def rosname(self) -> RosName:
         return RosName(self.name, self.name, namespace_of(self.name))
 
-
     @property
     def is_unresolved(self) -> bool:
         return UNKNOWN_MARK in self.name
