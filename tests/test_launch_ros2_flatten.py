@@ -4,6 +4,7 @@ launch file of the fixtures and on small cases written here."""
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 from typing import Any
 
@@ -232,3 +233,29 @@ def test_a_component_with_no_name_is_kept_in_python_only(tmp_path: Path) -> None
     text, notes = flatten(model, "python")
     assert "ComposableNode(package='pkg', plugin='pkg::Cam', namespace='/')" in text
     assert notes == []
+
+
+@pytest.mark.parametrize("fmt", ["xml", "yaml", "python"])
+def test_a_node_with_no_name_keeps_its_parameter_file_as_a_path(tmp_path: Path,
+                                                                 fmt: str) -> None:
+    """launch_ros hands a Node's parameter file to the node, which applies the section
+    for the name its code gives; with that name unknown here only /** applies, so the
+    flat file keeps the file's path (and the values known)."""
+    pkg = write(tmp_path, {
+        "config/p.yaml": "/**:\n  ros__parameters:\n    rate: 5\n"
+                         "driver:\n  ros__parameters:\n    port: /dev/tty\n",
+        "launch/u.launch.xml": "<launch>\n  <node pkg=\"pkg\" exec=\"drive\">\n"
+                               "    <param from=\"$(dirname)/../config/p.yaml\"/>\n"
+                               "    <param name=\"gain\" value=\"2\"/>\n  </node>\n</launch>\n"})
+    workspace = scan([str(tmp_path)], {})
+    model = load(str(pkg / "launch/u.launch.xml"), workspace, {}, {})
+    assert model.nodes[0].param_files == [str(pkg / "launch/../config/p.yaml")]
+    text, notes = flatten(model, fmt)
+    out = tmp_path / f"flat{SUFFIX[fmt]}"
+    out.write_text(text)
+    again = load(str(out), workspace, {}, {})
+    assert notes == [] and "config/p.yaml" in text
+    assert facts(again) == facts(model)
+    assert [os.path.realpath(f) for f in again.nodes[0].param_files] == [
+        str(pkg / "config/p.yaml")]
+    assert {p.key: p.value for p in again.params} == {"rate": 5, "gain": 2}

@@ -45,6 +45,10 @@ class NodeDecl:
     # model): the real name is the one its code gives, which may differ
     name_guessed: bool = False
     container: str | None = None  # ROS 2: full name of the container it is loaded into
+    # ROS 2: parameter files given to a node whose name is not known, as launch_ros passes
+    # them (``--params-file``): the running node applies the sections for its name, of
+    # which only the /** entries are applied here
+    param_files: list[str] = field(default_factory=list)
 
 
 @dataclass

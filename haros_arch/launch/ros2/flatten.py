@@ -259,7 +259,18 @@ def _xml_component(parent: etree._Element, node: FlatNode) -> None:
     _xml_body(etree.SubElement(parent, "composable_node", attrs), node)
 
 
+def _files(node: FlatNode) -> list[str]:
+    """Parameter files kept as paths: those of a node whose name is not known, which
+    launch_ros hands to the node (its own sections apply when it runs); its values
+    written after them are the same as theirs where they overlap."""
+    if node.decl.composable:
+        return []
+    return [f for f in node.decl.param_files if "$(" not in f]
+
+
 def _xml_body(element: etree._Element, node: FlatNode) -> None:
+    for path in _files(node):
+        etree.SubElement(element, "param", {"from": path})
     for key, value in node.params:
         etree.SubElement(element, "param", name=key, value=str(param_text(value)))
     for source, target in node.decl.remaps:
@@ -320,9 +331,10 @@ def _yaml_component(node: FlatNode) -> dict[str, Any]:
 
 def _yaml_body(node: FlatNode) -> dict[str, Any]:
     body: dict[str, Any] = {}
-    if node.params:
+    if node.params or _files(node):
         # launch_yaml gives the value as YAML typed it; a string stays a string
-        body["param"] = [{"name": k, "value": v} for k, v in node.params]
+        body["param"] = [{"from": f} for f in _files(node)] + [
+            {"name": k, "value": v} for k, v in node.params]
     if node.decl.remaps:
         body["remap"] = [{"from": a, "to": b} for a, b in node.decl.remaps]
     return body
@@ -383,9 +395,10 @@ def _py_component(node: FlatNode) -> str:
 
 def _py_body(node: FlatNode) -> list[tuple[str, str]]:
     out: list[tuple[str, str]] = []
-    if node.params:
+    if node.params or _files(node):
         entries = ", ".join(f"{k!r}: {_py_value(v)}" for k, v in node.params)
-        out.append(("parameters", f"[{{{entries}}}]"))
+        files = "".join(f"{f!r}, " for f in _files(node))
+        out.append(("parameters", f"[{files}{{{entries}}}]"))
     if node.decl.remaps:
         out.append(("remappings", repr([tuple(r) for r in node.decl.remaps])))
     return out

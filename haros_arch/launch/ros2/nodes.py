@@ -97,6 +97,10 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
             runner.report("LAUNCH_PARAM_FILE", location,
                           detail=f"parameter file applied to {node}, whose name is not "
                                  "known: only its /** entries are used")
+            kept = _as_given(runner, entry, scope, location)
+            decl = runner.model.nodes[-1]
+            if kept is not None and not decl.composable:  # launch_ros passes it on
+                decl.param_files.append(kept)
         for name, leaf in naming.params_for_node(document, node):
             found[name] = (leaf, location)
 
@@ -118,6 +122,18 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
         param = make_param(node, name, leaf, scope.conditions, location)
         param.owner = owner
         runner.model.params.append(param)
+
+
+def _as_given(runner: Runner, entry: e.ParamFile, scope: Scope,
+              location: Location) -> str | None:
+    """The path launch_ros gives a ``Node`` as ``--params-file``: a file used as it is
+    (not rewritten, no substitutions in it); None otherwise."""
+    if entry.rewrites or entry.key_rewrites or entry.value_rewrites or entry.replacements \
+            or entry.root_key is not None or entry.allow_substs or (
+            len(entry.path) == 1 and isinstance(entry.path[0], e.FileRef)):
+        return None
+    path = runner.value(entry.path, scope, location)
+    return None if path is None or path.literal is None else path.literal
 
 
 def flat(key: str, value: Any) -> list[tuple[str, Any]]:
