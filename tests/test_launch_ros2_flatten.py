@@ -259,3 +259,16 @@ def test_a_node_with_no_name_keeps_its_parameter_file_as_a_path(tmp_path: Path,
     assert [os.path.realpath(f) for f in again.nodes[0].param_files] == [
         str(pkg / "config/p.yaml")]
     assert {p.key: p.value for p in again.params} == {"rate": 5, "gain": 2}
+
+
+def test_a_timer_whose_period_is_not_a_number_is_left_out(tmp_path: Path) -> None:
+    pkg = write(tmp_path, {"launch/t.launch.xml": (
+        "<launch>\n  <arg name=\"delay\" default=\"3.0\"/>\n"
+        "  <timer period=\"$(var delay)\">\n"
+        "    <node pkg=\"pkg\" exec=\"late\" name=\"late\"/>\n  </timer>\n"
+        "  <timer period=\"1.5\">\n    <node pkg=\"pkg\" exec=\"soon\" name=\"soon\"/>\n"
+        "  </timer>\n</launch>\n")})
+    model = load(str(pkg / "launch/t.launch.xml"), scan([str(tmp_path)], {}), {}, {})
+    text, notes = flatten(model, "xml")
+    assert '<timer period="1.5">' in text and 'name="late"' not in text
+    assert [n.split(" (")[0] for n in notes] == ["node /late"]

@@ -116,9 +116,9 @@ def _node(index: int, decl: NodeDecl, params: list[tuple[str, Any]], flat: Flat)
     timers: list[str] = []
     comments: list[str] = []
     for cond in decl.conditions:
-        period = _PERIOD.search(cond.text)
-        if cond.statement == "timer" and period and "?" not in period.group(1):
-            timers.append(period.group(1).strip("'\""))
+        period = _period(cond.text) if cond.statement == "timer" else None
+        if period is not None:
+            timers.append(period)
         elif cond.statement == "event":
             text = f"node {decl.name}{where} starts {cond.text} in the original; " \
                    "written to start at once"
@@ -148,6 +148,18 @@ def _node(index: int, decl: NodeDecl, params: list[tuple[str, Any]], flat: Flat)
             continue
         kept.append((key, value))
     return FlatNode(decl, kept, timers, comments=comments)
+
+
+def _period(text: str) -> str | None:
+    """A timer condition's period when it is a number (``after timer period=2.0``)."""
+    found = _PERIOD.search(text)
+    if found is None:
+        return None
+    period = found.group(1).strip("'\"")
+    try:
+        return period if math.isfinite(float(period)) else None
+    except ValueError:
+        return None
 
 
 def _leave_out(flat: Flat, index: int, text: str) -> None:
