@@ -204,8 +204,12 @@ def kept_nodes(nodes: list[dict[str, Any]], model: Any, flat: Flat) -> list[dict
                 rest.remove(node)
                 break
     gone = {(model.nodes[i].name, key) for i, key in flat.params_left_out}
+
+    def ours(name: str) -> str:  # an unnamed node is "?" on our side
+        return name.replace("<node_name_unspecified>", "?")
+
     return [{**node, "params": {k: v for k, v in node["params"].items()
-                                if (node["name"], k) not in gone}} for node in rest]
+                                if (ours(node["name"]), k) not in gone}} for node in rest]
 
 
 def _root(src: str, path: str) -> str:

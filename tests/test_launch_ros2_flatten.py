@@ -111,8 +111,8 @@ def generate_launch_description():
             PushRosNamespace('robot'),
             SetRemap('cmd_vel', '/cmd'),
             Node(package='pkg', executable='drive', name='driver', arguments=['-v', 'x'],
-                 parameters=[{'code': "'1'", 'mode': LaunchConfiguration('mode'),
-                              'gains': [1.5, 2.0], 'flags': ['a', "'true'"], 'nested': {'a': 3},
+                 parameters=[{'code': '1', 'mode': LaunchConfiguration('mode'),
+                              'gains': [1.5, 2.0], 'flags': ['a', 'true'], 'nested': {'a': 3},
                               'empty': ''}],
                  remappings=[('odom', 'odom_raw')]),
             ComposableNodeContainer(package='rclcpp_components',
@@ -272,3 +272,29 @@ def test_a_timer_whose_period_is_not_a_number_is_left_out(tmp_path: Path) -> Non
     text, notes = flatten(model, "xml")
     assert '<timer period="1.5">' in text and 'name="late"' not in text
     assert [n.split(" (")[0] for n in notes] == ["node /late"]
+
+
+def test_a_python_string_parameter_stays_a_string(tmp_path: Path) -> None:
+    """launch_ros (jazzy) dumps a Python string as YAML and reads it back, so '1',
+    'true' and '[x, y]' stay strings (the real launch gives the same); a substitution's
+    text is read as YAML."""
+    pkg = write(tmp_path, {"launch/p.launch.py": (
+        "from launch import LaunchDescription\n"
+        "from launch.actions import DeclareLaunchArgument\n"
+        "from launch.substitutions import LaunchConfiguration\n"
+        "from launch_ros.actions import Node\n"
+        "def generate_launch_description():\n"
+        "    return LaunchDescription([DeclareLaunchArgument('x', default_value='true'),\n"
+        "        Node(package='pkg', executable='e', name='n', parameters=[{\n"
+        "            'a': '[x, y]', 'b': '1', 'c': 'true', 'g': ['1', '2'],\n"
+        "            'f': LaunchConfiguration('x'), 'h': 2.5}])])\n")})
+    model = load(str(pkg / "launch/p.launch.py"), scan([str(tmp_path)], {}), {}, {})
+    assert {p.key: p.value for p in model.params} == {
+        "a": "[x, y]", "b": "1", "c": "true", "g": ["1", "2"], "f": True, "h": 2.5}
+
+
+def test_xml_writes_text_of_several_lines_as_a_literal_block() -> None:
+    text = '<robot name="arm">\n  <link name="world"/>\n</robot>\n'
+    assert param_text(text) == (
+        '|\n  <robot name="arm">\n    <link name="world"/>\n  </robot>\n')
+    assert param_text("C:\\path") is None  # launch would read the backslash as an escape

@@ -11,9 +11,10 @@ the same conditions (``node_container``), else loaded into it by name
 timer of the same period.
 
 Three formats of the same content: ROS 2 XML, YAML and Python. A parameter value is
-written as launch_ros reads it back: in XML and in a Python string, text that is YAML
-for the value (``'1'`` for the string "1"), checked by reading it back as the loader
-does; in YAML, the value as YAML types it (launch_yaml keeps a string a string). What
+written as launch_ros reads it back: in XML, text that is YAML for the value (``'1'``
+for the string "1"), checked by reading it back as the loader does; in YAML, the value
+as YAML types it and in Python the literal (launch_yaml and launch_ros keep a string a
+string). What
 cannot be written (a part not known statically, a condition not decided, a component
 with no name in XML or YAML, a node started by an event handler, which is written to
 start at once) is said both in a comment at its place and in the notes returned.
@@ -27,7 +28,6 @@ import json
 import math
 import re
 import shlex
-from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -83,7 +83,7 @@ def collect(model: LaunchModel, fmt: str = "python") -> Flat:
             params.setdefault(param.owner, []).append((param.key, param.value))
     made: dict[int, FlatNode] = {}
     for index, decl in enumerate(model.nodes):
-        node = _node(index, decl, params.get(index, []), flat)
+        node = _node(index, decl, params.get(index, []), flat, fmt)
         if node is not None and decl.composable and fmt != "python" and (
                 _base(decl) is None):
             _leave_out(flat, index, f"node {decl.name}{_where(decl)} is a component with "
@@ -111,7 +111,8 @@ def collect(model: LaunchModel, fmt: str = "python") -> Flat:
     return flat
 
 
-def _node(index: int, decl: NodeDecl, params: list[tuple[str, Any]], flat: Flat) -> FlatNode | None:
+def _node(index: int, decl: NodeDecl, params: list[tuple[str, Any]], flat: Flat,
+          fmt: str) -> FlatNode | None:
     where = _where(decl)
     timers: list[str] = []
     comments: list[str] = []
@@ -139,7 +140,9 @@ def _node(index: int, decl: NodeDecl, params: list[tuple[str, Any]], flat: Flat)
         return None
     kept: list[tuple[str, Any]] = []
     for key, value in params:
-        if "?" in key or "$(" in key or value is None or param_text(value) is None:
+        writable = (_py_plain(value) if fmt == "python" else _yaml_ok(value) if fmt == "yaml"
+                    else param_text(value) is not None)
+        if "?" in key or "$(" in key or value is None or not writable:
             text = f"parameter {decl.name}:{key} is not known statically or cannot be " \
                    "written as a value; left out"
             flat.notes.append(text)
@@ -173,26 +176,36 @@ def _where(decl: NodeDecl) -> str:
 
 
 def param_text(value: Any) -> str | None:
-    """The text launch_ros reads (as YAML) back into ``value``; None if there is none."""
+    """The XML attribute text launch_xml reads (as YAML) back into ``value``: the value
+    itself, its YAML flow form, or a literal block for text of several lines. None if
+    none reads back or the text holds a backslash (an escape to launch's substitution
+    parser) or ``$(`` (a substitution)."""
+    candidates: list[str] = []
     if isinstance(value, str):
-        text = value
+        candidates.append(value)
     elif isinstance(value, float) and not math.isfinite(value):
-        text = ".nan" if math.isnan(value) else (".inf" if value > 0 else "-.inf")
-    else:
-        text = None
-    if text is None or not _same(naming.yaml_value(text), value):
+        candidates.append(".nan" if math.isnan(value) else (".inf" if value > 0 else "-.inf"))
+    for style in (None, "|"):
         try:
-            text = yaml.safe_dump(value, default_flow_style=True, width=math.inf,
-                                  allow_unicode=True).strip()
+            text = yaml.safe_dump(value, default_flow_style=style is None, width=math.inf,
+                                  allow_unicode=True, default_style=style)
         except yaml.YAMLError:
-            return None
-        if text.endswith("\n..."):
-            text = text[:-4].rstrip()
-        elif text.endswith("..."):
-            text = text[:-3].rstrip()
-    if "$(" in text or "\n" in text or not _same(naming.yaml_value(text), value):
-        return None
-    return text
+            continue
+        candidates.append(text if style else text.strip().removesuffix("...").rstrip())
+    for text in candidates:
+        if "$(" not in text and "\\" not in text and _same(naming.yaml_value(text), value):
+            return text
+    return None
+
+
+def _yaml_ok(value: Any) -> bool:
+    """A value the YAML launch file can hold as it is (its strings are read for
+    substitutions and escapes: none may hold ``$(`` or a backslash)."""
+    if isinstance(value, list):
+        return bool(value) and all(_yaml_ok(v) for v in value)
+    if isinstance(value, str):
+        return "$(" not in value and "\\" not in value
+    return isinstance(value, bool | int | float)
 
 
 def _same(a: Any, b: Any) -> bool:
@@ -408,7 +421,7 @@ def _py_component(node: FlatNode) -> str:
 def _py_body(node: FlatNode) -> list[tuple[str, str]]:
     out: list[tuple[str, str]] = []
     if node.params or _files(node):
-        entries = ", ".join(f"{k!r}: {_py_value(v)}" for k, v in node.params)
+        entries = ", ".join(f"{k!r}: {v!r}" for k, v in node.params)
         files = "".join(f"{f!r}, " for f in _files(node))
         out.append(("parameters", f"[{files}{{{entries}}}]"))
     if node.decl.remaps:
@@ -416,15 +429,17 @@ def _py_body(node: FlatNode) -> list[tuple[str, str]]:
     return out
 
 
-def _py_value(value: Any) -> str:
-    """A Python literal launch_ros gives the node as ``value``: numbers and booleans as
-    they are, anything else as the YAML text launch_ros reads (``'1'`` for "1")."""
-    plain: Callable[[Any], bool] = lambda v: isinstance(v, bool | int) or (  # noqa: E731
-        isinstance(v, float) and math.isfinite(v))
-    if plain(value) or (isinstance(value, list) and value and all(plain(v) for v in value)
-                        and len({type(v) for v in value}) == 1):
-        return repr(value)
-    return repr(param_text(value))
+def _py_plain(value: Any) -> bool:
+    """A value launch_ros gives the node as the Python literal is: a boolean, number or
+    string (launch_ros dumps a string as YAML and reads it back: it stays that string),
+    or a non-empty list of one of those types."""
+    def scalar(v: Any) -> bool:
+        return isinstance(v, bool | int | str) or (isinstance(v, float) and math.isfinite(v))
+
+    if isinstance(value, list):
+        return bool(value) and all(scalar(v) for v in value) and len(
+            {type(v) for v in value}) == 1
+    return scalar(value)
 
 
 def _py_number(text: str) -> str:
