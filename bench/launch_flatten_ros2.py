@@ -6,6 +6,7 @@ import argparse
 import json
 import os
 import re
+import shlex
 import tempfile
 import traceback
 from collections import Counter
@@ -163,6 +164,8 @@ def real(files: list[str], src: str, python: str, verbose: bool) -> None:
                     if verbose:
                         print(f"refused ({fmt}): {source}: {mine['error']}")
                     continue
+                for node in mine["nodes"]:  # compare() reads our side's args as a shell line
+                    node["args"] = shlex.join(node.get("argv", node["args"].split()))
                 tally: Counter[str] = Counter()
                 notes: list[str] = []
                 compare(mine["nodes"], theirs, tally, notes)
@@ -171,10 +174,11 @@ def real(files: list[str], src: str, python: str, verbose: bool) -> None:
                     continue
                 counts[f"{fmt}: differ"] += 1
                 for note in notes:
-                    words = note.split()
+                    field = re.search(r" (param|package|executable|namespace|container|"
+                                      r"args|remaps)\b", note)
                     cause = ("node only in the original" if "only real" in note else
                              "node only in the flat file" if "only ours" in note else
-                             f"node {words[1].rstrip(':')} differs")
+                             f"node {field.group(1) if field else '?'} differs")
                     causes[f"{fmt}: {cause}"] += 1
                 if verbose:
                     print(f"differ ({fmt}): {source}")
