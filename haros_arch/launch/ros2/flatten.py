@@ -143,8 +143,9 @@ def _node(index: int, decl: NodeDecl, params: list[tuple[str, Any]], flat: Flat,
         writable = (_py_plain(value) if fmt == "python" else _yaml_ok(value) if fmt == "yaml"
                     else param_text(value) is not None)
         if "?" in key or "$(" in key or value is None or not writable:
-            text = f"parameter {decl.name}:{key} is not known statically or cannot be " \
-                   "written as a value; left out"
+            why = "is not known statically" if "?" in key or value is None else (
+                f"cannot be written as a {fmt} value ({value!r:.60})")
+            text = f"parameter {decl.name}:{key} {why}; left out"
             flat.notes.append(text)
             comments.append(text)
             flat.params_left_out.add((index, key))
