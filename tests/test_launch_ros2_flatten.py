@@ -298,3 +298,16 @@ def test_xml_writes_text_of_several_lines_as_a_literal_block() -> None:
     assert param_text(text) == (
         '|\n  <robot name="arm">\n    <link name="world"/>\n  </robot>\n')
     assert param_text("C:\\path") is None  # launch would read the backslash as an escape
+
+
+def test_a_list_of_mixed_types_is_written_in_xml_but_not_in_python(tmp_path: Path) -> None:
+    pkg = write(tmp_path, {"launch/m.launch.xml": (
+        "<launch>\n  <node pkg=\"pkg\" exec=\"e\" name=\"n\">\n"
+        "    <param name=\"cov\" value=\"[1e-3, 0.5]\"/>\n  </node>\n</launch>\n")})
+    model = load(str(pkg / "launch/m.launch.xml"), scan([str(tmp_path)], {}), {}, {})
+    assert [p.value for p in model.params] == [["1e-3", 0.5]]  # YAML 1.1: 1e-3 is text
+    text, notes = flatten(model, "xml")
+    assert notes == [] and '<param name="cov" value="[1e-3, 0.5]"/>' in text
+    text, notes = flatten(model, "python")
+    assert notes == ["parameter /n:cov cannot be written as a python value (['1e-3', 0.5]); "
+                     "left out"]
