@@ -258,7 +258,10 @@ def test_a_node_with_no_name_keeps_its_parameter_file_as_a_path(tmp_path: Path,
     assert facts(again) == facts(model)
     assert [os.path.realpath(f) for f in again.nodes[0].param_files] == [
         str(pkg / "config/p.yaml")]
-    assert {p.key: p.value for p in again.params} == {"rate": 5, "gain": 2}
+    assert {p.key: p.value for p in again.params if p.pattern is None} == {
+        "rate": 5, "gain": 2}
+    assert [(p.pattern, p.key, p.value) for p in again.params if p.pattern] == [
+        ("/driver", "port", "/dev/tty")]
 
 
 def test_a_timer_whose_period_is_not_a_number_is_left_out(tmp_path: Path) -> None:

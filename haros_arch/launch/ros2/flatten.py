@@ -79,8 +79,17 @@ def collect(model: LaunchModel, fmt: str = "python") -> Flat:
     flat = Flat(model.files[0] if model.files else "")
     params: dict[int, list[tuple[str, Any]]] = {}
     for param in model.params:
-        if param.owner is not None and param.key is not None:
+        if param.owner is None or param.key is None:
+            continue
+        if param.pattern is None:
             params.setdefault(param.owner, []).append((param.key, param.value))
+        elif not _kept_files(model.nodes[param.owner]):  # a section for a node name
+            decl = model.nodes[param.owner]
+            text = (f"parameter {decl.name}:{param.key} for nodes named {param.pattern} "
+                    "comes from a parameter file that is rewritten; left out")
+            flat.notes.append(text)
+            flat.comments.append(text)
+            flat.params_left_out.add((param.owner, param.key))
     made: dict[int, FlatNode] = {}
     for index, decl in enumerate(model.nodes):
         node = _node(index, decl, params.get(index, []), flat, fmt)
@@ -286,12 +295,16 @@ def _xml_component(parent: etree._Element, node: FlatNode) -> None:
 
 
 def _files(node: FlatNode) -> list[str]:
+    return _kept_files(node.decl)
+
+
+def _kept_files(decl: NodeDecl) -> list[str]:
     """Parameter files kept as paths: those of a node whose name is not known, which
-    launch_ros hands to the node (its own sections apply when it runs); its values
-    written after them are the same as theirs where they overlap."""
-    if node.decl.composable:
+    launch_ros hands to the node (the sections for its name apply when it runs); its
+    values written after them are the same as theirs where they overlap."""
+    if decl.composable:
         return []
-    return [f for f in node.decl.param_files if "$(" not in f]
+    return [f for f in decl.param_files if "$(" not in f]
 
 
 def _xml_body(element: etree._Element, node: FlatNode) -> None:
@@ -458,19 +471,26 @@ def _py_call(name: str, kwargs: list[tuple[str, str]]) -> str:
 def facts(model: LaunchModel, flat: Flat | None = None) -> list[str]:
     """Each node of ``model`` with its parameters, as one comparable line, sorted:
     name, package, executable, namespace, arguments, remaps, container, the kinds of
-    conditions it runs under, and its parameters with their typed values. Given the
+    conditions it runs under, its parameters with their typed values and the parameter
+    file entries kept for the name the graph will give it (``ParamDecl.pattern``). Given the
     ``flat`` made from ``model``, what it says it leaves out is left out here too, and
     a node it starts at once has no event condition: the facts its file must give."""
     params: dict[int, dict[str, Any]] = {}
+    sections: dict[int, list[list[Any]]] = {}  # entries for a node name, not yet given
     for param in model.params:
-        if param.owner is not None and param.key is not None:
+        if param.owner is None or param.key is None or (
+                flat is not None and (param.owner, param.key) in flat.params_left_out):
+            continue
+        if param.pattern is None:
             params.setdefault(param.owner, {})[param.key] = param.value
+        else:
+            sections.setdefault(param.owner, []).append(
+                [param.pattern, param.key, param.value])
     out = []
     for index, decl in enumerate(model.nodes):
         if flat is not None and index in flat.left_out:
             continue
-        kept = {k: v for k, v in params.get(index, {}).items()
-                if flat is None or (index, k) not in flat.params_left_out}
+        kept = params.get(index, {})
         conditions = [c.statement for c in decl.conditions
                       if flat is None or index not in flat.started_at_once
                       or c.statement != "event"]
@@ -479,5 +499,6 @@ def facts(model: LaunchModel, flat: Flat | None = None) -> list[str]:
             "namespace": decl.namespace.rstrip("/") or "/", "args": _words(decl),
             "remaps": [list(r) for r in decl.remaps], "composable": decl.composable,
             "container": decl.container, "conditions": conditions,
-            "params": kept}, sort_keys=True, default=str))
+            "params": kept, "sections": sorted(sections.get(index, []), key=str)},
+            sort_keys=True, default=str))
     return sorted(out)
