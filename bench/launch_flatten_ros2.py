@@ -31,7 +31,9 @@ SUFFIX = {"xml": ".launch.xml", "yaml": ".launch.yaml", "python": ".launch.py"}
 def left_out_causes(flat: Flat) -> Counter[str]:
     causes: Counter[str] = Counter()
     for note in flat.notes:
-        if note.startswith("parameter ") and "cannot be written" in note:
+        if note.startswith("parameter ") and "for nodes named" in note:
+            causes["parameter file section for a node name, file not kept as a path"] += 1
+        elif note.startswith("parameter ") and "cannot be written" in note:
             causes["parameter value the format cannot hold"] += 1
         elif note.startswith("parameter "):
             causes["parameter value not known"] += 1

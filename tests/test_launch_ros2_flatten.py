@@ -314,3 +314,25 @@ def test_a_list_of_mixed_types_is_written_in_xml_but_not_in_python(tmp_path: Pat
     text, notes = flatten(model, "python")
     assert notes == ["parameter /n:cov cannot be written as a python value (['1e-3', 0.5]); "
                      "left out"]
+
+
+def test_a_node_section_that_cannot_be_kept_as_a_path_is_left_out_and_said(
+        tmp_path: Path) -> None:
+    pkg = write(tmp_path, {
+        "config/p.yaml": "cam:\n  ros__parameters:\n    fps: 30\n",
+        "launch/c.launch.py": (
+            "from launch import LaunchDescription\n"
+            "from launch_ros.actions import ComposableNodeContainer\n"
+            "from launch_ros.descriptions import ComposableNode\n"
+            "def generate_launch_description():\n"
+            "    return LaunchDescription([ComposableNodeContainer(name='box', namespace='',\n"
+            "        package='rclcpp_components', executable='component_container',\n"
+            "        composable_node_descriptions=[ComposableNode(package='pkg',\n"
+            "            plugin='pkg::Cam', parameters=['" + str(tmp_path) +
+            "/pkg/config/p.yaml'])])])\n")})
+    model = load(str(pkg / "launch/c.launch.py"), scan([str(tmp_path)], {}), {}, {})
+    assert [(p.pattern, p.key) for p in model.params] == [("/cam", "fps")]
+    text, notes = flatten(model, "python")
+    assert notes == ["parameter /?:fps for nodes named /cam comes from a component's "
+                     "parameter file, not kept as a path; left out"]
+    assert "# haros-arch: parameter /?:fps" in text

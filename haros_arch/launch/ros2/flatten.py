@@ -85,8 +85,10 @@ def collect(model: LaunchModel, fmt: str = "python") -> Flat:
             params.setdefault(param.owner, []).append((param.key, param.value))
         elif not _kept_files(model.nodes[param.owner]):  # a section for a node name
             decl = model.nodes[param.owner]
+            why = "a component's parameter file" if decl.composable else (
+                "a parameter file that is rewritten")
             text = (f"parameter {decl.name}:{param.key} for nodes named {param.pattern} "
-                    "comes from a parameter file that is rewritten; left out")
+                    f"comes from {why}, not kept as a path; left out")
             flat.notes.append(text)
             flat.comments.append(text)
             flat.params_left_out.add((param.owner, param.key))
