@@ -198,7 +198,8 @@ def test_cli_flatten_ros2_yaml_and_python(tmp_path: Path, capsys: Any) -> None:
     assert main(["launch", file, "--workspace", str(tmp_path), "--flatten",
                  "--format", "python"]) == 0
     out, _ = capsys.readouterr()
-    assert "def generate_launch_description():" in out and "Node(package='pkg'" in out
+    assert "def generate_launch_description():" in out and "package='pkg'," in out
+    compile(out, "flat.launch.py", "exec")
     assert main(["launch", file, "--workspace", str(tmp_path), "--format", "yaml"]) == 2
 
 
@@ -231,7 +232,8 @@ def test_a_component_with_no_name_is_kept_in_python_only(tmp_path: Path) -> None
     text, notes = flatten(model, "xml")
     assert "<composable_node" not in text and "no name" in notes[0]
     text, notes = flatten(model, "python")
-    assert "ComposableNode(package='pkg', plugin='pkg::Cam', namespace='/')" in text
+    assert "ComposableNode(\n" in text and "plugin='pkg::Cam',\n" in text
+    compile(text, "flat.launch.py", "exec")
     assert notes == []
 
 

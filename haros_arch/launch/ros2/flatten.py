@@ -392,22 +392,27 @@ def as_python(flat: Flat) -> str:
               "from launch_ros.descriptions import ComposableNode", "", "",
               "def generate_launch_description():",
               "    return LaunchDescription(["]
+    pad = " " * 8
     for node in flat.items:
         for text in [*node.comments, *(t for c in node.components for t in c.comments)]:
-            lines.append(f"        # haros-arch: {text}")
-        call = _py_node(node, 2)
+            lines.append(f"{pad}# haros-arch: {text}")
+        call = _py_node(node, pad)
         for period in reversed(node.timers):
             call = f"TimerAction(period={_py_number(period)}, actions=[{call}])"
-        lines.append(f"        {call},")
+        lines.append(f"{pad}{call},")
     lines += ["    ])", ""]
     return "\n".join(lines)
 
 
-def _py_node(node: FlatNode, depth: int) -> str:
+def _py_node(node: FlatNode, pad: str) -> str:
+    """The call that starts ``node``, one keyword argument a line, indented from ``pad``."""
     decl = node.decl
+    inner = pad + " " * 8
     if decl.composable:
-        return (f"LoadComposableNodes(target_container={decl.container!r}, "
-                f"composable_node_descriptions=[{_py_component(node)}])")
+        return _py_call("LoadComposableNodes", [
+            ("target_container", repr(decl.container)),
+            ("composable_node_descriptions",
+             f"[\n{inner}{_py_component(node, inner)},\n{pad}    ]")], pad)
     kwargs: list[tuple[str, str]] = [("package", repr(decl.package)),
                                      ("executable", repr(decl.executable))]
     base = _base(decl)
@@ -416,30 +421,31 @@ def _py_node(node: FlatNode, depth: int) -> str:
     kwargs.append(("namespace", repr(_namespace(decl) or "/")))
     if decl.args:
         kwargs.append(("arguments", repr(_words(decl))))
-    kwargs += _py_body(node)
+    kwargs += _py_body(node, pad)
     if node.components:
-        inner = ", ".join(_py_component(c) for c in node.components)
-        kwargs.append(("composable_node_descriptions", f"[{inner}]"))
-        return _py_call("ComposableNodeContainer", kwargs)
-    return _py_call("Node", kwargs)
+        parts = "".join(f"{inner}{_py_component(c, inner)},\n" for c in node.components)
+        kwargs.append(("composable_node_descriptions", f"[\n{parts}{pad}    ]"))
+        return _py_call("ComposableNodeContainer", kwargs, pad)
+    return _py_call("Node", kwargs, pad)
 
 
-def _py_component(node: FlatNode) -> str:
+def _py_component(node: FlatNode, pad: str) -> str:
     decl = node.decl
     kwargs = [("package", repr(decl.package)), ("plugin", repr(decl.executable))]
     base = _base(decl)
     if base is not None:
         kwargs.append(("name", repr(base)))
     kwargs.append(("namespace", repr(_namespace(decl) or "/")))
-    return _py_call("ComposableNode", kwargs + _py_body(node))
+    return _py_call("ComposableNode", kwargs + _py_body(node, pad), pad)
 
 
-def _py_body(node: FlatNode) -> list[tuple[str, str]]:
+def _py_body(node: FlatNode, pad: str) -> list[tuple[str, str]]:
     out: list[tuple[str, str]] = []
     if node.params or _files(node):
-        entries = ", ".join(f"{k!r}: {v!r}" for k, v in node.params)
+        inner = pad + " " * 8
+        entries = "".join(f"{inner}{k!r}: {v!r},\n" for k, v in node.params)
         files = "".join(f"{f!r}, " for f in _files(node))
-        out.append(("parameters", f"[{files}{{{entries}}}]"))
+        out.append(("parameters", f"[{files}{{\n{entries}{pad}    }}]"))
     if node.decl.remaps:
         out.append(("remappings", repr([tuple(r) for r in node.decl.remaps])))
     return out
@@ -465,8 +471,9 @@ def _py_number(text: str) -> str:
         return repr(text)
 
 
-def _py_call(name: str, kwargs: list[tuple[str, str]]) -> str:
-    return f"{name}(" + ", ".join(f"{k}={v}" for k, v in kwargs) + ")"
+def _py_call(name: str, kwargs: list[tuple[str, str]], pad: str) -> str:
+    lines = "".join(f"{pad}    {k}={v},\n" for k, v in kwargs)
+    return f"{name}(\n{lines}{pad})"
 
 
 # -- what must round-trip ---------------------------------------------------------------
