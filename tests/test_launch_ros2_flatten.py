@@ -251,14 +251,14 @@ def test_a_node_with_no_name_keeps_its_parameter_file_as_a_path(tmp_path: Path,
                                "    <param name=\"gain\" value=\"2\"/>\n  </node>\n</launch>\n"})
     workspace = scan([str(tmp_path)], {})
     model = load(str(pkg / "launch/u.launch.xml"), workspace, {}, {})
-    assert model.nodes[0].param_files == [str(pkg / "launch/../config/p.yaml")]
+    assert model.nodes[0].params_files_given == [str(pkg / "launch/../config/p.yaml")]
     text, notes = flatten(model, fmt)
     out = tmp_path / f"flat{SUFFIX[fmt]}"
     out.write_text(text)
     again = load(str(out), workspace, {}, {})
     assert notes == [] and "config/p.yaml" in text
     assert facts(again) == facts(model)
-    assert [os.path.realpath(f) for f in again.nodes[0].param_files] == [
+    assert [os.path.realpath(f) for f in again.nodes[0].params_files_given] == [
         str(pkg / "config/p.yaml")]
     assert {p.key: p.value for p in again.params if p.pattern is None} == {
         "rate": 5, "gain": 2}

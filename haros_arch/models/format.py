@@ -14,6 +14,13 @@ one generic serialiser, under a header that says where it comes from::
                 "calls": [{"kind": "subscribe", "name": "scan", ...}],
                 "completeness": "partial", "completeness_reasons": [...]}]}
 
+A plugin class is a node of kind ``plugin`` whose ``executable`` is its pluginlib lookup
+name, with ``plugin_class`` (its C++ type) and, optionally, ``plugin_base`` (the base class
+its plugin description names) and ``rosname`` (the name of the node it makes, for plugins
+that are nodes of their own: mavros'); hosts find modelled classes by lookup name or type.
+Optional fields are additions within ``haros-arch-model/1``: readers ignore what they do
+not know, and a file without them reads as before.
+
 Calls keep the names as the code writes them (``~initial_pose``, ``scan``,
 ``/map``), their types, queue sizes or QoS, parameter reads with their defaults, and
 ``name_param`` / ``name_default`` for names taken from parameters. Files and lines

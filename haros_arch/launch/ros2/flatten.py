@@ -306,7 +306,7 @@ def _kept_files(decl: NodeDecl) -> list[str]:
     values written after them are the same as theirs where they overlap."""
     if decl.composable:
         return []
-    return [f for f in decl.param_files if "$(" not in f]
+    return [f for f in decl.params_files_given if "$(" not in f]
 
 
 def _xml_body(element: etree._Element, node: FlatNode) -> None:
