@@ -108,10 +108,13 @@ def _parser() -> argparse.ArgumentParser:
     launch.add_argument("file", nargs="+", metavar="FILE", help="a path, or PKG PATH/IN/PKG")
     launch.add_argument("--arg", action="append", default=[], metavar="NAME:=VALUE")
     launch.add_argument("--workspace", default=".", help="workspace folder (default: .)")
-    launch.add_argument("--format", choices=("text", "json"), default="text")
+    launch.add_argument("--format", choices=("text", "json", "xml", "yaml", "python"),
+                        default="text", help="text or json; with --flatten: xml (default), "
+                        "or yaml / python for a ROS 2 file")
     launch.add_argument("--flatten", action="store_true",
-                        help="write one roslaunch XML file with every include inlined and "
-                             "every argument and decided condition applied (ROS 1)")
+                        help="write one launch file with every include inlined and every "
+                             "argument and decided condition applied (ROS 1: roslaunch "
+                             "XML; ROS 2: XML, YAML or Python)")
     launch.add_argument("--tree", action="store_true",
                         help="show how the files make the nodes: includes with their "
                              "arguments, groups, remaps, conditions")
@@ -529,7 +532,10 @@ def cmd_launch(args: argparse.Namespace, out: Console, err: Console) -> int:
     given = dict(a.split(":=", 1) for a in args.arg)
     model = load_launch(path, workspace, given, dict(os.environ))
     if args.flatten:
-        return _flatten(path, workspace, model, out, err)
+        return _flatten(path, workspace, model, args.format, out, err)
+    if args.format not in ("text", "json"):
+        err.print(f"haros-arch: --format {args.format} is for --flatten", highlight=False)
+        return EXIT_USAGE
     if args.format == "json":
         out.print(json.dumps(as_data(model), indent=2), highlight=False, markup=False)
     elif args.tree:
@@ -545,15 +551,21 @@ def cmd_launch(args: argparse.Namespace, out: Console, err: Console) -> int:
     return EXIT_OK
 
 
-def _flatten(path: str, workspace: Workspace, model: LaunchModel, out: Console,
+def _flatten(path: str, workspace: Workspace, model: LaunchModel, fmt: str, out: Console,
              err: Console) -> int:
     from .launch.dialect import ros_version
-    from .launch.ros1.flatten import flatten
+    from .launch.ros1.flatten import flatten as flatten_ros1
+    from .launch.ros2.flatten import flatten as flatten_ros2
 
-    if ros_version(path, workspace) != 1:
-        err.print("haros-arch: --flatten writes ROS 1 launch files only", highlight=False)
+    fmt = "xml" if fmt == "text" else fmt
+    if ros_version(path, workspace) == 2 and fmt in ("xml", "yaml", "python"):
+        text, notes = flatten_ros2(model, fmt)
+    elif fmt == "xml":
+        text, notes = flatten_ros1(model)
+    else:
+        err.print(f"haros-arch: --flatten writes a ROS 1 launch file as xml only, not "
+                  f"{fmt}", highlight=False)
         return EXIT_USAGE
-    text, notes = flatten(model)
     out.print(text, highlight=False, markup=False, end="")
     for line in notes:
         err.print(f"note: {escape(line)}", highlight=False)
