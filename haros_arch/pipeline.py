@@ -6,8 +6,10 @@
 from __future__ import annotations
 
 import os
-from collections.abc import Mapping
-from dataclasses import dataclass, replace
+import time
+from collections.abc import Iterator, Mapping
+from contextlib import contextmanager
+from dataclasses import dataclass, field, replace
 
 from . import cmake, graph, launch, pysetup
 from . import diagnostics as diag
@@ -30,11 +32,28 @@ from .workspace import Workspace, scan
 class Options:
     """How to run: ``cache_dir`` of source results (None: no cache, a cold run),
     ``jobs`` worker processes parsing C++ (None: one per core), and whether nodes
-    without source take the shipped interface models (``models``)."""
+    without source take the shipped interface models (``models``). ``timings``, when
+    given, gets the seconds of each stage (``STAGES``), added up over the run."""
 
     cache_dir: str | None = AUTO_CACHE
     jobs: int | None = None
     models: bool = True
+    timings: dict[str, float] | None = field(default=None, compare=False)
+
+
+# the stages of a run, in order, as ``Options.timings`` names them
+STAGES = ("scan", "launch", "build files", "C++", "Python", "models", "graph")
+
+
+@contextmanager
+def _stage(options: Options, name: str) -> Iterator[None]:
+    start = time.perf_counter()
+    try:
+        yield
+    finally:
+        if options.timings is not None:
+            options.timings[name] = (options.timings.get(name, 0.0)
+                                     + time.perf_counter() - start)
 
 
 def analyse(project: Project, environment: Mapping[str, str] | None = None,
@@ -42,12 +61,14 @@ def analyse(project: Project, environment: Mapping[str, str] | None = None,
     """Scan the workspace, read build files and sources, and build every configuration."""
     options = options or Options()
     env = {**(os.environ if environment is None else environment), **project.environment}
-    workspace = scan(project.workspace, env)
+    with _stage(options, "scan"):  # folders and package manifests
+        workspace = scan(project.workspace, env)
     model = Model(project.name, diagnostics=list(workspace.diagnostics))
 
     launches: dict[str, LaunchModel] = {}
     for spec in project.configurations:
-        launched = _load_launch(spec, project, workspace, env)
+        with _stage(options, "launch"):
+            launched = _load_launch(spec, project, workspace, env)
         # roslaunch starts no <test> node; rostest does (a configuration says it is one)
         rostest = spec.rostest if spec.rostest is not None else any(
             entry.endswith(".test") for entry in spec.launch)
@@ -68,14 +89,19 @@ def analyse(project: Project, environment: Mapping[str, str] | None = None,
         if package is None:
             continue
         model.packages.append(package)
-        model.diagnostics.extend(read_build_files(package, workspace))
+        with _stage(options, "build files"):
+            model.diagnostics.extend(read_build_files(package, workspace))
         nodes.update((node.name, node) for node in package.nodes)
     for launched in launches.values():
         _rosrun_scripts(launched, workspace, nodes)
-    model.diagnostics.extend(extract_nodes(  # every C++ source once, in parallel, cached
-        [n for p in model.packages for n in p.nodes], workspace,
-        cache_dir=options.cache_dir, jobs=options.jobs,
-        compile_commands=[project.compile_commands] if project.compile_commands else None))
+    every = [n for p in model.packages for n in p.nodes]
+    for stage, language in (("C++", True), ("Python", False)):  # C++ first, as one batch
+        with _stage(options, stage):  # every C++ source once, in parallel, cached
+            model.diagnostics.extend(extract_nodes(
+                [n for n in every if (n.language == "cpp") == language], workspace,
+                cache_dir=options.cache_dir, jobs=options.jobs,
+                compile_commands=[project.compile_commands] if project.compile_commands
+                else None))
 
     project_file = Location(file=os.path.relpath(project.path))
     models = Attacher(Library(project.models, DATA if options.models else None),
@@ -86,15 +112,17 @@ def analyse(project: Project, environment: Mapping[str, str] | None = None,
     for spec in project.configurations:
         config = Configuration(spec.name, list(spec.launch), dict(spec.args),
                                {**env, **spec.environment})
-        known = models.nodes_for(launches[spec.name], workspace, nodes, config.environment,
-                                 config.diagnostics)  # interface models (no source here)
-        graph.build(config, launches[spec.name], workspace, known)
-        config.launch_tree = launches[spec.name].tree
-        if spec.hints:
-            where = Location(file=project_file.file, line=spec.line, column=1)
-            config.diagnostics.extend(graph.apply_hints(config, spec.hints, nodes, where))
-            graph.prune_orphans(config)
-        graph.find_candidates(config)
+        with _stage(options, "models"):  # interface models (no source here)
+            known = models.nodes_for(launches[spec.name], workspace, nodes,
+                                     config.environment, config.diagnostics)
+        with _stage(options, "graph"):
+            graph.build(config, launches[spec.name], workspace, known)
+            config.launch_tree = launches[spec.name].tree
+            if spec.hints:
+                where = Location(file=project_file.file, line=spec.line, column=1)
+                config.diagnostics.extend(graph.apply_hints(config, spec.hints, nodes, where))
+                graph.prune_orphans(config)
+            graph.find_candidates(config)
         model.configurations.append(config)
     return model
 
