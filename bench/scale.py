@@ -28,7 +28,7 @@ from typing import Any
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
-STAGES = ("scan", "launch", "build files", "C++", "C++ parse", "Python", "models",
+STAGES = ("cache", "scan", "launch", "build files", "C++", "C++ parse", "Python", "models",
           "graph", "queries", "report")
 
 

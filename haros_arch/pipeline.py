@@ -11,9 +11,10 @@ from collections.abc import Iterator, Mapping
 from contextlib import contextmanager
 from dataclasses import dataclass, field, replace
 
-from . import cmake, graph, launch, pysetup
+from . import cmake, graph, launch, pysetup, runcache
 from . import diagnostics as diag
 from .extract import AUTO_CACHE, extract_nodes
+from .extract.cpp import cache as cpp_cache
 from .graph.build import nodelet_plugin
 from .launch.model import LaunchModel
 from .model.location import Location
@@ -42,7 +43,7 @@ class Options:
 
 
 # the stages of a run, in order, as ``Options.timings`` names them
-STAGES = ("scan", "launch", "build files", "C++", "Python", "models", "graph")
+STAGES = ("cache", "scan", "launch", "build files", "C++", "Python", "models", "graph")
 
 
 @contextmanager
@@ -61,6 +62,25 @@ def analyse(project: Project, environment: Mapping[str, str] | None = None,
     """Scan the workspace, read build files and sources, and build every configuration."""
     options = options or Options()
     env = {**(os.environ if environment is None else environment), **project.environment}
+    folder, key = None, None
+    if options.cache_dir is not None:  # a run with nothing changed: its model, kept
+        with _stage(options, "cache"):
+            folder = (cpp_cache.default_folder(os.path.abspath(
+                project.workspace[0] if project.workspace else project.folder))
+                      if options.cache_dir == AUTO_CACHE else options.cache_dir)
+            key = runcache.run_key(project, env, options.models, folder,
+                                   runcache.compile_commands_of(project, env))
+            kept = runcache.load(folder, key) if key is not None else None
+        if kept is not None:
+            return kept
+    model = _analyse(project, env, options)
+    if folder is not None and key is not None:
+        with _stage(options, "cache"):
+            runcache.store(folder, key, model)
+    return model
+
+
+def _analyse(project: Project, env: Mapping[str, str], options: Options) -> Model:
     with _stage(options, "scan"):  # folders and package manifests
         workspace = scan(project.workspace, env)
     model = Model(project.name, diagnostics=list(workspace.diagnostics))

@@ -1,0 +1,86 @@
+"""A re-run with nothing changed is answered whole from the cache folder (runcache); any
+change to a file the run reads, to the project or to the environment runs it again."""
+
+from __future__ import annotations
+
+import json
+import os
+import shutil
+from pathlib import Path
+
+from haros_arch import runcache
+from haros_arch.model.serialise import model_to_data
+from haros_arch.pipeline import Options, analyse
+from haros_arch.project import load
+
+FIXTURE = Path(__file__).resolve().parent.parent / "fixtures" / "python" / "several_nodes"
+
+
+def _copy(tmp_path: Path) -> Path:
+    shutil.copytree(FIXTURE, tmp_path / "ws")
+    for folder, _dirs, files in os.walk(tmp_path / "ws"):  # old enough to trust the index
+        for name in files:
+            os.utime(os.path.join(folder, name), (1_000_000_000, 1_000_000_000))
+    return tmp_path / "ws" / "project.yaml"
+
+
+def _run(project: Path, cache: Path, env: dict[str, str] | None = None
+         ) -> tuple[str, dict[str, float]]:
+    timings: dict[str, float] = {}
+    model = analyse(load(str(project)), env or {},
+                    Options(cache_dir=str(cache), jobs=1, timings=timings))
+    return json.dumps(model_to_data(model), sort_keys=True), timings
+
+
+def test_a_rerun_with_nothing_changed_is_the_kept_model(tmp_path: Path) -> None:
+    project = _copy(tmp_path)
+    first, timings = _run(project, tmp_path / "cache")
+    assert "Python" in timings
+    again, timings = _run(project, tmp_path / "cache")
+    assert again == first
+    assert set(timings) == {"cache"}  # no stage ran
+    assert len(list((tmp_path / "cache" / "runs").glob("index-*.json"))) == 1
+
+
+def test_a_changed_source_runs_again(tmp_path: Path) -> None:
+    project = _copy(tmp_path)
+    first, _ = _run(project, tmp_path / "cache")
+    source = project.parent / "src" / "pair_nodes" / "pair_nodes" / "pair.py"
+    source.write_text(source.read_text().replace("'reading'", "'readings'"))
+    os.utime(source, (1_000_000_000, 1_000_000_000))  # same time as before: content counts
+    changed, timings = _run(project, tmp_path / "cache")
+    assert "Python" in timings and changed != first
+    assert "readings" in changed and "readings" not in first
+
+
+def test_a_new_file_the_project_and_the_environment_are_inputs(tmp_path: Path) -> None:
+    project = _copy(tmp_path)
+    first, _ = _run(project, tmp_path / "cache")
+    (project.parent / "src" / "pair_nodes" / "notes.txt").write_text("x")
+    _, timings = _run(project, tmp_path / "cache")
+    assert "scan" in timings  # a file more: run again (a glob or a launch file may see it)
+    _, timings = _run(project, tmp_path / "cache", {"ROBOT": "r2"})
+    assert "scan" in timings
+    project.write_text(project.read_text().replace("project: several_nodes", "project: other"))
+    other, timings = _run(project, tmp_path / "cache", {"ROBOT": "r2"})
+    assert "scan" in timings and '"project": "other"' in other
+
+
+def test_an_entry_that_does_not_read_back_is_a_miss(tmp_path: Path) -> None:
+    project = _copy(tmp_path)
+    first, _ = _run(project, tmp_path / "cache")
+    for entry in (tmp_path / "cache" / "runs").glob("*.json"):
+        if not entry.name.startswith("index-"):
+            entry.write_text('{"model": {"configurations": 7}}')
+    again, timings = _run(project, tmp_path / "cache")
+    assert again == first and "scan" in timings
+
+
+def test_only_the_newest_runs_are_kept(tmp_path: Path, monkeypatch) -> None:
+    monkeypatch.setattr(runcache, "KEEP", 2)
+    project = _copy(tmp_path)
+    for robot in ("a", "b", "c", "d"):
+        _run(project, tmp_path / "cache", {"ROBOT": robot})
+    entries = [e for e in (tmp_path / "cache" / "runs").glob("*.json")
+               if not e.name.startswith("index-")]
+    assert len(entries) == 2
