@@ -26,19 +26,22 @@ import os
 import stat
 import tempfile
 import time
-from collections.abc import Iterable, Mapping
+import weakref
+from collections.abc import Callable, Iterable, Mapping
 from typing import Any
 
 from . import __version__
+from .model.finding import Finding
 from .model.load import from_data
 from .model.model import Model
-from .model.serialise import model_to_data
+from .model.serialise import model_to_data, to_data
 from .project import Project
 from .workspace import SKIP_FOLDERS, Workspace, installed_roots
 
 FORMAT = 1
 RACY_SECONDS = 2.0  # a file modified this recently is hashed again next time
-KEEP = 8  # run entries kept (one per project, workspace state and environment)
+KEEP = 16  # entries kept (a run's model and its findings, per project, workspace
+#           state and environment)
 MAX_FILES = 200_000  # files in one snapshot; past it the run is not cached
 TOOL = os.path.dirname(os.path.abspath(__file__))
 
@@ -184,19 +187,51 @@ def compile_commands_of(project: Project, env: Mapping[str, str]) -> list[str]:
     return find(workspace)
 
 
+# the entry of each model this process ran or read back: its findings are kept with it
+_KEPT: weakref.WeakKeyDictionary[Model, tuple[str, str]] = weakref.WeakKeyDictionary()
+
+
 def load(folder: str, key: str) -> Model | None:
     try:
         with open(_entry(folder, key), encoding="utf-8") as handle:
             data = json.load(handle)
         model: Model = from_data(data["model"])
-        return model
     except (OSError, ValueError, KeyError, TypeError, AttributeError):
         return None
+    _KEPT[model] = (folder, key)
+    return model
 
 
 def store(folder: str, key: str, model: Model) -> None:
-    """Keep ``model`` under ``key``, and only the newest ``KEEP`` runs."""
-    _write_json(_entry(folder, key), {"model": model_to_data(model)})
+    """Keep ``model`` under ``key``, and only the newest ``KEEP`` entries."""
+    _KEPT[model] = (folder, key)
+    _write(_entry(folder, key), {"model": model_to_data(model)}, folder)
+
+
+def findings(model: Model, inputs: str, compute: Callable[[], list[Finding]]
+             ) -> list[Finding]:
+    """The findings of a kept model's run under ``inputs`` (the rules and roots, as
+    text): read back when that model's run gave them before, else computed and kept."""
+    from .diff import finding_from_data
+
+    kept = _KEPT.get(model)
+    if kept is None:
+        return compute()
+    folder, key = kept
+    entry = _entry(folder, key + "-findings-" + _digest(inputs))
+    try:
+        with open(entry, encoding="utf-8") as handle:
+            return [finding_from_data(f) for f in json.load(handle)["findings"]]
+    except (OSError, ValueError, KeyError, TypeError, AttributeError):
+        pass
+    found = compute()
+    _write(entry, {"findings": to_data(found)}, folder)
+    return found
+
+
+def _write(entry: str, data: object, folder: str) -> None:
+    """Write an entry, then remove all but the newest ``KEEP``."""
+    _write_json(entry, data)
     runs = os.path.join(folder, "runs")
     try:
         entries = [e for e in os.scandir(runs)

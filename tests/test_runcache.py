@@ -55,7 +55,7 @@ def test_a_changed_source_runs_again(tmp_path: Path) -> None:
 
 def test_a_new_file_the_project_and_the_environment_are_inputs(tmp_path: Path) -> None:
     project = _copy(tmp_path)
-    first, _ = _run(project, tmp_path / "cache")
+    _run(project, tmp_path / "cache")
     (project.parent / "src" / "pair_nodes" / "notes.txt").write_text("x")
     _, timings = _run(project, tmp_path / "cache")
     assert "scan" in timings  # a file more: run again (a glob or a launch file may see it)
@@ -84,3 +84,28 @@ def test_only_the_newest_runs_are_kept(tmp_path: Path, monkeypatch) -> None:
     entries = [e for e in (tmp_path / "cache" / "runs").glob("*.json")
                if not e.name.startswith("index-")]
     assert len(entries) == 2
+
+
+def test_the_findings_of_a_kept_run_are_kept_with_it(tmp_path: Path, monkeypatch) -> None:
+    from haros_arch.query import catalogue
+    from haros_arch.query.command import check
+
+    project = _copy(tmp_path)
+    options = Options(cache_dir=str(tmp_path / "cache"), jobs=1)
+    spec = load(str(project))
+    first = check(analyse(spec, {}, options), spec).findings
+    assert first
+    calls: list[int] = []
+    real = catalogue._run_catalogue
+
+    def counted(*args, **kwargs):
+        calls.append(1)
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(catalogue, "_run_catalogue", counted)
+    again = analyse(spec, {}, options)
+    assert check(again, spec).findings == first and calls == []  # read back
+    subset = catalogue.run_catalogue(again, spec, catalogue.load_catalogue()[:3])
+    assert calls == [1] and len(subset) < len(first)  # other rules: run
+    uncached = analyse(spec, {}, Options(cache_dir=None, jobs=1))
+    assert check(uncached, spec).findings == first and calls == [1, 1]

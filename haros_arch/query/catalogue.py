@@ -291,10 +291,19 @@ def run_catalogue(model: Model, project: Any = None,
                   seconds: dict[str, float] | None = None) -> list[Finding]:
     """Every rule's findings, suppressions applied, sorted by severity then place;
     ``seconds`` gets each rule's time (over every configuration)."""
+    from .. import runcache
+
     rules = list(load_catalogue() if catalogue is None else catalogue)
     if project is not None:
         rules.extend(project_rules(project))
     roots = list(getattr(project, "workspace", None) or ())
+    # the findings of a model a cached run gave (or read back) are kept with it
+    return runcache.findings(model, repr((rules, roots)),
+                             lambda: _run_catalogue(model, rules, roots, seconds))
+
+
+def _run_catalogue(model: Model, rules: list[Rule], roots: list[str],
+                   seconds: dict[str, float] | None) -> list[Finding]:
     suppressions = Suppressions(roots)
     found: list[Finding] = []
     for rule in rules:
