@@ -5,13 +5,16 @@ package, and a check that the three runs give the same JSON model.
 
     .venv/bin/python bench/scale.py [--jobs N] [--touch FILE.cpp] PROJECT.yaml [...]
 
-Stages: scan (folders and package manifests), launch, build files (CMake / setup.py),
-C++ (libclang's parse apart from the rest, the walk of the syntax trees and the cache;
-the split is measured with ``--jobs 1`` only: workers parse out of sight), Python,
-models, graph, queries (the catalogue) and report (the HTML file). The changed file is
-``--touch`` or the first C++ source of the model; a comment is appended to it and
-removed again afterwards (use a copy of a fetched tree: this writes into it). Each run
-uses its own cache folder (a temporary one, empty for the cold run), never the user's.
+Wall and CPU seconds of each whole process are printed (on a busy machine the wall time
+waits for a processor: compare CPU). Stages (seconds of wall time): cache (the run
+cache's snapshot and entry), scan (folders and package manifests), launch, build files
+(CMake / setup.py), C++ (libclang's parse apart from the rest, the walk of the syntax
+trees and the cache; the split is measured with ``--jobs 1`` only: workers parse out of
+sight), Python, models, graph, queries (the catalogue) and report (the HTML file). The
+changed file is ``--touch`` or the first C++ source of the model; a comment is appended
+to it and removed again afterwards (use a copy of a fetched tree: this writes into it).
+Each run uses its own cache folder (a temporary one, empty for the cold run), never the
+user's.
 """
 
 from __future__ import annotations
@@ -20,6 +23,7 @@ import argparse
 import hashlib
 import json
 import os
+import resource
 import subprocess
 import sys
 import tempfile
@@ -93,21 +97,26 @@ def child(project_path: str, cache: str, jobs: int, model_out: str) -> dict[str,
 
 def run(project: str, cache: str, jobs: int, model_out: str) -> dict[str, Any]:
     began = time.perf_counter()
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
     done = subprocess.run(
         [sys.executable, __file__, "--child", project, "--cache", cache, "--jobs", str(jobs),
          "--model-out", model_out], capture_output=True, text=True, check=False)
     wall = time.perf_counter() - began
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
     if done.returncode != 0:
         sys.exit(f"run failed ({done.returncode}):\n{done.stderr[-3000:]}")
     result: dict[str, Any] = json.loads(done.stdout.strip().splitlines()[-1])
     result["wall"] = wall
+    result["cpu"] = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
     return result
 
 
 def show(label: str, result: dict[str, Any], cold: dict[str, Any] | None) -> None:
     t = result["timings"]
-    ratio = f"  ({result['wall'] / cold['wall']:.3f} of cold)" if cold else ""
-    print(f"  {label:<10} process {result['wall']:7.2f} s{ratio}; imports "
+    ratio = (f" ({result['wall'] / cold['wall']:.3f} of cold, CPU "
+             f"{result['cpu'] / cold['cpu']:.3f})" if cold else "")
+    print(f"  {label:<10} process {result['wall']:7.2f} s wall, {result['cpu']:7.2f} s CPU "
+          f"(with its workers){ratio}; imports "
           f"{result['imports']:.2f} s; model {result['digest']}")
     print("    " + ", ".join(f"{s} {t[s]:.2f}" for s in STAGES if s in t))
     if label == "cold":
