@@ -114,14 +114,11 @@ def _analyse(project: Project, env: Mapping[str, str], options: Options) -> Mode
         nodes.update((node.name, node) for node in package.nodes)
     for launched in launches.values():
         _rosrun_scripts(launched, workspace, nodes)
-    every = [n for p in model.packages for n in p.nodes]
-    for stage, language in (("C++", True), ("Python", False)):  # C++ first, as one batch
-        with _stage(options, stage):  # every C++ source once, in parallel, cached
-            model.diagnostics.extend(extract_nodes(
-                [n for n in every if (n.language == "cpp") == language], workspace,
-                cache_dir=options.cache_dir, jobs=options.jobs,
-                compile_commands=[project.compile_commands] if project.compile_commands
-                else None))
+    model.diagnostics.extend(extract_nodes(  # every C++ source once, in parallel, cached
+        [n for p in model.packages for n in p.nodes], workspace,
+        cache_dir=options.cache_dir, jobs=options.jobs,
+        compile_commands=[project.compile_commands] if project.compile_commands else None,
+        timings=options.timings))
 
     project_file = Location(file=os.path.relpath(project.path))
     models = Attacher(Library(project.models, DATA if options.models else None),
