@@ -42,7 +42,9 @@ FORMAT = 1
 RACY_SECONDS = 2.0  # a file modified this recently is hashed again next time
 KEEP = 16  # entries kept (a run's model and its findings, per project, workspace
 #           state and environment)
-MAX_FILES = 200_000  # files in one snapshot; past it the run is not cached
+MAX_FILES = 200_000
+CPP_FILES = (".c", ".cc", ".cpp", ".cxx", ".c++", ".h", ".hh", ".hpp", ".hxx", ".h++",
+             ".ipp", ".inl", ".tcc")  # files in one snapshot; past it the run is not cached
 TOOL = os.path.dirname(os.path.abspath(__file__))
 
 
@@ -62,6 +64,8 @@ class Snapshot:
             pass
         self.seen: dict[str, list[Any]] = {}
         self.digests: list[tuple[str, str]] = []
+        self.inner: list[tuple[str, str]] = []  # files by content
+        self.outer: list[tuple[str, str]] = []  # the same, C++ ones by name only
         self.complete = True
         self.now = time.time()
 
@@ -78,9 +82,10 @@ class Snapshot:
                     digest = hashlib.sha256(handle.read()).hexdigest()
             except OSError:
                 digest = "unreadable"
+        self.outer.append((path, "c++" if path.endswith(CPP_FILES) else digest))
+        self.inner.append((path, digest))
         if self.now - info.st_mtime > RACY_SECONDS:
             self.seen[path] = [info.st_size, info.st_mtime_ns, digest]
-        self.digests.append((path, digest))
 
     def path(self, path: str) -> None:
         """A file (content) or a missing one, by its path."""
@@ -134,9 +139,12 @@ class Snapshot:
             except OSError:
                 continue
 
-    def digest(self) -> str:
+    def digest(self, outer: bool = False) -> str:
+        """Of every file, or (``outer``) of every file but the content of C++ ones."""
         found = hashlib.sha256()
         for path, digest in self.digests:
+            found.update(f"{path}\0{digest}\n".encode("utf-8", "replace"))
+        for path, digest in self.outer if outer else self.inner:
             found.update(f"{path}\0{digest}\n".encode("utf-8", "replace"))
         return found.hexdigest()
 
@@ -146,8 +154,9 @@ class Snapshot:
 
 
 def run_key(project: Project, env: Mapping[str, str], models: bool, folder: str,
-            compile_commands: Iterable[str]) -> str | None:
-    """The key of a run of ``project``; None when its files are too many to snapshot."""
+            compile_commands: Iterable[str]) -> tuple[str, str] | None:
+    """The key of a run of ``project``, and its outer key (C++ files by name only, not
+    content); None when its files are too many to snapshot."""
     snap = Snapshot(os.path.join(folder, "runs", "index-" + _digest(
         repr([os.path.abspath(r) for r in project.workspace])) + ".json"))
     snap.tree(TOOL, frozenset({"__pycache__"}))
@@ -173,8 +182,9 @@ def run_key(project: Project, env: Mapping[str, str], models: bool, folder: str,
         return None
     snap.save()
     # locations are written relative to the current folder: it is an input too
-    return _digest(json.dumps([FORMAT, __version__, os.getcwd(), repr(project),
-                               sorted(env.items()), models, snap.digest()]))
+    head = [FORMAT, __version__, os.getcwd(), repr(project), sorted(env.items()), models]
+    return (_digest(json.dumps([*head, snap.digest()])),
+            _digest(json.dumps([*head, snap.digest(outer=True)])))
 
 
 def compile_commands_of(project: Project, env: Mapping[str, str]) -> list[str]:
@@ -195,6 +205,10 @@ def load(folder: str, key: str) -> Model | None:
     try:
         with open(_entry(folder, key), encoding="utf-8") as handle:
             data = json.load(handle)
+        if isinstance(data.get("same_as"), str):  # an alias (``store_alias``): one hop
+            key = data["same_as"]
+            with open(_entry(folder, key), encoding="utf-8") as handle:
+                data = json.load(handle)
         model: Model = from_data(data["model"])
     except (OSError, ValueError, KeyError, TypeError, AttributeError):
         return None
@@ -206,6 +220,30 @@ def store(folder: str, key: str, model: Model) -> None:
     """Keep ``model`` under ``key``, and only the newest ``KEEP`` entries."""
     _KEPT[model] = (folder, key)
     _write(_entry(folder, key), {"model": model_to_data(model)}, folder)
+
+
+def store_alias(folder: str, key: str, same_as: str) -> None:
+    """Run ``key`` gives the model (and findings) of run ``same_as``."""
+    try:
+        os.utime(_entry(folder, same_as))  # the newest again: kept as long as its alias
+    except OSError:
+        return
+    _write(_entry(folder, key), {"same_as": same_as}, folder)
+
+
+def store_outer(folder: str, outer: str, key: str, extraction: dict[str, Any]) -> None:
+    """Under the outer key: the run's key and what its source extraction was given and
+    gave (``pipeline``'s record), to try again when only C++ files changed."""
+    _write(_entry(folder, outer + "-outer"), {"key": key, "extraction": extraction}, folder)
+
+
+def load_outer(folder: str, outer: str) -> tuple[str, dict[str, Any]] | None:
+    try:
+        with open(_entry(folder, outer + "-outer"), encoding="utf-8") as handle:
+            data = json.load(handle)
+        return str(data["key"]), dict(data["extraction"])
+    except (OSError, ValueError, KeyError, TypeError):
+        return None
 
 
 def findings(model: Model, inputs: str, compute: Callable[[], list[Finding]]

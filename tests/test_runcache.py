@@ -109,3 +109,38 @@ def test_the_findings_of_a_kept_run_are_kept_with_it(tmp_path: Path, monkeypatch
     assert calls == [1] and len(subset) < len(first)  # other rules: run
     uncached = analyse(spec, {}, Options(cache_dir=None, jobs=1))
     assert check(uncached, spec).findings == first and calls == [1, 1]
+
+
+PAPER = FIXTURE.parent.parent / "paper_minimal"
+
+
+def _copy_paper(tmp_path: Path) -> Path:
+    shutil.copytree(PAPER, tmp_path / "paper")
+    for folder, _dirs, files in os.walk(tmp_path / "paper"):
+        for name in files:
+            os.utime(os.path.join(folder, name), (1_000_000_000, 1_000_000_000))
+    return tmp_path / "paper" / "project.yaml"
+
+
+def test_a_cpp_change_that_extracts_the_same_reuses_the_rest(tmp_path: Path) -> None:
+    project = _copy_paper(tmp_path)
+    first, _ = _run(project, tmp_path / "cache")
+    source = project.parent / "src" / "example" / "src" / "active.cpp"
+    source.write_text(source.read_text() + "\n// a comment\n")
+    again, timings = _run(project, tmp_path / "cache")
+    assert again == first
+    assert "C++" in timings and "launch" not in timings and "graph" not in timings
+    again, timings = _run(project, tmp_path / "cache")  # kept under the new key too
+    assert again == first and set(timings) == {"cache"}
+    aliases = [e for e in (tmp_path / "cache" / "runs").glob("*.json")
+               if "same_as" in e.read_text()]
+    assert len(aliases) == 1  # the new key names the first run's entry (and findings)
+
+
+def test_a_cpp_change_that_extracts_otherwise_runs_again(tmp_path: Path) -> None:
+    project = _copy_paper(tmp_path)
+    first, _ = _run(project, tmp_path / "cache")
+    source = project.parent / "src" / "example" / "src" / "active.cpp"
+    source.write_text(source.read_text().replace('"monologue"', '"soliloquy"'))
+    changed, timings = _run(project, tmp_path / "cache")
+    assert "graph" in timings and "soliloquy" in changed and "soliloquy" not in first
