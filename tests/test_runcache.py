@@ -144,3 +144,21 @@ def test_a_cpp_change_that_extracts_otherwise_runs_again(tmp_path: Path) -> None
     source.write_text(source.read_text().replace('"monologue"', '"soliloquy"'))
     changed, timings = _run(project, tmp_path / "cache")
     assert "graph" in timings and "soliloquy" in changed and "soliloquy" not in first
+
+
+def test_the_example_gives_one_model_and_findings_cold_cached_and_touched(tmp_path: Path
+                                                                           ) -> None:
+    from haros_arch.query.command import document
+
+    shutil.copytree(FIXTURE.parent.parent.parent / "examples", tmp_path / "examples")
+    project = tmp_path / "examples" / "project.yaml"
+    spec = load(str(project))
+    cache = Options(cache_dir=str(tmp_path / "cache"), jobs=1)
+    documents = [document(analyse(spec, {}, Options(cache_dir=None, jobs=1)), spec)]
+    documents += [document(analyse(spec, {}, cache), spec) for _ in range(2)]
+    source = next((tmp_path / "examples").rglob("*.cpp"))
+    source.write_text(source.read_text() + "\n// touched\n")
+    documents.append(document(analyse(spec, {}, cache), spec))
+    texts = [json.dumps(d, sort_keys=True) for d in documents]
+    assert texts[0] == texts[1] == texts[2] == texts[3]
+    assert '"findings": []' not in texts[0]
