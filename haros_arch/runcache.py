@@ -2,14 +2,19 @@
 
 The model a run gives is kept in the cache folder the C++ units use
 (``extract.cpp.cache.default_folder``), in ``runs/``, found by a key over everything the
-run reads: the project (as loaded, with the command line's arguments), the environment,
-the options that change the model, this tool's own files, and a snapshot of the files
+run reads: the project (as loaded, with the command line's arguments), the environment
+(but the shell's own bookkeeping: ``$_``, ``$OLDPWD``, ``$PWD``, ``$SHLVL``), the current
+folder, the options that change the model, this tool's own files, and a snapshot of the files
 (``snapshot``): every file under the workspace's roots (by content), the files beside
 the project file, its compile_commands and model files, the compile_commands.json files
 the C++ stage would read, and the package folders of the installed prefixes the
 environment names (by name and modification time: a package installed, removed or
 upgraded changes its folder). A file changed inside an installed package without its
 folder changing is not seen: ``--no-cache`` runs cold.
+
+When only C++ files changed (the outer key, over every file but the content of C++
+sources and headers, is that of a kept run), the pipeline extracts the nodes again from
+what the build files gave and answers with the kept run when they give what they gave.
 
 Content hashes are kept in an index beside the entries, with each file's size and
 modification time, so an unchanged file is not read again (as git's index does); a file
@@ -43,6 +48,9 @@ RACY_SECONDS = 2.0  # a file modified this recently is hashed again next time
 KEEP = 16  # entries kept (a run's model and its findings, per project, workspace
 #           state and environment)
 MAX_FILES = 200_000
+# variables a shell sets on its own as one moves and runs commands (the current folder is
+# in the key already): not inputs of a run
+SHELL_BOOKKEEPING = frozenset({"_", "OLDPWD", "PWD", "SHLVL"})
 CPP_FILES = (".c", ".cc", ".cpp", ".cxx", ".c++", ".h", ".hh", ".hpp", ".hxx", ".h++",
              ".ipp", ".inl", ".tcc")  # files in one snapshot; past it the run is not cached
 TOOL = os.path.dirname(os.path.abspath(__file__))
@@ -182,7 +190,8 @@ def run_key(project: Project, env: Mapping[str, str], models: bool, folder: str,
         return None
     snap.save()
     # locations are written relative to the current folder: it is an input too
-    head = [FORMAT, __version__, os.getcwd(), repr(project), sorted(env.items()), models]
+    head = [FORMAT, __version__, os.getcwd(), repr(project),
+            sorted(kv for kv in env.items() if kv[0] not in SHELL_BOOKKEEPING), models]
     return (_digest(json.dumps([*head, snap.digest()])),
             _digest(json.dumps([*head, snap.digest(outer=True)])))
 

@@ -162,3 +162,10 @@ def test_the_example_gives_one_model_and_findings_cold_cached_and_touched(tmp_pa
     texts = [json.dumps(d, sort_keys=True) for d in documents]
     assert texts[0] == texts[1] == texts[2] == texts[3]
     assert '"findings": []' not in texts[0]
+
+
+def test_the_shells_bookkeeping_variables_are_not_inputs(tmp_path: Path) -> None:
+    project = _copy(tmp_path)
+    _run(project, tmp_path / "cache", {"_": "/usr/bin/a", "OLDPWD": "/x", "SHLVL": "1"})
+    _, timings = _run(project, tmp_path / "cache", {"_": "/usr/bin/b", "SHLVL": "2"})
+    assert set(timings) == {"cache"}
