@@ -169,3 +169,14 @@ def test_the_shells_bookkeeping_variables_are_not_inputs(tmp_path: Path) -> None
     _run(project, tmp_path / "cache", {"_": "/usr/bin/a", "OLDPWD": "/x", "SHLVL": "1"})
     _, timings = _run(project, tmp_path / "cache", {"_": "/usr/bin/b", "SHLVL": "2"})
     assert set(timings) == {"cache"}
+
+
+def test_check_verbose_says_the_queries_did_not_run(tmp_path: Path, capsys) -> None:
+    from haros_arch.cli import main
+
+    project = _copy(tmp_path)
+    for _ in range(2):
+        main(["check", str(project), "-v", "--fail-on", "never"])
+    out = capsys.readouterr().out
+    assert "queries: not run (the findings of this unchanged run were kept)" in out
+    assert out.count("queries: ") == 2  # the first run timed them
