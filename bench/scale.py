@@ -24,6 +24,7 @@ import hashlib
 import json
 import os
 import resource
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -152,6 +153,8 @@ def main() -> None:
     parser.add_argument("projects", nargs="+")
     parser.add_argument("--jobs", type=int, default=1)
     parser.add_argument("--touch")
+    parser.add_argument("--keep", help="keep the cache and the models in this folder "
+                        "(emptied first) instead of a temporary one")
     parser.add_argument("--child", action="store_true", help=argparse.SUPPRESS)
     parser.add_argument("--cache", help=argparse.SUPPRESS)
     parser.add_argument("--model-out", help=argparse.SUPPRESS)
@@ -161,7 +164,13 @@ def main() -> None:
         return
     for project in args.projects:
         print(f"{project} (--jobs {args.jobs})")
-        with tempfile.TemporaryDirectory() as folder:
+        with tempfile.TemporaryDirectory() as temporary:
+            folder = temporary
+            if args.keep:
+                folder = os.path.join(args.keep, os.path.basename(os.path.dirname(
+                    os.path.abspath(project))))
+                shutil.rmtree(folder, ignore_errors=True)
+                os.makedirs(folder)
             cache = os.path.join(folder, "cache")
             models = [os.path.join(folder, f"model{i}.json") for i in range(3)]
             cold = run(project, cache, args.jobs, models[0])
