@@ -16,7 +16,9 @@ When only C++ files changed (the outer key, over every file but the content of C
 sources and headers, is that of a kept run), the pipeline extracts the nodes again from
 what the build files gave and answers with the kept run when they give what they gave.
 
-Content hashes are kept in an index beside the entries, with each file's size and
+Files larger than the readers read (``files.MAX_FILE_BYTES``: bags, maps, meshes) count
+by size and modification time, so a cold run does not hash gigabytes. Content hashes are
+kept in an index beside the entries, with each file's size and
 modification time, so an unchanged file is not read again (as git's index does); a file
 modified in the last seconds is hashed again on the next run (its time may not show a
 second change in the same tick). Entries are JSON (never pickle: the folder may be in
@@ -36,6 +38,7 @@ from collections.abc import Callable, Iterable, Mapping
 from typing import Any
 
 from . import __version__
+from .files import MAX_FILE_BYTES
 from .model.finding import Finding
 from .model.load import from_data
 from .model.model import Model
@@ -82,7 +85,9 @@ class Snapshot:
             self.complete = False
             return
         known = self.index.get(path)
-        if known is not None and known[0] == info.st_size and known[1] == info.st_mtime_ns:
+        if info.st_size > MAX_FILE_BYTES:  # more than the readers read (a bag, a map):
+            digest = f"large {info.st_size} {info.st_mtime_ns}"  # by size and time
+        elif known is not None and known[0] == info.st_size and known[1] == info.st_mtime_ns:
             digest = known[2]
         else:
             try:

@@ -180,3 +180,24 @@ def test_check_verbose_says_the_queries_did_not_run(tmp_path: Path, capsys) -> N
     out = capsys.readouterr().out
     assert "queries: not run (the findings of this unchanged run were kept)" in out
     assert out.count("queries: ") == 2  # the first run timed them
+
+
+def test_a_file_larger_than_the_readers_read_counts_by_size_and_time(tmp_path: Path,
+                                                                      monkeypatch) -> None:
+    def digest_of(path: Path) -> str:
+        snap = runcache.Snapshot(str(tmp_path / "index.json"))
+        snap.path(str(path))
+        snap.save()
+        return snap.digest()
+
+    monkeypatch.setattr(runcache, "MAX_FILE_BYTES", 10)
+    big, small = tmp_path / "big.bag", tmp_path / "small.yaml"
+    big.write_bytes(b"0123456789abcdef")
+    small.write_bytes(b"0123")
+    for path in (big, small):
+        os.utime(path, (1_000_000_000, 1_000_000_000))
+    before = digest_of(big), digest_of(small)
+    for path in (big, small):  # touched: the same bytes, a later time
+        os.utime(path, (1_000_000_001, 1_000_000_001))
+    assert digest_of(small) == before[1]  # read again: the same content
+    assert digest_of(big) != before[0]  # not read: its time counts
