@@ -394,7 +394,7 @@ def run_ours(path: str, workspace: Any, env: dict[str, str]) -> dict[str, Any]:
     params: dict[int, dict[str, Any]] = {}
     for param in model.params:
         index = getattr(param, "bench_node_index", None)
-        if index is not None:
+        if index is not None and param.pattern is None:  # (pattern: for the graph)
             params.setdefault(index, {})[str(param.key)] = param.value
     nodes = []
     for index, decl in enumerate(model.nodes):

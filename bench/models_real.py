@@ -21,6 +21,12 @@ pinned model sources):
     jackal         github:jackal/jackal@noetic-devel (navigation + control)
     fetch          github:fetchrobotics/fetch_ros@melodic-devel (without fetch_description)
     nav2_bringup   github:ros-navigation/navigation2@jazzy, nav2_bringup only
+    nav2_gps       github:ros-navigation/navigation2@jazzy, nav2_system_tests' package.xml
+                   and src/gps_navigation only (robot_localization's dual EKF + navsat
+                   setup: two ekf_node filters and navsat_transform_node)
+
+Husky's and Jackal's control.launch start robot_localization (ROS 1) with odom0 / imu0 in
+a rosparam file; nav2_gps starts it in ROS 2 with a parameter file keyed by node name.
 """
 
 from __future__ import annotations
@@ -63,6 +69,8 @@ CASES = [
     Case("fetch", "fetch_ros", ["fetch_navigation/launch/fetch_nav.launch"]),
     Case("nav2_bringup", "nav2_bringup", ["nav2_bringup/launch/bringup_launch.py"],
          {"map": "map.yaml", "use_composition": "False"}),
+    Case("nav2_gps", "nav2_gps",
+         ["nav2_system_tests/src/gps_navigation/dual_ekf_navsat.launch.py"]),
 ]
 
 
@@ -115,8 +123,11 @@ def measure(case: Case, root: str, listing: bool) -> None:
     for node in modelled:
         state = node.completeness
         print(f"    {node.name}: {node.node.model if node.node else ''} [{state}]")
-    print(f"  links added by models {len(added)}; resources joining the workspace's own "
-          f"nodes and modelled ones {len(joined)}")
+    unnamed = [link for link in added if "?" in link.name
+               and link.kind in ("publish", "subscribe", "server", "client")]
+    print(f"  links added by models {len(added)} (topics and services named '?': "
+          f"{len(unnamed)}); resources joining the workspace's own nodes and modelled "
+          f"ones {len(joined)}")
     for name in joined:
         print(f"    {name}")
     print(f"  topics with a publisher and a subscriber: before {len(connected['before'])}, "
@@ -138,7 +149,8 @@ def measure(case: Case, root: str, listing: bool) -> None:
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--root", default="/work/ws/models-bench")
+    parser.add_argument("--root", default="/work/ws/models-bench",
+                        help="folder of the cases' trees (a case missing there is said)")
     parser.add_argument("--case", action="append", default=[])
     parser.add_argument("--list", action="store_true")
     args = parser.parse_args()

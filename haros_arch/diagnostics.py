@@ -300,6 +300,13 @@ CATALOGUE: dict[str, Entry] = {
         "Node('name')) unless the launch file renames it. Without the code the "
         "executable's name stands in, as packages usually name the two alike; when "
         "they differ, the instance's name (and its parameters) are wrong."),
+    "NAME_PARAM_UNSET": Entry(
+        "info", "{node}: the name of this {kind} is the value of the {what}, which the "
+        "configuration does not set; it stays unknown",
+        "The code (or its interface model) takes a topic or service name from a "
+        "parameter (robot_localization's imu0, twist_mux's topics list) and neither the "
+        "launch files nor their parameter files set it, and the code gives no default: "
+        "the link's name stays '?'. Set the parameter where the node is launched."),
     "NODE_NOT_FOUND": Entry(
         "warning", "node type {node} is not in the workspace; its interface is unknown",
         "A launch file starts an executable that no workspace package builds; the "

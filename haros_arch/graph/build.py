@@ -9,6 +9,7 @@ from dataclasses import replace
 from typing import Any
 
 from .. import diagnostics as diag
+from ..diagnostics import Diagnostic
 from ..launch.model import LaunchModel, NodeDecl
 from ..model.rosname import RosName, namespace_of, remap, resolve, resolve_remaps
 from ..model.runtime import (
@@ -22,7 +23,7 @@ from ..model.runtime import (
     Service,
     Topic,
 )
-from ..model.source import Node, PrimitiveCall
+from ..model.source import NUMBERED, Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK
 from ..models.commands import command_node
 from ..plugins.attach import attach as attach_plugins
@@ -119,12 +120,16 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
         remaps = resolve_remaps(instance.remaps, instance.namespace, instance.name)
         for call in instance.node.calls_of(own):
             for each in element_calls(call, instance, resources):  # list parameters
-                link(instance, each, remaps, resources, config)
+                made = link(instance, each, remaps, resources, config)
+                if each.name_param is not None and made.rosname.is_unresolved:
+                    config.diagnostics.append(_name_param_unset(instance, each))
     for instance, calls in attach_plugins(config, started, nodes, resources, workspace):
         remaps = resolve_remaps(instance.remaps, instance.namespace, instance.name)
         for call in calls:
             for each in element_calls(call, instance, resources):
-                link(instance, each, remaps, resources, config)
+                made = link(instance, each, remaps, resources, config)
+                if each.name_param is not None and made.rosname.is_unresolved:
+                    config.diagnostics.append(_name_param_unset(instance, each))
     for action, call, name in action_links(config):
         link(action.node, call, {}, resources, config, name)
     _namespace_values(config)
@@ -202,6 +207,9 @@ def is_container(decl: NodeDecl) -> bool:
 
 # the loader services a container's own node serves (rclcpp_components' ComponentManager;
 # nodelet's Loader in a manager), private to the container's node
+# parameters of a numbered family read at most (robot_localization reads until one is unset)
+_NUMBERED_LIMIT = 100
+
 _CONTAINER_SERVICES = {
     2: (("~/_container/load_node", "composition_interfaces/srv/LoadNode"),
         ("~/_container/unload_node", "composition_interfaces/srv/UnloadNode"),
@@ -315,6 +323,8 @@ def element_calls(call: PrimitiveCall, instance: NodeInstance, resources: Resour
         return [call]
     source = _node_scoped(call.name_param) if instance.ros_version == 2 else call.name_param
     full = RosName.make(source, instance.namespace, instance.name).full
+    if call.name_each == NUMBERED:
+        return _numbered_calls(call, full, resources)
     param = resources.by_name.get((Parameter, full))
     value = param.value if isinstance(param, Parameter) and param.set_by_launch else None
     if value is None and instance.ros_version == 2:
@@ -328,6 +338,34 @@ def element_calls(call: PrimitiveCall, instance: NodeInstance, resources: Resour
         return [call]
     return [replace(call, name=name, name_param=None, name_default=None, name_each=None)
             for name in names]
+
+
+def _name_param_unset(instance: NodeInstance, call: PrimitiveCall) -> Diagnostic:
+    """Why a name taken from a parameter stays unknown: the configuration sets none."""
+    param = call.name_param
+    what = {None: f"parameter {param}", NUMBERED: f"parameters {param}0, {param}1, ..."
+            }.get(call.name_each, f"elements of the list parameter {param}")
+    return diag.make("NAME_PARAM_UNSET", call.location, node=instance.name,
+                     kind=call.kind, what=what)
+
+
+def _numbered_calls(call: PrimitiveCall, full: str, resources: Resources
+                    ) -> list[PrimitiveCall]:
+    """One call per parameter ``<full>0``, ``<full>1``, ... that the configuration sets
+    to a name, up to the first one it does not set (robot_localization's ``imu0``);
+    none set: the call as it is."""
+    names: list[str] = []
+    while len(names) < _NUMBERED_LIMIT:
+        param = resources.by_name.get((Parameter, f"{full}{len(names)}"))
+        if not (isinstance(param, Parameter) and param.set_by_launch
+                and isinstance(param.value, str) and param.value):
+            break
+        names.append(param.value)
+    if not names:
+        return [call]
+    written = call.name if UNKNOWN_MARK in call.name else UNKNOWN_MARK
+    return [replace(call, name=written.replace(UNKNOWN_MARK, name, 1), name_param=None,
+                    name_default=None, name_each=None) for name in names]
 
 
 def _dotted_groups(full: str, resources: Resources) -> dict[str, dict[str, Any]] | None:

@@ -61,6 +61,11 @@ class ParamDecl:
     # ROS 2: index in LaunchModel.nodes of the node declaration it was given to (several
     # unnamed nodes share the name ``/?`` until the graph names them from their code)
     owner: int | None = None
+    # ROS 2: a parameter file's entry for particular nodes (``turtlebot3_node:``,
+    # ``/**/amcl:``) given to a node whose name is not known yet: the rcl node name
+    # pattern it is for; the graph gives it to the node only when the name it finds
+    # for the node (from its code or model) matches
+    pattern: str | None = None
 
 
 @dataclass

@@ -30,6 +30,9 @@ CallKind = Literal[
 ]
 
 
+# ``PrimitiveCall.name_each`` of a call named by a numbered family of parameters
+NUMBERED = "#"
+
 @dataclass(frozen=True)
 class Dependency:
     """A dependency declared in package.xml; ``condition`` as written, if any."""
@@ -87,7 +90,9 @@ class PrimitiveCall:
     # a name taken from each element of a list parameter (twist_mux's ``~topics``: one
     # subscription per ``topics[i].topic``): ``name_param`` is the list, ``name_each``
     # the element's field (``.``: the element itself); the graph makes one call per
-    # element the launch file gives
+    # element the launch file gives. ``#``: a numbered family of parameters instead
+    # (robot_localization's ``imu0``, ``imu1``, ...: ``name_param`` "imu"), one call per
+    # parameter set, from 0 up to the first one not set, as the code reads them
     name_each: str | None = field(default=None, metadata={"optional": True})
 
 

@@ -127,7 +127,8 @@ def extract_cpp_nodes(nodes: Sequence[Sequence[str]], workspace: Workspace, *,
     if compile_commands is None:
         compile_commands = commands.find(workspace)
     units, batch.diagnostics = commands.load(compile_commands, workspace)
-    setup = IncludeSetup(workspace, include_dirs, system_headers, units)
+    setup = IncludeSetup(workspace, include_dirs, system_headers, units,
+                         [p for sources in nodes for p in sources])
     store = None
     if cache_dir is not None:
         folder = cache.default_folder(workspace.root) if cache_dir == cache.AUTO else cache_dir

@@ -88,35 +88,56 @@ def perform_composable(runner: Runner, component: e.ComposableNode, scope: Scope
 def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamEntry],
                 scope: Scope, where: Location) -> None:
     found: dict[str, tuple[Any, Location]] = {}
+    # entries for particular nodes of files given to a node whose name is not known
+    # yet, in file order: (pattern, name, value, location); a later value set for all
+    # replaces them, as it would whatever name the node has
+    pending: list[tuple[str, str, Any, Location]] = []
+
+    def put(name: str, leaf: Any, location: Location) -> None:
+        found[name] = (leaf, location)
+        pending[:] = [p for p in pending if p[1] != name]
 
     def read_file(entry: e.ParamFile, location: Location) -> None:
         document = runner.param_file(entry, scope, location)
         if document is None:
             return
-        if UNKNOWN_MARK in node and naming.names_a_node(document):
+        if UNKNOWN_MARK not in node:
+            for name, leaf in naming.params_for_node(document, node):
+                put(name, leaf, location)
+            return
+        if naming.names_a_node(document):
             runner.report("LAUNCH_PARAM_FILE", location,
                           detail=f"parameter file applied to {node}, whose name is not "
-                                 "known: only its /** entries are used")
-        for name, leaf in naming.params_for_node(document, node):
-            found[name] = (leaf, location)
+                                 "known here: its /** entries are used, those for "
+                                 "particular nodes once the node is named from its code")
+        for pattern, params in naming.node_patterns(document):
+            for name, leaf in naming.flatten(params):
+                if pattern == "/**":
+                    put(name, leaf, location)
+                else:
+                    pending.append((pattern, name, leaf, location))
 
     for key, value, location in scope.params:  # SetParameter(s), SetParametersFromFile
         if key is None:
             read_file(value, location)
             continue
         for name, leaf in flat(key, convert(value, ev)):
-            found[name] = (leaf, location)
+            put(name, leaf, location)
     for entry in entries:
         if isinstance(entry, e.ParamFile):
             read_file(entry, entry.location if entry.location.file else where)
         else:
             written, value = entry
             for name, leaf in flat(ev.value(written).text, convert(value, ev)):
-                found[name] = (leaf, where)
+                put(name, leaf, where)
     owner = len(runner.model.nodes) - 1  # the declaration just appended
     for name, (leaf, location) in found.items():
         param = make_param(node, name, leaf, scope.conditions, location)
         param.owner = owner
+        runner.model.params.append(param)
+    for pattern, name, leaf, location in pending:  # after those they may replace
+        param = make_param(node, name, leaf, scope.conditions, location)
+        param.owner, param.pattern = owner, pattern
         runner.model.params.append(param)
 
 
