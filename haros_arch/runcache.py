@@ -231,9 +231,14 @@ def load(folder: str, key: str) -> Model | None:
 
 
 def store(folder: str, key: str, model: Model) -> None:
-    """Keep ``model`` under ``key``, and only the newest ``KEEP`` entries."""
+    """Keep ``model`` under ``key`` when it reads back as it is, and only the newest
+    ``KEEP`` entries."""
+    data = model_to_data(model)
+    text = json.dumps(data, sort_keys=True)
+    if json.dumps(model_to_data(from_data(json.loads(text))), sort_keys=True) != text:
+        return  # a model that does not read back whole is not kept (never a wrong one)
     _KEPT[model] = (folder, key)
-    _write(_entry(folder, key), {"model": model_to_data(model)}, folder)
+    _write(_entry(folder, key), {"model": data}, folder)
 
 
 def store_alias(folder: str, key: str, same_as: str) -> None:

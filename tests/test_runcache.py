@@ -201,3 +201,21 @@ def test_a_file_larger_than_the_readers_read_counts_by_size_and_time(tmp_path: P
         os.utime(path, (1_000_000_001, 1_000_000_001))
     assert digest_of(small) == before[1]  # read again: the same content
     assert digest_of(big) != before[0]  # not read: its time counts
+
+
+def test_a_model_that_does_not_read_back_whole_is_not_kept(tmp_path: Path,
+                                                           monkeypatch) -> None:
+    from haros_arch.model import load as model_load
+
+    project = _copy(tmp_path)
+    real = model_load.from_data
+
+    def lossy(data):
+        model = real(data)
+        model.packages = model.packages[:-1]
+        return model
+
+    monkeypatch.setattr(runcache, "from_data", lossy)
+    first, _ = _run(project, tmp_path / "cache")
+    again, timings = _run(project, tmp_path / "cache")
+    assert again == first and "scan" in timings  # ran again: nothing was kept

@@ -28,7 +28,15 @@ from .runtime import (
     Service,
     Topic,
 )
-from .source import Completeness, Dependency, Node, Package, PrimitiveCall, wire_call
+from .source import (
+    Completeness,
+    Dependency,
+    Node,
+    Package,
+    Plugin,
+    PrimitiveCall,
+    wire_call,
+)
 from .values import UNKNOWN_MARK
 
 _RESOURCE_OF_KIND: dict[str, type[Resource]] = {
@@ -106,8 +114,10 @@ def _package(data: dict[str, Any]) -> Package:
     name = str(data.get("name", ""))
     deps = [Dependency(d.get("name", ""), d.get("kind", "depend"), d.get("condition"))
             for d in data.get("dependencies", ()) if isinstance(d, dict)]
+    plugins = [Plugin(str(p.get("kind", "")), str(p.get("file", "")))
+               for p in data.get("plugins", ()) if isinstance(p, dict)]
     return Package(name, data.get("path", name), data.get("build_type", "unknown"),
-                   data.get("version", ""), int(data.get("format", 1)), deps, [],
+                   data.get("version", ""), int(data.get("format", 1)), deps, plugins,
                    [node_from_data(n, name) for n in data.get("nodes", ())],
                    location(data.get("location")))
 
