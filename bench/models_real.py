@@ -45,7 +45,10 @@ from haros_arch.project import ConfigurationSpec, Project
 from haros_arch.query import run_catalogue
 from haros_arch.query.catalogue import UNDECIDED
 
-ABSENCE = ("subscriber-without-publisher", "publisher-without-subscriber")
+# the catalogue's absence rules: each leaves undecided (one info) the matches a node of
+# partial or unknown interface could be the missing side of
+ABSENCE = ("subscriber-without-publisher", "publisher-without-subscriber",
+           "parameter-set-not-read", "parameter-read-not-set", "similar-disconnected-topics")
 
 
 @dataclass
@@ -116,6 +119,7 @@ def measure(case: Case, root: str, listing: bool) -> None:
                             for other in link.resource.links)})
     connected = {"before": _connected(before), "after": _connected(after)}
     unknown = [n.name for n in config.nodes if n.node is None]
+    incomplete = sorted(n.name for n in config.incomplete_nodes)
     was, now = _absences(before), _absences(after)
     print(f"== {case.name} ({time.monotonic() - start:.1f} s)")
     print(f"  node instances {len(config.nodes)}, from models {len(modelled)}, still "
@@ -123,6 +127,7 @@ def measure(case: Case, root: str, listing: bool) -> None:
     for node in modelled:
         state = node.completeness
         print(f"    {node.name}: {node.node.model if node.node else ''} [{state}]")
+    print(f"  incomplete node instances {len(incomplete)}: {', '.join(incomplete) or '-'}")
     unnamed = [link for link in added if "?" in link.name
                and link.kind in ("publish", "subscribe", "server", "client")]
     print(f"  links added by models {len(added)} (topics and services named '?': "

@@ -11,7 +11,7 @@ import json
 import os
 import sys
 from collections.abc import Sequence
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from rich.console import Console
 from rich.markup import escape
@@ -65,9 +65,21 @@ def _parser() -> argparse.ArgumentParser:
     query.add_argument("--format", choices=("text", "json"), default="text")
     _choice_options(query)
 
-    capture = sub.add_parser("capture", help="read a running ROS 1 master's graph (XML-RPC)")
+    capture = sub.add_parser("capture", help="read a running system's graph: a ROS 1 master "
+                                             "(XML-RPC), ROS 2 DDS discovery, or a bag")
     capture.add_argument("--master", default=os.environ.get("ROS_MASTER_URI",
                                                             "http://localhost:11311"))
+    source = capture.add_mutually_exclusive_group()
+    source.add_argument("--ros2", action="store_true",
+                        help="join the DDS domain and read ROS 2 discovery (needs the "
+                             "'live' extra)")
+    source.add_argument("--bag", metavar="FILE",
+                        help="read a recorded ROS 1 .bag or ROS 2 bag (folder, .db3 or "
+                             ".mcap; needs the 'live' extra)")
+    capture.add_argument("--domain", type=int, default=_domain_id(),
+                         help="DDS domain id for --ros2 (default: $ROS_DOMAIN_ID or 0)")
+    capture.add_argument("--seconds", type=float, default=3.0,
+                         help="how long --ros2 listens (default 3)")
     capture.add_argument("-o", "--output", help="write the JSON here (default: stdout)")
 
     compare = sub.add_parser("compare", help="precision and recall of a model against a "
@@ -76,12 +88,16 @@ def _parser() -> argparse.ArgumentParser:
     compare.add_argument("live", help="JSON from 'haros-arch capture'")
     compare.add_argument("--config", help="configuration name (default: the first)")
     compare.add_argument("--format", choices=("text", "json"), default="text")
+    compare.add_argument("--both", action="store_true",
+                         help="also list what is both in the model and live")
 
     report = sub.add_parser("report", help="write the interactive HTML report (one file)")
     report.add_argument("project", nargs="?", help=PROJECT_HELP)
     report.add_argument("--model", help="render this saved JSON model instead of extracting")
     report.add_argument("--workspace", help="folder the model's file paths are relative to")
     report.add_argument("-o", "--output", required=True, help="the HTML file to write")
+    report.add_argument("--live", metavar="LIVE",
+                        help="show this capture ('haros-arch capture') beside each graph")
     _run_options(report)
 
     launch = sub.add_parser("launch", help="nodes and parameters a ROS 1 or ROS 2 launch "
@@ -409,13 +425,25 @@ def cmd_diff(args: argparse.Namespace, out: Console, err: Console) -> int:
     return EXIT_FINDINGS if result.fails(args.fail_on) else EXIT_OK
 
 
-def cmd_capture(args: argparse.Namespace, out: Console, err: Console) -> int:
-    from .live import CaptureError, capture
+def _domain_id() -> int:
+    value = os.environ.get("ROS_DOMAIN_ID", "")
+    return int(value) if value.isdigit() and len(value) < 4 else 0
 
+
+def cmd_capture(args: argparse.Namespace, out: Console, err: Console) -> int:
+    from .live import CaptureError, capture, capture_bag, capture_ros2
+
+    where = (args.bag if args.bag else f"DDS domain {args.domain}" if args.ros2
+             else args.master)
+    if args.ros2 and not 0 < args.seconds <= 600:
+        err.print("haros-arch: --seconds must be over 0 and at most 600", highlight=False)
+        return EXIT_USAGE
     try:
-        data = capture(args.master)
+        data = (capture_bag(args.bag) if args.bag
+                else capture_ros2(args.domain, args.seconds) if args.ros2
+                else capture(args.master))
     except CaptureError as error:
-        err.print(f"haros-arch: cannot capture from {escape(args.master)}: "
+        err.print(f"haros-arch: cannot capture from {escape(where)}: "
                   f"{escape(str(error))}", highlight=False)
         return EXIT_USAGE
     _write(json.dumps(data, indent=2) + "\n", args.output)
@@ -431,7 +459,8 @@ def cmd_compare(args: argparse.Namespace, out: Console, err: Console) -> int:
         with open(args.live, encoding="utf-8") as handle:
             live = json.load(handle)
         result = compare(model, live, args.config)
-    except (OSError, ValueError, KeyError, RecursionError, CompareError) as error:
+    except (OSError, ValueError, KeyError, TypeError, AttributeError, RecursionError,
+            CompareError) as error:
         err.print(f"haros-arch: cannot compare: {escape(str(error))}", highlight=False)
         return EXIT_USAGE
     if args.format == "json":
@@ -439,7 +468,7 @@ def cmd_compare(args: argparse.Namespace, out: Console, err: Console) -> int:
         return EXIT_OK
     from .report.results import print_comparison
 
-    print_comparison(result, out)
+    print_comparison(result, out, both=args.both)
     return EXIT_OK
 
 
@@ -464,12 +493,27 @@ def cmd_report(args: argparse.Namespace, out: Console, err: Console) -> int:
             project = analysis.project
             data = model_data(analysis.model)
             findings = project_findings(analysis.model, project)
-        write_report(data, findings, workspace_root(project, args.workspace), args.output)
+        live = _live_comparison(data, args.live) if args.live else None
+        write_report(data, findings, workspace_root(project, args.workspace), args.output,
+                     live)
     except (ProjectError, ReportError) as error:
         err.print(f"haros-arch: {escape(str(error))}", highlight=False)
         return EXIT_USAGE
     out.print(f"wrote {args.output}", highlight=False)
     return EXIT_OK
+
+
+def _live_comparison(model: dict[str, Any], path: str) -> dict[str, Any]:
+    """Each configuration of ``model`` compared with the capture in ``path``."""
+    from .live.compare import CompareError, compare_all
+    from .viz import ReportError
+
+    try:
+        with open(path, encoding="utf-8") as handle:
+            return compare_all(model, json.load(handle))
+    except (OSError, ValueError, KeyError, TypeError, AttributeError, RecursionError,
+            CompareError) as error:
+        raise ReportError(f"cannot compare with {path}: {error}") from None
 
 
 def cmd_launch(args: argparse.Namespace, out: Console, err: Console) -> int:

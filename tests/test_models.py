@@ -424,6 +424,10 @@ def test_a_ros1_spawner_calls_the_controller_manager_of_its_namespace_argument(w
         ("client", "/arm/controller_manager/switch_controller"),
         ("client", "/arm/controller_manager/unload_controller"),
         ("subscribe", "/ready")]
+    # rospy.get_param('/use_sim_time', False): a read with a default, never reported
+    # as read but not set (Husky's base_controller_spawner was)
+    (sim_time,) = [link for link in spawner.links if link.name == "/use_sim_time"]
+    assert sim_time.call.has_default and sim_time.call.default is False
 
 
 def test_ros2_topic_tools_take_their_topics_from_their_parameters(write_tree):

@@ -130,34 +130,6 @@ def test_trees_listed_with_an_entry_are_needed_and_recorded(tmp_path):
                                     "89abcdef0123456789abcdef0123456789abcdef")
 
 
-def test_a_ros_call_in_the_text_with_no_extracted_call_makes_a_model_partial(tmp_path):
-    from haros_arch.model.location import Location
-    from haros_arch.model.source import Node, PrimitiveCall
-    from haros_arch.models.generate import _mark_unextracted
-
-    (tmp_path / "src").mkdir()
-    (tmp_path / "src" / "filter.cpp").write_text(
-        "void f(ros::NodeHandle& nh) {\n"
-        "  // nh.subscribe(\"commented\", 1, cb);\n"
-        "  pub_ = nh.advertise<nav_msgs::Odometry>(\"odometry/filtered\", 20);\n"
-        "\n\n"
-        "  subs_.push_back(nh_.subscribe<sensor_msgs::Imu>(\n"
-        "      imu_topic, 10, cb));\n"
-        "}\n")
-    found = PrimitiveCall("publish", "odometry/filtered", "nav_msgs/Odometry",
-                          location=Location("p", "src/filter.cpp", 3, 10))
-    node = Node("p", "filter", sources=["src/filter.cpp"], calls=[found])
-    _mark_unextracted(node, str(tmp_path))
-    assert node.completeness == "partial"
-    assert node.completeness_reasons == [
-        "src/filter.cpp:6: subs_.push_back(nh_.subscribe<sensor_msgs::Imu>( calls the ROS "
-        "API, but no call was extracted there"]
-    whole = Node("p", "filter", sources=["src/filter.cpp"], calls=[
-        found, PrimitiveCall("subscribe", "?", location=Location("p", "src/filter.cpp", 7))])
-    _mark_unextracted(whole, str(tmp_path))
-    assert whole.completeness == "complete"
-
-
 def test_an_override_names_a_call_by_each_element_of_a_list_parameter(tmp_path):
     outcome = _with_override(tmp_path, (
         "nodes:\n  tiny_driver/relay:\n    names:\n"

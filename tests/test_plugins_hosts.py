@@ -103,6 +103,21 @@ def test_a_plugin_not_in_the_workspace_is_a_diagnostic_and_only_that_instance_is
     assert other.node is move_base and partial.node is not move_base
 
 
+def test_a_modelled_host_whose_plugin_is_not_known_is_partial():
+    # noetic move_base from its interface model (completeness "model") on Fetch loads
+    # base_local_planner/TrajectoryPlannerROS, which no analysed package exports: its
+    # ~TrajectoryPlannerROS/local_plan publisher is unseen, so move_base is not whole
+    move_base = Node("move_base", "move_base", calls=[call("publish", "~goal")],
+                     completeness="model", model="noetic/move_base 1.17.3")
+    params = [ParamDecl("/move_base/base_local_planner",
+                        "base_local_planner/TrajectoryPlannerROS", "str", location=where(7))]
+    config = graph([NodeDecl("/move_base", "move_base", "move_base")], params, [move_base])
+    instance = config.node("/move_base")
+    assert instance.completeness == "partial" and not instance.is_complete
+    assert any("TrajectoryPlannerROS" in r for r in instance.completeness_reasons)
+    assert move_base.completeness == "model"  # the shared model is not touched
+
+
 def test_nav2_server_plugins_take_their_names_from_the_list_and_defaults():
     navfn = plugin("nav2_navfn_planner", "nav2_navfn_planner::NavfnPlanner",
                    "nav2_navfn_planner::NavfnPlanner",

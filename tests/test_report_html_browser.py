@@ -7,6 +7,7 @@ page error or network request.
 
 from __future__ import annotations
 
+import json
 from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
@@ -404,4 +405,31 @@ def test_launch_rows_find_nodes_named_in_code_and_leave_out_skipped(
     page.click('#launch .lt-node[data-id="node:/rsp"]')
     assert watched.ids("#graph .vertex.selected") == {"node:/rsp"}
     assert "line_3 = 3" in page.inner_text("#panel")
+    assert watched.problems == []
+
+
+def test_a_live_capture_shows_beside_the_graph(browser: Any, tmp_path: Path) -> None:
+    """report --live: the capture's lists in the side bar, what it did not see dashed."""
+    from conftest import FIXTURES
+
+    from haros_arch.cli import main
+
+    project = load(str(FIXTURES / "live_ros2" / "project.yaml"))
+    model = model_to_data(analyse(project, {"PATH": ""}))
+    chatter = {"name": "/chatter", "types": ["std_msgs/msg/String"],
+               "publishers": ["/talker"], "subscribers": ["/listener", "/spy"]}
+    live = {"schema": "haros-arch-live/1", "ros": 2, "observed": ["nodes", "topics"],
+            "nodes": ["/talker", "/listener", "/spy"], "topics": [chatter],
+            "services": [], "parameters": None}
+    (tmp_path / "model.json").write_text(json.dumps(model))
+    (tmp_path / "live.json").write_text(json.dumps(live))
+    path = tmp_path / "r.html"
+    assert main(["report", "--model", str(tmp_path / "model.json"), "--workspace",
+                 str(tmp_path), "--live", str(tmp_path / "live.json"), "-o", str(path)]) == 0
+    watched = Watched(browser, path)
+    side = watched.page.inner_text("#live")
+    assert "nodes 2 both, 1 only live, 1 only in the model" in side
+    assert "/spy" in side and "/monitor" in side
+    assert watched.ids("#graph .vertex.static-only") == {
+        "node:/monitor", "topic:/count", "topic:/status"}
     assert watched.problems == []

@@ -60,9 +60,10 @@ def extract_nodes(nodes: Sequence[Node], workspace: Workspace, *,
 
 
 # What leaves a node's calls partly unknown, per language: the code of the diagnostic of
-# each cause (an error left in a C++ unit, a file that could not be read or parsed)
+# each cause (a C++ error that can hide a call, ``cpp.recall``; a file that could not be
+# read or parsed)
 _PARTIAL_CAUSES = {
-    "cpp": ("CPP_PARSE_ERROR", "CPP_PARSE_FAILED", "FILE_UNREADABLE"),
+    "cpp": ("CPP_CALL_MISSED", "CPP_ERROR_NEAR_CALL", "CPP_PARSE_FAILED", "FILE_UNREADABLE"),
     "python": ("PY_PARSE_ERROR", "PY_TOO_COMPLEX", "FILE_UNREADABLE"),
 }
 _PARTIAL_CODE = {"cpp": "CPP_NODE_PARTIAL", "python": "PY_NODE_PARTIAL"}

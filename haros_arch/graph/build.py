@@ -27,6 +27,7 @@ from ..model.source import NUMBERED, Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK
 from ..models.commands import command_node
 from ..plugins.attach import attach as attach_plugins
+from ..robot.attach import attach as attach_descriptions
 from ..workspace import Workspace, installed_roots
 from .actions import action_links
 from .processes import guessed_names, process_nodes, process_params
@@ -123,7 +124,11 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
                 made = link(instance, each, remaps, resources, config)
                 if each.name_param is not None and made.rosname.is_unresolved:
                     config.diagnostics.append(_name_param_unset(instance, each))
-    for instance, calls in attach_plugins(config, started, nodes, resources, workspace):
+    # robot descriptions first: a ros2_control Gazebo plugin starts a controller manager
+    # whose controllers the plugin hosts load
+    described = attach_descriptions(config, launch, started, workspace, resources)
+    for instance, calls in [*attach_plugins(config, [*started, *described.managers], nodes,
+                                            resources, workspace), *described.calls]:
         remaps = resolve_remaps(instance.remaps, instance.namespace, instance.name)
         for call in calls:
             for each in element_calls(call, instance, resources):
@@ -309,7 +314,12 @@ def _given_name(call: PrimitiveCall, instance: NodeInstance, resources: Resource
     value: str | None = call.name_default
     if isinstance(param, Parameter) and param.set_by_launch and isinstance(param.value, str):
         value = param.value
-    return call.name if value is None else call.name.replace(UNKNOWN_MARK, value, 1)
+    if value is None:
+        return call.name
+    if value.startswith(("/", "~")) and (
+            call.name == UNKNOWN_MARK or call.name.endswith("/" + UNKNOWN_MARK)):
+        return value  # a global or private name is not resolved in the handle's namespace
+    return call.name.replace(UNKNOWN_MARK, value, 1)
 
 
 def element_calls(call: PrimitiveCall, instance: NodeInstance, resources: Resources

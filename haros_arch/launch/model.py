@@ -66,6 +66,10 @@ class ParamDecl:
     # pattern it is for; the graph gives it to the node only when the name it finds
     # for the node (from its code or model) matches
     pattern: str | None = None
+    # ROS 1 ``command=`` / ``textfile=`` (``cat FILE``), ROS 2 ``Command()`` /
+    # ``$(command)``: the command line the value comes from, ``?`` for unknown parts
+    # (it is never run; robot descriptions read the xacro file it names)
+    command: str | None = None
 
 
 @dataclass

@@ -15,6 +15,7 @@ from .diagnostic import Diagnostic
 from .launch_tree import item_from_data
 from .location import NOWHERE, Location
 from .model import Model
+from .robot import description_from_data
 from .rosname import RosName, namespace_of
 from .runtime import (
     LAUNCH_WRITER,
@@ -238,6 +239,9 @@ def _configuration(data: dict[str, Any], nodes: dict[str, Node],
     config.package_paths = [str(p) for p in data.get("package_paths", ())]
     config.launch_tree = [item for item in map(item_from_data, data.get("launch_tree") or ())
                           if item is not None]
+    config.robot_descriptions = [
+        made for made in map(description_from_data, data.get("robot_descriptions") or ())
+        if made is not None]
     for instance in config.nodes:  # a hint-made node type lists what its instances use
         if instance.node is not None and instance.node.name in hinted:
             calls = instance.node.calls

@@ -16,6 +16,7 @@ from .conditions import Condition
 from .diagnostic import Diagnostic
 from .launch_tree import LaunchItem
 from .location import NOWHERE, Location
+from .robot import RobotDescription
 from .rosname import RosName, namespace_of
 from .source import KNOWN_COMPLETENESS, Node, PrimitiveCall
 from .values import UNKNOWN_MARK
@@ -457,6 +458,9 @@ class Configuration:
     package_paths: list[str] = field(default_factory=list)
     # how the launch files make the nodes: one tree per launch file named (launch_tree.py)
     launch_tree: list[LaunchItem] = field(default_factory=list, metadata={"optional": True})
+    # the robot descriptions spawned into a simulator, as read (robot.py)
+    robot_descriptions: list[RobotDescription] = field(default_factory=list,
+                                                       metadata={"optional": True})
 
     def __repr__(self) -> str:
         return f"Configuration({self.name})"

@@ -152,8 +152,9 @@ class Node:
         return self.completeness in KNOWN_COMPLETENESS
 
     def mark_partial(self, reason: str, limit: int = 5) -> None:
-        """Calls may be missing for ``reason``; keeps the first ``limit`` reasons."""
-        if self.completeness == "complete":
+        """Calls may be missing for ``reason``; keeps the first ``limit`` reasons. A
+        node whole from an interface model (``model``) is partial too."""
+        if self.completeness in ("complete", "model"):
             self.completeness = "partial"
         if len(self.completeness_reasons) < limit and reason not in self.completeness_reasons:
             self.completeness_reasons.append(reason)

@@ -29,7 +29,7 @@ noetic-devel): the services are NS + ``controller_manager/load_controller``,
 ``switch_controller`` and ``unload_controller`` with NS the ``--namespace`` argument
 (default empty, a ``/`` added, lines 95-117), called through rospy.ServiceProxy (lines
 59-62, 124-137); ``--wait-for TOPIC`` subscribes TOPIC (std_msgs/Bool, line 160); it reads
-``/use_sim_time`` (line 140).
+``/use_sim_time`` with the default False (line 140).
 """
 
 from __future__ import annotations
@@ -82,8 +82,8 @@ def _spawner(decl: NodeDecl, words: list[str]) -> Node | None:
     if values.get("--wait-for"):
         calls.append(PrimitiveCall("subscribe", values["--wait-for"], "std_msgs/Bool",
                                    location=decl.location, origin="arguments"))
-    calls.append(PrimitiveCall("read", "/use_sim_time", location=decl.location,
-                               origin="arguments"))
+    calls.append(PrimitiveCall("read", "/use_sim_time", "bool", location=decl.location,
+                               origin="arguments", has_default=True, default=False))
     node = _node(decl, "controller_manager", calls[0], "python")
     node.calls = calls
     return node

@@ -16,8 +16,9 @@ Each entry's source tree is expected at ``SOURCES/<owner>+<name>@<commit[:12]>``
 unit of work, run by the same code as a workspace analysis (workspace scan, build
 files, C++ and Python extraction): on a local process pool by default, or on a Dask
 distributed cluster (``--scheduler ADDRESS``; the optional ``dask`` extra). A node is
-``partial`` where extraction says so (its sources kept errors) and where a line of its
-C++ calls a ROS API function with no extracted call there (``_mark_unextracted``). An
+``partial`` where extraction says so (``extract.cpp.recall``: a line of its C++ that
+calls a ROS API function with no call extracted there, an error in a function that
+calls the API). An
 override file ``OVERRIDES/<distro>/<package>.yaml`` (hint format, reviewed like code)
 may complete a model; what it adds has origin ``override``.
 """
@@ -196,8 +197,6 @@ def _build(task: Task, outcome: Outcome) -> Outcome:
         return outcome
     found = read_build_files(package, workspace)
     found += extract_nodes(package.nodes, workspace, cache_dir=task.cache_dir, jobs=1)
-    for node in package.nodes:  # extraction marked it partial where sources had errors
-        _mark_unextracted(node, task.tree)
     override = _apply_override(task, package.nodes, found)
     outcome.override_problems = [f"{d.location.file}: {d.message}" for d in found
                                  if d.code == "HINT_INVALID"]
@@ -216,39 +215,6 @@ def _build(task: Task, outcome: Outcome) -> Outcome:
     outcome.partial = {n.executable: list(n.completeness_reasons) for n in package.nodes
                        if n.completeness in ("partial", "unknown")}
     return outcome
-
-
-def _api_names() -> frozenset[str]:
-    """The ROS API's C++ function names, from the extractor's tables."""
-    from ..extract.cpp import api
-
-    tables = (api.ROSCPP, api.LIBRARIES, api.RCLCPP, api.RCLCPP_LIBRARIES)
-    return frozenset(name for table in tables for _, name in table)
-
-
-def _mark_unextracted(node: Node, root: str) -> None:
-    """A recall check on the extractor: a line of the node's C++ sources that calls a
-    ROS API function as a member (``nh.subscribe(``, ``->create_publisher<``) with no
-    extracted call within two lines of it means calls may be missing (code in a class
-    template, say); such a node is partial, with the first places."""
-    if node.language != "cpp":
-        return
-    names = sorted((n for n in _api_names() if "::" not in n and len(n) > 4), key=len)
-    pattern = re.compile(r"(?:\.|->)\s*(" + "|".join(map(re.escape, names)) + r")\s*[<(]")
-    seen = {(c.location.file, c.location.line) for c in node.calls}
-    missing: list[str] = []
-    for source in node.sources:
-        text, _problems = read_text(os.path.join(root, source), Location(file=source))
-        for number, line in enumerate((text or "").splitlines(), 1):
-            code = line.split("//", 1)[0]
-            if code.lstrip().startswith("*") or not pattern.search(code):
-                continue
-            if not any((source, near) in seen for near in range(number - 2, number + 3)):
-                missing.append(f"{source}:{number}: {code.strip()[:80]}")
-    for place in missing[:3]:
-        node.mark_partial(f"{place} calls the ROS API, but no call was extracted there")
-    if len(missing) > 3:
-        node.mark_partial(f"{len(missing)} such call sites in all")
 
 
 def _apply_override(task: Task, nodes: list[Node], found: list[Diagnostic]) -> str | None:

@@ -123,6 +123,7 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
             continue
         for name, leaf in flat(key, convert(value, ev)):
             put(name, leaf, location)
+    commands: dict[str, str] = {}
     for entry in entries:
         if isinstance(entry, e.ParamFile):
             read_file(entry, entry.location if entry.location.file else where)
@@ -130,15 +131,33 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
             written, value = entry
             for name, leaf in flat(ev.value(written).text, convert(value, ev)):
                 put(name, leaf, where)
+            command = command_line(value, ev)
+            if command is not None:
+                commands[ev.value(written).text] = command
     owner = len(runner.model.nodes) - 1  # the declaration just appended
     for name, (leaf, location) in found.items():
         param = make_param(node, name, leaf, scope.conditions, location)
         param.owner = owner
+        param.command = commands.get(name)
         runner.model.params.append(param)
     for pattern, name, leaf, location in pending:  # after those they may replace
         param = make_param(node, name, leaf, scope.conditions, location)
         param.owner, param.pattern = owner, pattern
         runner.model.params.append(param)
+
+
+def command_line(value: Any, ev: Evaluator) -> str | None:
+    """The command line of a value that is one ``Command`` (``ParameterValue`` of one
+    too), as text with ``?`` for unknown parts; None for any other value."""
+    if isinstance(value, e.ParamValue):
+        value = value.value
+    if not isinstance(value, tuple):
+        return None
+    commands = [part for part in value if isinstance(part, e.Command)]
+    rest = [part for part in value if not isinstance(part, e.Command)]
+    if len(commands) != 1 or any(not isinstance(p, str) or p.strip() for p in rest):
+        return None
+    return ev.value(commands[0].command).text
 
 
 def flat(key: str, value: Any) -> list[tuple[str, Any]]:

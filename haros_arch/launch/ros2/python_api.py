@@ -33,6 +33,8 @@ from .python_methods import (
     open_file,
     safe_load,
     text_or_none,
+    xacro_process,
+    xacro_process_file,
 )
 from .python_nav2 import NAV2_COMMON
 from .python_values import (
@@ -464,7 +466,8 @@ API: dict[str, Builder] = {
     "NotEqualsSubstitution": logic("notequals", 2),
     "IfElseSubstitution": logic("if", 3),
     "FileContent": lambda i, a, k, n: e.FileContent(to_text(arg(a, k, 0, "path"))),
-    "Command": opaque("Command (never run)"), "FindExecutable": find_executable,
+    "Command": lambda i, a, k, n: e.Command(to_text(arg(a, k, 0, "command"))),
+    "FindExecutable": find_executable,
     "ExecutableInPackage": executable_in_package,
     "AnySubstitution": logic("any", 64), "AllSubstitution": logic("all", 64),
     "LaunchLogDir": opaque("LaunchLogDir (known at run time)"),
@@ -509,6 +512,7 @@ API: dict[str, Builder] = {
     "print": ignored, "isinstance": lambda i, a, k, n: Unk("isinstance"),
     "all": builtin(all, list, tuple), "any": builtin(any, list, tuple),
     "open": open_file, "safe_load": safe_load,
+    "process_file": xacro_process_file, "process": xacro_process,
 }
 BUILTINS = frozenset(("len", "str", "int", "float", "bool", "list", "tuple", "dict",
                       "sorted", "min", "max", "abs", "enumerate", "zip", "range", "print",

@@ -65,6 +65,14 @@ class Lazy:
 
 
 @dataclass(frozen=True)
+class XacroDocument:
+    """What ``xacro.process_file(path, mappings=...)`` returns: never processed here; its
+    ``toxml()`` is the output of the ``xacro`` command line it stands for."""
+
+    command: e.Text
+
+
+@dataclass(frozen=True)
 class Ref:
     """A module or a name imported from one: ``launch_ros.actions.Node``."""
 
@@ -108,7 +116,7 @@ _COMPARE: dict[type, Callable[[Any, Any], bool]] = {
     ast.NotIn: lambda a, b: a not in b, ast.Is: operator.is_, ast.IsNot: operator.is_not,
 }
 _KNOWN_ROOTS = ("launch", "launch_ros", "launch_xml", "launch_yaml", "os", "ament_index_python",
-                "nav2_common", "builtins", "pathlib", "yaml")
+                "nav2_common", "builtins", "pathlib", "yaml", "xacro")
 
 
 def _known_module(qualified: str) -> bool:

@@ -7,12 +7,13 @@
 #include <boost/shared_ptr.hpp>
 #include <boost/function.hpp>
 namespace message_filters {
-template<class M> class Subscriber {
+template<class M, class NodeType = void> class Subscriber {
 public:
   Subscriber();
   template<class N, class... A> Subscriber(N&& node, const std::string& topic, A&&... more);
   template<class N, class... A> void subscribe(N&& node, const std::string& topic, A&&... more);
   void unsubscribe();
+  std::string getTopic() const;
   template<class C> void registerCallback(const C& callback);
 };
 struct NullType {};

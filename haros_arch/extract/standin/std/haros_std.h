@@ -68,6 +68,11 @@ template<class T> struct is_arithmetic : integral_constant<bool, __is_arithmetic
 template<class T> struct is_integral : integral_constant<bool, __is_integral(T)> {};
 template<class T> struct is_floating_point : integral_constant<bool, __is_floating_point(T)> {};
 template<class B, class D> struct is_base_of : integral_constant<bool, __is_base_of(B, D)> {};
+template<class T> struct is_pointer : false_type {};
+template<class T> struct is_pointer<T*> : true_type {};
+template<class T> struct is_enum : integral_constant<bool, __is_enum(T)> {};
+template<class T> struct underlying_type { typedef __underlying_type(T) type; };
+template<class T> using underlying_type_t = typename underlying_type<T>::type;
 template<class T> constexpr typename remove_reference<T>::type&& move(T&& t) noexcept;
 template<class T> constexpr T&& forward(typename remove_reference<T>::type& t) noexcept;
 template<class T> constexpr T&& forward(typename remove_reference<T>::type&& t) noexcept;
@@ -234,6 +239,7 @@ public:
   typedef T* iterator;
   typedef const T* const_iterator;
   typedef T* reverse_iterator;
+  typedef const T* const_reverse_iterator;
   vector();
   explicit vector(size_t n);
   vector(size_t n, const T& v);
@@ -281,6 +287,10 @@ public:
   const_iterator cend() const;
   reverse_iterator rbegin();
   reverse_iterator rend();
+  const_reverse_iterator rbegin() const;
+  const_reverse_iterator rend() const;
+  const_reverse_iterator crbegin() const;
+  const_reverse_iterator crend() const;
 };
 template<class T> bool operator==(const vector<T>& a, const vector<T>& b);
 template<class T> bool operator!=(const vector<T>& a, const vector<T>& b);
@@ -436,6 +446,7 @@ template<class It, class F> F for_each(It first, It last, F f);
 template<class It, class O> O copy(It first, It last, O out);
 template<class It, class O, class F> O transform(It first, It last, O out, F f);
 template<class It, class T> void fill(It first, It last, const T& v);
+template<class It, class N, class T> It fill_n(It first, N count, const T& v);
 template<class It> void reverse(It first, It last);
 template<class It> It min_element(It first, It last);
 template<class It> It max_element(It first, It last);
@@ -884,6 +895,7 @@ public:
   void lock_shared();
   void unlock_shared();
 };
+class shared_timed_mutex : public shared_mutex {};
 struct defer_lock_t {};
 struct adopt_lock_t {};
 extern const defer_lock_t defer_lock;
