@@ -155,6 +155,17 @@ def _from_setup_py(path: str, workspace: Workspace,
                                detail=getattr(err, "msg", str(err))))
         return [], {}
     module = setup_module(tree, os.path.dirname(path))
+    entries, package_dir = _from_setup_call(module, tree, path, workspace, found)
+    if module.limited is not None:  # what came after the bound is unknown: said once
+        unknown, node = module.limited
+        found.append(diag.make("PYSETUP_DYNAMIC", workspace.location(
+            path, getattr(node, "lineno", 0), getattr(node, "col_offset", -1) + 1),
+            detail=f"setup.py ({unknown.reason})"))
+    return entries, package_dir
+
+
+def _from_setup_call(module: Module, tree: ast.Module, path: str, workspace: Workspace,
+                     found: list[Diagnostic]) -> tuple[list[EntryPoint], dict[str, str]]:
     if not module.calls:
         return [], {}
     call = module.calls[-1]

@@ -98,6 +98,7 @@ class _Interpreter:
         self.aliases = aliases if aliases is not None else {}
         self.steps = 0
         self.scopes: list[dict[str, object]] = []
+        self.limited: tuple[Unknown, ast.AST] | None = None
 
     def step(self, count: int = 1) -> None:
         self.steps += count
@@ -392,12 +393,15 @@ class _Interpreter:
             raise _Stop(Unknown(f"{type(err).__name__}: {err}", "error")) from None
 
     def run(self, node: ast.AST) -> object:
-        """``node``'s value, or the ``Unknown`` that stopped it."""
+        """``node``'s value, or the ``Unknown`` that stopped it (the first bound reached is
+        kept in ``limited``, with the expression that reached it)."""
         try:
             result = self.eval(node)
             self.known(result)
             return result
         except _Stop as stop:
+            if stop.unknown.kind == "limit" and self.limited is None:
+                self.limited = (stop.unknown, node)
             return stop.unknown
         except RecursionError:
             return Unknown("expression too deeply nested", "limit")
@@ -474,6 +478,11 @@ class Module:
             return Unknown("no module", "undefined")
         return self.interpreter.run(node)
 
+    @property
+    def limited(self) -> tuple[Unknown, ast.AST] | None:
+        """The first work bound reached, and where: the values after it are unknown."""
+        return self.interpreter.limited if self.interpreter is not None else None
+
 
 def run_module(tree: ast.Module, functions: Mapping[str, Any] | None = None,
                limits: Limits = FILE_LIMITS, mutate: bool = True,
@@ -487,7 +496,9 @@ def run_module(tree: ast.Module, functions: Mapping[str, Any] | None = None,
     module = Module()
     wanted = set(calls)
     refused = _shape_ok(tree, limits)
+    module.interpreter = _Interpreter(None, {}, limits)
     if refused is not None:
+        module.interpreter.limited = (refused, tree)
         return module
     interp = _Interpreter(module.names.__getitem__, functions or BUILTINS, limits, mutate,
                           module.aliases, lenient=True)

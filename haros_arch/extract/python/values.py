@@ -18,6 +18,7 @@ from __future__ import annotations
 import ast
 
 from ...evaluate import budget
+from ...evaluate import operations as ops
 from ...model.values import Value
 from . import rclpy, rospy
 from .calls import MAX_CALL_DEPTH, argument, unknown_params
@@ -41,7 +42,7 @@ from .objects import (
 )
 from .qos import QoSProfiles
 from .scopes import MAX_UNROLL
-from .strings import arith, number, percent, string_method
+from .strings import number, percent, string_method
 
 __all__ = ["MAX_CALL_DEPTH", "MAX_UNROLL", "NAMESPACE", "Evaluator", "argument",
            "unknown_params"]
@@ -95,18 +96,16 @@ class Evaluator(Instances, QoSProfiles):
         if isinstance(expr.op, ast.Add):
             if isinstance(left, Value) or isinstance(right, Value):
                 return Value.of(text_of(left), text_of(right))
-            if number(left) and number(right):
-                return left + right  # type: ignore[operator]
             if isinstance(left, Seq) and isinstance(right, Seq):
                 return Seq(left.items + right.items)
         if isinstance(expr.op, ast.Mod) and isinstance(left, Value):
             items = right.items if isinstance(right, Seq) else (right,)
             return percent(left, items)
-        if isinstance(expr.op, ast.Mult | ast.Sub | ast.Div) and number(left) and number(right):
+        if number(left) and number(right):  # the one evaluator's arithmetic, bounded
             try:
-                return arith(expr.op, left, right)
-            except (ZeroDivisionError, OverflowError):
-                return Opaque("arithmetic")
+                return ops.binary(type(expr.op), left, right)
+            except ops.Refused as err:
+                return Opaque(err.reason)
         return Opaque("operation")
 
     def _Name(self, expr: ast.Name, frame: Frame) -> object:

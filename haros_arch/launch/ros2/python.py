@@ -87,8 +87,8 @@ class Interpreter(Expressions):
         self.diagnostics.append(diag.make("LAUNCH_UNKNOWN_VALUE", self.where(node),
                                           detail=detail))
 
-    def tick(self) -> None:
-        self.steps += 1
+    def tick(self, count: int = 1) -> None:
+        self.steps += count
         if self.steps > MAX_STEPS:
             raise Budget(f"more than {MAX_STEPS} evaluation steps")
 

@@ -13,12 +13,10 @@ from dataclasses import dataclass
 from pathlib import PurePosixPath
 from typing import TYPE_CHECKING, Any
 
-from ...evaluate import budget
+from ...evaluate import operations as ops
 from . import entities as e
 from .python_values import (
-    _BINARY,
-    _COMPARE,
-    MAX_SIZE,
+    LIMITS,
     Budget,
     Context,
     Func,
@@ -50,7 +48,7 @@ class Expressions:
     environment: dict[str, str]
     guards: list[str]
 
-    def tick(self) -> None:
+    def tick(self, count: int = 1) -> None:
         raise NotImplementedError
 
     def sized(self, value: Any) -> Any:
@@ -130,10 +128,23 @@ class Expressions:
         parts: list[Any] = []
         for value in node.values:
             if isinstance(value, ast.FormattedValue):
-                parts.append(self.eval(value.value, env))
+                parts.append(self.formatted(value, env))
             else:
                 parts.append(self.eval(value, env))
         return concat(parts)
+
+    def formatted(self, node: ast.FormattedValue, env: dict[str, Any]) -> Any:
+        """``{value!r:spec}`` of an f-string: formatted by the one evaluator when the value
+        and the spec are known; a substitution keeps its place otherwise."""
+        value = self.eval(node.value, env)
+        if node.format_spec is None and node.conversion == -1:
+            return value
+        spec = self.eval(node.format_spec, env) if node.format_spec is not None else ""
+        if not isinstance(spec, str) or not isinstance(value, (str, int, float, bool)) or (
+                value is None):
+            return value
+        return self.operation(lambda: ops.format_value(value, spec, node.conversion, LIMITS),
+                              node)
 
     def e_BinOp(self, node: ast.BinOp, env: dict[str, Any]) -> Any:
         return self.binop(node.op, self.eval(node.left, env), self.eval(node.right, env), node)
@@ -153,37 +164,25 @@ class Expressions:
             return concat([left, right])
         if isinstance(left, Unk) or isinstance(right, Unk):
             return Unk("arithmetic on an unknown value")
-        if isinstance(op, ast.Mult):
-            count = right if isinstance(right, int) else left if isinstance(left, int) else 0
-            other = left if isinstance(right, int) else right
-            if isinstance(other, (str, list, tuple)) and len(other) * max(count, 0) > MAX_SIZE:
-                raise Budget(f"a value with more than {MAX_SIZE} items or characters")
-        if isinstance(op, ast.Pow) and isinstance(right, (int, float)) and abs(right) > 256:
-            raise Budget("an exponent above 256")
-        if isinstance(op, ast.LShift) and isinstance(right, int) and right > 256:
-            raise Budget("a shift above 256 bits")
         if isinstance(op, ast.Mod) and isinstance(left, str) and (
                 isinstance(right, (Lazy, e.Subst)) or (
                     isinstance(right, tuple) and any(is_lazy(x) for x in right))):
             return self.unsupported(node, "%-formatting with substitutions")
-        function = _BINARY.get(type(op))
         known = (str, int, float, bool, list, tuple, type(None))
-        if function is None or not isinstance(left, known) or not isinstance(right, known):
+        if not isinstance(left, known) or not isinstance(right, known):
             return self.unsupported(node, "operation on values not known statically")
-        try:  # the size of what it would make, before making it
-            if isinstance(op, ast.Mod) and isinstance(left, str):
-                budget.percent_length(left, right, MAX_SIZE)
-            symbol = {ast.Mult: "*", ast.Pow: "**", ast.LShift: "<<"}.get(type(op))
-            if symbol is not None:
-                budget.check_int_op(symbol, left, right)
-        except budget.OverBudget as err:
+        return self.operation(lambda: ops.binary(type(op), left, right, LIMITS), node)
+
+    def operation(self, action: Callable[[], Any], node: ast.AST) -> Any:
+        """An operation of the one evaluator on known values: its bound stops the file
+        (``Budget``), anything else it refuses is an unsupported construct here."""
+        try:
+            return action()
+        except ops.Refused as err:
             if err.kind == "limit":
                 raise Budget(err.reason) from None
-            return self.unsupported(node, err.reason)
-        try:
-            return function(left, right)
-        except (TypeError, ValueError, ZeroDivisionError, OverflowError, IndexError) as err:
-            return self.unsupported(node, f"operation fails: {err}")
+            return self.unsupported(node, f"operation fails: {err.reason}" if err.kind
+                                    == "error" else err.reason)
 
     def e_UnaryOp(self, node: ast.UnaryOp, env: dict[str, Any]) -> Any:
         value = self.eval(node.operand, env)
@@ -212,13 +211,11 @@ class Expressions:
             right = self.eval(comparator, env)
             if _opaque(left) or _opaque(right):
                 return Unk(f"comparison {_source(node)}")
-            function = _COMPARE.get(type(op))
-            if function is None:
-                return Unk("comparison")
+            self.tick(ops.compare_cost(left, right, LIMITS))
             try:
-                if not function(left, right):
+                if not ops.compare(type(op), left, right):
                     return False
-            except TypeError:
+            except ops.Refused:
                 return Unk("comparison")
             left = right
         return True

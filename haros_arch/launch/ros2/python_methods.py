@@ -17,10 +17,10 @@ from typing import TYPE_CHECKING, Any
 import yaml
 
 from ... import safe_yaml
-from ...evaluate import budget
+from ...evaluate import operations as ops
 from . import entities as e
 from .python_values import (
-    MAX_SIZE,
+    LIMITS,
     Budget,
     Context,
     LaunchDescription,
@@ -63,13 +63,20 @@ def cond(interp: Interpreter, value: Any, node: ast.AST) -> e.Cond | None:
 
 # -- builtins --------------------------------------------------------------------------------
 def builtin(function: Callable[..., Any], *types: type) -> Builder:
+    """A builtin on known arguments of ``types``, through the one evaluator's table (its
+    bounded ``str``, ``int``, ... where it has one) and its size check."""
+    name = getattr(function, "__name__", "builtin")
+    function = ops.BUILTINS.get(name, function)
+
     def build(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
         if k or any(not isinstance(v, types) for v in a):
-            return Unk(f"{function.__name__}() of values not known statically")
+            return Unk(f"{name}() of values not known statically")
         try:
-            return function(*a)
-        except (TypeError, ValueError, OverflowError) as err:
-            return i.unsupported(n, f"{function.__name__}() fails: {err}")
+            return ops.call_builtin(function, a, {}, LIMITS)
+        except ops.Refused as err:
+            if err.kind == "limit":
+                raise Budget(err.reason) from None
+            return i.unsupported(n, f"{name}() fails: {err.reason}")
     return build
 
 
@@ -186,15 +193,12 @@ def m_str(name: str) -> Method:
                 return concat(pieces)
             return Unk(f"str.{name}() of a value not known statically")
         try:  # the size of what it would make, before making it
-            budget.str_method_length(owner, name, a, k, MAX_SIZE)
-        except budget.OverBudget as err:
+            return ops.call_method(owner, name, a, k, LIMITS)
+        except ops.Refused as err:
             if err.kind == "limit":
                 raise Budget(err.reason) from None
-            return i.unsupported(n, f"str.{name}(): {err.reason}")
-        try:
-            return i.sized(getattr(owner, name)(*a, **k))
-        except (TypeError, ValueError, IndexError, KeyError) as err:
-            return i.unsupported(n, f"str.{name}() fails: {err}")
+            return i.unsupported(n, f"str.{name}() fails: {err.reason}" if err.kind == "error"
+                                 else f"str.{name}(): {err.reason}")
     return call
 
 

@@ -8,12 +8,12 @@
 from __future__ import annotations
 
 import ast
-import operator
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import PurePosixPath
 from typing import Any
 
+from ...evaluate.operations import Limits
 from . import entities as e
 
 MAX_SOURCE = 512 * 1024
@@ -22,6 +22,8 @@ MAX_DEPTH = 100
 MAX_STEPS = 200_000
 MAX_CALL_DEPTH = 40
 MAX_SIZE = 100_000  # items of a container or characters of a string
+# the one evaluator's operations, with this reader's size bound
+LIMITS = Limits(length=MAX_SIZE, steps=MAX_STEPS)
 MAX_READ = 1024 * 1024  # bytes of a file read by open() / yaml.safe_load
 
 
@@ -96,17 +98,6 @@ class Context:
     perform: Callable[[e.Text], Any]
 
 
-_BINARY: dict[type, Callable[[Any, Any], Any]] = {
-    ast.Add: operator.add, ast.Sub: operator.sub, ast.Mult: operator.mul,
-    ast.Div: operator.truediv, ast.FloorDiv: operator.floordiv, ast.Mod: operator.mod,
-    ast.Pow: operator.pow, ast.LShift: operator.lshift, ast.RShift: operator.rshift,
-    ast.BitAnd: operator.and_, ast.BitOr: operator.or_,
-}
-_COMPARE: dict[type, Callable[[Any, Any], bool]] = {
-    ast.Eq: operator.eq, ast.NotEq: operator.ne, ast.Lt: operator.lt, ast.LtE: operator.le,
-    ast.Gt: operator.gt, ast.GtE: operator.ge, ast.In: lambda a, b: a in b,
-    ast.NotIn: lambda a, b: a not in b, ast.Is: operator.is_, ast.IsNot: operator.is_not,
-}
 _KNOWN_ROOTS = ("launch", "launch_ros", "launch_xml", "launch_yaml", "os", "ament_index_python",
                 "nav2_common", "builtins", "pathlib", "yaml")
 
