@@ -29,35 +29,15 @@ from __future__ import annotations
 import ast
 from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field
-from typing import Any, Literal
+from typing import Any
 
+from ..model.values import Unknown, UnknownKind
 from . import operations as ops
 from . import syntax
 from .operations import BUILTINS, MATH, Limits, Refused
 
 __all__ = ["BUILTINS", "MATH", "Limits", "Module", "Unknown", "evaluate", "evaluate_node",
            "is_unknown", "names_from", "run_module"]
-
-UnknownKind = Literal["unknown", "unsupported", "undefined", "error", "syntax", "limit"]
-
-
-@dataclass(frozen=True)
-class Unknown:
-    """The result of an expression that cannot be evaluated statically.
-
-    ``kind`` says why: ``unknown`` (it depends on a value nobody knows, e.g. an unset
-    argument), ``unsupported`` (a construct outside the safe subset, never run),
-    ``undefined`` (a name that is not defined), ``error`` (Python would raise, e.g.
-    division by zero), ``syntax`` (not a Python expression), ``limit`` (a work bound
-    was reached).
-    """
-
-    reason: str
-    kind: UnknownKind = "unknown"
-
-    def __str__(self) -> str:
-        return "?"
-
 
 def is_unknown(value: object) -> bool:
     return isinstance(value, Unknown)

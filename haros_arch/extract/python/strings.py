@@ -3,8 +3,8 @@
 from __future__ import annotations
 
 from ...evaluate import operations as ops
-from ...model.values import Value
-from .objects import Opaque, Seq, text_of
+from ...model.values import Unknown, Value
+from .objects import Seq, text_of
 
 
 def number(value: object) -> bool:
@@ -56,7 +56,7 @@ def _from_plain(value: object) -> object:
         return Seq(tuple(_from_plain(item) for item in value))
     if isinstance(value, bool | int | float | None):
         return value
-    return Opaque(type(value).__name__)
+    return Unknown(type(value).__name__)
 
 
 def string_method(base: Value, method: str, args: list[object]) -> object:
@@ -71,7 +71,7 @@ def string_method(base: Value, method: str, args: list[object]) -> object:
         try:
             return _from_plain(ops.call_method(text, method, known))
         except ops.Refused as err:
-            return Opaque(f"str.{method}: {err.reason}")
+            return Unknown(f"str.{method}: {err.reason}")
     if method == "format" and base.is_known:
         text = base.text
         out: list[Value | str] = []
@@ -106,4 +106,4 @@ def string_method(base: Value, method: str, args: list[object]) -> object:
                 joined.append(base)
             joined.append(text_of(item))
         return Value.of(*joined)
-    return Opaque(f"str.{method}")
+    return Unknown(f"str.{method}")

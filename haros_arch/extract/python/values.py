@@ -5,7 +5,7 @@ parts print as ``?`` (f-strings, ``+``, ``%`` and ``str.format`` keep every know
 numbers, booleans and None are themselves; imported things are ``Ref``s to their
 qualified name; parameter reads are ``ParamValue``s (a name that is a parameter's value);
 rclpy nodes are ``NodeHandle``s; objects of classes of the package are ``Instance``s
-whose attributes come from ``__init__``; anything else is ``Opaque``.
+whose attributes come from ``__init__``; anything else is ``Unknown``.
 Helper functions whose body is straight-line code ending in ``return`` are evaluated
 with their arguments bound, a few calls deep.
 
@@ -19,7 +19,7 @@ import ast
 
 from ...evaluate import budget
 from ...evaluate import operations as ops
-from ...model.values import Value
+from ...model.values import Unknown, Value
 from . import rclpy, rospy
 from .calls import MAX_CALL_DEPTH, argument, unknown_params
 from .instances import Instances
@@ -31,7 +31,6 @@ from .objects import (
     ModuleRef,
     NodeHandle,
     NodeMethod,
-    Opaque,
     ParameterClient,
     ParamObject,
     ParamValue,
@@ -58,11 +57,11 @@ class Evaluator(Instances, QoSProfiles):
 
     def eval(self, expr: ast.expr, frame: Frame) -> object:
         if self.depth > MAX_EVAL_DEPTH:
-            return Opaque("too deep")
+            return Unknown("too deep")
         self.depth += 1
         try:
             handler = getattr(self, "_" + type(expr).__name__, None)
-            return handler(expr, frame) if handler else Opaque(type(expr).__name__)
+            return handler(expr, frame) if handler else Unknown(type(expr).__name__)
         finally:
             self.depth -= 1
 
@@ -71,7 +70,7 @@ class Evaluator(Instances, QoSProfiles):
             return Value.of(expr.value)
         if isinstance(expr.value, bool | int | float) or expr.value is None:
             return expr.value
-        return Opaque("constant")
+        return Unknown("constant")
 
     def _JoinedStr(self, expr: ast.JoinedStr, frame: Frame) -> object:
         parts: list[Value | str] = []
@@ -92,7 +91,7 @@ class Evaluator(Instances, QoSProfiles):
             elif isinstance(expr.op, ast.Mult):
                 budget.check_int_op("*", left, right)
         except budget.OverBudget as err:
-            return Opaque(err.reason)
+            return Unknown(err.reason)
         if isinstance(expr.op, ast.Add):
             if isinstance(left, Value) or isinstance(right, Value):
                 return Value.of(text_of(left), text_of(right))
@@ -105,8 +104,8 @@ class Evaluator(Instances, QoSProfiles):
             try:
                 return ops.binary(type(expr.op), left, right)
             except ops.Refused as err:
-                return Opaque(err.reason)
-        return Opaque("operation")
+                return Unknown(err.reason)
+        return Unknown("operation")
 
     def _Name(self, expr: ast.Name, frame: Frame) -> object:
         return self.name(expr.id, frame)
@@ -122,7 +121,7 @@ class Evaluator(Instances, QoSProfiles):
         if isinstance(base, Seq) and isinstance(index, int) and -len(base.items) <= index < len(
                 base.items):
             return base.items[index]
-        return Opaque("subscript")
+        return Unknown("subscript")
 
     def _Attribute(self, expr: ast.Attribute, frame: Frame) -> object:
         base = self.eval(expr.value, frame)
@@ -133,7 +132,7 @@ class Evaluator(Instances, QoSProfiles):
             return Ref(f"{base.qualname}.{attr}")
         if isinstance(base, ModuleRef):
             found = self.lookup(base.module, attr)
-            inner = submodule(base.module.path, attr) if isinstance(found, Opaque) else None
+            inner = submodule(base.module.path, attr) if isinstance(found, Unknown) else None
             other = self.loader.load(inner) if inner is not None else None
             return ModuleRef(other) if other is not None else found
         if isinstance(base, Instance):
@@ -145,14 +144,14 @@ class Evaluator(Instances, QoSProfiles):
             if (attr in rclpy.NODE_METHODS or attr in NAME_METHODS
                     or attr == "get_namespace") and self.is_node_class(base.cls):
                 return NodeMethod(attr, owner=base)
-            return Opaque(f"self.{attr}")
+            return Unknown(f"self.{attr}")
         if isinstance(base, ClassInfo):
             for c in self.mro(base):
                 if attr in c.constants:
                     return self.eval(c.constants[attr], Frame(c.module))
                 if attr in c.methods:
                     return c.methods[attr]
-            return Opaque(attr)
+            return Unknown(attr)
         if isinstance(base, ParameterClient) and attr in rclpy.NODE_METHODS:
             return NodeMethod(attr, base.remote)
         if isinstance(base, NodeHandle) and (attr in rclpy.NODE_METHODS or attr in NAME_METHODS
@@ -164,10 +163,10 @@ class Evaluator(Instances, QoSProfiles):
                 return ParamValue(base.name, base.default)
             if attr == "get_parameter_value":
                 return base
-        if isinstance(base, Opaque | Value | type(None)) and attr in rclpy.NODE_METHODS \
+        if isinstance(base, Unknown | Value | type(None)) and attr in rclpy.NODE_METHODS \
                 and frame.module.version == 2:
             return NodeMethod(attr)
-        return Opaque(attr)
+        return Unknown(attr)
 
     def _Call(self, expr: ast.Call, frame: Frame) -> object:
         func = self.callee(expr.func, frame)
@@ -181,7 +180,7 @@ class Evaluator(Instances, QoSProfiles):
             return self.construct(func, expr, frame)
         if isinstance(func, FunctionInfo | BoundMethod):
             return self.returned(func, expr, frame)
-        if isinstance(expr.func, ast.Attribute) and isinstance(func, Opaque):
+        if isinstance(expr.func, ast.Attribute) and isinstance(func, Unknown):
             base = self.eval(expr.func.value, frame)
             if isinstance(base, Value):
                 return string_method(base, expr.func.attr, [
@@ -191,8 +190,8 @@ class Evaluator(Instances, QoSProfiles):
             value = self.eval(expr.args[0], frame)
             if expr.func.id == "str":
                 return text_of(value)
-            return value if number(value) else Opaque(expr.func.id)
-        return Opaque("call")
+            return value if number(value) else Unknown(expr.func.id)
+        return Unknown("call")
 
     def callee(self, func: ast.expr, frame: Frame) -> object:
         """What a call's function expression names."""
@@ -229,7 +228,7 @@ class Evaluator(Instances, QoSProfiles):
                                    else Value.unknown("remote node"))
         if key == ("rclpy", "QoSProfile"):
             return self.qos_profile(expr, frame)
-        return Opaque(ref.qualname)
+        return Unknown(ref.qualname)
 
     def _node_method(self, name: str, expr: ast.Call, frame: Frame) -> object:
         if name in NAME_METHODS and not expr.args:
@@ -245,12 +244,12 @@ class Evaluator(Instances, QoSProfiles):
                 default = self.eval(value, frame)
             self.param_defaults[text] = default
             return ParamObject(text, default)
-        return Opaque(name)
+        return Unknown(name)
 
     def returned(self, func: FunctionInfo | BoundMethod, expr: ast.Call, frame: Frame) -> object:
         """What a helper returns, when its body is straight-line code ending in return."""
         if frame.depth >= MAX_CALL_DEPTH:
-            return Opaque("call depth")
+            return Unknown("call depth")
         inner = self.call_frame(func, expr, frame)
         info = func.function if isinstance(func, BoundMethod) else func
         for statement in info.node.body:
@@ -260,7 +259,7 @@ class Evaluator(Instances, QoSProfiles):
                 self.assign(statement, inner)
             elif not isinstance(statement, ast.Expr | ast.Pass):
                 break
-        return Opaque(f"{info.qualname}()")
+        return Unknown(f"{info.qualname}()")
 
 
 def _length(value: object) -> int:

@@ -14,6 +14,7 @@ from pathlib import PurePosixPath
 from typing import TYPE_CHECKING, Any
 
 from ...evaluate import operations as ops
+from ...model.values import Unknown
 from . import entities as e
 from .python_values import (
     LIMITS,
@@ -22,7 +23,6 @@ from .python_values import (
     Func,
     Lazy,
     Ref,
-    Unk,
     _hashable,
     _opaque,
     _source,
@@ -54,7 +54,7 @@ class Expressions:
     def sized(self, value: Any) -> Any:
         raise NotImplementedError
 
-    def unsupported(self, node: ast.AST | None, detail: str) -> Unk:
+    def unsupported(self, node: ast.AST | None, detail: str) -> Unknown:
         raise NotImplementedError
 
     def unknown_value(self, node: ast.AST, detail: str) -> None:
@@ -156,14 +156,14 @@ class Expressions:
             return PurePosixPath(left) / right  # pathlib, pure: no file is looked at
         if isinstance(op, ast.Div) and isinstance(left, e.PathJoin):
             # PathJoinSubstitution / part, as pathlib.Path does (launch >= 3.7)
-            if isinstance(right, Unk):
-                return Unk("a path part not known statically")
+            if isinstance(right, Unknown):
+                return Unknown("a path part not known statically")
             return e.PathJoin((*left.parts, to_text(right)))
         if isinstance(op, ast.Add) and (is_stringy(left) or is_stringy(right)) and not (
                 isinstance(left, list) or isinstance(right, list)):
             return concat([left, right])
-        if isinstance(left, Unk) or isinstance(right, Unk):
-            return Unk("arithmetic on an unknown value")
+        if isinstance(left, Unknown) or isinstance(right, Unknown):
+            return Unknown("arithmetic on an unknown value")
         if isinstance(op, ast.Mod) and isinstance(left, str) and (
                 isinstance(right, (Lazy, e.Subst)) or (
                     isinstance(right, tuple) and any(is_lazy(x) for x in right))):
@@ -188,10 +188,10 @@ class Expressions:
         value = self.eval(node.operand, env)
         if isinstance(node.op, ast.Not):
             truth = self.truth(value)
-            return Unk("not of an unknown value") if truth is None else not truth
+            return Unknown("not of an unknown value") if truth is None else not truth
         if isinstance(value, (int, float)) and not isinstance(value, bool):
             return -value if isinstance(node.op, ast.USub) else value
-        return Unk("unary operation")
+        return Unknown("unary operation")
 
     def e_BoolOp(self, node: ast.BoolOp, env: dict[str, Any]) -> Any:
         is_and = isinstance(node.op, ast.And)
@@ -200,7 +200,7 @@ class Expressions:
             result = self.eval(operand, env)
             truth = self.truth(result)
             if truth is None:
-                return Unk("boolean of an unknown value")
+                return Unknown("boolean of an unknown value")
             if truth != is_and:
                 return result
         return result
@@ -210,20 +210,20 @@ class Expressions:
         for op, comparator in zip(node.ops, node.comparators, strict=False):
             right = self.eval(comparator, env)
             if _opaque(left) or _opaque(right):
-                return Unk(f"comparison {_source(node)}")
+                return Unknown(f"comparison {_source(node)}")
             self.tick(ops.compare_cost(left, right, LIMITS))
             try:
                 if not ops.compare(type(op), left, right):
                     return False
             except ops.Refused:
-                return Unk("comparison")
+                return Unknown("comparison")
             left = right
         return True
 
     def e_IfExp(self, node: ast.IfExp, env: dict[str, Any]) -> Any:
         truth = self.truth(self.eval(node.test, env))
         if truth is None:
-            return Unk(f"conditional expression {_source(node.test)}")
+            return Unknown(f"conditional expression {_source(node.test)}")
         return self.eval(node.body if truth else node.orelse, env)
 
     def e_Subscript(self, node: ast.Subscript, env: dict[str, Any]) -> Any:
@@ -238,13 +238,13 @@ class Expressions:
                 return value[_hashable(key)]
             except (KeyError, IndexError, TypeError):
                 return self.unsupported(node, f"{_source(node)} is not known statically")
-        return Unk("subscript")
+        return Unknown("subscript")
 
     def e_Slice(self, node: ast.Slice, env: dict[str, Any]) -> Any:
         parts = [None if p is None else self.eval(p, env)
                  for p in (node.lower, node.upper, node.step)]
         if any(p is not None and not isinstance(p, int) for p in parts):
-            return Unk("slice")
+            return Unknown("slice")
         return slice(*parts)
 
     def e_Attribute(self, node: ast.Attribute, env: dict[str, Any]) -> Any:
@@ -361,7 +361,7 @@ class _Environ:
         if len(args) > 1:
             return args[1]
         if not isinstance(name, str):
-            return Unk("environment")
+            return Unknown("environment")
         interp.unknown_value(node, f"environment variable {name} is not set in the "
                                    "configuration")
         return Lazy((e.Opaque(f"environment variable {name}", report=False),))

@@ -18,6 +18,7 @@ import yaml
 
 from ... import safe_yaml
 from ...evaluate import operations as ops
+from ...model.values import Unknown
 from . import entities as e
 from .python_values import (
     LIMITS,
@@ -26,7 +27,6 @@ from .python_values import (
     LaunchDescription,
     Lazy,
     ReadOnlyFile,
-    Unk,
     concat,
     to_text,
 )
@@ -70,7 +70,7 @@ def builtin(function: Callable[..., Any], *types: type) -> Builder:
 
     def build(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
         if k or any(not isinstance(v, types) for v in a):
-            return Unk(f"{name}() of values not known statically")
+            return Unknown(f"{name}() of values not known statically")
         try:
             return ops.call_builtin(function, a, {}, LIMITS)
         except ops.Refused as err:
@@ -94,7 +94,7 @@ def safe_load(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     text = i.read(source.path, n) if isinstance(source, ReadOnlyFile) else (
         source if isinstance(source, str) else None)
     if text is None:
-        return Unk("YAML not known statically")
+        return Unknown("YAML not known statically")
     try:
         return safe_yaml.load(text)
     except yaml.YAMLError as err:
@@ -103,7 +103,7 @@ def safe_load(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
 
 def bounded_range(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     if not all(isinstance(v, int) for v in a) or not a:
-        return Unk("range of unknown bounds")
+        return Unknown("range of unknown bounds")
     values = range(*a)
     if len(values) > 10_000:
         return i.unsupported(n, "range() above 10000 items is not expanded")
@@ -127,7 +127,7 @@ def m_find(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
 def m_read(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
     if isinstance(owner, ReadOnlyFile):
         text = i.read(owner.path, n)
-        return Unk("unreadable file") if text is None else text
+        return Unknown("unreadable file") if text is None else text
     return i.unsupported(n, ".read() on a value not known statically")
 
 
@@ -137,11 +137,11 @@ def m_evaluate(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> An
         return i.unsupported(n, ".evaluate() outside an OpaqueFunction")
     value = a[0].perform(owner.expression)
     if not isinstance(value, str):
-        return Unk(f"condition {owner.source}")
+        return Unknown(f"condition {owner.source}")
     if owner.equals is not None:
         expected = a[0].perform(owner.equals)
         if not isinstance(expected, str):
-            return Unk(f"condition {owner.source}")
+            return Unknown(f"condition {owner.source}")
         return (value == expected) != owner.negate
     lowered = value.strip().lower()
     if lowered not in ("true", "1", "false", "0"):
@@ -180,9 +180,9 @@ def m_str(name: str) -> Method:
         if name == "perform":
             if isinstance(owner, (e.Subst, Lazy)) and a and isinstance(a[0], Context):
                 return a[0].perform(to_text(owner))
-            return Unk("perform() outside an OpaqueFunction")
+            return Unknown("perform() outside an OpaqueFunction")
         if name == "format" and isinstance(owner, str) and any(
-                isinstance(v, (Lazy, e.Subst, Unk)) for v in [*a, *k.values()]):
+                isinstance(v, (Lazy, e.Subst, Unknown)) for v in [*a, *k.values()]):
             return _format_lazy(owner, a, k)
         if not isinstance(owner, str) or not all(
                 isinstance(v, (str, int, float, list, tuple)) for v in [*a, *k.values()]):
@@ -191,7 +191,7 @@ def m_str(name: str) -> Method:
                 for index, item in enumerate(a[0]):
                     pieces.extend([owner, item] if index else [item])
                 return concat(pieces)
-            return Unk(f"str.{name}() of a value not known statically")
+            return Unknown(f"str.{name}() of a value not known statically")
         try:  # the size of what it would make, before making it
             return ops.call_method(owner, name, a, k, LIMITS)
         except ops.Refused as err:
@@ -212,12 +212,12 @@ def _format_lazy(template: str, a: Args, k: Kwargs) -> Any:
         field_name, _, rest = after.partition("}")
         pieces.append(before)
         if field_name == "":
-            pieces.append(a[index] if index < len(a) else Unk("format"))
+            pieces.append(a[index] if index < len(a) else Unknown("format"))
             index += 1
         elif field_name.isdigit():
-            pieces.append(a[int(field_name)] if int(field_name) < len(a) else Unk("format"))
+            pieces.append(a[int(field_name)] if int(field_name) < len(a) else Unknown("format"))
         else:
-            pieces.append(k.get(field_name, Unk("format")))
+            pieces.append(k.get(field_name, Unknown("format")))
     pieces.append(rest)
     return concat(pieces)
 
@@ -253,7 +253,7 @@ def m_path(name: str) -> Method:
     def call(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
         if not isinstance(owner, PurePosixPath) or k or not all(
                 isinstance(v, (str, PurePosixPath)) for v in a):
-            return Unk(f"Path.{name}() of a value not known statically")
+            return Unknown(f"Path.{name}() of a value not known statically")
         try:
             return getattr(owner, name)(*a)
         except (TypeError, ValueError) as err:

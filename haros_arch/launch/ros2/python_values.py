@@ -1,6 +1,6 @@
 """Values of the static Python interpreter, its bounds, and how they become launch text.
 
-``Unk`` is a value we do not know; ``Lazy`` a string with substitutions or unknown parts
+``Unknown`` is a value we do not know; ``Lazy`` a string with substitutions or unknown parts
 (a ``Text``, computed when the action runs); ``Ref`` a module or an imported name;
 ``Func`` a function of the interpreted file; ``ReadOnlyFile`` what ``open()`` gives.
 """
@@ -14,6 +14,7 @@ from pathlib import PurePosixPath
 from typing import Any
 
 from ...evaluate.operations import Limits
+from ...model.values import Unknown
 from . import entities as e
 
 MAX_SOURCE = 512 * 1024
@@ -50,13 +51,6 @@ class _Break(_Flow):
 
 class _Continue(_Flow):
     pass
-
-
-@dataclass(frozen=True)
-class Unk:
-    """A value we do not know; ``why`` says what it came from."""
-
-    why: str
 
 
 @dataclass(frozen=True)
@@ -123,20 +117,20 @@ def _hashable(value: Any) -> Any:
     if isinstance(value, list):
         return tuple(_hashable(v) for v in value)
     if isinstance(value, dict):
-        return Unk("dict key")
+        return Unknown("dict key")
     return value
 
 
 def _opaque(value: Any) -> bool:
-    return isinstance(value, (Unk, Lazy, e.Subst, e.Cond, e.Action))
+    return isinstance(value, (Unknown, Lazy, e.Subst, e.Cond, e.Action))
 
 
 def is_lazy(value: Any) -> bool:
-    return isinstance(value, (Lazy, e.Subst, Unk))
+    return isinstance(value, (Lazy, e.Subst, Unknown))
 
 
 def is_stringy(value: Any) -> bool:
-    return isinstance(value, (str, Lazy, e.Subst, Unk))
+    return isinstance(value, (str, Lazy, e.Subst, Unknown))
 
 
 def _text_of(value: Any) -> e.Text:
@@ -159,8 +153,8 @@ def to_text(value: Any) -> e.Text:
         return (str(value).lower(),)
     if isinstance(value, (int, float)):
         return (str(value),)
-    if isinstance(value, Unk):
-        return (e.Opaque(value.why),)
+    if isinstance(value, Unknown):
+        return (e.Opaque(value.origin),)
     if isinstance(value, e.ParamFile):
         return (e.FileRef(value),)
     return (e.Opaque(f"{type(value).__name__} value"),)
@@ -172,7 +166,7 @@ def concat(parts: list[Any]) -> Any:
     for part in parts:
         if isinstance(part, (int, float)) and not isinstance(part, bool):
             out.append(str(part))
-        elif isinstance(part, (str, Lazy, e.Subst, Unk, PurePosixPath)):
+        elif isinstance(part, (str, Lazy, e.Subst, Unknown, PurePosixPath)):
             out.extend(to_text(part))
         else:
             out.append(e.Opaque(f"{type(part).__name__} in a string"))
