@@ -1,0 +1,43 @@
+"""Growth the fuzzer found after the first round of bounds (#20): work that grows with the
+square of a file's size ends with a diagnostic, quickly."""
+
+from __future__ import annotations
+
+import math
+import time
+
+import pytest
+import yaml
+from conftest import package_xml
+
+from haros_arch import safe_yaml
+from haros_arch.launch import load
+from haros_arch.workspace import scan
+
+
+@pytest.mark.parametrize("text", [
+    "1", "-1", "0x1F", "0o17", "017", "1_000", "+5", "1.5", "-.5", ".inf", "-.Inf", ".nan",
+    "1e3", "6.8523015e+5", "true", "True", "yes", "Off", "n", "~", "null", "NULL", "abc",
+    "/map", "a/b", "2001-12-14", "-", "--", "---", "a-b", "-a", "1-2", "0b101", "x~",
+    "190:20:30", "a: 1", "[1, 2]", "'quoted'", "9" * 30, "",
+])
+def test_plain_scalars_read_as_the_full_yaml_reader_reads_them(text: str) -> None:
+    full = yaml.safe_load(text)
+    fast = safe_yaml.load(text)
+    assert fast == full or (isinstance(full, float) and math.isnan(full) and math.isnan(fast))
+    assert type(fast) is type(full)
+
+
+def test_set_parameters_between_many_nodes_are_bounded(write_tree) -> None:
+    # every node takes every SetParameter before it in its group: nodes x parameters
+    body = '<set_parameter name="level" value="3"/><node pkg="pkg" exec="n"/>\n' * 700
+    root = write_tree({"src/pkg/package.xml": package_xml("pkg", "ament_cmake"),
+                       "src/pkg/launch/many.launch.xml": f"<launch><group>{body}</group>"
+                                                         "</launch>\n"})
+    ws = scan([str(root / "src")], {})
+    started = time.monotonic()
+    model = load(str(root / "src/pkg/launch/many.launch.xml"), ws, {}, {})
+    assert time.monotonic() - started < 10
+    assert len(model.nodes) == 700
+    assert [d.code for d in model.diagnostics] == ["LAUNCH_PY_BUDGET"]
+    assert "parameter entries" in model.diagnostics[0].message
