@@ -41,3 +41,21 @@ def test_set_parameters_between_many_nodes_are_bounded(write_tree) -> None:
     assert len(model.nodes) == 700
     assert [d.code for d in model.diagnostics] == ["LAUNCH_PY_BUDGET"]
     assert "parameter entries" in model.diagnostics[0].message
+
+
+def test_a_query_whose_results_grow_without_bound_is_a_query_limit() -> None:
+    from haros_arch import query
+    from haros_arch.model import Model
+    from haros_arch.query.errors import QueryLimitError
+
+    items = "[" + ",".join(str(i) for i in range(100)) + "]"
+    doubled = ", ".join(f"a{i} = a{i - 1} + a{i - 1}" for i in range(1, 16))
+    text = (f"for x in {items}, y in {items}, z in {items} "
+            f"let a0 = str(x) + 'abcdefg', {doubled} return a15")  # 10**6 results of 0.5 MB
+    started = time.monotonic()
+    with pytest.raises(QueryLimitError, match="results and the strings it builds"):
+        query.search(text, query.model_scope(Model("m")))
+    assert time.monotonic() - started < 10
+    # a query that returns a lot of small results is not refused
+    assert len(query.search(f"for x in {items}, y in {items} return str(x) + str(y)",
+                            query.model_scope(Model("m")))) == 10_000
