@@ -31,7 +31,7 @@ from .listops import split_list
 from .targets import Install, Program, Registration, Target
 
 _VAR_REF = re.compile(r"\$(ENV|CACHE)?\{([^${}]*)\}")
-MAX_STEPS = 200_000
+MAX_STEPS = 50_000  # commands and if / elseif tests; real packages take under 1,000
 MAX_LOOP = 10_000
 MAX_DEPTH = 64
 MAX_BLOCK_DEPTH = 200  # if / foreach / while blocks inside each other
@@ -219,13 +219,17 @@ class Interpreter:
         while index < len(commands):
             index = self.step(commands, index)
 
-    def step(self, commands: list[Invocation], index: int) -> int:
+    def charge(self, command: Invocation) -> None:
+        """One step of work (a command, or an ``elseif`` test) against ``MAX_STEPS``."""
         self.steps += 1
-        command = commands[index]
-        self.current = command
         if self.steps > MAX_STEPS:
             self.limit(command, f"more than {MAX_STEPS} commands evaluated")
             raise _Stop
+
+    def step(self, commands: list[Invocation], index: int) -> int:
+        command = commands[index]
+        self.current = command
+        self.charge(command)
         name = command.name
         block = _BLOCKS.get(name)
         if block is not None:
@@ -302,6 +306,8 @@ class Interpreter:
                 if head.name == "else":
                     self.run(commands[start + 1:stop])
                     break
+                if number:  # an elseif's test is work too (the if's own is its step)
+                    self.charge(head)
                 decided = self.evaluate(self.arguments(head.args))
                 if decided is None:
                     text = " ".join(a.text for a in head.args)
