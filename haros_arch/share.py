@@ -276,8 +276,8 @@ def _from_setup_py(package: Package, workspace: Workspace, path: str,
     root = os.path.realpath(package.root)
     for entry in data_files:
         if not (isinstance(entry, (list, tuple)) and len(entry) == 2
-                and isinstance(entry[1], (list, tuple))):
-            continue
+                and isinstance(entry[0], str) and isinstance(entry[1], (list, tuple))):
+            continue  # a destination or a file list not known statically
         sub = _share_sub(entry[0], package.name)
         if sub is None:
             continue
