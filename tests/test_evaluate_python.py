@@ -90,33 +90,35 @@ def _launch(tmp_path, name: str, text: str):
     return model
 
 
-@pytest.mark.parametrize("case", sorted(HOSTILE))
-def test_ros1_eval_gives_a_diagnostic(tmp_path, case: str) -> None:
-    text = (f'<launch><arg name="v" value="$(eval {HOSTILE[case]})"/>'
+def _ros1_eval(expression_text: str) -> str:
+    return (f'<launch><arg name="v" value="$(eval {expression_text})"/>'
             '<node pkg="pkg" type="n" name="n"><param name="p" value="$(arg v)"/></node>'
-            '</launch>').replace(">>", "&gt;&gt;")
-    text = text.replace("<<", "&lt;&lt;")
-    model = _launch(tmp_path, "a.launch", text)
-    assert model.diagnostics
+            '</launch>')
 
 
-@pytest.mark.parametrize("case", sorted(HOSTILE))
-def test_ros2_xml_eval_gives_a_diagnostic(tmp_path, case: str) -> None:
-    expression_text = HOSTILE[case].replace("<<", "&lt;&lt;").replace('"', "&quot;")
-    text = (f'<launch><let name="v" value="$(eval &quot;{expression_text}&quot;)"/>'
+def _ros2_eval(expression_text: str) -> str:
+    return (f'<launch><let name="v" value="$(eval &quot;{expression_text}&quot;)"/>'
             '<node pkg="pkg" exec="n" name="$(var v)"/></launch>')
-    model = _launch(tmp_path, "a.launch.xml", text)
-    assert model.diagnostics and all(len(str(n.name)) < 1000 for n in model.nodes)
 
 
-@pytest.mark.parametrize("case", sorted(HOSTILE))
-def test_ros2_python_launch_gives_a_diagnostic(tmp_path, case: str) -> None:
-    text = ("from launch import LaunchDescription\n"
+def _ros2_python(expression_text: str) -> str:
+    return ("from launch import LaunchDescription\n"
             "from launch_ros.actions import Node\n\n"
             "def generate_launch_description():\n"
-            f"    x = str({HOSTILE[case]})\n"
+            f"    x = str({expression_text})\n"
             "    return LaunchDescription([Node(package='pkg', executable='n', name=x)])\n")
-    model = _launch(tmp_path, "a_launch.py", text)
+
+
+LAUNCH_FILES = {"a.launch": _ros1_eval, "a.launch.xml": _ros2_eval, "a_launch.py": _ros2_python}
+
+
+@pytest.mark.parametrize("case", sorted(HOSTILE))
+@pytest.mark.parametrize("name", sorted(LAUNCH_FILES))
+def test_launch_files_give_a_diagnostic(tmp_path, name: str, case: str) -> None:
+    text = HOSTILE[case]
+    if name != "a_launch.py":  # in XML
+        text = text.replace("<<", "&lt;&lt;").replace('"', "&quot;")
+    model = _launch(tmp_path, name, LAUNCH_FILES[name](text))
     assert model.diagnostics and all(len(str(n.name)) < 1000 for n in model.nodes)
 
 
