@@ -31,6 +31,8 @@ HOSTILE = {
     "f-string width": "f'{1:{10**10}}'",
     "shift": "1 << 10**9",
     "zfill": "'1'.zfill(10**10)",
+    "sorted shared structure": "len(sorted([[[1] * 300] * 300] * 300))",
+    "count in a shared structure": "([[[1] * 300] * 300] * 300).count([[1] * 300] * 300)",
 }
 
 
@@ -149,3 +151,15 @@ def test_python_node_reader_keeps_the_name_unknown(tmp_path, case: str) -> None:
     assert time.monotonic() - started < 10
     assert len(result.calls) == 1 and str(result.calls[0].name).startswith("t")
     assert len(str(result.calls[0].name)) < 1000
+
+
+def test_python_launch_parameter_of_a_shared_structure_is_bounded(tmp_path) -> None:
+    # 27 million items behind 900 references: what reads the parameters would walk them all
+    text = ("from launch import LaunchDescription\n"
+            "from launch_ros.actions import Node\n\n"
+            "def generate_launch_description():\n"
+            "    c = [[[1] * 300] * 300] * 300\n"
+            "    return LaunchDescription([Node(package='pkg', executable='n', name='n',\n"
+            "                                   parameters=[{'p': c}])])\n")
+    model = _launch(tmp_path, "a_launch.py", text)
+    assert any("steps" in d.message for d in model.diagnostics)

@@ -177,12 +177,24 @@ def allowed_methods(owner: Any, mutate: bool = False) -> frozenset[str]:
     return frozenset()
 
 
-def method_cost(owner: Any, args: list[Any]) -> int:
-    """The steps a method call takes: the length of its owner (and of a set's arguments)."""
-    cost = _length(owner)
-    if isinstance(owner, (set, frozenset)):
-        cost += sum(_length(a) for a in args)
-    return cost
+def walk_cost(value: Any, limits: Limits = DEFAULT) -> int:
+    """The steps a function that walks ``value`` may take: a container by its nested
+    size, shared parts each time (``[[[1] * 300] * 300] * 300`` is 27 million items)."""
+    if isinstance(value, (list, tuple, dict, set, frozenset)):
+        return budget.item_count(value, limits.steps)
+    return 1 + (len(value) // 64 if isinstance(value, (str, bytes)) else 0)
+
+
+def make_cost(value: Any) -> int:
+    """The steps making ``value`` took: its items, or its characters / 64."""
+    if isinstance(value, (list, tuple, dict, set, frozenset)):
+        return len(value)
+    return len(value) // 64 if isinstance(value, (str, bytes)) else 0
+
+
+def method_cost(owner: Any, args: list[Any], limits: Limits = DEFAULT) -> int:
+    """The steps a method call takes: its owner and arguments walked."""
+    return walk_cost(owner, limits) + sum(walk_cost(a, limits) for a in args)
 
 
 def call_method(owner: Any, name: str, args: list[Any], kwargs: Mapping[str, Any] | None = None,

@@ -202,7 +202,8 @@ class _Interpreter:
     def eval_BinOp(self, node: ast.BinOp) -> Any:
         left, right = self.eval(node.left), self.eval(node.right)
         self.known(left, right)
-        return self.guard(lambda: ops.binary(type(node.op), left, right, self.limits))
+        return self.made(self.guard(
+            lambda: ops.binary(type(node.op), left, right, self.limits)))
 
     def eval_Compare(self, node: ast.Compare) -> Any:
         left = self.eval(node.left)
@@ -259,10 +260,16 @@ class _Interpreter:
                                 "unsupported"))
         args = [self.eval(a) for a in node.args]
         kwargs = {str(k.arg): self.eval(k.value) for k in node.keywords}
-        for arg in (*args, *kwargs.values()):
-            self.step(len(arg) if isinstance(arg, ops.SIZED) else 1)
         self.known(*args, *kwargs.values())
-        return self.guard(lambda: ops.call_builtin(target.call, args, kwargs, self.limits))
+        for arg in (*args, *kwargs.values()):  # what the function may walk
+            self.step(ops.walk_cost(arg, self.limits))
+        return self.made(self.guard(
+            lambda: ops.call_builtin(target.call, args, kwargs, self.limits)))
+
+    def made(self, value: Any) -> Any:
+        """Charge a value just made by its size (items, or characters / 64)."""
+        self.step(ops.make_cost(value))
+        return value
 
     def is_function(self, dotted: str | None) -> bool:
         if dotted is None or "__" in dotted:
@@ -280,9 +287,9 @@ class _Interpreter:
         args = [self.eval(a) for a in node.args]
         kwargs = {str(k.arg): self.eval(k.value) for k in node.keywords}
         self.known(owner, *args, *kwargs.values())
-        self.step(ops.method_cost(owner, args))
-        return self.guard(lambda: ops.call_method(owner, func.attr, args, kwargs, self.limits,
-                                                  self.mutate))
+        self.step(ops.method_cost(owner, args, self.limits))
+        return self.made(self.guard(lambda: ops.call_method(
+            owner, func.attr, args, kwargs, self.limits, self.mutate)))
 
     # -- comprehensions --------------------------------------------------------------------
     def comprehension(self, generators: list[ast.comprehension],

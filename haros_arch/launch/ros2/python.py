@@ -22,7 +22,7 @@ from typing import Any
 
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
-from ...evaluate import syntax
+from ...evaluate import budget, syntax
 from ...model.location import Location
 from ...model.values import Unknown
 from ...workspace import Workspace
@@ -132,6 +132,9 @@ class Interpreter(Expressions):
             return [value]
         if not isinstance(value, (list, tuple)):
             self.unsupported(node, "launch description is not known statically")
+            return []
+        if budget.item_count(value, MAX_SIZE) > MAX_SIZE:
+            self.unsupported(node, f"launch description of more than {MAX_SIZE} items")
             return []
         out: list[e.Action] = []
         for item in value:
@@ -308,13 +311,22 @@ class Interpreter(Expressions):
             short = name.rsplit(".", 1)[-1]
             handler = self.api.get(short)
             if handler is not None and (_known_module(name) or short in self.builtins):
+                self.charge_arguments([*args, *kwargs.values()])
                 return handler(self, args, kwargs, node)
             return self.unsupported(node, f"call to {name} is not interpreted (never run)")
         if isinstance(func, _Bound):
+            self.charge_arguments([func.owner, *args, *kwargs.values()])
             return func.call(self, args, kwargs, node)
         if isinstance(func, Unknown) and func.origin.startswith("class "):
             return self.unsupported(node, f"call to {func.origin}")
         return self.unsupported(node, "call to a value that is not known statically")
+
+    def charge_arguments(self, values: list[Any]) -> None:
+        """What a builder, builtin or method will walk: containers by their nested size,
+        shared parts each time (``[[[1] * 300] * 300] * 300`` is 27 million items)."""
+        for value in values:
+            if isinstance(value, (list, tuple, dict)):
+                self.tick(budget.item_count(value, MAX_STEPS))
 
     def call_function(self, func: Func, args: list[Any], kwargs: dict[str, Any],
                       node: ast.AST) -> Any:
