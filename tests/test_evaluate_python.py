@@ -33,6 +33,8 @@ HOSTILE = {
     "zfill": "'1'.zfill(10**10)",
     "sorted shared structure": "len(sorted([[[1] * 300] * 300] * 300))",
     "count in a shared structure": "([[[1] * 300] * 300] * 300).count([[1] * 300] * 300)",
+    "hash of a shared tuple": "len({(((((1,) * 30,) * 30,) * 30,) * 30,) * 30: 1})",
+    "missing key of a shared tuple": "{1: 2}[(((((1,) * 30,) * 30,) * 30,) * 30,) * 30]",
 }
 
 
@@ -57,6 +59,12 @@ def test_launch_eval_refuses_double_underscores_anywhere() -> None:
     assert core.evaluate("'a__b'.upper()") == "A__B"
     result = expression.evaluate("'a__b'.upper()")
     assert isinstance(result, core.Unknown) and "double underscore" in result.reason
+
+
+def test_error_reasons_stay_short() -> None:
+    result = core.evaluate("{1: 2}[('x' * 1000,) * 100]")
+    assert isinstance(result, core.Unknown) and result.kind == "error"
+    assert len(result.reason) < 300
 
 
 def test_core_still_computes_what_launch_files_write() -> None:

@@ -37,6 +37,14 @@ DEFAULT = Limits()
 SIZED = (str, bytes, list, tuple, dict, set, frozenset)
 
 
+def error_text(err: BaseException) -> str:
+    """An error of Python's as a short reason; a ``KeyError`` never prints its key (the
+    repr of a key shared a million times over is a string of that size)."""
+    if isinstance(err, KeyError):
+        return "KeyError: the key is not there"
+    return f"{type(err).__name__}: {str(err)[:200]}"
+
+
 def guarded(action: Callable[[], Any]) -> Any:
     """``action()``, with Python's own errors turned into ``Refused(..., "error")``."""
     try:
@@ -44,7 +52,7 @@ def guarded(action: Callable[[], Any]) -> Any:
     except Refused:
         raise
     except (ArithmeticError, TypeError, ValueError, LookupError, AttributeError) as err:
-        raise Refused(f"{type(err).__name__}: {err}", "error") from None
+        raise Refused(error_text(err), "error") from None
 
 
 def checked(value: Any, limits: Limits = DEFAULT) -> Any:

@@ -155,6 +155,7 @@ class _Interpreter:
     def eval_Set(self, node: ast.Set) -> Any:
         items = [self.eval(e) for e in node.elts]
         self.known(*items)
+        self.step(ops.walk_cost(items, self.limits))  # each item hashed
         return self.guard(lambda: set(items))
 
     def eval_Dict(self, node: ast.Dict) -> Any:
@@ -163,6 +164,7 @@ class _Interpreter:
         keys = [self.eval(k) for k in node.keys if k is not None]
         values = [self.eval(v) for v in node.values]
         self.known(*keys)
+        self.step(ops.walk_cost(keys, self.limits))  # each key hashed
         return self.guard(lambda: dict(zip(keys, values, strict=True)))
 
     def eval_JoinedStr(self, node: ast.JoinedStr) -> Any:
@@ -222,6 +224,7 @@ class _Interpreter:
         test = self.eval(node.test)
         if isinstance(test, Unknown):
             body, orelse = self.eval(node.body), self.eval(node.orelse)
+            self.step(ops.compare_cost(body, orelse, self.limits))
             same = not isinstance(body, Unknown) and type(body) is type(orelse) \
                 and self.guard(lambda: body == orelse)
             return body if same else test
@@ -232,7 +235,8 @@ class _Interpreter:
         value = self.eval(node.value)
         index = self.eval(node.slice)
         self.known(value, index)
-        return self.guard(lambda: ops.subscript(value, index))
+        self.step(ops.walk_cost(index, self.limits))  # a key is hashed
+        return self.made(self.guard(lambda: ops.subscript(value, index)))
 
     def eval_Slice(self, node: ast.Slice) -> Any:
         parts = [self.eval(p) if p is not None else None
@@ -343,6 +347,7 @@ class _Interpreter:
 
     def eval_SetComp(self, node: ast.SetComp) -> Any:
         items = self.eval_ListComp(node)
+        self.step(ops.walk_cost(items, self.limits))
         return self.guard(lambda: set(items))
 
     def eval_DictComp(self, node: ast.DictComp) -> Any:
@@ -350,6 +355,7 @@ class _Interpreter:
         self.comprehension(node.generators, lambda: self.append(
             out, (self.eval(node.key), self.eval(node.value))))
         self.known(*(pair[0] for pair in out))
+        self.step(ops.walk_cost([pair[0] for pair in out], self.limits))
         return self.guard(lambda: dict(out))
 
     def append(self, out: list[object], item: object) -> None:
@@ -377,7 +383,7 @@ class _Interpreter:
                 "error" if err.kind == "error" else "limit")
             raise _Stop(Unknown(err.reason, kind)) from None
         except (ArithmeticError, TypeError, ValueError, LookupError, AttributeError) as err:
-            raise _Stop(Unknown(f"{type(err).__name__}: {err}", "error")) from None
+            raise _Stop(Unknown(ops.error_text(err), "error")) from None
 
     def run(self, node: ast.AST) -> object:
         """``node``'s value, or the ``Unknown`` that stopped it (the first bound reached is

@@ -121,6 +121,7 @@ class Expressions:
                     out.update(merged)
                 continue
             k = self.eval(key, env)
+            self.tick(ops.walk_cost(k, LIMITS))  # the key is hashed
             out[_hashable(k)] = self.eval(value, env)
         return out
 
@@ -234,6 +235,7 @@ class Expressions:
         if isinstance(value, Context) and isinstance(node.value, ast.Attribute):
             return value.perform((e.Var(_text_of(key)),))
         if isinstance(key, slice) or isinstance(value, (dict, list, tuple, str)):
+            self.tick(ops.walk_cost(key, LIMITS))  # a key is hashed
             try:
                 return value[_hashable(key)]
             except (KeyError, IndexError, TypeError):
