@@ -61,6 +61,11 @@ def test_launch_eval_refuses_double_underscores_anywhere() -> None:
     assert isinstance(result, core.Unknown) and "double underscore" in result.reason
 
 
+def test_a_nul_character_is_not_python() -> None:
+    result = core.evaluate("1\x00+2")
+    assert isinstance(result, core.Unknown) and result.kind == "syntax"
+
+
 def test_error_reasons_stay_short() -> None:
     result = core.evaluate("{1: 2}[('x' * 1000,) * 100]")
     assert isinstance(result, core.Unknown) and result.kind == "error"

@@ -436,7 +436,9 @@ def evaluate(text: str, names: Callable[[str], object] | None = None,
         tree = syntax.parse(text.strip(), mode="eval")
     except SyntaxError as err:
         return Unknown(f"not a Python expression: {err.msg}", "syntax")
-    except (RecursionError, MemoryError, ValueError):
+    except ValueError as err:  # a NUL character
+        return Unknown(f"not a Python expression: {str(err)[:100]}", "syntax")
+    except (RecursionError, MemoryError):
         return Unknown("expression too deeply nested", "limit")
     return evaluate_node(tree, names, functions, limits)
 
