@@ -176,3 +176,18 @@ def test_python_launch_parameter_of_a_shared_structure_is_bounded(tmp_path) -> N
             "                                   parameters=[{'p': c}])])\n")
     model = _launch(tmp_path, "a_launch.py", text)
     assert any("steps" in d.message for d in model.diagnostics)
+
+
+def test_python_node_reader_folds_constants_through_the_evaluator(tmp_path) -> None:
+    from haros_arch.extract.python import extract_python
+
+    text = ("import rospy\nfrom std_msgs.msg import String\nSIM = False\nN = 3\n"
+            "rospy.init_node('n')\n"
+            "rospy.Publisher('/sim' if SIM else '/real', String, queue_size=1)\n"
+            "rospy.Publisher('/many' if N >= 2 and not SIM else '/one', String, queue_size=-N)\n"
+            "rospy.Publisher('/x' if rospy.get_param('~a') else '/y', String, queue_size=1)\n")
+    ws = _write(tmp_path, {"src/pkg/package.xml": package_xml("pkg"),
+                           "src/pkg/scripts/n.py": text})
+    result = extract_python([str(tmp_path / "src/pkg/scripts/n.py")], ws, package="pkg")
+    names = [str(c.name) for c in result.calls if c.kind == "publish"]
+    assert names == ["/real", "/many", "?"]

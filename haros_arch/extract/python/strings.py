@@ -35,7 +35,7 @@ def percent(template: Value, items: tuple[object, ...]) -> Value:
     return Value.of(*parts)
 
 
-def _plain(value: object) -> object:
+def plain(value: object) -> object:
     """A value of the reader as the Python value the one evaluator computes with; raises
     ``LookupError`` when some part is not known."""
     if isinstance(value, Value):
@@ -43,17 +43,17 @@ def _plain(value: object) -> object:
             raise LookupError("not known")
         return value.literal
     if isinstance(value, Seq):
-        return [_plain(item) for item in value.items]
+        return [plain(item) for item in value.items]
     if isinstance(value, bool | int | float | None):
         return value
     raise LookupError("not known")
 
 
-def _from_plain(value: object) -> object:
+def from_plain(value: object) -> object:
     if isinstance(value, str):
         return Value.of(value)
     if isinstance(value, list | tuple):
-        return Seq(tuple(_from_plain(item) for item in value))
+        return Seq(tuple(from_plain(item) for item in value))
     if isinstance(value, bool | int | float | None):
         return value
     return Unknown(type(value).__name__)
@@ -63,13 +63,13 @@ def string_method(base: Value, method: str, args: list[object]) -> object:
     """``base.method(*args)``: by the one evaluator when everything is known; ``format``
     and ``join`` keep their known parts when some are not."""
     try:
-        known = [_plain(a) for a in args]
-        text = _plain(base)
+        known = [plain(a) for a in args]
+        text = plain(base)
     except LookupError:
         pass
     else:
         try:
-            return _from_plain(ops.call_method(text, method, known))
+            return from_plain(ops.call_method(text, method, known))
         except ops.Refused as err:
             return Unknown(f"str.{method}: {err.reason}")
     if method == "format" and base.is_known:

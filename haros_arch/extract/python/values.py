@@ -19,6 +19,7 @@ import ast
 
 from ...evaluate import budget
 from ...evaluate import operations as ops
+from ...evaluate.python import BUILTINS, evaluate_node
 from ...model.values import Unknown, Value
 from . import rclpy, rospy
 from .calls import MAX_CALL_DEPTH, argument, unknown_params
@@ -41,7 +42,7 @@ from .objects import (
 )
 from .qos import QoSProfiles
 from .scopes import MAX_UNROLL
-from .strings import number, percent, string_method
+from .strings import from_plain, number, percent, plain, string_method
 
 __all__ = ["MAX_CALL_DEPTH", "MAX_UNROLL", "NAMESPACE", "Evaluator", "argument",
            "unknown_params"]
@@ -61,9 +62,24 @@ class Evaluator(Instances, QoSProfiles):
         self.depth += 1
         try:
             handler = getattr(self, "_" + type(expr).__name__, None)
-            return handler(expr, frame) if handler else Unknown(type(expr).__name__)
+            return handler(expr, frame) if handler else self.folded(expr, frame)
         finally:
             self.depth -= 1
+
+    def folded(self, expr: ast.expr, frame: Frame) -> object:
+        """A construct this reader has no handler for (a comparison, ``not``, a
+        conditional expression, a dict, ...): the one evaluator computes it when every
+        name in it holds a known plain value; unknown otherwise."""
+
+        def names(name: str) -> object:
+            try:
+                return plain(self.name(name, frame))
+            except LookupError:
+                return Unknown(name)
+
+        result = evaluate_node(expr, names, BUILTINS)
+        return Unknown(type(expr).__name__) if isinstance(result, Unknown) else \
+            from_plain(result)
 
     def _Constant(self, expr: ast.Constant, frame: Frame) -> object:
         if isinstance(expr.value, str):
