@@ -1,11 +1,12 @@
-"""What the launch and setup.py readers make of real workspaces, in two checkouts, compared.
+"""The launch, setup.py and Python node readers of two checkouts on real workspaces, compared.
 
     .venv/bin/python bench/readers_differential.py OLD_CHECKOUT NEW_CHECKOUT ROOT [ROOT ...]
 
 For every launch file under each ROOT (``*.launch``, ``*.launch.xml``, ``*launch.py``) and
 every package with a setup.py: the nodes (name, package, executable, namespace, remaps),
 the parameters with their values and the diagnostics of the launch model, the
-``console_scripts`` entry points and the share map. Each checkout runs in its own process
+``console_scripts`` entry points and the share map; the calls the Python node reader finds
+in every ``.py`` file that uses rospy or rclpy. Each checkout runs in its own process
 (its own ``haros_arch`` first on the path); the script prints how many records each made
 and every record that differs, field by field. Made to check that a refactoring of the
 readers (the one safe evaluator, #20) changes nothing on real code.
@@ -25,6 +26,7 @@ from haros_arch.workspace import scan
 from haros_arch.launch import load
 from haros_arch import pysetup
 from haros_arch.share import share_map
+from haros_arch.extract.python import extract_python
 
 out = open(sys.argv[1], "w")
 for root in sys.argv[2:]:
@@ -51,6 +53,21 @@ for root in sys.argv[2:]:
                                 for d in m.diagnostics]}
         except Exception as err:  # a bug of one side: shown as a difference
             record = {"file": path, "error": f"{type(err).__name__}: {err}"}
+        out.write(json.dumps(record, default=str) + "\n")
+    for path in sorted(glob.glob(f"{root}/**/*.py", recursive=True)):
+        try:
+            with open(path, errors="replace") as handle:
+                text = handle.read(300_000)
+        except OSError:
+            continue
+        if "rospy" not in text and "rclpy" not in text:
+            continue
+        package = ws.package_of(path)
+        try:
+            found = extract_python([path], ws, package=package.name if package else "x")
+            record = {"node": path, "calls": [f"{c.kind}|{c.name}|{c.type}" for c in found.calls]}
+        except Exception as err:
+            record = {"node": path, "error": f"{type(err).__name__}: {err}"}
         out.write(json.dumps(record, default=str) + "\n")
 '''
 
@@ -85,7 +102,8 @@ def main() -> int:
             if value != after.get(key):
                 print(f"  {key}: old {str(value)[:300]}\n  {key}: new {str(after.get(key))[:300]}")
     print(f"records: old {len(old)}, new {len(new)} (launch files {kinds.get('file', 0)}, "
-          f"setup.py packages {kinds.get('pkg', 0)}); differing: {differ}")
+          f"setup.py packages {kinds.get('pkg', 0)}, Python nodes {kinds.get('node', 0)}); "
+          f"differing: {differ}")
     return 0
 
 
