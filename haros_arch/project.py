@@ -16,6 +16,7 @@ from typing import Any
 import yaml
 from yaml.nodes import MappingNode, Node, ScalarNode, SequenceNode
 
+from . import safe_yaml
 from .files import read_text
 from .model.diagnostic import SEVERITY_RANK
 from .model.location import Location
@@ -156,7 +157,7 @@ def load(path: str) -> Project:
     if text is None:
         raise ProjectError(path, 0, 0, problems[0].message if problems else "cannot read")
     try:
-        document = yaml.compose(text, Loader=yaml.SafeLoader)
+        document = safe_yaml.compose(text)  # bounded: nesting, aliases, flow brackets
     except yaml.MarkedYAMLError as err:
         mark = err.problem_mark or err.context_mark
         line, col = (mark.line + 1, mark.column + 1) if mark else (0, 0)

@@ -59,3 +59,30 @@ def test_a_query_whose_results_grow_without_bound_is_a_query_limit() -> None:
     # a query that returns a lot of small results is not refused
     assert len(query.search(f"for x in {items}, y in {items} return str(x) + str(y)",
                             query.model_scope(Model("m")))) == 10_000
+
+
+def test_project_file_of_opening_brackets_is_refused_at_once(tmp_path) -> None:
+    # found by scripts/fuzz: the project reader used the YAML reader without its bounds
+    from haros_arch.project import ProjectError
+    from haros_arch.project import load as load_project
+
+    path = tmp_path / "project.yaml"
+    path.write_text("[" * 200_000)
+    started = time.monotonic()
+    with pytest.raises(ProjectError, match="invalid YAML"):
+        load_project(str(path))
+    assert time.monotonic() - started < 5
+
+
+def test_python_node_reader_is_linear_in_a_chain_of_calls(write_tree) -> None:
+    # found by scripts/fuzz: a.b().c().d()... evaluated each owner twice (2 ** length)
+    from haros_arch.extract.python import extract_python
+
+    text = ("import rospy\nrospy.init_node('n')\nrospy.spin()" + ".spin()" * 58 + "\n"
+            "rospy.Publisher('t', rospy.AnyMsg, queue_size=1)\n")
+    folder = write_tree({"pkg/package.xml": package_xml("pkg"), "pkg/scripts/n.py": text})
+    started = time.monotonic()
+    result = extract_python([str(folder / "pkg/scripts/n.py")], scan([str(folder)]),
+                            package="pkg")
+    assert time.monotonic() - started < 5
+    assert [str(c.name) for c in result.calls if c.kind == "publish"] == ["t"]

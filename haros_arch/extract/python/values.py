@@ -185,7 +185,12 @@ class Evaluator(Instances, QoSProfiles):
         return Unknown(attr)
 
     def _Call(self, expr: ast.Call, frame: Frame) -> object:
-        func = self.callee(expr.func, frame)
+        base: object = None
+        if isinstance(expr.func, ast.Attribute) and expr.func.attr != "__init__":
+            base = self.eval(expr.func.value, frame)  # once: a.b().c().d() is linear
+            func = self.attribute(base, expr.func.attr, frame)
+        else:
+            func = self.callee(expr.func, frame)
         if isinstance(func, ParamObject):  # get_parameter_value()
             return func
         if isinstance(func, Ref):
@@ -196,11 +201,9 @@ class Evaluator(Instances, QoSProfiles):
             return self.construct(func, expr, frame)
         if isinstance(func, FunctionInfo | BoundMethod):
             return self.returned(func, expr, frame)
-        if isinstance(expr.func, ast.Attribute) and isinstance(func, Unknown):
-            base = self.eval(expr.func.value, frame)
-            if isinstance(base, Value):
-                return string_method(base, expr.func.attr, [
-                    self.eval(a, frame) for a in expr.args])
+        if isinstance(expr.func, ast.Attribute) and isinstance(func, Unknown) \
+                and isinstance(base, Value):
+            return string_method(base, expr.func.attr, [self.eval(a, frame) for a in expr.args])
         if isinstance(expr.func, ast.Name) and expr.func.id in ("str", "int", "float") \
                 and len(expr.args) == 1:
             value = self.eval(expr.args[0], frame)
