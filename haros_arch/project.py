@@ -162,6 +162,9 @@ def load(path: str) -> Project:
         mark = err.problem_mark or err.context_mark
         line, col = (mark.line + 1, mark.column + 1) if mark else (0, 0)
         raise ProjectError(path, line, col, f"invalid YAML: {err.problem or err}") from None
+    except safe_yaml.YAMLLimit as err:
+        raise ProjectError(path, 0, 0, f"the YAML is nested too deeply or too large to be a "
+                                       f"project file ({err})") from None
     except (yaml.YAMLError, ValueError) as err:  # ValueError: "%YAML 99999...9"
         raise ProjectError(path, 0, 0, f"invalid YAML: {err}") from None
     except RecursionError:
