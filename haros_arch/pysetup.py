@@ -1,7 +1,7 @@
 """ament_python packages: ``console_scripts`` entry points of setup.py / setup.cfg.
 
 setup.py is read with ``ast`` and never run: its module-level statements go through the
-one safe evaluator (``evaluate.python.run_module``) with setup.py's table of functions
+one safe evaluator (``evaluate.module.run_module``) with setup.py's table of functions
 (``setup_functions``: builtins, ``os.path`` on text, ``glob`` inside the package), so
 ``package_name = 'demo'``, ``+``, ``%``, f-strings, ``str.format`` and
 ``data_files.append(...)`` are followed; anything else is unknown and reported. Each
@@ -23,7 +23,8 @@ from typing import Any
 from . import diagnostics as diag
 from .diagnostics import Diagnostic
 from .evaluate import syntax
-from .evaluate.python import BUILTINS, Module, run_module
+from .evaluate.module import Module, run_module
+from .evaluate.python import BUILTINS
 from .files import read_text
 from .model.location import Location
 from .model.source import Node, Package

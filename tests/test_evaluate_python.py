@@ -11,6 +11,7 @@ from conftest import package_xml
 
 from haros_arch import pysetup
 from haros_arch.evaluate import python as core
+from haros_arch.evaluate.module import run_module
 from haros_arch.launch import expression, load
 from haros_arch.workspace import scan
 
@@ -81,10 +82,10 @@ def test_core_still_computes_what_launch_files_write() -> None:
 
 def test_module_statements_keep_one_budget_per_file() -> None:
     text = "x = 'ab'\n" + "x = x + x\n" * 40 + "y = 'still read'\n"
-    module = core.run_module(ast.parse(text))
+    module = run_module(ast.parse(text))
     assert isinstance(module.names["x"], core.Unknown) and module.names["x"].kind == "limit"
     assert module.names["y"] == "still read"
-    steps = core.run_module(ast.parse("a = [0] * 1000\n" + "b = a == a\n" * 1000))
+    steps = run_module(ast.parse("a = [0] * 1000\n" + "b = a == a\n" * 1000))
     assert isinstance(steps.names["b"], core.Unknown)
 
 

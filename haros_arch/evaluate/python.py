@@ -18,7 +18,7 @@ text is refused (roslaunch's rule, kept for every ``$(eval)``). Three calls::
 
     evaluate(text, names, functions) -> object | Unknown       # one expression
     evaluate_node(node, names, functions) -> object | Unknown  # an already parsed one
-    run_module(tree, functions) -> Module                      # module-level statements
+    module.run_module(tree, functions) -> Module               # module-level statements
 
 Work is bounded per call (per file for ``run_module``): source length, AST node count and
 depth, evaluation steps, the length of strings and containers built, integer size.
@@ -28,7 +28,7 @@ from __future__ import annotations
 
 import ast
 from collections.abc import Callable, Iterable, Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Any
 
 from ..model.values import Unknown, UnknownKind
@@ -36,8 +36,8 @@ from . import operations as ops
 from . import syntax
 from .operations import BUILTINS, MATH, Limits, Refused
 
-__all__ = ["BUILTINS", "MATH", "Limits", "Module", "Unknown", "evaluate", "evaluate_node",
-           "is_unknown", "names_from", "run_module"]
+__all__ = ["BUILTINS", "MATH", "Limits", "Unknown", "evaluate", "evaluate_node",
+           "is_unknown", "names_from"]
 
 def is_unknown(value: object) -> bool:
     return isinstance(value, Unknown)
@@ -452,84 +452,6 @@ def evaluate_node(node: ast.AST, names: Callable[[str], object] | None = None,
     if refused is not None:
         return refused
     return _Interpreter(names, BUILTINS if functions is None else functions, limits).run(node)
-
-
-# -- module-level statements -----------------------------------------------------------------
-FILE_LIMITS = Limits(text=1024 * 1024, nodes=200_000, depth=100)
-
-
-@dataclass
-class Module:
-    """The module-level names of a file and the calls it makes at module level."""
-
-    names: dict[str, object] = field(default_factory=dict)
-    aliases: dict[str, str] = field(default_factory=dict)  # local name -> dotted origin
-    calls: list[ast.Call] = field(default_factory=list)
-    interpreter: _Interpreter | None = None
-
-    def value(self, node: ast.AST) -> object:
-        """The value of an expression of this module (after its statements ran)."""
-        if self.interpreter is None:
-            return Unknown("no module", "undefined")
-        return self.interpreter.run(node)
-
-    @property
-    def limited(self) -> tuple[Unknown, ast.AST] | None:
-        """The first work bound reached, and where: the values after it are unknown."""
-        return self.interpreter.limited if self.interpreter is not None else None
-
-
-def run_module(tree: ast.Module, functions: Mapping[str, Any] | None = None,
-               limits: Limits = FILE_LIMITS, mutate: bool = True,
-               calls: Iterable[str] = ()) -> Module:
-    """Run ``tree``'s module-level statements over known values: imports (as aliases),
-    assignments to names (``+=`` too), and calls of allowed functions and methods
-    (``files.append(...)``); an item of a list or tuple that cannot be known is an
-    ``Unknown`` item, the rest stays known. Every other statement is skipped: the names it
-    would set stay as they were. ``calls``: dotted names of calls to collect (``setup``)
-    from anywhere in the module, never run. One budget for the whole file."""
-    module = Module()
-    wanted = set(calls)
-    refused = _shape_ok(tree, limits)
-    module.interpreter = _Interpreter(None, {}, limits)
-    if refused is not None:
-        module.interpreter.limited = (refused, tree)
-        return module
-    interp = _Interpreter(module.names.__getitem__, functions or BUILTINS, limits, mutate,
-                          module.aliases, lenient=True)
-    module.interpreter = interp
-    for statement in tree.body:
-        for inner in ast.walk(statement):
-            if isinstance(inner, ast.Call) and _qualified(inner.func, module.aliases) in wanted:
-                module.calls.append(inner)
-        if isinstance(statement, ast.Import):
-            for alias in statement.names:
-                local = alias.asname or alias.name.split(".")[0]
-                module.aliases[local] = alias.name if alias.asname else local
-        elif isinstance(statement, ast.ImportFrom) and statement.module:
-            for alias in statement.names:
-                module.aliases[alias.asname or alias.name] = f"{statement.module}.{alias.name}"
-        elif isinstance(statement, ast.Assign) and len(statement.targets) == 1 \
-                and isinstance(statement.targets[0], ast.Name):
-            module.names[statement.targets[0].id] = interp.run(statement.value)
-        elif isinstance(statement, ast.AugAssign) and isinstance(statement.target, ast.Name):
-            combined = ast.BinOp(ast.Name(statement.target.id, ast.Load()), statement.op,
-                                 statement.value)
-            module.names[statement.target.id] = interp.run(combined)
-        elif isinstance(statement, ast.Expr) and isinstance(statement.value, ast.Call) \
-                and statement.value not in module.calls:
-            interp.run(statement.value)
-        if interp.steps > limits.steps:
-            break
-    return module
-
-
-def _qualified(node: ast.expr, aliases: Mapping[str, str]) -> str | None:
-    dotted = _dotted(node)
-    if dotted is None:
-        return None
-    head, dot, rest = dotted.partition(".")
-    return aliases.get(head, head) + dot + rest
 
 
 def names_from(mapping: Mapping[str, object]) -> Callable[[str], object]:
