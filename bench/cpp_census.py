@@ -11,9 +11,10 @@ clients, action servers and clients, parameter declarations, reads and writes; r
 rclcpp, actionlib, rclcpp_action, image_transport, message_filters forms), and whether
 the extraction (no cache, each translation unit parsed once) has a call of that kind
 within a line or two. Prints recall by call site per workspace and per kind, the misses
-grouped by cause (the unit's first clang error kind left after synthesis, or, in a unit
-without errors, the API form), the clang errors (at most 50 per file) per unit before
-and after the names clang did not know were declared (``CPP_NAMES_DECLARED``), and
+grouped by cause (the clang error left in the function that holds the site, else the
+API form, in a unit with errors elsewhere or in a clean one), the nodes complete and
+partial with what makes them partial, the clang errors (at most 50 per file) per unit
+before and after the names clang did not know were declared (``CPP_NAMES_DECLARED``), and
 the cold extraction time per unit. ``--misses N`` lists N missed sites per workspace;
 ``--no-synthesis`` turns the declaration of unknown names off; ``--timing`` first
 extracts the same units without it and prints the ratio of the two cold times. Times are
@@ -34,6 +35,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.dirname(HERE))
 
 from haros_arch import cmake  # noqa: E402
+from haros_arch.extract import completeness  # noqa: E402
 from haros_arch.extract.cpp import extract_cpp_nodes  # noqa: E402
 from haros_arch.workspace import scan  # noqa: E402
 
@@ -74,6 +76,7 @@ _DEFINITION = re.compile(r"^\s*(virtual\s+|static\s+|inline\s+)*[\w:<>,\s*&]+\s+
                          r"(create_publisher|declare_parameter|get_parameter)\w*\s*\(")
 _DECLARED = re.compile(r"(\d+) name\(s\) .* errors in this unit: (\d+) before, (\d+) after")
 _QUOTED = re.compile(r"'[^']*'")
+_SPAN = re.compile(r"\(lines (\d+)-(\d+)\)")
 
 
 def sites(path: str) -> list[tuple[int, str, str]]:
@@ -134,7 +137,13 @@ def census(spec: str, jobs: int, timing: bool) -> None:
     calls: dict[str, dict[int, set[str]]] = collections.defaultdict(
         lambda: collections.defaultdict(set))
     errors: dict[str, list[str]] = {}
+    spans: dict[str, list[tuple[int, int, str]]] = collections.defaultdict(list)
     for unit, result in zip(units, batch.results, strict=True):
+        for item in result.diagnostics:  # errors in a function that calls the API
+            span = _SPAN.search(item.message) if item.code == "CPP_ERROR_NEAR_CALL" else None
+            if span and item.location.file:
+                spans[item.location.file].append(
+                    (int(span.group(1)), int(span.group(2)), item.message.split(": ", 1)[-1]))
         for call in result.calls:
             if call.location.file:
                 calls[call.location.file][call.location.line].add(call.kind)
@@ -164,15 +173,43 @@ def census(spec: str, jobs: int, timing: bool) -> None:
             per_kind[category][0] += ok
             per_kind[category][1] += 1
             if not ok:
-                cause = (f"unit with errors: {_QUOTED.sub('…', unit_errors[0])[:70]}"
-                         if unit_errors else f"clean unit: {form}")
+                inside = [m for a, b, m in spans.get(rel, ()) if a <= line <= b]
+                if inside:
+                    cause = f"error in its function: {_QUOTED.sub('…', inside[0])[:70]}"
+                elif unit_errors:
+                    cause = f"errors only elsewhere in the unit: {form}"
+                else:
+                    cause = f"clean unit: {form}"
                 causes[cause] += 1
                 missed.append(f"{rel}:{line} {category} ({cause})")
+    by_unit = dict(zip(units, batch.results, strict=True))
+    states: collections.Counter[str] = collections.Counter()
+    hiding: collections.Counter[str] = collections.Counter()  # what makes nodes partial
+    for result in batch.results:
+        for item in result.diagnostics:
+            if item.code == "CPP_ERROR_NEAR_CALL":
+                hiding[_QUOTED.sub("…", item.message.split(": ", 1)[-1])[:80]] += 1
+            elif item.code == "CPP_CALL_MISSED":
+                hiding["call site with no call extracted"] += 1
+    for node in nodes:  # each node's completeness from the diagnostics of its units
+        found = [*batch.diagnostics, *(d for s in node.sources
+                                       for d in getattr(by_unit.get(
+                                           os.path.join(workspace.root, s)), "diagnostics", ()))]
+        node.completeness, node.completeness_reasons = "complete", []
+        completeness(node, found)
+        states[node.completeness] += 1
     hit = sum(v[0] for v in per_kind.values())
     total = sum(v[1] for v in per_kind.values())
     print(f"== {os.path.basename(root)}{':' + only if only else ''}: {len(nodes)} C++ nodes, "
           f"{len(units)} units; call sites {hit}/{total} = {100 * hit / max(total, 1):.0f}%")
     print("   by kind: " + ", ".join(f"{k} {v[0]}/{v[1]}" for k, v in sorted(per_kind.items())))
+    print("   nodes: " + ", ".join(f"{k} {v}" for k, v in sorted(states.items())))
+    for reason, count in hiding.most_common(8):
+        print(f"   partial {count:4}  {reason}")
+    failed = sum(any(d.code == "CPP_PARSE_FAILED" for d in r.diagnostics)
+                 for r in batch.results)
+    if failed:
+        print(f"   units libclang could not parse: {failed}")
     print(f"   clang errors: {before_after[0]} before synthesis in {before_after[2]} units, "
           f"{before_after[1]} after in {before_after[3]} units")
     print(f"   cold extraction {elapsed:.1f} s CPU, {1000 * elapsed / max(len(units), 1):.0f} ms "

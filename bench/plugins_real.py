@@ -1,7 +1,7 @@
 """Plugins on real workspaces: what hosts load and what it changes in the graph.
 
     .venv/bin/python bench/plugins_real.py WORKSPACE LAUNCH [LAUNCH ...]
-        [--arg NAME:=VALUE ...] [--jobs N] [--list]
+        [--arg NAME:=VALUE ...] [--jobs N] [--list] [--show PREFIX ...] [--never-read]
 
 Each LAUNCH (``pkg/path/in/package`` or a path) is one configuration. The pipeline runs
 twice over the same workspace, with and without plugin attachment, and prints per
@@ -10,7 +10,10 @@ plugins resolved (calls attached) and unresolved (PLUGIN_NOT_FOUND /
 PLUGIN_CLASS_UNKNOWN), the node instances plugins added (ros2_control controllers), the
 links added, and the parameters "set but never read" (set by launch, read by no link;
 in brackets those of node instances whose interface is complete) before and after.
-``--list`` prints the resolved plugins and the diagnostics.
+``--list`` prints the resolved plugins and the diagnostics; ``--show PREFIX`` the links
+(kind, name, type, file:line) of the node instances whose names start with PREFIX, with
+plugins; ``--never-read`` the parameters set but never read, with plugins, each with
+the file and line that sets it (to read against the sources).
 """
 
 from __future__ import annotations
@@ -67,6 +70,8 @@ def main() -> None:
     parser.add_argument("--arg", action="append", default=[])
     parser.add_argument("--jobs", type=int, default=1)
     parser.add_argument("--list", action="store_true")
+    parser.add_argument("--show", action="append", default=[])
+    parser.add_argument("--never-read", action="store_true")
     args = parser.parse_args()
     launch_args = dict(a.split(":=", 1) for a in args.arg)
     project = Project("plugins", os.path.join(args.workspace, "bench.yaml"),
@@ -94,6 +99,18 @@ def main() -> None:
             for found in unresolved:
                 print(f"   {found.code} {found.location.file}:{found.location.line} "
                       f"{found.message}")
+        for node in new.nodes:
+            if args.show and node.name.startswith(tuple(args.show)):
+                print(f"   node {node.name} ({node.node.name if node.node else 'unknown'}, "
+                      f"{node.completeness}, {node.origin})")
+                for link in sorted(node.links, key=lambda k: (k.kind, k.resource.name)):
+                    print(f"      {link.kind} {link.resource.name} {link.type} "
+                          f"{link.location.file}:{link.location.line}")
+        if args.never_read:
+            for param in new.parameters:
+                if param.set_by_launch and not param.is_read and "?" not in param.name:
+                    where = param.launch_location
+                    print(f"   never read {param.name} {where.file}:{where.line}")
 
 
 if __name__ == "__main__":

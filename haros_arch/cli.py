@@ -11,7 +11,7 @@ import json
 import os
 import sys
 from collections.abc import Sequence
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from rich.console import Console
 from rich.markup import escape
@@ -68,9 +68,21 @@ def _parser() -> argparse.ArgumentParser:
     query.add_argument("--format", choices=("text", "json"), default="text")
     _choice_options(query)
 
-    capture = sub.add_parser("capture", help="read a running ROS 1 master's graph (XML-RPC)")
+    capture = sub.add_parser("capture", help="read a running system's graph: a ROS 1 master "
+                                             "(XML-RPC), ROS 2 DDS discovery, or a bag")
     capture.add_argument("--master", default=os.environ.get("ROS_MASTER_URI",
                                                             "http://localhost:11311"))
+    source = capture.add_mutually_exclusive_group()
+    source.add_argument("--ros2", action="store_true",
+                        help="join the DDS domain and read ROS 2 discovery (needs the "
+                             "'live' extra)")
+    source.add_argument("--bag", metavar="FILE",
+                        help="read a recorded ROS 1 .bag or ROS 2 bag (folder, .db3 or "
+                             ".mcap; needs the 'live' extra)")
+    capture.add_argument("--domain", type=int, default=_domain_id(),
+                         help="DDS domain id for --ros2 (default: $ROS_DOMAIN_ID or 0)")
+    capture.add_argument("--seconds", type=float, default=3.0,
+                         help="how long --ros2 listens (default 3)")
     capture.add_argument("-o", "--output", help="write the JSON here (default: stdout)")
 
     compare = sub.add_parser("compare", help="precision and recall of a model against a "
@@ -79,12 +91,16 @@ def _parser() -> argparse.ArgumentParser:
     compare.add_argument("live", help="JSON from 'haros-arch capture'")
     compare.add_argument("--config", help="configuration name (default: the first)")
     compare.add_argument("--format", choices=("text", "json"), default="text")
+    compare.add_argument("--both", action="store_true",
+                         help="also list what is both in the model and live")
 
     report = sub.add_parser("report", help="write the interactive HTML report (one file)")
     report.add_argument("project", nargs="?", help=PROJECT_HELP)
     report.add_argument("--model", help="render this saved JSON model instead of extracting")
     report.add_argument("--workspace", help="folder the model's file paths are relative to")
     report.add_argument("-o", "--output", required=True, help="the HTML file to write")
+    report.add_argument("--live", metavar="LIVE",
+                        help="show this capture ('haros-arch capture') beside each graph")
     _run_options(report)
 
     launch = sub.add_parser("launch", help="nodes and parameters a ROS 1 or ROS 2 launch "
@@ -92,10 +108,13 @@ def _parser() -> argparse.ArgumentParser:
     launch.add_argument("file", nargs="+", metavar="FILE", help="a path, or PKG PATH/IN/PKG")
     launch.add_argument("--arg", action="append", default=[], metavar="NAME:=VALUE")
     launch.add_argument("--workspace", default=".", help="workspace folder (default: .)")
-    launch.add_argument("--format", choices=("text", "json"), default="text")
+    launch.add_argument("--format", choices=("text", "json", "xml", "yaml", "python"),
+                        default="text", help="text or json; with --flatten: xml (default), "
+                        "or yaml / python for a ROS 2 file")
     launch.add_argument("--flatten", action="store_true",
-                        help="write one roslaunch XML file with every include inlined and "
-                             "every argument and decided condition applied (ROS 1)")
+                        help="write one launch file with every include inlined and every "
+                             "argument and decided condition applied (ROS 1: roslaunch "
+                             "XML; ROS 2: XML, YAML or Python)")
     launch.add_argument("--tree", action="store_true",
                         help="show how the files make the nodes: includes with their "
                              "arguments, groups, remaps, conditions")
@@ -403,13 +422,25 @@ def cmd_diff(args: argparse.Namespace, out: Console, err: Console) -> int:
     return EXIT_FINDINGS if result.fails(args.fail_on) else EXIT_OK
 
 
-def cmd_capture(args: argparse.Namespace, out: Console, err: Console) -> int:
-    from .live import CaptureError, capture
+def _domain_id() -> int:
+    value = os.environ.get("ROS_DOMAIN_ID", "")
+    return int(value) if value.isdigit() and len(value) < 4 else 0
 
+
+def cmd_capture(args: argparse.Namespace, out: Console, err: Console) -> int:
+    from .live import CaptureError, capture, capture_bag, capture_ros2
+
+    where = (args.bag if args.bag else f"DDS domain {args.domain}" if args.ros2
+             else args.master)
+    if args.ros2 and not 0 < args.seconds <= 600:
+        err.print("haros-arch: --seconds must be over 0 and at most 600", highlight=False)
+        return EXIT_USAGE
     try:
-        data = capture(args.master)
+        data = (capture_bag(args.bag) if args.bag
+                else capture_ros2(args.domain, args.seconds) if args.ros2
+                else capture(args.master))
     except CaptureError as error:
-        err.print(f"haros-arch: cannot capture from {escape(args.master)}: "
+        err.print(f"haros-arch: cannot capture from {escape(where)}: "
                   f"{escape(str(error))}", highlight=False)
         return EXIT_USAGE
     _write(json.dumps(data, indent=2) + "\n", args.output)
@@ -425,7 +456,8 @@ def cmd_compare(args: argparse.Namespace, out: Console, err: Console) -> int:
         with open(args.live, encoding="utf-8") as handle:
             live = json.load(handle)
         result = compare(model, live, args.config)
-    except (OSError, ValueError, KeyError, RecursionError, CompareError) as error:
+    except (OSError, ValueError, KeyError, TypeError, AttributeError, RecursionError,
+            CompareError) as error:
         err.print(f"haros-arch: cannot compare: {escape(str(error))}", highlight=False)
         return EXIT_USAGE
     if args.format == "json":
@@ -433,7 +465,7 @@ def cmd_compare(args: argparse.Namespace, out: Console, err: Console) -> int:
         return EXIT_OK
     from .report.results import print_comparison
 
-    print_comparison(result, out)
+    print_comparison(result, out, both=args.both)
     return EXIT_OK
 
 
@@ -456,12 +488,27 @@ def cmd_report(args: argparse.Namespace, out: Console, err: Console) -> int:
             project = analysis.project
             data = model_data(analysis.model)
             findings = project_findings(analysis.model, project)
-        write_report(data, findings, workspace_root(project, args.workspace), args.output)
+        live = _live_comparison(data, args.live) if args.live else None
+        write_report(data, findings, workspace_root(project, args.workspace), args.output,
+                     live)
     except (ProjectError, ReportError) as error:
         err.print(f"haros-arch: {escape(str(error))}", highlight=False)
         return EXIT_USAGE
     out.print(f"wrote {args.output}", highlight=False)
     return EXIT_OK
+
+
+def _live_comparison(model: dict[str, Any], path: str) -> dict[str, Any]:
+    """Each configuration of ``model`` compared with the capture in ``path``."""
+    from .live.compare import CompareError, compare_all
+    from .viz import ReportError
+
+    try:
+        with open(path, encoding="utf-8") as handle:
+            return compare_all(model, json.load(handle))
+    except (OSError, ValueError, KeyError, TypeError, AttributeError, RecursionError,
+            CompareError) as error:
+        raise ReportError(f"cannot compare with {path}: {error}") from None
 
 
 def cmd_launch(args: argparse.Namespace, out: Console, err: Console) -> int:
@@ -485,7 +532,10 @@ def cmd_launch(args: argparse.Namespace, out: Console, err: Console) -> int:
     given = dict(a.split(":=", 1) for a in args.arg)
     model = load_launch(path, workspace, given, dict(os.environ))
     if args.flatten:
-        return _flatten(path, workspace, model, out, err)
+        return _flatten(path, workspace, model, args.format, out, err)
+    if args.format not in ("text", "json"):
+        err.print(f"haros-arch: --format {args.format} is for --flatten", highlight=False)
+        return EXIT_USAGE
     if args.format == "json":
         out.print(json.dumps(as_data(model), indent=2), highlight=False, markup=False)
     elif args.tree:
@@ -501,15 +551,21 @@ def cmd_launch(args: argparse.Namespace, out: Console, err: Console) -> int:
     return EXIT_OK
 
 
-def _flatten(path: str, workspace: Workspace, model: LaunchModel, out: Console,
+def _flatten(path: str, workspace: Workspace, model: LaunchModel, fmt: str, out: Console,
              err: Console) -> int:
     from .launch.dialect import ros_version
-    from .launch.ros1.flatten import flatten
+    from .launch.ros1.flatten import flatten as flatten_ros1
+    from .launch.ros2.flatten import flatten as flatten_ros2
 
-    if ros_version(path, workspace) != 1:
-        err.print("haros-arch: --flatten writes ROS 1 launch files only", highlight=False)
+    fmt = "xml" if fmt == "text" else fmt
+    if ros_version(path, workspace) == 2 and fmt in ("xml", "yaml", "python"):
+        text, notes = flatten_ros2(model, fmt)
+    elif fmt == "xml":
+        text, notes = flatten_ros1(model)
+    else:
+        err.print(f"haros-arch: --flatten writes a ROS 1 launch file as xml only, not "
+                  f"{fmt}", highlight=False)
         return EXIT_USAGE
-    text, notes = flatten(model)
     out.print(text, highlight=False, markup=False, end="")
     for line in notes:
         err.print(f"note: {escape(line)}", highlight=False)

@@ -121,6 +121,43 @@ CATALOGUE: dict[str, Entry] = {
         "lies outside the workspace and installed packages, is not YAML, or is too big "
         "once its YAML aliases are expanded; the "
         "controllers it configures keep no parameters from it."),
+    "ROBOT_DESCRIPTION_XACRO": Entry(
+        "warning", "xacro: {detail}",
+        "A xacro construct of a robot description is wrong (an unknown macro or block, a "
+        "parameter not given, an expression Python would reject) or outside what is read "
+        "statically; the part it makes is left out or written ?, and the description is "
+        "partial."),
+    "ROBOT_DESCRIPTION_FILE": Entry(
+        "warning", "robot description file {path} cannot be read: {detail}",
+        "A file of a robot description (the top file or a xacro:include) does not exist "
+        "or is not well-formed XML; what it holds is unknown and the description is "
+        "partial."),
+    "ROBOT_DESCRIPTION_LIMIT": Entry(
+        "warning", "robot description is too big to read: {detail}",
+        "Reading a robot description stopped at a bound (files read, include and macro "
+        "nesting, elements made, the length of a value); its plugins are unknown."),
+    "ROBOT_DESCRIPTION_UNKNOWN": Entry(
+        "info", "the robot description a spawner hands to Gazebo is not known: {detail}",
+        "A Gazebo spawner names a description that is not read statically (a parameter "
+        "no launch file sets with a xacro command, a -topic or -database source, a path "
+        "with unknown parts); the Gazebo node instance is partial."),
+    "GAZEBO_PLUGIN_UNKNOWN": Entry(
+        "warning", "Gazebo plugin {filename} loaded by {host} is not known",
+        "A <plugin> of a robot description names a library that is not in the table of "
+        "Gazebo plugins (haros_arch/robot/gazebo_plugins.py); its topics and services are "
+        "unknown and the Gazebo node instance is partial."),
+    "BRIDGE_CONFIG_FILE": Entry(
+        "warning", "config file {path} of a ros_gz bridge cannot be read",
+        "A ros_gz_bridge parameter_bridge's config_file does not exist, lies outside the "
+        "workspace and installed packages, or is not a YAML list of bridge entries; the "
+        "topics it would bridge are unknown and the bridge's node is partial."),
+    "GAZEBO_NOT_STARTED": Entry(
+        "info", "no launch file of the configuration starts Gazebo; its node is taken as "
+        "{name}",
+        "A spawner hands a robot description to Gazebo, but Gazebo is started from a "
+        "launch file outside the analysed packages; a node instance of that name stands "
+        "for it, with the calls of the description's plugins and an unknown interface "
+        "otherwise."),
     # launch files
     "LAUNCH_FILE_MISSING": Entry(
         "error", "launch file {path} does not exist",
@@ -211,6 +248,19 @@ CATALOGUE: dict[str, Entry] = {
     "CPP_PARSE_FAILED": Entry(
         "error", "C++ file could not be parsed: {detail}",
         "libclang could not produce a translation unit; the file gives no calls."),
+    "CPP_CALL_MISSED": Entry(
+        "info", "{text} calls the ROS API, but no call was extracted there",
+        "A grep finds a call of a ROS API function (or of one of the unit's own wrappers "
+        "of it) on this line, and the extraction has no call within two lines of it: an "
+        "error made the code around it unreadable to the parse (a class made invalid), "
+        "or the walk does not reach it. The node is 'partial'."),
+    "CPP_ERROR_NEAR_CALL": Entry(
+        "info", "C++ error in {function} (lines {start}-{end}), which calls the ROS API: "
+        "{detail}",
+        "An error the parse could not get past is inside a function that calls the ROS "
+        "API, so a call there may be missing or read with a wrong name or type. The node "
+        "is 'partial'. Errors in code that calls no ROS API cannot hide a call and leave "
+        "the node complete."),
     "CPP_NAMES_DECLARED": Entry(
         "info", "{count} name(s) unknown to the parse declared permissively ({names}); "
         "clang errors in this unit: {before} before, {after} after",
@@ -227,10 +277,12 @@ CATALOGUE: dict[str, Entry] = {
         "ROS API function of that name, its name and values read as usual, its type as "
         "written when that names a ROS interface, else '?'."),
     "CPP_NODE_PARTIAL": Entry(
-        "warning", "node {node}: its calls may be incomplete, {count} error(s) left in "
-        "its C++ sources (first: {first})",
+        "warning", "node {node}: its calls may be incomplete, {count} place(s) in its C++ "
+        "sources where a ROS call may be missing (first: {first})",
         "Some of the node's code could not be parsed even after the names clang did not "
-        "know were declared: calls in that code may be missing. The node model is "
+        "know were declared, and that code calls the ROS API (CPP_CALL_MISSED: a call "
+        "site with no call extracted; CPP_ERROR_NEAR_CALL: an error inside a function "
+        "that calls the API): calls there may be missing. The node model is "
         "'partial' (completeness, with the first reasons); checks that claim something "
         "is absent do not trust it."),
     "PY_NODE_PARTIAL": Entry(
@@ -301,6 +353,13 @@ CATALOGUE: dict[str, Entry] = {
         "Node('name')) unless the launch file renames it. Without the code the "
         "executable's name stands in, as packages usually name the two alike; when "
         "they differ, the instance's name (and its parameters) are wrong."),
+    "NAME_PARAM_UNSET": Entry(
+        "info", "{node}: the name of this {kind} is the value of the {what}, which the "
+        "configuration does not set; it stays unknown",
+        "The code (or its interface model) takes a topic or service name from a "
+        "parameter (robot_localization's imu0, twist_mux's topics list) and neither the "
+        "launch files nor their parameter files set it, and the code gives no default: "
+        "the link's name stays '?'. Set the parameter where the node is launched."),
     "NODE_NOT_FOUND": Entry(
         "warning", "node type {node} is not in the workspace; its interface is unknown",
         "A launch file starts an executable that no workspace package builds; the "

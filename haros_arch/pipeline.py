@@ -88,7 +88,8 @@ def analyse(project: Project, environment: Mapping[str, str] | None = None,
                                {**env, **spec.environment})
         known = models.nodes_for(launches[spec.name], workspace, nodes, config.environment,
                                  config.diagnostics)  # interface models (no source here)
-        graph.build(config, launches[spec.name], workspace, known)
+        graph.build(config, launches[spec.name], workspace, known,
+                    models.plugin_models(launches[spec.name], config.environment))
         config.launch_tree = launches[spec.name].tree
         if spec.hints:
             where = Location(file=project_file.file, line=spec.line, column=1)

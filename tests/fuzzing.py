@@ -251,6 +251,63 @@ def _saved_model(data: bytes) -> None:
         from_data(document)
 
 
+def _discovery_info(data: bytes) -> None:
+    """A ros_discovery_info sample as any participant in the domain may send it: read, or
+    None; nothing else."""
+    from haros_arch.live.entities import read_entities
+
+    read_entities(data)
+
+
+def _discovery_seeds() -> list[bytes]:
+    try:
+        from haros_arch.live.dds_types import BY_WIDTH
+    except ImportError:
+        return []
+    found = []
+    for width, (gid, node, info) in BY_WIDTH.items():
+        nodes = [node(node_namespace="/ns", node_name=f"n{i}", reader_gid_seq=[gid(
+            data=list(range(width)))], writer_gid_seq=[]) for i in range(2)]
+        found.append(info(gid=gid(data=[7] * width), node_entities_info_seq=nodes).serialize())
+    return found
+
+
+def _bag(suffix: str) -> Callable[[bytes], None]:
+    def run(data: bytes) -> None:
+        from haros_arch.live import CaptureError, capture_bag
+
+        with suppress(CaptureError):
+            capture_bag(workspace().write(f"fz1/config/f{suffix}", data))
+
+    return run
+
+
+def _bag_seeds(suffix: str) -> Callable[[], list[bytes]]:
+    def seeds() -> list[bytes]:
+        try:
+            from rosbags.rosbag1 import Writer as Writer1
+            from rosbags.rosbag2 import StoragePlugin
+            from rosbags.rosbag2 import Writer as Writer2
+            from rosbags.typesys import Stores, get_typestore
+        except ImportError:
+            return []
+        folder = Path(tempfile.mkdtemp(prefix="haros-arch-fuzz-bag-"))
+        if suffix == ".bag":
+            store = get_typestore(Stores.ROS1_NOETIC)
+            with Writer1(folder / "s.bag") as writer:
+                for topic in ("/a", "/b"):
+                    writer.add_connection(topic, "std_msgs/msg/String", typestore=store,
+                                          callerid="/talker")
+            return [(folder / "s.bag").read_bytes()]
+        store = get_typestore(Stores.ROS2_HUMBLE)
+        with Writer2(folder / "s", version=9, storage_plugin=StoragePlugin.MCAP) as writer:
+            for topic in ("/a", "/b"):
+                writer.add_connection(topic, "std_msgs/msg/String", typestore=store)
+        return [next((folder / "s").glob("*.mcap")).read_bytes()]
+
+    return seeds
+
+
 def _query_seeds() -> list[bytes]:
     import yaml
 
@@ -329,5 +386,11 @@ TARGETS: dict[str, Target] = {t.name: t for t in [
     Target("query", _query, [], QUERY_TOKENS, _query_seeds),
     Target("saved_model", _saved_model, ["paper_minimal/expected.json"],
            ['"nodes": ', '"configurations": [', "null", "1e400", '"\\ud800"', "[[[[", "{}"]),
+    Target("discovery_info", _discovery_info, [], ["\xff\xff\xff\x7f", "\x00" * 24, "/"],
+           _discovery_seeds),
+    Target("ros1_bag", _bag(".bag"), ["**/*.bag"], ["\xff\xff\xff\x7f", "op=", "callerid="],
+           _bag_seeds(".bag")),
+    Target("mcap_bag", _bag(".mcap"), ["**/*.mcap"], ["\xff\xff\xff\x7f", "\x89MCAP0\r\n"],
+           _bag_seeds(".mcap")),
 ]}
 

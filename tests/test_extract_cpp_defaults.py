@@ -44,6 +44,30 @@ def test_errors_on_fields_of_messages_known_only_by_name_are_not_code_errors(tmp
     result = extract_cpp([str(source)], Workspace(root=str(tmp_path)), cache_dir=None)
     found = [(d.code, d.location.line) for d in result.diagnostics
              if d.code.startswith("CPP_") and d.code != "CPP_MESSAGE_UNKNOWN"]
+    # neither error is in a function that calls the ROS API, so no names are declared
+    # (message_fields.cpp in test_extract_cpp_unknown_names: where they are)
     assert ("CPP_MESSAGE_FIELD", 3) in found
     assert ("CPP_PARSE_ERROR", 4) in found
     assert ("CPP_PARSE_ERROR", 3) not in found
+
+
+def test_a_field_error_next_to_a_call_costs_no_second_parse(tmp_path):
+    """clang reads on past a field it does not find on a valid message struct: such an
+    error hides no call, so no names are declared for it and the node stays complete."""
+    from haros_arch.extract import extract_nodes
+    from haros_arch.model.source import Node
+
+    source = tmp_path / "n.cpp"
+    source.write_text(
+        "#include <rclcpp/rclcpp.hpp>\n"
+        "#include <unknown_msgs/msg/grid.hpp>\n"
+        "void f(rclcpp::Node & node, const unknown_msgs::msg::Grid & g) {\n"
+        "  auto pub = node.create_publisher<unknown_msgs::msg::Grid>(\"grid\", 1);\n"
+        "  auto w = g.info.width; (void)w;\n"
+        "}\n")
+    node = Node("p", "n", sources=["n.cpp"])
+    found = extract_nodes([node], Workspace(root=str(tmp_path)), cache_dir=None, jobs=1)
+    assert [(c.kind, c.name) for c in node.calls] == [("publish", "grid")]
+    assert [d.code for d in found if d.code.startswith("CPP_") and d.code not in (
+        "CPP_MESSAGE_UNKNOWN",)] == ["CPP_MESSAGE_FIELD"]
+    assert node.completeness == "complete"

@@ -104,3 +104,94 @@ def test_lifecycle_rcl_std_and_opencv_apis_parse() -> None:
         ("publish", "probe", "std_msgs/msg/String", 74),
     ]
     assert [(d.code, d.message) for d in found.diagnostics] == []
+
+
+def test_xmlrpc_values_as_ros_1_nodes_read_them(tmp_path) -> None:
+    """move_base's recovery behaviours: ``list[i]["name"]`` (a string key), conversions
+    to std::string / double / int, iteration over a struct."""
+    from haros_arch.workspace import Workspace
+
+    source = tmp_path / "n.cpp"
+    source.write_text(
+        "#include <ros/ros.h>\n#include <string>\n"
+        "void f(ros::NodeHandle& n) {\n"
+        "  XmlRpc::XmlRpcValue v;\n"
+        "  n.getParam(\"~recovery_behaviors\", v);\n"
+        "  for (int i = 0; i < v.size(); ++i) {\n"
+        "    std::string name = v[i][\"name\"];\n"
+        "    double x = static_cast<double>(v[i][\"x\"]);\n"
+        "    int k = v[i][\"k\"];\n"
+        "  }\n"
+        "  for (auto it = v.begin(); it != v.end(); ++it) { std::string key = it->first; }\n"
+        "}\n")
+    result = extract_cpp([str(source)], Workspace(root=str(tmp_path)), cache_dir=None)
+    assert [(c.kind, c.name) for c in result.calls] == [("read", "~recovery_behaviors")]
+    assert [d.message for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"] == []
+
+
+def test_ros_1_code_has_boost_placeholders_in_the_global_namespace(tmp_path) -> None:
+    """pointcloud_to_laserscan (noetic): ``boost::bind(&C::cb, this, _1)`` with only
+    roscpp's and tf2_ros' headers included, as Boost 1.71 allowed."""
+    from haros_arch.workspace import Workspace
+
+    source = tmp_path / "n.cpp"
+    source.write_text(
+        "#include <ros/ros.h>\n#include <sensor_msgs/LaserScan.h>\n"
+        "#include <tf2_ros/message_filter.h>\n#include <message_filters/subscriber.h>\n"
+        "struct Relay {\n"
+        "  void cb(const sensor_msgs::LaserScan::ConstPtr& m);\n"
+        "  void failed(const sensor_msgs::LaserScan::ConstPtr& m, int reason);\n"
+        "  void start(ros::NodeHandle& nh) {\n"
+        "    sub_ = nh.subscribe<sensor_msgs::LaserScan>(\n"
+        "      \"scan\", 1, boost::bind(&Relay::cb, this, _1));\n"
+        "    filter_->registerFailureCallback(boost::bind(&Relay::failed, this, _1, _2));\n"
+        "    ROS_INFO_COND_NAMED(true, \"relay\", \"topic %s\", in_.getTopic().c_str());\n"
+        "  }\n"
+        "  ros::Subscriber sub_;\n"
+        "  message_filters::Subscriber<sensor_msgs::LaserScan> in_;\n"
+        "  tf2_ros::MessageFilter<sensor_msgs::LaserScan>* filter_;\n"
+        "};\n")
+    result = extract_cpp([str(source)], Workspace(root=str(tmp_path)), cache_dir=None)
+    assert [(c.kind, c.name) for c in result.calls] == [("subscribe", "?/scan")]  # nh: a parameter
+    assert [d.message for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"] == []
+
+
+def test_nav2_lifecycle_and_std_forms_parse_clean(tmp_path) -> None:
+    """What nav2's LifecycleNode, SimpleActionServer and robot_state_publisher use: the
+    four-argument rclcpp_lifecycle constructor, managed entities, the current state,
+    pre-shutdown callbacks, rcl_action's default options, std::void_t, duration::max,
+    std::ios seek / tell; message_filters' synchronizer bounds."""
+    from haros_arch.workspace import Workspace
+
+    (tmp_path / "package.xml").write_text(
+        '<package format="3"><name>p</name><version>0.0.1</version><description>d'
+        '</description><maintainer email="a@b.c">m</maintainer><license>BSD</license>'
+        "<depend>rclcpp</depend><export><build_type>ament_cmake</build_type></export>"
+        "</package>\n")
+    source = tmp_path / "n.cpp"
+    source.write_text(
+        "#include <chrono>\n#include <fstream>\n#include <type_traits>\n"
+        "#include <rclcpp_lifecycle/lifecycle_node.hpp>\n"
+        "#include <rclcpp_action/rclcpp_action.hpp>\n#include <std_msgs/msg/string.hpp>\n"
+        "#include <message_filters/subscriber.h>\n#include <message_filters/synchronizer.h>\n"
+        "template<class T, class = void> struct has_x : std::false_type {};\n"
+        "template<class T> struct has_x<T, std::void_t<decltype(T::x)>> : std::true_type {};\n"
+        "class Managed : public rclcpp_lifecycle::LifecycleNode {\n"
+        "public:\n"
+        "  Managed() : rclcpp_lifecycle::LifecycleNode(\"managed\", \"\", rclcpp::NodeOptions(),"
+        " false) {\n"
+        "    auto pub = create_publisher<std_msgs::msg::String>(\"out\", 1);\n"
+        "    add_managed_entity(pub);\n"
+        "    auto id = get_current_state().id(); (void)id;\n"
+        "    auto handle = get_node_base_interface()->get_context()->add_pre_shutdown_callback(\n"
+        "      [] {});\n"
+        "    get_node_base_interface()->get_context()->remove_pre_shutdown_callback(handle);\n"
+        "    auto options = rcl_action_server_get_default_options(); (void)options;\n"
+        "    auto forever = std::chrono::nanoseconds::max(); (void)forever;\n"
+        "    std::ifstream file(\"urdf\");\n"
+        "    file.seekg(0, std::ios::end); auto size = file.tellg(); (void)size;\n"
+        "  }\n"
+        "};\n")
+    result = extract_cpp([str(source)], Workspace(root=str(tmp_path)), cache_dir=None)
+    assert ("publish", "out") in [(c.kind, c.name) for c in result.calls]
+    assert [d.message for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"] == []

@@ -3,6 +3,7 @@ fixtures/cpp/unknown_names."""
 
 from __future__ import annotations
 
+import json
 import os
 
 import pytest
@@ -192,3 +193,95 @@ def test_rclcpp_free_factories() -> None:
         ("subscribe", "in", "std_msgs/msg/String", 4),
         ("subscribe", "in_too", "std_msgs/msg/String", None)]
     assert "CPP_PARSE_ERROR" not in codes(result)
+
+
+def _errors_where(tmp_path, *defines: str) -> tuple[CppResult, Node]:
+    """errors_where.cpp extracted as a node, built with ``defines``."""
+    source = os.path.join(SOURCES, "errors_where.cpp")
+    commands = tmp_path / "compile_commands.json"
+    commands.write_text(json.dumps([{
+        "directory": str(tmp_path), "file": source,
+        "arguments": ["c++", *(f"-D{d}" for d in defines), "-c", source]}]))
+    workspace = scan([ROOT])
+    node = Node("vendor_node", "talker", sources=[workspace.relpath(source)])
+    found = extract_nodes([node], workspace, cache_dir=None, jobs=1,
+                          compile_commands=[str(commands)])
+    return CppResult(node.calls, diagnostics=found), node
+
+
+def test_an_error_in_code_that_calls_no_ros_api_leaves_the_node_complete(tmp_path) -> None:
+    result, node = _errors_where(tmp_path)
+    assert rows(result) == [("publish", "out", "std_msgs/msg/String", 21)]
+    assert ("CPP_PARSE_ERROR", 10) in [(d.code, d.location.line) for d in result.diagnostics]
+    # the call site under an #ifdef the build does not take is no missed call
+    assert (node.completeness, node.completeness_reasons) == ("complete", [])
+    assert "CPP_NODE_PARTIAL" not in codes(result)
+    # no error can cost a call: the unknown names are not declared (no second parse)
+    assert "CPP_NAMES_DECLARED" not in codes(result)
+    assert ("CPP_PARSE_ERROR", 43) in [(d.code, d.location.line) for d in result.diagnostics]
+
+
+def test_an_error_inside_a_function_that_calls_the_api_makes_the_node_partial(
+        tmp_path) -> None:
+    result, node = _errors_where(tmp_path, "NEAR_CALL")
+    assert node.completeness == "partial"
+    where = "src/vendor_node/src/errors_where.cpp:33: "
+    assert node.completeness_reasons == [
+        where + 'pub_ = create_publisher<std_msgs::msg::String>("restart", 10 +); calls '
+        "the ROS API, but no call was extracted there",
+        where + "C++ error in restart (lines 31-34), which calls the ROS API: expected "
+        "expression"]
+    assert codes(result).count("CPP_NODE_PARTIAL") == 1
+    assert "CPP_NAMES_DECLARED" in codes(result)  # this error may hide one: parsed again
+
+
+def test_a_call_site_with_no_call_extracted_is_a_reason() -> None:
+    from haros_arch.extract.cpp import recall
+
+    text = ("void f(ros::NodeHandle & nh) {\n"
+            "  // nh.subscribe(\"commented\", 1, cb);\n"
+            "  pub_ = nh.advertise<nav_msgs::Odometry>(\"odometry/filtered\", 20);\n"
+            "  /* a->create_publisher<T>(\"old\", 1); */ auto p = declare_parameter<int>(\"n\");\n"
+            "void Base::create_publisher(const std::string & name) {\n"
+            "  subs_.push_back(nh_.subscribe<sensor_msgs::Imu>(\n"
+            "      imu_topic, 10, cb));\n"
+            "  helper->make_pub(\"x\");\n"
+            "}\n")
+    sites = recall.call_sites(text, ["make_pub"])
+    assert [s.line for s in sites] == [3, 4, 6, 8]  # no comment, no definition
+    assert [s.line for s in recall.missed(sites, {3}, [(8, 8)])] == [6]
+
+
+def test_fields_of_messages_known_only_by_name_leave_no_error() -> None:
+    result = extract("message_fields.cpp")
+    assert rows(result) == [
+        ("publish", "markers", "visualization_msgs/msg/Marker", 17),
+        ("subscribe", "tracks", "radar_msgs/msg/Track", 18),
+        ("declare", "limit", "double", 25),
+        ("server", "reset", "radar_msgs/srv/Reset", 26),
+    ]
+    # fields and constants (``Marker::SPHERE``) are declared on the message's struct; the
+    # unqualified ``Pose2`` of ``using namespace vendor_geometry`` is not ambiguous
+    assert [c for c in codes(result) if c in ("CPP_PARSE_ERROR", "CPP_MESSAGE_FIELD")] == []
+
+
+def test_fields_are_declared_static_on_the_record() -> None:
+    names = synthesis.Names(["radar_msgs"])
+    names.learn([("no member named 'position' in 'radar_msgs::Track'", None, 0),
+                 ("no member named 'SPHERE' in 'visualization_msgs::msg::Marker'", None, 0),
+                 ("no member named 'size' in 'mavros::router::Endpoint'", None, 0)])
+    header = names.header()
+    assert "#define HAROS_FIELDS_radar_msgs__Track static haros_any position;" in header
+    assert ("#define HAROS_FIELDS_visualization_msgs__msg__Marker static haros_any SPHERE;"
+            in header)
+    assert "Endpoint" not in header  # a class of the workspace is no message
+
+
+def test_a_name_that_made_a_use_ambiguous_is_withdrawn() -> None:
+    names = synthesis.Names()
+    text = b"VerticeMap m;\n"
+    names.learn([("unknown type name 'VerticeMap'", text, 0)])
+    assert "struct VerticeMap : haros_any" in names.header()
+    # once the real typedef is valid, the declared name makes every use ambiguous
+    assert names.learn([("reference to 'VerticeMap' is ambiguous", text, 0)])
+    assert "VerticeMap" not in names.header()

@@ -164,3 +164,57 @@ def test_wrappers_deeper_than_the_bound_still_end(tmp_path: Path) -> None:
         "  ros::NodeHandle nh;\n  f7(nh, \"bottom\");\n}\n")
     result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
     assert [(c.kind, c.name) for c in result.calls] == [("publish", "bottom")]
+
+
+def test_a_lambda_a_getter_returns_is_a_wrapper_bound_per_call_site(ws: Workspace) -> None:
+    """nav2 MPPI: ``auto getParam = handler->getParamGetter(ns)`` returns a generic lambda
+    that calls the handler's ``getParam(setting, ns + "." + name, default)``, which
+    declares and reads the parameter; each call of the lambda is a declaration and a read
+    of ``<ns>.<name>``, with the ``ns`` its own getter was given."""
+    result = extract_cpp([str(FIXTURE / "src" / "radar" / "src" / "tuning.cpp")], ws,
+                         cache_dir=None)
+    assert [(c.kind, c.name, c.type, c.location.file, c.location.line)
+            for c in result.calls] == [
+        ("declare", "?.gain", "double", "src/radar/src/tuning.cpp", 10),
+        ("read", "?.gain", "double", "src/radar/src/tuning.cpp", 10),
+        ("declare", "?.horizon", "int", "src/radar/src/tuning.cpp", 11),
+        ("read", "?.horizon", "int", "src/radar/src/tuning.cpp", 11),
+        ("declare", "global.limit", "double", "src/radar/src/tuning.cpp", 13),
+        ("read", "global.limit", "double", "src/radar/src/tuning.cpp", 13),
+    ]
+
+
+def test_a_class_template_whose_constructor_makes_the_service(ws: Workspace) -> None:
+    """nav2's ServiceServer<ServiceT>(name, node, callback) creates the service on the
+    node's interfaces (rclcpp::create_service(base, services, name, callback)); made by
+    a factory (make_shared inside make_server<SrvT>) or by make_shared directly, each is
+    a server at the construction, typed by its template argument."""
+    result = extract_cpp([str(FIXTURE / "src" / "radar" / "src" / "services.cpp")], ws,
+                         cache_dir=None)
+    assert [(c.kind, c.name, c.type, c.location.file, c.location.line)
+            for c in result.calls] == [
+        ("server", "reset", "std_srvs/srv/Empty", "src/radar/src/services.cpp", 9),
+        ("server", "trigger", "std_srvs/srv/Trigger", "src/radar/src/services.cpp", 11),
+    ]
+
+
+def test_a_class_template_constructor_that_types_nothing_keeps_its_calls(tmp_path) -> None:
+    """laser_assembler's BaseAssembler<T>(max_size_param_name) reads the parameter its
+    derived class names; the type does not come from the construction, so the read stays
+    in the constructor (named by what callers pass) rather than waiting for a
+    construction this unit may not show."""
+    (tmp_path / "base.h").write_text(
+        "#include <ros/ros.h>\n#include <string>\n"
+        "template<class T> class Base {\n"
+        "public:\n"
+        "  explicit Base(const std::string & name) {\n"
+        "    ros::NodeHandle private_ns(\"~\");\n"
+        "    private_ns.param(name, size_, 400);\n"
+        "  }\n"
+        "  int size_;\n"
+        "};\n")
+    (tmp_path / "n.cpp").write_text('#include "base.h"\nvoid f() {}\n')
+    result = extract_cpp([str(tmp_path / "n.cpp")], Workspace(root=str(tmp_path)),
+                         cache_dir=None)
+    assert [(c.kind, c.location.file, c.location.line) for c in result.calls] == [
+        ("read", "base.h", 7)]

@@ -114,3 +114,44 @@ def test_two_unnamed_nodes_keep_their_own_launch_parameters(write_tree):
     assert config.parameter("/?/x").set_by_launch
     guessed = [d for d in config.diagnostics if d.code == "NODE_NAME_GUESSED"]
     assert [(d.location.line, "guess" in d.message) for d in guessed] == [(7, True)]
+
+
+FILE_LAUNCH = """
+    import os
+    from launch import LaunchDescription
+    from launch_ros.actions import Node
+
+    def generate_launch_description():
+        here = os.path.dirname(os.path.abspath(__file__))
+        return LaunchDescription([
+            Node(package='talk', executable='talker',
+                 parameters=[os.path.join(here, 'talk.yaml'), {'late': 3}]),
+        ])
+    """
+
+PARAM_FILE = """
+    /**:
+      ros__parameters:
+        shared: 1
+    talker:
+      ros__parameters:
+        rate: 7.0
+        late: 2
+    /**/talker:
+      ros__parameters:
+        wild: true
+    listener:
+      ros__parameters:
+        rate: 9.0
+    """
+
+
+def test_a_parameter_files_section_for_the_node_applies_once_its_code_names_it(write_tree):
+    root = workspace(write_tree, FILE_LAUNCH)
+    (root / "src/talk/launch/talk.yaml").write_text(PARAM_FILE.replace("\n    ", "\n"))
+    config = build(root)
+    given = {p.name: p.value for p in config.parameters if p.set_by_launch}
+    # /** for any name; talker: and /**/talker match /talker; listener: does not; the
+    # launch file's later {'late': 3} replaces the file's late
+    assert given == {"/talker/shared": 1, "/talker/rate": 7.0, "/talker/wild": True,
+                     "/talker/late": 3}

@@ -83,3 +83,25 @@ def test_names_from_parameters_take_the_launch_value_then_the_default():
         params=[ParamDecl("/with_param/topic", "base_scan", "str")],
         nodes=[listener("l1"), listener("l2")])
     assert sorted(t.name for t in config.topics) == ["/base_scan", "/scan"]
+
+
+def test_an_absolute_name_from_a_parameter_ignores_the_handles_namespace():
+    # fetch_depth_layer: NodeHandle private_nh("~/" + name_); param("depth_topic", t,
+    # std::string("/head_camera/depth_downsample/image_raw")); subscribe(t, ...): an
+    # absolute name is not resolved in the handle's namespace
+    def layer(executable, default):
+        n = node("p", executable, call("subscribe", "~costmap/obstacles/?",
+                                       "sensor_msgs/Image"))
+        n.calls[0].name_param = "~costmap/obstacles/depth_topic"
+        n.calls[0].name_default = default
+        return n
+
+    config = graph(
+        [NodeDecl("/absolute", "p", "l1"), NodeDecl("/relative", "p", "l2"),
+         NodeDecl("/launch_set", "p", "l3")],
+        params=[ParamDecl("/launch_set/costmap/obstacles/depth_topic", "/camera/depth",
+                          "str")],
+        nodes=[layer("l1", "/head_camera/image_raw"), layer("l2", "image_raw"),
+               layer("l3", "image_raw")])
+    assert sorted(t.name for t in config.topics) == [
+        "/camera/depth", "/head_camera/image_raw", "/relative/costmap/obstacles/image_raw"]

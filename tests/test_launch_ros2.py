@@ -285,3 +285,15 @@ def test_allow_substs_file_with_an_unknown_value_is_read(write_tree):
     assert {p.name: p.value for p in model.params} == {
         "/cfg/frame": "r1/base", "/cfg/port": None, "/cfg/?_limit": 2.0, "/cfg/rate": 10}
     assert "LAUNCH_UNKNOWN_VALUE" in codes(model)
+
+
+def test_a_key_given_twice_in_a_parameter_file_merges_as_rcl_reads_it():
+    from haros_arch.launch.ros2.naming import load_param_file, params_for_node
+
+    document = load_param_file(
+        "/**:\n  tb3:\n    ros__parameters: {wheels: {radius: 0.03}, a: 1}\n"
+        "/**:\n  ctrl:\n    ros__parameters: {b: 2}\n"
+        "  tb3:\n    ros__parameters: {wheels: {separation: 0.16}, a: 3}\n")
+    assert params_for_node(document, "/tb3") == [
+        ("wheels.radius", 0.03), ("wheels.separation", 0.16), ("a", 3)]
+    assert params_for_node(document, "/ctrl") == [("b", 2)]

@@ -31,6 +31,13 @@ def _analyse(project_file: str = "project.yaml", env: dict | None = None,
     return model, config
 
 
+def _configuration(root):
+    """The one configuration of the project file at ``root``, analysed."""
+    model = analyse(load(str(root / "project.yaml")), {}, Options(cache_dir=None, jobs=1))
+    (config,) = model.configurations
+    return config
+
+
 def _instance(config, name):
     return next(n for n in config.nodes if n.name == name)
 
@@ -200,8 +207,7 @@ def test_a_ros2_system_takes_the_jazzy_model_named_as_its_code_names_itself(writ
             """,
         "project.yaml": "project: p\nconfigurations:\n  c: [arm/launch/arm.launch.py]\n",
     })
-    model = analyse(load(str(root / "project.yaml")), {}, Options(cache_dir=None, jobs=1))
-    (config,) = model.configurations
+    config = _configuration(root)
     jsp = _instance(config, "/joint_state_publisher")
     assert jsp.completeness == "model" and jsp.node.model.startswith("jazzy/")
     topic = next(t for t in config.topics if t.name == "/joint_states")
@@ -267,8 +273,7 @@ def test_a_nodelet_of_a_package_without_source_takes_its_model(write_tree):
             """,
         "project.yaml": "project: p\nconfigurations:\n  c: [cam/launch/cam.launch]\n",
     })
-    model = analyse(load(str(root / "project.yaml")), {}, Options(cache_dir=None, jobs=1))
-    (config,) = model.configurations
+    config = _configuration(root)
     rectify = _instance(config, "/rectify")
     assert rectify.node is not None and rectify.node.model.startswith("noetic/image_proc ")
     assert {(link.kind, link.name) for link in rectify.links} >= {
@@ -292,8 +297,7 @@ def test_ros2_list_names_come_from_the_parameters_under_a_prefix(write_tree):
             """,
         "project.yaml": "project: p\nconfigurations:\n  c: [base/launch/mux.launch.py]\n",
     })
-    model = analyse(load(str(root / "project.yaml")), {}, Options(cache_dir=None, jobs=1))
-    (config,) = model.configurations
+    config = _configuration(root)
     mux = _instance(config, "/twist_mux")
     assert mux.node.model.startswith("jazzy/twist_mux ")
     assert sorted(link.name for link in mux.subscribers
@@ -304,3 +308,176 @@ def _package_xml(name: str) -> str:
     from conftest import package_xml
 
     return package_xml(name, build_type="ament_cmake")
+
+
+@pytest.mark.parametrize(("schema", "readable"), [
+    ("haros-arch-model/1", True), ("haros-arch-model/2", True),
+    ("haros-arch-model/3", False), ("haros-arch-model/" + "9" * 5000, False)])
+def test_model_files_of_older_versions_read_and_newer_ones_are_refused(schema, readable):
+    from haros_arch.models.format import ModelFileError
+
+    data = {"schema": schema, "package": "p", "distro": "noetic", "nodes": []}
+    if readable:
+        assert from_document(data).package == "p"
+    else:
+        with pytest.raises(ModelFileError, match="schema version"):
+            from_document(data)
+
+
+FILTER_MODEL = {
+    "schema": "haros-arch-model/2", "package": "fusion", "distro": "noetic", "nodes": [{
+        "package": "fusion", "executable": "ekf", "rosname": "ekf", "calls": [
+            {"kind": "subscribe", "name": "?", "type": "sensor_msgs/Imu",
+             "name_param": "~imu", "name_each": "#"},
+            {"kind": "subscribe", "name": "?", "type": "nav_msgs/Odometry",
+             "name_param": "~odom", "name_each": "#"},
+            {"kind": "subscribe", "name": "?", "type": "geometry_msgs/TwistStamped",
+             "name_param": "~twist", "name_each": "#"}]}]}
+
+
+def test_names_from_a_numbered_family_of_parameters_come_from_launch_and_yaml(write_tree):
+    from conftest import package_xml
+
+    root = write_tree({
+        "src/robot/package.xml": package_xml("robot"),
+        "src/robot/CMakeLists.txt": "project(robot)\n",
+        "src/robot/config/ekf.yaml": "imu0: imu/data\nimu1: /imu2/data\nimu3: skipped\n",
+        "src/robot/launch/ekf.launch": """
+            <launch>
+              <node pkg="fusion" type="ekf" name="ekf">
+                <rosparam command="load" file="$(find robot)/config/ekf.yaml"/>
+                <param name="odom0" value="wheel/odom"/>
+              </node>
+            </launch>
+            """,
+        "models/fusion.json": json.dumps(FILTER_MODEL),
+        "project.yaml": "project: p\nmodels: [models]\n"
+                        "configurations:\n  c: [robot/launch/ekf.launch]\n",
+    })
+    config = _configuration(root)
+    ekf = _instance(config, "/ekf")
+    # imu0, imu1 and odom0 are set; imu3 is not read (imu2 is not set); twist0 is not set
+    assert sorted(link.name for link in ekf.subscribers) == [
+        "/?", "/imu/data", "/imu2/data", "/wheel/odom"]
+    unknown = next(link for link in ekf.subscribers if link.name == "/?")
+    assert unknown.type == "geometry_msgs/TwistStamped"
+    (why,) = [d.message for d in config.diagnostics if d.code == "NAME_PARAM_UNSET"]
+    assert why == ("/ekf: the name of this subscribe is the value of the parameters "
+                   "~twist0, ~twist1, ..., which the configuration does not set; it stays "
+                   "unknown")
+
+
+def test_topic_tools_nodes_take_their_topics_from_their_arguments(write_tree):
+    from conftest import package_xml
+
+    root = write_tree({
+        "src/robot/package.xml": package_xml("robot"),
+        "src/robot/CMakeLists.txt": "project(robot)\n",
+        "src/robot/launch/tools.launch": """
+            <launch>
+              <node pkg="topic_tools" type="relay" name="relay" args="scan front/scan"/>
+              <node pkg="topic_tools" type="relay" name="echo" args="odom"/>
+              <node pkg="topic_tools" type="mux" name="mux" args="cmd_vel nav_vel joy_vel"/>
+              <node pkg="topic_tools" type="throttle" name="slow"
+                    args="messages camera/image 2.0"/>
+              <node pkg="topic_tools" type="drop" name="drop" args="imu 1 2 imu_half"/>
+            </launch>
+            """,
+        "project.yaml": "project: p\nconfigurations:\n  c: [robot/launch/tools.launch]\n",
+    })
+    config = _configuration(root)
+
+    def sides(name):
+        node = _instance(config, name)
+        return (sorted(link.name for link in node.subscribers),
+                sorted(link.name for link in node.publishers))
+
+    assert sides("/relay") == (["/scan"], ["/front/scan"])
+    assert sides("/echo") == (["/odom"], ["/odom_relay"])
+    assert sides("/mux") == (["/joy_vel", "/nav_vel"], ["/cmd_vel", "/mux/selected"])
+    assert sides("/slow") == (["/camera/image"], ["/camera/image_throttle"])
+    assert sides("/drop") == (["/imu"], ["/imu_half"])
+    mux = _instance(config, "/mux")
+    assert mux.completeness == "model" and "/mux/select" in {
+        link.name for link in mux.links if link.kind == "server"}
+
+
+def test_a_ros1_spawner_calls_the_controller_manager_of_its_namespace_argument(write_tree):
+    from conftest import package_xml
+
+    root = write_tree({
+        "src/robot/package.xml": package_xml("robot"),
+        "src/robot/CMakeLists.txt": "project(robot)\n",
+        "src/robot/launch/control.launch": """
+            <launch>
+              <node pkg="controller_manager" type="spawner" name="spawner"
+                    args="--namespace arm --wait-for ready joint_state_controller"/>
+            </launch>
+            """,
+        "project.yaml": "project: p\nconfigurations:\n  c: [robot/launch/control.launch]\n",
+    })
+    config = _configuration(root)
+    spawner = _instance(config, "/spawner")
+    assert sorted((link.kind, link.name) for link in spawner.links
+                  if link.kind in ("client", "subscribe")) == [
+        ("client", "/arm/controller_manager/load_controller"),
+        ("client", "/arm/controller_manager/switch_controller"),
+        ("client", "/arm/controller_manager/unload_controller"),
+        ("subscribe", "/ready")]
+    # rospy.get_param('/use_sim_time', False): a read with a default, never reported
+    # as read but not set (Husky's base_controller_spawner was)
+    (sim_time,) = [link for link in spawner.links if link.name == "/use_sim_time"]
+    assert sim_time.call.has_default and sim_time.call.default is False
+
+
+def test_ros2_topic_tools_take_their_topics_from_their_parameters(write_tree):
+    root = write_tree({
+        "src/base/package.xml": _package_xml("base"),
+        "src/base/launch/tools.launch.py": """
+            from launch import LaunchDescription
+            from launch_ros.actions import Node
+
+            def generate_launch_description():
+                return LaunchDescription([
+                    Node(package='topic_tools', executable='relay', name='relay',
+                         parameters=[{'input_topic': 'scan', 'output_topic': 'scan_out'}]),
+                    Node(package='topic_tools', executable='mux', name='mux',
+                         parameters=[{'input_topics': ['nav_vel', 'joy_vel']}]),
+                ])
+            """,
+        "project.yaml": "project: p\nconfigurations:\n  c: [base/launch/tools.launch.py]\n",
+    })
+    config = _configuration(root)
+    relay, mux = _instance(config, "/relay"), _instance(config, "/mux")
+    assert ([link.name for link in relay.subscribers], [link.name for link in relay.publishers]
+            ) == (["/scan"], ["/scan_out"])
+    assert (sorted(link.name for link in mux.subscribers),
+            [link.name for link in mux.publishers]) == (["/joy_vel", "/nav_vel"],
+                                                        ["/mux/selected"])
+
+
+def test_a_modelled_node_launched_without_name_takes_its_section_of_a_parameter_file(
+        write_tree):
+    root = write_tree({
+        "src/base/package.xml": _package_xml("base"),
+        "src/base/config/ekf.yaml": "ekf_filter_node:\n  ros__parameters:\n"
+                                    "    imu0: imu/data\n    odom0: wheel/odom\n"
+                                    "other_node:\n  ros__parameters:\n    imu0: nowhere\n",
+        "src/base/launch/ekf.launch.py": """
+            import os
+            from launch import LaunchDescription
+            from launch_ros.actions import Node
+
+            def generate_launch_description():
+                here = os.path.dirname(os.path.abspath(__file__))
+                return LaunchDescription([
+                    Node(package='robot_localization', executable='ekf_node',
+                         parameters=[os.path.join(here, '..', 'config', 'ekf.yaml')]),
+                ])
+            """,
+        "project.yaml": "project: p\nconfigurations:\n  c: [base/launch/ekf.launch.py]\n",
+    })
+    config = _configuration(root)
+    ekf = _instance(config, "/ekf_filter_node")  # the name its code (and model) gives it
+    names = {link.name for link in ekf.subscribers}
+    assert {"/imu/data", "/wheel/odom"} <= names and "/nowhere" not in names

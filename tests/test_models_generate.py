@@ -23,6 +23,14 @@ def _outcome(overrides: str = OVERRIDES):
     return build_package(task)
 
 
+def _with_override(tmp_path: Path, text: str):
+    """The tiny driver modelled with ``text`` as its noetic override file."""
+    folder = tmp_path / "noetic"
+    folder.mkdir()
+    (folder / "tiny_driver.yaml").write_text(text)
+    return _outcome(str(tmp_path))
+
+
 def test_a_package_is_modelled_with_its_source_and_what_stayed_partial():
     outcome = _outcome(overrides=os.path.join(FIXTURE, "none"))
     model = from_document(json.loads(outcome.text))
@@ -87,15 +95,11 @@ def test_a_dask_cluster_gives_the_same_models():
 
 
 def test_an_override_puts_a_call_under_the_condition_its_caller_writes(tmp_path):
-    folder = tmp_path / "noetic"
-    folder.mkdir()
-    (folder / "tiny_driver.yaml").write_text(
+    outcome = _with_override(tmp_path, (
         "nodes:\n  tiny_driver/laser:\n    conditions:\n"
         "      - calls: tiny_driver/scripts/laser:7\n"
         "        text: argv[1] == '--replay'\n        at: tiny_driver/scripts/laser:3\n"
-        "      - calls: tiny_driver/scripts/laser:99\n        text: x\n        at: a:1\n")
-    (task,) = tasks(read_list(LIST), SOURCES, str(tmp_path), cache_dir=None)
-    outcome = build_package(task)
+        "      - calls: tiny_driver/scripts/laser:99\n        text: x\n        at: a:1\n"))
     model = from_document(json.loads(outcome.text))
     publish = next(c for c in model.node("laser").calls if c.kind == "publish")
     (problem,) = outcome.override_problems
@@ -126,45 +130,76 @@ def test_trees_listed_with_an_entry_are_needed_and_recorded(tmp_path):
                                     "89abcdef0123456789abcdef0123456789abcdef")
 
 
-def test_a_ros_call_in_the_text_with_no_extracted_call_makes_a_model_partial(tmp_path):
-    from haros_arch.model.location import Location
-    from haros_arch.model.source import Node, PrimitiveCall
-    from haros_arch.models.generate import _mark_unextracted
-
-    (tmp_path / "src").mkdir()
-    (tmp_path / "src" / "filter.cpp").write_text(
-        "void f(ros::NodeHandle& nh) {\n"
-        "  // nh.subscribe(\"commented\", 1, cb);\n"
-        "  pub_ = nh.advertise<nav_msgs::Odometry>(\"odometry/filtered\", 20);\n"
-        "\n\n"
-        "  subs_.push_back(nh_.subscribe<sensor_msgs::Imu>(\n"
-        "      imu_topic, 10, cb));\n"
-        "}\n")
-    found = PrimitiveCall("publish", "odometry/filtered", "nav_msgs/Odometry",
-                          location=Location("p", "src/filter.cpp", 3, 10))
-    node = Node("p", "filter", sources=["src/filter.cpp"], calls=[found])
-    _mark_unextracted(node, str(tmp_path))
-    assert node.completeness == "partial"
-    assert node.completeness_reasons == [
-        "src/filter.cpp:6: subs_.push_back(nh_.subscribe<sensor_msgs::Imu>( calls the ROS "
-        "API, but no call was extracted there"]
-    whole = Node("p", "filter", sources=["src/filter.cpp"], calls=[
-        found, PrimitiveCall("subscribe", "?", location=Location("p", "src/filter.cpp", 7))])
-    _mark_unextracted(whole, str(tmp_path))
-    assert whole.completeness == "complete"
-
-
 def test_an_override_names_a_call_by_each_element_of_a_list_parameter(tmp_path):
-    folder = tmp_path / "noetic"
-    folder.mkdir()
-    (folder / "tiny_driver.yaml").write_text(
+    outcome = _with_override(tmp_path, (
         "nodes:\n  tiny_driver/relay:\n    names:\n"
         "      - calls: tiny_driver/scripts/relay:8\n        param: ~topics\n"
-        "        each: .\n")
-    (task,) = tasks(read_list(LIST), SOURCES, str(tmp_path), cache_dir=None)
-    outcome = build_package(task)
+        "        each: .\n"))
     subscribe = next(c for c in from_document(json.loads(outcome.text)).node("relay").calls
                      if c.kind == "subscribe")
     assert (subscribe.name_param, subscribe.name_each, subscribe.origin) == (
         "~topics", ".", "override")
     assert outcome.override_problems == []
+
+
+def test_an_override_names_calls_by_a_numbered_family_rewrites_and_drops(tmp_path):
+    outcome = _with_override(tmp_path, (
+        "nodes:\n"
+        "  tiny_driver/relay:\n    names:\n"
+        "      - {calls: tiny_driver/scripts/relay:8, name: '?', param: ~input,"
+        " numbered: true}\n"
+        "  tiny_driver/laser:\n    rosname: laser\n    drop: [tiny_driver/scripts/laser]\n"
+        "    partial: its topics follow a file it reads\n"))
+    model = from_document(json.loads(outcome.text))
+    subscribe = next(c for c in model.node("relay").calls if c.kind == "subscribe")
+    assert (subscribe.name, subscribe.name_param, subscribe.name_each, subscribe.origin) == (
+        "?", "~input", "#", "override")
+    laser = model.node("laser")
+    assert laser.calls == [] and laser.completeness == "partial"
+    assert laser.completeness_reasons == [
+        "override noetic/tiny_driver.yaml: its topics follow a file it reads"]
+    assert json.loads(outcome.text)["schema"] == "haros-arch-model/2"
+    assert outcome.override_problems == []
+
+
+def test_an_override_entry_that_mixes_each_and_numbered_is_refused(tmp_path):
+    problems = _with_override(tmp_path, (
+        "nodes:\n  tiny_driver/relay:\n    names:\n"
+        "      - {calls: tiny_driver/scripts/relay:8, param: ~input, each: ., numbered: true}\n"
+        "    drop: [tiny_driver/scripts/nowhere]\n")).override_problems
+    assert len(problems) == 2 and "tiny_driver/scripts/nowhere" in problems[0]
+    assert "names no call" in problems[1]
+
+
+def test_an_override_names_a_call_by_the_value_of_a_parameter_with_a_default(tmp_path):
+    outcome = _with_override(tmp_path, (
+        "nodes:\n  tiny_driver/relay:\n    names:\n"
+        "      - {calls: tiny_driver/scripts/relay:8, name: '?', param: ~input,"
+        " default: chatter}\n"))
+    subscribe = next(c for c in from_document(json.loads(outcome.text)).node("relay").calls
+                     if c.kind == "subscribe")
+    assert (subscribe.name_param, subscribe.name_default, subscribe.name_each) == (
+        "~input", "chatter", None)
+    assert outcome.override_problems == []
+
+
+def test_an_override_puts_the_calls_of_an_unknown_handle_in_a_namespace():
+    from haros_arch.model.location import Location
+    from haros_arch.model.source import Node, PrimitiveCall
+    from haros_arch.models.generate import _override_handles
+
+    def call(kind, name, file="src/f.cpp"):
+        return PrimitiveCall(kind, name, location=Location("p", file, 3),
+                             handle_namespace="?" if name.startswith("?/") else None)
+
+    node = Node("p", "filter", calls=[call("read", "?/rate"), call("read", "/global"),
+                                       call("publish", "?/out"),
+                                       call("read", "?/other", "src/g.cpp")])
+    found: list = []
+    _override_handles(node, [{"file": "src/f.cpp", "kinds": ["read"], "namespace": "~"},
+                             {"file": "src/none.cpp", "kinds": ["read"], "namespace": "~"}],
+                      "noetic/p.yaml", found)
+    assert [(c.name, c.origin) for c in node.calls] == [
+        ("~rate", "override"), ("/global", "source"), ("?/out", "source"),
+        ("?/other", "source")]
+    assert [d.code for d in found] == ["HINT_INVALID"]

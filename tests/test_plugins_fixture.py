@@ -62,3 +62,35 @@ def test_spawned_controller_is_a_node_with_its_parameter_file():
     ]
     never_read = [p.name for p in config.parameters if p.set_by_launch and not p.is_read]
     assert never_read == ["/robot/follower/unused"]
+
+
+def test_nav2_planner_costmap_and_layers_come_from_the_jazzy_models():
+    config = configuration("ros2_bringup/launch/nav.launch.xml")
+    costmap = config.node("/r1/global_costmap/global_costmap")
+    assert costmap is not None and costmap.node is not None
+    assert costmap.node.model and "nav2_costmap_2d" in costmap.node.model
+    by_costmap = {(link.kind, link.resource.name, link.type) for link in config.links
+                  if link.node is costmap}
+    assert ("subscribe", "/scan", "sensor_msgs/msg/LaserScan") in by_costmap
+    reads = {name for kind, name, _ in by_costmap if kind == "read"}
+    assert "/r1/global_costmap/global_costmap/obstacle_layer.scan.clearing" in reads
+    assert "/r1/global_costmap/global_costmap/obstacle_layer.observation_sources" in reads
+    never_read = [p.name for p in config.parameters if p.set_by_launch and not p.is_read
+                  and "global_costmap" in p.name]
+    assert never_read == []
+
+
+def test_mavros_loads_every_exported_plugin_its_deny_list_lets_through():
+    config = configuration("ros2_bringup/launch/uas.launch.xml")
+    added = sorted((n.name, n.node.name) for n in config.nodes if n.origin == "plugin")
+    # plugin nodes named by their code (``Plugin(uas_, "sys")``), not by their lookup
+    # names; "vibration" matches the deny list's "VIB*" (case folded)
+    assert added == [("/mavros/imu", "uas_plugins/imu"), ("/mavros/sys", "uas_plugins/sys_status")]
+    assert links(config, "/mavros/imu") == [
+        ("publish", "/mavros/imu/data", "source"), ("read", "/mavros/imu/frame_id", "source")]
+    assert ("publish", "/mavros/state", "source") in links(config, "/mavros/sys")
+    imu_frame = next(p for p in config.parameters if p.name == "/mavros/imu/frame_id")
+    assert imu_frame.value == "imu_link"
+    never_read = [p.name for p in config.parameters if p.set_by_launch and not p.is_read
+                  and not p.name.startswith("/mavros/?")]
+    assert never_read == []

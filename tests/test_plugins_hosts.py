@@ -8,7 +8,7 @@ from haros_arch.graph import build
 from haros_arch.launch.model import LaunchModel, NodeDecl, ParamDecl
 from haros_arch.model import Configuration, Location, Node, PrimitiveCall
 from haros_arch.model.values import UNKNOWN_MARK
-from haros_arch.plugins.attach import spawn_args
+from haros_arch.plugins.attach import ros1_spawn_args, spawn_args
 from haros_arch.workspace import Workspace
 
 
@@ -101,6 +101,21 @@ def test_a_plugin_not_in_the_workspace_is_a_diagnostic_and_only_that_instance_is
     # the node model is shared: the other instance and the model itself stay complete
     assert other.completeness == "complete" and move_base.completeness == "complete"
     assert other.node is move_base and partial.node is not move_base
+
+
+def test_a_modelled_host_whose_plugin_is_not_known_is_partial():
+    # noetic move_base from its interface model (completeness "model") on Fetch loads
+    # base_local_planner/TrajectoryPlannerROS, which no analysed package exports: its
+    # ~TrajectoryPlannerROS/local_plan publisher is unseen, so move_base is not whole
+    move_base = Node("move_base", "move_base", calls=[call("publish", "~goal")],
+                     completeness="model", model="noetic/move_base 1.17.3")
+    params = [ParamDecl("/move_base/base_local_planner",
+                        "base_local_planner/TrajectoryPlannerROS", "str", location=where(7))]
+    config = graph([NodeDecl("/move_base", "move_base", "move_base")], params, [move_base])
+    instance = config.node("/move_base")
+    assert instance.completeness == "partial" and not instance.is_complete
+    assert any("TrajectoryPlannerROS" in r for r in instance.completeness_reasons)
+    assert move_base.completeness == "model"  # the shared model is not touched
 
 
 def test_nav2_server_plugins_take_their_names_from_the_list_and_defaults():
@@ -241,3 +256,206 @@ def test_a_hostile_or_broken_spawner_file_is_a_diagnostic(tmp_path):
     config = graph(decls, root=str(tmp_path))
     codes = [d.code for d in config.diagnostics if d.code.startswith("PLUGIN")]
     assert codes.count("PLUGIN_PARAM_FILE") == 4
+
+
+_COSTMAP_FILE = {"global_costmap": {"global_costmap": {"ros__parameters": {
+    "plugins": ["obstacle_layer", "inflation_layer"],
+    "obstacle_layer": {"plugin": "nav2_costmap_2d::ObstacleLayer",
+                       "observation_sources": "scan cloud",
+                       "scan": {"topic": "/scan", "data_type": "LaserScan"},
+                       "cloud": {"topic": "points", "data_type": "PointCloud2"}}}}},
+    "planner_server": {"ros__parameters": {"expected_planner_frequency": 1.0}}}
+
+
+def _costmap_graph(version: str = ""):
+    from haros_arch.model.source import Package
+    costmap = Node("nav2_costmap_2d", "nav2_costmap_2d",
+                   calls=[call("publish", "costmap", "nav_msgs/msg/OccupancyGrid")])
+    obstacle = plugin("nav2_costmap_2d", "nav2_costmap_2d::ObstacleLayer",
+                      "nav2_costmap_2d::ObstacleLayer",
+                      call("read", "?.observation_sources", "str", 2),
+                      call("read", "?.?.marking", "bool", 3))
+    inflation = plugin("nav2_costmap_2d", "nav2_costmap_2d::InflationLayer",
+                       "nav2_costmap_2d::InflationLayer",
+                       call("read", "?.inflation_radius", "double", 4))
+    decl = ros2(NodeDecl("/planner_server", "nav2_planner", "planner_server",
+                         remaps=[("/tf", "tf")]))
+    decl.param_files.append((_COSTMAP_FILE, where(2)))
+    workspace = Workspace(root="/nowhere")
+    if version:
+        workspace.packages["nav2_costmap_2d"] = Package("nav2_costmap_2d", "/nowhere/c",
+                                                         version=version)
+    launch = LaunchModel(nodes=[decl])
+    return build(Configuration("c"), launch, workspace,
+                 {n.name: n for n in (costmap, obstacle, inflation)})
+
+
+def test_nav2_planner_server_makes_its_costmap_node_with_layers_and_sources():
+    config = _costmap_graph()
+    costmap = config.node("/global_costmap/global_costmap")
+    assert costmap.origin == "plugin" and costmap.namespace == "/global_costmap/"
+    assert costmap.remaps == [("/tf", "tf")]  # the process's arguments
+    assert links_of(config, "/global_costmap/global_costmap") == [
+        ("publish", "/global_costmap/costmap"),
+        ("read", "/global_costmap/global_costmap/inflation_layer.inflation_radius"),
+        ("read", "/global_costmap/global_costmap/obstacle_layer.cloud.data_type"),
+        ("read", "/global_costmap/global_costmap/obstacle_layer.cloud.marking"),
+        ("read", "/global_costmap/global_costmap/obstacle_layer.cloud.topic"),
+        ("read", "/global_costmap/global_costmap/obstacle_layer.observation_sources"),
+        ("read", "/global_costmap/global_costmap/obstacle_layer.plugin"),
+        ("read", "/global_costmap/global_costmap/obstacle_layer.scan.data_type"),
+        ("read", "/global_costmap/global_costmap/obstacle_layer.scan.marking"),
+        ("read", "/global_costmap/global_costmap/obstacle_layer.scan.topic"),
+        ("read", "/global_costmap/global_costmap/plugins"),
+        ("subscribe", "/global_costmap/points"),
+        ("subscribe", "/scan"),
+    ]
+    types = {link.resource.name: link.type for link in config.links if link.kind == "subscribe"}
+    assert types == {"/scan": "sensor_msgs/msg/LaserScan",
+                     "/global_costmap/points": "sensor_msgs/msg/PointCloud2"}
+    scan = next(link for link in config.links if link.resource.name == "/scan")
+    assert scan.location.line == 2  # the parameter file that names the topic
+    # the planner's own entry of the file is not the costmap's
+    assert not [p for p in config.parameters
+                if p.name.startswith("/global_costmap/") and "expected" in p.name]
+    assert [d.code for d in config.diagnostics if d.code.startswith("PLUGIN")
+            and "costmap" in d.message] == []
+
+
+def test_nav2_from_1_4_resolves_a_relative_source_topic_in_the_parent_namespace():
+    config = _costmap_graph("1.5.0")
+    assert ("subscribe", "/points") in links_of(config, "/global_costmap/global_costmap")
+
+
+def test_ros1_costmap_obstacle_layer_subscribes_its_observation_sources():
+    move_base = Node("move_base", "move_base")
+    obstacle = plugin("costmap_2d", "costmap_2d::ObstacleLayer", "costmap_2d::ObstacleLayer",
+                      call("read", "~?/?/topic", "str", 2, handle_namespace="~?/?"),
+                      # message_filters::Subscriber(g_nh, topic, 50): topic unknown here
+                      call("subscribe", "?", "sensor_msgs/LaserScan", 154))
+    defaults = [plugin("navfn", "navfn/NavfnROS", "navfn::NavfnROS"),
+                plugin("base_local_planner", "base_local_planner/TrajectoryPlannerROS",
+                       "base_local_planner::TrajectoryPlannerROS")]
+    params = [
+        ParamDecl("/move_base/global_costmap/plugins",
+                  [{"name": "obstacles", "type": "costmap_2d::ObstacleLayer"}]),
+        ParamDecl("/move_base/global_costmap/obstacles/observation_sources", "laser",
+                  location=where(5)),
+        ParamDecl("/move_base/global_costmap/obstacles/laser/data_type", "LaserScan"),
+        ParamDecl("/move_base/global_costmap/obstacles/laser/topic", "scan",
+                  location=where(6)),
+    ]
+    config = graph([NodeDecl("/r/move_base", "move_base", "move_base", "/r/")],
+                   [ParamDecl("/r" + p.name, p.value, location=p.location) for p in params],
+                   [move_base, obstacle, *defaults])
+    links = links_of(config, "/r/move_base")
+    assert ("subscribe", "/r/scan") in links
+    assert ("read", "/r/move_base/global_costmap/obstacles/laser/topic") in links
+    assert ("read", "/r/move_base/global_costmap/obstacles/laser/data_type") in links
+    (scan,) = [link for link in config.links if link.kind == "subscribe"]
+    assert (scan.type, scan.location.line) == ("sensor_msgs/LaserScan", 6)
+
+
+def test_ros1_mavros_loads_exported_plugins_its_black_and_white_lists_let_through():
+    def mavros_plugin(name, *calls):
+        node = plugin("mavros", name, f"mavros::std_plugins::{name}", *calls)
+        node.plugin_base = "mavros::plugin::PluginBase"
+        return node
+
+    mavros = Node("mavros", "mavros_node", calls=[call("read", "~fcu_url", "str")])
+    plugins = [mavros_plugin("imu", call("publish", "~imu/data", "sensor_msgs/Imu")),
+               mavros_plugin("vibration", call("publish", "~vibration/raw", "V")),
+               mavros_plugin("safety_area", call("read", "~safety_area/p1/x", "double")),
+               plugin("other", "other/imu2", "o::Imu", call("publish", "~wrong", "X"))]
+    params = [ParamDecl("/mavros/plugin_blacklist", ["VIB*", "safety_*"], location=where(3)),
+              ParamDecl("/mavros/plugin_whitelist", ["safety_area"])]
+    config = graph([NodeDecl("/mavros", "mavros", "mavros_node")], params,
+                   [mavros, *plugins])
+    assert links_of(config, "/mavros") == [
+        ("publish", "/mavros/imu/data"),
+        ("read", "/mavros/fcu_url"),
+        ("read", "/mavros/plugin_blacklist"),
+        ("read", "/mavros/plugin_whitelist"),
+        ("read", "/mavros/safety_area/p1/x"),  # black-listed, then white-listed
+    ]
+    # an allow list alone: everything else is denied
+    config = graph([NodeDecl("/mavros", "mavros", "mavros_node")],
+                   [ParamDecl("/mavros/plugin_whitelist", ["imu"])], [mavros, *plugins])
+    assert [k for k in links_of(config, "/mavros") if k[0] == "publish"] == [
+        ("publish", "/mavros/imu/data")]
+
+
+def _ros1_controllers(decls, extra_nodes=()):
+    diff = plugin("diff_drive_controller", "diff_drive_controller/DiffDriveController",
+                  "diff_drive_controller::DiffDriveController",
+                  call("subscribe", "?/cmd_vel", "geometry_msgs/Twist", handle_namespace="?"),
+                  call("read", "?/publish_rate", "double", handle_namespace="?"))
+    params = [ParamDecl("/r/base/type", "diff_drive_controller/DiffDriveController",
+                        location=where(4)),
+              ParamDecl("/r/joints/type", "joint_state_controller/JointStateController",
+                        location=where(5))]
+    return graph(decls, params, [diff, *extra_nodes])
+
+
+def test_ros1_spawned_controllers_without_a_manager_in_the_configuration_are_own_instances():
+    spawner = NodeDecl("/r/spawner", "controller_manager", "spawner", "/r/",
+                       args="base joints --timeout 10")
+    config = _ros1_controllers([spawner])
+    base = config.node("/r/base")
+    assert base.origin == "plugin" and base.node.name.endswith("DiffDriveController")
+    assert links_of(config, "/r/base") == [
+        ("read", "/r/base/publish_rate"), ("read", "/r/base/type"),
+        ("subscribe", "/r/base/cmd_vel")]
+    (missing,) = [d for d in config.diagnostics if d.code == "PLUGIN_NOT_FOUND"]
+    assert missing.location.line == 5 and "JointStateController" in missing.message
+
+
+def test_ros1_spawned_controllers_go_to_the_instance_serving_their_manager():
+    hardware = Node("robot_base", "base_node",
+                    calls=[call("server", "controller_manager/load_controller", "L")])
+    spawner = NodeDecl("/spawner", "controller_manager", "spawner", "/",
+                       args="--namespace=r base")
+    config = _ros1_controllers([NodeDecl("/r/base_node", "robot_base", "base_node", "/r/"),
+                                spawner], [hardware])
+    assert config.node("/r/base") is None
+    assert ("subscribe", "/r/base/cmd_vel") in links_of(config, "/r/base_node")
+    assert ("read", "/r/base/type") in links_of(config, "/r/base_node")
+    assert ros1_spawn_args(NodeDecl("/c", "controller_manager", "controller_manager",
+                                    args="spawn a b")) == (["a", "b"], "")
+
+
+def test_ros2_plugin_nodes_leave_their_hosts_framework_calls_to_the_host():
+    framework = call("publish", "/diagnostics", "diagnostic_msgs/msg/DiagnosticArray", 268)
+    mavros = Node("mavros", "mavros_node", calls=[framework])
+    imu = plugin("mavros", "imu", "mavros::plugin::PluginFactoryTemplate<Imu>", framework,
+                 call("publish", "~/data", "sensor_msgs/msg/Imu", 40))
+    imu.plugin_base, imu.rosname = "mavros::plugin::PluginFactory", "imu"
+    config = graph([ros2(NodeDecl("/mavros/mavros", "mavros", "mavros_node", "/mavros/"))],
+                   nodes=[mavros, imu])
+    assert links_of(config, "/mavros/imu") == [("publish", "/mavros/imu/data")]
+    assert links_of(config, "/mavros/mavros") == [("publish", "/diagnostics")]
+
+
+def test_mavros_with_no_exported_plugin_in_view_is_partial():
+    mavros = Node("mavros", "mavros_node", calls=[call("read", "~fcu_url", "str")])
+    config = graph([NodeDecl("/mavros", "mavros", "mavros_node")], nodes=[mavros])
+    assert [d.code for d in config.diagnostics] == ["PLUGIN_CLASS_UNKNOWN"]
+    assert config.node("/mavros").completeness == "partial"
+
+
+def test_a_voxel_layer_runs_its_obstacle_layer_code_too():
+    move_base = Node("move_base", "move_base")
+    obstacle = plugin("costmap_2d", "costmap_2d::ObstacleLayer", "costmap_2d::ObstacleLayer",
+                      call("read", "~?/observation_sources", "str", 78, handle_namespace="~?"))
+    voxel = plugin("costmap_2d", "costmap_2d::VoxelLayer", "costmap_2d::VoxelLayer",
+                   call("read", "~?/z_voxels", "int", 60, handle_namespace="~?"))
+    defaults = [plugin("navfn", "navfn/NavfnROS", "navfn::NavfnROS"),
+                plugin("base_local_planner", "base_local_planner/TrajectoryPlannerROS",
+                       "base_local_planner::TrajectoryPlannerROS")]
+    params = [ParamDecl("/move_base/local_costmap/plugins",
+                        [{"name": "voxels", "type": "costmap_2d::VoxelLayer"}])]
+    config = graph([NodeDecl("/move_base", "move_base", "move_base")], params,
+                   [move_base, obstacle, voxel, *defaults])
+    links = links_of(config, "/move_base")
+    assert ("read", "/move_base/local_costmap/voxels/z_voxels") in links
+    assert ("read", "/move_base/local_costmap/voxels/observation_sources") in links

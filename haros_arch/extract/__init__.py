@@ -16,6 +16,7 @@ from dataclasses import replace
 from .. import diagnostics as diag
 from ..diagnostics import Diagnostic
 from ..model.source import Node
+from ..model.values import UNKNOWN_MARK
 from ..workspace import Workspace
 
 AUTO_CACHE = "auto"  # cache_dir: the default cache folder (``cpp.cache.default_folder``)
@@ -37,7 +38,7 @@ def extract_nodes(nodes: Sequence[Node], workspace: Workspace, *,
                                   cache_dir=cache_dir, jobs=jobs,
                                   compile_commands=compile_commands)
         for node, result in zip(cpp, batch.results, strict=True):
-            node.calls, node.rosname = result.calls, result.rosname
+            node.calls, node.rosname = result.calls, _rosname(node, result.rosname)
             _process_nodes(node, result.rosnames)
         found.extend(batch.all_diagnostics())
         for node, result in zip(cpp, batch.results, strict=True):
@@ -51,9 +52,10 @@ def extract_nodes(nodes: Sequence[Node], workspace: Workspace, *,
 
 
 # What leaves a node's calls partly unknown, per language: the code of the diagnostic of
-# each cause (an error left in a C++ unit, a file that could not be read or parsed)
+# each cause (a C++ error that can hide a call, ``cpp.recall``; a file that could not be
+# read or parsed)
 _PARTIAL_CAUSES = {
-    "cpp": ("CPP_PARSE_ERROR", "CPP_PARSE_FAILED", "FILE_UNREADABLE"),
+    "cpp": ("CPP_CALL_MISSED", "CPP_ERROR_NEAR_CALL", "CPP_PARSE_FAILED", "FILE_UNREADABLE"),
     "python": ("PY_PARSE_ERROR", "PY_TOO_COMPLEX", "FILE_UNREADABLE"),
 }
 _PARTIAL_CODE = {"cpp": "CPP_NODE_PARTIAL", "python": "PY_NODE_PARTIAL"}
@@ -94,6 +96,14 @@ def _paths(node: Node, workspace: Workspace) -> list[str]:
     return [s if os.path.isabs(s) else os.path.join(workspace.root, s) for s in node.sources]
 
 
+def _rosname(node: Node, found: str | None) -> str | None:
+    """The node name the code gives: a plugin's, found by the build stage (mavros'
+    ``Plugin(uas_, "imu")``), stays unless extraction finds one wholly known."""
+    if node.kind == "plugin" and node.rosname and (not found or UNKNOWN_MARK in found):
+        return node.rosname
+    return found
+
+
 def extract_node(node: Node, workspace: Workspace) -> list[Diagnostic]:
     sources = _paths(node, workspace)
     if node.language == "cpp" and sources:
@@ -101,7 +111,7 @@ def extract_node(node: Node, workspace: Workspace) -> list[Diagnostic]:
 
         result = extract_cpp(sources, workspace)
         node.calls = result.calls
-        node.rosname = result.rosname
+        node.rosname = _rosname(node, result.rosname)
         _process_nodes(node, result.rosnames)
         return [*result.diagnostics, *completeness(node, result.diagnostics)]
     if node.language == "python" and sources:

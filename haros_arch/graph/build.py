@@ -9,6 +9,7 @@ from dataclasses import replace
 from typing import Any
 
 from .. import diagnostics as diag
+from ..diagnostics import Diagnostic
 from ..launch.model import LaunchModel, NodeDecl
 from ..model.rosname import RosName, namespace_of, remap, resolve, resolve_remaps
 from ..model.runtime import (
@@ -22,10 +23,12 @@ from ..model.runtime import (
     Service,
     Topic,
 )
-from ..model.source import Node, PrimitiveCall
+from ..model.source import NUMBERED, Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK
 from ..models.commands import command_node
+from ..plugins.attach import PluginModels
 from ..plugins.attach import attach as attach_plugins
+from ..robot.attach import attach as attach_descriptions
 from ..workspace import Workspace, installed_roots
 from .actions import action_links
 from .processes import guessed_names, process_nodes, process_params
@@ -89,8 +92,10 @@ def remaps_in_args(args: str) -> list[tuple[str, str]]:
 
 
 def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
-          nodes: Mapping[str, Node]) -> Configuration:
-    """Fill ``config`` with node instances, resources and links; ``nodes`` by pkg/exec."""
+          nodes: Mapping[str, Node], plugin_models: PluginModels | None = None,
+          ) -> Configuration:
+    """Fill ``config`` with node instances, resources and links; ``nodes`` by pkg/exec;
+    ``plugin_models`` finds plugin classes of packages without source in their models."""
     resources = Resources(config)
     config.diagnostics.extend(launch.diagnostics)
     config.diagnostics.extend(guessed_names(launch, nodes))
@@ -119,12 +124,21 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
         remaps = resolve_remaps(instance.remaps, instance.namespace, instance.name)
         for call in instance.node.calls_of(own):
             for each in element_calls(call, instance, resources):  # list parameters
-                link(instance, each, remaps, resources, config)
-    for instance, calls in attach_plugins(config, started, nodes, resources, workspace):
+                made = link(instance, each, remaps, resources, config)
+                if each.name_param is not None and made.rosname.is_unresolved:
+                    config.diagnostics.append(_name_param_unset(instance, each))
+    # robot descriptions first: a ros2_control Gazebo plugin starts a controller manager
+    # whose controllers the plugin hosts load
+    described = attach_descriptions(config, launch, started, workspace, resources)
+    for instance, calls in [*attach_plugins(config, [*started, *described.managers], nodes,
+                                            resources, workspace, plugin_models),
+                           *described.calls]:
         remaps = resolve_remaps(instance.remaps, instance.namespace, instance.name)
         for call in calls:
             for each in element_calls(call, instance, resources):
-                link(instance, each, remaps, resources, config)
+                made = link(instance, each, remaps, resources, config)
+                if each.name_param is not None and made.rosname.is_unresolved:
+                    config.diagnostics.append(_name_param_unset(instance, each))
     for action, call, name in action_links(config):
         link(action.node, call, {}, resources, config, name)
     _namespace_values(config)
@@ -202,6 +216,9 @@ def is_container(decl: NodeDecl) -> bool:
 
 # the loader services a container's own node serves (rclcpp_components' ComponentManager;
 # nodelet's Loader in a manager), private to the container's node
+# parameters of a numbered family read at most (robot_localization reads until one is unset)
+_NUMBERED_LIMIT = 100
+
 _CONTAINER_SERVICES = {
     2: (("~/_container/load_node", "composition_interfaces/srv/LoadNode"),
         ("~/_container/unload_node", "composition_interfaces/srv/UnloadNode"),
@@ -301,7 +318,12 @@ def _given_name(call: PrimitiveCall, instance: NodeInstance, resources: Resource
     value: str | None = call.name_default
     if isinstance(param, Parameter) and param.set_by_launch and isinstance(param.value, str):
         value = param.value
-    return call.name if value is None else call.name.replace(UNKNOWN_MARK, value, 1)
+    if value is None:
+        return call.name
+    if value.startswith(("/", "~")) and (
+            call.name == UNKNOWN_MARK or call.name.endswith("/" + UNKNOWN_MARK)):
+        return value  # a global or private name is not resolved in the handle's namespace
+    return call.name.replace(UNKNOWN_MARK, value, 1)
 
 
 def element_calls(call: PrimitiveCall, instance: NodeInstance, resources: Resources
@@ -315,6 +337,8 @@ def element_calls(call: PrimitiveCall, instance: NodeInstance, resources: Resour
         return [call]
     source = _node_scoped(call.name_param) if instance.ros_version == 2 else call.name_param
     full = RosName.make(source, instance.namespace, instance.name).full
+    if call.name_each == NUMBERED:
+        return _numbered_calls(call, full, resources)
     param = resources.by_name.get((Parameter, full))
     value = param.value if isinstance(param, Parameter) and param.set_by_launch else None
     if value is None and instance.ros_version == 2:
@@ -328,6 +352,34 @@ def element_calls(call: PrimitiveCall, instance: NodeInstance, resources: Resour
         return [call]
     return [replace(call, name=name, name_param=None, name_default=None, name_each=None)
             for name in names]
+
+
+def _name_param_unset(instance: NodeInstance, call: PrimitiveCall) -> Diagnostic:
+    """Why a name taken from a parameter stays unknown: the configuration sets none."""
+    param = call.name_param
+    what = {None: f"parameter {param}", NUMBERED: f"parameters {param}0, {param}1, ..."
+            }.get(call.name_each, f"elements of the list parameter {param}")
+    return diag.make("NAME_PARAM_UNSET", call.location, node=instance.name,
+                     kind=call.kind, what=what)
+
+
+def _numbered_calls(call: PrimitiveCall, full: str, resources: Resources
+                    ) -> list[PrimitiveCall]:
+    """One call per parameter ``<full>0``, ``<full>1``, ... that the configuration sets
+    to a name, up to the first one it does not set (robot_localization's ``imu0``);
+    none set: the call as it is."""
+    names: list[str] = []
+    while len(names) < _NUMBERED_LIMIT:
+        param = resources.by_name.get((Parameter, f"{full}{len(names)}"))
+        if not (isinstance(param, Parameter) and param.set_by_launch
+                and isinstance(param.value, str) and param.value):
+            break
+        names.append(param.value)
+    if not names:
+        return [call]
+    written = call.name if UNKNOWN_MARK in call.name else UNKNOWN_MARK
+    return [replace(call, name=written.replace(UNKNOWN_MARK, name, 1), name_param=None,
+                    name_default=None, name_each=None) for name in names]
 
 
 def _dotted_groups(full: str, resources: Resources) -> dict[str, dict[str, Any]] | None:

@@ -26,6 +26,7 @@ from dataclasses import replace
 from .. import diagnostics as diag
 from ..diagnostics import Diagnostic
 from ..launch.model import LaunchModel, NodeDecl, ParamDecl
+from ..launch.ros2.naming import pattern_matches
 from ..model.source import Node
 from ..model.values import UNKNOWN_MARK
 
@@ -55,23 +56,26 @@ def process_params(launch: LaunchModel, nodes: Mapping[str, Node]) -> list[Param
     code gives it (each node of a several-node process gets a copy).
 
     A ROS 2 parameter knows the declaration it was given to (``owner``), so two unnamed
-    nodes in one namespace (both ``/?`` until named) keep their own parameters."""
+    nodes in one namespace (both ``/?`` until named) keep their own parameters. A
+    parameter file's entry for particular nodes (``ParamDecl.pattern``) goes to a node
+    named here only when the name matches, as rcl matches it; to a node never named,
+    to none."""
     by_owner: dict[int, list[str]] = {}
     for index, decl in enumerate(launch.nodes):
         names = [_renamed(decl, own) for own in _own_names(decl, nodes)]
         if names and names[0] != decl.name:
             by_owner[index] = names
-    if not by_owner:
-        return list(launch.params)
     params: list[ParamDecl] = []
     for param in launch.params:
         targets = by_owner.get(param.owner) if param.owner is not None else None
         if not targets or param.node is None:
-            params.append(param)
+            if param.pattern is None:  # a file's entry for a node never named: not given
+                params.append(param)
             continue
         rest = param.name[len(param.node):]
-        params.extend(replace(param, name=target + rest, node=target)
-                      for target in dict.fromkeys(targets))
+        params.extend(replace(param, name=target + rest, node=target, pattern=None)
+                      for target in dict.fromkeys(targets)
+                      if param.pattern is None or pattern_matches(param.pattern, target))
     return params
 
 

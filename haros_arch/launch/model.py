@@ -45,6 +45,13 @@ class NodeDecl:
     # model): the real name is the one its code gives, which may differ
     name_guessed: bool = False
     container: str | None = None  # ROS 2: full name of the container it is loaded into
+    # ROS 2: the parameter files given to the process, as read (rewritten), with where:
+    # they apply by node name to every node the process makes (a nav2 server's costmap)
+    param_files: list[tuple[Any, Location]] = field(default_factory=list, repr=False)
+    # ROS 2: parameter files given to a node whose name is not known, as launch_ros passes
+    # them (``--params-file``): the running node applies the sections for its name, of
+    # which only the /** entries are applied here
+    params_files_given: list[str] = field(default_factory=list)
 
 
 @dataclass
@@ -61,6 +68,15 @@ class ParamDecl:
     # ROS 2: index in LaunchModel.nodes of the node declaration it was given to (several
     # unnamed nodes share the name ``/?`` until the graph names them from their code)
     owner: int | None = None
+    # ROS 2: a parameter file's entry for particular nodes (``turtlebot3_node:``,
+    # ``/**/amcl:``) given to a node whose name is not known yet: the rcl node name
+    # pattern it is for; the graph gives it to the node only when the name it finds
+    # for the node (from its code or model) matches
+    pattern: str | None = None
+    # ROS 1 ``command=`` / ``textfile=`` (``cat FILE``), ROS 2 ``Command()`` /
+    # ``$(command)``: the command line the value comes from, ``?`` for unknown parts
+    # (it is never run; robot descriptions read the xacro file it names)
+    command: str | None = None
 
 
 @dataclass

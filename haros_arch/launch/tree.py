@@ -41,8 +41,8 @@ def node_items(model: LaunchModel, nodes_before: int, params_before: int,
     items = []
     for index in added:
         decl = model.nodes[index]
-        params = [p.name for p in model.params[params_before:]
-                  if p.owner == index or (p.owner is None and len(added) == 1)]
+        params = [p.name for p in model.params[params_before:] if p.pattern is None
+                  and (p.owner == index or (p.owner is None and len(added) == 1))]
         items.append(LaunchItem(
             "node", decl.name, decl.location, namespace=decl.namespace,
             detail=f"{decl.package}/{decl.executable}", condition=condition,
@@ -51,4 +51,4 @@ def node_items(model: LaunchModel, nodes_before: int, params_before: int,
 
 
 def param_names(model: LaunchModel, params_before: int) -> list[str]:
-    return [p.name for p in model.params[params_before:]]
+    return [p.name for p in model.params[params_before:] if p.pattern is None]

@@ -15,6 +15,7 @@ from .diagnostic import Diagnostic
 from .launch_tree import item_from_data
 from .location import NOWHERE, Location
 from .model import Model
+from .robot import description_from_data
 from .rosname import RosName, namespace_of
 from .runtime import (
     LAUNCH_WRITER,
@@ -90,7 +91,9 @@ def node_from_data(data: dict[str, Any], package: str) -> Node:
                 [str(r) for r in data.get("completeness_reasons", ()) if isinstance(r, str)],
                 data.get("model") if isinstance(data.get("model"), str) else None,
                 plugin_class=data.get("plugin_class") if isinstance(
-                    data.get("plugin_class"), str) else None)
+                    data.get("plugin_class"), str) else None,
+                plugin_base=data.get("plugin_base") if isinstance(
+                    data.get("plugin_base"), str) else None)
 
 
 def _completeness(value: Any) -> Completeness:
@@ -222,6 +225,9 @@ def _configuration(data: dict[str, Any], nodes: dict[str, Node],
     config.package_paths = [str(p) for p in data.get("package_paths", ())]
     config.launch_tree = [item for item in map(item_from_data, data.get("launch_tree") or ())
                           if item is not None]
+    config.robot_descriptions = [
+        made for made in map(description_from_data, data.get("robot_descriptions") or ())
+        if made is not None]
     for instance in config.nodes:  # a hint-made node type lists what its instances use
         if instance.node is not None and instance.node.name in hinted:
             calls = instance.node.calls

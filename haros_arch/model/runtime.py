@@ -16,7 +16,8 @@ from .conditions import Condition
 from .diagnostic import Diagnostic
 from .launch_tree import LaunchItem
 from .location import NOWHERE, Location
-from .rosname import RosName, namespace_of
+from .robot import RobotDescription
+from .rosname import RosName, namespace_of, resolve, resolve_remaps
 from .source import KNOWN_COMPLETENESS, Node, PrimitiveCall
 from .values import UNKNOWN_MARK
 
@@ -41,7 +42,7 @@ class NodeInstance:
     args: str = ""
     conditions: tuple[Condition, ...] = ()
     location: Location = NOWHERE
-    origin: str = "launch"  # "launch", or "hint" when a project-file hint created it
+    origin: str = "launch"  # "launch", "hint" (a project-file hint), "plugin" (a host made it)
     ros_version: int = 1  # 2: ROS 2 naming (node-scoped parameters)
     # a roslaunch <test>: only rostest starts it (kept in rostest configurations only)
     test: bool = field(default=False, metadata={"optional": True})
@@ -49,7 +50,9 @@ class NodeInstance:
 
     JSON_VIEWS: ClassVar[dict[str, Callable[[Any], Any]]] = {
         "completeness": lambda n: n.completeness,
+        "remapped": lambda n: n.remapped,
     }
+    JSON_OPTIONAL_VIEWS: ClassVar[tuple[str, ...]] = ("remapped",)  # left out when empty
 
     @property
     def completeness(self) -> str:
@@ -71,6 +74,21 @@ class NodeInstance:
     @property
     def rosname(self) -> RosName:
         return RosName(self.name, self.name, namespace_of(self.name))
+
+    @property
+    def remapped(self) -> list[list[str]]:
+        """``[name in code, name it resolves to, name a remap made of it]`` for each name
+        of this instance's links that one of its remaps changed (once per name)."""
+        rules = resolve_remaps(self.remaps, self.namespace, self.name)
+        out: dict[tuple[str, str], list[str]] = {}
+        for link in self.links:
+            given, full = link.rosname.given, link.rosname.full
+            if UNKNOWN_MARK in given or (given, full) in out:
+                continue
+            before = resolve(given, self.namespace, self.name)
+            if before != full and rules.get(before) == full:
+                out[(given, full)] = [given, before, full]
+        return list(out.values())
 
     def _of(self, kind: str) -> list[Link]:
         return [link for link in self.links if link.kind == kind]
@@ -457,6 +475,9 @@ class Configuration:
     package_paths: list[str] = field(default_factory=list)
     # how the launch files make the nodes: one tree per launch file named (launch_tree.py)
     launch_tree: list[LaunchItem] = field(default_factory=list, metadata={"optional": True})
+    # the robot descriptions spawned into a simulator, as read (robot.py)
+    robot_descriptions: list[RobotDescription] = field(default_factory=list,
+                                                       metadata={"optional": True})
 
     def __repr__(self) -> str:
         return f"Configuration({self.name})"

@@ -30,6 +30,9 @@ CallKind = Literal[
 ]
 
 
+# ``PrimitiveCall.name_each`` of a call named by a numbered family of parameters
+NUMBERED = "#"
+
 @dataclass(frozen=True)
 class Dependency:
     """A dependency declared in package.xml; ``condition`` as written, if any."""
@@ -87,7 +90,9 @@ class PrimitiveCall:
     # a name taken from each element of a list parameter (twist_mux's ``~topics``: one
     # subscription per ``topics[i].topic``): ``name_param`` is the list, ``name_each``
     # the element's field (``.``: the element itself); the graph makes one call per
-    # element the launch file gives
+    # element the launch file gives. ``#``: a numbered family of parameters instead
+    # (robot_localization's ``imu0``, ``imu1``, ...: ``name_param`` "imu"), one call per
+    # parameter set, from 0 up to the first one not set, as the code reads them
     name_each: str | None = field(default=None, metadata={"optional": True})
 
 
@@ -136,6 +141,9 @@ class Node:
     # a nodelet or plugin class: its C++ type (``executable`` is its pluginlib lookup
     # name, ``pkg/Name`` or the type itself)
     plugin_class: str | None = field(default=None, metadata={"optional": True})
+    # a plugin class: the base class its plugin description names (``base_class_type``),
+    # by which a host that loads every exported class of a base finds it (mavros)
+    plugin_base: str | None = field(default=None, metadata={"optional": True})
 
     # the node's name (``pkg/exec``, ``pkg/Class``) first, as DESIGN's JSON contract says
     JSON_HEAD: ClassVar[dict[str, Any]] = {"name": lambda node: node.name}
@@ -147,8 +155,9 @@ class Node:
         return self.completeness in KNOWN_COMPLETENESS
 
     def mark_partial(self, reason: str, limit: int = 5) -> None:
-        """Calls may be missing for ``reason``; keeps the first ``limit`` reasons."""
-        if self.completeness == "complete":
+        """Calls may be missing for ``reason``; keeps the first ``limit`` reasons. A
+        node whole from an interface model (``model``) is partial too."""
+        if self.completeness in ("complete", "model"):
             self.completeness = "partial"
         if len(self.completeness_reasons) < limit and reason not in self.completeness_reasons:
             self.completeness_reasons.append(reason)

@@ -16,7 +16,7 @@ node took.
 from __future__ import annotations
 
 import copy
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import replace
 
 from .. import diagnostics as diag
@@ -25,6 +25,7 @@ from ..graph.build import is_container, nodelet_plugin
 from ..launch.model import LaunchModel, NodeDecl
 from ..model.location import Location
 from ..model.source import Node, Package
+from ..plugins.attach import class_packages
 from ..workspace import Workspace
 from .commands import command_node
 from .format import InterfaceModel
@@ -91,6 +92,25 @@ class Attacher:
         found.extend(self.library.diagnostics)
         self.library.diagnostics.clear()
         return result
+
+    def plugin_models(self, launch: LaunchModel, environment: Mapping[str, str]
+                      ) -> Callable[[str], Node | None]:
+        """For plugin attachment (``plugins.attach``): a plugin class of a package without
+        source to its node in that package's model (kind ``plugin``, by lookup name or
+        C++ type; or any node by ``pkg/exec``, for the nodes hosts make), for the
+        configuration's distribution."""
+        distro = choose_distro(self.distro, environment, launch)[0]
+
+        def find(cls: str) -> Node | None:
+            for package in class_packages(cls):
+                model = self.library.find(package, distro)
+                source = None if model is None else next(
+                    (n for n in model.nodes if n.name == cls or (n.kind == "plugin" and cls in (
+                        n.executable, (n.plugin_class or "").lstrip(":")))), None)
+                if model is not None and source is not None:
+                    return self._node(model, source.executable)
+            return None
+        return find
 
     def _node(self, model: InterfaceModel, executable: str) -> Node | None:
         key = (model.distro or "", model.package, executable)

@@ -1,4 +1,6 @@
-"""Nodes whose interface is their command line: ``rostopic pub`` / ``ros2 topic pub``.
+"""Nodes whose interface is their command line: ``rostopic pub`` / ``ros2 topic pub``,
+ROS 1 topic_tools' ``relay``, ``mux``, ``demux``, ``throttle`` and ``drop``, and ROS 1
+controller_manager's ``spawner``.
 
 A launch file that starts ``<node pkg="rostopic" type="rostopic" args="pub /initialpose
 geometry_msgs/PoseWithCovarianceStamped '{...}'"/>`` runs a publisher of that topic and
@@ -11,6 +13,23 @@ latch=latch, queue_size=100)`` with ``latch = rate is None or --latch``
 (ros_comm ``tools/rostopic/src/rostopic/__init__.py``, ``_rostopic_cmd_pub`` and
 ``create_publisher``). For ros2 topic pub the QoS is what its ``--qos-*`` options say
 (unknown, ``None``, when they say nothing: its defaults changed between releases).
+
+topic_tools (ros_comm ``tools/topic_tools/src``, noetic-devel): ``relay IN [OUT]``
+subscribes IN and advertises OUT (default ``IN_relay``), reading ``~unreliable``,
+``~lazy``, ``~stealth`` (relay.cpp:146-183); ``mux OUT IN...`` advertises OUT and the
+latched ``mux/selected``, subscribes every IN, serves ``OUT_select`` and
+``mux/select|add|list|delete`` (mux.cpp:291-380); ``demux IN OUT...`` the other way round
+under ``demux/`` (demux.cpp:247-295); ``throttle messages IN RATE [OUT]`` and ``throttle
+bytes IN RATE WINDOW [OUT]`` (default ``IN_throttle``, throttle.cpp:181-246); ``drop IN X
+Y [OUT]`` (default ``IN_drop``, drop.cpp:65-90). Their messages are of any type
+(``ShapeShifter``): the calls have none.
+
+controller_manager's ROS 1 ``spawner`` (ros_control ``controller_manager/scripts/spawner``,
+noetic-devel): the services are NS + ``controller_manager/load_controller``,
+``switch_controller`` and ``unload_controller`` with NS the ``--namespace`` argument
+(default empty, a ``/`` added, lines 95-117), called through rospy.ServiceProxy (lines
+59-62, 124-137); ``--wait-for TOPIC`` subscribes TOPIC (std_msgs/Bool, line 160); it reads
+``/use_sim_time`` with the default False (line 140).
 """
 
 from __future__ import annotations
@@ -19,7 +38,7 @@ import shlex
 from typing import Any
 
 from ..launch.model import NodeDecl
-from ..model.source import Node, PrimitiveCall
+from ..model.source import CallKind, Node, PrimitiveCall
 
 ROS1_VALUE_OPTIONS = {"-r", "--rate", "-f", "--file"}
 ROS2_VALUE_OPTIONS = {"-r", "--rate", "-p", "--print", "-t", "--times", "-w",
@@ -39,7 +58,78 @@ def command_node(decl: NodeDecl) -> Node | None:
         return _rostopic(decl, words)
     if decl.executable == "ros2" and words[:2] == ["topic", "pub"]:
         return _ros2_topic(decl, words[1:])
+    if decl.package == "topic_tools" and decl.ros_version == 1:
+        return _topic_tools(decl, words)
+    if (decl.package, decl.executable) == ("controller_manager", "spawner") and (
+            decl.ros_version == 1):
+        return _spawner(decl, words)
     return None
+
+
+def _spawner(decl: NodeDecl, words: list[str]) -> Node | None:
+    """A ROS 1 controller spawner from its arguments (see the module's docstring)."""
+    positional, values, _flags = _positional(
+        words, {"--wait-for", "--namespace", "--timeout", "--shutdown-timeout"})
+    if not positional:  # argparse refuses it: no controller named
+        return None
+    namespace = values.get("--namespace", "")
+    if namespace and not namespace.endswith("/"):
+        namespace += "/"
+    calls = [PrimitiveCall("client", f"{namespace}controller_manager/{verb}_controller",
+                           f"controller_manager_msgs/{verb.capitalize()}Controller",
+                           location=decl.location, origin="arguments")
+             for verb in ("load", "switch", "unload")]
+    if values.get("--wait-for"):
+        calls.append(PrimitiveCall("subscribe", values["--wait-for"], "std_msgs/Bool",
+                                   location=decl.location, origin="arguments"))
+    calls.append(PrimitiveCall("read", "/use_sim_time", "bool", location=decl.location,
+                               origin="arguments", has_default=True, default=False))
+    node = _node(decl, "controller_manager", calls[0], "python")
+    node.calls = calls
+    return node
+
+
+def _topic_tools(decl: NodeDecl, words: list[str]) -> Node | None:
+    """A ROS 1 topic_tools node from its arguments (see the module's docstring)."""
+    tool, args = decl.executable, [w for w in words if not w.startswith("__")]
+    calls: list[tuple[CallKind, str, str | None]] = []  # (kind, name, type)
+    params = {"relay": ["~unreliable", "~lazy", "~stealth"],
+              "mux": ["~lazy", "~latch", "~initial_topic",
+                      "~wait_publisher_initialization", "~wait_publisher_second"],
+              "demux": [], "throttle": ["~wall_clock", "~unreliable", "~lazy",
+                                        "~force_latch"], "drop": []}.get(tool)
+    if params is None:
+        return None
+    if tool == "relay" and 1 <= len(args) <= 2:
+        calls = [("subscribe", args[0], None),
+                 ("publish", args[1] if len(args) > 1 else args[0] + "_relay", None)]
+    elif tool in ("mux", "demux") and len(args) >= 2:
+        one: CallKind = "publish" if tool == "mux" else "subscribe"
+        many: CallKind = "subscribe" if tool == "mux" else "publish"
+        calls = [(one, args[0], None), *((many, name, None) for name in args[1:]),
+                 ("publish", f"{tool}/selected", "std_msgs/String")]
+        kind = tool.capitalize()
+        calls += [("server", f"{tool}/{verb}", f"topic_tools/{kind}{verb.capitalize()}")
+                  for verb in ("select", "add", "list", "delete")]
+        if tool == "mux":
+            calls.append(("server", args[0] + "_select", "topic_tools/MuxSelect"))
+    elif tool == "throttle" and len(args) >= 3 and args[0] in ("messages", "bytes"):
+        out = 3 if args[0] == "messages" else 4
+        calls = [("subscribe", args[1], None), ("publish", args[out] if len(args) > out
+                                               else args[1] + "_throttle", None)]
+    elif tool == "drop" and len(args) in (3, 4):
+        calls = [("subscribe", args[0], None),
+                 ("publish", args[3] if len(args) == 4 else args[0] + "_drop", None)]
+    if not calls:
+        return None
+    made = [PrimitiveCall(kind, name, type_, queue_size=None if kind == "server" else (
+        1 if name.endswith("/selected") else 10), latch=name.endswith("/selected"),
+        location=decl.location, origin="arguments") for kind, name, type_ in calls]
+    made += [PrimitiveCall("read", name, location=decl.location, origin="arguments")
+             for name in params]
+    node = _node(decl, "topic_tools", made[0], "cpp")
+    node.calls = made
+    return node
 
 
 def _words(args: str) -> list[str]:

@@ -3,7 +3,7 @@
 A versioned serialisation of the model classes (``Node``, ``PrimitiveCall``) through the
 one generic serialiser, under a header that says where it comes from::
 
-    {"schema": "haros-arch-model/1", "package": "amcl", "distro": "noetic",
+    {"schema": "haros-arch-model/2", "package": "amcl", "distro": "noetic",
      "version": "1.17.3",                       # the package's package.xml version
      "source": {"repository": "github:ros-planning/navigation",
                 "branch": "noetic-devel", "commit": "<40 hex>", "path": "amcl"},
@@ -14,10 +14,22 @@ one generic serialiser, under a header that says where it comes from::
                 "calls": [{"kind": "subscribe", "name": "scan", ...}],
                 "completeness": "partial", "completeness_reasons": [...]}]}
 
+A plugin class is a node of kind ``plugin`` whose ``executable`` is its pluginlib lookup
+name, with ``plugin_class`` (its C++ type) and, optionally, ``plugin_base`` (the base class
+its plugin description names) and ``rosname`` (the name of the node it makes, for plugins
+that are nodes of their own: mavros'); hosts find modelled classes by lookup name or type.
+Optional fields are additions within ``haros-arch-model/1``: readers ignore what they do
+not know, and a file without them reads as before.
+
 Calls keep the names as the code writes them (``~initial_pose``, ``scan``,
 ``/map``), their types, queue sizes or QoS, parameter reads with their defaults, and
 ``name_param`` / ``name_default`` for names taken from parameters. Files and lines
 are relative to the repository. Users write their own files in the same format.
+
+Versions: 2 adds names taken from a family of parameters (``name_each: "#"``: one call
+per parameter ``<name_param>0``, ``<name_param>1``, ... the configuration sets, as
+robot_localization reads ``imu0``, ``imu1``); a version 1 file reads unchanged (it
+cannot hold that), a file of a later version is refused with its version named.
 """
 
 from __future__ import annotations
@@ -32,7 +44,8 @@ from ..model.load import node_from_data
 from ..model.serialise import to_data
 from ..model.source import CALL_KINDS, Node
 
-SCHEMA = "haros-arch-model/1"
+SCHEMA_VERSION = 2
+SCHEMA = f"haros-arch-model/{SCHEMA_VERSION}"
 SCHEMA_PREFIX = "haros-arch-model/"
 _TEXT_FIELDS = ("type", "name_param", "name_default", "name_each", "handle_namespace",
                 "node_name", "callback")
@@ -91,6 +104,10 @@ def from_document(data: Any, path: str = "") -> InterfaceModel:
     schema = data.get("schema")
     if not isinstance(schema, str) or not schema.startswith(SCHEMA_PREFIX):
         raise ModelFileError(f"schema is {schema!r}, expected {SCHEMA!r}")
+    version = schema.removeprefix(SCHEMA_PREFIX)
+    if not (version.isdigit() and len(version) < 4 and 1 <= int(version) <= SCHEMA_VERSION):
+        raise ModelFileError(f"schema version {version[:20]!r} is not one this reader "
+                             f"knows (1 to {SCHEMA_VERSION})")
     package = data.get("package")
     if not isinstance(package, str) or not package:
         raise ModelFileError("'package' must be the package's name")

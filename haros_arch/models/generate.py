@@ -16,8 +16,9 @@ Each entry's source tree is expected at ``SOURCES/<owner>+<name>@<commit[:12]>``
 unit of work, run by the same code as a workspace analysis (workspace scan, build
 files, C++ and Python extraction): on a local process pool by default, or on a Dask
 distributed cluster (``--scheduler ADDRESS``; the optional ``dask`` extra). A node is
-``partial`` where extraction says so (its sources kept errors) and where a line of its
-C++ calls a ROS API function with no extracted call there (``_mark_unextracted``). An
+``partial`` where extraction says so (``extract.cpp.recall``: a line of its C++ that
+calls a ROS API function with no call extracted there, an error in a function that
+calls the API). An
 override file ``OVERRIDES/<distro>/<package>.yaml`` (hint format, reviewed like code)
 may complete a model; what it adds has origin ``override``.
 """
@@ -41,7 +42,7 @@ from ..files import read_text
 from ..graph.hints import apply_node_hints
 from ..model.conditions import Condition
 from ..model.location import Location
-from ..model.source import Node, PrimitiveCall
+from ..model.source import NUMBERED, Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK
 from ..pipeline import read_build_files
 from ..workspace import scan
@@ -51,9 +52,10 @@ OVERRIDES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "overrides"
 COMMIT = re.compile(r"^[0-9a-f]{40}$")
 REPOSITORY = re.compile(r"^github:[A-Za-z0-9_.-]+/[A-Za-z0-9_.-]+$")
 # an override node block may also say why the node is now complete, put calls the
-# extractor took as unconditional under the condition that guards them, and name calls
-# by the elements of a list parameter
-OVERRIDE_KEYS = ("complete", "conditions", "names")
+# extractor took as unconditional under the condition that guards them, name calls by
+# the elements of a list parameter or a numbered family of parameters, and drop the
+# calls of source files the node links but never runs (a library's other classes)
+OVERRIDE_KEYS = ("complete", "partial", "conditions", "names", "drop", "handles")
 
 
 class ListError(ValueError):
@@ -195,8 +197,6 @@ def _build(task: Task, outcome: Outcome) -> Outcome:
         return outcome
     found = read_build_files(package, workspace)
     found += extract_nodes(package.nodes, workspace, cache_dir=task.cache_dir, jobs=1)
-    for node in package.nodes:  # extraction marked it partial where sources had errors
-        _mark_unextracted(node, task.tree)
     override = _apply_override(task, package.nodes, found)
     outcome.override_problems = [f"{d.location.file}: {d.message}" for d in found
                                  if d.code == "HINT_INVALID"]
@@ -217,42 +217,10 @@ def _build(task: Task, outcome: Outcome) -> Outcome:
     return outcome
 
 
-def _api_names() -> frozenset[str]:
-    """The ROS API's C++ function names, from the extractor's tables."""
-    from ..extract.cpp import api
-
-    tables = (api.ROSCPP, api.LIBRARIES, api.RCLCPP, api.RCLCPP_LIBRARIES)
-    return frozenset(name for table in tables for _, name in table)
-
-
-def _mark_unextracted(node: Node, root: str) -> None:
-    """A recall check on the extractor: a line of the node's C++ sources that calls a
-    ROS API function as a member (``nh.subscribe(``, ``->create_publisher<``) with no
-    extracted call within two lines of it means calls may be missing (code in a class
-    template, say); such a node is partial, with the first places."""
-    if node.language != "cpp":
-        return
-    names = sorted((n for n in _api_names() if "::" not in n and len(n) > 4), key=len)
-    pattern = re.compile(r"(?:\.|->)\s*(" + "|".join(map(re.escape, names)) + r")\s*[<(]")
-    seen = {(c.location.file, c.location.line) for c in node.calls}
-    missing: list[str] = []
-    for source in node.sources:
-        text, _problems = read_text(os.path.join(root, source), Location(file=source))
-        for number, line in enumerate((text or "").splitlines(), 1):
-            code = line.split("//", 1)[0]
-            if code.lstrip().startswith("*") or not pattern.search(code):
-                continue
-            if not any((source, near) in seen for near in range(number - 2, number + 3)):
-                missing.append(f"{source}:{number}: {code.strip()[:80]}")
-    for place in missing[:3]:
-        node.mark_partial(f"{place} calls the ROS API, but no call was extracted there")
-    if len(missing) > 3:
-        node.mark_partial(f"{len(missing)} such call sites in all")
-
-
 def _apply_override(task: Task, nodes: list[Node], found: list[Diagnostic]) -> str | None:
-    """The reviewed override of the package, if any: hint-format calls per node, and
-    ``complete: <why>`` to say the node's interface is now whole."""
+    """The reviewed override of the package, if any: hint-format calls per node (a node
+    the build files do not show is made from them), ``complete: <why>`` to say the
+    node's interface is now whole, ``partial: <why>`` to say what it still lacks."""
     relative = os.path.join(task.entry.distro, task.package + ".yaml")
     path = os.path.join(task.overrides, relative)
     if not os.path.isfile(path):
@@ -273,9 +241,15 @@ def _apply_override(task: Task, nodes: list[Node], found: list[Diagnostic]) -> s
             if call.origin == "hint":
                 call.origin = "override"
         block = blocks.get(name)
+        if isinstance(block, dict) and isinstance(block.get("rosname"), str):
+            node.rosnames = []  # the one ROS node the override names
         if isinstance(block, dict):
+            _override_handles(node, block.get("handles"), relative, found)
+            _override_drop(node, block.get("drop"), relative, found)
             _override_conditions(node, block.get("conditions"), relative, found)
             _override_names(node, block.get("names"), relative, found)
+        if isinstance(block, dict) and isinstance(block.get("partial"), str):
+            node.mark_partial(f"override {relative}: {block['partial']}")
         if isinstance(block, dict) and isinstance(block.get("complete"), str):
             node.completeness = "complete"
             node.completeness_reasons = [f"completed by override {relative}: "
@@ -298,16 +272,71 @@ def _override_conditions(node: Node, entries: Any, relative: str,
             call.conditions = (*call.conditions, Condition(str(text), "source", "if", where))
 
 
+def _override_handles(node: Node, entries: Any, relative: str,
+                      found: list[Diagnostic]) -> None:
+    """``handles: [{file: F, kinds: [read], namespace: "~"}]``: the calls of those kinds
+    made in F whose handle the extractor could not tell (names ``?/x``, a NodeHandle a
+    constructor takes) are made on a handle of that namespace (``~x``; ``ns/x``)."""
+    for entry in entries if isinstance(entries, list) else []:
+        fields = entry if isinstance(entry, dict) else {}
+        file, kinds, namespace = fields.get("file"), fields.get("kinds"), fields.get(
+            "namespace")
+        hit = [c for c in node.calls if c.location.file == file and c.kind in kinds
+               and c.name.startswith(UNKNOWN_MARK + "/")] if isinstance(kinds, list) else []
+        if not hit or not isinstance(namespace, str):
+            found.append(diag.make("HINT_INVALID", Location(file=relative), detail=(
+                f"{node.name}: handles entry {entry!r} names no call of the node")))
+            continue
+        for call in hit:
+            rest = call.name[len(UNKNOWN_MARK) + 1:]
+            call.name = namespace + rest if namespace.endswith(("~", "/")) else (
+                f"{namespace}/{rest}" if namespace else rest)
+            call.handle_namespace, call.origin = None, "override"
+
+
+def _override_drop(node: Node, files: Any, relative: str, found: list[Diagnostic]) -> None:
+    """``drop: [file, ...]``: the node's calls made in these files are not its own (a
+    library the executable links, whose other classes its ``main`` never makes)."""
+    if files is None:
+        return
+    if not isinstance(files, list) or not all(isinstance(f, str) for f in files):
+        found.append(diag.make("HINT_INVALID", Location(file=relative), detail=(
+            f"{node.name}: 'drop' must be a list of source files")))
+        return
+    unknown = [f for f in files if not any(c.location.file == f for c in node.calls)]
+    if unknown:
+        found.append(diag.make("HINT_INVALID", Location(file=relative), detail=(
+            f"{node.name}: 'drop' names files with no call of the node: "
+            f"{', '.join(unknown)}")))
+    node.calls = [c for c in node.calls if c.location.file not in files]
+
+
 def _override_names(node: Node, entries: Any, relative: str,
                     found: list[Diagnostic]) -> None:
     """``names: [{calls: file:line, param: ~topics, each: topic}]``: the calls made at
     ``calls`` are named by the field ``each`` of every element of the list parameter
-    ``param`` (a name the code reads through a helper the extractor cannot follow)."""
+    ``param`` (a name the code reads through a helper the extractor cannot follow);
+    without ``each``, by the value of ``param`` (``default:`` the code's default);
+    ``numbered: true`` instead of ``each``: by each parameter ``param0``, ``param1``, ...
+    (robot_localization's ``imu0``); ``name``: the name as the code writes it, where the
+    extractor could not tell (``?`` for the parameter's value alone)."""
     for entry in entries if isinstance(entries, list) else []:
-        param, each = entry.get("param"), entry.get("each")
-        for call in _calls_at(node, entry, relative, found,
-                              isinstance(param, str) and isinstance(each, str)):
-            call.name_param, call.name_each = str(param), str(each)
+        if not isinstance(entry, dict):
+            entry = {}
+        param, each, name = entry.get("param"), entry.get("each"), entry.get("name")
+        default, numbered = entry.get("default"), entry.get("numbered") is True
+        if param is not None:  # named by the parameter's value, elements or family
+            usable = isinstance(param, str) and (
+                each is None or (isinstance(each, str) and not numbered))
+        else:  # only the name as the code writes it
+            usable = each is None and not numbered and isinstance(name, str)
+        usable = usable and all(v is None or isinstance(v, str) for v in (name, default))
+        for call in _calls_at(node, entry, relative, found, usable):
+            if isinstance(name, str):
+                call.name, call.handle_namespace = name, None
+            if isinstance(param, str):
+                call.name_param, call.name_default = param, default
+                call.name_each = NUMBERED if numbered else each
 
 
 def _calls_at(node: Node, entry: Any, relative: str, found: list[Diagnostic],

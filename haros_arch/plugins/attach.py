@@ -15,17 +15,21 @@ or C++ type). Its calls then go
   the parameters of the spawner's ``--param-file`` and the remaps of its
   ``--controller-ros-args``.
 
-A plugin whose class is not known, or not found in the workspace, is a diagnostic at the
-parameter that names it, and the host instance becomes partial: it gets its own copy of
-its node model (node models are shared by instances) marked partial with the reason.
+A class whose package has no source in the workspace is looked up in the interface
+models (``models``: the plugin nodes of the package's model, ``haros_arch.models``), as a
+host without source takes its model. A plugin whose class is not known, or found neither
+in the workspace nor in a model, is a diagnostic at the parameter that names it, and the
+host instance becomes partial (a modelled one too): it gets its own copy of its node
+model (node models are shared by instances) marked partial with the reason.
 """
 
 from __future__ import annotations
 
 import copy
+import fnmatch
 import os
 import shlex
-from collections.abc import Iterator, Mapping, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, replace
 from typing import Any, Protocol
 
@@ -35,22 +39,33 @@ from .. import diagnostics as diag
 from .. import safe_yaml
 from ..files import read_text
 from ..launch.model import NodeDecl
-from ..launch.ros2.naming import params_for_node, parse_ros_args
+from ..launch.ros2.naming import (
+    flatten,
+    node_patterns,
+    params_for_node,
+    parse_ros_args,
+    pattern_matches,
+)
 from ..model.conditions import Condition
 from ..model.location import Location
-from ..model.rosname import namespace_of
+from ..model.rosname import namespace_of, resolve
 from ..model.runtime import Configuration, NodeInstance, Parameter, Resource
 from ..model.source import Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK
 from ..share import share_source
 from ..workspace import Workspace
-from .hosts import SPAWNER, Slot, host_of
+from .hosts import EXPORTED, EXTENDS, SPAWNER, Child, Slot, Sources, host_of, sources_of
 
 SPAWNERS = (("controller_manager", "spawner"), ("controller_manager", "spawner.py"))
+ROS1_SPAWNERS = (("controller_manager", "spawner"), ("controller_manager", "controller_manager"))
 MANAGER_NAME = "controller_manager"
 _ROS_ARG_FLAGS = ("-r", "--remap", "-p", "--param", "--params-file")
 MAX_PLUGINS = 200  # per slot: a hostile list stays bounded
 MAX_PARAM_VALUES = 100_000  # values in one spawner parameter file, aliases counted out
+
+
+# a plugin class (lookup name or C++ type) to its node in an interface model, if any
+PluginModels = Callable[[str], Node | None]
 
 
 class Params(Protocol):
@@ -72,41 +87,169 @@ class Choice:
     conditions: tuple[Condition, ...] = ()
     reads: tuple[str, ...] = ()
     remaps: tuple[tuple[str, str], ...] = ()  # a spawner's --controller-ros-args
+    node: Node | None = None  # the class's node when the choice was made from it
 
 
 def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance]],
            nodes: Mapping[str, Node], params: Params, workspace: Workspace,
+           models: PluginModels | None = None,
            ) -> list[tuple[NodeInstance, list[PrimitiveCall]]]:
     """The plugin calls each host instance (or a plugin's own instance) makes; plugin
-    instances are added to ``config.nodes``, problems to ``config.diagnostics``."""
+    instances are added to ``config.nodes``, problems to ``config.diagnostics``;
+    ``models`` finds the classes of packages without source."""
     index = plugin_index(nodes)
     owned: set[int] = set()  # instances that have their own copy of their node model
     made: dict[int, set[tuple[Any, ...]]] = {}  # per host instance: calls it has
+    loaded: set[tuple[int, str]] = set()  # (instance, parameter) read to load a plugin
     out: list[tuple[NodeInstance, list[PrimitiveCall]]] = []
-    for decl, instance in started:
-        host = host_of(decl.package, decl.executable, decl.ros_version)
-        if host is None:
+    for decl, started_instance in started:
+        top = host_of(decl.package, decl.executable, decl.ros_version)
+        if top is None:
             continue
-        for slot in host.slots:
-            if slot.names == SPAWNER:
-                choices = list(_spawned(instance, started, params, workspace, config,
-                                        unnamed=decl.name_guessed))
-            else:
-                choices = list(_chosen(instance, slot, params))
-            for choice in choices:
-                node = _lookup(choice, index)
-                reader = instance
-                if node is None:
-                    _missing(config, instance, choice, owned)
-                elif slot.placement == "node":
-                    reader = _plugin_instance(instance, choice, node, config)
-                    out.append((reader, list(node.calls)))
+        hosts = [(top, started_instance)]
+        for child in top.children:
+            own, node = _child_instance(decl, started_instance, child, nodes, models,
+                                        params, config)
+            out.append((own, list(node.calls) if node else []))
+            inner = host_of(child.package, child.executable, decl.ros_version)
+            if inner is not None:
+                hosts.append((inner, own))
+        for host, instance in hosts:
+            for slot in host.slots:
+                if slot.names == SPAWNER:
+                    choices = list(_spawned(instance, started, params, workspace, config,
+                                            unnamed=decl.name_guessed))
+                elif slot.names == EXPORTED:
+                    choices = list(_exported(instance, slot, params, nodes))
                 else:
-                    calls = [_under(call, slot.prefix + _given(choice, slot),
-                                    choice.conditions) for call in node.calls]
-                    out.append((instance, _new(calls, instance, made)))
-                out.extend(_loading_reads(choice, instance, reader))
+                    choices = list(_chosen(instance, slot, params))
+                for choice in choices:
+                    out.extend(_load(choice, slot, instance, index, workspace, models,
+                                     params, config, owned, made, loaded, decl))
+    out.extend(ros1_controllers(config, started, index, params, workspace, models, owned))
     return out
+
+
+def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str, Node],
+          workspace: Workspace, models: PluginModels | None, params: Params,
+          config: Configuration, owned: set[int], made: dict[int, set[tuple[Any, ...]]],
+          loaded: set[tuple[int, str]], decl: NodeDecl,
+          ) -> list[tuple[NodeInstance, list[PrimitiveCall]]]:
+    """The calls one chosen plugin adds: to the host, or to a node of its own."""
+    out: list[tuple[NodeInstance, list[PrimitiveCall]]] = []
+    node = _lookup(choice, index, workspace, models)
+    reader = instance
+    if node is None:
+        _missing(config, instance, choice, owned)
+    elif slot.placement == "node":
+        reader = _plugin_instance(instance, choice, node, config)
+        if slot.names == EXPORTED:  # a node the process makes: its files apply by name
+            _process_params(decl, reader, params)
+        out.append((reader, _not_hosts(node.calls, instance)))
+    else:
+        plugin = slot.prefix + _given(choice, slot)
+        calls = [_under(call, plugin, choice.conditions)
+                 for call in _with_base(node, index, workspace, models)]
+        row = sources_of(choice.cls or "", instance.ros_version) or sources_of(
+            node.plugin_class or "", instance.ros_version)
+        if row is not None:
+            calls = _per_source(calls, row, plugin, choice, instance, node, params,
+                                workspace)
+        out.append((instance, _new(calls, instance, made)))
+    for own, reads in _loading_reads(choice, instance, reader):
+        kept = [r for r in reads if (id(own), r.name) not in loaded]
+        loaded.update((id(own), r.name) for r in kept)
+        if kept:
+            out.append((own, kept))
+    return out
+
+
+def _with_base(node: Node, index: Mapping[str, Node], workspace: Workspace,
+               models: PluginModels | None) -> list[PrimitiveCall]:
+    """A plugin's calls and those of the exported class whose code it runs (``EXTENDS``)."""
+    base = EXTENDS.get((node.plugin_class or "").lstrip(":")) or EXTENDS.get(node.executable)
+    found = _lookup(Choice("", base, node.location), index, workspace, models) if base else None
+    if found is None or found is node:
+        return list(node.calls)
+    own = {_key(c) for c in node.calls}
+    return [*node.calls, *(c for c in found.calls if _key(c) not in own)]
+
+
+def _child_instance(decl: NodeDecl, host: NodeInstance, child: Child,
+                    nodes: Mapping[str, Node], models: PluginModels | None, params: Params,
+                    config: Configuration) -> tuple[NodeInstance, Node | None]:
+    """The node ``child`` the host's code makes in its process: in the host's namespace
+    plus the child's, with the host's remaps (arguments of the process) and the entries
+    of the process's parameter files that name it."""
+    key = f"{child.package}/{child.executable}"
+    node = nodes.get(key) or (models(key) if models is not None else None)
+    namespace = host.namespace.rstrip("/") + "/" + child.namespace + "/"
+    name = namespace + child.name
+    instance = NodeInstance(name, node, namespace=namespace, remaps=list(host.remaps),
+                            args=host.args, conditions=host.conditions,
+                            location=host.location, origin="plugin",
+                            ros_version=host.ros_version)
+    taken = sum(1 for n in config.nodes if n.name == name)
+    instance.id = f"node:{name}" + (f"#{taken + 1}" if taken else "")
+    config.nodes.append(instance)
+    _process_params(decl, instance, params)
+    return instance, node
+
+
+def _process_params(decl: NodeDecl, instance: NodeInstance, params: Params) -> None:
+    """The entries of the process's parameter files that name a node it makes (not the
+    ``/**`` ones: those are the launched node's, and a node the code makes has them only
+    where it declares them)."""
+    for document, where in decl.param_files:
+        values = {name: value for pattern, entries in node_patterns(document)
+                  if pattern != "/**" and pattern_matches(pattern, instance.name)
+                  for name, value in flatten(entries)}
+        _set_params(params, instance.name, values, where, instance.conditions)
+
+
+def _exported(instance: NodeInstance, slot: Slot, params: Params,
+              nodes: Mapping[str, Node]) -> Iterator[Choice]:
+    """Every plugin class exported with one of the slot's bases that the host's deny and
+    allow lists let through (mavros' is_plugin_allowed: fnmatch, case folded)."""
+    assert slot.lists is not None
+    base = instance.name.rstrip("/") + "/"
+    deny, allow = (_parameter(params, base + key) for key in slot.lists)
+    denied, allowed = _patterns(deny), _patterns(allow)
+    if denied is None or allowed is None:  # a list whose value is not known
+        unknown = deny if denied is None else allow
+        assert unknown is not None
+        yield Choice("", UNKNOWN_MARK, unknown.launch_location, unknown.launch_conditions)
+        return
+    if not denied and allowed:
+        denied = ["*"]
+    conditions = tuple(c for p in (deny, allow) if p for c in p.launch_conditions)
+    given = deny or allow
+    where = given.launch_location if given is not None else instance.location
+    reads = tuple(p.name for p in (deny, allow) if p)
+    found = sorted((n for n in nodes.values() if n.kind == "plugin"
+                    and (n.plugin_base in slot.bases)), key=lambda n: n.name)
+    if not found:  # its plugins' packages have no source here: what it loads is unknown
+        yield Choice("*", None, where, conditions, reads)
+    for node in found[:MAX_PLUGINS * 5]:
+        name = node.executable.casefold()
+        if any(fnmatch.fnmatchcase(name, p) for p in denied) and not any(
+                fnmatch.fnmatchcase(name, p) for p in allowed):
+            continue
+        yield Choice(node.rosname or node.executable, node.executable, where, conditions,
+                     reads, node=node)
+
+
+def _patterns(parameter: Parameter | None) -> list[str] | None:
+    """A list parameter's glob patterns, case folded; [] when not set, None when its
+    value is not known."""
+    if parameter is None:
+        return []
+    value = parameter.value
+    if isinstance(value, str):
+        value = [value]
+    if not isinstance(value, list) or not all(isinstance(v, str) for v in value):
+        return None
+    return [v.casefold() for v in value]
 
 
 def _new(calls: list[PrimitiveCall], host: NodeInstance,
@@ -124,6 +267,14 @@ def _new(calls: list[PrimitiveCall], host: NodeInstance,
             seen.add(key)
             out.append(call)
     return out
+
+
+def _not_hosts(calls: list[PrimitiveCall], host: NodeInstance) -> list[PrimitiveCall]:
+    """A plugin node's calls but those its host's node model makes at the same place: a
+    header of the host's framework that the plugin includes (mavros' UAS members) is
+    code of the host's node, not of the plugin's."""
+    hosts = {(c.kind, c.location) for c in (host.node.calls if host.node else ())}
+    return [c for c in calls if (c.kind, c.location) not in hosts]
 
 
 def _key(call: PrimitiveCall) -> tuple[Any, ...]:
@@ -158,11 +309,28 @@ def plugin_index(nodes: Mapping[str, Node]) -> dict[str, Node]:
     return index
 
 
-def _lookup(choice: Choice, index: Mapping[str, Node]) -> Node | None:
-    """The plugin node of the chosen class, by its lookup name or its C++ type."""
+def _lookup(choice: Choice, index: Mapping[str, Node], workspace: Workspace,
+            models: PluginModels | None) -> Node | None:
+    """The plugin node of the chosen class, by its lookup name or its C++ type: from the
+    workspace, else, when no workspace package can hold it, from an interface model."""
+    if choice.node is not None:
+        return choice.node
     if not choice.cls or UNKNOWN_MARK in choice.cls:
         return None
-    return index.get(choice.cls.strip().lstrip(":"))
+    cls = choice.cls.strip().lstrip(":")
+    found = index.get(cls)
+    if found is None and models is not None and not any(
+            package in workspace.packages for package in class_packages(cls)):
+        found = models(cls)
+    return found
+
+
+def class_packages(cls: str) -> list[str]:
+    """The packages that may export a plugin class, by pluginlib's naming convention: the
+    first part of a lookup name ``pkg/Name``, else the first namespace of ``pkg::Class``."""
+    cls = cls.strip().lstrip(":")
+    first = cls.split("/", 1)[0] if "/" in cls else cls.split("::", 1)[0]
+    return [first] if first and first != cls else []
 
 
 def _given(choice: Choice, slot: Slot) -> str:
@@ -172,14 +340,16 @@ def _given(choice: Choice, slot: Slot) -> str:
     return choice.name
 
 
+def _not_found(choice: Choice, host: str) -> diag.Diagnostic:
+    if not choice.cls or UNKNOWN_MARK in choice.cls:
+        return diag.make("PLUGIN_CLASS_UNKNOWN", choice.location, plugin=choice.name,
+                         host=host)
+    return diag.make("PLUGIN_NOT_FOUND", choice.location, plugin=choice.cls, host=host)
+
+
 def _missing(config: Configuration, instance: NodeInstance, choice: Choice,
              owned: set[int]) -> None:
-    if not choice.cls or UNKNOWN_MARK in choice.cls:
-        found = diag.make("PLUGIN_CLASS_UNKNOWN", choice.location, plugin=choice.name,
-                          host=instance.name)
-    else:
-        found = diag.make("PLUGIN_NOT_FOUND", choice.location, plugin=choice.cls,
-                          host=instance.name)
+    found = _not_found(choice, instance.name)
     config.diagnostics.append(found)
     where = choice.location
     own_partial(instance, f"{found.message} ({where.file}:{where.line})", owned)
@@ -453,3 +623,176 @@ def _named(name: str | None, plugin: str) -> Any:
                 return lead + plugin + rest
     return name
 
+
+
+# -- names taken from a plugin's source list (costmap observation sources) ---------------
+
+
+def _per_source(calls: list[PrimitiveCall], row: Sources, plugin: str, choice: Choice,
+                instance: NodeInstance, node: Node, params: Params, workspace: Workspace,
+                ) -> list[PrimitiveCall]:
+    """The plugin's calls with one copy per listed source of those made under
+    ``<plugin>.<source>`` (``obstacle_layer.?.topic``), and a subscription per source
+    instead of the plugin's subscriptions to topics it could not name. Without a value
+    for the list the calls stay as they are; with an unknown one a subscription to an
+    unknown topic says so."""
+    base = instance.name.rstrip("/") + "/"
+    listed = _parameter(params, base + row.names.format(plugin=plugin))
+    if listed is None:
+        return calls
+    conditions = (*choice.conditions, *listed.launch_conditions)
+    if not isinstance(listed.value, str):
+        return [*calls, PrimitiveCall("subscribe", UNKNOWN_MARK, location=listed.launch_location,
+                                      conditions=conditions, origin="plugin")]
+    sources = listed.value.split()[:MAX_PLUGINS]
+    separator = "." if instance.ros_version == 2 else "/"
+    marks = [lead + plugin + separator + UNKNOWN_MARK + separator for lead in ("", "~", "~/")]
+    out: list[PrimitiveCall] = []
+    for call in calls:
+        if call.kind == "subscribe" and call.name.lstrip("~/") == UNKNOWN_MARK:
+            continue  # a source's subscription, named by its topic below
+        mark = next((m for m in marks if call.name.startswith(m)), None)
+        if mark is None:
+            out.append(call)
+            continue
+        for source in sources:  # an empty list: the code reads none of them
+            out.append(replace(call, name=_source_named(call.name, mark, source),
+                               handle_namespace=_source_named(call.handle_namespace, mark,
+                                                              source),
+                               name_param=_source_named(call.name_param, mark, source)))
+    parent = _parent_rule(row, node, workspace)
+    for source in sources:
+        topic_key = base + row.topic.format(plugin=plugin, source=source)
+        type_key = base + row.data_type.format(plugin=plugin, source=source)
+        topic_param, type_param = _parameter(params, topic_key), _parameter(params, type_key)
+        topic = source if topic_param is None else _text(topic_param.value) or UNKNOWN_MARK
+        data_type = row.default_type if type_param is None else _text(type_param.value)
+        if parent and not topic.startswith(("/", UNKNOWN_MARK)):
+            namespace = instance.namespace.rstrip("/")
+            topic = namespace[:namespace.rfind("/")] + "/" + topic
+        given = topic_param or listed
+        out.append(PrimitiveCall(
+            "subscribe", topic, dict(row.types).get(data_type or ""),
+            location=given.launch_location,
+            conditions=(*conditions, *(topic_param.launch_conditions if topic_param else ())),
+            origin="plugin"))
+        for read in (topic_key, type_key):
+            key = read[len(base):]
+            name = key if instance.ros_version == 2 else "~" + key
+            if not any(c.kind == "read" and c.name == name for c in out):
+                out.append(PrimitiveCall("read", name, location=given.launch_location,
+                                         conditions=conditions, origin="plugin"))
+    return out
+
+
+def _source_named(name: str | None, mark: str, source: str) -> Any:
+    """``layer.?.topic`` (or the handle ``~layer/?``) with ``?`` the source's name."""
+    if name is not None and name == mark[:-1]:
+        return mark[:-2] + source
+    if name is None or not name.startswith(mark):
+        return name
+    return mark[:-2] + source + name[len(mark) - 1:]
+
+
+def _parent_rule(row: Sources, node: Node, workspace: Workspace) -> bool:
+    """Whether the plugin's version resolves relative topics in the parent namespace."""
+    if row.parent_since is None:
+        return False
+    package = workspace.packages.get(node.package)
+    version = package.version if package is not None else (
+        node.model.split()[1] if node.model and len(node.model.split()) > 1 else "")
+    numbers = tuple(int(part) for part in version.split(".")[:3] if part.isdigit())
+    return bool(numbers) and numbers >= row.parent_since
+
+
+# -- ROS 1 ros_control ------------------------------------------------------------------
+
+
+def ros1_spawn_args(decl: NodeDecl) -> tuple[list[str], str]:
+    """The controllers a ROS 1 ``spawner`` (or ``controller_manager spawn|load``) names,
+    and its ``--namespace`` (the controller manager's, "" when not given)."""
+    try:
+        words = shlex.split(decl.args)
+    except ValueError:
+        words = decl.args.split()
+    if decl.executable == "controller_manager":
+        if not words or words[0] not in ("spawn", "load"):
+            return [], ""
+        words = words[1:]
+    takes_value = {"--wait-for", "--namespace", "--timeout", "--shutdown-timeout"}
+    controllers: list[str] = []
+    namespace = ""
+    index = 0
+    while index < len(words):
+        word = words[index]
+        option, _, value = word.partition("=")
+        if option in takes_value:
+            if not value:
+                value = words[index + 1] if index + 1 < len(words) else ""
+                index += 1
+            if option == "--namespace":
+                namespace = value
+        elif not word.startswith("-"):
+            controllers.append(word)
+        index += 1
+    return controllers, namespace
+
+
+def ros1_controllers(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance]],
+                     index: Mapping[str, Node], params: Params, workspace: Workspace,
+                     models: PluginModels | None, owned: set[int],
+                     ) -> list[tuple[NodeInstance, list[PrimitiveCall]]]:
+    """The controllers ROS 1 spawners load. The controller manager answers at
+    ``<namespace>/controller_manager/load_controller`` (the spawner's ``--namespace``,
+    in its own namespace) and loads controller ``c`` with the class ``<namespace>/c/type``
+    and the handle ``<namespace>/c``. The instance that serves that service hosts the
+    controller's calls; when the configuration has none (the manager lives in Gazebo or
+    in a hardware node started elsewhere) the controller is a node instance of its own,
+    ``<namespace>/c``, standing for its part of that unknown process."""
+    out: list[tuple[NodeInstance, list[PrimitiveCall]]] = []
+    for decl, spawner in started:
+        if decl.ros_version != 1 or (decl.package, decl.executable) not in ROS1_SPAWNERS:
+            continue
+        controllers, given = ros1_spawn_args(decl)
+        manager = resolve(given, spawner.namespace, spawner.name)
+        host = _serving(config, manager.rstrip("/") + "/controller_manager/load_controller")
+        for controller in controllers[:MAX_PLUGINS]:
+            full = f"{manager.rstrip('/')}/{controller}"
+            typed = _parameter(params, full + "/type")
+            choice = Choice(controller, _text(typed.value) if typed else None,
+                            typed.launch_location if typed else decl.location,
+                            (*spawner.conditions, *(typed.launch_conditions if typed else ())),
+                            (typed.name,) if typed else ())
+            node = _lookup(choice, index, workspace, models)
+            reader = host
+            if node is None:
+                if host is not None:
+                    _missing(config, host, choice, owned)
+                else:
+                    config.diagnostics.append(_not_found(choice, spawner.name))
+            elif host is not None:
+                out.append((host, [_under(c, controller, choice.conditions)
+                                   for c in node.calls]))
+                if typed is not None:  # the manager reads the class, by its full name
+                    out.append((host, [PrimitiveCall(
+                        "read", typed.name, location=choice.location,
+                        conditions=choice.conditions, origin="plugin")]))
+                continue
+            else:
+                namespace = manager.rstrip("/") + "/"
+                reader = NodeInstance(full, node, namespace=namespace,
+                                      conditions=choice.conditions, location=choice.location,
+                                      origin="plugin", ros_version=1)
+                taken = sum(1 for n in config.nodes if n.name == full)
+                reader.id = f"node:{full}" + (f"#{taken + 1}" if taken else "")
+                config.nodes.append(reader)
+                out.append((reader, [_under(c, controller, ()) for c in node.calls]))
+            if reader is not None:
+                out.extend(_loading_reads(choice, reader, reader))
+    return out
+
+
+def _serving(config: Configuration, service: str) -> NodeInstance | None:
+    """The node instance that serves ``service``, if the configuration has one."""
+    return next((link.node for link in config.links
+                 if link.kind == "server" and link.resource.name == service), None)

@@ -28,12 +28,14 @@ from ..manifest import xml_parser
 from ..model.conditions import Condition
 from ..model.location import Location
 from ..model.source import Node, NodeKind, Package, Plugin
-from .hosts import plugin_bases
+from .hosts import node_name_patterns, plugin_bases
 
 NODE_PLUGIN_KINDS = ("nodelet",)
 _EXPORT = re.compile(
-    r"(PLUGINLIB_EXPORT_CLASS|PLUGINLIB_DECLARE_CLASS|RCLCPP_COMPONENTS_REGISTER_NODE)"
-    r"\s*\(([^)]*)\)")
+    r"(PLUGINLIB_EXPORT_CLASS|PLUGINLIB_DECLARE_CLASS|RCLCPP_COMPONENTS_REGISTER_NODE"
+    r"|MAVROS_PLUGIN_REGISTER)\s*\(([^)]*)\)")
+_EXPORT_MARKS = ("PLUGINLIB_", "RCLCPP_COMPONENTS_", "MAVROS_PLUGIN_REGISTER")
+MAX_NAME_SCAN = 200_000  # characters of a source searched for a plugin node's name
 
 
 class Files(Protocol):
@@ -76,6 +78,7 @@ def plugin_classes(package: Package, workspace: Files, libraries: Mapping[str, L
     rqt panels) are not nodes.
     """
     bases = plugin_bases()
+    names = node_name_patterns()
     nodes: list[Node] = []
     found: list[Diagnostic] = []
     for plugin in [*package.plugins, *described]:
@@ -97,17 +100,23 @@ def plugin_classes(package: Package, workspace: Files, libraries: Mapping[str, L
                     continue
                 where = workspace.location(path, _line(cls), 0)
                 type_name = cls.get("type", "")
-                library = libraries.get(wanted) or _exporting(type_name, libraries, workspace)
+                # a factory template registered for its argument (mavros'
+                # PluginFactoryTemplate<Imu> is exported by MAVROS_PLUGIN_REGISTER(Imu))
+                registered = _template_argument(type_name) or type_name
+                library = libraries.get(wanted) or _exporting(registered, libraries,
+                                                              workspace)
                 if library is None:
                     found.append(diag.make("PLUGIN_LIBRARY_UNKNOWN", where,
                                            library=wanted, plugin=name))
                 kind: NodeKind = "nodelet" if plugin.kind in NODE_PLUGIN_KINDS else "plugin"
                 files = [] if library is None else library.sources if (
                     kind == "nodelet" or library.own is None) else library.own
-                nodes.append(Node(package.name, name, kind, "cpp",
-                                  narrow(files, type_name, workspace),
+                sources = narrow(files, registered, workspace)
+                nodes.append(Node(package.name, name, kind, "cpp", sources,
+                                  rosname=_node_name(sources, names.get(base), workspace),
                                   conditions=library.conditions if library else (),
-                                  location=where, plugin_class=type_name or None))
+                                  location=where, plugin_class=type_name or None,
+                                  plugin_base=base or None))
     return nodes, found
 
 
@@ -129,7 +138,7 @@ def _read_description(path: str, workspace: Files,
 def exported_classes(path: str, workspace: Files) -> list[tuple[str, int]]:
     """Classes a C++ file exports with a pluginlib or rclcpp_components macro, with lines."""
     text, _ = read_text(path, workspace.location(path))
-    if not text or ("PLUGINLIB_" not in text and "RCLCPP_COMPONENTS_" not in text):
+    if not text or not any(mark in text for mark in _EXPORT_MARKS):
         return []
     out = []
     for match in _EXPORT.finditer(text):
@@ -167,6 +176,26 @@ def _exporting(type_name: str, libraries: Mapping[str, Library],
             path = os.path.join(workspace.root, source)
             if type_name.lstrip(":") in (c for c, _ in exported_classes(path, workspace)):
                 return library
+    return None
+
+
+def _template_argument(type_name: str) -> str | None:
+    """``ns::Factory<ns::Class>`` → ``ns::Class``; None when not a template."""
+    match = re.fullmatch(r"[\w:]+\s*<\s*([\w:]+)\s*>", type_name.strip())
+    return match.group(1) if match else None
+
+
+def _node_name(sources: list[str], pattern: str | None, workspace: Files) -> str | None:
+    """The name a plugin's code gives the node it makes (mavros' ``Plugin(uas, "imu")``):
+    the first match of its host's pattern in the class's sources."""
+    if pattern is None:
+        return None
+    for source in sources:
+        path = os.path.join(workspace.root, source)
+        text, _ = read_text(path, workspace.location(path))
+        match = re.search(pattern, text[:MAX_NAME_SCAN]) if text else None
+        if match:
+            return match.group(1)
     return None
 
 

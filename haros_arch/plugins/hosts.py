@@ -7,7 +7,9 @@ A host is recognised by the package and executable a launch file starts. Each of
 - ``names``: the parameter holding the list of plugin names (nav2's ``planner_plugins``,
   a costmap's ``plugins``), or None when each plugin is named by ``type_of`` alone
   (move_base's ``base_global_planner``), or the special ``"*spawner"`` for controllers
-  that controller_manager spawners name (their args).
+  that controller_manager spawners name (their args), or ``"*exported"`` for every
+  class the analysed packages export with one of ``bases`` that the deny and allow
+  lists (``lists``) let through (mavros).
 - ``type_of``: the parameter giving one plugin's class, with ``{name}`` for the plugin
   name (``{name}.plugin``, ``{name}/type``); None when ``names`` holds ``{name, type}``
   mappings (move_base's ``recovery_behaviors``, ROS 1 costmap ``plugins``) or the class
@@ -21,6 +23,13 @@ A host is recognised by the package and executable a launch file starts. Each of
   first part of such a name is that plugin name, prefixed with ``prefix``.
 - ``bases``: the export tags / base classes of the classes it loads (``nav_core``,
   ``nav2_core::GlobalPlanner``); these classes are extracted as plugin nodes.
+
+A host may also create nodes of its own in its process (``Child``): nav2's planner server
+makes the costmap node ``global_costmap`` in the namespace ``<its namespace>/global_costmap``,
+itself the host of the costmap's layers. A ``Sources`` row says which plugin classes
+subscribe to topics named by a parameter list (a costmap obstacle layer's
+``observation_sources``: one subscription per source, on its ``topic``, of the type its
+``data_type`` names), and their calls that read ``<layer>.?.<key>`` are one read per source.
 
 Names are relative to the host's node (its private namespace); ROS 2 keys use ``.``.
 """
@@ -41,6 +50,26 @@ class Slot:
     # the plugin name is the last segment of the class's lookup name (move_base's
     # planners: ``navfn/NavfnROS`` is initialised as ``NavfnROS``)
     name_from_class: bool = False
+    # ``names`` is EXPORTED: the deny and allow lists (parameters holding glob patterns
+    # matched against lookup names, case folded); allowed is what no deny pattern
+    # matches, or an allow pattern does; an allow list alone denies the rest
+    lists: tuple[str, str] | None = None
+    # a node of its own named by its code: the regular expression that finds that name
+    # in the class's sources (group 1), as the class's ``rosname``
+    node_name: str | None = None
+
+
+@dataclass(frozen=True)
+class Child:
+    """A node the host's code creates in its own process, named ``name`` in the host's
+    namespace plus ``namespace`` (``/ns/global_costmap/global_costmap``), whose node model
+    and host row are those of ``package``/``executable`` (the standalone costmap node);
+    it gets the parameter files of the host's process."""
+
+    name: str
+    namespace: str
+    package: str
+    executable: str
 
 
 @dataclass(frozen=True)
@@ -49,12 +78,37 @@ class Host:
     executables: tuple[str, ...]
     ros_version: int
     slots: tuple[Slot, ...]
+    children: tuple[Child, ...] = ()
+
+
+@dataclass(frozen=True)
+class Sources:
+    """Topics a plugin subscribes to, one per source its ``names`` parameter lists
+    (separated by spaces), each on the topic ``topic`` gives (default: the source's
+    name), of the type ``data_type`` names (``types``; ``default_type`` when not set).
+    Keys are relative to the plugin (``{plugin}.observation_sources``) with ``{source}``
+    for the source's name. A relative topic resolves in the node's namespace, or, from
+    version ``parent_since`` of the plugin's package on, in the parent of that namespace
+    (nav2's ``joinWithParentNamespace``)."""
+
+    classes: tuple[str, ...]
+    ros_version: int
+    names: str
+    topic: str
+    data_type: str
+    types: tuple[tuple[str, str], ...]
+    default_type: str
+    parent_since: tuple[int, ...] | None = None
 
 
 SPAWNER = "*spawner"
+EXPORTED = "*exported"  # every class exported with one of the slot's bases
 
 _NAV2_COSTMAP = (Slot("plugins", "{name}.plugin", ("nav2_costmap_2d",
-                                                    "nav2_costmap_2d::Layer")),
+                                                    "nav2_costmap_2d::Layer"),
+                      defaults=(("static_layer", "nav2_costmap_2d::StaticLayer"),
+                                ("obstacle_layer", "nav2_costmap_2d::ObstacleLayer"),
+                                ("inflation_layer", "nav2_costmap_2d::InflationLayer"))),
                  Slot("filters", "{name}.plugin", ("nav2_costmap_2d",
                                                     "nav2_costmap_2d::Layer")))
 
@@ -73,14 +127,12 @@ HOSTS: tuple[Host, ...] = (
                                       "controller_interface::ControllerInterface",
                                       "controller_interface::ChainableControllerInterface"),
              placement="node"),)),
-    # ros_control: controllers use the handle ``<manager namespace>/<name>``
-    Host("controller_manager", ("controller_manager",), 1, (
-        Slot(SPAWNER, "{name}/type", ("controller_interface",
-                                      "controller_interface::ControllerBase"),
-             placement="node"),)),
+    # nav2's planner and controller servers make their costmap nodes in their constructor
+    # (``Costmap2DROS("global_costmap", get_namespace(), ...)``)
     Host("nav2_planner", ("planner_server",), 2, (
         Slot("planner_plugins", "{name}.plugin", ("nav2_core", "nav2_core::GlobalPlanner"),
-             defaults=(("GridBased", "nav2_navfn_planner::NavfnPlanner"),)),)),
+             defaults=(("GridBased", "nav2_navfn_planner::NavfnPlanner"),)),),
+         (Child("global_costmap", "global_costmap", "nav2_costmap_2d", "nav2_costmap_2d"),)),
     Host("nav2_controller", ("controller_server",), 2, (
         Slot("controller_plugins", "{name}.plugin", ("nav2_core", "nav2_core::Controller"),
              defaults=(("FollowPath", "dwb_core::DWBLocalPlanner"),)),
@@ -90,7 +142,8 @@ HOSTS: tuple[Host, ...] = (
              ("nav2_core", "nav2_core::ProgressChecker"),
              defaults=(("progress_checker", "nav2_controller::SimpleProgressChecker"),)),
         Slot("progress_checker_plugin", "{name}.plugin",
-             ("nav2_core", "nav2_core::ProgressChecker")),)),
+             ("nav2_core", "nav2_core::ProgressChecker")),),
+         (Child("local_costmap", "local_costmap", "nav2_costmap_2d", "nav2_costmap_2d"),)),
     Host("nav2_behaviors", ("behavior_server",), 2, (
         Slot("behavior_plugins", "{name}.plugin", ("nav2_core", "nav2_core::Behavior")),)),
     Host("nav2_smoother", ("smoother_server",), 2, (
@@ -112,7 +165,52 @@ HOSTS: tuple[Host, ...] = (
         _ros1_costmap("global_costmap/"),
         _ros1_costmap("local_costmap/"))),
     Host("costmap_2d", ("costmap_2d_node",), 1, (_ros1_costmap("costmap/"),)),
+    # mavros (mavros/src/lib/mavros.cpp, mavros_uas.cpp) loads every class its plugin
+    # loader declares unless its lists say otherwise; ROS 1 plugins make their calls on
+    # the mavros node through handles their code names (``~imu``); a ROS 2 plugin is a
+    # node of its own, ``Plugin(uas, "imu")`` (plugin.hpp: Node::make_shared(subnode, ...)),
+    # in the process's namespace
+    Host("mavros", ("mavros_node",), 1, (
+        Slot(EXPORTED, None, ("mavros", "mavros::plugin::PluginBase"),
+             lists=("plugin_blacklist", "plugin_whitelist")),)),
+    Host("mavros", ("mavros_node",), 2, (
+        Slot(EXPORTED, None, ("mavros", "mavros::plugin::PluginFactory"), placement="node",
+             lists=("plugin_denylist", "plugin_allowlist"),
+             node_name=r'\b(?:Plugin|MissionBase)\s*\(\s*uas_?\s*,\s*"([^"\\]+)"'),)),
 )
+
+
+SOURCES: tuple[Sources, ...] = (
+    # nav2_costmap_2d/plugins/obstacle_layer.cpp (VoxelLayer runs its onInitialize)
+    Sources(("nav2_costmap_2d::ObstacleLayer", "nav2_costmap_2d::VoxelLayer"), 2,
+            "{plugin}.observation_sources", "{plugin}.{source}.topic",
+            "{plugin}.{source}.data_type",
+            (("LaserScan", "sensor_msgs/msg/LaserScan"),
+             ("PointCloud2", "sensor_msgs/msg/PointCloud2")), "LaserScan", (1, 4)),
+    # costmap_2d/plugins/obstacle_layer.cpp: NodeHandle("~/" + name), a global handle
+    # subscribes
+    Sources(("costmap_2d::ObstacleLayer", "costmap_2d::VoxelLayer"), 1,
+            "{plugin}/observation_sources", "{plugin}/{source}/topic",
+            "{plugin}/{source}/data_type",
+            (("LaserScan", "sensor_msgs/LaserScan"), ("PointCloud", "sensor_msgs/PointCloud"),
+             ("PointCloud2", "sensor_msgs/PointCloud2")), "PointCloud"),
+)
+
+
+# plugin classes whose code runs another exported class's (their base class's
+# onInitialize), which their own sources do not hold: voxel_layer.cpp calls
+# ObstacleLayer::onInitialize (nav2 and ROS 1 costmap_2d)
+EXTENDS: dict[str, str] = {
+    "nav2_costmap_2d::VoxelLayer": "nav2_costmap_2d::ObstacleLayer",
+    "costmap_2d::VoxelLayer": "costmap_2d::ObstacleLayer",
+}
+
+
+def sources_of(cls: str, ros_version: int) -> Sources | None:
+    """The ``Sources`` row of a plugin class (lookup name or C++ type), if any."""
+    cls = cls.strip().lstrip(":")
+    return next((row for row in SOURCES
+                 if cls in row.classes and row.ros_version == ros_version), None)
 
 
 def host_of(package: str, executable: str, ros_version: int) -> Host | None:
@@ -124,6 +222,21 @@ def host_of(package: str, executable: str, ros_version: int) -> Host | None:
     return None
 
 
+# ROS 1 ros_control: a ControllerManager lives inside a robot's hardware node or Gazebo's
+# gazebo_ros_control, not in a node of its own; its spawners name the controllers (see
+# ``attach.ros1_controllers``), each loaded with the handle ``<manager namespace>/<name>``
+# and the class ``<name>/type`` there
+ROS1_CONTROLLER_BASES = ("controller_interface", "controller_interface::ControllerBase")
+
+
+def node_name_patterns() -> dict[str, str]:
+    """Base class (or export tag) → the pattern that finds a plugin node's name in its
+    class's sources, for the hosts whose plugins are nodes named by their code."""
+    return {base: slot.node_name for host in HOSTS for slot in host.slots
+            if slot.node_name for base in slot.bases if "::" in base}
+
+
 def plugin_bases() -> frozenset[str]:
     """Export tags and base classes of every class some host loads."""
-    return frozenset(base for host in HOSTS for slot in host.slots for base in slot.bases)
+    return frozenset((*ROS1_CONTROLLER_BASES, *(
+        base for host in HOSTS for slot in host.slots for base in slot.bases)))

@@ -53,16 +53,24 @@ def print_matches(matches: list[Match], console: Console) -> None:
     console.print(f"{len(matches)} match(es)", highlight=False)
 
 
-def print_comparison(result: Comparison, console: Console) -> None:
-    """Precision and recall per kind, with what is missing and extra."""
+def print_comparison(result: Comparison, console: Console, both: bool = False) -> None:
+    """Precision and recall per kind, with what is missing (only live) and extra (only in
+    the model); with ``both``, also what is in both."""
     from ..live.compare import show
 
     console.print(f"configuration {result.configuration}", highlight=False)
     for score in result.scores:
-        console.print(f"  {score.kind:<16} precision {score.precision:.3f}  recall "
+        console.print(f"  {score.kind:<20} precision {score.precision:.3f}  recall "
                       f"{score.recall:.3f}  ({len(score.matched)} matched, {len(score.ours)} "
                       f"ours, {len(score.live)} live)", highlight=False)
-        for item in score.missing:
-            console.print(f"      missing: {escape(show(item))}", highlight=False)
-        for item in score.extra:
-            console.print(f"      extra:   {escape(show(item))}", highlight=False)
+        if score.differs is not None:
+            for text in score.differs:
+                console.print(f"      differs: {escape(text)}", highlight=False)
+        else:
+            for item in score.missing:
+                console.print(f"      missing: {escape(show(item))}", highlight=False)
+            for item in score.extra:
+                console.print(f"      extra:   {escape(show(item))}", highlight=False)
+        if both:
+            for item in sorted(score.matched, key=str):
+                console.print(f"      both:    {escape(show(item))}", highlight=False)

@@ -67,8 +67,9 @@ def _needs_escape(text: str) -> bool:
 
 
 def render_report(model_data: dict[str, Any], findings: Iterable[Any],
-                  workspace_root: str) -> str:
-    """The whole report page as text."""
+                  workspace_root: str, live: dict[str, Any] | None = None) -> str:
+    """The whole report page as text; ``live``: a capture's comparison per configuration
+    name (``live.compare.compare_all``), shown beside each graph."""
     found = [to_data(item) for item in findings]
     found += [item for item in model_data.get("findings", []) if item not in found]
     payload = {
@@ -76,6 +77,7 @@ def render_report(model_data: dict[str, Any], findings: Iterable[Any],
         "findings": found,
         "sources": collect_snippets({"model": model_data, "findings": found},
                                     workspace_root),
+        **({"live": live} if live is not None else {}),
     }
     scripts = [_script_text(find_d3()), app_script()]
     style = (STATIC / "report.css").read_text(encoding="utf-8")
@@ -98,9 +100,9 @@ def render_report(model_data: dict[str, Any], findings: Iterable[Any],
 
 
 def write_report(model_data: dict[str, Any], findings: Iterable[Any], workspace_root: str,
-                 output: str) -> None:
+                 output: str, live: dict[str, Any] | None = None) -> None:
     """Write the report of ``model_data`` (a ``haros-arch/1`` document) to ``output``."""
-    page = render_report(model_data, findings, workspace_root)
+    page = render_report(model_data, findings, workspace_root, live)
     try:
         with open(output, "w", encoding="utf-8") as handle:
             handle.write(page)

@@ -16,7 +16,7 @@ from collections.abc import Callable, Sequence
 from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
 
-from clang.cindex import Cursor, TranslationUnit, TranslationUnitLoadError
+from clang.cindex import Cursor, CursorKind, TranslationUnit, TranslationUnitLoadError
 from clang.cindex import Diagnostic as ClangDiagnostic
 
 from ... import diagnostics as diag
@@ -26,7 +26,7 @@ from ...manifest import ros_version
 from ...model.location import Location
 from ...model.source import PrimitiveCall
 from ...workspace import Workspace
-from . import cache, links, synthesis, toolchain
+from . import cache, links, recall, synthesis, toolchain
 from . import compile_commands as commands
 from .headers import STANDIN, IncludeSetup
 from .visitor import CallFinder
@@ -36,6 +36,7 @@ __all__ = ["CppBatch", "CppResult", "extract_cpp", "extract_cpp_nodes"]
 # CXTranslationUnit_DetailedPreprocessingRecord (for #define constants) | KeepGoing
 PARSE_OPTIONS = 0x01 | 0x200
 SKIP_FUNCTION_BODIES = 0x40  # CXTranslationUnit_SkipFunctionBodies
+ROS1_PLACEHOLDERS = os.path.join(STANDIN, "boost", "bind.hpp")
 MAX_ERRORS_PER_FILE = 50
 _HEADER = re.compile(r"no definition found for (\S+);")
 _MEMBER = re.compile(r"^no member named '\w+' in '(?:struct |class )?(?:::)?(\w+)::")
@@ -127,7 +128,8 @@ def extract_cpp_nodes(nodes: Sequence[Sequence[str]], workspace: Workspace, *,
     if compile_commands is None:
         compile_commands = commands.find(workspace)
     units, batch.diagnostics = commands.load(compile_commands, workspace)
-    setup = IncludeSetup(workspace, include_dirs, system_headers, units)
+    setup = IncludeSetup(workspace, include_dirs, system_headers, units,
+                         [p for sources in nodes for p in sources])
     store = None
     if cache_dir is not None:
         folder = cache.default_folder(workspace.root) if cache_dir == cache.AUTO else cache_dir
@@ -316,7 +318,7 @@ def _translation_unit(path: str, text: str, ros2: bool,
             return workspace.location(path)
         return workspace.location(os.path.abspath(loc.file.name), loc.line, loc.column)
 
-    tu = _parse(path, text, setup, workspace, result, source, owned)
+    tu = _parse(path, text, setup, workspace, result, source, owned, ros2)
     if tu is None:
         return result, []
     errors = [d for d in tu.diagnostics if d.severity >= ClangDiagnostic.Error
@@ -334,6 +336,7 @@ def _translation_unit(path: str, text: str, ros2: bool,
     result.calls = sorted(finder.calls, key=lambda c: (
         c.location.file or "", c.location.line, c.location.column))
     result.diagnostics.extend(finder.diagnostics)
+    result.diagnostics.extend(_hidden(path, errors, finder, source, fieldless, workspace))
     result.diagnostics[:0] = setup.diagnostics[before:]
     result.rosname = finder.rosname
     result.facts = finder.facts
@@ -349,14 +352,73 @@ def _translation_unit(path: str, text: str, ros2: bool,
     return result, sorted(set(headers))
 
 
+def _hidden(path: str, errors: list[ClangDiagnostic], finder: CallFinder,
+            source: SourceCache, fieldless: set[str], workspace: Workspace
+            ) -> list[Diagnostic]:
+    """Where the errors left can hide a ROS call (``recall``): the API call sites of the
+    unit's source and of the workspace headers with errors that have no call extracted
+    near them (nor a call of the same name the parse resolved to another function), and
+    the errors inside a function that holds such a site. None in a unit without
+    errors: there the parse read every call, and the walk judged each."""
+    errors = [e for e in errors if not _names_fieldless_type(e.spelling, fieldless)]
+    if not errors:
+        return []
+    files = dict.fromkeys([path, *(os.path.abspath(e.location.file.name) for e in errors)])
+    functions: dict[str, list[recall.Function]] = {}
+    silent: dict[str, list[tuple[int, int]]] = {}
+    for function in finder.functions:
+        start, end = function.extent.start, function.extent.end
+        if start.file is None:
+            continue
+        name = os.path.abspath(start.file.name)
+        functions.setdefault(name, []).append((start.line, end.line, function.spelling))
+        if function.kind != CursorKind.FIELD_DECL and finder.wrappers.silent(function):
+            silent.setdefault(name, []).append((start.line, end.line))
+    lines: dict[str | None, set[int]] = {}
+    for call in finder.calls:
+        lines.setdefault(call.location.file, set()).add(call.location.line)
+    for name, line in finder.resolved:
+        lines.setdefault(workspace.relpath(name), set()).add(line)
+    for name, ranges in recall.skipped_lines(finder.tu).items():
+        silent.setdefault(name, []).extend(ranges)  # no code of this build
+    wrappers = sorted(n for n in finder.wrappers.names if n)
+    found: list[Diagnostic] = []
+    for name in files:
+        data = source.get(name)
+        if data is None:
+            continue
+        sites = recall.call_sites(data.decode("utf-8", "replace"), wrappers)
+        if not sites:
+            continue
+        relative = workspace.relpath(name)
+        for site in recall.missed(sites, lines.get(relative, set()), silent.get(name, ())):
+            found.append(diag.make("CPP_CALL_MISSED", workspace.location(name, site.line),
+                                   text=site.text))
+        for error in errors:
+            loc = error.location
+            if os.path.abspath(loc.file.name) != name:
+                continue
+            around = recall.holding(loc.line, functions.get(name, ()), sites)
+            if around is not None:
+                found.append(diag.make(
+                    "CPP_ERROR_NEAR_CALL", workspace.location(name, loc.line, loc.column),
+                    function=around[2], start=around[0], end=around[1],
+                    detail=error.spelling))
+    return found[:recall.MAX_REASONS]
+
+
 def _parse(path: str, text: str, setup: IncludeSetup, workspace: Workspace,
            result: CppResult, source: SourceCache,
-           owned: Callable[[str], bool]) -> TranslationUnit | None:
+           owned: Callable[[str], bool], ros2: bool = False) -> TranslationUnit | None:
     """Parse ``path``; headers clang still misses are stood in for and parsed again, then
     names it does not know are declared (``synthesis``) and parsed again while that
     leaves fewer errors."""
     unsaved = [(path, text)]
     args = setup.arguments(source=path)
+    if not ros2 and not setup.system_headers:
+        # ROS 1 (Boost before 1.73): roscpp's headers bring boost::bind's _1, _2 into the
+        # global namespace; ROS 2 code has std::placeholders there instead
+        args = [*args, "-include", ROS1_PLACEHOLDERS]
     tu: TranslationUnit | None = None
     for _attempt in range(2):
         tu = _parse_once(path, args, unsaved, workspace, result)
@@ -401,10 +463,13 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
                 if d.location.file is not None and owned(d.location.file.name)]
 
     before = len(mine(tu))
-    names = synthesis.Names()
+    names = synthesis.Names(_fieldless_packages(setup.diagnostics))
     header = os.path.join(setup.generated, synthesis.HEADER_NAME)
-    if synthesis.MAX_ROUNDS < 1 or not names.learn(_located(mine(tu), source)):
-        return tu
+    fieldless = _fieldless_packages(setup.diagnostics)
+    if synthesis.MAX_ROUNDS < 1 or not _can_hide(tu, mine(tu), source, fieldless) or (
+        not names.learn(_located(mine(tu), source))
+    ):
+        return tu  # nothing to declare, or no error where it could cost a call
     # Errors come in waves: a class made valid shows its other members. With more than
     # one round, the next waves are looked for without function bodies (the names that
     # make a class invalid are in declarations); then the unit is parsed in full with
@@ -417,14 +482,17 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
         if probe is None or not names.learn(_located(mine(probe), source)):
             break
     best = tu
-    for _full in range(2):  # a second time when the first shows more names (a wave)
+    for _full in range(synthesis.FULL_PARSES):  # more: again when one shows more names
         again = _parse_once(path, [*args, "-include", header],
                             [*unsaved, (header, names.header())], workspace, result)
         if again is None:
             break
         if len(_errors(again)) < len(_errors(best)):
             best = again
-        if not names.learn(_located(mine(again), source)):
+        left = mine(again)
+        if not _can_hide(again, left, source, fieldless) or not names.learn(
+            _located(left, source)
+        ):
             break
     if best is tu:
         return tu  # declaring them made it no better: the parse as it was
@@ -433,6 +501,34 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
         "CPP_NAMES_DECLARED", workspace.location(path), count=names.count,
         names=", ".join(names.first()), before=before, after=len(mine(again))))
     return again
+
+
+def _can_hide(tu: TranslationUnit, errors: list[ClangDiagnostic],
+              source: SourceCache, fieldless: set[str]) -> bool:
+    """Whether any of ``errors`` can cost a call (``recall``): one outside every function
+    the unit defines (a declaration: it may make a class invalid, and every call in its
+    methods with it), or one inside a function whose text calls the ROS API. Errors
+    only inside functions that make no ROS call, and those on fields of messages known
+    only by name (clang reads on past them), are left as they are: declaring the names
+    they miss would cost a parse and change no call."""
+    errors = [e for e in errors if not _names_fieldless_type(e.spelling, fieldless)]
+    if not errors:
+        return False
+    files = {os.path.abspath(e.location.file.name) for e in errors}
+    functions = recall.definitions(tu, files)
+    sites: dict[str, list[recall.Site]] = {}
+    for error in errors:
+        name = os.path.abspath(error.location.file.name)
+        line = error.location.line
+        around = [f for f in functions.get(name, ()) if f[0] <= line <= f[1]]
+        if not around:
+            return True
+        if name not in sites:
+            data = source.get(name)
+            sites[name] = recall.call_sites(data.decode("utf-8", "replace")) if data else []
+        if recall.holding(line, around, sites[name]) is not None:
+            return True
+    return False
 
 
 def _located(errors: list[ClangDiagnostic],

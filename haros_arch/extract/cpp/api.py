@@ -229,6 +229,12 @@ RCLCPP_LIBRARIES: dict[tuple[str, str], RosFunction] = {
     ("rclcpp", "create_subscription"): RosFunction(
         "subscribe", type_from=("template", "callback"), on_handle=False, name_arg=1,
         qos_arg=2, callback_arg=3, name_candidates=(1, 2)),
+    # (node_base, node_services, name, callback, qos, group), as nav2's ServiceServer
+    ("rclcpp", "create_service"): RosFunction(
+        "server", type_from=("template",), on_handle=False, name_arg=2),
+    # (node_base, node_graph, node_services, name, qos, group)
+    ("rclcpp", "create_client"): RosFunction(
+        "client", type_from=("template",), on_handle=False, name_arg=3),
     ("rclcpp::AsyncParametersClient", "AsyncParametersClient"): _PARAMETER_CLIENT,
     ("rclcpp::SyncParametersClient", "SyncParametersClient"): _PARAMETER_CLIENT,
     ("rclcpp::AsyncParametersClient", "on_parameter_event"): _PARAMETER_EVENTS,

@@ -15,7 +15,14 @@ resolved the way the preprocessor will, and:
   needs to be installed; the stand-ins are precompiled once per process (a PCH), which
   brings a translation unit down to a few milliseconds;
 - any other header that is not found becomes an empty header and a
-  ``CPP_INCLUDE_MISSING`` diagnostic.
+  ``CPP_INCLUDE_MISSING`` diagnostic, except ``<name>_export.h``, which CMake's
+  generate_export_header writes at build time: it defines ``NAME_EXPORT`` and its
+  siblings empty;
+- a package's own headers win over the stand-ins: a unit of a package our stand-ins also
+  provide (rclcpp_components, bondcpp, class_loader, ...) is parsed with the package's
+  ``include`` folder first and without the precompiled stand-ins (whose classes its own
+  headers define again); not a package whose API the extractor knows by its stand-ins
+  (tf2_ros, image_transport, ...: the API tables name its classes).
 
 With ``system_headers=True`` the stand-ins are left out and only headers that the system
 lacks are synthesised, so the real ROS headers are used.
@@ -38,7 +45,7 @@ from ...diagnostics import Diagnostic
 from ...files import read_text
 from ...model.location import Location
 from ...workspace import Workspace
-from . import interfaces, ros2_interfaces, toolchain
+from . import api, interfaces, ros2_interfaces, toolchain
 from .compile_commands import UnitFlags
 
 STANDIN = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "standin")
@@ -80,6 +87,21 @@ _MESSAGE_HEADER = re.compile(r"([A-Za-z_]\w*)/([A-Z]\w*)\.h")
 _NOT_FOUND = re.compile(r"^'([^']+)' file not found")
 
 
+# the packages whose headers the stand-ins provide (rclcpp_components, bondcpp, ...) and
+# whose own headers win when they are modelled; not those whose classes the API tables
+# name (tf2_ros, image_transport, ...): their stand-ins are the API the extractor knows,
+# and their own sources are modelled against them
+_STANDIN_PACKAGES = frozenset({p.rstrip("/") for p in SHADOWED} | {
+    f for f in os.listdir(STANDIN) if os.path.isdir(os.path.join(STANDIN, f))}) - {
+    "std", *(row[0].split("::")[0] for table in (api.ROSCPP, api.LIBRARIES, api.RCLCPP,
+                                                 api.RCLCPP_LIBRARIES) for row in table)}
+
+# ``<name>_export.h`` from CMake's generate_export_header (not in the source tree): its
+# macros, defined empty, as for a static build
+_EXPORT_HEADER = re.compile(r"([A-Za-z_]\w*)_export\.hp?p?")
+_EXPORT_MACROS = ("EXPORT", "NO_EXPORT", "DEPRECATED", "DEPRECATED_EXPORT",
+                  "DEPRECATED_NO_EXPORT")
+
 _ROS_PREFIXES = ("ros/", "boost/", "tf/", "rclcpp", "rmw/", "tf2", "image_transport/",
                  "message_filters/", "actionlib/", "nodelet/", "pluginlib/")
 _LIBRARY_UMBRELLAS = frozenset({"opencv2/opencv.hpp", "cv_bridge/cv_bridge.h", "Eigen/Dense",
@@ -95,7 +117,8 @@ class IncludeSetup:
     """The folders and flags of one extraction; call ``close`` when done."""
 
     def __init__(self, workspace: Workspace, include_dirs: Sequence[str],
-                 system_headers: bool, units: Mapping[str, UnitFlags] | None = None) -> None:
+                 system_headers: bool, units: Mapping[str, UnitFlags] | None = None,
+                 sources: Sequence[str] = ()) -> None:
         self.workspace = workspace
         self.units = dict(units or {})  # real source path -> its compile command's flags
         self.system_headers = system_headers
@@ -106,6 +129,16 @@ class IncludeSetup:
                            if os.path.isdir(inc) and inc not in self.user_dirs]
         for unit in self.units.values():  # so that the scan before parsing finds them
             self.user_dirs += [d for d in unit.include_dirs if d not in self.user_dirs]
+        # the packages being extracted that our stand-ins also provide, with their
+        # include folders: their own headers win (``_own_header``, ``arguments``)
+        self.own: dict[str, list[str]] = {}
+        for source in sources:
+            package = workspace.package_of(source)
+            if package is not None and package.root and package.name in _STANDIN_PACKAGES:
+                folder = os.path.join(package.root, "include")
+                nested = os.path.join(folder, package.name)
+                self.own[package.name] = [f for f in (folder, nested) if os.path.isdir(
+                    os.path.join(f, package.name))]
         self.diagnostics: list[Diagnostic] = []
         self._handled: set[str] = set()
         self._scanned: dict[str, bool] = {}  # file -> ROS 2 code (see ``scan``)
@@ -123,6 +156,10 @@ class IncludeSetup:
         unit = self.units.get(os.path.realpath(source)) if source and self.units else None
         flags = toolchain.base_arguments(self.system_headers, unit.std if unit else None)
         args = ["-I", self.generated, "-I", self.overflow]
+        own = self._own_folders(source)
+        if own:  # before everything, and no precompiled stand-ins that would redefine
+            args = [*(a for f in own for a in ("-I", f)), *args]  # its classes
+            pch = False
         if not self.system_headers:
             args += ["-I", STANDIN]
         if unit is not None:
@@ -134,6 +171,14 @@ class IncludeSetup:
         args += ["-isystem", STD_STANDIN, *flags]
         made = precompiled_prelude(flags) if pch else None
         return [*args, "-include-pch", made] if made is not None else args
+
+    def _own_folders(self, source: str | None) -> list[str]:
+        """The include folders of ``source``'s package when it is one our stand-ins also
+        provide (its own headers, not the stand-ins, are what it is built with)."""
+        if not self.own or source is None or self.system_headers:
+            return []
+        package = self.workspace.package_of(source)
+        return self.own.get(package.name, []) if package is not None else []
 
     def close(self) -> None:
         if self._on_disk:
@@ -176,6 +221,9 @@ class IncludeSetup:
             self._ros2_interface(header, ros2.group(1), ros2.group(2), ros2.group(3), where)
             return None
         qt = _QT_HEADER.fullmatch(header) is not None
+        own = self._own_header(header)
+        if own is not None:
+            return own
         if not self.system_headers and (header.startswith(SHADOWED) or qt):
             standin = os.path.join(STANDIN, header)
             if os.path.isfile(standin) and not header.startswith(_ROS_PREFIXES):
@@ -198,6 +246,9 @@ class IncludeSetup:
         ):
             self._handled.add(header)  # sensor_msgs/image_encodings.h
             return None
+        if _EXPORT_HEADER.fullmatch(os.path.basename(header)) and self._resolve(header) is None:
+            self._empty(header, where)  # CMake's export header, not a message's
+            return None
         message = _MESSAGE_HEADER.fullmatch(header)
         if message is not None and self._message(
             header, message.group(1), message.group(2), where
@@ -212,6 +263,16 @@ class IncludeSetup:
         if found is None:
             self._empty(header, where)
         return found
+
+    def _own_header(self, header: str) -> str | None:
+        """The real file of ``header`` when it is a header of a package being extracted
+        that our stand-ins would otherwise shadow (``rclcpp_components/
+        component_manager.hpp`` while modelling rclcpp_components); None otherwise."""
+        prefix, _, rest = header.partition("/")
+        if not rest or self.system_headers:
+            return None
+        return next((os.path.join(f, header) for f in self.own.get(prefix, ())
+                     if os.path.isfile(os.path.join(f, header))), None)
 
     def _scan_standin(self, path: str) -> None:
         """Prepare what a library stand-in includes (cv_bridge: ``sensor_msgs/Image.h``)."""
@@ -344,6 +405,13 @@ class IncludeSetup:
 
     def _empty(self, header: str, where: Location) -> None:
         self._handled.add(header)
+        export = _EXPORT_HEADER.fullmatch(os.path.basename(header))
+        if export is not None:  # CMake's generate_export_header writes it at build time
+            name = export.group(1).upper()
+            self._write(header, f"// {header}, as CMake's generate_export_header writes "
+                                "it, created by haros_arch\n" + "".join(
+                                    f"#define {name}_{macro}\n" for macro in _EXPORT_MACROS))
+            return
         self._write(header, f"// empty stand-in for {header}, created by haros_arch\n")
         self.diagnostics.append(diag.make("CPP_INCLUDE_MISSING", where, header=header))
 

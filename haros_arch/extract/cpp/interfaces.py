@@ -229,8 +229,8 @@ def render(interface: Interface) -> str:
     lines.append(f"namespace {pkg} {{")
     if interface.is_service:
         request, response = interface.sections
-        lines += _struct(f"{name}Request", request, pkg)
-        lines += _struct(f"{name}Response", response, pkg)
+        lines += _struct(f"{name}Request", request, pkg, interface.known)
+        lines += _struct(f"{name}Response", response, pkg, interface.known)
         lines += [f"struct {name} {{",
                   f"  typedef {name}Request Request;", f"  typedef {name}Response Response;",
                   "  Request request;", "  Response response;"]
@@ -242,13 +242,28 @@ def render(interface: Interface) -> str:
         else:
             lines.append("};")
     else:
-        lines += _struct(name, interface.sections[0] if interface.sections else [], pkg)
+        lines += _struct(name, interface.sections[0] if interface.sections else [], pkg,
+                         interface.known)
     lines += [f"}}  // namespace {pkg}", "#endif", ""]
     return "\n".join(lines)
 
 
-def _struct(name: str, fields: list[Field], package: str) -> list[str]:
+def fields_hook(qualified: str) -> list[str]:
+    """The lines that give a message known only by name the fields the code uses: the
+    names the parse learnt (``synthesis.Names``) define a macro of the struct's
+    qualified name to their declarations."""
+    macro = fields_macro(qualified)
+    return [f"#ifdef {macro}", f"  {macro}", "#endif"]
+
+
+def fields_macro(qualified: str) -> str:
+    return "HAROS_FIELDS_" + qualified.replace("::", "__")
+
+
+def _struct(name: str, fields: list[Field], package: str, known: bool = True) -> list[str]:
     lines = [f"struct {name} {{", f"  {name}();"]
+    if not known:
+        lines += fields_hook(f"{package}::{name}")
     for fld in fields:
         cpp = _cpp_type(fld.type, package)
         if fld.constant is not None:

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import re
 
-from .interfaces import Field, Interface, qualified
+from .interfaces import Field, Interface, fields_hook, qualified
 
 KINDS = ("msg", "srv", "action")
 PRIMITIVES = {
@@ -80,11 +80,11 @@ def render(interface: Interface, kind: str) -> str:
     elif kind == "action":
         parts = ("Goal", "Result", "Feedback")
     if not parts:
-        lines += _struct(name, sections[0], pkg)
+        lines += _struct(name, sections[0], pkg, kind, interface.known)
     else:
         sections = [*sections, [], [], []][:len(parts)]
         for part, fields in zip(parts, sections, strict=True):
-            lines += _struct(f"{name}_{part}", fields, pkg)
+            lines += _struct(f"{name}_{part}", fields, pkg, kind, interface.known)
         lines.append(f"struct {name} {{")
         lines += [f"  using {part} = {name}_{part};" for part in parts]
         if kind == "action":
@@ -95,8 +95,11 @@ def render(interface: Interface, kind: str) -> str:
     return "\n".join(lines)
 
 
-def _struct(name: str, fields: list[Field], package: str) -> list[str]:
+def _struct(name: str, fields: list[Field], package: str, kind: str = "msg",
+            known: bool = True) -> list[str]:
     lines = [f"struct {name} {{", f"  {name}();"]
+    if not known:
+        lines += fields_hook(f"{package}::{kind}::{name}")
     for fld in fields:
         cpp = _cpp_type(fld.type, package)
         if fld.constant is not None:

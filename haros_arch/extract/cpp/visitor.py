@@ -40,12 +40,12 @@ from .qos import qos as qos_of
 from .values import PLACEHOLDER, Scope, initializer, render, strip, written_arguments
 from .wrappers import Wrappers
 
-_CONTAINERS = frozenset({
+CONTAINERS = frozenset({
     CursorKind.NAMESPACE, CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL,
     CursorKind.CLASS_TEMPLATE, CursorKind.LINKAGE_SPEC, CursorKind.UNEXPOSED_DECL,
     CursorKind.CLASS_TEMPLATE_PARTIAL_SPECIALIZATION,
 })
-_FUNCTIONS = frozenset({
+FUNCTIONS = frozenset({
     CursorKind.FUNCTION_DECL, CursorKind.CXX_METHOD, CursorKind.CONSTRUCTOR,
     CursorKind.DESTRUCTOR, CursorKind.FUNCTION_TEMPLATE, CursorKind.CONVERSION_FUNCTION,
 })
@@ -76,6 +76,9 @@ class CallFinder:
         self._declared: dict[str, str] = {}  # ROS 2 parameter -> its declared default
         self.calls: list[PrimitiveCall] = []
         self.functions: list[Cursor] = []
+        # (file, line) of the calls of an API function's name that the parse resolved,
+        # ROS or not (``set_parameters`` of a parameter client): read, so not hidden
+        self.resolved: set[tuple[str, int]] = set()
         self.sites: CallSites | None = None
         self._scope: Scope | None = None  # of the function being walked
         self.rosname: str | None = None
@@ -114,13 +117,13 @@ class CallFinder:
                 tokens = [t.spelling for t in cursor.get_tokens()]
                 if len(tokens) == 2:
                     self.macros[tokens[0]] = tokens[1]
-            elif kind in _FUNCTIONS and cursor.is_definition():
+            elif kind in FUNCTIONS and cursor.is_definition():
                 yield cursor
             elif kind == CursorKind.FIELD_DECL:
                 self._field(cursor)
                 if initializer(cursor) is not None:
                     yield cursor  # a default member initialiser: walked like a function
-            elif kind in _CONTAINERS:
+            elif kind in CONTAINERS:
                 if cursor.spelling in ("TypeAdapter", "ImplicitTypeAdapter"):
                     self.types.adapter(cursor)
                 yield from self._definitions(cursor)
@@ -137,6 +140,8 @@ class CallFinder:
                 node.spelling in _API_NAMES or node.spelling in self.wrappers.names
             ):
                 self._call(node, conditions, scope)
+                if node.referenced is not None and node.location.file is not None:
+                    self.resolved.add((node.location.file.name, node.location.line))
             elif node.kind in (CursorKind.UNEXPOSED_EXPR, CursorKind.CALL_EXPR) and (
                 not node.spelling and _recovered_name(node) in self._unresolved_rows()
             ):

@@ -35,7 +35,15 @@ from . import api, msg_types
 from .call_types import template_argument
 from .handles import callback, callback_name, is_handle, join_name, qualified_name
 from .qos import qos as qos_of
-from .values import Parts, Scope, strip, written_arguments
+from .values import (
+    PLACEHOLDER,
+    SEPARATOR,
+    Parts,
+    Scope,
+    initializer,
+    strip,
+    written_arguments,
+)
 
 if TYPE_CHECKING:
     from .visitor import CallFinder
@@ -95,14 +103,28 @@ class Wrappers:
 
     def build(self) -> None:
         finder = self.finder
-        # a constructor is no wrapper: the values its callers pass flow into its
-        # parameters and members (call_sites), and its calls stay where they are written
-        functions = [f for f in finder.functions if _parameters(f)
-                     and f.kind != CursorKind.CONSTRUCTOR]
+        # a constructor is no wrapper (the values its callers pass flow into its
+        # parameters and members, call_sites, and its calls stay where they are
+        # written), except one of a class template: the type of its call is the
+        # construction's (nav2's ServiceServer<ServiceT>(name, node, callback))
+        functions = [f for f in finder.functions if _parameters(f) and (
+            f.kind != CursorKind.CONSTRUCTOR or _of_class_template(f))]
+        # each function's calls, and its lambdas: one with parameters may be returned
+        # and pass one on as a name (nav2 MPPI's ``getParamGetter(ns)``:
+        # ``getParam(x, "name", d)``), so it is summarised like a function
+        found: dict[Key, list[Cursor]] = {}
+        todo = [f for f in finder.functions if f.kind != CursorKind.FIELD_DECL]
+        while todo:
+            function = todo.pop()
+            inner, lambdas = _scan(function)
+            found[_key(function.canonical)] = inner
+            todo += lambdas
+            functions += [lam for lam in lambdas if _parameters(lam)]
         # the calls that may be of the API or of a wrapper (by name; "" depends on a
         # template parameter)
         wanted = {"", *_API_NAMES, *(f.spelling for f in functions)}
-        calls = {_key(f.canonical): [c for c in _calls(f) if c.spelling in wanted]
+        calls = {_key(f.canonical): [c for c in found.get(_key(f.canonical), ())
+                                     if c.spelling in wanted]
                  for f in functions}
         todo = functions
         for _round in range(MAX_DEPTH):
@@ -119,10 +141,15 @@ class Wrappers:
             # the functions that call one that changed are read again
             todo = [f for f in functions if any(
                 self._calls_one_of(call, changed) for call in calls[_key(f.canonical)])]
-        # a recursive function is no wrapper, nor is one made through it
+        # a recursive function is no wrapper, nor is one made through it; a class
+        # template's constructor is one only where the construction gives the type (its
+        # other calls stay in it, named by what its callers pass: call_sites, links)
+        constructors = {_key(f.canonical) for f in functions if _is_constructor(f)}
         self.summaries = {
-            key: found for key, found in self.summaries.items() if key not in self._recursive
-            and not any(self._recursive & w.through for w in found)}
+            key: kept for key, found in self.summaries.items() if key not in self._recursive
+            and not any(self._recursive & w.through for w in found)
+            and (kept := [w for w in found if key not in constructors
+                          or "template" in w.row.type_from])}
         self._inner = {call: owner for call, owner in self._inner.items()
                        if owner in self.summaries}
         sites = finder.sites
@@ -134,10 +161,42 @@ class Wrappers:
                 and not sites.callers(function)
             ):
                 self._kept.add(key)  # ROS 1: callers in the node's other files (links)
-        self.names = frozenset(f.spelling for f in functions
-                               if _key(f.canonical) in self.summaries)
+        self.names = frozenset(
+            "operator()" if f.kind == CursorKind.LAMBDA_EXPR else f.spelling
+            for f in functions if _key(f.canonical) in self.summaries)
         if self.names:
             self.names |= {""}  # a call that depends on a template parameter
+
+    def silent(self, function: Cursor) -> bool:
+        """Whether the calls inside ``function`` are emitted where it is called, not
+        where they are written (a wrapper whose callers are in this unit)."""
+        key = _key(function.canonical)
+        return key in self.summaries and key not in self._kept
+
+    def _constructed(self, call: Cursor, args: list[Cursor]) -> list[Key]:
+        """The wrapper constructors ``std::make_shared<C>(args)`` may call (C a class
+        template of the unit whose constructor wraps the API), resolved or dependent."""
+        target = call.referenced
+        heads = [target] if target is not None else [
+            d for c in list(call.get_children())[:1] for d in _overloads(c)]
+        if not any((qualified_name(d.semantic_parent), d.spelling) in api.FACTORIES
+                   for d in heads):
+            return []
+        head = next(iter(call.get_children()), None)
+        classes = [c.referenced for c in (head.walk_preorder() if head is not None else ())
+                   if c.kind in (CursorKind.TEMPLATE_REF, CursorKind.TYPE_REF)
+                   and c.referenced is not None]
+        pattern = next((c for c in classes if c.kind == CursorKind.CLASS_TEMPLATE), None)
+        if pattern is None:
+            return []
+        found = []
+        for child in pattern.get_children():
+            key = _key(child.canonical)
+            if (child.kind == CursorKind.CONSTRUCTOR or (
+                child.kind == CursorKind.FUNCTION_TEMPLATE and _is_constructor(child)
+            )) and key in self.summaries and _fits(child, args):
+                found.append(key)
+        return found
 
     def _summarise(self, function: Cursor, key: Key, call: Cursor) -> bool:
         added = False
@@ -161,24 +220,35 @@ class Wrappers:
     def _inner_rows(self, call: Cursor) -> Iterator[
             tuple[Wrapper, list[Cursor], Cursor | None, Key | None]]:
         """The rows ``call`` matches: (row, its arguments, class, the wrapper called)."""
-        args = written_arguments(call)
+        args = _arguments(call)
         target = call.referenced
         if target is not None:
-            callee = _key(target.canonical)
-            for wrapper in self.summaries.get(callee, ()):
-                yield wrapper, args, None, callee
+            for callee in self._constructed(call, args) or [_key(target.canonical)]:
+                for wrapper in self.summaries.get(callee, ()):
+                    yield wrapper, args, None, callee
             spec, cls = self.finder._row(call)
             if spec is not None:
                 yield Wrapper(spec), args, cls, None
             return
+        for callee in self._constructed(call, args):
+            for wrapper in self.summaries.get(callee, ()):
+                yield wrapper, args, None, callee
         children = list(call.get_children())
         head = children[0] if children else None
         if head is None:
             return
         if head.kind == CursorKind.MEMBER_REF_EXPR:
-            spec = DEPENDENT.get(_member_name(head))
+            name = _member_name(head)
+            spec = DEPENDENT.get(name)
             if spec is not None:
                 yield Wrapper(spec), args, None, None
+            # a method of the unit called on a dependent object (``this`` in a generic
+            # lambda: its overloads are named): the wrappers among them
+            for decl in _overloads(head):
+                callee = _key(decl.canonical)
+                if _fits(decl, args):
+                    for wrapper in self.summaries.get(callee, ()):
+                        yield wrapper, args, None, callee
             return
         for decl in _overloads(head):
             callee = _key(decl.canonical)
@@ -306,6 +376,11 @@ class Wrappers:
         fixed in the wrapper."""
         templates = [c for c in function.get_children()
                      if c.kind == CursorKind.TEMPLATE_TYPE_PARAMETER]
+        if _of_class_template(function) and _is_constructor(function):
+            # a constructor of a class template: the class's first parameter is what a
+            # construction's template argument gives (make_shared<Server<T>>)
+            templates = [c for c in function.semantic_parent.get_children()
+                         if c.kind == CursorKind.TEMPLATE_TYPE_PARAMETER]
         sources: list[str] = []
         type_arg: int | None = None
 
@@ -367,13 +442,19 @@ class Wrappers:
         if not wrappers:
             return False
         finder = self.finder
-        args = written_arguments(call)
+        args = _arguments(call)
+        bound = _made_with(call, scope)
+        done: set[tuple[object, ...]] = set()
         for wrapper in wrappers:
             row = wrapper.row
             if row.name_arg >= len(args):
                 continue
-            named = _NamedScope(scope, args[row.name_arg], wrapper.before, wrapper.after) if (
-                wrapper.before or wrapper.after) else scope
+            before, after = _bind(wrapper.before, bound), _bind(wrapper.after, bound)
+            if (row, before, after) in done:
+                continue  # two summaries that differ only in the value now bound
+            done.add((row, before, after))
+            named = _NamedScope(scope, args[row.name_arg], before, after) if (
+                before or after) else scope
             start = len(finder.calls)
             finder._emit(row, call, args, None, conditions, named)
             for made in finder.calls[start:]:
@@ -392,7 +473,8 @@ class Wrappers:
         """The wrappers ``call`` calls (through the overloads a dependent call names)."""
         target = call.referenced
         if target is not None:
-            return self.summaries.get(_key(target.canonical), [])
+            return [w for key in self._constructed(call, _arguments(call))
+                    or [_key(target.canonical)] for w in self.summaries.get(key, ())]
         children = list(call.get_children())
         args = written_arguments(call)
         for decl in _overloads(children[0]) if children else []:
@@ -431,6 +513,12 @@ def _name_shape(expr: Cursor, params: list[Cursor], scope: Scope | None,
         value = scope.variable(decl) if scope is not None and decl is not None else None
         return _name_shape(value, params, scope, depth + 1) if value is not None else None
     operands: list[Cursor] = []
+    if kind == CursorKind.CONDITIONAL_OPERATOR:
+        # ``ns.empty() ? name : ns + "." + name``: the branch that keeps the most text
+        branches = [c for c in expr.get_children() if c.kind.is_expression()][1:]
+        shapes = [found for b in branches
+                  if (found := _name_shape(b, params, scope, depth + 1)) is not None]
+        return max(shapes, key=lambda f: len(f[0]) + len(f[2])) if shapes else None
     if kind == CursorKind.CALL_EXPR and expr.spelling == "operator+":
         operands = written_arguments(expr)
     elif kind == CursorKind.BINARY_OPERATOR and scope is not None:
@@ -531,8 +619,11 @@ def _fits(decl: Cursor, args: list[Cursor]) -> bool:
     """Whether overload ``decl`` may be the one called with ``args``: their number, and
     no builtin value (``true``, ``0.25``) passed for a class parameter (a descriptor)."""
     params = _parameters(decl)
+    variadic = bool(params) and params[-1].type.spelling.endswith("...")
+    if variadic:
+        params = params[:-1]  # a pack (``R&&... rest``): any number of arguments
     required = [p for p in params if not any(c.kind.is_expression() for c in p.get_children())]
-    if not len(required) <= len(args) <= len(params):
+    if not len(required) <= len(args) <= (len(args) if variadic else len(params)):
         return False
     for param, arg in zip(params, args, strict=False):
         wanted = param.type.get_canonical()
@@ -552,10 +643,79 @@ def _targets(call: Cursor) -> list[Key]:
     return [_key(d.canonical) for d in _overloads(children[0])] if children else []
 
 
-def _calls(function: Cursor) -> Iterator[Cursor]:
-    for node in function.walk_preorder():
+def _is_constructor(function: Cursor) -> bool:
+    """A constructor, or a constructor template (``ServiceServer<ServiceT>``)."""
+    parent = function.semantic_parent
+    return function.kind == CursorKind.CONSTRUCTOR or (
+        parent is not None and function.spelling.split("<")[0] == parent.spelling)
+
+
+def _of_class_template(function: Cursor) -> bool:
+    parent = function.semantic_parent
+    return parent is not None and parent.kind in (
+        CursorKind.CLASS_TEMPLATE, CursorKind.CLASS_TEMPLATE_PARTIAL_SPECIALIZATION)
+
+
+def _arguments(call: Cursor) -> list[Cursor]:
+    """A call's written arguments; of a call of a lambda (``getParam(x, "name")``, an
+    ``operator()`` call), without the lambda object clang lists first."""
+    args = written_arguments(call)
+    if call.spelling == "operator()" and args:
+        target = call.referenced
+        parent = target.semantic_parent if target is not None else None
+        if parent is not None and parent.spelling.startswith("(lambda at "):
+            return args[1:]
+    return args
+
+
+def _made_with(call: Cursor, scope: Scope) -> dict[str, Parts]:
+    """For a call of a lambda held in a variable that a function call made
+    (``auto getParam = handler->getParamGetter(ns)``), the placeholder part of each of
+    that function's parameters (``call_sites.placeholder``) and the value this site's
+    maker passes for it: the lambda's captures are that call's arguments."""
+    if call.spelling != "operator()":
+        return {}
+    objects = written_arguments(call)
+    held = strip(objects[0]) if objects else None
+    decl = held.referenced if held is not None and held.kind == CursorKind.DECL_REF_EXPR \
+        else None
+    made = initializer(decl) if decl is not None and decl.kind == CursorKind.VAR_DECL \
+        else None
+    made = strip(made) if made is not None else None
+    maker = made.referenced if made is not None and made.kind == CursorKind.CALL_EXPR \
+        else None
+    if maker is None:
+        return {}
+    usr = maker.canonical.get_usr()
+    return {f"{PLACEHOLDER}{usr}{SEPARATOR}{index}{PLACEHOLDER}": scope.string(arg)
+            for index, arg in enumerate(written_arguments(made))}
+
+
+def _bind(parts: Parts, bound: dict[str, Parts]) -> Parts:
+    if not bound:
+        return parts
+    found: list[str | None] = []
+    for part in parts:
+        found.extend(bound[part] if isinstance(part, str) and part in bound else (part,))
+    return tuple(found)
+
+
+def _scan(function: Cursor) -> tuple[list[Cursor], list[Cursor]]:
+    """The calls in ``function``'s body, in order, and the lambdas it makes; not the
+    calls inside those (a lambda's body runs when it is called, not where it is
+    written): one walk of the body."""
+    calls: list[Cursor] = []
+    lambdas: list[Cursor] = []
+    stack = list(reversed(list(function.get_children())))
+    while stack:
+        node = stack.pop()
+        if node.kind == CursorKind.LAMBDA_EXPR:
+            lambdas.append(node)
+            continue
         if node.kind == CursorKind.CALL_EXPR:
-            yield node
+            calls.append(node)
+        stack.extend(reversed(list(node.get_children())))
+    return calls, lambdas
 
 
 def _dependent_name(name: str) -> bool:

@@ -451,7 +451,7 @@ class Ros1Loader:
         for param in (*scope.private, *private.private):
             tags_params.add_param(self, private.ns + param.name.lstrip("~"), param.value,
                                   param.kind, (*scope.conditions, *param.conditions),
-                                  param.location, param.source)
+                                  param.location, param.source, param.command)
         full = inner.ns + name
         location = self.where(scope, element)
         if name and not is_test:

@@ -54,6 +54,7 @@ class PrivateParam:
     conditions: tuple[Condition, ...]
     location: Location = NOWHERE
     source: str = "value"
+    command: str | None = None  # the command line of ``command=``
 
 
 @dataclass

@@ -8,6 +8,7 @@ is never run: the parameter exists with an unknown value.
 from __future__ import annotations
 
 import os
+import shlex
 from typing import TYPE_CHECKING, Any
 
 from lxml import etree
@@ -54,14 +55,17 @@ def tag_param(loader: Ros1Loader, element: Element, scope: Scope,
         loader.fail(scope, element, f"invalid <param> {name}: unknown type '{kind}'")
         return
     where = loader.where(scope, element)
+    # the command line the value comes from (textfile: the file's content, as cat gives it)
+    command = raw.text if source == "command" else (
+        f"cat {shlex.quote(raw.text)}" if source == "textfile" else None)
     declared = type_name(value) if value is not None else (
         None if kind == "auto" else kind)
     if name.startswith("~") or local:
         scope.add_private(PrivateParam(name, value, declared, scope.conditions, where,
-                                       source))
+                                       source, command))
     else:
         add_param(loader, join(scope.ns, name), value, declared, scope.conditions, where,
-                       source)
+                  source, command)
 
 def param_value(loader: Ros1Loader, source: str, text: str, kind: str, scope: Scope,
                 element: Element) -> Any:
@@ -94,9 +98,11 @@ def read_param_file(loader: Ros1Loader, path: str, scope: Scope, element: Elemen
 
 def add_param(loader: Ros1Loader, name: str, value: Any, kind: str | None,
               conditions: tuple[Condition, ...], location: Location,
-              source: str = "value") -> None:
+              source: str = "value", command: str | None = None) -> None:
+    """A parameter the launch file sets (``source``: value, textfile, binfile, command,
+    rosparam; ``command``: the command line of ``command=``)."""
     loader.model.params.append(ParamDecl(server_name(name), value, kind, conditions,
-                                         location, source))
+                                         location, command=command))
 
 
 def server_name(name: str) -> str:

@@ -21,7 +21,7 @@ from __future__ import annotations
 import copy
 import functools
 import re
-from collections.abc import Iterator
+from collections.abc import Hashable, Iterator
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -173,6 +173,45 @@ def param_type(value: Any) -> str | None:
     if isinstance(value, (list, tuple)):
         return "str[]" if not value else None
     return None
+
+
+class ParamFileLoader(yaml.SafeLoader):
+    """The safe loader, reading a key given twice in one mapping as rcl reads a parameter
+    file (event by event): two mappings merge, key by key (``/**:`` written twice, once
+    for ``turtlebot3_node`` and once for ``diff_drive_controller``, gives both); any
+    other value given again replaces the first."""
+
+    def construct_mapping(self, node: yaml.MappingNode, deep: bool = False
+                          ) -> dict[Any, Any]:
+        if not isinstance(node, yaml.MappingNode):
+            return super().construct_mapping(node, deep)  # says what is wrong
+        self.flatten_mapping(node)
+        mapping: dict[Any, Any] = {}
+        for key_node, value_node in node.value:
+            key = self.construct_object(key_node, deep=True)
+            if not isinstance(key, Hashable):
+                raise yaml.constructor.ConstructorError(
+                    "while constructing a mapping", node.start_mark,
+                    "found an unhashable key", key_node.start_mark)
+            value = self.construct_object(value_node, deep=True)
+            before = mapping.get(key)
+            mapping[key] = _merged(before, value) if isinstance(before, dict) and isinstance(
+                value, dict) else value
+        return mapping
+
+
+def _merged(first: dict[Any, Any], second: dict[Any, Any]) -> dict[Any, Any]:
+    merged = dict(first)
+    for key, value in second.items():
+        before = merged.get(key)
+        merged[key] = _merged(before, value) if isinstance(before, dict) and isinstance(
+            value, dict) else value
+    return merged
+
+
+def load_param_file(text: str) -> Any:
+    """A ROS 2 parameter file's document (bounded, as ``safe_yaml.load``)."""
+    return safe_yaml.load(text, ParamFileLoader)
 
 
 def yaml_value(text: str) -> Any:

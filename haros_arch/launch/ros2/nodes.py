@@ -91,17 +91,39 @@ MAX_PARAM_ENTRIES = 100_000  # SetParameter-in-scope and own entries, over all n
 def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamEntry],
                 scope: Scope, where: Location) -> None:
     found: dict[str, tuple[Any, Location]] = {}
+    # entries for particular nodes of files given to a node whose name is not known
+    # yet, in file order: (pattern, name, value, location); a later value set for all
+    # replaces them, as it would whatever name the node has
+    pending: list[tuple[str, str, Any, Location]] = []
+
+    def put(name: str, leaf: Any, location: Location) -> None:
+        found[name] = (leaf, location)
+        pending[:] = [p for p in pending if p[1] != name]
 
     def read_file(entry: e.ParamFile, location: Location) -> None:
         document = runner.param_file(entry, scope, location)
         if document is None:
             return
-        if UNKNOWN_MARK in node and naming.names_a_node(document):
+        runner.model.nodes[-1].param_files.append((document, location))
+        if UNKNOWN_MARK not in node:
+            for name, leaf in naming.params_for_node(document, node):
+                put(name, leaf, location)
+            return
+        if naming.names_a_node(document):
             runner.report("LAUNCH_PARAM_FILE", location,
                           detail=f"parameter file applied to {node}, whose name is not "
-                                 "known: only its /** entries are used")
-        for name, leaf in naming.params_for_node(document, node):
-            found[name] = (leaf, location)
+                                 "known here: its /** entries are used, those for "
+                                 "particular nodes once the node is named from its code")
+            kept = _as_given(runner, entry, scope, location)
+            decl = runner.model.nodes[-1]
+            if kept is not None and not decl.composable:  # launch_ros passes it on
+                decl.params_files_given.append(kept)
+        for pattern, params in naming.node_patterns(document):
+            for name, leaf in naming.flatten(params):
+                if pattern == "/**":
+                    put(name, leaf, location)
+                else:
+                    pending.append((pattern, name, leaf, location))
 
     before = runner.param_entries
     runner.param_entries += len(scope.params) + len(entries)
@@ -116,19 +138,54 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
             read_file(value, location)
             continue
         for name, leaf in flat(key, convert(value, ev)):
-            found[name] = (leaf, location)
+            put(name, leaf, location)
+    commands: dict[str, str] = {}
     for entry in entries:
         if isinstance(entry, e.ParamFile):
             read_file(entry, entry.location if entry.location.file else where)
         else:
             written, value = entry
             for name, leaf in flat(ev.value(written).text, convert(value, ev)):
-                found[name] = (leaf, where)
+                put(name, leaf, where)
+            command = command_line(value, ev)
+            if command is not None:
+                commands[ev.value(written).text] = command
     owner = len(runner.model.nodes) - 1  # the declaration just appended
     for name, (leaf, location) in found.items():
         param = make_param(node, name, leaf, scope.conditions, location)
         param.owner = owner
+        param.command = commands.get(name)
         runner.model.params.append(param)
+    for pattern, name, leaf, location in pending:  # after those they may replace
+        param = make_param(node, name, leaf, scope.conditions, location)
+        param.owner, param.pattern = owner, pattern
+        runner.model.params.append(param)
+
+
+def command_line(value: Any, ev: Evaluator) -> str | None:
+    """The command line of a value that is one ``Command`` (``ParameterValue`` of one
+    too), as text with ``?`` for unknown parts; None for any other value."""
+    if isinstance(value, e.ParamValue):
+        value = value.value
+    if not isinstance(value, tuple):
+        return None
+    commands = [part for part in value if isinstance(part, e.Command)]
+    rest = [part for part in value if not isinstance(part, e.Command)]
+    if len(commands) != 1 or any(not isinstance(p, str) or p.strip() for p in rest):
+        return None
+    return ev.value(commands[0].command).text
+
+
+def _as_given(runner: Runner, entry: e.ParamFile, scope: Scope,
+              location: Location) -> str | None:
+    """The path launch_ros gives a ``Node`` as ``--params-file``: a file used as it is
+    (not rewritten, no substitutions in it); None otherwise."""
+    if entry.rewrites or entry.key_rewrites or entry.value_rewrites or entry.replacements \
+            or entry.root_key is not None or entry.allow_substs or (
+            len(entry.path) == 1 and isinstance(entry.path[0], e.FileRef)):
+        return None
+    path = runner.value(entry.path, scope, location)
+    return None if path is None or path.literal is None else path.literal
 
 
 def flat(key: str, value: Any) -> list[tuple[str, Any]]:

@@ -33,6 +33,8 @@ from .python_methods import (
     open_file,
     safe_load,
     text_or_none,
+    xacro_process,
+    xacro_process_file,
 )
 from .python_nav2 import NAV2_COMMON
 from .python_values import (
@@ -217,7 +219,9 @@ def parameters(i: Interpreter, value: Any, n: ast.AST) -> list[e.ParamEntry]:
 
 
 def param_value(value: Any) -> Any:
-    """Python values stay; substitutions become Text (read as YAML when performed)."""
+    """Python values stay (a string too: launch_ros dumps it as YAML and reads it back,
+    so ``'1'`` stays the string); substitutions become Text (read as YAML when
+    performed)."""
     if isinstance(value, (Lazy, e.Subst, Unknown)):
         return to_text(value)
     if isinstance(value, (list, tuple)):
@@ -228,7 +232,7 @@ def param_value(value: Any) -> Any:
     if isinstance(value, dict):
         return {str(k): param_value(v) for k, v in value.items()}
     if isinstance(value, str):
-        return e.ParamValue(value, as_text=False)
+        return e.ParamValue(value, as_text=True)
     return value
 
 
@@ -463,7 +467,8 @@ API: dict[str, Builder] = {
     "NotEqualsSubstitution": logic("notequals", 2),
     "IfElseSubstitution": logic("if", 3),
     "FileContent": lambda i, a, k, n: e.FileContent(to_text(arg(a, k, 0, "path"))),
-    "Command": opaque("Command (never run)"), "FindExecutable": find_executable,
+    "Command": lambda i, a, k, n: e.Command(to_text(arg(a, k, 0, "command"))),
+    "FindExecutable": find_executable,
     "ExecutableInPackage": executable_in_package,
     "AnySubstitution": logic("any", 64), "AllSubstitution": logic("all", 64),
     "LaunchLogDir": opaque("LaunchLogDir (known at run time)"),
@@ -508,6 +513,7 @@ API: dict[str, Builder] = {
     "print": ignored, "isinstance": lambda i, a, k, n: Unknown("isinstance"),
     "all": builtin(all, list, tuple), "any": builtin(any, list, tuple),
     "open": open_file, "safe_load": safe_load,
+    "process_file": xacro_process_file, "process": xacro_process,
 }
 BUILTINS = frozenset(("len", "str", "int", "float", "bool", "list", "tuple", "dict",
                       "sorted", "min", "max", "abs", "enumerate", "zip", "range", "print",

@@ -27,6 +27,7 @@ from .python_values import (
     LaunchDescription,
     Lazy,
     ReadOnlyFile,
+    XacroDocument,
     concat,
     to_text,
 )
@@ -261,7 +262,40 @@ def m_path(name: str) -> Method:
     return call
 
 
+XACRO_NOT_RUN = "xacro is never run here; the document it makes is unknown"
+
+
+def xacro_command(path: Any, mappings: Any) -> e.Text:
+    """The ``xacro`` command line that ``xacro.process_file(path, mappings)`` stands for."""
+    parts: list[Any] = ["xacro ", path]
+    if isinstance(mappings, dict):
+        for key, value in list(mappings.items())[:1000]:
+            parts += [" ", key, ":=", value]
+    return to_text(parts)
+
+
+def xacro_process_file(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``xacro.process_file(path, mappings=...)``: a document never processed here."""
+    return XacroDocument(xacro_command(arg(a, k, 0, "input_file_name"),
+                                       k.get("mappings", a[1] if len(a) > 1 else None)))
+
+
+def xacro_process(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``xacro.process(path, mappings=...)``: the XML text, as a ``xacro`` command's."""
+    return Lazy((e.Command(xacro_command(arg(a, k, 0, "input_file_name"),
+                                         k.get("mappings", a[1] if len(a) > 1 else None)),
+                           XACRO_NOT_RUN),))
+
+
+def m_xml(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``toxml()`` / ``toprettyxml()`` of a xacro document: its command's output."""
+    if isinstance(owner, XacroDocument):
+        return Lazy((e.Command(owner.command, XACRO_NOT_RUN),))
+    return Unknown("toxml() of a value not known statically")
+
+
 METHODS: dict[str, Method] = {
+    "toxml": m_xml, "toprettyxml": m_xml,
     "add_action": m_add_action, "find": m_find, "read": m_read, "evaluate": m_evaluate,
     "append": m_list("append"), "extend": m_list("extend"),
     "insert": m_list("insert"), "items": m_dict("items"), "keys": m_dict("keys"),

@@ -61,6 +61,14 @@ class Lazy:
 
 
 @dataclass(frozen=True)
+class XacroDocument:
+    """What ``xacro.process_file(path, mappings=...)`` returns: never processed here; its
+    ``toxml()`` is the output of the ``xacro`` command line it stands for."""
+
+    command: e.Text
+
+
+@dataclass(frozen=True)
 class Ref:
     """A module or a name imported from one: ``launch_ros.actions.Node``."""
 
@@ -93,7 +101,7 @@ class Context:
 
 
 _KNOWN_ROOTS = ("launch", "launch_ros", "launch_xml", "launch_yaml", "os", "ament_index_python",
-                "nav2_common", "builtins", "pathlib", "yaml")
+                "nav2_common", "builtins", "pathlib", "yaml", "xacro")
 
 
 def _known_module(qualified: str) -> bool:

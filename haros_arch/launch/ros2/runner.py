@@ -358,7 +358,7 @@ class Runner:
         if text is None:
             return None
         try:
-            document = unknown_parts(safe_yaml.load(text))
+            document = unknown_parts(naming.load_param_file(text))
         except yaml.YAMLError as err:
             mark = getattr(err, "problem_mark", None)
             self.report("LAUNCH_YAML_SYNTAX", self.workspace.location(

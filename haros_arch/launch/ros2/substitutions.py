@@ -174,7 +174,8 @@ def make(name: str, args: list[e.Text], raw: str) -> e.Subst:
                 "not-equals": (2, 2), "if": (2, 3), "any": (0, 64), "all": (0, 64)}[name])
         return e.Logic(name.replace("-", ""), tuple(args), frontend=True)
     if name == "command":
-        return e.Opaque(f"$(command) is never run; its output is unknown: {raw}")
+        origin = f"$(command) is never run; its output is unknown: {raw}"
+        return e.Command(args[0], origin) if args else e.Opaque(origin)
     if name == "file-content":
         arity(1, 1)
         return e.FileContent(args[0])
@@ -428,6 +429,9 @@ class Evaluator:
 
     def s_FileRef(self, s: e.FileRef) -> Value:
         return self.value(s.file.path)
+
+    def s_Command(self, s: e.Command) -> Value:
+        return self.s_Opaque(e.Opaque(s.origin))
 
     def s_Opaque(self, s: e.Opaque) -> Value:
         if s.report:

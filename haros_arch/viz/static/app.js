@@ -52,7 +52,8 @@ function skeleton() {
   ui.namespaces = el('section', {id: 'namespaces'});
   ui.findings = el('section', {id: 'findings'});
   ui.diagnostics = el('section', {id: 'diagnostics'});
-  const side = el('aside', {id: 'side'}, ui.findings, ui.filters, ui.namespaces, ui.diagnostics);
+  ui.live = el('section', {id: 'live', hidden: true});
+  const side = el('aside', {id: 'side'}, ui.findings, ui.live, ui.filters, ui.namespaces, ui.diagnostics);
 
   ui.svg = d3.select(el('div')).append('svg').attr('id', 'graph');
   const defs = ui.svg.append('defs');
@@ -187,7 +188,50 @@ function findingGroups(found) {
     });
 }
 
+// A capture of the running system beside the graph (`report --live`): per kind, what is
+// in both, only live (not in the graph) and only in the model (dashed in the graph).
+const LIVE = DATA.live || null;
+const LIVE_KINDS = {nodes: 'node', topics: 'topic', services: 'service', actions: 'action'};
+
+function liveScores() {
+  return LIVE && app.config ? (LIVE[app.config.name] || null) : null;
+}
+
+function renderLive() {
+  const found = liveScores();
+  ui.live.hidden = !found;
+  if (!found) return;
+  const list = (label, items) => items.length ? [el('div', {class: 'live-part'}, label),
+    el('ul', {}, items.map(item => el('li', {}, el('code', {}, item))))] : [];
+  ui.live.replaceChildren(el('h3', {}, 'Live capture'),
+    el('p', {class: 'muted'}, 'dashed in the graph: in the model, not seen live'),
+    ...found.scores.map(s => {
+      const differs = s.differs || [];
+      const onlyLive = differs.length ? [] : s.missing, onlyModel = differs.length ? [] : s.extra;
+      const parts = [`${s.matched} both`, `${onlyLive.length} only live`, `${onlyModel.length} only in the model`];
+      if (s.differs) parts.push(`${differs.length} differ`);
+      const item = el('details', {class: 'live-kind', 'data-kind': s.kind},
+        el('summary', {}, el('span', {class: 'item-title'}, s.kind), ' ', el('span', {class: 'muted'}, parts.join(', '))),
+        ...list('only live', onlyLive), ...list('only in the model', onlyModel),
+        ...list('differs', differs), ...list('both', s.both || []));
+      if (onlyLive.length || onlyModel.length || differs.length) item.open = true;
+      return item;
+    }));
+}
+
+// The ids of the graph's entities that the capture did not see.
+function staticOnly() {
+  const found = liveScores();
+  const ids = new Set();
+  for (const s of (found && found.scores) || []) {
+    const kind = LIVE_KINDS[s.kind];
+    if (kind) for (const name of s.extra) ids.add(`${kind}:${name}`);
+  }
+  return ids;
+}
+
 function renderLists() {
+  renderLive();
   const found = bySeverity(app.configFindings());
   ui.findings.replaceChildren(el('h3', {}, `Findings (${found.length})`),
     ...(found.length ? findingGroups(found) : [el('p', {class: 'muted'}, 'No query findings.')]));
@@ -279,6 +323,10 @@ function renderGraph(opened) {
   app.view.rects = layeredLayout(app.view.vertices, app.view.edges, opts);
   if (app.layout === 'force') app.view.rects = new Map();
   app.drawn = drawGraph(ui.viewport, app.view, handlers);
+  if (LIVE) {
+    const notSeen = staticOnly();
+    app.drawn.vertexSel.classed('static-only', v => notSeen.has(v.id));
+  }
   if (app.layout === 'force') app.sim = forceLayout(app.view.vertices, app.view.edges, () => app.drawn.update(), opts);
   const inside = opened && app.layout !== 'force' ? app.view.vertices.filter(v => v.path.includes(opened)) : [];
   showHint();

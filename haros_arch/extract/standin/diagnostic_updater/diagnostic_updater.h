@@ -30,6 +30,8 @@ public:
   Updater();
   explicit Updater(ros::NodeHandle h, ros::NodeHandle ph = ros::NodeHandle("~"),
                    std::string node_name = std::string());
+  // ROS 2: Updater(node, period) with an rclcpp node (or its interfaces)
+  template<class N> explicit Updater(N node, double period = 1.0);
   void setHardwareID(const std::string& id);
   void setHardwareIDf(const char* format, ...);
   template<class T> void add(const std::string& name, T* object,

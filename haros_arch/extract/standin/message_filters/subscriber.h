@@ -6,13 +6,16 @@
 #include <functional>
 #include <boost/shared_ptr.hpp>
 #include <boost/function.hpp>
+namespace ros { class Subscriber; }
 namespace message_filters {
-template<class M> class Subscriber {
+template<class M, class NodeType = void> class Subscriber {
 public:
   Subscriber();
   template<class N, class... A> Subscriber(N&& node, const std::string& topic, A&&... more);
   template<class N, class... A> void subscribe(N&& node, const std::string& topic, A&&... more);
   void unsubscribe();
+  std::string getTopic() const;
+  const ros::Subscriber& getSubscriber() const;
   template<class C> void registerCallback(const C& callback);
 };
 struct NullType {};
@@ -26,6 +29,10 @@ public:
   template<class... F> void connectInput(F&... filters);
   template<class C> void registerCallback(const C& callback);
   template<class C, class T> void registerCallback(const C& callback, T* object);
+  template<class D> void setInterMessageLowerBound(int index, const D& bound);
+  template<class D> void setInterMessageLowerBound(const D& bound);
+  void setAgePenalty(double penalty);
+  template<class D> void setMaxIntervalDuration(const D& duration);
 };
 template<class... M> class TimeSynchronizer {
 public:

@@ -16,6 +16,11 @@
   using SharedPtr = std::shared_ptr<T>; using ConstSharedPtr = std::shared_ptr<const T>; \
   using UniquePtr = std::unique_ptr<T>; using WeakPtr = std::weak_ptr<T>;
 #define RCLCPP_SMART_PTR_ALIASES_ONLY(T) RCLCPP_SMART_PTR_DEFINITIONS(T)
+#define RCLCPP_SMART_PTR_DEFINITIONS_NOT_COPYABLE(T) RCLCPP_SMART_PTR_DEFINITIONS(T)
+#define RCLCPP_SHARED_PTR_DEFINITIONS(T) \
+  using SharedPtr = std::shared_ptr<T>; using ConstSharedPtr = std::shared_ptr<const T>;
+#define RCLCPP_WEAK_PTR_DEFINITIONS(T) using WeakPtr = std::weak_ptr<T>;
+#define RCLCPP_UNIQUE_PTR_DEFINITIONS(T) using UniquePtr = std::unique_ptr<T>;
 #define RCLCPP_DISABLE_COPY(T)
 #define RCLCPP_PUBLIC
 #define RCLCPP_LOCAL
@@ -535,7 +540,12 @@ public:
   Node::SharedPtr create_sub_node(const std::string& sub_namespace);
 };
 enum class FutureReturnCode { SUCCESS, INTERRUPTED, TIMEOUT };
-class Context { public: RCLCPP_SMART_PTR_DEFINITIONS(Context) bool is_valid() const; };
+class PreShutdownCallbackHandle {};
+class Context { public: RCLCPP_SMART_PTR_DEFINITIONS(Context) bool is_valid() const;
+  template<class C> PreShutdownCallbackHandle add_pre_shutdown_callback(C callback);
+  bool remove_pre_shutdown_callback(const PreShutdownCallbackHandle& handle);
+  template<class C> void add_on_shutdown_callback(C callback);
+  bool shutdown(const std::string& reason); };
 namespace memory_strategy { class MemoryStrategy { public: RCLCPP_SMART_PTR_DEFINITIONS(MemoryStrategy) }; }
 struct ExecutorOptions {
   ExecutorOptions();
@@ -680,6 +690,15 @@ std::shared_ptr<rclcpp::Subscription<M>> create_subscription(
     std::shared_ptr<node_interfaces::NodeTopicsInterface> topics,
     const std::string& topic_name, const rclcpp::QoS& qos, C&& callback,
     const SubscriptionOptionsWithAllocator<A>& options = SubscriptionOptionsWithAllocator<A>());
+// rclcpp/create_service.hpp, create_client.hpp: on node interfaces (nav2's ServiceServer)
+template<class S, class B, class V, class C, class... R>
+std::shared_ptr<rclcpp::Service<S>> create_service(
+    B&& node_base, V&& node_services, const std::string& service_name, C&& callback,
+    R&&... rest);
+template<class S, class B, class G, class V, class... R>
+std::shared_ptr<rclcpp::Client<S>> create_client(
+    B&& node_base, G&& node_graph, V&& node_services, const std::string& service_name,
+    R&&... rest);
 class UnsupportedEventTypeException : public std::runtime_error {
 public:
   explicit UnsupportedEventTypeException(const std::string& what);

@@ -3,6 +3,18 @@
 #define HAROS_STANDIN_RCLCPP_ACTION_HPP
 #include <rclcpp/rclcpp.hpp>
 #include <array>
+// rcl_action/action_server.h, action_client.h: the options nav2's servers start from
+typedef struct rcl_action_server_options_s {
+  rmw_qos_profile_t goal_service_qos, cancel_service_qos, result_service_qos,
+    feedback_topic_qos, status_topic_qos;
+  double result_timeout;
+} rcl_action_server_options_t;
+typedef struct rcl_action_client_options_s {
+  rmw_qos_profile_t goal_service_qos, result_service_qos, cancel_service_qos,
+    feedback_topic_qos, status_topic_qos;
+} rcl_action_client_options_t;
+rcl_action_server_options_t rcl_action_server_get_default_options(void);
+rcl_action_client_options_t rcl_action_client_get_default_options(void);
 namespace rclcpp_action {
 using GoalUUID = std::array<uint8_t, 16>;
 enum class GoalResponse { REJECT = 1, ACCEPT_AND_EXECUTE = 2, ACCEPT_AND_DEFER = 3 };

@@ -4,7 +4,14 @@
 #include <rclcpp/rclcpp.hpp>
 namespace rclcpp_lifecycle {
 class State { public: uint8_t id() const; const std::string& label() const; };
-template<class M, class A = void> class LifecyclePublisher : public rclcpp::Publisher<M> {
+class ManagedEntityInterface {
+public:
+  virtual ~ManagedEntityInterface();
+  virtual void on_activate();
+  virtual void on_deactivate();
+};
+template<class M, class A = void> class LifecyclePublisher : public rclcpp::Publisher<M>,
+                                                             public ManagedEntityInterface {
 public:
   RCLCPP_SMART_PTR_DEFINITIONS(LifecyclePublisher)
   void on_activate();
@@ -21,7 +28,8 @@ public:
   explicit LifecycleNode(const std::string& node_name,
                          const rclcpp::NodeOptions& options = rclcpp::NodeOptions());
   LifecycleNode(const std::string& node_name, const std::string& namespace_,
-                const rclcpp::NodeOptions& options = rclcpp::NodeOptions());
+                const rclcpp::NodeOptions& options = rclcpp::NodeOptions(),
+                bool enable_communication_interface = true);
   virtual ~LifecycleNode();
   HAROS_RCLCPP_NODE_API(LifecycleNode)
   using CallbackReturn = node_interfaces::LifecycleNodeInterface::CallbackReturn;
@@ -34,6 +42,12 @@ public:
   const State& configure();
   const State& activate();
   const State& deactivate();
+  const State& cleanup();
+  const State& shutdown();
+  const State& get_current_state() const;
+  std::vector<State> get_available_states() const;
+  void add_managed_entity(std::weak_ptr<rclcpp_lifecycle::ManagedEntityInterface> entity);
+  void add_timer_handle(std::shared_ptr<rclcpp::TimerBase> timer);
 };
 }
 #endif

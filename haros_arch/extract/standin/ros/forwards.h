@@ -53,21 +53,52 @@ public:
 };
 }  // namespace ros
 namespace XmlRpc {
+// as xmlrpcpp/XmlRpcValue.h declares it (the members nodes use)
 class XmlRpcValue {
 public:
   enum Type { TypeInvalid, TypeBoolean, TypeInt, TypeDouble, TypeString, TypeDateTime,
               TypeBase64, TypeArray, TypeStruct };
+  typedef std::vector<char> BinaryData;
+  typedef std::vector<XmlRpcValue> ValueArray;
+  typedef std::map<std::string, XmlRpcValue> ValueStruct;
+  typedef ValueStruct::iterator iterator;
+  typedef ValueStruct::const_iterator const_iterator;
   XmlRpcValue();
-  Type getType() const;
-  int size() const;
-  bool valid() const;
-  bool hasMember(const std::string& name) const;
-  XmlRpcValue& operator[](int i);
-  XmlRpcValue& operator[](const std::string& k);
+  XmlRpcValue(bool value);
+  XmlRpcValue(int value);
+  XmlRpcValue(double value);
+  XmlRpcValue(const std::string& value);
+  XmlRpcValue(const char* value);
+  XmlRpcValue(const XmlRpcValue& rhs);
+  ~XmlRpcValue();
+  void clear();
+  XmlRpcValue& operator=(const XmlRpcValue& rhs);
+  XmlRpcValue& operator=(const int& rhs);
+  XmlRpcValue& operator=(const double& rhs);
+  XmlRpcValue& operator=(const char* rhs);
+  bool operator==(const XmlRpcValue& other) const;
+  bool operator!=(const XmlRpcValue& other) const;
   operator bool&();
   operator int&();
   operator double&();
   operator std::string&();
+  operator BinaryData&();
+  operator struct tm&();
+  const XmlRpcValue& operator[](int i) const;
+  XmlRpcValue& operator[](int i);
+  XmlRpcValue& operator[](const std::string& k);
+  XmlRpcValue& operator[](const char* k);
+  iterator begin();
+  iterator end();
+  const_iterator begin() const;
+  const_iterator end() const;
+  bool valid() const;
+  Type const& getType() const;
+  int size() const;
+  void setSize(int size);
+  bool hasMember(const std::string& name) const;
+  std::string toXml() const;
+  std::ostream& write(std::ostream& os) const;
 };
 }  // namespace XmlRpc
 #endif

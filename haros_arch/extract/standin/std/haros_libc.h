@@ -246,4 +246,14 @@ int pthread_attr_setschedpolicy(pthread_attr_t* attr, int policy);
 int pthread_attr_setinheritsched(pthread_attr_t* attr, int inherit);
 int pthread_setschedparam(pthread_t thread, int policy, const struct sched_param* param);
 pthread_t pthread_self(void);
+// <sys/resource.h>
+typedef unsigned long rlim_t;
+struct rlimit { rlim_t rlim_cur; rlim_t rlim_max; };
+#define RLIMIT_CPU 0
+#define RLIMIT_DATA 2
+#define RLIMIT_STACK 3
+#define RLIMIT_NOFILE 7
+#define RLIM_INFINITY (~0UL)
+int getrlimit(int resource, struct rlimit* rlim);
+int setrlimit(int resource, const struct rlimit* rlim);
 #endif

@@ -68,6 +68,12 @@ template<class T> struct is_arithmetic : integral_constant<bool, __is_arithmetic
 template<class T> struct is_integral : integral_constant<bool, __is_integral(T)> {};
 template<class T> struct is_floating_point : integral_constant<bool, __is_floating_point(T)> {};
 template<class B, class D> struct is_base_of : integral_constant<bool, __is_base_of(B, D)> {};
+template<class...> using void_t = void;
+template<class T> struct is_pointer : false_type {};
+template<class T> struct is_pointer<T*> : true_type {};
+template<class T> struct is_enum : integral_constant<bool, __is_enum(T)> {};
+template<class T> struct underlying_type { typedef __underlying_type(T) type; };
+template<class T> using underlying_type_t = typename underlying_type<T>::type;
 template<class T> constexpr typename remove_reference<T>::type&& move(T&& t) noexcept;
 template<class T> constexpr T&& forward(typename remove_reference<T>::type& t) noexcept;
 template<class T> constexpr T&& forward(typename remove_reference<T>::type&& t) noexcept;
@@ -234,6 +240,7 @@ public:
   typedef T* iterator;
   typedef const T* const_iterator;
   typedef T* reverse_iterator;
+  typedef const T* const_reverse_iterator;
   vector();
   explicit vector(size_t n);
   vector(size_t n, const T& v);
@@ -281,6 +288,10 @@ public:
   const_iterator cend() const;
   reverse_iterator rbegin();
   reverse_iterator rend();
+  const_reverse_iterator rbegin() const;
+  const_reverse_iterator rend() const;
+  const_reverse_iterator crbegin() const;
+  const_reverse_iterator crend() const;
 };
 template<class T> bool operator==(const vector<T>& a, const vector<T>& b);
 template<class T> bool operator!=(const vector<T>& a, const vector<T>& b);
@@ -436,6 +447,7 @@ template<class It, class F> F for_each(It first, It last, F f);
 template<class It, class O> O copy(It first, It last, O out);
 template<class It, class O, class F> O transform(It first, It last, O out, F f);
 template<class It, class T> void fill(It first, It last, const T& v);
+template<class It, class N, class T> It fill_n(It first, N count, const T& v);
 template<class It> void reverse(It first, It last);
 template<class It> It min_element(It first, It last);
 template<class It> It max_element(It first, It last);
@@ -632,9 +644,14 @@ public:
   typedef int openmode;
   static const openmode in = 1, out = 2, app = 4, binary = 8, trunc = 16, ate = 32;
   static const fmtflags fixed = 1, scientific = 2, boolalpha = 4, hex = 8, dec = 16;
+  typedef int seekdir;
+  typedef long pos_type;
+  typedef long off_type;
+  static const seekdir beg = 0, cur = 1, end = 2;
   fmtflags setf(fmtflags f);
   int precision(int p);
 };
+typedef ios_base ios;
 class ostream : public ios_base {
 public:
   ostream& operator<<(bool v);
@@ -676,6 +693,10 @@ public:
   int get();
   int peek();
   istream& read(char* s, long n);
+  istream& seekg(long pos);
+  istream& seekg(long off, ios_base::seekdir dir);
+  long tellg();
+  long gcount() const;
   bool good() const;
   bool fail() const;
   bool eof() const;
@@ -775,6 +796,8 @@ public:
   template<class R2, class P2> constexpr duration(const duration<R2, P2>& d);
   constexpr R count() const;
   static constexpr duration zero();
+  static constexpr duration max();
+  static constexpr duration min();
   duration operator-() const;
   duration& operator+=(const duration& d);
   duration& operator-=(const duration& d);
@@ -884,6 +907,7 @@ public:
   void lock_shared();
   void unlock_shared();
 };
+class shared_timed_mutex : public shared_mutex {};
 struct defer_lock_t {};
 struct adopt_lock_t {};
 extern const defer_lock_t defer_lock;

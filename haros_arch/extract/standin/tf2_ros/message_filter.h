@@ -10,6 +10,7 @@ template<class M> class MessageFilter {
 public:
   template<class... A> MessageFilter(A&&... args);
   template<class C> void registerCallback(const C& callback);
+  template<class C> void registerFailureCallback(const C& callback);
   template<class C, class T> void registerCallback(C callback, T* object);
   template<class F> void connectInput(F& filter);
   void setTargetFrame(const std::string& frame);

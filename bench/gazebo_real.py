@@ -1,0 +1,92 @@
+"""Gazebo plugins of robot descriptions on real workspaces: what they add to the graph.
+
+    .venv/bin/python bench/gazebo_real.py WORKSPACE [WORKSPACE ...] --launch LAUNCH
+        [--launch LAUNCH ...] [--arg NAME:=VALUE ...] [--env NAME=VALUE ...] [--jobs N]
+
+Each LAUNCH (``pkg/path/in/package`` or a path; several joined by ``+``: one
+configuration of them all, a simulation with the nodes that use its sensors) is one
+configuration. The pipeline runs
+twice, with and without the robot-description stage (``robot.attach``), and prints per
+configuration: the descriptions read (files, links, joints, completeness), each plugin
+with the node instance that makes its calls, the diagnostics of the stage, the links
+before and after, and every topic a plugin publishes or subscribes to with its type and
+the nodes on the other side (``-`` when none: a sensor topic nothing reads; ``node as
+/?/scan?`` when a name with unknown parts has it as a candidate).
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import os
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.dirname(HERE))
+
+from haros_arch import pipeline  # noqa: E402
+from haros_arch.model.model import Model  # noqa: E402
+from haros_arch.project import ConfigurationSpec, Project  # noqa: E402
+
+CODES = ("ROBOT_DESCRIPTION_XACRO", "ROBOT_DESCRIPTION_FILE", "ROBOT_DESCRIPTION_LIMIT",
+         "ROBOT_DESCRIPTION_UNKNOWN", "GAZEBO_PLUGIN_UNKNOWN", "GAZEBO_NOT_STARTED")
+
+
+def run(project: Project, env: dict[str, str], jobs: int, enabled: bool) -> Model:
+    graph_build = importlib.import_module("haros_arch.graph.build")
+    robot_attach = importlib.import_module("haros_arch.robot.attach")
+    graph_build.attach_descriptions = robot_attach.attach if enabled else (
+        lambda *a: robot_attach.Attached([], []))
+    return pipeline.analyse(project, env,
+                            pipeline.Options(cache_dir=pipeline.AUTO_CACHE, jobs=jobs))
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("workspace", nargs="+")
+    parser.add_argument("--launch", action="append", required=True)
+    parser.add_argument("--arg", action="append", default=[])
+    parser.add_argument("--env", action="append", default=[])
+    parser.add_argument("--jobs", type=int, default=1)
+    args = parser.parse_args()
+    launch_args = dict(a.split(":=", 1) for a in args.arg)
+    env = {**os.environ, **dict(e.split("=", 1) for e in args.env)}
+    roots = [os.path.abspath(w) for w in args.workspace]
+    project = Project("gazebo", os.path.join(roots[0], "bench.yaml"), workspace=roots,
+                      configurations=[ConfigurationSpec(os.path.basename(launch), launch.split("+"),
+                                                        dict(launch_args))
+                                      for launch in args.launch])
+    before = run(project, env, args.jobs, False)
+    after = run(project, env, args.jobs, True)
+    for old, new in zip(before.configurations, after.configurations, strict=True):
+        print(f"== {new.name}: links {len(old.links)} -> {len(new.links)} "
+              f"(+{len(new.links) - len(old.links)}), descriptions "
+              f"{len(new.robot_descriptions)}")
+        for description in new.robot_descriptions:
+            print(f"  description {description.name} <- {description.file} "
+                  f"({len(description.files)} files, {len(description.links)} links, "
+                  f"{len(description.joints)} joints, {description.completeness})")
+            for reason in description.completeness_reasons:
+                print(f"    partial: {reason}")
+            for plugin in description.plugins:
+                print(f"    plugin {plugin.name} {plugin.filename} "
+                      f"({plugin.location.file}:{plugin.location.line}) -> {plugin.node}")
+        for found in new.diagnostics:
+            if found.code in CODES:
+                print(f"  {found.code} {found.location.file}:{found.location.line} "
+                      f"{found.message}")
+        made = [link for link in new.links if link.origin == "description"]
+        unresolved = [r for r in (*new.topics, *new.services) if "?" in r.name]
+        for link in sorted(made, key=lambda x: (x.resource.name, x.kind)):
+            peers = [peer.node.name for peer in link.resource.links
+                     if peer.kind != link.kind and peer.node is not link.node]
+            # a name with unknown parts that may be this one (``?/scan``): a candidate
+            peers += [f"{peer.node.name} as {other.name}?" for other in unresolved
+                      if link.resource in other.candidates for peer in other.links
+                      if peer.kind != link.kind]
+            print(f"    {link.kind:9} {link.resource.name} [{link.type}] by {link.node.name}"
+                  f" | other side: {', '.join(sorted(set(peers))) or '-'}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,167 @@
+"""Whether the errors left in a translation unit can hide a ROS call: the reasons a node
+is ``partial``.
+
+A clang error matters only where it can cost a call. Two checks say where, each reason
+with its file:line:
+
+- a *missed call site*: a line where a grep finds a call of a ROS API function (a
+  member call ``nh.subscribe(``, ``->create_publisher<``, an rclcpp method called bare
+  in a node class, ``rclcpp_action::create_server<``) or of one of the unit's own
+  wrappers, with no call extracted within ``NEAR`` lines of it (a class an error made
+  invalid, code in a template the walk does not reach);
+- an *error near a call*: an error inside a function whose text holds such a call site
+  (the call may be extracted with a wrong name or type, or not at all).
+
+Errors anywhere else (a vendor type in a function that makes no ROS call, a field of a
+message known only by name) cannot hide a call; they stay information. The files read
+are the unit's own source and the workspace headers it includes that hold an error.
+The same grep is the recall check ``models build`` runs on a package's sources.
+"""
+
+from __future__ import annotations
+
+import ctypes
+import functools
+import os
+import re
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass
+
+from clang.cindex import LibclangError, SourceRange, TranslationUnit, conf
+
+from . import api
+
+__all__ = ["NEAR", "Function", "Site", "call_sites", "holding", "missed", "site_pattern"]
+
+NEAR = 2  # lines between a call site and the extracted call it is taken to be
+MAX_REASONS = 20  # per unit
+
+
+# a line that defines a function of the API's name: ``Type Class::create_publisher(``
+_DEFINITION = re.compile(r"^\s*(?:[\w:<>,*&]+\s+)+[*&]*\s*(?:\w+::)+\w+\s*\(")
+
+
+@dataclass(frozen=True)
+class Site:
+    """A line of source where a grep finds a ROS API call."""
+
+    line: int
+    text: str
+
+
+@functools.lru_cache(maxsize=8)
+def site_pattern(extra: frozenset[str] = frozenset()) -> re.Pattern[str]:
+    """The grep for API call sites: every method of the API tables (longer than four
+    letters, so ``get`` / ``set`` / ``call`` of other classes do not count) as a member
+    call; rclcpp's ``snake_case`` methods also bare (``create_publisher<T>(`` in a node
+    class) and with their namespace (``rclcpp_action::create_server<``); ``extra`` names
+    (a unit's wrappers) as member or bare calls."""
+    names = {name for _, name in api.ALL if name[:1].islower() and len(name) > 4}
+    bare = {name for name in names if "_" in name} | set(extra)
+    member = "|".join(sorted(map(re.escape, names | set(extra)), key=len, reverse=True))
+    free = "|".join(sorted(map(re.escape, bare), key=len, reverse=True))
+    return re.compile(rf"(?:(?:\.|->)\s*(?:template\s+)?(?:{member})"
+                      rf"|(?<![\w.>:~])(?:\w+::)?(?:{free}))\s*[<(]")
+
+
+def call_sites(text: str, extra: Iterable[str] = ()) -> list[Site]:
+    """The API call sites of one file's text (comments left out, and lines that define
+    a function of the same name: ``Node::create_publisher(``)."""
+    pattern = site_pattern(frozenset(extra))
+    found = []
+    in_comment = False
+    for number, line in enumerate(text.splitlines(), 1):
+        if in_comment:
+            if "*/" not in line:
+                continue
+            line, in_comment = line.split("*/", 1)[1], False
+        while "/*" in line:
+            head, _, tail = line.partition("/*")
+            if "*/" in tail:
+                line = head + " " + tail.split("*/", 1)[1]
+            else:
+                line, in_comment = head, True
+        code = line.split("//", 1)[0]
+        if code.lstrip().startswith("#") or _DEFINITION.match(code):
+            continue
+        if pattern.search(code):
+            found.append(Site(number, code.strip()[:80]))
+    return found
+
+
+def missed(sites: Sequence[Site], lines: set[int], silent: Sequence[tuple[int, int]]
+           ) -> list[Site]:
+    """The sites with no extracted call (``lines``) within ``NEAR`` lines, outside the
+    line ranges ``silent`` (wrappers: their calls are emitted where they are called)."""
+    return [site for site in sites
+            if not any(n in lines for n in range(site.line - NEAR, site.line + NEAR + 1))
+            and not any(start <= site.line <= end for start, end in silent)]
+
+
+Function = tuple[int, int, str]  # first line, last line, name
+
+
+def holding(line: int, functions: Iterable[Function], sites: Sequence[Site]
+            ) -> Function | None:
+    """The innermost function around ``line`` that holds a call site."""
+    around = [f for f in functions if f[0] <= line <= f[1]]
+    for function in sorted(around, key=lambda f: f[1] - f[0]):
+        if any(function[0] <= site.line <= function[1] for site in sites):
+            return function
+    return None
+
+
+def definitions(tu: TranslationUnit, files: set[str]) -> dict[str, list[Function]]:
+    """The functions the unit defines in ``files`` (absolute paths), per file, in
+    namespaces and classes at any depth: what ``holding`` looks in."""
+    from .visitor import CONTAINERS, FUNCTIONS
+
+    found: dict[str, list[Function]] = {}
+    stack = list(tu.cursor.get_children())
+    while stack:
+        cursor = stack.pop()
+        where = cursor.location.file
+        if where is None:
+            continue
+        name = os.path.abspath(where.name)
+        if name not in files:
+            continue  # a namespace or class opened in another file: its own cursor
+        kind = cursor.kind
+        if kind in FUNCTIONS and cursor.is_definition():
+            extent = cursor.extent
+            found.setdefault(name, []).append(
+                (extent.start.line, extent.end.line, cursor.spelling))
+        elif kind in CONTAINERS:
+            stack.extend(cursor.get_children())
+    return found
+
+
+class _RangeList(ctypes.Structure):
+    _fields_ = [("count", ctypes.c_uint), ("ranges", ctypes.POINTER(SourceRange))]
+
+
+def skipped_lines(tu: TranslationUnit) -> dict[str, list[tuple[int, int]]]:
+    """The line ranges the preprocessor skipped (``#if 0``, an ``#ifdef`` not taken), per
+    file: a call site there is no call of this build. Empty when libclang cannot say."""
+    try:
+        lib = conf.lib
+        get = lib.clang_getAllSkippedRanges
+        dispose = lib.clang_disposeSourceRangeList
+    except (AttributeError, LibclangError):
+        return {}
+    get.argtypes, get.restype = [ctypes.c_void_p], ctypes.POINTER(_RangeList)
+    dispose.argtypes, dispose.restype = [ctypes.POINTER(_RangeList)], None
+    found: dict[str, list[tuple[int, int]]] = {}
+    listed = get(tu.obj)
+    if not listed:
+        return found
+    try:
+        for i in range(listed.contents.count):
+            extent = listed.contents.ranges[i]
+            start, end = extent.start, extent.end
+            if start.file is not None:
+                found.setdefault(os.path.abspath(start.file.name), []).append(
+                    (start.line, end.line))
+    finally:
+        dispose(listed)
+    return found

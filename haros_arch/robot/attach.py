@@ -1,0 +1,637 @@
+"""Give the Gazebo node instance the calls of the plugins of the descriptions it spawns.
+
+A configuration that starts a spawner (ROS 1 ``gazebo_ros spawn_model``, ROS 2
+``gazebo_ros spawn_entity.py``) hands Gazebo a robot description: the parameter its
+``-param`` names (set by launch with ``command="xacro file.urdf.xacro args"``), or the
+file its ``-file`` names. The description is expanded by ``robot.xacro`` (never run) and
+each ``<plugin filename=...>`` in it looked up in ``robot.gazebo_plugins``:
+
+- ROS 1: the plugin's topics and services become calls of the gazebo node instance,
+  named in the namespace the plugin's ``<robotNamespace>`` gives (the spawner's
+  ``-robot_namespace``, its own namespace by default, fills it where absent);
+- ROS 2: each plugin is a node of its own (``gazebo_ros::Node``), named by the plugin,
+  in ``<ros><namespace>`` with the ``<ros><remapping>`` rules; a node instance is made.
+
+The gazebo instance is the ``gazebo_ros`` gzserver / gazebo node the configuration
+starts, or, when it starts none (Gazebo launched from an installed package), one named
+``/gazebo`` made here with an unknown interface. A plugin library not in the table is a
+diagnostic at the plugin's element and leaves the gazebo instance partial; so do parts
+of the description that cannot be known. The description as read is kept in
+``Configuration.robot_descriptions``.
+"""
+
+from __future__ import annotations
+
+import os
+import shlex
+from collections.abc import Iterator, Sequence
+from dataclasses import dataclass
+from functools import partial
+from typing import Any, cast
+
+import yaml
+from lxml import etree
+
+from .. import diagnostics as diag
+from .. import safe_yaml
+from ..files import read_text
+from ..launch.model import LaunchModel, NodeDecl, ParamDecl
+from ..launch.ros2.naming import params_for_node
+from ..model.conditions import Condition
+from ..model.location import NOWHERE, Location
+from ..model.robot import DescribedControl, DescribedPlugin, RobotDescription
+from ..model.rosname import as_namespace, clean, namespace_of, resolve
+from ..model.runtime import Configuration, NodeInstance, Parameter
+from ..model.source import CallKind, Node, PrimitiveCall
+from ..model.values import UNKNOWN_MARK
+from ..plugins.attach import Params, own_partial
+from ..share import share_source
+from ..workspace import Workspace
+from . import xacro
+from .bridge import bridges
+from .gazebo_plugins import Entity, Plugin, gz_system, plugin_row
+
+FILE = xacro.FILE
+SPAWNERS = {("gazebo_ros", "spawn_model"): 1, ("gazebo_ros", "spawn_entity.py"): 2,
+            ("ros_gz_sim", "create"): 2, ("ros_ign_gazebo", "create"): 2}
+GZ_SPAWNERS = (("ros_gz_sim", "create"), ("ros_ign_gazebo", "create"))
+GAZEBO_EXECUTABLES = ("gzserver", "gazebo", "debug", "gzserver_with_gdb", "perf")
+GAZEBO_NAME = "/gazebo"
+MANAGER = "controller_manager"  # the node ros2_control's Gazebo plugins start
+GZ_MANAGERS = ("gz_ros2_control-system", "ign_ros2_control-system")
+MAX_PLUGINS = 500  # per description
+# spawner options that take a value (``-J`` takes two)
+_VALUED = {"-file", "-param", "-topic", "-database", "-model", "-entity", "-robot_namespace",
+           "-gazebo_namespace", "-reference_frame", "-x", "-y", "-z", "-R", "-P", "-Y",
+           "-timeout", "-package_to_model", "-spawn_service_timeout", "-name", "-world",
+           "-string"}
+
+
+@dataclass
+class Spawn:
+    decl: NodeDecl
+    ros_version: int
+    file: str | None = None
+    param: str | None = None
+    topic: str | None = None
+    model: str | None = None
+    robot_namespace: str | None = None
+
+
+def spawn_args(decl: NodeDecl, ros_version: int) -> Spawn:
+    """What a spawner's command line asks for."""
+    try:
+        words = shlex.split(decl.args)
+    except ValueError:
+        words = decl.args.split()
+    spawn = Spawn(decl, ros_version)
+    index = 0
+    while index < len(words):
+        word = words[index]
+        value = words[index + 1] if index + 1 < len(words) else None
+        if word == "-J":
+            index += 3
+            continue
+        if word in _VALUED:
+            index += 2
+            if word == "-file":
+                spawn.file = value
+            elif word == "-param":
+                spawn.param = value
+            elif word == "-topic":
+                spawn.topic = value
+            elif word in ("-model", "-entity", "-name"):
+                spawn.model = value
+            elif word == "-robot_namespace":
+                spawn.robot_namespace = value
+            continue
+        index += 1
+    return spawn
+
+
+@dataclass
+class Attached:
+    """What the descriptions of a configuration add: calls by node instance, and the
+    controller managers their ros2_control plugins start (as if a launch file started
+    ``ros2_control_node``: the plugin host table then loads their controllers)."""
+
+    calls: list[tuple[NodeInstance, list[PrimitiveCall]]]
+    managers: list[tuple[NodeDecl, NodeInstance]]
+
+
+def attach(config: Configuration, launch: LaunchModel,
+           started: Sequence[tuple[NodeDecl, NodeInstance]], workspace: Workspace,
+           params: Params) -> Attached:
+    """The calls of the Gazebo plugins of the spawned descriptions, by node instance;
+    instances made here are added to ``config.nodes``, the parameters a ros2_control
+    plugin's ``<parameters>`` files set to ``params``."""
+    out = Attached([], [])
+    owned: set[int] = set()
+    for decl, _ in started:
+        ros_version = SPAWNERS.get((decl.package, decl.executable))
+        if ros_version is None:
+            continue
+        spawn = spawn_args(decl, ros_version)
+        out.calls.extend(diag.per_file(  # a bug of ours in one description: the run goes on
+            decl.location, decl.location.file or "", config.diagnostics,
+            partial(_spawned, spawn, started, launch, workspace, config, owned, params,
+                    out.managers), []))
+    out.calls.extend(bridges(config, launch, started, workspace))
+    return out
+
+
+def _spawned(spawn: Spawn, started: Sequence[tuple[NodeDecl, NodeInstance]],
+             launch: LaunchModel, workspace: Workspace, config: Configuration,
+             owned: set[int], params: Params, managers: list[tuple[NodeDecl, NodeInstance]],
+             ) -> list[tuple[NodeInstance, list[PrimitiveCall]]]:
+    decl = spawn.decl
+    if (decl.package, decl.executable) in GZ_SPAWNERS:
+        _gz(spawn, launch, workspace, config, params, managers)
+        return []
+    host = _host(config, started, decl, spawn.ros_version)
+    made = _description(spawn, launch, workspace, config)
+    if made is None:
+        own_partial(host, f"the robot description spawned at {decl.location.file}:"
+                          f"{decl.location.line} is not known", owned)
+        return []
+    record, expanded = made
+    config.robot_descriptions.append(record)
+    for reason in expanded.unknown[:3]:
+        own_partial(host, f"robot description: {reason}", owned)
+    out: list[tuple[NodeInstance, list[PrimitiveCall]]] = []
+    if expanded.root is not None:
+        for element in _plugins(expanded.root):
+            out.extend(_plugin(element, spawn, host, record, config, workspace, owned,
+                               params, managers))
+    return out
+
+
+def _gz(spawn: Spawn, launch: LaunchModel, workspace: Workspace, config: Configuration,
+        params: Params, managers: list[tuple[NodeDecl, NodeInstance]]) -> None:
+    """A description spawned into gz sim: its systems talk gz transport, not ROS (a
+    ros_gz bridge makes their topics ROS topics), so none is a node of the graph; the
+    description is kept, and a library that is not a gz system is a diagnostic."""
+    made = _description(spawn, launch, workspace, config)
+    if made is None:
+        return
+    record, expanded = made
+    config.robot_descriptions.append(record)
+    if expanded.root is None:
+        return
+    for element in _plugins(expanded.root):
+        filename = element.get("filename") or ""
+        where = _where(element, workspace)
+        record.plugins.append(DescribedPlugin(element.get("name") or "", filename, where,
+                                              conditions=[c.text for c in _conditions(
+                                                  element, where)]))
+        reason = gz_system(filename)
+        if reason is not None and _base(filename) in GZ_MANAGERS:
+            managers.append(_manager(element, spawn, where, _conditions(element, where),
+                                     workspace, config, params))
+        if reason is None:
+            found = diag.make("GAZEBO_PLUGIN_UNKNOWN", where, filename=filename,
+                              host="gz sim")
+            config.diagnostics.append(found)
+            _record_partial(record, f"{found.message} ({where.file}:{where.line})")
+        elif reason:
+            _record_partial(record, f"{filename}: {reason} ({where.file}:{where.line})")
+
+
+# -- the description --------------------------------------------------------------------
+def _description(spawn: Spawn, launch: LaunchModel, workspace: Workspace,
+                 config: Configuration,
+                 ) -> tuple[RobotDescription, xacro.Description] | None:
+    decl = spawn.decl
+    if spawn.file is not None:
+        path = spawn.file
+        if UNKNOWN_MARK in path or not os.path.isabs(path):
+            _note(config, decl.location, f"file {path} of the spawner is not known")
+            return None
+        if not os.path.isfile(path):
+            path = share_source(workspace, path)
+        return _expanded(path, {}, workspace.relpath(path), decl.location, workspace,
+                         config)
+    if spawn.param is not None:
+        name = resolve(spawn.param, decl.namespace)
+        param = _last_param(launch.params, name)
+        if param is None or param.command is None:
+            what = "is not set by the launch files" if param is None else \
+                "is not given by a xacro command"
+            _note(config, decl.location, f"parameter {name} {what}")
+            return None
+        return _from_command(param, name, workspace, config)
+    if spawn.topic is not None:  # ROS 2: robot_state_publisher's latched description
+        topic = resolve(spawn.topic, decl.namespace)
+        for param in reversed(launch.params):
+            if (param.key == "robot_description" and param.node is not None
+                    and clean(namespace_of(param.node) + "robot_description") == topic):
+                if param.command is None:
+                    break
+                return _from_command(param, topic, workspace, config)
+        _note(config, decl.location, f"no node of the configuration is given the "
+                                     f"description published on {topic} by a xacro command")
+        return None
+    _note(config, decl.location, "the spawner's description (-database, -stdin) is not read")
+    return None
+
+
+def _last_param(params: Sequence[ParamDecl], name: str) -> ParamDecl | None:
+    found = None
+    for param in params:
+        if param.name == name:
+            found = param
+    return found
+
+
+def xacro_command(command: str) -> tuple[str, dict[str, str]] | None:
+    """The file and ``name:=value`` arguments of a ``xacro`` (or ``cat``) command line."""
+    try:
+        words = shlex.split(command)
+    except ValueError:
+        words = command.split()
+    for index, word in enumerate(words):
+        tool = os.path.basename(word)
+        if tool not in ("xacro", "xacro.py", "cat"):
+            continue
+        path: str | None = None
+        args: dict[str, str] = {}
+        rest = iter(words[index + 1:])
+        for each in rest:
+            if each in ("-o", "--output"):
+                next(rest, None)
+            elif ":=" in each:
+                key, _, value = each.partition(":=")
+                args[key] = value
+            elif not each.startswith("-") and path is None:
+                path = each
+        return (path, args) if path else None
+    return None
+
+
+def _from_command(param: ParamDecl, name: str, workspace: Workspace,
+                  config: Configuration,
+                  ) -> tuple[RobotDescription, xacro.Description] | None:
+    assert param.command is not None
+    parsed = xacro_command(param.command)
+    if parsed is None:
+        _note(config, param.location, f"command \"{param.command}\" is not a xacro command")
+        return None
+    path, args = parsed
+    if UNKNOWN_MARK in path:
+        _note(config, param.location, f"the xacro file {path} is not known")
+        return None
+    values: dict[str, str | xacro.Partial] = {
+        key: (xacro.Partial(value, (f"xacro argument {key} is not known",))
+              if UNKNOWN_MARK in value else value) for key, value in args.items()}
+    return _expanded(path, values, name, param.location, workspace, config)
+
+
+def _expanded(path: str, args: dict[str, str | xacro.Partial], name: str, where: Location,
+              workspace: Workspace, config: Configuration,
+              ) -> tuple[RobotDescription, xacro.Description]:
+    expanded = xacro.expand(path, args, workspace)
+    config.diagnostics.extend(expanded.diagnostics)
+    record = RobotDescription(
+        name, workspace.relpath(path) if expanded.files else None, where,
+        [workspace.relpath(f) for f in expanded.files])
+    if expanded.root is not None:
+        record.links, record.joints = _links_joints(expanded.root)
+        record.ros2_control = [
+            DescribedControl(element.get("name") or "", element.findtext("hardware/plugin"),
+                             [j.get("name") or "" for j in element.iterfind("joint")],
+                             _where(element, workspace))
+            for element in expanded.root.iter("ros2_control")]
+    if expanded.root is None and not expanded.unknown:
+        expanded.unknown.append(f"{workspace.relpath(path)} is not read")
+    for reason in expanded.unknown:
+        _record_partial(record, reason)
+    return record, expanded
+
+
+def _links_joints(root: etree._Element) -> tuple[list[str], list[str]]:
+    """The robot's (or SDF model's) links and joints, not a ros2_control's joints."""
+    links: list[str] = []
+    joints: list[str] = []
+    for element in root.iter("link", "joint"):
+        name = element.get("name")
+        parent = element.getparent()
+        if name is None or parent is None or parent.tag not in ("robot", "model"):
+            continue
+        (links if element.tag == "link" else joints).append(name)
+    return links, joints
+
+
+def _plugins(root: etree._Element) -> Iterator[etree._Element]:
+    count = 0
+    for element in root.iter("plugin"):
+        if element.get("filename") is None:
+            continue
+        count += 1
+        if count > MAX_PLUGINS:
+            return
+        yield element
+
+
+def _record_partial(record: RobotDescription, reason: str) -> None:
+    record.completeness = "partial"
+    if len(record.completeness_reasons) < 5 and reason not in record.completeness_reasons:
+        record.completeness_reasons.append(reason)
+
+
+def _note(config: Configuration, where: Location, detail: str) -> None:
+    config.diagnostics.append(diag.make("ROBOT_DESCRIPTION_UNKNOWN", where, detail=detail))
+
+
+# -- the gazebo node --------------------------------------------------------------------
+def _host(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance]],
+          spawner: NodeDecl, ros_version: int) -> NodeInstance:
+    for decl, instance in started:
+        if decl.package == "gazebo_ros" and decl.executable in GAZEBO_EXECUTABLES:
+            return instance
+    for instance in config.nodes:
+        if instance.name == GAZEBO_NAME and instance.origin == "description":
+            return instance
+    instance = NodeInstance(GAZEBO_NAME, None, namespace="/", location=spawner.location,
+                            origin="description", ros_version=ros_version)
+    instance.id = f"node:{GAZEBO_NAME}"
+    if any(n.name == GAZEBO_NAME for n in config.nodes):
+        instance.id += f"#{sum(1 for n in config.nodes if n.name == GAZEBO_NAME) + 1}"
+    config.nodes.append(instance)
+    config.diagnostics.append(diag.make("GAZEBO_NOT_STARTED", spawner.location,
+                                        name=GAZEBO_NAME))
+    return instance
+
+
+# -- one plugin -------------------------------------------------------------------------
+def _plugin(element: etree._Element, spawn: Spawn, host: NodeInstance,
+            record: RobotDescription, config: Configuration, workspace: Workspace,
+            owned: set[int], params: Params, managers: list[tuple[NodeDecl, NodeInstance]],
+            ) -> list[tuple[NodeInstance, list[PrimitiveCall]]]:
+    filename = element.get("filename") or ""
+    name = element.get("name") or ""
+    where = _where(element, workspace)
+    conditions = _conditions(element, where)
+    described = DescribedPlugin(name, filename, where,
+                                conditions=[c.text for c in conditions])
+    record.plugins.append(described)
+    row = plugin_row(filename, spawn.ros_version)
+    if row is None:
+        found = diag.make("GAZEBO_PLUGIN_UNKNOWN", where, filename=filename, host=host.name)
+        config.diagnostics.append(found)
+        reason = f"{found.message} ({where.file}:{where.line})"
+        own_partial(host, reason, owned)
+        _record_partial(record, reason)
+        return []
+    if row.partial:
+        own_partial(host, f"Gazebo plugin {name}: {row.partial} ({where.file}:{where.line})",
+                    owned)
+    conditions = (*spawn.decl.conditions, *conditions)
+    if spawn.ros_version == 1:
+        namespace = _ros1_namespace(element, row, spawn, host)
+        calls = list(_calls(element, row, where, conditions, namespace,
+                            as_namespace(host.namespace)))
+        described.node = host.name
+        return [(host, calls)]
+    if row.manager:
+        managers.append(_manager(element, spawn, where, conditions, workspace, config,
+                                 params))
+    instance = _ros2_instance(element, name, spawn, host, where, conditions)
+    calls = list(_calls(element, row, where, conditions, None))
+    instance.node = Node("gazebo_plugins", _base(filename), kind="plugin", calls=calls,
+                         location=where)
+    if row.partial:
+        instance.node.mark_partial(f"{row.partial} ({where.file}:{where.line})")
+    described.node = instance.name
+    taken = sum(1 for n in config.nodes if n.name == instance.name)
+    if taken:  # two robots' plugins of one name in one namespace: kept apart by id
+        instance.id += f"#{taken + 1}"
+    config.nodes.append(instance)
+    return [(instance, calls)]
+
+
+def _manager(element: etree._Element, spawn: Spawn, where: Location,
+             conditions: tuple[Condition, ...], workspace: Workspace,
+             config: Configuration, params: Params) -> tuple[NodeDecl, NodeInstance]:
+    """The controller manager a gazebo_ros2_control / gz_ros2_control plugin starts:
+    ``controller_manager`` in the plugin's ``<ros><namespace>``, with the parameters of
+    its ``<parameters>`` files, as a launch file's ``ros2_control_node`` would be."""
+    namespace = as_namespace(spawn.robot_namespace or _child(element, "ros/namespace") or "/")
+    name = clean(namespace + MANAGER)
+    decl = NodeDecl(name, "controller_manager", "ros2_control_node", namespace=namespace,
+                    conditions=(*spawn.decl.conditions, *conditions), location=where,
+                    ros_version=2)
+    instance = NodeInstance(name, None, namespace=namespace, conditions=decl.conditions,
+                            location=where, origin="description", ros_version=2)
+    taken = sum(1 for n in config.nodes if n.name == name)
+    instance.id = f"node:{name}" + (f"#{taken + 1}" if taken else "")
+    config.nodes.append(instance)
+    for file in element.iterfind("parameters"):
+        document = _yaml_file((file.text or "").strip(), where, workspace, config)
+        if document is None:
+            continue
+        for node in _node_names(document, namespace):
+            for key, value in params_for_node(document, node):
+                parameter = params.get(Parameter, f"{node}/{key}")
+                assert isinstance(parameter, Parameter)
+                if not parameter.set_by_launch:
+                    parameter.value, parameter.set_by_launch = value, True
+                    parameter.launch_location = workspace.location(
+                        share_source(workspace, (file.text or "").strip()), 1)
+                    parameter.launch_conditions = decl.conditions
+    return decl, instance
+
+
+def _node_names(document: Any, namespace: str) -> list[str]:
+    """The nodes a ROS 2 parameter file names, in ``namespace`` (its own ``/`` keys
+    as they are); ``/**`` is for every node and names none."""
+    if not isinstance(document, dict):
+        return []
+    names = []
+    for key in list(document)[:MAX_PLUGINS]:
+        text = str(key)
+        if "*" in text:
+            continue
+        names.append(text if text.startswith("/") else clean(namespace + text))
+    return names
+
+
+def _yaml_file(path: str, where: Location, workspace: Workspace,
+               config: Configuration) -> Any:
+    """A YAML file a plugin element names, read with the safe loader (None if not)."""
+    if not path or UNKNOWN_MARK in path or not os.path.isabs(path):
+        return None
+    path = path if os.path.isfile(path) else share_source(workspace, path)
+    if not os.path.isfile(path) or not workspace.readable(path):
+        config.diagnostics.append(diag.make("ROBOT_DESCRIPTION_FILE", where,
+                                            path=workspace.relpath(path),
+                                            detail="no such file in the workspace"))
+        return None
+    text, found = read_text(path, workspace.location(path, 1))
+    config.diagnostics.extend(found)
+    try:
+        return safe_yaml.load(text) if text is not None else None
+    except yaml.YAMLError:
+        config.diagnostics.append(diag.make("ROBOT_DESCRIPTION_FILE", where,
+                                            path=workspace.relpath(path),
+                                            detail="not YAML"))
+        return None
+
+
+def _where(element: etree._Element, workspace: Workspace) -> Location:
+    here: etree._Element | None = element
+    while here is not None and here.get(FILE) is None:
+        here = here.getparent()
+    path = here.get(FILE) if here is not None else None
+    if path is None:
+        return NOWHERE
+    return workspace.location(path, xacro.line_of(element))
+
+
+def _conditions(element: etree._Element, where: Location) -> tuple[Condition, ...]:
+    found: list[Condition] = []
+    here: etree._Element | None = element
+    while here is not None:
+        text = here.get(xacro.CONDITION)
+        if text:
+            found.extend(Condition(part.strip(), "source", "xacro:if", where)
+                         for part in text.split("; "))
+        here = here.getparent()
+    return tuple(reversed(found))
+
+
+def _child(element: etree._Element, path: str) -> str | None:
+    """The text of the child element ``path`` (``robotNamespace``, ``ros/namespace``)."""
+    found = element.find(path)
+    if found is None:
+        return None
+    return (found.text or "").strip()
+
+
+def _value(element: etree._Element, row: Plugin, key: str, depth: int = 0) -> str | None:
+    """A child element's value, or the row's default (which may refer to others)."""
+    given = _child(element, key)
+    if given is not None:
+        return given
+    default = dict(row.defaults).get(key)
+    if default is None:
+        return None
+    return _template(element, row, default, depth + 1)
+
+
+def _template(element: etree._Element, row: Plugin, text: str, depth: int = 0) -> str | None:
+    """``{element}`` filled from the plugin's children (``{@sensor}``: its sensor's name);
+    None when an element it needs is absent with no default."""
+    out = []
+    rest = text
+    while "{" in rest and depth < 8:
+        head, _, tail = rest.partition("{")
+        key, _, rest = tail.partition("}")
+        out.append(head)
+        if key == "@sensor":
+            sensor = next((a for a in element.iterancestors("sensor")), None)
+            value = sensor.get("name") if sensor is not None else None
+        else:
+            value = _value(element, row, key, depth)
+        if value is None:
+            return None
+        if value == "" and rest.startswith("/") and not "".join(out):
+            rest = rest[1:]  # an empty first part: the name is relative (camera_name "")
+        out.append(value)
+    out.append(rest)
+    return "".join(out)
+
+
+def _truth(element: etree._Element, entity: Entity) -> bool | None:
+    if entity.when is None:
+        return True
+    if entity.when == "@depth":
+        sensor = next(element.iterancestors("sensor"), None)
+        return sensor is not None and sensor.get("type") == "depth"
+    values = []
+    for key in entity.when.split("|"):
+        text = _child(element, key)
+        if text is None:
+            values.append(entity.when_default)
+        elif text.lower() in ("true", "1"):
+            values.append(True)
+        elif text.lower() in ("false", "0"):
+            values.append(False)
+        else:
+            return None
+    return any(values)
+
+
+def _calls(element: etree._Element, row: Plugin, where: Location,
+           conditions: tuple[Condition, ...], namespace: str | None,
+           home: str = "/") -> Iterator[PrimitiveCall]:
+    """The plugin's calls. ROS 1 (``namespace``: its node handle's): a relative name is
+    joined to that namespace and written relative to the gazebo node's (``home``) when it
+    lies in it, as the node resolves it; a name the description writes global stays so."""
+    for entity in row.entities:
+        truth = _truth(element, entity)
+        if truth is False:
+            continue
+        extra: tuple[Condition, ...] = ()
+        if truth is None:
+            extra = (Condition(f"<{entity.when}> is true", "source", "if", where),)
+        name = _template(element, row, entity.name)
+        if name is None or (entity.kind != "read" and name.strip("/") == ""):
+            continue
+        kind = _template(element, row, entity.type) or UNKNOWN_MARK
+        if row.ros_version == 2 and kind.count("/") == 1:
+            package, _, message = kind.partition("/")
+            kind = f"{package}/msg/{message}"
+        if namespace is not None and not name.startswith("/"):
+            name = clean(namespace + name)
+            if name.startswith(home) and len(name) > len(home):
+                name = name[len(home):]
+        yield PrimitiveCall(cast(CallKind, entity.kind), name,
+                            kind if entity.kind != "read" else None,
+                            conditions=(*conditions, *extra), location=where,
+                            origin="description")
+
+
+def _ros1_namespace(element: etree._Element, row: Plugin, spawn: Spawn,
+                    host: NodeInstance) -> str:
+    """The full namespace of the plugin's node handle (``/`` + ``robotNamespace``)."""
+    own = _child(element, "robotNamespace")
+    if own is None:  # the spawner adds its -robot_namespace (its namespace by default)
+        own = spawn.robot_namespace if spawn.robot_namespace is not None else \
+            spawn.decl.namespace
+        own = own or None
+    model = spawn.model or UNKNOWN_MARK
+    if (row.namespace == "model" and not own) or (row.namespace == "sensor" and own == ""):
+        own = model
+    elif row.namespace == "sensor_model" and own is None:
+        own = "/" + model
+    return as_namespace(resolve(own or "", host.namespace)) if own else \
+        as_namespace(host.namespace)
+
+
+def _ros2_instance(element: etree._Element, name: str, spawn: Spawn, host: NodeInstance,
+                   where: Location, conditions: tuple[Condition, ...]) -> NodeInstance:
+    namespace = _child(element, "ros/namespace")
+    if spawn.robot_namespace:
+        namespace = spawn.robot_namespace
+    namespace = as_namespace(namespace or "/")
+    remaps = []
+    ros = element.find("ros")
+    for rule in ros.iterfind("remapping") if ros is not None else ():
+        text = (rule.text or "").strip()
+        source, sep, target = text.partition(":=")
+        if not sep:
+            source, sep, target = text.partition("=")
+        if sep and source and target:
+            remaps.append((source.strip(), target.strip()))
+    full = clean(namespace + (name or UNKNOWN_MARK))
+    instance = NodeInstance(full, None, namespace=namespace, remaps=remaps,
+                            conditions=(*host.conditions, *conditions), location=where,
+                            origin="description", ros_version=2)
+    instance.id = f"node:{full}"
+    return instance
+
+
+def _base(filename: str) -> str:
+    base = filename.rsplit("/", 1)[-1]
+    base = base[:-3] if base.endswith(".so") else base
+    return base[3:] if base.startswith("lib") else base

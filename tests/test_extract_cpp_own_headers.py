@@ -1,0 +1,108 @@
+"""A package whose headers our stand-ins also provide (rclcpp_components, image_transport,
+...) is extracted against its own headers: a header of its include folder wins over the
+umbrella stand-in, while the stand-in files themselves keep their place."""
+
+from __future__ import annotations
+
+from haros_arch.extract.cpp import extract_cpp
+from haros_arch.workspace import scan
+from tests.conftest import package_xml
+
+MANAGER = """
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+namespace rclcpp_components {
+class ComponentManager : public rclcpp::Node {
+public:
+  ComponentManager() : rclcpp::Node("component_manager") {
+    pub_ = create_publisher<std_msgs::msg::String>("loaded", 10);
+  }
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+};
+}
+"""
+
+MAIN = """
+#include <memory>
+#include "rclcpp_components/component_manager.hpp"
+int main() {
+  auto node = std::make_shared<rclcpp_components::ComponentManager>();
+  return 0;
+}
+"""
+
+
+def _workspace(write_tree, package: str, nested: bool = False):
+    include = f"{package}/include/{package}/" + (f"{package}/" if nested else "")
+    root = write_tree({
+        f"{package}/package.xml": package_xml(package, "ament_cmake"),
+        include + "component_manager.hpp": MANAGER,
+        f"{package}/src/container.cpp": MAIN,
+    })
+    return root, root / package / "src" / "container.cpp"
+
+
+def test_own_header_wins_over_the_umbrella_stand_in(write_tree) -> None:
+    root, main = _workspace(write_tree, "rclcpp_components")
+    result = extract_cpp([str(main)], scan([str(root)]), cache_dir=None)
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "loaded")]
+
+
+def test_own_header_in_the_nested_ros2_layout(write_tree) -> None:
+    root, main = _workspace(write_tree, "rclcpp_components", nested=True)
+    result = extract_cpp([str(main)], scan([str(root)]), cache_dir=None)
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "loaded")]
+
+
+
+def test_a_package_whose_api_the_extractor_knows_keeps_the_stand_ins_first(write_tree) -> None:
+    from haros_arch.extract.cpp.headers import IncludeSetup
+
+    root = write_tree({
+        "tf2_ros/package.xml": package_xml("tf2_ros"),
+        "tf2_ros/include/tf2_ros/transform_listener.h": "namespace tf2_ros {}\n",
+        "tf2_ros/src/echo.cpp": "int main() { return 0; }\n",
+        "rclcpp_components/package.xml": package_xml("rclcpp_components"),
+        "rclcpp_components/include/rclcpp_components/component_manager.hpp": MANAGER,
+        "rclcpp_components/src/container.cpp": MAIN,
+    })
+    echo = str(root / "tf2_ros" / "src" / "echo.cpp")
+    container = str(root / "rclcpp_components" / "src" / "container.cpp")
+    setup = IncludeSetup(scan([str(root)]), [], False, sources=[echo, container])
+    try:
+        own = str(root / "rclcpp_components" / "include")
+        assert setup.arguments(False, container)[:2] == ["-I", own]
+        assert str(root / "tf2_ros" / "include") not in setup.arguments(False, echo)[:2]
+    finally:
+        setup.close()
+
+
+EXPORTED = """
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+#include "teleop/Teleop_export.h"
+namespace teleop {
+class TELEOP_EXPORT Teleop : public rclcpp::Node {  // Teleop_export.h is no message
+public:
+  Teleop() : rclcpp::Node("teleop") {
+    pub_ = create_publisher<std_msgs::msg::String>("cmd", 10);
+  }
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+};
+}
+int main() {
+  auto node = std::make_shared<teleop::Teleop>();
+  return 0;
+}
+"""
+
+
+def test_a_generated_export_header_defines_its_macros(write_tree) -> None:
+    root = write_tree({
+        "teleop/package.xml": package_xml("teleop", "ament_cmake"),
+        "teleop/src/teleop.cpp": EXPORTED,
+    })
+    main = root / "teleop" / "src" / "teleop.cpp"
+    result = extract_cpp([str(main)], scan([str(root)]), cache_dir=None)
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "cmd")]
+    assert not [d for d in result.diagnostics if d.code == "CPP_INCLUDE_MISSING"]

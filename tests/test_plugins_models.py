@@ -1,0 +1,83 @@
+"""Plugin classes of packages without source come from their interface models."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+from haros_arch.graph import build
+from haros_arch.launch.model import LaunchModel, NodeDecl, ParamDecl
+from haros_arch.model import Configuration, Location
+from haros_arch.model.source import Package
+from haros_arch.models.attach import Attacher
+from haros_arch.models.library import Library
+from haros_arch.workspace import Workspace
+
+
+def _model(path: Path, package: str, nodes: list[dict]) -> str:
+    path.write_text(json.dumps({"schema": "haros-arch-model/1", "package": package,
+                                "distro": "jazzy", "nodes": nodes}))
+    return str(path)
+
+
+def _read(name: str, line: int) -> dict:
+    return {"kind": "read", "name": name, "type": "double",
+            "location": {"package": "p", "file": "p/src/a.cpp", "line": line, "column": 1}}
+
+
+def _configure(tmp_path: Path, workspace: Workspace):
+    files = [
+        _model(tmp_path / "planner.json", "nav2_planner", [
+            {"package": "nav2_planner", "executable": "planner_server",
+             "calls": [{"kind": "publish", "name": "plan", "type": "nav_msgs/msg/Path"}]}]),
+        _model(tmp_path / "navfn.json", "nav2_navfn_planner", [
+            {"package": "nav2_navfn_planner", "executable": "nav2_navfn_planner::NavfnPlanner",
+             "kind": "plugin", "plugin_class": "nav2_navfn_planner::NavfnPlanner",
+             "calls": [_read("?.tolerance", 3)]}]),
+        _model(tmp_path / "smac.json", "smac", [
+            {"package": "smac", "executable": "smac/Smac", "kind": "plugin",
+             "plugin_class": "smac::Smac", "calls": [_read("?.smoothing", 4)]}]),
+    ]
+    decl = NodeDecl("/planner_server", "nav2_planner", "planner_server", ros_version=2)
+    where = Location("b", "b/launch/x.launch", 5, 0)
+    launch = LaunchModel(nodes=[decl], params=[
+        ParamDecl("/planner_server/planner_plugins", ["GridBased", "S"], location=where),
+        ParamDecl("/planner_server/GridBased.plugin", "nav2_navfn_planner::NavfnPlanner"),
+        ParamDecl("/planner_server/S.plugin", "smac/Smac", location=where)])
+    packages: list[Package] = []
+    attacher = Attacher(Library(files, shipped=None), "jazzy", packages)
+    config = Configuration("c")
+    nodes = attacher.nodes_for(launch, workspace, {}, {}, config.diagnostics)
+    build(config, launch, workspace, nodes, attacher.plugin_models(launch, {}))
+    return config, packages
+
+
+def _links(config) -> list[tuple[str, str]]:
+    return sorted((link.kind, link.resource.name) for link in config.links
+                  if link.origin != "plugin")
+
+
+def test_a_modelled_host_gets_the_modelled_classes_of_packages_without_source(tmp_path):
+    config, packages = _configure(tmp_path, Workspace(root=str(tmp_path)))
+    assert _links(config) == [("publish", "/plan"),
+                              ("read", "/planner_server/GridBased.tolerance"),
+                              ("read", "/planner_server/S.smoothing")]
+    assert not [d for d in config.diagnostics if d.code.startswith("PLUGIN")
+                and "costmap" not in d.message]  # no model of nav2_costmap_2d here
+    instance = config.node("/planner_server")
+    assert instance.completeness == "model"
+    # the modelled plugin nodes are listed under their packages, as modelled hosts are
+    assert sorted(n.name for p in packages for n in p.nodes) == [
+        "nav2_navfn_planner/nav2_navfn_planner::NavfnPlanner", "nav2_planner/planner_server",
+        "smac/smac/Smac"]
+
+
+def test_a_class_whose_package_has_source_is_not_taken_from_a_model(tmp_path):
+    workspace = Workspace(root=str(tmp_path))
+    workspace.packages["smac"] = Package("smac", str(tmp_path / "smac"))
+    config, _ = _configure(tmp_path, workspace)
+    assert ("read", "/planner_server/S.smoothing") not in _links(config)
+    (found,) = [d for d in config.diagnostics if d.code.startswith("PLUGIN")
+                and "costmap" not in d.message]
+    assert (found.code, found.location.line) == ("PLUGIN_NOT_FOUND", 5)
+    assert config.node("/planner_server").completeness == "partial"

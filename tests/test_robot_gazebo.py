@@ -1,0 +1,243 @@
+"""Gazebo plugins of robot descriptions end to end on fixtures/robot (ROS 1 and ROS 2)."""
+
+from __future__ import annotations
+
+import os
+
+import pytest
+from conftest import FIXTURES
+
+from haros_arch import pipeline
+from haros_arch.model.load import from_data
+from haros_arch.model.location import NOWHERE
+from haros_arch.model.model import Model
+from haros_arch.model.runtime import Configuration
+from haros_arch.model.serialise import model_to_data
+from haros_arch.project import ConfigurationSpec, Project
+from haros_arch.robot.attach import xacro_command
+from haros_arch.robot.bridge import _from_arguments
+
+ROS1 = str(FIXTURES / "robot" / "ros1")
+ROS2 = str(FIXTURES / "robot" / "ros2")
+
+
+def analyse(root: str, launch: str, env: dict[str, str] | None = None,
+            **args: str) -> Model:
+    project = Project("robot", os.path.join(root, "project.yaml"), workspace=[root],
+                      configurations=[ConfigurationSpec("c", [launch], dict(args))])
+    return pipeline.analyse(project, env or {}, pipeline.Options(cache_dir=None, jobs=1))
+
+
+def configuration(root: str, launch: str, env: dict[str, str] | None = None,
+                  **args: str) -> Configuration:
+    return analyse(root, launch, env, **args).configurations[0]
+
+
+def made(config: Configuration) -> list[tuple[str, str, str, str | None]]:
+    return sorted((link.node.name, link.kind, link.resource.name, link.type)
+                  for link in config.links if link.origin == "description")
+
+
+def test_ros1_plugins_are_calls_of_the_gazebo_node_with_their_names_and_types():
+    config = configuration(ROS1, "bot_gazebo/launch/sim.launch", {"BOT_CAMERA": "0"})
+    assert made(config) == [
+        ("/gazebo", "publish", "/front/scan", "sensor_msgs/LaserScan"),
+        ("/gazebo", "publish", "/imu/data", "sensor_msgs/Imu"),
+        ("/gazebo", "publish", "/joint_states", "sensor_msgs/JointState"),
+        ("/gazebo", "publish", "/odom", "nav_msgs/Odometry"),
+        ("/gazebo", "publish", "/tf", "tf2_msgs/TFMessage"),
+        ("/gazebo", "server", "/default_imu", "std_srvs/Empty"),  # imu's default service
+        ("/gazebo", "subscribe", "/cmd_vel", "geometry_msgs/Twist"),
+    ]
+    # the sensor topics meet the node that uses them
+    scan = config.topic("/front/scan")
+    assert [link.node.name for link in scan.subscribers] == ["/scan_reader"]
+    assert [link.node.name for link in config.topic("/cmd_vel").publishers] == ["/scan_reader"]
+    # no launch file starts Gazebo: a /gazebo instance stands for it, with the plugin's
+    # unknown library said at its line
+    codes = {(d.code, d.location.file, d.location.line) for d in config.diagnostics
+             if d.code.startswith(("GAZEBO", "ROBOT"))}
+    assert codes == {("GAZEBO_NOT_STARTED", "bot_gazebo/launch/sim.launch", 6),
+                     ("GAZEBO_PLUGIN_UNKNOWN", "bot_description/urdf/bot.urdf.xacro", 43)}
+    assert config.node("/gazebo").completeness == "unknown"
+    (description,) = config.robot_descriptions
+    assert (description.name, description.file) == ("/robot_description",
+                                                     "bot_description/urdf/bot.urdf.xacro")
+    assert description.files == ["bot_description/urdf/bot.urdf.xacro",
+                                 "bot_description/urdf/parts.xacro"]
+    assert description.links == ["base_link", "left_wheel", "right_wheel", "laser"]
+    assert [(p.name, p.location.file, p.location.line, p.node)
+            for p in description.plugins] == [
+        ("laser_controller", "bot_description/urdf/parts.xacro", 19, "/gazebo"),
+        ("diff_drive", "bot_description/urdf/bot.urdf.xacro", 33, "/gazebo"),
+        ("imu", "bot_description/urdf/bot.urdf.xacro", 40, "/gazebo"),
+        ("lights", "bot_description/urdf/bot.urdf.xacro", 43, None)]
+    assert description.completeness == "partial"
+
+
+def test_launch_arguments_reach_the_xacro_command():
+    config = configuration(ROS1, "bot_gazebo/launch/sim.launch", {"BOT_CAMERA": "1"},
+                           laser="false")
+    names = [name for _, _, name, _ in made(config)]
+    assert "/front/scan" not in names
+    assert "/front_camera/image_raw" in names and "/front_camera/camera_info" in names
+
+
+def test_a_description_condition_not_known_makes_the_plugin_calls_conditional():
+    config = configuration(ROS1, "bot_gazebo/launch/sim.launch")  # BOT_CAMERA unset
+    (image,) = [link for link in config.links if link.resource.name == "/front_camera/image_raw"]
+    assert [(c.statement, c.text) for c in image.conditions] == [
+        ("xacro:if", "if $(arg camera_enabled) (bot_description/urdf/bot.urdf.xacro:21)")]
+    (scan,) = [link for link in config.links if link.resource.name == "/front/scan"
+               and link.origin == "description"]
+    assert scan.conditions == ()
+    assert any("BOT_CAMERA" in r for r in config.robot_descriptions[0].completeness_reasons)
+
+
+def test_ros2_plugins_are_nodes_of_their_own_with_namespace_and_remappings():
+    config = configuration(ROS2, "bot2_description/launch/sim.launch.py")
+    assert made(config) == [
+        ("/bot2/drive", "publish", "/bot2/odom", "nav_msgs/msg/Odometry"),
+        ("/bot2/drive", "subscribe", "/bot2/cmd_vel", "geometry_msgs/msg/Twist"),
+        ("/bot2/lidar_driver", "publish", "/bot2/scan", "sensor_msgs/msg/LaserScan"),
+        # a depth camera: its sensor's name, and the depth topics
+        ("/camera_driver", "publish", "/cam/camera_info", "sensor_msgs/msg/CameraInfo"),
+        ("/camera_driver", "publish", "/cam/depth/camera_info", "sensor_msgs/msg/CameraInfo"),
+        ("/camera_driver", "publish", "/cam/depth/image_raw", "sensor_msgs/msg/Image"),
+        ("/camera_driver", "publish", "/cam/image_raw", "sensor_msgs/msg/Image"),
+        ("/camera_driver", "publish", "/cam/points", "sensor_msgs/msg/PointCloud2"),
+    ]
+    drive = config.node("/bot2/drive")
+    assert drive.origin == "description" and drive.node.name == \
+        "gazebo_plugins/gazebo_ros_diff_drive"
+    # the description came from robot_state_publisher's Command(['xacro ', ...]) with the
+    # launch argument (prefix:=front_)
+    (description,) = config.robot_descriptions
+    assert description.name == "/robot_description"
+    assert description.links == ["front_base_link"]
+    (control,) = description.ros2_control
+    assert (control.name, control.hardware, control.joints, control.location.line) == (
+        "GazeboSystem", "gazebo_ros2_control/GazeboSystem", ["front_wheel_joint"], 33)
+
+
+def test_ros2_spawner_file_is_read_as_it_is():
+    config = configuration(ROS2, "bot2_description/launch/model.launch.py")
+    assert made(config) == [
+        ("/imu_driver", "publish", "/imu", "sensor_msgs/msg/Imu"),
+        ("/states", "publish", "/joint_states", "sensor_msgs/msg/JointState"),
+    ]
+    assert (config.robot_descriptions[0].name, config.robot_descriptions[0].file) == (
+        "bot2_description/models/bot2.sdf", "bot2_description/models/bot2.sdf")
+
+
+def test_robot_descriptions_survive_the_json_model():
+    model = analyse(ROS1, "bot_gazebo/launch/sim.launch", {"BOT_CAMERA": "0"})
+    again = from_data(model_to_data(model))
+    assert again.configurations[0].robot_descriptions == \
+        model.configurations[0].robot_descriptions
+    assert again.configurations[0].robot_descriptions[0].plugins[0].name == "laser_controller"
+
+
+@pytest.mark.parametrize(("command", "expected"), [
+    ("/opt/ros/noetic/bin/xacro --inorder '/ws/a b.urdf.xacro' ns:=/r x:=1",
+     ("/ws/a b.urdf.xacro", {"ns": "/r", "x": "1"})),
+    ("?/xacro /ws/r.xacro", ("/ws/r.xacro", {})),
+    ("cat /ws/r.urdf", ("/ws/r.urdf", {})),
+    ("python3 make_urdf.py", None),
+])
+def test_xacro_command_lines(command: str, expected: object):
+    assert xacro_command(command) == expected
+
+
+def test_gz_systems_make_no_ros_calls_and_bridges_make_their_topics_ros_topics():
+    config = configuration(ROS2, "bot2_description/launch/gz.launch.py")
+    # the bridges' jazzy interface models name the nodes (ros_gz_bridge, ros_gz_image)
+    # and know their parameters; the topics come from their arguments and config file
+    assert made(config) == [
+        ("/ros_gz_bridge", "publish", "/clock", "rosgraph_msgs/msg/Clock"),
+        ("/ros_gz_bridge", "publish", "/joint_states", "sensor_msgs/msg/JointState"),
+        ("/ros_gz_bridge", "publish", "/scan", "sensor_msgs/msg/LaserScan"),
+        ("/ros_gz_bridge", "subscribe", "/cmd_vel", "geometry_msgs/msg/Twist"),
+        ("/ros_gz_bridge", "subscribe", "/joint_states", "sensor_msgs/msg/JointState"),
+        ("/ros_gz_image", "publish", "/camera/image_raw", "sensor_msgs/msg/Image"),
+    ]
+    (description,) = config.robot_descriptions
+    assert [(p.filename, p.node) for p in description.plugins] == [
+        ("gz-sim-diff-drive-system", None), ("libgazebo_ros_imu_sensor.so", None)]
+    # a gazebo_ros plugin does not load in gz sim: not a gz system, said at its line
+    assert [(d.code, d.location.line) for d in config.diagnostics
+            if d.code == "GAZEBO_PLUGIN_UNKNOWN"] == [("GAZEBO_PLUGIN_UNKNOWN", 8)]
+
+
+@pytest.mark.parametrize(("argument", "expected"), [
+    ("/chatter@std_msgs/msg/String@gz.msgs.StringMsg",
+     [("publish", "std_msgs/msg/String"), ("subscribe", "std_msgs/msg/String")]),
+    ("/chatter@std_msgs/msg/String[gz.msgs.StringMsg", [("publish", "std_msgs/msg/String")]),
+    ("/chatter@std_msgs/msg/String]gz.msgs.StringMsg", [("subscribe", "std_msgs/msg/String")]),
+    ("/world/default/control@ros_gz_interfaces/srv/ControlWorld",  # gz types inferred
+     [("server", "ros_gz_interfaces/srv/ControlWorld")]),
+    ("/chatter@std_msgs/msg/String", []),  # a topic needs its gz type: refused
+    ("/world/default/control@ros_gz_interfaces/srv/ControlWorld@gz.msgs.WorldControl"
+     "@gz.msgs.Boolean", [("server", "ros_gz_interfaces/srv/ControlWorld")]),
+    ("not-a-bridge", []),
+])
+def test_parameter_bridge_arguments(argument: str, expected: list[tuple[str, str]]):
+    calls = list(_from_arguments([argument], NOWHERE))
+    assert [(c.kind, c.type) for c in calls] == expected
+
+
+def test_ros1_textfile_description_in_a_namespace():
+    # spawn_model adds its namespace as robotNamespace to plugins that have none
+    config = configuration(ROS1, "bot_gazebo/launch/textfile.launch")
+    assert made(config) == [
+        ("/gazebo", "publish", "/plain/ground_truth/odom", "nav_msgs/Odometry"),
+        ("/gazebo", "publish", "/plain/joint_states", "sensor_msgs/JointState"),
+    ]
+    assert config.robot_descriptions[0].name == "/plain/robot_description"
+
+
+def test_ros2_xml_command_substitution_gives_the_description():
+    config = configuration(ROS2, "bot2_description/launch/sim.launch.xml")
+    (description,) = config.robot_descriptions
+    assert (description.name, description.links) == ("/xml/robot_description",
+                                                     ["x_base_link"])
+    assert ("/bot2/lidar_driver", "publish", "/bot2/scan", "sensor_msgs/msg/LaserScan") \
+        in made(config)
+
+
+def test_ros2_python_xacro_process_file_gives_the_description():
+    config = configuration(ROS2, "bot2_description/launch/process_file.launch.py")
+    (description,) = config.robot_descriptions
+    assert (description.name, description.links) == ("/pf/robot_description",
+                                                     ["pf_base_link"])
+    assert ("/bot2/drive", "publish", "/bot2/odom", "nav_msgs/msg/Odometry") in made(config)
+
+
+def test_gazebo_ros2_control_starts_a_controller_manager_that_hosts_the_spawned_controllers():
+    # the plugin's <parameters> file gives the controller's class; its package is not
+    # in the workspace here, so the host says which class it could not find
+    config = configuration(ROS2, "bot2_description/launch/sim.launch.py")
+    manager = config.node("/controller_manager")
+    assert manager is not None and manager.origin == "description"
+    (missing,) = [d for d in config.diagnostics if d.code == "PLUGIN_NOT_FOUND"]
+    assert "diff_drive_controller/DiffDriveController" in missing.message
+    assert "/controller_manager" in missing.message
+    assert (missing.location.file, missing.location.line) == (
+        "bot2_description/params/controllers.yaml", 1)
+    (separation,) = [p for p in config.parameters if p.name == "/base/wheel_separation"]
+    assert separation.value == 0.3 and separation.set_by_launch
+    assert config.node("/gazebo_ros2_control").completeness == "partial"
+
+
+def test_a_bridge_without_a_model_gets_a_node_of_its_own():
+    model = analyse(ROS2, "bot2_description/launch/gz.launch.py")
+    config = model.configurations[0]
+    assert config.node("/ros_gz_bridge").node.model is not None  # the shipped model
+    without = pipeline.analyse(
+        Project("robot", os.path.join(ROS2, "project.yaml"), workspace=[ROS2],
+                configurations=[ConfigurationSpec(
+                    "c", ["bot2_description/launch/gz.launch.py"], {})]),
+        {}, pipeline.Options(cache_dir=None, jobs=1, models=False)).configurations[0]
+    bridge = [n for n in without.nodes if n.node is not None
+              and n.node.executable == "parameter_bridge"]
+    assert [(n.completeness, len(n.node.calls)) for n in bridge] == [("complete", 5)]

@@ -1,0 +1,257 @@
+"""The static xacro reader (robot/xacro.py) on fixtures/robot and small inline files."""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+import pytest
+from conftest import FIXTURES
+from lxml import etree
+
+from haros_arch.robot import xacro
+from haros_arch.workspace import Workspace, scan
+
+ROS1 = str(FIXTURES / "robot" / "ros1")
+BOT = os.path.join(ROS1, "bot_description", "urdf", "bot.urdf.xacro")
+
+
+def expand(path: str, env: dict[str, str] | None = None, **args: str) -> xacro.Description:
+    workspace = scan([ROS1], env or {})
+    return xacro.expand(path, args, workspace, env or {})
+
+
+def plugins(description: xacro.Description) -> list[tuple[str | None, str | None]]:
+    """Each plugin's name and the condition of the if that keeps it (on an ancestor)."""
+    assert description.root is not None
+    return [(p.get("name"), next((a.get(xacro.CONDITION) for a in p.iterancestors()
+                                  if a.get(xacro.CONDITION)), p.get(xacro.CONDITION)))
+            for p in description.root.iter("plugin")]
+
+
+def test_includes_macros_blocks_and_properties_expand_as_xacro_does():
+    description = expand(BOT, {"BOT_CAMERA": "0"})
+    root = description.root
+    assert root is not None
+    assert [os.path.basename(f) for f in description.files] == ["bot.urdf.xacro",
+                                                                "parts.xacro"]
+    # a macro with a block parameter (*origin) and a forwarded default (radius:=^|...)
+    joint = root.find("joint[@name='left_wheel_joint']")
+    assert joint is not None
+    assert joint.find("origin").get("xyz") == "0 0.2 0"
+    assert joint.find("axis").get("xyz") == "0 1 0"
+    assert root.find("joint[@name='right_wheel_joint']/axis").get("xyz") == "0 -1 0"
+    cylinder = root.find("link[@name='left_wheel']/visual/geometry/cylinder")
+    # 0.05 * 0.8 as Python (and xacro) writes it
+    assert (cylinder.get("radius"), cylinder.get("length")) == ("0.05", "0.04000000000000001")
+    # a macro default referring to a property of the included file; an arg's default
+    assert root.find("link[@name='laser']") is not None
+    laser = root.find(".//plugin[@name='laser_controller']")
+    assert laser.findtext("topicName") == "front/scan"
+    assert laser.findtext("frameName") == "laser"
+    assert root.find(".//plugin[@name='diff_drive']").findtext("wheelDiameter") == "0.1"
+    # decided conditions: the camera (BOT_CAMERA=0) is left out, unless keeps the drive
+    assert plugins(description) == [("laser_controller", None), ("diff_drive", None),
+                                    ("imu", None), ("lights", None)]
+    assert description.unknown == [] and description.diagnostics == []
+    # nothing of xacro's is left in the document
+    assert not [e for e in root.iter() if isinstance(e.tag, str) and "xacro" in e.tag]
+
+
+def test_arguments_given_override_defaults():
+    description = expand(BOT, {"BOT_CAMERA": "1"}, laser_enabled="false",
+                         laser_topic="x/scan")
+    assert [name for name, _ in plugins(description)] == [
+        "camera_controller", "diff_drive", "imu", "lights"]
+
+
+def test_an_undecided_condition_keeps_its_content_marked_with_the_condition():
+    description = expand(BOT)  # BOT_CAMERA is not set
+    assert ("camera_controller", "if $(arg camera_enabled) "
+            "(bot_description/urdf/bot.urdf.xacro:21)") in plugins(description)
+    assert description.unknown == [
+        "environment variable BOT_CAMERA is not set (bot_description/urdf/bot.urdf.xacro:21)"]
+
+
+def write(tmp_path: Path, name: str, text: str) -> str:
+    path = tmp_path / name
+    path.write_text(text)
+    return str(path)
+
+
+def tmp_expand(tmp_path: Path, text: str, **args: str) -> xacro.Description:
+    path = write(tmp_path, "robot.urdf.xacro",
+                 '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">'
+                 + text + "</robot>")
+    return xacro.expand(path, args, Workspace(str(tmp_path), [str(tmp_path)]), {})
+
+
+def codes(description: xacro.Description) -> list[tuple[str, int]]:
+    return [(d.code, d.location.line) for d in description.diagnostics]
+
+
+def test_expressions_use_the_safe_evaluator_and_run_nothing(tmp_path: Path):
+    description = tmp_expand(
+        tmp_path, '<xacro:property name="n" value="3"/>\n'
+                  '<a v="${n * 2 + 1}" w="${pi/2 > 1}" x="${__import__(\'os\')}"/>')
+    a = description.root.find("a")
+    assert (a.get("v"), a.get("w"), a.get("x")) == ("7", "True", "?")
+    assert codes(description) == [("ROBOT_DESCRIPTION_XACRO", 2)]
+    assert description.unknown  # the refused expression is unknown, said why
+
+
+def test_lazy_properties_and_scopes(tmp_path: Path):
+    description = tmp_expand(
+        tmp_path, '<xacro:property name="a" value="${b}"/><xacro:property name="b" value="2"/>'
+                  '<xacro:macro name="m" params="b"><x v="${a} ${b}"/></xacro:macro>'
+                  '<xacro:m b="5"/><y v="${a}"/>')
+    # a is evaluated where it is defined (global b), the macro's b is its own
+    assert description.root.find("x").get("v") == "2 5"
+    assert description.root.find("y").get("v") == "2"
+
+
+def test_unknown_macro_and_missing_include_are_diagnostics_with_their_line(tmp_path: Path):
+    description = tmp_expand(tmp_path, '\n<xacro:nope/>\n<xacro:include filename="gone.xacro"/>')
+    assert codes(description) == [("ROBOT_DESCRIPTION_XACRO", 2),
+                                  ("ROBOT_DESCRIPTION_FILE", 3)]
+    assert len(description.unknown) == 2 and description.root is not None
+
+
+def test_an_include_outside_the_workspace_is_not_read(tmp_path: Path):
+    inside = tmp_path / "ws"
+    inside.mkdir()
+    outside = write(tmp_path, "secret.xacro", "<robot><leak/></robot>")
+    path = write(inside, "robot.xacro", '<robot xmlns:xacro="http://ros.org/wiki/xacro">'
+                 f'<xacro:include filename="{outside}"/></robot>')
+    description = xacro.expand(path, {}, Workspace(str(inside), [str(inside)]), {})
+    assert description.root.find("leak") is None
+    assert description.unknown and "outside the workspace" in description.unknown[0]
+
+
+def test_recursion_stops_at_the_bound(tmp_path: Path):
+    description = tmp_expand(tmp_path, '<xacro:macro name="m" params=""><xacro:m/></xacro:macro>'
+                                       "<xacro:m/>")
+    assert description.root is None
+    assert [code for code, _ in codes(description)] == ["ROBOT_DESCRIPTION_LIMIT"]
+    path = write(tmp_path, "self.xacro", '<robot xmlns:xacro="http://ros.org/wiki/xacro">'
+                 '<xacro:include filename="self.xacro"/></robot>')
+    looped = xacro.expand(path, {}, Workspace(str(tmp_path), [str(tmp_path)]), {})
+    assert looped.root is None
+    assert [d.code for d in looped.diagnostics] == ["ROBOT_DESCRIPTION_LIMIT"]
+
+
+def test_values_grown_by_properties_are_bounded(tmp_path: Path):
+    props = '<xacro:property name="p0" value="xxxxxxxxxx"/>' + "".join(
+        f'<xacro:property name="p{i}" value="${{p{i - 1}}}${{p{i - 1}}}"/>' for i in range(1, 30))
+    description = tmp_expand(tmp_path, props + '<a v="${p29}"/>')
+    assert description.root is None  # 10 * 2**29 characters are never made
+    assert [code for code, _ in codes(description)] == ["ROBOT_DESCRIPTION_LIMIT"]
+
+
+def test_a_plain_sdf_reads_as_it_is():
+    sdf = str(FIXTURES / "robot" / "ros2" / "bot2_description" / "models" / "bot2.sdf")
+    description = xacro.expand(sdf, {}, scan([str(FIXTURES / "robot" / "ros2")], {}), {})
+    assert [p.get("name") for p in description.root.iter("plugin")] == ["imu_driver",
+                                                                        "states"]
+    assert etree.QName(description.root).localname == "sdf"
+
+
+def test_hostile_macro_parameters_are_read_in_bounded_time(tmp_path: Path):
+    # an unterminated quote after a long default: xacro's own pattern backtracks
+    # exponentially on it; ours reads it in linear time
+    default = "x" * 5_000 + "'"
+    description = tmp_expand(tmp_path, f'<xacro:macro name="m" params="a:={default}">'
+                                       '<x/></xacro:macro><xacro:m a="1"/>')
+    assert description.root is not None
+    too_long = tmp_expand(tmp_path, f'<xacro:macro name="m" params="{"a " * 6_000}"/>')
+    assert [code for code, _ in codes(too_long)] == ["ROBOT_DESCRIPTION_LIMIT"]
+
+
+def test_a_long_value_copied_everywhere_is_bounded(tmp_path: Path):
+    long = "y" * 90_000
+    uses = "".join('<a v="${p}"/>' for _ in range(300))  # 27 million characters
+    description = tmp_expand(tmp_path, f'<xacro:property name="p" value="{long}"/>{uses}')
+    assert description.root is None
+    assert [code for code, _ in codes(description)] == ["ROBOT_DESCRIPTION_LIMIT"]
+
+
+def test_an_include_with_a_namespace_keeps_its_macros_and_properties_apart(tmp_path: Path):
+    write(tmp_path, "parts.xacro", '<robot xmlns:xacro="http://www.ros.org/wiki/xacro">'
+          '<xacro:property name="k" value="9"/>'
+          '<xacro:macro name="m" params="v"><p v="${v} ${k}"/></xacro:macro></robot>')
+    description = tmp_expand(tmp_path, '<xacro:property name="k" value="1"/>'
+                                       '<xacro:include filename="parts.xacro" ns="parts"/>'
+                                       '<xacro:parts.m v="${k}"/><q k="${k}"/><xacro:m v="0"/>')
+    root = description.root
+    assert root.find("p").get("v") == "1 9"  # the argument in the caller's scope
+    assert root.find("q").get("k") == "1"
+    assert codes(description) == [("ROBOT_DESCRIPTION_XACRO", 1)]  # m is parts.m only
+
+
+def test_load_yaml_reads_a_workspace_file_with_xacro_angle_tags(tmp_path: Path):
+    write(tmp_path, "limits.yaml", "joint:\n  min: !degrees -90\n  max: !radians pi/4\n")
+    write(tmp_path, "bad.yaml", "joint: !python/object:os.system ls\n")
+    description = tmp_expand(
+        tmp_path, '<xacro:property name="c" value="${xacro.load_yaml(\'limits.yaml\')}"/>'
+                  '<j lo="${c[\'joint\'][\'min\']}" hi="${c[\'joint\'][\'max\']}"/>\n'
+                  '<k v="${load_yaml(\'bad.yaml\')}"/>')
+    j = description.root.find("j")
+    assert (float(j.get("lo")), float(j.get("hi"))) == (-1.5707963267948966, 0.7853981633974483)
+    assert description.root.find("k").get("v") == "?"  # the safe loader refuses the tag
+    assert codes(description) == [("ROBOT_DESCRIPTION_XACRO", 2)]
+
+
+def test_macro_arguments_are_read_as_numbers_as_xacro_does(tmp_path: Path):
+    description = tmp_expand(tmp_path, '<xacro:macro name="w" params="reflect s:=2.5">'
+                                       '<a v="${reflect * 3}" s="${s * 2}"/></xacro:macro>'
+                                       '<xacro:w reflect="-1"/>')
+    a = description.root.find("a")
+    assert (a.get("v"), a.get("s")) == ("-3", "5.0")
+    assert not description.diagnostics
+
+
+def test_text_after_a_xacro_element_is_evaluated_and_kept(tmp_path: Path):
+    description = tmp_expand(tmp_path, '<xacro:property name="n" value="2"/>'
+                                       '<x>a<xacro:if value="1"><y/></xacro:if>${n}b'
+                                       '<xacro:if value="0"><z/></xacro:if>${n+1}</x>')
+    x = description.root.find("x")
+    assert (x.text, x.find("y").tail, len(x)) == ("a", "2b3", 1)
+
+
+def test_find_in_a_ros2_package_reads_the_file_its_install_rules_put_there(tmp_path: Path):
+    package = tmp_path / "arm_description"
+    (package / "description" / "control").mkdir(parents=True)
+    (package / "urdf").mkdir()
+    (package / "package.xml").write_text(
+        '<package format="3"><name>arm_description</name><version>1.0.0</version>'
+        '<description>d</description><maintainer email="a@b.c">a</maintainer>'
+        '<license>MIT</license><buildtool_depend>ament_cmake</buildtool_depend>'
+        '<export><build_type>ament_cmake</build_type></export></package>')
+    (package / "CMakeLists.txt").write_text(
+        "cmake_minimum_required(VERSION 3.8)\nproject(arm_description)\n"
+        "find_package(ament_cmake REQUIRED)\n"
+        "install(DIRECTORY description/control urdf DESTINATION share/${PROJECT_NAME})\n"
+        "ament_package()\n")
+    (package / "description" / "control" / "arm.ros2_control.xacro").write_text(
+        '<robot xmlns:xacro="http://ros.org/wiki/xacro"><xacro:macro name="control">'
+        '<ros2_control name="Arm" type="system"/></xacro:macro></robot>')
+    top = package / "urdf" / "arm.urdf.xacro"
+    top.write_text('<robot name="arm" xmlns:xacro="http://ros.org/wiki/xacro">'
+                   '<xacro:include filename="$(find arm_description)/control/'
+                   'arm.ros2_control.xacro"/><xacro:control/></robot>')
+    description = xacro.expand(str(top), {}, scan([str(tmp_path)], {}), {})
+    assert description.root.find("ros2_control").get("name") == "Arm"
+    assert [os.path.relpath(f, tmp_path) for f in description.files] == [
+        "arm_description/urdf/arm.urdf.xacro",
+        "arm_description/description/control/arm.ros2_control.xacro"]
+
+
+def test_expensive_expressions_stop_at_the_step_bound_and_the_deadline(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch):
+    heavy = '<a v="${sum([i * i for i in range(10 ** 6)])}"/>'
+    description = tmp_expand(tmp_path, heavy)
+    assert description.root.find("a").get("v") == "?"  # past the steps of one expression
+    monkeypatch.setattr(xacro, "MAX_SECONDS", 0.0)
+    stopped = tmp_expand(tmp_path, heavy * 3)
+    assert stopped.root is None
+    assert [code for code, _ in codes(stopped)] == ["ROBOT_DESCRIPTION_LIMIT"]
