@@ -36,6 +36,7 @@ from typing import Any, Protocol
 import yaml
 
 from .. import diagnostics as diag
+from .. import safe_yaml
 from ..files import read_text
 from ..launch.model import NodeDecl
 from ..launch.ros2.naming import (
@@ -541,7 +542,7 @@ def _param_file(path: str, decl: NodeDecl, workspace: Workspace,
     if text is None:
         return None
     try:
-        document = yaml.safe_load(text)
+        document = safe_yaml.load(text)  # bounded: aliases, nesting, flow brackets
     except yaml.YAMLError:
         document = None
     if document is None or not _bounded(document):
