@@ -73,6 +73,7 @@ UMBRELLAS = {
     "dynamic_reconfigure/": "dynamic_reconfigure/server.h",
     "diagnostic_updater/": "diagnostic_updater/diagnostic_updater.h",
     "bondcpp/": "bondcpp/bond.hpp",
+    "realtime_tools/": "realtime_tools/realtime_publisher.h",
     # libraries beside ROS that node classes use: minimal stand-ins keep them parsing
     "opencv2/": "opencv2/opencv.hpp", "opencv/": "opencv2/opencv.hpp",
     "cv_bridge/": "cv_bridge/cv_bridge.h", "Eigen/": "Eigen/Dense", "eigen3/": "Eigen/Dense",
