@@ -15,9 +15,9 @@ from haros_arch.models.library import Library
 from haros_arch.workspace import Workspace
 
 
-def _model(path: Path, package: str, nodes: list[dict]) -> str:
+def _model(path: Path, package: str, nodes: list[dict], distro: str = "jazzy") -> str:
     path.write_text(json.dumps({"schema": "haros-arch-model/1", "package": package,
-                                "distro": "jazzy", "nodes": nodes}))
+                                "distro": distro, "nodes": nodes}))
     return str(path)
 
 
@@ -99,7 +99,7 @@ def test_a_modelled_ros1_host_gets_a_plugin_from_a_generated_model(tmp_path):
     host = _model(tmp_path / "move_base.json", "move_base", [
         {"package": "move_base", "executable": "move_base",
          "calls": [{"kind": "subscribe", "name": "~goal",
-                    "type": "geometry_msgs/PoseStamped"}]}])
+                    "type": "geometry_msgs/PoseStamped"}]}], "noetic")
     decl = NodeDecl("/move_base", "move_base", "move_base", ros_version=1)
     launch = LaunchModel(nodes=[decl], params=[
         ParamDecl("/move_base/base_global_planner", "tiny_planner/TinyPlanner")])
@@ -112,3 +112,29 @@ def test_a_modelled_ros1_host_gets_a_plugin_from_a_generated_model(tmp_path):
     links = {(link.kind, link.resource.name) for link in config.links}
     assert {("publish", "/move_base/TinyPlanner/plan"),
             ("read", "/move_base/TinyPlanner/step_size")} <= links
+
+
+def test_a_partial_plugin_makes_its_modelled_host_instance_partial(tmp_path):
+    """A plugin whose calls are made on the host and whose interface is partial leaves
+    the host instance partial, even when the host is a complete model."""
+    files = [
+        _model(tmp_path / "move_base.json", "move_base", [
+            {"package": "move_base", "executable": "move_base", "calls": []}], "noetic"),
+        _model(tmp_path / "layer.json", "layer", [
+            {"package": "layer", "executable": "layer/Layer", "kind": "plugin",
+             "plugin_class": "layer::Layer", "completeness": "partial",
+             "completeness_reasons": ["layer/src/l.cpp:9: C++ error"],
+             "calls": [_read("~?/gain", 3)]}], "noetic"),
+    ]
+    decl = NodeDecl("/move_base", "move_base", "move_base", ros_version=1)
+    launch = LaunchModel(nodes=[decl], params=[
+        ParamDecl("/move_base/base_global_planner", "layer/Layer")])
+    attacher = Attacher(Library(files, shipped=None), "noetic", [])
+    config = Configuration("c")
+    workspace = Workspace(root=str(tmp_path))
+    nodes = attacher.nodes_for(launch, workspace, {}, {}, config.diagnostics)
+    build(config, launch, workspace, nodes, attacher.plugin_models(launch, {}))
+    instance = config.node("/move_base")
+    assert instance.completeness == "partial"
+    assert any("layer/Layer" in r and "l.cpp:9" in r for r in instance.completeness_reasons)
+    assert nodes["move_base/move_base"].completeness != "partial"  # the shared model is not
