@@ -195,3 +195,34 @@ def test_nav2_lifecycle_and_std_forms_parse_clean(tmp_path) -> None:
     result = extract_cpp([str(source)], Workspace(root=str(tmp_path)), cache_dir=None)
     assert ("publish", "out") in [(c.kind, c.name) for c in result.calls]
     assert [d.message for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"] == []
+
+
+def test_ros_1_asserts_shared_ptr_null_tokenizer_and_angles_parse(tmp_path) -> None:
+    """Forms of the navigation stack's plugins (base_local_planner, costmap_2d's obstacle
+    layer, rotate_recovery) parse clean, so their calls are not near an error."""
+    (tmp_path / "package.xml").write_text(
+        '<package format="2"><name>p</name><version>1.0.0</version>'
+        "<description>d</description><maintainer email='a@b.c'>m</maintainer>"
+        "<license>BSD</license></package>")
+    source = tmp_path / "a.cpp"
+    source.write_text(
+        "#include <ros/ros.h>\n#include <boost/shared_ptr.hpp>\n"
+        "#include <boost/tokenizer.hpp>\n#include <angles/angles.h>\n#include <cmath>\n"
+        "#include <std_msgs/Empty.h>\n"
+        "struct S { void subscribe(); };\n"
+        "double f(boost::shared_ptr<S> s, std::string text, double a, double b) {\n"
+        "  ROS_ASSERT_MSG(a > 0, \"a is %f\", a);\n"
+        "  if (s != NULL) { s->subscribe(); }\n"
+        "  typedef boost::tokenizer<boost::char_separator<char> > tokenizer;\n"
+        "  boost::char_separator<char> sep(\", \");\n"
+        "  tokenizer tokens(text, sep);\n"
+        "  double sum = 0;\n"
+        "  for (tokenizer::iterator i = tokens.begin(); i != tokens.end(); ++i) {\n"
+        "    sum += i->size(); }\n"
+        "  ros::NodeHandle nh;\n"
+        "  ros::Publisher p = nh.advertise<std_msgs::Empty>(\"out\", 1);\n"
+        "  return sum + std::fabs(angles::shortest_angular_distance(a, b));\n"
+        "}\n")
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    assert [d.message for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"] == []
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "out")]

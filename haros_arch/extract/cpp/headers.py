@@ -76,6 +76,7 @@ UMBRELLAS = {
     "realtime_tools/": "realtime_tools/realtime_publisher.h",
     # libraries beside ROS that node classes use: minimal stand-ins keep them parsing
     "opencv2/": "opencv2/opencv.hpp", "opencv/": "opencv2/opencv.hpp",
+    "angles/": "angles/angles.h",
     "cv_bridge/": "cv_bridge/cv_bridge.h", "Eigen/": "Eigen/Dense", "eigen3/": "Eigen/Dense",
     **{f"Qt{m}/": QT for m in ("Core", "Gui", "Widgets", "Network", "Concurrent", "Test")},
 }
