@@ -148,6 +148,9 @@ def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str
         out.append((reader, _not_hosts(node.calls, instance)))
     else:
         plugin = slot.prefix + _given(choice, slot)
+        if node.completeness in ("partial", "unknown"):  # its calls on the host: some unseen
+            reasons = node.completeness_reasons[:1] or [node.completeness]
+            own_partial(instance, f"plugin {node.name}: {reasons[0]}", owned)
         calls = [_under(call, plugin, choice.conditions)
                  for call in _with_base(node, index, workspace, models)]
         row = sources_of(choice.cls or "", instance.ros_version) or sources_of(
