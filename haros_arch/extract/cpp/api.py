@@ -162,7 +162,7 @@ LIBRARIES: dict[tuple[str, str], RosFunction] = {
     ("image_transport::ImageTransport", "subscribe"): RosFunction(
         "subscribe", fixed_type=_IMAGE, queue_arg=1, callback_arg=2),
     ("image_transport::ImageTransport", "advertiseCamera"): RosFunction(
-        "publish", fixed_type=_IMAGE, queue_arg=1, latch_arg=4, siblings=_CAMERA_INFO),
+        "publish", fixed_type=_IMAGE, queue_arg=1, latch_arg=2, siblings=_CAMERA_INFO),
     ("image_transport::ImageTransport", "subscribeCamera"): RosFunction(
         "subscribe", fixed_type=_IMAGE, queue_arg=1, callback_arg=2, siblings=_CAMERA_INFO_IN),
     ("image_transport", "create_publisher"): RosFunction(

@@ -1,0 +1,33 @@
+"""Calls the regenerated interface models lost (issue 15), each on a small fixture:
+fixtures/cpp/model_regressions."""
+
+from __future__ import annotations
+
+import os
+
+from haros_arch.extract.cpp import CppResult, extract_cpp
+from haros_arch.workspace import scan
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.join(os.path.dirname(HERE), "fixtures", "cpp", "model_regressions")
+
+
+def extract(package: str, name: str) -> CppResult:
+    path = os.path.join(ROOT, "src", package, "src", name)
+    return extract_cpp([path], scan([ROOT]), cache_dir=None, jobs=1)
+
+
+def rows(result: CppResult) -> list[tuple[str, str, str | None, int, bool]]:
+    return [(c.kind, c.name, c.type, c.location.line, c.latch) for c in result.calls]
+
+
+def test_camera_publisher_with_connect_callbacks() -> None:
+    # image_proc crop_decimate.cpp:103; the plain overload's latch is its third argument
+    assert rows(extract("ros1_fixes", "camera_cb.cpp")) == [
+        ("publish", "image_raw", "sensor_msgs/Image", 12, False),
+        ("publish", "camera_info", "sensor_msgs/CameraInfo", 12, False),
+        ("publish", "still", "sensor_msgs/Image", 13, True),
+        ("publish", "camera_info", "sensor_msgs/CameraInfo", 13, True),
+        ("subscribe", "image_in", "sensor_msgs/Image", 15, False),
+        ("subscribe", "camera_info", "sensor_msgs/CameraInfo", 15, False),
+    ]
