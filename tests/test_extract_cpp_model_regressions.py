@@ -31,3 +31,25 @@ def test_camera_publisher_with_connect_callbacks() -> None:
         ("subscribe", "image_in", "sensor_msgs/Image", 15, False),
         ("subscribe", "camera_info", "sensor_msgs/CameraInfo", 15, False),
     ]
+
+
+def test_tf_listener_reads_tf_prefix_where_it_resolves() -> None:
+    # tf/transform_listener.h: resolve and tf::remap search ~tf_prefix
+    result = extract("ros1_fixes", "remap.cpp")
+    assert rows(result) == [("read", "~tf_prefix", None, 6, False)]
+    assert result.calls[0].searched
+
+
+def test_gtest_bodies_are_read() -> None:
+    # tf's transform_listener_unittest lost all six calls to TEST's parse errors
+    result = extract("ros1_fixes", "listener_test.cpp")
+    assert rows(result) == [
+        ("subscribe", "/tf", "tf2_msgs/TFMessage", 8, False),
+        ("subscribe", "/tf_static", "tf2_msgs/TFMessage", 8, False),
+        ("write", "~tf_prefix", "str", 9, False),
+        ("read", "~tf_prefix", None, 10, False),
+        ("read", "rate", None, 19, False),
+        ("write", "gain", "double", 20, False),
+        ("read", "rate", "double", 21, False),
+    ]
+    assert not [d for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"]

@@ -203,6 +203,11 @@ LIBRARIES: dict[tuple[str, str], RosFunction] = {
     ("tf::TransformListener", "TransformListener"): RosFunction(
         "subscribe", fixed_name="/tf", fixed_type=_TF, on_handle=False,
         siblings=(("subscribe", "/tf_static", _TF),)),
+    # both read tf_prefix with searchParam on a NodeHandle("~") (tf/transform_listener.h)
+    ("tf::TransformListener", "resolve"): RosFunction(
+        "read", fixed_name="~tf_prefix", on_handle=False, searched=True),
+    ("tf", "remap"): RosFunction("read", fixed_name="~tf_prefix", on_handle=False,
+                                 searched=True),
 }
 
 # rclcpp parameter clients: the services of the remote node they are made for (argument

@@ -73,6 +73,9 @@ UMBRELLAS = {
     "dynamic_reconfigure/": "dynamic_reconfigure/server.h",
     "diagnostic_updater/": "diagnostic_updater/diagnostic_updater.h",
     "bondcpp/": "bondcpp/bond.hpp",
+    # test nodes (rostest, launch_testing): without it a TEST's body, and every ROS call
+    # in it, is lost to the parse errors of its macros
+    "gtest/": "gtest/gtest.h", "gmock/": "gtest/gtest.h",
     # libraries beside ROS that node classes use: minimal stand-ins keep them parsing
     "opencv2/": "opencv2/opencv.hpp", "opencv/": "opencv2/opencv.hpp",
     "cv_bridge/": "cv_bridge/cv_bridge.h", "Eigen/": "Eigen/Dense", "eigen3/": "Eigen/Dense",
