@@ -53,3 +53,14 @@ def test_gtest_bodies_are_read() -> None:
         ("read", "rate", "double", 21, False),
     ]
     assert not [d for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"]
+
+
+def test_class_template_client_built_as_member_and_local() -> None:
+    # nav2_util lifecycle_service_client.cpp:35-36: ServiceClient<T> members built in the
+    # constructor's initialiser list, as make_shared already was
+    assert rows(extract("ros2_fixes", "lifecycle_client.cpp")) == [
+        ("client", "map_server/change_state", "lifecycle_msgs/srv/ChangeState", 15, False),
+        ("client", "map_server/get_state", "lifecycle_msgs/srv/GetState", 16, False),
+        ("client", "probe", "lifecycle_msgs/srv/GetState", 18, False),
+        ("client", "shared", "lifecycle_msgs/srv/GetState", 19, False),
+    ]

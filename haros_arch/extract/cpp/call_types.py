@@ -9,7 +9,7 @@ argument's C++ type, or an argument that names the type as a string
 
 from __future__ import annotations
 
-from clang.cindex import Cursor, CursorKind, Type
+from clang.cindex import Cursor, CursorKind, Type, TypeKind
 
 from . import api, msg_types
 from .handles import parameters
@@ -56,9 +56,10 @@ class CallTypes:
             found: str | None = None
             if source in ("template", "template-value"):
                 ref = template_argument(call)
-                if ref is not None:
-                    found = (self._message(ref.type) if source == "template"
-                             else msg_types.param_type(ref.type))
+                ctype = ref.type if ref is not None else constructed_argument(call)
+                if ctype is not None:
+                    found = (self._message(ctype) if source == "template"
+                             else msg_types.param_type(ctype))
             elif source == "class" and cls is not None:
                 ctype = cls.type
                 if ctype.get_num_template_arguments() > 0:
@@ -105,6 +106,20 @@ def template_argument(call: Cursor) -> Cursor | None:
         ):
             return child
     return None
+
+
+def constructed_argument(call: Cursor) -> Type | None:
+    """A class template's construction written without ``make_shared`` (a member
+    initialiser ``client_(name, node)``, a local ``Client<T> c(name, node)``): the
+    class's first template argument, which the call's type carries."""
+    target = call.referenced
+    if target is None or target.kind != CursorKind.CONSTRUCTOR:
+        return None
+    made = call.type.get_canonical()
+    if made.get_num_template_arguments() < 1:
+        return None
+    found = made.get_template_argument_type(0)
+    return found if found.kind != TypeKind.INVALID else None
 
 
 def _type_name(text: str) -> str | None:

@@ -161,8 +161,10 @@ class Wrappers:
                 and not sites.callers(function)
             ):
                 self._kept.add(key)  # ROS 1: callers in the node's other files (links)
+        # a class template's constructor is spelled with its parameters
+        # (``ServiceClient<ServiceT, NodeT>``), a construction's call without them
         self.names = frozenset(
-            "operator()" if f.kind == CursorKind.LAMBDA_EXPR else f.spelling
+            "operator()" if f.kind == CursorKind.LAMBDA_EXPR else f.spelling.split("<")[0]
             for f in functions if _key(f.canonical) in self.summaries)
         if self.names:
             self.names |= {""}  # a call that depends on a template parameter
