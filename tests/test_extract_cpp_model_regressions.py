@@ -64,3 +64,10 @@ def test_class_template_client_built_as_member_and_local() -> None:
         ("client", "probe", "lifecycle_msgs/srv/GetState", 18, False),
         ("client", "shared", "lifecycle_msgs/srv/GetState", 19, False),
     ]
+
+
+def test_private_prefix_kept_when_the_rest_is_unknown() -> None:
+    # fetch_depth_layer depth_layer.cpp:61: NodeHandle("~/" + name_), name_ of a base class
+    # whose header is missing: clang drops the initialiser
+    assert rows(extract("ros1_fixes", "layer_ns.cpp")) == [
+        ("publish", "~?/clearing", "std_msgs/String", 10, False)]
