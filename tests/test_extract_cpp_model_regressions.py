@@ -71,3 +71,10 @@ def test_private_prefix_kept_when_the_rest_is_unknown() -> None:
     # whose header is missing: clang drops the initialiser
     assert rows(extract("ros1_fixes", "layer_ns.cpp")) == [
         ("publish", "~?/clearing", "std_msgs/String", 10, False)]
+
+
+def test_factory_of_a_class_template_with_two_arguments() -> None:
+    # nav2_amcl amcl_node.cpp:1535: make_unique<message_filters::Subscriber<M, Node>>(...)
+    # was read as a make_unique of M, its first written type
+    result = extract("ros2_fixes", "scan_filter.cpp")
+    assert ("subscribe", "scan", "sensor_msgs/msg/LaserScan", 19, False) in rows(result)

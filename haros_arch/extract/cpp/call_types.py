@@ -108,6 +108,21 @@ def template_argument(call: Cursor) -> Cursor | None:
     return None
 
 
+def factory_made(call: Cursor) -> Cursor | None:
+    """The declaration of the class ``std::make_shared<C>(...)`` (a row of
+    ``api.FACTORIES``) makes: the pointer's own template argument, so that a class
+    template's arguments (``make_unique<Subscriber<M, Node>>``) are not taken for it;
+    else the first type written in the call."""
+    made = call.type.get_canonical()
+    if made.get_num_template_arguments() > 0:
+        decl = made.get_template_argument_type(0).get_canonical().get_declaration()
+        if decl.kind != CursorKind.NO_DECL_FOUND:
+            return decl
+    ref = template_argument(call)
+    decl = ref.type.get_canonical().get_declaration() if ref is not None else None
+    return None if decl is None or decl.kind == CursorKind.NO_DECL_FOUND else decl
+
+
 def constructed_argument(call: Cursor) -> Type | None:
     """A class template's construction written without ``make_shared`` (a member
     initialiser ``client_(name, node)``, a local ``Client<T> c(name, node)``): the
