@@ -78,3 +78,11 @@ def test_factory_of_a_class_template_with_two_arguments() -> None:
     # was read as a make_unique of M, its first written type
     result = extract("ros2_fixes", "scan_filter.cpp")
     assert ("subscribe", "scan", "sensor_msgs/msg/LaserScan", 19, False) in rows(result)
+
+
+def test_ros2_wrapper_without_callers_in_its_unit_keeps_its_calls() -> None:
+    # realsense2_camera dynamic_params.cpp:104, 179: setParamT's callers are in the
+    # node's other files; its calls were dropped as a wrapper's, emitted nowhere
+    found = {(kind, name, line) for kind, name, _, line, _ in
+             rows(extract("ros2_fixes", "set_param.cpp"))}
+    assert {("read", "?", 25), ("declare", "?", 25)} <= found
