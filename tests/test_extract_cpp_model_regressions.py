@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import os
 
-from haros_arch.extract.cpp import CppResult, extract_cpp
+from haros_arch.extract.cpp import CppResult, extract_cpp, recall
 from haros_arch.workspace import scan
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -86,3 +86,12 @@ def test_ros2_wrapper_without_callers_in_its_unit_keeps_its_calls() -> None:
     found = {(kind, name, line) for kind, name, _, line, _ in
              rows(extract("ros2_fixes", "set_param.cpp"))}
     assert {("read", "?", 25), ("declare", "?", 25)} <= found
+
+
+def test_recall_grep_sees_constructions_of_api_classes() -> None:
+    # the recall check did not flag amcl_node.cpp:1535 when its subscription was missed
+    text = ("  sub_ = std::make_unique<message_filters::Subscriber<sensor_msgs::msg::LaserScan,\n"
+            "  auto l = std::make_shared<tf2_ros::TransformListener>(*buffer);\n"
+            "  raw_ = new message_filters::Subscriber<M>(nh, \"x\", 1);\n"
+            "  auto s = std::make_shared<ros::Subscriber>();\n")
+    assert [site.line for site in recall.call_sites(text)] == [1, 2, 3]
