@@ -162,7 +162,7 @@ LIBRARIES: dict[tuple[str, str], RosFunction] = {
     ("image_transport::ImageTransport", "subscribe"): RosFunction(
         "subscribe", fixed_type=_IMAGE, queue_arg=1, callback_arg=2),
     ("image_transport::ImageTransport", "advertiseCamera"): RosFunction(
-        "publish", fixed_type=_IMAGE, queue_arg=1, latch_arg=4, siblings=_CAMERA_INFO),
+        "publish", fixed_type=_IMAGE, queue_arg=1, latch_arg=2, siblings=_CAMERA_INFO),
     ("image_transport::ImageTransport", "subscribeCamera"): RosFunction(
         "subscribe", fixed_type=_IMAGE, queue_arg=1, callback_arg=2, siblings=_CAMERA_INFO_IN),
     ("image_transport", "create_publisher"): RosFunction(
@@ -217,6 +217,11 @@ LIBRARIES: dict[tuple[str, str], RosFunction] = {
     ("tf::TransformListener", "TransformListener"): RosFunction(
         "subscribe", fixed_name="/tf", fixed_type=_TF, on_handle=False,
         siblings=(("subscribe", "/tf_static", _TF),)),
+    # both read tf_prefix with searchParam on a NodeHandle("~") (tf/transform_listener.h)
+    ("tf::TransformListener", "resolve"): RosFunction(
+        "read", fixed_name="~tf_prefix", on_handle=False, searched=True),
+    ("tf", "remap"): RosFunction("read", fixed_name="~tf_prefix", on_handle=False,
+                                 searched=True),
 }
 
 # rclcpp parameter clients: the services of the remote node they are made for (argument

@@ -9,7 +9,7 @@ argument's C++ type, or an argument that names the type as a string
 
 from __future__ import annotations
 
-from clang.cindex import Cursor, CursorKind, Type
+from clang.cindex import Cursor, CursorKind, Type, TypeKind
 
 from . import api, msg_types
 from .handles import parameters
@@ -56,9 +56,10 @@ class CallTypes:
             found: str | None = None
             if source in ("template", "template-value"):
                 ref = template_argument(call)
-                if ref is not None:
-                    found = (self._message(ref.type) if source == "template"
-                             else msg_types.param_type(ref.type))
+                ctype = ref.type if ref is not None else constructed_argument(call)
+                if ctype is not None:
+                    found = (self._message(ctype) if source == "template"
+                             else msg_types.param_type(ctype))
             elif source == "class" and cls is not None:
                 ctype = cls.type
                 if ctype.get_num_template_arguments() > 0:
@@ -105,6 +106,35 @@ def template_argument(call: Cursor) -> Cursor | None:
         ):
             return child
     return None
+
+
+def factory_made(call: Cursor) -> Cursor | None:
+    """The declaration of the class ``std::make_shared<C>(...)`` (a row of
+    ``api.FACTORIES``) makes: the pointer's own template argument, so that a class
+    template's arguments (``make_unique<Subscriber<M, Node>>``) are not taken for it;
+    else the first type written in the call."""
+    made = call.type.get_canonical()
+    if made.get_num_template_arguments() > 0:
+        decl = made.get_template_argument_type(0).get_canonical().get_declaration()
+        if decl.kind != CursorKind.NO_DECL_FOUND:
+            return decl
+    ref = template_argument(call)
+    decl = ref.type.get_canonical().get_declaration() if ref is not None else None
+    return None if decl is None or decl.kind == CursorKind.NO_DECL_FOUND else decl
+
+
+def constructed_argument(call: Cursor) -> Type | None:
+    """A class template's construction written without ``make_shared`` (a member
+    initialiser ``client_(name, node)``, a local ``Client<T> c(name, node)``): the
+    class's first template argument, which the call's type carries."""
+    target = call.referenced
+    if target is None or target.kind != CursorKind.CONSTRUCTOR:
+        return None
+    made = call.type.get_canonical()
+    if made.get_num_template_arguments() < 1:
+        return None
+    found = made.get_template_argument_type(0)
+    return found if found.kind != TypeKind.INVALID else None
 
 
 def _type_name(text: str) -> str | None:

@@ -9,13 +9,27 @@ namespace, ``""``, unless it comes from ``create_sub_node("ns")``.
 
 from __future__ import annotations
 
+import re
+
 from clang.cindex import Cursor, CursorKind, TypeKind
 
 from . import api
 from .call_sites import CallSites, member_initialiser
-from .values import PLACEHOLDER, UNKNOWN, Parts, Scope, render, strip, written_arguments
+from .values import (
+    PLACEHOLDER,
+    UNKNOWN,
+    Parts,
+    Scope,
+    initializer,
+    literal,
+    render,
+    strip,
+    written_arguments,
+)
 
 MAX_DEPTH = 16
+# a declaration's initialiser that starts with a string literal and a ``+``
+_PREFIX_PLUS = re.compile(rb'\s*[({]\s*("(?:[^"\\\n]|\\.)*")\s*\+')
 _SCOPES = frozenset({
     CursorKind.NAMESPACE, CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL,
     CursorKind.CLASS_TEMPLATE, CursorKind.CLASS_TEMPLATE_PARTIAL_SPECIALIZATION,
@@ -136,6 +150,8 @@ class Namespaces:
             if decl is None or decl.kind != CursorKind.VAR_DECL:
                 return UNKNOWN
             value = scope.variable(decl)
+            if value is None and initializer(decl) is None:
+                return self._dropped_prefix(decl)
             return UNKNOWN if value is None else self.of(value, scope, depth + 1)
         if kind == CursorKind.MEMBER_REF_EXPR and expr.referenced is not None:
             found = member_initialiser(expr.referenced)
@@ -179,6 +195,20 @@ class Namespaces:
             child = render(scope.string(args[1]))
             return (normalise(join_name(parent, child)) if parent else normalise(child),)
         return (normalise(render(scope.string(args[0]))),)
+
+    def _dropped_prefix(self, decl: Cursor) -> Parts:
+        """A handle declared ``NodeHandle nh("~/" + name_)`` whose initialiser clang
+        dropped (``name_`` of a type it could not see: fetch_depth_layer): the literal
+        its written initialiser starts with and an unknown rest (``~?``), so that the
+        private prefix is not lost."""
+        made = decl.type.get_canonical().get_declaration()
+        where = decl.extent.end
+        if qualified_name(made) not in api.HANDLE_CLASSES or where.file is None:
+            return UNKNOWN
+        data = self.source.get(where.file.name)
+        found = _PREFIX_PLUS.match(data, where.offset) if data else None
+        prefix = literal(found.group(1).decode("utf-8", "replace")) if found else None
+        return UNKNOWN if prefix is None else (normalise(prefix + "?"),)
 
     def _sub_node(self, call: Cursor, factory: tuple[str, str], scope: Scope,
                   depth: int) -> Parts:

@@ -74,6 +74,9 @@ UMBRELLAS = {
     "diagnostic_updater/": "diagnostic_updater/diagnostic_updater.h",
     "bondcpp/": "bondcpp/bond.hpp",
     "realtime_tools/": "realtime_tools/realtime_publisher.h",
+    # test nodes (rostest, launch_testing): without it a TEST's body, and every ROS call
+    # in it, is lost to the parse errors of its macros
+    "gtest/": "gtest/gtest.h", "gmock/": "gtest/gtest.h",
     # libraries beside ROS that node classes use: minimal stand-ins keep them parsing
     "opencv2/": "opencv2/opencv.hpp", "opencv/": "opencv2/opencv.hpp",
     "angles/": "angles/angles.h",

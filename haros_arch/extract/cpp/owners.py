@@ -13,7 +13,7 @@ from collections.abc import Callable
 from clang.cindex import Cursor, CursorKind
 
 from . import api
-from .call_types import template_argument
+from .call_types import factory_made, template_argument
 from .handles import qualified_name
 from .values import initializer, strip
 
@@ -47,8 +47,7 @@ def constructed_class(call: Cursor, owned: Callable[[str], bool]) -> str | None:
     if target.kind == CursorKind.CONSTRUCTOR:
         cls = target.semantic_parent
     elif (qualified_name(target.semantic_parent), target.spelling) in api.FACTORIES:
-        ref = template_argument(call)
-        cls = ref.type.get_canonical().get_declaration() if ref is not None else None
+        cls = factory_made(call)
     if cls is None or cls.kind not in _CLASSES:
         return None
     where = cls.location.file

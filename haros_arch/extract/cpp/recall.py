@@ -60,8 +60,15 @@ def site_pattern(extra: frozenset[str] = frozenset()) -> re.Pattern[str]:
     bare = {name for name in names if "_" in name} | set(extra)
     member = "|".join(sorted(map(re.escape, names | set(extra)), key=len, reverse=True))
     free = "|".join(sorted(map(re.escape, bare), key=len, reverse=True))
+    # the API's classes whose construction is the call, written qualified, made with a
+    # factory or new (``make_unique<message_filters::Subscriber<M, Node>>(``)
+    made = "|".join(sorted((re.escape(owner) for owner, name in api.ALL
+                            if "::" in owner and owner.rsplit("::", 1)[1] == name),
+                           key=len, reverse=True))
     return re.compile(rf"(?:(?:\.|->)\s*(?:template\s+)?(?:{member})"
-                      rf"|(?<![\w.>:~])(?:\w+::)?(?:{free}))\s*[<(]")
+                      rf"|(?<![\w.>:~])(?:\w+::)?(?:{free}))\s*[<(]"
+                      rf"|(?:make_shared|make_unique)\s*<\s*(?:::)?(?:{made})\s*[<>(]"
+                      rf"|\bnew\s+(?:::)?(?:{made})\s*[<(]")
 
 
 def call_sites(text: str, extra: Iterable[str] = ()) -> list[Site]:

@@ -181,7 +181,7 @@ class Scope:
         cursor = strip(cursor)
         kind = cursor.kind
         if kind == CursorKind.STRING_LITERAL:
-            text = _literal(cursor.spelling)
+            text = literal(cursor.spelling)
             return UNKNOWN if text is None else (text,)
         if kind in (CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR):
             decl = cursor.referenced
@@ -353,7 +353,7 @@ def _walk(cursor: Cursor) -> Iterator[Cursor]:
         stack.extend(node.get_children())
 
 
-def _literal(spelling: str) -> str | None:
+def literal(spelling: str) -> str | None:
     """The text of a plain C string literal as clang spells it, or None."""
     if len(spelling) < 2 or not spelling.startswith('"') or not spelling.endswith('"'):
         return None

@@ -22,7 +22,7 @@ from ...model.location import Location
 from ...model.source import PrimitiveCall
 from . import api, msg_types
 from .call_sites import CallSites
-from .call_types import CallTypes, template_argument
+from .call_types import CallTypes, factory_made
 from .call_types import callee as callee_of_call
 from .conditions import ConditionReader
 from .handles import (
@@ -160,9 +160,8 @@ class CallFinder:
             return None, None
         key = (qualified_name(target.semantic_parent), target.spelling)
         if key in api.FACTORIES:
-            ref = template_argument(call)
-            decl = ref.type.get_canonical().get_declaration() if ref is not None else None
-            if decl is None or decl.kind == CursorKind.NO_DECL_FOUND:
+            decl = factory_made(call)
+            if decl is None:
                 return None, None
             return api.ALL.get((qualified_name(decl), decl.spelling)), decl
         if target.kind == CursorKind.CONSTRUCTOR:
@@ -189,8 +188,7 @@ class CallFinder:
                 self.rosname = render(scope.string(args[index]))
             return
         if key in api.FACTORIES:
-            ref = template_argument(call)
-            decl = ref.type.get_canonical().get_declaration() if ref is not None else None
+            decl = factory_made(call)
             if decl is not None:
                 key = (qualified_name(decl), decl.spelling)
         if key in api.RCLCPP_NODE_NAME:

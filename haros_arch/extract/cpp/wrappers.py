@@ -156,13 +156,18 @@ class Wrappers:
         main = finder.tu.spelling
         for function in functions:
             key = _key(function.canonical)
-            if key in self.summaries and not finder.ros2 and sites is not None and (
+            # its callers are in the node's other files: ROS 1 names its calls there
+            # (links); ROS 2 keeps them where they are written, with the names they
+            # give (realsense2_camera's setParamT, whose callers are in named_filter.cpp)
+            if key in self.summaries and sites is not None and (
                 function.location.file is not None and function.location.file.name == main
                 and not sites.callers(function)
             ):
-                self._kept.add(key)  # ROS 1: callers in the node's other files (links)
+                self._kept.add(key)
+        # a class template's constructor is spelled with its parameters
+        # (``ServiceClient<ServiceT, NodeT>``), a construction's call without them
         self.names = frozenset(
-            "operator()" if f.kind == CursorKind.LAMBDA_EXPR else f.spelling
+            "operator()" if f.kind == CursorKind.LAMBDA_EXPR else f.spelling.split("<")[0]
             for f in functions if _key(f.canonical) in self.summaries)
         if self.names:
             self.names |= {""}  # a call that depends on a template parameter

@@ -7,6 +7,8 @@
 #include <boost/shared_ptr.hpp>
 #include <boost/function.hpp>
 namespace image_transport {
+class SingleSubscriberPublisher;
+typedef boost::function<void(const SingleSubscriberPublisher&)> SubscriberStatusCallback;
 class Publisher {
 public:
   Publisher();
@@ -14,12 +16,14 @@ public:
   uint32_t getNumSubscribers() const;
   std::string getTopic() const;
   void shutdown();
+  operator void*() const;
 };
 class Subscriber {
 public:
   Subscriber();
   std::string getTopic() const;
   void shutdown();
+  operator void*() const;
 };
 class CameraPublisher {
 public:
@@ -27,8 +31,9 @@ public:
   template<class I, class C> void publish(const I& image, const C& info) const;
   uint32_t getNumSubscribers() const;
   void shutdown();
+  operator void*() const;
 };
-class CameraSubscriber { public: CameraSubscriber(); void shutdown(); };
+class CameraSubscriber { public: CameraSubscriber(); void shutdown(); operator void*() const; };
 class TransportHints {
 public:
   template<class... A> explicit TransportHints(A&&... args);
@@ -37,12 +42,17 @@ class ImageTransport {
 public:
   template<class N> explicit ImageTransport(const N& handle);
   Publisher advertise(const std::string& base_topic, uint32_t queue_size, bool latch = false);
+  // the overloads with (dis)connect callbacks: roscpp's or image_transport's callback types
+  template<class C, class... A> Publisher advertise(const std::string& base_topic,
+      uint32_t queue_size, const C& connect_cb, A&&... more);
   template<class C> Subscriber subscribe(const std::string& base_topic, uint32_t queue_size,
       const C& callback);
   template<class C, class... A> Subscriber subscribe(const std::string& base_topic,
       uint32_t queue_size, const C& callback, A&&... more);
   CameraPublisher advertiseCamera(const std::string& base_topic, uint32_t queue_size,
       bool latch = false);
+  template<class C, class... A> CameraPublisher advertiseCamera(const std::string& base_topic,
+      uint32_t queue_size, const C& image_connect_cb, A&&... more);
   template<class C, class... A> CameraSubscriber subscribeCamera(const std::string& base_topic,
       uint32_t queue_size, const C& callback, A&&... more);
 };

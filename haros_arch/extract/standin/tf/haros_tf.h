@@ -81,6 +81,7 @@ class TransformListener : public Transformer {
 public:
   TransformListener();
   template<class... A> explicit TransformListener(A&&... args);
+  std::string resolve(const std::string& frame_name);
 };
 class TransformBroadcaster {
 public:
@@ -99,5 +100,6 @@ template<class A, class B> void quaternionTFToMsg(const A& q, B& msg);
 template<class A, class B> void transformStampedTFToMsg(const A& t, B& msg);
 template<class A, class B> void vector3TFToMsg(const A& v, B& msg);
 std::string resolve(const std::string& prefix, const std::string& frame_name);
+std::string remap(const std::string& frame_id);
 }  // namespace tf
 #endif
