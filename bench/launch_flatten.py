@@ -1,6 +1,11 @@
-"""Flattened ROS 1 launch files against their originals, both read by the real roslaunch.
+"""Flattened launch files against their originals: ROS 1 read by the real roslaunch,
+ROS 2 read by our loader and, when given, by the real ROS 2 launch.
 
     .venv/bin/python bench/launch_flatten.py FOLDER [FOLDER ...] [-v]
+    .venv/bin/python bench/launch_flatten.py --ros2 FOLDER [FOLDER ...] [-v]
+        [--real-python PY --src SRC]
+
+ROS 1 (the default):
 
 Every ROS 1 launch file under each FOLDER (as ``launch_agreement.py`` finds them, with
 every FOLDER on ``ROS_PACKAGE_PATH``) is loaded by ``haros_arch.launch.load`` and
@@ -9,6 +14,18 @@ flattened file. Prints how many originals roslaunch accepts, how many flattened 
 reads as the original (same nodes, all fields, and the same parameters, leaving out
 what the flattener says it leaves out), how many flattened files it refuses, and how
 many nodes and parameters were left out (``-v``: each difference).
+
+``--ros2``: every ROS 2 launch file under each FOLDER (found by name as
+``launch_ros2_compare.py`` finds them; FOLDERs are one workspace) is loaded with its
+default arguments and written flat in each format (XML, YAML, Python,
+``launch.ros2.flatten``); our loader reads each flat file, and its nodes and parameters
+(``flatten.facts``) are compared with the original's less what the flattener says it
+leaves out. Prints files, files flattened, round trips equal per format, what was left
+out by cause, and differences by cause (the field that differs). With ``--real-python``
+(the scratch venv of ``launch_ros2_compare.py``) and ``--src`` (its SRC: launch,
+launch_ros and the FOLDERs under it), the real launch also runs each original and its
+flat files in the install-like tree that script builds, and they are compared as that
+script compares ours with the real one.
 """
 
 from __future__ import annotations
@@ -53,6 +70,10 @@ def typed(params: dict[str, Any]) -> dict[str, str]:
 
 
 def main(argv: list[str]) -> int:
+    if "--ros2" in argv:
+        from launch_flatten_ros2 import main as main_ros2
+
+        return main_ros2([a for a in argv if a != "--ros2"])
     verbose = "-v" in argv
     folders = [Path(a).resolve() for a in argv if a != "-v"]
     files = [f for folder in folders for f in launch_files(folder)]

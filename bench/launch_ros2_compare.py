@@ -538,6 +538,22 @@ def compare(ours: list[dict[str, Any]], real: list[dict[str, Any]], tally: Count
 FACTS = ("package", "executable", "namespace", "container", "args", "remaps")
 
 
+def ros2_launch_files(roots: list[str]) -> list[str]:
+    """The launch files under ``roots`` by name (``*.launch.py``, ``*_launch.xml`` ...,
+    or any .py / .xml / .yaml in a ``launch`` folder), tests left out."""
+    files: list[str] = []
+    for root in roots:
+        for folder, dirs, names in os.walk(root):
+            dirs[:] = sorted(d for d in dirs if d not in ("test", "tests", ".git"))
+            for name in sorted(names):
+                if name.endswith((".launch.py", ".launch.xml", ".launch.yaml", "_launch.py",
+                                  "_launch.xml", "_launch.yaml")) or (
+                        name.endswith((".py", ".xml", ".yaml"))
+                        and os.path.basename(folder) == "launch"):
+                    files.append(os.path.join(folder, name))
+    return files
+
+
 def share(agree: int, total: int) -> str:
     return f"{agree}/{total} ({100.0 * agree / total if total else 100.0:.1f}%)"
 
@@ -585,16 +601,7 @@ def main() -> int:
     packages.setdefault("launch", options.launch_share or os.path.join(
         options.src, "launch", "launch", "share", "launch"))
     extra_path = [os.path.join(options.src, "navigation2", "nav2_common")]
-    files: list[str] = []
-    for root in roots:
-        for folder, dirs, names in os.walk(root):
-            dirs[:] = [d for d in dirs if d not in ("test", "tests", ".git")]
-            for name in sorted(names):
-                if name.endswith((".launch.py", ".launch.xml", ".launch.yaml", "_launch.py",
-                                  "_launch.xml", "_launch.yaml")) or (
-                        name.endswith((".py", ".xml", ".yaml"))
-                        and os.path.basename(folder) == "launch"):
-                    files.append(os.path.join(folder, name))
+    files = ros2_launch_files(roots)
     if options.limit:
         files = files[:options.limit]
     tally: Counter[str] = Counter()

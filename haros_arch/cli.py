@@ -17,16 +17,13 @@ from rich.console import Console
 from rich.markup import escape
 
 from . import __version__
-from .api import Analysis, analyse_path
-from .autoproject import is_project_file, open_choice, select
-from .diagnostics import CATALOGUE
 from .model.diagnostic import SEVERITY_RANK
-from .pipeline import Options
-from .project import ProjectError
-from .report.text import print_diagnostics, print_summary
 
+# the rest is imported where a command needs it: ``--help`` and ``explain`` start fast
 if TYPE_CHECKING:
+    from .api import Analysis
     from .launch.model import LaunchModel
+    from .pipeline import Options
     from .workspace import Workspace
 
 EXIT_OK, EXIT_FINDINGS, EXIT_USAGE, EXIT_INTERNAL = 0, 1, 2, 3
@@ -108,10 +105,13 @@ def _parser() -> argparse.ArgumentParser:
     launch.add_argument("file", nargs="+", metavar="FILE", help="a path, or PKG PATH/IN/PKG")
     launch.add_argument("--arg", action="append", default=[], metavar="NAME:=VALUE")
     launch.add_argument("--workspace", default=".", help="workspace folder (default: .)")
-    launch.add_argument("--format", choices=("text", "json"), default="text")
+    launch.add_argument("--format", choices=("text", "json", "xml", "yaml", "python"),
+                        default="text", help="text or json; with --flatten: xml (default), "
+                        "or yaml / python for a ROS 2 file")
     launch.add_argument("--flatten", action="store_true",
-                        help="write one roslaunch XML file with every include inlined and "
-                             "every argument and decided condition applied (ROS 1)")
+                        help="write one launch file with every include inlined and every "
+                             "argument and decided condition applied (ROS 1: roslaunch "
+                             "XML; ROS 2: XML, YAML or Python)")
     launch.add_argument("--tree", action="store_true",
                         help="show how the files make the nodes: includes with their "
                              "arguments, groups, remaps, conditions")
@@ -186,6 +186,8 @@ def _run_options(parser: argparse.ArgumentParser) -> None:
 
 
 def _options(args: argparse.Namespace) -> Options:
+    from .pipeline import Options
+
     jobs = getattr(args, "jobs", None)
     return Options(cache_dir=None if getattr(args, "no_cache", False) else Options.cache_dir,
                    jobs=max(1, jobs) if jobs is not None else None)
@@ -194,6 +196,9 @@ def _options(args: argparse.Namespace) -> Options:
 def _analyse(path: str, console: Console, options: Options | None = None
              ) -> Analysis | None:
     """The analysis of ``path``, its notes and errors printed on ``console``."""
+    from .api import analyse_path
+    from .project import ProjectError
+
     try:
         analysis = analyse_path(path, options)
     except ProjectError as err:
@@ -219,6 +224,8 @@ def _write(text: str, output: str | None) -> None:
 
 
 def cmd_extract(args: argparse.Namespace, out: Console, err: Console) -> int:
+    from .report.text import print_diagnostics, print_summary
+
     analysis = _analyse(args.project, err, _options(args))
     if analysis is None or analysis.model is None:
         return EXIT_USAGE
@@ -326,6 +333,7 @@ def cmd_query(args: argparse.Namespace, out: Console, err: Console) -> int:
 
 
 def cmd_explain(args: argparse.Namespace, out: Console, err: Console) -> int:
+    from .diagnostics import CATALOGUE
     from .query.catalogue import QUERY_LIMIT, UNDECIDED, load_catalogue
 
     rules = {rule.id: rule for rule in load_catalogue()}
@@ -365,7 +373,8 @@ def cmd_explain(args: argparse.Namespace, out: Console, err: Console) -> int:
 
 
 def cmd_init(args: argparse.Namespace, out: Console, err: Console) -> int:
-    from .autoproject import project_text
+    from .autoproject import is_project_file, open_choice, project_text
+    from .project import ProjectError
 
     try:
         choice = open_choice(args.path)
@@ -467,6 +476,8 @@ def cmd_compare(args: argparse.Namespace, out: Console, err: Console) -> int:
 
 
 def cmd_report(args: argparse.Namespace, out: Console, err: Console) -> int:
+    from .autoproject import open_choice
+    from .project import ProjectError
     from .viz import ReportError, write_report
     from .viz.command import model_data, project_findings, read_model, workspace_root
 
@@ -511,6 +522,7 @@ def _live_comparison(model: dict[str, Any], path: str) -> dict[str, Any]:
 def cmd_launch(args: argparse.Namespace, out: Console, err: Console) -> int:
     from .launch import load as load_launch
     from .launch.ros1.dump import as_data, as_text
+    from .report.text import print_diagnostics
     from .workspace import scan
 
     if not os.path.isdir(args.workspace) or len(args.file) > 2 or any(
@@ -529,7 +541,10 @@ def cmd_launch(args: argparse.Namespace, out: Console, err: Console) -> int:
     given = dict(a.split(":=", 1) for a in args.arg)
     model = load_launch(path, workspace, given, dict(os.environ))
     if args.flatten:
-        return _flatten(path, workspace, model, out, err)
+        return _flatten(path, workspace, model, args.format, out, err)
+    if args.format not in ("text", "json"):
+        err.print(f"haros-arch: --format {args.format} is for --flatten", highlight=False)
+        return EXIT_USAGE
     if args.format == "json":
         out.print(json.dumps(as_data(model), indent=2), highlight=False, markup=False)
     elif args.tree:
@@ -545,15 +560,22 @@ def cmd_launch(args: argparse.Namespace, out: Console, err: Console) -> int:
     return EXIT_OK
 
 
-def _flatten(path: str, workspace: Workspace, model: LaunchModel, out: Console,
+def _flatten(path: str, workspace: Workspace, model: LaunchModel, fmt: str, out: Console,
              err: Console) -> int:
     from .launch.dialect import ros_version
-    from .launch.ros1.flatten import flatten
+    from .launch.ros1.flatten import flatten as flatten_ros1
+    from .launch.ros2.flatten import flatten as flatten_ros2
+    from .report.text import print_diagnostics
 
-    if ros_version(path, workspace) != 1:
-        err.print("haros-arch: --flatten writes ROS 1 launch files only", highlight=False)
+    fmt = "xml" if fmt == "text" else fmt
+    if ros_version(path, workspace) == 2 and fmt in ("xml", "yaml", "python"):
+        text, notes = flatten_ros2(model, fmt)
+    elif fmt == "xml":
+        text, notes = flatten_ros1(model)
+    else:
+        err.print(f"haros-arch: --flatten writes a ROS 1 launch file as xml only, not "
+                  f"{fmt}", highlight=False)
         return EXIT_USAGE
-    text, notes = flatten(model)
     out.print(text, highlight=False, markup=False, end="")
     for line in notes:
         err.print(f"note: {escape(line)}", highlight=False)
@@ -587,6 +609,8 @@ def cmd_models(args: argparse.Namespace, out: Console, err: Console) -> int:
 
 def main(argv: Sequence[str] | None = None) -> int:
     args = _parser().parse_args(argv)
+    from .autoproject import select
+
     if any(":=" not in a for a in getattr(args, "arg", [])) and args.command != "launch":
         print("haros-arch: --arg takes NAME:=VALUE", file=sys.stderr)
         return EXIT_USAGE

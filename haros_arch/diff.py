@@ -359,7 +359,8 @@ def finding_from_data(data: dict[str, Any]) -> Finding:
                    str(data.get("message", "")), data.get("configuration"),
                    tuple(str(e) for e in data.get("entities", ())),
                    location(data.get("location")),
-                   tuple(str(c) for c in data.get("configurations", ())))
+                   tuple(str(c) for c in data.get("configurations", ())),
+                   tuple(location(a) for a in data.get("also", ()) if isinstance(a, dict)))
 
 
 def load_saved(path: str) -> tuple[Model, list[Finding]]:

@@ -5,18 +5,25 @@
 
 from __future__ import annotations
 
+import json
 import os
-from collections.abc import Mapping
-from dataclasses import dataclass, replace
+import time
+from collections.abc import Iterator, Mapping
+from contextlib import contextmanager
+from dataclasses import dataclass, field, replace
+from typing import Any
 
-from . import cmake, graph, launch, pysetup
+from . import cmake, graph, launch, pysetup, runcache
 from . import diagnostics as diag
 from .extract import AUTO_CACHE, extract_nodes
+from .extract.cpp import cache as cpp_cache
 from .graph.build import nodelet_plugin
 from .launch.model import LaunchModel
+from .model.load import node_from_data
 from .model.location import Location
 from .model.model import Model
 from .model.runtime import Configuration
+from .model.serialise import to_data
 from .model.source import Node, Package
 from .models.attach import Attacher
 from .models.library import DATA, Library
@@ -30,11 +37,28 @@ from .workspace import Workspace, scan
 class Options:
     """How to run: ``cache_dir`` of source results (None: no cache, a cold run),
     ``jobs`` worker processes parsing C++ (None: one per core), and whether nodes
-    without source take the shipped interface models (``models``)."""
+    without source take the shipped interface models (``models``). ``timings``, when
+    given, gets the seconds of each stage (``STAGES``), added up over the run."""
 
     cache_dir: str | None = AUTO_CACHE
     jobs: int | None = None
     models: bool = True
+    timings: dict[str, float] | None = field(default=None, compare=False)
+
+
+# the stages of a run, in order, as ``Options.timings`` names them
+STAGES = ("cache", "scan", "launch", "build files", "C++", "Python", "models", "graph")
+
+
+@contextmanager
+def _stage(options: Options, name: str) -> Iterator[None]:
+    start = time.perf_counter()
+    try:
+        yield
+    finally:
+        if options.timings is not None:
+            options.timings[name] = (options.timings.get(name, 0.0)
+                                     + time.perf_counter() - start)
 
 
 def analyse(project: Project, environment: Mapping[str, str] | None = None,
@@ -42,12 +66,81 @@ def analyse(project: Project, environment: Mapping[str, str] | None = None,
     """Scan the workspace, read build files and sources, and build every configuration."""
     options = options or Options()
     env = {**(os.environ if environment is None else environment), **project.environment}
-    workspace = scan(project.workspace, env)
+    if options.cache_dir is None:
+        return _analyse(project, env, options, None)
+    with _stage(options, "cache"):  # a run with nothing changed: its model, kept
+        folder = (cpp_cache.default_folder(os.path.abspath(
+            project.workspace[0] if project.workspace else project.folder))
+                  if options.cache_dir == AUTO_CACHE else options.cache_dir)
+        keys = runcache.run_key(project, env, options.models, folder,
+                                runcache.compile_commands_of(project, env))
+        if keys is None:
+            return _analyse(project, env, options, None)
+        key, outer = keys
+        kept = runcache.load(folder, key)
+        earlier = runcache.load_outer(folder, outer) if kept is None else None
+    if kept is not None:
+        return kept
+    if earlier is not None:  # only C++ files changed: the same model if they give the same
+        model = _again(project, env, options, folder, *earlier)
+        if model is not None:
+            with _stage(options, "cache"):
+                runcache.store_alias(folder, key, earlier[0])
+            return model
+    record: dict[str, Any] = {}
+    model = _analyse(project, env, options, record)
+    with _stage(options, "cache"):
+        runcache.store(folder, key, model)
+        if record:
+            runcache.store_outer(folder, outer, key, record)
+    return model
+
+
+def _again(project: Project, env: Mapping[str, str], options: Options, folder: str,
+           key: str, extraction: dict[str, Any]) -> Model | None:
+    """The model of the run ``key`` when extracting its nodes again gives what it gave
+    (the nodes as the build files made them, from ``extraction``); None otherwise."""
+    with _stage(options, "scan"):
+        workspace = scan(project.workspace, env)
+    try:
+        nodes = [node_from_data(data, package) for package, data in extraction["given"]]
+    except (KeyError, TypeError, ValueError, AttributeError):
+        return None
+    found = _extract(nodes, workspace, project, options)
+    if _json(_gave(nodes, found)) != _json(extraction.get("gave")):
+        return None
+    with _stage(options, "cache"):
+        return runcache.load(folder, key)
+
+
+def _extract(nodes: list[Node], workspace: Workspace, project: Project,
+             options: Options) -> list[diag.Diagnostic]:
+    return extract_nodes(  # every C++ source once, in parallel, cached
+        nodes, workspace, cache_dir=options.cache_dir, jobs=options.jobs,
+        compile_commands=[project.compile_commands] if project.compile_commands else None,
+        timings=options.timings)
+
+
+def _gave(nodes: list[Node], found: list[diag.Diagnostic]) -> dict[str, Any]:
+    return {"nodes": to_data(nodes), "diagnostics": to_data(found)}
+
+
+def _json(data: Any) -> str:
+    return json.dumps(data, sort_keys=True)
+
+
+def _analyse(project: Project, env: Mapping[str, str], options: Options,
+             record: dict[str, Any] | None) -> Model:
+    """The run; ``record`` (when given) gets what source extraction was given and gave,
+    for ``_again`` (left empty when the nodes do not read back as they were)."""
+    with _stage(options, "scan"):  # folders and package manifests
+        workspace = scan(project.workspace, env)
     model = Model(project.name, diagnostics=list(workspace.diagnostics))
 
     launches: dict[str, LaunchModel] = {}
     for spec in project.configurations:
-        launched = _load_launch(spec, project, workspace, env)
+        with _stage(options, "launch"):
+            launched = _load_launch(spec, project, workspace, env)
         # roslaunch starts no <test> node; rostest does (a configuration says it is one)
         rostest = spec.rostest if spec.rostest is not None else any(
             entry.endswith(".test") for entry in spec.launch)
@@ -68,14 +161,19 @@ def analyse(project: Project, environment: Mapping[str, str] | None = None,
         if package is None:
             continue
         model.packages.append(package)
-        model.diagnostics.extend(read_build_files(package, workspace))
+        with _stage(options, "build files"):
+            model.diagnostics.extend(read_build_files(package, workspace))
         nodes.update((node.name, node) for node in package.nodes)
     for launched in launches.values():
         _rosrun_scripts(launched, workspace, nodes)
-    model.diagnostics.extend(extract_nodes(  # every C++ source once, in parallel, cached
-        [n for p in model.packages for n in p.nodes], workspace,
-        cache_dir=options.cache_dir, jobs=options.jobs,
-        compile_commands=[project.compile_commands] if project.compile_commands else None))
+    every = [n for p in model.packages for n in p.nodes]
+    given = [[n.package, to_data(n)] for n in every] if record is not None else []
+    found = _extract(every, workspace, project, options)
+    model.diagnostics.extend(found)
+    if record is not None and all(  # the nodes read back as they were given
+            _json(to_data(node_from_data(data, package))) == _json(data)
+            for package, data in given):
+        record.update(given=given, gave=_gave(every, found))
 
     project_file = Location(file=os.path.relpath(project.path))
     models = Attacher(Library(project.models, DATA if options.models else None),
@@ -86,16 +184,18 @@ def analyse(project: Project, environment: Mapping[str, str] | None = None,
     for spec in project.configurations:
         config = Configuration(spec.name, list(spec.launch), dict(spec.args),
                                {**env, **spec.environment})
-        known = models.nodes_for(launches[spec.name], workspace, nodes, config.environment,
-                                 config.diagnostics)  # interface models (no source here)
-        graph.build(config, launches[spec.name], workspace, known,
-                    models.plugin_models(launches[spec.name], config.environment))
-        config.launch_tree = launches[spec.name].tree
-        if spec.hints:
-            where = Location(file=project_file.file, line=spec.line, column=1)
-            config.diagnostics.extend(graph.apply_hints(config, spec.hints, nodes, where))
-            graph.prune_orphans(config)
-        graph.find_candidates(config)
+        with _stage(options, "models"):  # interface models (no source here)
+            known = models.nodes_for(launches[spec.name], workspace, nodes,
+                                     config.environment, config.diagnostics)
+        with _stage(options, "graph"):
+            graph.build(config, launches[spec.name], workspace, known,
+                        models.plugin_models(launches[spec.name], config.environment))
+            config.launch_tree = launches[spec.name].tree
+            if spec.hints:
+                where = Location(file=project_file.file, line=spec.line, column=1)
+                config.diagnostics.extend(graph.apply_hints(config, spec.hints, nodes, where))
+                graph.prune_orphans(config)
+            graph.find_candidates(config)
         model.configurations.append(config)
     return model
 

@@ -5,7 +5,11 @@
 The last two are from bench/report_scale.py's fleets: the first view of 300 nodes, and
 six robots of the nested shape (/robot1/sensors/, base/, arm/) with /robot1/base/ opened.
 With ``--husky DIR`` (a checkout of husky/husky, ROS 1 noetic branch, under DIR/src) it
-also takes docs/report-launch.png, the Launch view of husky_gazebo/husky_playpen.
+also takes docs/report-launch.png, the Launch view of husky_gazebo/husky_playpen. With
+``--nav2 DIR`` (nav2_bringup and nav2_common of ros-navigation/navigation2 under DIR/src)
+it takes docs/report-launch-ros2.png, the Launch view of nav2_bringup's bringup_launch.py
+scrolled to navigation_launch.py's nodes (a remap drawn from the name in code to the name
+it resolves to).
 
 Needs what `scripts/setup` installs (D3 from npm, playwright) and Debian's chromium.
 """
@@ -59,8 +63,31 @@ def launch_shot(browser: Any, husky: str, tmp: str) -> None:
     print("wrote docs/report-launch.png")
 
 
+def launch_shot_ros2(browser: Any, nav2: str, tmp: str) -> None:
+    report = Path(tmp) / "nav2.html"
+    launch = Path(nav2) / "src/nav2_bringup/launch/bringup_launch.py"
+    subprocess.run([sys.executable, "-m", "haros_arch.cli", "report", str(launch), "-o",
+                    str(report), "--jobs", "1"], check=True, stdout=subprocess.DEVNULL)
+    page = browser.new_page(viewport={"width": 1400, "height": 820})
+    page.goto(report.as_uri())
+    page.wait_for_function("window.harosReport && window.harosReport.ready")
+    page.click("#tab-launch")
+    navigation = "nav2_bringup/launch/navigation_launch.py"
+    page.click(f'#launch .lt-file[data-name="{navigation}"] > .lt-head')
+    page.eval_on_selector("#launch .lt-remap-code", "e => { const row = e.closest('.lt'); "
+                          "(row.previousElementSibling || row).scrollIntoView(); }")
+    page.wait_for_timeout(300)
+    page.screenshot(path=str(DOCS / "report-launch-ros2.png"))
+    page.close()
+    print("wrote docs/report-launch-ros2.png")
+
+
+def option(name: str) -> str | None:
+    return sys.argv[sys.argv.index(name) + 1] if name in sys.argv[:-1] else None
+
+
 def main() -> int:
-    husky = sys.argv[sys.argv.index("--husky") + 1] if "--husky" in sys.argv[:-1] else None
+    husky, nav2 = option("--husky"), option("--nav2")
     with tempfile.TemporaryDirectory() as tmp:
         report = Path(tmp) / "report.html"
         subprocess.run([sys.executable, "-m", "haros_arch.cli", "report",
@@ -101,6 +128,8 @@ def main() -> int:
             print("wrote docs/report-nested.png")
             if husky:
                 launch_shot(browser, husky, tmp)
+            if nav2:
+                launch_shot_ros2(browser, nav2, tmp)
             browser.close()
     return 0
 

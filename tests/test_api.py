@@ -78,3 +78,13 @@ def test_the_query_package_imports_no_reporter() -> None:
                 assert "report" not in (node.module or "").split("."), path
             elif isinstance(node, ast.Import):
                 assert not any(".report" in a.name for a in node.names), path
+
+
+def test_options_timings_get_the_seconds_of_every_stage() -> None:
+    from haros_arch.pipeline import STAGES
+
+    timings: dict[str, float] = {}
+    analysis = analyse_path(str(PROJECT), Options(cache_dir=None, jobs=1, timings=timings))
+    assert analysis.model is not None
+    assert set(timings) == set(STAGES) - {"cache"} and all(t >= 0 for t in timings.values())
+    assert timings["Python"] > 0  # the fixture's nodes are Python

@@ -172,6 +172,8 @@ def test_lowercase_message_of_a_missing_package() -> None:
 def test_declared_names_are_cached_with_the_unit(tmp_path) -> None:
     source = [os.path.join(SOURCES, "vendor_member.cpp")]
     first = extract_cpp(source, scan([ROOT]), cache_dir=str(tmp_path), jobs=1)
+    # the header of declared names is never on disk: the entry must not need it
+    assert len(list((tmp_path / "cpp").glob("*.json"))) == 1
     again = extract_cpp(source, scan([ROOT]), cache_dir=str(tmp_path), jobs=1)
     assert rows(again) == rows(first) and len(rows(first)) == 3
     assert "CPP_NAMES_DECLARED" in codes(again)

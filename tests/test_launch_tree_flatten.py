@@ -153,7 +153,6 @@ def test_cli_flatten_writes_xml_and_says_what_it_leaves_out(tmp_path: Path,
     out, err = capsys.readouterr()
     assert out.startswith("<launch>") and '<node pkg="pkg" type="t" name="talker">' in out
     assert "note: node /moder (pkg/launch/main.launch:18) runs only if ($(arg mode))" in err
-    ros2 = tmp_path / "x.launch.py"
-    ros2.write_text("from launch import LaunchDescription\n")
-    assert main(["launch", str(ros2), "--workspace", str(tmp_path), "--flatten"]) == 2
-    assert "ROS 1 launch files only" in capsys.readouterr().err
+    assert main(["launch", main_file, "--workspace", str(tmp_path), "--flatten",
+                 "--format", "yaml"]) == 2
+    assert "as xml only" in capsys.readouterr().err

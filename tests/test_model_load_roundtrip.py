@@ -61,3 +61,18 @@ def test_reads_keep_their_defaults():
     robot = again.configuration("robot")
     threshold = robot.parameter("/robot1/battery/threshold")
     assert threshold.readers[0].call.has_default and threshold.readers[0].call.default == 0.2
+
+
+def test_a_packages_plugin_exports_read_back():
+    from haros_arch.model.source import Package, Plugin
+
+    package = Package("p", "src/p", plugins=[Plugin("nav2_core", "p/plugins.xml"),
+                                             Plugin("nodelet", "p/nodelets.xml")])
+    data = json.loads(json.dumps({"packages": [model_to_data_of(package)]}))
+    assert from_data(data).packages[0].plugins == package.plugins
+
+
+def model_to_data_of(package):
+    from haros_arch.model.model import Model
+
+    return model_to_data(Model("m", packages=[package]))["packages"][0]

@@ -290,3 +290,14 @@ def test_a_dynamic_reconfigure_server_reads_its_private_parameters_unseen():
     assert sorted((f.rule, f.entities) for f in found) == [
         ("parameter-set-not-read", ("parameter:/driver/rpm",)),
         ("parameter-set-not-read" + UNDECIDED, ("node:/laserscan",))]
+
+
+def test_a_catalogue_folder_is_read_again_when_a_file_changes(tmp_path) -> None:
+    from haros_arch.query.catalogue import load_catalogue
+
+    rule = tmp_path / "r.yaml"
+    rule.write_text("id: r\nseverity: info\ntitle: One\nquery: nodes\n")
+    assert [r.title for r in load_catalogue(tmp_path)] == ["One"]
+    assert load_catalogue(tmp_path) == load_catalogue(tmp_path)  # kept while unchanged
+    rule.write_text("id: r\nseverity: info\ntitle: Second\nquery: nodes\n")
+    assert [r.title for r in load_catalogue(tmp_path)] == ["Second"]

@@ -190,7 +190,8 @@ def test_hostile_names_are_text_and_candidates_light_up(browser: Any, tmp_path: 
         "name": XSS, "launch": [], "args": {}, "services": [], "actions": [],
         "parameters": [], "diagnostics": [],
         "nodes": [{"name": "/a", "id": "node:/a", "node": XSS, "namespace": "/",
-                   "remaps": [[XSS, XSS]], "args": XSS, "conditions": [], "location": where}],
+                   "remaps": [[XSS, XSS]], "args": XSS, "conditions": [], "location": where,
+                   "remapped": [[XSS, XSS, XSS]]}],
         "topics": [topic(XSS, "topic:x"), topic("/?", "topic:/?", candidates=["topic:x"])],
         "links": [{"kind": "publish", "node": "/a", "name": name, "given": XSS, "type": XSS,
                    "queue_size": 1, "qos": None, "conditions": [
@@ -330,9 +331,14 @@ def test_launch_view_draws_the_tree_as_nested_boxes(page: Watched, example) -> N
     text = page.page.inner_text("#launch")
     for arg in items[0]["args"]:
         assert arg["name"] in text and str(arg["value"]) in text and arg["origin"] in text
+    # a remap is drawn from the name in the node's code to the name it resolves to
     remapped = next(i for i in items if i.get("remaps"))
-    row = page.page.inner_text(f'#launch .lt-node[data-id="node:{remapped["name"]}"]')
-    assert f"{remapped['remaps'][0][0]} \u2192 {remapped['remaps'][0][1]}" in row
+    [instance] = [n for n in config["nodes"] if n["name"] == remapped["name"]]
+    [[given, _, full]] = instance["remapped"]  # demo_robot: scan -> /robot1/base_scan
+    selector = f'#launch .lt-node[data-id="node:{remapped["name"]}"] .lt-remap-code'
+    assert page.page.inner_text(f"{selector} .lt-code-name") == given == "scan"
+    assert page.page.inner_text(f"{selector} .lt-resolved-name") == full
+    assert full.endswith("/base_scan")
     conditional = next(i for i in items if i.get("condition"))
     box = f'#launch .lt[data-id="node:{conditional["name"]}"]'
     assert page.page.eval_on_selector(box, "e => getComputedStyle(e).borderStyle") == "dashed"
@@ -405,6 +411,46 @@ def test_launch_rows_find_nodes_named_in_code_and_leave_out_skipped(
     page.click('#launch .lt-node[data-id="node:/rsp"]')
     assert watched.ids("#graph .vertex.selected") == {"node:/rsp"}
     assert "line_3 = 3" in page.inner_text("#panel")
+    assert watched.problems == []
+
+
+def test_launch_rows_draw_remaps_from_code_name_to_resolved_name(
+        browser: Any, tmp_path: Path) -> None:
+    """A node whose code is known shows each name a remap changed (code name -> resolved
+    name, the rules as written in the tooltip); one without code shows the rules as
+    the launch file wrote them, said so."""
+    where = {"package": "demo", "file": "demo/launch/a.launch", "line": 2, "column": 1}
+
+    def node(name: str, remapped: list[list[str]]) -> dict[str, Any]:
+        return {"name": name, "id": "node:" + name, "node": "demo/x", "namespace": "/r/",
+                "remaps": [["scan", "base_scan"]], "args": "", "conditions": [],
+                "location": where, "remapped": remapped}
+
+    config = {
+        "name": "c", "launch": ["demo/launch/a.launch"], "args": {}, "topics": [],
+        "services": [], "actions": [], "parameters": [], "diagnostics": [], "links": [],
+        "nodes": [node("/r/known", [["scan", "/r/scan", "/r/base_scan"]]),
+                  node("/r/unknown", [])],
+        "launch_tree": [{"kind": "file", "name": "demo/launch/a.launch", "children": [
+            {"kind": "node", "name": name, "detail": "demo/x", "location": where,
+             "remaps": [["scan", "base_scan"]]} for name in ("/r/known", "/r/unknown")]}]}
+    (tmp_path / "demo/launch").mkdir(parents=True)
+    (tmp_path / "demo/launch/a.launch").write_text("<launch>\n<node/>\n</launch>\n")
+    path = tmp_path / "r.html"
+    write_report({"schema": "haros-arch/1", "project": "p", "packages": [],
+                  "configurations": [config], "diagnostics": []}, [], str(tmp_path), str(path))
+    watched = Watched(browser, path)
+    page = watched.page
+    page.click("#tab-launch")
+    known = '#launch .lt-node[data-id="node:/r/known"]'
+    assert page.inner_text(f"{known} .lt-remap-code .lt-code-name") == "scan"
+    assert page.inner_text(f"{known} .lt-remap-code .lt-resolved-name") == "/r/base_scan"
+    assert page.get_attribute(f"{known} .lt-remaps", "title") == (
+        "remaps as written: scan \u2192 base_scan")
+    unknown = page.inner_text('#launch .lt-node[data-id="node:/r/unknown"] .lt-remaps')
+    assert "remaps as written" in unknown and "scan \u2192 base_scan" in unknown
+    assert page.eval_on_selector_all(
+        '#launch .lt-node[data-id="node:/r/unknown"] .lt-remap-code', "els => els.length") == 0
     assert watched.problems == []
 
 

@@ -48,6 +48,10 @@ class NodeDecl:
     # ROS 2: the parameter files given to the process, as read (rewritten), with where:
     # they apply by node name to every node the process makes (a nav2 server's costmap)
     param_files: list[tuple[Any, Location]] = field(default_factory=list, repr=False)
+    # ROS 2: parameter files given to a node whose name is not known, as launch_ros passes
+    # them (``--params-file``): the running node applies the sections for its name, of
+    # which only the /** entries are applied here
+    params_files_given: list[str] = field(default_factory=list)
 
 
 @dataclass

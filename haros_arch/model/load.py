@@ -29,7 +29,15 @@ from .runtime import (
     Service,
     Topic,
 )
-from .source import Completeness, Dependency, Node, Package, PrimitiveCall, wire_call
+from .source import (
+    Completeness,
+    Dependency,
+    Node,
+    Package,
+    Plugin,
+    PrimitiveCall,
+    wire_call,
+)
 from .values import UNKNOWN_MARK
 
 _RESOURCE_OF_KIND: dict[str, type[Resource]] = {
@@ -51,6 +59,8 @@ def location(data: Any) -> Location:
 
 
 def conditions(data: Any) -> tuple[Condition, ...]:
+    if not data:
+        return ()
     found = []
     for item in data or ():
         if isinstance(item, str):
@@ -108,8 +118,10 @@ def _package(data: dict[str, Any]) -> Package:
     name = str(data.get("name", ""))
     deps = [Dependency(d.get("name", ""), d.get("kind", "depend"), d.get("condition"))
             for d in data.get("dependencies", ()) if isinstance(d, dict)]
+    plugins = [Plugin(str(p.get("kind", "")), str(p.get("file", "")))
+               for p in data.get("plugins", ()) if isinstance(p, dict)]
     return Package(name, data.get("path", name), data.get("build_type", "unknown"),
-                   data.get("version", ""), int(data.get("format", 1)), deps, [],
+                   data.get("version", ""), int(data.get("format", 1)), deps, plugins,
                    [node_from_data(n, name) for n in data.get("nodes", ())],
                    location(data.get("location")))
 
@@ -123,6 +135,9 @@ class _Resources:
         # are added, so naming the next one costs nothing (counting them each time made
         # loading quadratic in the links that name unlisted or unknown resources)
         self.count: dict[tuple[type[Resource], str], int] = {}
+        self.collections: dict[type[Resource], list[Any]] = {
+            Topic: config.topics, Service: config.services, Action: config.actions,
+            Parameter: config.parameters}
 
     def add(self, cls: type[Resource], data: dict[str, Any]) -> Resource:
         name = str(data.get("name", ""))
@@ -138,7 +153,7 @@ class _Resources:
         self.by_key.setdefault((cls, name), resource)
         self.by_id.setdefault(resource.id, resource)
         self.count[(cls, name)] = self.count.get((cls, name), 0) + 1
-        self._collection(cls).append(resource)
+        self.collections[cls].append(resource)
         return resource
 
     def get(self, cls: type[Resource], name: str) -> Resource:
@@ -149,12 +164,6 @@ class _Resources:
         repeats = self.count.get((cls, name), 0) + same - 1
         suffix = f"#{repeats + 1}" if found is not None else ""
         return self.add(cls, {"name": name, "id": f"{cls.__name__.lower()}:{name}{suffix}"})
-
-    def _collection(self, cls: type[Resource]) -> list[Any]:
-        collections: dict[type[Resource], list[Any]] = {
-            Topic: self.config.topics, Service: self.config.services,
-            Action: self.config.actions, Parameter: self.config.parameters}
-        return collections[cls]
 
 
 def _configuration(data: dict[str, Any], nodes: dict[str, Node],
@@ -183,6 +192,9 @@ def _configuration(data: dict[str, Any], nodes: dict[str, Node],
         for item in data.get(key, ()):
             resources.add(cls, item)
     call_index: dict[int, dict[tuple[str, Location], PrimitiveCall]] = {}
+    # names and places repeat over links (instances of one node type): made once each
+    names: dict[tuple[str, str], RosName] = {}
+    places: dict[tuple[Any, ...], Location] = {}
     for item in data.get("links", ()):
         kind = item.get("kind", "")
         if kind not in LINK_CLASSES:
@@ -200,12 +212,16 @@ def _configuration(data: dict[str, Any], nodes: dict[str, Node],
         named = resources.by_id.get(str(item.get("resource", "")))
         resource = named if isinstance(named, _RESOURCE_OF_KIND[kind]) else resources.get(
             _RESOURCE_OF_KIND[kind], full)
-        rosname = RosName(str(item.get("given", full)), full, namespace_of(full))
+        given = str(item.get("given", full))
+        rosname = names.get((given, full))
+        if rosname is None:
+            rosname = names[(given, full)] = RosName(given, full, namespace_of(full))
         link = LINK_CLASSES[kind](
             node=instance, resource=resource, rosname=rosname, type=item.get("type"),
             queue_size=item.get("queue_size"), qos=item.get("qos"),
             latch=bool(item.get("latch", False)),
-            conditions=conditions(item.get("conditions")), location=location(item.get("location")),
+            conditions=conditions(item.get("conditions")),
+            location=_place(item.get("location"), places),
             origin=str(item.get("origin", "source")))
         link.call = _call_of(instance, kind, link.location, call_index) or _call_from(
             link, item, kind)
@@ -254,6 +270,17 @@ def _node_type(nodes: dict[str, Node], hinted: dict[str, Node], name: Any,
     return found
 
 
+def _place(data: Any, places: dict[tuple[Any, ...], Location]) -> Location:
+    """``location(data)``, one object for equal places."""
+    if not isinstance(data, dict):
+        return NOWHERE
+    key = (data.get("package"), data.get("file"), data.get("line"), data.get("column"))
+    found = places.get(key)
+    if found is None:
+        found = places[key] = location(data)
+    return found
+
+
 def _call_of(instance: NodeInstance, kind: str, where: Location,
              index: dict[int, dict[tuple[str, Location], PrimitiveCall]]
              ) -> PrimitiveCall | None:
@@ -278,7 +305,8 @@ def _call_from(link: Link, data: dict[str, Any], kind: str) -> PrimitiveCall | N
     Action wire links get theirs from their action's call afterwards (``_wire_calls``)."""
     if link.origin == "action":
         return None
-    own = tuple(c for c in link.conditions if c not in link.node.conditions)
+    own = tuple(c for c in link.conditions if c not in link.node.conditions
+                ) if link.conditions else ()
     return PrimitiveCall(kind, link.rosname.given, link.type,  # type: ignore[arg-type]
                          link.queue_size, link.qos, link.latch, None, own, link.location,
                          origin=link.origin, deletes=bool(data.get("deletes", False)))

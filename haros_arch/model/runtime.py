@@ -17,7 +17,7 @@ from .diagnostic import Diagnostic
 from .launch_tree import LaunchItem
 from .location import NOWHERE, Location
 from .robot import RobotDescription
-from .rosname import RosName, namespace_of
+from .rosname import RosName, namespace_of, resolve, resolve_remaps
 from .source import KNOWN_COMPLETENESS, Node, PrimitiveCall
 from .values import UNKNOWN_MARK
 
@@ -50,7 +50,9 @@ class NodeInstance:
 
     JSON_VIEWS: ClassVar[dict[str, Callable[[Any], Any]]] = {
         "completeness": lambda n: n.completeness,
+        "remapped": lambda n: n.remapped,
     }
+    JSON_OPTIONAL_VIEWS: ClassVar[tuple[str, ...]] = ("remapped",)  # left out when empty
 
     @property
     def completeness(self) -> str:
@@ -72,6 +74,21 @@ class NodeInstance:
     @property
     def rosname(self) -> RosName:
         return RosName(self.name, self.name, namespace_of(self.name))
+
+    @property
+    def remapped(self) -> list[list[str]]:
+        """``[name in code, name it resolves to, name a remap made of it]`` for each name
+        of this instance's links that one of its remaps changed (once per name)."""
+        rules = resolve_remaps(self.remaps, self.namespace, self.name)
+        out: dict[tuple[str, str], list[str]] = {}
+        for link in self.links:
+            given, full = link.rosname.given, link.rosname.full
+            if UNKNOWN_MARK in given or (given, full) in out:
+                continue
+            before = resolve(given, self.namespace, self.name)
+            if before != full and rules.get(before) == full:
+                out[(given, full)] = [given, before, full]
+        return list(out.values())
 
     def _of(self, kind: str) -> list[Link]:
         return [link for link in self.links if link.kind == kind]

@@ -54,8 +54,11 @@ def _dataclass_to_data(obj: Any) -> dict[str, Any]:
             data[key] = None if value is None else value.name
         else:
             data[key] = to_data(value)
+    optional_views = getattr(obj, "JSON_OPTIONAL_VIEWS", ())
     for key, view in getattr(obj, "JSON_VIEWS", {}).items():
-        data[key] = to_data(view(obj))
+        value = view(obj)
+        if value or key not in optional_views:
+            data[key] = to_data(value)
     return data
 
 

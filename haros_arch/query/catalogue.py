@@ -10,6 +10,7 @@ plugin entries in a configuration's ``user_data``.
 
 from __future__ import annotations
 
+import functools
 import re
 import sys
 import time
@@ -106,11 +107,25 @@ def load_catalogue(folder: Path | str | None = None) -> list[Rule]:
     folder = Path(folder) if folder is not None else CATALOGUE_DIR
     if not folder.is_dir():
         raise CatalogueError(f"the query catalogue is not at {folder}")
-    rules = []
+    files = []
     for path in sorted(folder.glob("*.yaml")):
-        data = yaml.safe_load(path.read_text("utf-8"))
+        try:
+            info = path.stat()
+            files.append((str(path), info.st_mtime_ns, info.st_size))
+        except OSError:
+            files.append((str(path), 0, 0))
+    return list(_rules(tuple(files)))  # read once per process while the files stay
+
+
+@functools.lru_cache(maxsize=8)
+def _rules(files: tuple[tuple[str, int, int], ...]) -> tuple[Rule, ...]:
+    loader = getattr(yaml, "CSafeLoader", yaml.SafeLoader)  # libyaml's when built with it
+    rules = []
+    for name, _mtime, _size in files:
+        path = Path(name)
+        data = yaml.load(path.read_text("utf-8"), Loader=loader)
         rules.append(_rule(data, str(path), path.stem, "configuration"))
-    return rules
+    return tuple(rules)
 
 
 def project_rules(project: Any) -> list[Rule]:
@@ -291,10 +306,19 @@ def run_catalogue(model: Model, project: Any = None,
                   seconds: dict[str, float] | None = None) -> list[Finding]:
     """Every rule's findings, suppressions applied, sorted by severity then place;
     ``seconds`` gets each rule's time (over every configuration)."""
+    from .. import runcache
+
     rules = list(load_catalogue() if catalogue is None else catalogue)
     if project is not None:
         rules.extend(project_rules(project))
     roots = list(getattr(project, "workspace", None) or ())
+    # the findings of a model a cached run gave (or read back) are kept with it
+    return runcache.findings(model, repr((rules, roots)),
+                             lambda: _run_catalogue(model, rules, roots, seconds))
+
+
+def _run_catalogue(model: Model, rules: list[Rule], roots: list[str],
+                   seconds: dict[str, float] | None) -> list[Finding]:
     suppressions = Suppressions(roots)
     found: list[Finding] = []
     for rule in rules:

@@ -8,9 +8,12 @@ here, before anything runs.
 from __future__ import annotations
 
 import functools
+import hashlib
+import json
 from importlib import resources
 from typing import Any
 
+import lark
 from lark import Lark, Token, Transformer, Tree, v_args
 from lark.exceptions import UnexpectedCharacters, UnexpectedEOF, UnexpectedInput, UnexpectedToken
 
@@ -22,10 +25,58 @@ MAX_DEPTH = 120
 MAX_NUMBER_CHARS = 400  # a literal number (a float past 1e308 is inf anyway)
 
 
+TABLE = "grammar.json"  # the parser built from grammar.lark, shipped (``write_table``)
+
+
+def _grammar() -> str:
+    return resources.files(__package__).joinpath("grammar.lark").read_text("utf-8")
+
+
+def _build(grammar: str) -> Lark:
+    return Lark(grammar, parser="lalr", propagate_positions=True, maybe_placeholders=True)
+
+
+def _stamp(grammar: str) -> dict[str, str]:
+    """What a shipped table was built from: the grammar's text and lark's version."""
+    return {"grammar": hashlib.sha256(grammar.encode("utf-8")).hexdigest(),
+            "lark": lark.__version__}
+
+
 @functools.lru_cache(maxsize=1)
 def _lark() -> Lark:
-    grammar = resources.files(__package__).joinpath("grammar.lark").read_text("utf-8")
-    return Lark(grammar, parser="lalr", propagate_positions=True, maybe_placeholders=True)
+    """The parser, read from the shipped table when it was built from this grammar by
+    this lark (a tenth of the time building it takes), else built. The table is plain
+    JSON in the package, never a pickle and never written at run time."""
+    grammar = _grammar()
+    try:
+        data = json.loads(resources.files(__package__).joinpath(TABLE).read_text("utf-8"))
+        if data.get("stamp") == _stamp(grammar):
+            table = _int_keys(data["table"])
+            return Lark._load_from_dict(table["data"], table["memo"])
+    except (OSError, ValueError, KeyError, TypeError, AttributeError):
+        pass  # no table, or one lark cannot read: build the parser
+    return _build(grammar)
+
+
+def _int_keys(value: Any) -> Any:
+    """JSON's string keys back to the parse table's numbers (states, memo ids)."""
+    if isinstance(value, dict):
+        return {int(k) if k.isdigit() else k: _int_keys(v) for k, v in value.items()}
+    if isinstance(value, list):
+        return [_int_keys(v) for v in value]
+    return value
+
+
+def table_text() -> str:
+    """The shipped table for today's grammar and lark (``scripts/grammar-table`` writes
+    it into the package; a test says when it is stale)."""
+    from lark.grammar import Rule
+    from lark.lexer import TerminalDef
+
+    grammar = _grammar()
+    data, memo = _build(grammar).memo_serialize([TerminalDef, Rule])
+    return json.dumps({"stamp": _stamp(grammar), "table": {"data": data, "memo": memo}},
+                      sort_keys=True, separators=(",", ":")) + "\n"
 
 
 def _pos(meta: Any) -> int:

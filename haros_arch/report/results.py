@@ -32,7 +32,12 @@ def print_check(checked: Checked, console: Console, verbose: bool = True) -> Non
 
 
 def print_seconds(seconds: dict[str, float], console: Console) -> None:
-    """Each rule's time, slowest first (``check -v``)."""
+    """Each rule's time, slowest first (``check -v``); none when the findings were read
+    back from the run cache."""
+    if not seconds:
+        console.print("queries: not run (the findings of this unchanged run were kept)",
+                      highlight=False)
+        return
     console.print(f"queries: {sum(seconds.values()):.2f} s; "
                   + ", ".join(f"{rule} {spent:.3f} s" for rule, spent in sorted(
                       seconds.items(), key=lambda kv: -kv[1])), highlight=False)

@@ -25,6 +25,7 @@ from ...model.conditions import Condition
 from ...model.location import Location
 from ...model.source import PrimitiveCall
 from .headers import STANDIN
+from .synthesis import HEADER_NAME
 
 AUTO = "auto"  # cache_dir value: the default folder (see ``default_folder``)
 FORMAT = 1
@@ -117,7 +118,10 @@ class Cache:
 
     def store(self, entry: str, headers: Iterable[str], result: dict[str, Any]) -> None:
         listed = []
+        derived = os.path.join(self.generated, HEADER_NAME)
         for name in headers:
+            if name == derived:  # the names declared for this unit: never on disk, and
+                continue  # made from the source and the other headers, which are listed
             digest = fingerprint(name)
             if digest is None:
                 return

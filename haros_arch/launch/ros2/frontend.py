@@ -252,12 +252,17 @@ class Frontend:
         if raw is None:
             self.report("LAUNCH_MISSING_ATTRIBUTE", ent, tag="param", attribute="value")
             return None
-        if not isinstance(raw, str):
-            return raw  # YAML gives typed values
+        yaml_file = self.path.lower().endswith((".yaml", ".yml"))
+        if not isinstance(raw, str):  # YAML gives typed values
+            if isinstance(raw, list):
+                return [_plain(item) for item in raw]
+            return raw
         sep = ent.attrs.get("value-sep") or ent.attrs.get("sep")
         value = self.text(ent, "value")
         if isinstance(sep, str) and sep and all(isinstance(p, str) for p in value or ()):
             return [item for item in raw.split(sep)]
+        if yaml_file:  # launch_yaml: a string with no substitution is that string
+            return _plain(raw)
         return value
 
     def remaps(self, children: list[Entity]) -> list[tuple[e.Text, e.Text]]:
@@ -310,6 +315,21 @@ class Frontend:
         nodes = [c for c in (self.composable(child) for child in ent.children
                              if child.tag == "composable_node") if c is not None]
         return None if target is None else e.LoadComposable(target, nodes)
+
+
+def _plain(raw: Any) -> Any:
+    """A YAML launch file's parameter value as launch_yaml gives it: a string with no
+    substitution stays that string (``'false'`` is not ``false``, unlike XML's
+    attribute text); one with substitutions is read as YAML once they are performed."""
+    if not isinstance(raw, str):
+        return raw
+    try:
+        parts = parse(raw)
+    except SubstitutionSyntax:
+        return raw
+    if all(isinstance(p, str) for p in parts):
+        return e.ParamValue("".join(p for p in parts if isinstance(p, str)), as_text=True)
+    return parts
 
 
 # -- reading the files ---------------------------------------------------------------

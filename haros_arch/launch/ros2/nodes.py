@@ -111,6 +111,10 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
                           detail=f"parameter file applied to {node}, whose name is not "
                                  "known here: its /** entries are used, those for "
                                  "particular nodes once the node is named from its code")
+            kept = _as_given(runner, entry, scope, location)
+            decl = runner.model.nodes[-1]
+            if kept is not None and not decl.composable:  # launch_ros passes it on
+                decl.params_files_given.append(kept)
         for pattern, params in naming.node_patterns(document):
             for name, leaf in naming.flatten(params):
                 if pattern == "/**":
@@ -159,6 +163,18 @@ def command_line(value: Any, ev: Evaluator) -> str | None:
     if len(commands) != 1 or any(not isinstance(p, str) or p.strip() for p in rest):
         return None
     return ev.value(commands[0].command).text
+
+
+def _as_given(runner: Runner, entry: e.ParamFile, scope: Scope,
+              location: Location) -> str | None:
+    """The path launch_ros gives a ``Node`` as ``--params-file``: a file used as it is
+    (not rewritten, no substitutions in it); None otherwise."""
+    if entry.rewrites or entry.key_rewrites or entry.value_rewrites or entry.replacements \
+            or entry.root_key is not None or entry.allow_substs or (
+            len(entry.path) == 1 and isinstance(entry.path[0], e.FileRef)):
+        return None
+    path = runner.value(entry.path, scope, location)
+    return None if path is None or path.literal is None else path.literal
 
 
 def flat(key: str, value: Any) -> list[tuple[str, Any]]:

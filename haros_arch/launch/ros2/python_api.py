@@ -220,7 +220,9 @@ def parameters(i: Interpreter, value: Any, n: ast.AST) -> list[e.ParamEntry]:
 
 
 def param_value(value: Any) -> Any:
-    """Python values stay; substitutions become Text (read as YAML when performed)."""
+    """Python values stay (a string too: launch_ros dumps it as YAML and reads it back,
+    so ``'1'`` stays the string); substitutions become Text (read as YAML when
+    performed)."""
     if isinstance(value, (Lazy, e.Subst, Unk)):
         return to_text(value)
     if isinstance(value, (list, tuple)):
@@ -231,7 +233,7 @@ def param_value(value: Any) -> Any:
     if isinstance(value, dict):
         return {str(k): param_value(v) for k, v in value.items()}
     if isinstance(value, str):
-        return e.ParamValue(value, as_text=False)
+        return e.ParamValue(value, as_text=True)
     return value
 
 

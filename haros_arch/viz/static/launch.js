@@ -67,6 +67,31 @@ function launchConditionText(c) {
   return `${c.statement || 'if'} ${c.text}` + (values.length ? `  (${values.join(', ')})` : '') + ` \u2014 ${state}`;
 }
 
+// A node row's remaps: each name in the node's code that a remap changed, drawn from that
+// name to the name it resolves to (the graph's "remapped" of its instances); the rules as the
+// launch file wrote them are the tooltip. Without code (or when no rule changed a name the
+// code uses), the rules as written.
+function launchNodeRemaps(item, nodes) {
+  const rules = item.remaps || [];
+  const seen = new Set(), changed = [];
+  for (const node of nodes) {
+    for (const [given, before, full] of node.remapped || []) {
+      const key = given + '\u0000' + full;
+      if (!seen.has(key)) { seen.add(key); changed.push([given, before, full]); }
+    }
+  }
+  const written = rules.map(([a, b]) => `${a} \u2192 ${b}`).join(', ');
+  if (changed.length) {
+    return el('div', {class: 'lt-remaps', title: written ? `remaps as written: ${written}` : null},
+      changed.map(([given, before, full]) => el('div', {class: 'lt-remap lt-remap-code', title: `${given} resolves to ${before}, remapped to ${full}`},
+        el('code', {class: 'lt-code-name'}, given), ' \u2192 ', el('code', {class: 'lt-resolved-name'}, full),
+        el('span', {class: 'muted'}, ' (name in code \u2192 resolved)'))));
+  }
+  if (!rules.length) return null;
+  return el('div', {class: 'lt-remaps'}, el('span', {class: 'muted'}, 'remaps as written:'),
+    rules.map(([a, b]) => el('div', {class: 'lt-remap'}, el('code', {}, a), ' \u2192 ', el('code', {}, b))));
+}
+
 function launchBox(item, app) {
   const kind = ['file', 'group', 'node', 'include'].includes(item.kind) ? item.kind : 'file';
   const c = item.condition;
@@ -84,8 +109,7 @@ function launchBox(item, app) {
       el('span', {class: 'lt-detail muted'}, item.detail || ''),
       item.skipped ? el('span', {class: 'lt-tag'}, 'not started') : null,
       c ? el('div', {class: 'lt-cond'}, launchConditionText(c)) : null,
-      (item.remaps || []).length ? el('div', {class: 'lt-remaps'}, item.remaps.map(([a, b]) =>
-        el('div', {class: 'lt-remap'}, el('code', {}, a), ' \u2192 ', el('code', {}, b)))) : null);
+      launchNodeRemaps(item, nodes));
     row.__ids = nodes.map(n => n.id);
     row.addEventListener('click', event => { event.stopPropagation(); app.chooseLaunchItem(item, row, node); });
     return row;

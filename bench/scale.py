@@ -1,0 +1,202 @@
+"""How the cost of a whole run grows with the workspace (issue #24): per project file, a
+cold run (empty cache), a no-change re-run, and a re-run after one C++ source changed,
+each in a fresh process, with the seconds of every stage, per translation unit and per
+package, and a check that the three runs give the same JSON model.
+
+    .venv/bin/python bench/scale.py [--jobs N] [--touch FILE.cpp] PROJECT.yaml [...]
+
+Wall and CPU seconds of each whole process are printed (on a busy machine the wall time
+waits for a processor: compare CPU). Stages (seconds of wall time): cache (the run
+cache's snapshot and entry), scan (folders and package manifests), launch, build files
+(CMake / setup.py), C++ (libclang's parse apart from the rest, the walk of the syntax
+trees and the cache; the split is measured with ``--jobs 1`` only: workers parse out of
+sight), Python, models, graph, queries (the catalogue) and report (the HTML file). The
+changed file is ``--touch`` or the first C++ source of the model; a comment is appended
+to it and removed again afterwards (use a copy of a fetched tree: this writes into it).
+Each run uses its own cache folder (a temporary one, empty for the cold run), never the
+user's.
+"""
+
+from __future__ import annotations
+
+import argparse
+import hashlib
+import json
+import os
+import resource
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+from typing import Any
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+STAGES = ("cache", "scan", "launch", "build files", "C++", "C++ parse", "Python", "models",
+          "graph", "queries", "report")
+
+
+def child(project_path: str, cache: str, jobs: int, model_out: str) -> dict[str, Any]:
+    """One run in this process: seconds per stage, counts, and the model's digest."""
+    start = time.perf_counter()
+    sys.path.insert(0, ROOT)
+    from haros_arch.pipeline import Options, analyse
+    from haros_arch.project import load
+    imported = time.perf_counter() - start
+
+    parse = [0.0, 0]
+    if jobs == 1:  # libclang's own parse, timed apart from our walk of its trees
+        import clang.cindex as ci
+
+        original = ci.Index.parse
+
+        def timed(self: Any, *args: Any, **kwargs: Any) -> Any:
+            began = time.perf_counter()
+            try:
+                return original(self, *args, **kwargs)
+            finally:
+                parse[0] += time.perf_counter() - began
+                parse[1] += 1
+
+        ci.Index.parse = timed  # type: ignore[method-assign]
+
+    timings: dict[str, float] = {}
+    project = load(project_path)
+    model = analyse(project, options=Options(cache_dir=cache, jobs=jobs, timings=timings))
+    if jobs == 1:
+        timings["C++ parse"] = parse[0]
+    began = time.perf_counter()
+    from haros_arch.query.command import check
+    checked = check(model, project)
+    timings["queries"] = time.perf_counter() - began
+    began = time.perf_counter()
+    from haros_arch.viz import write_report
+    from haros_arch.viz.command import model_data, project_findings, workspace_root
+    with tempfile.TemporaryDirectory() as folder:
+        write_report(model_data(model), project_findings(model, project),
+                     workspace_root(project, None), os.path.join(folder, "report.html"))
+    timings["report"] = time.perf_counter() - began
+    from haros_arch.model.serialise import model_to_data
+    text = json.dumps(model_to_data(model), sort_keys=True)
+    with open(model_out, "w", encoding="utf-8") as handle:
+        handle.write(text)
+    nodes = [n for p in model.packages for n in p.nodes]
+    return {"timings": timings, "imports": imported, "parses": parse[1],
+            "total": time.perf_counter() - start,
+            "packages": len(model.packages), "nodes": len(nodes),
+            "cpp_units": len({s for n in nodes if n.language == "cpp" for s in n.sources}),
+            "instances": sum(len(c.nodes) for c in model.configurations),
+            "links": sum(len(c.links) for c in model.configurations),
+            "findings": len(checked.findings),
+            "slowest_query": max(checked.seconds.items(), key=lambda kv: kv[1],
+                                 default=("", 0.0)),
+            "digest": hashlib.sha256(text.encode()).hexdigest()[:16],
+            "first_cpp": next((s for n in nodes if n.language == "cpp" for s in n.sources),
+                              None)}
+
+
+def run(project: str, cache: str, jobs: int, model_out: str) -> dict[str, Any]:
+    began = time.perf_counter()
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    done = subprocess.run(
+        [sys.executable, __file__, "--child", project, "--cache", cache, "--jobs", str(jobs),
+         "--model-out", model_out], capture_output=True, text=True, check=False)
+    wall = time.perf_counter() - began
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    if done.returncode != 0:
+        sys.exit(f"run failed ({done.returncode}):\n{done.stderr[-3000:]}")
+    result: dict[str, Any] = json.loads(done.stdout.strip().splitlines()[-1])
+    result["wall"] = wall
+    result["cpu"] = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    return result
+
+
+def show(label: str, result: dict[str, Any], cold: dict[str, Any] | None) -> None:
+    t = result["timings"]
+    ratio = (f" ({result['wall'] / cold['wall']:.3f} of cold, CPU "
+             f"{result['cpu'] / cold['cpu']:.3f})" if cold else "")
+    print(f"  {label:<10} process {result['wall']:7.2f} s wall, {result['cpu']:7.2f} s CPU "
+          f"(with its workers){ratio}; imports "
+          f"{result['imports']:.2f} s; model {result['digest']}")
+    print("    " + ", ".join(f"{s} {t[s]:.2f}" for s in STAGES if s in t))
+    if label == "cold":
+        units, packages = max(1, result["cpp_units"]), max(1, result["packages"])
+        cpp = t.get("C++", 0.0)
+        print(f"    {result['packages']} packages, {result['nodes']} nodes, "
+              f"{result['cpp_units']} C++ units ({result['parses']} libclang parses), "
+              f"{result['instances']} instances, {result['links']} links, "
+              f"{result['findings']} findings; slowest query "
+              f"{result['slowest_query'][0]} {result['slowest_query'][1]:.2f} s")
+        print(f"    per C++ unit {1000 * cpp / units:.1f} ms (libclang "
+              f"{1000 * t.get('C++ parse', 0.0) / units:.1f} ms); per package "
+              f"{1000 * result['wall'] / packages:.1f} ms of the whole run")
+
+
+def touched_file(project: str, result: dict[str, Any], given: str | None) -> str | None:
+    if given:
+        return given
+    first = result.get("first_cpp")
+    if not first:
+        return None
+    sys.path.insert(0, ROOT)
+    from haros_arch.project import load
+    for root in load(project).workspace:
+        path = os.path.join(root, first)  # relative to the workspace, or absolute
+        if os.path.isfile(path):
+            return path
+    return None
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("projects", nargs="+")
+    parser.add_argument("--jobs", type=int, default=1)
+    parser.add_argument("--touch")
+    parser.add_argument("--keep", help="keep the cache and the models in this folder "
+                        "(emptied first) instead of a temporary one")
+    parser.add_argument("--child", action="store_true", help=argparse.SUPPRESS)
+    parser.add_argument("--cache", help=argparse.SUPPRESS)
+    parser.add_argument("--model-out", help=argparse.SUPPRESS)
+    args = parser.parse_args()
+    if args.child:
+        print(json.dumps(child(args.projects[0], args.cache, args.jobs, args.model_out)))
+        return
+    for project in args.projects:
+        print(f"{project} (--jobs {args.jobs})")
+        with tempfile.TemporaryDirectory() as temporary:
+            folder = temporary
+            if args.keep:
+                folder = os.path.join(args.keep, os.path.basename(os.path.dirname(
+                    os.path.abspath(project))))
+                shutil.rmtree(folder, ignore_errors=True)
+                os.makedirs(folder)
+            cache = os.path.join(folder, "cache")
+            models = [os.path.join(folder, f"model{i}.json") for i in range(3)]
+            cold = run(project, cache, args.jobs, models[0])
+            show("cold", cold, None)
+            warm = run(project, cache, args.jobs, models[1])
+            show("no change", warm, cold)
+            path = touched_file(project, cold, args.touch)
+            if path is None:
+                print("  (no C++ source to touch)")
+                continue
+            with open(path, "rb") as handle:
+                original = handle.read()
+            try:
+                with open(path, "ab") as handle:
+                    handle.write(b"\n// touched by bench/scale.py\n")
+                touched = run(project, cache, args.jobs, models[2])
+            finally:
+                with open(path, "wb") as handle:
+                    handle.write(original)
+            show("touched", touched, cold)
+            print(f"    touched {path}")
+            same = cold["digest"] == warm["digest"]
+            print(f"  same model cold / no change: {same}; cold / touched: "
+                  f"{cold['digest'] == touched['digest']} (a touched file's lines move "
+                  "nothing: the comment is appended)")
+
+
+if __name__ == "__main__":
+    main()

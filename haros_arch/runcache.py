@@ -1,0 +1,319 @@
+"""A re-run with nothing changed, answered whole from the cache folder.
+
+The model a run gives is kept in the cache folder the C++ units use
+(``extract.cpp.cache.default_folder``), in ``runs/``, found by a key over everything the
+run reads: the project (as loaded, with the command line's arguments), the environment
+(but the shell's own bookkeeping: ``$_``, ``$OLDPWD``, ``$PWD``, ``$SHLVL``), the current
+folder, the options that change the model, this tool's own files, and a snapshot of the files
+(``snapshot``): every file under the workspace's roots (by content), the files beside
+the project file, its compile_commands and model files, the compile_commands.json files
+the C++ stage would read, and the package folders of the installed prefixes the
+environment names (by name and modification time: a package installed, removed or
+upgraded changes its folder). A file changed inside an installed package without its
+folder changing is not seen: ``--no-cache`` runs cold.
+
+When only C++ files changed (the outer key, over every file but the content of C++
+sources and headers, is that of a kept run), the pipeline extracts the nodes again from
+what the build files gave and answers with the kept run when they give what they gave.
+
+Files larger than the readers read (``files.MAX_FILE_BYTES``: bags, maps, meshes) count
+by size and modification time, so a cold run does not hash gigabytes. Content hashes are
+kept in an index beside the entries, with each file's size and
+modification time, so an unchanged file is not read again (as git's index does); a file
+modified in the last seconds is hashed again on the next run (its time may not show a
+second change in the same tick). Entries are JSON (never pickle: the folder may be in
+the analysed workspace); one that does not read back is a miss.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+import stat
+import tempfile
+import time
+import weakref
+from collections.abc import Callable, Iterable, Mapping
+from typing import Any
+
+from . import __version__
+from .files import MAX_FILE_BYTES
+from .model.finding import Finding
+from .model.load import from_data
+from .model.model import Model
+from .model.serialise import model_to_data, to_data
+from .project import Project
+from .workspace import SKIP_FOLDERS, Workspace, installed_roots
+
+FORMAT = 1
+RACY_SECONDS = 2.0  # a file modified this recently is hashed again next time
+KEEP = 16  # entries kept (a run's model and its findings, per project, workspace
+#           state and environment)
+MAX_FILES = 200_000
+# variables a shell sets on its own as one moves and runs commands (the current folder is
+# in the key already): not inputs of a run
+SHELL_BOOKKEEPING = frozenset({"_", "OLDPWD", "PWD", "SHLVL"})
+CPP_FILES = (".c", ".cc", ".cpp", ".cxx", ".c++", ".h", ".hh", ".hpp", ".hxx", ".h++",
+             ".ipp", ".inl", ".tcc")  # files in one snapshot; past it the run is not cached
+TOOL = os.path.dirname(os.path.abspath(__file__))
+
+
+class Snapshot:
+    """Content hashes of files by path, through a stat index kept in ``index_path``."""
+
+    def __init__(self, index_path: str) -> None:
+        self.index_path = index_path
+        self.index: dict[str, list[Any]] = {}
+        try:
+            with open(index_path, encoding="utf-8") as handle:
+                data = json.load(handle)
+            if isinstance(data, dict) and data.get("format") == FORMAT:
+                self.index = {k: v for k, v in data.get("files", {}).items()
+                              if isinstance(v, list) and len(v) == 3}
+        except (OSError, ValueError):
+            pass
+        self.seen: dict[str, list[Any]] = {}
+        self.digests: list[tuple[str, str]] = []
+        self.inner: list[tuple[str, str]] = []  # files by content
+        self.outer: list[tuple[str, str]] = []  # the same, C++ ones by name only
+        self.complete = True
+        self.now = time.time()
+
+    def file(self, path: str, info: os.stat_result) -> None:
+        if len(self.seen) >= MAX_FILES:
+            self.complete = False
+            return
+        known = self.index.get(path)
+        if info.st_size > MAX_FILE_BYTES:  # more than the readers read (a bag, a map):
+            digest = f"large {info.st_size} {info.st_mtime_ns}"  # by size and time
+        elif known is not None and known[0] == info.st_size and known[1] == info.st_mtime_ns:
+            digest = known[2]
+        else:
+            try:
+                with open(path, "rb") as handle:
+                    digest = hashlib.sha256(handle.read()).hexdigest()
+            except OSError:
+                digest = "unreadable"
+        self.outer.append((path, "c++" if path.endswith(CPP_FILES) else digest))
+        self.inner.append((path, digest))
+        if self.now - info.st_mtime > RACY_SECONDS:
+            self.seen[path] = [info.st_size, info.st_mtime_ns, digest]
+
+    def path(self, path: str) -> None:
+        """A file (content) or a missing one, by its path."""
+        try:
+            info = os.stat(path)
+        except OSError:
+            self.digests.append((path, "missing"))
+            return
+        if stat.S_ISREG(info.st_mode):
+            self.file(path, info)
+        else:
+            self.digests.append((path, "not a file"))
+
+    def tree(self, top: str, skip: frozenset[str] = frozenset()) -> None:
+        """Every file below ``top`` (links to folders followed once; dot entries and
+        ``skip`` folders left out, as the workspace scan does)."""
+        stack, visited = [top], set()
+        while stack and self.complete:
+            folder = stack.pop()
+            real = os.path.realpath(folder)
+            if real in visited:
+                continue
+            visited.add(real)
+            try:
+                entries = sorted(os.scandir(folder), key=lambda e: e.name)
+            except OSError:
+                continue
+            self.digests.append((folder, "folder"))
+            for entry in entries:
+                if entry.name.startswith(".") or entry.name in skip:
+                    continue
+                try:
+                    info = entry.stat()
+                except OSError:
+                    continue
+                if stat.S_ISDIR(info.st_mode):
+                    stack.append(entry.path)
+                elif stat.S_ISREG(info.st_mode):
+                    self.file(entry.path, info)
+
+    def folders(self, top: str) -> None:
+        """The folders directly in ``top``, by name and modification time."""
+        try:
+            entries = sorted(os.scandir(top), key=lambda e: e.name)
+        except OSError:
+            self.digests.append((top, "missing"))
+            return
+        for entry in entries:
+            try:
+                self.digests.append((entry.path, str(entry.stat().st_mtime_ns)))
+            except OSError:
+                continue
+
+    def digest(self, outer: bool = False) -> str:
+        """Of every file, or (``outer``) of every file but the content of C++ ones."""
+        found = hashlib.sha256()
+        for path, digest in self.digests:
+            found.update(f"{path}\0{digest}\n".encode("utf-8", "replace"))
+        for path, digest in self.outer if outer else self.inner:
+            found.update(f"{path}\0{digest}\n".encode("utf-8", "replace"))
+        return found.hexdigest()
+
+    def save(self) -> None:
+        if self.seen != self.index:
+            _write_json(self.index_path, {"format": FORMAT, "files": self.seen})
+
+
+def run_key(project: Project, env: Mapping[str, str], models: bool, folder: str,
+            compile_commands: Iterable[str]) -> tuple[str, str] | None:
+    """The key of a run of ``project``, and its outer key (C++ files by name only, not
+    content); None when its files are too many to snapshot."""
+    snap = Snapshot(os.path.join(folder, "runs", "index-" + _digest(
+        repr([os.path.abspath(r) for r in project.workspace])) + ".json"))
+    snap.tree(TOOL, frozenset({"__pycache__"}))
+    for root in project.workspace:
+        snap.tree(os.path.abspath(root), SKIP_FOLDERS)
+    try:
+        beside = sorted(os.scandir(project.folder), key=lambda e: e.name)
+    except OSError:
+        beside = []
+    for entry in beside:
+        if entry.is_file():
+            snap.path(entry.path)
+    for path in [*project.models, *([project.compile_commands] if project.compile_commands
+                                    else []), *compile_commands]:
+        full = os.path.join(project.folder, path)
+        if os.path.isdir(full):
+            snap.tree(full)
+        else:
+            snap.path(full)
+    for root in installed_roots(env):
+        snap.folders(root)
+    if not snap.complete:
+        return None
+    snap.save()
+    # locations are written relative to the current folder: it is an input too
+    head = [FORMAT, __version__, os.getcwd(), repr(project),
+            sorted(kv for kv in env.items() if kv[0] not in SHELL_BOOKKEEPING), models]
+    return (_digest(json.dumps([*head, snap.digest()])),
+            _digest(json.dumps([*head, snap.digest(outer=True)])))
+
+
+def compile_commands_of(project: Project, env: Mapping[str, str]) -> list[str]:
+    """The compile_commands.json files the C++ stage would look for (found or not)."""
+    from .extract.cpp.compile_commands import find
+
+    roots = [os.path.abspath(r) for r in project.workspace]
+    workspace = Workspace(root=roots[0] if roots else os.getcwd(), roots=roots,
+                          environment=dict(env))
+    return find(workspace)
+
+
+# the entry of each model this process ran or read back: its findings are kept with it
+_KEPT: weakref.WeakKeyDictionary[Model, tuple[str, str]] = weakref.WeakKeyDictionary()
+
+
+def load(folder: str, key: str) -> Model | None:
+    try:
+        with open(_entry(folder, key), encoding="utf-8") as handle:
+            data = json.load(handle)
+        if isinstance(data.get("same_as"), str):  # an alias (``store_alias``): one hop
+            key = data["same_as"]
+            with open(_entry(folder, key), encoding="utf-8") as handle:
+                data = json.load(handle)
+        model: Model = from_data(data["model"])
+    except (OSError, ValueError, KeyError, TypeError, AttributeError):
+        return None
+    _KEPT[model] = (folder, key)
+    return model
+
+
+def store(folder: str, key: str, model: Model) -> None:
+    """Keep ``model`` under ``key`` when it reads back as it is, and only the newest
+    ``KEEP`` entries."""
+    data = model_to_data(model)
+    text = json.dumps(data, sort_keys=True)
+    if json.dumps(model_to_data(from_data(json.loads(text))), sort_keys=True) != text:
+        return  # a model that does not read back whole is not kept (never a wrong one)
+    _KEPT[model] = (folder, key)
+    _write(_entry(folder, key), {"model": data}, folder)
+
+
+def store_alias(folder: str, key: str, same_as: str) -> None:
+    """Run ``key`` gives the model (and findings) of run ``same_as``."""
+    try:
+        os.utime(_entry(folder, same_as))  # the newest again: kept as long as its alias
+    except OSError:
+        return
+    _write(_entry(folder, key), {"same_as": same_as}, folder)
+
+
+def store_outer(folder: str, outer: str, key: str, extraction: dict[str, Any]) -> None:
+    """Under the outer key: the run's key and what its source extraction was given and
+    gave (``pipeline``'s record), to try again when only C++ files changed."""
+    _write(_entry(folder, outer + "-outer"), {"key": key, "extraction": extraction}, folder)
+
+
+def load_outer(folder: str, outer: str) -> tuple[str, dict[str, Any]] | None:
+    try:
+        with open(_entry(folder, outer + "-outer"), encoding="utf-8") as handle:
+            data = json.load(handle)
+        return str(data["key"]), dict(data["extraction"])
+    except (OSError, ValueError, KeyError, TypeError):
+        return None
+
+
+def findings(model: Model, inputs: str, compute: Callable[[], list[Finding]]
+             ) -> list[Finding]:
+    """The findings of a kept model's run under ``inputs`` (the rules and roots, as
+    text): read back when that model's run gave them before, else computed and kept."""
+    from .diff import finding_from_data
+
+    kept = _KEPT.get(model)
+    if kept is None:
+        return compute()
+    folder, key = kept
+    entry = _entry(folder, key + "-findings-" + _digest(inputs))
+    try:
+        with open(entry, encoding="utf-8") as handle:
+            return [finding_from_data(f) for f in json.load(handle)["findings"]]
+    except (OSError, ValueError, KeyError, TypeError, AttributeError):
+        pass
+    found = compute()
+    _write(entry, {"findings": to_data(found)}, folder)
+    return found
+
+
+def _write(entry: str, data: object, folder: str) -> None:
+    """Write an entry, then remove all but the newest ``KEEP``."""
+    _write_json(entry, data)
+    runs = os.path.join(folder, "runs")
+    try:
+        entries = [e for e in os.scandir(runs)
+                   if e.name.endswith(".json") and not e.name.startswith("index-")]
+        entries.sort(key=lambda e: e.stat().st_mtime_ns, reverse=True)
+        for old in entries[KEEP:]:
+            os.remove(old.path)
+    except OSError:
+        pass
+
+
+def _entry(folder: str, key: str) -> str:
+    return os.path.join(folder, "runs", key + ".json")
+
+
+def _digest(text: str) -> str:
+    return hashlib.sha256(text.encode("utf-8", "replace")).hexdigest()
+
+
+def _write_json(path: str, data: object) -> None:
+    try:
+        os.makedirs(os.path.dirname(path), exist_ok=True)
+        fd, temporary = tempfile.mkstemp(dir=os.path.dirname(path), suffix=".tmp")
+        with os.fdopen(fd, "w", encoding="utf-8") as handle:
+            json.dump(data, handle)
+        os.replace(temporary, path)
+    except OSError:
+        pass  # a cache that cannot be written is no cache, not an error

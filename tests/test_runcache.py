@@ -1,0 +1,221 @@
+"""A re-run with nothing changed is answered whole from the cache folder (runcache); any
+change to a file the run reads, to the project or to the environment runs it again."""
+
+from __future__ import annotations
+
+import json
+import os
+import shutil
+from pathlib import Path
+
+from haros_arch import runcache
+from haros_arch.model.serialise import model_to_data
+from haros_arch.pipeline import Options, analyse
+from haros_arch.project import load
+
+FIXTURE = Path(__file__).resolve().parent.parent / "fixtures" / "python" / "several_nodes"
+
+
+def _copy(tmp_path: Path) -> Path:
+    shutil.copytree(FIXTURE, tmp_path / "ws")
+    for folder, _dirs, files in os.walk(tmp_path / "ws"):  # old enough to trust the index
+        for name in files:
+            os.utime(os.path.join(folder, name), (1_000_000_000, 1_000_000_000))
+    return tmp_path / "ws" / "project.yaml"
+
+
+def _run(project: Path, cache: Path, env: dict[str, str] | None = None
+         ) -> tuple[str, dict[str, float]]:
+    timings: dict[str, float] = {}
+    model = analyse(load(str(project)), env or {},
+                    Options(cache_dir=str(cache), jobs=1, timings=timings))
+    return json.dumps(model_to_data(model), sort_keys=True), timings
+
+
+def test_a_rerun_with_nothing_changed_is_the_kept_model(tmp_path: Path) -> None:
+    project = _copy(tmp_path)
+    first, timings = _run(project, tmp_path / "cache")
+    assert "Python" in timings
+    again, timings = _run(project, tmp_path / "cache")
+    assert again == first
+    assert set(timings) == {"cache"}  # no stage ran
+    assert len(list((tmp_path / "cache" / "runs").glob("index-*.json"))) == 1
+
+
+def test_a_changed_source_runs_again(tmp_path: Path) -> None:
+    project = _copy(tmp_path)
+    first, _ = _run(project, tmp_path / "cache")
+    source = project.parent / "src" / "pair_nodes" / "pair_nodes" / "pair.py"
+    source.write_text(source.read_text().replace("'reading'", "'readings'"))
+    os.utime(source, (1_000_000_000, 1_000_000_000))  # same time as before: content counts
+    changed, timings = _run(project, tmp_path / "cache")
+    assert "Python" in timings and changed != first
+    assert "readings" in changed and "readings" not in first
+
+
+def test_a_new_file_the_project_and_the_environment_are_inputs(tmp_path: Path) -> None:
+    project = _copy(tmp_path)
+    _run(project, tmp_path / "cache")
+    (project.parent / "src" / "pair_nodes" / "notes.txt").write_text("x")
+    _, timings = _run(project, tmp_path / "cache")
+    assert "scan" in timings  # a file more: run again (a glob or a launch file may see it)
+    _, timings = _run(project, tmp_path / "cache", {"ROBOT": "r2"})
+    assert "scan" in timings
+    project.write_text(project.read_text().replace("project: several_nodes", "project: other"))
+    other, timings = _run(project, tmp_path / "cache", {"ROBOT": "r2"})
+    assert "scan" in timings and '"project": "other"' in other
+
+
+def test_an_entry_that_does_not_read_back_is_a_miss(tmp_path: Path) -> None:
+    project = _copy(tmp_path)
+    first, _ = _run(project, tmp_path / "cache")
+    for entry in (tmp_path / "cache" / "runs").glob("*.json"):
+        if not entry.name.startswith("index-"):
+            entry.write_text('{"model": {"configurations": 7}}')
+    again, timings = _run(project, tmp_path / "cache")
+    assert again == first and "scan" in timings
+
+
+def test_only_the_newest_runs_are_kept(tmp_path: Path, monkeypatch) -> None:
+    monkeypatch.setattr(runcache, "KEEP", 2)
+    project = _copy(tmp_path)
+    for robot in ("a", "b", "c", "d"):
+        _run(project, tmp_path / "cache", {"ROBOT": robot})
+    entries = [e for e in (tmp_path / "cache" / "runs").glob("*.json")
+               if not e.name.startswith("index-")]
+    assert len(entries) == 2
+
+
+def test_the_findings_of_a_kept_run_are_kept_with_it(tmp_path: Path, monkeypatch) -> None:
+    from haros_arch.query import catalogue
+    from haros_arch.query.command import check
+
+    project = _copy(tmp_path)
+    options = Options(cache_dir=str(tmp_path / "cache"), jobs=1)
+    spec = load(str(project))
+    first = check(analyse(spec, {}, options), spec).findings
+    assert first
+    calls: list[int] = []
+    real = catalogue._run_catalogue
+
+    def counted(*args, **kwargs):
+        calls.append(1)
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(catalogue, "_run_catalogue", counted)
+    again = analyse(spec, {}, options)
+    assert check(again, spec).findings == first and calls == []  # read back
+    subset = catalogue.run_catalogue(again, spec, catalogue.load_catalogue()[:3])
+    assert calls == [1] and len(subset) < len(first)  # other rules: run
+    uncached = analyse(spec, {}, Options(cache_dir=None, jobs=1))
+    assert check(uncached, spec).findings == first and calls == [1, 1]
+
+
+PAPER = FIXTURE.parent.parent / "paper_minimal"
+
+
+def _copy_paper(tmp_path: Path) -> Path:
+    shutil.copytree(PAPER, tmp_path / "paper")
+    for folder, _dirs, files in os.walk(tmp_path / "paper"):
+        for name in files:
+            os.utime(os.path.join(folder, name), (1_000_000_000, 1_000_000_000))
+    return tmp_path / "paper" / "project.yaml"
+
+
+def test_a_cpp_change_that_extracts_the_same_reuses_the_rest(tmp_path: Path) -> None:
+    project = _copy_paper(tmp_path)
+    first, _ = _run(project, tmp_path / "cache")
+    source = project.parent / "src" / "example" / "src" / "active.cpp"
+    source.write_text(source.read_text() + "\n// a comment\n")
+    again, timings = _run(project, tmp_path / "cache")
+    assert again == first
+    assert "C++" in timings and "launch" not in timings and "graph" not in timings
+    again, timings = _run(project, tmp_path / "cache")  # kept under the new key too
+    assert again == first and set(timings) == {"cache"}
+    aliases = [e for e in (tmp_path / "cache" / "runs").glob("*.json")
+               if "same_as" in e.read_text()]
+    assert len(aliases) == 1  # the new key names the first run's entry (and findings)
+
+
+def test_a_cpp_change_that_extracts_otherwise_runs_again(tmp_path: Path) -> None:
+    project = _copy_paper(tmp_path)
+    first, _ = _run(project, tmp_path / "cache")
+    source = project.parent / "src" / "example" / "src" / "active.cpp"
+    source.write_text(source.read_text().replace('"monologue"', '"soliloquy"'))
+    changed, timings = _run(project, tmp_path / "cache")
+    assert "graph" in timings and "soliloquy" in changed and "soliloquy" not in first
+
+
+def test_the_example_gives_one_model_and_findings_cold_cached_and_touched(tmp_path: Path
+                                                                           ) -> None:
+    from haros_arch.query.command import document
+
+    shutil.copytree(FIXTURE.parent.parent.parent / "examples", tmp_path / "examples")
+    project = tmp_path / "examples" / "project.yaml"
+    spec = load(str(project))
+    cache = Options(cache_dir=str(tmp_path / "cache"), jobs=1)
+    documents = [document(analyse(spec, {}, Options(cache_dir=None, jobs=1)), spec)]
+    documents += [document(analyse(spec, {}, cache), spec) for _ in range(2)]
+    source = next((tmp_path / "examples").rglob("*.cpp"))
+    source.write_text(source.read_text() + "\n// touched\n")
+    documents.append(document(analyse(spec, {}, cache), spec))
+    texts = [json.dumps(d, sort_keys=True) for d in documents]
+    assert texts[0] == texts[1] == texts[2] == texts[3]
+    assert '"findings": []' not in texts[0]
+
+
+def test_the_shells_bookkeeping_variables_are_not_inputs(tmp_path: Path) -> None:
+    project = _copy(tmp_path)
+    _run(project, tmp_path / "cache", {"_": "/usr/bin/a", "OLDPWD": "/x", "SHLVL": "1"})
+    _, timings = _run(project, tmp_path / "cache", {"_": "/usr/bin/b", "SHLVL": "2"})
+    assert set(timings) == {"cache"}
+
+
+def test_check_verbose_says_the_queries_did_not_run(tmp_path: Path, capsys) -> None:
+    from haros_arch.cli import main
+
+    project = _copy(tmp_path)
+    for _ in range(2):
+        main(["check", str(project), "-v", "--fail-on", "never"])
+    out = capsys.readouterr().out
+    assert "queries: not run (the findings of this unchanged run were kept)" in out
+    assert out.count("queries: ") == 2  # the first run timed them
+
+
+def test_a_file_larger_than_the_readers_read_counts_by_size_and_time(tmp_path: Path,
+                                                                      monkeypatch) -> None:
+    def digest_of(path: Path) -> str:
+        snap = runcache.Snapshot(str(tmp_path / "index.json"))
+        snap.path(str(path))
+        snap.save()
+        return snap.digest()
+
+    monkeypatch.setattr(runcache, "MAX_FILE_BYTES", 10)
+    big, small = tmp_path / "big.bag", tmp_path / "small.yaml"
+    big.write_bytes(b"0123456789abcdef")
+    small.write_bytes(b"0123")
+    for path in (big, small):
+        os.utime(path, (1_000_000_000, 1_000_000_000))
+    before = digest_of(big), digest_of(small)
+    for path in (big, small):  # touched: the same bytes, a later time
+        os.utime(path, (1_000_000_001, 1_000_000_001))
+    assert digest_of(small) == before[1]  # read again: the same content
+    assert digest_of(big) != before[0]  # not read: its time counts
+
+
+def test_a_model_that_does_not_read_back_whole_is_not_kept(tmp_path: Path,
+                                                           monkeypatch) -> None:
+    from haros_arch.model import load as model_load
+
+    project = _copy(tmp_path)
+    real = model_load.from_data
+
+    def lossy(data):
+        model = real(data)
+        model.packages = model.packages[:-1]
+        return model
+
+    monkeypatch.setattr(runcache, "from_data", lossy)
+    first, _ = _run(project, tmp_path / "cache")
+    again, timings = _run(project, tmp_path / "cache")
+    assert again == first and "scan" in timings  # ran again: nothing was kept
