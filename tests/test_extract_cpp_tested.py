@@ -40,6 +40,7 @@ def test_ros1_reads(ros1: dict[str, bool]) -> None:
         "~angular": True,                # argc > 1 && (ros::param::get(..))
         "~frame": True,                  # if (!nh.hasParam(..))
         "~ready": True,                  # while (!nh.getParam(..))
+        "~min_speed": True,              # if (nh.getParam(..) == true)
         "~plain": False,                 # result dropped
         "~kept": False,                  # held in a variable never tested
         "~enabled": False,               # param<bool>(name, default): the value

@@ -103,11 +103,19 @@ class TestedCalls:
 
 
 def _unwrap(expr: Cursor) -> Cursor | None:
-    """The call (or variable reference) an expression is, through implicit conversions
-    and parentheses."""
+    """The call (or variable reference) an expression is, through implicit conversions,
+    parentheses and a comparison with ``true`` / ``false`` (kobuki's
+    ``if (nh.getParam(..) == true)``)."""
     for _ in range(8):
         if expr.kind in (CursorKind.CALL_EXPR, CursorKind.DECL_REF_EXPR):
             return expr
+        if expr.kind == CursorKind.BINARY_OPERATOR:
+            sides = list(expr.get_children())
+            others = [s for s in sides if _strip(s).kind != CursorKind.CXX_BOOL_LITERAL_EXPR]
+            if len(sides) != 2 or len(others) != 1:
+                return None
+            expr = others[0]
+            continue
         if expr.kind not in _WRAPPERS:
             return None
         children = list(expr.get_children())
@@ -116,3 +124,13 @@ def _unwrap(expr: Cursor) -> Cursor | None:
             return expr if expr.kind == CursorKind.UNEXPOSED_EXPR and children else None
         expr = children[0]
     return None
+
+
+def _strip(expr: Cursor) -> Cursor:
+    """``expr`` through implicit conversions and parentheses."""
+    while expr.kind in _WRAPPERS:
+        children = list(expr.get_children())
+        if len(children) != 1:
+            break
+        expr = children[0]
+    return expr
