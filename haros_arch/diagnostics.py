@@ -86,8 +86,9 @@ CATALOGUE: dict[str, Entry] = {
         "Python / INI, so its entry points are unknown."),
     "PYSETUP_DYNAMIC": Entry(
         "info", "{detail} in setup.py is computed in a way not evaluated statically",
-        "Only literals, module-level names bound to literals, '+', '%', f-strings and "
-        "str.format are evaluated; an entry point built otherwise is not found."),
+        "setup.py goes through the safe evaluator (literals, module-level names, "
+        "operators, f-strings, str methods, os.path, glob inside the package) under a "
+        "work bound; an entry point built otherwise, or after the bound, is not found."),
     "PYSETUP_MODULE_MISSING": Entry(
         "warning", "module {module} of entry point {name} not found in the package",
         "A console_scripts entry point names a module with no .py file (or package "

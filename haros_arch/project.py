@@ -16,6 +16,7 @@ from typing import Any
 import yaml
 from yaml.nodes import MappingNode, Node, ScalarNode, SequenceNode
 
+from . import safe_yaml
 from .files import read_text
 from .model.diagnostic import SEVERITY_RANK
 from .model.location import Location
@@ -156,11 +157,14 @@ def load(path: str) -> Project:
     if text is None:
         raise ProjectError(path, 0, 0, problems[0].message if problems else "cannot read")
     try:
-        document = yaml.compose(text, Loader=yaml.SafeLoader)
+        document = safe_yaml.compose(text)  # bounded: nesting, aliases, flow brackets
     except yaml.MarkedYAMLError as err:
         mark = err.problem_mark or err.context_mark
         line, col = (mark.line + 1, mark.column + 1) if mark else (0, 0)
         raise ProjectError(path, line, col, f"invalid YAML: {err.problem or err}") from None
+    except safe_yaml.YAMLLimit as err:
+        raise ProjectError(path, 0, 0, f"the YAML is nested too deeply or too large to be a "
+                                       f"project file ({err})") from None
     except (yaml.YAMLError, ValueError) as err:  # ValueError: "%YAML 99999...9"
         raise ProjectError(path, 0, 0, f"invalid YAML: {err}") from None
     except RecursionError:

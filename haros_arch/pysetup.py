@@ -1,9 +1,11 @@
 """ament_python packages: ``console_scripts`` entry points of setup.py / setup.cfg.
 
-setup.py is read with ``ast`` and never run: module-level assignments of literals
-(``package_name = 'demo'``) are followed, and strings built with ``+``, ``%``,
-f-strings and plain ``str.format`` are computed by our own evaluator; anything else
-is unknown and reported. Each entry point ``name = pkg.module:main`` becomes
+setup.py is read with ``ast`` and never run: its module-level statements go through the
+one safe evaluator (``evaluate.module.run_module``) with setup.py's table of functions
+(``setup_functions``: builtins, ``os.path`` on text, ``glob`` inside the package), so
+``package_name = 'demo'``, ``+``, ``%``, f-strings, ``str.format`` and
+``data_files.append(...)`` are followed; anything else is unknown and reported. Each
+entry point ``name = pkg.module:main`` becomes
 ``Node(executable=name, kind="script", language="python", sources=[pkg/module.py])``.
 """
 
@@ -11,26 +13,24 @@ from __future__ import annotations
 
 import ast
 import configparser
+import glob
 import os
+import posixpath
 import re
 from dataclasses import dataclass
+from typing import Any
 
 from . import diagnostics as diag
 from .diagnostics import Diagnostic
-from .evaluate import budget, syntax
+from .evaluate import syntax
+from .evaluate.module import Module, run_module
+from .evaluate.python import BUILTINS
 from .files import read_text
 from .model.location import Location
 from .model.source import Node, Package
 from .workspace import Workspace
 
 _ENTRY = re.compile(r"^\s*([\w.\-]+)\s*=\s*([\w.]+)\s*(?::\s*([\w.]+))?\s*(\[.*\])?\s*$")
-
-
-class _Unknown:
-    pass
-
-
-UNKNOWN = _Unknown()
 
 
 @dataclass
@@ -89,6 +89,58 @@ def parse_entry(text: str) -> tuple[str, str] | None:
 
 
 # -- setup.py ----------------------------------------------------------------------
+SETUP_CALLS = ("setup", "setuptools.setup", "distutils.core.setup")
+
+
+def _text_args(*args: Any) -> list[str]:
+    if not all(isinstance(a, str) for a in args):
+        raise TypeError("a path of values not known statically")
+    return list(args)
+
+
+def setup_functions(root: str) -> dict[str, Any]:
+    """What setup.py may call for us: safe builtins, ``os.path`` on text, ``glob`` from the
+    package folder and inside it (nothing else is called, nothing is run)."""
+
+    def exists(test: Any) -> Any:
+        def call(path: Any) -> bool:
+            (text,) = _text_args(path)
+            if os.path.isabs(text) or ".." in text.split("/"):
+                raise ValueError("only paths inside the package are looked at")
+            return bool(test(os.path.join(root, text)))
+        return call
+
+    def globbed(pattern: Any, recursive: bool = False) -> list[str]:
+        (text,) = _text_args(pattern)
+        if os.path.isabs(text) or ".." in text.split("/"):
+            raise ValueError("glob outside the package is not run")
+        out: list[str] = []
+        for match in glob.iglob(text, root_dir=root, recursive=recursive is True):
+            out.append(match.replace(os.sep, "/"))
+            if len(out) > MAX_GLOB:
+                raise OverflowError(f"glob gives more than {MAX_GLOB} files")
+        return sorted(out)
+
+    join = lambda *a: posixpath.join(*_text_args(*a))  # noqa: E731
+    table: dict[str, Any] = {
+        **BUILTINS, "os.path.join": join, "posixpath.join": join,
+        "os.path.dirname": lambda p: posixpath.dirname(*_text_args(p)),
+        "os.path.basename": lambda p: posixpath.basename(*_text_args(p)),
+        "os.path.isfile": exists(os.path.isfile), "os.path.isdir": exists(os.path.isdir),
+        "glob.glob": globbed,
+    }
+    return table
+
+
+MAX_GLOB = 2_000
+
+
+def setup_module(tree: ast.Module, root: str) -> Module:
+    """setup.py's module-level names, run over known values only, and its ``setup()`` calls
+    (collected, never run)."""
+    return run_module(tree, setup_functions(root), calls=SETUP_CALLS)
+
+
 def _from_setup_py(path: str, workspace: Workspace,
                    found: list[Diagnostic]) -> tuple[list[EntryPoint], dict[str, str]]:
     text, problems = read_text(path, workspace.location(path))
@@ -97,30 +149,34 @@ def _from_setup_py(path: str, workspace: Workspace,
         return [], {}
     try:
         tree = syntax.parse(text, path)
-    except (SyntaxError, ValueError, RecursionError) as err:
+    except (SyntaxError, ValueError, RecursionError, MemoryError) as err:
         line = getattr(err, "lineno", 0) or 0
         column = getattr(err, "offset", 0) or 0
         found.append(diag.make("PYSETUP_SYNTAX", workspace.location(path, line, column),
                                detail=getattr(err, "msg", str(err))))
         return [], {}
-    names: dict[str, object] = {}
-    assigned: dict[str, ast.expr] = {}  # module-level name -> its expression
-    call: ast.Call | None = None
-    for statement in tree.body:
-        if isinstance(statement, ast.Assign) and len(statement.targets) == 1 and isinstance(
-                statement.targets[0], ast.Name):
-            names[statement.targets[0].id] = _value(statement.value, names)
-            assigned[statement.targets[0].id] = statement.value
-        for node in ast.walk(statement):
-            if isinstance(node, ast.Call) and _callee(node) == "setup":
-                call = node
-    if call is None:
+    module = setup_module(tree, os.path.dirname(path))
+    entries, package_dir = _from_setup_call(module, tree, path, workspace, found)
+    if module.limited is not None:  # what came after the bound is unknown: said once
+        unknown, node = module.limited
+        found.append(diag.make("PYSETUP_DYNAMIC", workspace.location(
+            path, getattr(node, "lineno", 0), getattr(node, "col_offset", -1) + 1),
+            detail=f"setup.py ({unknown.reason})"))
+    return entries, package_dir
+
+
+def _from_setup_call(module: Module, tree: ast.Module, path: str, workspace: Workspace,
+                     found: list[Diagnostic]) -> tuple[list[EntryPoint], dict[str, str]]:
+    if not module.calls:
         return [], {}
+    call = module.calls[-1]
+    assigned = {s.targets[0].id: s.value for s in tree.body if isinstance(s, ast.Assign)
+                and len(s.targets) == 1 and isinstance(s.targets[0], ast.Name)}
     entries: list[EntryPoint] = []
     package_dir: dict[str, str] = {}
     for keyword in call.keywords:
         if keyword.arg == "package_dir":
-            value = _value(keyword.value, names)
+            value = module.value(keyword.value)
             if isinstance(value, dict):
                 package_dir = {k: v for k, v in value.items()
                                if isinstance(k, str) and isinstance(v, str)}
@@ -129,20 +185,20 @@ def _from_setup_py(path: str, workspace: Workspace,
         node = keyword.value
         if isinstance(node, ast.Name) and node.id in assigned:
             node = assigned[node.id]  # entry_points=ENTRY_POINTS defined above
-        entries.extend(_console_scripts(node, names, path, workspace, found))
+        entries.extend(_console_scripts(node, module, path, workspace, found))
     return entries, package_dir
 
 
-def _console_scripts(node: ast.expr, names: dict[str, object], path: str,
+def _console_scripts(node: ast.expr, module: Module, path: str,
                      workspace: Workspace, found: list[Diagnostic]) -> list[EntryPoint]:
     where = workspace.location(path, node.lineno, node.col_offset + 1)
     items: list[ast.expr] = []
     if isinstance(node, ast.Dict):
         for key, value in zip(node.keys, node.values, strict=False):
-            if key is not None and _value(key, names) == "console_scripts":
+            if key is not None and module.value(key) == "console_scripts":
                 items = list(value.elts) if isinstance(value, (ast.List, ast.Tuple)) else [value]
     else:
-        computed = _value(node, names)
+        computed = module.value(node)
         if isinstance(computed, dict):
             strings = computed.get("console_scripts", [])
             return [EntryPoint(*parsed, where) for s in strings
@@ -151,7 +207,7 @@ def _console_scripts(node: ast.expr, names: dict[str, object], path: str,
         return []
     entries = []
     for item in items:
-        text = _value(item, names)
+        text = module.value(item)
         item_where = workspace.location(path, item.lineno, item.col_offset + 1)
         parsed = parse_entry(text) if isinstance(text, str) else None
         if parsed is None:
@@ -159,73 +215,6 @@ def _console_scripts(node: ast.expr, names: dict[str, object], path: str,
             continue
         entries.append(EntryPoint(parsed[0], parsed[1], item_where))
     return entries
-
-
-def _callee(call: ast.Call) -> str | None:
-    if isinstance(call.func, ast.Name):
-        return call.func.id
-    if isinstance(call.func, ast.Attribute):
-        return call.func.attr
-    return None
-
-
-def _value(node: ast.expr, names: dict[str, object]) -> object:
-    """A literal value computed without running anything, or UNKNOWN."""
-    if isinstance(node, ast.Constant):
-        return node.value
-    if isinstance(node, ast.Name):
-        return names.get(node.id, UNKNOWN)
-    if isinstance(node, (ast.List, ast.Tuple)):
-        return [_value(e, names) for e in node.elts]
-    if isinstance(node, ast.Dict):
-        out = {}
-        for key, value in zip(node.keys, node.values, strict=False):
-            k = _value(key, names) if key is not None else UNKNOWN
-            if not isinstance(k, str):
-                return UNKNOWN
-            out[k] = _value(value, names)
-        return out
-    if isinstance(node, ast.JoinedStr):
-        parts = []
-        for part in node.values:
-            piece = _value(part.value, names) if isinstance(part, ast.FormattedValue) and (
-                part.format_spec is None and part.conversion == -1) else _value(part, names)
-            if not isinstance(piece, str):
-                return UNKNOWN
-            parts.append(piece)
-        return "".join(parts)
-    if isinstance(node, ast.BinOp):
-        left, right = _value(node.left, names), _value(node.right, names)
-        if isinstance(node.op, ast.Add) and isinstance(left, str) and isinstance(right, str):
-            if len(left) + len(right) > budget.MAX_LENGTH:  # a = a + a, line after line
-                return UNKNOWN
-            return left + right
-        if isinstance(node.op, ast.Mod) and isinstance(left, str) and re.fullmatch(
-                r"(?:[^%]|%%|%s)*", left):
-            operands = tuple(right) if isinstance(right, list) else (right,)
-            if all(isinstance(a, str) for a in operands) and left.count("%s") == len(operands):
-                return left % operands
-    if (isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute)
-            and node.func.attr == "format" and not node.keywords):
-        template = _value(node.func.value, names)
-        args = [_value(a, names) for a in node.args]
-        if isinstance(template, str):
-            formatted = format_positional(template, args)
-            return UNKNOWN if formatted is None else formatted
-    return UNKNOWN
-
-
-def format_positional(template: str, args: list[object]) -> str | None:
-    """``template.format(*args)`` when every field is positional (``{}``, ``{0}``) and
-    every argument a known string; None otherwise (never a format spec or attribute,
-    so nothing but string building happens)."""
-    if not all(isinstance(a, str) for a in args) or not all(
-            re.fullmatch(r"\d*", field) for field in re.findall(r"\{([^{}]*)\}", template)):
-        return None
-    try:
-        return template.format(*args)
-    except (IndexError, ValueError):
-        return None
 
 
 # -- setup.cfg ---------------------------------------------------------------------

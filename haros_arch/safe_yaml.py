@@ -9,6 +9,7 @@ through ``load`` / ``compose``; a document past a bound raises ``YAMLLimit``, a
 
 from __future__ import annotations
 
+import re
 from typing import Any
 
 import yaml
@@ -39,8 +40,32 @@ def compose(text: str, loader: type[yaml.SafeLoader] = yaml.SafeLoader) -> yaml.
     return node
 
 
+# a lone plain scalar (a launch parameter's text: ``1``, ``true``, ``/map``, ``0.5``, ``~``):
+# resolved and constructed as the full reader would, without its scanner and parser (a
+# file with tens of thousands of parameter values read each through those took minutes)
+_PLAIN = re.compile(r"[A-Za-z0-9_.+/~][A-Za-z0-9_.+/~-]*|-[A-Za-z0-9_.+/~][A-Za-z0-9_.+/~-]*")
+_SCALARS = yaml.SafeLoader("")
+
+
+def _plain_scalar(text: str) -> tuple[bool, Any]:
+    if not _PLAIN.fullmatch(text) or text.startswith(("---", "...")):
+        return False, None
+    tag = _SCALARS.resolve(yaml.ScalarNode, text, (True, False))
+    construct = yaml.SafeLoader.yaml_constructors.get(tag)
+    if construct is None:
+        return False, None
+    try:
+        return True, construct(_SCALARS, yaml.ScalarNode(tag, text))
+    except ValueError as err:  # an integer of more than 4300 digits
+        raise YAMLLimit(f"YAML cannot be read: {err}") from None
+
+
 def load(text: str, loader: type[yaml.SafeLoader] = yaml.SafeLoader) -> Any:
     """``yaml.safe_load`` with the bounds (one document)."""
+    if loader is yaml.SafeLoader:
+        done, value = _plain_scalar(text)
+        if done:
+            return value
     _check_flow_depth(text)
     reader = loader(text)
     try:

@@ -27,8 +27,6 @@ executables and scripts of the package's CMakeLists.txt or setup.py entry points
 
 from __future__ import annotations
 
-import ast
-import glob
 import os
 import posixpath
 import re
@@ -40,6 +38,7 @@ from .cmake import interpret
 from .cmake import parse_package as cmake_nodes
 from .cmake.interpreter import BINARY_ROOT
 from .cmake.targets import Install
+from .evaluate import syntax
 from .files import read_text
 from .model.source import Package
 from .workspace import Workspace
@@ -257,38 +256,28 @@ def _directory(folder: str, base: str, options: _Options,
 
 
 # -- ament_python setup.py ----------------------------------------------------------------
-class _Unknown:
-    pass
-
-
-UNKNOWN = _Unknown()
-
-
 def _from_setup_py(package: Package, workspace: Workspace, path: str,
                    found: dict[str, str]) -> None:
     text, _ = read_text(path, workspace.location(path))
     if text is None:
         return
     try:
-        tree = ast.parse(text, filename=path)
-    except (SyntaxError, ValueError, RecursionError):
+        tree = syntax.parse(text, path)
+    except (SyntaxError, ValueError, RecursionError, MemoryError):
         return  # pysetup reports it
-    reader = _SetupReader(package.root)
-    data_files: object = UNKNOWN
-    for statement in tree.body:
-        reader.statement(statement)
-        for node in ast.walk(statement):
-            if isinstance(node, ast.Call) and _dotted(node.func) in ("setup",
-                                                                     "setuptools.setup"):
-                for keyword in node.keywords:
-                    if keyword.arg == "data_files":
-                        data_files = reader.value(keyword.value)
-    if not isinstance(data_files, list):
+    module = pysetup.setup_module(tree, package.root)
+    data_files: object = None
+    for call in module.calls:
+        for keyword in call.keywords:
+            if keyword.arg == "data_files":
+                data_files = module.value(keyword.value)
+    if not isinstance(data_files, (list, tuple)):
         return
     root = os.path.realpath(package.root)
     for entry in data_files:
-        if not (isinstance(entry, list) and len(entry) == 2 and isinstance(entry[1], list)):
-            continue
+        if not (isinstance(entry, (list, tuple)) and len(entry) == 2
+                and isinstance(entry[0], str) and isinstance(entry[1], (list, tuple))):
+            continue  # a destination or a file list not known statically
         sub = _share_sub(entry[0], package.name)
         if sub is None:
             continue
@@ -299,161 +288,3 @@ def _from_setup_py(package: Package, workspace: Workspace, path: str,
             real = os.path.realpath(source)
             if real.startswith(root + os.sep) and os.path.isfile(source):
                 found[posixpath.normpath(posixpath.join(sub, os.path.basename(source)))] = source
-
-
-def _str_method(text: str, method: str, args: list[object], keywords: bool) -> object:
-    """``'sep'.join([...])`` and positional ``'...{}'.format(...)`` over known strings."""
-    if method == "join" and len(args) == 1 and isinstance(args[0], list) and all(
-            isinstance(a, str) for a in args[0]):
-        return text.join(str(a) for a in args[0])
-    if method == "format" and not keywords:
-        formatted = pysetup.format_positional(text, args)
-        return UNKNOWN if formatted is None else formatted
-    return UNKNOWN
-
-
-def _dotted(node: ast.expr) -> str | None:
-    if isinstance(node, ast.Name):
-        return node.id
-    if isinstance(node, ast.Attribute):
-        owner = _dotted(node.value)
-        return f"{owner}.{node.attr}" if owner else None
-    return None
-
-
-class _SetupReader:
-    """Module-level names of a setup.py and the values of expressions over them: literals,
-    ``+``, ``%s`` / f-string / ``format`` text, ``os.path`` helpers, ``glob`` over the
-    package folder, ``sorted`` / ``list``, and one-``for`` comprehensions."""
-
-    def __init__(self, root: str) -> None:
-        self.root = root
-        self.names: dict[str, object] = {}
-        self.aliases: dict[str, str] = {}  # local name -> dotted origin (imports)
-
-    def statement(self, node: ast.stmt) -> None:
-        if isinstance(node, ast.Import):
-            for alias in node.names:
-                self.aliases[alias.asname or alias.name.split(".")[0]] = (
-                    alias.name if alias.asname else alias.name.split(".")[0])
-        elif isinstance(node, ast.ImportFrom) and node.module:
-            for alias in node.names:
-                self.aliases[alias.asname or alias.name] = f"{node.module}.{alias.name}"
-        elif isinstance(node, ast.Assign) and len(node.targets) == 1 and isinstance(
-                node.targets[0], ast.Name):
-            self.names[node.targets[0].id] = self.value(node.value)
-        elif isinstance(node, ast.AugAssign) and isinstance(node.target, ast.Name) and (
-                isinstance(node.op, ast.Add)):
-            self.names[node.target.id] = self._add(self.names.get(node.target.id, UNKNOWN),
-                                                   self.value(node.value))
-        elif isinstance(node, ast.Expr) and isinstance(node.value, ast.Call):
-            call = node.value
-            if isinstance(call.func, ast.Attribute) and isinstance(call.func.value, ast.Name):
-                owner = self.names.get(call.func.value.id)
-                if isinstance(owner, list) and len(call.args) == 1:
-                    item = self.value(call.args[0])
-                    if call.func.attr == "append":
-                        owner.append(item)
-                    elif call.func.attr == "extend":
-                        owner.extend(item if isinstance(item, list) else [UNKNOWN])
-
-    def value(self, node: ast.expr, env: dict[str, object] | None = None) -> object:
-        env = env or {}
-        if isinstance(node, ast.Constant):
-            return node.value
-        if isinstance(node, ast.Name):
-            return env.get(node.id, self.names.get(node.id, UNKNOWN))
-        if isinstance(node, (ast.List, ast.Tuple)):
-            return [self.value(e, env) for e in node.elts]
-        if isinstance(node, ast.BinOp):
-            left, right = self.value(node.left, env), self.value(node.right, env)
-            if isinstance(node.op, ast.Add):
-                return self._add(left, right)
-            if isinstance(node.op, ast.Mod) and isinstance(left, str):
-                operands = right if isinstance(right, list) else [right]
-                if all(isinstance(o, str) for o in operands) and re.fullmatch(
-                        r"(?:[^%]|%%|%s)*", left) and left.count("%s") == len(operands):
-                    return left % tuple(operands)
-            return UNKNOWN
-        if isinstance(node, ast.JoinedStr):
-            parts = []
-            for part in node.values:
-                piece = (self.value(part.value, env) if isinstance(part, ast.FormattedValue)
-                         and part.format_spec is None and part.conversion == -1
-                         else self.value(part, env))
-                if not isinstance(piece, str):
-                    return UNKNOWN
-                parts.append(piece)
-            return "".join(parts)
-        if isinstance(node, ast.ListComp) and len(node.generators) == 1:
-            return self._comprehension(node, env)
-        if isinstance(node, ast.Call):
-            return self._call(node, env)
-        return UNKNOWN
-
-    @staticmethod
-    def _add(left: object, right: object) -> object:
-        if isinstance(left, str) and isinstance(right, str):
-            return left + right
-        if isinstance(left, list) and isinstance(right, list):
-            return left + right
-        return UNKNOWN
-
-    def _comprehension(self, node: ast.ListComp, env: dict[str, object]) -> object:
-        generator = node.generators[0]
-        items = self.value(generator.iter, env)
-        if not isinstance(items, list) or not isinstance(generator.target, ast.Name) or (
-                generator.is_async) or len(items) > MAX_FILES:
-            return UNKNOWN
-        out = []
-        for item in items:
-            inner = {**env, generator.target.id: item}
-            tests = [self.value(test, inner) for test in generator.ifs]
-            if any(not isinstance(t, bool) for t in tests):
-                return UNKNOWN
-            if all(tests):
-                out.append(self.value(node.elt, inner))
-        return out
-
-    def _call(self, node: ast.Call, env: dict[str, object]) -> object:
-        args = [self.value(a, env) for a in node.args]
-        if isinstance(node.func, ast.Attribute) and node.func.attr in ("format", "join"):
-            text = self.value(node.func.value, env)
-            if isinstance(text, str):
-                return _str_method(text, node.func.attr, args, bool(node.keywords))
-        name = _dotted(node.func)
-        if name is None:
-            return UNKNOWN
-        head, _, rest = name.partition(".")
-        name = f"{self.aliases.get(head, head)}.{rest}" if rest else self.aliases.get(head, head)
-        keywords = {k.arg: self.value(k.value, env) for k in node.keywords if k.arg}
-        texts = [a for a in args if isinstance(a, str)]
-        if name in ("os.path.join", "posixpath.join") and args and len(texts) == len(args):
-            return posixpath.join(*texts)
-        if name in ("os.path.dirname", "os.path.basename") and len(args) == 1 and isinstance(
-                args[0], str):
-            return (posixpath.dirname if name.endswith("dirname") else posixpath.basename)(
-                args[0])
-        if name in ("os.path.isfile", "os.path.isdir") and len(args) == 1 and isinstance(
-                args[0], str) and not os.path.isabs(args[0]):
-            test = os.path.isfile if name.endswith("isfile") else os.path.isdir
-            return test(os.path.join(self.root, args[0]))
-        if name in ("glob.glob", "glob") and len(args) == 1 and isinstance(args[0], str):
-            return self._glob(args[0], keywords.get("recursive") is True)
-        if name in ("sorted", "list") and len(args) == 1 and isinstance(args[0], list):
-            strings = [a for a in args[0] if isinstance(a, str)]
-            if name == "sorted":
-                return sorted(strings) if len(strings) == len(args[0]) else UNKNOWN
-            return list(args[0])
-        return UNKNOWN
-
-    def _glob(self, pattern: str, recursive: bool) -> object:
-        """``glob`` as setup.py runs it, from the package folder; inside it only."""
-        if os.path.isabs(pattern) or ".." in pattern.split("/"):
-            return UNKNOWN
-        out: list[str] = []
-        for match in glob.iglob(pattern, root_dir=self.root, recursive=recursive):
-            out.append(match.replace(os.sep, "/"))
-            if len(out) > MAX_FILES:
-                return UNKNOWN
-        return list(sorted(out))

@@ -119,12 +119,17 @@ class _Workspace:
         from haros_arch.workspace import scan
 
         self.root = Path(tempfile.mkdtemp(prefix="haros-arch-fuzz-"))
-        for name, tool in (("fz1", "catkin"), ("fz2", "ament_cmake")):
+        for name, tool in (("fz1", "catkin"), ("fz2", "ament_cmake"),
+                           ("fz3", "ament_python")):
             folder = self.root / "src" / name
             (folder / "launch").mkdir(parents=True)
             (folder / "config").mkdir()
             (folder / "package.xml").write_text(PACKAGE_XML.format(name=name, tool=tool))
-            (folder / "CMakeLists.txt").write_text(f"project({name})\n")
+            if tool == "ament_python":
+                (folder / name).mkdir()
+                (folder / name / "__init__.py").write_text("")
+            else:
+                (folder / "CMakeLists.txt").write_text(f"project({name})\n")
         self.workspace = scan([str(self.root / "src")], {"ROS_DISTRO": "noetic"})
 
     def write(self, rel: str, data: bytes) -> str:
@@ -194,6 +199,28 @@ def _rosparam(data: bytes) -> None:
                       b'<param from="$(find-pkg-share fz2)/config/params.yaml"/>'
                       b'</node></launch>')
     load(launch, ws.workspace, {}, {"ROS_DISTRO": "humble"})
+
+
+def _setup_py(data: bytes) -> None:
+    """setup.py of an ament_python package: entry points and the share map (data_files),
+    both through the one safe evaluator."""
+    from haros_arch import pysetup
+    from haros_arch.share import share_map
+
+    ws = workspace()
+    ws.write("fz3/setup.py", data)
+    package = ws.workspace.packages["fz3"]
+    ws.workspace.share_maps.pop("fz3", None)  # read again for every example
+    pysetup.parse_package(package, ws.workspace)
+    share_map(package, ws.workspace)
+
+
+def _python_node(data: bytes) -> None:
+    """A Python node's source (rospy / rclpy), read by the Python node reader."""
+    from haros_arch.extract.python import extract_python
+
+    ws = workspace()
+    extract_python([ws.write("fz3/fz3/node.py", data)], ws.workspace, package="fz3")
 
 
 _MODEL_JSON: str | None = None
@@ -325,6 +352,9 @@ ROS2_TOKENS = [*EVAL, '<let name="y" value="$(var x)$(var x)"/>', '<include file
                '<node pkg="fz2" exec="n" name="n">', 'OpaqueFunction', 'lambda',
                'LaunchConfiguration(', 'DeclareLaunchArgument(', 'for i in ', 'while ', 'def f(',
                'import os', 'IfCondition(', 'PythonExpression([', '**']
+PYTHON_TOKENS = [*EVAL[1:], "glob(", "os.path.join(", "data_files.append(", "+= [", "f'{",
+                 ":{10**9}}'", "rospy.Publisher(", "create_publisher(", "for f in ",
+                 "[x for x in ", "'%s' % ", ".format(", "import glob", "package_name"]
 YAML_TOKENS = ["&a ", "*a", "<<: *a", "!!binary ", "!!python/object ", "deg(", "rad(", "? ",
                "--- ", "...\n", "\t", "\x7f", "\x0c", "{", "[", ": ", "- ", "'", '"']
 CMAKE_TOKENS = ["${", "}", "set(a ${a} ${a})", "list(APPEND a ${a})", "string(REGEX MATCH ",
@@ -350,6 +380,9 @@ TARGETS: dict[str, Target] = {t.name: t for t in [
            ["**/*_launch.py", "**/*.launch.py"], ROS2_TOKENS),
     Target("rosparam_yaml", _rosparam, ["launch_ros1/**/*.yaml", "launch_ros2/**/config/*.yaml",
                                         "launch_ros2/**/params/*.yaml"], YAML_TOKENS),
+    Target("setup_py", _setup_py, ["**/setup.py"], PYTHON_TOKENS),
+    Target("python_node", _python_node, ["**/scripts/*.py", "**/nodes/*.py",
+                                         "**/src/*/*/*.py"], PYTHON_TOKENS),
     Target("query", _query, [], QUERY_TOKENS, _query_seeds),
     Target("saved_model", _saved_model, ["paper_minimal/expected.json"],
            ['"nodes": ', '"configurations": [', "null", "1e400", '"\\ud800"', "[[[[", "{}"]),

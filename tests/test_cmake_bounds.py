@@ -25,6 +25,11 @@ CASES = {
     "cache doubling": ("set(s " + "x" * 60 + ")\nforeach(i RANGE 60)\n"
                        "  set(s ${s}${s} CACHE STRING \"\" FORCE)\n  set(s ${s}${s})\n"
                        "endforeach()\n", "grew past"),
+    # each elseif test is work: 2,000 of them in a loop of 9,000 ran for minutes
+    "elseif chain in a loop": ("foreach(i RANGE 9000)\nif(FALSE)\n" + "elseif(FALSE)\n" * 2000
+                               + "endif()\nendforeach()\n", "commands evaluated"),
+    "nested ifs in a loop": ("foreach(i RANGE 9000)\n" + "if(TRUE)\n" * 150 + "set(x 1)\n"
+                             + "endif()\n" * 150 + "endforeach()\n", "commands evaluated"),
 }
 
 

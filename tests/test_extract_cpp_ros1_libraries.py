@@ -22,3 +22,16 @@ def test_ros1_helper_libraries(tmp_path):
         ("server", "~set_parameters", "dynamic_reconfigure/Reconfigure"),
         ("subscribe", "scan", "sensor_msgs/LaserScan"),
     ]
+
+
+def test_realtime_publisher(tmp_path):
+    """ROS 1 realtime_tools' RealtimePublisher advertises its topic on the handle it is
+    given, built or initialised later, with its queue and latch."""
+    root = FIXTURES / "cpp/realtime_publisher"
+    result = extract_cpp([str(root / "controller.cpp")], Workspace(root=str(root)),
+                         cache_dir=str(tmp_path))
+    assert [d for d in result.diagnostics if d.code.startswith("CPP_PARSE")] == []
+    assert sorted((c.kind, c.name, c.type, c.queue_size, c.latch) for c in result.calls) == [
+        ("publish", "?/joint_states", "sensor_msgs/JointState", 4, False),
+        ("publish", "?/odom", "nav_msgs/Odometry", 100, True),
+    ]

@@ -195,3 +195,87 @@ def test_nav2_lifecycle_and_std_forms_parse_clean(tmp_path) -> None:
     result = extract_cpp([str(source)], Workspace(root=str(tmp_path)), cache_dir=None)
     assert ("publish", "out") in [(c.kind, c.name) for c in result.calls]
     assert [d.message for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"] == []
+
+
+def test_ros_1_asserts_shared_ptr_null_tokenizer_and_angles_parse(tmp_path) -> None:
+    """Forms of the navigation stack's plugins (base_local_planner, costmap_2d's obstacle
+    layer, rotate_recovery) parse clean, so their calls are not near an error."""
+    (tmp_path / "package.xml").write_text(
+        '<package format="2"><name>p</name><version>1.0.0</version>'
+        "<description>d</description><maintainer email='a@b.c'>m</maintainer>"
+        "<license>BSD</license></package>")
+    source = tmp_path / "a.cpp"
+    source.write_text(
+        "#include <ros/ros.h>\n#include <boost/shared_ptr.hpp>\n"
+        "#include <boost/tokenizer.hpp>\n#include <angles/angles.h>\n#include <cmath>\n"
+        "#include <std_msgs/Empty.h>\n"
+        "struct S { void subscribe(); };\n"
+        "double f(boost::shared_ptr<S> s, std::string text, double a, double b) {\n"
+        "  ROS_ASSERT_MSG(a > 0, \"a is %f\", a);\n"
+        "  if (s != NULL) { s->subscribe(); }\n"
+        "  typedef boost::tokenizer<boost::char_separator<char> > tokenizer;\n"
+        "  boost::char_separator<char> sep(\", \");\n"
+        "  tokenizer tokens(text, sep);\n"
+        "  double sum = 0;\n"
+        "  for (tokenizer::iterator i = tokens.begin(); i != tokens.end(); ++i) {\n"
+        "    sum += i->size(); }\n"
+        "  ros::NodeHandle nh;\n"
+        "  ros::Publisher p = nh.advertise<std_msgs::Empty>(\"out\", 1);\n"
+        "  return sum + std::fabs(angles::shortest_angular_distance(a, b));\n"
+        "}\n")
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    assert [d.message for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"] == []
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "out")]
+
+
+def test_urdf_models_parse_and_initparam_reads_the_description(tmp_path) -> None:
+    """ros_controllers' forms: urdf::parseURDF and its joints and links, and
+    urdf::Model::initParamWithNodeHandle / initParam, which read the description."""
+    (tmp_path / "package.xml").write_text(
+        '<package format="2"><name>p</name><version>1.0.0</version>'
+        "<description>d</description><maintainer email='a@b.c'>m</maintainer>"
+        "<license>BSD</license></package>")
+    source = tmp_path / "a.cpp"
+    source.write_text(
+        "#include <ros/ros.h>\n#include <urdf/model.h>\n"
+        "#include <urdf/urdfdom_compatibility.h>\n#include <urdf_parser/urdf_parser.h>\n"
+        "double f(ros::NodeHandle &n, const std::string &text) {\n"
+        "  urdf::ModelInterfaceSharedPtr model(urdf::parseURDF(text));\n"
+        "  urdf::JointConstSharedPtr joint(model->getJoint(\"left\"));\n"
+        "  if (!joint) return 0;\n"
+        "  urdf::LinkConstSharedPtr link = model->getLink(joint->child_link_name);\n"
+        "  if (!link || !link->collision) return 0;\n"
+        "  if (link->collision->geometry->type != urdf::Geometry::CYLINDER) return 0;\n"
+        "  urdf::Model urdf;\n"
+        "  if (!urdf.initParamWithNodeHandle(\"robot_description\", n)) return 0;\n"
+        "  urdf::Model other;\n"
+        "  other.initParam(\"robot_description\");\n"
+        "  if (urdf.getJoint(\"j\")->type == urdf::Joint::REVOLUTE)\n"
+        "    return urdf.getJoint(\"j\")->limits->lower;\n"
+        "  return static_cast<urdf::Cylinder*>(link->collision->geometry.get())->radius\n"
+        "    + joint->parent_to_joint_origin_transform.position.x;\n"
+        "}\n")
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    assert [d.message for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"] == []
+    assert [(c.kind, c.name, c.searched, c.location.line) for c in result.calls] == [
+        ("read", "?/robot_description", True, 13), ("read", "robot_description", True, 15)]
+
+
+def test_a_message_of_a_package_our_stand_ins_shadow_is_synthesised(tmp_path) -> None:
+    """tf/tfMessage.h (tf's headers are our stand-ins) is tf's message, with its fields."""
+    (tmp_path / "package.xml").write_text(
+        '<package format="2"><name>p</name><version>1.0.0</version>'
+        "<description>d</description><maintainer email='a@b.c'>m</maintainer>"
+        "<license>BSD</license></package>")
+    source = tmp_path / "a.cpp"
+    source.write_text(
+        "#include <ros/ros.h>\n#include <tf/tfMessage.h>\n"
+        "void f(ros::NodeHandle &n) {\n"
+        "  tf::tfMessage m;\n  m.transforms.resize(1);\n"
+        "  m.transforms[0].child_frame_id = \"base\";\n"
+        "  ros::Publisher p = n.advertise<tf::tfMessage>(\"/tf\", 100);\n"
+        "}\n")
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    assert [d.message for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"] == []
+    assert [(c.kind, c.name, c.type) for c in result.calls] == [
+        ("publish", "/tf", "tf/tfMessage")]

@@ -75,8 +75,9 @@ def test_eval_refuses_to_build_huge_values(case: str) -> None:
 
 
 def test_format_fields_do_not_reach_attributes() -> None:
-    from haros_arch.launch.expression import BUILTINS, Unknown, evaluate
+    from haros_arch.evaluate.python import BUILTINS, Unknown, evaluate
 
+    # the core evaluator (the one setup.py and Python files go through) refuses the field
     result = evaluate("'{0.__class__}'.format(1)", None, BUILTINS)
     assert isinstance(result, Unknown) and "attribute" in result.reason
     assert evaluate("'{0.real}'.format(1)", None, BUILTINS) != "1"

@@ -246,13 +246,16 @@ def test_a_hostile_or_broken_spawner_file_is_a_diagnostic(tmp_path):
     bomb.write_text("\n".join(lines) + "\n")
     broken = tmp_path / "broken.yaml"
     broken.write_text("a: [\n")
+    deep = tmp_path / "deep.yaml"  # the YAML scanner is quadratic in open brackets
+    deep.write_text("[" * 200_000)
     decls = [ros2(NodeDecl("/controller_manager", "controller_manager", "ros2_control_node")),
              ros2(NodeDecl("/s1", "controller_manager", "spawner", args=f"c --param-file {bomb}")),
              ros2(NodeDecl("/s2", "controller_manager", "spawner",
-                           args=f"c --param-file {broken} --param-file {tmp_path}/none.yaml"))]
+                           args=f"c --param-file {broken} --param-file {tmp_path}/none.yaml"
+                                f" --param-file {deep}"))]
     config = graph(decls, root=str(tmp_path))
     codes = [d.code for d in config.diagnostics if d.code.startswith("PLUGIN")]
-    assert codes.count("PLUGIN_PARAM_FILE") == 3
+    assert codes.count("PLUGIN_PARAM_FILE") == 4
 
 
 _COSTMAP_FILE = {"global_costmap": {"global_costmap": {"ros__parameters": {

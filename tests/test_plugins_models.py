@@ -10,13 +10,14 @@ from haros_arch.launch.model import LaunchModel, NodeDecl, ParamDecl
 from haros_arch.model import Configuration, Location
 from haros_arch.model.source import Package
 from haros_arch.models.attach import Attacher
+from haros_arch.models.generate import build_package, read_list, tasks
 from haros_arch.models.library import Library
 from haros_arch.workspace import Workspace
 
 
-def _model(path: Path, package: str, nodes: list[dict]) -> str:
+def _model(path: Path, package: str, nodes: list[dict], distro: str = "jazzy") -> str:
     path.write_text(json.dumps({"schema": "haros-arch-model/1", "package": package,
-                                "distro": "jazzy", "nodes": nodes}))
+                                "distro": distro, "nodes": nodes}))
     return str(path)
 
 
@@ -81,3 +82,59 @@ def test_a_class_whose_package_has_source_is_not_taken_from_a_model(tmp_path):
                 and "costmap" not in d.message]
     assert (found.code, found.location.line) == ("PLUGIN_NOT_FOUND", 5)
     assert config.node("/planner_server").completeness == "partial"
+
+
+def test_a_modelled_ros1_host_gets_a_plugin_from_a_generated_model(tmp_path):
+    """`models build` makes a move_base planner plugin node from its package's export,
+    and a modelled move_base (no source) gets that generated plugin's calls."""
+    fixture = Path(__file__).resolve().parent.parent / "fixtures/models/plugin_generate"
+    (task,) = tasks(read_list(str(fixture / "list.yaml")), str(fixture / "sources"),
+                    str(tmp_path / "no-overrides"), cache_dir=None)
+    outcome = build_package(task)
+    assert outcome.problem is None and outcome.text is not None
+    (plugin,) = json.loads(outcome.text)["nodes"]
+    assert (plugin["kind"], plugin["plugin_class"], plugin["plugin_base"]) == (
+        "plugin", "tiny_planner::TinyPlanner", "nav_core::BaseGlobalPlanner")
+    (tmp_path / "tiny_planner.json").write_text(outcome.text)
+    host = _model(tmp_path / "move_base.json", "move_base", [
+        {"package": "move_base", "executable": "move_base",
+         "calls": [{"kind": "subscribe", "name": "~goal",
+                    "type": "geometry_msgs/PoseStamped"}]}], "noetic")
+    decl = NodeDecl("/move_base", "move_base", "move_base", ros_version=1)
+    launch = LaunchModel(nodes=[decl], params=[
+        ParamDecl("/move_base/base_global_planner", "tiny_planner/TinyPlanner")])
+    attacher = Attacher(Library([host, str(tmp_path / "tiny_planner.json")], shipped=None),
+                        "noetic", [])
+    config = Configuration("c")
+    workspace = Workspace(root=str(tmp_path))
+    nodes = attacher.nodes_for(launch, workspace, {}, {}, config.diagnostics)
+    build(config, launch, workspace, nodes, attacher.plugin_models(launch, {}))
+    links = {(link.kind, link.resource.name) for link in config.links}
+    assert {("publish", "/move_base/TinyPlanner/plan"),
+            ("read", "/move_base/TinyPlanner/step_size")} <= links
+
+
+def test_a_partial_plugin_makes_its_modelled_host_instance_partial(tmp_path):
+    """A plugin whose calls are made on the host and whose interface is partial leaves
+    the host instance partial, even when the host is a complete model."""
+    files = [
+        _model(tmp_path / "move_base.json", "move_base", [
+            {"package": "move_base", "executable": "move_base", "calls": []}], "noetic"),
+        _model(tmp_path / "layer.json", "layer", [
+            {"package": "layer", "executable": "layer/Layer", "kind": "plugin",
+             "plugin_class": "layer::Layer", "completeness": "partial",
+             "completeness_reasons": ["layer/src/l.cpp:9: C++ error"],
+             "calls": [_read("~?/gain", 3)]}], "noetic"),
+    ]
+    decl = NodeDecl("/move_base", "move_base", "move_base", ros_version=1)
+    launch = LaunchModel(nodes=[decl], params=[
+        ParamDecl("/move_base/base_global_planner", "layer/Layer")])
+    attacher = Attacher(Library(files, shipped=None), "noetic", [])
+    config = Configuration("c")
+    workspace = Workspace(root=str(tmp_path))
+    nodes = attacher.nodes_for(launch, workspace, {}, {}, config.diagnostics)
+    build(config, launch, workspace, nodes, attacher.plugin_models(launch, {}))
+    instance = config.node("/move_base")
+    assert instance.completeness == "partial"
+    assert any("layer/Layer" in r and "l.cpp:9" in r for r in instance.completeness_reasons)
+    assert nodes["move_base/move_base"].completeness != "partial"  # the shared model is not

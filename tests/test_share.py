@@ -315,3 +315,12 @@ def test_links_out_of_the_package_are_not_mapped(write_tree) -> None:
     os.symlink(os.path.join(root, "..", "secret.yaml"), os.path.join(root, "config", "s.yaml"))
     assert mapped(ws, "pkg") == {"config/own.yaml": "pkg/config/own.yaml",
                                  "package.xml": "pkg/package.xml"}
+
+
+def test_setup_py_destination_not_known_is_skipped(write_tree) -> None:
+    # found by scripts/fuzz: an unknown name in a destination left an unknown value there
+    ws = python_package(write_tree, """
+        from setuptools import setup
+        setup(data_files=[(undefined_name + '/x', ['a.yaml']), ('share/pkg', ['b.yaml'])])
+        """, {"a.yaml": "a: 1\n", "b.yaml": "b: 1\n"})
+    assert mapped(ws, "pkg") == {"b.yaml": "pkg/b.yaml"}

@@ -31,7 +31,7 @@ from .listops import split_list
 from .targets import Install, Program, Registration, Target
 
 _VAR_REF = re.compile(r"\$(ENV|CACHE)?\{([^${}]*)\}")
-MAX_STEPS = 200_000
+MAX_STEPS = 50_000  # commands and if / elseif tests; real packages take under 1,000
 MAX_LOOP = 10_000
 MAX_DEPTH = 64
 MAX_BLOCK_DEPTH = 200  # if / foreach / while blocks inside each other
@@ -214,18 +214,25 @@ class Interpreter:
         with contextlib.suppress(_Stop, _Return, _Break, _Continue):
             self.run(commands)
 
-    def run(self, commands: list[Invocation]) -> None:
-        index = 0
-        while index < len(commands):
-            index = self.step(commands, index)
+    def run(self, commands: list[Invocation], start: int = 0, end: int | None = None) -> None:
+        """Run ``commands[start:end]`` (a block's body is a range of the list that holds
+        it, never a copy: nested blocks would copy their bodies once per level)."""
+        stop = len(commands) if end is None else end
+        index = start
+        while index < stop:
+            index = self.step(commands, index, stop)
 
-    def step(self, commands: list[Invocation], index: int) -> int:
+    def charge(self, command: Invocation) -> None:
+        """One step of work (a command, or an ``elseif`` test) against ``MAX_STEPS``."""
         self.steps += 1
-        command = commands[index]
-        self.current = command
         if self.steps > MAX_STEPS:
             self.limit(command, f"more than {MAX_STEPS} commands evaluated")
             raise _Stop
+
+    def step(self, commands: list[Invocation], index: int, end: int | None = None) -> int:
+        command = commands[index]
+        self.current = command
+        self.charge(command)
         name = command.name
         block = _BLOCKS.get(name)
         if block is not None:
@@ -234,7 +241,7 @@ class Interpreter:
                 raise _Stop
             self.block_depth += 1
             try:
-                return block(self, commands, index)
+                return block(self, commands, index, len(commands) if end is None else end)
             finally:
                 self.block_depth -= 1
         if name == "break":
@@ -252,23 +259,23 @@ class Interpreter:
             handler(self, command, self.arguments(command.args))
         return index + 1
 
-    def block_end(self, commands: list[Invocation], index: int, opener: str,
+    def block_end(self, commands: list[Invocation], index: int, end: int, opener: str,
                   closer: str, middles: tuple[str, ...] = ()) -> list[int]:
-        """Indexes of the middle keywords at depth 0 and of the closing command.
+        """Indexes of the middle keywords at depth 0 and of the closing command, looked for
+        up to ``end`` (the end of the range that holds the block).
 
-        A block's body runs as a slice of the list that holds it, so the distances from
-        the opening command to its marks are the same in every slice that holds the
-        block: they are found once per opening command (a loop over nested blocks would
-        otherwise scan each block again on every pass)."""
+        The distances from the opening command to its marks are the same wherever the
+        block is run from: they are found once per opening command (a loop over nested
+        blocks would otherwise scan each block again on every pass)."""
         head = commands[index]
         cached = self._blocks.get(id(head))
         if cached is not None and cached[0] is head:  # the same command, still alive
             known = cached[1]
-            if index + known[-1] < len(commands):
+            if index + known[-1] < end:
                 return [index + offset for offset in known]
         depth = 0
         marks: list[int] = []
-        for position in range(index + 1, len(commands)):
+        for position in range(index + 1, end):
             name = commands[position].name
             if name == opener:
                 depth += 1
@@ -280,7 +287,7 @@ class Interpreter:
                 depth -= 1
             elif depth == 0 and name in middles:
                 marks.append(position)
-        marks.append(len(commands))  # not closed: to the end of this list, not kept
+        marks.append(end)  # not closed: to the end of this range, not kept
         return marks
 
     def evaluate(self, args: list[str]) -> bool | None:
@@ -289,8 +296,8 @@ class Interpreter:
                               or name.lower() in self.definitions, self.assigned)
         return evaluator.evaluate(args)
 
-    def run_if(self, commands: list[Invocation], index: int) -> int:
-        marks = self.block_end(commands, index, "if", "endif", ("elseif", "else"))
+    def run_if(self, commands: list[Invocation], index: int, limit: int) -> int:
+        marks = self.block_end(commands, index, limit, "if", "endif", ("elseif", "else"))
         branches = [index, *marks[:-1]]
         end = marks[-1]
         pushed = 0
@@ -300,8 +307,10 @@ class Interpreter:
                 stop = marks[number]
                 head = commands[start]
                 if head.name == "else":
-                    self.run(commands[start + 1:stop])
+                    self.run(commands, start + 1, stop)
                     break
+                if number:  # an elseif's test is work too (the if's own is its step)
+                    self.charge(head)
                 decided = self.evaluate(self.arguments(head.args))
                 if decided is None:
                     text = " ".join(a.text for a in head.args)
@@ -309,29 +318,28 @@ class Interpreter:
                                                      self.where(head)))
                     pushed += 1
                     try:
-                        self.run(commands[start + 1:stop])
+                        self.run(commands, start + 1, stop)
                     except _Return:  # what follows runs only when this did not hold
                         returned.append(Condition(f"NOT ({text})", "source", head.name,
                                                   self.where(head)))
                     self.conditions[-1] = Condition(text, "source", "else", self.where(head))
                     continue
                 if decided:
-                    self.run(commands[start + 1:stop])
+                    self.run(commands, start + 1, stop)
                     break
         finally:
             del self.conditions[len(self.conditions) - pushed:]
         self.returns.extend(returned)
         return end + 1
 
-    def run_foreach(self, commands: list[Invocation], index: int) -> int:
-        end = self.block_end(commands, index, "foreach", "endforeach")[-1]
+    def run_foreach(self, commands: list[Invocation], index: int, limit: int) -> int:
+        end = self.block_end(commands, index, limit, "foreach", "endforeach")[-1]
         args = self.arguments(commands[index].args)
-        body = commands[index + 1:end]
         for assignment in self._foreach_items(commands[index], args):
             for name, value in assignment:
                 self.set(name, value)
             try:
-                self.run(body)
+                self.run(commands, index + 1, end)
             except _Break:
                 break
             except _Continue:
@@ -377,9 +385,9 @@ class Interpreter:
                 values_list.append(item)
         return [[(names[0], value)] for value in values_list]
 
-    def run_while(self, commands: list[Invocation], index: int) -> int:
-        end = self.block_end(commands, index, "while", "endwhile")[-1]
-        head, body = commands[index], commands[index + 1:end]
+    def run_while(self, commands: list[Invocation], index: int, limit: int) -> int:
+        end = self.block_end(commands, index, limit, "while", "endwhile")[-1]
+        head = commands[index]
         for _ in range(MAX_LOOP):
             decided = self.evaluate(self.arguments(head.args))
             if decided is False:
@@ -388,14 +396,14 @@ class Interpreter:
                 text = " ".join(a.text for a in head.args)
                 self.conditions.append(Condition(text, "source", "while", self.where(head)))
                 try:
-                    self.run(body)
+                    self.run(commands, index + 1, end)
                 except (_Break, _Continue):
                     pass
                 finally:
                     self.conditions.pop()
                 return end + 1
             try:
-                self.run(body)
+                self.run(commands, index + 1, end)
             except _Break:
                 return end + 1
             except _Continue:
@@ -403,9 +411,9 @@ class Interpreter:
         self.limit(head, f"while loop ran {MAX_LOOP} times")
         return end + 1
 
-    def define(self, commands: list[Invocation], index: int) -> int:
+    def define(self, commands: list[Invocation], index: int, limit: int) -> int:
         kind = commands[index].name
-        end = self.block_end(commands, index, kind, "end" + kind)[-1]
+        end = self.block_end(commands, index, limit, kind, "end" + kind)[-1]
         args = self.arguments(commands[index].args)
         if args:
             self.definitions[args[0].lower()] = Definition(
@@ -498,7 +506,7 @@ def _substitute(command: Invocation, values: Mapping[str, str]) -> Invocation:
     return Invocation(command.name, args, command.line, command.column, command.file)
 
 
-_BLOCKS: dict[str, Callable[[Interpreter, list[Invocation], int], int]] = {
+_BLOCKS: dict[str, Callable[[Interpreter, list[Invocation], int, int], int]] = {
     "if": Interpreter.run_if, "foreach": Interpreter.run_foreach,
     "while": Interpreter.run_while, "macro": Interpreter.define,
     "function": Interpreter.define,

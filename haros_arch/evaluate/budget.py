@@ -69,6 +69,22 @@ def text_length(value: Any, limit: int = MAX_LENGTH) -> int:
     return total
 
 
+def item_count(value: Any, limit: int = MAX_LENGTH) -> int:
+    """The items of a nested structure, shared parts counted each time they are reached
+    (what walking it costs); stops counting once past ``limit``."""
+    total = 0
+    stack = [value]
+    while stack and total <= limit:
+        item = stack.pop()
+        total += 1
+        if isinstance(item, Mapping):
+            stack.extend(item.keys())
+            stack.extend(item.values())
+        elif isinstance(item, (list, tuple, set, frozenset)):
+            stack.extend(item)
+    return total
+
+
 def check_text(value: Any, limit: int = MAX_LENGTH) -> None:
     """Before ``str(value)``."""
     check_size("a string", text_length(value, limit), limit)

@@ -10,15 +10,29 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 from dataclasses import dataclass
+from typing import Literal
 
 UNKNOWN_MARK = "?"
 
 
+UnknownKind = Literal["unknown", "unsupported", "undefined", "error", "syntax", "limit"]
+
+
 @dataclass(frozen=True)
 class Unknown:
-    """A part whose text cannot be known statically; ``origin`` says why."""
+    """A value, or a part of one, that cannot be known statically: the one spelling of
+    "unknown" every reader and evaluator uses. ``origin`` says where it came from; ``kind``
+    why it is not known: ``unknown`` (it depends on a value nobody knows, e.g. an unset
+    argument), ``unsupported`` (a construct outside the safe subset, never run),
+    ``undefined`` (a name that is not defined), ``error`` (Python would raise, e.g. a
+    division by zero), ``syntax`` (not Python), ``limit`` (a work bound was reached)."""
 
     origin: str = ""
+    kind: UnknownKind = "unknown"
+
+    @property
+    def reason(self) -> str:
+        return self.origin
 
     def __str__(self) -> str:
         return UNKNOWN_MARK

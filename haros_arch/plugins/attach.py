@@ -36,6 +36,7 @@ from typing import Any, Protocol
 import yaml
 
 from .. import diagnostics as diag
+from .. import safe_yaml
 from ..files import read_text
 from ..launch.model import NodeDecl
 from ..launch.ros2.naming import (
@@ -147,6 +148,9 @@ def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str
         out.append((reader, _not_hosts(node.calls, instance)))
     else:
         plugin = slot.prefix + _given(choice, slot)
+        if node.completeness in ("partial", "unknown"):  # its calls on the host: some unseen
+            reasons = node.completeness_reasons[:1] or [node.completeness]
+            own_partial(instance, f"plugin {node.name}: {reasons[0]}", owned)
         calls = [_under(call, plugin, choice.conditions)
                  for call in _with_base(node, index, workspace, models)]
         row = sources_of(choice.cls or "", instance.ros_version) or sources_of(
@@ -541,7 +545,7 @@ def _param_file(path: str, decl: NodeDecl, workspace: Workspace,
     if text is None:
         return None
     try:
-        document = yaml.safe_load(text)
+        document = safe_yaml.load(text)  # bounded: aliases, nesting, flow brackets
     except yaml.YAMLError:
         document = None
     if document is None or not _bounded(document):

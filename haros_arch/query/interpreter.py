@@ -12,6 +12,7 @@ import time
 from collections.abc import Callable, Iterable
 from typing import Any
 
+from ..evaluate.budget import text_length
 from . import syntax as s
 from .access import _CACHE as _READERS
 from .access import PRIMITIVES, STRING_METHODS, Method, Pair, readers_of
@@ -24,6 +25,9 @@ DEFAULT_STEPS = 20_000_000
 DEFAULT_SECONDS = 10.0
 MAX_STRING = 1_000_000
 MAX_RESULTS = 1_000_000
+# characters of strings the query builds plus the printed size of its results, together:
+# what a query may make in memory (each result is counted as printed, shared parts each time)
+MAX_MADE = 50_000_000
 _CLOCK_EVERY = 4096
 
 
@@ -60,6 +64,7 @@ class Evaluator:
         self.handlers: dict[type, Callable[[Any], Any]] = {}
         self.hoisted: set[int] = set()  # sub-expressions evaluated once (syntax.invariants)
         self.memo: dict[int, Any] = {}
+        self.made = 0
 
     # ---- limits
     def charge(self, steps: int = 1) -> None:
@@ -72,6 +77,13 @@ class Evaluator:
             self.until_clock = _CLOCK_EVERY
             if time.monotonic() > self.deadline:
                 raise QueryLimitError(f"the query ran longer than {self.max_seconds:g} s")
+
+    def make(self, size: int, node: s.Expr) -> None:
+        """Count ``size`` characters (or items) the query makes against ``MAX_MADE``."""
+        self.made += size
+        if self.made > MAX_MADE:
+            raise self.fail(QueryLimitError, f"the query's results and the strings it builds "
+                            f"pass {MAX_MADE:,} characters; narrow it or return less", node)
 
     def fail(self, error: type[QueryError], message: str, node: s.Expr) -> QueryError:
         return error(message, self.text, node.pos)
@@ -206,6 +218,7 @@ class Evaluator:
             if len(left) + len(right) > MAX_STRING:
                 raise self.fail(QueryLimitError, f"a string longer than {MAX_STRING:,} "
                                 "characters", node)
+            self.make(len(left) + len(right), node)
             return left + right
         if not numbers:
             raise self.fail(QueryTypeError, f"'{node.op}' needs numbers (or two strings for "
@@ -371,7 +384,9 @@ class Evaluator:
                 if len(results) >= MAX_RESULTS:
                     raise self.fail(QueryLimitError, f"more than {MAX_RESULTS:,} results",
                                     node)
-                results.append(self._output(node))
+                output = self._output(node)
+                self.make(text_length(output, MAX_MADE), node)
+                results.append(output)
             return
         level = the_plan.levels[depth]
         candidates: Iterable[Any]

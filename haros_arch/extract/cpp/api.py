@@ -182,6 +182,20 @@ LIBRARIES: dict[tuple[str, str], RosFunction] = {
     ("message_filters::Subscriber", "subscribe"): RosFunction(
         "subscribe", type_from=("class",), on_handle=False, handle_arg=0, name_arg=1,
         queue_arg=2, qos_arg=2),
+    # urdf::Model reads the robot description where searchParam finds it: on the handle
+    # given, else in the node's namespace
+    ("urdf::Model", "initParamWithNodeHandle"): RosFunction(
+        "read", on_handle=False, handle_arg=1, searched=True),
+    ("urdf::Model", "initParam"): RosFunction("read", on_handle=False, searched=True),
+    # ROS 1 realtime_tools (ros_control's controllers): RealtimePublisher<M>(nh, topic,
+    # queue, latched) and init(...) advertise the topic; ROS 2's takes a publisher made
+    # before (one argument, no name: no call of its own)
+    ("realtime_tools::RealtimePublisher", "RealtimePublisher"): RosFunction(
+        "publish", type_from=("class",), on_handle=False, handle_arg=0, name_arg=1,
+        queue_arg=2, latch_arg=3),
+    ("realtime_tools::RealtimePublisher", "init"): RosFunction(
+        "publish", type_from=("class",), on_handle=False, handle_arg=0, name_arg=1,
+        queue_arg=2, latch_arg=3),
     ("tf2_ros::TransformBroadcaster", "TransformBroadcaster"): RosFunction(
         "publish", fixed_name="/tf", fixed_type=_TF, on_handle=False),
     ("tf2_ros::StaticTransformBroadcaster", "StaticTransformBroadcaster"): RosFunction(

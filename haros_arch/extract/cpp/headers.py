@@ -73,8 +73,11 @@ UMBRELLAS = {
     "dynamic_reconfigure/": "dynamic_reconfigure/server.h",
     "diagnostic_updater/": "diagnostic_updater/diagnostic_updater.h",
     "bondcpp/": "bondcpp/bond.hpp",
+    "realtime_tools/": "realtime_tools/realtime_publisher.h",
     # libraries beside ROS that node classes use: minimal stand-ins keep them parsing
     "opencv2/": "opencv2/opencv.hpp", "opencv/": "opencv2/opencv.hpp",
+    "angles/": "angles/angles.h",
+    "urdf/": "urdf/model.h", "urdf_model/": "urdf/model.h", "urdf_parser/": "urdf/model.h",
     "cv_bridge/": "cv_bridge/cv_bridge.h", "Eigen/": "Eigen/Dense", "eigen3/": "Eigen/Dense",
     **{f"Qt{m}/": QT for m in ("Core", "Gui", "Widgets", "Network", "Concurrent", "Test")},
 }
@@ -84,6 +87,8 @@ _ROS2_HEADER = re.compile(r"([A-Za-z_]\w*)/(msg|srv|action)/([a-z0-9_]+)\.hpp")
 
 _INCLUDE = re.compile(r'^[ \t]*#[ \t]*include[ \t]*([<"])([^>"\n]+)[>"]', re.MULTILINE)
 _MESSAGE_HEADER = re.compile(r"([A-Za-z_]\w*)/([A-Z]\w*)\.h")
+# a header that is a message when the package defines one by that name (tf's tfMessage)
+_DEFINED_HEADER = re.compile(r"([A-Za-z_]\w*)/([A-Za-z]\w*)\.h")
 _NOT_FOUND = re.compile(r"^'([^']+)' file not found")
 
 
@@ -229,6 +234,11 @@ class IncludeSetup:
             if os.path.isfile(standin) and not header.startswith(_ROS_PREFIXES):
                 self._handled.add(header)
                 self._scan_standin(standin)  # what it includes (a message header) is ready
+            elif not os.path.isfile(standin) and (message := _DEFINED_HEADER.fullmatch(
+                    header)) and not header.startswith(("ros/", "boost/")) and self._definition(
+                    message.group(1), message.group(2)) is not None:
+                # a message of a package whose headers are ours (tf/tfMessage.h)
+                self._message(header, message.group(1), message.group(2), where)
             elif not os.path.isfile(standin):
                 umbrella = QT if qt else next(
                     (u for p, u in UMBRELLAS.items() if header.startswith(p)), None)

@@ -42,6 +42,7 @@ WELL_KNOWN: dict[str, str] = {
     "builtin_interfaces/Time": "int32 sec\nuint32 nanosec",
     "builtin_interfaces/Duration": "int32 sec\nuint32 nanosec",
     "tf2_msgs/TFMessage": "geometry_msgs/TransformStamped[] transforms",
+    "tf/tfMessage": "geometry_msgs/TransformStamped[] transforms",
     "sensor_msgs/CameraInfo": "Header header\nuint32 height\nuint32 width\n"
                               "string distortion_model\nfloat64[] D\nfloat64[9] K\n"
                               "float64[9] R\nfloat64[12] P",

@@ -7,8 +7,9 @@ from __future__ import annotations
 
 import ast
 
+from ...model.values import Unknown
 from .modules import FunctionInfo
-from .objects import BoundMethod, Frame, Opaque
+from .objects import BoundMethod, Frame
 from .scopes import Scopes
 
 MAX_CALL_DEPTH = 4
@@ -46,14 +47,14 @@ class Calls(Scopes):
             elif i >= first_default and not starred:
                 bound[param.arg] = self.eval(defaults[i - first_default], home)
             else:
-                bound[param.arg] = Opaque(f"argument {param.arg}")
+                bound[param.arg] = Unknown(f"argument {param.arg}")
         for param, default in zip(args.kwonlyargs, args.kw_defaults, strict=False):
             if param.arg in keywords:
                 bound[param.arg] = keywords[param.arg]
             elif default is not None:
                 bound[param.arg] = self.eval(default, home)
             else:
-                bound[param.arg] = Opaque(f"argument {param.arg}")
+                bound[param.arg] = Unknown(f"argument {param.arg}")
         return bound
 
 
@@ -77,4 +78,4 @@ def unknown_params(info: FunctionInfo) -> dict[str, object]:
     names = [a.arg for a in (*args.posonlyargs, *args.args, *args.kwonlyargs)]
     if info.cls is not None and names:
         names = names[1:]
-    return {**(info.closure or {}), **{n: Opaque(f"argument {n}") for n in names}}
+    return {**(info.closure or {}), **{n: Unknown(f"argument {n}") for n in names}}

@@ -8,10 +8,11 @@ from __future__ import annotations
 import ast
 from collections.abc import Iterator
 
+from ...model.values import Unknown
 from . import rclpy
 from .calls import MAX_CALL_DEPTH, Calls, unknown_params
 from .modules import ClassInfo, FunctionInfo
-from .objects import BoundMethod, Frame, Instance, Opaque, Ref, Seq
+from .objects import BoundMethod, Frame, Instance, Ref, Seq
 
 
 class Instances(Calls):
@@ -99,12 +100,12 @@ class Instances(Calls):
                 and target.value.id == "self" and frame.instance is not None:
             if seen is not None:
                 if target.attr in seen and seen[target.attr] != value:
-                    value = Opaque(f"self.{target.attr}")
+                    value = Unknown(f"self.{target.attr}")
                 seen[target.attr] = value
             frame.instance.attrs[target.attr] = value
         elif isinstance(target, ast.Tuple | ast.List):
             items = value.items if isinstance(value, Seq) and len(value.items) == len(
-                target.elts) else (Opaque(),) * len(target.elts)
+                target.elts) else (Unknown(),) * len(target.elts)
             for element, item in zip(target.elts, items, strict=False):
                 self.bind(element, item, frame, seen)
 

@@ -26,11 +26,6 @@ class Ref:
 
 
 @dataclass(frozen=True)
-class Opaque:
-    origin: str = ""
-
-
-@dataclass(frozen=True)
 class ParamValue:
     """The value of a parameter read (``rospy.get_param('~topic', 'scan')``)."""
 

@@ -11,9 +11,10 @@ from __future__ import annotations
 
 import ast
 
+from ...model.values import Unknown
 from . import msg_types
 from .modules import Loader, Module
-from .objects import Frame, ModuleRef, Opaque, Ref, Seq
+from .objects import Frame, ModuleRef, Ref, Seq
 
 MAX_UNROLL = 32  # a for loop over a known sequence is walked once per item, up to this
 
@@ -41,7 +42,7 @@ class Scopes(EvaluatorBase):
             path, symbol = module.local_imports[name]
             other = self.loader.load(path)
             if other is None:
-                return Opaque(name)
+                return Unknown(name)
             return ModuleRef(other) if symbol is None else self.lookup(other, symbol)
         if name in module.imports:
             return Ref(module.imports[name])
@@ -57,12 +58,12 @@ class Scopes(EvaluatorBase):
                     module.values[name] = self.eval(module.constants[name], Frame(module))
                 finally:
                     self._computing.discard(key)
-            return module.values.get(name, Opaque(name))
+            return module.values.get(name, Unknown(name))
         for path in module.local_stars:
             other = self.loader.load(path)
             if other is not None and other is not module:
                 found = self.lookup(other, name)
-                if not isinstance(found, Opaque):
+                if not isinstance(found, Unknown):
                     return found
         return self._star_interface(module, name)
 
@@ -79,7 +80,7 @@ class Scopes(EvaluatorBase):
                 return Ref(f"{star}.{name}")
         if len(guesses) == 1 and name[:1].isupper():
             return Ref(f"{guesses[0]}.{name}")
-        return Opaque(name)
+        return Unknown(name)
 
     def name(self, name: str, frame: Frame) -> object:
         if name in frame.locals:
@@ -92,7 +93,7 @@ class Scopes(EvaluatorBase):
         """The items a ``for`` loop over ``expr`` takes, when known and at most
         ``MAX_UNROLL``: a list or tuple, ``range(...)`` of integers, ``enumerate(...)``."""
         if isinstance(expr, ast.Call) and isinstance(expr.func, ast.Name) \
-                and not expr.keywords and isinstance(self.eval(expr.func, frame), Opaque):
+                and not expr.keywords and isinstance(self.eval(expr.func, frame), Unknown):
             args = [self.eval(a, frame) for a in expr.args]
             bounds = [a for a in args if isinstance(a, int) and not isinstance(a, bool)]
             if expr.func.id == "range" and 1 <= len(bounds) == len(args) <= 3 \

@@ -2,23 +2,13 @@
 
 from __future__ import annotations
 
-import ast
-from typing import Any
-
-from ...model.values import Value
-from .objects import Opaque, Seq, text_of
+from ...evaluate import operations as ops
+from ...model.values import Unknown, Value
+from .objects import Seq, text_of
 
 
 def number(value: object) -> bool:
     return isinstance(value, int | float) and not isinstance(value, bool)
-
-
-def arith(op: ast.operator, left: Any, right: Any) -> object:
-    if isinstance(op, ast.Mult):
-        return left * right if abs(left) < 1e6 and abs(right) < 1e6 else Opaque("big")
-    if isinstance(op, ast.Sub):
-        return left - right
-    return left / right
 
 
 def percent(template: Value, items: tuple[object, ...]) -> Value:
@@ -45,7 +35,43 @@ def percent(template: Value, items: tuple[object, ...]) -> Value:
     return Value.of(*parts)
 
 
+def plain(value: object) -> object:
+    """A value of the reader as the Python value the one evaluator computes with; raises
+    ``LookupError`` when some part is not known."""
+    if isinstance(value, Value):
+        if value.literal is None:
+            raise LookupError("not known")
+        return value.literal
+    if isinstance(value, Seq):
+        return [plain(item) for item in value.items]
+    if isinstance(value, bool | int | float | None):
+        return value
+    raise LookupError("not known")
+
+
+def from_plain(value: object) -> object:
+    if isinstance(value, str):
+        return Value.of(value)
+    if isinstance(value, list | tuple):
+        return Seq(tuple(from_plain(item) for item in value))
+    if isinstance(value, bool | int | float | None):
+        return value
+    return Unknown(type(value).__name__)
+
+
 def string_method(base: Value, method: str, args: list[object]) -> object:
+    """``base.method(*args)``: by the one evaluator when everything is known; ``format``
+    and ``join`` keep their known parts when some are not."""
+    try:
+        known = [plain(a) for a in args]
+        text = plain(base)
+    except LookupError:
+        pass
+    else:
+        try:
+            return from_plain(ops.call_method(text, method, known))
+        except ops.Refused as err:
+            return Unknown(f"str.{method}: {err.reason}")
     if method == "format" and base.is_known:
         text = base.text
         out: list[Value | str] = []
@@ -80,4 +106,4 @@ def string_method(base: Value, method: str, args: list[object]) -> object:
                 joined.append(base)
             joined.append(text_of(item))
         return Value.of(*joined)
-    return Opaque(f"str.{method}")
+    return Unknown(f"str.{method}")

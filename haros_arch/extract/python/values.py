@@ -5,7 +5,7 @@ parts print as ``?`` (f-strings, ``+``, ``%`` and ``str.format`` keep every know
 numbers, booleans and None are themselves; imported things are ``Ref``s to their
 qualified name; parameter reads are ``ParamValue``s (a name that is a parameter's value);
 rclpy nodes are ``NodeHandle``s; objects of classes of the package are ``Instance``s
-whose attributes come from ``__init__``; anything else is ``Opaque``.
+whose attributes come from ``__init__``; anything else is ``Unknown``.
 Helper functions whose body is straight-line code ending in ``return`` are evaluated
 with their arguments bound, a few calls deep.
 
@@ -18,7 +18,9 @@ from __future__ import annotations
 import ast
 
 from ...evaluate import budget
-from ...model.values import Value
+from ...evaluate import operations as ops
+from ...evaluate.python import BUILTINS, evaluate_node
+from ...model.values import Unknown, Value
 from . import rclpy, rospy
 from .calls import MAX_CALL_DEPTH, argument, unknown_params
 from .instances import Instances
@@ -30,7 +32,6 @@ from .objects import (
     ModuleRef,
     NodeHandle,
     NodeMethod,
-    Opaque,
     ParameterClient,
     ParamObject,
     ParamValue,
@@ -41,7 +42,7 @@ from .objects import (
 )
 from .qos import QoSProfiles
 from .scopes import MAX_UNROLL
-from .strings import arith, number, percent, string_method
+from .strings import from_plain, number, percent, plain, string_method
 
 __all__ = ["MAX_CALL_DEPTH", "MAX_UNROLL", "NAMESPACE", "Evaluator", "argument",
            "unknown_params"]
@@ -57,20 +58,35 @@ class Evaluator(Instances, QoSProfiles):
 
     def eval(self, expr: ast.expr, frame: Frame) -> object:
         if self.depth > MAX_EVAL_DEPTH:
-            return Opaque("too deep")
+            return Unknown("too deep")
         self.depth += 1
         try:
             handler = getattr(self, "_" + type(expr).__name__, None)
-            return handler(expr, frame) if handler else Opaque(type(expr).__name__)
+            return handler(expr, frame) if handler else self.folded(expr, frame)
         finally:
             self.depth -= 1
+
+    def folded(self, expr: ast.expr, frame: Frame) -> object:
+        """A construct this reader has no handler for (a comparison, ``not``, a
+        conditional expression, a dict, ...): the one evaluator computes it when every
+        name in it holds a known plain value; unknown otherwise."""
+
+        def names(name: str) -> object:
+            try:
+                return plain(self.name(name, frame))
+            except LookupError:
+                return Unknown(name)
+
+        result = evaluate_node(expr, names, BUILTINS)
+        return Unknown(type(expr).__name__) if isinstance(result, Unknown) else \
+            from_plain(result)
 
     def _Constant(self, expr: ast.Constant, frame: Frame) -> object:
         if isinstance(expr.value, str):
             return Value.of(expr.value)
         if isinstance(expr.value, bool | int | float) or expr.value is None:
             return expr.value
-        return Opaque("constant")
+        return Unknown("constant")
 
     def _JoinedStr(self, expr: ast.JoinedStr, frame: Frame) -> object:
         parts: list[Value | str] = []
@@ -91,23 +107,21 @@ class Evaluator(Instances, QoSProfiles):
             elif isinstance(expr.op, ast.Mult):
                 budget.check_int_op("*", left, right)
         except budget.OverBudget as err:
-            return Opaque(err.reason)
+            return Unknown(err.reason)
         if isinstance(expr.op, ast.Add):
             if isinstance(left, Value) or isinstance(right, Value):
                 return Value.of(text_of(left), text_of(right))
-            if number(left) and number(right):
-                return left + right  # type: ignore[operator]
             if isinstance(left, Seq) and isinstance(right, Seq):
                 return Seq(left.items + right.items)
         if isinstance(expr.op, ast.Mod) and isinstance(left, Value):
             items = right.items if isinstance(right, Seq) else (right,)
             return percent(left, items)
-        if isinstance(expr.op, ast.Mult | ast.Sub | ast.Div) and number(left) and number(right):
+        if number(left) and number(right):  # the one evaluator's arithmetic, bounded
             try:
-                return arith(expr.op, left, right)
-            except (ZeroDivisionError, OverflowError):
-                return Opaque("arithmetic")
-        return Opaque("operation")
+                return ops.binary(type(expr.op), left, right)
+            except ops.Refused as err:
+                return Unknown(err.reason)
+        return Unknown("operation")
 
     def _Name(self, expr: ast.Name, frame: Frame) -> object:
         return self.name(expr.id, frame)
@@ -123,7 +137,7 @@ class Evaluator(Instances, QoSProfiles):
         if isinstance(base, Seq) and isinstance(index, int) and -len(base.items) <= index < len(
                 base.items):
             return base.items[index]
-        return Opaque("subscript")
+        return Unknown("subscript")
 
     def _Attribute(self, expr: ast.Attribute, frame: Frame) -> object:
         base = self.eval(expr.value, frame)
@@ -134,7 +148,7 @@ class Evaluator(Instances, QoSProfiles):
             return Ref(f"{base.qualname}.{attr}")
         if isinstance(base, ModuleRef):
             found = self.lookup(base.module, attr)
-            inner = submodule(base.module.path, attr) if isinstance(found, Opaque) else None
+            inner = submodule(base.module.path, attr) if isinstance(found, Unknown) else None
             other = self.loader.load(inner) if inner is not None else None
             return ModuleRef(other) if other is not None else found
         if isinstance(base, Instance):
@@ -146,14 +160,14 @@ class Evaluator(Instances, QoSProfiles):
             if (attr in rclpy.NODE_METHODS or attr in NAME_METHODS
                     or attr == "get_namespace") and self.is_node_class(base.cls):
                 return NodeMethod(attr, owner=base)
-            return Opaque(f"self.{attr}")
+            return Unknown(f"self.{attr}")
         if isinstance(base, ClassInfo):
             for c in self.mro(base):
                 if attr in c.constants:
                     return self.eval(c.constants[attr], Frame(c.module))
                 if attr in c.methods:
                     return c.methods[attr]
-            return Opaque(attr)
+            return Unknown(attr)
         if isinstance(base, ParameterClient) and attr in rclpy.NODE_METHODS:
             return NodeMethod(attr, base.remote)
         if isinstance(base, NodeHandle) and (attr in rclpy.NODE_METHODS or attr in NAME_METHODS
@@ -165,13 +179,18 @@ class Evaluator(Instances, QoSProfiles):
                 return ParamValue(base.name, base.default)
             if attr == "get_parameter_value":
                 return base
-        if isinstance(base, Opaque | Value | type(None)) and attr in rclpy.NODE_METHODS \
+        if isinstance(base, Unknown | Value | type(None)) and attr in rclpy.NODE_METHODS \
                 and frame.module.version == 2:
             return NodeMethod(attr)
-        return Opaque(attr)
+        return Unknown(attr)
 
     def _Call(self, expr: ast.Call, frame: Frame) -> object:
-        func = self.callee(expr.func, frame)
+        base: object = None
+        if isinstance(expr.func, ast.Attribute) and expr.func.attr != "__init__":
+            base = self.eval(expr.func.value, frame)  # once: a.b().c().d() is linear
+            func = self.attribute(base, expr.func.attr, frame)
+        else:
+            func = self.callee(expr.func, frame)
         if isinstance(func, ParamObject):  # get_parameter_value()
             return func
         if isinstance(func, Ref):
@@ -182,18 +201,16 @@ class Evaluator(Instances, QoSProfiles):
             return self.construct(func, expr, frame)
         if isinstance(func, FunctionInfo | BoundMethod):
             return self.returned(func, expr, frame)
-        if isinstance(expr.func, ast.Attribute) and isinstance(func, Opaque):
-            base = self.eval(expr.func.value, frame)
-            if isinstance(base, Value):
-                return string_method(base, expr.func.attr, [
-                    self.eval(a, frame) for a in expr.args])
+        if isinstance(expr.func, ast.Attribute) and isinstance(func, Unknown) \
+                and isinstance(base, Value):
+            return string_method(base, expr.func.attr, [self.eval(a, frame) for a in expr.args])
         if isinstance(expr.func, ast.Name) and expr.func.id in ("str", "int", "float") \
                 and len(expr.args) == 1:
             value = self.eval(expr.args[0], frame)
             if expr.func.id == "str":
                 return text_of(value)
-            return value if number(value) else Opaque(expr.func.id)
-        return Opaque("call")
+            return value if number(value) else Unknown(expr.func.id)
+        return Unknown("call")
 
     def callee(self, func: ast.expr, frame: Frame) -> object:
         """What a call's function expression names."""
@@ -230,7 +247,7 @@ class Evaluator(Instances, QoSProfiles):
                                    else Value.unknown("remote node"))
         if key == ("rclpy", "QoSProfile"):
             return self.qos_profile(expr, frame)
-        return Opaque(ref.qualname)
+        return Unknown(ref.qualname)
 
     def _node_method(self, name: str, expr: ast.Call, frame: Frame) -> object:
         if name in NAME_METHODS and not expr.args:
@@ -246,12 +263,12 @@ class Evaluator(Instances, QoSProfiles):
                 default = self.eval(value, frame)
             self.param_defaults[text] = default
             return ParamObject(text, default)
-        return Opaque(name)
+        return Unknown(name)
 
     def returned(self, func: FunctionInfo | BoundMethod, expr: ast.Call, frame: Frame) -> object:
         """What a helper returns, when its body is straight-line code ending in return."""
         if frame.depth >= MAX_CALL_DEPTH:
-            return Opaque("call depth")
+            return Unknown("call depth")
         inner = self.call_frame(func, expr, frame)
         info = func.function if isinstance(func, BoundMethod) else func
         for statement in info.node.body:
@@ -261,7 +278,7 @@ class Evaluator(Instances, QoSProfiles):
                 self.assign(statement, inner)
             elif not isinstance(statement, ast.Expr | ast.Pass):
                 break
-        return Opaque(f"{info.qualname}()")
+        return Unknown(f"{info.qualname}()")
 
 
 def _length(value: object) -> int:

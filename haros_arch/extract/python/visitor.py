@@ -31,7 +31,6 @@ from .objects import (
     Instance,
     NodeHandle,
     NodeMethod,
-    Opaque,
     ParamValue,
     Ref,
     SuperInit,
@@ -167,11 +166,11 @@ class Walker:
         loop = condition("for", text, self._where(frame, statement))
         items = self.evaluator.iteration(statement.iter, frame)
         # a loop over a known, short sequence is unrolled: one walk of the body per item
-        for item in items if items else (Opaque("loop variable"),):
+        for item in items if items else (Unknown("loop variable"),):
             self.evaluator.bind(statement.target, item, frame)
             self._block(statement.body, frame, (*conds, loop))
         if items:  # after the loop its variable is unknown to the rest of the walk
-            self.evaluator.bind(statement.target, Opaque("loop variable"), frame)
+            self.evaluator.bind(statement.target, Unknown("loop variable"), frame)
         self._block(statement.orelse, frame, conds)
 
     _AsyncFor = _For
@@ -467,7 +466,7 @@ class Walker:
             return f"{value.instance.cls.name}.{value.function.node.name}"
         if isinstance(value, FunctionInfo):
             return value.qualname
-        if isinstance(expr, ast.Attribute) and isinstance(value, Opaque):
+        if isinstance(expr, ast.Attribute) and isinstance(value, Unknown):
             return expr.attr
         return None
 

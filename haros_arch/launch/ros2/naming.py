@@ -18,6 +18,8 @@
 
 from __future__ import annotations
 
+import copy
+import functools
 import re
 from collections.abc import Hashable, Iterator
 from dataclasses import dataclass, field
@@ -213,7 +215,13 @@ def load_param_file(text: str) -> Any:
 
 
 def yaml_value(text: str) -> Any:
-    """A parameter given as text (``-p``, a substitution) is read as YAML, like launch_ros."""
+    """A parameter given as text (``-p``, a substitution) is read as YAML, like launch_ros
+    (the same text, given to many nodes, is read once; a list comes as a fresh copy)."""
+    value = _short_yaml_value(text) if len(text) <= 256 else _yaml_value(text)
+    return copy.deepcopy(value) if isinstance(value, list) else value
+
+
+def _yaml_value(text: str) -> Any:
     try:
         value = safe_yaml.load(text)
     except yaml.YAMLError:
@@ -221,6 +229,9 @@ def yaml_value(text: str) -> Any:
     if value is None or isinstance(value, dict):
         return text
     return value
+
+
+_short_yaml_value = functools.lru_cache(maxsize=4096)(_yaml_value)
 
 
 def node_patterns(document: Any, depth: int = 0,

@@ -85,6 +85,9 @@ def perform_composable(runner: Runner, component: e.ComposableNode, scope: Scope
     node_params(runner, ev, full, list(component.parameters), inner, where)
 
 
+MAX_PARAM_ENTRIES = 100_000  # SetParameter-in-scope and own entries, over all nodes
+
+
 def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamEntry],
                 scope: Scope, where: Location) -> None:
     found: dict[str, tuple[Any, Location]] = {}
@@ -122,6 +125,14 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
                 else:
                     pending.append((pattern, name, leaf, location))
 
+    before = runner.param_entries
+    runner.param_entries += len(scope.params) + len(entries)
+    if runner.param_entries > MAX_PARAM_ENTRIES:  # each node takes every one in scope
+        if before <= MAX_PARAM_ENTRIES:  # said once, where it happened
+            runner.report("LAUNCH_PY_BUDGET", where, detail=f"more than {MAX_PARAM_ENTRIES} "
+                          "parameter entries applied to nodes: the parameters of the "
+                          "nodes from this one on are not read")
+        return
     for key, value, location in scope.params:  # SetParameter(s), SetParametersFromFile
         if key is None:
             read_file(value, location)

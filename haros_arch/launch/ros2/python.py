@@ -22,8 +22,9 @@ from typing import Any
 
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
-from ...evaluate import syntax
+from ...evaluate import budget, syntax
 from ...model.location import Location
+from ...model.values import Unknown
 from ...workspace import Workspace
 from . import entities as e
 from .python_expressions import Expressions, _Bound
@@ -40,7 +41,6 @@ from .python_values import (
     LaunchDescription,
     ReadOnlyFile,
     Ref,
-    Unk,
     _Break,
     _Continue,
     _Flow,
@@ -77,18 +77,18 @@ class Interpreter(Expressions):
         col = getattr(node, "col_offset", -1) + 1
         return self.workspace.location(self.path, line, col)
 
-    def unsupported(self, node: ast.AST | None, detail: str) -> Unk:
+    def unsupported(self, node: ast.AST | None, detail: str) -> Unknown:
         found = diag.make("LAUNCH_PY_UNSUPPORTED", self.where(node), detail=detail)
         if found not in self.diagnostics:
             self.diagnostics.append(found)
-        return Unk(detail)
+        return Unknown(detail, "unsupported")
 
     def unknown_value(self, node: ast.AST, detail: str) -> None:
         self.diagnostics.append(diag.make("LAUNCH_UNKNOWN_VALUE", self.where(node),
                                           detail=detail))
 
-    def tick(self) -> None:
-        self.steps += 1
+    def tick(self, count: int = 1) -> None:
+        self.steps += count
         if self.steps > MAX_STEPS:
             raise Budget(f"more than {MAX_STEPS} evaluation steps")
 
@@ -111,7 +111,7 @@ class Interpreter(Expressions):
             elif isinstance(stmt, ast.If) and "__name__" in ast.dump(stmt.test):
                 continue  # if __name__ == '__main__': never run
             elif isinstance(stmt, ast.ClassDef):  # never run; a use of it is reported
-                self.globals[stmt.name] = Unk(f"class {stmt.name} (not interpreted)")
+                self.globals[stmt.name] = Unknown(f"class {stmt.name} (not interpreted)")
             else:
                 self.unsupported(stmt, f"module-level {type(stmt).__name__} is not "
                                        "interpreted (never run)")
@@ -133,13 +133,16 @@ class Interpreter(Expressions):
         if not isinstance(value, (list, tuple)):
             self.unsupported(node, "launch description is not known statically")
             return []
+        if budget.item_count(value, MAX_SIZE) > MAX_SIZE:
+            self.unsupported(node, f"launch description of more than {MAX_SIZE} items")
+            return []
         out: list[e.Action] = []
         for item in value:
             if isinstance(item, (LaunchDescription, list, tuple)):
                 out.extend(self.actions_of(item, node))
             elif isinstance(item, e.Action):
                 out.append(item)
-            elif item is not None and not isinstance(item, Unk):
+            elif item is not None and not isinstance(item, Unknown):
                 self.unsupported(node, f"{type(item).__name__} is not a launch action")
         return out
 
@@ -212,13 +215,13 @@ class Interpreter(Expressions):
         elif isinstance(target, (ast.Tuple, ast.List)):
             items = list(value) if isinstance(value, (list, tuple)) else None
             if items is None or len(items) != len(target.elts):
-                items = [Unk("unpacking")] * len(target.elts)
+                items = [Unknown("unpacking")] * len(target.elts)
             for sub, item in zip(target.elts, items, strict=False):
                 self.assign(sub, item, env)
         elif isinstance(target, ast.Subscript):
             container = self.eval(target.value, env)
             key = self.eval(target.slice, env)
-            if isinstance(container, dict) and not isinstance(key, (Unk, list, dict)):
+            if isinstance(container, dict) and not isinstance(key, (Unknown, list, dict)):
                 container[key] = value
                 self.sized(container)
             elif isinstance(container, list) and isinstance(key, int) and (
@@ -254,7 +257,7 @@ class Interpreter(Expressions):
                 self.unsupported(stmt, "with statements other than open() are not "
                                        "interpreted")
                 for name in _assigned(stmt.body):  # what the body sets is unknown
-                    env[name] = Unk(f"{name} set in a with statement not interpreted")
+                    env[name] = Unknown(f"{name} set in a with statement not interpreted")
                 return
             if item.optional_vars is not None:
                 self.assign(item.optional_vars, value, env)
@@ -308,13 +311,22 @@ class Interpreter(Expressions):
             short = name.rsplit(".", 1)[-1]
             handler = self.api.get(short)
             if handler is not None and (_known_module(name) or short in self.builtins):
+                self.charge_arguments([*args, *kwargs.values()])
                 return handler(self, args, kwargs, node)
             return self.unsupported(node, f"call to {name} is not interpreted (never run)")
         if isinstance(func, _Bound):
+            self.charge_arguments([func.owner, *args, *kwargs.values()])
             return func.call(self, args, kwargs, node)
-        if isinstance(func, Unk) and func.why.startswith("class "):
-            return self.unsupported(node, f"call to {func.why}")
+        if isinstance(func, Unknown) and func.origin.startswith("class "):
+            return self.unsupported(node, f"call to {func.origin}")
         return self.unsupported(node, "call to a value that is not known statically")
+
+    def charge_arguments(self, values: list[Any]) -> None:
+        """What a builder, builtin or method will walk: containers by their nested size,
+        shared parts each time (``[[[1] * 300] * 300] * 300`` is 27 million items)."""
+        for value in values:
+            if isinstance(value, (list, tuple, dict)):
+                self.tick(budget.item_count(value, MAX_STEPS))
 
     def call_function(self, func: Func, args: list[Any], kwargs: dict[str, Any],
                       node: ast.AST) -> Any:
@@ -336,9 +348,9 @@ class Interpreter(Expressions):
                 else:
                     back = index - (len(positional) - len(defaults))
                     env[name] = (self.eval(defaults[back], func.closure) if back >= 0
-                                 else Unk(f"argument {name}"))
+                                 else Unknown(f"argument {name}"))
             for arg, default in zip(params.kwonlyargs, params.kw_defaults, strict=False):
-                env[arg.arg] = kwargs.get(arg.arg, Unk(arg.arg) if default is None
+                env[arg.arg] = kwargs.get(arg.arg, Unknown(arg.arg) if default is None
                                           else self.eval(default, func.closure))
             if params.vararg:
                 env[params.vararg.arg] = list(args[len(positional):])

@@ -18,7 +18,7 @@ from typing import Any
 
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
-from ...model.values import Value
+from ...model.values import Unknown, Value
 from ...share import install_prefix
 from . import entities as e
 from .python import Interpreter
@@ -42,7 +42,6 @@ from .python_values import (
     Context,
     LaunchDescription,
     Lazy,
-    Unk,
     _Flow,
     concat,
     to_text,
@@ -89,7 +88,7 @@ def package_directory(share: bool) -> Builder:
 def path_join(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     parts = arg(a, k, 0, "substitutions", default=[])
     if not isinstance(parts, (list, tuple)):
-        return Unk("PathJoinSubstitution of an unknown list")
+        return Unknown("PathJoinSubstitution of an unknown list")
     return e.PathJoin(tuple(to_text(p) for p in parts))
 
 
@@ -101,14 +100,14 @@ def path_substitution(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
 def pure_path(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     """``pathlib.Path(...)`` of known strings: a pure path (no file is looked at)."""
     if k or not all(isinstance(p, (str, PurePosixPath)) for p in a):
-        return Unk("a pathlib path of values not known statically")
+        return Unknown("a pathlib path of values not known statically")
     return PurePosixPath(*a)
 
 
 def os_path_join(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     a = [str(p) if isinstance(p, PurePosixPath) else p for p in a]
     if all(isinstance(p, str) for p in a):
-        return os.path.join(*a) if a else Unk("os.path.join()")
+        return os.path.join(*a) if a else Unknown("os.path.join()")
     return Lazy((e.PathJoin(tuple(to_text(p) for p in a)),))
 
 
@@ -117,8 +116,8 @@ def os_path(function: Callable[[str], Any]) -> Builder:
         if a and isinstance(a[0], (str, PurePosixPath)):
             return function(str(a[0]))
         if function is os.path.dirname and a and isinstance(a[0], Lazy):
-            return Unk("dirname of a path not known statically")
-        return Unk(f"{function.__name__} of a value not known statically")
+            return Unknown("dirname of a path not known statically")
+        return Unknown(f"{function.__name__} of a value not known statically")
     return build
 
 
@@ -223,7 +222,7 @@ def param_value(value: Any) -> Any:
     """Python values stay (a string too: launch_ros dumps it as YAML and reads it back,
     so ``'1'`` stays the string); substitutions become Text (read as YAML when
     performed)."""
-    if isinstance(value, (Lazy, e.Subst, Unk)):
+    if isinstance(value, (Lazy, e.Subst, Unknown)):
         return to_text(value)
     if isinstance(value, (list, tuple)):
         if any(isinstance(v, (Lazy, e.Subst)) for v in value) and all(
@@ -295,7 +294,7 @@ def composables(i: Interpreter, value: Any, n: ast.AST) -> list[e.ComposableNode
 def load_composable(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     target = k.get("target_container")
     if isinstance(target, e.NodeAction):
-        target = target.name if target.name is not None else Unk("container without name")
+        target = target.name if target.name is not None else Unknown("container without name")
     return finish(i, e.LoadComposable(to_text(target), composables(
         i, k.get("composable_node_descriptions"), n)), k, n)
 
@@ -438,7 +437,7 @@ def param_file(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
 
 def parameter_value(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     value_type = k.get("value_type")
-    as_text = isinstance(value_type, Unk) is False and getattr(
+    as_text = isinstance(value_type, Unknown) is False and getattr(
         value_type, "qualified", "") == "str"
     return e.ParamValue(to_text(a[0]) if a and as_text else param_value(a[0] if a else None),
                         as_text)
@@ -511,7 +510,7 @@ API: dict[str, Builder] = {
     "max": builtin(max, int, float, list, tuple), "abs": builtin(abs, int, float),
     "enumerate": builtin(lambda x: list(enumerate(x)), list, tuple, str),
     "zip": builtin(lambda *x: list(zip(*x, strict=False)), list, tuple), "range": bounded_range,
-    "print": ignored, "isinstance": lambda i, a, k, n: Unk("isinstance"),
+    "print": ignored, "isinstance": lambda i, a, k, n: Unknown("isinstance"),
     "all": builtin(all, list, tuple), "any": builtin(any, list, tuple),
     "open": open_file, "safe_load": safe_load,
     "process_file": xacro_process_file, "process": xacro_process,

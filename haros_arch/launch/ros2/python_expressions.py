@@ -13,18 +13,16 @@ from dataclasses import dataclass
 from pathlib import PurePosixPath
 from typing import TYPE_CHECKING, Any
 
-from ...evaluate import budget
+from ...evaluate import operations as ops
+from ...model.values import Unknown
 from . import entities as e
 from .python_values import (
-    _BINARY,
-    _COMPARE,
-    MAX_SIZE,
+    LIMITS,
     Budget,
     Context,
     Func,
     Lazy,
     Ref,
-    Unk,
     _hashable,
     _opaque,
     _source,
@@ -50,13 +48,13 @@ class Expressions:
     environment: dict[str, str]
     guards: list[str]
 
-    def tick(self) -> None:
+    def tick(self, count: int = 1) -> None:
         raise NotImplementedError
 
     def sized(self, value: Any) -> Any:
         raise NotImplementedError
 
-    def unsupported(self, node: ast.AST | None, detail: str) -> Unk:
+    def unsupported(self, node: ast.AST | None, detail: str) -> Unknown:
         raise NotImplementedError
 
     def unknown_value(self, node: ast.AST, detail: str) -> None:
@@ -123,6 +121,7 @@ class Expressions:
                     out.update(merged)
                 continue
             k = self.eval(key, env)
+            self.tick(ops.walk_cost(k, LIMITS))  # the key is hashed
             out[_hashable(k)] = self.eval(value, env)
         return out
 
@@ -130,10 +129,23 @@ class Expressions:
         parts: list[Any] = []
         for value in node.values:
             if isinstance(value, ast.FormattedValue):
-                parts.append(self.eval(value.value, env))
+                parts.append(self.formatted(value, env))
             else:
                 parts.append(self.eval(value, env))
         return concat(parts)
+
+    def formatted(self, node: ast.FormattedValue, env: dict[str, Any]) -> Any:
+        """``{value!r:spec}`` of an f-string: formatted by the one evaluator when the value
+        and the spec are known; a substitution keeps its place otherwise."""
+        value = self.eval(node.value, env)
+        if node.format_spec is None and node.conversion == -1:
+            return value
+        spec = self.eval(node.format_spec, env) if node.format_spec is not None else ""
+        if not isinstance(spec, str) or not isinstance(value, (str, int, float, bool)) or (
+                value is None):
+            return value
+        return self.operation(lambda: ops.format_value(value, spec, node.conversion, LIMITS),
+                              node)
 
     def e_BinOp(self, node: ast.BinOp, env: dict[str, Any]) -> Any:
         return self.binop(node.op, self.eval(node.left, env), self.eval(node.right, env), node)
@@ -145,54 +157,42 @@ class Expressions:
             return PurePosixPath(left) / right  # pathlib, pure: no file is looked at
         if isinstance(op, ast.Div) and isinstance(left, e.PathJoin):
             # PathJoinSubstitution / part, as pathlib.Path does (launch >= 3.7)
-            if isinstance(right, Unk):
-                return Unk("a path part not known statically")
+            if isinstance(right, Unknown):
+                return Unknown("a path part not known statically")
             return e.PathJoin((*left.parts, to_text(right)))
         if isinstance(op, ast.Add) and (is_stringy(left) or is_stringy(right)) and not (
                 isinstance(left, list) or isinstance(right, list)):
             return concat([left, right])
-        if isinstance(left, Unk) or isinstance(right, Unk):
-            return Unk("arithmetic on an unknown value")
-        if isinstance(op, ast.Mult):
-            count = right if isinstance(right, int) else left if isinstance(left, int) else 0
-            other = left if isinstance(right, int) else right
-            if isinstance(other, (str, list, tuple)) and len(other) * max(count, 0) > MAX_SIZE:
-                raise Budget(f"a value with more than {MAX_SIZE} items or characters")
-        if isinstance(op, ast.Pow) and isinstance(right, (int, float)) and abs(right) > 256:
-            raise Budget("an exponent above 256")
-        if isinstance(op, ast.LShift) and isinstance(right, int) and right > 256:
-            raise Budget("a shift above 256 bits")
+        if isinstance(left, Unknown) or isinstance(right, Unknown):
+            return Unknown("arithmetic on an unknown value")
         if isinstance(op, ast.Mod) and isinstance(left, str) and (
                 isinstance(right, (Lazy, e.Subst)) or (
                     isinstance(right, tuple) and any(is_lazy(x) for x in right))):
             return self.unsupported(node, "%-formatting with substitutions")
-        function = _BINARY.get(type(op))
         known = (str, int, float, bool, list, tuple, type(None))
-        if function is None or not isinstance(left, known) or not isinstance(right, known):
+        if not isinstance(left, known) or not isinstance(right, known):
             return self.unsupported(node, "operation on values not known statically")
-        try:  # the size of what it would make, before making it
-            if isinstance(op, ast.Mod) and isinstance(left, str):
-                budget.percent_length(left, right, MAX_SIZE)
-            symbol = {ast.Mult: "*", ast.Pow: "**", ast.LShift: "<<"}.get(type(op))
-            if symbol is not None:
-                budget.check_int_op(symbol, left, right)
-        except budget.OverBudget as err:
+        return self.operation(lambda: ops.binary(type(op), left, right, LIMITS), node)
+
+    def operation(self, action: Callable[[], Any], node: ast.AST) -> Any:
+        """An operation of the one evaluator on known values: its bound stops the file
+        (``Budget``), anything else it refuses is an unsupported construct here."""
+        try:
+            return action()
+        except ops.Refused as err:
             if err.kind == "limit":
                 raise Budget(err.reason) from None
-            return self.unsupported(node, err.reason)
-        try:
-            return function(left, right)
-        except (TypeError, ValueError, ZeroDivisionError, OverflowError, IndexError) as err:
-            return self.unsupported(node, f"operation fails: {err}")
+            return self.unsupported(node, f"operation fails: {err.reason}" if err.kind
+                                    == "error" else err.reason)
 
     def e_UnaryOp(self, node: ast.UnaryOp, env: dict[str, Any]) -> Any:
         value = self.eval(node.operand, env)
         if isinstance(node.op, ast.Not):
             truth = self.truth(value)
-            return Unk("not of an unknown value") if truth is None else not truth
+            return Unknown("not of an unknown value") if truth is None else not truth
         if isinstance(value, (int, float)) and not isinstance(value, bool):
             return -value if isinstance(node.op, ast.USub) else value
-        return Unk("unary operation")
+        return Unknown("unary operation")
 
     def e_BoolOp(self, node: ast.BoolOp, env: dict[str, Any]) -> Any:
         is_and = isinstance(node.op, ast.And)
@@ -201,7 +201,7 @@ class Expressions:
             result = self.eval(operand, env)
             truth = self.truth(result)
             if truth is None:
-                return Unk("boolean of an unknown value")
+                return Unknown("boolean of an unknown value")
             if truth != is_and:
                 return result
         return result
@@ -211,22 +211,20 @@ class Expressions:
         for op, comparator in zip(node.ops, node.comparators, strict=False):
             right = self.eval(comparator, env)
             if _opaque(left) or _opaque(right):
-                return Unk(f"comparison {_source(node)}")
-            function = _COMPARE.get(type(op))
-            if function is None:
-                return Unk("comparison")
+                return Unknown(f"comparison {_source(node)}")
+            self.tick(ops.compare_cost(left, right, LIMITS))
             try:
-                if not function(left, right):
+                if not ops.compare(type(op), left, right):
                     return False
-            except TypeError:
-                return Unk("comparison")
+            except ops.Refused:
+                return Unknown("comparison")
             left = right
         return True
 
     def e_IfExp(self, node: ast.IfExp, env: dict[str, Any]) -> Any:
         truth = self.truth(self.eval(node.test, env))
         if truth is None:
-            return Unk(f"conditional expression {_source(node.test)}")
+            return Unknown(f"conditional expression {_source(node.test)}")
         return self.eval(node.body if truth else node.orelse, env)
 
     def e_Subscript(self, node: ast.Subscript, env: dict[str, Any]) -> Any:
@@ -237,17 +235,18 @@ class Expressions:
         if isinstance(value, Context) and isinstance(node.value, ast.Attribute):
             return value.perform((e.Var(_text_of(key)),))
         if isinstance(key, slice) or isinstance(value, (dict, list, tuple, str)):
+            self.tick(ops.walk_cost(key, LIMITS))  # a key is hashed
             try:
                 return value[_hashable(key)]
             except (KeyError, IndexError, TypeError):
                 return self.unsupported(node, f"{_source(node)} is not known statically")
-        return Unk("subscript")
+        return Unknown("subscript")
 
     def e_Slice(self, node: ast.Slice, env: dict[str, Any]) -> Any:
         parts = [None if p is None else self.eval(p, env)
                  for p in (node.lower, node.upper, node.step)]
         if any(p is not None and not isinstance(p, int) for p in parts):
-            return Unk("slice")
+            return Unknown("slice")
         return slice(*parts)
 
     def e_Attribute(self, node: ast.Attribute, env: dict[str, Any]) -> Any:
@@ -364,7 +363,7 @@ class _Environ:
         if len(args) > 1:
             return args[1]
         if not isinstance(name, str):
-            return Unk("environment")
+            return Unknown("environment")
         interp.unknown_value(node, f"environment variable {name} is not set in the "
                                    "configuration")
         return Lazy((e.Opaque(f"environment variable {name}", report=False),))

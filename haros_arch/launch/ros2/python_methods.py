@@ -17,16 +17,16 @@ from typing import TYPE_CHECKING, Any
 import yaml
 
 from ... import safe_yaml
-from ...evaluate import budget
+from ...evaluate import operations as ops
+from ...model.values import Unknown
 from . import entities as e
 from .python_values import (
-    MAX_SIZE,
+    LIMITS,
     Budget,
     Context,
     LaunchDescription,
     Lazy,
     ReadOnlyFile,
-    Unk,
     XacroDocument,
     concat,
     to_text,
@@ -64,13 +64,20 @@ def cond(interp: Interpreter, value: Any, node: ast.AST) -> e.Cond | None:
 
 # -- builtins --------------------------------------------------------------------------------
 def builtin(function: Callable[..., Any], *types: type) -> Builder:
+    """A builtin on known arguments of ``types``, through the one evaluator's table (its
+    bounded ``str``, ``int``, ... where it has one) and its size check."""
+    name = getattr(function, "__name__", "builtin")
+    function = ops.BUILTINS.get(name, function)
+
     def build(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
         if k or any(not isinstance(v, types) for v in a):
-            return Unk(f"{function.__name__}() of values not known statically")
+            return Unknown(f"{name}() of values not known statically")
         try:
-            return function(*a)
-        except (TypeError, ValueError, OverflowError) as err:
-            return i.unsupported(n, f"{function.__name__}() fails: {err}")
+            return ops.call_builtin(function, a, {}, LIMITS)
+        except ops.Refused as err:
+            if err.kind == "limit":
+                raise Budget(err.reason) from None
+            return i.unsupported(n, f"{name}() fails: {err.reason}")
     return build
 
 
@@ -88,7 +95,7 @@ def safe_load(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     text = i.read(source.path, n) if isinstance(source, ReadOnlyFile) else (
         source if isinstance(source, str) else None)
     if text is None:
-        return Unk("YAML not known statically")
+        return Unknown("YAML not known statically")
     try:
         return safe_yaml.load(text)
     except yaml.YAMLError as err:
@@ -97,7 +104,7 @@ def safe_load(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
 
 def bounded_range(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     if not all(isinstance(v, int) for v in a) or not a:
-        return Unk("range of unknown bounds")
+        return Unknown("range of unknown bounds")
     values = range(*a)
     if len(values) > 10_000:
         return i.unsupported(n, "range() above 10000 items is not expanded")
@@ -121,7 +128,7 @@ def m_find(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
 def m_read(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
     if isinstance(owner, ReadOnlyFile):
         text = i.read(owner.path, n)
-        return Unk("unreadable file") if text is None else text
+        return Unknown("unreadable file") if text is None else text
     return i.unsupported(n, ".read() on a value not known statically")
 
 
@@ -131,11 +138,11 @@ def m_evaluate(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> An
         return i.unsupported(n, ".evaluate() outside an OpaqueFunction")
     value = a[0].perform(owner.expression)
     if not isinstance(value, str):
-        return Unk(f"condition {owner.source}")
+        return Unknown(f"condition {owner.source}")
     if owner.equals is not None:
         expected = a[0].perform(owner.equals)
         if not isinstance(expected, str):
-            return Unk(f"condition {owner.source}")
+            return Unknown(f"condition {owner.source}")
         return (value == expected) != owner.negate
     lowered = value.strip().lower()
     if lowered not in ("true", "1", "false", "0"):
@@ -174,9 +181,9 @@ def m_str(name: str) -> Method:
         if name == "perform":
             if isinstance(owner, (e.Subst, Lazy)) and a and isinstance(a[0], Context):
                 return a[0].perform(to_text(owner))
-            return Unk("perform() outside an OpaqueFunction")
+            return Unknown("perform() outside an OpaqueFunction")
         if name == "format" and isinstance(owner, str) and any(
-                isinstance(v, (Lazy, e.Subst, Unk)) for v in [*a, *k.values()]):
+                isinstance(v, (Lazy, e.Subst, Unknown)) for v in [*a, *k.values()]):
             return _format_lazy(owner, a, k)
         if not isinstance(owner, str) or not all(
                 isinstance(v, (str, int, float, list, tuple)) for v in [*a, *k.values()]):
@@ -185,17 +192,14 @@ def m_str(name: str) -> Method:
                 for index, item in enumerate(a[0]):
                     pieces.extend([owner, item] if index else [item])
                 return concat(pieces)
-            return Unk(f"str.{name}() of a value not known statically")
+            return Unknown(f"str.{name}() of a value not known statically")
         try:  # the size of what it would make, before making it
-            budget.str_method_length(owner, name, a, k, MAX_SIZE)
-        except budget.OverBudget as err:
+            return ops.call_method(owner, name, a, k, LIMITS)
+        except ops.Refused as err:
             if err.kind == "limit":
                 raise Budget(err.reason) from None
-            return i.unsupported(n, f"str.{name}(): {err.reason}")
-        try:
-            return i.sized(getattr(owner, name)(*a, **k))
-        except (TypeError, ValueError, IndexError, KeyError) as err:
-            return i.unsupported(n, f"str.{name}() fails: {err}")
+            return i.unsupported(n, f"str.{name}() fails: {err.reason}" if err.kind == "error"
+                                 else f"str.{name}(): {err.reason}")
     return call
 
 
@@ -209,12 +213,12 @@ def _format_lazy(template: str, a: Args, k: Kwargs) -> Any:
         field_name, _, rest = after.partition("}")
         pieces.append(before)
         if field_name == "":
-            pieces.append(a[index] if index < len(a) else Unk("format"))
+            pieces.append(a[index] if index < len(a) else Unknown("format"))
             index += 1
         elif field_name.isdigit():
-            pieces.append(a[int(field_name)] if int(field_name) < len(a) else Unk("format"))
+            pieces.append(a[int(field_name)] if int(field_name) < len(a) else Unknown("format"))
         else:
-            pieces.append(k.get(field_name, Unk("format")))
+            pieces.append(k.get(field_name, Unknown("format")))
     pieces.append(rest)
     return concat(pieces)
 
@@ -250,7 +254,7 @@ def m_path(name: str) -> Method:
     def call(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
         if not isinstance(owner, PurePosixPath) or k or not all(
                 isinstance(v, (str, PurePosixPath)) for v in a):
-            return Unk(f"Path.{name}() of a value not known statically")
+            return Unknown(f"Path.{name}() of a value not known statically")
         try:
             return getattr(owner, name)(*a)
         except (TypeError, ValueError) as err:
@@ -287,7 +291,7 @@ def m_xml(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
     """``toxml()`` / ``toprettyxml()`` of a xacro document: its command's output."""
     if isinstance(owner, XacroDocument):
         return Lazy((e.Command(owner.command, XACRO_NOT_RUN),))
-    return Unk("toxml() of a value not known statically")
+    return Unknown("toxml() of a value not known statically")
 
 
 METHODS: dict[str, Method] = {

@@ -10,9 +10,10 @@ from __future__ import annotations
 import ast
 from typing import TYPE_CHECKING, Any
 
+from ...model.values import Unknown
 from . import entities as e
 from .python_methods import Args, Builder, Kwargs, arg, cond, text_or_none
-from .python_values import Unk, to_text
+from .python_values import to_text
 
 if TYPE_CHECKING:
     from .python import Interpreter
@@ -25,7 +26,7 @@ def launch_config_as_bool(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any
 def has_node_params(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     node = arg(a, k, 1, "node_name")
     if not isinstance(node, str):
-        return Unk("HasNodeParams with a node name not known statically")
+        return Unknown("HasNodeParams with a node name not known statically")
     return e.NodeParamsIn(to_text(arg(a, k, 0, "source_file")), node)
 
 

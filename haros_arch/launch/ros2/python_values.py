@@ -1,6 +1,6 @@
 """Values of the static Python interpreter, its bounds, and how they become launch text.
 
-``Unk`` is a value we do not know; ``Lazy`` a string with substitutions or unknown parts
+``Unknown`` is a value we do not know; ``Lazy`` a string with substitutions or unknown parts
 (a ``Text``, computed when the action runs); ``Ref`` a module or an imported name;
 ``Func`` a function of the interpreted file; ``ReadOnlyFile`` what ``open()`` gives.
 """
@@ -8,12 +8,13 @@
 from __future__ import annotations
 
 import ast
-import operator
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import PurePosixPath
 from typing import Any
 
+from ...evaluate.operations import Limits
+from ...model.values import Unknown
 from . import entities as e
 
 MAX_SOURCE = 512 * 1024
@@ -22,6 +23,8 @@ MAX_DEPTH = 100
 MAX_STEPS = 200_000
 MAX_CALL_DEPTH = 40
 MAX_SIZE = 100_000  # items of a container or characters of a string
+# the one evaluator's operations, with this reader's size bound
+LIMITS = Limits(length=MAX_SIZE, steps=MAX_STEPS)
 MAX_READ = 1024 * 1024  # bytes of a file read by open() / yaml.safe_load
 
 
@@ -48,13 +51,6 @@ class _Break(_Flow):
 
 class _Continue(_Flow):
     pass
-
-
-@dataclass(frozen=True)
-class Unk:
-    """A value we do not know; ``why`` says what it came from."""
-
-    why: str
 
 
 @dataclass(frozen=True)
@@ -104,17 +100,6 @@ class Context:
     perform: Callable[[e.Text], Any]
 
 
-_BINARY: dict[type, Callable[[Any, Any], Any]] = {
-    ast.Add: operator.add, ast.Sub: operator.sub, ast.Mult: operator.mul,
-    ast.Div: operator.truediv, ast.FloorDiv: operator.floordiv, ast.Mod: operator.mod,
-    ast.Pow: operator.pow, ast.LShift: operator.lshift, ast.RShift: operator.rshift,
-    ast.BitAnd: operator.and_, ast.BitOr: operator.or_,
-}
-_COMPARE: dict[type, Callable[[Any, Any], bool]] = {
-    ast.Eq: operator.eq, ast.NotEq: operator.ne, ast.Lt: operator.lt, ast.LtE: operator.le,
-    ast.Gt: operator.gt, ast.GtE: operator.ge, ast.In: lambda a, b: a in b,
-    ast.NotIn: lambda a, b: a not in b, ast.Is: operator.is_, ast.IsNot: operator.is_not,
-}
 _KNOWN_ROOTS = ("launch", "launch_ros", "launch_xml", "launch_yaml", "os", "ament_index_python",
                 "nav2_common", "builtins", "pathlib", "yaml", "xacro")
 
@@ -140,20 +125,20 @@ def _hashable(value: Any) -> Any:
     if isinstance(value, list):
         return tuple(_hashable(v) for v in value)
     if isinstance(value, dict):
-        return Unk("dict key")
+        return Unknown("dict key")
     return value
 
 
 def _opaque(value: Any) -> bool:
-    return isinstance(value, (Unk, Lazy, e.Subst, e.Cond, e.Action))
+    return isinstance(value, (Unknown, Lazy, e.Subst, e.Cond, e.Action))
 
 
 def is_lazy(value: Any) -> bool:
-    return isinstance(value, (Lazy, e.Subst, Unk))
+    return isinstance(value, (Lazy, e.Subst, Unknown))
 
 
 def is_stringy(value: Any) -> bool:
-    return isinstance(value, (str, Lazy, e.Subst, Unk))
+    return isinstance(value, (str, Lazy, e.Subst, Unknown))
 
 
 def _text_of(value: Any) -> e.Text:
@@ -176,8 +161,8 @@ def to_text(value: Any) -> e.Text:
         return (str(value).lower(),)
     if isinstance(value, (int, float)):
         return (str(value),)
-    if isinstance(value, Unk):
-        return (e.Opaque(value.why),)
+    if isinstance(value, Unknown):
+        return (e.Opaque(value.origin),)
     if isinstance(value, e.ParamFile):
         return (e.FileRef(value),)
     return (e.Opaque(f"{type(value).__name__} value"),)
@@ -189,7 +174,7 @@ def concat(parts: list[Any]) -> Any:
     for part in parts:
         if isinstance(part, (int, float)) and not isinstance(part, bool):
             out.append(str(part))
-        elif isinstance(part, (str, Lazy, e.Subst, Unk, PurePosixPath)):
+        elif isinstance(part, (str, Lazy, e.Subst, Unknown, PurePosixPath)):
             out.extend(to_text(part))
         else:
             out.append(e.Opaque(f"{type(part).__name__} in a string"))

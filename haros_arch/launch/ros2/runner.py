@@ -66,6 +66,7 @@ class Runner:
         self.model = LaunchModel()
         self.stack: list[str] = []
         self.performed = 0
+        self.param_entries = 0  # parameter entries applied to nodes (nodes.node_params)
         self.anon: dict[str, Unknown] = {}
         self.guard: LaunchCondition | None = None  # the condition of the action at hand
 

@@ -15,6 +15,13 @@ public:
   template<class Y> void reset(Y* p);
   explicit operator bool() const;
 };
+// comparisons: with another pointer, nullptr and NULL (``p != NULL``)
+template<class T, class U> bool operator==(const shared_ptr<T>& a, const shared_ptr<U>& b);
+template<class T, class U> bool operator!=(const shared_ptr<T>& a, const shared_ptr<U>& b);
+template<class T> bool operator==(const shared_ptr<T>& a, decltype(nullptr));
+template<class T> bool operator!=(const shared_ptr<T>& a, decltype(nullptr));
+template<class T> bool operator==(const shared_ptr<T>& a, long);
+template<class T> bool operator!=(const shared_ptr<T>& a, long);
 template<class T, class... A> shared_ptr<T> make_shared(A&&... args);
 }  // namespace boost
 #endif

@@ -131,5 +131,7 @@ bool set_logger_level(const std::string& name, Level level);
 #define ROS_FATAL_STREAM_FILTER(filter, args) HAROS_STANDIN_STREAM(args)
 #define ROS_FATAL_STREAM_FILTER_NAMED(filter, name, args) HAROS_STANDIN_STREAM(args)
 #define ROS_ASSERT(cond) ((void)(cond))
+#define ROS_ASSERT_MSG(cond, ...) ((void)(cond))
+#define ROS_ASSERT_CMD(cond, cmd) ((void)(cond))
 #define ROS_BREAK() ((void)0)
 #endif

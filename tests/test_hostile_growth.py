@@ -1,0 +1,88 @@
+"""Growth the fuzzer found after the first round of bounds (#20): work that grows with the
+square of a file's size ends with a diagnostic, quickly."""
+
+from __future__ import annotations
+
+import math
+import time
+
+import pytest
+import yaml
+from conftest import package_xml
+
+from haros_arch import safe_yaml
+from haros_arch.launch import load
+from haros_arch.workspace import scan
+
+
+@pytest.mark.parametrize("text", [
+    "1", "-1", "0x1F", "0o17", "017", "1_000", "+5", "1.5", "-.5", ".inf", "-.Inf", ".nan",
+    "1e3", "6.8523015e+5", "true", "True", "yes", "Off", "n", "~", "null", "NULL", "abc",
+    "/map", "a/b", "2001-12-14", "-", "--", "---", "a-b", "-a", "1-2", "0b101", "x~",
+    "190:20:30", "a: 1", "[1, 2]", "'quoted'", "9" * 30, "",
+])
+def test_plain_scalars_read_as_the_full_yaml_reader_reads_them(text: str) -> None:
+    full = yaml.safe_load(text)
+    fast = safe_yaml.load(text)
+    assert fast == full or (isinstance(full, float) and math.isnan(full) and math.isnan(fast))
+    assert type(fast) is type(full)
+
+
+def test_set_parameters_between_many_nodes_are_bounded(write_tree) -> None:
+    # every node takes every SetParameter before it in its group: nodes x parameters
+    body = '<set_parameter name="level" value="3"/><node pkg="pkg" exec="n"/>\n' * 700
+    root = write_tree({"src/pkg/package.xml": package_xml("pkg", "ament_cmake"),
+                       "src/pkg/launch/many.launch.xml": f"<launch><group>{body}</group>"
+                                                         "</launch>\n"})
+    ws = scan([str(root / "src")], {})
+    started = time.monotonic()
+    model = load(str(root / "src/pkg/launch/many.launch.xml"), ws, {}, {})
+    assert time.monotonic() - started < 10
+    assert len(model.nodes) == 700
+    assert [d.code for d in model.diagnostics] == ["LAUNCH_PY_BUDGET"]
+    assert "parameter entries" in model.diagnostics[0].message
+
+
+def test_a_query_whose_results_grow_without_bound_is_a_query_limit() -> None:
+    from haros_arch import query
+    from haros_arch.model import Model
+    from haros_arch.query.errors import QueryLimitError
+
+    items = "[" + ",".join(str(i) for i in range(100)) + "]"
+    doubled = ", ".join(f"a{i} = a{i - 1} + a{i - 1}" for i in range(1, 16))
+    text = (f"for x in {items}, y in {items}, z in {items} "
+            f"let a0 = str(x) + 'abcdefg', {doubled} return a15")  # 10**6 results of 0.5 MB
+    started = time.monotonic()
+    with pytest.raises(QueryLimitError, match="results and the strings it builds"):
+        query.search(text, query.model_scope(Model("m")))
+    assert time.monotonic() - started < 10
+    # a query that returns a lot of small results is not refused
+    assert len(query.search(f"for x in {items}, y in {items} return str(x) + str(y)",
+                            query.model_scope(Model("m")))) == 10_000
+
+
+def test_project_file_of_opening_brackets_is_refused_at_once(tmp_path) -> None:
+    # found by scripts/fuzz: the project reader used the YAML reader without its bounds
+    from haros_arch.project import ProjectError
+    from haros_arch.project import load as load_project
+
+    path = tmp_path / "project.yaml"
+    path.write_text("[" * 200_000)
+    started = time.monotonic()
+    with pytest.raises(ProjectError, match="nested too deeply"):
+        load_project(str(path))
+    assert time.monotonic() - started < 5
+
+
+def test_python_node_reader_is_linear_in_a_chain_of_calls(write_tree) -> None:
+    # found by scripts/fuzz: a.b().c().d()... evaluated each owner twice (2 ** length)
+    from haros_arch.extract.python import extract_python
+
+    text = ("import rospy\nrospy.init_node('n')\nrospy.spin()" + ".spin()" * 58 + "\n"
+            "rospy.Publisher('t', rospy.AnyMsg, queue_size=1)\n")
+    folder = write_tree({"pkg/package.xml": package_xml("pkg"), "pkg/scripts/n.py": text})
+    started = time.monotonic()
+    result = extract_python([str(folder / "pkg/scripts/n.py")], scan([str(folder)]),
+                            package="pkg")
+    assert time.monotonic() - started < 5
+    assert [str(c.name) for c in result.calls if c.kind == "publish"] == ["t"]
