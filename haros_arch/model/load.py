@@ -88,6 +88,7 @@ def node_from_data(data: dict[str, Any], package: str) -> Node:
                            origin=str(c.get("origin", "source")),
                            has_default=bool(c.get("has_default", False)),
                            default=c.get("default"), searched=bool(c.get("searched", False)),
+                           tested=bool(c.get("tested", False)),
                            handle_namespace=c.get("handle_namespace"),
                            deletes=bool(c.get("deletes", False)),
                            node_name=c.get("node_name"), name_each=c.get("name_each"))

@@ -77,6 +77,9 @@ class PrimitiveCall:
     default: Any = None
     # searchParam / search_param: the name is looked up in the enclosing namespaces
     searched: bool = False
+    # a parameter read whose result (whether the parameter is there) the code tests:
+    # ``if (nh.getParam("x", v))``, ``!has_parameter("x")``; it handles the absence
+    tested: bool = field(default=False, metadata={"optional": True})
     # ROS 1: the namespace of the NodeHandle the call is made on, as written (``input``,
     # ``~``, ``/robot``), when ``name`` was joined to it; roscpp remaps that namespace
     # before it resolves the name in it, so the graph resolves it first

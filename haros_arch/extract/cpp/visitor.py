@@ -13,7 +13,7 @@ import dataclasses
 import itertools
 from collections.abc import Callable, Iterator
 
-from clang.cindex import Cursor, CursorKind, TranslationUnit
+from clang.cindex import Cursor, CursorKind, TranslationUnit, TypeKind
 
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
@@ -37,6 +37,8 @@ from .handles import (
 from .links import Fact, argument_facts
 from .owners import constructed_class, handle_node, owner_of
 from .qos import qos as qos_of
+from .tested import Key, TestedCalls
+from .tested import key as key_of
 from .values import PLACEHOLDER, Scope, initializer, render, strip, written_arguments
 from .wrappers import Wrappers
 
@@ -87,6 +89,8 @@ class CallFinder:
         # or the free function that makes it (``make_shared<rclcpp::Node>("x")`` in main)
         self.node_names: list[tuple[str, str]] = []
         self._owner: str | None = None  # of the function being walked
+        # reads that return whether the parameter is there, where they are
+        self._status_reads: list[tuple[Key, PrimitiveCall]] = []
         # (owner, class of the workspace it constructs): the class's calls are made on
         # its constructor's node when it names none itself (a device object given the
         # node's handle)
@@ -131,6 +135,7 @@ class CallFinder:
     def _function(self, function: Cursor) -> None:
         scope = self._scope = Scope(function, self.macros, self.source, self.sites)
         self._owner = owner_of(function)
+        tested, self._status_reads = TestedCalls(self.reader), []
         stack: list[tuple[Cursor, tuple[Condition, ...]]] = [
             (child, ()) for child in reversed(list(function.get_children()))
             if child.kind != CursorKind.PARM_DECL]
@@ -148,8 +153,11 @@ class CallFinder:
                 self._unresolved(node, conditions, scope)
             if node.kind == CursorKind.CALL_EXPR:
                 self._construction(node)
+            tested.visit(node)
             branches = self.reader.branches(node)
             stack.extend((child, conditions + extra) for child, extra in reversed(branches))
+        for site, read in self._status_reads:
+            read.tested = read.tested or site in tested.keys
 
     # -- one call ---------------------------------------------------------------------
 
@@ -375,6 +383,7 @@ class CallFinder:
             if declared is not None and declared[1] is not None:
                 self._declared[declared[0]] = declared[1]
         has_default, default = self._default(spec, args, scope)
+        status = _status_read(spec, site, len(args) - shift)
         for written, source in names:
             # getName() is "~": only as the start of a name is it the node's own name
             name = _private(written[:1] + written[1:].replace("~", "?"))
@@ -393,6 +402,8 @@ class CallFinder:
                 has_default=has_default, default=default,
                 searched=spec.searched, handle_namespace=handle_namespace,
                 deletes=spec.deletes, node_name=owner))
+            if status is not None:
+                self._status_reads.append((status, self.calls[-1]))
             if "?" in name and PLACEHOLDER not in name:
                 self.diagnostics.append(diag.make(
                     "CPP_DYNAMIC_NAME", location, kind=spec.kind, name=name))
@@ -516,6 +527,24 @@ class CallFinder:
         if spec is None or spec.fixed_name is None:
             return
         self._emit(spec, field, [], decl, (), Scope(None, self.macros, self.source, self.sites))
+
+
+def _status_read(spec: api.RosFunction, site: Cursor, count: int) -> Key | None:
+    """Where a parameter read is that returns whether the parameter is there
+    (``hasParam``, ``getParam(name, out)``, ``get_parameter(name, out)``, ``param(name,
+    out, default)``), to mark it ``tested`` when its result is a condition; None for
+    other calls (``param<T>(name, default)`` and ``get_parameter(name)`` return the
+    value)."""
+    if spec.kind != "read" or spec.per_element:
+        return None
+    if spec.out_arg is not None and (count <= spec.out_arg or (
+            spec.default_arg is not None and count <= spec.default_arg)):
+        return None
+    result = site.type.get_canonical().kind
+    if site.kind == CursorKind.CALL_EXPR and site.referenced is not None and (
+            result != TypeKind.BOOL):
+        return None
+    return key_of(site)
 
 
 def _recovered_name(expr: Cursor) -> str:

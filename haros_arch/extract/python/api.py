@@ -45,6 +45,9 @@ class PyFunction:
     fixed_qos: str | None = None  # a QoS preset name, for tf2 broadcasters
     special: str | None = None
     search: bool = False  # the name is searched up the namespaces (rospy.search_param)
+    # returns whether the parameter is set (rospy.has_param): a call whose result is a
+    # condition handles its absence (``PrimitiveCall.tested``)
+    tests: bool = False
     deletes: bool = False  # a parameter write that deletes it (rospy.delete_param)
     owner: Arg | None = None  # rclpy: the node the primitive is made on (``ActionServer(node``)
 

@@ -35,7 +35,7 @@ NODE_METHODS: dict[str, PyFunction] = {
     "get_parameter_or": PyFunction("read", value=Arg(1, "alternative_value")),
     "get_parameters": PyFunction("read", name=None, special="parameter-names"),
     "get_parameters_by_prefix": PyFunction("read", name=Arg(0, "prefix")),
-    "has_parameter": PyFunction("read"),
+    "has_parameter": PyFunction("read", tests=True),
     "set_parameters": PyFunction("write", name=None, special="set-parameters"),
     "set_parameters_atomically": PyFunction("write", name=None, special="set-parameters"),
     "undeclare_parameter": PyFunction("write"),

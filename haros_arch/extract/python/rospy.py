@@ -32,7 +32,7 @@ ROWS: dict[tuple[str, str], PyFunction] = {
     ("rospy", "get_param"): PyFunction("read", name=_PARAM_NAME, value=Arg(1, "default")),
     ("rospy", "get_param_cached"): PyFunction(
         "read", name=_PARAM_NAME, value=Arg(1, "default")),
-    ("rospy", "has_param"): PyFunction("read", name=_PARAM_NAME),
+    ("rospy", "has_param"): PyFunction("read", name=_PARAM_NAME, tests=True),
     ("rospy", "search_param"): PyFunction("read", name=_PARAM_NAME, search=True),
     ("rospy", "set_param"): PyFunction(
         "write", name=_PARAM_NAME, value=Arg(1, "param_value")),

@@ -68,6 +68,8 @@ class Walker:
         self._nested: list[FunctionInfo] = []
         self._used_classes: list[ClassInfo] = []
         self.main: set[str] = set()
+        # the calls whose result is a condition (ids of their ast.Call nodes)
+        self._tested: set[int] = set()
 
     # -- entries ------------------------------------------------------------------------
 
@@ -146,6 +148,7 @@ class Walker:
     _AugAssign = _Assign
 
     def _If(self, statement: ast.If, frame: Frame, conds: Conditions) -> None:
+        self._test(statement.test)
         self._expr(statement.test, frame, conds)
         if is_main_guard(statement.test):
             self._block(statement.body, frame, conds)
@@ -173,6 +176,7 @@ class Walker:
     _AsyncFor = _For
 
     def _While(self, statement: ast.While, frame: Frame, conds: Conditions) -> None:
+        self._test(statement.test)
         self._expr(statement.test, frame, conds)
         loop = condition("while", self._text(frame, statement.test), self._where(frame, statement))
         self._block(statement.body, frame, (*conds, loop))
@@ -243,7 +247,22 @@ class Walker:
 
     # -- calls --------------------------------------------------------------------------
 
+    def _test(self, expr: ast.expr) -> None:
+        """Note the call ``expr`` is (through ``not``): its result is a condition."""
+        while isinstance(expr, ast.UnaryOp) and isinstance(expr.op, ast.Not):
+            expr = expr.operand
+        if isinstance(expr, ast.Call):
+            self._tested.add(id(expr))
+
     def _expr(self, expr: ast.expr, frame: Frame, conds: Conditions) -> None:
+        for node in ast.walk(expr):  # operands of ``x if c else y``, ``and`` / ``or``, ``not``
+            if isinstance(node, ast.IfExp):
+                self._test(node.test)
+            elif isinstance(node, ast.BoolOp):
+                for value in node.values:
+                    self._test(value)
+            elif isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.Not):
+                self._test(node.operand)
         calls = [n for n in ast.walk(expr) if isinstance(n, ast.Call)]
         calls.sort(key=lambda c: (c.lineno, c.col_offset))
         for call in calls:
@@ -401,6 +420,7 @@ class Walker:
             if spec.kind == "declare":
                 ev.declared[base.name.removeprefix("~")] = value
         base.searched = spec.search
+        base.tested = spec.tests and id(call) in self._tested
         base.deletes = spec.deletes
         self._add(base)
 

@@ -1,0 +1,136 @@
+"""Calls whose result the code tests: ``if (nh.getParam("x", v))``, ``!nh.hasParam(..)``.
+
+A parameter read that returns whether the parameter was there, and whose result is a
+condition, is handled when the parameter is absent (``PrimitiveCall.tested``). The
+visitor shows this class every node of a function on its way down (parents before
+children); it records the calls in a condition: of an ``if``, ``while`` or ``do``, of
+``?:``, an operand of ``!``, ``&&`` or ``||``, and a ``bool`` variable initialised or
+assigned from a call that is then one of those (``bool ok = nh.getParam(..); if (!ok)``).
+"""
+
+from __future__ import annotations
+
+import re
+
+from clang.cindex import Cursor, CursorKind
+
+from .conditions import ConditionReader
+
+Key = tuple[str, int, int]
+_WRAPPERS = (CursorKind.UNEXPOSED_EXPR, CursorKind.PAREN_EXPR)
+_SHORT_CIRCUIT = re.compile(r"^\s*(&&|\|\||\band\b|\bor\b)\s*$")
+_ASSIGN = re.compile(r"^\s*=\s*$")
+_NOT = re.compile(r"^\s*(!|\bnot\b)")
+
+
+def key(cursor: Cursor) -> Key | None:
+    start, end = cursor.extent.start, cursor.extent.end
+    if start.file is None:
+        return None
+    return start.file.name, start.offset, end.offset
+
+
+class TestedCalls:
+    """The calls of one function whose result is tested."""
+
+    def __init__(self, reader: ConditionReader) -> None:
+        self.reader = reader
+        self.keys: set[Key] = set()
+        self._results: dict[Key, Key] = {}  # a bool variable -> the call it holds
+
+    def visit(self, node: Cursor) -> None:
+        kind = node.kind
+        if kind in (CursorKind.IF_STMT, CursorKind.WHILE_STMT):
+            children = list(node.get_children())
+            if children:
+                self._condition(children[0])
+        elif kind == CursorKind.DO_STMT:
+            children = list(node.get_children())
+            if len(children) == 2:
+                self._condition(children[1])
+        elif kind == CursorKind.CONDITIONAL_OPERATOR:
+            children = list(node.get_children())
+            if len(children) == 3:
+                self._condition(children[0])
+        elif kind == CursorKind.UNARY_OPERATOR:
+            if self._is_not(node):
+                for child in node.get_children():
+                    self._condition(child)
+        elif kind == CursorKind.BINARY_OPERATOR:
+            children = list(node.get_children())
+            if len(children) == 2:
+                if self.reader._between(children[0], children[1], _SHORT_CIRCUIT):
+                    self._condition(children[0])
+                    self._condition(children[1])
+                elif self.reader._between(children[0], children[1], _ASSIGN):
+                    self._hold(children[0].referenced, children[1])
+        elif kind == CursorKind.VAR_DECL:
+            children = [c for c in node.get_children() if c.kind.is_expression()]
+            if children:
+                self._hold(node, children[-1])
+
+    def _is_not(self, node: Cursor) -> bool:
+        text = self.reader._bytes(node.extent.start.file)
+        if text is None:
+            return False
+        offset = node.extent.start.offset
+        return bool(_NOT.match(text[offset:offset + 4].decode("utf-8", "replace")))
+
+    def _hold(self, variable: Cursor | None, value: Cursor) -> None:
+        call = _unwrap(value)
+        if variable is None or call is None or variable.kind != CursorKind.VAR_DECL:
+            return
+        held, made = key(variable), key(call)
+        if held is not None and made is not None:
+            self._results[held] = made
+
+    def _condition(self, expr: Cursor) -> None:
+        if expr.kind == CursorKind.VAR_DECL:  # if (bool ok = nh.getParam(..))
+            children = [c for c in expr.get_children() if c.kind.is_expression()]
+            expr = children[-1] if children else expr
+        call = _unwrap(expr)
+        if call is None:
+            return
+        if call.kind == CursorKind.DECL_REF_EXPR:
+            variable = call.referenced
+            held = key(variable) if variable is not None else None
+            if held is not None and held in self._results:
+                self.keys.add(self._results[held])
+            return
+        made = key(call)
+        if made is not None:
+            self.keys.add(made)
+
+
+def _unwrap(expr: Cursor) -> Cursor | None:
+    """The call (or variable reference) an expression is, through implicit conversions,
+    parentheses and a comparison with ``true`` / ``false`` (kobuki's
+    ``if (nh.getParam(..) == true)``)."""
+    for _ in range(8):
+        if expr.kind in (CursorKind.CALL_EXPR, CursorKind.DECL_REF_EXPR):
+            return expr
+        if expr.kind == CursorKind.BINARY_OPERATOR:
+            sides = list(expr.get_children())
+            others = [s for s in sides if _strip(s).kind != CursorKind.CXX_BOOL_LITERAL_EXPR]
+            if len(sides) != 2 or len(others) != 1:
+                return None
+            expr = others[0]
+            continue
+        if expr.kind not in _WRAPPERS:
+            return None
+        children = list(expr.get_children())
+        if len(children) != 1:
+            # a call clang could not resolve stays an unexposed expression
+            return expr if expr.kind == CursorKind.UNEXPOSED_EXPR and children else None
+        expr = children[0]
+    return None
+
+
+def _strip(expr: Cursor) -> Cursor:
+    """``expr`` through implicit conversions and parentheses."""
+    while expr.kind in _WRAPPERS:
+        children = list(expr.get_children())
+        if len(children) != 1:
+            break
+        expr = children[0]
+    return expr
