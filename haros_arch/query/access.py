@@ -111,8 +111,15 @@ def _is_latched(link: Link) -> bool:
                           and str(link.qos.get("durability", "")).lower() == "transient_local")
 
 
+def _wire_type(link: Any) -> str | None:
+    from ..extract.cpp.interfaces import wire_key  # the definitions we know, read lazily
+
+    return wire_key(link.type)
+
+
 VIEWS: dict[type, dict[str, Callable[[Any], Any]]] = {
-    Link: {"is_latched": _is_latched},
+    # what a ROS 1 connection compares (the md5sum of the definition) where we know it
+    Link: {"is_latched": _is_latched, "wire_type": _wire_type},
     Parameter: {"reads": lambda p: p.readers, "writes": lambda p: p.writers},
     # what it runs is known from an interface model (its code is not in the workspace)
     NodeInstance: {"is_modelled": lambda n: n.node is not None and n.node.model is not None},

@@ -219,6 +219,35 @@ def qualified(kind: str, package: str) -> str | None:
     return kind if "/" in kind else f"{package}/{kind}"
 
 
+def wire_key(type_name: str | None, depth: int = 0) -> str | None:
+    """What a ROS 1 connection compares for ``pkg/Name``: roscpp and rospy check the
+    md5sum, made from the definition (nested types by their own sums), not the name, so
+    two names with one definition connect (``tf/tfMessage`` and ``tf2_msgs/TFMessage``).
+    The definition, nested types expanded, when every part is one of ours; else the name
+    (ROS 2 names, ``pkg/msg/Name``, match by name)."""
+    if not type_name or type_name.count("/") != 1 or depth > 8:
+        return type_name
+    text = WELL_KNOWN.get(type_name)
+    if text is None or "---" in text:
+        return type_name
+    package = type_name.split("/", 1)[0]
+    parts = []
+    for section in parse_definition(package, type_name, text).sections:
+        for fld in section:
+            nested = qualified(fld.type, package)
+            if nested is None:
+                kind = fld.type
+            else:
+                kind = wire_key(nested, depth + 1) or nested
+                if kind == nested:  # a nested type we do not know: no claim
+                    return type_name
+                kind = "{" + kind + "}"
+            parts.append(f"{kind}[{fld.array}] {fld.name}" if fld.array is not None
+                         else f"{kind} {fld.name}={fld.constant}" if fld.constant is not None
+                         else f"{kind} {fld.name}")
+    return "ros1:" + ";".join(parts)
+
+
 def render(interface: Interface) -> str:
     """C++ source of the header that declares ``interface``."""
     pkg, name = interface.package, interface.name
