@@ -94,15 +94,15 @@ def ours(package: str, executable: str) -> tuple[set, dict, str] | None:
     return entities, types, f"{model.label} [{node.completeness}]"
 
 
-def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("folder")
-    parser.add_argument("--show", action="store_true", help="list every difference")
-    args = parser.parse_args()
+def compare(source: str, found: dict[tuple[str, str], tuple[set, dict, int]],
+            show: bool) -> None:
+    """Print, per node both ``found`` (another tool's models) and ours cover, the counts."""
     totals = [0, 0, 0, 0]
-    for (package, executable), (their, their_types, dynamic) in theirs(args.folder).items():
+    missing = []
+    for (package, executable), (their, their_types, dynamic) in found.items():
         mine = ours(package, executable)
         if mine is None:
+            missing.append(f"{package}/{executable}")
             continue
         entities, types, label = mine
         both = their & entities
@@ -114,19 +114,27 @@ def main() -> None:
         totals = [totals[0] + len(both), totals[1] + len(only_theirs),
                   totals[2] + len(only_ours), totals[3] + len(mismatched)]
         print(f"== {package}/{executable}: {label}")
-        print(f"  both {len(both)}, only ROSDiscover {len(only_theirs)} (+{dynamic} dynamic), "
+        print(f"  both {len(both)}, only {source} {len(only_theirs)} (+{dynamic} dynamic), "
               f"only ours {len(only_ours)}, type differences {len(mismatched)}")
-        if args.show:
+        if show:
             for kind, name in only_theirs:
-                print(f"    only ROSDiscover: {kind} {name} {their_types.get((kind, name), '')}")
+                print(f"    only {source}: {kind} {name} {their_types.get((kind, name), '')}")
             for kind, name in only_ours:
-                print(f"    only ours:        {kind} {name} {types.get((kind, name), '')}")
+                print(f"    only ours: {kind} {name} {types.get((kind, name), '')}")
             for key in mismatched:
-                print(f"    type: {key[0]} {key[1]}: ROSDiscover {their_types[key]}, "
+                print(f"    type: {key[0]} {key[1]}: {source} {their_types[key]}, "
                       f"ours {types[key]}")
-    print(f"total: both {totals[0]}, only ROSDiscover {totals[1]}, only ours {totals[2]}, "
+    print(f"total: both {totals[0]}, only {source} {totals[1]}, only ours {totals[2]}, "
           f"type differences {totals[3]}")
+    print(f"{source}'s nodes we have no model of ({len(missing)}): {', '.join(missing)}")
 
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("folder")
+    parser.add_argument("--show", action="store_true", help="list every difference")
+    args = parser.parse_args()
+    compare("ROSDiscover", theirs(args.folder), args.show)
 
 if __name__ == "__main__":
     main()
