@@ -137,6 +137,15 @@ _CAMERA_INFO_IN: tuple[Sibling, ...] = (
     ("subscribe", "camera_info", "sensor_msgs/CameraInfo"),)
 _TF = "tf2_msgs/TFMessage"
 
+# message_filters::Subscriber(nh, topic, queue) and its subscribe(...) make one subscription
+_FILTER_SUBSCRIBER = RosFunction(
+    "subscribe", type_from=("class",), on_handle=False, handle_arg=0, name_arg=1,
+    queue_arg=2, qos_arg=2)
+# ROS 1 realtime_tools::RealtimePublisher<M>(nh, topic, queue, latched) and its init(...)
+_REALTIME_PUBLISHER = RosFunction(
+    "publish", type_from=("class",), on_handle=False, handle_arg=0, name_arg=1,
+    queue_arg=2, latch_arg=3)
+
 # Libraries on top of roscpp / rclcpp: actionlib, image_transport, message_filters, tf2_ros
 LIBRARIES: dict[tuple[str, str], RosFunction] = {
     ("actionlib::SimpleActionServer", "SimpleActionServer"): RosFunction(
@@ -176,12 +185,8 @@ LIBRARIES: dict[tuple[str, str], RosFunction] = {
     ("image_transport", "create_camera_subscription"): RosFunction(
         "subscribe", fixed_type=_IMAGE, on_handle=False, handle_arg=0, name_arg=1,
         callback_arg=2, siblings=_CAMERA_INFO_IN),
-    ("message_filters::Subscriber", "Subscriber"): RosFunction(
-        "subscribe", type_from=("class",), on_handle=False, handle_arg=0, name_arg=1,
-        queue_arg=2, qos_arg=2),
-    ("message_filters::Subscriber", "subscribe"): RosFunction(
-        "subscribe", type_from=("class",), on_handle=False, handle_arg=0, name_arg=1,
-        queue_arg=2, qos_arg=2),
+    ("message_filters::Subscriber", "Subscriber"): _FILTER_SUBSCRIBER,
+    ("message_filters::Subscriber", "subscribe"): _FILTER_SUBSCRIBER,
     # urdf::Model reads the robot description where searchParam finds it: on the handle
     # given, else in the node's namespace
     ("urdf::Model", "initParamWithNodeHandle"): RosFunction(
@@ -190,12 +195,8 @@ LIBRARIES: dict[tuple[str, str], RosFunction] = {
     # ROS 1 realtime_tools (ros_control's controllers): RealtimePublisher<M>(nh, topic,
     # queue, latched) and init(...) advertise the topic; ROS 2's takes a publisher made
     # before (one argument, no name: no call of its own)
-    ("realtime_tools::RealtimePublisher", "RealtimePublisher"): RosFunction(
-        "publish", type_from=("class",), on_handle=False, handle_arg=0, name_arg=1,
-        queue_arg=2, latch_arg=3),
-    ("realtime_tools::RealtimePublisher", "init"): RosFunction(
-        "publish", type_from=("class",), on_handle=False, handle_arg=0, name_arg=1,
-        queue_arg=2, latch_arg=3),
+    ("realtime_tools::RealtimePublisher", "RealtimePublisher"): _REALTIME_PUBLISHER,
+    ("realtime_tools::RealtimePublisher", "init"): _REALTIME_PUBLISHER,
     ("tf2_ros::TransformBroadcaster", "TransformBroadcaster"): RosFunction(
         "publish", fixed_name="/tf", fixed_type=_TF, on_handle=False),
     ("tf2_ros::StaticTransformBroadcaster", "StaticTransformBroadcaster"): RosFunction(
