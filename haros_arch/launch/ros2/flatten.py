@@ -237,6 +237,24 @@ def _base(decl: NodeDecl) -> str | None:
     return None if base == "?" else base
 
 
+def _identity(decl: NodeDecl, kind: str) -> list[tuple[str, str]]:
+    """``pkg``, ``exec`` (``plugin`` for a component), ``name`` when known and
+    ``namespace``, in the order and with the keys of XML and YAML launch files."""
+    found = [("pkg", decl.package), (kind, decl.executable)]
+    base = _base(decl)
+    if base is not None:
+        found.append(("name", base))
+    found.append(("namespace", _namespace(decl) or "/"))
+    return found
+
+
+_PY_KEYS = {"pkg": "package", "exec": "executable"}  # Python's names for the others
+
+
+def _py_identity(decl: NodeDecl, kind: str) -> list[tuple[str, str]]:
+    return [(_PY_KEYS.get(key, key), repr(value)) for key, value in _identity(decl, kind)]
+
+
 def _words(decl: NodeDecl) -> list[str]:
     try:
         return shlex.split(decl.args)
@@ -271,11 +289,7 @@ def _xml_node(parent: etree._Element, node: FlatNode) -> None:
         _xml_component(load, node)
         return
     tag = "node_container" if node.components else "node"
-    attrs = {"pkg": decl.package, "exec": decl.executable}
-    base = _base(decl)
-    if base is not None:
-        attrs["name"] = base
-    attrs["namespace"] = _namespace(decl) or "/"
+    attrs = dict(_identity(decl, "exec"))
     if decl.args:
         attrs["args"] = decl.args
     element = etree.SubElement(parent, tag, attrs)
@@ -288,11 +302,7 @@ def _xml_node(parent: etree._Element, node: FlatNode) -> None:
 
 def _xml_component(parent: etree._Element, node: FlatNode) -> None:
     decl = node.decl
-    attrs = {"pkg": decl.package, "plugin": decl.executable}
-    base = _base(decl)
-    if base is not None:
-        attrs["name"] = base
-    attrs["namespace"] = _namespace(decl) or "/"
+    attrs = dict(_identity(decl, "plugin"))
     _xml_body(etree.SubElement(parent, "composable_node", attrs), node)
 
 
@@ -345,11 +355,7 @@ def _yaml_node(node: FlatNode) -> dict[str, Any]:
     if decl.composable:
         return {"load_composable_node": {"target": decl.container,
                                          "composable_node": [_yaml_component(node)]}}
-    body: dict[str, Any] = {"pkg": decl.package, "exec": decl.executable}
-    base = _base(decl)
-    if base is not None:
-        body["name"] = base
-    body["namespace"] = _namespace(decl) or "/"
+    body: dict[str, Any] = dict(_identity(decl, "exec"))
     if decl.args:
         body["args"] = decl.args
     body.update(_yaml_body(node))
@@ -361,11 +367,7 @@ def _yaml_node(node: FlatNode) -> dict[str, Any]:
 
 def _yaml_component(node: FlatNode) -> dict[str, Any]:
     decl = node.decl
-    body: dict[str, Any] = {"pkg": decl.package, "plugin": decl.executable}
-    base = _base(decl)
-    if base is not None:
-        body["name"] = base
-    body["namespace"] = _namespace(decl) or "/"
+    body: dict[str, Any] = dict(_identity(decl, "plugin"))
     body.update(_yaml_body(node))
     return body
 
@@ -413,12 +415,7 @@ def _py_node(node: FlatNode, pad: str) -> str:
             ("target_container", repr(decl.container)),
             ("composable_node_descriptions",
              f"[\n{inner}{_py_component(node, inner)},\n{pad}    ]")], pad)
-    kwargs: list[tuple[str, str]] = [("package", repr(decl.package)),
-                                     ("executable", repr(decl.executable))]
-    base = _base(decl)
-    if base is not None:
-        kwargs.append(("name", repr(base)))
-    kwargs.append(("namespace", repr(_namespace(decl) or "/")))
+    kwargs = _py_identity(decl, "exec")
     if decl.args:
         kwargs.append(("arguments", repr(_words(decl))))
     kwargs += _py_body(node, pad)
@@ -431,11 +428,7 @@ def _py_node(node: FlatNode, pad: str) -> str:
 
 def _py_component(node: FlatNode, pad: str) -> str:
     decl = node.decl
-    kwargs = [("package", repr(decl.package)), ("plugin", repr(decl.executable))]
-    base = _base(decl)
-    if base is not None:
-        kwargs.append(("name", repr(base)))
-    kwargs.append(("namespace", repr(_namespace(decl) or "/")))
+    kwargs = _py_identity(decl, "plugin")
     return _py_call("ComposableNode", kwargs + _py_body(node, pad), pad)
 
 
