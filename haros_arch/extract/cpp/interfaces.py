@@ -8,6 +8,7 @@ for a service the ``Request`` / ``Response`` structs. Fields come from the ``.ms
 
 from __future__ import annotations
 
+import functools
 import re
 from dataclasses import dataclass, field
 
@@ -219,6 +220,7 @@ def qualified(kind: str, package: str) -> str | None:
     return kind if "/" in kind else f"{package}/{kind}"
 
 
+@functools.lru_cache(maxsize=4096)  # asked per link by the queries; the table is fixed
 def wire_key(type_name: str | None, depth: int = 0) -> str | None:
     """What a ROS 1 connection compares for ``pkg/Name``: roscpp and rospy check the
     md5sum, made from the definition (nested types by their own sums), not the name, so
