@@ -19,6 +19,7 @@ import ast
 import os
 import re
 import sys
+from collections.abc import Callable
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 
@@ -129,12 +130,18 @@ def compare(source: str, found: dict[tuple[str, str], tuple[set, dict, int]],
     print(f"{source}'s nodes we have no model of ({len(missing)}): {', '.join(missing)}")
 
 
-def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+def run(source: str, read: Callable[[str], dict], doc: str) -> None:
+    """The command line both comparisons share: their models' folder, ``--show``."""
+    parser = argparse.ArgumentParser(description=doc.splitlines()[0])
     parser.add_argument("folder")
     parser.add_argument("--show", action="store_true", help="list every difference")
     args = parser.parse_args()
-    compare("ROSDiscover", theirs(args.folder), args.show)
+    compare(source, read(args.folder), args.show)
+
+
+def main() -> None:
+    run("ROSDiscover", theirs, __doc__ or "")
+
 
 if __name__ == "__main__":
     main()

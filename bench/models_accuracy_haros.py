@@ -7,13 +7,12 @@ file per package: distribution -> node type -> advertise / subscribe / service /
 readParam / writeParam, a node's ``base`` naming the distribution it extends). The newest
 distribution there (melodic) is read, its ``base`` chain resolved as HAROS does (the
 base's entities, then the node's own), and compared with our noetic models by
-``models_accuracy.compare``. A name is its ``namespace`` followed by its ``name``
-(``~`` private, empty relative), as written in the code.
+``models_accuracy.compare`` (through its ``run``). A name is its ``namespace``
+followed by its ``name`` (``~`` private, empty relative), as written in the code.
 """
 
 from __future__ import annotations
 
-import argparse
 import os
 import sys
 
@@ -21,7 +20,7 @@ import yaml
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from models_accuracy import compare
+from models_accuracy import run
 
 KINDS = {"advertise": "publish", "subscribe": "subscribe", "service": "server",
          "client": "client", "readParam": "read", "writeParam": "write"}
@@ -62,11 +61,7 @@ def theirs(folder: str) -> dict[tuple[str, str], tuple[set, dict, int]]:
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("folder")
-    parser.add_argument("--show", action="store_true", help="list every difference")
-    args = parser.parse_args()
-    compare("HAROS", theirs(args.folder), args.show)
+    run("HAROS", theirs, __doc__ or "")
 
 
 if __name__ == "__main__":
