@@ -168,6 +168,18 @@ def test_rclcpp_callbacks_and_parameter_names(talker: CppResult) -> None:
     assert (dynamic.name_param, dynamic.name_default) == ("topic", "cmd")
 
 
+def test_image_transport_calls_say_how_their_transports_are_chosen(
+        libraries: CppResult, mover: CppResult) -> None:
+    # publishers publish through every transport, subscribers through the one the node's
+    # parameter (TransportHints) or their ROS 2 code names; camera_info has none
+    assert [(c.name, c.transport) for c in libraries.calls if c.name.startswith("vision/")] == [
+        ("vision/raw", "*"), ("vision/camera/image", "*"), ("vision/camera/camera_info", None),
+        ("vision/input", "?")]
+    assert [(c.name, c.transport) for c in mover.calls if c.type == "sensor_msgs/msg/Image"] == [
+        ("camera/image", "*"), ("debug", "*"), ("seen", "compressed"), ("hinted", "?"),
+        ("left/image", None)]
+
+
 def test_ros2_libraries(mover: CppResult) -> None:
     assert [(c.kind, c.name, c.type, c.queue_size, c.latch) for c in mover.calls] == [
         ("action-server", "move", "demo2/action/Move", None, False),
@@ -179,6 +191,8 @@ def test_ros2_libraries(mover: CppResult) -> None:
         ("publish", "camera/image", "sensor_msgs/msg/Image", 1, False),
         ("publish", "camera/camera_info", "sensor_msgs/msg/CameraInfo", 1, False),
         ("publish", "debug", "sensor_msgs/msg/Image", None, False),
+        ("subscribe", "seen", "sensor_msgs/msg/Image", None, False),
+        ("subscribe", "hinted", "sensor_msgs/msg/Image", None, False),
         ("subscribe", "left/image", "sensor_msgs/msg/Image", 5, False),
         ("declare", "verbose", "bool", None, False),
     ]

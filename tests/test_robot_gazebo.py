@@ -241,3 +241,17 @@ def test_a_bridge_without_a_model_gets_a_node_of_its_own():
     bridge = [n for n in without.nodes if n.node is not None
               and n.node.executable == "parameter_bridge"]
     assert [(n.completeness, len(n.node.calls)) for n in bridge] == [("complete", 5)]
+
+
+def test_ros1_spawned_controllers_are_loaded_by_the_gazebo_ros_control_of_the_description():
+    # the spawner's controller goes to the controller manager gazebo_ros_control starts
+    # in the Gazebo node (its load_controller service), not to a node of its own
+    config = configuration(ROS1, "bot_control/launch/control.launch")
+    assert config.node("/joint_state_controller") is None
+    gazebo = {(link.kind, link.resource.name) for link in config.links
+              if link.node.name == "/gazebo"}
+    assert {("server", "/controller_manager/load_controller"),
+            ("publish", "/joint_states"),  # joint_state_controller's, by the model
+            ("read", "/joint_state_controller/publish_rate"),
+            ("read", "/joint_state_controller/type")} <= gazebo
+    assert not [d for d in config.diagnostics if d.code.startswith("PLUGIN")]

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import os
 import shlex
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import replace
 from typing import Any
 
@@ -28,6 +28,7 @@ from ..model.values import UNKNOWN_MARK
 from ..models.commands import command_node
 from ..plugins.attach import PluginModels
 from ..plugins.attach import attach as attach_plugins
+from ..plugins.transports import Transports
 from ..robot.attach import attach as attach_descriptions
 from ..workspace import Workspace, installed_roots
 from .actions import action_links
@@ -107,6 +108,7 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
         parameter.set_by_launch = True
         parameter.launch_location = param.location
         parameter.launch_conditions = param.conditions
+    transports = Transports(workspace, resources)
     seen: dict[str, NodeInstance] = {}
     started: list[tuple[NodeDecl, NodeInstance]] = []
     for decl, own in process_nodes(launch.nodes, nodes):
@@ -121,29 +123,41 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
         config.nodes.append(instance)
         if instance.node is None:
             continue
-        remaps = resolve_remaps(instance.remaps, instance.namespace, instance.name)
-        for call in instance.node.calls_of(own):
-            for each in element_calls(call, instance, resources):  # list parameters
-                made = link(instance, each, remaps, resources, config)
-                if each.name_param is not None and made.rosname.is_unresolved:
-                    config.diagnostics.append(_name_param_unset(instance, each))
+        _link_calls(instance, instance.node.calls_of(own), resources, config, transports)
     # robot descriptions first: a ros2_control Gazebo plugin starts a controller manager
-    # whose controllers the plugin hosts load
+    # whose controllers the plugin hosts load, and a ROS 1 gazebo_ros_control plugin
+    # serves the controller_manager services the spawners' controllers are loaded by
+    # (linked before the plugins attach, which look for the instance that serves them)
     described = attach_descriptions(config, launch, started, workspace, resources)
-    for instance, calls in [*attach_plugins(config, [*started, *described.managers], nodes,
-                                            resources, workspace, plugin_models),
-                           *described.calls]:
-        remaps = resolve_remaps(instance.remaps, instance.namespace, instance.name)
-        for call in calls:
-            for each in element_calls(call, instance, resources):
-                made = link(instance, each, remaps, resources, config)
-                if each.name_param is not None and made.rosname.is_unresolved:
-                    config.diagnostics.append(_name_param_unset(instance, each))
+    for instance, calls in described.calls:
+        _link_calls(instance, calls, resources, config, transports)
+    for instance, calls in attach_plugins(config, [*started, *described.managers], nodes,
+                                          resources, workspace, plugin_models):
+        _link_calls(instance, calls, resources, config, transports)
     for action, call, name in action_links(config):
         link(action.node, call, {}, resources, config, name)
     _namespace_values(config)
     config.package_paths = package_paths(launch, workspace)
     return config
+
+
+def _link_calls(instance: NodeInstance, calls: Sequence[PrimitiveCall], resources: Resources,
+                config: Configuration, transports: Transports) -> None:
+    """Link a node instance's calls: one per element of a list parameter, and for an
+    image_transport publisher or subscriber the topics of its transport plugins."""
+    remaps = resolve_remaps(instance.remaps, instance.namespace, instance.name)
+    for call in calls:
+        for each in element_calls(call, instance, resources):  # list parameters
+            base = resolved_name(instance, each, remaps, resources)
+            if each.name_param is not None and base.is_unresolved:
+                config.diagnostics.append(_name_param_unset(instance, each))
+            if each.transport is None:
+                link(instance, each, remaps, resources, config, base)
+                continue
+            # the base topic is resolved (and remapped) first, the transport's topic
+            # named below it and resolved again (image_transport's Publisher, Subscriber)
+            for one in transports.calls(each, base.full, instance):
+                link(instance, one, remaps, resources, config, base if one is each else None)
 
 
 def package_paths(launch: LaunchModel, workspace: Workspace) -> list[str]:
@@ -262,11 +276,7 @@ def link(instance: NodeInstance, call: PrimitiveCall, remaps: Mapping[str, str],
     """Instantiate one primitive call for a node instance: resolve, remap, connect.
     ``rosname`` gives the resolved name when the caller already knows it."""
     if rosname is None:
-        given = _given_name(call, instance, resources)
-        rosname = _handle_name(given, call, instance, remaps) or RosName.make(
-            given, instance.namespace, instance.name, remaps)
-        if call.searched:
-            rosname = _search(rosname, instance, resources)
+        rosname = resolved_name(instance, call, remaps, resources)
     resource = resources.get(RESOURCE_OF_KIND[call.kind], rosname.full)
     made = LINK_CLASSES[call.kind](
         node=instance, resource=resource, rosname=rosname, type=call.type,
@@ -277,6 +287,17 @@ def link(instance: NodeInstance, call: PrimitiveCall, remaps: Mapping[str, str],
     resource.links.append(made)
     config.links.append(made)
     return made
+
+
+def resolved_name(instance: NodeInstance, call: PrimitiveCall, remaps: Mapping[str, str],
+                  resources: Resources) -> RosName:
+    """The name a call of ``instance`` resolves to, remapped."""
+    given = _given_name(call, instance, resources)
+    rosname = _handle_name(given, call, instance, remaps) or RosName.make(
+        given, instance.namespace, instance.name, remaps)
+    if call.searched:
+        rosname = _search(rosname, instance, resources)
+    return rosname
 
 
 def _handle_name(given: str, call: PrimitiveCall, instance: NodeInstance,

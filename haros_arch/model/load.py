@@ -91,7 +91,8 @@ def node_from_data(data: dict[str, Any], package: str) -> Node:
                            tested=bool(c.get("tested", False)),
                            handle_namespace=c.get("handle_namespace"),
                            deletes=bool(c.get("deletes", False)),
-                           node_name=c.get("node_name"), name_each=c.get("name_each"))
+                           node_name=c.get("node_name"), name_each=c.get("name_each"),
+                           transport=c.get("transport"))
              for c in data.get("calls", ())]
     return Node(data.get("package", package), executable, data.get("kind", "executable"),
                 data.get("language", "cpp"), list(data.get("sources", ())), calls,

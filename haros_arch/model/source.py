@@ -97,6 +97,11 @@ class PrimitiveCall:
     # (robot_localization's ``imu0``, ``imu1``, ...: ``name_param`` "imu"), one call per
     # parameter set, from 0 up to the first one not set, as the code reads them
     name_each: str | None = field(default=None, metadata={"optional": True})
+    # a call made through image_transport (``plugins.hosts.TRANSPORTS``): ``*`` for a
+    # publisher, which also publishes the topic of every transport plugin it loads; for
+    # a subscriber the transport its code names (``raw``, ``compressed``), or ``?`` when
+    # the node's ``image_transport`` parameter chooses it (TransportHints)
+    transport: str | None = field(default=None, metadata={"optional": True})
 
 
 def wire_call(action: PrimitiveCall, kind: CallKind, name: str, type_: str | None,

@@ -30,6 +30,8 @@ Versions: 2 adds names taken from a family of parameters (``name_each: "#"``: on
 per parameter ``<name_param>0``, ``<name_param>1``, ... the configuration sets, as
 robot_localization reads ``imu0``, ``imu1``); a version 1 file reads unchanged (it
 cannot hold that), a file of a later version is refused with its version named.
+``transport`` (optional) marks a call made through image_transport (``*``: a publisher;
+a subscriber's transport, ``?`` when its node's ``image_transport`` parameter says).
 """
 
 from __future__ import annotations
@@ -48,7 +50,7 @@ SCHEMA_VERSION = 2
 SCHEMA = f"haros-arch-model/{SCHEMA_VERSION}"
 SCHEMA_PREFIX = "haros-arch-model/"
 _TEXT_FIELDS = ("type", "name_param", "name_default", "name_each", "handle_namespace",
-                "node_name", "callback")
+                "node_name", "callback", "transport")
 
 
 class ModelFileError(ValueError):

@@ -240,3 +240,53 @@ def plugin_bases() -> frozenset[str]:
     """Export tags and base classes of every class some host loads."""
     return frozenset((*ROS1_CONTROLLER_BASES, *(
         base for host in HOSTS for slot in host.slots for base in slot.bases)))
+
+
+# -- image_transport ---------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class Transport:
+    """An image_transport plugin (``image_transport/<name>_pub`` / ``_sub``, exported by
+    ``package``). A publisher of the base topic ``b`` loads every transport plugin
+    installed and publishes ``b/<name>`` through it (raw: ``b`` itself), of the type
+    ``types`` gives (ROS 1, ROS 2; None: no plugin for that version); a subscriber loads
+    one, and subscribes ``b/<name>``. ``common``: a transport of the
+    image_transport_plugins metapackage, installed with the usual ROS installs, so
+    published under the condition that its package is installed when the workspace does
+    not have it; another transport is published only when its package is found."""
+
+    name: str
+    package: str
+    types: tuple[str | None, str | None]
+    common: bool = False
+
+
+# image_common (noetic-devel, jazzy, rolling): Publisher loads each ``*_pub`` class of the
+# image_transport loader; SimplePublisherPlugin::getTopicToAdvertise is
+# ``base + "/" + getTransportName()``, RawPublisher's the base. image_transport_plugins
+# noetic-devel: compressed, compressedDepth, theora; rolling (and jazzy, from Feb 2024)
+# also zstd. ffmpeg_image_transport is a package of its own (ros-misc-utilities).
+TRANSPORTS: tuple[Transport, ...] = (
+    Transport("raw", "image_transport", ("sensor_msgs/Image", "sensor_msgs/msg/Image")),
+    Transport("compressed", "compressed_image_transport",
+              ("sensor_msgs/CompressedImage", "sensor_msgs/msg/CompressedImage"), True),
+    Transport("compressedDepth", "compressed_depth_image_transport",
+              ("sensor_msgs/CompressedImage", "sensor_msgs/msg/CompressedImage"), True),
+    Transport("theora", "theora_image_transport",
+              ("theora_image_transport/Packet", "theora_image_transport/msg/Packet"), True),
+    Transport("zstd", "zstd_image_transport", (None, "sensor_msgs/msg/CompressedImage"), True),
+    Transport("ffmpeg", "ffmpeg_image_transport",
+              ("ffmpeg_image_transport_msgs/FFMPEGPacket",
+               "ffmpeg_image_transport_msgs/msg/FFMPEGPacket")),
+)
+
+# the parameters that choose transports: a ROS 1 publisher skips the transports listed
+# in ``<resolved base>/disable_pub_plugins`` (publisher.cpp, getParam on the node's
+# handle); a ROS 2 one loads only those of ``<base>.enable_pub_plugins`` (the base
+# relative to the node's namespace, ``/`` as ``.``; declared with every transport as
+# its default); entries are ``image_transport/<name>``. A subscriber's TransportHints
+# read the node's private ``image_transport`` (default ``raw``).
+DISABLE_PUB_PLUGINS = "disable_pub_plugins"
+ENABLE_PUB_PLUGINS = "enable_pub_plugins"
+TRANSPORT_PARAM = "image_transport"

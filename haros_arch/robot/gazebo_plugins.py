@@ -149,7 +149,8 @@ PLUGINS: tuple[Plugin, ...] = (
         Entity("publish", "{bumperTopicName}", "gazebo_msgs/ContactsState"),),
         defaults=(("bumperTopicName", "bumper_states"),)),
     # gazebo_ros_control: a ros_control controller manager in the robot's namespace; the
-    # controllers spawners load into it are not read here
+    # controllers the configuration's spawners load into it are attached to the gazebo
+    # instance that serves its load_controller (plugins.attach.ros1_controllers)
     _ros1("gazebo_ros_control", namespace="model", entities=(
         Entity("read", "{robotParam}", "string"),
         Entity("subscribe", "{eStopTopic}", "std_msgs/Bool", when="eStopTopic",
@@ -162,8 +163,7 @@ PLUGINS: tuple[Plugin, ...] = (
                "controller_manager_msgs/SwitchController"),
         Entity("server", "controller_manager/unload_controller",
                "controller_manager_msgs/UnloadController")),
-        defaults=(("robotParam", "robot_description"),),
-        partial="the controllers its controller manager loads are not read"),
+        defaults=(("robotParam", "robot_description"),)),
     # -- ROS 1: hector_gazebo_plugins -----------------------------------------------------
     _ros1("hector_gazebo_ros_imu", entities=(
         Entity("publish", "{topicName}", "sensor_msgs/Imu"),

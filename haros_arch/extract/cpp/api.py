@@ -77,6 +77,11 @@ class RosFunction:
     # overloads that take the name at another index: the first of these indexes whose
     # argument is a string is the name (rclcpp_action's node-interfaces overloads)
     name_candidates: tuple[int, ...] = ()
+    # image_transport (``PrimitiveCall.transport``): ``*`` for a publisher, ``?`` for a
+    # subscriber whose transport TransportHints read from the node's parameter, and the
+    # argument that names the transport when the code writes it (ROS 2)
+    transport: str | None = None
+    transport_arg: int | None = None
     # searchParam: the name is looked up in the enclosing namespaces
     searched: bool = False
     # deleteParam, ros::param::del: a parameter write that deletes it
@@ -167,24 +172,27 @@ LIBRARIES: dict[tuple[str, str], RosFunction] = {
         "action-client", type_from=("template",), on_handle=False, name_arg=1,
         name_candidates=(1, 4)),
     ("image_transport::ImageTransport", "advertise"): RosFunction(
-        "publish", fixed_type=_IMAGE, queue_arg=1, latch_arg=2),
+        "publish", fixed_type=_IMAGE, queue_arg=1, latch_arg=2, transport="*"),
     ("image_transport::ImageTransport", "subscribe"): RosFunction(
-        "subscribe", fixed_type=_IMAGE, queue_arg=1, callback_arg=2),
+        "subscribe", fixed_type=_IMAGE, queue_arg=1, callback_arg=2, transport="?"),
     ("image_transport::ImageTransport", "advertiseCamera"): RosFunction(
-        "publish", fixed_type=_IMAGE, queue_arg=1, latch_arg=2, siblings=_CAMERA_INFO),
+        "publish", fixed_type=_IMAGE, queue_arg=1, latch_arg=2, siblings=_CAMERA_INFO,
+        transport="*"),
     ("image_transport::ImageTransport", "subscribeCamera"): RosFunction(
-        "subscribe", fixed_type=_IMAGE, queue_arg=1, callback_arg=2, siblings=_CAMERA_INFO_IN),
+        "subscribe", fixed_type=_IMAGE, queue_arg=1, callback_arg=2, siblings=_CAMERA_INFO_IN,
+        transport="?"),
     ("image_transport", "create_publisher"): RosFunction(
-        "publish", fixed_type=_IMAGE, on_handle=False, handle_arg=0, name_arg=1),
+        "publish", fixed_type=_IMAGE, on_handle=False, handle_arg=0, name_arg=1,
+        transport="*"),
     ("image_transport", "create_subscription"): RosFunction(
         "subscribe", fixed_type=_IMAGE, on_handle=False, handle_arg=0, name_arg=1,
-        callback_arg=2),
+        callback_arg=2, transport="?", transport_arg=3),
     ("image_transport", "create_camera_publisher"): RosFunction(
         "publish", fixed_type=_IMAGE, on_handle=False, handle_arg=0, name_arg=1,
-        siblings=_CAMERA_INFO),
+        siblings=_CAMERA_INFO, transport="*"),
     ("image_transport", "create_camera_subscription"): RosFunction(
         "subscribe", fixed_type=_IMAGE, on_handle=False, handle_arg=0, name_arg=1,
-        callback_arg=2, siblings=_CAMERA_INFO_IN),
+        callback_arg=2, siblings=_CAMERA_INFO_IN, transport="?", transport_arg=3),
     ("message_filters::Subscriber", "Subscriber"): _FILTER_SUBSCRIBER,
     ("message_filters::Subscriber", "subscribe"): _FILTER_SUBSCRIBER,
     # urdf::Model reads the robot description where searchParam finds it: on the handle

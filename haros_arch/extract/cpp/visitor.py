@@ -384,6 +384,11 @@ class CallFinder:
                 self._declared[declared[0]] = declared[1]
         has_default, default = self._default(spec, args, scope)
         status = _status_read(spec, site, len(args) - shift)
+        transport = spec.transport
+        if transport is not None and arg(spec.transport_arg) is not None:
+            written_transport = render(scope.string(arg(spec.transport_arg)))
+            if written_transport and "?" not in written_transport:
+                transport = written_transport
         for written, source in names:
             # getName() is "~": only as the start of a name is it the node's own name
             name = _private(written[:1] + written[1:].replace("~", "?"))
@@ -401,7 +406,7 @@ class CallFinder:
                 name_default=source[1] if source else None,
                 has_default=has_default, default=default,
                 searched=spec.searched, handle_namespace=handle_namespace,
-                deletes=spec.deletes, node_name=owner))
+                deletes=spec.deletes, node_name=owner, transport=transport))
             if status is not None:
                 self._status_reads.append((status, self.calls[-1]))
             if "?" in name and PLACEHOLDER not in name:

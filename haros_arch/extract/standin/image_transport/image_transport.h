@@ -37,6 +37,7 @@ class CameraSubscriber { public: CameraSubscriber(); void shutdown(); operator v
 class TransportHints {
 public:
   template<class... A> explicit TransportHints(A&&... args);
+  const std::string& getTransport() const;
 };
 class ImageTransport {
 public:

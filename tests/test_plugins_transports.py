@@ -1,0 +1,123 @@
+"""image_transport publishers and subscribers and the topics of their transport plugins
+(plugins.hosts.TRANSPORTS, plugins.transports)."""
+
+from __future__ import annotations
+
+from haros_arch.graph import build
+from haros_arch.launch.model import LaunchModel, NodeDecl, ParamDecl
+from haros_arch.model import Configuration, Location, Node, PrimitiveCall
+from haros_arch.model.load import node_from_data
+from haros_arch.model.serialise import to_data
+from haros_arch.model.source import Package
+from haros_arch.workspace import Workspace
+
+
+def call(kind, name, type_, transport, line=1):
+    return PrimitiveCall(kind, name, type_, 1, location=Location("cam", "cam/src/c.cpp", line, 3),
+                         transport=transport)
+
+
+def graph(decls, params=(), nodes=(), packages=()):
+    workspace = Workspace(root="/nowhere", packages={
+        name: Package(name, name, root=f"/nowhere/{name}") for name in packages})
+    launch = LaunchModel(nodes=list(decls), params=list(params))
+    return build(Configuration("c"), launch, workspace, {n.name: n for n in nodes})
+
+
+def topics(config, node):
+    return sorted((link.kind, link.resource.name, link.type,
+                   tuple(c.text for c in link.conditions))
+                  for link in config.links if link.node.name == node and link.kind in (
+                      "publish", "subscribe"))
+
+
+def reads(config, node):
+    return sorted(link.resource.name for link in config.links
+                  if link.node.name == node and link.kind == "read")
+
+
+DRIVER = Node("cam", "driver", calls=[
+    call("publish", "image_raw", "sensor_msgs/Image", "*"),
+    call("publish", "camera_info", "sensor_msgs/CameraInfo", None)])
+VIEWER = Node("cam", "viewer", calls=[call("subscribe", "image", "sensor_msgs/Image", "?")])
+INSTALLED = "is installed"
+
+
+def test_ros1_publisher_publishes_every_transport_installed_or_usually_installed():
+    # compressed_image_transport is in the workspace: its topic is certain; the other two
+    # transports of image_transport_plugins are published if their packages are installed
+    config = graph([NodeDecl("/cam/driver", "cam", "driver", "/cam/",
+                             remaps=[("image_raw", "/camera/color")])],
+                   nodes=[DRIVER], packages=["compressed_image_transport"])
+    assert topics(config, "/cam/driver") == [
+        ("publish", "/cam/camera_info", "sensor_msgs/CameraInfo", ()),
+        ("publish", "/camera/color", "sensor_msgs/Image", ()),
+        # the base is remapped first, the transport's topic named below it
+        ("publish", "/camera/color/compressed", "sensor_msgs/CompressedImage", ()),
+        ("publish", "/camera/color/compressedDepth", "sensor_msgs/CompressedImage",
+         (f"compressed_depth_image_transport {INSTALLED}",)),
+        ("publish", "/camera/color/theora", "theora_image_transport/Packet",
+         (f"theora_image_transport {INSTALLED}",)),
+    ]
+    assert reads(config, "/cam/driver") == ["/camera/color/disable_pub_plugins"]
+
+
+def test_ros1_disable_list_removes_transports_and_an_unknown_one_makes_them_conditional():
+    decl = NodeDecl("/cam/driver", "cam", "driver", "/cam/")
+    config = graph([decl], [ParamDecl("/cam/image_raw/disable_pub_plugins",
+                                      ["image_transport/theora", "image_transport/compressed"])],
+                   nodes=[DRIVER], packages=["compressed_image_transport",
+                                             "theora_image_transport"])
+    published = [name for kind, name, _, _ in topics(config, "/cam/driver")]
+    assert published == ["/cam/camera_info", "/cam/image_raw",
+                         "/cam/image_raw/compressedDepth"]
+    param = config.parameter("/cam/image_raw/disable_pub_plugins")
+    assert param is not None and param.is_read
+    config = graph([decl], [ParamDecl("/cam/image_raw/disable_pub_plugins", "?")],
+                   nodes=[DRIVER], packages=["compressed_image_transport"])
+    (compressed,) = [t for t in topics(config, "/cam/driver") if t[1].endswith("/compressed")]
+    assert compressed[3] == ("image_transport/compressed is not in "
+                             "/cam/image_raw/disable_pub_plugins",)
+
+
+def test_ros2_enable_list_names_the_transports_under_the_base_relative_to_the_namespace():
+    decl = NodeDecl("/cam/driver", "cam", "driver", "/cam/", ros_version=2)
+    driver = Node("cam", "driver", calls=[call("publish", "image_raw", "sensor_msgs/msg/Image",
+                                               "*")])
+    config = graph([decl], [ParamDecl("/cam/driver/image_raw.enable_pub_plugins",
+                                      ["image_transport/raw", "image_transport/zstd"])],
+                   nodes=[driver], packages=["zstd_image_transport"])
+    assert topics(config, "/cam/driver") == [
+        ("publish", "/cam/image_raw", "sensor_msgs/msg/Image", ()),
+        ("publish", "/cam/image_raw/zstd", "sensor_msgs/msg/CompressedImage", ())]
+    assert reads(config, "/cam/driver") == ["/cam/driver/image_raw.enable_pub_plugins"]
+
+
+def test_subscriber_transport_comes_from_its_parameter():
+    decl = NodeDecl("/viewer", "cam", "viewer")
+    # not set: raw, the base topic; the parameter is read
+    config = graph([decl], nodes=[VIEWER])
+    assert topics(config, "/viewer") == [("subscribe", "/image", "sensor_msgs/Image", ())]
+    assert reads(config, "/viewer") == ["/viewer/image_transport"]
+    config = graph([decl, NodeDecl("/cam/driver", "cam", "driver", "/")],
+                   [ParamDecl("/viewer/image_transport", "compressed")], nodes=[VIEWER, DRIVER])
+    assert topics(config, "/viewer") == [
+        ("subscribe", "/image/compressed", "sensor_msgs/CompressedImage", ())]
+    assert config.parameter("/viewer/image_transport").is_read
+    # a value not known: a topic below the base with an unknown last part
+    config = graph([decl], [ParamDecl("/viewer/image_transport", 3)], nodes=[VIEWER])
+    assert [name for _, name, _, _ in topics(config, "/viewer")] == ["/image/?"]
+
+
+def test_subscriber_transport_written_in_ros2_code_is_used_as_it_is():
+    viewer = Node("cam", "viewer", calls=[
+        call("subscribe", "image", "sensor_msgs/msg/Image", "theora")])
+    config = graph([NodeDecl("/viewer", "cam", "viewer", ros_version=2)],
+                   [ParamDecl("/viewer/image_transport", "compressed")], nodes=[viewer])
+    assert topics(config, "/viewer") == [
+        ("subscribe", "/image/theora", "theora_image_transport/msg/Packet", ())]
+
+
+def test_transport_mark_survives_the_json_model():
+    data = to_data(DRIVER)
+    assert [c.transport for c in node_from_data(data, "cam").calls] == ["*", None]
