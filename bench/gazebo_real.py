@@ -11,7 +11,10 @@ configuration: the descriptions read (files, links, joints, completeness), each 
 with the node instance that makes its calls, the diagnostics of the stage, the links
 before and after, and every topic a plugin publishes or subscribes to with its type and
 the nodes on the other side (``-`` when none: a sensor topic nothing reads; ``node as
-/?/scan?`` when a name with unknown parts has it as a candidate).
+/?/scan?`` when a name with unknown parts has it as a candidate); then, without and with
+the stage, the calls of spawned controllers that the instances of the descriptions'
+plugins make (ROS 1 gazebo_ros_control's controller manager) and the plugin instances of
+their own (controllers with no manager in view, ROS 2 controllers and Gazebo plugins).
 """
 
 from __future__ import annotations
@@ -37,7 +40,9 @@ def run(project: Project, env: dict[str, str], jobs: int, enabled: bool) -> Mode
     robot_attach = importlib.import_module("haros_arch.robot.attach")
     graph_build.attach_descriptions = robot_attach.attach if enabled else (
         lambda *a: robot_attach.Attached([], []))
-    return pipeline.analyse(project, env,
+    # the run cache keys on the environment, not on the stage switched off here: a
+    # variable of our own keeps the two runs apart
+    return pipeline.analyse(project, {**env, "HAROS_BENCH_ROBOT_STAGE": str(enabled)},
                             pipeline.Options(cache_dir=pipeline.AUTO_CACHE, jobs=jobs))
 
 
@@ -86,6 +91,18 @@ def main() -> None:
                       if peer.kind != link.kind]
             print(f"    {link.kind:9} {link.resource.name} [{link.type}] by {link.node.name}"
                   f" | other side: {', '.join(sorted(set(peers))) or '-'}")
+        # the controllers spawners load: on the instance of a description's controller
+        # manager (gazebo_ros_control in the gazebo node), or nodes of their own
+        for config, when in ((old, "without descriptions"), (new, "with")):
+            hosted = {name for name in (p.node for d in config.robot_descriptions
+                                        for p in d.plugins) if name}
+            on_gazebo = [link for link in config.links if link.node.name in hosted
+                         and link.origin != "description"]
+            own = sorted(n.name for n in config.nodes if n.origin == "plugin"
+                         and n.name not in hosted and not n.name.startswith("/gazebo"))
+            print(f"  controllers {when}: {len(on_gazebo)} calls on "
+                  f"{', '.join(sorted(hosted)) or '-'}; plugin instances of their own: "
+                  f"{', '.join(own) or '-'}")
 
 
 if __name__ == "__main__":

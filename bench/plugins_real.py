@@ -10,6 +10,10 @@ plugins resolved (calls attached) and unresolved (PLUGIN_NOT_FOUND /
 PLUGIN_CLASS_UNKNOWN), the node instances plugins added (ros2_control controllers), the
 links added, and the parameters "set but never read" (set by launch, read by no link;
 in brackets those of node instances whose interface is complete) before and after.
+The image_transport plugins (``plugins.transports``) are part of the plugin stage here:
+the run without it links an image_transport call to its base topic only; with it, the
+line ``image_transport`` gives the transports the workspace has (certain) or may have
+(conditional), the publishers and subscribers, and the transport topics they add.
 ``--list`` prints the resolved plugins and the diagnostics; ``--show PREFIX`` the links
 (kind, name, type, file:line) of the node instances whose names start with PREFIX, with
 plugins; ``--never-read`` the parameters set but never read, with plugins, each with
@@ -31,7 +35,8 @@ from haros_arch import pipeline  # noqa: E402
 from haros_arch.model.model import Model  # noqa: E402
 from haros_arch.model.runtime import Configuration  # noqa: E402
 from haros_arch.plugins.attach import attach  # noqa: E402
-from haros_arch.plugins.hosts import host_of  # noqa: E402
+from haros_arch.plugins.hosts import TRANSPORTS, host_of  # noqa: E402
+from haros_arch.plugins.transports import Transports  # noqa: E402
 from haros_arch.project import ConfigurationSpec, Project  # noqa: E402
 
 UNRESOLVED = ("PLUGIN_NOT_FOUND", "PLUGIN_CLASS_UNKNOWN")
@@ -47,6 +52,53 @@ def set_not_read(config: Configuration) -> str:
     return f"{len(never)} ({len(trusted)} of complete nodes)"
 
 
+class _BaseOnly(Transports):
+    """image_transport calls linked to their base topic only (as before the stage)."""
+
+    def calls(self, call: Any, base: str, instance: Any) -> list[Any]:
+        return [call]
+
+
+class _Recording(Transports):
+    """The transports stage, recording what each image_transport call stands for."""
+
+    seen: list[tuple[str, str, list[Any]]] = []
+    made: list[Transports] = []
+
+    def __init__(self, *args: Any) -> None:
+        super().__init__(*args)
+        _Recording.made.append(self)
+
+    def calls(self, call: Any, base: str, instance: Any) -> list[Any]:
+        out = super().calls(call, base, instance)
+        _Recording.seen.append((instance.name, call.kind, out))
+        return out
+
+
+def transports_line(config: Configuration, seen: list[tuple[str, str, list[Any]]]) -> str:
+    """The transports the workspace has, and the transport topics image_transport
+    publishers and subscribers add."""
+    versions = {n.ros_version for n in config.nodes} or {1}
+    probe = _Recording.made[-1] if _Recording.made else None
+    have = []
+    for row in TRANSPORTS:
+        if all(row.types[(1 if v == 1 else 2) - 1] is None for v in versions):
+            continue
+        state = probe.installed(row) if probe is not None else None
+        have.append(f"{row.name}{'' if state else '?' if state is None else ' (absent)'}")
+    mine = [(node, kind, out) for node, kind, out in seen
+            if any(node == n.name for n in config.nodes)]
+    publishers = [out for _, kind, out in mine if kind == "publish"]
+    subscribers = [out for _, kind, out in mine if kind == "subscribe"]
+    topics = [c for out in publishers for c in out[1:] if c.kind == "publish"]
+    conditional = [c for c in topics if any(k.statement == "if" for k in c.conditions)]
+    moved = [out[0] for out in subscribers if out[0].transport is None]
+    return (f"image_transport: transports {', '.join(have)} (? = only if installed); "
+            f"publishers {len(publishers)} add {len(topics)} transport topics "
+            f"({len(conditional)} conditional); subscribers {len(subscribers)}, "
+            f"{len(moved)} through a transport other than raw")
+
+
 def run(project: Project, jobs: int, enabled: bool,
         resolved: dict[str, list[str]]) -> Model:
     def recording(config: Configuration, *args: Any) -> Any:
@@ -59,7 +111,11 @@ def run(project: Project, jobs: int, enabled: bool,
 
     graph_build = importlib.import_module("haros_arch.graph.build")
     graph_build.attach_plugins = recording if enabled else (lambda *a: [])
-    return pipeline.analyse(project, dict(os.environ),
+    graph_build.Transports = _Recording if enabled else _BaseOnly
+    _Recording.seen = []
+    # the run cache keys on the environment, not on the stage switched off here: a
+    # variable of our own keeps the two runs apart
+    return pipeline.analyse(project, {**os.environ, "HAROS_BENCH_PLUGIN_STAGE": str(enabled)},
                             pipeline.Options(cache_dir=pipeline.AUTO_CACHE, jobs=jobs))
 
 
@@ -93,6 +149,7 @@ def main() -> None:
               f"unresolved {len(unresolved)}, instances added {len(added)}, links "
               f"{len(old.links)} -> {len(new.links)} (+{len(new.links) - len(old.links)}), "
               f"set but never read {set_not_read(old)} -> {set_not_read(new)}")
+        print("   " + transports_line(new, _Recording.seen))
         if args.list:
             for line in resolved.get(new.name, []):
                 print("   resolved", line)

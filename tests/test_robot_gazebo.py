@@ -255,3 +255,18 @@ def test_ros1_spawned_controllers_are_loaded_by_the_gazebo_ros_control_of_the_de
             ("read", "/joint_state_controller/publish_rate"),
             ("read", "/joint_state_controller/type")} <= gazebo
     assert not [d for d in config.diagnostics if d.code.startswith("PLUGIN")]
+
+
+def test_a_gazebo_camera_publishes_the_topics_of_the_image_transport_plugins():
+    config = configuration(ROS1, "bot_gazebo/launch/sim.launch", {"BOT_CAMERA": "1"})
+    transports = sorted((link.node.name, link.resource.name, link.type,
+                         [c.text for c in link.conditions]) for link in config.links
+                        if link.resource.name.startswith("/front_camera/image_raw/")
+                        and link.kind == "publish")
+    assert transports == [
+        ("/gazebo", "/front_camera/image_raw/compressed", "sensor_msgs/CompressedImage",
+         ["compressed_image_transport is installed"]),
+        ("/gazebo", "/front_camera/image_raw/compressedDepth", "sensor_msgs/CompressedImage",
+         ["compressed_depth_image_transport is installed"]),
+        ("/gazebo", "/front_camera/image_raw/theora", "theora_image_transport/Packet",
+         ["theora_image_transport is installed"])]

@@ -588,7 +588,8 @@ def _calls(element: etree._Element, row: Plugin, where: Location,
         yield PrimitiveCall(cast(CallKind, entity.kind), name,
                             kind if entity.kind != "read" else None,
                             conditions=(*conditions, *extra), location=where,
-                            origin="description")
+                            origin="description",
+                            transport="*" if entity.transport else None)
 
 
 def _ros1_namespace(element: etree._Element, row: Plugin, spawn: Spawn,

@@ -40,6 +40,10 @@ class Entity:
     # the plugin's <sensor> is a depth camera
     when: str | None = None
     when_default: bool = True  # its value when absent
+    # published through image_transport (``PrimitiveCall.transport``): the transport
+    # plugins' topics beside it (gazebo_ros_camera_utils.cpp's itnode_->advertise; ROS 2
+    # gazebo_ros_camera.cpp's image_transport::create_publisher, the depth image too)
+    transport: bool = False
 
 
 @dataclass(frozen=True)
@@ -66,7 +70,7 @@ def _ros2(*filenames: str, entities: tuple[Entity, ...],
 
 
 _CAMERA_1 = (
-    Entity("publish", "{cameraName}/{imageTopicName}", "sensor_msgs/Image"),
+    Entity("publish", "{cameraName}/{imageTopicName}", "sensor_msgs/Image", transport=True),
     Entity("publish", "{cameraName}/{cameraInfoTopicName}", "sensor_msgs/CameraInfo"),
 )
 _CAMERA_1_DEFAULTS = (("cameraName", ""), ("imageTopicName", "image_raw"),
@@ -183,10 +187,11 @@ PLUGINS: tuple[Plugin, ...] = (
     # one plugin for cameras and depth cameras: a <sensor type="depth"> adds the depth
     # image, its info and the point cloud; <triggered> a trigger subscription
     _ros2("gazebo_ros_camera", entities=(
-        Entity("publish", "{camera_name}/image_raw", "sensor_msgs/msg/Image"),
+        Entity("publish", "{camera_name}/image_raw", "sensor_msgs/msg/Image",
+               transport=True),
         Entity("publish", "{camera_name}/camera_info", "sensor_msgs/msg/CameraInfo"),
         Entity("publish", "{camera_name}/depth/image_raw", "sensor_msgs/msg/Image",
-               when="@depth"),
+               when="@depth", transport=True),
         Entity("publish", "{camera_name}/depth/camera_info", "sensor_msgs/msg/CameraInfo",
                when="@depth"),
         Entity("publish", "{camera_name}/points", "sensor_msgs/msg/PointCloud2",
