@@ -3,7 +3,8 @@
     .venv/bin/python bench/plugins_real.py WORKSPACE LAUNCH [LAUNCH ...]
         [--arg NAME:=VALUE ...] [--jobs N] [--list] [--show PREFIX ...] [--never-read]
 
-Each LAUNCH (``pkg/path/in/package`` or a path) is one configuration. The pipeline runs
+Each LAUNCH (``pkg/path/in/package`` or a path; several joined by ``+``: one
+configuration of them all) is one configuration. The pipeline runs
 twice over the same workspace, with and without plugin attachment, and prints per
 configuration: the host instances (nodes started as a host of ``plugins.hosts``), the
 plugins resolved (calls attached) and unresolved (PLUGIN_NOT_FOUND /
@@ -132,8 +133,8 @@ def main() -> None:
     launch_args = dict(a.split(":=", 1) for a in args.arg)
     project = Project("plugins", os.path.join(args.workspace, "bench.yaml"),
                       workspace=[os.path.abspath(args.workspace)],
-                      configurations=[ConfigurationSpec(os.path.basename(launch), [launch],
-                                                        dict(launch_args))
+                      configurations=[ConfigurationSpec(os.path.basename(launch),
+                                                        launch.split("+"), dict(launch_args))
                                       for launch in args.launch])
     resolved: dict[str, list[str]] = {}
     before = run(project, args.jobs, False, {})

@@ -121,3 +121,18 @@ def test_subscriber_transport_written_in_ros2_code_is_used_as_it_is():
 def test_transport_mark_survives_the_json_model():
     data = to_data(DRIVER)
     assert [c.transport for c in node_from_data(data, "cam").calls] == ["*", None]
+
+
+def test_ros2_transport_topics_are_remapped_on_their_own_not_with_the_base():
+    # image_transport expands the base without remapping it (usb_cam's launch file
+    # remaps image_raw and image_raw/compressed one by one)
+    driver = Node("cam", "driver", calls=[call("publish", "image_raw", "sensor_msgs/msg/Image",
+                                               "*")])
+    decl = NodeDecl("/camera1", "cam", "driver", "/", ros_version=2,
+                    remaps=[("image_raw", "camera1/image_raw"),
+                            ("image_raw/compressed", "camera1/image_compressed")])
+    config = graph([decl], nodes=[driver], packages=["compressed_image_transport",
+                                                     "theora_image_transport"])
+    published = [name for _, name, _, _ in topics(config, "/camera1")]
+    assert published == ["/camera1/image_compressed", "/camera1/image_raw",
+                         "/image_raw/compressedDepth", "/image_raw/theora", "/image_raw/zstd"]

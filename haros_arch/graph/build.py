@@ -154,9 +154,13 @@ def _link_calls(instance: NodeInstance, calls: Sequence[PrimitiveCall], resource
             if each.transport is None:
                 link(instance, each, remaps, resources, config, base)
                 continue
-            # the base topic is resolved (and remapped) first, the transport's topic
-            # named below it and resolved again (image_transport's Publisher, Subscriber)
-            for one in transports.calls(each, base.full, instance):
+            # the transport's topic is named below the base and resolved (and remapped)
+            # again; ROS 1 image_transport remaps the base first (resolveName), ROS 2's
+            # only expands it (expand_topic_or_service_name): usb_cam's launch file
+            # remaps image_raw/compressed on its own
+            expanded = base if instance.ros_version == 1 else resolved_name(
+                instance, each, {}, resources)
+            for one in transports.calls(each, expanded.full, instance):
                 link(instance, one, remaps, resources, config, base if one is each else None)
 
 
