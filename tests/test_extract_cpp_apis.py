@@ -82,6 +82,8 @@ LIBRARIES = [
     ("subscribe", "/tf", "tf2_msgs/TFMessage", None, False, 71),
     ("subscribe", "/tf_static", "tf2_msgs/TFMessage", None, False, 71),
     ("subscribe", "~once", "std_msgs/String", None, False, 74),   # waitForMessage(.., priv)
+    ("publish", "~image_raw", "sensor_msgs/Image", 1, False, 77),
+    ("publish", "~camera_info", "sensor_msgs/CameraInfo", 1, False, 77),  # beside it
 ]
 
 
@@ -175,6 +177,7 @@ def test_image_transport_calls_say_how_their_transports_are_chosen(
     assert [(c.name, c.transport) for c in libraries.calls if c.name.startswith("vision/")] == [
         ("vision/raw", "*"), ("vision/camera/image", "*"), ("vision/camera/camera_info", None),
         ("vision/input", "?")]
+    assert [c.transport for c in libraries.calls if c.name.startswith("~image")] == ["*"]
     assert [(c.name, c.transport) for c in mover.calls if c.type == "sensor_msgs/msg/Image"] == [
         ("camera/image", "*"), ("debug", "*"), ("seen", "compressed"), ("hinted", "?"),
         ("left/image", None)]

@@ -416,8 +416,10 @@ class CallFinder:
                 if spec.name_suffix is not None:  # beside it, in the remote node's name
                     full = name.removesuffix(spec.name_suffix) + sibling
                 else:
-                    full = sibling if sibling.startswith("/") else join_name(
-                        name.rpartition("/")[0] if "/" in name else "", sibling)
+                    # in the namespace of the call's name (``~image_raw``: ``~``)
+                    head = name.rpartition("/")[0] if "/" in name else (
+                        "~" if name.startswith("~") else "")
+                    full = sibling if sibling.startswith("/") else join_name(head, sibling)
                 self.calls.append(PrimitiveCall(
                     kind=kind, name=full, type=self.types.ros_type(stype), queue_size=queue,
                     latch=latch, conditions=conditions, location=location,

@@ -57,14 +57,16 @@ public:
   template<class C, class... A> CameraSubscriber subscribeCamera(const std::string& base_topic,
       uint32_t queue_size, const C& callback, A&&... more);
 };
-template<class N> Publisher create_publisher(N node, const std::string& base_topic,
-    const void* qos = nullptr);
-template<class N, class C> Subscriber create_subscription(N node, const std::string& base_topic,
-    const C& callback, const std::string& transport = "raw", const void* qos = nullptr);
-template<class N> CameraPublisher create_camera_publisher(N node, const std::string& base_topic,
-    const void* qos = nullptr);
-template<class N, class C> CameraSubscriber create_camera_subscription(N node,
+// the QoS profile and options that follow (rmw_qos_profile_t, PublisherOptions, ...)
+template<class N, class... A> Publisher create_publisher(N node, const std::string& base_topic,
+    A&&... qos_and_options);
+template<class N, class C, class... A> Subscriber create_subscription(N node,
     const std::string& base_topic, const C& callback, const std::string& transport = "raw",
-    const void* qos = nullptr);
+    A&&... qos_and_options);
+template<class N, class... A> CameraPublisher create_camera_publisher(N node,
+    const std::string& base_topic, A&&... qos_and_options);
+template<class N, class C, class... A> CameraSubscriber create_camera_subscription(N node,
+    const std::string& base_topic, const C& callback, const std::string& transport = "raw",
+    A&&... qos_and_options);
 }
 #endif
