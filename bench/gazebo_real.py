@@ -96,13 +96,20 @@ def main() -> None:
         for config, when in ((old, "without descriptions"), (new, "with")):
             hosted = {name for name in (p.node for d in config.robot_descriptions
                                         for p in d.plugins) if name}
+            files = {f for d in config.robot_descriptions for f in d.files}
+            # a camera's image_transport topics keep the plugin's place in the description
             on_gazebo = [link for link in config.links if link.node.name in hosted
-                         and link.origin != "description"]
+                         and link.origin != "description"
+                         and link.location.file not in files]
+            transports = [link for link in config.links if link.node.name in hosted
+                          and link.origin == "plugin" and link.kind == "publish"
+                          and link.location.file in files]
             own = sorted(n.name for n in config.nodes if n.origin == "plugin"
                          and n.name not in hosted and not n.name.startswith("/gazebo"))
             print(f"  controllers {when}: {len(on_gazebo)} calls on "
                   f"{', '.join(sorted(hosted)) or '-'}; plugin instances of their own: "
-                  f"{', '.join(own) or '-'}")
+                  f"{', '.join(own) or '-'}; image_transport topics "
+                  f"{', '.join(sorted(link.resource.name for link in transports)) or '-'}")
 
 
 if __name__ == "__main__":
