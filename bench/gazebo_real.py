@@ -103,7 +103,8 @@ def main() -> None:
                          and link.location.file not in files]
             transports = [link for link in config.links if link.node.name in hosted
                           and link.origin == "plugin" and link.kind == "publish"
-                          and link.location.file in files]
+                          and link.location.file in files
+                          and not (link.type or "").startswith("dynamic_reconfigure/")]
             own = sorted(n.name for n in config.nodes if n.origin == "plugin"
                          and n.name not in hosted and not n.name.startswith("/gazebo"))
             print(f"  controllers {when}: {len(on_gazebo)} calls on "

@@ -91,12 +91,15 @@ def transports_line(config: Configuration, seen: list[tuple[str, str, list[Any]]
             if any(node == n.name for n in config.nodes)]
     publishers = [out for _, kind, out in mine if kind == "publish"]
     subscribers = [out for _, kind, out in mine if kind == "subscribe"]
-    topics = [c for out in publishers for c in out[1:] if c.kind == "publish"]
+    topics = [c for out in publishers for c in out[1:] if c.kind == "publish"
+              and not (c.type or "").startswith("dynamic_reconfigure/")]
+    reconfigure = [c for out in publishers for c in out[1:] if c.kind == "server"]
     conditional = [c for c in topics if any(k.statement == "if" for k in c.conditions)]
     moved = [out[0] for out in subscribers if out[0].transport is None]
     return (f"image_transport: transports {', '.join(have)} (? = only if installed); "
             f"publishers {len(publishers)} add {len(topics)} transport topics "
-            f"({len(conditional)} conditional); subscribers {len(subscribers)}, "
+            f"({len(conditional)} conditional) and {len(reconfigure)} dynamic_reconfigure "
+            f"servers; subscribers {len(subscribers)}, "
             f"{len(moved)} through a transport other than raw")
 
 

@@ -28,7 +28,8 @@ def topics(config, node):
     return sorted((link.kind, link.resource.name, link.type,
                    tuple(c.text for c in link.conditions))
                   for link in config.links if link.node.name == node and link.kind in (
-                      "publish", "subscribe"))
+                      "publish", "subscribe")
+                  and not (link.type or "").startswith("dynamic_reconfigure/"))
 
 
 def reads(config, node):
@@ -60,6 +61,12 @@ def test_ros1_publisher_publishes_every_transport_installed_or_usually_installed
          (f"theora_image_transport {INSTALLED}",)),
     ]
     assert reads(config, "/cam/driver") == ["/camera/color/disable_pub_plugins"]
+    # each ROS 1 plugin reconfigures on the handle of its topic
+    reconfigure = sorted((link.kind, link.resource.name) for link in config.links
+                         if link.resource.name.startswith("/camera/color/compressed/"))
+    assert reconfigure == [("publish", "/camera/color/compressed/parameter_descriptions"),
+                           ("publish", "/camera/color/compressed/parameter_updates"),
+                           ("server", "/camera/color/compressed/set_parameters")]
 
 
 def test_ros1_disable_list_removes_transports_and_an_unknown_one_makes_them_conditional():

@@ -260,6 +260,10 @@ class Transport:
     package: str
     types: tuple[str | None, str | None]
     common: bool = False
+    # ROS 1: the plugin runs a dynamic_reconfigure server on the handle of its topic
+    # (``reconfigure_server_`` made with ``this->nh()``, SimplePublisherPlugin's
+    # ``NodeHandle(transport_topic)``): ``<topic>/set_parameters`` and its two topics
+    reconfigure: bool = False
 
 
 # image_common (noetic-devel, jazzy, rolling): Publisher loads each ``*_pub`` class of the
@@ -270,11 +274,12 @@ class Transport:
 TRANSPORTS: tuple[Transport, ...] = (
     Transport("raw", "image_transport", ("sensor_msgs/Image", "sensor_msgs/msg/Image")),
     Transport("compressed", "compressed_image_transport",
-              ("sensor_msgs/CompressedImage", "sensor_msgs/msg/CompressedImage"), True),
+              ("sensor_msgs/CompressedImage", "sensor_msgs/msg/CompressedImage"), True, True),
     Transport("compressedDepth", "compressed_depth_image_transport",
-              ("sensor_msgs/CompressedImage", "sensor_msgs/msg/CompressedImage"), True),
+              ("sensor_msgs/CompressedImage", "sensor_msgs/msg/CompressedImage"), True, True),
     Transport("theora", "theora_image_transport",
-              ("theora_image_transport/Packet", "theora_image_transport/msg/Packet"), True),
+              ("theora_image_transport/Packet", "theora_image_transport/msg/Packet"), True,
+              True),
     Transport("zstd", "zstd_image_transport", (None, "sensor_msgs/msg/CompressedImage"), True),
     Transport("ffmpeg", "ffmpeg_image_transport",
               ("ffmpeg_image_transport_msgs/FFMPEGPacket",

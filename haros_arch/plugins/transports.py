@@ -19,7 +19,7 @@ from typing import Protocol
 
 from ..model.conditions import Condition
 from ..model.runtime import NodeInstance, Parameter, Resource
-from ..model.source import PrimitiveCall
+from ..model.source import CallKind, PrimitiveCall
 from ..model.values import UNKNOWN_MARK
 from ..workspace import Workspace
 from .hosts import (
@@ -31,6 +31,11 @@ from .hosts import (
 )
 
 RAW = "raw"
+# a ROS 1 dynamic_reconfigure server's service and topics, below its handle's namespace
+_RECONFIGURE: tuple[tuple[CallKind, str, str], ...] = (
+    ("server", "set_parameters", "dynamic_reconfigure/Reconfigure"),
+    ("publish", "parameter_descriptions", "dynamic_reconfigure/ConfigDescription"),
+    ("publish", "parameter_updates", "dynamic_reconfigure/Config"))
 
 
 class Params(Protocol):
@@ -86,10 +91,15 @@ class Transports:
                 conditions.append(Condition(
                     f"image_transport/{transport.name} is "
                     f"{'not in' if version == 1 else 'in'} {key}", statement="if"))
-            out.append(replace(
-                call, name=f"{base.rstrip('/')}/{transport.name}", type=msg_type,
-                conditions=tuple(conditions), name_param=None, name_default=None,
-                handle_namespace=None, transport=None, origin="plugin"))
+            topic = f"{base.rstrip('/')}/{transport.name}"
+            made = replace(call, name=topic, type=msg_type, conditions=tuple(conditions),
+                           name_param=None, name_default=None, handle_namespace=None,
+                           transport=None, origin="plugin")
+            out.append(made)
+            if transport.reconfigure and version == 1:
+                out.extend(replace(made, kind=kind, name=f"{topic}/{name}", type=type_,
+                                   queue_size=None, latch=False)
+                           for kind, name, type_ in _RECONFIGURE)
         return out
 
     def _list(self, base: str, instance: NodeInstance) -> tuple[str, object]:
