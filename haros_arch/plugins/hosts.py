@@ -32,6 +32,9 @@ subscribe to topics named by a parameter list (a costmap obstacle layer's
 ``data_type`` names), and their calls that read ``<layer>.?.<key>`` are one read per source.
 
 Names are relative to the host's node (its private namespace); ROS 2 keys use ``.``.
+
+An image_transport publisher or subscriber hosts transport plugins (``TRANSPORTS``, used by
+``plugins.transports`` when the graph links a call the C++ API table marks).
 """
 
 from __future__ import annotations
