@@ -32,9 +32,10 @@ def topics(config, node):
                   and not (link.type or "").startswith("dynamic_reconfigure/"))
 
 
-def reads(config, node):
+def reads(config, node):  # the parameters that choose transports or a subscriber's one
     return sorted(link.resource.name for link in config.links
-                  if link.node.name == node and link.kind == "read")
+                  if link.node.name == node and link.kind == "read"
+                  and link.resource.name.endswith(("_pub_plugins", "/image_transport")))
 
 
 DRIVER = Node("cam", "driver", calls=[
@@ -63,7 +64,8 @@ def test_ros1_publisher_publishes_every_transport_installed_or_usually_installed
     assert reads(config, "/cam/driver") == ["/camera/color/disable_pub_plugins"]
     # each ROS 1 plugin reconfigures on the handle of its topic
     reconfigure = sorted((link.kind, link.resource.name) for link in config.links
-                         if link.resource.name.startswith("/camera/color/compressed/"))
+                         if link.resource.name.startswith("/camera/color/compressed/")
+                         and link.kind != "read")
     assert reconfigure == [("publish", "/camera/color/compressed/parameter_descriptions"),
                            ("publish", "/camera/color/compressed/parameter_updates"),
                            ("server", "/camera/color/compressed/set_parameters")]
@@ -143,3 +145,22 @@ def test_ros2_transport_topics_are_remapped_on_their_own_not_with_the_base():
     published = [name for _, name, _, _ in topics(config, "/camera1")]
     assert published == ["/camera1/image_compressed", "/camera1/image_raw",
                          "/image_raw/compressedDepth", "/image_raw/theora", "/image_raw/zstd"]
+
+
+def test_transport_plugins_read_their_parameters():
+    # ROS 1: each publisher plugin's dynamic_reconfigure config, under its topic
+    config = graph([NodeDecl("/cam/driver", "cam", "driver", "/cam/")],
+                   [ParamDecl("/cam/image_raw/compressed/jpeg_quality", 80)],
+                   nodes=[DRIVER], packages=["compressed_image_transport"])
+    assert config.parameter("/cam/image_raw/compressed/jpeg_quality").is_read
+    # ROS 2: declared as <base>.<transport>.<parameter> (the base relative to the node's
+    # namespace) and as the deprecated <base>.<parameter>; zstd only the first
+    driver = Node("cam", "driver", calls=[call("publish", "image_raw", "sensor_msgs/msg/Image",
+                                               "*")])
+    config = graph([NodeDecl("/driver", "cam", "driver", "/", ros_version=2)],
+                   nodes=[driver], packages=["compressed_image_transport", "zstd_image_transport"])
+    declared = sorted(link.resource.name for link in config.links if link.kind == "read")
+    assert "/driver/image_raw.compressed.jpeg_quality" in declared
+    assert "/driver/image_raw.jpeg_quality" in declared
+    assert "/driver/image_raw.zstd.zstd_level" in declared
+    assert "/driver/image_raw.zstd_level" not in declared

@@ -267,6 +267,12 @@ class Transport:
     # (``reconfigure_server_`` made with ``this->nh()``, SimplePublisherPlugin's
     # ``NodeHandle(transport_topic)``): ``<topic>/set_parameters`` and its two topics
     reconfigure: bool = False
+    # the parameters the publisher plugin reads: ROS 1 its dynamic_reconfigure config's
+    # (``cfg/*Publisher.cfg``, read under ``<topic>/``), ROS 2 those it declares as
+    # ``<base>.<name>.<parameter>`` (the base relative to the node's namespace, ``/`` as
+    # ``.``), and, when ``unscoped``, as the deprecated ``<base>.<parameter>`` too
+    parameters: tuple[tuple[str, ...], tuple[str, ...]] = ((), ())
+    unscoped: bool = False
 
 
 # image_common (noetic-devel, jazzy, rolling): Publisher loads each ``*_pub`` class of the
@@ -277,13 +283,23 @@ class Transport:
 TRANSPORTS: tuple[Transport, ...] = (
     Transport("raw", "image_transport", ("sensor_msgs/Image", "sensor_msgs/msg/Image")),
     Transport("compressed", "compressed_image_transport",
-              ("sensor_msgs/CompressedImage", "sensor_msgs/msg/CompressedImage"), True, True),
+              ("sensor_msgs/CompressedImage", "sensor_msgs/msg/CompressedImage"), True, True,
+              (("enable", "format", "jpeg_quality", "jpeg_progressive", "jpeg_optimize",
+                "jpeg_restart_interval", "png_level"),
+               ("format", "png_level", "jpeg_quality", "tiff.res_unit", "tiff.xdpi",
+                "tiff.ydpi")), True),
     Transport("compressedDepth", "compressed_depth_image_transport",
-              ("sensor_msgs/CompressedImage", "sensor_msgs/msg/CompressedImage"), True, True),
+              ("sensor_msgs/CompressedImage", "sensor_msgs/msg/CompressedImage"), True, True,
+              (("enable", "format", "depth_max", "depth_quantization", "png_level"),
+               ("format", "depth_max", "depth_quantization", "png_level")), True),
     Transport("theora", "theora_image_transport",
               ("theora_image_transport/Packet", "theora_image_transport/msg/Packet"), True,
+              True, (("enable", "optimize_for", "target_bitrate", "quality",
+                      "keyframe_frequency"),
+                     ("optimize_for", "target_bitrate", "quality", "keyframe_frequency")),
               True),
-    Transport("zstd", "zstd_image_transport", (None, "sensor_msgs/msg/CompressedImage"), True),
+    Transport("zstd", "zstd_image_transport", (None, "sensor_msgs/msg/CompressedImage"), True,
+              parameters=((), ("zstd_level",))),
     Transport("ffmpeg", "ffmpeg_image_transport",
               ("ffmpeg_image_transport_msgs/FFMPEGPacket",
                "ffmpeg_image_transport_msgs/msg/FFMPEGPacket")),

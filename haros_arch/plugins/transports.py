@@ -100,6 +100,26 @@ class Transports:
                 out.extend(replace(made, kind=kind, name=f"{topic}/{name}", type=type_,
                                    queue_size=None, latch=False)
                            for kind, name, type_ in _RECONFIGURE)
+            out.extend(self._parameters(made, transport, topic, base, instance))
+        return out
+
+    def _parameters(self, made: PrimitiveCall, transport: Transport, topic: str, base: str,
+                    instance: NodeInstance) -> list[PrimitiveCall]:
+        """The parameters a publisher plugin reads: ROS 1 under its topic (its
+        dynamic_reconfigure server's), ROS 2 declared on the node under the base made a
+        parameter name (not stripped of a leading ``.``, as the plugins write it)."""
+        def param(kind: CallKind, name: str) -> PrimitiveCall:
+            return replace(made, kind=kind, name=name, type=None, queue_size=None,
+                           latch=False, has_default=True)
+
+        if instance.ros_version == 1:
+            return [param("read", f"{topic}/{name}") for name in transport.parameters[0]]
+        namespace = instance.namespace.rstrip("/") or "/"
+        key = base[len(namespace):].replace("/", ".")
+        out = [param("declare", f"{key}.{transport.name}.{name}")
+               for name in transport.parameters[1]]
+        if transport.unscoped:
+            out += [param("declare", f"{key}.{name}") for name in transport.parameters[1]]
         return out
 
     def _list(self, base: str, instance: NodeInstance) -> tuple[str, object]:
