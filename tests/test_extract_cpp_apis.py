@@ -176,7 +176,7 @@ def test_image_transport_calls_say_how_their_transports_are_chosen(
     # parameter (TransportHints) or their ROS 2 code names; camera_info has none
     assert [(c.name, c.transport) for c in libraries.calls if c.name.startswith("vision/")] == [
         ("vision/raw", "*"), ("vision/camera/image", "*"), ("vision/camera/camera_info", None),
-        ("vision/input", "?")]
+        ("vision/input", "?/")]
     assert [c.transport for c in libraries.calls if c.name.startswith("~image")] == ["*"]
     assert [(c.name, c.transport) for c in mover.calls if c.type == "sensor_msgs/msg/Image"] == [
         ("camera/image", "*"), ("debug", "*"), ("seen", "compressed"), ("hinted", "?"),

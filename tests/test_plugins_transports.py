@@ -164,3 +164,16 @@ def test_transport_plugins_read_their_parameters():
     assert "/driver/image_raw.jpeg_quality" in declared
     assert "/driver/image_raw.zstd.zstd_level" in declared
     assert "/driver/image_raw.zstd_level" not in declared
+
+
+def test_ros1_subscriber_names_its_transport_topic_from_the_base_as_written():
+    # a camera subscriber resolves (and remaps) the base first (camera_subscriber.cpp
+    # resolveName); a plain Subscriber appends the transport to the base as written
+    viewer = Node("cam", "viewer", calls=[
+        call("subscribe", "image", "sensor_msgs/Image", "?/"),
+        call("subscribe", "camera/image", "sensor_msgs/Image", "?", line=2)])
+    config = graph([NodeDecl("/viewer", "cam", "viewer",
+                             remaps=[("image", "/cam/color"), ("camera/image", "/cam/mono")])],
+                   [ParamDecl("/viewer/image_transport", "compressed")], nodes=[viewer])
+    assert [name for _, name, _, _ in topics(config, "/viewer")] == [
+        "/cam/mono/compressed", "/image/compressed"]

@@ -155,11 +155,12 @@ def _link_calls(instance: NodeInstance, calls: Sequence[PrimitiveCall], resource
                 link(instance, each, remaps, resources, config, base)
                 continue
             # the transport's topic is named below the base and resolved (and remapped)
-            # again; ROS 1 image_transport remaps the base first (resolveName), ROS 2's
-            # only expands it (expand_topic_or_service_name): usb_cam's launch file
-            # remaps image_raw/compressed on its own
-            expanded = base if instance.ros_version == 1 else resolved_name(
-                instance, each, {}, resources)
+            # again; ROS 1 image_transport's publishers and camera subscribers remap the
+            # base first (resolveName), its Subscriber (``/`` mark) and ROS 2's only
+            # expand it (expand_topic_or_service_name): usb_cam's launch file remaps
+            # image_raw/compressed on its own
+            expanded = base if instance.ros_version == 1 and not each.transport.endswith(
+                "/") else resolved_name(instance, each, {}, resources)
             for one in transports.calls(each, expanded.full, instance):
                 link(instance, one, remaps, resources, config, base if one is each else None)
 

@@ -100,7 +100,9 @@ class PrimitiveCall:
     # a call made through image_transport (``plugins.hosts.TRANSPORTS``): ``*`` for a
     # publisher, which also publishes the topic of every transport plugin it loads; for
     # a subscriber the transport its code names (``raw``, ``compressed``), or ``?`` when
-    # the node's ``image_transport`` parameter chooses it (TransportHints)
+    # the node's ``image_transport`` parameter chooses it (TransportHints); a trailing
+    # ``/``: the transport's topic is named from the base as written, not from the base
+    # resolved and remapped (ROS 1 Subscriber)
     transport: str | None = field(default=None, metadata={"optional": True})
 
 

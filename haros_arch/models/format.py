@@ -31,7 +31,8 @@ per parameter ``<name_param>0``, ``<name_param>1``, ... the configuration sets, 
 robot_localization reads ``imu0``, ``imu1``); a version 1 file reads unchanged (it
 cannot hold that), a file of a later version is refused with its version named.
 ``transport`` (optional) marks a call made through image_transport (``*``: a publisher;
-a subscriber's transport, ``?`` when its node's ``image_transport`` parameter says).
+a subscriber's transport, ``?`` when its node's ``image_transport`` parameter says; a
+trailing ``/`` when its transport's topic is named from the base as written).
 """
 
 from __future__ import annotations

@@ -148,7 +148,7 @@ class Transports:
                       ) -> list[PrimitiveCall]:
         version = 1 if instance.ros_version == 1 else 2
         out: list[PrimitiveCall] = []
-        name: str | None = call.transport
+        name: str | None = (call.transport or "").rstrip("/")
         if name == UNKNOWN_MARK:  # TransportHints: the node's parameter
             key = ("~" if version == 1 else "") + TRANSPORT_PARAM
             out.append(PrimitiveCall("read", key, location=call.location,

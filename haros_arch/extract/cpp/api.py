@@ -78,8 +78,10 @@ class RosFunction:
     # argument is a string is the name (rclcpp_action's node-interfaces overloads)
     name_candidates: tuple[int, ...] = ()
     # image_transport (``PrimitiveCall.transport``): ``*`` for a publisher, ``?`` for a
-    # subscriber whose transport TransportHints read from the node's parameter, and the
-    # argument that names the transport when the code writes it (ROS 2)
+    # subscriber whose transport TransportHints read from the node's parameter (``?/``:
+    # a ROS 1 Subscriber, which names its transport's topic from the base as written,
+    # without resolveName), and the argument that names the transport when the code
+    # writes it (ROS 2)
     transport: str | None = None
     transport_arg: int | None = None
     # searchParam: the name is looked up in the enclosing namespaces
@@ -174,7 +176,7 @@ LIBRARIES: dict[tuple[str, str], RosFunction] = {
     ("image_transport::ImageTransport", "advertise"): RosFunction(
         "publish", fixed_type=_IMAGE, queue_arg=1, latch_arg=2, transport="*"),
     ("image_transport::ImageTransport", "subscribe"): RosFunction(
-        "subscribe", fixed_type=_IMAGE, queue_arg=1, callback_arg=2, transport="?"),
+        "subscribe", fixed_type=_IMAGE, queue_arg=1, callback_arg=2, transport="?/"),
     ("image_transport::ImageTransport", "advertiseCamera"): RosFunction(
         "publish", fixed_type=_IMAGE, queue_arg=1, latch_arg=2, siblings=_CAMERA_INFO,
         transport="*"),

@@ -388,7 +388,7 @@ class CallFinder:
         if transport is not None and arg(spec.transport_arg) is not None:
             written_transport = render(scope.string(arg(spec.transport_arg)))
             if written_transport and "?" not in written_transport:
-                transport = written_transport
+                transport = written_transport + ("/" if transport.endswith("/") else "")
         for written, source in names:
             # getName() is "~": only as the start of a name is it the node's own name
             name = _private(written[:1] + written[1:].replace("~", "?"))
