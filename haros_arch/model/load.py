@@ -67,7 +67,8 @@ def conditions(data: Any) -> tuple[Condition, ...]:
             found.append(Condition(item))
         elif isinstance(item, dict):
             found.append(Condition(str(item.get("text", "")), item.get("kind", "source"),
-                                   item.get("statement", "if"), location(item.get("location"))))
+                                   item.get("statement", "if"), location(item.get("location")),
+                                   bool(item.get("program_args", False))))
     return tuple(found)
 
 
@@ -91,7 +92,8 @@ def node_from_data(data: dict[str, Any], package: str) -> Node:
                            tested=bool(c.get("tested", False)),
                            handle_namespace=c.get("handle_namespace"),
                            deletes=bool(c.get("deletes", False)),
-                           node_name=c.get("node_name"), name_each=c.get("name_each"))
+                           node_name=c.get("node_name"), name_each=c.get("name_each"),
+                           variable=c.get("variable"))
              for c in data.get("calls", ())]
     return Node(data.get("package", package), executable, data.get("kind", "executable"),
                 data.get("language", "cpp"), list(data.get("sources", ())), calls,

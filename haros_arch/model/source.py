@@ -97,6 +97,11 @@ class PrimitiveCall:
     # (robot_localization's ``imu0``, ``imu1``, ...: ``name_param`` "imu"), one call per
     # parameter set, from 0 up to the first one not set, as the code reads them
     name_each: str | None = field(default=None, metadata={"optional": True})
+    # a parameter read: the member variable it stores the value in (``publish_`` of
+    # ``nh.param("publish", publish_, false)`` or ``publish_ = declare_parameter(..)``),
+    # when that is the member's only write in the file; a source condition over the
+    # member is then decided per instance by the parameter's value (graph.conditions)
+    variable: str | None = field(default=None, metadata={"optional": True})
 
 
 def wire_call(action: PrimitiveCall, kind: CallKind, name: str, type_: str | None,

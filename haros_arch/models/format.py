@@ -48,7 +48,7 @@ SCHEMA_VERSION = 2
 SCHEMA = f"haros-arch-model/{SCHEMA_VERSION}"
 SCHEMA_PREFIX = "haros-arch-model/"
 _TEXT_FIELDS = ("type", "name_param", "name_default", "name_each", "handle_namespace",
-                "node_name", "callback")
+                "node_name", "callback", "variable")
 
 
 class ModelFileError(ValueError):

@@ -263,13 +263,15 @@ def _override_conditions(node: Node, entries: Any, relative: str,
                          found: list[Diagnostic]) -> None:
     """``conditions: [{calls: file:line, text: ..., at: file:line}]``: the calls made at
     ``calls`` exist only under ``text``, written at ``at`` (a caller's ``if`` the
-    extractor does not carry into the function it calls)."""
+    extractor does not carry into the function it calls); ``program_args: true`` when
+    ``at`` is in ``main(argc, argv)`` (its ``argc`` / ``argv`` are the program's)."""
     for entry in entries if isinstance(entries, list) else []:
         at, text = _place(entry.get("at")), entry.get("text")
         for call in _calls_at(node, entry, relative, found,
                               isinstance(text, str) and at is not None):
             where = Location(node.package, at[0], at[1]) if at else Location()
-            call.conditions = (*call.conditions, Condition(str(text), "source", "if", where))
+            call.conditions = (*call.conditions, Condition(
+                str(text), "source", "if", where, entry.get("program_args") is True))
 
 
 def _override_handles(node: Node, entries: Any, relative: str,
