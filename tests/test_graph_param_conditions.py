@@ -175,3 +175,54 @@ def test_interface_models_carry_the_member_and_program_args():
     node = from_document(json.loads(json.dumps(data))).nodes[0]
     assert node.calls[0].variable == "publish_debug_"
     assert node.calls[2].conditions == (Condition("argc > 1", program_args=True),)
+
+
+NODE2 = """
+    #include <rclcpp/rclcpp.hpp>
+    #include <std_msgs/msg/string.hpp>
+
+    class Gated : public rclcpp::Node {
+     public:
+      Gated() : Node("gated2") {
+        debug_ = declare_parameter("publish_debug", false);
+        status_ = this->declare_parameter("publish_status", false);
+        if (debug_) {
+          debug_pub_ = create_publisher<std_msgs::msg::String>("debug", 10);
+        }
+        if (status_) {
+          status_pub_ = create_publisher<std_msgs::msg::String>("status", 10);
+        }
+      }
+     private:
+      bool debug_, status_;
+      rclcpp::Publisher<std_msgs::msg::String>::SharedPtr debug_pub_, status_pub_;
+    };
+
+    int main(int argc, char** argv) {
+      rclcpp::init(argc, argv);
+      rclcpp::spin(std::make_shared<Gated>());
+    }
+    """
+
+LAUNCH2 = """
+    <launch>
+      <node pkg="gated2" exec="gated2" name="gated2">
+        <param name="publish_status" value="true"/>
+      </node>
+    </launch>
+    """
+
+
+def test_ros2_declared_parameters_decide_conditions(write_tree):
+    root = write_tree({
+        "src/gated2/package.xml": package_xml("gated2", build_type="ament_cmake"),
+        "src/gated2/CMakeLists.txt": "project(gated2)\nadd_executable(gated2 src/gated2.cpp)\n"
+                                     "install(TARGETS gated2 DESTINATION lib/${PROJECT_NAME})\n",
+        "src/gated2/src/gated2.cpp": NODE2,
+        "src/gated2/launch/gated2.launch.xml": LAUNCH2,
+        "project.yaml": "project: p\nconfigurations:\n  c: [gated2/launch/gated2.launch.xml]\n",
+    })
+    config = _config(root)
+    published = _publishers(config, "/gated2")
+    assert published.get("status") == []  # declared false, the launch file sets true
+    assert "debug" not in published       # declared with the default false, not set
