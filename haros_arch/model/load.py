@@ -106,7 +106,8 @@ def node_from_data(data: dict[str, Any], package: str) -> Node:
                 plugin_class=data.get("plugin_class") if isinstance(
                     data.get("plugin_class"), str) else None,
                 plugin_base=data.get("plugin_base") if isinstance(
-                    data.get("plugin_base"), str) else None)
+                    data.get("plugin_base"), str) else None,
+                aliases=[str(a) for a in data.get("aliases", ()) or () if isinstance(a, str)])
 
 
 def _completeness(value: Any) -> Completeness:

@@ -152,6 +152,10 @@ class Node:
     # a plugin class: the base class its plugin description names (``base_class_type``),
     # by which a host that loads every exported class of a base finds it (mavros)
     plugin_base: str | None = field(default=None, metadata={"optional": True})
+    # an interface model's node: the other names releases install its executable under
+    # (cartographer_ros' occupancy_grid_node is cartographer_occupancy_grid_node in the
+    # humble and jazzy releases); a launched executable of one of these names takes it
+    aliases: list[str] = field(default_factory=list, metadata={"optional": True})
 
     # the node's name (``pkg/exec``, ``pkg/Class``) first, as DESIGN's JSON contract says
     JSON_HEAD: ClassVar[dict[str, Any]] = {"name": lambda node: node.name}
