@@ -226,3 +226,25 @@ def test_ros2_declared_parameters_decide_conditions(write_tree):
     published = _publishers(config, "/gated2")
     assert published.get("status") == []  # declared false, the launch file sets true
     assert "debug" not in published       # declared with the default false, not set
+
+
+def test_the_condition_grammar_reads_only_what_it_can_compute():
+    from haros_arch.graph.conditions import decide, python_of
+    from haros_arch.model.values import Unknown
+
+    assert python_of("!a == b") == ("((not a) == b)", frozenset({"a", "b"}))
+    assert python_of("this->x_ && _y") == ("(x_ and _y)", frozenset({"x_", "_y"}))
+    for text in ("f(x)", "ns::flag", "x.size() > 0", "int i = 0; i < n; ++i", "a = 1",
+                 "__import__", "(" * 500 + "a" + ")" * 500, "a" * 2000, "default"):
+        assert python_of(text) is None, text
+    values = {"a": True, "b": 2}.get
+
+    def known(name):
+        found = values(name)
+        return Unknown(name) if found is None else found
+    assert decide(Condition("a && b == 2"), known) is True
+    assert decide(Condition("a && b == 2", statement="else"), known) is False
+    assert decide(Condition("a && c"), known) is None      # c has no value
+    assert decide(Condition("!a && c"), known) is False    # decided whatever c is
+    assert decide(Condition("a", statement="for"), known) is None
+    assert decide(Condition("argc > 1"), known, [["x", "y"]]) is None  # not main's

@@ -38,6 +38,7 @@ from ..model.runtime import Configuration, Link, NodeInstance, Parameter
 from ..model.values import UNKNOWN_MARK, Unknown
 
 DECIDED_STATEMENTS = ("if", "else", "switch")
+MAX_TEXT = 1000  # longer condition texts are left undecided
 _TOKEN = re.compile(r"""\s*(?:
     (?P<string>"[^"\\\n]*")
   | (?P<number>\d+(?:\.\d+)?)(?![\w.])
@@ -46,6 +47,9 @@ _TOKEN = re.compile(r"""\s*(?:
 )""", re.X)
 _KEYWORDS = {"true": "True", "false": "False"}
 _ALTERNATIVE = {"and": "&&", "or": "||", "not": "!"}
+_CPP_WORDS = {"default", "case", "sizeof", "new", "delete", "nullptr", "NULL", "this",
+              "static_cast", "dynamic_cast", "reinterpret_cast", "const_cast", "auto",
+              "const", "int", "bool", "double", "float", "char", "long", "unsigned"}
 _PYTHON_WORDS = {"True", "False", "None", "and", "or", "not", "in", "is", "if", "else",
                  "lambda", "for", "import", "def", "class", "return", "yield", "await"}
 
@@ -124,8 +128,8 @@ class _Grammar:
             inner = self._binary(0)
             self._take(")")
             return inner
-        if "::" in value or value in _PYTHON_WORDS or value.startswith("_") or (
-            self._peek() == ("op", "(")
+        if "::" in value or "__" in value or value in _PYTHON_WORDS or (
+            value in _CPP_WORDS or self._peek() == ("op", "(")
         ):
             raise ValueError(value)  # a qualified name or a call: not read
         self.names.add(value)
@@ -141,12 +145,15 @@ class _Grammar:
         return value
 
 
-def python_of(text: str) -> tuple[str, set[str]] | None:
+@functools.lru_cache(maxsize=4096)
+def python_of(text: str) -> tuple[str, frozenset[str]] | None:
     """The Python expression a C++ condition text reads as, with the names it uses."""
+    if len(text) > MAX_TEXT:
+        return None
     try:
         grammar = _Grammar(text)
-        return grammar.parse(), grammar.names
-    except (ValueError, IndexError):
+        return grammar.parse(), frozenset(grammar.names)
+    except (ValueError, IndexError, RecursionError):
         return None
 
 
