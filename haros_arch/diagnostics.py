@@ -353,6 +353,16 @@ CATALOGUE: dict[str, Entry] = {
         "Node('name')) unless the launch file renames it. Without the code the "
         "executable's name stands in, as packages usually name the two alike; when "
         "they differ, the instance's name (and its parameters) are wrong."),
+    "CONDITION_FALSE": Entry(
+        "info", "{node}: no {kind} {name} in this configuration: the code makes it "
+        "under {condition} ({where}), which does not hold here",
+        "The call sits under a condition in the source (or its interface model) over a "
+        "parameter the node reads (if (publish_acceleration_) after "
+        "nh.param(\"publish_acceleration\", publish_acceleration_, false)) or over "
+        "main's argc / argv, and the configuration decides it: the parameter's launch "
+        "value, else the code's default, or the node's launch arguments. The link does "
+        "not exist here, so no check counts it. Set the parameter (or the argument) "
+        "where the node is launched if the link is wanted."),
     "NAME_PARAM_UNSET": Entry(
         "info", "{node}: the name of this {kind} is the value of the {what}, which the "
         "configuration does not set; it stays unknown",

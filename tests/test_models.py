@@ -6,6 +6,7 @@ import json
 import os
 
 import pytest
+from conftest import package_xml
 
 from haros_arch.launch.model import LaunchModel, NodeDecl
 from haros_arch.model.load import from_data
@@ -481,3 +482,40 @@ def test_a_modelled_node_launched_without_name_takes_its_section_of_a_parameter_
     ekf = _instance(config, "/ekf_filter_node")  # the name its code (and model) gives it
     names = {link.name for link in ekf.subscribers}
     assert {"/imu/data", "/wheel/odom"} <= names and "/nowhere" not in names
+
+
+def test_a_release_name_of_the_executable_and_a_distribution_without_models(write_tree):
+    """humble has no model of cartographer_ros: jazzy's is used, and said; its releases install
+    cartographer_ros' occupancy_grid_node as cartographer_occupancy_grid_node, which
+    takes that node (the shipped model lists the alias)."""
+    root = write_tree({
+        "src/robot/package.xml": package_xml("robot", build_type="ament_cmake"),
+        "src/robot/CMakeLists.txt": "project(robot)\n",
+        "src/robot/launch/slam.launch.xml": """
+            <launch>
+              <node pkg="cartographer_ros" exec="cartographer_occupancy_grid_node"
+                    name="occupancy_grid_node"/>
+              <node pkg="cartographer_ros" exec="occupancy_grid_node" name="old_name"/>
+            </launch>
+            """,
+        "project.yaml": "project: p\ndistro: humble\n"
+                        "configurations:\n  c: [robot/launch/slam.launch.xml]\n",
+    })
+    config = _configuration(root)
+    new, old = _instance(config, "/occupancy_grid_node"), _instance(config, "/old_name")
+    assert new.node is old.node and new.node.model.startswith("jazzy/cartographer_ros ")
+    assert sorted(link.name for link in new.links if link.kind == "publish") == ["/map"]
+    said = [d.message for d in config.diagnostics]
+    assert any("interface models of distribution humble" in m for m in said)
+    assert any("cartographer_ros/cartographer_occupancy_grid_node" in m and
+               "its node occupancy_grid_node, which releases also install as "
+               "cartographer_occupancy_grid_node" in m for m in said)
+    assert not any(d.code == "MODEL_NODE_MISSING" for d in config.diagnostics)
+
+
+def test_a_model_node_is_found_by_an_alias():
+    data = {"schema": "haros-arch-model/2", "package": "p", "distro": "jazzy",
+            "nodes": [{"name": "p/old", "aliases": ["p_old"]}, {"name": "p/p_old_too"}]}
+    model = from_document(json.loads(json.dumps(data)))
+    assert model.node("old") is model.node("p_old") is model.nodes[0]
+    assert model.node("p_old_too") is model.nodes[1] and model.node("other") is None

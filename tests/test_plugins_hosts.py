@@ -40,6 +40,12 @@ def links_of(config, node):
                   if link.node.name == node)
 
 
+def no_layers(host: str, *costmaps: str) -> list[ParamDecl]:
+    """An empty ``plugins`` list: the costmap loads no layer (without the parameter it
+    would make the pre-Hydro ones)."""
+    return [ParamDecl(f"{host}/{costmap}/plugins", []) for costmap in costmaps]
+
+
 def test_move_base_gets_planner_recovery_and_costmap_layer_calls_under_their_names():
     move_base = Node("move_base", "move_base", calls=[call("publish", "~goal")])
     navfn = plugin("navfn", "navfn/NavfnROS", "navfn::NavfnROS",
@@ -61,6 +67,7 @@ def test_move_base_gets_planner_recovery_and_costmap_layer_calls_under_their_nam
         ParamDecl("/move_base/global_costmap/plugins",
                   [{"name": "static", "type": "costmap_2d::StaticLayer"}], location=where(5)),
         ParamDecl("/move_base/global_costmap/static/map_topic", "/map", "str"),
+        *no_layers("/move_base", "local_costmap"),
     ]
     config = graph([NodeDecl("/move_base", "move_base", "move_base")], params,
                    [move_base, navfn, recovery, static, trajectory])
@@ -88,7 +95,9 @@ def test_a_plugin_not_in_the_workspace_is_a_diagnostic_and_only_that_instance_is
                 plugin("base_local_planner", "base_local_planner/TrajectoryPlannerROS",
                        "base_local_planner::TrajectoryPlannerROS")]
     params = [ParamDecl("/a/move_base/base_local_planner", "dwa/DWAPlannerROS", "str",
-                        location=where(7))]
+                        location=where(7)),
+              *no_layers("/a/move_base", "global_costmap", "local_costmap"),
+              *no_layers("/b/move_base", "global_costmap", "local_costmap")]
     config = graph([NodeDecl("/a/move_base", "move_base", "move_base", "/a/"),
                     NodeDecl("/b/move_base", "move_base", "move_base", "/b/")],
                    params, [move_base, *defaults])
@@ -344,6 +353,7 @@ def test_ros1_costmap_obstacle_layer_subscribes_its_observation_sources():
         ParamDecl("/move_base/global_costmap/obstacles/laser/data_type", "LaserScan"),
         ParamDecl("/move_base/global_costmap/obstacles/laser/topic", "scan",
                   location=where(6)),
+        *no_layers("/move_base", "local_costmap"),
     ]
     config = graph([NodeDecl("/r/move_base", "move_base", "move_base", "/r/")],
                    [ParamDecl("/r" + p.name, p.value, location=p.location) for p in params],

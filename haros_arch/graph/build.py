@@ -32,6 +32,7 @@ from ..plugins.transports import Transports
 from ..robot.attach import attach as attach_descriptions
 from ..workspace import Workspace, installed_roots
 from .actions import action_links
+from .conditions import decide_links
 from .processes import guessed_names, process_nodes, process_params
 
 RESOURCE_OF_KIND: dict[str, type[Resource]] = {
@@ -136,6 +137,7 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
         _link_calls(instance, calls, resources, config, transports)
     for action, call, name in action_links(config):
         link(action.node, call, {}, resources, config, name)
+    decide_links(config)  # source conditions this configuration decides
     _namespace_values(config)
     config.package_paths = package_paths(launch, workspace)
     return config

@@ -22,6 +22,9 @@ class Condition:
     kind: ConditionKind = "source"
     statement: str = "if"
     location: Location = field(default=NOWHERE)
+    # a source condition in ``main``: its ``argc`` / ``argv`` are the program's own
+    # arguments, which a launch file's ``args`` tell (graph.conditions decides it)
+    program_args: bool = field(default=False, metadata={"optional": True})
 
     def __str__(self) -> str:
         return f"{self.statement} ({self.text})"

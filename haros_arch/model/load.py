@@ -67,7 +67,8 @@ def conditions(data: Any) -> tuple[Condition, ...]:
             found.append(Condition(item))
         elif isinstance(item, dict):
             found.append(Condition(str(item.get("text", "")), item.get("kind", "source"),
-                                   item.get("statement", "if"), location(item.get("location"))))
+                                   item.get("statement", "if"), location(item.get("location")),
+                                   bool(item.get("program_args", False))))
     return tuple(found)
 
 
@@ -92,7 +93,8 @@ def node_from_data(data: dict[str, Any], package: str) -> Node:
                            handle_namespace=c.get("handle_namespace"),
                            deletes=bool(c.get("deletes", False)),
                            node_name=c.get("node_name"), name_each=c.get("name_each"),
-                           transport=c.get("transport"))
+                           transport=c.get("transport"),
+                           variable=c.get("variable"))
              for c in data.get("calls", ())]
     return Node(data.get("package", package), executable, data.get("kind", "executable"),
                 data.get("language", "cpp"), list(data.get("sources", ())), calls,
@@ -105,7 +107,8 @@ def node_from_data(data: dict[str, Any], package: str) -> Node:
                 plugin_class=data.get("plugin_class") if isinstance(
                     data.get("plugin_class"), str) else None,
                 plugin_base=data.get("plugin_base") if isinstance(
-                    data.get("plugin_base"), str) else None)
+                    data.get("plugin_base"), str) else None,
+                aliases=[str(a) for a in data.get("aliases", ()) or () if isinstance(a, str)])
 
 
 def _completeness(value: Any) -> Completeness:

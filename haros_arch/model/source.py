@@ -104,6 +104,11 @@ class PrimitiveCall:
     # ``/``: the transport's topic is named from the base as written, not from the base
     # resolved and remapped (ROS 1 Subscriber)
     transport: str | None = field(default=None, metadata={"optional": True})
+    # a parameter read: the member variable it stores the value in (``publish_`` of
+    # ``nh.param("publish", publish_, false)`` or ``publish_ = declare_parameter(..)``),
+    # when that is the member's only write in the file; a source condition over the
+    # member is then decided per instance by the parameter's value (graph.conditions)
+    variable: str | None = field(default=None, metadata={"optional": True})
 
 
 def wire_call(action: PrimitiveCall, kind: CallKind, name: str, type_: str | None,
@@ -154,6 +159,10 @@ class Node:
     # a plugin class: the base class its plugin description names (``base_class_type``),
     # by which a host that loads every exported class of a base finds it (mavros)
     plugin_base: str | None = field(default=None, metadata={"optional": True})
+    # an interface model's node: the other names releases install its executable under
+    # (cartographer_ros' occupancy_grid_node is cartographer_occupancy_grid_node in the
+    # humble and jazzy releases); a launched executable of one of these names takes it
+    aliases: list[str] = field(default_factory=list, metadata={"optional": True})
 
     # the node's name (``pkg/exec``, ``pkg/Class``) first, as DESIGN's JSON contract says
     JSON_HEAD: ClassVar[dict[str, Any]] = {"name": lambda node: node.name}

@@ -9,8 +9,11 @@ and its version, and every link made from it has ``origin: "model"``.
 
 The distribution is the project file's ``distro:``, else ``ROS_DISTRO`` in the
 configuration's environment, else guessed from its launch files (ROS 1: noetic, ROS 2:
-jazzy); a ``MODEL_DISTRO`` diagnostic says which, and ``MODEL_USED`` which model each
-node took.
+jazzy); humble and iron take jazzy's model of a package they have none of (models for
+them are made only where their packages differ). A ``MODEL_DISTRO`` diagnostic says
+which, and ``MODEL_USED`` which model each node took (its label starts with the
+distribution it is for), and under which name when the launch file starts it by
+another name its releases install (``Node.aliases``).
 """
 
 from __future__ import annotations
@@ -32,6 +35,8 @@ from .format import InterfaceModel
 from .library import Library
 
 DEFAULT_DISTRO = {1: "noetic", 2: "jazzy"}
+# a distribution whose models are made only where its packages differ from another's
+FALLBACK = {"humble": "jazzy", "iron": "jazzy"}
 
 
 def choose_distro(setting: str | None, environment: Mapping[str, str],
@@ -73,7 +78,7 @@ class Attacher:
                 chosen = choose_distro(self.distro, environment, launch)
                 found.append(diag.make("MODEL_DISTRO", decl.location, distro=chosen[0],
                                        why=chosen[1]))
-            model = self.library.find(package, chosen[0])
+            model = self._find(package, chosen[0])
             if model is None:
                 continue
             executable = key.partition("/")[2]
@@ -86,8 +91,11 @@ class Attacher:
                 continue
             result[key] = node
             where = workspace.find(package)
+            label = model.label if node.executable == executable else (
+                f"{model.label} (its node {node.executable}, which releases also install "
+                f"as {executable})")
             found.append(diag.make(
-                "MODEL_USED", decl.location, node=key, model=model.label,
+                "MODEL_USED", decl.location, node=key, model=label,
                 where=f"installed at {where} without source" if where else "not found"))
         found.extend(self.library.diagnostics)
         self.library.diagnostics.clear()
@@ -103,7 +111,7 @@ class Attacher:
 
         def find(cls: str) -> Node | None:
             for package in class_packages(cls):
-                model = self.library.find(package, distro)
+                model = self._find(package, distro)
                 source = None if model is None else next(
                     (n for n in model.nodes if n.name == cls or (n.kind == "plugin" and cls in (
                         n.executable, (n.plugin_class or "").lstrip(":")))), None)
@@ -112,13 +120,22 @@ class Attacher:
             return None
         return find
 
+    def _find(self, package: str, distro: str) -> InterfaceModel | None:
+        """The package's model for ``distro``, else for the distribution whose models
+        stand for it (``FALLBACK``: models are made for humble only where it differs
+        from jazzy); the model's label names the distribution it is for."""
+        model = self.library.find(package, distro)
+        if model is None and distro in FALLBACK:
+            model = self.library.find(package, FALLBACK[distro])
+        return model
+
     def _node(self, model: InterfaceModel, executable: str) -> Node | None:
-        key = (model.distro or "", model.package, executable)
-        if key in self._made:
-            return self._made[key]
         source = model.node(executable)
         if source is None:
             return None
+        key = (model.distro or "", model.package, source.executable)
+        if key in self._made:
+            return self._made[key]
         node = copy.deepcopy(source)
         node.model = model.label
         if node.completeness == "complete":

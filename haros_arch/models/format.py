@@ -51,7 +51,7 @@ SCHEMA_VERSION = 2
 SCHEMA = f"haros-arch-model/{SCHEMA_VERSION}"
 SCHEMA_PREFIX = "haros-arch-model/"
 _TEXT_FIELDS = ("type", "name_param", "name_default", "name_each", "handle_namespace",
-                "node_name", "callback", "transport")
+                "node_name", "callback", "transport", "variable")
 
 
 class ModelFileError(ValueError):
@@ -81,7 +81,10 @@ class InterfaceModel:
         return f"{self.distro or 'any'}/{self.package}{version}{origin}"
 
     def node(self, executable: str) -> Node | None:
-        return next((n for n in self.nodes if n.executable == executable), None)
+        """The node of this executable name, else the one releases also install under
+        it (``Node.aliases``)."""
+        return next((n for n in self.nodes if n.executable == executable), None) or next(
+            (n for n in self.nodes if executable in n.aliases), None)
 
 
 def to_document(model: InterfaceModel) -> dict[str, Any]:

@@ -55,7 +55,7 @@ REPOSITORY = re.compile(r"^github:[A-Za-z0-9_.-]+/[A-Za-z0-9_.-]+$")
 # extractor took as unconditional under the condition that guards them, name calls by
 # the elements of a list parameter or a numbered family of parameters, and drop the
 # calls of source files the node links but never runs (a library's other classes)
-OVERRIDE_KEYS = ("complete", "partial", "conditions", "names", "drop", "handles")
+OVERRIDE_KEYS = ("complete", "partial", "conditions", "names", "drop", "handles", "aliases")
 
 
 class ListError(ValueError):
@@ -220,7 +220,8 @@ def _build(task: Task, outcome: Outcome) -> Outcome:
 def _apply_override(task: Task, nodes: list[Node], found: list[Diagnostic]) -> str | None:
     """The reviewed override of the package, if any: hint-format calls per node (a node
     the build files do not show is made from them), ``complete: <why>`` to say the
-    node's interface is now whole, ``partial: <why>`` to say what it still lacks."""
+    node's interface is now whole, ``partial: <why>`` to say what it still lacks,
+    ``aliases: [name]`` for the other names releases install the executable under."""
     relative = os.path.join(task.entry.distro, task.package + ".yaml")
     path = os.path.join(task.overrides, relative)
     if not os.path.isfile(path):
@@ -248,6 +249,8 @@ def _apply_override(task: Task, nodes: list[Node], found: list[Diagnostic]) -> s
             _override_drop(node, block.get("drop"), relative, found)
             _override_conditions(node, block.get("conditions"), relative, found)
             _override_names(node, block.get("names"), relative, found)
+        if isinstance(block, dict) and isinstance(block.get("aliases"), list):
+            node.aliases = [str(a) for a in block["aliases"] if isinstance(a, str)]
         if isinstance(block, dict) and isinstance(block.get("partial"), str):
             node.mark_partial(f"override {relative}: {block['partial']}")
         if isinstance(block, dict) and isinstance(block.get("complete"), str):
@@ -263,13 +266,15 @@ def _override_conditions(node: Node, entries: Any, relative: str,
                          found: list[Diagnostic]) -> None:
     """``conditions: [{calls: file:line, text: ..., at: file:line}]``: the calls made at
     ``calls`` exist only under ``text``, written at ``at`` (a caller's ``if`` the
-    extractor does not carry into the function it calls)."""
+    extractor does not carry into the function it calls); ``program_args: true`` when
+    ``at`` is in ``main(argc, argv)`` (its ``argc`` / ``argv`` are the program's)."""
     for entry in entries if isinstance(entries, list) else []:
         at, text = _place(entry.get("at")), entry.get("text")
         for call in _calls_at(node, entry, relative, found,
                               isinstance(text, str) and at is not None):
             where = Location(node.package, at[0], at[1]) if at else Location()
-            call.conditions = (*call.conditions, Condition(str(text), "source", "if", where))
+            call.conditions = (*call.conditions, Condition(
+                str(text), "source", "if", where, entry.get("program_args") is True))
 
 
 def _override_handles(node: Node, entries: Any, relative: str,

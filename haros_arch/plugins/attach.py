@@ -88,6 +88,9 @@ class Choice:
     reads: tuple[str, ...] = ()
     remaps: tuple[tuple[str, str], ...] = ()  # a spawner's --controller-ros-args
     node: Node | None = None  # the class's node when the choice was made from it
+    # the host's namespace (relative to it) its code moves this plugin's parameters from
+    # before loading it (a pre-Hydro costmap's ``observation_sources`` and sources)
+    moved_from: str | None = None
 
 
 def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance]],
@@ -394,6 +397,9 @@ def _chosen(instance: NodeInstance, slot: Slot, params: Params) -> Iterator[Choi
     listed = _parameter(params, base + slot.names)
     where: Location
     conditions: tuple[Condition, ...]
+    if listed is None and slot.pre_hydro:
+        yield from _pre_hydro(instance, slot, params)
+        return
     if listed is None:
         entries: list[Any] = [name for name, _ in slot.defaults]
         where, conditions = instance.location, ()
@@ -416,6 +422,32 @@ def _chosen(instance: NodeInstance, slot: Slot, params: Params) -> Iterator[Choi
                          (*conditions, *typed.launch_conditions), (*listing, parameter))
         else:
             yield Choice(name, cls, where, conditions, listing)
+
+
+def _pre_hydro(instance: NodeInstance, slot: Slot, params: Params) -> Iterator[Choice]:
+    """A ROS 1 costmap without ``plugins`` makes its layers from the older parameters
+    (costmap_2d_ros.cpp, ``Costmap2DROS::loadOldParameters``, lines 192-262 in noetic):
+    ``static_layer`` when ``static_map`` is true (:203), ``obstacle_layer`` a VoxelLayer
+    when ``map_type`` is ``voxel``, else an ObstacleLayer (:218-237), and
+    ``inflation_layer`` (:252-258); it moves ``observation_sources`` and each source's
+    parameters from the costmap's namespace into the obstacle layer's (:244-250)."""
+    costmap = instance.name.rstrip("/") + "/" + slot.prefix
+    static = _parameter(params, costmap + "static_map")
+    if static is not None and static.value is not False:
+        known = static.value is True
+        yield Choice("static_layer", "costmap_2d::StaticLayer", static.launch_location,
+                     (*static.launch_conditions, *(() if known else (Condition(
+                         f"{static.name} is true", "source", "if",
+                         static.launch_location),))), (static.name,))
+    kind = _parameter(params, costmap + "map_type")
+    voxel = kind is not None and kind.value == "voxel"
+    yield Choice("obstacle_layer", "costmap_2d::VoxelLayer" if voxel
+                 else "costmap_2d::ObstacleLayer",
+                 kind.launch_location if kind is not None else instance.location,
+                 kind.launch_conditions if kind is not None else (),
+                 (kind.name,) if kind is not None else (),
+                 moved_from=slot.prefix.rstrip("/"))
+    yield Choice("inflation_layer", "costmap_2d::InflationLayer", instance.location)
 
 
 def _text(value: Any) -> str | None:
@@ -640,7 +672,8 @@ def _per_source(calls: list[PrimitiveCall], row: Sources, plugin: str, choice: C
     for the list the calls stay as they are; with an unknown one a subscription to an
     unknown topic says so."""
     base = instance.name.rstrip("/") + "/"
-    listed = _parameter(params, base + row.names.format(plugin=plugin))
+    keys = choice.moved_from or plugin  # where the launch files set the sources
+    listed = _parameter(params, base + row.names.format(plugin=keys))
     if listed is None:
         return calls
     conditions = (*choice.conditions, *listed.launch_conditions)
@@ -665,8 +698,8 @@ def _per_source(calls: list[PrimitiveCall], row: Sources, plugin: str, choice: C
                                name_param=_source_named(call.name_param, mark, source)))
     parent = _parent_rule(row, node, workspace)
     for source in sources:
-        topic_key = base + row.topic.format(plugin=plugin, source=source)
-        type_key = base + row.data_type.format(plugin=plugin, source=source)
+        topic_key = base + row.topic.format(plugin=keys, source=source)
+        type_key = base + row.data_type.format(plugin=keys, source=source)
         topic_param, type_param = _parameter(params, topic_key), _parameter(params, type_key)
         topic = source if topic_param is None else _text(topic_param.value) or UNKNOWN_MARK
         data_type = row.default_type if type_param is None else _text(type_param.value)

@@ -60,6 +60,9 @@ class Slot:
     # a node of its own named by its code: the regular expression that finds that name
     # in the class's sources (group 1), as the class's ``rosname``
     node_name: str | None = None
+    # a ROS 1 costmap: without ``plugins`` it makes its layers from the pre-Hydro
+    # parameters (``plugins.attach._pre_hydro``)
+    pre_hydro: bool = False
 
 
 @dataclass(frozen=True)
@@ -118,7 +121,7 @@ _NAV2_COSTMAP = (Slot("plugins", "{name}.plugin", ("nav2_costmap_2d",
 
 def _ros1_costmap(prefix: str) -> Slot:
     return Slot(f"{prefix}plugins", None, ("costmap_2d", "costmap_2d::Layer"),
-                prefix=prefix)
+                prefix=prefix, pre_hydro=True)
 
 
 HOSTS: tuple[Host, ...] = (

@@ -11,6 +11,8 @@ them. A call in an ``else`` branch gets statement ``else`` with the text of its
 exception declaration; a ``switch``'s is its value against the ``case`` labels the
 call follows (``mode == 1``; after ``default:``, ``mode != 1 && mode != 2``). Condition
 texts are taken from the source as written (macros unexpanded), whitespace collapsed.
+A condition in ``main(argc, argv)`` says so (``program_args``): its ``argc`` / ``argv``
+are the program's arguments, which the graph can decide from a launch file's ``args``.
 """
 
 from __future__ import annotations
@@ -38,6 +40,7 @@ class ConditionReader:
     def __init__(self, source: dict[str, bytes], where: Callable[[Cursor], Location]) -> None:
         self.source = source
         self.where = where
+        self.in_main = False  # the function walked is main(argc, argv)
 
     def branches(self, node: Cursor) -> list[Branch]:
         kind = node.kind
@@ -126,7 +129,7 @@ class ConditionReader:
     # -- text -------------------------------------------------------------------------
 
     def _condition(self, node: Cursor, statement: str, text: str) -> Condition:
-        return Condition(text, "source", statement, self.where(node))
+        return Condition(text, "source", statement, self.where(node), self.in_main)
 
     def _bytes(self, node_file: object) -> bytes | None:
         name = getattr(node_file, "name", None)

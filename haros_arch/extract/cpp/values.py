@@ -281,9 +281,14 @@ class Scope:
             token = self.token(cursor) or ""
             token = self.macros.get(token, token)
             return {"true": True, "false": False}.get(token)
-        if cursor.kind == CursorKind.DECL_REF_EXPR and cursor.referenced is not None:
+        if cursor.kind in (CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR) and (
+            cursor.referenced is not None
+        ):
             value = self.variable(cursor.referenced)
-            return None if value is None else self.boolean(value)
+            if value is None:  # a member: the value its constructor gives it
+                found = self.field(cursor.referenced)
+                return None if found is None else found[1].boolean(found[0])
+            return self.boolean(value)
         return None
 
 

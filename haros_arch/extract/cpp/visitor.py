@@ -35,11 +35,20 @@ from .handles import (
     record_class,
 )
 from .links import Fact, argument_facts
+from .members import MemberWrites, member_of
 from .owners import constructed_class, handle_node, owner_of
 from .qos import qos as qos_of
 from .tested import Key, TestedCalls
 from .tested import key as key_of
-from .values import PLACEHOLDER, Scope, initializer, render, strip, written_arguments
+from .values import (
+    PLACEHOLDER,
+    Scope,
+    _may_write,
+    initializer,
+    render,
+    strip,
+    written_arguments,
+)
 from .wrappers import Wrappers
 
 CONTAINERS = frozenset({
@@ -98,14 +107,21 @@ class CallFinder:
         self.diagnostics: list[Diagnostic] = []
         self.facts: list[Fact] = []  # what this file passes to other files' functions
         self.wrappers = Wrappers(self)  # the file's functions that wrap the ROS API
+        self.members: MemberWrites | None = None
+        # parameter reads and the member variable each stores its value in
+        self._stored: list[tuple[PrimitiveCall, Cursor]] = []
 
     def run(self) -> None:
         self.functions = list(self._definitions(self.tu.cursor, top=True))
         self.sites = self.namespaces.sites = CallSites(self.functions, self.macros, self.source,
                                                        external=True)
         self.wrappers.build()
+        self.members = MemberWrites(self.functions, self.source)
         for function in self.functions:
             self._function(function)
+        for read, member in self._stored:  # the member's one write is this read
+            if self.members.writes(member) == 1:
+                read.variable = member.spelling
         self.facts = argument_facts(self.sites, self.namespaces, self.owned)
         for call in self.calls:  # get_parameter("p") of a declare_parameter("p", default)
             if call.name_param is not None and call.name_default is None:
@@ -134,6 +150,9 @@ class CallFinder:
 
     def _function(self, function: Cursor) -> None:
         scope = self._scope = Scope(function, self.macros, self.source, self.sites)
+        params = [c.spelling for c in function.get_children() if c.kind == CursorKind.PARM_DECL]
+        # main(argc, argv): its conditions over them are over the program's arguments
+        self.reader.in_main = function.spelling == "main" and params[:2] == ["argc", "argv"]
         self._owner = owner_of(function)
         tested, self._status_reads = TestedCalls(self.reader), []
         stack: list[tuple[Cursor, tuple[Condition, ...]]] = [
@@ -409,6 +428,9 @@ class CallFinder:
                 deletes=spec.deletes, node_name=owner, transport=transport))
             if status is not None:
                 self._status_reads.append((status, self.calls[-1]))
+            member = self._member(spec, call, shift) if len(names) == 1 else None
+            if member is not None:
+                self._stored.append((self.calls[-1], member))
             if "?" in name and PLACEHOLDER not in name:
                 self.diagnostics.append(diag.make(
                     "CPP_DYNAMIC_NAME", location, kind=spec.kind, name=name))
@@ -505,6 +527,21 @@ class CallFinder:
             if _known(parts):
                 default = render(parts)
         return (name, default)
+
+    def _member(self, spec: api.RosFunction, call: Cursor, shift: int) -> Cursor | None:
+        """The member variable a parameter read stores its value in: its out argument
+        (passed by reference), or the member its result is assigned to."""
+        if spec.kind not in _PARAM_KINDS or self.members is None:
+            return None
+        member = None
+        if spec.out_arg is not None:
+            index, args = spec.out_arg + shift, list(call.get_arguments())
+            if index < len(args) and _may_write(call, index):
+                member = member_of(args[index])
+        if member is None:
+            made = key_of(call)
+            member = self.members.assigned.get(made) if made is not None else None
+        return member
 
     @staticmethod
     def _default(spec: api.RosFunction, args: list[Cursor],

@@ -1,0 +1,304 @@
+"""Source conditions decided per node instance, from its parameters and arguments.
+
+A call under ``if (publish_acceleration_)`` exists in a configuration exactly when the
+condition holds there. The condition is decided when every name it uses has a value
+this instance gives it:
+
+- a member variable that one parameter read of the same file stores into
+  (``PrimitiveCall.variable``): the value the configuration gives the parameter (the
+  launch files', with no launch condition and no node setting it), else the read's
+  default; a value whose type is not the read's is not used (roscpp would keep the
+  default, rclcpp would refuse it);
+- ``argc`` / ``argv`` of a condition in ``main`` (``Condition.program_args``) of a
+  ROS 1 instance whose ``args`` are known: roslaunch starts it with its ``args`` words,
+  its remappings, ``__name:=`` and ``__log:=``, and ``ros::init`` removes the ``:=``
+  words; the condition is decided only when both views of ``argv`` give one answer.
+
+The C++ text is read by a small grammar (``||``, ``&&``, ``!``, comparisons,
+parentheses, literals, names, ``argv[N]``, ``std::string(..)``); anything else leaves it
+undecided, as do names with no value. The expression is then computed by the one safe
+evaluator (``haros_arch.evaluate``). A link whose condition is false does not exist in
+this configuration: it is dropped, with a CONDITION_FALSE info that says which call and
+why; conditions decided true are taken off the link (it is unconditional there);
+undecided ones stay as they are.
+"""
+
+from __future__ import annotations
+
+import functools
+import re
+import shlex
+from collections.abc import Callable
+from typing import Any
+
+from .. import diagnostics as diag
+from ..evaluate.python import evaluate, is_unknown
+from ..model.conditions import Condition
+from ..model.runtime import Configuration, Link, NodeInstance, Parameter
+from ..model.values import UNKNOWN_MARK, Unknown
+
+DECIDED_STATEMENTS = ("if", "else", "switch")
+MAX_TEXT = 1000  # longer condition texts are left undecided
+_TOKEN = re.compile(r"""\s*(?:
+    (?P<string>"[^"\\\n]*")
+  | (?P<number>\d+(?:\.\d+)?)(?![\w.])
+  | (?P<name>this\s*->\s*[A-Za-z_]\w*|[A-Za-z_]\w*(?:\s*::\s*[A-Za-z_]\w*)*)
+  | (?P<op>&&|\|\||==|!=|<=|>=|[!<>()\[\]])
+)""", re.X)
+_KEYWORDS = {"true": "True", "false": "False"}
+_ALTERNATIVE = {"and": "&&", "or": "||", "not": "!"}
+_CPP_WORDS = {"default", "case", "sizeof", "new", "delete", "nullptr", "NULL", "this",
+              "static_cast", "dynamic_cast", "reinterpret_cast", "const_cast", "auto",
+              "const", "int", "bool", "double", "float", "char", "long", "unsigned"}
+_PYTHON_WORDS = {"True", "False", "None", "and", "or", "not", "in", "is", "if", "else",
+                 "lambda", "for", "import", "def", "class", "return", "yield", "await"}
+
+
+class _Grammar:
+    """C++ condition text -> a fully parenthesised Python expression, or None."""
+
+    def __init__(self, text: str) -> None:
+        self.tokens: list[tuple[str, str]] = []
+        self.names: set[str] = set()
+        at = 0
+        text = text.strip()
+        while at < len(text):
+            found = _TOKEN.match(text, at)
+            if found is None or found.end() == at:
+                raise ValueError(text[at:at + 20])
+            kind = found.lastgroup or ""
+            value = found.group(kind)
+            if kind == "name":
+                value = re.sub(r"\s+", "", value).removeprefix("this->")
+                if value in _ALTERNATIVE:
+                    kind, value = "op", _ALTERNATIVE[value]
+            self.tokens.append((kind, value))
+            at = found.end()
+        self.at = 0
+
+    def parse(self) -> str:
+        out = self._binary(0)
+        if self.at != len(self.tokens):
+            raise ValueError("trailing text")
+        return out
+
+    _LEVELS = (("||",), ("&&",), ("==", "!="), ("<", ">", "<=", ">="))
+    _PYTHON = {"||": "or", "&&": "and"}
+
+    def _peek(self) -> tuple[str, str]:
+        return self.tokens[self.at] if self.at < len(self.tokens) else ("", "")
+
+    def _take(self, value: str) -> None:
+        if self._peek() != ("op", value):
+            raise ValueError(f"expected {value}")
+        self.at += 1
+
+    def _binary(self, level: int) -> str:
+        if level == len(self._LEVELS):
+            return self._unary()
+        left = self._binary(level + 1)
+        while self._peek()[0] == "op" and self._peek()[1] in self._LEVELS[level]:
+            operator = self._peek()[1]
+            self.at += 1
+            right = self._binary(level + 1)
+            left = f"({left} {self._PYTHON.get(operator, operator)} {right})"
+        return left
+
+    def _unary(self) -> str:
+        if self._peek() == ("op", "!"):
+            self.at += 1
+            return f"(not {self._unary()})"
+        return self._primary()
+
+    def _primary(self) -> str:
+        kind, value = self._peek()
+        self.at += 1
+        if kind in ("string", "number"):
+            return value
+        if (kind, value) == ("op", "("):
+            inner = self._binary(0)
+            self._take(")")
+            return inner
+        if kind != "name":
+            raise ValueError(value)
+        if value in _KEYWORDS:
+            return _KEYWORDS[value]
+        if value == "std::string":  # std::string(x): the text of x
+            self._take("(")
+            inner = self._binary(0)
+            self._take(")")
+            return inner
+        if "::" in value or "__" in value or value in _PYTHON_WORDS or (
+            value in _CPP_WORDS or self._peek() == ("op", "(")
+        ):
+            raise ValueError(value)  # a qualified name or a call: not read
+        self.names.add(value)
+        if self._peek() == ("op", "["):
+            self.at += 1
+            index, _ = self._peek()
+            if index != "number":
+                raise ValueError("index")
+            number = self._peek()[1]
+            self.at += 1
+            self._take("]")
+            return f"{value}[{number}]"
+        return value
+
+
+@functools.lru_cache(maxsize=4096)
+def python_of(text: str) -> tuple[str, frozenset[str]] | None:
+    """The Python expression a C++ condition text reads as, with the names it uses."""
+    if len(text) > MAX_TEXT:
+        return None
+    try:
+        grammar = _Grammar(text)
+        return grammar.parse(), frozenset(grammar.names)
+    except (ValueError, IndexError, RecursionError):
+        return None
+
+
+def decide(condition: Condition, values: Callable[[str], object],
+           argv_views: list[list[str]] | None = None) -> bool | None:
+    """True / False when ``condition`` is decided with the names' ``values`` (an
+    ``Unknown`` for a name with none); None when it is not. ``argv_views``: the
+    program's ``argv`` as the condition may see it (each view gives ``argc`` too)."""
+    if condition.kind != "source" or condition.statement not in DECIDED_STATEMENTS:
+        return None
+    read = python_of(condition.text)
+    if read is None:
+        return None
+    expression, names = read
+    uses_args = bool(names & {"argc", "argv"})
+    if uses_args and (not condition.program_args or not argv_views):
+        return None
+    answers = set()
+    for argv in (argv_views if uses_args and argv_views else [[]]):
+        def value(name: str, argv: list[str] = argv) -> object:
+            if uses_args and name == "argv":
+                return argv
+            if uses_args and name == "argc":
+                return len(argv)
+            return values(name)
+        result = evaluate(expression, value, {})
+        if is_unknown(result) or not isinstance(result, (bool, int, float, str)):
+            return None
+        answers.add(bool(result))
+    if len(answers) != 1:
+        return None
+    truth = answers.pop()
+    return (not truth) if condition.statement == "else" else truth
+
+
+def argv_views(instance: NodeInstance) -> list[list[str]] | None:
+    """A ROS 1 instance's ``argv`` before and after ``ros::init`` (see the module's
+    docstring); None when its arguments are not known."""
+    if instance.ros_version != 1 or UNKNOWN_MARK in instance.args or "$(" in instance.args:
+        return None
+    try:
+        words = shlex.split(instance.args)
+    except ValueError:
+        return None
+    program = instance.node.executable if instance.node is not None else "node"
+    given = [w for w in words if ":=" not in w]
+    remaps = len(instance.remaps) - (len(words) - len(given))
+    before = [program, *words, *(["from:=to"] * max(remaps, 0)),
+              f"__name:={instance.name.rpartition('/')[2]}", "__log:=log"]
+    return [before, [program, *given]]
+
+
+_TYPES: dict[str, tuple[type, ...]] = {"bool": (bool,), "int": (int,),
+                                       "double": (int, float), "float": (int, float),
+                                       "str": (str,)}
+
+
+def _typed(value: Any, ctype: str | None) -> object:
+    """``value`` when it is of the read's type (an int is not a bool here)."""
+    allowed = _TYPES.get(ctype or "")
+    if allowed is None or not isinstance(value, allowed) or (
+        bool not in allowed and isinstance(value, bool)
+    ):
+        return Unknown(f"a value of type {type(value).__name__} for a {ctype} read")
+    return value
+
+
+def _read_value(link: Link) -> object:
+    """The value a parameter read gets in this configuration."""
+    call, param = link.call, link.resource
+    if call is None or not isinstance(param, Parameter):
+        return Unknown("not a parameter read")
+    if param.set_by_launch:
+        if param.launch_conditions or param.setters:
+            return Unknown(f"{param.name} is set under a condition or by a node")
+        return _typed(param.value, call.type)
+    if param.setters:
+        return Unknown(f"{param.name} is set by a node")
+    if call.has_default and call.default is not None:
+        return _typed(call.default, call.type)
+    return Unknown(f"{param.name} is not set and its default is not known")
+
+
+def _member_values(instance: NodeInstance) -> Callable[..., object]:
+    """A member's value, by name and the file of the condition using it."""
+    reads: dict[tuple[str | None, str], list[Link]] = {}
+    for link in instance.links:
+        if link.call is not None and link.call.variable and link.kind in ("read", "declare"):
+            reads.setdefault((link.call.location.file, link.call.variable), []).append(link)
+
+    def value(name: str, *, file: str | None) -> object:
+        found = reads.get((file, name))
+        if not found:
+            return Unknown(f"{name} is not known to hold a parameter")
+        values = [_read_value(link) for link in found]
+        first = values[0]
+        if any(is_unknown(v) for v in values) or any(v != first for v in values[1:]):
+            return next((v for v in values if is_unknown(v)),
+                        Unknown(f"{name} holds parameters of different values"))
+        return first
+    return value
+
+
+def decide_links(config: Configuration) -> None:
+    """Take off each link the source conditions this configuration decides: a link
+    under a false one is dropped (CONDITION_FALSE says so), a true one is removed."""
+    dropped: list[Link] = []
+    for instance in config.nodes:
+        members = _member_values(instance)
+        views = argv_views(instance)
+        for link in list(instance.links):
+            kept: list[Condition] = []
+            false: Condition | None = None
+            for condition in link.conditions:
+                answer = decide(condition, functools.partial(
+                    members, file=condition.location.file), views)
+                if answer is False:
+                    false = condition
+                    break
+                if answer is None:
+                    kept.append(condition)
+            if false is not None:
+                dropped.append(link)
+                where = f"{false.location.file}:{false.location.line}"
+                config.diagnostics.append(diag.make(
+                    "CONDITION_FALSE", link.location, node=instance.name, kind=link.kind,
+                    name=link.rosname.full, condition=str(false), where=where))
+            elif len(kept) != len(link.conditions):
+                link.conditions = tuple(kept)
+    if dropped:
+        _drop(config, dropped)
+
+
+def _drop(config: Configuration, links: list[Link]) -> None:
+    gone = set(map(id, links))
+    config.links[:] = [k for k in config.links if id(k) not in gone]
+    emptied = set()
+    for link in links:
+        link.node.links[:] = [k for k in link.node.links if id(k) not in gone]
+        link.resource.links[:] = [k for k in link.resource.links if id(k) not in gone]
+        if not link.resource.links and not (
+            isinstance(link.resource, Parameter) and link.resource.set_by_launch
+        ):
+            emptied.add(id(link.resource))
+    collections: tuple[list[Any], ...] = (config.topics, config.services, config.actions,
+                                          config.parameters)
+    for collection in collections:
+        collection[:] = [r for r in collection if id(r) not in emptied]

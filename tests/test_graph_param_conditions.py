@@ -1,0 +1,250 @@
+"""Source conditions over a member that holds a parameter, or over main's argc / argv,
+are decided per node instance: false drops the link (a CONDITION_FALSE info says so),
+true makes it unconditional, anything else stays a condition."""
+
+from __future__ import annotations
+
+import json
+import os
+
+from conftest import package_xml
+
+from haros_arch.extract.cpp import extract_cpp
+from haros_arch.model.conditions import Condition
+from haros_arch.models.format import from_document
+from haros_arch.pipeline import Options, analyse
+from haros_arch.project import load
+from haros_arch.workspace import scan
+
+NODE = """
+    #include <ros/ros.h>
+    #include <std_msgs/String.h>
+    #include <string>
+
+    class Gated {
+     public:
+      Gated() : verbose_(false), publish_debug_(true) {}
+      void init() {
+        ros::NodeHandle nh, pnh("~");
+        pnh.param("publish_debug", publish_debug_, false);
+        pnh.param("publish_status", publish_status_, true);
+        pnh.param("verbose", verbose_, verbose_);
+        pnh.param("twice", twice_, false);
+        pnh.getParam("twice_again", twice_);
+        pnh.param("mode", mode_, 1);
+        pnh.param("from_launch", from_launch_, false);
+        if (publish_debug_) debug_ = nh.advertise<std_msgs::String>("debug", 1);
+        if (publish_status_) {
+          status_ = nh.advertise<std_msgs::String>("status", 1);
+        } else {
+          quiet_ = nh.advertise<std_msgs::String>("quiet", 1);
+        }
+        if (verbose_) chatty_ = nh.advertise<std_msgs::String>("chatty", 1);
+        if (twice_) twice_pub_ = nh.advertise<std_msgs::String>("twice", 1);
+        if (mode_ == 2) two_ = nh.advertise<std_msgs::String>("mode_two", 1);
+        if (this->from_launch_) launched_ = nh.advertise<std_msgs::String>("launched", 1);
+        if (unread_) unread_pub_ = nh.advertise<std_msgs::String>("unread", 1);
+        if (!from_launch_ && unread_) both_ = nh.advertise<std_msgs::String>("both", 1);
+      }
+     private:
+      bool verbose_, publish_debug_, publish_status_, twice_, from_launch_;
+      bool unread_ = false;
+      int mode_;
+      ros::Publisher debug_, status_, quiet_, chatty_, twice_pub_, two_, launched_;
+      ros::Publisher unread_pub_, both_;
+    };
+
+    template <typename T>
+    class Filter {
+     public:
+      void load() { ros::NodeHandle p("~"); p.param("publish_accel", accel_, false); }
+      void start() {
+        ros::NodeHandle nh;
+        if (accel_) pub_ = nh.advertise<std_msgs::String>("accel", 1);
+      }
+      bool ready(T x) { return accel_ && x.ok(); }  // reads accel_: not a write
+      bool accel_;
+      ros::Publisher pub_;
+    };
+
+    struct Ok { bool ok() const { return true; } };
+
+    int main(int argc, char** argv) {
+      ros::init(argc, argv, "gated");
+      Gated gated;
+      gated.init();
+      Filter<Ok> filter;
+      filter.load();
+      filter.start();
+      ros::NodeHandle nh;
+      ros::Publisher replay;
+      if ((argc >= 2) && (std::string(argv[1]) == "--replay")) {
+        replay = nh.advertise<std_msgs::String>("replay", 1);
+      }
+      ros::spin();
+    }
+    """
+
+LAUNCH = """
+    <launch>
+      <node pkg="gated" type="gated" name="gated">
+        <param name="from_launch" value="true"/>
+        <param name="publish_status" value="false"/>
+      </node>
+      <node pkg="gated" type="gated" name="replayer" args="--replay">
+        <remap from="debug" to="replayer_debug"/>
+      </node>
+      <arg name="unset"/>
+      <node pkg="gated" type="gated" name="unknown_args" args="$(arg unset)"/>
+    </launch>
+    """
+
+
+def _workspace(write_tree):
+    return write_tree({
+        "src/gated/package.xml": package_xml("gated"),
+        "src/gated/CMakeLists.txt": "project(gated)\nadd_executable(gated src/gated.cpp)\n",
+        "src/gated/src/gated.cpp": NODE,
+        "src/gated/launch/gated.launch": LAUNCH,
+        "project.yaml": "project: p\nconfigurations:\n  c: [gated/launch/gated.launch]\n",
+    })
+
+
+def _config(root):
+    model = analyse(load(str(root / "project.yaml")), {"PATH": os.environ.get("PATH", "")},
+                    Options(cache_dir=None))
+    return model.configuration("c")
+
+
+def _publishers(config, node: str) -> dict[str, list[str]]:
+    return {link.rosname.own: [c.text for c in link.conditions] for link in config.links
+            if link.node.name == node and link.kind == "publish"}
+
+
+def test_the_extractor_names_the_member_a_read_stores_into(write_tree):
+    root = _workspace(write_tree)
+    result = extract_cpp([str(root / "src/gated/src/gated.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    stored = {c.name: c.variable for c in result.calls if c.kind == "read"}
+    assert stored == {"~publish_debug": "publish_debug_", "~publish_status": "publish_status_",
+                      "~verbose": "verbose_", "~twice": None, "~twice_again": None,
+                      "~mode": "mode_", "~from_launch": "from_launch_",
+                      "~publish_accel": "accel_"}
+    defaults = {c.name: c.default for c in result.calls if c.kind == "read"}
+    assert defaults["~verbose"] is False  # the constructor's value of the member
+    replay = next(c for c in result.calls if c.name == "replay")
+    assert [c.program_args for c in replay.conditions] == [True]
+    debug = next(c for c in result.calls if c.name == "debug")
+    assert [c.program_args for c in debug.conditions] == [False]
+
+
+def test_conditions_decided_by_parameters_and_arguments(write_tree):
+    config = _config(_workspace(write_tree))
+    gated = _publishers(config, "/gated")
+    for absent in ("debug", "status", "chatty", "mode_two", "replay", "both", "accel"):
+        assert absent not in gated
+    assert gated["quiet"] == [] and gated["launched"] == []
+    assert gated["twice"] == ["twice_"] and gated["unread"] == ["unread_"]
+    replayer = _publishers(config, "/replayer")
+    assert replayer["replay"] == []  # args="--replay"
+    assert "status" in replayer and "quiet" not in replayer  # publish_status defaults true
+    assert "replayer_debug" not in replayer  # a dropped link leaves no topic behind
+    assert config.topic("/replayer_debug") is None
+    unknown = _publishers(config, "/unknown_args")
+    assert unknown["replay"] == ["(argc >= 2) && (std::string(argv[1]) == \"--replay\")"]
+    said = [d.message for d in config.diagnostics if d.code == "CONDITION_FALSE"]
+    assert any("/gated: no publish /debug" in m and "publish_debug_" in m for m in said)
+    assert any("/gated: no publish /replay" in m for m in said)
+
+
+def test_interface_models_carry_the_member_and_program_args():
+    """A model file's read names its member and a condition says it is main's: the
+    graph decides them for a node taken from the model as for one from source."""
+    data = {"schema": "haros-arch-model/2", "package": "gated", "distro": "noetic",
+            "version": "1", "nodes": [{"name": "gated/gated", "calls": [
+                {"kind": "read", "name": "~publish_debug", "type": "bool",
+                 "has_default": True, "default": False, "variable": "publish_debug_",
+                 "location": {"package": "gated", "file": "src/g.cpp", "line": 3}},
+                {"kind": "publish", "name": "debug", "type": "std_msgs/String",
+                 "conditions": [{"text": "publish_debug_", "statement": "if",
+                                 "location": {"package": "gated", "file": "src/g.cpp",
+                                              "line": 4}}]},
+                {"kind": "publish", "name": "replay", "type": "std_msgs/String",
+                 "conditions": [{"text": "argc > 1", "statement": "if",
+                                 "program_args": True}]}]}]}
+    node = from_document(json.loads(json.dumps(data))).nodes[0]
+    assert node.calls[0].variable == "publish_debug_"
+    assert node.calls[2].conditions == (Condition("argc > 1", program_args=True),)
+
+
+NODE2 = """
+    #include <rclcpp/rclcpp.hpp>
+    #include <std_msgs/msg/string.hpp>
+
+    class Gated : public rclcpp::Node {
+     public:
+      Gated() : Node("gated2") {
+        debug_ = declare_parameter("publish_debug", false);
+        status_ = this->declare_parameter("publish_status", false);
+        if (debug_) {
+          debug_pub_ = create_publisher<std_msgs::msg::String>("debug", 10);
+        }
+        if (status_) {
+          status_pub_ = create_publisher<std_msgs::msg::String>("status", 10);
+        }
+      }
+     private:
+      bool debug_, status_;
+      rclcpp::Publisher<std_msgs::msg::String>::SharedPtr debug_pub_, status_pub_;
+    };
+
+    int main(int argc, char** argv) {
+      rclcpp::init(argc, argv);
+      rclcpp::spin(std::make_shared<Gated>());
+    }
+    """
+
+LAUNCH2 = """
+    <launch>
+      <node pkg="gated2" exec="gated2" name="gated2">
+        <param name="publish_status" value="true"/>
+      </node>
+    </launch>
+    """
+
+
+def test_ros2_declared_parameters_decide_conditions(write_tree):
+    root = write_tree({
+        "src/gated2/package.xml": package_xml("gated2", build_type="ament_cmake"),
+        "src/gated2/CMakeLists.txt": "project(gated2)\nadd_executable(gated2 src/gated2.cpp)\n"
+                                     "install(TARGETS gated2 DESTINATION lib/${PROJECT_NAME})\n",
+        "src/gated2/src/gated2.cpp": NODE2,
+        "src/gated2/launch/gated2.launch.xml": LAUNCH2,
+        "project.yaml": "project: p\nconfigurations:\n  c: [gated2/launch/gated2.launch.xml]\n",
+    })
+    config = _config(root)
+    published = _publishers(config, "/gated2")
+    assert published.get("status") == []  # declared false, the launch file sets true
+    assert "debug" not in published       # declared with the default false, not set
+
+
+def test_the_condition_grammar_reads_only_what_it_can_compute():
+    from haros_arch.graph.conditions import decide, python_of
+    from haros_arch.model.values import Unknown
+
+    assert python_of("!a == b") == ("((not a) == b)", frozenset({"a", "b"}))
+    assert python_of("this->x_ && _y") == ("(x_ and _y)", frozenset({"x_", "_y"}))
+    for text in ("f(x)", "ns::flag", "x.size() > 0", "int i = 0; i < n; ++i", "a = 1",
+                 "__import__", "(" * 500 + "a" + ")" * 500, "a" * 2000, "default"):
+        assert python_of(text) is None, text
+    values = {"a": True, "b": 2}.get
+
+    def known(name):
+        found = values(name)
+        return Unknown(name) if found is None else found
+    assert decide(Condition("a && b == 2"), known) is True
+    assert decide(Condition("a && b == 2", statement="else"), known) is False
+    assert decide(Condition("a && c"), known) is None      # c has no value
+    assert decide(Condition("!a && c"), known) is False    # decided whatever c is
+    assert decide(Condition("a", statement="for"), known) is None
+    assert decide(Condition("argc > 1"), known, [["x", "y"]]) is None  # not main's

@@ -1,0 +1,60 @@
+"""A ROS 1 costmap without ``plugins`` makes its layers from the pre-Hydro parameters
+(costmap_2d's loadOldParameters): a static layer when ``static_map`` is true, an
+obstacle (or voxel) layer reading the sources set in the costmap's own namespace, and
+an inflation layer. move_base here is the shipped noetic model."""
+
+from __future__ import annotations
+
+from conftest import package_xml
+
+from haros_arch.pipeline import Options, analyse
+from haros_arch.project import load
+
+LAUNCH = """
+    <launch>
+      <node pkg="move_base" type="move_base" name="move_base">
+        <rosparam ns="global_costmap">
+          static_map: true
+          observation_sources: laser
+          laser: {{data_type: LaserScan, topic: base_scan}}
+          {extra}
+        </rosparam>
+        <rosparam ns="local_costmap">
+          static_map: false
+          map_type: voxel
+          observation_sources: cloud
+          cloud: {{data_type: PointCloud2, topic: /points}}
+        </rosparam>
+      </node>
+    </launch>
+    """
+
+
+def _subscribed(write_tree, extra: str = "") -> dict[str, set[str]]:
+    root = write_tree({
+        "src/nav/package.xml": package_xml("nav"),
+        "src/nav/CMakeLists.txt": "project(nav)\n",
+        "src/nav/launch/nav.launch": LAUNCH.format(extra=extra),
+        "project.yaml": "project: p\nconfigurations:\n  c: [nav/launch/nav.launch]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {}, Options(cache_dir=None, jobs=1))
+    (config,) = model.configurations
+    out: dict[str, set[str]] = {}
+    for link in config.links:
+        if link.node.name == "/move_base" and link.kind == "subscribe":
+            out.setdefault(link.name, set()).add(str(link.location.file))
+    return out
+
+
+def test_pre_hydro_costmap_parameters_make_the_layers(write_tree):
+    subscribed = _subscribed(write_tree)
+    assert "/map" in subscribed                # the global costmap's static layer
+    assert "/base_scan" in subscribed  # its obstacle layer's source (a global handle), moved
+    assert "/points" in subscribed             # the local costmap's voxel layer
+
+
+def test_a_plugins_list_is_used_as_it_is(write_tree):
+    subscribed = _subscribed(write_tree, "plugins: [{name: inflation, type: "
+                                         "'costmap_2d::InflationLayer'}]")
+    assert "/map" not in subscribed and "/base_scan" not in subscribed
+    assert "/points" in subscribed
