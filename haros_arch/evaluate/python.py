@@ -78,8 +78,9 @@ class Walker:
     (``eval_<Kind>(node, env)``), one step charged per node against ``limits.steps``, each
     value made size-checked (``operations.checked``), and Python's own rules for the
     constructs that only compute on the values of their operands: comparisons, unary
-    operators, slices. ``env`` is the configuration's scope (a reader of whole files passes
-    its frame; ``evaluate`` passes None). A configuration says what stops it (``over``), what
+    operators, slices, conditional expressions, ``and`` / ``or``, comprehension loops.
+    ``env`` is the configuration's scope (a reader of whole files passes its frame;
+    ``evaluate`` passes None). A configuration says what stops it (``over``), what
     a node kind it does not interpret gives (``unhandled``), which values it cannot compute
     with (``opaque``: ``Unknown`` and the reader's own partial values), what an operation on
     them gives (``not_known``), and what an operation the one evaluator refuses gives
