@@ -4,7 +4,8 @@
 
 For every launch file under each ROOT (``*.launch``, ``*.launch.xml``, ``*launch.py``) and
 every package with a setup.py: the nodes (name, package, executable, namespace, remaps),
-the parameters with their values and the diagnostics of the launch model, the
+the parameters with their values, the diagnostics, the whole model (`launch --format json`)
+and its tree (`launch --tree`), the
 ``console_scripts`` entry points and the share map; the calls the Python node reader finds
 in every ``.py`` file that uses rospy or rclpy. Each checkout runs in its own process
 (its own ``haros_arch`` first on the path); the script prints how many records each made
@@ -27,6 +28,9 @@ from haros_arch.launch import load
 from haros_arch import pysetup
 from haros_arch.share import share_map
 from haros_arch.extract.python import extract_python
+from haros_arch.launch.ros1.dump import as_data
+from haros_arch.launch.tree_view import as_rich
+from rich.console import Console
 
 out = open(sys.argv[1], "w")
 for root in sys.argv[2:]:
@@ -50,7 +54,11 @@ for root in sys.argv[2:]:
                                 for n in m.nodes],
                       "params": [f"{p.name}={p.value!r}" for p in m.params],
                       "diags": [f"{d.code}:{d.location.line}:{d.message}"
-                                for d in m.diagnostics]}
+                                for d in m.diagnostics],
+                      "model": json.dumps(as_data(m), sort_keys=True, default=str)}
+            console = Console(width=1000, record=True, file=open(os.devnull, "w"))
+            console.print(as_rich(m.tree), highlight=False, crop=False)
+            record["tree"] = console.export_text()
         except Exception as err:  # a bug of one side: shown as a difference
             record = {"file": path, "error": f"{type(err).__name__}: {err}"}
         out.write(json.dumps(record, default=str) + "\n")

@@ -101,3 +101,26 @@ def test_not_utf8_is_read_with_replacement(write_tree, tmp_path: Path) -> None:
     result = run(folder, "enc.py")
     assert [c.name for c in result.calls] == ["ok"]
     assert codes(result) == ["FILE_ENCODING"]
+
+
+def test_helper_fan_out_is_bounded_by_the_evaluation_budget(write_tree, monkeypatch) -> None:
+    """Helpers that each call the one below many times: the work grows as fan-out ** depth
+    (60 ** 4 calls from a 1 KB file ran for minutes). The walk's evaluation steps are
+    bounded (``values.LIMITS``, smaller here to keep the test quick): a diagnostic, the
+    calls before it kept."""
+    from haros_arch.evaluate.operations import Limits
+    from haros_arch.extract.python import values
+
+    monkeypatch.setattr(values.Evaluator, "limits", Limits(steps=20_000))
+    lines = ["import rospy", "from std_msgs.msg import String",
+             "rospy.Publisher('/before', String, queue_size=1)",
+             "def f0(x):", "    return x + 1"]
+    for level in range(1, 5):
+        lines += [f"def f{level}(x):", "    return " + " + ".join([f"f{level - 1}(x)"] * 8)]
+    lines.append("rospy.Publisher('/n%d' % f4(1), String, queue_size=1)")
+    folder = write_tree({"pkg/package.xml": package_xml("pkg"),
+                         "pkg/scripts/fan.py": "\n".join(lines) + "\n"})
+    result = run(folder, "fan.py")
+    assert [c.name for c in result.calls][:1] == ["/before"]
+    assert "PY_TOO_COMPLEX" in codes(result)
+    assert any("evaluation steps" in d.message for d in result.diagnostics)

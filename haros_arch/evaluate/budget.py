@@ -144,7 +144,7 @@ def format_length(template: str, args: Sequence[Any], kwargs: Mapping[str, Any],
     return total
 
 
-_PERCENT = re.compile(r"%(?:\([^)]*\))?[-#0 +]*(\*|\d+)?(?:\.(\*|\d+))?[hlL]?(.)", re.S)
+PERCENT = re.compile(r"%(?:\([^)]*\))?[-#0 +]*(\*|\d+)?(?:\.(\*|\d+))?[hlL]?(.)", re.S)
 
 
 def percent_length(template: str, values: Any, limit: int = MAX_LENGTH) -> int:
@@ -152,7 +152,7 @@ def percent_length(template: str, values: Any, limit: int = MAX_LENGTH) -> int:
     items = list(values) if isinstance(values, tuple) else [values]
     total = len(template)
     index = 0
-    for match in _PERCENT.finditer(template):
+    for match in PERCENT.finditer(template):
         if match.group(3) == "%":
             continue
         for part in (match.group(1), match.group(2)):

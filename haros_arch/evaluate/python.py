@@ -9,6 +9,13 @@ lambdas, ...) is not run: it yields an :class:`Unknown` that says why. Every ope
 known values goes through ``operations``, which charges it by the size of what it would
 make before making it.
 
+The walk itself is ``Walker``: dispatch on the node's kind, the step budget, the size check
+of every value made, and the constructs that only compute (comparisons, unary operators,
+slices, conditional expressions, ``and`` / ``or``, comprehension loops). ``evaluate`` runs
+it with every operand known or the expression stopped; the Python launch-file reader
+(``launch/ros2/python_expressions.py``) runs it over its partial values, saying what an
+operation on one of them gives.
+
 Each reader is a configuration of this module: its own table of functions (``functions``,
 keyed by name or dotted name: ``"os.path.join"``), its own names (``names(name)`` returns
 a value, returns an ``Unknown`` for a value nobody knows statically, or raises
@@ -29,15 +36,15 @@ from __future__ import annotations
 import ast
 from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, NoReturn
 
 from ..model.values import Unknown, UnknownKind
 from . import operations as ops
 from . import syntax
 from .operations import BUILTINS, MATH, Limits, Refused
 
-__all__ = ["BUILTINS", "MATH", "Limits", "Unknown", "evaluate", "evaluate_node",
-           "is_unknown", "names_from"]
+__all__ = ["BUILTINS", "MATH", "Limits", "Unknown", "Walker", "evaluate", "evaluate_counted",
+           "evaluate_node", "is_unknown", "names_from"]
 
 def is_unknown(value: object) -> bool:
     return isinstance(value, Unknown)
@@ -66,7 +73,165 @@ def _dotted(node: ast.expr) -> str | None:
     return None
 
 
-class _Interpreter:
+class Walker:
+    """The walk every configuration of the evaluator shares: dispatch on the node's kind
+    (``eval_<Kind>(node, env)``), one step charged per node against ``limits.steps``, each
+    value made size-checked (``operations.checked``), and Python's own rules for the
+    constructs that only compute on the values of their operands: comparisons, unary
+    operators, slices, conditional expressions, ``and`` / ``or``, comprehension loops.
+    ``env`` is the configuration's scope (a reader of whole files passes its frame;
+    ``evaluate`` passes None). A configuration says what stops it (``over``), what
+    a node kind it does not interpret gives (``unhandled``), which values it cannot compute
+    with (``opaque``: ``Unknown`` and the reader's own partial values), what an operation on
+    them gives (``not_known``), and what an operation the one evaluator refuses gives
+    (``refused``)."""
+
+    limits: Limits
+    steps: int
+
+    def over(self, reason: str) -> NoReturn:
+        raise NotImplementedError
+
+    def unhandled(self, node: ast.AST, env: Any = None) -> Any:
+        raise NotImplementedError
+
+    def opaque(self, value: object) -> bool:
+        return isinstance(value, Unknown)
+
+    def not_known(self, node: ast.AST, what: str, values: Iterable[object]) -> Any:
+        raise NotImplementedError
+
+    def refused(self, err: Refused, node: ast.AST, what: str) -> Any:
+        raise NotImplementedError
+
+    def step(self, count: int = 1) -> None:
+        self.steps += count
+        if self.steps > self.limits.steps:
+            self.over(f"more than {self.limits.steps} evaluation steps")
+
+    def compute(self, action: Callable[[], Any], node: ast.AST, what: str) -> Any:
+        """An operation of ``operations``; what it refuses is the configuration's."""
+        try:
+            return action()
+        except Refused as err:
+            return self.refused(err, node, what)
+
+    def eval(self, node: ast.AST, env: Any = None) -> Any:
+        self.step()
+        handler = getattr(self, "eval_" + type(node).__name__, None)
+        if handler is None:
+            return self.unhandled(node, env)
+        value = handler(node, env)
+        return self.compute(lambda: ops.checked(value, self.limits), node, "size")
+
+    def eval_Compare(self, node: ast.Compare, env: Any = None) -> Any:
+        left = self.eval(node.left, env)
+        for op, comparator in zip(node.ops, node.comparators, strict=True):
+            right = self.eval(comparator, env)
+            if self.opaque(left) or self.opaque(right):
+                return self.not_known(node, "comparison", (left, right))
+            self.step(ops.compare_cost(left, right, self.limits))
+            outcome = self.compute(lambda: ops.compare(
+                type(op), left, right), node, "comparison")  # noqa: B023
+            if self.opaque(outcome):
+                return outcome
+            if not outcome:
+                return False
+            left = right
+        return True
+
+    def eval_UnaryOp(self, node: ast.UnaryOp, env: Any = None) -> Any:
+        value = self.eval(node.operand, env)
+        what = "not" if isinstance(node.op, ast.Not) else "unary"
+        if self.opaque(value):
+            return self.not_known(node, what, (value,))
+        return self.compute(lambda: ops.unary(type(node.op), value), node, what)
+
+    def eval_Slice(self, node: ast.Slice, env: Any = None) -> Any:
+        parts = [self.eval(p, env) if p is not None else None
+                 for p in (node.lower, node.upper, node.step)]
+        if any(p is not None and (self.opaque(p) or not isinstance(p, int)) for p in parts):
+            return self.not_known(node, "slice", parts)
+        return slice(*parts)
+
+    past_unknown = False  # and / or: a later operand may still decide (see eval_BoolOp)
+
+    def eval_BoolOp(self, node: ast.BoolOp, env: Any = None) -> Any:
+        """Python's short-circuit. An operand not known is ``not_known``; with
+        ``past_unknown``, an ``Unknown`` is kept and the later operands are still evaluated
+        (one of them may be refused); the result is then that first unknown."""
+        is_and = isinstance(node.op, ast.And)
+        pending: Unknown | None = None
+        result: object = None
+        for operand in node.values:
+            result = self.eval(operand, env)
+            truth = self.truth(result)
+            if truth is None:
+                if not (self.past_unknown and isinstance(result, Unknown)):
+                    return self.not_known(node, "boolean", (result,))
+                pending = pending or result
+                continue
+            if truth != is_and:  # short-circuits: decided whatever came before
+                return result if pending is None else pending
+        return pending if pending is not None else result
+
+    def truth(self, value: object) -> bool | None:
+        """Python's truth of a value; None for one the configuration cannot compute with."""
+        return None if self.opaque(value) else bool(value)
+
+    def undecided(self, node: ast.IfExp, test: object, env: Any) -> Any:
+        """A conditional expression whose test is not known."""
+        raise NotImplementedError
+
+    def eval_IfExp(self, node: ast.IfExp, env: Any = None) -> Any:
+        test = self.eval(node.test, env)
+        truth = self.truth(test)
+        if truth is None:
+            return self.undecided(node, test, env)
+        return self.eval(node.body if truth else node.orelse, env)
+
+    # -- comprehensions: the loops are Python's; what a scope is, the configuration's ----
+    def enter(self, env: Any) -> Any:
+        """The scope of a comprehension's own variables, inside ``env``."""
+        raise NotImplementedError
+
+    def leave(self, scope: Any) -> None:
+        pass
+
+    def iterate(self, gen: ast.comprehension, env: Any) -> list[Any]:
+        """The items a generator of a comprehension loops over."""
+        raise NotImplementedError
+
+    def let(self, target: ast.AST, item: object, env: Any = None) -> None:
+        raise NotImplementedError
+
+    def keep(self, gen: ast.comprehension, env: Any) -> bool:
+        """Whether the generator's ``if`` filters keep the item just bound."""
+        raise NotImplementedError
+
+    def comprehension(self, generators: list[ast.comprehension], env: Any,
+                      emit: Callable[[Any], None]) -> None:
+        """Run ``emit(scope)`` for each combination of the generators' items that the
+        filters keep; each item is one step."""
+        def loop(index: int, scope: Any) -> None:
+            if index == len(generators):
+                emit(scope)
+                return
+            gen = generators[index]
+            for item in self.iterate(gen, scope):
+                self.step()
+                self.let(gen.target, item, scope)
+                if self.keep(gen, scope):
+                    loop(index + 1, scope)
+
+        scope = self.enter(env)
+        try:
+            loop(0, scope)
+        finally:
+            self.leave(scope)
+
+
+class _Interpreter(Walker):
     def __init__(self, names: Callable[[str], object] | None, functions: Mapping[str, Any],
                  limits: Limits, mutate: bool = False,
                  aliases: Mapping[str, str] | None = None, lenient: bool = False) -> None:
@@ -80,30 +245,35 @@ class _Interpreter:
         self.scopes: list[dict[str, object]] = []
         self.limited: tuple[Unknown, ast.AST] | None = None
 
-    def step(self, count: int = 1) -> None:
-        self.steps += count
-        if self.steps > self.limits.steps:
-            raise _Stop(Unknown(f"more than {self.limits.steps} evaluation steps", "limit"))
+    # -- this configuration: an operand not known stops the expression ------------------
+    past_unknown = True
 
-    def eval(self, node: ast.AST) -> Any:
-        self.step()
-        handler = getattr(self, "eval_" + type(node).__name__, None)
-        if handler is None:
-            raise _Stop(Unknown(f"{type(node).__name__} is not supported", "unsupported"))
-        value = handler(node)
-        return value if isinstance(value, Unknown) else self.guard(
-            lambda: ops.checked(value, self.limits))
+    def over(self, reason: str) -> NoReturn:
+        raise _Stop(Unknown(reason, "limit"))
+
+    def unhandled(self, node: ast.AST, env: Any = None) -> Any:
+        raise _Stop(Unknown(f"{type(node).__name__} is not supported", "unsupported"))
+
+    def opaque(self, value: object) -> bool:
+        return isinstance(value, (Unknown, _Function))
+
+    def not_known(self, node: ast.AST, what: str, values: Iterable[object]) -> Any:
+        self.known(*values)
+        raise _Stop(Unknown("slice indices must be integers or None", "error"))
+
+    def refused(self, err: Refused, node: ast.AST, what: str) -> Any:
+        return self.guard(lambda: _raise(err))
 
     # -- leaves ------------------------------------------------------------------------
-    def eval_Expression(self, node: ast.Expression) -> Any:
+    def eval_Expression(self, node: ast.Expression, env: Any = None) -> Any:
         return self.eval(node.body)
 
-    def eval_Constant(self, node: ast.Constant) -> Any:
+    def eval_Constant(self, node: ast.Constant, env: Any = None) -> Any:
         if node.value is Ellipsis:
             raise _Stop(Unknown("... is not supported", "unsupported"))
         return node.value
 
-    def eval_Name(self, node: ast.Name) -> Any:
+    def eval_Name(self, node: ast.Name, env: Any = None) -> Any:
         if "__" in node.id:
             raise _Stop(Unknown(f"name '{node.id}' is forbidden", "unsupported"))
         for scope in reversed(self.scopes):
@@ -126,7 +296,7 @@ class _Interpreter:
         except KeyError:
             raise _Stop(Unknown(f"name '{name}' is not defined", "undefined")) from None
 
-    def eval_Attribute(self, node: ast.Attribute) -> Any:
+    def eval_Attribute(self, node: ast.Attribute, env: Any = None) -> Any:
         """A dotted name of the caller's table (``math.pi``); no other attribute."""
         dotted = _dotted(node)
         if not self.is_function(dotted) or node.attr.startswith("_"):
@@ -146,19 +316,19 @@ class _Interpreter:
                 raise
             return stop.unknown
 
-    def eval_List(self, node: ast.List) -> Any:
+    def eval_List(self, node: ast.List, env: Any = None) -> Any:
         return [self.item(e) for e in node.elts]
 
-    def eval_Tuple(self, node: ast.Tuple) -> Any:
+    def eval_Tuple(self, node: ast.Tuple, env: Any = None) -> Any:
         return tuple(self.item(e) for e in node.elts)
 
-    def eval_Set(self, node: ast.Set) -> Any:
+    def eval_Set(self, node: ast.Set, env: Any = None) -> Any:
         items = [self.eval(e) for e in node.elts]
         self.known(*items)
         self.step(ops.walk_cost(items, self.limits))  # each item hashed
         return self.guard(lambda: set(items))
 
-    def eval_Dict(self, node: ast.Dict) -> Any:
+    def eval_Dict(self, node: ast.Dict, env: Any = None) -> Any:
         if any(k is None for k in node.keys):
             raise _Stop(Unknown("** in a dict literal is not supported", "unsupported"))
         keys = [self.eval(k) for k in node.keys if k is not None]
@@ -167,7 +337,7 @@ class _Interpreter:
         self.step(ops.walk_cost(keys, self.limits))  # each key hashed
         return self.guard(lambda: dict(zip(keys, values, strict=True)))
 
-    def eval_JoinedStr(self, node: ast.JoinedStr) -> Any:
+    def eval_JoinedStr(self, node: ast.JoinedStr, env: Any = None) -> Any:
         pieces = [self.eval(v) for v in node.values]
         self.known(*pieces)
         budget_length = sum(len(str(p)) for p in pieces)
@@ -175,77 +345,38 @@ class _Interpreter:
             raise _Stop(Unknown(f"result longer than {self.limits.length}", "limit"))
         return "".join(str(p) for p in pieces)
 
-    def eval_FormattedValue(self, node: ast.FormattedValue) -> Any:
+    def eval_FormattedValue(self, node: ast.FormattedValue, env: Any = None) -> Any:
         value = self.eval(node.value)
         spec = self.eval(node.format_spec) if node.format_spec is not None else ""
         self.known(value, spec)
         return self.guard(lambda: ops.format_value(value, spec, node.conversion, self.limits))
 
     # -- operators -----------------------------------------------------------------------
-    def eval_BoolOp(self, node: ast.BoolOp) -> Any:
-        is_and = isinstance(node.op, ast.And)
-        pending: Unknown | None = None
-        result: object = None
-        for operand in node.values:
-            result = self.eval(operand)
-            if isinstance(result, Unknown):
-                pending = pending or result
-                continue
-            self.known(result)
-            if bool(result) != is_and:  # short-circuits: decided whatever came before
-                return result if pending is None else pending
-        return pending if pending is not None else result
-
-    def eval_UnaryOp(self, node: ast.UnaryOp) -> Any:
-        value = self.eval(node.operand)
-        self.known(value)
-        return self.guard(lambda: ops.unary(type(node.op), value))
-
-    def eval_BinOp(self, node: ast.BinOp) -> Any:
+    def eval_BinOp(self, node: ast.BinOp, env: Any = None) -> Any:
         left, right = self.eval(node.left), self.eval(node.right)
         self.known(left, right)
         return self.made(self.guard(
             lambda: ops.binary(type(node.op), left, right, self.limits)))
 
-    def eval_Compare(self, node: ast.Compare) -> Any:
-        left = self.eval(node.left)
-        for op, comparator in zip(node.ops, node.comparators, strict=True):
-            right = self.eval(comparator)
-            self.known(left, right)
-            self.step(ops.compare_cost(left, right, self.limits))
-            outcome = self.guard(lambda: ops.compare(
-                type(op), left, right))  # noqa: B023
-            if not outcome:
-                return False
-            left = right
-        return True
+    def undecided(self, node: ast.IfExp, test: object, env: Any) -> Any:
+        """Both branches: their value when they agree, else the test's unknown."""
+        if not isinstance(test, Unknown):
+            self.known(test)
+        body, orelse = self.eval(node.body), self.eval(node.orelse)
+        self.step(ops.compare_cost(body, orelse, self.limits))
+        same = not isinstance(body, Unknown) and type(body) is type(orelse) \
+            and self.guard(lambda: body == orelse)
+        return body if same else test
 
-    def eval_IfExp(self, node: ast.IfExp) -> Any:
-        test = self.eval(node.test)
-        if isinstance(test, Unknown):
-            body, orelse = self.eval(node.body), self.eval(node.orelse)
-            self.step(ops.compare_cost(body, orelse, self.limits))
-            same = not isinstance(body, Unknown) and type(body) is type(orelse) \
-                and self.guard(lambda: body == orelse)
-            return body if same else test
-        self.known(test)
-        return self.eval(node.body if test else node.orelse)
-
-    def eval_Subscript(self, node: ast.Subscript) -> Any:
+    def eval_Subscript(self, node: ast.Subscript, env: Any = None) -> Any:
         value = self.eval(node.value)
         index = self.eval(node.slice)
         self.known(value, index)
         self.step(ops.walk_cost(index, self.limits))  # a key is hashed
         return self.made(self.guard(lambda: ops.subscript(value, index)))
 
-    def eval_Slice(self, node: ast.Slice) -> Any:
-        parts = [self.eval(p) if p is not None else None
-                 for p in (node.lower, node.upper, node.step)]
-        self.known(*parts)
-        return slice(*parts)
-
     # -- calls -----------------------------------------------------------------------------
-    def eval_Call(self, node: ast.Call) -> Any:
+    def eval_Call(self, node: ast.Call, env: Any = None) -> Any:
         if any(isinstance(a, ast.Starred) for a in node.args):
             raise _Stop(Unknown("*arguments are not supported", "unsupported"))
         if any(k.arg is None for k in node.keywords):
@@ -296,33 +427,27 @@ class _Interpreter:
             owner, func.attr, args, kwargs, self.limits, self.mutate)))
 
     # -- comprehensions --------------------------------------------------------------------
-    def comprehension(self, generators: list[ast.comprehension],
-                      emit: Callable[[], None]) -> None:
-        def loop(index: int) -> None:
-            if index == len(generators):
-                emit()
-                return
-            gen = generators[index]
-            if gen.is_async:
-                raise _Stop(Unknown("async comprehensions are not supported", "unsupported"))
-            iterable = self.eval(gen.iter)
-            self.known(iterable)
-            if not isinstance(iterable, (str, list, tuple, dict, set, frozenset)):
-                raise _Stop(Unknown(f"cannot iterate over {type(iterable).__name__}",
-                                    "unsupported"))
-            for item in list(iterable):
-                self.step()
-                self.bind(gen.target, item)
-                if all(self.truth(self.eval(cond)) for cond in gen.ifs):
-                    loop(index + 1)
-
+    def enter(self, env: Any) -> Any:
         self.scopes.append({})
-        try:
-            loop(0)
-        finally:
-            self.scopes.pop()
+        return env
 
-    def bind(self, target: ast.AST, item: object) -> None:
+    def leave(self, scope: Any) -> None:
+        self.scopes.pop()
+
+    def iterate(self, gen: ast.comprehension, env: Any) -> list[Any]:
+        if gen.is_async:
+            raise _Stop(Unknown("async comprehensions are not supported", "unsupported"))
+        iterable = self.eval(gen.iter)
+        self.known(iterable)
+        if not isinstance(iterable, (str, list, tuple, dict, set, frozenset)):
+            raise _Stop(Unknown(f"cannot iterate over {type(iterable).__name__}",
+                                "unsupported"))
+        return list(iterable)
+
+    def keep(self, gen: ast.comprehension, env: Any) -> bool:
+        return all(self.known_truth(self.eval(cond)) for cond in gen.ifs)
+
+    def let(self, target: ast.AST, item: object, env: Any = None) -> None:
         if isinstance(target, ast.Name):
             if "__" in target.id:
                 raise _Stop(Unknown(f"name '{target.id}' is forbidden", "unsupported"))
@@ -330,29 +455,31 @@ class _Interpreter:
         elif isinstance(target, (ast.Tuple, ast.List)) and isinstance(item, (tuple, list)) \
                 and len(item) == len(target.elts):
             for sub, value in zip(target.elts, item, strict=True):
-                self.bind(sub, value)
+                self.let(sub, value)
         else:
             raise _Stop(Unknown("unsupported comprehension target", "unsupported"))
 
-    def truth(self, value: object) -> bool:
+    def known_truth(self, value: object) -> bool:
         self.known(value)
         return bool(value)
 
-    def eval_ListComp(self, node: ast.ListComp | ast.GeneratorExp | ast.SetComp) -> Any:
+    def eval_ListComp(self, node: ast.ListComp | ast.GeneratorExp | ast.SetComp,
+                      env: Any = None) -> Any:
         out: list[object] = []
-        self.comprehension(node.generators, lambda: self.append(out, self.eval(node.elt)))
+        self.comprehension(node.generators, None,
+                           lambda _: self.append(out, self.eval(node.elt)))
         return out
 
     eval_GeneratorExp = eval_ListComp  # a generator passed to a function: a list will do
 
-    def eval_SetComp(self, node: ast.SetComp) -> Any:
+    def eval_SetComp(self, node: ast.SetComp, env: Any = None) -> Any:
         items = self.eval_ListComp(node)
         self.step(ops.walk_cost(items, self.limits))
         return self.guard(lambda: set(items))
 
-    def eval_DictComp(self, node: ast.DictComp) -> Any:
+    def eval_DictComp(self, node: ast.DictComp, env: Any = None) -> Any:
         out: list[Any] = []
-        self.comprehension(node.generators, lambda: self.append(
+        self.comprehension(node.generators, None, lambda _: self.append(
             out, (self.eval(node.key), self.eval(node.value))))
         self.known(*(pair[0] for pair in out))
         self.step(ops.walk_cost([pair[0] for pair in out], self.limits))
@@ -398,6 +525,10 @@ class _Interpreter:
             return stop.unknown
         except RecursionError:
             return Unknown("expression too deeply nested", "limit")
+
+
+def _raise(err: Exception) -> NoReturn:
+    raise err
 
 
 def _shape_ok(tree: ast.AST, limits: Limits) -> Unknown | None:
@@ -447,11 +578,19 @@ def evaluate_node(node: ast.AST, names: Callable[[str], object] | None = None,
                   functions: Mapping[str, Any] | None = None,
                   limits: Limits | None = None) -> object:
     """``evaluate`` for an expression already parsed (a part of a file read with ``ast``)."""
+    return evaluate_counted(node, names, functions, limits)[0]
+
+
+def evaluate_counted(node: ast.AST, names: Callable[[str], object] | None = None,
+                     functions: Mapping[str, Any] | None = None,
+                     limits: Limits | None = None) -> tuple[object, int]:
+    """``evaluate_node``, and the steps it took (for a reader whose own budget pays them)."""
     limits = limits or Limits()
     refused = _shape_ok(node, limits)
     if refused is not None:
-        return refused
-    return _Interpreter(names, BUILTINS if functions is None else functions, limits).run(node)
+        return refused, 1
+    interpreter = _Interpreter(names, BUILTINS if functions is None else functions, limits)
+    return interpreter.run(node), interpreter.steps
 
 
 def names_from(mapping: Mapping[str, object]) -> Callable[[str], object]:

@@ -2,7 +2,10 @@
 
 from __future__ import annotations
 
+import ast
+
 from ...evaluate import operations as ops
+from ...evaluate import partial
 from ...model.values import Unknown, Value
 from .objects import Seq, text_of
 
@@ -11,28 +14,29 @@ def number(value: object) -> bool:
     return isinstance(value, int | float) and not isinstance(value, bool)
 
 
-def percent(template: Value, items: tuple[object, ...]) -> Value:
+def percent(template: Value, items: tuple[object, ...]) -> object:
+    """``template % items``: exact when everything is known (the one evaluator), else the
+    known parts kept (``evaluate.partial``)."""
     if not template.is_known:
         return Value.unknown("format")
-    text = template.text
-    parts: list[Value | str] = []
-    i = j = 0
-    while i < len(text):
-        if text[i] == "%" and i + 1 < len(text):
-            if text[i + 1] == "%":
-                parts.append("%")
-            elif j < len(items):
-                parts.append(text_of(items[j]))
-                j += 1
-            else:
-                parts.append(Value.unknown("format"))
-            i += 2
-            while parts and i <= len(text) and text[i - 1] not in "sdifrx%" and i < len(text):
-                i += 1
-            continue
-        parts.append(text[i])
-        i += 1
-    return Value.of(*parts)
+    try:
+        known = tuple(plain(item) for item in items)
+    except LookupError:
+        pass
+    else:
+        values = known if len(known) != 1 else known[0]
+        try:
+            return from_plain(ops.binary(ast.Mod, template.text, values))
+        except ops.Refused as err:
+            return Unknown(f"%: {err.reason}")
+    try:
+        return Value.of(*partial.percent_parts(template.text, items, text_of, _unknown))
+    except ops.Refused as err:
+        return Unknown(f"%: {err.reason}")
+
+
+def _unknown(reason: str) -> Value:
+    return Value.unknown(reason)
 
 
 def plain(value: object) -> object:
@@ -72,38 +76,11 @@ def string_method(base: Value, method: str, args: list[object]) -> object:
             return from_plain(ops.call_method(text, method, known))
         except ops.Refused as err:
             return Unknown(f"str.{method}: {err.reason}")
-    if method == "format" and base.is_known:
-        text = base.text
-        out: list[Value | str] = []
-        auto = 0
-        i = 0
-        while i < len(text):
-            if text.startswith("{{", i) or text.startswith("}}", i):
-                out.append(text[i])
-                i += 2
-                continue
-            if text[i] == "{":
-                end = text.find("}", i)
-                if end < 0:
-                    break
-                field_name = text[i + 1:end].split(":")[0].split("!")[0]
-                index = -1
-                if not field_name:
-                    index, auto = auto, auto + 1
-                elif field_name.isdigit():
-                    index = int(field_name)
-                out.append(text_of(args[index]) if 0 <= index < len(args)
-                           else Value.unknown("format"))
-                i = end + 1
-                continue
-            out.append(text[i])
-            i += 1
-        return Value.of(*out)
-    if method == "join" and len(args) == 1 and isinstance(args[0], Seq):
-        joined: list[Value | str] = []
-        for k, item in enumerate(args[0].items):
-            if k:
-                joined.append(base)
-            joined.append(text_of(item))
-        return Value.of(*joined)
+    try:
+        if method == "format" and base.is_known:
+            return Value.of(*partial.format_parts(base.text, args, {}, text_of, _unknown))
+        if method == "join" and len(args) == 1 and isinstance(args[0], Seq):
+            return Value.of(*partial.join_parts(base, args[0].items, text_of))
+    except ops.Refused as err:
+        return Unknown(f"str.{method}: {err.reason}")
     return Unknown(f"str.{method}")

@@ -16,15 +16,17 @@ The evaluator's parts: ``scopes`` (names and loops), ``calls`` (argument binding
 from __future__ import annotations
 
 import ast
+from dataclasses import replace
+from typing import Any, NoReturn
 
 from ...evaluate import budget
 from ...evaluate import operations as ops
-from ...evaluate.python import BUILTINS, evaluate_node
+from ...evaluate.python import BUILTINS, Walker, evaluate_counted
 from ...model.values import Unknown, Value
 from . import rclpy, rospy
 from .calls import MAX_CALL_DEPTH, argument, unknown_params
 from .instances import Instances
-from .modules import ClassInfo, FunctionInfo, submodule
+from .modules import ClassInfo, FunctionInfo, Loader, submodule
 from .objects import (
     BoundMethod,
     Frame,
@@ -48,28 +50,66 @@ __all__ = ["MAX_CALL_DEPTH", "MAX_UNROLL", "NAMESPACE", "Evaluator", "argument",
            "unknown_params"]
 
 MAX_EVAL_DEPTH = 60
+# the one evaluator's bounds for the values of one walk (a node's files); steps: every
+# expression evaluated, helpers' bodies and folded constructs included
+LIMITS = ops.Limits(steps=500_000)
 # methods of an rclpy node that give its own name; in a name they are the private '~'
 NAME_METHODS = ("get_name", "get_fully_qualified_name")
 NAMESPACE = "node namespace"  # origin of the unknown get_namespace() gives
 
 
-class Evaluator(Instances, QoSProfiles):
-    """The static value of an expression (``eval``), never running it."""
+class _Over(Exception):
+    """The file's evaluation budget is spent."""
 
-    def eval(self, expr: ast.expr, frame: Frame) -> object:
+
+class Evaluator(Instances, QoSProfiles, Walker):
+    """The static value of an expression (``eval``), never running it: a configuration of
+    the one evaluator's walk (dispatch, steps, size checks). Its handlers are those of its
+    partial values (``Value`` strings with unknown parts, ``Seq``, ``Ref``, node handles,
+    instances); a construct it has no handler for, and the constructs that only compute
+    (comparisons, ``not``, conditional expressions, ``and`` / ``or``, slices), are folded
+    by the one evaluator on plain values (``folded``). One budget of ``LIMITS.steps``
+    for everything the walk of a file evaluates, helpers' bodies included; once spent,
+    every value is an ``Unknown`` of kind ``limit`` (``limited`` says why)."""
+
+    limits = LIMITS
+
+    def __init__(self, loader: Loader) -> None:
+        super().__init__(loader)
+        self.steps = 0
+        self.limited: str | None = None
+
+    def eval(self, expr: ast.AST, frame: Frame | None = None) -> object:
+        if self.limited is not None:
+            return Unknown(self.limited, "limit")
         if self.depth > MAX_EVAL_DEPTH:
             return Unknown("too deep")
         self.depth += 1
         try:
-            handler = getattr(self, "_" + type(expr).__name__, None)
-            return handler(expr, frame) if handler else self.folded(expr, frame)
+            return Walker.eval(self, expr, frame)
+        except _Over as over:
+            if self.depth > 1:
+                raise
+            return Unknown(str(over), "limit")
         finally:
             self.depth -= 1
 
-    def folded(self, expr: ast.expr, frame: Frame) -> object:
+    # -- this configuration of the walk --------------------------------------------------
+    def over(self, reason: str) -> NoReturn:
+        self.limited = reason
+        raise _Over(reason)
+
+    def unhandled(self, node: ast.AST, env: Any = None) -> Any:
+        return self.folded(node, env)
+
+    def refused(self, err: ops.Refused, node: ast.AST, what: str) -> Any:
+        return Unknown(err.reason, "limit" if err.kind == "limit" else "error")
+
+    def folded(self, expr: ast.AST, frame: Frame) -> object:
         """A construct this reader has no handler for (a comparison, ``not``, a
         conditional expression, a dict, ...): the one evaluator computes it when every
-        name in it holds a known plain value; unknown otherwise."""
+        name in it holds a known plain value; unknown otherwise. Its steps are this
+        walk's."""
 
         def names(name: str) -> object:
             try:
@@ -77,18 +117,27 @@ class Evaluator(Instances, QoSProfiles):
             except LookupError:
                 return Unknown(name)
 
-        result = evaluate_node(expr, names, BUILTINS)
+        remaining = max(self.limits.steps - self.steps, 1)
+        result, used = evaluate_counted(expr, names, BUILTINS, replace(
+            ops.DEFAULT, steps=min(remaining, ops.DEFAULT.steps)))
+        self.step(used)
         return Unknown(type(expr).__name__) if isinstance(result, Unknown) else \
             from_plain(result)
 
-    def _Constant(self, expr: ast.Constant, frame: Frame) -> object:
+    # constructs that only compute: on plain values, by the one evaluator
+    def eval_Compare(self, node: ast.Compare, env: Any = None) -> Any:
+        return self.folded(node, env)
+
+    eval_UnaryOp = eval_IfExp = eval_BoolOp = eval_Slice = eval_Compare  # type: ignore[assignment]
+
+    def eval_Constant(self, expr: ast.Constant, frame: Frame) -> object:
         if isinstance(expr.value, str):
             return Value.of(expr.value)
         if isinstance(expr.value, bool | int | float) or expr.value is None:
             return expr.value
         return Unknown("constant")
 
-    def _JoinedStr(self, expr: ast.JoinedStr, frame: Frame) -> object:
+    def eval_JoinedStr(self, expr: ast.JoinedStr, frame: Frame) -> object:
         parts: list[Value | str] = []
         for part in expr.values:
             if isinstance(part, ast.Constant) and isinstance(part.value, str):
@@ -99,13 +148,11 @@ class Evaluator(Instances, QoSProfiles):
                 parts.append(Value.unknown("formatted value"))
         return Value.of(*parts)
 
-    def _BinOp(self, expr: ast.BinOp, frame: Frame) -> object:
+    def eval_BinOp(self, expr: ast.BinOp, frame: Frame) -> object:
         left, right = self.eval(expr.left, frame), self.eval(expr.right, frame)
-        try:  # the size of what it would make, before making it (a = a + a, x = x * x)
+        try:  # a concatenation's size, before making it (a = a + a); numbers: ops.binary
             if isinstance(expr.op, ast.Add):
                 budget.check_size("a value", _length(left) + _length(right))
-            elif isinstance(expr.op, ast.Mult):
-                budget.check_int_op("*", left, right)
         except budget.OverBudget as err:
             return Unknown(err.reason)
         if isinstance(expr.op, ast.Add):
@@ -123,15 +170,15 @@ class Evaluator(Instances, QoSProfiles):
                 return Unknown(err.reason)
         return Unknown("operation")
 
-    def _Name(self, expr: ast.Name, frame: Frame) -> object:
+    def eval_Name(self, expr: ast.Name, frame: Frame) -> object:
         return self.name(expr.id, frame)
 
-    def _Tuple(self, expr: ast.Tuple, frame: Frame) -> object:
+    def eval_Tuple(self, expr: ast.Tuple, frame: Frame) -> object:
         return Seq(tuple(self.eval(e, frame) for e in expr.elts))
 
-    _List = _Tuple
+    eval_List = eval_Tuple
 
-    def _Subscript(self, expr: ast.Subscript, frame: Frame) -> object:
+    def eval_Subscript(self, expr: ast.Subscript, frame: Frame) -> object:
         base = self.eval(expr.value, frame)
         index = self.eval(expr.slice, frame)
         if isinstance(base, Seq) and isinstance(index, int) and -len(base.items) <= index < len(
@@ -139,7 +186,7 @@ class Evaluator(Instances, QoSProfiles):
             return base.items[index]
         return Unknown("subscript")
 
-    def _Attribute(self, expr: ast.Attribute, frame: Frame) -> object:
+    def eval_Attribute(self, expr: ast.Attribute, frame: Frame) -> object:
         base = self.eval(expr.value, frame)
         return self.attribute(base, expr.attr, frame)
 
@@ -184,7 +231,7 @@ class Evaluator(Instances, QoSProfiles):
             return NodeMethod(attr)
         return Unknown(attr)
 
-    def _Call(self, expr: ast.Call, frame: Frame) -> object:
+    def eval_Call(self, expr: ast.Call, frame: Frame) -> object:
         base: object = None
         if isinstance(expr.func, ast.Attribute) and expr.func.attr != "__init__":
             base = self.eval(expr.func.value, frame)  # once: a.b().c().d() is linear

@@ -52,6 +52,7 @@ class Walker:
         self.evaluator = Evaluator(loader)
         self.calls: list[PrimitiveCall] = []
         self.diagnostics: list[Diagnostic] = []
+        self._limit_reported = False
         self.rosname: str | None = None
         self.namespace: str | None = None
         self.anonymous = False
@@ -123,11 +124,13 @@ class Walker:
     def _block(self, body: list[ast.stmt], frame: Frame, conds: Conditions) -> None:
         for statement in body:
             self.steps += 1
-            if self.steps > MAX_STEPS:
-                if self.steps == MAX_STEPS + 1:
+            limit = f"{MAX_STEPS} statements walked" if self.steps > MAX_STEPS else \
+                self.evaluator.limited
+            if limit is not None:
+                if not self._limit_reported:
+                    self._limit_reported = True
                     self.diagnostics.append(diag.make(
-                        "PY_TOO_COMPLEX", self._where(frame, statement),
-                        limit=f"{MAX_STEPS} statements walked"))
+                        "PY_TOO_COMPLEX", self._where(frame, statement), limit=limit))
                 return
             handler = getattr(self, "_" + type(statement).__name__, self._statement)
             handler(statement, frame, conds)

@@ -23,19 +23,20 @@ from typing import Any
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
 from ...evaluate import budget, syntax
+from ...evaluate import operations as ops
 from ...model.location import Location
 from ...model.values import Unknown
 from ...workspace import Workspace
 from . import entities as e
 from .python_expressions import Expressions, _Bound
 from .python_values import (
+    LIMITS,
     MAX_CALL_DEPTH,
     MAX_DEPTH,
     MAX_NODES,
     MAX_READ,
     MAX_SIZE,
     MAX_SOURCE,
-    MAX_STEPS,
     Budget,
     Func,
     LaunchDescription,
@@ -62,6 +63,7 @@ class Interpreter(Expressions):
         # launch imports the file from its path: __file__ is that path, as given
         self.globals: dict[str, Any] = {"__file__": path}
         self.steps = 0
+        self.limits = LIMITS
         self.depth = 0
         self.guards: list[str] = []  # texts of unknown Python `if` tests we are under
         from .python_api import API, BUILTINS
@@ -87,15 +89,12 @@ class Interpreter(Expressions):
         self.diagnostics.append(diag.make("LAUNCH_UNKNOWN_VALUE", self.where(node),
                                           detail=detail))
 
-    def tick(self, count: int = 1) -> None:
-        self.steps += count
-        if self.steps > MAX_STEPS:
-            raise Budget(f"more than {MAX_STEPS} evaluation steps")
-
     def sized(self, value: Any) -> Any:
-        if isinstance(value, (str, list, tuple, dict)) and len(value) > MAX_SIZE:
-            raise Budget(f"a value with more than {MAX_SIZE} items or characters")
-        return value
+        """``value``, within the one evaluator's size bounds (``LIMITS``) or the file stops."""
+        try:
+            return ops.checked(value, LIMITS)
+        except ops.Refused as err:
+            raise Budget(err.reason) from None
 
     # -- module ------------------------------------------------------------------------
     def module(self, tree: ast.Module) -> list[e.Action] | None:
@@ -165,7 +164,7 @@ class Interpreter(Expressions):
             self.statement(stmt, env)
 
     def statement(self, stmt: ast.stmt, env: dict[str, Any]) -> None:
-        self.tick()
+        self.step()
         if isinstance(stmt, ast.Assign):
             value = self.eval(stmt.value, env)
             for target in stmt.targets:
@@ -284,7 +283,7 @@ class Interpreter(Expressions):
         if items is None:
             return
         for item in items:
-            self.tick()
+            self.step()
             self.assign(stmt.target, item, env)
             try:
                 self.block(stmt.body, env)
@@ -326,7 +325,7 @@ class Interpreter(Expressions):
         shared parts each time (``[[[1] * 300] * 300] * 300`` is 27 million items)."""
         for value in values:
             if isinstance(value, (list, tuple, dict)):
-                self.tick(budget.item_count(value, MAX_STEPS))
+                self.step(ops.walk_cost(value, LIMITS))
 
     def call_function(self, func: Func, args: list[Any], kwargs: dict[str, Any],
                       node: ast.AST) -> Any:

@@ -1,19 +1,25 @@
-"""Expressions of the static Python interpreter: one handler per ``ast`` node kind.
+"""Expressions of the static Python interpreter: a configuration of the one evaluator's
+walk (``evaluate.python.Walker``).
 
-``Expressions.eval`` dispatches on the node's class name (``e_Call``, ``e_BinOp``, ...);
-a kind without a handler gives an unknown value and a diagnostic. Every evaluation
-counts against the step budget and every value built is size-checked.
+The walk is the evaluator's: dispatch on the node's kind (``eval_Call``, ``eval_BinOp``,
+...), one step per node against the file's budget, each value size-checked, and Python's
+rules for comparisons, unary operators, slices, conditional expressions, ``and`` / ``or``
+and comprehension loops. What is this reader's: its names and scopes (``env``), the launch
+API, and its partial values (substitutions, ``Lazy`` strings, ``Unknown``), which an
+operation turns into an unknown that says what (``not_known``); a kind without a handler
+gives an unknown value and a diagnostic.
 """
 
 from __future__ import annotations
 
 import ast
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from pathlib import PurePosixPath
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, NoReturn
 
 from ...evaluate import operations as ops
+from ...evaluate.python import Walker
 from ...model.values import Unknown
 from . import entities as e
 from .python_values import (
@@ -37,9 +43,11 @@ if TYPE_CHECKING:
     from .python import Interpreter
 
 _PATH_ATTRIBUTES = frozenset(("parent", "name", "stem", "suffix", "parts"))
+_NOT_KNOWN = {"not": "not of an unknown value", "unary": "unary operation", "slice": "slice",
+              "boolean": "boolean of an unknown value"}
 
 
-class Expressions:
+class Expressions(Walker):
     """The expression half of ``Interpreter`` (statements and calls live there)."""
 
     globals: dict[str, Any]
@@ -47,9 +55,6 @@ class Expressions:
     methods: dict[str, Any]
     environment: dict[str, str]
     guards: list[str]
-
-    def tick(self, count: int = 1) -> None:
-        raise NotImplementedError
 
     def sized(self, value: Any) -> Any:
         raise NotImplementedError
@@ -85,20 +90,43 @@ class Expressions:
             return {"True": True, "False": False, "None": None}[name]
         return self.unsupported(node, f"name {name} is not defined here")
 
-    def eval(self, node: ast.expr, env: dict[str, Any]) -> Any:
-        self.tick()
-        handler = getattr(self, "e_" + type(node).__name__, None)
-        if handler is None:
-            return self.unsupported(node, f"{type(node).__name__} is not interpreted")
-        return self.sized(handler(node, env))
+    # -- this configuration of the one evaluator's walk (``Walker``) -------------------
+    def over(self, reason: str) -> NoReturn:
+        raise Budget(reason)
 
-    def e_Constant(self, node: ast.Constant, env: dict[str, Any]) -> Any:
+    def unhandled(self, node: ast.AST, env: Any = None) -> Any:
+        return self.unsupported(node, f"{type(node).__name__} is not interpreted")
+
+    def opaque(self, value: object) -> bool:
+        return _opaque(value)
+
+    def not_known(self, node: ast.AST, what: str, values: Iterable[object]) -> Any:
+        """An operation on a substitution or an unknown: an unknown, which says what."""
+        if what == "comparison":
+            return Unknown(f"comparison {_source(node)}")
+        return Unknown(_NOT_KNOWN.get(what, what))
+
+    def refused(self, err: ops.Refused, node: ast.AST, what: str) -> Any:
+        """A bound of the one evaluator stops the file (``Budget``); a comparison or a unary
+        operator it refuses is an unknown; any other operation an unsupported construct."""
+        if err.kind == "limit":
+            raise Budget(err.reason) from None
+        if what in ("comparison", "unary"):
+            return Unknown(_NOT_KNOWN[what] if what == "unary" else what)
+        return self.unsupported(node, f"operation fails: {err.reason}" if err.kind
+                                == "error" else err.reason)
+
+    def operation(self, action: Callable[[], Any], node: ast.AST) -> Any:
+        """An operation of the one evaluator on known values (``refused`` if it refuses)."""
+        return self.compute(action, node, "operation")
+
+    def eval_Constant(self, node: ast.Constant, env: dict[str, Any]) -> Any:
         return node.value
 
-    def e_Name(self, node: ast.Name, env: dict[str, Any]) -> Any:
+    def eval_Name(self, node: ast.Name, env: dict[str, Any]) -> Any:
         return self.lookup(node.id, env, node)
 
-    def e_List(self, node: ast.List | ast.Tuple | ast.Set, env: dict[str, Any]) -> Any:
+    def eval_List(self, node: ast.List | ast.Tuple | ast.Set, env: dict[str, Any]) -> Any:
         out: list[Any] = []
         for elt in node.elts:
             if isinstance(elt, ast.Starred):
@@ -109,10 +137,10 @@ class Expressions:
             self.sized(out)
         return tuple(out) if isinstance(node, ast.Tuple) else out
 
-    e_Tuple = e_List
-    e_Set = e_List
+    eval_Tuple = eval_List
+    eval_Set = eval_List
 
-    def e_Dict(self, node: ast.Dict, env: dict[str, Any]) -> Any:
+    def eval_Dict(self, node: ast.Dict, env: dict[str, Any]) -> Any:
         out: dict[Any, Any] = {}
         for key, value in zip(node.keys, node.values, strict=False):
             if key is None:
@@ -121,11 +149,11 @@ class Expressions:
                     out.update(merged)
                 continue
             k = self.eval(key, env)
-            self.tick(ops.walk_cost(k, LIMITS))  # the key is hashed
+            self.step(ops.walk_cost(k, LIMITS))  # the key is hashed
             out[_hashable(k)] = self.eval(value, env)
         return out
 
-    def e_JoinedStr(self, node: ast.JoinedStr, env: dict[str, Any]) -> Any:
+    def eval_JoinedStr(self, node: ast.JoinedStr, env: dict[str, Any]) -> Any:
         parts: list[Any] = []
         for value in node.values:
             if isinstance(value, ast.FormattedValue):
@@ -147,7 +175,7 @@ class Expressions:
         return self.operation(lambda: ops.format_value(value, spec, node.conversion, LIMITS),
                               node)
 
-    def e_BinOp(self, node: ast.BinOp, env: dict[str, Any]) -> Any:
+    def eval_BinOp(self, node: ast.BinOp, env: dict[str, Any]) -> Any:
         return self.binop(node.op, self.eval(node.left, env), self.eval(node.right, env), node)
 
     def binop(self, op: ast.operator, left: Any, right: Any, node: ast.AST) -> Any:
@@ -174,60 +202,7 @@ class Expressions:
             return self.unsupported(node, "operation on values not known statically")
         return self.operation(lambda: ops.binary(type(op), left, right, LIMITS), node)
 
-    def operation(self, action: Callable[[], Any], node: ast.AST) -> Any:
-        """An operation of the one evaluator on known values: its bound stops the file
-        (``Budget``), anything else it refuses is an unsupported construct here."""
-        try:
-            return action()
-        except ops.Refused as err:
-            if err.kind == "limit":
-                raise Budget(err.reason) from None
-            return self.unsupported(node, f"operation fails: {err.reason}" if err.kind
-                                    == "error" else err.reason)
-
-    def e_UnaryOp(self, node: ast.UnaryOp, env: dict[str, Any]) -> Any:
-        value = self.eval(node.operand, env)
-        if isinstance(node.op, ast.Not):
-            truth = self.truth(value)
-            return Unknown("not of an unknown value") if truth is None else not truth
-        if isinstance(value, (int, float)) and not isinstance(value, bool):
-            return -value if isinstance(node.op, ast.USub) else value
-        return Unknown("unary operation")
-
-    def e_BoolOp(self, node: ast.BoolOp, env: dict[str, Any]) -> Any:
-        is_and = isinstance(node.op, ast.And)
-        result: Any = None
-        for operand in node.values:
-            result = self.eval(operand, env)
-            truth = self.truth(result)
-            if truth is None:
-                return Unknown("boolean of an unknown value")
-            if truth != is_and:
-                return result
-        return result
-
-    def e_Compare(self, node: ast.Compare, env: dict[str, Any]) -> Any:
-        left = self.eval(node.left, env)
-        for op, comparator in zip(node.ops, node.comparators, strict=False):
-            right = self.eval(comparator, env)
-            if _opaque(left) or _opaque(right):
-                return Unknown(f"comparison {_source(node)}")
-            self.tick(ops.compare_cost(left, right, LIMITS))
-            try:
-                if not ops.compare(type(op), left, right):
-                    return False
-            except ops.Refused:
-                return Unknown("comparison")
-            left = right
-        return True
-
-    def e_IfExp(self, node: ast.IfExp, env: dict[str, Any]) -> Any:
-        truth = self.truth(self.eval(node.test, env))
-        if truth is None:
-            return Unknown(f"conditional expression {_source(node.test)}")
-        return self.eval(node.body if truth else node.orelse, env)
-
-    def e_Subscript(self, node: ast.Subscript, env: dict[str, Any]) -> Any:
+    def eval_Subscript(self, node: ast.Subscript, env: dict[str, Any]) -> Any:
         value = self.eval(node.value, env)
         key = self.eval(node.slice, env)
         if isinstance(value, _Environ):
@@ -235,21 +210,14 @@ class Expressions:
         if isinstance(value, Context) and isinstance(node.value, ast.Attribute):
             return value.perform((e.Var(_text_of(key)),))
         if isinstance(key, slice) or isinstance(value, (dict, list, tuple, str)):
-            self.tick(ops.walk_cost(key, LIMITS))  # a key is hashed
+            self.step(ops.walk_cost(key, LIMITS))  # a key is hashed
             try:
-                return value[_hashable(key)]
-            except (KeyError, IndexError, TypeError):
+                return ops.subscript(value, _hashable(key))
+            except ops.Refused:
                 return self.unsupported(node, f"{_source(node)} is not known statically")
         return Unknown("subscript")
 
-    def e_Slice(self, node: ast.Slice, env: dict[str, Any]) -> Any:
-        parts = [None if p is None else self.eval(p, env)
-                 for p in (node.lower, node.upper, node.step)]
-        if any(p is not None and not isinstance(p, int) for p in parts):
-            return Unknown("slice")
-        return slice(*parts)
-
-    def e_Attribute(self, node: ast.Attribute, env: dict[str, Any]) -> Any:
+    def eval_Attribute(self, node: ast.Attribute, env: dict[str, Any]) -> Any:
         owner = self.eval(node.value, env)
         if isinstance(owner, Ref):
             if owner.qualified == "os" and node.attr == "environ":
@@ -261,7 +229,7 @@ class Expressions:
             return getattr(owner, node.attr)
         return _Bound(owner, node.attr)
 
-    def e_Call(self, node: ast.Call, env: dict[str, Any]) -> Any:
+    def eval_Call(self, node: ast.Call, env: dict[str, Any]) -> Any:
         func = self.eval(node.func, env)
         args: list[Any] = []
         for arg in node.args:
@@ -291,51 +259,48 @@ class Expressions:
             return action
         return e.Group([action], scoped=False, condition=cond, location=action.location)
 
-    def e_Lambda(self, node: ast.Lambda, env: dict[str, Any]) -> Any:
+    def eval_Lambda(self, node: ast.Lambda, env: dict[str, Any]) -> Any:
         return Func(node, env)
 
-    def e_ListComp(self, node: ast.ListComp | ast.GeneratorExp | ast.SetComp,
+    def eval_ListComp(self, node: ast.ListComp | ast.GeneratorExp | ast.SetComp,
                    env: dict[str, Any]) -> Any:
         out: list[Any] = []
-        self.comprehension(node.generators, 0, dict(env, __closure__=env),
+        self.comprehension(node.generators, env,
                            lambda scope: out.append(self.eval(node.elt, scope)))
         return out
 
-    e_GeneratorExp = e_ListComp
-    e_SetComp = e_ListComp
+    eval_GeneratorExp = eval_ListComp
+    eval_SetComp = eval_ListComp
 
-    def e_DictComp(self, node: ast.DictComp, env: dict[str, Any]) -> Any:
+    def eval_DictComp(self, node: ast.DictComp, env: dict[str, Any]) -> Any:
         out: dict[Any, Any] = {}
 
         def add(scope: dict[str, Any]) -> None:
             out[_hashable(self.eval(node.key, scope))] = self.eval(node.value, scope)
 
-        self.comprehension(node.generators, 0, dict(env, __closure__=env), add)
+        self.comprehension(node.generators, env, add)
         return out
 
-    def comprehension(self, generators: list[ast.comprehension], index: int,
-                      env: dict[str, Any], emit: Callable[[dict[str, Any]], None]) -> None:
-        if index == len(generators):
-            emit(env)
-            return
-        gen = generators[index]
-        for item in self.iterable(self.eval(gen.iter, env), gen.iter) or []:
-            self.tick()
-            self.assign(gen.target, item, env)
-            tests = [self.truth(self.eval(cond, env)) for cond in gen.ifs]
-            if None in tests:
-                self.unsupported(gen, "comprehension filter not known statically")
-                continue
-            if all(tests):
-                self.comprehension(generators, index + 1, env, emit)
+    def undecided(self, node: ast.IfExp, test: object, env: Any) -> Any:
+        return Unknown(f"conditional expression {_source(node.test)}")
 
-    def truth(self, value: Any) -> bool | None:
-        if _opaque(value):
-            return None
-        try:
-            return bool(value)
-        except Exception:
-            return None
+    def enter(self, env: Any) -> Any:
+        return dict(env, __closure__=env)
+
+    def iterate(self, gen: ast.comprehension, env: Any) -> list[Any]:
+        return self.iterable(self.eval(gen.iter, env), gen.iter) or []
+
+    def let(self, target: ast.AST, item: object, env: Any = None) -> None:
+        if isinstance(target, ast.expr):  # a comprehension's target always is
+            self.assign(target, item, env)
+
+    def keep(self, gen: ast.comprehension, env: Any) -> bool:
+        """Every filter is evaluated; one not known drops the item, reported."""
+        tests = [self.truth(self.eval(cond, env)) for cond in gen.ifs]
+        if None in tests:
+            self.unsupported(gen, "comprehension filter not known statically")
+            return False
+        return all(tests)
 
 
 @dataclass

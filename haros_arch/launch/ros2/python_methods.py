@@ -18,6 +18,7 @@ import yaml
 
 from ... import safe_yaml
 from ...evaluate import operations as ops
+from ...evaluate import partial
 from ...model.values import Unknown
 from . import entities as e
 from .python_values import (
@@ -184,14 +185,13 @@ def m_str(name: str) -> Method:
             return Unknown("perform() outside an OpaqueFunction")
         if name == "format" and isinstance(owner, str) and any(
                 isinstance(v, (Lazy, e.Subst, Unknown)) for v in [*a, *k.values()]):
-            return _format_lazy(owner, a, k)
+            return i.operation(lambda: concat(partial.format_parts(
+                owner, a, k, _same, lambda reason: Unknown(reason), LIMITS.length)), n)
         if not isinstance(owner, str) or not all(
                 isinstance(v, (str, int, float, list, tuple)) for v in [*a, *k.values()]):
             if name == "join" and isinstance(owner, str) and a and isinstance(a[0], list):
-                pieces: list[Any] = []
-                for index, item in enumerate(a[0]):
-                    pieces.extend([owner, item] if index else [item])
-                return concat(pieces)
+                return i.operation(lambda: concat(partial.join_parts(
+                    owner, a[0], _same, LIMITS.length)), n)
             return Unknown(f"str.{name}() of a value not known statically")
         try:  # the size of what it would make, before making it
             return ops.call_method(owner, name, a, k, LIMITS)
@@ -203,24 +203,8 @@ def m_str(name: str) -> Method:
     return call
 
 
-def _format_lazy(template: str, a: Args, k: Kwargs) -> Any:
-    """``'{}/{}'.format(LaunchConfiguration('ns'), 'x')`` for simple ``{}`` fields."""
-    pieces: list[Any] = []
-    rest = template
-    index = 0
-    while "{" in rest:
-        before, _, after = rest.partition("{")
-        field_name, _, rest = after.partition("}")
-        pieces.append(before)
-        if field_name == "":
-            pieces.append(a[index] if index < len(a) else Unknown("format"))
-            index += 1
-        elif field_name.isdigit():
-            pieces.append(a[int(field_name)] if int(field_name) < len(a) else Unknown("format"))
-        else:
-            pieces.append(k.get(field_name, Unknown("format")))
-    pieces.append(rest)
-    return concat(pieces)
+def _same(value: Any) -> Any:
+    return value
 
 
 def m_dict(name: str) -> Method:
