@@ -19,6 +19,7 @@ IGNORE_MARKERS = ("CATKIN_IGNORE", "COLCON_IGNORE", "AMENT_IGNORE")
 SKIP_FOLDERS = frozenset({"build", "devel", "install", "log", "node_modules", "__pycache__"})
 MAX_DEPTH = 12
 MAX_PATH_FOLDERS = 50_000  # folders listed when indexing ROS_PACKAGE_PATH
+MAX_REMEMBERED_PATHS = 200_000  # relpath's answers kept per workspace
 
 
 @dataclass
@@ -39,12 +40,30 @@ class Workspace:
     # package folder -> package, for package_of; rebuilt when the packages change
     _index: dict[str, Package] = field(default_factory=dict, repr=False)
     _index_key: tuple[int, int] = field(default=(0, -1), repr=False)
+    _relpaths: dict[tuple[str, str], str] = field(default_factory=dict, repr=False)
 
     def relpath(self, path: str) -> str:
-        """A path relative to the workspace root when inside it, else absolute."""
-        path = os.path.abspath(path)
-        rel = os.path.relpath(path, self.root)
-        return path if rel.startswith("..") else rel
+        """A path relative to the workspace root when inside it, else absolute (asked
+        for every include of every unit: remembered per root and path)."""
+        known = self._relpaths.get((self.root, path))
+        if known is not None:
+            return known
+        full = os.path.abspath(path)
+        top = os.path.abspath(self.root)
+        if full == top:
+            rel = "."
+        elif full.startswith(top.rstrip(os.sep) + os.sep):
+            rel = full[len(top.rstrip(os.sep)) + 1:]
+        else:
+            rel = full
+        if path.startswith(os.sep) and len(self._relpaths) < MAX_REMEMBERED_PATHS:
+            self._relpaths[(self.root, path)] = rel  # a relative one depends on the cwd
+        return rel
+
+    def __getstate__(self) -> dict[str, object]:
+        state = dict(self.__dict__)
+        state["_relpaths"] = {}  # not sent to worker processes
+        return state
 
     def package_of(self, path: str) -> Package | None:
         """The workspace package whose folder holds ``path`` (the innermost one): the

@@ -195,3 +195,24 @@ def test_ros_package_path_is_searched_recursively(write_tree):
     for name in ("inner", "ghost", "meta", "under_meta", "below"):
         assert ws.find(name) is None, name
     assert ws.find("mine") == str(root / "ws/src/mine")
+
+
+def test_relpath_is_relative_inside_the_root_only(tmp_path, monkeypatch) -> None:
+    import pickle
+
+    from haros_arch.workspace import Workspace
+
+    root = tmp_path / "ws"
+    root.mkdir()
+    ws = Workspace(root=str(root) + "/")
+    assert ws.relpath(str(root / "src" / "a.cpp")) == os.path.join("src", "a.cpp")
+    assert ws.relpath(str(root)) == "."
+    sibling = str(tmp_path / "ws2" / "b.cpp")  # a name that only starts like the root
+    assert ws.relpath(sibling) == sibling
+    assert ws.relpath(str(root / "x" / ".." / "y.h")) == "y.h"
+    monkeypatch.chdir(root)
+    assert ws.relpath("z.h") == "z.h"
+    monkeypatch.chdir(tmp_path)
+    assert ws.relpath("z.h") == str(tmp_path / "z.h")  # relative names follow the cwd
+    assert pickle.loads(pickle.dumps(ws)).relpath(str(root / "q")) == "q"
+    assert Workspace(root="/").relpath("/etc/hosts") == "etc/hosts"
