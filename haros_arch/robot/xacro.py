@@ -64,7 +64,6 @@ MAX_FILE_BYTES = 4 * 1024 * 1024
 CONDITION = "{urn:haros-arch}condition"
 FILE = "{urn:haros-arch}file"  # the file an element comes from (on roots and MARKED)
 MARKED = ("plugin", "ros2_control")
-_XACRO_FUNCTION = re.compile(r"\bxacro\.(load_yaml)\s*\(")
 _TOKENS = re.compile(r"\$\$+[{(]|\$\{[^}]*\}|\$\([^)]*\)|[^$]+|\$[^{($]+|\$$|\$")
 # xacro's ``re_macro_arg``, with its default's ``(?:'.*?'|".*?"|[^\s'"]+)+`` written so
 # that each character is matched one way only (theirs backtracks exponentially on an
@@ -386,10 +385,11 @@ class _Expander:
                 return expression.Unknown(f"{name} is a block", "unsupported")
             return value
 
+        # xacro's table: Python's builtins, math's names, and its own functions, as the
+        # attributes of its ``xacro`` name (``load_yaml`` alone too, as xacro still has it)
         functions = {**expression.BUILTINS, **expression.MATH,
-                     "load_yaml": self.load_yaml, "xacro_load_yaml": self.load_yaml}
-        # xacro's own functions are attributes of its ``xacro`` name: called by name here
-        source = _XACRO_FUNCTION.sub(r"xacro_\1(", _str(inner))
+                     "load_yaml": self.load_yaml, "xacro.load_yaml": self.load_yaml}
+        source = _str(inner)
         if time.monotonic() > self.deadline:
             self.report(element, "ROBOT_DESCRIPTION_LIMIT",
                         detail=f"expanding took more than {MAX_SECONDS:g} s")
