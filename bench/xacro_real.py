@@ -1,13 +1,16 @@
 """The xacro reader on every robot description of real workspaces.
 
-    .venv/bin/python bench/xacro_real.py WORKSPACE [WORKSPACE ...] [--list]
+    .venv/bin/python bench/xacro_real.py WORKSPACE [WORKSPACE ...] [--list] [--dump FILE]
 
 Every ``*.urdf.xacro`` / ``*.xacro`` / ``*.urdf`` file that is a document of its own (its
 root is ``<robot>``) is expanded with no arguments (defaults only) and the environment
 empty: how many expand completely, how many keep unknown parts (and the commonest
 reasons), how many stop (with the diagnostics by code), the links and Gazebo plugins
 found, and the slowest file. ``--list`` prints one line per file. Macro-only files
-(included by others) are expanded too: their macros are defined and unused.
+(included by others) are expanded too: their macros are defined and unused. ``--dump FILE``
+writes every expansion (the document, the unknown reasons, the diagnostics), each file
+twice: with its defaults, and with every ``xacro:arg`` it declares known only in part
+(``x_?``): two trees' files compare byte for byte (``cmp``).
 """
 
 from __future__ import annotations
@@ -15,11 +18,15 @@ from __future__ import annotations
 import argparse
 import collections
 import os
+import re
 import sys
 import time
+from typing import Any
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.dirname(HERE))
+
+from lxml import etree  # noqa: E402
 
 from haros_arch.robot import xacro  # noqa: E402
 from haros_arch.workspace import scan  # noqa: E402
@@ -31,6 +38,7 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("workspace", nargs="+")
     parser.add_argument("--list", action="store_true")
+    parser.add_argument("--dump", metavar="FILE")
     args = parser.parse_args()
     roots = [os.path.abspath(w) for w in args.workspace]
     workspace = scan(roots, {})
@@ -61,12 +69,33 @@ def main() -> None:
             plugins += sum(1 for p in description.root.iter("plugin") if p.get("filename"))
         if args.list:
             print(f"{state:8} {took * 1000:7.1f} ms {workspace.relpath(path)}")
+    if args.dump:
+        dump(files, workspace, args.dump)
     print(f"{len(files)} files: {counts['complete']} complete, {counts['partial']} partial, "
           f"{counts['stopped']} stopped; {links} links, {plugins} Gazebo plugins; slowest "
           f"{slowest[0] * 1000:.0f} ms ({slowest[1]})")
     print("diagnostics:", ", ".join(f"{c} {n}" for c, n in codes.most_common()) or "none")
     for reason, number in reasons.most_common(8):
         print(f"  {number:4} {reason}")
+
+
+def dump(files: list[str], workspace: Any, out: str) -> None:
+    with open(out, "w", encoding="utf-8", errors="surrogateescape") as stream:
+        for path in files:
+            with open(path, encoding="utf-8", errors="replace") as source:
+                declared = sorted(set(re.findall(r'<xacro:arg\s+name="([^"]+)"',
+                                                 source.read())))
+            unknown = {name: xacro.partial_text("x_?", f"xacro argument {name} is not known")
+                       for name in declared}
+            for given in ({}, unknown):
+                description = xacro.expand(path, given, workspace, {})
+                root = description.root
+                stream.write(f"=== {workspace.relpath(path)} {sorted(given)}\n"
+                             + (etree.tostring(root).decode() if root is not None else "-")
+                             + "\n--- unknown\n" + "\n".join(description.unknown)
+                             + "\n--- diagnostics\n" + "\n".join(
+                                 f"{d.code} {d.location} {d.message}"
+                                 for d in description.diagnostics) + "\n")
 
 
 if __name__ == "__main__":

@@ -223,6 +223,21 @@ def _python_node(data: bytes) -> None:
     extract_python([ws.write("fz3/fz3/node.py", data)], ws.workspace, package="fz3")
 
 
+def _xacro(data: bytes) -> None:
+    """A robot description, expanded by the xacro reader (its ``${}`` through the one safe
+    evaluator), with one argument known and one known only in part; a second file in the
+    same folder is there to include."""
+    from haros_arch.robot import xacro
+
+    ws = workspace()
+    ws.write("fz1/config/part.xacro", b'<robot xmlns:xacro="http://ros.org/wiki/xacro">'
+             b'<xacro:property name="w" value="0.5"/><xacro:macro name="m" params="n">'
+             b'<link name="${n}"/></xacro:macro></robot>')
+    path = ws.write("fz1/config/r.urdf.xacro", data)
+    xacro.expand(path, {"x": "1", "u": xacro.partial_text("a_?", "u is not known")},
+                 ws.workspace, {"HOME": "/home/u"})
+
+
 _MODEL_JSON: str | None = None
 
 
@@ -360,6 +375,14 @@ YAML_TOKENS = ["&a ", "*a", "<<: *a", "!!binary ", "!!python/object ", "deg(", "
 CMAKE_TOKENS = ["${", "}", "set(a ${a} ${a})", "list(APPEND a ${a})", "string(REGEX MATCH ",
                 "(a*)*b", "macro(m)", "function(f)", "foreach(i RANGE 10000)", "while(1)",
                 "include(", "add_subdirectory(", "[==[", "]==]", "$ENV{", "endif()", "if("]
+XACRO_TOKENS = [*EVAL, "${", "}", "$(arg u)", "$(eval ", '<xacro:property name="p" value="',
+                '<xacro:property name="q" value="${p*p}"/>', "${q}", "${p}",
+                '<xacro:macro name="m" params="a b:=1 *c">', "</xacro:macro>",
+                '<xacro:m a="${a}" b="${b}"><x/></xacro:m>', '<xacro:insert_block name="c"/>',
+                '<xacro:include filename="part.xacro"/>', '<xacro:include filename="$(find ',
+                '<xacro:if value="', '<xacro:unless value="', '<xacro:call macro="',
+                '<xacro:element xacro:name="', "xacro.load_yaml('", "pi/2", "radians(",
+                "${[x for x in range(10**6)]}", "&#", "<!ENTITY"]
 QUERY_TOKENS = ["round(5, -10**9)", "int(float('1e400'))", "10**10**10", "[", "]", "(", ")",
                 "for x in ", "let x := ", "where ", "return ", "count(", "nodes", "topics",
                 "'x' * 10**9", "__class__", ".name", "//", "=~", "'\\'", "1e400"]
@@ -383,6 +406,8 @@ TARGETS: dict[str, Target] = {t.name: t for t in [
     Target("setup_py", _setup_py, ["**/setup.py"], PYTHON_TOKENS),
     Target("python_node", _python_node, ["**/scripts/*.py", "**/nodes/*.py",
                                          "**/src/*/*/*.py"], PYTHON_TOKENS),
+    Target("xacro", _xacro, ["robot/**/*.xacro", "robot/**/*.urdf", "**/*.urdf"],
+           XACRO_TOKENS),
     Target("query", _query, [], QUERY_TOKENS, _query_seeds),
     Target("saved_model", _saved_model, ["paper_minimal/expected.json"],
            ['"nodes": ', '"configurations": [', "null", "1e400", '"\\ud800"', "[[[[", "{}"]),

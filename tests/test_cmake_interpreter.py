@@ -40,6 +40,11 @@ def run(text: str, folder: str = "/pkg", env: dict | None = None) -> Interpreter
     ('string(GENEX_STRIP "a$<CONFIG:Debug>b" OUT)', "OUT", "ab"),
     ('math(EXPR OUT "(3 + 4) * 2 % 5")', "OUT", "4"),
     ('math(EXPR OUT "1 << 4" OUTPUT_FORMAT HEXADECIMAL)', "OUT", "0x10"),
+    # C's integer rules: toward zero, and exact past a float's 53 bits
+    ('math(EXPR OUT "-7 / 2")', "OUT", "-3"),
+    ('math(EXPR OUT "-7 % 2")', "OUT", "-1"),
+    ('math(EXPR OUT "9007199254740993 / 1")', "OUT", "9007199254740993"),
+    ('math(EXPR OUT "9007199254740993 % 10")', "OUT", "3"),
     ("get_filename_component(OUT src/nodes/talker.cpp NAME_WE)", "OUT", "talker"),
     ("get_filename_component(OUT src/nodes/talker.cpp DIRECTORY)", "OUT", "src/nodes"),
     ('set(X "a;b")\nset(Y ${X} c)', "Y", "a;b;c"),

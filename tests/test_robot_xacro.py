@@ -86,6 +86,29 @@ def tmp_expand(tmp_path: Path, text: str, **args: str) -> xacro.Description:
     return xacro.expand(path, args, Workspace(str(tmp_path), [str(tmp_path)]), {})
 
 
+def test_text_known_in_part_is_the_readers_one_partial_value(tmp_path: Path):
+    from haros_arch.model.values import Unknown, Value
+
+    assert xacro.partial_text("plain", "r") == "plain"
+    assert xacro.partial_text("a_?_b", "r") == Value(("a_", Unknown("r"), "_b"))
+    path = write(tmp_path, "robot.urdf.xacro",
+                 '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+                 '<xacro:property name="p" value="$(arg u)"/>\n'
+                 '<xacro:property name="q" value="$(arg v)"/>\n'
+                 '<a n="$(arg u)/x" e="${p + q}" k="${1 + 2}"/>\n'
+                 '<xacro:include filename="$(arg u)$(arg u).xacro"/>\n</robot>')
+    args = {"u": xacro.partial_text("a_?_b", "u is not known"),
+            "v": xacro.partial_text("?", "v is not known")}
+    description = xacro.expand(path, args, Workspace(str(tmp_path), [str(tmp_path)]), {})
+    a = description.root.find("a")
+    # the known parts stay; an expression over two unknown properties is one ``?``
+    assert (a.get("n"), a.get("e"), a.get("k")) == ("a_?_b/x", "?", "3")
+    # ... which keeps both reasons; the include names its reason once
+    assert description.unknown == [
+        "u is not known (robot.urdf.xacro:4)", "v is not known (robot.urdf.xacro:4)",
+        "included file a_?_ba_?_b.xacro is not known: u is not known (robot.urdf.xacro:5)"]
+
+
 def codes(description: xacro.Description) -> list[tuple[str, int]]:
     return [(d.code, d.location.line) for d in description.diagnostics]
 

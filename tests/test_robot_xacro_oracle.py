@@ -100,7 +100,10 @@ INLINE = {
         '<xacro:w reflect="-1"/><xacro:w reflect="0.5" s="1" q="y"/>',
     "yaml files":
         '<xacro:property name="c" value="${xacro.load_yaml(\'limits.yaml\')}"/>'
-        '<j lo="${c[\'joint\'][\'min\']}" hi="${c[\'joint\'][\'max\']}" n="${len(c)}"/>',
+        '<j lo="${c[\'joint\'][\'min\']}" hi="${c[\'joint\'][\'max\']}" n="${len(c)}"/>'
+        # xacro's functions are names of its table, not a rewrite of the text
+        '<t v="${\'xacro.load_yaml(1)\'}" w="${c[\'joint\'][\'min\'] if xacro.load_yaml '
+        '(\'limits.yaml\') else 0}"/>',
     "arguments and escapes":
         '<xacro:arg name="n" default="4"/><a v="$(arg n)" w="${int(\'$(arg n)\') + 1}" '
         'd="$${not evaluated}"/>',

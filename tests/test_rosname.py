@@ -54,3 +54,14 @@ def test_values_keep_known_parts():
     assert value.origins == ("arg robot",)
     assert Value.of("a", "b").literal == "ab"
     assert (Value.of("x") + Value((Unknown("y"),))).text == "x?"
+
+
+def test_an_unknown_computed_from_several_keeps_each_cause_and_saves_as_before():
+    from haros_arch.model.serialise import to_data
+
+    both = Unknown("${a + b}", causes=("arg a is not set", "arg b is not set"))
+    value = Value.of("x_", both, "_", Unknown("arg c is not set"))
+    assert value.text == "x_?_?"  # one unknown part for the expression, not one per cause
+    assert value.origins == ("arg a is not set", "arg b is not set", "arg c is not set")
+    assert to_data(both) == to_data(Unknown("${a + b}")) == {"origin": "${a + b}",
+                                                             "kind": "unknown"}

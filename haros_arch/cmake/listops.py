@@ -244,9 +244,15 @@ def _string_regex(mode: str, rest: list[str], scope: Scope) -> None:
         scope.set(rest[2], pattern.sub(_replacement(rest[1]), "".join(rest[3:])))
 
 
+def _c_divide(a: int, b: int) -> int:
+    """C's integer division (toward zero), exact for any size (not through a float)."""
+    quotient = abs(a) // abs(b)
+    return quotient if (a < 0) == (b < 0) else -quotient
+
+
 _OPERATORS: dict[type, Callable[..., int]] = {
     ast.Add: operator.add, ast.Sub: operator.sub, ast.Mult: operator.mul,
-    ast.Div: lambda a, b: int(a / b), ast.Mod: lambda a, b: a - b * int(a / b),
+    ast.Div: _c_divide, ast.Mod: lambda a, b: a - b * _c_divide(a, b),
     ast.LShift: operator.lshift, ast.RShift: operator.rshift, ast.BitAnd: operator.and_,
     ast.BitOr: operator.or_, ast.BitXor: operator.xor,
     ast.USub: operator.neg, ast.UAdd: operator.pos, ast.Invert: operator.invert,
@@ -254,7 +260,9 @@ _OPERATORS: dict[type, Callable[..., int]] = {
 
 
 def run_math(args: list[str], scope: Scope) -> None:
-    """``math(EXPR var "expr" [OUTPUT_FORMAT ...])``: integer arithmetic, our own walker."""
+    """``math(EXPR var "expr" [OUTPUT_FORMAT ...])``: CMake's integer arithmetic, with C's
+    rules (64-bit operands, ``/`` and ``%`` toward zero, no floats, no names or calls): not
+    Python's, so its own small walker rather than a configuration of the one evaluator."""
     if len(args) < 3 or args[0] != "EXPR":
         return
     value = evaluate_integer(args[2])

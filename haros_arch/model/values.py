@@ -9,7 +9,7 @@ and show ``?`` where a part is unknown.
 from __future__ import annotations
 
 from collections.abc import Iterable
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Literal
 
 UNKNOWN_MARK = "?"
@@ -25,10 +25,14 @@ class Unknown:
     why it is not known: ``unknown`` (it depends on a value nobody knows, e.g. an unset
     argument), ``unsupported`` (a construct outside the safe subset, never run),
     ``undefined`` (a name that is not defined), ``error`` (Python would raise, e.g. a
-    division by zero), ``syntax`` (not Python), ``limit`` (a work bound was reached)."""
+    division by zero), ``syntax`` (not Python), ``limit`` (a work bound was reached).
+    ``causes``: the origins of the unknowns it was computed from, when there are several
+    (an expression over two unset arguments is one unknown with both as causes); not
+    saved in models."""
 
     origin: str = ""
     kind: UnknownKind = "unknown"
+    causes: tuple[str, ...] = field(default=(), metadata={"json": False})
 
     @property
     def reason(self) -> str:
@@ -81,7 +85,10 @@ class Value:
 
     @property
     def origins(self) -> tuple[str, ...]:
-        return tuple(p.origin for p in self.parts if isinstance(p, Unknown))
+        """Where each unknown part comes from, in order (an unknown computed from several:
+        its causes)."""
+        return tuple(origin for p in self.parts if isinstance(p, Unknown)
+                     for origin in (p.causes or (p.origin,)))
 
     def __add__(self, other: Value | str) -> Value:
         return Value.of(self, other)

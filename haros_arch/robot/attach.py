@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import os
 import shlex
-from collections.abc import Iterator, Sequence
+from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass
 from functools import partial
 from typing import Any, cast
@@ -43,7 +43,7 @@ from ..model.robot import DescribedControl, DescribedPlugin, RobotDescription
 from ..model.rosname import as_namespace, clean, namespace_of, resolve
 from ..model.runtime import Configuration, NodeInstance, Parameter
 from ..model.source import CallKind, Node, PrimitiveCall
-from ..model.values import UNKNOWN_MARK
+from ..model.values import UNKNOWN_MARK, Value
 from ..plugins.attach import Params, own_partial
 from ..share import share_source
 from ..workspace import Workspace
@@ -280,13 +280,12 @@ def _from_command(param: ParamDecl, name: str, workspace: Workspace,
     if UNKNOWN_MARK in path:
         _note(config, param.location, f"the xacro file {path} is not known")
         return None
-    values: dict[str, str | xacro.Partial] = {
-        key: (xacro.Partial(value, (f"xacro argument {key} is not known",))
-              if UNKNOWN_MARK in value else value) for key, value in args.items()}
+    values = {key: xacro.partial_text(value, f"xacro argument {key} is not known")
+              for key, value in args.items()}
     return _expanded(path, values, name, param.location, workspace, config)
 
 
-def _expanded(path: str, args: dict[str, str | xacro.Partial], name: str, where: Location,
+def _expanded(path: str, args: Mapping[str, str | Value], name: str, where: Location,
               workspace: Workspace, config: Configuration,
               ) -> tuple[RobotDescription, xacro.Description]:
     expanded = xacro.expand(path, args, workspace)

@@ -9,10 +9,13 @@ to the including file), ``xacro:if`` / ``xacro:unless``, ``xacro:element`` /
 ``xacro:attribute``, ``${...}`` expressions and ``$(arg)``, ``$(find)``, ``$(env)``,
 ``$(optenv)``, ``$(eval)``, ``$(dirname)``.
 
-Expressions go through the launch files' safe evaluator (``launch.expression.evaluate``):
-nothing from the workspace is run. What cannot be known (an argument nobody set, a
-package not found, a construct outside the subset) is written ``?`` in the text it is
-part of and its reason kept in ``Description.unknown``; an ``if`` whose value is not known
+Expressions go through the one safe evaluator (``launch.expression.evaluate``, the
+configuration ``$(eval)`` has) with xacro's own table: Python's builtins, ``math``,
+``xacro.load_yaml``, and the properties in scope as names: nothing from the workspace is
+run. Text known in part is the readers' one partial value (``model.values.Value``): what
+cannot be known (an argument nobody set, a package not found, a construct outside the
+subset) is an ``Unknown`` part, written ``?``, and its reason is kept in
+``Description.unknown``; an ``if`` whose value is not known
 keeps its content, marked with the condition's text (``CONDITION`` attribute) so what is
 under it can carry the condition. Files are read only inside the workspace and installed
 packages; includes nest at most ``MAX_DEPTH`` deep, at most ``MAX_FILES`` files are read
@@ -28,7 +31,7 @@ import re
 import time
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, NamedTuple
 
 import yaml
 from lxml import etree
@@ -39,7 +42,7 @@ from ..files import read_bytes, read_text
 from ..launch import expression
 from ..manifest import xml_parser
 from ..model.diagnostic import Diagnostic
-from ..model.values import UNKNOWN_MARK
+from ..model.values import UNKNOWN_MARK, Unknown, UnknownKind, Value
 from ..share import share_source
 from ..workspace import Workspace
 
@@ -61,7 +64,6 @@ MAX_FILE_BYTES = 4 * 1024 * 1024
 CONDITION = "{urn:haros-arch}condition"
 FILE = "{urn:haros-arch}file"  # the file an element comes from (on roots and MARKED)
 MARKED = ("plugin", "ros2_control")
-_XACRO_FUNCTION = re.compile(r"\bxacro\.(load_yaml)\s*\(")
 _TOKENS = re.compile(r"\$\$+[{(]|\$\{[^}]*\}|\$\([^)]*\)|[^$]+|\$[^{($]+|\$$|\$")
 # xacro's ``re_macro_arg``, with its default's ``(?:'.*?'|".*?"|[^\s'"]+)+`` written so
 # that each character is matched one way only (theirs backtracks exponentially on an
@@ -71,15 +73,29 @@ _MACRO_ARG = re.compile(
     r"""(?:\s+|$)(.*)""", re.S)
 
 
-@dataclass
-class Partial:
-    """Text with unknown parts (written ``?``) and why they are unknown."""
+def partial_text(text: str, reason: str) -> str | Value:
+    """``text`` whose every ``?`` is a part not known for ``reason`` (a xacro argument
+    given as a name with unknown parts); ``text`` itself when it has none."""
+    if UNKNOWN_MARK not in text:
+        return text
+    pieces = text.split(UNKNOWN_MARK)
+    parts: list[str | Unknown] = [pieces[0]]
+    for piece in pieces[1:]:
+        parts += [Unknown(reason), piece]
+    return Value.of(*parts)
+
+
+def _unknown(origin: str, causes: tuple[str, ...] = (),
+             kind: UnknownKind = "unknown") -> Value:
+    """One part not known: for ``origin``, or computed from unknowns with ``causes``."""
+    return Value((Unknown(origin, kind, causes),))
+
+
+class _Undecided(NamedTuple):
+    """An ``if`` / ``unless`` whose value is not known: its text and why."""
 
     text: str
     reasons: tuple[str, ...]
-
-    def __str__(self) -> str:
-        return self.text
 
 
 @dataclass
@@ -165,7 +181,7 @@ def local_name(element: Element) -> str:
     return tag.rsplit("}", 1)[-1]
 
 
-def expand(path: str, args: Mapping[str, str | Partial], workspace: Workspace,
+def expand(path: str, args: Mapping[str, str | Value], workspace: Workspace,
            environment: Mapping[str, str] | None = None) -> Description:
     """The robot description in ``path`` expanded with ``args`` (``name:=value`` of the
     xacro command line). Never raises for bad input."""
@@ -314,8 +330,8 @@ class _Expander:
     # -- values ----------------------------------------------------------------------------
     def text_of(self, element: Element, text: str, scope: _Scope) -> str:
         value = self.evaluate(element, text, scope)
-        if isinstance(value, Partial):
-            for reason in value.reasons:
+        if isinstance(value, Value):
+            for reason in value.origins:
                 self.unknown(element, reason)
         made = _str(value)
         if made is not text:
@@ -343,40 +359,37 @@ class _Expander:
                 parts.append(token)
         if len(parts) == 1:
             return parts[0]
-        reasons: list[str] = []
-        texts = []
-        for part in parts:
-            if isinstance(part, Partial):
-                reasons.extend(part.reasons)
-            texts.append(_str(part))
-        joined = "".join(texts)
-        if len(joined) > MAX_TEXT:
+        texts = [part if isinstance(part, Value) else _str(part) for part in parts]
+        if sum(len(_str(text)) for text in texts) > MAX_TEXT:
             self.report(element, "ROBOT_DESCRIPTION_LIMIT",
                         detail=f"a value longer than {MAX_TEXT} characters")
             raise _Stop
-        return Partial(joined, tuple(reasons)) if reasons else joined
+        if any(isinstance(text, Value) for text in texts):
+            return Value.of(*texts)
+        return "".join(str(text) for text in texts)
 
     def expression(self, element: Element, text: str, scope: _Scope) -> Any:
         inner = self.evaluate(element, text, scope)
-        if isinstance(inner, Partial):
-            return Partial(UNKNOWN_MARK, inner.reasons)
+        if isinstance(inner, Value):
+            return _unknown(f"${{{text}}}", inner.origins)
         reasons: list[str] = []
 
         def names(name: str) -> object:
             if scope.owner(name) is None:
                 raise KeyError(name)
             value = self.lookup(element, name, scope)
-            if isinstance(value, Partial):
-                reasons.extend(value.reasons)
+            if isinstance(value, Value):
+                reasons.extend(value.origins)
                 return expression.Unknown(f"property {name} is not known")
             if isinstance(value, etree._Element):
                 return expression.Unknown(f"{name} is a block", "unsupported")
             return value
 
+        # xacro's table: Python's builtins, math's names, and its own functions, as the
+        # attributes of its ``xacro`` name (``load_yaml`` alone too, as xacro still has it)
         functions = {**expression.BUILTINS, **expression.MATH,
-                     "load_yaml": self.load_yaml, "xacro_load_yaml": self.load_yaml}
-        # xacro's own functions are attributes of its ``xacro`` name: called by name here
-        source = _XACRO_FUNCTION.sub(r"xacro_\1(", _str(inner))
+                     "load_yaml": self.load_yaml, "xacro.load_yaml": self.load_yaml}
+        source = _str(inner)
         if time.monotonic() > self.deadline:
             self.report(element, "ROBOT_DESCRIPTION_LIMIT",
                         detail=f"expanding took more than {MAX_SECONDS:g} s")
@@ -386,7 +399,7 @@ class _Expander:
             if result.kind != "unknown":  # refused or wrong, not just unknown inputs
                 self.report(element, "ROBOT_DESCRIPTION_XACRO",
                             detail=f"${{{text}}}: {result.reason}")
-            return Partial(UNKNOWN_MARK, tuple(reasons) or (f"${{{text}}}: {result.reason}",))
+            return _unknown(f"${{{text}}}: {result.reason}", tuple(reasons), result.kind)
         return result
 
     def load_yaml(self, path: object) -> object:
@@ -416,16 +429,15 @@ class _Expander:
         assert owner is not None
         if name in owner.lazy:
             text = owner.lazy.pop(name)
-            owner.values[name] = Partial(UNKNOWN_MARK, (f"property {name} refers to "
-                                                        "itself",))
+            owner.values[name] = _unknown(f"property {name} refers to itself")
             value = self.evaluate(element, text, owner)
             owner.values[name] = _literal(value)
         return owner.values[name]
 
     def extension(self, element: Element, inner: Any, scope: _Scope) -> Any:
         """``$(command args)``, roslaunch's substitution arguments as xacro has them."""
-        if isinstance(inner, Partial):
-            return Partial(UNKNOWN_MARK, inner.reasons)
+        if isinstance(inner, Value):
+            return _unknown(f"$({inner.text})", inner.origins)
         words = _str(inner).split()
         if not words:
             return ""
@@ -435,16 +447,16 @@ class _Expander:
                 return self.args[rest[0]]
             self.report(element, "ROBOT_DESCRIPTION_XACRO",
                         detail=f"$(arg {rest[0]}) is not set")
-            return Partial(UNKNOWN_MARK, (f"arg {rest[0]} is not set",))
+            return _unknown(f"arg {rest[0]} is not set")
         if command == "find" and len(rest) == 1:
             found = self.workspace.find(rest[0])
             if found is None:
-                return Partial(UNKNOWN_MARK, (f"package {rest[0]} is not found",))
+                return _unknown(f"package {rest[0]} is not found")
             return found
         if command == "env" and len(rest) == 1:
             if rest[0] in self.environment:
                 return self.environment[rest[0]]
-            return Partial(UNKNOWN_MARK, (f"environment variable {rest[0]} is not set",))
+            return _unknown(f"environment variable {rest[0]} is not set")
         if command == "optenv" and rest:
             return self.environment.get(rest[0], " ".join(rest[1:]))
         if command == "dirname" and not rest:
@@ -454,22 +466,22 @@ class _Expander:
             return self.expression(element, body, scope)
         self.report(element, "ROBOT_DESCRIPTION_XACRO",
                     detail=f"$({_str(inner)}) is not supported")
-        return Partial(UNKNOWN_MARK, (f"$({_str(inner)}) is not supported",))
+        return _unknown(f"$({_str(inner)}) is not supported", kind="unsupported")
 
-    def condition(self, element: Element, scope: _Scope) -> bool | Partial:
+    def condition(self, element: Element, scope: _Scope) -> bool | _Undecided:
         text = element.get("value")
         if text is None:
             self.report(element, "ROBOT_DESCRIPTION_XACRO",
                         detail=f"xacro:{local_name(element)} without value")
-            return Partial(UNKNOWN_MARK, ("a condition without value",))
+            return _Undecided(UNKNOWN_MARK, ("a condition without value",))
         value = self.evaluate(element, text, scope)
-        if isinstance(value, Partial):
-            return Partial(text, value.reasons)
+        if isinstance(value, Value):
+            return _Undecided(text, value.origins)
         truth = _boolean(value)
         if truth is None:
             self.report(element, "ROBOT_DESCRIPTION_XACRO",
                         detail=f"condition {text!r} is {value!r}, not a boolean")
-            return Partial(text, (f"condition {text!r} is not a boolean",))
+            return _Undecided(text, (f"condition {text!r} is not a boolean",))
         return truth
 
     # -- macro calls -----------------------------------------------------------------------
@@ -511,7 +523,7 @@ class _Expander:
             if default is None:
                 self.report(element, "ROBOT_DESCRIPTION_XACRO",
                             detail=f"parameter {param} of macro {name} is not given")
-                inner.values[param] = Partial(UNKNOWN_MARK, (f"{param} is not given",))
+                inner.values[param] = _unknown(f"{param} is not given")
                 continue
             forward, text = default
             if forward is not None and scope.owner(forward) is not None:
@@ -519,7 +531,7 @@ class _Expander:
             elif text is not None:
                 inner.values[param] = _literal(self.evaluate(element, text, scope))
             else:
-                inner.values[param] = Partial(UNKNOWN_MARK, (f"{param} is not given",))
+                inner.values[param] = _unknown(f"{param} is not given")
         body = copy.deepcopy(macro.body)
         self.files.append(macro.where[0])
         try:
@@ -575,7 +587,7 @@ def _arg(self: _Expander, element: Element, scope: _Scope, depth: int) -> list[E
                         detail=f"xacro:arg {name} without default")
             return []
         value = self.evaluate(element, default, scope)
-        self.args[name] = value if isinstance(value, Partial) else _str(value)
+        self.args[name] = value if isinstance(value, Value) else _str(value)
     return []
 
 
@@ -616,9 +628,9 @@ def _include(self: _Expander, element: Element, scope: _Scope, depth: int) -> li
         self.report(element, "ROBOT_DESCRIPTION_XACRO", detail="xacro:include without filename")
         return []
     value = self.evaluate(element, spec, scope)
-    if isinstance(value, Partial):
+    if isinstance(value, Value):
         self.unknown(element, f"included file {value.text} is not known: "
-                              + "; ".join(value.reasons))
+                              + "; ".join(dict.fromkeys(value.origins)))
         return []
     path = _str(value)
     if not path:
@@ -680,7 +692,7 @@ def _insert_block(self: _Expander, element: Element, scope: _Scope,
 def _dynamic_call(self: _Expander, element: Element, scope: _Scope,
                   depth: int) -> list[Element]:
     name = self.evaluate(element, element.get("macro") or "", scope)
-    if isinstance(name, Partial) or not name:
+    if isinstance(name, Value) or not name:
         self.unknown(element, "xacro:call of a macro whose name is not known")
         return []
     del element.attrib["macro"]
@@ -794,8 +806,6 @@ def _boolean(value: Any) -> bool | None:
 
 
 def _str(value: Any) -> str:
-    if isinstance(value, Partial):
+    if isinstance(value, Value):
         return value.text
-    if isinstance(value, bool):
-        return str(value)
     return str(value)
