@@ -350,12 +350,18 @@ class CallFinder:
         location = self.where(site if target is not None and (
             target.kind == CursorKind.CONSTRUCTOR) else callee)
         names: list[tuple[str, tuple[str, str | None] | None]]
+        namespace: str | None = None
         if spec.fixed_name is not None:
-            # once per node: per owner when the file names several nodes
+            if spec.handle_default is not None:  # relative to the handle given
+                handle = next((a for a in args if is_handle(a)), None)
+                namespace = spec.handle_default if handle is None else render(
+                    self.namespaces.of(handle, scope))
+            # once per node (and handle): per owner when the file names several nodes
             once = self._owner if self._owner in dict(self.node_names) else ""
-            if (spec.kind, spec.fixed_name, once) in self._fixed:
+            key = (spec.kind, join_name(namespace or "", spec.fixed_name), once)
+            if key in self._fixed:
                 return
-            self._fixed.add((spec.kind, spec.fixed_name, once))
+            self._fixed.add(key)
             names = [(spec.fixed_name, None)]
         else:
             name_expr = arg(spec.name_arg)
@@ -374,7 +380,6 @@ class CallFinder:
             if spec.name_suffix is not None:  # a parameter client: the remote's services
                 names = [(join_name(name or "~", spec.name_suffix), source)
                          for name, source in names]
-        namespace: str | None = None
         owner = self._owner
         if spec.on_handle:  # node->create_x(...), node = rclcpp::Node::make_shared("x")
             made = handle_node(callee)
