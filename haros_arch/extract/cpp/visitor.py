@@ -31,6 +31,7 @@ from .handles import (
     callback_name,
     is_handle,
     join_name,
+    normalise,
     qualified_name,
     record_class,
 )
@@ -354,8 +355,8 @@ class CallFinder:
         if spec.fixed_name is not None:
             if spec.handle_default is not None:  # relative to the handle given
                 handle = next((a for a in args if is_handle(a)), None)
-                namespace = spec.handle_default if handle is None else render(
-                    self.namespaces.of(handle, scope))
+                namespace = spec.handle_default if handle is None else normalise(render(
+                    self.namespaces.of(handle, scope)))
             # once per node (and handle): per owner when the file names several nodes
             once = self._owner if self._owner in dict(self.node_names) else ""
             key = (spec.kind, join_name(namespace or "", spec.fixed_name), once)
