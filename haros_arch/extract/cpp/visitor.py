@@ -448,10 +448,14 @@ class CallFinder:
                     head = name.rpartition("/")[0] if "/" in name else (
                         "~" if name.startswith("~") else "")
                     full = sibling if sibling.startswith("/") else join_name(head, sibling)
+                # beside a server on a handle given (dynamic_reconfigure's topics): in the
+                # same handle's namespace, filled from the call sites as the server is
+                sibling_namespace = handle_namespace if (
+                    spec.handle_default is not None and not sibling.startswith("/")) else None
                 self.calls.append(PrimitiveCall(
                     kind=kind, name=full, type=self.types.ros_type(stype), queue_size=queue,
                     latch=latch, conditions=conditions, location=location,
-                    node_name=owner))
+                    handle_namespace=sibling_namespace, node_name=owner))
 
     def _names(self, spec: api.RosFunction, call: Cursor, expr: Cursor, args: list[Cursor],
                scope: Scope) -> list[tuple[str, tuple[str, str | None] | None]]:
