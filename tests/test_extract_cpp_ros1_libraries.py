@@ -35,3 +35,25 @@ def test_realtime_publisher(tmp_path):
         ("publish", "?/joint_states", "sensor_msgs/JointState", 4, False),
         ("publish", "?/odom", "nav_msgs/Odometry", 100, True),
     ]
+
+
+def test_reconfigure_server_on_given_handle(tmp_path):
+    """A dynamic_reconfigure server is named in the namespace of the handle it is given,
+    after a mutex or alone (a controller's own controller_nh: ``?/set_parameters``, which
+    its host names after the controller; a driver's handle from its caller), and is
+    private without one."""
+    root = FIXTURES / "cpp/reconfigure_handles"
+    result = extract_cpp([str(root / "controller.cpp")], Workspace(root=str(root)),
+                         cache_dir=str(tmp_path))
+    assert [d for d in result.diagnostics if d.code.startswith("CPP_PARSE")] == []
+    servers = sorted((c.name, c.handle_namespace) for c in result.calls if c.kind == "server")
+    assert servers == [("?/gains/set_parameters", "?/gains"), ("?/set_parameters", "?"),
+                       ("set_parameters", None), ("~camera/set_parameters", "~camera"),
+                       ("~set_parameters", "~")]
+    # its two topics in the same handle's namespace (filled from the call sites alike)
+    topics = sorted((c.name, c.handle_namespace) for c in result.calls if c.kind == "publish")
+    assert topics == sorted(
+        (f"{ns}{t}", namespace)
+        for ns, namespace in (("?/gains/", "?/gains"), ("?/", "?"), ("", None),
+                              ("~camera/", "~camera"), ("~", "~"))
+        for t in ("parameter_descriptions", "parameter_updates"))

@@ -107,7 +107,7 @@ def test_subscriber_transport_comes_from_its_parameter():
     # not set: raw, the base topic; the parameter is read
     config = graph([decl], nodes=[VIEWER])
     assert topics(config, "/viewer") == [("subscribe", "/image", "sensor_msgs/Image", ())]
-    assert reads(config, "/viewer") == ["/viewer/image_transport"]
+    assert set(reads(config, "/viewer")) == {"/viewer/image_transport"}
     config = graph([decl, NodeDecl("/cam/driver", "cam", "driver", "/")],
                    [ParamDecl("/viewer/image_transport", "compressed")], nodes=[VIEWER, DRIVER])
     assert topics(config, "/viewer") == [
@@ -177,3 +177,22 @@ def test_ros1_subscriber_names_its_transport_topic_from_the_base_as_written():
                    [ParamDecl("/viewer/image_transport", "compressed")], nodes=[viewer])
     assert [name for _, name, _, _ in topics(config, "/viewer")] == [
         "/cam/mono/compressed", "/image/compressed"]
+
+
+def test_ros2_subscriber_reads_the_transport_parameter_only_when_its_node_declares_it():
+    # jazzy's TransportHints get_parameter_or("image_transport", ..., "raw") and never
+    # declare it: a launch value of an undeclared parameter does not reach them
+    viewer = Node("cam", "viewer", calls=[call("subscribe", "image", "sensor_msgs/msg/Image",
+                                               "?/")])
+    decl = NodeDecl("/viewer", "cam", "viewer", ros_version=2)
+    setting = [ParamDecl("/viewer/image_transport", "compressed")]
+    config = graph([decl], setting, nodes=[viewer])
+    assert topics(config, "/viewer") == [("subscribe", "/image", "sensor_msgs/msg/Image", ())]
+    assert reads(config, "/viewer") == []
+    declaring = Node("cam", "viewer", calls=[
+        *viewer.calls, PrimitiveCall("declare", "image_transport", "str", has_default=True,
+                                     default="raw", location=Location("cam", "c.cpp", 2, 3))])
+    config = graph([decl], setting, nodes=[declaring])
+    assert topics(config, "/viewer") == [
+        ("subscribe", "/image/compressed", "sensor_msgs/msg/CompressedImage", ())]
+    assert set(reads(config, "/viewer")) == {"/viewer/image_transport"}

@@ -169,6 +169,15 @@ def test_gz_systems_make_no_ros_calls_and_bridges_make_their_topics_ros_topics()
             if d.code == "GAZEBO_PLUGIN_UNKNOWN"] == [("GAZEBO_PLUGIN_UNKNOWN", 8)]
 
 
+def test_image_bridge_publishes_through_image_transport():
+    # image_bridge.cpp's image_transport::create_publisher: the transports' topics too
+    config = configuration(ROS2, "bot2_description/launch/gz.launch.py")
+    published = sorted(link.resource.name for link in config.links
+                       if link.node.name == "/ros_gz_image" and link.kind == "publish")
+    assert "/camera/image_raw/compressed" in published
+    assert "/camera/image_raw/theora" in published
+
+
 @pytest.mark.parametrize(("argument", "expected"), [
     ("/chatter@std_msgs/msg/String@gz.msgs.StringMsg",
      [("publish", "std_msgs/msg/String"), ("subscribe", "std_msgs/msg/String")]),

@@ -9,7 +9,9 @@ installed; any other not at all. The publisher's list parameter (ROS 1
 ``disable_pub_plugins``, ROS 2 ``enable_pub_plugins``) then removes transports; a value
 we cannot read leaves each transport under a condition that says so. A subscriber's
 transport comes from its code, or from the node's ``image_transport`` parameter (not set:
-``raw``, the base topic; a value not known: the topic ``<base>/?``).
+``raw``, the base topic; a value not known: the topic ``<base>/?``); in ROS 2 only when
+the node declares that parameter (TransportHints read it with get_parameter_or, which
+sees no launch value of an undeclared parameter), else ``raw``.
 """
 
 from __future__ import annotations
@@ -149,7 +151,11 @@ class Transports:
         version = 1 if instance.ros_version == 1 else 2
         out: list[PrimitiveCall] = []
         name: str | None = (call.transport or "").rstrip("/")
-        if name == UNKNOWN_MARK:  # TransportHints: the node's parameter
+        if name == UNKNOWN_MARK and version == 2 and not _declares(instance, TRANSPORT_PARAM):
+            # ROS 2 TransportHints get_parameter_or a parameter they never declare: without
+            # the node's own declaration the launch value is not there, raw is used
+            name = RAW
+        elif name == UNKNOWN_MARK:  # TransportHints: the node's parameter
             key = ("~" if version == 1 else "") + TRANSPORT_PARAM
             out.append(PrimitiveCall("read", key, location=call.location,
                                      conditions=call.conditions, has_default=True,
@@ -169,6 +175,14 @@ class Transports:
         return [replace(call, name=topic, type=msg_type, name_param=None,
                         name_default=None, handle_namespace=None, transport=None,
                         origin="plugin"), *out]
+
+
+def _declares(instance: NodeInstance, parameter: str) -> bool:
+    """Whether the instance's node declares the ROS 2 parameter ``parameter``."""
+    node = instance.node
+    return node is not None and any(
+        c.kind == "declare" and c.name.removeprefix("~").lstrip("/.") == parameter
+        for c in node.calls)
 
 
 def _chosen(name: str, listed: object, version: int) -> bool | None:

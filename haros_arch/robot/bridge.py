@@ -6,7 +6,8 @@ and subscribes, ``[`` gz to ROS: it publishes, ``]`` ROS to gz: it subscribes; a
 ``/srv/`` type is a service it serves) and per entry of the YAML file its
 ``config_file`` parameter names (``ros_topic_name`` / ``gz_topic_name`` /
 ``topic_name``, ``ros_type_name``, ``direction`` BIDIRECTIONAL, GZ_TO_ROS, ROS_TO_GZ).
-``ros_gz_image image_bridge`` publishes each topic its arguments name as an image.
+``ros_gz_image image_bridge`` publishes each topic its arguments name as an image, through
+image_transport (so with its transport plugins' topics).
 Facts from ros_gz's ``ros_gz_bridge/src/parameter_bridge.cpp``, ``bridge_config.cpp``,
 ``ros_gz_bridge.cpp`` and ``ros_gz_image/src/image_bridge.cpp``.
 
@@ -58,8 +59,11 @@ def bridges(config: Configuration, launch: LaunchModel,
         node = Node(decl.package, decl.executable, location=decl.location)
         positional, params = _arguments(decl.args)
         if key in IMAGE_BRIDGES:
+            # through image_transport::create_publisher (image_bridge.cpp): with the
+            # topics of the transport plugins
             node.calls = [PrimitiveCall("publish", topic, "sensor_msgs/msg/Image",
-                                        location=decl.location, origin="description")
+                                        location=decl.location, origin="description",
+                                        transport="*")
                           for topic in positional[:MAX_ENTRIES]]
         else:
             node.calls = list(_from_arguments(positional, decl.location))

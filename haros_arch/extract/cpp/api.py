@@ -63,6 +63,10 @@ class RosFunction:
     optional_handle: bool = False
     # a name fixed by the API (tf's "/tf") instead of one read from an argument
     fixed_name: str | None = None
+    # the fixed name is relative to the first argument that is a handle, else to this
+    # namespace (dynamic_reconfigure's Server(nh) and Server(mutex, nh), whose handle
+    # defaults to NodeHandle("~"))
+    handle_default: str | None = None
     fixed_type: str | None = None
     latched: bool = False
     # the ROS action name of a type such as pkg::DoAction is pkg/Do
@@ -214,12 +218,13 @@ LIBRARIES: dict[tuple[str, str], RosFunction] = {
     ("tf2_ros::TransformListener", "TransformListener"): RosFunction(
         "subscribe", fixed_name="/tf", fixed_type=_TF, on_handle=False,
         siblings=(("subscribe", "/tf_static", _TF),)),
-    # dynamic_reconfigure's server lives in the (private) namespace of its handle
+    # dynamic_reconfigure's server lives in the namespace of the handle it is given (a
+    # controller's own controller_nh), by default the node's private one
     ("dynamic_reconfigure::Server", "Server"): RosFunction(
-        "server", fixed_name="~set_parameters", fixed_type="dynamic_reconfigure/Reconfigure",
-        on_handle=False,
-        siblings=(("publish", "~parameter_descriptions", "dynamic_reconfigure/ConfigDescription"),
-                  ("publish", "~parameter_updates", "dynamic_reconfigure/Config"))),
+        "server", fixed_name="set_parameters", fixed_type="dynamic_reconfigure/Reconfigure",
+        on_handle=False, handle_default="~",
+        siblings=(("publish", "parameter_descriptions", "dynamic_reconfigure/ConfigDescription"),
+                  ("publish", "parameter_updates", "dynamic_reconfigure/Config"))),
     ("diagnostic_updater::Updater", "Updater"): RosFunction(
         "publish", fixed_name="/diagnostics", fixed_type="diagnostic_msgs/DiagnosticArray",
         on_handle=False),

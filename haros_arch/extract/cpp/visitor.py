@@ -31,6 +31,7 @@ from .handles import (
     callback_name,
     is_handle,
     join_name,
+    normalise,
     qualified_name,
     record_class,
 )
@@ -350,12 +351,18 @@ class CallFinder:
         location = self.where(site if target is not None and (
             target.kind == CursorKind.CONSTRUCTOR) else callee)
         names: list[tuple[str, tuple[str, str | None] | None]]
+        namespace: str | None = None
         if spec.fixed_name is not None:
-            # once per node: per owner when the file names several nodes
+            if spec.handle_default is not None:  # relative to the handle given
+                handle = next((a for a in args if is_handle(a)), None)
+                namespace = spec.handle_default if handle is None else normalise(render(
+                    self.namespaces.of(handle, scope)))
+            # once per node (and handle): per owner when the file names several nodes
             once = self._owner if self._owner in dict(self.node_names) else ""
-            if (spec.kind, spec.fixed_name, once) in self._fixed:
+            key = (spec.kind, join_name(namespace or "", spec.fixed_name), once)
+            if key in self._fixed:
                 return
-            self._fixed.add((spec.kind, spec.fixed_name, once))
+            self._fixed.add(key)
             names = [(spec.fixed_name, None)]
         else:
             name_expr = arg(spec.name_arg)
@@ -374,7 +381,6 @@ class CallFinder:
             if spec.name_suffix is not None:  # a parameter client: the remote's services
                 names = [(join_name(name or "~", spec.name_suffix), source)
                          for name, source in names]
-        namespace: str | None = None
         owner = self._owner
         if spec.on_handle:  # node->create_x(...), node = rclcpp::Node::make_shared("x")
             made = handle_node(callee)
@@ -442,10 +448,14 @@ class CallFinder:
                     head = name.rpartition("/")[0] if "/" in name else (
                         "~" if name.startswith("~") else "")
                     full = sibling if sibling.startswith("/") else join_name(head, sibling)
+                # beside a server on a handle given (dynamic_reconfigure's topics): in the
+                # same handle's namespace, filled from the call sites as the server is
+                sibling_namespace = handle_namespace if (
+                    spec.handle_default is not None and not sibling.startswith("/")) else None
                 self.calls.append(PrimitiveCall(
                     kind=kind, name=full, type=self.types.ros_type(stype), queue_size=queue,
                     latch=latch, conditions=conditions, location=location,
-                    node_name=owner))
+                    handle_namespace=sibling_namespace, node_name=owner))
 
     def _names(self, spec: api.RosFunction, call: Cursor, expr: Cursor, args: list[Cursor],
                scope: Scope) -> list[tuple[str, tuple[str, str | None] | None]]:
