@@ -25,6 +25,7 @@ from .call_sites import CallSites
 from .call_types import CallTypes, factory_made
 from .call_types import callee as callee_of_call
 from .conditions import ConditionReader
+from .cursors import root
 from .handles import (
     Namespaces,
     callback,
@@ -100,7 +101,7 @@ class CallFinder:
         self.wrappers = Wrappers(self)  # the file's functions that wrap the ROS API
 
     def run(self) -> None:
-        self.functions = list(self._definitions(self.tu.cursor, top=True))
+        self.functions = list(self._definitions(root(self.tu), top=True))
         self.sites = self.namespaces.sites = CallSites(self.functions, self.macros, self.source,
                                                        external=True)
         self.wrappers.build()
