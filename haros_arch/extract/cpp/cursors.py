@@ -18,6 +18,7 @@ are equal exactly when ``clang_equalCursors`` says so.
 from __future__ import annotations
 
 import ctypes
+import sys
 from collections.abc import Iterator
 from typing import Any, Generic, TypeVar
 
@@ -37,11 +38,14 @@ __all__ = ["Node", "root"]
 _VISIT = callbacks["cursor_visit"]
 Value = TypeVar("Value")
 _DECLARATION: dict[int, bool] = {}  # kind id -> clang_isDeclaration
+_KINDS: dict[int, CursorKind] = {}
+_UNIT_KIND = CursorKind.TRANSLATION_UNIT.value
+_BODY: dict[int, bool] = {}  # kind id -> a statement or expression
+_NONE = bytes(8)
 _PARENT = slice(16, 24)  # data[1] of a CXCursor: kind, xdata (4 bytes each), data[3]
-_NO_PARENT = bytes(8)
 
 
-class cached_property(Generic[Value]):  # noqa: N801 - functools' name, without its lock
+class cached(Generic[Value]):
     """An attribute computed on first use and then kept in the instance's ``__dict__``
     (``functools.cached_property`` takes a lock on every first use, a third of the cost
     of a node)."""
@@ -70,14 +74,16 @@ class _Unit:
         self.files: dict[int | None, _File] = {}
 
     def node(self, cursor: Cursor | None) -> Node | None:
-        if cursor is None:
-            return None
-        raw = bytes(cursor)
+        return None if cursor is None else self.made(bytes(cursor))
+
+    def made(self, raw: bytes) -> Node:
+        """The one node of the cursor whose bytes are ``raw``."""
         found = self.nodes.get(raw)
         if found is None:
             found = Node.from_buffer_copy(raw)
-            found._tu = cursor._tu
+            found._tu = self.tu
             found._unit = self
+            found.kind = _kind(found._kind_id)
             self.nodes[raw] = found
         return found
 
@@ -92,6 +98,46 @@ class _Unit:
         return found
 
 
+def _kind(kind_id: int) -> CursorKind:
+    found = _KINDS.get(kind_id)
+    if found is None:
+        found = _KINDS[kind_id] = CursorKind.from_id(kind_id)
+    return found
+
+
+def _alone(raw: bytes, parent: bytes) -> bytes:
+    """A statement's or expression's cursor as a visit of its parent alone makes it.
+
+    A cursor of a statement or expression holds the declaration that encloses it
+    (``data[0]``), which libclang's visitor passes down from the nearest declaration it
+    visited: a visit of the whole subtree of a function gives every statement of the
+    body that function, a visit of one statement gives its children none. Cursors with
+    other ``data[0]`` are equal (``clang_equalCursors``) to different cursors, so the
+    bytes are made those of a visit of the parent alone: the parent's declaration when
+    it is one, else none."""
+    kind = int.from_bytes(raw[:4], sys.byteorder, signed=True)
+    if not _in_body(kind):
+        return raw
+    if _declares(int.from_bytes(parent[:4], sys.byteorder, signed=True)):
+        return raw  # the parent's declaration in both visits
+    return raw[:8] + _NONE + raw[16:]
+
+
+def _in_body(kind: int) -> bool:
+    found = _BODY.get(kind)
+    if found is None:
+        cursor_kind = _kind(kind)
+        found = _BODY[kind] = bool(cursor_kind.is_statement() or cursor_kind.is_expression())
+    return found
+
+
+def _declares(kind: int) -> bool:
+    found = _DECLARATION.get(kind)
+    if found is None:
+        found = _DECLARATION[kind] = bool(_kind(kind).is_declaration())
+    return found
+
+
 def root(tu: TranslationUnit) -> Node:
     """The translation unit's cursor as a ``Node``."""
     node = _Unit(tu).node(tu.cursor)
@@ -99,22 +145,22 @@ def root(tu: TranslationUnit) -> Node:
     return node
 
 
-class _File(File):  # type: ignore[misc]
+class _File(File):
     """A file whose name is asked once."""
 
-    @cached_property
-    def name(self) -> str:  # type: ignore[override]
-        return str(File.name.fget(self))  # type: ignore[attr-defined]
+    @cached
+    def name(self) -> str:
+        return str(File.name.fget(self))
 
 
-class _Place(SourceLocation):  # type: ignore[misc]
+class _Place(SourceLocation):
     """A source location whose file is the unit's one ``_File``."""
 
     _unit: _Unit
 
-    @cached_property
-    def file(self) -> _File | None:  # type: ignore[override]
-        return self._unit.file(SourceLocation.file.fget(self))  # type: ignore[attr-defined]
+    @cached
+    def file(self) -> _File | None:
+        return self._unit.file(SourceLocation.file.fget(self))
 
 
 def _place(location: SourceLocation, unit: _Unit) -> _Place:
@@ -123,21 +169,21 @@ def _place(location: SourceLocation, unit: _Unit) -> _Place:
     return place
 
 
-class _Span(SourceRange):  # type: ignore[misc]
+class _Span(SourceRange):
     """A source range whose ends are asked once."""
 
     _unit: _Unit
 
-    @cached_property
-    def start(self) -> _Place:  # type: ignore[override]
-        return _place(SourceRange.start.fget(self), self._unit)  # type: ignore[attr-defined]
+    @cached
+    def start(self) -> _Place:
+        return _place(SourceRange.start.fget(self), self._unit)
 
-    @cached_property
-    def end(self) -> _Place:  # type: ignore[override]
-        return _place(SourceRange.end.fget(self), self._unit)  # type: ignore[attr-defined]
+    @cached
+    def end(self) -> _Place:
+        return _place(SourceRange.end.fget(self), self._unit)
 
 
-class Node(Cursor):  # type: ignore[misc]
+class Node(Cursor):
     """A cursor of a translation unit that asks libclang each of its facts once."""
 
     _unit: _Unit
@@ -152,30 +198,65 @@ class Node(Cursor):  # type: ignore[misc]
 
     __hash__ = Cursor.__hash__  # clang_hashCursor: equal cursors hash alike
 
-    @cached_property
+    @cached
     def _identity(self) -> bytes:
         """The bytes ``clang_equalCursors`` compares: a declaration's are its own
         without ``data[1]`` (whether it came first in its group)."""
         raw = bytes(self)
-        kind = self._kind_id
-        declaration = _DECLARATION.get(kind)
-        if declaration is None:
-            declaration = _DECLARATION[kind] = bool(CursorKind.from_id(kind).is_declaration())
-        return raw[:_PARENT.start] + _NO_PARENT + raw[_PARENT.stop:] if declaration else raw
+        if _declares(self._kind_id):
+            return raw[:_PARENT.start] + _NONE + raw[_PARENT.stop:]
+        return raw
 
-    @cached_property
+    @cached
     def _children(self) -> list[Node]:
-        found: list[Cursor] = []
+        """The children, asked of libclang in one visit of the whole subtree (one
+        callback per descendant, not one visit per node) except at the unit's root,
+        whose subtrees are mostly headers nobody walks. The visit gives each cursor the
+        bytes a visit of its parent alone gives (``_alone``). A cursor met twice (the
+        same expression under two parents) keeps no list from it: its children are
+        asked on their own when wanted."""
+        if self._kind_id == _UNIT_KIND:
+            return self._visit_children()
+        own = bytes(self)
+        made = self._unit.made
+        lists: dict[bytes, list[Node]] = {own: []}
+        twice: set[bytes] = set()
+        alone = {own: own}  # the bytes of the visit -> those of a visit of the parent
+
+        def visit(child: Cursor, parent: Cursor, _data: object) -> int:
+            key = alone.get(bytes(parent))
+            if key is None:  # not met before its children: cannot happen in preorder
+                twice.add(own)
+                return 0  # CXChildVisit_Break
+            real = bytes(child)
+            raw = _alone(real, bytes(parent))
+            if raw in lists:
+                twice.add(raw)
+            else:
+                lists[raw] = []
+            if alone.setdefault(real, raw) != raw:
+                twice.update((raw, alone[real]))
+            lists[key].append(made(raw))
+            return 2  # CXChildVisit_Recurse
+
+        conf.lib.clang_visitChildren(self, _VISIT(visit), None)
+        if own in twice:
+            return self._visit_children()
+        for raw, children in lists.items():
+            if raw not in twice and raw != own:
+                made(raw).__dict__["_children"] = children
+        return lists[own]
+
+    def _visit_children(self) -> list[Node]:
+        found: list[bytes] = []
 
         def visit(child: Cursor, _parent: Cursor, _data: object) -> int:
-            found.append(child)
+            found.append(bytes(child))
             return 1  # CXChildVisit_Continue
 
         conf.lib.clang_visitChildren(self, _VISIT(visit), None)
-        node = self._unit.node
-        for child in found:
-            child._tu = self._tu
-        return [node(child) for child in found]  # type: ignore[misc]
+        made = self._unit.made
+        return [made(raw) for raw in found]
 
     def get_children(self) -> Iterator[Node]:
         return iter(self._children)
@@ -187,59 +268,59 @@ class Node(Cursor):  # type: ignore[misc]
             yield node
             stack.extend(reversed(node._children))
 
-    @cached_property
-    def kind(self) -> CursorKind:  # type: ignore[override]
-        return CursorKind.from_id(self._kind_id)
+    @cached
+    def kind(self) -> CursorKind:
+        return _kind(self._kind_id)  # set when the node is made
 
-    @cached_property
-    def spelling(self) -> str:  # type: ignore[override]
-        return Cursor.spelling.fget(self)  # type: ignore[attr-defined, no-any-return]
+    @cached
+    def spelling(self) -> str:
+        return Cursor.spelling.fget(self)
 
-    @cached_property
-    def location(self) -> _Place:  # type: ignore[override]
-        return _place(Cursor.location.fget(self), self._unit)  # type: ignore[attr-defined]
+    @cached
+    def location(self) -> _Place:
+        return _place(Cursor.location.fget(self), self._unit)
 
-    @cached_property
-    def extent(self) -> _Span:  # type: ignore[override]
-        span = _Span.from_buffer_copy(Cursor.extent.fget(self))  # type: ignore[attr-defined]
+    @cached
+    def extent(self) -> _Span:
+        span = _Span.from_buffer_copy(Cursor.extent.fget(self))
         span._unit = self._unit
         return span
 
-    @cached_property
-    def type(self):  # type: ignore[no-untyped-def, override]
-        return Cursor.type.fget(self)  # type: ignore[attr-defined]
+    @cached
+    def type(self):
+        return Cursor.type.fget(self)
 
-    @cached_property
-    def referenced(self) -> Node | None:  # type: ignore[override]
-        return self._unit.node(Cursor.referenced.fget(self))  # type: ignore[attr-defined]
+    @cached
+    def referenced(self) -> Node | None:
+        return self._unit.node(Cursor.referenced.fget(self))
 
-    @cached_property
-    def semantic_parent(self) -> Node | None:  # type: ignore[override]
-        return self._unit.node(Cursor.semantic_parent.fget(self))  # type: ignore[attr-defined]
+    @cached
+    def semantic_parent(self) -> Node | None:
+        return self._unit.node(Cursor.semantic_parent.fget(self))
 
-    @cached_property
-    def lexical_parent(self) -> Node | None:  # type: ignore[override]
-        return self._unit.node(Cursor.lexical_parent.fget(self))  # type: ignore[attr-defined]
+    @cached
+    def lexical_parent(self) -> Node | None:
+        return self._unit.node(Cursor.lexical_parent.fget(self))
 
-    @cached_property
-    def canonical(self) -> Node | None:  # type: ignore[override]
-        return self._unit.node(Cursor.canonical.fget(self))  # type: ignore[attr-defined]
+    @cached
+    def canonical(self) -> Node | None:
+        return self._unit.node(Cursor.canonical.fget(self))
 
-    @cached_property
+    @cached
     def _definition(self) -> Node | None:
         return self._unit.node(Cursor.get_definition(self))
 
     def get_definition(self) -> Node | None:
         return self._definition
 
-    @cached_property
+    @cached
     def _arguments(self) -> list[Node | None]:
         return [self._unit.node(arg) for arg in Cursor.get_arguments(self)]
 
     def get_arguments(self) -> Iterator[Node | None]:
         return iter(self._arguments)
 
-    @cached_property
+    @cached
     def _is_definition(self) -> bool:
         return bool(Cursor.is_definition(self))
 

@@ -10,6 +10,7 @@ the constructed object for a constructor.
 from __future__ import annotations
 
 import dataclasses
+import functools
 import itertools
 from collections.abc import Callable, Iterator
 
@@ -68,7 +69,7 @@ class CallFinder:
                  ros2: bool = False) -> None:
         self.tu = tu
         self.source = source
-        self.owned = owned
+        self.owned = functools.lru_cache(maxsize=None)(owned)  # asked for every cursor
         self.where = where
         self.reader = ConditionReader(source, where)
         self.macros: dict[str, str] = {}
