@@ -39,7 +39,12 @@ _VISIT = callbacks["cursor_visit"]
 Value = TypeVar("Value")
 _DECLARATION: dict[int, bool] = {}  # kind id -> clang_isDeclaration
 _KINDS: dict[int, CursorKind] = {}
-_UNIT_KIND = CursorKind.TRANSLATION_UNIT.value
+_WHOLE: dict[int, bool] = {}  # kind id -> its subtree is visited at once
+_BODIES = frozenset({
+    CursorKind.FUNCTION_DECL, CursorKind.CXX_METHOD, CursorKind.CONSTRUCTOR,
+    CursorKind.DESTRUCTOR, CursorKind.FUNCTION_TEMPLATE, CursorKind.CONVERSION_FUNCTION,
+    CursorKind.FIELD_DECL, CursorKind.VAR_DECL, CursorKind.PARM_DECL,
+})
 _BODY: dict[int, bool] = {}  # kind id -> a statement or expression
 _NONE = bytes(8)
 _PARENT = slice(16, 24)  # data[1] of a CXCursor: kind, xdata (4 bytes each), data[3]
@@ -131,6 +136,14 @@ def _in_body(kind: int) -> bool:
     return found
 
 
+def _whole(kind: int) -> bool:
+    """Whether a cursor of this kind is visited with its whole subtree."""
+    found = _WHOLE.get(kind)
+    if found is None:
+        found = _WHOLE[kind] = _in_body(kind) or _kind(kind) in _BODIES
+    return found
+
+
 def _declares(kind: int) -> bool:
     found = _DECLARATION.get(kind)
     if found is None:
@@ -210,12 +223,14 @@ class Node(Cursor):
     @cached
     def _children(self) -> list[Node]:
         """The children, asked of libclang in one visit of the whole subtree (one
-        callback per descendant, not one visit per node) except at the unit's root,
-        whose subtrees are mostly headers nobody walks. The visit gives each cursor the
+        callback per descendant, not one visit per node) for a function, a variable
+        or a statement, whose whole body the analyses walk; one level at a time for a
+        namespace or a class (and the unit), whose members are mostly in headers
+        nobody walks. The visit gives each cursor the
         bytes a visit of its parent alone gives (``_alone``). A cursor met twice (the
         same expression under two parents) keeps no list from it: its children are
         asked on their own when wanted."""
-        if self._kind_id == _UNIT_KIND:
+        if not _whole(self._kind_id):
             return self._visit_children()
         own = bytes(self)
         made = self._unit.made
