@@ -27,7 +27,8 @@ int walk(const int (&items)[3]) {
   int total = 0;
   for (int item : items) {
     auto add = [&total](int v) { total += v; return total; };
-    if (item > 1 && add(item)) { total = twice(total); } else { switch (item) { case 1: break; default: total--; } }
+    if (item > 1 && add(item)) { total = twice(total); }
+    else { switch (item) { case 1: break; default: total--; } }
   }
   Box box(total);
   while (total > 10) { total = pick(total, box.get()) - 1; }
