@@ -213,12 +213,13 @@ class Node(Cursor):
 
     @cached
     def _identity(self) -> bytes:
-        """The bytes ``clang_equalCursors`` compares: a declaration's are its own
-        without ``data[1]`` (whether it came first in its group)."""
+        """The bytes ``clang_equalCursors`` compares: the kind and ``data`` (not
+        ``xdata``), a declaration's without ``data[1]`` (whether it came first in its
+        group)."""
         raw = bytes(self)
         if _declares(self._kind_id):
-            return raw[:_PARENT.start] + _NONE + raw[_PARENT.stop:]
-        return raw
+            return raw[:4] + raw[8:_PARENT.start] + _NONE + raw[_PARENT.stop:]
+        return raw[:4] + raw[8:]
 
     @cached
     def _children(self) -> list[Node]:
