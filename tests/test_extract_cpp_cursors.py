@@ -119,6 +119,12 @@ def test_one_node_per_cursor_and_clang_equality():
     assert b_refs and all(ref == b_decl for ref in b_refs)
     assert all(Cursor.__eq__(ref, b_decl) for ref in b_refs)
     assert {hash(ref) for ref in b_refs} == {hash(b_decl)}
+    # any two nodes: equal exactly when libclang says so
+    sample = [*get.walk_preorder(), *(n.referenced for n in get.walk_preorder()
+                                      if n.referenced is not None)]
+    for one in sample:
+        for other in sample:
+            assert (one == other) == bool(Cursor.__eq__(one, other))
 
 
 def test_children_of_a_subtree_visit_equal_a_visit_of_each_node():
