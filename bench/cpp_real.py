@@ -2,22 +2,32 @@
 errors are left against our stand-in headers, for every package (or those named).
 
     .venv/bin/python bench/cpp_real.py WORKSPACE [--package P ...] [--node SUBSTRING]
-        [--errors] [--calls]
+        [--errors] [--calls] [--json FILE] [--jobs N] [--profile N]
 
 Runs the source stage of the pipeline (workspace scan, build files, C++ extraction; no
 cache, so every translation unit is parsed) and prints the number of C++ nodes, calls
 and CPP_PARSE_ERROR / CPP_MESSAGE_FIELD diagnostics. ``--node`` lists the calls of the
 nodes whose name contains SUBSTRING; ``--errors`` lists the clang errors grouped by their
 message; ``--calls`` writes every call as one ``node kind name type`` line (for a diff of
-two runs).
+two runs); ``--json FILE`` writes every C++ node's whole result (each call with all its
+fields, conditions and location, its ROS names, the diagnostics of its units) as JSON, to
+compare two checkouts exactly: run each checkout's copy of this script on the same tree
+and ``diff`` the files. ``--jobs N`` parses in N processes (default 1); ``--profile N``
+runs under cProfile (with one job) and prints the N costliest functions by own time and
+the CPU seconds in libclang's parse against the rest.
 """
 
 from __future__ import annotations
 
 import argparse
 import collections
+import cProfile
+import dataclasses
+import json
 import os
+import pstats
 import sys
+import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.dirname(HERE))
@@ -36,6 +46,9 @@ def main() -> None:
     parser.add_argument("--node", default=None)
     parser.add_argument("--errors", action="store_true")
     parser.add_argument("--calls", action="store_true")
+    parser.add_argument("--json", default=None)
+    parser.add_argument("--jobs", type=int, default=1)
+    parser.add_argument("--profile", type=int, default=0)
     args = parser.parse_args()
     workspace = scan([os.path.abspath(args.workspace)], dict(os.environ))
     nodes = []
@@ -44,7 +57,25 @@ def main() -> None:
         if package.build_type in ("catkin", "ament_cmake", "cmake"):
             package.nodes, _ = cmake.parse_package(package, workspace)
         nodes += [n for n in package.nodes if n.language == "cpp"]
-    found = extract_nodes(nodes, workspace, cache_dir=None)
+    spent = _time_stages() if args.jobs == 1 or args.profile else None
+    profile = cProfile.Profile(time.process_time) if args.profile else None
+    start = time.process_time()
+    if profile is not None:
+        profile.enable()
+    found = extract_nodes(nodes, workspace, cache_dir=None,
+                          jobs=1 if profile is not None else args.jobs)
+    if profile is not None:
+        profile.disable()
+    total = time.process_time() - start
+    print(f"extraction CPU {total:.2f} s (this process)")
+    if spent is not None:
+        print(f"  libclang parse {spent['parse']:.2f} s, walk (CallFinder.run) "
+              f"{spent['walk']:.2f} s, the rest {total - spent['parse'] - spent['walk']:.2f} s;"
+              f" walk / parse {spent['walk'] / max(spent['parse'], 1e-9):.2f}")
+    if profile is not None:
+        _profile_report(profile, args.profile)
+    if args.json is not None:
+        _dump(args.json, nodes, found, workspace.root)
     errors = [d for d in found if d.code in ERRORS]
     calls = [(n.name, c) for n in nodes for c in n.calls]
     print(f"C++ nodes {len(nodes)}  calls {len(calls)}  clang errors {len(errors)} "
@@ -62,6 +93,74 @@ def main() -> None:
     if args.calls:
         for name, call in sorted(calls, key=lambda nc: (nc[0], nc[1].kind, nc[1].name)):
             print(f"CALL {name} {call.kind} {call.name} {call.type}")
+
+
+def _time_stages() -> dict[str, float]:
+    """CPU seconds in libclang's parse and in the walk of the parsed units (the call
+    finder's ``run``), measured by wrapping the two (one process: ``--jobs 1``)."""
+    from clang.cindex import Index
+
+    from haros_arch.extract.cpp import visitor
+
+    spent = {"parse": 0.0, "walk": 0.0}
+
+    def timed(owner: type, name: str, stage: str) -> None:
+        inner = getattr(owner, name)
+
+        def wrapper(*args: object, **kwargs: object) -> object:
+            begin = time.process_time()
+            try:
+                return inner(*args, **kwargs)
+            finally:
+                spent[stage] += time.process_time() - begin
+
+        setattr(owner, name, wrapper)
+
+    timed(Index, "parse", "parse")
+    timed(visitor.CallFinder, "run", "walk")
+    return spent
+
+
+def _dump(path: str, nodes: list, found: list, root: str) -> None:
+    """Every C++ node's calls (all fields), names and the diagnostics of the run, sorted,
+    paths relative to the workspace: the same extraction gives the same file."""
+    def plain(value: object) -> object:
+        if dataclasses.is_dataclass(value) and not isinstance(value, type):
+            return {f.name: plain(getattr(value, f.name)) for f in dataclasses.fields(value)}
+        if isinstance(value, (list, tuple)):
+            return [plain(v) for v in value]
+        if isinstance(value, dict):
+            return {str(k): plain(v) for k, v in value.items()}
+        if isinstance(value, str):
+            return value.replace(root, "$WS")
+        return value
+
+    document = {
+        "nodes": [{"package": n.package, "name": n.name,
+                   "sources": sorted(str(s) for s in n.sources), "rosname": n.rosname,
+                   "rosnames": plain(getattr(n, "rosnames", None)),
+                   "calls": [plain(c) for c in n.calls]}
+                  for n in sorted(nodes, key=lambda n: (n.package, n.name))],
+        "diagnostics": sorted(json.dumps(plain(d), sort_keys=True) for d in found),
+    }
+    with open(path, "w", encoding="utf-8") as handle:
+        json.dump(document, handle, indent=1, sort_keys=True, default=str)
+    print(f"wrote {path}: {sum(len(n['calls']) for n in document['nodes'])} calls, "
+          f"{len(document['diagnostics'])} diagnostics")
+
+
+def _profile_report(profile: cProfile.Profile, count: int) -> None:
+    """The N costliest functions by own time, and libclang's parse against the rest."""
+    stats = pstats.Stats(profile)
+    total = parse = 0.0
+    for (filename, _, name), (_, _, own, cumulative, _) in stats.stats.items():  # type: ignore[attr-defined]
+        total += own
+        if name == "from_source" and filename.endswith("cindex.py"):
+            parse += cumulative
+    print(f"profile: {total:.1f} s in all, libclang parse (TranslationUnit.from_source) "
+          f"{parse:.1f} s, the rest {total - parse:.1f} s ({(total - parse) / parse:.2f}x "
+          f"the parse)" if parse else f"profile: {total:.1f} s, no parse seen")
+    stats.sort_stats("tottime").print_stats(count)
 
 
 if __name__ == "__main__":

@@ -88,15 +88,28 @@ class Scope:
         self.sites = sites
         self.macros = macros
         self.source = source
-        # variable key -> the expressions written to it; None for an unknown write
-        self.writes: dict[tuple[str, int], list[Cursor | None]] = {}
-        # variable key -> (call, argument index) of the last call it was passed to by
-        # reference: a parameter read writes its value this way
-        self.passed: dict[tuple[str, int], tuple[Cursor, int]] = {}
-        if body is not None:
-            self._collect(body)
+        # read from the body when a value is first asked (most functions hold no ROS
+        # call, and nothing asks their values)
+        self._writes: dict[tuple[str, int], list[Cursor | None]] | None = None
+        self._passed: dict[tuple[str, int], tuple[Cursor, int]] = {}
 
     # -- writes -----------------------------------------------------------------------
+
+    @property
+    def writes(self) -> dict[tuple[str, int], list[Cursor | None]]:
+        """Variable key -> the expressions written to it; None for an unknown write."""
+        if self._writes is None:
+            self._writes = {}
+            if self.body is not None:
+                self._collect(self.body)
+        return self._writes
+
+    @property
+    def passed(self) -> dict[tuple[str, int], tuple[Cursor, int]]:
+        """Variable key -> (call, argument index) of the last call it was passed to by
+        reference: a parameter read writes its value this way."""
+        _ = self.writes  # both are read from the body together
+        return self._passed
 
     def _collect(self, body: Cursor) -> None:
         for node in _walk(body):

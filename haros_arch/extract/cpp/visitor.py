@@ -10,6 +10,7 @@ the constructed object for a constructor.
 from __future__ import annotations
 
 import dataclasses
+import functools
 import itertools
 from collections.abc import Callable, Iterator
 
@@ -25,6 +26,7 @@ from .call_sites import CallSites
 from .call_types import CallTypes, factory_made
 from .call_types import callee as callee_of_call
 from .conditions import ConditionReader
+from .cursors import root
 from .handles import (
     Namespaces,
     callback,
@@ -77,7 +79,7 @@ class CallFinder:
                  ros2: bool = False) -> None:
         self.tu = tu
         self.source = source
-        self.owned = owned
+        self.owned = functools.lru_cache(maxsize=None)(owned)  # asked for every cursor
         self.where = where
         self.reader = ConditionReader(source, where)
         self.macros: dict[str, str] = {}
@@ -113,7 +115,7 @@ class CallFinder:
         self._stored: list[tuple[PrimitiveCall, Cursor]] = []
 
     def run(self) -> None:
-        self.functions = list(self._definitions(self.tu.cursor, top=True))
+        self.functions = list(self._definitions(root(self.tu), top=True))
         self.sites = self.namespaces.sites = CallSites(self.functions, self.macros, self.source,
                                                        external=True)
         self.wrappers.build()

@@ -1,0 +1,344 @@
+"""Cursors that remember what libclang told them: one walk of the syntax tree per unit.
+
+Every analysis of a translation unit (values, wrappers, call sites, conditions, the
+visitor) walks the same function bodies, and each step of libclang's Python binding is a
+call through ctypes: ``get_children`` calls back into Python for every child and makes
+a new cursor object each time, so what the binding caches on a cursor (its location,
+extent, spelling, ...) is lost at the next walk. ``root(tu)`` gives the unit's cursor as
+a ``Node``: a ``Cursor`` of the same bytes that keeps its children, kind, location,
+extent, spelling and the cursors it refers to, each asked of libclang once. Every
+cursor reached from it (children, ``referenced``, parents, definitions, arguments) is
+the one ``Node`` of those bytes in the unit, so later walks run over Python lists.
+
+Nothing here changes an answer: a ``Node`` is the cursor libclang gave, its cached
+facts are those libclang returns for it (a parsed unit never changes), and two nodes
+are equal exactly when ``clang_equalCursors`` says so.
+"""
+
+from __future__ import annotations
+
+import ctypes
+import sys
+from collections.abc import Iterator
+from typing import Any, Generic, TypeVar
+
+from clang.cindex import (
+    Cursor,
+    CursorKind,
+    File,
+    SourceLocation,
+    SourceRange,
+    TranslationUnit,
+    callbacks,
+    conf,
+)
+
+__all__ = ["Node", "root"]
+
+_VISIT = callbacks["cursor_visit"]
+Value = TypeVar("Value")
+_DECLARATION: dict[int, bool] = {}  # kind id -> clang_isDeclaration
+_KINDS: dict[int, CursorKind] = {}
+_WHOLE: dict[int, bool] = {}  # kind id -> its subtree is visited at once
+_BODIES = frozenset({
+    CursorKind.FUNCTION_DECL, CursorKind.CXX_METHOD, CursorKind.CONSTRUCTOR,
+    CursorKind.DESTRUCTOR, CursorKind.FUNCTION_TEMPLATE, CursorKind.CONVERSION_FUNCTION,
+    CursorKind.FIELD_DECL, CursorKind.VAR_DECL, CursorKind.PARM_DECL,
+})
+_BODY: dict[int, bool] = {}  # kind id -> a statement or expression
+_NONE = bytes(8)
+_PARENT = slice(16, 24)  # data[1] of a CXCursor: kind, xdata (4 bytes each), data[3]
+
+
+class cached(Generic[Value]):
+    """An attribute computed on first use and then kept in the instance's ``__dict__``
+    (``functools.cached_property`` takes a lock on every first use, a third of the cost
+    of a node)."""
+
+    def __init__(self, compute: Any) -> None:
+        self.compute = compute
+        self.name = compute.__name__
+
+    def __set_name__(self, owner: type, name: str) -> None:
+        self.name = name
+
+    def __get__(self, instance: Any, owner: type | None = None) -> Value:
+        if instance is None:
+            return self  # type: ignore[return-value]
+        value: Value = self.compute(instance)
+        instance.__dict__[self.name] = value
+        return value
+
+
+class _Unit:
+    """The nodes of one translation unit by their bytes, and its files by handle."""
+
+    def __init__(self, tu: TranslationUnit) -> None:
+        self.tu = tu
+        self.nodes: dict[bytes, Node] = {}
+        self.files: dict[int | None, _File] = {}
+
+    def node(self, cursor: Cursor | None) -> Node | None:
+        return None if cursor is None else self.made(bytes(cursor))
+
+    def made(self, raw: bytes) -> Node:
+        """The one node of the cursor whose bytes are ``raw``."""
+        found = self.nodes.get(raw)
+        if found is None:
+            found = Node.from_buffer_copy(raw)
+            found._tu = self.tu
+            found._unit = self
+            found.kind = _kind(found._kind_id)
+            self.nodes[raw] = found
+        return found
+
+    def file(self, handle: File | None) -> _File | None:
+        if handle is None:
+            return None
+        key = ctypes.cast(handle.obj, ctypes.c_void_p).value
+        found = self.files.get(key)
+        if found is None:
+            found = self.files[key] = _File(handle.obj)
+            found._tu = self.tu
+        return found
+
+
+def _kind(kind_id: int) -> CursorKind:
+    found = _KINDS.get(kind_id)
+    if found is None:
+        found = _KINDS[kind_id] = CursorKind.from_id(kind_id)
+    return found
+
+
+def _alone(raw: bytes, parent: bytes) -> bytes:
+    """A statement's or expression's cursor as a visit of its parent alone makes it.
+
+    A cursor of a statement or expression holds the declaration that encloses it
+    (``data[0]``), which libclang's visitor passes down from the nearest declaration it
+    visited: a visit of the whole subtree of a function gives every statement of the
+    body that function, a visit of one statement gives its children none. Cursors with
+    other ``data[0]`` are equal (``clang_equalCursors``) to different cursors, so the
+    bytes are made those of a visit of the parent alone: the parent's declaration when
+    it is one, else none."""
+    kind = int.from_bytes(raw[:4], sys.byteorder, signed=True)
+    if not _in_body(kind):
+        return raw
+    if _declares(int.from_bytes(parent[:4], sys.byteorder, signed=True)):
+        return raw  # the parent's declaration in both visits
+    return raw[:8] + _NONE + raw[16:]
+
+
+def _in_body(kind: int) -> bool:
+    found = _BODY.get(kind)
+    if found is None:
+        cursor_kind = _kind(kind)
+        found = _BODY[kind] = bool(cursor_kind.is_statement() or cursor_kind.is_expression())
+    return found
+
+
+def _whole(kind: int) -> bool:
+    """Whether a cursor of this kind is visited with its whole subtree."""
+    found = _WHOLE.get(kind)
+    if found is None:
+        found = _WHOLE[kind] = _in_body(kind) or _kind(kind) in _BODIES
+    return found
+
+
+def _declares(kind: int) -> bool:
+    found = _DECLARATION.get(kind)
+    if found is None:
+        found = _DECLARATION[kind] = bool(_kind(kind).is_declaration())
+    return found
+
+
+def root(tu: TranslationUnit) -> Node:
+    """The translation unit's cursor as a ``Node``."""
+    node = _Unit(tu).node(tu.cursor)
+    assert node is not None
+    return node
+
+
+class _File(File):
+    """A file whose name is asked once."""
+
+    @cached
+    def name(self) -> str:
+        return str(File.name.fget(self))
+
+
+class _Place(SourceLocation):
+    """A source location whose file is the unit's one ``_File``."""
+
+    _unit: _Unit
+
+    @cached
+    def file(self) -> _File | None:
+        return self._unit.file(SourceLocation.file.fget(self))
+
+
+def _place(location: SourceLocation, unit: _Unit) -> _Place:
+    place = _Place.from_buffer_copy(location)
+    place._unit = unit
+    return place
+
+
+class _Span(SourceRange):
+    """A source range whose ends are asked once."""
+
+    _unit: _Unit
+
+    @cached
+    def start(self) -> _Place:
+        return _place(SourceRange.start.fget(self), self._unit)
+
+    @cached
+    def end(self) -> _Place:
+        return _place(SourceRange.end.fget(self), self._unit)
+
+
+class Node(Cursor):
+    """A cursor of a translation unit that asks libclang each of its facts once."""
+
+    _unit: _Unit
+
+    def __eq__(self, other: object) -> bool:
+        if type(other) is Node:
+            return self._identity == other._identity
+        return bool(Cursor.__eq__(self, other))
+
+    def __ne__(self, other: object) -> bool:
+        return not self.__eq__(other)
+
+    __hash__ = Cursor.__hash__  # clang_hashCursor: equal cursors hash alike
+
+    @cached
+    def _identity(self) -> bytes:
+        """The bytes ``clang_equalCursors`` compares: the kind and ``data`` (not
+        ``xdata``), a declaration's without ``data[1]`` (whether it came first in its
+        group)."""
+        raw = bytes(self)
+        if _declares(self._kind_id):
+            return raw[:4] + raw[8:_PARENT.start] + _NONE + raw[_PARENT.stop:]
+        return raw[:4] + raw[8:]
+
+    @cached
+    def _children(self) -> list[Node]:
+        """The children, asked of libclang in one visit of the whole subtree (one
+        callback per descendant, not one visit per node) for a function, a variable
+        or a statement, whose whole body the analyses walk; one level at a time for a
+        namespace or a class (and the unit), whose members are mostly in headers
+        nobody walks. The visit gives each cursor the
+        bytes a visit of its parent alone gives (``_alone``). A cursor met twice (the
+        same expression under two parents) keeps no list from it: its children are
+        asked on their own when wanted."""
+        if not _whole(self._kind_id):
+            return self._visit_children()
+        own = bytes(self)
+        made = self._unit.made
+        lists: dict[bytes, list[Node]] = {own: []}
+        twice: set[bytes] = set()
+        alone = {own: own}  # the bytes of the visit -> those of a visit of the parent
+
+        def visit(child: Cursor, parent: Cursor, _data: object) -> int:
+            key = alone.get(bytes(parent))
+            if key is None:  # not met before its children: cannot happen in preorder
+                twice.add(own)
+                return 0  # CXChildVisit_Break
+            real = bytes(child)
+            raw = _alone(real, bytes(parent))
+            if raw in lists:
+                twice.add(raw)
+            else:
+                lists[raw] = []
+            if alone.setdefault(real, raw) != raw:
+                twice.update((raw, alone[real]))
+            lists[key].append(made(raw))
+            return 2  # CXChildVisit_Recurse
+
+        conf.lib.clang_visitChildren(self, _VISIT(visit), None)
+        if own in twice:
+            return self._visit_children()
+        for raw, children in lists.items():
+            if raw not in twice and raw != own:
+                made(raw).__dict__["_children"] = children
+        return lists[own]
+
+    def _visit_children(self) -> list[Node]:
+        found: list[bytes] = []
+
+        def visit(child: Cursor, _parent: Cursor, _data: object) -> int:
+            found.append(bytes(child))
+            return 1  # CXChildVisit_Continue
+
+        conf.lib.clang_visitChildren(self, _VISIT(visit), None)
+        made = self._unit.made
+        return [made(raw) for raw in found]
+
+    def get_children(self) -> Iterator[Node]:
+        return iter(self._children)
+
+    def walk_preorder(self) -> Iterator[Node]:
+        stack = [self]
+        while stack:
+            node = stack.pop()
+            yield node
+            stack.extend(reversed(node._children))
+
+    @cached
+    def kind(self) -> CursorKind:
+        return _kind(self._kind_id)  # set when the node is made
+
+    @cached
+    def spelling(self) -> str:
+        return Cursor.spelling.fget(self)
+
+    @cached
+    def location(self) -> _Place:
+        return _place(Cursor.location.fget(self), self._unit)
+
+    @cached
+    def extent(self) -> _Span:
+        span = _Span.from_buffer_copy(Cursor.extent.fget(self))
+        span._unit = self._unit
+        return span
+
+    @cached
+    def type(self):
+        return Cursor.type.fget(self)
+
+    @cached
+    def referenced(self) -> Node | None:
+        return self._unit.node(Cursor.referenced.fget(self))
+
+    @cached
+    def semantic_parent(self) -> Node | None:
+        return self._unit.node(Cursor.semantic_parent.fget(self))
+
+    @cached
+    def lexical_parent(self) -> Node | None:
+        return self._unit.node(Cursor.lexical_parent.fget(self))
+
+    @cached
+    def canonical(self) -> Node | None:
+        return self._unit.node(Cursor.canonical.fget(self))
+
+    @cached
+    def _definition(self) -> Node | None:
+        return self._unit.node(Cursor.get_definition(self))
+
+    def get_definition(self) -> Node | None:
+        return self._definition
+
+    @cached
+    def _arguments(self) -> list[Node | None]:
+        return [self._unit.node(arg) for arg in Cursor.get_arguments(self)]
+
+    def get_arguments(self) -> Iterator[Node | None]:
+        return iter(self._arguments)
+
+    @cached
+    def _is_definition(self) -> bool:
+        return bool(Cursor.is_definition(self))
+
+    def is_definition(self) -> bool:
+        return self._is_definition
