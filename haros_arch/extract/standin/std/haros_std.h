@@ -71,6 +71,15 @@ template<class B, class D> struct is_base_of : integral_constant<bool, __is_base
 template<class...> using void_t = void;
 template<class T> struct is_pointer : false_type {};
 template<class T> struct is_pointer<T*> : true_type {};
+template<class T> struct is_null_pointer : is_same<decltype(nullptr), typename remove_const<T>::type> {};
+template<class T> constexpr bool is_null_pointer_v = is_null_pointer<T>::value;
+template<class A, class B> constexpr bool is_same_v = is_same<A, B>::value;
+template<class B, class D> constexpr bool is_base_of_v = __is_base_of(B, D);
+template<class T> constexpr bool is_pointer_v = is_pointer<T>::value;
+template<class T> constexpr bool is_arithmetic_v = __is_arithmetic(T);
+template<class T> constexpr bool is_integral_v = __is_integral(T);
+template<class T> constexpr bool is_floating_point_v = __is_floating_point(T);
+template<class T> constexpr bool is_enum_v = __is_enum(T);
 template<class T> struct is_enum : integral_constant<bool, __is_enum(T)> {};
 template<class T> struct underlying_type { typedef __underlying_type(T) type; };
 template<class T> using underlying_type_t = typename underlying_type<T>::type;
