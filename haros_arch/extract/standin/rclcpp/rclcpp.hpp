@@ -549,7 +549,6 @@ public:
   Node(const std::string& node_name, const std::string& namespace_,
        const NodeOptions& options = NodeOptions());
   virtual ~Node();
-  template<class... A> static SharedPtr make_shared(A&&... args);
   HAROS_RCLCPP_NODE_API(Node)
   Node::SharedPtr create_sub_node(const std::string& sub_namespace);
 };
