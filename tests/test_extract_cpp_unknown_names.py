@@ -308,3 +308,23 @@ def test_field_types_are_declared_on_the_record() -> None:
     assert names.learn([("no type named '_code_type' in 'status_msgs::msg::Status'", None, 0)])
     assert ("#define HAROS_FIELDS_status_msgs__msg__Status typedef haros_any _code_type;"
             in names.header())
+
+
+def test_nested_types_of_declared_templates_and_standard_library_gaps() -> None:
+    # Cloud<Point>::ConstPtr of a vendor template that is nowhere (pcl's, in Autoware's
+    # PlannerData), std::conjunction_v, std::lower_bound, std::exception_ptr
+    result = extract("nested_type.cpp")
+    assert rows(result) == [("declare", "horizon", "double", 32),
+                            ("publish", "plan", "std_msgs/msg/String", 33)]
+    assert [c for c in codes(result) if c in (
+        "CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL", "CPP_CALL_MISSED")] == []
+
+
+def test_a_nested_type_of_a_declared_class_is_declared_in_it() -> None:
+    names = synthesis.Names()
+    text = b"vendor::Cloud<int>::ConstPtr p;\n"
+    names.learn([("use of undeclared identifier 'vendor'", text, 0)])
+    assert names.learn([("no type named 'ConstPtr' in 'vendor::Cloud<int>'", text, 0)])
+    header = names.header()
+    assert "template <class... T> struct Cloud : haros_any {" in header
+    assert "struct ConstPtr : haros_any {" in header

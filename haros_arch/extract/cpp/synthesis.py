@@ -60,8 +60,8 @@ _MESSAGES: tuple[tuple[re.Pattern[str], str], ...] = (
 )
 _MEMBER = re.compile(
     r"^no member named '(\w+)' in '(?:const )?(?:(?:struct|class) )?([\w:]+)(<.*>)?'")
-_MEMBER_TYPE = re.compile(  # ``Msg::_code_type``, the field types messages define
-    r"^no type named '(\w+)' in '(?:const )?(?:(?:struct|class) )?([\w:]+)'")
+_MEMBER_TYPE = re.compile(  # ``Msg::_code_type``; ``Synthesised<T>::ConstPtr``
+    r"^no type named '(\w+)' in '(?:const )?(?:(?:struct|class) )?([\w:]+)(<.*>)?'")
 _AMBIGUOUS = re.compile(r"^reference to '(\w+)' is ambiguous")
 _RECORD = re.compile(r"[a-z]\w*(?:::\w+)+")  # a message's struct: ``pkg::msg::Name``
 _USING = re.compile(rb"\busing\s+namespace\s+(?:::)?([A-Za-z_][\w:]*)\s*;")
@@ -143,7 +143,12 @@ class Names:
         member_type = _MEMBER_TYPE.match(message)
         if member_type is not None and "namespace" not in message:
             name, record = member_type.group(1), member_type.group(2)
-            if self._message(record) and name not in self.types.get(record, ()):
+            if self._synthesised(record) and record != "haros_any":
+                node = self._node(record)
+                if name not in node.children:
+                    node.children[name] = _Name(uses={"type"})
+                    self.count += 1
+            elif self._message(record) and name not in self.types.get(record, ()):
                 self.types.setdefault(record, set()).add(name)
                 self.count += 1
             return
@@ -211,6 +216,12 @@ class Names:
         if not rest or rest[:1] in b"(){},>&*" or _IDENT.match(rest):
             return "type"
         return "value"
+
+    def _node(self, qualified: str) -> _Name:
+        node = self.root
+        for part in qualified.split("::"):
+            node = node.children[part]
+        return node
 
     def _synthesised(self, qualified: str) -> bool:
         if qualified == "haros_any":
