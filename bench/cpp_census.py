@@ -37,6 +37,7 @@ sys.path.insert(0, os.path.dirname(HERE))
 from haros_arch import cmake  # noqa: E402
 from haros_arch.extract import completeness  # noqa: E402
 from haros_arch.extract.cpp import extract_cpp_nodes  # noqa: E402
+from haros_arch.manifest import ros_version  # noqa: E402
 from haros_arch.workspace import scan  # noqa: E402
 
 # (category, form, pattern); a category matches calls of these kinds
@@ -71,6 +72,10 @@ SITES: list[tuple[str, str, re.Pattern[str]]] = [
         ("param", "getParam", r"\bgetParam(Cached)?\s*\("),
         ("param", "setParam", r"\bsetParam\s*\("),
     )]
+# roscpp's forms: in a ROS 2 package a ``getParam()`` / ``setParam(p)`` is a method of the
+# package's own classes (Autoware's smoothers), not a ROS API call
+ROS1_FORMS = frozenset({"advertiseService", "serviceClient", "actionlib server",
+                        "actionlib client", "param", "getParam", "setParam"})
 _COMMENT = re.compile(r"//.*$")
 _DEFINITION = re.compile(r"^\s*(virtual\s+|static\s+|inline\s+)*[\w:<>,\s*&]+\s+\w+::"
                          r"(create_publisher|declare_parameter|get_parameter)\w*\s*\(")
@@ -79,8 +84,9 @@ _QUOTED = re.compile(r"'[^']*'")
 _SPAN = re.compile(r"\(lines (\d+)-(\d+)\)")
 
 
-def sites(path: str) -> list[tuple[int, str, str]]:
-    """(line, category, form) of the API call sites grep finds in one source file."""
+def sites(path: str, ros2: bool = False) -> list[tuple[int, str, str]]:
+    """(line, category, form) of the API call sites grep finds in one source file (of a
+    ROS 2 package: roscpp's forms left out)."""
     try:
         with open(path, encoding="utf-8", errors="replace") as handle:
             lines = handle.read().splitlines()
@@ -99,6 +105,8 @@ def sites(path: str) -> list[tuple[int, str, str]]:
         if _DEFINITION.match(code):
             continue
         for category, form, pattern in SITES:
+            if ros2 and form in ROS1_FORMS:
+                continue
             if pattern.search(code):
                 found.append((number, category, form))
                 break
@@ -111,13 +119,17 @@ def census(spec: str, jobs: int, timing: bool) -> None:
     workspace = scan([root], dict(os.environ))
     names = only.split(",") if only else sorted(workspace.packages)
     nodes = []
+    ros2_units: set[str] = set()
     for name in names:
         package = workspace.packages.get(name)
         if package is None:
             continue
         if package.build_type in ("catkin", "ament_cmake", "cmake"):
             package.nodes, _ = cmake.parse_package(package, workspace)
-        nodes += [n for n in package.nodes if n.language == "cpp" and n.sources]
+        mine = [n for n in package.nodes if n.language == "cpp" and n.sources]
+        nodes += mine
+        if ros_version(package) == 2:
+            ros2_units.update(os.path.join(workspace.root, s) for n in mine for s in n.sources)
     units = sorted({os.path.join(workspace.root, s) for n in nodes for s in n.sources
                     if "/test/" not in f"/{s}" and "/tests/" not in f"/{s}"})
     baseline = None
@@ -167,7 +179,7 @@ def census(spec: str, jobs: int, timing: bool) -> None:
         rel = workspace.relpath(unit)
         unit_errors = errors.get(rel, [])
         here = calls.get(rel, {})
-        for line, category, form in sites(unit):
+        for line, category, form in sites(unit, unit in ros2_units):
             near = set().union(*(here.get(n, set()) for n in range(line - 3, line + 2)))
             ok = bool(near & KINDS[category])
             per_kind[category][0] += ok

@@ -279,3 +279,14 @@ def test_a_message_of_a_package_our_stand_ins_shadow_is_synthesised(tmp_path) ->
     assert [d.message for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"] == []
     assert [(c.kind, c.name, c.type) for c in result.calls] == [
         ("publish", "/tf", "tf/tfMessage")]
+
+
+@pytest.mark.parametrize("std", [None, "c++14", "c++17"])
+def test_the_stand_in_prelude_precompiles(std: str | None) -> None:
+    # an error anywhere in the stand-ins leaves every unit without the precompiled
+    # prelude, and the names it gave to code that reaches rclcpp only through a missing
+    # header are gone (a node class derived from an undeclared rclcpp::Node)
+    from haros_arch.extract.cpp import headers, toolchain
+
+    headers._PCH.clear()
+    assert headers.precompiled_prelude(toolchain.base_arguments(False, std)) is not None

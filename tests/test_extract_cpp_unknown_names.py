@@ -287,3 +287,44 @@ def test_a_name_that_made_a_use_ambiguous_is_withdrawn() -> None:
     # once the real typedef is valid, the declared name makes every use ambiguous
     assert names.learn([("reference to 'VerticeMap' is ambiguous", text, 0)])
     assert "VerticeMap" not in names.header()
+
+
+def test_service_wrappers_of_rclcpp_qos_overloads_keep_the_class_valid() -> None:
+    # rclcpp's QoS overloads of create_service / create_client, make_shared of
+    # RCLCPP_SMART_PTR_DEFINITIONS, std::is_null_pointer_v and a message's field type
+    # (Autoware's component interface wrappers use each of them)
+    result = extract("service_wrapper.cpp")
+    assert rows(result) == [
+        ("server", "reset", "std_srvs/srv/Trigger", 46),
+        ("client", "engage", "std_srvs/srv/Trigger", 48),
+        ("publish", "status", "status_msgs/msg/Status", 49),
+    ]
+    assert [c for c in codes(result) if c in (
+        "CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL", "CPP_CALL_MISSED")] == []
+
+
+def test_field_types_are_declared_on_the_record() -> None:
+    names = synthesis.Names(["status_msgs"])
+    assert names.learn([("no type named '_code_type' in 'status_msgs::msg::Status'", None, 0)])
+    assert ("#define HAROS_FIELDS_status_msgs__msg__Status typedef haros_any _code_type;"
+            in names.header())
+
+
+def test_nested_types_of_declared_templates_and_standard_library_gaps() -> None:
+    # Cloud<Point>::ConstPtr of a vendor template that is nowhere (pcl's, in Autoware's
+    # PlannerData), std::conjunction_v, std::lower_bound, std::exception_ptr
+    result = extract("nested_type.cpp")
+    assert rows(result) == [("declare", "horizon", "double", 32),
+                            ("publish", "plan", "std_msgs/msg/String", 33)]
+    assert [c for c in codes(result) if c in (
+        "CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL", "CPP_CALL_MISSED")] == []
+
+
+def test_a_nested_type_of_a_declared_class_is_declared_in_it() -> None:
+    names = synthesis.Names()
+    text = b"vendor::Cloud<int>::ConstPtr p;\n"
+    names.learn([("use of undeclared identifier 'vendor'", text, 0)])
+    assert names.learn([("no type named 'ConstPtr' in 'vendor::Cloud<int>'", text, 0)])
+    header = names.header()
+    assert "template <class... T> struct Cloud : haros_any {" in header
+    assert "struct ConstPtr : haros_any {" in header

@@ -305,12 +305,16 @@ def _translation_unit(path: str, text: str, ros2: bool,
     data = text.encode("utf-8")
     source = SourceCache(workspace.root, {path: data})
 
+    known: dict[str, bool] = {}  # clang names the same few files for every error
+
     def owned(name: str) -> bool:
-        name = os.path.abspath(name)
-        if name == path:
-            return True
-        return name.startswith(workspace.root + os.sep) and not name.startswith(
-            (setup.generated + os.sep, STANDIN + os.sep))
+        found = known.get(name)
+        if found is None:
+            full = os.path.abspath(name)
+            found = known[name] = full == path or (
+                full.startswith(workspace.root + os.sep) and not full.startswith(
+                    (setup.generated + os.sep, STANDIN + os.sep)))
+        return found
 
     def where(cursor: Cursor) -> Location:
         loc = cursor.location
@@ -462,12 +466,15 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
         return [d for d in _errors(unit)
                 if d.location.file is not None and owned(d.location.file.name)]
 
-    before = len(mine(tu))
-    names = synthesis.Names(_fieldless_packages(setup.diagnostics))
-    header = os.path.join(setup.generated, synthesis.HEADER_NAME)
+    first = mine(tu)
+    before = len(first)
     fieldless = _fieldless_packages(setup.diagnostics)
-    if synthesis.MAX_ROUNDS < 1 or not _can_hide(tu, mine(tu), source, fieldless) or (
-        not names.learn(_located(mine(tu), source))
+    names = synthesis.Names(fieldless)
+    header = os.path.join(setup.generated, synthesis.HEADER_NAME)
+    # the functions of each file, by line (the same text in every parse of the unit)
+    functions: dict[str, list[recall.Function]] = {}
+    if synthesis.MAX_ROUNDS < 1 or not _can_hide(tu, first, source, fieldless, functions) or (
+        not names.learn(_located(first, source))
     ):
         return tu  # nothing to declare, or no error where it could cost a call
     # Errors come in waves: a class made valid shows its other members. With more than
@@ -490,7 +497,7 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
         if len(_errors(again)) < len(_errors(best)):
             best = again
         left = mine(again)
-        if not _can_hide(again, left, source, fieldless) or not names.learn(
+        if not _can_hide(again, left, source, fieldless, functions) or not names.learn(
             _located(left, source)
         ):
             break
@@ -504,18 +511,23 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
 
 
 def _can_hide(tu: TranslationUnit, errors: list[ClangDiagnostic],
-              source: SourceCache, fieldless: set[str]) -> bool:
+              source: SourceCache, fieldless: set[str],
+              functions: dict[str, list[recall.Function]]) -> bool:
     """Whether any of ``errors`` can cost a call (``recall``): one outside every function
     the unit defines (a declaration: it may make a class invalid, and every call in its
     methods with it), or one inside a function whose text calls the ROS API. Errors
     only inside functions that make no ROS call, and those on fields of messages known
     only by name (clang reads on past them), are left as they are: declaring the names
-    they miss would cost a parse and change no call."""
+    they miss would cost a parse and change no call. ``functions`` holds the functions
+    of the files already read (a function's lines are the same in every parse of the
+    unit: each file is walked once, not once per parse)."""
     errors = [e for e in errors if not _names_fieldless_type(e.spelling, fieldless)]
     if not errors:
         return False
-    files = {os.path.abspath(e.location.file.name) for e in errors}
-    functions = recall.definitions(tu, files)
+    files = {os.path.abspath(e.location.file.name) for e in errors} - functions.keys()
+    if files:
+        found = recall.definitions(tu, files)
+        functions.update({name: found.get(name, []) for name in files})
     sites: dict[str, list[recall.Site]] = {}
     for error in errors:
         name = os.path.abspath(error.location.file.name)

@@ -60,6 +60,8 @@ _MESSAGES: tuple[tuple[re.Pattern[str], str], ...] = (
 )
 _MEMBER = re.compile(
     r"^no member named '(\w+)' in '(?:const )?(?:(?:struct|class) )?([\w:]+)(<.*>)?'")
+_MEMBER_TYPE = re.compile(  # ``Msg::_code_type``; ``Synthesised<T>::ConstPtr``
+    r"^no type named '(\w+)' in '(?:const )?(?:(?:struct|class) )?([\w:]+)(<.*>)?'")
 _AMBIGUOUS = re.compile(r"^reference to '(\w+)' is ambiguous")
 _RECORD = re.compile(r"[a-z]\w*(?:::\w+)+")  # a message's struct: ``pkg::msg::Name``
 _USING = re.compile(rb"\busing\s+namespace\s+(?:::)?([A-Za-z_][\w:]*)\s*;")
@@ -109,8 +111,10 @@ class Names:
         self.root = _Name(known=True)
         self.members: set[str] = set()
         # record -> the members the code uses on it: the fields of messages known only
-        # by name (their synthesised struct opens a hook, ``interfaces.fields_hook``)
+        # by name (their synthesised struct opens a hook, ``interfaces.fields_hook``),
+        # and the member types it names (``ResponseStatus::_code_type``)
         self.fields: dict[str, set[str]] = {}
+        self.types: dict[str, set[str]] = {}
         self.using: set[str] = set()  # namespaces named by ``using namespace``
         # unknown names that made a use ambiguous (the real declaration was invalid only
         # until other names were declared): no longer declared
@@ -135,6 +139,18 @@ class Names:
         ambiguous = _AMBIGUOUS.match(message)
         if ambiguous is not None:
             self.withdrawn.add(ambiguous.group(1))
+            return
+        member_type = _MEMBER_TYPE.match(message)
+        if member_type is not None and "namespace" not in message:
+            name, record = member_type.group(1), member_type.group(2)
+            if self._synthesised(record) and record != "haros_any":
+                node = self._node(record)
+                if name not in node.children:
+                    node.children[name] = _Name(uses={"type"})
+                    self.count += 1
+            elif self._message(record) and name not in self.types.get(record, ()):
+                self.types.setdefault(record, set()).add(name)
+                self.count += 1
             return
         member = _MEMBER.match(message)
         if member is not None and "namespace" not in message:
@@ -201,6 +217,12 @@ class Names:
             return "type"
         return "value"
 
+    def _node(self, qualified: str) -> _Name:
+        node = self.root
+        for part in qualified.split("::"):
+            node = node.children[part]
+        return node
+
     def _synthesised(self, qualified: str) -> bool:
         if qualified == "haros_any":
             return True
@@ -216,9 +238,10 @@ class Names:
         lines = [_PRELUDE % (members, _OPERATORS)]
         # static: a field reads as ``msg.f`` and a constant as ``Msg::F``, and the
         # message stays the plain struct it was (no member to construct or copy)
-        lines += [f"#define {interfaces.fields_macro(record)} "
-                  + " ".join(f"static haros_any {f};" for f in sorted(names))
-                  for record, names in sorted(self.fields.items())]
+        lines += [f"#define {interfaces.fields_macro(record)} " + " ".join(
+            [*(f"typedef haros_any {t};" for t in sorted(self.types.get(record, ()))),
+             *(f"static haros_any {f};" for f in sorted(self.fields.get(record, ())))])
+            for record in sorted({*self.fields, *self.types})]
         hidden = self._found_by_using()
         for name, node in sorted(self.root.children.items()):
             if name not in hidden:
@@ -265,7 +288,7 @@ class Names:
         return found
 
     def __bool__(self) -> bool:
-        return bool(self.count or self.members or self.fields)
+        return bool(self.count or self.members or self.fields or self.types)
 
 
 def _merge(into: _Name, other: _Name) -> None:

@@ -12,10 +12,12 @@
 #include <rcl/haros_rcl.h>
 #include <rclcpp/serialization.hpp>
 #include <rclcpp/type_adapter.hpp>
-#define RCLCPP_SMART_PTR_DEFINITIONS(T) \
+#define RCLCPP_SMART_PTR_ALIASES_ONLY(T) \
   using SharedPtr = std::shared_ptr<T>; using ConstSharedPtr = std::shared_ptr<const T>; \
   using UniquePtr = std::unique_ptr<T>; using WeakPtr = std::weak_ptr<T>;
-#define RCLCPP_SMART_PTR_ALIASES_ONLY(T) RCLCPP_SMART_PTR_DEFINITIONS(T)
+#define RCLCPP_SMART_PTR_DEFINITIONS(T) RCLCPP_SMART_PTR_ALIASES_ONLY(T) \
+  template<class... HarosArgs> static std::shared_ptr<T> make_shared(HarosArgs&&... args); \
+  template<class... HarosArgs> static std::unique_ptr<T> make_unique(HarosArgs&&... args);
 #define RCLCPP_SMART_PTR_DEFINITIONS_NOT_COPYABLE(T) RCLCPP_SMART_PTR_DEFINITIONS(T)
 #define RCLCPP_SHARED_PTR_DEFINITIONS(T) \
   using SharedPtr = std::shared_ptr<T>; using ConstSharedPtr = std::shared_ptr<const T>;
@@ -324,6 +326,13 @@ public:
   RCLCPP_SMART_PTR_DEFINITIONS(SubscriptionBase)
   const char* get_topic_name() const;
 };
+// rclcpp/message_info.hpp: what a subscription callback's second parameter can be
+class MessageInfo {
+public:
+  MessageInfo();
+  template<class I> MessageInfo(const I& rmw_message_info);
+  const struct rmw_message_info_s& get_rmw_message_info() const;
+};
 template<class M, class A = void> class Subscription : public SubscriptionBase {
 public:
   RCLCPP_SMART_PTR_DEFINITIONS(Subscription)
@@ -467,6 +476,11 @@ using OnSetParametersCallbackHandle = node_interfaces::OnSetParametersCallbackHa
   template<class S> std::shared_ptr<rclcpp::Client<S>> create_client(const std::string& name, \
       const rmw_qos_profile_t& qos = rmw_qos_profile_services_default, \
       rclcpp::CallbackGroup::SharedPtr group = nullptr); \
+  template<class S, class C> std::shared_ptr<rclcpp::Service<S>> create_service( \
+      const std::string& name, C&& callback, const rclcpp::QoS& qos, \
+      rclcpp::CallbackGroup::SharedPtr group = nullptr); \
+  template<class S> std::shared_ptr<rclcpp::Client<S>> create_client(const std::string& name, \
+      const rclcpp::QoS& qos, rclcpp::CallbackGroup::SharedPtr group = nullptr); \
   template<class R, class P, class C> rclcpp::TimerBase::SharedPtr create_wall_timer( \
       std::chrono::duration<R, P> period, C callback, \
       rclcpp::CallbackGroup::SharedPtr group = nullptr); \
@@ -535,7 +549,6 @@ public:
   Node(const std::string& node_name, const std::string& namespace_,
        const NodeOptions& options = NodeOptions());
   virtual ~Node();
-  template<class... A> static SharedPtr make_shared(A&&... args);
   HAROS_RCLCPP_NODE_API(Node)
   Node::SharedPtr create_sub_node(const std::string& sub_namespace);
 };

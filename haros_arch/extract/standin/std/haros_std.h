@@ -71,6 +71,29 @@ template<class B, class D> struct is_base_of : integral_constant<bool, __is_base
 template<class...> using void_t = void;
 template<class T> struct is_pointer : false_type {};
 template<class T> struct is_pointer<T*> : true_type {};
+template<class T> struct is_null_pointer : is_same<decltype(nullptr), typename remove_const<T>::type> {};
+template<class T> constexpr bool is_null_pointer_v = is_null_pointer<T>::value;
+template<class A, class B> constexpr bool is_same_v = is_same<A, B>::value;
+template<class B, class D> constexpr bool is_base_of_v = __is_base_of(B, D);
+template<class T> constexpr bool is_pointer_v = is_pointer<T>::value;
+template<class T> constexpr bool is_arithmetic_v = __is_arithmetic(T);
+template<class T> constexpr bool is_integral_v = __is_integral(T);
+template<class T> constexpr bool is_floating_point_v = __is_floating_point(T);
+template<class T> constexpr bool is_enum_v = __is_enum(T);
+template<class T> struct is_class : integral_constant<bool, __is_class(T)> {};
+template<class T> constexpr bool is_class_v = __is_class(T);
+template<class F, class T> struct is_convertible : integral_constant<bool, __is_convertible_to(F, T)> {};
+template<class F, class T> constexpr bool is_convertible_v = __is_convertible_to(F, T);
+template<class... B> struct conjunction : true_type {};
+template<class B, class... R> struct conjunction<B, R...>
+  : conditional<bool(B::value), conjunction<R...>, B>::type {};
+template<class... B> constexpr bool conjunction_v = conjunction<B...>::value;
+template<class... B> struct disjunction : false_type {};
+template<class B, class... R> struct disjunction<B, R...>
+  : conditional<bool(B::value), B, disjunction<R...>>::type {};
+template<class... B> constexpr bool disjunction_v = disjunction<B...>::value;
+template<class B> struct negation : integral_constant<bool, !bool(B::value)> {};
+template<class B> constexpr bool negation_v = !bool(B::value);
 template<class T> struct is_enum : integral_constant<bool, __is_enum(T)> {};
 template<class T> struct underlying_type { typedef __underlying_type(T) type; };
 template<class T> using underlying_type_t = typename underlying_type<T>::type;
@@ -448,6 +471,17 @@ template<class It, class O> O copy(It first, It last, O out);
 template<class It, class O, class F> O transform(It first, It last, O out, F f);
 template<class It, class T> void fill(It first, It last, const T& v);
 template<class It, class N, class T> It fill_n(It first, N count, const T& v);
+template<class It, class N, class O> O copy_n(It first, N count, O out);
+template<class It, class T> It lower_bound(It first, It last, const T& v);
+template<class It, class T, class C> It lower_bound(It first, It last, const T& v, C compare);
+template<class It, class T> It upper_bound(It first, It last, const T& v);
+template<class It, class T, class C> It upper_bound(It first, It last, const T& v, C compare);
+template<class It, class T> bool binary_search(It first, It last, const T& v);
+template<class It, class P> It find_if_not(It first, It last, P pred);
+template<class It, class P> bool none_of(It first, It last, P pred);
+template<class It> It unique(It first, It last);
+template<class It> void stable_sort(It first, It last);
+template<class It, class C> void stable_sort(It first, It last, C compare);
 template<class It> void reverse(It first, It last);
 template<class It> It min_element(It first, It last);
 template<class It> It max_element(It first, It last);
@@ -618,6 +652,15 @@ public:
   virtual ~exception();
   virtual const char* what() const noexcept;
 };
+class exception_ptr {
+public:
+  exception_ptr() noexcept;
+  exception_ptr(decltype(nullptr)) noexcept;
+  explicit operator bool() const noexcept;
+};
+exception_ptr current_exception() noexcept;
+[[noreturn]] void rethrow_exception(exception_ptr p);
+template<class E> exception_ptr make_exception_ptr(E e) noexcept;
 class runtime_error : public exception {
 public:
   explicit runtime_error(const string& what);
