@@ -118,8 +118,8 @@ def unknown_users(charge: Charge, config: Any, resource: Any) -> list[NodeInstan
 
     A node of partial or unknown interface could publish, subscribe, serve or call any
     topic, service or action name, and read or set any shared parameter; a private
-    parameter (ROS 1 ``/node/param``, every ROS 2 parameter) only its own node, which
-    and a parameter under the namespace of a dynamic_reconfigure server (the fields
+    parameter (ROS 1 ``/node/param``, every ROS 2 parameter) only its own node. A
+    parameter under the namespace of a dynamic_reconfigure server (the fields
     of its .cfg: the node's own ``~``, a planner's ``~DWAPlannerROS``, a controller's
     handle on its host) also the node running that server, which reads and sets it
     unseen."""
