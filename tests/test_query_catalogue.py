@@ -292,6 +292,32 @@ def test_a_dynamic_reconfigure_server_reads_its_private_parameters_unseen():
         ("parameter-set-not-read" + UNDECIDED, ("node:/laserscan",))]
 
 
+def test_a_dynamic_reconfigure_server_leaves_undecided_only_its_own_namespace():
+    # move_base's local planner serves on NodeHandle("~/DWAPlannerROS"); a controller on
+    # the gazebo node serves on its own handle, a shared namespace; a costmap layer's
+    # handle is "~/" + a name unknown statically
+    doc = {"parameters": [
+        {"name": name, "type": "double", "value": 1.0, "writers": ["<launch>"]}
+        for name in ("/move_base/DWAPlannerROS/max_vel_x", "/move_base/controller_frequency",
+                     "/wheels/wheel_radius", "/joints/publish_rate",
+                     "/planner/costmap/inflation/radius", "/planner/rate")],
+        "links": [{"kind": "publish", "node": "/move_base",
+                   "name": "/move_base/DWAPlannerROS/parameter_updates",
+                   "given": "~DWAPlannerROS/parameter_updates"},
+                  {"kind": "server", "node": "/gazebo", "name": "/wheels/set_parameters",
+                   "type": "dynamic_reconfigure/Reconfigure"},
+                  {"kind": "publish", "node": "/planner",
+                   "name": "/planner/costmap/?/parameter_updates",
+                   "given": "~costmap/?/parameter_updates"}]}
+    found = run_rule(RULES["parameter-set-not-read"], configuration(doc))
+    assert sorted((f.rule, f.entities) for f in found) == [
+        ("parameter-set-not-read", ("parameter:/joints/publish_rate",)),
+        ("parameter-set-not-read", ("parameter:/move_base/controller_frequency",)),
+        ("parameter-set-not-read", ("parameter:/planner/rate",)),
+        ("parameter-set-not-read" + UNDECIDED, ("node:/gazebo", "node:/move_base",
+                                               "node:/planner"))]
+
+
 def test_a_catalogue_folder_is_read_again_when_a_file_changes(tmp_path) -> None:
     from haros_arch.query.catalogue import load_catalogue
 

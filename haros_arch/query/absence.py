@@ -12,12 +12,15 @@ comparing every pair.
 
 from __future__ import annotations
 
+import re
 from collections import OrderedDict
 from collections.abc import Callable
 from typing import Any
 from weakref import WeakKeyDictionary
 
+from ..model.rosname import pattern_for
 from ..model.runtime import Configuration, Link, NodeInstance, Parameter, Resource
+from ..model.values import UNKNOWN_MARK
 from .errors import QueryTypeError
 
 Charge = Callable[[int], None]
@@ -32,11 +35,21 @@ class _Known:
         for node in config.nodes:
             self.by_name.setdefault(node.name, node)
         self.incomplete = config.incomplete_nodes
-        # nodes with a ROS 1 dynamic_reconfigure server: it reads and sets every field of
-        # its .cfg under the node's private namespace, names we do not read
-        self.reconfigurable = {id(link.node) for link in config.links
-                               if link.kind == "publish"
-                               and link.rosname.full == link.node.name + "/parameter_updates"}
+        # ROS 1 dynamic_reconfigure servers: each reads and sets every field of its .cfg
+        # under the namespace of the handle it is given (``N/set_parameters``,
+        # ``N/parameter_updates``), names we do not read. Namespace -> serving nodes;
+        # a namespace with "?" as the pattern of the parameter names under it
+        self.reconfigured: dict[str, list[NodeInstance]] = {}
+        self.reconfigured_unresolved: list[tuple[re.Pattern[str], NodeInstance]] = []
+        for link in config.links:
+            namespace = _reconfigure_namespace(link)
+            if namespace is None:
+                continue
+            if UNKNOWN_MARK in namespace:
+                self.reconfigured_unresolved.append(
+                    (re.compile(pattern_for(namespace + "/" + UNKNOWN_MARK)), link.node))
+            else:
+                self.reconfigured.setdefault(namespace, []).append(link.node)
         # resource -> nodes that use a name with "?" that may stand for it
         self.guessed: dict[int, list[NodeInstance]] = {}
         for collection in (config.topics, config.services, config.actions,
@@ -47,6 +60,32 @@ class _Known:
                 users = list(dict.fromkeys(link.node for link in unresolved.links))
                 for candidate in unresolved.candidates:
                     self.guessed.setdefault(id(candidate), []).extend(users)
+
+
+def _reconfigure_namespace(link: Link) -> str | None:
+    """The namespace of the dynamic_reconfigure server a link is part of (its
+    ``parameter_updates`` publisher or ``set_parameters`` server), or None."""
+    namespace, _, own = link.rosname.full.rpartition("/")
+    if link.kind == "publish" and own == "parameter_updates":
+        return namespace
+    if (link.kind == "server" and own == "set_parameters"
+            and link.type == "dynamic_reconfigure/Reconfigure"):
+        return namespace
+    return None
+
+
+def reconfiguring(config: Configuration, parameter: Parameter) -> list[NodeInstance]:
+    """The nodes whose dynamic_reconfigure server may read and set the parameter: those
+    serving on a namespace its name is under."""
+    known = _known(config)
+    found: list[NodeInstance] = []
+    name = parameter.name
+    while "/" in name.rstrip("/"):
+        name = name.rstrip("/").rsplit("/", 1)[0]
+        found.extend(known.reconfigured.get(name, ()))
+    found.extend(node for pattern, node in known.reconfigured_unresolved
+                 if pattern.match(parameter.name))
+    return found
 
 
 _KNOWN: WeakKeyDictionary[Configuration, _Known] = WeakKeyDictionary()
@@ -79,9 +118,11 @@ def unknown_users(charge: Charge, config: Any, resource: Any) -> list[NodeInstan
 
     A node of partial or unknown interface could publish, subscribe, serve or call any
     topic, service or action name, and read or set any shared parameter; a private
-    parameter (ROS 1 ``/node/param``, every ROS 2 parameter) only its own node, which
-    also reads and sets it unseen when it runs a dynamic_reconfigure server (the
-    fields of its .cfg)."""
+    parameter (ROS 1 ``/node/param``, every ROS 2 parameter) only its own node. A
+    parameter under the namespace of a dynamic_reconfigure server (the fields
+    of its .cfg: the node's own ``~``, a planner's ``~DWAPlannerROS``, a controller's
+    handle on its host) also the node running that server, which reads and sets it
+    unseen."""
     if isinstance(resource, Link):
         resource = resource.resource
     if not isinstance(config, Configuration) or not isinstance(resource, Resource):
@@ -93,8 +134,9 @@ def unknown_users(charge: Charge, config: Any, resource: Any) -> list[NodeInstan
     if isinstance(resource, Parameter):
         owner = owner_of(config, resource)
         if owner is not None:
-            unseen = not owner.is_complete or id(owner) in known.reconfigurable
-            found = [owner] if unseen else []
+            found = [] if owner.is_complete else [owner]
+        charge(len(known.reconfigured_unresolved) // 64)
+        found.extend(reconfiguring(config, resource))
     found.extend(known.guessed.get(id(resource), ()))
     charge(len(found) // 64)
     return list(dict.fromkeys(found))
