@@ -391,6 +391,7 @@ public:
   size_t count(const K& k) const;
   iterator find(const K& k) const;
   pair<iterator, bool> insert(const K& k);
+  template<class It> void insert(It first, It last);
   template<class... Args> pair<iterator, bool> emplace(Args&&... args);
   size_t erase(const K& k);
   iterator begin() const;
