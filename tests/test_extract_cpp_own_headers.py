@@ -116,6 +116,7 @@ class Holder { public: const rclcpp::Node::SharedPtr& getNode() const; };
 """
 
 CPP_USER = """
+#include <algorithm>
 #include <set>
 #include <string>
 #include <vector>
@@ -124,6 +125,8 @@ CPP_USER = """
 void configure(const lib::Holder& holder, const std::vector<std::string>& more) {
   std::set<std::string> names;
   names.insert(more.begin(), more.end());
+  std::vector<std::string> sorted(more);
+  sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
   std::string ns = holder.getNode()->get_effective_namespace() + ".x";
   bool allow;
   holder.getNode()->get_parameter_or("allow", allow, true);

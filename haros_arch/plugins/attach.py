@@ -54,7 +54,17 @@ from ..model.source import Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK
 from ..share import share_source
 from ..workspace import Workspace
-from .hosts import EXPORTED, EXTENDS, SPAWNER, Child, Slot, Sources, host_of, sources_of
+from .hosts import (
+    EXPORTED,
+    EXTENDS,
+    LOOKUP_PACKAGES,
+    SPAWNER,
+    Child,
+    Slot,
+    Sources,
+    host_of,
+    sources_of,
+)
 
 SPAWNERS = (("controller_manager", "spawner"), ("controller_manager", "spawner.py"))
 ROS1_SPAWNERS = (("controller_manager", "spawner"), ("controller_manager", "controller_manager"))
@@ -336,7 +346,9 @@ def class_packages(cls: str) -> list[str]:
     first part of a lookup name ``pkg/Name``, else the first namespace of ``pkg::Class``."""
     cls = cls.strip().lstrip(":")
     first = cls.split("/", 1)[0] if "/" in cls else cls.split("::", 1)[0]
-    return [first] if first and first != cls else []
+    if not first or first == cls:
+        return []
+    return [first, LOOKUP_PACKAGES[first]] if first in LOOKUP_PACKAGES else [first]
 
 
 def _given(choice: Choice, slot: Slot) -> str:

@@ -235,6 +235,12 @@ EXTENDS: dict[str, str] = {
 }
 
 
+# lookup-name prefixes that are not the package exporting the class (pluginlib's
+# convention is ``pkg/Name``): MoveIt's capabilities are ``move_group/...``, exported by
+# moveit_ros_move_group (default_capabilities_plugin_description.xml)
+LOOKUP_PACKAGES: dict[str, str] = {"move_group": "moveit_ros_move_group"}
+
+
 def sources_of(cls: str, ros_version: int) -> Sources | None:
     """The ``Sources`` row of a plugin class (lookup name or C++ type), if any."""
     cls = cls.strip().lstrip(":")

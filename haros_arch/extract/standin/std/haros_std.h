@@ -454,6 +454,7 @@ template<class It> It min_element(It first, It last);
 template<class It> It max_element(It first, It last);
 template<class It, class T> It remove(It first, It last, const T& v);
 template<class It, class P> It remove_if(It first, It last, P pred);
+template<class It> It unique(It first, It last);
 template<class It, class P> bool any_of(It first, It last, P pred);
 template<class It, class P> bool all_of(It first, It last, P pred);
 template<class It, class T> T accumulate(It first, It last, T init);
