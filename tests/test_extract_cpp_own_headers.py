@@ -106,3 +106,45 @@ def test_a_generated_export_header_defines_its_macros(write_tree) -> None:
     result = extract_cpp([str(main)], scan([str(root)]), cache_dir=None)
     assert [(c.kind, c.name) for c in result.calls] == [("publish", "cmd")]
     assert not [d for d in result.diagnostics if d.code == "CPP_INCLUDE_MISSING"]
+
+
+CPP_HOLDER = """
+#include <rclcpp/rclcpp.hpp>
+namespace lib {
+class Holder { public: const rclcpp::Node::SharedPtr& getNode() const; };
+}
+"""
+
+CPP_USER = """
+#include <algorithm>
+#include <set>
+#include <string>
+#include <vector>
+#include <rclcpp/rclcpp.hpp>
+#include <lib/holder.hpp>
+void configure(const lib::Holder& holder, const std::vector<std::string>& more) {
+  std::set<std::string> names;
+  names.insert(more.begin(), more.end());
+  std::vector<std::string> sorted(more);
+  sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
+  std::string ns = holder.getNode()->get_effective_namespace() + ".x";
+  bool allow;
+  holder.getNode()->get_parameter_or("allow", allow, true);
+}
+"""
+
+
+def test_headers_of_a_library_folder_of_another_package_are_found(write_tree) -> None:
+    # MoveIt's layout: moveit_ros_planning keeps each library's headers in
+    # <package>/<library>/include (moveit_cpp/include/moveit/moveit_cpp/moveit_cpp.hpp)
+    root = write_tree({
+        "lib/package.xml": package_xml("lib", "ament_cmake"),
+        "lib/holder/include/lib/holder.hpp": CPP_HOLDER,
+        "user/package.xml": package_xml("user", "ament_cmake"),
+        "user/src/user.cpp": CPP_USER,
+    })
+    result = extract_cpp([str(root / "user" / "src" / "user.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    assert [(c.kind, c.name, c.default) for c in result.calls] == [("read", "allow", True)]
+    assert not [d for d in result.diagnostics
+                if d.code in ("CPP_INCLUDE_MISSING", "CPP_PARSE_ERROR")]

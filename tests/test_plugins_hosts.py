@@ -469,3 +469,42 @@ def test_a_voxel_layer_runs_its_obstacle_layer_code_too():
     links = links_of(config, "/move_base")
     assert ("read", "/move_base/local_costmap/voxels/z_voxels") in links
     assert ("read", "/move_base/local_costmap/voxels/observation_sources") in links
+
+
+def test_move_group_loads_default_capabilities_plus_its_string_less_the_disabled():
+    plan = plugin("moveit_ros_move_group", "move_group/MoveGroupPlanService",
+                  "move_group::MoveGroupPlanService",
+                  call("server", "plan_kinematic_path", "moveit_msgs/srv/GetMotionPlan"))
+    octomap = plugin("moveit_ros_move_group", "move_group/ClearOctomapService",
+                     "move_group::ClearOctomapService",
+                     call("server", "clear_octomap", "std_srvs/srv/Empty"))
+    mine = plugin("my_caps", "my_caps/Stop", "my_caps::Stop",
+                  call("server", "stop", "std_srvs/srv/Trigger"))
+    decls = [ros2(NodeDecl("/move_group", "moveit_ros_move_group", "move_group")),
+             ros2(NodeDecl("/r2/move_group", "moveit_ros_move_group", "move_group", "/r2/"))]
+    params = [ParamDecl("/r2/move_group/capabilities", " my_caps/Stop\n", location=where(3)),
+              ParamDecl("/r2/move_group/disable_capabilities",
+                        "move_group/ClearOctomapService", location=where(4))]
+    config = graph(decls, params, [plan, octomap, mine])
+    served = sorted(link.resource.name for link in config.links if link.kind == "server")
+    # no parameter: the defaults; a string adds its classes, the disable string drops
+    assert served == ["/clear_octomap", "/plan_kinematic_path", "/r2/plan_kinematic_path",
+                      "/r2/stop"]
+
+
+def test_move_group_capabilities_not_known_statically_leave_it_partial():
+    from haros_arch.model.values import Unknown
+    plan = plugin("moveit_ros_move_group", "move_group/MoveGroupPlanService",
+                  "move_group::MoveGroupPlanService",
+                  call("server", "plan_kinematic_path", "moveit_msgs/srv/GetMotionPlan"))
+    host = Node("moveit_ros_move_group", "move_group", completeness="model",
+                model="jazzy/moveit_ros_move_group 2.12.4")
+    decl = ros2(NodeDecl("/move_group", "moveit_ros_move_group", "move_group"))
+    config = graph([decl], [ParamDecl("/move_group/capabilities", Unknown()),
+                            ParamDecl("/move_group/disable_capabilities", Unknown())],
+                   [host, plan])
+    (link,) = [link for link in config.links if link.kind == "server"]
+    assert [c.text for c in link.conditions] == [
+        "move_group/MoveGroupPlanService not in /move_group/disable_capabilities"]
+    instance = config.node("/move_group")
+    assert instance.completeness == "partial" and not instance.is_complete

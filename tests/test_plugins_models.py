@@ -138,3 +138,32 @@ def test_a_partial_plugin_makes_its_modelled_host_instance_partial(tmp_path):
     assert instance.completeness == "partial"
     assert any("layer/Layer" in r and "l.cpp:9" in r for r in instance.completeness_reasons)
     assert nodes["move_base/move_base"].completeness != "partial"  # the shared model is not
+
+
+def test_modelled_move_group_gets_capabilities_named_by_another_prefix(tmp_path):
+    # MoveIt's capabilities are move_group/<Name>, exported by moveit_ros_move_group
+    model = _model(tmp_path / "move_group.json", "moveit_ros_move_group", [
+        {"package": "moveit_ros_move_group", "executable": "move_group",
+         "calls": [{"kind": "read", "name": "capabilities", "type": "str"}]},
+        {"package": "moveit_ros_move_group", "executable": "move_group/MoveGroupPlanService",
+         "kind": "plugin", "plugin_class": "move_group::MoveGroupPlanService",
+         "calls": [{"kind": "server", "name": "plan_kinematic_path",
+                    "type": "moveit_msgs/srv/GetMotionPlan"}]}])
+    decl = NodeDecl("/move_group", "moveit_ros_move_group", "move_group", ros_version=2)
+    launch = LaunchModel(nodes=[decl], params=[
+        ParamDecl("/move_group/disable_capabilities", " ".join(
+            f"move_group/{name}" for name in (
+                "LoadGeometryFromFileService", "SaveGeometryToFileService", "GetUrdfService",
+                "MoveGroupCartesianPathService", "MoveGroupKinematicsService",
+                "MoveGroupExecuteTrajectoryAction", "MoveGroupMoveAction",
+                "MoveGroupQueryPlannersService", "MoveGroupStateValidationService",
+                "MoveGroupGetPlanningSceneService", "ApplyPlanningSceneService",
+                "ClearOctomapService")))])
+    attacher = Attacher(Library([model], shipped=None), "jazzy", [])
+    config = Configuration("c")
+    workspace = Workspace(root=str(tmp_path))
+    nodes = attacher.nodes_for(launch, workspace, {}, {}, config.diagnostics)
+    build(config, launch, workspace, nodes, attacher.plugin_models(launch, {}))
+    assert ("server", "/plan_kinematic_path") in _links(config)
+    assert not [d for d in config.diagnostics if d.code.startswith("PLUGIN")]
+    assert config.node("/move_group").completeness == "model"

@@ -54,7 +54,17 @@ from ..model.source import Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK
 from ..share import share_source
 from ..workspace import Workspace
-from .hosts import EXPORTED, EXTENDS, SPAWNER, Child, Slot, Sources, host_of, sources_of
+from .hosts import (
+    EXPORTED,
+    EXTENDS,
+    LOOKUP_PACKAGES,
+    SPAWNER,
+    Child,
+    Slot,
+    Sources,
+    host_of,
+    sources_of,
+)
 
 SPAWNERS = (("controller_manager", "spawner"), ("controller_manager", "spawner.py"))
 ROS1_SPAWNERS = (("controller_manager", "spawner"), ("controller_manager", "controller_manager"))
@@ -336,7 +346,9 @@ def class_packages(cls: str) -> list[str]:
     first part of a lookup name ``pkg/Name``, else the first namespace of ``pkg::Class``."""
     cls = cls.strip().lstrip(":")
     first = cls.split("/", 1)[0] if "/" in cls else cls.split("::", 1)[0]
-    return [first] if first and first != cls else []
+    if not first or first == cls:
+        return []
+    return [first, LOOKUP_PACKAGES[first]] if first in LOOKUP_PACKAGES else [first]
 
 
 def _given(choice: Choice, slot: Slot) -> str:
@@ -400,6 +412,9 @@ def _chosen(instance: NodeInstance, slot: Slot, params: Params) -> Iterator[Choi
     if listed is None and slot.pre_hydro:
         yield from _pre_hydro(instance, slot, params)
         return
+    if slot.disable is not None:
+        yield from _added(instance, slot, params, listed)
+        return
     if listed is None:
         entries: list[Any] = [name for name, _ in slot.defaults]
         where, conditions = instance.location, ()
@@ -422,6 +437,42 @@ def _chosen(instance: NodeInstance, slot: Slot, params: Params) -> Iterator[Choi
                          (*conditions, *typed.launch_conditions), (*listing, parameter))
         else:
             yield Choice(name, cls, where, conditions, listing)
+
+
+def _added(instance: NodeInstance, slot: Slot, params: Params,
+           listed: Parameter | None) -> Iterator[Choice]:
+    """A slot whose classes are its defaults plus those of a string parameter, less
+    those of its ``disable`` string (move_group's capabilities). A string not known
+    statically loads classes nobody can name: one unknown choice (the host is partial)."""
+    base = instance.name.rstrip("/") + "/"
+    disabled = _parameter(params, base + slot.disable) if slot.disable else None
+    dropped = _words(disabled.value) if disabled is not None else []
+    chosen: dict[str, Choice] = {}
+    for name, _ in slot.defaults:
+        chosen[name] = Choice(name, name, instance.location)
+    if listed is not None:
+        words = _words(listed.value)
+        if words is None:
+            chosen[UNKNOWN_MARK] = Choice(UNKNOWN_MARK, None, listed.launch_location,
+                                          listed.launch_conditions, (listed.name,))
+        for word in words or []:
+            chosen.setdefault(word, Choice(word, word, listed.launch_location,
+                                           listed.launch_conditions, (listed.name,)))
+    if dropped is None:  # an unknown disable list: each choice may be left out
+        assert disabled is not None
+        for name in list(chosen):
+            chosen[name] = replace(chosen[name], conditions=(
+                *chosen[name].conditions, Condition(
+                    f"{name} not in {disabled.name}", "launch", "if",
+                    disabled.launch_location)))
+    for name in dropped or []:
+        chosen.pop(name, None)
+    yield from list(chosen.values())[:MAX_PLUGINS]
+
+
+def _words(value: Any) -> list[str] | None:
+    """The classes a white-space separated string names; None when not known."""
+    return value.split() if isinstance(value, str) else None
 
 
 def _pre_hydro(instance: NodeInstance, slot: Slot, params: Params) -> Iterator[Choice]:

@@ -63,6 +63,10 @@ class Slot:
     # a ROS 1 costmap: without ``plugins`` it makes its layers from the pre-Hydro
     # parameters (``plugins.attach._pre_hydro``)
     pre_hydro: bool = False
+    # ``names`` is one string of classes separated by white space, loaded with the
+    # ``defaults`` (not instead of them), less those the ``disable`` parameter's string
+    # names (MoveIt's move_group: ``capabilities``, ``disable_capabilities``)
+    disable: str | None = None
 
 
 @dataclass(frozen=True)
@@ -171,6 +175,25 @@ HOSTS: tuple[Host, ...] = (
         _ros1_costmap("global_costmap/"),
         _ros1_costmap("local_costmap/"))),
     Host("costmap_2d", ("costmap_2d_node",), 1, (_ros1_costmap("costmap/"),)),
+    # MoveIt 2's move_group (moveit_ros/move_group/src/move_group.cpp,
+    # configureCapabilities): DEFAULT_CAPABILITIES, plus the classes of its
+    # ``capabilities`` string, less those of ``disable_capabilities``; a capability makes
+    # its calls on move_group's node (``context_->moveit_cpp_->getNode()``)
+    Host("moveit_ros_move_group", ("move_group",), 2, (
+        Slot("capabilities", None, ("moveit_ros_move_group",
+                                    "move_group::MoveGroupCapability"),
+             defaults=tuple((name, name) for name in (
+                 "move_group/LoadGeometryFromFileService",
+                 "move_group/SaveGeometryToFileService", "move_group/GetUrdfService",
+                 "move_group/MoveGroupCartesianPathService",
+                 "move_group/MoveGroupKinematicsService",
+                 "move_group/MoveGroupExecuteTrajectoryAction",
+                 "move_group/MoveGroupMoveAction", "move_group/MoveGroupPlanService",
+                 "move_group/MoveGroupQueryPlannersService",
+                 "move_group/MoveGroupStateValidationService",
+                 "move_group/MoveGroupGetPlanningSceneService",
+                 "move_group/ApplyPlanningSceneService", "move_group/ClearOctomapService")),
+             disable="disable_capabilities"),)),
     # mavros (mavros/src/lib/mavros.cpp, mavros_uas.cpp) loads every class its plugin
     # loader declares unless its lists say otherwise; ROS 1 plugins make their calls on
     # the mavros node through handles their code names (``~imu``); a ROS 2 plugin is a
@@ -210,6 +233,12 @@ EXTENDS: dict[str, str] = {
     "nav2_costmap_2d::VoxelLayer": "nav2_costmap_2d::ObstacleLayer",
     "costmap_2d::VoxelLayer": "costmap_2d::ObstacleLayer",
 }
+
+
+# lookup-name prefixes that are not the package exporting the class (pluginlib's
+# convention is ``pkg/Name``): MoveIt's capabilities are ``move_group/...``, exported by
+# moveit_ros_move_group (default_capabilities_plugin_description.xml)
+LOOKUP_PACKAGES: dict[str, str] = {"move_group": "moveit_ros_move_group"}
 
 
 def sources_of(cls: str, ros_version: int) -> Sources | None:

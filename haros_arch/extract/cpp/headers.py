@@ -117,6 +117,25 @@ _LIBRARY_UMBRELLAS = frozenset({"opencv2/opencv.hpp", "cv_bridge/cv_bridge.h", "
 _LIBRARY_HEADERS = ("sensor_msgs/image_encodings.",)
 
 
+def _library_include_dirs(workspace: Workspace) -> list[str]:
+    """``<package>/<folder>/include`` of every workspace package, sorted."""
+    found = []
+    for package in workspace.packages.values():
+        if not package.root:
+            continue
+        try:
+            entries = sorted(os.listdir(package.root))
+        except OSError:
+            continue
+        for entry in entries:
+            if entry.startswith(".") or entry == "include":
+                continue
+            folder = os.path.join(package.root, entry, "include")
+            if os.path.isdir(folder) and not os.path.islink(os.path.join(package.root, entry)):
+                found.append(folder)
+    return found
+
+
 def is_ros2_header(header: str) -> bool:
     return header.startswith("rclcpp") or _ROS2_HEADER.fullmatch(header) is not None
 
@@ -135,6 +154,12 @@ class IncludeSetup:
         self.user_dirs += [inc for inc in (os.path.join(p.root, "include")
                                            for p in workspace.packages.values() if p.root)
                            if os.path.isdir(inc) and inc not in self.user_dirs]
+        # then the include folders one level down: a package that builds several
+        # libraries keeps each one's headers in its folder (MoveIt's moveit_core and
+        # moveit_ros_planning: ``moveit_cpp/include/moveit/moveit_cpp/moveit_cpp.hpp``,
+        # listed in their CMakeLists, which only the analysed package's is read)
+        self.user_dirs += [inc for inc in _library_include_dirs(workspace)
+                           if inc not in self.user_dirs]
         for unit in self.units.values():  # so that the scan before parsing finds them
             self.user_dirs += [d for d in unit.include_dirs if d not in self.user_dirs]
         # the packages being extracted that our stand-ins also provide, with their

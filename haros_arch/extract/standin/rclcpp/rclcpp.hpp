@@ -454,6 +454,7 @@ using OnSetParametersCallbackHandle = node_interfaces::OnSetParametersCallbackHa
       const std::vector<std::string>& prefixes, uint64_t depth) const; \
   const char* get_namespace() const; \
   const char* get_fully_qualified_name() const; \
+  const std::string& get_effective_namespace() const; \
   rclcpp::Logger get_logger() const; \
   rclcpp::Clock::SharedPtr get_clock(); \
   rclcpp::Time now() const; \

@@ -414,6 +414,7 @@ public:
   size_t count(const K& k) const;
   iterator find(const K& k) const;
   pair<iterator, bool> insert(const K& k);
+  template<class It> void insert(It first, It last);
   template<class... Args> pair<iterator, bool> emplace(Args&&... args);
   size_t erase(const K& k);
   iterator begin() const;
@@ -487,6 +488,7 @@ template<class It> It min_element(It first, It last);
 template<class It> It max_element(It first, It last);
 template<class It, class T> It remove(It first, It last, const T& v);
 template<class It, class P> It remove_if(It first, It last, P pred);
+template<class It> It unique(It first, It last);
 template<class It, class P> bool any_of(It first, It last, P pred);
 template<class It, class P> bool all_of(It first, It last, P pred);
 template<class It, class T> T accumulate(It first, It last, T init);
