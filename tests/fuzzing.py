@@ -34,7 +34,10 @@ class Hang(Exception):
 def time_bound(seconds: float = TIME_BOUND) -> Iterator[None]:
     """Interrupt the example with ``Hang`` once it runs past ``seconds`` (main thread only)."""
 
+    fired: list[bool] = []
+
     def alarm(signum, frame):
+        fired.append(True)
         raise Hang(f"example ran past {seconds} s")
 
     if not hasattr(signal, "SIGALRM"):
@@ -47,6 +50,8 @@ def time_bound(seconds: float = TIME_BOUND) -> Iterator[None]:
     finally:
         signal.setitimer(signal.ITIMER_REAL, 0)
         signal.signal(signal.SIGALRM, previous)
+    if fired:  # the alarm's exception was swallowed (a gc callback, a library's except)
+        raise Hang(f"example ran past {seconds} s")
 
 
 # -- mutations of real inputs --------------------------------------------------------------
