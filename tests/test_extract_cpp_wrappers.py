@@ -218,3 +218,22 @@ def test_a_class_template_constructor_that_types_nothing_keeps_its_calls(tmp_pat
                          cache_dir=None)
     assert [(c.kind, c.location.file, c.location.line) for c in result.calls] == [
         ("read", "base.h", 7)]
+
+
+def test_a_name_from_an_interface_specs_static_member(ws: Workspace) -> None:
+    """Autoware's NodeAdaptor shape: ``adaptor.create_publisher<Spec>()`` ->
+    ``make_publisher<SpecT>(node)`` -> ``node->create_publisher<typename
+    SpecT::Message>(SpecT::name, qos)``: the call site's spec gives the name (a
+    ``char[]`` or ``auto`` static member) and the type (its ``Message``); a spec the
+    call site does not name leaves the call, its name unknown."""
+    node = "src/adapi/src/adapi_node.cpp"
+    result = extract_cpp([str(FIXTURE / node)], ws, cache_dir=None)
+    found = topics(result)
+    assert found == [
+        ("publish", "/api/routing/state", "std_msgs/msg/String", 1, node, 8, ()),
+        ("subscribe", "/api/engage", "std_msgs/msg/Bool", 1, node, 9, ()),
+        # a spec the call site does not name (a template's own parameter): kept, unknown
+        ("publish", "?", None, 1, node, 30, ()),
+    ]
+    assert any(d.code == "CPP_DYNAMIC_NAME" and d.location.line == 30
+               for d in result.diagnostics)
