@@ -154,7 +154,7 @@ class Wrappers:
             key: kept for key, found in self.summaries.items() if key not in self._recursive
             and not any(self._recursive & w.through for w in found)
             and (kept := [w for w in found if key not in constructors
-                          or "template" in w.row.type_from])}
+                          or "template" in w.row.type_from or w.spec_param is not None])}
         self._inner = {call: owner for call, owner in self._inner.items()
                        if owner in self.summaries}
         sites = finder.sites
@@ -187,12 +187,13 @@ class Wrappers:
         """The wrapper constructors ``std::make_shared<C>(args)`` may call (C a class
         template of the unit whose constructor wraps the API), resolved or dependent."""
         target = call.referenced
+        head = next(iter(call.get_children()), None)
         heads = [target] if target is not None else [
             d for c in list(call.get_children())[:1] for d in _overloads(c)]
         if not any((qualified_name(d.semantic_parent), d.spelling) in api.FACTORIES
-                   for d in heads):
+                   or _static_factory(d) for d in heads) and not (
+                       target is None and head is not None and _static_factory_call(head)):
             return []
-        head = next(iter(call.get_children()), None)
         classes = [c.referenced for c in (head.walk_preorder() if head is not None else ())
                    if c.kind in (CursorKind.TEMPLATE_REF, CursorKind.TYPE_REF)
                    and c.referenced is not None]
@@ -210,7 +211,13 @@ class Wrappers:
 
     def _summarise(self, function: Cursor, key: Key, call: Cursor) -> bool:
         added = False
-        for wrapper, args, cls, callee in self._inner_rows(call):
+        rows = list(self._inner_rows(call))
+        if call.referenced is None and any(r[3] not in (key, None) for r in rows):
+            # an unresolved call whose overloads are the caller and another one
+            # (``create_service<SpecT>(std::bind(...), group)`` in the overload that
+            # takes an instance): the other one, not a recursion
+            rows = [r for r in rows if r[3] != key]
+        for wrapper, args, cls, callee in rows:
             if callee == key or key in wrapper.through:
                 self._recursive.add(key)
                 return False
@@ -225,7 +232,8 @@ class Wrappers:
         return added
 
     def _calls_one_of(self, call: Cursor, keys: set[Key]) -> bool:
-        return any(k in keys for k in _targets(call))
+        return any(k in keys for k in _targets(call)) or any(
+            k in keys for k in self._constructed(call, _arguments(call)))
 
     def _inner_rows(self, call: Cursor) -> Iterator[
             tuple[Wrapper, list[Cursor], Cursor | None, Key | None]]:
@@ -519,15 +527,14 @@ class Wrappers:
         literal = _literal(value) if value is not None else None
         if literal is None:
             return None
-        service = row.kind in ("service", "client")
+        service = row.kind in ("server", "client")
         alias = members.get("Service" if service else "Message")
         found: str | None = None
         if alias is not None and alias.kind in (CursorKind.TYPE_ALIAS_DECL,
                                                 CursorKind.TYPEDEF_DECL):
             found = msg_types.message_type(alias.underlying_typedef_type, service, {},
                                            self.finder.ros2)
-        return dataclasses.replace(row, fixed_name=literal, fixed_type=found,
-                                   type_from=() if found else row.type_from)
+        return dataclasses.replace(row, fixed_name=literal, fixed_type=found, type_from=())
 
     def _called(self, call: Cursor) -> list[Wrapper]:
         """The wrappers ``call`` calls (through the overloads a dependent call names)."""
@@ -612,13 +619,17 @@ def _template_parameters(function: Cursor) -> list[Cursor]:
 
 
 def _template_parameter_index(ref: Cursor | None, function: Cursor) -> int | None:
-    """The index of ``function``'s template type parameter ``ref`` names, if any."""
+    """The index of ``function``'s template type parameter ``ref`` names, if any; of a
+    class template's constructor, its class's (what a construction's template
+    arguments give)."""
     decl = ref.referenced if ref is not None else None
     if decl is None or decl.kind != CursorKind.TEMPLATE_TYPE_PARAMETER:
         return None
     where = _key(decl)
-    return next((i for i, p in enumerate(_template_parameters(function))
-                 if _key(p) == where), None)
+    params = _template_parameters(function.semantic_parent) if (
+        _of_class_template(function) and _is_constructor(function)
+    ) else _template_parameters(function)
+    return next((i for i, p in enumerate(params) if _key(p) == where), None)
 
 
 def _spec_member(expr: Cursor, function: Cursor, member: str) -> int | None:
@@ -647,6 +658,24 @@ def _explicit_template_argument(call: Cursor, index: int) -> Cursor | None:
     refs = [c for c in head.walk_preorder() if c.kind == CursorKind.TYPE_REF
             and c.extent.start.offset > opening]
     return refs[index] if index < len(refs) else None
+
+
+def _static_factory(decl: Cursor) -> bool:
+    """``C<T>::make_shared(args)``: a class template's static factory (rclcpp's
+    ``RCLCPP_SMART_PTR_DEFINITIONS``), a construction of ``C<T>``."""
+    return decl.spelling in ("make_shared", "make_unique") and decl.is_static_method() \
+        and decl.semantic_parent is not None and decl.semantic_parent.kind in (
+            CursorKind.CLASS_TEMPLATE, CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL)
+
+
+def _static_factory_call(head: Cursor) -> bool:
+    """``C<T>::make_shared`` written in a template, where ``T`` is its parameter (the
+    call is not resolved)."""
+    tokens = [t.spelling for t in head.get_tokens()]
+    return len(tokens) > 2 and tokens[-1] in ("make_shared", "make_unique") and (
+        tokens[-2] == "::") and any(
+            c.kind == CursorKind.TEMPLATE_REF and c.referenced is not None
+            and c.referenced.kind == CursorKind.CLASS_TEMPLATE for c in head.get_children())
 
 
 def _literal(expr: Cursor) -> str | None:
