@@ -245,3 +245,15 @@ def test_a_name_from_an_interface_specs_static_member(ws: Workspace) -> None:
                if c.kind == "server"]
     assert servers == [("server", "/api/routing/clear", "std_srvs/srv/Trigger", 11),
                        ("server", "/api/routing/reset", "std_srvs/srv/Empty", 15)]
+
+
+def test_a_spec_wrappers_name_as_a_type_is_no_missed_call_site(ws: Workspace) -> None:
+    """``adaptor::Service<Spec>::SharedPtr member_;`` spells a spec-named wrapper class
+    (its constructor makes the service) as a type, not a call: in a unit with an error
+    left, the recall check does not take it for a call site with no call extracted."""
+    node = "src/adapi/src/checked_node.cpp"
+    result = extract_cpp([str(FIXTURE / node)], ws, cache_dir=None)
+    assert [(c.kind, c.name, c.location.line) for c in result.calls] == [
+        ("server", "/api/routing/clear", 11)]
+    assert [d.location.line for d in result.diagnostics if d.code == "CPP_CALL_MISSED"] == []
+    assert any(d.code == "CPP_PARSE_ERROR" for d in result.diagnostics)

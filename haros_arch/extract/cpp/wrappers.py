@@ -99,6 +99,7 @@ class Wrappers:
         self.finder = finder
         self.summaries: dict[Key, list[Wrapper]] = {}
         self.names: frozenset[str] = frozenset()  # the wrappers' spellings
+        self.site_names: frozenset[str] = frozenset()  # those a call-site grep looks for
         self._inner: dict[Key, Key] = {}  # call inside a wrapper -> the wrapper
         self._kept: set[Key] = set()  # wrappers whose inner calls are still emitted
         self._recursive: set[Key] = set()
@@ -176,6 +177,18 @@ class Wrappers:
             for f in functions if _key(f.canonical) in self.summaries)
         if self.names:
             self.names |= {""}  # a call that depends on a template parameter
+        # the names a grep for call sites looks for (``recall``): not those of wrappers
+        # named by a spec only (``Client<SpecT>``, ``create_service_handle<SpecT>``):
+        # a node calls them through another wrapper, and their spelling is also a type
+        # (``rclcpp::Client<S>::SharedFuture``, ``decltype(create_service_handle<S>(...))``)
+        by_name: dict[str, bool] = {}  # spelling -> whether all its wrappers are a spec's
+        for f in functions:
+            summary = self.summaries.get(_key(f.canonical))
+            if summary and f.kind != CursorKind.LAMBDA_EXPR:
+                name = f.spelling.split("<")[0]
+                by_name[name] = by_name.get(name, True) and all(
+                    w.spec_param is not None for w in summary)
+        self.site_names = self.names - {name for name, spec in by_name.items() if spec}
 
     def silent(self, function: Cursor) -> bool:
         """Whether the calls inside ``function`` are emitted where it is called, not
