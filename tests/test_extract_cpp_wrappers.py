@@ -218,3 +218,42 @@ def test_a_class_template_constructor_that_types_nothing_keeps_its_calls(tmp_pat
                          cache_dir=None)
     assert [(c.kind, c.location.file, c.location.line) for c in result.calls] == [
         ("read", "base.h", 7)]
+
+
+def test_a_name_from_an_interface_specs_static_member(ws: Workspace) -> None:
+    """Autoware's NodeAdaptor shape: ``adaptor.create_publisher<Spec>()`` ->
+    ``make_publisher<SpecT>(node)`` -> ``node->create_publisher<typename
+    SpecT::Message>(SpecT::name, qos)``: the call site's spec gives the name (a
+    ``char[]`` or ``auto`` static member) and the type (its ``Message`` or
+    ``Service``); a spec the call site does not name leaves the call, its name
+    unknown."""
+    node = "src/adapi/src/adapi_node.cpp"
+    result = extract_cpp([str(FIXTURE / node)], ws, cache_dir=None)
+    found = topics(result)
+    assert found == [
+        ("publish", "/api/routing/state", "std_msgs/msg/String", 1, node, 8, ()),
+        ("subscribe", "/api/engage", "std_msgs/msg/Bool", 1, node, 9, ()),
+        # a spec the call site does not name (a template's own parameter): kept, unknown
+        ("publish", "?", None, 1, node, 42, ()),
+    ]
+    assert any(d.code == "CPP_DYNAMIC_NAME" and d.location.line == 42
+               for d in result.diagnostics)
+    # through a class template's static make_shared and constructor (Service<SpecT>);
+    # the overload that takes an instance calls the other one, whose overload set holds
+    # itself too: no recursion
+    servers = [(c.kind, c.name, c.type, c.location.line) for c in result.calls
+               if c.kind == "server"]
+    assert servers == [("server", "/api/routing/clear", "std_srvs/srv/Trigger", 11),
+                       ("server", "/api/routing/reset", "std_srvs/srv/Empty", 15)]
+
+
+def test_a_spec_wrappers_name_as_a_type_is_no_missed_call_site(ws: Workspace) -> None:
+    """``adaptor::Service<Spec>::SharedPtr member_;`` spells a spec-named wrapper class
+    (its constructor makes the service) as a type, not a call: in a unit with an error
+    left, the recall check does not take it for a call site with no call extracted."""
+    node = "src/adapi/src/checked_node.cpp"
+    result = extract_cpp([str(FIXTURE / node)], ws, cache_dir=None)
+    assert [(c.kind, c.name, c.location.line) for c in result.calls] == [
+        ("server", "/api/routing/clear", 11)]
+    assert [d.location.line for d in result.diagnostics if d.code == "CPP_CALL_MISSED"] == []
+    assert any(d.code == "CPP_PARSE_ERROR" for d in result.diagnostics)

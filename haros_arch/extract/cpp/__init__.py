@@ -385,7 +385,7 @@ def _hidden(path: str, errors: list[ClangDiagnostic], finder: CallFinder,
         lines.setdefault(workspace.relpath(name), set()).add(line)
     for name, ranges in recall.skipped_lines(finder.tu).items():
         silent.setdefault(name, []).extend(ranges)  # no code of this build
-    wrappers = sorted(n for n in finder.wrappers.names if n)
+    wrappers = sorted(n for n in finder.wrappers.site_names if n)
     found: list[Diagnostic] = []
     for name in files:
         data = source.get(name)

@@ -82,10 +82,14 @@ class Wrapper:
     # default value of its parameter that gives it): the call's fields, where the call
     # site gives none
     own: tuple[tuple[str, object], ...] = ()
+    # the name is not an argument but ``T::name`` of the wrapper's template type
+    # parameter of this index (an interface spec: ``create_publisher<Spec>()``); its
+    # type is ``T::Message`` (``T::Service``)
+    spec_param: int | None = None
 
     def same(self, other: Wrapper) -> bool:
-        return (self.row, self.before, self.after, self.namespace) == (
-            other.row, other.before, other.after, other.namespace)
+        return (self.row, self.before, self.after, self.namespace, self.spec_param) == (
+            other.row, other.before, other.after, other.namespace, other.spec_param)
 
 
 class Wrappers:
@@ -95,6 +99,7 @@ class Wrappers:
         self.finder = finder
         self.summaries: dict[Key, list[Wrapper]] = {}
         self.names: frozenset[str] = frozenset()  # the wrappers' spellings
+        self.site_names: frozenset[str] = frozenset()  # those a call-site grep looks for
         self._inner: dict[Key, Key] = {}  # call inside a wrapper -> the wrapper
         self._kept: set[Key] = set()  # wrappers whose inner calls are still emitted
         self._recursive: set[Key] = set()
@@ -107,7 +112,8 @@ class Wrappers:
         # parameters and members, call_sites, and its calls stay where they are
         # written), except one of a class template: the type of its call is the
         # construction's (nav2's ServiceServer<ServiceT>(name, node, callback))
-        functions = [f for f in finder.functions if _parameters(f) and (
+        functions = [f for f in finder.functions if (
+            _parameters(f) or _template_parameters(f)) and (
             f.kind != CursorKind.CONSTRUCTOR or _of_class_template(f))]
         # each function's calls, and its lambdas: one with parameters may be returned
         # and pass one on as a name (nav2 MPPI's ``getParamGetter(ns)``:
@@ -149,7 +155,7 @@ class Wrappers:
             key: kept for key, found in self.summaries.items() if key not in self._recursive
             and not any(self._recursive & w.through for w in found)
             and (kept := [w for w in found if key not in constructors
-                          or "template" in w.row.type_from])}
+                          or "template" in w.row.type_from or w.spec_param is not None])}
         self._inner = {call: owner for call, owner in self._inner.items()
                        if owner in self.summaries}
         sites = finder.sites
@@ -171,6 +177,18 @@ class Wrappers:
             for f in functions if _key(f.canonical) in self.summaries)
         if self.names:
             self.names |= {""}  # a call that depends on a template parameter
+        # the names a grep for call sites looks for (``recall``): not those of wrappers
+        # named by a spec only (``Client<SpecT>``, ``create_service_handle<SpecT>``):
+        # a node calls them through another wrapper, and their spelling is also a type
+        # (``rclcpp::Client<S>::SharedFuture``, ``decltype(create_service_handle<S>(...))``)
+        by_name: dict[str, bool] = {}  # spelling -> whether all its wrappers are a spec's
+        for f in functions:
+            summary = self.summaries.get(_key(f.canonical))
+            if summary and f.kind != CursorKind.LAMBDA_EXPR:
+                name = f.spelling.split("<")[0]
+                by_name[name] = by_name.get(name, True) and all(
+                    w.spec_param is not None for w in summary)
+        self.site_names = self.names - {name for name, spec in by_name.items() if spec}
 
     def silent(self, function: Cursor) -> bool:
         """Whether the calls inside ``function`` are emitted where it is called, not
@@ -182,12 +200,13 @@ class Wrappers:
         """The wrapper constructors ``std::make_shared<C>(args)`` may call (C a class
         template of the unit whose constructor wraps the API), resolved or dependent."""
         target = call.referenced
+        head = next(iter(call.get_children()), None)
         heads = [target] if target is not None else [
             d for c in list(call.get_children())[:1] for d in _overloads(c)]
         if not any((qualified_name(d.semantic_parent), d.spelling) in api.FACTORIES
-                   for d in heads):
+                   or _static_factory(d) for d in heads) and not (
+                       target is None and head is not None and _static_factory_call(head)):
             return []
-        head = next(iter(call.get_children()), None)
         classes = [c.referenced for c in (head.walk_preorder() if head is not None else ())
                    if c.kind in (CursorKind.TEMPLATE_REF, CursorKind.TYPE_REF)
                    and c.referenced is not None]
@@ -205,7 +224,13 @@ class Wrappers:
 
     def _summarise(self, function: Cursor, key: Key, call: Cursor) -> bool:
         added = False
-        for wrapper, args, cls, callee in self._inner_rows(call):
+        rows = list(self._inner_rows(call))
+        if call.referenced is None and any(r[3] not in (key, None) for r in rows):
+            # an unresolved call whose overloads are the caller and another one
+            # (``create_service<SpecT>(std::bind(...), group)`` in the overload that
+            # takes an instance): the other one, not a recursion
+            rows = [r for r in rows if r[3] != key]
+        for wrapper, args, cls, callee in rows:
             if callee == key or key in wrapper.through:
                 self._recursive.add(key)
                 return False
@@ -220,7 +245,8 @@ class Wrappers:
         return added
 
     def _calls_one_of(self, call: Cursor, keys: set[Key]) -> bool:
-        return any(k in keys for k in _targets(call))
+        return any(k in keys for k in _targets(call)) or any(
+            k in keys for k in self._constructed(call, _arguments(call)))
 
     def _inner_rows(self, call: Cursor) -> Iterator[
             tuple[Wrapper, list[Cursor], Cursor | None, Key | None]]:
@@ -280,18 +306,33 @@ class Wrappers:
                 return None
             return args[index + shift]
 
-        name_expr = arg(spec.name_arg)
-        for index in spec.name_candidates:
-            if index < len(args) and msg_types.param_type(args[index].type) == "str":
-                name_expr = args[index]
-                break
-        if name_expr is None:
-            return None
         scope = self.finder.sites.scope(function) if self.finder.sites else None
-        shape = _name_shape(name_expr, params, scope, 0)
-        if shape is None:
-            return None
-        before, name_arg, after = shape
+        spec_param: int | None = None
+        if inner.spec_param is not None:
+            # a wrapper named by its template argument: this function's template
+            # parameter, passed on as that argument (``make_publisher<SpecT>(node)``)
+            spec_param = _template_parameter_index(
+                _explicit_template_argument(call, inner.spec_param), function)
+            if spec_param is None:
+                return None
+            before, name_arg, after = inner.before, spec.name_arg, inner.after
+            inner = dataclasses.replace(inner, before=(), after=())
+        else:
+            name_expr = arg(spec.name_arg)
+            for index in spec.name_candidates:
+                if index < len(args) and msg_types.param_type(args[index].type) == "str":
+                    name_expr = args[index]
+                    break
+            if name_expr is None:
+                return None
+            spec_param = _spec_member(name_expr, function, "name")
+            if spec_param is not None:
+                before, name_arg, after = (), spec.name_arg, ()
+            else:
+                shape = _name_shape(name_expr, params, scope, 0)
+                if shape is None:
+                    return None
+                before, name_arg, after = shape
         fields: dict[str, object] = {
             field: _parameter_index(arg(getattr(spec, field)), params) for field in _ARGUMENTS}
         fields.update(self._handle(function, spec, call, args, shift, params, scope))
@@ -308,7 +349,8 @@ class Wrappers:
             out_arg=None, **fields)  # type: ignore[arg-type]
         return Wrapper(row, (*inner.before, *before), (*after, *inner.after),
                        namespace if isinstance(namespace, str) else None,
-                       inner.through | {_key(function.canonical)}, tuple(own.items()))
+                       inner.through | {_key(function.canonical)}, tuple(own.items()),
+                       spec_param)
 
     def _own(self, spec: api.RosFunction, args: list[Cursor], shift: int,
              arg: Callable[[int | None], Cursor | None], fields: dict[str, object],
@@ -452,7 +494,12 @@ class Wrappers:
         done: set[tuple[object, ...]] = set()
         for wrapper in wrappers:
             row = wrapper.row
-            if row.name_arg >= len(args):
+            if wrapper.spec_param is not None:
+                # a spec the call site does not name, or whose name is no literal:
+                # the call is kept, its name unknown
+                row = self._of_spec(row, call, wrapper.spec_param) or dataclasses.replace(
+                    row, fixed_name="?")
+            elif row.name_arg >= len(args):
                 continue
             before, after = _bind(wrapper.before, bound), _bind(wrapper.after, bound)
             if (row, before, after) in done:
@@ -473,6 +520,34 @@ class Wrappers:
                     ):
                         setattr(made, field, value)
         return True
+
+    def _of_spec(self, row: api.RosFunction, call: Cursor,
+                 index: int) -> api.RosFunction | None:
+        """``row`` with the name and type of the interface spec ``call`` passes as its
+        template argument ``index`` (``Spec::name``, ``Spec::Message``), as a fixed name
+        (once per node, as the spec's topic is); None when the call site does not name
+        a spec whose name is a literal."""
+        ref = _explicit_template_argument(call, index)
+        decl = ref.referenced if ref is not None else None
+        if decl is None or decl.kind not in (CursorKind.STRUCT_DECL,
+                                             CursorKind.CLASS_DECL):
+            return None
+        decl = decl.get_definition() or decl
+        members = {c.spelling: c for c in decl.get_children()}
+        name = members.get("name")
+        value = initializer(name) if name is not None and name.kind == CursorKind.VAR_DECL \
+            else None
+        literal = _literal(value) if value is not None else None
+        if literal is None:
+            return None
+        service = row.kind in ("server", "client")
+        alias = members.get("Service" if service else "Message")
+        found: str | None = None
+        if alias is not None and alias.kind in (CursorKind.TYPE_ALIAS_DECL,
+                                                CursorKind.TYPEDEF_DECL):
+            found = msg_types.message_type(alias.underlying_typedef_type, service, {},
+                                           self.finder.ros2)
+        return dataclasses.replace(row, fixed_name=literal, fixed_type=found, type_from=())
 
     def _called(self, call: Cursor) -> list[Wrapper]:
         """The wrappers ``call`` calls (through the overloads a dependent call names)."""
@@ -548,6 +623,81 @@ def _name_shape(expr: Cursor, params: list[Cursor], scope: Scope | None,
     right = _name_shape(operands[1], params, scope, depth + 1)
     if right is not None:
         return (*scope.string(operands[0]), *right[0]), right[1], right[2]
+    return None
+
+
+def _template_parameters(function: Cursor) -> list[Cursor]:
+    return [c for c in function.get_children()
+            if c.kind == CursorKind.TEMPLATE_TYPE_PARAMETER]
+
+
+def _template_parameter_index(ref: Cursor | None, function: Cursor) -> int | None:
+    """The index of ``function``'s template type parameter ``ref`` names, if any; of a
+    class template's constructor, its class's (what a construction's template
+    arguments give)."""
+    decl = ref.referenced if ref is not None else None
+    if decl is None or decl.kind != CursorKind.TEMPLATE_TYPE_PARAMETER:
+        return None
+    where = _key(decl)
+    params = _template_parameters(function.semantic_parent) if (
+        _of_class_template(function) and _is_constructor(function)
+    ) else _template_parameters(function)
+    return next((i for i, p in enumerate(params) if _key(p) == where), None)
+
+
+def _spec_member(expr: Cursor, function: Cursor, member: str) -> int | None:
+    """The index of ``function``'s template type parameter ``T`` when ``expr`` is
+    ``T::member`` (an interface spec's static member)."""
+    expr = strip(expr)
+    if expr.kind != CursorKind.DECL_REF_EXPR:
+        return None
+    tokens = [t.spelling for t in expr.get_tokens()]
+    if len(tokens) != 3 or tokens[1:] != ["::", member]:
+        return None
+    refs = [c for c in expr.get_children() if c.kind == CursorKind.TYPE_REF]
+    return _template_parameter_index(refs[0], function) if len(refs) == 1 else None
+
+
+def _explicit_template_argument(call: Cursor, index: int) -> Cursor | None:
+    """The type reference written as the ``index``-th template argument of ``call``'s
+    callee (``make_publisher<SpecT>(node)``, ``adaptor.create_publisher<ns::Spec>()``)."""
+    head = next(iter(call.get_children()), None)
+    if head is None:
+        return None
+    opening = next((t.extent.start.offset for t in head.get_tokens() if t.spelling == "<"),
+                   None)
+    if opening is None:
+        return None
+    refs = [c for c in head.walk_preorder() if c.kind == CursorKind.TYPE_REF
+            and c.extent.start.offset > opening]
+    return refs[index] if index < len(refs) else None
+
+
+def _static_factory(decl: Cursor) -> bool:
+    """``C<T>::make_shared(args)``: a class template's static factory (rclcpp's
+    ``RCLCPP_SMART_PTR_DEFINITIONS``), a construction of ``C<T>``."""
+    return decl.spelling in ("make_shared", "make_unique") and decl.is_static_method() \
+        and decl.semantic_parent is not None and decl.semantic_parent.kind in (
+            CursorKind.CLASS_TEMPLATE, CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL)
+
+
+def _static_factory_call(head: Cursor) -> bool:
+    """``C<T>::make_shared`` written in a template, where ``T`` is its parameter (the
+    call is not resolved)."""
+    tokens = [t.spelling for t in head.get_tokens()]
+    return len(tokens) > 2 and tokens[-1] in ("make_shared", "make_unique") and (
+        tokens[-2] == "::") and any(
+            c.kind == CursorKind.TEMPLATE_REF and c.referenced is not None
+            and c.referenced.kind == CursorKind.CLASS_TEMPLATE for c in head.get_children())
+
+
+def _literal(expr: Cursor) -> str | None:
+    """The text of a string literal (``"/api/x"``, as a ``char[]`` or ``auto``)."""
+    expr = strip(expr)
+    for node in expr.walk_preorder():
+        if node.kind == CursorKind.STRING_LITERAL:
+            text = node.spelling
+            return text[1:-1] if text.startswith('"') and text.endswith('"') else None
     return None
 
 
