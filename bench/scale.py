@@ -71,11 +71,12 @@ def child(project_path: str, cache: str, jobs: int, model_out: str) -> dict[str,
     checked = check(model, project)
     timings["queries"] = time.perf_counter() - began
     began = time.perf_counter()
-    from haros_arch.viz import write_report
-    from haros_arch.viz.command import model_data, project_findings, workspace_root
-    with tempfile.TemporaryDirectory() as folder:
-        write_report(model_data(model), project_findings(model, project),
-                     workspace_root(project, None), os.path.join(folder, "report.html"))
+    from haros_arch.viz.command import model_data, project_findings, report_page, workspace_root
+    from haros_arch.viz.html import write_page
+    with tempfile.TemporaryDirectory() as folder:  # as `haros-arch report` does
+        write_page(report_page(model, model_data(model), project_findings(model, project),
+                               workspace_root(project, None), project),
+                   os.path.join(folder, "report.html"))
     timings["report"] = time.perf_counter() - began
     from haros_arch.model.serialise import model_to_data
     text = json.dumps(model_to_data(model), sort_keys=True)

@@ -479,7 +479,8 @@ def cmd_report(args: argparse.Namespace, out: Console, err: Console) -> int:
     from .autoproject import open_choice
     from .project import ProjectError
     from .viz import ReportError, write_report
-    from .viz.command import model_data, project_findings, read_model, workspace_root
+    from .viz.command import model_data, project_findings, read_model, report_page, workspace_root
+    from .viz.html import write_page
 
     if not args.project and not args.model:
         err.print("haros-arch: report needs a PROJECT file or --model FILE", highlight=False)
@@ -496,6 +497,12 @@ def cmd_report(args: argparse.Namespace, out: Console, err: Console) -> int:
             project = analysis.project
             data = model_data(analysis.model)
             findings = project_findings(analysis.model, project)
+            if not args.live:  # an unchanged run's page is kept with it
+                write_page(report_page(analysis.model, data, findings,
+                                       workspace_root(project, args.workspace), project),
+                           args.output)
+                out.print(f"wrote {args.output}", highlight=False)
+                return EXIT_OK
         live = _live_comparison(data, args.live) if args.live else None
         write_report(data, findings, workspace_root(project, args.workspace), args.output,
                      live)

@@ -286,6 +286,28 @@ def findings(model: Model, inputs: str, compute: Callable[[], list[Finding]]
     return found
 
 
+def page(model: Model, inputs: str, compute: Callable[[], str]) -> str:
+    """The report page of a kept model's run under ``inputs`` (its findings and
+    workspace root, as text): read back when that run wrote it before, else rendered
+    and kept with the run (the page quotes the workspace's sources, which the run's key
+    covers)."""
+    kept = _KEPT.get(model)
+    if kept is None:
+        return compute()
+    folder, key = kept
+    entry = _entry(folder, key + "-report-" + _digest(inputs))
+    try:
+        with open(entry, encoding="utf-8") as handle:
+            text = json.load(handle)["page"]
+        if isinstance(text, str):
+            return text
+    except (OSError, ValueError, KeyError, TypeError):
+        pass
+    text = compute()
+    _write(entry, {"page": text}, folder)
+    return text
+
+
 def _write(entry: str, data: object, folder: str) -> None:
     """Write an entry, then remove all but the newest ``KEEP``."""
     _write_json(entry, data)

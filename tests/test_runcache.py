@@ -219,3 +219,29 @@ def test_a_model_that_does_not_read_back_whole_is_not_kept(tmp_path: Path,
     first, _ = _run(project, tmp_path / "cache")
     again, timings = _run(project, tmp_path / "cache")
     assert again == first and "scan" in timings  # ran again: nothing was kept
+
+
+def test_an_unchanged_runs_report_page_is_kept_with_it(tmp_path: Path, monkeypatch) -> None:
+    """`report` twice with nothing changed renders the page once and writes the same
+    bytes; a changed source renders it again."""
+    from haros_arch.cli import main
+    from haros_arch.viz import html
+
+    project = _copy(tmp_path)
+    rendered: list[int] = []
+    original = html.render_report
+
+    def counting(*args, **kwargs):
+        rendered.append(1)
+        return original(*args, **kwargs)
+
+    monkeypatch.setattr(html, "render_report", counting)
+    pages = []
+    for name in ("a.html", "b.html"):
+        assert main(["report", str(project), "-o", str(tmp_path / name)]) == 0
+        pages.append((tmp_path / name).read_bytes())
+    assert len(rendered) == 1 and pages[0] == pages[1]
+    source = next((tmp_path / "ws").rglob("*.py"))
+    source.write_text(source.read_text() + "\n# changed\n")
+    assert main(["report", str(project), "-o", str(tmp_path / "c.html")]) == 0
+    assert len(rendered) == 2

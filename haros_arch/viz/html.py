@@ -102,7 +102,11 @@ def render_report(model_data: dict[str, Any], findings: Iterable[Any],
 def write_report(model_data: dict[str, Any], findings: Iterable[Any], workspace_root: str,
                  output: str, live: dict[str, Any] | None = None) -> None:
     """Write the report of ``model_data`` (a ``haros-arch/1`` document) to ``output``."""
-    page = render_report(model_data, findings, workspace_root, live)
+    write_page(render_report(model_data, findings, workspace_root, live), output)
+
+
+def write_page(page: str, output: str) -> None:
+    """Write a rendered report page to ``output``."""
     try:
         with open(output, "w", encoding="utf-8") as handle:
             handle.write(page)
