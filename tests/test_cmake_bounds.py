@@ -30,6 +30,20 @@ CASES = {
                                + "endif()\nendforeach()\n", "commands evaluated"),
     "nested ifs in a loop": ("foreach(i RANGE 9000)\n" + "if(TRUE)\n" * 150 + "set(x 1)\n"
                              + "endif()\n" * 150 + "endforeach()\n", "commands evaluated"),
+    # found by the fuzzer: int() of 5,000 digits raised ValueError (and len() of a range
+    # past 64 bits raises OverflowError)
+    "range bound of 5,000 digits": ("foreach(i RANGE 1" + "9" * 5000 + ")\nendforeach()\n",
+                                    "more than 18 digits"),
+    # found by the fuzzer: a loop of 10,000 rounds over one command of 20,000 characters
+    "a big command in a long loop": ("while(1)\ninstall(PROGRAMS " + "x" * 20_000
+                                     + " DESTINATION bin)\nendwhile()\n",
+                                     "characters of arguments expanded"),
+    # and 833 rounds of a command of 3,000 short arguments took 8.7 s
+    "many arguments in a long loop": ("while(1)\ninstall(PROGRAMS " + "$e " * 3000
+                                      + "DESTINATION bin)\nendwhile()\n",
+                                      "characters of arguments expanded"),
+    "range bound past 64 bits": ("foreach(i RANGE 0 1" + "0" * 30 + " 1)\nendforeach()\n",
+                                 "more than 18 digits"),
 }
 
 

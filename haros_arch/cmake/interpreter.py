@@ -33,9 +33,12 @@ from .targets import Install, Program, Registration, Target
 _VAR_REF = re.compile(r"\$(ENV|CACHE)?\{([^${}]*)\}")
 MAX_STEPS = 50_000  # commands and if / elseif tests; real packages take under 1,000
 MAX_LOOP = 10_000
+MAX_RANGE_DIGITS = 18  # foreach RANGE bounds: CMake reads them as 64-bit integers
 MAX_DEPTH = 64
 MAX_BLOCK_DEPTH = 200  # if / foreach / while blocks inside each other
 MAX_VALUE = 1_000_000  # characters in one variable's value or one command's arguments
+MAX_EXPANDED = 20_000_000  # characters of arguments expanded in one run (a loop of a big command)
+ARGUMENT_COST = 64  # characters an argument counts for besides its own
 BINARY_ROOT = "/<build>"  # CMAKE_BINARY_DIR: generated files have no source to read
 
 Reader = Callable[[str], list[Invocation]]
@@ -87,6 +90,7 @@ class Interpreter:
         self.returns: list[Condition] = []  # return() under a condition not decided
         self.diagnostics: list[Diagnostic] = []
         self.steps = 0
+        self.expanded = 0  # characters of arguments expanded, against MAX_EXPANDED
         self.depth = 0
         self.block_depth = 0
         # opening command (by identity) -> distances to its middle and closing commands
@@ -198,6 +202,12 @@ class Interpreter:
                 self.limit(self.current, "a command's arguments expand to more than "
                                          f"{MAX_VALUE // 8} items")
                 raise _Stop
+        # each argument costs its length, and an argument's own work as 64 characters
+        self.expanded += sum(map(len, values)) + ARGUMENT_COST * len(args)
+        if self.expanded > MAX_EXPANDED and self.current is not None:
+            self.limit(self.current, f"more than {MAX_EXPANDED} characters of arguments "
+                                     f"expanded in all ({ARGUMENT_COST} per argument)")
+            raise _Stop
         return values
 
     def where(self, command: Invocation) -> Location:
@@ -356,7 +366,12 @@ class Interpreter:
         if not names:
             return []
         if rest[:1] == ["RANGE"]:
-            numbers = [int(x) for x in rest[1:4] if re.fullmatch(r"-?\d+", x)]
+            written = [x for x in rest[1:4] if re.fullmatch(r"-?\d+", x)]
+            if any(len(x.lstrip("-")) > MAX_RANGE_DIGITS for x in written):
+                self.limit(command, f"foreach RANGE bound of more than {MAX_RANGE_DIGITS} "
+                                    "digits (CMake's are 64-bit integers)")
+                return []
+            numbers = [int(x) for x in written]
             if not numbers:
                 return []
             start, stop, step = (0, numbers[0], 1) if len(numbers) == 1 else (
