@@ -35,7 +35,7 @@ import tempfile
 import time
 import weakref
 from collections.abc import Callable, Iterable, Mapping
-from typing import Any
+from typing import Any, TypeVar
 
 from . import __version__
 from .files import MAX_FILE_BYTES
@@ -46,6 +46,7 @@ from .model.serialise import model_to_data, to_data
 from .project import Project
 from .workspace import SKIP_FOLDERS, Workspace, installed_roots
 
+T = TypeVar("T")
 FORMAT = 1
 RACY_SECONDS = 2.0  # a file modified this recently is hashed again next time
 KEEP = 16  # entries kept (a run's model and its findings, per project, workspace
@@ -271,19 +272,8 @@ def findings(model: Model, inputs: str, compute: Callable[[], list[Finding]]
     text): read back when that model's run gave them before, else computed and kept."""
     from .diff import finding_from_data
 
-    kept = _KEPT.get(model)
-    if kept is None:
-        return compute()
-    folder, key = kept
-    entry = _entry(folder, key + "-findings-" + _digest(inputs))
-    try:
-        with open(entry, encoding="utf-8") as handle:
-            return [finding_from_data(f) for f in json.load(handle)["findings"]]
-    except (OSError, ValueError, KeyError, TypeError, AttributeError):
-        pass
-    found = compute()
-    _write(entry, {"findings": to_data(found)}, folder)
-    return found
+    return _with_run(model, "findings", inputs, compute, to_data,
+                     lambda data: [finding_from_data(f) for f in data])
 
 
 def page(model: Model, inputs: str, compute: Callable[[], str]) -> str:
@@ -291,21 +281,32 @@ def page(model: Model, inputs: str, compute: Callable[[], str]) -> str:
     workspace root, as text): read back when that run wrote it before, else rendered
     and kept with the run (the page quotes the workspace's sources, which the run's key
     covers)."""
+
+    def text(data: object) -> str:
+        if not isinstance(data, str):
+            raise TypeError("a kept page is text")
+        return data
+
+    return _with_run(model, "report", inputs, compute, lambda page: page, text)
+
+
+def _with_run(model: Model, kind: str, inputs: str, compute: Callable[[], T],
+              save: Callable[[T], object], read: Callable[[Any], T]) -> T:
+    """What ``compute`` gives for a kept model's run under ``inputs``, kept with the run
+    as entry ``kind``: read back when that run kept it before."""
     kept = _KEPT.get(model)
     if kept is None:
         return compute()
     folder, key = kept
-    entry = _entry(folder, key + "-report-" + _digest(inputs))
+    entry = _entry(folder, f"{key}-{kind}-{_digest(inputs)}")
     try:
         with open(entry, encoding="utf-8") as handle:
-            text = json.load(handle)["page"]
-        if isinstance(text, str):
-            return text
-    except (OSError, ValueError, KeyError, TypeError):
+            return read(json.load(handle)[kind])
+    except (OSError, ValueError, KeyError, TypeError, AttributeError):
         pass
-    text = compute()
-    _write(entry, {"page": text}, folder)
-    return text
+    found = compute()
+    _write(entry, {kind: save(found)}, folder)
+    return found
 
 
 def _write(entry: str, data: object, folder: str) -> None:
