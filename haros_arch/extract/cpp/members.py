@@ -55,17 +55,21 @@ class MemberWrites:
             where = key_of(member)
             self.count[where] = self.count.get(where, 0) + 1
 
+    def _assign(self, target: Cursor, source: Cursor) -> None:
+        """``target = source``: a write of the member, and the call whose value it keeps."""
+        member = member_of(target)
+        self._add(member)
+        value = strip(source)
+        made = key(value) if value.kind == CursorKind.CALL_EXPR else None
+        if member is not None and made is not None:
+            self.assigned[made] = member
+
     def _visit(self, node: Cursor) -> None:
         kind = node.kind
         if kind == CursorKind.BINARY_OPERATOR:
             children = list(node.get_children())
             if len(children) == 2 and self._between(children[0], children[1]) == "=":
-                member = member_of(children[0])
-                self._add(member)
-                value = strip(children[1])
-                made = key(value) if value.kind == CursorKind.CALL_EXPR else None
-                if member is not None and made is not None:
-                    self.assigned[made] = member
+                self._assign(children[0], children[1])
         elif kind == CursorKind.COMPOUND_ASSIGNMENT_OPERATOR:
             children = list(node.get_children())
             if children:
@@ -81,12 +85,7 @@ class MemberWrites:
     def _call(self, call: Cursor) -> None:
         args = list(call.get_arguments())
         if call.spelling == "operator=" and len(args) == 2:  # a std::string member
-            member = member_of(args[0])
-            self._add(member)
-            value = strip(args[1])
-            made = key(value) if value.kind == CursorKind.CALL_EXPR else None
-            if member is not None and made is not None:
-                self.assigned[made] = member
+            self._assign(args[0], args[1])
             return
         if call.referenced is None and len(args) == 2 and (
             self._between(args[0], args[1]) in _READING
