@@ -245,3 +245,33 @@ def test_an_unchanged_runs_report_page_is_kept_with_it(tmp_path: Path, monkeypat
     source.write_text(source.read_text() + "\n# changed\n")
     assert main(["report", str(project), "-o", str(tmp_path / "c.html")]) == 0
     assert len(rendered) == 2
+
+
+def test_a_kept_model_read_back_gives_a_cold_runs_findings_and_matches(tmp_path: Path
+                                                                      ) -> None:
+    """A kept model whose findings were not kept with it (``extract`` kept it under other
+    rules, or the findings' entry was dropped) is checked again as read back: it gives
+    what the run gave in memory. Before, links lost the calls of plugins and of node
+    types from interface models (their defaults, tests, handles): on husky 31 undecided
+    parameter reads instead of 6, and here a false ``parameter-read-not-set``."""
+    from haros_arch import query
+    from haros_arch.query.command import check
+
+    shutil.copytree(FIXTURE.parent.parent / "cache_readback", tmp_path / "ws")
+    spec = load(str(tmp_path / "ws" / "project.yaml"))
+    cold = analyse(spec, {}, Options(cache_dir=None, jobs=1))
+    options = Options(cache_dir=str(tmp_path / "cache"), jobs=1)
+    analyse(spec, {}, options)  # kept, its findings not (no check ran)
+    timings: dict[str, float] = {}
+    kept = analyse(spec, {}, Options(cache_dir=str(tmp_path / "cache"), jobs=1,
+                                     timings=timings))
+    assert set(timings) == {"cache"}  # read back
+    expected = check(cold, spec).findings
+    assert any(f.rule == "parameter-read-not-set-undecided" for f in expected)
+    assert check(kept, spec).findings == expected
+    text = "links[self.call.has_default or self.call.tested or self.call.searched]"
+    for before, after in zip(cold.configurations, kept.configurations, strict=True):
+        found = query.compile(text).run(query.config_scope(before, cold))
+        again = query.compile(text).run(query.config_scope(after, kept))
+        assert found and [(link.node.id, link.name, link.call) for link in again] == [
+            (link.node.id, link.name, link.call) for link in found]
