@@ -102,6 +102,7 @@ def _read_back(config: Configuration, data: dict[str, Any], listed: set[int]) ->
     if written:
         data["node_types"] = written
     index: dict[int, dict[Any, Any]] = {}
+    positions: dict[int, dict[int, int]] = {}  # a node type's calls: id -> index
     actions = action_links(config)
     for link, entry in zip(config.links, data.get("links", ()), strict=True):
         call = link.call
@@ -110,10 +111,15 @@ def _read_back(config: Configuration, data: dict[str, Any], listed: set[int]) ->
         given = default_call(link, entry, index)
         if given is None and link.origin == "action":
             given = wire_call_of(link, actions)
-        if given == call:
+        if given is call or given == call:
             continue
-        calls = link.node.node.calls if link.node.node is not None else []
-        entry["call"] = calls.index(call) if call in calls else to_data(call)
+        node = link.node.node
+        at = None
+        if node is not None:
+            if id(node) not in positions:
+                positions[id(node)] = {id(c): i for i, c in enumerate(node.calls)}
+            at = positions[id(node)].get(id(call))
+        entry["call"] = to_data(call) if at is None else at
 
 
 def dumps(model: Model) -> str:
