@@ -221,6 +221,35 @@ def test_a_model_that_does_not_read_back_whole_is_not_kept(tmp_path: Path,
     assert again == first and "scan" in timings  # ran again: nothing was kept
 
 
+def test_a_model_whose_links_read_back_with_other_calls_is_not_kept(tmp_path: Path,
+                                                                   monkeypatch) -> None:
+    """A link whose call reads back otherwise (a parameter read's default lost) makes
+    the JSON of the model read back differ (a link writes its call where its node type's
+    first call of its kind and place is not it): the model is not kept, the next run
+    runs again. Before, the JSON did not show it and the wrong model was kept."""
+    from dataclasses import replace
+
+    from haros_arch.model import load as model_load
+
+    project = _copy(tmp_path)
+    real = model_load.from_data
+
+    def lossy(data):
+        model = real(data)
+        for link in model.configurations[0].links:
+            if link.call is not None and link.kind == "read":
+                link.call = replace(link.call, has_default=not link.call.has_default)
+                break
+        else:
+            raise AssertionError("no parameter read in the fixture")
+        return model
+
+    monkeypatch.setattr(runcache, "from_data", lossy)
+    first, _ = _run(project, tmp_path / "cache")
+    again, timings = _run(project, tmp_path / "cache")
+    assert again == first and "scan" in timings  # ran again: nothing was kept
+
+
 def test_an_unchanged_runs_report_page_is_kept_with_it(tmp_path: Path, monkeypatch) -> None:
     """`report` twice with nothing changed renders the page once and writes the same
     bytes; a changed source renders it again."""
