@@ -304,3 +304,32 @@ def test_a_kept_model_read_back_gives_a_cold_runs_findings_and_matches(tmp_path:
         again = query.compile(text).run(query.config_scope(after, kept))
         assert found and [(link.node.id, link.name, link.call) for link in again] == [
             (link.node.id, link.name, link.call) for link in found]
+
+
+def test_entries_one_copy_and_configuration_wrote_give_another_what_it_gives_cold(
+        tmp_path: Path) -> None:
+    """One cache folder serves every workspace: a second copy of the workspace at another
+    path, and one launch file of the first run as its own configuration, read the C++
+    unit entries the first run wrote and give what they give with no cache."""
+    from haros_arch.api import analyse_path
+    from haros_arch.query.command import document
+
+    first = _copy_paper(tmp_path)
+    shutil.copytree(first.parent, tmp_path / "second")
+    second = tmp_path / "second" / "project.yaml"
+    launch = str(first.parent / "src" / "example" / "launch" / "minimal.launch")
+    cache = Options(cache_dir=str(tmp_path / "cache"), jobs=1)
+    cold = Options(cache_dir=None, jobs=1)
+
+    def text(path: str, options: Options) -> str:
+        analysis = analyse_path(path, options)
+        assert analysis.model is not None
+        return json.dumps(document(analysis.model, analysis.project), sort_keys=True)
+
+    assert text(str(first), cache) == text(str(first), cold)
+    assert list((tmp_path / "cache" / "cpp").glob("*.json"))  # units kept
+    timings: dict[str, float] = {}
+    assert text(str(second), Options(cache_dir=str(tmp_path / "cache"), jobs=1,
+                                     timings=timings)) == text(str(second), cold)
+    assert "C++" in timings  # not the first run's model: its own, from the unit entries
+    assert text(launch, cache) == text(launch, cold)
