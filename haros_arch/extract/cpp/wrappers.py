@@ -61,6 +61,9 @@ DEPENDENT: dict[str, api.RosFunction] = {
 _ARGUMENTS = ("queue_arg", "latch_arg", "callback_arg", "qos_arg", "default_arg")
 _API_NAMES = frozenset(
     [*DEPENDENT, *(name for _, name in api.ALL), *(name for _, name in api.FACTORIES)])
+# the spellings of the functions a resolved call matches a row or a factory through
+_FACTORY_NAMES = frozenset([*(name for _, name in api.FACTORIES), "make_shared", "make_unique"])
+_ROW_NAMES = _API_NAMES | _FACTORY_NAMES
 _BUILTINS = frozenset({TypeKind.BOOL, TypeKind.INT, TypeKind.LONG, TypeKind.DOUBLE,
                        TypeKind.FLOAT, TypeKind.UINT, TypeKind.ULONG, TypeKind.LONGLONG})
 _THIS_CALLS = frozenset({"shared_from_this", "get", "weak_from_this"})
@@ -223,6 +226,11 @@ class Wrappers:
         return found
 
     def _summarise(self, function: Cursor, key: Key, call: Cursor) -> bool:
+        target = call.referenced
+        if target is not None and target.spelling not in _ROW_NAMES and (
+            _key(target.canonical) not in self.summaries
+        ):
+            return False  # no row and no wrapper (``_inner_rows`` yields none): cheap
         added = False
         rows = list(self._inner_rows(call))
         if call.referenced is None and any(r[3] not in (key, None) for r in rows):
@@ -245,7 +253,10 @@ class Wrappers:
         return added
 
     def _calls_one_of(self, call: Cursor, keys: set[Key]) -> bool:
-        return any(k in keys for k in _targets(call)) or any(
+        if any(k in keys for k in _targets(call)):
+            return True
+        target = call.referenced  # ``_constructed`` needs a factory (or an unresolved call)
+        return (target is None or target.spelling in _FACTORY_NAMES) and any(
             k in keys for k in self._constructed(call, _arguments(call)))
 
     def _inner_rows(self, call: Cursor) -> Iterator[
