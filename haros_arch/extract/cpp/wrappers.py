@@ -695,11 +695,12 @@ def _static_factory(decl: Cursor) -> bool:
 def _static_factory_call(head: Cursor) -> bool:
     """``C<T>::make_shared`` written in a template, where ``T`` is its parameter (the
     call is not resolved)."""
+    if not any(c.kind == CursorKind.TEMPLATE_REF and c.referenced is not None
+               and c.referenced.kind == CursorKind.CLASS_TEMPLATE for c in head.get_children()):
+        return False  # asked first: the tokens are read through libclang
     tokens = [t.spelling for t in head.get_tokens()]
     return len(tokens) > 2 and tokens[-1] in ("make_shared", "make_unique") and (
-        tokens[-2] == "::") and any(
-            c.kind == CursorKind.TEMPLATE_REF and c.referenced is not None
-            and c.referenced.kind == CursorKind.CLASS_TEMPLATE for c in head.get_children())
+        tokens[-2] == "::")
 
 
 def _literal(expr: Cursor) -> str | None:
