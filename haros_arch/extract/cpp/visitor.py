@@ -26,7 +26,7 @@ from .call_sites import CallSites
 from .call_types import CallTypes, factory_made
 from .call_types import callee as callee_of_call
 from .conditions import ConditionReader
-from .cursors import root
+from .cursors import children_in, root
 from .handles import (
     Namespaces,
     callback,
@@ -116,14 +116,14 @@ class CallFinder:
         self._stored: list[tuple[PrimitiveCall, Cursor]] = []
         # (file, offset) of the macro expansions and #includes of the workspace's files:
         # a function's text that holds one does not show all its code
-        self._opaque: list[tuple[str, int]] = []
+        self.opaque: list[tuple[str, int]] = []
 
     def run(self) -> None:
         self.functions = list(self._definitions(root(self.tu), top=True))
         self.sites = self.namespaces.sites = CallSites(self.functions, self.macros, self.source,
                                                        external=True)
         self.wrappers.build()
-        self.members = MemberWrites(self.functions, self.source, self._opaque)
+        self.members = MemberWrites(self.functions, self.source, self.opaque)
         for function in self.functions:
             if self._gives(function):
                 self._function(function)
@@ -136,13 +136,11 @@ class CallFinder:
                 call.name_default = self._declared.get(call.name_param)
 
     def _definitions(self, parent: Cursor, top: bool = False) -> Iterator[Cursor]:
-        for cursor in parent.get_children():
+        for cursor in children_in(parent, self.owned):  # in the workspace's files
             where = cursor.location.file
-            if where is None or not self.owned(where.name):
-                continue
             kind = cursor.kind
             if kind in _PREPROCESSED:
-                self._opaque.append((where.name, cursor.location.offset))
+                self.opaque.append((where.name, cursor.location.offset))
             elif kind == CursorKind.MACRO_DEFINITION:
                 tokens = [t.spelling for t in cursor.get_tokens()]
                 if len(tokens) == 2:
