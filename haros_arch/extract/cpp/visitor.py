@@ -1,8 +1,9 @@
 """Finding ROS calls (roscpp, rclcpp and the libraries on them) in a parsed translation unit.
 
-Every function defined in the workspace's own files is walked with the stack of control
-statements around each expression (``conditions.ConditionReader``); a call whose target
-is a row of ``api.ALL`` becomes a ``PrimitiveCall``. A call's location is the line and
+Every function defined in the workspace's own files that holds a call the walk acts on
+(``CallFinder._gives``) is walked with the stack of control statements around each
+expression (``conditions.ConditionReader``); a call whose target is a row of
+``api.ALL`` becomes a ``PrimitiveCall``. A call's location is the line and
 column of the called function's name (``advertise`` in ``n.advertise<M>(...)``), or of
 the constructed object for a constructor.
 """
