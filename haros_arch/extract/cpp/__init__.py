@@ -326,7 +326,7 @@ def _translation_unit(path: str, text: str, ros2: bool,
     if tu is None:
         return result, []
     errors = [d for d in tu.diagnostics if d.severity >= ClangDiagnostic.Error
-              and d.location.file is not None and owned(d.location.file.name)]
+              and (loc := d.location).file is not None and owned(loc.file.name)]
     fieldless = _fieldless_packages(setup.diagnostics)
     for error in errors[:MAX_ERRORS_PER_FILE]:
         loc = error.location
@@ -464,7 +464,7 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
 
     def mine(unit: TranslationUnit) -> list[ClangDiagnostic]:
         return [d for d in _errors(unit)
-                if d.location.file is not None and owned(d.location.file.name)]
+                if (loc := d.location).file is not None and owned(loc.file.name)]
 
     first = mine(tu)
     before = len(first)
@@ -546,8 +546,8 @@ def _can_hide(tu: TranslationUnit, errors: list[ClangDiagnostic],
 def _located(errors: list[ClangDiagnostic],
              source: SourceCache) -> list[tuple[str, bytes | None, int]]:
     """Errors as ``synthesis.Names.learn`` reads them: message, file bytes, offset."""
-    return [(d.spelling, source.get(d.location.file.name), d.location.offset)
-            for d in errors if d.location.file is not None]
+    return [(d.spelling, source.get(loc.file.name), loc.offset)
+            for d in errors if (loc := d.location).file is not None]
 
 
 class SourceCache(dict[str, bytes]):
