@@ -98,8 +98,10 @@ def analyse(project: Project, environment: Mapping[str, str] | None = None,
 
 def _again(project: Project, env: Mapping[str, str], options: Options, folder: str,
            key: str, extraction: dict[str, Any]) -> Model | None:
-    """The model of the run ``key`` when extracting its nodes again gives what it gave
-    (the nodes as the build files made them, from ``extraction``); None otherwise."""
+    """The model of the run ``key`` when extracting its C++ nodes again gives what it
+    gave (the nodes as the build files made them, from ``extraction``); None otherwise.
+    The other nodes are not extracted again: on this path no file they read changed
+    (``_reread``)."""
     with _stage(options, "scan"):
         workspace = scan(project.workspace, env)
     try:
@@ -119,6 +121,16 @@ def _extract(nodes: list[Node], workspace: Workspace, project: Project,
         nodes, workspace, cache_dir=options.cache_dir, jobs=options.jobs,
         compile_commands=[project.compile_commands] if project.compile_commands else None,
         timings=options.timings)
+
+
+def _reread(nodes: list[Node]) -> list[Node]:
+    """The nodes to extract again when only C++ files changed (``runcache``'s outer key
+    covers every other file by content): the C++ ones, or all of them when a node of
+    another language has a source named as a C++ file (which that key does not cover)."""
+    if any(n.language != "cpp" and any(s.endswith(runcache.CPP_FILES) for s in n.sources)
+           for n in nodes):
+        return list(nodes)
+    return [n for n in nodes if n.language == "cpp"]
 
 
 def _gave(nodes: list[Node], found: list[diag.Diagnostic]) -> dict[str, Any]:
@@ -167,13 +179,18 @@ def _analyse(project: Project, env: Mapping[str, str], options: Options,
     for launched in launches.values():
         _rosrun_scripts(launched, workspace, nodes)
     every = [n for p in model.packages for n in p.nodes]
-    given = [[n.package, to_data(n)] for n in every] if record is not None else []
-    found = _extract(every, workspace, project, options)
+    again = _reread(every)
+    given = [[n.package, to_data(n)] for n in again] if record is not None else []
+    found = _extract(again, workspace, project, options)
+    gave = _gave(again, found) if record is not None else {}
+    # the rest after: the diagnostics in the order one extraction of every node gives
+    found += _extract([n for n in every if all(n is not m for m in again)],
+                      workspace, project, options)
     model.diagnostics.extend(found)
     if record is not None and all(  # the nodes read back as they were given
             _json(to_data(node_from_data(data, package))) == _json(data)
             for package, data in given):
-        record.update(given=given, gave=_gave(every, found))
+        record.update(given=given, gave=gave)
 
     project_file = Location(file=os.path.relpath(project.path))
     models = Attacher(Library(project.models, DATA if options.models else None),

@@ -146,6 +146,70 @@ def test_a_cpp_change_that_extracts_otherwise_runs_again(tmp_path: Path) -> None
     assert "graph" in timings and "soliloquy" in changed and "soliloquy" not in first
 
 
+EXAMPLES = FIXTURE.parent.parent.parent / "examples"
+
+
+def _copy_examples(tmp_path: Path) -> Path:
+    shutil.copytree(EXAMPLES, tmp_path / "examples")
+    for folder, _dirs, files in os.walk(tmp_path / "examples"):
+        for name in files:
+            os.utime(os.path.join(folder, name), (1_000_000_000, 1_000_000_000))
+    return tmp_path / "examples" / "project.yaml"
+
+
+def test_a_cpp_change_does_not_extract_the_python_nodes_again(tmp_path: Path,
+                                                              monkeypatch) -> None:
+    from haros_arch.extract import python
+
+    project = _copy_examples(tmp_path)
+    first, _ = _run(project, tmp_path / "cache")
+    assert '"language": "python"' in first and '"language": "cpp"' in first
+    source = project.parent / "src" / "demo_robot" / "src" / "driver.cpp"
+    source.write_text(source.read_text() + "\n// a comment\n")
+
+    def fails(*args: object, **kwargs: object) -> None:
+        raise AssertionError("a Python node extracted again")
+
+    with monkeypatch.context() as patch:
+        patch.setattr(python, "extract_python", fails)
+        again, timings = _run(project, tmp_path / "cache")
+    assert "C++" in timings and "graph" not in timings  # the kept run answered
+    fresh = analyse(load(str(project)), {}, Options(cache_dir=None, jobs=1))
+    assert again == first == json.dumps(model_to_data(fresh), sort_keys=True)
+
+
+def test_a_python_change_after_a_cpp_change_is_in_the_model(tmp_path: Path) -> None:
+    project = _copy_examples(tmp_path)
+    first, _ = _run(project, tmp_path / "cache")
+    cpp = project.parent / "src" / "demo_robot" / "src" / "driver.cpp"
+    cpp.write_text(cpp.read_text() + "\n// a comment\n")
+    _run(project, tmp_path / "cache")  # kept under the outer key of the C++ change
+    script = project.parent / "src" / "demo_rover" / "scripts" / "safety_stop.py"
+    script.write_text(script.read_text().replace('"cmd_vel"', '"cmd_vel_safe"'))
+    os.utime(script, (1_000_000_000, 1_000_000_000))  # same time: its content counts
+    changed, timings = _run(project, tmp_path / "cache")
+    assert "Python" in timings and "cmd_vel_safe" in changed and "cmd_vel_safe" not in first
+    fresh = analyse(load(str(project)), {}, Options(cache_dir=None, jobs=1))
+    assert changed == json.dumps(model_to_data(fresh), sort_keys=True)
+    cpp.write_text(cpp.read_text() + "// another\n")  # and a C++ change after it
+    again, _ = _run(project, tmp_path / "cache")
+    assert again == changed
+
+
+def test_a_python_node_with_a_source_named_as_cpp_is_extracted_again(
+        tmp_path: Path, monkeypatch) -> None:
+    from haros_arch import pipeline
+    from haros_arch.model.source import Node
+
+    cpp = Node(package="p", executable="a", language="cpp")
+    py = Node(package="p", executable="b", language="python",
+              sources=["p/b.py"])
+    assert pipeline._reread([cpp, py]) == [cpp]
+    odd = Node(package="p", executable="c", language="python",
+               sources=["p/c.h"])
+    assert pipeline._reread([cpp, py, odd]) == [cpp, py, odd]
+
+
 def test_the_example_gives_one_model_and_findings_cold_cached_and_touched(tmp_path: Path
                                                                            ) -> None:
     from haros_arch.query.command import document
