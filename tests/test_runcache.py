@@ -289,22 +289,29 @@ def test_an_unchanged_runs_report_page_is_kept_with_it(tmp_path: Path, monkeypat
     """`report` twice with nothing changed renders the page once and writes the same
     bytes; a changed source renders it again."""
     from haros_arch.cli import main
-    from haros_arch.viz import html
+    from haros_arch.viz import command, html
 
     project = _copy(tmp_path)
     rendered: list[int] = []
-    original = html.render_report
+    documents: list[int] = []
+    original, document = html.render_report, command.model_data
 
     def counting(*args, **kwargs):
         rendered.append(1)
         return original(*args, **kwargs)
 
+    def counting_documents(*args, **kwargs):
+        documents.append(1)
+        return document(*args, **kwargs)
+
     monkeypatch.setattr(html, "render_report", counting)
+    monkeypatch.setattr(command, "model_data", counting_documents)
     pages = []
     for name in ("a.html", "b.html"):
         assert main(["report", str(project), "-o", str(tmp_path / name)]) == 0
         pages.append((tmp_path / name).read_bytes())
     assert len(rendered) == 1 and pages[0] == pages[1]
+    assert len(documents) == 1  # a kept page needs no document of the model
     source = next((tmp_path / "ws").rglob("*.py"))
     source.write_text(source.read_text() + "\n# changed\n")
     assert main(["report", str(project), "-o", str(tmp_path / "c.html")]) == 0
