@@ -108,19 +108,21 @@ def _again(project: Project, env: Mapping[str, str], options: Options, folder: s
         nodes = [node_from_data(data, package) for package, data in extraction["given"]]
     except (KeyError, TypeError, ValueError, AttributeError):
         return None
-    found = _extract(nodes, workspace, project, options)
-    if _json(_gave(nodes, found)) != _json(extraction.get("gave")):
+    units: dict[str, str] = {}
+    found = _extract(nodes, workspace, project, options, units)
+    if _json(_gave(nodes, units, found)) != _json(extraction.get("gave")):
         return None
     with _stage(options, "cache"):
         return runcache.load(folder, key)
 
 
 def _extract(nodes: list[Node], workspace: Workspace, project: Project,
-             options: Options) -> list[diag.Diagnostic]:
+             options: Options, units: dict[str, str] | None = None
+             ) -> list[diag.Diagnostic]:
     return extract_nodes(  # every C++ source once, in parallel, cached
         nodes, workspace, cache_dir=options.cache_dir, jobs=options.jobs,
         compile_commands=[project.compile_commands] if project.compile_commands else None,
-        timings=options.timings)
+        timings=options.timings, units=units)
 
 
 def _reread(nodes: list[Node]) -> list[Node]:
@@ -133,8 +135,13 @@ def _reread(nodes: list[Node]) -> list[Node]:
     return [n for n in nodes if n.language == "cpp"]
 
 
-def _gave(nodes: list[Node], found: list[diag.Diagnostic]) -> dict[str, Any]:
-    return {"nodes": to_data(nodes), "diagnostics": to_data(found)}
+def _gave(nodes: list[Node], units: dict[str, str], found: list[diag.Diagnostic]
+          ) -> dict[str, Any]:
+    """What extracting ``nodes`` gave, in short: given the same nodes, the same C++
+    units (``CppBatch.units``) and diagnostics make the same C++ nodes; the others are
+    written whole."""
+    return {"units": units, "diagnostics": to_data(found),
+            "nodes": to_data([n for n in nodes if n.language != "cpp"])}
 
 
 def _json(data: Any) -> str:
@@ -181,8 +188,9 @@ def _analyse(project: Project, env: Mapping[str, str], options: Options,
     every = [n for p in model.packages for n in p.nodes]
     again = _reread(every)
     given = [[n.package, to_data(n)] for n in again] if record is not None else []
-    found = _extract(again, workspace, project, options)
-    gave = _gave(again, found) if record is not None else {}
+    units: dict[str, str] = {}
+    found = _extract(again, workspace, project, options, units)
+    gave = _gave(again, units, found) if record is not None else {}
     # the rest after: the diagnostics in the order one extraction of every node gives
     found += _extract([n for n in every if all(n is not m for m in again)],
                       workspace, project, options)

@@ -26,13 +26,15 @@ AUTO_CACHE = "auto"  # cache_dir: the default cache folder (``cpp.cache.default_
 def extract_nodes(nodes: Sequence[Node], workspace: Workspace, *,
                   cache_dir: str | None = AUTO_CACHE, jobs: int | None = None,
                   compile_commands: Sequence[str] | None = None,
-                  timings: dict[str, float] | None = None) -> list[Diagnostic]:
+                  timings: dict[str, float] | None = None,
+                  units: dict[str, str] | None = None) -> list[Diagnostic]:
     """Extract every node; C++ nodes in one batch (``cpp.extract_cpp_nodes``): a source
     shared by several nodes is parsed once. ``cache_dir`` None: no cache; ``jobs``: worker
     processes (default: the number of cores); ``compile_commands``: the
     compile_commands.json files to take flags from (None: those in the workspace);
     ``timings``, when given, gets the seconds of the C++ batch ("C++") and of the
-    other nodes ("Python"), added."""
+    other nodes ("Python"), added; ``units``, when given, the digest of what each C++
+    translation unit gave (``CppBatch.units``)."""
     found: list[Diagnostic] = []
     start = time.perf_counter()
     cpp = [node for node in nodes if node.language == "cpp" and node.sources]
@@ -45,6 +47,8 @@ def extract_nodes(nodes: Sequence[Node], workspace: Workspace, *,
         for node, result in zip(cpp, batch.results, strict=True):
             node.calls, node.rosname = result.calls, _rosname(node, result.rosname)
             _process_nodes(node, result.rosnames)
+        if units is not None:
+            units.update(batch.units)
         found.extend(batch.all_diagnostics())
         for node, result in zip(cpp, batch.results, strict=True):
             found.extend(completeness(node, [*batch.diagnostics, *result.diagnostics]))

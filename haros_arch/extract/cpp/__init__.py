@@ -86,6 +86,9 @@ class CppBatch:
 
     results: list[CppResult] = field(default_factory=list)
     diagnostics: list[Diagnostic] = field(default_factory=list)
+    # each translation unit's path and the digest of what it gave (``cache.digest``): two
+    # batches of the same nodes whose units and diagnostics agree give the same results
+    units: dict[str, str] = field(default_factory=dict)
 
     def all_diagnostics(self) -> list[Diagnostic]:
         """Every diagnostic once (a translation unit shared by nodes reports once)."""
@@ -144,7 +147,7 @@ def extract_cpp_nodes(nodes: Sequence[Sequence[str]], workspace: Workspace, *,
             if text is not None:
                 texts[path] = text
                 ros2[path] = _is_ros2(path, setup.scan(path, text), workspace)
-        results = _units(texts, ros2, setup, store, jobs)
+        results = _units(texts, ros2, setup, store, jobs, batch.units)
     finally:
         setup.close()
     batch.diagnostics += [*setup.diagnostics, *read]
@@ -241,8 +244,10 @@ def _node_of(owner: str | None, owners: dict[str, list[str]],
 
 
 def _units(texts: dict[str, str], ros2: dict[str, bool], setup: IncludeSetup,
-           store: cache.Cache | None, jobs: int | None) -> dict[str, CppResult]:
-    """Each translation unit's result, from the cache or parsed (in parallel)."""
+           store: cache.Cache | None, jobs: int | None,
+           digests: dict[str, str]) -> dict[str, CppResult]:
+    """Each translation unit's result, from the cache or parsed (in parallel); the
+    digest of each in ``digests``."""
     keys = {path: cache.key(setup.workspace.relpath(path), text,
                             [*setup.arguments(False, path), f"ros2={ros2[path]}"],
                             setup.generated)
@@ -250,14 +255,15 @@ def _units(texts: dict[str, str], ros2: dict[str, bool], setup: IncludeSetup,
     done: dict[str, CppResult] = {}
     if store is not None:
         for path, entry in keys.items():
-            data = store.load(entry)
-            if data is not None:
+            kept = store.load(entry)
+            if kept is not None:
                 try:
-                    calls, rosname, found, facts, named, made = cache.from_data(data)
+                    calls, rosname, found, facts, named, made = cache.from_data(kept[0])
                 except (ValueError, TypeError, KeyError):
                     continue
                 done[path] = CppResult(calls, rosname, found, facts, node_names=named,
                                        constructions=made)
+                digests[path] = kept[1]
     todo = [path for path in texts if path not in done]
     tasks = [(path, texts[path], ros2[path]) for path in todo]
     workers = min(len(todo), jobs or os.cpu_count() or 1)
@@ -275,10 +281,11 @@ def _units(texts: dict[str, str], ros2: dict[str, bool], setup: IncludeSetup,
         parsed = [_translation_unit(*task, setup) for task in tasks]
     for path, (unit, headers) in zip(todo, parsed, strict=True):
         done[path] = unit
+        data = cache.to_data(unit.calls, unit.rosname, unit.diagnostics, unit.facts,
+                             unit.node_names, unit.constructions)
+        digests[path] = cache.digest(data)
         if store is not None and headers:
-            store.store(keys[path], headers, cache.to_data(
-                unit.calls, unit.rosname, unit.diagnostics, unit.facts, unit.node_names,
-                unit.constructions))
+            store.store(keys[path], headers, data, digests[path])
     return {path: done[path] for path in texts}
 
 
