@@ -8,6 +8,8 @@ import os
 import shutil
 from pathlib import Path
 
+from conftest import package_xml
+
 from haros_arch import runcache
 from haros_arch.model.serialise import model_to_data
 from haros_arch.pipeline import Options, analyse
@@ -208,6 +210,65 @@ def test_a_python_node_with_a_source_named_as_cpp_is_extracted_again(
     odd = Node(package="p", executable="c", language="python",
                sources=["p/c.h"])
     assert pipeline._reread([cpp, py, odd]) == [cpp, py, odd]
+
+
+HEADER_WORKSPACE = {
+    "src/talk/package.xml": package_xml("talk"),
+    "src/talk/CMakeLists.txt": """
+        project(talk)
+        find_package(catkin REQUIRED COMPONENTS roscpp std_msgs)
+        include_directories(include)
+        add_executable(talker src/talker.cpp)
+        add_executable(listener src/listener.cpp)
+        """,
+    "src/talk/include/talk/names.h": '#define TOPIC "chatter"\n',
+    "src/talk/src/talker.cpp": """
+        #include <ros/ros.h>
+        #include <std_msgs/String.h>
+        #include "talk/names.h"
+        int main(int argc, char** argv) {
+          ros::init(argc, argv, "talker");
+          ros::NodeHandle n;
+          ros::Publisher p = n.advertise<std_msgs::String>(TOPIC, 1);
+          return 0;
+        }
+        """,
+    "src/talk/src/listener.cpp": """
+        #include <ros/ros.h>
+        #include <std_msgs/String.h>
+        void heard(const std_msgs::String::ConstPtr& m) {}
+        int main(int argc, char** argv) {
+          ros::init(argc, argv, "listener");
+          ros::NodeHandle n;
+          ros::Subscriber s = n.subscribe("chatter", 1, heard);
+          return 0;
+        }
+        """,
+    "src/talk/launch/both.launch": """
+        <launch>
+          <node name="talker" pkg="talk" type="talker"/>
+          <node name="listener" pkg="talk" type="listener"/>
+        </launch>
+        """,
+    "project.yaml": "project: p\nworkspace: src\nconfigurations:\n"
+                    "  c: [talk/launch/both.launch]\n",
+}
+
+
+def test_a_header_change_is_in_the_model_and_one_that_changes_nothing_reuses_it(
+        tmp_path: Path, write_tree) -> None:
+    root = write_tree(HEADER_WORKSPACE)
+    project, header = root / "project.yaml", root / "src/talk/include/talk/names.h"
+    first, _ = _run(project, tmp_path / "cache")
+    assert '"chatter"' in first
+    header.write_text('#define TOPIC "chatter"  // the same topic\n')
+    same, timings = _run(project, tmp_path / "cache")
+    assert same == first and "C++" in timings and "graph" not in timings
+    header.write_text('#define TOPIC "babble"\n')
+    changed, timings = _run(project, tmp_path / "cache")
+    assert "graph" in timings and '"babble"' in changed and '"babble"' not in first
+    fresh = analyse(load(str(project)), {}, Options(cache_dir=None, jobs=1))
+    assert changed == json.dumps(model_to_data(fresh), sort_keys=True)
 
 
 def test_the_example_gives_one_model_and_findings_cold_cached_and_touched(tmp_path: Path
