@@ -11,26 +11,24 @@ import time
 from collections.abc import Iterator, Mapping
 from contextlib import contextmanager
 from dataclasses import dataclass, field, replace
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from . import cmake, graph, launch, pysetup, runcache
 from . import diagnostics as diag
+from . import runcache
 from .extract import AUTO_CACHE, extract_nodes
-from .extract.cpp import cache as cpp_cache
-from .graph.build import nodelet_plugin
-from .launch.model import LaunchModel
 from .model.load import node_from_data
 from .model.location import Location
 from .model.model import Model
-from .model.runtime import Configuration
 from .model.serialise import to_data
 from .model.source import Node, Package
-from .models.attach import Attacher
-from .models.library import DATA, Library
 from .project import ConfigurationSpec, Project
-from .rosrun import script_node
-from .share import share_source
 from .workspace import Workspace, scan
+
+if TYPE_CHECKING:
+    from .launch.model import LaunchModel
+
+# The stages past the cache (build files, launch files, graph, interface models) are
+# imported when a run gets to them: a re-run answered from the cache starts without them.
 
 
 @dataclass(frozen=True)
@@ -69,6 +67,8 @@ def analyse(project: Project, environment: Mapping[str, str] | None = None,
     if options.cache_dir is None:
         return _analyse(project, env, options, None)
     with _stage(options, "cache"):  # a run with nothing changed: its model, kept
+        from .extract.cpp import cache as cpp_cache
+
         folder = (cpp_cache.default_folder(os.path.abspath(
             project.workspace[0] if project.workspace else project.folder))
                   if options.cache_dir == AUTO_CACHE else options.cache_dir)
@@ -119,6 +119,8 @@ def _again(project: Project, env: Mapping[str, str], options: Options, folder: s
 def _extract(nodes: list[Node], workspace: Workspace, project: Project,
              options: Options, units: dict[str, str] | None = None
              ) -> list[diag.Diagnostic]:
+    if not nodes:
+        return []
     return extract_nodes(  # every C++ source once, in parallel, cached
         nodes, workspace, cache_dir=options.cache_dir, jobs=options.jobs,
         compile_commands=[project.compile_commands] if project.compile_commands else None,
@@ -152,6 +154,12 @@ def _analyse(project: Project, env: Mapping[str, str], options: Options,
              record: dict[str, Any] | None) -> Model:
     """The run; ``record`` (when given) gets what source extraction was given and gave,
     for ``_again`` (left empty when the nodes do not read back as they were)."""
+    from . import graph, launch
+    from .graph.build import nodelet_plugin
+    from .model.runtime import Configuration
+    from .models.attach import Attacher
+    from .models.library import DATA, Library
+
     with _stage(options, "scan"):  # folders and package manifests
         workspace = scan(project.workspace, env)
     model = Model(project.name, diagnostics=list(workspace.diagnostics))
@@ -192,8 +200,8 @@ def _analyse(project: Project, env: Mapping[str, str], options: Options,
     found = _extract(again, workspace, project, options, units)
     gave = _gave(again, units, found) if record is not None else {}
     # the rest after: the diagnostics in the order one extraction of every node gives
-    found += _extract([n for n in every if all(n is not m for m in again)],
-                      workspace, project, options)
+    chosen = {id(n) for n in again}
+    found += _extract([n for n in every if id(n) not in chosen], workspace, project, options)
     model.diagnostics.extend(found)
     if record is not None and all(  # the nodes read back as they were given
             _json(to_data(node_from_data(data, package))) == _json(data)
@@ -234,6 +242,8 @@ def read_build_files(package: Package, workspace: Workspace) -> list[diag.Diagno
 
 
 def _read_build_files(package: Package, workspace: Workspace) -> list[diag.Diagnostic]:
+    from . import cmake, pysetup
+
     found: list[diag.Diagnostic] = []
     if package.build_type == "ament_python":
         package.nodes, found = pysetup.parse_package(package, workspace)
@@ -246,6 +256,8 @@ def _rosrun_scripts(launched: LaunchModel, workspace: Workspace,
                     nodes: dict[str, Node]) -> None:
     """Scripts that launch files start and only rosrun's search of the package finds:
     added to their package, to be extracted with every other node."""
+    from .rosrun import script_node
+
     for decl in launched.nodes:
         key = f"{decl.package}/{decl.executable}"
         package = workspace.packages.get(decl.package)
@@ -259,6 +271,8 @@ def _rosrun_scripts(launched: LaunchModel, workspace: Workspace,
 
 def launch_path(entry: str, project: Project, workspace: Workspace) -> str | None:
     """A launch file named ``pkg/relative/path`` (as in HAROS) or by a path."""
+    from .share import share_source
+
     candidate = os.path.join(project.folder, entry)
     if os.path.isabs(entry) or os.path.isfile(candidate):
         return candidate
@@ -273,6 +287,9 @@ def launch_path(entry: str, project: Project, workspace: Workspace) -> str | Non
 
 def _load_launch(spec: ConfigurationSpec, project: Project, workspace: Workspace,
                  env: Mapping[str, str]) -> LaunchModel:
+    from . import launch
+    from .launch.model import LaunchModel
+
     merged = LaunchModel()
     lines = spec.launch_lines or [spec.line] * len(spec.launch)
     for entry, line in zip(spec.launch, lines, strict=False):
