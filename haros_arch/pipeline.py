@@ -15,8 +15,7 @@ from typing import TYPE_CHECKING, Any
 
 from . import diagnostics as diag
 from . import runcache
-from .extract import AUTO_CACHE, extract_nodes
-from .model.load import node_from_data
+from .extract import AUTO_CACHE, cpp_sources, extract_nodes
 from .model.location import Location
 from .model.model import Model
 from .model.serialise import to_data
@@ -25,6 +24,7 @@ from .project import ConfigurationSpec, Project
 from .workspace import Workspace, scan
 
 if TYPE_CHECKING:
+    from .extract.cpp import CppBatch
     from .launch.model import LaunchModel
 
 # The stages past the cache (build files, launch files, graph, interface models) are
@@ -98,52 +98,55 @@ def analyse(project: Project, environment: Mapping[str, str] | None = None,
 
 def _again(project: Project, env: Mapping[str, str], options: Options, folder: str,
            key: str, extraction: dict[str, Any]) -> Model | None:
-    """The model of the run ``key`` when extracting its C++ nodes again gives what it
-    gave (the nodes as the build files made them, from ``extraction``); None otherwise.
-    The other nodes are not extracted again: on this path no file they read changed
-    (``_reread``)."""
+    """The model of the run ``key`` when the C++ translation units of its nodes (in
+    ``extraction``) give what they gave, and the batch the diagnostics it gave: its C++
+    nodes are then what they were. None otherwise. The other nodes read no C++ file
+    (``_units_tell``): their results stand."""
+    from .extract.cpp import unit_digests
+
     with _stage(options, "scan"):
         workspace = scan(project.workspace, env)
-    try:
-        nodes = [node_from_data(data, package) for package, data in extraction["given"]]
-    except (KeyError, TypeError, ValueError, AttributeError):
+    paths = extraction.get("units")
+    if not isinstance(paths, list) or not all(isinstance(p, str) for p in paths):
         return None
-    units: dict[str, str] = {}
-    found = _extract(nodes, workspace, project, options, units)
-    if _json(_gave(nodes, units, found)) != _json(extraction.get("gave")):
+    batch = None
+    if paths:
+        with _stage(options, "C++"):
+            batch = unit_digests(paths, workspace, cache_dir=options.cache_dir,
+                                 jobs=options.jobs, compile_commands=_compile_commands(project))
+    if _json(_gave(batch)) != _json(extraction.get("gave")):
         return None
     with _stage(options, "cache"):
         return runcache.load(folder, key)
 
 
+def _units_tell(nodes: list[Node]) -> bool:
+    """Whether the C++ translation units alone tell what a change to C++ files changes:
+    ``runcache``'s outer key covers every other file by content, and only a node of
+    another language with a source named as a C++ file would read one of them."""
+    return not any(n.language != "cpp" and any(s.endswith(runcache.CPP_FILES)
+                                               for s in n.sources) for n in nodes)
+
+
+def _compile_commands(project: Project) -> list[str] | None:
+    return [project.compile_commands] if project.compile_commands else None
+
+
 def _extract(nodes: list[Node], workspace: Workspace, project: Project,
-             options: Options, units: dict[str, str] | None = None
+             options: Options, cpp_batch: CppBatch | None = None
              ) -> list[diag.Diagnostic]:
-    if not nodes:
-        return []
     return extract_nodes(  # every C++ source once, in parallel, cached
         nodes, workspace, cache_dir=options.cache_dir, jobs=options.jobs,
-        compile_commands=[project.compile_commands] if project.compile_commands else None,
-        timings=options.timings, units=units)
+        compile_commands=_compile_commands(project), timings=options.timings,
+        cpp_batch=cpp_batch)
 
 
-def _reread(nodes: list[Node]) -> list[Node]:
-    """The nodes to extract again when only C++ files changed (``runcache``'s outer key
-    covers every other file by content): the C++ ones, or all of them when a node of
-    another language has a source named as a C++ file (which that key does not cover)."""
-    if any(n.language != "cpp" and any(s.endswith(runcache.CPP_FILES) for s in n.sources)
-           for n in nodes):
-        return list(nodes)
-    return [n for n in nodes if n.language == "cpp"]
-
-
-def _gave(nodes: list[Node], units: dict[str, str], found: list[diag.Diagnostic]
-          ) -> dict[str, Any]:
-    """What extracting ``nodes`` gave, in short: given the same nodes, the same C++
-    units (``CppBatch.units``) and diagnostics make the same C++ nodes; the others are
-    written whole."""
-    return {"units": units, "diagnostics": to_data(found),
-            "nodes": to_data([n for n in nodes if n.language != "cpp"])}
+def _gave(batch: CppBatch | None) -> dict[str, Any]:
+    """What the C++ translation units of a batch (None: no C++ node) gave, in short: the
+    same units and diagnostics make the same C++ nodes (``extract.cpp.unit_digests``)."""
+    if batch is None:
+        return {"units": {}, "diagnostics": []}
+    return {"units": batch.units, "diagnostics": to_data(batch.diagnostics)}
 
 
 def _json(data: Any) -> str:
@@ -194,19 +197,15 @@ def _analyse(project: Project, env: Mapping[str, str], options: Options,
     for launched in launches.values():
         _rosrun_scripts(launched, workspace, nodes)
     every = [n for p in model.packages for n in p.nodes]
-    again = _reread(every)
-    given = [[n.package, to_data(n)] for n in again] if record is not None else []
-    units: dict[str, str] = {}
-    found = _extract(again, workspace, project, options, units)
-    gave = _gave(again, units, found) if record is not None else {}
-    # the rest after: the diagnostics in the order one extraction of every node gives
-    chosen = {id(n) for n in again}
-    found += _extract([n for n in every if id(n) not in chosen], workspace, project, options)
-    model.diagnostics.extend(found)
-    if record is not None and all(  # the nodes read back as they were given
-            _json(to_data(node_from_data(data, package))) == _json(data)
-            for package, data in given):
-        record.update(given=given, gave=gave)
+    sources = cpp_sources(every, workspace)
+    batch = None
+    if sources:  # libclang loads only when there is C++ to parse
+        from .extract.cpp import CppBatch
+
+        batch = CppBatch()
+    model.diagnostics.extend(_extract(every, workspace, project, options, batch))
+    if record is not None and _units_tell(every):
+        record.update(units=sources, gave=_gave(batch))
 
     project_file = Location(file=os.path.relpath(project.path))
     models = Attacher(Library(project.models, DATA if options.models else None),

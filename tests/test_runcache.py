@@ -162,6 +162,7 @@ def _copy_examples(tmp_path: Path) -> Path:
 def test_a_cpp_change_does_not_extract_the_python_nodes_again(tmp_path: Path,
                                                               monkeypatch) -> None:
     from haros_arch.extract import python
+    from haros_arch.extract.cpp import cache as cpp_cache
 
     project = _copy_examples(tmp_path)
     first, _ = _run(project, tmp_path / "cache")
@@ -174,6 +175,7 @@ def test_a_cpp_change_does_not_extract_the_python_nodes_again(tmp_path: Path,
 
     with monkeypatch.context() as patch:
         patch.setattr(python, "extract_python", fails)
+        patch.setattr(cpp_cache, "from_data", fails)  # no unit's kept calls read back
         again, timings = _run(project, tmp_path / "cache")
     assert "C++" in timings and "graph" not in timings  # the kept run answered
     fresh = analyse(load(str(project)), {}, Options(cache_dir=None, jobs=1))
@@ -198,7 +200,7 @@ def test_a_python_change_after_a_cpp_change_is_in_the_model(tmp_path: Path) -> N
     assert again == changed
 
 
-def test_a_python_node_with_a_source_named_as_cpp_is_extracted_again(
+def test_a_python_node_with_a_source_named_as_cpp_is_not_left_to_the_cpp_units(
         tmp_path: Path, monkeypatch) -> None:
     from haros_arch import pipeline
     from haros_arch.model.source import Node
@@ -206,10 +208,10 @@ def test_a_python_node_with_a_source_named_as_cpp_is_extracted_again(
     cpp = Node(package="p", executable="a", language="cpp")
     py = Node(package="p", executable="b", language="python",
               sources=["p/b.py"])
-    assert pipeline._reread([cpp, py]) == [cpp]
+    assert pipeline._units_tell([cpp, py])
     odd = Node(package="p", executable="c", language="python",
                sources=["p/c.h"])
-    assert pipeline._reread([cpp, py, odd]) == [cpp, py, odd]
+    assert not pipeline._units_tell([cpp, py, odd])  # no C++-only path then
 
 
 HEADER_WORKSPACE = {

@@ -127,6 +127,31 @@ def extract_cpp_nodes(nodes: Sequence[Sequence[str]], workspace: Workspace, *,
     Every translation unit is read and parsed once however many nodes build it, all of
     them in one pool of worker processes; options as for ``extract_cpp``.
     """
+    batch, results = _batch(nodes, workspace, include_dirs, system_headers, cache_dir, jobs,
+                            compile_commands, True)
+    for sources in nodes:
+        batch.results.append(_node_result(
+            [(p, results[p]) for p in dict.fromkeys(map(os.path.abspath, sources))
+             if p in results]))
+    return batch
+
+
+def unit_digests(paths: Sequence[str], workspace: Workspace, *,
+                 cache_dir: str | None = cache.AUTO, jobs: int | None = None,
+                 compile_commands: Sequence[str] | None = None) -> CppBatch:
+    """What the translation units ``paths`` (the sources of a batch's nodes, in order)
+    give, in short: the batch's own diagnostics and each unit's digest (``CppBatch.units``),
+    no results (a unit's kept result is not even read back); options as for
+    ``extract_cpp``. The same as a batch of the same nodes gave: the same results."""
+    return _batch([paths], workspace, (), False, cache_dir, jobs, compile_commands, False)[0]
+
+
+def _batch(nodes: Sequence[Sequence[str]], workspace: Workspace, include_dirs: Sequence[str],
+           system_headers: bool, cache_dir: str | None, jobs: int | None,
+           compile_commands: Sequence[str] | None, wanted: bool
+           ) -> tuple[CppBatch, dict[str, CppResult]]:
+    """The batch's diagnostics and unit digests, and each unit's result (without
+    ``wanted``: only those parsed)."""
     batch = CppBatch()
     if compile_commands is None:
         compile_commands = commands.find(workspace)
@@ -147,15 +172,11 @@ def extract_cpp_nodes(nodes: Sequence[Sequence[str]], workspace: Workspace, *,
             if text is not None:
                 texts[path] = text
                 ros2[path] = _is_ros2(path, setup.scan(path, text), workspace)
-        results = _units(texts, ros2, setup, store, jobs, batch.units)
+        results = _units(texts, ros2, setup, store, jobs, batch.units, wanted)
     finally:
         setup.close()
     batch.diagnostics += [*setup.diagnostics, *read]
-    for sources in nodes:
-        batch.results.append(_node_result(
-            [(p, results[p]) for p in dict.fromkeys(map(os.path.abspath, sources))
-             if p in results]))
-    return batch
+    return batch, results
 
 
 def _is_ros2(path: str, included: bool, workspace: Workspace) -> bool:
@@ -244,10 +265,11 @@ def _node_of(owner: str | None, owners: dict[str, list[str]],
 
 
 def _units(texts: dict[str, str], ros2: dict[str, bool], setup: IncludeSetup,
-           store: cache.Cache | None, jobs: int | None,
-           digests: dict[str, str]) -> dict[str, CppResult]:
+           store: cache.Cache | None, jobs: int | None, digests: dict[str, str],
+           wanted: bool = True) -> dict[str, CppResult]:
     """Each translation unit's result, from the cache or parsed (in parallel); the
-    digest of each in ``digests``."""
+    digest of each in ``digests``. Without ``wanted`` a kept result is not read back
+    (only its digest) and is left out."""
     keys = {path: cache.key(setup.workspace.relpath(path), text,
                             [*setup.arguments(False, path), f"ros2={ros2[path]}"],
                             setup.generated)
@@ -256,7 +278,9 @@ def _units(texts: dict[str, str], ros2: dict[str, bool], setup: IncludeSetup,
     if store is not None:
         for path, entry in keys.items():
             kept = store.load(entry)
-            if kept is not None:
+            if kept is not None and not wanted:
+                digests[path] = kept[1]
+            elif kept is not None:
                 try:
                     calls, rosname, found, facts, named, made = cache.from_data(kept[0])
                 except (ValueError, TypeError, KeyError):
@@ -264,7 +288,7 @@ def _units(texts: dict[str, str], ros2: dict[str, bool], setup: IncludeSetup,
                 done[path] = CppResult(calls, rosname, found, facts, node_names=named,
                                        constructions=made)
                 digests[path] = kept[1]
-    todo = [path for path in texts if path not in done]
+    todo = [path for path in texts if path not in done and path not in digests]
     tasks = [(path, texts[path], ros2[path]) for path in todo]
     workers = min(len(todo), jobs or os.cpu_count() or 1)
     parsed: list[tuple[CppResult, list[str]]]
@@ -286,7 +310,7 @@ def _units(texts: dict[str, str], ros2: dict[str, bool], setup: IncludeSetup,
         digests[path] = cache.digest(data)
         if store is not None and headers:
             store.store(keys[path], headers, data, digests[path])
-    return {path: done[path] for path in texts}
+    return {path: done[path] for path in texts if path in done}
 
 
 _WORKER_SETUP: IncludeSetup | None = None
