@@ -85,7 +85,7 @@ def analyse(project: Project, environment: Mapping[str, str] | None = None,
         model = _again(project, env, options, folder, *earlier)
         if model is not None:
             with _stage(options, "cache"):
-                runcache.store_alias(folder, key, earlier[0])
+                runcache.store_alias(folder, key, earlier[0], outer)
             return model
     record: dict[str, Any] = {}
     model = _analyse(project, env, options, record)
@@ -155,8 +155,9 @@ def _json(data: Any) -> str:
 
 def _analyse(project: Project, env: Mapping[str, str], options: Options,
              record: dict[str, Any] | None) -> Model:
-    """The run; ``record`` (when given) gets what source extraction was given and gave,
-    for ``_again`` (left empty when the nodes do not read back as they were)."""
+    """The run; ``record`` (when given) gets the C++ translation units of its nodes and
+    what they gave, for ``_again`` (left empty when a node of another language reads a
+    file named as C++: ``_units_tell``)."""
     from . import graph, launch
     from .graph.build import nodelet_plugin
     from .model.runtime import Configuration

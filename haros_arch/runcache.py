@@ -244,10 +244,13 @@ def store(folder: str, key: str, model: Model) -> None:
     _write(_entry(folder, key), {"model": data}, folder)
 
 
-def store_alias(folder: str, key: str, same_as: str) -> None:
-    """Run ``key`` gives the model (and findings) of run ``same_as``."""
+def store_alias(folder: str, key: str, same_as: str, outer: str | None = None) -> None:
+    """Run ``key`` gives the model (and findings) of run ``same_as`` (found through the
+    ``outer`` key's record, which stays as long as they do)."""
     try:
         os.utime(_entry(folder, same_as))  # the newest again: kept as long as its alias
+        if outer is not None:
+            os.utime(_entry(folder, outer + "-outer"))
     except OSError:
         return
     _write(_entry(folder, key), {"same_as": same_as}, folder)

@@ -139,6 +139,18 @@ def test_a_cpp_change_that_extracts_the_same_reuses_the_rest(tmp_path: Path) -> 
     assert len(aliases) == 1  # the new key names the first run's entry (and findings)
 
 
+def test_repeated_cpp_changes_keep_finding_the_kept_run(tmp_path: Path, monkeypatch) -> None:
+    monkeypatch.setattr(runcache, "KEEP", 3)  # a few entries: the oldest go first
+    project = _copy_paper(tmp_path)
+    first, _ = _run(project, tmp_path / "cache")
+    source = project.parent / "src" / "example" / "src" / "active.cpp"
+    text = source.read_text()
+    for count in range(5):
+        source.write_text(text + f"\n// comment {count}\n")
+        again, timings = _run(project, tmp_path / "cache")
+        assert again == first and "graph" not in timings, count
+
+
 def test_a_cpp_change_that_extracts_otherwise_runs_again(tmp_path: Path) -> None:
     project = _copy_paper(tmp_path)
     first, _ = _run(project, tmp_path / "cache")
