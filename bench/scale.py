@@ -71,10 +71,10 @@ def child(project_path: str, cache: str, jobs: int, model_out: str) -> dict[str,
     checked = check(model, project)
     timings["queries"] = time.perf_counter() - began
     began = time.perf_counter()
-    from haros_arch.viz.command import model_data, project_findings, report_page, workspace_root
+    from haros_arch.viz.command import project_findings, report_page, workspace_root
     from haros_arch.viz.html import write_page
     with tempfile.TemporaryDirectory() as folder:  # as `haros-arch report` does
-        write_page(report_page(model, model_data(model), project_findings(model, project),
+        write_page(report_page(model, project_findings(model, project),
                                workspace_root(project, None), project),
                    os.path.join(folder, "report.html"))
     timings["report"] = time.perf_counter() - began

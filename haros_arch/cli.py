@@ -495,14 +495,14 @@ def cmd_report(args: argparse.Namespace, out: Console, err: Console) -> int:
             if analysis is None or analysis.model is None:
                 return EXIT_USAGE
             project = analysis.project
-            data = model_data(analysis.model)
             findings = project_findings(analysis.model, project)
             if not args.live:  # an unchanged run's page is kept with it
-                write_page(report_page(analysis.model, data, findings,
+                write_page(report_page(analysis.model, findings,
                                        workspace_root(project, args.workspace), project),
                            args.output)
                 out.print(f"wrote {args.output}", highlight=False)
                 return EXIT_OK
+            data = model_data(analysis.model)
         live = _live_comparison(data, args.live) if args.live else None
         write_report(data, findings, workspace_root(project, args.workspace), args.output,
                      live)

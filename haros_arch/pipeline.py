@@ -11,26 +11,24 @@ import time
 from collections.abc import Iterator, Mapping
 from contextlib import contextmanager
 from dataclasses import dataclass, field, replace
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from . import cmake, graph, launch, pysetup, runcache
 from . import diagnostics as diag
-from .extract import AUTO_CACHE, extract_nodes
-from .extract.cpp import cache as cpp_cache
-from .graph.build import nodelet_plugin
-from .launch.model import LaunchModel
-from .model.load import node_from_data
+from . import runcache
+from .extract import AUTO_CACHE, cpp_sources, extract_nodes
 from .model.location import Location
 from .model.model import Model
-from .model.runtime import Configuration
 from .model.serialise import to_data
 from .model.source import Node, Package
-from .models.attach import Attacher
-from .models.library import DATA, Library
 from .project import ConfigurationSpec, Project
-from .rosrun import script_node
-from .share import share_source
 from .workspace import Workspace, scan
+
+if TYPE_CHECKING:
+    from .extract.cpp import CppBatch
+    from .launch.model import LaunchModel
+
+# The stages past the cache (build files, launch files, graph, interface models) are
+# imported when a run gets to them: a re-run answered from the cache starts without them.
 
 
 @dataclass(frozen=True)
@@ -69,6 +67,8 @@ def analyse(project: Project, environment: Mapping[str, str] | None = None,
     if options.cache_dir is None:
         return _analyse(project, env, options, None)
     with _stage(options, "cache"):  # a run with nothing changed: its model, kept
+        from .extract.cpp import cache as cpp_cache
+
         folder = (cpp_cache.default_folder(os.path.abspath(
             project.workspace[0] if project.workspace else project.folder))
                   if options.cache_dir == AUTO_CACHE else options.cache_dir)
@@ -85,7 +85,7 @@ def analyse(project: Project, environment: Mapping[str, str] | None = None,
         model = _again(project, env, options, folder, *earlier)
         if model is not None:
             with _stage(options, "cache"):
-                runcache.store_alias(folder, key, earlier[0])
+                runcache.store_alias(folder, key, earlier[0], outer)
             return model
     record: dict[str, Any] = {}
     model = _analyse(project, env, options, record)
@@ -98,31 +98,55 @@ def analyse(project: Project, environment: Mapping[str, str] | None = None,
 
 def _again(project: Project, env: Mapping[str, str], options: Options, folder: str,
            key: str, extraction: dict[str, Any]) -> Model | None:
-    """The model of the run ``key`` when extracting its nodes again gives what it gave
-    (the nodes as the build files made them, from ``extraction``); None otherwise."""
+    """The model of the run ``key`` when the C++ translation units of its nodes (in
+    ``extraction``) give what they gave, and the batch the diagnostics it gave: its C++
+    nodes are then what they were. None otherwise. The other nodes read no C++ file
+    (``_units_tell``): their results stand."""
+    from .extract.cpp import unit_digests
+
     with _stage(options, "scan"):
         workspace = scan(project.workspace, env)
-    try:
-        nodes = [node_from_data(data, package) for package, data in extraction["given"]]
-    except (KeyError, TypeError, ValueError, AttributeError):
+    paths = extraction.get("units")
+    if not isinstance(paths, list) or not all(isinstance(p, str) for p in paths):
         return None
-    found = _extract(nodes, workspace, project, options)
-    if _json(_gave(nodes, found)) != _json(extraction.get("gave")):
+    batch = None
+    if paths:
+        with _stage(options, "C++"):
+            batch = unit_digests(paths, workspace, cache_dir=options.cache_dir,
+                                 jobs=options.jobs, compile_commands=_compile_commands(project))
+    if _json(_gave(batch)) != _json(extraction.get("gave")):
         return None
     with _stage(options, "cache"):
         return runcache.load(folder, key)
 
 
+def _units_tell(nodes: list[Node]) -> bool:
+    """Whether the C++ translation units alone tell what a change to C++ files changes:
+    ``runcache``'s outer key covers every other file by content, and only a node of
+    another language with a source named as a C++ file would read one of them."""
+    return not any(n.language != "cpp" and any(s.endswith(runcache.CPP_FILES)
+                                               for s in n.sources) for n in nodes)
+
+
+def _compile_commands(project: Project) -> list[str] | None:
+    return [project.compile_commands] if project.compile_commands else None
+
+
 def _extract(nodes: list[Node], workspace: Workspace, project: Project,
-             options: Options) -> list[diag.Diagnostic]:
+             options: Options, cpp_batch: CppBatch | None = None
+             ) -> list[diag.Diagnostic]:
     return extract_nodes(  # every C++ source once, in parallel, cached
         nodes, workspace, cache_dir=options.cache_dir, jobs=options.jobs,
-        compile_commands=[project.compile_commands] if project.compile_commands else None,
-        timings=options.timings)
+        compile_commands=_compile_commands(project), timings=options.timings,
+        cpp_batch=cpp_batch)
 
 
-def _gave(nodes: list[Node], found: list[diag.Diagnostic]) -> dict[str, Any]:
-    return {"nodes": to_data(nodes), "diagnostics": to_data(found)}
+def _gave(batch: CppBatch | None) -> dict[str, Any]:
+    """What the C++ translation units of a batch (None: no C++ node) gave, in short: the
+    same units and diagnostics make the same C++ nodes (``extract.cpp.unit_digests``)."""
+    if batch is None:
+        return {"units": {}, "diagnostics": []}
+    return {"units": batch.units, "diagnostics": to_data(batch.diagnostics)}
 
 
 def _json(data: Any) -> str:
@@ -131,8 +155,15 @@ def _json(data: Any) -> str:
 
 def _analyse(project: Project, env: Mapping[str, str], options: Options,
              record: dict[str, Any] | None) -> Model:
-    """The run; ``record`` (when given) gets what source extraction was given and gave,
-    for ``_again`` (left empty when the nodes do not read back as they were)."""
+    """The run; ``record`` (when given) gets the C++ translation units of its nodes and
+    what they gave, for ``_again`` (left empty when a node of another language reads a
+    file named as C++: ``_units_tell``)."""
+    from . import graph, launch
+    from .graph.build import nodelet_plugin
+    from .model.runtime import Configuration
+    from .models.attach import Attacher
+    from .models.library import DATA, Library
+
     with _stage(options, "scan"):  # folders and package manifests
         workspace = scan(project.workspace, env)
     model = Model(project.name, diagnostics=list(workspace.diagnostics))
@@ -167,13 +198,15 @@ def _analyse(project: Project, env: Mapping[str, str], options: Options,
     for launched in launches.values():
         _rosrun_scripts(launched, workspace, nodes)
     every = [n for p in model.packages for n in p.nodes]
-    given = [[n.package, to_data(n)] for n in every] if record is not None else []
-    found = _extract(every, workspace, project, options)
-    model.diagnostics.extend(found)
-    if record is not None and all(  # the nodes read back as they were given
-            _json(to_data(node_from_data(data, package))) == _json(data)
-            for package, data in given):
-        record.update(given=given, gave=_gave(every, found))
+    sources = cpp_sources(every, workspace)
+    batch = None
+    if sources:  # libclang loads only when there is C++ to parse
+        from .extract.cpp import CppBatch
+
+        batch = CppBatch()
+    model.diagnostics.extend(_extract(every, workspace, project, options, batch))
+    if record is not None and _units_tell(every):
+        record.update(units=sources, gave=_gave(batch))
 
     project_file = Location(file=os.path.relpath(project.path))
     models = Attacher(Library(project.models, DATA if options.models else None),
@@ -209,6 +242,8 @@ def read_build_files(package: Package, workspace: Workspace) -> list[diag.Diagno
 
 
 def _read_build_files(package: Package, workspace: Workspace) -> list[diag.Diagnostic]:
+    from . import cmake, pysetup
+
     found: list[diag.Diagnostic] = []
     if package.build_type == "ament_python":
         package.nodes, found = pysetup.parse_package(package, workspace)
@@ -221,6 +256,8 @@ def _rosrun_scripts(launched: LaunchModel, workspace: Workspace,
                     nodes: dict[str, Node]) -> None:
     """Scripts that launch files start and only rosrun's search of the package finds:
     added to their package, to be extracted with every other node."""
+    from .rosrun import script_node
+
     for decl in launched.nodes:
         key = f"{decl.package}/{decl.executable}"
         package = workspace.packages.get(decl.package)
@@ -234,6 +271,8 @@ def _rosrun_scripts(launched: LaunchModel, workspace: Workspace,
 
 def launch_path(entry: str, project: Project, workspace: Workspace) -> str | None:
     """A launch file named ``pkg/relative/path`` (as in HAROS) or by a path."""
+    from .share import share_source
+
     candidate = os.path.join(project.folder, entry)
     if os.path.isabs(entry) or os.path.isfile(candidate):
         return candidate
@@ -248,6 +287,9 @@ def launch_path(entry: str, project: Project, workspace: Workspace) -> str | Non
 
 def _load_launch(spec: ConfigurationSpec, project: Project, workspace: Workspace,
                  env: Mapping[str, str]) -> LaunchModel:
+    from . import launch
+    from .launch.model import LaunchModel
+
     merged = LaunchModel()
     lines = spec.launch_lines or [spec.line] * len(spec.launch)
     for entry, line in zip(spec.launch, lines, strict=False):

@@ -13,8 +13,10 @@ upgraded changes its folder). A file changed inside an installed package without
 folder changing is not seen: ``--no-cache`` runs cold.
 
 When only C++ files changed (the outer key, over every file but the content of C++
-sources and headers, is that of a kept run), the pipeline extracts the nodes again from
-what the build files gave and answers with the kept run when they give what they gave.
+sources and headers, is that of a kept run), the pipeline extracts the C++ nodes again
+from what the build files gave and answers with the kept run when every translation unit
+gives what it gave; the other nodes read only files this key covers by content, so
+their results stand (``pipeline._reread``).
 
 Files larger than the readers read (``files.MAX_FILE_BYTES``: bags, maps, meshes) count
 by size and modification time, so a cold run does not hash gigabytes. Content hashes are
@@ -242,10 +244,13 @@ def store(folder: str, key: str, model: Model) -> None:
     _write(_entry(folder, key), {"model": data}, folder)
 
 
-def store_alias(folder: str, key: str, same_as: str) -> None:
-    """Run ``key`` gives the model (and findings) of run ``same_as``."""
+def store_alias(folder: str, key: str, same_as: str, outer: str | None = None) -> None:
+    """Run ``key`` gives the model (and findings) of run ``same_as`` (found through the
+    ``outer`` key's record, which stays as long as they do)."""
     try:
         os.utime(_entry(folder, same_as))  # the newest again: kept as long as its alias
+        if outer is not None:
+            os.utime(_entry(folder, outer + "-outer"))
     except OSError:
         return
     _write(_entry(folder, key), {"same_as": same_as}, folder)

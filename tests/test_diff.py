@@ -266,8 +266,8 @@ def test_rev_analyses_git_objects_and_reuses_the_parse_cache(
 
     stored: list[str] = []  # a unit is stored when it missed the cache and was parsed
     store = cache.Cache.store
-    monkeypatch.setattr(cache.Cache, "store", lambda self, entry, headers, result: (
-        stored.append(entry), store(self, entry, headers, result))[1])
+    monkeypatch.setattr(cache.Cache, "store", lambda self, entry, *rest: (
+        stored.append(entry), store(self, entry, *rest))[1])
     (repo / ROBOT).write_text("not committed")  # the working tree is not read or touched
     code, out, _ = run(["diff", "--rev", "HEAD~1..HEAD", "project.yaml", "--jobs", "1",
                         "--format", "json"], repo, capsys)

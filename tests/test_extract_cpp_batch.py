@@ -166,3 +166,37 @@ def test_cli_no_cache_and_jobs(copy: Path, tmp_path: Path,
     parsed = cli._parser().parse_args(["report", project, "-o", "r.html", "--no-cache",
                                        "--jobs", "0"])
     assert cli._options(parsed) == Options(cache_dir=None, jobs=1)
+
+
+def test_a_header_every_unit_includes_is_read_once(write_tree, monkeypatch) -> None:
+    """The include scan before parsing reads a workspace header once per run, however
+    many units include it, and gives each unit the same calls."""
+    unit = """
+        #include <ros/ros.h>
+        #include "talk/names.h"
+        int main(int argc, char** argv) {{
+          ros::init(argc, argv, "{0}");
+          ros::NodeHandle n;
+          n.advertise<std_msgs::String>(TOPIC, 1);
+          return 0;
+        }}
+        """
+    root = write_tree({
+        "src/talk/package.xml": "<package><name>talk</name></package>",
+        "src/talk/include/talk/names.h": '#include <std_msgs/String.h>\n'
+                                         '#define TOPIC "chatter"\n',
+        **{f"src/talk/src/{name}.cpp": unit.format(name) for name in ("a", "b", "c")}})
+    read: list[str] = []
+    real = headers.read_text
+
+    def reading(path: str, *args: object, **kwargs: object) -> object:
+        read.append(os.path.basename(path))
+        return real(path, *args, **kwargs)  # type: ignore[arg-type]
+
+    monkeypatch.setattr(headers, "read_text", reading)
+    workspace = scan([str(root / "src")], ENV)
+    nodes = [Node("talk", name, sources=[f"talk/src/{name}.cpp"]) for name in "abc"]
+    extract_nodes(nodes, workspace, cache_dir=None, jobs=1)
+    assert read.count("names.h") == 1
+    assert [[(c.kind, c.name) for c in n.calls] for n in nodes] == [
+        [("publish", "chatter")]] * 3

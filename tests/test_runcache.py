@@ -8,6 +8,8 @@ import os
 import shutil
 from pathlib import Path
 
+from conftest import package_xml
+
 from haros_arch import runcache
 from haros_arch.model.serialise import model_to_data
 from haros_arch.pipeline import Options, analyse
@@ -137,6 +139,18 @@ def test_a_cpp_change_that_extracts_the_same_reuses_the_rest(tmp_path: Path) -> 
     assert len(aliases) == 1  # the new key names the first run's entry (and findings)
 
 
+def test_repeated_cpp_changes_keep_finding_the_kept_run(tmp_path: Path, monkeypatch) -> None:
+    monkeypatch.setattr(runcache, "KEEP", 3)  # a few entries: the oldest go first
+    project = _copy_paper(tmp_path)
+    first, _ = _run(project, tmp_path / "cache")
+    source = project.parent / "src" / "example" / "src" / "active.cpp"
+    text = source.read_text()
+    for count in range(5):
+        source.write_text(text + f"\n// comment {count}\n")
+        again, timings = _run(project, tmp_path / "cache")
+        assert again == first and "graph" not in timings, count
+
+
 def test_a_cpp_change_that_extracts_otherwise_runs_again(tmp_path: Path) -> None:
     project = _copy_paper(tmp_path)
     first, _ = _run(project, tmp_path / "cache")
@@ -144,6 +158,131 @@ def test_a_cpp_change_that_extracts_otherwise_runs_again(tmp_path: Path) -> None
     source.write_text(source.read_text().replace('"monologue"', '"soliloquy"'))
     changed, timings = _run(project, tmp_path / "cache")
     assert "graph" in timings and "soliloquy" in changed and "soliloquy" not in first
+
+
+EXAMPLES = FIXTURE.parent.parent.parent / "examples"
+
+
+def _copy_examples(tmp_path: Path) -> Path:
+    shutil.copytree(EXAMPLES, tmp_path / "examples")
+    for folder, _dirs, files in os.walk(tmp_path / "examples"):
+        for name in files:
+            os.utime(os.path.join(folder, name), (1_000_000_000, 1_000_000_000))
+    return tmp_path / "examples" / "project.yaml"
+
+
+def test_a_cpp_change_does_not_extract_the_python_nodes_again(tmp_path: Path,
+                                                              monkeypatch) -> None:
+    from haros_arch.extract import python
+    from haros_arch.extract.cpp import cache as cpp_cache
+
+    project = _copy_examples(tmp_path)
+    first, _ = _run(project, tmp_path / "cache")
+    assert '"language": "python"' in first and '"language": "cpp"' in first
+    source = project.parent / "src" / "demo_robot" / "src" / "driver.cpp"
+    source.write_text(source.read_text() + "\n// a comment\n")
+
+    def fails(*args: object, **kwargs: object) -> None:
+        raise AssertionError("a Python node extracted again")
+
+    with monkeypatch.context() as patch:
+        patch.setattr(python, "extract_python", fails)
+        patch.setattr(cpp_cache, "from_data", fails)  # no unit's kept calls read back
+        again, timings = _run(project, tmp_path / "cache")
+    assert "C++" in timings and "graph" not in timings  # the kept run answered
+    fresh = analyse(load(str(project)), {}, Options(cache_dir=None, jobs=1))
+    assert again == first == json.dumps(model_to_data(fresh), sort_keys=True)
+
+
+def test_a_python_change_after_a_cpp_change_is_in_the_model(tmp_path: Path) -> None:
+    project = _copy_examples(tmp_path)
+    first, _ = _run(project, tmp_path / "cache")
+    cpp = project.parent / "src" / "demo_robot" / "src" / "driver.cpp"
+    cpp.write_text(cpp.read_text() + "\n// a comment\n")
+    _run(project, tmp_path / "cache")  # kept under the outer key of the C++ change
+    script = project.parent / "src" / "demo_rover" / "scripts" / "safety_stop.py"
+    script.write_text(script.read_text().replace('"cmd_vel"', '"cmd_vel_safe"'))
+    os.utime(script, (1_000_000_000, 1_000_000_000))  # same time: its content counts
+    changed, timings = _run(project, tmp_path / "cache")
+    assert "Python" in timings and "cmd_vel_safe" in changed and "cmd_vel_safe" not in first
+    fresh = analyse(load(str(project)), {}, Options(cache_dir=None, jobs=1))
+    assert changed == json.dumps(model_to_data(fresh), sort_keys=True)
+    cpp.write_text(cpp.read_text() + "// another\n")  # and a C++ change after it
+    again, _ = _run(project, tmp_path / "cache")
+    assert again == changed
+
+
+def test_a_python_node_with_a_source_named_as_cpp_is_not_left_to_the_cpp_units(
+        tmp_path: Path, monkeypatch) -> None:
+    from haros_arch import pipeline
+    from haros_arch.model.source import Node
+
+    cpp = Node(package="p", executable="a", language="cpp")
+    py = Node(package="p", executable="b", language="python",
+              sources=["p/b.py"])
+    assert pipeline._units_tell([cpp, py])
+    odd = Node(package="p", executable="c", language="python",
+               sources=["p/c.h"])
+    assert not pipeline._units_tell([cpp, py, odd])  # no C++-only path then
+
+
+HEADER_WORKSPACE = {
+    "src/talk/package.xml": package_xml("talk"),
+    "src/talk/CMakeLists.txt": """
+        project(talk)
+        find_package(catkin REQUIRED COMPONENTS roscpp std_msgs)
+        include_directories(include)
+        add_executable(talker src/talker.cpp)
+        add_executable(listener src/listener.cpp)
+        """,
+    "src/talk/include/talk/names.h": '#define TOPIC "chatter"\n',
+    "src/talk/src/talker.cpp": """
+        #include <ros/ros.h>
+        #include <std_msgs/String.h>
+        #include "talk/names.h"
+        int main(int argc, char** argv) {
+          ros::init(argc, argv, "talker");
+          ros::NodeHandle n;
+          ros::Publisher p = n.advertise<std_msgs::String>(TOPIC, 1);
+          return 0;
+        }
+        """,
+    "src/talk/src/listener.cpp": """
+        #include <ros/ros.h>
+        #include <std_msgs/String.h>
+        void heard(const std_msgs::String::ConstPtr& m) {}
+        int main(int argc, char** argv) {
+          ros::init(argc, argv, "listener");
+          ros::NodeHandle n;
+          ros::Subscriber s = n.subscribe("chatter", 1, heard);
+          return 0;
+        }
+        """,
+    "src/talk/launch/both.launch": """
+        <launch>
+          <node name="talker" pkg="talk" type="talker"/>
+          <node name="listener" pkg="talk" type="listener"/>
+        </launch>
+        """,
+    "project.yaml": "project: p\nworkspace: src\nconfigurations:\n"
+                    "  c: [talk/launch/both.launch]\n",
+}
+
+
+def test_a_header_change_is_in_the_model_and_one_that_changes_nothing_reuses_it(
+        tmp_path: Path, write_tree) -> None:
+    root = write_tree(HEADER_WORKSPACE)
+    project, header = root / "project.yaml", root / "src/talk/include/talk/names.h"
+    first, _ = _run(project, tmp_path / "cache")
+    assert '"chatter"' in first
+    header.write_text('#define TOPIC "chatter"  // the same topic\n')
+    same, timings = _run(project, tmp_path / "cache")
+    assert same == first and "C++" in timings and "graph" not in timings
+    header.write_text('#define TOPIC "babble"\n')
+    changed, timings = _run(project, tmp_path / "cache")
+    assert "graph" in timings and '"babble"' in changed and '"babble"' not in first
+    fresh = analyse(load(str(project)), {}, Options(cache_dir=None, jobs=1))
+    assert changed == json.dumps(model_to_data(fresh), sort_keys=True)
 
 
 def test_the_example_gives_one_model_and_findings_cold_cached_and_touched(tmp_path: Path
@@ -254,22 +393,29 @@ def test_an_unchanged_runs_report_page_is_kept_with_it(tmp_path: Path, monkeypat
     """`report` twice with nothing changed renders the page once and writes the same
     bytes; a changed source renders it again."""
     from haros_arch.cli import main
-    from haros_arch.viz import html
+    from haros_arch.viz import command, html
 
     project = _copy(tmp_path)
     rendered: list[int] = []
-    original = html.render_report
+    documents: list[int] = []
+    original, document = html.render_report, command.model_data
 
     def counting(*args, **kwargs):
         rendered.append(1)
         return original(*args, **kwargs)
 
+    def counting_documents(*args, **kwargs):
+        documents.append(1)
+        return document(*args, **kwargs)
+
     monkeypatch.setattr(html, "render_report", counting)
+    monkeypatch.setattr(command, "model_data", counting_documents)
     pages = []
     for name in ("a.html", "b.html"):
         assert main(["report", str(project), "-o", str(tmp_path / name)]) == 0
         pages.append((tmp_path / name).read_bytes())
     assert len(rendered) == 1 and pages[0] == pages[1]
+    assert len(documents) == 1  # a kept page needs no document of the model
     source = next((tmp_path / "ws").rglob("*.py"))
     source.write_text(source.read_text() + "\n# changed\n")
     assert main(["report", str(project), "-o", str(tmp_path / "c.html")]) == 0

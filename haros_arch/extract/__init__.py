@@ -13,6 +13,7 @@ import os
 import time
 from collections.abc import Sequence
 from dataclasses import replace
+from typing import TYPE_CHECKING
 
 from .. import diagnostics as diag
 from ..diagnostics import Diagnostic
@@ -20,22 +21,28 @@ from ..model.source import Node
 from ..model.values import UNKNOWN_MARK
 from ..workspace import Workspace
 
+if TYPE_CHECKING:
+    from .cpp import CppBatch
+
 AUTO_CACHE = "auto"  # cache_dir: the default cache folder (``cpp.cache.default_folder``)
 
 
 def extract_nodes(nodes: Sequence[Node], workspace: Workspace, *,
                   cache_dir: str | None = AUTO_CACHE, jobs: int | None = None,
                   compile_commands: Sequence[str] | None = None,
-                  timings: dict[str, float] | None = None) -> list[Diagnostic]:
+                  timings: dict[str, float] | None = None,
+                  cpp_batch: CppBatch | None = None) -> list[Diagnostic]:
     """Extract every node; C++ nodes in one batch (``cpp.extract_cpp_nodes``): a source
     shared by several nodes is parsed once. ``cache_dir`` None: no cache; ``jobs``: worker
     processes (default: the number of cores); ``compile_commands``: the
     compile_commands.json files to take flags from (None: those in the workspace);
     ``timings``, when given, gets the seconds of the C++ batch ("C++") and of the
-    other nodes ("Python"), added."""
+    other nodes ("Python"), added; ``cpp_batch``, when given, the C++ batch's own
+    diagnostics and the digest of what each translation unit gave (``CppBatch.units``;
+    not the node results, which are the nodes')."""
     found: list[Diagnostic] = []
     start = time.perf_counter()
-    cpp = [node for node in nodes if node.language == "cpp" and node.sources]
+    cpp = _cpp_nodes(nodes)
     if cpp:
         from .cpp import extract_cpp_nodes  # libclang loads only when there is C++ to parse
 
@@ -45,6 +52,9 @@ def extract_nodes(nodes: Sequence[Node], workspace: Workspace, *,
         for node, result in zip(cpp, batch.results, strict=True):
             node.calls, node.rosname = result.calls, _rosname(node, result.rosname)
             _process_nodes(node, result.rosnames)
+        if cpp_batch is not None:
+            cpp_batch.units.update(batch.units)
+            cpp_batch.diagnostics.extend(batch.diagnostics)
         found.extend(batch.all_diagnostics())
         for node, result in zip(cpp, batch.results, strict=True):
             found.extend(completeness(node, [*batch.diagnostics, *result.diagnostics]))
@@ -58,6 +68,16 @@ def extract_nodes(nodes: Sequence[Node], workspace: Workspace, *,
         timings["C++"] = timings.get("C++", 0.0) + middle - start
         timings["Python"] = timings.get("Python", 0.0) + time.perf_counter() - middle
     return found
+
+
+def _cpp_nodes(nodes: Sequence[Node]) -> list[Node]:
+    return [node for node in nodes if node.language == "cpp" and node.sources]
+
+
+def cpp_sources(nodes: Sequence[Node], workspace: Workspace) -> list[str]:
+    """The C++ translation units ``extract_nodes`` reads for ``nodes``, in its order
+    (``cpp.unit_digests`` of them gives what its C++ batch gave)."""
+    return [path for node in _cpp_nodes(nodes) for path in _paths(node, workspace)]
 
 
 # What leaves a node's calls partly unknown, per language: the code of the diagnostic of

@@ -24,39 +24,90 @@ from .values import Value
 
 def to_data(obj: Any) -> Any:
     """Turn a model object (or a container of them) into JSON-ready data."""
-    if obj is None or isinstance(obj, bool | int | float | str):
+    kind = _KINDS.get(type(obj))
+    if kind is None:
+        kind = _kind(obj)
+    if kind == "plain":
         return obj
-    if isinstance(obj, Value):
-        return obj.text
-    if isinstance(obj, RosName):
-        return obj.full
-    if dataclasses.is_dataclass(obj) and not isinstance(obj, type):
+    if kind == "dataclass":
         return _dataclass_to_data(obj)
-    if isinstance(obj, dict):
+    if kind == "list":
+        return [to_data(v) for v in obj]
+    if kind == "value":
+        return obj.text
+    if kind == "rosname":
+        return obj.full
+    if kind == "dict":
         return {str(k): to_data(v) for k, v in obj.items()}
-    if isinstance(obj, list | tuple | set | frozenset):
-        items = [to_data(v) for v in obj]
-        return sorted(items) if isinstance(obj, set | frozenset) else items
+    if kind == "set":
+        return sorted(to_data(v) for v in obj)
     raise TypeError(f"cannot serialise {type(obj).__name__}")
 
 
+_KINDS: dict[type, str] = {}  # what ``to_data`` does with an object of each type
+
+
+def _kind(obj: Any) -> str:
+    """What ``to_data`` does with ``obj`` (remembered for its type, but for classes)."""
+    if obj is None or isinstance(obj, bool | int | float | str):
+        kind = "plain"
+    elif isinstance(obj, Value):
+        kind = "value"
+    elif isinstance(obj, RosName):
+        kind = "rosname"
+    elif isinstance(obj, type):
+        return "other"  # a class (a dataclass's too) is not model data
+    elif dataclasses.is_dataclass(obj):
+        kind = "dataclass"
+    elif isinstance(obj, dict):
+        kind = "dict"
+    elif isinstance(obj, list | tuple):
+        kind = "list"
+    elif isinstance(obj, set | frozenset):
+        kind = "set"
+    else:
+        kind = "other"
+    _KINDS[type(obj)] = kind
+    return kind
+
+
+# per dataclass: its head views, its written fields as (name, key, the field when it is
+# optional, whether it is a reference), its optional views and its views
+_Plan = tuple[dict[str, Any], tuple[tuple[str, str, "dataclasses.Field[Any] | None", bool],
+                                    ...], tuple[str, ...], dict[str, Any]]
+_PLANS: dict[type, _Plan] = {}
+
+
+def _plan(cls: type) -> _Plan:
+    """What ``_dataclass_to_data`` writes of a class, read from its fields once."""
+    plan = _PLANS.get(cls)
+    if plan is None:
+        written = []
+        for f in dataclasses.fields(cls):
+            key = f.metadata.get("json", f.name)
+            if key is not False:
+                written.append((f.name, key, f if f.metadata.get("optional") else None,
+                                bool(f.metadata.get("ref"))))
+        plan = (getattr(cls, "JSON_HEAD", {}), tuple(written),
+                getattr(cls, "JSON_OPTIONAL_VIEWS", ()), getattr(cls, "JSON_VIEWS", {}))
+        _PLANS[cls] = plan
+    return plan
+
+
 def _dataclass_to_data(obj: Any) -> dict[str, Any]:
+    head, written, optional_views, views = _plan(type(obj))
     data: dict[str, Any] = {}
-    for key, view in getattr(obj, "JSON_HEAD", {}).items():
+    for key, view in head.items():
         data[key] = to_data(view(obj))
-    for f in dataclasses.fields(obj):
-        key = f.metadata.get("json", f.name)
-        if key is False:
+    for name, key, optional, ref in written:
+        value = getattr(obj, name)
+        if optional is not None and value == _default(optional):
             continue
-        value = getattr(obj, f.name)
-        if f.metadata.get("optional") and value == _default(f):
-            continue
-        if f.metadata.get("ref"):
+        if ref:
             data[key] = None if value is None else value.name
         else:
             data[key] = to_data(value)
-    optional_views = getattr(obj, "JSON_OPTIONAL_VIEWS", ())
-    for key, view in getattr(obj, "JSON_VIEWS", {}).items():
+    for key, view in views.items():
         value = view(obj)
         if value or key not in optional_views:
             data[key] = to_data(value)

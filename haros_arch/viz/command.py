@@ -50,18 +50,19 @@ def workspace_root(project: Project | None, given: str | None) -> str:
     return os.getcwd()
 
 
-def report_page(model: Model, data: dict[str, Any], findings: list[Any], root: str,
-                project: Project) -> str:
-    """The report page of an analysed ``model`` (``data`` its document): read back when
-    the same unchanged run rendered it before with the same findings and workspace root
-    (``runcache.page``), else rendered. Only a root inside the project's workspace is
-    covered by the run's key (the page quotes its sources), so any other is rendered."""
+def report_page(model: Model, findings: list[Any], root: str, project: Project) -> str:
+    """The report page of an analysed ``model``: read back when the same unchanged run
+    rendered it before with the same findings and workspace root (``runcache.page``; the
+    model's document is then not even made), else rendered. Only a root inside the
+    project's workspace is covered by the run's key (the page quotes its sources), so any
+    other is rendered."""
     from .. import runcache
     from .html import render_report
 
     full = os.path.abspath(root)
     tops = [os.path.abspath(os.path.join(project.folder, w)) for w in project.workspace]
     if not any(full == top or full.startswith(top.rstrip(os.sep) + os.sep) for top in tops):
-        return render_report(data, findings, root)
+        return render_report(model_data(model), findings, root)
     inputs = json.dumps([full, findings], sort_keys=True, default=str)
-    return runcache.page(model, inputs, lambda: render_report(data, findings, root))
+    return runcache.page(model, inputs,
+                         lambda: render_report(model_data(model), findings, root))

@@ -86,6 +86,9 @@ class CppBatch:
 
     results: list[CppResult] = field(default_factory=list)
     diagnostics: list[Diagnostic] = field(default_factory=list)
+    # each translation unit's path and the digest of what it gave (``cache.digest``): two
+    # batches of the same nodes whose units and diagnostics agree give the same results
+    units: dict[str, str] = field(default_factory=dict)
 
     def all_diagnostics(self) -> list[Diagnostic]:
         """Every diagnostic once (a translation unit shared by nodes reports once)."""
@@ -124,6 +127,31 @@ def extract_cpp_nodes(nodes: Sequence[Sequence[str]], workspace: Workspace, *,
     Every translation unit is read and parsed once however many nodes build it, all of
     them in one pool of worker processes; options as for ``extract_cpp``.
     """
+    batch, results = _batch(nodes, workspace, include_dirs, system_headers, cache_dir, jobs,
+                            compile_commands, True)
+    for sources in nodes:
+        batch.results.append(_node_result(
+            [(p, results[p]) for p in dict.fromkeys(map(os.path.abspath, sources))
+             if p in results]))
+    return batch
+
+
+def unit_digests(paths: Sequence[str], workspace: Workspace, *,
+                 cache_dir: str | None = cache.AUTO, jobs: int | None = None,
+                 compile_commands: Sequence[str] | None = None) -> CppBatch:
+    """What the translation units ``paths`` (the sources of a batch's nodes, in order)
+    give, in short: the batch's own diagnostics and each unit's digest (``CppBatch.units``),
+    no results (a unit's kept result is not even read back); options as for
+    ``extract_cpp``. The same as a batch of the same nodes gave: the same results."""
+    return _batch([paths], workspace, (), False, cache_dir, jobs, compile_commands, False)[0]
+
+
+def _batch(nodes: Sequence[Sequence[str]], workspace: Workspace, include_dirs: Sequence[str],
+           system_headers: bool, cache_dir: str | None, jobs: int | None,
+           compile_commands: Sequence[str] | None, wanted: bool
+           ) -> tuple[CppBatch, dict[str, CppResult]]:
+    """The batch's diagnostics and unit digests, and each unit's result (without
+    ``wanted``: only those parsed)."""
     batch = CppBatch()
     if compile_commands is None:
         compile_commands = commands.find(workspace)
@@ -144,15 +172,11 @@ def extract_cpp_nodes(nodes: Sequence[Sequence[str]], workspace: Workspace, *,
             if text is not None:
                 texts[path] = text
                 ros2[path] = _is_ros2(path, setup.scan(path, text), workspace)
-        results = _units(texts, ros2, setup, store, jobs)
+        results = _units(texts, ros2, setup, store, jobs, batch.units, wanted)
     finally:
         setup.close()
     batch.diagnostics += [*setup.diagnostics, *read]
-    for sources in nodes:
-        batch.results.append(_node_result(
-            [(p, results[p]) for p in dict.fromkeys(map(os.path.abspath, sources))
-             if p in results]))
-    return batch
+    return batch, results
 
 
 def _is_ros2(path: str, included: bool, workspace: Workspace) -> bool:
@@ -241,8 +265,11 @@ def _node_of(owner: str | None, owners: dict[str, list[str]],
 
 
 def _units(texts: dict[str, str], ros2: dict[str, bool], setup: IncludeSetup,
-           store: cache.Cache | None, jobs: int | None) -> dict[str, CppResult]:
-    """Each translation unit's result, from the cache or parsed (in parallel)."""
+           store: cache.Cache | None, jobs: int | None, digests: dict[str, str],
+           wanted: bool = True) -> dict[str, CppResult]:
+    """Each translation unit's result, from the cache or parsed (in parallel); the
+    digest of each in ``digests``. Without ``wanted`` a kept result is not read back
+    (only its digest) and is left out."""
     keys = {path: cache.key(setup.workspace.relpath(path), text,
                             [*setup.arguments(False, path), f"ros2={ros2[path]}"],
                             setup.generated)
@@ -250,15 +277,18 @@ def _units(texts: dict[str, str], ros2: dict[str, bool], setup: IncludeSetup,
     done: dict[str, CppResult] = {}
     if store is not None:
         for path, entry in keys.items():
-            data = store.load(entry)
-            if data is not None:
+            kept = store.load(entry)
+            if kept is not None and not wanted:
+                digests[path] = kept[1]
+            elif kept is not None:
                 try:
-                    calls, rosname, found, facts, named, made = cache.from_data(data)
+                    calls, rosname, found, facts, named, made = cache.from_data(kept[0])
                 except (ValueError, TypeError, KeyError):
                     continue
                 done[path] = CppResult(calls, rosname, found, facts, node_names=named,
                                        constructions=made)
-    todo = [path for path in texts if path not in done]
+                digests[path] = kept[1]
+    todo = [path for path in texts if path not in done and path not in digests]
     tasks = [(path, texts[path], ros2[path]) for path in todo]
     workers = min(len(todo), jobs or os.cpu_count() or 1)
     parsed: list[tuple[CppResult, list[str]]]
@@ -275,11 +305,12 @@ def _units(texts: dict[str, str], ros2: dict[str, bool], setup: IncludeSetup,
         parsed = [_translation_unit(*task, setup) for task in tasks]
     for path, (unit, headers) in zip(todo, parsed, strict=True):
         done[path] = unit
+        data = cache.to_data(unit.calls, unit.rosname, unit.diagnostics, unit.facts,
+                             unit.node_names, unit.constructions)
+        digests[path] = cache.digest(data)
         if store is not None and headers:
-            store.store(keys[path], headers, cache.to_data(
-                unit.calls, unit.rosname, unit.diagnostics, unit.facts, unit.node_names,
-                unit.constructions))
-    return {path: done[path] for path in texts}
+            store.store(keys[path], headers, data, digests[path])
+    return {path: done[path] for path in texts if path in done}
 
 
 _WORKER_SETUP: IncludeSetup | None = None
@@ -326,7 +357,7 @@ def _translation_unit(path: str, text: str, ros2: bool,
     if tu is None:
         return result, []
     errors = [d for d in tu.diagnostics if d.severity >= ClangDiagnostic.Error
-              and d.location.file is not None and owned(d.location.file.name)]
+              and (loc := d.location).file is not None and owned(loc.file.name)]
     fieldless = _fieldless_packages(setup.diagnostics)
     for error in errors[:MAX_ERRORS_PER_FILE]:
         loc = error.location
@@ -464,7 +495,7 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
 
     def mine(unit: TranslationUnit) -> list[ClangDiagnostic]:
         return [d for d in _errors(unit)
-                if d.location.file is not None and owned(d.location.file.name)]
+                if (loc := d.location).file is not None and owned(loc.file.name)]
 
     first = mine(tu)
     before = len(first)
@@ -546,8 +577,8 @@ def _can_hide(tu: TranslationUnit, errors: list[ClangDiagnostic],
 def _located(errors: list[ClangDiagnostic],
              source: SourceCache) -> list[tuple[str, bytes | None, int]]:
     """Errors as ``synthesis.Names.learn`` reads them: message, file bytes, offset."""
-    return [(d.spelling, source.get(d.location.file.name), d.location.offset)
-            for d in errors if d.location.file is not None]
+    return [(d.spelling, source.get(loc.file.name), loc.offset)
+            for d in errors if (loc := d.location).file is not None]
 
 
 class SourceCache(dict[str, bytes]):

@@ -77,6 +77,11 @@ def key(path: str, text: str, args: Iterable[str], generated: str) -> str:
     return digest.hexdigest()
 
 
+def digest(result: dict[str, Any]) -> str:
+    """Of a translation unit's result (``to_data``): equal digests, equal results."""
+    return hashlib.sha256(json.dumps(result, sort_keys=True).encode()).hexdigest()
+
+
 def fingerprint(path: str) -> str | None:
     """The content hash of a file, None when it cannot be read."""
     try:
@@ -103,34 +108,38 @@ class Cache:
                 text.encode("utf-8")).hexdigest()
         return self._digests[path]
 
-    def load(self, entry: str) -> dict[str, Any] | None:
-        """The stored result for key ``entry`` if its headers are unchanged."""
+    def load(self, entry: str) -> tuple[dict[str, Any], str] | None:
+        """The stored result for key ``entry`` if its headers are unchanged, and its
+        ``digest`` (kept with it)."""
         try:
             with open(os.path.join(self.folder, entry + ".json"), encoding="utf-8") as handle:
                 data = json.load(handle)
-            for name, digest in data["headers"]:
-                if self._fingerprint(name.replace(GENERATED, self.generated, 1)) != digest:
+            for name, hashed in data["headers"]:
+                if self._fingerprint(name.replace(GENERATED, self.generated, 1)) != hashed:
                     return None
             result: dict[str, Any] = data["result"]
-            return result
+            kept = data.get("digest")
+            return result, kept if isinstance(kept, str) else digest(result)
         except (OSError, ValueError, KeyError, TypeError):
             return None
 
-    def store(self, entry: str, headers: Iterable[str], result: dict[str, Any]) -> None:
+    def store(self, entry: str, headers: Iterable[str], result: dict[str, Any],
+              result_digest: str | None = None) -> None:
         listed = []
         derived = os.path.join(self.generated, HEADER_NAME)
         for name in headers:
             if name == derived:  # the names declared for this unit: never on disk, and
                 continue  # made from the source and the other headers, which are listed
-            digest = fingerprint(name)
-            if digest is None:
+            hashed = fingerprint(name)
+            if hashed is None:
                 return
-            listed.append([name.replace(self.generated, GENERATED, 1), digest])
+            listed.append([name.replace(self.generated, GENERATED, 1), hashed])
         try:
             os.makedirs(self.folder, exist_ok=True)
             fd, temporary = tempfile.mkstemp(dir=self.folder, suffix=".tmp")
             with os.fdopen(fd, "w", encoding="utf-8") as handle:
-                json.dump({"headers": listed, "result": result}, handle)
+                json.dump({"headers": listed, "result": result,
+                           "digest": result_digest or digest(result)}, handle)
             os.replace(temporary, os.path.join(self.folder, entry + ".json"))
         except OSError:
             pass  # a cache that cannot be written is no cache, not an error

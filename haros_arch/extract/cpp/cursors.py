@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import ctypes
 import sys
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from typing import Any, Generic, TypeVar
 
 from clang.cindex import (
@@ -29,11 +29,12 @@ from clang.cindex import (
     SourceLocation,
     SourceRange,
     TranslationUnit,
+    c_object_p,
     callbacks,
     conf,
 )
 
-__all__ = ["Node", "root"]
+__all__ = ["Node", "children_in", "root"]
 
 _VISIT = callbacks["cursor_visit"]
 Value = TypeVar("Value")
@@ -95,10 +96,15 @@ class _Unit:
     def file(self, handle: File | None) -> _File | None:
         if handle is None:
             return None
-        key = ctypes.cast(handle.obj, ctypes.c_void_p).value
+        return self.handle(ctypes.cast(handle.obj, ctypes.c_void_p).value, handle.obj)
+
+    def handle(self, key: int | None, obj: Any) -> _File | None:
+        """The one ``_File`` of the file handle ``obj`` whose address is ``key``."""
+        if not key:
+            return None
         found = self.files.get(key)
         if found is None:
-            found = self.files[key] = _File(handle.obj)
+            found = self.files[key] = _File(obj)
             found._tu = self.tu
         return found
 
@@ -156,6 +162,36 @@ def root(tu: TranslationUnit) -> Node:
     node = _Unit(tu).node(tu.cursor)
     assert node is not None
     return node
+
+
+def children_in(parent: Cursor, wanted: Callable[[str], bool]) -> list[Cursor]:
+    """The children of ``parent`` (the unit, a namespace, a class) whose location is in
+    a file whose name is ``wanted``, in order: what a loop over its children that asks
+    each one's ``location.file`` keeps, each file told in the visit by its handle and
+    a node made only for the children kept (most of a unit's are in headers nobody
+    walks)."""
+    assert isinstance(parent, Node)
+    unit = parent._unit
+    lib = conf.lib
+    handle = c_object_p()
+    kept: dict[int | None, bool] = {}
+    found: list[bytes] = []
+
+    def visit(child: Cursor, _parent: Cursor, _data: object) -> int:
+        lib.clang_getInstantiationLocation(lib.clang_getCursorLocation(child),
+                                           ctypes.byref(handle), None, None, None)
+        key = ctypes.cast(handle, ctypes.c_void_p).value
+        keep = kept.get(key)
+        if keep is None:
+            file = unit.handle(key, ctypes.cast(key, c_object_p)) if key else None
+            keep = kept[key] = file is not None and wanted(file.name)
+        if keep:
+            found.append(bytes(child))
+        return 1  # CXChildVisit_Continue
+
+    lib.clang_visitChildren(parent, _VISIT(visit), None)
+    made = unit.made
+    return [made(raw) for raw in found]
 
 
 class _File(File):

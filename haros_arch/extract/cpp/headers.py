@@ -175,6 +175,9 @@ class IncludeSetup:
         self.diagnostics: list[Diagnostic] = []
         self._handled: set[str] = set()
         self._scanned: dict[str, bool] = {}  # file -> ROS 2 code (see ``scan``)
+        # (header, folder of a quoted include) -> what ``_prepare`` found, when it
+        # changed nothing
+        self._looked_up: dict[tuple[str, str], str | None] = {}
         self.written: dict[str, str] = {}  # synthesised header path -> its text
         self.overflow = os.path.join(self.generated, OVERFLOW)
         self._folders: set[str] = set()  # the folders of the written headers
@@ -230,13 +233,20 @@ class IncludeSetup:
         self._scanned[path] = False  # a header that includes itself back
         ros2 = False
         file = self.workspace.location(path)
+        folder = os.path.dirname(path)
+        line, counted = 1, 0  # the line of the include, counted on from the last one
         for match in _INCLUDE.finditer(text):
             header = match.group(2).strip()
             ros2 = ros2 or is_ros2_header(header)
-            line = text.count("\n", 0, match.start()) + 1
+            line += text.count("\n", counted, match.start())
+            counted = match.start()
             where = Location(file.package, file.file, line, match.start(2) - match.start() + 1)
-            found = self._prepare(header, os.path.dirname(path), match.group(1) == '"', where)
-            if found and self._inside(found):
+            found = self._prepare(header, folder, match.group(1) == '"', where)
+            if not found or not self._inside(found):
+                continue
+            if found in self._scanned:  # a header scanned before: not read again
+                ros2 = self._scanned[found] or ros2
+            else:
                 more, _ = read_text(found, self.workspace.location(found))
                 if more is not None:
                     ros2 = self.scan(found, more) or ros2
@@ -244,9 +254,21 @@ class IncludeSetup:
         return ros2
 
     def _prepare(self, header: str, folder: str, quoted: bool, where: Location) -> str | None:
-        """Make ``header`` resolvable; return the real file it resolves to, if any."""
+        """Make ``header`` resolvable; return the real file it resolves to, if any. An
+        include that changed nothing (a workspace header, a stand-in's) is answered the
+        same way again without the look-ups: every unit includes them."""
         if header in self._handled:
             return None
+        key = (header, folder if quoted else "")
+        if key in self._looked_up:
+            return self._looked_up[key]
+        marks = (len(self.diagnostics), len(self.written), len(self._handled))
+        found = self._look_up(header, folder, quoted, where)
+        if marks == (len(self.diagnostics), len(self.written), len(self._handled)):
+            self._looked_up[key] = found
+        return found
+
+    def _look_up(self, header: str, folder: str, quoted: bool, where: Location) -> str | None:
         if quoted and os.path.isfile(os.path.join(folder, header)):
             return os.path.join(folder, header)
         ros2 = _ROS2_HEADER.fullmatch(header)

@@ -14,6 +14,8 @@ write in the file.
 
 from __future__ import annotations
 
+from collections.abc import Callable, Sequence
+
 from clang.cindex import Cursor, CursorKind
 
 from .tested import Key, key
@@ -22,6 +24,10 @@ from .values import _may_write, _plain_value, _walk, key_of, strip
 _REFS = (CursorKind.MEMBER_REF_EXPR, CursorKind.DECL_REF_EXPR)
 _ASSIGNING = ("++", "--", "&")
 _READING = ("&&", "||", "==", "!=", "<", ">", "<=", ">=", "+", "-", "*", "/", "%")
+
+
+def _every(_index: int) -> bool:
+    return True
 
 
 def member_of(expr: Cursor | None) -> Cursor | None:
@@ -37,18 +43,73 @@ def member_of(expr: Cursor | None) -> Cursor | None:
 
 class MemberWrites:
     """The writes of each member variable in one file's functions, and the member each
-    call's result is assigned to (``x_ = nh.param<T>(..)``)."""
+    call's result is assigned to (``x_ = nh.param<T>(..)``).
 
-    def __init__(self, functions: list[Cursor], source: dict[str, bytes]) -> None:
+    Each function is read when an answer may depend on it, once: for the writes of a
+    member, every function whose text names the member; for the member a call's result
+    goes to, the functions whose text holds the call (the assignment is around it). A
+    function whose text is not all its code (a macro expansion or an ``#include`` in
+    it, ``opaque``: (file, offset) of each), or whose text is not at hand, is read for
+    every question. The answers are those of reading every function."""
+
+    def __init__(self, functions: list[Cursor], source: dict[str, bytes],
+                 opaque: Sequence[tuple[str, int]] = ()) -> None:
         self.source = source
         self.count: dict[tuple[str, int], int] = {}
-        self.assigned: dict[Key, Cursor] = {}  # a call -> the member its result is put in
+        # a call -> (the index of the function that assigns it, the member its result
+        # is put in): the last function's, as a read of all in order gives
+        self._assigned: dict[Key, tuple[int, Cursor]] = {}
+        self._functions = functions
+        self._read: set[int] = set()
+        self._index = 0  # of the function being read
+        self._spans: list[tuple[str, int, int] | None] = []
+        self._texts: list[bytes | None] = []
+        inside: dict[str, list[int]] = {}
+        for where, offset in opaque:
+            inside.setdefault(where, []).append(offset)
         for function in functions:
-            for node in _walk(function):
-                self._visit(node)
+            start, end = function.extent.start, function.extent.end
+            name: str | None = start.file.name if start.file is not None else None
+            data = source.get(name) if name is not None and end.file is not None and (
+                end.file.name == name) else None
+            if name is None or data is None or any(
+                start.offset <= at <= end.offset for at in inside.get(name, ())
+            ):
+                self._spans.append(None)
+                self._texts.append(None)
+                continue
+            self._spans.append((name, start.offset, end.offset))
+            self._texts.append(data[start.offset:end.offset])
 
     def writes(self, member: Cursor) -> int:
+        spelling = member.spelling.encode("utf-8")
+        self._read_where(lambda index: spelling in self._texts[index])  # type: ignore[operator]
         return self.count.get(key_of(member), 0)
+
+    def assigned(self, call: Cursor) -> Cursor | None:
+        """The member ``call``'s result is assigned to, if any."""
+        made = key(call)
+        if made is None:
+            return None
+        name, start, end = made
+
+        def holds(index: int) -> bool:
+            span = self._spans[index]
+            return span is not None and span[0] == name and span[1] <= start <= end <= span[2]
+
+        # a call no function's text holds (in an #include in a body): every function
+        self._read_where(holds if any(map(holds, range(len(self._spans)))) else _every)
+        found = self._assigned.get(made)
+        return found[1] if found is not None else None
+
+    def _read_where(self, wanted: Callable[[int], bool]) -> None:
+        for index, function in enumerate(self._functions):
+            if index in self._read or (self._texts[index] is not None and not wanted(index)):
+                continue
+            self._read.add(index)
+            self._index = index
+            for node in _walk(function):
+                self._visit(node)
 
     def _add(self, member: Cursor | None) -> None:
         if member is not None:
@@ -62,7 +123,9 @@ class MemberWrites:
         value = strip(source)
         made = key(value) if value.kind == CursorKind.CALL_EXPR else None
         if member is not None and made is not None:
-            self.assigned[made] = member
+            last = self._assigned.get(made)
+            if last is None or last[0] <= self._index:
+                self._assigned[made] = (self._index, member)
 
     def _visit(self, node: Cursor) -> None:
         kind = node.kind

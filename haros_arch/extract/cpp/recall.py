@@ -27,7 +27,17 @@ import re
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 
-from clang.cindex import LibclangError, SourceRange, TranslationUnit, conf
+from clang.cindex import (
+    Cursor,
+    File,
+    LibclangError,
+    SourceLocation,
+    SourceRange,
+    TranslationUnit,
+    c_object_p,
+    callbacks,
+    conf,
+)
 
 from . import api
 
@@ -120,26 +130,50 @@ def holding(line: int, functions: Iterable[Function], sites: Sequence[Site]
 
 def definitions(tu: TranslationUnit, files: set[str]) -> dict[str, list[Function]]:
     """The functions the unit defines in ``files`` (absolute paths), per file, in
-    namespaces and classes at any depth: what ``holding`` looks in."""
+    namespaces and classes at any depth: what ``holding`` looks in. One visit in
+    libclang that goes into the namespaces and classes of ``files`` only, each cursor's
+    file told by its handle (a file's name is asked once); the functions of a file in
+    the reverse of their order in it (those of one line: the last first)."""
     from .visitor import CONTAINERS, FUNCTIONS
 
+    lib = conf.lib
+    functions = {kind.value for kind in FUNCTIONS}
+    containers = {kind.value for kind in CONTAINERS}
+    names: dict[int | None, str | None] = {None: None}  # file handle -> name in ``files``
     found: dict[str, list[Function]] = {}
-    stack = list(tu.cursor.get_children())
-    while stack:
-        cursor = stack.pop()
-        where = cursor.location.file
-        if where is None:
-            continue
-        name = os.path.abspath(where.name)
-        if name not in files:
-            continue  # a namespace or class opened in another file: its own cursor
-        kind = cursor.kind
-        if kind in FUNCTIONS and cursor.is_definition():
-            extent = cursor.extent
-            found.setdefault(name, []).append(
-                (extent.start.line, extent.end.line, cursor.spelling))
-        elif kind in CONTAINERS:
-            stack.extend(cursor.get_children())
+    handle, line = c_object_p(), ctypes.c_uint()
+
+    def file_of(location: SourceLocation) -> str | None:
+        lib.clang_getInstantiationLocation(location, ctypes.byref(handle), None, None, None)
+        key = ctypes.cast(handle, ctypes.c_void_p).value
+        if key not in names:
+            assert key is not None
+            name = os.path.abspath(File(ctypes.cast(key, c_object_p)).name)
+            names[key] = name if name in files else None
+        return names[key]
+
+    def line_of(location: SourceLocation) -> int:
+        lib.clang_getInstantiationLocation(location, None, ctypes.byref(line), None, None)
+        return line.value
+
+    def visit(cursor: Cursor, _parent: Cursor, _data: object) -> int:
+        name = file_of(lib.clang_getCursorLocation(cursor))
+        if name is None:
+            return 1  # CXChildVisit_Continue: in no file asked about (a namespace or
+            # class opened in another file is met through its own cursor)
+        kind = cursor._kind_id
+        if kind in functions:
+            if lib.clang_isCursorDefinition(cursor):
+                extent = lib.clang_getCursorExtent(cursor)
+                found.setdefault(name, []).append(
+                    (line_of(lib.clang_getRangeStart(extent)),
+                     line_of(lib.clang_getRangeEnd(extent)), cursor.spelling))
+            return 1
+        return 2 if kind in containers else 1  # CXChildVisit_Recurse into a container
+
+    lib.clang_visitChildren(tu.cursor, callbacks["cursor_visit"](visit), None)
+    for listed in found.values():
+        listed.reverse()
     return found
 
 

@@ -1,8 +1,9 @@
 """Finding ROS calls (roscpp, rclcpp and the libraries on them) in a parsed translation unit.
 
-Every function defined in the workspace's own files is walked with the stack of control
-statements around each expression (``conditions.ConditionReader``); a call whose target
-is a row of ``api.ALL`` becomes a ``PrimitiveCall``. A call's location is the line and
+Every function defined in the workspace's own files that holds a call the walk acts on
+(``CallFinder._gives``) is walked with the stack of control statements around each
+expression (``conditions.ConditionReader``); a call whose target is a row of
+``api.ALL`` becomes a ``PrimitiveCall``. A call's location is the line and
 column of the called function's name (``advertise`` in ``n.advertise<M>(...)``), or of
 the constructed object for a constructor.
 """
@@ -26,7 +27,7 @@ from .call_sites import CallSites
 from .call_types import CallTypes, factory_made
 from .call_types import callee as callee_of_call
 from .conditions import ConditionReader
-from .cursors import root
+from .cursors import children_in, root
 from .handles import (
     Namespaces,
     callback,
@@ -66,6 +67,7 @@ FUNCTIONS = frozenset({
 _API_NAMES = frozenset(
     [name for _, name in [*api.ALL, *api.NODE_NAME, *api.RCLCPP_NODE_NAME, *api.FACTORIES]])
 MAX_DEPTH = 16
+_PREPROCESSED = frozenset({CursorKind.MACRO_INSTANTIATION, CursorKind.INCLUSION_DIRECTIVE})
 _PARAM_KINDS = ("read", "declare")
 _VALUE_METHODS = frozenset({"c_str", "str", "as_string", "as_int", "as_double", "as_bool",
                             "get_value", "value_to_string"})
@@ -113,15 +115,19 @@ class CallFinder:
         self.members: MemberWrites | None = None
         # parameter reads and the member variable each stores its value in
         self._stored: list[tuple[PrimitiveCall, Cursor]] = []
+        # (file, offset) of the macro expansions and #includes of the workspace's files:
+        # a function's text that holds one does not show all its code
+        self.opaque: list[tuple[str, int]] = []
 
     def run(self) -> None:
         self.functions = list(self._definitions(root(self.tu), top=True))
         self.sites = self.namespaces.sites = CallSites(self.functions, self.macros, self.source,
                                                        external=True)
         self.wrappers.build()
-        self.members = MemberWrites(self.functions, self.source)
+        self.members = MemberWrites(self.functions, self.source, self.opaque)
         for function in self.functions:
-            self._function(function)
+            if self._gives(function):
+                self._function(function)
         for read, member in self._stored:  # the member's one write is this read
             if self.members.writes(member) == 1:
                 read.variable = member.spelling
@@ -131,12 +137,12 @@ class CallFinder:
                 call.name_default = self._declared.get(call.name_param)
 
     def _definitions(self, parent: Cursor, top: bool = False) -> Iterator[Cursor]:
-        for cursor in parent.get_children():
+        for cursor in children_in(parent, self.owned):  # in the workspace's files
             where = cursor.location.file
-            if where is None or not self.owned(where.name):
-                continue
             kind = cursor.kind
-            if kind == CursorKind.MACRO_DEFINITION:
+            if kind in _PREPROCESSED:
+                self.opaque.append((where.name, cursor.location.offset))
+            elif kind == CursorKind.MACRO_DEFINITION:
                 tokens = [t.spelling for t in cursor.get_tokens()]
                 if len(tokens) == 2:
                     self.macros[tokens[0]] = tokens[1]
@@ -150,6 +156,27 @@ class CallFinder:
                 if cursor.spelling in ("TypeAdapter", "ImplicitTypeAdapter"):
                     self.types.adapter(cursor)
                 yield from self._definitions(cursor)
+
+    def _gives(self, function: Cursor) -> bool:
+        """Whether the walk of ``function`` (``_function``) can find anything: a call of
+        an API function's or a wrapper's name, a call kept as a recovery expression of
+        an unresolved row's name, a construction of a class of the workspace. Read over
+        the function's nodes without the conditions (``_function`` walks no others);
+        a function without one adds nothing, and its walk is left out."""
+        names, rows = self.wrappers.names, self._unresolved_rows()
+        for node in function.walk_preorder():
+            kind = node.kind
+            if kind == CursorKind.CALL_EXPR:
+                spelling = node.spelling
+                if spelling in _API_NAMES or spelling in names or (
+                    not spelling and _recovered_name(node) in rows
+                ) or constructed_class(node, self.owned) is not None:
+                    return True
+            elif kind == CursorKind.UNEXPOSED_EXPR and not node.spelling and (
+                _recovered_name(node) in rows
+            ):
+                return True
+        return False
 
     def _function(self, function: Cursor) -> None:
         scope = self._scope = Scope(function, self.macros, self.source, self.sites)
@@ -551,8 +578,7 @@ class CallFinder:
             if index < len(args) and _may_write(call, index):
                 member = member_of(args[index])
         if member is None:
-            made = key_of(call)
-            member = self.members.assigned.get(made) if made is not None else None
+            member = self.members.assigned(call)
         return member
 
     @staticmethod

@@ -23,7 +23,9 @@ fixed in the wrapper is not a wrapper's: that call stays where it is, once.
 
 from __future__ import annotations
 
+import bisect
 import dataclasses
+import re
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
@@ -61,6 +63,12 @@ DEPENDENT: dict[str, api.RosFunction] = {
 _ARGUMENTS = ("queue_arg", "latch_arg", "callback_arg", "qos_arg", "default_arg")
 _API_NAMES = frozenset(
     [*DEPENDENT, *(name for _, name in api.ALL), *(name for _, name in api.FACTORIES)])
+# the spellings of the functions a resolved call matches a row or a factory through
+_FACTORY_NAMES = frozenset([*(name for _, name in api.FACTORIES), "make_shared", "make_unique"])
+_ROW_NAMES = _API_NAMES | _FACTORY_NAMES
+# the names an unresolved call can match a row through, each written in its text
+_UNRESOLVED_NAMES = frozenset(name.encode() for name in _ROW_NAMES)
+_WORD = re.compile(rb"\w+")
 _BUILTINS = frozenset({TypeKind.BOOL, TypeKind.INT, TypeKind.LONG, TypeKind.DOUBLE,
                        TypeKind.FLOAT, TypeKind.UINT, TypeKind.ULONG, TypeKind.LONGLONG})
 _THIS_CALLS = frozenset({"shared_from_this", "get", "weak_from_this"})
@@ -103,6 +111,10 @@ class Wrappers:
         self._inner: dict[Key, Key] = {}  # call inside a wrapper -> the wrapper
         self._kept: set[Key] = set()  # wrappers whose inner calls are still emitted
         self._recursive: set[Key] = set()
+        # the spellings of the functions summarised so far (None: one that an
+        # unresolved call's text need not show, an operator)
+        self._summarised: set[bytes] | None = set()
+        self._opaque: dict[str, list[int]] = {}  # file -> offsets of macro expansions
 
     # -- building -----------------------------------------------------------------------
 
@@ -118,6 +130,10 @@ class Wrappers:
         # each function's calls, and its lambdas: one with parameters may be returned
         # and pass one on as a name (nav2 MPPI's ``getParamGetter(ns)``:
         # ``getParam(x, "name", d)``), so it is summarised like a function
+        for name, offset in finder.opaque:
+            self._opaque.setdefault(name, []).append(offset)
+        for offsets in self._opaque.values():
+            offsets.sort()
         found: dict[Key, list[Cursor]] = {}
         todo = [f for f in finder.functions if f.kind != CursorKind.FIELD_DECL]
         while todo:
@@ -223,6 +239,13 @@ class Wrappers:
         return found
 
     def _summarise(self, function: Cursor, key: Key, call: Cursor) -> bool:
+        target = call.referenced
+        if target is not None and target.spelling not in _ROW_NAMES and (
+            _key(target.canonical) not in self.summaries
+        ):
+            return False  # no row and no wrapper (``_inner_rows`` yields none): cheap
+        if target is None and self._unnamed(call):
+            return False
         added = False
         rows = list(self._inner_rows(call))
         if call.referenced is None and any(r[3] not in (key, None) for r in rows):
@@ -239,13 +262,41 @@ class Wrappers:
                 continue
             found = self.summaries.setdefault(key, [])
             self._inner[_key(call)] = key
+            spelling = function.spelling.split("<")[0]
+            if self._summarised is not None:
+                if spelling.isidentifier() and not spelling.startswith("operator"):
+                    self._summarised.add(spelling.encode())
+                else:
+                    self._summarised = None
             if not any(lifted.same(w) for w in found):
                 found.append(lifted)
                 added = True
         return added
 
+    def _unnamed(self, call: Cursor) -> bool:
+        """Whether an unresolved call names no API function, factory or wrapper in its
+        text, which then holds all its code (no macro expansion in it): each row
+        ``_inner_rows`` can give it comes through a name written there (the method of
+        a dependent member call, a name whose overloads are looked up, a factory)."""
+        if self._summarised is None:
+            return False
+        start, end = call.extent.start, call.extent.end
+        if start.file is None or end.file is None or start.file.name != end.file.name:
+            return False
+        name = start.file.name
+        data = self.finder.source.get(name)
+        offsets = self._opaque.get(name, [])
+        at = bisect.bisect_left(offsets, start.offset)
+        if data is None or (at < len(offsets) and offsets[at] <= end.offset):
+            return False
+        words = set(_WORD.findall(data[start.offset:end.offset]))
+        return not (words & _UNRESOLVED_NAMES or words & self._summarised)
+
     def _calls_one_of(self, call: Cursor, keys: set[Key]) -> bool:
-        return any(k in keys for k in _targets(call)) or any(
+        if any(k in keys for k in _targets(call)):
+            return True
+        target = call.referenced  # ``_constructed`` needs a factory (or an unresolved call)
+        return (target is None or target.spelling in _FACTORY_NAMES) and any(
             k in keys for k in self._constructed(call, _arguments(call)))
 
     def _inner_rows(self, call: Cursor) -> Iterator[
@@ -684,11 +735,12 @@ def _static_factory(decl: Cursor) -> bool:
 def _static_factory_call(head: Cursor) -> bool:
     """``C<T>::make_shared`` written in a template, where ``T`` is its parameter (the
     call is not resolved)."""
+    if not any(c.kind == CursorKind.TEMPLATE_REF and c.referenced is not None
+               and c.referenced.kind == CursorKind.CLASS_TEMPLATE for c in head.get_children()):
+        return False  # asked first: the tokens are read through libclang
     tokens = [t.spelling for t in head.get_tokens()]
     return len(tokens) > 2 and tokens[-1] in ("make_shared", "make_unique") and (
-        tokens[-2] == "::") and any(
-            c.kind == CursorKind.TEMPLATE_REF and c.referenced is not None
-            and c.referenced.kind == CursorKind.CLASS_TEMPLATE for c in head.get_children())
+        tokens[-2] == "::")
 
 
 def _literal(expr: Cursor) -> str | None:
