@@ -17,8 +17,11 @@ from haros_arch.project import load
 from haros_arch.query.catalogue import run_catalogue
 
 # the example (actions, parameters, ROS 1 and 2); the fleet (a duplicate node name,
-# configuration hints that add links no node type lists)
-PROJECTS = [ROOT / "examples/project.yaml", FIXTURES / "graph_fleet/project.yaml"]
+# configuration hints that add links no node type lists); nodes from interface models, a
+# plugin host and a spawner (node types no package lists, calls no node type lists, two
+# calls of one kind at one place)
+PROJECTS = [ROOT / "examples/project.yaml", FIXTURES / "graph_fleet/project.yaml",
+            FIXTURES / "cache_readback/project.yaml"]
 
 
 def saved_and_reloaded(path):
@@ -76,3 +79,22 @@ def model_to_data_of(package):
     from haros_arch.model.model import Model
 
     return model_to_data(Model("m", packages=[package]))["packages"][0]
+
+
+def test_node_types_no_package_lists_read_back_whole():
+    """An instance's node type that no package lists (a command's arguments make the
+    spawner's) reads back with its model, language and calls (they were rebuilt from the
+    links: language "cpp", no model, calls without their defaults)."""
+    model, data, again = saved_and_reloaded(FIXTURES / "cache_readback/project.yaml")
+    listed = {id(n) for n in model.nodes}
+    modelled = [i for c in model.configurations for i in c.nodes if id(i.node) not in listed]
+    assert [i.name for i in modelled] == ["/spawner"]  # amcl's, move_base's: packages'
+    assert len(data["configurations"][0]["node_types"]) == 1
+    for before, after in zip(model.configurations, again.configurations, strict=True):
+        for one, other in zip(before.nodes, after.nodes, strict=True):
+            assert (one.node.name, one.node.language, one.node.model, one.node.calls,
+                    one.node.completeness, one.node.completeness_reasons) == (
+                other.node.name, other.node.language, other.node.model, other.node.calls,
+                other.node.completeness, other.node.completeness_reasons)
+    spawner = again.configurations[0].nodes[2].node
+    assert spawner.language == "python" and spawner.model is not None

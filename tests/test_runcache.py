@@ -360,6 +360,35 @@ def test_a_model_that_does_not_read_back_whole_is_not_kept(tmp_path: Path,
     assert again == first and "scan" in timings  # ran again: nothing was kept
 
 
+def test_a_model_whose_links_read_back_with_other_calls_is_not_kept(tmp_path: Path,
+                                                                   monkeypatch) -> None:
+    """A link whose call reads back otherwise (a parameter read's default lost) makes
+    the JSON of the model read back differ (a link writes its call where its node type's
+    first call of its kind and place is not it): the model is not kept, the next run
+    runs again. Before, the JSON did not show it and the wrong model was kept."""
+    from dataclasses import replace
+
+    from haros_arch.model import load as model_load
+
+    project = _copy(tmp_path)
+    real = model_load.from_data
+
+    def lossy(data):
+        model = real(data)
+        for link in model.configurations[0].links:
+            if link.call is not None and link.kind == "read":
+                link.call = replace(link.call, has_default=not link.call.has_default)
+                break
+        else:
+            raise AssertionError("no parameter read in the fixture")
+        return model
+
+    monkeypatch.setattr(runcache, "from_data", lossy)
+    first, _ = _run(project, tmp_path / "cache")
+    again, timings = _run(project, tmp_path / "cache")
+    assert again == first and "scan" in timings  # ran again: nothing was kept
+
+
 def test_an_unchanged_runs_report_page_is_kept_with_it(tmp_path: Path, monkeypatch) -> None:
     """`report` twice with nothing changed renders the page once and writes the same
     bytes; a changed source renders it again."""
@@ -391,3 +420,62 @@ def test_an_unchanged_runs_report_page_is_kept_with_it(tmp_path: Path, monkeypat
     source.write_text(source.read_text() + "\n# changed\n")
     assert main(["report", str(project), "-o", str(tmp_path / "c.html")]) == 0
     assert len(rendered) == 2
+
+
+def test_a_kept_model_read_back_gives_a_cold_runs_findings_and_matches(tmp_path: Path
+                                                                      ) -> None:
+    """A kept model whose findings were not kept with it (``extract`` kept it under other
+    rules, or the findings' entry was dropped) is checked again as read back: it gives
+    what the run gave in memory. Before, links lost the calls of plugins and of node
+    types from interface models (their defaults, tests, handles): on husky 31 undecided
+    parameter reads instead of 6, and here a false ``parameter-read-not-set``."""
+    from haros_arch import query
+    from haros_arch.query.command import check
+
+    shutil.copytree(FIXTURE.parent.parent / "cache_readback", tmp_path / "ws")
+    spec = load(str(tmp_path / "ws" / "project.yaml"))
+    cold = analyse(spec, {}, Options(cache_dir=None, jobs=1))
+    options = Options(cache_dir=str(tmp_path / "cache"), jobs=1)
+    analyse(spec, {}, options)  # kept, its findings not (no check ran)
+    timings: dict[str, float] = {}
+    kept = analyse(spec, {}, Options(cache_dir=str(tmp_path / "cache"), jobs=1,
+                                     timings=timings))
+    assert set(timings) == {"cache"}  # read back
+    expected = check(cold, spec).findings
+    assert any(f.rule == "parameter-read-not-set-undecided" for f in expected)
+    assert check(kept, spec).findings == expected
+    text = "links[self.call.has_default or self.call.tested or self.call.searched]"
+    for before, after in zip(cold.configurations, kept.configurations, strict=True):
+        found = query.compile(text).run(query.config_scope(before, cold))
+        again = query.compile(text).run(query.config_scope(after, kept))
+        assert found and [(link.node.id, link.name, link.call) for link in again] == [
+            (link.node.id, link.name, link.call) for link in found]
+
+
+def test_entries_one_copy_and_configuration_wrote_give_another_what_it_gives_cold(
+        tmp_path: Path) -> None:
+    """One cache folder serves every workspace: a second copy of the workspace at another
+    path, and one launch file of the first run as its own configuration, read the C++
+    unit entries the first run wrote and give what they give with no cache."""
+    from haros_arch.api import analyse_path
+    from haros_arch.query.command import document
+
+    first = _copy_paper(tmp_path)
+    shutil.copytree(first.parent, tmp_path / "second")
+    second = tmp_path / "second" / "project.yaml"
+    launch = str(first.parent / "src" / "example" / "launch" / "minimal.launch")
+    cache = Options(cache_dir=str(tmp_path / "cache"), jobs=1)
+    cold = Options(cache_dir=None, jobs=1)
+
+    def text(path: str, options: Options) -> str:
+        analysis = analyse_path(path, options)
+        assert analysis.model is not None
+        return json.dumps(document(analysis.model, analysis.project), sort_keys=True)
+
+    assert text(str(first), cache) == text(str(first), cold)
+    assert list((tmp_path / "cache" / "cpp").glob("*.json"))  # units kept
+    timings: dict[str, float] = {}
+    assert text(str(second), Options(cache_dir=str(tmp_path / "cache"), jobs=1,
+                                     timings=timings)) == text(str(second), cold)
+    assert "C++" in timings  # not the first run's model: its own, from the unit entries
+    assert text(launch, cache) == text(launch, cold)

@@ -77,25 +77,29 @@ def _diagnostic(data: dict[str, Any]) -> Diagnostic:
                       str(data.get("message", "")), location(data.get("location")))
 
 
+def call_from_data(c: dict[str, Any]) -> PrimitiveCall:
+    """A call (a node's ``calls`` entry, or a link's own ``call``) from its data."""
+    return PrimitiveCall(c.get("kind", "publish"), str(c.get("name", "")), c.get("type"),
+                         c.get("queue_size"), c.get("qos"), bool(c.get("latch", False)),
+                         c.get("callback"), conditions(c.get("conditions")),
+                         location(c.get("location")),
+                         name_param=c.get("name_param"), name_default=c.get("name_default"),
+                         origin=str(c.get("origin", "source")),
+                         has_default=bool(c.get("has_default", False)),
+                         default=c.get("default"), searched=bool(c.get("searched", False)),
+                         tested=bool(c.get("tested", False)),
+                         handle_namespace=c.get("handle_namespace"),
+                         deletes=bool(c.get("deletes", False)),
+                         node_name=c.get("node_name"), name_each=c.get("name_each"),
+                         transport=c.get("transport"),
+                         variable=c.get("variable"))
+
+
 def node_from_data(data: dict[str, Any], package: str) -> Node:
     """A node model (a package's node entry) from its data; also reads interface models."""
     name = str(data.get("name", ""))
     executable = data.get("executable") or name.partition("/")[2] or name
-    calls = [PrimitiveCall(c.get("kind", "publish"), str(c.get("name", "")), c.get("type"),
-                           c.get("queue_size"), c.get("qos"), bool(c.get("latch", False)),
-                           c.get("callback"), conditions(c.get("conditions")),
-                           location(c.get("location")),
-                           name_param=c.get("name_param"), name_default=c.get("name_default"),
-                           origin=str(c.get("origin", "source")),
-                           has_default=bool(c.get("has_default", False)),
-                           default=c.get("default"), searched=bool(c.get("searched", False)),
-                           tested=bool(c.get("tested", False)),
-                           handle_namespace=c.get("handle_namespace"),
-                           deletes=bool(c.get("deletes", False)),
-                           node_name=c.get("node_name"), name_each=c.get("name_each"),
-                           transport=c.get("transport"),
-                           variable=c.get("variable"))
-             for c in data.get("calls", ())]
+    calls = [call_from_data(c) for c in data.get("calls", ())]
     return Node(data.get("package", package), executable, data.get("kind", "executable"),
                 data.get("language", "cpp"), list(data.get("sources", ())), calls,
                 data.get("rosname"), conditions(data.get("conditions")),
@@ -174,12 +178,18 @@ def _configuration(data: dict[str, Any], nodes: dict[str, Node],
                    hinted: dict[str, Node]) -> Configuration:
     config = Configuration(str(data.get("name", "")), list(data.get("launch", ())),
                            dict(data.get("args", {})))
+    # the node types instances run that no package lists (interface models, hints,
+    # commands' arguments), written whole: instances name theirs by ``node_type``
+    types = [node_from_data(d, str(d.get("package", "")))
+             for d in data.get("node_types") or () if isinstance(d, dict)]
     by_name: dict[str, NodeInstance] = {}
     by_id: dict[str, NodeInstance] = {}
     for item in data.get("nodes", ()):
         name = str(item.get("name", ""))
+        own = item.get("node_type")
         instance = NodeInstance(
-            name, _node_type(nodes, hinted, item.get("node"), item.get("completeness")),
+            name, types[own] if type(own) is int and 0 <= own < len(types) else
+            _node_type(nodes, hinted, item.get("node"), item.get("completeness")),
             item.get("id") or f"node:{name}",
             item.get("namespace") or namespace_of(name),
             [tuple(pair) for pair in item.get("remaps", ())], item.get("args", ""),
@@ -227,8 +237,7 @@ def _configuration(data: dict[str, Any], nodes: dict[str, Node],
             conditions=conditions(item.get("conditions")),
             location=_place(item.get("location"), places),
             origin=str(item.get("origin", "source")))
-        link.call = _call_of(instance, kind, link.location, call_index) or _call_from(
-            link, item, kind)
+        link.call = _written_call(link, item) or default_call(link, item, call_index)
         instance.links.append(link)
         resource.links.append(link)
         config.links.append(link)
@@ -250,7 +259,7 @@ def _configuration(data: dict[str, Any], nodes: dict[str, Node],
         made for made in map(description_from_data, data.get("robot_descriptions") or ())
         if made is not None]
     for instance in config.nodes:  # a hint-made node type lists what its instances use
-        if instance.node is not None and instance.node.name in hinted:
+        if instance.node is not None and hinted.get(instance.node.name) is instance.node:
             calls = instance.node.calls
             calls.extend(link.call for link in instance.links if link.call is not None
                          and link.origin != "action" and link.call not in calls)
@@ -285,6 +294,28 @@ def _place(data: Any, places: dict[tuple[Any, ...], Location]) -> Location:
     return found
 
 
+def default_call(link: Link, data: dict[str, Any],
+                 index: dict[int, dict[tuple[str, Location], PrimitiveCall]]
+                 ) -> PrimitiveCall | None:
+    """The call a link written without its own ``call`` reads back with: its node type's
+    first call of its kind and place, else one made from the link (None for an action's
+    wire link: ``_wire_calls`` gives it)."""
+    return _call_of(link.node, link.kind, link.location, index) or _call_from(
+        link, data, link.kind)
+
+
+def _written_call(link: Link, data: dict[str, Any]) -> PrimitiveCall | None:
+    """The call a link's ``call`` names: an index in its node type's calls, or the call
+    itself (written when ``default_call`` would not give it back)."""
+    own = data.get("call")
+    if isinstance(own, dict):
+        return call_from_data(own)
+    node = link.node.node
+    if type(own) is int and node is not None and 0 <= own < len(node.calls):
+        return node.calls[own]
+    return None
+
+
 def _call_of(instance: NodeInstance, kind: str, where: Location,
              index: dict[int, dict[tuple[str, Location], PrimitiveCall]]
              ) -> PrimitiveCall | None:
@@ -316,23 +347,34 @@ def _call_from(link: Link, data: dict[str, Any], kind: str) -> PrimitiveCall | N
                          origin=link.origin, deletes=bool(data.get("deletes", False)))
 
 
-def _wire_calls(config: Configuration) -> None:
-    """A topic or service link that an action stands for gets the call the graph gave
-    it: its action call's, under the wire's kind, name and type."""
-    actions: dict[tuple[int, Location], list[Link]] = {}  # by node and place
+def action_links(config: Configuration) -> dict[tuple[int, Location], list[Link]]:
+    """The action links with a call, by node instance and place (for ``wire_call_of``)."""
+    actions: dict[tuple[int, Location], list[Link]] = {}
     for link in config.links:
         if link.kind in ("action-server", "action-client") and link.call is not None:
             actions.setdefault((id(link.node), link.location), []).append(link)
+    return actions
+
+
+def wire_call_of(link: Link, actions: dict[tuple[int, Location], list[Link]]
+                 ) -> PrimitiveCall | None:
+    """The call the graph gives a topic or service link that an action stands for: its
+    action call's, under the wire's kind, name and type."""
+    action = next((a for a in actions.get((id(link.node), link.location), ())
+                   if link.name.startswith(a.name.rstrip("/") + "/")), None)
+    if action is None or action.call is None:
+        return None
+    return wire_call(action.call, link.kind,  # type: ignore[arg-type]
+                     link.name, link.type,
+                     tuple(c for c in action.conditions if c not in action.node.conditions))
+
+
+def _wire_calls(config: Configuration) -> None:
+    """A wire link of an action read without its call gets it (``wire_call_of``)."""
+    actions = action_links(config)
     for link in config.links:
-        if link.origin != "action" or link.call is not None:
-            continue
-        action = next((a for a in actions.get((id(link.node), link.location), ())
-                       if link.name.startswith(a.name.rstrip("/") + "/")), None)
-        if action is not None and action.call is not None:
-            link.call = wire_call(action.call, link.kind,  # type: ignore[arg-type]
-                                  link.name, link.type,
-                                  tuple(c for c in action.conditions
-                                        if c not in action.node.conditions))
+        if link.origin == "action" and link.call is None:
+            link.call = wire_call_of(link, actions)
 
 
 def from_data(data: Any) -> Model:

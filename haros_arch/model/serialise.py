@@ -18,6 +18,7 @@ from typing import Any
 from .. import SCHEMA
 from .model import Model
 from .rosname import RosName
+from .runtime import Configuration
 from .values import Value
 
 
@@ -120,8 +121,56 @@ def _default(f: dataclasses.Field[Any]) -> Any:
 
 
 def model_to_data(model: Model) -> dict[str, Any]:
-    """The versioned JSON document of DESIGN.md ("The JSON model")."""
-    return {"schema": SCHEMA, **_dataclass_to_data(model)}
+    """The versioned JSON document of DESIGN.md ("The JSON model"), with what reading it
+    back needs to give the same model (``_read_back``)."""
+    data = {"schema": SCHEMA, **_dataclass_to_data(model)}
+    listed = {id(node) for package in model.packages for node in package.nodes}
+    for config, written in zip(model.configurations, data.get("configurations", ()),
+                               strict=True):
+        _read_back(config, written, listed)
+    return data
+
+
+def _read_back(config: Configuration, data: dict[str, Any], listed: set[int]) -> None:
+    """What ``load.from_data`` cannot find by name and place, written into ``data``:
+    the node types instances run that no package lists (``listed``: an interface
+    model's, a hint's, a command's arguments') under ``node_types`` whole, each instance
+    naming its own by ``node_type``; a link's ``call`` when its node type's first call of
+    its kind and place is not it (an index in the node type's calls), or when the node
+    type does not list it (a plugin's call: the call itself)."""
+    from .load import action_links, default_call, wire_call_of
+
+    types: dict[int, int] = {}
+    written: list[Any] = []
+    for instance, entry in zip(config.nodes, data.get("nodes", ()), strict=True):
+        node = instance.node
+        if node is None or id(node) in listed:
+            continue
+        if id(node) not in types:
+            types[id(node)] = len(written)
+            written.append(to_data(node))
+        entry["node_type"] = types[id(node)]
+    if written:
+        data["node_types"] = written
+    index: dict[int, dict[Any, Any]] = {}
+    positions: dict[int, dict[int, int]] = {}  # a node type's calls: id -> index
+    actions = action_links(config)
+    for link, entry in zip(config.links, data.get("links", ()), strict=True):
+        call = link.call
+        if call is None:
+            continue
+        given = default_call(link, entry, index)
+        if given is None and link.origin == "action":
+            given = wire_call_of(link, actions)
+        if given is call or given == call:
+            continue
+        node = link.node.node
+        at = None
+        if node is not None:
+            if id(node) not in positions:
+                positions[id(node)] = {id(c): i for i, c in enumerate(node.calls)}
+            at = positions[id(node)].get(id(call))
+        entry["call"] = to_data(call) if at is None else at
 
 
 def dumps(model: Model) -> str:
