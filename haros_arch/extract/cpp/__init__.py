@@ -502,9 +502,11 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
     fieldless = _fieldless_packages(setup.diagnostics)
     names = synthesis.Names(fieldless)
     header = os.path.join(setup.generated, synthesis.HEADER_NAME)
-    # the functions of each file, by line (the same text in every parse of the unit)
+    # the functions of each file, by line, and its API call sites (the same text in
+    # every parse of the unit: each file is read once, not once per parse)
     functions: dict[str, list[recall.Function]] = {}
-    if synthesis.MAX_ROUNDS < 1 or not _can_hide(tu, first, source, fieldless, functions) or (
+    sites: dict[str, list[recall.Site]] = {}
+    if synthesis.MAX_ROUNDS < 1 or not _hiding(tu, first, source, fieldless, functions, sites) or (
         not names.learn(_located(first, source))
     ):
         return tu  # nothing to declare, or no error where it could cost a call
@@ -519,6 +521,7 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
                             PARSE_OPTIONS | SKIP_FUNCTION_BODIES)
         if probe is None or not names.learn(_located(mine(probe), source)):
             break
+    names.read_members(source.values())  # the files with errors: members come next
     best = tu
     for _full in range(synthesis.FULL_PARSES):  # more: again when one shows more names
         again = _parse_once(path, [*args, "-include", header],
@@ -527,11 +530,13 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
             break
         if len(_errors(again)) < len(_errors(best)):
             best = again
+        # parsed again only when a name learnt here can matter: from an error that can
+        # cost a call (the other errors' names are declared too, but never cost a parse)
         left = mine(again)
-        if not _can_hide(again, left, source, fieldless, functions) or not names.learn(
-            _located(left, source)
-        ):
+        hiding = _hiding(again, left, source, fieldless, functions, sites)
+        if not hiding or not names.learn(_located(hiding, source)):
             break
+        names.learn(_located([e for e in left if e not in hiding], source))
     if best is tu:
         return tu  # declaring them made it no better: the parse as it was
     again = best
@@ -541,37 +546,37 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
     return again
 
 
-def _can_hide(tu: TranslationUnit, errors: list[ClangDiagnostic],
-              source: SourceCache, fieldless: set[str],
-              functions: dict[str, list[recall.Function]]) -> bool:
-    """Whether any of ``errors`` can cost a call (``recall``): one outside every function
+def _hiding(tu: TranslationUnit, errors: list[ClangDiagnostic],
+            source: SourceCache, fieldless: set[str],
+            functions: dict[str, list[recall.Function]],
+            sites: dict[str, list[recall.Site]]) -> list[ClangDiagnostic]:
+    """Those of ``errors`` that can cost a call (``recall``): one outside every function
     the unit defines (a declaration: it may make a class invalid, and every call in its
     methods with it), or one inside a function whose text calls the ROS API. Errors
     only inside functions that make no ROS call, and those on fields of messages known
     only by name (clang reads on past them), are left as they are: declaring the names
-    they miss would cost a parse and change no call. ``functions`` holds the functions
-    of the files already read (a function's lines are the same in every parse of the
-    unit: each file is walked once, not once per parse)."""
+    they miss would cost a parse and change no call. ``functions`` and ``sites`` hold
+    the functions and the call sites of the files already read (the same in every
+    parse of the unit)."""
     errors = [e for e in errors if not _names_fieldless_type(e.spelling, fieldless)]
-    if not errors:
-        return False
     files = {os.path.abspath(e.location.file.name) for e in errors} - functions.keys()
     if files:
         found = recall.definitions(tu, files)
         functions.update({name: found.get(name, []) for name in files})
-    sites: dict[str, list[recall.Site]] = {}
+    kept = []
     for error in errors:
         name = os.path.abspath(error.location.file.name)
         line = error.location.line
         around = [f for f in functions.get(name, ()) if f[0] <= line <= f[1]]
         if not around:
-            return True
+            kept.append(error)
+            continue
         if name not in sites:
             data = source.get(name)
             sites[name] = recall.call_sites(data.decode("utf-8", "replace")) if data else []
         if recall.holding(line, around, sites[name]) is not None:
-            return True
-    return False
+            kept.append(error)
+    return kept
 
 
 def _located(errors: list[ClangDiagnostic],

@@ -118,22 +118,30 @@ _LIBRARY_HEADERS = ("sensor_msgs/image_encodings.",)
 
 
 def _library_include_dirs(workspace: Workspace) -> list[str]:
-    """``<package>/<folder>/include`` of every workspace package, sorted."""
+    """``<package>/<folder>/include`` of every workspace package, sorted. Not those one
+    level deeper (slam_toolbox's ``lib/karto_sdk/include``, a library the package
+    builds with add_subdirectory): read for real, such a library's inline code is
+    walked in every unit (slam_toolbox: 4-5x the cost per unit for the same calls);
+    its headers are synthesised like those of a missing package until the walk visits
+    only functions that can hold a call."""
     found = []
     for package in workspace.packages.values():
         if not package.root:
             continue
-        try:
-            entries = sorted(os.listdir(package.root))
-        except OSError:
-            continue
-        for entry in entries:
-            if entry.startswith(".") or entry == "include":
-                continue
-            folder = os.path.join(package.root, entry, "include")
-            if os.path.isdir(folder) and not os.path.islink(os.path.join(package.root, entry)):
-                found.append(folder)
+        for entry in _folders(package.root):
+            if entry != "include" and os.path.isdir(os.path.join(package.root, entry, "include")):
+                found.append(os.path.join(package.root, entry, "include"))
     return found
+
+
+def _folders(path: str) -> list[str]:
+    """The folders in ``path`` (no hidden ones, no symbolic links), sorted."""
+    try:
+        entries = sorted(os.listdir(path))
+    except OSError:
+        return []
+    return [e for e in entries if not e.startswith(".") and not os.path.islink(
+        os.path.join(path, e)) and os.path.isdir(os.path.join(path, e))]
 
 
 def is_ros2_header(header: str) -> bool:
@@ -183,6 +191,7 @@ class IncludeSetup:
         self._folders: set[str] = set()  # the folders of the written headers
         self._on_disk = False
         self._tops: dict[str, list[str]] | None = None  # see ``_resolve``
+        self._defined: dict[str, dict[str, str]] = {}  # see ``_definitions``
 
     def arguments(self, pch: bool = True, source: str | None = None) -> list[str]:
         """The parse flags (of translation unit ``source``: its compile command's include
@@ -372,6 +381,8 @@ class IncludeSetup:
         if folder is not None:
             for sub, ext in (("msg", ".msg"), ("srv", ".srv")):
                 path = os.path.join(folder, sub, name + ext)
+                if not os.path.isfile(path):  # listed from another folder (``srvs/``)
+                    path = self._definitions(folder).get(name + ext, path)
                 if os.path.isfile(path):
                     text, found = read_text(path, self.workspace.location(path))
                     self.diagnostics.extend(found)
@@ -384,6 +395,22 @@ class IncludeSetup:
         if text is None:
             return None
         return interfaces.parse_definition(package, name, text)
+
+    def _definitions(self, folder: str) -> dict[str, str]:
+        """The interface definitions anywhere in a package folder (a few
+        levels down, not in hidden or test folders): rosidl takes them from the folders
+        its CMakeLists lists, not only ``msg/`` and ``srv/``. By file name."""
+        found = self._defined.get(folder)
+        if found is None:
+            found = self._defined[folder] = {}
+            for here, dirs, files in os.walk(folder):
+                depth = here[len(folder):].count(os.sep)
+                dirs[:] = [] if depth >= 2 else sorted(
+                    d for d in dirs if not d.startswith(".") and d not in ("test", "build"))
+                for file in sorted(files):
+                    if file.endswith((".msg", ".srv", ".action")):
+                        found.setdefault(file, os.path.join(here, file))
+        return found
 
     def _action(self, package: str, name: str, where: Location) -> bool:
         """``pkg/DoAction.h``, ``pkg/DoGoal.h``, ...: the headers of ``action/Do.action``."""
@@ -413,15 +440,19 @@ class IncludeSetup:
         self._handled.add(header)
         folder = self.workspace.find(package)
         extension = {"msg": ".msg", "srv": ".srv", "action": ".action"}[kind]
-        names = []
+        # the definitions anywhere in the package (rosidl reads those its CMakeLists
+        # lists: ``srvs/Pause.srv`` is still ``pkg/srv/Pause``), ``kind/`` first
+        files = {} if folder is None else {
+            f: p for f, p in self._definitions(folder).items() if f.endswith(extension)}
         if folder is not None and os.path.isdir(os.path.join(folder, kind)):
-            names = [f[: -len(extension)] for f in sorted(os.listdir(os.path.join(folder, kind)))
-                     if f.endswith(extension)]
+            files.update((f, os.path.join(folder, kind, f))
+                         for f in os.listdir(os.path.join(folder, kind)) if f.endswith(extension))
+        names = [f[: -len(extension)] for f in sorted(files)]
         names += [key.split("/")[1] for key in interfaces.WELL_KNOWN
                   if key.startswith(package + "/")]
         name = ros2_interfaces.camel_case(snake, names)
         definition: interfaces.Interface | None = None
-        path = os.path.join(folder, kind, name + extension) if folder is not None else ""
+        path = files.get(name + extension, "")
         if path and os.path.isfile(path):
             text, found = read_text(path, self.workspace.location(path))
             self.diagnostics.extend(found)

@@ -156,7 +156,9 @@ PRIMITIVES = {
 }
 
 _STRING_CONSTANT = re.compile(r"^string\s+\w+\s*=")
-_FIELD = re.compile(r"^\s*([A-Za-z][\w/]*)\s*(\[(\d*)\])?\s+([A-Za-z]\w*)\s*(=\s*(.*))?$")
+# ``type[N] name``, ``type NAME=value`` (a constant) or ``type name default`` (ROS 2)
+_FIELD = re.compile(
+    r"^\s*([A-Za-z][\w/]*)\s*(\[(\d*)\])?\s+([A-Za-z]\w*)\s*(?:(=\s*(.*))|\s[^=\s].*)?$")
 
 
 @dataclass(frozen=True)

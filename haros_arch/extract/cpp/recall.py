@@ -83,8 +83,14 @@ def site_pattern(extra: frozenset[str] = frozenset()) -> re.Pattern[str]:
 
 def call_sites(text: str, extra: Iterable[str] = ()) -> list[Site]:
     """The API call sites of one file's text (comments left out, and lines that define
-    a function of the same name: ``Node::create_publisher(``)."""
-    pattern = site_pattern(frozenset(extra))
+    a function of the same name: ``Node::create_publisher(``). The headers of a package
+    are read by each of its units: the sites of a text are kept (a few texts)."""
+    return list(_call_sites(text, frozenset(extra)))
+
+
+@functools.lru_cache(maxsize=64)
+def _call_sites(text: str, extra: frozenset[str]) -> tuple[Site, ...]:
+    pattern = site_pattern(extra)
     found = []
     in_comment = False
     for number, line in enumerate(text.splitlines(), 1):
@@ -103,7 +109,7 @@ def call_sites(text: str, extra: Iterable[str] = ()) -> list[Site]:
             continue
         if pattern.search(code):
             found.append(Site(number, code.strip()[:80]))
-    return found
+    return tuple(found)
 
 
 def missed(sites: Sequence[Site], lines: set[int], silent: Sequence[tuple[int, int]]

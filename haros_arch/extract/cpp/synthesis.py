@@ -26,11 +26,12 @@ from dataclasses import dataclass, field
 from . import interfaces, msg_types
 
 MAX_ROUNDS = 1  # rounds of declaring unknown names (0: none; more: probes for waves)
-# full parses with the declared names: a second one when the first shows more names (a
-# wave: members of the declared classes used in function bodies) and errors that can
-# cost a call are left. With 1, slam_toolbox / mavros cost 1.50x / 1.44x instead of
-# 1.73x / 1.75x (same calls), but a member of a vendor type used next to a ROS call
-# stays an error and its node partial (fixtures/cpp/unknown_names/vendor_member.cpp)
+# full parses with the declared names: a second one only when the first leaves an error
+# that can cost a call (``recall``) and that error names something not declared yet (a
+# wave: a name that only shows once the classes around it are valid). The members read
+# after ``.`` / ``->`` in the files with errors are declared from the first: a member
+# of a vendor object is otherwise the usual second wave (fixtures/cpp/unknown_names/
+# vendor_member.cpp, vendor_waves.cpp)
 FULL_PARSES = 2
 MAX_NAMES = 400  # names declared for one unit
 HEADER_NAME = "haros_synthesised_names.h"
@@ -64,6 +65,20 @@ _MEMBER_TYPE = re.compile(  # ``Msg::_code_type``; ``Synthesised<T>::ConstPtr``
     r"^no type named '(\w+)' in '(?:const )?(?:(?:struct|class) )?([\w:]+)(<.*>)?'")
 _AMBIGUOUS = re.compile(r"^reference to '(\w+)' is ambiguous")
 _RECORD = re.compile(r"[a-z]\w*(?:::\w+)+")  # a message's struct: ``pkg::msg::Name``
+_AFTER_MEMBER = re.compile(rb"(?:\.|->)\s*([A-Za-z_]\w*)")
+# a value read from a scope: ``Mode::FAST)``, an enumerator of a vendor enum
+_SCOPED_VALUE = re.compile(rb"::\s*([A-Za-z_]\w*)\s*(?=[);,\]}])")
+# a member named with template arguments and called: ``node.as<int>()``
+_MEMBER_TEMPLATE = re.compile(
+    rb"(?:\.|->)\s*(?:template\s+)?([A-Za-z_]\w*)\s*<[\w:\s,<>*&]*>\s*\(")
+# the name written next is what an alias, a typedef or a using-declaration names
+_ALIASED = re.compile(rb"(?:\busing\s+\w+\s*=|\btypedef|\busing)\s*(?:typename\s+)?(?:::\s*)?"
+                      rb"(?:[A-Za-z_]\w*\s*::\s*)*$")
+_ALIAS_NAME = re.compile(rb"\busing\s+([A-Za-z_]\w*)\s*=")
+_DECLARING = re.compile(rb"\b(?:using|typedef|namespace)\b")
+_TYPE_AS_VALUE = re.compile(r"^expected '\(' for function-style cast or type construction")
+_NAME_BEFORE = re.compile(rb"((?:[A-Za-z_]\w*\s*::\s*)*[A-Za-z_]\w*)\s*$")
+_CONSTANT = re.compile(r"[A-Z][A-Z0-9]*(?:_[A-Z0-9]+)+|[A-Z]{2,}[0-9]*")
 _USING = re.compile(rb"\busing\s+namespace\s+(?:::)?([A-Za-z_][\w:]*)\s*;")
 
 # binary operators for any operand of a synthesised class (and nothing else)
@@ -110,35 +125,83 @@ class Names:
         self.packages = frozenset(packages)
         self.root = _Name(known=True)
         self.members: set[str] = set()
+        self.templates: set[str] = set()  # members used with template arguments
         # record -> the members the code uses on it: the fields of messages known only
         # by name (their synthesised struct opens a hook, ``interfaces.fields_hook``),
         # and the member types it names (``ResponseStatus::_code_type``)
         self.fields: dict[str, set[str]] = {}
         self.types: dict[str, set[str]] = {}
         self.using: set[str] = set()  # namespaces named by ``using namespace``
+        self.aliases: set[str] = set()  # names the code declares: ``using Mode = ...;``
         # unknown names that made a use ambiguous (the real declaration was invalid only
         # until other names were declared): no longer declared
         self.withdrawn: set[str] = set()
         self._read: set[int] = set()  # the files whose using-directives were read
+        self._texts: list[bytes] = []  # those files
+        self._spread_done: set[tuple[int, str]] = set()  # (file, name) looked for
         self.count = 0
 
     def learn(self, errors: Iterable[tuple[str, bytes | None, int]]) -> bool:
         """Read ``(message, source bytes of its file, byte offset)`` errors; True when a
         name was learnt that was not known before."""
         before = (self.count, len(self.members), len(self.withdrawn))
+        errors = list(errors)
+        for _message, text, _offset in errors:
+            if text is not None and id(text) not in self._read:
+                self._read.add(id(text))
+                self._texts.append(text)
+                self.using.update(m.decode() for m in _USING.findall(text))
+                self.aliases.update(m.decode() for m in _ALIAS_NAME.findall(text))
         for message, text, offset in errors:
             if self.count >= MAX_NAMES:
                 break
-            if text is not None and id(text) not in self._read:
-                self._read.add(id(text))
-                self.using.update(m.decode() for m in _USING.findall(text))
             self._learn_one(message, text, offset)
+        self._spread()
         return (self.count, len(self.members), len(self.withdrawn)) != before
+
+    def _spread(self) -> None:
+        """Every qualified use of an unknown top-level name in the files read: clang
+        reports only the first unknown name of a declaration (``std::map<vendor::Key,
+        vendor::Value>``); each of the others would be the error of another parse."""
+        unknown = [name for name, node in self.root.children.items() if not node.known]
+        for text in self._texts:
+            todo = [name for name in unknown if (id(text), name) not in self._spread_done]
+            if not todo:
+                continue
+            self._spread_done.update((id(text), name) for name in todo)
+            words = b"|".join(re.escape(name.encode()) for name in sorted(todo, key=len)[::-1])
+            for found in re.finditer(rb"(?<![\w:.>])(?:" + words + rb")\s*::", text):
+                if self.count >= MAX_NAMES:
+                    return
+                self._from_source(text, found.start(), "any", [])
+
+    def read_members(self, texts: Iterable[bytes]) -> None:
+        """Every name the code reads after ``.`` or ``->``, and every value it reads from
+        a scope (``Mode::FAST``), as a member of the declared classes (a member of a
+        vendor object is an error only once its class is declared: the next wave), but
+        the API's own methods; those named with template arguments (``node.as<int>()``)
+        as member templates."""
+        from . import api
+        skip = _KEYWORDS | {name for _, name in api.ALL}
+        for text in texts:
+            if text is not None:
+                self.members.update(
+                    n for n in (m.decode() for m in _AFTER_MEMBER.findall(text)) if n not in skip)
+                for found in _SCOPED_VALUE.finditer(text):  # not ``using A = ns::A;``
+                    line = text[text.rfind(b"\n", 0, found.start()) + 1:found.start()]
+                    name = found.group(1).decode()
+                    if name not in skip and not _DECLARING.search(line):
+                        self.members.add(name)
+                self.templates.update(m.decode() for m in _MEMBER_TEMPLATE.findall(text))
 
     def _learn_one(self, message: str, text: bytes | None, offset: int) -> None:
         ambiguous = _AMBIGUOUS.match(message)
         if ambiguous is not None:
             self.withdrawn.add(ambiguous.group(1))
+            return
+        if _TYPE_AS_VALUE.match(message):
+            if text is not None:
+                self._a_value(text, offset)
             return
         member_type = _MEMBER_TYPE.match(message)
         if member_type is not None and "namespace" not in message:
@@ -189,12 +252,31 @@ class Names:
         if any(p in _KEYWORDS for p in written) or any(p in _KEYWORDS for p in scope):
             return
         rest = text[found.end():found.end() + 2]
+        if use == "any" and written[-1][:1].isupper() and _ALIASED.search(
+                text[max(0, offset - 200):offset]):
+            # ``using Mode = vendor::Mode;``, ``using vendor::msg::Limit;``: a type (a
+            # lowercase name a using-declaration brings is more often a function)
+            use = "type"
         last = self._last_use(use, rest)
+        if last == "type" and use == "any" and rest.lstrip()[:1] in (b")", b",", b"}") and (
+            _CONSTANT.fullmatch(written[-1])
+            or text[max(0, offset - 8):offset].rstrip().endswith(b"=")
+        ):
+            # ``f(vendor::MODE_A)``, ``x = vendor::FRAMING_OK,``: an enumerator or a
+            # constant read as a value (a class there would be a syntax error)
+            last = "value"
         if use == "any" and not scope and len(written) == 1 and (
             last == "value" or rest.lstrip()[:1] == b"("
         ):
             return  # an unqualified function or variable: in a class, often a member
             # clang could not find (an invalid base); declaring it would shadow it
+        if not scope and written[0] in self.aliases:
+            # ``Mode::FAST`` where the code declares ``using Mode = vendor::Mode;``: not
+            # a name of its own (it would clash with the alias), a member of what the
+            # alias names once that is declared
+            if len(written) == 2 and written[1] not in self.members:
+                self.members.add(written[1])
+            return
         node = self.root
         for part in scope:
             node = node.children.setdefault(part, _Name(known=True))
@@ -205,6 +287,21 @@ class Names:
             node = node.children[part]
             if not node.known:
                 node.uses.add("scope" if i < len(written) - 1 else last)
+
+    def _a_value(self, text: bytes, offset: int) -> None:
+        """A name declared as a class and read as a value (``f(vendor::MODE_A, x)``:
+        after a comma, it looked like a template argument): declared as a value."""
+        found = _NAME_BEFORE.search(text[max(0, offset - 200):offset])
+        if found is None:
+            return
+        parts = [p.strip().decode() for p in found.group(1).split(b"::") if p.strip()]
+        node: _Name | None = self.root
+        for part in parts:
+            node = node.children.get(part) if node is not None else None
+        if node is not None and not node.known and not node.children and \
+                node.uses == {"type"}:
+            node.uses = {"value"}
+            self.count += 1
 
     @staticmethod
     def _last_use(use: str, after: bytes) -> str:
@@ -234,7 +331,10 @@ class Names:
         return not node.known
 
     def header(self) -> str:
-        members = "".join(f"  static haros_any {m};\n" for m in sorted(self.members))
+        members = "".join(
+            f"  template <class... T, class... A> static haros_any &{m}(A &&...);\n"
+            if m in self.templates else f"  static haros_any {m};\n"
+            for m in sorted(self.members))
         lines = [_PRELUDE % (members, _OPERATORS)]
         # static: a field reads as ``msg.f`` and a constant as ``Msg::F``, and the
         # message stays the plain struct it was (no member to construct or copy)
