@@ -342,7 +342,7 @@ def test_names_of_a_vendor_library_in_waves_take_one_more_parse(monkeypatch) -> 
 
     monkeypatch.setattr(cpp, "_parse_once", counted)
     result = extract("vendor_waves.cpp")
-    # the enumerator read through an alias, the members read with template arguments
+    # the enumerator read through an alias, the members of vendor objects
     # and the fields of a vendor message are declared with the first wave of names
     assert rows(result) == [
         ("declare", "rate", "double", 18),
@@ -368,7 +368,7 @@ def test_members_and_scoped_values_are_read_from_the_text() -> None:
     ])
     names.read_members([text])
     header = names.header()
-    assert "template <class... T, class... A> static haros_any &as(A &&...);" in header
+    assert "static haros_any as;" in header  # not a template: see read_members
     assert "static haros_any send;" in header
     assert "static haros_any FAST;" in header
     assert "create_publisher" not in header  # the API's own methods stay the API's

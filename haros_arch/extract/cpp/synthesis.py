@@ -68,9 +68,6 @@ _RECORD = re.compile(r"[a-z]\w*(?:::\w+)+")  # a message's struct: ``pkg::msg::N
 _AFTER_MEMBER = re.compile(rb"(?:\.|->)\s*([A-Za-z_]\w*)")
 # a value read from a scope: ``Mode::FAST)``, an enumerator of a vendor enum
 _SCOPED_VALUE = re.compile(rb"::\s*([A-Za-z_]\w*)\s*(?=[);,\]}])")
-# a member named with template arguments and called: ``node.as<int>()``
-_MEMBER_TEMPLATE = re.compile(
-    rb"(?:\.|->)\s*(?:template\s+)?([A-Za-z_]\w*)\s*<[\w:\s,<>*&]*>\s*\(")
 # the name written next is what an alias, a typedef or a using-declaration names
 _ALIASED = re.compile(rb"(?:\busing\s+\w+\s*=|\btypedef|\busing)\s*(?:typename\s+)?(?:::\s*)?"
                       rb"(?:[A-Za-z_]\w*\s*::\s*)*$")
@@ -125,7 +122,6 @@ class Names:
         self.packages = frozenset(packages)
         self.root = _Name(known=True)
         self.members: set[str] = set()
-        self.templates: set[str] = set()  # members used with template arguments
         # record -> the members the code uses on it: the fields of messages known only
         # by name (their synthesised struct opens a hook, ``interfaces.fields_hook``),
         # and the member types it names (``ResponseStatus::_code_type``)
@@ -179,10 +175,14 @@ class Names:
         """Every name the code reads after ``.`` or ``->``, and every value it reads from
         a scope (``Mode::FAST``), as a member of the declared classes (a member of a
         vendor object is an error only once its class is declared: the next wave), but
-        the API's own methods; those named with template arguments (``node.as<int>()``)
-        as member templates."""
+        the API's own methods. Not as member templates: ``x.get<T>("node")`` is
+        better left an error, so that the calls on what it returns are kept by their
+        API name (a declared template returns an object whose API calls then fail)."""
         from . import api
-        skip = _KEYWORDS | {name for _, name in api.ALL}
+        # the API's methods (longer than four letters, as ``recall`` counts them: ``get``
+        # / ``set`` / ``call`` are any class's) stay the API's: a class built on a real
+        # node and a declared class would find the name twice
+        skip = _KEYWORDS | {name for _, name in api.ALL if len(name) > 4}
         for text in texts:
             if text is not None:
                 self.members.update(
@@ -192,7 +192,6 @@ class Names:
                     name = found.group(1).decode()
                     if name not in skip and not _DECLARING.search(line):
                         self.members.add(name)
-                self.templates.update(m.decode() for m in _MEMBER_TEMPLATE.findall(text))
 
     def _learn_one(self, message: str, text: bytes | None, offset: int) -> None:
         ambiguous = _AMBIGUOUS.match(message)
@@ -331,10 +330,7 @@ class Names:
         return not node.known
 
     def header(self) -> str:
-        members = "".join(
-            f"  template <class... T, class... A> static haros_any &{m}(A &&...);\n"
-            if m in self.templates else f"  static haros_any {m};\n"
-            for m in sorted(self.members))
+        members = "".join(f"  static haros_any {m};\n" for m in sorted(self.members))
         lines = [_PRELUDE % (members, _OPERATORS)]
         # static: a field reads as ``msg.f`` and a constant as ``Msg::F``, and the
         # message stays the plain struct it was (no member to construct or copy)
