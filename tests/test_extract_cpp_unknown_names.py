@@ -418,3 +418,16 @@ def test_a_name_a_using_declaration_brings_is_a_type() -> None:
     header = names.header()
     assert "struct Limit : haros_any {" in header
     assert "haros_any Limit;" not in header
+
+
+def test_a_namespace_the_code_defines_is_not_spread() -> None:
+    # clang met ``autoware`` before any header declared it; further on the code defines
+    # the namespace: its names are real, not declared from the text
+    names = synthesis.Names()
+    text = (b"auto p = autoware::tools::make();\n"
+            b"namespace autoware::planning\n{\nPlannerNode::PlannerNode() {}\n}\n"
+            b"REGISTER(autoware::planning::PlannerNode)\n")
+    names.learn([("use of undeclared identifier 'autoware'", text, text.index(b"autoware"))])
+    header = names.header()
+    assert "tools" in header  # what the error itself named
+    assert "planning" not in header and "PlannerNode" not in header

@@ -76,6 +76,7 @@ _DECLARING = re.compile(rb"\b(?:using|typedef|namespace)\b")
 _TYPE_AS_VALUE = re.compile(r"^expected '\(' for function-style cast or type construction")
 _NAME_BEFORE = re.compile(rb"((?:[A-Za-z_]\w*\s*::\s*)*[A-Za-z_]\w*)\s*$")
 _CONSTANT = re.compile(r"[A-Z][A-Z0-9]*(?:_[A-Z0-9]+)+|[A-Z]{2,}[0-9]*")
+_DEFINES_NAMESPACE = re.compile(rb"\bnamespace\s+(?:inline\s+)?$")
 _USING = re.compile(rb"\busing\s+namespace\s+(?:::)?([A-Za-z_][\w:]*)\s*;")
 
 # binary operators for any operand of a synthesised class (and nothing else)
@@ -159,7 +160,10 @@ class Names:
         """Every qualified use of an unknown top-level name in the files read: clang
         reports only the first unknown name of a declaration (``std::map<vendor::Key,
         vendor::Value>``); each of the others would be the error of another parse."""
-        unknown = [name for name, node in self.root.children.items() if not node.known]
+        # not a name the code defines somewhere (``namespace autoware::planning {``): it
+        # was unknown where clang met it first, and is real further on
+        unknown = [name for name, node in self.root.children.items() if not node.known
+                   and not any(_defines(name, text) for text in self._texts)]
         for text in self._texts:
             todo = [name for name in unknown if (id(text), name) not in self._spread_done]
             if not todo:
@@ -238,8 +242,8 @@ class Names:
     def _from_source(self, text: bytes, offset: int, use: str, scope: list[str]) -> None:
         """The qualified name written at ``offset``: the unknown part and what follows."""
         found = _NAME_AT.match(text, offset)
-        if found is None:
-            return
+        if found is None or _DEFINES_NAMESPACE.search(text, max(0, offset - 40), offset):
+            return  # ``namespace a::b {`` defines the namespace: no use of a name
         written = [p.strip().removeprefix(b"template").strip().decode()
                    for p in found.group(0).split(b"::")]
         if not scope:  # the known scope written before the name: ``known::``
@@ -385,6 +389,12 @@ class Names:
 
     def __bool__(self) -> bool:
         return bool(self.count or self.members or self.fields or self.types)
+
+
+def _defines(name: str, text: bytes) -> bool:
+    """Whether ``text`` defines ``name`` as a namespace, class, struct or enum."""
+    return re.search(rb"\b(?:namespace|class|struct|enum)\s+(?:class\s+)?" + re.escape(
+        name.encode()) + rb"\b", text) is not None
 
 
 def _merge(into: _Name, other: _Name) -> None:
