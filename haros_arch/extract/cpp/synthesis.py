@@ -77,6 +77,8 @@ _TYPE_AS_VALUE = re.compile(r"^expected '\(' for function-style cast or type con
 _NAME_BEFORE = re.compile(rb"((?:[A-Za-z_]\w*\s*::\s*)*[A-Za-z_]\w*)\s*$")
 _CONSTANT = re.compile(r"[A-Z][A-Z0-9]*(?:_[A-Z0-9]+)+|[A-Z]{2,}[0-9]*")
 _DEFINES_NAMESPACE = re.compile(rb"\bnamespace\s+(?:inline\s+)?$")
+# a namespace, class, struct or enum the code defines (the first name of ``a::b``)
+_DEFINED = re.compile(rb"\b(?:namespace|class|struct|enum)\s+(?:class\s+|struct\s+)?([A-Za-z_]\w*)")
 _USING = re.compile(rb"\busing\s+namespace\s+(?:::)?([A-Za-z_][\w:]*)\s*;")
 
 # binary operators for any operand of a synthesised class (and nothing else)
@@ -135,6 +137,7 @@ class Names:
         self.withdrawn: set[str] = set()
         self._read: set[int] = set()  # the files whose using-directives were read
         self._texts: list[bytes] = []  # those files
+        self._defined: set[str] = set()  # the names they define (see ``_spread``)
         self._spread_done: set[tuple[int, str]] = set()  # (file, name) looked for
         self.count = 0
 
@@ -147,6 +150,7 @@ class Names:
             if text is not None and id(text) not in self._read:
                 self._read.add(id(text))
                 self._texts.append(text)
+                self._defined.update(m.decode() for m in _DEFINED.findall(text))
                 self.using.update(m.decode() for m in _USING.findall(text))
                 self.aliases.update(m.decode() for m in _ALIAS_NAME.findall(text))
         for message, text, offset in errors:
@@ -163,7 +167,7 @@ class Names:
         # not a name the code defines somewhere (``namespace autoware::planning {``): it
         # was unknown where clang met it first, and is real further on
         unknown = [name for name, node in self.root.children.items() if not node.known
-                   and not any(_defines(name, text) for text in self._texts)]
+                   and name not in self._defined]
         for text in self._texts:
             todo = [name for name in unknown if (id(text), name) not in self._spread_done]
             if not todo:
@@ -389,12 +393,6 @@ class Names:
 
     def __bool__(self) -> bool:
         return bool(self.count or self.members or self.fields or self.types)
-
-
-def _defines(name: str, text: bytes) -> bool:
-    """Whether ``text`` defines ``name`` as a namespace, class, struct or enum."""
-    return re.search(rb"\b(?:namespace|class|struct|enum)\s+(?:class\s+)?" + re.escape(
-        name.encode()) + rb"\b", text) is not None
 
 
 def _merge(into: _Name, other: _Name) -> None:
