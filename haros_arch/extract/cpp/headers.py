@@ -380,10 +380,8 @@ class IncludeSetup:
         folder = self.workspace.find(package)
         if folder is not None:
             for sub, ext in (("msg", ".msg"), ("srv", ".srv")):
-                path = os.path.join(folder, sub, name + ext)
-                if not os.path.isfile(path):  # listed from another folder (``srvs/``)
-                    path = self._definitions(folder).get(name + ext, path)
-                if os.path.isfile(path):
+                path = self._definitions(folder, sub).get(name + ext)
+                if path is not None:
                     text, found = read_text(path, self.workspace.location(path))
                     self.diagnostics.extend(found)
                     if text is not None:
@@ -396,10 +394,11 @@ class IncludeSetup:
             return None
         return interfaces.parse_definition(package, name, text)
 
-    def _definitions(self, folder: str) -> dict[str, str]:
-        """The interface definitions anywhere in a package folder (a few
-        levels down, not in hidden or test folders): rosidl takes them from the folders
-        its CMakeLists lists, not only ``msg/`` and ``srv/``. By file name."""
+    def _definitions(self, folder: str, kind: str) -> dict[str, str]:
+        """The ``kind`` (msg, srv, action) definition files of a package folder, by file
+        name: those in ``kind/`` first, then any a few levels down, not in hidden or test
+        folders (rosidl takes them from the folders its CMakeLists lists: slam_toolbox's
+        ``srvs/``)."""
         found = self._defined.get(folder)
         if found is None:
             found = self._defined[folder] = {}
@@ -410,7 +409,13 @@ class IncludeSetup:
                 for file in sorted(files):
                     if file.endswith((".msg", ".srv", ".action")):
                         found.setdefault(file, os.path.join(here, file))
-        return found
+        extension = "." + kind
+        chosen = {f: p for f, p in found.items() if f.endswith(extension)}
+        own = os.path.join(folder, kind)
+        if os.path.isdir(own):
+            chosen.update((f, os.path.join(own, f)) for f in os.listdir(own)
+                          if f.endswith(extension) and os.path.isfile(os.path.join(own, f)))
+        return chosen
 
     def _action(self, package: str, name: str, where: Location) -> bool:
         """``pkg/DoAction.h``, ``pkg/DoGoal.h``, ...: the headers of ``action/Do.action``."""
@@ -440,13 +445,8 @@ class IncludeSetup:
         self._handled.add(header)
         folder = self.workspace.find(package)
         extension = {"msg": ".msg", "srv": ".srv", "action": ".action"}[kind]
-        # the definitions anywhere in the package (rosidl reads those its CMakeLists
-        # lists: ``srvs/Pause.srv`` is still ``pkg/srv/Pause``), ``kind/`` first
-        files = {} if folder is None else {
-            f: p for f, p in self._definitions(folder).items() if f.endswith(extension)}
-        if folder is not None and os.path.isdir(os.path.join(folder, kind)):
-            files.update((f, os.path.join(folder, kind, f))
-                         for f in os.listdir(os.path.join(folder, kind)) if f.endswith(extension))
+        # ``srvs/Pause.srv`` is still ``pkg/srv/Pause``
+        files = {} if folder is None else self._definitions(folder, kind)
         names = [f[: -len(extension)] for f in sorted(files)]
         names += [key.split("/")[1] for key in interfaces.WELL_KNOWN
                   if key.startswith(package + "/")]

@@ -76,7 +76,6 @@ _DECLARING = re.compile(rb"\b(?:using|typedef|namespace)\b")
 _TYPE_AS_VALUE = re.compile(r"^expected '\(' for function-style cast or type construction")
 _NAME_BEFORE = re.compile(rb"((?:[A-Za-z_]\w*\s*::\s*)*[A-Za-z_]\w*)\s*$")
 _CONSTANT = re.compile(r"[A-Z][A-Z0-9]*(?:_[A-Z0-9]+)+|[A-Z]{2,}[0-9]*")
-_DEFINES_NAMESPACE = re.compile(rb"\bnamespace\s+(?:inline\s+)?$")
 # a namespace, class, struct or enum the code defines (the first name of ``a::b``)
 _DEFINED = re.compile(rb"\b(?:namespace|class|struct|enum)\s+(?:class\s+|struct\s+)?([A-Za-z_]\w*)")
 _USING = re.compile(rb"\busing\s+namespace\s+(?:::)?([A-Za-z_][\w:]*)\s*;")
@@ -246,8 +245,8 @@ class Names:
     def _from_source(self, text: bytes, offset: int, use: str, scope: list[str]) -> None:
         """The qualified name written at ``offset``: the unknown part and what follows."""
         found = _NAME_AT.match(text, offset)
-        if found is None or _DEFINES_NAMESPACE.search(text, max(0, offset - 40), offset):
-            return  # ``namespace a::b {`` defines the namespace: no use of a name
+        if found is None:
+            return
         written = [p.strip().removeprefix(b"template").strip().decode()
                    for p in found.group(0).split(b"::")]
         if not scope:  # the known scope written before the name: ``known::``
