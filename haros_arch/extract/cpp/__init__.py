@@ -52,6 +52,38 @@ def _fieldless_packages(found: Sequence[Diagnostic]) -> set[str]:
     return packages
 
 
+@dataclass(frozen=True, slots=True)
+class _Error:
+    """A clang error of a parse, each of its facts asked of libclang once (a parse's
+    errors are read by every step that judges it: the stand-in repair, the rounds of
+    declaring names, the choice of the best parse, the diagnostics and ``_hidden``)."""
+
+    spelling: str
+    name: str | None  # the file, as clang names it
+    path: str | None  # the same, absolute
+    line: int
+    column: int
+    offset: int
+
+
+def _errors(tu: TranslationUnit) -> list[_Error]:
+    """The errors of a parse (severity error or fatal), read once per unit."""
+    found: list[_Error] | None = getattr(tu, "_haros_errors", None)
+    if found is None:
+        found = []
+        for d in tu.diagnostics:
+            if d.severity < ClangDiagnostic.Error:
+                continue
+            loc = d.location
+            file = loc.file
+            name = file.name if file is not None else None
+            found.append(_Error(d.spelling, name,
+                                os.path.abspath(name) if name is not None else None,
+                                loc.line, loc.column, loc.offset))
+        tu._haros_errors = found
+    return found
+
+
 def _names_fieldless_type(spelling: str, packages: set[str]) -> bool:
     """A clang error about a field of a message we know only by name: our limit, not a
     mistake in the code."""
@@ -356,15 +388,14 @@ def _translation_unit(path: str, text: str, ros2: bool,
     tu = _parse(path, text, setup, workspace, result, source, owned, ros2)
     if tu is None:
         return result, []
-    errors = [d for d in tu.diagnostics if d.severity >= ClangDiagnostic.Error
-              and (loc := d.location).file is not None and owned(loc.file.name)]
+    errors = [e for e in _errors(tu) if e.name is not None and owned(e.name)]
     fieldless = _fieldless_packages(setup.diagnostics)
     for error in errors[:MAX_ERRORS_PER_FILE]:
-        loc = error.location
+        assert error.path is not None
         code = ("CPP_MESSAGE_FIELD" if _names_fieldless_type(error.spelling, fieldless)
                 else "CPP_PARSE_ERROR")
         result.diagnostics.append(diag.make(
-            code, workspace.location(os.path.abspath(loc.file.name), loc.line, loc.column),
+            code, workspace.location(error.path, error.line, error.column),
             detail=error.spelling))
     finder = CallFinder(tu, source, owned, where, ros2=ros2)
     finder.run()
@@ -387,7 +418,7 @@ def _translation_unit(path: str, text: str, ros2: bool,
     return result, sorted(set(headers))
 
 
-def _hidden(path: str, errors: list[ClangDiagnostic], finder: CallFinder,
+def _hidden(path: str, errors: list[_Error], finder: CallFinder,
             source: SourceCache, fieldless: set[str], workspace: Workspace
             ) -> list[Diagnostic]:
     """Where the errors left can hide a ROS call (``recall``): the API call sites of the
@@ -398,7 +429,7 @@ def _hidden(path: str, errors: list[ClangDiagnostic], finder: CallFinder,
     errors = [e for e in errors if not _names_fieldless_type(e.spelling, fieldless)]
     if not errors:
         return []
-    files = dict.fromkeys([path, *(os.path.abspath(e.location.file.name) for e in errors)])
+    files = dict.fromkeys([path, *(e.path for e in errors if e.path is not None)])
     functions: dict[str, list[recall.Function]] = {}
     silent: dict[str, list[tuple[int, int]]] = {}
     for function in finder.functions:
@@ -430,13 +461,12 @@ def _hidden(path: str, errors: list[ClangDiagnostic], finder: CallFinder,
             found.append(diag.make("CPP_CALL_MISSED", workspace.location(name, site.line),
                                    text=site.text))
         for error in errors:
-            loc = error.location
-            if os.path.abspath(loc.file.name) != name:
+            if error.path != name:
                 continue
-            around = recall.holding(loc.line, functions.get(name, ()), sites)
+            around = recall.holding(error.line, functions.get(name, ()), sites)
             if around is not None:
                 found.append(diag.make(
-                    "CPP_ERROR_NEAR_CALL", workspace.location(name, loc.line, loc.column),
+                    "CPP_ERROR_NEAR_CALL", workspace.location(name, error.line, error.column),
                     function=around[2], start=around[0], end=around[1],
                     detail=error.spelling))
     return found[:recall.MAX_REASONS]
@@ -460,11 +490,8 @@ def _parse(path: str, text: str, setup: IncludeSetup, workspace: Workspace,
         if tu is None:
             return None
         missing = [
-            (d.spelling, workspace.location(os.path.abspath(d.location.file.name),
-                                            d.location.line, d.location.column))
-            for d in tu.diagnostics
-            if d.severity >= ClangDiagnostic.Error and d.location.file is not None
-            and "file not found" in d.spelling]
+            (e.spelling, workspace.location(e.path, e.line, e.column))
+            for e in _errors(tu) if e.path is not None and "file not found" in e.spelling]
         if not missing or not setup.repair(missing):
             break
     assert tu is not None
@@ -483,19 +510,14 @@ def _parse_once(path: str, args: list[str], unsaved: list[tuple[str, str]],
         return None
 
 
-def _errors(tu: TranslationUnit) -> list[ClangDiagnostic]:
-    return [d for d in tu.diagnostics if d.severity >= ClangDiagnostic.Error]
-
-
 def _synthesise(path: str, tu: TranslationUnit, args: list[str],
                 unsaved: list[tuple[str, str]], setup: IncludeSetup, workspace: Workspace,
                 result: CppResult, source: SourceCache,
                 owned: Callable[[str], bool]) -> TranslationUnit:
     """The parse with the fewest errors once the unknown names are declared."""
 
-    def mine(unit: TranslationUnit) -> list[ClangDiagnostic]:
-        return [d for d in _errors(unit)
-                if (loc := d.location).file is not None and owned(loc.file.name)]
+    def mine(unit: TranslationUnit) -> list[_Error]:
+        return [e for e in _errors(unit) if e.name is not None and owned(e.name)]
 
     first = mine(tu)
     before = len(first)
@@ -546,10 +568,10 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
     return again
 
 
-def _hiding(tu: TranslationUnit, errors: list[ClangDiagnostic],
+def _hiding(tu: TranslationUnit, errors: list[_Error],
             source: SourceCache, fieldless: set[str],
             functions: dict[str, list[recall.Function]],
-            sites: dict[str, list[recall.Site]]) -> list[ClangDiagnostic]:
+            sites: dict[str, list[recall.Site]]) -> list[_Error]:
     """Those of ``errors`` that can cost a call (``recall``): one outside every function
     the unit defines (a declaration: it may make a class invalid, and every call in its
     methods with it), or one inside a function whose text calls the ROS API. Errors
@@ -559,14 +581,15 @@ def _hiding(tu: TranslationUnit, errors: list[ClangDiagnostic],
     the functions and the call sites of the files already read (the same in every
     parse of the unit)."""
     errors = [e for e in errors if not _names_fieldless_type(e.spelling, fieldless)]
-    files = {os.path.abspath(e.location.file.name) for e in errors} - functions.keys()
+    files = {e.path for e in errors if e.path is not None} - functions.keys()
     if files:
         found = recall.definitions(tu, files)
         functions.update({name: found.get(name, []) for name in files})
     kept = []
     for error in errors:
-        name = os.path.abspath(error.location.file.name)
-        line = error.location.line
+        name, line = error.path, error.line
+        if name is None:
+            continue
         around = [f for f in functions.get(name, ()) if f[0] <= line <= f[1]]
         if not around:
             kept.append(error)
@@ -579,11 +602,10 @@ def _hiding(tu: TranslationUnit, errors: list[ClangDiagnostic],
     return kept
 
 
-def _located(errors: list[ClangDiagnostic],
+def _located(errors: list[_Error],
              source: SourceCache) -> list[tuple[str, bytes | None, int]]:
     """Errors as ``synthesis.Names.learn`` reads them: message, file bytes, offset."""
-    return [(d.spelling, source.get(loc.file.name), loc.offset)
-            for d in errors if (loc := d.location).file is not None]
+    return [(e.spelling, source.get(e.name), e.offset) for e in errors if e.name is not None]
 
 
 class SourceCache(dict[str, bytes]):

@@ -14,6 +14,7 @@ write in the file.
 
 from __future__ import annotations
 
+import bisect
 from collections.abc import Callable, Sequence
 
 from clang.cindex import Cursor, CursorKind
@@ -39,6 +40,12 @@ def member_of(expr: Cursor | None) -> Cursor | None:
     if decl is None or decl.kind != CursorKind.FIELD_DECL or not _plain_value(decl):
         return None
     return decl
+
+
+def _any_within(offsets: Sequence[int], start: int, end: int) -> bool:
+    """Whether one of the sorted ``offsets`` is in ``[start, end]``."""
+    index = bisect.bisect_left(offsets, start)
+    return index < len(offsets) and offsets[index] <= end
 
 
 class MemberWrites:
@@ -67,13 +74,15 @@ class MemberWrites:
         inside: dict[str, list[int]] = {}
         for where, offset in opaque:
             inside.setdefault(where, []).append(offset)
+        for offsets in inside.values():
+            offsets.sort()
         for function in functions:
             start, end = function.extent.start, function.extent.end
             name: str | None = start.file.name if start.file is not None else None
             data = source.get(name) if name is not None and end.file is not None and (
                 end.file.name == name) else None
-            if name is None or data is None or any(
-                start.offset <= at <= end.offset for at in inside.get(name, ())
+            if name is None or data is None or _any_within(
+                inside.get(name, ()), start.offset, end.offset
             ):
                 self._spans.append(None)
                 self._texts.append(None)

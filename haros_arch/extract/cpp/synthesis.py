@@ -71,6 +71,14 @@ _SCOPED_VALUE = re.compile(rb"::\s*([A-Za-z_]\w*)\s*(?=[);,\]}])")
 # the name written next is what an alias, a typedef or a using-declaration names
 _ALIASED = re.compile(rb"(?:\busing\s+\w+\s*=|\btypedef|\busing)\s*(?:typename\s+)?(?:::\s*)?"
                       rb"(?:[A-Za-z_]\w*\s*::\s*)*$")
+
+
+def _aliased(window: bytes) -> bool:
+    """Whether ``window`` ends where an alias, typedef or using-declaration names what
+    follows (``_ALIASED``; a window without either word cannot match)."""
+    return (b"using" in window or b"typedef" in window) and _ALIASED.search(window) is not None
+
+
 _ALIAS_NAME = re.compile(rb"\busing\s+([A-Za-z_]\w*)\s*=")
 _DECLARING = re.compile(rb"\b(?:using|typedef|namespace)\b")
 _TYPE_AS_VALUE = re.compile(r"^expected '\(' for function-style cast or type construction")
@@ -250,7 +258,10 @@ class Names:
         written = [p.strip().removeprefix(b"template").strip().decode()
                    for p in found.group(0).split(b"::")]
         if not scope:  # the known scope written before the name: ``known::``
-            before = _SCOPE_BEFORE.search(text[max(0, offset - 200):offset])
+            window = text[max(0, offset - 200):offset]
+            # only a window ending in ``::`` can match (a search of the pattern alone
+            # tries every position of the window)
+            before = _SCOPE_BEFORE.search(window) if window.rstrip().endswith(b"::") else None
             if before is not None:
                 scope = [p.strip().decode() for p in before.group(0).split(b"::") if p.strip()]
                 if "std" in scope:
@@ -258,7 +269,7 @@ class Names:
         if any(p in _KEYWORDS for p in written) or any(p in _KEYWORDS for p in scope):
             return
         rest = text[found.end():found.end() + 2]
-        if use == "any" and written[-1][:1].isupper() and _ALIASED.search(
+        if use == "any" and written[-1][:1].isupper() and _aliased(
                 text[max(0, offset - 200):offset]):
             # ``using Mode = vendor::Mode;``, ``using vendor::msg::Limit;``: a type (a
             # lowercase name a using-declaration brings is more often a function)
