@@ -28,6 +28,36 @@ def test_plain_scalars_read_as_the_full_yaml_reader_reads_them(text: str) -> Non
     assert type(fast) is type(full)
 
 
+DOCUMENTS = [
+    "a: 1\nb: [x, 2.5, true, ~]\nc: {d: yes, e: '0x1F'}\n",
+    "/**:\n  ros__parameters:\n    use_sim_time: false\n    rate: 20\n",
+    "base: &b {x: 1}\nderived:\n  <<: *b\n  y: 2\n",
+    "when: 2001-12-14\nbin: !!binary aGVsbG8=\nlong: >\n  folded\n  text\n",
+    "- one\n- two: 2\n  three: 3\n",
+]
+
+
+@pytest.mark.parametrize("text", DOCUMENTS)
+def test_documents_read_as_the_pure_reader_reads_them(text: str) -> None:
+    """``load`` (libyaml's parser where PyYAML has it) gives what PyYAML's own reader
+    gives, with our loaders' tags too."""
+    from haros_arch.launch.ros1.params import RosparamLoader
+
+    assert safe_yaml.load(text) == yaml.load(text, yaml.SafeLoader)
+    assert safe_yaml.load(text, RosparamLoader) == yaml.load(text, RosparamLoader)
+    assert safe_yaml.load("a: deg(180)", RosparamLoader) == {"a": math.pi}
+
+
+@pytest.mark.parametrize("text", ["\ud800reach: 0.8\n", "a: [b\n", "a: \x7f\n", "a: b: c\n"])
+def test_bad_text_is_a_yaml_error(text: str) -> None:
+    """Text either reader refuses (a lone surrogate, which libyaml cannot even encode)
+    is a YAML error with its place, never another exception."""
+    with pytest.raises(yaml.YAMLError):
+        safe_yaml.load(text)
+    with pytest.raises(yaml.YAMLError):
+        safe_yaml.compose(text)
+
+
 def test_set_parameters_between_many_nodes_are_bounded(write_tree) -> None:
     # every node takes every SetParameter before it in its group: nodes x parameters
     body = '<set_parameter name="level" value="3"/><node pkg="pkg" exec="n"/>\n' * 700

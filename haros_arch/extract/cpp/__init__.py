@@ -15,6 +15,7 @@ import re
 from collections.abc import Callable, Sequence
 from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
+from typing import Any
 
 from clang.cindex import Cursor, CursorKind, TranslationUnit, TranslationUnitLoadError
 from clang.cindex import Diagnostic as ClangDiagnostic
@@ -323,7 +324,7 @@ def _units(texts: dict[str, str], ros2: dict[str, bool], setup: IncludeSetup,
     todo = [path for path in texts if path not in done and path not in digests]
     tasks = [(path, texts[path], ros2[path]) for path in todo]
     workers = min(len(todo), jobs or os.cpu_count() or 1)
-    parsed: list[tuple[CppResult, list[str]]]
+    parsed: list[tuple[CppResult, list[str], dict[str, Any], str]]
     if todo:
         setup.materialise()
     for path in todo:  # the PCHs (one per C++ standard), built here, shared by workers
@@ -334,14 +335,12 @@ def _units(texts: dict[str, str], ros2: dict[str, bool], setup: IncludeSetup,
             parsed = list(pool.map(_worker_unit, tasks,
                                    chunksize=max(1, len(tasks) // (workers * 4))))
     else:
-        parsed = [_translation_unit(*task, setup) for task in tasks]
-    for path, (unit, headers) in zip(todo, parsed, strict=True):
+        parsed = [_unit_and_data(*task, setup) for task in tasks]
+    for path, (unit, headers, data, digest) in zip(todo, parsed, strict=True):
         done[path] = unit
-        data = cache.to_data(unit.calls, unit.rosname, unit.diagnostics, unit.facts,
-                             unit.node_names, unit.constructions)
-        digests[path] = cache.digest(data)
+        digests[path] = digest
         if store is not None and headers:
-            store.store(keys[path], headers, data, digests[path])
+            store.store(keys[path], headers, data, digest)
     return {path: done[path] for path in texts if path in done}
 
 
@@ -353,9 +352,20 @@ def _start_worker(setup: IncludeSetup) -> None:
     _WORKER_SETUP = setup
 
 
-def _worker_unit(task: tuple[str, str, bool]) -> tuple[CppResult, list[str]]:
+def _worker_unit(task: tuple[str, str, bool]
+                 ) -> tuple[CppResult, list[str], dict[str, Any], str]:
     assert _WORKER_SETUP is not None
-    return _translation_unit(*task, _WORKER_SETUP)
+    return _unit_and_data(*task, _WORKER_SETUP)
+
+
+def _unit_and_data(path: str, text: str, ros2: bool, setup: IncludeSetup
+                   ) -> tuple[CppResult, list[str], dict[str, Any], str]:
+    """``_translation_unit`` with the result as the cache keeps it and its digest, made
+    where the unit was parsed (in a worker: not in the serial part of the run)."""
+    unit, headers = _translation_unit(path, text, ros2, setup)
+    data = cache.to_data(unit.calls, unit.rosname, unit.diagnostics, unit.facts,
+                         unit.node_names, unit.constructions)
+    return unit, headers, data, cache.digest(data)
 
 
 def _translation_unit(path: str, text: str, ros2: bool,
