@@ -36,7 +36,7 @@ def _parser(loader: type[yaml.SafeLoader]) -> Any:
     resolver and constructors (the tags and implicit types of ``loader``, ours too), the
     events read in C (a parameter file of nav2's size: 4 ms instead of 30 ms, read once
     per node that is given it). A loader with its own ``__init__`` is kept as it is."""
-    if _CParser is None or "__init__" in loader.__dict__:
+    if _CParser is None or loader.__init__ is not yaml.SafeLoader.__init__:
         return loader
     found = _FAST.get(loader)
     if found is None:

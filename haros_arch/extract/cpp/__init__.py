@@ -330,10 +330,16 @@ def _units(texts: dict[str, str], ros2: dict[str, bool], setup: IncludeSetup,
     for path in todo:  # the PCHs (one per C++ standard), built here, shared by workers
         setup.arguments(source=path)
     if workers > 1:
+        # one unit per task, the longest sources first: a worker that is done takes the
+        # next, so the workers end within about one unit of each other (in chunks of an
+        # eighth of the units, one worker could wait a whole chunk for the other)
+        order = sorted(range(len(tasks)), key=lambda index: -len(tasks[index][1]))
         with ProcessPoolExecutor(max_workers=workers, initializer=_start_worker,
                                  initargs=(setup,)) as pool:
-            parsed = list(pool.map(_worker_unit, tasks,
-                                   chunksize=max(1, len(tasks) // (workers * 4))))
+            out = list(pool.map(_worker_unit, [tasks[index] for index in order]))
+        parsed = [out[0]] * len(tasks)
+        for index, item in zip(order, out, strict=True):
+            parsed[index] = item
     else:
         parsed = [_unit_and_data(*task, setup) for task in tasks]
     for path, (unit, headers, data, digest) in zip(todo, parsed, strict=True):

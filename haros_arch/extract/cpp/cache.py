@@ -100,6 +100,9 @@ class Cache:
         self.generated = generated
         self.synthesised = {} if synthesised is None else synthesised  # path -> text, unwritten
         self._digests: dict[str, str | None] = {}  # a header shared by entries: hashed once
+        # the same for the headers of the entries stored: as read from disk after the
+        # parse (a header the run synthesised while parsing is there by then)
+        self._stored: dict[str, str] = {}
 
     def _fingerprint(self, path: str) -> str | None:
         if path not in self._digests:
@@ -130,9 +133,12 @@ class Cache:
         for name in headers:
             if name == derived:  # the names declared for this unit: never on disk, and
                 continue  # made from the source and the other headers, which are listed
-            hashed = fingerprint(name)
+            hashed = self._stored.get(name)
             if hashed is None:
-                return
+                hashed = fingerprint(name)
+                if hashed is None:
+                    return
+                self._stored[name] = hashed
             listed.append([name.replace(self.generated, GENERATED, 1), hashed])
         try:
             os.makedirs(self.folder, exist_ok=True)
