@@ -134,3 +134,21 @@ def test_variant_random_and_pthread_in_a_node_class(tmp_path: Path) -> None:
         ("publish", "noise", "std_msgs/msg/Float64")]
     assert result.rosname == "noise"
     assert [d.code for d in result.diagnostics] == []
+
+
+def test_yaml_cpp_and_every_rclcpp_log_variant_parse_clean(ws: Workspace) -> None:
+    """A node that reads its route with yaml-cpp (a ``convert`` of its own, iteration, the
+    emitter, the exceptions), logs with ``RCLCPP_ERROR_EXPRESSION`` /
+    ``RCLCPP_WARN_SKIPFIRST_THROTTLE`` and times itself with ``Rate::period()``: no clang
+    error is left, so its calls are complete (before: 'YAML' unknown, the macros and
+    ``period`` undeclared, each a partial node)."""
+    source = FIXTURE / "src" / "waypoints" / "src" / "waypoint_server.cpp"
+    result = extract_cpp([str(source)], ws, cache_dir=None)
+    assert result.rosname == "waypoint_server"
+    assert [(c.kind, c.name, c.type, c.queue_size) for c in result.calls] == [
+        ("declare", "route_file", "str", None),
+        ("publish", "?", "geometry_msgs/msg/PoseStamped", 10),
+        ("publish", "route_status", "std_msgs/msg/String", 1),
+    ]
+    # the goal topic comes from the file: a dynamic name, and no clang error
+    assert [d.code for d in result.diagnostics] == ["CPP_DYNAMIC_NAME"]
