@@ -79,6 +79,10 @@ public:
   Node operator[](const Node& key);
   bool remove(const Node& key);
   template<class Key, class Value> void force_insert(const Key& key, const Value& value);
+  // yaml-cpp 0.3 (ROS 1 code keeps it in the #else of HAVE_YAMLCPP_GT_0_5_0)
+  template<class Key> const Node* FindValue(const Key& key) const;
+  template<class T> bool Read(T& value) const;
+  template<class T> const T to() const;
 };
 namespace detail {
 struct iterator_value : public Node, public std::pair<Node, Node> {
@@ -98,6 +102,28 @@ std::vector<Node> LoadAll(const char* input);
 std::vector<Node> LoadAll(std::istream& input);
 std::vector<Node> LoadAllFromFile(const std::string& filename);
 std::string Dump(const Node& node);
+// yaml-cpp 0.3: ``doc["resolution"] >> res;``, ``Parser(stream).GetNextDocument(doc)``
+// (overloads, not a template: code that defines its own template ``operator>>`` for
+// yaml-cpp 0.5, map_server's, still has one best match)
+void operator>>(const Node& node, bool& value);
+void operator>>(const Node& node, char& value);
+void operator>>(const Node& node, int& value);
+void operator>>(const Node& node, unsigned int& value);
+void operator>>(const Node& node, long& value);
+void operator>>(const Node& node, unsigned long& value);
+void operator>>(const Node& node, long long& value);
+void operator>>(const Node& node, unsigned long long& value);
+void operator>>(const Node& node, float& value);
+void operator>>(const Node& node, double& value);
+void operator>>(const Node& node, std::string& value);
+class Parser {
+public:
+  Parser();
+  explicit Parser(std::istream& in);
+  explicit operator bool() const;
+  void Load(std::istream& in);
+  bool GetNextDocument(Node& document);
+};
 std::ostream& operator<<(std::ostream& out, const Node& node);
 enum EMITTER_MANIP {
   Auto, TagByKind, Newline, EmitNonAscii, EscapeNonAscii, EscapeAsJson, SingleQuoted,
