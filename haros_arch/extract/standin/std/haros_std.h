@@ -560,6 +560,7 @@ public:
   constexpr unique_ptr() noexcept;
   constexpr unique_ptr(nullptr_t) noexcept;
   explicit unique_ptr(T* p) noexcept;
+  template<class E> unique_ptr(T* p, E&& deleter) noexcept;  // a pointer and its deleter
   unique_ptr(unique_ptr&& other) noexcept;
   template<class U, class E> unique_ptr(unique_ptr<U, E>&& other) noexcept;
   unique_ptr& operator=(unique_ptr&& other) noexcept;
@@ -571,6 +572,7 @@ public:
   T* release() noexcept;
   void reset(T* p = nullptr) noexcept;
   explicit operator bool() const noexcept;
+  D& get_deleter() noexcept;
 };
 template<class T, class D> class unique_ptr<T[], D> {
 public:
