@@ -254,6 +254,21 @@ def test_a_call_site_with_no_call_extracted_is_a_reason() -> None:
     assert [s.line for s in recall.missed(sites, {3}, [(8, 8)])] == [6]
 
 
+def test_a_function_of_a_namespace_is_a_call_site_only_with_its_namespace() -> None:
+    """``ros::param::search`` is a function of a namespace: ``layer.search(box)`` (lanelet2's
+    spatial search) is no call of it, and no reason for a node to be partial;
+    ``ros::param::get(`` and ``ros::service::call(`` are call sites, written qualified."""
+    from haros_arch.extract.cpp import recall
+
+    text = ("for (const auto & llt : layer.search(lanelet::BoundingBox2d{a, b})) {\n"
+            "  if (!ros::param::get(\"~rate\", rate)) { rate = 10; }\n"
+            "  ros::service::call(\"reset\", srv);\n"
+            "  mapper.remap(ids);\n"
+            "  nh.searchParam(\"robot_description\", key);\n"
+            "}\n")
+    assert [s.line for s in recall.call_sites(text)] == [2, 3, 5]
+
+
 def test_fields_of_messages_known_only_by_name_leave_no_error() -> None:
     result = extract("message_fields.cpp")
     assert rows(result) == [

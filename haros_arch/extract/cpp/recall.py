@@ -66,10 +66,16 @@ def site_pattern(extra: frozenset[str] = frozenset()) -> re.Pattern[str]:
     call; rclcpp's ``snake_case`` methods also bare (``create_publisher<T>(`` in a node
     class) and with their namespace (``rclcpp_action::create_server<``); ``extra`` names
     (a unit's wrappers) as member or bare calls."""
-    names = {name for _, name in api.ALL if name[:1].islower() and len(name) > 4}
+    # a method of a class (``ros::NodeHandle``) is called on an object; a function of a
+    # namespace (``ros::param::search``, ``ros::service::exists``) is not, and ``.search(``
+    # on any other object is no call of it: it is found written with its namespace
+    names = {name for owner, name in api.ALL if name[:1].islower() and len(name) > 4
+             and _is_class(owner)}
+    scoped = {f"{owner.rsplit('::', 1)[-1]}::{name}" for owner, name in api.ALL
+              if name[:1].islower() and not _is_class(owner)}
     bare = {name for name in names if "_" in name} | set(extra)
     member = "|".join(sorted(map(re.escape, names | set(extra)), key=len, reverse=True))
-    free = "|".join(sorted(map(re.escape, bare), key=len, reverse=True))
+    free = "|".join(sorted(map(re.escape, bare | scoped), key=len, reverse=True))
     # the API's classes whose construction is the call, written qualified, made with a
     # factory or new (``make_unique<message_filters::Subscriber<M, Node>>(``)
     made = "|".join(sorted((re.escape(owner) for owner, name in api.ALL
@@ -79,6 +85,13 @@ def site_pattern(extra: frozenset[str] = frozenset()) -> re.Pattern[str]:
                       rf"|(?<![\w.>:~])(?:\w+::)?(?:{free}))\s*[<(]"
                       rf"|(?:make_shared|make_unique)\s*<\s*(?:::)?(?:{made})\s*[<>(]"
                       rf"|\bnew\s+(?:::)?(?:{made})\s*[<(]")
+
+
+def _is_class(owner: str) -> bool:
+    """Whether an API row's owner is a class (``ros::NodeHandle``, ``rclcpp::Node``), not a
+    namespace (``ros::param``, ``rclcpp``, ``image_transport``): ROS names its classes
+    in CamelCase and its namespaces in lowercase."""
+    return owner.rsplit("::", 1)[-1][:1].isupper()
 
 
 def call_sites(text: str, extra: Iterable[str] = ()) -> list[Site]:

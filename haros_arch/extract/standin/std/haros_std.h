@@ -641,13 +641,20 @@ public:
   optional& operator=(nullopt_t) noexcept;
   template<class U = T> optional& operator=(U&& v);
   T* operator->();
+  const T* operator->() const;
   T& operator*();
+  const T& operator*() const;
   T& value();
+  const T& value() const;
   template<class U> T value_or(U&& v) const;
   bool has_value() const noexcept;
   explicit operator bool() const noexcept;
   void reset() noexcept;
+  template<class... A> T& emplace(A&&... args);
+  void swap(optional& other) noexcept;
 };
+template<class T> optional<typename decay<T>::type> make_optional(T&& v);
+template<class T, class... A> optional<T> make_optional(A&&... args);
 
 // <exception>, <stdexcept>
 class exception {
