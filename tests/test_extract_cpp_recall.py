@@ -152,3 +152,19 @@ def test_yaml_cpp_and_every_rclcpp_log_variant_parse_clean(ws: Workspace) -> Non
     ]
     # the goal topic comes from the file: a dynamic name, and no clang error
     assert [d.code for d in result.diagnostics] == ["CPP_DYNAMIC_NAME"]
+
+
+def test_cxx17_library_and_message_setters_parse_clean(ws: Workspace) -> None:
+    """``<filesystem>``, structured bindings over a map and a tuple, ``tuple_element_t``,
+    ``map::insert_or_assign``, a message's ``set__frame_id`` and ``!=``, a publisher's
+    ``get_intra_process_subscription_count`` and ``HOST_NAME_MAX`` / ``gethostname``: no
+    clang error is left (main left six, each a reason for a partial node)."""
+    source = FIXTURE / "src" / "waypoints" / "src" / "route_recorder.cpp"
+    result = extract_cpp([str(source)], ws, cache_dir=None)
+    assert result.rosname == "route_recorder"
+    assert [(c.kind, c.name, c.type, c.queue_size) for c in result.calls] == [
+        ("declare", "folder", "str", None),
+        ("subscribe", "goal_pose", "geometry_msgs/msg/PoseStamped", 10),
+        ("publish", "recorded_goal", "geometry_msgs/msg/PoseStamped", 5),
+    ]
+    assert [d.code for d in result.diagnostics] == []

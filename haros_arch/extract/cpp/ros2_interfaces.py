@@ -114,8 +114,12 @@ def _struct(name: str, fields: list[Field], package: str, kind: str = "msg",
                 cpp = f"std::array<{cpp}, {fld.array}>"
             elif fld.array is not None:
                 cpp = f"std::vector<{cpp}>"
-            lines += [f"  {cpp} {fld.name};", f"  using _{fld.name}_type = {cpp};"]
-    lines += [f"  using SharedPtr = std::shared_ptr<{name}>;",
+            # the generated setter of each field (``header.set__frame_id("map")``)
+            lines += [f"  {cpp} {fld.name};", f"  using _{fld.name}_type = {cpp};",
+                      f"  {name}& set__{fld.name}(const {cpp}& _arg);"]
+    lines += [f"  bool operator==(const {name}& other) const;",
+              f"  bool operator!=(const {name}& other) const;",
+              f"  using SharedPtr = std::shared_ptr<{name}>;",
               f"  using ConstSharedPtr = std::shared_ptr<const {name}>;",
               f"  using UniquePtr = std::unique_ptr<{name}>;",
               f"  using WeakPtr = std::weak_ptr<{name}>;", "};"]

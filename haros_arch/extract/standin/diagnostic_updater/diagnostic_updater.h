@@ -43,6 +43,7 @@ public:
   void force_update();
   void broadcast(int level, const std::string& message);
   double getPeriod();
+  template<class D> void setPeriod(D period);  // seconds, or an rclcpp::Duration
 };
 struct FrequencyStatusParam {
   FrequencyStatusParam(double* min_freq, double* max_freq, double tolerance = 0.1,

@@ -308,6 +308,7 @@ public:
   RCLCPP_SMART_PTR_DEFINITIONS(PublisherBase)
   const char* get_topic_name() const;
   size_t get_subscription_count() const;
+  size_t get_intra_process_subscription_count() const;
 };
 template<class M, class A = void> class Publisher : public PublisherBase {
 public:
@@ -413,7 +414,8 @@ class NodeBaseInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeBaseInterface
   const char* get_fully_qualified_name() const; std::shared_ptr<class Context> get_context();
   template<class... A> std::shared_ptr<CallbackGroup> create_callback_group(A&&... args);
   std::shared_ptr<CallbackGroup> get_default_callback_group(); };
-class NodeTopicsInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeTopicsInterface) };
+class NodeTopicsInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeTopicsInterface)
+  std::string resolve_topic_name(const std::string& name, bool only_expand = false) const; };
 // rclcpp's parameter API on the node's parameters interface (api.RCLCPP_INTERFACES)
 class NodeParametersInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeParametersInterface)
   const rclcpp::ParameterValue& declare_parameter(const std::string& name,

@@ -18,6 +18,7 @@ typedef __UINTMAX_TYPE__ uintmax_t;
 typedef long ssize_t;
 typedef long time_t;
 typedef int pid_t;
+typedef unsigned int uid_t;
 #define PRId8 "d"
 #define PRId16 "d"
 #define PRId32 "d"
@@ -56,6 +57,9 @@ typedef __builtin_va_list va_list;
 #define UINT32_MAX 4294967295U
 #define UINT64_MAX 18446744073709551615UL
 #define INT_MAX 2147483647
+#define PATH_MAX 4096
+#define NAME_MAX 255
+#define HOST_NAME_MAX 64
 #define INT_MIN (-INT_MAX - 1)
 #define UINT_MAX 4294967295U
 #define LONG_MAX 9223372036854775807L
@@ -222,6 +226,16 @@ int clock_nanosleep(int clock, int flags, const struct timespec* req, struct tim
 unsigned int sleep(unsigned int seconds);
 int usleep(useconds_t usec);
 pid_t getpid();
+pid_t getppid();
+uid_t getuid();
+int gethostname(char* name, size_t len);
+char* getcwd(char* buf, size_t size);
+int access(const char* path, int mode);
+int unlink(const char* path);
+#define F_OK 0
+#define R_OK 4
+#define W_OK 2
+#define X_OK 1
 int close(int fd);
 ssize_t read(int fd, void* buf, size_t count);
 ssize_t write(int fd, const void* buf, size_t count);

@@ -122,6 +122,34 @@ public:
 };
 template<class... T> tuple<typename decay<T>::type...> make_tuple(T&&... args);
 template<class... T> tuple<T&...> tie(T&... args);
+// the tuple protocol (structured bindings, std::get) of tuple and pair
+template<class T> struct tuple_size;
+template<class... T> struct tuple_size<tuple<T...>> { static constexpr size_t value = sizeof...(T); };
+template<class A, class B> struct tuple_size<pair<A, B>> { static constexpr size_t value = 2; };
+template<class T> struct tuple_size<const T> { static constexpr size_t value = tuple_size<T>::value; };
+template<size_t I, class T> struct tuple_element;
+template<size_t I, class H, class... R> struct tuple_element<I, tuple<H, R...>>
+    : tuple_element<I - 1, tuple<R...>> {};
+template<class H, class... R> struct tuple_element<0, tuple<H, R...>> { typedef H type; };
+template<class A, class B> struct tuple_element<0, pair<A, B>> { typedef A type; };
+template<class A, class B> struct tuple_element<1, pair<A, B>> { typedef B type; };
+template<size_t I, class T> struct tuple_element<I, const T> {
+  typedef const typename tuple_element<I, T>::type type;
+};
+template<size_t I, class T> using tuple_element_t = typename tuple_element<I, T>::type;
+template<size_t I, class... T> typename tuple_element<I, tuple<T...>>::type& get(tuple<T...>& t);
+template<size_t I, class... T> const typename tuple_element<I, tuple<T...>>::type& get(
+    const tuple<T...>& t);
+template<size_t I, class... T> typename tuple_element<I, tuple<T...>>::type&& get(tuple<T...>&& t);
+template<size_t I, class A, class B> typename tuple_element<I, pair<A, B>>::type& get(pair<A, B>& p);
+template<size_t I, class A, class B> const typename tuple_element<I, pair<A, B>>::type& get(
+    const pair<A, B>& p);
+template<size_t I, class A, class B> typename tuple_element<I, pair<A, B>>::type&& get(
+    pair<A, B>&& p);
+template<class X, class... T> X& get(tuple<T...>& t);
+template<class X, class... T> const X& get(const tuple<T...>& t);
+template<class... T> tuple<T&&...> forward_as_tuple(T&&... args);
+template<class... T> auto tuple_cat(T&&... tuples) -> tuple<>;
 template<class T> struct hash { size_t operator()(const T& v) const; };
 template<class T> struct less { bool operator()(const T& a, const T& b) const; };
 template<class T> struct greater { bool operator()(const T& a, const T& b) const; };
@@ -383,6 +411,11 @@ public:
   const_iterator find(const K& k) const;
   pair<iterator, bool> insert(const value_type& v);
   template<class... Args> pair<iterator, bool> emplace(Args&&... args);
+  template<class M> pair<iterator, bool> insert_or_assign(const K& k, M&& value);
+  template<class... Args> pair<iterator, bool> try_emplace(const K& k, Args&&... args);
+  bool contains(const K& k) const;
+  iterator lower_bound(const K& k);
+  iterator upper_bound(const K& k);
   size_t erase(const K& k);
   iterator erase(iterator pos);
   iterator begin();
