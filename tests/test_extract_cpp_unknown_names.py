@@ -269,6 +269,19 @@ def test_a_function_of_a_namespace_is_a_call_site_only_with_its_namespace() -> N
     assert [s.line for s in recall.call_sites(text)] == [2, 3, 5]
 
 
+def test_a_call_written_in_an_unevaluated_operand_is_no_call_site() -> None:
+    """``decltype(std::declval<NodeT &>().template create_publisher<M>(...))`` names the
+    publisher's type (Autoware's planning_factor_interface): no call is made there, so it
+    is no reason for a node to be partial; a call after a closed ``sizeof(...)`` is one."""
+    from haros_arch.extract.cpp import recall
+
+    text = ("using PublisherPtr =\n"
+            "  decltype(std::declval<NodeT &>().template create_publisher<Array>(\n"
+            "    std::declval<const std::string &>(), 1));\n"
+            "const auto n = sizeof(Array); pub_ = node->create_publisher<Array>(\"f\", n);\n")
+    assert [s.line for s in recall.call_sites(text)] == [4]
+
+
 def test_fields_of_messages_known_only_by_name_leave_no_error() -> None:
     result = extract("message_fields.cpp")
     assert rows(result) == [

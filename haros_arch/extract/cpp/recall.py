@@ -120,9 +120,22 @@ def _call_sites(text: str, extra: frozenset[str]) -> tuple[Site, ...]:
         code = line.split("//", 1)[0]
         if code.lstrip().startswith("#") or _DEFINITION.match(code):
             continue
-        if pattern.search(code):
+        if any(not _unevaluated(code, m.start()) for m in pattern.finditer(code)):
             found.append(Site(number, code.strip()[:80]))
     return tuple(found)
+
+
+_UNEVALUATED = re.compile(r"\b(?:decltype|sizeof|alignof|noexcept)\s*\(")
+
+
+def _unevaluated(code: str, at: int) -> bool:
+    """Whether position ``at`` of a line is inside an operand that is never evaluated
+    (``decltype(std::declval<NodeT &>().create_publisher<M>(...))`` names a type: no
+    call is made there)."""
+    for opening in _UNEVALUATED.finditer(code, 0, at):
+        if code.count("(", opening.end(), at) >= code.count(")", opening.end(), at):
+            return True
+    return False
 
 
 def missed(sites: Sequence[Site], lines: set[int], silent: Sequence[tuple[int, int]]
