@@ -34,7 +34,7 @@ from clang.cindex import (
     conf,
 )
 
-__all__ = ["Node", "children_in", "root"]
+__all__ = ["Node", "by_file", "children_in", "root"]
 
 _VISIT = callbacks["cursor_visit"]
 Value = TypeVar("Value")
@@ -164,33 +164,43 @@ def root(tu: TranslationUnit) -> Node:
     return node
 
 
+def by_file(judge: Callable[[str], Value]) -> Callable[[Any], Value | None]:
+    """``judge`` of the name of the file a source location is in, asked once per file;
+    None for a location in no file. Each file is told by its handle (one libclang call
+    per location, no ``File`` or ``SourceLocation`` made), so a visit over the thousands
+    of cursors of a unit's headers asks each file's name once."""
+    lib = conf.lib
+    handle = c_object_p()
+    judged: dict[int | None, Value | None] = {None: None}
+
+    def of(location: Any) -> Value | None:
+        lib.clang_getInstantiationLocation(location, ctypes.byref(handle), None, None, None)
+        key = ctypes.cast(handle, ctypes.c_void_p).value
+        if key not in judged:
+            assert key is not None  # None is judged above: no file
+            judged[key] = judge(File(ctypes.cast(key, c_object_p)).name)
+        return judged[key]
+
+    return of
+
+
 def children_in(parent: Cursor, wanted: Callable[[str], bool]) -> list[Cursor]:
     """The children of ``parent`` (the unit, a namespace, a class) whose location is in
     a file whose name is ``wanted``, in order: what a loop over its children that asks
-    each one's ``location.file`` keeps, each file told in the visit by its handle and
-    a node made only for the children kept (most of a unit's are in headers nobody
-    walks)."""
+    each one's ``location.file`` keeps, each file judged once (``by_file``) and a node
+    made only for the children kept (most of a unit's are in headers nobody walks)."""
     assert isinstance(parent, Node)
-    unit = parent._unit
     lib = conf.lib
-    handle = c_object_p()
-    kept: dict[int | None, bool] = {}
+    kept = by_file(wanted)
     found: list[bytes] = []
 
     def visit(child: Cursor, _parent: Cursor, _data: object) -> int:
-        lib.clang_getInstantiationLocation(lib.clang_getCursorLocation(child),
-                                           ctypes.byref(handle), None, None, None)
-        key = ctypes.cast(handle, ctypes.c_void_p).value
-        keep = kept.get(key)
-        if keep is None:
-            file = unit.handle(key, ctypes.cast(key, c_object_p)) if key else None
-            keep = kept[key] = file is not None and wanted(file.name)
-        if keep:
+        if kept(lib.clang_getCursorLocation(child)):
             found.append(bytes(child))
         return 1  # CXChildVisit_Continue
 
     lib.clang_visitChildren(parent, _VISIT(visit), None)
-    made = unit.made
+    made = parent._unit.made
     return [made(raw) for raw in found]
 
 

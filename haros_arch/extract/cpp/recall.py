@@ -29,17 +29,16 @@ from dataclasses import dataclass
 
 from clang.cindex import (
     Cursor,
-    File,
     LibclangError,
     SourceLocation,
     SourceRange,
     TranslationUnit,
-    c_object_p,
     callbacks,
     conf,
 )
 
 from . import api
+from .cursors import by_file
 
 __all__ = ["NEAR", "Function", "Site", "call_sites", "holding", "missed", "site_pattern"]
 
@@ -164,25 +163,21 @@ def definitions(tu: TranslationUnit, files: set[str]) -> dict[str, list[Function
     """The functions the unit defines in ``files`` (absolute paths), per file, in
     namespaces and classes at any depth: what ``holding`` looks in. One visit in
     libclang that goes into the namespaces and classes of ``files`` only, each cursor's
-    file told by its handle (a file's name is asked once); the functions of a file in
+    file judged once (``cursors.by_file``); the functions of a file in
     the reverse of their order in it (those of one line: the last first)."""
     from .visitor import CONTAINERS, FUNCTIONS
 
     lib = conf.lib
     functions = {kind.value for kind in FUNCTIONS}
     containers = {kind.value for kind in CONTAINERS}
-    names: dict[int | None, str | None] = {None: None}  # file handle -> name in ``files``
     found: dict[str, list[Function]] = {}
-    handle, line = c_object_p(), ctypes.c_uint()
+    line = ctypes.c_uint()
 
-    def file_of(location: SourceLocation) -> str | None:
-        lib.clang_getInstantiationLocation(location, ctypes.byref(handle), None, None, None)
-        key = ctypes.cast(handle, ctypes.c_void_p).value
-        if key not in names:
-            assert key is not None
-            name = os.path.abspath(File(ctypes.cast(key, c_object_p)).name)
-            names[key] = name if name in files else None
-        return names[key]
+    def asked(name: str) -> str | None:
+        full = os.path.abspath(name)
+        return full if full in files else None
+
+    file_of = by_file(asked)  # the location's file, when it is one of ``files``
 
     def line_of(location: SourceLocation) -> int:
         lib.clang_getInstantiationLocation(location, None, ctypes.byref(line), None, None)
