@@ -336,10 +336,9 @@ def _units(texts: dict[str, str], ros2: dict[str, bool], setup: IncludeSetup,
         order = sorted(range(len(tasks)), key=lambda index: -len(tasks[index][1]))
         with ProcessPoolExecutor(max_workers=workers, initializer=_start_worker,
                                  initargs=(setup,)) as pool:
-            out = list(pool.map(_worker_unit, [tasks[index] for index in order]))
-        parsed = [out[0]] * len(tasks)
-        for index, item in zip(order, out, strict=True):
-            parsed[index] = item
+            by_task = dict(zip(order, pool.map(_worker_unit, [tasks[i] for i in order]),
+                               strict=True))
+        parsed = [by_task[index] for index in range(len(tasks))]
     else:
         parsed = [_unit_and_data(*task, setup) for task in tasks]
     for path, (unit, headers, data, digest) in zip(todo, parsed, strict=True):
