@@ -192,6 +192,8 @@ def _namespace_values(config: Configuration) -> None:
             continue
         tree: dict[str, Any] = {}
         for child in below:
+            if child.is_unresolved:  # ``ns/?``: a file not read sets what is unknown
+                continue
             *path, leaf = child.name[len(prefix):].split("/")
             branch = tree
             for key in path:
@@ -199,7 +201,7 @@ def _namespace_values(config: Configuration) -> None:
             branch[leaf] = child.value
         for child in below:
             child.read_as_part_of = param
-        param.value = tree
+        param.value = None if any(c.is_unresolved for c in below) else tree
         param.launch_type = "dict"
         param.set_by_launch = True
         param.launch_location = below[0].launch_location

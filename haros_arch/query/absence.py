@@ -2,7 +2,8 @@
 
 ``unknown_users(config, resource)``: the node instances of partial or unknown interface,
 or with a name not known statically, that could use the resource through a call the
-model does not show. A check that says
+model does not show (and, for a parameter nothing sets, launch parameters with ``?``
+that may be it). A check that says
 "nobody publishes this" or "nobody reads this" is a fact only when this list is empty.
 
 ``similar_to(word, items)``: the items (resources, links or strings) whose own name is the
@@ -60,6 +61,13 @@ class _Known:
                 users = list(dict.fromkeys(link.node for link in unresolved.links))
                 for candidate in unresolved.candidates:
                     self.guessed.setdefault(id(candidate), []).extend(users)
+        # parameter -> parameters with "?" that the launch sets and that may be it (a
+        # parameter file not read, an entry not known statically: ``/ns/node/?``)
+        self.launch_guessed: dict[int, list[Parameter]] = {}
+        for unresolved in config.parameters:
+            if unresolved.is_unresolved and unresolved.set_by_launch:
+                for candidate in unresolved.candidates:
+                    self.launch_guessed.setdefault(id(candidate), []).append(unresolved)
 
 
 def _reconfigure_namespace(link: Link) -> str | None:
@@ -111,10 +119,14 @@ def owner_of(config: Configuration, parameter: Parameter) -> NodeInstance | None
     return None
 
 
-def unknown_users(charge: Charge, config: Any, resource: Any) -> list[NodeInstance]:
+def unknown_users(charge: Charge, config: Any, resource: Any
+                  ) -> list[NodeInstance | Parameter]:
     """The node instances that could use ``resource`` through a call the model does not
     show: those of partial or unknown interface, and those that use a name with ``?``
-    that may stand for it (a ``getParam(name_read_at_run_time)``).
+    that may stand for it (a ``getParam(name_read_at_run_time)``). For a parameter
+    that nothing is seen to set, also the parameters with ``?`` that the launch sets
+    and that may be it (``/ns/node/?`` of a parameter file not read): the launch may
+    set it unseen.
 
     A node of partial or unknown interface could publish, subscribe, serve or call any
     topic, service or action name, and read or set any shared parameter; a private
@@ -130,13 +142,15 @@ def unknown_users(charge: Charge, config: Any, resource: Any) -> list[NodeInstan
                              "action, parameter or link")
     known = _known(config)
     charge(1)
-    found: list[NodeInstance] = list(known.incomplete)
+    found: list[NodeInstance | Parameter] = list(known.incomplete)
     if isinstance(resource, Parameter):
         owner = owner_of(config, resource)
         if owner is not None:
             found = [] if owner.is_complete else [owner]
         charge(len(known.reconfigured_unresolved) // 64)
         found.extend(reconfiguring(config, resource))
+        if not resource.is_set:
+            found.extend(known.launch_guessed.get(id(resource), ()))
     found.extend(known.guessed.get(id(resource), ()))
     charge(len(found) // 64)
     return list(dict.fromkeys(found))

@@ -279,8 +279,9 @@ def _undecided_finding(rule: Rule, undecided: list[tuple[Any, list[Any]]],
         else ""
     first = "; ".join(label(e) for e in entities(undecided[0][0])[:1])
     message = (f"{len(undecided)} possible finding(s) not reported (first: {first}): "
-               f"these nodes could be the missing side unseen (interface partial or "
-               f"unknown, a name with '?', or dynamic_reconfigure): {named}{more}")
+               f"these could be the missing side unseen (nodes of partial or unknown "
+               f"interface, names with '?', dynamic_reconfigure servers, launch "
+               f"parameters not known statically): {named}{more}")
     return Finding(rule.id + UNDECIDED, "info", f"{rule.title}: not decided",
                    message, config.name if config else None,
                    entity_ids(ranked[:UNDECIDED_NAMED]),

@@ -134,9 +134,11 @@ def tag_rosparam(loader: Ros1Loader, element: Element, scope: Scope) -> None:
     if file is not None:
         if file.literal is None:
             add_param(loader, full, None, None, scope.conditions, where, "rosparam")
+            unseen(loader, full, scope, where)
             return
         data = read_param_file(loader, file.literal, scope, element)
         if data is None:
+            unseen(loader, full, scope, where)
             return
         text = data.decode("utf-8", errors="replace")
     else:
@@ -150,6 +152,7 @@ def tag_rosparam(loader: Ros1Loader, element: Element, scope: Scope) -> None:
         data_value = load_yaml(text)
     except ParamError as err:
         loader.report("LAUNCH_YAML", scope, element, detail=str(err))
+        unseen(loader, full, scope, where)
         return
     if data_value is None:
         data_value = {}
@@ -166,6 +169,13 @@ def tag_rosparam(loader: Ros1Loader, element: Element, scope: Scope) -> None:
         add_param(loader, name.replace(MARK, "?"), leaf,
                        type_name(leaf) if leaf is not None else None,
                        scope.conditions, where, "rosparam")
+
+
+def unseen(loader: Ros1Loader, namespace: str, scope: Scope, where: Location) -> None:
+    """A ``<rosparam>`` whose content is not known (its file not named statically, not
+    read, or not YAML): it may set any parameter under its namespace, which the model
+    says with a parameter ``<namespace>/?`` set by the launch (unknown is not empty)."""
+    add_param(loader, join(namespace, "?"), None, None, scope.conditions, where, "rosparam")
 
 
 __all__ = ["Value", "add_param", "tag_param", "tag_rosparam"]

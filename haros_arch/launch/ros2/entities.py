@@ -232,9 +232,19 @@ class ParamValue:
     as_text: bool = False
 
 
-# A node parameter entry: a ParamFile, or (name Text, value) where value is a Python
-# literal, Text, or a list of those; dict values are flattened with '.'.
-ParamEntry = ParamFile | tuple[Text, Any]
+@dataclass(frozen=True)
+class UnknownParams:
+    """Node parameters given in a form not known statically (a Python value the launch
+    reader cannot follow): the node may get any parameter from it."""
+
+    reason: str
+    location: Location = NOWHERE
+
+
+# A node parameter entry: a ParamFile, parameters not known statically, or (name Text,
+# value) where value is a Python literal, Text, or a list of those; dict values are
+# flattened with '.'.
+ParamEntry = ParamFile | UnknownParams | tuple[Text, Any]
 
 
 @dataclass

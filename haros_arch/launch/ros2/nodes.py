@@ -100,9 +100,15 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
         found[name] = (leaf, location)
         pending[:] = [p for p in pending if p[1] != name]
 
+    # where the node may get parameters we cannot see (a file not read, an entry not
+    # known statically): it then has a parameter "<node>/?" set by the launch, so that
+    # a read of any of its parameters is not called unset (unknown is not empty)
+    unseen: list[Location] = []
+
     def read_file(entry: e.ParamFile, location: Location) -> None:
         document = runner.param_file(entry, scope, location)
         if document is None:
+            unseen.append(location)
             return
         runner.model.nodes[-1].param_files.append((document, location))
         if UNKNOWN_MARK not in node:
@@ -132,6 +138,9 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
             runner.report("LAUNCH_PY_BUDGET", where, detail=f"more than {MAX_PARAM_ENTRIES} "
                           "parameter entries applied to nodes: the parameters of the "
                           "nodes from this one on are not read")
+        param = make_param(node, UNKNOWN_MARK, None, scope.conditions, where)
+        param.owner = len(runner.model.nodes) - 1
+        runner.model.params.append(param)
         return
     for key, value, location in scope.params:  # SetParameter(s), SetParametersFromFile
         if key is None:
@@ -143,6 +152,8 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
     for entry in entries:
         if isinstance(entry, e.ParamFile):
             read_file(entry, entry.location if entry.location.file else where)
+        elif isinstance(entry, e.UnknownParams):
+            unseen.append(entry.location if entry.location.file else where)
         else:
             written, value = entry
             for name, leaf in flat(ev.value(written).text, convert(value, ev)):
@@ -159,6 +170,10 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
     for pattern, name, leaf, location in pending:  # after those they may replace
         param = make_param(node, name, leaf, scope.conditions, location)
         param.owner, param.pattern = owner, pattern
+        runner.model.params.append(param)
+    if unseen:
+        param = make_param(node, UNKNOWN_MARK, None, scope.conditions, unseen[0])
+        param.owner = owner
         runner.model.params.append(param)
 
 

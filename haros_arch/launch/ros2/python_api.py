@@ -204,7 +204,7 @@ def parameters(i: Interpreter, value: Any, n: ast.AST) -> list[e.ParamEntry]:
         return out
     if not isinstance(value, (list, tuple)):
         i.unsupported(n, "node parameters not known statically")
-        return out
+        return [e.UnknownParams("node parameters not known statically", i.where(n))]
     for item in value:
         if isinstance(item, dict):
             for key, val in item.items():
@@ -215,6 +215,8 @@ def parameters(i: Interpreter, value: Any, n: ast.AST) -> list[e.ParamEntry]:
             out.append(e.ParamFile(to_text(item), location=i.where(n)))
         else:
             i.unsupported(n, "a node parameter entry not known statically")
+            out.append(e.UnknownParams("a node parameter entry not known statically",
+                                       i.where(n)))
     return out
 
 

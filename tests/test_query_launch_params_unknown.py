@@ -1,0 +1,140 @@
+"""A launch file that gives a node parameters we cannot see (a parameter file not named
+statically or not readable, a Python entry the reader cannot follow) may set any of that
+node's parameters: a read of one of them is not called 'never set', it is counted in the
+undecided info, which names the launch parameter ``<node>/?``. What the launch is seen
+to set is still checked ('set but never read')."""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+from typing import Any
+
+import pytest
+from conftest import package_xml
+
+from haros_arch.pipeline import Options, analyse
+from haros_arch.project import load
+from haros_arch.query import run_catalogue
+from haros_arch.query.catalogue import UNDECIDED
+
+ROS2_NODE = """
+    import rclpy
+
+    def main():
+        rclpy.init()
+        node = rclpy.create_node('talker')
+        node.declare_parameter('port', rclpy.Parameter.Type.STRING)
+        port = node.get_parameter('port').value
+        node.declare_parameter('gain', 1.0)
+        gain = node.get_parameter('gain').value
+    """
+
+ROS2_LAUNCH = """
+    from launch import LaunchDescription
+    from launch.actions import DeclareLaunchArgument
+    from launch.substitutions import LaunchConfiguration
+    from launch_ros.actions import Node
+    from talk_tools import robot_parameters
+
+    def generate_launch_description():
+        return LaunchDescription([
+            DeclareLaunchArgument('params_file'),
+            Node(package='talk', executable='talker',
+                 parameters=[{'gian': 2.0}, PARAMS]),
+        ])
+    """
+
+
+def _ros2(write_tree: Any, params: str) -> dict[str, list[tuple[str, ...]]]:
+    root = write_tree({
+        "src/talk/package.xml": package_xml("talk", build_type="ament_python"),
+        "src/talk/setup.py": "from setuptools import setup\n"
+                             "setup(name='talk', packages=['talk'], entry_points="
+                             "{'console_scripts': ['talker = talk.talker:main']})\n",
+        "src/talk/resource/talk": "",
+        "src/talk/talk/__init__.py": "",
+        "src/talk/talk/talker.py": ROS2_NODE,
+        "src/talk/launch/talk.launch.py": ROS2_LAUNCH.replace("PARAMS", params),
+        "project.yaml": "project: p\nconfigurations:\n  c: [talk/launch/talk.launch.py]\n",
+    })
+    return _findings(root)
+
+
+def _findings(root: Path) -> dict[str, list[tuple[str, ...]]]:
+    project = load(str(root / "project.yaml"))
+    model = analyse(project, {"PATH": os.environ.get("PATH", "")}, Options(cache_dir=None))
+    found: dict[str, list[tuple[str, ...]]] = {}
+    for finding in run_catalogue(model, project):
+        found.setdefault(finding.rule, []).append(finding.entities)
+    return found
+
+
+def test_ros2_all_parameters_known_decides(write_tree: Any) -> None:
+    # the control case: every entry is known, so the read of port is decided
+    found = _ros2(write_tree, "{'other': 1}")
+    assert found.get("parameter-read-not-set") == [("parameter:/talker/port",)]
+    assert "parameter-read-not-set" + UNDECIDED not in found
+    assert sorted(found["parameter-set-not-read"]) == [("parameter:/talker/gian",),
+                                                        ("parameter:/talker/other",)]
+
+
+@pytest.mark.parametrize("params", [
+    "robot_parameters()",  # a function of another module: not followed
+    "LaunchConfiguration('params_file')",  # a file named by an argument never given
+    "'/outside/the/workspace/params.yaml'",  # a file that cannot be read
+], ids=["python-entry", "unnamed-file", "unreadable-file"])
+def test_ros2_parameters_not_seen_leave_reads_undecided(write_tree: Any, params: str) -> None:
+    found = _ros2(write_tree, params)
+    assert "parameter-read-not-set" not in found
+    assert found["parameter-read-not-set" + UNDECIDED] == [("parameter:/talker/?",)]
+    # what the launch file is seen to set is still checked
+    assert found.get("parameter-set-not-read") == [("parameter:/talker/gian",)]
+
+
+ROS1_NODE = """#!/usr/bin/env python3
+import rospy
+
+rospy.init_node("talker")
+port = rospy.get_param("~port")
+frame = rospy.get_param("/shared/frame")
+"""
+
+ROS1_LAUNCH = """
+<launch>
+  <arg name="config" />
+  <node name="talker" pkg="pkg" type="talker.py">
+    ROSPARAM
+  </node>
+</launch>
+"""
+
+
+def _ros1(write_tree: Any, rosparam: str) -> dict[str, list[tuple[str, ...]]]:
+    root = write_tree({
+        "src/pkg/package.xml": package_xml("pkg"),
+        "src/pkg/CMakeLists.txt": "project(pkg)\n",
+        "src/pkg/scripts/talker.py": ROS1_NODE,
+        "src/pkg/config/known.yaml": "port: 8080\n",
+        "src/pkg/launch/a.launch": ROS1_LAUNCH.replace("ROSPARAM", rosparam),
+        "project.yaml": "project: p\nconfigurations:\n  c: [pkg/launch/a.launch]\n",
+    })
+    os.chmod(root / "src/pkg/scripts/talker.py", 0o755)
+    return _findings(root)
+
+
+def test_ros1_a_rosparam_file_read_decides(write_tree: Any) -> None:
+    found = _ros1(write_tree, '<rosparam file="$(find pkg)/config/known.yaml" />')
+    assert found.get("parameter-read-not-set") == [("parameter:/shared/frame",)]
+
+
+@pytest.mark.parametrize("rosparam", [
+    '<rosparam file="$(find pkg)/config/$(arg config).yaml" />',  # not named statically
+    '<rosparam file="/outside/the/workspace/talker.yaml" />',  # not read
+], ids=["unnamed-file", "unreadable-file"])
+def test_ros1_a_rosparam_not_seen_leaves_its_namespace_undecided(
+        write_tree: Any, rosparam: str) -> None:
+    found = _ros1(write_tree, rosparam)
+    # ~port may come from the file loaded in the node's namespace; /shared/frame cannot
+    assert found.get("parameter-read-not-set") == [("parameter:/shared/frame",)]
+    assert found["parameter-read-not-set" + UNDECIDED] == [("parameter:/talker/?",)]
