@@ -229,11 +229,10 @@ def cmd_extract(args: argparse.Namespace, out: Console, err: Console) -> int:
     analysis = _analyse(args.project, err, _options(args))
     if analysis is None or analysis.model is None:
         return EXIT_USAGE
-    from .query.command import document
-    from .report.json import document_json
+    from .query.command import document_text
 
     model = analysis.model
-    _write(document_json(document(model, analysis.project)), args.output)
+    _write(document_text(model, analysis.project), args.output)
     if not args.quiet:
         summary = out if args.output else err
         print_summary(model, summary, verbose=args.verbose)

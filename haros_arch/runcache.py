@@ -286,13 +286,20 @@ def page(model: Model, inputs: str, compute: Callable[[], str]) -> str:
     workspace root, as text): read back when that run wrote it before, else rendered
     and kept with the run (the page quotes the workspace's sources, which the run's key
     covers)."""
+    return _with_run(model, "report", inputs, compute, lambda page: page, _text)
 
-    def text(data: object) -> str:
-        if not isinstance(data, str):
-            raise TypeError("a kept page is text")
-        return data
 
-    return _with_run(model, "report", inputs, compute, lambda page: page, text)
+def document(model: Model, inputs: str, compute: Callable[[], str]) -> str:
+    """``extract``'s JSON text of a kept model's run under ``inputs`` (its findings, as
+    text): read back when that run wrote it before, else made and kept with the run
+    (the text is the model's document, which the run's key covers)."""
+    return _with_run(model, "document", inputs, compute, lambda text: text, _text)
+
+
+def _text(data: object) -> str:
+    if not isinstance(data, str):
+        raise TypeError("a kept page or document is text")
+    return data
 
 
 def _with_run(model: Model, kind: str, inputs: str, compute: Callable[[], T],

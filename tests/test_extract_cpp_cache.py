@@ -79,6 +79,34 @@ def test_corrupt_entry_is_ignored(workspace_copy: Path, tmp_path: Path) -> None:
     assert rows(again) == rows(first)
 
 
+@pytest.mark.parametrize("second", ['{"result": {"calls": [{"kind": 1}]}}', "not JSON"])
+def test_a_corrupt_result_line_is_parsed_again_and_not_needed_for_digests(
+        workspace_copy: Path, tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
+        second: str) -> None:
+    # an entry is two lines: headers and digest, then the result; a run that only
+    # compares digests (``unit_digests``) reads the first line alone
+    from haros_arch.extract import cpp
+
+    ws = scan([str(workspace_copy)])
+    source = str(workspace_copy / "src" / "demo2" / "src" / "mover.cpp")
+    store = tmp_path / "cache"
+    first = extract_cpp([source], ws, cache_dir=str(store))
+    digests = cpp.unit_digests([source], ws, cache_dir=str(store)).units
+    for entry in (store / "cpp").iterdir():
+        head = entry.read_text().splitlines()[0]
+        entry.write_text(head + "\n" + second)
+    real_parse = cpp._parse
+
+    def no_parse(*args: object) -> None:
+        raise AssertionError("the digest is on the entry's first line")
+
+    monkeypatch.setattr(cpp, "_parse", no_parse)
+    assert cpp.unit_digests([source], ws, cache_dir=str(store)).units == digests
+    monkeypatch.setattr(cpp, "_parse", real_parse)
+    again = extract_cpp([source], ws, cache_dir=str(store))
+    assert rows(again) == rows(first)
+
+
 def test_parallel_parse_gives_the_same_calls(workspace_copy: Path) -> None:
     ws = scan([str(workspace_copy)])
     folder = workspace_copy / "src" / "demo2" / "src"

@@ -310,10 +310,10 @@ def _units(texts: dict[str, str], ros2: dict[str, bool], setup: IncludeSetup,
     done: dict[str, CppResult] = {}
     if store is not None:
         for path, entry in keys.items():
-            kept = store.load(entry)
+            kept = store.load(entry, wanted)
             if kept is not None and not wanted:
                 digests[path] = kept[1]
-            elif kept is not None:
+            elif kept is not None and kept[0] is not None:
                 try:
                     calls, rosname, found, facts, named, made = cache.from_data(kept[0])
                 except (ValueError, TypeError, KeyError):

@@ -28,7 +28,7 @@ from .headers import STANDIN
 from .synthesis import HEADER_NAME
 
 AUTO = "auto"  # cache_dir value: the default folder (see ``default_folder``)
-FORMAT = 1
+FORMAT = 2  # 2: the headers and digest on a first line of their own
 GENERATED = "<generated>"
 
 
@@ -111,18 +111,24 @@ class Cache:
                 text.encode("utf-8")).hexdigest()
         return self._digests[path]
 
-    def load(self, entry: str) -> tuple[dict[str, Any], str] | None:
+    def load(self, entry: str, wanted: bool = True) -> tuple[dict[str, Any] | None, str] | None:
         """The stored result for key ``entry`` if its headers are unchanged, and its
-        ``digest`` (kept with it)."""
+        ``digest`` (kept with it); without ``wanted`` only the digest (the result, on
+        the entry's second line, is not read: a run that only compares digests reads
+        one short line per unit)."""
         try:
             with open(os.path.join(self.folder, entry + ".json"), encoding="utf-8") as handle:
-                data = json.load(handle)
-            for name, hashed in data["headers"]:
-                if self._fingerprint(name.replace(GENERATED, self.generated, 1)) != hashed:
+                head = json.loads(handle.readline())
+                for name, hashed in head["headers"]:
+                    if self._fingerprint(name.replace(GENERATED, self.generated, 1)) != hashed:
+                        return None
+                kept = head["digest"]
+                if not isinstance(kept, str):
                     return None
-            result: dict[str, Any] = data["result"]
-            kept = data.get("digest")
-            return result, kept if isinstance(kept, str) else digest(result)
+                if not wanted:
+                    return None, kept
+                result: dict[str, Any] = json.loads(handle.read())["result"]
+            return result, kept
         except (OSError, ValueError, KeyError, TypeError):
             return None
 
@@ -144,8 +150,11 @@ class Cache:
             os.makedirs(self.folder, exist_ok=True)
             fd, temporary = tempfile.mkstemp(dir=self.folder, suffix=".tmp")
             with os.fdopen(fd, "w", encoding="utf-8") as handle:
-                json.dump({"headers": listed, "result": result,
-                           "digest": result_digest or digest(result)}, handle)
+                # two lines: what tells whether the entry holds and its digest, then
+                # the result (``load`` without ``wanted`` reads only the first)
+                handle.write(json.dumps({"headers": listed,
+                                         "digest": result_digest or digest(result)}) + "\n")
+                json.dump({"result": result}, handle)
             os.replace(temporary, os.path.join(self.folder, entry + ".json"))
         except OSError:
             pass  # a cache that cannot be written is no cache, not an error

@@ -193,6 +193,9 @@ class IncludeSetup:
         self._on_disk = False
         self._tops: dict[str, list[str]] | None = None  # see ``_resolve``
         self._defined: dict[str, dict[str, str]] = {}  # see ``_definitions``
+        self._roots: frozenset[str] | None = None  # see ``_inside``
+        self._inside_of: dict[str, bool] = {}
+        self._listed: dict[tuple[str, str], frozenset[str]] = {}  # see ``_entries``
 
     def arguments(self, pch: bool = True, source: str | None = None) -> list[str]:
         """The parse flags (of translation unit ``source``: its compile command's include
@@ -481,8 +484,13 @@ class IncludeSetup:
                     continue
                 for entry in entries:
                     self._tops.setdefault(entry, []).append(folder)
-        top = header.replace("\\", "/").split("/", 1)[0]
+        parts = header.replace("\\", "/").split("/", 2)
+        top = parts[0]
         near = self.user_dirs if top in (".", "..") else self._tops.get(top, ())
+        if len(parts) > 2 and parts[1] not in (".", "..", "") and len(near) > 1:
+            # ``autoware/<package>/x.hpp``: hundreds of folders hold ``autoware``; only
+            # those whose ``autoware`` holds ``<package>`` can hold the header
+            near = [folder for folder in near if parts[1] in self._entries(folder, top)]
         folders = [*near, *system]
         for folder in folders:
             candidate = os.path.join(folder, header)
@@ -490,10 +498,31 @@ class IncludeSetup:
                 return candidate
         return None
 
+    def _entries(self, folder: str, top: str) -> frozenset[str]:
+        """The names in ``folder/top`` (listed once per run)."""
+        key = (folder, top)
+        found = self._listed.get(key)
+        if found is None:
+            try:
+                found = frozenset(os.listdir(os.path.join(folder, top)))
+            except OSError:
+                found = frozenset()
+            self._listed[key] = found
+        return found
+
     def _inside(self, path: str) -> bool:
-        root = self.workspace.root
-        return path.startswith(root + os.sep) or any(
-            path.startswith(folder + os.sep) for folder in self.user_dirs)
+        """``path`` is under the workspace root or one of the include folders: one of
+        them is ``path`` up to one of its separators (asked once per file)."""
+        inside = self._inside_of.get(path)
+        if inside is None:
+            if self._roots is None:
+                self._roots = frozenset((self.workspace.root, *self.user_dirs))
+            inside, end = False, path.find(os.sep)
+            while end != -1 and not inside:
+                inside = path[:end] in self._roots
+                end = path.find(os.sep, end + 1)
+            self._inside_of[path] = inside
+        return inside
 
     def _empty(self, header: str, where: Location) -> None:
         self._handled.add(header)
