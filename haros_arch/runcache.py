@@ -118,13 +118,19 @@ class Snapshot:
     def tree(self, top: str, skip: frozenset[str] = frozenset()) -> None:
         """Every file below ``top`` (links to folders followed once; dot entries and
         ``skip`` folders left out, as the workspace scan does)."""
-        stack, visited = [top], set()
+        try:
+            info = os.stat(top)
+        except OSError:
+            return
+        # a folder is known by its device and inode (as the real path would tell, with
+        # one stat where the real path takes one per part of the path)
+        stack: list[tuple[str, tuple[int, int]]] = [(top, (info.st_dev, info.st_ino))]
+        visited: set[tuple[int, int]] = set()
         while stack and self.complete:
-            folder = stack.pop()
-            real = os.path.realpath(folder)
-            if real in visited:
+            folder, identity = stack.pop()
+            if identity in visited:
                 continue
-            visited.add(real)
+            visited.add(identity)
             try:
                 entries = sorted(os.scandir(folder), key=lambda e: e.name)
             except OSError:
@@ -138,7 +144,7 @@ class Snapshot:
                 except OSError:
                     continue
                 if stat.S_ISDIR(info.st_mode):
-                    stack.append(entry.path)
+                    stack.append((entry.path, (info.st_dev, info.st_ino)))
                 elif stat.S_ISREG(info.st_mode):
                     self.file(entry.path, info)
 

@@ -72,9 +72,16 @@ def tool_version() -> str:
 def key(path: str, text: str, args: Iterable[str], generated: str) -> str:
     digest = hashlib.sha256(tool_version().encode())
     digest.update(path.encode() + b"\0" + text.encode("utf-8", "replace") + b"\0")
-    for arg in args:
-        digest.update(arg.replace(generated, GENERATED).encode() + b"\0")
+    digest.update(_arguments_digest(tuple(args), generated).encode())
     return digest.hexdigest()
+
+
+@functools.lru_cache(maxsize=256)
+def _arguments_digest(args: tuple[str, ...], generated: str) -> str:
+    """Of a unit's parse flags (a thousand include folders in a big workspace, the same
+    for every unit of a package: hashed once)."""
+    return hashlib.sha256(b"".join(arg.replace(generated, GENERATED).encode() + b"\0"
+                                   for arg in args)).hexdigest()
 
 
 def digest(result: dict[str, Any]) -> str:
