@@ -229,7 +229,7 @@ def cmd_extract(args: argparse.Namespace, out: Console, err: Console) -> int:
     analysis = _analyse(args.project, err, _options(args))
     if analysis is None or analysis.model is None:
         return EXIT_USAGE
-    from .query.command import document_text
+    from .report.json import document_text
 
     model = analysis.model
     _write(document_text(model, analysis.project), args.output)

@@ -261,6 +261,15 @@ CATALOGUE: dict[str, Entry] = {
         "API, so a call there may be missing or read with a wrong name or type. The node "
         "is 'partial'. Errors in code that calls no ROS API cannot hide a call and leave "
         "the node complete."),
+    "CPP_PLUGINS_LOADED": Entry(
+        "info", "{text}: loads plugin classes through pluginlib",
+        "The code creates instances of plugin classes by name (pluginlib's "
+        "createSharedInstance / createUniqueInstance / createUnmanagedInstance / "
+        "createInstance). Their calls are made on this node but are not in its code: "
+        "unless the node is a plugin host whose plugins are attached ([Plugins] in the "
+        "README: nav2 servers, costmaps, move_base, controller managers, ...), each "
+        "instance of it is 'partial', so checks that claim something is absent do not "
+        "decide on it."),
     "CPP_NAMES_DECLARED": Entry(
         "info", "{count} name(s) unknown to the parse declared permissively ({names}); "
         "clang errors in this unit: {before} before, {after} after",

@@ -98,6 +98,9 @@ def completeness(node: Node, found: Sequence[Diagnostic]) -> list[Diagnostic]:
         node.completeness = "unknown"
         node.completeness_reasons = ["no source file of the node was found"]
         return []
+    node.plugin_loads = list(dict.fromkeys(
+        f"{d.location.file}:{d.location.line}" for d in found
+        if d.code == "CPP_PLUGINS_LOADED" and d.location.file))
     # a unit's errors are in its files and the headers they include; an unreadable
     # file counts when it is one of the node's
     causes = [d for d in found if d.code in _PARTIAL_CAUSES.get(node.language, ())

@@ -163,6 +163,10 @@ class Node:
     # (cartographer_ros' occupancy_grid_node is cartographer_occupancy_grid_node in the
     # humble and jazzy releases); a launched executable of one of these names takes it
     aliases: list[str] = field(default_factory=list, metadata={"optional": True})
+    # where the code creates plugin instances by name (pluginlib), ``file:line`` each:
+    # their calls are not in the code; an instance is partial unless the graph attaches
+    # its plugins (a host of ``plugins.hosts``)
+    plugin_loads: list[str] = field(default_factory=list, metadata={"optional": True})
 
     # the node's name (``pkg/exec``, ``pkg/Class``) first, as DESIGN's JSON contract says
     JSON_HEAD: ClassVar[dict[str, Any]] = {"name": lambda node: node.name}

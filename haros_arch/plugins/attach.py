@@ -118,6 +118,7 @@ def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance
     for decl, started_instance in started:
         top = host_of(decl.package, decl.executable, decl.ros_version)
         if top is None:
+            _unhosted(started_instance, owned)
             continue
         hosts = [(top, started_instance)]
         for child in top.children:
@@ -371,6 +372,17 @@ def _missing(config: Configuration, instance: NodeInstance, choice: Choice,
     config.diagnostics.append(found)
     where = choice.location
     own_partial(instance, f"{found.message} ({where.file}:{where.line})", owned)
+
+
+def _unhosted(instance: NodeInstance, owned: set[int]) -> None:
+    """An instance whose code loads plugins (``Node.plugin_loads``) that no host row
+    attaches: their calls are unknown, so it is partial (unknown is not empty)."""
+    node = instance.node
+    if node is None or not node.plugin_loads:
+        return
+    more = f" and {len(node.plugin_loads) - 1} more" if len(node.plugin_loads) > 1 else ""
+    own_partial(instance, f"{node.plugin_loads[0]}{more}: loads plugin classes through "
+                          "pluginlib whose calls are not known here", owned)
 
 
 def own_partial(instance: NodeInstance, reason: str, owned: set[int]) -> None:

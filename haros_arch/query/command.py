@@ -26,20 +26,6 @@ def document(model: Model, project: Project | None) -> dict[str, Any]:
     return data
 
 
-def document_text(model: Model, project: Project | None) -> str:
-    """``document`` as the text ``extract`` writes: read back when the same unchanged
-    run wrote it before with the same findings (``runcache.document``; the model's
-    document is then not even made), else made."""
-    import json
-
-    from .. import runcache
-    from ..report.json import document_json
-
-    findings = to_data(run_catalogue(model, project))
-    return runcache.document(model, json.dumps(findings, sort_keys=True, default=str),
-                             lambda: document_json(document(model, project)))
-
-
 @dataclass
 class Checked:
     """What ``check`` found: the catalogue's findings, the diagnostics no rule reports,

@@ -8,12 +8,27 @@ from typing import TYPE_CHECKING, Any
 from ..model.serialise import to_data
 
 if TYPE_CHECKING:
+    from ..model.model import Model
+    from ..project import Project
     from ..query.command import Checked, Match
 
 
 def document_json(data: dict[str, Any]) -> str:
     """``extract``'s JSON model (with its ``findings``), as written to a file."""
     return json.dumps(data, indent=2, ensure_ascii=False) + "\n"
+
+
+def document_text(model: Model, project: Project | None) -> str:
+    """``document_json`` of ``model``: read back when the same unchanged run wrote it
+    before with the same findings (``runcache.document``; the model's document is then
+    not even made), else made."""
+    from .. import runcache
+    from ..query.catalogue import run_catalogue
+    from ..query.command import document
+
+    findings = to_data(run_catalogue(model, project))
+    return runcache.document(model, json.dumps(findings, sort_keys=True, default=str),
+                             lambda: document_json(document(model, project)))
 
 
 def check_json(checked: Checked) -> str:

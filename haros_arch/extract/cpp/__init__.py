@@ -373,6 +373,36 @@ def _unit_and_data(path: str, text: str, ros2: bool, setup: IncludeSetup
     return unit, headers, data, cache.digest(data)
 
 
+# pluginlib's ClassLoader (ROS 1 and 2) and class_loader: a plugin class made by name
+_PLUGIN_LOAD = re.compile(
+    r"(?:\.|->)\s*(?:template\s+)?(createSharedInstance|createUniqueInstance|"
+    r"createUnmanagedInstance|createInstance)\s*(?:<[^;(]*>)?\s*\(")
+_PLUGIN_LOADER = re.compile(r"pluginlib|class_loader|ClassLoader")
+MAX_PLUGIN_LOADS = 5  # sites said per file
+
+
+def plugin_loads(path: str, text: str, workspace: Workspace) -> list[Diagnostic]:
+    """The lines of ``text`` (the unit's own source) that create plugin instances
+    through pluginlib or class_loader (``CPP_PLUGINS_LOADED``): what the node runs there
+    is not in its code (``extract.completeness`` keeps them on the node)."""
+    if _PLUGIN_LOADER.search(text) is None:
+        return []
+    found: list[Diagnostic] = []
+    for match in _PLUGIN_LOAD.finditer(text):
+        start = text.rfind("\n", 0, match.start()) + 1
+        end = text.find("\n", match.end())
+        line = text[start:end if end != -1 else len(text)]
+        if line.lstrip().startswith(("//", "*", "/*")):
+            continue
+        number = text.count("\n", 0, match.start()) + 1
+        found.append(diag.make("CPP_PLUGINS_LOADED",
+                               workspace.location(path, number, match.start(1) - start + 1),
+                               text=line.strip()[:120]))
+        if len(found) == MAX_PLUGIN_LOADS:
+            break
+    return found
+
+
 def _translation_unit(path: str, text: str, ros2: bool,
                       setup: IncludeSetup) -> tuple[CppResult, list[str]]:
     """What one source file gives, and the workspace / synthesised headers it read
@@ -414,6 +444,7 @@ def _translation_unit(path: str, text: str, ros2: bool,
             detail=error.spelling))
     finder = CallFinder(tu, source, owned, where, ros2=ros2)
     finder.run()
+    result.diagnostics.extend(plugin_loads(path, text, workspace))
     result.calls = sorted(finder.calls, key=lambda c: (
         c.location.file or "", c.location.line, c.location.column))
     result.diagnostics.extend(finder.diagnostics)
