@@ -389,6 +389,32 @@ def test_a_model_whose_links_read_back_with_other_calls_is_not_kept(tmp_path: Pa
     assert again == first and "scan" in timings  # ran again: nothing was kept
 
 
+def test_an_unchanged_runs_extract_text_is_kept_with_it(tmp_path: Path, monkeypatch) -> None:
+    """`extract` twice with nothing changed makes the model's JSON document once and
+    writes the same bytes; a changed source makes it again."""
+    from haros_arch.cli import main
+    from haros_arch.query import command
+
+    project = _copy(tmp_path)
+    made: list[int] = []
+    original = command.document
+
+    def counting(*args, **kwargs):
+        made.append(1)
+        return original(*args, **kwargs)
+
+    monkeypatch.setattr(command, "document", counting)
+    texts = []
+    for name in ("a.json", "b.json"):
+        assert main(["extract", str(project), "-q", "-o", str(tmp_path / name)]) == 0
+        texts.append((tmp_path / name).read_bytes())
+    assert len(made) == 1 and texts[0] == texts[1]
+    source = next((tmp_path / "ws").rglob("*.py"))
+    source.write_text(source.read_text() + "\n# changed\n")
+    assert main(["extract", str(project), "-q", "-o", str(tmp_path / "c.json")]) == 0
+    assert len(made) == 2 and (tmp_path / "c.json").read_bytes() == texts[0]
+
+
 def test_an_unchanged_runs_report_page_is_kept_with_it(tmp_path: Path, monkeypatch) -> None:
     """`report` twice with nothing changed renders the page once and writes the same
     bytes; a changed source renders it again."""

@@ -1,0 +1,127 @@
+"""A node whose code creates plugin instances by name (pluginlib) makes calls that are not
+in its code. Unless it is a host whose plugins the graph attaches, each instance of it
+is partial, so a check that claims an absence does not decide on it (Autoware's
+motion_velocity_planner loads its modules so, and they read its parameters)."""
+
+from __future__ import annotations
+
+import os
+from typing import Any
+
+from conftest import package_xml
+
+from haros_arch.extract.cpp import plugin_loads
+from haros_arch.pipeline import Options, analyse
+from haros_arch.project import load
+from haros_arch.query import run_catalogue
+from haros_arch.query.catalogue import UNDECIDED
+from haros_arch.workspace import scan
+
+
+def test_the_sites_that_create_plugin_instances_are_found(tmp_path: Any) -> None:
+    text = (
+        "#include <pluginlib/class_loader.hpp>\n"
+        "void load(Loader & loader, const std::string & name) {\n"
+        "  auto a = loader_.createSharedInstance(name);\n"
+        "  // auto b = loader_.createSharedInstance(name);\n"
+        "  auto c = loader_ptr_->createUniqueInstance(name);\n"
+        "  Module * d = loader.template createUnmanagedInstance<Module>(name);\n"
+        "  auto e = createInstance(name);  // a function of its own, not a loader's\n"
+        "}\n")
+    ws = scan([str(tmp_path)])
+    found = plugin_loads(str(tmp_path / "a.cpp"), text, ws)
+    assert [(d.code, d.location.line) for d in found] == [
+        ("CPP_PLUGINS_LOADED", 3), ("CPP_PLUGINS_LOADED", 5), ("CPP_PLUGINS_LOADED", 6)]
+    # without pluginlib or class_loader in the file, a method of that name is another's
+    assert plugin_loads(str(tmp_path / "a.cpp"), text.replace(
+        "#include <pluginlib/class_loader.hpp>\n", ""), ws) == []
+
+
+NODE = """
+    #include <memory>
+    #include <string>
+    #include <vector>
+    #include <pluginlib/class_loader.hpp>
+    #include <rclcpp/rclcpp.hpp>
+
+    namespace planner {
+    class Module {
+     public:
+      virtual ~Module() = default;
+      virtual void init(rclcpp::Node & node, const std::string & name) = 0;
+    };
+
+    class PlannerNode : public rclcpp::Node {
+     public:
+      PlannerNode() : Node("planner"), loader_("planner", "planner::Module") {
+        rate_ = declare_parameter<double>("rate", 10.0);
+        LOAD
+      }
+     private:
+      pluginlib::ClassLoader<Module> loader_;
+      std::vector<std::shared_ptr<Module>> modules_;
+      double rate_;
+    };
+    }  // namespace planner
+
+    int main(int argc, char ** argv) {
+      rclcpp::init(argc, argv);
+      rclcpp::spin(std::make_shared<planner::PlannerNode>());
+    }
+    """
+
+LOAD = """
+        for (const auto & name : declare_parameter<std::vector<std::string>>(
+                 "modules", std::vector<std::string>{})) {
+          auto module = loader_.createSharedInstance(name);
+          module->init(*this, name);
+          modules_.push_back(module);
+        }
+"""
+
+LAUNCH = """
+    <launch>
+      <node pkg="planner" exec="planner_node" name="planner">
+        <param name="rate" value="5.0"/>
+        <param name="modules" value="[stop]"/>
+        <param name="stop.margin" value="2.0"/>
+      </node>
+    </launch>
+    """
+
+
+def _run(write_tree: Any, load_code: str) -> tuple[Any, dict[str, list[tuple[str, ...]]]]:
+    root = write_tree({
+        "src/planner/package.xml": package_xml("planner", build_type="ament_cmake"),
+        "src/planner/CMakeLists.txt":
+            "project(planner)\nadd_executable(planner_node src/planner_node.cpp)\n"
+            "install(TARGETS planner_node DESTINATION lib/${PROJECT_NAME})\n",
+        "src/planner/src/planner_node.cpp": NODE.replace("LOAD", load_code),
+        "src/planner/launch/planner.launch.xml": LAUNCH,
+        "project.yaml": "project: p\nconfigurations:\n  c: [planner/launch/planner.launch.xml]\n",
+    })
+    project = load(str(root / "project.yaml"))
+    model = analyse(project, {"PATH": os.environ.get("PATH", "")}, Options(cache_dir=None))
+    found: dict[str, list[tuple[str, ...]]] = {}
+    for finding in run_catalogue(model, project):
+        found.setdefault(finding.rule, []).append(finding.entities)
+    instance = next(n for n in model.configurations[0].nodes if n.name == "/planner")
+    return instance, found
+
+
+def test_a_node_that_loads_plugins_no_host_attaches_is_partial(write_tree: Any) -> None:
+    instance, found = _run(write_tree, LOAD)
+    assert instance.completeness == "partial"
+    assert any("loads plugin classes through pluginlib" in r
+               for r in instance.completeness_reasons)
+    assert instance.node.plugin_loads == ["planner/src/planner_node.cpp:21"]
+    # stop.margin is the module's: not called unread, counted as undecided
+    assert "parameter-set-not-read" not in found
+    assert found["parameter-set-not-read" + UNDECIDED] == [("node:/planner",)]
+
+
+def test_the_same_node_without_plugins_decides(write_tree: Any) -> None:
+    instance, found = _run(write_tree, 'declare_parameter<std::vector<std::string>>('
+                                       '"modules", std::vector<std::string>{});')
+    assert instance.completeness == "complete" and not instance.node.plugin_loads
+    assert found["parameter-set-not-read"] == [("parameter:/planner/stop.margin",)]
