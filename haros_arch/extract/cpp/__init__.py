@@ -385,10 +385,13 @@ def plugin_loads(path: str, text: str, workspace: Workspace) -> list[Diagnostic]
     """The lines of ``text`` (the unit's own source) that create plugin instances
     through pluginlib or class_loader (``CPP_PLUGINS_LOADED``): what the node runs there
     is not in its code (``extract.completeness`` keeps them on the node)."""
-    if _PLUGIN_LOADER.search(text) is None:
-        return []
+    # the loader is often a member declared in the class's header: the three names of
+    # its own are enough; ``createInstance`` counts only beside a loader's name
+    loader = _PLUGIN_LOADER.search(text) is not None
     found: list[Diagnostic] = []
     for match in _PLUGIN_LOAD.finditer(text):
+        if match.group(1) == "createInstance" and not loader:
+            continue
         start = text.rfind("\n", 0, match.start()) + 1
         end = text.find("\n", match.end())
         line = text[start:end if end != -1 else len(text)]
