@@ -270,6 +270,13 @@ CATALOGUE: dict[str, Entry] = {
         "README: nav2 servers, costmaps, move_base, controller managers, ...), each "
         "instance of it is 'partial', so checks that claim something is absent do not "
         "decide on it."),
+    "CPP_NODE_PASSED": Entry(
+        "info", "{cls} of package {package} is built with the node ({given}) in code that "
+        "is not read with this node",
+        "The node constructs a class of another package, giving it the node (or its "
+        "handle), and that class's constructor is defined in a source of the other "
+        "package: the ROS calls it makes on the node are not read. The node is "
+        "'partial', so checks that claim something is absent do not decide on it."),
     "CPP_NAMES_DECLARED": Entry(
         "info", "{count} name(s) unknown to the parse declared permissively ({names}); "
         "clang errors in this unit: {before} before, {after} after",

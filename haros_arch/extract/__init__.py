@@ -84,7 +84,8 @@ def cpp_sources(nodes: Sequence[Node], workspace: Workspace) -> list[str]:
 # each cause (a C++ error that can hide a call, ``cpp.recall``; a file that could not be
 # read or parsed)
 _PARTIAL_CAUSES = {
-    "cpp": ("CPP_CALL_MISSED", "CPP_ERROR_NEAR_CALL", "CPP_PARSE_FAILED", "FILE_UNREADABLE"),
+    "cpp": ("CPP_CALL_MISSED", "CPP_ERROR_NEAR_CALL", "CPP_PARSE_FAILED", "FILE_UNREADABLE",
+            "CPP_NODE_PASSED"),
     "python": ("PY_PARSE_ERROR", "PY_TOO_COMPLEX", "FILE_UNREADABLE"),
 }
 _PARTIAL_CODE = {"cpp": "CPP_NODE_PARTIAL", "python": "PY_NODE_PARTIAL"}

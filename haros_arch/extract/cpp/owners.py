@@ -8,6 +8,7 @@ owners that construct it (``constructed_class``), as a device object given the n
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable
 
 from clang.cindex import Cursor, CursorKind
@@ -54,6 +55,76 @@ def constructed_class(call: Cursor, owned: Callable[[str], bool]) -> str | None:
     if where is None or not owned(where.name):
         return None
     return qualified_name(cls) or None
+
+
+# the node classes whose object a node's code hands to other code (``*this`` of a class
+# derived from one, or an expression of one of these types)
+_NODE_CLASSES = ("rclcpp::Node", "rclcpp_lifecycle::LifecycleNode", "ros::NodeHandle")
+_NODE_TYPE = re.compile(r"\b(?:rclcpp::Node|rclcpp_lifecycle::LifecycleNode|ros::NodeHandle|"
+                        r"rclcpp::node_interfaces::Node(?:Topics|Services|Parameters)Interface)\b")
+
+
+def unseen_construction(call: Cursor, owned: Callable[[str], bool]
+                        ) -> tuple[Cursor, Cursor] | None:
+    """A construction of a workspace class whose constructor's code is not in this
+    translation unit (declared in a header, defined in another library's source) and
+    that is given the node (``*this``, ``this``, ``shared_from_this()``, a node or
+    NodeHandle, a node interface): the class and the argument. Its constructor may make
+    ROS calls on the node that this unit does not show (Autoware's controller node
+    builds its lateral and longitudinal controllers so)."""
+    target = call.referenced
+    if target is None:
+        return None
+    cls: Cursor | None = None
+    constructor: Cursor | None = None
+    if target.kind == CursorKind.CONSTRUCTOR:
+        cls, constructor = target.semantic_parent, target
+    elif (qualified_name(target.semantic_parent), target.spelling) in api.FACTORIES:
+        cls = factory_made(call)
+    if cls is None or cls.kind not in _CLASSES:
+        return None
+    where = cls.location.file
+    if where is None or not owned(where.name):
+        return None
+    given = [arg for arg in call.get_arguments() if _is_node(arg)]
+    if not given:
+        return None
+    if constructor is not None and constructor.get_definition() is not None:
+        return None
+    if constructor is None and any(
+            c.kind == CursorKind.CONSTRUCTOR and c.get_definition() is not None
+            for c in cls.get_children()):
+        return None  # made through make_shared: one of its constructors is here
+    return cls, given[0]
+
+
+def _is_node(arg: Cursor) -> bool:
+    """Whether an argument is the node (or a handle or interface of one)."""
+    expr = strip(arg)
+    for _ in range(MAX_DEPTH):  # *this, this
+        if expr.kind == CursorKind.UNARY_OPERATOR or (
+                expr.kind == CursorKind.UNEXPOSED_EXPR and not expr.spelling):
+            inner = [c for c in expr.get_children() if c.kind.is_expression()]
+            if len(inner) != 1:
+                break
+            expr = strip(inner[0])
+        else:
+            break
+    if expr.kind == CursorKind.CXX_THIS_EXPR:
+        return _derives_from_node(expr.type.get_pointee().get_declaration(), 0)
+    if expr.kind == CursorKind.CALL_EXPR and expr.spelling == "shared_from_this":
+        return True
+    return _NODE_TYPE.search(arg.type.get_canonical().spelling) is not None
+
+
+def _derives_from_node(cls: Cursor, depth: int) -> bool:
+    if cls is None or depth > MAX_DEPTH or cls.kind not in _CLASSES:
+        return False
+    if qualified_name(cls) in _NODE_CLASSES:
+        return True
+    return any(_derives_from_node(base.referenced, depth + 1)
+               for base in cls.get_children()
+               if base.kind == CursorKind.CXX_BASE_SPECIFIER and base.referenced is not None)
 
 
 def handle_node(callee: Cursor) -> tuple[str, Cursor, tuple[str, str]] | None:

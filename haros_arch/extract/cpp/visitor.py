@@ -40,7 +40,7 @@ from .handles import (
 )
 from .links import Fact, argument_facts
 from .members import MemberWrites, member_of
-from .owners import constructed_class, handle_node, owner_of
+from .owners import constructed_class, handle_node, owner_of, unseen_construction
 from .qos import qos as qos_of
 from .tested import Key, TestedCalls
 from .tested import key as key_of
@@ -302,7 +302,17 @@ class CallFinder:
         return api.UNRESOLVED_ROS2 if self.ros2 else api.UNRESOLVED_ROS1
 
     def _construction(self, call: Cursor) -> None:
-        """Record that the function being walked constructs a class of the workspace."""
+        """Record that the function being walked constructs a class of the workspace;
+        say so when that class is another package's, built here with the node and
+        defined elsewhere (``CPP_NODE_PASSED``: its calls on the node are not read)."""
+        unseen = unseen_construction(call, self.owned)
+        if unseen is not None:
+            cls, given = unseen
+            here, there = self.where(call), self.where(cls)
+            if there.package and there.package != here.package:
+                self.diagnostics.append(diag.make(
+                    "CPP_NODE_PASSED", here, cls=qualified_name(cls), package=there.package,
+                    given="".join(t.spelling for t in given.get_tokens())[:60]))
         name = constructed_class(call, self.owned)
         if name is not None and self._owner is not None and name != self._owner and (
             (self._owner, name) not in self.constructions

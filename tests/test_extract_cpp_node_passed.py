@@ -1,0 +1,92 @@
+"""A node that builds a class of another package with itself (``*this``, its handle) runs
+that class's constructor, whose ROS calls are not read when its code is in the other
+package's sources: the node is partial there (CPP_NODE_PASSED). A constructor whose code
+the unit has (a header's inline one) or a class of the node's own package is read as
+usual. Autoware's trajectory follower builds its MPC and PID controllers so, and they
+declare the node's parameters."""
+
+from __future__ import annotations
+
+import os
+from typing import Any
+
+from conftest import package_xml
+
+from haros_arch.pipeline import Options, analyse
+from haros_arch.project import load
+
+LIB_HEADER = """
+    #include <rclcpp/rclcpp.hpp>
+    namespace lateral {
+    class Mpc {
+     public:
+      explicit Mpc(rclcpp::Node & node)BODY
+     private:
+      double horizon_{0.0};
+    };
+    }  // namespace lateral
+    """
+
+LIB_SOURCE = """
+    #include "lateral/mpc.hpp"
+    namespace lateral {
+    Mpc::Mpc(rclcpp::Node & node) { horizon_ = node.declare_parameter<double>("horizon"); }
+    }  // namespace lateral
+    """
+
+NODE = """
+    #include <memory>
+    #include <rclcpp/rclcpp.hpp>
+    #include "lateral/mpc.hpp"
+
+    class Controller : public rclcpp::Node {
+     public:
+      Controller() : Node("controller") {
+        rate_ = declare_parameter<double>("rate", 30.0);
+        mpc_ = std::make_shared<lateral::Mpc>(*this);
+      }
+     private:
+      double rate_;
+      std::shared_ptr<lateral::Mpc> mpc_;
+    };
+
+    int main(int argc, char ** argv) {
+      rclcpp::init(argc, argv);
+      rclcpp::spin(std::make_shared<Controller>());
+    }
+    """
+
+
+def _node(write_tree: Any, body: str, with_source: bool) -> Any:
+    files = {
+        "src/lateral/package.xml": package_xml("lateral", build_type="ament_cmake"),
+        "src/lateral/CMakeLists.txt": "project(lateral)\nadd_library(lateral src/mpc.cpp)\n",
+        "src/lateral/include/lateral/mpc.hpp": LIB_HEADER.replace("BODY", body),
+        "src/control/package.xml": package_xml("control", build_type="ament_cmake"),
+        "src/control/CMakeLists.txt":
+            "project(control)\nadd_executable(controller src/controller.cpp)\n"
+            "install(TARGETS controller DESTINATION lib/${PROJECT_NAME})\n",
+        "src/control/src/controller.cpp": NODE,
+        "project.yaml": "project: p\nworkspace: [src]\nconfigurations: {}\n",
+    }
+    if with_source:
+        files["src/lateral/src/mpc.cpp"] = LIB_SOURCE
+    root = write_tree(files)
+    model = analyse(load(str(root / "project.yaml")), {"PATH": os.environ.get("PATH", "")},
+                    Options(cache_dir=None))
+    return next(n for p in model.packages for n in p.nodes if n.name == "control/controller")
+
+
+def test_a_node_given_to_another_packages_constructor_is_partial(write_tree: Any) -> None:
+    node = _node(write_tree, ";", True)
+    assert node.completeness == "partial"
+    assert any("lateral::Mpc of package lateral is built with the node (*this)" in r
+               for r in node.completeness_reasons), node.completeness_reasons
+
+
+def test_a_constructor_the_unit_reads_leaves_the_node_complete(write_tree: Any) -> None:
+    node = _node(write_tree, ' { horizon_ = node.declare_parameter<double>("horizon"); }',
+                 False)
+    assert node.completeness == "complete", node.completeness_reasons
+    # the inline constructor's call is read as the node's
+    assert "horizon" in [c.name for c in node.calls]
