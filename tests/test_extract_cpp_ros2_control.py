@@ -13,7 +13,7 @@ import pytest
 from haros_arch import cmake
 from haros_arch.extract import extract_nodes
 from haros_arch.extract.cpp import CppResult, api, extract_cpp, toolchain
-from haros_arch.extract.cpp.headers import FALLBACK, IncludeSetup
+from haros_arch.extract.cpp.headers import FALLBACK, IncludeSetup, _fallback_file
 from haros_arch.workspace import scan
 from tests.conftest import package_xml
 
@@ -113,6 +113,18 @@ def test_a_stand_in_that_includes_rclcpp_makes_the_unit_ros2() -> None:
         assert not setup.scan(os.path.join(PACKAGE, "src", "plain.cpp"), "#include <vector>\n")
     finally:
         setup.close()
+
+
+def test_a_header_name_that_leads_out_of_the_stand_ins_has_none() -> None:
+    """``../rclcpp/rclcpp.hpp`` is not FALLBACK's (with the system's headers, it would
+    otherwise bring in our rclcpp stand-in)."""
+    assert _fallback_file("controller_interface/helpers.hpp") == os.path.join(
+        FALLBACK, "controller_interface", "helpers.hpp")
+    assert _fallback_file("controller_interface/../hardware_interface/handle.hpp") == (
+        os.path.join(FALLBACK, "hardware_interface", "handle.hpp"))
+    assert _fallback_file("../rclcpp/rclcpp.hpp") is None
+    assert _fallback_file(os.path.join(FALLBACK, "controller_interface", "helpers.hpp")) is None
+    assert _fallback_file("controller_interface/missing.hpp") is None
 
 
 def test_every_fallback_header_parses_without_error(write_tree) -> None:

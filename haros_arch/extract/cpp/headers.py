@@ -19,9 +19,10 @@ resolved the way the preprocessor will, and:
   generate_export_header writes at build time: it defines ``NAME_EXPORT`` and its
   siblings empty;
 - the headers of ros2_control (``controller_interface/``, ``hardware_interface/``,
-  ``joint_limits/``), which robot workspaces have installed rather than as sources, come
-  from the stand-ins in ``standin/fallback`` only when the workspace does not have them
-  (``FALLBACK``): never in place of the package's real headers;
+  ``semantic_components/``, ``joint_limits/``), which robot workspaces have installed
+  rather than as sources, come from the stand-ins in ``standin/fallback`` only when the
+  workspace does not have them (``FALLBACK``): never in place of the package's real
+  headers;
 - a package's own headers win over the stand-ins: a unit of a package our stand-ins also
   provide (rclcpp_components, bondcpp, class_loader, ...) is parsed with the package's
   ``include`` folder first and without the precompiled stand-ins (whose classes its own
@@ -336,7 +337,7 @@ class IncludeSetup:
         ):
             return None
         found = self._resolve(header)
-        if found is None and os.path.isfile(os.path.join(FALLBACK, header)):
+        if found is None and _fallback_file(header) is not None:
             self._fallback(header)
             return None
         if found is None and self.system_headers and os.path.isfile(os.path.join(STANDIN, header)):
@@ -361,7 +362,8 @@ class IncludeSetup:
     def _fallback(self, header: str) -> None:
         """``header`` from the stand-ins of ``FALLBACK`` (the workspace has none by that
         name): a synthesised header that includes it, first on the include path."""
-        path = os.path.join(FALLBACK, header)
+        path = _fallback_file(header)
+        assert path is not None
         self._handled.add(header)
         self._write(header, f"// haros_arch: the stand-in of {header}, which the workspace "
                             f'does not have\n#include "{path}"\n')
@@ -606,6 +608,16 @@ def precompiled_prelude(flags: Sequence[str]) -> str | None:
             path = None
         _PCH[key] = path
         return path
+
+
+def _fallback_file(header: str) -> str | None:
+    """The stand-in of ``FALLBACK`` for ``header``, if there is one (not a name that leads
+    out of the folder: ``../rclcpp/rclcpp.hpp``)."""
+    name = os.path.normpath(header)
+    if os.path.isabs(name) or name.startswith(os.pardir):
+        return None
+    path = os.path.join(FALLBACK, name)
+    return path if os.path.isfile(path) else None
 
 
 def _parents(path: str, root: str) -> list[str]:
