@@ -327,6 +327,12 @@ _RCLCPP_NODE: dict[str, RosFunction] = {
     "undeclare_parameter": RosFunction("write", on_handle=False),
 }
 RCLCPP_NODES = ("rclcpp::Node", "rclcpp_lifecycle::LifecycleNode")
+# ros2_control: a controller's ``auto_declare<T>(name, default)`` declares the parameter on
+# the controller's node (or reads it, declared already), as declare_parameter does
+ROS2_CONTROL: dict[tuple[str, str], RosFunction] = {
+    ("controller_interface::ControllerInterfaceBase", "auto_declare"):
+        _RCLCPP_NODE["declare_parameter"],
+}
 # a node's parameters interface (node->get_node_parameters_interface()) has the same
 # parameter methods: slam_toolbox keeps one and declares through it
 RCLCPP_PARAMETERS_INTERFACE = "rclcpp::node_interfaces::NodeParametersInterface"
@@ -373,7 +379,7 @@ UNRESOLVED_ROS1: dict[str, RosFunction] = {
     name: row for (owner, name), row in ROSCPP.items() if owner == NODE_HANDLE}
 
 ALL: dict[tuple[str, str], RosFunction] = {**ROSCPP, **LIBRARIES, **RCLCPP,
-                                            **RCLCPP_LIBRARIES}
+                                            **RCLCPP_LIBRARIES, **ROS2_CONTROL}
 
 # ``nh.subscribe(ops)`` / ``nh.advertise(ops)``: the call is made there (its handle,
 # location and conditions), with the topic, queue and type of the row that filled ``ops``

@@ -18,6 +18,11 @@ resolved the way the preprocessor will, and:
   ``CPP_INCLUDE_MISSING`` diagnostic, except ``<name>_export.h``, which CMake's
   generate_export_header writes at build time: it defines ``NAME_EXPORT`` and its
   siblings empty;
+- the headers of ros2_control (``controller_interface/``, ``hardware_interface/``,
+  ``semantic_components/``, ``joint_limits/``), which robot workspaces have installed
+  rather than as sources, come from the stand-ins in ``standin/fallback`` only when the
+  workspace does not have them (``FALLBACK``): never in place of the package's real
+  headers;
 - a package's own headers win over the stand-ins: a unit of a package our stand-ins also
   provide (rclcpp_components, bondcpp, class_loader, ...) is parsed with the package's
   ``include`` folder first and without the precompiled stand-ins (whose classes its own
@@ -51,6 +56,10 @@ from .compile_commands import UnitFlags
 STANDIN = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "standin")
 STD_STANDIN = os.path.join(STANDIN, "std")  # the C and C++ standard library stand-in
 PRELUDE = os.path.join(STANDIN, "haros_prelude.h")  # what is precompiled
+# stand-ins for the headers of packages a workspace usually has installed, not as sources
+# (ros2_control's controller_interface, hardware_interface): read only where the workspace
+# has no header by that name, so its real headers are never shadowed
+FALLBACK = os.path.join(STANDIN, "fallback")
 # CXTranslationUnit_ForSerialization | Incomplete (a header, not a whole program)
 _PCH_OPTIONS = 0x10 | 0x02
 # a second folder of synthesised headers, for a header whose name is a folder of others
@@ -102,8 +111,9 @@ _NOT_FOUND = re.compile(r"^'([^']+)' file not found")
 # and their own sources are modelled against them
 _STANDIN_PACKAGES = frozenset({p.rstrip("/") for p in SHADOWED} | {
     f for f in os.listdir(STANDIN) if os.path.isdir(os.path.join(STANDIN, f))}) - {
-    "std", *(row[0].split("::")[0] for table in (api.ROSCPP, api.LIBRARIES, api.RCLCPP,
-                                                 api.RCLCPP_LIBRARIES) for row in table)}
+    "std", os.path.basename(FALLBACK), *(
+        row[0].split("::")[0] for table in (api.ROSCPP, api.LIBRARIES, api.RCLCPP,
+                                            api.RCLCPP_LIBRARIES) for row in table)}
 
 # ``<name>_export.h`` from CMake's generate_export_header (not in the source tree): its
 # macros, defined empty, as for a static build
@@ -184,6 +194,7 @@ class IncludeSetup:
         self.diagnostics: list[Diagnostic] = []
         self._handled: set[str] = set()
         self._scanned: dict[str, bool] = {}  # file -> ROS 2 code (see ``scan``)
+        self._fallbacks: dict[str, bool] = {}  # header read from FALLBACK -> ROS 2 code
         # (header, folder of a quoted include) -> what ``_prepare`` found, when it
         # changed nothing
         self._looked_up: dict[tuple[str, str], str | None] = {}
@@ -255,6 +266,7 @@ class IncludeSetup:
             counted = match.start()
             where = Location(file.package, file.file, line, match.start(2) - match.start() + 1)
             found = self._prepare(header, folder, match.group(1) == '"', where)
+            ros2 = ros2 or self._fallbacks.get(header, False)  # a stand-in that includes rclcpp
             if not found or not self._inside(found):
                 continue
             if found in self._scanned:  # a header scanned before: not read again
@@ -328,6 +340,9 @@ class IncludeSetup:
         ):
             return None
         found = self._resolve(header)
+        if found is None and _fallback_file(header) is not None:
+            self._fallback(header)
+            return None
         if found is None and self.system_headers and os.path.isfile(os.path.join(STANDIN, header)):
             # an API header the system lacks (Debian ships pluginlib's macros only as .hpp)
             self._handled.add(header)
@@ -346,6 +361,17 @@ class IncludeSetup:
             return None
         return next((os.path.join(f, header) for f in self.own.get(prefix, ())
                      if os.path.isfile(os.path.join(f, header))), None)
+
+    def _fallback(self, header: str) -> None:
+        """``header`` from the stand-ins of ``FALLBACK`` (the workspace has none by that
+        name): a synthesised header that includes it, first on the include path."""
+        path = _fallback_file(header)
+        assert path is not None
+        self._handled.add(header)
+        self._write(header, f"// haros_arch: the stand-in of {header}, which the workspace "
+                            f'does not have\n#include "{path}"\n')
+        self._scan_standin(path)  # what it includes, from the workspace or FALLBACK
+        self._fallbacks[header] = self._scanned.get(path, False)
 
     def _scan_standin(self, path: str) -> None:
         """Prepare what a library stand-in includes (cv_bridge: ``sensor_msgs/Image.h``)."""
@@ -611,6 +637,16 @@ def precompiled_prelude(flags: Sequence[str]) -> str | None:
             path = None
         _PCH[key] = path
         return path
+
+
+def _fallback_file(header: str) -> str | None:
+    """The stand-in of ``FALLBACK`` for ``header``, if there is one (not a name that leads
+    out of the folder: ``../rclcpp/rclcpp.hpp``)."""
+    name = os.path.normpath(header)
+    if os.path.isabs(name) or name.startswith(os.pardir):
+        return None
+    path = os.path.join(FALLBACK, name)
+    return path if os.path.isfile(path) else None
 
 
 def _parents(path: str, root: str) -> list[str]:

@@ -3,7 +3,13 @@
 #define HAROS_STANDIN_RCLCPP_LIFECYCLE_HPP
 #include <rclcpp/rclcpp.hpp>
 namespace rclcpp_lifecycle {
-class State { public: uint8_t id() const; const std::string& label() const; };
+class State {
+public:
+  State();
+  State(uint8_t id, const std::string& label);
+  uint8_t id() const;
+  const std::string& label() const;
+};
 class ManagedEntityInterface {
 public:
   virtual ~ManagedEntityInterface();
@@ -18,8 +24,18 @@ public:
   void on_deactivate();
   bool is_activated() const;
 };
-namespace node_interfaces { struct LifecycleNodeInterface {
+// the transitions' callbacks: ros2_control's controllers and hardware components derive
+// from this interface, not from the node
+namespace node_interfaces { class LifecycleNodeInterface {
+public:
   enum class CallbackReturn { SUCCESS, FAILURE, ERROR };
+  virtual ~LifecycleNodeInterface();
+  virtual CallbackReturn on_configure(const State& previous_state);
+  virtual CallbackReturn on_cleanup(const State& previous_state);
+  virtual CallbackReturn on_shutdown(const State& previous_state);
+  virtual CallbackReturn on_activate(const State& previous_state);
+  virtual CallbackReturn on_deactivate(const State& previous_state);
+  virtual CallbackReturn on_error(const State& previous_state);
 }; }
 class LifecycleNode : public std::enable_shared_from_this<LifecycleNode>,
                       public node_interfaces::LifecycleNodeInterface {

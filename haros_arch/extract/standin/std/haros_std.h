@@ -122,6 +122,9 @@ public:
 };
 template<class... T> tuple<typename decay<T>::type...> make_tuple(T&&... args);
 template<class... T> tuple<T&...> tie(T&... args);
+// std::ignore: anything is assigned to it (``std::ignore = handle.set_value(0.0);``)
+struct haros_ignore_t { template<class T> const haros_ignore_t& operator=(const T&) const; };
+static const haros_ignore_t ignore = {};
 // the tuple protocol (structured bindings, std::get) of tuple and pair
 template<class T> struct tuple_size;
 template<class... T> struct tuple_size<tuple<T...>> { static constexpr size_t value = sizeof...(T); };
@@ -1098,6 +1101,7 @@ public:
   variant();
   template<class U> variant(U&& value);
   template<class U> variant& operator=(U&& value);
+  template<class X, class... A> X& emplace(A&&... args);
   size_t index() const noexcept;
 };
 template<class T, class... V> bool holds_alternative(const variant<V...>& v) noexcept;
