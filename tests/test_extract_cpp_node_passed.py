@@ -90,3 +90,42 @@ def test_a_constructor_the_unit_reads_leaves_the_node_complete(write_tree: Any) 
     assert node.completeness == "complete", node.completeness_reasons
     # the inline constructor's call is read as the node's
     assert "horizon" in [c.name for c in node.calls]
+
+
+TEMPLATE_HEADER = """
+    #include <string>
+    #include <rclcpp/rclcpp.hpp>
+    namespace lateral {
+    template<typename NodeT>
+    class Mpc {
+     public:
+      template<typename T>
+      Mpc(NodeT * node, T gain) { horizon_ = node->template declare_parameter<double>("horizon"); }
+     private:
+      double horizon_{0.0};
+    };
+    }  // namespace lateral
+    """
+
+
+def test_a_header_template_constructor_is_read(write_tree: Any) -> None:
+    # nav2's TwistSubscriber, Autoware's PlanningFactorInterfaceT: class templates and
+    # template constructors whose code is in the header the unit includes
+    files = {
+        "src/lateral/package.xml": package_xml("lateral", build_type="ament_cmake"),
+        "src/lateral/CMakeLists.txt": "project(lateral)\n",
+        "src/lateral/include/lateral/mpc.hpp": TEMPLATE_HEADER,
+        "src/control/package.xml": package_xml("control", build_type="ament_cmake"),
+        "src/control/CMakeLists.txt":
+            "project(control)\nadd_executable(controller src/controller.cpp)\n",
+        "src/control/src/controller.cpp": NODE.replace(
+            "std::shared_ptr<lateral::Mpc> mpc_", "std::shared_ptr<lateral::Mpc<Controller>> mpc_"
+        ).replace("std::make_shared<lateral::Mpc>(*this)",
+                  "std::make_shared<lateral::Mpc<Controller>>(this, 2.0)"),
+        "project.yaml": "project: p\nworkspace: [src]\nconfigurations: {}\n",
+    }
+    root = write_tree(files)
+    model = analyse(load(str(root / "project.yaml")), {"PATH": os.environ.get("PATH", "")},
+                    Options(cache_dir=None))
+    node = next(n for p in model.packages for n in p.nodes if n.name == "control/controller")
+    assert node.completeness == "complete", node.completeness_reasons

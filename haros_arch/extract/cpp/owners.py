@@ -11,7 +11,7 @@ from __future__ import annotations
 import re
 from collections.abc import Callable
 
-from clang.cindex import Cursor, CursorKind
+from clang.cindex import Cursor, CursorKind, conf
 
 from . import api
 from .call_types import factory_made, template_argument
@@ -87,15 +87,32 @@ def unseen_construction(call: Cursor, owned: Callable[[str], bool]
     if where is None or not owned(where.name):
         return None
     given = [arg for arg in call.get_arguments() if _is_node(arg)]
-    if not given:
+    if not given or _code_here(constructor, cls):
         return None
-    if constructor is not None and constructor.get_definition() is not None:
-        return None
-    if constructor is None and any(
-            c.kind == CursorKind.CONSTRUCTOR and c.get_definition() is not None
-            for c in cls.get_children()):
-        return None  # made through make_shared: one of its constructors is here
     return cls, given[0]
+
+
+def _code_here(constructor: Cursor | None, cls: Cursor) -> bool:
+    """Whether the unit has the code of the constructor (or, made through make_shared,
+    of one of the class's constructors), a template's too (a header's class template or
+    template constructor: nav2's TwistSubscriber)."""
+    if constructor is not None:
+        if constructor.get_definition() is not None:
+            return True
+        template = conf.lib.clang_getSpecializedCursorTemplate(constructor)
+        if template is not None and template.get_definition() is not None:
+            return True
+    template = conf.lib.clang_getSpecializedCursorTemplate(cls)
+    for each in (cls, template):
+        if each is None:
+            continue
+        for child in each.get_children():
+            constructs = child.kind == CursorKind.CONSTRUCTOR or (
+                child.kind == CursorKind.FUNCTION_TEMPLATE and CursorKind.from_id(
+                    conf.lib.clang_getTemplateCursorKind(child)) == CursorKind.CONSTRUCTOR)
+            if constructs and child.is_definition():
+                return True
+    return False
 
 
 def _is_node(arg: Cursor) -> bool:
