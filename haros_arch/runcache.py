@@ -292,20 +292,40 @@ def page(model: Model, inputs: str, compute: Callable[[], str]) -> str:
     workspace root, as text): read back when that run wrote it before, else rendered
     and kept with the run (the page quotes the workspace's sources, which the run's key
     covers)."""
-    return _with_run(model, "report", inputs, compute, lambda page: page, _text)
+    return _kept_text(model, "report", inputs, compute)
 
 
 def document(model: Model, inputs: str, compute: Callable[[], str]) -> str:
     """``extract``'s JSON text of a kept model's run under ``inputs`` (its findings, as
     text): read back when that run wrote it before, else made and kept with the run
     (the text is the model's document, which the run's key covers)."""
-    return _with_run(model, "document", inputs, compute, lambda text: text, _text)
+    return _kept_text(model, "document", inputs, compute)
 
 
-def _text(data: object) -> str:
-    if not isinstance(data, str):
-        raise TypeError("a kept page or document is text")
-    return data
+def _kept_text(model: Model, kind: str, inputs: str, compute: Callable[[], str]) -> str:
+    """``_with_run`` for a text (a page, a document of megabytes), kept as the text
+    itself: read back without decoding JSON."""
+    kept = _KEPT.get(model)
+    if kept is None:
+        return compute()
+    folder, key = kept
+    entry = os.path.join(folder, "runs", f"{key}-{kind}-{_digest(inputs)}.txt")
+    try:
+        with open(entry, encoding="utf-8", newline="") as handle:
+            return handle.read()
+    except (OSError, ValueError):
+        pass
+    found = compute()
+    try:
+        os.makedirs(os.path.dirname(entry), exist_ok=True)
+        fd, temporary = tempfile.mkstemp(dir=os.path.dirname(entry), suffix=".tmp")
+        with os.fdopen(fd, "w", encoding="utf-8", newline="") as handle:
+            handle.write(found)
+        os.replace(temporary, entry)
+    except OSError:
+        return found
+    _prune(folder)
+    return found
 
 
 def _with_run(model: Model, kind: str, inputs: str, compute: Callable[[], T],
@@ -330,10 +350,15 @@ def _with_run(model: Model, kind: str, inputs: str, compute: Callable[[], T],
 def _write(entry: str, data: object, folder: str) -> None:
     """Write an entry, then remove all but the newest ``KEEP``."""
     _write_json(entry, data)
+    _prune(folder)
+
+
+def _prune(folder: str) -> None:
+    """Remove all entries but the newest ``KEEP``."""
     runs = os.path.join(folder, "runs")
     try:
-        entries = [e for e in os.scandir(runs)
-                   if e.name.endswith(".json") and not e.name.startswith("index-")]
+        entries = [e for e in os.scandir(runs) if e.name.endswith((".json", ".txt"))
+                   and not e.name.startswith("index-")]
         entries.sort(key=lambda e: e.stat().st_mtime_ns, reverse=True)
         for old in entries[KEEP:]:
             os.remove(old.path)
