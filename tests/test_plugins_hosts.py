@@ -147,6 +147,34 @@ def test_nav2_server_plugins_take_their_names_from_the_list_and_defaults():
         ("read", "/r2/planner_server/planner_plugins")]
 
 
+def test_a_composed_nav2_server_is_a_host_as_its_executable_is():
+    # nav2_bringup's default: the servers are components loaded into one container
+    navfn = plugin("nav2_navfn_planner", "nav2_navfn_planner::NavfnPlanner",
+                   "nav2_navfn_planner::NavfnPlanner",
+                   call("declare", "?.tolerance", "double"))
+    server = Node("nav2_planner", "nav2_planner::PlannerServer", "component",
+                  plugin_loads=["nav2_planner/src/planner_server.cpp:98"])
+    decl = ros2(NodeDecl("/planner_server", "nav2_planner", "nav2_planner::PlannerServer",
+                         composable=True, container="/nav2_container"))
+    config = graph([decl], no_layers("/planner_server", "global_costmap"), [navfn, server])
+    assert ("read", "/planner_server/GridBased.tolerance") in links_of(
+        config, "/planner_server")
+    assert "/global_costmap/global_costmap" in [n.name for n in config.nodes]
+    assert next(n for n in config.nodes if n.name == "/planner_server").is_complete
+
+
+def test_a_node_that_loads_plugins_and_is_no_host_is_partial():
+    loader = Node("planner", "planner_node", calls=[call("declare", "rate", "double")],
+                  plugin_loads=["planner/src/manager.cpp:41"])
+    config = graph([ros2(NodeDecl("/planner", "planner", "planner_node"))], nodes=[loader])
+    instance = config.nodes[0]
+    assert instance.completeness == "partial"
+    assert instance.completeness_reasons == [
+        "planner/src/manager.cpp:41: loads plugin classes through pluginlib whose calls "
+        "are not known here"]
+    assert loader.completeness == "complete"  # the node model others share is untouched
+
+
 def test_a_conditional_choice_makes_the_plugin_calls_conditional():
     from haros_arch.model import Condition
     smac = plugin("smac", "smac/Smac", "smac::Smac", call("publish", "plan", "nav_msgs/Path"))

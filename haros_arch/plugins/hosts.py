@@ -137,13 +137,15 @@ HOSTS: tuple[Host, ...] = (
                                       "controller_interface::ControllerInterface",
                                       "controller_interface::ChainableControllerInterface"),
              placement="node"),)),
-    # nav2's planner and controller servers make their costmap nodes in their constructor
+    # nav2's servers are hosts as executables and as components (the composed bringup,
+    # nav2_bringup's default, loads ``nav2_planner::PlannerServer`` into a container);
+    # the planner and controller servers make their costmap nodes in their constructor
     # (``Costmap2DROS("global_costmap", get_namespace(), ...)``)
-    Host("nav2_planner", ("planner_server",), 2, (
+    Host("nav2_planner", ("planner_server", "nav2_planner::PlannerServer"), 2, (
         Slot("planner_plugins", "{name}.plugin", ("nav2_core", "nav2_core::GlobalPlanner"),
              defaults=(("GridBased", "nav2_navfn_planner::NavfnPlanner"),)),),
          (Child("global_costmap", "global_costmap", "nav2_costmap_2d", "nav2_costmap_2d"),)),
-    Host("nav2_controller", ("controller_server",), 2, (
+    Host("nav2_controller", ("controller_server", "nav2_controller::ControllerServer"), 2, (
         Slot("controller_plugins", "{name}.plugin", ("nav2_core", "nav2_core::Controller"),
              defaults=(("FollowPath", "dwb_core::DWBLocalPlanner"),)),
         Slot("goal_checker_plugins", "{name}.plugin", ("nav2_core", "nav2_core::GoalChecker"),
@@ -154,11 +156,12 @@ HOSTS: tuple[Host, ...] = (
         Slot("progress_checker_plugin", "{name}.plugin",
              ("nav2_core", "nav2_core::ProgressChecker")),),
          (Child("local_costmap", "local_costmap", "nav2_costmap_2d", "nav2_costmap_2d"),)),
-    Host("nav2_behaviors", ("behavior_server",), 2, (
+    Host("nav2_behaviors", ("behavior_server", "behavior_server::BehaviorServer"), 2, (
         Slot("behavior_plugins", "{name}.plugin", ("nav2_core", "nav2_core::Behavior")),)),
-    Host("nav2_smoother", ("smoother_server",), 2, (
+    Host("nav2_smoother", ("smoother_server", "nav2_smoother::SmootherServer"), 2, (
         Slot("smoother_plugins", "{name}.plugin", ("nav2_core", "nav2_core::Smoother")),)),
-    Host("nav2_waypoint_follower", ("waypoint_follower",), 2, (
+    Host("nav2_waypoint_follower", ("waypoint_follower",
+                                    "nav2_waypoint_follower::WaypointFollower"), 2, (
         Slot("waypoint_task_executor_plugin", "{name}.plugin",
              ("nav2_core", "nav2_core::WaypointTaskExecutor")),)),
     Host("nav2_costmap_2d", ("nav2_costmap_2d",), 2, _NAV2_COSTMAP),
