@@ -175,6 +175,27 @@ def test_a_node_that_loads_plugins_and_is_no_host_is_partial():
     assert loader.completeness == "complete"  # the node model others share is untouched
 
 
+def test_a_plugin_that_loads_plugins_makes_its_host_partial():
+    # nav2's MPPI controller loads its critics through pluginlib; their reads are unseen
+    mppi = Node("mppi", "mppi::MPPIController", "plugin", plugin_class="mppi::MPPIController",
+                calls=[call("declare", "?.time_steps", "int")],
+                plugin_loads=["mppi/src/critic_manager.cpp:62"])
+    decl = ros2(NodeDecl("/controller_server", "nav2_controller", "controller_server"))
+    params = [ParamDecl("/controller_server/controller_plugins", ["FollowPath"]),
+              ParamDecl("/controller_server/FollowPath.plugin", "mppi::MPPIController"),
+              *no_layers("/controller_server", "local_costmap")]
+    host = Node("nav2_controller", "controller_server",
+                plugin_loads=["nav2_controller/src/controller_server.cpp:87"])
+    config = graph([decl], params, [mppi, host])
+    server = next(n for n in config.nodes if n.name == "/controller_server")
+    assert ("read", "/controller_server/FollowPath.time_steps") in links_of(
+        config, "/controller_server")
+    assert not server.is_complete
+    assert server.completeness_reasons[0] == (
+        "plugin mppi/mppi::MPPIController: mppi/src/critic_manager.cpp:62: loads plugin "
+        "classes through pluginlib whose calls are not known here")
+
+
 def test_a_conditional_choice_makes_the_plugin_calls_conditional():
     from haros_arch.model import Condition
     smac = plugin("smac", "smac/Smac", "smac::Smac", call("publish", "plan", "nav_msgs/Path"))

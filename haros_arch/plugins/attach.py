@@ -159,12 +159,17 @@ def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str
         reader = _plugin_instance(instance, choice, node, config)
         if slot.names == EXPORTED:  # a node the process makes: its files apply by name
             _process_params(decl, reader, params)
+        _unhosted(reader, owned)  # a controller that loads plugins of its own
         out.append((reader, _not_hosts(node.calls, instance)))
     else:
         plugin = slot.prefix + _given(choice, slot)
         if node.completeness in ("partial", "unknown"):  # its calls on the host: some unseen
             reasons = node.completeness_reasons[:1] or [node.completeness]
             own_partial(instance, f"plugin {node.name}: {reasons[0]}", owned)
+        elif node.plugin_loads:  # a plugin that loads plugins (nav2 MPPI's critics)
+            own_partial(instance, f"plugin {node.name}: {node.plugin_loads[0]}: loads "
+                                  "plugin classes through pluginlib whose calls are not "
+                                  "known here", owned)
         calls = [_under(call, plugin, choice.conditions)
                  for call in _with_base(node, index, workspace, models)]
         row = sources_of(choice.cls or "", instance.ros_version) or sources_of(
