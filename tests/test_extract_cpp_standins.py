@@ -290,3 +290,31 @@ def test_the_stand_in_prelude_precompiles(std: str | None) -> None:
 
     headers._PCH.clear()
     assert headers.precompiled_prelude(toolchain.base_arguments(False, std)) is not None
+
+
+def test_every_nodelet_log_macro_parses(tmp_path) -> None:
+    """Ouster's nodelets log with NODELET_FATAL_STREAM, NODELET_WARN_COND and the other
+    variants of every level; the function around them is read clean."""
+    (tmp_path / "package.xml").write_text(
+        '<package format="2"><name>p</name><version>1.0.0</version>'
+        "<description>d</description><maintainer email='a@b.c'>m</maintainer>"
+        "<license>BSD</license></package>")
+    source = tmp_path / "a.cpp"
+    source.write_text(
+        "#include <nodelet/nodelet.h>\n#include <std_msgs/Empty.h>\n"
+        "class Driver : public nodelet::Nodelet {\n"
+        "  void onInit() override {\n"
+        "    int n = 3;\n"
+        "    NODELET_FATAL_STREAM(\"no sensor \" << n);\n"
+        "    NODELET_WARN_COND(n > 2, \"many: %d\", n);\n"
+        "    NODELET_ERROR_THROTTLE(1.0, \"late\");\n"
+        "    NODELET_WARN_STREAM_THROTTLE(1.0, \"late \" << n);\n"
+        "    NODELET_DEBUG_ONCE(\"once\");\n"
+        "    NODELET_INFO_STREAM_DELAYED_THROTTLE(2.0, \"slow\");\n"
+        "    pub_ = getNodeHandle().advertise<std_msgs::Empty>(\"out\", 1);\n"
+        "  }\n"
+        "  ros::Publisher pub_;\n"
+        "};\n")
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    assert [d.message for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"] == []
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "out")]
