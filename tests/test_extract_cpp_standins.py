@@ -318,3 +318,29 @@ def test_every_nodelet_log_macro_parses(tmp_path) -> None:
     result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
     assert [d.message for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"] == []
     assert [(c.kind, c.name) for c in result.calls] == [("publish", "out")]
+
+
+def test_limits_mem_fn_rdbuf_and_time_from_nanoseconds_parse(tmp_path) -> None:
+    """Forms of ouster-ros' nodelets: ULLONG_MAX, std::mem_fn, a stream's rdbuf(),
+    ros::Time::fromNSec."""
+    (tmp_path / "package.xml").write_text(
+        '<package format="2"><name>p</name><version>1.0.0</version>'
+        "<description>d</description><maintainer email='a@b.c'>m</maintainer>"
+        "<license>BSD</license></package>")
+    source = tmp_path / "a.cpp"
+    source.write_text(
+        "#include <ros/ros.h>\n#include <climits>\n#include <functional>\n"
+        "#include <fstream>\n#include <sstream>\n#include <std_msgs/Empty.h>\n"
+        "struct S { int size() const; };\n"
+        "int main(int argc, char** argv) {\n"
+        "  unsigned long long big = ULLONG_MAX; long small = LONG_MIN;\n"
+        "  auto size = std::mem_fn(&S::size);\n"
+        "  std::ifstream in(\"m.json\"); std::stringstream text; text << in.rdbuf();\n"
+        "  ros::Time stamp; stamp.fromNSec(big);\n"
+        "  ros::NodeHandle nh;\n"
+        "  ros::Publisher p = nh.advertise<std_msgs::Empty>(\"out\", 1);\n"
+        "  return static_cast<int>(small);\n"
+        "}\n")
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    assert [d.message for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"] == []
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "out")]

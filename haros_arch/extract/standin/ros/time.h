@@ -39,6 +39,7 @@ public:
   uint64_t toNSec() const;
   bool isZero() const;
   Time& fromSec(double t);
+  Time& fromNSec(uint64_t t);
   Duration operator-(const Time& rhs) const;
   Time operator+(const Duration& rhs) const;
   Time operator-(const Duration& rhs) const;

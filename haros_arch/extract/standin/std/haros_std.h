@@ -658,6 +658,7 @@ template<class F> struct haros_bind_t {
   template<class... A> void operator()(A&&... args) const;
 };
 template<class F, class... A> haros_bind_t<F> bind(F&& f, A&&... args);
+template<class M> haros_bind_t<M> mem_fn(M member) noexcept;
 template<class T> struct reference_wrapper {
   reference_wrapper(T& t) noexcept;
   operator T&() const noexcept;
@@ -740,8 +741,13 @@ public:
   static const seekdir beg = 0, cur = 1, end = 2;
   fmtflags setf(fmtflags f);
   int precision(int p);
+  class streambuf* rdbuf() const;
 };
 typedef ios_base ios;
+class streambuf {
+public:
+  virtual ~streambuf();
+};
 class ostream : public ios_base {
 public:
   ostream& operator<<(bool v);
