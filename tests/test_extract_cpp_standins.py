@@ -344,3 +344,17 @@ def test_limits_mem_fn_rdbuf_and_time_from_nanoseconds_parse(tmp_path) -> None:
     result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
     assert [d.message for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"] == []
     assert [(c.kind, c.name) for c in result.calls] == [("publish", "out")]
+
+
+def test_a_stringstream_has_one_ios_base(tmp_path) -> None:
+    """slam_toolbox's Karto.h sets ``stream.precision(...)`` on a stringstream: istream
+    and ostream share one (virtual) ios_base, as in the standard library."""
+    source = tmp_path / "a.cpp"
+    source.write_text(
+        "#include <sstream>\n#include <string>\n"
+        "std::string f(double v) {\n"
+        "  std::stringstream s; s.precision(4); s.setf(std::ios::fixed); s << v;\n"
+        "  return s.str();\n"
+        "}\n")
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    assert [d.message for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"] == []

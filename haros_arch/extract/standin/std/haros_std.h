@@ -748,7 +748,7 @@ class streambuf {
 public:
   virtual ~streambuf();
 };
-class ostream : public ios_base {
+class ostream : virtual public ios_base {
 public:
   ostream& operator<<(bool v);
   ostream& operator<<(short v);
@@ -774,7 +774,7 @@ ostream& operator<<(ostream& os, char c);
 ostream& operator<<(ostream& os, const char* s);
 ostream& operator<<(ostream& os, const string& s);
 template<class T> ostream& operator<<(ostream& os, const T& v);
-class istream : public ios_base {
+class istream : virtual public ios_base {
 public:
   istream& operator>>(bool& v);
   istream& operator>>(int& v);
