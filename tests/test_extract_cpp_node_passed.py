@@ -129,3 +129,34 @@ def test_a_header_template_constructor_is_read(write_tree: Any) -> None:
                     Options(cache_dir=None))
     node = next(n for p in model.packages for n in p.nodes if n.name == "control/controller")
     assert node.completeness == "complete", node.completeness_reasons
+
+
+def test_a_ros1_node_handle_given_to_another_packages_constructor(write_tree: Any) -> None:
+    files = {
+        "src/driver/package.xml": package_xml("driver"),
+        "src/driver/CMakeLists.txt": "project(driver)\nadd_library(driver src/driver.cpp)\n",
+        "src/driver/include/driver/driver.h":
+            "#include <ros/ros.h>\nnamespace driver {\nclass Driver {\n public:\n"
+            "  Driver(ros::NodeHandle nh, ros::NodeHandle private_nh);\n};\n}\n",
+        "src/driver/src/driver.cpp":
+            '#include "driver/driver.h"\nnamespace driver {\n'
+            "Driver::Driver(ros::NodeHandle nh, ros::NodeHandle private_nh) {\n"
+            '  int rate; private_nh.param("rate", rate, 10);\n}\n}\n',
+        "src/bringup/package.xml": package_xml("bringup"),
+        "src/bringup/CMakeLists.txt":
+            "project(bringup)\nadd_executable(driver_node src/node.cpp)\n",
+        "src/bringup/src/node.cpp":
+            '#include <ros/ros.h>\n#include "driver/driver.h"\n'
+            "int main(int argc, char** argv) {\n"
+            '  ros::init(argc, argv, "driver");\n'
+            '  ros::NodeHandle nh, private_nh("~");\n'
+            "  driver::Driver d(nh, private_nh);\n  ros::spin();\n}\n",
+        "project.yaml": "project: p\nworkspace: [src]\nconfigurations: {}\n",
+    }
+    root = write_tree(files)
+    model = analyse(load(str(root / "project.yaml")), {"PATH": os.environ.get("PATH", "")},
+                    Options(cache_dir=None))
+    node = next(n for p in model.packages for n in p.nodes if n.name == "bringup/driver_node")
+    assert node.completeness == "partial"
+    assert any("driver::Driver of package driver is built with the node (nh)" in r
+               for r in node.completeness_reasons), node.completeness_reasons
