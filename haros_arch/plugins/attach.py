@@ -167,9 +167,7 @@ def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str
             reasons = node.completeness_reasons[:1] or [node.completeness]
             own_partial(instance, f"plugin {node.name}: {reasons[0]}", owned)
         elif node.plugin_loads:  # a plugin that loads plugins (nav2 MPPI's critics)
-            own_partial(instance, f"plugin {node.name}: {node.plugin_loads[0]}: loads "
-                                  "plugin classes through pluginlib whose calls are not "
-                                  "known here", owned)
+            own_partial(instance, f"plugin {node.name}: {_loads(node)}", owned)
         calls = [_under(call, plugin, choice.conditions)
                  for call in _with_base(node, index, workspace, models)]
         row = sources_of(choice.cls or "", instance.ros_version) or sources_of(
@@ -383,11 +381,15 @@ def _unhosted(instance: NodeInstance, owned: set[int]) -> None:
     """An instance whose code loads plugins (``Node.plugin_loads``) that no host row
     attaches: their calls are unknown, so it is partial (unknown is not empty)."""
     node = instance.node
-    if node is None or not node.plugin_loads:
-        return
+    if node is not None and node.plugin_loads:
+        own_partial(instance, _loads(node), owned)
+
+
+def _loads(node: Node) -> str:
+    """Why a node that loads plugins by name is partial, with its first site."""
     more = f" and {len(node.plugin_loads) - 1} more" if len(node.plugin_loads) > 1 else ""
-    own_partial(instance, f"{node.plugin_loads[0]}{more}: loads plugin classes through "
-                          "pluginlib whose calls are not known here", owned)
+    return (f"{node.plugin_loads[0]}{more}: loads plugin classes through pluginlib whose "
+            "calls are not known here")
 
 
 def own_partial(instance: NodeInstance, reason: str, owned: set[int]) -> None:
