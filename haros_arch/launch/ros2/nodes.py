@@ -138,9 +138,7 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
             runner.report("LAUNCH_PY_BUDGET", where, detail=f"more than {MAX_PARAM_ENTRIES} "
                           "parameter entries applied to nodes: the parameters of the "
                           "nodes from this one on are not read")
-        param = make_param(node, UNKNOWN_MARK, None, scope.conditions, where)
-        param.owner = len(runner.model.nodes) - 1
-        runner.model.params.append(param)
+        _unseen(runner, node, scope, where)
         return
     for key, value, location in scope.params:  # SetParameter(s), SetParametersFromFile
         if key is None:
@@ -172,9 +170,15 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
         param.owner, param.pattern = owner, pattern
         runner.model.params.append(param)
     if unseen:
-        param = make_param(node, UNKNOWN_MARK, None, scope.conditions, unseen[0])
-        param.owner = owner
-        runner.model.params.append(param)
+        _unseen(runner, node, scope, unseen[0])
+
+
+def _unseen(runner: Runner, node: str, scope: Scope, location: Location) -> None:
+    """The launch parameter ``<node>/?`` of the declaration just appended: the node may
+    get parameters here that are not known statically."""
+    param = make_param(node, UNKNOWN_MARK, None, scope.conditions, location)
+    param.owner = len(runner.model.nodes) - 1
+    runner.model.params.append(param)
 
 
 def command_line(value: Any, ev: Evaluator) -> str | None:
