@@ -116,3 +116,21 @@ def test_the_header_types_the_fields_as_the_library() -> None:
     assert gpl.header_target("pkg/p.hpp", [target], "") == target
     assert gpl.header_target("p.hpp", [target], "") == target
     assert gpl.header_target("other/p.hpp", [target], "") is None
+
+
+def test_a_node_gives_its_parameters_interface(tmp_path) -> None:
+    """Autoware's path_generator: ``make_shared<ParamListener>(this->
+    get_node_parameters_interface())`` in an rclcpp::Node: the node's own parameters
+    (not under the handle's unknown namespace)."""
+    shutil.copytree(PACKAGE, tmp_path / "joint_gain_controller")
+    source = tmp_path / "joint_gain_controller" / "src" / "standalone.cpp"
+    source.write_text(
+        "#include <memory>\n#include <rclcpp/rclcpp.hpp>\n"
+        '#include "joint_gain_controller/joint_gain_controller_parameters.hpp"\n'
+        "class Standalone : public rclcpp::Node {\n public:\n"
+        '  Standalone() : rclcpp::Node("standalone") {\n'
+        "    listener_ = std::make_shared<::joint_gain_controller::ParamListener>(\n"
+        "      this->get_node_parameters_interface());\n  }\n private:\n"
+        "  std::shared_ptr<::joint_gain_controller::ParamListener> listener_;\n};\n")
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    assert _declares(result, 7) == DECLARED

@@ -508,17 +508,18 @@ class CallFinder:
                   conditions: tuple[Condition, ...], scope: Scope) -> None:
         """A generate_parameter_library ``ParamListener`` built on a node (or its
         parameters interface) and an optional prefix: one declare per parameter of its
-        YAML (``parameter_library``), on that node, under the prefix."""
+        YAML (``parameter_library``), on that node, under the prefix: a ROS 2 node's own
+        parameters, whichever handle of it (the node, ``get_node()``, its parameters
+        interface) the listener is given."""
         target = call.referenced
         location = self.where(call if target is not None and (
             target.kind == CursorKind.CONSTRUCTOR) else callee_of_call(call))
-        namespace = normalise(render(self.namespaces.of(args[0], scope))) if args else ""
         prefix = next((render(scope.string(a)) for a in args[1:]
                        if msg_types.param_type(a.type) == "str"), "")
         if prefix and not prefix.endswith("."):
             prefix += "."
         for name, kind, has_default, default in declared:
-            full = join_name(namespace, prefix + name)
+            full = prefix + name
             self.calls.append(PrimitiveCall(
                 kind="declare", name=full, type=kind, conditions=conditions,
                 location=location, has_default=has_default,
