@@ -104,7 +104,10 @@ def test_bad_yaml_is_a_diagnostic_at_the_file(tmp_path, text: str, line: int) ->
 
 
 def test_the_header_types_the_fields_as_the_library() -> None:
+    import datetime
+
     tree = {"a": {"type": "int_array"}, "b": {"type": "string_fixed_25"},
+            "day": {"type": "string", "default_value": datetime.date(2024, 1, 2)},
             "c": {"type": "double_array_fixed_4"}, "n": {"d": {"type": "bool"}},
             "__map_a": {"x": {"type": "string"}}}
     target = gpl.Target("p", "/x.yaml", "pkg", "pkg")
@@ -113,6 +116,7 @@ def test_the_header_types_the_fields_as_the_library() -> None:
                  "struct N {", "bool d;", "} n;", "struct MapA {",
                  "std::map<std::string, MapA> a_map;", "class ", "ParamListener(NodeT node"):
         assert line in text
+    assert "2024-01-02" in text  # a YAML date as a default: its text, no traceback
     assert gpl.header_target("pkg/p.hpp", [target], "") == target
     assert gpl.header_target("p.hpp", [target], "") == target
     assert gpl.header_target("other/p.hpp", [target], "") is None

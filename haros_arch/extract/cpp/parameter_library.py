@@ -252,7 +252,8 @@ def _c_string(text: str) -> str:
 def render(target: Target, namespace: str, tree: dict[str, Any], source: str) -> str:
     """The header ``generate_parameter_library`` would write, declarations only."""
     notes = [f'__attribute__((annotate("{_c_string(text)}")))' for text in (
-        _LISTENER_MARK, *(_MARK + json.dumps(entry) for entry in declared(tree)))]
+        _LISTENER_MARK, *(_MARK + json.dumps(entry, default=str)  # a YAML date: text
+                         for entry in declared(tree)))]
     lines = [f"// {target.project}/{target.name}.hpp, as generate_parameter_library writes "
              f"it from {source}: synthesised by haros_arch, declarations only",
              "#pragma once", "#include <cstdint>", "#include <functional>",
