@@ -307,6 +307,12 @@ CATALOGUE: dict[str, Entry] = {
         "A source of the node could not be read or parsed, or was too large to analyse: "
         "calls in it may be missing. The node model is 'partial' (completeness, with "
         "the first reasons); checks that claim something is absent do not trust it."),
+    "CPP_PARAMETER_LIBRARY": Entry(
+        "warning", "generate_parameter_library's YAML of {target} cannot be used: {detail}",
+        "The header generate_parameter_library writes at build time is synthesised from "
+        "the YAML its CMake call names; this YAML is not valid YAML or not shaped as the "
+        "library wants (one top-level key, the namespace, over a mapping). The header is "
+        "an empty stand-in: the parameters its ParamListener declares are unknown."),
     "CPP_INCLUDE_MISSING": Entry(
         "info", "header {header} not found; an empty stand-in was used",
         "The header is neither in the workspace nor on the system; declarations from "

@@ -197,6 +197,29 @@ def test_nav2_lifecycle_and_std_forms_parse_clean(tmp_path) -> None:
     assert [d.message for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"] == []
 
 
+def test_numeric_and_algorithm_forms_of_ros2_controllers_parse(tmp_path) -> None:
+    """std::iota (JointTrajectoryController's command-to-joint map), accumulate with an
+    operation, adjacent_find: a parse error there would hide the calls beside them."""
+    from haros_arch.workspace import Workspace
+
+    source = tmp_path / "n.cpp"
+    source.write_text(
+        "#include <algorithm>\n#include <numeric>\n#include <vector>\n"
+        "#include <rclcpp/rclcpp.hpp>\n#include <std_msgs/msg/string.hpp>\n"
+        "void f(rclcpp::Node::SharedPtr node) {\n"
+        "  std::vector<size_t> map(4);\n"
+        "  std::iota(map.begin(), map.end(), 0);\n"
+        "  auto sum = std::accumulate(map.begin(), map.end(), 0.0,\n"
+        "    [](double a, size_t b) { return a + b; }); (void)sum;\n"
+        "  if (std::adjacent_find(map.begin(), map.end()) == map.end()) {\n"
+        "    node->create_publisher<std_msgs::msg::String>(\"out\", 1);\n"
+        "  }\n"
+        "}\n")
+    result = extract_cpp([str(source)], Workspace(root=str(tmp_path)), cache_dir=None)
+    assert ("publish", "out") in [(c.kind, c.name) for c in result.calls]
+    assert [d.message for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"] == []
+
+
 def test_ros_1_asserts_shared_ptr_null_tokenizer_and_angles_parse(tmp_path) -> None:
     """Forms of the navigation stack's plugins (base_local_planner, costmap_2d's obstacle
     layer, rotate_recovery) parse clean, so their calls are not near an error."""

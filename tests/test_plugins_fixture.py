@@ -63,7 +63,11 @@ def test_spawned_controller_is_a_node_with_its_parameter_file():
     assert follower.origin == "plugin" and follower.node.name == "ros2_ctrl/ros2_ctrl/Follower"
     assert links(config, "/robot/follower") == [
         ("read", "/robot/follower/gain", "source"),
+        # ControllerInterfaceBase::init, run by the manager, declares them
+        ("read", "/robot/follower/is_async", "plugin"),
+        ("read", "/robot/follower/thread_priority", "plugin"),
         ("read", "/robot/follower/type", "plugin"),
+        ("read", "/robot/follower/update_rate", "plugin"),
         ("subscribe", "/cmds", "source"),  # --controller-ros-args -r ~/commands:=/cmds
     ]
     never_read = [p.name for p in config.parameters if p.set_by_launch and not p.is_read]

@@ -35,6 +35,12 @@ def where(line):
     return Location("bringup", "bringup/launch/nav.launch", line, 0)
 
 
+def base_declares(node: str) -> list[tuple[str, str]]:
+    """What ros2_control's ControllerInterfaceBase::init declares on a controller's node."""
+    return [("read", f"{node}/{name}") for name in ("is_async", "thread_priority",
+                                                    "update_rate")]
+
+
 def links_of(config, node):
     return sorted((link.kind, link.resource.name) for link in config.links
                   if link.node.name == node)
@@ -213,6 +219,7 @@ def test_spawned_ros2_controllers_are_nodes_in_the_managers_namespace(tmp_path: 
     params.write_text(
         # rcl: a key without a leading "/" names a node in the root namespace
         "/robot/follower:\n  ros__parameters:\n    type: my/Follower\n    gain: 2.0\n"
+        "    update_rate: 50\n"
         "/robot/controller_manager:\n  ros__parameters:\n    broadcaster:\n"
         "      type: my/Bcast\n")
     follower = plugin("my", "my/Follower", "my::Follower",
@@ -229,15 +236,18 @@ def test_spawned_ros2_controllers_are_nodes_in_the_managers_namespace(tmp_path: 
     added = {n.name: n for n in config.nodes if n.origin == "plugin"}
     assert sorted(added) == ["/robot/broadcaster", "/robot/follower"]
     assert added["/robot/follower"].node is follower
-    assert links_of(config, "/robot/follower") == [("read", "/robot/follower/gain"),
-                                                    ("read", "/robot/follower/type"),
-                                                    ("subscribe", "/cmds")]
+    assert links_of(config, "/robot/follower") == sorted([
+        ("read", "/robot/follower/gain"), ("read", "/robot/follower/type"),
+        ("subscribe", "/cmds"), *base_declares("/robot/follower")])
     # the broadcaster's class is the manager's parameter in the file: the manager reads it
     assert links_of(config, "/robot/controller_manager") == [
         ("read", "/robot/controller_manager/broadcaster.type")]
-    assert links_of(config, "/robot/broadcaster") == [("publish", "/robot/joint_states")]
+    assert links_of(config, "/robot/broadcaster") == sorted([
+        ("publish", "/robot/joint_states"), *base_declares("/robot/broadcaster")])
     gain = config.parameter("/robot/follower/gain")
     assert gain.set_by_launch and gain.value == 2.0 and gain.is_read
+    # the controller's own code does not read it: the manager's init of it does
+    assert config.parameter("/robot/follower/update_rate").is_read
     codes = [d.code for d in config.diagnostics if d.code.startswith("PLUGIN")]
     assert codes == ["PLUGIN_CLASS_UNKNOWN"]  # "missing" has no type anywhere
 
@@ -284,7 +294,8 @@ def test_a_manager_named_only_by_its_code_serves_the_spawners_of_its_namespace(t
     config = graph(decls, nodes=[bcast, manager], root=str(tmp_path))
     assert config.node("/robot/controller_manager") is not None
     assert [n.name for n in config.nodes if n.origin == "plugin"] == ["/robot/bcast"]
-    assert links_of(config, "/robot/bcast") == [("publish", "/robot/joint_states")]
+    assert links_of(config, "/robot/bcast") == sorted([
+        ("publish", "/robot/joint_states"), *base_declares("/robot/bcast")])
     assert all(p.is_read for p in config.parameters if p.set_by_launch)
     # a manager whose code is here but does not say its name: the spawner still reaches
     # it, and the <name>.type it sets is not put under a name no instance has (it would

@@ -441,6 +441,17 @@ def _export_plugin_description(it: Interpreter, command: Invocation, args: list[
         it.plugin_descriptions.append((args[0], os.path.normpath(path)))
 
 
+@handles("generate_parameter_library")
+def _parameter_library(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    """PickNik's ``generate_parameter_library(target params.yaml [validate.hpp])``
+    generates, at build time, ``<PROJECT_NAME>/<target>.hpp`` from the YAML (relative to
+    the current source folder); the C++ extractor synthesises that header from it."""
+    if len(args) >= 2:
+        path = args[1] if os.path.isabs(args[1]) else os.path.join(it.source_dir, args[1])
+        it.parameter_libraries.append((args[0], os.path.normpath(path),
+                                       it.get("PROJECT_NAME") or ""))
+
+
 @handles("rclcpp_components_register_node")
 def _register_node(it: Interpreter, command: Invocation, args: list[str]) -> None:
     if not args or "PLUGIN" not in args[:-1]:

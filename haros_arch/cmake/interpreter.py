@@ -85,6 +85,8 @@ class Interpreter:
         self.registrations: list[Registration] = []
         # pluginlib_export_plugin_description_file: (base package, absolute path)
         self.plugin_descriptions: list[tuple[str, str]] = []
+        # generate_parameter_library: (target, absolute path of its YAML, PROJECT_NAME)
+        self.parameter_libraries: list[tuple[str, str, str]] = []
         self.definitions: dict[str, Definition] = {}
         self.conditions: list[Condition] = []  # enclosing if / while not decided
         self.returns: list[Condition] = []  # return() under a condition not decided

@@ -161,6 +161,10 @@ def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str
             _process_params(decl, reader, params)
         _unhosted(reader, owned)  # a controller that loads plugins of its own
         out.append((reader, _not_hosts(node.calls, instance)))
+        if slot.declares:  # the host's loading code declares them on the plugin's node
+            out.append((reader, [PrimitiveCall(
+                "declare", name, location=choice.location, conditions=choice.conditions,
+                has_default=True, origin="plugin") for name in slot.declares]))
     else:
         plugin = slot.prefix + _given(choice, slot)
         if node.completeness in ("partial", "unknown"):  # its calls on the host: some unseen

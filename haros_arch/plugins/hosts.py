@@ -67,6 +67,9 @@ class Slot:
     # ``defaults`` (not instead of them), less those the ``disable`` parameter's string
     # names (MoveIt's move_group: ``capabilities``, ``disable_capabilities``)
     disable: str | None = None
+    # parameters the host's loading code declares on the node of each plugin
+    # (``placement="node"``), whatever the plugin's own code does
+    declares: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -131,12 +134,14 @@ def _ros1_costmap(prefix: str) -> Slot:
 HOSTS: tuple[Host, ...] = (
     # ros2_control: controllers are lifecycle nodes of their own, named by the controller,
     # in the controller manager's namespace; a spawner names them, their class is
-    # ``<name>.type`` of the manager or ``type`` of the controller's own parameters
+    # ``<name>.type`` of the manager or ``type`` of the controller's own parameters;
+    # ControllerInterfaceBase::init, which the manager calls on each, declares
+    # ``update_rate`` (Humble, Jazzy) and ``is_async``, ``thread_priority`` (Jazzy) there
     Host("controller_manager", ("ros2_control_node",), 2, (
         Slot(SPAWNER, "{name}.type", ("controller_interface",
                                       "controller_interface::ControllerInterface",
                                       "controller_interface::ChainableControllerInterface"),
-             placement="node"),)),
+             placement="node", declares=("update_rate", "is_async", "thread_priority")),)),
     # nav2's servers are hosts as executables and as components (the composed bringup,
     # nav2_bringup's default, loads ``nav2_planner::PlannerServer`` into a container);
     # the planner and controller servers make their costmap nodes in their constructor

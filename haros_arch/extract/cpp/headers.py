@@ -50,7 +50,7 @@ from ...diagnostics import Diagnostic
 from ...files import read_text
 from ...model.location import Location
 from ...workspace import Workspace
-from . import api, interfaces, ros2_interfaces, toolchain
+from . import api, interfaces, parameter_library, ros2_interfaces, toolchain
 from .compile_commands import UnitFlags
 
 STANDIN = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "standin")
@@ -207,6 +207,8 @@ class IncludeSetup:
         self._roots: frozenset[str] | None = None  # see ``_inside``
         self._inside_of: dict[str, bool] = {}
         self._listed: dict[tuple[str, str], frozenset[str]] = {}  # see ``_entries``
+        # generate_parameter_library's targets (``_parameter_header``), read when needed
+        self._parameter_targets: list[parameter_library.Target] | None = None
 
     def arguments(self, pch: bool = True, source: str | None = None) -> list[str]:
         """The parse flags (of translation unit ``source``: its compile command's include
@@ -348,9 +350,28 @@ class IncludeSetup:
             self._handled.add(header)
             self._write(header, f'#include "{os.path.join(STANDIN, header)}"\n')
             return None
-        if found is None:
+        if found is None and not self._parameter_header(header, where):
             self._empty(header, where)
         return found
+
+    def _parameter_header(self, header: str, where: Location) -> bool:
+        """Synthesise the header generate_parameter_library writes at build time
+        (``<project>/<target>.hpp``) from the target's YAML; False when ``header`` is not
+        one, or its YAML cannot be read (a diagnostic at the YAML says why)."""
+        if self._parameter_targets is None:
+            self._parameter_targets = parameter_library.targets(self.workspace)
+        target = parameter_library.header_target(header, self._parameter_targets,
+                                                 where.package or "")
+        if target is None:
+            return False
+        read, found = parameter_library.load(target, self.workspace)
+        self.diagnostics.extend(found)
+        if read is None:
+            return False
+        self._handled.add(header)
+        self._write(header, parameter_library.render(
+            target, *read, self.workspace.relpath(target.yaml)))
+        return True
 
     def _own_header(self, header: str) -> str | None:
         """The real file of ``header`` when it is a header of a package being extracted

@@ -14,6 +14,7 @@ import dataclasses
 import functools
 import itertools
 from collections.abc import Callable, Iterator
+from typing import Any
 
 from clang.cindex import Cursor, CursorKind, TranslationUnit, TypeKind
 
@@ -22,7 +23,7 @@ from ...diagnostics import Diagnostic
 from ...model.conditions import Condition
 from ...model.location import Location
 from ...model.source import PrimitiveCall
-from . import api, msg_types
+from . import api, msg_types, parameter_library
 from .call_sites import CallSites
 from .call_types import CallTypes, factory_made
 from .call_types import callee as callee_of_call
@@ -65,7 +66,8 @@ FUNCTIONS = frozenset({
     CursorKind.DESTRUCTOR, CursorKind.FUNCTION_TEMPLATE, CursorKind.CONVERSION_FUNCTION,
 })
 _API_NAMES = frozenset(
-    [name for _, name in [*api.ALL, *api.NODE_NAME, *api.RCLCPP_NODE_NAME, *api.FACTORIES]])
+    [name for _, name in [*api.ALL, *api.NODE_NAME, *api.RCLCPP_NODE_NAME, *api.FACTORIES]]
+    + [parameter_library.LISTENER])
 MAX_DEPTH = 16
 _PREPROCESSED = frozenset({CursorKind.MACRO_INSTANTIATION, CursorKind.INCLUSION_DIRECTIVE})
 _PARAM_KINDS = ("read", "declare")
@@ -244,10 +246,15 @@ class CallFinder:
             if index is not None:
                 self.rosname = render(scope.string(args[index]))
             return
+        made = target.semantic_parent if target.spelling == parameter_library.LISTENER else None
         if key in api.FACTORIES:
-            decl = factory_made(call)
+            decl = made = factory_made(call)
             if decl is not None:
                 key = (qualified_name(decl), decl.spelling)
+        declared = parameter_library.listener_parameters(made)
+        if declared is not None:
+            self._listener(call, args, declared, conditions, scope)
+            return
         if key in api.RCLCPP_NODE_NAME:
             self._node_name(api.RCLCPP_NODE_NAME[key], args, scope)
             if key in api.IMPLICIT:
@@ -495,6 +502,31 @@ class CallFinder:
                     kind=kind, name=full, type=self.types.ros_type(stype), queue_size=queue,
                     latch=latch, conditions=conditions, location=location,
                     handle_namespace=sibling_namespace, node_name=owner))
+
+    def _listener(self, call: Cursor, args: list[Cursor],
+                  declared: list[tuple[str, str | None, bool, Any]],
+                  conditions: tuple[Condition, ...], scope: Scope) -> None:
+        """A generate_parameter_library ``ParamListener`` built on a node (or its
+        parameters interface) and an optional prefix: one declare per parameter of its
+        YAML (``parameter_library``), on that node, under the prefix: a ROS 2 node's own
+        parameters, whichever handle of it (the node, ``get_node()``, its parameters
+        interface) the listener is given."""
+        target = call.referenced
+        location = self.where(call if target is not None and (
+            target.kind == CursorKind.CONSTRUCTOR) else callee_of_call(call))
+        prefix = next((render(scope.string(a)) for a in args[1:]
+                       if msg_types.param_type(a.type) == "str"), "")
+        if prefix and not prefix.endswith("."):
+            prefix += "."
+        for name, kind, has_default, default in declared:
+            full = prefix + name
+            self.calls.append(PrimitiveCall(
+                kind="declare", name=full, type=kind, conditions=conditions,
+                location=location, has_default=has_default,
+                default=default if has_default else None, node_name=self._owner))
+            if "?" in full:
+                self.diagnostics.append(diag.make(
+                    "CPP_DYNAMIC_NAME", location, kind="declare", name=full))
 
     def _names(self, spec: api.RosFunction, call: Cursor, expr: Cursor, args: list[Cursor],
                scope: Scope) -> list[tuple[str, tuple[str, str | None] | None]]:

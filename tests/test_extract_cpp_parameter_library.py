@@ -1,0 +1,140 @@
+"""generate_parameter_library: the header it writes at build time (``<project>/<target>.hpp``)
+is synthesised from the YAML its CMake call names, and a ``ParamListener`` built on the
+node declares every parameter of the YAML there, typed, with its default."""
+
+from __future__ import annotations
+
+import os
+import shutil
+
+import pytest
+
+from haros_arch import cmake
+from haros_arch.extract import extract_nodes
+from haros_arch.extract.cpp import CppResult, extract_cpp
+from haros_arch.extract.cpp import parameter_library as gpl
+from haros_arch.workspace import scan
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.join(os.path.dirname(HERE), "fixtures", "cpp", "parameter_library", "src")
+PACKAGE = os.path.join(ROOT, "joint_gain_controller")
+CONTROLLER = os.path.join(PACKAGE, "src", "joint_gain_controller.cpp")
+YAML = os.path.join(PACKAGE, "src", "joint_gain_controller_parameters.yaml")
+UNCLEAN = ("CPP_PARSE_ERROR", "CPP_INCLUDE_MISSING", "CPP_CALL_UNRESOLVED",
+           "CPP_NAMES_DECLARED", "CPP_ERROR_NEAR_CALL", "CPP_PARAMETER_LIBRARY")
+DECLARED = [
+    ("joints", "list", True, ["shoulder", "elbow"]),
+    ("interface_name", "str", True, "position"),
+    ("update_rate", "int", True, 100),
+    ("command_joints", "list", True, []),
+    ("open_loop", "bool", True, False),
+    ("limits.max_velocity", "double", True, 1.5),
+    ("limits.max_effort", "double", False, None),  # no default_value: required
+    # __map_joints: one per element of the default of ``joints``
+    ("gains.shoulder.p", "double", True, 1.0),
+    ("gains.elbow.p", "double", True, 1.0),
+    ("gains.shoulder.i", "double", True, 0.0),
+    ("gains.elbow.i", "double", True, 0.0),
+    # __map_command_joints: its list's default is empty, so the element is unknown
+    ("feedforward.?.scale", "double", True, 1.0),
+]
+
+
+@pytest.fixture(scope="module")
+def controller() -> CppResult:
+    return extract_cpp([CONTROLLER], scan([ROOT]), cache_dir=None)
+
+
+def _declares(result: CppResult, line: int) -> list[tuple[str, str | None, bool, object]]:
+    return [(c.name, c.type, c.has_default, c.default) for c in result.calls
+            if c.kind == "declare" and c.location.line == line]
+
+
+def test_cmake_records_the_target_and_its_yaml() -> None:
+    workspace = scan([ROOT])
+    interpreter, _ = cmake.interpret(workspace.packages["joint_gain_controller"], workspace)
+    assert interpreter.parameter_libraries == [
+        ("joint_gain_controller_parameters", YAML, "joint_gain_controller")]
+
+
+def test_the_listener_declares_every_parameter_of_the_yaml(controller: CppResult) -> None:
+    # std::make_shared<ParamListener>(get_node()) in on_init
+    assert _declares(controller, 16) == DECLARED
+
+
+def test_a_prefix_given_to_the_listener_heads_every_name(controller: CppResult) -> None:
+    # ParamListener backup(get_node(), "backup"), a local
+    assert _declares(controller, 65) == [
+        (f"backup.{name}", kind, has, default) for name, kind, has, default in DECLARED]
+
+
+def test_the_params_struct_parses_cleanly(controller: CppResult) -> None:
+    """params_.joints, params_.gains.joints_map.at(joint).p, params_.limits.max_velocity,
+    is_old, refresh_dynamic_parameters, try_update_params: all declared."""
+    assert [(d.code, d.message) for d in controller.diagnostics if d.code in UNCLEAN] == []
+    assert ("publish", "~gains") in [(c.kind, c.name) for c in controller.calls]
+
+
+def test_the_controller_node_is_complete() -> None:
+    workspace = scan([ROOT])
+    package = workspace.packages["joint_gain_controller"]
+    package.nodes, _ = cmake.parse_package(package, workspace)
+    nodes = [n for n in package.nodes if n.language == "cpp"]
+    found = extract_nodes(nodes, workspace, cache_dir=None, jobs=1)
+    node = next(n for n in nodes if n.name.endswith("JointGainController"))
+    assert ("declare", "gains.elbow.p") in [(c.kind, c.name) for c in node.calls]
+    assert not [d for d in found if d.code == "CPP_NODE_PARTIAL"]
+
+
+@pytest.mark.parametrize(("text", "line"), [
+    ("joint_gain_controller:\n  joints: [unclosed\n", 3),
+    ("- not\n- a mapping\n", 1),
+])
+def test_bad_yaml_is_a_diagnostic_at_the_file(tmp_path, text: str, line: int) -> None:
+    shutil.copytree(PACKAGE, tmp_path / "joint_gain_controller")
+    (tmp_path / "joint_gain_controller" / "src" / os.path.basename(YAML)).write_text(text)
+    source = tmp_path / "joint_gain_controller" / "src" / os.path.basename(CONTROLLER)
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    found = [d for d in result.diagnostics if d.code == "CPP_PARAMETER_LIBRARY"]
+    assert [(d.location.file, d.location.line) for d in found] == [
+        ("joint_gain_controller/src/joint_gain_controller_parameters.yaml", line)]
+    # the header is then an empty stand-in: no parameter is invented
+    assert "CPP_INCLUDE_MISSING" in [d.code for d in result.diagnostics]
+    assert not [c for c in result.calls if c.kind == "declare"]
+
+
+def test_the_header_types_the_fields_as_the_library() -> None:
+    import datetime
+
+    tree = {"a": {"type": "int_array"}, "b": {"type": "string_fixed_25"},
+            "day": {"type": "string", "default_value": datetime.date(2024, 1, 2)},
+            "c": {"type": "double_array_fixed_4"}, "n": {"d": {"type": "bool"}},
+            "__map_a": {"x": {"type": "string"}}}
+    target = gpl.Target("p", "/x.yaml", "pkg", "pkg")
+    text = gpl.render(target, "ns", tree, "x.yaml")
+    for line in ("std::vector<int64_t> a;", "std::string b;", "std::vector<double> c;",
+                 "struct N {", "bool d;", "} n;", "struct MapA {",
+                 "std::map<std::string, MapA> a_map;", "class ", "ParamListener(NodeT node"):
+        assert line in text
+    assert "2024-01-02" in text  # a YAML date as a default: its text, no traceback
+    assert gpl.header_target("pkg/p.hpp", [target], "") == target
+    assert gpl.header_target("p.hpp", [target], "") == target
+    assert gpl.header_target("other/p.hpp", [target], "") is None
+
+
+def test_a_node_gives_its_parameters_interface(tmp_path) -> None:
+    """Autoware's path_generator: ``make_shared<ParamListener>(this->
+    get_node_parameters_interface())`` in an rclcpp::Node: the node's own parameters
+    (not under the handle's unknown namespace)."""
+    shutil.copytree(PACKAGE, tmp_path / "joint_gain_controller")
+    source = tmp_path / "joint_gain_controller" / "src" / "standalone.cpp"
+    source.write_text(
+        "#include <memory>\n#include <rclcpp/rclcpp.hpp>\n"
+        '#include "joint_gain_controller/joint_gain_controller_parameters.hpp"\n'
+        "class Standalone : public rclcpp::Node {\n public:\n"
+        '  Standalone() : rclcpp::Node("standalone") {\n'
+        "    listener_ = std::make_shared<::joint_gain_controller::ParamListener>(\n"
+        "      this->get_node_parameters_interface());\n  }\n private:\n"
+        "  std::shared_ptr<::joint_gain_controller::ParamListener> listener_;\n};\n")
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    assert _declares(result, 7) == DECLARED
