@@ -133,6 +133,13 @@ ROS2 = """
 #include <pcl_ros/transforms.hpp>
 #include <tf2_ros/buffer.h>
 """ + POINT + """
+// a filter of the node's own reads the protected members of PCL's
+template<class PointT> class VoxelGridEx : public pcl::VoxelGrid<PointT> {
+ public:
+  Eigen::Vector4f leaf() const { return this->leaf_size_; }
+  bool all() const { return this->downsample_all_data_ && !this->filter_name_.empty(); }
+};
+
 class Downsampler : public rclcpp::Node {
  public:
   Downsampler() : rclcpp::Node("downsampler") {
@@ -144,6 +151,10 @@ class Downsampler : public rclcpp::Node {
   void cloud(const sensor_msgs::msg::PointCloud2::ConstSharedPtr& msg) {
     pcl::PCLPointCloud2::Ptr pc2(new pcl::PCLPointCloud2);
     pcl_conversions::toPCL(*msg, *pc2);
+    int x = pcl::getFieldIndex(*msg, "x");
+    VoxelGridEx<pcl::PointXYZ> own;
+    own.setLeafSize(own.leaf());
+    if (x < 0 || !own.all()) return;
     pcl::VoxelGrid<pcl::PCLPointCloud2> grid;
     grid.setInputCloud(pc2);
     grid.setLeafSize(leaf_, leaf_, leaf_);

@@ -295,6 +295,13 @@ template<class PointT> class PCLBase {
                           std::size_t nb_cols);
   IndicesPtr getIndices();
   const PointT& operator[](std::size_t pos) const;
+ protected:  // what a filter of the node's own (a subclass) reads
+  PointCloudConstPtr input_;
+  IndicesPtr indices_;
+  bool use_indices_;
+  bool fake_indices_;
+  bool initCompute();
+  bool deinitCompute();
 };
 
 // -- filters --------------------------------------------------------------------------------
@@ -307,6 +314,12 @@ template<class PointT> class Filter : public PCLBase<PointT> {
   IndicesConstPtr const getRemovedIndices() const;
   void getRemovedIndices(PointIndices& pi);
   void filter(PointCloud& output);
+ protected:
+  IndicesPtr removed_indices_;
+  std::string filter_name_;
+  bool extract_removed_indices_;
+  const std::string& getClassName() const;
+  virtual void applyFilter(PointCloud& output);
 };
 template<class PointT> class FilterIndices : public Filter<PointT> {
  public:
@@ -347,6 +360,18 @@ template<class PointT> class VoxelGrid : public Filter<PointT> {
   void getFilterLimits(double& limit_min, double& limit_max) const;
   void setFilterLimitsNegative(const bool limit_negative);
   std::vector<int> getLeafLayout() const;
+ protected:
+  Eigen::Vector4f leaf_size_;
+  Eigen::Vector4f inverse_leaf_size_;
+  bool downsample_all_data_;
+  bool save_leaf_layout_;
+  std::vector<int> leaf_layout_;
+  Eigen::Vector4i min_b_, max_b_, div_b_, divb_mul_;
+  std::string filter_field_name_;
+  double filter_limit_min_;
+  double filter_limit_max_;
+  bool filter_limit_negative_;
+  unsigned int min_points_per_voxel_;
 };
 template<class PointT> class ApproximateVoxelGrid : public Filter<PointT> {
  public:

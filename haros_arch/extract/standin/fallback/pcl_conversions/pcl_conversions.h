@@ -36,6 +36,9 @@ template<class Message> void toROSMsg(const pcl::PCLPointCloud2& pcl_pc2, Messag
 template<class Message> void fromROSMsg(const Message& cloud, pcl::PCLPointCloud2& pcl_pc2);
 template<class PointT, class Message> void createMapping(const std::vector<Message>& fields,
                                                          std::vector<int>& field_map);
+// a sensor_msgs PointCloud2's fields
+template<class Message> int getFieldIndex(const Message& cloud, const std::string& field_name);
+template<class Message> std::string getFieldsList(const Message& cloud);
 template<class Message> bool concatenatePointCloud(const Message& cloud1, const Message& cloud2,
                                                    Message& cloud_out);
 }  // namespace pcl
