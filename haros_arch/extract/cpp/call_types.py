@@ -57,6 +57,11 @@ class CallTypes:
             if source in ("template", "template-value"):
                 ref = template_argument(call)
                 ctype = ref.type if ref is not None else constructed_argument(call)
+                written = _class_template_first(call)
+                if source == "template" and written is not None and (
+                    cloud := msg_types.template_message(written, self.ros2)
+                ) is not None:  # advertise<pcl::PointCloud<P>>: not P
+                    return cloud
                 if ctype is not None:
                     found = (self._message(ctype) if source == "template"
                              else msg_types.param_type(ctype))
@@ -94,6 +99,20 @@ def callee(call: Cursor) -> Cursor:
     """The expression a call calls (its function's name, or the member it calls)."""
     children = list(call.get_children())
     return strip(children[0]) if children else call
+
+
+def _class_template_first(call: Cursor) -> Cursor | None:
+    """The class template written first among the template arguments of the called
+    function (``subscribe<pcl::PointCloud<P>>``, whose first type reference is ``P``);
+    None when a type is written first."""
+    target = call.referenced
+    owner = target.semantic_parent if target is not None else None
+    for child in callee(call).get_children():
+        if child.kind == CursorKind.TYPE_REF and (owner is None or child.referenced != owner):
+            return None
+        if child.kind == CursorKind.TEMPLATE_REF and child.referenced is not None:
+            return child.referenced
+    return None
 
 
 def template_argument(call: Cursor) -> Cursor | None:

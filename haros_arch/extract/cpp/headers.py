@@ -19,10 +19,11 @@ resolved the way the preprocessor will, and:
   generate_export_header writes at build time: it defines ``NAME_EXPORT`` and its
   siblings empty;
 - the headers of ros2_control (``controller_interface/``, ``hardware_interface/``,
-  ``semantic_components/``, ``joint_limits/``), which robot workspaces have installed
-  rather than as sources, come from the stand-ins in ``standin/fallback`` only when the
-  workspace does not have them (``FALLBACK``): never in place of the package's real
-  headers;
+  ``semantic_components/``, ``joint_limits/``) and of PCL (``pcl/``, ``pcl_conversions/``,
+  ``pcl_ros/``), which workspaces have installed rather than as sources, come from the
+  stand-ins in ``standin/fallback`` only when the workspace does not have them
+  (``FALLBACK``; a PCL header without a file there is the library's umbrella,
+  ``FALLBACK_UMBRELLAS``): never in place of the package's real headers;
 - a package's own headers win over the stand-ins: a unit of a package our stand-ins also
   provide (rclcpp_components, bondcpp, class_loader, ...) is parsed with the package's
   ``include`` folder first and without the precompiled stand-ins (whose classes its own
@@ -60,6 +61,11 @@ PRELUDE = os.path.join(STANDIN, "haros_prelude.h")  # what is precompiled
 # (ros2_control's controller_interface, hardware_interface): read only where the workspace
 # has no header by that name, so its real headers are never shadowed
 FALLBACK = os.path.join(STANDIN, "fallback")
+# a header of these libraries that FALLBACK has no file for stands in as the library's
+# umbrella there (PCL's many headers: ``pcl/segmentation/extract_clusters.h``)
+FALLBACK_UMBRELLAS = {"pcl/": "pcl/haros_pcl.h",
+                      "pcl_conversions/": "pcl_conversions/pcl_conversions.h",
+                      "pcl_ros/": "pcl_ros/haros_pcl_ros.h"}
 # CXTranslationUnit_ForSerialization | Incomplete (a header, not a whole program)
 _PCH_OPTIONS = 0x10 | 0x02
 # a second folder of synthesised headers, for a header whose name is a folder of others
@@ -667,7 +673,10 @@ def _fallback_file(header: str) -> str | None:
     if os.path.isabs(name) or name.startswith(os.pardir):
         return None
     path = os.path.join(FALLBACK, name)
-    return path if os.path.isfile(path) else None
+    if os.path.isfile(path):
+        return path
+    umbrella = next((u for p, u in FALLBACK_UMBRELLAS.items() if name.startswith(p)), None)
+    return os.path.join(FALLBACK, umbrella) if umbrella is not None else None
 
 
 def _parents(path: str, root: str) -> list[str]:

@@ -31,7 +31,8 @@ def message_type(ctype: Type, service: bool = False,
                  ros2: bool | None = None) -> str | None:
     """The ROS name of the message (or, with ``service``, service) type ``ctype`` holds;
     a type adapter (``rclcpp::TypeAdapter<Custom, Ros>``) or a custom type ``adapters``
-    maps to its ROS message type (by canonical spelling) holds that ROS type."""
+    maps to its ROS message type (by canonical spelling) holds that ROS type; a
+    ``pcl::PointCloud<T>`` is a ``sensor_msgs/PointCloud2`` (pcl_ros)."""
     record = _record(ctype, 0, adapters or {})
     if record is None:
         return None
@@ -50,9 +51,19 @@ def message_type(ctype: Type, service: bool = False,
     scopes = _namespaces(parent)
     if not scopes or not name:
         return None
+    if templated and (cloud := template_message(decl, ros2)) is not None:
+        return cloud
     if _synthesised(decl):  # declared for a name the parse did not know (``synthesis``)
         return written_type("::".join([*scopes, name]), ros2, used_as_message=True) or "?"
     return "/".join([*scopes, name])
+
+
+def template_message(decl: Cursor, ros2: bool | None) -> str | None:
+    """The ROS message a specialisation of class template ``decl`` is on the wire: a
+    ``pcl::PointCloud<T>`` (pcl_ros serialises it) is a ``sensor_msgs/PointCloud2``."""
+    if decl.spelling != "PointCloud" or _namespaces(decl.semantic_parent) != ["pcl"]:
+        return None
+    return "sensor_msgs/msg/PointCloud2" if ros2 else "sensor_msgs/PointCloud2"
 
 
 _POINTER_SUFFIXES = ("SharedPtr", "ConstSharedPtr", "UniquePtr", "Ptr", "ConstPtr")

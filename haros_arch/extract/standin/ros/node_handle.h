@@ -89,6 +89,15 @@ public:
   Subscriber subscribe(const std::string& topic, uint32_t queue_size,
                        void (*fp)(const boost::shared_ptr<M const>&),
                        const TransportHints& hints = TransportHints());
+  // a std::shared_ptr message (PCL >= 1.11's pcl::PointCloud<T>::ConstPtr, with pcl_ros)
+  template<class M, class T>
+  Subscriber subscribe(const std::string& topic, uint32_t queue_size,
+                       void (T::*fp)(const std::shared_ptr<M const>&), T* obj,
+                       const TransportHints& hints = TransportHints());
+  template<class M>
+  Subscriber subscribe(const std::string& topic, uint32_t queue_size,
+                       void (*fp)(const std::shared_ptr<M const>&),
+                       const TransportHints& hints = TransportHints());
   template<class M>
   Subscriber subscribe(const std::string& topic, uint32_t queue_size, void (*fp)(M),
                        const TransportHints& hints = TransportHints());
