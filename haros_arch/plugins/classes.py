@@ -153,19 +153,88 @@ def exported_classes(path: str, workspace: Files) -> list[tuple[str, int]]:
 
 
 def narrow(sources: list[str], cls: str, workspace: Files) -> list[str]:
-    """A library's sources without the files that export only other classes.
+    """A library's sources without the files that export only other classes, nor the
+    helper files (they export none) whose code the class's own files never name.
 
     A library often bundles several nodelets or components, one per file; the node of
-    one class should not carry the others' calls.
+    one class should not carry the others' calls. A helper file is dropped only when it
+    defines members of classes (``Name::member(``) and no kept file, nor a header of
+    the workspace it includes, names one of them: Autoware's pointcloud_preprocessor
+    builds 38 components in one library, and only the concatenation component uses
+    ``collector_matching_strategy.cpp``, whose calls read ``matching_strategy.*``.
     """
     cls = cls.lstrip(":")
-    kept = []
+    own: list[str] = []
+    helpers: list[str] = []
     for source in sources:
         exported = {name for name, _ in exported_classes(
             os.path.join(workspace.root, source), workspace)}
-        if not exported or cls in exported:
-            kept.append(source)
-    return kept if any(s in kept for s in sources) else sources
+        if cls in exported:
+            own.append(source)
+        elif not exported:
+            helpers.append(source)
+    if not own:
+        kept = helpers
+        return kept if kept else sources
+    words: set[str] = set()
+    for source in own:
+        words |= _named(source, workspace)
+    waiting = {source: _defined(source, workspace) for source in helpers}
+    used = {source for source, defined in waiting.items() if not defined}
+    changed = True
+    while changed:  # a helper a kept file names may name another
+        changed = False
+        for source, defined in waiting.items():
+            if source not in used and defined & words:
+                used.add(source)
+                words |= _named(source, workspace)
+                changed = True
+    return [s for s in sources if s in own or s in used]
+
+
+_WORD = re.compile(r"[A-Za-z_]\w*")
+# ``Type Name::member(`` / ``Name<T>::member(`` at the start of a line: a member defined
+_MEMBER = re.compile(r"^[\w:<>,&*\s]*?\b([A-Za-z_]\w*)\s*(?:<[^;{}()]*>)?\s*::\s*~?\w+\s*\(",
+                     re.MULTILINE)
+_QUOTED_INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]([^>"]+)[>"]', re.MULTILINE)
+MAX_NAMED_HEADERS = 64  # per file: the headers of the workspace read for the names used
+
+
+def _defined(source: str, workspace: Files) -> set[str]:
+    """The classes whose members a source file defines."""
+    path = os.path.join(workspace.root, source)
+    text, _ = read_text(path, workspace.location(path))
+    return set(_MEMBER.findall(text or ""))
+
+
+def _named(source: str, workspace: Files) -> set[str]:
+    """The words of a source file and of the headers of its package it includes (its
+    own header declares the members whose types name helper classes)."""
+    path = os.path.join(workspace.root, source)
+    text, _ = read_text(path, workspace.location(path))
+    words = set(_WORD.findall(text or ""))
+    package = _package_root(os.path.dirname(path), workspace.root)
+    for header in _QUOTED_INCLUDE.findall(text or "")[:MAX_NAMED_HEADERS]:
+        for folder in (os.path.dirname(path), *(
+                [os.path.join(package, "include")] if package else [])):
+            candidate = os.path.normpath(os.path.join(folder, header))
+            if os.path.isfile(candidate) and candidate.startswith(workspace.root + os.sep):
+                found, _ = read_text(candidate, workspace.location(candidate))
+                words |= set(_WORD.findall(found or ""))
+                break
+    return words
+
+
+def _package_root(folder: str, top: str) -> str | None:
+    """The nearest folder at or above ``folder`` (inside ``top``) with a package.xml."""
+    while folder.startswith(top) and len(folder) >= len(top):
+        if os.path.isfile(os.path.join(folder, "package.xml")):
+            return folder
+        parent = os.path.dirname(folder)
+        if parent == folder:
+            break
+        folder = parent
+    return None
 
 
 def _exporting(type_name: str, libraries: Mapping[str, Library],
