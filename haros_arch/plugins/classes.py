@@ -193,9 +193,10 @@ def narrow(sources: list[str], cls: str, workspace: Files) -> list[str]:
 
 
 _WORD = re.compile(r"[A-Za-z_]\w*")
-# ``Type Name::member(`` / ``Name<T>::member(`` at the start of a line: a member defined
-_MEMBER = re.compile(r"^[\w:<>,&*\s]*?\b([A-Za-z_]\w*)\s*(?:<[^;{}()]*>)?\s*::\s*~?\w+\s*\(",
-                     re.MULTILINE)
+# ``Type Name::member(`` / ``Name<T>::member(`` on a line that starts in the first column
+# (a definition; a call in a body is indented): a member defined
+_MEMBER = re.compile(r"^(?![ \t])[\w:<>,&* \t]*?\b([A-Za-z_]\w*)\s*(?:<[^;{}()\n]*>)?\s*::"
+                     r"\s*~?\w+\s*\(", re.MULTILINE)
 _QUOTED_INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]([^>"]+)[>"]', re.MULTILINE)
 MAX_NAMED_HEADERS = 64  # per file: the headers of the workspace read for the names used
 
