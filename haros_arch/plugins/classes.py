@@ -159,7 +159,8 @@ def narrow(sources: list[str], cls: str, workspace: Files) -> list[str]:
     A library often bundles several nodelets or components, one per file; the node of
     one class should not carry the others' calls. A helper file is dropped only when it
     defines members of classes (``Name::member(``) and no kept file, nor a header of
-    the workspace it includes, names one of them: Autoware's pointcloud_preprocessor
+    the workspace it includes, names one of them (nor its free functions): Autoware's
+    pointcloud_preprocessor
     builds 38 components in one library, and only the concatenation component uses
     ``collector_matching_strategy.cpp``, whose calls read ``matching_strategy.*``.
     """
@@ -201,11 +202,23 @@ _QUOTED_INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]([^>"]+)[>"]', re.MULTILINE
 MAX_NAMED_HEADERS = 64  # per file: the headers of the workspace read for the names used
 
 
+# ``Type name(`` starting in the first column, its line not ending with ``;``: a free
+# function defined (Autoware's behavior_path_planner builds its test_utils.cpp into the
+# node's library: its test publishers are no call of the node)
+_FUNCTION = re.compile(r"^(?![ \t#])[\w:<>,&* \t]*?(?<![:\w])([a-z_]\w*)\s*\(([^\n]*)$",
+                       re.MULTILINE)
+_NOT_FUNCTIONS = frozenset({"if", "for", "while", "switch", "return", "sizeof", "namespace",
+                            "using", "typedef", "template", "class", "struct", "enum"})
+
+
 def _defined(source: str, workspace: Files) -> set[str]:
-    """The classes whose members a source file defines."""
+    """The classes whose members a source file defines, and its free functions."""
     path = os.path.join(workspace.root, source)
     text, _ = read_text(path, workspace.location(path))
-    return set(_MEMBER.findall(text or ""))
+    text = text or ""
+    functions = {name for name, rest in _FUNCTION.findall(text)
+                 if not rest.rstrip().endswith(";")} - _NOT_FUNCTIONS
+    return set(_MEMBER.findall(text)) | functions
 
 
 def _named(source: str, workspace: Files) -> set[str]:
