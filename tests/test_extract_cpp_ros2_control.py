@@ -39,7 +39,7 @@ def controller() -> CppResult:
 
 def test_controller_calls_through_get_node_and_auto_declare(controller: CppResult) -> None:
     assert _rows(controller) == [
-        ("declare", "wheel_names", "str", 19),
+        ("declare", "wheel_names", "str[]", 19),
         ("declare", "wheel_radius", "double", 20),
         ("declare", "wheel_separation", "double", 52),
         ("subscribe", "~cmd_vel", "geometry_msgs/msg/TwistStamped", 54),
@@ -87,7 +87,7 @@ def test_the_workspace_headers_win_over_the_stand_ins() -> None:
     result = extract_cpp([CONTROLLER], scan([ROOT]), cache_dir=None)
     assert _rows(result)[:4] == [
         ("read", "wheel_names", None, 19),
-        ("declare", "wheel_names", "str", 19),
+        ("declare", "wheel_names", "str[]", 19),
         ("read", "wheel_radius", None, 20),
         ("declare", "wheel_radius", "double", 20),
     ]

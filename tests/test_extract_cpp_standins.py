@@ -381,3 +381,25 @@ def test_a_stringstream_has_one_ios_base(tmp_path) -> None:
         "}\n")
     result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
     assert [d.message for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"] == []
+
+
+def test_a_vector_parameter_is_an_array_of_its_element_type(tmp_path) -> None:
+    """``declare_parameter<std::vector<std::string>>("devices")`` declares a string array
+    (Autoware's net_monitor, behavior_path_planner's ``slots``), not a string: a launch
+    file that sets a list is no type mismatch."""
+    (tmp_path / "package.xml").write_text(
+        '<package format="3"><name>p</name><version>1.0.0</version>'
+        "<description>d</description><maintainer email='a@b.c'>m</maintainer>"
+        "<license>BSD</license><depend>rclcpp</depend>"
+        "<export><build_type>ament_cmake</build_type></export></package>")
+    source = tmp_path / "a.cpp"
+    source.write_text(
+        "#include <rclcpp/rclcpp.hpp>\n#include <string>\n#include <vector>\n"
+        "class N : public rclcpp::Node {\n public:\n  N() : Node(\"n\") {\n"
+        "    auto a = declare_parameter<std::vector<std::string>>(\"devices\");\n"
+        "    auto b = declare_parameter(\"gains\", std::vector<double>{1.0});\n"
+        "    auto c = declare_parameter<std::vector<int64_t>>(\"ids\", std::vector<int64_t>{});\n"
+        "    auto d = declare_parameter<std::string>(\"name\");\n  }\n};\n")
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    assert [(c.name, c.type) for c in result.calls if c.kind == "declare"] == [
+        ("devices", "str[]"), ("gains", "double[]"), ("ids", "int[]"), ("name", "str")]

@@ -58,6 +58,10 @@ class CallTypes:
                 ref = template_argument(call)
                 ctype = ref.type if ref is not None else constructed_argument(call)
                 written = _class_template_first(call)
+                if source == "template-value" and written is not None and (
+                    array := msg_types.param_type(call.type)
+                ) is not None and array.endswith("[]"):
+                    return array  # declare_parameter<std::vector<T>>: T[], what it returns
                 if source == "template" and written is not None and (
                     cloud := msg_types.template_message(written, self.ros2)
                 ) is not None:  # advertise<pcl::PointCloud<P>>: not P

@@ -114,6 +114,10 @@ def param_type(ctype: Type) -> str | None:
     decl = ctype.get_declaration()
     if decl.spelling == "basic_string":
         return "str"
+    if decl.spelling == "vector" and ctype.get_num_template_arguments() > 0:
+        element = ctype.get_template_argument_type(0)
+        inner = param_type(element) if element.kind != TypeKind.INVALID else None
+        return f"{inner}[]" if inner is not None and not inner.endswith("[]") else None
     return None
 
 
