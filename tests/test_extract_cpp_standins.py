@@ -403,3 +403,23 @@ def test_a_vector_parameter_is_an_array_of_its_element_type(tmp_path) -> None:
     result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
     assert [(c.name, c.type) for c in result.calls if c.kind == "declare"] == [
         ("devices", "str[]"), ("gains", "double[]"), ("ids", "int[]"), ("name", "str")]
+
+
+def test_a_vector_parameter_of_an_unresolved_call_is_an_array(tmp_path) -> None:
+    """A class an error made invalid (Autoware's control_evaluator): its
+    ``declare_parameter<std::vector<std::string>>`` is kept by name, typed str[]."""
+    (tmp_path / "package.xml").write_text(
+        '<package format="3"><name>p</name><version>1.0.0</version>'
+        "<description>d</description><maintainer email='a@b.c'>m</maintainer>"
+        "<license>BSD</license><depend>rclcpp</depend>"
+        "<export><build_type>ament_cmake</build_type></export></package>")
+    source = tmp_path / "a.cpp"
+    source.write_text(
+        "#include <rclcpp/rclcpp.hpp>\n#include <string>\n#include <vector>\n"
+        "class Helper {\n public:\n"
+        "  explicit Helper(rclcpp::Node::MissingInterface::SharedPtr node) {\n"
+        "    auto m = node->declare_parameter<std::vector<std::string>>(\"module_list\");\n"
+        "  }\n};\n")
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    assert [(c.name, c.type) for c in result.calls if c.kind == "declare"] == [
+        ("module_list", "str[]")]

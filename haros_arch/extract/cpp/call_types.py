@@ -58,10 +58,17 @@ class CallTypes:
                 ref = template_argument(call)
                 ctype = ref.type if ref is not None else constructed_argument(call)
                 written = _class_template_first(call)
-                if source == "template-value" and written is not None and (
-                    array := msg_types.param_type(call.type)
-                ) is not None and array.endswith("[]"):
-                    return array  # declare_parameter<std::vector<T>>: T[], what it returns
+                if source == "template-value" and written is not None:
+                    # declare_parameter<std::vector<T>>: T[], what it returns (a call the
+                    # parse could not resolve has no type: the element written, then [])
+                    array = msg_types.param_type(call.type)
+                    if (array is None or not array.endswith("[]")) and (
+                            written.spelling == "vector" and ctype is not None):
+                        element = msg_types.param_type(ctype)
+                        array = None if element is None or element.endswith("[]") \
+                            else element + "[]"
+                    if array is not None and array.endswith("[]"):
+                        return array
                 if source == "template" and written is not None and (
                     cloud := msg_types.template_message(written, self.ros2)
                 ) is not None:  # advertise<pcl::PointCloud<P>>: not P
