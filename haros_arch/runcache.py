@@ -316,14 +316,7 @@ def _kept_text(model: Model, kind: str, inputs: str, compute: Callable[[], str])
     except (OSError, ValueError):
         pass
     found = compute()
-    try:
-        os.makedirs(os.path.dirname(entry), exist_ok=True)
-        fd, temporary = tempfile.mkstemp(dir=os.path.dirname(entry), suffix=".tmp")
-        with os.fdopen(fd, "w", encoding="utf-8", newline="") as handle:
-            handle.write(found)
-        os.replace(temporary, entry)
-    except OSError:
-        return found
+    _write_text(entry, found)
     _prune(folder)
     return found
 
@@ -375,11 +368,16 @@ def _digest(text: str) -> str:
 
 
 def _write_json(path: str, data: object) -> None:
+    _write_text(path, json.dumps(data))
+
+
+def _write_text(path: str, text: str) -> None:
+    """Write a file whole or not at all (a temporary file moved into place)."""
     try:
         os.makedirs(os.path.dirname(path), exist_ok=True)
         fd, temporary = tempfile.mkstemp(dir=os.path.dirname(path), suffix=".tmp")
-        with os.fdopen(fd, "w", encoding="utf-8") as handle:
-            json.dump(data, handle)
+        with os.fdopen(fd, "w", encoding="utf-8", newline="") as handle:
+            handle.write(text)
         os.replace(temporary, path)
     except OSError:
         pass  # a cache that cannot be written is no cache, not an error

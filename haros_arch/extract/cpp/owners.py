@@ -41,12 +41,21 @@ def owner_of(function: Cursor) -> str:
 def constructed_class(call: Cursor, owned: Callable[[str], bool]) -> str | None:
     """The class of the workspace a call constructs (``T(...)``, ``new T(...)``,
     ``std::make_shared<T>(...)``), by its qualified name."""
+    made = _construction(call, owned)
+    return (qualified_name(made[0]) or None) if made is not None else None
+
+
+def _construction(call: Cursor, owned: Callable[[str], bool]
+                  ) -> tuple[Cursor, Cursor | None] | None:
+    """The class of the workspace a call constructs and the constructor it calls (None
+    when made through a factory: ``make_shared``, ``new`` of a template argument)."""
     target = call.referenced
     if target is None:
         return None
     cls: Cursor | None = None
+    constructor: Cursor | None = None
     if target.kind == CursorKind.CONSTRUCTOR:
-        cls = target.semantic_parent
+        cls, constructor = target.semantic_parent, target
     elif (qualified_name(target.semantic_parent), target.spelling) in api.FACTORIES:
         cls = factory_made(call)
     if cls is None or cls.kind not in _CLASSES:
@@ -54,7 +63,7 @@ def constructed_class(call: Cursor, owned: Callable[[str], bool]) -> str | None:
     where = cls.location.file
     if where is None or not owned(where.name):
         return None
-    return qualified_name(cls) or None
+    return cls, constructor
 
 
 # the node classes whose object a node's code hands to other code (``*this`` of a class
@@ -72,20 +81,10 @@ def unseen_construction(call: Cursor, owned: Callable[[str], bool]
     NodeHandle, a node interface): the class and the argument. Its constructor may make
     ROS calls on the node that this unit does not show (Autoware's controller node
     builds its lateral and longitudinal controllers so)."""
-    target = call.referenced
-    if target is None:
+    made = _construction(call, owned)
+    if made is None:
         return None
-    cls: Cursor | None = None
-    constructor: Cursor | None = None
-    if target.kind == CursorKind.CONSTRUCTOR:
-        cls, constructor = target.semantic_parent, target
-    elif (qualified_name(target.semantic_parent), target.spelling) in api.FACTORIES:
-        cls = factory_made(call)
-    if cls is None or cls.kind not in _CLASSES:
-        return None
-    where = cls.location.file
-    if where is None or not owned(where.name):
-        return None
+    cls, constructor = made
     given = [arg for arg in call.get_arguments() if _is_node(arg)]
     if not given or _code_here(constructor, cls):
         return None
