@@ -8,6 +8,7 @@ from __future__ import annotations
 import os
 
 import pytest
+from conftest import package_xml
 
 from haros_arch.extract.cpp import CppResult, extract_cpp, interfaces, ros2_interfaces
 from haros_arch.workspace import scan
@@ -318,10 +319,7 @@ def test_the_stand_in_prelude_precompiles(std: str | None) -> None:
 def test_every_nodelet_log_macro_parses(tmp_path) -> None:
     """Ouster's nodelets log with NODELET_FATAL_STREAM, NODELET_WARN_COND and the other
     variants of every level; the function around them is read clean."""
-    (tmp_path / "package.xml").write_text(
-        '<package format="2"><name>p</name><version>1.0.0</version>'
-        "<description>d</description><maintainer email='a@b.c'>m</maintainer>"
-        "<license>BSD</license></package>")
+    (tmp_path / "package.xml").write_text(package_xml("p"))
     source = tmp_path / "a.cpp"
     source.write_text(
         "#include <nodelet/nodelet.h>\n#include <std_msgs/Empty.h>\n"
@@ -346,10 +344,7 @@ def test_every_nodelet_log_macro_parses(tmp_path) -> None:
 def test_limits_mem_fn_rdbuf_and_time_from_nanoseconds_parse(tmp_path) -> None:
     """Forms of ouster-ros' nodelets: ULLONG_MAX, std::mem_fn, a stream's rdbuf(),
     ros::Time::fromNSec."""
-    (tmp_path / "package.xml").write_text(
-        '<package format="2"><name>p</name><version>1.0.0</version>'
-        "<description>d</description><maintainer email='a@b.c'>m</maintainer>"
-        "<license>BSD</license></package>")
+    (tmp_path / "package.xml").write_text(package_xml("p"))
     source = tmp_path / "a.cpp"
     source.write_text(
         "#include <ros/ros.h>\n#include <climits>\n#include <functional>\n"
@@ -387,11 +382,7 @@ def test_a_vector_parameter_is_an_array_of_its_element_type(tmp_path) -> None:
     """``declare_parameter<std::vector<std::string>>("devices")`` declares a string array
     (Autoware's net_monitor, behavior_path_planner's ``slots``), not a string: a launch
     file that sets a list is no type mismatch."""
-    (tmp_path / "package.xml").write_text(
-        '<package format="3"><name>p</name><version>1.0.0</version>'
-        "<description>d</description><maintainer email='a@b.c'>m</maintainer>"
-        "<license>BSD</license><depend>rclcpp</depend>"
-        "<export><build_type>ament_cmake</build_type></export></package>")
+    (tmp_path / "package.xml").write_text(package_xml("p", build_type="ament_cmake"))
     source = tmp_path / "a.cpp"
     source.write_text(
         "#include <rclcpp/rclcpp.hpp>\n#include <string>\n#include <vector>\n"
@@ -408,11 +399,7 @@ def test_a_vector_parameter_is_an_array_of_its_element_type(tmp_path) -> None:
 def test_a_vector_parameter_of_an_unresolved_call_is_an_array(tmp_path) -> None:
     """A class an error made invalid (Autoware's control_evaluator): its
     ``declare_parameter<std::vector<std::string>>`` is kept by name, typed str[]."""
-    (tmp_path / "package.xml").write_text(
-        '<package format="3"><name>p</name><version>1.0.0</version>'
-        "<description>d</description><maintainer email='a@b.c'>m</maintainer>"
-        "<license>BSD</license><depend>rclcpp</depend>"
-        "<export><build_type>ament_cmake</build_type></export></package>")
+    (tmp_path / "package.xml").write_text(package_xml("p", build_type="ament_cmake"))
     source = tmp_path / "a.cpp"
     source.write_text(
         "#include <rclcpp/rclcpp.hpp>\n#include <string>\n#include <vector>\n"
