@@ -53,21 +53,21 @@ class _Known:
                 self.reconfigured.setdefault(namespace, []).append(link.node)
         # resource -> nodes that use a name with "?" that may stand for it
         self.guessed: dict[int, list[NodeInstance]] = {}
+        # parameter -> parameters with "?" that the launch sets and that may be it (a
+        # parameter file not read, an entry not known statically: ``/ns/node/?``)
+        self.launch_guessed: dict[int, list[Parameter]] = {}
         for collection in (config.topics, config.services, config.actions,
                            config.parameters):
             for unresolved in collection:
                 if not unresolved.is_unresolved:
                     continue
                 users = list(dict.fromkeys(link.node for link in unresolved.links))
+                launched = unresolved if isinstance(unresolved, Parameter) and (
+                    unresolved.set_by_launch) else None
                 for candidate in unresolved.candidates:
                     self.guessed.setdefault(id(candidate), []).extend(users)
-        # parameter -> parameters with "?" that the launch sets and that may be it (a
-        # parameter file not read, an entry not known statically: ``/ns/node/?``)
-        self.launch_guessed: dict[int, list[Parameter]] = {}
-        for unresolved in config.parameters:
-            if unresolved.is_unresolved and unresolved.set_by_launch:
-                for candidate in unresolved.candidates:
-                    self.launch_guessed.setdefault(id(candidate), []).append(unresolved)
+                    if launched is not None:
+                        self.launch_guessed.setdefault(id(candidate), []).append(launched)
 
 
 def _reconfigure_namespace(link: Link) -> str | None:
