@@ -51,7 +51,7 @@ from ...diagnostics import Diagnostic
 from ...files import read_text
 from ...model.location import Location
 from ...workspace import Workspace
-from . import api, interfaces, parameter_library, ros2_interfaces, toolchain
+from . import api, header_map, interfaces, parameter_library, ros2_interfaces, toolchain
 from .compile_commands import UnitFlags
 
 STANDIN = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "standin")
@@ -70,6 +70,7 @@ FALLBACK_UMBRELLAS = {"pcl/": "pcl/haros_pcl.h",
 _PCH_OPTIONS = 0x10 | 0x02
 # a second folder of synthesised headers, for a header whose name is a folder of others
 OVERFLOW = ".overflow"
+HEADER_MAP = "workspace.hmap"  # the include folders as one header map (``header_map``)
 # Prefixes only our stand-ins provide in the default mode; a header of one of these
 # libraries we have no stand-in for includes the library's umbrella stand-in.
 QT = "haros_qt.h"  # the Qt stand-in every Qt header includes
@@ -208,6 +209,8 @@ class IncludeSetup:
         self.overflow = os.path.join(self.generated, OVERFLOW)
         self._folders: set[str] = set()  # the folders of the written headers
         self._on_disk = False
+        # the include folders as the parse searches them (``header_map``), once written
+        self.search: list[str] | None = None
         self._tops: dict[str, list[str]] | None = None  # see ``_resolve``
         self._defined: dict[str, dict[str, str]] = {}  # see ``_definitions``
         self._roots: frozenset[str] | None = None  # see ``_inside``
@@ -219,8 +222,8 @@ class IncludeSetup:
     def arguments(self, pch: bool = True, source: str | None = None) -> list[str]:
         """The parse flags (of translation unit ``source``: its compile command's include
         folders, macros and standard, after our stand-ins); without ``pch`` the
-        precompiled stand-ins are left out (the flags that key the cache, which must not
-        name this process's PCH file)."""
+        precompiled stand-ins and the header map are left out (the flags that key the
+        cache, which must not name this process's files): the folders are listed."""
         unit = self.units.get(os.path.realpath(source)) if source and self.units else None
         flags = toolchain.base_arguments(self.system_headers, unit.std if unit else None)
         args = ["-I", self.generated, "-I", self.overflow]
@@ -232,7 +235,7 @@ class IncludeSetup:
             args += ["-I", STANDIN]
         if unit is not None:
             args += unit.arguments()
-        for folder in self.user_dirs:
+        for folder in (self.search if pch and self.search is not None else self.user_dirs):
             args += ["-I", folder]
         if self.system_headers:
             return args + flags
@@ -616,6 +619,8 @@ class IncludeSetup:
             self._on_disk = True
             for path, text in self.written.items():
                 _write_file(path, text)
+            self.search = header_map.search_path(
+                os.path.join(self.generated, HEADER_MAP), self.user_dirs)
 
     # -- after parsing ----------------------------------------------------------------
 
