@@ -86,6 +86,8 @@ UMBRELLAS = {
     "message_filters/": "message_filters/subscriber.h",
     "actionlib/": "actionlib/server/simple_action_server.h", "nodelet/": "nodelet/nodelet.h",
     "pluginlib/": "pluginlib/class_list_macros.hpp",
+    "ament_index_cpp/": "ament_index_cpp/ament_index_cpp.hpp",
+    "tf2_eigen/": "tf2_eigen/tf2_eigen.hpp",
     "dynamic_reconfigure/": "dynamic_reconfigure/server.h",
     "diagnostic_updater/": "diagnostic_updater/diagnostic_updater.h",
     "bondcpp/": "bondcpp/bond.hpp",

@@ -235,6 +235,19 @@ using QOSOfferedIncompatibleQoSInfo = QOSEventInfo;
 using QOSRequestedIncompatibleQoSInfo = QOSEventInfo;
 using IncompatibleTypeInfo = QOSEventInfo;
 using MatchedInfo = QOSEventInfo;
+// rclcpp/event_handler.hpp: the callback types of PublisherEventCallbacks and
+// SubscriptionEventCallbacks
+using QOSDeadlineOfferedCallbackType = std::function<void(QOSDeadlineOfferedInfo&)>;
+using QOSDeadlineRequestedCallbackType = std::function<void(QOSDeadlineRequestedInfo&)>;
+using QOSLivelinessChangedCallbackType = std::function<void(QOSLivelinessChangedInfo&)>;
+using QOSLivelinessLostCallbackType = std::function<void(QOSLivelinessLostInfo&)>;
+using QOSMessageLostCallbackType = std::function<void(QOSMessageLostInfo&)>;
+using QOSOfferedIncompatibleQoSCallbackType = std::function<void(QOSOfferedIncompatibleQoSInfo&)>;
+using QOSRequestedIncompatibleQoSCallbackType =
+    std::function<void(QOSRequestedIncompatibleQoSInfo&)>;
+using IncompatibleTypeCallbackType = std::function<void(IncompatibleTypeInfo&)>;
+using PublisherMatchedCallbackType = std::function<void(MatchedInfo&)>;
+using SubscriptionMatchedCallbackType = std::function<void(MatchedInfo&)>;
 struct PublisherEventCallbacks {
   std::function<void(QOSDeadlineOfferedInfo&)> deadline_callback;
   std::function<void(QOSLivelinessLostInfo&)> liveliness_callback;
@@ -387,6 +400,8 @@ public:
   void reset();
   bool is_canceled();
 };
+template<class F, class = void> class GenericTimer : public TimerBase {
+public: RCLCPP_SMART_PTR_DEFINITIONS(GenericTimer) };
 template<class F> class WallTimer : public TimerBase { public: RCLCPP_SMART_PTR_DEFINITIONS(WallTimer) };
 class NodeOptions {
 public:
@@ -721,6 +736,48 @@ class UnsupportedEventTypeException : public std::runtime_error {
 public:
   explicit UnsupportedEventTypeException(const std::string& what);
 };
+// rclcpp/create_timer.hpp: a timer on a node (or its interfaces) and a clock
+template<class... A> TimerBase::SharedPtr create_timer(A&&... args);
+template<class... A> TimerBase::SharedPtr create_wall_timer(A&&... args);
+// rclcpp/parameter_value.hpp
+class ParameterTypeException : public std::runtime_error {
+public:
+  ParameterTypeException(ParameterType expected, ParameterType actual);
+};
+// rclcpp/exceptions/exceptions.hpp
+namespace exceptions {
+class RCLErrorBase { public: std::string message; std::string file; size_t line; };
+class RCLError : public RCLErrorBase, public std::runtime_error {
+public: template<class... A> explicit RCLError(A&&... args); };
+class RCLBadAlloc : public RCLErrorBase, public std::bad_alloc {
+public: template<class... A> explicit RCLBadAlloc(A&&... args); };
+class RCLInvalidArgument : public RCLErrorBase, public std::invalid_argument {
+public: template<class... A> explicit RCLInvalidArgument(A&&... args); };
+template<class... A> void throw_from_rcl_error(A&&... args);
+#define HAROS_RCLCPP_EXCEPTION(name, base) \
+  class name : public base { public: template<class... A> explicit name(A&&... args); };
+HAROS_RCLCPP_EXCEPTION(InvalidNodeError, std::runtime_error)
+HAROS_RCLCPP_EXCEPTION(NameValidationError, std::invalid_argument)
+HAROS_RCLCPP_EXCEPTION(InvalidNodeNameError, NameValidationError)
+HAROS_RCLCPP_EXCEPTION(InvalidNamespaceError, NameValidationError)
+HAROS_RCLCPP_EXCEPTION(InvalidTopicNameError, NameValidationError)
+HAROS_RCLCPP_EXCEPTION(InvalidServiceNameError, NameValidationError)
+HAROS_RCLCPP_EXCEPTION(UnimplementedError, std::runtime_error)
+HAROS_RCLCPP_EXCEPTION(InvalidEventError, std::runtime_error)
+HAROS_RCLCPP_EXCEPTION(EventNotRegisteredError, std::runtime_error)
+HAROS_RCLCPP_EXCEPTION(InvalidParametersException, std::runtime_error)
+HAROS_RCLCPP_EXCEPTION(InvalidParameterValueException, std::runtime_error)
+HAROS_RCLCPP_EXCEPTION(InvalidParameterTypeException, std::runtime_error)
+HAROS_RCLCPP_EXCEPTION(UninitializedStaticallyTypedParameterException, std::runtime_error)
+HAROS_RCLCPP_EXCEPTION(ParameterAlreadyDeclaredException, std::runtime_error)
+HAROS_RCLCPP_EXCEPTION(ParameterNotDeclaredException, std::runtime_error)
+HAROS_RCLCPP_EXCEPTION(ParameterImmutableException, std::runtime_error)
+HAROS_RCLCPP_EXCEPTION(ParameterModifiedInCallbackException, std::runtime_error)
+HAROS_RCLCPP_EXCEPTION(ParameterUninitializedException, std::runtime_error)
+HAROS_RCLCPP_EXCEPTION(InvalidQosOverridesException, std::runtime_error)
+HAROS_RCLCPP_EXCEPTION(QoSCheckCompatibleException, std::runtime_error)
+#undef HAROS_RCLCPP_EXCEPTION
+}  // namespace exceptions
 }  // namespace rclcpp
 #define HAROS_RCLCPP_LOG(logger, ...) ::rclcpp::haros::log(logger, __VA_ARGS__)
 #define HAROS_RCLCPP_STREAM(logger, args) do { std::stringstream haros_ss; haros_ss << args; } while (0)

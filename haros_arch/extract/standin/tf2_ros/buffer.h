@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 #include <memory>
+#include <chrono>
 #include <boost/shared_ptr.hpp>
 #include <ros/time.h>
 namespace haros_standin {
@@ -81,6 +82,29 @@ template<class T> void convert(const T& a, T& b);
 template<class A, class B> void convert(const A& a, B& b);
 double getYaw(const Quaternion& q);
 template<class A> double getYaw(const A& a);
+// tf2/time.h
+using Duration = std::chrono::nanoseconds;
+using TimePoint = std::chrono::time_point<std::chrono::system_clock, Duration>;
+Duration durationFromSec(double t_sec);
+TimePoint timeFromSec(double t_sec);
+double durationToSec(const Duration& input);
+double timeToSec(const TimePoint& timepoint);
+std::string displayTimePoint(const TimePoint& stamp);
+// tf2/convert.h: a datum transformed by a transform, both any message or tf2 type
+template<class In, class Out, class T> void doTransform(const In& in, Out& out, const T& transform);
+template<class T> T transformToMsg(const T& t);
+// tf2_geometry_msgs: a covariance in another frame
+template<class C, class T> C transformCovariance(const C& cov_in, const T& transform);
+class BufferCore {
+public:
+  static const int DEFAULT_CACHE_TIME = 10;
+  template<class... A> explicit BufferCore(A&&... args);
+  void clear();
+  std::string allFramesAsString() const;
+  std::string allFramesAsYAML() const;
+  void getFrameStrings(std::vector<std::string>& ids) const;
+  bool _frameExists(const std::string& frame_id_str) const;
+};
 }
 namespace tf2_ros {
 class Buffer {
