@@ -410,3 +410,67 @@ def test_a_vector_parameter_of_an_unresolved_call_is_an_array(tmp_path) -> None:
     result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
     assert [(c.name, c.type) for c in result.calls if c.kind == "declare"] == [
         ("module_list", "str[]")]
+
+
+NAV2_FORMS = """
+#include <rclcpp/rclcpp.hpp>
+#include <rclcpp/create_timer.hpp>
+#include <pluginlib/class_loader.hpp>
+#include <pluginlib/exceptions.hpp>
+#include <ament_index_cpp/get_package_share_directory.hpp>
+#include <tf2/time.hpp>
+#include <tf2/convert.hpp>
+#include <tf2_eigen/tf2_eigen.hpp>
+#include <Eigen/Sparse>
+#include <std_msgs/msg/string.hpp>
+namespace demo {
+class Plugin { public: virtual ~Plugin() = default; virtual void configure() = 0; };
+class Server : public rclcpp::Node {
+public:
+  Server() : rclcpp::Node("server"), loader_("demo", "demo::Plugin") {
+    rclcpp::SubscriptionOptions options;
+    rclcpp::QOSMessageLostCallbackType lost = nullptr;
+    options.event_callbacks.message_lost_callback = lost;
+    sub_ = create_subscription<std_msgs::msg::String>(
+      "in", 10, [](std_msgs::msg::String::SharedPtr) {}, options);
+    timer_ = rclcpp::create_timer(this, get_clock(), rclcpp::Duration::from_seconds(1.0),
+                                  [] {});
+    tf2::Duration timeout = tf2::durationFromSec(0.5);
+    (void)timeout;
+    std::string share = ament_index_cpp::get_package_share_directory("demo");
+    Eigen::ArrayXf costs = Eigen::ArrayXf::Zero(10);
+    Eigen::Ref<const Eigen::MatrixXd> view = Eigen::MatrixXd::Zero(2, 2);
+    std::vector<Eigen::Triplet<double>> triplets;
+    Eigen::SparseMatrix<double> sparse(3, 3);
+    sparse.setFromTriplets(triplets.begin(), triplets.end());
+    try {
+      plugin_ = loader_.createSharedInstance("demo::Impl");
+      plugin_->configure();
+    } catch (const pluginlib::PluginlibException & ex) {
+      throw rclcpp::exceptions::InvalidParameterValueException(ex.what());
+    }
+    pub_ = create_publisher<std_msgs::msg::String>(share + "/out", 10);
+  }
+  pluginlib::ClassLoader<Plugin> loader_;
+  std::shared_ptr<Plugin> plugin_;
+  rclcpp::Subscription<std_msgs::msg::String>::SharedPtr sub_;
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+  rclcpp::TimerBase::SharedPtr timer_;
+};
+}
+"""
+
+
+def test_forms_of_navigation2_servers_parse_without_declared_names(tmp_path) -> None:
+    """pluginlib's ClassLoader, rclcpp::create_timer, the QoS event callback types,
+    rclcpp's exceptions, tf2's Duration, ament_index_cpp, Eigen's arrays, references and
+    sparse matrices: every navigation2 unit and most of Autoware's named one of them,
+    and each was parsed a second time with the names declared permissively."""
+    (tmp_path / "package.xml").write_text(package_xml("demo", "ament_cmake"))
+    source = tmp_path / "server.cpp"
+    source.write_text(NAV2_FORMS)
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    assert [d.message for d in result.diagnostics if d.code in (
+        "CPP_PARSE_ERROR", "CPP_NAMES_DECLARED", "CPP_INCLUDE_MISSING")] == []
+    assert sorted((c.kind, c.name) for c in result.calls) == [
+        ("publish", "?/out"), ("subscribe", "in")]
