@@ -46,6 +46,12 @@ struct SetParametersResult { bool successful; std::string reason; };
 struct ListParametersResult { std::vector<std::string> names; std::vector<std::string> prefixes; };
 struct FloatingPointRange { double from_value, to_value, step; };
 struct IntegerRange { long from_value, to_value, step; };
+struct ParameterType {
+  static constexpr uint8_t PARAMETER_NOT_SET = 0, PARAMETER_BOOL = 1, PARAMETER_INTEGER = 2,
+    PARAMETER_DOUBLE = 3, PARAMETER_STRING = 4, PARAMETER_BYTE_ARRAY = 5,
+    PARAMETER_BOOL_ARRAY = 6, PARAMETER_INTEGER_ARRAY = 7, PARAMETER_DOUBLE_ARRAY = 8,
+    PARAMETER_STRING_ARRAY = 9;
+};
 } }
 namespace rcl_interfaces { namespace msg { struct ParameterEvent; } }
 namespace builtin_interfaces { namespace msg {
@@ -546,6 +552,9 @@ using OnSetParametersCallbackHandle = node_interfaces::OnSetParametersCallbackHa
       add_pre_set_parameters_callback(C callback); \
   template<class C> rclcpp::node_interfaces::PostSetParametersCallbackHandle::SharedPtr \
       add_post_set_parameters_callback(C callback); \
+  template<class H> void remove_on_set_parameters_callback(H handler); \
+  template<class H> void remove_pre_set_parameters_callback(H handler); \
+  template<class H> void remove_post_set_parameters_callback(H handler); \
   rclcpp::node_interfaces::NodeBaseInterface::SharedPtr get_node_base_interface(); \
   rclcpp::node_interfaces::NodeTopicsInterface::SharedPtr get_node_topics_interface(); \
   rclcpp::node_interfaces::NodeParametersInterface::SharedPtr get_node_parameters_interface(); \
@@ -779,6 +788,11 @@ HAROS_RCLCPP_EXCEPTION(QoSCheckCompatibleException, std::runtime_error)
 #undef HAROS_RCLCPP_EXCEPTION
 }  // namespace exceptions
 }  // namespace rclcpp
+// rclcpp/parameter.hpp adds these to std
+namespace std {
+string to_string(const rclcpp::Parameter& param);
+string to_string(const vector<rclcpp::Parameter>& parameters);
+}  // namespace std
 #define HAROS_RCLCPP_LOG(logger, ...) ::rclcpp::haros::log(logger, __VA_ARGS__)
 #define HAROS_RCLCPP_STREAM(logger, args) do { std::stringstream haros_ss; haros_ss << args; } while (0)
 // rclcpp/logging.hpp: every severity with every variant (the real header generates the

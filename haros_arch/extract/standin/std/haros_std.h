@@ -17,6 +17,11 @@ using ::cos; using ::tan; using ::asin; using ::acos; using ::atan; using ::atan
 using ::fabs; using ::floor; using ::ceil; using ::round; using ::trunc; using ::fmod;
 using ::hypot; using ::copysign; using ::fmin; using ::fmax; using ::lround;
 using ::isnan; using ::isinf; using ::isfinite; using ::signal;
+using ::strerror; using ::isalpha; using ::isdigit; using ::isspace; using ::isalnum;
+using ::isupper; using ::islower; using ::ispunct; using ::isxdigit; using ::toupper;
+using ::tolower; using ::hypotf;
+double hypot(double x, double y, double z);
+float hypot(float x, float y, float z);
 typedef decltype(nullptr) nullptr_t;
 float sqrt(float x);
 float fabs(float x);
@@ -199,6 +204,8 @@ public:
   const C& at(size_t i) const;
   C& back();
   C& front();
+  const C& back() const;
+  const C& front() const;
   const C* c_str() const;
   const C* data() const;
   size_t size() const;
@@ -219,6 +226,10 @@ public:
   basic_string& erase(size_t pos = 0, size_t n = npos);
   iterator erase(iterator first, iterator last);
   basic_string& replace(size_t pos, size_t n, const basic_string& s);
+  basic_string& replace(size_t pos, size_t n, const basic_string& s, size_t subpos,
+                        size_t sublen = npos);
+  basic_string& replace(size_t pos, size_t n, const C* s);
+  basic_string& replace(size_t pos, size_t n, size_t count, C c);
   basic_string substr(size_t pos = 0, size_t n = npos) const;
   size_t find(const basic_string& s, size_t pos = 0) const;
   size_t find(const C* s, size_t pos = 0) const;
@@ -524,6 +535,8 @@ template<class It> It min_element(It first, It last);
 template<class It> It max_element(It first, It last);
 template<class It, class T> It remove(It first, It last, const T& v);
 template<class It, class P> It remove_if(It first, It last, P pred);
+template<class It, class T> void replace(It first, It last, const T& old_value, const T& new_value);
+template<class It, class P, class T> void replace_if(It first, It last, P pred, const T& new_value);
 template<class It> It unique(It first, It last);
 template<class It, class P> bool any_of(It first, It last, P pred);
 template<class It, class P> bool all_of(It first, It last, P pred);
@@ -625,6 +638,10 @@ template<class T, class... Args> unique_ptr<T> make_unique(Args&&... args);
 template<class T, class U> shared_ptr<T> static_pointer_cast(const shared_ptr<U>& p) noexcept;
 template<class T, class U> shared_ptr<T> dynamic_pointer_cast(const shared_ptr<U>& p) noexcept;
 template<class T, class U> shared_ptr<T> const_pointer_cast(const shared_ptr<U>& p) noexcept;
+// the atomic access to a shared_ptr (<memory>)
+template<class T> shared_ptr<T> atomic_load(const shared_ptr<T>* p);
+template<class T> void atomic_store(shared_ptr<T>* p, shared_ptr<T> r);
+template<class T> shared_ptr<T> atomic_exchange(shared_ptr<T>* p, shared_ptr<T> r);
 template<class T> class enable_shared_from_this {
 protected:
   enable_shared_from_this() noexcept;
@@ -1119,6 +1136,20 @@ template<class T, class... V> const T& get(const variant<V...>& v);
 template<class T, class... V> T* get_if(variant<V...>* v) noexcept;
 template<class F, class... V> auto visit(F&& f, V&&... v) -> decltype(f(0));
 struct monostate {};
+// <any>
+class bad_any_cast : public bad_cast {};
+class any {
+public:
+  any() noexcept;
+  template<class T> any(T&& value);
+  template<class T> any& operator=(T&& value);
+  bool has_value() const noexcept;
+  void reset() noexcept;
+};
+template<class T> T any_cast(const any& operand);
+template<class T> T any_cast(any& operand);
+template<class T> const T* any_cast(const any* operand) noexcept;
+template<class T> T* any_cast(any* operand) noexcept;
 class random_device { public: random_device(); unsigned int operator()(); };
 template<class U> class haros_engine {
 public:
