@@ -226,6 +226,8 @@ double trunc(double x);
 double fmod(double x, double y);
 double hypot(double x, double y);
 float hypotf(float x, float y);
+double nan(const char* tag);
+float nanf(const char* tag);
 double copysign(double x, double y);
 double fmin(double x, double y);
 double fmax(double x, double y);

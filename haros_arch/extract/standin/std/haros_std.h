@@ -19,7 +19,7 @@ using ::hypot; using ::copysign; using ::fmin; using ::fmax; using ::lround;
 using ::isnan; using ::isinf; using ::isfinite; using ::signal;
 using ::strerror; using ::isalpha; using ::isdigit; using ::isspace; using ::isalnum;
 using ::isupper; using ::islower; using ::ispunct; using ::isxdigit; using ::toupper;
-using ::tolower; using ::hypotf;
+using ::tolower; using ::hypotf; using ::nan; using ::nanf;
 double hypot(double x, double y, double z);
 float hypot(float x, float y, float z);
 typedef decltype(nullptr) nullptr_t;
