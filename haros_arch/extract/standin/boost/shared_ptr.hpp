@@ -23,5 +23,8 @@ template<class T> bool operator!=(const shared_ptr<T>& a, decltype(nullptr));
 template<class T> bool operator==(const shared_ptr<T>& a, long);
 template<class T> bool operator!=(const shared_ptr<T>& a, long);
 template<class T, class... A> shared_ptr<T> make_shared(A&&... args);
+template<class T, class U> shared_ptr<T> static_pointer_cast(const shared_ptr<U>& p);
+template<class T, class U> shared_ptr<T> dynamic_pointer_cast(const shared_ptr<U>& p);
+template<class T, class U> shared_ptr<T> const_pointer_cast(const shared_ptr<U>& p);
 }  // namespace boost
 #endif
