@@ -277,6 +277,12 @@ CATALOGUE: dict[str, Entry] = {
         "handle), and that class's constructor is defined in a source of the other "
         "package: the ROS calls it makes on the node are not read. The node is "
         "'partial', so checks that claim something is absent do not decide on it."),
+    "CPP_NODE_TO_UNKNOWN": Entry(
+        "info", "the node ({given}) is given to {name}, which the parse does not know",
+        "A call passes the node (or its handle or an interface of it) to a function or "
+        "class whose declaration is not in the workspace (a vendor library's helper, such "
+        "as a parameter getter): the ROS calls it makes on the node are not read. The node "
+        "is 'partial', so checks that claim something is absent do not decide on it."),
     "CPP_NAMES_DECLARED": Entry(
         "info", "{count} name(s) unknown to the parse declared permissively ({names}); "
         "clang errors in this unit: {before} before, {after} after",

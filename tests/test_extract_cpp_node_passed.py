@@ -160,3 +160,72 @@ def test_a_ros1_node_handle_given_to_another_packages_constructor(write_tree: An
     assert node.completeness == "partial"
     assert any("driver::Driver of package driver is built with the node (nh)" in r
                for r in node.completeness_reasons), node.completeness_reasons
+
+
+# A vendor library's helper the workspace does not have (Autoware's autoware_utils:
+# ``get_or_declare_parameter<T>(node, name)``) is given the node: what it reads or
+# declares on it is unseen (CPP_NODE_TO_UNKNOWN), the node is partial.
+UNKNOWN_HELPER = """
+    #include <rclcpp/rclcpp.hpp>
+    #include <vendor_utils/parameter.hpp>
+
+    class Checker : public rclcpp::Node {
+     public:
+      Checker() : Node("checker") {
+        rate_ = declare_parameter<double>("rate", 10.0);
+        load(*this);
+      }
+     private:
+      void load(rclcpp::Node & node) {
+        threshold_ = vendor_utils::get_or_declare_parameter<double>(node, "threshold");
+      }
+      double rate_{0.0};
+      double threshold_{0.0};
+    };
+
+    int main(int argc, char ** argv) {
+      rclcpp::init(argc, argv);
+      rclcpp::spin(std::make_shared<Checker>());
+    }
+    """
+
+
+def _checker(write_tree: Any, code: str) -> Any:
+    root = write_tree({
+        "src/check/package.xml": package_xml("check", build_type="ament_cmake"),
+        "src/check/CMakeLists.txt":
+            "project(check)\nadd_executable(checker src/checker.cpp)\n",
+        "src/check/src/checker.cpp": code,
+        "project.yaml": "project: p\nworkspace: [src]\nconfigurations: {}\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {"PATH": os.environ.get("PATH", "")},
+                    Options(cache_dir=None))
+    return next(n for p in model.packages for n in p.nodes if n.name == "check/checker")
+
+
+def test_the_node_given_to_an_undeclared_helper_makes_it_partial(write_tree: Any) -> None:
+    # the helper's error is in a function that calls no ROS API: no name is declared,
+    # the statement that passes the node is read from the text around the error
+    node = _checker(write_tree, UNKNOWN_HELPER)
+    assert node.completeness == "partial"
+    assert any("the node (node) is given to vendor_utils" in r
+               for r in node.completeness_reasons), node.completeness_reasons
+
+
+def test_the_node_given_to_a_name_declared_permissively(write_tree: Any) -> None:
+    # a member of an unknown type (an error in a declaration) gets the unit's unknown names
+    # declared; the helper's call then resolves to a declared name and is said so
+    code = UNKNOWN_HELPER.replace("      double rate_{0.0};\n",
+                                  "      double rate_{0.0};\n      vendor_utils::Logger log_;\n")
+    node = _checker(write_tree, code)
+    assert node.completeness == "partial"
+    assert any("is given to vendor_utils::get_or_declare_parameter<double>" in r
+               for r in node.completeness_reasons), node.completeness_reasons
+
+
+def test_an_undeclared_name_without_the_node_leaves_it_complete(write_tree: Any) -> None:
+    code = UNKNOWN_HELPER.replace(
+        'vendor_utils::get_or_declare_parameter<double>(node, "threshold")',
+        'vendor_utils::clamp(rate_, 0.0)')
+    node = _checker(write_tree, code)
+    assert node.completeness == "complete", node.completeness_reasons

@@ -85,7 +85,7 @@ def cpp_sources(nodes: Sequence[Node], workspace: Workspace) -> list[str]:
 # read or parsed)
 _PARTIAL_CAUSES = {
     "cpp": ("CPP_CALL_MISSED", "CPP_ERROR_NEAR_CALL", "CPP_PARSE_FAILED", "FILE_UNREADABLE",
-            "CPP_NODE_PASSED"),
+            "CPP_NODE_PASSED", "CPP_NODE_TO_UNKNOWN"),
     "python": ("PY_PARSE_ERROR", "PY_TOO_COMPLEX", "FILE_UNREADABLE"),
 }
 _PARTIAL_CODE = {"cpp": "CPP_NODE_PARTIAL", "python": "PY_NODE_PARTIAL"}

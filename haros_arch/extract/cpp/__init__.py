@@ -30,6 +30,7 @@ from ...workspace import Workspace
 from . import cache, links, recall, synthesis, toolchain
 from . import compile_commands as commands
 from .headers import STANDIN, IncludeSetup
+from .owners import node_names
 from .visitor import CallFinder
 
 __all__ = ["CppBatch", "CppResult", "extract_cpp", "extract_cpp_nodes"]
@@ -445,7 +446,8 @@ def _translation_unit(path: str, text: str, ros2: bool,
         result.diagnostics.append(diag.make(
             code, workspace.location(error.path, error.line, error.column),
             detail=error.spelling))
-    finder = CallFinder(tu, source, owned, where, ros2=ros2)
+    finder = CallFinder(tu, source, owned, where, ros2=ros2,
+                        declared=os.path.join(setup.generated, synthesis.HEADER_NAME))
     finder.run()
     result.diagnostics.extend(plugin_loads(path, text, workspace))
     result.calls = sorted(finder.calls, key=lambda c: (
@@ -518,7 +520,49 @@ def _hidden(path: str, errors: list[_Error], finder: CallFinder,
                     "CPP_ERROR_NEAR_CALL", workspace.location(name, error.line, error.column),
                     function=around[2], start=around[0], end=around[1],
                     detail=error.spelling))
+    found.extend(_node_given(errors, finder, source, workspace))
     return found[:recall.MAX_REASONS]
+
+
+def _node_given(errors: list[_Error], finder: CallFinder, source: SourceCache,
+                workspace: Workspace) -> list[Diagnostic]:
+    """The errors on a name the parse does not know in a statement that passes the node
+    to it (``recall.node_given``): ``CPP_NODE_TO_UNKNOWN``, once per line."""
+    found: list[Diagnostic] = []
+    said: set[tuple[str, int]] = set()
+    for error in errors:
+        match = recall.UNKNOWN_NAME.search(error.spelling)
+        if match is None or error.path is None or (error.path, error.line) in said:
+            continue
+        function = _innermost(finder.functions, error.path, error.line)
+        data = source.get(error.path) if function is not None else None
+        if function is None or data is None:
+            continue
+        given = recall.node_given(data.decode("utf-8", "replace"), error.line,
+                                  node_names(function))
+        if given is not None:
+            said.add((error.path, error.line))
+            name = error.spelling[match.end():].split("'", 1)[0]
+            found.append(diag.make(
+                "CPP_NODE_TO_UNKNOWN", workspace.location(error.path, error.line, error.column),
+                given=given, name=name))
+    return found
+
+
+def _innermost(functions: list[Cursor], path: str, line: int) -> Cursor | None:
+    """The function of ``functions`` defined in ``path`` whose lines hold ``line`` and
+    that starts last (a lambda's or a local class's method inside another)."""
+    best: Cursor | None = None
+    best_start = -1
+    for function in functions:
+        extent = function.extent
+        start, end = extent.start, extent.end
+        if start.file is None or start.line > line or end.line < line or (
+            start.line <= best_start
+        ) or os.path.abspath(start.file.name) != path:
+            continue
+        best, best_start = function, start.line
+    return best
 
 
 def _parse(path: str, text: str, setup: IncludeSetup, workspace: Workspace,

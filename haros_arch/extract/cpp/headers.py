@@ -30,6 +30,10 @@ resolved the way the preprocessor will, and:
   headers define again); not a package whose API the extractor knows by its stand-ins
   (tf2_ros, image_transport, ...: the API tables name its classes).
 
+The workspace's include folders (hundreds on Autoware) reach clang as one header map
+(``header_map``), written before the first parse: an ``#include`` is one look-up in it,
+not one failed ``stat`` per folder; the cache keys list the folders themselves.
+
 With ``system_headers=True`` the stand-ins are left out and only headers that the system
 lacks are synthesised, so the real ROS headers are used.
 """

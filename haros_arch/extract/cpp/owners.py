@@ -85,7 +85,7 @@ def unseen_construction(call: Cursor, owned: Callable[[str], bool]
     if made is None:
         return None
     cls, constructor = made
-    given = [arg for arg in call.get_arguments() if _is_node(arg)]
+    given = node_arguments(call)
     if not given or _code_here(constructor, cls):
         return None
     return cls, given[0]
@@ -112,6 +112,25 @@ def _code_here(constructor: Cursor | None, cls: Cursor) -> bool:
             if constructs and child.is_definition():
                 return True
     return False
+
+
+def node_arguments(call: Cursor) -> list[Cursor]:
+    """The arguments of ``call`` that are the node (``_is_node``)."""
+    return [arg for arg in call.get_arguments() if _is_node(arg)]
+
+
+def node_names(function: Cursor) -> frozenset[str]:
+    """The words by which ``function``'s code names its node: its parameters of a node
+    type (a node, NodeHandle, node interface, or a pointer to one), and ``this`` /
+    ``shared_from_this`` in a method of a class derived from a node."""
+    found = {c.spelling for c in function.get_children() if c.kind == CursorKind.PARM_DECL
+             and c.spelling and _NODE_TYPE.search(c.type.get_canonical().spelling)}
+    parent = function.semantic_parent
+    if function.kind != CursorKind.FUNCTION_DECL and parent is not None and (
+        _derives_from_node(parent, 0)
+    ):
+        found |= {"this", "shared_from_this"}
+    return frozenset(found)
 
 
 def _is_node(arg: Cursor) -> bool:

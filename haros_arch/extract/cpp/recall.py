@@ -12,6 +12,12 @@ with its file:line:
 - an *error near a call*: an error inside a function whose text holds such a call site
   (the call may be extracted with a wrong name or type, or not at all).
 
+A third check is about the node, not a call site: an error that names something the
+parse does not know (an undeclared identifier, a namespace's unknown member or
+template, an unknown type) on a statement that passes the node as an argument
+(``node_given``): the node goes to code nobody reads (a vendor library's parameter
+getter), which may make ROS calls on it.
+
 Errors anywhere else (a vendor type in a function that makes no ROS call, a field of a
 message known only by name) cannot hide a call; they stay information. The files read
 are the unit's own source and the workspace headers it includes that hold an error.
@@ -157,6 +163,37 @@ def holding(line: int, functions: Iterable[Function], sites: Sequence[Site]
         if any(function[0] <= site.line <= function[1] for site in sites):
             return function
     return None
+
+
+# clang's messages for a name it does not know
+UNKNOWN_NAME = re.compile(r"use of undeclared identifier '|no member named '[^']*' in "
+                          r"namespace '|no template named '|unknown type name '")
+STATEMENT_LINES = 6  # how far a statement that starts on an error's line is read
+
+
+def node_given(text: str, line: int, names: Iterable[str]) -> str | None:
+    """Whether the statement of ``text`` that holds ``line`` (1-based; read to its ``;``,
+    at most ``STATEMENT_LINES`` lines) passes one of ``names`` (the words that name the
+    node there: ``owners.node_names``) as an argument: ``f(node, ...)``, ``T x{*this}``,
+    ``g(a, node->get_node_parameters_interface())``, ``h(shared_from_this())``: the
+    argument as written (``*this``), or None."""
+    words = sorted(names)
+    if not words:
+        return None
+    lines = text.split("\n")[line - 1:line - 1 + STATEMENT_LINES]
+    statement = "\n".join(lines)
+    end = statement.find(";")
+    if end >= 0:
+        statement = statement[:end]
+    found = _given(tuple(words)).search(statement)
+    return found.group(1) if found is not None else None
+
+
+@functools.lru_cache(maxsize=256)
+def _given(words: tuple[str, ...]) -> re.Pattern[str]:
+    name = "|".join(re.escape(w) + (r"\(\)" if w == "shared_from_this" else "")
+                    for w in words)
+    return re.compile(r"[({,]\s*([*&]?\s*(?:" + name + r"))\s*(?:[,)}]|->\s*get_node_\w*\(\))")
 
 
 def definitions(tu: TranslationUnit, files: set[str]) -> dict[str, list[Function]]:

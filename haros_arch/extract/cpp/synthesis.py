@@ -35,6 +35,7 @@ MAX_ROUNDS = 1  # rounds of declaring unknown names (0: none; more: probes for w
 FULL_PARSES = 2
 MAX_NAMES = 400  # names declared for one unit
 HEADER_NAME = "haros_synthesised_names.h"
+ANY = "haros_any"  # the permissive class every declared name is or derives from
 
 _IDENT = re.compile(rb"[A-Za-z_]\w*")
 _NAME_AT = re.compile(rb"[A-Za-z_]\w*(?:\s*::\s*(?:template\s+)?[A-Za-z_]\w*)*")

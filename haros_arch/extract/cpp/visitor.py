@@ -23,7 +23,7 @@ from ...diagnostics import Diagnostic
 from ...model.conditions import Condition
 from ...model.location import Location
 from ...model.source import PrimitiveCall
-from . import api, msg_types, parameter_library
+from . import api, msg_types, parameter_library, synthesis
 from .call_sites import CallSites
 from .call_types import CallTypes, factory_made
 from .call_types import callee as callee_of_call
@@ -41,7 +41,13 @@ from .handles import (
 )
 from .links import Fact, argument_facts
 from .members import MemberWrites, member_of
-from .owners import constructed_class, handle_node, owner_of, unseen_construction
+from .owners import (
+    constructed_class,
+    handle_node,
+    node_arguments,
+    owner_of,
+    unseen_construction,
+)
 from .qos import qos as qos_of
 from .tested import Key, TestedCalls
 from .tested import key as key_of
@@ -80,8 +86,12 @@ class CallFinder:
 
     def __init__(self, tu: TranslationUnit, source: dict[str, bytes],
                  owned: Callable[[str], bool], where: Callable[[Cursor], Location],
-                 ros2: bool = False) -> None:
+                 ros2: bool = False, declared: str | None = None) -> None:
         self.tu = tu
+        # the header of the names declared permissively (``synthesis``): a call of one
+        # given the node hands it to code nobody reads (``_to_unknown``)
+        self.declared = declared
+        self._unknown: set[tuple[str, int]] = set()  # the calls said so
         self.source = source
         self.owned = functools.lru_cache(maxsize=None)(owned)  # asked for every cursor
         self.where = where
@@ -169,6 +179,7 @@ class CallFinder:
         for node in function.walk_preorder():
             kind = node.kind
             if kind == CursorKind.CALL_EXPR:
+                self._to_unknown(node)  # in every function, walked or not
                 spelling = node.spelling
                 if spelling in _API_NAMES or spelling in names or (
                     not spelling and _recovered_name(node) in rows
@@ -204,6 +215,7 @@ class CallFinder:
                 self._unresolved(node, conditions, scope)
             if node.kind == CursorKind.CALL_EXPR:
                 self._construction(node)
+                self._to_unknown(node)
             tested.visit(node)
             branches = self.reader.branches(node)
             stack.extend((child, conditions + extra) for child, extra in reversed(branches))
@@ -325,6 +337,35 @@ class CallFinder:
             (self._owner, name) not in self.constructions
         ):
             self.constructions.append((self._owner, name))
+
+    def _to_unknown(self, call: Cursor) -> None:
+        """Say when ``call`` gives the node to a function or class the parse knows only
+        as a name declared permissively (its package is not in the workspace:
+        ``CPP_NODE_TO_UNKNOWN``, the node is partial): what it does with the node is
+        not read."""
+        if self.declared is None:
+            return
+        target = call.referenced
+        where = target.location.file if target is not None else None
+        if where is None or where.name != self.declared:
+            return
+        place = call.location
+        key = (place.file.name if place.file is not None else "", place.offset)
+        if key in self._unknown:
+            return
+        given = node_arguments(call)
+        if given:  # once per place (a conversion of the made object starts there too)
+            self._unknown.add(key)
+            name = call.spelling
+            if not name or name == synthesis.ANY or name.startswith("operator"):
+                # a declared class's construction (its constructor is the permissive
+                # base's) or a call on such an object: the type, else the text
+                name = call.type.spelling
+                if not name or synthesis.ANY in name:
+                    name = "".join(t.spelling for t in itertools.islice(call.get_tokens(), 4))
+            self.diagnostics.append(diag.make(
+                "CPP_NODE_TO_UNKNOWN", self.where(call),
+                given="".join(t.spelling for t in given[0].get_tokens())[:60], name=name))
 
     def _options(self, expr: Cursor,
                  scope: Scope) -> tuple[api.RosFunction, Cursor, Scope] | None:
