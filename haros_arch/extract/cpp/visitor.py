@@ -362,7 +362,9 @@ class CallFinder:
                 # base's) or a call on such an object: the type, else the text
                 name = call.type.spelling
                 if not name or synthesis.ANY in name:
-                    name = "".join(t.spelling for t in itertools.islice(call.get_tokens(), 4))
+                    name = "".join(itertools.takewhile(
+                        lambda word: word not in ("(", "{"),
+                        (t.spelling for t in itertools.islice(call.get_tokens(), 24))))
             self.diagnostics.append(diag.make(
                 "CPP_NODE_TO_UNKNOWN", self.where(call),
                 given="".join(t.spelling for t in given[0].get_tokens())[:60], name=name))
