@@ -477,7 +477,18 @@ def _hidden(path: str, errors: list[_Error], finder: CallFinder,
     near them (nor a call of the same name the parse resolved to another function), and
     the errors inside a function that holds such a site. None in a unit without
     errors: there the parse read every call, and the walk judged each."""
-    errors = [e for e in errors if not _names_fieldless_type(e.spelling, fieldless)]
+    near: dict[str, list[recall.Site]] = {}
+
+    def at_call(error: _Error) -> bool:  # a message's field in a ROS call's arguments
+        data = source.get(error.path) if error.path is not None else None
+        if data is None or error.path is None:
+            return False
+        if error.path not in near:
+            near[error.path] = recall.call_sites(data.decode("utf-8", "replace"))
+        return any(s.line <= error.line <= s.line + recall.NEAR for s in near[error.path])
+
+    errors = [e for e in errors
+              if not _names_fieldless_type(e.spelling, fieldless) or at_call(e)]
     if not errors:
         return []
     files = dict.fromkeys([path, *(e.path for e in errors if e.path is not None)])
@@ -669,11 +680,11 @@ def _hiding(tu: TranslationUnit, errors: list[_Error],
     the unit defines (a declaration: it may make a class invalid, and every call in its
     methods with it), or one inside a function whose text calls the ROS API. Errors
     only inside functions that make no ROS call, and those on fields of messages known
-    only by name (clang reads on past them), are left as they are: declaring the names
+    only by name (clang reads on past them) but in a ROS call's arguments, are left as
+    they are: declaring the names
     they miss would cost a parse and change no call. ``functions`` and ``sites`` hold
     the functions and the call sites of the files already read (the same in every
     parse of the unit)."""
-    errors = [e for e in errors if not _names_fieldless_type(e.spelling, fieldless)]
     files = {e.path for e in errors if e.path is not None} - functions.keys()
     if files:
         found = recall.definitions(tu, files)
@@ -683,13 +694,20 @@ def _hiding(tu: TranslationUnit, errors: list[_Error],
         name, line = error.path, error.line
         if name is None:
             continue
+        if name not in sites:
+            data = source.get(name)
+            sites[name] = recall.call_sites(data.decode("utf-8", "replace")) if data else []
+        if _names_fieldless_type(error.spelling, fieldless):
+            # clang reads on past a field of a message known only by name, except in
+            # the arguments of a ROS call: the call is lost with it
+            # (``declare_parameter(bond::msg::Constants::X, true)``)
+            if any(s.line <= line <= s.line + recall.NEAR for s in sites[name]):
+                kept.append(error)
+            continue
         around = [f for f in functions.get(name, ()) if f[0] <= line <= f[1]]
         if not around:
             kept.append(error)
             continue
-        if name not in sites:
-            data = source.get(name)
-            sites[name] = recall.call_sites(data.decode("utf-8", "replace")) if data else []
         if recall.holding(line, around, sites[name]) is not None:
             kept.append(error)
     return kept

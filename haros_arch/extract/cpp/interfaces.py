@@ -20,7 +20,7 @@ MESSAGE_PACKAGES = frozenset({
     "topic_tools", "gazebo_msgs", "pcl_msgs", "dynamic_reconfigure", "mavros_msgs",
     "builtin_interfaces", "example_interfaces", "rcl_interfaces", "action_msgs",
     "lifecycle_msgs", "unique_identifier_msgs", "tf", "turtlesim", "action_tutorials_interfaces",
-    "statistics_msgs",
+    "statistics_msgs", "bond",
 })
 
 # Definitions for messages that nodes use most, in .msg syntax ("---" splits services).
@@ -47,6 +47,12 @@ WELL_KNOWN: dict[str, str] = {
     "sensor_msgs/CameraInfo": "Header header\nuint32 height\nuint32 width\n"
                               "string distortion_model\nfloat64[] D\nfloat64[9] K\n"
                               "float64[9] R\nfloat64[12] P",
+    # bondcpp's constants: nav2's lifecycle nodes declare the parameter it names
+    "bond/Constants": "float32 DEAD_PUBLISH_PERIOD = 0.05\nfloat32 DEFAULT_CONNECT_TIMEOUT = 10.0\n"
+                      "float32 DEFAULT_HEARTBEAT_TIMEOUT = 4.0\n"
+                      "float32 DEFAULT_DISCONNECT_TIMEOUT = 2.0\n"
+                      "float32 DEFAULT_HEARTBEAT_PERIOD = 1.0\n"
+                      "string DISABLE_HEARTBEAT_TIMEOUT_PARAM=/bond_disable_heartbeat_timeout",
     "std_srvs/Empty": "---",
     "std_srvs/Trigger": "---\nbool success\nstring message",
     "std_srvs/SetBool": "bool data\n---\nbool success\nstring message",
