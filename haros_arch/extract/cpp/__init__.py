@@ -483,9 +483,10 @@ def _hidden(path: str, errors: list[_Error], finder: CallFinder,
         data = source.get(error.path) if error.path is not None else None
         if data is None or error.path is None:
             return False
+        text = data.decode("utf-8", "replace")
         if error.path not in near:
-            near[error.path] = recall.call_sites(data.decode("utf-8", "replace"))
-        return any(s.line <= error.line <= s.line + recall.NEAR for s in near[error.path])
+            near[error.path] = recall.call_sites(text)
+        return recall.in_call(text, near[error.path], error.line)
 
     errors = [e for e in errors
               if not _names_fieldless_type(e.spelling, fieldless) or at_call(e)]
@@ -701,7 +702,9 @@ def _hiding(tu: TranslationUnit, errors: list[_Error],
             # clang reads on past a field of a message known only by name, except in
             # the arguments of a ROS call: the call is lost with it
             # (``declare_parameter(bond::msg::Constants::X, true)``)
-            if any(s.line <= line <= s.line + recall.NEAR for s in sites[name]):
+            data = source.get(name)
+            if data is not None and recall.in_call(data.decode("utf-8", "replace"),
+                                                   sites[name], line):
                 kept.append(error)
             continue
         around = [f for f in functions.get(name, ()) if f[0] <= line <= f[1]]

@@ -165,6 +165,22 @@ def holding(line: int, functions: Iterable[Function], sites: Sequence[Site]
     return None
 
 
+def in_call(text: str, sites: Sequence[Site], line: int) -> bool:
+    """Whether ``line`` is in the statement of one of the call ``sites`` of ``text``: from
+    the site's line to the line of the ``;`` after it (at most ``STATEMENT_LINES``)."""
+    starts = [s.line for s in sites if s.line <= line < s.line + STATEMENT_LINES]
+    if not starts:
+        return False
+    lines = text.split("\n")
+    for start in starts:
+        for number in range(start, min(start + STATEMENT_LINES, len(lines) + 1)):
+            if number == line:
+                return True
+            if ";" in lines[number - 1]:
+                break
+    return False
+
+
 # clang's messages for a name it does not know
 UNKNOWN_NAME = re.compile(r"use of undeclared identifier '|no member named '[^']*' in "
                           r"namespace '|no template named '|unknown type name '")
