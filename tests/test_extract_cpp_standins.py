@@ -474,3 +474,42 @@ def test_forms_of_navigation2_servers_parse_without_declared_names(tmp_path) -> 
         "CPP_PARSE_ERROR", "CPP_NAMES_DECLARED", "CPP_INCLUDE_MISSING")] == []
     assert sorted((c.kind, c.name) for c in result.calls) == [
         ("publish", "?/out"), ("subscribe", "in")]
+
+
+AUTOWARE_POLLING = """
+#include <rclcpp/rclcpp.hpp>
+#include <nav_msgs/msg/odometry.hpp>
+#include <std_msgs/msg/string.hpp>
+#include <autoware_utils/ros/polling_subscriber.hpp>
+#include <autoware_utils_rclcpp/polling_subscriber.hpp>
+class Checker : public rclcpp::Node {
+ public:
+  Checker() : Node("checker") {
+    sub_limit_ = autoware_utils_rclcpp::InterProcessPollingSubscriber<
+      std_msgs::msg::String, autoware_utils_rclcpp::polling_policy::Newest>::create_subscription(
+      this, "~/input/limit", rclcpp::QoS{1}.transient_local());
+  }
+  void tick() { auto odom = sub_odom_.take_data(); (void)odom; }
+ private:
+  autoware_utils::InterProcessPollingSubscriber<nav_msgs::msg::Odometry> sub_odom_{
+    this, "~/input/odometry"};
+  autoware_utils_rclcpp::InterProcessPollingSubscriber<
+    std_msgs::msg::String, autoware_utils_rclcpp::polling_policy::Newest>::SharedPtr sub_limit_;
+};
+"""
+
+
+def test_autoware_polling_subscribers_without_autoware_utils(tmp_path) -> None:
+    """Autoware's nodes subscribe through autoware_utils' InterProcessPollingSubscriber,
+    built as a member with ``this`` or through its static create_subscription; without
+    autoware_utils in the workspace (installed) the fallback stand-in and its API rows
+    give each subscription, its topic and message."""
+    (tmp_path / "package.xml").write_text(package_xml("checker", "ament_cmake"))
+    source = tmp_path / "node.cpp"
+    source.write_text(AUTOWARE_POLLING)
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    assert sorted((c.kind, c.name, c.type) for c in result.calls) == [
+        ("subscribe", "~input/limit", "std_msgs/msg/String"),
+        ("subscribe", "~input/odometry", "nav_msgs/msg/Odometry")]
+    assert not [d for d in result.diagnostics if d.code in (
+        "CPP_PARSE_ERROR", "CPP_INCLUDE_MISSING", "CPP_NAMES_DECLARED", "CPP_NODE_TO_UNKNOWN")]

@@ -329,6 +329,15 @@ _RCLCPP_NODE: dict[str, RosFunction] = {
 RCLCPP_NODES = ("rclcpp::Node", "rclcpp_lifecycle::LifecycleNode")
 # ros2_control: a controller's ``auto_declare<T>(name, default)`` declares the parameter on
 # the controller's node (or reads it, declared already), as declare_parameter does
+# Autoware's polling subscriber (autoware_utils, autoware_utils_rclcpp): built with the
+# node, the topic and a QoS (``sub_{this, "~/input/odometry"}``), or through its static
+# ``create_subscription(this, topic, qos)``; the message is the class's argument
+_POLLING_SUBSCRIBER = RosFunction(
+    "subscribe", type_from=("class",), on_handle=False, name_arg=1, qos_arg=2)
+AUTOWARE: dict[tuple[str, str], RosFunction] = {
+    (f"{scope}::InterProcessPollingSubscriber", name): _POLLING_SUBSCRIBER
+    for scope in ("autoware_utils", "autoware_utils_rclcpp")
+    for name in ("InterProcessPollingSubscriber", "create_subscription")}
 ROS2_CONTROL: dict[tuple[str, str], RosFunction] = {
     ("controller_interface::ControllerInterfaceBase", "auto_declare"):
         _RCLCPP_NODE["declare_parameter"],
@@ -379,7 +388,7 @@ UNRESOLVED_ROS1: dict[str, RosFunction] = {
     name: row for (owner, name), row in ROSCPP.items() if owner == NODE_HANDLE}
 
 ALL: dict[tuple[str, str], RosFunction] = {**ROSCPP, **LIBRARIES, **RCLCPP,
-                                            **RCLCPP_LIBRARIES, **ROS2_CONTROL}
+                                            **RCLCPP_LIBRARIES, **ROS2_CONTROL, **AUTOWARE}
 
 # ``nh.subscribe(ops)`` / ``nh.advertise(ops)``: the call is made there (its handle,
 # location and conditions), with the topic, queue and type of the row that filled ``ops``

@@ -241,6 +241,8 @@ class CallFinder:
         if spec is not None and "class" in spec.type_from:
             callee = callee_of_call(call)
             objects = [c for c in callee.get_children() if c.kind.is_expression()]
+            if not objects and target.is_static_method():  # ``C<M>::create_subscription``
+                return spec, target.semantic_parent
             return spec, record_class(objects[0]) if objects else None
         return spec, None
 
