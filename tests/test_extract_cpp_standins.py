@@ -513,3 +513,25 @@ def test_autoware_polling_subscribers_without_autoware_utils(tmp_path) -> None:
         ("subscribe", "~input/odometry", "nav_msgs/msg/Odometry")]
     assert not [d for d in result.diagnostics if d.code in (
         "CPP_PARSE_ERROR", "CPP_INCLUDE_MISSING", "CPP_NAMES_DECLARED", "CPP_NODE_TO_UNKNOWN")]
+
+
+def test_a_vendor_namespace_s_unknown_names_leave_the_stand_in_s_class(tmp_path) -> None:
+    """Another autoware_utils name the workspace does not have (a debug publisher whose
+    header is missing) gets every ``autoware_utils::`` name of the file declared
+    permissively, but not the polling subscriber the stand-in declares."""
+    (tmp_path / "package.xml").write_text(package_xml("checker", "ament_cmake"))
+    source = tmp_path / "node.cpp"
+    # the unknown name comes first, where the namespace is not declared yet (a header of
+    # the package that names it, included before the polling subscriber's)
+    source.write_text(AUTOWARE_POLLING.replace(
+        "#include <autoware_utils/ros/polling_subscriber.hpp>\n",
+        "#include <autoware_utils/ros/debug_publisher.hpp>\n"
+        "autoware_utils::DebugPublisher * make_debug();\n"
+        "#include <autoware_utils/ros/polling_subscriber.hpp>\n").replace(
+        " private:\n", " private:\n  autoware_utils::DebugPublisher debug_{this, \"~/debug\"};\n"))
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    assert sorted((c.kind, c.name, c.type) for c in result.calls) == [
+        ("subscribe", "~input/limit", "std_msgs/msg/String"),
+        ("subscribe", "~input/odometry", "nav_msgs/msg/Odometry")]
+    assert [d.code for d in result.diagnostics if d.code == "CPP_NODE_TO_UNKNOWN"] == [
+        "CPP_NODE_TO_UNKNOWN"]  # the debug publisher, given the node

@@ -627,7 +627,7 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
     first = mine(tu)
     before = len(first)
     fieldless = _fieldless_packages(setup.diagnostics)
-    names = synthesis.Names(fieldless)
+    names = synthesis.Names(fieldless, _declared_in(tu))
     header = os.path.join(setup.generated, synthesis.HEADER_NAME)
     # the functions of each file, by line, and its API call sites (the same text in
     # every parse of the unit: each file is read once, not once per parse)
@@ -671,6 +671,26 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
         "CPP_NAMES_DECLARED", workspace.location(path), count=names.count,
         names=", ".join(names.first()), before=before, after=len(mine(again))))
     return again
+
+
+def _declared_in(tu: TranslationUnit) -> Callable[[str], frozenset[str]]:
+    """The names ``tu`` declares directly in a top-level namespace, by its name (every
+    block that opens it), each namespace read once."""
+    found: dict[str, frozenset[str]] = {}
+    blocks: dict[str, list[Cursor]] = {}
+
+    def declared(scope: str) -> frozenset[str]:
+        if not blocks:  # the unit's top-level namespaces, one visit
+            blocks[""] = []
+            for block in tu.cursor.get_children():
+                if block.kind == CursorKind.NAMESPACE:
+                    blocks.setdefault(block.spelling, []).append(block)
+        if scope not in found:
+            found[scope] = frozenset(child.spelling for block in blocks.get(scope, ())
+                                     for child in block.get_children())
+        return found[scope]
+
+    return declared
 
 
 def _hiding(tu: TranslationUnit, errors: list[_Error],

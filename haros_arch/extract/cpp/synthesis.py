@@ -20,7 +20,7 @@ little and cost a parse each, so the default is one round.
 from __future__ import annotations
 
 import re
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
 
 from . import interfaces, msg_types
@@ -127,10 +127,14 @@ class _Name:
 class Names:
     """The unknown names of one translation unit, collected over the rounds."""
 
-    def __init__(self, packages: Iterable[str] = ()) -> None:
+    def __init__(self, packages: Iterable[str] = (),
+                 declared: Callable[[str], frozenset[str]] | None = None) -> None:
         """``packages``: those whose messages are known only by name (any package's
-        ``pkg::msg::Name`` and ``*_msgs::Name`` count as well)."""
+        ``pkg::msg::Name`` and ``*_msgs::Name`` count as well). ``declared``: the names
+        the parse already has in a top-level namespace (a stand-in's class in a vendor
+        namespace whose other names are unknown), never declared again."""
         self.packages = frozenset(packages)
+        self.declared = declared
         self.root = _Name(known=True)
         self.members: set[str] = set()
         # record -> the members the code uses on it: the fields of messages known only
@@ -182,9 +186,13 @@ class Names:
                 continue
             self._spread_done.update((id(text), name) for name in todo)
             words = b"|".join(re.escape(name.encode()) for name in sorted(todo, key=len)[::-1])
-            for found in re.finditer(rb"(?<![\w:.>])(?:" + words + rb")\s*::", text):
+            for found in re.finditer(rb"(?<![\w:.>])(" + words + rb")\s*::\s*(\w*)", text):
                 if self.count >= MAX_NAMES:
                     return
+                if self.declared is not None and found.group(2).decode() in self.declared(
+                    found.group(1).decode()
+                ):
+                    continue  # the stand-ins have it (autoware_utils' polling subscriber)
                 self._from_source(text, found.start(), "any", [])
 
     def read_members(self, texts: Iterable[bytes]) -> None:

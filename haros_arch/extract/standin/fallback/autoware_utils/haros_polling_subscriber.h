@@ -2,6 +2,9 @@
 // autoware_utils_rclcpp spell the same class), for workspaces that have the library
 // installed, not as sources: declarations only. Building one (or its static
 // create_subscription) subscribes the node to the topic (an API row of the extractor).
+// The node is any pointer (the library takes an rclcpp::Node *): a node class that the
+// first parse of a unit finds invalid must not make the subscriber's construction an
+// error, whose name would then be declared permissively over this class.
 #ifndef HAROS_STANDIN_AUTOWARE_POLLING_SUBSCRIBER_H
 #define HAROS_STANDIN_AUTOWARE_POLLING_SUBSCRIBER_H
 #include <memory>
@@ -21,9 +24,11 @@
   class InterProcessPollingSubscriber : public PollingPolicy<MessageT> {                    \
    public:                                                                                  \
     using SharedPtr = std::shared_ptr<InterProcessPollingSubscriber<MessageT, PollingPolicy>>; \
-    explicit InterProcessPollingSubscriber(rclcpp::Node* node, const std::string& topic_name, \
+    template<class NodeT>                                                                   \
+    explicit InterProcessPollingSubscriber(NodeT* node, const std::string& topic_name,      \
                                            const rclcpp::QoS& qos = rclcpp::QoS(1));        \
-    static SharedPtr create_subscription(rclcpp::Node* node, const std::string& topic_name,  \
+    template<class NodeT>                                                                   \
+    static SharedPtr create_subscription(NodeT* node, const std::string& topic_name,        \
                                          const rclcpp::QoS& qos = rclcpp::QoS(1));          \
   };
 namespace autoware_utils { HAROS_AUTOWARE_POLLING_SUBSCRIBER }
