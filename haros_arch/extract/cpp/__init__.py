@@ -478,18 +478,8 @@ def _hidden(path: str, errors: list[_Error], finder: CallFinder,
     the errors inside a function that holds such a site. None in a unit without
     errors: there the parse read every call, and the walk judged each."""
     near: dict[str, list[recall.Site]] = {}
-
-    def at_call(error: _Error) -> bool:  # a message's field in a ROS call's arguments
-        data = source.get(error.path) if error.path is not None else None
-        if data is None or error.path is None:
-            return False
-        text = data.decode("utf-8", "replace")
-        if error.path not in near:
-            near[error.path] = recall.call_sites(text)
-        return recall.in_call(text, near[error.path], error.line)
-
-    errors = [e for e in errors
-              if not _names_fieldless_type(e.spelling, fieldless) or at_call(e)]
+    errors = [e for e in errors if not _names_fieldless_type(e.spelling, fieldless)
+              or _in_ros_call(e, source, near)]
     if not errors:
         return []
     files = dict.fromkeys([path, *(e.path for e in errors if e.path is not None)])
@@ -701,9 +691,9 @@ def _hiding(tu: TranslationUnit, errors: list[_Error],
     the unit defines (a declaration: it may make a class invalid, and every call in its
     methods with it), or one inside a function whose text calls the ROS API. Errors
     only inside functions that make no ROS call, and those on fields of messages known
-    only by name (clang reads on past them) but in a ROS call's arguments, are left as
-    they are: declaring the names
-    they miss would cost a parse and change no call. ``functions`` and ``sites`` hold
+    only by name (clang reads on past them) but in a ROS call's arguments
+    (``_in_ros_call``), are left as they are: declaring the names they miss would cost
+    a parse and change no call. ``functions`` and ``sites`` hold
     the functions and the call sites of the files already read (the same in every
     parse of the unit)."""
     files = {e.path for e in errors if e.path is not None} - functions.keys()
@@ -715,25 +705,36 @@ def _hiding(tu: TranslationUnit, errors: list[_Error],
         name, line = error.path, error.line
         if name is None:
             continue
-        if name not in sites:
-            data = source.get(name)
-            sites[name] = recall.call_sites(data.decode("utf-8", "replace")) if data else []
         if _names_fieldless_type(error.spelling, fieldless):
-            # clang reads on past a field of a message known only by name, except in
-            # the arguments of a ROS call: the call is lost with it
-            # (``declare_parameter(bond::msg::Constants::X, true)``)
-            data = source.get(name)
-            if data is not None and recall.in_call(data.decode("utf-8", "replace"),
-                                                   sites[name], line):
+            if _in_ros_call(error, source, sites):
                 kept.append(error)
             continue
         around = [f for f in functions.get(name, ()) if f[0] <= line <= f[1]]
         if not around:
             kept.append(error)
             continue
+        if name not in sites:
+            data = source.get(name)
+            sites[name] = recall.call_sites(data.decode("utf-8", "replace")) if data else []
         if recall.holding(line, around, sites[name]) is not None:
             kept.append(error)
     return kept
+
+
+def _in_ros_call(error: _Error, source: SourceCache,
+                 sites: dict[str, list[recall.Site]]) -> bool:
+    """Whether ``error`` is inside the statement of a ROS API call site of its file
+    (``recall.in_call``; ``sites`` holds each file's, found once). clang reads on past a
+    field of a message known only by name, but not in a call's arguments: the call is
+    lost with it (``declare_parameter(bond::msg::Constants::X, true)``)."""
+    name = error.path
+    data = source.get(name) if name is not None else None
+    if name is None or data is None:
+        return False
+    text = data.decode("utf-8", "replace")
+    if name not in sites:
+        sites[name] = recall.call_sites(text)
+    return recall.in_call(text, sites[name], error.line)
 
 
 def _located(errors: list[_Error],

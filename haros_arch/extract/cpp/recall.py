@@ -165,6 +165,9 @@ def holding(line: int, functions: Iterable[Function], sites: Sequence[Site]
     return None
 
 
+STATEMENT_LINES = 6  # how far a statement is read from the line it starts on
+
+
 def in_call(text: str, sites: Sequence[Site], line: int) -> bool:
     """Whether ``line`` is in the statement of one of the call ``sites`` of ``text``: from
     the site's line to the line of the ``;`` after it (at most ``STATEMENT_LINES``)."""
@@ -184,7 +187,6 @@ def in_call(text: str, sites: Sequence[Site], line: int) -> bool:
 # clang's messages for a name it does not know
 UNKNOWN_NAME = re.compile(r"use of undeclared identifier '|no member named '[^']*' in "
                           r"namespace '|no template named '|unknown type name '")
-STATEMENT_LINES = 6  # how far a statement that starts on an error's line is read
 
 
 def node_given(text: str, line: int, names: Iterable[str]) -> str | None:
