@@ -446,8 +446,10 @@ def _translation_unit(path: str, text: str, ros2: bool,
         result.diagnostics.append(diag.make(
             code, workspace.location(error.path, error.line, error.column),
             detail=error.spelling))
-    finder = CallFinder(tu, source, owned, where, ros2=ros2,
-                        declared=os.path.join(setup.generated, synthesis.HEADER_NAME))
+    # the header of the names declared permissively, when this parse has them
+    declared = os.path.join(setup.generated, synthesis.HEADER_NAME) if any(
+        d.code == "CPP_NAMES_DECLARED" for d in result.diagnostics) else None
+    finder = CallFinder(tu, source, owned, where, ros2=ros2, declared=declared)
     finder.run()
     result.diagnostics.extend(plugin_loads(path, text, workspace))
     result.calls = sorted(finder.calls, key=lambda c: (
