@@ -535,3 +535,33 @@ def test_a_vendor_namespace_s_unknown_names_leave_the_stand_in_s_class(tmp_path)
         ("subscribe", "~input/odometry", "nav_msgs/msg/Odometry")]
     assert [d.code for d in result.diagnostics if d.code == "CPP_NODE_TO_UNKNOWN"] == [
         "CPP_NODE_TO_UNKNOWN"]  # the debug publisher, given the node
+
+
+def test_autoware_get_or_declare_parameter_without_autoware_utils(tmp_path) -> None:
+    """Autoware's nodes declare most parameters through autoware_utils'
+    ``get_or_declare_parameter<T>(node, name)`` (641 calls on universe 0.43); without
+    autoware_utils in the workspace each is a declaration of ``name`` typed ``T`` on the
+    node, and the node is complete."""
+    (tmp_path / "package.xml").write_text(package_xml("checker", "ament_cmake"))
+    source = tmp_path / "node.cpp"
+    source.write_text(
+        "#include <rclcpp/rclcpp.hpp>\n"
+        "#include <autoware_utils/ros/parameter.hpp>\n"
+        "#include <autoware_utils_rclcpp/parameter.hpp>\n"
+        "using autoware_utils::get_or_declare_parameter;\n"
+        "struct Params { double threshold; std::string frame; };\n"
+        "Params load(rclcpp::Node & node) {\n"
+        "  Params p;\n"
+        "  p.threshold = get_or_declare_parameter<double>(node, \"threshold\");\n"
+        "  p.frame = autoware_utils_rclcpp::get_or_declare_parameter<std::string>(\n"
+        "    node, \"frame\");\n"
+        "  return p;\n"
+        "}\n"
+        "class Checker : public rclcpp::Node {\n public:\n"
+        "  Checker() : Node(\"checker\") { params_ = load(*this); }\n"
+        "  Params params_;\n};\n")
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    assert sorted((c.kind, c.name, c.type) for c in result.calls) == [
+        ("declare", "frame", "str"), ("declare", "threshold", "double")]
+    assert not [d for d in result.diagnostics if d.code in (
+        "CPP_PARSE_ERROR", "CPP_INCLUDE_MISSING", "CPP_NAMES_DECLARED", "CPP_NODE_TO_UNKNOWN")]

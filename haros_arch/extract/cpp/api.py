@@ -334,10 +334,16 @@ RCLCPP_NODES = ("rclcpp::Node", "rclcpp_lifecycle::LifecycleNode")
 # ``create_subscription(this, topic, qos)``; the message is the class's argument
 _POLLING_SUBSCRIBER = RosFunction(
     "subscribe", type_from=("class",), on_handle=False, name_arg=1, qos_arg=2)
+# and its ``get_or_declare_parameter<T>(node, name)``: declared (typed T, no default)
+# unless declared already, then read
+_GET_OR_DECLARE = RosFunction(
+    "declare", type_from=("template-value", "result"), on_handle=False, name_arg=1)
 AUTOWARE: dict[tuple[str, str], RosFunction] = {
-    (f"{scope}::InterProcessPollingSubscriber", name): _POLLING_SUBSCRIBER
-    for scope in ("autoware_utils", "autoware_utils_rclcpp")
-    for name in ("InterProcessPollingSubscriber", "create_subscription")}
+    **{(f"{scope}::InterProcessPollingSubscriber", name): _POLLING_SUBSCRIBER
+       for scope in ("autoware_utils", "autoware_utils_rclcpp")
+       for name in ("InterProcessPollingSubscriber", "create_subscription")},
+    **{(scope, "get_or_declare_parameter"): _GET_OR_DECLARE
+       for scope in ("autoware_utils", "autoware_utils_rclcpp")}}
 ROS2_CONTROL: dict[tuple[str, str], RosFunction] = {
     ("controller_interface::ControllerInterfaceBase", "auto_declare"):
         _RCLCPP_NODE["declare_parameter"],
