@@ -482,6 +482,9 @@ def test_a_message_constant_in_a_ros_calls_arguments_costs_the_call(write_tree) 
                          cache_dir=None)
     assert [(c.kind, c.name, c.location.line) for c in result.calls] == [
         ("declare", "?", 6), ("declare", "rate", 7)]
+    # the info names what was declared: the message's constant
+    assert [d.message.split("permissively (")[1].split(")")[0] for d in result.diagnostics
+            if d.code == "CPP_NAMES_DECLARED"] == ["lib_msgs::msg::Limits::SPEED_PARAM"]
 
 
 def test_bond_constants_are_known(write_tree) -> None:

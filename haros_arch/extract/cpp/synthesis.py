@@ -408,6 +408,12 @@ class Names:
                 if not child.known and len(found) < limit:
                     found.append(qualified)
                 stack.append((qualified + "::", child))
+        # then the members declared on messages known only by name (a unit may declare
+        # nothing else: ``Limits::SPEED_PARAM`` in a call's arguments)
+        for record in sorted(self.fields):
+            for member in sorted(self.fields[record]):
+                if len(found) < limit:
+                    found.append(f"{record}::{member}")
         return found
 
     def __bool__(self) -> bool:
