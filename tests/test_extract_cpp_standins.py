@@ -18,6 +18,15 @@ ROOT = os.path.join(os.path.dirname(HERE), "fixtures", "cpp", "ros2_apis")
 SOURCE = os.path.join(ROOT, "src", "api_demo", "src", "map_relay.cpp")
 
 
+def _extract(tmp_path, manifest: str, text: str, name: str = "a.cpp") -> CppResult:
+    """``text`` as the one source (``name``) of the package of ``manifest`` in
+    ``tmp_path``, extracted without a cache."""
+    (tmp_path / "package.xml").write_text(manifest)
+    source = tmp_path / name
+    source.write_text(text)
+    return extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+
+
 @pytest.fixture(scope="module")
 def relay() -> CppResult:
     return extract_cpp([SOURCE], scan([ROOT]), cache_dir=None)
@@ -319,9 +328,8 @@ def test_the_stand_in_prelude_precompiles(std: str | None) -> None:
 def test_every_nodelet_log_macro_parses(tmp_path) -> None:
     """Ouster's nodelets log with NODELET_FATAL_STREAM, NODELET_WARN_COND and the other
     variants of every level; the function around them is read clean."""
-    (tmp_path / "package.xml").write_text(package_xml("p"))
-    source = tmp_path / "a.cpp"
-    source.write_text(
+    result = _extract(
+        tmp_path, package_xml("p"),
         "#include <nodelet/nodelet.h>\n#include <std_msgs/Empty.h>\n"
         "class Driver : public nodelet::Nodelet {\n"
         "  void onInit() override {\n"
@@ -336,7 +344,6 @@ def test_every_nodelet_log_macro_parses(tmp_path) -> None:
         "  }\n"
         "  ros::Publisher pub_;\n"
         "};\n")
-    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
     assert [d.message for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"] == []
     assert [(c.kind, c.name) for c in result.calls] == [("publish", "out")]
 
@@ -344,9 +351,8 @@ def test_every_nodelet_log_macro_parses(tmp_path) -> None:
 def test_limits_mem_fn_rdbuf_and_time_from_nanoseconds_parse(tmp_path) -> None:
     """Forms of ouster-ros' nodelets: ULLONG_MAX, std::mem_fn, a stream's rdbuf(),
     ros::Time::fromNSec."""
-    (tmp_path / "package.xml").write_text(package_xml("p"))
-    source = tmp_path / "a.cpp"
-    source.write_text(
+    result = _extract(
+        tmp_path, package_xml("p"),
         "#include <ros/ros.h>\n#include <climits>\n#include <functional>\n"
         "#include <fstream>\n#include <sstream>\n#include <std_msgs/Empty.h>\n"
         "struct S { int size() const; };\n"
@@ -359,7 +365,6 @@ def test_limits_mem_fn_rdbuf_and_time_from_nanoseconds_parse(tmp_path) -> None:
         "  ros::Publisher p = nh.advertise<std_msgs::Empty>(\"out\", 1);\n"
         "  return static_cast<int>(small);\n"
         "}\n")
-    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
     assert [d.message for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"] == []
     assert [(c.kind, c.name) for c in result.calls] == [("publish", "out")]
 
@@ -382,16 +387,14 @@ def test_a_vector_parameter_is_an_array_of_its_element_type(tmp_path) -> None:
     """``declare_parameter<std::vector<std::string>>("devices")`` declares a string array
     (Autoware's net_monitor, behavior_path_planner's ``slots``), not a string: a launch
     file that sets a list is no type mismatch."""
-    (tmp_path / "package.xml").write_text(package_xml("p", build_type="ament_cmake"))
-    source = tmp_path / "a.cpp"
-    source.write_text(
+    result = _extract(
+        tmp_path, package_xml("p", build_type="ament_cmake"),
         "#include <rclcpp/rclcpp.hpp>\n#include <string>\n#include <vector>\n"
         "class N : public rclcpp::Node {\n public:\n  N() : Node(\"n\") {\n"
         "    auto a = declare_parameter<std::vector<std::string>>(\"devices\");\n"
         "    auto b = declare_parameter(\"gains\", std::vector<double>{1.0});\n"
         "    auto c = declare_parameter<std::vector<int64_t>>(\"ids\", std::vector<int64_t>{});\n"
         "    auto d = declare_parameter<std::string>(\"name\");\n  }\n};\n")
-    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
     assert [(c.name, c.type) for c in result.calls if c.kind == "declare"] == [
         ("devices", "str[]"), ("gains", "double[]"), ("ids", "int[]"), ("name", "str")]
 
@@ -399,15 +402,13 @@ def test_a_vector_parameter_is_an_array_of_its_element_type(tmp_path) -> None:
 def test_a_vector_parameter_of_an_unresolved_call_is_an_array(tmp_path) -> None:
     """A class an error made invalid (Autoware's control_evaluator): its
     ``declare_parameter<std::vector<std::string>>`` is kept by name, typed str[]."""
-    (tmp_path / "package.xml").write_text(package_xml("p", build_type="ament_cmake"))
-    source = tmp_path / "a.cpp"
-    source.write_text(
+    result = _extract(
+        tmp_path, package_xml("p", build_type="ament_cmake"),
         "#include <rclcpp/rclcpp.hpp>\n#include <string>\n#include <vector>\n"
         "class Helper {\n public:\n"
         "  explicit Helper(rclcpp::Node::MissingInterface::SharedPtr node) {\n"
         "    auto m = node->declare_parameter<std::vector<std::string>>(\"module_list\");\n"
         "  }\n};\n")
-    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
     assert [(c.name, c.type) for c in result.calls if c.kind == "declare"] == [
         ("module_list", "str[]")]
 
@@ -466,10 +467,8 @@ def test_forms_of_navigation2_servers_parse_without_declared_names(tmp_path) -> 
     rclcpp's exceptions, tf2's Duration, ament_index_cpp, Eigen's arrays, references and
     sparse matrices: every navigation2 unit and most of Autoware's named one of them,
     and each was parsed a second time with the names declared permissively."""
-    (tmp_path / "package.xml").write_text(package_xml("demo", "ament_cmake"))
-    source = tmp_path / "server.cpp"
-    source.write_text(NAV2_FORMS)
-    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    result = _extract(tmp_path, package_xml("demo", "ament_cmake"), NAV2_FORMS,
+                      name="server.cpp")
     assert [d.message for d in result.diagnostics if d.code in (
         "CPP_PARSE_ERROR", "CPP_NAMES_DECLARED", "CPP_INCLUDE_MISSING")] == []
     assert sorted((c.kind, c.name) for c in result.calls) == [
@@ -504,10 +503,8 @@ def test_autoware_polling_subscribers_without_autoware_utils(tmp_path) -> None:
     built as a member with ``this`` or through its static create_subscription; without
     autoware_utils in the workspace (installed) the fallback stand-in and its API rows
     give each subscription, its topic and message."""
-    (tmp_path / "package.xml").write_text(package_xml("checker", "ament_cmake"))
-    source = tmp_path / "node.cpp"
-    source.write_text(AUTOWARE_POLLING)
-    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    result = _extract(tmp_path, package_xml("checker", "ament_cmake"), AUTOWARE_POLLING,
+                      name="node.cpp")
     assert sorted((c.kind, c.name, c.type) for c in result.calls) == [
         ("subscribe", "~input/limit", "std_msgs/msg/String"),
         ("subscribe", "~input/odometry", "nav_msgs/msg/Odometry")]
@@ -519,17 +516,15 @@ def test_a_vendor_namespace_s_unknown_names_leave_the_stand_in_s_class(tmp_path)
     """Another autoware_utils name the workspace does not have (a debug publisher whose
     header is missing) gets every ``autoware_utils::`` name of the file declared
     permissively, but not the polling subscriber the stand-in declares."""
-    (tmp_path / "package.xml").write_text(package_xml("checker", "ament_cmake"))
-    source = tmp_path / "node.cpp"
     # the unknown name comes first, where the namespace is not declared yet (a header of
     # the package that names it, included before the polling subscriber's)
-    source.write_text(AUTOWARE_POLLING.replace(
+    code = AUTOWARE_POLLING.replace(
         "#include <autoware_utils/ros/polling_subscriber.hpp>\n",
         "#include <autoware_utils/ros/debug_publisher.hpp>\n"
         "autoware_utils::DebugPublisher * make_debug();\n"
         "#include <autoware_utils/ros/polling_subscriber.hpp>\n").replace(
-        " private:\n", " private:\n  autoware_utils::DebugPublisher debug_{this, \"~/debug\"};\n"))
-    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+        " private:\n", " private:\n  autoware_utils::DebugPublisher debug_{this, \"~/debug\"};\n")
+    result = _extract(tmp_path, package_xml("checker", "ament_cmake"), code, name="node.cpp")
     assert sorted((c.kind, c.name, c.type) for c in result.calls) == [
         ("subscribe", "~input/limit", "std_msgs/msg/String"),
         ("subscribe", "~input/odometry", "nav_msgs/msg/Odometry")]
@@ -542,9 +537,8 @@ def test_autoware_get_or_declare_parameter_without_autoware_utils(tmp_path) -> N
     ``get_or_declare_parameter<T>(node, name)`` (641 calls on universe 0.43); without
     autoware_utils in the workspace each is a declaration of ``name`` typed ``T`` on the
     node, and the node is complete."""
-    (tmp_path / "package.xml").write_text(package_xml("checker", "ament_cmake"))
-    source = tmp_path / "node.cpp"
-    source.write_text(
+    result = _extract(
+        tmp_path, package_xml("checker", "ament_cmake"),
         "#include <rclcpp/rclcpp.hpp>\n"
         "#include <autoware_utils/ros/parameter.hpp>\n"
         "#include <autoware_utils_rclcpp/parameter.hpp>\n"
@@ -559,8 +553,7 @@ def test_autoware_get_or_declare_parameter_without_autoware_utils(tmp_path) -> N
         "}\n"
         "class Checker : public rclcpp::Node {\n public:\n"
         "  Checker() : Node(\"checker\") { params_ = load(*this); }\n"
-        "  Params params_;\n};\n")
-    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+        "  Params params_;\n};\n", name="node.cpp")
     assert sorted((c.kind, c.name, c.type) for c in result.calls) == [
         ("declare", "frame", "str"), ("declare", "threshold", "double")]
     assert not [d for d in result.diagnostics if d.code in (

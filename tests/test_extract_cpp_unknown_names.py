@@ -13,6 +13,7 @@ from haros_arch.extract.cpp import CppResult, extract_cpp, synthesis
 from haros_arch.manifest import ros_version
 from haros_arch.model.source import Dependency, Node, Package
 from haros_arch.workspace import scan
+from tests.conftest import package_xml
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.join(os.path.dirname(HERE), "fixtures", "cpp", "unknown_names")
@@ -461,25 +462,27 @@ def test_a_namespace_the_code_defines_is_not_spread() -> None:
     assert "planning" not in header and "PlannerNode" not in header
 
 
+def _server(write_tree, source: str) -> CppResult:
+    """``source`` as ``server.cpp`` of a ROS 2 package alone in a workspace, extracted."""
+    root = write_tree({"pkg/package.xml": package_xml("pkg", "ament_cmake"),
+                       "pkg/src/server.cpp": source})
+    return extract_cpp([str(root / "pkg" / "src" / "server.cpp")], scan([str(root)]),
+                       cache_dir=None)
+
+
 def test_a_message_constant_in_a_ros_calls_arguments_costs_the_call(write_tree) -> None:
     """clang reads on past a field of a message known only by name, but not in a call's
     arguments: the call is lost with it (navigation2's lifecycle nodes declare
     ``bond::msg::Constants::DISABLE_HEARTBEAT_TIMEOUT_PARAM``), so the unit's names are
     declared and the call comes back, named ``?``."""
-    from tests.conftest import package_xml
-
-    root = write_tree({
-        "pkg/package.xml": package_xml("pkg", "ament_cmake"),
-        "pkg/src/server.cpp":
-            "#include <rclcpp/rclcpp.hpp>\n#include <lib_msgs/msg/limits.hpp>\n"
-            "class Server : public rclcpp::Node {\n public:\n"
-            "  Server() : Node(\"server\") {\n"
-            "    declare_parameter(lib_msgs::msg::Limits::SPEED_PARAM, 2.0);\n"
-            "    rate_ = declare_parameter<double>(\"rate\", 10.0);\n  }\n"
-            "  double rate_;\n};\n",
-    })
-    result = extract_cpp([str(root / "pkg" / "src" / "server.cpp")], scan([str(root)]),
-                         cache_dir=None)
+    result = _server(
+        write_tree,
+        "#include <rclcpp/rclcpp.hpp>\n#include <lib_msgs/msg/limits.hpp>\n"
+        "class Server : public rclcpp::Node {\n public:\n"
+        "  Server() : Node(\"server\") {\n"
+        "    declare_parameter(lib_msgs::msg::Limits::SPEED_PARAM, 2.0);\n"
+        "    rate_ = declare_parameter<double>(\"rate\", 10.0);\n  }\n"
+        "  double rate_;\n};\n")
     assert [(c.kind, c.name, c.location.line) for c in result.calls] == [
         ("declare", "?", 6), ("declare", "rate", 7)]
     # the info names what was declared: the message's constant
@@ -489,19 +492,13 @@ def test_a_message_constant_in_a_ros_calls_arguments_costs_the_call(write_tree) 
 
 def test_bond_constants_are_known(write_tree) -> None:
     """bondcpp's message of constants is known without its package in the workspace."""
-    from tests.conftest import package_xml
-
-    root = write_tree({
-        "pkg/package.xml": package_xml("pkg", "ament_cmake"),
-        "pkg/src/server.cpp":
-            "#include <rclcpp/rclcpp.hpp>\n#include <bond/msg/constants.hpp>\n"
-            "class Server : public rclcpp::Node {\n public:\n"
-            "  Server() : Node(\"server\") {\n"
-            "    declare_parameter(bond::msg::Constants::DISABLE_HEARTBEAT_TIMEOUT_PARAM, true);\n"
-            "  }\n};\n",
-    })
-    result = extract_cpp([str(root / "pkg" / "src" / "server.cpp")], scan([str(root)]),
-                         cache_dir=None)
+    result = _server(
+        write_tree,
+        "#include <rclcpp/rclcpp.hpp>\n#include <bond/msg/constants.hpp>\n"
+        "class Server : public rclcpp::Node {\n public:\n"
+        "  Server() : Node(\"server\") {\n"
+        "    declare_parameter(bond::msg::Constants::DISABLE_HEARTBEAT_TIMEOUT_PARAM, true);\n"
+        "  }\n};\n")
     # declared as rosidl declares a string constant (its value is in the library)
     assert [(c.kind, c.name) for c in result.calls] == [("declare", "?")]
     assert not [d for d in result.diagnostics if d.code in (
