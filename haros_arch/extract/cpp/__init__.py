@@ -505,10 +505,10 @@ def _hidden(path: str, errors: list[_Error], finder: CallFinder,
     wrappers = sorted(n for n in finder.wrappers.site_names if n)
     found: list[Diagnostic] = []
     for name in files:
-        data = source.get(name)
-        if data is None:
+        text = source.text(name)
+        if text is None:
             continue
-        sites = recall.call_sites(data.decode("utf-8", "replace"), wrappers)
+        sites = recall.call_sites(text, wrappers)
         if not sites:
             continue
         relative = workspace.relpath(name)
@@ -539,11 +539,10 @@ def _node_given(errors: list[_Error], finder: CallFinder, source: SourceCache,
         if match is None or error.path is None or (error.path, error.line) in said:
             continue
         function = _innermost(finder.functions, error.path, error.line)
-        data = source.get(error.path) if function is not None else None
-        if function is None or data is None:
+        lines = source.lines(error.path) if function is not None else None
+        if function is None or lines is None:
             continue
-        given = recall.node_given(data.decode("utf-8", "replace"), error.line,
-                                  node_names(function))
+        given = recall.node_given(lines, error.line, node_names(function))
         if given is not None:
             said.add((error.path, error.line))
             name = error.spelling[match.end():].split("'", 1)[0]
@@ -716,8 +715,8 @@ def _hiding(tu: TranslationUnit, errors: list[_Error],
             kept.append(error)
             continue
         if name not in sites:
-            data = source.get(name)
-            sites[name] = recall.call_sites(data.decode("utf-8", "replace")) if data else []
+            text = source.text(name)
+            sites[name] = recall.call_sites(text) if text else []
         if recall.holding(line, around, sites[name]) is not None:
             kept.append(error)
     return kept
@@ -730,13 +729,12 @@ def _in_ros_call(error: _Error, source: SourceCache,
     field of a message known only by name, but not in a call's arguments: the call is
     lost with it (``declare_parameter(bond::msg::Constants::X, true)``)."""
     name = error.path
-    data = source.get(name) if name is not None else None
-    if name is None or data is None:
+    lines = source.lines(name) if name is not None else None
+    if name is None or lines is None:
         return False
-    text = data.decode("utf-8", "replace")
     if name not in sites:
-        sites[name] = recall.call_sites(text)
-    return recall.in_call(text, sites[name], error.line)
+        sites[name] = recall.call_sites(source.text(name) or "")
+    return recall.in_call(lines, sites[name], error.line)
 
 
 def _located(errors: list[_Error],
@@ -751,6 +749,22 @@ class SourceCache(dict[str, bytes]):
     def __init__(self, root: str, initial: dict[str, bytes]) -> None:
         super().__init__(initial)
         self.root = root
+        self._texts: dict[str, str | None] = {}
+        self._lines: dict[str, list[str] | None] = {}
+
+    def text(self, name: str) -> str | None:
+        """The file's text (decoded once: each error of a file asks for it)."""
+        if name not in self._texts:
+            data = self.get(name)
+            self._texts[name] = data.decode("utf-8", "replace") if data is not None else None
+        return self._texts[name]
+
+    def lines(self, name: str) -> list[str] | None:
+        """The file's lines (split once)."""
+        if name not in self._lines:
+            text = self.text(name)
+            self._lines[name] = text.split("\n") if text is not None else None
+        return self._lines[name]
 
     def get(self, name: str, default: bytes | None = None) -> bytes | None:  # type: ignore[override]
         name = os.path.abspath(name)

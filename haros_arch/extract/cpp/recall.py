@@ -168,20 +168,22 @@ def holding(line: int, functions: Iterable[Function], sites: Sequence[Site]
 STATEMENT_LINES = 6  # how far a statement is read from the line it starts on
 
 
-def in_call(text: str, sites: Sequence[Site], line: int) -> bool:
-    """Whether ``line`` is in the statement of one of the call ``sites`` of ``text``: from
-    the site's line to the line of the ``;`` after it (at most ``STATEMENT_LINES``)."""
-    starts = [s.line for s in sites if s.line <= line < s.line + STATEMENT_LINES]
-    if not starts:
-        return False
-    lines = text.split("\n")
-    for start in starts:
-        for number in range(start, min(start + STATEMENT_LINES, len(lines) + 1)):
-            if number == line:
-                return True
-            if ";" in lines[number - 1]:
-                break
-    return False
+def _statement(lines: Sequence[str], start: int) -> list[str]:
+    """The lines of the statement that starts on line ``start`` (1-based) of ``lines``:
+    to the one that holds its ``;``, at most ``STATEMENT_LINES``."""
+    found: list[str] = []
+    for text in lines[start - 1:start - 1 + STATEMENT_LINES]:
+        found.append(text)
+        if ";" in text:
+            break
+    return found
+
+
+def in_call(lines: Sequence[str], sites: Sequence[Site], line: int) -> bool:
+    """Whether ``line`` is in the statement (``_statement``) of one of the call ``sites``
+    of the file of ``lines``."""
+    return any(s.line <= line < s.line + len(_statement(lines, s.line)) for s in sites
+               if s.line <= line < s.line + STATEMENT_LINES)
 
 
 # clang's messages for a name it does not know
@@ -189,17 +191,16 @@ UNKNOWN_NAME = re.compile(r"use of undeclared identifier '|no member named '[^']
                           r"namespace '|no template named '|unknown type name '")
 
 
-def node_given(text: str, line: int, names: Iterable[str]) -> str | None:
-    """Whether the statement of ``text`` that holds ``line`` (1-based; read to its ``;``,
-    at most ``STATEMENT_LINES`` lines) passes one of ``names`` (the words that name the
-    node there: ``owners.node_names``) as an argument: ``f(node, ...)``, ``T x{*this}``,
+def node_given(lines: Sequence[str], line: int, names: Iterable[str]) -> str | None:
+    """Whether the statement of the file of ``lines`` that starts on ``line`` (read to
+    its ``;``: ``_statement``) passes one of ``names`` (the words that name the node
+    there: ``owners.node_names``) as an argument: ``f(node, ...)``, ``T x{*this}``,
     ``g(a, node->get_node_parameters_interface())``, ``h(shared_from_this())``: the
     argument as written (``*this``), or None."""
     words = sorted(names)
     if not words:
         return None
-    lines = text.split("\n")[line - 1:line - 1 + STATEMENT_LINES]
-    statement = "\n".join(lines)
+    statement = "\n".join(_statement(lines, line))
     end = statement.find(";")
     if end >= 0:
         statement = statement[:end]
