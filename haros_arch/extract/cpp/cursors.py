@@ -20,6 +20,7 @@ from __future__ import annotations
 import ctypes
 import sys
 from collections.abc import Callable, Iterator
+from ctypes import c_uint
 from typing import Any, Generic, TypeVar
 
 from clang.cindex import (
@@ -46,7 +47,11 @@ _BODIES = frozenset({
     CursorKind.DESTRUCTOR, CursorKind.FUNCTION_TEMPLATE, CursorKind.CONVERSION_FUNCTION,
     CursorKind.FIELD_DECL, CursorKind.VAR_DECL, CursorKind.PARM_DECL,
 })
-_BODY: dict[int, bool] = {}  # kind id -> a statement or expression
+_IN_BODY: dict[int, bool] = {}  # kind id -> a statement or expression
+# the same two facts by the four bytes of the kind id in a cursor (``_alone``)
+_BODY: dict[bytes, bool] = {}
+_DECLARES: dict[bytes, bool] = {}
+_KIND_OF: dict[bytes, CursorKind] = {}
 _NONE = bytes(8)
 _PARENT = slice(16, 24)  # data[1] of a CXCursor: kind, xdata (4 bytes each), data[3]
 
@@ -87,9 +92,11 @@ class _Unit:
         found = self.nodes.get(raw)
         if found is None:
             found = Node.from_buffer_copy(raw)
-            found._tu = self.tu
-            found._unit = self
-            found.kind = _kind(found._kind_id)
+            kind = _KIND_OF.get(raw[:4])
+            if kind is None:
+                kind = _KIND_OF[raw[:4]] = _kind(found._kind_id)
+            facts = found.__dict__  # the instance's own attributes, set directly
+            facts["_tu"], facts["_unit"], facts["kind"] = self.tu, self, kind
             self.nodes[raw] = found
         return found
 
@@ -126,19 +133,25 @@ def _alone(raw: bytes, parent: bytes) -> bytes:
     other ``data[0]`` are equal (``clang_equalCursors``) to different cursors, so the
     bytes are made those of a visit of the parent alone: the parent's declaration when
     it is one, else none."""
-    kind = int.from_bytes(raw[:4], sys.byteorder, signed=True)
-    if not _in_body(kind):
+    body = _BODY.get(raw[:4])
+    if body is None:
+        body = _BODY[raw[:4]] = _in_body(int.from_bytes(raw[:4], sys.byteorder, signed=True))
+    if not body:
         return raw
-    if _declares(int.from_bytes(parent[:4], sys.byteorder, signed=True)):
+    declares = _DECLARES.get(parent[:4])
+    if declares is None:
+        declares = _DECLARES[parent[:4]] = _declares(
+            int.from_bytes(parent[:4], sys.byteorder, signed=True))
+    if declares:
         return raw  # the parent's declaration in both visits
     return raw[:8] + _NONE + raw[16:]
 
 
 def _in_body(kind: int) -> bool:
-    found = _BODY.get(kind)
+    found = _IN_BODY.get(kind)
     if found is None:
         cursor_kind = _kind(kind)
-        found = _BODY[kind] = bool(cursor_kind.is_statement() or cursor_kind.is_expression())
+        found = _IN_BODY[kind] = bool(cursor_kind.is_statement() or cursor_kind.is_expression())
     return found
 
 
@@ -217,9 +230,21 @@ class _Place(SourceLocation):
 
     _unit: _Unit
 
+    def _get_instantiation(self) -> tuple[_File | None, int, int, int]:
+        """What ``SourceLocation`` asks libclang once, with the file told by its handle
+        (no ``File`` made each time)."""
+        if self._data is None:
+            handle, line, column, offset = c_object_p(), c_uint(), c_uint(), c_uint()
+            conf.lib.clang_getInstantiationLocation(
+                self, ctypes.byref(handle), ctypes.byref(line), ctypes.byref(column),
+                ctypes.byref(offset))
+            self._data = (self._unit.handle(ctypes.cast(handle, ctypes.c_void_p).value, handle),
+                          line.value, column.value, offset.value)
+        return self._data  # type: ignore[no-any-return]
+
     @cached
     def file(self) -> _File | None:
-        return self._unit.file(SourceLocation.file.fget(self))
+        return self._get_instantiation()[0]
 
 
 def _place(location: SourceLocation, unit: _Unit) -> _Place:
@@ -286,12 +311,13 @@ class Node(Cursor):
         alone = {own: own}  # the bytes of the visit -> those of a visit of the parent
 
         def visit(child: Cursor, parent: Cursor, _data: object) -> int:
-            key = alone.get(bytes(parent))
+            above = bytes(parent)
+            key = alone.get(above)
             if key is None:  # not met before its children: cannot happen in preorder
                 twice.add(own)
                 return 0  # CXChildVisit_Break
             real = bytes(child)
-            raw = _alone(real, bytes(parent))
+            raw = _alone(real, above)
             if raw in lists:
                 twice.add(raw)
             else:

@@ -140,6 +140,7 @@ class CallFinder:
         for function in self.functions:
             if self._gives(function):
                 self._function(function)
+        self.wrappers.preorder.clear()
         for read, member in self._stored:  # the member's one write is this read
             if self.members.writes(member) == 1:
                 read.variable = member.spelling
@@ -176,7 +177,8 @@ class CallFinder:
         the function's nodes without the conditions (``_function`` walks no others);
         a function without one adds nothing, and its walk is left out."""
         names, rows = self.wrappers.names, self._unresolved_rows()
-        for node in function.walk_preorder():
+        nodes = self.wrappers.preorder.get(id(function))
+        for node in function.walk_preorder() if nodes is None else nodes:
             kind = node.kind
             if kind == CursorKind.CALL_EXPR:
                 self._to_unknown(node)  # in every function, walked or not

@@ -28,7 +28,7 @@ import dataclasses
 import re
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from clang.cindex import Cursor, CursorKind, TypeKind, conf
 
@@ -115,6 +115,9 @@ class Wrappers:
         # unresolved call's text need not show, an operator)
         self._summarised: set[bytes] | None = set()
         self._opaque: dict[str, list[int]] = {}  # file -> offsets of macro expansions
+        # id of each function of the unit -> its calls and unexposed expressions in
+        # preorder (``_scan``), for ``CallFinder._gives``
+        self.preorder: dict[int, list[Cursor]] = {}
 
     # -- building -----------------------------------------------------------------------
 
@@ -136,9 +139,13 @@ class Wrappers:
             offsets.sort()
         found: dict[Key, list[Cursor]] = {}
         todo = [f for f in finder.functions if f.kind != CursorKind.FIELD_DECL]
+        top = {id(f) for f in todo}
         while todo:
             function = todo.pop()
-            inner, lambdas = _scan(function)
+            every: list[Cursor] | None = None
+            if id(function) in top:
+                every = self.preorder[id(function)] = []
+            inner, lambdas = _scan(function, every)
             found[_key(function.canonical)] = inner
             todo += lambdas
             functions += [lam for lam in lambdas if _parameters(lam)]
@@ -907,20 +914,42 @@ def _bind(parts: Parts, bound: dict[str, Parts]) -> Parts:
     return tuple(found)
 
 
-def _scan(function: Cursor) -> tuple[list[Cursor], list[Cursor]]:
+_LAMBDA_END = object()  # in ``_scan``'s stack: the walk leaves a lambda's body
+
+
+def _scan(function: Cursor, every: list[Cursor] | None = None
+          ) -> tuple[list[Cursor], list[Cursor]]:
     """The calls in ``function``'s body, in order, and the lambdas it makes; not the
     calls inside those (a lambda's body runs when it is called, not where it is
-    written): one walk of the body."""
+    written): one walk of the body. With ``every``, the walk goes into the lambdas'
+    bodies too and puts in it every call and unexposed expression of the function's
+    whole subtree, in the order of ``walk_preorder`` (what ``CallFinder._gives`` reads:
+    the function's nodes are then walked once for both)."""
     calls: list[Cursor] = []
     lambdas: list[Cursor] = []
-    stack = list(reversed(list(function.get_children())))
+    stack: list[Any] = list(reversed(list(function.get_children())))
+    inside = 0  # lambdas the walk is in (with ``every``)
     while stack:
         node = stack.pop()
-        if node.kind == CursorKind.LAMBDA_EXPR:
-            lambdas.append(node)
+        if node is _LAMBDA_END:
+            inside -= 1
             continue
-        if node.kind == CursorKind.CALL_EXPR:
-            calls.append(node)
+        kind = node.kind
+        if kind == CursorKind.CALL_EXPR:
+            if not inside:
+                calls.append(node)
+            if every is not None:
+                every.append(node)
+        elif kind == CursorKind.UNEXPOSED_EXPR:
+            if every is not None:
+                every.append(node)
+        elif kind == CursorKind.LAMBDA_EXPR:
+            if not inside:
+                lambdas.append(node)
+            if every is None:
+                continue
+            inside += 1
+            stack.append(_LAMBDA_END)
         stack.extend(reversed(list(node.get_children())))
     return calls, lambdas
 
