@@ -63,3 +63,64 @@ def test_defaults_of_the_constructor(camera: CppResult) -> None:
         ("publish", "camera_node/info", "std_msgs/msg/String", 1, "camera.cpp", 15),
     ]
     assert camera.rosname == "camera_node"
+
+
+ROS2_MANIFEST = """<package format="3"><name>twist_relay</name><version>0.0.0</version>
+<description>d</description><maintainer email="a@b.c">m</maintainer><license>MIT</license>
+<depend>rclcpp</depend><depend>geometry_msgs</depend>
+<export><build_type>ament_cmake</build_type></export></package>
+"""
+
+# turtlebot3_node's TwistSubscriber: a class (not a template) whose constructors are
+# templates over the callbacks, built with std::make_unique
+TWIST_SUBSCRIBER = """
+#include <memory>
+#include <string>
+#include <rclcpp/rclcpp.hpp>
+#include <geometry_msgs/msg/twist.hpp>
+#include <geometry_msgs/msg/twist_stamped.hpp>
+
+class TwistSubscriber {
+public:
+  template<typename TwistCallbackT, typename StampedCallbackT>
+  TwistSubscriber(const rclcpp::Node::SharedPtr & node, const std::string & topic,
+                  const rclcpp::QoS & qos, TwistCallbackT && twist_cb,
+                  StampedCallbackT && stamped_cb) {
+    if (stamped_) {
+      stamped_sub_ = node->create_subscription<geometry_msgs::msg::TwistStamped>(
+        topic, qos, std::forward<StampedCallbackT>(stamped_cb));
+    } else {
+      twist_sub_ = node->create_subscription<geometry_msgs::msg::Twist>(
+        topic, qos, std::forward<TwistCallbackT>(twist_cb));
+    }
+  }
+private:
+  bool stamped_{false};
+  rclcpp::Subscription<geometry_msgs::msg::Twist>::SharedPtr twist_sub_;
+  rclcpp::Subscription<geometry_msgs::msg::TwistStamped>::SharedPtr stamped_sub_;
+};
+
+int main(int argc, char ** argv) {
+  rclcpp::init(argc, argv);
+  auto node = std::make_shared<rclcpp::Node>("relay");
+  auto sub = std::make_unique<TwistSubscriber>(
+    node, "cmd_vel", rclcpp::QoS(10),
+    [](const geometry_msgs::msg::Twist::SharedPtr) {},
+    [](const geometry_msgs::msg::TwistStamped::SharedPtr) {});
+  rclcpp::spin(node);
+  return 0;
+}
+"""
+
+
+def test_a_constructor_template_built_by_make_unique_names_its_calls(tmp_path) -> None:
+    """``std::make_unique<T>(node, "cmd_vel", ...)`` where T's constructor is a template:
+    the constructor's ``topic`` is the string the construction passes (it was unknown:
+    only a constructor that is not a template was looked for)."""
+    (tmp_path / "package.xml").write_text(ROS2_MANIFEST)
+    source = tmp_path / "relay.cpp"
+    source.write_text(TWIST_SUBSCRIBER)
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    found = sorted((c.kind, c.name, c.type) for c in result.calls if c.kind == "subscribe")
+    assert found == [("subscribe", "cmd_vel", "geometry_msgs/msg/Twist"),
+                     ("subscribe", "cmd_vel", "geometry_msgs/msg/TwistStamped")]

@@ -195,8 +195,12 @@ def callee_of(call: Cursor) -> Cursor | None:
         return None
     decl = ctype.get_template_argument_type(0).get_canonical().get_declaration()
     count = len(written_arguments(call))
+    # a constructor, or a constructor template (``template<class F> T(node, topic, F cb)``)
     found = [c for c in decl.get_children()
-             if c.kind == CursorKind.CONSTRUCTOR and _takes(c, count)]
+             if (c.kind == CursorKind.CONSTRUCTOR or (
+                 c.kind == CursorKind.FUNCTION_TEMPLATE
+                 and c.spelling.split("<")[0] == decl.spelling.split("<")[0]))
+             and _takes(c, count)]
     return found[0] if len(found) == 1 else None
 
 
