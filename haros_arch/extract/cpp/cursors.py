@@ -229,6 +229,7 @@ class _Place(SourceLocation):
     """A source location whose file is the unit's one ``_File``."""
 
     _unit: _Unit
+    _data: tuple[_File | None, int, int, int] | None = None
 
     def _get_instantiation(self) -> tuple[_File | None, int, int, int]:
         """What ``SourceLocation`` asks libclang once, with the file told by its handle
@@ -240,7 +241,7 @@ class _Place(SourceLocation):
                 ctypes.byref(offset))
             self._data = (self._unit.handle(ctypes.cast(handle, ctypes.c_void_p).value, handle),
                           line.value, column.value, offset.value)
-        return self._data  # type: ignore[no-any-return]
+        return self._data
 
     @cached
     def file(self) -> _File | None:
