@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import bisect
 import dataclasses
+import itertools
 import re
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
@@ -115,6 +116,8 @@ class Wrappers:
         # unresolved call's text need not show, an operator)
         self._summarised: set[bytes] | None = set()
         self._opaque: dict[str, list[int]] = {}  # file -> offsets of macro expansions
+        # constructor -> the argument list of the constructor it delegates to (``build``)
+        self._delegations: dict[Key, list[Cursor]] = {}
         # id of each function of the unit -> its calls and unexposed expressions in
         # preorder (``_scan``), for ``CallFinder._gives``
         self.preorder: dict[int, list[Cursor]] = {}
@@ -138,6 +141,12 @@ class Wrappers:
         for offsets in self._opaque.values():
             offsets.sort()
         found: dict[Key, list[Cursor]] = {}
+        # a class template's constructor that delegates to another with arguments that
+        # depend on a template parameter (nav2's SimpleActionServer<ActionT>(NodeT node,
+        # name, ...) : SimpleActionServer(node->get_node_base_interface(), ..., name)):
+        # clang keeps no call of the constructor, only the argument list
+        self._delegations = {_key(f.canonical): [d] for f in finder.functions
+                             if (d := _delegation(f)) is not None}
         todo = [f for f in finder.functions if f.kind != CursorKind.FIELD_DECL]
         top = {id(f) for f in todo}
         while todo:
@@ -165,11 +174,16 @@ class Wrappers:
                 for call in calls[key]:
                     if self._summarise(function, key, call):
                         changed.add(key)
+                for delegation in self._delegations.get(key, ()):
+                    if self._delegate(function, key, delegation):
+                        changed.add(key)
             if not changed:
                 break
             # the functions that call one that changed are read again
             todo = [f for f in functions if any(
-                self._calls_one_of(call, changed) for call in calls[_key(f.canonical)])]
+                self._calls_one_of(call, changed) for call in calls[_key(f.canonical)])
+                or any(k in changed for d in self._delegations.get(_key(f.canonical), ())
+                       for k in self._delegated(f, d))]
         # a recursive function is no wrapper, nor is one made through it; a class
         # template's constructor is one only where the construction gives the type (its
         # other calls stay in it, named by what its callers pass: call_sites, links)
@@ -278,6 +292,44 @@ class Wrappers:
             if not any(lifted.same(w) for w in found):
                 found.append(lifted)
                 added = True
+        return added
+
+    def _delegated(self, function: Cursor, delegation: Cursor) -> list[Key]:
+        """The wrapper constructors of ``function``'s class a delegation may call (by
+        the number and kind of its arguments)."""
+        parent = function.semantic_parent
+        args = [c for c in delegation.get_children() if c.kind.is_expression()]
+        return [_key(c.canonical) for c in (parent.get_children() if parent else ())
+                if _is_constructor(c) and c.kind in (CursorKind.CONSTRUCTOR,
+                                                     CursorKind.FUNCTION_TEMPLATE)
+                and _key(c.canonical) != _key(function.canonical)
+                and _key(c.canonical) in self.summaries and _fits(c, args)]
+
+    def _delegate(self, function: Cursor, key: Key, delegation: Cursor) -> bool:
+        """``_summarise`` for the constructor ``function`` delegates to: its wrappers,
+        in terms of ``function``'s parameters. The type of a row typed by the
+        construction's template argument stays so: the class is the same."""
+        args = [c for c in delegation.get_children() if c.kind.is_expression()]
+        added = False
+        for callee in self._delegated(function, delegation):
+            for wrapper in self.summaries.get(callee, ()):
+                if key in wrapper.through:
+                    self._recursive.add(key)
+                    return False
+                lifted = self._lift(function, wrapper, delegation, args, None)
+                if lifted is None:
+                    continue
+                row = lifted.row
+                for source in ("template", "template-value"):
+                    if source in wrapper.row.type_from and source not in row.type_from:
+                        row = dataclasses.replace(row, type_from=(*row.type_from, source))
+                lifted = dataclasses.replace(lifted, row=row)
+                found = self.summaries.setdefault(key, [])
+                if self._summarised is not None:
+                    self._summarised.add(function.spelling.split("<")[0].encode())
+                if not any(lifted.same(w) for w in found):
+                    found.append(lifted)
+                    added = True
         return added
 
     def _unnamed(self, call: Cursor) -> bool:
@@ -568,6 +620,10 @@ class Wrappers:
             start = len(finder.calls)
             finder._emit(row, call, args, None, conditions, named)
             for made in finder.calls[start:]:
+                if made.type is None and row.kind not in ("read", "write", "declare"):
+                    # typed by a template parameter the call site does not fix (a
+                    # class template's own ``create_action_server<ActionT>``): unknown
+                    made.type = "?"
                 if wrapper.namespace:
                     if not finder.ros2 and not made.name.startswith(("/", "~")):
                         made.handle_namespace = wrapper.namespace  # remapped first (ROS 1)
@@ -649,6 +705,12 @@ def _name_shape(expr: Cursor, params: list[Cursor], scope: Scope | None,
     if kind in (CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR):
         decl = expr.referenced
         value = scope.variable(decl) if scope is not None and decl is not None else None
+        if value is None and scope is not None and decl is not None:
+            # a member that this very constructor initialises (``: name_(name)``, a
+            # class template's constructor that keeps its name argument): what it gives
+            initialised = scope.field(decl)
+            if initialised is not None and initialised[1] is scope:
+                value = initialised[0]
         return _name_shape(value, params, scope, depth + 1) if value is not None else None
     operands: list[Cursor] = []
     if kind == CursorKind.CONDITIONAL_OPERATOR:
@@ -836,6 +898,8 @@ def _fits(decl: Cursor, args: list[Cursor]) -> bool:
     variadic = bool(params) and params[-1].type.spelling.endswith("...")
     if variadic:
         params = params[:-1]  # a pack (``R&&... rest``): any number of arguments
+    elif decl.type.kind == TypeKind.FUNCTIONPROTO and decl.type.is_function_variadic():
+        variadic = True  # C's ``...`` (no parameter of its own): any number after them
     required = [p for p in params if not any(c.kind.is_expression() for c in p.get_children())]
     if not len(required) <= len(args) <= (len(args) if variadic else len(params)):
         return False
@@ -846,6 +910,10 @@ def _fits(decl: Cursor, args: list[Cursor]) -> bool:
         given = strip(arg).type.get_canonical()
         if wanted.kind == TypeKind.RECORD and given.kind in _BUILTINS:
             return False
+        if wanted.kind == TypeKind.RECORD and given.kind == TypeKind.RECORD and (
+            msg_types.param_type(wanted) == "str" and msg_types.param_type(given) != "str"
+        ):
+            return False  # a string parameter given another class (a duration)
     return True
 
 
@@ -952,6 +1020,22 @@ def _scan(function: Cursor, every: list[Cursor] | None = None
             stack.append(_LAMBDA_END)
         stack.extend(reversed(list(node.get_children())))
     return calls, lambdas
+
+
+def _delegation(function: Cursor) -> Cursor | None:
+    """The argument list of the constructor a class template's constructor delegates
+    to, when clang kept it as one (its arguments depend on a template parameter): the
+    reference to its own class, then an unexposed expression, among its children."""
+    if not (_is_constructor(function) and _of_class_template(function)):
+        return None
+    own = function.semantic_parent.spelling if function.semantic_parent else None
+    children = list(function.get_children())
+    for first, second in itertools.pairwise(children):
+        if first.kind == CursorKind.TYPE_REF and own and (
+            first.spelling.split("<")[0].split("::")[-1] == own.split("<")[0]
+        ) and second.kind == CursorKind.UNEXPOSED_EXPR:
+            return second
+    return None
 
 
 def _dependent_name(name: str) -> bool:
