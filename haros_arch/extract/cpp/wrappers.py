@@ -620,10 +620,6 @@ class Wrappers:
             start = len(finder.calls)
             finder._emit(row, call, args, None, conditions, named)
             for made in finder.calls[start:]:
-                if made.type is None and row.kind not in ("read", "write", "declare"):
-                    # typed by a template parameter the call site does not fix (a
-                    # class template's own ``create_action_server<ActionT>``): unknown
-                    made.type = "?"
                 if wrapper.namespace:
                     if not finder.ros2 and not made.name.startswith(("/", "~")):
                         made.handle_namespace = wrapper.namespace  # remapped first (ROS 1)
