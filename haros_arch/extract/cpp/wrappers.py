@@ -117,7 +117,7 @@ class Wrappers:
         self._summarised: set[bytes] | None = set()
         self._opaque: dict[str, list[int]] = {}  # file -> offsets of macro expansions
         # constructor -> the argument list of the constructor it delegates to (``build``)
-        self._delegations: dict[Key, list[Cursor]] = {}
+        self._delegations: dict[Key, Cursor] = {}
         # id of each function of the unit -> its calls and unexposed expressions in
         # preorder (``_scan``), for ``CallFinder._gives``
         self.preorder: dict[int, list[Cursor]] = {}
@@ -145,7 +145,7 @@ class Wrappers:
         # depend on a template parameter (nav2's SimpleActionServer<ActionT>(NodeT node,
         # name, ...) : SimpleActionServer(node->get_node_base_interface(), ..., name)):
         # clang keeps no call of the constructor, only the argument list
-        self._delegations = {_key(f.canonical): [d] for f in finder.functions
+        self._delegations = {_key(f.canonical): d for f in finder.functions
                              if (d := _delegation(f)) is not None}
         todo = [f for f in finder.functions if f.kind != CursorKind.FIELD_DECL]
         top = {id(f) for f in todo}
@@ -174,16 +174,17 @@ class Wrappers:
                 for call in calls[key]:
                     if self._summarise(function, key, call):
                         changed.add(key)
-                for delegation in self._delegations.get(key, ()):
-                    if self._delegate(function, key, delegation):
-                        changed.add(key)
+                delegation = self._delegations.get(key)
+                if delegation is not None and self._delegate(function, key, delegation):
+                    changed.add(key)
             if not changed:
                 break
             # the functions that call one that changed are read again
             todo = [f for f in functions if any(
                 self._calls_one_of(call, changed) for call in calls[_key(f.canonical)])
-                or any(k in changed for d in self._delegations.get(_key(f.canonical), ())
-                       for k in self._delegated(f, d))]
+                or (_key(f.canonical) in self._delegations and any(
+                    k in changed for k in self._delegated(f, self._delegations[
+                        _key(f.canonical)])))]
         # a recursive function is no wrapper, nor is one made through it; a class
         # template's constructor is one only where the construction gives the type (its
         # other calls stay in it, named by what its callers pass: call_sites, links)
@@ -281,18 +282,23 @@ class Wrappers:
             lifted = self._lift(function, wrapper, call, args, cls)
             if lifted is None:
                 continue
-            found = self.summaries.setdefault(key, [])
             self._inner[_key(call)] = key
-            spelling = function.spelling.split("<")[0]
-            if self._summarised is not None:
-                if spelling.isidentifier() and not spelling.startswith("operator"):
-                    self._summarised.add(spelling.encode())
-                else:
-                    self._summarised = None
-            if not any(lifted.same(w) for w in found):
-                found.append(lifted)
-                added = True
+            added = self._keep(function, key, lifted) or added
         return added
+
+    def _keep(self, function: Cursor, key: Key, lifted: Wrapper) -> bool:
+        """Add ``lifted`` to the summary of ``function`` (``key``); whether it is new."""
+        found = self.summaries.setdefault(key, [])
+        spelling = function.spelling.split("<")[0]
+        if self._summarised is not None:
+            if spelling.isidentifier() and not spelling.startswith("operator"):
+                self._summarised.add(spelling.encode())
+            else:
+                self._summarised = None
+        if any(lifted.same(w) for w in found):
+            return False
+        found.append(lifted)
+        return True
 
     def _delegated(self, function: Cursor, delegation: Cursor) -> list[Key]:
         """The wrapper constructors of ``function``'s class a delegation may call (by
@@ -323,13 +329,7 @@ class Wrappers:
                 for source in ("template", "template-value"):
                     if source in wrapper.row.type_from and source not in row.type_from:
                         row = dataclasses.replace(row, type_from=(*row.type_from, source))
-                lifted = dataclasses.replace(lifted, row=row)
-                found = self.summaries.setdefault(key, [])
-                if self._summarised is not None:
-                    self._summarised.add(function.spelling.split("<")[0].encode())
-                if not any(lifted.same(w) for w in found):
-                    found.append(lifted)
-                    added = True
+                added = self._keep(function, key, dataclasses.replace(lifted, row=row)) or added
         return added
 
     def _unnamed(self, call: Cursor) -> bool:
