@@ -124,3 +124,62 @@ def test_a_constructor_template_built_by_make_unique_names_its_calls(tmp_path) -
     found = sorted((c.kind, c.name, c.type) for c in result.calls if c.kind == "subscribe")
     assert found == [("subscribe", "cmd_vel", "geometry_msgs/msg/Twist"),
                      ("subscribe", "cmd_vel", "geometry_msgs/msg/TwistStamped")]
+
+
+SUBSCRIBER_HEADER = """
+#pragma once
+#include <string>
+#include <rclcpp/rclcpp.hpp>
+#include <geometry_msgs/msg/twist.hpp>
+
+class VelocityInput {
+public:
+  VelocityInput(const rclcpp::Node::SharedPtr & node, const std::string & topic) {
+    sub_ = node->create_subscription<geometry_msgs::msg::Twist>(
+      topic, 10, [](const geometry_msgs::msg::Twist::SharedPtr) {});
+  }
+private:
+  rclcpp::Subscription<geometry_msgs::msg::Twist>::SharedPtr sub_;
+};
+"""
+
+BUILDS_IT = """
+#include <memory>
+#include "twist_relay/velocity_input.hpp"
+
+std::unique_ptr<VelocityInput> make_input(const rclcpp::Node::SharedPtr & node) {
+  return std::make_unique<VelocityInput>(node, "cmd_vel");
+}
+"""
+
+INCLUDES_IT = """
+#include <memory>
+#include "twist_relay/velocity_input.hpp"
+
+std::unique_ptr<VelocityInput> make_input(const rclcpp::Node::SharedPtr & node);
+
+int main(int argc, char ** argv) {
+  rclcpp::init(argc, argv);
+  auto node = std::make_shared<rclcpp::Node>("relay");
+  auto input = make_input(node);
+  rclcpp::spin(node);
+  return 0;
+}
+"""
+
+
+def test_a_header_constructor_built_in_one_unit_is_named_in_the_others(tmp_path) -> None:
+    """The constructor is defined in a header that both units of the node include; one
+    unit builds it with "cmd_vel", the other only includes it. The other unit's copy of
+    the call is filled with what the first passes (it was a second subscription named
+    '?')."""
+    (tmp_path / "package.xml").write_text(ROS2_MANIFEST)
+    (tmp_path / "include" / "twist_relay").mkdir(parents=True)
+    (tmp_path / "include" / "twist_relay" / "velocity_input.hpp").write_text(
+        SUBSCRIBER_HEADER)
+    (tmp_path / "input.cpp").write_text(BUILDS_IT)
+    (tmp_path / "main.cpp").write_text(INCLUDES_IT)
+    result = extract_cpp([str(tmp_path / "main.cpp"), str(tmp_path / "input.cpp")],
+                         scan([str(tmp_path)]), cache_dir=None)
+    assert [(c.kind, c.name, c.type) for c in result.calls if c.kind == "subscribe"] == [
+        ("subscribe", "cmd_vel", "geometry_msgs/msg/Twist")]

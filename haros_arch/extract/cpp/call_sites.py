@@ -39,8 +39,12 @@ class CallSites:
     MAX_SITES = 16
 
     def __init__(self, functions: list[Cursor], macros: dict[str, str],
-                 source: dict[str, bytes], external: bool = False) -> None:
+                 source: dict[str, bytes], external: bool = False,
+                 main: str | None = None) -> None:
         self.functions = functions
+        # the unit's own source: a function defined in a header is also compiled in
+        # the node's other units, which may hold it with a placeholder (``passing_sites``)
+        self.main = main
         self.macros = macros
         self.source = source
         # a string parameter whose value is not one the file agrees on: a placeholder
@@ -89,9 +93,13 @@ class CallSites:
 
     def passing_sites(self, done: set[tuple[str, int]]
                       ) -> Iterator[tuple[Cursor, Cursor, Cursor]]:
-        """(callee, call, caller) for the calls of functions not defined here and of
-        those given a placeholder, except the functions in ``done``."""
-        defined = {key_of(f.canonical) for f in self.functions}
+        """(callee, call, caller) for the calls of functions not defined here, of those
+        defined in a header (the node's other units that include it and do not call it
+        hold it with a placeholder: turtlebot3's ``TwistSubscriber``, built in one
+        file, its header included by others) and of those given a placeholder, except
+        the functions in ``done``."""
+        defined = {key_of(f.canonical) for f in self.functions
+                   if self.main is None or _defined_in(f) == self.main}
         for key, sites in list(self._sites().items()):
             if key in done or (key in defined and key not in self.marked):
                 continue
@@ -254,6 +262,11 @@ def _takes(constructor: Cursor, count: int) -> bool:
     required = sum(1 for p in params if not any(c.kind.is_expression()
                                                 for c in p.get_children()))
     return required <= count <= len(params)
+
+
+def _defined_in(function: Cursor) -> str | None:
+    where = function.location.file
+    return where.name if where is not None else None
 
 
 def _index_of(function: Cursor, parm: Cursor) -> int | None:

@@ -134,7 +134,7 @@ class CallFinder:
     def run(self) -> None:
         self.functions = list(self._definitions(root(self.tu), top=True))
         self.sites = self.namespaces.sites = CallSites(self.functions, self.macros, self.source,
-                                                       external=True)
+                                                       external=True, main=self.tu.spelling)
         self.wrappers.build()
         self.members = MemberWrites(self.functions, self.source, self.opaque)
         for function in self.functions:
