@@ -327,3 +327,27 @@ def test_a_catalogue_folder_is_read_again_when_a_file_changes(tmp_path) -> None:
     assert load_catalogue(tmp_path) == load_catalogue(tmp_path)  # kept while unchanged
     rule.write_text("id: r\nseverity: info\ntitle: Second\nquery: nodes\n")
     assert [r.title for r in load_catalogue(tmp_path)] == ["Second"]
+
+
+@pytest.mark.parametrize("kinds", [("publish", "subscribe", "topic-type-mismatch"),
+                                   ("server", "client", "service-type-mismatch"),
+                                   ("action-server", "action-client",
+                                    "action-type-mismatch")])
+def test_a_type_not_known_statically_is_no_mismatch(kinds):
+    """A call the parse could not resolve is typed '?': its type is not known, and the
+    type checks do not compare it as a type (they reported 'publishes /t as ?')."""
+    one, other, rule = kinds
+    for unknown in ("?", "pkg/msg/?"):
+        model = configuration({"links": [
+            {"kind": one, "node": "/a", "name": "/t", "type": unknown,
+             "location": {"file": "a/a.cpp", "line": 1}},
+            {"kind": other, "node": "/b", "name": "/t", "type": "std_msgs/msg/String",
+             "location": {"file": "b/b.cpp", "line": 2}}]})
+        assert run_catalogue(model, None, [RULES[rule]]) == []
+    # a known type that differs is still one
+    model = configuration({"links": [
+        {"kind": one, "node": "/a", "name": "/t", "type": "std_msgs/msg/Int32",
+         "location": {"file": "a/a.cpp", "line": 1}},
+        {"kind": other, "node": "/b", "name": "/t", "type": "std_msgs/msg/String",
+         "location": {"file": "b/b.cpp", "line": 2}}]})
+    assert [f.rule for f in run_catalogue(model, None, [RULES[rule]])] == [rule]

@@ -36,6 +36,7 @@ from ..model.runtime import (
     Topic,
 )
 from ..model.source import Dependency, Node, Package, PrimitiveCall
+from ..model.values import UNKNOWN_MARK
 
 
 @dataclass(frozen=True)
@@ -117,9 +118,17 @@ def _wire_type(link: Any) -> str | None:
     return wire_key(link.type)
 
 
+def _known_type(link: Any) -> str | None:
+    """The type when it is known statically: None for no type and for one with the
+    unknown mark (a call the parse could not resolve is typed ``?``), which the type
+    checks must not compare as if it were a type."""
+    found = link.type
+    return found if isinstance(found, str) and found and UNKNOWN_MARK not in found else None
+
+
 VIEWS: dict[type, dict[str, Callable[[Any], Any]]] = {
     # what a ROS 1 connection compares (the md5sum of the definition) where we know it
-    Link: {"is_latched": _is_latched, "wire_type": _wire_type},
+    Link: {"is_latched": _is_latched, "wire_type": _wire_type, "known_type": _known_type},
     Parameter: {"reads": lambda p: p.readers, "writes": lambda p: p.writers},
     # what it runs is known from an interface model (its code is not in the workspace)
     NodeInstance: {"is_modelled": lambda n: n.node is not None and n.node.model is not None},
