@@ -170,6 +170,8 @@ def root_launch_files(files: Sequence[str], workspace: Workspace,
 
     real = {os.path.realpath(f): f for f in files}
     included: set[str] = set()
+    patterns: list[tuple[re.Pattern[str], str]] = []  # (include pattern, its file)
+    fragments: set[str] = set()  # the files that start no node
     for path in files:
         try:
             loaded = load_launch(path, workspace, {}, dict(environment))
@@ -178,6 +180,20 @@ def root_launch_files(files: Sequence[str], workspace: Workspace,
         for other in loaded.files[1:]:  # relative to the workspace root
             key = os.path.realpath(os.path.join(workspace.root, other))
             if key in real and key != os.path.realpath(path):
+                included.add(key)
+        patterns += [(re.compile(p), os.path.realpath(path)) for p in loaded.include_patterns]
+        if not loaded.nodes:
+            fragments.add(os.path.realpath(path))
+    # a file that starts no node and that an include reaches with another value of its
+    # arguments is a fragment of that launch, not a configuration (MoveIt's
+    # ``$(arg pipeline)_planning_pipeline.launch.xml``: the chomp pipeline's file sets
+    # parameters for move_group; alone, every one of them is "set but never read"); one
+    # that starts nodes stays one (turtlebot3_slam's ``turtlebot3_$(arg
+    # slam_methods).launch``: each method's file is what a user checks)
+    for pattern, owner in patterns:
+        for key in fragments - included:
+            if key != owner and (pattern.fullmatch(os.path.abspath(real[key]))
+                                 or pattern.fullmatch(key)):
                 included.add(key)
     roots = [f for f in files if os.path.realpath(f) not in included]
     return roots, [real[k] for k in sorted(included)]

@@ -87,6 +87,45 @@ def test_workspace_gives_one_configuration_per_top_launch_file(ws: Path) -> None
     assert "3 included by others, 3 configurations" in choice.notes[0]
 
 
+def test_a_fragment_an_include_reaches_with_another_argument_is_no_configuration(
+        tmp_path: Path) -> None:
+    """MoveIt's shape: ``planning_pipeline.launch.xml`` includes
+    ``$(arg pipeline)_planning_pipeline.launch.xml`` (default ompl). The chomp file
+    sets parameters for move_group and starts no node: a fragment of that include, not
+    a configuration (alone, each of its parameters was "set but never read"). A file of
+    the same pattern that starts a node stays one, and so does a file of parameters no
+    include can reach."""
+    moveit = tmp_path / "ws" / "src" / "arm_moveit_config"
+    write(moveit / "package.xml", ROS1_PKG.format(name="arm_moveit_config"))
+    write(moveit / "CMakeLists.txt", "project(arm_moveit_config)\n")
+    launch = moveit / "launch"
+    write(launch / "move_group.launch", """\
+        <launch>
+          <arg name="pipeline" default="ompl"/>
+          <node pkg="moveit_ros_move_group" type="move_group" name="move_group"/>
+          <include ns="move_group"
+                   file="$(find arm_moveit_config)/launch/planning_pipeline.launch.xml">
+            <arg name="pipeline" value="$(arg pipeline)"/>
+          </include>
+        </launch>""")
+    write(launch / "planning_pipeline.launch.xml", """\
+        <launch>
+          <arg name="pipeline" default="ompl"/>
+          <include file="$(find arm_moveit_config)/launch/$(arg pipeline)_planning_pipeline.launch.xml"/>
+        </launch>""")
+    for name in ("ompl", "chomp"):
+        write(launch / f"{name}_planning_pipeline.launch.xml", f"""\
+            <launch><param name="planning_plugin" value="{name}/Planner"/></launch>""")
+    write(launch / "demo_planning_pipeline.launch.xml", """\
+        <launch><node pkg="arm_moveit_config" type="demo" name="demo"/></launch>""")
+    write(launch / "tools.launch", """\
+        <launch><param name="tool" value="gripper"/></launch>""")
+    configs = {c.name for c in choose(str(tmp_path / "ws"), environment={}).project.configurations}
+    assert configs == {"arm_moveit_config/move_group",
+                       "arm_moveit_config/demo_planning_pipeline",
+                       "arm_moveit_config/tools"}
+
+
 def test_launch_file_is_the_configuration_and_finds_its_workspace(ws: Path) -> None:
     launch = ws / "src" / "rover" / "launch" / "drive_launch.py"
     assert workspace_of(str(launch)) == str(ws / "src")

@@ -90,6 +90,10 @@ class LaunchModel:
     deleted_params: list[str] = field(default_factory=list)  # <rosparam command="delete">
     machines: dict[str, str] = field(default_factory=dict)  # name -> address
     tree: list[LaunchItem] = field(default_factory=list)  # the files as written
+    # the files an include could name with another value of its arguments, as
+    # regular expressions over absolute paths (``$(arg pipeline)_planning_pipeline.
+    # launch.xml``: MoveIt's chomp pipeline is included when ``pipeline`` is chomp)
+    include_patterns: list[str] = field(default_factory=list)
 
 
 def without_tests(model: LaunchModel) -> LaunchModel:

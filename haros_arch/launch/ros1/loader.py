@@ -11,6 +11,7 @@ loader; where roslaunch refuses a file we report an error and go on.
 from __future__ import annotations
 
 import os
+import re
 from collections.abc import Callable, Mapping
 
 from lxml import etree
@@ -30,6 +31,10 @@ from .substitution import ArgUndefined, Context, SubstitutionError, substitute
 
 Element = etree._Element
 MAX_INCLUDE_DEPTH = 32
+# an include's ``$(arg x)``, and what stands for any value of it (``include_pattern``)
+_ARG_SUBSTITUTION = re.compile(r"\$\(arg\s+[^()\s]+\s*\)")
+_ANY_MARK = "@haros-any-value@"
+_LAUNCH_SUFFIXES = (".launch.xml", ".launch", ".xml")
 MAX_INCLUDES = 2_000
 
 COMMON = ("if", "unless")
@@ -485,6 +490,7 @@ class Ros1Loader:
             scope.item.add(LaunchItem("include", element.get("file", ""), where,
                                       condition=guard))
             return
+        self.include_pattern(element, scope)
         pass_all = self.flag(element, "pass_all_args", scope, False)
         filename = os.path.abspath(path.literal)
         inner = self.ns_clear_params(element, scope, include=filename)
@@ -526,6 +532,32 @@ class Ros1Loader:
         if unused and not inner.pass_all_args:
             self.fail(scope, element, f"unused args ({', '.join(unused)}) for include of "
                                       f"{self.workspace.relpath(filename)}")
+
+    def include_pattern(self, element: Element, scope: Scope) -> None:
+        """What an include's file would be with any value of the arguments it names
+        (each ``$(arg x)`` any text without a ``/``), kept when the file name keeps text
+        of its own besides them and the launch suffix: a file it matches is one this
+        include reaches for some value (an include of ``$(arg file)`` alone names none)."""
+        raw = element.get("file", "")
+        if "$(arg" not in raw:
+            return
+        marked = _ARG_SUBSTITUTION.sub(_ANY_MARK, raw)
+        before = len(self.model.diagnostics)
+        value = self.resolve(marked, scope, element)
+        del self.model.diagnostics[before:]  # said once, by the include itself
+        if value.literal is None or _ANY_MARK not in value.literal:
+            return
+        path = os.path.abspath(value.literal)
+        name = os.path.basename(path)
+        for suffix in _LAUNCH_SUFFIXES:
+            if name.endswith(suffix):
+                name = name[:-len(suffix)]
+                break
+        if not name.replace(_ANY_MARK, ""):
+            return
+        self.model.include_patterns.append(
+            "".join("[^/]*" if part == _ANY_MARK else re.escape(part)
+                    for part in re.split(f"({re.escape(_ANY_MARK)})", path)))
 
     def load_file(self, path: str, scope: Scope, element: Element | None = None,
                   parent: Scope | None = None) -> bool:
