@@ -111,7 +111,8 @@ def test_a_fragment_an_include_reaches_with_another_argument_is_no_configuration
     write(launch / "planning_pipeline.launch.xml", """\
         <launch>
           <arg name="pipeline" default="ompl"/>
-          <include file="$(find arm_moveit_config)/launch/$(arg pipeline)_planning_pipeline.launch.xml"/>
+          <include
+            file="$(find arm_moveit_config)/launch/$(arg pipeline)_planning_pipeline.launch.xml"/>
         </launch>""")
     for name in ("ompl", "chomp"):
         write(launch / f"{name}_planning_pipeline.launch.xml", f"""\
