@@ -92,9 +92,10 @@ def test_a_fragment_an_include_reaches_with_another_argument_is_no_configuration
     """MoveIt's shape: ``planning_pipeline.launch.xml`` includes
     ``$(arg pipeline)_planning_pipeline.launch.xml`` (default ompl). The chomp file
     sets parameters for move_group and starts no node: a fragment of that include, not
-    a configuration (alone, each of its parameters was "set but never read"). A file of
-    the same pattern that starts a node stays one, and so does a file of parameters no
-    include can reach."""
+    a configuration (alone, each of its parameters was "set but never read"), and so is
+    ``sensor_manager.launch.xml``, which an include leaves out unless
+    ``allow_active_sensing``. A file of the same pattern that starts a node stays one,
+    and so does a file of parameters no include can reach."""
     moveit = tmp_path / "ws" / "src" / "arm_moveit_config"
     write(moveit / "package.xml", ROS1_PKG.format(name="arm_moveit_config"))
     write(moveit / "CMakeLists.txt", "project(arm_moveit_config)\n")
@@ -102,12 +103,17 @@ def test_a_fragment_an_include_reaches_with_another_argument_is_no_configuration
     write(launch / "move_group.launch", """\
         <launch>
           <arg name="pipeline" default="ompl"/>
+          <arg name="allow_active_sensing" default="false"/>
           <node pkg="moveit_ros_move_group" type="move_group" name="move_group"/>
           <include ns="move_group"
                    file="$(find arm_moveit_config)/launch/planning_pipeline.launch.xml">
             <arg name="pipeline" value="$(arg pipeline)"/>
           </include>
+          <include ns="move_group" if="$(arg allow_active_sensing)"
+                   file="$(find arm_moveit_config)/launch/sensor_manager.launch.xml"/>
         </launch>""")
+    write(launch / "sensor_manager.launch.xml", """\
+        <launch><param name="octomap_resolution" value="0.02"/></launch>""")
     write(launch / "planning_pipeline.launch.xml", """\
         <launch>
           <arg name="pipeline" default="ompl"/>

@@ -190,10 +190,14 @@ class Ros1Loader:
         with what it would have started."""
         item = scope.item.add(self.raw_item(element, scope))
         item.condition = guard
+        if element.tag == "include":
+            self.include_pattern(element, scope, reached=False)
         if element.tag == "group":
             for inner in element.iter("node", "test", "include"):
                 if inner is not element and len(item.children) < MAX_SKIPPED:
                     item.add(self.raw_item(inner, scope))
+                if inner.tag == "include":
+                    self.include_pattern(inner, scope, reached=False)
 
     def raw_item(self, element: Element, scope: Scope) -> LaunchItem:
         where = self.where(scope, element)
@@ -533,19 +537,22 @@ class Ros1Loader:
             self.fail(scope, element, f"unused args ({', '.join(unused)}) for include of "
                                       f"{self.workspace.relpath(filename)}")
 
-    def include_pattern(self, element: Element, scope: Scope) -> None:
+    def include_pattern(self, element: Element, scope: Scope, reached: bool = True) -> None:
         """What an include's file would be with any value of the arguments it names
         (each ``$(arg x)`` any text without a ``/``), kept when the file name keeps text
         of its own besides them and the launch suffix: a file it matches is one this
-        include reaches for some value (an include of ``$(arg file)`` alone names none)."""
+        include reaches for some value (an include of ``$(arg file)`` alone names none).
+        An include a condition leaves out (not ``reached``) reaches its file with other
+        values of the condition's arguments: kept even when its file names no argument
+        (MoveIt's ``sensor_manager.launch.xml`` if ``allow_active_sensing``)."""
         raw = element.get("file", "")
-        if "$(arg" not in raw:
+        if reached and "$(arg" not in raw:
             return
         marked = _ARG_SUBSTITUTION.sub(_ANY_MARK, raw)
         before = len(self.model.diagnostics)
         value = self.resolve(marked, scope, element)
         del self.model.diagnostics[before:]  # said once, by the include itself
-        if value.literal is None or _ANY_MARK not in value.literal:
+        if value.literal is None or (reached and _ANY_MARK not in value.literal):
             return
         path = os.path.abspath(value.literal)
         name = os.path.basename(path)
