@@ -714,10 +714,7 @@ def _hiding(tu: TranslationUnit, errors: list[_Error],
         if not around:
             kept.append(error)
             continue
-        if name not in sites:
-            text = source.text(name)
-            sites[name] = recall.call_sites(text) if text else []
-        if recall.holding(line, around, sites[name]) is not None:
+        if recall.holding(line, around, _sites(name, source, sites)) is not None:
             kept.append(error)
     return kept
 
@@ -732,9 +729,17 @@ def _in_ros_call(error: _Error, source: SourceCache,
     lines = source.lines(name) if name is not None else None
     if name is None or lines is None:
         return False
+    return recall.in_call(lines, _sites(name, source, sites), error.line)
+
+
+def _sites(name: str, source: SourceCache, sites: dict[str, list[recall.Site]]
+           ) -> list[recall.Site]:
+    """The ROS API call sites of file ``name`` (``recall.call_sites``), found once: kept
+    in ``sites``."""
     if name not in sites:
-        sites[name] = recall.call_sites(source.text(name) or "")
-    return recall.in_call(lines, sites[name], error.line)
+        text = source.text(name)
+        sites[name] = recall.call_sites(text) if text else []
+    return sites[name]
 
 
 def _located(errors: list[_Error],

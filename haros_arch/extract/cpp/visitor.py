@@ -60,6 +60,7 @@ from .values import (
     strip,
     written_arguments,
 )
+from .values import key_of as place_of
 from .wrappers import Wrappers
 
 CONTAINERS = frozenset({
@@ -353,8 +354,7 @@ class CallFinder:
         where = target.location.file if target is not None else None
         if where is None or where.name != self.declared:
             return
-        place = call.location
-        key = (place.file.name if place.file is not None else "", place.offset)
+        key = place_of(call)
         if key in self._unknown:
             return
         given = node_arguments(call)

@@ -47,6 +47,7 @@ from .values import (
     strip,
     written_arguments,
 )
+from .values import key_of as _key  # a cursor's place: its file and offset
 
 if TYPE_CHECKING:
     from .visitor import CallFinder
@@ -1036,9 +1037,3 @@ def _delegation(function: Cursor) -> Cursor | None:
 
 def _dependent_name(name: str) -> bool:
     return "type-parameter" in name
-
-
-def _key(cursor: Cursor) -> Key:
-    where = cursor.location
-    return (where.file.name if where.file else "", where.offset)
-
