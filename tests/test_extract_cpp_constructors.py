@@ -183,3 +183,60 @@ def test_a_header_constructor_built_in_one_unit_is_named_in_the_others(tmp_path)
                          scan([str(tmp_path)]), cache_dir=None)
     assert [(c.kind, c.name, c.type) for c in result.calls if c.kind == "subscribe"] == [
         ("subscribe", "cmd_vel", "geometry_msgs/msg/Twist")]
+
+
+def test_a_header_constructor_no_unit_builds_makes_no_call(tmp_path) -> None:
+    """A node whose file includes the header of a class it never constructs (navigation2's
+    TwistSubscriber and FootprintSubscriber, included by nodes that build neither):
+    the constructor's subscription, named after its parameter, is not the node's. It was
+    a subscription named '?'."""
+    (tmp_path / "package.xml").write_text(ROS2_MANIFEST)
+    (tmp_path / "include" / "twist_relay").mkdir(parents=True)
+    (tmp_path / "include" / "twist_relay" / "velocity_input.hpp").write_text(
+        SUBSCRIBER_HEADER)
+    (tmp_path / "main.cpp").write_text(INCLUDES_IT.replace(
+        "std::unique_ptr<VelocityInput> make_input(const rclcpp::Node::SharedPtr & node);\n",
+        "").replace("  auto input = make_input(node);\n",
+                    '  auto pub = node->create_publisher<geometry_msgs::msg::Twist>("out", 1);\n'))
+    result = extract_cpp([str(tmp_path / "main.cpp")], scan([str(tmp_path)]), cache_dir=None)
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "out")]
+    assert not [d for d in result.diagnostics if d.code == "CPP_DYNAMIC_NAME"]
+
+
+PLUGIN = """
+#include <string>
+#include <rclcpp/rclcpp.hpp>
+#include <geometry_msgs/msg/twist.hpp>
+
+class BasePlanner {
+public:
+  virtual ~BasePlanner() = default;
+  virtual void initialize(const rclcpp::Node::SharedPtr & node, const std::string & name) = 0;
+};
+
+class Planner : public BasePlanner {
+public:
+  Planner() = default;
+  Planner(const rclcpp::Node::SharedPtr & node, const std::string & name) {
+    initialize(node, name);
+  }
+  void initialize(const rclcpp::Node::SharedPtr & node, const std::string & name) override {
+    sub_ = node->create_subscription<geometry_msgs::msg::Twist>(
+      name + "/cmd", 10, [](const geometry_msgs::msg::Twist::SharedPtr) {});
+  }
+private:
+  rclcpp::Subscription<geometry_msgs::msg::Twist>::SharedPtr sub_;
+};
+"""
+
+
+def test_a_method_the_unbuilt_constructor_calls_keeps_its_call(tmp_path) -> None:
+    """ROS 1 navigation's TrajectoryPlannerROS: a plugin built by its default
+    constructor, whose other constructor calls ``initialize(name)``, the virtual method
+    the host calls. Nobody here builds it with a name, but ``initialize`` runs all the same: its
+    subscription stays, with the part of the name nobody here gives unknown."""
+    (tmp_path / "package.xml").write_text(ROS2_MANIFEST)
+    (tmp_path / "planner.cpp").write_text(PLUGIN)
+    result = extract_cpp([str(tmp_path / "planner.cpp")], scan([str(tmp_path)]),
+                         cache_dir=None)
+    assert [(c.kind, c.name) for c in result.calls] == [("subscribe", "?/cmd")]

@@ -109,6 +109,11 @@ class PrimitiveCall:
     # when that is the member's only write in the file; a source condition over the
     # member is then decided per instance by the parameter's value (graph.conditions)
     variable: str | None = field(default=None, metadata={"optional": True})
+    # in one translation unit's calls only (never in a node's): the USR of the
+    # constructor whose body makes this call with a name from its own parameters, which
+    # no call in that unit gives; the node makes it only if one of its files constructs
+    # the class (``extract.cpp.links.resolve``)
+    made_in: str | None = field(default=None, metadata={"optional": True})
 
 
 def wire_call(action: PrimitiveCall, kind: CallKind, name: str, type_: str | None,

@@ -73,13 +73,19 @@ def _value(arg: Cursor, scope: Scope, namespaces: Namespaces) -> str | None:
 
 def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact]
             ) -> tuple[list[PrimitiveCall], list[Diagnostic]]:
-    """The calls with their placeholders filled from ``facts`` (of the same node)."""
+    """The calls with their placeholders filled from ``facts`` (of the same node); a
+    call a constructor makes with a name from its parameters (``made_in``) is left out
+    when no file of the node calls that constructor."""
     passed: dict[str, dict[str, dict[int, str]]] = {}  # USR -> call site -> index -> value
     for usr, index, value, site in facts:
         passed.setdefault(usr, {}).setdefault(site, {})[index] = value
     out: list[PrimitiveCall] = []
     found: list[Diagnostic] = []
     for call in calls:
+        if call.made_in is not None:
+            if call.made_in not in passed:
+                continue  # no file of the node constructs the class: not made
+            call = dataclasses.replace(call, made_in=None)
         if PLACEHOLDER not in call.name and PLACEHOLDER not in (call.handle_namespace or ""):
             out.append(call)
             continue

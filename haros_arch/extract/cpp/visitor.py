@@ -53,6 +53,7 @@ from .tested import Key, TestedCalls
 from .tested import key as key_of
 from .values import (
     PLACEHOLDER,
+    SEPARATOR,
     Scope,
     _may_write,
     initializer,
@@ -61,7 +62,7 @@ from .values import (
     written_arguments,
 )
 from .values import key_of as place_of
-from .wrappers import Wrappers
+from .wrappers import Wrappers, is_constructor, of_class_template
 
 CONTAINERS = frozenset({
     CursorKind.NAMESPACE, CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL,
@@ -116,6 +117,9 @@ class CallFinder:
         # or the free function that makes it (``make_shared<rclcpp::Node>("x")`` in main)
         self.node_names: list[tuple[str, str]] = []
         self._owner: str | None = None  # of the function being walked
+        # the placeholder that starts a parameter of the constructor being walked, whose
+        # calls named after it are made only where the class is constructed (``_emit``)
+        self._constructor: tuple[str, str] | None = None
         # reads that return whether the parameter is there, where they are
         self._status_reads: list[tuple[Key, PrimitiveCall]] = []
         # (owner, class of the workspace it constructs): the class's calls are made on
@@ -200,6 +204,15 @@ class CallFinder:
         # main(argc, argv): its conditions over them are over the program's arguments
         self.reader.in_main = function.spelling == "main" and params[:2] == ["argc", "argv"]
         self._owner = owner_of(function)
+        self._constructor = None
+        # of a class, not a class template: a template's constructions name its
+        # specialisations, which a unit that derives from it may not show
+        if function.kind != CursorKind.FIELD_DECL and is_constructor(function) and (
+            not of_class_template(function)
+        ):
+            usr = function.canonical.get_usr()
+            if usr:
+                self._constructor = (usr, f"{PLACEHOLDER}{usr}{SEPARATOR}")
         tested, self._status_reads = TestedCalls(self.reader), []
         stack: list[tuple[Cursor, tuple[Condition, ...]]] = [
             (child, ()) for child in reversed(list(function.get_children()))
@@ -250,9 +263,20 @@ class CallFinder:
         return spec, None
 
     def _call(self, call: Cursor, conditions: tuple[Condition, ...], scope: Scope) -> None:
-        if self.wrappers.emit(call, conditions, scope):
-            return
+        constructor = self._constructor
         target = call.referenced
+        if constructor is not None and target is not None and (
+            target.kind == CursorKind.CXX_METHOD and target.is_virtual_method()
+        ):
+            # a virtual method the constructor calls (a plugin's ``initialize(name)``)
+            # is also called by code nobody sees here (its host): its calls are made
+            # whether or not the class is constructed with the name
+            self._constructor = None
+        try:
+            if self.wrappers.emit(call, conditions, scope):
+                return
+        finally:
+            self._constructor = constructor
         if target is None:
             self._unresolved(call, conditions, scope)
             return
@@ -516,6 +540,7 @@ class CallFinder:
                 if namespace and not self.ros2 and not _private(written).startswith(
                         ("/", "~")):
                     handle_namespace = namespace
+            made_in = self._made_in(name, handle_namespace)
             self.calls.append(PrimitiveCall(
                 kind=spec.kind, name=name, type=ctype, queue_size=queue, qos=qos,
                 latch=latch, callback=callback_name(function), conditions=conditions,
@@ -524,7 +549,8 @@ class CallFinder:
                 name_default=source[1] if source else None,
                 has_default=has_default, default=default,
                 searched=spec.searched, handle_namespace=handle_namespace,
-                deletes=spec.deletes, node_name=owner, transport=transport))
+                deletes=spec.deletes, node_name=owner, transport=transport,
+                made_in=made_in))
             if status is not None:
                 self._status_reads.append((status, self.calls[-1]))
             member = self._member(spec, call, shift) if len(names) == 1 else None
@@ -548,7 +574,17 @@ class CallFinder:
                 self.calls.append(PrimitiveCall(
                     kind=kind, name=full, type=self.types.ros_type(stype), queue_size=queue,
                     latch=latch, conditions=conditions, location=location,
-                    handle_namespace=sibling_namespace, node_name=owner))
+                    handle_namespace=sibling_namespace, node_name=owner,
+                    made_in=self._made_in(full, sibling_namespace)))
+
+    def _made_in(self, name: str, namespace: str | None) -> str | None:
+        """The USR of the constructor being walked when ``name`` (or the handle's
+        ``namespace``) holds the placeholder of one of its parameters: no call in this
+        unit constructs the class, and the call is made only where one does."""
+        if self._constructor is None:
+            return None
+        usr, mark = self._constructor
+        return usr if mark in name or mark in (namespace or "") else None
 
     def _listener(self, call: Cursor, args: list[Cursor],
                   declared: list[tuple[str, str | None, bool, Any]],

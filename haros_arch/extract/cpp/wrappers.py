@@ -52,7 +52,8 @@ from .values import key_of as _key  # a cursor's place: its file and offset
 if TYPE_CHECKING:
     from .visitor import CallFinder
 
-__all__ = ["DEPENDENT", "MAX_DEPTH", "Wrapper", "Wrappers"]
+__all__ = ["DEPENDENT", "MAX_DEPTH", "Wrapper", "Wrappers", "is_constructor",
+           "of_class_template"]
 
 MAX_DEPTH = 4  # a wrapper of a wrapper ... of an API call
 MAX_OVERLOADS = 8
@@ -133,7 +134,7 @@ class Wrappers:
         # construction's (nav2's ServiceServer<ServiceT>(name, node, callback))
         functions = [f for f in finder.functions if (
             _parameters(f) or _template_parameters(f)) and (
-            f.kind != CursorKind.CONSTRUCTOR or _of_class_template(f))]
+            f.kind != CursorKind.CONSTRUCTOR or of_class_template(f))]
         # each function's calls, and its lambdas: one with parameters may be returned
         # and pass one on as a name (nav2 MPPI's ``getParamGetter(ns)``:
         # ``getParam(x, "name", d)``), so it is summarised like a function
@@ -189,7 +190,7 @@ class Wrappers:
         # a recursive function is no wrapper, nor is one made through it; a class
         # template's constructor is one only where the construction gives the type (its
         # other calls stay in it, named by what its callers pass: call_sites, links)
-        constructors = {_key(f.canonical) for f in functions if _is_constructor(f)}
+        constructors = {_key(f.canonical) for f in functions if is_constructor(f)}
         self.summaries = {
             key: kept for key, found in self.summaries.items() if key not in self._recursive
             and not any(self._recursive & w.through for w in found)
@@ -256,7 +257,7 @@ class Wrappers:
         for child in pattern.get_children():
             key = _key(child.canonical)
             if (child.kind == CursorKind.CONSTRUCTOR or (
-                child.kind == CursorKind.FUNCTION_TEMPLATE and _is_constructor(child)
+                child.kind == CursorKind.FUNCTION_TEMPLATE and is_constructor(child)
             )) and key in self.summaries and _fits(child, args):
                 found.append(key)
         return found
@@ -307,7 +308,7 @@ class Wrappers:
         parent = function.semantic_parent
         args = [c for c in delegation.get_children() if c.kind.is_expression()]
         return [_key(c.canonical) for c in (parent.get_children() if parent else ())
-                if _is_constructor(c) and c.kind in (CursorKind.CONSTRUCTOR,
+                if is_constructor(c) and c.kind in (CursorKind.CONSTRUCTOR,
                                                      CursorKind.FUNCTION_TEMPLATE)
                 and _key(c.canonical) != _key(function.canonical)
                 and _key(c.canonical) in self.summaries and _fits(c, args)]
@@ -534,7 +535,7 @@ class Wrappers:
         fixed in the wrapper."""
         templates = [c for c in function.get_children()
                      if c.kind == CursorKind.TEMPLATE_TYPE_PARAMETER]
-        if _of_class_template(function) and _is_constructor(function):
+        if of_class_template(function) and is_constructor(function):
             # a constructor of a class template: the class's first parameter is what a
             # construction's template argument gives (make_shared<Server<T>>)
             templates = [c for c in function.semantic_parent.get_children()
@@ -757,7 +758,7 @@ def _template_parameter_index(ref: Cursor | None, function: Cursor) -> int | Non
         return None
     where = _key(decl)
     params = _template_parameters(function.semantic_parent) if (
-        _of_class_template(function) and _is_constructor(function)
+        of_class_template(function) and is_constructor(function)
     ) else _template_parameters(function)
     return next((i for i, p in enumerate(params) if _key(p) == where), None)
 
@@ -922,14 +923,14 @@ def _targets(call: Cursor) -> list[Key]:
     return [_key(d.canonical) for d in _overloads(children[0])] if children else []
 
 
-def _is_constructor(function: Cursor) -> bool:
+def is_constructor(function: Cursor) -> bool:
     """A constructor, or a constructor template (``ServiceServer<ServiceT>``)."""
     parent = function.semantic_parent
     return function.kind == CursorKind.CONSTRUCTOR or (
         parent is not None and function.spelling.split("<")[0] == parent.spelling)
 
 
-def _of_class_template(function: Cursor) -> bool:
+def of_class_template(function: Cursor) -> bool:
     parent = function.semantic_parent
     return parent is not None and parent.kind in (
         CursorKind.CLASS_TEMPLATE, CursorKind.CLASS_TEMPLATE_PARTIAL_SPECIALIZATION)
@@ -1023,7 +1024,7 @@ def _delegation(function: Cursor) -> Cursor | None:
     """The argument list of the constructor a class template's constructor delegates
     to, when clang kept it as one (its arguments depend on a template parameter): the
     reference to its own class, then an unexposed expression, among its children."""
-    if not (_is_constructor(function) and _of_class_template(function)):
+    if not (is_constructor(function) and of_class_template(function)):
         return None
     own = function.semantic_parent.spelling if function.semantic_parent else None
     children = list(function.get_children())
