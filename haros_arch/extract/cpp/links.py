@@ -9,7 +9,9 @@ and the parameter's index. Every file records what it passes to those functions
 leaves the argument out), and ``resolve`` fills each node's placeholders with what its
 own files pass, once all of them are read (a file shared by two nodes is filled per
 node). Callers that disagree give one call per value (up to ``MAX_VALUES``); a
-parameter no file of the node passes stays ``?``.
+parameter no file of the node passes stays ``?``, except in a call a constructor makes
+(``PrimitiveCall.made_in``): a class no file of the node constructs makes none of its
+calls there (a header's class the node includes and never builds).
 """
 
 from __future__ import annotations
