@@ -240,3 +240,21 @@ def test_a_method_the_unbuilt_constructor_calls_keeps_its_call(tmp_path) -> None
     result = extract_cpp([str(tmp_path / "planner.cpp")], scan([str(tmp_path)]),
                          cache_dir=None)
     assert [(c.kind, c.name) for c in result.calls] == [("subscribe", "?/cmd")]
+
+
+def test_a_construction_whose_arguments_are_not_read_still_makes_the_calls(tmp_path) -> None:
+    """The unit builds the class with a topic of a type the parse does not know (a
+    vendor helper's): nothing is read from the construction, but the class is built, so
+    its subscription is the node's, named '?'."""
+    (tmp_path / "package.xml").write_text(ROS2_MANIFEST)
+    (tmp_path / "include" / "twist_relay").mkdir(parents=True)
+    (tmp_path / "include" / "twist_relay" / "velocity_input.hpp").write_text(
+        SUBSCRIBER_HEADER)
+    (tmp_path / "input.cpp").write_text(BUILDS_IT.replace(
+        '#include <memory>\n', '#include <memory>\n#include <vendor/topics.hpp>\n').replace(
+        '(node, "cmd_vel")', "(node, vendor::Topics::velocity())"))
+    (tmp_path / "main.cpp").write_text(INCLUDES_IT)
+    result = extract_cpp([str(tmp_path / "main.cpp"), str(tmp_path / "input.cpp")],
+                         scan([str(tmp_path)]), cache_dir=None)
+    assert [(c.kind, c.name, c.type) for c in result.calls if c.kind == "subscribe"] == [
+        ("subscribe", "?", "geometry_msgs/msg/Twist")]

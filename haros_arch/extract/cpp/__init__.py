@@ -164,9 +164,9 @@ def extract_cpp_nodes(nodes: Sequence[Sequence[str]], workspace: Workspace, *,
     batch, results = _batch(nodes, workspace, include_dirs, system_headers, cache_dir, jobs,
                             compile_commands, True)
     for sources in nodes:
-        batch.results.append(_node_result(
-            [(p, results[p]) for p in dict.fromkeys(map(os.path.abspath, sources))
-             if p in results]))
+        paths = list(dict.fromkeys(map(os.path.abspath, sources)))
+        batch.results.append(_node_result([(p, results[p]) for p in paths if p in results],
+                                          all(p in results for p in paths)))
     return batch
 
 
@@ -223,16 +223,24 @@ def _is_ros2(path: str, included: bool, workspace: Workspace) -> bool:
     return included if version is None else version == 2
 
 
-def _node_result(paths_units: list[tuple[str, CppResult]]) -> CppResult:
+# the diagnostics of an error or failure that can drop a statement from a unit's parse
+_HIDING = frozenset({"CPP_PARSE_ERROR", "CPP_MESSAGE_FIELD", "CPP_PARSE_FAILED"})
+
+
+def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True) -> CppResult:
     result = CppResult()
     units = [unit for _, unit in paths_units]
     seen: set[tuple[object, ...]] = set()
     facts = [fact for unit in units for fact in unit.facts]
+    # every construction in the node's files is seen: each of them was read and parsed
+    # and kept no error (which can drop the statement that constructs a class)
+    visible = complete and not any(
+        d.code in _HIDING for unit in units for d in unit.diagnostics)
     for unit in units:
         result.diagnostics.extend(unit.diagnostics)
         if unit.rosname is not None and result.rosname is None:
             result.rosname = links.resolve_name(unit.rosname, facts)
-        calls, found = links.resolve(unit.calls, facts)
+        calls, found = links.resolve(unit.calls, facts, visible)
         result.diagnostics.extend(found)
         for call in calls:
             key = (call.kind, call.name, call.location)

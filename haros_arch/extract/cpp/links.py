@@ -11,7 +11,8 @@ own files pass, once all of them are read (a file shared by two nodes is filled 
 node). Callers that disagree give one call per value (up to ``MAX_VALUES``); a
 parameter no file of the node passes stays ``?``, except in a call a constructor makes
 (``PrimitiveCall.made_in``): a class no file of the node constructs makes none of its
-calls there (a header's class the node includes and never builds).
+calls there (a header's class the node includes and never builds), when the parse of
+its files left no error that could hide a construction.
 """
 
 from __future__ import annotations
@@ -31,6 +32,7 @@ from .handles import Namespaces, is_handle, join_name, normalise
 from .values import PLACEHOLDER, SEPARATOR, Scope, key_of, render
 
 Fact = tuple[str, int, str, str]  # callee USR, parameter index, value passed, call site
+CALLED = -1  # the index of a fact that says only that the call site calls the function
 MAX_VALUES = 8
 MAX_DEPTH = 8
 _MARK = re.compile(f"{PLACEHOLDER}([^{PLACEHOLDER}{SEPARATOR}]*){SEPARATOR}(\\d+){PLACEHOLDER}")
@@ -57,11 +59,14 @@ def argument_facts(sites: CallSites, namespaces: Namespaces,
             at = call.location
             site = f"{at.file.name if at.file else ''}:{at.offset}"
             params = [c for c in callee.get_children() if c.kind == CursorKind.PARM_DECL]
+            given = len(facts)
             for index, parm in enumerate(params):
                 arg = argument(call, parm, index)
                 value = _value(arg, scope, namespaces) if arg is not None else None
                 if value is not None:
                     facts.append((usr, index, value, site))
+            if len(facts) == given:  # called, with nothing read: called all the same
+                facts.append((usr, CALLED, "", site))
     return list(dict.fromkeys(facts))
 
 
@@ -73,19 +78,20 @@ def _value(arg: Cursor, scope: Scope, namespaces: Namespaces) -> str | None:
     return None
 
 
-def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact]
+def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact], seen: bool = False
             ) -> tuple[list[PrimitiveCall], list[Diagnostic]]:
-    """The calls with their placeholders filled from ``facts`` (of the same node); a
-    call a constructor makes with a name from its parameters (``made_in``) is left out
-    when no file of the node calls that constructor."""
-    passed: dict[str, dict[str, dict[int, str]]] = {}  # USR -> call site -> index -> value
-    for usr, index, value, site in facts:
-        passed.setdefault(usr, {}).setdefault(site, {})[index] = value
+    """The calls with their placeholders filled from ``facts`` (of the same node). With
+    ``seen`` (the parse of the node's files left no error that could hide a
+    construction), a call a constructor makes with a name from its parameters
+    (``made_in``) is left out when no file of the node calls that constructor."""
+    facts = list(facts)
+    passed = _passed(facts)
+    called = {fact[0] for fact in facts}
     out: list[PrimitiveCall] = []
     found: list[Diagnostic] = []
     for call in calls:
         if call.made_in is not None:
-            if call.made_in not in passed:
+            if seen and call.made_in not in called:
                 continue  # no file of the node constructs the class: not made
             call = dataclasses.replace(call, made_in=None)
         if PLACEHOLDER not in call.name and PLACEHOLDER not in (call.handle_namespace or ""):
@@ -116,12 +122,18 @@ def resolve_name(name: str, facts: Iterable[Fact]) -> str:
     one value the node's files pass, else ``?`` where they pass none or several."""
     if PLACEHOLDER not in name:
         return name
-    passed: dict[str, dict[str, dict[int, str]]] = {}
-    for usr, index, value, site in facts:
-        passed.setdefault(usr, {}).setdefault(site, {})[index] = value
-    found = _expand(name, passed, 0)
+    found = _expand(name, _passed(facts), 0)
     return found[0] if len(found) == 1 and PLACEHOLDER not in found[0] else (
         _MARK.sub("?", name))
+
+
+def _passed(facts: Iterable[Fact]) -> dict[str, dict[str, dict[int, str]]]:
+    """USR -> call site -> parameter index -> the value passed there."""
+    passed: dict[str, dict[str, dict[int, str]]] = {}
+    for usr, index, value, site in facts:
+        if index != CALLED:
+            passed.setdefault(usr, {}).setdefault(site, {})[index] = value
+    return passed
 
 
 def _expand(text: str, passed: dict[str, dict[str, dict[int, str]]],
