@@ -258,3 +258,59 @@ def test_a_construction_whose_arguments_are_not_read_still_makes_the_calls(tmp_p
                          scan([str(tmp_path)]), cache_dir=None)
     assert [(c.kind, c.name, c.type) for c in result.calls if c.kind == "subscribe"] == [
         ("subscribe", "?", "geometry_msgs/msg/Twist")]
+
+
+COSTMAP_SUBSCRIBER = """
+#pragma once
+#include <memory>
+#include <string>
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+
+class MapInput {
+public:
+  MapInput(const std::weak_ptr<rclcpp::Node> & parent, const std::string & topic) {
+    auto node = parent.lock();
+    sub_ = node->create_subscription<std_msgs::msg::String>(
+      topic + "_weak", 1, [](const std_msgs::msg::String::SharedPtr) {});
+  }
+  template<typename NodeT>
+  MapInput(const NodeT & parent, const std::string & topic, int depth = 1) {
+    sub_ = parent->template create_subscription<std_msgs::msg::String>(
+      topic, depth, [](const std_msgs::msg::String::SharedPtr) {});
+  }
+private:
+  rclcpp::Subscription<std_msgs::msg::String>::SharedPtr sub_;
+};
+"""
+
+BUILDS_MAP_INPUT = """
+#include <memory>
+#include "twist_relay/map_input.hpp"
+
+int main(int argc, char ** argv) {
+  rclcpp::init(argc, argv);
+  auto node = std::make_shared<rclcpp::Node>("mapper");
+  auto input = std::make_unique<MapInput>(node, "map");
+  std::weak_ptr<rclcpp::Node> weak = node;
+  auto other = std::make_unique<MapInput>(weak, "other_map");
+  rclcpp::spin(node);
+  return 0;
+}
+"""
+
+
+def test_make_unique_chooses_the_constructor_that_takes_the_arguments_as_they_are(
+        tmp_path) -> None:
+    """nav2's CostmapSubscriber: a constructor over a ``WeakPtr`` and a constructor
+    template over any node, both taking two arguments. ``make_unique`` with the shared
+    pointer builds through the template, with the weak pointer through the other one,
+    as C++ chooses; each gives its calls their names (both were unknown: two
+    constructors fitted)."""
+    (tmp_path / "package.xml").write_text(ROS2_MANIFEST)
+    (tmp_path / "include" / "twist_relay").mkdir(parents=True)
+    (tmp_path / "include" / "twist_relay" / "map_input.hpp").write_text(COSTMAP_SUBSCRIBER)
+    (tmp_path / "main.cpp").write_text(BUILDS_MAP_INPUT)
+    result = extract_cpp([str(tmp_path / "main.cpp")], scan([str(tmp_path)]), cache_dir=None)
+    assert sorted((c.kind, c.name, c.location.line) for c in result.calls) == [
+        ("subscribe", "map", 17), ("subscribe", "other_map_weak", 12)]

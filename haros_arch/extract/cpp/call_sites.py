@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterator
 
-from clang.cindex import Cursor, CursorKind, TypeKind
+from clang.cindex import Cursor, CursorKind, Type, TypeKind
 
 from .values import (
     PLACEHOLDER,
@@ -209,7 +209,38 @@ def callee_of(call: Cursor) -> Cursor | None:
                  c.kind == CursorKind.FUNCTION_TEMPLATE
                  and c.spelling.split("<")[0] == decl.spelling.split("<")[0]))
              and _takes(c, count)]
+    if len(found) > 1:
+        found = _closest(found, written_arguments(call))
     return found[0] if len(found) == 1 else None
+
+
+def _closest(constructors: list[Cursor], args: list[Cursor]) -> list[Cursor]:
+    """The constructors that take the arguments as they are at the most places (a
+    parameter of a template's own type takes any), a constructor that is no template
+    before a template that takes them as well (as C++ chooses: nav2's CostmapSubscriber
+    takes a ``LifecycleNode::WeakPtr``, or any ``NodeT``, and a topic)."""
+    def score(constructor: Cursor) -> tuple[int, bool]:
+        params = [p for p in constructor.get_children() if p.kind == CursorKind.PARM_DECL]
+        same = sum(1 for param, arg in zip(params, args, strict=False)
+                   if _bare(param.type) is None or _bare(param.type) == _bare(arg.type))
+        return same, constructor.kind == CursorKind.CONSTRUCTOR
+
+    scores = [score(c) for c in constructors]
+    best = max(scores)
+    return [c for c, found in zip(constructors, scores, strict=True) if found == best]
+
+
+def _bare(ctype: Type) -> str | None:
+    """A type without reference and const, as its canonical spelling; None for one
+    that depends on a template parameter."""
+    if ctype.kind in (TypeKind.LVALUEREFERENCE, TypeKind.RVALUEREFERENCE):
+        ctype = ctype.get_pointee()
+    canonical = ctype.get_canonical()
+    if canonical.kind in (TypeKind.UNEXPOSED, TypeKind.INVALID) or (
+        "type-parameter" in canonical.spelling
+    ):
+        return None
+    return canonical.spelling.removeprefix("const ").removesuffix(" const")
 
 
 # methods a host calls once, right after construction, to set a plugin or nodelet up
