@@ -314,3 +314,22 @@ def test_make_unique_chooses_the_constructor_that_takes_the_arguments_as_they_ar
     result = extract_cpp([str(tmp_path / "main.cpp")], scan([str(tmp_path)]), cache_dir=None)
     assert sorted((c.kind, c.name, c.location.line) for c in result.calls) == [
         ("subscribe", "map", 17), ("subscribe", "other_map_weak", 12)]
+
+
+def test_an_error_away_from_any_construction_does_not_keep_the_calls(tmp_path) -> None:
+    """An error the parse leaves in a function that does not name the class (ROS 1
+    navigation's costmap tools: errors in a helper of their library, none near a
+    construction of Costmap2DROS) cannot hide a construction of it: the calls of the
+    constructor nobody calls are still left out."""
+    (tmp_path / "package.xml").write_text(ROS2_MANIFEST)
+    (tmp_path / "include" / "twist_relay").mkdir(parents=True)
+    (tmp_path / "include" / "twist_relay" / "velocity_input.hpp").write_text(
+        SUBSCRIBER_HEADER)
+    (tmp_path / "main.cpp").write_text(INCLUDES_IT.replace(
+        "std::unique_ptr<VelocityInput> make_input(const rclcpp::Node::SharedPtr & node);\n",
+        "int helper() { return vendor::count(); }\n").replace(
+        "  auto input = make_input(node);\n",
+        '  auto pub = node->create_publisher<geometry_msgs::msg::Twist>("out", 1);\n'))
+    result = extract_cpp([str(tmp_path / "main.cpp")], scan([str(tmp_path)]), cache_dir=None)
+    assert "CPP_PARSE_ERROR" in [d.code for d in result.diagnostics]
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "out")]

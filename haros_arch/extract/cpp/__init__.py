@@ -110,6 +110,11 @@ class CppResult:
     rosnames: list[str] = field(default_factory=list)
     node_names: list[tuple[str, str]] = field(default_factory=list)
     constructions: list[tuple[str, str]] = field(default_factory=list)  # visitor's
+    # in a translation unit's result: the words of its code where an error left by the
+    # parse can hide a statement (each function with one, a constructor with its class's
+    # member types; ``*``: anything, the unit was not parsed), so a construction of a
+    # class named there may be missed (``links.resolve``)
+    unseen: list[str] = field(default_factory=list)
 
 
 @dataclass
@@ -223,24 +228,19 @@ def _is_ros2(path: str, included: bool, workspace: Workspace) -> bool:
     return included if version is None else version == 2
 
 
-# the diagnostics of an error or failure that can drop a statement from a unit's parse
-_HIDING = frozenset({"CPP_PARSE_ERROR", "CPP_MESSAGE_FIELD", "CPP_PARSE_FAILED"})
-
-
 def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True) -> CppResult:
     result = CppResult()
     units = [unit for _, unit in paths_units]
     seen: set[tuple[object, ...]] = set()
     facts = [fact for unit in units for fact in unit.facts]
-    # every construction in the node's files is seen: each of them was read and parsed
-    # and kept no error (which can drop the statement that constructs a class)
-    visible = complete and not any(
-        d.code in _HIDING for unit in units for d in unit.diagnostics)
+    # where a construction may be missed: the words of the code around the errors the
+    # parse left (an error drops its statement), everywhere when a file was not read
+    unseen = {word for unit in units for word in unit.unseen} if complete else {"*"}
     for unit in units:
         result.diagnostics.extend(unit.diagnostics)
         if unit.rosname is not None and result.rosname is None:
             result.rosname = links.resolve_name(unit.rosname, facts)
-        calls, found = links.resolve(unit.calls, facts, visible)
+        calls, found = links.resolve(unit.calls, facts, unseen)
         result.diagnostics.extend(found)
         for call in calls:
             key = (call.kind, call.name, call.location)
@@ -324,11 +324,12 @@ def _units(texts: dict[str, str], ros2: dict[str, bool], setup: IncludeSetup,
                 digests[path] = kept[1]
             elif kept is not None and kept[0] is not None:
                 try:
-                    calls, rosname, found, facts, named, made = cache.from_data(kept[0])
+                    calls, rosname, found, facts, named, made, unseen = cache.from_data(
+                        kept[0])
                 except (ValueError, TypeError, KeyError):
                     continue
                 done[path] = CppResult(calls, rosname, found, facts, node_names=named,
-                                       constructions=made)
+                                       constructions=made, unseen=unseen)
                 digests[path] = kept[1]
     todo = [path for path in texts if path not in done and path not in digests]
     tasks = [(path, texts[path], ros2[path]) for path in todo]
@@ -378,7 +379,7 @@ def _unit_and_data(path: str, text: str, ros2: bool, setup: IncludeSetup
     where the unit was parsed (in a worker: not in the serial part of the run)."""
     unit, headers = _translation_unit(path, text, ros2, setup)
     data = cache.to_data(unit.calls, unit.rosname, unit.diagnostics, unit.facts,
-                         unit.node_names, unit.constructions)
+                         unit.node_names, unit.constructions, unit.unseen)
     return unit, headers, data, cache.digest(data)
 
 
@@ -444,6 +445,7 @@ def _translation_unit(path: str, text: str, ros2: bool,
 
     tu = _parse(path, text, setup, workspace, result, source, owned, ros2)
     if tu is None:
+        result.unseen = ["*"]
         return result, []
     errors = [e for e in _errors(tu) if e.name is not None and owned(e.name)]
     fieldless = _fieldless_packages(setup.diagnostics)
@@ -469,6 +471,7 @@ def _translation_unit(path: str, text: str, ros2: bool,
     result.facts = finder.facts
     result.node_names = finder.node_names
     result.constructions = finder.constructions
+    result.unseen = _unseen(errors, finder, source)
     headers = [path]
     for include in tu.get_includes():
         name = os.path.abspath(include.include.name)
@@ -534,6 +537,36 @@ def _hidden(path: str, errors: list[_Error], finder: CallFinder,
                     detail=error.spelling))
     found.extend(_node_given(errors, finder, source, workspace))
     return found[:recall.MAX_REASONS]
+
+
+_WORD = re.compile(rb"[A-Za-z_]\w*")
+
+
+def _unseen(errors: list[_Error], finder: CallFinder, source: SourceCache) -> list[str]:
+    """The words of the code where ``errors`` can hide a statement: the text of each
+    function that holds one (a constructor's, with the types of its class's members,
+    which its initialisers construct unnamed), else the error's line."""
+    words: set[bytes] = set()
+    for error in errors:
+        if error.path is None:
+            continue
+        data = source.get(error.path)
+        if data is None:
+            return ["*"]
+        function = _innermost(finder.functions, error.path, error.line)
+        if function is None:
+            lines = data.splitlines()
+            if 0 < error.line <= len(lines):
+                words.update(_WORD.findall(lines[error.line - 1]))
+            continue
+        extent = function.extent
+        words.update(_WORD.findall(data[extent.start.offset:extent.end.offset]))
+        owner = function.semantic_parent
+        if function.kind == CursorKind.CONSTRUCTOR and owner is not None:
+            for member in owner.get_children():
+                if member.kind == CursorKind.FIELD_DECL:
+                    words.update(_WORD.findall(member.type.spelling.encode()))
+    return sorted(word.decode() for word in words)
 
 
 def _node_given(errors: list[_Error], finder: CallFinder, source: SourceCache,

@@ -173,17 +173,19 @@ def to_data(calls: list[PrimitiveCall], rosname: str | None,
             diagnostics: list[Diagnostic],
             facts: list[tuple[str, int, str, str]] | None = None,
             node_names: list[tuple[str, str]] | None = None,
-            constructions: list[tuple[str, str]] | None = None) -> dict[str, Any]:
+            constructions: list[tuple[str, str]] | None = None,
+            unseen: list[str] | None = None) -> dict[str, Any]:
     return {"calls": [dataclasses.asdict(c) for c in calls], "rosname": rosname,
             "diagnostics": [dataclasses.asdict(d) for d in diagnostics],
             "facts": [list(f) for f in facts or ()],
             "node_names": [list(n) for n in node_names or ()],
-            "constructions": [list(n) for n in constructions or ()]}
+            "constructions": [list(n) for n in constructions or ()],
+            "unseen": list(unseen or ())}
 
 
 def from_data(data: dict[str, Any]) -> tuple[
         list[PrimitiveCall], str | None, list[Diagnostic], list[tuple[str, int, str, str]],
-        list[tuple[str, str]], list[tuple[str, str]]]:
+        list[tuple[str, str]], list[tuple[str, str]], list[str]]:
     """Raises ValueError / TypeError / KeyError for data that is not ours."""
     calls = []
     for item in data["calls"]:
@@ -206,8 +208,11 @@ def from_data(data: dict[str, Any]) -> tuple[
                 and isinstance(site, str)):
             raise TypeError("facts")
         facts.append((usr, index, value, site))
+    unseen = data.get("unseen", [])
+    if not (isinstance(unseen, list) and all(isinstance(word, str) for word in unseen)):
+        raise TypeError("unseen")
     return (calls, rosname, diagnostics, facts, _pairs(data, "node_names"),
-            _pairs(data, "constructions"))
+            _pairs(data, "constructions"), unseen)
 
 
 def _pairs(data: dict[str, Any], key: str) -> list[tuple[str, str]]:

@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import dataclasses
 import re
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Collection, Iterable
 
 from clang.cindex import Cursor, CursorKind
 
@@ -78,12 +78,12 @@ def _value(arg: Cursor, scope: Scope, namespaces: Namespaces) -> str | None:
     return None
 
 
-def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact], seen: bool = False
-            ) -> tuple[list[PrimitiveCall], list[Diagnostic]]:
-    """The calls with their placeholders filled from ``facts`` (of the same node). With
-    ``seen`` (the parse of the node's files left no error that could hide a
-    construction), a call a constructor makes with a name from its parameters
-    (``made_in``) is left out when no file of the node calls that constructor."""
+def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact],
+            unseen: Collection[str] = ("*",)) -> tuple[list[PrimitiveCall], list[Diagnostic]]:
+    """The calls with their placeholders filled from ``facts`` (of the same node). A
+    call a constructor makes with a name from its parameters (``made_in``) is left out
+    when no file of the node calls that constructor and the class's name is not among
+    the words ``unseen`` of the code where the parse left errors (``*``: anywhere)."""
     facts = list(facts)
     passed = _passed(facts)
     called = {fact[0] for fact in facts}
@@ -91,7 +91,9 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact], seen: bool = 
     found: list[Diagnostic] = []
     for call in calls:
         if call.made_in is not None:
-            if seen and call.made_in not in called:
+            if call.made_in not in called and "*" not in unseen and (
+                class_of(call.made_in) not in unseen
+            ):
                 continue  # no file of the node constructs the class: not made
             call = dataclasses.replace(call, made_in=None)
         if PLACEHOLDER not in call.name and PLACEHOLDER not in (call.handle_namespace or ""):
@@ -125,6 +127,15 @@ def resolve_name(name: str, facts: Iterable[Fact]) -> str:
     found = _expand(name, _passed(facts), 0)
     return found[0] if len(found) == 1 and PLACEHOLDER not in found[0] else (
         _MARK.sub("?", name))
+
+
+_CLASS = re.compile(r"@(?:S|ST>\d+(?:#[^@]*)?)@([A-Za-z_]\w*)@F")
+
+
+def class_of(usr: str) -> str | None:
+    """The name of the class of a constructor's (or method's) USR."""
+    found = _CLASS.findall(usr)
+    return found[-1] if found else None
 
 
 def _passed(facts: Iterable[Fact]) -> dict[str, dict[str, dict[int, str]]]:
