@@ -540,6 +540,11 @@ def _hidden(path: str, errors: list[_Error], finder: CallFinder,
 
 
 _WORD = re.compile(rb"[A-Za-z_]\w*")
+# the children of a function's cursor that belong to its declarator
+_DECLARATOR = frozenset({
+    CursorKind.TYPE_REF, CursorKind.NAMESPACE_REF, CursorKind.TEMPLATE_REF,
+    CursorKind.PARM_DECL, CursorKind.TEMPLATE_TYPE_PARAMETER,
+    CursorKind.TEMPLATE_NON_TYPE_PARAMETER, CursorKind.TEMPLATE_TEMPLATE_PARAMETER})
 
 
 def _unseen(errors: list[_Error], finder: CallFinder, source: SourceCache) -> list[str]:
@@ -559,8 +564,11 @@ def _unseen(errors: list[_Error], finder: CallFinder, source: SourceCache) -> li
             if 0 < error.line <= len(lines):
                 words.update(_WORD.findall(lines[error.line - 1]))
             continue
-        extent = function.extent
-        words.update(_WORD.findall(data[extent.start.offset:extent.end.offset]))
+        # from its member initialisers and body on: not the class that qualifies a
+        # method's name (every error in a method of the class would name it)
+        start = next((child.extent.start.offset for child in function.get_children()
+                      if child.kind not in _DECLARATOR), function.extent.start.offset)
+        words.update(_WORD.findall(data[start:function.extent.end.offset]))
         owner = function.semantic_parent
         if function.kind == CursorKind.CONSTRUCTOR and owner is not None:
             for member in owner.get_children():
