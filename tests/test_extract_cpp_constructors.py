@@ -333,3 +333,40 @@ def test_an_error_away_from_any_construction_does_not_keep_the_calls(tmp_path) -
     result = extract_cpp([str(tmp_path / "main.cpp")], scan([str(tmp_path)]), cache_dir=None)
     assert "CPP_PARSE_ERROR" in [d.code for d in result.diagnostics]
     assert [(c.kind, c.name) for c in result.calls] == [("publish", "out")]
+
+
+def test_the_node_given_to_another_packages_class_keeps_the_calls(tmp_path) -> None:
+    """opennav_following builds opennav_docking's Controller with its node; the
+    Controller's constructor, in opennav_docking's sources (not a file of this node),
+    builds a FootprintSubscriber. What it builds is not seen here, so the subscription of
+    the header's class stays, named '?'."""
+    manifest = ROS2_MANIFEST.replace("twist_relay", "{name}")
+    docking = tmp_path / "src" / "docking"
+    (docking / "include" / "docking").mkdir(parents=True)
+    (docking / "src").mkdir()
+    (docking / "package.xml").write_text(manifest.format(name="docking"))
+    (docking / "include" / "docking" / "velocity_input.hpp").write_text(SUBSCRIBER_HEADER)
+    (docking / "include" / "docking" / "controller.hpp").write_text(
+        "#pragma once\n#include <memory>\n#include \"docking/velocity_input.hpp\"\n"
+        "class Controller {\npublic:\n"
+        "  explicit Controller(const rclcpp::Node::SharedPtr & node);\n"
+        "private:\n  std::unique_ptr<VelocityInput> input_;\n};\n")
+    (docking / "src" / "controller.cpp").write_text(
+        "#include \"docking/controller.hpp\"\n"
+        "Controller::Controller(const rclcpp::Node::SharedPtr & node)\n"
+        ": input_(std::make_unique<VelocityInput>(node, \"footprint\")) {}\n")
+    following = tmp_path / "src" / "following"
+    following.mkdir(parents=True)
+    (following / "package.xml").write_text(
+        manifest.format(name="following").replace(
+            "<depend>rclcpp</depend>", "<depend>rclcpp</depend><depend>docking</depend>"))
+    (following / "main.cpp").write_text(
+        "#include <memory>\n#include \"docking/controller.hpp\"\n"
+        "int main(int argc, char ** argv) {\n  rclcpp::init(argc, argv);\n"
+        "  auto node = std::make_shared<rclcpp::Node>(\"following\");\n"
+        "  auto controller = std::make_unique<Controller>(node);\n"
+        "  rclcpp::spin(node);\n  return 0;\n}\n")
+    result = extract_cpp([str(following / "main.cpp")], scan([str(tmp_path)]),
+                         cache_dir=None)
+    assert "CPP_NODE_PASSED" in [d.code for d in result.diagnostics]
+    assert [(c.kind, c.name) for c in result.calls] == [("subscribe", "?")]

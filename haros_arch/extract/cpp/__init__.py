@@ -471,7 +471,10 @@ def _translation_unit(path: str, text: str, ros2: bool,
     result.facts = finder.facts
     result.node_names = finder.node_names
     result.constructions = finder.constructions
-    result.unseen = _unseen(errors, finder, source)
+    # the node handed to code the parse does not read (another package's class, a
+    # function it does not know) may construct anything there
+    result.unseen = ["*"] if any(d.code in _HANDED for d in result.diagnostics) else (
+        _unseen(errors, finder, source))
     headers = [path]
     for include in tu.get_includes():
         name = os.path.abspath(include.include.name)
@@ -540,6 +543,7 @@ def _hidden(path: str, errors: list[_Error], finder: CallFinder,
 
 
 _WORD = re.compile(rb"[A-Za-z_]\w*")
+_HANDED = frozenset({"CPP_NODE_PASSED", "CPP_NODE_TO_UNKNOWN"})
 # the children of a function's cursor that belong to its declarator
 _DECLARATOR = frozenset({
     CursorKind.TYPE_REF, CursorKind.NAMESPACE_REF, CursorKind.TEMPLATE_REF,
