@@ -370,3 +370,26 @@ def test_the_node_given_to_another_packages_class_keeps_the_calls(tmp_path) -> N
                          cache_dir=None)
     assert "CPP_NODE_PASSED" in [d.code for d in result.diagnostics]
     assert [(c.kind, c.name) for c in result.calls] == [("subscribe", "?")]
+
+
+def test_the_cache_keeps_what_a_unit_says_of_its_constructions(tmp_path) -> None:
+    """The calls' constructor and the unit's unseen words are kept in the cache: a run
+    answered from it leaves out and keeps the same calls as the parse."""
+    root = tmp_path / "ws"
+    (root / "include" / "twist_relay").mkdir(parents=True)
+    (root / "package.xml").write_text(ROS2_MANIFEST)
+    (root / "include" / "twist_relay" / "velocity_input.hpp").write_text(SUBSCRIBER_HEADER)
+    (root / "main.cpp").write_text(INCLUDES_IT.replace(
+        "std::unique_ptr<VelocityInput> make_input(const rclcpp::Node::SharedPtr & node);\n",
+        "").replace("  auto input = make_input(node);\n", ""))
+    (root / "input.cpp").write_text(BUILDS_IT.replace(
+        '#include <memory>\n', '#include <memory>\n#include <vendor/topics.hpp>\n').replace(
+        '(node, "cmd_vel")', "(node, vendor::Topics::velocity())"))
+    ws = scan([str(root)])
+    alone = [str(root / "main.cpp")]
+    both = [str(root / "main.cpp"), str(root / "input.cpp")]
+    cache_dir = str(tmp_path / "cache")
+    for _run in range(2):  # parsed, then answered from the cache
+        assert extract_cpp(alone, ws, cache_dir=cache_dir, jobs=1).calls == []
+        assert [(c.kind, c.name, c.made_in) for c in extract_cpp(
+            both, ws, cache_dir=cache_dir, jobs=1).calls] == [("subscribe", "?", None)]

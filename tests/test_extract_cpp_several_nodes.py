@@ -96,9 +96,12 @@ def test_node_names_survive_the_cache(tmp_path: object) -> None:
     assert cached.rosnames == first.rosnames == ["rover_base_node", "odometry_node"]
     assert rows(cached) == rows(first)
     data = to_data([], None, [], [], [("rover::Odometry", "odometry_node")],
-                   [("rover::BaseDriver", "rover::devices::Battery")])
+                   [("rover::BaseDriver", "rover::devices::Battery")], ["Battery", "vendor"])
     assert from_data(data)[4:] == ([("rover::Odometry", "odometry_node")],
-                                   [("rover::BaseDriver", "rover::devices::Battery")])
+                                   [("rover::BaseDriver", "rover::devices::Battery")],
+                                   ["Battery", "vendor"])
+    with pytest.raises(TypeError):
+        from_data({**data, "unseen": [None]})
     with pytest.raises(TypeError):
         from_data({**data, "node_names": [["rover::Odometry", 3]]})
     with pytest.raises(TypeError):
