@@ -335,11 +335,15 @@ def test_an_error_away_from_any_construction_does_not_keep_the_calls(tmp_path) -
     assert [(c.kind, c.name) for c in result.calls] == [("publish", "out")]
 
 
-def test_the_node_given_to_another_packages_class_keeps_the_calls(tmp_path) -> None:
+@pytest.mark.parametrize("given", ["node", "\"dock\""])
+def test_a_class_built_without_its_constructors_code_keeps_the_calls(
+        tmp_path, given: str) -> None:
     """opennav_following builds opennav_docking's Controller with its node; the
     Controller's constructor, in opennav_docking's sources (not a file of this node),
-    builds a FootprintSubscriber. What it builds is not seen here, so the subscription of
-    the header's class stays, named '?'."""
+    builds a FootprintSubscriber, a member of the Controller. What it builds is not seen
+    here, so the subscription of the header's class stays, named '?' (given the node,
+    the node is also partial; given a name only, the class's members still say what it
+    may build)."""
     manifest = ROS2_MANIFEST.replace("twist_relay", "{name}")
     docking = tmp_path / "src" / "docking"
     (docking / "include" / "docking").mkdir(parents=True)
@@ -350,6 +354,7 @@ def test_the_node_given_to_another_packages_class_keeps_the_calls(tmp_path) -> N
         "#pragma once\n#include <memory>\n#include \"docking/velocity_input.hpp\"\n"
         "class Controller {\npublic:\n"
         "  explicit Controller(const rclcpp::Node::SharedPtr & node);\n"
+        "  explicit Controller(const std::string & name);\n"
         "private:\n  std::unique_ptr<VelocityInput> input_;\n};\n")
     (docking / "src" / "controller.cpp").write_text(
         "#include \"docking/controller.hpp\"\n"
@@ -364,11 +369,11 @@ def test_the_node_given_to_another_packages_class_keeps_the_calls(tmp_path) -> N
         "#include <memory>\n#include \"docking/controller.hpp\"\n"
         "int main(int argc, char ** argv) {\n  rclcpp::init(argc, argv);\n"
         "  auto node = std::make_shared<rclcpp::Node>(\"following\");\n"
-        "  auto controller = std::make_unique<Controller>(node);\n"
+        f"  auto controller = std::make_unique<Controller>({given});\n"
         "  rclcpp::spin(node);\n  return 0;\n}\n")
     result = extract_cpp([str(following / "main.cpp")], scan([str(tmp_path)]),
                          cache_dir=None)
-    assert "CPP_NODE_PASSED" in [d.code for d in result.diagnostics]
+    assert ("CPP_NODE_PASSED" in [d.code for d in result.diagnostics]) == (given == "node")
     assert [(c.kind, c.name) for c in result.calls] == [("subscribe", "?")]
 
 

@@ -31,7 +31,7 @@ from . import cache, links, recall, synthesis, toolchain
 from . import compile_commands as commands
 from .headers import STANDIN, IncludeSetup
 from .owners import node_names
-from .visitor import CallFinder
+from .visitor import WORDS, CallFinder
 
 __all__ = ["CppBatch", "CppResult", "extract_cpp", "extract_cpp_nodes"]
 
@@ -473,8 +473,8 @@ def _translation_unit(path: str, text: str, ros2: bool,
     result.constructions = finder.constructions
     # the node handed to code the parse does not read (another package's class, a
     # function it does not know) may construct anything there
-    result.unseen = ["*"] if any(d.code in _HANDED for d in result.diagnostics) else (
-        _unseen(errors, finder, source))
+    result.unseen = ["*"] if any(d.code in _HANDED for d in result.diagnostics) else sorted(
+        word.decode() for word in _unseen(errors, finder, source) | finder.unseen)
     headers = [path]
     for include in tu.get_includes():
         name = os.path.abspath(include.include.name)
@@ -542,8 +542,8 @@ def _hidden(path: str, errors: list[_Error], finder: CallFinder,
     return found[:recall.MAX_REASONS]
 
 
-_WORD = re.compile(rb"[A-Za-z_]\w*")
 _HANDED = frozenset({"CPP_NODE_PASSED", "CPP_NODE_TO_UNKNOWN"})
+_CLASSES = frozenset({CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL, CursorKind.CLASS_TEMPLATE})
 # the children of a function's cursor that belong to its declarator
 _DECLARATOR = frozenset({
     CursorKind.TYPE_REF, CursorKind.NAMESPACE_REF, CursorKind.TEMPLATE_REF,
@@ -551,7 +551,7 @@ _DECLARATOR = frozenset({
     CursorKind.TEMPLATE_NON_TYPE_PARAMETER, CursorKind.TEMPLATE_TEMPLATE_PARAMETER})
 
 
-def _unseen(errors: list[_Error], finder: CallFinder, source: SourceCache) -> list[str]:
+def _unseen(errors: list[_Error], finder: CallFinder, source: SourceCache) -> set[bytes]:
     """The words of the code where ``errors`` can hide a statement: the text of each
     function that holds one (a constructor's, with the types of its class's members,
     which its initialisers construct unnamed), else the error's line."""
@@ -561,24 +561,29 @@ def _unseen(errors: list[_Error], finder: CallFinder, source: SourceCache) -> li
             continue
         data = source.get(error.path)
         if data is None:
-            return ["*"]
+            return {b"*"}
         function = _innermost(finder.functions, error.path, error.line)
         if function is None:
             lines = data.splitlines()
             if 0 < error.line <= len(lines):
-                words.update(_WORD.findall(lines[error.line - 1]))
+                words.update(WORDS.findall(lines[error.line - 1]))
             continue
         # from its member initialisers and body on: not the class that qualifies a
         # method's name (every error in a method of the class would name it)
         start = next((child.extent.start.offset for child in function.get_children()
                       if child.kind not in _DECLARATOR), function.extent.start.offset)
-        words.update(_WORD.findall(data[start:function.extent.end.offset]))
+        found = set(WORDS.findall(data[start:function.extent.end.offset]))
         owner = function.semantic_parent
-        if function.kind == CursorKind.CONSTRUCTOR and owner is not None:
-            for member in owner.get_children():
-                if member.kind == CursorKind.FIELD_DECL:
-                    words.update(_WORD.findall(member.type.spelling.encode()))
-    return sorted(word.decode() for word in words)
+        if owner is not None and owner.kind in _CLASSES:
+            # a method names its own class (``&Costmap2DROS::reconfigureCB``), which
+            # it does not construct
+            found.discard(owner.spelling.encode())
+            if function.kind == CursorKind.CONSTRUCTOR:
+                for member in owner.get_children():
+                    if member.kind == CursorKind.FIELD_DECL:
+                        found.update(WORDS.findall(member.type.spelling.encode()))
+        words |= found
+    return words
 
 
 def _node_given(errors: list[_Error], finder: CallFinder, source: SourceCache,

@@ -81,14 +81,20 @@ def unseen_construction(call: Cursor, owned: Callable[[str], bool]
     NodeHandle, a node interface): the class and the argument. Its constructor may make
     ROS calls on the node that this unit does not show (Autoware's controller node
     builds its lateral and longitudinal controllers so)."""
-    made = _construction(call, owned)
-    if made is None:
-        return None
-    cls, constructor = made
-    given = node_arguments(call)
-    if not given or _code_here(constructor, cls):
+    cls = opaque_construction(call, owned)
+    given = node_arguments(call) if cls is not None else []
+    if cls is None or not given:
         return None
     return cls, given[0]
+
+
+def opaque_construction(call: Cursor, owned: Callable[[str], bool]) -> Cursor | None:
+    """The workspace class ``call`` constructs when the code of its constructor is not
+    in this translation unit: what that constructor builds is not seen here."""
+    made = _construction(call, owned)
+    if made is None or _code_here(made[1], made[0]):
+        return None
+    return made[0]
 
 
 def _code_here(constructor: Cursor | None, cls: Cursor) -> bool:

@@ -13,6 +13,7 @@ from __future__ import annotations
 import dataclasses
 import functools
 import itertools
+import re
 from collections.abc import Callable, Iterator
 from typing import Any
 
@@ -45,6 +46,7 @@ from .owners import (
     constructed_class,
     handle_node,
     node_arguments,
+    opaque_construction,
     owner_of,
     unseen_construction,
 )
@@ -64,6 +66,7 @@ from .values import (
 from .values import key_of as place_of
 from .wrappers import Wrappers, is_constructor, of_class_template
 
+WORDS = re.compile(rb"[A-Za-z_]\w*")  # the identifiers (and keywords) of a text
 CONTAINERS = frozenset({
     CursorKind.NAMESPACE, CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL,
     CursorKind.CLASS_TEMPLATE, CursorKind.LINKAGE_SPEC, CursorKind.UNEXPOSED_DECL,
@@ -127,6 +130,9 @@ class CallFinder:
         # node's handle)
         self.constructions: list[tuple[str, str]] = []
         self.diagnostics: list[Diagnostic] = []
+        # the words of the declarations of the classes the unit constructs without the
+        # code of their constructor: what those build is not seen (``links.resolve``)
+        self.unseen: set[bytes] = set()
         self.facts: list[Fact] = []  # what this file passes to other files' functions
         self.wrappers = Wrappers(self)  # the file's functions that wrap the ROS API
         self.members: MemberWrites | None = None
@@ -353,7 +359,15 @@ class CallFinder:
         """Record that the function being walked constructs a class of the workspace;
         say so when that class is another package's, built here with the node and
         defined elsewhere (``CPP_NODE_PASSED``: its calls on the node are not read)."""
-        unseen = unseen_construction(call, self.owned)
+        opaque = opaque_construction(call, self.owned)
+        if opaque is not None and opaque.location.file is not None:
+            # its class's declaration: the members it may construct, unseen here
+            data = self.source.get(opaque.location.file.name)
+            extent = opaque.extent
+            if data is not None:
+                self.unseen.update(WORDS.findall(
+                    data[extent.start.offset:extent.end.offset]))
+        unseen = unseen_construction(call, self.owned) if opaque is not None else None
         if unseen is not None:
             cls, given = unseen
             here, there = self.where(call), self.where(cls)
