@@ -46,6 +46,10 @@ NODE = """
         if (unread_) unread_pub_ = nh.advertise<std_msgs::String>("unread", 1);
         if (!from_launch_ && unread_) both_ = nh.advertise<std_msgs::String>("both", 1);
       }
+      void reset() {
+        ros::NodeHandle pnh("~");
+        pnh.param("publish_debug", publish_debug_, false);
+      }
      private:
       bool verbose_, publish_debug_, publish_status_, twice_, from_launch_;
       bool unread_ = false;
@@ -130,6 +134,11 @@ def test_the_extractor_names_the_member_a_read_stores_into(write_tree):
                       "~verbose": "verbose_", "~twice": None, "~twice_again": None,
                       "~mode": "mode_", "~from_launch": "from_launch_",
                       "~publish_accel": "accel_"}
+    # read twice into the member, the same parameter with the same default: each
+    # write of the member is that parameter (a read of another one into the same
+    # member, ``twice_``, is not)
+    assert [c.variable for c in result.calls if c.name == "~publish_debug"] == [
+        "publish_debug_", "publish_debug_"]
     defaults = {c.name: c.default for c in result.calls if c.kind == "read"}
     assert defaults["~verbose"] is False  # the constructor's value of the member
     replay = next(c for c in result.calls if c.name == "replay")

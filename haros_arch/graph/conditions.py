@@ -7,8 +7,9 @@ this instance gives it:
 - a member variable that one parameter read of the same file stores into
   (``PrimitiveCall.variable``): the value the configuration gives the parameter (the
   launch files', with no launch condition and no node setting it), else the read's
-  default; a value whose type is not the read's is not used (roscpp would keep the
-  default, rclcpp would refuse it);
+  default (a ROS 2 read without one: the declaration's of the same parameter); a value
+  whose type is not the read's is not used (roscpp would keep the default, rclcpp would
+  refuse it);
 - ``argc`` / ``argv`` of a condition in ``main`` (``Condition.program_args``) of a
   ROS 1 instance whose ``args`` are known: roslaunch starts it with its ``args`` words,
   its remappings, ``__name:=`` and ``__log:=``, and ``ros::init`` removes the ``:=``
@@ -248,6 +249,13 @@ def _member_values(instance: NodeInstance) -> Callable[..., object]:
         found = reads.get((file, name))
         if not found:
             return Unknown(f"{name} is not known to hold a parameter")
+        # a ROS 2 read without a default of a parameter declared with one here gets
+        # what the declaration gets (nav2's declare_or_get_parameter(name, default))
+        declared = {id(link.resource) for link in found
+                    if link.call is not None and link.call.kind == "declare"}
+        found = [link for link in found if not (
+            link.call is not None and link.call.kind == "read"
+            and not link.call.has_default and id(link.resource) in declared)]
         values = [_read_value(link) for link in found]
         first = values[0]
         if any(is_unknown(v) for v in values) or any(v != first for v in values[1:]):

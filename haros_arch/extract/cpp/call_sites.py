@@ -210,24 +210,32 @@ def callee_of(call: Cursor) -> Cursor | None:
                  and c.spelling.split("<")[0] == decl.spelling.split("<")[0]))
              and _takes(c, count)]
     if len(found) > 1:
-        found = _closest(found, written_arguments(call))
+        found = closest(found, written_arguments(call))
     return found[0] if len(found) == 1 else None
 
 
-def _closest(constructors: list[Cursor], args: list[Cursor]) -> list[Cursor]:
-    """The constructors that take the arguments as they are at the most places (a
-    parameter of a template's own type takes any), a constructor that is no template
-    before a template that takes them as well (as C++ chooses: nav2's CostmapSubscriber
-    takes a ``LifecycleNode::WeakPtr``, or any ``NodeT``, and a topic)."""
-    def score(constructor: Cursor) -> tuple[int, bool]:
-        params = [p for p in constructor.get_children() if p.kind == CursorKind.PARM_DECL]
-        same = sum(1 for param, arg in zip(params, args, strict=False)
-                   if _bare(param.type) is None or _bare(param.type) == _bare(arg.type))
-        return same, constructor.kind == CursorKind.CONSTRUCTOR
+def closest(functions: list[Cursor], args: list[Cursor]) -> list[Cursor]:
+    """The overloads, of those that may take ``args``, that C++ would rather call: the
+    ones that take the most arguments as they are, by a parameter of that very type
+    first, then by one of a template's own type (which takes any), and one that is no
+    template before a template (nav2's CostmapSubscriber takes a
+    ``LifecycleNode::WeakPtr``, or any ``NodeT``, and a topic; nav2's
+    ``declare_or_get_parameter(node, name, descriptor)`` before the overload over any
+    ``default_value``)."""
+    def score(function: Cursor) -> tuple[int, int, bool]:
+        params = [p for p in function.get_children() if p.kind == CursorKind.PARM_DECL]
+        same = generic = 0
+        for param, arg in zip(params, args, strict=False):
+            wanted = _bare(param.type)
+            if wanted is None:
+                generic += 1
+            elif wanted == _bare(arg.type):
+                same += 1
+        return same, generic, function.kind != CursorKind.FUNCTION_TEMPLATE
 
-    scores = [score(c) for c in constructors]
+    scores = [score(f) for f in functions]
     best = max(scores)
-    return [c for c, found in zip(constructors, scores, strict=True) if found == best]
+    return [f for f, found in zip(functions, scores, strict=True) if found == best]
 
 
 def _bare(ctype: Type) -> str | None:

@@ -152,9 +152,25 @@ class CallFinder:
             if self._gives(function):
                 self._function(function)
         self.wrappers.preorder.clear()
-        for read, member in self._stored:  # the member's one write is this read
-            if self.members.writes(member) == 1:
-                read.variable = member.spelling
+        # the member's writes are all these reads, of one parameter (nav2's
+        # TwistSubscriber: each of its two constructors reads enable_stamped_cmd_vel
+        # into is_stamped_ with the same default)
+        # (a call site may make two calls, nav2's declare_or_get_parameter: a
+        # declaration and a read)
+        stored: dict[tuple[str, int], dict[object, list[PrimitiveCall]]] = {}
+        members: dict[tuple[str, int], Cursor] = {}
+        for read, member in self._stored:
+            members[place_of(member)] = member
+            stored.setdefault(place_of(member), {}).setdefault(
+                read.location, []).append(read)
+        for key, sites in stored.items():
+            member = members[key]
+            made = [[(r.kind, r.name, r.handle_namespace, r.has_default, r.default,
+                      r.conditions) for r in reads] for reads in sites.values()]
+            if self.members.writes(member) == len(sites) and all(m == made[0] for m in made):
+                for reads in sites.values():
+                    for read in reads:
+                        read.variable = member.spelling
         self.facts = argument_facts(self.sites, self.namespaces, self.owned)
         for call in self.calls:  # get_parameter("p") of a declare_parameter("p", default)
             if call.name_param is not None and call.name_default is None:

@@ -35,6 +35,7 @@ from clang.cindex import Cursor, CursorKind, TypeKind, conf
 
 from ...model.conditions import Condition
 from . import api, msg_types
+from .call_sites import closest
 from .call_types import template_argument
 from .handles import callback, callback_name, is_handle, join_name, qualified_name
 from .qos import qos as qos_of
@@ -387,16 +388,13 @@ class Wrappers:
                 yield Wrapper(spec), args, None, None
             # a method of the unit called on a dependent object (``this`` in a generic
             # lambda: its overloads are named): the wrappers among them
-            for decl in _overloads(head):
+            for decl in _fitting(head, args):
                 callee = _key(decl.canonical)
-                if _fits(decl, args):
-                    for wrapper in self.summaries.get(callee, ()):
-                        yield wrapper, args, None, callee
+                for wrapper in self.summaries.get(callee, ()):
+                    yield wrapper, args, None, callee
             return
-        for decl in _overloads(head):
+        for decl in _fitting(head, args):
             callee = _key(decl.canonical)
-            if not _fits(decl, args):
-                continue
             for wrapper in self.summaries.get(callee, ()):
                 yield wrapper, args, None, callee
             spec = api.ALL.get((qualified_name(decl.semantic_parent), decl.spelling))
@@ -447,6 +445,9 @@ class Wrappers:
                 before, name_arg, after = shape
         fields: dict[str, object] = {
             field: _parameter_index(arg(getattr(spec, field)), params) for field in _ARGUMENTS}
+        if fields["default_arg"] is None:  # ``ParameterValue{default_value}``
+            fields["default_arg"] = _parameter_index(
+                _converted(arg(spec.default_arg)), params)
         fields.update(self._handle(function, spec, call, args, shift, params, scope))
         fields.update(self._type(function, spec, call, args, shift, params, cls))
         namespace = fields.pop("namespace", None)
@@ -547,7 +548,10 @@ class Wrappers:
             """The wrapper parameter the inner call's argument ``index`` is, if any."""
             if index is None or index + shift >= len(args):
                 return None
-            return _parameter_index(args[index + shift], params)
+            found = _parameter_index(args[index + shift], params)
+            if found is None and index == spec.default_arg == spec.type_arg:
+                found = _parameter_index(_converted(args[index + shift]), params)
+            return found
 
         for source in spec.type_from:
             if source in ("template", "template-value"):
@@ -669,9 +673,9 @@ class Wrappers:
                     or [_key(target.canonical)] for w in self.summaries.get(key, ())]
         children = list(call.get_children())
         args = written_arguments(call)
-        for decl in _overloads(children[0]) if children else []:
+        for decl in _fitting(children[0], args) if children else []:
             found = self.summaries.get(_key(decl.canonical))
-            if found and _fits(decl, args):
+            if found:
                 return found
         return []
 
@@ -843,6 +847,30 @@ def _parameter_index(expr: Cursor | None, params: list[Cursor]) -> int | None:
     return None
 
 
+_CONVERSIONS = frozenset({CursorKind.CALL_EXPR, CursorKind.INIT_LIST_EXPR,
+                          CursorKind.CXX_FUNCTIONAL_CAST_EXPR, CursorKind.UNEXPOSED_EXPR})
+
+
+def _converted(expr: Cursor | None, depth: int = 0) -> Cursor | None:
+    """What a value built of one argument is built of (``rclcpp::ParameterValue{v}``,
+    ``T(v)``): the argument, as far as such constructions nest."""
+    if expr is None or depth > 3:
+        return None
+    expr = strip(expr)
+    target = expr.referenced if expr.kind == CursorKind.CALL_EXPR else None
+    if expr.kind not in _CONVERSIONS or (
+        target is not None and target.kind != CursorKind.CONSTRUCTOR
+    ):
+        return None
+    inner = [c for c in expr.get_children() if c.kind.is_expression()]
+    if len(inner) != 1:
+        return None
+    found = strip(inner[0])
+    if found.kind == CursorKind.DECL_REF_EXPR:
+        return found
+    return _converted(found, depth + 1)
+
+
 def _is_this(expr: Cursor) -> bool:
     """``this``, ``*this``, ``shared_from_this()``: the object the wrapper is a method of."""
     expr = strip(expr)
@@ -889,6 +917,13 @@ def _overloads(head: Cursor) -> list[Cursor]:
         CursorKind.FUNCTION_TEMPLATE, CursorKind.FUNCTION_DECL, CursorKind.CXX_METHOD)]
 
 
+def _fitting(head: Cursor, args: list[Cursor]) -> list[Cursor]:
+    """The overloads an unresolved call's name may be that may take ``args``, the
+    ones C++ would rather call (``call_sites.closest``)."""
+    found = [decl for decl in _overloads(head) if _fits(decl, args)]
+    return closest(found, args) if len(found) > 1 else found
+
+
 def _fits(decl: Cursor, args: list[Cursor]) -> bool:
     """Whether overload ``decl`` may be the one called with ``args``: their number, and
     no builtin value (``true``, ``0.25``) passed for a class parameter (a descriptor)."""
@@ -908,6 +943,10 @@ def _fits(decl: Cursor, args: list[Cursor]) -> bool:
         given = strip(arg).type.get_canonical()
         if wanted.kind == TypeKind.RECORD and given.kind in _BUILTINS:
             return False
+        if wanted.kind == TypeKind.RECORD and given.kind == TypeKind.POINTER and (
+            given.get_pointee().get_canonical().kind == TypeKind.RECORD
+        ):
+            return False  # an object's address (``this``) for a class (a logger)
         if wanted.kind == TypeKind.RECORD and given.kind == TypeKind.RECORD and (
             msg_types.param_type(wanted) == "str" and msg_types.param_type(given) != "str"
         ):
