@@ -257,3 +257,123 @@ def test_a_spec_wrappers_name_as_a_type_is_no_missed_call_site(ws: Workspace) ->
         ("server", "/api/routing/clear", 11)]
     assert [d.location.line for d in result.diagnostics if d.code == "CPP_CALL_MISSED"] == []
     assert any(d.code == "CPP_PARSE_ERROR" for d in result.diagnostics)
+
+
+# nav2_ros_common (main): LifecycleNode::declare_or_get_parameter(name, default) calls
+# the free template over any node, which calls the overload over a logger and the
+# parameters interface; another overload takes (node, name, descriptor). The overloads
+# an unresolved call may be are narrowed as C++ would (``this`` is no logger), and the
+# default reaches the declaration through ``rclcpp::ParameterValue{default_value}``.
+NAV_COMMON = """
+#pragma once
+#include <string>
+#include <rclcpp/rclcpp.hpp>
+#include <geometry_msgs/msg/twist.hpp>
+#include <geometry_msgs/msg/twist_stamped.hpp>
+
+namespace nav {
+using Descriptor = rcl_interfaces::msg::ParameterDescriptor;
+
+template<typename ParameterT, typename NodeT>
+ParameterT declare_or_get_parameter(
+  NodeT node, const std::string & parameter_name, const Descriptor & descriptor = Descriptor())
+{
+  if (node->has_parameter(parameter_name)) {
+    return node->get_parameter(parameter_name).template get_value<ParameterT>();
+  }
+  auto parameter = node->declare_parameter(parameter_name, rclcpp::PARAMETER_BOOL, descriptor);
+  return parameter.template get<ParameterT>();
+}
+
+template<typename ParamType>
+ParamType declare_or_get_parameter(
+  const rclcpp::Logger & logger,
+  rclcpp::node_interfaces::NodeParametersInterface::SharedPtr param_interface,
+  const std::string & parameter_name, const ParamType & default_value,
+  bool warn_if_no_override = false, const Descriptor & descriptor = Descriptor())
+{
+  if (param_interface->has_parameter(parameter_name)) {
+    rclcpp::Parameter param(parameter_name, default_value);
+    param_interface->get_parameter(parameter_name, param);
+    return param.get_value<ParamType>();
+  }
+  return param_interface->declare_parameter(
+    parameter_name, rclcpp::ParameterValue{default_value}, descriptor).template get<ParamType>();
+}
+
+template<typename ParamType, typename NodeT>
+ParamType declare_or_get_parameter(
+  NodeT node, const std::string & parameter_name, const ParamType & default_value,
+  const Descriptor & descriptor = Descriptor())
+{
+  return declare_or_get_parameter(
+    node->get_logger(), node->get_node_parameters_interface(), parameter_name,
+    default_value, false, descriptor);
+}
+
+class LifecycleNode : public rclcpp::Node {
+public:
+  explicit LifecycleNode(const std::string & name) : rclcpp::Node(name) {}
+  template<typename ParameterT>
+  ParameterT declare_or_get_parameter(
+    const std::string & parameter_name, const Descriptor & descriptor = Descriptor())
+  {
+    return nav::declare_or_get_parameter<ParameterT>(this, parameter_name, descriptor);
+  }
+  template<typename ParamType>
+  ParamType declare_or_get_parameter(
+    const std::string & parameter_name, const ParamType & default_value,
+    const Descriptor & descriptor = Descriptor())
+  {
+    return nav::declare_or_get_parameter(this, parameter_name, default_value, descriptor);
+  }
+};
+}  // namespace nav
+"""
+
+DECLARE_OR_GET = """
+#include "smoother/lifecycle.hpp"
+
+class Smoother : public nav::LifecycleNode {
+public:
+  Smoother() : nav::LifecycleNode("smoother") {
+    stamped_ = declare_or_get_parameter("enable_stamped", true);
+    auto mode = declare_or_get_parameter("feedback", std::string("OPEN_LOOP"));
+    if (stamped_) {
+      stamped_sub_ = create_subscription<geometry_msgs::msg::TwistStamped>(
+        "cmd_vel", 1, [](geometry_msgs::msg::TwistStamped::SharedPtr) {});
+    } else {
+      sub_ = create_subscription<geometry_msgs::msg::Twist>(
+        "cmd_vel", 1, [](geometry_msgs::msg::Twist::SharedPtr) {});
+    }
+  }
+private:
+  bool stamped_{false};
+  rclcpp::Subscription<geometry_msgs::msg::Twist>::SharedPtr sub_;
+  rclcpp::Subscription<geometry_msgs::msg::TwistStamped>::SharedPtr stamped_sub_;
+};
+"""
+
+
+def test_an_overload_chain_gives_one_declaration_and_read_per_call(tmp_path) -> None:
+    """Each ``declare_or_get_parameter(name, default)`` is one declaration (typed, with
+    its default) and one read of that name; it was also a read and a declaration named
+    '?' and, for a string default, ones named after the default ("OPEN_LOOP")."""
+    (tmp_path / "package.xml").write_text(
+        '<package format="3"><name>smoother</name><version>0.0.0</version>'
+        '<description>d</description><maintainer email="a@b.c">m</maintainer>'
+        '<license>MIT</license><depend>rclcpp</depend><depend>geometry_msgs</depend>'
+        '<export><build_type>ament_cmake</build_type></export></package>\n')
+    (tmp_path / "include" / "smoother").mkdir(parents=True)
+    (tmp_path / "include" / "smoother" / "lifecycle.hpp").write_text(NAV_COMMON)
+    (tmp_path / "smoother.cpp").write_text(DECLARE_OR_GET)
+    result = extract_cpp([str(tmp_path / "smoother.cpp")], scan([str(tmp_path)]),
+                         cache_dir=None)
+    found = sorted((c.kind, c.name, c.type, c.default, c.variable) for c in result.calls
+                   if c.kind in ("declare", "read"))
+    assert found == [
+        ("declare", "enable_stamped", "bool", True, "stamped_"),
+        ("declare", "feedback", "str", "OPEN_LOOP", None),
+        ("read", "enable_stamped", None, None, "stamped_"),
+        ("read", "feedback", None, None, None),
+    ]

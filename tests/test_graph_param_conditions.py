@@ -201,10 +201,15 @@ NODE2 = """
         if (status_) {
           status_pub_ = create_publisher<std_msgs::msg::String>("status", 10);
         }
+        declare_parameter("publish_extra", true);
+        get_parameter("publish_extra", extra_);
+        if (extra_) {
+          extra_pub_ = create_publisher<std_msgs::msg::String>("extra", 10);
+        }
       }
      private:
-      bool debug_, status_;
-      rclcpp::Publisher<std_msgs::msg::String>::SharedPtr debug_pub_, status_pub_;
+      bool debug_, status_, extra_;
+      rclcpp::Publisher<std_msgs::msg::String>::SharedPtr debug_pub_, status_pub_, extra_pub_;
     };
 
     int main(int argc, char** argv) {
@@ -235,6 +240,8 @@ def test_ros2_declared_parameters_decide_conditions(write_tree):
     published = _publishers(config, "/gated2")
     assert published.get("status") == []  # declared false, the launch file sets true
     assert "debug" not in published       # declared with the default false, not set
+    # read without a default after a declaration with one: the declaration's default
+    assert published.get("extra") == []
 
 
 def test_the_condition_grammar_reads_only_what_it_can_compute():

@@ -7,7 +7,7 @@ this instance gives it:
 - a member variable that one parameter read of the same file stores into
   (``PrimitiveCall.variable``): the value the configuration gives the parameter (the
   launch files', with no launch condition and no node setting it), else the read's
-  default (a ROS 2 read without one: the declaration's of the same parameter); a value
+  default (a ROS 2 read without one: the node's declarations of the parameter); a value
   whose type is not the read's is not used (roscpp would keep the default, rclcpp would
   refuse it);
 - ``argc`` / ``argv`` of a condition in ``main`` (``Condition.program_args``) of a
@@ -241,21 +241,22 @@ def _read_value(link: Link) -> object:
 def _member_values(instance: NodeInstance) -> Callable[..., object]:
     """A member's value, by name and the file of the condition using it."""
     reads: dict[tuple[str | None, str], list[Link]] = {}
+    declared: dict[int, list[Link]] = {}  # parameter -> the instance's declarations of it
     for link in instance.links:
         if link.call is not None and link.call.variable and link.kind in ("read", "declare"):
             reads.setdefault((link.call.location.file, link.call.variable), []).append(link)
+        if link.call is not None and link.call.kind == "declare":
+            declared.setdefault(id(link.resource), []).append(link)
 
     def value(name: str, *, file: str | None) -> object:
         found = reads.get((file, name))
         if not found:
             return Unknown(f"{name} is not known to hold a parameter")
-        # a ROS 2 read without a default of a parameter declared with one here gets
-        # what the declaration gets (nav2's declare_or_get_parameter(name, default))
-        declared = {id(link.resource) for link in found
-                    if link.call is not None and link.call.kind == "declare"}
-        found = [link for link in found if not (
-            link.call is not None and link.call.kind == "read"
-            and not link.call.has_default and id(link.resource) in declared)]
+        # a ROS 2 read without a default gets what the node's declarations of that
+        # parameter get (``declare_parameter("p", true); get_parameter("p", p_)``)
+        found = [each for link in found for each in (
+            declared.get(id(link.resource), [link]) if link.call is not None and (
+                link.call.kind == "read" and not link.call.has_default) else [link])]
         values = [_read_value(link) for link in found]
         first = values[0]
         if any(is_unknown(v) for v in values) or any(v != first for v in values[1:]):
