@@ -217,7 +217,10 @@ def choose(path: str, launch: Iterable[str] = (), args: Mapping[str, str] | None
     if os.path.isdir(path):
         top = os.path.abspath(path)
         src = os.path.join(top, "src")
-        folder = src if os.path.isdir(src) else top
+        # a workspace keeps its packages in src/; a package's own folder (its
+        # package.xml at the top: pointcloud_to_laserscan) keeps its C++ sources there
+        folder = src if os.path.isdir(src) and not os.path.isfile(
+            os.path.join(top, "package.xml")) else top
     workspace = scan([folder], env)
     if not workspace.packages:
         raise ProjectError(path, 0, 0, f"no ROS package (package.xml) under {folder}")

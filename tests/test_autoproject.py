@@ -182,3 +182,25 @@ def test_explain_takes_rule_ids(capsys) -> None:
     assert main(["explain"]) == 0
     listing = capsys.readouterr().out
     assert "LAUNCH_UNKNOWN_TAG" in listing and "topic-type-mismatch" in listing
+
+
+def test_a_package_folder_with_its_sources_in_src(tmp_path: Path) -> None:
+    """A repository of one package (pointcloud_to_laserscan, teleop_twist_joy): its
+    package.xml at the top and its C++ sources in src/. It is the package, not a
+    workspace whose packages are under src/ (that was "no ROS package under src")."""
+    package = tmp_path / "pointcloud_to_laserscan"
+    write(package / "package.xml", ROS2_PKG.format(name="pointcloud_to_laserscan"))
+    write(package / "CMakeLists.txt", "project(pointcloud_to_laserscan)\n"
+          "add_executable(p2l src/p2l.cpp)\n"
+          "install(DIRECTORY launch DESTINATION share/${PROJECT_NAME})\n")
+    write(package / "src" / "p2l.cpp", "int main() { return 0; }\n")
+    write(package / "launch" / "p2l.launch.py", """\
+        from launch import LaunchDescription
+        from launch_ros.actions import Node
+
+        def generate_launch_description():
+            return LaunchDescription([Node(package='pointcloud_to_laserscan', executable='p2l')])
+        """)
+    choice = choose(str(package), environment={})
+    assert [c.name for c in choice.project.configurations] == ["pointcloud_to_laserscan/p2l"]
+    assert choice.project.workspace == [str(package)]
