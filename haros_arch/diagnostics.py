@@ -102,6 +102,12 @@ CATALOGUE: dict[str, Entry] = {
         "The plugin description names a library that no add_library of the package "
         "builds and no PLUGINLIB_EXPORT_CLASS in a library names the class; the nodelet or "
         "plugin is kept without sources."),
+    "PLUGIN_CLASS_NOT_BUILT": Entry(
+        "warning", "no source that library {library} builds exports {cls} (plugin {plugin})",
+        "The library's sources export other plugin classes (PLUGINLIB_EXPORT_CLASS and "
+        "the like) but not this one: the file that does is not built by default (added "
+        "under a CMake option or condition that is off), or exports it in a way not read. "
+        "The nodelet or plugin is kept without sources: its interface is unknown."),
     "PLUGIN_NOT_FOUND": Entry(
         "warning", "plugin class {plugin} loaded by {host} is not exported by an analysed "
         "package",

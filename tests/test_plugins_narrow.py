@@ -42,3 +42,67 @@ def test_a_component_keeps_the_helpers_it_names(tmp_path: Path) -> None:
     assert narrow(SOURCES, "pre::CropBox", ws) == [
         "pre/src/filter.cpp", "pre/src/util.cpp", "pre/src/crop_box.cpp"]
     assert narrow(SOURCES, "pre::Concat", ws) == ["pre/src/matching.cpp", "pre/src/concat.cpp"]
+
+
+def test_a_class_no_built_file_exports_has_no_sources(tmp_path: Path) -> None:
+    """ouster_ros's OusterPcap: its description lists it with the library's other
+    nodelets, but the file that exports it is added only under a CMake option that is
+    off. The library's files export other classes: this one's code is not there, so
+    its node has no source (its interface unknown, with a PLUGIN_CLASS_NOT_BUILT
+    warning), not the helpers' calls (which made the parameters the launch file gives
+    it 'set but never read')."""
+    for name, text in FILES.items():
+        path = tmp_path / "pre" / name
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(text)
+    ws = scan([str(tmp_path)])
+    assert narrow(SOURCES, "pre::Replay", ws) == []
+    # a library whose files export nothing: its classes keep the helpers (as before)
+    assert narrow(["pre/src/filter.cpp", "pre/src/util.cpp"], "pre::Replay", ws) == [
+        "pre/src/filter.cpp", "pre/src/util.cpp"]
+
+
+def test_the_description_of_a_class_nobody_builds(write_tree) -> None:
+    from haros_arch.pipeline import Options, analyse
+    from haros_arch.project import load
+
+    root = write_tree({
+        "src/lidar/package.xml": (
+            "<package format='2'><name>lidar</name><version>1.0.0</version>"
+            "<description>d</description><maintainer email='a@b.c'>m</maintainer>"
+            "<license>BSD</license><buildtool_depend>catkin</buildtool_depend>"
+            "<depend>nodelet</depend><export>"
+            "<nodelet plugin='${prefix}/nodelets.xml'/></export></package>"),
+        "src/lidar/CMakeLists.txt": (
+            "project(lidar)\noption(BUILD_PCAP \"pcap\" OFF)\n"
+            "set(SRC src/driver.cpp)\nif (BUILD_PCAP)\n  list(APPEND SRC src/pcap.cpp)\n"
+            "endif()\nadd_library(lidar_nodelets ${SRC})\n"),
+        "src/lidar/nodelets.xml": (
+            "<library path='lib/liblidar_nodelets'>\n"
+            "<class name='lidar/Driver' type='lidar::Driver' "
+            "base_class_type='nodelet::Nodelet'/>\n"
+            "<class name='lidar/Pcap' type='lidar::Pcap' "
+            "base_class_type='nodelet::Nodelet'/>\n</library>\n"),
+        "src/lidar/src/driver.cpp": (
+            "#include <nodelet/nodelet.h>\n#include <pluginlib/class_list_macros.h>\n"
+            "namespace lidar { class Driver : public nodelet::Nodelet {\n"
+            "  void onInit() override { getPrivateNodeHandle().param(\"port\", port_, 7); }\n"
+            "  int port_; }; }\nPLUGINLIB_EXPORT_CLASS(lidar::Driver, nodelet::Nodelet)\n"),
+        "src/lidar/src/pcap.cpp": (
+            "#include <nodelet/nodelet.h>\n#include <pluginlib/class_list_macros.h>\n"
+            "namespace lidar { class Pcap : public nodelet::Nodelet {\n"
+            "  void onInit() override { getPrivateNodeHandle().param(\"file\", f_, 0); }\n"
+            "  int f_; }; }\nPLUGINLIB_EXPORT_CLASS(lidar::Pcap, nodelet::Nodelet)\n"),
+        "src/lidar/launch/replay.launch": (
+            "<launch>\n<node pkg='nodelet' type='nodelet' name='mgr' args='manager'/>\n"
+            "<node pkg='nodelet' type='nodelet' name='pcap' args='load lidar/Pcap mgr'>\n"
+            "  <param name='file' value='1'/>\n</node>\n</launch>\n"),
+        "project.yaml": "project: p\nworkspace: src\nconfigurations:\n"
+                        "  c: [lidar/launch/replay.launch]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {}, Options(cache_dir=None))
+    pcap = next(n for n in model.nodes if n.name == "lidar/lidar/Pcap")
+    assert pcap.sources == [] and pcap.completeness == "unknown"
+    driver = next(n for n in model.nodes if n.name == "lidar/lidar/Driver")
+    assert driver.sources == ["lidar/src/driver.cpp"]
+    assert "PLUGIN_CLASS_NOT_BUILT" in [d.code for d in model.diagnostics]

@@ -33,8 +33,9 @@ from .hosts import node_name_patterns, plugin_bases
 NODE_PLUGIN_KINDS = ("nodelet",)
 _EXPORT = re.compile(
     r"(PLUGINLIB_EXPORT_CLASS|PLUGINLIB_DECLARE_CLASS|RCLCPP_COMPONENTS_REGISTER_NODE"
-    r"|MAVROS_PLUGIN_REGISTER)\s*\(([^)]*)\)")
-_EXPORT_MARKS = ("PLUGINLIB_", "RCLCPP_COMPONENTS_", "MAVROS_PLUGIN_REGISTER")
+    r"|MAVROS_PLUGIN_REGISTER|CLASS_LOADER_REGISTER_CLASS)\s*\(([^)]*)\)")
+_EXPORT_MARKS = ("PLUGINLIB_", "RCLCPP_COMPONENTS_", "MAVROS_PLUGIN_REGISTER",
+                 "CLASS_LOADER_REGISTER_CLASS")
 MAX_NAME_SCAN = 200_000  # characters of a source searched for a plugin node's name
 
 
@@ -112,6 +113,9 @@ def plugin_classes(package: Package, workspace: Files, libraries: Mapping[str, L
                 files = [] if library is None else library.sources if (
                     kind == "nodelet" or library.own is None) else library.own
                 sources = narrow(files, registered, workspace)
+                if files and not sources:
+                    found.append(diag.make("PLUGIN_CLASS_NOT_BUILT", where, plugin=name,
+                                           cls=registered, library=wanted or "?"))
                 nodes.append(Node(package.name, name, kind, "cpp", sources,
                                   rosname=_node_name(sources, names.get(base), workspace),
                                   conditions=library.conditions if library else (),
@@ -163,10 +167,12 @@ def narrow(sources: list[str], cls: str, workspace: Files) -> list[str]:
     pointcloud_preprocessor
     builds 38 components in one library, and only the concatenation component uses
     ``collector_matching_strategy.cpp``, whose calls read ``matching_strategy.*``.
+    Empty when the library's files export other classes and not this one.
     """
     cls = cls.lstrip(":")
     own: list[str] = []
     helpers: list[str] = []
+    others = False  # a file exports another class: the library names its classes so
     for source in sources:
         exported = {name for name, _ in exported_classes(
             os.path.join(workspace.root, source), workspace)}
@@ -174,7 +180,14 @@ def narrow(sources: list[str], cls: str, workspace: Files) -> list[str]:
             own.append(source)
         elif not exported:
             helpers.append(source)
+        else:
+            others = True
     if not own:
+        if others:
+            # the library exports its other classes and not this one: its code is not
+            # built there (ouster_ros's OusterPcap, whose source only BUILD_PCAP adds):
+            # no source, the class's interface unknown (not the helpers' calls)
+            return []
         kept = helpers
         return kept if kept else sources
     words: set[str] = set()
