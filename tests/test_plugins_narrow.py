@@ -57,6 +57,13 @@ def test_a_class_no_built_file_exports_has_no_sources(tmp_path: Path) -> None:
         path.write_text(text)
     ws = scan([str(tmp_path)])
     assert narrow(SOURCES, "pre::Replay", ws) == []
+    # a class template's specialisation, as its description and export name it
+    # (nav2_behaviors::DriveOnHeading<>): its own file, not none (as the first version
+    # of this rule had it)
+    (tmp_path / "pre" / "src" / "heading.cpp").write_text(
+        "PLUGINLIB_EXPORT_CLASS(pre::Heading<>, pre::Behavior)\n")
+    assert narrow([*SOURCES, "pre/src/heading.cpp"], "pre::Heading<>", ws) == [
+        "pre/src/heading.cpp"]
     # a library whose files export nothing: its classes keep the helpers (as before)
     assert narrow(["pre/src/filter.cpp", "pre/src/util.cpp"], "pre::Replay", ws) == [
         "pre/src/filter.cpp", "pre/src/util.cpp"]

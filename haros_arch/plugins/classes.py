@@ -169,12 +169,14 @@ def narrow(sources: list[str], cls: str, workspace: Files) -> list[str]:
     ``collector_matching_strategy.cpp``, whose calls read ``matching_strategy.*``.
     Empty when the library's files export other classes and not this one.
     """
-    cls = cls.lstrip(":")
+    cls = _untemplated(cls.lstrip(":"))
     own: list[str] = []
     helpers: list[str] = []
     others = False  # a file exports another class: the library names its classes so
     for source in sources:
-        exported = {name for name, _ in exported_classes(
+        # as written in the export macro, whose words leave out template arguments
+        # (nav2's ``DriveOnHeading<>``, described as ``nav2_behaviors::DriveOnHeading<>``)
+        exported = {_untemplated(name) for name, _ in exported_classes(
             os.path.join(workspace.root, source), workspace)}
         if cls in exported:
             own.append(source)
@@ -207,6 +209,17 @@ def narrow(sources: list[str], cls: str, workspace: Files) -> list[str]:
 
 
 _WORD = re.compile(r"[A-Za-z_]\w*")
+_TEMPLATE_ARGUMENTS = re.compile(r"<[^<>]*>")
+
+
+def _untemplated(name: str) -> str:
+    """A class name without its template arguments (``ns::Filter<T>``: ``ns::Filter``)."""
+    for _ in range(8):
+        shorter = _TEMPLATE_ARGUMENTS.sub("", name)
+        if shorter == name:
+            break
+        name = shorter
+    return name.replace(" ", "")
 # ``Type Name::member(`` / ``Name<T>::member(`` on a line that starts in the first column
 # (a definition; a call in a body is indented): a member defined
 _MEMBER = re.compile(r"^(?![ \t])[\w:<>,&* \t]*?\b([A-Za-z_]\w*)\s*(?:<[^;{}()\n]*>)?\s*::"
