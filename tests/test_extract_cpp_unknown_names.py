@@ -499,7 +499,22 @@ def test_bond_constants_are_known(write_tree) -> None:
         "  Server() : Node(\"server\") {\n"
         "    declare_parameter(bond::msg::Constants::DISABLE_HEARTBEAT_TIMEOUT_PARAM, true);\n"
         "  }\n};\n")
-    # declared as rosidl declares a string constant (its value is in the library)
-    assert [(c.kind, c.name) for c in result.calls] == [("declare", "?")]
+    # the string constant's value (bond's Constants.msg): nav2's lifecycle nodes
+    # declare and set this parameter, which was '?' in each
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("declare", "/bond_disable_heartbeat_timeout")]
     assert not [d for d in result.diagnostics if d.code in (
         "CPP_MESSAGE_FIELD", "CPP_NAMES_DECLARED", "CPP_MESSAGE_UNKNOWN")]
+
+
+def test_a_string_constant_is_a_literal_the_parse_reads() -> None:
+    """A message's string constant is defined with its value, escaped (a quote, a
+    backslash, bytes that are not printable ASCII), in ROS 1 and ROS 2 headers."""
+    from haros_arch.extract.cpp import interfaces, ros2_interfaces
+
+    assert interfaces.string_literal('a"b\\c\u00e9\n') == '"a\\"b\\\\c\\303\\251\\012"'
+    fields = [interfaces.Field("string", "NAME", None, constant="/x")]
+    assert '  static inline const std::string NAME = "/x";' in interfaces._struct(
+        "C", fields, "pkg")
+    assert '  static inline const std::string NAME = "/x";' in ros2_interfaces._struct(
+        "C", fields, "pkg")

@@ -296,6 +296,22 @@ def fields_hook(qualified: str) -> list[str]:
     return [f"#ifdef {macro}", f"  {macro}", "#endif"]
 
 
+def string_literal(value: str) -> str:
+    """``value`` as a C++ string literal: printable ASCII as it is (``\\`` and ``"``
+    escaped), every other byte of its UTF-8 as an octal escape. A string constant's
+    value (bond's ``DISABLE_HEARTBEAT_TIMEOUT_PARAM``) is then what the parse reads."""
+    out = []
+    for byte in value.encode("utf-8"):
+        char = chr(byte)
+        if char in '\\"':
+            out.append("\\" + char)
+        elif 0x20 <= byte < 0x7F:
+            out.append(char)
+        else:
+            out.append(f"\\{byte:03o}")
+    return '"' + "".join(out) + '"'
+
+
 def fields_macro(qualified: str) -> str:
     return "HAROS_FIELDS_" + qualified.replace("::", "__")
 
@@ -308,7 +324,8 @@ def _struct(name: str, fields: list[Field], package: str, known: bool = True) ->
         cpp = _cpp_type(fld.type, package)
         if fld.constant is not None:
             if cpp == "std::string":
-                lines.append(f"  static const std::string {fld.name};")
+                lines.append(f"  static inline const std::string {fld.name} = "
+                             f"{string_literal(fld.constant)};")
             else:
                 lines.append(f"  static const {cpp} {fld.name} = {_number(fld.constant)};")
         elif fld.array is not None:

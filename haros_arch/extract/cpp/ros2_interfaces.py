@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import re
 
-from .interfaces import Field, Interface, fields_hook, qualified
+from .interfaces import Field, Interface, fields_hook, qualified, string_literal
 
 KINDS = ("msg", "srv", "action")
 PRIMITIVES = {
@@ -104,7 +104,8 @@ def _struct(name: str, fields: list[Field], package: str, kind: str = "msg",
         cpp = _cpp_type(fld.type, package)
         if fld.constant is not None:
             if cpp == "std::string":
-                lines.append(f"  static const std::string {fld.name};")
+                lines.append(f"  static inline const std::string {fld.name} = "
+                             f"{string_literal(fld.constant)};")
             else:
                 value = fld.constant if re.fullmatch(r"-?\d+(\.\d*)?([eE]-?\d+)?",
                                                      fld.constant) else "0"
