@@ -95,6 +95,9 @@ class RosFunction:
     # the call's name is the name argument's then this (a parameter client's remote node
     # + "/get_parameters"); no name argument, or an empty one, is the node's own "~"
     name_suffix: str | None = None
+    # the same function as ROS 2's library makes the call, where it differs (a class
+    # both have, by one name: camera_info_manager's CameraInfoManager)
+    ros2: RosFunction | None = None
 
 
 NODE_HANDLE = "ros::NodeHandle"
@@ -225,6 +228,14 @@ LIBRARIES: dict[tuple[str, str], RosFunction] = {
         on_handle=False, handle_default="~",
         siblings=(("publish", "parameter_descriptions", "dynamic_reconfigure/ConfigDescription"),
                   ("publish", "parameter_updates", "dynamic_reconfigure/Config"))),
+    # camera_info_manager (image_common): the calibration service, in ROS 1 in the
+    # namespace of the handle given, in ROS 2 the node's own (as from Jazzy on, the
+    # rclcpp the stand-ins are: Humble's is relative, "set_camera_info")
+    ("camera_info_manager::CameraInfoManager", "CameraInfoManager"): RosFunction(
+        "server", fixed_name="set_camera_info", fixed_type="sensor_msgs/SetCameraInfo",
+        on_handle=False, handle_default="", ros2=RosFunction(
+            "server", fixed_name="~/set_camera_info",
+            fixed_type="sensor_msgs/srv/SetCameraInfo", on_handle=False)),
     ("diagnostic_updater::Updater", "Updater"): RosFunction(
         "publish", fixed_name="/diagnostics", fixed_type="diagnostic_msgs/DiagnosticArray",
         on_handle=False),

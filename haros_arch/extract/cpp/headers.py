@@ -94,6 +94,7 @@ UMBRELLAS = {
     "tf2_eigen/": "tf2_eigen/tf2_eigen.hpp",
     "dynamic_reconfigure/": "dynamic_reconfigure/server.h",
     "diagnostic_updater/": "diagnostic_updater/diagnostic_updater.h",
+    "camera_info_manager/": "camera_info_manager/camera_info_manager.h",
     "bondcpp/": "bondcpp/bond.hpp",
     "realtime_tools/": "realtime_tools/realtime_publisher.h",
     # test nodes (rostest, launch_testing): without it a TEST's body, and every ROS call

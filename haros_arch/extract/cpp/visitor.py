@@ -483,6 +483,8 @@ class CallFinder:
               at: Cursor | None = None, at_scope: Scope | None = None) -> None:
         """Emit ``call`` of ``spec``; ``at`` is the call that makes it, when another one
         (``nh.subscribe(ops)`` for ``ops.init<M>(...)``) gives its location and handle."""
+        if self.ros2 and spec.ros2 is not None:
+            spec = spec.ros2  # the call as ROS 2's library makes it
         shift, handle_arg = 0, spec.handle_arg
         if spec.optional_handle and args and is_handle(args[0]):
             shift, handle_arg = 1, 0
