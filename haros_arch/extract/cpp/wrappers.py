@@ -124,6 +124,8 @@ class Wrappers:
         # id of each function of the unit -> its calls and unexposed expressions in
         # preorder (``_scan``), for ``CallFinder._gives``
         self.preorder: dict[int, list[Cursor]] = {}
+        # the wrapper methods (not constructors) by name, for a call on a dependent object
+        self._methods: dict[str, list[Cursor]] = {}
 
     # -- building -----------------------------------------------------------------------
 
@@ -216,6 +218,14 @@ class Wrappers:
         self.names = frozenset(
             "operator()" if f.kind == CursorKind.LAMBDA_EXPR else f.spelling.split("<")[0]
             for f in functions if _key(f.canonical) in self.summaries)
+        self._methods = {}
+        for f in functions:
+            if _key(f.canonical) in self.summaries and f.kind in (
+                CursorKind.CXX_METHOD, CursorKind.FUNCTION_TEMPLATE
+            ) and f.semantic_parent is not None and f.semantic_parent.kind in (
+                CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL, CursorKind.CLASS_TEMPLATE
+            ) and not is_constructor(f):
+                self._methods.setdefault(f.spelling.split("<")[0], []).append(f)
         if self.names:
             self.names |= {""}  # a call that depends on a template parameter
         # the names a grep for call sites looks for (``recall``): not those of wrappers
@@ -677,6 +687,14 @@ class Wrappers:
             found = self.summaries.get(_key(decl.canonical))
             if found:
                 return found
+        if children and children[0].kind == CursorKind.MEMBER_REF_EXPR:
+            # a method called on an object whose type depends on a template parameter
+            # (``this->node_.lock()`` in nav2's DriveOnHeading<ActionT>): the wrapper
+            # methods of that name, as the node's own API rows are matched by name
+            methods = [m for m in self._methods.get(_member_name(children[0]), ())
+                       if _fits(m, args)]
+            for method in closest(methods, args) if len(methods) > 1 else methods:
+                return self.summaries[_key(method.canonical)]
         return []
 
 
