@@ -377,3 +377,45 @@ def test_an_overload_chain_gives_one_declaration_and_read_per_call(tmp_path) -> 
         ("read", "enable_stamped", None, None, "stamped_"),
         ("read", "feedback", None, None, None),
     ]
+
+
+DEPENDENT_CALLER = """
+#include <memory>
+#include "smoother/lifecycle.hpp"
+
+template<typename ActionT>
+class TimedBase {
+protected:
+  std::weak_ptr<nav::LifecycleNode> node_;
+};
+
+template<typename ActionT = int>
+class Heading : public TimedBase<ActionT> {
+public:
+  void onConfigure() {
+    auto node = this->node_.lock();
+    limit_ = node->declare_or_get_parameter("limit", 2.5);
+  }
+  double limit_;
+};
+"""
+
+
+def test_a_wrapper_method_called_on_a_dependent_object(tmp_path) -> None:
+    """nav2's DriveOnHeading<ActionT> reads its limits through ``this->node_.lock()``,
+    whose type depends on the template parameter: the call is matched to the wrapper
+    methods of that name (it was no call, and the parameters the launch file sets for
+    the behavior server read as never read)."""
+    (tmp_path / "package.xml").write_text(
+        '<package format="3"><name>smoother</name><version>0.0.0</version>'
+        '<description>d</description><maintainer email="a@b.c">m</maintainer>'
+        '<license>MIT</license><depend>rclcpp</depend><depend>geometry_msgs</depend>'
+        '<export><build_type>ament_cmake</build_type></export></package>\n')
+    (tmp_path / "include" / "smoother").mkdir(parents=True)
+    (tmp_path / "include" / "smoother" / "lifecycle.hpp").write_text(NAV_COMMON)
+    (tmp_path / "heading.cpp").write_text(DEPENDENT_CALLER)
+    result = extract_cpp([str(tmp_path / "heading.cpp")], scan([str(tmp_path)]),
+                         cache_dir=None)
+    assert sorted((c.kind, c.name, c.type) for c in result.calls
+                  if c.location.file and c.location.file.endswith("heading.cpp")) == [
+        ("declare", "limit", "double"), ("read", "limit", None)]
