@@ -387,6 +387,7 @@ template<typename ActionT>
 class TimedBase {
 protected:
   std::weak_ptr<nav::LifecycleNode> node_;
+  std::string name_;
 };
 
 template<typename ActionT = int>
@@ -395,7 +396,9 @@ public:
   void onConfigure() {
     auto node = this->node_.lock();
     limit_ = node->declare_or_get_parameter("limit", 2.5);
+    speed_ = node->declare_or_get_parameter(this->name_ + ".speed", 1.0);
   }
+  double speed_;
   double limit_;
 };
 """
@@ -405,7 +408,9 @@ def test_a_wrapper_method_called_on_a_dependent_object(tmp_path) -> None:
     """nav2's DriveOnHeading<ActionT> reads its limits through ``this->node_.lock()``,
     whose type depends on the template parameter: the call is matched to the wrapper
     methods of that name (it was no call, and the parameters the launch file sets for
-    the behavior server read as never read)."""
+    the behavior server read as never read). The name built of the base's member and a
+    literal keeps the literal (a ``+`` the parse keeps as an operator: '?' it was), so
+    the host fills in the plugin's name."""
     (tmp_path / "package.xml").write_text(
         '<package format="3"><name>smoother</name><version>0.0.0</version>'
         '<description>d</description><maintainer email="a@b.c">m</maintainer>'
@@ -418,4 +423,5 @@ def test_a_wrapper_method_called_on_a_dependent_object(tmp_path) -> None:
                          cache_dir=None)
     assert sorted((c.kind, c.name, c.type) for c in result.calls
                   if c.location.file and c.location.file.endswith("heading.cpp")) == [
-        ("declare", "limit", "double"), ("read", "limit", None)]
+        ("declare", "?.speed", "double"), ("declare", "limit", "double"),
+        ("read", "?.speed", None), ("read", "limit", None)]

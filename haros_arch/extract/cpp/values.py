@@ -210,7 +210,27 @@ class Scope:
             return self.string(value, depth + 1)
         if kind == CursorKind.CALL_EXPR:
             return self._string_call(cursor, depth)
+        if kind == CursorKind.BINARY_OPERATOR:
+            return self._string_sum(cursor, depth)
         return UNKNOWN
+
+    def _string_sum(self, cursor: Cursor, depth: int) -> Parts:
+        """``a + b`` that the parse kept as an operator, not a call of ``operator+``:
+        an operand's type depends on a template parameter (``this->behavior_name_ +
+        ".acceleration_limit"`` in nav2's DriveOnHeading<ActionT>); a concatenation when
+        one side is a string."""
+        children = [c for c in cursor.get_children() if c.kind.is_expression()]
+        if len(children) != 2:
+            return UNKNOWN
+        end = children[0].extent.end.offset
+        operator = next((t.spelling for t in cursor.get_tokens()
+                         if t.extent.start.offset >= end), None)
+        if operator != "+":
+            return UNKNOWN
+        left, right = (self.string(c, depth + 1) for c in children)
+        if all(part is None for part in (*left, *right)):
+            return UNKNOWN
+        return left + right
 
     def field(self, decl: Cursor) -> tuple[Cursor, Scope] | None:
         """A member this function does not write: the value its class's constructor
