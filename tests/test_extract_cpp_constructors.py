@@ -168,15 +168,20 @@ int main(int argc, char ** argv) {
 """
 
 
+def _with_velocity_input(root) -> None:
+    """A ROS 2 package at ``root`` with ``SUBSCRIBER_HEADER`` as
+    ``twist_relay/velocity_input.hpp``."""
+    (root / "include" / "twist_relay").mkdir(parents=True)
+    (root / "package.xml").write_text(ROS2_MANIFEST)
+    (root / "include" / "twist_relay" / "velocity_input.hpp").write_text(SUBSCRIBER_HEADER)
+
+
 def test_a_header_constructor_built_in_one_unit_is_named_in_the_others(tmp_path) -> None:
     """The constructor is defined in a header that both units of the node include; one
     unit builds it with "cmd_vel", the other only includes it. The other unit's copy of
     the call is filled with what the first passes (it was a second subscription named
     '?')."""
-    (tmp_path / "package.xml").write_text(ROS2_MANIFEST)
-    (tmp_path / "include" / "twist_relay").mkdir(parents=True)
-    (tmp_path / "include" / "twist_relay" / "velocity_input.hpp").write_text(
-        SUBSCRIBER_HEADER)
+    _with_velocity_input(tmp_path)
     (tmp_path / "input.cpp").write_text(BUILDS_IT)
     (tmp_path / "main.cpp").write_text(INCLUDES_IT)
     result = extract_cpp([str(tmp_path / "main.cpp"), str(tmp_path / "input.cpp")],
@@ -190,10 +195,7 @@ def test_a_header_constructor_no_unit_builds_makes_no_call(tmp_path) -> None:
     TwistSubscriber and FootprintSubscriber, included by nodes that build neither):
     the constructor's subscription, named after its parameter, is not the node's. It was
     a subscription named '?'."""
-    (tmp_path / "package.xml").write_text(ROS2_MANIFEST)
-    (tmp_path / "include" / "twist_relay").mkdir(parents=True)
-    (tmp_path / "include" / "twist_relay" / "velocity_input.hpp").write_text(
-        SUBSCRIBER_HEADER)
+    _with_velocity_input(tmp_path)
     (tmp_path / "main.cpp").write_text(INCLUDES_IT.replace(
         "std::unique_ptr<VelocityInput> make_input(const rclcpp::Node::SharedPtr & node);\n",
         "").replace("  auto input = make_input(node);\n",
@@ -246,10 +248,7 @@ def test_a_construction_whose_arguments_are_not_read_still_makes_the_calls(tmp_p
     """The unit builds the class with a topic of a type the parse does not know (a
     vendor helper's): nothing is read from the construction, but the class is built, so
     its subscription is the node's, named '?'."""
-    (tmp_path / "package.xml").write_text(ROS2_MANIFEST)
-    (tmp_path / "include" / "twist_relay").mkdir(parents=True)
-    (tmp_path / "include" / "twist_relay" / "velocity_input.hpp").write_text(
-        SUBSCRIBER_HEADER)
+    _with_velocity_input(tmp_path)
     (tmp_path / "input.cpp").write_text(BUILDS_IT.replace(
         '#include <memory>\n', '#include <memory>\n#include <vendor/topics.hpp>\n').replace(
         '(node, "cmd_vel")', "(node, vendor::Topics::velocity())"))
@@ -321,10 +320,7 @@ def test_an_error_away_from_any_construction_does_not_keep_the_calls(tmp_path) -
     navigation's costmap tools: errors in a helper of their library, none near a
     construction of Costmap2DROS) cannot hide a construction of it: the calls of the
     constructor nobody calls are still left out."""
-    (tmp_path / "package.xml").write_text(ROS2_MANIFEST)
-    (tmp_path / "include" / "twist_relay").mkdir(parents=True)
-    (tmp_path / "include" / "twist_relay" / "velocity_input.hpp").write_text(
-        SUBSCRIBER_HEADER)
+    _with_velocity_input(tmp_path)
     (tmp_path / "main.cpp").write_text(INCLUDES_IT.replace(
         "std::unique_ptr<VelocityInput> make_input(const rclcpp::Node::SharedPtr & node);\n",
         "int helper() { return vendor::count(); }\n").replace(
@@ -381,9 +377,7 @@ def test_the_cache_keeps_what_a_unit_says_of_its_constructions(tmp_path) -> None
     """The calls' constructor and the unit's unseen words are kept in the cache: a run
     answered from it leaves out and keeps the same calls as the parse."""
     root = tmp_path / "ws"
-    (root / "include" / "twist_relay").mkdir(parents=True)
-    (root / "package.xml").write_text(ROS2_MANIFEST)
-    (root / "include" / "twist_relay" / "velocity_input.hpp").write_text(SUBSCRIBER_HEADER)
+    _with_velocity_input(root)
     (root / "main.cpp").write_text(INCLUDES_IT.replace(
         "std::unique_ptr<VelocityInput> make_input(const rclcpp::Node::SharedPtr & node);\n",
         "").replace("  auto input = make_input(node);\n", ""))

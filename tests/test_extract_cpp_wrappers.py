@@ -355,10 +355,9 @@ private:
 """
 
 
-def test_an_overload_chain_gives_one_declaration_and_read_per_call(tmp_path) -> None:
-    """Each ``declare_or_get_parameter(name, default)`` is one declaration (typed, with
-    its default) and one read of that name; it was also a read and a declaration named
-    '?' and, for a string default, ones named after the default ("OPEN_LOOP")."""
+def _with_nav_common(tmp_path, name: str, source: str) -> CppResult:
+    """The calls of ``source``, a ROS 2 package's file ``name`` that includes
+    ``NAV_COMMON`` as ``smoother/lifecycle.hpp``."""
     (tmp_path / "package.xml").write_text(
         '<package format="3"><name>smoother</name><version>0.0.0</version>'
         '<description>d</description><maintainer email="a@b.c">m</maintainer>'
@@ -366,9 +365,15 @@ def test_an_overload_chain_gives_one_declaration_and_read_per_call(tmp_path) -> 
         '<export><build_type>ament_cmake</build_type></export></package>\n')
     (tmp_path / "include" / "smoother").mkdir(parents=True)
     (tmp_path / "include" / "smoother" / "lifecycle.hpp").write_text(NAV_COMMON)
-    (tmp_path / "smoother.cpp").write_text(DECLARE_OR_GET)
-    result = extract_cpp([str(tmp_path / "smoother.cpp")], scan([str(tmp_path)]),
-                         cache_dir=None)
+    (tmp_path / name).write_text(source)
+    return extract_cpp([str(tmp_path / name)], scan([str(tmp_path)]), cache_dir=None)
+
+
+def test_an_overload_chain_gives_one_declaration_and_read_per_call(tmp_path) -> None:
+    """Each ``declare_or_get_parameter(name, default)`` is one declaration (typed, with
+    its default) and one read of that name; it was also a read and a declaration named
+    '?' and, for a string default, ones named after the default ("OPEN_LOOP")."""
+    result = _with_nav_common(tmp_path, "smoother.cpp", DECLARE_OR_GET)
     found = sorted((c.kind, c.name, c.type, c.default, c.variable) for c in result.calls
                    if c.kind in ("declare", "read"))
     assert found == [
@@ -411,16 +416,7 @@ def test_a_wrapper_method_called_on_a_dependent_object(tmp_path) -> None:
     the behavior server read as never read). The name built of the base's member and a
     literal keeps the literal (a ``+`` the parse keeps as an operator: '?' it was), so
     the host fills in the plugin's name."""
-    (tmp_path / "package.xml").write_text(
-        '<package format="3"><name>smoother</name><version>0.0.0</version>'
-        '<description>d</description><maintainer email="a@b.c">m</maintainer>'
-        '<license>MIT</license><depend>rclcpp</depend><depend>geometry_msgs</depend>'
-        '<export><build_type>ament_cmake</build_type></export></package>\n')
-    (tmp_path / "include" / "smoother").mkdir(parents=True)
-    (tmp_path / "include" / "smoother" / "lifecycle.hpp").write_text(NAV_COMMON)
-    (tmp_path / "heading.cpp").write_text(DEPENDENT_CALLER)
-    result = extract_cpp([str(tmp_path / "heading.cpp")], scan([str(tmp_path)]),
-                         cache_dir=None)
+    result = _with_nav_common(tmp_path, "heading.cpp", DEPENDENT_CALLER)
     assert sorted((c.kind, c.name, c.type) for c in result.calls
                   if c.location.file and c.location.file.endswith("heading.cpp")) == [
         ("declare", "?.speed", "double"), ("declare", "limit", "double"),

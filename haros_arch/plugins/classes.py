@@ -220,6 +220,8 @@ def _untemplated(name: str) -> str:
             break
         name = shorter
     return name.replace(" ", "")
+
+
 # ``Type Name::member(`` / ``Name<T>::member(`` on a line that starts in the first column
 # (a definition; a call in a body is indented): a member defined
 _MEMBER = re.compile(r"^(?![ \t])[\w:<>,&* \t]*?\b([A-Za-z_]\w*)\s*(?:<[^;{}()\n]*>)?\s*::"

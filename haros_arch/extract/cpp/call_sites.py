@@ -202,15 +202,14 @@ def callee_of(call: Cursor) -> Cursor | None:
     if ctype.kind != TypeKind.RECORD or ctype.get_num_template_arguments() < 1:
         return None
     decl = ctype.get_template_argument_type(0).get_canonical().get_declaration()
-    count = len(written_arguments(call))
+    args = written_arguments(call)
     # a constructor, or a constructor template (``template<class F> T(node, topic, F cb)``)
     found = [c for c in decl.get_children()
              if (c.kind == CursorKind.CONSTRUCTOR or (
                  c.kind == CursorKind.FUNCTION_TEMPLATE
                  and c.spelling.split("<")[0] == decl.spelling.split("<")[0]))
-             and _takes(c, count)]
-    if len(found) > 1:
-        found = closest(found, written_arguments(call))
+             and _takes(c, len(args))]
+    found = closest(found, args)
     return found[0] if len(found) == 1 else None
 
 
@@ -221,7 +220,10 @@ def closest(functions: list[Cursor], args: list[Cursor]) -> list[Cursor]:
     template before a template (nav2's CostmapSubscriber takes a
     ``LifecycleNode::WeakPtr``, or any ``NodeT``, and a topic; nav2's
     ``declare_or_get_parameter(node, name, descriptor)`` before the overload over any
-    ``default_value``)."""
+    ``default_value``). Fewer than two are as they are."""
+    if len(functions) < 2:
+        return functions
+
     def score(function: Cursor) -> tuple[int, int, bool]:
         params = [p for p in function.get_children() if p.kind == CursorKind.PARM_DECL]
         same = generic = 0

@@ -154,9 +154,8 @@ class CallFinder:
         self.wrappers.preorder.clear()
         # the member's writes are all these reads, of one parameter (nav2's
         # TwistSubscriber: each of its two constructors reads enable_stamped_cmd_vel
-        # into is_stamped_ with the same default)
-        # (a call site may make two calls, nav2's declare_or_get_parameter: a
-        # declaration and a read)
+        # into is_stamped_ with the same default), grouped by call site: one site may
+        # make two calls (nav2's declare_or_get_parameter: a declaration and a read)
         stored: dict[tuple[str, int], dict[object, list[PrimitiveCall]]] = {}
         members: dict[tuple[str, int], Cursor] = {}
         for read, member in self._stored:

@@ -691,9 +691,7 @@ class Wrappers:
             # a method called on an object whose type depends on a template parameter
             # (``this->node_.lock()`` in nav2's DriveOnHeading<ActionT>): the wrapper
             # methods of that name, as the node's own API rows are matched by name
-            methods = [m for m in self._methods.get(_member_name(children[0]), ())
-                       if _fits(m, args)]
-            for method in closest(methods, args) if len(methods) > 1 else methods:
+            for method in _preferred(self._methods.get(_member_name(children[0]), []), args):
                 return self.summaries[_key(method.canonical)]
         return []
 
@@ -936,10 +934,15 @@ def _overloads(head: Cursor) -> list[Cursor]:
 
 
 def _fitting(head: Cursor, args: list[Cursor]) -> list[Cursor]:
-    """The overloads an unresolved call's name may be that may take ``args``, the
-    ones C++ would rather call (``call_sites.closest``)."""
-    found = [decl for decl in _overloads(head) if _fits(decl, args)]
-    return closest(found, args) if len(found) > 1 else found
+    """The overloads an unresolved call's name may be that C++ would rather call with
+    ``args``."""
+    return _preferred(_overloads(head), args)
+
+
+def _preferred(functions: list[Cursor], args: list[Cursor]) -> list[Cursor]:
+    """Of ``functions``, those that may take ``args`` and that C++ would rather call
+    (``call_sites.closest``)."""
+    return closest([f for f in functions if _fits(f, args)], args)
 
 
 def _fits(decl: Cursor, args: list[Cursor]) -> bool:
