@@ -345,3 +345,23 @@ def generate_launch_description():
     assert {p.key: p.value for p in model.params} == {
         "file": "adapi/node/interface/x.json", "joined": "adapi/node/interface/y"}
     assert codes(model) == []
+
+
+def test_dashing_keywords_of_node_and_composable_node(write_tree):
+    # joystick_drivers' joy-composed-launch.py: ComposableNode(node_plugin=, node_name=)
+    model, _ = run(write_tree, """
+from launch_ros.actions import ComposableNodeContainer
+from launch_ros.descriptions import ComposableNode
+
+def generate_launch_description():
+    return LaunchDescription([ComposableNodeContainer(
+        node_name='joy_container', node_namespace='', package='rclcpp_components',
+        node_executable='component_container', composable_node_descriptions=[
+            ComposableNode(package='joy', node_plugin='joy::Joy', node_name='joy_node',
+                           node_namespace='pad', parameters=[{'device_id': 0}])])])
+""")
+    assert [(n.name, n.package, n.executable, n.container) for n in model.nodes] == [
+        ("/joy_container", "rclcpp_components", "component_container", None),
+        ("/pad/joy_node", "joy", "joy::Joy", "/joy_container")]
+    assert [p.name for p in model.params] == ["/pad/joy_node/device_id"]
+    assert codes(model) == []

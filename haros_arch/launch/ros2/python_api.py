@@ -277,9 +277,11 @@ def node(container: bool) -> Builder:
 
 
 def composable_node(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    # node_plugin/node_name/node_namespace: the Dashing spelling, read as node() reads its own
     return e.ComposableNode(
-        text_or_none(k.get("package")), text_or_none(k.get("plugin")),
-        text_or_none(k.get("name")), text_or_none(k.get("namespace")),
+        text_or_none(k.get("package")), text_or_none(k.get("plugin", k.get("node_plugin"))),
+        text_or_none(k.get("name", k.get("node_name"))),
+        text_or_none(k.get("namespace", k.get("node_namespace"))),
         parameters(i, k.get("parameters"), n), remappings(i, k.get("remappings"), n),
         cond(i, k.get("condition"), n), i.where(n))
 
