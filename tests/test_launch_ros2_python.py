@@ -365,3 +365,35 @@ def generate_launch_description():
         ("/pad/joy_node", "joy", "joy::Joy", "/joy_container")]
     assert [p.name for p in model.params] == ["/pad/joy_node/device_id"]
     assert codes(model) == []
+
+
+def test_str_and_repr_of_literal_containers(write_tree):
+    # linorobot2 sensors.launch.py: the condition tests a name against str() of a list
+    model, _ = run(write_tree, """
+laser = os.getenv('LASER', '')
+topics = {'': ['', ''], 'realsense': ['/camera/depth', '/camera/info'], 'zed': ['/zed', '/zi']}
+SENSORS = ['zed', 'zed2']
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package='d2l', executable='d2l_node', name='d2l',
+             condition=IfCondition(PythonExpression(
+                 ['"" != "', laser, '" and "', laser, '" in "',
+                  str(list(topics.keys())[1:]), '"'])),
+             remappings=[('depth', topics[laser][0])]),
+        Node(package='p', executable='e', name='zed', condition=IfCondition(PythonExpression(
+            ['"zed2" in ', str(SENSORS)])),
+             parameters=[{'texts': repr((1, 'a', None, {'k': [True, 2.5]})),
+                          'plain': str(3) + repr('x'), 'f': f'{SENSORS}|{SENSORS!r:>18}'}]),
+        Node(package='p', executable='e', name='unknown',
+             parameters=[{'sub': str([LaunchConfiguration('x')])}]),
+    ])
+""")
+    assert [n.name for n in model.nodes] == ["/zed", "/unknown"]
+    params = {p.name: p.value for p in model.params}
+    assert params["/zed/texts"] == "(1, 'a', None, {'k': [True, 2.5]})"
+    assert params["/zed/plain"] == "3'x'"
+    assert params["/zed/f"] == "['zed', 'zed2']|   ['zed', 'zed2']"
+    assert params["/unknown/sub"] is None  # a substitution's text is not ours to print
+    assert [(d.code, d.message) for d in model.diagnostics] == [
+        ("LAUNCH_UNSUPPORTED", "str() of values not known statically")]

@@ -238,6 +238,12 @@ def _str(*args: Any) -> str:
     return str(*args)
 
 
+def _repr(*args: Any) -> str:
+    if args:
+        budget.check_text(args[0])
+    return repr(*args)
+
+
 def _int(*args: Any) -> int:
     if args and isinstance(args[0], float) and not math.isfinite(args[0]):
         raise ValueError("cannot convert an infinite or NaN float to an integer")
@@ -262,6 +268,9 @@ BUILTINS: Mapping[str, Callable[..., Any]] = {
     "set": set, "reversed": lambda x: list(reversed(x)),
     "range": _range,
 }
+
+# bounded builtins a reader offers beyond ``BUILTINS`` (``repr``: Python launch files)
+BOUNDED: Mapping[str, Callable[..., Any]] = {"repr": _repr}
 
 MATH: Mapping[str, Any] = {
     **{name: getattr(math, name) for name in (

@@ -44,6 +44,7 @@ from .python_values import (
     Lazy,
     _Flow,
     concat,
+    printable,
     to_text,
 )
 
@@ -506,7 +507,8 @@ API: dict[str, Builder] = {
     "SetUseSimTime": ignored,
     "ParameterFile": param_file, "ParameterValue": parameter_value, **NAV2_COMMON,
     "len": builtin(len, str, list, tuple, dict),
-    "str": builtin(str, str, int, float, bool, PurePosixPath),
+    "str": builtin(str, known=printable),
+    "repr": builtin(repr, known=lambda v: printable(v, path=False)),
     "int": builtin(int, str, int, float, bool), "float": builtin(float, str, int, float),
     "bool": builtin(bool, *SCALARS), "list": builtin(list, str, list, tuple, dict),
     "tuple": builtin(tuple, str, list, tuple), "dict": builtin(dict, list, tuple, dict),
@@ -519,7 +521,7 @@ API: dict[str, Builder] = {
     "open": open_file, "safe_load": safe_load,
     "process_file": xacro_process_file, "process": xacro_process,
 }
-BUILTINS = frozenset(("len", "str", "int", "float", "bool", "list", "tuple", "dict",
+BUILTINS = frozenset(("len", "str", "repr", "int", "float", "bool", "list", "tuple", "dict",
                       "sorted", "min", "max", "abs", "enumerate", "zip", "range", "print",
                       "isinstance", "all", "any", "open"))
 

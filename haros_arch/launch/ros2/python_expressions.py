@@ -36,6 +36,7 @@ from .python_values import (
     concat,
     is_lazy,
     is_stringy,
+    printable,
     to_text,
 )
 
@@ -166,11 +167,13 @@ class Expressions(Walker):
         """``{value!r:spec}`` of an f-string: formatted by the one evaluator when the value
         and the spec are known; a substitution keeps its place otherwise."""
         value = self.eval(node.value, env)
-        if node.format_spec is None and node.conversion == -1:
+        # a list, tuple or dict of plain values prints as str() prints it
+        container = isinstance(value, (list, tuple, dict)) and printable(value, path=False)
+        if node.format_spec is None and node.conversion == -1 and not container:
             return value
         spec = self.eval(node.format_spec, env) if node.format_spec is not None else ""
-        if not isinstance(spec, str) or not isinstance(value, (str, int, float, bool)) or (
-                value is None):
+        if not isinstance(spec, str) or not (
+                container or isinstance(value, (str, int, float, bool))) or value is None:
             return value
         return self.operation(lambda: ops.format_value(value, spec, node.conversion, LIMITS),
                               node)

@@ -64,14 +64,17 @@ def cond(interp: Interpreter, value: Any, node: ast.AST) -> e.Cond | None:
 
 
 # -- builtins --------------------------------------------------------------------------------
-def builtin(function: Callable[..., Any], *types: type) -> Builder:
-    """A builtin on known arguments of ``types``, through the one evaluator's table (its
-    bounded ``str``, ``int``, ... where it has one) and its size check."""
+def builtin(function: Callable[..., Any], *types: type,
+            known: Callable[[Any], bool] | None = None) -> Builder:
+    """A builtin on known arguments of ``types`` (or those ``known`` accepts), through the
+    one evaluator's table (its bounded ``str``, ``int``, ... where it has one) and its size
+    check."""
     name = getattr(function, "__name__", "builtin")
-    function = ops.BUILTINS.get(name, function)
+    function = ops.BUILTINS.get(name, ops.BOUNDED.get(name, function))
+    accepts = known or (lambda v: isinstance(v, types))
 
     def build(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
-        if k or any(not isinstance(v, types) for v in a):
+        if k or not all(accepts(v) for v in a):
             return Unknown(f"{name}() of values not known statically")
         try:
             return ops.call_builtin(function, a, {}, LIMITS)

@@ -168,6 +168,33 @@ def to_text(value: Any) -> e.Text:
     return (e.Opaque(f"{type(value).__name__} value"),)
 
 
+PLAIN = (str, int, float, bool, type(None))
+
+
+def printable(value: Any, path: bool = True) -> bool:
+    """Whether Python's text of ``value`` is known: a plain value (``str``, ``int``,
+    ``float``, ``bool``, ``None``; a path where ``path``), or a list, tuple or dict of
+    plain values, nested. A substitution, a path or any object of ours inside one is not
+    (its text would be our object's, not what the launch file makes). Walks at most
+    ``LIMITS.length`` items; past that the text is too long anyway and the bounded
+    ``str`` / ``repr`` refuse it."""
+    if isinstance(value, PLAIN) or (path and isinstance(value, PurePosixPath)):
+        return True
+    stack = [value]
+    seen = 0
+    while stack and seen <= LIMITS.length:
+        item = stack.pop()
+        seen += 1
+        if isinstance(item, dict):
+            stack.extend(item.keys())
+            stack.extend(item.values())
+        elif isinstance(item, (list, tuple)):
+            stack.extend(item)
+        elif not isinstance(item, PLAIN):
+            return False
+    return True
+
+
 def concat(parts: list[Any]) -> Any:
     """Join strings, substitutions and unknowns: a str when all parts are known."""
     out: list[str | e.Subst] = []
