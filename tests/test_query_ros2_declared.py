@@ -71,3 +71,53 @@ def test_a_declaration_by_type_has_that_type_and_no_default(tmp_path):
     assert declared["port"] == ("str", False)
     assert declared["ids"][1] is False and declared["ids"][0] != "str"
     assert declared["gain"] == ("double", True)
+
+
+JSP = """
+    import rclpy
+    from rclpy.node import Node
+
+    class JointStatePublisher(Node):
+        def __init__(self):
+            super().__init__('jsp', automatically_declare_parameters_from_overrides=True)
+            self.dependent = self.get_parameters_by_prefix('dependent_joints')
+            self.zeros = self.get_parameters_by_prefix('zeros')
+
+    def main():
+        rclpy.init()
+        JointStatePublisher()
+    """
+
+JSP_LAUNCH = """
+    from launch import LaunchDescription
+    from launch_ros.actions import Node
+
+    def generate_launch_description():
+        return LaunchDescription([Node(package='talk', executable='jsp', name='jsp',
+            parameters=[{'dependent_joints': {'j1': {'parent': 'j0'}}, 'other': 1}])])
+    """
+
+
+def test_parameters_by_prefix_is_an_optional_read_of_every_parameter_under_it(write_tree):
+    # joint_state_publisher: get_parameters_by_prefix gives {} when nothing is set there
+    root = write_tree({
+        "src/talk/package.xml": package_xml("talk", build_type="ament_python"),
+        "src/talk/setup.py": "from setuptools import setup\n"
+                             "setup(name='talk', packages=['talk'], entry_points="
+                             "{'console_scripts': ['jsp = talk.jsp:main']})\n",
+        "src/talk/resource/talk": "",
+        "src/talk/talk/__init__.py": "",
+        "src/talk/talk/jsp.py": JSP,
+        "src/talk/launch/jsp.launch.py": JSP_LAUNCH,
+        "project.yaml": "project: p\nconfigurations:\n  c: [talk/launch/jsp.launch.py]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {"PATH": os.environ.get("PATH", "")},
+                    Options(cache_dir=None))
+    found = [(f.rule, list(f.entities), f.message) for rule in load_catalogue()
+             if rule.id.startswith("parameter-") for f in run_rule(rule, model)]
+    # nothing is "read but never set"; 'other' is set and not read; what is set under the
+    # prefix may be read (undecided, as for any read of a name with '?')
+    assert [(rule, entities) for rule, entities, _ in found] == [
+        ("parameter-set-not-read", ["parameter:/jsp/other"]),
+        ("parameter-set-not-read-undecided", ["node:/jsp"])]
+    assert "/jsp/dependent_joints.j1.parent" in found[1][2]

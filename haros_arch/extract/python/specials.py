@@ -19,7 +19,8 @@ def special_calls(ev: Evaluator, spec: PyFunction, call: ast.Call, frame: Frame,
                   base: PrimitiveCall, version: int) -> list[PrimitiveCall]:
     """The primitives of a call whose row names a ``special`` handler (none or several
     from one argument list): one per parameter of ``declare_parameters`` /
-    ``get_parameters`` / ``set_parameters``, ``/tf`` and ``/tf_static`` for a
+    ``get_parameters`` / ``set_parameters``, every parameter under the prefix of
+    ``get_parameters_by_prefix`` (``prefix.?``, optional), ``/tf`` and ``/tf_static`` for a
     ``TransformListener``, a tf2 buffer's frames service unless ``debug=False``."""
     if spec.special == "tf-listener":
         qos = ({"tf": rclpy.PRESETS["tf"], "tf_static": rclpy.PRESETS["tf_static"]}
@@ -44,6 +45,10 @@ def special_calls(ev: Evaluator, spec: PyFunction, call: ast.Call, frame: Frame,
             value = ev.eval(pair[1], frame) if len(pair) > 1 else None
             ev.declared[full] = value
             made.append(replace(base, name=full, type=param_type(value)))
+    elif spec.special == "parameters-under":
+        prefix = param_name(text_of(evaluate(ev, argument(call, Arg(0, "prefix")), frame)))
+        made.append(replace(base, name=f"{prefix}.?" if prefix else "?",
+                            has_default=True, default={}))
     elif spec.special == "parameter-names":
         items = call.args[0] if call.args else argument(call, _kw("names"))
         listed = evaluate(ev, items, frame)
