@@ -53,6 +53,7 @@ from clang.cindex import TranslationUnitLoadError, TranslationUnitSaveError
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
 from ...files import read_text
+from ...manifest import ros_version
 from ...model.location import Location
 from ...workspace import Workspace
 from . import api, header_map, interfaces, parameter_library, ros2_interfaces, toolchain
@@ -169,6 +170,9 @@ def _folders(path: str) -> list[str]:
         os.path.join(path, e)) and os.path.isdir(os.path.join(path, e))]
 
 
+_PACKAGE_NAME = re.compile(r"[A-Za-z0-9_]+")
+
+
 def is_ros2_header(header: str) -> bool:
     return header.startswith("rclcpp") or _ROS2_HEADER.fullmatch(header) is not None
 
@@ -242,6 +246,7 @@ class IncludeSetup:
             args += ["-I", STANDIN]
         if unit is not None:
             args += unit.arguments()
+        args += self.package_macros(source, unit)
         for folder in (self.search if pch and self.search is not None else self.user_dirs):
             args += ["-I", folder]
         if self.system_headers:
@@ -249,6 +254,24 @@ class IncludeSetup:
         args += ["-isystem", STD_STANDIN, *flags]
         made = precompiled_prelude(flags) if pch else None
         return [*args, "-include-pch", made] if made is not None else args
+
+    def package_macros(self, source: str | None, unit: UnitFlags | None = None) -> list[str]:
+        """``-DROS_PACKAGE_NAME="<package>"`` for a unit of a package whose build defines
+        it: every ROS 1 package (rosconsole's CMake extras, which catkin's roscpp brings,
+        ``add_definitions`` it with the project's name) and a ROS 2 package built with
+        ament_cmake_ros (its extras do the same; plain ament_cmake defines nothing).
+        Not where the unit's compile command defines it already, nor for a package
+        name no build would accept."""
+        package = self.workspace.package_of(source) if source else None
+        given = {m[2:].partition("=")[0] for m in unit.macros} if unit is not None else set()
+        if package is None or not _PACKAGE_NAME.fullmatch(package.name) or (
+                "ROS_PACKAGE_NAME" in given):
+            return []
+        version = ros_version(package)
+        if version == 1 or (version == 2 and any(
+                d.name == "ament_cmake_ros" for d in package.dependencies)):
+            return [f'-DROS_PACKAGE_NAME="{package.name}"']
+        return []
 
     def _own_folders(self, source: str | None) -> list[str]:
         """The include folders of ``source``'s package when it is one our stand-ins also
