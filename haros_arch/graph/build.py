@@ -147,7 +147,8 @@ def _link_calls(instance: NodeInstance, calls: Sequence[PrimitiveCall], resource
                 config: Configuration, transports: Transports) -> None:
     """Link a node instance's calls: one per element of a list parameter, and for an
     image_transport publisher or subscriber the topics of its transport plugins."""
-    remaps = resolve_remaps(instance.remaps, instance.namespace, instance.name)
+    remaps = _Applied(resolve_remaps(instance.remaps, instance.namespace, instance.name),
+                      instance)
     for call in calls:
         for each in element_calls(call, instance, resources):  # list parameters
             base = resolved_name(instance, each, remaps, resources)
@@ -165,6 +166,23 @@ def _link_calls(instance: NodeInstance, calls: Sequence[PrimitiveCall], resource
                 "/") else resolved_name(instance, each, {}, resources)
             for one in transports.calls(each, expanded.full, instance):
                 link(instance, one, remaps, resources, config, base if one is each else None)
+
+
+class _Applied(dict[str, str]):
+    """An instance's resolved remaps that note, on the instance, each one that changes
+    a name it is asked for (``remap`` and ``RosName.make`` ask with ``get``)."""
+
+    def __init__(self, rules: dict[str, str], instance: NodeInstance) -> None:
+        super().__init__(rules)
+        self.instance = instance
+
+    def get(self, key: str, default: str | None = None) -> str | None:  # type: ignore[override]
+        found = super().get(key)
+        if found is None:
+            return default
+        if found != key and key not in self.instance.remaps_applied:
+            self.instance.remaps_applied.append(key)
+        return found
 
 
 def package_paths(launch: LaunchModel, workspace: Workspace) -> list[str]:

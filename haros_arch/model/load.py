@@ -198,7 +198,9 @@ def _configuration(data: dict[str, Any], nodes: dict[str, Node],
             conditions(item.get("conditions")), location(item.get("location")),
             origin=str(item.get("origin", "launch")),
             ros_version=int(item.get("ros_version", 1) or 1),
-            test=bool(item.get("test", False)))
+            test=bool(item.get("test", False)),
+            remaps_applied=[str(n) for n in item.get("remaps_applied") or ()
+                            if isinstance(n, str)])
         config.nodes.append(instance)
         by_name.setdefault(name, instance)
         by_id.setdefault(instance.id, instance)

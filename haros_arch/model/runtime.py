@@ -8,6 +8,7 @@ publishes, is the topic disconnected, ...) is computed from them.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any, ClassVar
@@ -17,7 +18,7 @@ from .diagnostic import Diagnostic
 from .launch_tree import LaunchItem
 from .location import NOWHERE, Location
 from .robot import RobotDescription
-from .rosname import RosName, namespace_of, resolve, resolve_remaps
+from .rosname import RosName, namespace_of, pattern_for, resolve, resolve_remaps
 from .source import KNOWN_COMPLETENESS, Node, PrimitiveCall
 from .values import UNKNOWN_MARK
 
@@ -46,6 +47,9 @@ class NodeInstance:
     ros_version: int = 1  # 2: ROS 2 naming (node-scoped parameters)
     # a roslaunch <test>: only rostest starts it (kept in rostest configurations only)
     test: bool = field(default=False, metadata={"optional": True})
+    # the remaps' sources (resolved in this instance's namespace) that changed a name
+    # its links were made with: what ROS would remap (``graph.build`` records them)
+    remaps_applied: list[str] = field(default_factory=list, metadata={"optional": True})
     links: list[Link] = field(default_factory=list, metadata=INDEX)
 
     JSON_VIEWS: ClassVar[dict[str, Callable[[Any], Any]]] = {
@@ -456,6 +460,109 @@ LINK_CLASSES["declare"] = ParamReadLink
 
 
 @dataclass(eq=False)
+class Remap:
+    """A remap a configuration's launch files give (``from:=to``, as written) and the
+    node instances given it: those whose names it changed, and those that could use
+    the name unseen (an interface partly or wholly unknown, a name with ``?`` that may
+    be it, a container whose components take its remaps)."""
+
+    source: str
+    target: str
+    nodes: list[NodeInstance] = field(default_factory=list)
+    users: list[NodeInstance] = field(default_factory=list)
+    unseen: list[NodeInstance] = field(default_factory=list)
+    # what the nodes use beside the name: their names in its namespace or ending as it
+    # does (``cmd_vel_mux/output`` for ``cmd_vel_mux/mux_cmd_vel``)
+    near: list[str] = field(default_factory=list)
+
+    @property
+    def node(self) -> NodeInstance:
+        return self.nodes[0]
+
+    @property
+    def location(self) -> Location:
+        return self.nodes[0].location
+
+    @property
+    def text(self) -> str:
+        return f"{self.source}:={self.target}"
+
+    @property
+    def node_names(self) -> str:
+        return ", ".join(n.name for n in self.nodes)
+
+    @property
+    def hint(self) -> str:
+        """What the nodes use near the name, for a message: "" when nothing is."""
+        return f" (they use {', '.join(self.near)})" if self.near else ""
+
+    def __repr__(self) -> str:
+        return f"Remap({self.text})"
+
+
+def _could_use(instance: NodeInstance, name: str) -> bool:
+    """Whether ``instance`` may use ``name`` through something the model does not show:
+    an interface partly or wholly unknown; one read from an interface model (a model
+    lists what the code makes in the usual set-up, and a remap is often given for a
+    name a plugin or an option adds: move_base's ``odom`` is its local planner's); a
+    container, whose components take the process's remaps; a name with ``?`` that may
+    be it."""
+    node = instance.node
+    if node is None or not instance.is_complete or node.model is not None:
+        return True
+    for link in instance.links:
+        given = link.rosname.given
+        if UNKNOWN_MARK in given and (
+            re.match(pattern_for(resolve(given, instance.namespace, instance.name)), name)
+            or re.match(pattern_for(link.rosname.full), name)
+        ):
+            return True
+    return False
+
+
+def _near(instance: NodeInstance, name: str) -> list[str]:
+    namespace, _, own = name.rpartition("/")
+    found: set[str] = set()
+    for link in instance.links:
+        given = link.rosname.given
+        if UNKNOWN_MARK in given or link.origin == "action":
+            continue
+        before = resolve(given, instance.namespace, instance.name)
+        space, _, last = before.rpartition("/")
+        if before != name and ((namespace and space == namespace) or last == own):
+            found.add(before)
+    return sorted(found)
+
+
+def remaps_of(nodes: list[NodeInstance]) -> list[Remap]:
+    """The remaps given to ``nodes``, one per ``from:=to`` pair as written (a pair given
+    to several instances is one remap: a list of remappings shared by a launch file's
+    nodes, a ``<remap>`` of a group). Special keys (``__name``, ``__ns``) and a remap of a
+    name to itself are left out."""
+    found: dict[tuple[str, str], Remap] = {}
+    for instance in nodes:
+        rules = resolve_remaps(instance.remaps, instance.namespace, instance.name)
+        # the names the instance uses, remapped or not: a remap to one of them makes no
+        # connection the instance does not have (turtlebot's ``camera/image`` beside
+        # ``image``, a workaround for a nodelet bug)
+        reached = {link.rosname.full for link in instance.links}
+        for source, target in dict.fromkeys(instance.remaps):
+            if not source or source.startswith("__"):
+                continue
+            name = resolve(source, instance.namespace, instance.name)
+            if name == resolve(target, instance.namespace, instance.name):
+                continue
+            remap = found.setdefault((source, target), Remap(source, target))
+            remap.nodes.append(instance)
+            if name in instance.remaps_applied or rules.get(name) in reached:
+                remap.users.append(instance)
+            elif _could_use(instance, name):
+                remap.unseen.append(instance)
+            remap.near.extend(n for n in _near(instance, name) if n not in remap.near)
+    return list(found.values())
+
+
+@dataclass(eq=False)
 class Configuration:
     """One configuration of the project and the Computation Graph it creates."""
 
@@ -487,6 +594,11 @@ class Configuration:
         """``links`` without the topic and service links that an action link stands for
         (``origin == "action"``): what the code (or a hint) asked for by name."""
         return [link for link in self.links if link.origin != "action"]
+
+    @property
+    def remaps(self) -> list[Remap]:
+        """The remaps the launch files give its node instances (``remaps_of``)."""
+        return remaps_of(self.nodes)
 
     @property
     def incomplete_nodes(self) -> list[NodeInstance]:

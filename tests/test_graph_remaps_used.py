@@ -1,0 +1,62 @@
+"""Which remaps change a name a node instance uses: recorded as the graph is built, kept
+in the JSON model, and what the ``remap-unused`` query reads (``Configuration.remaps``)."""
+
+from __future__ import annotations
+
+from haros_arch.graph import build
+from haros_arch.launch.model import LaunchModel, NodeDecl
+from haros_arch.model import Configuration, Model, Node, PrimitiveCall
+from haros_arch.model.load import from_data
+from haros_arch.model.serialise import to_data
+from haros_arch.workspace import Workspace
+
+
+def _config(decls: list[NodeDecl], nodes: dict[str, Node]) -> Configuration:
+    return build(Configuration("c"), LaunchModel(nodes=decls), Workspace(root="/x"), nodes)
+
+
+def test_the_remaps_a_node_uses_and_those_it_does_not() -> None:
+    # kobuki's auto-docking launch: the mux publishes cmd_vel_mux/output (its private
+    # ~output), the remap named cmd_vel_mux/mux_cmd_vel
+    mux = Node("yocs_cmd_vel_mux", "mux", calls=[
+        PrimitiveCall("publish", "~output", "geometry_msgs/Twist"),
+        PrimitiveCall("subscribe", "input/teleop", "geometry_msgs/Twist"),
+        # a NodeHandle("input") namespace is remapped before the name in it
+        PrimitiveCall("subscribe", "input/safety", "geometry_msgs/Twist",
+                      handle_namespace="input")])
+    decl = NodeDecl("/cmd_vel_mux", "yocs_cmd_vel_mux", "mux", "/", remaps=[
+        ("cmd_vel_mux/mux_cmd_vel", "mobile_base/commands/velocity"),
+        ("input", "/inputs"), ("__ns", "/robot")])
+    config = _config([decl], {"yocs_cmd_vel_mux/mux": mux})
+    (instance,) = config.nodes
+    assert instance.remaps_applied == ["/input"]
+    remaps = {r.text: r for r in config.remaps}
+    assert set(remaps) == {"cmd_vel_mux/mux_cmd_vel:=mobile_base/commands/velocity",
+                           "input:=/inputs"}
+    unused = remaps["cmd_vel_mux/mux_cmd_vel:=mobile_base/commands/velocity"]
+    assert (unused.users, unused.unseen) == ([], [])
+    assert unused.near == ["/cmd_vel_mux/output"]
+    assert remaps["input:=/inputs"].users == [instance]
+    # the JSON model keeps what was applied
+    model = Model("p", configurations=[config])
+    again = from_data(to_data(model)).configurations[0]
+    assert again.nodes[0].remaps_applied == ["/input"]
+    assert [len(r.users) for r in again.remaps] == [len(r.users) for r in config.remaps]
+
+
+def test_a_remap_shared_by_several_nodes_is_used_when_one_uses_it() -> None:
+    planner = Node("nav", "planner", calls=[
+        PrimitiveCall("subscribe", "/tf", "tf2_msgs/msg/TFMessage")])
+    maps = Node("nav", "map_server", calls=[
+        PrimitiveCall("publish", "map", "nav_msgs/msg/OccupancyGrid")])
+    shared = [("/tf", "tf")]  # nav2's launch files, for a robot in a namespace
+    config = _config([NodeDecl("/r/planner", "nav", "planner", "/r/", remaps=shared),
+                      NodeDecl("/r/map_server", "nav", "map_server", "/r/", remaps=shared)],
+                     {"nav/planner": planner, "nav/map_server": maps})
+    (remap,) = config.remaps
+    assert [n.name for n in remap.nodes] == ["/r/planner", "/r/map_server"]
+    assert [n.name for n in remap.users] == ["/r/planner"]
+    # without a namespace the remap names the name itself: nothing to check
+    config = _config([NodeDecl("/map_server", "nav", "map_server", "/", remaps=shared)],
+                     {"nav/map_server": maps})
+    assert config.remaps == []
