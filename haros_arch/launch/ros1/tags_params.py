@@ -133,8 +133,9 @@ def tag_rosparam(loader: Ros1Loader, element: Element, scope: Scope) -> None:
     where = loader.where(scope, element)
     if file is not None:
         if file.literal is None:
-            add_param(loader, full, None, None, scope.conditions, where, "rosparam")
-            unseen(loader, full, scope, where)
+            if param:  # ``param=``: that parameter is set, to what the file holds
+                add_param(loader, full, None, None, scope.conditions, where, "rosparam")
+            unseen(loader, full, scope, where)  # else only what is under the namespace
             return
         data = read_param_file(loader, file.literal, scope, element)
         if data is None:
