@@ -151,3 +151,13 @@ def test_ros1_a_rosparam_of_one_parameter_not_seen_sets_it(write_tree: Any) -> N
     # param=: the file's content is that parameter's value, whatever it is
     found = _ros1(write_tree, '<rosparam param="gains" file="$(find pkg)/$(arg config)" />')
     assert found.get("parameter-set-not-read") == [("parameter:/talker/gains",)]
+
+
+def test_ros1_a_rosparam_in_a_namespace_not_seen_sets_only_below_it(write_tree: Any) -> None:
+    # ns= without param=: a dictionary (roslaunch wants one) loaded below /talker/gains/,
+    # as move_base's costmaps in turtlebot3_navigation's move_base.launch
+    # (ns="global_costmap", a file named after $(arg model)); ~port is not there
+    found = _ros1(write_tree, '<rosparam file="$(find pkg)/$(arg config).yaml" ns="gains" />')
+    assert "parameter-set-not-read" not in found  # no phantom /talker/gains
+    assert sorted(found["parameter-read-not-set"]) == [("parameter:/shared/frame",),
+                                                        ("parameter:/talker/port",)]
