@@ -77,6 +77,73 @@ def test_a_ros1_duplicate_across_launch_files_is_the_querys(write_tree):
         ("duplicate-node-names", "cams/launch/a.launch", 2)]
 
 
+# turtlebot3_bringup/launch/turtlebot3_lidar.launch (noetic): the LDS model comes from
+# the environment; each model's driver is started in a group of its own under the name
+# turtlebot3_lds, so whatever LDS_MODEL is, at most one of them starts (survey B)
+TB3_LIDAR = """
+<launch>
+  <arg name="set_frame_id" default="base_scan"/>
+  <arg name="lds_model" default="$(env LDS_MODEL)" doc="LDS MODEL [LDS-01, LDS-02]"/>
+
+  <group if = "$(eval lds_model == 'LDS-01')">
+    <node pkg="cams" type="cam" name="turtlebot3_lds" output="screen">
+      <param name="port" value="/dev/ttyUSB0"/>
+      <param name="frame_id" value="$(arg set_frame_id)"/>
+    </node>
+  </group>
+  <group if = "$(eval lds_model == 'LDS-02')">
+    <node pkg="cams" type="cam" name="turtlebot3_lds" output="screen" args="LD08">
+      <param name="frame_id" value="$(arg set_frame_id)"/>
+    </node>
+  </group>
+</launch>
+"""
+
+
+def test_ros1_nodes_of_one_name_under_exclusive_conditions_are_no_duplicate(
+        write_tree, monkeypatch):
+    monkeypatch.delenv("LDS_MODEL", raising=False)  # not known statically
+    root = ros1_workspace(write_tree, {"lidar.launch": TB3_LIDAR, "switch.launch": """
+        <launch>
+          <arg name="sim"/>
+          <node name="cam" pkg="cams" type="cam" if="$(arg sim)"/>
+          <node name="cam" pkg="cams" type="cam" unless="$(arg sim)"/>
+          <node name="other" pkg="cams" type="cam" if="$(eval arg('sim') == 'a')"/>
+          <node name="other" pkg="cams" type="cam" if="$(eval arg('sim') != 'a')"/>
+        </launch>
+        """}, "[cams/launch/lidar.launch, cams/launch/switch.launch]")
+    assert about(check(root), "DUPLICATE", "duplicate") == []
+
+
+def test_ros1_nodes_of_one_name_under_conditions_not_known_are_undecided(write_tree):
+    # under the same conditions both start together: roslaunch refuses them
+    root = ros1_workspace(write_tree, {"two.launch": """
+        <launch>
+          <arg name="sim"/>
+          <group if="$(arg sim)">
+            <node name="cam" pkg="cams" type="cam"/>
+            <node name="cam" pkg="cams" type="cam"/>
+          </group>
+        </launch>
+        """}, "[cams/launch/two.launch]")
+    assert about(check(root), "DUPLICATE", "duplicate") == [
+        ("LAUNCH_NODE_DUPLICATE", "cams/launch/two.launch", 5)]
+    # both start when sim and real are both true: not an error, one undecided info
+    root = ros1_workspace(write_tree, {"two.launch": """
+        <launch>
+          <arg name="sim"/>
+          <arg name="real"/>
+          <node name="cam" pkg="cams" type="cam" if="$(arg sim)"/>
+          <node name="cam" pkg="cams" type="cam" if="$(arg real)"/>
+        </launch>
+        """}, "[cams/launch/two.launch]")
+    report = check(root)
+    assert about(report, "DUPLICATE", "duplicate") == [
+        ("duplicate-node-names-undecided", "cams/launch/two.launch", 4)]
+    (info,) = [f for f in report["findings"] if f["rule"].startswith("duplicate")]
+    assert info["severity"] == "info" and "launch conditions" in info["message"]
+
+
 def test_a_ros2_duplicate_is_reported_once(write_tree):
     root = write_tree({
         "src/cams/package.xml": package_xml("cams", "ament_python"),

@@ -131,10 +131,33 @@ def test_ros1_a_rosparam_file_read_decides(write_tree: Any) -> None:
 @pytest.mark.parametrize("rosparam", [
     '<rosparam file="$(find pkg)/config/$(arg config).yaml" />',  # not named statically
     '<rosparam file="/outside/the/workspace/talker.yaml" />',  # not read
-], ids=["unnamed-file", "unreadable-file"])
+    # a package not in the workspace (survey B, ridgeback teleop.launch's
+    # interactive_marker_twist_server): the path is not known statically
+    '<rosparam command="load" file="$(find not_here)/config/$(arg config).yaml" />',
+], ids=["unnamed-file", "unreadable-file", "absent-package"])
 def test_ros1_a_rosparam_not_seen_leaves_its_namespace_undecided(
         write_tree: Any, rosparam: str) -> None:
     found = _ros1(write_tree, rosparam)
     # ~port may come from the file loaded in the node's namespace; /shared/frame cannot
     assert found.get("parameter-read-not-set") == [("parameter:/shared/frame",)]
     assert found["parameter-read-not-set" + UNDECIDED] == [("parameter:/talker/?",)]
+    # it sets parameters below the node's namespace, never one named after the node
+    # (a phantom /talker was then 'set but never read')
+    assert "parameter-set-not-read" not in found
+    assert "parameter-set-not-read" + UNDECIDED not in found
+
+
+def test_ros1_a_rosparam_of_one_parameter_not_seen_sets_it(write_tree: Any) -> None:
+    # param=: the file's content is that parameter's value, whatever it is
+    found = _ros1(write_tree, '<rosparam param="gains" file="$(find pkg)/$(arg config)" />')
+    assert found.get("parameter-set-not-read") == [("parameter:/talker/gains",)]
+
+
+def test_ros1_a_rosparam_in_a_namespace_not_seen_sets_only_below_it(write_tree: Any) -> None:
+    # ns= without param=: a dictionary (roslaunch wants one) loaded below /talker/gains/,
+    # as move_base's costmaps in turtlebot3_navigation's move_base.launch
+    # (ns="global_costmap", a file named after $(arg model)); ~port is not there
+    found = _ros1(write_tree, '<rosparam file="$(find pkg)/$(arg config).yaml" ns="gains" />')
+    assert "parameter-set-not-read" not in found  # no phantom /talker/gains
+    assert sorted(found["parameter-read-not-set"]) == [("parameter:/shared/frame",),
+                                                        ("parameter:/talker/port",)]

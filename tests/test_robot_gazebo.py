@@ -280,3 +280,24 @@ def test_a_gazebo_camera_publishes_the_topics_of_the_image_transport_plugins():
          ["compressed_depth_image_transport is installed"]),
         ("/gazebo", "/front_camera/image_raw/theora", "theora_image_transport/Packet",
          ["theora_image_transport is installed"])]
+
+
+def test_names_the_tool_derives_keep_the_form_the_code_wrote():
+    # survey B (TurtleBot3 autorace camera, Husky control.launch): the camera plugin
+    # names its image relative (<cameraName>front_camera</cameraName>), and the
+    # controller manager reads <controller>/type on its root handle: the names made
+    # from them are relative too, so global-names does not call them global; the
+    # resolved names stay those of the tests above
+    config = configuration(ROS1, "bot_gazebo/launch/sim.launch", {"BOT_CAMERA": "1"})
+    derived = {(link.resource.name, link.rosname.given) for link in config.links
+               if link.resource.name.startswith("/front_camera/image_raw/")}
+    assert ("/front_camera/image_raw/compressed", "front_camera/image_raw/compressed") in derived
+    assert ("/front_camera/image_raw/compressed/format",
+            "front_camera/image_raw/compressed/format") in derived
+    assert ("/front_camera/image_raw/disable_pub_plugins",
+            "front_camera/image_raw/disable_pub_plugins") in derived
+    assert not [given for _, given in derived if given.startswith("/")]
+    config = configuration(ROS1, "bot_control/launch/control.launch")
+    (typed,) = [link for link in config.links if link.node.name == "/gazebo"
+                and link.resource.name == "/joint_state_controller/type"]
+    assert typed.rosname.given == "joint_state_controller/type"

@@ -165,7 +165,18 @@ def _link_calls(instance: NodeInstance, calls: Sequence[PrimitiveCall], resource
             expanded = base if instance.ros_version == 1 and not each.transport.endswith(
                 "/") else resolved_name(instance, each, {}, resources)
             for one in transports.calls(each, expanded.full, instance):
-                link(instance, one, remaps, resources, config, base if one is each else None)
+                link(instance, one, remaps, resources, config, base if one is each else
+                     _below_base(resolved_name(instance, one, remaps, resources), expanded))
+
+
+def _below_base(rosname: RosName, base: RosName) -> RosName:
+    """A name an image_transport plugin makes below the base topic, resolved from it
+    (``/cam/image/compressed``), given as the code wrote the base (``image/compressed``):
+    global only when the base was. The resolved name stays as the plugin resolves it."""
+    prefix = base.full.rstrip("/") + "/"
+    if base.is_global or not rosname.given.startswith(prefix):
+        return rosname
+    return replace(rosname, given=f"{base.given.rstrip('/')}/{rosname.given[len(prefix):]}")
 
 
 class _Applied(dict[str, str]):

@@ -6,10 +6,12 @@ entity exists unconditionally.
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 from typing import Literal
 
 from .location import NOWHERE, Location
+from .values import UNKNOWN_MARK
 
 ConditionKind = Literal["launch", "source", "hint"]
 
@@ -28,3 +30,60 @@ class Condition:
 
     def __str__(self) -> str:
         return f"{self.statement} ({self.text})"
+
+
+# ``$(eval x == 'a')``, ``$(eval arg('x') != "a")``, ``$(eval 'a' == x)``: a launch
+# argument compared with a string
+_EVAL = re.compile(r"\s*\$\(eval\s+(.+?)\s*\)\s*")
+_COMPARED = re.compile(r"(.+?)\s*(==|!=)\s*(.+)")
+_ARG = re.compile(r"""(?:arg\(\s*(['"])(\w+)\1\s*\)|([A-Za-z_]\w*))""")
+_STRING = re.compile(r"""(['"])([^'"]*)\1""")
+
+
+def _equality(condition: Condition) -> tuple[str, str, bool] | None:
+    """``(argument, string, holds when equal)`` for a launch condition that compares
+    one argument with a string, else None."""
+    if condition.statement not in ("if", "unless"):
+        return None
+    inner = _EVAL.fullmatch(condition.text)
+    compared = _COMPARED.fullmatch(inner.group(1)) if inner else None
+    if compared is None:
+        return None
+    left, operator, right = compared.groups()
+    for name_side, string_side in ((left, right), (right, left)):
+        name, string = _ARG.fullmatch(name_side), _STRING.fullmatch(string_side)
+        if name is not None and string is not None and name_side not in ("True", "False"):
+            equal = (operator == "==") == (condition.statement == "if")
+            return name.group(2) or name.group(3), string.group(2), equal
+    return None
+
+
+def contradict(first: Condition, second: Condition) -> bool:
+    """Whether two launch conditions cannot both hold: ``if`` and ``unless`` of one text,
+    or one argument compared with strings that cannot both match (``x == 'a'`` and
+    ``x == 'b'``; ``x == 'a'`` and ``x != 'a'``). Read as written: both are taken to
+    read the argument of one scope."""
+    statements = {first.statement, second.statement}
+    if statements == {"if", "unless"} and first.text.strip() == second.text.strip() \
+            and first.text.strip() != UNKNOWN_MARK:  # a text not known is not one text
+        return True
+    one, other = _equality(first), _equality(second)
+    if one is None or other is None or one[0] != other[0]:
+        return False
+    if one[1] == other[1]:
+        return one[2] != other[2]
+    return one[2] and other[2]
+
+
+def exclusive(first: tuple[Condition, ...], second: tuple[Condition, ...]) -> bool:
+    """Whether two conjunctions of conditions cannot both hold."""
+    return any(contradict(a, b) for a in first for b in second)
+
+
+def same_conditions(first: tuple[Condition, ...], second: tuple[Condition, ...]) -> bool:
+    """Whether two conjunctions are the same conditions (written alike): the one holds
+    exactly when the other does (a text not known is no condition's but its own)."""
+    if any(c.text.strip() == UNKNOWN_MARK for c in (*first, *second)):
+        return False
+    return {(c.text.strip(), c.statement) for c in first} == {
+        (c.text.strip(), c.statement) for c in second}

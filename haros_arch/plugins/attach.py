@@ -883,9 +883,10 @@ def ros1_controllers(config: Configuration, started: Sequence[tuple[NodeDecl, No
             elif host is not None:
                 out.append((host, [_under(c, controller, choice.conditions)
                                    for c in node.calls]))
-                if typed is not None:  # the manager reads the class, by its full name
+                if typed is not None:  # the manager reads the class, below its namespace
                     out.append((host, [PrimitiveCall(
-                        "read", typed.name, location=choice.location,
+                        "read", _relative(typed.name, host.namespace),
+                        location=choice.location,
                         conditions=choice.conditions, origin="plugin")]))
                 continue
             else:
@@ -900,6 +901,13 @@ def ros1_controllers(config: Configuration, started: Sequence[tuple[NodeDecl, No
             if reader is not None:
                 out.extend(_loading_reads(choice, reader, reader))
     return out
+
+
+def _relative(full: str, namespace: str) -> str:
+    """``full`` as a name relative to ``namespace`` when it is below it, as the
+    controller manager writes ``<controller>/type`` on its root handle; else ``full``."""
+    prefix = namespace.rstrip("/") + "/"
+    return full[len(prefix):] if full.startswith(prefix) and len(full) > len(prefix) else full
 
 
 def _serving(config: Configuration, service: str) -> NodeInstance | None:

@@ -80,6 +80,8 @@ class Rule:
     # be the missing side: a match where it is not empty is not a finding; they are
     # counted in one info per configuration (the rule's id + UNDECIDED)
     undecided_by: str | None = None
+    # what the undecided info says of those nodes (default: they could be the missing side)
+    undecided_why: str | None = None
 
 
 class CatalogueError(ValueError):
@@ -99,7 +101,8 @@ def _rule(data: Any, origin: str, default_id: str = "", scope: str = "auto") -> 
                 data["query"], str(data.get("description", "")),
                 data.get("message") or data.get("details"),
                 str(data.get("scope", scope)), None, origin,
-                str(data["undecided_by"]) if data.get("undecided_by") else None)
+                str(data["undecided_by"]) if data.get("undecided_by") else None,
+                str(data["undecided_why"]) if data.get("undecided_why") else None)
 
 
 def load_catalogue(folder: Path | str | None = None) -> list[Rule]:
@@ -278,10 +281,12 @@ def _undecided_finding(rule: Rule, undecided: list[tuple[Any, list[Any]]],
     more = f" and {len(ranked) - UNDECIDED_NAMED} more" if len(ranked) > UNDECIDED_NAMED \
         else ""
     first = "; ".join(label(e) for e in entities(undecided[0][0])[:1])
+    why = rule.undecided_why or (
+        "these could be the missing side unseen (nodes of partial or unknown interface, "
+        "names with '?', dynamic_reconfigure servers, launch parameters not known "
+        "statically)")
     message = (f"{len(undecided)} possible finding(s) not reported (first: {first}): "
-               f"these could be the missing side unseen (nodes of partial or unknown "
-               f"interface, names with '?', dynamic_reconfigure servers, launch "
-               f"parameters not known statically): {named}{more}")
+               f"{why}: {named}{more}")
     return Finding(rule.id + UNDECIDED, "info", f"{rule.title}: not decided",
                    message, config.name if config else None,
                    entity_ids(ranked[:UNDECIDED_NAMED]),

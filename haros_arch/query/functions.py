@@ -11,6 +11,7 @@ from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from typing import Any
 
+from ..model.conditions import Condition, exclusive, same_conditions
 from ..model.runtime import Link, NodeInstance, Resource
 from .absence import distance, similar_to, unknown_users
 from .errors import QueryLimitError, QueryTypeError
@@ -275,3 +276,30 @@ def is_tool_input(charge: Charge, name: Any) -> bool:
 
 
 FUNCTIONS["is_tool_input"] = Function("is_tool_input", is_tool_input, charged=True)
+
+
+def _conditions(value: Any, function: str) -> tuple[Condition, ...]:
+    if not isinstance(value, NodeInstance | Link):
+        raise QueryTypeError(f"{function}() takes node instances or links")
+    return tuple(value.conditions)
+
+
+def never_together(charge: Charge, first: Any, second: Any) -> bool:
+    """True when the conditions of two node instances (or links) cannot both hold:
+    ``<group if="$(eval model == 'a')">`` and ``'b'``, ``if`` and ``unless`` of one value."""
+    one, other = _conditions(first, "never_together"), _conditions(second, "never_together")
+    charge(1 + len(one) * len(other))
+    return exclusive(one, other)
+
+
+def apart(charge: Charge, first: Any, second: Any) -> list[Any]:
+    """The two node instances (or links) when their conditions differ, so that one may
+    exist without the other (an ``undecided_by`` list); none when they exist together."""
+    one, other = _conditions(first, "apart"), _conditions(second, "apart")
+    charge(1 + len(one) + len(other))
+    return [] if same_conditions(one, other) else [first, second]
+
+
+# two node instances of one name: a duplicate only when both can start
+FUNCTIONS["never_together"] = Function("never_together", never_together, 2, 2, charged=True)
+FUNCTIONS["apart"] = Function("apart", apart, 2, 2, charged=True)

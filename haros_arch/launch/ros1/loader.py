@@ -19,6 +19,7 @@ from lxml import etree
 from ... import diagnostics as diag
 from ...files import read_bytes
 from ...manifest import xml_parser
+from ...model.conditions import Condition, same_conditions
 from ...model.launch_tree import ArgOrigin, LaunchArg, LaunchCondition, LaunchItem
 from ...model.location import Location
 from ...model.values import Value
@@ -68,7 +69,7 @@ class Ros1Loader:
         self.environment = environment
         self.model = LaunchModel()
         self.default_machine: str | None = None
-        self.node_names: dict[str, Location] = {}
+        self.node_names: dict[str, list[tuple[Location, tuple[Condition, ...]]]] = {}
         self.includes = 0
         # the if/unless of the element being handled, for the launch tree
         self.guard: LaunchCondition | None = None
@@ -464,12 +465,18 @@ class Ros1Loader:
         full = inner.ns + name
         location = self.where(scope, element)
         if name and not is_test:
-            if full in self.node_names:
-                other = self.node_names[full]
+            # roslaunch refuses two nodes of one name that it starts: certainly so when
+            # they are under the same conditions; under conditions that cannot both
+            # hold (<group if="$(eval model == 'a')"> and 'b') never; in between the
+            # duplicate-node-names query says it is not decided
+            earlier = self.node_names.setdefault(full, [])
+            other = next((where for where, conditions in earlier
+                          if same_conditions(conditions, scope.conditions)), None)
+            if other is not None:
                 self.report("LAUNCH_NODE_DUPLICATE", scope, element, name=full,
                             other=f"{other.file}:{other.line}")
             else:
-                self.node_names[full] = location
+                earlier.append((location, scope.conditions))
         if machine and machine not in self.model.machines and "?" not in machine:
             self.fail(scope, element, f"unknown machine '{machine}'")
         try:

@@ -114,10 +114,10 @@ def server_name(name: str) -> str:
 def tag_rosparam(loader: Ros1Loader, element: Element, scope: Scope) -> None:
     command = loader.text(element, "command", scope) or "load"
     ns = loader.text(element, "ns", scope)
-    param = loader.text(element, "param", scope)
+    named = loader.text(element, "param", scope)
     file = loader.value(element, "file", scope)
     subst = loader.flag(element, "subst_value", scope, False)
-    param = join(ns or "", param or "") if (ns or param) else ""
+    param = join(ns or "", named or "") if (ns or named) else ""
     if command not in ("load", "dump", "delete"):
         loader.fail(scope, element, "command must be 'load', 'dump', or 'delete'")
         return
@@ -133,7 +133,9 @@ def tag_rosparam(loader: Ros1Loader, element: Element, scope: Scope) -> None:
     where = loader.where(scope, element)
     if file is not None:
         if file.literal is None:
-            add_param(loader, full, None, None, scope.conditions, where, "rosparam")
+            if named:  # ``param=``: that parameter is set, to what the file holds
+                add_param(loader, full, None, None, scope.conditions, where, "rosparam")
+            # else (a dictionary, as roslaunch requires) only what is under the namespace
             unseen(loader, full, scope, where)
             return
         data = read_param_file(loader, file.literal, scope, element)
