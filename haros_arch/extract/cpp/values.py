@@ -36,6 +36,15 @@ WRAPPERS = frozenset({
     CursorKind.CSTYLE_CAST_EXPR, CursorKind.CXX_STATIC_CAST_EXPR,
     CursorKind.CXX_CONST_CAST_EXPR,
 })
+# rclcpp's node interfaces resolve a name: expanded in the node's namespace and remapped
+# (unless ``only_expand``). The graph does both when it links a call, so the value is the
+# name as written (image_pipeline: ``node_base->resolve_topic_or_service_name("image",
+# false)``). Not modelled: ``only_expand`` (the graph still remaps the name), and a name
+# remapped here before image_transport names its transports' topics below it (the graph
+# names them below the base expanded only, as image_transport does with a name it is
+# given unresolved, so a remap of the base does not reach ``<base>/compressed``).
+_RESOLVERS = frozenset({("NodeBaseInterface", "resolve_topic_or_service_name"),
+                        ("NodeTopicsInterface", "resolve_topic_name")})
 _REFS = frozenset({CursorKind.TYPE_REF, CursorKind.NAMESPACE_REF, CursorKind.TEMPLATE_REF})
 _ESCAPES = {"n": "\n", "t": "\t", "\\": "\\", '"': '"', "'": "'", "0": "\0"}
 _TOKEN = re.compile(rb"[A-Za-z_]\w*|[-+]?(?:0[xX][0-9a-fA-F]+|\d+)[uUlL]*")
@@ -257,6 +266,9 @@ class Scope:
         if target.spelling == "getName" and not args and target.semantic_parent is not None \
                 and target.semantic_parent.spelling == "this_node":
             return ("~",)  # ros::this_node::getName(): the node's own (private) name
+        if (target.semantic_parent is not None and args
+                and (target.semantic_parent.spelling, target.spelling) in _RESOLVERS):
+            return self.string(args[0], depth + 1)
         if target.kind == CursorKind.CONSTRUCTOR and (
             call.type.get_canonical().get_declaration().spelling in ("basic_string",
                                                                      "string_view")
