@@ -261,3 +261,75 @@ def test_a_name_the_node_resolves_is_the_name_it_resolves(tmp_path) -> None:
     ]
     assert not {"CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL", "CPP_DYNAMIC_NAME"} & set(
         codes(result))
+
+
+SUBSCRIBER_FILTERS_ROS2 = """\
+#include <rclcpp/rclcpp.hpp>
+#include <image_transport/image_transport.hpp>
+#include <image_transport/subscriber_filter.hpp>
+#include <message_filters/subscriber.h>
+#include <sensor_msgs/msg/camera_info.hpp>
+
+class Disparity : public rclcpp::Node {
+public:
+  Disparity() : Node("disparity"), right_(this, "right/image", "compressed") {
+    auto node_base = this->get_node_base_interface();
+    std::string left_topic = node_base->resolve_topic_or_service_name("left/image_rect", false);
+    std::string left_info_topic = node_base->resolve_topic_or_service_name(
+        image_transport::getCameraInfoTopic(left_topic), false);
+    const auto sensor_data_qos = rmw_qos_profile_sensor_data;
+    image_transport::TransportHints hints(this);
+    if (!left_.getSubscriber()) {
+      left_.subscribe(this, left_topic, hints.getTransport(), sensor_data_qos);
+      left_info_.subscribe(this, left_info_topic, sensor_data_qos);
+    }
+  }
+  image_transport::SubscriberFilter left_;
+  image_transport::SubscriberFilter right_;
+  message_filters::Subscriber<sensor_msgs::msg::CameraInfo> left_info_;
+};
+"""
+
+
+def test_image_transport_subscriber_filters_subscribe(tmp_path) -> None:
+    result = _extract_ros2(tmp_path, SUBSCRIBER_FILTERS_ROS2)
+    assert [(c.kind, c.name, c.type, c.transport, c.queue_size, c.location.line)
+            for c in result.calls] == [
+        ("subscribe", "right/image", "sensor_msgs/msg/Image", "compressed", None, 9),
+        ("subscribe", "left/image_rect", "sensor_msgs/msg/Image", "?", 5, 17),
+        ("subscribe", "left/camera_info", "sensor_msgs/msg/CameraInfo", None, 5, 18),
+    ]
+    assert result.calls[1].conditions[0].text == "!left_.getSubscriber()"
+    assert not {"CPP_PARSE_ERROR", "CPP_NODE_TO_UNKNOWN", "CPP_CALL_MISSED"} & set(
+        codes(result))
+
+
+SUBSCRIBER_FILTERS_ROS1 = """\
+#include <ros/ros.h>
+#include <image_transport/image_transport.h>
+#include <image_transport/subscriber_filter.h>
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "stereo");
+  ros::NodeHandle nh("stereo");
+  image_transport::ImageTransport it(nh);
+  image_transport::SubscriberFilter left(it, "left/image", 3);
+  image_transport::SubscriberFilter right;
+  right.subscribe(it, "right/image", 4, image_transport::TransportHints("compressed"));
+  ros::spin();
+}
+"""
+
+
+def test_ros1_image_transport_subscriber_filters_subscribe(tmp_path) -> None:
+    (tmp_path / "package.xml").write_text(package_xml("stereo").replace(
+        "</package>", "<depend>roscpp</depend></package>"))
+    (tmp_path / "stereo.cpp").write_text(SUBSCRIBER_FILTERS_ROS1)
+    result = extract_cpp([str(tmp_path / "stereo.cpp")], scan([str(tmp_path)]),
+                         cache_dir=None)
+    # the transport its hints name is not read: as ImageTransport::subscribe's
+    assert [(c.kind, c.name, c.type, c.transport, c.queue_size) for c in result.calls] == [
+        ("subscribe", "stereo/left/image", "sensor_msgs/Image", "?/", 3),
+        ("subscribe", "stereo/right/image", "sensor_msgs/Image", "?/", 4),
+    ]
+    assert "CPP_PARSE_ERROR" not in codes(result)

@@ -63,6 +63,18 @@ def render(parts: Parts) -> str:
     return "".join(text)
 
 
+def camera_info_topic(base: Parts) -> Parts:
+    """image_transport's ``getCameraInfoTopic(base)``: ``camera_info`` in the namespace of
+    the base (``left/image_rect`` -> ``left/camera_info``); unknown when that namespace
+    is."""
+    last = base[-1]
+    if last is None or PLACEHOLDER in last:
+        return UNKNOWN
+    if "/" in last:
+        return (*base[:-1], last.rpartition("/")[0] + "/camera_info")
+    return ("camera_info",) if len(base) == 1 else UNKNOWN
+
+
 def is_default_argument(cursor: Cursor) -> bool:
     """True for an argument the call did not write (a default argument)."""
     return cursor.extent.start.file is None
@@ -269,6 +281,10 @@ class Scope:
         if (target.semantic_parent is not None and args
                 and (target.semantic_parent.spelling, target.spelling) in _RESOLVERS):
             return self.string(args[0], depth + 1)
+        if (target.spelling == "getCameraInfoTopic" and len(args) == 1
+                and target.semantic_parent is not None
+                and target.semantic_parent.spelling == "image_transport"):
+            return camera_info_topic(self.string(args[0], depth + 1))
         if target.kind == CursorKind.CONSTRUCTOR and (
             call.type.get_canonical().get_declaration().spelling in ("basic_string",
                                                                      "string_view")
