@@ -261,6 +261,10 @@ def test_a_name_the_node_resolves_is_the_name_it_resolves(tmp_path) -> None:
     ]
     assert not {"CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL", "CPP_DYNAMIC_NAME"} & set(
         codes(result))
+    # image_transport names its transports' topics below a base resolved and remapped,
+    # not only expanded (only_expand), as the graph does for a base as written
+    assert [c.transport for c in result.calls if c.type == "sensor_msgs/msg/Image"] == [
+        "raw=", "*"]
 
 
 SUBSCRIBER_FILTERS_ROS2 = """\
@@ -296,7 +300,7 @@ def test_image_transport_subscriber_filters_subscribe(tmp_path) -> None:
     assert [(c.kind, c.name, c.type, c.transport, c.queue_size, c.location.line)
             for c in result.calls] == [
         ("subscribe", "right/image", "sensor_msgs/msg/Image", "compressed", None, 9),
-        ("subscribe", "left/image_rect", "sensor_msgs/msg/Image", "?", 5, 17),
+        ("subscribe", "left/image_rect", "sensor_msgs/msg/Image", "?=", 5, 17),
         ("subscribe", "left/camera_info", "sensor_msgs/msg/CameraInfo", None, 5, 18),
     ]
     assert result.calls[1].conditions[0].text == "!left_.getSubscriber()"
