@@ -10,6 +10,7 @@ from __future__ import annotations
 import os
 
 import pytest
+from conftest import package_xml
 
 from haros_arch.extract.cpp import CppResult, extract_cpp
 from haros_arch.model.source import PrimitiveCall
@@ -203,3 +204,136 @@ def test_ros2_libraries(mover: CppResult) -> None:
     assert mover.calls[-1].conditions[0].text == "argc > 1"
     assert mover.calls[-2].qos == SENSOR_DATA
     assert "CPP_PARSE_ERROR" not in codes(mover)
+
+
+def _extract_ros2(tmp_path, text: str) -> CppResult:
+    """``text`` as the one source of a ROS 2 package in ``tmp_path``, extracted without a
+    cache."""
+    (tmp_path / "package.xml").write_text(package_xml("pipe", "ament_cmake").replace(
+        "</package>", "<depend>rclcpp</depend></package>"))
+    source = tmp_path / "pipe.cpp"
+    source.write_text(text)
+    return extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+
+
+RESOLVED_NAMES = """\
+#include <rclcpp/rclcpp.hpp>
+#include <rclcpp_lifecycle/lifecycle_node.hpp>
+#include <image_transport/image_transport.hpp>
+#include <sensor_msgs/msg/image.hpp>
+#include <std_msgs/msg/string.hpp>
+
+class Rectify : public rclcpp::Node {
+public:
+  Rectify() : Node("rectify") {
+    auto node_base = this->get_node_base_interface();
+    std::string topic = node_base->resolve_topic_or_service_name("image", false);
+    sub_ = image_transport::create_subscription(
+        this, topic, [](const sensor_msgs::msg::Image::ConstSharedPtr &) {}, "raw");
+    pub_ = create_publisher<std_msgs::msg::String>(
+        get_node_topics_interface()->resolve_topic_name("status"), 1);
+  }
+  image_transport::Subscriber sub_;
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+};
+
+class Crop : public rclcpp_lifecycle::LifecycleNode {
+public:
+  Crop() : LifecycleNode("crop") {
+    const std::string out = this->get_node_base_interface()->resolve_topic_or_service_name(
+        std::string("out") + "/image", false, true);
+    pub_ = image_transport::create_publisher(this, out);
+  }
+  image_transport::Publisher pub_;
+};
+"""
+
+
+def test_a_name_the_node_resolves_is_the_name_it_resolves(tmp_path) -> None:
+    # the graph expands and remaps the name where it links the call, as rclcpp's
+    # resolve_topic_or_service_name / resolve_topic_name do in the code
+    result = _extract_ros2(tmp_path, RESOLVED_NAMES)
+    assert [(c.kind, c.name, c.type) for c in result.calls
+            if c.type is not None and c.type.startswith(("sensor_msgs", "std_msgs"))] == [
+        ("subscribe", "image", "sensor_msgs/msg/Image"),
+        ("publish", "status", "std_msgs/msg/String"),
+        ("publish", "out/image", "sensor_msgs/msg/Image"),
+    ]
+    assert not {"CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL", "CPP_DYNAMIC_NAME"} & set(
+        codes(result))
+    # image_transport names its transports' topics below a base resolved and remapped,
+    # not only expanded (only_expand), as the graph does for a base as written
+    assert [c.transport for c in result.calls if c.type == "sensor_msgs/msg/Image"] == [
+        "raw=", "*"]
+
+
+SUBSCRIBER_FILTERS_ROS2 = """\
+#include <rclcpp/rclcpp.hpp>
+#include <image_transport/image_transport.hpp>
+#include <image_transport/subscriber_filter.hpp>
+#include <message_filters/subscriber.h>
+#include <sensor_msgs/msg/camera_info.hpp>
+
+class Disparity : public rclcpp::Node {
+public:
+  Disparity() : Node("disparity"), right_(this, "right/image", "compressed") {
+    auto node_base = this->get_node_base_interface();
+    std::string left_topic = node_base->resolve_topic_or_service_name("left/image_rect", false);
+    std::string left_info_topic = node_base->resolve_topic_or_service_name(
+        image_transport::getCameraInfoTopic(left_topic), false);
+    const auto sensor_data_qos = rmw_qos_profile_sensor_data;
+    image_transport::TransportHints hints(this);
+    if (!left_.getSubscriber()) {
+      left_.subscribe(this, left_topic, hints.getTransport(), sensor_data_qos);
+      left_info_.subscribe(this, left_info_topic, sensor_data_qos);
+    }
+  }
+  image_transport::SubscriberFilter left_;
+  image_transport::SubscriberFilter right_;
+  message_filters::Subscriber<sensor_msgs::msg::CameraInfo> left_info_;
+};
+"""
+
+
+def test_image_transport_subscriber_filters_subscribe(tmp_path) -> None:
+    result = _extract_ros2(tmp_path, SUBSCRIBER_FILTERS_ROS2)
+    assert [(c.kind, c.name, c.type, c.transport, c.queue_size, c.location.line)
+            for c in result.calls] == [
+        ("subscribe", "right/image", "sensor_msgs/msg/Image", "compressed", None, 9),
+        ("subscribe", "left/image_rect", "sensor_msgs/msg/Image", "?=", 5, 17),
+        ("subscribe", "left/camera_info", "sensor_msgs/msg/CameraInfo", None, 5, 18),
+    ]
+    assert result.calls[1].conditions[0].text == "!left_.getSubscriber()"
+    assert not {"CPP_PARSE_ERROR", "CPP_NODE_TO_UNKNOWN", "CPP_CALL_MISSED"} & set(
+        codes(result))
+
+
+SUBSCRIBER_FILTERS_ROS1 = """\
+#include <ros/ros.h>
+#include <image_transport/image_transport.h>
+#include <image_transport/subscriber_filter.h>
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "stereo");
+  ros::NodeHandle nh("stereo");
+  image_transport::ImageTransport it(nh);
+  image_transport::SubscriberFilter left(it, "left/image", 3);
+  image_transport::SubscriberFilter right;
+  right.subscribe(it, "right/image", 4, image_transport::TransportHints("compressed"));
+  ros::spin();
+}
+"""
+
+
+def test_ros1_image_transport_subscriber_filters_subscribe(tmp_path) -> None:
+    (tmp_path / "package.xml").write_text(package_xml("stereo").replace(
+        "</package>", "<depend>roscpp</depend></package>"))
+    (tmp_path / "stereo.cpp").write_text(SUBSCRIBER_FILTERS_ROS1)
+    result = extract_cpp([str(tmp_path / "stereo.cpp")], scan([str(tmp_path)]),
+                         cache_dir=None)
+    # the transport its hints name is not read: as ImageTransport::subscribe's
+    assert [(c.kind, c.name, c.type, c.transport, c.queue_size) for c in result.calls] == [
+        ("subscribe", "stereo/left/image", "sensor_msgs/Image", "?/", 3),
+        ("subscribe", "stereo/right/image", "sensor_msgs/Image", "?/", 4),
+    ]
+    assert "CPP_PARSE_ERROR" not in codes(result)

@@ -147,6 +147,21 @@ def test_ros2_transport_topics_are_remapped_on_their_own_not_with_the_base():
                          "/image_raw/compressedDepth", "/image_raw/theora", "/image_raw/zstd"]
 
 
+def test_ros2_transport_topics_are_named_below_a_base_the_code_remapped():
+    # image_pipeline resolves (and remaps) the base itself before it gives it to
+    # image_transport (``=`` mark): the remap of the base reaches its transports' topics
+    driver = Node("cam", "driver", calls=[
+        call("publish", "image_rect", "sensor_msgs/msg/Image", "*="),
+        call("subscribe", "image", "sensor_msgs/msg/Image", "compressed=", line=2)])
+    decl = NodeDecl("/rectify", "cam", "driver", "/", ros_version=2,
+                    remaps=[("image_rect", "/left/image_rect"), ("image", "/left/image")])
+    config = graph([decl], nodes=[driver], packages=["compressed_image_transport"])
+    assert [(kind, name) for kind, name, _, _ in topics(config, "/rectify")
+            if not name.endswith(("compressedDepth", "theora", "zstd"))] == [
+        ("publish", "/left/image_rect"), ("publish", "/left/image_rect/compressed"),
+        ("subscribe", "/left/image/compressed")]
+
+
 def test_transport_plugins_read_their_parameters():
     # ROS 1: each publisher plugin's dynamic_reconfigure config, under its topic
     config = graph([NodeDecl("/cam/driver", "cam", "driver", "/cam/")],

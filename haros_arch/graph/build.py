@@ -161,9 +161,11 @@ def _link_calls(instance: NodeInstance, calls: Sequence[PrimitiveCall], resource
             # again; ROS 1 image_transport's publishers and camera subscribers remap the
             # base first (resolveName), its Subscriber (``/`` mark) and ROS 2's only
             # expand it (expand_topic_or_service_name): usb_cam's launch file remaps
-            # image_raw/compressed on its own
-            expanded = base if instance.ros_version == 1 and not each.transport.endswith(
-                "/") else resolved_name(instance, each, {}, resources)
+            # image_raw/compressed on its own; unless the ROS 2 code gave it a base it
+            # resolved and remapped itself (``=`` mark: image_pipeline)
+            remapped = each.transport.endswith("=") or (
+                instance.ros_version == 1 and not each.transport.endswith("/"))
+            expanded = base if remapped else resolved_name(instance, each, {}, resources)
             for one in transports.calls(each, expanded.full, instance):
                 link(instance, one, remaps, resources, config, base if one is each else
                      _below_base(resolved_name(instance, one, remaps, resources), expanded))

@@ -102,7 +102,8 @@ class PrimitiveCall:
     # a subscriber the transport its code names (``raw``, ``compressed``), or ``?`` when
     # the node's ``image_transport`` parameter chooses it (TransportHints); a trailing
     # ``/``: the transport's topic is named from the base as written, not from the base
-    # resolved and remapped (ROS 1 Subscriber)
+    # resolved and remapped (ROS 1 Subscriber); a trailing ``=``: the ROS 2 code gave it a
+    # base it resolved and remapped itself, which the transport's topic is named below
     transport: str | None = field(default=None, metadata={"optional": True})
     # a parameter read: the member variable it stores the value in (``publish_`` of
     # ``nh.param("publish", publish_, false)`` or ``publish_ = declare_parameter(..)``),

@@ -32,7 +32,8 @@ robot_localization reads ``imu0``, ``imu1``); a version 1 file reads unchanged (
 cannot hold that), a file of a later version is refused with its version named.
 ``transport`` (optional) marks a call made through image_transport (``*``: a publisher;
 a subscriber's transport, ``?`` when its node's ``image_transport`` parameter says; a
-trailing ``/`` when its transport's topic is named from the base as written).
+trailing ``/`` when its transport's topic is named from the base as written, ``=`` when
+from a base its ROS 2 code resolved and remapped itself).
 """
 
 from __future__ import annotations

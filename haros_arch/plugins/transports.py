@@ -150,7 +150,7 @@ class Transports:
                       ) -> list[PrimitiveCall]:
         version = 1 if instance.ros_version == 1 else 2
         out: list[PrimitiveCall] = []
-        name: str | None = (call.transport or "").rstrip("/")
+        name: str | None = (call.transport or "").rstrip("/=")
         if name == UNKNOWN_MARK and version == 2 and not _declares(instance, TRANSPORT_PARAM):
             # ROS 2 TransportHints get_parameter_or a parameter they never declare: without
             # the node's own declaration the launch value is not there, raw is used

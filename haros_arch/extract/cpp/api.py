@@ -155,6 +155,14 @@ _TF = "tf2_msgs/TFMessage"
 _FILTER_SUBSCRIBER = RosFunction(
     "subscribe", type_from=("class",), on_handle=False, handle_arg=0, name_arg=1,
     queue_arg=2, qos_arg=2)
+# image_transport::SubscriberFilter, a message_filters source, and its subscribe(...):
+# ROS 1 (it, base_topic, queue_size, hints) subscribes as ImageTransport::subscribe does,
+# ROS 2 (node, base_topic, transport, qos, options) as create_subscription does
+_IMAGE_FILTER_SUBSCRIBER = RosFunction(
+    "subscribe", fixed_type=_IMAGE, on_handle=False, handle_arg=0, name_arg=1, queue_arg=2,
+    transport="?/", ros2=RosFunction(
+        "subscribe", fixed_type=_IMAGE, on_handle=False, handle_arg=0, name_arg=1,
+        qos_arg=3, transport="?", transport_arg=2))
 # ROS 1 realtime_tools::RealtimePublisher<M>(nh, topic, queue, latched) and its init(...)
 _REALTIME_PUBLISHER = RosFunction(
     "publish", type_from=("class",), on_handle=False, handle_arg=0, name_arg=1,
@@ -204,6 +212,8 @@ LIBRARIES: dict[tuple[str, str], RosFunction] = {
         callback_arg=2, siblings=_CAMERA_INFO_IN, transport="?", transport_arg=3),
     ("message_filters::Subscriber", "Subscriber"): _FILTER_SUBSCRIBER,
     ("message_filters::Subscriber", "subscribe"): _FILTER_SUBSCRIBER,
+    ("image_transport::SubscriberFilter", "SubscriberFilter"): _IMAGE_FILTER_SUBSCRIBER,
+    ("image_transport::SubscriberFilter", "subscribe"): _IMAGE_FILTER_SUBSCRIBER,
     # urdf::Model reads the robot description where searchParam finds it: on the handle
     # given, else in the node's namespace
     ("urdf::Model", "initParamWithNodeHandle"): RosFunction(

@@ -36,6 +36,17 @@ WRAPPERS = frozenset({
     CursorKind.CSTYLE_CAST_EXPR, CursorKind.CXX_STATIC_CAST_EXPR,
     CursorKind.CXX_CONST_CAST_EXPR,
 })
+# rclcpp's node interfaces resolve a name: expanded in the node's namespace and remapped
+# (unless ``only_expand``). The graph does both when it links a call, so the value is the
+# name as written (image_pipeline: ``node_base->resolve_topic_or_service_name("image",
+# false)``); ``Scope.resolved`` tells an image_transport call that its base is remapped
+# already. (class, method) -> the index of ``only_expand``. Not modelled: a name the code
+# uses resolved once more (``getCameraInfoTopic`` of a resolved name, resolved again, is
+# remapped by the graph as written, not below the remapped base) and ``only_expand``
+# outside image_transport (the graph still remaps the name).
+_RESOLVERS: dict[tuple[str, str], int] = {
+    ("NodeBaseInterface", "resolve_topic_or_service_name"): 2,
+    ("NodeTopicsInterface", "resolve_topic_name"): 1}
 _REFS = frozenset({CursorKind.TYPE_REF, CursorKind.NAMESPACE_REF, CursorKind.TEMPLATE_REF})
 _ESCAPES = {"n": "\n", "t": "\t", "\\": "\\", '"': '"', "'": "'", "0": "\0"}
 _TOKEN = re.compile(rb"[A-Za-z_]\w*|[-+]?(?:0[xX][0-9a-fA-F]+|\d+)[uUlL]*")
@@ -52,6 +63,24 @@ def render(parts: Parts) -> str:
         else:
             text.append(part)
     return "".join(text)
+
+
+def _resolver(target: Cursor) -> int | None:
+    """The index of ``only_expand`` when ``target`` resolves a name (``_RESOLVERS``)."""
+    parent = target.semantic_parent
+    return None if parent is None else _RESOLVERS.get((parent.spelling, target.spelling))
+
+
+def camera_info_topic(base: Parts) -> Parts:
+    """image_transport's ``getCameraInfoTopic(base)``: ``camera_info`` in the namespace of
+    the base (``left/image_rect`` -> ``left/camera_info``); unknown when that namespace
+    is."""
+    last = base[-1]
+    if last is None or PLACEHOLDER in last:
+        return UNKNOWN
+    if "/" in last:
+        return (*base[:-1], last.rpartition("/")[0] + "/camera_info")
+    return ("camera_info",) if len(base) == 1 else UNKNOWN
 
 
 def is_default_argument(cursor: Cursor) -> bool:
@@ -257,6 +286,12 @@ class Scope:
         if target.spelling == "getName" and not args and target.semantic_parent is not None \
                 and target.semantic_parent.spelling == "this_node":
             return ("~",)  # ros::this_node::getName(): the node's own (private) name
+        if args and _resolver(target) is not None:
+            return self.string(args[0], depth + 1)
+        if (target.spelling == "getCameraInfoTopic" and len(args) == 1
+                and target.semantic_parent is not None
+                and target.semantic_parent.spelling == "image_transport"):
+            return camera_info_topic(self.string(args[0], depth + 1))
         if target.kind == CursorKind.CONSTRUCTOR and (
             call.type.get_canonical().get_declaration().spelling in ("basic_string",
                                                                      "string_view")
@@ -271,6 +306,29 @@ class Scope:
                 if objects:
                     return self.string(objects[0], depth + 1)
         return UNKNOWN
+
+    def resolved(self, cursor: Cursor, depth: int = 0) -> bool:
+        """Whether the name ``cursor`` holds is one a node interface resolved and remapped
+        (``_RESOLVERS``, not ``only_expand``), through variables and string copies."""
+        cursor = strip(cursor)
+        if depth > MAX_DEPTH:
+            return False
+        if cursor.kind in (CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR):
+            decl = cursor.referenced
+            value = None if decl is None else self.variable(decl)
+            if value is None and decl is not None:
+                found = self.field(decl)
+                return found is not None and found[1].resolved(found[0], depth + 1)
+            return value is not None and self.resolved(value, depth + 1)
+        if cursor.kind != CursorKind.CALL_EXPR:
+            return False
+        args, target = written_arguments(cursor), cursor.referenced
+        if target is None or (target.kind == CursorKind.CONSTRUCTOR and len(args) == 1):
+            inner = operand(cursor) if target is None else args[0]
+            return inner is not None and self.resolved(inner, depth + 1)
+        only_expand = _resolver(target)
+        return only_expand is not None and bool(args) and (
+            only_expand >= len(args) or self.boolean(args[only_expand]) is False)
 
     def integer(self, cursor: Cursor, depth: int = 0) -> int | None:
         if depth > MAX_DEPTH:

@@ -562,6 +562,9 @@ class CallFinder:
             written_transport = render(scope.string(arg(spec.transport_arg)))
             if written_transport and "?" not in written_transport:
                 transport = written_transport + ("/" if transport.endswith("/") else "")
+        base = arg(spec.name_arg)
+        if transport is not None and self.ros2 and base is not None and scope.resolved(base):
+            transport += "="  # a base the code resolved and remapped (image_pipeline's)
         for written, source in names:
             # getName() is "~": only as the start of a name is it the node's own name
             name = _private(written[:1] + written[1:].replace("~", "?"))

@@ -57,6 +57,23 @@ public:
   template<class C, class... A> CameraSubscriber subscribeCamera(const std::string& base_topic,
       uint32_t queue_size, const C& callback, A&&... more);
 };
+// a message_filters source (subscriber_filter.h / .hpp): ROS 1 (it, base_topic, queue_size,
+// hints), ROS 2 (node, base_topic, transport, qos, options)
+class SubscriberFilter {
+public:
+  SubscriberFilter();
+  template<class N, class... A> SubscriberFilter(N&& node, const std::string& base_topic,
+      A&&... more);
+  template<class N, class... A> void subscribe(N&& node, const std::string& base_topic,
+      A&&... more);
+  void unsubscribe();
+  std::string getTopic() const;
+  uint32_t getNumPublishers() const;
+  const Subscriber& getSubscriber() const;
+  template<class C> void registerCallback(const C& callback);
+};
+// the camera_info topic beside an image topic (camera_common.h / .hpp)
+std::string getCameraInfoTopic(const std::string& base_topic);
 // the QoS profile and options that follow (rmw_qos_profile_t, PublisherOptions, ...)
 template<class N, class... A> Publisher create_publisher(N node, const std::string& base_topic,
     A&&... qos_and_options);

@@ -433,6 +433,8 @@ namespace node_interfaces {
 class NodeBaseInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeBaseInterface)
   const char* get_name() const; const char* get_namespace() const;
   const char* get_fully_qualified_name() const; std::shared_ptr<class Context> get_context();
+  std::string resolve_topic_or_service_name(const std::string& name, bool is_service,
+      bool only_expand = false) const;
   template<class... A> std::shared_ptr<CallbackGroup> create_callback_group(A&&... args);
   std::shared_ptr<CallbackGroup> get_default_callback_group(); };
 class NodeTopicsInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeTopicsInterface)
