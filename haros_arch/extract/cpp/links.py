@@ -21,7 +21,7 @@ import dataclasses
 import re
 from collections.abc import Callable, Collection, Iterable
 
-from clang.cindex import Cursor, CursorKind
+from clang.cindex import Cursor, CursorKind, conf
 
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
@@ -67,6 +67,13 @@ def argument_facts(sites: CallSites, namespaces: Namespaces,
                     facts.append((usr, index, value, site))
             if len(facts) == given:  # called, with nothing read: called all the same
                 facts.append((usr, CALLED, "", site))
+            template = conf.lib.clang_getSpecializedCursorTemplate(callee)
+            if template is not None and callee.kind == CursorKind.FUNCTION_DECL and (
+                template.kind == CursorKind.FUNCTION_TEMPLATE
+            ):
+                # a function template's specialisation: the template is called, for
+                # what it makes whatever its arguments (``CallFinder._made_in``)
+                facts.append((template.get_usr(), CALLED, "", site))
     return list(dict.fromkeys(facts))
 
 

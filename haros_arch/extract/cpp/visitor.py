@@ -26,7 +26,7 @@ from ...model.location import Location
 from ...model.source import PrimitiveCall
 from . import api, msg_types, parameter_library, synthesis
 from .call_sites import CallSites
-from .call_types import CallTypes, factory_made
+from .call_types import CallTypes, factory_made, row_class
 from .call_types import callee as callee_of_call
 from .conditions import ConditionReader
 from .cursors import children_in, root
@@ -80,6 +80,7 @@ _API_NAMES = frozenset(
     [name for _, name in [*api.ALL, *api.NODE_NAME, *api.RCLCPP_NODE_NAME, *api.FACTORIES]]
     + [parameter_library.LISTENER])
 MAX_DEPTH = 16
+_FACTORIES = frozenset(name for _, name in api.FACTORIES)
 _PREPROCESSED = frozenset({CursorKind.MACRO_INSTANTIATION, CursorKind.INCLUSION_DIRECTIVE})
 _PARAM_KINDS = ("read", "declare")
 _VALUE_METHODS = frozenset({"c_str", "str", "as_string", "as_int", "as_double", "as_bool",
@@ -123,6 +124,9 @@ class CallFinder:
         # the placeholder that starts a parameter of the constructor being walked, whose
         # calls named after it are made only where the class is constructed (``_emit``)
         self._constructor: tuple[str, str] | None = None
+        # the USR of the header function template whose dependent construction is
+        # being emitted (``_made_in``)
+        self._made_by: str | None = None
         # reads that return whether the parameter is there, where they are
         self._status_reads: list[tuple[Key, PrimitiveCall]] = []
         # (owner, class of the workspace it constructs): the class's calls are made on
@@ -217,6 +221,10 @@ class CallFinder:
                 _recovered_name(node) in rows
             ):
                 return True
+            if kind == CursorKind.CALL_EXPR and not node.spelling and (
+                _dependent_made(node) is not None
+            ):
+                return True
         return False
 
     def _function(self, function: Cursor) -> None:
@@ -234,6 +242,11 @@ class CallFinder:
             usr = function.canonical.get_usr()
             if usr:
                 self._constructor = (usr, f"{PLACEHOLDER}{usr}{SEPARATOR}")
+        # a function template of a header: what it makes for any node type (a
+        # dependent ``make_shared``) is made only where a file of the node calls it
+        template = function.canonical.get_usr() if (
+            function.kind == CursorKind.FUNCTION_TEMPLATE and function.location.file
+            is not None and function.location.file.name != self.tu.spelling) else None
         tested, self._status_reads = TestedCalls(self.reader), []
         stack: list[tuple[Cursor, tuple[Condition, ...]]] = [
             (child, ()) for child in reversed(list(function.get_children()))
@@ -250,6 +263,15 @@ class CallFinder:
                 not node.spelling and _recovered_name(node) in self._unresolved_rows()
             ):
                 self._unresolved(node, conditions, scope)
+            elif node.kind == CursorKind.CALL_EXPR and not node.spelling:
+                made = _dependent_made(node)
+                if made is not None:
+                    self._made_by = template
+                    try:
+                        self._emit(made[0], node, written_arguments(node), made[1],
+                                   conditions, scope)
+                    finally:
+                        self._made_by = None
             if node.kind == CursorKind.CALL_EXPR:
                 self._construction(node)
                 self._to_unknown(node)
@@ -271,9 +293,15 @@ class CallFinder:
             decl = factory_made(call)
             if decl is None:
                 return None, None
+            decl = row_class(decl)
             return api.ALL.get((qualified_name(decl), decl.spelling)), decl
         if target.kind == CursorKind.CONSTRUCTOR:
-            return api.ALL.get(key), call.type.get_canonical().get_declaration()
+            made = call.type.get_canonical().get_declaration()
+            if key not in api.ALL and made.kind != CursorKind.NO_DECL_FOUND:
+                base = row_class(made)
+                if base != made:
+                    return api.ALL.get((qualified_name(base), base.spelling)), base
+            return api.ALL.get(key), made
         spec = api.ALL.get(key)
         if spec is not None and "class" in spec.type_from:
             callee = callee_of_call(call)
@@ -612,6 +640,8 @@ class CallFinder:
         """The USR of the constructor being walked when ``name`` (or the handle's
         ``namespace``) holds the placeholder of one of its parameters: no call in this
         unit constructs the class, and the call is made only where one does."""
+        if self._made_by is not None:
+            return self._made_by
         if self._constructor is None:
             return None
         usr, mark = self._constructor
@@ -761,6 +791,7 @@ class CallFinder:
         decl = field.type.get_canonical().get_declaration()
         if decl is None or decl.kind == CursorKind.NO_DECL_FOUND:
             return
+        decl = row_class(decl)
         spec = api.ALL.get((qualified_name(decl), decl.spelling))
         if spec is None or spec.fixed_name is None:
             return
@@ -783,6 +814,34 @@ def _status_read(spec: api.RosFunction, site: Cursor, count: int) -> Key | None:
             result != TypeKind.BOOL):
         return None
     return key_of(site)
+
+
+def _dependent_made(call: Cursor) -> tuple[api.RosFunction, Cursor] | None:
+    """The API row and class of ``std::make_shared<C>(args)`` (a factory of
+    ``api.FACTORIES``) that a template leaves unresolved because an argument depends on
+    its parameters, when ``C`` is a class, not a template, whose construction has a row
+    with a name of its own: nav2's ``create_transform_listener(buffer, node)`` makes a
+    ``std::make_shared<nav2::TransformListener>(buffer, node)``."""
+    children = list(call.get_children())
+    head = children[0] if children else None
+    if head is None or head.kind != CursorKind.DECL_REF_EXPR or (
+        _recovered_name(call) not in _FACTORIES
+    ):
+        return None
+    refs = list(head.get_children())
+    if not any(r.kind == CursorKind.NAMESPACE_REF and r.spelling in ("std", "boost")
+               for r in refs):
+        return None
+    classes = [r.referenced for r in refs if r.kind == CursorKind.TYPE_REF
+               and r.referenced is not None]
+    if len(classes) != 1 or classes[0].kind not in (CursorKind.CLASS_DECL,
+                                                    CursorKind.STRUCT_DECL):
+        return None
+    made = row_class(classes[0])
+    spec = api.ALL.get((qualified_name(made), made.spelling))
+    if spec is None or spec.fixed_name is None:
+        return None
+    return spec, made
 
 
 def _recovered_name(expr: Cursor) -> str:
