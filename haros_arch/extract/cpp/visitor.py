@@ -127,6 +127,7 @@ class CallFinder:
         # the USR of the header function template whose dependent construction is
         # being emitted (``_made_in``)
         self._made_by: str | None = None
+        self._template: str | None = None  # of the function being walked (``_function``)
         # reads that return whether the parameter is there, where they are
         self._status_reads: list[tuple[Key, PrimitiveCall]] = []
         # (owner, class of the workspace it constructs): the class's calls are made on
@@ -244,7 +245,7 @@ class CallFinder:
                 self._constructor = (usr, f"{PLACEHOLDER}{usr}{SEPARATOR}")
         # a function template of a header: what it makes for any node type (a
         # dependent ``make_shared``) is made only where a file of the node calls it
-        template = function.canonical.get_usr() if (
+        self._template = function.canonical.get_usr() if (
             function.kind == CursorKind.FUNCTION_TEMPLATE and function.location.file
             is not None and function.location.file.name != self.tu.spelling) else None
         tested, self._status_reads = TestedCalls(self.reader), []
@@ -264,14 +265,7 @@ class CallFinder:
             ):
                 self._unresolved(node, conditions, scope)
             elif node.kind == CursorKind.CALL_EXPR and not node.spelling:
-                made = _dependent_made(node)
-                if made is not None:
-                    self._made_by = template
-                    try:
-                        self._emit(made[0], node, written_arguments(node), made[1],
-                                   conditions, scope)
-                    finally:
-                        self._made_by = None
+                self._dependent(node, conditions, scope)
             if node.kind == CursorKind.CALL_EXPR:
                 self._construction(node)
                 self._to_unknown(node)
@@ -327,7 +321,8 @@ class CallFinder:
         finally:
             self._constructor = constructor
         if target is None:
-            self._unresolved(call, conditions, scope)
+            if not self._dependent(call, conditions, scope):
+                self._unresolved(call, conditions, scope)
             return
         key = (qualified_name(target.semantic_parent), target.spelling)
         args = written_arguments(call)
@@ -362,6 +357,20 @@ class CallFinder:
                 return
         if spec is not None:
             self._emit(spec, call, args, cls, conditions, scope)
+
+    def _dependent(self, call: Cursor, conditions: tuple[Condition, ...],
+                   scope: Scope) -> bool:
+        """Emit a dependent ``make_shared`` of an API class (``_dependent_made``); made,
+        in a header's function template, only where a file of the node calls it."""
+        made = _dependent_made(call)
+        if made is None:
+            return False
+        self._made_by = self._template
+        try:
+            self._emit(made[0], call, written_arguments(call), made[1], conditions, scope)
+        finally:
+            self._made_by = None
+        return True
 
     def _unresolved(self, call: Cursor, conditions: tuple[Condition, ...],
                     scope: Scope) -> None:
