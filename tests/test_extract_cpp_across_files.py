@@ -239,3 +239,34 @@ def test_classes_that_inherit_an_api_class_constructors(tmp_path: Path) -> None:
         ("subscribe", "/tf", "tf2_msgs/msg/TFMessage"),
         ("subscribe", "/tf_static", "tf2_msgs/msg/TFMessage")]
     assert bare.calls == []
+
+
+def test_a_member_assigned_before_it_is_read_in_the_same_function(tmp_path: Path) -> None:
+    """base_local_planner's OdometryHelperRos: ``setOdomTopic(topic)`` assigns the member
+    and subscribes to it; the constructor passes its argument on, and the planner
+    builds the helper with "odom"."""
+    package = tmp_path / "src" / "helper"
+    (package / "src").mkdir(parents=True)
+    (package / "package.xml").write_text(
+        '<package format="2"><name>helper</name><version>1.0.0</version>'
+        '<description>d</description><maintainer email="a@b.c">a</maintainer>'
+        '<license>BSD</license></package>\n')
+    source = package / "src" / "helper.cpp"
+    source.write_text(
+        "#include <string>\n#include <ros/ros.h>\n#include <nav_msgs/Odometry.h>\n"
+        "class Helper {\npublic:\n"
+        "  explicit Helper(std::string topic) { setTopic(topic); }\n"
+        "  void setTopic(std::string topic) {\n"
+        "    if (topic != topic_) {\n      topic_ = topic;\n      ros::NodeHandle gn;\n"
+        "      sub_ = gn.subscribe<nav_msgs::Odometry>(topic_, 1, &Helper::cb, this);\n"
+        "    }\n  }\n"
+        "  void late() { ros::NodeHandle gn; pub_ = gn.advertise<nav_msgs::Odometry>(topic_, 1);"
+        " topic_ = \"other\"; }\n"
+        "  void cb(const nav_msgs::Odometry::ConstPtr&) {}\n"
+        "private:\n  std::string topic_;\n  ros::Subscriber sub_;\n  ros::Publisher pub_;\n};\n"
+        "int main(int argc, char** argv) {\n  ros::init(argc, argv, \"helper\");\n"
+        "  Helper helper(\"odom\");\n  helper.late();\n  ros::spin();\n}\n")
+    batch = extract_cpp_nodes([[str(source)]], scan([str(tmp_path)]), cache_dir=None, jobs=1)
+    # the read in late() comes before that function's own assignment: not its value
+    assert [(c.kind, c.name) for c in batch.results[0].calls] == [
+        ("subscribe", "odom"), ("publish", "?")]

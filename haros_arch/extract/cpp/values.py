@@ -92,6 +92,8 @@ class Scope:
         # call, and nothing asks their values)
         self._writes: dict[tuple[str, int], list[Cursor | None]] | None = None
         self._passed: dict[tuple[str, int], tuple[Cursor, int]] = {}
+        # member -> (offset, expression) of each ``member_ = value`` of this body
+        self._members: dict[tuple[str, int], list[tuple[int, Cursor]]] = {}
 
     # -- writes -----------------------------------------------------------------------
 
@@ -124,6 +126,7 @@ class Scope:
                 children = list(node.get_children())
                 if len(children) == 2 and self.operator(node, children) == "=":
                     self._write_ref(children[0], children[1])
+                    self._write_member(node, children[0], children[1])
             elif kind in (CursorKind.COMPOUND_ASSIGNMENT_OPERATOR, CursorKind.UNARY_OPERATOR):
                 for child in node.get_children():
                     self._write_ref(child, None)
@@ -132,6 +135,7 @@ class Scope:
         args = list(call.get_arguments())
         if call.spelling == "operator=" and len(args) == 2:
             self._write_ref(args[0], args[1])
+            self._write_member(call, args[0], args[1])
             return
         for index, arg in enumerate(args):  # an lvalue passed as it is: a reference
             if arg.kind in (CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR) and (
@@ -156,6 +160,30 @@ class Scope:
         if value is None and (decl.type.is_const_qualified() or not _plain_value(decl)):
             return  # calls on objects (a NodeHandle's advertise) do not change what we track
         self._write(decl, value)
+
+    def _write_member(self, at: Cursor, target: Cursor, value: Cursor) -> None:
+        """``member_ = value`` on this object (``this->`` written or not)."""
+        target = strip(target)
+        decl = target.referenced if target.kind == CursorKind.MEMBER_REF_EXPR else None
+        if decl is None or decl.kind != CursorKind.FIELD_DECL or any(
+            strip(c).kind != CursorKind.CXX_THIS_EXPR for c in target.get_children()
+        ):
+            return
+        self._members.setdefault(key_of(decl), []).append((at.extent.start.offset, value))
+
+    def assigned(self, decl: Cursor, at: Cursor) -> Cursor | None:
+        """What this body last assigned to member ``decl`` before ``at`` (``topic_ =
+        topic; sub_ = nh.subscribe(topic_, ...)``: base_local_planner's
+        OdometryHelperRos::setOdomTopic), when every assignment of it here is written
+        before ``at``: the value the read sees when the body runs straight on."""
+        _ = self.writes  # read from the body together
+        found = self._members.get(key_of(decl))
+        if not found:
+            return None
+        where = at.extent.start.offset
+        if any(offset > where for offset, _value in found):
+            return None
+        return max(found, key=lambda write: write[0])[1]
 
     def _write(self, decl: Cursor, value: Cursor | None) -> None:
         self.writes.setdefault(key_of(decl), []).append(value)
@@ -204,6 +232,10 @@ class Scope:
                 return self.sites.agreed(  # type: ignore[union-attr]
                     decl, lambda arg, scope: scope.string(arg, depth + 1), UNKNOWN)
             value = self.variable(decl)
+            if value is None and kind == CursorKind.MEMBER_REF_EXPR and (
+                decl.kind == CursorKind.FIELD_DECL
+            ):
+                value = self.assigned(decl, cursor)
             if value is None:
                 found = self.field(decl)
                 return UNKNOWN if found is None else found[1].string(found[0], depth + 1)
