@@ -17,7 +17,7 @@ import re
 from collections.abc import Callable, Iterator
 from typing import Any
 
-from clang.cindex import Cursor, CursorKind, TranslationUnit, TypeKind
+from clang.cindex import Cursor, CursorKind, StorageClass, TranslationUnit, TypeKind
 
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
@@ -57,6 +57,7 @@ from .values import (
     PLACEHOLDER,
     SEPARATOR,
     Scope,
+    _default_constructed,
     _may_write,
     initializer,
     render,
@@ -81,6 +82,12 @@ _API_NAMES = frozenset(
     + [parameter_library.LISTENER])
 MAX_DEPTH = 16
 _FACTORIES = frozenset(name for _, name in api.FACTORIES)
+# builtin types a variable of static storage starts as zero of (C++'s zero-initialisation)
+_ZEROED: dict[TypeKind, object] = {
+    TypeKind.BOOL: False, TypeKind.INT: 0, TypeKind.UINT: 0, TypeKind.LONG: 0,
+    TypeKind.ULONG: 0, TypeKind.LONGLONG: 0, TypeKind.ULONGLONG: 0, TypeKind.SHORT: 0,
+    TypeKind.USHORT: 0, TypeKind.FLOAT: 0.0, TypeKind.DOUBLE: 0.0,
+}
 _PREPROCESSED = frozenset({CursorKind.MACRO_INSTANTIATION, CursorKind.INCLUSION_DIRECTIVE})
 _PARAM_KINDS = ("read", "declare")
 _VALUE_METHODS = frozenset({"c_str", "str", "as_string", "as_int", "as_double", "as_bool",
@@ -782,6 +789,8 @@ class CallFinder:
         """Whether a parameter read gives a default, and its value when it is a literal."""
         index = spec.default_arg
         if index is None:
+            if spec.kind == "read" and spec.out_arg is not None and spec.out_arg < len(args):
+                return _kept_value(args[spec.out_arg], scope)
             return False, None
         if index >= len(args) and spec.out_arg == len(args) - 1:
             index = spec.out_arg  # nh.param<T>(name, default) returns the value
@@ -805,6 +814,46 @@ class CallFinder:
         if spec is None or spec.fixed_name is None:
             return
         self._emit(spec, field, [], decl, (), Scope(None, self.macros, self.source, self.sites))
+
+
+def _kept_value(out: Cursor, scope: Scope) -> tuple[bool, object]:
+    """A read into ``out`` that leaves it as it is when the parameter is not there (ROS
+    1's ``getParam(name, out)``, rclcpp's ``get_parameter(name, out)``) has a default
+    when ``out`` holds a value before it: a local written with an initialiser
+    (``bool unreliable = false;``), a variable of static storage of a builtin type
+    (topic_tools' ``bool g_lazy;``, zero), a member its class initialises. Its value
+    when that is a literal."""
+    target = strip(out)
+    decl = target.referenced if target.kind in (
+        CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR) else None
+    if decl is None:
+        return False, None
+    value: Cursor | None = None
+    where = scope
+    if decl.kind == CursorKind.VAR_DECL:
+        init = initializer(decl.get_definition() or decl)
+        if init is not None and not _default_constructed(init):
+            value = init
+        elif init is None and decl.type.get_canonical().kind in _ZEROED and (
+            decl.storage_class == StorageClass.STATIC
+            or decl.semantic_parent is None
+            or decl.semantic_parent.kind in (CursorKind.NAMESPACE,
+                                             CursorKind.TRANSLATION_UNIT)
+        ):
+            zero = _ZEROED[decl.type.get_canonical().kind]
+            return True, zero
+    elif decl.kind == CursorKind.FIELD_DECL:
+        found = scope.field(decl)
+        if found is not None:
+            value, where = found
+    if value is None:
+        return False, None
+    for read in (where.boolean, where.integer):
+        known = read(value)
+        if known is not None:
+            return True, known
+    parts = where.string(value)
+    return True, (render(parts) if parts and _known(parts) else None)
 
 
 def _status_read(spec: api.RosFunction, site: Cursor, count: int) -> Key | None:
