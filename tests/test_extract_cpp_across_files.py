@@ -262,11 +262,14 @@ def test_a_member_assigned_before_it_is_read_in_the_same_function(tmp_path: Path
         "    }\n  }\n"
         "  void late() { ros::NodeHandle gn; pub_ = gn.advertise<nav_msgs::Odometry>(topic_, 1);"
         " topic_ = \"other\"; }\n"
+        "  void maybe(bool on) { ros::NodeHandle gn; if (on) { topic_ = \"cond\"; }\n"
+        "    pub_ = gn.advertise<nav_msgs::Odometry>(topic_, 1); }\n"
         "  void cb(const nav_msgs::Odometry::ConstPtr&) {}\n"
         "private:\n  std::string topic_;\n  ros::Subscriber sub_;\n  ros::Publisher pub_;\n};\n"
         "int main(int argc, char** argv) {\n  ros::init(argc, argv, \"helper\");\n"
-        "  Helper helper(\"odom\");\n  helper.late();\n  ros::spin();\n}\n")
+        "  Helper helper(\"odom\");\n  helper.late();\n  helper.maybe(true);\n  ros::spin();\n}\n")
     batch = extract_cpp_nodes([[str(source)]], scan([str(tmp_path)]), cache_dir=None, jobs=1)
-    # the read in late() comes before that function's own assignment: not its value
+    # the read in late() comes before that function's own assignment, the one in
+    # maybe() after an assignment that may not run: neither is its value
     assert [(c.kind, c.name) for c in batch.results[0].calls] == [
-        ("subscribe", "odom"), ("publish", "?")]
+        ("subscribe", "odom"), ("publish", "?"), ("publish", "?")]

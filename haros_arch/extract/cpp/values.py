@@ -94,6 +94,9 @@ class Scope:
         self._passed: dict[tuple[str, int], tuple[Cursor, int]] = {}
         # member -> (offset, expression) of each ``member_ = value`` of this body
         self._members: dict[tuple[str, int], list[tuple[int, Cursor]]] = {}
+        # (start, end) offsets of the parts of this body that may not run, or run later:
+        # branches, loop bodies, cases, handlers, lambdas
+        self._regions: list[tuple[int, int]] = []
 
     # -- writes -----------------------------------------------------------------------
 
@@ -116,6 +119,18 @@ class Scope:
     def _collect(self, body: Cursor) -> None:
         for node in _walk(body):
             kind = node.kind
+            if kind in _BRANCHING:
+                children = list(node.get_children())
+                if kind == CursorKind.IF_STMT:
+                    parts = children[1:]  # then, else: not the condition
+                elif kind == CursorKind.DO_STMT:
+                    parts = children[:1]  # the body, before the condition
+                elif kind in _WHOLE_REGIONS:
+                    parts = [node]
+                else:
+                    parts = children[-1:]  # a loop's or a switch's body
+                self._regions.extend((p.extent.start.offset, p.extent.end.offset)
+                                     for p in parts)
             if kind == CursorKind.VAR_DECL:
                 init = initializer(node)
                 if init is not None and not _default_constructed(init):
@@ -183,7 +198,11 @@ class Scope:
         where = at.extent.start.offset
         if any(offset > where for offset, _value in found):
             return None
-        return max(found, key=lambda write: write[0])[1]
+        offset, value = max(found, key=lambda write: write[0])
+        if any(start <= offset <= end and not start <= where <= end
+               for start, end in self._regions):
+            return None  # the assignment may not run before the read (amcl's map_topic_)
+        return value
 
     def _write(self, decl: Cursor, value: Cursor | None) -> None:
         self.writes.setdefault(key_of(decl), []).append(value)
@@ -408,6 +427,18 @@ def _plain_value(decl: Cursor) -> bool:
     if ctype.kind in (TypeKind.LVALUEREFERENCE, TypeKind.RVALUEREFERENCE):
         ctype = ctype.get_pointee().get_canonical()
     return ctype.kind != TypeKind.RECORD or ctype.get_declaration().spelling == "basic_string"
+
+
+# statements whose parts may not run, or run later, when the body runs through them
+_BRANCHING = frozenset({
+    CursorKind.IF_STMT, CursorKind.FOR_STMT, CursorKind.CXX_FOR_RANGE_STMT,
+    CursorKind.WHILE_STMT, CursorKind.DO_STMT, CursorKind.SWITCH_STMT, CursorKind.CASE_STMT,
+    CursorKind.DEFAULT_STMT, CursorKind.CXX_CATCH_STMT, CursorKind.LAMBDA_EXPR,
+})
+
+
+_WHOLE_REGIONS = frozenset({CursorKind.CASE_STMT, CursorKind.DEFAULT_STMT,
+                            CursorKind.CXX_CATCH_STMT, CursorKind.LAMBDA_EXPR})
 
 
 def key_of(decl: Cursor) -> tuple[str, int]:
