@@ -171,3 +171,105 @@ def test_ros1_tf_listener_and_broadcaster(tmp_path: Path) -> None:
         ("subscribe", "/tf_static", "tf2_msgs/TFMessage"),
         ("publish", "/tf", "tf2_msgs/TFMessage")]
     assert [d.code for d in result.diagnostics] == []
+
+
+_NAV2_TF = """#pragma once
+#include <memory>
+#include "rclcpp/rclcpp.hpp"
+#include "tf2_ros/buffer.h"
+#include "tf2_ros/transform_listener.h"
+#include "tf2_ros/transform_broadcaster.h"
+namespace wrap {
+struct TransformListener : tf2_ros::TransformListener
+{
+  using tf2_ros::TransformListener::TransformListener;
+  using SharedPtr = std::shared_ptr<TransformListener>;
+};
+struct Broadcaster : tf2_ros::TransformBroadcaster
+{
+  using tf2_ros::TransformBroadcaster::TransformBroadcaster;
+};
+template<typename NodeT>
+inline std::shared_ptr<Broadcaster> create_broadcaster(const NodeT & node)
+{
+  return std::make_shared<Broadcaster>(node);
+}
+}  // namespace wrap
+"""
+
+
+def test_classes_that_inherit_an_api_class_constructors(tmp_path: Path) -> None:
+    """navigation2 wraps tf2_ros's classes in classes that inherit their constructors
+    (``using tf2_ros::TransformListener::TransformListener;``) and makes them in
+    function templates of a header, over any node type: the construction is tf2_ros's,
+    made by the nodes whose files call the template and by no other."""
+    package = tmp_path / "src" / "tfuser"
+    (package / "src").mkdir(parents=True)
+    (package / "include" / "tfuser").mkdir(parents=True)
+    (package / "package.xml").write_text(
+        '<package format="3"><name>tfuser</name><version>1.0.0</version>'
+        '<description>d</description><maintainer email="a@b.c">a</maintainer>'
+        '<license>BSD</license><depend>rclcpp</depend><depend>tf2_ros</depend>'
+        '</package>\n')
+    (package / "include" / "tfuser" / "tf.hpp").write_text(_NAV2_TF)
+    user = package / "src" / "user.cpp"
+    user.write_text(
+        '#include "tfuser/tf.hpp"\n'
+        "class User : public rclcpp::Node {\npublic:\n"
+        '  User() : Node("user") {\n'
+        "    buffer_ = std::make_shared<tf2_ros::Buffer>(get_clock());\n"
+        "    listener_ = std::make_shared<wrap::TransformListener>(*buffer_);\n"
+        "    out_ = wrap::create_broadcaster(this);\n  }\n"
+        "  std::shared_ptr<tf2_ros::Buffer> buffer_;\n"
+        "  wrap::TransformListener::SharedPtr listener_;\n"
+        "  std::shared_ptr<wrap::Broadcaster> out_;\n};\n"
+        "int main(int argc, char ** argv) {\n  rclcpp::init(argc, argv);\n"
+        "  rclcpp::spin(std::make_shared<User>());\n}\n")
+    other = package / "src" / "other.cpp"  # includes the header, makes neither
+    other.write_text(
+        '#include "tfuser/tf.hpp"\n'
+        "int main(int argc, char ** argv) {\n  rclcpp::init(argc, argv);\n"
+        '  rclcpp::spin(std::make_shared<rclcpp::Node>("other"));\n}\n')
+    batch = extract_cpp_nodes([[str(user)], [str(other)]], scan([str(tmp_path)]),
+                              cache_dir=None, jobs=1,
+                              include_dirs=[str(package / "include")])
+    made, bare = batch.results
+    assert sorted((c.kind, c.name, c.type) for c in made.calls) == [
+        ("publish", "/tf", "tf2_msgs/msg/TFMessage"),
+        ("subscribe", "/tf", "tf2_msgs/msg/TFMessage"),
+        ("subscribe", "/tf_static", "tf2_msgs/msg/TFMessage")]
+    assert bare.calls == []
+
+
+def test_a_member_assigned_before_it_is_read_in_the_same_function(tmp_path: Path) -> None:
+    """base_local_planner's OdometryHelperRos: ``setOdomTopic(topic)`` assigns the member
+    and subscribes to it; the constructor passes its argument on, and the planner
+    builds the helper with "odom"."""
+    package = tmp_path / "src" / "helper"
+    (package / "src").mkdir(parents=True)
+    (package / "package.xml").write_text(
+        '<package format="2"><name>helper</name><version>1.0.0</version>'
+        '<description>d</description><maintainer email="a@b.c">a</maintainer>'
+        '<license>BSD</license></package>\n')
+    source = package / "src" / "helper.cpp"
+    source.write_text(
+        "#include <string>\n#include <ros/ros.h>\n#include <nav_msgs/Odometry.h>\n"
+        "class Helper {\npublic:\n"
+        "  explicit Helper(std::string topic) { setTopic(topic); }\n"
+        "  void setTopic(std::string topic) {\n"
+        "    if (topic != topic_) {\n      topic_ = topic;\n      ros::NodeHandle gn;\n"
+        "      sub_ = gn.subscribe<nav_msgs::Odometry>(topic_, 1, &Helper::cb, this);\n"
+        "    }\n  }\n"
+        "  void late() { ros::NodeHandle gn; pub_ = gn.advertise<nav_msgs::Odometry>(topic_, 1);"
+        " topic_ = \"other\"; }\n"
+        "  void maybe(bool on) { ros::NodeHandle gn; if (on) { topic_ = \"cond\"; }\n"
+        "    pub_ = gn.advertise<nav_msgs::Odometry>(topic_, 1); }\n"
+        "  void cb(const nav_msgs::Odometry::ConstPtr&) {}\n"
+        "private:\n  std::string topic_;\n  ros::Subscriber sub_;\n  ros::Publisher pub_;\n};\n"
+        "int main(int argc, char** argv) {\n  ros::init(argc, argv, \"helper\");\n"
+        "  Helper helper(\"odom\");\n  helper.late();\n  helper.maybe(true);\n  ros::spin();\n}\n")
+    batch = extract_cpp_nodes([[str(source)]], scan([str(tmp_path)]), cache_dir=None, jobs=1)
+    # the read in late() comes before that function's own assignment, the one in
+    # maybe() after an assignment that may not run: neither is its value
+    assert [(c.kind, c.name) for c in batch.results[0].calls] == [
+        ("subscribe", "odom"), ("publish", "?"), ("publish", "?")]

@@ -71,3 +71,47 @@ def test_a_field_error_next_to_a_call_costs_no_second_parse(tmp_path):
     assert [d.code for d in found if d.code.startswith("CPP_") and d.code not in (
         "CPP_MESSAGE_UNKNOWN",)] == ["CPP_MESSAGE_FIELD"]
     assert node.completeness == "complete"
+
+
+KEPT = """
+#include <ros/ros.h>
+#include <string>
+bool g_lazy;
+std::string g_name;
+class Relay {
+ public:
+  Relay() : rate_(2.0) {
+    ros::NodeHandle pnh("~");
+    pnh.getParam("rate", rate_);
+    pnh.getParam("frame", frame_);
+  }
+  double rate_;
+  std::string frame_;
+};
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "throttle");
+  ros::NodeHandle pnh("~");
+  bool unreliable = false;
+  int count;
+  pnh.getParam("lazy", g_lazy);
+  pnh.getParam("unreliable", unreliable);
+  pnh.getParam("count", count);
+  pnh.getParam("name", g_name);
+  Relay relay;
+  return 0;
+}
+"""
+
+
+def test_a_read_into_a_variable_that_holds_a_value_has_that_default(tmp_path):
+    """topic_tools' throttle: ``getParam(name, out)`` leaves ``out`` as it is when the
+    parameter is not there; a global of a builtin type starts as zero, a local with an
+    initialiser and a member its constructor initialises hold their values. A local
+    without one, and a string that starts empty, give the read no default."""
+    source = tmp_path / "n.cpp"
+    source.write_text(KEPT)
+    result = extract_cpp([str(source)], Workspace(root=str(tmp_path)), cache_dir=None)
+    got = {c.name: (c.has_default, c.default) for c in result.calls}
+    assert got == {"~lazy": (True, False), "~unreliable": (True, False),
+                   "~count": (False, None), "~name": (False, None),
+                   "~rate": (True, None), "~frame": (False, None)}

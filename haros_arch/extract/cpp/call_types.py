@@ -12,7 +12,7 @@ from __future__ import annotations
 from clang.cindex import Cursor, CursorKind, Type, TypeKind
 
 from . import api, msg_types
-from .handles import parameters
+from .handles import parameters, qualified_name
 from .values import Scope, render, strip
 
 _INTERFACE = ("msg", "srv", "action")
@@ -151,6 +151,32 @@ def factory_made(call: Cursor) -> Cursor | None:
     ref = template_argument(call)
     decl = ref.type.get_canonical().get_declaration() if ref is not None else None
     return None if decl is None or decl.kind == CursorKind.NO_DECL_FOUND else decl
+
+
+def row_class(decl: Cursor, depth: int = 0) -> Cursor:
+    """The class whose API row a construction of ``decl`` is: ``decl`` itself, or the
+    base whose constructors it inherits and whose row it has (nav2's
+    ``struct TransformListener : tf2_ros::TransformListener { using
+    tf2_ros::TransformListener::TransformListener; }``), through several such classes.
+    A class that writes constructors of its own is itself: its constructors' code says
+    what they build."""
+    if (qualified_name(decl), decl.spelling) in api.ALL or depth > 4:
+        return decl
+    definition = decl.get_definition() or decl
+    own = decl.spelling.split("<")[0]
+    for using in definition.get_children():
+        if using.kind != CursorKind.USING_DECLARATION:
+            continue
+        # ``using Base::Base;``: clang names it after the class that inherits them
+        bases = [ref.referenced for ref in using.get_children()
+                 if ref.kind in (CursorKind.TYPE_REF, CursorKind.TEMPLATE_REF)
+                 and ref.referenced is not None]
+        if not bases or using.spelling not in (own, bases[-1].spelling):
+            continue
+        made = row_class(bases[-1], depth + 1)
+        if (qualified_name(made), made.spelling) in api.ALL:
+            return made
+    return decl
 
 
 def constructed_argument(call: Cursor) -> Type | None:

@@ -21,7 +21,7 @@ import dataclasses
 import re
 from collections.abc import Callable, Collection, Iterable
 
-from clang.cindex import Cursor, CursorKind
+from clang.cindex import Cursor, CursorKind, conf
 
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
@@ -33,6 +33,8 @@ from .values import PLACEHOLDER, SEPARATOR, Scope, key_of, render
 
 Fact = tuple[str, int, str, str]  # callee USR, parameter index, value passed, call site
 CALLED = -1  # the index of a fact that says only that the call site calls the function
+_SPECIALISED = frozenset({CursorKind.FUNCTION_DECL, CursorKind.CONSTRUCTOR,
+                          CursorKind.CXX_METHOD})
 MAX_VALUES = 8
 MAX_DEPTH = 8
 _MARK = re.compile(f"{PLACEHOLDER}([^{PLACEHOLDER}{SEPARATOR}]*){SEPARATOR}(\\d+){PLACEHOLDER}")
@@ -67,6 +69,15 @@ def argument_facts(sites: CallSites, namespaces: Namespaces,
                     facts.append((usr, index, value, site))
             if len(facts) == given:  # called, with nothing read: called all the same
                 facts.append((usr, CALLED, "", site))
+            template = conf.lib.clang_getSpecializedCursorTemplate(callee)
+            if template is not None and callee.kind in _SPECIALISED and (
+                template.kind == CursorKind.FUNCTION_TEMPLATE
+            ):
+                # a function template's specialisation: what is passed to it is passed
+                # to the template, whose code holds the calls (and their placeholders:
+                # ``CallFinder._made_in``, a constructor template's names)
+                facts.extend((template.get_usr(), index, value, at)
+                             for _usr, index, value, at in facts[given:])
     return list(dict.fromkeys(facts))
 
 

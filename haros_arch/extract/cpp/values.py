@@ -121,6 +121,11 @@ class Scope:
         # call, and nothing asks their values)
         self._writes: dict[tuple[str, int], list[Cursor | None]] | None = None
         self._passed: dict[tuple[str, int], tuple[Cursor, int]] = {}
+        # member -> (offset, expression) of each ``member_ = value`` of this body
+        self._members: dict[tuple[str, int], list[tuple[int, Cursor]]] = {}
+        # (start, end) offsets of the parts of this body that may not run, or run later:
+        # branches, loop bodies, cases, handlers, lambdas
+        self._regions: list[tuple[int, int]] = []
 
     # -- writes -----------------------------------------------------------------------
 
@@ -143,6 +148,18 @@ class Scope:
     def _collect(self, body: Cursor) -> None:
         for node in _walk(body):
             kind = node.kind
+            if kind in _BRANCHING:
+                children = list(node.get_children())
+                if kind == CursorKind.IF_STMT:
+                    parts = children[1:]  # then, else: not the condition
+                elif kind == CursorKind.DO_STMT:
+                    parts = children[:1]  # the body, before the condition
+                elif kind in _WHOLE_REGIONS:
+                    parts = [node]
+                else:
+                    parts = children[-1:]  # a loop's or a switch's body
+                self._regions.extend((p.extent.start.offset, p.extent.end.offset)
+                                     for p in parts)
             if kind == CursorKind.VAR_DECL:
                 init = initializer(node)
                 if init is not None and not _default_constructed(init):
@@ -153,6 +170,7 @@ class Scope:
                 children = list(node.get_children())
                 if len(children) == 2 and self.operator(node, children) == "=":
                     self._write_ref(children[0], children[1])
+                    self._write_member(node, children[0], children[1])
             elif kind in (CursorKind.COMPOUND_ASSIGNMENT_OPERATOR, CursorKind.UNARY_OPERATOR):
                 for child in node.get_children():
                     self._write_ref(child, None)
@@ -161,6 +179,7 @@ class Scope:
         args = list(call.get_arguments())
         if call.spelling == "operator=" and len(args) == 2:
             self._write_ref(args[0], args[1])
+            self._write_member(call, args[0], args[1])
             return
         for index, arg in enumerate(args):  # an lvalue passed as it is: a reference
             if arg.kind in (CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR) and (
@@ -185,6 +204,34 @@ class Scope:
         if value is None and (decl.type.is_const_qualified() or not _plain_value(decl)):
             return  # calls on objects (a NodeHandle's advertise) do not change what we track
         self._write(decl, value)
+
+    def _write_member(self, at: Cursor, target: Cursor, value: Cursor) -> None:
+        """``member_ = value`` on this object (``this->`` written or not)."""
+        target = strip(target)
+        decl = target.referenced if target.kind == CursorKind.MEMBER_REF_EXPR else None
+        if decl is None or decl.kind != CursorKind.FIELD_DECL or any(
+            strip(c).kind != CursorKind.CXX_THIS_EXPR for c in target.get_children()
+        ):
+            return
+        self._members.setdefault(key_of(decl), []).append((at.extent.start.offset, value))
+
+    def assigned(self, decl: Cursor, at: Cursor) -> Cursor | None:
+        """What this body last assigned to member ``decl`` before ``at`` (``topic_ =
+        topic; sub_ = nh.subscribe(topic_, ...)``: base_local_planner's
+        OdometryHelperRos::setOdomTopic), when every assignment of it here is written
+        before ``at``: the value the read sees when the body runs straight on."""
+        _ = self.writes  # read from the body together
+        found = self._members.get(key_of(decl))
+        if not found:
+            return None
+        where = at.extent.start.offset
+        if any(offset > where for offset, _value in found):
+            return None
+        offset, value = max(found, key=lambda write: write[0])
+        if any(start <= offset <= end and not start <= where <= end
+               for start, end in self._regions):
+            return None  # the assignment may not run before the read (amcl's map_topic_)
+        return value
 
     def _write(self, decl: Cursor, value: Cursor | None) -> None:
         self.writes.setdefault(key_of(decl), []).append(value)
@@ -233,6 +280,10 @@ class Scope:
                 return self.sites.agreed(  # type: ignore[union-attr]
                     decl, lambda arg, scope: scope.string(arg, depth + 1), UNKNOWN)
             value = self.variable(decl)
+            if value is None and kind == CursorKind.MEMBER_REF_EXPR and (
+                decl.kind == CursorKind.FIELD_DECL
+            ):
+                value = self.assigned(decl, cursor)
             if value is None:
                 found = self.field(decl)
                 return UNKNOWN if found is None else found[1].string(found[0], depth + 1)
@@ -434,6 +485,18 @@ def _plain_value(decl: Cursor) -> bool:
     if ctype.kind in (TypeKind.LVALUEREFERENCE, TypeKind.RVALUEREFERENCE):
         ctype = ctype.get_pointee().get_canonical()
     return ctype.kind != TypeKind.RECORD or ctype.get_declaration().spelling == "basic_string"
+
+
+# statements whose parts may not run, or run later, when the body runs through them
+_BRANCHING = frozenset({
+    CursorKind.IF_STMT, CursorKind.FOR_STMT, CursorKind.CXX_FOR_RANGE_STMT,
+    CursorKind.WHILE_STMT, CursorKind.DO_STMT, CursorKind.SWITCH_STMT, CursorKind.CASE_STMT,
+    CursorKind.DEFAULT_STMT, CursorKind.CXX_CATCH_STMT, CursorKind.LAMBDA_EXPR,
+})
+
+
+_WHOLE_REGIONS = frozenset({CursorKind.CASE_STMT, CursorKind.DEFAULT_STMT,
+                            CursorKind.CXX_CATCH_STMT, CursorKind.LAMBDA_EXPR})
 
 
 def key_of(decl: Cursor) -> tuple[str, int]:

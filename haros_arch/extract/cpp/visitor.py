@@ -17,7 +17,7 @@ import re
 from collections.abc import Callable, Iterator
 from typing import Any
 
-from clang.cindex import Cursor, CursorKind, TranslationUnit, TypeKind
+from clang.cindex import Cursor, CursorKind, StorageClass, TranslationUnit, TypeKind
 
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
@@ -26,7 +26,7 @@ from ...model.location import Location
 from ...model.source import PrimitiveCall
 from . import api, msg_types, parameter_library, synthesis
 from .call_sites import CallSites
-from .call_types import CallTypes, factory_made
+from .call_types import CallTypes, factory_made, row_class
 from .call_types import callee as callee_of_call
 from .conditions import ConditionReader
 from .cursors import children_in, root
@@ -57,6 +57,7 @@ from .values import (
     PLACEHOLDER,
     SEPARATOR,
     Scope,
+    _default_constructed,
     _may_write,
     initializer,
     render,
@@ -80,6 +81,13 @@ _API_NAMES = frozenset(
     [name for _, name in [*api.ALL, *api.NODE_NAME, *api.RCLCPP_NODE_NAME, *api.FACTORIES]]
     + [parameter_library.LISTENER])
 MAX_DEPTH = 16
+_FACTORIES = frozenset(name for _, name in api.FACTORIES)
+# builtin types a variable of static storage starts as zero of (C++'s zero-initialisation)
+_ZEROED: dict[TypeKind, object] = {
+    TypeKind.BOOL: False, TypeKind.INT: 0, TypeKind.UINT: 0, TypeKind.LONG: 0,
+    TypeKind.ULONG: 0, TypeKind.LONGLONG: 0, TypeKind.ULONGLONG: 0, TypeKind.SHORT: 0,
+    TypeKind.USHORT: 0, TypeKind.FLOAT: 0.0, TypeKind.DOUBLE: 0.0,
+}
 _PREPROCESSED = frozenset({CursorKind.MACRO_INSTANTIATION, CursorKind.INCLUSION_DIRECTIVE})
 _PARAM_KINDS = ("read", "declare")
 _VALUE_METHODS = frozenset({"c_str", "str", "as_string", "as_int", "as_double", "as_bool",
@@ -123,6 +131,10 @@ class CallFinder:
         # the placeholder that starts a parameter of the constructor being walked, whose
         # calls named after it are made only where the class is constructed (``_emit``)
         self._constructor: tuple[str, str] | None = None
+        # the USR of the header function template whose dependent construction is
+        # being emitted (``_made_in``)
+        self._made_by: str | None = None
+        self._template: str | None = None  # of the function being walked (``_function``)
         # reads that return whether the parameter is there, where they are
         self._status_reads: list[tuple[Key, PrimitiveCall]] = []
         # (owner, class of the workspace it constructs): the class's calls are made on
@@ -217,6 +229,10 @@ class CallFinder:
                 _recovered_name(node) in rows
             ):
                 return True
+            if kind == CursorKind.CALL_EXPR and not node.spelling and (
+                _dependent_made(node) is not None
+            ):
+                return True
         return False
 
     def _function(self, function: Cursor) -> None:
@@ -234,6 +250,11 @@ class CallFinder:
             usr = function.canonical.get_usr()
             if usr:
                 self._constructor = (usr, f"{PLACEHOLDER}{usr}{SEPARATOR}")
+        # a function template of a header: what it makes for any node type (a
+        # dependent ``make_shared``) is made only where a file of the node calls it
+        self._template = function.canonical.get_usr() if (
+            function.kind == CursorKind.FUNCTION_TEMPLATE and function.location.file
+            is not None and function.location.file.name != self.tu.spelling) else None
         tested, self._status_reads = TestedCalls(self.reader), []
         stack: list[tuple[Cursor, tuple[Condition, ...]]] = [
             (child, ()) for child in reversed(list(function.get_children()))
@@ -250,6 +271,8 @@ class CallFinder:
                 not node.spelling and _recovered_name(node) in self._unresolved_rows()
             ):
                 self._unresolved(node, conditions, scope)
+            elif node.kind == CursorKind.CALL_EXPR and not node.spelling:
+                self._dependent(node, conditions, scope)
             if node.kind == CursorKind.CALL_EXPR:
                 self._construction(node)
                 self._to_unknown(node)
@@ -271,9 +294,15 @@ class CallFinder:
             decl = factory_made(call)
             if decl is None:
                 return None, None
+            decl = row_class(decl)
             return api.ALL.get((qualified_name(decl), decl.spelling)), decl
         if target.kind == CursorKind.CONSTRUCTOR:
-            return api.ALL.get(key), call.type.get_canonical().get_declaration()
+            made = call.type.get_canonical().get_declaration()
+            if key not in api.ALL and made.kind != CursorKind.NO_DECL_FOUND:
+                base = row_class(made)
+                if base != made:
+                    return api.ALL.get((qualified_name(base), base.spelling)), base
+            return api.ALL.get(key), made
         spec = api.ALL.get(key)
         if spec is not None and "class" in spec.type_from:
             callee = callee_of_call(call)
@@ -299,7 +328,8 @@ class CallFinder:
         finally:
             self._constructor = constructor
         if target is None:
-            self._unresolved(call, conditions, scope)
+            if not self._dependent(call, conditions, scope):
+                self._unresolved(call, conditions, scope)
             return
         key = (qualified_name(target.semantic_parent), target.spelling)
         args = written_arguments(call)
@@ -334,6 +364,20 @@ class CallFinder:
                 return
         if spec is not None:
             self._emit(spec, call, args, cls, conditions, scope)
+
+    def _dependent(self, call: Cursor, conditions: tuple[Condition, ...],
+                   scope: Scope) -> bool:
+        """Emit a dependent ``make_shared`` of an API class (``_dependent_made``); made,
+        in a header's function template, only where a file of the node calls it."""
+        made = _dependent_made(call)
+        if made is None:
+            return False
+        self._made_by = self._template
+        try:
+            self._emit(made[0], call, written_arguments(call), made[1], conditions, scope)
+        finally:
+            self._made_by = None
+        return True
 
     def _unresolved(self, call: Cursor, conditions: tuple[Condition, ...],
                     scope: Scope) -> None:
@@ -615,6 +659,8 @@ class CallFinder:
         """The USR of the constructor being walked when ``name`` (or the handle's
         ``namespace``) holds the placeholder of one of its parameters: no call in this
         unit constructs the class, and the call is made only where one does."""
+        if self._made_by is not None:
+            return self._made_by
         if self._constructor is None:
             return None
         usr, mark = self._constructor
@@ -746,6 +792,8 @@ class CallFinder:
         """Whether a parameter read gives a default, and its value when it is a literal."""
         index = spec.default_arg
         if index is None:
+            if spec.kind == "read" and spec.out_arg is not None and spec.out_arg < len(args):
+                return _kept_value(args[spec.out_arg], scope)
             return False, None
         if index >= len(args) and spec.out_arg == len(args) - 1:
             index = spec.out_arg  # nh.param<T>(name, default) returns the value
@@ -764,10 +812,51 @@ class CallFinder:
         decl = field.type.get_canonical().get_declaration()
         if decl is None or decl.kind == CursorKind.NO_DECL_FOUND:
             return
+        decl = row_class(decl)
         spec = api.ALL.get((qualified_name(decl), decl.spelling))
         if spec is None or spec.fixed_name is None:
             return
         self._emit(spec, field, [], decl, (), Scope(None, self.macros, self.source, self.sites))
+
+
+def _kept_value(out: Cursor, scope: Scope) -> tuple[bool, object]:
+    """A read into ``out`` that leaves it as it is when the parameter is not there (ROS
+    1's ``getParam(name, out)``, rclcpp's ``get_parameter(name, out)``) has a default
+    when ``out`` holds a value before it: a local written with an initialiser
+    (``bool unreliable = false;``), a variable of static storage of a builtin type
+    (topic_tools' ``bool g_lazy;``, zero), a member its class initialises. Its value
+    when that is a literal."""
+    target = strip(out)
+    decl = target.referenced if target.kind in (
+        CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR) else None
+    if decl is None:
+        return False, None
+    value: Cursor | None = None
+    where = scope
+    if decl.kind == CursorKind.VAR_DECL:
+        init = initializer(decl.get_definition() or decl)
+        if init is not None and not _default_constructed(init):
+            value = init
+        elif init is None and decl.type.get_canonical().kind in _ZEROED and (
+            decl.storage_class == StorageClass.STATIC
+            or decl.semantic_parent is None
+            or decl.semantic_parent.kind in (CursorKind.NAMESPACE,
+                                             CursorKind.TRANSLATION_UNIT)
+        ):
+            zero = _ZEROED[decl.type.get_canonical().kind]
+            return True, zero
+    elif decl.kind == CursorKind.FIELD_DECL:
+        found = scope.field(decl)
+        if found is not None:
+            value, where = found
+    if value is None:
+        return False, None
+    for read in (where.boolean, where.integer):
+        known = read(value)
+        if known is not None:
+            return True, known
+    parts = where.string(value)
+    return True, (render(parts) if parts and _known(parts) else None)
 
 
 def _status_read(spec: api.RosFunction, site: Cursor, count: int) -> Key | None:
@@ -786,6 +875,34 @@ def _status_read(spec: api.RosFunction, site: Cursor, count: int) -> Key | None:
             result != TypeKind.BOOL):
         return None
     return key_of(site)
+
+
+def _dependent_made(call: Cursor) -> tuple[api.RosFunction, Cursor] | None:
+    """The API row and class of ``std::make_shared<C>(args)`` (a factory of
+    ``api.FACTORIES``) that a template leaves unresolved because an argument depends on
+    its parameters, when ``C`` is a class, not a template, whose construction has a row
+    with a name of its own: nav2's ``create_transform_listener(buffer, node)`` makes a
+    ``std::make_shared<nav2::TransformListener>(buffer, node)``."""
+    children = list(call.get_children())
+    head = children[0] if children else None
+    if head is None or head.kind != CursorKind.DECL_REF_EXPR or (
+        _recovered_name(call) not in _FACTORIES
+    ):
+        return None
+    refs = list(head.get_children())
+    if not any(r.kind == CursorKind.NAMESPACE_REF and r.spelling in ("std", "boost")
+               for r in refs):
+        return None
+    classes = [r.referenced for r in refs if r.kind == CursorKind.TYPE_REF
+               and r.referenced is not None]
+    if len(classes) != 1 or classes[0].kind not in (CursorKind.CLASS_DECL,
+                                                    CursorKind.STRUCT_DECL):
+        return None
+    made = row_class(classes[0])
+    spec = api.ALL.get((qualified_name(made), made.spelling))
+    if spec is None or spec.fixed_name is None:
+        return None
+    return spec, made
 
 
 def _recovered_name(expr: Cursor) -> str:
