@@ -55,6 +55,18 @@ def test_unknown_vendor_type_costs_no_call() -> None:
     assert "CPP_NAMES_DECLARED" in codes(result)
 
 
+def test_a_string_takes_a_field_of_an_unknown_class() -> None:
+    """``file = config.yaml_cfg_file`` of a Config class whose generated header is not
+    there: the permissive class converts to anything, so a string's assignment,
+    constructor and ``+=`` were ambiguous, an error in a function that calls the ROS
+    API, and the node partial."""
+    result = extract("unknown_config.cpp")
+    assert rows(result) == [("read", "~yaml_cfg_file", "str", 14),
+                            ("publish", "~active", "std_msgs/String", 20)]
+    assert "CPP_PARSE_ERROR" not in codes(result)
+    assert "CPP_ERROR_NEAR_CALL" not in codes(result)
+
+
 def test_names_are_declared_as_they_are_used() -> None:
     names = synthesis.Names()
     text = (b"class A : public vendor::Base {};\nvendor::Tmpl<int> t;\nUnknown u;\n"
