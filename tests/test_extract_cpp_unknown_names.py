@@ -87,6 +87,24 @@ def test_names_are_declared_as_they_are_used() -> None:
     assert "static haros_any apply;" in header
 
 
+def test_a_macro_alone_on_its_line_is_defined_empty_not_declared_a_type() -> None:
+    """kobuki's ``KobukiRos`` writes ``EIGEN_MAKE_ALIGNED_OPERATOR_NEW`` alone in its
+    class body, Eigen's header reached only through a missing one: declared a type, it
+    swallowed the next member (``std::string name;``) and made 28 errors of its uses."""
+    names = synthesis.Names()
+    text = (b"class KobukiRos {\n public:\n  EIGEN_MAKE_ALIGNED_OPERATOR_NEW  // aligned\n"
+            b"private:\n  std::string name;\n  VENDOR_HANDLE handle;\n};\n")
+    names.learn([
+        ("unknown type name 'EIGEN_MAKE_ALIGNED_OPERATOR_NEW'", text,
+         text.index(b"EIGEN")),
+        ("unknown type name 'VENDOR_HANDLE'", text, text.index(b"VENDOR")),
+    ])
+    header = names.header()
+    assert "#define EIGEN_MAKE_ALIGNED_OPERATOR_NEW\n" in header
+    assert "struct EIGEN_MAKE_ALIGNED_OPERATOR_NEW" not in header
+    assert "struct VENDOR_HANDLE : haros_any {" in header  # it declares ``handle``
+
+
 def test_unresolved_calls_are_kept_by_name() -> None:
     result = extract("invalid_object.cpp")
     assert rows(result) == [
