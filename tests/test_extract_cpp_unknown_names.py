@@ -55,6 +55,18 @@ def test_unknown_vendor_type_costs_no_call() -> None:
     assert "CPP_NAMES_DECLARED" in codes(result)
 
 
+def test_a_string_takes_a_field_of_an_unknown_class() -> None:
+    """``file = config.yaml_cfg_file`` of a Config class whose generated header is not
+    there: the permissive class converts to anything, so a string's assignment,
+    constructor and ``+=`` were ambiguous, an error in a function that calls the ROS
+    API, and the node partial."""
+    result = extract("unknown_config.cpp")
+    assert rows(result) == [("read", "~yaml_cfg_file", "str", 14),
+                            ("publish", "~active", "std_msgs/String", 20)]
+    assert "CPP_PARSE_ERROR" not in codes(result)
+    assert "CPP_ERROR_NEAR_CALL" not in codes(result)
+
+
 def test_names_are_declared_as_they_are_used() -> None:
     names = synthesis.Names()
     text = (b"class A : public vendor::Base {};\nvendor::Tmpl<int> t;\nUnknown u;\n"
@@ -73,6 +85,24 @@ def test_names_are_declared_as_they_are_used() -> None:
     assert "struct Unknown : haros_any {" in header
     assert "extern haros_any CONSTANT;" in header
     assert "static haros_any apply;" in header
+
+
+def test_a_macro_alone_on_its_line_is_defined_empty_not_declared_a_type() -> None:
+    """kobuki's ``KobukiRos`` writes ``EIGEN_MAKE_ALIGNED_OPERATOR_NEW`` alone in its
+    class body, Eigen's header reached only through a missing one: declared a type, it
+    swallowed the next member (``std::string name;``) and made 28 errors of its uses."""
+    names = synthesis.Names()
+    text = (b"class KobukiRos {\n public:\n  EIGEN_MAKE_ALIGNED_OPERATOR_NEW  // aligned\n"
+            b"private:\n  std::string name;\n  VENDOR_HANDLE handle;\n};\n")
+    names.learn([
+        ("unknown type name 'EIGEN_MAKE_ALIGNED_OPERATOR_NEW'", text,
+         text.index(b"EIGEN")),
+        ("unknown type name 'VENDOR_HANDLE'", text, text.index(b"VENDOR")),
+    ])
+    header = names.header()
+    assert "#define EIGEN_MAKE_ALIGNED_OPERATOR_NEW\n" in header
+    assert "struct EIGEN_MAKE_ALIGNED_OPERATOR_NEW" not in header
+    assert "struct VENDOR_HANDLE : haros_any {" in header  # it declares ``handle``
 
 
 def test_unresolved_calls_are_kept_by_name() -> None:

@@ -124,6 +124,23 @@ class _Name:
     children: dict[str, _Name] = field(default_factory=dict)
 
 
+_MACRO_NAME = re.compile(r"[A-Z][A-Z0-9_]*[A-Z0-9]")
+
+
+def _bare_macro(name: str, text: bytes, offset: int) -> bool:
+    """Whether the unknown ``name`` at ``offset`` is a macro that stands for
+    declarations: written in capitals, alone on its line (nothing after it but a
+    comment), where a type would be followed by what it declares."""
+    if _MACRO_NAME.fullmatch(name) is None or text[offset:offset + len(name)] != (
+            name.encode()):
+        return False
+    start = text.rfind(b"\n", 0, offset) + 1
+    end = text.find(b"\n", offset)
+    line = text[start:end if end >= 0 else len(text)]
+    after = line[offset - start + len(name):].split(b"//")[0].strip()
+    return not line[:offset - start].strip() and not after
+
+
 class Names:
     """The unknown names of one translation unit, collected over the rounds."""
 
@@ -147,6 +164,9 @@ class Names:
         # unknown names that made a use ambiguous (the real declaration was invalid only
         # until other names were declared): no longer declared
         self.withdrawn: set[str] = set()
+        # unknown macros written alone on their line (``EIGEN_MAKE_ALIGNED_OPERATOR_NEW``
+        # in a class body, its header not reached): defined empty, not declared as types
+        self.macros: set[str] = set()
         self._read: set[int] = set()  # the files whose using-directives were read
         self._texts: list[bytes] = []  # those files
         self._defined: set[str] = set()  # the names they define (see ``_spread``)
@@ -255,6 +275,12 @@ class Names:
                 continue
             if text is None:
                 return
+            if use == "type" and match.lastindex == 1 and _bare_macro(
+                    match.group(1), text, offset):
+                if match.group(1) not in self.macros:
+                    self.macros.add(match.group(1))
+                    self.count += 1
+                return
             scope = match.group(2).split("::") if match.lastindex == 2 else []
             self._from_source(text, offset, use, scope)
             return
@@ -359,6 +385,7 @@ class Names:
     def header(self) -> str:
         members = "".join(f"  static haros_any {m};\n" for m in sorted(self.members))
         lines = [_PRELUDE % (members, _OPERATORS)]
+        lines += [f"#define {name}" for name in sorted(self.macros)]
         # static: a field reads as ``msg.f`` and a constant as ``Msg::F``, and the
         # message stays the plain struct it was (no member to construct or copy)
         lines += [f"#define {interfaces.fields_macro(record)} " + " ".join(

@@ -4,6 +4,11 @@
 #ifndef HAROS_STANDIN_STD_H
 #define HAROS_STANDIN_STD_H
 #include "haros_libc.h"
+// the permissive class names unknown to the parse are declared as (synthesis.py): a
+// string takes one (or a class derived from it) as it is, where its conversion to
+// anything makes every assignment and constructor of a string a candidate, ambiguous
+// (``name = config.name`` of a dynamic_reconfigure Config whose header is missing)
+struct haros_any;
 namespace std {
 using ::size_t; using ::ptrdiff_t; using ::int8_t; using ::int16_t; using ::int32_t;
 using ::int64_t; using ::uint8_t; using ::uint16_t; using ::uint32_t; using ::uint64_t;
@@ -190,14 +195,20 @@ public:
   basic_string(const basic_string& s, size_t pos, size_t n = npos);
   template<class It> basic_string(It first, It last);
   basic_string(initializer_list<C> chars);
+  template<class U, class = typename enable_if<__is_base_of(::haros_any, U)>::type>
+  explicit basic_string(const U& unknown);
   ~basic_string();
   basic_string& operator=(const basic_string& s);
   basic_string& operator=(basic_string&& s);
   basic_string& operator=(const C* s);
   basic_string& operator=(C c);
+  template<class U, class = typename enable_if<__is_base_of(::haros_any, U)>::type>
+  basic_string& operator=(const U& unknown);
   basic_string& operator+=(const basic_string& s);
   basic_string& operator+=(const C* s);
   basic_string& operator+=(C c);
+  template<class U, class = typename enable_if<__is_base_of(::haros_any, U)>::type>
+  basic_string& operator+=(const U& unknown);
   C& operator[](size_t i);
   const C& operator[](size_t i) const;
   C& at(size_t i);
