@@ -21,6 +21,7 @@ def test_the_remaps_a_node_uses_and_those_it_does_not() -> None:
     mux = Node("yocs_cmd_vel_mux", "mux", calls=[
         PrimitiveCall("publish", "~output", "geometry_msgs/Twist"),
         PrimitiveCall("subscribe", "input/teleop", "geometry_msgs/Twist"),
+        PrimitiveCall("read", "~output_rate", "double"),  # a parameter: no hint
         # a NodeHandle("input") namespace is remapped before the name in it
         PrimitiveCall("subscribe", "input/safety", "geometry_msgs/Twist",
                       handle_namespace="input")])

@@ -525,8 +525,8 @@ def _near(instance: NodeInstance, name: str) -> list[str]:
     found: set[str] = set()
     for link in instance.links:
         given = link.rosname.given
-        if UNKNOWN_MARK in given or link.origin == "action":
-            continue
+        if UNKNOWN_MARK in given or link.origin == "action" or isinstance(link, _ParamLink):
+            continue  # what a remap is usually meant for: topics, services and actions
         before = resolve(given, instance.namespace, instance.name)
         space, _, last = before.rpartition("/")
         if before != name and ((namespace and space == namespace) or last == own):
