@@ -243,7 +243,11 @@ FUNCTIONS["is_absolute_path"] = Function("is_absolute_path", is_absolute_path, m
 # parameter events, and dynamic_reconfigure's description / update topics of a node
 _INFRASTRUCTURE = frozenset({"/tf", "/tf_static", "/diagnostics", "/diagnostics_agg",
                              "/rosout", "/rosout_agg", "/clock", "/parameter_events"})
-_INFRASTRUCTURE_OWN = frozenset({"parameter_descriptions", "parameter_updates"})
+# ... and wherever they are: dynamic_reconfigure's topics of each server, and tf's and
+# diagnostics' topics of a robot in a namespace (``/robot1/tf`` of the usual
+# ``remappings=[("/tf", "tf")]``, which every broadcaster of the robot publishes)
+_INFRASTRUCTURE_OWN = frozenset({"parameter_descriptions", "parameter_updates", "tf",
+                                 "tf_static", "diagnostics", "diagnostics_agg"})
 
 
 def is_infrastructure(charge: Charge, name: Any) -> bool:
