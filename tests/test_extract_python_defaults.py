@@ -35,3 +35,19 @@ def test_rclpy_declare_gives_the_default(tmp_path):
     result = extract_python([str(source)], Workspace(root=str(tmp_path)), package="p")
     got = [(c.kind, c.name, c.has_default, c.default) for c in result.calls]
     assert got == [("declare", "rate", True, 10), ("declare", "name", False, None)]
+
+
+def test_a_read_the_code_converts_has_no_type_of_its_own(tmp_path):
+    """rosserial's ``int(rospy.get_param('~baud', '500000'))``: the string default does
+    not make the parameter a string; any value ``int()`` takes will do (survey C)."""
+    source = tmp_path / "node.py"
+    source.write_text(
+        "import rospy\n"
+        "rospy.init_node('serial_node')\n"
+        "baud = int(rospy.get_param('~baud', '500000'))\n"
+        "port = rospy.get_param('~port', '/dev/ttyUSB0')\n"
+        "rate = float(rospy.get_param('~rate'))\n")
+    result = extract_python([str(source)], Workspace(root=str(tmp_path)), package="p")
+    got = [(c.name, c.type, c.has_default, c.default) for c in result.calls]
+    assert got == [("~baud", None, True, "500000"), ("~port", "str", True, "/dev/ttyUSB0"),
+                   ("~rate", None, False, None)]

@@ -44,6 +44,7 @@ from .values import MAX_CALL_DEPTH, NAMESPACE, Evaluator, argument, unknown_para
 Conditions = tuple[Condition, ...]
 MAX_STEPS = 200_000
 _PARAM_KINDS = ("read", "write", "declare")
+_CONVERSIONS = frozenset({"int", "float", "str", "bool"})
 
 
 class Walker:
@@ -71,6 +72,9 @@ class Walker:
         self.main: set[str] = set()
         # the calls whose result is a condition (ids of their ast.Call nodes)
         self._tested: set[int] = set()
+        # reads whose value the code converts (``int(rospy.get_param('~baud', '500000'))``):
+        # any value the conversion takes will do, so the read has no type of its own
+        self._converted: set[int] = set()
 
     # -- entries ------------------------------------------------------------------------
 
@@ -266,6 +270,11 @@ class Walker:
                     self._test(value)
             elif isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.Not):
                 self._test(node.operand)
+            elif isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and (
+                node.func.id in _CONVERSIONS and len(node.args) == 1 and not node.keywords
+                and isinstance(node.args[0], ast.Call)
+            ):
+                self._converted.add(id(node.args[0]))
         calls = [n for n in ast.walk(expr) if isinstance(n, ast.Call)]
         calls.sort(key=lambda c: (c.lineno, c.col_offset))
         for call in calls:
@@ -422,6 +431,8 @@ class Walker:
                 base.default = plain_value(value)
             if spec.kind == "declare":
                 ev.declared[base.name.removeprefix("~")] = value
+        if spec.kind == "read" and id(call) in self._converted:
+            base.type = None
         base.searched = spec.search
         base.tested = spec.tests and id(call) in self._tested
         base.deletes = spec.deletes
