@@ -51,3 +51,30 @@ def test_a_read_the_code_converts_has_no_type_of_its_own(tmp_path):
     got = [(c.name, c.type, c.has_default, c.default) for c in result.calls]
     assert got == [("~baud", None, True, "500000"), ("~port", "str", True, "/dev/ttyUSB0"),
                    ("~rate", None, False, None)]
+
+
+def test_an_rclpy_managed_node_serves_its_state_machine(tmp_path):
+    """ros2/demos' lifecycle_py talker: a subclass of ``rclpy.lifecycle.Node`` publishes
+    its transitions and serves its state machine, as rclcpp_lifecycle's node does; a
+    plain ``rclpy.node.Node`` does not (survey C)."""
+    source = tmp_path / "talker.py"
+    source.write_text(
+        "import rclpy\nfrom rclpy.lifecycle import Node\nfrom rclpy.node import Node as Plain\n"
+        "from std_msgs.msg import String\n"
+        "class Talker(Node):\n"
+        "    def __init__(self):\n"
+        "        super().__init__('lc_talker')\n"
+        "    def on_configure(self, state):\n"
+        "        self._pub = self.create_lifecycle_publisher(String, 'lifecycle_chatter', 10)\n"
+        "class Other(Plain):\n"
+        "    def __init__(self):\n"
+        "        super().__init__('other')\n")
+    result = extract_python([str(source)], Workspace(root=str(tmp_path)), package="p")
+    got = sorted((c.kind, c.name, c.node_name) for c in result.calls)
+    assert got == [
+        ("publish", "lifecycle_chatter", "lc_talker"),
+        ("publish", "~/transition_event", "lc_talker"),
+        ("server", "~/change_state", "lc_talker"),
+        ("server", "~/get_available_states", "lc_talker"),
+        ("server", "~/get_available_transitions", "lc_talker"),
+        ("server", "~/get_state", "lc_talker"), ("server", "~/get_transition_graph", "lc_talker")]

@@ -34,6 +34,12 @@ class Instances(Calls):
         return any(isinstance(b, Ref) and b.key in rclpy.NODE_CLASSES
                    for c in self.mro(cls) for b in self.bases(c))
 
+    def is_lifecycle_class(self, cls: ClassInfo) -> bool:
+        """A subclass of rclpy's managed node (``rclpy.lifecycle.Node`` /
+        ``LifecycleNode``), which serves its state machine by itself."""
+        return any(isinstance(b, Ref) and b.qualname.startswith(rclpy.LIFECYCLE_MODULE)
+                   for c in self.mro(cls) for b in self.bases(c))
+
     def method(self, cls: ClassInfo, name: str) -> FunctionInfo | None:
         for c in self.mro(cls):
             if name in c.methods:

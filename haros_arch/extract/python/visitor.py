@@ -289,6 +289,11 @@ class Walker:
                 node_spec = rclpy.NODE_NAMES[("rclpy", "Node")]
                 name = self._node_name(node_spec, call, frame, 2)
                 self._logger_services(node_spec, call, frame, conds, name)
+                if ev.is_lifecycle_class(frame.instance.cls):
+                    for kind, service, type_ in rclpy.LIFECYCLE_CALLS:
+                        self._add(PrimitiveCall(kind, service, type_, conditions=conds,
+                                                location=self._where(frame, call),
+                                                node_name=name))
                 if name is not None:
                     frame.instance.node_name = name
                     given = self._class_names.setdefault(id(frame.instance.cls), [])
