@@ -61,3 +61,17 @@ def test_a_remap_shared_by_several_nodes_is_used_when_one_uses_it() -> None:
     config = _config([NodeDecl("/map_server", "nav", "map_server", "/", remaps=shared)],
                      {"nav/map_server": maps})
     assert config.remaps == []
+
+
+def test_a_name_from_a_parameter_whose_value_is_empty_stays_unknown() -> None:
+    """A name read from a parameter whose default is "" (``declare_parameter<std::string>
+    ("topic", "")``, the call guarded by ``if (!topic.empty())``) names no topic; it was
+    resolved to the namespace, a topic "/" (survey C, rosbot's simulation)."""
+    bridge = Node("gz", "bridge", calls=[
+        PrimitiveCall("subscribe", "?", "std_msgs/msg/String", name_param="topic",
+                      name_default=""),
+        PrimitiveCall("subscribe", "?", "std_msgs/msg/String", name_param="other",
+                      name_default="clock")])
+    config = _config([NodeDecl("/bridge", "gz", "bridge", "/", ros_version=2)],
+                     {"gz/bridge": bridge})
+    assert sorted(link.rosname.full for link in config.links) == ["/?", "/clock"]

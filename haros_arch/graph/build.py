@@ -379,7 +379,7 @@ def _given_name(call: PrimitiveCall, instance: NodeInstance, resources: Resource
     value: str | None = call.name_default
     if isinstance(param, Parameter) and param.set_by_launch and isinstance(param.value, str):
         value = param.value
-    if value is None:
+    if not value:  # none, or empty: no topic is named "" (rosbot's gz bridge guards it)
         return call.name
     if value.startswith(("/", "~")) and (
             call.name == UNKNOWN_MARK or call.name.endswith("/" + UNKNOWN_MARK)):
