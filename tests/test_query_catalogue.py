@@ -219,6 +219,16 @@ def test_a_long_value_is_shortened_in_the_message():
     assert "set as binary (QUJDQUJD" in finding.message and len(finding.message) < 300
 
 
+def test_a_list_value_keeps_every_element_in_the_message():
+    # navigation_tutorials' y_vels: [-0.3, -0.1, 0.1, -0.3], read as a string
+    model = configuration({
+        "parameters": [{"name": "/mb/y_vels", "type": "list", "value": [-0.3, -0.1, 0.1, -0.3],
+                        "writers": ["<launch>"]}],
+        "links": [{"kind": "read", "node": "/mb", "name": "/mb/y_vels", "type": "str"}]})
+    (finding,) = run_rule(RULES["parameter-type-mismatch"], model)
+    assert "-0.3, -0.1, 0.1, -0.3" in finding.message
+
+
 UNDECIDED_IDS = [i for i in IDS if "undecided" in yaml.safe_load(
     (CASES / f"{i}.yaml").read_text())]
 

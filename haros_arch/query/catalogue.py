@@ -176,10 +176,13 @@ def render(template: str, match: Any, evaluator: Evaluator) -> str:
             return ""
         if isinstance(value, list | tuple) and not value:
             return "none"
-        if isinstance(value, list | tuple):
+        if isinstance(value, list | tuple) and any(entities(v) for v in value):
+            # entities by name, each once (the nodes of several links)
             return _shorten(", ".join(dict.fromkeys(
                 v.node.name if isinstance(v, Link) else label(v) if entities(v)
                 else str(plain(v)) for v in value)))
+        if isinstance(value, list | tuple):  # a value: every element, as it is
+            return _shorten(", ".join(str(plain(v)) for v in value))
         return label(value) if entities(value) else _shorten(str(plain(value)))
 
     return _FIELD.sub(fill, template)
