@@ -120,6 +120,17 @@ def test_ros2_plugins_are_nodes_of_their_own_with_namespace_and_remappings():
         "GazeboSystem", "gazebo_ros2_control/GazeboSystem", ["front_wheel_joint"], 33)
 
 
+def test_a_xacro_command_through_find_executable_without_xacro_installed():
+    """``Command([PathJoinSubstitution([FindExecutable(name="xacro")]), " ", file])``:
+    the analysis reads the xacro file itself, so xacro need not be on the PATH (it was
+    a value not known, and the description was lost: survey C, rosbot's simulation)."""
+    config = configuration(ROS2, "bot2_description/launch/sim_find.launch.py")
+    (description,) = config.robot_descriptions
+    assert description.links == ["front_base_link"]
+    assert ("/bot2/drive", "subscribe", "/bot2/cmd_vel", "geometry_msgs/msg/Twist") in made(
+        config)
+
+
 def test_ros2_spawner_file_is_read_as_it_is():
     config = configuration(ROS2, "bot2_description/launch/model.launch.py")
     assert made(config) == [

@@ -30,6 +30,9 @@ MAX_NESTING = 50  # $( inside $( ... deeper than any real file; deeper is refuse
 _NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_-]*")
 
 
+# executables whose input the analysis reads itself, never running them (robot/attach.py)
+_READ_HERE = frozenset({"xacro", "xacro.py"})
+
 class SubstitutionSyntax(Exception):
     """Attribute text whose ``$(...)`` cannot be parsed."""
 
@@ -266,6 +269,10 @@ class Evaluator:
             return self.in_package(name, s.package)
         if "/" in name:
             return Value.of(name)  # which() takes a path as it is
+        if name in _READ_HERE:
+            # a tool whose input this analysis reads itself (a robot description's
+            # xacro): the command names it, wherever it is installed
+            return Value.of(name)
         path = self.env_value("PATH")
         for folder in (path or "").split(os.pathsep):
             candidate = os.path.join(folder, name)
