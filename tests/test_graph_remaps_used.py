@@ -75,3 +75,22 @@ def test_a_name_from_a_parameter_whose_value_is_empty_stays_unknown() -> None:
     config = _config([NodeDecl("/bridge", "gz", "bridge", "/", ros_version=2)],
                      {"gz/bridge": bridge})
     assert sorted(link.rosname.full for link in config.links) == ["/?", "/clock"]
+
+
+def test_a_node_its_host_makes_is_not_who_the_remap_was_given_to() -> None:
+    """nav2's controller_server makes its local costmap's node in its process, which
+    takes the process's remaps (``/tf:=tf``): given for the server, they are no finding
+    on the costmap when it does not use the name, and a use of it counts."""
+    from haros_arch.model import NodeInstance
+    from haros_arch.model.runtime import remaps_of
+
+    host = NodeInstance("/r/controller_server", Node("nav", "server"), namespace="/r/",
+                        remaps=[("/tf", "tf"), ("odom", "odometry/filtered")],
+                        remaps_applied=["/tf"])
+    child = NodeInstance("/r/local_costmap/local_costmap", Node("nav", "costmap"),
+                         namespace="/r/local_costmap/", remaps=list(host.remaps),
+                         origin="plugin", remaps_applied=["/r/local_costmap/odom"])
+    found = {r.text: r for r in remaps_of([child, host])}
+    assert [n.name for n in found["/tf:=tf"].nodes] == ["/r/controller_server"]
+    assert [n.name for n in found["odom:=odometry/filtered"].users] == [
+        "/r/local_costmap/local_costmap"]

@@ -540,7 +540,8 @@ def remaps_of(nodes: list[NodeInstance]) -> list[Remap]:
     nodes, a ``<remap>`` of a group). Special keys (``__name``, ``__ns``) and a remap of a
     name to itself are left out."""
     found: dict[tuple[str, str], Remap] = {}
-    for instance in nodes:
+    made = [n for n in nodes if n.origin != "launch"]
+    for instance in [n for n in nodes if n.origin == "launch"] + made:
         rules = resolve_remaps(instance.remaps, instance.namespace, instance.name)
         # the names the instance uses, remapped or not: a remap to one of them makes no
         # connection the instance does not have (turtlebot's ``camera/image`` beside
@@ -552,9 +553,16 @@ def remaps_of(nodes: list[NodeInstance]) -> list[Remap]:
             name = resolve(source, instance.namespace, instance.name)
             if name == resolve(target, instance.namespace, instance.name):
                 continue
+            used = name in instance.remaps_applied or rules.get(name) in reached
+            if instance.origin != "launch":
+                # a node a host makes in its process (nav2's costmaps) takes the
+                # process's remaps, given for the host: a use counts, a non-use does not
+                if used and (source, target) in found:
+                    found[(source, target)].users.append(instance)
+                continue
             remap = found.setdefault((source, target), Remap(source, target))
             remap.nodes.append(instance)
-            if name in instance.remaps_applied or rules.get(name) in reached:
+            if used:
                 remap.users.append(instance)
             elif _could_use(instance, name):
                 remap.unseen.append(instance)
