@@ -149,3 +149,31 @@ def test_rosbuild_package_executables(write_tree):
     nodes, _found = parse_package(ws.packages["old"], ws)
     assert [(n.executable, sorted(n.sources)) for n in nodes] == [
         ("old_node", ["old/src/helpers.cpp", "old/src/node.cpp"])]
+
+
+def test_ament_auto_targets_link_the_package_s_auto_libraries(write_tree):
+    """ament_cmake_auto: ``ament_auto_add_executable`` links every library made before it
+    with ``ament_auto_add_library`` (``${PROJECT_NAME}_LIBRARIES``), unless
+    ``NO_TARGET_LINK_LIBRARIES``: image_pipeline's image_publisher_node runs the
+    library's ImagePublisher, which its own source only constructs."""
+    root = write_tree({
+        "src/pub/package.xml": package_xml("pub", build_type="ament_cmake"),
+        "src/pub/CMakeLists.txt": """
+            cmake_minimum_required(VERSION 3.5)
+            project(pub)
+            find_package(ament_cmake_auto REQUIRED)
+            ament_auto_find_build_dependencies()
+            ament_auto_add_library(pub SHARED src/pub.cpp)
+            ament_auto_add_executable(pub_node src/pub_node.cpp)
+            ament_auto_add_executable(alone src/alone.cpp NO_TARGET_LINK_LIBRARIES)
+            ament_auto_package()
+            """,
+        "src/pub/src/pub.cpp": "int publish() { return 1; }\n",
+        "src/pub/src/pub_node.cpp": "int main() { return 0; }\n",
+        "src/pub/src/alone.cpp": "int main() { return 0; }\n",
+    })
+    ws = scan([str(root / "src")], {})
+    nodes, _found = parse_package(ws.packages["pub"], ws)
+    assert sorted((n.executable, sorted(n.sources)) for n in nodes) == [
+        ("alone", ["pub/src/alone.cpp"]),
+        ("pub_node", ["pub/src/pub.cpp", "pub/src/pub_node.cpp"])]

@@ -325,9 +325,16 @@ def _add_target(it: Interpreter, command: Invocation, args: list[str], kind: str
         sources.extend(_glob(it, [os.path.join(folder, "*" + s) for s in C_SUFFIXES],
                              recurse=True))
     sources.extend(it.path(a) for a in rest if a not in flags)
-    it.targets[args[0]] = Target(args[0], kind, sources, conditions=it.current_conditions(),
-                                 line=command.line, column=command.column,
-                                 file=command.file)
+    target = it.targets[args[0]] = Target(
+        args[0], kind, sources, conditions=it.current_conditions(), line=command.line,
+        column=command.column, file=command.file)
+    if command.name.lower().startswith("ament_auto_add_"):
+        # ament_cmake_auto links the package's earlier ament_auto libraries unless told
+        # not to (image_pipeline's image_publisher_node runs the library's ImagePublisher)
+        if "NO_TARGET_LINK_LIBRARIES" not in rest:
+            target.links.extend(name for name in it.auto_libraries if name != args[0])
+        if kind == "library":
+            it.auto_libraries.append(args[0])
 
 
 @handles("target_sources")

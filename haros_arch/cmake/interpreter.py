@@ -79,6 +79,9 @@ class Interpreter:
         self.cache: dict[str, str] = {}
         self.assigned: set[str] = set()
         self.targets: dict[str, Target] = {}
+        # ament_cmake_auto: the libraries ``ament_auto_add_library`` made so far, which
+        # every later ``ament_auto_add_*`` target links (``${PROJECT_NAME}_LIBRARIES``)
+        self.auto_libraries: list[str] = []
         self.programs: list[Program] = []
         self.program_dirs: list[Program] = []
         self.installs: list[Install] = []  # for haros_arch.share
