@@ -142,7 +142,7 @@ def test_rosbuild_package_executables(write_tree):
             rosbuild_add_executable(old_node src/node.cpp)
             target_link_libraries(old_node old_helpers)
             """,
-        "src/old/src/node.cpp": "int main() { return 0; }\n",
+        "src/old/src/node.cpp": "int helper();\nint main() { return helper(); }\n",
         "src/old/src/helpers.cpp": "int helper() { return 1; }\n",
     })
     ws = scan([str(root / "src")], {})
@@ -155,7 +155,8 @@ def test_ament_auto_targets_link_the_package_s_auto_libraries(write_tree):
     """ament_cmake_auto: ``ament_auto_add_executable`` links every library made before it
     with ``ament_auto_add_library`` (``${PROJECT_NAME}_LIBRARIES``), unless
     ``NO_TARGET_LINK_LIBRARIES``: image_pipeline's image_publisher_node runs the
-    library's ImagePublisher, which its own source only constructs."""
+    library's ImagePublisher, which its own source only constructs. An executable runs
+    the linked sources its code needs, those that define what it names."""
     root = write_tree({
         "src/pub/package.xml": package_xml("pub", build_type="ament_cmake"),
         "src/pub/CMakeLists.txt": """
@@ -164,16 +165,24 @@ def test_ament_auto_targets_link_the_package_s_auto_libraries(write_tree):
             find_package(ament_cmake_auto REQUIRED)
             ament_auto_find_build_dependencies()
             ament_auto_add_library(pub SHARED src/pub.cpp)
+            ament_auto_add_library(monitor SHARED src/monitor.cpp)
             ament_auto_add_executable(pub_node src/pub_node.cpp)
             ament_auto_add_executable(alone src/alone.cpp NO_TARGET_LINK_LIBRARIES)
+            ament_auto_add_executable(reader src/reader.cpp)
             ament_auto_package()
             """,
-        "src/pub/src/pub.cpp": "int publish() { return 1; }\n",
-        "src/pub/src/pub_node.cpp": "int main() { return 0; }\n",
+        "src/pub/src/pub.cpp": "#include \"pub.hpp\"\nvoid Pub::start() {}\n",
+        "src/pub/src/monitor.cpp": "#include \"monitor.hpp\"\nvoid Monitor::check() {}\n",
+        "src/pub/src/pub_node.cpp": "#include \"pub.hpp\"\n"
+                                    "int main() { Pub pub; pub.start(); return 0; }\n",
         "src/pub/src/alone.cpp": "int main() { return 0; }\n",
+        # links both libraries (all of the package's) and runs neither class: its code
+        # names none (Autoware's hdd_reader, a daemon beside the monitor nodes)
+        "src/pub/src/reader.cpp": "int main() { return 0; }\n",
     })
     ws = scan([str(root / "src")], {})
     nodes, _found = parse_package(ws.packages["pub"], ws)
     assert sorted((n.executable, sorted(n.sources)) for n in nodes) == [
         ("alone", ["pub/src/alone.cpp"]),
-        ("pub_node", ["pub/src/pub.cpp", "pub/src/pub_node.cpp"])]
+        ("pub_node", ["pub/src/pub.cpp", "pub/src/pub_node.cpp"]),
+        ("reader", ["pub/src/reader.cpp"])]

@@ -19,6 +19,7 @@ from ..model.conditions import Condition
 from ..model.location import Location
 from ..model.source import Node, Package
 from ..plugins import Files, narrow
+from ..plugins.classes import named_helpers
 from ..workspace import Workspace
 from .commands import C_SUFFIXES
 from .interpreter import BINARY_ROOT, Interpreter
@@ -119,10 +120,20 @@ class SourceMap:
 def executables(it: Interpreter, package: Package, workspace: Files,
                 sources: SourceMap) -> list[Node]:
     return [Node(package=package.name, executable=t.output_name or t.name,
-                 kind="executable", language="cpp", sources=sources.linked(t),
+                 kind="executable", language="cpp", sources=_run(t, sources, workspace),
                  conditions=t.conditions,
                  location=workspace.location(t.file, t.line, t.column))
             for t in it.targets.values() if t.kind == "executable"]
+
+
+def _run(target: Target, sources: SourceMap, workspace: Files) -> list[str]:
+    """The sources an executable runs: its own, and those of the package libraries it
+    links that its code needs (``classes.named_helpers``). A library often holds several
+    nodes' classes that each executable links whole: robot_localization's ekf_node links
+    navsat_transform.cpp, Autoware's hdd_reader (no ROS node) every monitor's."""
+    own = sources.own(target)
+    linked = [s for s in sources.linked(target) if s not in own]
+    return [*own, *named_helpers(own, linked, workspace)] if linked else own
 
 
 def components(it: Interpreter, package: Package, workspace: Files,

@@ -192,6 +192,14 @@ def narrow(sources: list[str], cls: str, workspace: Files) -> list[str]:
             return []
         kept = helpers
         return kept if kept else sources
+    used = set(named_helpers(own, helpers, workspace))
+    return [s for s in sources if s in own or s in used]
+
+
+def named_helpers(own: list[str], helpers: list[str], workspace: Files) -> list[str]:
+    """The ``helpers`` the code of ``own`` needs: those that define a class member or a
+    free function that a kept file (or a header of the workspace it includes) names,
+    transitively, and those that define neither (nothing to tell them by)."""
     words: set[str] = set()
     for source in own:
         words |= _named(source, workspace)
@@ -205,7 +213,7 @@ def narrow(sources: list[str], cls: str, workspace: Files) -> list[str]:
                 used.add(source)
                 words |= _named(source, workspace)
                 changed = True
-    return [s for s in sources if s in own or s in used]
+    return [s for s in helpers if s in used]
 
 
 _WORD = re.compile(r"[A-Za-z_]\w*")
