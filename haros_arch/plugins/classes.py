@@ -232,7 +232,10 @@ def _untemplated(name: str) -> str:
 
 # ``Type Name::member(`` / ``Name<T>::member(`` on a line that starts in the first column
 # (a definition; a call in a body is indented): a member defined
-_MEMBER = re.compile(r"^(?![ \t])[\w:<>,&* \t]*?\b([A-Za-z_]\w*)\s*(?:<[^;{}()\n]*>)?\s*::"
+# (template arguments nest one level and never hold another declaration's words:
+# ``std::vector<bool> RosFilter<T>::load(`` defines a member of RosFilter, not of vector)
+_MEMBER = re.compile(r"^(?![ \t])[\w:<>,&* \t]*?\b([A-Za-z_]\w*)\s*"
+                     r"(?:<[^;{}()\n<>]*(?:<[^;{}()\n<>]*>[^;{}()\n<>]*)*>)?\s*::"
                      r"\s*~?\w+\s*\(", re.MULTILINE)
 _QUOTED_INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]([^>"]+)[>"]', re.MULTILINE)
 MAX_NAMED_HEADERS = 64  # per file: the headers of the workspace read for the names used
