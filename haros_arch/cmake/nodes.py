@@ -19,7 +19,7 @@ from ..model.conditions import Condition
 from ..model.location import Location
 from ..model.source import Node, Package
 from ..plugins import Files, narrow
-from ..plugins.classes import named_helpers
+from ..plugins.classes import exported_classes, named_helpers, named_words
 from ..workspace import Workspace
 from .commands import C_SUFFIXES
 from .interpreter import BINARY_ROOT, Interpreter
@@ -126,14 +126,37 @@ def executables(it: Interpreter, package: Package, workspace: Files,
             for t in it.targets.values() if t.kind == "executable"]
 
 
+# words of code that loads plugins by name: such an executable hosts classes its own
+# code never names (a costmap's filters, through the filter base class)
+_LOADS_PLUGINS = frozenset({"ClassLoader", "MultiLibraryClassLoader", "createSharedInstance",
+                            "createUniqueInstance", "createUnmanagedInstance",
+                            "createInstance"})
+
+
 def _run(target: Target, sources: SourceMap, workspace: Files) -> list[str]:
     """The sources an executable runs: its own, and those of the package libraries it
-    links that its code needs (``classes.named_helpers``). A library often holds several
-    nodes' classes that each executable links whole: robot_localization's ekf_node links
-    navsat_transform.cpp, Autoware's hdd_reader (no ROS node) every monitor's."""
+    links that its code needs (``classes.named_helpers``: those defining what it names,
+    transitively, or nothing one can tell them by), but never a file that exports node
+    or plugin classes none of which its code names. A library often holds several
+    nodes' classes that each executable links whole: robot_localization's ekf_node
+    links navsat_transform.cpp, Autoware's hdd_reader every monitor's component. An
+    executable whose code loads plugins by name runs all it links: the plugins' base
+    classes are named by the plugins, not by it (nav2's costmap filters)."""
     own = sources.own(target)
     linked = [s for s in sources.linked(target) if s not in own]
-    return [*own, *named_helpers(own, linked, workspace)] if linked else own
+    if not linked:
+        return own
+    named = named_helpers(own, linked, workspace)
+    words = set().union(*(named_words(s, workspace) for s in [*own, *named]))
+    if words & _LOADS_PLUGINS:
+        return [*own, *linked]
+    kept = []
+    for source in named:
+        exported = {name.rsplit("::", 1)[-1] for name, _ in exported_classes(
+            os.path.join(workspace.root, source), workspace)}
+        if not exported or exported & words:
+            kept.append(source)
+    return [*own, *kept]
 
 
 def components(it: Interpreter, package: Package, workspace: Files,

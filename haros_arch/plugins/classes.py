@@ -260,6 +260,11 @@ def _defined(source: str, workspace: Files) -> set[str]:
     return set(_MEMBER.findall(text)) | functions
 
 
+def named_words(source: str, workspace: Files) -> set[str]:
+    """The words of a source file and of the package headers it includes (``_named``)."""
+    return _named(source, workspace)
+
+
 def _named(source: str, workspace: Files) -> set[str]:
     """The words of a source file and of the headers of its package it includes (its
     own header declares the members whose types name helper classes)."""
