@@ -169,6 +169,7 @@ def test_ament_auto_targets_link_the_package_s_auto_libraries(write_tree):
             ament_auto_add_executable(pub_node src/pub_node.cpp)
             ament_auto_add_executable(alone src/alone.cpp NO_TARGET_LINK_LIBRARIES)
             ament_auto_add_executable(reader src/reader.cpp)
+            ament_auto_add_executable(host src/host.cpp)
             ament_auto_package()
             """,
         "src/pub/src/pub.cpp": "#include \"pub.hpp\"\nvoid Pub::start() {}\n",
@@ -179,10 +180,13 @@ def test_ament_auto_targets_link_the_package_s_auto_libraries(write_tree):
         # links both libraries (all of the package's) and runs neither class: its code
         # names none (Autoware's hdd_reader, a daemon beside the monitor nodes)
         "src/pub/src/reader.cpp": "int main() { return 0; }\n",
+        # loads plugins by name: their base classes' code is the plugins' to name
+        "src/pub/src/host.cpp": "int main() { auto p = loader.createSharedInstance(\"x\"); }\n",
     })
     ws = scan([str(root / "src")], {})
     nodes, _found = parse_package(ws.packages["pub"], ws)
     assert sorted((n.executable, sorted(n.sources)) for n in nodes) == [
         ("alone", ["pub/src/alone.cpp"]),
+        ("host", ["pub/src/host.cpp", "pub/src/monitor.cpp", "pub/src/pub.cpp"]),
         ("pub_node", ["pub/src/pub.cpp", "pub/src/pub_node.cpp"]),
         ("reader", ["pub/src/reader.cpp"])]
