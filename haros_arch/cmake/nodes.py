@@ -128,9 +128,11 @@ def executables(it: Interpreter, package: Package, workspace: Files,
 
 # words of code that loads plugins by name: such an executable hosts classes its own
 # code never names (a costmap's filters, through the filter base class)
+# (pluginlib, class_loader, a nodelet::Loader in a standalone nodelet executable, an
+# rclcpp_components ComponentManager)
 _LOADS_PLUGINS = frozenset({"ClassLoader", "MultiLibraryClassLoader", "createSharedInstance",
                             "createUniqueInstance", "createUnmanagedInstance",
-                            "createInstance"})
+                            "createInstance", "Loader", "ComponentManager"})
 
 
 def _run(target: Target, sources: SourceMap, workspace: Files) -> list[str]:
@@ -147,16 +149,15 @@ def _run(target: Target, sources: SourceMap, workspace: Files) -> list[str]:
     if not linked:
         return own
     named = named_helpers(own, linked, workspace)
-    words = set().union(*(named_words(s, workspace) for s in [*own, *named]))
+    exported = {source: {name.rsplit("::", 1)[-1] for name, _ in exported_classes(
+        os.path.join(workspace.root, source), workspace)} for source in named}
+    # what the executable's code names: its own files and the helpers that export
+    # nothing (a file that exports a class names that class itself)
+    words = set().union(*(named_words(s, workspace) for s in own),
+                        *(named_words(s, workspace) for s in named if not exported[s]))
     if words & _LOADS_PLUGINS:
         return [*own, *linked]
-    kept = []
-    for source in named:
-        exported = {name.rsplit("::", 1)[-1] for name, _ in exported_classes(
-            os.path.join(workspace.root, source), workspace)}
-        if not exported or exported & words:
-            kept.append(source)
-    return [*own, *kept]
+    return [*own, *(s for s in named if not exported[s] or exported[s] & words)]
 
 
 def components(it: Interpreter, package: Package, workspace: Files,
