@@ -1,0 +1,51 @@
+"""Gaps of our stand-in headers that made shipped interface models partial: each
+source uses what one modelled package does (robot_state_publisher's URDF read and
+system_error, tf_echo's floatfield, ublox's time and stat calls, joy_linux's fd_set,
+nav2's action server timeout, rcutils' logging macros, the graph API of image_view and
+pointcloud_to_laserscan, robot_localization's add_timer, image_view's descriptor
+setters; ROS 1: tf's LinearMath and listener methods, gmapping's is_zero, mavros'
+maxDatagramSize, polled_camera's getTopic). Each parses with no error and keeps its
+calls. The sources are fixtures/cpp/standin_gaps."""
+
+from __future__ import annotations
+
+import os
+
+from haros_arch.extract.cpp import CppResult, extract_cpp
+from haros_arch.workspace import scan
+from tests.conftest import package_xml
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+FIXTURES = os.path.join(os.path.dirname(HERE), "fixtures", "cpp", "standin_gaps")
+
+
+def _source(name: str) -> str:
+    with open(os.path.join(FIXTURES, name), encoding="utf-8") as handle:
+        return handle.read()
+
+
+def _extract(write_tree, source: str, build_type: str) -> CppResult:
+    root = write_tree({"pkg/package.xml": package_xml("pkg", build_type),
+                       "pkg/src/node.cpp": source})
+    return extract_cpp([str(root / "pkg" / "src" / "node.cpp")], scan([str(root)]),
+                       cache_dir=None)
+
+
+def _errors(result: CppResult) -> list[str]:
+    return [d.message for d in result.diagnostics
+            if d.code in ("CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL")]
+
+
+def test_ros2_std_libc_rcl_and_graph_api(write_tree) -> None:
+    result = _extract(write_tree, _source("ros2_std.cpp"), "ament_cmake")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("declare", "colormap"), ("publish", "robot_description")]
+
+
+def test_ros1_tf_time_and_transport_hints(write_tree) -> None:
+    result = _extract(write_tree, _source("ros1_tf.cpp"), "catkin")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("subscribe", "chatter"), ("publish", "out"), ("subscribe", "/tf"),
+        ("subscribe", "/tf_static")]
