@@ -4,8 +4,8 @@ system_error, tf_echo's floatfield, ublox's time and stat calls, joy_linux's fd_
 nav2's action server timeout, rcutils' logging macros, the graph API of image_view and
 pointcloud_to_laserscan, robot_localization's add_timer, image_view's descriptor
 setters; ROS 1: tf's LinearMath and listener methods, gmapping's is_zero, mavros'
-maxDatagramSize, polled_camera's getTopic). Each parses with no error and keeps its
-calls. The sources are fixtures/cpp/standin_gaps."""
+maxDatagramSize, polled_camera's getTopic, OpenCV's version macros). Each parses with
+no error and keeps its calls. The sources are fixtures/cpp/standin_gaps."""
 
 from __future__ import annotations
 
@@ -47,5 +47,17 @@ def test_ros1_tf_time_and_transport_hints(write_tree) -> None:
     result = _extract(write_tree, _source("ros1_tf.cpp"), "catkin")
     assert _errors(result) == []
     assert [(c.kind, c.name) for c in result.calls] == [
-        ("subscribe", "chatter"), ("publish", "out"), ("subscribe", "/tf"),
+        ("subscribe", "chatter"), ("publish", "out"), ("publish", "opencv3"),
+        ("subscribe", "/tf"),
         ("subscribe", "/tf_static")]
+
+
+def test_members_of_declared_names_in_code_without_ros_calls(write_tree) -> None:
+    """The first parse with the unknown names declared has more errors than the parse
+    without (members a macro forwards to, in a helper class with no ROS call): those
+    members are learnt and the unit parsed once more, so the nodelet's class is valid
+    and its node handles known (stereo_image_proc's disparity nodelet had '?' names)."""
+    result = _extract(write_tree, _source("macro_members.cpp"), "catkin")
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("read", "~queue_size"), ("publish", "disparity")]
+    assert "CPP_NAMES_DECLARED" in [d.code for d in result.diagnostics]
