@@ -4,8 +4,9 @@ system_error, tf_echo's floatfield, ublox's time and stat calls, joy_linux's fd_
 nav2's action server timeout, rcutils' logging macros, the graph API of image_view and
 pointcloud_to_laserscan, robot_localization's add_timer, image_view's descriptor
 setters; ROS 1: tf's LinearMath and listener methods, gmapping's is_zero, mavros'
-maxDatagramSize, polled_camera's getTopic, OpenCV's version macros). Each parses with
-no error and keeps its calls. The sources are fixtures/cpp/standin_gaps."""
+maxDatagramSize, polled_camera's getTopic, OpenCV's version macros, urg_node's ROS 1
+bond::Bond). Each parses with no error and keeps its calls. The sources are
+fixtures/cpp/standin_gaps."""
 
 from __future__ import annotations
 
@@ -61,3 +62,13 @@ def test_members_of_declared_names_in_code_without_ros_calls(write_tree) -> None
     assert [(c.kind, c.name) for c in result.calls] == [
         ("read", "~queue_size"), ("publish", "disparity")]
     assert "CPP_NAMES_DECLARED" in [d.code for d in result.diagnostics]
+
+
+def test_a_listener_on_a_buffer_core(write_tree) -> None:
+    """tf2_ros::TransformListener built on a tf2::BufferCore (nav2_util's
+    BaseFootprintPublisherListener derives from it): /tf and /tf_static."""
+    result = _extract(write_tree, _source("tf2_listener.cpp"), "ament_cmake")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("subscribe", "/tf"), ("subscribe", "/tf_static"), ("declare", "base_link_frame"),
+        ("publish", "/tf")]
