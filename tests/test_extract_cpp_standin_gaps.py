@@ -3,9 +3,9 @@ source uses what one modelled package does (robot_state_publisher's URDF read an
 system_error, tf_echo's floatfield, ublox's time and stat calls, joy_linux's fd_set,
 nav2's action server timeout, rcutils' logging macros, the graph API of image_view and
 pointcloud_to_laserscan, robot_localization's add_timer, image_view's descriptor
-setters; ROS 1: tf's LinearMath and listener methods, gmapping's is_zero, mavros'
-maxDatagramSize, polled_camera's getTopic, OpenCV's version macros, urg_node's ROS 1
-bond::Bond). Each parses with no error and keeps its calls. The sources are
+setters, topic_tools' QoS !=; ROS 1: tf's LinearMath and listener methods, gmapping's
+is_zero, mavros' maxDatagramSize, polled_camera's getTopic, OpenCV's version macros,
+urg_node's ROS 1 bond::Bond). Each parses with no error and keeps its calls. The sources are
 fixtures/cpp/standin_gaps."""
 
 from __future__ import annotations

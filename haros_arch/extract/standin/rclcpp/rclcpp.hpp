@@ -212,6 +212,7 @@ public:
   Duration liveliness_lease_duration() const;
   bool avoid_ros_namespace_conventions() const;
   bool operator==(const QoS& o) const;
+  bool operator!=(const QoS& o) const;
   QoS& keep_last(size_t depth);
   QoS& keep_all();
   QoS& reliable();
