@@ -548,3 +548,36 @@ def test_a_string_constant_is_a_literal_the_parse_reads() -> None:
         "C", fields, "pkg")
     assert '  static inline const std::string NAME = "/x";' in ros2_interfaces._struct(
         "C", fields, "pkg")
+
+
+def test_a_c_librarys_constants_and_functions_are_values(write_tree) -> None:
+    """A C library whose header is missing (joy's SDL): its constants, operands of
+    ``|`` or arguments, and its prefixed functions are declared as values, so the
+    function that uses them and calls the ROS API has no error left (joy's nodes were
+    partial for it); a lowercase unqualified name stays undeclared (often a member
+    clang could not find through an invalid base)."""
+    result = _server(
+        write_tree,
+        "#include <rclcpp/rclcpp.hpp>\n#include <std_msgs/msg/string.hpp>\n"
+        "#include <SDL.h>\n"
+        "class Server : public rclcpp::Node {\n public:\n"
+        "  Server() : Node(\"server\") {\n"
+        "    if (SDL_Init(SDL_INIT_JOYSTICK | SDL_INIT_HAPTIC) < 0) {\n"
+        "      RCLCPP_ERROR(get_logger(), \"SDL: %s\", SDL_GetError());\n    }\n"
+        "    buttons_.resize(SDL_CONTROLLER_BUTTON_MAX);\n"
+        "    pub_ = create_publisher<std_msgs::msg::String>(\"joy\", 10);\n  }\n"
+        "  std::vector<int> buttons_;\n"
+        "  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;\n};\n")
+    assert [(c.kind, c.name, c.location.line) for c in result.calls] == [
+        ("publish", "joy", 11)]
+    assert "CPP_ERROR_NEAR_CALL" not in [d.code for d in result.diagnostics]
+    names = synthesis.Names()
+    text = (b"void f() { g(SDL_INIT_VIDEO | SDL_INIT_AUDIO); x = SDL_GetTicks();\n"
+            b"  h(count_ + 2, update()); }\n")
+    names.learn([("use of undeclared identifier '" + n.decode() + "'", text, text.index(n))
+                 for n in (b"SDL_INIT_VIDEO", b"SDL_INIT_AUDIO", b"SDL_GetTicks", b"count_",
+                           b"update")])
+    header = names.header()
+    for value in ("SDL_INIT_VIDEO", "SDL_INIT_AUDIO", "SDL_GetTicks"):
+        assert f"extern haros_any {value};" in header
+    assert "count_" not in header and "update" not in header

@@ -710,9 +710,14 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
         # cost a call (the other errors' names are declared too, but never cost a parse)
         left = mine(again)
         hiding = _hiding(again, left, source, fieldless, functions, sites)
-        if not hiding or not names.learn(_located(hiding, source)):
+        learnt = bool(hiding) and names.learn(_located(hiding, source))
+        rest = names.learn(_located([e for e in left if e not in hiding], source))
+        # or when this parse is not the best and the other errors name more (members
+        # of declared classes read in code that makes no ROS call, which count against
+        # it: stereo_image_proc's processor.h, whose unknown members kept its nodelet's
+        # class invalid)
+        if not learnt and not (rest and best is not again):
             break
-        names.learn(_located([e for e in left if e not in hiding], source))
     if best is tu:
         return tu  # declaring them made it no better: the parse as it was
     again = best

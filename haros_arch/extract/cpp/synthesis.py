@@ -85,6 +85,10 @@ _DECLARING = re.compile(rb"\b(?:using|typedef|namespace)\b")
 _TYPE_AS_VALUE = re.compile(r"^expected '\(' for function-style cast or type construction")
 _NAME_BEFORE = re.compile(rb"((?:[A-Za-z_]\w*\s*::\s*)*[A-Za-z_]\w*)\s*$")
 _CONSTANT = re.compile(r"[A-Z][A-Z0-9]*(?:_[A-Z0-9]+)+|[A-Z]{2,}[0-9]*")
+# an unqualified name of a C library: a constant in capitals with an underscore
+# (``SDL_INIT_JOYSTICK``) or a function under a capitalised prefix (``SDL_GetError``,
+# ``PhidgetNet_addServer``); members are rarely written so
+_C_VENDOR = re.compile(r"[A-Z][A-Za-z0-9]*(?:_[A-Za-z0-9]+)+")
 # a namespace, class, struct or enum the code defines (the first name of ``a::b``)
 _DEFINED = re.compile(rb"\b(?:namespace|class|struct|enum)\s+(?:class\s+|struct\s+)?([A-Za-z_]\w*)")
 _USING = re.compile(rb"\busing\s+namespace\s+(?:::)?([A-Za-z_][\w:]*)\s*;")
@@ -124,6 +128,7 @@ class _Name:
     children: dict[str, _Name] = field(default_factory=dict)
 
 
+_MACRO_SPAN = 4000  # bytes of a macro call searched for a name clang placed at the macro
 _MACRO_NAME = re.compile(r"[A-Z][A-Z0-9_]*[A-Z0-9]")
 
 
@@ -139,6 +144,19 @@ def _bare_macro(name: str, text: bytes, offset: int) -> bool:
     line = text[start:end if end >= 0 else len(text)]
     after = line[offset - start + len(name):].split(b"//")[0].strip()
     return not line[:offset - start].strip() and not after
+
+
+def _spelled_at(name: str, text: bytes, offset: int) -> int:
+    """Where the unknown ``name`` an error is about is written: clang places an error
+    in a macro's arguments at the macro (``RCLCPP_ERROR(logger, "%s", SDL_GetError())``
+    is reported at ``RCLCPP_ERROR``); the name is then the first use of it in the
+    macro call's text."""
+    first = name.split("::")[0].encode()
+    if not first or text[offset:offset + len(first)] == first:
+        return offset
+    found = re.compile(rb"(?<![\w.:>])" + re.escape(first) + rb"\b").search(
+        text, offset, offset + _MACRO_SPAN)
+    return found.start() if found is not None else offset
 
 
 class Names:
@@ -275,6 +293,8 @@ class Names:
                 continue
             if text is None:
                 return
+            if match.lastindex:
+                offset = _spelled_at(match.group(1), text, offset)
             if use == "type" and match.lastindex == 1 and _bare_macro(
                     match.group(1), text, offset):
                 if match.group(1) not in self.macros:
@@ -320,8 +340,13 @@ class Names:
         if use == "any" and not scope and len(written) == 1 and (
             last == "value" or rest.lstrip()[:1] == b"("
         ):
-            return  # an unqualified function or variable: in a class, often a member
-            # clang could not find (an invalid base); declaring it would shadow it
+            if not _C_VENDOR.fullmatch(written[-1]):
+                return  # an unqualified function or variable: in a class, often a member
+                # clang could not find (an invalid base); declaring it would shadow it
+            # but a C library's constant or prefixed function, whose header is missing
+            # (``SDL_Init(SDL_INIT_JOYSTICK | SDL_INIT_HAPTIC)``, ``SDL_GetError()``),
+            # is no member: a value (a call is the value's ``operator()``)
+            last = "value"
         if not scope and written[0] in self.aliases:
             # ``Mode::FAST`` where the code declares ``using Mode = vendor::Mode;``: not
             # a name of its own (it would clash with the alias), a member of what the

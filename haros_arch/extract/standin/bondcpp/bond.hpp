@@ -10,6 +10,10 @@ public:
   Bond(const std::string& topic, const std::string& id, NodeT node,
        std::function<void()> on_broken = std::function<void()>(),
        std::function<void()> on_formed = std::function<void()>());
+  // ROS 1 (bondcpp/bond.h): the bond's topic on the global node handle
+  Bond(const std::string& topic, const std::string& id,
+       std::function<void()> on_broken = std::function<void()>(),
+       std::function<void()> on_formed = std::function<void()>());
   ~Bond();
   void setHeartbeatPeriod(double dur);
   void setHeartbeatTimeout(double dur);

@@ -30,6 +30,8 @@ public:
   CameraPublisher();
   template<class I, class C> void publish(const I& image, const C& info) const;
   uint32_t getNumSubscribers() const;
+  std::string getTopic() const;
+  std::string getInfoTopic() const;
   void shutdown();
   operator void*() const;
 };

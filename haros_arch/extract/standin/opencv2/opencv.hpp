@@ -4,6 +4,15 @@
 #define HAROS_STANDIN_OPENCV_HPP
 #include <string>
 #include <vector>
+// opencv2/core/version.hpp: the OpenCV 4 of noetic's and jazzy's platforms (code picks
+// its OpenCV 3+ API by CV_MAJOR_VERSION)
+#define CV_VERSION_MAJOR 4
+#define CV_VERSION_MINOR 5
+#define CV_VERSION_REVISION 4
+#define CV_VERSION "4.5.4"
+#define CV_MAJOR_VERSION CV_VERSION_MAJOR
+#define CV_MINOR_VERSION CV_VERSION_MINOR
+#define CV_SUBMINOR_VERSION CV_VERSION_REVISION
 #define CV_8U 0
 #define CV_8S 1
 #define CV_16U 2

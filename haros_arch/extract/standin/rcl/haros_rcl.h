@@ -44,7 +44,101 @@ typedef enum rcl_service_introspection_state_e { RCL_SERVICE_INTROSPECTION_OFF =
 } rcl_service_introspection_state_t;
 typedef int64_t rcl_time_point_value_t;
 typedef int64_t rcl_duration_value_t;
+// rcl/time.h, rcutils/time.h
+typedef struct rcl_duration_s { rcl_duration_value_t nanoseconds; } rcl_duration_t;
+typedef int64_t rcutils_time_point_value_t;
+typedef int64_t rcutils_duration_value_t;
+rcutils_ret_t rcutils_system_time_now(rcutils_time_point_value_t* now);
+rcutils_ret_t rcutils_steady_time_now(rcutils_time_point_value_t* now);
+#define RCUTILS_S_TO_NS(seconds) ((seconds) * (1000LL * 1000LL * 1000LL))
+#define RCUTILS_MS_TO_NS(milliseconds) ((milliseconds) * (1000LL * 1000LL))
+#define RCUTILS_US_TO_NS(microseconds) ((microseconds) * 1000LL)
+#define RCUTILS_NS_TO_S(nanoseconds) ((nanoseconds) / (1000LL * 1000LL * 1000LL))
+#define RCUTILS_NS_TO_MS(nanoseconds) ((nanoseconds) / (1000LL * 1000LL))
+#define RCUTILS_NS_TO_US(nanoseconds) ((nanoseconds) / 1000LL)
+#define RCL_S_TO_NS RCUTILS_S_TO_NS
+#define RCL_MS_TO_NS RCUTILS_MS_TO_NS
+#define RCL_US_TO_NS RCUTILS_US_TO_NS
+#define RCL_NS_TO_S RCUTILS_NS_TO_S
+#define RCL_NS_TO_MS RCUTILS_NS_TO_MS
+#define RCL_NS_TO_US RCUTILS_NS_TO_US
 }
+// rcutils/logging_macros.h: every severity with every variant; the arguments that are
+// not the message are dropped
+template<class... A> void haros_rcutils_log(A&&... args);
+#define HAROS_RCUTILS_LOG(...) ::haros_rcutils_log(__VA_ARGS__)
+#define RCUTILS_STEADY_TIME rcutils_steady_time_now
+#define RCUTILS_SYSTEM_TIME rcutils_system_time_now
+#define RCUTILS_LOG_DEBUG(...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_DEBUG_NAMED(name, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_DEBUG_ONCE(...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_DEBUG_ONCE_NAMED(name, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_DEBUG_EXPRESSION(expression, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_DEBUG_EXPRESSION_NAMED(expression, name, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_DEBUG_FUNCTION(function, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_DEBUG_FUNCTION_NAMED(function, name, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_DEBUG_SKIPFIRST(...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_DEBUG_SKIPFIRST_NAMED(name, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_DEBUG_THROTTLE(time_source, duration, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_DEBUG_THROTTLE_NAMED(time_source, duration, name, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_DEBUG_SKIPFIRST_THROTTLE(time_source, duration, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_DEBUG_SKIPFIRST_THROTTLE_NAMED(time_source, duration, name, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_INFO(...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_INFO_NAMED(name, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_INFO_ONCE(...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_INFO_ONCE_NAMED(name, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_INFO_EXPRESSION(expression, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_INFO_EXPRESSION_NAMED(expression, name, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_INFO_FUNCTION(function, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_INFO_FUNCTION_NAMED(function, name, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_INFO_SKIPFIRST(...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_INFO_SKIPFIRST_NAMED(name, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_INFO_THROTTLE(time_source, duration, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_INFO_THROTTLE_NAMED(time_source, duration, name, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_INFO_SKIPFIRST_THROTTLE(time_source, duration, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_INFO_SKIPFIRST_THROTTLE_NAMED(time_source, duration, name, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_WARN(...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_WARN_NAMED(name, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_WARN_ONCE(...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_WARN_ONCE_NAMED(name, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_WARN_EXPRESSION(expression, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_WARN_EXPRESSION_NAMED(expression, name, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_WARN_FUNCTION(function, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_WARN_FUNCTION_NAMED(function, name, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_WARN_SKIPFIRST(...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_WARN_SKIPFIRST_NAMED(name, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_WARN_THROTTLE(time_source, duration, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_WARN_THROTTLE_NAMED(time_source, duration, name, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_WARN_SKIPFIRST_THROTTLE(time_source, duration, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_WARN_SKIPFIRST_THROTTLE_NAMED(time_source, duration, name, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_ERROR(...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_ERROR_NAMED(name, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_ERROR_ONCE(...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_ERROR_ONCE_NAMED(name, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_ERROR_EXPRESSION(expression, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_ERROR_EXPRESSION_NAMED(expression, name, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_ERROR_FUNCTION(function, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_ERROR_FUNCTION_NAMED(function, name, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_ERROR_SKIPFIRST(...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_ERROR_SKIPFIRST_NAMED(name, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_ERROR_THROTTLE(time_source, duration, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_ERROR_THROTTLE_NAMED(time_source, duration, name, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_ERROR_SKIPFIRST_THROTTLE(time_source, duration, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_ERROR_SKIPFIRST_THROTTLE_NAMED(time_source, duration, name, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_FATAL(...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_FATAL_NAMED(name, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_FATAL_ONCE(...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_FATAL_ONCE_NAMED(name, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_FATAL_EXPRESSION(expression, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_FATAL_EXPRESSION_NAMED(expression, name, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_FATAL_FUNCTION(function, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_FATAL_FUNCTION_NAMED(function, name, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_FATAL_SKIPFIRST(...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_FATAL_SKIPFIRST_NAMED(name, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_FATAL_THROTTLE(time_source, duration, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_FATAL_THROTTLE_NAMED(time_source, duration, name, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_FATAL_SKIPFIRST_THROTTLE(time_source, duration, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_FATAL_SKIPFIRST_THROTTLE_NAMED(time_source, duration, name, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
 namespace rcpputils {
 template<class C> std::string join(const C& items, const std::string& delimiter);
 bool set_env_var(const char* name, const char* value);

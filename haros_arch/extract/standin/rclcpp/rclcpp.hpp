@@ -36,16 +36,28 @@
   (minor < RCLCPP_VERSION_MINOR) ? true : (minor > RCLCPP_VERSION_MINOR) ? false : \
   (patch <= RCLCPP_VERSION_PATCH))
 namespace rcl_interfaces { namespace msg {
+// with the generated messages' set__<field> setters (chained: each returns the message)
+struct FloatingPointRange { double from_value, to_value, step;
+  FloatingPointRange& set__from_value(double v); FloatingPointRange& set__to_value(double v);
+  FloatingPointRange& set__step(double v); };
+struct IntegerRange { int64_t from_value, to_value; uint64_t step;
+  IntegerRange& set__from_value(int64_t v); IntegerRange& set__to_value(int64_t v);
+  IntegerRange& set__step(uint64_t v); };
 struct ParameterDescriptor {
   std::string name; uint8_t type; std::string description; std::string additional_constraints;
   bool read_only; bool dynamic_typing;
-  struct Range { double from_value, to_value, step; };
-  std::vector<Range> floating_point_range; std::vector<Range> integer_range;
+  std::vector<FloatingPointRange> floating_point_range; std::vector<IntegerRange> integer_range;
+  ParameterDescriptor& set__name(const std::string& v);
+  ParameterDescriptor& set__type(uint8_t v);
+  ParameterDescriptor& set__description(const std::string& v);
+  ParameterDescriptor& set__additional_constraints(const std::string& v);
+  ParameterDescriptor& set__read_only(bool v);
+  ParameterDescriptor& set__dynamic_typing(bool v);
+  ParameterDescriptor& set__floating_point_range(const std::vector<FloatingPointRange>& v);
+  ParameterDescriptor& set__integer_range(const std::vector<IntegerRange>& v);
 };
 struct SetParametersResult { bool successful; std::string reason; };
 struct ListParametersResult { std::vector<std::string> names; std::vector<std::string> prefixes; };
-struct FloatingPointRange { double from_value, to_value, step; };
-struct IntegerRange { long from_value, to_value, step; };
 struct ParameterType {
   static constexpr uint8_t PARAMETER_NOT_SET = 0, PARAMETER_BOOL = 1, PARAMETER_INTEGER = 2,
     PARAMETER_DOUBLE = 3, PARAMETER_STRING = 4, PARAMETER_BYTE_ARRAY = 5,
@@ -200,6 +212,7 @@ public:
   Duration liveliness_lease_duration() const;
   bool avoid_ros_namespace_conventions() const;
   bool operator==(const QoS& o) const;
+  bool operator!=(const QoS& o) const;
   QoS& keep_last(size_t depth);
   QoS& keep_all();
   QoS& reliable();
@@ -429,6 +442,7 @@ public:
   const std::vector<Parameter>& parameter_overrides() const;
   bool use_intra_process_comms() const;
 };
+class Event;
 namespace node_interfaces {
 class NodeBaseInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeBaseInterface)
   const char* get_name() const; const char* get_namespace() const;
@@ -464,9 +478,20 @@ class NodeLoggingInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeLoggingInt
   rclcpp::Logger get_logger() const; const char* get_logger_name() const; };
 class NodeClockInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeClockInterface)
   std::shared_ptr<rclcpp::Clock> get_clock(); };
-class NodeGraphInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeGraphInterface) };
+class NodeGraphInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeGraphInterface)
+  std::map<std::string, std::vector<std::string>> get_topic_names_and_types(
+      bool no_demangle = false) const;
+  std::map<std::string, std::vector<std::string>> get_service_names_and_types() const;
+  std::vector<std::string> get_node_names() const;
+  size_t count_publishers(const std::string& topic) const;
+  size_t count_subscribers(const std::string& topic) const;
+  std::shared_ptr<rclcpp::Event> get_graph_event();
+  void wait_for_graph_change(std::shared_ptr<rclcpp::Event> event,
+                             std::chrono::nanoseconds timeout); };
 class NodeServicesInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeServicesInterface) };
-class NodeTimersInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeTimersInterface) };
+class NodeTimersInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeTimersInterface)
+  void add_timer(rclcpp::TimerBase::SharedPtr timer,
+                 rclcpp::CallbackGroup::SharedPtr callback_group); };
 class NodeWaitablesInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeWaitablesInterface) };
 struct OnSetParametersCallbackHandle { RCLCPP_SMART_PTR_DEFINITIONS(OnSetParametersCallbackHandle) };
 struct PreSetParametersCallbackHandle { RCLCPP_SMART_PTR_DEFINITIONS(PreSetParametersCallbackHandle) };
@@ -568,6 +593,12 @@ using OnSetParametersCallbackHandle = node_interfaces::OnSetParametersCallbackHa
   rclcpp::node_interfaces::NodeWaitablesInterface::SharedPtr get_node_waitables_interface(); \
   size_t count_publishers(const std::string& topic) const; \
   size_t count_subscribers(const std::string& topic) const; \
+  std::map<std::string, std::vector<std::string>> get_topic_names_and_types() const; \
+  std::map<std::string, std::vector<std::string>> get_service_names_and_types() const; \
+  std::vector<std::string> get_node_names() const; \
+  std::shared_ptr<rclcpp::Event> get_graph_event(); \
+  void wait_for_graph_change(std::shared_ptr<rclcpp::Event> event, \
+                             std::chrono::nanoseconds timeout); \
   using OnSetParametersCallbackHandle = rclcpp::node_interfaces::OnSetParametersCallbackHandle; \
   using PreSetParametersCallbackHandle = \
       rclcpp::node_interfaces::PreSetParametersCallbackHandle; \

@@ -7,7 +7,7 @@
 typedef struct rcl_action_server_options_s {
   rmw_qos_profile_t goal_service_qos, cancel_service_qos, result_service_qos,
     feedback_topic_qos, status_topic_qos;
-  double result_timeout;
+  rcl_duration_t result_timeout;
 } rcl_action_server_options_t;
 typedef struct rcl_action_client_options_s {
   rmw_qos_profile_t goal_service_qos, result_service_qos, cancel_service_qos,

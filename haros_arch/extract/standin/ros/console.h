@@ -7,6 +7,14 @@ void haros_log(const char* fmt, ...);
 enum Level { Debug, Info, Warn, Error, Fatal };
 bool set_logger_level(const std::string& name, Level level);
 } }
+// rosconsole's logger names (ROS_PACKAGE_NAME when the build defines it)
+#define ROSCONSOLE_ROOT_LOGGER_NAME "ros"
+#ifdef ROS_PACKAGE_NAME
+#define ROSCONSOLE_NAME_PREFIX ROSCONSOLE_ROOT_LOGGER_NAME "." ROS_PACKAGE_NAME
+#else
+#define ROSCONSOLE_NAME_PREFIX ROSCONSOLE_ROOT_LOGGER_NAME ".unknown_package"
+#endif
+#define ROSCONSOLE_DEFAULT_NAME ROSCONSOLE_NAME_PREFIX
 #define HAROS_STANDIN_LOG(...) ::ros::console::haros_log(__VA_ARGS__)
 #define HAROS_STANDIN_STREAM(args) do { std::stringstream haros_ss; haros_ss << args; } while (0)
 #define ROS_DEBUG(...) HAROS_STANDIN_LOG(__VA_ARGS__)

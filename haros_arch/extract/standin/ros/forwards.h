@@ -39,6 +39,7 @@ public:
   TransportHints& tcp();
   TransportHints& unreliable();
   TransportHints& reliable();
+  TransportHints& maxDatagramSize(int size);
 };
 typedef boost::shared_ptr<void const> VoidConstPtr;
 typedef boost::shared_ptr<void> VoidPtr;

@@ -38,6 +38,7 @@ public:
   double toSec() const;
   uint64_t toNSec() const;
   bool isZero() const;
+  bool is_zero() const;
   Time& fromSec(double t);
   Time& fromNSec(uint64_t t);
   Duration operator-(const Time& rhs) const;

@@ -273,6 +273,36 @@ int poll(struct pollfd* fds, unsigned long n, int timeout);
 int ioctl(int fd, unsigned long request, ...);
 typedef void (*sighandler_t)(int);
 sighandler_t signal(int signum, sighandler_t handler);
+// <time.h>: broken-down time
+struct tm { int tm_sec, tm_min, tm_hour, tm_mday, tm_mon, tm_year, tm_wday, tm_yday,
+  tm_isdst; long tm_gmtoff; const char* tm_zone; };
+struct tm* localtime(const time_t* t);
+struct tm* gmtime(const time_t* t);
+struct tm* localtime_r(const time_t* t, struct tm* result);
+struct tm* gmtime_r(const time_t* t, struct tm* result);
+time_t mktime(struct tm* tm);
+size_t strftime(char* s, size_t max, const char* format, const struct tm* tm);
+// <sys/stat.h>
+typedef unsigned int mode_t;
+struct stat { unsigned long st_dev, st_ino; mode_t st_mode; unsigned long st_nlink;
+  uid_t st_uid; unsigned int st_gid; long st_size; time_t st_atime, st_mtime, st_ctime; };
+int stat(const char* path, struct stat* buf);
+int fstat(int fd, struct stat* buf);
+int lstat(const char* path, struct stat* buf);
+int mkdir(const char* path, mode_t mode);
+#define S_IFMT 0170000
+#define S_IFDIR 0040000
+#define S_IFREG 0100000
+#define S_ISDIR(m) (((m) & S_IFMT) == S_IFDIR)
+#define S_ISREG(m) (((m) & S_IFMT) == S_IFREG)
+// <sys/select.h>
+typedef struct { long fds_bits[16]; } fd_set;
+int select(int nfds, fd_set* readfds, fd_set* writefds, fd_set* exceptfds,
+           struct timeval* timeout);
+void FD_ZERO(fd_set* set);
+void FD_SET(int fd, fd_set* set);
+void FD_CLR(int fd, fd_set* set);
+int FD_ISSET(int fd, const fd_set* set);
 }
 typedef unsigned long pthread_t;
 typedef struct { char haros_opaque[56]; } pthread_attr_t;

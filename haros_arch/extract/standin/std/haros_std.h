@@ -756,6 +756,33 @@ class domain_error : public logic_error { public: using logic_error::logic_error
 class length_error : public logic_error { public: using logic_error::logic_error; };
 class range_error : public runtime_error { public: using runtime_error::runtime_error; };
 class overflow_error : public runtime_error { public: using runtime_error::runtime_error; };
+// <system_error>
+class error_category {
+public:
+  virtual const char* name() const noexcept;
+  virtual string message(int ev) const;
+};
+const error_category& system_category() noexcept;
+const error_category& generic_category() noexcept;
+class error_code {
+public:
+  error_code() noexcept;
+  error_code(int ev, const error_category& category) noexcept;
+  int value() const noexcept;
+  const error_category& category() const noexcept;
+  string message() const;
+  explicit operator bool() const noexcept;
+};
+class system_error : public runtime_error {
+public:
+  system_error(error_code ec);
+  system_error(error_code ec, const string& what);
+  system_error(error_code ec, const char* what);
+  system_error(int ev, const error_category& category);
+  system_error(int ev, const error_category& category, const string& what);
+  system_error(int ev, const error_category& category, const char* what);
+  const error_code& code() const noexcept;
+};
 class bad_alloc : public exception {};
 class bad_cast : public exception {};
 
@@ -765,12 +792,22 @@ public:
   typedef int fmtflags;
   typedef int openmode;
   static const openmode in = 1, out = 2, app = 4, binary = 8, trunc = 16, ate = 32;
-  static const fmtflags fixed = 1, scientific = 2, boolalpha = 4, hex = 8, dec = 16;
+  static const fmtflags fixed = 1, scientific = 2, boolalpha = 4, hex = 8, dec = 16,
+    oct = 32, left = 64, right = 128, internal = 256, showpos = 512, showpoint = 1024,
+    showbase = 2048, uppercase = 4096, skipws = 8192, unitbuf = 16384,
+    floatfield = fixed | scientific, adjustfield = left | right | internal,
+    basefield = dec | oct | hex;
   typedef int seekdir;
   typedef long pos_type;
   typedef long off_type;
   static const seekdir beg = 0, cur = 1, end = 2;
   fmtflags setf(fmtflags f);
+  fmtflags setf(fmtflags f, fmtflags mask);
+  void unsetf(fmtflags mask);
+  fmtflags flags() const;
+  fmtflags flags(fmtflags f);
+  long width() const;
+  long width(long w);
   int precision(int p);
   class streambuf* rdbuf() const;
 };

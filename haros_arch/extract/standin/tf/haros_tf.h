@@ -12,8 +12,27 @@ public:
   Vector3();
   Vector3(double x, double y, double z);
   double x() const; double y() const; double z() const;
+  double getX() const; double getY() const; double getZ() const;
   void setX(double v); void setY(double v); void setZ(double v);
+  void setValue(double x, double y, double z);
   double length() const;
+  double length2() const;
+  double distance(const Vector3& v) const;
+  double distance2(const Vector3& v) const;
+  double dot(const Vector3& v) const;
+  Vector3 cross(const Vector3& v) const;
+  Vector3& normalize();
+  Vector3 normalized() const;
+  Vector3 operator+(const Vector3& v) const;
+  Vector3 operator-(const Vector3& v) const;
+  Vector3 operator*(double s) const;
+  Vector3 operator/(double s) const;
+  Vector3& operator+=(const Vector3& v);
+  Vector3& operator-=(const Vector3& v);
+  Vector3& operator*=(double s);
+  Vector3& operator/=(double s);
+  double& operator[](int i);
+  double operator[](int i) const;
 };
 class Quaternion {
 public:
@@ -21,11 +40,31 @@ public:
   Quaternion(double x, double y, double z, double w);
   void setRPY(double roll, double pitch, double yaw);
   double x() const; double y() const; double z() const; double w() const;
+  double getX() const; double getY() const; double getZ() const; double getW() const;
+  void setValue(double x, double y, double z, double w);
+  double angle(const Quaternion& q) const;
+  double angleShortestPath(const Quaternion& q) const;
+  double getAngle() const;
+  Vector3 getAxis() const;
+  Quaternion& normalize();
+  Quaternion normalized() const;
+  Quaternion inverse() const;
+  double length() const;
+  Quaternion operator*(const Quaternion& q) const;
+  Quaternion& operator*=(const Quaternion& q);
 };
 class Matrix3x3 {
 public:
+  Matrix3x3();
   explicit Matrix3x3(const Quaternion& q);
   void getRPY(double& roll, double& pitch, double& yaw) const;
+  void getEulerYPR(double& yaw, double& pitch, double& roll) const;
+  void setRPY(double roll, double pitch, double yaw);
+  void getRotation(Quaternion& q) const;
+  Matrix3x3 inverse() const;
+  Matrix3x3 transpose() const;
+  Vector3 operator*(const Vector3& v) const;
+  Matrix3x3 operator*(const Matrix3x3& m) const;
 };
 typedef Vector3 Point;
 class Transform {
@@ -35,6 +74,9 @@ public:
   Vector3& getOrigin();
   const Vector3& getOrigin() const;
   Quaternion getRotation() const;
+  Matrix3x3& getBasis();
+  const Matrix3x3& getBasis() const;
+  void setBasis(const Matrix3x3& basis);
   void setOrigin(const Vector3& origin);
   void setRotation(const Quaternion& q);
   void setIdentity();
@@ -76,6 +118,16 @@ public:
   template<class... A> void transformQuaternion(A&&... args) const;
   bool frameExists(const std::string& frame) const;
   std::string allFramesAsString() const;
+  bool setTransform(const StampedTransform& transform,
+                    const std::string& authority = "default_authority");
+  void chainAsVector(const std::string& target_frame, ros::Time target_time,
+                     const std::string& source_frame, ros::Time source_time,
+                     const std::string& fixed_frame, std::vector<std::string>& output) const;
+  void getFrameStrings(std::vector<std::string>& ids) const;
+  int getLatestCommonTime(const std::string& source_frame, const std::string& target_frame,
+                          ros::Time& time, std::string* error_string) const;
+  std::string getTFPrefix() const;
+  void clear();
 };
 class TransformListener : public Transformer {
 public:

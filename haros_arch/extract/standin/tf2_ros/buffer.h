@@ -107,7 +107,7 @@ public:
 };
 }
 namespace tf2_ros {
-class Buffer {
+class Buffer : public tf2::BufferCore {
 public:
   typedef std::shared_ptr<Buffer> SharedPtr;
   typedef std::shared_ptr<const Buffer> ConstSharedPtr;
@@ -127,6 +127,8 @@ public:
 class TransformListener {
 public:
   template<class... A> explicit TransformListener(Buffer& buffer, A&&... args);
+  // on a plain tf2::BufferCore (nav2_util's BaseFootprintPublisherListener)
+  template<class... A> explicit TransformListener(tf2::BufferCore& buffer, A&&... args);
 };
 class TransformBroadcaster {
 public:
