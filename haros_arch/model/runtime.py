@@ -540,8 +540,8 @@ def remaps_of(nodes: list[NodeInstance]) -> list[Remap]:
     nodes, a ``<remap>`` of a group). Special keys (``__name``, ``__ns``) and a remap of a
     name to itself are left out."""
     found: dict[tuple[str, str], Remap] = {}
-    made = [n for n in nodes if n.origin != "launch"]
-    for instance in [n for n in nodes if n.origin == "launch"] + made:
+    # the launch's nodes first: the remaps are theirs; the nodes hosts make can only use
+    for instance in sorted(nodes, key=lambda n: n.origin != "launch"):
         rules = resolve_remaps(instance.remaps, instance.namespace, instance.name)
         # the names the instance uses, remapped or not: a remap to one of them makes no
         # connection the instance does not have (turtlebot's ``camera/image`` beside

@@ -29,6 +29,17 @@ CallKind = Literal[
     "read", "write", "declare",
 ]
 
+# what a ROS 2 managed (lifecycle) node makes by itself, under its own name, in rclcpp
+# (rclcpp_lifecycle's LifecycleNode) and rclpy (rclpy.lifecycle's Node) alike: its
+# transitions' topic, and its state machine's services
+LIFECYCLE_EVENTS = ("transition_event", "lifecycle_msgs/msg/TransitionEvent")
+LIFECYCLE_SERVICES: tuple[tuple[str, str], ...] = tuple(
+    (name, f"lifecycle_msgs/srv/{kind}") for name, kind in (
+        ("change_state", "ChangeState"), ("get_state", "GetState"),
+        ("get_available_states", "GetAvailableStates"),
+        ("get_available_transitions", "GetAvailableTransitions"),
+        ("get_transition_graph", "GetAvailableTransitions")))
+
 
 # ``PrimitiveCall.name_each`` of a call named by a numbered family of parameters
 NUMBERED = "#"

@@ -202,7 +202,7 @@ def named_helpers(own: list[str], helpers: list[str], workspace: Files) -> list[
     transitively, and those that define neither (nothing to tell them by)."""
     words: set[str] = set()
     for source in own:
-        words |= _named(source, workspace)
+        words |= named_words(source, workspace)
     waiting = {source: _defined(source, workspace) for source in helpers}
     used = {source for source, defined in waiting.items() if not defined}
     changed = True
@@ -211,7 +211,7 @@ def named_helpers(own: list[str], helpers: list[str], workspace: Files) -> list[
         for source, defined in waiting.items():
             if source not in used and defined & words:
                 used.add(source)
-                words |= _named(source, workspace)
+                words |= named_words(source, workspace)
                 changed = True
     return [s for s in helpers if s in used]
 
@@ -261,11 +261,6 @@ def _defined(source: str, workspace: Files) -> set[str]:
 
 
 def named_words(source: str, workspace: Files) -> set[str]:
-    """The words of a source file and of the package headers it includes (``_named``)."""
-    return _named(source, workspace)
-
-
-def _named(source: str, workspace: Files) -> set[str]:
     """The words of a source file and of the headers of its package it includes (its
     own header declares the members whose types name helper classes)."""
     path = os.path.join(workspace.root, source)

@@ -37,7 +37,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from ...model.source import CallKind
+from ...model.source import LIFECYCLE_EVENTS, LIFECYCLE_SERVICES, CallKind
 
 # (kind, name relative to the call's name's namespace or global, ROS 1 type)
 Sibling = tuple[CallKind, str, str]
@@ -390,16 +390,11 @@ RCLCPP_NODE_NAME: dict[tuple[str, str], tuple[int, int]] = {
 }
 # What a node class's constructor creates by itself: rclcpp_lifecycle's LifecycleNode
 # publishes its transitions and serves its state machine under the node's own name.
-_LIFECYCLE = "lifecycle_msgs/srv/"
 IMPLICIT: dict[tuple[str, str], RosFunction] = {
     ("rclcpp_lifecycle::LifecycleNode", "LifecycleNode"): RosFunction(
-        "publish", fixed_name="~transition_event",
-        fixed_type="lifecycle_msgs/msg/TransitionEvent", on_handle=False,
-        siblings=tuple(("server", f"~{name}", _LIFECYCLE + kind) for name, kind in (
-            ("change_state", "ChangeState"), ("get_state", "GetState"),
-            ("get_available_states", "GetAvailableStates"),
-            ("get_available_transitions", "GetAvailableTransitions"),
-            ("get_transition_graph", "GetAvailableTransitions")))),
+        "publish", fixed_name=f"~{LIFECYCLE_EVENTS[0]}", fixed_type=LIFECYCLE_EVENTS[1],
+        on_handle=False, siblings=tuple(
+            ("server", f"~{name}", kind) for name, kind in LIFECYCLE_SERVICES)),
 }
 # (class, method) -> the argument that names the sub-namespace
 RCLCPP_SUB_NODE: dict[tuple[str, str], int] = {("rclcpp::Node", "create_sub_node"): 0}

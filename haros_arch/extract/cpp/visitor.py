@@ -65,7 +65,7 @@ from .values import (
     written_arguments,
 )
 from .values import key_of as place_of
-from .wrappers import Wrappers, is_constructor, of_class_template
+from .wrappers import FACTORY_NAMES, Wrappers, is_constructor, of_class_template
 
 WORDS = re.compile(rb"[A-Za-z_]\w*")  # the identifiers (and keywords) of a text
 CONTAINERS = frozenset({
@@ -81,7 +81,6 @@ _API_NAMES = frozenset(
     [name for _, name in [*api.ALL, *api.NODE_NAME, *api.RCLCPP_NODE_NAME, *api.FACTORIES]]
     + [parameter_library.LISTENER])
 MAX_DEPTH = 16
-_FACTORIES = frozenset(name for _, name in api.FACTORIES)
 # builtin types a variable of static storage starts as zero of (C++'s zero-initialisation)
 _ZEROED: dict[TypeKind, object] = {
     TypeKind.BOOL: False, TypeKind.INT: 0, TypeKind.UINT: 0, TypeKind.LONG: 0,
@@ -799,13 +798,7 @@ class CallFinder:
             index = spec.out_arg  # nh.param<T>(name, default) returns the value
         if index >= len(args):
             return False, None
-        expr = args[index]
-        for read in (scope.boolean, scope.integer):
-            value = read(expr)
-            if value is not None:
-                return True, value
-        parts = scope.string(expr)
-        return True, (render(parts) if parts and _known(parts) else None)
+        return True, _literal(args[index], scope)
 
     def _field(self, field: Cursor) -> None:
         """A member whose mere construction is a primitive (a tf broadcaster)."""
@@ -851,12 +844,18 @@ def _kept_value(out: Cursor, scope: Scope) -> tuple[bool, object]:
             value, where = found
     if value is None:
         return False, None
-    for read in (where.boolean, where.integer):
-        known = read(value)
-        if known is not None:
-            return True, known
-    parts = where.string(value)
-    return True, (render(parts) if parts and _known(parts) else None)
+    return True, _literal(value, where)
+
+
+def _literal(expr: Cursor, scope: Scope) -> object:
+    """A default's value when it is a literal (a boolean, an integer, a known string),
+    else None."""
+    for read in (scope.boolean, scope.integer):
+        value = read(expr)
+        if value is not None:
+            return value
+    parts = scope.string(expr)
+    return render(parts) if parts and _known(parts) else None
 
 
 def _status_read(spec: api.RosFunction, site: Cursor, count: int) -> Key | None:
@@ -886,7 +885,7 @@ def _dependent_made(call: Cursor) -> tuple[api.RosFunction, Cursor] | None:
     children = list(call.get_children())
     head = children[0] if children else None
     if head is None or head.kind != CursorKind.DECL_REF_EXPR or (
-        _recovered_name(call) not in _FACTORIES
+        _recovered_name(call) not in FACTORY_NAMES
     ):
         return None
     refs = list(head.get_children())

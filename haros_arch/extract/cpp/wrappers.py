@@ -68,8 +68,8 @@ _ARGUMENTS = ("queue_arg", "latch_arg", "callback_arg", "qos_arg", "default_arg"
 _API_NAMES = frozenset(
     [*DEPENDENT, *(name for _, name in api.ALL), *(name for _, name in api.FACTORIES)])
 # the spellings of the functions a resolved call matches a row or a factory through
-_FACTORY_NAMES = frozenset([*(name for _, name in api.FACTORIES), "make_shared", "make_unique"])
-_ROW_NAMES = _API_NAMES | _FACTORY_NAMES
+FACTORY_NAMES = frozenset([*(name for _, name in api.FACTORIES), "make_shared", "make_unique"])
+_ROW_NAMES = _API_NAMES | FACTORY_NAMES
 # the names an unresolved call can match a row through, each written in its text
 _UNRESOLVED_NAMES = frozenset(name.encode() for name in _ROW_NAMES)
 _WORD = re.compile(rb"\w+")
@@ -368,7 +368,7 @@ class Wrappers:
         if any(k in keys for k in _targets(call)):
             return True
         target = call.referenced  # ``_constructed`` needs a factory (or an unresolved call)
-        return (target is None or target.spelling in _FACTORY_NAMES) and any(
+        return (target is None or target.spelling in FACTORY_NAMES) and any(
             k in keys for k in self._constructed(call, _arguments(call)))
 
     def _inner_rows(self, call: Cursor) -> Iterator[

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from ...model.source import CallKind
+from ...model.source import LIFECYCLE_EVENTS, LIFECYCLE_SERVICES, CallKind
 from .api import Arg, NodeName, PyFunction
 
 NODE_METHODS: dict[str, PyFunction] = {
@@ -94,15 +94,11 @@ PARAMETER_CLIENT = Arg(1, "remote_node_name")
 
 # rclpy's managed node (``rclpy.lifecycle.Node``, also exported as ``LifecycleNode``)
 # publishes its transitions and serves its state machine under its own name, as
-# rclcpp_lifecycle's does (``extract.cpp.api.IMPLICIT``)
+# rclcpp_lifecycle's does (``model.source.LIFECYCLE_SERVICES``)
 LIFECYCLE_MODULE = "rclpy.lifecycle"
 LIFECYCLE_CALLS: tuple[tuple[CallKind, str, str], ...] = (
-    ("publish", "~/transition_event", "lifecycle_msgs/msg/TransitionEvent"),
-    *(("server", f"~/{name}", f"lifecycle_msgs/srv/{kind}") for name, kind in (
-        ("change_state", "ChangeState"), ("get_state", "GetState"),
-        ("get_available_states", "GetAvailableStates"),
-        ("get_available_transitions", "GetAvailableTransitions"),
-        ("get_transition_graph", "GetAvailableTransitions"))),
+    ("publish", f"~/{LIFECYCLE_EVENTS[0]}", LIFECYCLE_EVENTS[1]),
+    *(("server", f"~/{name}", kind) for name, kind in LIFECYCLE_SERVICES),
 )
 
 # classes whose subclasses are nodes: (top module, last name)
