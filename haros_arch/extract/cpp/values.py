@@ -17,6 +17,8 @@ from typing import TYPE_CHECKING, TypeVar
 
 from clang.cindex import Cursor, CursorKind, TypeKind
 
+from .cursors import _Place
+
 if TYPE_CHECKING:
     from .call_sites import CallSites
 
@@ -501,6 +503,8 @@ _WHOLE_REGIONS = frozenset({CursorKind.CASE_STMT, CursorKind.DEFAULT_STMT,
 
 def key_of(decl: Cursor) -> tuple[str, int]:
     where = decl.location
+    if type(where) is _Place:
+        return where.key
     return (where.file.name if where.file else "", where.offset)
 
 
