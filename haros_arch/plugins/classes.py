@@ -260,9 +260,20 @@ def _defined(source: str, workspace: Files) -> set[str]:
     return set(_MEMBER.findall(text)) | functions
 
 
-def named_words(source: str, workspace: Files) -> set[str]:
+def named_words(source: str, workspace: Files) -> frozenset[str]:
     """The words of a source file and of the headers of its package it includes (its
-    own header declares the members whose types name helper classes)."""
+    own header declares the members whose types name helper classes); a
+    ``Workspace``'s read once per run."""
+    memo: dict[str, frozenset[str]] | None = getattr(workspace, "named_words", None)
+    found = memo.get(source) if memo is not None else None
+    if found is None:
+        found = frozenset(_named_words(source, workspace))
+        if memo is not None:
+            memo[source] = found
+    return found
+
+
+def _named_words(source: str, workspace: Files) -> set[str]:
     path = os.path.join(workspace.root, source)
     text, _ = read_text(path, workspace.location(path))
     words = set(_WORD.findall(text or ""))
