@@ -234,3 +234,41 @@ def test_an_executable_made_by_a_function_defined_outside_the_workspace(write_tr
     guessed = [d for d in found if d.code == "CMAKE_GUESSED_EXECUTABLE"]
     assert [(d.severity, d.location.line) for d in guessed] == [("info", 5)]
     assert "google_binary() is defined outside the workspace" in guessed[0].message
+
+
+def test_a_class_the_executable_defines_itself_names_no_library_file(write_tree):
+    """cartographer_ros' occupancy_grid_node_main.cc defines its own ``class Node`` and
+    links the package library, whose node.cc defines the SLAM ``Node``'s members: the
+    word ``Node`` gave the occupancy grid node the SLAM node's publishers (6 false
+    multiple-publishers). A class the executable's own source defines is its own; a
+    library class it only uses still brings its file."""
+    root = write_tree({
+        "src/carto/package.xml": package_xml("carto"),
+        "src/carto/CMakeLists.txt": """
+            project(carto)
+            add_library(carto STATIC src/node.cc src/submap.cc)
+            add_executable(grid src/grid_main.cc)
+            target_link_libraries(grid carto)
+            add_executable(slam src/slam_main.cc)
+            target_link_libraries(slam carto)
+            """,
+        "src/carto/src/node.cc": "#include \"node.h\"\nNode::Node() { Publish(); }\n",
+        "src/carto/src/submap.cc": "#include \"submap.h\"\nvoid Submap::Fetch() {}\n",
+        "src/carto/src/grid_main.cc": """
+            #include "submap.h"
+            namespace {
+            class Node {
+             public:
+              Node();
+            };
+            Node::Node() { Submap s; s.Fetch(); }
+            }
+            int main() { Node node; }
+            """,
+        "src/carto/src/slam_main.cc": "#include \"node.h\"\nint main() { Node node; }\n",
+    })
+    ws = scan([str(root / "src")], {})
+    nodes, _found = parse_package(ws.packages["carto"], ws)
+    assert sorted((n.executable, sorted(n.sources)) for n in nodes) == [
+        ("grid", ["carto/src/grid_main.cc", "carto/src/submap.cc"]),
+        ("slam", ["carto/src/node.cc", "carto/src/slam_main.cc"])]
