@@ -26,6 +26,7 @@ namespace carto {
 const char kLocal[] = "local_topic";
 char kChanged[] = "before";
 void rename(char * name) { name[0] = 'x'; }
+void log(const char * format, ...);
 void run(int i) {
   ros::NodeHandle nh;
   auto a = nh.advertise<std_msgs::String>(kSubmapListTopic, kLatestOnlyPublisherQueueSize);
@@ -34,6 +35,7 @@ void run(int i) {
   snprintf(topicname, sizeof(topicname), "analog_output%02d", i);
   auto c = nh.advertise<std_msgs::String>(topicname, 1);
   char kept[] = "kept_name";
+  log("advertising %s", kept);  // a printf-like variadic reads it
   auto d = nh.advertise<std_msgs::String>(kept, std::strlen(kept));
   rename(kChanged);
   auto e = nh.advertise<std_msgs::String>(kChanged, 1);

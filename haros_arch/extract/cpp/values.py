@@ -188,7 +188,8 @@ class Scope:
                 self.passed[key_of(arg.referenced)] = (call, index)
                 if _may_write(call, index):
                     self._write_ref(arg, None)
-            elif _is_array(strip(arg)) and _may_write(call, index, decayed=True):
+            elif _is_array(strip(arg)) and not _const_array(strip(arg).referenced) and (
+                    _may_write(call, index, decayed=True)):
                 # ``snprintf(topic, size, "analog_output%02d", i)`` fills the array
                 # ``char topic[] = "analog_output00"`` (phidgets): not its initializer
                 self._write_ref(strip(arg), None)
@@ -485,7 +486,7 @@ def _may_write(call: Cursor, index: int, decayed: bool = False) -> bool:
         return True
     types = list(ftype.argument_types())
     if index >= len(types):
-        return True  # a C variadic
+        return not decayed  # a C variadic: a printf family's arguments are read
     ptype = types[index]
     if ptype.kind == TypeKind.LVALUEREFERENCE:
         return not ptype.get_pointee().is_const_qualified()
