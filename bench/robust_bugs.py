@@ -22,7 +22,9 @@ process each, ``--jobs 1``). Per bug it prints:
 - ``undecided``: only the rule's ``-undecided`` info points at it (the tool says it
   cannot decide; the reason is in that info's message);
 - ``missed``: neither (also a bug in code no launch file starts: ``not_launched``);
-- ``skipped``: a mirror or a commit is not on disk (fetch github:owner/name first).
+- ``skipped``: a mirror or a commit is not on disk (fetch github:owner/name first);
+- ``setup error``: check reports the project file itself (a launch file it names is
+  not there): the data file is wrong, not the tool.
 
 Recall is found / (bugs in scope that ran). Mirrors are the bare repositories the
 ``fetch`` tool brings (``DIR/owner+name/repo``). Nothing goes to the network.
@@ -69,7 +71,10 @@ def materialize(gitdir: Path, rev: str, dest: Path) -> None:
                           check=False)
     if done.returncode == 0:
         with tarfile.open(fileobj=BytesIO(done.stdout)) as archive:
-            archive.extractall(dest, filter="data")
+            if hasattr(tarfile, "data_filter"):  # Python 3.10.12+, 3.11.4+
+                archive.extractall(dest, filter="data")
+            else:
+                archive.extractall(dest)  # noqa: S202 (a tree of our own mirror)
         return
     sys.path.insert(0, str(HERE))
     from diff_real import _copy_tree  # the same blob-by-blob copy the diff bench uses
@@ -143,9 +148,20 @@ def pointing(findings: list[dict[str, Any]], expect: dict[str, Any], suffix: str
     return out
 
 
+def setup_error(findings: list[dict[str, Any]]) -> str | None:
+    """What check says is wrong with the project file itself (a launch file not found)."""
+    for finding in findings:
+        if str((finding.get("location") or {}).get("file", "")).endswith("project.yaml"):
+            return finding["message"]
+    return None
+
+
 def verdict(bug: dict[str, Any], trees: dict[str, Path], verbose: bool) -> str:
     buggy = check(trees["buggy"])
     fixed = check(trees["fixed"])
+    wrong = setup_error(buggy) or setup_error(fixed)
+    if wrong:
+        return f"setup error ({wrong})"
     found = pointing(buggy, bug["expect"])
     if verbose:
         for finding in found or pointing(buggy, bug["expect"], "-undecided"):

@@ -1,0 +1,96 @@
+"""Causes of architecture bugs of the ROBUST dataset that check missed, each rebuilt
+small (bench/robust_bugs.py measures the real ones): a rospy publisher without a queue
+size (kobuki dd40270), and a launch file that pins a node's names outside the namespace
+it is included in (turtlebot 9ffffca, openni_launch a482f82)."""
+
+from __future__ import annotations
+
+from conftest import package_xml
+
+from haros_arch.api import analyse_path
+from haros_arch.extract.python import extract_python
+from haros_arch.pipeline import Options
+from haros_arch.query.command import check
+from haros_arch.workspace import scan
+
+OPTIONS = Options(cache_dir=None, jobs=1)
+
+PUBLISHERS = """\
+import rospy
+from std_msgs.msg import String
+
+def main(rate, extra):
+    rospy.init_node('odometer')
+    a = rospy.Publisher('pose2d', String)
+    b = rospy.Publisher('yaw', String, queue_size=None)
+    c = rospy.Publisher('heading', String, queue_size=5)
+    d = rospy.Publisher('speed', String, queue_size=rate)
+    e = rospy.Publisher('spread', String, **extra)
+    f = rospy.Publisher('positional', String, None, False, False, None, 3)
+    g = rospy.Subscriber('odom', String, None)
+"""
+
+
+def test_a_rospy_call_without_queue_size_is_marked(write_tree) -> None:
+    folder = write_tree({"pkg/package.xml": package_xml("pkg"),
+                         "pkg/scripts/odometer.py": PUBLISHERS})
+    result = extract_python([str(folder / "pkg" / "scripts" / "odometer.py")],
+                            scan([str(folder)]), package="pkg")
+    assert [(c.kind, c.name, c.queue_size, c.queue_size_missing) for c in result.calls
+            if c.kind in ("publish", "subscribe")] == [
+        ("publish", "pose2d", None, True),
+        ("publish", "yaw", None, True),            # None written: rospy's default too
+        ("publish", "heading", 5, False),
+        ("publish", "speed", None, False),         # given, its value unknown
+        ("publish", "spread", None, False),        # may come through **extra
+        ("publish", "positional", 3, False),
+        ("subscribe", "odom", None, True),
+    ]
+
+
+LAUNCH = """\
+<launch>
+  <group ns="robot1">
+    <node pkg="base" type="odometer.py" name="odometer"/>
+    <node pkg="nodelet" type="nodelet" name="smoother"
+          args="load base/Smoother /base_manager">
+      <remap from="smoother/out" to="/mux/input/teleop"/>
+      <remap from="smoother/odometry" to="odom"/>
+      <remap from="smoother/clock" to="/clock"/>
+    </node>
+    <node pkg="nodelet" type="nodelet" name="shaper"
+          args="load base/Smoother base_manager">
+      <remap from="/joint_states" to="/robot1/joint_states"/>
+    </node>
+  </group>
+</launch>
+"""
+
+
+def test_check_reports_both_causes_on_a_launched_workspace(write_tree) -> None:
+    folder = write_tree({
+        "src/base/package.xml": package_xml("base"),
+        "src/base/CMakeLists.txt": "cmake_minimum_required(VERSION 3.0)\nproject(base)\n"
+                                   "find_package(catkin REQUIRED)\ncatkin_package()\n"
+                                   "catkin_install_python(PROGRAMS scripts/odometer.py\n"
+                                   "  DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})\n",
+        "src/base/scripts/odometer.py": PUBLISHERS,
+        "src/base/launch/robot.launch": LAUNCH,
+        "project.yaml": "project: p\nworkspace: src\nconfigurations:\n"
+                        "  robot:\n    launch: [base/launch/robot.launch]\n",
+    })
+    analysis = analyse_path(str(folder / "project.yaml"), OPTIONS)
+    assert analysis.model is not None
+    found = check(analysis.model, analysis.project).findings
+    missing = sorted(f.message for f in found if f.rule == "queue-size-missing")
+    assert missing == [
+        "/robot1/odometer: the rospy publisher of /robot1/pose2d has no queue_size, "
+        "so it publishes synchronously",
+        "/robot1/odometer: the rospy publisher of /robot1/yaw has no queue_size, "
+        "so it publishes synchronously"]
+    pinned = [f for f in found if f.rule == "launch-global-names"]
+    assert [f.message for f in pinned] == [
+        "/robot1/smoother is launched with global names its namespace cannot move: "
+        "remaps smoother/out:=/mux/input/teleop; nodelet manager /base_manager"]
+    assert (pinned[0].location.file, pinned[0].location.line) == (
+        "base/launch/robot.launch", 5)
