@@ -74,7 +74,7 @@ def materialize(gitdir: Path, rev: str, dest: Path) -> None:
             if hasattr(tarfile, "data_filter"):  # Python 3.10.12+, 3.11.4+
                 archive.extractall(dest, filter="data")
             else:
-                archive.extractall(dest)  # noqa: S202 (a tree of our own mirror)
+                archive.extractall(dest)  # a tree of our own mirror
         return
     sys.path.insert(0, str(HERE))
     from diff_real import _copy_tree  # the same blob-by-blob copy the diff bench uses
