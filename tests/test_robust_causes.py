@@ -90,7 +90,7 @@ def test_check_reports_both_causes_on_a_launched_workspace(write_tree) -> None:
         "so it publishes synchronously"]
     pinned = [f for f in found if f.rule == "launch-global-names"]
     assert [f.message for f in pinned] == [
-        "/robot1/smoother is launched with global names its namespace cannot move: "
-        "remaps smoother/out:=/mux/input/teleop; nodelet manager /base_manager"]
+        "/robot1/smoother is launched with global names its namespace cannot move "
+        "(remaps: smoother/out:=/mux/input/teleop; nodelet manager: /base_manager)"]
     assert (pinned[0].location.file, pinned[0].location.line) == (
         "base/launch/robot.launch", 5)
