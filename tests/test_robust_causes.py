@@ -1,7 +1,8 @@
 """Causes of architecture bugs of the ROBUST dataset that check missed, each rebuilt
 small (bench/robust_bugs.py measures the real ones): a rospy publisher without a queue
-size (kobuki dd40270), and a launch file that pins a node's names outside the namespace
-it is included in (turtlebot 9ffffca, openni_launch a482f82)."""
+size in a Python 2 script whose print statements go on over lines (kobuki dd40270), and
+a launch file that pins a node's names outside the namespace it is included in
+(turtlebot 9ffffca, openni_launch a482f82)."""
 
 from __future__ import annotations
 
@@ -94,3 +95,31 @@ def test_check_reports_both_causes_on_a_launched_workspace(write_tree) -> None:
         "(remaps: smoother/out:=/mux/input/teleop; nodelet manager: /base_manager)"]
     assert (pinned[0].location.file, pinned[0].location.line) == (
         "base/launch/robot.launch", 5)
+
+
+PYTHON2 = """\
+import rospy
+from std_msgs.msg import String
+
+def report(x, y):
+    print "pose: x: %.2f" % x \\
+        + ", y: %.2f" % y
+    print "both: %s" % (x,
+                        y)  # a comment after the statement
+    print >>log, "done",
+
+rospy.init_node('odometer')
+pub = rospy.Publisher('pose2d', String)
+"""
+
+
+def test_a_python2_statement_continued_over_lines_costs_no_call(write_tree) -> None:
+    """kobuki's getOdom2D.py: a print statement continued by a backslash made the
+    repaired file a syntax error, and the node lost every call."""
+    folder = write_tree({"pkg/package.xml": package_xml("pkg"),
+                         "pkg/scripts/odometer.py": PYTHON2})
+    result = extract_python([str(folder / "pkg" / "scripts" / "odometer.py")],
+                            scan([str(folder)]), package="pkg")
+    assert [d.code for d in result.diagnostics] == ["PY_PYTHON2"]
+    assert [(c.kind, c.name, c.location.line, c.queue_size_missing)
+            for c in result.calls if c.kind == "publish"] == [("publish", "pose2d", 12, True)]

@@ -294,9 +294,18 @@ def _repair_python2(text: str) -> str:
     Only a repair for reading ROS calls: the result is never run.
     """
     lines = text.split("\n")
+    depth = -1  # brackets open in a print / exec statement that goes on; -1: none
     for i, line in enumerate(lines):
-        fixed = _PRINT.sub(lambda m: f"{m.group(1)}print({_strip_chevron(m.group(2))})", line)
-        fixed = _EXEC.sub(lambda m: f"{m.group(1)}exec({m.group(2)})", fixed)
+        fixed = line
+        if depth >= 0:
+            fixed, depth = _close_call(fixed, depth)
+        else:
+            for pattern, word in ((_PRINT, "print"), (_EXEC, "exec")):
+                found = pattern.match(fixed)
+                if found is not None:
+                    rest = _strip_chevron(found.group(2)) if word == "print" else found.group(2)
+                    fixed, depth = _close_call(f"{found.group(1)}{word}({rest}", -1)
+                    break
         fixed = _EXCEPT.sub(lambda m: f"{m.group(1)} as {m.group(2)}:", fixed)
         fixed = _RAISE.sub(lambda m: f"{m.group(1)}({m.group(2)})", fixed)
         fixed = _BACKTICK.sub(lambda m: f"repr({m.group(1)})", fixed)
@@ -312,4 +321,43 @@ def _strip_chevron(rest: str) -> str:
     rest = rest.strip()
     if rest.startswith(">>"):
         rest = rest[2:].split(",", 1)[1] if "," in rest else ""
-    return rest.rstrip(",")
+    return rest  # a trailing comma goes where the statement ends (_close_call)
+
+
+def _close_call(line: str, depth: int) -> tuple[str, int]:
+    """A line of a print / exec statement made a call: ``depth`` is the brackets open
+    before it, the call's own ``(`` not counted (-1 on the first line, which holds that
+    ``(``). The line with the call's ``)`` where the statement ends (before a comment,
+    so a statement continued by a backslash or an open bracket keeps its lines), and the
+    brackets still open after it, -1 once the statement has ended."""
+    opened, comment, _ = _scan(line)
+    depth += opened
+    code = line[:comment].rstrip()
+    if depth > 0 or code.endswith("\\"):
+        return line, depth
+    return code.rstrip(",") + ")" + line[len(code):], -1
+
+
+def _scan(code: str) -> tuple[int, int, bool]:
+    """Brackets opened minus closed in ``code`` outside strings, where its comment starts
+    (its length when none) and whether it ends inside a string (a quote left open)."""
+    depth, quote, i = 0, "", 0
+    while i < len(code):
+        char = code[i]
+        if quote:
+            if char == "\\":
+                i += 1
+            elif code.startswith(quote, i):
+                i += len(quote) - 1
+                quote = ""
+        elif char == "#":
+            return depth, i, False
+        elif char in "\"'":
+            quote = char * 3 if code.startswith(char * 3, i) else char
+            i += len(quote) - 1
+        elif char in "([{":
+            depth += 1
+        elif char in ")]}":
+            depth -= 1
+        i += 1
+    return depth, len(code), bool(quote)
