@@ -107,6 +107,10 @@ def report(x, y):
     print "both: %s" % (x,
                         y)  # a comment after the statement
     print >>log, "done",
+    if x > y: print "x"
+    print '''usage:
+  odometer  # not a comment
+'''
 
 rospy.init_node('odometer')
 pub = rospy.Publisher('pose2d', String)
@@ -115,11 +119,13 @@ pub = rospy.Publisher('pose2d', String)
 
 def test_a_python2_statement_continued_over_lines_costs_no_call(write_tree) -> None:
     """kobuki's getOdom2D.py: a print statement continued by a backslash made the
-    repaired file a syntax error, and the node lost every call."""
+    repaired file a syntax error, and the node lost every call; so did a print after
+    an if's colon and one of a string over several lines (kobuki's DockDriveActionClient
+    and turtlebot_config)."""
     folder = write_tree({"pkg/package.xml": package_xml("pkg"),
                          "pkg/scripts/odometer.py": PYTHON2})
     result = extract_python([str(folder / "pkg" / "scripts" / "odometer.py")],
                             scan([str(folder)]), package="pkg")
     assert [d.code for d in result.diagnostics] == ["PY_PYTHON2"]
     assert [(c.kind, c.name, c.location.line, c.queue_size_missing)
-            for c in result.calls if c.kind == "publish"] == [("publish", "pose2d", 12, True)]
+            for c in result.calls if c.kind == "publish"] == [("publish", "pose2d", 16, True)]
