@@ -20,7 +20,9 @@ process each, ``--jobs 1``). Per bug it prints:
 - ``found``: a finding of the expected rules whose location and text point at the bug,
   and ``gone after fix`` when the fixed tree no longer has it (else ``stays after fix``);
 - ``undecided``: only the rule's ``-undecided`` info points at it (the tool says it
-  cannot decide; the reason is in that info's message);
+  cannot decide; the reason is in that info's message). That info names its first case
+  only: a bug's ``expect.unseen`` query (``haros-arch query``) tells whether the bug's
+  case is among the others (no finding, a node of unknown interface in the way);
 - ``missed``: neither (also a bug in code no launch file starts: ``not_launched``);
 - ``skipped``: a mirror or a commit is not on disk (fetch github:owner/name first);
 - ``setup error``: check reports the project file itself (a launch file it names is
@@ -34,6 +36,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import re
 import subprocess
 import sys
 import tarfile
@@ -171,7 +174,21 @@ def verdict(bug: dict[str, Any], trees: dict[str, Path], verbose: bool) -> str:
         return f"found, {after}"
     if pointing(buggy, bug["expect"], "-undecided"):
         return "undecided"
+    unseen = bug["expect"].get("unseen")
+    if unseen and any(pointing(buggy, {**bug["expect"], "file": [], "text": []},
+                               "-undecided")) and matches(trees["buggy"], unseen):
+        # the rule's undecided info names its first case only: the query says whether
+        # this one is among them (no finding, a node of unknown interface in the way)
+        return "undecided"
     return "missed"
+
+
+def matches(project: Path, text: str) -> bool:
+    """Whether ``haros-arch query`` finds anything for ``text`` on the project."""
+    done = subprocess.run([sys.executable, "-m", "haros_arch", "query", str(project), text],
+                          capture_output=True, text=True, cwd=project.parent, check=False)
+    counted = re.search(r"^(\d+) match\(es\)\s*\Z", done.stdout, re.MULTILINE)
+    return done.returncode == 0 and counted is not None and int(counted.group(1)) > 0
 
 
 def main(argv: list[str]) -> int:
