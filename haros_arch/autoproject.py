@@ -237,7 +237,16 @@ def choose(path: str, launch: Iterable[str] = (), args: Mapping[str, str] | None
             raise ProjectError(missing[0], 0, 0, "launch file not found")
         roots = chosen_files
     else:
-        files = find_launch_files(workspace)
+        from .launch.dialect import foreign_to_package
+
+        files, skipped = [], []
+        for file in find_launch_files(workspace):
+            why = foreign_to_package(file, workspace)
+            if why is None:
+                files.append(file)
+            else:  # a leftover of a port: no configuration anyone runs
+                skipped.append(f"{_entry(file, workspace)} skipped: {why} (name it with "
+                               "--launch to analyse it anyway)")
         if len(files) >= MAX_LAUNCH_FILES:
             choice.notes.append(f"more than {MAX_LAUNCH_FILES} launch files: only the "
                                 "first are considered (choose with --launch)")
@@ -246,6 +255,7 @@ def choose(path: str, launch: Iterable[str] = (), args: Mapping[str, str] | None
                             f"{len(files)} launch files, {len(included)} included by "
                             f"others, {len(roots)} configurations (one per launch file "
                             "no other includes, arguments at their defaults)")
+        choice.notes.extend(skipped)
     taken: set[str] = set()
     for file in roots:
         spec = ConfigurationSpec(_config_name(file, workspace, taken),

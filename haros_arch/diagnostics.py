@@ -75,6 +75,14 @@ CATALOGUE: dict[str, Entry] = {
     "CMAKE_SOURCE_MISSING": Entry(
         "warning", "source file {path} of target {target} does not exist",
         "A build target names a source file that is not in the package."),
+    "CMAKE_GUESSED_EXECUTABLE": Entry(
+        "info", "{command}() is defined outside the workspace; {target} is taken as an "
+        "executable built from {sources}, one of which defines main()",
+        "A command the workspace does not define (a function of a package outside it, "
+        "such as cartographer's google_binary) names a new target and C/C++ sources of "
+        "the package, one of which defines main(): that executable is taken as built, "
+        "linking the package's libraries its code names, so launch files that run it "
+        "find it."),
     "CMAKE_LIMIT": Entry(
         "warning", "CMake evaluation bounded: {detail}",
         "The CMake interpreter bounds its work (commands evaluated, loop iterations, "

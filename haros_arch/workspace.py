@@ -41,6 +41,10 @@ class Workspace:
     _index: dict[str, Package] = field(default_factory=dict, repr=False)
     _index_key: tuple[int, int] = field(default=(0, -1), repr=False)
     _relpaths: dict[tuple[str, str], str] = field(default_factory=dict, repr=False)
+    # source file -> the words it and the package headers it includes hold
+    # (``plugins.classes.named_words``: each executable linking a library asks them
+    # again), read once per run
+    named_words: dict[str, frozenset[str]] = field(default_factory=dict, repr=False)
 
     def relpath(self, path: str) -> str:
         """A path relative to the workspace root when inside it, else absolute (asked
@@ -63,6 +67,7 @@ class Workspace:
     def __getstate__(self) -> dict[str, object]:
         state = dict(self.__dict__)
         state["_relpaths"] = {}  # not sent to worker processes
+        state["named_words"] = {}
         return state
 
     def package_of(self, path: str) -> Package | None:

@@ -204,3 +204,30 @@ def test_a_package_folder_with_its_sources_in_src(tmp_path: Path) -> None:
     choice = choose(str(package), environment={})
     assert [c.name for c in choice.project.configurations] == ["pointcloud_to_laserscan/p2l"]
     assert choice.project.workspace == [str(package)]
+
+
+def test_a_launch_file_its_package_cannot_run_is_no_configuration(tmp_path: Path) -> None:
+    """twist_mux (ament) still holds its ROS 1 ``twist_mux.launch``: chosen as a
+    configuration, the ROS 2 ``ros__parameters`` YAML it loads with ``<rosparam>`` gave
+    29 "set but never read" parameters. It is left out, with a note; --launch still
+    analyses it."""
+    pkg = tmp_path / "ws" / "src" / "mux"
+    write(pkg / "package.xml", ROS2_PKG.format(name="mux"))
+    write(pkg / "CMakeLists.txt", "project(mux)\nadd_executable(mux src/mux.cpp)\n")
+    write(pkg / "launch" / "mux.launch", """\
+        <launch><node pkg="mux" type="mux" name="mux">
+          <rosparam file="$(find mux)/config/topics.yaml" command="load"/>
+        </node></launch>""")
+    write(pkg / "launch" / "mux_launch.py", """\
+        from launch import LaunchDescription
+        from launch_ros.actions import Node
+        def generate_launch_description():
+            return LaunchDescription([Node(package='mux', executable='mux', name='mux')])
+        """)
+    choice = choose(str(tmp_path / "ws"))
+    assert [spec.launch for spec in choice.project.configurations] == [
+        ["mux/launch/mux_launch.py"]]
+    assert any(note.startswith("mux/launch/mux.launch skipped: roslaunch (ROS 1) XML in "
+                               "mux, an ament (ROS 2) package") for note in choice.notes)
+    named = choose(str(tmp_path / "ws"), launch=[str(pkg / "launch" / "mux.launch")])
+    assert [spec.launch for spec in named.project.configurations] == [["mux/launch/mux.launch"]]

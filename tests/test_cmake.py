@@ -190,3 +190,85 @@ def test_ament_auto_targets_link_the_package_s_auto_libraries(write_tree):
         ("host", ["pub/src/host.cpp", "pub/src/monitor.cpp", "pub/src/pub.cpp"]),
         ("pub_node", ["pub/src/pub.cpp", "pub/src/pub_node.cpp"]),
         ("reader", ["pub/src/reader.cpp"])]
+
+
+def test_an_executable_made_by_a_function_defined_outside_the_workspace(write_tree):
+    """cartographer_ros builds every node with ``google_binary(NAME SRCS main.cc)``, a
+    function of the cartographer package (``include(${CARTOGRAPHER_CMAKE_DIR}/
+    functions.cmake)``, not in the workspace): the launch files' cartographer_node was
+    "not in the workspace". A command nobody defines that names a new target and sources
+    of the package, one of which defines main(), is that executable, linking the
+    package's libraries (of which it runs what its code names). Without main() (a
+    library), a test wrapper, or a known or workspace-defined command: nothing guessed."""
+    root = write_tree({
+        "src/carto/package.xml": package_xml("carto"),
+        "src/carto/CMakeLists.txt": """
+            project(carto)
+            find_package(cartographer REQUIRED)
+            include("${CARTOGRAPHER_CMAKE_DIR}/functions.cmake")
+            add_library(${PROJECT_NAME} STATIC src/node.cc src/other.cc)
+            google_binary(carto_node SRCS src/node_main.cc)
+            google_library(helpers SRCS src/helpers.cc)
+            google_test(node_test SRCS src/node_test.cc)
+            ament_add_gmock(node_gmock src/node_test.cc)
+            ament_add_google_benchmark(bench src/node_test.cc)
+            google_binary(in_test_folder SRCS test/main.cc)
+            macro(local_thing name)
+            endmacro()
+            local_thing(local src/local_main.cc)
+            install(TARGETS carto_node RUNTIME DESTINATION bin)
+            """,
+        "src/carto/src/node.cc": "#include \"node.h\"\nvoid Node::Start() {}\n",
+        "src/carto/src/other.cc": "#include \"other.h\"\nvoid Other::Run() {}\n",
+        "src/carto/src/node_main.cc": "#include \"node.h\"\n"
+                                      "int main(int argc, char** argv) { Node n; n.Start(); }\n",
+        "src/carto/src/helpers.cc": "int helper() { return 1; }\n",
+        "src/carto/src/node_test.cc": "int main() { return 0; }\n",
+        "src/carto/src/local_main.cc": "int main() { return 0; }\n",
+        "src/carto/test/main.cc": "int main() { return 0; }\n",
+    })
+    ws = scan([str(root / "src")], {})
+    nodes, found = parse_package(ws.packages["carto"], ws)
+    assert [(n.executable, sorted(n.sources)) for n in nodes] == [
+        ("carto_node", ["carto/src/node.cc", "carto/src/node_main.cc"])]
+    guessed = [d for d in found if d.code == "CMAKE_GUESSED_EXECUTABLE"]
+    assert [(d.severity, d.location.line) for d in guessed] == [("info", 5)]
+    assert "google_binary() is defined outside the workspace" in guessed[0].message
+
+
+def test_a_class_the_executable_defines_itself_names_no_library_file(write_tree):
+    """cartographer_ros' occupancy_grid_node_main.cc defines its own ``class Node`` and
+    links the package library, whose node.cc defines the SLAM ``Node``'s members: the
+    word ``Node`` gave the occupancy grid node the SLAM node's publishers (6 false
+    multiple-publishers). A class the executable's own source defines is its own; a
+    library class it only uses still brings its file."""
+    root = write_tree({
+        "src/carto/package.xml": package_xml("carto"),
+        "src/carto/CMakeLists.txt": """
+            project(carto)
+            add_library(carto STATIC src/node.cc src/submap.cc)
+            add_executable(grid src/grid_main.cc)
+            target_link_libraries(grid carto)
+            add_executable(slam src/slam_main.cc)
+            target_link_libraries(slam carto)
+            """,
+        "src/carto/src/node.cc": "#include \"node.h\"\nNode::Node() { Publish(); }\n",
+        "src/carto/src/submap.cc": "#include \"submap.h\"\nvoid Submap::Fetch() {}\n",
+        "src/carto/src/grid_main.cc": """
+            #include "submap.h"
+            namespace {
+            class Node {
+             public:
+              Node();
+            };
+            Node::Node() { Submap s; s.Fetch(); }
+            }
+            int main() { Node node; }
+            """,
+        "src/carto/src/slam_main.cc": "#include \"node.h\"\nint main() { Node node; }\n",
+    })
+    ws = scan([str(root / "src")], {})
+    nodes, _found = parse_package(ws.packages["carto"], ws)
+    assert sorted((n.executable, sorted(n.sources)) for n in nodes) == [
+        ("grid", ["carto/src/grid_main.cc", "carto/src/submap.cc"]),
+        ("slam", ["carto/src/node.cc", "carto/src/slam_main.cc"])]

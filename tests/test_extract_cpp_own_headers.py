@@ -148,3 +148,40 @@ def test_headers_of_a_library_folder_of_another_package_are_found(write_tree) ->
     assert [(c.kind, c.name, c.default) for c in result.calls] == [("read", "allow", True)]
     assert not [d for d in result.diagnostics
                 if d.code in ("CPP_INCLUDE_MISSING", "CPP_PARSE_ERROR")]
+
+
+def test_headers_beside_the_sources_included_from_the_package_root(write_tree) -> None:
+    """cartographer_ros keeps ``node.h`` beside ``node.cc`` in ``cartographer_ros/`` and
+    includes it as ``"cartographer_ros/node.h"`` from the package root (its CMakeLists'
+    ``${PROJECT_SOURCE_DIR}``): the header was not found, ``Node`` undeclared and the
+    node's 13 advertise calls missed."""
+    root = write_tree({
+        "carto/package.xml": package_xml("carto"),
+        "carto/carto/constants.h": 'constexpr int kQueue = 1;\n',
+        "carto/carto/node.h": """
+            #include <ros/ros.h>
+            #include <std_msgs/String.h>
+            #include "carto/constants.h"
+            namespace carto {
+            class Node {
+             public:
+              Node();
+             private:
+              ros::NodeHandle node_handle_;
+              ros::Publisher pub_;
+            };
+            }
+            """,
+        "carto/carto/node.cc": """
+            #include "carto/node.h"
+            namespace carto {
+            Node::Node() {
+              pub_ = node_handle_.advertise<std_msgs::String>("submap_list", kQueue);
+            }
+            }
+            """,
+    })
+    source = root / "carto" / "carto" / "node.cc"
+    result = extract_cpp([str(source)], scan([str(root)]), cache_dir=None)
+    assert [(c.kind, c.name, c.queue_size) for c in result.calls] == [
+        ("publish", "submap_list", 1)]

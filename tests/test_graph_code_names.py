@@ -155,3 +155,38 @@ def test_a_parameter_files_section_for_the_node_applies_once_its_code_names_it(w
     # launch file's later {'late': 3} replaces the file's late
     assert given == {"/talker/shared": 1, "/talker/rate": 7.0, "/talker/wild": True,
                      "/talker/late": 3}
+
+
+UNNAMED_FILE_LAUNCH = """
+    import os
+    from launch import LaunchDescription
+    from launch_ros.actions import Node
+
+    def generate_launch_description():
+        here = os.path.dirname(__file__)
+        return LaunchDescription([
+            Node(package='talk', executable='{executable}',
+                 parameters=[os.path.join(here, 'talk.yaml')]),
+        ])
+    """
+
+
+def test_a_parameter_file_of_an_unnamed_node_its_code_names_is_no_warning(write_tree):
+    """TurtleBot 4 (``robot.launch.py:62``), joy_teleop, twist_mux: a Node without
+    ``name=`` given a file with a section for its node warned "applied to /?, whose name
+    is not known here" although the code names it and the section is applied. The
+    warning stays for a node whose name is only guessed from its executable."""
+    root = workspace(write_tree, UNNAMED_FILE_LAUNCH.format(executable="talker"))
+    (root / "src/talk/launch/talk.yaml").write_text(
+        "talker:\n  ros__parameters:\n    rate: 7.0\n")
+    config = build(root)
+    rate = config.parameter("/talker/rate")
+    assert rate is not None and rate.set_by_launch and rate.value == 7.0
+    assert [d for d in config.diagnostics if d.code == "LAUNCH_PARAM_FILE"] == []
+    root = workspace(write_tree, UNNAMED_FILE_LAUNCH.format(executable="listener"))
+    (root / "src/talk/launch/talk.yaml").write_text(
+        "talker:\n  ros__parameters:\n    rate: 7.0\n")
+    config = build(root)
+    warned = [d for d in config.diagnostics if d.code == "LAUNCH_PARAM_FILE"]
+    assert [(d.severity, d.location.line) for d in warned] == [("warning", 8)]
+    assert "/?, whose name is not known here" in warned[0].message

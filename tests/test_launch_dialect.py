@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from conftest import package_xml
 
-from haros_arch.launch.dialect import ros_version
+from haros_arch.launch.dialect import foreign_to_package, ros_version
 from haros_arch.workspace import scan
 
 NEUTRAL = '<launch><arg name="a" default="1"/><include file="x.xml"/></launch>'
@@ -48,3 +48,37 @@ def test_package_decides_a_file_that_could_be_either(write_tree):
     assert ros_version(str(root / "src/loose/x.launch.xml"), ws) == 2  # name, at last
     assert ros_version("missing.launch.xml", ws) == 2 and ros_version("m.launch", ws) == 1
     assert ros_version("x.launch.py") == 2 and ros_version("x.launch.yaml") == 2
+
+
+def test_a_file_its_own_package_cannot_run(write_tree):
+    """A roslaunch file left in a package ported to ament (twist_mux's twist_mux.launch:
+    ``<node type=>`` and ``<rosparam>`` loading a ``ros__parameters`` YAML) is foreign to
+    it; the same file in a catkin package, a ROS 2 file in an ament package, a file that
+    could be either and a package that builds for both ROS versions are not."""
+    ros1 = ('<launch><node pkg="p" type="t" name="n">'
+            '<rosparam file="$(find p)/c.yaml" command="load"/></node></launch>')
+    ros2 = '<launch><node pkg="p" exec="t" name="n"/></launch>'
+    dual = catkin_xml("dual").replace(
+        "<buildtool_depend>catkin</buildtool_depend>",
+        '<buildtool_depend condition="$ROS_VERSION == 1">catkin</buildtool_depend>'
+        '<buildtool_depend condition="$ROS_VERSION == 2">ament_cmake</buildtool_depend>')
+    root = write_tree({
+        "src/mux/package.xml": package_xml("mux", "ament_cmake"),
+        "src/mux/launch/old.launch": ros1,
+        "src/mux/launch/new.launch.xml": ros2,
+        "src/mux/launch/either.launch": NEUTRAL,
+        "src/old/package.xml": catkin_xml("old"),
+        "src/old/launch/old.launch": ros1,
+        "src/old/launch/new.launch.xml": ros2,
+        "src/dual/package.xml": dual,
+        "src/dual/launch/old.launch": ros1,
+    })
+    ws = scan([str(root / "src")])
+    why = foreign_to_package(str(root / "src/mux/launch/old.launch"), ws)
+    assert why == ("roslaunch (ROS 1) XML in mux, an ament (ROS 2) package: ros2 launch "
+                   "cannot run it")
+    assert foreign_to_package(str(root / "src/old/launch/new.launch.xml"), ws) == (
+        "ROS 2 launch XML in old, a catkin (ROS 1) package: roslaunch cannot run it")
+    for fine in ("mux/launch/new.launch.xml", "mux/launch/either.launch",
+                 "old/launch/old.launch", "dual/launch/old.launch"):
+        assert foreign_to_package(str(root / "src" / fine), ws) is None, fine

@@ -397,3 +397,36 @@ def generate_launch_description():
     assert params["/unknown/sub"] is None  # a substitution's text is not ours to print
     assert [(d.code, d.message) for d in model.diagnostics] == [
         ("LAUNCH_UNSUPPORTED", "str() of values not known statically")]
+
+
+def test_a_new_launch_context_performs_what_needs_no_configuration(write_tree):
+    """turtlebot4's bringup makes ``lc = LaunchContext()`` and includes its diagnostics
+    only if ``EnvironmentVariable('TURTLEBOT4_DIAGNOSTICS', default_value='1')
+    .perform(lc) == '1'``: the call and the test were unsupported, the included nodes
+    conditional on the test. A new context has the configuration's environment and no
+    launch configurations (a LaunchConfiguration is its default)."""
+    body = """
+from launch import LaunchContext
+from launch.substitutions import EnvironmentVariable
+
+def generate_launch_description():
+    lc = LaunchContext()
+    ld = LaunchDescription([DeclareLaunchArgument('robot', default_value='r2')])
+    if EnvironmentVariable('DIAGNOSTICS', default_value='1').perform(lc) == '1':
+        ld.add_action(Node(package='p', executable='e', name='diagnostics'))
+    if EnvironmentVariable('MODEL').perform(lc) == 'lite':
+        ld.add_action(Node(package='p', executable='e', name='lite'))
+    name = LaunchConfiguration('robot', default='r1').perform(lc)
+    ld.add_action(Node(package='p', executable='e', name=name))
+    return ld
+"""
+    model, _ = run(write_tree, body, env={"MODEL": "full"})
+    assert [(n.name, n.conditions) for n in model.nodes] == [
+        ("/diagnostics", ()), ("/r1", ())]
+    assert "LAUNCH_PY_UNSUPPORTED" not in codes(model)
+    assert "LAUNCH_UNSUPPORTED" not in codes(model)
+    model, _ = run(write_tree, body, env={"DIAGNOSTICS": "0", "MODEL": "lite"})
+    assert [n.name for n in model.nodes] == ["/lite", "/r1"]
+    model, _ = run(write_tree, body)  # MODEL unset, no default: unknown, the node may run
+    assert [(n.name, bool(n.conditions)) for n in model.nodes] == [
+        ("/diagnostics", False), ("/lite", True), ("/r1", False)]

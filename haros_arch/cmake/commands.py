@@ -9,9 +9,11 @@ from __future__ import annotations
 import fnmatch
 import glob
 import os
+import re
 from collections.abc import Callable
 from typing import TYPE_CHECKING
 
+from .. import diagnostics as diag
 from . import listops
 from .lexer import Invocation
 from .listops import RegexLimit, run_list, run_math, run_string, split_list
@@ -335,6 +337,58 @@ def _add_target(it: Interpreter, command: Invocation, args: list[str], kind: str
             target.links.extend(name for name in it.auto_libraries if name != args[0])
         if kind == "library":
             it.auto_libraries.append(args[0])
+
+
+# commands of CMake itself and of the ROS build tools that make no runnable program
+# (tests, messages): an unknown command is looked at only when it is none of these
+IGNORED = frozenset({
+    "project", "cmake_minimum_required", "find_package", "include_directories",
+    "link_directories", "add_definitions", "add_compile_options", "add_dependencies",
+    "target_include_directories", "target_compile_options", "target_compile_definitions",
+    "target_compile_features", "catkin_package", "ament_package", "message",
+    "add_custom_target", "add_custom_command", "add_test", "configure_file",
+    "add_message_files", "add_service_files", "add_action_files", "generate_messages",
+    "rosidl_generate_interfaces", "ament_export_dependencies", "ament_export_include_directories",
+    "ament_export_libraries", "ament_export_targets", "ament_lint_auto_find_test_dependencies",
+})
+_TARGET_NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_.+-]*")
+_NOT_NODES = re.compile(r"test|gmock|benchmark", re.IGNORECASE)
+_MAIN = re.compile(rb"\bint\s+main\s*\(")
+MAX_MAIN_READ = 2_000_000  # bytes of a source read to find main()
+
+
+def _defines_main(path: str) -> bool:
+    try:
+        with open(path, "rb") as handle:
+            return _MAIN.search(handle.read(MAX_MAIN_READ)) is not None
+    except OSError:
+        return False
+
+
+def unknown_command(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    """A command neither CMake nor the workspace defines (a function of a package outside
+    the workspace: cartographer's ``google_binary(cartographer_node SRCS node_main.cc)``)
+    whose first argument is a new target name and whose other arguments include C/C++
+    files of the package, one of which defines ``main()``: an executable, which links the
+    package's libraries declared so far (``nodes._run`` keeps of them what its code names,
+    as for ament_auto). Tests and benchmarks (``ament_add_gmock``, ``catkin_add_gtest``,
+    ``ament_add_google_benchmark``, sources in a ``test`` folder) are no nodes."""
+    if (len(args) < 2 or _NOT_NODES.search(command.name) or args[0] in it.targets
+            or not _TARGET_NAME.fullmatch(args[0])):
+        return
+    sources = [it.path(a) for a in args[1:] if a.endswith(C_SUFFIXES)]
+    sources = [s for s in sources if it.inside_package(s) and os.path.isfile(s)]
+    if (not sources or any(_NOT_NODES.search(part) for s in sources
+                           for part in os.path.relpath(s, it.package_root).split(os.sep)[:-1])
+            or not any(_defines_main(s) for s in sources)):
+        return
+    target = it.targets[args[0]] = Target(
+        args[0], "executable", sources, conditions=it.current_conditions(),
+        line=command.line, column=command.column, file=command.file)
+    target.links.extend(name for name, other in it.targets.items() if other.kind == "library")
+    it.diagnostics.append(diag.make(
+        "CMAKE_GUESSED_EXECUTABLE", it.where(command), command=command.name,
+        target=args[0], sources=", ".join(os.path.basename(s) for s in sources)))
 
 
 @handles("target_sources")

@@ -24,7 +24,7 @@ from .. import diagnostics as diag
 from ..diagnostics import Diagnostic
 from ..model.conditions import Condition
 from ..model.location import Location
-from .commands import HANDLERS
+from .commands import HANDLERS, IGNORED, unknown_command
 from .conditions import Evaluator
 from .lexer import Argument, Invocation
 from .listops import split_list
@@ -272,6 +272,8 @@ class Interpreter:
         handler = HANDLERS.get(name[1:] if name.startswith("_") else name)
         if handler is not None:
             handler(self, command, self.arguments(command.args))
+        elif name not in IGNORED:
+            unknown_command(self, command, self.arguments(command.args))
         return index + 1
 
     def block_end(self, commands: list[Invocation], index: int, end: int, opener: str,

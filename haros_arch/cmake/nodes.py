@@ -39,6 +39,8 @@ class PackageFiles:
         self.workspace = workspace
         self.package = package
         self._relative: dict[str, str] = {}
+        # the words of each source (``classes.named_words``), kept by the workspace
+        self.named_words = workspace.named_words
 
     def relpath(self, path: str) -> str:
         rel = self._relative.get(path)

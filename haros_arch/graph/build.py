@@ -33,7 +33,7 @@ from ..robot.attach import attach as attach_descriptions
 from ..workspace import Workspace, installed_roots
 from .actions import action_links
 from .conditions import decide_links
-from .processes import guessed_names, process_nodes, process_params
+from .processes import guessed_names, process_nodes, process_params, unnamed_param_files
 
 RESOURCE_OF_KIND: dict[str, type[Resource]] = {
     "publish": Topic, "subscribe": Topic, "server": Service, "client": Service,
@@ -101,6 +101,7 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
     resources = Resources(config)
     config.diagnostics.extend(launch.diagnostics)
     config.diagnostics.extend(guessed_names(launch, nodes))
+    config.diagnostics.extend(unnamed_param_files(launch, nodes))
     for param in process_params(launch, nodes):
         parameter = resources.get(Parameter, param.name)
         assert isinstance(parameter, Parameter)

@@ -87,6 +87,21 @@ def guessed_names(launch: LaunchModel, nodes: Mapping[str, Node]) -> list[Diagno
             if nodes.get(node_key(decl)) is None and (names := _own_names(decl, nodes))]
 
 
+def unnamed_param_files(launch: LaunchModel, nodes: Mapping[str, Node]) -> list[Diagnostic]:
+    """LAUNCH_PARAM_FILE for each parameter file with entries for particular nodes given
+    to a node launched without a name, unless its code names it (then ``process_params``
+    gives it the entries for that name, as the running node takes them): TurtleBot 4's
+    ``Node(package='turtlebot4_node', executable='turtlebot4_node', parameters=[file])``
+    is ``/turtlebot4_node`` and gets the file's ``turtlebot4_node:`` section. A name
+    guessed from the executable (no code) keeps the warning."""
+    return [diag.make("LAUNCH_PARAM_FILE", where,
+                      detail=f"parameter file applied to {decl.name}, whose name is not "
+                             "known here: only its /** entries are used")
+            for decl in launch.nodes if decl.unnamed_param_files
+            and (nodes.get(node_key(decl)) is None or not _own_names(decl, nodes))
+            for where in decl.unnamed_param_files]
+
+
 def _own_names(decl: NodeDecl, nodes: Mapping[str, Node]) -> list[str]:
     node = nodes.get(node_key(decl))
     if node is None and decl.ros_version == 2 and _unnamed(decl) and not decl.composable \

@@ -24,7 +24,7 @@ from ..manifest import ros_version as manifest_ros_version
 from ..model.source import Package
 from ..workspace import Workspace
 
-__all__ = ["package_ros_version", "ros_version"]
+__all__ = ["foreign_to_package", "package_ros_version", "ros_version"]
 
 ROS2_MARKS = re.compile(
     rb"\bexec\s*=|<let\b|\$\(var\b|<push[-_]ros[-_]namespace\b|<node_container\b|"
@@ -42,12 +42,8 @@ def package_ros_version(package: Package | None) -> int | None:
     return None if package is None else manifest_ros_version(package)
 
 
-def ros_version(path: str, workspace: Workspace | None = None,
-                head: bytes | None = None) -> int:
-    """1 (roslaunch) or 2 (ROS 2 launch) for the launch file at ``path``."""
-    lower = path.lower()
-    if lower.endswith((".py", ".yaml", ".yml")):
-        return 2
+def _by_content(path: str, head: bytes | None) -> int | None:
+    """1 or 2 when the XML file has marks of one launch system only, else None."""
     if head is None:
         try:
             with open(path, "rb") as handle:
@@ -60,8 +56,45 @@ def ros_version(path: str, workspace: Workspace | None = None,
         return 1
     if ros2 and not ros1:
         return 2
+    return None
+
+
+def ros_version(path: str, workspace: Workspace | None = None,
+                head: bytes | None = None) -> int:
+    """1 (roslaunch) or 2 (ROS 2 launch) for the launch file at ``path``."""
+    lower = path.lower()
+    if lower.endswith((".py", ".yaml", ".yml")):
+        return 2
+    by_content = _by_content(path, head)
+    if by_content is not None:
+        return by_content
     if workspace is not None:
         by_package = package_ros_version(workspace.package_of(path))
         if by_package is not None:
             return by_package
     return 2 if lower.endswith(".launch.xml") else 1
+
+
+def foreign_to_package(path: str, workspace: Workspace) -> str | None:
+    """Why the XML launch file at ``path`` cannot be run by its own package's ROS, or None.
+
+    A file whose content is roslaunch XML (``<node type=>``, ``<rosparam>``, ``$(find)``)
+    in a package that builds with ament only is a ROS 1 leftover of a port that
+    ``ros2 launch`` rejects (twist_mux's ``twist_mux.launch``, mavros_extras'
+    ``px4flow.launch``); a ROS 2 XML file in a catkin-only package is the reverse. A
+    package that builds for both (a ``$ROS_VERSION`` condition on a dependency) keeps
+    both kinds of file."""
+    if path.lower().endswith((".py", ".yaml", ".yml")):
+        return None
+    package = workspace.package_of(path)
+    if package is None or any(dep.condition and "ROS_VERSION" in dep.condition
+                              for dep in package.dependencies):
+        return None
+    by_package = package_ros_version(package)
+    by_content = _by_content(path, None)
+    if by_package is None or by_content is None or by_package == by_content:
+        return None
+    build = "an ament" if by_package == 2 else "a catkin"
+    runner = "ros2 launch" if by_package == 2 else "roslaunch"
+    return (f"{'roslaunch (ROS 1)' if by_content == 1 else 'ROS 2 launch'} XML in "
+            f"{package.name}, {build} (ROS {by_package}) package: {runner} cannot run it")

@@ -52,6 +52,10 @@ class NodeDecl:
     # them (``--params-file``): the running node applies the sections for its name, of
     # which only the /** entries are applied here
     params_files_given: list[str] = field(default_factory=list)
+    # ROS 2: where such a file with entries for particular nodes was given: said
+    # (LAUNCH_PARAM_FILE) only if the node is not named from its code after all
+    # (``graph.processes.unnamed_param_files``)
+    unnamed_param_files: list[Location] = field(default_factory=list, repr=False)
 
 
 @dataclass

@@ -203,6 +203,10 @@ def named_helpers(own: list[str], helpers: list[str], workspace: Files) -> list[
     words: set[str] = set()
     for source in own:
         words |= named_words(source, workspace)
+    # a class an own source file defines itself is its own, whatever the library calls
+    # the same: cartographer_ros' occupancy_grid_node_main.cc defines a ``class Node``
+    # of its own, and does not run the library's Node (node.cc, the SLAM node's topics)
+    words -= set().union(*(_local_classes(source, workspace) for source in own))
     waiting = {source: _defined(source, workspace) for source in helpers}
     used = {source for source, defined in waiting.items() if not defined}
     changed = True
@@ -250,6 +254,21 @@ _NOT_FUNCTIONS = frozenset({"if", "for", "while", "switch", "return", "sizeof", 
                             "using", "typedef", "template", "class", "struct", "enum"})
 
 
+# ``class Name {`` / ``struct Name : Base {`` at the start of a line: a class defined
+_CLASS = re.compile(r"^[ \t]*(?:class|struct)\s+([A-Za-z_]\w*)\s*(?:final\s*)?[:{]",
+                    re.MULTILINE)
+_C_SOURCES = (".c", ".cc", ".cpp", ".cxx", ".c++", ".C")
+
+
+def _local_classes(source: str, workspace: Files) -> set[str]:
+    """The classes a C/C++ source file (not a header) defines."""
+    if not source.endswith(_C_SOURCES):
+        return set()
+    path = os.path.join(workspace.root, source)
+    text, _ = read_text(path, workspace.location(path))
+    return set(_CLASS.findall(text or ""))
+
+
 def _defined(source: str, workspace: Files) -> set[str]:
     """The classes whose members a source file defines, and its free functions."""
     path = os.path.join(workspace.root, source)
@@ -260,9 +279,20 @@ def _defined(source: str, workspace: Files) -> set[str]:
     return set(_MEMBER.findall(text)) | functions
 
 
-def named_words(source: str, workspace: Files) -> set[str]:
+def named_words(source: str, workspace: Files) -> frozenset[str]:
     """The words of a source file and of the headers of its package it includes (its
-    own header declares the members whose types name helper classes)."""
+    own header declares the members whose types name helper classes); a
+    ``Workspace``'s read once per run."""
+    memo: dict[str, frozenset[str]] | None = getattr(workspace, "named_words", None)
+    found = memo.get(source) if memo is not None else None
+    if found is None:
+        found = frozenset(_named_words(source, workspace))
+        if memo is not None:
+            memo[source] = found
+    return found
+
+
+def _named_words(source: str, workspace: Files) -> set[str]:
     path = os.path.join(workspace.root, source)
     text, _ = read_text(path, workspace.location(path))
     words = set(_WORD.findall(text or ""))

@@ -30,17 +30,20 @@ from clang.cindex import (
     SourceLocation,
     SourceRange,
     TranslationUnit,
+    Type,
+    TypeKind,
     c_object_p,
     callbacks,
     conf,
 )
 
-__all__ = ["Node", "by_file", "children_in", "root"]
+__all__ = ["Node", "by_file", "children_in", "overloads", "root"]
 
 _VISIT = callbacks["cursor_visit"]
 Value = TypeVar("Value")
 _DECLARATION: dict[int, bool] = {}  # kind id -> clang_isDeclaration
 _KINDS: dict[int, CursorKind] = {}
+_TYPE_KINDS: dict[int, TypeKind] = {}
 _WHOLE: dict[int, bool] = {}  # kind id -> its subtree is visited at once
 _BODIES = frozenset({
     CursorKind.FUNCTION_DECL, CursorKind.CXX_METHOD, CursorKind.CONSTRUCTOR,
@@ -53,6 +56,7 @@ _BODY: dict[bytes, bool] = {}
 _DECLARES: dict[bytes, bool] = {}
 _KIND_OF: dict[bytes, CursorKind] = {}
 _NONE = bytes(8)
+MAX_OVERLOADS = 8  # the declarations of an overloaded name read
 _PARENT = slice(16, 24)  # data[1] of a CXCursor: kind, xdata (4 bytes each), data[3]
 
 
@@ -217,6 +221,15 @@ def children_in(parent: Cursor, wanted: Callable[[str], bool]) -> list[Cursor]:
     return [made(raw) for raw in found]
 
 
+def overloads(cursor: Cursor) -> list[Cursor | None]:
+    """The declarations an overloaded name (``OVERLOADED_DECL_REF``) may be, at most
+    ``MAX_OVERLOADS``: a node's asked once."""
+    if isinstance(cursor, Node):
+        return cursor.overloads
+    count = min(conf.lib.clang_getNumOverloadedDecls(cursor), MAX_OVERLOADS)
+    return [conf.lib.clang_getOverloadedDecl(cursor, i) for i in range(count)]
+
+
 class _File(File):
     """A file whose name is asked once."""
 
@@ -233,19 +246,41 @@ class _Place(SourceLocation):
 
     def _get_instantiation(self) -> tuple[_File | None, int, int, int]:
         """What ``SourceLocation`` asks libclang once, with the file told by its handle
-        (no ``File`` made each time)."""
+        (no ``File`` made each time); its four parts are then the location's own
+        attributes (``file``, ``line``, ``column``, ``offset``: no call to read one)."""
         if self._data is None:
             handle, line, column, offset = c_object_p(), c_uint(), c_uint(), c_uint()
             conf.lib.clang_getInstantiationLocation(
                 self, ctypes.byref(handle), ctypes.byref(line), ctypes.byref(column),
                 ctypes.byref(offset))
-            self._data = (self._unit.handle(ctypes.cast(handle, ctypes.c_void_p).value, handle),
-                          line.value, column.value, offset.value)
+            data = self._data = (
+                self._unit.handle(ctypes.cast(handle, ctypes.c_void_p).value, handle),
+                line.value, column.value, offset.value)
+            facts = self.__dict__
+            facts["file"], facts["line"], facts["column"], facts["offset"] = data
         return self._data
 
     @cached
     def file(self) -> _File | None:
         return self._get_instantiation()[0]
+
+    @cached
+    def line(self) -> int:
+        return self._get_instantiation()[1]
+
+    @cached
+    def column(self) -> int:
+        return self._get_instantiation()[2]
+
+    @cached
+    def offset(self) -> int:
+        return self._get_instantiation()[3]
+
+    @cached
+    def key(self) -> tuple[str, int]:
+        """The location's file name ("" for none) and offset: a place of the unit."""
+        where = self._get_instantiation()
+        return (where[0].name if where[0] is not None else "", where[3])
 
 
 def _place(location: SourceLocation, unit: _Unit) -> _Place:
@@ -266,6 +301,79 @@ class _Span(SourceRange):
     @cached
     def end(self) -> _Place:
         return _place(SourceRange.end.fget(self), self._unit)
+
+
+class _Type(Type):
+    """A type that asks libclang each of its facts once, whose declaration is the
+    unit's ``Node`` and whose related types (canonical, pointee, template arguments)
+    are ``_Type`` too: the analyses ask the same types again and again."""
+
+    _unit: _Unit
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Type) and bool(conf.lib.clang_equalTypes(self, other))
+
+    def __ne__(self, other: object) -> bool:
+        return not self.__eq__(other)
+
+    __hash__ = None  # type: ignore[assignment]  # as Type's: not hashable by value
+
+    @cached
+    def kind(self) -> TypeKind:
+        found = _TYPE_KINDS.get(self._kind_id)
+        if found is None:
+            found = _TYPE_KINDS[self._kind_id] = TypeKind.from_id(self._kind_id)
+        return found
+
+    @cached
+    def spelling(self) -> str:
+        return str(Type.spelling.fget(self))
+
+    @cached
+    def _canonical(self) -> _Type:
+        return _type(Type.get_canonical(self), self._unit)
+
+    def get_canonical(self) -> _Type:
+        return self._canonical
+
+    @cached
+    def _pointee(self) -> _Type:
+        return _type(Type.get_pointee(self), self._unit)
+
+    def get_pointee(self) -> _Type:
+        return self._pointee
+
+    @cached
+    def _declaration(self) -> Node | None:
+        return self._unit.node(Type.get_declaration(self))
+
+    def get_declaration(self) -> Node | None:
+        return self._declaration
+
+    @cached
+    def _count(self) -> int:
+        return int(Type.get_num_template_arguments(self))
+
+    def get_num_template_arguments(self) -> int:
+        return self._count
+
+    @cached
+    def _arguments(self) -> dict[int, _Type]:
+        return {}
+
+    def get_template_argument_type(self, num: int) -> _Type:
+        found: _Type | None = self._arguments.get(num)
+        if found is None:
+            found = self._arguments[num] = _type(
+                Type.get_template_argument_type(self, num), self._unit)
+        return found
+
+
+def _type(plain: Type, unit: _Unit) -> _Type:
+    made = _Type.from_buffer_copy(plain)
+    made._tu = plain._tu
+    made._unit = unit
+    return made
 
 
 class Node(Cursor):
@@ -376,8 +484,8 @@ class Node(Cursor):
         return span
 
     @cached
-    def type(self):
-        return Cursor.type.fget(self)
+    def type(self) -> _Type:
+        return _type(Cursor.type.fget(self), self._unit)
 
     @cached
     def referenced(self) -> Node | None:
@@ -408,6 +516,21 @@ class Node(Cursor):
 
     def get_arguments(self) -> Iterator[Node | None]:
         return iter(self._arguments)
+
+    @cached
+    def _usr(self) -> str:
+        return str(Cursor.get_usr(self))
+
+    def get_usr(self) -> str:
+        return self._usr
+
+    @cached
+    def overloads(self) -> list[Node | None]:
+        """The declarations an overloaded name (``OVERLOADED_DECL_REF``) may be, at
+        most ``MAX_OVERLOADS``."""
+        count = min(conf.lib.clang_getNumOverloadedDecls(self), MAX_OVERLOADS)
+        return [self._unit.node(conf.lib.clang_getOverloadedDecl(self, i))
+                for i in range(count)]
 
     @cached
     def _is_definition(self) -> bool:

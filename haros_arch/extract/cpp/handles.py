@@ -21,6 +21,7 @@ from .values import (
     Parts,
     Scope,
     initializer,
+    key_of,
     literal,
     render,
     strip,
@@ -112,6 +113,9 @@ class Namespaces:
         self.macros = macros
         self.source = source
         self.sites: CallSites | None = None  # set once the file's functions are known
+        # the writes of the unit's global variables in its main file's functions (see
+        # ``_global_value``), found once
+        self._globals: dict[tuple[str, int], list[Cursor]] | None = None
 
     def of_call(self, call: Cursor, callee: Cursor, scope: Scope) -> Parts:
         """The namespace of the handle or node a member call is made on."""
@@ -150,6 +154,11 @@ class Namespaces:
             if decl is None or decl.kind != CursorKind.VAR_DECL:
                 return UNKNOWN
             value = scope.variable(decl)
+            if value is None and _is_global(decl):
+                value = self._global_value(decl)
+                if value is not None:  # written in another function: its own scope
+                    return self.of(value, Scope(None, self.macros, self.source, self.sites),
+                                   depth + 1)
             if value is None and initializer(decl) is None:
                 return self._dropped_prefix(decl)
             return UNKNOWN if value is None else self.of(value, scope, depth + 1)
@@ -196,6 +205,50 @@ class Namespaces:
             return (normalise(join_name(parent, child)) if parent else normalise(child),)
         return (normalise(render(scope.string(args[0]))),)
 
+    def _global_value(self, decl: Cursor) -> Cursor | None:
+        """What a global handle holds when the functions of the unit's main file write it
+        exactly once: ublox's ``boost::shared_ptr<ros::NodeHandle> nh;`` (a header) set by
+        ``nh.reset(new ros::NodeHandle("~"))`` in ``main`` and used by every publisher
+        (``nh = boost::make_shared<ros::NodeHandle>("~")`` alike)."""
+        if self._globals is None:
+            self._globals = {}
+            unit = decl.translation_unit
+            main = unit.spelling if unit is not None else ""
+            stack = list(unit.cursor.get_children()) if unit is not None else []
+            while stack:
+                node = stack.pop()
+                if node.location.file is None or node.location.file.name != main:
+                    continue
+                if node.kind == CursorKind.NAMESPACE:
+                    stack.extend(node.get_children())
+                elif node.kind in _FUNCTIONS and node.is_definition():
+                    self._global_writes(node)
+        writes = self._globals.get(key_of(decl), [])
+        return writes[0] if len(writes) == 1 else None
+
+    def _global_writes(self, function: Cursor) -> None:
+        assert self._globals is not None
+        for node in function.walk_preorder():
+            target: Cursor | None = None
+            value: Cursor | None = None
+            if node.kind == CursorKind.CALL_EXPR:
+                args = list(node.get_arguments())
+                children = [c for c in node.get_children() if c.kind.is_expression()]
+                if node.spelling == "operator=" and len(args) == 2:
+                    target, value = strip(args[0]), args[1]
+                elif node.spelling == "reset" and len(args) == 1 and children and (
+                        children[0].kind == CursorKind.MEMBER_REF_EXPR):
+                    objects = [c for c in children[0].get_children() if c.kind.is_expression()]
+                    target, value = (strip(objects[0]) if objects else None), args[0]
+            elif node.kind == CursorKind.BINARY_OPERATOR:
+                children = list(node.get_children())
+                if len(children) == 2 and self.source and Scope(
+                        None, self.macros, self.source).operator(node, children) == "=":
+                    target, value = strip(children[0]), children[1]
+            if target is not None and target.kind == CursorKind.DECL_REF_EXPR and (
+                    target.referenced is not None and _is_global(target.referenced)):
+                self._globals.setdefault(key_of(target.referenced), []).append(value)
+
     def _dropped_prefix(self, decl: Cursor) -> Parts:
         """A handle declared ``NodeHandle nh("~/" + name_)`` whose initialiser clang
         dropped (``name_`` of a type it could not see: fetch_depth_layer): the literal
@@ -228,6 +281,13 @@ class Namespaces:
             return parent
         child = render(scope.string(args[index]))
         return (normalise(join_name(render(parent), child)),)
+
+
+def _is_global(decl: Cursor) -> bool:
+    """A variable of a namespace (or of no namespace), not of a function or class."""
+    parent = decl.semantic_parent
+    return decl.kind == CursorKind.VAR_DECL and parent is not None and parent.kind in (
+        CursorKind.NAMESPACE, CursorKind.TRANSLATION_UNIT)
 
 
 def callback(args: list[Cursor], index: int | None) -> Cursor | None:

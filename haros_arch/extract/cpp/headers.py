@@ -160,6 +160,25 @@ def _library_include_dirs(workspace: Workspace) -> list[str]:
     return found
 
 
+def _headers_beside_sources(workspace: Workspace) -> list[str]:
+    """The roots of the packages that keep their headers beside their sources in a folder
+    named as the package, included from the package root (cartographer_ros:
+    ``cartographer_ros/node.h`` next to ``node.cc``, ``#include "cartographer_ros/node.h"``,
+    the root being the include folder its CMakeLists gives with ``${PROJECT_SOURCE_DIR}``),
+    sorted."""
+    found = []
+    for package in sorted(workspace.packages.values(), key=lambda p: p.name):
+        if not package.root:
+            continue
+        try:
+            entries = os.listdir(os.path.join(package.root, package.name))
+        except OSError:
+            continue
+        if any(entry.endswith((".h", ".hh", ".hpp", ".hxx")) for entry in entries):
+            found.append(package.root)
+    return found
+
+
 def _folders(path: str) -> list[str]:
     """The folders in ``path`` (no hidden ones, no symbolic links), sorted."""
     try:
@@ -197,6 +216,8 @@ class IncludeSetup:
         # listed in their CMakeLists, which only the analysed package's is read)
         self.user_dirs += [inc for inc in _library_include_dirs(workspace)
                            if inc not in self.user_dirs]
+        self.user_dirs += [root for root in _headers_beside_sources(workspace)
+                           if root not in self.user_dirs]
         for unit in self.units.values():  # so that the scan before parsing finds them
             self.user_dirs += [d for d in unit.include_dirs if d not in self.user_dirs]
         # the packages being extracted that our stand-ins also provide, with their

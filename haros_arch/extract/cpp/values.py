@@ -17,6 +17,8 @@ from typing import TYPE_CHECKING, TypeVar
 
 from clang.cindex import Cursor, CursorKind, TypeKind
 
+from .cursors import _Place
+
 if TYPE_CHECKING:
     from .call_sites import CallSites
 
@@ -188,6 +190,11 @@ class Scope:
                 self.passed[key_of(arg.referenced)] = (call, index)
                 if _may_write(call, index):
                     self._write_ref(arg, None)
+            elif _is_array(strip(arg)) and not _const_array(strip(arg).referenced) and (
+                    _may_write(call, index, decayed=True)):
+                # ``snprintf(topic, size, "analog_output%02d", i)`` fills the array
+                # ``char topic[] = "analog_output00"`` (phidgets): not its initializer
+                self._write_ref(strip(arg), None)
         children = list(call.get_children())
         if children and children[0].kind == CursorKind.MEMBER_REF_EXPR:
             method = call.referenced
@@ -259,7 +266,7 @@ class Scope:
         writes = self.writes.get(key_of(decl))
         if writes is not None:
             return writes[0] if len(writes) == 1 else None
-        if decl.type.is_const_qualified() or _string_constant(decl):
+        if decl.type.is_const_qualified() or _string_constant(decl) or _const_array(decl):
             definition = decl.get_definition() or decl
             return initializer(definition)
         return None
@@ -451,10 +458,26 @@ def _string_constant(decl: Cursor) -> bool:
         ctype.get_pointee().get_canonical().kind in (TypeKind.CHAR_S, TypeKind.CHAR_U))
 
 
-def _may_write(call: Cursor, index: int) -> bool:
+def _is_array(cursor: Cursor) -> bool:
+    """A variable of array type named as it is (passed, it is a pointer to its data)."""
+    return (cursor.kind in (CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR)
+            and cursor.referenced is not None and cursor.referenced.type.get_canonical().kind
+            in (TypeKind.CONSTANTARRAY, TypeKind.INCOMPLETEARRAY))
+
+
+def _const_array(decl: Cursor) -> bool:
+    """``constexpr char kTopic[] = "submap_list";`` (cartographer_ros' node_constants.h):
+    the const is on the elements, not on the array type."""
+    kind = decl.type.get_canonical().kind  # whose element type has lost its const
+    return kind in (TypeKind.CONSTANTARRAY, TypeKind.INCOMPLETEARRAY) and (
+        decl.type.element_type.is_const_qualified())
+
+
+def _may_write(call: Cursor, index: int, decayed: bool = False) -> bool:
     """Whether the call may change a variable passed as its argument ``index``: unless
     the parameter is a value or a const reference (``make_shared<T>(args)`` forwards to
-    a constructor, which takes names by value or const reference)."""
+    a constructor, which takes names by value or const reference). An array passed as a
+    pointer to its data (``decayed``) may be changed through a pointer to non-const."""
     target = call.referenced
     if target is None:
         return True
@@ -465,10 +488,12 @@ def _may_write(call: Cursor, index: int) -> bool:
         return True
     types = list(ftype.argument_types())
     if index >= len(types):
-        return True  # a C variadic
+        return not decayed  # a C variadic: a printf family's arguments are read
     ptype = types[index]
     if ptype.kind == TypeKind.LVALUEREFERENCE:
         return not ptype.get_pointee().is_const_qualified()
+    if decayed and ptype.get_canonical().kind == TypeKind.POINTER:
+        return not ptype.get_canonical().get_pointee().is_const_qualified()
     return False
 
 
@@ -501,6 +526,8 @@ _WHOLE_REGIONS = frozenset({CursorKind.CASE_STMT, CursorKind.DEFAULT_STMT,
 
 def key_of(decl: Cursor) -> tuple[str, int]:
     where = decl.location
+    if type(where) is _Place:
+        return where.key
     return (where.file.name if where.file else "", where.offset)
 
 

@@ -31,12 +31,13 @@ from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from clang.cindex import Cursor, CursorKind, TypeKind, conf
+from clang.cindex import Cursor, CursorKind, TypeKind
 
 from ...model.conditions import Condition
 from . import api, msg_types
 from .call_sites import closest
 from .call_types import template_argument
+from .cursors import Node, overloads
 from .handles import callback, callback_name, is_handle, join_name, qualified_name
 from .qos import qos as qos_of
 from .values import (
@@ -57,7 +58,6 @@ __all__ = ["DEPENDENT", "MAX_DEPTH", "Wrapper", "Wrappers", "is_constructor",
            "of_class_template"]
 
 MAX_DEPTH = 4  # a wrapper of a wrapper ... of an API call
-MAX_OVERLOADS = 8
 Key = tuple[str, int]
 # what a member call on an object whose type is a template parameter may be: the node
 # handle's and rclcpp node's methods, by name
@@ -126,6 +126,9 @@ class Wrappers:
         self.preorder: dict[int, list[Cursor]] = {}
         # the wrapper methods (not constructors) by name, for a call on a dependent object
         self._methods: dict[str, list[Cursor]] = {}
+        # id of a call (a node of the unit) -> the constructors it may call through a
+        # factory (``_constructed``), wrappers or not
+        self._constructors: dict[int, list[Key]] = {}
 
     # -- building -----------------------------------------------------------------------
 
@@ -250,6 +253,18 @@ class Wrappers:
     def _constructed(self, call: Cursor, args: list[Cursor]) -> list[Key]:
         """The wrapper constructors ``std::make_shared<C>(args)`` may call (C a class
         template of the unit whose constructor wraps the API), resolved or dependent."""
+        # the same for every round of ``build``: asked once a node of the unit (whose
+        # objects live as long as the unit, so their ids name them)
+        found = self._constructors.get(id(call)) if isinstance(call, Node) else None
+        if found is None:
+            found = self._constructors_of(call, args)
+            if isinstance(call, Node):
+                self._constructors[id(call)] = found
+        return [key for key in found if key in self.summaries]
+
+    def _constructors_of(self, call: Cursor, args: list[Cursor]) -> list[Key]:
+        """The constructors of the class template ``call`` makes through a factory that
+        ``args`` fit (``_constructed`` keeps the wrappers among them)."""
         target = call.referenced
         head = next(iter(call.get_children()), None)
         heads = [target] if target is not None else [
@@ -269,7 +284,7 @@ class Wrappers:
             key = _key(child.canonical)
             if (child.kind == CursorKind.CONSTRUCTOR or (
                 child.kind == CursorKind.FUNCTION_TEMPLATE and is_constructor(child)
-            )) and key in self.summaries and _fits(child, args):
+            )) and _fits(child, args):
                 found.append(key)
         return found
 
@@ -924,11 +939,10 @@ def _member_name(member: Cursor) -> str:
 def _overloads(head: Cursor) -> list[Cursor]:
     """The functions an unresolved call's name may be (``ns::create_publisher<M>(...)``
     with dependent arguments)."""
-    found: list[Cursor] = []
+    found: list[Cursor | None] = []
     for child in [head, *head.get_children()]:
         if child.kind == CursorKind.OVERLOADED_DECL_REF:
-            count = min(conf.lib.clang_getNumOverloadedDecls(child), MAX_OVERLOADS)
-            found += [conf.lib.clang_getOverloadedDecl(child, i) for i in range(count)]
+            found += overloads(child)
     return [d for d in found if d is not None and d.kind in (
         CursorKind.FUNCTION_TEMPLATE, CursorKind.FUNCTION_DECL, CursorKind.CXX_METHOD)]
 

@@ -71,6 +71,11 @@ ROWS: dict[tuple[str, str], PyFunction] = {
     ("message_filters", "Subscriber"): PyFunction(
         "subscribe", owner=NODE, name=Arg(2, "topic"), type=Arg(1, "msg_type"),
         qos=Arg(3, "qos_profile")),
+    # diagnostic_updater.Updater(node, period=1.0) publishes its status on /diagnostics
+    # (as rclcpp's diagnostic_updater::Updater: extract/cpp/api.py)
+    ("diagnostic_updater", "Updater"): PyFunction(
+        "publish", owner=NODE, name=None, fixed_name="/diagnostics",
+        fixed_type="diagnostic_msgs/msg/DiagnosticArray"),
 }
 
 _LOGGER = Arg(None, "enable_logger_service")

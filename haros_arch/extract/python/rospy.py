@@ -65,6 +65,10 @@ ROWS: dict[tuple[str, str], PyFunction] = {
         "subscribe", name=None, fixed_type="tf2_msgs/TFMessage", special="tf-listener"),
     # message_filters.Subscriber(name, data_class, ...)
     ("message_filters", "Subscriber"): PyFunction("subscribe", type=Arg(1, "data_class")),
+    # diagnostic_updater.Updater() publishes its status on /diagnostics (as roscpp's)
+    ("diagnostic_updater", "Updater"): PyFunction(
+        "publish", name=None, fixed_name="/diagnostics",
+        fixed_type="diagnostic_msgs/DiagnosticArray"),
 }
 
 NODE_NAMES: dict[tuple[str, str], NodeName] = {

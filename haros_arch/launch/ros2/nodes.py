@@ -116,12 +116,9 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
                 put(name, leaf, location)
             return
         if naming.names_a_node(document):
-            runner.report("LAUNCH_PARAM_FILE", location,
-                          detail=f"parameter file applied to {node}, whose name is not "
-                                 "known here: its /** entries are used, those for "
-                                 "particular nodes once the node is named from its code")
             kept = _as_given(runner, entry, scope, location)
             decl = runner.model.nodes[-1]
+            decl.unnamed_param_files.append(location)
             if kept is not None and not decl.composable:  # launch_ros passes it on
                 decl.params_files_given.append(kept)
         for pattern, params in naming.node_patterns(document):

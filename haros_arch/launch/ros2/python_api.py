@@ -69,6 +69,39 @@ def environment_variable(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     return e.Env(to_text(arg(a, k, 0, "name")), text_or_none(arg(a, k, 1, "default_value")))
 
 
+def launch_context(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``LaunchContext()`` made by the launch file itself to perform a substitution while
+    it builds its description (turtlebot4's bringup: ``EnvironmentVariable(
+    'TURTLEBOT4_DIAGNOSTICS', default_value='1').perform(lc) == '1'``): a new context,
+    which has no launch configurations (a ``LaunchConfiguration`` is its default) and the
+    configuration's environment. Anything else it performs is unknown."""
+
+    def known(text: e.Text | None) -> str | None:
+        if text is None:
+            return None
+        parts = [fresh(part) for part in text]
+        return None if any(p is None for p in parts) else "".join(parts)  # type: ignore[arg-type]
+
+    def fresh(part: str | e.Subst) -> str | None:
+        if isinstance(part, str):
+            return part
+        if isinstance(part, e.Env):
+            name = known(part.name)
+            if name is not None and name in i.environment:
+                return i.environment[name]
+            return known(part.default) if name is not None else None
+        if isinstance(part, e.Var):
+            return known(part.default)
+        return None
+
+    def perform(text: e.Text) -> Any:
+        value = known(text)
+        return Unknown("perform() in a new LaunchContext of a value not known statically"
+                       ) if value is None else value
+
+    return Context(perform)
+
+
 def find_package(share: bool) -> Builder:
     def build(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
         return e.FindPackage(to_text(arg(a, k, 0, "package")), share)
@@ -453,6 +486,7 @@ API: dict[str, Builder] = {
     "LaunchDescription": launch_description,
     "LaunchConfiguration": launch_configuration,
     "EnvironmentVariable": environment_variable,
+    "LaunchContext": launch_context,
     "FindPackageShare": find_package(True), "FindPackagePrefix": find_package(False),
     "FindPackage": find_package(True),
     "get_package_share_directory": package_directory(True),
