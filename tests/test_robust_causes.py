@@ -2,13 +2,15 @@
 small (bench/robust_bugs.py measures the real ones): a rospy publisher without a queue
 size in a Python 2 script whose print statements go on over lines (kobuki dd40270), and
 a launch file that pins a node's names outside the namespace it is included in
-(turtlebot 9ffffca, openni_launch a482f82)."""
+(turtlebot 9ffffca, openni_launch a482f82). Also a crash met on the way: a va_list
+handed to a call (openni_camera, in turtlebot 3e32933's tree)."""
 
 from __future__ import annotations
 
 from conftest import package_xml
 
 from haros_arch.api import analyse_path
+from haros_arch.extract.cpp import extract_cpp
 from haros_arch.extract.python import extract_python
 from haros_arch.pipeline import Options
 from haros_arch.query.command import check
@@ -129,3 +131,31 @@ def test_a_python2_statement_continued_over_lines_costs_no_call(write_tree) -> N
     assert [d.code for d in result.diagnostics] == ["PY_PYTHON2"]
     assert [(c.kind, c.name, c.location.line, c.queue_size_missing)
             for c in result.calls if c.kind == "publish"] == [("publish", "pose2d", 16, True)]
+
+
+VA_LIST = """
+#include <cstdarg>
+#include <cstdio>
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+void report(const char * format, ...) {
+  char text[64];
+  va_list args;
+  va_start(args, format);
+  vsnprintf(text, sizeof(text), format, args);
+  va_end(args);
+  std::string topic = "status";
+  ros::NodeHandle nh;
+  auto pub = nh.advertise<std_msgs::String>(topic, 1);
+}
+"""
+
+
+def test_a_va_list_passed_to_a_call_is_no_crash(write_tree) -> None:
+    """openni_camera's exception header hands a ``va_list`` (a typedef of an array type)
+    to vsnprintf in a function whose names are looked up: the array's element type was
+    asked of the typedef, which has none, and the run stopped (turtlebot 3e32933's tree)."""
+    root = write_tree({"cam/package.xml": package_xml("cam"), "cam/src/node.cpp": VA_LIST})
+    result = extract_cpp([str(root / "cam" / "src" / "node.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "status")]
