@@ -26,7 +26,8 @@ process each, ``--jobs 1``). Per bug it prints:
 - ``missed``: neither (also a bug in code no launch file starts: ``not_launched``);
 - ``skipped``: a mirror or a commit is not on disk (fetch github:owner/name first);
 - ``setup error``: check reports the project file itself (a launch file it names is
-  not there): the data file is wrong, not the tool.
+  not there): the data file is wrong, not the tool;
+- ``tool error``: check stopped without its JSON (an internal error), with its last line.
 
 Recall is found / (bugs in scope that ran). Mirrors are the bare repositories the
 ``fetch`` tool brings (``DIR/owner+name/repo``). Nothing goes to the network.
@@ -121,6 +122,10 @@ def prepare(bug: dict[str, Any], mirrors: Path, root: Path) -> str | dict[str, P
     return trees
 
 
+class CheckFailed(Exception):
+    """check stopped without its JSON (an internal error): the bug's line says why."""
+
+
 def check(project: Path) -> list[dict[str, Any]]:
     done = subprocess.run([sys.executable, "-m", "haros_arch", "check", str(project),
                            "--format", "json", "--jobs", "1"],
@@ -128,7 +133,8 @@ def check(project: Path) -> list[dict[str, Any]]:
     try:
         return list(json.loads(done.stdout)["findings"])
     except (ValueError, KeyError):
-        raise SystemExit(f"check failed on {project}: {done.stderr[-2000:]}") from None
+        last = (done.stderr.strip().splitlines() or ["no output"])[-1]
+        raise CheckFailed(f"{project.parent.name}: {last[:300]}") from None
 
 
 def pointing(findings: list[dict[str, Any]], expect: dict[str, Any], suffix: str = ""
@@ -218,7 +224,10 @@ def main(argv: list[str]) -> int:
             if isinstance(trees, str):
                 result = f"skipped ({trees})"
             else:
-                result = verdict(bug, trees, args.verbose)
+                try:
+                    result = verdict(bug, trees, args.verbose)
+                except CheckFailed as failed:
+                    result = f"tool error ({failed})"
             key = result.split(" (")[0].split(",")[0]
             counts[key] = counts.get(key, 0) + 1
             print(f"{bug['id']:24} {result}  [{time.monotonic() - start:.0f} s]", flush=True)
