@@ -121,6 +121,10 @@ class PrimitiveCall:
     # when that is the member's only write in the file; a source condition over the
     # member is then decided per instance by the parameter's value (graph.conditions)
     variable: str | None = field(default=None, metadata={"optional": True})
+    # rospy: the call gives no queue_size at all (not even through *args / **kwargs): a
+    # Publisher then publishes synchronously, in the caller's thread (rospy warns), a
+    # Subscriber queues without bound; a queue_size the parse cannot value is not this
+    queue_size_missing: bool = field(default=False, metadata={"optional": True})
     # in one translation unit's calls only (never in a node's): the USR of the
     # constructor whose body makes this call with a name from its own parameters, which
     # no call in that unit gives; the node makes it only if one of its files constructs

@@ -66,7 +66,7 @@ FIELDS: dict[type, tuple[str, ...]] = {
     PrimitiveCall: ("kind", "name", "type", "queue_size", "qos", "latch", "callback",
                     "conditions", "location", "name_param", "name_default", "origin",
                     "has_default", "default", "searched", "tested", "handle_namespace",
-                    "deletes"),
+                    "deletes", "queue_size_missing"),
     Configuration: ("name", "launch", "args", "nodes", "topics", "services", "actions",
                     "parameters", "links", "direct_links", "diagnostics", "package_paths",
                     "incomplete_nodes", "remaps"),

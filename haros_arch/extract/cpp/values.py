@@ -468,9 +468,13 @@ def _is_array(cursor: Cursor) -> bool:
 def _const_array(decl: Cursor) -> bool:
     """``constexpr char kTopic[] = "submap_list";`` (cartographer_ros' node_constants.h):
     the const is on the elements, not on the array type."""
-    kind = decl.type.get_canonical().kind  # whose element type has lost its const
-    return kind in (TypeKind.CONSTANTARRAY, TypeKind.INCOMPLETEARRAY) and (
-        decl.type.element_type.is_const_qualified())
+    arrays = (TypeKind.CONSTANTARRAY, TypeKind.INCOMPLETEARRAY)
+    canonical = decl.type.get_canonical()  # whose element type has lost its const
+    if canonical.kind not in arrays:
+        return False
+    # a typedef of an array type (va_list) has no element type of its own
+    written = decl.type if decl.type.kind in arrays else canonical
+    return bool(written.element_type.is_const_qualified())
 
 
 def _may_write(call: Cursor, index: int, decayed: bool = False) -> bool:

@@ -277,8 +277,12 @@ def add_import(module: Module, loader: Loader, statement: ast.Import | ast.Impor
             imports[name] = f"{source}.{alias.name}"
 
 
-_PRINT = re.compile(r"^(\s*)print\b(?!\s*\()(?!\s*=)(.*)$")
-_EXEC = re.compile(r"^(\s*)exec\s+(?!\()(.*)$")
+# a statement at the start of a line, or after a compound statement's colon on it
+# (``if verbose: print x``, ``else: print y``)
+_HEAD = (r"^(\s*(?:(?:if|elif|while|for|with|except)\b[^#:'\"]*:\s*"
+         r"|(?:else|try|finally)\s*:\s*)?)")
+_PRINT = re.compile(_HEAD + r"print\b(?!\s*\()(?!\s*=)(.*)$")
+_EXEC = re.compile(_HEAD + r"exec\s+(?!\()(.*)$")
 _EXCEPT = re.compile(r"^(\s*except\s+[^,:]+),\s*(\w+)\s*:")
 _OCTAL = re.compile(r"(?<![\w.])0([0-7]+)(?![\w.])")
 _LONG = re.compile(r"(?<![\w.])(\d+)[lL](?!\w)")
@@ -294,9 +298,18 @@ def _repair_python2(text: str) -> str:
     Only a repair for reading ROS calls: the result is never run.
     """
     lines = text.split("\n")
+    going: tuple[int, str] | None = None  # a print / exec statement that goes on
     for i, line in enumerate(lines):
-        fixed = _PRINT.sub(lambda m: f"{m.group(1)}print({_strip_chevron(m.group(2))})", line)
-        fixed = _EXEC.sub(lambda m: f"{m.group(1)}exec({m.group(2)})", fixed)
+        fixed = line
+        if going is not None:
+            fixed, going = _close_call(fixed, going)
+        else:
+            for pattern, word in ((_PRINT, "print"), (_EXEC, "exec")):
+                found = pattern.match(fixed)
+                if found is not None:
+                    rest = _strip_chevron(found.group(2)) if word == "print" else found.group(2)
+                    fixed, going = _close_call(f"{found.group(1)}{word}({rest}", (-1, ""))
+                    break
         fixed = _EXCEPT.sub(lambda m: f"{m.group(1)} as {m.group(2)}:", fixed)
         fixed = _RAISE.sub(lambda m: f"{m.group(1)}({m.group(2)})", fixed)
         fixed = _BACKTICK.sub(lambda m: f"repr({m.group(1)})", fixed)
@@ -312,4 +325,46 @@ def _strip_chevron(rest: str) -> str:
     rest = rest.strip()
     if rest.startswith(">>"):
         rest = rest[2:].split(",", 1)[1] if "," in rest else ""
-    return rest.rstrip(",")
+    return rest  # a trailing comma goes where the statement ends (_close_call)
+
+
+def _close_call(line: str, state: tuple[int, str]) -> tuple[str, tuple[int, str] | None]:
+    """A line of a print / exec statement made a call. ``state``: the brackets open
+    before the line, the call's own ``(`` not counted (-1 on the first line, which holds
+    that ``(``), and the triple quote of a string still open. The line with the call's
+    ``)`` where the statement ends (before a comment, so a statement continued by a
+    backslash, an open bracket or a long string keeps its lines), and the state after
+    it, None once the statement has ended."""
+    depth, quote = state
+    opened, comment, quote = _scan(line, quote)
+    depth += opened
+    code = line[:comment].rstrip()
+    if depth > 0 or quote or code.endswith("\\"):
+        return line, (depth, quote)
+    return code.rstrip(",") + ")" + line[len(code):], None
+
+
+def _scan(code: str, quote: str = "") -> tuple[int, int, str]:
+    """Brackets opened minus closed in ``code`` outside strings, where its comment starts
+    (its length when none) and the triple quote of a string open at its end; ``quote``:
+    the one open at its start."""
+    depth, i = 0, 0
+    while i < len(code):
+        char = code[i]
+        if quote:
+            if char == "\\":
+                i += 1
+            elif code.startswith(quote, i):
+                i += len(quote) - 1
+                quote = ""
+        elif char == "#":
+            return depth, i, ""
+        elif char in "\"'":
+            quote = char * 3 if code.startswith(char * 3, i) else char
+            i += len(quote) - 1
+        elif char in "([{":
+            depth += 1
+        elif char in ")]}":
+            depth -= 1
+        i += 1
+    return depth, len(code), quote if len(quote) == 3 else ""

@@ -400,9 +400,15 @@ class Walker:
             base.type = self._type(argument(call, spec.type), frame, version,
                                    spec.kind.startswith("action"))
         if spec.queue is not None:
-            queue = evaluate(ev, argument(call, spec.queue), frame)
+            given = argument(call, spec.queue)
+            queue = evaluate(ev, given, frame)
             base.queue_size = queue if isinstance(queue, int) and not isinstance(
                 queue, bool) else None
+            # none given (nor maybe through *args / **kwargs), or None written
+            base.queue_size_missing = (given is None and not any(
+                isinstance(a, ast.Starred) for a in call.args) and all(
+                k.arg is not None for k in call.keywords)) or (
+                isinstance(given, ast.Constant) and given.value is None)
         if spec.latch is not None:
             base.latch = evaluate(ev, argument(call, spec.latch), frame) is True
         base.latch = base.latch or spec.fixed_latch

@@ -1,0 +1,242 @@
+"""Recall of ``haros-arch check`` on real architecture bugs from the ROBUST dataset.
+
+    .venv/bin/python bench/robust_bugs.py [--mirrors DIR] [--keep DIR] [--only ID ...] [-v]
+
+``robust_bugs.yaml`` beside this script lists the bugs of ROBUST (github:robust-rosin/robust,
+one ``.bug`` file per bug) whose fault is in the architecture (a name, remap, namespace,
+parameter or queue size), each with the repository and fix commit the ``.bug`` file names,
+whether a static tool could see it at all (and why not), and for those it could: the
+launch files the bug is about, and the finding that would point at it (rule ids, the file
+it is reported in, a text of its message or entities).
+
+For each bug in scope, both trees are written into a temporary folder (``--keep DIR``
+keeps them, ``DIR/<system>-<id>/{buggy,fixed}``): the fix commit's parent (buggy) and the
+fix commit (fixed), under ``src/<repository>``, with the repositories the launch files
+need from the same organisation (``deps``) at their last commit before the fix's date
+(or the commit given). A project file that launches the bug's launch files is written
+beside, and ``python -m haros_arch check project.yaml --format json`` runs on each (one
+process each, ``--jobs 1``). Per bug it prints:
+
+- ``found``: a finding of the expected rules whose location and text point at the bug,
+  and ``gone after fix`` when the fixed tree no longer has it (else ``stays after fix``);
+- ``undecided``: only the rule's ``-undecided`` info points at it (the tool says it
+  cannot decide; the reason is in that info's message). That info names its first case
+  only: a bug's ``expect.unseen`` query (``haros-arch query``) tells whether the bug's
+  case is among the others (no finding, a node of unknown interface in the way);
+- ``missed``: neither (also a bug in code no launch file starts: ``not_launched``);
+- ``skipped``: a mirror or a commit is not on disk (fetch github:owner/name first);
+- ``setup error``: check reports the project file itself (a launch file it names is
+  not there): the data file is wrong, not the tool;
+- ``tool error``: check stopped without its JSON (an internal error), with its last line.
+
+Recall is found / (bugs in scope that ran). Mirrors are the bare repositories the
+``fetch`` tool brings (``DIR/owner+name/repo``). Nothing goes to the network.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import re
+import subprocess
+import sys
+import tarfile
+import tempfile
+import time
+from io import BytesIO
+from pathlib import Path
+from typing import Any
+
+import yaml
+
+HERE = Path(__file__).resolve().parent
+DATA = HERE / "robust_bugs.yaml"
+
+
+def git_dir(mirrors: Path, repo: str) -> Path | None:
+    """The bare git directory of ``owner/name`` under the mirrors, or None."""
+    base = mirrors / repo.replace("/", "+") / "repo"
+    for candidate in (base / ".git", base):
+        if (candidate / "HEAD").is_file():
+            return candidate
+    return None
+
+
+def git(gitdir: Path, *args: str) -> str | None:
+    done = subprocess.run(["git", f"--git-dir={gitdir}", *args], capture_output=True,
+                          text=True, check=False)
+    return done.stdout.strip() if done.returncode == 0 else None
+
+
+def materialize(gitdir: Path, rev: str, dest: Path) -> None:
+    """``rev``'s tree under ``dest``; blobs a mirror lacks are left out."""
+    dest.mkdir(parents=True, exist_ok=True)
+    done = subprocess.run(["git", f"--git-dir={gitdir}", "archive", rev], capture_output=True,
+                          check=False)
+    if done.returncode == 0:
+        with tarfile.open(fileobj=BytesIO(done.stdout)) as archive:
+            if hasattr(tarfile, "data_filter"):  # Python 3.10.12+, 3.11.4+
+                archive.extractall(dest, filter="data")
+            else:
+                archive.extractall(dest)  # a tree of our own mirror
+        return
+    sys.path.insert(0, str(HERE))
+    from diff_real import _copy_tree  # the same blob-by-blob copy the diff bench uses
+
+    _copy_tree(str(gitdir), rev, str(dest))
+
+
+def prepare(bug: dict[str, Any], mirrors: Path, root: Path) -> str | dict[str, Path]:
+    """Both trees and project files of one bug, or why it is skipped."""
+    main = git_dir(mirrors, bug["repo"])
+    if main is None:
+        return f"no mirror of {bug['repo']}"
+    fix = git(main, "rev-parse", "--verify", "-q", bug["fix"] + "^{commit}")
+    parent = git(main, "rev-parse", "--verify", "-q", bug["fix"] + "^")
+    if fix is None or parent is None:
+        return f"commit {bug['fix'][:10]} or its parent not in the mirror of {bug['repo']}"
+    date = git(main, "show", "-s", "--format=%cI", fix)
+    deps: list[tuple[Path, str, str]] = []
+    for dep in bug.get("deps", []):
+        name, _, pinned = dep.partition("@")
+        gitdir = git_dir(mirrors, name)
+        if gitdir is None:
+            return f"no mirror of {name}"
+        rev = pinned or git(gitdir, "rev-list", "-1", f"--before={date}", "--all")
+        if not rev:
+            return f"no commit of {name} before {date}"
+        deps.append((gitdir, rev, name.split("/")[1]))
+    trees = {}
+    for side, rev in (("buggy", parent), ("fixed", fix)):
+        folder = root / side
+        materialize(main, rev, folder / "src" / bug["repo"].split("/")[1])
+        for gitdir, dep_rev, name in deps:
+            materialize(gitdir, dep_rev, folder / "src" / name)
+        project = {"project": f"{bug['id'].replace('/', '-')}-{side}", "workspace": "src",
+                   "configurations": {"bug": {"launch": bug["launch"],
+                                              "args": bug.get("args", {})}}}
+        if bug.get("environment"):
+            project["environment"] = bug["environment"]
+        (folder / "project.yaml").write_text(yaml.safe_dump(project, sort_keys=False))
+        trees[side] = folder / "project.yaml"
+    return trees
+
+
+class CheckFailed(Exception):
+    """check stopped without its JSON (an internal error): the bug's line says why."""
+
+
+def check(project: Path) -> list[dict[str, Any]]:
+    done = subprocess.run([sys.executable, "-m", "haros_arch", "check", str(project),
+                           "--format", "json", "--jobs", "1"],
+                          capture_output=True, text=True, cwd=project.parent, check=False)
+    try:
+        return list(json.loads(done.stdout)["findings"])
+    except (ValueError, KeyError):
+        last = (done.stderr.strip().splitlines() or ["no output"])[-1]
+        raise CheckFailed(f"{project.parent.name}: {last[:300]}") from None
+
+
+def pointing(findings: list[dict[str, Any]], expect: dict[str, Any], suffix: str = ""
+             ) -> list[dict[str, Any]]:
+    """The findings of the expected rules (``rule + suffix``) that point at the bug."""
+    rules = {rule + suffix for rule in expect["rules"]}
+    out = []
+    for finding in findings:
+        if finding["rule"] not in rules:
+            continue
+        files = [finding.get("location") or {}] + [a.get("location") or {}
+                                                   for a in finding.get("also", [])]
+        wanted = expect.get("file") or []
+        wanted = [wanted] if isinstance(wanted, str) else wanted
+        if wanted and not any(str(f.get("file", "")).endswith(tuple(wanted)) for f in files):
+            continue
+        text = finding["message"] + " " + " ".join(finding.get("entities", []))
+        if all(word in text for word in expect.get("text", [])):
+            out.append(finding)
+    return out
+
+
+def setup_error(findings: list[dict[str, Any]]) -> str | None:
+    """What check says is wrong with the project file itself (a launch file not found)."""
+    for finding in findings:
+        if str((finding.get("location") or {}).get("file", "")).endswith("project.yaml"):
+            return finding["message"]
+    return None
+
+
+def verdict(bug: dict[str, Any], trees: dict[str, Path], verbose: bool) -> str:
+    buggy = check(trees["buggy"])
+    fixed = check(trees["fixed"])
+    wrong = setup_error(buggy) or setup_error(fixed)
+    if wrong:
+        return f"setup error ({wrong})"
+    found = pointing(buggy, bug["expect"])
+    if verbose:
+        for finding in found or pointing(buggy, bug["expect"], "-undecided"):
+            print(f"    {finding['rule']}: {finding['message'][:300]}")
+    if found:
+        after = "gone after fix" if not pointing(fixed, bug["expect"]) else "stays after fix"
+        return f"found, {after}"
+    if pointing(buggy, bug["expect"], "-undecided"):
+        return "undecided"
+    unseen = bug["expect"].get("unseen")
+    if unseen and any(pointing(buggy, {**bug["expect"], "file": [], "text": []},
+                               "-undecided")) and matches(trees["buggy"], unseen):
+        # the rule's undecided info names its first case only: the query says whether
+        # this one is among them (no finding, a node of unknown interface in the way)
+        return "undecided"
+    return "missed"
+
+
+def matches(project: Path, text: str) -> bool:
+    """Whether ``haros-arch query`` finds anything for ``text`` on the project."""
+    done = subprocess.run([sys.executable, "-m", "haros_arch", "query", str(project), text],
+                          capture_output=True, text=True, cwd=project.parent, check=False)
+    counted = re.search(r"^(\d+) match\(es\)\s*\Z", done.stdout, re.MULTILINE)
+    return done.returncode == 0 and counted is not None and int(counted.group(1)) > 0
+
+
+def main(argv: list[str]) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--mirrors", default="/work/.mirror", type=Path)
+    parser.add_argument("--keep", type=Path, help="write the trees here and keep them")
+    parser.add_argument("--only", nargs="*", default=[], help="bug ids (system/id or id)")
+    parser.add_argument("-v", "--verbose", action="store_true")
+    args = parser.parse_args(argv)
+    bugs = yaml.safe_load(DATA.read_text())["bugs"]
+    counts: dict[str, int] = {}
+    with tempfile.TemporaryDirectory(prefix="robust-") as scratch:
+        base = args.keep or Path(scratch)
+        for bug in bugs:
+            if args.only and not {bug["id"], bug["id"].split("/")[1]} & set(args.only):
+                continue
+            if not bug.get("in_scope"):
+                print(f"{bug['id']:24} out of scope: {bug['why']}")
+                counts["out of scope"] = counts.get("out of scope", 0) + 1
+                continue
+            start = time.monotonic()
+            if bug.get("not_launched"):
+                print(f"{bug['id']:24} missed (no configuration has it: {bug['not_launched']})")
+                counts["missed"] = counts.get("missed", 0) + 1
+                continue
+            trees = prepare(bug, args.mirrors, base / bug["id"].replace("/", "-"))
+            if isinstance(trees, str):
+                result = f"skipped ({trees})"
+            else:
+                try:
+                    result = verdict(bug, trees, args.verbose)
+                except CheckFailed as failed:
+                    result = f"tool error ({failed})"
+            key = result.split(" (")[0].split(",")[0]
+            counts[key] = counts.get(key, 0) + 1
+            print(f"{bug['id']:24} {result}  [{time.monotonic() - start:.0f} s]", flush=True)
+    ran = sum(n for k, n in counts.items() if k in ("found", "undecided", "missed"))
+    print("totals: " + ", ".join(f"{k} {n}" for k, n in sorted(counts.items())))
+    if ran:
+        print(f"recall: {counts.get('found', 0)}/{ran} = {counts.get('found', 0) / ran:.2f}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
