@@ -40,7 +40,7 @@ from .handles import (
     qualified_name,
     record_class,
 )
-from .links import Fact, argument_facts
+from .links import Fact, argument_facts, constructed_by
 from .members import MemberWrites, member_of
 from .owners import (
     constructed_class,
@@ -523,6 +523,39 @@ class CallFinder:
     def _emit(self, spec: api.RosFunction, call: Cursor, args: list[Cursor],
               cls: Cursor | None, conditions: tuple[Condition, ...], scope: Scope,
               at: Cursor | None = None, at_scope: Scope | None = None) -> None:
+        """Emit ``call`` of ``spec`` (``_emit_one``), once per constructor when its name
+        or handle reads a member the class's constructors initialise differently
+        (``CallSites.member``): each made only where a file of the node calls that
+        constructor (``made_in``; a default constructor also where none of the others
+        is called, as a loader makes the class), or each kept when this file constructs
+        the class by several."""
+        sites = self.sites
+        if sites is None or self._made_by is not None or sites.forks is not None:
+            self._emit_one(spec, call, args, cls, conditions, scope, at, at_scope)
+            return
+        first = len(self.calls)
+        sites.forks = []
+        try:
+            self._emit_one(spec, call, args, cls, conditions, scope, at, at_scope)
+            fork = sites.forks[0] if sites.forks else None
+        finally:
+            sites.forks = None
+        if fork is None:
+            return
+        made = [None if fork.local else constructed_by(c) for _, c in fork.options]
+        for emitted in self.calls[first:]:
+            emitted.made_in = emitted.made_in or made[0]
+        for (_, constructor), made_in in zip(fork.options[1:], made[1:], strict=True):
+            sites.choice = (fork.field, place_of(constructor))
+            self._made_by = made_in
+            try:
+                self._emit_one(spec, call, args, cls, conditions, scope, at, at_scope)
+            finally:
+                sites.choice = self._made_by = None
+
+    def _emit_one(self, spec: api.RosFunction, call: Cursor, args: list[Cursor],
+                  cls: Cursor | None, conditions: tuple[Condition, ...], scope: Scope,
+                  at: Cursor | None = None, at_scope: Scope | None = None) -> None:
         """Emit ``call`` of ``spec``; ``at`` is the call that makes it, when another one
         (``nh.subscribe(ops)`` for ``ops.init<M>(...)``) gives its location and handle."""
         if self.ros2 and spec.ros2 is not None:
