@@ -58,6 +58,7 @@ class CallSites:
         # members whose constructors disagree, met while a call is emitted (None: not
         # recorded), and the constructor to take for one of them (member, constructor)
         self.forks: list[Fork] | None = None
+        self._members: dict[tuple[str, int], list[tuple[Cursor | None, Cursor]]] = {}
         self.choice: tuple[tuple[str, int], tuple[str, int]] | None = None
 
     def agreed(self, parm: Cursor, read: Callable[[Cursor, Scope], Value],
@@ -150,7 +151,10 @@ class CallSites:
         constructs the class, else every one: the first (the first that writes the
         member) is taken and, while ``forks`` records, the alternatives are kept there
         for the call being emitted to be made once per constructor."""
-        options = constructor_values(field)
+        key = key_of(field)
+        options = self._members.get(key)
+        if options is None:
+            options = self._members[key] = constructor_values(field)
         if not options or all(value is None for value, _ in options):
             return member_initialiser(field)
         texts = {_text(value) for value, _ in options}
@@ -160,7 +164,6 @@ class CallSites:
                      and key_of(o[1]) == key_of(function)), None)
         if mine is not None:
             return mine
-        key = key_of(field)
         if self.choice is not None and self.choice[0] == key:
             return next((o for o in options if key_of(o[1]) == self.choice[1]), options[0])
         here = [o for o in options if self.callers(o[1])]
