@@ -22,7 +22,7 @@ FILES = {
         find_package(ament_cmake REQUIRED)
         find_package(rclcpp REQUIRED)
         add_library(core SHARED src/layer.cpp src/costmap.cpp src/filter.cpp)
-        add_library(filters SHARED src/keep.cpp src/tight.cpp)
+        add_library(filters SHARED src/keep.cpp src/tight.cpp src/loose.cpp)
         target_link_libraries(filters core)
         ament_package()
         """,
@@ -30,6 +30,7 @@ FILES = {
         <library path="filters">
           <class type="maps::KeepFilter" base_class_type="nav2_costmap_2d::Layer"/>
           <class type="maps::TightFilter" base_class_type="nav2_costmap_2d::Layer"/>
+          <class type="maps::LooseFilter" base_class_type="nav2_costmap_2d::Layer"/>
         </library>
         """,
     "maps/include/maps/layer.hpp": """
@@ -76,6 +77,24 @@ FILES = {
           void process() override;
         };
         }
+        """,
+    "maps/include/maps/loose.hpp": """
+        #include "maps/filter.hpp"
+        namespace maps {
+        class LooseFilter : public Filter {
+        public:
+          void onInitialize() override
+          {
+            node_->declare_parameter(name_ + ".loose", 1);
+          }
+          void process() override {}
+        };
+        }
+        """,
+    "maps/src/loose.cpp": """
+        #include "maps/loose.hpp"
+        #include "pluginlib/class_list_macros.hpp"
+        PLUGINLIB_EXPORT_CLASS(maps::LooseFilter, maps::Layer)
         """,
     "maps/include/maps/costmap.hpp": """
         #include "rclcpp/rclcpp.hpp"
@@ -176,5 +195,10 @@ def test_a_base_method_the_plugin_redefines_is_not_run(write_tree) -> None:
     # other method still runs
     assert found["maps::TightFilter"] == [
         ("?.margin", "maps/src/tight.cpp"),
+        ("?.transform_tolerance", "maps/src/filter.cpp"),
+    ]
+    # redefined in the class's body
+    assert found["maps::LooseFilter"] == [
+        ("?.loose", "maps/include/maps/loose.hpp"),
         ("?.transform_tolerance", "maps/src/filter.cpp"),
     ]

@@ -86,6 +86,8 @@ def overridden(node: Node, workspace: Files) -> list[tuple[str, int, int]]:
                 end = found[i + 1][2] - 1 if i + 1 < len(found) else last
                 spans.append((source, cls, method, line, end))
     defined = {(cls, method) for _, cls, method, _, _ in spans}
+    headers = [t for source in node.sources for t in with_headers(source, workspace, 1)]
+    defined |= {(cls, method) for cls in bases for method in _inline_methods(cls, headers)}
     out = []
     for source, cls, method, first, end in spans:
         derived = any((other, method) in defined for other in bases[:rank[cls]])
@@ -121,6 +123,44 @@ def _bases(cls: str, texts: list[str]) -> list[str]:
                     out.append(_plain(words[-1]))
             return out
     return []
+
+
+# the head of a definition in a class body, up to its ``{``: ``void f(int x) const override``
+_METHOD_HEAD = re.compile(r"(~?[A-Za-z_]\w*)\s*\([^{};]*\)[^{};()]*$")
+MAX_CLASS_BODY = 200_000  # characters of a class body read for its inline methods
+
+
+def _inline_methods(cls: str, texts: list[str]) -> set[str]:
+    """The methods a class defines in its body (``void onInit() override { ... }``), from
+    the first declaration of it in ``texts`` that has a body."""
+    head = re.compile(r"\b(?:class|struct)\s+(?:\w+\s+)*?" + re.escape(cls)
+                      + r"\b[^;{]*\{")
+    for text in texts:
+        match = head.search(text)
+        if match is None:
+            continue
+        names: set[str] = set()
+        depth, start = 1, match.end()
+        end = min(len(text), match.end() + MAX_CLASS_BODY)
+        for index in range(match.end(), end):
+            char = text[index]
+            if char == "{":
+                if depth == 1:
+                    found = _METHOD_HEAD.search(text[start:index])
+                    if found:
+                        names.add(found.group(1))
+                depth += 1
+            elif char == "}":
+                depth -= 1
+                if depth == 0:
+                    break
+                if depth == 1:
+                    start = index + 1
+            elif char in ";:" and depth == 1 and text[index:index + 2] != "::" and (
+                    text[index - 1:index + 1] != "::"):
+                start = index + 1  # a declaration ends, or an access label
+        return names
+    return set()
 
 
 def _called(cls: str, method: str, texts: Iterable[str]) -> bool:
