@@ -243,6 +243,14 @@ CATALOGUE: dict[str, Entry] = {
         "interpreter evaluates (an unknown call, a while loop, an import of the "
         "workspace's own modules, ...). It is not run: its result is unknown, and what "
         "depends on it keeps '?' parts or a condition."),
+    "LAUNCH_PY_LIFECYCLE": Entry(
+        "info", "lifecycle transitions requested here are read as changing nothing in "
+        "the graph",
+        "A Python launch file emits lifecycle events (ChangeState) or handles a managed "
+        "node's transitions (OnStateTransition). A transition changes no node of the "
+        "graph: each managed node is taken with the whole interface its code makes, as "
+        "once configured, whatever state the launch file drives it to. The actions an "
+        "OnStateTransition handler runs are read, under that event. Said once per file."),
     "LAUNCH_PY_BUDGET": Entry(
         "warning", "interpretation stopped: {detail}",
         "A launch file exceeded a bound of the static interpreter (steps, call depth, "

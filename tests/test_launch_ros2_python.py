@@ -430,3 +430,35 @@ def generate_launch_description():
     model, _ = run(write_tree, body)  # MODEL unset, no default: unknown, the node may run
     assert [(n.name, bool(n.conditions)) for n in model.nodes] == [
         ("/diagnostics", False), ("/lite", True), ("/r1", False)]
+
+
+def test_lifecycle_events_change_no_node_and_are_said_once(write_tree):
+    """joystick_drivers' wiimote launch files: EmitEvent(ChangeState(...)) and
+    RegisterEventHandler(OnStateTransition(...)) drive a managed node's state, which
+    changes nothing in the graph: one info note per file, not a warning per call; the
+    actions a transition handler runs are read, under that event."""
+    model, _ = run(write_tree, """
+import launch
+import launch_ros
+import lifecycle_msgs.msg
+
+def generate_launch_description():
+    driver = launch_ros.actions.LifecycleNode(package='p', executable='drv', name='drv',
+                                              namespace='')
+    configure = launch.actions.EmitEvent(event=launch_ros.events.lifecycle.ChangeState(
+        lifecycle_node_matcher=launch_ros.events.lifecycle.matches_node_name('/drv'),
+        transition_id=lifecycle_msgs.msg.Transition.TRANSITION_CONFIGURE))
+    activate = launch.actions.EmitEvent(event=launch_ros.events.lifecycle.ChangeState(
+        lifecycle_node_matcher=launch_ros.events.lifecycle.matches_node_name('/drv'),
+        transition_id=lifecycle_msgs.msg.Transition.TRANSITION_ACTIVATE))
+    on_configured = launch.actions.RegisterEventHandler(
+        launch_ros.event_handlers.OnStateTransition(
+            target_lifecycle_node=driver, start_state='configuring', goal_state='inactive',
+            entities=[launch.actions.LogInfo(msg='configured'), activate,
+                      Node(package='p', executable='mon', name='monitor')]))
+    return LaunchDescription([driver, configure, on_configured])
+""")
+    assert [n.name for n in model.nodes] == ["/drv", "/monitor"]
+    assert model.nodes[0].conditions == ()
+    assert [c.statement for c in model.nodes[1].conditions] == ["event"]
+    assert [(d.code, d.severity) for d in model.diagnostics] == [("LAUNCH_PY_LIFECYCLE", "info")]

@@ -19,6 +19,7 @@ from .. import diagnostics as diag
 from ..diagnostics import Diagnostic
 from ..model.source import Node
 from ..model.values import UNKNOWN_MARK
+from ..plugins.inherit import without_overridden
 from ..workspace import Workspace
 
 if TYPE_CHECKING:
@@ -50,7 +51,8 @@ def extract_nodes(nodes: Sequence[Node], workspace: Workspace, *,
                                   cache_dir=cache_dir, jobs=jobs,
                                   compile_commands=compile_commands)
         for node, result in zip(cpp, batch.results, strict=True):
-            node.calls, node.rosname = result.calls, _rosname(node, result.rosname)
+            node.calls = without_overridden(node, result.calls, workspace)
+            node.rosname = _rosname(node, result.rosname)
             _process_nodes(node, result.rosnames)
         if cpp_batch is not None:
             cpp_batch.units.update(batch.units)
@@ -143,7 +145,7 @@ def extract_node(node: Node, workspace: Workspace) -> list[Diagnostic]:
         from .cpp import extract_cpp  # libclang loads only when there is C++ to parse
 
         result = extract_cpp(sources, workspace)
-        node.calls = result.calls
+        node.calls = without_overridden(node, result.calls, workspace)
         node.rosname = _rosname(node, result.rosname)
         _process_nodes(node, result.rosnames)
         return [*result.diagnostics, *completeness(node, result.diagnostics)]

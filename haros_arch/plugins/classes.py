@@ -78,6 +78,8 @@ def plugin_classes(package: Package, workspace: Files, libraries: Mapping[str, L
     ``type``) and keeps its C++ type in ``plugin_class``. Classes nothing loads (rviz,
     rqt panels) are not nodes.
     """
+    from .inherit import inherited_sources  # it reads classes with this module's helpers
+
     bases = plugin_bases()
     names = node_name_patterns()
     nodes: list[Node] = []
@@ -113,6 +115,10 @@ def plugin_classes(package: Package, workspace: Files, libraries: Mapping[str, L
                 files = [] if library is None else library.sources if (
                     kind == "nodelet" or library.own is None) else library.own
                 sources = narrow(files, registered, workspace)
+                if sources and library is not None:
+                    # its base classes' code, in whichever library it links builds it
+                    sources += inherited_sources(registered, sources, library.sources,
+                                                 workspace)
                 if files and not sources:
                     found.append(diag.make("PLUGIN_CLASS_NOT_BUILT", where, plugin=name,
                                            cls=registered, library=wanted or "?"))
@@ -240,7 +246,7 @@ def _untemplated(name: str) -> str:
 # ``std::vector<bool> RosFilter<T>::load(`` defines a member of RosFilter, not of vector)
 _MEMBER = re.compile(r"^(?![ \t])[\w:<>,&* \t]*?\b([A-Za-z_]\w*)\s*"
                      r"(?:<[^;{}()\n<>]*(?:<[^;{}()\n<>]*>[^;{}()\n<>]*)*>)?\s*::"
-                     r"\s*~?\w+\s*\(", re.MULTILINE)
+                     r"\s*(~?\w+)\s*\(", re.MULTILINE)
 _QUOTED_INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]([^>"]+)[>"]', re.MULTILINE)
 MAX_NAMED_HEADERS = 64  # per file: the headers of the workspace read for the names used
 
@@ -276,7 +282,7 @@ def _defined(source: str, workspace: Files) -> set[str]:
     text = text or ""
     functions = {name for name, rest in _FUNCTION.findall(text)
                  if not rest.rstrip().endswith(";")} - _NOT_FUNCTIONS
-    return set(_MEMBER.findall(text)) | functions
+    return {match.group(1) for match in _MEMBER.finditer(text)} | functions
 
 
 def named_words(source: str, workspace: Files) -> frozenset[str]:
@@ -286,26 +292,47 @@ def named_words(source: str, workspace: Files) -> frozenset[str]:
     memo: dict[str, frozenset[str]] | None = getattr(workspace, "named_words", None)
     found = memo.get(source) if memo is not None else None
     if found is None:
-        found = frozenset(_named_words(source, workspace))
+        found = frozenset(set().union(
+            *(_WORD.findall(text) for text in with_headers(source, workspace))))
         if memo is not None:
             memo[source] = found
     return found
 
 
-def _named_words(source: str, workspace: Files) -> set[str]:
+def with_headers(source: str, workspace: Files, depth: int = 1) -> list[str]:
+    """The text of a file (workspace-relative or absolute) and of the headers of the
+    workspace it includes, found beside it or in its package's ``include`` folder, and
+    theirs down to ``depth`` levels of inclusion."""
     path = os.path.join(workspace.root, source)
-    text, _ = read_text(path, workspace.location(path))
-    words = set(_WORD.findall(text or ""))
+    texts: list[str] = []
+    seen: set[str] = set()
+    level = [path]
+    for step in range(depth + 1):
+        below: list[str] = []
+        for each in level:
+            if each in seen:
+                continue
+            seen.add(each)
+            text, _ = read_text(each, workspace.location(each))
+            texts.append(text or "")
+            if step < depth:
+                below.extend(_included(each, text or "", workspace))
+        level = below
+    return texts
+
+
+def _included(path: str, text: str, workspace: Files) -> list[str]:
+    """The headers of the workspace ``text`` (the file at ``path``) includes by name."""
+    out = []
     package = _package_root(os.path.dirname(path), workspace.root)
-    for header in _QUOTED_INCLUDE.findall(text or "")[:MAX_NAMED_HEADERS]:
+    for header in _QUOTED_INCLUDE.findall(text)[:MAX_NAMED_HEADERS]:
         for folder in (os.path.dirname(path), *(
                 [os.path.join(package, "include")] if package else [])):
             candidate = os.path.normpath(os.path.join(folder, header))
             if os.path.isfile(candidate) and candidate.startswith(workspace.root + os.sep):
-                found, _ = read_text(candidate, workspace.location(candidate))
-                words |= set(_WORD.findall(found or ""))
+                out.append(candidate)
                 break
-    return words
+    return out
 
 
 def _package_root(folder: str, top: str) -> str | None:

@@ -13,6 +13,7 @@ files pass: one ROS call per value.
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator
+from dataclasses import dataclass
 
 from clang.cindex import Cursor, CursorKind, Type, TypeKind
 
@@ -54,6 +55,11 @@ class CallSites:
         self._index: dict[tuple[str, int], list[tuple[Cursor, Cursor]]] | None = None
         self._scopes: dict[tuple[str, int], Scope] = {}
         self._active: set[tuple[str, int]] = set()  # parameters being read (recursion)
+        # members whose constructors disagree, met while a call is emitted (None: not
+        # recorded), and the constructor to take for one of them (member, constructor)
+        self.forks: list[Fork] | None = None
+        self._members: dict[tuple[str, int], list[tuple[Cursor | None, Cursor]]] = {}
+        self.choice: tuple[tuple[str, int], tuple[str, int]] | None = None
 
     def agreed(self, parm: Cursor, read: Callable[[Cursor, Scope], Value],
                unknown: Value) -> Value:
@@ -118,16 +124,56 @@ class CallSites:
         """(call, calling function) for the calls of ``function`` in this file."""
         return self._sites().get(key_of(function.canonical), [])
 
-    def field(self, field: Cursor) -> tuple[Cursor, Scope] | None:
-        """What a member holds: the value a constructor of its class initialises or
-        assigns it with (read in that constructor), else its default initialiser."""
-        found = member_initialiser(field)
+    def field(self, field: Cursor, function: Cursor | None = None
+              ) -> tuple[Cursor, Scope] | None:
+        """What a member holds, read in ``function``: the value a constructor of its
+        class initialises or assigns it with (read in that constructor), else its default
+        initialiser. When the class's constructors disagree, the one ``function`` is
+        (``member``)."""
+        found = self.member(field, function)
         if found is not None:
             value, constructor = found
-            return value, self.scope(constructor)
+            if value is not None:
+                return value, self.scope(constructor)
         value = initializer(field)
         return (value, Scope(None, self.macros, self.source, self)) if value is not None \
             else None
+
+    def member(self, field: Cursor, function: Cursor | None = None
+               ) -> tuple[Cursor | None, Cursor] | None:
+        """The value one constructor of ``field``'s class gives it (None: it leaves the
+        member to its default) and that constructor; else what an initialisation method
+        (``onInit``) gives it, as ``member_initialiser``; None when nothing does.
+
+        Constructors that disagree give one value per construction: the constructor
+        ``function`` is, else the one ``choice`` names (a call emitted once per
+        constructor, ``CppVisitor._emit``), else those this file calls when it
+        constructs the class, else every one: the first (the first that writes the
+        member) is taken and, while ``forks`` records, the alternatives are kept there
+        for the call being emitted to be made once per constructor."""
+        key = key_of(field)
+        options = self._members.get(key)
+        if options is None:
+            options = self._members[key] = constructor_values(field)
+        if not options or all(value is None for value, _ in options):
+            return member_initialiser(field)
+        texts = {_text(value) for value, _ in options}
+        if len(texts) == 1:
+            return options[0]
+        mine = next((o for o in options if function is not None
+                     and key_of(o[1]) == key_of(function)), None)
+        if mine is not None:
+            return mine
+        if self.choice is not None and self.choice[0] == key:
+            return next((o for o in options if key_of(o[1]) == self.choice[1]), options[0])
+        here = [o for o in options if self.callers(o[1])]
+        if here:  # the file constructs the class: by these constructors
+            if len({_text(value) for value, _ in here}) == 1:
+                return here[0]
+            options = here
+        if self.forks is not None and not any(f.field == key for f in self.forks):
+            self.forks.append(Fork(key, options[:MAX_CONSTRUCTORS], local=bool(here)))
+        return options[0]
 
     def _function_key(self, parm: Cursor) -> tuple[str, int]:
         function = parm.semantic_parent
@@ -253,6 +299,61 @@ def _bare(ctype: Type) -> str | None:
     return canonical.spelling.removeprefix("const ").removesuffix(" const")
 
 
+MAX_CONSTRUCTORS = 4  # alternatives of a member that constructors initialise differently
+
+
+@dataclass
+class Fork:
+    """A member whose value depends on the constructor: ``options`` (value or None for
+    the member's default, constructor), the first the one taken; ``local``: the file
+    constructs the class by each of them."""
+
+    field: tuple[str, int]
+    options: list[tuple[Cursor | None, Cursor]]
+    local: bool = False
+
+
+def constructor_values(field: Cursor) -> list[tuple[Cursor | None, Cursor]]:
+    """Per constructor of ``field``'s class defined in this file (its definition): the
+    value it initialises or assigns the member with, None when it leaves it (the
+    member's default); those that write it first, each in declaration order."""
+    owner = field.semantic_parent
+    if owner is None:
+        return []
+    writing: list[tuple[Cursor | None, Cursor]] = []
+    leaving: list[tuple[Cursor | None, Cursor]] = []
+    for member in owner.get_children():
+        if member.kind != CursorKind.CONSTRUCTOR:
+            continue
+        definition = member.get_definition()
+        if definition is None or _copies(definition, owner):
+            continue
+        value = _written(field, definition, True)
+        (writing if value is not None else leaving).append((value, definition))
+    return writing + leaving
+
+
+def _copies(constructor: Cursor, owner: Cursor) -> bool:
+    """A copy or move constructor: it gives the members another object's values."""
+    params = [p for p in constructor.get_children() if p.kind == CursorKind.PARM_DECL]
+    if len(params) != 1:
+        return False
+    pointee = params[0].type.get_pointee()
+    declaration = pointee.get_canonical().get_declaration() if pointee is not None else None
+    return declaration is not None and key_of(declaration) == key_of(owner)
+
+
+def _text(value: Cursor | None) -> str:
+    """An initialiser as its tokens (empty for none): two constructors that write the
+    same text give the same value when it reads none of their parameters."""
+    if value is None:
+        return ""
+    if any(node.kind == CursorKind.DECL_REF_EXPR and node.referenced is not None
+           and node.referenced.kind == CursorKind.PARM_DECL for node in value.walk_preorder()):
+        return f"\x00{key_of(value)}"  # a parameter of its constructor: its own value
+    return " ".join(t.spelling for t in value.get_tokens())
+
+
 # methods a host calls once, right after construction, to set a plugin or nodelet up
 INIT_METHODS = frozenset({"onInit", "initialize", "init", "configure", "on_configure",
                           "on_init"})
@@ -274,18 +375,26 @@ def member_initialiser(field: Cursor) -> tuple[Cursor, Cursor] | None:
         definition = member.get_definition()
         if definition is None:
             continue
-        constructor = member.kind == CursorKind.CONSTRUCTOR
-        children = list(definition.get_children())
-        for i, child in enumerate(children[:-1]):
-            if child.kind == CursorKind.MEMBER_REF and child.referenced == field:
-                return children[i + 1], definition
-        for node in definition.walk_preorder():
-            if node.kind == CursorKind.CALL_EXPR and node.spelling == "operator=":
-                args = list(node.get_arguments())
-                if len(args) == 2 and strip(args[0]).kind == CursorKind.MEMBER_REF_EXPR and (
-                    strip(args[0]).referenced == field
-                ) and (constructor or not _uses_parameter(args[1])):
-                    return args[1], definition
+        value = _written(field, definition, member.kind == CursorKind.CONSTRUCTOR)
+        if value is not None:
+            return value, definition
+    return None
+
+
+def _written(field: Cursor, definition: Cursor, constructor: bool) -> Cursor | None:
+    """What a constructor's initialiser list, or an assignment in the body of it or of an
+    initialisation method, gives ``field``."""
+    children = list(definition.get_children())
+    for i, child in enumerate(children[:-1]):
+        if child.kind == CursorKind.MEMBER_REF and child.referenced == field:
+            return children[i + 1]
+    for node in definition.walk_preorder():
+        if node.kind == CursorKind.CALL_EXPR and node.spelling == "operator=":
+            args = list(node.get_arguments())
+            if len(args) == 2 and strip(args[0]).kind == CursorKind.MEMBER_REF_EXPR and (
+                strip(args[0]).referenced == field
+            ) and (constructor or not _uses_parameter(args[1])):
+                return args[1]
     return None
 
 

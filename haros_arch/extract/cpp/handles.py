@@ -163,11 +163,16 @@ class Namespaces:
                 return self._dropped_prefix(decl)
             return UNKNOWN if value is None else self.of(value, scope, depth + 1)
         if kind == CursorKind.MEMBER_REF_EXPR and expr.referenced is not None:
-            found = member_initialiser(expr.referenced)
-            if found is None:
+            field = expr.referenced
+            found = member_initialiser(field) if self.sites is None else self.sites.member(
+                field, scope.body)
+            value = found[0] if found is not None else None
+            if value is None and found is not None:  # left to its default initialiser
+                value = initializer(field)
+            if value is None:
                 # a member no constructor initialises: the default handle
                 return ("",) if is_handle(expr) else UNKNOWN
-            return self.of(found[0], Scope(None, self.macros, self.source, self.sites),
+            return self.of(value, Scope(None, self.macros, self.source, self.sites),
                            depth + 1)
         if kind == CursorKind.CXX_NEW_EXPR:
             inner = [c for c in expr.get_children() if c.kind.is_expression()]

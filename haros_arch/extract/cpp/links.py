@@ -89,6 +89,44 @@ def _value(arg: Cursor, scope: Scope, namespaces: Namespaces) -> str | None:
     return None
 
 
+# ``made_in`` of one alternative of a call whose member the class's constructors give
+# different values (``CallSites.member``): the constructor's USR after ``ALTERNATIVE``,
+# and ``LOADABLE`` first for a constructor that takes no argument (a loader may call it)
+ALTERNATIVE = "|"
+LOADABLE = "*"
+
+
+def constructed_by(constructor: Cursor) -> str | None:
+    """The ``made_in`` of the alternative of a call that ``constructor`` makes."""
+    usr = constructor.canonical.get_usr()
+    if not usr:
+        return None
+    params = [p for p in constructor.get_children() if p.kind == CursorKind.PARM_DECL]
+    required = [p for p in params if not any(c.kind.is_expression() for c in p.get_children())]
+    return (ALTERNATIVE if required else LOADABLE + ALTERNATIVE) + usr
+
+
+def _made(made_in: str, called: set[str], constructed: set[str | None],
+          unseen: Collection[str]) -> bool:
+    """Whether a call made in a constructor (``made_in``) is made in the node: its
+    constructor is called by a file of the node, or the parse left errors that could
+    hide that. One alternative of a member's value (``ALTERNATIVE``) is made when its
+    constructor is called, not when the node's files construct the class by another
+    one; when they construct it by none, a default constructor's is (a loader calls
+    it), another's only where errors could hide the construction."""
+    loadable = made_in.startswith(LOADABLE + ALTERNATIVE)
+    usr = made_in.removeprefix(LOADABLE).removeprefix(ALTERNATIVE)
+    if usr in called:
+        return True
+    cls = class_of(usr)
+    if usr != made_in:  # an alternative
+        if cls in constructed:
+            return False
+        if loadable:
+            return True
+    return "*" in unseen or cls in unseen
+
+
 def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact],
             unseen: Collection[str] = ("*",)) -> tuple[list[PrimitiveCall], list[Diagnostic]]:
     """The calls with their placeholders filled from ``facts`` (of the same node). A
@@ -98,14 +136,13 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact],
     facts = list(facts)
     passed = _passed(facts)
     called = {fact[0] for fact in facts}
+    constructed = {class_of(usr) for usr in called if _constructor(usr)}
     out: list[PrimitiveCall] = []
     found: list[Diagnostic] = []
     for call in calls:
         if call.made_in is not None:
-            if call.made_in not in called and "*" not in unseen and (
-                class_of(call.made_in) not in unseen
-            ):
-                continue  # no file of the node constructs the class: not made
+            if not _made(call.made_in, called, constructed, unseen):
+                continue  # no file of the node constructs the class so: not made
             call = dataclasses.replace(call, made_in=None)
         if PLACEHOLDER not in call.name and PLACEHOLDER not in (call.handle_namespace or ""):
             out.append(call)
@@ -141,12 +178,19 @@ def resolve_name(name: str, facts: Iterable[Fact]) -> str:
 
 
 _CLASS = re.compile(r"@(?:S|ST>\d+(?:#[^@]*)?)@([A-Za-z_]\w*)@F")
+_FUNCTION = re.compile(r"@F@([A-Za-z_]\w*)")
 
 
 def class_of(usr: str) -> str | None:
     """The name of the class of a constructor's (or method's) USR."""
     found = _CLASS.findall(usr)
     return found[-1] if found else None
+
+
+def _constructor(usr: str) -> bool:
+    """Whether a USR is a constructor's (its function named as its class)."""
+    cls, function = class_of(usr), _FUNCTION.findall(usr)
+    return cls is not None and bool(function) and function[-1] == cls
 
 
 def _passed(facts: Iterable[Fact]) -> dict[str, dict[str, dict[int, str]]]:

@@ -326,7 +326,7 @@ class Scope:
             key_of(decl) in self.writes
         ):
             return None
-        return self.sites.field(decl)
+        return self.sites.field(decl, self.body)
 
     def is_parameter(self, decl: Cursor) -> bool:
         """A parameter this function never assigns, whose callers may tell its value."""

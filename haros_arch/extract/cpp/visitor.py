@@ -40,7 +40,7 @@ from .handles import (
     qualified_name,
     record_class,
 )
-from .links import Fact, argument_facts
+from .links import Fact, argument_facts, constructed_by
 from .members import MemberWrites, member_of
 from .owners import (
     constructed_class,
@@ -87,6 +87,7 @@ _ZEROED: dict[TypeKind, object] = {
     TypeKind.ULONG: 0, TypeKind.LONGLONG: 0, TypeKind.ULONGLONG: 0, TypeKind.SHORT: 0,
     TypeKind.USHORT: 0, TypeKind.FLOAT: 0.0, TypeKind.DOUBLE: 0.0,
 }
+MAX_SITE_DEPTH = 3  # constructors of constructors whose sites' conditions are followed
 _PREPROCESSED = frozenset({CursorKind.MACRO_INSTANTIATION, CursorKind.INCLUSION_DIRECTIVE})
 _PARAM_KINDS = ("read", "declare")
 _VALUE_METHODS = frozenset({"c_str", "str", "as_string", "as_int", "as_double", "as_bool",
@@ -255,8 +256,12 @@ class CallFinder:
             function.kind == CursorKind.FUNCTION_TEMPLATE and function.location.file
             is not None and function.location.file.name != self.tu.spelling) else None
         tested, self._status_reads = TestedCalls(self.reader), []
+        # a constructor's calls exist where the class is constructed: under the
+        # conditions of its construction sites in this file
+        made_under = self._constructed_under(function, 0)
+        self.reader.in_main = function.spelling == "main" and params[:2] == ["argc", "argv"]
         stack: list[tuple[Cursor, tuple[Condition, ...]]] = [
-            (child, ()) for child in reversed(list(function.get_children()))
+            (child, made_under) for child in reversed(list(function.get_children()))
             if child.kind != CursorKind.PARM_DECL]
         while stack:
             node, conditions = stack.pop()
@@ -280,6 +285,46 @@ class CallFinder:
             stack.extend((child, conditions + extra) for child, extra in reversed(branches))
         for site, read in self._status_reads:
             read.tested = read.tested or site in tested.keys
+
+    def _constructed_under(self, function: Cursor, depth: int) -> tuple[Condition, ...]:
+        """The conditions under which this file constructs the class of the constructor
+        ``function``: those every construction site shares (HectorDrawings, made only
+        ``if (p_pub_drawings)``), with those of the sites of the constructor that
+        constructs it; none where a site is unconditional, or the file constructs the
+        class nowhere (another file, or a loader, may)."""
+        if self.sites is None or depth > MAX_SITE_DEPTH or not is_constructor(function):
+            return ()
+        sites = self.sites.callers(function)
+        if not sites or len(sites) > CallSites.MAX_SITES:
+            return ()
+        shared: tuple[Condition, ...] | None = None
+        for call, caller in sites:
+            found = self._conditions_at(caller, call)
+            if found is None:
+                return ()
+            if caller.kind != CursorKind.FIELD_DECL and is_constructor(caller):
+                found = self._constructed_under(caller, depth + 1) + found
+            shared = found if shared is None else tuple(c for c in shared if c in found)
+            if not shared:
+                return ()
+        return shared or ()
+
+    def _conditions_at(self, function: Cursor, call: Cursor) -> tuple[Condition, ...] | None:
+        """The source conditions of ``call`` in the body of ``function`` (None when it is
+        not found there), as ``_function`` reads them."""
+        wanted = place_of(call)
+        params = [c.spelling for c in function.get_children() if c.kind == CursorKind.PARM_DECL]
+        self.reader.in_main = function.spelling == "main" and params[:2] == ["argc", "argv"]
+        stack: list[tuple[Cursor, tuple[Condition, ...]]] = [
+            (child, ()) for child in reversed(list(function.get_children()))
+            if child.kind != CursorKind.PARM_DECL]
+        while stack:
+            node, conditions = stack.pop()
+            if node.kind == CursorKind.CALL_EXPR and place_of(node) == wanted:
+                return conditions
+            branches = self.reader.branches(node)
+            stack.extend((child, conditions + extra) for child, extra in reversed(branches))
+        return None
 
     # -- one call ---------------------------------------------------------------------
 
@@ -523,6 +568,39 @@ class CallFinder:
     def _emit(self, spec: api.RosFunction, call: Cursor, args: list[Cursor],
               cls: Cursor | None, conditions: tuple[Condition, ...], scope: Scope,
               at: Cursor | None = None, at_scope: Scope | None = None) -> None:
+        """Emit ``call`` of ``spec`` (``_emit_one``), once per constructor when its name
+        or handle reads a member the class's constructors initialise differently
+        (``CallSites.member``): each made only where a file of the node calls that
+        constructor (``made_in``; a default constructor also where none of the others
+        is called, as a loader makes the class), or each kept when this file constructs
+        the class by several."""
+        sites = self.sites
+        if sites is None or self._made_by is not None or sites.forks is not None:
+            self._emit_one(spec, call, args, cls, conditions, scope, at, at_scope)
+            return
+        first = len(self.calls)
+        sites.forks = []
+        try:
+            self._emit_one(spec, call, args, cls, conditions, scope, at, at_scope)
+            fork = sites.forks[0] if sites.forks else None
+        finally:
+            sites.forks = None
+        if fork is None:
+            return
+        made = [None if fork.local else constructed_by(c) for _, c in fork.options]
+        for emitted in self.calls[first:]:
+            emitted.made_in = emitted.made_in or made[0]
+        for (_, constructor), made_in in zip(fork.options[1:], made[1:], strict=True):
+            sites.choice = (fork.field, place_of(constructor))
+            self._made_by = made_in
+            try:
+                self._emit_one(spec, call, args, cls, conditions, scope, at, at_scope)
+            finally:
+                sites.choice = self._made_by = None
+
+    def _emit_one(self, spec: api.RosFunction, call: Cursor, args: list[Cursor],
+                  cls: Cursor | None, conditions: tuple[Condition, ...], scope: Scope,
+                  at: Cursor | None = None, at_scope: Scope | None = None) -> None:
         """Emit ``call`` of ``spec``; ``at`` is the call that makes it, when another one
         (``nh.subscribe(ops)`` for ``ops.init<M>(...)``) gives its location and handle."""
         if self.ros2 and spec.ros2 is not None:

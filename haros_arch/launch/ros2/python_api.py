@@ -424,6 +424,29 @@ def event_handler(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     return e.Delayed(contents, f"on event {label}", "event", location=i.where(n))
 
 
+def state_handler(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """launch_ros' ``OnStateTransition``: its ``entities`` run when the managed node
+    makes the transition, each under that event, as other handlers' actions do."""
+    lifecycle(i, a, k, n)
+    entities = k.get("entities")
+    if entities is not None and not isinstance(entities, (e.Action, list, tuple,
+                                                          LaunchDescription)):
+        i.unsupported(n, "OnStateTransition with entities that are not actions is not "
+                         "interpreted")
+        entities = None
+    contents = actions(i, entities, n) if entities is not None else []
+    return e.Delayed(contents, "on event OnStateTransition", "event", location=i.where(n))
+
+
+def lifecycle(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """A lifecycle event or matcher (``ChangeState``, ``matches_node_name``): a managed
+    node's transitions change no node, topic nor service of the graph, which takes every
+    node with its interface as configured; said once per file (``LAUNCH_PY_LIFECYCLE``)."""
+    if not any(d.code == "LAUNCH_PY_LIFECYCLE" for d in i.diagnostics):
+        i.diagnostics.append(diag.make("LAUNCH_PY_LIFECYCLE", i.where(n)))
+    return None
+
+
 def register_handler(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     handler = arg(a, k, 0, "event_handler")
     return handler if isinstance(handler, e.Action) else None
@@ -535,6 +558,8 @@ API: dict[str, Builder] = {
     "RegisterEventHandler": register_handler, "OnProcessExit": event_handler,
     "OnProcessStart": event_handler, "OnExecutionComplete": event_handler,
     "OnShutdown": event_handler, "OnProcessIO": event_handler,
+    "OnStateTransition": state_handler, "ChangeState": lifecycle,
+    "matches_node_name": lifecycle, "matches_action": lifecycle,
     "OpaqueFunction": opaque_function,
     "LogInfo": ignored, "ExecuteProcess": ignored, "Shutdown": ignored,
     "EmitEvent": ignored, "AppendEnvironmentVariable": ignored, "SetROSLogDir": ignored,

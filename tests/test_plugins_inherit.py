@@ -1,0 +1,204 @@
+"""A plugin class runs its base classes' code: a base compiled into another library of
+the package (nav2's CostmapFilter in nav2_costmap_2d_core, the filters in ``filters``)
+gives the plugin's node the reads its methods make with the plugin's name, but not those
+of a base method the plugin redefines without calling it."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from haros_arch import cmake
+from haros_arch.extract import extract_nodes
+from haros_arch.workspace import scan
+from tests.conftest import package_xml
+
+LAYER = "maps::Layer"
+FILES = {
+    "maps/package.xml": package_xml("maps", "ament_cmake").replace(
+        "</export>", '<nav2_costmap_2d plugin="${prefix}/filters.xml"/></export>'),
+    "maps/CMakeLists.txt": """
+        cmake_minimum_required(VERSION 3.8)
+        project(maps)
+        find_package(ament_cmake REQUIRED)
+        find_package(rclcpp REQUIRED)
+        add_library(core SHARED src/layer.cpp src/costmap.cpp src/filter.cpp)
+        add_library(filters SHARED src/keep.cpp src/tight.cpp src/loose.cpp)
+        target_link_libraries(filters core)
+        ament_package()
+        """,
+    "maps/filters.xml": """
+        <library path="filters">
+          <class type="maps::KeepFilter" base_class_type="nav2_costmap_2d::Layer"/>
+          <class type="maps::TightFilter" base_class_type="nav2_costmap_2d::Layer"/>
+          <class type="maps::LooseFilter" base_class_type="nav2_costmap_2d::Layer"/>
+        </library>
+        """,
+    "maps/include/maps/layer.hpp": """
+        #include <string>
+        #include "rclcpp/rclcpp.hpp"
+        namespace maps {
+        class Layer {
+        public:
+          virtual ~Layer() {}
+          void initialize(rclcpp::Node * node, const std::string & name);
+          virtual void onInitialize() {}
+        protected:
+          rclcpp::Node * node_;
+          std::string name_;
+        };
+        }
+        """,
+    "maps/include/maps/filter.hpp": """
+        #include "maps/layer.hpp"
+        namespace maps {
+        class Filter : public Layer {
+        public:
+          void onInitialize() override;
+          void activate();
+          virtual void process() = 0;
+        };
+        }
+        """,
+    "maps/include/maps/keep.hpp": """
+        #include "maps/filter.hpp"
+        namespace maps {
+        class KeepFilter final : public Filter {
+        public:
+          void process() override;
+        };
+        }
+        """,
+    "maps/include/maps/tight.hpp": """
+        #include "maps/filter.hpp"
+        namespace maps {
+        class TightFilter : public Filter {
+        public:
+          void onInitialize() override;
+          void process() override;
+        };
+        }
+        """,
+    "maps/include/maps/loose.hpp": """
+        #include "maps/filter.hpp"
+        namespace maps {
+        class LooseFilter : public Filter {
+        public:
+          void onInitialize() override
+          {
+            node_->declare_parameter(name_ + ".loose", 1);
+          }
+          void process() override {}
+        };
+        }
+        """,
+    "maps/src/loose.cpp": """
+        #include "maps/loose.hpp"
+        #include "pluginlib/class_list_macros.hpp"
+        PLUGINLIB_EXPORT_CLASS(maps::LooseFilter, maps::Layer)
+        """,
+    "maps/include/maps/costmap.hpp": """
+        #include "rclcpp/rclcpp.hpp"
+        namespace maps {
+        class Costmap { public: explicit Costmap(rclcpp::Node * node); };
+        }
+        """,
+    "maps/src/layer.cpp": """
+        #include "maps/layer.hpp"
+        namespace maps {
+        void Layer::initialize(rclcpp::Node * node, const std::string & name)
+        {
+          node_ = node;
+          name_ = name;
+          onInitialize();
+        }
+        }
+        """,
+    "maps/src/costmap.cpp": """
+        #include "maps/costmap.hpp"
+        namespace maps {
+        Costmap::Costmap(rclcpp::Node * node)
+        {
+          node->declare_parameter("resolution", 0.05);
+        }
+        }
+        """,
+    "maps/src/filter.cpp": """
+        #include "maps/filter.hpp"
+        namespace maps {
+        void Filter::onInitialize()
+        {
+          node_->declare_parameter(name_ + ".enabled", true);
+          node_->declare_parameter(name_ + ".filter_info_topic", std::string("info"));
+        }
+
+        void Filter::activate()
+        {
+          node_->declare_parameter(name_ + ".transform_tolerance", 0.5);
+        }
+        }
+        """,
+    "maps/src/keep.cpp": """
+        #include "maps/keep.hpp"
+        #include "pluginlib/class_list_macros.hpp"
+        namespace maps {
+        void KeepFilter::process()
+        {
+          node_->declare_parameter(name_ + ".keep", 1);
+        }
+        }
+        PLUGINLIB_EXPORT_CLASS(maps::KeepFilter, maps::Layer)
+        """,
+    "maps/src/tight.cpp": """
+        #include "maps/tight.hpp"
+        #include "pluginlib/class_list_macros.hpp"
+        namespace maps {
+        void TightFilter::onInitialize()
+        {
+          node_->declare_parameter(name_ + ".margin", 0.1);
+        }
+
+        void TightFilter::process()
+        {
+        }
+        }
+        PLUGINLIB_EXPORT_CLASS(maps::TightFilter, maps::Layer)
+        """,
+}
+
+
+def _plugins(write_tree) -> dict[str, list[tuple[str, str]]]:
+    root: Path = write_tree(FILES)
+    ws = scan([str(root)])
+    package = ws.packages["maps"]
+    package.nodes, _ = cmake.parse_package(package, ws)
+    plugins = [n for n in package.nodes if n.kind == "plugin"]
+    extract_nodes(plugins, ws, cache_dir=None, jobs=1)
+    return {n.executable: [(c.name, c.location.file) for c in n.calls if c.kind == "declare"]
+            for n in plugins}
+
+
+def test_a_plugin_carries_its_base_class_code_from_another_library(write_tree) -> None:
+    found = _plugins(write_tree)
+    # the base's reads, made with the plugin's name (``?`` until a host names it); the
+    # costmap's file, linked but no base of the filter, is not the plugin's
+    assert found["maps::KeepFilter"] == [
+        ("?.keep", "maps/src/keep.cpp"),
+        ("?.enabled", "maps/src/filter.cpp"),
+        ("?.filter_info_topic", "maps/src/filter.cpp"),
+        ("?.transform_tolerance", "maps/src/filter.cpp"),
+    ]
+
+
+def test_a_base_method_the_plugin_redefines_is_not_run(write_tree) -> None:
+    found = _plugins(write_tree)
+    # TightFilter::onInitialize replaces Filter's (and does not call it): the base's
+    # other method still runs
+    assert found["maps::TightFilter"] == [
+        ("?.margin", "maps/src/tight.cpp"),
+        ("?.transform_tolerance", "maps/src/filter.cpp"),
+    ]
+    # redefined in the class's body
+    assert found["maps::LooseFilter"] == [
+        ("?.loose", "maps/include/maps/loose.hpp"),
+        ("?.transform_tolerance", "maps/src/filter.cpp"),
+    ]
