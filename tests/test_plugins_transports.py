@@ -211,3 +211,118 @@ def test_ros2_subscriber_reads_the_transport_parameter_only_when_its_node_declar
     assert topics(config, "/viewer") == [
         ("subscribe", "/image/compressed", "sensor_msgs/msg/CompressedImage", ())]
     assert set(reads(config, "/viewer")) == {"/viewer/image_transport"}
+
+
+def camera_subscriber(version):
+    image = "sensor_msgs/Image" if version == 1 else "sensor_msgs/msg/Image"
+    info = "sensor_msgs/CameraInfo" if version == 1 else "sensor_msgs/msg/CameraInfo"
+    here = Location("cam", "cam/src/c.cpp", 4, 3)
+    return Node("cam", "scan", calls=[
+        PrimitiveCall("subscribe", "image", image, 1, location=here, transport="?"),
+        PrimitiveCall("subscribe", "camera_info", info, 1, location=here, camera_of="image")])
+
+
+def test_ros1_camera_info_is_named_beside_the_image_topic_as_remapped():
+    # image_transport's CameraSubscriber resolves and remaps the image topic first and
+    # subscribes camera_info in its namespace (depthimage_to_laserscan's launch files
+    # remap only image)
+    decl = NodeDecl("/scan", "cam", "scan", "/", remaps=[("image", "/camera/depth/image_raw")])
+    config = graph([decl], nodes=[camera_subscriber(1)])
+    assert [name for _, name, _, _ in topics(config, "/scan")] == [
+        "/camera/depth/camera_info", "/camera/depth/image_raw"]
+    # written as the code wrote it: no global name of the code
+    (info,) = [link for link in config.links if link.resource.name.endswith("camera_info")]
+    assert info.call.name == "camera_info"
+    # not remapped: beside the image topic in the node's namespace
+    config = graph([NodeDecl("/robot/scan", "cam", "scan", "/robot/")],
+                   nodes=[camera_subscriber(1)])
+    assert [name for _, name, _, _ in topics(config, "/robot/scan")] == [
+        "/robot/camera_info", "/robot/image"]
+
+
+def test_ros2_camera_info_follows_the_expanded_image_topic_not_its_remap():
+    # ROS 2's CameraSubscriber only expands the image topic: a remap of image alone leaves
+    # camera_info where it was, a remap of camera_info moves it
+    decl = NodeDecl("/scan", "cam", "scan", "/", ros_version=2,
+                    remaps=[("image", "/camera/depth/image_raw")])
+    config = graph([decl], nodes=[camera_subscriber(2)])
+    assert [name for _, name, _, _ in topics(config, "/scan")] == [
+        "/camera/depth/image_raw", "/camera_info"]
+    decl = NodeDecl("/scan", "cam", "scan", "/", ros_version=2,
+                    remaps=[("image", "/camera/depth/image_raw"),
+                            ("camera_info", "/camera/depth/camera_info")])
+    config = graph([decl], nodes=[camera_subscriber(2)])
+    assert [name for _, name, _, _ in topics(config, "/scan")] == [
+        "/camera/depth/camera_info", "/camera/depth/image_raw"]
+
+
+SCAN = """
+#include <ros/ros.h>
+#include <image_transport/image_transport.h>
+#include <sensor_msgs/Image.h>
+#include <sensor_msgs/CameraInfo.h>
+void cb(const sensor_msgs::ImageConstPtr&, const sensor_msgs::CameraInfoConstPtr&) {}
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "scan");
+  ros::NodeHandle n;
+  image_transport::ImageTransport it(n);
+  image_transport::CameraSubscriber sub = it.subscribeCamera("depth/image", 10, cb);
+  ros::spin();
+}
+"""
+
+
+def test_ros1_camera_subscriber_marks_its_camera_info_with_the_image_topic(tmp_path):
+    from haros_arch.extract.cpp import extract_cpp
+    from haros_arch.workspace import scan
+    from tests.conftest import package_xml
+
+    package = tmp_path / "cam"
+    (package / "src").mkdir(parents=True)
+    (package / "package.xml").write_text(package_xml("cam", "catkin"))
+    (package / "src" / "scan.cpp").write_text(SCAN)
+    result = extract_cpp([str(package / "src" / "scan.cpp")], scan([str(tmp_path)], {}),
+                         cache_dir=None)
+    assert sorted((c.kind, c.name, c.camera_of) for c in result.calls) == [
+        ("subscribe", "depth/camera_info", "depth/image"),
+        ("subscribe", "depth/image", None)]
+
+
+SCAN_CLASS = """
+#include <ros/ros.h>
+#include <image_transport/image_transport.h>
+#include <sensor_msgs/Image.h>
+#include <sensor_msgs/CameraInfo.h>
+class Scan {
+ public:
+  Scan(ros::NodeHandle& n) : it_(n) {
+    sub_ = it_.subscribeCamera("image", 10, &Scan::cb, this);
+  }
+  void cb(const sensor_msgs::ImageConstPtr&, const sensor_msgs::CameraInfoConstPtr&) {}
+  image_transport::ImageTransport it_;
+  image_transport::CameraSubscriber sub_;
+};
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "scan");
+  ros::NodeHandle n;
+  Scan scan(n);
+  ros::spin();
+}
+"""
+
+
+def test_camera_info_on_a_handle_given_to_a_class_stays_relative(tmp_path):
+    # depthimage_to_laserscan's class takes the node's handle: its camera_info was the
+    # global /camera_info once the handle's namespace ("") was filled in
+    from haros_arch.extract.cpp import extract_cpp
+    from haros_arch.workspace import scan
+    from tests.conftest import package_xml
+
+    package = tmp_path / "cam"
+    (package / "src").mkdir(parents=True)
+    (package / "package.xml").write_text(package_xml("cam", "catkin"))
+    (package / "src" / "scan.cpp").write_text(SCAN_CLASS)
+    result = extract_cpp([str(package / "src" / "scan.cpp")], scan([str(tmp_path)], {}),
+                         cache_dir=None)
+    assert sorted((c.kind, c.name, c.camera_of) for c in result.calls) == [
+        ("subscribe", "camera_info", "image"), ("subscribe", "image", None)]

@@ -11,6 +11,7 @@ from typing import Any
 from .. import diagnostics as diag
 from ..diagnostics import Diagnostic
 from ..launch.model import LaunchModel, NodeDecl
+from ..model.location import Location
 from ..model.rosname import RosName, namespace_of, remap, resolve, resolve_remaps
 from ..model.runtime import (
     LINK_CLASSES,
@@ -150,8 +151,18 @@ def _link_calls(instance: NodeInstance, calls: Sequence[PrimitiveCall], resource
     image_transport publisher or subscriber the topics of its transport plugins."""
     remaps = _Applied(resolve_remaps(instance.remaps, instance.namespace, instance.name),
                       instance)
+    images: dict[Location, list[PrimitiveCall]] = {}  # image_transport calls by place
+    for each in calls:
+        if each.transport is not None:
+            images.setdefault(each.location, []).append(each)
     for call in calls:
         for each in element_calls(call, instance, resources):  # list parameters
+            if each.camera_of is not None:
+                info = _camera_info(instance, each, images.get(each.location, []), remaps,
+                                    resources)
+                if info is not None:
+                    link(instance, each, remaps, resources, config, info)
+                    continue
             base = resolved_name(instance, each, remaps, resources)
             if each.name_param is not None and base.is_unresolved:
                 config.diagnostics.append(_name_param_unset(instance, each))
@@ -170,6 +181,29 @@ def _link_calls(instance: NodeInstance, calls: Sequence[PrimitiveCall], resource
             for one in transports.calls(each, expanded.full, instance):
                 link(instance, one, remaps, resources, config, base if one is each else
                      _below_base(resolved_name(instance, one, remaps, resources), expanded))
+
+
+def _camera_info(instance: NodeInstance, info: PrimitiveCall, images: list[PrimitiveCall],
+                 remaps: Mapping[str, str], resources: Resources) -> RosName | None:
+    """The camera_info topic of an image_transport camera publisher or subscriber:
+    ``camera_info`` in the namespace of its image topic (of ``images``, the image_transport
+    calls at the same place: the one of the same kind, or the one named as ``camera_of``
+    says) as ROS 1 resolves and remaps it (``resolveName``) or ROS 2 expands it, then
+    remapped on its own; named as the code wrote it. None when the image topic is not
+    known: the info call's own name is used."""
+    same = [c for c in images if c.kind == info.kind]
+    if len(same) > 1:
+        same = [c for c in same if c.name == info.camera_of]
+    if len(same) != 1:
+        return None
+    image = same[0]
+    base = resolved_name(instance, image, remaps if instance.ros_version == 1 else {},
+                         resources)
+    if UNKNOWN_MARK in base.full:
+        return None
+    named = RosName.make(f"{base.full.rpartition('/')[0]}/camera_info", instance.namespace,
+                         instance.name, remaps)
+    return replace(named, given=info.name)
 
 
 def _below_base(rosname: RosName, base: RosName) -> RosName:

@@ -93,7 +93,8 @@ def call_from_data(c: dict[str, Any]) -> PrimitiveCall:
                          node_name=c.get("node_name"), name_each=c.get("name_each"),
                          transport=c.get("transport"),
                          variable=c.get("variable"),
-                         queue_size_missing=bool(c.get("queue_size_missing", False)))
+                         queue_size_missing=bool(c.get("queue_size_missing", False)),
+                         camera_of=c.get("camera_of"))
 
 
 def node_from_data(data: dict[str, Any], package: str) -> Node:

@@ -125,6 +125,12 @@ class PrimitiveCall:
     # Publisher then publishes synchronously, in the caller's thread (rospy warns), a
     # Subscriber queues without bound; a queue_size the parse cannot value is not this
     queue_size_missing: bool = field(default=False, metadata={"optional": True})
+    # the camera_info topic of an image_transport camera publisher or subscriber: the
+    # image topic's name as the code wrote it (the call at the same place). The info
+    # topic is ``camera_info`` in the namespace of the image topic as resolved and, in
+    # ROS 1, remapped (``resolveName``): remapping ``image`` to ``/cam/depth/image_raw``
+    # moves the info topic to ``/cam/depth/camera_info``; ROS 2 only expands it
+    camera_of: str | None = field(default=None, metadata={"optional": True})
     # in one translation unit's calls only (never in a node's): the USR of the
     # constructor whose body makes this call with a name from its own parameters, which
     # no call in that unit gives; the node makes it only if one of its files constructs

@@ -154,12 +154,18 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact],
                 namespace + "/")
             written = call.name[len(prefix):] if call.name.startswith(prefix) else call.name
         text = f"{namespace or ''}{_SPLIT}{written}"
+        # a camera's camera_info names its image topic as written on the same handle
+        camera = call.camera_of[len(prefix):] if namespace and call.camera_of and (
+            call.camera_of.startswith(prefix)) else None
         for filled in _expand(text, passed, 0):
             ns, _, name = filled.partition(_SPLIT)
             ns = normalise(ns) if ns else ""
             made = dataclasses.replace(
                 call, name=join_name(ns, name) if ns else name,
-                handle_namespace=ns if ns and not name.startswith(("/", "~")) else None)
+                handle_namespace=ns if ns and not name.startswith(("/", "~")) else None,
+                camera_of=call.camera_of if call.camera_of is None or (
+                    PLACEHOLDER not in call.camera_of) else (
+                    join_name(ns, camera) if camera and PLACEHOLDER not in camera else None))
             out.append(made)
             if "?" in made.name:
                 found.append(diag.make("CPP_DYNAMIC_NAME", made.location, kind=made.kind,

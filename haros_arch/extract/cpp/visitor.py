@@ -90,6 +90,7 @@ _ZEROED: dict[TypeKind, object] = {
 MAX_SITE_DEPTH = 3  # constructors of constructors whose sites' conditions are followed
 _PREPROCESSED = frozenset({CursorKind.MACRO_INSTANTIATION, CursorKind.INCLUSION_DIRECTIVE})
 _PARAM_KINDS = ("read", "declare")
+CAMERA_INFO = "sensor_msgs/CameraInfo"  # an image_transport camera's sibling topic
 _VALUE_METHODS = frozenset({"c_str", "str", "as_string", "as_int", "as_double", "as_bool",
                             "get_value", "value_to_string"})
 
@@ -724,13 +725,17 @@ class CallFinder:
                     full = sibling if sibling.startswith("/") else join_name(head, sibling)
                 # beside a server on a handle given (dynamic_reconfigure's topics): in the
                 # same handle's namespace, filled from the call sites as the server is
+                # and a camera's camera_info, in the image topic's namespace, on its handle
+                camera = stype == CAMERA_INFO and bool(spec.transport)
                 sibling_namespace = handle_namespace if (
-                    spec.handle_default is not None and not sibling.startswith("/")) else None
+                    (spec.handle_default is not None or camera)
+                    and not sibling.startswith("/")) else None
                 self.calls.append(PrimitiveCall(
                     kind=kind, name=full, type=self.types.ros_type(stype), queue_size=queue,
                     latch=latch, conditions=conditions, location=location,
                     handle_namespace=sibling_namespace, node_name=owner,
-                    made_in=self._made_in(full, sibling_namespace)))
+                    made_in=self._made_in(full, sibling_namespace),
+                    camera_of=name if camera else None))
 
     def _made_in(self, name: str, namespace: str | None) -> str | None:
         """The USR of the constructor being walked when ``name`` (or the handle's
