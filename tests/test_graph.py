@@ -190,3 +190,19 @@ def test_a_delete_is_not_a_set():
     # a node sets it whatever the launch file does
     assert mode.conditions == () and [w.node.name for w in mode.setters] == ["/cleaner"]
     assert not old.is_set and [w.node.name for w in old.writers] == ["/cleaner"]
+
+
+def test_ros2_plain_arguments_are_no_remaps():
+    # ros2_control_demos' spawners: ``arguments=[..., "--controller-ros-args",
+    # "-r ~/cmd_vel:=/cmd_vel"]`` remaps the controller's topic, not the spawner's; rcl
+    # reads remaps only after --ros-args, which the launch reader gives as remaps
+    spawner = node("p", "spawner", call("subscribe", "cmd_vel", "geometry_msgs/msg/Twist"))
+    config = graph([NodeDecl("/spawner", "p", "spawner", ros_version=2,
+                             args="ctrl --controller-ros-args '-r ~/cmd_vel:=/cmd_vel' a:=b",
+                             remaps=[("x", "y")])], nodes=[spawner])
+    assert config.nodes[0].remaps == [("x", "y")]
+    assert [t.name for t in config.topics] == ["/cmd_vel"]
+    # ROS 1: every ``from:=to`` of the command line
+    config = graph([NodeDecl("/spawner", "p", "spawner", args="cmd_vel:=/base/cmd_vel")],
+                   nodes=[spawner])
+    assert [t.name for t in config.topics] == ["/base/cmd_vel"]

@@ -291,7 +291,11 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
     elif node is None:
         config.diagnostics.append(diag.make("NODE_NOT_FOUND", decl.location,
                                             node=plugin or key))
-    remaps = list(decl.remaps) + remaps_in_args(decl.args)
+    # a ROS 1 node takes ``from:=to`` anywhere on its command line; rcl reads remaps only
+    # after ``--ros-args`` (the launch reader has them in ``decl.remaps``): a ROS 2
+    # node's plain argument (a spawner's ``--controller-ros-args "-r a:=b"``, meant for
+    # the controller it loads) is none
+    remaps = list(decl.remaps) + (remaps_in_args(decl.args) if decl.ros_version == 1 else [])
     return NodeInstance(decl.name, node, namespace=decl.namespace, remaps=remaps,
                         args=decl.args, conditions=decl.conditions, location=decl.location,
                         ros_version=decl.ros_version, test=decl.is_test)
