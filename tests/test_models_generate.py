@@ -203,3 +203,17 @@ def test_an_override_puts_the_calls_of_an_unknown_handle_in_a_namespace():
         ("~rate", "override"), ("/global", "source"), ("?/out", "source"),
         ("?/other", "source")]
     assert [d.code for d in found] == ["HINT_INVALID"]
+
+
+def test_an_override_call_the_extraction_finds_is_kept_once_as_extracted(tmp_path):
+    """cartographer_ros' override lists the publishers the extractor missed; once the
+    extractor reads them, the model keeps each once, at its place in the code."""
+    outcome = _with_override(tmp_path, (
+        "nodes:\n  tiny_driver/laser:\n    getters:\n"
+        "      - {parameter: '~rate', param_type: double}\n"
+        "      - {parameter: '~extra', param_type: str}\n"))
+    model = from_document(json.loads(outcome.text))
+    reads = sorted((c.name, c.origin, c.location.line) for c in model.node("laser").calls
+                   if c.kind == "read")
+    assert reads == [("~extra", "override", 0), ("~rate", "source", 8),
+                     ("~topic", "source", 6)]

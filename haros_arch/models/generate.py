@@ -241,6 +241,15 @@ def _apply_override(task: Task, nodes: list[Node], found: list[Diagnostic]) -> s
         for call in node.calls:
             if call.origin == "hint":
                 call.origin = "override"
+        # an override writes what the extraction missed: a call it places nowhere in the
+        # code (its own file's location) or at a line, that the extraction has found since
+        # (the same kind and name; anywhere, at that line) is kept once, as extracted
+        anywhere = {(c.kind, c.name) for c in node.calls if c.origin != "override"}
+        placed = {(c.kind, c.name, c.location.file, c.location.line) for c in node.calls
+                  if c.origin != "override"}
+        node.calls = [c for c in node.calls if c.origin != "override" or not (
+            (c.kind, c.name) in anywhere if c.location.file == relative
+            else (c.kind, c.name, c.location.file, c.location.line) in placed)]
         block = blocks.get(name)
         if isinstance(block, dict) and isinstance(block.get("rosname"), str):
             node.rosnames = []  # the one ROS node the override names
