@@ -272,7 +272,8 @@ int main(int argc, char** argv) {
 """
 
 
-def test_ros1_camera_subscriber_marks_its_camera_info_with_the_image_topic(tmp_path):
+def extracted(tmp_path, text):
+    """The calls of a ROS 1 package's one C++ source ``text``."""
     from haros_arch.extract.cpp import extract_cpp
     from haros_arch.workspace import scan
     from tests.conftest import package_xml
@@ -280,10 +281,14 @@ def test_ros1_camera_subscriber_marks_its_camera_info_with_the_image_topic(tmp_p
     package = tmp_path / "cam"
     (package / "src").mkdir(parents=True)
     (package / "package.xml").write_text(package_xml("cam", "catkin"))
-    (package / "src" / "scan.cpp").write_text(SCAN)
+    (package / "src" / "scan.cpp").write_text(text)
     result = extract_cpp([str(package / "src" / "scan.cpp")], scan([str(tmp_path)], {}),
                          cache_dir=None)
-    assert sorted((c.kind, c.name, c.camera_of) for c in result.calls) == [
+    return sorted((c.kind, c.name, c.camera_of) for c in result.calls)
+
+
+def test_ros1_camera_subscriber_marks_its_camera_info_with_the_image_topic(tmp_path):
+    assert extracted(tmp_path, SCAN) == [
         ("subscribe", "depth/camera_info", "depth/image"),
         ("subscribe", "depth/image", None)]
 
@@ -314,15 +319,5 @@ int main(int argc, char** argv) {
 def test_camera_info_on_a_handle_given_to_a_class_stays_relative(tmp_path):
     # depthimage_to_laserscan's class takes the node's handle: its camera_info was the
     # global /camera_info once the handle's namespace ("") was filled in
-    from haros_arch.extract.cpp import extract_cpp
-    from haros_arch.workspace import scan
-    from tests.conftest import package_xml
-
-    package = tmp_path / "cam"
-    (package / "src").mkdir(parents=True)
-    (package / "package.xml").write_text(package_xml("cam", "catkin"))
-    (package / "src" / "scan.cpp").write_text(SCAN_CLASS)
-    result = extract_cpp([str(package / "src" / "scan.cpp")], scan([str(tmp_path)], {}),
-                         cache_dir=None)
-    assert sorted((c.kind, c.name, c.camera_of) for c in result.calls) == [
+    assert extracted(tmp_path, SCAN_CLASS) == [
         ("subscribe", "camera_info", "image"), ("subscribe", "image", None)]
