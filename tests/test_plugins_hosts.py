@@ -568,3 +568,25 @@ def test_move_group_capabilities_not_known_statically_leave_it_partial():
         "move_group/MoveGroupPlanService not in /move_group/disable_capabilities"]
     instance = config.node("/move_group")
     assert instance.completeness == "partial" and not instance.is_complete
+
+
+def test_a_hosts_unnamed_copy_of_its_plugins_base_class_code_goes():
+    # nav2's costmap links costmap_filter.cpp, the filters' base class: the host's own
+    # copy of CostmapFilter::onInitialize reads ``?.enabled``; each filter's copy names it
+    base = call("declare", "?.enabled", "bool", line=74)
+    server = Node("nav2_smoother", "smoother_server", calls=[base])
+    first = plugin("s", "s/A", "s::A", base, call("declare", "?.tolerance", "double"))
+    params = [ParamDecl("/smoother_server/smoother_plugins", ["a"]),
+              ParamDecl("/smoother_server/a.plugin", "s/A")]
+    decl = ros2(NodeDecl("/smoother_server", "nav2_smoother", "smoother_server"))
+    config = graph([decl], params, [server, first])
+    reads = sorted(link.resource.name for link in config.links if link.kind == "read")
+    assert "/smoother_server/a.enabled" in reads
+    assert not any(UNKNOWN_MARK in name for name in reads)
+    # a plugin class not known: what runs that code is not known either, the copy stays
+    config = graph([decl], [*params, ParamDecl("/smoother_server/smoother_plugins",
+                                               ["a", "b"]),
+                            ParamDecl("/smoother_server/b.plugin", "s/Missing")],
+                   [server, first])
+    reads = [link.resource.name for link in config.links if link.kind == "read"]
+    assert "/smoother_server/?.enabled" in reads

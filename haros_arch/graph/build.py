@@ -33,7 +33,7 @@ from ..plugins.transports import Transports
 from ..robot.attach import attach as attach_descriptions
 from ..workspace import Workspace, installed_roots
 from .actions import action_links
-from .conditions import decide_links
+from .conditions import decide_links, drop_links
 from .processes import guessed_names, process_nodes, process_params, unnamed_param_files
 
 RESOURCE_OF_KIND: dict[str, type[Resource]] = {
@@ -134,9 +134,11 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
     described = attach_descriptions(config, launch, started, workspace, resources)
     for instance, calls in described.calls:
         _link_calls(instance, calls, resources, config, transports)
-    for instance, calls in attach_plugins(config, [*started, *described.managers], nodes,
-                                          resources, workspace, plugin_models):
+    attached = attach_plugins(config, [*started, *described.managers], nodes, resources,
+                              workspace, plugin_models)
+    for instance, calls in attached:
         _link_calls(instance, calls, resources, config, transports)
+    _drop_base_copies(config, attached)
     for action, call, name in action_links(config):
         link(action.node, call, {}, resources, config, name)
     decide_links(config)  # source conditions this configuration decides
@@ -181,6 +183,29 @@ def _link_calls(instance: NodeInstance, calls: Sequence[PrimitiveCall], resource
             for one in transports.calls(each, expanded.full, instance):
                 link(instance, one, remaps, resources, config, base if one is each else
                      _below_base(resolved_name(instance, one, remaps, resources), expanded))
+
+
+def _drop_base_copies(config: Configuration,
+                      attached: Sequence[tuple[NodeInstance, Sequence[PrimitiveCall]]]) -> None:
+    """A host's own calls with ``?`` in their name made where its plugins' calls are
+    (the same kind and place) are the plugins' base-class code, which the host's
+    executable links (nav2's costmap runs ``CostmapFilter::onInitialize`` for each
+    filter): each plugin's copy names them, so the host's unnamed copy goes. Kept when
+    the host is not complete (a plugin not known may be what runs that code)."""
+    places: dict[int, set[tuple[str, Location]]] = {}
+    for instance, calls in attached:
+        places.setdefault(id(instance), set()).update((c.kind, c.location) for c in calls)
+    gone = []
+    for instance in config.nodes:
+        node, placed = instance.node, places.get(id(instance))
+        if node is None or not placed or node.completeness != "complete":
+            continue
+        unnamed = {(c.kind, c.location, c.name) for c in node.calls
+                   if UNKNOWN_MARK in c.name and (c.kind, c.location) in placed}
+        gone += [link for link in instance.links if link.call is not None and (
+            link.call.kind, link.call.location, link.call.name) in unnamed]
+    if gone:
+        drop_links(config, gone)
 
 
 def _camera_info(instance: NodeInstance, info: PrimitiveCall, images: list[PrimitiveCall],

@@ -293,10 +293,12 @@ def decide_links(config: Configuration) -> None:
             elif len(kept) != len(link.conditions):
                 link.conditions = tuple(kept)
     if dropped:
-        _drop(config, dropped)
+        drop_links(config, dropped)
 
 
-def _drop(config: Configuration, links: list[Link]) -> None:
+def drop_links(config: Configuration, links: list[Link]) -> None:
+    """Take ``links`` out of the configuration, and the resources left with none (a
+    parameter the launch sets stays)."""
     gone = set(map(id, links))
     config.links[:] = [k for k in config.links if id(k) not in gone]
     emptied = set()
