@@ -590,3 +590,22 @@ def test_a_hosts_unnamed_copy_of_its_plugins_base_class_code_goes():
                    [server, first])
     reads = [link.resource.name for link in config.links if link.kind == "read"]
     assert "/smoother_server/?.enabled" in reads
+
+
+def test_a_costmap_a_server_makes_keeps_its_own_unnamed_calls():
+    # the planner server makes its global costmap, whose own services are named after the
+    # costmap (``clear_except_?`` when not known): no plugin names them, they stay
+    costmap_name = call("server", "clear_except_?", "nav2_msgs/srv/ClearCostmapExceptRegion",
+                        line=44)
+    planner = Node("nav2_planner", "planner_server")
+    costmap = Node("nav2_costmap_2d", "nav2_costmap_2d", calls=[costmap_name])
+    layer = plugin("nav2_costmap_2d", "nav2_costmap_2d::StaticLayer",
+                   "nav2_costmap_2d::StaticLayer", call("read", "?.enabled", "bool", line=9))
+    decl = ros2(NodeDecl("/planner_server", "nav2_planner", "planner_server"))
+    config = graph([decl], [ParamDecl("/global_costmap/global_costmap/plugins", ["static"]),
+                            ParamDecl("/global_costmap/global_costmap/static.plugin",
+                                      "nav2_costmap_2d::StaticLayer")],
+                   [planner, costmap, layer])
+    names = links_of(config, "/global_costmap/global_costmap")
+    assert ("read", "/global_costmap/global_costmap/static.enabled") in names
+    assert ("server", "/global_costmap/clear_except_?") in names

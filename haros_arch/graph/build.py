@@ -194,7 +194,11 @@ def _drop_base_copies(config: Configuration,
     the host is not complete (a plugin not known may be what runs that code)."""
     places: dict[int, set[tuple[str, Location]]] = {}
     for instance, calls in attached:
-        places.setdefault(id(instance), set()).update((c.kind, c.location) for c in calls)
+        # the plugins' calls, not the instance's own (a host's child, a costmap that a
+        # planner server makes, comes with its node's calls)
+        own = {id(c) for c in instance.node.calls} if instance.node is not None else set()
+        places.setdefault(id(instance), set()).update(
+            (c.kind, c.location) for c in calls if id(c) not in own)
     gone = []
     for instance in config.nodes:
         node, placed = instance.node, places.get(id(instance))
