@@ -94,3 +94,18 @@ def test_a_node_its_host_makes_is_not_who_the_remap_was_given_to() -> None:
     assert [n.name for n in found["/tf:=tf"].nodes] == ["/r/controller_server"]
     assert [n.name for n in found["odom:=odometry/filtered"].users] == [
         "/r/local_costmap/local_costmap"]
+
+
+def test_a_ros1_handle_whose_namespace_is_not_known_may_be_the_remapped_one() -> None:
+    # depth_image_proc's disparity nodelet: right_nh_.reset(new NodeHandle(nh, "right"))
+    # then subscribe(*right_nh_, "camera_info"); openni_launch remaps right:=projector,
+    # and roscpp remaps a handle's namespace: with the handle unknown, not decided
+    disparity = Node("depth_image_proc", "disparity", calls=[
+        PrimitiveCall("subscribe", "?/camera_info", "sensor_msgs/CameraInfo",
+                      handle_namespace="?")])
+    for version, unseen in ((1, 1), (2, 0)):
+        decl = NodeDecl("/camera/disparity", "depth_image_proc", "disparity", "/camera/",
+                        remaps=[("right", "projector")], ros_version=version)
+        config = _config([decl], {"depth_image_proc/disparity": disparity})
+        (remap,) = config.remaps
+        assert (len(remap.users), len(remap.unseen)) == (0, unseen)

@@ -506,16 +506,21 @@ def _could_use(instance: NodeInstance, name: str) -> bool:
     lists what the code makes in the usual set-up, and a remap is often given for a
     name a plugin or an option adds: move_base's ``odom`` is its local planner's); a
     container, whose components take the process's remaps; a name with ``?`` that may
-    be it."""
+    be it; in ROS 1, a name on a handle whose namespace is not known (``?/camera_info``):
+    roscpp resolves and remaps a NodeHandle's namespace, so that namespace may be it
+    (depth_image_proc's ``NodeHandle(nh, "right")`` with ``right:=projector``)."""
     node = instance.node
     if node is None or not instance.is_complete or node.model is not None:
         return True
     for link in instance.links:
         given = link.rosname.given
-        if UNKNOWN_MARK in given and (
-            re.match(pattern_for(resolve(given, instance.namespace, instance.name)), name)
-            or re.match(pattern_for(link.rosname.full), name)
-        ):
+        if UNKNOWN_MARK not in given:
+            continue
+        head = given.rpartition("/")[0]
+        if re.match(pattern_for(resolve(given, instance.namespace, instance.name)), name) or (
+            re.match(pattern_for(link.rosname.full), name)
+        ) or (instance.ros_version == 1 and UNKNOWN_MARK in head and re.match(
+            pattern_for(resolve(head, instance.namespace, instance.name)), name)):
             return True
     return False
 
