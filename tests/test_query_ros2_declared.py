@@ -33,20 +33,26 @@ LAUNCH = """
     """
 
 
-def test_declared_with_a_default_is_set(write_tree):
+def _analysed(write_tree, script: str, code: str, launch: str):
+    """The model of an ament_python package ``talk`` whose executable ``script`` runs
+    ``talk/<script>.py`` (``code``), launched by ``launch``."""
     root = write_tree({
         "src/talk/package.xml": package_xml("talk", build_type="ament_python"),
         "src/talk/setup.py": "from setuptools import setup\n"
                              "setup(name='talk', packages=['talk'], entry_points="
-                             "{'console_scripts': ['talker = talk.talker:main']})\n",
+                             f"{{'console_scripts': ['{script} = talk.{script}:main']}})\n",
         "src/talk/resource/talk": "",
         "src/talk/talk/__init__.py": "",
-        "src/talk/talk/talker.py": TALKER,
-        "src/talk/launch/talk.launch.py": LAUNCH,
-        "project.yaml": "project: p\nconfigurations:\n  c: [talk/launch/talk.launch.py]\n",
+        f"src/talk/talk/{script}.py": code,
+        f"src/talk/launch/{script}.launch.py": launch,
+        "project.yaml": f"project: p\nconfigurations:\n  c: [talk/launch/{script}.launch.py]\n",
     })
-    model = analyse(load(str(root / "project.yaml")), {"PATH": os.environ.get("PATH", "")},
-                    Options(cache_dir=None))
+    return analyse(load(str(root / "project.yaml")), {"PATH": os.environ.get("PATH", "")},
+                   Options(cache_dir=None))
+
+
+def test_declared_with_a_default_is_set(write_tree):
+    model = _analysed(write_tree, "talker", TALKER, LAUNCH)
     rule = next(r for r in load_catalogue() if r.id == "parameter-read-not-set")
     found = sorted(e for f in run_rule(rule, model) for e in f.entities
                    if e.startswith("parameter:"))
@@ -100,19 +106,7 @@ JSP_LAUNCH = """
 
 def test_parameters_by_prefix_is_an_optional_read_of_every_parameter_under_it(write_tree):
     # joint_state_publisher: get_parameters_by_prefix gives {} when nothing is set there
-    root = write_tree({
-        "src/talk/package.xml": package_xml("talk", build_type="ament_python"),
-        "src/talk/setup.py": "from setuptools import setup\n"
-                             "setup(name='talk', packages=['talk'], entry_points="
-                             "{'console_scripts': ['jsp = talk.jsp:main']})\n",
-        "src/talk/resource/talk": "",
-        "src/talk/talk/__init__.py": "",
-        "src/talk/talk/jsp.py": JSP,
-        "src/talk/launch/jsp.launch.py": JSP_LAUNCH,
-        "project.yaml": "project: p\nconfigurations:\n  c: [talk/launch/jsp.launch.py]\n",
-    })
-    model = analyse(load(str(root / "project.yaml")), {"PATH": os.environ.get("PATH", "")},
-                    Options(cache_dir=None))
+    model = _analysed(write_tree, "jsp", JSP, JSP_LAUNCH)
     found = [(f.rule, list(f.entities), f.message) for rule in load_catalogue()
              if rule.id.startswith("parameter-") for f in run_rule(rule, model)]
     # nothing is "read but never set"; 'other' is set and not read; what is set under the
