@@ -136,6 +136,17 @@ def _parser() -> argparse.ArgumentParser:
                        help="run on this Dask distributed scheduler (needs the 'dask' extra)")
     build.add_argument("--no-cache", action="store_true", help="parse every source again")
 
+    defs = models_sub.add_parser(
+        "interfaces", help="read the message, service and action definitions of the "
+        "pinned interface packages and write the catalogue the C++ extraction uses")
+    defs.add_argument("list", nargs="?", help="the list (default: the shipped "
+                      "haros_arch/models/interfaces.yaml)")
+    defs.add_argument("--sources", default="sources",
+                      help="folder holding each entry's tree (scripts/models-fetch fills "
+                           "it; default: ./sources)")
+    defs.add_argument("-o", "--output", default="interfaces",
+                      help="write OUTPUT/<distro>.json (default: ./interfaces)")
+
     diff = sub.add_parser("diff", help="what a change does to the architecture: two saved "
                           "models, or two git revisions (--rev BASE..HEAD)")
     diff.add_argument("sides", nargs="*", metavar="OLD NEW | PATH",
@@ -592,6 +603,9 @@ def _flatten(path: str, workspace: Workspace, model: LaunchModel, fmt: str, out:
 def cmd_models(args: argparse.Namespace, out: Console, err: Console) -> int:
     from .models import generate
 
+    if args.models_command == "interfaces":
+        return _models_interfaces(args, out, err)
+
     try:
         entries = generate.read_list(args.list)
     except generate.ListError as error:
@@ -611,6 +625,22 @@ def cmd_models(args: argparse.Namespace, out: Console, err: Console) -> int:
     written = generate.write(outcomes, args.output)
     out.print(f"wrote {len(written)} model files under {escape(args.output)}", highlight=False)
     return EXIT_OK if all(o.text is not None for o in outcomes) else EXIT_FINDINGS
+
+
+def _models_interfaces(args: argparse.Namespace, out: Console, err: Console) -> int:
+    from .models import definitions, generate
+
+    try:
+        entries = generate.read_list(args.list or definitions.LIST)
+        documents = definitions.collect(entries, args.sources)
+    except (generate.ListError, definitions.MissingTree) as error:
+        err.print(f"haros-arch: {escape(str(error))}", highlight=False)
+        return EXIT_USAGE
+    for path in definitions.write(documents, args.output):
+        distro = os.path.basename(path)[: -len(".json")]
+        count = len(documents[distro]["definitions"])  # type: ignore[arg-type]
+        out.print(f"wrote {escape(path)}: {count} definitions", highlight=False)
+    return EXIT_OK
 
 
 def main(argv: Sequence[str] | None = None) -> int:

@@ -351,6 +351,16 @@ CATALOGUE: dict[str, Entry] = {
         "nor installed (its header was synthesised without fields, see "
         "CPP_MESSAGE_UNKNOWN), so clang cannot check it. Not a mistake in the code; "
         "calls around it are still extracted."),
+    "RECONFIGURE_CFG_INVALID": Entry(
+        "warning", "dynamic_reconfigure config is not valid Python: {detail}",
+        "A cfg/*.cfg file is read (never run) to know the parameters its server reads; "
+        "this one does not parse, so the config header it generates is not known."),
+    "CPP_RECONFIGURE_PARTIAL": Entry(
+        "info", "dynamic_reconfigure config {name}: some parameters are named at run time "
+        "(not literal in the .cfg); only the {count} literal ones are known",
+        "The server of this config reads and writes every parameter of the .cfg; those "
+        "added with a computed name are not known, so the node's reads under the "
+        "server's namespace stay partly unknown."),
     "CPP_MESSAGE_UNKNOWN": Entry(
         "info", "no definition found for {header}; it was synthesised without fields",
         "The header names a message or service whose .msg / .srv file is neither in the "

@@ -39,12 +39,16 @@ class _Known:
         # ROS 1 dynamic_reconfigure servers: each reads and sets every field of its .cfg
         # under the namespace of the handle it is given (``N/set_parameters``,
         # ``N/parameter_updates``), names we do not read. Namespace -> serving nodes;
-        # a namespace with "?" as the pattern of the parameter names under it
+        # a namespace with "?" as the pattern of the parameter names under it. Not a
+        # server whose reads the extraction made from its .cfg (``extract.cpp.
+        # reconfigure``: at the server's own place in the code): those reads say it.
         self.reconfigured: dict[str, list[NodeInstance]] = {}
         self.reconfigured_unresolved: list[tuple[re.Pattern[str], NodeInstance]] = []
+        explicit = {(id(link.node), link.location) for link in config.links
+                    if link.kind == "read" and link.location.file is not None}
         for link in config.links:
             namespace = _reconfigure_namespace(link)
-            if namespace is None:
+            if namespace is None or (id(link.node), link.location) in explicit:
                 continue
             if UNKNOWN_MARK in namespace:
                 self.reconfigured_unresolved.append(

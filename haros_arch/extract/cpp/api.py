@@ -76,6 +76,9 @@ class RosFunction:
     # the variable a parameter read writes its value into
     out_arg: int | None = None
     siblings: tuple[Sibling, ...] = ()
+    # a dynamic_reconfigure server: it also reads and writes each parameter of its
+    # config (the class's template argument, ``reconfigure``), beside its siblings
+    reconfigure: bool = False
     # each of the following calls is made once per element of a list or map argument
     per_element: bool = False
     # overloads that take the name at another index: the first of these indexes whose
@@ -235,7 +238,7 @@ LIBRARIES: dict[tuple[str, str], RosFunction] = {
     # controller's own controller_nh), by default the node's private one
     ("dynamic_reconfigure::Server", "Server"): RosFunction(
         "server", fixed_name="set_parameters", fixed_type="dynamic_reconfigure/Reconfigure",
-        on_handle=False, handle_default="~",
+        on_handle=False, handle_default="~", reconfigure=True,
         siblings=(("publish", "parameter_descriptions", "dynamic_reconfigure/ConfigDescription"),
                   ("publish", "parameter_updates", "dynamic_reconfigure/Config"))),
     # camera_info_manager (image_common): the calibration service, in ROS 1 in the

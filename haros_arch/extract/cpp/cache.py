@@ -24,6 +24,7 @@ from ...diagnostics import CATALOGUE, Diagnostic
 from ...model.conditions import Condition
 from ...model.location import Location
 from ...model.source import PrimitiveCall
+from . import interfaces
 from .headers import STANDIN
 from .synthesis import HEADER_NAME
 
@@ -59,7 +60,9 @@ def tool_version() -> str:
     here = os.path.dirname(os.path.abspath(__file__))
     code: list[tuple[str, list[str], list[str]]] = [
         (here, [], sorted(f for f in os.listdir(here) if f.endswith(".py")))]
-    for folder, _dirs, files in [*code, *sorted(os.walk(STANDIN))]:
+    # the catalogue of interface definitions makes the headers of installed messages
+    catalogue = sorted(os.walk(interfaces.CATALOGUE))
+    for folder, _dirs, files in [*code, *sorted(os.walk(STANDIN)), *catalogue]:
         for name in sorted(files):
             path = os.path.join(folder, name)
             digest.update(name.encode())

@@ -56,7 +56,15 @@ from ...files import read_text
 from ...manifest import ros_version
 from ...model.location import Location
 from ...workspace import Workspace
-from . import api, header_map, interfaces, parameter_library, ros2_interfaces, toolchain
+from . import (
+    api,
+    header_map,
+    interfaces,
+    parameter_library,
+    reconfigure,
+    ros2_interfaces,
+    toolchain,
+)
 from .compile_commands import UnitFlags
 
 STANDIN = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "standin")
@@ -140,7 +148,8 @@ _ROS_PREFIXES = ("ros/", "boost/", "tf/", "rclcpp", "rmw/", "tf2", "image_transp
                  "message_filters/", "actionlib/", "nodelet/", "pluginlib/")
 _LIBRARY_UMBRELLAS = frozenset({"opencv2/opencv.hpp", "cv_bridge/cv_bridge.h", "Eigen/Dense",
                                 QT})
-_LIBRARY_HEADERS = ("sensor_msgs/image_encodings.",)
+_LIBRARY_HEADERS = ("sensor_msgs/image_encodings.", "sensor_msgs/point_cloud2_iterator.",
+                    "sensor_msgs/distortion_models.")
 
 
 def _library_include_dirs(workspace: Workspace) -> list[str]:
@@ -250,6 +259,8 @@ class IncludeSetup:
         self._listed: dict[tuple[str, str], frozenset[str]] = {}  # see ``_entries``
         # generate_parameter_library's targets (``_parameter_header``), read when needed
         self._parameter_targets: list[parameter_library.Target] | None = None
+        # the dynamic_reconfigure configs of each package read so far (``_reconfigure``)
+        self._configs: dict[str, dict[str, reconfigure.Config]] = {}
 
     def arguments(self, pch: bool = True, source: str | None = None) -> list[str]:
         """The parse flags (of translation unit ``source``: its compile command's include
@@ -392,6 +403,7 @@ class IncludeSetup:
             header.startswith(_LIBRARY_HEADERS)
         ):
             self._handled.add(header)  # sensor_msgs/image_encodings.h
+            self._scan_standin(os.path.join(STANDIN, header))  # the messages it includes
             return None
         if _EXPORT_HEADER.fullmatch(os.path.basename(header)) and self._resolve(header) is None:
             self._empty(header, where)  # CMake's export header, not a message's
@@ -413,6 +425,32 @@ class IncludeSetup:
         if found is None and not self._parameter_header(header, where):
             self._empty(header, where)
         return found
+
+    def _reconfigure(self, header: str, package: str, name: str, where: Location) -> bool:
+        """Synthesise the ``<Name>Config.h`` a ``cfg/<file>.cfg`` of the package makes
+        dynamic_reconfigure generate (``reconfigure``); False when none does."""
+        if self.system_headers and self._resolve(header) is not None:
+            return False  # the real generated header
+        found = self._configs.get(package)
+        if found is None:
+            folder = self.workspace.find(package)
+            found, problems = ({}, []) if folder is None else reconfigure.configs(
+                folder, package)
+            self._configs[package] = found
+            self.diagnostics.extend(problems)
+        config = found.get(name)
+        if config is None:
+            return False
+        self._handled.add(header)
+        source = self.workspace.relpath(config.path)
+        self._write(header, reconfigure.render(config, source))
+        if config.partial:
+            self.diagnostics.append(diag.make(
+                "CPP_RECONFIGURE_PARTIAL", self.workspace.location(config.path),
+                name=f"{package}/{name}", count=len(config.parameters)))
+        for message in reconfigure.MESSAGES:
+            self._prepare(message, "", False, where)
+        return True
 
     def _parameter_header(self, header: str, where: Location) -> bool:
         """Synthesise the header generate_parameter_library writes at build time
@@ -465,6 +503,8 @@ class IncludeSetup:
 
     def _message(self, header: str, package: str, name: str, where: Location) -> bool:
         """Synthesise a message / service header when that is what ``header`` is."""
+        if name.endswith("Config") and self._reconfigure(header, package, name, where):
+            return True
         definition = self._definition(package, name)
         real = self._resolve(header)
         if definition is None and (real is None or not self.system_headers) and (
@@ -472,7 +512,7 @@ class IncludeSetup:
         ):
             return True
         if definition is None and real is not None and (
-            package not in interfaces.MESSAGE_PACKAGES or self.system_headers
+            not interfaces.interface_package(package) or self.system_headers
         ):
             return False  # an ordinary header of a package, or the real generated one
         if self.system_headers and real is not None:
@@ -500,7 +540,7 @@ class IncludeSetup:
                         if ext == ".srv" and len(parsed.sections) == 1:
                             parsed.sections.append([])
                         return parsed
-        text = interfaces.WELL_KNOWN.get(f"{package}/{name}")
+        text = interfaces.known(package, name)
         if text is None:
             return None
         return interfaces.parse_definition(package, name, text)
@@ -533,13 +573,18 @@ class IncludeSetup:
         folder = self.workspace.find(package)
         for part in interfaces.ACTION_PARTS:
             base = name.removesuffix(part)
-            if base == name or not base or folder is None:
+            if base == name or not base:
                 continue
-            path = os.path.join(folder, "action", base + ".action")
-            if not os.path.isfile(path):
+            path = "" if folder is None else os.path.join(folder, "action", base + ".action")
+            if path and os.path.isfile(path):
+                text, found = read_text(path, self.workspace.location(path))
+                self.diagnostics.extend(found)
+            elif folder is None:  # an installed package's: the shipped catalogue's
+                text = interfaces.known(package, base, kinds=("action",))
+                if text is None:
+                    continue
+            else:
                 continue
-            text, found = read_text(path, self.workspace.location(path))
-            self.diagnostics.extend(found)
             definition = interfaces.parse_definition(package, base, text or "")
             source = interfaces.render_action(definition)
             for each in interfaces.ACTION_PARTS:
@@ -559,6 +604,7 @@ class IncludeSetup:
         # ``srvs/Pause.srv`` is still ``pkg/srv/Pause``
         files = {} if folder is None else self._definitions(folder, kind)
         names = [f[: -len(extension)] for f in sorted(files)]
+        names += interfaces.catalogue_names(True).get(package, [])
         names += [key.split("/")[1] for key in interfaces.WELL_KNOWN
                   if key.startswith(package + "/")]
         name = ros2_interfaces.camel_case(snake, names)
@@ -568,10 +614,9 @@ class IncludeSetup:
             text, found = read_text(path, self.workspace.location(path))
             self.diagnostics.extend(found)
             definition = interfaces.parse_definition(package, name, text or "")
-        elif f"{package}/{name}" in interfaces.WELL_KNOWN:
-            definition = interfaces.parse_definition(
-                package, name, interfaces.WELL_KNOWN[f"{package}/{name}"])
-        elif package not in interfaces.MESSAGE_PACKAGES:
+        elif (text := interfaces.known(package, name, True, (kind,))) is not None:
+            definition = interfaces.parse_definition(package, name, text)
+        elif not interfaces.interface_package(package, True):
             self.diagnostics.append(diag.make("CPP_MESSAGE_UNKNOWN", where, header=header))
         if definition is None:
             definition = interfaces.Interface(package, name, [[]], known=False)

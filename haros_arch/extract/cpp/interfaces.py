@@ -9,6 +9,8 @@ for a service the ``Request`` / ``Response`` structs. Fields come from the ``.ms
 from __future__ import annotations
 
 import functools
+import json
+import os
 import re
 from dataclasses import dataclass, field
 
@@ -153,6 +155,55 @@ WELL_KNOWN: dict[str, str] = {
                                       "StatisticDataPoint[] statistics",
 }
 
+# the catalogue of the standard interface packages' definitions, per ROS generation
+# (``haros-arch models interfaces`` writes it from pinned public sources)
+CATALOGUE = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(
+    os.path.abspath(__file__)))), "models", "interfaces")
+CATALOGUE_DISTROS = {False: "noetic", True: "jazzy"}
+
+
+@functools.lru_cache(maxsize=2)
+def catalogue(ros2: bool) -> dict[str, str]:
+    """The shipped definitions of one ROS generation by ``package/kind/Name`` (empty
+    when the file is missing or does not read)."""
+    path = os.path.join(CATALOGUE, CATALOGUE_DISTROS[ros2] + ".json")
+    try:
+        with open(path, encoding="utf-8") as handle:
+            found = json.load(handle).get("definitions")
+    except (OSError, ValueError, AttributeError):
+        return {}
+    if not isinstance(found, dict):
+        return {}
+    return {k: v for k, v in found.items() if isinstance(k, str) and isinstance(v, str)}
+
+
+@functools.lru_cache(maxsize=2)
+def catalogue_names(ros2: bool) -> dict[str, list[str]]:
+    """The type names of the catalogue by package."""
+    names: dict[str, list[str]] = {}
+    for key in catalogue(ros2):
+        package, _kind, name = key.split("/", 2)
+        names.setdefault(package, []).append(name)
+    return names
+
+
+def known(package: str, name: str, ros2: bool = False,
+          kinds: tuple[str, ...] = ("msg", "srv")) -> str | None:
+    """The definition of ``package/Name`` that does not come from the workspace: the
+    shipped catalogue's (as the installed package has it), else one of ``WELL_KNOWN``."""
+    table = catalogue(ros2)
+    for kind in kinds:
+        text = table.get(f"{package}/{kind}/{name}")
+        if text is not None:
+            return text
+    return WELL_KNOWN.get(f"{package}/{name}")
+
+
+def interface_package(package: str, ros2: bool = False) -> bool:
+    """Whether ``package`` is one whose headers are interfaces even unseen."""
+    return package in MESSAGE_PACKAGES or package in catalogue_names(ros2)
+
+
 PRIMITIVES = {
     "bool": "uint8_t", "int8": "int8_t", "uint8": "uint8_t", "byte": "int8_t",
     "char": "uint8_t", "int16": "int16_t", "uint16": "uint16_t", "int32": "int32_t",
@@ -162,9 +213,11 @@ PRIMITIVES = {
 }
 
 _STRING_CONSTANT = re.compile(r"^string\s+\w+\s*=")
-# ``type[N] name``, ``type NAME=value`` (a constant) or ``type name default`` (ROS 2)
+# ``type[N] name``, ``type NAME=value`` (a constant) or ``type name default`` (ROS 2;
+# also its bounded ``string<=N`` and ``type[<=N]``, a sequence of variable length)
 _FIELD = re.compile(
-    r"^\s*([A-Za-z][\w/]*)\s*(\[(\d*)\])?\s+([A-Za-z]\w*)\s*(?:(=\s*(.*))|\s[^=\s].*)?$")
+    r"^\s*([A-Za-z][\w/]*(?:<=\d+)?)\s*(\[(<=)?(\d*)\])?\s+([A-Za-z]\w*)\s*"
+    r"(?:(=\s*(.*))|\s[^=\s].*)?$")
 
 
 @dataclass(frozen=True)
@@ -202,8 +255,8 @@ def parse_definition(package: str, name: str, text: str) -> Interface:
         match = _FIELD.match(line)
         if match is None:
             continue
-        kind, array, size, fname, _, value = match.groups()
-        sections[-1].append(Field(kind, fname, size if array else None,
+        kind, array, bounded, size, fname, _, value = match.groups()
+        sections[-1].append(Field(kind, fname, None if not array else "" if bounded else size,
                                   value.strip() if value is not None else None))
     return Interface(package, name, sections[:3])
 
@@ -237,10 +290,10 @@ def wire_key(type_name: str | None, depth: int = 0) -> str | None:
     (ROS 2 names, ``pkg/msg/Name``, match by name)."""
     if not type_name or type_name.count("/") != 1 or depth > 8:
         return type_name
-    text = WELL_KNOWN.get(type_name)
+    package, name = type_name.split("/", 1)
+    text = known(package, name, kinds=("msg",))
     if text is None or "---" in text:
         return type_name
-    package = type_name.split("/", 1)[0]
     parts = []
     for section in parse_definition(package, type_name, text).sections:
         for fld in section:

@@ -24,7 +24,7 @@ from ...diagnostics import Diagnostic
 from ...model.conditions import Condition
 from ...model.location import Location
 from ...model.source import PrimitiveCall
-from . import api, msg_types, parameter_library, synthesis
+from . import api, msg_types, parameter_library, reconfigure, synthesis
 from .call_sites import CallSites
 from .call_types import CallTypes, factory_made, row_class
 from .call_types import callee as callee_of_call
@@ -736,6 +736,38 @@ class CallFinder:
                     handle_namespace=sibling_namespace, node_name=owner,
                     made_in=self._made_in(full, sibling_namespace),
                     camera_of=name if camera else None))
+            if spec.reconfigure:
+                self._reconfigured(call, cls, name, handle_namespace, conditions, location,
+                                   owner)
+
+    def _reconfigured(self, call: Cursor, cls: Cursor | None, name: str,
+                      namespace: str | None, conditions: tuple[Condition, ...],
+                      location: Location, owner: str | None) -> None:
+        """The parameters a dynamic_reconfigure server of a synthesised config reads
+        and writes when it starts (``reconfigure``): each field of the config, in the
+        namespace of the server's own service ``name`` (its handle's), with the .cfg's
+        default."""
+        config = None
+        for made in (call.type, cls.type if cls is not None else None):
+            canonical = made.get_canonical() if made is not None else None
+            if canonical is not None and canonical.get_num_template_arguments() > 0:
+                config = canonical.get_template_argument_type(0).get_declaration()
+                break
+        found = reconfigure.parameters(config)
+        if found is None:
+            return
+        head = name.rpartition("/")[0] if "/" in name else ("~" if name.startswith("~") else "")
+        # a partial config: its parameters named at run time are some under the namespace
+        unknown = [("?", None, None)] if found[1] else []
+        for parameter, kind, default in [*found[0], *unknown]:
+            full = join_name(head, parameter)
+            for access in ("read", "write"):
+                self.calls.append(PrimitiveCall(
+                    kind=access, name=full, type=kind, conditions=conditions,
+                    location=location, has_default=access == "read",
+                    default=default if access == "read" else None,
+                    handle_namespace=namespace, node_name=owner,
+                    made_in=self._made_in(full, namespace)))
 
     def _made_in(self, name: str, namespace: str | None) -> str | None:
         """The USR of the constructor being walked when ``name`` (or the handle's

@@ -325,4 +325,82 @@ struct rlimit { rlim_t rlim_cur; rlim_t rlim_max; };
 #define RLIM_INFINITY (~0UL)
 int getrlimit(int resource, struct rlimit* rlim);
 int setrlimit(int resource, const struct rlimit* rlim);
+// <sys/socket.h>, <netinet/in.h>, <arpa/inet.h>, <netdb.h>, <ifaddrs.h>
+typedef unsigned int socklen_t;
+typedef unsigned short sa_family_t;
+typedef unsigned short in_port_t;
+typedef unsigned int in_addr_t;
+struct sockaddr { sa_family_t sa_family; char sa_data[14]; };
+struct sockaddr_storage { sa_family_t ss_family; char haros_opaque[126]; };
+struct in_addr { in_addr_t s_addr; };
+struct in6_addr { unsigned char s6_addr[16]; };
+struct sockaddr_in { sa_family_t sin_family; in_port_t sin_port; struct in_addr sin_addr;
+                     unsigned char sin_zero[8]; };
+struct sockaddr_in6 { sa_family_t sin6_family; in_port_t sin6_port; unsigned sin6_flowinfo;
+                      struct in6_addr sin6_addr; unsigned sin6_scope_id; };
+struct ip_mreq { struct in_addr imr_multiaddr; struct in_addr imr_interface; };
+#define AF_UNSPEC 0
+#define AF_UNIX 1
+#define AF_INET 2
+#define AF_INET6 10
+#define AF_PACKET 17
+#define PF_INET AF_INET
+#define PF_INET6 AF_INET6
+#define SOCK_STREAM 1
+#define SOCK_DGRAM 2
+#define SOCK_RAW 3
+#define SOL_SOCKET 1
+#define SO_REUSEADDR 2
+#define SO_BROADCAST 6
+#define SO_RCVBUF 8
+#define SO_RCVTIMEO 20
+#define SO_SNDTIMEO 21
+#define IPPROTO_IP 0
+#define IPPROTO_TCP 6
+#define IPPROTO_UDP 17
+#define IP_ADD_MEMBERSHIP 35
+#define INADDR_ANY ((in_addr_t)0x00000000)
+#define INADDR_BROADCAST ((in_addr_t)0xffffffff)
+#define INADDR_NONE ((in_addr_t)0xffffffff)
+#define INET_ADDRSTRLEN 16
+#define INET6_ADDRSTRLEN 46
+#define MSG_DONTWAIT 0x40
+int socket(int domain, int type, int protocol);
+int bind(int fd, const struct sockaddr* addr, socklen_t len);
+int connect(int fd, const struct sockaddr* addr, socklen_t len);
+int listen(int fd, int backlog);
+int accept(int fd, struct sockaddr* addr, socklen_t* len);
+long send(int fd, const void* buf, unsigned long n, int flags);
+long recv(int fd, void* buf, unsigned long n, int flags);
+long sendto(int fd, const void* buf, unsigned long n, int flags, const struct sockaddr* to,
+            socklen_t len);
+long recvfrom(int fd, void* buf, unsigned long n, int flags, struct sockaddr* from,
+              socklen_t* len);
+int setsockopt(int fd, int level, int name, const void* value, socklen_t len);
+int getsockopt(int fd, int level, int name, void* value, socklen_t* len);
+int shutdown(int fd, int how);
+unsigned short htons(unsigned short v);
+unsigned short ntohs(unsigned short v);
+unsigned int htonl(unsigned int v);
+unsigned int ntohl(unsigned int v);
+in_addr_t inet_addr(const char* text);
+int inet_aton(const char* text, struct in_addr* out);
+char* inet_ntoa(struct in_addr in);
+int inet_pton(int family, const char* text, void* out);
+const char* inet_ntop(int family, const void* in, char* out, socklen_t size);
+struct hostent { char* h_name; char** h_aliases; int h_addrtype; int h_length;
+                 char** h_addr_list; };
+struct hostent* gethostbyname(const char* name);
+struct addrinfo { int ai_flags; int ai_family; int ai_socktype; int ai_protocol;
+                  socklen_t ai_addrlen; struct sockaddr* ai_addr; char* ai_canonname;
+                  struct addrinfo* ai_next; };
+int getaddrinfo(const char* node, const char* service, const struct addrinfo* hints,
+                struct addrinfo** res);
+void freeaddrinfo(struct addrinfo* res);
+const char* gai_strerror(int code);
+struct ifaddrs { struct ifaddrs* ifa_next; char* ifa_name; unsigned int ifa_flags;
+                 struct sockaddr* ifa_addr; struct sockaddr* ifa_netmask;
+                 struct sockaddr* ifa_broadaddr; void* ifa_data; };
+int getifaddrs(struct ifaddrs** list);
+void freeifaddrs(struct ifaddrs* list);
 #endif

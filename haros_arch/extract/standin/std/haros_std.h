@@ -643,6 +643,14 @@ public:
   T& operator[](size_t i) const;
   T* get() const noexcept;
 };
+template<class T, class D> bool operator==(const unique_ptr<T, D>& a, nullptr_t) noexcept;
+template<class T, class D> bool operator!=(const unique_ptr<T, D>& a, nullptr_t) noexcept;
+template<class T, class D> bool operator==(nullptr_t, const unique_ptr<T, D>& a) noexcept;
+template<class T, class D> bool operator!=(nullptr_t, const unique_ptr<T, D>& a) noexcept;
+template<class T1, class D1, class T2, class D2>
+bool operator==(const unique_ptr<T1, D1>& a, const unique_ptr<T2, D2>& b);
+template<class T1, class D1, class T2, class D2>
+bool operator!=(const unique_ptr<T1, D1>& a, const unique_ptr<T2, D2>& b);
 template<class T, class... Args> shared_ptr<T> make_shared(Args&&... args);
 template<class T, class A, class... Args> shared_ptr<T> allocate_shared(const A& a, Args&&... args);
 template<class T, class... Args> unique_ptr<T> make_unique(Args&&... args);
@@ -678,6 +686,10 @@ public:
   R operator()(A... args) const;
   explicit operator bool() const noexcept;
 };
+template<class R, class... A> bool operator==(const function<R(A...)>& f, nullptr_t) noexcept;
+template<class R, class... A> bool operator!=(const function<R(A...)>& f, nullptr_t) noexcept;
+template<class R, class... A> bool operator==(nullptr_t, const function<R(A...)>& f) noexcept;
+template<class R, class... A> bool operator!=(nullptr_t, const function<R(A...)>& f) noexcept;
 namespace placeholders {
 template<int I> struct haros_placeholder {};
 extern const haros_placeholder<1> _1;

@@ -1,0 +1,137 @@
+"""The interfaces of installed packages that node code uses (sensor_msgs' Joy,
+BatteryState and PointCloud2, control_msgs' FollowJointTrajectory action) come from the
+shipped catalogue (``haros-arch models interfaces``), with the fields and constants of
+the generation: their fields parse, and a constant in a call's arguments keeps the
+call. sensor_msgs' point cloud iterators and the socket and ``nullptr`` comparisons of
+the C and C++ libraries are stood in for. The sources are
+fixtures/cpp/installed_interfaces."""
+
+from __future__ import annotations
+
+import json
+import os
+
+import yaml
+
+from haros_arch.cli import main
+from haros_arch.extract.cpp import CppResult, extract_cpp, interfaces
+from haros_arch.models import definitions
+from haros_arch.models.generate import folder_of
+from haros_arch.workspace import scan
+from tests.conftest import package_xml
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+FIXTURES = os.path.join(os.path.dirname(HERE), "fixtures", "cpp", "installed_interfaces")
+
+
+def _extract(write_tree, name: str, build_type: str) -> CppResult:
+    with open(os.path.join(FIXTURES, name), encoding="utf-8") as handle:
+        source = handle.read()
+    root = write_tree({"pkg/package.xml": package_xml("pkg", build_type),
+                       "pkg/src/node.cpp": source})
+    return extract_cpp([str(root / "pkg" / "src" / "node.cpp")], scan([str(root)]),
+                       cache_dir=None)
+
+
+def _errors(result: CppResult) -> list[str]:
+    return [d.message for d in result.diagnostics if d.code in (
+        "CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL", "CPP_MESSAGE_FIELD", "CPP_MESSAGE_UNKNOWN")]
+
+
+def test_ros2_fields_and_constants_of_installed_messages(write_tree) -> None:
+    result = _extract(write_tree, "ros2_joy_battery.cpp", "ament_cmake")
+    assert _errors(result) == []
+    assert [(c.kind, c.name, c.type) for c in result.calls] == [
+        ("declare", "expected_health", "int"),
+        ("publish", "cmd_vel", "geometry_msgs/msg/Twist"),
+        ("subscribe", "joy", "sensor_msgs/msg/Joy"),
+        ("subscribe", "battery_state", "sensor_msgs/msg/BatteryState")]
+    # the constants were not declared permissively: the catalogue has them
+    assert "CPP_NAMES_DECLARED" not in [d.code for d in result.diagnostics]
+
+
+def test_ros1_point_cloud_iterators_and_an_installed_action(write_tree) -> None:
+    result = _extract(write_tree, "ros1_cloud_action.cpp", "catkin")
+    assert _errors(result) == []
+    # the action client was lost before: its goal type was not known
+    assert [(c.kind, c.name, c.type) for c in result.calls] == [
+        ("publish", "cloud", "sensor_msgs/PointCloud2"),
+        ("subscribe", "points", "sensor_msgs/PointCloud2"),
+        ("action-client", "arm_controller/follow_joint_trajectory",
+         "control_msgs/FollowJointTrajectory")]
+
+
+def test_sockets_and_nullptr_comparisons(write_tree) -> None:
+    result = _extract(write_tree, "ros2_sockets.cpp", "ament_cmake")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "ip")]
+    assert "CPP_NAMES_DECLARED" not in [d.code for d in result.diagnostics]
+
+
+def test_each_generation_has_its_own_definitions() -> None:
+    """ROS 1's CameraInfo has ``D``/``K``, ROS 2's ``d``/``k``; ROS 2's Header has no
+    ``seq``; a workspace-less name falls back to the hand-written table."""
+    ros1 = interfaces.known("sensor_msgs", "CameraInfo")
+    ros2 = interfaces.known("sensor_msgs", "CameraInfo", ros2=True)
+    assert ros1 is not None and "float64[9] K" in ros1.splitlines()
+    assert ros2 is not None and "float64[9] k" in ros2.splitlines()
+    assert "uint32 seq" not in (interfaces.known("std_msgs", "Header", ros2=True) or "")
+    assert interfaces.known("bond", "Constants") == interfaces.WELL_KNOWN["bond/Constants"]
+    assert interfaces.known("no_such_msgs", "Thing") is None
+
+
+def test_bounded_fields_are_read() -> None:
+    parsed = interfaces.parse_definition(
+        "p", "M", "string<=10 name\nint32[<=5] values\nfloat64[3] fixed\nuint8 A=1")
+    assert [(f.type, f.name, f.array, f.constant) for f in parsed.sections[0]] == [
+        ("string<=10", "name", None, None), ("int32", "values", "", None),
+        ("float64", "fixed", "3", None), ("uint8", "A", None, "1")]
+
+
+def test_the_shipped_catalogue_matches_its_list() -> None:
+    """Every pinned entry of interfaces.yaml is in its distribution's document with the
+    same commit and packages, and each package gave definitions: a list edited without
+    running ``haros-arch models interfaces`` fails here."""
+    with open(definitions.LIST, encoding="utf-8") as handle:
+        entries = yaml.safe_load(handle)
+    documents = {}
+    for distro in {entry["distro"] for entry in entries}:
+        with open(os.path.join(definitions.FOLDER, f"{distro}.json"), encoding="utf-8") as h:
+            documents[distro] = json.load(h)
+    for entry in entries:
+        document = documents[entry["distro"]]
+        assert {"repository": entry["repository"], "commit": entry["commit"],
+                "packages": entry["packages"]} in document["sources"]
+        for package in entry["packages"]:
+            assert any(key.startswith(package + "/") for key in document["definitions"])
+
+
+def test_models_interfaces_reads_a_pinned_tree(tmp_path, capsys) -> None:
+    commit = "a" * 40
+    tree = tmp_path / "sources" / folder_of("github:someone/some_msgs", commit)
+    (tree / "some_msgs" / "msg").mkdir(parents=True)
+    (tree / "some_msgs" / "srv").mkdir()
+    (tree / "some_msgs" / "package.xml").write_text(
+        "<package format='3'><name>some_msgs</name></package>")
+    (tree / "some_msgs" / "msg" / "Thing.msg").write_text(
+        "# a comment\nstd_msgs/Header header  # trailing\nfloat64[] values\n"
+        "uint8 MODE_A=1\nstring NOTE=a # kept\n")
+    (tree / "some_msgs" / "srv" / "Ask.srv").write_text("string q\n---\nbool ok\n")
+    listing = tmp_path / "list.yaml"
+    listing.write_text(yaml.safe_dump([{
+        "repository": "github:someone/some_msgs", "commit": commit, "distro": "jazzy",
+        "packages": ["some_msgs"]}]))
+    out = tmp_path / "out"
+    assert main(["models", "interfaces", str(listing), "--sources",
+                 str(tmp_path / "sources"), "-o", str(out)]) == 0
+    document = json.loads((out / "jazzy.json").read_text())
+    assert document["sources"] == [{"repository": "github:someone/some_msgs",
+                                    "commit": commit, "packages": ["some_msgs"]}]
+    assert document["definitions"] == {
+        "some_msgs/msg/Thing": "std_msgs/Header header\nfloat64[] values\nuint8 MODE_A=1\n"
+                               "string NOTE=a # kept",
+        "some_msgs/srv/Ask": "string q\n---\nbool ok"}
+    assert "2 definitions" in capsys.readouterr().out
+    # a tree that is not there is said, not a traceback
+    assert main(["models", "interfaces", str(listing), "--sources",
+                 str(tmp_path / "nowhere"), "-o", str(out)]) == 2

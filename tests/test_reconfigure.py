@@ -1,0 +1,108 @@
+"""dynamic_reconfigure (ROS 1): a package's ``cfg/*.cfg`` is read (never run) for the
+``<Name>Config.h`` it generates: the config's fields parse, and a ``Server`` of it reads
+and writes each of its parameters under its handle's namespace, with the .cfg default.
+A parameter a launch file sets there that the .cfg does not declare is then not read
+(before, everything under a server's namespace was undecided). The sources are
+fixtures/cpp/reconfigure."""
+
+from __future__ import annotations
+
+import json
+import os
+
+from haros_arch.cli import main
+from haros_arch.extract.cpp import extract_cpp, reconfigure
+from haros_arch.workspace import scan
+from tests.conftest import package_xml
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+FIXTURES = os.path.join(os.path.dirname(HERE), "fixtures", "cpp", "reconfigure")
+
+
+def _fixture(name: str) -> str:
+    with open(os.path.join(FIXTURES, name), encoding="utf-8") as handle:
+        return handle.read()
+
+
+def _tree(write_tree, cfg: str, launch: str = "") -> object:
+    files = {"tracker/package.xml": package_xml("tracker", "catkin"),
+             "tracker/CMakeLists.txt": (
+                 "cmake_minimum_required(VERSION 3.0.2)\nproject(tracker)\n"
+                 "find_package(catkin REQUIRED COMPONENTS roscpp dynamic_reconfigure)\n"
+                 "generate_dynamic_reconfigure_options(cfg/Tracker.cfg)\n"
+                 "catkin_package()\nadd_executable(tracker_node src/tracker.cpp)\n"),
+             "tracker/src/tracker.cpp": _fixture("tracker.cpp"),
+             "tracker/cfg/Tracker.cfg": cfg}
+    if launch:
+        files["tracker/launch/tracker.launch"] = launch
+    return write_tree(files)
+
+
+def test_a_server_reads_and_writes_the_parameters_of_its_cfg(write_tree) -> None:
+    root = _tree(write_tree, _fixture("Tracker.cfg"))
+    result = extract_cpp([str(root / "tracker" / "src" / "tracker.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    calls = [(c.kind, c.name, c.type, c.default, c.handle_namespace) for c in result.calls
+             if c.kind in ("read", "write")]
+    assert calls == [
+        ("read", "~rate", "double", 10.0, "~"), ("write", "~rate", "double", None, "~"),
+        ("read", "~frame_id", "str", "base_link", "~"),
+        ("write", "~frame_id", "str", None, "~"),
+        ("read", "~mode", "int", 0, "~"), ("write", "~mode", "int", None, "~"),
+        ("read", "~use_filter", "bool", True, "~"), ("write", "~use_filter", "bool", None, "~"),
+        # offset_x and offset_y are named in a loop: some parameters are not known
+        ("read", "~?", None, None, "~"), ("write", "~?", None, None, "~")]
+    codes = [d.code for d in result.diagnostics]
+    assert "CPP_RECONFIGURE_PARTIAL" in codes
+    # the fields and the enum's constant parse; only the field named in a loop does not
+    errors = [d.message for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"]
+    assert errors == ["C++ error: no member named 'offset_x' in 'tracker::TrackerConfig'"]
+
+
+def test_reading_a_cfg_runs_nothing_and_survives_bad_input(tmp_path) -> None:
+    marker = tmp_path / "ran"
+    text = (f"import os\nos.system('touch {marker}')\n"
+            "gen = ParameterGenerator()\ngen.add('speed', double_t, 0, 'd', 1.5, 0, 3)\n"
+            "gen.add(name='on', paramtype=bool_t, level=0, description='d', default=False)\n"
+            "exit(gen.generate('p', 'n', 'Speed'))\n")
+    config, problems = reconfigure.read_cfg("Speed.cfg", text, "p")
+    assert not marker.exists() and problems == []
+    assert config is not None and config.name == "Speed" and not config.partial
+    assert config.parameters == [("speed", "double_t", 1.5), ("on", "bool_t", False)]
+    config, problems = reconfigure.read_cfg("Bad.cfg", "gen.add('x', double_t,\n", "p")
+    assert config is None and [p.code for p in problems] == ["RECONFIGURE_CFG_INVALID"]
+    assert problems[0].location.line == 1  # the call never closed
+    config, problems = reconfigure.read_cfg("None.cfg", "gen = ParameterGenerator()\n", "p")
+    assert config is None and problems == []
+
+
+def _check(root) -> dict:
+    out = root / "check.json"
+    main(["check", str(root), "--format", "json", "-o", str(out), "--fail-on", "never"])
+    return json.loads(out.read_text())
+
+
+LAUNCH = """<launch>
+  <node pkg="tracker" type="tracker_node" name="tracker">
+    <param name="rate" value="20.0"/>
+    <param name="use_filtre" value="false"/>
+  </node>
+</launch>
+"""
+
+
+def test_a_parameter_the_cfg_does_not_declare_is_not_read(write_tree) -> None:
+    complete = _fixture("Tracker.cfg").replace(
+        'for axis in ["x", "y"]:\n    gen.add("offset_" + axis, double_t, 0, "an offset", 0.0)\n',
+        'gen.add("offset_x", double_t, 0, "an offset", 0.0)\n')
+    report = _check(_tree(write_tree, complete, LAUNCH))
+    findings = [(f["rule"], f["entities"]) for f in report["findings"]
+                if f["rule"].startswith("parameter-set-not-read")]
+    assert findings == [("parameter-set-not-read", ["parameter:/tracker/use_filtre"])]
+
+
+def test_a_partial_cfg_leaves_its_namespace_undecided(write_tree) -> None:
+    report = _check(_tree(write_tree, _fixture("Tracker.cfg"), LAUNCH))
+    rules = [f["rule"] for f in report["findings"]
+             if f["rule"].startswith("parameter-set-not-read")]
+    assert rules == ["parameter-set-not-read-undecided"]
