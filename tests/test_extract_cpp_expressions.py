@@ -1,11 +1,13 @@
 """ROS calls anywhere in an expression: loop and branch conditions, ternaries, ``&&``,
 returns and other calls' arguments, each with the conditions under which it runs; and
 all of them still found after more clang errors than clang reports by default (a
-generated dynamic_reconfigure config known only by name, as in navigation's amcl)."""
+generated dynamic_reconfigure config known only by name, as in navigation's amcl when
+its .cfg is not there)."""
 
 from __future__ import annotations
 
 import os
+import shutil
 
 import pytest
 
@@ -22,13 +24,29 @@ def localiser() -> CppResult:
     return extract_cpp([LOCALISER], scan([ROOT]), cache_dir=None)
 
 
-def test_more_errors_than_clang_reports_by_default(localiser: CppResult) -> None:
-    fields = [d for d in localiser.diagnostics if d.code == "CPP_MESSAGE_FIELD"]
+def test_more_errors_than_clang_reports_by_default(tmp_path) -> None:
+    # without its .cfg the config is known only by name: each field read is an error
+    copy = tmp_path / "expressions"
+    shutil.copytree(ROOT, copy)
+    os.remove(copy / "src" / "localiser" / "cfg" / "Localiser.cfg")
+    result = extract_cpp([str(copy / os.path.relpath(LOCALISER, ROOT))], scan([str(copy)]),
+                         cache_dir=None)
+    fields = [d for d in result.diagnostics if d.code == "CPP_MESSAGE_FIELD"]
     assert len(fields) == 24  # every one reported, none lost to an error limit
-    assert [d for d in localiser.diagnostics if d.code == "CPP_PARSE_ERROR"] == []
+    assert [d for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"] == []
+    assert len(result.calls) == len(CALLS)
 
 
-@pytest.mark.parametrize(("kind", "name", "ctype", "line", "conditions"), [
+def test_the_fields_of_the_cfg_parse(localiser: CppResult) -> None:
+    # its .cfg declares alpha1 only: the 23 other fields the code reads are errors
+    errors = [d.message for d in localiser.diagnostics if d.code in (
+        "CPP_MESSAGE_FIELD", "CPP_PARSE_ERROR")]
+    assert len(errors) == 23
+    assert all("in 'localiser::LocaliserConfig'" in e for e in errors)
+    assert not any("'alpha1'" in e for e in errors)
+
+
+CALLS = [
     ("publish", "status", "std_msgs/String", 49, ()),                 # return
     ("client", "static_map", "nav_msgs/GetMap", 60, ()),              # while condition
     ("read", "~use_map_topic", None, 75, ()),                         # if condition
@@ -42,7 +60,10 @@ def test_more_errors_than_clang_reports_by_default(localiser: CppResult) -> None
     ("publish", "particles", "std_msgs/String", 96, ()),              # argument of a call
     ("read", "~fallback_rate", "double", 98, (("else", "ready"),)),   # ready || ...
     ("write", "~initial_pose_x", "double", 101, ()),                  # tf2 LinearMath
-])
+]
+
+
+@pytest.mark.parametrize(("kind", "name", "ctype", "line", "conditions"), CALLS)
 def test_call_in_expression(localiser: CppResult, kind: str, name: str, ctype: str | None,
                             line: int, conditions: tuple[tuple[str, str], ...]) -> None:
     found = [c for c in localiser.calls if (c.kind, c.name) == (kind, name)]
