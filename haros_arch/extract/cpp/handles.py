@@ -43,7 +43,7 @@ _FUNCTIONS = frozenset({
 })
 _POINTERS = ("shared_ptr", "unique_ptr", "weak_ptr")
 _POINTER_READS = ("operator->", "operator*", "get")  # a smart pointer's handle
-_DISAGREE = (None, None)  # a member's writes that differ (``Namespaces._assigned``)
+_UNSURE = (None, None)  # a member whose writes differ (``Namespaces._assigned``)
 
 
 def qualified_name(cursor: Cursor | None) -> str:
@@ -171,10 +171,11 @@ class Namespaces:
             field = expr.referenced
             found = member_initialiser(field, self.source) if self.sites is None else (
                 self.sites.member(field, scope.body))
-            if found is None:
-                found = self._assigned(field)
-                if found is _DISAGREE:
+            if found is None or found[1].kind != CursorKind.CONSTRUCTOR:
+                assigned = self._assigned(field)  # not set by a constructor: by the unit
+                if assigned is _UNSURE:
                     return UNKNOWN
+                found = found or assigned
             value, where = found if found is not None else (None, None)
             if value is None and found is not None:  # left to its default initialiser
                 value, where = initializer(field), None
@@ -224,18 +225,19 @@ class Namespaces:
 
     def _assigned(self, field: Cursor) -> tuple[Cursor | None, Cursor] | None:
         """What the unit's functions (but destructors) assign to a member that no
-        constructor or initialisation method sets (``member``), when every such write
-        agrees (the same text, reading no parameter of a method: the host's value); and
-        the function that writes it. ``_DISAGREE`` when the writes differ; None when
-        there is none: the default."""
+        constructor sets, when every such write agrees (the same text), and the function
+        that writes it; None when there is none (the default). ``_UNSURE`` when the
+        writes differ, or the value reads a parameter of a method that no call of the
+        file passes (a plugin's ``initialize(name)``: its host's value)."""
         found = self.members.assignments(field) if self.members is not None else []
         if not found:
             return None
         value, function = found[0]
         if len({value_text(v) for v, _ in found}) > 1 or (
             function.kind != CursorKind.CONSTRUCTOR and uses_parameter(value)
+            and (self.sites is None or not self.sites.callers(function))
         ):
-            return _DISAGREE
+            return _UNSURE
         return value, function
 
     def _global_value(self, decl: Cursor) -> Cursor | None:
