@@ -3,9 +3,14 @@ as depth_image_proc's disparity nodelet (ROS 1 image_pipeline) sets
 ``right_nh_.reset(new ros::NodeHandle(nh, "right"))`` in ``onInit`` and subscribes
 ``camera_info`` on ``*right_nh_`` in its connection callback: ``right/camera_info``,
 not ``?/camera_info``. The value is read where it is written (a local handle of that
-method), and a member the file's functions set to different values is unknown."""
+method); a member the file's functions set to different values, or to a parameter of a
+method no call of the file makes, is unknown, not the default handle."""
 
 from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
 
 from haros_arch.extract.cpp import extract_cpp
 from haros_arch.workspace import scan
@@ -26,12 +31,14 @@ class Disparity : public nodelet::Nodelet {
   ros::NodeHandle left_nh_;
   ros::NodeHandle sub_nh_;
   boost::shared_ptr<ros::NodeHandle> either_nh_;
+  ros::NodeHandle host_nh_;
   message_filters::Subscriber<sensor_msgs::CameraInfo> sub_info_;
   ros::Publisher a_, b_, c_, d_, e_;
   void onInit() override;
   void connectCb();
   void setup(ros::NodeHandle& pnh);
   void other();
+  void initialize(std::string name);
 };
 
 void Disparity::onInit() {
@@ -52,12 +59,17 @@ void Disparity::other() {
   either_nh_.reset(new ros::NodeHandle(getNodeHandle(), "two"));
 }
 
+void Disparity::initialize(std::string name) {
+  host_nh_ = ros::NodeHandle("~/" + name);
+}
+
 void Disparity::connectCb() {
   sub_info_.subscribe(*right_nh_, "camera_info", 1);
   a_ = right_nh_->advertise<std_msgs::String>("right_out", 1);
   b_ = left_nh_.advertise<std_msgs::String>("left_out", 1);
   c_ = sub_nh_.advertise<std_msgs::String>("sub_out", 1);
   d_ = either_nh_->advertise<std_msgs::String>("either_out", 1);
+  e_ = host_nh_.advertise<std_msgs::String>("host_out", 1);
 }
 }  // namespace demo
 
@@ -79,22 +91,33 @@ int main(int argc, char ** argv) {
 """
 
 
-def _calls(write_tree, name: str, text: str) -> list[tuple[str, str]]:
-    root = write_tree({"demo/package.xml": package_xml("demo"), f"demo/src/{name}": text})
+def _calls(root: Path, name: str, text: str) -> dict[str, str]:
+    """The name of each call by its last part."""
+    (root / "demo" / "src").mkdir(parents=True, exist_ok=True)
+    (root / "demo" / "package.xml").write_text(package_xml("demo"))
+    (root / "demo" / "src" / name).write_text(text)
     result = extract_cpp([str(root / "demo" / "src" / name)], scan([str(root)]),
                          cache_dir=None)
-    return sorted((c.kind, c.name) for c in result.calls)
+    return {c.name.rpartition("/")[2]: c.name for c in result.calls}
 
 
-def test_a_handle_member_set_once_outside_the_constructor(write_tree) -> None:
-    assert _calls(write_tree, "disparity.cpp", NODELET) == [
-        ("publish", "?/either_out"),  # set to ``one`` in onInit and ``two`` in other()
-        ("publish", "left/left_out"),  # a local handle of onInit, assigned
-        ("publish", "right/right_out"),  # reset(new NodeHandle(nh, "right"))
-        ("publish", "~sub/sub_out"),  # ``= ros::NodeHandle(pnh, "sub")`` in a method
-        ("subscribe", "right/camera_info"),  # through ``*right_nh_``
-    ]
+@pytest.fixture(scope="module")
+def nodelet(tmp_path_factory: pytest.TempPathFactory) -> dict[str, str]:
+    return _calls(tmp_path_factory.mktemp("nodelet"), "disparity.cpp", NODELET)
 
 
-def test_a_local_handle_pointer_reset_once(write_tree) -> None:
-    assert _calls(write_tree, "talker.cpp", NODE) == [("publish", "ns/chatter")]
+@pytest.mark.parametrize("name", [
+    "right/camera_info",  # reset(new NodeHandle(nh, "right")) in onInit, ``*right_nh_``
+    "right/right_out",  # the same member through ``right_nh_->``
+    "left/left_out",  # a local handle of onInit, assigned: read in onInit
+    "~sub/sub_out",  # ``= ros::NodeHandle(pnh, "sub")`` in a method onInit calls
+    "?/either_out",  # set to ``one`` in onInit and to ``two`` in other(): unknown
+    "?/host_out",  # from a parameter of a method no call here makes: its host's value
+])
+def test_a_handle_member_set_outside_the_constructor(nodelet: dict[str, str],
+                                                      name: str) -> None:
+    assert nodelet[name.rpartition("/")[2]] == name
+
+
+def test_a_local_handle_pointer_reset_once(tmp_path: Path) -> None:
+    assert _calls(tmp_path, "talker.cpp", NODE) == {"chatter": "ns/chatter"}
