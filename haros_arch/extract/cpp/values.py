@@ -3,7 +3,8 @@
 A string value is a tuple of parts, each a known ``str`` or ``None`` for a part that is
 only known at run time; ``render`` writes the unknown parts as ``?``. Resolved:
 literals (also through ``#define``), ``const`` / ``constexpr`` variables, local variables
-written exactly once (at their declaration or by one assignment), ``std::string``
+written exactly once (at their declaration, by one assignment or a smart pointer's
+``reset(p)``: the writes ``writes.writes_of`` reads), ``std::string``
 construction, ``+`` concatenation and ``.c_str()``, a function's parameter from the
 calls of the function (``call_sites.CallSites``), and a class member from what a
 constructor initialises it with. Anything else is unknown.
@@ -132,8 +133,11 @@ class Scope:
                     parts = children[-1:]  # a loop's or a switch's body
                 self._regions.extend((p.extent.start.offset, p.extent.end.offset)
                                      for p in parts)
-            elif kind == CursorKind.CALL_EXPR and node.spelling != "operator=":
-                for index, arg in enumerate(node.get_arguments()):
+            elif kind == CursorKind.CALL_EXPR:
+                args = list(node.get_arguments())
+                if node.spelling == "operator=" and len(args) == 2:
+                    args = []  # a write, not a call the variable is passed to
+                for index, arg in enumerate(args):
                     if arg.kind in (CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR) \
                             and arg.referenced is not None:
                         self._passed[key_of(arg.referenced)] = (node, index)

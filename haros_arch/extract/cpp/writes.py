@@ -103,8 +103,8 @@ def _call(call: Cursor, source: dict[str, bytes]) -> list[Write]:
             obj = strip(obj)
             if obj.type.get_canonical().kind == TypeKind.POINTER:
                 continue  # p->m() changes *p, not p
-            given = written_arguments(call)
-            if call.spelling == "reset" and len(given) == 1 and _smart_pointer(obj):
+            given = written_arguments(call) if call.spelling == "reset" else []
+            if len(given) == 1 and _smart_pointer(obj):
                 found.append(Write(obj, given[0], call, True))
             else:
                 found.append(Write(obj, None, call, False))
