@@ -121,3 +121,39 @@ def test_a_handle_member_set_outside_the_constructor(nodelet: dict[str, str],
 
 def test_a_local_handle_pointer_reset_once(tmp_path: Path) -> None:
     assert _calls(tmp_path, "talker.cpp", NODE) == {"chatter": "ns/chatter"}
+
+
+LIFELONG = """
+#include <rclcpp/rclcpp.hpp>
+class Lifelong : public rclcpp::Node {
+ public:
+  Lifelong() : rclcpp::Node("lifelong") {}
+  void on_configure();
+ private:
+  bool use_tree_;
+};
+
+void Lifelong::on_configure() {
+  use_tree_ = false;
+  if (!this->has_parameter("use_tree")) {
+    this->declare_parameter("use_tree", use_tree_);
+  }
+  use_tree_ = this->get_parameter("use_tree").as_bool();
+}
+"""
+
+
+def test_a_builtin_member_set_by_an_init_method_with_equals(tmp_path: Path) -> None:
+    """slam_toolbox's LifelongSlamToolbox::on_configure: ``use_tree_ = false;`` (a
+    builtin's ``=``, not an ``operator=`` call) is the value its declaration gives, as
+    its later read into it follows the declaration."""
+    root = tmp_path
+    (root / "demo" / "src").mkdir(parents=True)
+    (root / "demo" / "package.xml").write_text(package_xml("demo", "ament_cmake").replace(
+        "<export>", "<depend>rclcpp</depend><export>"))
+    (root / "demo" / "src" / "lifelong.cpp").write_text(LIFELONG)
+    result = extract_cpp([str(root / "demo" / "src" / "lifelong.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    declared = [c for c in result.calls if c.kind == "declare"]
+    assert [(c.name, c.has_default, c.default) for c in declared] == [
+        ("use_tree", True, False)]
