@@ -17,17 +17,17 @@ from dataclasses import dataclass
 
 from clang.cindex import Cursor, CursorKind, Type, TypeKind
 
+from .expressions import is_default_argument
 from .values import (
     PLACEHOLDER,
     SEPARATOR,
     Scope,
     Value,
     initializer,
-    is_default_argument,
     key_of,
-    strip,
     written_arguments,
 )
+from .writes import writes_of
 
 _CALLABLE = frozenset({CursorKind.FUNCTION_DECL, CursorKind.CXX_METHOD, CursorKind.CONSTRUCTOR,
                        CursorKind.FUNCTION_TEMPLATE})
@@ -154,10 +154,10 @@ class CallSites:
         key = key_of(field)
         options = self._members.get(key)
         if options is None:
-            options = self._members[key] = constructor_values(field)
+            options = self._members[key] = constructor_values(field, self.source)
         if not options or all(value is None for value, _ in options):
-            return member_initialiser(field)
-        texts = {_text(value) for value, _ in options}
+            return member_initialiser(field, self.source)
+        texts = {value_text(value) for value, _ in options}
         if len(texts) == 1:
             return options[0]
         mine = next((o for o in options if function is not None
@@ -168,7 +168,7 @@ class CallSites:
             return next((o for o in options if key_of(o[1]) == self.choice[1]), options[0])
         here = [o for o in options if self.callers(o[1])]
         if here:  # the file constructs the class: by these constructors
-            if len({_text(value) for value, _ in here}) == 1:
+            if len({value_text(value) for value, _ in here}) == 1:
                 return here[0]
             options = here
         if self.forks is not None and not any(f.field == key for f in self.forks):
@@ -313,7 +313,8 @@ class Fork:
     local: bool = False
 
 
-def constructor_values(field: Cursor) -> list[tuple[Cursor | None, Cursor]]:
+def constructor_values(field: Cursor, source: dict[str, bytes]
+                       ) -> list[tuple[Cursor | None, Cursor]]:
     """Per constructor of ``field``'s class defined in this file (its definition): the
     value it initialises or assigns the member with, None when it leaves it (the
     member's default); those that write it first, each in declaration order."""
@@ -328,7 +329,7 @@ def constructor_values(field: Cursor) -> list[tuple[Cursor | None, Cursor]]:
         definition = member.get_definition()
         if definition is None or _copies(definition, owner):
             continue
-        value = _written(field, definition, True)
+        value = _written(field, definition, True, source)
         (writing if value is not None else leaving).append((value, definition))
     return writing + leaving
 
@@ -343,7 +344,7 @@ def _copies(constructor: Cursor, owner: Cursor) -> bool:
     return declaration is not None and key_of(declaration) == key_of(owner)
 
 
-def _text(value: Cursor | None) -> str:
+def value_text(value: Cursor | None) -> str:
     """An initialiser as its tokens (empty for none): two constructors that write the
     same text give the same value when it reads none of their parameters."""
     if value is None:
@@ -359,7 +360,8 @@ INIT_METHODS = frozenset({"onInit", "initialize", "init", "configure", "on_confi
                           "on_init"})
 
 
-def member_initialiser(field: Cursor) -> tuple[Cursor, Cursor] | None:
+def member_initialiser(field: Cursor, source: dict[str, bytes]
+                       ) -> tuple[Cursor, Cursor] | None:
     """What a constructor of ``field``'s class initialises or assigns it with, or else an
     initialisation method (``onInit``, ``initialize``, ...), and that function (its
     definition, where this file has it)."""
@@ -375,30 +377,32 @@ def member_initialiser(field: Cursor) -> tuple[Cursor, Cursor] | None:
         definition = member.get_definition()
         if definition is None:
             continue
-        value = _written(field, definition, member.kind == CursorKind.CONSTRUCTOR)
+        value = _written(field, definition, member.kind == CursorKind.CONSTRUCTOR, source)
         if value is not None:
             return value, definition
     return None
 
 
-def _written(field: Cursor, definition: Cursor, constructor: bool) -> Cursor | None:
-    """What a constructor's initialiser list, or an assignment in the body of it or of an
-    initialisation method, gives ``field``."""
+def _written(field: Cursor, definition: Cursor, constructor: bool,
+             source: dict[str, bytes]) -> Cursor | None:
+    """What a constructor's initialiser list, or a write of the body of it or of an
+    initialisation method that replaces the member's value (``member_ = value``,
+    ``member_.reset(new T(..))``: ``writes``), gives ``field``."""
     children = list(definition.get_children())
     for i, child in enumerate(children[:-1]):
         if child.kind == CursorKind.MEMBER_REF and child.referenced == field:
             return children[i + 1]
     for node in definition.walk_preorder():
-        if node.kind == CursorKind.CALL_EXPR and node.spelling == "operator=":
-            args = list(node.get_arguments())
-            if len(args) == 2 and strip(args[0]).kind == CursorKind.MEMBER_REF_EXPR and (
-                strip(args[0]).referenced == field
-            ) and (constructor or not _uses_parameter(args[1])):
-                return args[1]
+        for write in writes_of(node, source):
+            target, value = write.target, write.value
+            if write.whole and value is not None and (
+                target.kind == CursorKind.MEMBER_REF_EXPR and target.referenced == field
+            ) and (constructor or not uses_parameter(value)):
+                return value
     return None
 
 
-def _uses_parameter(expr: Cursor) -> bool:
+def uses_parameter(expr: Cursor) -> bool:
     """Whether an expression reads a function parameter: in an initialisation method the
     host gives it (a plugin's ``initialize(name)``), which no call site here shows, so a
     member set from it stays unknown for the plugin's host to fill."""

@@ -14,7 +14,8 @@ import re
 from clang.cindex import Cursor, CursorKind, TypeKind
 
 from . import api
-from .call_sites import CallSites, member_initialiser
+from .call_sites import CallSites, member_initialiser, uses_parameter, value_text
+from .members import MemberWrites
 from .values import (
     PLACEHOLDER,
     UNKNOWN,
@@ -27,6 +28,7 @@ from .values import (
     strip,
     written_arguments,
 )
+from .writes import writes_of
 
 MAX_DEPTH = 16
 # a declaration's initialiser that starts with a string literal and a ``+``
@@ -40,6 +42,8 @@ _FUNCTIONS = frozenset({
     CursorKind.DESTRUCTOR, CursorKind.FUNCTION_TEMPLATE, CursorKind.CONVERSION_FUNCTION,
 })
 _POINTERS = ("shared_ptr", "unique_ptr", "weak_ptr")
+_POINTER_READS = ("operator->", "operator*", "get")  # a smart pointer's handle
+_UNSURE = (None, None)  # a member whose writes differ (``Namespaces._assigned``)
 
 
 def qualified_name(cursor: Cursor | None) -> str:
@@ -113,6 +117,7 @@ class Namespaces:
         self.macros = macros
         self.source = source
         self.sites: CallSites | None = None  # set once the file's functions are known
+        self.members: MemberWrites | None = None  # likewise
         # the writes of the unit's global variables in its main file's functions (see
         # ``_global_value``), found once
         self._globals: dict[tuple[str, int], list[Cursor]] | None = None
@@ -164,15 +169,23 @@ class Namespaces:
             return UNKNOWN if value is None else self.of(value, scope, depth + 1)
         if kind == CursorKind.MEMBER_REF_EXPR and expr.referenced is not None:
             field = expr.referenced
-            found = member_initialiser(field) if self.sites is None else self.sites.member(
-                field, scope.body)
-            value = found[0] if found is not None else None
+            found = member_initialiser(field, self.source) if self.sites is None else (
+                self.sites.member(field, scope.body))
+            if found is None or found[1].kind != CursorKind.CONSTRUCTOR:
+                assigned = self._assigned(field)  # not set by a constructor: by the unit
+                if assigned is _UNSURE:
+                    return UNKNOWN
+                found = found or assigned
+            value, where = found if found is not None else (None, None)
             if value is None and found is not None:  # left to its default initialiser
-                value = initializer(field)
+                value, where = initializer(field), None
             if value is None:
-                # a member no constructor initialises: the default handle
+                # a member nothing sets: the default handle
                 return ("",) if is_handle(expr) else UNKNOWN
-            return self.of(value, Scope(None, self.macros, self.source, self.sites),
+            # read where it is written: ``ros::NodeHandle right(nh, "right"); right_nh_ =
+            # right;``
+            return self.of(value, Scope(None, self.macros, self.source, self.sites)
+                           if where is None or self.sites is None else self.sites.scope(where),
                            depth + 1)
         if kind == CursorKind.CXX_NEW_EXPR:
             inner = [c for c in expr.get_children() if c.kind.is_expression()]
@@ -190,7 +203,7 @@ class Namespaces:
         factory = (owner, target.spelling)
         if factory in api.HANDLE_FACTORIES:
             return (api.HANDLE_FACTORIES[factory],)
-        if factory in api.RCLCPP_SUB_NODE or target.spelling in ("operator->", "get"):
+        if factory in api.RCLCPP_SUB_NODE or target.spelling in _POINTER_READS:
             return self._sub_node(expr, factory, scope, depth)
         made = qualified_name(record_class(expr))
         if target.spelling in ("make_shared", "make_unique") and made in api.HANDLE_CLASSES:
@@ -209,6 +222,23 @@ class Namespaces:
             child = render(scope.string(args[1]))
             return (normalise(join_name(parent, child)) if parent else normalise(child),)
         return (normalise(render(scope.string(args[0]))),)
+
+    def _assigned(self, field: Cursor) -> tuple[Cursor | None, Cursor] | None:
+        """What the unit's functions (but destructors) assign to a member that no
+        constructor sets, when every such write agrees (the same text), and the function
+        that writes it; None when there is none (the default). ``_UNSURE`` when the
+        writes differ, or the value reads a parameter of a method that no call of the
+        file passes (a plugin's ``initialize(name)``: its host's value)."""
+        found = self.members.assignments(field) if self.members is not None else []
+        if not found:
+            return None
+        value, function = found[0]
+        if len({value_text(v) for v, _ in found}) > 1 or (
+            function.kind != CursorKind.CONSTRUCTOR and uses_parameter(value)
+            and (self.sites is None or not self.sites.callers(function))
+        ):
+            return _UNSURE
+        return value, function
 
     def _global_value(self, decl: Cursor) -> Cursor | None:
         """What a global handle holds when the functions of the unit's main file write it
@@ -234,25 +264,14 @@ class Namespaces:
     def _global_writes(self, function: Cursor) -> None:
         assert self._globals is not None
         for node in function.walk_preorder():
-            target: Cursor | None = None
-            value: Cursor | None = None
-            if node.kind == CursorKind.CALL_EXPR:
-                args = list(node.get_arguments())
-                children = [c for c in node.get_children() if c.kind.is_expression()]
-                if node.spelling == "operator=" and len(args) == 2:
-                    target, value = strip(args[0]), args[1]
-                elif node.spelling == "reset" and len(args) == 1 and children and (
-                        children[0].kind == CursorKind.MEMBER_REF_EXPR):
-                    objects = [c for c in children[0].get_children() if c.kind.is_expression()]
-                    target, value = (strip(objects[0]) if objects else None), args[0]
-            elif node.kind == CursorKind.BINARY_OPERATOR:
-                children = list(node.get_children())
-                if len(children) == 2 and self.source and Scope(
-                        None, self.macros, self.source).operator(node, children) == "=":
-                    target, value = strip(children[0]), children[1]
-            if target is not None and target.kind == CursorKind.DECL_REF_EXPR and (
-                    target.referenced is not None and _is_global(target.referenced)):
-                self._globals.setdefault(key_of(target.referenced), []).append(value)
+            for write in writes_of(node, self.source):
+                target = write.target
+                if write.whole and write.value is not None and (
+                    target.kind == CursorKind.DECL_REF_EXPR
+                    and target.referenced is not None and _is_global(target.referenced)
+                ):
+                    self._globals.setdefault(key_of(target.referenced), []).append(
+                        write.value)
 
     def _dropped_prefix(self, decl: Cursor) -> Parts:
         """A handle declared ``NodeHandle nh("~/" + name_)`` whose initialiser clang
@@ -270,7 +289,7 @@ class Namespaces:
 
     def _sub_node(self, call: Cursor, factory: tuple[str, str], scope: Scope,
                   depth: int) -> Parts:
-        """``node->create_sub_node("ns")``, ``pointer->``, ``pointer.get()``."""
+        """``node->create_sub_node("ns")``, ``pointer->``, ``*pointer``, ``pointer.get()``."""
         target = call.referenced
         children = [c for c in call.get_children() if c.kind.is_expression()]
         if children and children[0].kind == CursorKind.MEMBER_REF_EXPR:

@@ -9,7 +9,10 @@ passing it by non-const reference, a non-const method called on it); a construct
 member initialiser is its first value, not a write. A parameter read that stores into
 a member (its out argument, or ``member_ = nh.param<T>(..)`` / ``declare_parameter``)
 names the member in ``PrimitiveCall.variable`` only when that read is the member's one
-write in the file.
+write in the file. The writes are those ``writes.writes_of`` reads. The same reading
+gives what each member of any type is assigned in the file's functions
+(``assignments``): a node handle member set once outside its class's constructors
+(``right_nh_.reset(new ros::NodeHandle(nh, "right"))``).
 """
 
 from __future__ import annotations
@@ -20,11 +23,10 @@ from collections.abc import Callable, Sequence
 from clang.cindex import Cursor, CursorKind
 
 from .tested import Key, key
-from .values import _may_write, _plain_value, _walk, key_of, strip
+from .values import _plain_value, _walk, key_of, strip
+from .writes import writes_of
 
 _REFS = (CursorKind.MEMBER_REF_EXPR, CursorKind.DECL_REF_EXPR)
-_ASSIGNING = ("++", "--", "&")
-_READING = ("&&", "||", "==", "!=", "<", ">", "<=", ">=", "+", "-", "*", "/", "%")
 
 
 def _every(_index: int) -> bool:
@@ -67,6 +69,8 @@ class MemberWrites:
         # is put in): the last function's, as a read of all in order gives
         self._assigned: dict[Key, tuple[int, Cursor]] = {}
         self._functions = functions
+        # member -> (value, index of the function) of each write that replaces its value
+        self._values: dict[tuple[str, int], list[tuple[Cursor, int]]] = {}
         self._read: set[int] = set()
         self._index = 0  # of the function being read
         self._spans: list[tuple[str, int, int] | None] = []
@@ -94,6 +98,15 @@ class MemberWrites:
         spelling = member.spelling.encode("utf-8")
         self._read_where(lambda index: spelling in self._texts[index])  # type: ignore[operator]
         return self.count.get(key_of(member), 0)
+
+    def assignments(self, member: Cursor) -> list[tuple[Cursor, Cursor]]:
+        """(value, function) of each write that replaces ``member``'s value (``=``,
+        ``reset(p)``) in the file's functions but its destructors, on any object."""
+        spelling = member.spelling.encode("utf-8")
+        self._read_where(lambda index: spelling in self._texts[index])  # type: ignore[operator]
+        return [(value, self._functions[index])
+                for value, index in self._values.get(key_of(member), [])
+                if self._functions[index].kind != CursorKind.DESTRUCTOR]
 
     def assigned(self, call: Cursor) -> Cursor | None:
         """The member ``call``'s result is assigned to, if any."""
@@ -125,61 +138,20 @@ class MemberWrites:
             where = key_of(member)
             self.count[where] = self.count.get(where, 0) + 1
 
-    def _assign(self, target: Cursor, source: Cursor) -> None:
-        """``target = source``: a write of the member, and the call whose value it keeps."""
-        member = member_of(target)
-        self._add(member)
-        value = strip(source)
-        made = key(value) if value.kind == CursorKind.CALL_EXPR else None
-        if member is not None and made is not None:
-            last = self._assigned.get(made)
-            if last is None or last[0] <= self._index:
-                self._assigned[made] = (self._index, member)
-
     def _visit(self, node: Cursor) -> None:
-        kind = node.kind
-        if kind == CursorKind.BINARY_OPERATOR:
-            children = list(node.get_children())
-            if len(children) == 2 and self._between(children[0], children[1]) == "=":
-                self._assign(children[0], children[1])
-        elif kind == CursorKind.COMPOUND_ASSIGNMENT_OPERATOR:
-            children = list(node.get_children())
-            if children:
-                self._add(member_of(children[0]))
-        elif kind == CursorKind.UNARY_OPERATOR:
-            tokens = [t.spelling for t in node.get_tokens()]
-            if tokens and (tokens[0] in _ASSIGNING or tokens[-1] in ("++", "--")):
-                for child in node.get_children():
-                    self._add(member_of(child))
-        elif kind == CursorKind.CALL_EXPR:
-            self._call(node)
-
-    def _call(self, call: Cursor) -> None:
-        args = list(call.get_arguments())
-        if call.spelling == "operator=" and len(args) == 2:  # a std::string member
-            self._assign(args[0], args[1])
-            return
-        if call.referenced is None and len(args) == 2 and (
-            self._between(args[0], args[1]) in _READING
-        ):
-            return  # ``a_ && f(x)`` in a template: an operator clang leaves unresolved
-        for index, arg in enumerate(args):
-            if arg.kind in _REFS and _may_write(call, index):
-                self._add(member_of(arg))
-        children = list(call.get_children())
-        method = call.referenced
-        if children and children[0].kind == CursorKind.MEMBER_REF_EXPR and (
-            method is not None and method.kind == CursorKind.CXX_METHOD
-            and not method.is_const_method()
-        ):
-            for obj in children[0].get_children():
-                self._add(member_of(obj))
-
-    def _between(self, first: Cursor, second: Cursor) -> str:
-        end, start = first.extent.end, second.extent.start
-        if end.file is None or start.file is None or end.file.name != start.file.name:
-            return ""
-        text = self.source.get(end.file.name)
-        if text is None:
-            return ""
-        return text[end.offset:start.offset].decode("utf-8", "replace").strip()
+        for write in writes_of(node, self.source):
+            target, value = write.target, write.value
+            member = member_of(target)
+            self._add(member)
+            if not write.whole or value is None:
+                continue
+            if target.kind == CursorKind.MEMBER_REF_EXPR and target.referenced is not None \
+                    and target.referenced.kind == CursorKind.FIELD_DECL:
+                self._values.setdefault(key_of(target.referenced), []).append(
+                    (value, self._index))
+            value = strip(value)
+            made = key(value) if value.kind == CursorKind.CALL_EXPR else None
+            if member is not None and made is not None:
+                last = self._assigned.get(made)
+                if last is None or last[0] <= self._index:
+                    self._assigned[made] = (self._index, member)

@@ -3,7 +3,8 @@
 A string value is a tuple of parts, each a known ``str`` or ``None`` for a part that is
 only known at run time; ``render`` writes the unknown parts as ``?``. Resolved:
 literals (also through ``#define``), ``const`` / ``constexpr`` variables, local variables
-written exactly once (at their declaration or by one assignment), ``std::string``
+written exactly once (at their declaration, by one assignment or a smart pointer's
+``reset(p)``: the writes ``writes.writes_of`` reads), ``std::string``
 construction, ``+`` concatenation and ``.c_str()``, a function's parameter from the
 calls of the function (``call_sites.CallSites``), and a class member from what a
 constructor initialises it with. Anything else is unknown.
@@ -18,6 +19,8 @@ from typing import TYPE_CHECKING, TypeVar
 from clang.cindex import Cursor, CursorKind, TypeKind
 
 from .cursors import _Place
+from .expressions import initializer, operand, strip, written_arguments
+from .writes import Write, const_array, writes_of
 
 if TYPE_CHECKING:
     from .call_sites import CallSites
@@ -32,12 +35,6 @@ Value = TypeVar("Value")
 UNKNOWN: Parts = (None,)
 MAX_DEPTH = 24
 
-# expression kinds that only wrap their operand (implicit conversions, casts, parens, ...)
-WRAPPERS = frozenset({
-    CursorKind.UNEXPOSED_EXPR, CursorKind.PAREN_EXPR, CursorKind.CXX_FUNCTIONAL_CAST_EXPR,
-    CursorKind.CSTYLE_CAST_EXPR, CursorKind.CXX_STATIC_CAST_EXPR,
-    CursorKind.CXX_CONST_CAST_EXPR,
-})
 # rclcpp's node interfaces resolve a name: expanded in the node's namespace and remapped
 # (unless ``only_expand``). The graph does both when it links a call, so the value is the
 # name as written (image_pipeline: ``node_base->resolve_topic_or_service_name("image",
@@ -49,7 +46,6 @@ WRAPPERS = frozenset({
 _RESOLVERS: dict[tuple[str, str], int] = {
     ("NodeBaseInterface", "resolve_topic_or_service_name"): 2,
     ("NodeTopicsInterface", "resolve_topic_name"): 1}
-_REFS = frozenset({CursorKind.TYPE_REF, CursorKind.NAMESPACE_REF, CursorKind.TEMPLATE_REF})
 _ESCAPES = {"n": "\n", "t": "\t", "\\": "\\", '"': '"', "'": "'", "0": "\0"}
 _TOKEN = re.compile(rb"[A-Za-z_]\w*|[-+]?(?:0[xX][0-9a-fA-F]+|\d+)[uUlL]*")
 _INT = re.compile(r"([-+]?(?:0[xX][0-9a-fA-F]+|\d+))[uUlL]*")
@@ -83,31 +79,6 @@ def camera_info_topic(base: Parts) -> Parts:
     if "/" in last:
         return (*base[:-1], last.rpartition("/")[0] + "/camera_info")
     return ("camera_info",) if len(base) == 1 else UNKNOWN
-
-
-def is_default_argument(cursor: Cursor) -> bool:
-    """True for an argument the call did not write (a default argument)."""
-    return cursor.extent.start.file is None
-
-
-def written_arguments(call: Cursor) -> list[Cursor]:
-    return [arg for arg in call.get_arguments() if not is_default_argument(arg)]
-
-
-def operand(cursor: Cursor) -> Cursor | None:
-    """The expression a wrapper wraps, or None."""
-    inner = [c for c in cursor.get_children() if c.kind not in _REFS]
-    return inner[-1] if inner else None
-
-
-def strip(cursor: Cursor) -> Cursor:
-    """``cursor`` without the wrappers around it."""
-    while cursor.kind in WRAPPERS:
-        inner = operand(cursor)
-        if inner is None:
-            break
-        cursor = inner
-    return cursor
 
 
 class Scope:
@@ -162,65 +133,33 @@ class Scope:
                     parts = children[-1:]  # a loop's or a switch's body
                 self._regions.extend((p.extent.start.offset, p.extent.end.offset)
                                      for p in parts)
-            if kind == CursorKind.VAR_DECL:
-                init = initializer(node)
-                if init is not None and not _default_constructed(init):
-                    self._write(node, init)
             elif kind == CursorKind.CALL_EXPR:
-                self._call_writes(node)
-            elif kind == CursorKind.BINARY_OPERATOR:
-                children = list(node.get_children())
-                if len(children) == 2 and self.operator(node, children) == "=":
-                    self._write_ref(children[0], children[1])
-                    self._write_member(node, children[0], children[1])
-            elif kind in (CursorKind.COMPOUND_ASSIGNMENT_OPERATOR, CursorKind.UNARY_OPERATOR):
-                for child in node.get_children():
-                    self._write_ref(child, None)
+                args = list(node.get_arguments())
+                if node.spelling == "operator=" and len(args) == 2:
+                    args = []  # a write, not a call the variable is passed to
+                for index, arg in enumerate(args):
+                    if arg.kind in (CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR) \
+                            and arg.referenced is not None:
+                        self._passed[key_of(arg.referenced)] = (node, index)
+            for write in writes_of(node, self.source):
+                self._keep(write)
 
-    def _call_writes(self, call: Cursor) -> None:
-        args = list(call.get_arguments())
-        if call.spelling == "operator=" and len(args) == 2:
-            self._write_ref(args[0], args[1])
-            self._write_member(call, args[0], args[1])
-            return
-        for index, arg in enumerate(args):  # an lvalue passed as it is: a reference
-            if arg.kind in (CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR) and (
-                arg.referenced is not None
-            ):
-                self.passed[key_of(arg.referenced)] = (call, index)
-                if _may_write(call, index):
-                    self._write_ref(arg, None)
-            elif _is_array(strip(arg)) and not _const_array(strip(arg).referenced) and (
-                    _may_write(call, index, decayed=True)):
-                # ``snprintf(topic, size, "analog_output%02d", i)`` fills the array
-                # ``char topic[] = "analog_output00"`` (phidgets): not its initializer
-                self._write_ref(strip(arg), None)
-        children = list(call.get_children())
-        if children and children[0].kind == CursorKind.MEMBER_REF_EXPR:
-            method = call.referenced
-            if method is not None and not method.is_const_method():
-                for obj in children[0].get_children():
-                    obj = strip(obj)
-                    if obj.type.get_canonical().kind != TypeKind.POINTER:
-                        self._write_ref(obj, None)  # p->m() changes *p, not p
-
-    def _write_ref(self, target: Cursor, value: Cursor | None) -> None:
-        decl = target.referenced if target.kind == CursorKind.DECL_REF_EXPR else None
-        if decl is None:
-            return
-        if value is None and (decl.type.is_const_qualified() or not _plain_value(decl)):
-            return  # calls on objects (a NodeHandle's advertise) do not change what we track
-        self._write(decl, value)
-
-    def _write_member(self, at: Cursor, target: Cursor, value: Cursor) -> None:
-        """``member_ = value`` on this object (``this->`` written or not)."""
-        target = strip(target)
-        decl = target.referenced if target.kind == CursorKind.MEMBER_REF_EXPR else None
-        if decl is None or decl.kind != CursorKind.FIELD_DECL or any(
-            strip(c).kind != CursorKind.CXX_THIS_EXPR for c in target.get_children()
-        ):
-            return
-        self._members.setdefault(key_of(decl), []).append((at.extent.start.offset, value))
+    def _keep(self, write: Write) -> None:
+        """A write of a local variable or parameter (one that changes the value in place
+        only for a variable of a plain type: calls on objects, a NodeHandle's
+        advertise, do not change what we track), and ``member_ = value`` on this object
+        (``this->`` written or not)."""
+        target, value = write.target, write.value
+        if target.kind == CursorKind.VAR_DECL:
+            self._write(target, value)
+        elif target.kind == CursorKind.DECL_REF_EXPR and target.referenced is not None:
+            decl = target.referenced
+            if value is None and (decl.type.is_const_qualified() or not _plain_value(decl)):
+                return
+            self._write(decl, value)
+        elif value is not None and is_own_member(target):
+            self._members.setdefault(key_of(target.referenced), []).append(
+                (write.at.extent.start.offset, value))
 
     def assigned(self, decl: Cursor, at: Cursor) -> Cursor | None:
         """What this body last assigned to member ``decl`` before ``at`` (``topic_ =
@@ -243,16 +182,6 @@ class Scope:
     def _write(self, decl: Cursor, value: Cursor | None) -> None:
         self.writes.setdefault(key_of(decl), []).append(value)
 
-    def operator(self, node: Cursor, children: list[Cursor]) -> str:
-        """The operator token between the two operands of a binary operator."""
-        start, end = children[0].extent.end, children[1].extent.start
-        if start.file is None or start.file.name != (end.file.name if end.file else None):
-            return ""
-        text = self.source.get(start.file.name)
-        if text is None:
-            return ""
-        return text[start.offset:end.offset].decode("utf-8", "replace").strip()
-
     # -- values -----------------------------------------------------------------------
 
     def passed_to(self, decl: Cursor) -> tuple[Cursor, int] | None:
@@ -266,7 +195,7 @@ class Scope:
         writes = self.writes.get(key_of(decl))
         if writes is not None:
             return writes[0] if len(writes) == 1 else None
-        if decl.type.is_const_qualified() or _string_constant(decl) or _const_array(decl):
+        if decl.type.is_const_qualified() or _string_constant(decl) or const_array(decl):
             definition = decl.get_definition() or decl
             return initializer(definition)
         return None
@@ -441,12 +370,6 @@ class Scope:
         return None
 
 
-def initializer(decl: Cursor) -> Cursor | None:
-    """The expression a variable declaration initialises it with, if any."""
-    exprs = [c for c in decl.get_children() if c.kind.is_expression()]
-    return exprs[-1] if exprs else None
-
-
 def _string_constant(decl: Cursor) -> bool:
     """``static const char* kTopic = "x";`` outside functions: the usual way to write a
     name constant, whose pointer is not const but is not written either."""
@@ -458,54 +381,11 @@ def _string_constant(decl: Cursor) -> bool:
         ctype.get_pointee().get_canonical().kind in (TypeKind.CHAR_S, TypeKind.CHAR_U))
 
 
-def _is_array(cursor: Cursor) -> bool:
-    """A variable of array type named as it is (passed, it is a pointer to its data)."""
-    return (cursor.kind in (CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR)
-            and cursor.referenced is not None and cursor.referenced.type.get_canonical().kind
-            in (TypeKind.CONSTANTARRAY, TypeKind.INCOMPLETEARRAY))
-
-
-def _const_array(decl: Cursor) -> bool:
-    """``constexpr char kTopic[] = "submap_list";`` (cartographer_ros' node_constants.h):
-    the const is on the elements, not on the array type."""
-    arrays = (TypeKind.CONSTANTARRAY, TypeKind.INCOMPLETEARRAY)
-    canonical = decl.type.get_canonical()  # whose element type has lost its const
-    if canonical.kind not in arrays:
-        return False
-    # a typedef of an array type (va_list) has no element type of its own
-    written = decl.type if decl.type.kind in arrays else canonical
-    return bool(written.element_type.is_const_qualified())
-
-
-def _may_write(call: Cursor, index: int, decayed: bool = False) -> bool:
-    """Whether the call may change a variable passed as its argument ``index``: unless
-    the parameter is a value or a const reference (``make_shared<T>(args)`` forwards to
-    a constructor, which takes names by value or const reference). An array passed as a
-    pointer to its data (``decayed``) may be changed through a pointer to non-const."""
-    target = call.referenced
-    if target is None:
-        return True
-    if target.spelling in ("make_shared", "make_unique", "allocate_shared"):
-        return False
-    ftype = target.type
-    if ftype.kind != TypeKind.FUNCTIONPROTO:
-        return True
-    types = list(ftype.argument_types())
-    if index >= len(types):
-        return not decayed  # a C variadic: a printf family's arguments are read
-    ptype = types[index]
-    if ptype.kind == TypeKind.LVALUEREFERENCE:
-        return not ptype.get_pointee().is_const_qualified()
-    if decayed and ptype.get_canonical().kind == TypeKind.POINTER:
-        return not ptype.get_canonical().get_pointee().is_const_qualified()
-    return False
-
-
-def _default_constructed(init: Cursor) -> bool:
-    init = strip(init)
-    return (init.kind == CursorKind.CALL_EXPR and init.referenced is not None
-            and init.referenced.kind == CursorKind.CONSTRUCTOR
-            and not written_arguments(init) and not list(init.get_children()))
+def is_own_member(target: Cursor) -> bool:
+    """A member of this object named as it is (``member_``, ``this->member_``)."""
+    decl = target.referenced if target.kind == CursorKind.MEMBER_REF_EXPR else None
+    return decl is not None and decl.kind == CursorKind.FIELD_DECL and all(
+        strip(c).kind == CursorKind.CXX_THIS_EXPR for c in target.get_children())
 
 
 def _plain_value(decl: Cursor) -> bool:

@@ -57,8 +57,6 @@ from .values import (
     PLACEHOLDER,
     SEPARATOR,
     Scope,
-    _default_constructed,
-    _may_write,
     initializer,
     render,
     strip,
@@ -66,6 +64,7 @@ from .values import (
 )
 from .values import key_of as place_of
 from .wrappers import FACTORY_NAMES, Wrappers, is_constructor, of_class_template
+from .writes import default_constructed, may_write
 
 WORDS = re.compile(rb"[A-Za-z_]\w*")  # the identifiers (and keywords) of a text
 CONTAINERS = frozenset({
@@ -160,7 +159,8 @@ class CallFinder:
         self.sites = self.namespaces.sites = CallSites(self.functions, self.macros, self.source,
                                                        external=True, main=self.tu.spelling)
         self.wrappers.build()
-        self.members = MemberWrites(self.functions, self.source, self.opaque)
+        self.members = self.namespaces.members = MemberWrites(self.functions, self.source,
+                                                              self.opaque)
         for function in self.functions:
             if self._gives(function):
                 self._function(function)
@@ -894,7 +894,7 @@ class CallFinder:
         member = None
         if spec.out_arg is not None:
             index, args = spec.out_arg + shift, list(call.get_arguments())
-            if index < len(args) and _may_write(call, index):
+            if index < len(args) and may_write(call, index):
                 member = member_of(args[index])
         if member is None:
             member = self.members.assigned(call)
@@ -943,7 +943,7 @@ def _kept_value(out: Cursor, scope: Scope) -> tuple[bool, object]:
     where = scope
     if decl.kind == CursorKind.VAR_DECL:
         init = initializer(decl.get_definition() or decl)
-        if init is not None and not _default_constructed(init):
+        if init is not None and not default_constructed(init):
             value = init
         elif init is None and decl.type.get_canonical().kind in _ZEROED and (
             decl.storage_class == StorageClass.STATIC

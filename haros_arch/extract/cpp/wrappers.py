@@ -50,6 +50,7 @@ from .values import (
     written_arguments,
 )
 from .values import key_of as _key  # a cursor's place: its file and offset
+from .writes import between
 
 if TYPE_CHECKING:
     from .visitor import CallFinder
@@ -756,7 +757,7 @@ def _name_shape(expr: Cursor, params: list[Cursor], scope: Scope | None,
         operands = written_arguments(expr)
     elif kind == CursorKind.BINARY_OPERATOR and scope is not None:
         children = list(expr.get_children())
-        if len(children) == 2 and scope.operator(expr, children) == "+":
+        if len(children) == 2 and between(children[0], children[1], scope.source) == "+":
             operands = children
     elif kind == CursorKind.CALL_EXPR:
         inner = [c for c in expr.get_children() if c.kind.is_expression()]

@@ -1,0 +1,46 @@
+"""The shape of C++ expressions as libclang gives them: what an expression is once the
+wrappers around it (implicit conversions, casts, parentheses) are taken off, what a
+declaration initialises its variable with, which arguments a call writes."""
+
+from __future__ import annotations
+
+from clang.cindex import Cursor, CursorKind
+
+# expression kinds that only wrap their operand (implicit conversions, casts, parens, ...)
+WRAPPERS = frozenset({
+    CursorKind.UNEXPOSED_EXPR, CursorKind.PAREN_EXPR, CursorKind.CXX_FUNCTIONAL_CAST_EXPR,
+    CursorKind.CSTYLE_CAST_EXPR, CursorKind.CXX_STATIC_CAST_EXPR,
+    CursorKind.CXX_CONST_CAST_EXPR,
+})
+_REFS = frozenset({CursorKind.TYPE_REF, CursorKind.NAMESPACE_REF, CursorKind.TEMPLATE_REF})
+
+
+def is_default_argument(cursor: Cursor) -> bool:
+    """True for an argument the call did not write (a default argument)."""
+    return cursor.extent.start.file is None
+
+
+def written_arguments(call: Cursor) -> list[Cursor]:
+    return [arg for arg in call.get_arguments() if not is_default_argument(arg)]
+
+
+def operand(cursor: Cursor) -> Cursor | None:
+    """The expression a wrapper wraps, or None."""
+    inner = [c for c in cursor.get_children() if c.kind not in _REFS]
+    return inner[-1] if inner else None
+
+
+def strip(cursor: Cursor) -> Cursor:
+    """``cursor`` without the wrappers around it."""
+    while cursor.kind in WRAPPERS:
+        inner = operand(cursor)
+        if inner is None:
+            break
+        cursor = inner
+    return cursor
+
+
+def initializer(decl: Cursor) -> Cursor | None:
+    """The expression a variable declaration initialises it with, if any."""
+    exprs = [c for c in decl.get_children() if c.kind.is_expression()]
+    return exprs[-1] if exprs else None

@@ -1,0 +1,195 @@
+"""What is written to a variable, and where: the one reading of a function body's writes
+that the analyses share.
+
+``writes_of(node, source)`` gives the writes one node of a body makes, each a ``Write``:
+the variable written (its declaration, or the expression that names it), the expression
+it holds afterwards when that is known, and whether the write replaces its value or
+changes it in place. A write that replaces the value: a declaration with an initialiser
+(``std::string t = "scan";``), ``=`` (a builtin's assignment, or ``operator=``), a smart
+pointer's ``reset(p)`` (``right_nh_.reset(new ros::NodeHandle(nh, "right"))``). A write
+that changes it in place, to a value not known: a compound assignment (``+=``), ``++`` /
+``--``, its address taken (``&x``), passing it as a non-const reference or, for an
+array, as a pointer to its data (``snprintf(topic, ...)``), a non-const method called
+on it (``p->m()`` changes ``*p``, not ``p``). Each analysis keeps the writes it follows:
+``values.Scope`` the local variables of a function, ``members.MemberWrites`` the members
+of a file, ``handles.Namespaces`` the node handles a unit's functions set.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from clang.cindex import Cursor, CursorKind, TypeKind
+
+from .expressions import initializer, strip, written_arguments
+
+_NAMES = (CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR)
+_MAKERS = ("make_shared", "make_unique", "allocate_shared")
+# the operators of a call clang leaves unresolved (``a_ && f(x)`` in a template) that
+# read both sides
+_READING = ("&&", "||", "==", "!=", "<", ">", "<=", ">=", "+", "-", "*", "/", "%")
+SMART_POINTERS = ("shared_ptr", "unique_ptr", "scoped_ptr")
+
+
+@dataclass(frozen=True)
+class Write:
+    """``target`` (a variable's declaration, or the expression naming what is written,
+    without its wrappers) holds ``value`` after ``at``; None when not known. ``whole``:
+    the write replaces the value (a declaration, ``=``, ``reset(p)``), else it changes
+    it in place."""
+
+    target: Cursor
+    value: Cursor | None
+    at: Cursor
+    whole: bool
+
+    @property
+    def variable(self) -> Cursor | None:
+        """The declaration of what is written (a variable, a parameter, a member)."""
+        if self.target.kind in _NAMES:
+            return self.target.referenced
+        return self.target if self.target.kind == CursorKind.VAR_DECL else None
+
+
+def writes_of(node: Cursor, source: dict[str, bytes]) -> list[Write]:
+    """The writes that ``node`` itself makes (not those of its children)."""
+    kind = node.kind
+    if kind == CursorKind.VAR_DECL:
+        init = initializer(node)
+        if init is None or default_constructed(init):
+            return []
+        return [Write(node, init, node, True)]
+    if kind == CursorKind.CALL_EXPR:
+        return _call(node, source)
+    if kind == CursorKind.BINARY_OPERATOR:
+        children = list(node.get_children())
+        if len(children) == 2 and between(children[0], children[1], source) == "=":
+            return [Write(strip(children[0]), children[1], node, True)]
+        return []
+    if kind == CursorKind.COMPOUND_ASSIGNMENT_OPERATOR:
+        children = list(node.get_children())
+        return [Write(strip(children[0]), None, node, False)] if children else []
+    if kind == CursorKind.UNARY_OPERATOR and _assigning(node, source):
+        return [Write(strip(child), None, node, False) for child in node.get_children()]
+    return []
+
+
+def _call(call: Cursor, source: dict[str, bytes]) -> list[Write]:
+    args = list(call.get_arguments())
+    if call.spelling == "operator=" and len(args) == 2:
+        return [Write(strip(args[0]), args[1], call, True)]
+    if call.referenced is None and len(args) == 2 and (
+        between(args[0], args[1], source) in _READING
+    ):
+        return []  # ``a_ && f(x)`` in a template: an operator clang leaves unresolved
+    found: list[Write] = []
+    for index, arg in enumerate(args):  # an lvalue passed as it is: a reference
+        if arg.kind in _NAMES and arg.referenced is not None:
+            if may_write(call, index):
+                found.append(Write(arg, None, call, False))
+            continue
+        bare = strip(arg)
+        if _is_array(bare) and not const_array(bare.referenced) and (
+                may_write(call, index, decayed=True)):
+            # ``snprintf(topic, size, "analog_output%02d", i)`` fills the array
+            # ``char topic[] = "analog_output00"`` (phidgets): not its initializer
+            found.append(Write(bare, None, call, False))
+    children = list(call.get_children())
+    method = call.referenced
+    if children and children[0].kind == CursorKind.MEMBER_REF_EXPR and (
+        method is not None and not method.is_const_method()
+    ):
+        for obj in children[0].get_children():
+            obj = strip(obj)
+            if obj.type.get_canonical().kind == TypeKind.POINTER:
+                continue  # p->m() changes *p, not p
+            given = written_arguments(call) if call.spelling == "reset" else []
+            if len(given) == 1 and _smart_pointer(obj):
+                found.append(Write(obj, given[0], call, True))
+            else:
+                found.append(Write(obj, None, call, False))
+    return found
+
+
+def _smart_pointer(expr: Cursor) -> bool:
+    ctype = expr.type.get_canonical()
+    if ctype.kind in (TypeKind.LVALUEREFERENCE, TypeKind.RVALUEREFERENCE):
+        ctype = ctype.get_pointee().get_canonical()
+    return ctype.kind == TypeKind.RECORD and (
+        ctype.get_declaration().spelling in SMART_POINTERS)
+
+
+def _assigning(node: Cursor, source: dict[str, bytes]) -> bool:
+    """Whether a unary operator writes its operand: ``++``, ``--`` (before or after it)
+    or ``&`` (its address taken), read from the source text (the tokens where the text
+    is not at hand)."""
+    start, end = node.extent.start, node.extent.end
+    text = source.get(start.file.name) if start.file is not None else None
+    if text is not None and end.file is not None and end.file.name == start.file.name:
+        written = text[start.offset:end.offset]
+        return written.startswith((b"++", b"--")) or written.endswith((b"++", b"--")) or (
+            written.startswith(b"&") and not written.startswith(b"&&"))
+    tokens = [t.spelling for t in node.get_tokens()]
+    return bool(tokens) and (tokens[0] in ("++", "--", "&") or tokens[-1] in ("++", "--"))
+
+
+def between(first: Cursor, second: Cursor, source: dict[str, bytes]) -> str:
+    """The source text between two operands: a binary operator's token."""
+    end, start = first.extent.end, second.extent.start
+    if end.file is None or start.file is None or end.file.name != start.file.name:
+        return ""
+    text = source.get(end.file.name)
+    if text is None:
+        return ""
+    return text[end.offset:start.offset].decode("utf-8", "replace").strip()
+
+
+def may_write(call: Cursor, index: int, decayed: bool = False) -> bool:
+    """Whether the call may change a variable passed as its argument ``index``: unless
+    the parameter is a value or a const reference (``make_shared<T>(args)`` forwards to
+    a constructor, which takes names by value or const reference). An array passed as a
+    pointer to its data (``decayed``) may be changed through a pointer to non-const."""
+    target = call.referenced
+    if target is None:
+        return True
+    if target.spelling in _MAKERS:
+        return False
+    ftype = target.type
+    if ftype.kind != TypeKind.FUNCTIONPROTO:
+        return True
+    types = list(ftype.argument_types())
+    if index >= len(types):
+        return not decayed  # a C variadic: a printf family's arguments are read
+    ptype = types[index]
+    if ptype.kind == TypeKind.LVALUEREFERENCE:
+        return not ptype.get_pointee().is_const_qualified()
+    if decayed and ptype.get_canonical().kind == TypeKind.POINTER:
+        return not ptype.get_canonical().get_pointee().is_const_qualified()
+    return False
+
+
+def default_constructed(init: Cursor) -> bool:
+    """A declaration's initialiser that is the default constructor: no value given."""
+    init = strip(init)
+    return (init.kind == CursorKind.CALL_EXPR and init.referenced is not None
+            and init.referenced.kind == CursorKind.CONSTRUCTOR
+            and not written_arguments(init) and not list(init.get_children()))
+
+
+def _is_array(cursor: Cursor) -> bool:
+    """A variable of array type named as it is (passed, it is a pointer to its data)."""
+    return (cursor.kind in _NAMES
+            and cursor.referenced is not None and cursor.referenced.type.get_canonical().kind
+            in (TypeKind.CONSTANTARRAY, TypeKind.INCOMPLETEARRAY))
+
+
+def const_array(decl: Cursor) -> bool:
+    """``constexpr char kTopic[] = "submap_list";`` (cartographer_ros' node_constants.h):
+    the const is on the elements, not on the array type."""
+    arrays = (TypeKind.CONSTANTARRAY, TypeKind.INCOMPLETEARRAY)
+    canonical = decl.type.get_canonical()  # whose element type has lost its const
+    if canonical.kind not in arrays:
+        return False
+    # a typedef of an array type (va_list) has no element type of its own
+    written = decl.type if decl.type.kind in arrays else canonical
+    return bool(written.element_type.is_const_qualified())
