@@ -219,6 +219,23 @@ def test_a_long_value_is_shortened_in_the_message():
     assert "set as binary (QUJDQUJD" in finding.message and len(finding.message) < 300
 
 
+def test_a_double_read_as_an_int_is_a_mismatch_but_for_roscpp():
+    # roscpp's getParam(int) rounds a double; rclcpp throws, rospy hands a float on
+    def reader(node: str, file: str) -> dict:
+        return {"kind": "read", "node": node, "name": f"{node}/width", "type": "int",
+                "location": {"file": file, "line": 3}}
+
+    doc = {"parameters": [{"name": f"{n}/width", "type": "double", "value": 6.0,
+                           "writers": ["<launch>"]} for n in ("/cpp1", "/py1", "/cpp2")],
+           "nodes": [{"name": "/cpp1", "node": "a/cpp1"}, {"name": "/py1", "node": "a/py1"},
+                     {"name": "/cpp2", "node": "a/cpp2", "ros_version": 2}],
+           "links": [reader("/cpp1", "a/src/n.cpp"), reader("/py1", "a/scripts/n.py"),
+                     reader("/cpp2", "a/src/n.cpp")]}
+    found = run_rule(RULES["parameter-type-mismatch"], configuration(doc))
+    assert sorted(f.entities[0] for f in found) == ["parameter:/cpp2/width",
+                                                    "parameter:/py1/width"]
+
+
 def test_a_list_value_keeps_every_element_in_the_message():
     # navigation_tutorials' y_vels: [-0.3, -0.1, 0.1, -0.3], read as a string
     model = configuration({

@@ -39,20 +39,26 @@ class _Known:
         # ROS 1 dynamic_reconfigure servers: each reads and sets every field of its .cfg
         # under the namespace of the handle it is given (``N/set_parameters``,
         # ``N/parameter_updates``), names we do not read. Namespace -> serving nodes;
-        # a namespace with "?" as the pattern of the parameter names under it. Not a
-        # server whose reads the extraction made from its .cfg (``extract.cpp.
-        # reconfigure``: at the server's own place in the code): those reads say it.
+        # a namespace with "?" as the pattern of the parameter names under it. A server
+        # whose reads the extraction made from its .cfg (``extract.cpp.reconfigure``: at
+        # the server's own place in the code) is read as they say for the parameters
+        # right under its namespace (``reconfigured_read``); deeper ones stay undecided
+        # by it, as the code that reads them may be out of sight (move_base's server on
+        # ``~`` and its costmaps' parameters, read in costmap_2d's library)
         self.reconfigured: dict[str, list[NodeInstance]] = {}
+        self.reconfigured_read: dict[str, list[NodeInstance]] = {}
         self.reconfigured_unresolved: list[tuple[re.Pattern[str], NodeInstance]] = []
         explicit = {(id(link.node), link.location) for link in config.links
                     if link.kind == "read" and link.location.file is not None}
         for link in config.links:
             namespace = _reconfigure_namespace(link)
-            if namespace is None or (id(link.node), link.location) in explicit:
+            if namespace is None:
                 continue
             if UNKNOWN_MARK in namespace:
                 self.reconfigured_unresolved.append(
                     (re.compile(pattern_for(namespace + "/" + UNKNOWN_MARK)), link.node))
+            elif (id(link.node), link.location) in explicit:
+                self.reconfigured_read.setdefault(namespace, []).append(link.node)
             else:
                 self.reconfigured.setdefault(namespace, []).append(link.node)
         # resource -> nodes that use a name with "?" that may stand for it
@@ -88,13 +94,18 @@ def _reconfigure_namespace(link: Link) -> str | None:
 
 def reconfiguring(config: Configuration, parameter: Parameter) -> list[NodeInstance]:
     """The nodes whose dynamic_reconfigure server may read and set the parameter: those
-    serving on a namespace its name is under."""
+    serving on a namespace its name is under (not those right above it whose reads of
+    their .cfg's parameters are known: they read it or not as their links say)."""
     known = _known(config)
     found: list[NodeInstance] = []
     name = parameter.name
+    deeper = False  # the namespace is the parameter's own (its reads decide) or above it
     while "/" in name.rstrip("/"):
         name = name.rstrip("/").rsplit("/", 1)[0]
         found.extend(known.reconfigured.get(name, ()))
+        if deeper:
+            found.extend(known.reconfigured_read.get(name, ()))
+        deeper = True
     found.extend(node for pattern, node in known.reconfigured_unresolved
                  if pattern.match(parameter.name))
     return found

@@ -68,6 +68,13 @@ def _literal(node: ast.AST | None) -> Any:
         return None
 
 
+def _makes_generator(call: ast.Call) -> bool:
+    """``ParameterGenerator()`` or ``gen.add_group(...)``."""
+    func = call.func
+    return (isinstance(func, ast.Name) and func.id == "ParameterGenerator") or (
+        isinstance(func, ast.Attribute) and func.attr in ("ParameterGenerator", "add_group"))
+
+
 def _type_name(node: ast.AST | None) -> str | None:
     if isinstance(node, ast.Name) and node.id in TYPES:
         return node.id
@@ -94,7 +101,18 @@ def read_cfg(path: str, text: str, package: str) -> tuple[Config | None, list[Di
                                 detail=str(getattr(error, "msg", error)))]
     name: str | None = None
     config = Config(package, "", path)
+    # the generator and its groups: handed to a function we do not read (navigation's
+    # ``add_generic_localplanner_params(gen)``, imported from another module), they may
+    # get parameters we cannot see
+    generators = {target.id for node in ast.walk(tree) if isinstance(node, ast.Assign)
+                  and isinstance(node.value, ast.Call) and _makes_generator(node.value)
+                  for target in node.targets if isinstance(target, ast.Name)}
     for node in ast.walk(tree):
+        if isinstance(node, ast.Call) and any(
+            isinstance(arg, ast.Name) and arg.id in generators
+            for arg in [*node.args, *(k.value for k in node.keywords)]
+        ):
+            config.partial = True
         if not isinstance(node, ast.Call) or not isinstance(node.func, ast.Attribute):
             continue
         method = node.func.attr
