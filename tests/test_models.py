@@ -281,6 +281,28 @@ def test_a_nodelet_of_a_package_without_source_takes_its_model(write_tree):
         ("subscribe", "/image_mono"), ("publish", "/image_rect")}
 
 
+def test_a_nodelet_named_pcl_takes_the_model_of_pcl_ros(write_tree):
+    # pcl_ros exports its nodelets as ``pcl/VoxelGrid``, ...: there is no package pcl
+    from conftest import package_xml
+
+    root = write_tree({
+        "src/cam/package.xml": package_xml("cam"),
+        "src/cam/CMakeLists.txt": "project(cam)\n",
+        "src/cam/launch/grid.launch": """
+            <launch>
+              <node pkg="nodelet" type="nodelet" name="voxel_grid"
+                    args="standalone pcl/VoxelGrid"/>
+            </launch>
+            """,
+        "project.yaml": "project: p\nconfigurations:\n  c: [cam/launch/grid.launch]\n",
+    })
+    config = _configuration(root)
+    grid = _instance(config, "/voxel_grid")
+    assert grid.node is not None and grid.node.model.startswith("noetic/pcl_ros ")
+    assert ("subscribe", "/tf") in {(link.kind, link.name) for link in grid.links}
+    assert "NODE_PACKAGE_UNKNOWN" not in {d.code for d in config.diagnostics}
+
+
 def test_ros2_list_names_come_from_the_parameters_under_a_prefix(write_tree):
     root = write_tree({
         "src/base/package.xml": _package_xml("base"),
