@@ -303,6 +303,32 @@ def test_a_nodelet_named_pcl_takes_the_model_of_pcl_ros(write_tree):
     assert "NODE_PACKAGE_UNKNOWN" not in {d.code for d in config.diagnostics}
 
 
+def test_rviz2_is_partial_its_displays_are_plugins_of_its_configuration(write_tree):
+    # UR's ur_moveit.launch.py gives rviz2 warehouse_plugin / warehouse_host, which
+    # MoveIt's MotionPlanning display (a plugin moveit.rviz loads) reads: no node of
+    # complete interface that reads nothing
+    root = write_tree({
+        "src/base/package.xml": _package_xml("base"),
+        "src/base/launch/view.launch.py": """
+            from launch import LaunchDescription
+            from launch_ros.actions import Node
+
+            def generate_launch_description():
+                return LaunchDescription([
+                    Node(package='rviz2', executable='rviz2', name='rviz2_moveit',
+                         arguments=['-d', 'moveit.rviz'],
+                         parameters=[{'warehouse_host': 'localhost'}]),
+                ])
+            """,
+        "project.yaml": "project: p\nconfigurations:\n  c: [base/launch/view.launch.py]\n",
+    })
+    config = _configuration(root)
+    rviz = _instance(config, "/rviz2_moveit")
+    assert rviz.node is not None and rviz.node.model.startswith("jazzy/rviz2 ")
+    assert rviz.completeness == "partial"
+    assert "plugins its configuration file loads" in " ".join(rviz.node.completeness_reasons)
+
+
 def test_ros2_list_names_come_from_the_parameters_under_a_prefix(write_tree):
     root = write_tree({
         "src/base/package.xml": _package_xml("base"),
