@@ -111,6 +111,7 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
         parameter.set_by_launch = True
         parameter.launch_location = param.location
         parameter.launch_conditions = param.conditions
+        parameter.for_test = param.test
     transports = Transports(workspace, resources)
     seen: dict[str, NodeInstance] = {}
     started: list[tuple[NodeDecl, NodeInstance]] = []
