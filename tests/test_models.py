@@ -329,6 +329,31 @@ def test_rviz2_is_partial_its_displays_are_plugins_of_its_configuration(write_tr
     assert "plugins its configuration file loads" in " ".join(rviz.node.completeness_reasons)
 
 
+def test_the_jazzy_spawner_is_in_controller_manager_s_model(write_tree):
+    # ros2_control installs spawner from setup.cfg's entry points through
+    # ament_python_install_package(... SCRIPTS_DESTINATION ...): the model had no node
+    # controller_manager/spawner (MODEL_NODE_MISSING in UR, TIAGo, Clearpath launches)
+    root = write_tree({
+        "src/base/package.xml": _package_xml("base"),
+        "src/base/launch/control.launch.py": """
+            from launch import LaunchDescription
+            from launch_ros.actions import Node
+
+            def generate_launch_description():
+                return LaunchDescription([
+                    Node(package='controller_manager', executable='spawner',
+                         arguments=['joint_state_broadcaster']),
+                ])
+            """,
+        "project.yaml": "project: p\nconfigurations:\n  c: [base/launch/control.launch.py]\n",
+    })
+    config = _configuration(root)
+    (spawner,) = config.nodes
+    assert spawner.node is not None and spawner.node.model.startswith(
+        "jazzy/controller_manager ")
+    assert "MODEL_NODE_MISSING" not in {d.code for d in config.diagnostics}
+
+
 def test_ros2_list_names_come_from_the_parameters_under_a_prefix(write_tree):
     root = write_tree({
         "src/base/package.xml": _package_xml("base"),
