@@ -164,6 +164,10 @@ class Namespaces:
             return UNKNOWN if value is None else self.of(value, scope, depth + 1)
         if kind == CursorKind.MEMBER_REF_EXPR and expr.referenced is not None:
             field = expr.referenced
+            known = api.HANDLE_MEMBERS.get((qualified_name(field.semantic_parent),
+                                            field.spelling))
+            if known is not None:
+                return (known,)
             found = member_initialiser(field) if self.sites is None else self.sites.member(
                 field, scope.body)
             value = found[0] if found is not None else None
@@ -190,7 +194,8 @@ class Namespaces:
         factory = (owner, target.spelling)
         if factory in api.HANDLE_FACTORIES:
             return (api.HANDLE_FACTORIES[factory],)
-        if factory in api.RCLCPP_SUB_NODE or target.spelling in ("operator->", "get"):
+        if factory in api.RCLCPP_SUB_NODE or target.spelling in ("operator->", "operator*",
+                                                                "get"):
             return self._sub_node(expr, factory, scope, depth)
         made = qualified_name(record_class(expr))
         if target.spelling in ("make_shared", "make_unique") and made in api.HANDLE_CLASSES:
