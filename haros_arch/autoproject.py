@@ -33,7 +33,12 @@ LAUNCH_SUFFIXES = (".launch", ".launch.xml", ".launch.py", ".launch.yaml", ".lau
 LAUNCH_FOLDER_SUFFIXES = (".py", ".xml", ".yaml", ".yml")
 MAX_LAUNCH_FILES = 400  # per workspace: more are left out, with a note
 MAX_SEARCH_DEPTH = 6    # folders below a package searched for launch files
-_PY_LAUNCH = re.compile(rb"generate_launch_description")
+# a Python file of a launch/ folder is a launch file when it defines the function
+# ros2 launch calls (a launch-file writer that only mentions it in a string is none:
+# clearpath_generator_common's launch/writer.py)
+_PY_LAUNCH = re.compile(
+    rb"^[ \t]*(?:async[ \t]+)?def[ \t]+generate_launch_description[ \t]*\(|"
+    rb"^generate_launch_description[ \t]*=", re.MULTILINE)
 _XML_LAUNCH = re.compile(rb"<launch[\s>]")
 _YAML_LAUNCH = re.compile(rb"^launch\s*:", re.MULTILINE)
 

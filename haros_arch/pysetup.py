@@ -54,6 +54,24 @@ def parse_package(package: Package, workspace: Workspace) -> tuple[list[Node], l
         more, cfg_dirs = _from_setup_cfg(setup_cfg, workspace, found)
         entries.extend(e for e in more if e.name not in {x.name for x in entries})
         package_dir = package_dir or cfg_dirs
+    return _entry_nodes(package, workspace, entries, package_dir, found), found
+
+
+def setup_cfg_nodes(package: Package, workspace: Workspace
+                    ) -> tuple[list[Node], list[Diagnostic]]:
+    """The entry points of a CMake-built package's setup.cfg, which ament_cmake_python's
+    ``ament_python_install_package(pkg SCRIPTS_DESTINATION lib/pkg)`` installs as
+    executables (controller_manager's ``spawner``)."""
+    found: list[Diagnostic] = []
+    setup_cfg = os.path.join(package.root, "setup.cfg")
+    if not os.path.isfile(setup_cfg):
+        return [], found
+    entries, package_dir = _from_setup_cfg(setup_cfg, workspace, found)
+    return _entry_nodes(package, workspace, entries, package_dir, found), found
+
+
+def _entry_nodes(package: Package, workspace: Workspace, entries: list[EntryPoint],
+                 package_dir: dict[str, str], found: list[Diagnostic]) -> list[Node]:
     nodes = []
     for entry in entries:
         module = module_file(package.root, entry.module, package_dir)
@@ -63,7 +81,7 @@ def parse_package(package: Package, workspace: Workspace) -> tuple[list[Node], l
         nodes.append(Node(package.name, entry.name, "script", "python",
                           [workspace.relpath(module)] if module else [],
                           location=entry.location))
-    return nodes, found
+    return nodes
 
 
 def module_file(root: str, module: str, package_dir: dict[str, str]) -> str | None:

@@ -147,6 +147,32 @@ def test_launch_file_detection(ws: Path) -> None:
     assert not is_launch_file(str(folder / "notes.py"))
 
 
+def test_a_python_module_of_a_launch_folder_is_a_launch_file_only_if_it_defines_one(
+        tmp_path: Path) -> None:
+    # clearpath_generator_common/launch/writer.py writes launch files: it names
+    # generate_launch_description in a string, it defines none
+    folder = tmp_path / "launch"
+    folder.mkdir()
+    write(folder / "writer.py", """\
+        class LaunchWriter:
+            def close(self):
+                self.add('def generate_launch_description():', 0)
+        """)
+    write(folder / "bringup.py", """\
+        from launch import LaunchDescription
+
+        def generate_launch_description():
+            return LaunchDescription([])
+        """)
+    write(folder / "typed.py", """\
+        def  generate_launch_description() -> LaunchDescription:
+            return LaunchDescription([])
+        """)
+    assert not is_launch_file(str(folder / "writer.py"))
+    assert is_launch_file(str(folder / "bringup.py"))
+    assert is_launch_file(str(folder / "typed.py"))
+
+
 def test_not_a_workspace(tmp_path: Path) -> None:
     with pytest.raises(ProjectError, match="no ROS package"):
         choose(str(tmp_path), environment={})

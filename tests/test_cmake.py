@@ -272,3 +272,34 @@ def test_a_class_the_executable_defines_itself_names_no_library_file(write_tree)
     assert sorted((n.executable, sorted(n.sources)) for n in nodes) == [
         ("grid", ["carto/src/grid_main.cc", "carto/src/submap.cc"]),
         ("slam", ["carto/src/node.cc", "carto/src/slam_main.cc"])]
+
+
+@pytest.mark.parametrize(("install", "scripts"), [
+    ("ament_python_install_package(pkg SCRIPTS_DESTINATION lib/pkg)", ["spawner"]),
+    ("ament_python_install_package(pkg)", []),  # the module only, no executable
+])
+def test_setup_cfg_entry_points_that_ament_python_install_package_installs(
+        write_tree, install, scripts):
+    # ros2_control's controller_manager (CMakeLists.txt:323-325, setup.cfg): `ros2 run
+    # controller_manager spawner` runs controller_manager/spawner.py's main
+    root = write_tree({
+        "src/pkg/package.xml": package_xml("pkg", "ament_cmake"),
+        "src/pkg/CMakeLists.txt": f"""
+            project(pkg)
+            find_package(ament_cmake_python REQUIRED)
+            add_executable(node src/a.cpp)
+            {install}
+            """,
+        "src/pkg/src/a.cpp": "int main() {}\n",
+        "src/pkg/setup.cfg": "[options.entry_points]\nconsole_scripts =\n"
+                             "    spawner = pkg.spawner:main\n",
+        "src/pkg/pkg/__init__.py": "",
+        "src/pkg/pkg/spawner.py": "def main():\n    pass\n",
+    })
+    ws = scan([str(root / "src")], {})
+    nodes, found = parse_package(ws.packages["pkg"], ws)
+    assert [(n.executable, n.kind) for n in nodes] == [
+        ("node", "executable"), *((s, "script") for s in scripts)]
+    assert [n.sources for n in nodes if n.kind == "script"] == [
+        ["pkg/pkg/spawner.py"] for _ in scripts]
+    assert found == []

@@ -399,6 +399,24 @@ def test_a_vector_parameter_is_an_array_of_its_element_type(tmp_path) -> None:
         ("devices", "str[]"), ("gains", "double[]"), ("ids", "int[]"), ("name", "str")]
 
 
+def test_a_builtin_template_argument_types_the_parameter_not_its_default(tmp_path) -> None:
+    """``declare_parameter<double>("receive_timeout", 20)`` declares a double (UR's
+    dashboard_client_ros.cpp:55): the literal 20 converts to it. A launch file that
+    sets 20.0 is no type mismatch. A builtin template argument has no cursor."""
+    result = _extract(
+        tmp_path, package_xml("p", build_type="ament_cmake"),
+        "#include <rclcpp/rclcpp.hpp>\n"
+        "class N {\n public:\n"
+        "  explicit N(const rclcpp::Node::SharedPtr & node) : node_(node) {\n"
+        "    node_->declare_parameter<double>(\"receive_timeout\", 20);\n"
+        "    node_->declare_parameter<bool>(\"flag\", 1);\n"
+        "    node_->declare_parameter(\"count\", 20);\n"
+        "    node_->declare_parameter<int>(\"ticks\", 2);\n  }\n"
+        "  rclcpp::Node::SharedPtr node_;\n};\n")
+    assert [(c.name, c.type) for c in result.calls if c.kind == "declare"] == [
+        ("receive_timeout", "double"), ("flag", "bool"), ("count", "int"), ("ticks", "int")]
+
+
 def test_a_vector_parameter_of_an_unresolved_call_is_an_array(tmp_path) -> None:
     """A class an error made invalid (Autoware's control_evaluator): its
     ``declare_parameter<std::vector<std::string>>`` is kept by name, typed str[]."""

@@ -130,6 +130,23 @@ def test_nodelets_loaded_by_the_nodelet_executable_get_their_interface():
                                  "the workspace nor installed; its interface is unknown")]
 
 
+def test_a_nodelet_whose_lookup_name_is_not_its_package_s_gets_its_interface():
+    # perception_pcl: pcl_ros exports ``pcl/VoxelGrid`` (plugins/nodelet/*.xml), and
+    # sample_voxel_grid.launch runs ``nodelet standalone pcl/VoxelGrid``
+    grid = node("pcl_ros", "pcl/VoxelGrid", call("publish", "~output", "s/PointCloud2"))
+    grid.kind = "nodelet"
+    other = node("cam", "cam/Driver", call("publish", "image", "s/Image"))
+    other.kind = "nodelet"
+    config = graph([
+        NodeDecl("/voxel_grid", "nodelet", "nodelet", args="standalone pcl/VoxelGrid"),
+        NodeDecl("/driver", "nodelet", "nodelet", args="standalone cam/Driver"),
+    ], nodes=[grid, other])
+    assert config.node("/voxel_grid").node is grid
+    assert config.node("/driver").node is other
+    assert sorted(t.name for t in config.topics) == ["/image", "/voxel_grid/output"]
+    assert config.diagnostics == []
+
+
 def test_namespace_reads_and_searched_names_follow_the_parameter_server():
     reader = node("p", "r", call("read", "gains"), call("read", "global_example"),
                   call("read", "~rate"), call("read", "missing"))

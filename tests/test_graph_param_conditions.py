@@ -264,3 +264,57 @@ def test_the_condition_grammar_reads_only_what_it_can_compute():
     assert decide(Condition("!a && c"), known) is False    # decided whatever c is
     assert decide(Condition("a", statement="for"), known) is None
     assert decide(Condition("argc > 1"), known, [["x", "y"]]) is None  # not main's
+
+
+def test_a_member_a_base_class_header_reads_decides_a_condition_in_another_file(
+        write_tree):
+    # pcl_ros: PCLNodelet::onInit (pcl_nodelet.h:212) reads ~use_indices into
+    # use_indices_, which its constructor sets false; filter.cpp:113 subscribes ~indices
+    # only if (use_indices_)
+    root = write_tree({
+        "src/lazy/package.xml": package_xml("lazy"),
+        "src/lazy/CMakeLists.txt": "project(lazy)\nadd_executable(lazy src/lazy.cpp)\n",
+        "src/lazy/include/lazy/base.h": """
+            #include <ros/ros.h>
+            class Base {
+             public:
+              Base() : use_indices_(false) {}
+              void init() {
+                ros::NodeHandle pnh("~");
+                pnh.getParam("use_indices", use_indices_);
+              }
+             protected:
+              bool use_indices_;
+            };
+            """,
+        "src/lazy/src/lazy.cpp": """
+            #include <std_msgs/String.h>
+            #include "lazy/base.h"
+            class Lazy : public Base {
+             public:
+              void start() {
+                ros::NodeHandle pnh("~");
+                init();
+                if (use_indices_) indices_ = pnh.advertise<std_msgs::String>("indices", 1);
+                out_ = pnh.advertise<std_msgs::String>("output", 1);
+              }
+              ros::Publisher indices_, out_;
+            };
+            int main(int argc, char ** argv) {
+              ros::init(argc, argv, "lazy");
+              Lazy().start();
+            }
+            """,
+        "src/lazy/launch/lazy.launch": """
+            <launch>
+              <node pkg="lazy" type="lazy" name="plain"/>
+              <node pkg="lazy" type="lazy" name="indexed">
+                <param name="use_indices" value="true"/>
+              </node>
+            </launch>
+            """,
+        "project.yaml": "project: p\nconfigurations:\n  c: [lazy/launch/lazy.launch]\n",
+    })
+    config = _config(root)
+    assert _publishers(config, "/plain") == {"output": []}
+    assert _publishers(config, "/indexed") == {"indices": [], "output": []}

@@ -56,3 +56,32 @@ def test_a_test_file_is_a_rostest_run_unless_said_otherwise(write_tree):
     test, plain = analyse(load(str(root / "project.yaml")), {}).configurations
     assert [n.name for n in test.nodes] == ["/driver", "/driver_test"]
     assert [n.name for n in plain.nodes] == ["/driver"]
+
+
+def test_a_left_out_test_s_parameters_are_no_parameter_set_but_not_read(write_tree):
+    # ros_kortex's run_all_examples.launch:62-64: <test test-name="test_all_examples_success">
+    # <param name="robot_name"/>, read by the test's ros::param::get("~robot_name")
+    from haros_arch.query import run_catalogue
+
+    root = write_tree({
+        "src/robot/package.xml": package_xml("robot"),
+        "src/robot/launch/robot.launch": """
+            <launch>
+              <param name="unused" value="1"/>
+              <test test-name="driver_test" pkg="robot" type="check">
+                <param name="timeout" value="3"/>
+              </test>
+            </launch>
+            """,
+        "project.yaml": """
+            project: p
+            configurations:
+              run: {launch: [robot/launch/robot.launch]}
+        """,
+    })
+    model = analyse(load(str(root / "project.yaml")), {})
+    (run,) = model.configurations
+    timeout = next(p for p in run.parameters if p.name == "/driver_test/timeout")
+    assert timeout.set_by_launch and timeout.for_test == "/driver_test"
+    unread = [f.message for f in run_catalogue(model) if f.rule == "parameter-set-not-read"]
+    assert [m.split()[0] for m in unread] == ["/unused"]

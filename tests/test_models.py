@@ -281,6 +281,79 @@ def test_a_nodelet_of_a_package_without_source_takes_its_model(write_tree):
         ("subscribe", "/image_mono"), ("publish", "/image_rect")}
 
 
+def test_a_nodelet_named_pcl_takes_the_model_of_pcl_ros(write_tree):
+    # pcl_ros exports its nodelets as ``pcl/VoxelGrid``, ...: there is no package pcl
+    from conftest import package_xml
+
+    root = write_tree({
+        "src/cam/package.xml": package_xml("cam"),
+        "src/cam/CMakeLists.txt": "project(cam)\n",
+        "src/cam/launch/grid.launch": """
+            <launch>
+              <node pkg="nodelet" type="nodelet" name="voxel_grid"
+                    args="standalone pcl/VoxelGrid"/>
+            </launch>
+            """,
+        "project.yaml": "project: p\nconfigurations:\n  c: [cam/launch/grid.launch]\n",
+    })
+    config = _configuration(root)
+    grid = _instance(config, "/voxel_grid")
+    assert grid.node is not None and grid.node.model.startswith("noetic/pcl_ros ")
+    assert ("subscribe", "/tf") in {(link.kind, link.name) for link in grid.links}
+    assert "NODE_PACKAGE_UNKNOWN" not in {d.code for d in config.diagnostics}
+
+
+def test_rviz2_is_partial_its_displays_are_plugins_of_its_configuration(write_tree):
+    # UR's ur_moveit.launch.py gives rviz2 warehouse_plugin / warehouse_host, which
+    # MoveIt's MotionPlanning display (a plugin moveit.rviz loads) reads: no node of
+    # complete interface that reads nothing
+    root = write_tree({
+        "src/base/package.xml": _package_xml("base"),
+        "src/base/launch/view.launch.py": """
+            from launch import LaunchDescription
+            from launch_ros.actions import Node
+
+            def generate_launch_description():
+                return LaunchDescription([
+                    Node(package='rviz2', executable='rviz2', name='rviz2_moveit',
+                         arguments=['-d', 'moveit.rviz'],
+                         parameters=[{'warehouse_host': 'localhost'}]),
+                ])
+            """,
+        "project.yaml": "project: p\nconfigurations:\n  c: [base/launch/view.launch.py]\n",
+    })
+    config = _configuration(root)
+    rviz = _instance(config, "/rviz2_moveit")
+    assert rviz.node is not None and rviz.node.model.startswith("jazzy/rviz2 ")
+    assert rviz.completeness == "partial"
+    assert "plugins its configuration file loads" in " ".join(rviz.node.completeness_reasons)
+
+
+def test_the_jazzy_spawner_is_in_controller_manager_s_model(write_tree):
+    # ros2_control installs spawner from setup.cfg's entry points through
+    # ament_python_install_package(... SCRIPTS_DESTINATION ...): the model had no node
+    # controller_manager/spawner (MODEL_NODE_MISSING in UR, TIAGo, Clearpath launches)
+    root = write_tree({
+        "src/base/package.xml": _package_xml("base"),
+        "src/base/launch/control.launch.py": """
+            from launch import LaunchDescription
+            from launch_ros.actions import Node
+
+            def generate_launch_description():
+                return LaunchDescription([
+                    Node(package='controller_manager', executable='spawner',
+                         arguments=['joint_state_broadcaster']),
+                ])
+            """,
+        "project.yaml": "project: p\nconfigurations:\n  c: [base/launch/control.launch.py]\n",
+    })
+    config = _configuration(root)
+    (spawner,) = config.nodes
+    assert spawner.node is not None and spawner.node.model.startswith(
+        "jazzy/controller_manager ")
+    assert "MODEL_NODE_MISSING" not in {d.code for d in config.diagnostics}
+
+
 def test_ros2_list_names_come_from_the_parameters_under_a_prefix(write_tree):
     root = write_tree({
         "src/base/package.xml": _package_xml("base"),

@@ -290,12 +290,13 @@ def test_project_names_launch_files_where_they_are_installed(tmp_path: Path) -> 
     model = analyse(load(str(ROOT.parent / "project.yaml")), {},
                     Options(cache_dir=str(tmp_path / "cache"), jobs=1))
     arm, teleop = model.configurations
-    # robot_state_publisher (no source here, unnamed in the launch file) is named by its
-    # jazzy interface model, as its code names itself; spawner (no model) after its
-    # executable, a guess that a diagnostic reports
+    # robot_state_publisher and spawner (no source here, unnamed in the launch file) are
+    # named by their jazzy interface models, as their code names them: the spawner
+    # "spawner_" + its first controller (spawner.py:401), known at run time only
     assert sorted(n.name for n in arm.nodes if "?" not in n.name) == [
-        "/controller_manager", "/gripper", "/joint_state_publisher", "/robot_state_publisher",
-        "/spawner"]
+        "/controller_manager", "/gripper", "/joint_state_publisher", "/robot_state_publisher"]
+    assert [n.name for n in arm.nodes if n.node is not None
+            and n.node.name == "controller_manager/spawner"] == ["/?"]
     gripper = arm.node("/gripper")
     assert gripper is not None and gripper.node is not None  # built from gripper_driver
     force = next(p for p in arm.parameters if p.name == "/gripper/max_force")

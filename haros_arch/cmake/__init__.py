@@ -12,7 +12,7 @@ from __future__ import annotations
 import os
 
 from .. import diagnostics as diag
-from .. import plugins
+from .. import plugins, pysetup
 from ..diagnostics import Diagnostic
 from ..files import read_text
 from ..model.source import Node, Package, Plugin
@@ -92,6 +92,10 @@ def parse_package(package: Package, workspace: Workspace) -> tuple[list[Node], l
     found.extend(problems)
     found.extend(sources.diagnostics)
     nodes.extend(scripts(interpreter, package, files, found))
+    if interpreter.python_scripts:
+        entry_points, problems = pysetup.setup_cfg_nodes(package, workspace)
+        nodes.extend(entry_points)
+        found.extend(problems)
     return _unique(nodes), found
 
 

@@ -440,6 +440,13 @@ def _catkin_install_python(it: Interpreter, command: Invocation, args: list[str]
         _programs(it, command, args[1:], rename=None)
 
 
+@handles("ament_python_install_package")
+def _ament_python_install_package(it: Interpreter, command: Invocation,
+                                  args: list[str]) -> None:
+    if "SCRIPTS_DESTINATION" in args[1:-1]:
+        it.python_scripts = True
+
+
 @handles("install")
 def _install(it: Interpreter, command: Invocation, args: list[str]) -> None:
     if args[:1] in (["DIRECTORY"], ["FILES"], ["PROGRAMS"]) and "DESTINATION" in args[:-1]:

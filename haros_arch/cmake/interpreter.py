@@ -85,6 +85,9 @@ class Interpreter:
         self.programs: list[Program] = []
         self.program_dirs: list[Program] = []
         self.installs: list[Install] = []  # for haros_arch.share
+        # ament_python_install_package(... SCRIPTS_DESTINATION ...): setup.cfg's entry
+        # points are installed as executables
+        self.python_scripts = False
         self.registrations: list[Registration] = []
         # pluginlib_export_plugin_description_file: (base package, absolute path)
         self.plugin_descriptions: list[tuple[str, str]] = []

@@ -27,7 +27,7 @@ from ..model.runtime import (
 from ..model.source import NUMBERED, Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK
 from ..models.commands import command_node
-from ..plugins.attach import PluginModels
+from ..plugins.attach import PluginModels, class_packages
 from ..plugins.attach import attach as attach_plugins
 from ..plugins.transports import Transports
 from ..robot.attach import attach as attach_descriptions
@@ -111,6 +111,7 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
         parameter.set_by_launch = True
         parameter.launch_location = param.location
         parameter.launch_conditions = param.conditions
+        parameter.for_test = param.test
     transports = Transports(workspace, resources)
     seen: dict[str, NodeInstance] = {}
     started: list[tuple[NodeDecl, NodeInstance]] = []
@@ -305,10 +306,8 @@ def _namespace_values(config: Configuration) -> None:
 
 def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
               config: Configuration) -> NodeInstance:
-    key = f"{decl.package}/{decl.executable}"
+    key = node_key(decl, nodes)
     plugin = nodelet_plugin(decl)
-    if plugin is not None:
-        key = f"{plugin.partition('/')[0]}/{plugin}"
     node = nodes.get(key) or command_node(decl)  # rostopic pub: its arguments say
     if node is None and plugin is None and is_container(decl):
         # a nodelet manager or component container: what it loads are node instances of
@@ -366,6 +365,24 @@ def container_node(decl: NodeDecl) -> Node | None:
             completeness="model", model="built-in: the loader services of a "
             + ("component container" if version == 2 else "nodelet manager"))
     return _CONTAINERS[key]
+
+
+def node_key(decl: NodeDecl, nodes: Mapping[str, Node]) -> str:
+    """The node type ``pkg/exec`` a declaration starts; for a nodelet, ``pkg/Class`` of
+    the package that exports the class. pluginlib finds a nodelet by its lookup name in
+    whichever package exports it, and the name's first part need not be that package
+    (pcl_ros exports ``pcl/VoxelGrid``): the lookup name's package, else the one
+    ``class_packages`` names, else the one package of ``nodes`` that exports it."""
+    plugin = nodelet_plugin(decl)
+    if plugin is None:
+        return f"{decl.package}/{decl.executable}"
+    keys = [f"{package}/{plugin}" for package in class_packages(plugin)]
+    found = next((key for key in keys if key in nodes), None)
+    if found is None:
+        exporting = [key for key, node in nodes.items() if node.kind == "nodelet"
+                     and key.endswith("/" + plugin) and "/" not in key[:-len(plugin) - 1]]
+        found = exporting[0] if len(exporting) == 1 else None
+    return found or (keys[0] if keys else f"{plugin.partition('/')[0]}/{plugin}")
 
 
 def nodelet_plugin(decl: NodeDecl) -> str | None:

@@ -4,12 +4,12 @@ A call under ``if (publish_acceleration_)`` exists in a configuration exactly wh
 condition holds there. The condition is decided when every name it uses has a value
 this instance gives it:
 
-- a member variable that one parameter read of the same file stores into
-  (``PrimitiveCall.variable``): the value the configuration gives the parameter (the
-  launch files', with no launch condition and no node setting it), else the read's
-  default (a ROS 2 read without one: the node's declarations of the parameter); a value
-  whose type is not the read's is not used (roscpp would keep the default, rclcpp would
-  refuse it);
+- a member variable that one parameter read stores into (``PrimitiveCall.variable``; of
+  the same file, else of any file of the node): the value the configuration gives the
+  parameter (the launch files', with no launch condition and no node setting it), else
+  the read's default (a ROS 2 read without one: the node's declarations of the
+  parameter); a value whose type is not the read's is not used (roscpp would keep the
+  default, rclcpp would refuse it);
 - ``argc`` / ``argv`` of a condition in ``main`` (``Condition.program_args``) of a
   ROS 1 instance whose ``args`` are known: roslaunch starts it with its ``args`` words,
   its remappings, ``__name:=`` and ``__log:=``, and ``ros::init`` removes the ``:=``
@@ -241,15 +241,21 @@ def _read_value(link: Link) -> object:
 def _member_values(instance: NodeInstance) -> Callable[..., object]:
     """A member's value, by name and the file of the condition using it."""
     reads: dict[tuple[str | None, str], list[Link]] = {}
+    anywhere: dict[str, list[Link]] = {}  # by member, in whichever file of the node
     declared: dict[int, list[Link]] = {}  # parameter -> the instance's declarations of it
     for link in instance.links:
         if link.call is not None and link.call.variable and link.kind in ("read", "declare"):
             reads.setdefault((link.call.location.file, link.call.variable), []).append(link)
+            anywhere.setdefault(link.call.variable, []).append(link)
         if link.call is not None and link.call.kind == "declare":
             declared.setdefault(id(link.resource), []).append(link)
 
     def value(name: str, *, file: str | None) -> object:
-        found = reads.get((file, name))
+        # a read in the condition's own file, else in another file of the node: a base
+        # class's header that reads what its subclasses test (pcl_ros' PCLNodelet::onInit
+        # reads ~use_indices into use_indices_, filter.cpp tests it); reads that disagree
+        # leave the member unknown
+        found = reads.get((file, name)) or anywhere.get(name)
         if not found:
             return Unknown(f"{name} is not known to hold a parameter")
         # a ROS 2 read without a default gets what the node's declarations of that

@@ -77,6 +77,9 @@ class ParamDecl:
     # pattern it is for; the graph gives it to the node only when the name it finds
     # for the node (from its code or model) matches
     pattern: str | None = None
+    # a private parameter of a ``<test>`` that a roslaunch run leaves out
+    # (``without_tests``): its name; roslaunch sets the parameter, its reader is not run
+    test: str | None = None
     # ROS 1 ``command=`` / ``textfile=`` (``cat FILE``), ROS 2 ``Command()`` /
     # ``$(command)``: the command line the value comes from, ``?`` for unknown parts
     # (it is never run; robot descriptions read the xacro file it names)
@@ -103,7 +106,8 @@ class LaunchModel:
 def without_tests(model: LaunchModel) -> LaunchModel:
     """``model`` as roslaunch runs it: ``<test>`` nodes are started by rostest only, so
     they are left out (each said in an info diagnostic); their parameters stay, as
-    roslaunch sets them all the same."""
+    roslaunch sets them all the same, each private one marked with its test (whose
+    reads are not seen)."""
     if not any(node.is_test for node in model.nodes):
         return model
     kept: list[NodeDecl] = []
@@ -115,7 +119,12 @@ def without_tests(model: LaunchModel) -> LaunchModel:
             continue
         index[number] = len(kept)
         kept.append(node)
-    params = [p if p.owner is None else dataclasses.replace(p, owner=index.get(p.owner))
-              for p in model.params]
+    tests = {number: node.name for number, node in enumerate(model.nodes) if node.is_test}
+    params = [p if p.owner is None else dataclasses.replace(
+        p, owner=index.get(p.owner), test=tests.get(p.owner)) for p in model.params]
+    params = [p if p.test is not None or p.owner is not None else dataclasses.replace(
+        p, test=next((name for name in tests.values()
+                      if p.name.startswith(name.rstrip("/") + "/")), None))
+              for p in params]
     return dataclasses.replace(model, nodes=kept, params=params,
                                diagnostics=[*model.diagnostics, *notes])

@@ -252,6 +252,8 @@ class Parameter(Resource):
     launch_conditions: tuple[Condition, ...] = field(default=(), metadata=INDEX)
     # set under a namespace that a node reads whole (``get_param("gains")``)
     read_as_part_of: Parameter | None = field(default=None, metadata=INDEX)
+    # given to a ``<test>`` that this (roslaunch) configuration leaves out: its name
+    for_test: str | None = field(default=None, metadata=INDEX)
 
     JSON_VIEWS: ClassVar[dict[str, Callable[[Any], Any]]] = {
         "type": lambda p: p.type,

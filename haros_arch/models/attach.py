@@ -24,8 +24,8 @@ from dataclasses import replace
 
 from .. import diagnostics as diag
 from ..diagnostics import Diagnostic
-from ..graph.build import is_container, nodelet_plugin
-from ..launch.model import LaunchModel, NodeDecl
+from ..graph.build import is_container, node_key, nodelet_plugin
+from ..launch.model import LaunchModel
 from ..model.location import Location
 from ..model.source import Node, Package
 from ..plugins.attach import class_packages
@@ -69,7 +69,7 @@ class Attacher:
         result = dict(nodes)
         chosen: tuple[str, str] | None = None
         for decl in launch.nodes:
-            key = _key(decl)
+            key = node_key(decl, result)
             package = key.partition("/")[0]
             if (key in result or package in workspace.packages or command_node(decl)
                     or (nodelet_plugin(decl) is None and is_container(decl))):
@@ -78,6 +78,13 @@ class Attacher:
                 chosen = choose_distro(self.distro, environment, launch)
                 found.append(diag.make("MODEL_DISTRO", decl.location, distro=chosen[0],
                                        why=chosen[1]))
+            plugin = nodelet_plugin(decl)
+            if plugin is not None and self._find(package, chosen[0]) is None:
+                # a lookup name whose first part is not the exporting package
+                other = next((p for p in class_packages(plugin)[1:] if p not in
+                              workspace.packages and self._find(p, chosen[0])), None)
+                if other is not None:
+                    package, key = other, f"{other}/{plugin}"
             model = self._find(package, chosen[0])
             if model is None:
                 continue
@@ -155,9 +162,3 @@ class Attacher:
         owner.nodes.append(node)
         return node
 
-
-def _key(decl: NodeDecl) -> str:
-    plugin = nodelet_plugin(decl)
-    if plugin is not None:
-        return f"{plugin.partition('/')[0]}/{plugin}"
-    return f"{decl.package}/{decl.executable}"

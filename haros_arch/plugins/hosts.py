@@ -245,8 +245,9 @@ EXTENDS: dict[str, str] = {
 
 # lookup-name prefixes that are not the package exporting the class (pluginlib's
 # convention is ``pkg/Name``): MoveIt's capabilities are ``move_group/...``, exported by
-# moveit_ros_move_group (default_capabilities_plugin_description.xml)
-LOOKUP_PACKAGES: dict[str, str] = {"move_group": "moveit_ros_move_group"}
+# moveit_ros_move_group (default_capabilities_plugin_description.xml); perception_pcl's
+# nodelets are ``pcl/VoxelGrid``, ..., exported by pcl_ros (plugins/nodelet/*.xml)
+LOOKUP_PACKAGES: dict[str, str] = {"move_group": "moveit_ros_move_group", "pcl": "pcl_ros"}
 
 
 def sources_of(cls: str, ros_version: int) -> Sources | None:

@@ -213,6 +213,11 @@ LIBRARIES: dict[tuple[str, str], RosFunction] = {
     ("image_transport", "create_camera_subscription"): RosFunction(
         "subscribe", fixed_type=_IMAGE, on_handle=False, handle_arg=0, name_arg=1,
         callback_arg=2, siblings=_CAMERA_INFO_IN, transport="?", transport_arg=3),
+    # nodelet_topic_tools::NodeletLazy's advertise<T>(nh, topic, queue, latch): a
+    # publisher on that handle (pcl_ros' and jsk's nodelets publish through it)
+    ("nodelet_topic_tools::NodeletLazy", "advertise"): RosFunction(
+        "publish", type_from=("template",), on_handle=False, handle_arg=0, name_arg=1,
+        queue_arg=2, latch_arg=3),
     ("message_filters::Subscriber", "Subscriber"): _FILTER_SUBSCRIBER,
     ("message_filters::Subscriber", "subscribe"): _FILTER_SUBSCRIBER,
     ("image_transport::SubscriberFilter", "SubscriberFilter"): _IMAGE_FILTER_SUBSCRIBER,
@@ -319,6 +324,14 @@ HANDLE_FACTORIES: dict[tuple[str, str], str] = {
     ("nodelet::Nodelet", "getMTNodeHandle"): "",
     ("nodelet::Nodelet", "getPrivateNodeHandle"): "~",
     ("nodelet::Nodelet", "getMTPrivateNodeHandle"): "~",
+}
+
+# members of a library's base class that hold handles its own code sets: (class, member)
+# -> namespace (nodelet_topic_tools::NodeletLazy::onInit() sets nh_ and pnh_ to the
+# nodelet's node handle and private node handle)
+HANDLE_MEMBERS: dict[tuple[str, str], str] = {
+    ("nodelet_topic_tools::NodeletLazy", "nh_"): "",
+    ("nodelet_topic_tools::NodeletLazy", "pnh_"): "~",
 }
 
 # rclcpp: the same rows for a Node and a LifecycleNode. QoS is the argument at qos_arg:

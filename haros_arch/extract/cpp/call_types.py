@@ -57,6 +57,8 @@ class CallTypes:
             if source in ("template", "template-value"):
                 ref = template_argument(call)
                 ctype = ref.type if ref is not None else constructed_argument(call)
+                if ctype is None and source == "template-value":
+                    ctype = _explicit_parameter_type(call, spec.type_arg)
                 written = _class_template_first(call)
                 if source == "template-value" and written is not None:
                     # declare_parameter<std::vector<T>>: T[], what it returns (a call the
@@ -136,6 +138,22 @@ def template_argument(call: Cursor) -> Cursor | None:
         ):
             return child
     return None
+
+
+def _explicit_parameter_type(call: Cursor, index: int | None) -> Type | None:
+    """The type of the called function's parameter ``index`` when the call writes the
+    function's template arguments: ``declare_parameter<double>("t", 20)`` declares a
+    double (the parameter ``const double &``), not an int as the literal is. A builtin
+    type written as a template argument has no cursor of its own to read it from."""
+    target = call.referenced
+    if index is None or target is None:
+        return None
+    tokens = [token.spelling for token in callee(call).get_tokens()]
+    opened = tokens.index("<") if "<" in tokens else -1
+    if opened < 1 or tokens[opened - 1] != target.spelling:
+        return None
+    params = list(target.get_arguments())
+    return params[index].type if index < len(params) else None
 
 
 def factory_made(call: Cursor) -> Cursor | None:

@@ -169,6 +169,10 @@ class Namespaces:
             return UNKNOWN if value is None else self.of(value, scope, depth + 1)
         if kind == CursorKind.MEMBER_REF_EXPR and expr.referenced is not None:
             field = expr.referenced
+            known = api.HANDLE_MEMBERS.get((qualified_name(field.semantic_parent),
+                                            field.spelling))
+            if known is not None:
+                return (known,)
             found = member_initialiser(field, self.source) if self.sites is None else (
                 self.sites.member(field, scope.body))
             if found is None or found[1].kind != CursorKind.CONSTRUCTOR:

@@ -98,6 +98,7 @@ UMBRELLAS = {
     "image_transport/": "image_transport/image_transport.h",
     "message_filters/": "message_filters/subscriber.h",
     "actionlib/": "actionlib/server/simple_action_server.h", "nodelet/": "nodelet/nodelet.h",
+    "nodelet_topic_tools/": "nodelet_topic_tools/nodelet_lazy.h",
     "pluginlib/": "pluginlib/class_list_macros.hpp",
     "ament_index_cpp/": "ament_index_cpp/ament_index_cpp.hpp",
     "tf2_eigen/": "tf2_eigen/tf2_eigen.hpp",

@@ -825,11 +825,18 @@ class CallFinder:
             values = written_arguments(inner)
             return (render(scope.string(values[0])) if values else "?", None)
         parts = scope.string(expr)
-        if None in parts:
+        name = render(parts)
+        if None in parts and name.count("?") == 1:
+            # the one unknown part: the whole name, or a run of it that the text around
+            # keeps (``"/" + robot_name + "/base_feedback"``; a wrapper's ``before`` and
+            # ``after``); the graph puts the parameter's value in its place
             source = self._parameter_source(expr, scope, 0)
+            unknown = _unknown_operands(expr, scope) if source is None else []
+            if len(unknown) == 1:
+                source = self._parameter_source(unknown[0], scope, 0)
             if source is not None:
-                return ("?", source)
-        return (render(parts), None)
+                return (name, source)
+        return (name, None)
 
     def _parameter_source(self, expr: Cursor, scope: Scope,
                           depth: int) -> tuple[str, str | None] | None:
@@ -1123,4 +1130,28 @@ def _renames_itself(arg: Cursor) -> bool:
         if "__node:=" in token.spelling:
             return True
     return False
+
+
+def _unknown_operands(expr: Cursor, scope: Scope, depth: int = 0) -> list[Cursor]:
+    """The operands of a string concatenation (``a + b + c``) whose value is not known,
+    innermost first; empty when ``expr`` is no concatenation."""
+    expr = strip(expr)
+    if depth > MAX_DEPTH:
+        return []
+    children = [c for c in expr.get_children() if c.kind.is_expression()]
+    if expr.kind == CursorKind.CALL_EXPR and expr.spelling == "operator+":
+        operands = written_arguments(expr)
+    elif expr.kind == CursorKind.BINARY_OPERATOR and len(children) == 2 and (
+            scope.operator(expr, children) == "+"):
+        operands = children
+    elif expr.kind == CursorKind.CALL_EXPR and expr.referenced is not None and (
+            expr.referenced.kind == CursorKind.CONSTRUCTOR and len(children) == 1):
+        return _unknown_operands(children[0], scope, depth + 1)  # std::string(a + b)
+    else:
+        return []
+    found: list[Cursor] = []
+    for operand in operands:
+        if None in scope.string(operand):
+            found += _unknown_operands(operand, scope, depth + 1) or [operand]
+    return found
 

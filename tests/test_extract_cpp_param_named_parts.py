@@ -1,0 +1,63 @@
+"""A name built around a parameter's value (``"/" + robot_name + "/base_feedback"`` with
+``robot_name`` read from ``~robot_name``) keeps its text, and the graph puts the
+parameter's value in its one ``?``. ros_kortex's examples pass ``robot_name`` to helper
+functions (example_full_arm_movement.cpp:155-161): their 10 service clients and a
+subscription were all named ``/my_gen3``, the parameter's value alone."""
+
+from __future__ import annotations
+
+from haros_arch.extract.cpp import extract_cpp
+from haros_arch.graph import build
+from haros_arch.launch.model import LaunchModel, NodeDecl, ParamDecl
+from haros_arch.model import Configuration, Node
+from haros_arch.workspace import Workspace, scan
+from tests.conftest import package_xml
+
+NODE = """
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+#include <std_srvs/Empty.h>
+void cb(const std_msgs::String::ConstPtr & m) {}
+bool helper(ros::NodeHandle n, const std::string & robot_name)
+{
+  ros::ServiceClient c = n.serviceClient<std_srvs::Empty>("/" + robot_name + "/base/clear");
+  ros::Subscriber s = n.subscribe(robot_name + "/feedback", 1, &cb);
+  return true;
+}
+int main(int argc, char ** argv)
+{
+  ros::init(argc, argv, "ex");
+  ros::NodeHandle n;
+  std::string robot_name = "my_gen3";
+  ros::param::get("~robot_name", robot_name);
+  ros::ServiceClient c = n.serviceClient<std_srvs::Empty>("/" + robot_name + "/direct");
+  helper(n, robot_name);
+  std::string first, second;
+  ros::param::get("~first", first);
+  ros::param::get("~second", second);
+  ros::Publisher p = n.advertise<std_msgs::String>("/" + first + "/" + second, 1);
+}
+"""
+
+
+def test_a_name_around_a_parameter_value_keeps_its_text(write_tree) -> None:
+    root = write_tree({"ex/package.xml": package_xml("ex"), "ex/src/node.cpp": NODE})
+    result = extract_cpp([str(root / "ex" / "src" / "node.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    calls = sorted((c.kind, c.name, c.name_param) for c in result.calls if c.kind != "read")
+    assert calls == [
+        ("client", "/?/base/clear", "~robot_name"),
+        ("client", "/?/direct", "~robot_name"),
+        # two parameters: which '?' is which is not said
+        ("publish", "/?/?", None),
+        ("subscribe", "?/feedback", "~robot_name"),
+    ]
+    node = Node("ex", "ex", calls=list(result.calls))
+    config = build(Configuration("c"), LaunchModel(
+        nodes=[NodeDecl("/ex", "ex", "ex")],
+        params=[ParamDecl("/ex/robot_name", "arm", "str")]), Workspace(root="/nowhere"),
+        {node.name: node})
+    assert sorted((link.kind, link.rosname.full) for link in config.links
+                  if link.kind in ("client", "subscribe")) == [
+        ("client", "/arm/base/clear"), ("client", "/arm/direct"),
+        ("subscribe", "/arm/feedback")]
