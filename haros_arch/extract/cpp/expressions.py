@@ -44,3 +44,11 @@ def initializer(decl: Cursor) -> Cursor | None:
     """The expression a variable declaration initialises it with, if any."""
     exprs = [c for c in decl.get_children() if c.kind.is_expression()]
     return exprs[-1] if exprs else None
+
+
+def binary_operator(cursor: Cursor, children: list[Cursor]) -> str | None:
+    """The operator token of a binary operator the parse kept as one (not a call of
+    ``operator+``): the first token after its left operand."""
+    end = children[0].extent.end.offset
+    return next((t.spelling for t in cursor.get_tokens() if t.extent.start.offset >= end),
+                None)

@@ -19,7 +19,7 @@ from typing import TYPE_CHECKING, TypeVar
 from clang.cindex import Cursor, CursorKind, TypeKind
 
 from .cursors import _Place
-from .expressions import initializer, operand, strip, written_arguments
+from .expressions import binary_operator, initializer, operand, strip, written_arguments
 from .writes import Write, const_array, writes_of
 
 if TYPE_CHECKING:
@@ -238,10 +238,7 @@ class Scope:
         children = [c for c in cursor.get_children() if c.kind.is_expression()]
         if len(children) != 2:
             return UNKNOWN
-        end = children[0].extent.end.offset
-        operator = next((t.spelling for t in cursor.get_tokens()
-                         if t.extent.start.offset >= end), None)
-        if operator != "+":
+        if binary_operator(cursor, children) != "+":
             return UNKNOWN
         left, right = (self.string(c, depth + 1) for c in children)
         if all(part is None for part in (*left, *right)):

@@ -30,6 +30,7 @@ from .call_types import CallTypes, factory_made, row_class
 from .call_types import callee as callee_of_call
 from .conditions import ConditionReader
 from .cursors import children_in, root
+from .expressions import binary_operator
 from .handles import (
     Namespaces,
     callback,
@@ -1142,7 +1143,7 @@ def _unknown_operands(expr: Cursor, scope: Scope, depth: int = 0) -> list[Cursor
     if expr.kind == CursorKind.CALL_EXPR and expr.spelling == "operator+":
         operands = written_arguments(expr)
     elif expr.kind == CursorKind.BINARY_OPERATOR and len(children) == 2 and (
-            scope.operator(expr, children) == "+"):
+            binary_operator(expr, children) == "+"):
         operands = children
     elif expr.kind == CursorKind.CALL_EXPR and expr.referenced is not None and (
             expr.referenced.kind == CursorKind.CONSTRUCTOR and len(children) == 1):
