@@ -119,6 +119,9 @@ def test_one_node_per_cursor_and_clang_equality():
     assert b_refs and all(ref == b_decl for ref in b_refs)
     assert all(Cursor.__eq__(ref, b_decl) for ref in b_refs)
     assert {hash(ref) for ref in b_refs} == {hash(b_decl)}
+    # compared with None, either way round, a node is not equal (libclang takes no None)
+    assert b_decl.__eq__(None) is False and b_decl.__ne__(None) is True
+    assert [ref for ref in [None] if ref == b_decl] == []  # None asks the node
     # any two nodes: equal exactly when libclang says so
     sample = [*get.walk_preorder(), *(n.referenced for n in get.walk_preorder()
                                       if n.referenced is not None)]

@@ -157,3 +157,39 @@ def test_a_builtin_member_set_by_an_init_method_with_equals(tmp_path: Path) -> N
     declared = [c for c in result.calls if c.kind == "declare"]
     assert [(c.name, c.has_default, c.default) for c in declared] == [
         ("use_tree", True, False)]
+
+
+UNRESOLVED_FIELD = """
+#include <ros/ros.h>
+#include <pkg/SetDatum.h>
+
+class Localiser {
+ public:
+  Localiser() : nh_("~") {
+    pkg::SetDatum::Request request;
+    request.geo_pose.position.latitude = 1.0;  // a field of a message known by name
+    nh_.param("frequency", frequency_, frequency_);
+  }
+ private:
+  ros::NodeHandle nh_;
+  double frequency_ = 30.0;
+};
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "localiser");
+  Localiser localiser;
+  ros::spin();
+}
+"""
+
+
+def test_a_write_to_a_member_the_parse_cannot_resolve_is_no_crash(write_tree) -> None:
+    # robot_localization's navsat_transform (noetic): ``request.geo_pose.position.
+    # latitude = datum_lat`` on a service of a message package not in the tree, in the
+    # constructor whose writes a member's value is looked for: ``None == field``
+    root = write_tree({"pkg/package.xml": package_xml("pkg"),
+                       "pkg/srv/SetDatum.srv": "geographic_msgs/GeoPose geo_pose\n---\n",
+                       "pkg/src/node.cpp": UNRESOLVED_FIELD})
+    result = extract_cpp([str(root / "pkg" / "src" / "node.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    assert [(c.kind, c.name) for c in result.calls] == [("read", "~frequency")]

@@ -384,6 +384,10 @@ class Node(Cursor):
     def __eq__(self, other: object) -> bool:
         if type(other) is Node:
             return self._identity == other._identity
+        if not isinstance(other, Cursor):
+            # ``None == node`` asks the node (a member reference the parse left
+            # unresolved: ``target.referenced == field``); libclang takes no None
+            return False
         return bool(Cursor.__eq__(self, other))
 
     def __ne__(self, other: object) -> bool:
