@@ -193,3 +193,40 @@ def test_a_write_to_a_member_the_parse_cannot_resolve_is_no_crash(write_tree) ->
     result = extract_cpp([str(root / "pkg" / "src" / "node.cpp")], scan([str(root)]),
                          cache_dir=None)
     assert [(c.kind, c.name) for c in result.calls] == [("read", "~frequency")]
+
+
+TWO_WRITES_ONE_NAMESPACE = """
+#include <ros/ros.h>
+#include <nodelet/nodelet.h>
+#include <pluginlib/class_list_macros.h>
+#include <sensor_msgs/LaserScan.h>
+
+namespace demo {
+class Scanner : public nodelet::Nodelet {
+  ros::NodeHandle nh_, private_nh_;
+  ros::Publisher pub_;
+  void onInit() override {
+    private_nh_ = getPrivateNodeHandle();
+    bool concurrent = false;
+    private_nh_.param("concurrency", concurrent, false);
+    if (concurrent) {
+      nh_ = getMTNodeHandle();
+    } else {
+      nh_ = getNodeHandle();
+    }
+    pub_ = nh_.advertise<sensor_msgs::LaserScan>("scan", 10);
+  }
+};
+}  // namespace demo
+PLUGINLIB_EXPORT_CLASS(demo::Scanner, nodelet::Nodelet)
+"""
+
+
+def test_writes_that_differ_as_text_but_name_one_namespace_agree(write_tree) -> None:
+    # pointcloud_to_laserscan's nodelet: nh_ is getMTNodeHandle() or getNodeHandle()
+    root = write_tree({"pkg/package.xml": package_xml("pkg"),
+                       "pkg/src/node.cpp": TWO_WRITES_ONE_NAMESPACE})
+    result = extract_cpp([str(root / "pkg" / "src" / "node.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("read", "~concurrency"), ("publish", "scan")]

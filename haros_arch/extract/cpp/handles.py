@@ -176,7 +176,7 @@ class Namespaces:
             found = member_initialiser(field, self.source) if self.sites is None else (
                 self.sites.member(field, scope.body))
             if found is None or found[1].kind != CursorKind.CONSTRUCTOR:
-                assigned = self._assigned(field)  # not set by a constructor: by the unit
+                assigned = self._assigned(field, depth)  # not set by a constructor: by the unit
                 if assigned is _UNSURE:
                     return UNKNOWN
                 found = found or assigned
@@ -227,21 +227,30 @@ class Namespaces:
             return (normalise(join_name(parent, child)) if parent else normalise(child),)
         return (normalise(render(scope.string(args[0]))),)
 
-    def _assigned(self, field: Cursor) -> tuple[Cursor | None, Cursor] | None:
+    def _assigned(self, field: Cursor, depth: int = 0
+                  ) -> tuple[Cursor | None, Cursor] | None:
         """What the unit's functions (but destructors) assign to a member that no
-        constructor sets, when every such write agrees (the same text), and the function
-        that writes it; None when there is none (the default). ``_UNSURE`` when the
-        writes differ, or the value reads a parameter of a method that no call of the
-        file passes (a plugin's ``initialize(name)``: its host's value)."""
+        constructor sets, when every such write agrees (the same text, or handles of one
+        namespace: pointcloud_to_laserscan's ``nh_ = getNodeHandle()`` or, for a
+        multithreaded nodelet, ``getMTNodeHandle()``), and the function that writes it;
+        None when there is none (the default). ``_UNSURE`` when the writes differ, or
+        the value reads a parameter of a method that no call of the file passes (a
+        plugin's ``initialize(name)``: its host's value)."""
         found = self.members.assignments(field) if self.members is not None else []
         if not found:
             return None
         value, function = found[0]
-        if len({value_text(v) for v, _ in found}) > 1 or (
-            function.kind != CursorKind.CONSTRUCTOR and uses_parameter(value)
-            and (self.sites is None or not self.sites.callers(function))
+        if function.kind != CursorKind.CONSTRUCTOR and uses_parameter(value) and (
+            self.sites is None or not self.sites.callers(function)
         ):
             return _UNSURE
+        if len({value_text(v) for v, _ in found}) > 1:
+            if self.sites is None or depth >= MAX_DEPTH:
+                return _UNSURE
+            spaces = {self.of(v, self.sites.scope(f), depth + 1) if v is not None
+                      else UNKNOWN for v, f in found}
+            if len(spaces) > 1 or None in next(iter(spaces)):
+                return _UNSURE
         return value, function
 
     def _global_value(self, decl: Cursor) -> Cursor | None:
