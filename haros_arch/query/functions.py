@@ -11,8 +11,10 @@ from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from typing import Any
 
+from .. import manifest
 from ..model.conditions import Condition, exclusive, same_conditions
 from ..model.runtime import Link, NodeInstance, Resource
+from ..model.source import Package
 from .absence import distance, similar_to, unknown_users
 from .errors import QueryLimitError, QueryTypeError
 
@@ -307,3 +309,18 @@ def apart(charge: Charge, first: Any, second: Any) -> list[Any]:
 # two node instances of one name: a duplicate only when both can start
 FUNCTIONS["never_together"] = Function("never_together", never_together, 2, 2, charged=True)
 FUNCTIONS["apart"] = Function("apart", apart, 2, 2, charged=True)
+
+
+def installed_with(charge: Charge, package: Any, packages: Any, test: Any = False
+                   ) -> list[str]:
+    """The names of the packages a binary install of ``package`` brings: its run
+    dependencies (exec_depend, depend, run_depend; test_depend too when ``test``), and
+    theirs where they are among ``packages`` (``manifest.installed_with``)."""
+    if not isinstance(package, Package):
+        raise QueryTypeError("installed_with() takes a package first")
+    known = [p for p in _items(packages) if isinstance(p, Package)]
+    charge(1 + len(known) + sum(len(p.dependencies) for p in known))
+    return sorted(manifest.installed_with(package, known, bool(test)))
+
+
+FUNCTIONS["installed_with"] = Function("installed_with", installed_with, 2, 3, charged=True)

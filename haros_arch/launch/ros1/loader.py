@@ -20,7 +20,7 @@ from ... import diagnostics as diag
 from ...files import read_bytes
 from ...manifest import xml_parser
 from ...model.conditions import Condition, same_conditions
-from ...model.launch_tree import ArgOrigin, LaunchArg, LaunchCondition, LaunchItem
+from ...model.launch_tree import ArgOrigin, LaunchArg, LaunchCondition, LaunchItem, PackageUse
 from ...model.location import Location
 from ...model.values import Value
 from ...workspace import Workspace
@@ -97,7 +97,11 @@ class Ros1Loader:
 
     def resolve(self, raw: str, scope: Scope, element: Element) -> Value:
         """Substitute ``raw`` in ``scope``; problems become diagnostics, never raise."""
-        ctx = Context(scope.args, self.environment, self.workspace.find, scope.filename,
+        def find(name: str) -> str | None:
+            self.model.package_uses.append(PackageUse(name, self.where(scope, element)))
+            return self.workspace.find(name)
+
+        ctx = Context(scope.args, self.environment, find, scope.filename,
                       scope.anon, lambda name: name in scope.arg_names)
         try:
             result = substitute(raw, ctx)
