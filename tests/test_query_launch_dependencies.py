@@ -40,7 +40,7 @@ ROBOT_LAUNCH = """<launch>
 
 
 def findings(model):
-    return sorted((f.location.file, f.location.line, f.message.split(" uses package ")[1]
+    return sorted((f.location.file, f.location.line, f.message.split(" uses ")[1]
                    .split(" ")[0]) for f in run_rule(RULE, model)
                   if not f.rule.endswith(UNDECIDED))
 
