@@ -12,6 +12,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from .. import manifest
+from ..model import rosname
 from ..model.conditions import Condition, exclusive, same_conditions
 from ..model.runtime import Link, NodeInstance, Resource
 from ..model.source import Package
@@ -66,6 +67,14 @@ def _abs(charge: Charge, value: Any) -> Any:
 
 def is_rosglobal(charge: Charge, name: Any) -> bool:
     return isinstance(name, str) and name.startswith("/")
+
+
+def is_legal_name(charge: Charge, name: Any) -> bool:
+    """Whether roscpp and rospy accept a ROS 1 name (``?`` for an unknown part)."""
+    if not isinstance(name, str):
+        raise QueryTypeError("is_legal_name() takes a string")
+    charge(1 + len(name) // 256)
+    return rosname.is_legal_name(name)
 
 
 MAX_DISTANCE_INPUT = 4096
@@ -204,6 +213,7 @@ FUNCTIONS: dict[str, Function] = {f.name: f for f in (
     Function("str", _str, charged=True),
     Function("round", _round, 1, 2, charged=True),
     Function("is_rosglobal", is_rosglobal, charged=True),
+    Function("is_legal_name", is_legal_name, charged=True),
     Function("edit_distance", edit_distance, 2, 2, charged=True),
     Function("name_similarity", name_similarity, 2, 2, charged=True),
     Function("reachable", reachable, 2, 2, charged=True),

@@ -22,12 +22,13 @@ from ...manifest import xml_parser
 from ...model.conditions import Condition, same_conditions
 from ...model.launch_tree import ArgOrigin, LaunchArg, LaunchCondition, LaunchItem, PackageUse
 from ...model.location import Location
+from ...model.rosname import is_legal_name
 from ...model.values import Value
 from ...workspace import Workspace
 from ..model import LaunchModel, NodeDecl
 from ..tree import MAX_SKIPPED, node_items, param_names, ros1_condition
 from . import tags_params
-from .scope import Scope, canonical, global_ns, is_legal_name
+from .scope import Scope, canonical, global_ns
 from .substitution import ArgUndefined, Context, SubstitutionError, substitute
 
 Element = etree._Element
