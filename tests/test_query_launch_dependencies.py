@@ -119,6 +119,9 @@ def generate_launch_description():
             '-d', PathJoinSubstitution([FindPackageShare('views2'), 'a.rviz'])]),
         IncludeLaunchDescription(PythonLaunchDescriptionSource(PathJoinSubstitution([
             FindPackageShare('teleop2'), 'launch', 'teleop.launch.py']))),
+        # no package name at all: no use
+        Node(package='driver2', executable='helper', name='helper', arguments=[
+            PathJoinSubstitution([FindPackageShare(''), 'a.yaml'])]),
     ])
 """
 

@@ -291,8 +291,8 @@ def package_uses(launch: LaunchModel, workspace: Workspace) -> list[PackageUse]:
     found: dict[tuple[str, str, bool], PackageUse] = {}
     for use in uses:
         file = use.location.file
-        if not file or not use.location.package:
-            continue  # a file of no package of the workspace
+        if not file or not use.location.package or not use.package.strip():
+            continue  # a file of no package of the workspace, or no name at all
         if file not in tests:
             tests[file] = _test_file(file, workspace)
         test = use.test or tests[file]
