@@ -9,7 +9,7 @@ from haros_arch.model.load import from_data
 from haros_arch.model.serialise import model_to_data
 from haros_arch.pipeline import analyse
 from haros_arch.project import load
-from haros_arch.query.catalogue import UNDECIDED, load_catalogue, run_rule
+from haros_arch.query.catalogue import UNDECIDED, load_catalogue, run_catalogue, run_rule
 
 (RULE,) = [r for r in load_catalogue() if r.id == "launch-undeclared-dependency"]
 
@@ -35,6 +35,7 @@ ROBOT_LAUNCH = """<launch>
   <node pkg="$(arg extra)" type="tool" name="tool"/>
   <node pkg="bringup" type="watchdog.py" name="watchdog"/>
   <include file="$(find driver)/launch/view.launch"/>
+  <include file="$(find bringup)/launch/description.launch"/>
 </launch>
 """
 
@@ -54,6 +55,9 @@ def test_ros1_nodes_finds_and_includes_against_run_dependencies(write_tree):
                                             ("test_depend", "robot_state_publisher")),
         "src/bringup/CMakeLists.txt": "project(bringup)\n",
         "src/bringup/launch/robot.launch": ROBOT_LAUNCH,
+        "src/bringup/launch/description.launch": '<launch>\n  <param name="d" command="'
+                                                 '$(find xacro)/xacro $(find desc)/a.xacro"/>'
+                                                 "\n</launch>\n",
         "src/driver/package.xml": manifest("driver", ("depend", "meta")),
         "src/driver/CMakeLists.txt": "project(driver)\n",
         "src/driver/launch/view.launch": '<launch>\n  <node pkg="rviz" type="rviz" '
@@ -70,12 +74,17 @@ def test_ros1_nodes_finds_and_includes_against_run_dependencies(write_tree):
     # desc (line 2) is installed with bringup: through driver, which depends on the
     # workspace's metapackage meta; driver and bringup itself are declared
     expected = [
+        ("bringup/launch/description.launch", 2, "xacro"),
         (launch, 4, "xacro"),  # a build dependency is not installed with it
         (launch, 6, "other_robot"),  # not in the workspace, not declared: still a fact
         (launch, 8, "robot_state_publisher"),  # a test dependency, in a roslaunch file
         ("driver/launch/view.launch", 2, "rviz"),  # the included file's own package
     ]
     assert findings(model) == expected
+    # one missing line of a package.xml is one finding, whatever uses it
+    merged = [f for f in run_catalogue(model, None, [RULE]) if "xacro" in f.message]
+    assert [(f.location.file, f.location.line, [(a.file, a.line) for a in f.also])
+            for f in merged] == [("bringup/launch/description.launch", 2, [(launch, 4)])]
     reloaded = from_data(json.loads(json.dumps(model_to_data(model))))
     assert findings(reloaded) == expected
     # $(arg extra) has no value: which package it starts is not known
