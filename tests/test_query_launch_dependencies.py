@@ -153,3 +153,21 @@ def test_ros2_nodes_and_package_shares(write_tree):
     assert findings(model) == [(launch, 12, "desc2"), (launch, 16, "rviz2"),
                                (launch, 16, "views2"),
                                (launch, 18, "teleop2")]
+
+
+def test_ros1_a_nodelet_uses_the_package_its_class_is_found_in(write_tree):
+    root = write_tree({
+        "src/cam/package.xml": manifest("cam", ("exec_depend", "nodelet")),
+        "src/cam/CMakeLists.txt": "project(cam)\n",
+        # image_proc's rectify is known from its interface model; the other lookup name
+        # names no package found: which package has it is not known, so no use
+        "src/cam/launch/cam.launch": '<launch>\n  <node pkg="nodelet" type="nodelet" '
+                                     'name="manager" args="manager"/>\n  <node pkg="nodelet"'
+                                     ' type="nodelet" name="rectify" args="load image_proc/'
+                                     'rectify manager"/>\n  <node pkg="nodelet" type="nodelet"'
+                                     ' name="other" args="load vendor_plugins/Thing manager"/>'
+                                     "\n</launch>\n",
+        "project.yaml": "project: p\nconfigurations:\n  c: [cam/launch/cam.launch]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {"PATH": ""})
+    assert findings(model) == [("cam/launch/cam.launch", 3, "image_proc")]

@@ -145,7 +145,7 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
     decide_links(config)  # source conditions this configuration decides
     _namespace_values(config)
     config.package_paths = package_paths(launch, workspace)
-    config.package_uses = package_uses(launch, workspace)
+    config.package_uses = package_uses(launch, workspace, started)
     return config
 
 
@@ -278,13 +278,18 @@ def package_paths(launch: LaunchModel, workspace: Workspace) -> list[str]:
 TEST_FOLDERS = ("test", "tests")  # a package's folders of rostest / launch_testing files
 
 
-def package_uses(launch: LaunchModel, workspace: Workspace) -> list[PackageUse]:
+def package_uses(launch: LaunchModel, workspace: Workspace,
+                 started: Sequence[tuple[NodeDecl, NodeInstance]] = ()) -> list[PackageUse]:
     """The packages the launch files name, one per launch file and package, where first
-    written: the packages of the nodes they start and the folders their substitutions
-    ask for (``$(find pkg)``); ``test`` when rostest or launch_testing runs the file (one
-    under its package's test/ or tests/ folder, a ``.test`` file) or the node is a
-    ``<test>``, where a package's test dependencies are installed too."""
+    written: the packages of the nodes they start (a nodelet's: the package its class was
+    found in, among ``started``) and the folders their substitutions ask for
+    (``$(find pkg)``); ``test`` when rostest or launch_testing runs the file (one under
+    its package's test/ or tests/ folder, a ``.test`` file) or the node is a ``<test>``,
+    where a package's test dependencies are installed too."""
     uses = [PackageUse(d.package, d.location, "node", d.is_test) for d in launch.nodes]
+    uses += [PackageUse(instance.node.package, decl.location, "node", decl.is_test)
+             for decl, instance in started
+             if instance.node is not None and nodelet_plugin(decl) is not None]
     uses += launch.package_uses
     uses.sort(key=lambda u: (str(u.location.file), u.location.line, u.location.column))
     tests: dict[str, bool] = {}
