@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import os
 import re
-from collections.abc import Mapping
+from collections.abc import Iterable, Mapping
 from typing import Any, cast
 
 from lxml import etree
@@ -20,6 +20,9 @@ DEPEND_TAGS = (
     "depend", "build_depend", "build_export_depend", "buildtool_depend",
     "buildtool_export_depend", "exec_depend", "run_depend", "test_depend", "doc_depend",
 )
+# what a binary install of a package installs with it (REP 140: ``depend`` is build,
+# export and exec at once; format 1's run_depend); a rosbuild manifest's ``depend`` too
+RUN_DEPEND_TAGS = frozenset({"depend", "exec_depend", "run_depend"})
 BUILD_TYPES: tuple[BuildType, ...] = ("catkin", "ament_cmake", "ament_python", "cmake")
 
 
@@ -226,3 +229,26 @@ def _parse_rosbuild(path: str, location: Location,
 def _line(element: etree._Element) -> int:
     line = element.sourceline
     return line if isinstance(line, int) else 0
+
+
+def installed_with(package: Package, packages: Iterable[Package], test: bool = False
+                   ) -> set[str]:
+    """The names of the packages a binary install of ``package`` brings: its run
+    dependencies (``RUN_DEPEND_TAGS``; ``test_depend`` too when ``test``: rostest and
+    launch_testing run with them), and theirs in turn where they are among ``packages``
+    (a metapackage of the workspace). A dependency with a ``condition`` counts as
+    declared. The dependencies of a package not among ``packages`` are not known here."""
+    known = {p.name: p for p in packages}
+    tags = (RUN_DEPEND_TAGS | {"test_depend"}) if test else RUN_DEPEND_TAGS
+    found = {d.name for d in package.dependencies if d.kind in tags}
+    todo = list(found)
+    while todo:
+        other = known.get(todo.pop())
+        if other is None:
+            continue
+        for dep in other.dependencies:
+            if dep.kind in RUN_DEPEND_TAGS and dep.name not in found:
+                found.add(dep.name)
+                todo.append(dep.name)
+    found.discard(package.name)
+    return found

@@ -314,4 +314,5 @@ def _load_launch(spec: ConfigurationSpec, project: Project, workspace: Workspace
             param, owner=param.owner + offset) for param in loaded.params)
         merged.args.update(loaded.args)
         merged.diagnostics.extend(loaded.diagnostics)
+        merged.package_uses.extend(loaded.package_uses)
     return merged

@@ -11,6 +11,7 @@ from typing import Any
 from .. import diagnostics as diag
 from ..diagnostics import Diagnostic
 from ..launch.model import LaunchModel, NodeDecl
+from ..model.launch_tree import PackageUse
 from ..model.location import Location
 from ..model.rosname import RosName, namespace_of, remap, resolve, resolve_remaps
 from ..model.runtime import (
@@ -145,6 +146,7 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
     decide_links(config)  # source conditions this configuration decides
     _namespace_values(config)
     config.package_paths = package_paths(launch, workspace)
+    config.package_uses = package_uses(launch, workspace, started)
     return config
 
 
@@ -272,6 +274,49 @@ def package_paths(launch: LaunchModel, workspace: Workspace) -> list[str]:
     texts += [d.args for d in launch.nodes]
     return sorted(root for root in roots
                   if any(root.rstrip("/") + "/" in text for text in texts))
+
+
+TEST_FOLDERS = ("test", "tests")  # a package's folders of rostest / launch_testing files
+
+
+def package_uses(launch: LaunchModel, workspace: Workspace,
+                 started: Sequence[tuple[NodeDecl, NodeInstance]] = ()) -> list[PackageUse]:
+    """The packages the launch files name, one per launch file and package, where first
+    written: the packages of the nodes they start (a nodelet's: the package its class was
+    found in, among ``started``) and the folders their substitutions ask for
+    (``$(find pkg)``); ``test`` when rostest or launch_testing runs the file (one under
+    its package's test/ or tests/ folder, a ``.test`` file) or the node is a ``<test>``,
+    where a package's test dependencies are installed too."""
+    uses = [PackageUse(d.package, d.location, "node", d.is_test) for d in launch.nodes]
+    uses += [PackageUse(instance.node.package, decl.location, "node", decl.is_test)
+             for decl, instance in started
+             if instance.node is not None and nodelet_plugin(decl) is not None]
+    uses += launch.package_uses
+    uses.sort(key=lambda u: (str(u.location.file), u.location.line, u.location.column))
+    tests: dict[str, bool] = {}
+    found: dict[tuple[str, str, bool], PackageUse] = {}
+    for use in uses:
+        file = use.location.file
+        if not file or not use.location.package or not use.package.strip():
+            continue  # a file of no package of the workspace, or no name at all
+        if file not in tests:
+            tests[file] = _test_file(file, workspace)
+        test = use.test or tests[file]
+        found.setdefault((file, use.package, test), replace(use, test=test))
+    return list(found.values())
+
+
+def _test_file(file: str, workspace: Workspace) -> bool:
+    """A launch file rostest or launch_testing runs: a ``.test`` file, or one under a
+    test/ or tests/ folder of its package."""
+    if file.endswith(".test"):
+        return True
+    path = os.path.join(workspace.root, file)
+    package = workspace.package_of(path)
+    if package is None or not package.root:
+        return False
+    folders = os.path.relpath(os.path.dirname(path), package.root).split(os.sep)
+    return any(folder in TEST_FOLDERS for folder in folders)
 
 
 def _namespace_values(config: Configuration) -> None:

@@ -13,7 +13,7 @@ from typing import Any
 from .. import diagnostics as diag
 from ..diagnostics import Diagnostic
 from ..model.conditions import Condition
-from ..model.launch_tree import LaunchItem
+from ..model.launch_tree import LaunchItem, PackageUse
 from ..model.location import NOWHERE, Location
 
 
@@ -101,6 +101,9 @@ class LaunchModel:
     # regular expressions over absolute paths (``$(arg pipeline)_planning_pipeline.
     # launch.xml``: MoveIt's chomp pipeline is included when ``pipeline`` is chomp)
     include_patterns: list[str] = field(default_factory=list)
+    # the packages whose folders a substitution asked for, where (``$(find pkg)``,
+    # ``FindPackageShare``); the nodes' packages are in ``nodes``
+    package_uses: list[PackageUse] = field(default_factory=list)
 
 
 def without_tests(model: LaunchModel) -> LaunchModel:

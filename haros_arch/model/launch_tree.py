@@ -73,6 +73,35 @@ class LaunchItem:
         return out
 
 
+@dataclass(frozen=True)
+class PackageUse:
+    """A package a launch file names, where it is written: a node of it started
+    (``kind`` "node": ``pkg=``, ``package=``, a component's package) or a file of it
+    named (``kind`` "file": ``$(find pkg)``, ``$(find-pkg-share pkg)``,
+    ``FindPackageShare``, ``get_package_share_directory``: an include, a parameter file,
+    a robot description). ``package`` has ``?`` for parts not known statically;
+    ``location.package`` is the launch file's own package (None outside the workspace's
+    packages); ``test``: the launch file is one rostest or launch_testing runs (under the
+    package's test/ or tests/ folder, a ``.test`` file) or the node is a ``<test>``."""
+
+    package: str
+    location: Location
+    kind: str = "file"
+    test: bool = False
+
+    @property
+    def user(self) -> str | None:
+        return self.location.package
+
+
+def use_from_data(data: Any) -> PackageUse | None:
+    """The inverse of ``serialise.to_data`` for one package use."""
+    if not isinstance(data, dict) or not isinstance(data.get("package"), str):
+        return None
+    return PackageUse(data["package"], _location(data.get("location")),
+                      str(data.get("kind", "file")), bool(data.get("test", False)))
+
+
 MAX_CHILDREN = 5_000
 MAX_DEPTH = 256  # items nested deeper are not read back (includes nest 32 deep at most)
 

@@ -12,7 +12,7 @@ from typing import Any
 
 from .conditions import Condition
 from .diagnostic import Diagnostic
-from .launch_tree import item_from_data
+from .launch_tree import item_from_data, use_from_data
 from .location import NOWHERE, Location
 from .model import Model
 from .robot import description_from_data
@@ -261,6 +261,8 @@ def _configuration(data: dict[str, Any], nodes: dict[str, Node],
     config.package_paths = [str(p) for p in data.get("package_paths", ())]
     config.launch_tree = [item for item in map(item_from_data, data.get("launch_tree") or ())
                           if item is not None]
+    config.package_uses = [use for use in map(use_from_data, data.get("package_uses") or ())
+                           if use is not None]
     config.robot_descriptions = [
         made for made in map(description_from_data, data.get("robot_descriptions") or ())
         if made is not None]

@@ -17,6 +17,14 @@ from .values import UNKNOWN_MARK
 
 SEP = "/"
 PRIVATE = "~"
+# a legal ROS 1 name (rosgraph's is_legal_name, roscpp's names::validate): a letter, "/"
+# or "~" first, then letters, digits, "_" and "/"; "?" stands for an unknown part
+_LEGAL = re.compile(r"^[~/A-Za-z?][\w/?]*$")
+
+
+def is_legal_name(name: str) -> bool:
+    """Whether roscpp and rospy accept ``name`` (the empty name too: the namespace)."""
+    return not name or (_LEGAL.match(name) is not None and "//" not in name)
 
 
 def clean(name: str) -> str:

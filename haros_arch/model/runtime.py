@@ -15,7 +15,7 @@ from typing import Any, ClassVar
 
 from .conditions import Condition
 from .diagnostic import Diagnostic
-from .launch_tree import LaunchItem
+from .launch_tree import LaunchItem, PackageUse
 from .location import NOWHERE, Location
 from .robot import RobotDescription
 from .rosname import RosName, namespace_of, pattern_for, resolve, resolve_remaps
@@ -597,6 +597,9 @@ class Configuration:
     package_paths: list[str] = field(default_factory=list)
     # how the launch files make the nodes: one tree per launch file named (launch_tree.py)
     launch_tree: list[LaunchItem] = field(default_factory=list, metadata={"optional": True})
+    # the packages the launch files name (a node's, a $(find pkg)), one per launch file
+    # and package, where first written (launch-undeclared-dependency)
+    package_uses: list[PackageUse] = field(default_factory=list, metadata={"optional": True})
     # the robot descriptions spawned into a simulator, as read (robot.py)
     robot_descriptions: list[RobotDescription] = field(default_factory=list,
                                                        metadata={"optional": True})

@@ -29,7 +29,7 @@ from ..model.runtime import Configuration, Link
 from . import compile, config_scope, model_scope
 from .errors import QueryError, QueryLimitError
 from .interpreter import DEFAULT_STEPS, Evaluator
-from .results import best_location, entities, entity_ids, label, location_of, plain
+from .results import best_location, entities, entity_ids, label, location_of, place_of, plain
 from .suppress import Suppressions
 from .syntax import Literal
 
@@ -203,8 +203,8 @@ def _finding(rule: Rule, match: Any, config: Configuration | None,
     else:
         message = "; ".join(label(e) for e in involved) or str(plain(match))
     where = best_location(involved)
-    if not where.file and isinstance(match, Diagnostic):
-        where = match.location
+    if not where.file:
+        where = place_of(match)
     return Finding(rule.id, rule.severity, rule.title, " ".join(message.split()),
                    config.name if config else None, entity_ids(involved), where)
 
@@ -283,17 +283,20 @@ def _undecided_finding(rule: Rule, undecided: list[tuple[Any, list[Any]]],
                       for n in ranked[:UNDECIDED_NAMED])
     more = f" and {len(ranked) - UNDECIDED_NAMED} more" if len(ranked) > UNDECIDED_NAMED \
         else ""
-    first = "; ".join(label(e) for e in entities(undecided[0][0])[:1])
+    first = "; ".join(label(e) for e in entities(undecided[0][0])[:1]) or label(
+        undecided[0][1][0])
     why = rule.undecided_why or (
         "these could be the missing side unseen (nodes of partial or unknown interface, "
         "names with '?', dynamic_reconfigure servers, launch parameters not known "
         "statically)")
+    where = best_location(entities(undecided[0][0]))
+    if not where.file:
+        where = place_of(undecided[0][0])
     message = (f"{len(undecided)} possible finding(s) not reported (first: {first}): "
                f"{why}: {named}{more}")
     return Finding(rule.id + UNDECIDED, "info", f"{rule.title}: not decided",
                    message, config.name if config else None,
-                   entity_ids(ranked[:UNDECIDED_NAMED]),
-                   best_location(entities(undecided[0][0])))
+                   entity_ids(ranked[:UNDECIDED_NAMED]), where)
 
 
 def _limit_finding(rule: Rule, err: QueryError, config: Configuration | None) -> Finding:

@@ -11,8 +11,11 @@ from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from typing import Any
 
+from .. import manifest
+from ..model import rosname
 from ..model.conditions import Condition, exclusive, same_conditions
 from ..model.runtime import Link, NodeInstance, Resource
+from ..model.source import Package
 from .absence import distance, similar_to, unknown_users
 from .errors import QueryLimitError, QueryTypeError
 
@@ -64,6 +67,14 @@ def _abs(charge: Charge, value: Any) -> Any:
 
 def is_rosglobal(charge: Charge, name: Any) -> bool:
     return isinstance(name, str) and name.startswith("/")
+
+
+def is_legal_name(charge: Charge, name: Any) -> bool:
+    """Whether roscpp and rospy accept a ROS 1 name (``?`` for an unknown part)."""
+    if not isinstance(name, str):
+        raise QueryTypeError("is_legal_name() takes a string")
+    charge(1 + len(name) // 256)
+    return rosname.is_legal_name(name)
 
 
 MAX_DISTANCE_INPUT = 4096
@@ -202,6 +213,7 @@ FUNCTIONS: dict[str, Function] = {f.name: f for f in (
     Function("str", _str, charged=True),
     Function("round", _round, 1, 2, charged=True),
     Function("is_rosglobal", is_rosglobal, charged=True),
+    Function("is_legal_name", is_legal_name, charged=True),
     Function("edit_distance", edit_distance, 2, 2, charged=True),
     Function("name_similarity", name_similarity, 2, 2, charged=True),
     Function("reachable", reachable, 2, 2, charged=True),
@@ -307,3 +319,18 @@ def apart(charge: Charge, first: Any, second: Any) -> list[Any]:
 # two node instances of one name: a duplicate only when both can start
 FUNCTIONS["never_together"] = Function("never_together", never_together, 2, 2, charged=True)
 FUNCTIONS["apart"] = Function("apart", apart, 2, 2, charged=True)
+
+
+def installed_with(charge: Charge, package: Any, packages: Any, test: Any = False
+                   ) -> list[str]:
+    """The names of the packages a binary install of ``package`` brings: its run
+    dependencies (exec_depend, depend, run_depend; test_depend too when ``test``), and
+    theirs where they are among ``packages`` (``manifest.installed_with``)."""
+    if not isinstance(package, Package):
+        raise QueryTypeError("installed_with() takes a package first")
+    known = [p for p in _items(packages) if isinstance(p, Package)]
+    charge(1 + len(known) + sum(len(p.dependencies) for p in known))
+    return sorted(manifest.installed_with(package, known, bool(test)))
+
+
+FUNCTIONS["installed_with"] = Function("installed_with", installed_with, 2, 3, charged=True)

@@ -5,6 +5,8 @@ from __future__ import annotations
 from typing import Any
 
 from ..model.conditions import Condition
+from ..model.diagnostic import Diagnostic
+from ..model.launch_tree import PackageUse
 from ..model.location import NOWHERE, Location
 from ..model.model import Model
 from ..model.rosname import RosName
@@ -40,6 +42,8 @@ def plain(value: Any) -> Any:
         return str(value)
     if isinstance(value, Pair):
         return [plain(value.key), plain(value.value)]
+    if isinstance(value, PackageUse):
+        return f"package {value.package} at {value.location}"
     if isinstance(value, Function | Method):
         return repr(value)
     if isinstance(value, dict):
@@ -78,7 +82,7 @@ def entity_ids(items: list[Any]) -> tuple[str, ...]:
 
 
 def location_of(item: Any) -> Location:
-    if isinstance(item, Parameter):
+    if isinstance(item, Parameter | PackageUse | Diagnostic):
         return item.location
     if isinstance(item, Link | NodeInstance | Node | PrimitiveCall):
         return item.location
@@ -93,6 +97,13 @@ def best_location(items: list[Any]) -> Location:
         if where.file:
             return where
     return NOWHERE
+
+
+def place_of(match: Any) -> Location:
+    """Where a match without runtime entities points: a diagnostic's or a package use's
+    place, itself or among a returned mapping's values."""
+    values = list(match.values()) if isinstance(match, dict) else [match]
+    return best_location([v for v in values if isinstance(v, PackageUse | Diagnostic)])
 
 
 def label(item: Any) -> str:

@@ -20,14 +20,15 @@ from ... import diagnostics as diag
 from ...files import read_bytes
 from ...manifest import xml_parser
 from ...model.conditions import Condition, same_conditions
-from ...model.launch_tree import ArgOrigin, LaunchArg, LaunchCondition, LaunchItem
+from ...model.launch_tree import ArgOrigin, LaunchArg, LaunchCondition, LaunchItem, PackageUse
 from ...model.location import Location
+from ...model.rosname import is_legal_name
 from ...model.values import Value
 from ...workspace import Workspace
 from ..model import LaunchModel, NodeDecl
 from ..tree import MAX_SKIPPED, node_items, param_names, ros1_condition
 from . import tags_params
-from .scope import Scope, canonical, global_ns, is_legal_name
+from .scope import Scope, canonical, global_ns
 from .substitution import ArgUndefined, Context, SubstitutionError, substitute
 
 Element = etree._Element
@@ -97,7 +98,11 @@ class Ros1Loader:
 
     def resolve(self, raw: str, scope: Scope, element: Element) -> Value:
         """Substitute ``raw`` in ``scope``; problems become diagnostics, never raise."""
-        ctx = Context(scope.args, self.environment, self.workspace.find, scope.filename,
+        def find(name: str) -> str | None:
+            self.model.package_uses.append(PackageUse(name, self.where(scope, element)))
+            return self.workspace.find(name)
+
+        ctx = Context(scope.args, self.environment, find, scope.filename,
                       scope.anon, lambda name: name in scope.arg_names)
         try:
             result = substitute(raw, ctx)

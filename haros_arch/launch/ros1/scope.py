@@ -20,8 +20,6 @@ from ...model.location import NOWHERE, Location
 from ...model.values import Unknown, Value
 from .params import join
 
-_LEGAL = re.compile(r"^[~/A-Za-z?][\w/?]*$")
-
 
 def canonical(name: str) -> str:
     """rosgraph's ``canonicalize_name``: no repeated or trailing slashes."""
@@ -38,10 +36,6 @@ def global_ns(name: str) -> str:
     if not name.endswith("/"):
         name += "/"
     return re.sub("//+", "/", name)
-
-
-def is_legal_name(name: str) -> bool:
-    return not name or (_LEGAL.match(name) is not None and "//" not in name)
 
 
 @dataclass

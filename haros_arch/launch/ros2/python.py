@@ -24,6 +24,7 @@ from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
 from ...evaluate import budget, syntax
 from ...evaluate import operations as ops
+from ...model.launch_tree import PackageUse
 from ...model.location import Location
 from ...model.values import Unknown
 from ...workspace import Workspace
@@ -60,6 +61,8 @@ class Interpreter(Expressions):
         self.workspace = workspace
         self.environment = environment
         self.diagnostics: list[Diagnostic] = []
+        # packages whose folders the file asks for now (get_package_share_directory)
+        self.uses: list[PackageUse] = []
         # launch imports the file from its path: __file__ is that path, as given
         self.globals: dict[str, Any] = {"__file__": path}
         self.steps = 0
@@ -368,9 +371,11 @@ class Interpreter(Expressions):
 
 
 def parse_python(text: str, path: str, workspace: Workspace,
-                 environment: dict[str, str] | None = None
+                 environment: dict[str, str] | None = None,
+                 uses: list[PackageUse] | None = None,
                  ) -> tuple[list[e.Action] | None, list[Diagnostic]]:
-    """The actions of a Python launch file, and what could not be interpreted."""
+    """The actions of a Python launch file, and what could not be interpreted; the
+    packages whose folders it asks for as it runs are added to ``uses``."""
     where = workspace.location(path)
     if len(text) > MAX_SOURCE:
         return None, [diag.make("LAUNCH_PY_BUDGET", where,
@@ -403,6 +408,8 @@ def parse_python(text: str, path: str, workspace: Workspace,
         interp.diagnostics.append(diag.make("LAUNCH_PY_BUDGET", where,
                                             detail="interpretation nested too deeply"))
         actions = None
+    if uses is not None:
+        uses.extend(interp.uses)
     return actions, interp.diagnostics
 
 

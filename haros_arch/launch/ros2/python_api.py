@@ -18,6 +18,7 @@ from typing import Any
 
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
+from ...model.launch_tree import PackageUse
 from ...model.values import Unknown, Value
 from ...share import install_prefix
 from . import entities as e
@@ -112,6 +113,7 @@ def package_directory(share: bool) -> Builder:
     def build(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
         name = arg(a, k, 0, "package_name")
         if isinstance(name, str):
+            i.uses.append(PackageUse(name, i.where(n)))
             found = i.workspace.find(name) if share else install_prefix(i.workspace, name)
             if found is not None:
                 return found

@@ -19,7 +19,7 @@ from ... import diagnostics as diag
 from ... import safe_yaml
 from ...files import read_text
 from ...model.conditions import Condition
-from ...model.launch_tree import ArgOrigin, LaunchArg, LaunchCondition, LaunchItem
+from ...model.launch_tree import ArgOrigin, LaunchArg, LaunchCondition, LaunchItem, PackageUse
 from ...model.location import Location
 from ...model.values import Unknown, Value
 from ...share import share_source
@@ -75,6 +75,10 @@ class Runner:
         found = diag.make(code, location, **params)
         if found not in self.model.diagnostics:
             self.model.diagnostics.append(found)
+
+    def uses(self, package: str, location: Location) -> None:
+        """A substitution asked for the folder of ``package`` (``?`` for parts not known)."""
+        self.model.package_uses.append(PackageUse(package, location))
 
     def evaluator(self, scope: Scope, location: Location) -> Evaluator:
         return Evaluator(self, scope, location)

@@ -245,6 +245,7 @@ class Evaluator:
 
     def s_FindPackage(self, s: e.FindPackage) -> Value:
         name = self.known(s.package)
+        self.runner.uses(self.value(s.package).text, self.location)
         if name is None:
             return Value.unknown("package with an unknown name")
         found = self.runner.workspace.find(name)
@@ -285,6 +286,7 @@ class Evaluator:
     def in_package(self, executable: str, package_text: e.Text) -> Value:
         """``$(exec-in-pkg)``: ``<prefix>/lib/<pkg>/<exe>`` when the package installs it."""
         package = self.known(package_text)
+        self.runner.uses(self.value(package_text).text, self.location)
         if package is None:
             return Value.unknown("package with an unknown name")
         workspace = self.runner.workspace

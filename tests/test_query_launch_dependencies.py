@@ -1,0 +1,173 @@
+"""launch-undeclared-dependency on real launch files: the packages a launch file names
+(nodes, $(find), FindPackageShare, get_package_share_directory) against its package.xml."""
+
+from __future__ import annotations
+
+import json
+
+from haros_arch.model.load import from_data
+from haros_arch.model.serialise import model_to_data
+from haros_arch.pipeline import analyse
+from haros_arch.project import load
+from haros_arch.query.catalogue import UNDECIDED, load_catalogue, run_catalogue, run_rule
+
+(RULE,) = [r for r in load_catalogue() if r.id == "launch-undeclared-dependency"]
+
+
+def manifest(name: str, *deps: tuple[str, str], build_type: str = "") -> str:
+    export = f"<export><build_type>{build_type}</build_type></export>" if build_type else ""
+    tool = "ament_cmake" if build_type else "catkin"
+    lines = "".join(f"<{kind}>{dep}</{kind}>" for kind, dep in deps)
+    return (f'<?xml version="1.0"?>\n<package format="2"><name>{name}</name>'
+            f"<version>0.1.0</version><description>d</description>"
+            f'<maintainer email="a@b.c">m</maintainer><license>MIT</license>'
+            f"<buildtool_depend>{tool}</buildtool_depend>{lines}{export}</package>\n")
+
+
+ROBOT_LAUNCH = """<launch>
+  <arg name="model" default="$(find desc)/urdf/robot.xacro"/>
+  <arg name="extra"/>
+  <param name="robot_description" command="$(find xacro)/xacro $(arg model)"/>
+  <node pkg="driver" type="driver_node" name="driver">
+    <rosparam file="$(find other_robot)/param/diagnostics.yaml" command="load"/>
+  </node>
+  <node pkg="robot_state_publisher" type="robot_state_publisher" name="rsp"/>
+  <node pkg="$(arg extra)" type="tool" name="tool"/>
+  <node pkg="bringup" type="watchdog.py" name="watchdog"/>
+  <include file="$(find driver)/launch/view.launch"/>
+  <include file="$(find bringup)/launch/description.launch"/>
+</launch>
+"""
+
+
+def findings(model):
+    return sorted((f.location.file, f.location.line, f.message.split(" uses ")[1]
+                   .split(" ")[0]) for f in run_rule(RULE, model)
+                  if not f.rule.endswith(UNDECIDED))
+
+
+def test_ros1_nodes_finds_and_includes_against_run_dependencies(write_tree):
+    root = write_tree({
+        # xacro is only a build dependency; meta is the workspace's metapackage of desc
+        "src/bringup/package.xml": manifest("bringup", ("exec_depend", "driver"),
+                                            ("build_depend", "xacro"),
+                                            ("exec_depend", "meta_unused"),
+                                            ("test_depend", "robot_state_publisher")),
+        "src/bringup/CMakeLists.txt": "project(bringup)\n",
+        "src/bringup/launch/robot.launch": ROBOT_LAUNCH,
+        "src/bringup/launch/description.launch": '<launch>\n  <param name="d" command="'
+                                                 '$(find xacro)/xacro $(find desc)/a.xacro"/>'
+                                                 "\n</launch>\n",
+        "src/driver/package.xml": manifest("driver", ("depend", "meta")),
+        "src/driver/CMakeLists.txt": "project(driver)\n",
+        "src/driver/launch/view.launch": '<launch>\n  <node pkg="rviz" type="rviz" '
+                                         'name="rviz"/>\n  <node pkg="desc" type="x" '
+                                         'name="x"/>\n</launch>\n',
+        "src/meta/package.xml": manifest("meta", ("exec_depend", "desc")),
+        "src/meta/CMakeLists.txt": "project(meta)\n",
+        "src/desc/package.xml": manifest("desc"),
+        "src/desc/CMakeLists.txt": "project(desc)\n",
+        "project.yaml": "project: p\nconfigurations:\n  c: [bringup/launch/robot.launch]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {"PATH": ""})
+    launch = "bringup/launch/robot.launch"
+    # desc (line 2) is installed with bringup: through driver, which depends on the
+    # workspace's metapackage meta; driver and bringup itself are declared
+    expected = [
+        ("bringup/launch/description.launch", 2, "xacro"),
+        (launch, 4, "xacro"),  # a build dependency is not installed with it
+        (launch, 6, "other_robot"),  # not in the workspace, not declared: still a fact
+        (launch, 8, "robot_state_publisher"),  # a test dependency, in a roslaunch file
+        ("driver/launch/view.launch", 2, "rviz"),  # the included file's own package
+    ]
+    assert findings(model) == expected
+    # one missing line of a package.xml is one finding, whatever uses it
+    merged = [f for f in run_catalogue(model, None, [RULE]) if "xacro" in f.message]
+    assert [(f.location.file, f.location.line, [(a.file, a.line) for a in f.also])
+            for f in merged] == [("bringup/launch/description.launch", 2, [(launch, 4)])]
+    reloaded = from_data(json.loads(json.dumps(model_to_data(model))))
+    assert findings(reloaded) == expected
+    # $(arg extra) has no value: which package it starts is not known
+    (info,) = [f for f in run_rule(RULE, model) if f.rule.endswith(UNDECIDED)]
+    assert "1 possible finding" in info.message and info.location.line == 9
+
+
+def test_ros1_test_files_may_use_test_dependencies(write_tree):
+    root = write_tree({
+        "src/bringup/package.xml": manifest("bringup", ("test_depend", "rostest"),
+                                            ("test_depend", "checker")),
+        "src/bringup/CMakeLists.txt": "project(bringup)\n",
+        "src/bringup/test/robot.test": '<launch>\n  <node pkg="checker" type="c" name="c"/>'
+                                       '\n  <test test-name="t" pkg="rostest" type="hz"/>\n'
+                                       "</launch>\n",
+        "project.yaml": "project: p\nconfigurations:\n  c: [bringup/test/robot.test]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {"PATH": ""})
+    assert run_rule(RULE, model) == []
+    assert {(u.package, u.test) for u in model.configurations[0].package_uses} == {
+        ("checker", True), ("rostest", True)}
+
+
+ROS2_LAUNCH = """
+import os
+from ament_index_python.packages import get_package_share_directory
+from launch import LaunchDescription
+from launch.actions import IncludeLaunchDescription
+from launch.launch_description_sources import PythonLaunchDescriptionSource
+from launch.substitutions import PathJoinSubstitution
+from launch_ros.actions import Node
+from launch_ros.substitutions import FindPackageShare
+
+
+def generate_launch_description():
+    desc = get_package_share_directory('desc2')
+    return LaunchDescription([
+        Node(package='driver2', executable='driver_node', name='driver',
+             parameters=[os.path.join(desc, 'params.yaml')]),
+        Node(package='rviz2', executable='rviz2', name='rviz2', arguments=[
+            '-d', PathJoinSubstitution([FindPackageShare('views2'), 'a.rviz'])]),
+        IncludeLaunchDescription(PythonLaunchDescriptionSource(PathJoinSubstitution([
+            FindPackageShare('teleop2'), 'launch', 'teleop.launch.py']))),
+        # no package name at all: no use
+        Node(package='driver2', executable='helper', name='helper', arguments=[
+            PathJoinSubstitution([FindPackageShare(''), 'a.yaml'])]),
+    ])
+"""
+
+
+def test_ros2_nodes_and_package_shares(write_tree):
+    root = write_tree({
+        "src/bringup2/package.xml": manifest("bringup2", ("exec_depend", "driver2"),
+                                             ("build_depend", "desc2"),
+                                             build_type="ament_cmake"),
+        "src/bringup2/CMakeLists.txt": "project(bringup2)\n",
+        "src/bringup2/launch/robot.launch.py": ROS2_LAUNCH,
+        "src/desc2/package.xml": manifest("desc2", build_type="ament_cmake"),
+        "src/desc2/CMakeLists.txt": "project(desc2)\n",
+        "project.yaml": "project: p\nconfigurations:\n  c: [bringup2/launch/robot.launch.py]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {"PATH": ""})
+    launch = "bringup2/launch/robot.launch.py"
+    # desc2's share folder is asked for now (get_package_share_directory), the others'
+    # when the actions run; driver2 is declared
+    assert findings(model) == [(launch, 12, "desc2"), (launch, 16, "rviz2"),
+                               (launch, 16, "views2"),
+                               (launch, 18, "teleop2")]
+
+
+def test_ros1_a_nodelet_uses_the_package_its_class_is_found_in(write_tree):
+    root = write_tree({
+        "src/cam/package.xml": manifest("cam", ("exec_depend", "nodelet")),
+        "src/cam/CMakeLists.txt": "project(cam)\n",
+        # image_proc's rectify is known from its interface model; the other lookup name
+        # names no package found: which package has it is not known, so no use
+        "src/cam/launch/cam.launch": '<launch>\n  <node pkg="nodelet" type="nodelet" '
+                                     'name="manager" args="manager"/>\n  <node pkg="nodelet"'
+                                     ' type="nodelet" name="rectify" args="load image_proc/'
+                                     'rectify manager"/>\n  <node pkg="nodelet" type="nodelet"'
+                                     ' name="other" args="load vendor_plugins/Thing manager"/>'
+                                     "\n</launch>\n",
+        "project.yaml": "project: p\nconfigurations:\n  c: [cam/launch/cam.launch]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {"PATH": ""})
+    assert findings(model) == [("cam/launch/cam.launch", 3, "image_proc")]
