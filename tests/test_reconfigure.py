@@ -1,6 +1,7 @@
 """dynamic_reconfigure (ROS 1): a package's ``cfg/*.cfg`` is read (never run) for the
 ``<Name>Config.h`` it generates: the config's fields parse, and a ``Server`` of it reads
-and writes each of its parameters under its handle's namespace, with the .cfg default.
+each of its parameters under its handle's namespace, with the .cfg default (it writes
+them back as read, which no call says: "set by the node" would undecide conditions).
 A parameter a launch file sets there that the .cfg does not declare is then not read
 (before, everything under a server's namespace was undecided). The sources are
 fixtures/cpp/reconfigure."""
@@ -38,20 +39,17 @@ def _tree(write_tree, cfg: str, launch: str = "") -> object:
     return write_tree(files)
 
 
-def test_a_server_reads_and_writes_the_parameters_of_its_cfg(write_tree) -> None:
+def test_a_server_reads_the_parameters_of_its_cfg(write_tree) -> None:
     root = _tree(write_tree, _fixture("Tracker.cfg"))
     result = extract_cpp([str(root / "tracker" / "src" / "tracker.cpp")], scan([str(root)]),
                          cache_dir=None)
     calls = [(c.kind, c.name, c.type, c.default, c.handle_namespace) for c in result.calls
              if c.kind in ("read", "write")]
     assert calls == [
-        ("read", "~rate", "double", 10.0, "~"), ("write", "~rate", "double", None, "~"),
-        ("read", "~frame_id", "str", "base_link", "~"),
-        ("write", "~frame_id", "str", None, "~"),
-        ("read", "~mode", "int", 0, "~"), ("write", "~mode", "int", None, "~"),
-        ("read", "~use_filter", "bool", True, "~"), ("write", "~use_filter", "bool", None, "~"),
+        ("read", "~rate", "double", 10.0, "~"), ("read", "~frame_id", "str", "base_link", "~"),
+        ("read", "~mode", "int", 0, "~"), ("read", "~use_filter", "bool", True, "~"),
         # offset_x and offset_y are named in a loop: some parameters are not known
-        ("read", "~?", None, None, "~"), ("write", "~?", None, None, "~")]
+        ("read", "~?", None, None, "~")]
     codes = [d.code for d in result.diagnostics]
     assert "CPP_RECONFIGURE_PARTIAL" in codes
     # the fields and the enum's constant parse; only the field named in a loop does not
@@ -128,3 +126,23 @@ def test_a_partial_cfg_leaves_its_namespace_undecided(write_tree) -> None:
     rules = [f["rule"] for f in report["findings"]
              if f["rule"].startswith("parameter-set-not-read")]
     assert rules == ["parameter-set-not-read-undecided"]
+
+
+def test_a_condition_over_a_parameter_the_server_reads_stays_decided(write_tree) -> None:
+    # amcl: use_map_topic is a field of AMCL.cfg and the code reads it; a launch file
+    # that does not set it keeps the default (false), so /map is never subscribed. The
+    # server writes its parameters back as it read them: no write that would undecide it
+    source = _fixture("tracker.cpp").replace(
+        '    pub_ = nh_.advertise<std_msgs::Float64>("rate", 1);\n',
+        '    pub_ = nh_.advertise<std_msgs::Float64>("rate", 1);\n'
+        '    pnh_.param("use_filter", use_filter_, false);\n'
+        '    if (use_filter_) {\n'
+        '      sub_ = nh_.subscribe("filtered", 1, &Tracker::onFiltered, this);\n'
+        '    }\n').replace(
+        "  ros::Publisher pub_;\n",
+        "  ros::Publisher pub_;\n  ros::Subscriber sub_;\n  bool use_filter_ = false;\n"
+        "  void onFiltered(const std_msgs::Float64ConstPtr& msg) {}\n")
+    root = _tree(write_tree, _fixture("Tracker.cfg"), LAUNCH)
+    (root / "tracker" / "src" / "tracker.cpp").write_text(source)
+    report = _check(root)
+    assert not [f for f in report["findings"] if "filtered" in f["message"]]

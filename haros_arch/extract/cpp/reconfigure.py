@@ -7,14 +7,15 @@ level, "description", default, min, max)``, ``gen.enum([gen.const(...)])``, grou
 ``ast``, never run: the literal arguments of those calls. A ``Server<pkg::NameConfig>``
 reads every parameter of the config from the parameter server under the namespace of
 its node handle when it starts (a parameter not set takes the .cfg default) and writes
-them all back; the C++ code reads their values as fields of the config
+them all back as read (no write is said: it changes no value); the C++ code reads their
+values as fields of the config
 (``config.inflation_radius``).
 
 No build happens here, so the header is synthesised (``render``): the config class with
 a field per parameter, the enums' constants and the generated methods, declarations
 only. The class carries one ``annotate`` attribute per parameter (``parameters`` reads
 them back from the parsed class): the visitor turns the construction of a server into a
-read and a write of each, beside the server's own service and topics. A parameter whose
+read of each, beside the server's own service and topics. A parameter whose
 name is not a literal (built in a loop) makes the config partial: the parameters known
 are still read, and ``CPP_RECONFIGURE_PARTIAL`` says so.
 """

@@ -745,9 +745,8 @@ class CallFinder:
                       namespace: str | None, conditions: tuple[Condition, ...],
                       location: Location, owner: str | None) -> None:
         """The parameters a dynamic_reconfigure server of a synthesised config reads
-        and writes when it starts (``reconfigure``): each field of the config, in the
-        namespace of the server's own service ``name`` (its handle's), with the .cfg's
-        default."""
+        when it starts (``reconfigure``): each field of the config, in the namespace of
+        the server's own service ``name`` (its handle's), with the .cfg's default."""
         config = None
         for made in (call.type, cls.type if cls is not None else None):
             canonical = made.get_canonical() if made is not None else None
@@ -762,13 +761,14 @@ class CallFinder:
         unknown = [("?", None, None)] if found[1] else []
         for parameter, kind, default in [*found[0], *unknown]:
             full = join_name(head, parameter)
-            for access in ("read", "write"):
-                self.calls.append(PrimitiveCall(
-                    kind=access, name=full, type=kind, conditions=conditions,
-                    location=location, has_default=access == "read",
-                    default=default if access == "read" else None,
-                    handle_namespace=namespace, node_name=owner,
-                    made_in=self._made_in(full, namespace)))
+            # it writes them back too, the values it read (a parameter not set takes
+            # its default): no write is said, which would make every parameter "set by
+            # the node" and undecide the conditions over it (amcl's use_map_topic)
+            self.calls.append(PrimitiveCall(
+                kind="read", name=full, type=kind, conditions=conditions,
+                location=location, has_default=True, default=default,
+                handle_namespace=namespace, node_name=owner,
+                made_in=self._made_in(full, namespace)))
 
     def _made_in(self, name: str, namespace: str | None) -> str | None:
         """The USR of the constructor being walked when ``name`` (or the handle's
