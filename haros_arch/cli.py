@@ -147,6 +147,16 @@ def _parser() -> argparse.ArgumentParser:
     defs.add_argument("-o", "--output", default="interfaces",
                       help="write OUTPUT/<distro>.json (default: ./interfaces)")
 
+    metas = models_sub.add_parser(
+        "metapackages", help="read the metapackages of the pinned trees of the models' "
+        "lists and write the table of what each brings")
+    metas.add_argument("lists", nargs="*", help="the lists (default: the shipped "
+                       "sources.yaml and interfaces.yaml)")
+    metas.add_argument("--sources", default="sources",
+                       help="folder holding each entry's tree (default: ./sources)")
+    metas.add_argument("-o", "--output", default="metapackages.json",
+                       help="the table to write (default: ./metapackages.json)")
+
     diff = sub.add_parser("diff", help="what a change does to the architecture: two saved "
                           "models, or two git revisions (--rev BASE..HEAD)")
     diff.add_argument("sides", nargs="*", metavar="OLD NEW | PATH",
@@ -605,6 +615,8 @@ def cmd_models(args: argparse.Namespace, out: Console, err: Console) -> int:
 
     if args.models_command == "interfaces":
         return _models_interfaces(args, out, err)
+    if args.models_command == "metapackages":
+        return _models_metapackages(args, out, err)
 
     try:
         entries = generate.read_list(args.list)
@@ -640,6 +652,25 @@ def _models_interfaces(args: argparse.Namespace, out: Console, err: Console) -> 
         distro = os.path.basename(path)[: -len(".json")]
         count = len(documents[distro]["definitions"])  # type: ignore[arg-type]
         out.print(f"wrote {escape(path)}: {count} definitions", highlight=False)
+    return EXIT_OK
+
+
+def _models_metapackages(args: argparse.Namespace, out: Console, err: Console) -> int:
+    from .models import generate, metapackages
+
+    try:
+        entries = [e for path in (args.lists or metapackages.LISTS)
+                   for e in generate.read_list(path)]
+    except generate.ListError as error:
+        err.print(f"haros-arch: {escape(str(error))}", highlight=False)
+        return EXIT_USAGE
+    table = metapackages.collect(entries, args.sources)
+    metapackages.write(table, args.output)
+    found = table["metapackages"]
+    assert isinstance(found, dict)
+    for distro, metas in found.items():
+        out.print(f"{distro}: {len(metas)} metapackages", highlight=False)
+    out.print(f"wrote {escape(args.output)}", highlight=False)
     return EXIT_OK
 
 

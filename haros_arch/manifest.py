@@ -236,15 +236,26 @@ def installed_with(package: Package, packages: Iterable[Package], test: bool = F
     """The names of the packages a binary install of ``package`` brings: its run
     dependencies (``RUN_DEPEND_TAGS``; ``test_depend`` too when ``test``: rostest and
     launch_testing run with them), and theirs in turn where they are among ``packages``
-    (a metapackage of the workspace). A dependency with a ``condition`` counts as
-    declared. The dependencies of a package not among ``packages`` are not known here."""
+    (a metapackage of the workspace), and the members of an installed metapackage of
+    the shipped table (``models.metapackages``). A dependency with a ``condition`` counts
+    as declared. The dependencies of another package not among ``packages`` are not
+    known here."""
+    from .models.metapackages import members  # the installed metapackages' table
+
     known = {p.name: p for p in packages}
     tags = (RUN_DEPEND_TAGS | {"test_depend"}) if test else RUN_DEPEND_TAGS
     found = {d.name for d in package.dependencies if d.kind in tags}
     todo = list(found)
+    generation = ros_version(package)
     while todo:
-        other = known.get(todo.pop())
+        name = todo.pop()
+        other = known.get(name)
         if other is None:
+            # an installed metapackage brings its members (gazebo_ros_pkgs: gazebo_ros)
+            for member in members(name, generation):
+                if member not in found:
+                    found.add(member)
+                    todo.append(member)
             continue
         for dep in other.dependencies:
             if dep.kind in RUN_DEPEND_TAGS and dep.name not in found:

@@ -171,3 +171,80 @@ def test_ros1_a_nodelet_uses_the_package_its_class_is_found_in(write_tree):
     })
     model = analyse(load(str(root / "project.yaml")), {"PATH": ""})
     assert findings(model) == [("cam/launch/cam.launch", 3, "image_proc")]
+
+
+def test_an_installed_metapackage_brings_its_members(tmp_path):
+    # linorobot2_gazebo exec_depends on gazebo_ros_pkgs (ROS 2) and uses gazebo_ros; a
+    # ROS 1 package depending on navigation gets amcl. The table is the shipped one
+    from haros_arch.manifest import installed_with, parse_manifest
+    from haros_arch.model.location import Location
+
+    def package(name, *deps, build_type=""):
+        path = tmp_path / name / "package.xml"
+        path.parent.mkdir()
+        path.write_text(manifest(name, *deps, build_type=build_type))
+        found, problems = parse_manifest(str(path), Location(file=str(path)), name, {})
+        assert found is not None and not problems
+        return found
+
+    gazebo = package("gz_robot", ("exec_depend", "gazebo_ros_pkgs"), build_type="ament_cmake")
+    assert {"gazebo_ros", "gazebo_plugins"} <= installed_with(gazebo, [gazebo])
+    nav = package("nav_robot", ("exec_depend", "navigation"))
+    assert {"amcl", "move_base", "map_server"} <= installed_with(nav, [nav])
+    plain = package("plain_robot", ("exec_depend", "rviz"))
+    assert installed_with(plain, [plain]) == {"rviz"}
+
+
+def test_models_metapackages_reads_the_pinned_trees(tmp_path, capsys):
+    import yaml
+
+    from haros_arch.cli import main
+    from haros_arch.models.generate import folder_of
+
+    commit = "b" * 40
+    tree = tmp_path / "sources" / folder_of("github:someone/stack", commit)
+    ros1 = tree / "stack"  # ROS 1: the export says so
+    ros1.mkdir(parents=True)
+    (ros1 / "package.xml").write_text(manifest("stack", ("run_depend", "one"), (
+        "run_depend", "two")).replace("</package>", "<export><metapackage/></export></package>"))
+    ros2 = tree / "stack2"  # ROS 2: nothing but its manifest, build file and papers
+    ros2.mkdir()
+    (ros2 / "package.xml").write_text(manifest("stack2", ("exec_depend", "three"),
+                                               build_type="ament_cmake"))
+    (ros2 / "CMakeLists.txt").write_text("project(stack2)\n")
+    (ros2 / "README.md").write_text("a stack\n")
+    code = tree / "one"  # a package with code is no metapackage
+    (code / "src").mkdir(parents=True)
+    (code / "package.xml").write_text(manifest("one", ("exec_depend", "two")))
+    listing = tmp_path / "list.yaml"
+    listing.write_text(yaml.safe_dump([{"repository": "github:someone/stack",
+                                        "commit": commit, "distro": "noetic",
+                                        "packages": ["stack"]}]))
+    out = tmp_path / "meta.json"
+    assert main(["models", "metapackages", str(listing), "--sources",
+                 str(tmp_path / "sources"), "-o", str(out)]) == 0
+    table = json.loads(out.read_text())
+    assert table["metapackages"] == {"noetic": {"stack": ["one", "two"],
+                                                "stack2": ["three"]}}
+    assert table["sources"] == [{"repository": "github:someone/stack", "commit": commit,
+                                 "distro": "noetic"}]
+    assert "noetic: 2 metapackages" in capsys.readouterr().out
+
+
+def test_the_shipped_metapackage_table_comes_from_the_pinned_lists():
+    import yaml
+
+    from haros_arch.models import metapackages
+
+    pinned = set()
+    for path in metapackages.LISTS:
+        with open(path, encoding="utf-8") as handle:
+            for entry in yaml.safe_load(handle):
+                pinned.add((entry["repository"], entry["commit"], entry["distro"]))
+                pinned.update((w["repository"], w["commit"], entry["distro"])
+                              for w in entry.get("with") or ())
+    with open(metapackages.TABLE, encoding="utf-8") as handle:
+        table = json.load(handle)
+    assert table["sources"] and all(
+        (s["repository"], s["commit"], s["distro"]) in pinned for s in table["sources"])
+    assert "gazebo_ros" in table["metapackages"]["noetic"]["gazebo_ros_pkgs"]
