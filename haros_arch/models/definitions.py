@@ -36,7 +36,7 @@ class MissingTree(ValueError):
     """A pinned tree is not in the sources folder (``scripts/models-fetch`` puts it)."""
 
 
-def _packages(tree: str) -> dict[str, str]:
+def package_folders(tree: str) -> dict[str, str]:
     """The package folders of a tree by package name (each ``package.xml``'s name)."""
     found: dict[str, str] = {}
     for here, dirs, files in os.walk(tree):
@@ -75,7 +75,7 @@ def collect(entries: Iterable[Entry], sources: str) -> dict[str, dict[str, objec
             raise MissingTree(f"{entry.repository} {entry.commit[:12]}: no tree at {tree}")
         document = documents.setdefault(entry.distro, {
             "format": FORMAT, "distro": entry.distro, "sources": [], "definitions": {}})
-        packages = _packages(tree)
+        packages = package_folders(tree)
         missing = [p for p in entry.packages if p not in packages]
         if missing:
             raise MissingTree(f"{entry.repository} {entry.commit[:12]}: no package "

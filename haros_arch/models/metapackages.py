@@ -24,6 +24,8 @@ from typing import TYPE_CHECKING
 
 from lxml import etree
 
+from ..manifest import RUN_DEPEND_TAGS, xml_parser
+
 if TYPE_CHECKING:
     from .generate import Entry
 
@@ -32,7 +34,6 @@ TABLE = os.path.join(HERE, "metapackages.json")
 LISTS = (os.path.join(HERE, "sources.yaml"), os.path.join(HERE, "interfaces.yaml"),
          os.path.join(HERE, "metapackages.yaml"))
 FORMAT = 1
-RUN_TAGS = ("exec_depend", "run_depend", "depend")
 DISTROS = {1: "noetic", 2: "jazzy"}  # the distribution of each ROS generation's table
 
 
@@ -54,8 +55,7 @@ def _only_manifest(folder: str) -> bool:
 def _metapackage(path: str) -> tuple[str, list[str]] | None:
     """(name, run dependencies) of a metapackage's package.xml; None for a package."""
     try:
-        parser = etree.XMLParser(resolve_entities=False, no_network=True, huge_tree=False)
-        root = etree.parse(path, parser).getroot()
+        root = etree.parse(path, xml_parser()).getroot()
     except (OSError, etree.XMLSyntaxError):
         return None
     export = root.find("export")
@@ -66,13 +66,14 @@ def _metapackage(path: str) -> tuple[str, list[str]] | None:
     ):
         return None
     name = (root.findtext("name") or "").strip()
-    members = sorted({(e.text or "").strip() for tag in RUN_TAGS for e in root.iter(tag)}
-                     - {""})
+    members = sorted({(e.text or "").strip() for tag in RUN_DEPEND_TAGS
+                      for e in root.iter(tag)} - {""})
     return (name, members) if name else None
 
 
 def collect(entries: Iterable[Entry], sources: str) -> dict[str, object]:
     """The table: per distribution, each metapackage of the trees and its members."""
+    from .definitions import package_folders
     from .generate import folder_of
 
     table: dict[str, dict[str, list[str]]] = {}
@@ -87,11 +88,8 @@ def collect(entries: Iterable[Entry], sources: str) -> dict[str, object]:
             if not os.path.isdir(tree):
                 continue
             found = False
-            for here, dirs, files in os.walk(tree):
-                dirs[:] = sorted(d for d in dirs if not d.startswith("."))
-                if "package.xml" not in files:
-                    continue
-                meta = _metapackage(os.path.join(here, "package.xml"))
+            for folder in package_folders(tree).values():
+                meta = _metapackage(os.path.join(folder, "package.xml"))
                 if meta is not None:
                     table.setdefault(entry.distro, {})[meta[0]] = meta[1]
                     found = True

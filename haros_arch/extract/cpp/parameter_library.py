@@ -245,13 +245,16 @@ def _keys(key: str, scope: list[str], every: dict[str, Parameter]) -> list[str]:
         plain.pop()
 
 
-def _c_string(text: str) -> str:
-    return text.replace("\\", "\\\\").replace('"', '\\"').replace("\n", "\\n")
+def annotation(text: str) -> str:
+    """The attribute that carries ``text`` on a synthesised class (read back from the
+    parse as an ``ANNOTATE_ATTR`` child: ``listener_parameters``, ``reconfigure``)."""
+    escaped = text.replace("\\", "\\\\").replace('"', '\\"').replace("\n", "\\n")
+    return f'__attribute__((annotate("{escaped}")))'
 
 
 def render(target: Target, namespace: str, tree: dict[str, Any], source: str) -> str:
     """The header ``generate_parameter_library`` would write, declarations only."""
-    notes = [f'__attribute__((annotate("{_c_string(text)}")))' for text in (
+    notes = [annotation(text) for text in (
         _LISTENER_MARK, *(_MARK + json.dumps(entry, default=str)  # a YAML date: text
                          for entry in declared(tree)))]
     lines = [f"// {target.project}/{target.name}.hpp, as generate_parameter_library writes "

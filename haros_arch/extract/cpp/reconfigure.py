@@ -35,6 +35,7 @@ from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
 from ...files import read_text
 from ...model.location import Location
+from .parameter_library import annotation
 
 _MARK = "haros_arch.reconfigure "  # the annotation of one parameter
 _CONFIG_MARK = "haros_arch.reconfigure_config"
@@ -174,10 +175,6 @@ def configs(folder: str, package: str) -> tuple[dict[str, Config], list[Diagnost
     return found, problems
 
 
-def _c_string(text: str) -> str:
-    return text.replace("\\", "\\\\").replace('"', '\\"').replace("\n", "\\n")
-
-
 def _constant(kind: str, value: Any) -> str | None:
     if kind == "str_t":
         return None  # no static string constant in a class body
@@ -195,7 +192,7 @@ def render(config: Config, source: str) -> str:
     entries = [_MARK + json.dumps([name, TYPES[kind][1], default], default=str)
                for name, kind, default in config.parameters]
     marks = [_CONFIG_MARK, *([_PARTIAL_MARK] if config.partial else []), *entries]
-    notes = " ".join(f'__attribute__((annotate("{_c_string(m)}")))' for m in marks)
+    notes = " ".join(annotation(m) for m in marks)
     fields = [f"  {TYPES[kind][0]} {name};" for name, kind, _ in config.parameters]
     constants = []
     for name, kind, value in config.constants:

@@ -720,10 +720,8 @@ class CallFinder:
                 if spec.name_suffix is not None:  # beside it, in the remote node's name
                     full = name.removesuffix(spec.name_suffix) + sibling
                 else:
-                    # in the namespace of the call's name (``~image_raw``: ``~``)
-                    head = name.rpartition("/")[0] if "/" in name else (
-                        "~" if name.startswith("~") else "")
-                    full = sibling if sibling.startswith("/") else join_name(head, sibling)
+                    full = sibling if sibling.startswith("/") else join_name(
+                        _name_namespace(name), sibling)
                 # beside a server on a handle given (dynamic_reconfigure's topics): in the
                 # same handle's namespace, filled from the call sites as the server is
                 # and a camera's camera_info, in the image topic's namespace, on its handle
@@ -756,7 +754,7 @@ class CallFinder:
         found = reconfigure.parameters(config)
         if found is None:
             return
-        head = name.rpartition("/")[0] if "/" in name else ("~" if name.startswith("~") else "")
+        head = _name_namespace(name)
         # a partial config: its parameters named at run time are some under the namespace
         unknown = [("?", None, None)] if found[1] else []
         for parameter, kind, default in [*found[0], *unknown]:
@@ -1156,3 +1154,9 @@ def _unknown_operands(expr: Cursor, scope: Scope, depth: int = 0) -> list[Cursor
             found += _unknown_operands(operand, scope, depth + 1) or [operand]
     return found
 
+
+def _name_namespace(name: str) -> str:
+    """The namespace of a call's name, as written (``~image_raw``: ``~``): where the
+    names beside it go (a server's topics, a camera's camera_info, a reconfigure
+    server's parameters)."""
+    return name.rpartition("/")[0] if "/" in name else ("~" if name.startswith("~") else "")
