@@ -45,6 +45,9 @@ class Workspace:
     # (``plugins.classes.named_words``: each executable linking a library asks them
     # again), read once per run
     named_words: dict[str, frozenset[str]] = field(default_factory=dict, repr=False)
+    # (package name, folder) -> its CMake interpreter and diagnostics
+    # (``cmake._interpret``): a package whose libraries others link is read once
+    interpreted: dict[tuple[str, str], object] = field(default_factory=dict, repr=False)
 
     def relpath(self, path: str) -> str:
         """A path relative to the workspace root when inside it, else absolute (asked
@@ -68,6 +71,7 @@ class Workspace:
         state = dict(self.__dict__)
         state["_relpaths"] = {}  # not sent to worker processes
         state["named_words"] = {}
+        state["interpreted"] = {}
         return state
 
     def package_of(self, path: str) -> Package | None:

@@ -51,6 +51,46 @@ def interpret(package: Package, workspace: Workspace) -> tuple[Interpreter, list
 
 def _interpret(package: Package, workspace: Workspace,
                files: PackageFiles) -> tuple[Interpreter, list[Diagnostic]]:
+    """The package's interpreter, run once per run (``Workspace.interpreted``: a package
+    whose libraries others link is read for them too)."""
+    key = (package.name, package.root)
+    known = workspace.interpreted.get(key)
+    if known is None:
+        known = workspace.interpreted[key] = _run(package, workspace, files)
+    return known  # type: ignore[return-value]
+
+
+_BUILD_DEPENDS = ("depend", "build_depend")
+
+
+def build_depends(package: Package) -> list[str]:
+    """The package's build dependencies, as ament_cmake_auto finds and links them."""
+    return list(dict.fromkeys(d.name for d in package.dependencies
+                              if d.kind in _BUILD_DEPENDS))
+
+
+def package_libraries(name: str, workspace: Workspace
+                      ) -> tuple[list[str], list[str]] | None:
+    """What the workspace package ``name`` builds as libraries, for the targets of other
+    packages that link it: its libraries' workspace-relative sources and the packages
+    they link in turn; None when it is not a CMake package of the workspace."""
+    package = workspace.packages.get(name)
+    if package is None or package.build_type not in ("catkin", "ament_cmake", "cmake"):
+        return None
+    files = PackageFiles(package, workspace)
+    interpreter, _ = _interpret(package, workspace, files)
+    sources = SourceMap(interpreter, files, None, build_depends(package))
+    out: list[str] = []
+    linked: list[str] = []
+    for target in interpreter.targets.values():
+        if target.kind == "library":
+            out.extend(sources.own(target))
+            linked.extend(sources.packages(target))
+    return list(dict.fromkeys(out)), [p for p in dict.fromkeys(linked) if p != name]
+
+
+def _run(package: Package, workspace: Workspace,
+         files: PackageFiles) -> tuple[Interpreter, list[Diagnostic]]:
     found: list[Diagnostic] = []
 
     def reader(path: str) -> list[Invocation]:
@@ -75,7 +115,9 @@ def parse_package(package: Package, workspace: Workspace) -> tuple[list[Node], l
     """The runnable nodes a CMake-built package has, with their sources."""
     files = PackageFiles(package, workspace)
     interpreter, found = _interpret(package, workspace, files)
-    sources = SourceMap(interpreter, files)
+    found = list(found)
+    sources = SourceMap(interpreter, files, lambda name: package_libraries(name, workspace),
+                        build_depends(package))
     nodes = executables(interpreter, package, files, sources)
     nodes.extend(components(interpreter, package, files, sources))
     libraries: dict[str, plugins.Library] = {}

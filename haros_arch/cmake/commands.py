@@ -331,6 +331,7 @@ def _add_target(it: Interpreter, command: Invocation, args: list[str], kind: str
         args[0], kind, sources, conditions=it.current_conditions(), line=command.line,
         column=command.column, file=command.file)
     if command.name.lower().startswith("ament_auto_add_"):
+        target.auto = True
         # ament_cmake_auto links the package's earlier ament_auto libraries unless told
         # not to (image_pipeline's image_publisher_node runs the library's ImagePublisher)
         if "NO_TARGET_LINK_LIBRARIES" not in rest:
@@ -342,7 +343,7 @@ def _add_target(it: Interpreter, command: Invocation, args: list[str], kind: str
 # commands of CMake itself and of the ROS build tools that make no runnable program
 # (tests, messages): an unknown command is looked at only when it is none of these
 IGNORED = frozenset({
-    "project", "cmake_minimum_required", "find_package", "include_directories",
+    "project", "cmake_minimum_required", "include_directories",
     "link_directories", "add_definitions", "add_compile_options", "add_dependencies",
     "target_include_directories", "target_compile_options", "target_compile_definitions",
     "target_compile_features", "catkin_package", "ament_package", "message",
@@ -400,11 +401,55 @@ def _target_sources(it: Interpreter, command: Invocation, args: list[str]) -> No
         target.sources.extend(it.path(a) for a in args[1:] if a not in keywords)
 
 
+# what ``find_package(pkg)`` leaves in ``pkg_LIBRARIES`` (and catkin in
+# ``catkin_LIBRARIES`` for each of its components): a mark that names the package,
+# which a target that links it records (``Target.packages``); a generator expression's
+# form, which every other use of a source or target name leaves alone
+PACKAGE_MARK = "$<HAROS_PACKAGE:{}>"
+_PACKAGE_MARK = re.compile(r"\$<HAROS_PACKAGE:([^>]+)>")
+_LINK_KEYWORDS = frozenset({"PUBLIC", "PRIVATE", "INTERFACE", "SYSTEM", "LINK_PUBLIC",
+                            "LINK_PRIVATE", "LINK_INTERFACE_LIBRARIES", "debug",
+                            "optimized", "general"})
+_PACKAGE_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
+
+
+@handles("find_package")
+def _find_package(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    if not args or not _PACKAGE_NAME.fullmatch(args[0]):
+        return
+    if args[0] == "catkin":
+        components: list[str] = []
+        taking = False
+        for arg in args[1:]:
+            if arg in ("COMPONENTS", "OPTIONAL_COMPONENTS"):
+                taking = True
+            elif arg.isupper():
+                taking = False  # REQUIRED, QUIET, CONFIG, ...
+            elif taking and _PACKAGE_NAME.fullmatch(arg):
+                components.append(arg)
+        it.set("catkin_LIBRARIES", ";".join(PACKAGE_MARK.format(c) for c in components))
+        return
+    for variable in (f"{args[0]}_LIBRARIES", f"{args[0]}_TARGETS"):
+        if it.get(variable) is None:
+            it.set(variable, PACKAGE_MARK.format(args[0]))
+
+
 @handles("target_link_libraries", "ament_target_dependencies")
 def _target_link_libraries(it: Interpreter, command: Invocation, args: list[str]) -> None:
     target = it.targets.get(args[0]) if args else None
-    if target is not None:
-        target.links.extend(a for a in args[1:] if a in it.targets)
+    if target is None:
+        return
+    project = it.get("PROJECT_NAME")
+    for arg in args[1:]:
+        if arg in it.targets:
+            target.links.append(arg)
+            continue
+        mark = _PACKAGE_MARK.fullmatch(arg)
+        package = mark.group(1) if mark else arg.split("::", 1)[0] if "::" in arg else (
+            arg if command.name.lower() == "ament_target_dependencies" else None)
+        if (package and package != project and package not in _LINK_KEYWORDS
+                and _PACKAGE_NAME.fullmatch(package) and package not in target.packages):
+            target.packages.append(package)
 
 
 @handles("set_target_properties")

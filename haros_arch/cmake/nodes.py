@@ -10,7 +10,7 @@ from __future__ import annotations
 import os
 import re
 import stat
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable, Sequence
 
 from .. import diagnostics as diag
 from ..diagnostics import Diagnostic
@@ -62,14 +62,25 @@ def _with_extension(source: str) -> str | None:
     return next((source + ext for ext in C_SUFFIXES if os.path.isfile(source + ext)), None)
 
 
-class SourceMap:
-    """Workspace-relative C/C++ sources of targets, with package-local libraries linked in."""
+# what another package of the workspace builds as libraries, by its name: the
+# workspace-relative sources of its libraries and the packages they link in turn
+# (``cmake.package_libraries``); None when the package is not in the workspace
+Elsewhere = Callable[[str], "tuple[list[str], list[str]] | None"]
+MAX_LINKED_PACKAGES = 200  # packages followed from one target, transitively
 
-    def __init__(self, it: Interpreter, workspace: Files) -> None:
+
+class SourceMap:
+    """Workspace-relative C/C++ sources of targets, with package-local libraries linked in,
+    and the libraries of other workspace packages they link (``elsewhere``)."""
+
+    def __init__(self, it: Interpreter, workspace: Files, elsewhere: Elsewhere | None = None,
+                 build_depends: Sequence[str] = ()) -> None:
         self.targets = it.targets
         self.workspace = workspace
         self.diagnostics: list[Diagnostic] = []
         self._own: dict[str, list[str]] = {}
+        self._elsewhere = elsewhere
+        self._build_depends = list(build_depends)
 
     def own(self, target: Target, seen: frozenset[str] = frozenset()) -> list[str]:
         if target.name in self._own:
@@ -118,6 +129,45 @@ class SourceMap:
             stack.extend(self.targets[name].links)
         return list(dict.fromkeys(out))
 
+    def packages(self, target: Target) -> list[str]:
+        """The other packages ``target`` links, itself or through the package's libraries
+        it links (an ament_cmake_auto target links every build dependency)."""
+        out: list[str] = []
+        seen: set[str] = set()
+        stack = [target.name]
+        while stack:
+            name = stack.pop(0)
+            if name in seen or name not in self.targets:
+                continue
+            seen.add(name)
+            linked = self.targets[name]
+            out.extend(linked.packages)
+            if linked.auto:
+                out.extend(self._build_depends)
+            stack.extend(linked.links)
+        return list(dict.fromkeys(out))
+
+    def elsewhere(self, target: Target) -> list[str]:
+        """The sources of the libraries of other workspace packages ``target`` links,
+        and of those these link, transitively (catkin's ``catkin_LIBRARIES``, ament's
+        dependencies): move_base links costmap_2d, whose ``Costmap2DROS`` makes the
+        costmaps' calls on move_base's node."""
+        if self._elsewhere is None:
+            return []
+        out: list[str] = []
+        queue = self.packages(target)
+        seen: set[str] = set()
+        while queue and len(seen) < MAX_LINKED_PACKAGES:
+            name = queue.pop(0)
+            if name in seen:
+                continue
+            seen.add(name)
+            found = self._elsewhere(name)
+            if found is not None:
+                out.extend(found[0])
+                queue.extend(found[1])
+        return list(dict.fromkeys(out))
+
 
 def executables(it: Interpreter, package: Package, workspace: Files,
                 sources: SourceMap) -> list[Node]:
@@ -147,6 +197,28 @@ def _run(target: Target, sources: SourceMap, workspace: Files) -> list[str]:
     executable whose code loads plugins by name runs all it links: the plugins' base
     classes are named by the plugins, not by it (nav2's costmap filters)."""
     own = sources.own(target)
+    return _with_elsewhere(_run_here(target, own, sources, workspace), target, sources,
+                           workspace)
+
+
+def _with_elsewhere(kept: list[str], target: Target, sources: SourceMap,
+                    workspace: Files) -> list[str]:
+    """``kept`` and the sources of other packages' libraries that ``target`` links and
+    that kept code names: those defining a class member or free function it names,
+    transitively (``named_helpers``; never one that names nothing we can tell, nor one
+    that exports plugin or node classes: a plugin's calls reach its host through
+    ``plugins.hosts``, not by linking)."""
+    if not kept:
+        return kept
+    others = [s for s in sources.elsewhere(target) if s not in kept
+              and not exported_classes(os.path.join(workspace.root, s), workspace)]
+    if not others:
+        return kept
+    return [*kept, *named_helpers(kept, others, workspace, anonymous=False)]
+
+
+def _run_here(target: Target, own: list[str], sources: SourceMap,
+              workspace: Files) -> list[str]:
     linked = [s for s in sources.linked(target) if s not in own]
     if not linked:
         return own
@@ -168,7 +240,8 @@ def components(it: Interpreter, package: Package, workspace: Files,
     registered: set[str] = set()
     for reg in it.registrations:
         target = it.targets.get(reg.target)
-        files = narrow(sources.linked(target), reg.plugin, workspace) if target else []
+        files = _with_elsewhere(narrow(sources.linked(target), reg.plugin, workspace),
+                                target, sources, workspace) if target else []
         conditions = (target.conditions if target else ()) + tuple(
             c for c in reg.conditions if target is None or c not in target.conditions)
         where = workspace.location(reg.file, reg.line, reg.column)
@@ -187,7 +260,9 @@ def components(it: Interpreter, package: Package, workspace: Files,
                     continue
                 registered.add(plugin)
                 nodes.append(Node(package.name, plugin, "component", "cpp",
-                                  narrow(sources.linked(target), plugin, workspace),
+                                  _with_elsewhere(narrow(sources.linked(target), plugin,
+                                                         workspace), target, sources,
+                                                  workspace),
                                   conditions=target.conditions,
                                   location=workspace.location(
                                       os.path.join(workspace.root, path), line, 1)))

@@ -16,6 +16,12 @@ class Target:
     sources: list[str] = field(default_factory=list)  # absolute paths or $<...>
     output_name: str | None = None
     links: list[str] = field(default_factory=list)  # target_link_libraries
+    # other packages whose libraries it links (``nodes.package_links``): a package's
+    # ``<pkg>_LIBRARIES`` / catkin's ``catkin_LIBRARIES`` from ``find_package``,
+    # ``ament_target_dependencies``, ``pkg::target``
+    packages: list[str] = field(default_factory=list)
+    # made by ``ament_auto_add_*``: it also links every build dependency of package.xml
+    auto: bool = False
     conditions: tuple[Condition, ...] = ()
     line: int = 0
     column: int = 0

@@ -10,6 +10,7 @@ C++ goes through libclang, Python through ``ast``.
 from __future__ import annotations
 
 import os
+import re
 import time
 from collections.abc import Sequence
 from dataclasses import replace
@@ -17,6 +18,7 @@ from typing import TYPE_CHECKING
 
 from .. import diagnostics as diag
 from ..diagnostics import Diagnostic
+from ..files import read_text
 from ..model.source import Node
 from ..model.values import UNKNOWN_MARK
 from ..plugins.inherit import without_overridden
@@ -59,7 +61,8 @@ def extract_nodes(nodes: Sequence[Node], workspace: Workspace, *,
             cpp_batch.diagnostics.extend(batch.diagnostics)
         found.extend(batch.all_diagnostics())
         for node, result in zip(cpp, batch.results, strict=True):
-            found.extend(completeness(node, [*batch.diagnostics, *result.diagnostics]))
+            found.extend(completeness(node, [*batch.diagnostics, *result.diagnostics],
+                                      workspace))
     middle = time.perf_counter()
     for node in nodes:
         if node.language != "cpp":
@@ -93,10 +96,13 @@ _PARTIAL_CAUSES = {
 _PARTIAL_CODE = {"cpp": "CPP_NODE_PARTIAL", "python": "PY_NODE_PARTIAL"}
 
 
-def completeness(node: Node, found: Sequence[Diagnostic]) -> list[Diagnostic]:
+def completeness(node: Node, found: Sequence[Diagnostic],
+                 workspace: Workspace | None = None) -> list[Diagnostic]:
     """Mark ``node`` partial when the diagnostics of its sources say calls may be
     missing (``Node.mark_partial``, each reason with its file:line), unknown when it has
-    no source; the warning that says so, if any."""
+    no source; the warning that says so, if any. A class of another package built with
+    the node (``CPP_NODE_PASSED``) hides nothing when a source of the node defines its
+    constructor: a library of that package the node links (its calls are the node's)."""
     if not node.sources:
         node.completeness = "unknown"
         node.completeness_reasons = ["no source file of the node was found"]
@@ -107,7 +113,9 @@ def completeness(node: Node, found: Sequence[Diagnostic]) -> list[Diagnostic]:
     # a unit's errors are in its files and the headers they include; an unreadable
     # file counts when it is one of the node's
     causes = [d for d in found if d.code in _PARTIAL_CAUSES.get(node.language, ())
-              and (d.code != "FILE_UNREADABLE" or d.location.file in node.sources)]
+              and (d.code != "FILE_UNREADABLE" or d.location.file in node.sources)
+              and (d.code != "CPP_NODE_PASSED" or workspace is None
+                   or not _constructed_here(d, node, workspace))]
     if not causes:
         return []
     for cause in causes:
@@ -116,6 +124,20 @@ def completeness(node: Node, found: Sequence[Diagnostic]) -> list[Diagnostic]:
     first = node.completeness_reasons[0]
     return [diag.make(_PARTIAL_CODE[node.language], node.location, node=node.name,
                       count=len(causes), first=first)]
+
+
+def _constructed_here(passed: Diagnostic, node: Node, workspace: Workspace) -> bool:
+    """Whether a source of ``node`` defines the constructor of the class that
+    ``passed`` (a ``CPP_NODE_PASSED``) says the node is given to."""
+    cls = passed.message.split(" of package ", 1)[0].rsplit("::", 1)[-1].strip()
+    if not cls.isidentifier():
+        return False
+    defines = re.compile(rf"\b{cls}\s*::\s*{cls}\s*\(")
+    for source in _paths(node, workspace):
+        text, _ = read_text(source, workspace.location(source))
+        if text and defines.search(text):
+            return True
+    return False
 
 
 def _process_nodes(node: Node, rosnames: list[str]) -> None:
@@ -148,7 +170,7 @@ def extract_node(node: Node, workspace: Workspace) -> list[Diagnostic]:
         node.calls = without_overridden(node, result.calls, workspace)
         node.rosname = _rosname(node, result.rosname)
         _process_nodes(node, result.rosnames)
-        return [*result.diagnostics, *completeness(node, result.diagnostics)]
+        return [*result.diagnostics, *completeness(node, result.diagnostics, workspace)]
     if node.language == "python" and sources:
         from .python import extract_python
 

@@ -202,10 +202,12 @@ def narrow(sources: list[str], cls: str, workspace: Files) -> list[str]:
     return [s for s in sources if s in own or s in used]
 
 
-def named_helpers(own: list[str], helpers: list[str], workspace: Files) -> list[str]:
+def named_helpers(own: list[str], helpers: list[str], workspace: Files,
+                  anonymous: bool = True) -> list[str]:
     """The ``helpers`` the code of ``own`` needs: those that define a class member or a
     free function that a kept file (or a header of the workspace it includes) names,
-    transitively, and those that define neither (nothing to tell them by)."""
+    transitively, and (``anonymous``) those that define neither (nothing to tell them
+    by)."""
     words: set[str] = set()
     for source in own:
         words |= named_words(source, workspace)
@@ -214,7 +216,7 @@ def named_helpers(own: list[str], helpers: list[str], workspace: Files) -> list[
     # of its own, and does not run the library's Node (node.cc, the SLAM node's topics)
     words -= set().union(*(_local_classes(source, workspace) for source in own))
     waiting = {source: _defined(source, workspace) for source in helpers}
-    used = {source for source, defined in waiting.items() if not defined}
+    used = {source for source, defined in waiting.items() if anonymous and not defined}
     changed = True
     while changed:  # a helper a kept file names may name another
         changed = False

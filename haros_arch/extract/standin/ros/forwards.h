@@ -100,6 +100,19 @@ public:
   bool hasMember(const std::string& name) const;
   std::string toXml() const;
   std::ostream& write(std::ostream& os) const;
+protected:
+  // what subclasses set directly (costmap_2d's SuperValue::setStruct / setArray)
+  Type _type;
+  union {
+    bool asBool;
+    int asInt;
+    double asDouble;
+    struct tm* asTime;
+    std::string* asString;
+    BinaryData* asBinary;
+    ValueArray* asArray;
+    ValueStruct* asStruct;
+  } _value;
 };
 }  // namespace XmlRpc
 #endif

@@ -1,0 +1,248 @@
+"""A node that links a library of another workspace package runs that library's code:
+ROS 1's ``catkin_LIBRARIES`` (move_base links costmap_2d, whose ``Costmap2DROS`` makes
+the costmaps' calls on move_base's node), ROS 2's ``ament_target_dependencies``,
+``pkg::target`` and ament_cmake_auto's build dependencies. Only the files whose classes
+or functions its code names come along, never one that exports plugin classes."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from haros_arch import cmake
+from haros_arch.extract import extract_nodes
+from haros_arch.workspace import scan
+from tests.conftest import package_xml
+
+ROS1 = {
+    "costs/package.xml": package_xml("costs", "catkin"),
+    "costs/CMakeLists.txt": """
+        cmake_minimum_required(VERSION 3.0.2)
+        project(costs)
+        find_package(catkin REQUIRED COMPONENTS roscpp std_msgs)
+        catkin_package(LIBRARIES costs layers)
+        add_library(costs src/map_ros.cpp src/unused.cpp)
+        target_link_libraries(costs ${catkin_LIBRARIES})
+        add_library(layers plugins/layer.cpp)
+        """,
+    "costs/include/costs/map_ros.h": """
+        #include <string>
+        #include <ros/ros.h>
+        namespace costs {
+        class MapROS {
+        public:
+          explicit MapROS(const std::string& name);
+        private:
+          ros::Publisher pub_;
+          double rate_;
+        };
+        }
+        """,
+    "costs/src/map_ros.cpp": """
+        #include <costs/map_ros.h>
+        #include <std_msgs/String.h>
+        namespace costs {
+        MapROS::MapROS(const std::string& name)
+        {
+          ros::NodeHandle private_nh("~/" + name);
+          pub_ = private_nh.advertise<std_msgs::String>("costmap", 1);
+          private_nh.param("update_rate", rate_, 5.0);
+        }
+        }
+        """,
+    "costs/src/unused.cpp": """
+        #include <ros/ros.h>
+        #include <std_msgs/String.h>
+        namespace costs {
+        class Unused { public: void start(); };
+        void Unused::start()
+        {
+          ros::NodeHandle nh;
+          nh.advertise<std_msgs::String>("never", 1);
+        }
+        }
+        """,
+    "costs/plugins/layer.cpp": """
+        #include <ros/ros.h>
+        #include <std_msgs/String.h>
+        #include <pluginlib/class_list_macros.hpp>
+        namespace costs {
+        class MapROS;
+        class Layer { public: void onInitialize(); };
+        void Layer::onInitialize()
+        {
+          ros::NodeHandle nh("~");
+          nh.param("layer_only", 1.0);
+        }
+        }
+        PLUGINLIB_EXPORT_CLASS(costs::Layer, costs::Layer)
+        """,
+    "planner/package.xml": package_xml("planner", "catkin"),
+    "planner/CMakeLists.txt": """
+        cmake_minimum_required(VERSION 3.0.2)
+        project(planner)
+        find_package(catkin REQUIRED COMPONENTS roscpp costs)
+        catkin_package()
+        add_library(planner src/planner.cpp)
+        target_link_libraries(planner ${catkin_LIBRARIES})
+        add_executable(planner_node src/planner_node.cpp)
+        target_link_libraries(planner_node planner)
+        """,
+    "planner/src/planner.cpp": """
+        #include <ros/ros.h>
+        #include <costs/map_ros.h>
+        namespace planner {
+        class Planner { public: Planner(); costs::MapROS* global_; costs::MapROS* local_; };
+        Planner::Planner()
+        {
+          global_ = new costs::MapROS("global_costmap");
+          local_ = new costs::MapROS("local_costmap");
+        }
+        }
+        """,
+    "planner/src/planner_node.cpp": """
+        #include <ros/ros.h>
+        namespace planner { class Planner { public: Planner(); }; }
+        int main(int argc, char** argv)
+        {
+          ros::init(argc, argv, "planner");
+          planner::Planner p;
+          ros::spin();
+        }
+        """,
+}
+
+
+def _node(write_tree, files: dict[str, str], package: str, name: str):
+    root: Path = write_tree(files)
+    ws = scan([str(root)])
+    for each in ws.packages.values():
+        each.nodes, _ = cmake.parse_package(each, ws)
+    node = next(n for n in ws.packages[package].nodes if n.executable == name)
+    found = extract_nodes([node], ws, cache_dir=None, jobs=1)
+    return node, found
+
+
+def test_catkin_libraries_bring_the_named_files_of_another_package(write_tree) -> None:
+    node, _ = _node(write_tree, ROS1, "planner", "planner_node")
+    assert node.sources == ["planner/src/planner_node.cpp", "planner/src/planner.cpp",
+                            "costs/src/map_ros.cpp"]
+    calls = sorted((c.kind, c.name) for c in node.calls)
+    # the library's calls, with the names the node's constructions give them
+    assert ("publish", "~global_costmap/costmap") in calls
+    assert ("publish", "~local_costmap/costmap") in calls
+    assert ("read", "~global_costmap/update_rate") in calls
+    assert ("read", "~local_costmap/update_rate") in calls
+    # a file nothing names and a plugin's file stay out
+    assert not any(name in ("never", "~layer_only") for _, name in calls)
+    assert node.completeness == "complete"
+
+
+def test_a_package_the_node_does_not_link_brings_nothing(write_tree) -> None:
+    files = dict(ROS1)
+    files["planner/CMakeLists.txt"] = files["planner/CMakeLists.txt"].replace(
+        "roscpp costs", "roscpp")
+    node, _ = _node(write_tree, files, "planner", "planner_node")
+    assert node.sources == ["planner/src/planner_node.cpp", "planner/src/planner.cpp"]
+
+
+ROS2 = {
+    "vehicle_info/package.xml": package_xml("vehicle_info", "ament_cmake"),
+    "vehicle_info/CMakeLists.txt": """
+        cmake_minimum_required(VERSION 3.8)
+        project(vehicle_info)
+        find_package(ament_cmake REQUIRED)
+        find_package(rclcpp REQUIRED)
+        add_library(vehicle_info SHARED src/vehicle_info.cpp)
+        ament_target_dependencies(vehicle_info rclcpp)
+        ament_export_libraries(vehicle_info)
+        ament_package()
+        """,
+    "vehicle_info/include/vehicle_info/vehicle_info.hpp": """
+        #include "rclcpp/rclcpp.hpp"
+        namespace vehicle_info {
+        class VehicleInfoUtils {
+        public:
+          explicit VehicleInfoUtils(rclcpp::Node & node);
+          double wheel_radius;
+        };
+        }
+        """,
+    "vehicle_info/src/vehicle_info.cpp": """
+        #include "vehicle_info/vehicle_info.hpp"
+        namespace vehicle_info {
+        VehicleInfoUtils::VehicleInfoUtils(rclcpp::Node & node)
+        {
+          wheel_radius = node.declare_parameter<double>("wheel_radius");
+        }
+        }
+        """,
+    "controller/package.xml": package_xml("controller", "ament_cmake"),
+    "controller/CMakeLists.txt": """
+        cmake_minimum_required(VERSION 3.8)
+        project(controller)
+        find_package(ament_cmake REQUIRED)
+        find_package(rclcpp REQUIRED)
+        find_package(vehicle_info REQUIRED)
+        add_executable(controller src/controller.cpp)
+        ament_target_dependencies(controller rclcpp vehicle_info)
+        ament_package()
+        """,
+    "controller/src/controller.cpp": """
+        #include "rclcpp/rclcpp.hpp"
+        #include "vehicle_info/vehicle_info.hpp"
+        class Controller : public rclcpp::Node {
+        public:
+          Controller() : rclcpp::Node("controller") {
+            vehicle_info::VehicleInfoUtils info(*this);
+            declare_parameter<double>("gain", 1.0);
+          }
+        };
+        int main(int argc, char ** argv)
+        {
+          rclcpp::init(argc, argv);
+          rclcpp::spin(std::make_shared<Controller>());
+        }
+        """,
+}
+
+
+def test_ament_dependencies_bring_the_constructor_given_the_node(write_tree) -> None:
+    node, _ = _node(write_tree, ROS2, "controller", "controller")
+    assert "vehicle_info/src/vehicle_info.cpp" in node.sources
+    assert sorted(c.name for c in node.calls if c.kind == "declare") == [
+        "gain", "wheel_radius"]
+    # the class given the node is read with it: nothing hidden, the node complete
+    assert node.completeness == "complete", node.completeness_reasons
+
+
+def test_without_the_library_the_node_given_away_is_partial(write_tree) -> None:
+    files = dict(ROS2)
+    files["controller/CMakeLists.txt"] = files["controller/CMakeLists.txt"].replace(
+        "rclcpp vehicle_info)", "rclcpp)")
+    node, found = _node(write_tree, files, "controller", "controller")
+    assert "vehicle_info/src/vehicle_info.cpp" not in node.sources
+    assert any(d.code == "CPP_NODE_PASSED" for d in found)
+    assert node.completeness == "partial"
+
+
+def test_find_package_and_link_forms_name_packages(write_tree) -> None:
+    root: Path = write_tree({
+        "p/package.xml": package_xml("p", "ament_cmake"),
+        "p/CMakeLists.txt": """
+            cmake_minimum_required(VERSION 3.8)
+            project(p)
+            find_package(catkin REQUIRED COMPONENTS a b OPTIONAL_COMPONENTS c)
+            find_package(d REQUIRED)
+            add_library(lib src/x.cpp)
+            add_executable(one src/x.cpp)
+            target_link_libraries(one PRIVATE lib ${catkin_LIBRARIES} ${d_LIBRARIES} e::core)
+            add_executable(two src/x.cpp)
+            ament_target_dependencies(two f SYSTEM g)
+            """,
+        "p/src/x.cpp": "int main() {}\n",
+    })
+    ws = scan([str(root)])
+    targets = {t.name: t for t in cmake.targets_of(ws.packages["p"], ws)[0]}
+    assert targets["one"].links == ["lib"]
+    assert targets["one"].packages == ["a", "b", "c", "d", "e"]
+    assert targets["two"].packages == ["f", "g"]
