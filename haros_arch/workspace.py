@@ -45,6 +45,9 @@ class Workspace:
     # (``plugins.classes.named_words``: each executable linking a library asks them
     # again), read once per run
     named_words: dict[str, frozenset[str]] = field(default_factory=dict, repr=False)
+    # what the build-file stage reads off a file, by kind and path
+    # (``plugins.classes.remembered``), once per run
+    file_facts: dict[tuple[str, str], object] = field(default_factory=dict, repr=False)
     # (package name, folder) -> its CMake interpreter and diagnostics
     # (``cmake._interpret``): a package whose libraries others link is read once
     interpreted: dict[tuple[str, str], object] = field(default_factory=dict, repr=False)
@@ -72,6 +75,7 @@ class Workspace:
         state["_relpaths"] = {}  # not sent to worker processes
         state["named_words"] = {}
         state["interpreted"] = {}
+        state["file_facts"] = {}
         return state
 
     def package_of(self, path: str) -> Package | None:

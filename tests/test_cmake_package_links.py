@@ -246,3 +246,111 @@ def test_find_package_and_link_forms_name_packages(write_tree) -> None:
     assert targets["one"].links == ["lib"]
     assert targets["one"].packages == ["a", "b", "c", "d", "e"]
     assert targets["two"].packages == ["f", "g"]
+
+
+NODES = {
+    "util/package.xml": package_xml("util", "ament_cmake"),
+    "util/CMakeLists.txt": """
+        cmake_minimum_required(VERSION 3.8)
+        project(util)
+        find_package(rclcpp_lifecycle REQUIRED)
+        add_library(util_core SHARED src/lifecycle_node.cpp src/costmap_ros.cpp
+                    src/publisher.cpp)
+        ament_export_targets(util_core)
+        ament_package()
+        """,
+    "util/include/util/lifecycle_node.hpp": """
+        #include "rclcpp_lifecycle/lifecycle_node.hpp"
+        namespace util {
+        class LifecycleNode : public rclcpp_lifecycle::LifecycleNode {
+        public:
+          explicit LifecycleNode(const std::string & name);
+        };
+        }
+        """,
+    "util/src/lifecycle_node.cpp": """
+        #include "util/lifecycle_node.hpp"
+        namespace util {
+        LifecycleNode::LifecycleNode(const std::string & name)
+        : rclcpp_lifecycle::LifecycleNode(name)
+        {
+          declare_parameter("bond_heartbeat_period", 0.1);
+        }
+        }
+        """,
+    "util/include/util/costmap_ros.hpp": """
+        #include "util/lifecycle_node.hpp"
+        #include "util/publisher.hpp"
+        namespace util {
+        class CostmapROS : public util::LifecycleNode {
+        public:
+          explicit CostmapROS(const std::string & name);
+          CostmapPublisher * publisher_;
+        };
+        }
+        """,
+    "util/src/costmap_ros.cpp": """
+        #include "util/costmap_ros.hpp"
+        namespace util {
+        CostmapROS::CostmapROS(const std::string & name)
+        : util::LifecycleNode(name)
+        {
+          declare_parameter("resolution", 0.05);
+          publisher_ = new CostmapPublisher(this);
+        }
+        }
+        """,
+    "util/include/util/publisher.hpp": """
+        #include "rclcpp_lifecycle/lifecycle_node.hpp"
+        namespace util {
+        class CostmapPublisher {
+        public:
+          explicit CostmapPublisher(rclcpp_lifecycle::LifecycleNode * node);
+        };
+        }
+        """,
+    "util/src/publisher.cpp": """
+        #include "util/publisher.hpp"
+        #include "std_msgs/msg/string.hpp"
+        namespace util {
+        CostmapPublisher::CostmapPublisher(rclcpp_lifecycle::LifecycleNode * node)
+        {
+          node->create_publisher<std_msgs::msg::String>("costmap", 1);
+        }
+        }
+        """,
+    "server/package.xml": package_xml("server", "ament_cmake"),
+    "server/CMakeLists.txt": """
+        cmake_minimum_required(VERSION 3.8)
+        project(server)
+        find_package(util REQUIRED)
+        add_executable(server src/server.cpp)
+        target_link_libraries(server util::util_core)
+        ament_package()
+        """,
+    "server/src/server.cpp": """
+        #include "util/lifecycle_node.hpp"
+        #include "util/costmap_ros.hpp"
+        class Server : public util::LifecycleNode {
+        public:
+          Server() : util::LifecycleNode("server") {
+            costmap_ = std::make_shared<util::CostmapROS>("global_costmap");
+          }
+          std::shared_ptr<util::CostmapROS> costmap_;
+        };
+        int main(int argc, char ** argv)
+        {
+          rclcpp::init(argc, argv);
+          rclcpp::spin(std::make_shared<Server>()->get_node_base_interface());
+        }
+        """,
+}
+
+
+def test_a_linked_class_that_is_a_node_of_its_own_stays_out(write_tree) -> None:
+    node, _ = _node(write_tree, NODES, "server", "server")
+    # the node's own base class runs on it; the costmap node (and what only it names)
+    # makes its calls on itself: its host's business, not this node's
+    assert node.sources == ["server/src/server.cpp", "util/src/lifecycle_node.cpp"]
+    assert [c.name for c in node.calls if c.kind == "declare"] == ["bond_heartbeat_period"]
+    assert "costmap" not in {c.name for c in node.calls}

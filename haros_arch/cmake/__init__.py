@@ -16,6 +16,7 @@ from .. import plugins, pysetup
 from ..diagnostics import Diagnostic
 from ..files import read_text
 from ..model.source import Node, Package, Plugin
+from ..plugins.classes import remembered
 from ..workspace import Workspace
 from .interpreter import Interpreter
 from .lexer import CMakeSyntaxError, Invocation, tokenize
@@ -74,6 +75,12 @@ def package_libraries(name: str, workspace: Workspace
     """What the workspace package ``name`` builds as libraries, for the targets of other
     packages that link it: its libraries' workspace-relative sources and the packages
     they link in turn; None when it is not a CMake package of the workspace."""
+    return remembered("libraries", name, workspace,
+                      lambda: _package_libraries(name, workspace))
+
+
+def _package_libraries(name: str, workspace: Workspace
+                       ) -> tuple[list[str], list[str]] | None:
     package = workspace.packages.get(name)
     if package is None or package.build_type not in ("catkin", "ament_cmake", "cmake"):
         return None

@@ -19,7 +19,13 @@ from ..model.conditions import Condition
 from ..model.location import Location
 from ..model.source import Node, Package
 from ..plugins import Files, narrow
-from ..plugins.classes import exported_classes, named_helpers, named_words
+from ..plugins.classes import (
+    derives_from,
+    exported_classes,
+    named_helpers,
+    named_words,
+    node_classes,
+)
 from ..workspace import Workspace
 from .commands import C_SUFFIXES
 from .interpreter import BINARY_ROOT, Interpreter
@@ -41,6 +47,7 @@ class PackageFiles:
         self._relative: dict[str, str] = {}
         # the words of each source (``classes.named_words``), kept by the workspace
         self.named_words = workspace.named_words
+        self.file_facts = workspace.file_facts  # ``classes.remembered``
 
     def relpath(self, path: str) -> str:
         rel = self._relative.get(path)
@@ -210,8 +217,13 @@ def _with_elsewhere(kept: list[str], target: Target, sources: SourceMap,
     ``plugins.hosts``, not by linking)."""
     if not kept:
         return kept
+    # nor a class that is a node of its own, which makes its calls on that node, not on
+    # this one (nav2's Costmap2DROS in the planner server: its host makes it an
+    # instance), unless it is this node's own base class (nav2_util's LifecycleNode)
     others = [s for s in sources.elsewhere(target) if s not in kept
-              and not exported_classes(os.path.join(workspace.root, s), workspace)]
+              and not exported_classes(os.path.join(workspace.root, s), workspace)
+              and all(derives_from(cls, kept, workspace)
+                      for cls in node_classes(s, workspace))]
     if not others:
         return kept
     return [*kept, *named_helpers(kept, others, workspace, anonymous=False)]

@@ -15,9 +15,9 @@ from __future__ import annotations
 
 import os
 import re
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
-from typing import Protocol
+from typing import Any, Protocol, TypeVar
 
 from lxml import etree
 
@@ -37,6 +37,9 @@ _EXPORT = re.compile(
 _EXPORT_MARKS = ("PLUGINLIB_", "RCLCPP_COMPONENTS_", "MAVROS_PLUGIN_REGISTER",
                  "CLASS_LOADER_REGISTER_CLASS")
 MAX_NAME_SCAN = 200_000  # characters of a source searched for a plugin node's name
+
+
+T = TypeVar("T")
 
 
 class Files(Protocol):
@@ -145,8 +148,25 @@ def _read_description(path: str, workspace: Files,
         return None
 
 
+def remembered(kind: str, source: str, workspace: Files, compute: Callable[[], T]) -> T:
+    """What ``compute`` says of a file, asked once per run where the workspace keeps
+    such facts (``Workspace.file_facts``: every executable linking a library, and every
+    package linking another's, asks them again)."""
+    memo: dict[tuple[str, str], Any] | None = getattr(workspace, "file_facts", None)
+    if memo is None:
+        return compute()
+    key = (kind, source)
+    if key not in memo:
+        memo[key] = compute()
+    return memo[key]
+
+
 def exported_classes(path: str, workspace: Files) -> list[tuple[str, int]]:
     """Classes a C++ file exports with a pluginlib or rclcpp_components macro, with lines."""
+    return remembered("exported", path, workspace, lambda: _exported(path, workspace))
+
+
+def _exported(path: str, workspace: Files) -> list[tuple[str, int]]:
     text, _ = read_text(path, workspace.location(path))
     if not text or not any(mark in text for mark in _EXPORT_MARKS):
         return []
@@ -279,12 +299,44 @@ def _local_classes(source: str, workspace: Files) -> set[str]:
 
 def _defined(source: str, workspace: Files) -> set[str]:
     """The classes whose members a source file defines, and its free functions."""
+    return remembered("defined", source, workspace, lambda: _read_defined(source, workspace))
+
+
+def _read_defined(source: str, workspace: Files) -> set[str]:
     path = os.path.join(workspace.root, source)
     text, _ = read_text(path, workspace.location(path))
     text = text or ""
     functions = {name for name, rest in _FUNCTION.findall(text)
                  if not rest.rstrip().endswith(";")} - _NOT_FUNCTIONS
     return {match.group(1) for match in _MEMBER.finditer(text)} | functions
+
+
+# ``class Name : public ns::Node`` / ``LifecycleNode`` (first base): a class that is a
+# ROS 2 node of its own
+_NODE_CLASS = re.compile(r"^[ \t]*class\s+(?:\w+\s+)?([A-Za-z_]\w*)\s*(?:final\s*)?:"
+                         r"\s*(?:public|protected|private)?\s*[\w:]*\b(?:Lifecycle)?Node\b",
+                         re.MULTILINE)
+
+
+def node_classes(source: str, workspace: Files) -> set[str]:
+    """The classes a source file defines members of that are ROS 2 nodes themselves (a
+    subclass of ``rclcpp::Node``, a lifecycle node, a workspace's node base class), as
+    its headers declare them: nav2_costmap_2d's ``Costmap2DROS``, a node of its own
+    that the planner and controller servers make."""
+    def compute() -> set[str]:
+        declared = set().union(*(_NODE_CLASS.findall(text)
+                                 for text in with_headers(source, workspace)))
+        return declared & _defined(source, workspace) if declared else set()
+
+    return remembered("node classes", source, workspace, compute)
+
+
+def derives_from(cls: str, sources: Iterable[str], workspace: Files) -> bool:
+    """Whether a class of ``sources`` (or of the headers they include) names ``cls`` as
+    a base: the node's own base class (nav2's servers are ``nav2_util::LifecycleNode``s)."""
+    base = re.compile(rf"(?:public|protected|private)\s+(?:virtual\s+)?[\w:]*\b{cls}\b")
+    return any(base.search(text) for source in sources
+               for text in with_headers(source, workspace))
 
 
 def named_words(source: str, workspace: Files) -> frozenset[str]:
