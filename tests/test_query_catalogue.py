@@ -246,6 +246,24 @@ def test_a_list_value_keeps_every_element_in_the_message():
     assert "-0.3, -0.1, 0.1, -0.3" in finding.message
 
 
+def test_a_node_that_also_reads_the_value_as_it_is_set_is_no_mismatch():
+    # costmap_2d reads its footprint list as an XmlRpcValue; its dynamic_reconfigure
+    # server's string "footprint" keeps its default, which costmap_2d ignores
+    def doc(untyped: str | None) -> dict:
+        return {"parameters": [{"name": "/mb/costmap/footprint", "type": "list",
+                                "value": [[-0.5, -0.3], [0.5, 0.3]], "writers": ["<launch>"]}],
+                "links": [{"kind": "read", "node": "/mb", "name": "/mb/costmap/footprint",
+                           "type": "str", "location": {"file": "c/src/ros.cpp", "line": 3}},
+                          {"kind": "read", "node": "/mb", "name": "/mb/costmap/footprint",
+                           "type": untyped, "location": {"file": "c/src/fp.cpp", "line": 9}}]}
+
+    assert run_rule(RULES["parameter-type-mismatch"], configuration(doc(None))) == []
+    assert run_rule(RULES["parameter-type-mismatch"], configuration(doc("list"))) == []
+    # no read takes the list: both are reported
+    found = run_rule(RULES["parameter-type-mismatch"], configuration(doc("int")))
+    assert sorted(f.message.rsplit(" ", 1)[-1] for f in found) == ["int", "str"]
+
+
 UNDECIDED_IDS = [i for i in IDS if "undecided" in yaml.safe_load(
     (CASES / f"{i}.yaml").read_text())]
 

@@ -86,14 +86,14 @@ def _package_libraries(name: str, workspace: Workspace
         return None
     files = PackageFiles(package, workspace)
     interpreter, _ = _interpret(package, workspace, files)
-    sources = SourceMap(interpreter, files, None, build_depends(package))
+    sources = SourceMap(interpreter, files, None, build_depends(package), package.name)
     out: list[str] = []
     linked: list[str] = []
     for target in interpreter.targets.values():
         if target.kind == "library":
             out.extend(sources.own(target))
             linked.extend(sources.packages(target))
-    return list(dict.fromkeys(out)), [p for p in dict.fromkeys(linked) if p != name]
+    return list(dict.fromkeys(out)), list(dict.fromkeys(linked))
 
 
 def _run(package: Package, workspace: Workspace,
@@ -124,7 +124,7 @@ def parse_package(package: Package, workspace: Workspace) -> tuple[list[Node], l
     interpreter, found = _interpret(package, workspace, files)
     found = list(found)
     sources = SourceMap(interpreter, files, lambda name: package_libraries(name, workspace),
-                        build_depends(package))
+                        build_depends(package), package.name)
     nodes = executables(interpreter, package, files, sources)
     nodes.extend(components(interpreter, package, files, sources))
     libraries: dict[str, plugins.Library] = {}

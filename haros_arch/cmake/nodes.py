@@ -81,13 +81,14 @@ class SourceMap:
     and the libraries of other workspace packages they link (``elsewhere``)."""
 
     def __init__(self, it: Interpreter, workspace: Files, elsewhere: Elsewhere | None = None,
-                 build_depends: Sequence[str] = ()) -> None:
+                 build_depends: Sequence[str] = (), package: str = "") -> None:
         self.targets = it.targets
         self.workspace = workspace
         self.diagnostics: list[Diagnostic] = []
         self._own: dict[str, list[str]] = {}
         self._elsewhere = elsewhere
         self._build_depends = list(build_depends)
+        self._package = package  # its own libraries are ``linked``'s
 
     def own(self, target: Target, seen: frozenset[str] = frozenset()) -> list[str]:
         if target.name in self._own:
@@ -152,7 +153,7 @@ class SourceMap:
             if linked.auto:
                 out.extend(self._build_depends)
             stack.extend(linked.links)
-        return list(dict.fromkeys(out))
+        return [name for name in dict.fromkeys(out) if name != self._package]
 
     def elsewhere(self, target: Target) -> list[str]:
         """The sources of the libraries of other workspace packages ``target`` links,
