@@ -145,6 +145,40 @@ def test_a_package_the_node_does_not_link_brings_nothing(write_tree) -> None:
     assert node.sources == ["planner/src/planner_node.cpp", "planner/src/planner.cpp"]
 
 
+def test_the_packages_a_linked_package_links_are_not_followed(write_tree) -> None:
+    # a package's own dependencies are its business: costs links probe, planner names
+    # probe's class, but only links costs (Autoware's planners declare a test-support
+    # package that links the test utilities)
+    files = dict(ROS1)
+    files["costs/CMakeLists.txt"] = files["costs/CMakeLists.txt"].replace(
+        "roscpp std_msgs", "roscpp std_msgs probe")
+    files["probe/package.xml"] = package_xml("probe", "catkin")
+    files["probe/CMakeLists.txt"] = """
+        cmake_minimum_required(VERSION 3.0.2)
+        project(probe)
+        find_package(catkin REQUIRED COMPONENTS roscpp)
+        catkin_package(LIBRARIES probe)
+        add_library(probe src/probe.cpp)
+        """
+    files["probe/src/probe.cpp"] = """
+        #include <ros/ros.h>
+        #include <std_msgs/String.h>
+        namespace probe {
+        class Probe { public: void run(); };
+        void Probe::run()
+        {
+          ros::NodeHandle nh;
+          nh.advertise<std_msgs::String>("probe", 1);
+        }
+        }
+        """
+    files["planner/src/planner.cpp"] = files["planner/src/planner.cpp"].replace(
+        "namespace planner {", "namespace probe { class Probe; }\nnamespace planner {")
+    node, _ = _node(write_tree, files, "planner", "planner_node")
+    assert "probe/src/probe.cpp" not in node.sources
+    assert "costs/src/map_ros.cpp" in node.sources
+
+
 ROS2 = {
     "vehicle_info/package.xml": package_xml("vehicle_info", "ament_cmake"),
     "vehicle_info/CMakeLists.txt": """

@@ -70,30 +70,23 @@ def build_depends(package: Package) -> list[str]:
                               if d.kind in _BUILD_DEPENDS))
 
 
-def package_libraries(name: str, workspace: Workspace
-                      ) -> tuple[list[str], list[str]] | None:
-    """What the workspace package ``name`` builds as libraries, for the targets of other
-    packages that link it: its libraries' workspace-relative sources and the packages
-    they link in turn; None when it is not a CMake package of the workspace."""
+def package_libraries(name: str, workspace: Workspace) -> list[str] | None:
+    """The workspace-relative sources of the libraries the workspace package ``name``
+    builds, for the targets of other packages that link it; None when it is not a
+    CMake package of the workspace."""
     return remembered("libraries", name, workspace,
                       lambda: _package_libraries(name, workspace))
 
 
-def _package_libraries(name: str, workspace: Workspace
-                       ) -> tuple[list[str], list[str]] | None:
+def _package_libraries(name: str, workspace: Workspace) -> list[str] | None:
     package = workspace.packages.get(name)
     if package is None or package.build_type not in ("catkin", "ament_cmake", "cmake"):
         return None
     files = PackageFiles(package, workspace)
     interpreter, _ = _interpret(package, workspace, files)
-    sources = SourceMap(interpreter, files, None, build_depends(package), package.name)
-    out: list[str] = []
-    linked: list[str] = []
-    for target in interpreter.targets.values():
-        if target.kind == "library":
-            out.extend(sources.own(target))
-            linked.extend(sources.packages(target))
-    return list(dict.fromkeys(out)), list(dict.fromkeys(linked))
+    sources = SourceMap(interpreter, files)
+    return list(dict.fromkeys(source for target in interpreter.targets.values()
+                              if target.kind == "library" for source in sources.own(target)))
 
 
 def _run(package: Package, workspace: Workspace,

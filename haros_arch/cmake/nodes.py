@@ -70,10 +70,9 @@ def _with_extension(source: str) -> str | None:
 
 
 # what another package of the workspace builds as libraries, by its name: the
-# workspace-relative sources of its libraries and the packages they link in turn
-# (``cmake.package_libraries``); None when the package is not in the workspace
-Elsewhere = Callable[[str], "tuple[list[str], list[str]] | None"]
-MAX_LINKED_PACKAGES = 200  # packages followed from one target, transitively
+# workspace-relative sources of its libraries (``cmake.package_libraries``); None when
+# the package is not in the workspace
+Elsewhere = Callable[[str], "list[str] | None"]
 
 
 class SourceMap:
@@ -156,24 +155,17 @@ class SourceMap:
         return [name for name in dict.fromkeys(out) if name != self._package]
 
     def elsewhere(self, target: Target) -> list[str]:
-        """The sources of the libraries of other workspace packages ``target`` links,
-        and of those these link, transitively (catkin's ``catkin_LIBRARIES``, ament's
-        dependencies): move_base links costmap_2d, whose ``Costmap2DROS`` makes the
-        costmaps' calls on move_base's node."""
+        """The sources of the libraries of the other workspace packages ``target``
+        links (catkin's ``catkin_LIBRARIES``, ament's dependencies): move_base links
+        costmap_2d, whose ``Costmap2DROS`` makes the costmaps' calls on move_base's
+        node. Not those of the packages they link in turn: a package's dependencies
+        are its own business (a test-support package an Autoware planner declares as
+        a dependency links the test utilities, whose publishers are no node's)."""
         if self._elsewhere is None:
             return []
         out: list[str] = []
-        queue = self.packages(target)
-        seen: set[str] = set()
-        while queue and len(seen) < MAX_LINKED_PACKAGES:
-            name = queue.pop(0)
-            if name in seen:
-                continue
-            seen.add(name)
-            found = self._elsewhere(name)
-            if found is not None:
-                out.extend(found[0])
-                queue.extend(found[1])
+        for name in self.packages(target):
+            out.extend(self._elsewhere(name) or ())
         return list(dict.fromkeys(out))
 
 

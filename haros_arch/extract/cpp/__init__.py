@@ -29,7 +29,7 @@ from ...model.source import PrimitiveCall
 from ...workspace import Workspace
 from . import cache, links, recall, synthesis, toolchain
 from . import compile_commands as commands
-from .headers import ROS1_UNIT, STANDIN, IncludeSetup
+from .headers import STANDIN, IncludeSetup
 from .owners import node_names
 from .visitor import WORDS, CallFinder
 
@@ -637,7 +637,7 @@ def _parse(path: str, text: str, setup: IncludeSetup, workspace: Workspace,
     if not ros2 and not setup.system_headers:
         # ROS 1 (Boost before 1.73): roscpp's headers bring boost::bind's _1, _2 into the
         # global namespace; ROS 2 code has std::placeholders there instead
-        args = [*args, "-include", ROS1_PLACEHOLDERS, f"-D{ROS1_UNIT}"]
+        args = [*args, "-include", ROS1_PLACEHOLDERS]
     tu: TranslationUnit | None = None
     for _attempt in range(2):
         tu = _parse_once(path, args, unsaved, workspace, result)

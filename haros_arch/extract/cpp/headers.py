@@ -70,7 +70,6 @@ from .compile_commands import UnitFlags
 STANDIN = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "standin")
 STD_STANDIN = os.path.join(STANDIN, "std")  # the C and C++ standard library stand-in
 PRELUDE = os.path.join(STANDIN, "haros_prelude.h")  # what is precompiled
-ROS1_UNIT = "HAROS_ROS1_UNIT"  # defined when a unit is ROS 1 code
 # stand-ins for the headers of packages a workspace usually has installed, not as sources
 # (ros2_control's controller_interface, hardware_interface): read only where the workspace
 # has no header by that name, so its real headers are never shadowed
@@ -150,12 +149,6 @@ _ROS_PREFIXES = ("ros/", "boost/", "tf/", "rclcpp", "rmw/", "tf2", "image_transp
                  "message_filters/", "actionlib/", "nodelet/", "pluginlib/")
 _LIBRARY_UMBRELLAS = frozenset({"opencv2/opencv.hpp", "cv_bridge/cv_bridge.h", "Eigen/Dense",
                                 QT})
-# library headers whose API takes messages, and the message headers they include for
-# them (tf2_geometry_msgs: ROS 1 ``.h``, ROS 2 ``.hpp``)
-_BRINGS = (("tf2_geometry_msgs/", "geometry_msgs", (
-    "TransformStamped", "PoseStamped", "PointStamped", "Vector3Stamped", "QuaternionStamped",
-    "PoseWithCovarianceStamped", "WrenchStamped", "Pose", "Point", "Vector3", "Quaternion",
-    "Transform")),)
 _LIBRARY_HEADERS = ("sensor_msgs/image_encodings.", "sensor_msgs/point_cloud2_iterator.",
                     "sensor_msgs/distortion_models.")
 
@@ -402,14 +395,8 @@ class IncludeSetup:
                     self._empty(header, where)
                 else:
                     self._handled.add(header)
-                    brought = "".join(f"#include <{m}>\n"
-                                      for m in self._messages_brought(header, where))
-                    if brought and header.endswith(".h"):
-                        # ROS 1's messages, not in ROS 2 code that includes the
-                        # deprecated ``.h``
-                        brought = f"#ifdef {ROS1_UNIT}\n{brought}#endif\n"
                     self._write(header, f"// haros_arch: stands in for {header}\n"
-                                        f"#include <{umbrella}>\n{brought}")
+                                        f"#include <{umbrella}>\n")
                     if umbrella in _LIBRARY_UMBRELLAS:
                         self._scan_standin(os.path.join(STANDIN, umbrella))
             return None
@@ -439,25 +426,6 @@ class IncludeSetup:
         if found is None and not self._parameter_header(header, where):
             self._empty(header, where)
         return found
-
-    def _messages_brought(self, header: str, where: Location) -> list[str]:
-        """The message headers a library header includes for the types of its API, made
-        ready (tf2_geometry_msgs converts geometry_msgs' stamped types: code that includes
-        it names ``geometry_msgs::TransformStamped`` without including its header)."""
-        ros1 = header.endswith(".h")
-        out: list[str] = []
-        for prefix, package, names in _BRINGS:
-            if not header.startswith(prefix):
-                continue
-            for name in names:
-                snake = re.sub(r"(?<!^)(?=[A-Z])", "_", name).lower()
-                message = f"{package}/{name}.h" if ros1 else f"{package}/msg/{snake}.hpp"
-                if ros1:
-                    self._prepare(message, "", False, where)
-                else:
-                    self._ros2_interface(message, package, "msg", snake, where)
-                out.append(message)
-        return out
 
     def _reconfigure(self, header: str, package: str, name: str, where: Location) -> bool:
         """Synthesise the ``<Name>Config.h`` a ``cfg/<file>.cfg`` of the package makes
