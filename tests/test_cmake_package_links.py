@@ -137,6 +137,32 @@ def test_catkin_libraries_bring_the_named_files_of_another_package(write_tree) -
     assert node.completeness == "complete"
 
 
+def test_a_member_initialiser_names_no_function(write_tree) -> None:
+    # ``: map_(map)`` from the first column is no free function ``map_``: the planner's
+    # own member of that name does not bring the checker's file
+    files = dict(ROS1)
+    files["costs/CMakeLists.txt"] = files["costs/CMakeLists.txt"].replace(
+        "src/unused.cpp", "src/unused.cpp src/checker.cpp")
+    files["costs/src/checker.cpp"] = """
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+namespace costs {
+class Checker { public: explicit Checker(int * map); int * map_; };
+Checker::Checker(int * map)
+: map_(map)
+{
+  ros::NodeHandle nh;
+  nh.advertise<std_msgs::String>("checked", 1);
+}
+}
+"""
+    files["planner/src/planner.cpp"] = files["planner/src/planner.cpp"].replace(
+        "costs::MapROS* local_; };", "costs::MapROS* local_; int * map_; };")
+    node, _ = _node(write_tree, files, "planner", "planner_node")
+    assert "costs/src/checker.cpp" not in node.sources
+    assert "costs/src/map_ros.cpp" in node.sources
+
+
 def test_a_package_the_node_does_not_link_brings_nothing(write_tree) -> None:
     files = dict(ROS1)
     files["planner/CMakeLists.txt"] = files["planner/CMakeLists.txt"].replace(

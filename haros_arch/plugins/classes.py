@@ -275,8 +275,9 @@ MAX_NAMED_HEADERS = 64  # per file: the headers of the workspace read for the na
 
 # ``Type name(`` starting in the first column, its line not ending with ``;``: a free
 # function defined (Autoware's behavior_path_planner builds its test_utils.cpp into the
-# node's library: its test publishers are no call of the node)
-_FUNCTION = re.compile(r"^(?![ \t#])[\w:<>,&* \t]*?(?<![:\w])([a-z_]\w*)\s*\(([^\n]*)$",
+# node's library: its test publishers are no call of the node); not a line of a
+# constructor's member initialisers written from the first column (``: costmap_(c),``)
+_FUNCTION = re.compile(r"^(?![ \t#:,])[\w:<>,&* \t]*?(?<![:\w])([a-z_]\w*)\s*\(([^\n]*)$",
                        re.MULTILINE)
 _NOT_FUNCTIONS = frozenset({"if", "for", "while", "switch", "return", "sizeof", "namespace",
                             "using", "typedef", "template", "class", "struct", "enum"})
