@@ -205,6 +205,37 @@ def test_the_packages_a_linked_package_links_are_not_followed(write_tree) -> Non
     assert "costs/src/map_ros.cpp" in node.sources
 
 
+def test_what_one_linked_package_names_brings_nothing_of_another(write_tree) -> None:
+    # planner links costs and testkit; costs' kept file names testkit's function, the
+    # planner's code does not (Autoware's route handler and its test utilities)
+    files = dict(ROS1)
+    files["planner/CMakeLists.txt"] = files["planner/CMakeLists.txt"].replace(
+        "roscpp costs", "roscpp costs testkit")
+    files["testkit/package.xml"] = package_xml("testkit", "catkin")
+    files["testkit/CMakeLists.txt"] = """
+        cmake_minimum_required(VERSION 3.0.2)
+        project(testkit)
+        find_package(catkin REQUIRED COMPONENTS roscpp)
+        catkin_package(LIBRARIES testkit)
+        add_library(testkit src/fake.cpp)
+        """
+    files["testkit/src/fake.cpp"] = """
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+namespace testkit {
+void publish_fake_map(ros::NodeHandle & nh)
+{
+  nh.advertise<std_msgs::String>("fake_map", 1);
+}
+}
+"""
+    files["costs/src/map_ros.cpp"] = files["costs/src/map_ros.cpp"].replace(
+        "namespace costs {", "// see testkit::publish_fake_map for tests\n        namespace costs {")
+    node, _ = _node(write_tree, files, "planner", "planner_node")
+    assert "costs/src/map_ros.cpp" in node.sources
+    assert "testkit/src/fake.cpp" not in node.sources
+
+
 ROS2 = {
     "vehicle_info/package.xml": package_xml("vehicle_info", "ament_cmake"),
     "vehicle_info/CMakeLists.txt": """

@@ -20,8 +20,10 @@ from ..model.location import Location
 from ..model.source import Node, Package
 from ..plugins import Files, narrow
 from ..plugins.classes import (
+    code_words,
     derives_from,
     exported_classes,
+    named_closure,
     named_helpers,
     named_words,
     node_classes,
@@ -154,19 +156,18 @@ class SourceMap:
             stack.extend(linked.links)
         return [name for name in dict.fromkeys(out) if name != self._package]
 
-    def elsewhere(self, target: Target) -> list[str]:
-        """The sources of the libraries of the other workspace packages ``target``
-        links (catkin's ``catkin_LIBRARIES``, ament's dependencies): move_base links
-        costmap_2d, whose ``Costmap2DROS`` makes the costmaps' calls on move_base's
-        node. Not those of the packages they link in turn: a package's dependencies
-        are its own business (a test-support package an Autoware planner declares as
-        a dependency links the test utilities, whose publishers are no node's)."""
+    def elsewhere(self, target: Target) -> list[list[str]]:
+        """The sources of the libraries of each other workspace package ``target``
+        links (catkin's ``catkin_LIBRARIES``, ament's dependencies), a list per
+        package: move_base links costmap_2d, whose ``Costmap2DROS`` makes the costmaps'
+        calls on move_base's node. Not those of the packages they link in turn: a
+        package's dependencies are its own business (a test-support package an
+        Autoware planner declares as a dependency links the test utilities, whose
+        publishers are no node's)."""
         if self._elsewhere is None:
             return []
-        out: list[str] = []
-        for name in self.packages(target):
-            out.extend(self._elsewhere(name) or ())
-        return list(dict.fromkeys(out))
+        found = (self._elsewhere(name) for name in self.packages(target))
+        return [group for group in found if group]
 
 
 def executables(it: Interpreter, package: Package, workspace: Files,
@@ -204,22 +205,26 @@ def _run(target: Target, sources: SourceMap, workspace: Files) -> list[str]:
 def _with_elsewhere(kept: list[str], target: Target, sources: SourceMap,
                     workspace: Files) -> list[str]:
     """``kept`` and the sources of other packages' libraries that ``target`` links and
-    that kept code names: those defining a class member or free function it names,
-    transitively (``named_helpers``; never one that names nothing we can tell, nor one
-    that exports plugin or node classes: a plugin's calls reach its host through
-    ``plugins.hosts``, not by linking)."""
+    that kept code names: those defining a class member or free function it names, and
+    those that these name in their own package (``classes.named_closure``; what one
+    package's helper names does not bring another package's: Autoware's route handler
+    names test utilities its package links). Never one that names nothing we can tell,
+    nor one that exports plugin or node classes (a plugin's calls reach its host
+    through ``plugins.hosts``, not by linking), nor a class that is a node of its own,
+    which makes its calls on that node (nav2's Costmap2DROS in the planner server: its
+    host makes it an instance) unless it is this node's own base class (nav2_util's
+    LifecycleNode)."""
     if not kept:
         return kept
-    # nor a class that is a node of its own, which makes its calls on that node, not on
-    # this one (nav2's Costmap2DROS in the planner server: its host makes it an
-    # instance), unless it is this node's own base class (nav2_util's LifecycleNode)
-    others = [s for s in sources.elsewhere(target) if s not in kept
-              and not exported_classes(os.path.join(workspace.root, s), workspace)
-              and all(derives_from(cls, kept, workspace)
-                      for cls in node_classes(s, workspace))]
-    if not others:
-        return kept
-    return [*kept, *named_helpers(kept, others, workspace, anonymous=False)]
+    words = code_words(kept, workspace)
+    found: list[str] = []
+    for group in sources.elsewhere(target):
+        others = [s for s in group if s not in kept
+                  and not exported_classes(os.path.join(workspace.root, s), workspace)
+                  and all(derives_from(cls, kept, workspace)
+                          for cls in node_classes(s, workspace))]
+        found.extend(named_closure(words, others, workspace, anonymous=False))
+    return [*kept, *dict.fromkeys(found)]
 
 
 def _run_here(target: Target, own: list[str], sources: SourceMap,

@@ -228,13 +228,24 @@ def named_helpers(own: list[str], helpers: list[str], workspace: Files,
     free function that a kept file (or a header of the workspace it includes) names,
     transitively, and (``anonymous``) those that define neither (nothing to tell them
     by)."""
+    return named_closure(code_words(own, workspace), helpers, workspace, anonymous)
+
+
+def code_words(own: list[str], workspace: Files) -> set[str]:
+    """The words of ``own`` and of the package headers they include, less the classes
+    an own source file defines itself: those are its own, whatever a library calls the
+    same (cartographer_ros' occupancy_grid_node_main.cc defines a ``class Node`` of its
+    own, and does not run the library's Node, node.cc, the SLAM node's topics)."""
     words: set[str] = set()
     for source in own:
         words |= named_words(source, workspace)
-    # a class an own source file defines itself is its own, whatever the library calls
-    # the same: cartographer_ros' occupancy_grid_node_main.cc defines a ``class Node``
-    # of its own, and does not run the library's Node (node.cc, the SLAM node's topics)
-    words -= set().union(*(_local_classes(source, workspace) for source in own))
+    return words - set().union(*(_local_classes(source, workspace) for source in own))
+
+
+def named_closure(words: set[str], helpers: list[str], workspace: Files,
+                  anonymous: bool = True) -> list[str]:
+    """The ``helpers`` that define what ``words`` name, and what those name in turn."""
+    words = set(words)
     waiting = {source: _defined(source, workspace) for source in helpers}
     used = {source for source, defined in waiting.items() if anonymous and not defined}
     changed = True

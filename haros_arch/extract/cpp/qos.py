@@ -6,8 +6,9 @@ Understood: a depth (``10``, a constant), ``rclcpp::QoS(n)``, ``rclcpp::QoS(Keep
 profiles (``rclcpp::SensorDataQoS()``, ``SystemDefaultsQoS()``, ... and
 ``rmw_qos_profile_*``), and the setters chained on them (``.reliable()``,
 ``.best_effort()``, ``.transient_local()``, ``.durability_volatile()``, ``.keep_last(n)``,
-``.keep_all()``), also through a local variable written once. A part that cannot be
-known is left out; nothing known gives None.
+``.keep_all()``), also through a local variable written once, and the setters called
+on that variable before its use. A part that cannot be known is left out; nothing known
+gives None.
 """
 
 from __future__ import annotations
@@ -72,7 +73,7 @@ def _qos(expr: Cursor, scope: Scope, depth: int) -> QoS:
             return dict(PROFILES.get(name.removeprefix("rmw_qos_profile_"), {}))
         value = scope.variable(decl)
         if value is not None:
-            return _qos(value, scope, depth + 1)
+            return _changed(_qos(value, scope, depth + 1), decl, expr, scope, depth)
     depth_value = scope.integer(expr)
     if depth_value is not None:
         return {**PROFILES["default"], "depth": depth_value}
@@ -88,6 +89,35 @@ def _qos(expr: Cursor, scope: Scope, depth: int) -> QoS:
     if target.spelling in ("from_rmw",) and args:
         return _qos(args[0], scope, depth + 1)
     return _chained(expr, target.spelling, args, scope, depth)
+
+
+def _changed(found: QoS, decl: Cursor, at: Cursor, scope: Scope, depth: int) -> QoS:
+    """``found``, the QoS a local variable was made with, as the setters called on it
+    before ``at`` leave it (``rclcpp::QoS qos{1}; qos.transient_local();``: Autoware's
+    pointcloud map loader); a setter that may not run makes what it sets unknown."""
+    if decl.kind != CursorKind.VAR_DECL or not found:
+        return found
+    for call, maybe in scope.method_calls(decl, at):
+        method = call.spelling
+        args = written_arguments(call)
+        change: dict[str, Any]
+        if method in SETTERS:
+            change = dict(SETTERS[method])
+        elif method == "keep_last" and args:
+            count = scope.integer(args[0])
+            change = {"history": "keep_last", "depth": count}
+        elif method in ("history", "reliability", "durability", "depth"):
+            change = {method: None}  # set from a value: not read here
+        else:
+            continue
+        for field, value in change.items():
+            if maybe or value is None:
+                found.pop(field, None)
+            else:
+                found[field] = value
+        if method == "keep_all" and not maybe:
+            found.pop("depth", None)
+    return found
 
 
 def _constructed(cls: str, args: list[Cursor], scope: Scope, depth: int) -> QoS:

@@ -182,6 +182,33 @@ class Scope:
     def _write(self, decl: Cursor, value: Cursor | None) -> None:
         self.writes.setdefault(key_of(decl), []).append(value)
 
+    def method_calls(self, decl: Cursor, at: Cursor) -> list[tuple[Cursor, bool]]:
+        """The calls of a method on local variable ``decl`` in this body before ``at``
+        (``qos.transient_local();``), in order, each with whether it may not run before
+        ``at`` (in a branch, loop or lambda that ``at`` is outside of)."""
+        if self.body is None:
+            return []
+        _ = self.writes  # the regions are read with the writes
+        key, where = key_of(decl), at.extent.start.offset
+        found: list[tuple[int, Cursor, bool]] = []
+        for node in _walk(self.body):
+            if node.kind != CursorKind.CALL_EXPR:
+                continue
+            callee = next(iter(node.get_children()), None)
+            if callee is None or callee.kind != CursorKind.MEMBER_REF_EXPR:
+                continue
+            target = next((c for c in callee.get_children() if c.kind.is_expression()), None)
+            target = strip(target) if target is not None else None
+            offset = node.extent.start.offset
+            if (target is None or target.kind != CursorKind.DECL_REF_EXPR
+                    or target.referenced is None or key_of(target.referenced) != key
+                    or offset >= where):
+                continue
+            maybe = any(start <= offset <= end and not start <= where <= end
+                        for start, end in self._regions)
+            found.append((offset, node, maybe))
+        return [(node, maybe) for _offset, node, maybe in sorted(found, key=lambda f: f[0])]
+
     # -- values -----------------------------------------------------------------------
 
     def passed_to(self, decl: Cursor) -> tuple[Cursor, int] | None:
