@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 
 import pytest
 
@@ -448,8 +449,10 @@ def test_enumerators_and_constants_are_declared_as_values() -> None:
             b"std::map<vendor::Key, int> table;\n")
     names.learn([("use of undeclared identifier 'vendor'", text, text.index(b"vendor"))])
     header = names.header()
-    for value in ("FRAMING_OK", "FRAMING_BAD", "ELLIPSOIDTOGEOID"):
-        assert f"static haros_any {value};" in header or f"extern haros_any {value};" in header
+    # an enumerator's initialiser needs a constant: an enumerator, each its own value
+    assert "enum : int { FRAMING_BAD = 1 };" in header
+    assert "enum : int { FRAMING_OK = 2 };" in header
+    assert "extern haros_any ELLIPSOIDTOGEOID;" in header  # an argument: a value
     for kind in ("Kind", "Custom_Mode", "Key"):
         assert f"struct {kind} : haros_any {{" in header
     # read as a value where a class was declared (clang: a type where an expression
@@ -581,3 +584,50 @@ def test_a_c_librarys_constants_and_functions_are_values(write_tree) -> None:
     for value in ("SDL_INIT_VIDEO", "SDL_INIT_AUDIO", "SDL_GetTicks"):
         assert f"extern haros_any {value};" in header
     assert "count_" not in header and "update" not in header
+
+
+def test_vendor_constants_where_cpp_needs_a_constant() -> None:
+    """A vendor's constants in case labels (unscoped, ``Enum::VALUE``, a C library's
+    ``VND_EVENT_ALARM | VND_EVENT_CLEARED``), an array bound, an enumerator's
+    initialiser and a constexpr initialiser, on a switch over a vendor object: declared
+    permissively they were not constant expressions (``case value is not a constant
+    expression``, ``statement requires expression of integer type``), the class was
+    invalid and the publishers created in the switch were kept only by their name, the
+    node partial."""
+    result = extract("vendor_switch.cpp")
+    assert rows(result) == [("publish", "state", "std_msgs/msg/String", 40),
+                            ("publish", "alarm", "std_msgs/msg/String", 53)]
+    assert "CPP_PARSE_ERROR" not in codes(result)
+    assert "CPP_ERROR_NEAR_CALL" not in codes(result)
+    assert "CPP_CALL_UNRESOLVED" not in codes(result)
+    assert "CPP_NAMES_DECLARED" in codes(result)
+
+
+def test_constants_are_enumerators_of_their_own_values() -> None:
+    """Where C++ needs a constant the name is an enumerator, each with a value of its
+    own that no case label of the code writes (``case 1:`` beside ``case vendor::A:``
+    would be a duplicate case value); the same names elsewhere, and names in the other
+    positions, stay permissive objects."""
+    names = synthesis.Names()
+    text = (b"void f(int x) {\n"
+            b"  switch (x) { case 1: case 2: break; case enum_value(vendor::MODE_A): break;\n"
+            b"    case vendor::Mode::FAST | vendor::Mode::SLOW: break; }\n"
+            b"  static_assert(vendor::VERSION != 0, \"v\");\n"
+            b"  static constexpr int size = vendor::MAX_LEN + 1;\n"
+            b"  char buffer[vendor::BUF_SIZE];\n"
+            b"  int at = table[vendor::index];\n"
+            b"  g(vendor::GAIN, vendor::Mode::STOP);\n"
+            b"}\n")
+    names.learn([("use of undeclared identifier 'vendor'", text, text.index(b"vendor"))])
+    names.read_members([text])
+    header = names.header()
+    values = [int(v) for v in re.findall(r"enum : int \{ \w+ = (\d+) \};", header)]
+    assert sorted(values) == list(range(3, 3 + len(values)))  # 1 and 2 are the code's
+    for name in ("MODE_A", "VERSION", "MAX_LEN", "BUF_SIZE"):
+        assert re.search(rf"\n  enum : int {{ {name} = \d+ }};\n", header), name
+    mode = header[header.index("namespace Mode {"):]
+    assert re.match(r"namespace Mode \{\n    enum : int \{ FAST = \d+ \};\n"
+                    r"    enum : int \{ SLOW = \d+ \};\n    extern haros_any STOP;", mode)
+    for name in ("index", "GAIN", "STOP"):  # an index, arguments
+        assert f"{name} = " not in header
+    assert "extern haros_any GAIN;" in header and "extern haros_any index;" in header

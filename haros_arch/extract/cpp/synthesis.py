@@ -19,8 +19,9 @@ little and cost a parse each, so the default is one round.
 
 from __future__ import annotations
 
+import itertools
 import re
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, field
 
 from . import interfaces, msg_types
@@ -67,8 +68,9 @@ _MEMBER_TYPE = re.compile(  # ``Msg::_code_type``; ``Synthesised<T>::ConstPtr``
 _AMBIGUOUS = re.compile(r"^reference to '(\w+)' is ambiguous")
 _RECORD = re.compile(r"[a-z]\w*(?:::\w+)+")  # a message's struct: ``pkg::msg::Name``
 _AFTER_MEMBER = re.compile(rb"(?:\.|->)\s*([A-Za-z_]\w*)")
-# a value read from a scope: ``Mode::FAST)``, an enumerator of a vendor enum
-_SCOPED_VALUE = re.compile(rb"::\s*([A-Za-z_]\w*)\s*(?=[);,\]}])")
+# a value read from a scope: ``Mode::FAST)``, ``case Mode::FAST:``, an enumerator of a
+# vendor enum
+_SCOPED_VALUE = re.compile(rb"::\s*([A-Za-z_]\w*)\s*(?=[);,\]}]|:(?!:))")
 # the name written next is what an alias, a typedef or a using-declaration names
 _ALIASED = re.compile(rb"(?:\busing\s+\w+\s*=|\btypedef|\busing)\s*(?:typename\s+)?(?:::\s*)?"
                       rb"(?:[A-Za-z_]\w*\s*::\s*)*$")
@@ -78,6 +80,54 @@ def _aliased(window: bytes) -> bool:
     """Whether ``window`` ends where an alias, typedef or using-declaration names what
     follows (``_ALIASED``; a window without either word cannot match)."""
     return (b"using" in window or b"typedef" in window) and _ALIASED.search(window) is not None
+
+
+# where C++ needs a constant expression, the text before a name read as a value: a
+# case label (``case vendor::MODE_A:``, ``case enum_value(Mode::FAST):``, ``case A | B:``),
+# a ``static_assert``, a ``constexpr`` variable's initialiser, an array's bound
+# (``char buf[VND_SIZE]``) or an enumerator's initialiser (``ok = vendor::FRAMING_OK,``);
+# such a name is declared an enumerator, with a value of its own (``Names.header``)
+_CONSTANT_SPAN = 400  # bytes before a name searched for its statement
+_ENUM_SPAN = 4000  # bytes before a name searched for the brace of an enum's body
+_CASE_WORDS = re.compile(rb"\b(?:case|static_assert)\b")
+_CONSTEXPR = re.compile(rb"\bconstexpr\b")
+_ENUM_HEAD = re.compile(rb"\benum\b(?:\s+(?:class|struct)\b)?(?:\s+[A-Za-z_]\w*)?"
+                        rb"(?:\s*:\s*[\w:\s]+)?\s*$")
+# the integers the code writes in case labels: no declared constant takes one of them
+# (``case 0: ... case vendor::MODE_A:`` would be a duplicate case value)
+_CASE_LITERAL = re.compile(rb"\bcase\s*\(?\s*(\d+|0[xX][0-9a-fA-F]+)[uUlL]*\s*\)?\s*:(?!:)")
+
+
+def _constant_at(name: str, text: bytes, offset: int) -> bool:
+    """Whether the ``name`` written at ``offset`` (the start of its qualified name or
+    of its last part) is read where C++ needs a constant expression (``_CONSTANT_SPAN``
+    comments)."""
+    window = text[max(0, offset - _CONSTANT_SPAN):offset]
+    if window.rstrip().endswith(b"::"):  # the scope written before the name
+        before = _SCOPE_BEFORE.search(window)
+        if before is not None:
+            window = window[:before.start()]
+    window = window.rstrip()
+    if window.endswith(b"[") and _CONSTANT.fullmatch(name):
+        return True  # an array's bound (a name in capitals: an index is a variable)
+    statement = window[max(window.rfind(b";"), window.rfind(b"{"), window.rfind(b"}")) + 1:]
+    if _CONSTEXPR.search(statement):
+        return True
+    labels = list(_CASE_WORDS.finditer(statement))
+    if labels and b":" not in statement[labels[-1].end():].replace(b"::", b""):
+        return True  # in the label's expression, up to its colon
+    return _in_enum_body(text, offset)
+
+
+def _in_enum_body(text: bytes, offset: int) -> bool:
+    """Whether ``offset`` is in an enumerator's initialiser: after an ``=`` in the body
+    of an ``enum``, before the next enumerator."""
+    start = max(0, offset - _ENUM_SPAN)
+    brace = text.rfind(b"{", start, offset)
+    if brace < 0 or max(text.rfind(b"}", brace, offset), text.rfind(b";", brace, offset)) >= 0:
+        return False
+    enumerator = text[max(brace, text.rfind(b",", brace, offset)) + 1:offset]
+    return b"=" in enumerator and _ENUM_HEAD.search(text[max(start, brace - 200):brace]) is not None
 
 
 _ALIAS_NAME = re.compile(rb"\busing\s+([A-Za-z_]\w*)\s*=")
@@ -104,6 +154,7 @@ _OPERATORS = "template <bool C, class R> struct haros_if {};\n" \
 _PRELUDE = """\
 // haros_arch: permissive declarations of names the parse did not know
 #pragma clang system_header
+enum haros_integral : long long {};
 struct haros_any {
   template <class... A> haros_any(A &&...) {}
   template <class T> operator T &() const;
@@ -115,6 +166,7 @@ struct haros_any {
   haros_any &operator++(); haros_any &operator--();
   haros_any &operator++(int); haros_any &operator--(int);
   bool operator!() const;
+  operator haros_integral() const;
 %s};
 %s"""
 
@@ -123,7 +175,7 @@ struct haros_any {
 class _Name:
     """One unknown name (or a known namespace enclosing some) and its uses."""
 
-    uses: set[str] = field(default_factory=set)  # scope, type, template, value
+    uses: set[str] = field(default_factory=set)  # scope, type, template, value, constant
     known: bool = False  # a real namespace, reopened
     children: dict[str, _Name] = field(default_factory=dict)
 
@@ -172,6 +224,9 @@ class Names:
         self.declared = declared
         self.root = _Name(known=True)
         self.members: set[str] = set()
+        # the members read where C++ needs a constant (``case Mode::FAST:``): enumerators
+        self.constants: set[str] = set()
+        self.taken: set[int] = set()  # the integers of the case labels read (``_CASE_LITERAL``)
         # record -> the members the code uses on it: the fields of messages known only
         # by name (their synthesised struct opens a hook, ``interfaces.fields_hook``),
         # and the member types it names (``ResponseStatus::_code_type``)
@@ -203,6 +258,7 @@ class Names:
                 self._defined.update(m.decode() for m in _DEFINED.findall(text))
                 self.using.update(m.decode() for m in _USING.findall(text))
                 self.aliases.update(m.decode() for m in _ALIAS_NAME.findall(text))
+                self.taken.update(int(m, 0) for m in _CASE_LITERAL.findall(text))
         for message, text, offset in errors:
             if self.count >= MAX_NAMES:
                 break
@@ -249,11 +305,15 @@ class Names:
             if text is not None:
                 self.members.update(
                     n for n in (m.decode() for m in _AFTER_MEMBER.findall(text)) if n not in skip)
+                self.taken.update(int(m, 0) for m in _CASE_LITERAL.findall(text))
                 for found in _SCOPED_VALUE.finditer(text):  # not ``using A = ns::A;``
                     line = text[text.rfind(b"\n", 0, found.start()) + 1:found.start()]
                     name = found.group(1).decode()
                     if name not in skip and not _DECLARING.search(line):
                         self.members.add(name)
+                        if name not in self.constants and _constant_at(
+                                name, text, found.start(1)):
+                            self.constants.add(name)
 
     def _learn_one(self, message: str, text: bytes | None, offset: int) -> None:
         ambiguous = _AMBIGUOUS.match(message)
@@ -364,6 +424,10 @@ class Names:
             node = node.children[part]
             if not node.known:
                 node.uses.add("scope" if i < len(written) - 1 else last)
+        if last == "value" and not node.known and "constant" not in node.uses and (
+                _constant_at(written[-1], text, offset)):
+            node.uses.add("constant")
+            self.count += 1
 
     def _a_value(self, text: bytes, offset: int) -> None:
         """A name declared as a class and read as a value (``f(vendor::MODE_A, x)``:
@@ -408,7 +472,11 @@ class Names:
         return not node.known
 
     def header(self) -> str:
-        members = "".join(f"  static haros_any {m};\n" for m in sorted(self.members))
+        values = _values(self.taken)
+        members = "".join(f"  static haros_any {m};\n" for m in sorted(self.members)
+                          if m not in self.constants)
+        members += "".join(f"  enum : int {{ {m} = {next(values)} }};\n"
+                           for m in sorted(self.constants & self.members))
         lines = [_PRELUDE % (members, _OPERATORS)]
         lines += [f"#define {name}" for name in sorted(self.macros)]
         # static: a field reads as ``msg.f`` and a constant as ``Msg::F``, and the
@@ -420,7 +488,8 @@ class Names:
         hidden = self._found_by_using()
         for name, node in sorted(self.root.children.items()):
             if name not in hidden:
-                lines.extend(_render(name, node, "", nested=False, withdrawn=self.withdrawn))
+                lines.extend(_render(name, node, "", nested=False, values=values,
+                                     withdrawn=self.withdrawn))
         return "\n".join(lines) + "\n"
 
     def _message(self, record: str) -> bool:
@@ -481,17 +550,29 @@ def _merge(into: _Name, other: _Name) -> None:
             into.children[name] = child
 
 
-def _render(name: str, node: _Name, indent: str, nested: bool,
+def _values(taken: set[int]) -> Iterator[int]:
+    """The values of the declared constants: each its own (two case labels of one value
+    are an error), small (an enum of ``uint8_t`` takes them), none of ``taken``."""
+    return (value for value in itertools.count(1) if value not in taken)
+
+
+def _render(name: str, node: _Name, indent: str, nested: bool, values: Iterator[int],
             withdrawn: set[str] | frozenset[str] = frozenset()) -> list[str]:
     if name in withdrawn and not node.known:
         return []
     space = _is_namespace(node) and not nested
     inner: list[str] = []
     for child, sub in sorted(node.children.items()):
-        inner.extend(_render(child, sub, indent + "  ", nested=not space, withdrawn=withdrawn))
+        inner.extend(_render(child, sub, indent + "  ", nested=not space, values=values,
+                             withdrawn=withdrawn))
     if space:
         return [f"{indent}namespace {name} {{", *inner, f"{indent}}}"]
-    if node.uses == {"value"}:
+    if node.uses == {"value", "constant"} and not node.children:
+        # read where C++ needs a constant: an enumerator (an unnamed enum's, which
+        # converts to any integer and makes ``enum_value(X)``'s underlying type), that
+        # is still compared, passed and assigned as a value
+        return [f"{indent}enum : int {{ {name} = {next(values)} }};"]
+    if node.uses <= {"value", "constant"}:
         return [f"{indent}{'static ' if nested else 'extern '}haros_any {name};"]
     head = "template <class... T> " if "template" in node.uses else ""
     return [f"{indent}{head}struct {name} : haros_any {{",
