@@ -593,10 +593,11 @@ def test_vendor_constants_where_cpp_needs_a_constant() -> None:
     permissively they were not constant expressions (``case value is not a constant
     expression``, ``statement requires expression of integer type``), the class was
     invalid and the publishers created in the switch were kept only by their name, the
-    node partial."""
+    node partial. ``A | B`` beside ``C`` is no duplicate case value, and a vendor value
+    negated or or-ed into an integer is no ambiguous use."""
     result = extract("vendor_switch.cpp")
-    assert rows(result) == [("publish", "state", "std_msgs/msg/String", 40),
-                            ("publish", "alarm", "std_msgs/msg/String", 53)]
+    assert rows(result) == [("publish", "state", "std_msgs/msg/String", 41),
+                            ("publish", "alarm", "std_msgs/msg/String", 54)]
     assert "CPP_PARSE_ERROR" not in codes(result)
     assert "CPP_ERROR_NEAR_CALL" not in codes(result)
     assert "CPP_CALL_UNRESOLVED" not in codes(result)
@@ -606,28 +607,34 @@ def test_vendor_constants_where_cpp_needs_a_constant() -> None:
 def test_constants_are_enumerators_of_their_own_values() -> None:
     """Where C++ needs a constant the name is an enumerator, each with a value of its
     own that no case label of the code writes (``case 1:`` beside ``case vendor::A:``
-    would be a duplicate case value); the same names elsewhere, and names in the other
-    positions, stay permissive objects."""
+    would be a duplicate case value), and a bit of its own when an operator combines it
+    (``case A | B:`` must be no other constant's value); the same names elsewhere, and
+    names in the other positions, stay permissive objects."""
     names = synthesis.Names()
     text = (b"void f(int x) {\n"
             b"  switch (x) { case 1: case 2: break; case enum_value(vendor::MODE_A): break;\n"
             b"    case vendor::Mode::FAST | vendor::Mode::SLOW: break; }\n"
             b"  static_assert(vendor::VERSION != 0, \"v\");\n"
+            b"  static_assert(std::is_enum<T>::value, \"an enum\");\n"
             b"  static constexpr int size = vendor::MAX_LEN + 1;\n"
             b"  char buffer[vendor::BUF_SIZE];\n"
-            b"  int at = table[vendor::index];\n"
+            b"  int at = table[vendor::INDEX];\n"
             b"  g(vendor::GAIN, vendor::Mode::STOP);\n"
             b"}\n")
     names.learn([("use of undeclared identifier 'vendor'", text, text.index(b"vendor"))])
     names.read_members([text])
     header = names.header()
-    values = [int(v) for v in re.findall(r"enum : int \{ \w+ = (\d+) \};", header)]
-    assert sorted(values) == list(range(3, 3 + len(values)))  # 1 and 2 are the code's
-    for name in ("MODE_A", "VERSION", "MAX_LEN", "BUF_SIZE"):
-        assert re.search(rf"\n  enum : int {{ {name} = \d+ }};\n", header), name
-    mode = header[header.index("namespace Mode {"):]
-    assert re.match(r"namespace Mode \{\n    enum : int \{ FAST = \d+ \};\n"
-                    r"    enum : int \{ SLOW = \d+ \};\n    extern haros_any STOP;", mode)
-    for name in ("index", "GAIN", "STOP"):  # an index, arguments
-        assert f"{name} = " not in header
-    assert "extern haros_any GAIN;" in header and "extern haros_any index;" in header
+    tree = header[header.index("namespace vendor {"):]
+    values = dict(re.findall(r"enum : int \{ (\w+) = (\d+) \};", tree))
+    assert sorted(values) == ["BUF_SIZE", "FAST", "MAX_LEN", "MODE_A", "SLOW", "VERSION"]
+    every = [int(v) for v in re.findall(r"enum : int \{ \w+ = (\d+) \};", header)]
+    assert len(set(every)) == len(every) and not {1, 2} & set(every)  # 1 and 2: the code's
+    for name in ("MODE_A", "VERSION", "BUF_SIZE"):
+        assert 2 < int(values[name]) < 100
+    for name in ("MAX_LEN", "FAST", "SLOW"):  # combined by ``+`` or ``|``: bits
+        assert int(values[name]) >= 1 << 16 and int(values[name]).bit_count() == 1
+    assert re.search(r"namespace Mode \{\n    enum : int \{ FAST = \d+ \};\n"
+                     r"    enum : int \{ SLOW = \d+ \};\n    extern haros_any STOP;", tree)
+    # a subscript, arguments, and a member not in capitals (``::value``): no constants
+    assert "extern haros_any GAIN;" in tree and "extern haros_any INDEX;" in tree
+    assert "static haros_any value;" in header and "value = " not in header

@@ -21,7 +21,7 @@ from __future__ import annotations
 
 import itertools
 import re
-from collections.abc import Callable, Iterable, Iterator
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
 
 from . import interfaces, msg_types
@@ -91,6 +91,12 @@ _CONSTANT_SPAN = 400  # bytes before a name searched for its statement
 _ENUM_SPAN = 4000  # bytes before a name searched for the brace of an enum's body
 _CASE_WORDS = re.compile(rb"\b(?:case|static_assert)\b")
 _CONSTEXPR = re.compile(rb"\bconstexpr\b")
+_COMBINING = (b"|", b"&", b"^", b"+", b"-")
+# a declaration before ``[``: a type, then the declared name (``char errbuf_``,
+# ``static uint8_t buf``), not an expression (``images[``, ``msg.data[``, ``x = table[``)
+_DECLARED_ARRAY = re.compile(rb"^\s*(?:(?:static|const|constexpr|unsigned|signed|struct)\s+)*"
+                             rb"(?!(?:return|case|delete|throw|else|do|goto)\b)"
+                             rb"[A-Za-z_][\w:]*(?:\s*<[^;=()]*>)?[\s*&]+[A-Za-z_]\w*\[$")
 _ENUM_HEAD = re.compile(rb"\benum\b(?:\s+(?:class|struct)\b)?(?:\s+[A-Za-z_]\w*)?"
                         rb"(?:\s*:\s*[\w:\s]+)?\s*$")
 # the integers the code writes in case labels: no declared constant takes one of them
@@ -98,25 +104,30 @@ _ENUM_HEAD = re.compile(rb"\benum\b(?:\s+(?:class|struct)\b)?(?:\s+[A-Za-z_]\w*)
 _CASE_LITERAL = re.compile(rb"\bcase\s*\(?\s*(\d+|0[xX][0-9a-fA-F]+)[uUlL]*\s*\)?\s*:(?!:)")
 
 
-def _constant_at(name: str, text: bytes, offset: int) -> bool:
-    """Whether the ``name`` written at ``offset`` (the start of its qualified name or
-    of its last part) is read where C++ needs a constant expression (``_CONSTANT_SPAN``
-    comments)."""
+def _constant_at(name: str, text: bytes, offset: int, end: int) -> str | None:
+    """How the ``name`` written from ``offset`` (the start of its qualified name or of
+    its last part) to ``end`` is read where C++ needs a constant expression
+    (``_CONSTANT_SPAN`` comments): "flag" when an operator combines it with another
+    (``case A | B:``, ``N + 16``: the two need bits of their own, or ``A | B`` may be
+    the value of a third), "constant" else, None when it is not such a place."""
     window = text[max(0, offset - _CONSTANT_SPAN):offset]
     if window.rstrip().endswith(b"::"):  # the scope written before the name
         before = _SCOPE_BEFORE.search(window)
         if before is not None:
             window = window[:before.start()]
     window = window.rstrip()
-    if window.endswith(b"[") and _CONSTANT.fullmatch(name):
-        return True  # an array's bound (a name in capitals: an index is a variable)
+    after = text[end:end + 8].lstrip()[:2]
+    kind = "flag" if window[-1:] in _COMBINING or (
+        after[:1] in _COMBINING and after not in (b"->", b"||", b"&&")) else "constant"
     statement = window[max(window.rfind(b";"), window.rfind(b"{"), window.rfind(b"}")) + 1:]
+    if window.endswith(b"[") and _DECLARED_ARRAY.search(statement):
+        return kind  # an array's bound in its declaration (``buffer[N]`` is a subscript)
     if _CONSTEXPR.search(statement):
-        return True
+        return kind
     labels = list(_CASE_WORDS.finditer(statement))
     if labels and b":" not in statement[labels[-1].end():].replace(b"::", b""):
-        return True  # in the label's expression, up to its colon
-    return _in_enum_body(text, offset)
+        return kind  # in the label's expression, up to its colon
+    return kind if _in_enum_body(text, offset) else None
 
 
 def _in_enum_body(text: bytes, offset: int) -> bool:
@@ -150,6 +161,17 @@ _OPERATORS = "template <bool C, class R> struct haros_if {};\n" \
         f"__is_base_of(haros_any, B), {r}>::type operator{o}(const A &, const B &);\n"
         for r, ops in (("haros_any", "+ - / % | ^ & *"), ("bool", "== != < > <= >= && ||"))
         for o in ops.split())
+# compound assignments: members of the permissive class, and for an object of another
+# type given a synthesised one (``flags |= vendor::BIT``); without them the integral
+# conversion a switch needs (``operator haros_integral``) makes every built-in candidate
+# viable, and the use ambiguous
+_COMPOUND = ["+=", "-=", "*=", "/=", "%=", "|=", "&=", "^=", "<<=", ">>="]
+_COMPOUND_MEMBERS = "".join(f"  template <class A> haros_any &operator{o}(A &&);\n"
+                            for o in _COMPOUND)
+_OPERATORS += "".join(
+    f"template <class A, class B> typename haros_if<__is_base_of(haros_any, B) && "
+    f"!__is_base_of(haros_any, A), A &>::type operator{o}(A &, const B &);\n"
+    for o in _COMPOUND)
 
 _PRELUDE = """\
 // haros_arch: permissive declarations of names the parse did not know
@@ -166,7 +188,8 @@ struct haros_any {
   haros_any &operator++(); haros_any &operator--();
   haros_any &operator++(int); haros_any &operator--(int);
   bool operator!() const;
-  operator haros_integral() const;
+  haros_any operator-() const; haros_any operator+() const; haros_any operator~() const;
+%s  operator haros_integral() const;
 %s};
 %s"""
 
@@ -175,7 +198,8 @@ struct haros_any {
 class _Name:
     """One unknown name (or a known namespace enclosing some) and its uses."""
 
-    uses: set[str] = field(default_factory=set)  # scope, type, template, value, constant
+    # scope, type, template, value; constant and flag (``_constant_at``)
+    uses: set[str] = field(default_factory=set)
     known: bool = False  # a real namespace, reopened
     children: dict[str, _Name] = field(default_factory=dict)
 
@@ -226,6 +250,7 @@ class Names:
         self.members: set[str] = set()
         # the members read where C++ needs a constant (``case Mode::FAST:``): enumerators
         self.constants: set[str] = set()
+        self.flags: set[str] = set()  # those an operator combines (``_constant_at``)
         self.taken: set[int] = set()  # the integers of the case labels read (``_CASE_LITERAL``)
         # record -> the members the code uses on it: the fields of messages known only
         # by name (their synthesised struct opens a hook, ``interfaces.fields_hook``),
@@ -311,9 +336,15 @@ class Names:
                     name = found.group(1).decode()
                     if name not in skip and not _DECLARING.search(line):
                         self.members.add(name)
-                        if name not in self.constants and _constant_at(
-                                name, text, found.start(1)):
+                        # a member of every declared class: a name in capitals
+                        # only (``std::is_enum<T>::value`` in a static_assert is no
+                        # constant of a vendor's, and ``msg.value`` is assigned)
+                        kind = _constant_at(name, text, found.start(1), found.end(1)) if (
+                            _CONSTANT.fullmatch(name) or _C_VENDOR.fullmatch(name)) else None
+                        if kind is not None:
                             self.constants.add(name)
+                            if kind == "flag":
+                                self.flags.add(name)
 
     def _learn_one(self, message: str, text: bytes | None, offset: int) -> None:
         ambiguous = _AMBIGUOUS.match(message)
@@ -424,9 +455,10 @@ class Names:
             node = node.children[part]
             if not node.known:
                 node.uses.add("scope" if i < len(written) - 1 else last)
-        if last == "value" and not node.known and "constant" not in node.uses and (
-                _constant_at(written[-1], text, offset)):
-            node.uses.add("constant")
+        kind = _constant_at(written[-1], text, offset, found.end()) if (
+            last == "value" and not node.known) else None
+        if kind is not None and not {"constant", kind} <= node.uses:
+            node.uses.update(("constant", kind))
             self.count += 1
 
     def _a_value(self, text: bytes, offset: int) -> None:
@@ -472,12 +504,12 @@ class Names:
         return not node.known
 
     def header(self) -> str:
-        values = _values(self.taken)
+        values = _Values(self.taken)
         members = "".join(f"  static haros_any {m};\n" for m in sorted(self.members)
                           if m not in self.constants)
-        members += "".join(f"  enum : int {{ {m} = {next(values)} }};\n"
+        members += "".join(f"  enum : int {{ {m} = {values.next(m in self.flags)} }};\n"
                            for m in sorted(self.constants & self.members))
-        lines = [_PRELUDE % (members, _OPERATORS)]
+        lines = [_PRELUDE % (_COMPOUND_MEMBERS, members, _OPERATORS)]
         lines += [f"#define {name}" for name in sorted(self.macros)]
         # static: a field reads as ``msg.f`` and a constant as ``Msg::F``, and the
         # message stays the plain struct it was (no member to construct or copy)
@@ -550,13 +582,28 @@ def _merge(into: _Name, other: _Name) -> None:
             into.children[name] = child
 
 
-def _values(taken: set[int]) -> Iterator[int]:
+class _Values:
     """The values of the declared constants: each its own (two case labels of one value
-    are an error), small (an enum of ``uint8_t`` takes them), none of ``taken``."""
-    return (value for value in itertools.count(1) if value not in taken)
+    are an error), none that a case label of the code writes; small (an enum of
+    ``uint8_t`` takes them), but those an operator combines, which get a bit of their
+    own above the small ones (``case A | B:`` is then no other constant's value) while
+    bits last."""
+
+    FIRST_BIT, LAST_BIT = 16, 30
+
+    def __init__(self, taken: set[int]) -> None:
+        self._small = (value for value in itertools.count(1) if value not in taken)
+        self._bits = iter(range(self.FIRST_BIT, self.LAST_BIT + 1))
+
+    def next(self, flag: bool = False) -> int:
+        if flag:
+            bit = next(self._bits, None)
+            if bit is not None:
+                return 1 << bit
+        return next(self._small)
 
 
-def _render(name: str, node: _Name, indent: str, nested: bool, values: Iterator[int],
+def _render(name: str, node: _Name, indent: str, nested: bool, values: _Values,
             withdrawn: set[str] | frozenset[str] = frozenset()) -> list[str]:
     if name in withdrawn and not node.known:
         return []
@@ -567,12 +614,12 @@ def _render(name: str, node: _Name, indent: str, nested: bool, values: Iterator[
                              withdrawn=withdrawn))
     if space:
         return [f"{indent}namespace {name} {{", *inner, f"{indent}}}"]
-    if node.uses == {"value", "constant"} and not node.children:
+    if node.uses - {"flag"} == {"value", "constant"} and not node.children:
         # read where C++ needs a constant: an enumerator (an unnamed enum's, which
         # converts to any integer and makes ``enum_value(X)``'s underlying type), that
         # is still compared, passed and assigned as a value
-        return [f"{indent}enum : int {{ {name} = {next(values)} }};"]
-    if node.uses <= {"value", "constant"}:
+        return [f"{indent}enum : int {{ {name} = {values.next('flag' in node.uses)} }};"]
+    if node.uses <= {"value", "constant", "flag"}:
         return [f"{indent}{'static ' if nested else 'extern '}haros_any {name};"]
     head = "template <class... T> " if "template" in node.uses else ""
     return [f"{indent}{head}struct {name} : haros_any {{",
