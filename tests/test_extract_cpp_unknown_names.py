@@ -435,6 +435,12 @@ def test_members_and_scoped_values_are_read_from_the_text() -> None:
     # the alias declares Mode: no name of its own; its target is a type, not a value
     assert "struct Mode : haros_any {" in header and "haros_any Mode;" not in header
     assert header.count("Mode") == 1
+    # the alias reached through its namespace (mavros' ``plugin::MTYPE::FENCE``): a
+    # namespace ``app::Mode`` would clash with the alias once its target is declared
+    use = b"void g() { h(app::Mode::SLOW); }\n"
+    names.learn([("no member named 'Mode' in namespace 'app'", use, use.index(b"Mode"))])
+    header = names.header()
+    assert header.count("Mode") == 1 and "static haros_any SLOW;" in header
     # clang reports only the first unknown name of a declaration: the others written
     # with the same unknown namespace are declared from the text
     for name in ("Config", "Link", "Key", "Value"):
