@@ -626,8 +626,10 @@ def test_constants_are_enumerators_of_their_own_values() -> None:
             b"  char buffer[vendor::BUF_SIZE];\n"
             b"  int at = table[vendor::INDEX];\n"
             b"  g(vendor::GAIN, vendor::Mode::STOP);\n"
+            b"  static constexpr long seed = VND_C(0x9e37);\n"
             b"}\n")
-    names.learn([("use of undeclared identifier 'vendor'", text, text.index(b"vendor"))])
+    names.learn([("use of undeclared identifier 'vendor'", text, text.index(b"vendor")),
+                 ("use of undeclared identifier 'VND_C'", text, text.index(b"VND_C"))])
     names.read_members([text])
     header = names.header()
     tree = header[header.index("namespace vendor {"):]
@@ -644,3 +646,4 @@ def test_constants_are_enumerators_of_their_own_values() -> None:
     # a subscript, arguments, and a member not in capitals (``::value``): no constants
     assert "extern haros_any GAIN;" in tree and "extern haros_any INDEX;" in tree
     assert "static haros_any value;" in header and "value = " not in header
+    assert "extern haros_any VND_C;" in header  # called: a macro, no constant

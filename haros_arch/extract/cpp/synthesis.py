@@ -457,8 +457,11 @@ class Names:
             node = node.children[part]
             if not node.known:
                 node.uses.add("scope" if i < len(written) - 1 else last)
+        # not a name called (``UINT64_C(0x9e37)`` in a constexpr initialiser: a macro
+        # whose header is missing, a function for the parse)
         kind = _constant_at(written[-1], text, offset, found.end()) if (
-            last == "value" and not node.known) else None
+            last == "value" and not node.known
+            and text[found.end():found.end() + 16].lstrip()[:1] != b"(") else None
         if kind is not None and not {"constant", kind} <= node.uses:
             node.uses.update(("constant", kind))
             self.count += 1
