@@ -647,3 +647,10 @@ def test_constants_are_enumerators_of_their_own_values() -> None:
     assert "extern haros_any GAIN;" in tree and "extern haros_any INDEX;" in tree
     assert "static haros_any value;" in header and "value = " not in header
     assert "extern haros_any VND_C;" in header  # called: a macro, no constant
+
+
+def test_case_labels_the_code_writes_are_read_as_c_reads_them() -> None:
+    """Octal and hexadecimal labels are taken by the code; a label that is no C number
+    (``case 09:``) is left out, not a crash."""
+    text = b"switch (x) { case 010: case 0x1F: case 3u: case 09: case vendor::A: ; }"
+    assert synthesis._case_literals(text) == {8, 31, 3}

@@ -10,11 +10,14 @@ a template (``T<``), a value. ``Names.header()`` renders them over one class,
 ``haros_any``, that can be built from anything, converts to anything, and has every
 member it was asked for (static members of its own type, so ``obj.m(args)``,
 ``ptr->m`` and ``m`` as a value all parse); scopes become namespaces, or nested classes
-when the name is also a type. The header is prepended to the unit (``-include``) and the
-unit parsed again in full, and that parse is kept when it has fewer errors. With
-``MAX_ROUNDS`` above 1, parses without function bodies look for further waves of names
-first (a class made valid shows its other members); on real workspaces they changed
-little and cost a parse each, so the default is one round.
+when the name is also a type. A name read where C++ needs a constant (a case label,
+an enumerator's initialiser, ``static_assert``, a ``constexpr`` initialiser, an array's
+bound) is an enumerator instead, of a value of its own, and the permissive class
+converts to an integral enum a ``switch`` can use. The header is prepended to the unit
+(``-include``) and the unit parsed again in full, and that parse is kept when it has
+fewer errors. With ``MAX_ROUNDS`` above 1, parses without function bodies look for
+further waves of names first (a class made valid shows its other members); on real
+workspaces they changed little and cost a parse each, so the default is one round.
 """
 
 from __future__ import annotations
@@ -101,7 +104,20 @@ _ENUM_HEAD = re.compile(rb"\benum\b(?:\s+(?:class|struct)\b)?(?:\s+[A-Za-z_]\w*)
                         rb"(?:\s*:\s*[\w:\s]+)?\s*$")
 # the integers the code writes in case labels: no declared constant takes one of them
 # (``case 0: ... case vendor::MODE_A:`` would be a duplicate case value)
-_CASE_LITERAL = re.compile(rb"\bcase\s*\(?\s*(\d+|0[xX][0-9a-fA-F]+)[uUlL]*\s*\)?\s*:(?!:)")
+_CASE_LITERAL = re.compile(rb"\bcase\s*\(?\s*(0[xX][0-9a-fA-F]+|\d+)[uUlL]*\s*\)?\s*:(?!:)")
+
+
+def _case_literals(text: bytes) -> set[int]:
+    """The integers ``text`` writes in case labels (``_CASE_LITERAL``; a leading 0 is
+    octal, as in C, and a number that is none is left out)."""
+    found: set[int] = set()
+    for literal in _CASE_LITERAL.findall(text):
+        try:
+            found.add(int(literal, 16) if literal[1:2] in (b"x", b"X") else
+                      int(literal, 8) if literal.startswith(b"0") else int(literal))
+        except ValueError:  # ``case 09:``, not C
+            continue
+    return found
 
 
 def _constant_at(name: str, text: bytes, offset: int, end: int) -> str | None:
@@ -283,7 +299,7 @@ class Names:
                 self._defined.update(m.decode() for m in _DEFINED.findall(text))
                 self.using.update(m.decode() for m in _USING.findall(text))
                 self.aliases.update(m.decode() for m in _ALIAS_NAME.findall(text))
-                self.taken.update(int(m, 0) for m in _CASE_LITERAL.findall(text))
+                self.taken.update(_case_literals(text))
         for message, text, offset in errors:
             if self.count >= MAX_NAMES:
                 break
@@ -330,7 +346,7 @@ class Names:
             if text is not None:
                 self.members.update(
                     n for n in (m.decode() for m in _AFTER_MEMBER.findall(text)) if n not in skip)
-                self.taken.update(int(m, 0) for m in _CASE_LITERAL.findall(text))
+                self.taken.update(_case_literals(text))
                 for found in _SCOPED_VALUE.finditer(text):  # not ``using A = ns::A;``
                     line = text[text.rfind(b"\n", 0, found.start()) + 1:found.start()]
                     name = found.group(1).decode()
