@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 
 import pytest
 
@@ -434,6 +435,12 @@ def test_members_and_scoped_values_are_read_from_the_text() -> None:
     # the alias declares Mode: no name of its own; its target is a type, not a value
     assert "struct Mode : haros_any {" in header and "haros_any Mode;" not in header
     assert header.count("Mode") == 1
+    # the alias reached through its namespace (mavros' ``plugin::MTYPE::FENCE``): a
+    # namespace ``app::Mode`` would clash with the alias once its target is declared
+    use = b"void g() { h(app::Mode::SLOW); }\n"
+    names.learn([("no member named 'Mode' in namespace 'app'", use, use.index(b"Mode"))])
+    header = names.header()
+    assert header.count("Mode") == 1 and "static haros_any SLOW;" in header
     # clang reports only the first unknown name of a declaration: the others written
     # with the same unknown namespace are declared from the text
     for name in ("Config", "Link", "Key", "Value"):
@@ -448,8 +455,10 @@ def test_enumerators_and_constants_are_declared_as_values() -> None:
             b"std::map<vendor::Key, int> table;\n")
     names.learn([("use of undeclared identifier 'vendor'", text, text.index(b"vendor"))])
     header = names.header()
-    for value in ("FRAMING_OK", "FRAMING_BAD", "ELLIPSOIDTOGEOID"):
-        assert f"static haros_any {value};" in header or f"extern haros_any {value};" in header
+    # an enumerator's initialiser needs a constant: an enumerator, each its own value
+    assert "enum : int { FRAMING_BAD = 1 };" in header
+    assert "enum : int { FRAMING_OK = 2 };" in header
+    assert "extern haros_any ELLIPSOIDTOGEOID;" in header  # an argument: a value
     for kind in ("Kind", "Custom_Mode", "Key"):
         assert f"struct {kind} : haros_any {{" in header
     # read as a value where a class was declared (clang: a type where an expression
@@ -581,3 +590,67 @@ def test_a_c_librarys_constants_and_functions_are_values(write_tree) -> None:
     for value in ("SDL_INIT_VIDEO", "SDL_INIT_AUDIO", "SDL_GetTicks"):
         assert f"extern haros_any {value};" in header
     assert "count_" not in header and "update" not in header
+
+
+def test_vendor_constants_where_cpp_needs_a_constant() -> None:
+    """A vendor's constants in case labels (unscoped, ``Enum::VALUE``, a C library's
+    ``VND_EVENT_ALARM | VND_EVENT_CLEARED``), an array bound, an enumerator's
+    initialiser and a constexpr initialiser, on a switch over a vendor object: declared
+    permissively they were not constant expressions (``case value is not a constant
+    expression``, ``statement requires expression of integer type``), the class was
+    invalid and the publishers created in the switch were kept only by their name, the
+    node partial. ``A | B`` beside ``C`` is no duplicate case value, and a vendor value
+    negated or or-ed into an integer is no ambiguous use."""
+    result = extract("vendor_switch.cpp")
+    assert rows(result) == [("publish", "state", "std_msgs/msg/String", 41),
+                            ("publish", "alarm", "std_msgs/msg/String", 54)]
+    assert "CPP_PARSE_ERROR" not in codes(result)
+    assert "CPP_ERROR_NEAR_CALL" not in codes(result)
+    assert "CPP_CALL_UNRESOLVED" not in codes(result)
+    assert "CPP_NAMES_DECLARED" in codes(result)
+
+
+def test_constants_are_enumerators_of_their_own_values() -> None:
+    """Where C++ needs a constant the name is an enumerator, each with a value of its
+    own that no case label of the code writes (``case 1:`` beside ``case vendor::A:``
+    would be a duplicate case value), and a bit of its own when an operator combines it
+    (``case A | B:`` must be no other constant's value); the same names elsewhere, and
+    names in the other positions, stay permissive objects."""
+    names = synthesis.Names()
+    text = (b"void f(int x) {\n"
+            b"  switch (x) { case 1: case 2: break; case enum_value(vendor::MODE_A): break;\n"
+            b"    case vendor::Mode::FAST | vendor::Mode::SLOW: break; }\n"
+            b"  static_assert(vendor::VERSION != 0, \"v\");\n"
+            b"  static_assert(std::is_enum<T>::value, \"an enum\");\n"
+            b"  static constexpr int size = vendor::MAX_LEN + 1;\n"
+            b"  char buffer[vendor::BUF_SIZE];\n"
+            b"  int at = table[vendor::INDEX];\n"
+            b"  g(vendor::GAIN, vendor::Mode::STOP);\n"
+            b"  static constexpr long seed = VND_C(0x9e37);\n"
+            b"}\n")
+    names.learn([("use of undeclared identifier 'vendor'", text, text.index(b"vendor")),
+                 ("use of undeclared identifier 'VND_C'", text, text.index(b"VND_C"))])
+    names.read_members([text])
+    header = names.header()
+    tree = header[header.index("namespace vendor {"):]
+    values = dict(re.findall(r"enum : int \{ (\w+) = (\d+) \};", tree))
+    assert sorted(values) == ["BUF_SIZE", "FAST", "MAX_LEN", "MODE_A", "SLOW", "VERSION"]
+    every = [int(v) for v in re.findall(r"enum : int \{ \w+ = (\d+) \};", header)]
+    assert len(set(every)) == len(every) and not {1, 2} & set(every)  # 1 and 2: the code's
+    for name in ("MODE_A", "VERSION", "BUF_SIZE"):
+        assert 2 < int(values[name]) < 100
+    for name in ("MAX_LEN", "FAST", "SLOW"):  # combined by ``+`` or ``|``: bits
+        assert int(values[name]) >= 1 << 16 and int(values[name]).bit_count() == 1
+    assert re.search(r"namespace Mode \{\n    enum : int \{ FAST = \d+ \};\n"
+                     r"    enum : int \{ SLOW = \d+ \};\n    extern haros_any STOP;", tree)
+    # a subscript, arguments, and a member not in capitals (``::value``): no constants
+    assert "extern haros_any GAIN;" in tree and "extern haros_any INDEX;" in tree
+    assert "static haros_any value;" in header and "value = " not in header
+    assert "extern haros_any VND_C;" in header  # called: a macro, no constant
+
+
+def test_case_labels_the_code_writes_are_read_as_c_reads_them() -> None:
+    """Octal and hexadecimal labels are taken by the code; a label that is no C number
+    (``case 09:``) is left out, not a crash."""
+    text = b"switch (x) { case 010: case 0x1F: case 3u: case 09: case vendor::A: ; }"
+    assert synthesis._case_literals(text) == {8, 31, 3}

@@ -10,15 +10,19 @@ a template (``T<``), a value. ``Names.header()`` renders them over one class,
 ``haros_any``, that can be built from anything, converts to anything, and has every
 member it was asked for (static members of its own type, so ``obj.m(args)``,
 ``ptr->m`` and ``m`` as a value all parse); scopes become namespaces, or nested classes
-when the name is also a type. The header is prepended to the unit (``-include``) and the
-unit parsed again in full, and that parse is kept when it has fewer errors. With
-``MAX_ROUNDS`` above 1, parses without function bodies look for further waves of names
-first (a class made valid shows its other members); on real workspaces they changed
-little and cost a parse each, so the default is one round.
+when the name is also a type. A name read where C++ needs a constant (a case label,
+an enumerator's initialiser, ``static_assert``, a ``constexpr`` initialiser, an array's
+bound) is an enumerator instead, of a value of its own, and the permissive class
+converts to an integral enum a ``switch`` can use. The header is prepended to the unit
+(``-include``) and the unit parsed again in full, and that parse is kept when it has
+fewer errors. With ``MAX_ROUNDS`` above 1, parses without function bodies look for
+further waves of names first (a class made valid shows its other members); on real
+workspaces they changed little and cost a parse each, so the default is one round.
 """
 
 from __future__ import annotations
 
+import itertools
 import re
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
@@ -67,8 +71,9 @@ _MEMBER_TYPE = re.compile(  # ``Msg::_code_type``; ``Synthesised<T>::ConstPtr``
 _AMBIGUOUS = re.compile(r"^reference to '(\w+)' is ambiguous")
 _RECORD = re.compile(r"[a-z]\w*(?:::\w+)+")  # a message's struct: ``pkg::msg::Name``
 _AFTER_MEMBER = re.compile(rb"(?:\.|->)\s*([A-Za-z_]\w*)")
-# a value read from a scope: ``Mode::FAST)``, an enumerator of a vendor enum
-_SCOPED_VALUE = re.compile(rb"::\s*([A-Za-z_]\w*)\s*(?=[);,\]}])")
+# a value read from a scope: ``Mode::FAST)``, ``case Mode::FAST:``, an enumerator of a
+# vendor enum
+_SCOPED_VALUE = re.compile(rb"::\s*([A-Za-z_]\w*)\s*(?=[);,\]}]|:(?!:))")
 # the name written next is what an alias, a typedef or a using-declaration names
 _ALIASED = re.compile(rb"(?:\busing\s+\w+\s*=|\btypedef|\busing)\s*(?:typename\s+)?(?:::\s*)?"
                       rb"(?:[A-Za-z_]\w*\s*::\s*)*$")
@@ -78,6 +83,78 @@ def _aliased(window: bytes) -> bool:
     """Whether ``window`` ends where an alias, typedef or using-declaration names what
     follows (``_ALIASED``; a window without either word cannot match)."""
     return (b"using" in window or b"typedef" in window) and _ALIASED.search(window) is not None
+
+
+# where C++ needs a constant expression, the text before a name read as a value: a
+# case label (``case vendor::MODE_A:``, ``case enum_value(Mode::FAST):``, ``case A | B:``),
+# a ``static_assert``, a ``constexpr`` variable's initialiser, an array's bound
+# (``char buf[VND_SIZE]``) or an enumerator's initialiser (``ok = vendor::FRAMING_OK,``);
+# such a name is declared an enumerator, with a value of its own (``Names.header``)
+_CONSTANT_SPAN = 400  # bytes before a name searched for its statement
+_ENUM_SPAN = 4000  # bytes before a name searched for the brace of an enum's body
+_CASE_WORDS = re.compile(rb"\b(?:case|static_assert)\b")
+_CONSTEXPR = re.compile(rb"\bconstexpr\b")
+_COMBINING = (b"|", b"&", b"^", b"+", b"-")
+# a declaration before ``[``: a type, then the declared name (``char errbuf_``,
+# ``static uint8_t buf``), not an expression (``images[``, ``msg.data[``, ``x = table[``)
+_DECLARED_ARRAY = re.compile(rb"^\s*(?:(?:static|const|constexpr|unsigned|signed|struct)\s+)*"
+                             rb"(?!(?:return|case|delete|throw|else|do|goto)\b)"
+                             rb"[A-Za-z_][\w:]*(?:\s*<[^;=()]*>)?[\s*&]+[A-Za-z_]\w*\[$")
+_ENUM_HEAD = re.compile(rb"\benum\b(?:\s+(?:class|struct)\b)?(?:\s+[A-Za-z_]\w*)?"
+                        rb"(?:\s*:\s*[\w:\s]+)?\s*$")
+# the integers the code writes in case labels: no declared constant takes one of them
+# (``case 0: ... case vendor::MODE_A:`` would be a duplicate case value)
+_CASE_LITERAL = re.compile(rb"\bcase\s*\(?\s*(0[xX][0-9a-fA-F]+|\d+)[uUlL]*\s*\)?\s*:(?!:)")
+
+
+def _case_literals(text: bytes) -> set[int]:
+    """The integers ``text`` writes in case labels (``_CASE_LITERAL``; a leading 0 is
+    octal, as in C, and a number that is none is left out)."""
+    found: set[int] = set()
+    for literal in _CASE_LITERAL.findall(text):
+        try:
+            found.add(int(literal, 16) if literal[1:2] in (b"x", b"X") else
+                      int(literal, 8) if literal.startswith(b"0") else int(literal))
+        except ValueError:  # ``case 09:``, not C
+            continue
+    return found
+
+
+def _constant_at(name: str, text: bytes, offset: int, end: int) -> str | None:
+    """How the ``name`` written from ``offset`` (the start of its qualified name or of
+    its last part) to ``end`` is read where C++ needs a constant expression
+    (``_CONSTANT_SPAN`` comments): "flag" when an operator combines it with another
+    (``case A | B:``, ``N + 16``: the two need bits of their own, or ``A | B`` may be
+    the value of a third), "constant" else, None when it is not such a place."""
+    window = text[max(0, offset - _CONSTANT_SPAN):offset]
+    if window.rstrip().endswith(b"::"):  # the scope written before the name
+        before = _SCOPE_BEFORE.search(window)
+        if before is not None:
+            window = window[:before.start()]
+    window = window.rstrip()
+    after = text[end:end + 8].lstrip()[:2]
+    kind = "flag" if window[-1:] in _COMBINING or (
+        after[:1] in _COMBINING and after not in (b"->", b"||", b"&&")) else "constant"
+    statement = window[max(window.rfind(b";"), window.rfind(b"{"), window.rfind(b"}")) + 1:]
+    if window.endswith(b"[") and _DECLARED_ARRAY.search(statement):
+        return kind  # an array's bound in its declaration (``buffer[N]`` is a subscript)
+    if _CONSTEXPR.search(statement):
+        return kind
+    labels = list(_CASE_WORDS.finditer(statement))
+    if labels and b":" not in statement[labels[-1].end():].replace(b"::", b""):
+        return kind  # in the label's expression, up to its colon
+    return kind if _in_enum_body(text, offset) else None
+
+
+def _in_enum_body(text: bytes, offset: int) -> bool:
+    """Whether ``offset`` is in an enumerator's initialiser: after an ``=`` in the body
+    of an ``enum``, before the next enumerator."""
+    start = max(0, offset - _ENUM_SPAN)
+    brace = text.rfind(b"{", start, offset)
+    if brace < 0 or max(text.rfind(b"}", brace, offset), text.rfind(b";", brace, offset)) >= 0:
+        return False
+    enumerator = text[max(brace, text.rfind(b",", brace, offset)) + 1:offset]
+    return b"=" in enumerator and _ENUM_HEAD.search(text[max(start, brace - 200):brace]) is not None
 
 
 _ALIAS_NAME = re.compile(rb"\busing\s+([A-Za-z_]\w*)\s*=")
@@ -100,10 +177,22 @@ _OPERATORS = "template <bool C, class R> struct haros_if {};\n" \
         f"__is_base_of(haros_any, B), {r}>::type operator{o}(const A &, const B &);\n"
         for r, ops in (("haros_any", "+ - / % | ^ & *"), ("bool", "== != < > <= >= && ||"))
         for o in ops.split())
+# compound assignments: members of the permissive class, and for an object of another
+# type given a synthesised one (``flags |= vendor::BIT``); without them the integral
+# conversion a switch needs (``operator haros_integral``) makes every built-in candidate
+# viable, and the use ambiguous
+_COMPOUND = ["+=", "-=", "*=", "/=", "%=", "|=", "&=", "^=", "<<=", ">>="]
+_COMPOUND_MEMBERS = "".join(f"  template <class A> haros_any &operator{o}(A &&);\n"
+                            for o in _COMPOUND)
+_OPERATORS += "".join(
+    f"template <class A, class B> typename haros_if<__is_base_of(haros_any, B) && "
+    f"!__is_base_of(haros_any, A), A &>::type operator{o}(A &, const B &);\n"
+    for o in _COMPOUND)
 
 _PRELUDE = """\
 // haros_arch: permissive declarations of names the parse did not know
 #pragma clang system_header
+enum haros_integral : long long {};
 struct haros_any {
   template <class... A> haros_any(A &&...) {}
   template <class T> operator T &() const;
@@ -115,6 +204,8 @@ struct haros_any {
   haros_any &operator++(); haros_any &operator--();
   haros_any &operator++(int); haros_any &operator--(int);
   bool operator!() const;
+  haros_any operator-() const; haros_any operator+() const; haros_any operator~() const;
+%s  operator haros_integral() const;
 %s};
 %s"""
 
@@ -123,7 +214,8 @@ struct haros_any {
 class _Name:
     """One unknown name (or a known namespace enclosing some) and its uses."""
 
-    uses: set[str] = field(default_factory=set)  # scope, type, template, value
+    # scope, type, template, value; constant and flag (``_constant_at``)
+    uses: set[str] = field(default_factory=set)
     known: bool = False  # a real namespace, reopened
     children: dict[str, _Name] = field(default_factory=dict)
 
@@ -172,6 +264,10 @@ class Names:
         self.declared = declared
         self.root = _Name(known=True)
         self.members: set[str] = set()
+        # the members read where C++ needs a constant (``case Mode::FAST:``): enumerators
+        self.constants: set[str] = set()
+        self.flags: set[str] = set()  # those an operator combines (``_constant_at``)
+        self.taken: set[int] = set()  # the integers of the case labels read (``_CASE_LITERAL``)
         # record -> the members the code uses on it: the fields of messages known only
         # by name (their synthesised struct opens a hook, ``interfaces.fields_hook``),
         # and the member types it names (``ResponseStatus::_code_type``)
@@ -203,6 +299,7 @@ class Names:
                 self._defined.update(m.decode() for m in _DEFINED.findall(text))
                 self.using.update(m.decode() for m in _USING.findall(text))
                 self.aliases.update(m.decode() for m in _ALIAS_NAME.findall(text))
+                self.taken.update(_case_literals(text))
         for message, text, offset in errors:
             if self.count >= MAX_NAMES:
                 break
@@ -249,11 +346,21 @@ class Names:
             if text is not None:
                 self.members.update(
                     n for n in (m.decode() for m in _AFTER_MEMBER.findall(text)) if n not in skip)
+                self.taken.update(_case_literals(text))
                 for found in _SCOPED_VALUE.finditer(text):  # not ``using A = ns::A;``
                     line = text[text.rfind(b"\n", 0, found.start()) + 1:found.start()]
                     name = found.group(1).decode()
                     if name not in skip and not _DECLARING.search(line):
                         self.members.add(name)
+                        # a member of every declared class: a name in capitals
+                        # only (``std::is_enum<T>::value`` in a static_assert is no
+                        # constant of a vendor's, and ``msg.value`` is assigned)
+                        kind = _constant_at(name, text, found.start(1), found.end(1)) if (
+                            _CONSTANT.fullmatch(name) or _C_VENDOR.fullmatch(name)) else None
+                        if kind is not None:
+                            self.constants.add(name)
+                            if kind == "flag":
+                                self.flags.add(name)
 
     def _learn_one(self, message: str, text: bytes | None, offset: int) -> None:
         ambiguous = _AMBIGUOUS.match(message)
@@ -347,10 +454,12 @@ class Names:
             # (``SDL_Init(SDL_INIT_JOYSTICK | SDL_INIT_HAPTIC)``, ``SDL_GetError()``),
             # is no member: a value (a call is the value's ``operator()``)
             last = "value"
-        if not scope and written[0] in self.aliases:
+        if written[0] in self.aliases:
             # ``Mode::FAST`` where the code declares ``using Mode = vendor::Mode;``: not
             # a name of its own (it would clash with the alias), a member of what the
-            # alias names once that is declared
+            # alias names once that is declared; also reached through the namespace of
+            # the alias (mavros' ``plugin::MTYPE::FENCE``: declared a namespace there,
+            # ``using MTYPE = ...`` was a redefinition and the class that uses it invalid)
             if len(written) == 2 and written[1] not in self.members:
                 self.members.add(written[1])
             return
@@ -364,6 +473,14 @@ class Names:
             node = node.children[part]
             if not node.known:
                 node.uses.add("scope" if i < len(written) - 1 else last)
+        # not a name called (``UINT64_C(0x9e37)`` in a constexpr initialiser: a macro
+        # whose header is missing, a function for the parse)
+        kind = _constant_at(written[-1], text, offset, found.end()) if (
+            last == "value" and not node.known
+            and text[found.end():found.end() + 16].lstrip()[:1] != b"(") else None
+        if kind is not None and not {"constant", kind} <= node.uses:
+            node.uses.update(("constant", kind))
+            self.count += 1
 
     def _a_value(self, text: bytes, offset: int) -> None:
         """A name declared as a class and read as a value (``f(vendor::MODE_A, x)``:
@@ -408,8 +525,12 @@ class Names:
         return not node.known
 
     def header(self) -> str:
-        members = "".join(f"  static haros_any {m};\n" for m in sorted(self.members))
-        lines = [_PRELUDE % (members, _OPERATORS)]
+        values = _Values(self.taken)
+        members = "".join(f"  static haros_any {m};\n" for m in sorted(self.members)
+                          if m not in self.constants)
+        members += "".join(f"  enum : int {{ {m} = {values.next(m in self.flags)} }};\n"
+                           for m in sorted(self.constants & self.members))
+        lines = [_PRELUDE % (_COMPOUND_MEMBERS, members, _OPERATORS)]
         lines += [f"#define {name}" for name in sorted(self.macros)]
         # static: a field reads as ``msg.f`` and a constant as ``Msg::F``, and the
         # message stays the plain struct it was (no member to construct or copy)
@@ -420,7 +541,8 @@ class Names:
         hidden = self._found_by_using()
         for name, node in sorted(self.root.children.items()):
             if name not in hidden:
-                lines.extend(_render(name, node, "", nested=False, withdrawn=self.withdrawn))
+                lines.extend(_render(name, node, "", nested=False, values=values,
+                                     withdrawn=self.withdrawn))
         return "\n".join(lines) + "\n"
 
     def _message(self, record: str) -> bool:
@@ -481,17 +603,44 @@ def _merge(into: _Name, other: _Name) -> None:
             into.children[name] = child
 
 
-def _render(name: str, node: _Name, indent: str, nested: bool,
+class _Values:
+    """The values of the declared constants: each its own (two case labels of one value
+    are an error), none that a case label of the code writes; small (an enum of
+    ``uint8_t`` takes them), but those an operator combines, which get a bit of their
+    own above the small ones (``case A | B:`` is then no other constant's value) while
+    bits last."""
+
+    FIRST_BIT, LAST_BIT = 16, 30
+
+    def __init__(self, taken: set[int]) -> None:
+        self._small = (value for value in itertools.count(1) if value not in taken)
+        self._bits = iter(range(self.FIRST_BIT, self.LAST_BIT + 1))
+
+    def next(self, flag: bool = False) -> int:
+        if flag:
+            bit = next(self._bits, None)
+            if bit is not None:
+                return 1 << bit
+        return next(self._small)
+
+
+def _render(name: str, node: _Name, indent: str, nested: bool, values: _Values,
             withdrawn: set[str] | frozenset[str] = frozenset()) -> list[str]:
     if name in withdrawn and not node.known:
         return []
     space = _is_namespace(node) and not nested
     inner: list[str] = []
     for child, sub in sorted(node.children.items()):
-        inner.extend(_render(child, sub, indent + "  ", nested=not space, withdrawn=withdrawn))
+        inner.extend(_render(child, sub, indent + "  ", nested=not space, values=values,
+                             withdrawn=withdrawn))
     if space:
         return [f"{indent}namespace {name} {{", *inner, f"{indent}}}"]
-    if node.uses == {"value"}:
+    if node.uses - {"flag"} == {"value", "constant"} and not node.children:
+        # read where C++ needs a constant: an enumerator (an unnamed enum's, which
+        # converts to any integer and makes ``enum_value(X)``'s underlying type), that
+        # is still compared, passed and assigned as a value
+        return [f"{indent}enum : int {{ {name} = {values.next('flag' in node.uses)} }};"]
+    if node.uses <= {"value", "constant", "flag"}:
         return [f"{indent}{'static ' if nested else 'extern '}haros_any {name};"]
     head = "template <class... T> " if "template" in node.uses else ""
     return [f"{indent}{head}struct {name} : haros_any {{",
