@@ -230,7 +230,8 @@ void publish_fake_map(ros::NodeHandle & nh)
 }
 """
     files["costs/src/map_ros.cpp"] = files["costs/src/map_ros.cpp"].replace(
-        "namespace costs {", "// see testkit::publish_fake_map for tests\n        namespace costs {")
+        "namespace costs {",
+        "// see testkit::publish_fake_map for tests\n        namespace costs {")
     node, _ = _node(write_tree, files, "planner", "planner_node")
     assert "costs/src/map_ros.cpp" in node.sources
     assert "testkit/src/fake.cpp" not in node.sources
