@@ -237,6 +237,33 @@ void publish_fake_map(ros::NodeHandle & nh)
     assert "testkit/src/fake.cpp" not in node.sources
 
 
+def test_the_client_library_in_the_workspace_is_not_followed(write_tree) -> None:
+    # roscpp built from source beside the node: its API is the extractor's tables, its
+    # insides (its own reads at init) are no call of the node
+    files = dict(ROS1)
+    files["roscpp/package.xml"] = package_xml("roscpp", "catkin")
+    files["roscpp/CMakeLists.txt"] = """
+        cmake_minimum_required(VERSION 3.0.2)
+        project(roscpp)
+        find_package(catkin REQUIRED)
+        catkin_package(LIBRARIES roscpp)
+        add_library(roscpp src/libros/init.cpp)
+        """
+    files["roscpp/src/libros/init.cpp"] = """
+#include <ros/ros.h>
+namespace ros {
+void init(int& argc, char** argv, const std::string& name)
+{
+  bool sim = false;
+  ros::param::get("/use_sim_time", sim);
+}
+}
+"""
+    node, _ = _node(write_tree, files, "planner", "planner_node")
+    assert "roscpp/src/libros/init.cpp" not in node.sources
+    assert "costs/src/map_ros.cpp" in node.sources
+
+
 ROS2 = {
     "vehicle_info/package.xml": package_xml("vehicle_info", "ament_cmake"),
     "vehicle_info/CMakeLists.txt": """

@@ -77,6 +77,20 @@ def _with_extension(source: str) -> str | None:
 Elsewhere = Callable[[str], "list[str] | None"]
 
 
+_STANDIN = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))),
+                        "extract", "standin")
+# packages whose API the extractor knows from its own tables and stand-ins (the client
+# libraries, tf2_ros, image_transport, actionlib, dynamic_reconfigure, ...): a node
+# that links them runs their code, but its calls are those rows, not the library's
+# insides (roscpp's own reads of /use_sim_time, topic_tools' relay linking roscpp)
+MODELLED_PACKAGES = frozenset({
+    *(name for name in os.listdir(_STANDIN) if os.path.isdir(os.path.join(_STANDIN, name))
+      and name not in ("std", "fallback", "ros")),
+    "roscpp", "rosconsole", "roscpp_serialization", "roscpp_traits", "xmlrpcpp", "rostime",
+    "cpp_common", "rcl", "rcl_action", "rcl_lifecycle", "rcutils", "rcpputils", "rmw",
+    "rmw_implementation", "tf2", "tf2_eigen"}) if os.path.isdir(_STANDIN) else frozenset()
+
+
 class SourceMap:
     """Workspace-relative C/C++ sources of targets, with package-local libraries linked in,
     and the libraries of other workspace packages they link (``elsewhere``)."""
@@ -154,7 +168,8 @@ class SourceMap:
             if linked.auto:
                 out.extend(self._build_depends)
             stack.extend(linked.links)
-        return [name for name in dict.fromkeys(out) if name != self._package]
+        return [name for name in dict.fromkeys(out)
+                if name != self._package and name not in MODELLED_PACKAGES]
 
     def elsewhere(self, target: Target) -> list[list[str]]:
         """The sources of the libraries of each other workspace package ``target``
