@@ -237,6 +237,29 @@ void publish_fake_map(ros::NodeHandle & nh)
     assert "testkit/src/fake.cpp" not in node.sources
 
 
+def test_a_linked_file_without_ros_code_stays_out(write_tree) -> None:
+    # mavros' libmavconn: a serial link the node names, with no ROS call to give (its
+    # parse errors would only make the node look partial)
+    files = dict(ROS1)
+    files["costs/CMakeLists.txt"] = files["costs/CMakeLists.txt"].replace(
+        "src/unused.cpp", "src/unused.cpp src/serial.cpp")
+    files["costs/src/serial.cpp"] = """
+#include <string>
+namespace costs {
+class Serial { public: bool open(const std::string & device); };
+bool Serial::open(const std::string & device)
+{
+  return !device.empty();
+}
+}
+"""
+    files["planner/src/planner.cpp"] = files["planner/src/planner.cpp"].replace(
+        "costs::MapROS* local_; };", "costs::MapROS* local_; costs::Serial * link_; };")
+    node, _ = _node(write_tree, files, "planner", "planner_node")
+    assert "costs/src/serial.cpp" not in node.sources
+    assert "costs/src/map_ros.cpp" in node.sources
+
+
 def test_the_client_library_in_the_workspace_is_not_followed(write_tree) -> None:
     # roscpp built from source beside the node: its API is the extractor's tables, its
     # insides (its own reads at init) are no call of the node

@@ -441,6 +441,12 @@ def test_members_and_scoped_values_are_read_from_the_text() -> None:
     names.learn([("no member named 'Mode' in namespace 'app'", use, use.index(b"Mode"))])
     header = names.header()
     assert header.count("Mode") == 1 and "static haros_any SLOW;" in header
+    # the alias alone through its namespace, as a type (mavros' ``ftf::Covariance3d``,
+    # whose own target the parse does not know): declared there, or the class naming it
+    # is invalid
+    alone = b"void k() { ns::Mode m; }\n"
+    names.learn([("no type named 'Mode' in namespace 'ns'", alone, alone.index(b"Mode"))])
+    assert "namespace ns {" in names.header()
     # clang reports only the first unknown name of a declaration: the others written
     # with the same unknown namespace are declared from the text
     for name in ("Config", "Link", "Key", "Value"):

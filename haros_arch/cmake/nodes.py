@@ -27,6 +27,7 @@ from ..plugins.classes import (
     named_helpers,
     named_words,
     node_classes,
+    uses_ros,
 )
 from ..workspace import Workspace
 from .commands import C_SUFFIXES
@@ -239,7 +240,9 @@ def _with_elsewhere(kept: list[str], target: Target, sources: SourceMap,
                   and all(derives_from(cls, kept, workspace)
                           for cls in node_classes(s, workspace))]
         found.extend(named_closure(words, others, workspace, anonymous=False))
-    return [*kept, *dict.fromkeys(found)]
+    # a file that names no ROS client library makes no call of the node (its parse
+    # errors would only make the node look partial): what it names still counts
+    return [*kept, *(s for s in dict.fromkeys(found) if uses_ros(s, workspace))]
 
 
 def _run_here(target: Target, own: list[str], sources: SourceMap,

@@ -343,6 +343,19 @@ def node_classes(source: str, workspace: Files) -> set[str]:
     return remembered("node classes", source, workspace, compute)
 
 
+# the ROS client libraries (and the API libraries the extractor knows) named in code
+_ROS_CODE = re.compile(r"\b(?:ros|rclcpp|rclcpp_lifecycle|rclcpp_action|nodelet|actionlib|"
+                       r"image_transport|tf2_ros|message_filters)::|\bNodeHandle\b")
+
+
+def uses_ros(source: str, workspace: Files) -> bool:
+    """Whether a source file, or a header of its package it includes, names the ROS
+    client libraries: a file that does not (mavros' libmavconn, a serial link) makes no
+    ROS call."""
+    return remembered("uses ros", source, workspace, lambda: any(
+        _ROS_CODE.search(text) for text in with_headers(source, workspace)))
+
+
 def derives_from(cls: str, sources: Iterable[str], workspace: Files) -> bool:
     """Whether a class of ``sources`` (or of the headers they include) names ``cls`` as
     a base: the node's own base class (nav2's servers are ``nav2_util::LifecycleNode``s)."""

@@ -454,12 +454,14 @@ class Names:
             # (``SDL_Init(SDL_INIT_JOYSTICK | SDL_INIT_HAPTIC)``, ``SDL_GetError()``),
             # is no member: a value (a call is the value's ``operator()``)
             last = "value"
-        if written[0] in self.aliases:
+        if written[0] in self.aliases and (not scope or len(written) > 1):
             # ``Mode::FAST`` where the code declares ``using Mode = vendor::Mode;``: not
             # a name of its own (it would clash with the alias), a member of what the
             # alias names once that is declared; also reached through the namespace of
             # the alias (mavros' ``plugin::MTYPE::FENCE``: declared a namespace there,
-            # ``using MTYPE = ...`` was a redefinition and the class that uses it invalid)
+            # ``using MTYPE = ...`` was a redefinition and the class that uses it invalid);
+            # the alias alone through its namespace is still declared there (mavros'
+            # ``ftf::Covariance3d``, an alias whose own target the parse does not know)
             if len(written) == 2 and written[1] not in self.members:
                 self.members.add(written[1])
             return
