@@ -112,6 +112,19 @@ ROS1 = {
 }
 
 
+def _catkin_library(files: dict[str, str], name: str, source: str, text: str) -> None:
+    """A catkin package ``name`` that exports one library built from ``source``."""
+    files[f"{name}/package.xml"] = package_xml(name, "catkin")
+    files[f"{name}/CMakeLists.txt"] = f"""
+        cmake_minimum_required(VERSION 3.0.2)
+        project({name})
+        find_package(catkin REQUIRED COMPONENTS roscpp)
+        catkin_package(LIBRARIES {name})
+        add_library({name} {source})
+        """
+    files[f"{name}/{source}"] = text
+
+
 def _node(write_tree, files: dict[str, str], package: str, name: str):
     root: Path = write_tree(files)
     ws = scan([str(root)])
@@ -178,15 +191,7 @@ def test_the_packages_a_linked_package_links_are_not_followed(write_tree) -> Non
     files = dict(ROS1)
     files["costs/CMakeLists.txt"] = files["costs/CMakeLists.txt"].replace(
         "roscpp std_msgs", "roscpp std_msgs probe")
-    files["probe/package.xml"] = package_xml("probe", "catkin")
-    files["probe/CMakeLists.txt"] = """
-        cmake_minimum_required(VERSION 3.0.2)
-        project(probe)
-        find_package(catkin REQUIRED COMPONENTS roscpp)
-        catkin_package(LIBRARIES probe)
-        add_library(probe src/probe.cpp)
-        """
-    files["probe/src/probe.cpp"] = """
+    _catkin_library(files, "probe", "src/probe.cpp", """
         #include <ros/ros.h>
         #include <std_msgs/String.h>
         namespace probe {
@@ -197,7 +202,7 @@ def test_the_packages_a_linked_package_links_are_not_followed(write_tree) -> Non
           nh.advertise<std_msgs::String>("probe", 1);
         }
         }
-        """
+        """)
     files["planner/src/planner.cpp"] = files["planner/src/planner.cpp"].replace(
         "namespace planner {", "namespace probe { class Probe; }\nnamespace planner {")
     node, _ = _node(write_tree, files, "planner", "planner_node")
@@ -211,15 +216,7 @@ def test_what_one_linked_package_names_brings_nothing_of_another(write_tree) -> 
     files = dict(ROS1)
     files["planner/CMakeLists.txt"] = files["planner/CMakeLists.txt"].replace(
         "roscpp costs", "roscpp costs testkit")
-    files["testkit/package.xml"] = package_xml("testkit", "catkin")
-    files["testkit/CMakeLists.txt"] = """
-        cmake_minimum_required(VERSION 3.0.2)
-        project(testkit)
-        find_package(catkin REQUIRED COMPONENTS roscpp)
-        catkin_package(LIBRARIES testkit)
-        add_library(testkit src/fake.cpp)
-        """
-    files["testkit/src/fake.cpp"] = """
+    _catkin_library(files, "testkit", "src/fake.cpp", """
 #include <ros/ros.h>
 #include <std_msgs/String.h>
 namespace testkit {
@@ -228,7 +225,7 @@ void publish_fake_map(ros::NodeHandle & nh)
   nh.advertise<std_msgs::String>("fake_map", 1);
 }
 }
-"""
+""")
     files["costs/src/map_ros.cpp"] = files["costs/src/map_ros.cpp"].replace(
         "namespace costs {",
         "// see testkit::publish_fake_map for tests\n        namespace costs {")
@@ -264,15 +261,7 @@ def test_the_client_library_in_the_workspace_is_not_followed(write_tree) -> None
     # roscpp built from source beside the node: its API is the extractor's tables, its
     # insides (its own reads at init) are no call of the node
     files = dict(ROS1)
-    files["roscpp/package.xml"] = package_xml("roscpp", "catkin")
-    files["roscpp/CMakeLists.txt"] = """
-        cmake_minimum_required(VERSION 3.0.2)
-        project(roscpp)
-        find_package(catkin REQUIRED)
-        catkin_package(LIBRARIES roscpp)
-        add_library(roscpp src/libros/init.cpp)
-        """
-    files["roscpp/src/libros/init.cpp"] = """
+    _catkin_library(files, "roscpp", "src/libros/init.cpp", """
 #include <ros/ros.h>
 namespace ros {
 void init(int& argc, char** argv, const std::string& name)
@@ -281,7 +270,7 @@ void init(int& argc, char** argv, const std::string& name)
   ros::param::get("/use_sim_time", sim);
 }
 }
-"""
+""")
     node, _ = _node(write_tree, files, "planner", "planner_node")
     assert "roscpp/src/libros/init.cpp" not in node.sources
     assert "costs/src/map_ros.cpp" in node.sources

@@ -139,9 +139,9 @@ class SourceMap:
         self._own[target.name] = out = list(dict.fromkeys(out))
         return out
 
-    def linked(self, target: Target) -> list[str]:
-        """The target's sources, then those of package libraries it links, transitively."""
-        out: list[str] = []
+    def _closure(self, target: Target) -> list[Target]:
+        """``target`` and the package libraries it links, transitively, in order."""
+        out: list[Target] = []
         seen: set[str] = set()
         stack = [target.name]
         while stack:
@@ -149,26 +149,23 @@ class SourceMap:
             if name in seen or name not in self.targets:
                 continue
             seen.add(name)
-            out.extend(self.own(self.targets[name]))
+            out.append(self.targets[name])
             stack.extend(self.targets[name].links)
-        return list(dict.fromkeys(out))
+        return out
+
+    def linked(self, target: Target) -> list[str]:
+        """The target's sources, then those of package libraries it links, transitively."""
+        return list(dict.fromkeys(source for linked in self._closure(target)
+                                  for source in self.own(linked)))
 
     def packages(self, target: Target) -> list[str]:
         """The other packages ``target`` links, itself or through the package's libraries
         it links (an ament_cmake_auto target links every build dependency)."""
         out: list[str] = []
-        seen: set[str] = set()
-        stack = [target.name]
-        while stack:
-            name = stack.pop(0)
-            if name in seen or name not in self.targets:
-                continue
-            seen.add(name)
-            linked = self.targets[name]
+        for linked in self._closure(target):
             out.extend(linked.packages)
             if linked.auto:
                 out.extend(self._build_depends)
-            stack.extend(linked.links)
         return [name for name in dict.fromkeys(out)
                 if name != self._package and name not in MODELLED_PACKAGES]
 
