@@ -254,9 +254,16 @@ LIBRARIES: dict[tuple[str, str], RosFunction] = {
         on_handle=False, handle_default="", ros2=RosFunction(
             "server", fixed_name="~/set_camera_info",
             fixed_type="sensor_msgs/srv/SetCameraInfo", on_handle=False)),
+    # diagnostic_updater: ROS 1 reads its period from the private handle; ROS 2 declares
+    # it (and, from Iron on, whether names are fully qualified) on the node
     ("diagnostic_updater::Updater", "Updater"): RosFunction(
         "publish", fixed_name="/diagnostics", fixed_type="diagnostic_msgs/DiagnosticArray",
-        on_handle=False),
+        on_handle=False, siblings=(("read", "~diagnostic_period", "double"),),
+        ros2=RosFunction(
+            "publish", fixed_name="/diagnostics",
+            fixed_type="diagnostic_msgs/msg/DiagnosticArray", on_handle=False,
+            siblings=(("declare", "diagnostic_updater.period", "double"),
+                      ("declare", "diagnostic_updater.use_fqn", "bool")))),
     ("tf::TransformBroadcaster", "TransformBroadcaster"): RosFunction(
         "publish", fixed_name="/tf", fixed_type=_TF, on_handle=False),
     ("tf::TransformListener", "TransformListener"): RosFunction(

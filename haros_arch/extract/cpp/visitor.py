@@ -719,6 +719,8 @@ class CallFinder:
             for kind, sibling, stype in spec.siblings:
                 if spec.name_suffix is not None:  # beside it, in the remote node's name
                     full = name.removesuffix(spec.name_suffix) + sibling
+                elif kind in ("declare", "read") and name.startswith("/"):
+                    full = sibling  # the node's own parameter beside a global topic
                 else:
                     full = sibling if sibling.startswith("/") else join_name(
                         _name_namespace(name), sibling)
