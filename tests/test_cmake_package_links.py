@@ -234,6 +234,32 @@ void publish_fake_map(ros::NodeHandle & nh)
     assert "testkit/src/fake.cpp" not in node.sources
 
 
+def test_a_class_the_node_defines_itself_is_its_own(write_tree) -> None:
+    # opennav_following defines its own ParameterHandler; opennav_docking, which it
+    # links, has one of the same name whose reads are not the follower's
+    files = dict(ROS1)
+    files["costs/CMakeLists.txt"] = files["costs/CMakeLists.txt"].replace(
+        "src/unused.cpp", "src/unused.cpp src/handler.cpp")
+    files["costs/src/handler.cpp"] = """
+#include <ros/ros.h>
+namespace costs {
+class ParameterHandler { public: ParameterHandler(); };
+ParameterHandler::ParameterHandler()
+{
+  ros::NodeHandle nh("~");
+  nh.param("dock_backwards", false);
+}
+}
+"""
+    files["planner/src/planner.cpp"] = files["planner/src/planner.cpp"].replace(
+        "namespace planner {", "namespace planner {\n"
+        "        class ParameterHandler { public: ParameterHandler(); };\n"
+        "        ParameterHandler::ParameterHandler() {}")
+    node, _ = _node(write_tree, files, "planner", "planner_node")
+    assert "costs/src/handler.cpp" not in node.sources
+    assert "costs/src/map_ros.cpp" in node.sources
+
+
 def test_a_linked_file_without_ros_code_stays_out(write_tree) -> None:
     # mavros' libmavconn: a serial link the node names, with no ROS call to give (its
     # parse errors would only make the node look partial)

@@ -21,6 +21,7 @@ from ..model.source import Node, Package
 from ..plugins import Files, narrow
 from ..plugins.classes import (
     code_words,
+    defined_in,
     derives_from,
     exported_classes,
     named_closure,
@@ -229,7 +230,10 @@ def _with_elsewhere(kept: list[str], target: Target, sources: SourceMap,
     LifecycleNode)."""
     if not kept:
         return kept
-    words = code_words(kept, workspace)
+    # a class or function the node's own files define is theirs, whatever another
+    # package calls the same (opennav_following's ParameterHandler against
+    # opennav_docking's)
+    words = code_words(kept, workspace) - defined_in(kept, workspace)
     found: list[str] = []
     for group in sources.elsewhere(target):
         others = [s for s in group if s not in kept

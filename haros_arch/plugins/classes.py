@@ -314,6 +314,11 @@ def _defined(source: str, workspace: Files) -> set[str]:
     return remembered("defined", source, workspace, lambda: _read_defined(source, workspace))
 
 
+def defined_in(sources: Iterable[str], workspace: Files) -> set[str]:
+    """The classes whose members ``sources`` define, and their free functions."""
+    return set().union(*(_defined(source, workspace) for source in sources))
+
+
 def _read_defined(source: str, workspace: Files) -> set[str]:
     path = os.path.join(workspace.root, source)
     text, _ = read_text(path, workspace.location(path))
