@@ -5,7 +5,8 @@ nav2's action server timeout, rcutils' logging macros, the graph API of image_vi
 pointcloud_to_laserscan, robot_localization's add_timer, image_view's descriptor
 setters, topic_tools' QoS !=; ROS 1: tf's LinearMath and listener methods, gmapping's
 is_zero, mavros' maxDatagramSize, polled_camera's getTopic, OpenCV's version macros,
-urg_node's ROS 1 bond::Bond). Each parses with no error and keeps its calls. The sources are
+urg_node's ROS 1 bond::Bond; tf2_ros' lookupTransform result as a message, ROS 1 and 2).
+Each parses with no error and keeps its calls. The sources are
 fixtures/cpp/standin_gaps."""
 
 from __future__ import annotations
@@ -72,3 +73,19 @@ def test_a_listener_on_a_buffer_core(write_tree) -> None:
     assert [(c.kind, c.name) for c in result.calls] == [
         ("subscribe", "/tf"), ("subscribe", "/tf_static"), ("declare", "base_link_frame"),
         ("publish", "/tf")]
+
+
+def test_a_looked_up_transform_as_a_message(write_tree) -> None:
+    """lookupTransform's and eigenToTransform's result initialises, is assigned to and is
+    passed as a geometry_msgs TransformStamped with no ambiguous conversion (two
+    conversion templates, to M and to M&, made both copy and operator= ambiguous), and
+    ``auto`` keeps its fields: no error beside the publisher's call."""
+    result = _extract(write_tree, _source("tf2_lookup_result.cpp"), "ament_cmake")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "lookup_done")]
+
+
+def test_a_looked_up_transform_as_a_message_in_ros1(write_tree) -> None:
+    result = _extract(write_tree, _source("ros1_tf2_lookup_result.cpp"), "catkin")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "lookup_done")]

@@ -314,6 +314,68 @@ def test_a_call_written_in_an_unevaluated_operand_is_no_call_site() -> None:
     assert [s.line for s in recall.call_sites(text)] == [4]
 
 
+
+def test_a_wrapper_class_written_as_a_type_is_no_call_site() -> None:
+    """A wrapper class template of the unit (nav2::ServiceClient, whose constructor creates
+    the client) is a call site where it is built (after ``make_shared<`` or ``new``, its
+    template arguments followed by ``(`` / ``{``, a variable with its arguments, as it
+    goes on past the line), not where it names a type: an alias, a member's type, a
+    base class, a template argument (navigation2's service_client.hpp:35 made
+    nav2_lifecycle_manager partial)."""
+    from haros_arch.extract.cpp import recall
+
+    text = ("using SharedPtr = std::shared_ptr<nav2::ServiceClient<ServiceT>>;\n"
+            "nav2::ServiceClient<GetMap>::SharedPtr map_client_;\n"
+            "class TestClient : public ServiceClient<Empty> {\n"
+            "std::vector<ServiceClient<Empty>> clients; typedef ServiceClient<S> Client;\n"
+            "auto a = std::make_shared<nav2::ServiceClient<GetCosts>>(\n"
+            "  nav2::ServiceClient<Trigger>(\"pause\", node);\n"
+            "ServiceClient<Empty> client(\"reset\", node);\n"
+            ": ServiceClient<S>{name, node} {}\n"
+            "c_ = new ServiceClient<S>(name, node);\n"
+            "auto b = nav2::ServiceClient<\n"
+            "make_client<Empty>(\"x\");\n")
+    sites = recall.call_sites(text, ["ServiceClient", "make_client"])
+    assert [s.line for s in sites] == [5, 6, 7, 8, 9, 10, 11]
+
+
+def test_a_wrapper_class_as_a_member_type_leaves_its_node_complete(write_tree) -> None:
+    """The node's other error (a vendor call) cannot hide a ROS call: the line that
+    declares the wrapper's member is no missed call site."""
+    root = write_tree({
+        "wrap/package.xml": package_xml("wrap", "ament_cmake"),
+        "wrap/include/wrap/service_client.hpp": (
+            "#include <memory>\n#include <string>\n#include <rclcpp/rclcpp.hpp>\n"
+            "namespace wrap {\n"
+            "template<typename ServiceT> class ServiceClient {\n"
+            " public:\n"
+            "  using SharedPtr = std::shared_ptr<wrap::ServiceClient<ServiceT>>;\n"
+            "  template<typename NodeT>\n"
+            "  ServiceClient(const std::string & name, const NodeT & node) {\n"
+            "    client_ = node->template create_client<ServiceT>(name);\n"
+            "  }\n"
+            "  typename rclcpp::Client<ServiceT>::SharedPtr client_;\n"
+            "};\n"
+            "}  // namespace wrap\n"),
+        "wrap/src/manager.cpp": (
+            "#include <std_srvs/srv/trigger.hpp>\n"
+            "#include \"wrap/service_client.hpp\"\n"
+            "class Manager : public rclcpp::Node {\n"
+            " public:\n"
+            "  Manager() : rclcpp::Node(\"manager\") {\n"
+            "    client_ = std::make_shared<wrap::ServiceClient<std_srvs::srv::Trigger>>(\n"
+            "        \"is_active\", shared_from_this());\n"
+            "  }\n"
+            "  void report() { vendor::unknown_call(3); }\n"
+            "  wrap::ServiceClient<std_srvs::srv::Trigger>::SharedPtr client_;\n"
+            "};\n"),
+    })
+    result = extract_cpp([str(root / "wrap" / "src" / "manager.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    assert rows(result) == [("client", "is_active", "std_srvs/srv/Trigger", 6)]
+    assert "CPP_PARSE_ERROR" in codes(result)
+    assert "CPP_CALL_MISSED" not in codes(result)
+
 def test_fields_of_messages_known_only_by_name_leave_no_error() -> None:
     result = extract("message_fields.cpp")
     assert rows(result) == [

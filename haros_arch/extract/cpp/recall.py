@@ -87,7 +87,7 @@ def site_pattern(extra: frozenset[str] = frozenset()) -> re.Pattern[str]:
                             if "::" in owner and owner.rsplit("::", 1)[1] == name),
                            key=len, reverse=True))
     return re.compile(rf"(?:(?:\.|->)\s*(?:template\s+)?(?:{member})"
-                      rf"|(?<![\w.>:~])(?:\w+::)?(?:{free}))\s*[<(]"
+                      rf"|(?<![\w.>:~])(?:\w+::)?(?P<bare>{free}))\s*[<(]"
                       rf"|(?:make_shared|make_unique)\s*<\s*(?:::)?(?:{made})\s*[<>(]"
                       rf"|\bnew\s+(?:::)?(?:{made})\s*[<(]")
 
@@ -125,9 +125,46 @@ def _call_sites(text: str, extra: frozenset[str]) -> tuple[Site, ...]:
         code = line.split("//", 1)[0]
         if code.lstrip().startswith("#") or _DEFINITION.match(code):
             continue
-        if any(not _unevaluated(code, m.start()) for m in pattern.finditer(code)):
+        if any(not _unevaluated(code, m.start()) and not _named_type(code, m, extra)
+               for m in pattern.finditer(code)):
             found.append(Site(number, code.strip()[:80]))
     return tuple(found)
+
+
+# what comes before a class name that is made there (``std::make_shared<``, ``new``),
+# and before one that is a base class (``class C : public Wrapper<T> {``)
+_MADE_AFTER = re.compile(r"(?:\b(?:make_shared|make_unique)\s*<|\bnew)\s*(?:::)?(?:\w+::)?$")
+_BASE_AFTER = re.compile(r"\b(?:public|protected|private)\s+(?:virtual\s+)?(?:\w+::)?$")
+# what follows its template arguments where it is built: ``(`` / ``{`` (a temporary, a
+# base or member initialiser), a variable with its arguments (``Wrapper<T> w(...)``), a
+# static factory (``Wrapper<T>::make(``)
+_BUILT_BEFORE = re.compile(r"\s*(?:[({]|\w+\s*[({]|::\s*\w+\s*\()")
+
+
+def _named_type(code: str, match: re.Match[str], extra: frozenset[str]) -> bool:
+    """Whether ``match`` is one of the unit's wrappers (``extra``), a class template,
+    written as a type, not built: ``using P = std::shared_ptr<nav2::ServiceClient<T>>``,
+    a member's type ``ServiceClient<T>::SharedPtr client_;``, a base class. It is built
+    after ``make_shared<`` / ``new`` or where its closed template arguments are
+    followed by ``(`` or ``{`` (``_BUILT_BEFORE``); with the arguments not closed on the
+    line, it may be either: a call site."""
+    name = match.group("bare")
+    if name is None or name not in extra or not match.group(0).endswith("<"):
+        return False
+    before = code[:match.start("bare")]
+    if _BASE_AFTER.search(before):
+        return True
+    if _MADE_AFTER.search(before):
+        return False
+    depth, at = 0, match.end() - 1
+    for at in range(match.end() - 1, len(code)):
+        depth += {"<": 1, ">": -1}.get(code[at], 0)
+        if depth == 0:
+            break
+    else:
+        return False  # the template arguments go on past the line
+    rest = code[at + 1:]
+    return bool(rest.strip()) and not _BUILT_BEFORE.match(rest)
 
 
 _UNEVALUATED = re.compile(r"\b(?:decltype|sizeof|alignof|noexcept)\s*\(")

@@ -6,6 +6,6 @@
 #include <tf2_ros/buffer.h>
 namespace tf2 {
 template<class T> Eigen::Isometry3d transformToEigen(const T& t);
-template<class T> haros_standin::any_message eigenToTransform(const T& t);
+template<class T> haros_standin::any_transform_stamped eigenToTransform(const T& t);
 }  // namespace tf2
 #endif

@@ -8,9 +8,29 @@
 #include <boost/shared_ptr.hpp>
 #include <ros/time.h>
 namespace haros_standin {
+// A message whose type the stand-ins cannot name (its package's headers are synthesised
+// for each workspace): it converts to whatever it initialises, is assigned to or is
+// passed as. One conversion function template only: a second one to M& made copying or
+// assigning it to a message ambiguous (both yield M, and M's operator=(const M&) could
+// take either), where the real function's result is that message.
 struct any_message {
   template<class M> operator M() const;
-  template<class M> operator M&() const;
+};
+// geometry_msgs' TransformStamped, which tf2_ros' lookupTransform and tf2_eigen's
+// eigenToTransform return: its fields, for `auto t = buffer.lookupTransform(...);
+// t.transform.translation.x`, each converting like the message it is
+struct any_vector3 : any_message { double x, y, z; };
+struct any_quaternion : any_message { double x, y, z, w; };
+struct any_transform : any_message { any_vector3 translation; any_quaternion rotation; };
+struct any_time : any_message {  // both builtin_interfaces' Time and ros::Time
+  int sec; unsigned int nanosec, nsec;
+  double toSec() const;
+};
+struct any_header : any_message { unsigned int seq; any_time stamp; std::string frame_id; };
+struct any_transform_stamped : any_message {
+  any_header header;
+  std::string child_frame_id;
+  any_transform transform;
 };
 }
 namespace tf2 {
@@ -113,7 +133,7 @@ public:
   typedef std::shared_ptr<const Buffer> ConstSharedPtr;
   typedef std::unique_ptr<Buffer> UniquePtr;
   template<class... A> explicit Buffer(A&&... args);
-  template<class T, class... A> haros_standin::any_message lookupTransform(
+  template<class T, class... A> haros_standin::any_transform_stamped lookupTransform(
       const std::string& target, const std::string& source, const T& time, A&&... more) const;
   template<class T, class... A> bool canTransform(const std::string& target,
       const std::string& source, const T& time, A&&... more) const;
