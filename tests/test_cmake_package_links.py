@@ -251,10 +251,14 @@ ParameterHandler::ParameterHandler()
 }
 }
 """
+    # declared in the planner's own header, defined in its source
+    files["planner/include/planner/handler.h"] = """
+        namespace planner { class ParameterHandler { public: ParameterHandler(); }; }
+        """
     files["planner/src/planner.cpp"] = files["planner/src/planner.cpp"].replace(
-        "namespace planner {", "namespace planner {\n"
-        "        class ParameterHandler { public: ParameterHandler(); };\n"
-        "        ParameterHandler::ParameterHandler() {}")
+        "namespace planner {", "#include <planner/handler.h>\n"
+        "        planner::ParameterHandler::ParameterHandler() {}\n"
+        "        namespace planner {")
     node, _ = _node(write_tree, files, "planner", "planner_node")
     assert "costs/src/handler.cpp" not in node.sources
     assert "costs/src/map_ros.cpp" in node.sources
