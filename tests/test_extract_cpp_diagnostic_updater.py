@@ -62,6 +62,8 @@ def _calls(write_tree, files: dict[str, str], package: str) -> list[tuple[str, s
     pkg = ws.packages[package]
     pkg.nodes, _ = cmake.parse_package(pkg, ws)
     extract_nodes(pkg.nodes, ws, cache_dir=None, jobs=1)
+    # the library has its defaults: no launch file needs to set them
+    assert all(c.has_default for c in pkg.nodes[0].calls if c.kind in ("declare", "read"))
     return sorted((c.kind, c.name, c.type or "") for c in pkg.nodes[0].calls)
 
 

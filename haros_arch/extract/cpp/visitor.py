@@ -734,6 +734,9 @@ class CallFinder:
                 self.calls.append(PrimitiveCall(
                     kind=kind, name=full, type=self.types.ros_type(stype), queue_size=queue,
                     latch=latch, conditions=conditions, location=location,
+                    # a library's own parameter (diagnostic_updater's period) has its
+                    # default there
+                    has_default=kind in ("declare", "read"),
                     handle_namespace=sibling_namespace, node_name=owner,
                     made_in=self._made_in(full, sibling_namespace),
                     camera_of=name if camera else None))
