@@ -19,6 +19,7 @@ def test_ros1_helper_libraries(tmp_path):
         ("publish", "out", "sensor_msgs/LaserScan"),
         ("publish", "~parameter_descriptions", "dynamic_reconfigure/ConfigDescription"),
         ("publish", "~parameter_updates", "dynamic_reconfigure/Config"),
+        ("read", "~diagnostic_period", "double"),  # the Updater's, from its private handle
         ("server", "~set_parameters", "dynamic_reconfigure/Reconfigure"),
         ("subscribe", "scan", "sensor_msgs/LaserScan"),
     ]
