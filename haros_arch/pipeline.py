@@ -247,7 +247,7 @@ def _read_build_files(package: Package, workspace: Workspace) -> list[diag.Diagn
     found: list[diag.Diagnostic] = []
     if package.build_type == "ament_python":
         package.nodes, found = pysetup.parse_package(package, workspace)
-    elif package.build_type in ("catkin", "ament_cmake", "cmake"):
+    elif package.build_type in cmake.CMAKE_BUILD_TYPES:
         package.nodes, found = cmake.parse_package(package, workspace)
     return found
 

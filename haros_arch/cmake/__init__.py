@@ -23,7 +23,8 @@ from .lexer import CMakeSyntaxError, Invocation, tokenize
 from .nodes import PackageFiles, SourceMap, components, executables, scripts
 from .targets import Target
 
-__all__ = ["Target", "interpret", "parse_package", "read_commands", "targets_of"]
+__all__ = ["CMAKE_BUILD_TYPES", "Target", "interpret", "package_libraries", "parse_package",
+           "read_commands", "targets_of"]
 
 
 def read_commands(path: str, workspace: Workspace | PackageFiles,
@@ -62,6 +63,8 @@ def _interpret(package: Package, workspace: Workspace,
 
 
 _BUILD_DEPENDS = ("depend", "build_depend")
+# the build types whose packages this front end reads
+CMAKE_BUILD_TYPES = ("catkin", "ament_cmake", "cmake")
 
 
 def build_depends(package: Package) -> list[str]:
@@ -80,7 +83,7 @@ def package_libraries(name: str, workspace: Workspace) -> list[str] | None:
 
 def _package_libraries(name: str, workspace: Workspace) -> list[str] | None:
     package = workspace.packages.get(name)
-    if package is None or package.build_type not in ("catkin", "ament_cmake", "cmake"):
+    if package is None or package.build_type not in CMAKE_BUILD_TYPES:
         return None
     files = PackageFiles(package, workspace)
     interpreter, _ = _interpret(package, workspace, files)

@@ -99,22 +99,12 @@ def _changed(found: QoS, decl: Cursor, at: Cursor, scope: Scope, depth: int) -> 
         return found
     for call, maybe in scope.method_calls(decl, at):
         method = call.spelling
-        args = written_arguments(call)
-        change: dict[str, Any]
-        if method in SETTERS:
-            change = dict(SETTERS[method])
-        elif method == "keep_last" and args:
-            count = scope.integer(args[0])
-            change = {"history": "keep_last", "depth": count}
-        elif method in ("history", "reliability", "durability", "depth"):
+        change = _setter(method, written_arguments(call), scope)
+        if change is None and method in ("history", "reliability", "durability", "depth"):
             change = {method: None}  # set from a value: not read here
-        else:
+        if change is None:
             continue
-        for field, value in change.items():
-            if maybe or value is None:
-                found.pop(field, None)
-            else:
-                found[field] = value
+        _apply(found, change, maybe)
         if method == "keep_all" and not maybe:
             found.pop("depth", None)
     return found
@@ -152,19 +142,29 @@ def _chained(call: Cursor, method: str, args: list[Cursor], scope: Scope, depth:
     if not objects:
         return {}
     base = _qos(objects[0], scope, depth + 1)
-    if method in SETTERS:
-        base.update(SETTERS[method])
-        if method == "keep_all":
-            base.pop("depth", None)
-    elif method == "keep_last" and args:
-        count = scope.integer(args[0])
-        base["history"] = "keep_last"
-        if count is not None:
-            base["depth"] = count
-        else:
-            base.pop("depth", None)
-    elif method == "durability_volatile":
-        base["durability"] = "volatile"
-    else:
+    change = _setter(method, args, scope)
+    if change is None:
         return {}
+    _apply(base, change)
+    if method == "keep_all":
+        base.pop("depth", None)
     return base
+
+
+def _setter(method: str, args: list[Cursor], scope: Scope) -> QoS | None:
+    """The fields a QoS setter sets (a depth None: not known); None for no setter."""
+    if method in SETTERS:
+        return dict(SETTERS[method])
+    if method == "keep_last" and args:
+        return {"history": "keep_last", "depth": scope.integer(args[0])}
+    return None
+
+
+def _apply(found: QoS, change: QoS, unknown: bool = False) -> None:
+    """``found`` as ``change`` leaves it; a field set to None, or every field of a change
+    that may not happen (``unknown``), is no longer known."""
+    for field, value in change.items():
+        if unknown or value is None:
+            found.pop(field, None)
+        else:
+            found[field] = value
