@@ -113,6 +113,7 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
         parameter.launch_location = param.location
         parameter.launch_conditions = param.conditions
         parameter.for_test = param.test
+        parameter.setting = param.setting
     transports = Transports(workspace, resources)
     seen: dict[str, NodeInstance] = {}
     started: list[tuple[NodeDecl, NodeInstance]] = []

@@ -80,6 +80,12 @@ class ParamDecl:
     # a private parameter of a ``<test>`` that a roslaunch run leaves out
     # (``without_tests``): its name; roslaunch sets the parameter, its reader is not run
     test: str | None = None
+    # ROS 2: the setting for several nodes that gave it, not one for this node alone:
+    # ``SetParameter`` (its place, ``file:line:column``: every node of its scope) or
+    # the ``/**`` entries of a parameter file (its path: every node it is given to, by
+    # ``SetParametersFromFile`` or a node's own parameters). Each node there gets the
+    # value, and takes it only if it declares it
+    setting: str | None = None
     # ROS 1 ``command=`` / ``textfile=`` (``cat FILE``), ROS 2 ``Command()`` /
     # ``$(command)``: the command line the value comes from, ``?`` for unknown parts
     # (it is never run; robot descriptions read the xacro file it names)

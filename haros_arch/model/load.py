@@ -162,6 +162,8 @@ class _Resources:
                 resource.launch_type = data.get("type")
                 resource.launch_location = location(data.get("location"))
                 resource.launch_conditions = conditions(data.get("conditions"))
+                setting = data.get("setting")
+                resource.setting = setting if isinstance(setting, str) else None
         self.by_key.setdefault((cls, name), resource)
         self.by_id.setdefault(resource.id, resource)
         self.count[(cls, name)] = self.count.get((cls, name), 0) + 1

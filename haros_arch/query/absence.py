@@ -134,8 +134,71 @@ def owner_of(config: Configuration, parameter: Parameter) -> NodeInstance | None
     return None
 
 
+def same_setting(charge: Charge, config: Any, parameter: Any) -> list[Parameter]:
+    """The parameters that the launch setting which set ``parameter`` gave the nodes
+    it is for, in the configuration's order (``parameter`` among them), when it is a
+    setting for several nodes (``Parameter.setting``: a ``SetParameter`` for every
+    node of its scope, the ``/**`` entries of a parameter file given to several
+    nodes); ``[parameter]`` for one set for its node alone. Each node there gets the
+    value and takes it only if it declares the parameter, so such a setting is
+    unread only when none of them reads it."""
+    if not isinstance(config, Configuration) or not isinstance(parameter, Parameter):
+        raise QueryTypeError("same_setting() takes a configuration and a parameter")
+    charge(1)
+    if parameter.setting is None:
+        return [parameter]
+    settings = _settings(config)
+    key = settings.key.get(id(parameter))
+    found = settings.groups.get(key, [parameter]) if key is not None else [parameter]
+    charge(len(found) // 64)
+    return list(found)
+
+
+class _Settings:
+    """The parameters of each launch setting for several nodes: by the setting and
+    the parameter's name within its node."""
+
+    def __init__(self, config: Configuration) -> None:
+        self.size = (len(config.nodes), len(config.parameters))
+        self.key: dict[int, tuple[Any, ...]] = {}
+        self.groups: dict[tuple[Any, ...], list[Parameter]] = {}
+        for parameter in config.parameters:
+            if parameter.setting is None:
+                continue
+            owner = owner_of(config, parameter)
+            own = parameter.name[len(owner.name.rstrip("/")) + 1:] if owner is not None \
+                else parameter.rosname.own
+            key = (parameter.setting, own)
+            self.key[id(parameter)] = key
+            self.groups.setdefault(key, []).append(parameter)
+        for group in self.groups.values():  # a node named with "?" last: never reported
+            group.sort(key=lambda p: p.is_unresolved)
+
+
+_SETTINGS: WeakKeyDictionary[Configuration, _Settings] = WeakKeyDictionary()
+
+
+def _settings(config: Configuration) -> _Settings:
+    found = _SETTINGS.get(config)
+    if found is None or found.size != (len(config.nodes), len(config.parameters)):
+        found = _SETTINGS[config] = _Settings(config)
+    return found
+
+
 def unknown_users(charge: Charge, config: Any, resource: Any
                   ) -> list[NodeInstance | Parameter]:
+    """``_unknown_users`` of a resource or link, or of each of a list of them (what
+    could use any of them unseen)."""
+    if isinstance(resource, list):
+        found: list[NodeInstance | Parameter] = []
+        for each in resource:
+            found.extend(_unknown_users(charge, config, each))
+        return list(dict.fromkeys(found))
+    return _unknown_users(charge, config, resource)
+
+
+def _unknown_users(charge: Charge, config: Any, resource: Any
+                   ) -> list[NodeInstance | Parameter]:
     """The node instances that could use ``resource`` through a call the model does not
     show: those of partial or unknown interface, and those that use a name with ``?``
     that may stand for it (a ``getParam(name_read_at_run_time)``). For a parameter

@@ -86,7 +86,7 @@ FIELDS: dict[type, tuple[str, ...]] = {
     Parameter: ("value", "type", "launch_type", "set_by_launch", "launch_location",
                 "location", "readers", "writers", "reads", "writes", "setters", "is_set",
                 "is_read",
-                "has_default", "read_as_part_of", "for_test"),
+                "has_default", "read_as_part_of", "for_test", "setting"),
     Link: _LINK,
     PublishLink: ("topic", "topic_name"),
     SubscribeLink: ("topic", "topic_name"),

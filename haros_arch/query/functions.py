@@ -16,7 +16,7 @@ from ..model import rosname
 from ..model.conditions import Condition, exclusive, same_conditions
 from ..model.runtime import Link, NodeInstance, Resource
 from ..model.source import Package
-from .absence import distance, similar_to, unknown_users
+from .absence import distance, same_setting, similar_to, unknown_users
 from .errors import QueryLimitError, QueryTypeError
 
 Charge = Callable[[int], None]
@@ -277,6 +277,7 @@ FUNCTIONS["is_infrastructure"] = Function("is_infrastructure", is_infrastructure
 # checks that claim an absence, and similar-name pairing through an index (absence.py)
 FUNCTIONS["unknown_users"] = Function("unknown_users", unknown_users, 2, 2, charged=True)
 FUNCTIONS["similar_to"] = Function("similar_to", similar_to, 2, 2, charged=True)
+FUNCTIONS["same_setting"] = Function("same_setting", same_setting, 2, 2, charged=True)
 
 
 # topics that rviz's tools publish when an operator clicks: 2D Pose Estimate, 2D Nav Goal

@@ -90,14 +90,16 @@ MAX_PARAM_ENTRIES = 100_000  # SetParameter-in-scope and own entries, over all n
 
 def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamEntry],
                 scope: Scope, where: Location) -> None:
-    found: dict[str, tuple[Any, Location]] = {}
+    # name -> (value, where it is set, the setting for several nodes that gave it, if
+    # one did: ``ParamDecl.setting``)
+    found: dict[str, tuple[Any, Location, str | None]] = {}
     # entries for particular nodes of files given to a node whose name is not known
     # yet, in file order: (pattern, name, value, location); a later value set for all
     # replaces them, as it would whatever name the node has
     pending: list[tuple[str, str, Any, Location]] = []
 
-    def put(name: str, leaf: Any, location: Location) -> None:
-        found[name] = (leaf, location)
+    def put(name: str, leaf: Any, location: Location, setting: str | None = None) -> None:
+        found[name] = (leaf, location, setting)
         pending[:] = [p for p in pending if p[1] != name]
 
     # where the node may get parameters we cannot see (a file not read, an entry not
@@ -111,9 +113,15 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
             unseen.append(location)
             return
         runner.model.nodes[-1].param_files.append((document, location))
+        # what the file's ``/**`` entries give every node it is given to (an entry for
+        # this node's name is this node's own): a setting for each of them
+        path = runner.value(entry.path, scope, location) if not (
+            len(entry.path) == 1 and isinstance(entry.path[0], e.FileRef)) else None
+        shared = path.literal if path is not None else None
         if UNKNOWN_MARK not in node:
+            every = _for_every_node(document, node) if shared else set()
             for name, leaf in naming.params_for_node(document, node):
-                put(name, leaf, location)
+                put(name, leaf, location, shared if name in every else None)
             return
         if naming.names_a_node(document):
             kept = _as_given(runner, entry, scope, location)
@@ -124,7 +132,7 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
         for pattern, params in naming.node_patterns(document):
             for name, leaf in naming.flatten(params):
                 if pattern == "/**":
-                    put(name, leaf, location)
+                    put(name, leaf, location, shared)
                 else:
                     pending.append((pattern, name, leaf, location))
 
@@ -142,7 +150,7 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
             read_file(value, location)
             continue
         for name, leaf in flat(key, convert(value, ev)):
-            put(name, leaf, location)
+            put(name, leaf, location, f"{location.file}:{location.line}:{location.column}")
     commands: dict[str, str] = {}
     for entry in entries:
         if isinstance(entry, e.ParamFile):
@@ -157,9 +165,9 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
             if command is not None:
                 commands[ev.value(written).text] = command
     owner = len(runner.model.nodes) - 1  # the declaration just appended
-    for name, (leaf, location) in found.items():
+    for name, (leaf, location, setting) in found.items():
         param = make_param(node, name, leaf, scope.conditions, location)
-        param.owner = owner
+        param.owner, param.setting = owner, setting
         param.command = commands.get(name)
         runner.model.params.append(param)
     for pattern, name, leaf, location in pending:  # after those they may replace
@@ -168,6 +176,20 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
         runner.model.params.append(param)
     if unseen:
         _unseen(runner, node, scope, unseen[0])
+
+
+def _for_every_node(document: Any, node: str) -> set[str]:
+    """The names a parameter file's ``/**`` entries give ``node`` that no entry for
+    this node's own name sets too."""
+    every: set[str] = set()
+    own: set[str] = set()
+    for pattern, params in naming.node_patterns(document):
+        names = {name for name, _ in naming.flatten(params)}
+        if pattern == "/**":
+            every |= names
+        elif naming.pattern_matches(pattern, node):
+            own |= names
+    return every - own
 
 
 def _unseen(runner: Runner, node: str, scope: Scope, location: Location) -> None:
