@@ -401,6 +401,11 @@ _INTERFACE_METHODS = ("declare_parameter", "undeclare_parameter", "has_parameter
 RCLCPP: dict[tuple[str, str], RosFunction] = {
     **{(cls, name): row for cls in RCLCPP_NODES for name, row in _RCLCPP_NODE.items()},
     **{(RCLCPP_PARAMETERS_INTERFACE, name): _RCLCPP_NODE[name] for name in _INTERFACE_METHODS},
+    # the options a node is built with set its parameters before any launch value is
+    # taken (topic_tools' relay: ``append_parameter_override("input_topic", args.at(1))``
+    # in its main, from the command line): a write of the parameter
+    ("rclcpp::NodeOptions", "append_parameter_override"): RosFunction(
+        "write", type_from=("value",), type_arg=1, on_handle=False),
 }
 RCLCPP_PARAMETER = "rclcpp::Parameter"  # set_parameter(rclcpp::Parameter("name", value))
 

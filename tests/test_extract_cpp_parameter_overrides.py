@@ -1,0 +1,42 @@
+"""``rclcpp::NodeOptions::append_parameter_override(name, value)`` sets a parameter of the
+node built with those options before any launch value: topic_tools' relay, throttle,
+drop, mux, demux and delay set their topics so from their command-line arguments in
+``main``. It is a write of the parameter, so a read of it is not "never set"."""
+
+from __future__ import annotations
+
+import os
+
+from haros_arch.extract.cpp import extract_cpp
+from haros_arch.pipeline import analyse
+from haros_arch.project import load
+from haros_arch.query import run_catalogue
+from haros_arch.workspace import scan
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.join(os.path.dirname(HERE), "fixtures", "cpp", "parameter_overrides")
+
+
+def test_a_parameter_override_is_a_write_under_its_conditions() -> None:
+    found = extract_cpp([os.path.join(ROOT, "src", "relayer", "src", "relay.cpp")],
+                        scan([ROOT]), cache_dir=None)
+    writes = [(c.name, c.location.line, [k.text for k in c.conditions])
+              for c in found.calls if c.kind == "write"]
+    assert writes == [
+        ("input_topic", 26, ["args.size() >= 2"]),
+        ("output_topic", 28, ["args.size() >= 2", "args.size() >= 3"]),
+        ("qos_depth", 32, []),  # chained on the options object
+        ("lazy", 32, []),
+    ]
+    # the program's arguments decide those conditions
+    assert all(k.program_args for c in found.calls if c.kind == "write"
+               for k in c.conditions)
+
+
+def test_a_read_of_an_overridden_parameter_is_not_never_set() -> None:
+    model = analyse(load(os.path.join(ROOT, "project.yaml")), {})
+    unset = [f.entities for f in run_catalogue(model) if f.rule == "parameter-read-not-set"]
+    assert unset == []
+    (relay,) = model.configurations
+    inputs = [p for p in relay.parameters if p.name == "/camera_info_relay/input_topic"]
+    assert inputs and inputs[0].is_set
