@@ -23,14 +23,15 @@ def test_a_parameter_override_is_a_write_under_its_conditions() -> None:
     writes = [(c.name, c.location.line, [k.text for k in c.conditions])
               for c in found.calls if c.kind == "write"]
     assert writes == [
-        ("input_topic", 26, ["args.size() >= 2"]),
-        ("output_topic", 28, ["args.size() >= 2", "args.size() >= 3"]),
-        ("qos_depth", 32, []),  # chained on the options object
-        ("lazy", 32, []),
+        ("input_topic", 29, ["args.size() >= 2"]),
+        ("output_topic", 31, ["args.size() >= 2", "args.size() >= 3"]),
+        ("qos_depth", 35, []),  # chained on the options object
+        ("lazy", 35, []),
     ]
-    # the program's arguments decide those conditions
+    # the program's arguments decide those conditions, and give the first two values
     assert all(k.program_args for c in found.calls if c.kind == "write"
                for k in c.conditions)
+    assert [c.program_arg for c in found.calls if c.kind == "write"] == [1, 2, None, None]
 
 
 def test_a_read_of_an_overridden_parameter_is_not_never_set() -> None:
@@ -40,3 +41,14 @@ def test_a_read_of_an_overridden_parameter_is_not_never_set() -> None:
     (relay,) = model.configurations
     inputs = [p for p in relay.parameters if p.name == "/camera_info_relay/input_topic"]
     assert inputs and inputs[0].is_set
+
+
+def test_the_instance_s_arguments_name_what_the_overrides_set() -> None:
+    model = analyse(load(os.path.join(ROOT, "project.yaml")), {})
+    (relay,) = model.configurations
+    (instance,) = relay.nodes
+    # arguments=["/camera/camera_info", "camera_info"]: input_topic and output_topic,
+    # which name the subscription and the publisher (in the node's namespace)
+    assert sorted((link.kind, link.resource.name) for link in instance.links
+                  if link.kind in ("publish", "subscribe")) == [
+        ("publish", "/camera_info"), ("subscribe", "/camera/camera_info")]

@@ -7,6 +7,7 @@ import shlex
 from collections.abc import Mapping, Sequence
 from dataclasses import replace
 from typing import Any
+from weakref import WeakKeyDictionary
 
 from .. import diagnostics as diag
 from ..diagnostics import Diagnostic
@@ -510,12 +511,55 @@ def _given_name(call: PrimitiveCall, instance: NodeInstance, resources: Resource
     value: str | None = call.name_default
     if isinstance(param, Parameter) and param.set_by_launch and isinstance(param.value, str):
         value = param.value
+    else:  # the node sets it itself from its command-line arguments
+        value = _argument_values(instance).get(param_name, value)
     if not value:  # none, or empty: no topic is named "" (rosbot's gz bridge guards it)
         return call.name
     if value.startswith(("/", "~")) and (
             call.name == UNKNOWN_MARK or call.name.endswith("/" + UNKNOWN_MARK)):
         return value  # a global or private name is not resolved in the handle's namespace
     return call.name.replace(UNKNOWN_MARK, value, 1)
+
+
+_ARGUMENT_VALUES: WeakKeyDictionary[NodeInstance, dict[str, str]] = WeakKeyDictionary()
+
+
+def _argument_values(instance: NodeInstance) -> dict[str, str]:
+    """The parameters the instance's code sets from its command-line arguments
+    (``PrimitiveCall.program_arg``: topic_tools' relay takes ``input_topic`` from its
+    first), by full name, with the arguments the launch file gives it; a write under a
+    condition (``if (args.size() >= 2)``, over the arguments) counts where the
+    argument is there."""
+    found = _ARGUMENT_VALUES.get(instance)
+    if found is not None:
+        return found
+    found = {}
+    writes = [] if instance.node is None else [
+        c for c in instance.node.calls if c.kind == "write" and c.program_arg is not None]
+    if writes:
+        try:
+            words = shlex.split(instance.args)
+        except ValueError:
+            words = []
+        if "--ros-args" in words:  # rclcpp takes these out (up to a lone "--")
+            start = words.index("--ros-args")
+            end = words.index("--", start) + 1 if "--" in words[start:] else len(words)
+            words = words[:start] + words[end:]
+        if instance.ros_version == 1:  # roscpp takes out remaps and special keys
+            words = [w for w in words if ":=" not in w]
+        positions: dict[str, set[int]] = {}
+        for write in writes:
+            assert write.program_arg is not None
+            if UNKNOWN_MARK not in write.name:
+                name = _node_scoped(write.name) if instance.ros_version == 2 else write.name
+                full = RosName.make(name, instance.namespace, instance.name).full
+                positions.setdefault(full, set()).add(write.program_arg)
+        # one argument per parameter: writes from different ones depend on conditions
+        # over the arguments not read here (throttle's "messages" against "bytes")
+        found = {full: words[at - 1] for full, (at, *others) in positions.items()
+                 if not others and at <= len(words)}
+    _ARGUMENT_VALUES[instance] = found
+    return found
 
 
 def element_calls(call: PrimitiveCall, instance: NodeInstance, resources: Resources

@@ -77,6 +77,11 @@ def _diagnostic(data: dict[str, Any]) -> Diagnostic:
                       str(data.get("message", "")), location(data.get("location")))
 
 
+def _program_arg(value: Any) -> int | None:
+    return value if isinstance(value, int) and not isinstance(value, bool) and (
+        0 < value < 1000) else None
+
+
 def call_from_data(c: dict[str, Any]) -> PrimitiveCall:
     """A call (a node's ``calls`` entry, or a link's own ``call``) from its data."""
     return PrimitiveCall(c.get("kind", "publish"), str(c.get("name", "")), c.get("type"),
@@ -91,6 +96,7 @@ def call_from_data(c: dict[str, Any]) -> PrimitiveCall:
                          handle_namespace=c.get("handle_namespace"),
                          deletes=bool(c.get("deletes", False)),
                          node_name=c.get("node_name"), name_each=c.get("name_each"),
+                         program_arg=_program_arg(c.get("program_arg")),
                          transport=c.get("transport"),
                          variable=c.get("variable"),
                          queue_size_missing=bool(c.get("queue_size_missing", False)),

@@ -108,6 +108,11 @@ class PrimitiveCall:
     # (robot_localization's ``imu0``, ``imu1``, ...: ``name_param`` "imu"), one call per
     # parameter set, from 0 up to the first one not set, as the code reads them
     name_each: str | None = field(default=None, metadata={"optional": True})
+    # a parameter write whose value is the process's K-th command-line argument, counted
+    # as rclcpp counts what ``init_and_remove_ros_arguments`` leaves (0: the program; 1:
+    # the first argument): topic_tools' relay sets ``input_topic`` from ``args.at(1)``.
+    # The graph takes the value from the arguments the launch file gives the instance
+    program_arg: int | None = field(default=None, metadata={"optional": True})
     # a call made through image_transport (``plugins.hosts.TRANSPORTS``): ``*`` for a
     # publisher, which also publishes the topic of every transport plugin it loads; for
     # a subscriber the transport its code names (``raw``, ``compressed``), or ``?`` when

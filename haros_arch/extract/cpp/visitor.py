@@ -679,6 +679,8 @@ class CallFinder:
             if declared is not None and declared[1] is not None:
                 self._declared[declared[0]] = declared[1]
         has_default, default = self._default(spec, args, scope)
+        program_arg = _program_argument(arg(spec.type_arg), scope) if (
+            spec.kind == "write") else None
         status = _status_read(spec, site, len(args) - shift)
         transport = spec.transport
         if transport is not None and arg(spec.transport_arg) is not None:
@@ -707,7 +709,7 @@ class CallFinder:
                 has_default=has_default, default=default,
                 searched=spec.searched, handle_namespace=handle_namespace,
                 deletes=spec.deletes, node_name=owner, transport=transport,
-                made_in=made_in))
+                made_in=made_in, program_arg=program_arg))
             if status is not None:
                 self._status_reads.append((status, self.calls[-1]))
             member = self._member(spec, call, shift) if len(names) == 1 else None
@@ -971,6 +973,55 @@ def _kept_value(out: Cursor, scope: Scope) -> tuple[bool, object]:
     if value is None:
         return False, None
     return True, _literal(value, where)
+
+
+# what rclcpp leaves of argv once it has taken its own arguments (``--ros-args ...``)
+_ARGUMENTS_LEFT = frozenset({"init_and_remove_ros_arguments", "remove_ros_arguments"})
+_ELEMENT = frozenset({"at", "operator[]"})
+
+
+def _program_argument(expr: Cursor | None, scope: Scope) -> int | None:
+    """K when ``expr`` is the process's K-th command-line argument: ``args.at(K)`` or
+    ``args[K]`` of a local that ``rclcpp::init_and_remove_ros_arguments(argc, argv)``
+    (or ``remove_ros_arguments``) initialises, or ``argv[K]`` of ``main``, through the
+    conversions to a parameter value; None otherwise."""
+    node = expr
+    for _depth in range(8):  # conversions and ParameterValue(...) around the element
+        if node is None:
+            return None
+        if node.kind == CursorKind.CALL_EXPR and node.spelling in _ELEMENT:
+            break
+        if node.kind == CursorKind.ARRAY_SUBSCRIPT_EXPR:
+            break
+        inner = [c for c in node.get_children() if c.kind.is_expression()]
+        if len(inner) != 1:
+            return None
+        node = inner[0]
+    else:
+        return None
+    parts = [c for c in node.get_children() if c.kind.is_expression()]
+    if len(parts) < 2:
+        return None
+    index = scope.integer(parts[-1])
+    if not isinstance(index, int) or isinstance(index, bool) or not 0 < index < 1000:
+        return None
+    holder = strip(parts[0])
+    if holder.kind == CursorKind.MEMBER_REF_EXPR:  # args.at: the object is its child
+        objects = [c for c in holder.get_children() if c.kind.is_expression()]
+        holder = strip(objects[0]) if objects else holder
+    variable = holder.referenced if holder.kind == CursorKind.DECL_REF_EXPR else None
+    if variable is None:
+        return None
+    if variable.kind == CursorKind.PARM_DECL:  # argv of main(argc, argv)
+        function = variable.semantic_parent
+        params = [c for c in function.get_children() if c.kind == CursorKind.PARM_DECL] \
+            if function is not None and function.spelling == "main" else []
+        return index if len(params) >= 2 and params[1] == variable else None
+    made = initializer(variable) if variable.kind == CursorKind.VAR_DECL else None
+    calls = [] if made is None else [
+        c for c in made.walk_preorder() if c.kind == CursorKind.CALL_EXPR
+        and c.spelling in _ARGUMENTS_LEFT]
+    return index if calls else None
 
 
 def _literal(expr: Cursor, scope: Scope) -> object:
