@@ -67,3 +67,36 @@ def test_environment_paths_are_not_hard_coded(write_tree):
         assert sorted(f.entities for f in found) == [
             ("parameter:/calibration",), ("parameter:/config",)]
     assert model.configurations[0].package_paths == ["/home/bob", "/srv/maps/lab.yaml"]
+
+
+ROS2_LAUNCH = """
+<launch>
+  <arg name="map_path" description="the map's folder"/>
+  <arg name="data_path" default="$(env HOME)/robot_data"/>
+  <node pkg="nav" exec="loader" name="loader">
+    <param name="map_file" value="$(var map_path)/lanelet2_map.osm"/>
+    <param name="model_path" value="$(var data_path)/models/net.onnx"/>
+    <param name="socket" value="/opt/robot/reader.sock"/>
+  </node>
+</launch>
+"""
+
+
+def test_ros2_environment_and_given_arguments_are_not_hard_coded(write_tree):
+    """A ROS 2 launch file's ``$(env HOME)`` follows the machine (Autoware's
+    ``data_path``, ``$(env HOME)/autoware_data``), and a path the configuration gives a
+    launch argument (``map_path:=/tmp/map``, as on the command line) is not one the
+    launch file hard-codes; a path written in the file is."""
+    root = write_tree({
+        "src/nav/package.xml": package_xml("nav", "ament_cmake"),
+        "src/nav/CMakeLists.txt": "project(nav)\n",
+        "src/nav/launch/map.launch.xml": ROS2_LAUNCH,
+        "project.yaml": "project: p\nconfigurations:\n  c:\n"
+                        "    launch: [nav/launch/map.launch.xml]\n"
+                        "    args: {map_path: /srv/maps/town}\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {"PATH": "", "HOME": "/home/bob"})
+    (rule,) = [r for r in load_catalogue() if r.id == "absolute-paths-in-launch"]
+    reloaded = from_data(json.loads(json.dumps(model_to_data(model))))
+    for found in (run_rule(rule, model), run_rule(rule, reloaded)):
+        assert sorted(f.entities for f in found) == [("parameter:/loader/socket",)]

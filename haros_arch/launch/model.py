@@ -113,6 +113,8 @@ class LaunchModel:
     # the values substitutions read from the environment (``$(env HOME)``,
     # ``$(optenv ROBOT_CONFIG /opt/robot)`` when set): paths under them follow the
     # machine that runs the launch file, not a folder the file hard-codes
+    # (and, per configuration, the values it gives the launch arguments: they come
+    # from its command line too)
     environment_values: list[str] = field(default_factory=list)
 
 

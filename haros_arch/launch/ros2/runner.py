@@ -76,6 +76,15 @@ class Runner:
         if found not in self.model.diagnostics:
             self.model.diagnostics.append(found)
 
+    def from_environment(self, name: str) -> str:
+        """The machine's environment variable ``name`` (it is there), noted as a value
+        the launch took from the environment (``LaunchModel.environment_values``): a
+        path under it follows the machine, not a folder the launch file hard-codes."""
+        value = self.environment[name]
+        if value not in self.model.environment_values:
+            self.model.environment_values.append(value)
+        return value
+
     def uses(self, package: str, location: Location) -> None:
         """A substitution asked for the folder of ``package`` (``?`` for parts not known)."""
         self.model.package_uses.append(PackageUse(package, location))
