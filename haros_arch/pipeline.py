@@ -315,4 +315,5 @@ def _load_launch(spec: ConfigurationSpec, project: Project, workspace: Workspace
         merged.args.update(loaded.args)
         merged.diagnostics.extend(loaded.diagnostics)
         merged.package_uses.extend(loaded.package_uses)
+        merged.environment_values.extend(loaded.environment_values)
     return merged

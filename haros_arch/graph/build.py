@@ -266,14 +266,21 @@ class _Applied(dict[str, str]):
 
 
 def package_paths(launch: LaunchModel, workspace: Workspace) -> list[str]:
-    """The folders (workspace roots, installed package roots) that launch values lead
-    into: ``$(find pkg)/maps/a.yaml`` is an absolute path here, but not a hard-coded one."""
+    """The folders (workspace roots, installed package roots, absolute paths the launch
+    files took from the environment) that launch values lead into: ``$(find
+    pkg)/maps/a.yaml`` or ``$(env HOME)/maps/a.yaml`` is an absolute path here, but not a
+    hard-coded one."""
     roots = {os.path.normpath(r) for r in (*workspace.roots,
                                            *installed_roots(workspace.environment)) if r}
+    # a value of the environment is a folder or the whole path ($(env MAP_FILE))
+    environment = {v.rstrip("/") for v in launch.environment_values
+                   if v.startswith("/") and v.strip("/") and "\n" not in v}
+    roots |= environment
     texts = [p.value for p in launch.params if isinstance(p.value, str)]
     texts += [d.args for d in launch.nodes]
     return sorted(root for root in roots
-                  if any(root.rstrip("/") + "/" in text for text in texts))
+                  if any(root.rstrip("/") + "/" in text or (
+                      root in environment and root in text.split()) for text in texts))
 
 
 TEST_FOLDERS = ("test", "tests")  # a package's folders of rostest / launch_testing files

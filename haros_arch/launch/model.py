@@ -104,6 +104,10 @@ class LaunchModel:
     # the packages whose folders a substitution asked for, where (``$(find pkg)``,
     # ``FindPackageShare``); the nodes' packages are in ``nodes``
     package_uses: list[PackageUse] = field(default_factory=list)
+    # the values substitutions read from the environment (``$(env HOME)``,
+    # ``$(optenv ROBOT_CONFIG /opt/robot)`` when set): paths under them follow the
+    # machine that runs the launch file, not a folder the file hard-codes
+    environment_values: list[str] = field(default_factory=list)
 
 
 def without_tests(model: LaunchModel) -> LaunchModel:

@@ -229,8 +229,8 @@ _FILE_SUFFIXES = (".yaml", ".yml", ".urdf", ".xacro", ".launch", ".xml", ".json"
 
 def is_absolute_path(charge: Charge, value: Any, portable: Any = ()) -> bool:
     """True when a value (or a word of it) looks like an absolute filesystem path that
-    is not under one of the ``portable`` folders (``config.package_paths``: where
-    ``$(find pkg)`` led)."""
+    is not one of the ``portable`` folders (``config.package_paths``: where ``$(find
+    pkg)`` led, what the launch files took from the environment) or under one."""
     if not isinstance(value, str):
         return False
     folders = [f.rstrip("/") + "/" for f in _items(portable) if isinstance(f, str)] \
@@ -238,7 +238,7 @@ def is_absolute_path(charge: Charge, value: Any, portable: Any = ()) -> bool:
     charge(1 + len(value) // 256 + len(folders))
     for word in value.replace("=", " ").split():
         word = word.strip("'\"")
-        if any(word.startswith(folder) for folder in folders):
+        if any(word.startswith(folder) or word == folder[:-1] for folder in folders):
             continue
         if word.startswith(_PATH_PREFIXES) or (
                 word.startswith("/") and word.lower().endswith(_FILE_SUFFIXES)):

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import os
 import re
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Iterator, Mapping
 
 from lxml import etree
 
@@ -64,11 +64,32 @@ REQUIRED: dict[str, tuple[str, ...]] = {
 }
 
 
+class _Recorded(Mapping[str, str]):
+    """The environment, noting in ``read`` each value a substitution takes from it."""
+
+    def __init__(self, environment: Mapping[str, str], read: list[str]) -> None:
+        self._environment = environment
+        self._read = read
+
+    def __getitem__(self, key: str) -> str:
+        value = self._environment[key]
+        if value not in self._read:
+            self._read.append(value)
+        return value
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._environment)
+
+    def __len__(self) -> int:
+        return len(self._environment)
+
+
 class Ros1Loader:
     def __init__(self, workspace: Workspace, environment: Mapping[str, str]) -> None:
         self.workspace = workspace
-        self.environment = environment
         self.model = LaunchModel()
+        self.environment: Mapping[str, str] = _Recorded(environment,
+                                                        self.model.environment_values)
         self.default_machine: str | None = None
         self.node_names: dict[str, list[tuple[Location, tuple[Condition, ...]]]] = {}
         self.includes = 0
