@@ -478,6 +478,12 @@ def test_ros1_spawned_controllers_without_a_manager_in_the_configuration_are_own
         ("subscribe", "/r/base/cmd_vel")]
     (missing,) = [d for d in config.diagnostics if d.code == "PLUGIN_NOT_FOUND"]
     assert missing.location.line == 5 and "JointStateController" in missing.message
+    # a controller whose class is not found is an instance all the same, of unknown
+    # interface: its parameters may be read (summit_xl's robotnik_base_control)
+    joints = config.node("/r/joints")
+    assert joints.origin == "plugin" and joints.node is None
+    assert joints.completeness == "unknown"
+    assert links_of(config, "/r/joints") == [("read", "/r/joints/type")]
 
 
 def test_ros1_spawned_controllers_go_to_the_instance_serving_their_manager():
