@@ -688,11 +688,17 @@ class CallFinder:
         base = arg(spec.name_arg)
         if transport is not None and self.ros2 and base is not None and scope.resolved(base):
             transport += "="  # a base the code resolved and remapped (image_pipeline's)
+        # ros::names::resolve("imu") + "/data": roscpp resolves and remaps "imu" in the
+        # node's namespace, whatever the handle's, then the rest within it, as it does a
+        # handle's namespace (graph.build._handle_name): the prefix is the call's
+        prefix = scope.names_prefix(base) if not self.ros2 and base is not None else None
         for written, source in names:
             # getName() is "~": only as the start of a name is it the node's own name
             name = _private(written[:1] + written[1:].replace("~", "?"))
             handle_namespace = None
-            if namespace is not None:
+            if prefix is not None and (written == prefix or written.startswith(prefix + "/")):
+                handle_namespace = prefix
+            elif namespace is not None:
                 name = join_name(namespace, name)
                 if namespace and not self.ros2 and not _private(written).startswith(
                         ("/", "~")):
