@@ -318,3 +318,64 @@ def test_a_member_a_base_class_header_reads_decides_a_condition_in_another_file(
     config = _config(root)
     assert _publishers(config, "/plain") == {"output": []}
     assert _publishers(config, "/indexed") == {"indices": [], "output": []}
+
+
+FALLBACK_NODE = """\
+#include <ros/ros.h>
+#include <sensor_msgs/MagneticField.h>
+#include <sensor_msgs/Imu.h>
+
+class Filter {
+ public:
+  Filter(ros::NodeHandle nh, ros::NodeHandle pnh) : nh_(nh), pnh_(pnh) {
+    if (!pnh_.getParam("use_mag", use_mag_)) use_mag_ = true;
+    if (!pnh_.getParam("publish_debug", debug_)) {
+      debug_ = false;
+    }
+    if (!pnh_.getParam("gain", gain_)) gain_ = 0.1; else gain_ = 2 * gain_;
+    if (use_mag_)
+      mag_ = nh_.subscribe("imu/mag", 5, &Filter::onMag, this);
+    if (debug_)
+      dbg_ = nh_.advertise<sensor_msgs::Imu>("imu/debug", 5);
+  }
+  void onMag(const sensor_msgs::MagneticField::ConstPtr& msg) {}
+ private:
+  ros::NodeHandle nh_, pnh_;
+  bool use_mag_, debug_;
+  double gain_;
+  ros::Subscriber mag_;
+  ros::Publisher dbg_;
+};
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "mag_filter");
+  Filter filter(ros::NodeHandle(), ros::NodeHandle("~"));
+  ros::spin();
+}
+"""
+
+
+def test_a_default_assigned_when_the_read_fails_is_no_other_write(write_tree):
+    """imu_tools: ``if (!pnh.getParam("use_mag", use_mag_)) use_mag_ = true;`` (also in
+    braces) runs only when the parameter is not there, so the member still holds the
+    parameter and ``if (use_mag_)`` is decided by the launch value or that default; an
+    ``else`` that writes the member again leaves it undecided."""
+    root = write_tree({
+        "src/mag/package.xml": package_xml("mag"),
+        "src/mag/CMakeLists.txt": "project(mag)\nadd_executable(mag src/mag.cpp)\n",
+        "src/mag/src/mag.cpp": FALLBACK_NODE,
+        "src/mag/launch/mag.launch": (
+            '<launch><node pkg="mag" type="mag" name="off">'
+            '<param name="use_mag" value="false"/></node>'
+            '<node pkg="mag" type="mag" name="on"/></launch>\n'),
+        "project.yaml": "project: p\nconfigurations:\n  c: [mag/launch/mag.launch]\n",
+    })
+    result = extract_cpp([str(root / "src/mag/src/mag.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    assert {c.name: (c.variable, c.default) for c in result.calls if c.kind == "read"} == {
+        "~use_mag": ("use_mag_", True), "~publish_debug": ("debug_", False),
+        "~gain": (None, None)}
+    config = _config(root)
+    links = {(link.node.name, link.kind, link.rosname.full): [c.text for c in link.conditions]
+             for link in config.links if link.kind in ("publish", "subscribe")}
+    assert links == {("/on", "subscribe", "/imu/mag"): []}
