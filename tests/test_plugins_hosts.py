@@ -469,7 +469,7 @@ def _ros1_controllers(decls, extra_nodes=()):
 
 def test_ros1_spawned_controllers_without_a_manager_in_the_configuration_are_own_instances():
     spawner = NodeDecl("/r/spawner", "controller_manager", "spawner", "/r/",
-                       args="base joints --timeout 10")
+                       args="base joints untyped --timeout 10")
     config = _ros1_controllers([spawner])
     base = config.node("/r/base")
     assert base.origin == "plugin" and base.node.name.endswith("DiffDriveController")
@@ -484,6 +484,8 @@ def test_ros1_spawned_controllers_without_a_manager_in_the_configuration_are_own
     assert joints.origin == "plugin" and joints.node is None
     assert joints.completeness == "unknown"
     assert links_of(config, "/r/joints") == [("read", "/r/joints/type")]
+    # no type at all: the manager refuses to load it, no instance
+    assert config.node("/r/untyped") is None
 
 
 def test_ros1_spawned_controllers_go_to_the_instance_serving_their_manager():

@@ -878,11 +878,13 @@ def ros1_controllers(config: Configuration, started: Sequence[tuple[NodeDecl, No
             if node is None and host is not None:
                 _missing(config, host, choice, owned)
             elif node is None:
-                # its own instance all the same, of unknown interface: the controller
-                # runs and reads its parameters, we cannot say which (unknown is not
-                # empty: they are not "set but never read")
                 config.diagnostics.append(_not_found(choice, spawner.name))
-                reader = _controller_instance(config, full, None, manager, choice)
+                # a type named but not found: its own instance all the same, of unknown
+                # interface, as the controller runs and reads its parameters (unknown
+                # is not empty: they are not "set but never read"); with no type the
+                # manager refuses to load it (controller_manager.cpp, loadController)
+                if typed is not None:
+                    reader = _controller_instance(config, full, None, manager, choice)
             elif host is not None:
                 out.append((host, [_under(c, controller, choice.conditions)
                                    for c in node.calls]))
