@@ -379,3 +379,85 @@ def test_a_default_assigned_when_the_read_fails_is_no_other_write(write_tree):
     links = {(link.node.name, link.kind, link.rosname.full): [c.text for c in link.conditions]
              for link in config.links if link.kind in ("publish", "subscribe")}
     assert links == {("/on", "subscribe", "/imu/mag"): []}
+
+
+SWITCHED_OFF_NODE = """\
+#include <ros/ros.h>
+#include <geometry_msgs/Twist.h>
+#include <sstream>
+#include <vector>
+
+// an operator<< of the package's own (ros_filter_utilities.h): the chain below, with an
+// operand of type T, is a call clang leaves unresolved in the class template
+std::ostream& operator<<(std::ostream& os, const std::vector<double>& values);
+
+template <class T>
+class Filter {
+ public:
+  Filter() : use_control_(false), mode_(0) {}
+  void load() {
+    ros::NodeHandle pnh("~");
+    std::vector<int> config;
+    pnh.param("use_control", use_control_, false);
+    if (use_control_) {
+      if (!pnh.getParam("control_config", config)) {
+        use_control_ = false;
+      }
+    }
+    pnh.param("mode", mode_, 0);
+    if (mode_ > 3) mode_ = 3;
+    debug_ << "size " << inputs_.size() << " use_control " << use_control_;
+  }
+  void start() {
+    ros::NodeHandle nh;
+    if (use_control_) sub_ = nh.subscribe("cmd_vel", 1, &Filter::onTwist, this);
+    if (mode_ == 3) pub_ = nh.advertise<geometry_msgs::Twist>("mode_three", 1);
+  }
+  void onTwist(const geometry_msgs::Twist::ConstPtr& msg) {}
+ private:
+  bool use_control_;
+  int mode_;
+  T inputs_;
+  std::ostringstream debug_;
+  ros::Subscriber sub_;
+  ros::Publisher pub_;
+};
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "ekf");
+  Filter<std::vector<int>> f;
+  f.load();
+  f.start();
+  ros::spin();
+}
+"""
+
+
+def test_a_member_the_code_also_sets_to_a_constant_is_decided_when_they_agree(write_tree):
+    """robot_localization's RosFilter: ``param("use_control", useControl_, false)`` and
+    ``useControl_ = false;`` when the control config is bad (ros_filter.cpp:924-951),
+    and prints it in a stream chain clang cannot resolve in the class template (1046):
+    with use_control unset the member is false whatever runs, so cmd_vel is not
+    subscribed; set true, it may still be switched off: undecided. ``mode_ = 3`` after
+    ``param("mode", mode_, 0)`` agrees with neither: undecided."""
+    root = write_tree({
+        "src/ekf/package.xml": package_xml("ekf"),
+        "src/ekf/CMakeLists.txt": "project(ekf)\nadd_executable(ekf src/ekf.cpp)\n",
+        "src/ekf/src/ekf.cpp": SWITCHED_OFF_NODE,
+        "src/ekf/launch/ekf.launch": (
+            '<launch><node pkg="ekf" type="ekf" name="unset"/>'
+            '<node pkg="ekf" type="ekf" name="on">'
+            '<param name="use_control" value="true"/></node></launch>\n'),
+        "project.yaml": "project: p\nconfigurations:\n  c: [ekf/launch/ekf.launch]\n",
+    })
+    result = extract_cpp([str(root / "src/ekf/src/ekf.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    assert {c.name: (c.variable, c.also) for c in result.calls if c.kind == "read"} == {
+        "~use_control": ("use_control_", [False]), "~control_config": (None, None),
+        "~mode": ("mode_", [3])}
+    config = _config(root)
+    links = {(link.node.name, link.kind, link.rosname.full): [c.text for c in link.conditions]
+             for link in config.links if link.kind in ("publish", "subscribe")}
+    assert links == {("/on", "subscribe", "/cmd_vel"): ["use_control_"],
+                     ("/unset", "publish", "/mode_three"): ["mode_ == 3"],
+                     ("/on", "publish", "/mode_three"): ["mode_ == 3"]}
