@@ -32,6 +32,39 @@ def xml_parser() -> etree.XMLParser:
                            huge_tree=False, remove_comments=True, remove_pis=True)
 
 
+_HIDDEN = re.compile(r"<!--.*?-->|<!\[CDATA\[.*?\]\]>|<\?.*?\?>|<!DOCTYPE[^\[>]*(\[.*?\])?\s*>",
+                     re.S)
+_START_TAG = re.compile(r"<([A-Za-z_][\w.\-:]*)")
+
+
+def start_lines(root: Any, data: bytes) -> None:
+    """Number each element of ``root`` (parsed from ``data``) by the line its start tag
+    begins on. libxml2 numbers an element by the line its start tag ends on, so a
+    ``<node`` whose attributes run over several lines was placed at its ``/>``. The
+    n-th element named ``tag`` is the n-th ``<tag`` of the text once comments, CDATA,
+    processing instructions and the DOCTYPE are blanked; a name whose counts differ
+    (namespaces, entities) keeps libxml2's lines."""
+    text = data.decode("utf-8", "replace")
+    text = _HIDDEN.sub(lambda m: re.sub(r"[^\n]", " ", m.group()), text)
+    found: dict[str, list[int]] = {}
+    line, at = 1, 0
+    for match in _START_TAG.finditer(text):
+        line += text.count("\n", at, match.start())
+        at = match.start()
+        found.setdefault(match.group(1), []).append(line)
+    elements: dict[str, list[Any]] = {}
+    for element in root.iter():
+        if isinstance(element.tag, str):
+            elements.setdefault(element.tag, []).append(element)
+    for tag, same in elements.items():
+        lines = found.get(tag, [])
+        if len(lines) != len(same):
+            continue
+        for element, begins in zip(same, lines, strict=True):
+            if isinstance(element.sourceline, int) and begins <= element.sourceline:
+                element.sourceline = begins
+
+
 _TOKEN = re.compile(r"\s*(\$\w+|\w[\w.\-]*|==|!=|>=|<=|>|<|\(|\)|\"[^\"]*\"|'[^']*')")
 
 

@@ -67,6 +67,68 @@ def test_subscribe_and_advertise_options(results: dict[str, CppResult]) -> None:
     assert results["options.cpp"].diagnostics == []
 
 
+SERVICE_OPTIONS = """\
+#include <ros/ros.h>
+#include <ros/callback_queue.h>
+#include <std_srvs/Empty.h>
+#include <std_srvs/Trigger.h>
+
+bool onReset(std_srvs::Empty::Request& req, std_srvs::Empty::Response& res) { return true; }
+
+class Mapper {
+ public:
+  explicit Mapper(ros::NodeHandle& nh) : nh_(nh) {
+    ros::AdvertiseServiceOptions fuse = ros::AdvertiseServiceOptions::create<std_srvs::Empty>(
+        "trigger_fusion", [&](auto& req, auto& res) { return true; }, ros::VoidConstPtr(),
+        &queue_);
+    fuse_ = nh_.advertiseService(fuse);
+  }
+ private:
+  ros::NodeHandle& nh_;
+  ros::CallbackQueue queue_;
+  ros::ServiceServer fuse_;
+};
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "svc_demo");
+  ros::NodeHandle nh("~");
+  ros::AdvertiseServiceOptions ops;
+  ops.init<std_srvs::Trigger>(
+      "ready", [](std_srvs::Trigger::Request&, std_srvs::Trigger::Response&) { return true; });
+  ros::ServiceServer a = nh.advertiseService(ops);
+  ros::AdvertiseServiceOptions two;
+  two.init<std_srvs::Empty::Request, std_srvs::Empty::Response>("reset", &onReset);
+  if (argc > 1) {
+    ros::ServiceServer b = nh.advertiseService(two);
+  }
+  Mapper mapper(nh);
+  ros::spin();
+}
+"""
+
+
+def test_advertise_service_options(tmp_path: Path) -> None:
+    """nh.advertiseService(ops) serves where it is called (handle, line, conditions),
+    the name, type and callback from ops.init<...>(...) or
+    AdvertiseServiceOptions::create<Service>(...) (elevation_mapping's services)."""
+    package = tmp_path / "src" / "svc"
+    (package / "src").mkdir(parents=True)
+    (package / "package.xml").write_text(
+        '<package format="2"><name>svc</name><version>1.0.0</version>'
+        '<description>d</description><maintainer email="a@b.c">a</maintainer>'
+        '<license>BSD</license><depend>roscpp</depend><depend>std_srvs</depend>'
+        '</package>\n')
+    source = package / "src" / "svc.cpp"
+    source.write_text(SERVICE_OPTIONS)
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    assert rows(result) == [
+        ("server", "~trigger_fusion", "std_srvs/Empty", None, None, 14, ()),
+        ("server", "~ready", "std_srvs/Trigger", None, None, 28, ()),
+        ("server", "~reset", "std_srvs/Empty", None, "onReset", 32, ("argc > 1",)),
+    ]
+    assert result.diagnostics == []
+
+
 def test_values_from_call_sites_in_the_same_file(results: dict[str, CppResult]) -> None:
     """Helpers that pass their name parameter to ROS are wrappers (``wrappers``): each
     call site is a call, with its own name, handle and queue, at the call site."""

@@ -576,3 +576,31 @@ def test_autoware_get_or_declare_parameter_without_autoware_utils(tmp_path) -> N
         ("declare", "frame", "str"), ("declare", "threshold", "double")]
     assert not [d for d in result.diagnostics if d.code in (
         "CPP_PARSE_ERROR", "CPP_INCLUDE_MISSING", "CPP_NAMES_DECLARED", "CPP_NODE_TO_UNKNOWN")]
+
+
+def test_a_message_filters_subscriber_takes_a_member_callback(tmp_path) -> None:
+    """imu_tools (noetic): ``sub->registerCallback(&C::cb, this)`` on a
+    message_filters::Subscriber, ros::Time::isSystemTime(), tf's
+    Matrix3x3::setRotation and tf2's Quaternion::normalize() parse: the errors made
+    the filters partial (an error in a function that calls the ROS API)."""
+    result = _extract(tmp_path, package_xml("imu", "catkin"), (
+        "#include <ros/ros.h>\n#include <sensor_msgs/Imu.h>\n"
+        "#include <message_filters/subscriber.h>\n#include <tf/transform_datatypes.h>\n"
+        "#include <tf2/LinearMath/Quaternion.h>\n"
+        "struct Filter {\n"
+        "  void cb(const sensor_msgs::Imu::ConstPtr& m);\n"
+        "  Filter(ros::NodeHandle& nh) : sub_(nh, \"imu/data_raw\", 5) {\n"
+        "    sub_.registerCallback(&Filter::cb, this);\n"
+        "    pub_ = nh.advertise<sensor_msgs::Imu>(\"imu/data\", 5);\n"
+        "    if (ros::Time::isSystemTime()) { ROS_INFO(\"wall\"); }\n"
+        "    tf::Matrix3x3 m; tf::Quaternion q; m.setRotation(q);\n"
+        "    tf2::Quaternion r; r.normalize();\n"
+        "  }\n"
+        "  message_filters::Subscriber<sensor_msgs::Imu> sub_;\n"
+        "  ros::Publisher pub_;\n"
+        "};\n"
+        "int main(int argc, char** argv) {\n"
+        "  ros::init(argc, argv, \"filter\"); ros::NodeHandle nh; Filter f(nh);\n}\n"))
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("subscribe", "imu/data_raw"), ("publish", "imu/data")]
+    assert [d.message for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"] == []

@@ -318,3 +318,146 @@ def test_a_member_a_base_class_header_reads_decides_a_condition_in_another_file(
     config = _config(root)
     assert _publishers(config, "/plain") == {"output": []}
     assert _publishers(config, "/indexed") == {"indices": [], "output": []}
+
+
+FALLBACK_NODE = """\
+#include <ros/ros.h>
+#include <sensor_msgs/MagneticField.h>
+#include <sensor_msgs/Imu.h>
+
+class Filter {
+ public:
+  Filter(ros::NodeHandle nh, ros::NodeHandle pnh) : nh_(nh), pnh_(pnh) {
+    if (!pnh_.getParam("use_mag", use_mag_)) use_mag_ = true;
+    if (!pnh_.getParam("publish_debug", debug_)) {
+      debug_ = false;
+    }
+    if (!pnh_.getParam("gain", gain_)) gain_ = 0.1; else gain_ = 2 * gain_;
+    if (use_mag_)
+      mag_ = nh_.subscribe("imu/mag", 5, &Filter::onMag, this);
+    if (debug_)
+      dbg_ = nh_.advertise<sensor_msgs::Imu>("imu/debug", 5);
+  }
+  void onMag(const sensor_msgs::MagneticField::ConstPtr& msg) {}
+ private:
+  ros::NodeHandle nh_, pnh_;
+  bool use_mag_, debug_;
+  double gain_;
+  ros::Subscriber mag_;
+  ros::Publisher dbg_;
+};
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "mag_filter");
+  Filter filter(ros::NodeHandle(), ros::NodeHandle("~"));
+  ros::spin();
+}
+"""
+
+
+def test_a_default_assigned_when_the_read_fails_is_no_other_write(write_tree):
+    """imu_tools: ``if (!pnh.getParam("use_mag", use_mag_)) use_mag_ = true;`` (also in
+    braces) runs only when the parameter is not there, so the member still holds the
+    parameter and ``if (use_mag_)`` is decided by the launch value or that default; an
+    ``else`` that writes the member again leaves it undecided."""
+    root = write_tree({
+        "src/mag/package.xml": package_xml("mag"),
+        "src/mag/CMakeLists.txt": "project(mag)\nadd_executable(mag src/mag.cpp)\n",
+        "src/mag/src/mag.cpp": FALLBACK_NODE,
+        "src/mag/launch/mag.launch": (
+            '<launch><node pkg="mag" type="mag" name="off">'
+            '<param name="use_mag" value="false"/></node>'
+            '<node pkg="mag" type="mag" name="on"/></launch>\n'),
+        "project.yaml": "project: p\nconfigurations:\n  c: [mag/launch/mag.launch]\n",
+    })
+    result = extract_cpp([str(root / "src/mag/src/mag.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    assert {c.name: (c.variable, c.default) for c in result.calls if c.kind == "read"} == {
+        "~use_mag": ("use_mag_", True), "~publish_debug": ("debug_", False),
+        "~gain": (None, None)}
+    config = _config(root)
+    links = {(link.node.name, link.kind, link.rosname.full): [c.text for c in link.conditions]
+             for link in config.links if link.kind in ("publish", "subscribe")}
+    assert links == {("/on", "subscribe", "/imu/mag"): []}
+
+
+SWITCHED_OFF_NODE = """\
+#include <ros/ros.h>
+#include <geometry_msgs/Twist.h>
+#include <sstream>
+#include <vector>
+
+// an operator<< of the package's own (ros_filter_utilities.h): the chain below, with an
+// operand of type T, is a call clang leaves unresolved in the class template
+std::ostream& operator<<(std::ostream& os, const std::vector<double>& values);
+
+template <class T>
+class Filter {
+ public:
+  Filter() : use_control_(false), mode_(0) {}
+  void load() {
+    ros::NodeHandle pnh("~");
+    std::vector<int> config;
+    pnh.param("use_control", use_control_, false);
+    if (use_control_) {
+      if (!pnh.getParam("control_config", config)) {
+        use_control_ = false;
+      }
+    }
+    pnh.param("mode", mode_, 0);
+    if (mode_ > 3) mode_ = 3;
+    debug_ << "size " << inputs_.size() << " use_control " << use_control_;
+  }
+  void start() {
+    ros::NodeHandle nh;
+    if (use_control_) sub_ = nh.subscribe("cmd_vel", 1, &Filter::onTwist, this);
+    if (mode_ == 3) pub_ = nh.advertise<geometry_msgs::Twist>("mode_three", 1);
+  }
+  void onTwist(const geometry_msgs::Twist::ConstPtr& msg) {}
+ private:
+  bool use_control_;
+  int mode_;
+  T inputs_;
+  std::ostringstream debug_;
+  ros::Subscriber sub_;
+  ros::Publisher pub_;
+};
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "ekf");
+  Filter<std::vector<int>> f;
+  f.load();
+  f.start();
+  ros::spin();
+}
+"""
+
+
+def test_a_member_the_code_also_sets_to_a_constant_is_decided_when_they_agree(write_tree):
+    """robot_localization's RosFilter: ``param("use_control", useControl_, false)`` and
+    ``useControl_ = false;`` when the control config is bad (ros_filter.cpp:924-951),
+    and prints it in a stream chain clang cannot resolve in the class template (1046):
+    with use_control unset the member is false whatever runs, so cmd_vel is not
+    subscribed; set true, it may still be switched off: undecided. ``mode_ = 3`` after
+    ``param("mode", mode_, 0)`` agrees with neither: undecided."""
+    root = write_tree({
+        "src/ekf/package.xml": package_xml("ekf"),
+        "src/ekf/CMakeLists.txt": "project(ekf)\nadd_executable(ekf src/ekf.cpp)\n",
+        "src/ekf/src/ekf.cpp": SWITCHED_OFF_NODE,
+        "src/ekf/launch/ekf.launch": (
+            '<launch><node pkg="ekf" type="ekf" name="unset"/>'
+            '<node pkg="ekf" type="ekf" name="on">'
+            '<param name="use_control" value="true"/></node></launch>\n'),
+        "project.yaml": "project: p\nconfigurations:\n  c: [ekf/launch/ekf.launch]\n",
+    })
+    result = extract_cpp([str(root / "src/ekf/src/ekf.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    assert {c.name: (c.variable, c.also) for c in result.calls if c.kind == "read"} == {
+        "~use_control": ("use_control_", [False]), "~control_config": (None, None),
+        "~mode": ("mode_", [3])}
+    config = _config(root)
+    links = {(link.node.name, link.kind, link.rosname.full): [c.text for c in link.conditions]
+             for link in config.links if link.kind in ("publish", "subscribe")}
+    assert links == {("/on", "subscribe", "/cmd_vel"): ["use_control_"],
+                     ("/unset", "publish", "/mode_three"): ["mode_ == 3"],
+                     ("/on", "publish", "/mode_three"): ["mode_ == 3"]}

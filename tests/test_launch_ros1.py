@@ -135,3 +135,24 @@ def test_malformed_xml(write_tree):
     assert [(d.code, d.location.line) for d in model.diagnostics] == [
         ("LAUNCH_XML_SYNTAX", 3)]
     assert model.nodes == []
+
+
+def test_an_element_is_located_where_its_start_tag_begins(write_tree):
+    """libxml2 numbers an element by the line its start tag ends on; a node whose
+    attributes run over several lines (summit_xl's controller spawners) is where its
+    ``<node`` is, past a comment and a CDATA section that hold ``<node`` too."""
+    launch = (
+        "<launch>\n"                                              # 1
+        "  <!-- <node name=\"old\" pkg=\"a\" type=\"b\"/> -->\n"  # 2
+        "  <node name=\"spawner\" pkg=\"cm\"\n"                   # 3
+        "        type=\"spawner\"\n"                              # 4
+        "        args=\"a b\"/>\n"                                # 5
+        "  <rosparam><![CDATA[text: <node>]]></rosparam>\n"       # 6
+        "  <node name=\"one\" pkg=\"p\" type=\"t\"><param\n"      # 7
+        "      name=\"rate\" value=\"2\"/></node>\n"              # 8
+        "</launch>\n")
+    model = load_launch(write_tree, launch)
+    assert [(n.name, n.location.line) for n in model.nodes] == [
+        ("/spawner", 3), ("/one", 7)]
+    assert {p.name: p.location.line for p in model.params} == {
+        "/text": 6, "/one/rate": 7}

@@ -474,6 +474,16 @@ def test_topic_tools_nodes_take_their_topics_from_their_arguments(write_tree):
     mux = _instance(config, "/mux")
     assert mux.completeness == "model" and "/mux/select" in {
         link.name for link in mux.links if link.kind == "server"}
+    # every private parameter a tool reads has a default in its source (getParam into a
+    # variable that holds a value): an unset one is no parameter-read-not-set
+    # (hector_slam's mapping_box.launch runs a throttle that sets none of them)
+    reads = {(name, link.name): (link.call.type, link.call.default)
+             for name in ("/relay", "/mux", "/slow")
+             for link in _instance(config, name).links if link.kind == "read"}
+    assert all(link.call.has_default for name in ("/relay", "/mux", "/slow")
+               for link in _instance(config, name).links if link.kind == "read")
+    assert reads[("/slow", "/slow/force_latch")] == ("bool", True)
+    assert reads[("/mux", "/mux/initial_topic")] == ("str", "")
 
 
 def test_a_ros1_spawner_calls_the_controller_manager_of_its_namespace_argument(write_tree):

@@ -469,7 +469,7 @@ def _ros1_controllers(decls, extra_nodes=()):
 
 def test_ros1_spawned_controllers_without_a_manager_in_the_configuration_are_own_instances():
     spawner = NodeDecl("/r/spawner", "controller_manager", "spawner", "/r/",
-                       args="base joints --timeout 10")
+                       args="base joints untyped --timeout 10")
     config = _ros1_controllers([spawner])
     base = config.node("/r/base")
     assert base.origin == "plugin" and base.node.name.endswith("DiffDriveController")
@@ -478,6 +478,14 @@ def test_ros1_spawned_controllers_without_a_manager_in_the_configuration_are_own
         ("subscribe", "/r/base/cmd_vel")]
     (missing,) = [d for d in config.diagnostics if d.code == "PLUGIN_NOT_FOUND"]
     assert missing.location.line == 5 and "JointStateController" in missing.message
+    # a controller whose class is not found is an instance all the same, of unknown
+    # interface: its parameters may be read (summit_xl's robotnik_base_control)
+    joints = config.node("/r/joints")
+    assert joints.origin == "plugin" and joints.node is None
+    assert joints.completeness == "unknown"
+    assert links_of(config, "/r/joints") == [("read", "/r/joints/type")]
+    # no type at all: the manager refuses to load it, no instance
+    assert config.node("/r/untyped") is None
 
 
 def test_ros1_spawned_controllers_go_to_the_instance_serving_their_manager():

@@ -57,7 +57,7 @@ def test_ros1_plugins_are_calls_of_the_gazebo_node_with_their_names_and_types():
     # unknown library said at its line
     codes = {(d.code, d.location.file, d.location.line) for d in config.diagnostics
              if d.code.startswith(("GAZEBO", "ROBOT"))}
-    assert codes == {("GAZEBO_NOT_STARTED", "bot_gazebo/launch/sim.launch", 6),
+    assert codes == {("GAZEBO_NOT_STARTED", "bot_gazebo/launch/sim.launch", 5),
                      ("GAZEBO_PLUGIN_UNKNOWN", "bot_description/urdf/bot.urdf.xacro", 43)}
     assert config.node("/gazebo").completeness == "unknown"
     (description,) = config.robot_descriptions

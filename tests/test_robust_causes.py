@@ -95,8 +95,9 @@ def test_check_reports_both_causes_on_a_launched_workspace(write_tree) -> None:
     assert [f.message for f in pinned] == [
         "/robot1/smoother is launched with global names its namespace cannot move "
         "(remaps: smoother/out:=/mux/input/teleop; nodelet manager: /base_manager)"]
+    # the line its <node starts on, not the one its start tag ends on
     assert (pinned[0].location.file, pinned[0].location.line) == (
-        "base/launch/robot.launch", 5)
+        "base/launch/robot.launch", 4)
 
 
 PYTHON2 = """\

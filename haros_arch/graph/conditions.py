@@ -264,6 +264,9 @@ def _member_values(instance: NodeInstance) -> Callable[..., object]:
             declared.get(id(link.resource), [link]) if link.call is not None and (
                 link.call.kind == "read" and not link.call.has_default) else [link])]
         values = [_read_value(link) for link in found]
+        # constants the code also assigns the member: one that differs leaves it unknown
+        values += [_typed(value, link.call.type) for link in found
+                   if link.call is not None for value in link.call.also or ()]
         first = values[0]
         if any(is_unknown(v) for v in values) or any(v != first for v in values[1:]):
             return next((v for v in values if is_unknown(v)),

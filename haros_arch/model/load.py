@@ -99,6 +99,7 @@ def call_from_data(c: dict[str, Any]) -> PrimitiveCall:
                          program_arg=_program_arg(c.get("program_arg")),
                          transport=c.get("transport"),
                          variable=c.get("variable"),
+                         also=c.get("also") if isinstance(c.get("also"), list) else None,
                          queue_size_missing=bool(c.get("queue_size_missing", False)),
                          camera_of=c.get("camera_of"))
 

@@ -126,6 +126,10 @@ class PrimitiveCall:
     # when that is the member's only write in the file; a source condition over the
     # member is then decided per instance by the parameter's value (graph.conditions)
     variable: str | None = field(default=None, metadata={"optional": True})
+    # ... and the constants the file's other code assigns that member as well
+    # (robot_localization's ``useControl_ = false;`` when the control config is bad):
+    # the condition is decided only when they agree with the parameter's value
+    also: list[Any] | None = field(default=None, metadata={"optional": True})
     # rospy: the call gives no queue_size at all (not even through *args / **kwargs): a
     # Publisher then publishes synchronously, in the caller's thread (rospy warns), a
     # Subscriber queues without bound; a queue_size the parse cannot value is not this

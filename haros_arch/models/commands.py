@@ -46,6 +46,22 @@ ROS2_VALUE_OPTIONS = {"-r", "--rate", "-p", "--print", "-t", "--times", "-w",
                       "--qos-profile", "--qos-depth", "--qos-history",
                       "--qos-reliability", "--qos-durability", "--max-wait-time-secs",
                       "--keep-alive", "--yaml-file"}
+# the private parameters each topic_tools node reads, with their type and the value the
+# tool keeps when the parameter is not set: every one is read by ``getParam(name, var)``
+# into a variable that holds a value before it (or ``param<T>(name, var, default)``), so
+# none fails when unset (ros_comm noetic-devel: relay.cpp:167-173, mux.cpp:52-56,314-315,
+# 331-333,370-371 (an unset or empty ``initial_topic`` selects the first input),
+# throttle.cpp:58-61,197-202)
+TOPIC_TOOLS_READS: dict[str, dict[str, tuple[str, Any]]] = {
+    "relay": {"~unreliable": ("bool", False), "~lazy": ("bool", False),
+              "~stealth": ("bool", False)},
+    "mux": {"~lazy": ("bool", False), "~latch": ("bool", False),
+            "~initial_topic": ("str", ""), "~wait_publisher_initialization": ("bool", False),
+            "~wait_publisher_second": ("double", 0.1)},
+    "demux": {},
+    "throttle": {"~wall_clock": ("bool", False), "~unreliable": ("bool", False),
+                 "~lazy": ("bool", False), "~force_latch": ("bool", True)},
+    "drop": {}}
 ROS2_QOS = {"--qos-depth": "depth", "--qos-history": "history",
             "--qos-reliability": "reliability", "--qos-durability": "durability"}
 
@@ -93,11 +109,7 @@ def _topic_tools(decl: NodeDecl, words: list[str]) -> Node | None:
     """A ROS 1 topic_tools node from its arguments (see the module's docstring)."""
     tool, args = decl.executable, [w for w in words if not w.startswith("__")]
     calls: list[tuple[CallKind, str, str | None]] = []  # (kind, name, type)
-    params = {"relay": ["~unreliable", "~lazy", "~stealth"],
-              "mux": ["~lazy", "~latch", "~initial_topic",
-                      "~wait_publisher_initialization", "~wait_publisher_second"],
-              "demux": [], "throttle": ["~wall_clock", "~unreliable", "~lazy",
-                                        "~force_latch"], "drop": []}.get(tool)
+    params = TOPIC_TOOLS_READS.get(tool)
     if params is None:
         return None
     if tool == "relay" and 1 <= len(args) <= 2:
@@ -125,8 +137,9 @@ def _topic_tools(decl: NodeDecl, words: list[str]) -> Node | None:
     made = [PrimitiveCall(kind, name, type_, queue_size=None if kind == "server" else (
         1 if name.endswith("/selected") else 10), latch=name.endswith("/selected"),
         location=decl.location, origin="arguments") for kind, name, type_ in calls]
-    made += [PrimitiveCall("read", name, location=decl.location, origin="arguments")
-             for name in params]
+    made += [PrimitiveCall("read", name, type_, location=decl.location, origin="arguments",
+                           has_default=True, default=default)
+             for name, (type_, default) in params.items()]
     node = _node(decl, "topic_tools", made[0], "cpp")
     node.calls = made
     return node

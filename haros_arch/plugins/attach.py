@@ -875,11 +875,16 @@ def ros1_controllers(config: Configuration, started: Sequence[tuple[NodeDecl, No
                             (typed.name,) if typed else ())
             node = _lookup(choice, index, workspace, models)
             reader = host
-            if node is None:
-                if host is not None:
-                    _missing(config, host, choice, owned)
-                else:
-                    config.diagnostics.append(_not_found(choice, spawner.name))
+            if node is None and host is not None:
+                _missing(config, host, choice, owned)
+            elif node is None:
+                config.diagnostics.append(_not_found(choice, spawner.name))
+                # a type named but not found: its own instance all the same, of unknown
+                # interface, as the controller runs and reads its parameters (unknown
+                # is not empty: they are not "set but never read"); with no type the
+                # manager refuses to load it (controller_manager.cpp, loadController)
+                if typed is not None:
+                    reader = _controller_instance(config, full, None, manager, choice)
             elif host is not None:
                 out.append((host, [_under(c, controller, choice.conditions)
                                    for c in node.calls]))
@@ -890,17 +895,24 @@ def ros1_controllers(config: Configuration, started: Sequence[tuple[NodeDecl, No
                         conditions=choice.conditions, origin="plugin")]))
                 continue
             else:
-                namespace = manager.rstrip("/") + "/"
-                reader = NodeInstance(full, node, namespace=namespace,
-                                      conditions=choice.conditions, location=choice.location,
-                                      origin="plugin", ros_version=1)
-                taken = sum(1 for n in config.nodes if n.name == full)
-                reader.id = f"node:{full}" + (f"#{taken + 1}" if taken else "")
-                config.nodes.append(reader)
+                reader = _controller_instance(config, full, node, manager, choice)
                 out.append((reader, [_under(c, controller, ()) for c in node.calls]))
             if reader is not None:
                 out.extend(_loading_reads(choice, reader, reader))
     return out
+
+
+def _controller_instance(config: Configuration, full: str, node: Node | None, manager: str,
+                         choice: Choice) -> NodeInstance:
+    """The node instance ``full`` a ROS 1 controller loaded by a manager the configuration
+    does not start stands for (of unknown interface when its class is not found)."""
+    namespace = manager.rstrip("/") + "/"
+    instance = NodeInstance(full, node, namespace=namespace, conditions=choice.conditions,
+                            location=choice.location, origin="plugin", ros_version=1)
+    taken = sum(1 for n in config.nodes if n.name == full)
+    instance.id = f"node:{full}" + (f"#{taken + 1}" if taken else "")
+    config.nodes.append(instance)
+    return instance
 
 
 def _relative(full: str, namespace: str) -> str:

@@ -281,15 +281,17 @@ FUNCTIONS["same_setting"] = Function("same_setting", same_setting, 2, 2, charged
 
 
 # topics that rviz's tools publish when an operator clicks: 2D Pose Estimate, 2D Nav Goal
-# (ROS 1 and ROS 2) and Publish Point; nodes subscribe to them to wait for a person
-_TOOL_INPUTS = frozenset({"/initialpose", "/move_base_simple/goal", "/goal_pose",
-                          "/clicked_point"})
+# (ROS 1 and ROS 2) and Publish Point; nodes subscribe to them to wait for a person,
+# also in a robot's namespace (summit_xl's amcl in /summit_xl: /summit_xl/initialpose,
+# where the operator points the tool)
+_TOOL_INPUTS = ("/initialpose", "/move_base_simple/goal", "/goal_pose", "/clicked_point")
 
 
 def is_tool_input(charge: Charge, name: Any) -> bool:
-    """True for a topic that an operator's tool (rviz) publishes by convention."""
+    """True for a topic that an operator's tool (rviz) publishes by convention, at the
+    root or in a namespace."""
     charge(1)
-    return isinstance(name, str) and name in _TOOL_INPUTS
+    return isinstance(name, str) and name.endswith(_TOOL_INPUTS)
 
 
 FUNCTIONS["is_tool_input"] = Function("is_tool_input", is_tool_input, charged=True)

@@ -440,15 +440,20 @@ UNRESOLVED_ROS1: dict[str, RosFunction] = {
 ALL: dict[tuple[str, str], RosFunction] = {**ROSCPP, **LIBRARIES, **RCLCPP,
                                             **RCLCPP_LIBRARIES, **ROS2_CONTROL, **AUTOWARE}
 
-# ``nh.subscribe(ops)`` / ``nh.advertise(ops)``: the call is made there (its handle,
-# location and conditions), with the topic, queue and type of the row that filled ``ops``
+# ``nh.subscribe(ops)`` / ``nh.advertise(ops)`` / ``nh.advertiseService(ops)``: the call is
+# made there (its handle, location and conditions), with the name, queue and type of the
+# row that filled ``ops``
 _SUBSCRIBE_OPTIONS = RosFunction(
     "subscribe", type_from=("template", "callback"), queue_arg=1, callback_arg=2)
 _ADVERTISE_OPTIONS = RosFunction("publish", type_from=("template",), queue_arg=1)
+_SERVICE_OPTIONS = RosFunction(
+    "server", type_from=("service-callback", "template"), callback_arg=1)
 OPTIONS: dict[tuple[str, str], RosFunction] = {
     ("ros::SubscribeOptions", "init"): _SUBSCRIBE_OPTIONS,
     ("ros::SubscribeOptions", "create"): _SUBSCRIBE_OPTIONS,
     ("ros::AdvertiseOptions", "init"): _ADVERTISE_OPTIONS,
     ("ros::AdvertiseOptions", "create"): _ADVERTISE_OPTIONS,
+    ("ros::AdvertiseServiceOptions", "init"): _SERVICE_OPTIONS,
+    ("ros::AdvertiseServiceOptions", "create"): _SERVICE_OPTIONS,
 }
 OPTION_CLASSES = frozenset(owner for owner, _ in OPTIONS)

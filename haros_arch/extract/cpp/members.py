@@ -9,8 +9,12 @@ passing it by non-const reference, a non-const method called on it); a construct
 member initialiser is its first value, not a write. A parameter read that stores into
 a member (its out argument, or ``member_ = nh.param<T>(..)`` / ``declare_parameter``)
 names the member in ``PrimitiveCall.variable`` only when that read is the member's one
-write in the file. The writes are those ``writes.writes_of`` reads. The same reading
-gives what each member of any type is assigned in the file's functions
+write in the file. In the ROS 1 idiom ``if (!nh.getParam("use_mag", use_mag_)) use_mag_
+= false;`` (imu_tools) the assignment, the only statement of an ``if`` on the negated
+read with no ``else``, runs exactly when the parameter is not there: it is the read's
+default (the visitor takes it as one), not another write. The writes are those
+``writes.writes_of`` reads. The same reading gives what each member of any type is
+assigned in the file's functions
 (``assignments``): a node handle member set once outside its class's constructors
 (``right_nh_.reset(new ros::NodeHandle(nh, "right"))``).
 """
@@ -44,6 +48,16 @@ def member_of(expr: Cursor | None) -> Cursor | None:
     return decl
 
 
+def _negates(node: Cursor, source: dict[str, bytes]) -> bool:
+    """Whether the unary operator ``node`` is ``!`` (or ``not``)."""
+    start = node.extent.start
+    data = source.get(start.file.name) if start.file is not None else None
+    if data is None:
+        return False
+    text = data[start.offset:start.offset + 4].decode("utf-8", "replace")
+    return text.startswith("!") or (text.startswith("not") and not text[3:4].isalnum())
+
+
 def _any_within(offsets: Sequence[int], start: int, end: int) -> bool:
     """Whether one of the sorted ``offsets`` is in ``[start, end]``."""
     index = bisect.bisect_left(offsets, start)
@@ -72,6 +86,9 @@ class MemberWrites:
         # member -> (value, index of the function) of each write that replaces its value
         self._values: dict[tuple[str, int], list[tuple[Cursor, int]]] = {}
         self._read: set[int] = set()
+        # the assignments of ``if (!read) member = value;``, which are no writes of
+        # their own but the read's default
+        self._skipped: set[Key] = set()
         self._index = 0  # of the function being read
         self._spans: list[tuple[str, int, int] | None] = []
         self._texts: list[bytes | None] = []
@@ -138,7 +155,36 @@ class MemberWrites:
             where = key_of(member)
             self.count[where] = self.count.get(where, 0) + 1
 
+    def _if_not_read(self, node: Cursor) -> None:
+        """Note ``if (!call) member = value;`` with ``member`` an argument of ``call``."""
+        children = list(node.get_children())
+        if len(children) != 2:  # an else, or an init-statement / a declaration
+            return
+        condition, body = strip(children[0]), children[1]
+        if condition.kind != CursorKind.UNARY_OPERATOR or not _negates(condition, self.source):
+            return
+        operands = list(condition.get_children())
+        call = strip(operands[0]) if len(operands) == 1 else None
+        if call is None or call.kind != CursorKind.CALL_EXPR:
+            return
+        if body.kind == CursorKind.COMPOUND_STMT:
+            statements = list(body.get_children())
+            if len(statements) != 1:
+                return
+            body = statements[0]
+        writes = [w for w in writes_of(body, self.source) if w.whole and w.value is not None]
+        member = member_of(writes[0].target) if len(writes) == 1 else None
+        done = key(body)
+        if member is None or done is None or not any(
+                member_of(argument) == member for argument in call.get_arguments()):
+            return
+        self._skipped.add(done)
+
     def _visit(self, node: Cursor) -> None:
+        if node.kind == CursorKind.IF_STMT:
+            self._if_not_read(node)
+        if self._skipped and key(node) in self._skipped:
+            return
         for write in writes_of(node, self.source):
             target, value = write.target, write.value
             member = member_of(target)

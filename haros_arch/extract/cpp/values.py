@@ -51,6 +51,16 @@ _TOKEN = re.compile(rb"[A-Za-z_]\w*|[-+]?(?:0[xX][0-9a-fA-F]+|\d+)[uUlL]*")
 _INT = re.compile(r"([-+]?(?:0[xX][0-9a-fA-F]+|\d+))[uUlL]*")
 
 
+def _names_resolve(target: Cursor) -> bool:
+    """roscpp's ``ros::names::resolve(name[, remap])``: ``name`` resolved in the node's
+    namespace and remapped. Its value is the name as written (the graph expands and
+    remaps it); a call named by it is told the resolved prefix (``names_prefix``)."""
+    parent = target.semantic_parent
+    grand = None if parent is None else parent.semantic_parent
+    return (target.spelling == "resolve" and parent is not None
+            and parent.spelling == "names" and grand is not None and grand.spelling == "ros")
+
+
 def render(parts: Parts) -> str:
     """The name with ``?`` for each unknown run of parts."""
     text: list[str] = []
@@ -297,7 +307,7 @@ class Scope:
         if target.spelling == "getName" and not args and target.semantic_parent is not None \
                 and target.semantic_parent.spelling == "this_node":
             return ("~",)  # ros::this_node::getName(): the node's own (private) name
-        if args and _resolver(target) is not None:
+        if args and (_resolver(target) is not None or _names_resolve(target)):
             return self.string(args[0], depth + 1)
         if (target.spelling == "getCameraInfoTopic" and len(args) == 1
                 and target.semantic_parent is not None
@@ -340,6 +350,32 @@ class Scope:
         only_expand = _resolver(target)
         return only_expand is not None and bool(args) and (
             only_expand >= len(args) or self.boolean(args[only_expand]) is False)
+
+    def names_prefix(self, cursor: Cursor, depth: int = 0) -> str | None:
+        """The relative name ``ros::names::resolve`` resolved at the start of the name
+        ``cursor`` holds (imu_tools' ``ros::names::resolve("imu") + "/data"``: ``imu``),
+        through variables, string copies and ``+``; None when it starts otherwise."""
+        cursor = strip(cursor)
+        if depth > MAX_DEPTH:
+            return None
+        if cursor.kind in (CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR):
+            decl = cursor.referenced
+            value = None if decl is None else self.variable(decl)
+            return None if value is None else self.names_prefix(value, depth + 1)
+        if cursor.kind != CursorKind.CALL_EXPR:
+            return None
+        args, target = written_arguments(cursor), cursor.referenced
+        if cursor.spelling == "operator+" and len(args) == 2:
+            return self.names_prefix(args[0], depth + 1)
+        if target is None or (target.kind == CursorKind.CONSTRUCTOR and len(args) == 1):
+            inner = operand(cursor) if target is None else args[0]
+            return None if inner is None else self.names_prefix(inner, depth + 1)
+        if not args or not _names_resolve(target):
+            return None
+        written = render(self.string(args[0], depth + 1))
+        if not written or "?" in written or written.startswith(("/", "~")):
+            return None
+        return written.rstrip("/")
 
     def integer(self, cursor: Cursor, depth: int = 0) -> int | None:
         if depth > MAX_DEPTH:

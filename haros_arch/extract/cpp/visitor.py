@@ -150,7 +150,7 @@ class CallFinder:
         self.wrappers = Wrappers(self)  # the file's functions that wrap the ROS API
         self.members: MemberWrites | None = None
         # parameter reads and the member variable each stores its value in
-        self._stored: list[tuple[PrimitiveCall, Cursor]] = []
+        self._stored: list[tuple[PrimitiveCall, Cursor, Key | None]] = []
         # (file, offset) of the macro expansions and #includes of the workspace's files:
         # a function's text that holds one does not show all its code
         self.opaque: list[tuple[str, int]] = []
@@ -172,22 +172,54 @@ class CallFinder:
         # make two calls (nav2's declare_or_get_parameter: a declaration and a read)
         stored: dict[tuple[str, int], dict[object, list[PrimitiveCall]]] = {}
         members: dict[tuple[str, int], Cursor] = {}
-        for read, member in self._stored:
+        calls: dict[tuple[str, int], set[Key]] = {}
+        for read, member, made_at in self._stored:
             members[place_of(member)] = member
             stored.setdefault(place_of(member), {}).setdefault(
                 read.location, []).append(read)
+            if made_at is not None:
+                calls.setdefault(place_of(member), set()).add(made_at)
         for key, sites in stored.items():
             member = members[key]
             made = [[(r.kind, r.name, r.handle_namespace, r.has_default, r.default,
                       r.conditions) for r in reads] for reads in sites.values()]
-            if self.members.writes(member) == len(sites) and all(m == made[0] for m in made):
-                for reads in sites.values():
-                    for read in reads:
-                        read.variable = member.spelling
+            if not all(m == made[0] for m in made):
+                continue
+            also = self._constants(member, len(sites), calls.get(key, set()))
+            if also is None:
+                continue
+            for reads in sites.values():
+                for read in reads:
+                    read.variable = member.spelling
+                    read.also = also or None
         self.facts = argument_facts(self.sites, self.namespaces, self.owned)
         for call in self.calls:  # get_parameter("p") of a declare_parameter("p", default)
             if call.name_param is not None and call.name_default is None:
                 call.name_default = self._declared.get(call.name_param)
+
+    def _constants(self, member: Cursor, sites: int, reads: set[Key]) -> list[object] | None:
+        """The member's writes in the file besides the reads (``sites`` of them, made at
+        ``reads``), when each assigns a literal: their values (none: ``[]``); None when
+        another write does something else (``++``, a computed value, an out argument)."""
+        assert self.members is not None
+        extra = self.members.writes(member) - sites
+        if extra == 0:
+            return []
+        values = [value for value, _ in self.members.assignments(member)
+                  if key_of(strip(value)) not in reads]
+        if extra < 0 or len(values) != extra:
+            return None
+        scope = Scope(None, self.macros, self.source, self.sites)
+        found: list[object] = []
+        for value in values:
+            if strip(value).kind not in _LITERALS:
+                return None
+            literal = _literal(value, scope)
+            if literal is None:
+                return None
+            if literal not in found:
+                found.append(literal)
+        return found
 
     def _definitions(self, parent: Cursor, top: bool = False) -> Iterator[Cursor]:
         for cursor in children_in(parent, self.owned):  # in the workspace's files
@@ -690,11 +722,17 @@ class CallFinder:
         base = arg(spec.name_arg)
         if transport is not None and self.ros2 and base is not None and scope.resolved(base):
             transport += "="  # a base the code resolved and remapped (image_pipeline's)
+        # ros::names::resolve("imu") + "/data": roscpp resolves and remaps "imu" in the
+        # node's namespace, whatever the handle's, then the rest within it, as it does a
+        # handle's namespace (graph.build._handle_name): the prefix is the call's
+        prefix = scope.names_prefix(base) if not self.ros2 and base is not None else None
         for written, source in names:
             # getName() is "~": only as the start of a name is it the node's own name
             name = _private(written[:1] + written[1:].replace("~", "?"))
             handle_namespace = None
-            if namespace is not None:
+            if prefix is not None and (written == prefix or written.startswith(prefix + "/")):
+                handle_namespace = prefix
+            elif namespace is not None:
                 name = join_name(namespace, name)
                 if namespace and not self.ros2 and not _private(written).startswith(
                         ("/", "~")):
@@ -714,7 +752,7 @@ class CallFinder:
                 self._status_reads.append((status, self.calls[-1]))
             member = self._member(spec, call, shift) if len(names) == 1 else None
             if member is not None:
-                self._stored.append((self.calls[-1], member))
+                self._stored.append((self.calls[-1], member, key_of(call)))
             if "?" in name and PLACEHOLDER not in name:
                 self.diagnostics.append(diag.make(
                     "CPP_DYNAMIC_NAME", location, kind=spec.kind, name=name))
@@ -1022,6 +1060,10 @@ def _program_argument(expr: Cursor | None, scope: Scope) -> int | None:
         c for c in made.walk_preorder() if c.kind == CursorKind.CALL_EXPR
         and c.spelling in _ARGUMENTS_LEFT]
     return index if calls else None
+
+
+_LITERALS = (CursorKind.CXX_BOOL_LITERAL_EXPR, CursorKind.INTEGER_LITERAL,
+             CursorKind.STRING_LITERAL)
 
 
 def _literal(expr: Cursor, scope: Scope) -> object:

@@ -78,10 +78,12 @@ def _call(call: Cursor, source: dict[str, bytes]) -> list[Write]:
     args = list(call.get_arguments())
     if call.spelling == "operator=" and len(args) == 2:
         return [Write(strip(args[0]), args[1], call, True)]
-    if call.referenced is None and len(args) == 2 and (
-        between(args[0], args[1], source) in _READING
-    ):
+    operator = between(args[0], args[1], source) if (
+        call.referenced is None and len(args) == 2) else None
+    if operator in _READING:
         return []  # ``a_ && f(x)`` in a template: an operator clang leaves unresolved
+    if operator == "<<" or (operator == "" and len(args) == 2 and _inserting(args[0])):
+        args = args[:1]  # ``out << "x is " << x_`` in a template inserts x_: reads it
     found: list[Write] = []
     for index, arg in enumerate(args):  # an lvalue passed as it is: a reference
         if arg.kind in _NAMES and arg.referenced is not None:
@@ -109,6 +111,33 @@ def _call(call: Cursor, source: dict[str, bytes]) -> list[Write]:
             else:
                 found.append(Write(obj, None, call, False))
     return found
+
+
+# output-only streams: ``in >> x_`` writes x_, and a stringstream may be read from
+_STREAMS = frozenset({"ostream", "ostringstream", "ofstream", "basic_ostream",
+                      "basic_ostringstream", "basic_ofstream"})
+
+
+def _inserting(left: Cursor) -> bool:
+    """Whether ``left`` is a chain of ``<<`` that starts at an output stream (in a macro,
+    ``RF_DEBUG(... << x_)``, where the operator's text is not at hand): what it inserts
+    is read, whatever the operator between ``left`` and the next operand."""
+    for _ in range(256):
+        left = strip(left)
+        if left.kind != CursorKind.CALL_EXPR:
+            break
+        args = list(left.get_arguments())
+        if len(args) == 2 and (left.referenced is None or left.spelling == "operator<<"):
+            left = args[0]
+        elif left.spelling == "operator<<" and len(args) == 1:
+            objects = [c for c in left.get_children() if c.kind.is_expression()]
+            if not objects:
+                return False
+            left = objects[0]
+        else:
+            break
+    spelling = left.type.get_canonical().spelling.split("<")[0].rstrip(" &")
+    return spelling.rpartition("::")[2] in _STREAMS
 
 
 def _smart_pointer(expr: Cursor) -> bool:

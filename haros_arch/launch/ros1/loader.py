@@ -18,7 +18,7 @@ from lxml import etree
 
 from ... import diagnostics as diag
 from ...files import read_bytes
-from ...manifest import xml_parser
+from ...manifest import start_lines, xml_parser
 from ...model.conditions import Condition, same_conditions
 from ...model.launch_tree import ArgOrigin, LaunchArg, LaunchCondition, LaunchItem, PackageUse
 from ...model.location import Location
@@ -248,6 +248,7 @@ class Ros1Loader:
             return None
         try:
             root = etree.fromstring(data, xml_parser())
+            start_lines(root, data)
         except etree.XMLSyntaxError as err:
             line, col = err.position if err.position else (0, 0)
             self.model.diagnostics.append(diag.make(

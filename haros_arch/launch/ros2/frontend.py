@@ -18,7 +18,7 @@ from lxml import etree
 from ... import diagnostics as diag
 from ... import safe_yaml
 from ...diagnostics import Diagnostic
-from ...manifest import xml_parser
+from ...manifest import start_lines, xml_parser
 from ...model.location import Location
 from ...workspace import Workspace
 from . import entities as e
@@ -335,6 +335,7 @@ def _plain(raw: Any) -> Any:
 # -- reading the files ---------------------------------------------------------------
 def xml_entities(data: bytes) -> Entity:
     root = etree.fromstring(data, xml_parser())
+    start_lines(root, data)
 
     def convert(el: Any) -> Entity:
         children = [convert(c) for c in el if isinstance(c.tag, str)]

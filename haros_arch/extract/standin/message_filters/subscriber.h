@@ -17,6 +17,7 @@ public:
   std::string getTopic() const;
   const ros::Subscriber& getSubscriber() const;
   template<class C> void registerCallback(const C& callback);
+  template<class C, class T> void registerCallback(const C& callback, T* object);
 };
 struct NullType {};
 namespace sync_policies {

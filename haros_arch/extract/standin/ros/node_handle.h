@@ -47,6 +47,30 @@ struct AdvertiseOptions {
   VoidConstPtr tracked_object;
   bool latch;
 };
+// what advertiseService(ops) takes; init<Service> / init<MReq, MRes> / create<Service>
+// hold the service name and callback
+struct AdvertiseServiceOptions {
+  AdvertiseServiceOptions();
+  template<class MReq, class MRes>
+  void init(const std::string& service, const boost::function<bool(MReq&, MRes&)>& callback);
+  template<class Service>
+  void init(const std::string& service,
+            const boost::function<bool(typename Service::Request&,
+                                       typename Service::Response&)>& callback);
+  template<class Service>
+  static AdvertiseServiceOptions create(
+      const std::string& service,
+      const boost::function<bool(typename Service::Request&,
+                                 typename Service::Response&)>& callback,
+      const VoidConstPtr& tracked_object, CallbackQueueInterface* queue);
+  std::string service;
+  std::string md5sum;
+  std::string datatype;
+  std::string req_datatype;
+  std::string res_datatype;
+  CallbackQueueInterface* callback_queue;
+  VoidConstPtr tracked_object;
+};
 class NodeHandle {
 public:
   NodeHandle(const std::string& ns = std::string(), const M_string& remappings = M_string());
@@ -123,6 +147,7 @@ public:
   ServiceServer advertiseService(const std::string& service,
                                  const boost::function<bool(MReq&, MRes&)>& callback,
                                  const VoidConstPtr& tracked_object = VoidConstPtr());
+  ServiceServer advertiseService(AdvertiseServiceOptions& ops);
   template<class Service>
   ServiceClient serviceClient(const std::string& service_name, bool persistent = false,
                               const M_string& header_values = M_string());

@@ -35,6 +35,8 @@ public:
   static void init();
   static bool isValid();
   static bool waitForValid();
+  static bool isSimTime();
+  static bool isSystemTime();
   double toSec() const;
   uint64_t toNSec() const;
   bool isZero() const;

@@ -60,6 +60,7 @@ public:
   void getRPY(double& roll, double& pitch, double& yaw) const;
   void getEulerYPR(double& yaw, double& pitch, double& roll) const;
   void setRPY(double roll, double pitch, double yaw);
+  void setRotation(const Quaternion& q);
   void getRotation(Quaternion& q) const;
   Matrix3x3 inverse() const;
   Matrix3x3 transpose() const;

@@ -51,6 +51,7 @@ public:
   double x() const; double y() const; double z() const; double w() const;
   double getAngle() const;
   Quaternion normalized() const;
+  Quaternion& normalize();
   Quaternion inverse() const;
   Quaternion operator*(const Quaternion& q) const;
 };
