@@ -3,7 +3,7 @@
 ``builtin`` wraps a safe Python builtin for known arguments; ``open`` gives a read-only
 handle on a workspace file and ``yaml.safe_load`` reads it with the safe loader;
 ``METHODS`` maps a method name (``str.format``, ``list.append``,
-``LaunchDescription.add_action``, ``LaunchConfiguration.perform``,
+``LaunchDescription.add_action`` / ``add_entity``, ``LaunchConfiguration.perform``,
 ``IfCondition.evaluate``...) to its handler. Calls not listed are never made.
 """
 
@@ -157,6 +157,8 @@ def m_evaluate(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> An
 
 
 def m_add_action(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``LaunchDescription.add_action`` and ``add_entity``, which launch makes one: the
+    entity may be a whole ``LaunchDescription``, whose actions run in its place."""
     if isinstance(owner, LaunchDescription) and a:
         owner.actions.append(a[0])
         return None
@@ -285,7 +287,8 @@ def m_xml(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
 
 METHODS: dict[str, Method] = {
     "toxml": m_xml, "toprettyxml": m_xml,
-    "add_action": m_add_action, "find": m_find, "read": m_read, "evaluate": m_evaluate,
+    "add_action": m_add_action, "add_entity": m_add_action, "find": m_find,
+    "read": m_read, "evaluate": m_evaluate,
     "append": m_list("append"), "extend": m_list("extend"),
     "insert": m_list("insert"), "items": m_dict("items"), "keys": m_dict("keys"),
     "values": m_dict("values"), "get": m_dict("get"), "update": m_dict("update"),
