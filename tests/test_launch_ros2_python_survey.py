@@ -26,3 +26,33 @@ def generate_launch_description():
     assert [n.name for n in model.nodes] == ["/r1"]
     assert "LAUNCH_PY_UNSUPPORTED" not in codes(model)
     assert "LAUNCH_ARG_UNSET" not in codes(model)
+
+
+def test_module_level_calls_fill_the_lists_the_launch_function_reads(write_tree):
+    """usb_cam's camera.launch.py: ``CAMERAS.append(CameraConfig(...))`` at module level
+    and a comprehension over CAMERAS in generate_launch_description. The append runs
+    when launch imports the file: the list is not empty, its item is not known, and
+    the node it makes has an unknown name, not no node at all."""
+    model, _ = run(write_tree, """
+from camera_config import CameraConfig
+
+CAMERAS = []
+CAMERAS.append(CameraConfig(name='camera1'))
+EXTRA = []
+for index in range(2):
+    EXTRA.append('extra_%d' % index)
+
+def generate_launch_description():
+    nodes = [Node(package='cam', executable='cam_node', name=camera.name,
+                  namespace=camera.namespace) for camera in CAMERAS]
+    nodes += [Node(package='p', executable='e', name=name) for name in EXTRA]
+    return LaunchDescription(nodes)
+""")
+    names = [n.name for n in model.nodes]
+    assert len(names) == 3 and "?" in names[0]
+    assert names[1:] == ["/extra_0", "/extra_1"]
+    messages = [d.message for d in model.diagnostics]
+    assert any("camera_config.CameraConfig" in m for m in messages)
+    assert any("camera.name (an attribute of a value not known statically)" in m
+               for m in messages)
+    assert not any("_Bound" in m or "module-level" in m for m in messages)

@@ -115,8 +115,10 @@ class Interpreter(Expressions):
             elif isinstance(stmt, ast.ClassDef):  # never run; a use of it is reported
                 self.globals[stmt.name] = Unknown(f"class {stmt.name} (not interpreted)")
             else:
-                self.unsupported(stmt, f"module-level {type(stmt).__name__} is not "
-                                       "interpreted (never run)")
+                # a call, loop or test at module level runs when launch imports the file
+                # (``CAMERAS.append(...)`` fills a list generate_launch_description
+                # reads): interpreted as in a function, what is not known says so
+                self.statement(stmt, self.globals)
         entry = self.globals.get("generate_launch_description")
         if not isinstance(entry, Func):
             self.diagnostics.append(diag.make(

@@ -221,6 +221,14 @@ class Expressions(Walker):
         return Unknown("subscript")
 
     def eval_Attribute(self, node: ast.Attribute, env: dict[str, Any]) -> Any:
+        value = self.attribute(node, env)
+        if isinstance(value, _Bound) and isinstance(value.owner, Unknown):
+            # ``camera.namespace`` of a camera not known: an unknown that says which
+            return Unknown(f"{_source(node)} (an attribute of a value not known statically)")
+        return value
+
+    def attribute(self, node: ast.Attribute, env: dict[str, Any]) -> Any:
+        """``owner.attr``; a method of a value waits for its call (``_Bound``)."""
         owner = self.eval(node.value, env)
         if isinstance(owner, Ref):
             if owner.qualified == "os" and node.attr == "environ":
@@ -233,7 +241,11 @@ class Expressions(Walker):
         return _Bound(owner, node.attr)
 
     def eval_Call(self, node: ast.Call, env: dict[str, Any]) -> Any:
-        func = self.eval(node.func, env)
+        if isinstance(node.func, ast.Attribute):  # a method, even of an unknown value
+            self.step()
+            func = self.attribute(node.func, env)
+        else:
+            func = self.eval(node.func, env)
         args: list[Any] = []
         for arg in node.args:
             if isinstance(arg, ast.Starred):
