@@ -56,3 +56,28 @@ def generate_launch_description():
     assert any("camera.name (an attribute of a value not known statically)" in m
                for m in messages)
     assert not any("_Bound" in m or "module-level" in m for m in messages)
+
+
+def test_a_list_joined_to_an_unknown_keeps_its_actions(write_tree):
+    """realsense2_camera's examples: ``helper.declare(...) + [Node(...), ...]`` where
+    the helper is not interpreted. The known actions stay; a LaunchDescription of a
+    value not known says so instead of being empty."""
+    model, _ = run(write_tree, """
+import helper_module
+
+def generate_launch_description():
+    return LaunchDescription(
+        helper_module.declare_arguments() + helper_module.more() + [
+            Node(package='rviz2', executable='rviz2', name='rviz2'),
+        ] + helper_module.tail() + [Node(package='p', executable='e', name='last')])
+""")
+    assert [n.name for n in model.nodes] == ["/rviz2", "/last"]
+    model, _ = run(write_tree, """
+import helper_module
+
+def generate_launch_description():
+    return LaunchDescription(helper_module.everything())
+""")
+    assert model.nodes == []
+    messages = [d.message for d in model.diagnostics]
+    assert any("launch description is not known statically" in m for m in messages)

@@ -231,7 +231,11 @@ def set_configuration(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
 
 def launch_description(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     initial = arg(a, k, 0, "initial_entities", default=[])
-    return LaunchDescription(list(initial) if isinstance(initial, (list, tuple)) else [])
+    if isinstance(initial, (list, tuple)):
+        return LaunchDescription(list(initial))
+    if initial is not None:  # its actions are not known: said, not taken as none
+        i.unsupported(n, "launch description is not known statically")
+    return LaunchDescription([])
 
 
 def parameters(i: Interpreter, value: Any, n: ast.AST) -> list[e.ParamEntry]:

@@ -194,6 +194,13 @@ class Expressions(Walker):
         if isinstance(op, ast.Add) and (is_stringy(left) or is_stringy(right)) and not (
                 isinstance(left, list) or isinstance(right, list)):
             return concat([left, right])
+        if isinstance(op, ast.Add) and (isinstance(left, list) != isinstance(right, list)) \
+                and all(isinstance(x, (list, Unknown, Lazy)) for x in (left, right)):
+            # ``unknown_actions() + [Node(...)]``: the known items keep their place, the
+            # unknown part (two unknowns added read as a Lazy text) stays one unknown
+            # item; what made it was reported
+            return [*(left if isinstance(left, list) else [_unknown_part(left)]),
+                    *(right if isinstance(right, list) else [_unknown_part(right)])]
         if isinstance(left, Unknown) or isinstance(right, Unknown):
             return Unknown("arithmetic on an unknown value")
         if isinstance(op, ast.Mod) and isinstance(left, str) and (
@@ -316,6 +323,10 @@ class Expressions(Walker):
             self.unsupported(gen, "comprehension filter not known statically")
             return False
         return all(tests)
+
+
+def _unknown_part(value: Any) -> Unknown:
+    return value if isinstance(value, Unknown) else Unknown("a list not known statically")
 
 
 @dataclass
