@@ -81,3 +81,88 @@ def generate_launch_description():
     assert model.nodes == []
     messages = [d.message for d in model.diagnostics]
     assert any("launch description is not known statically" in m for m in messages)
+
+
+HELPER = """
+import os
+from launch.actions import DeclareLaunchArgument
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+
+PARAMETERS = [{'name': 'camera_name', 'default': 'cam'},
+              {'name': 'log_level', 'default': 'info'}]
+
+def declare(parameters):
+    return [DeclareLaunchArgument(p['name'], default_value=p['default'])
+            for p in parameters]
+
+def setup(context, suffix=''):
+    name = LaunchConfiguration('camera_name' + suffix).perform(context)
+    return [Node(package='cam', executable='cam_node', name=name,
+                 arguments=['--log-level', LaunchConfiguration('log_level' + suffix)])]
+"""
+
+
+def test_a_helper_module_put_on_sys_path_is_read(write_tree):
+    """realsense2_camera's examples (``sys.path.append(<share>/launch)``; ``import
+    rs_launch``; ``OpaqueFunction(function=rs_launch.launch_setup)``) and usb_cam
+    (``from camera_config import ...``): a module of the workspace found on the
+    sys.path the file builds is interpreted like the file; its nodes are placed in it."""
+    model, _ = run(write_tree, """
+import sys
+import pathlib
+sys.path.append(str(pathlib.Path(__file__).parent.absolute()))
+sys.path.append(os.path.join(get_package_share_directory('pkg'), 'launch', 'helpers'))
+import cam_helpers
+from cam_helpers import declare as declare_them
+
+def generate_launch_description():
+    return LaunchDescription(declare_them(cam_helpers.PARAMETERS) + [
+        OpaqueFunction(function=cam_helpers.setup)])
+""", extra={"src/pkg/launch/helpers/cam_helpers.py": HELPER})
+    assert [n.name for n in model.nodes] == ["/cam"]
+    node = model.nodes[0]
+    assert node.location.file.endswith("launch/helpers/cam_helpers.py")
+    written = HELPER.lstrip("\n").splitlines()
+    assert written[node.location.line - 1].strip().startswith("return [Node(")
+    assert not any(d.severity == "warning" for d in model.diagnostics), model.diagnostics
+
+
+def test_a_helper_module_not_on_sys_path_is_not_read(write_tree):
+    """launch loads the file by its path and puts no folder on sys.path: ``import
+    cam_helpers`` without ``sys.path.append`` finds nothing of the workspace."""
+    model, _ = run(write_tree, """
+import cam_helpers
+
+def generate_launch_description():
+    return LaunchDescription(cam_helpers.declare(cam_helpers.PARAMETERS) + [
+        OpaqueFunction(function=cam_helpers.setup)])
+""", extra={"src/pkg/launch/cam_helpers.py": HELPER})
+    assert model.nodes == []
+    assert "LAUNCH_UNSUPPORTED" in codes(model)
+
+
+def test_helper_modules_bounded_cycles_and_folders_outside(write_tree, tmp_path):
+    """A helper that imports itself is read once (said); a folder outside the workspace
+    put on sys.path is never read from; a folder not known statically is said."""
+    outside = tmp_path / "elsewhere"
+    outside.mkdir()
+    (outside / "secret_helper.py").write_text("NODES = ['x']\n")
+    model, _ = run(write_tree, f"""
+import sys
+sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
+sys.path.append({str(outside)!r})
+sys.path.append(os.environ.get('NOT_SET_ANYWHERE'))
+import looping
+import secret_helper
+
+def generate_launch_description():
+    return LaunchDescription([Node(package='p', executable='e', name=n)
+                              for n in looping.NAMES] + [
+        Node(package='p', executable='e', name=secret_helper.NODES[0])])
+""", extra={"src/pkg/launch/looping.py": "import looping\nNAMES = ['a', 'b']\n"})
+    assert [n.name for n in model.nodes][:2] == ["/a", "/b"]
+    assert "x" not in model.nodes[2].name
+    messages = [d.message for d in model.diagnostics]
+    assert any("module looping imports itself" in m for m in messages)
+    assert any("sys.path.append of a folder not known statically" in m for m in messages)

@@ -28,6 +28,7 @@ from .python_values import (
     Context,
     Func,
     Lazy,
+    Module,
     Ref,
     _hashable,
     _opaque,
@@ -241,6 +242,11 @@ class Expressions(Walker):
             if owner.qualified == "os" and node.attr == "environ":
                 return _Environ()
             return Ref(f"{owner.qualified}.{node.attr}")
+        if isinstance(owner, Module):  # a module of the workspace the file imported
+            if node.attr in owner.names:
+                return owner.names[node.attr]
+            return self.unsupported(node, f"{owner.name}.{node.attr} is not defined in "
+                                          f"{owner.name} as read here")
         if isinstance(owner, Context) and node.attr == "launch_configurations":
             return owner
         if isinstance(owner, PurePosixPath) and node.attr in _PATH_ATTRIBUTES:

@@ -10,6 +10,7 @@ handle on a workspace file and ``yaml.safe_load`` reads it with the safe loader;
 from __future__ import annotations
 
 import ast
+import os
 from collections.abc import Callable
 from pathlib import PurePosixPath
 from typing import TYPE_CHECKING, Any
@@ -253,6 +254,14 @@ def m_path(name: str) -> Method:
     return call
 
 
+def m_absolute(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``Path.absolute()`` / ``resolve()`` of a path that is absolute already (one under
+    ``__file__``): itself, normalised; the current folder is not known here."""
+    if isinstance(owner, PurePosixPath) and owner.is_absolute() and not a and not k:
+        return PurePosixPath(os.path.normpath(str(owner)))
+    return Unknown("Path.absolute() of a path not known to be absolute")
+
+
 XACRO_NOT_RUN = "xacro is never run here; the document it makes is unknown"
 
 
@@ -294,6 +303,7 @@ METHODS: dict[str, Method] = {
     "values": m_dict("values"), "get": m_dict("get"), "update": m_dict("update"),
     "copy": m_dict("copy"), "perform": m_str("perform"),
     **{name: m_path(name) for name in ("as_posix", "joinpath", "with_name", "with_suffix")},
+    "absolute": m_absolute, "resolve": m_absolute,
     **{name: m_str(name) for name in (
         "format", "join", "replace", "split", "strip", "lstrip", "rstrip", "lower", "upper",
         "startswith", "endswith", "capitalize", "title", "rsplit", "removeprefix",

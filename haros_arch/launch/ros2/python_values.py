@@ -75,6 +75,16 @@ class Ref:
     qualified: str
 
 
+@dataclass(eq=False)
+class Module:
+    """A Python file of the workspace that the launch file imports by its name from a
+    folder it put on ``sys.path``: its module-level names, as interpreted here."""
+
+    name: str
+    path: str
+    names: dict[str, Any]
+
+
 @dataclass
 class Func:
     node: ast.FunctionDef | ast.Lambda
