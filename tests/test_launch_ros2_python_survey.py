@@ -166,3 +166,30 @@ def generate_launch_description():
     messages = [d.message for d in model.diagnostics]
     assert any("module looping imports itself" in m for m in messages)
     assert any("sys.path.append of a folder not known statically" in m for m in messages)
+
+
+def test_copy_and_deepcopy_of_known_values(write_tree):
+    """realsense2_camera's rs_dual_camera_launch.py: ``copy.deepcopy(params)`` then a
+    suffix on each copy's name, for two cameras; the original stays as it was."""
+    model, _ = run(write_tree, """
+import copy
+from copy import copy as shallow
+
+PARAMS = [{'name': 'camera_name', 'default': 'cam'}]
+
+def duplicate(params, suffix):
+    local = copy.deepcopy(params)
+    for p in local:
+        p['name'] += suffix
+    return local
+
+def generate_launch_description():
+    first, second = duplicate(PARAMS, '1'), duplicate(PARAMS, '2')
+    same = shallow(PARAMS)
+    same.append({'name': 'extra'})
+    return LaunchDescription([Node(package='p', executable='e', name=p['name'])
+                              for p in first + second + PARAMS + same])
+""")
+    assert [n.name for n in model.nodes] == [
+        "/camera_name1", "/camera_name2", "/camera_name", "/camera_name", "/extra"]
+    assert "LAUNCH_PY_UNSUPPORTED" not in codes(model)

@@ -39,6 +39,8 @@ from .python_methods import (
 )
 from .python_nav2 import NAV2_COMMON
 from .python_values import (
+    MAX_DEPTH,
+    PLAIN,
     Budget,
     Context,
     LaunchDescription,
@@ -510,6 +512,26 @@ def parameter_value(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
                         as_text)
 
 
+def copy_of(deep: bool) -> Builder:
+    """``copy.copy`` / ``copy.deepcopy`` of a list, tuple or dict (nested ones too when
+    deep): new containers, the same items (strings, actions and substitutions are
+    never changed in place here)."""
+    def dup(value: Any, depth: int) -> Any:
+        if depth > 0 and isinstance(value, list):
+            return [dup(v, depth - 1) for v in value]
+        if depth > 0 and isinstance(value, dict):
+            return {k: dup(v, depth - 1) for k, v in value.items()}
+        if depth > 0 and isinstance(value, tuple):
+            return tuple(dup(v, depth - 1) for v in value)
+        return value
+
+    def build(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+        if len(a) != 1 or k or not isinstance(a[0], (list, tuple, dict, *PLAIN)):
+            return Unknown("copy of a value not known statically")
+        return dup(a[0], MAX_DEPTH if deep else 1)
+    return build
+
+
 SCALARS = (str, int, float, bool, list, tuple, dict, type(None))
 API: dict[str, Builder] = {
     "LaunchDescription": launch_description,
@@ -584,6 +606,7 @@ API: dict[str, Builder] = {
     "print": ignored, "isinstance": lambda i, a, k, n: Unknown("isinstance"),
     "all": builtin(all, list, tuple), "any": builtin(any, list, tuple),
     "open": open_file, "safe_load": safe_load,
+    "copy": copy_of(False), "deepcopy": copy_of(True),
     "process_file": xacro_process_file, "process": xacro_process,
 }
 BUILTINS = frozenset(("len", "str", "repr", "int", "float", "bool", "list", "tuple", "dict",
