@@ -193,3 +193,73 @@ def generate_launch_description():
     assert [n.name for n in model.nodes] == [
         "/camera_name1", "/camera_name2", "/camera_name", "/camera_name", "/extra"]
     assert "LAUNCH_PY_UNSUPPORTED" not in codes(model)
+
+
+def _conditional(model) -> dict[str, bool]:
+    return {n.name: bool(n.conditions) for n in model.nodes}
+
+
+def test_a_return_under_a_test_not_known_is_one_of_the_outcomes(write_tree):
+    """realsense2_description's view_model.launch.py: ``if 'model' not in params:
+    print(usage); return LaunchDescription()`` with params from sys.argv. The early
+    return is one outcome; the nodes after it run under the other branch's test."""
+    model, _ = run(write_tree, """
+import sys
+
+def generate_launch_description():
+    params = dict([aa for aa in [aa.split(':=') for aa in sys.argv] if len(aa) == 2])
+    if 'model' not in params:
+        print('USAGE')
+        return LaunchDescription([Node(package='p', executable='usage', name='usage')])
+    return LaunchDescription([Node(package='rviz2', executable='rviz2', name='rviz2')])
+""")
+    assert _conditional(model) == {"/usage": True, "/rviz2": True}
+    rviz = model.nodes[1]
+    assert any("'model' not in params" in str(c) for c in rviz.conditions)
+
+
+def test_both_branches_returning_and_known_tests_are_as_before(write_tree):
+    model, _ = run(write_tree, """
+def pick(flag):
+    if flag:
+        return [Node(package='p', executable='e', name='yes')]
+    else:
+        return [Node(package='p', executable='e', name='no')]
+    return [Node(package='p', executable='e', name='never')]
+
+def generate_launch_description():
+    known = pick(True)
+    unknown = pick(os.environ.get('NOT_SET_HERE_EITHER') == '1')
+    return LaunchDescription(known + unknown)
+""")
+    assert [n.name for n in model.nodes] == ["/yes", "/yes", "/no"]
+    assert [bool(n.conditions) for n in model.nodes] == [False, True, True]
+
+
+def test_a_loop_over_a_value_not_known_may_make_its_nodes(write_tree):
+    """A ``for`` statement or a comprehension over a value not known statically
+    (``os.listdir``, ``sys.argv``, a helper's result) runs its body once on an unknown
+    item, under the loop: a conditional node of unknown name, not no node at all."""
+    model, _ = run(write_tree, """
+import sys
+
+def generate_launch_description():
+    nodes = []
+    for robot in sys.argv[1:]:
+        nodes.append(Node(package='p', executable='driver', name=robot + '_driver'))
+        nodes.append(Node(package='p', executable='fixed', name='fixed'))
+    devices = [d for d in os.listdir('/dev') if d.startswith('video')]
+    cameras = [Node(package='cam', executable='cam_node', name=d) for d in devices]
+    listed = dict([(d, len(d)) for d in devices])
+    return LaunchDescription(nodes + cameras + [
+        Node(package='p', executable='e', name='lister', arguments=[', '.join(devices)],
+             parameters=[listed])])
+""")
+    names = [n.name for n in model.nodes]
+    assert len(names) == 4 and "?" in names[0] and names[1] == "/fixed" and "?" in names[2]
+    # the loops' own nodes are conditional; a node made later from the list such a
+    # loop made is named '?' (the list holds one item not known, not a condition)
+    assert [bool(n.conditions) for n in model.nodes][:2] == [True, True]
+    assert not model.nodes[3].conditions
+    assert [n.executable for n in model.nodes] == ["driver", "fixed", "cam_node", "e"]
+    assert not any("fails" in d.message for d in model.diagnostics)

@@ -74,6 +74,8 @@ class Interpreter(Expressions):
         self.limits = LIMITS
         self.depth = 0
         self.guards: list[str] = []  # texts of unknown Python `if` tests we are under
+        # per function being run: the values it returned under a test not known
+        self.returns: list[list[Any]] = []
         # folders the file put on sys.path (sys.path.append), where `import name` looks
         self.search: list[str] = []
         # modules imported from them, by source path (None: being read, or unreadable)
@@ -324,16 +326,53 @@ class Interpreter(Expressions):
             self.block(stmt.orelse, env)
         else:
             text = _source(stmt.test)
-            self.guards.append(text)
-            try:
-                self.block(stmt.body, env)
-            finally:
-                self.guards.pop()
-            self.guards.append(f"not ({text})")
-            try:
-                self.block(stmt.orelse, env)
-            finally:
-                self.guards.pop()
+            taken = self.branch(stmt.body, env, text)
+            left = self.branch(stmt.orelse, env, f"not ({text})")
+            if taken is not None and left is not None:  # both return: so does the if
+                raise _Return(self.either([taken.value, left.value]))
+            returned = taken or left
+            if returned is not None:
+                # one branch returns: that value is one the function may give, and
+                # the rest of the function runs only under the other branch's test
+                if not self.returns:
+                    raise returned
+                self.returns[-1].append(returned.value)
+                self.guards.append(text if taken is None else f"not ({text})")
+
+    def branch(self, body: list[ast.stmt], env: dict[str, Any], guard: str
+               ) -> _Return | None:
+        """One branch of an ``if`` whose test is not known, under that test; its
+        ``return``, if it returns."""
+        self.guards.append(guard)
+        try:
+            self.block(body, env)
+        except _Return as ret:
+            return ret
+        finally:
+            self.guards.pop()
+        return None
+
+    def either(self, values: list[Any]) -> Any:
+        """What a function gives that returns one of ``values`` (a test not known
+        statically decides): the actions of all when they are actions (each made under
+        its branch's test), the value when they agree, else an unknown."""
+        if all(v is None or isinstance(v, (e.Action, list, tuple, LaunchDescription))
+               for v in values) and any(v is not None for v in values):
+            actions: list[Any] = []
+            for value in values:
+                if isinstance(value, LaunchDescription):
+                    actions.extend(value.actions)
+                elif isinstance(value, (list, tuple)):
+                    actions.extend(value)
+                elif value is not None:
+                    actions.append(value)
+            if all(v is None or isinstance(v, (list, tuple)) for v in values):
+                return actions  # lists of actions stay a list (``helper() + [...]``)
+            return LaunchDescription(actions)
+        first = values[0]
+        if all(type(v) is type(first) and v == first for v in values):
+            return first
+        return Unknown("one of several return values (a test not known statically)")
 
     def with_(self, stmt: ast.With, env: dict[str, Any]) -> None:
         """``with open(path) as f:``: a read-only handle on a file we may read."""
@@ -368,6 +407,19 @@ class Interpreter(Expressions):
     def for_(self, stmt: ast.For, env: dict[str, Any]) -> None:
         items = self.iterable(self.eval(stmt.iter, env), stmt.iter)
         if items is None:
+            # the loop may run any number of times: its body once, on an item not
+            # known, under that loop (what it makes may run, named '?' where it is
+            # named after the item), rather than never
+            self.assign(stmt.target, Unknown(f"an item of {_source(stmt.iter)}"), env)
+            try:
+                returned = self.branch(stmt.body, env, f"for {_source(stmt.target)} in "
+                                                       f"{_source(stmt.iter)}")
+            except (_Break, _Continue):
+                returned = None
+            if returned is not None:  # it may return there, or run on
+                if not self.returns:
+                    raise returned
+                self.returns[-1].append(returned.value)
             return
         for item in items:
             self.step()
@@ -449,11 +501,17 @@ class Interpreter(Expressions):
                                          if k not in positional}
             if isinstance(func.node, ast.Lambda):
                 return self.eval(func.node.body, env)
+            self.returns.append([])
+            guards = len(self.guards)
+            result: Any = None
             try:
                 self.block(func.node.body, env)
             except _Return as ret:
-                return ret.value
-            return None
+                result = ret.value
+            finally:
+                maybe = self.returns.pop()
+                del self.guards[guards:]
+            return self.either([*maybe, result]) if maybe else result
         finally:
             self.depth = max(self.depth - 1, 0)
             self.path = outer

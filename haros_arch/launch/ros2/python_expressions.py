@@ -315,20 +315,54 @@ class Expressions(Walker):
     def enter(self, env: Any) -> Any:
         return dict(env, __closure__=env)
 
-    def iterate(self, gen: ast.comprehension, env: Any) -> list[Any]:
-        return self.iterable(self.eval(gen.iter, env), gen.iter) or []
+    def comprehension(self, generators: list[ast.comprehension], env: Any,
+                      emit: Callable[[Any], None]) -> None:
+        """The evaluator's comprehension, where what is not known is not taken as
+        nothing: a loop over a value not known makes one item, not known, under that
+        loop; an item whose filter is not known is kept under that filter (its actions
+        may run), as an ``if`` of a test not known runs its body."""
+        def loop(index: int, scope: Any) -> None:
+            if index == len(generators):
+                emit(scope)
+                return
+            gen = generators[index]
+            items = self.iterable(self.eval(gen.iter, scope), gen.iter)
+            guard = None
+            if items is None:
+                guard = f"for {_source(gen.target)} in {_source(gen.iter)}"
+                items = [Unknown(f"an item of {_source(gen.iter)}")]
+                self.guards.append(guard)
+            try:
+                for item in items:
+                    self.step()
+                    self.let(gen.target, item, scope)
+                    tests = [self.truth(self.eval(cond, scope)) for cond in gen.ifs]
+                    if False in tests:
+                        continue
+                    unknown = [_source(c) for c, t in zip(gen.ifs, tests, strict=True)
+                               if t is None]
+                    self.guards.extend(unknown)
+                    try:
+                        loop(index + 1, scope)
+                    finally:
+                        del self.guards[len(self.guards) - len(unknown):]
+            finally:
+                if guard is not None:
+                    self.guards.pop()
+
+        scope = self.enter(env)
+        try:
+            loop(0, scope)
+        finally:
+            self.leave(scope)
 
     def let(self, target: ast.AST, item: object, env: Any = None) -> None:
         if isinstance(target, ast.expr):  # a comprehension's target always is
             self.assign(target, item, env)
 
     def keep(self, gen: ast.comprehension, env: Any) -> bool:
-        """Every filter is evaluated; one not known drops the item, reported."""
-        tests = [self.truth(self.eval(cond, env)) for cond in gen.ifs]
-        if None in tests:
-            self.unsupported(gen, "comprehension filter not known statically")
-            return False
-        return all(tests)
+        """Unused: ``comprehension`` keeps an item whose filter is not known."""
+        return all(self.truth(self.eval(cond, env)) is not False for cond in gen.ifs)
 
 
 def _unknown_part(value: Any) -> Unknown:

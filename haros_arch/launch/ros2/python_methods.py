@@ -76,7 +76,9 @@ def builtin(function: Callable[..., Any], *types: type,
     accepts = known or (lambda v: isinstance(v, types))
 
     def build(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
-        if k or not all(accepts(v) for v in a):
+        if k or not all(accepts(v) for v in a) or any(
+                isinstance(x, Unknown) for v in a if isinstance(v, (list, tuple))
+                for x in v):
             return Unknown(f"{name}() of values not known statically")
         try:
             return ops.call_builtin(function, a, {}, LIMITS)
@@ -196,7 +198,9 @@ def m_str(name: str) -> Method:
             return i.operation(lambda: concat(partial.format_parts(
                 owner, a, k, _same, lambda reason: Unknown(reason), LIMITS.length)), n)
         if not isinstance(owner, str) or not all(
-                isinstance(v, (str, int, float, list, tuple)) for v in [*a, *k.values()]):
+                isinstance(v, (str, int, float, list, tuple)) for v in [*a, *k.values()]
+        ) or any(isinstance(x, Unknown) for v in a if isinstance(v, (list, tuple))
+                 for x in v):
             if name == "join" and isinstance(owner, str) and a and isinstance(a[0], list):
                 return i.operation(lambda: concat(partial.join_parts(
                     owner, a[0], _same, LIMITS.length)), n)
