@@ -263,3 +263,32 @@ def generate_launch_description():
     assert not model.nodes[3].conditions
     assert [n.executable for n in model.nodes] == ["driver", "fixed", "cam_node", "e"]
     assert not any("fails" in d.message for d in model.diagnostics)
+
+
+def test_list_remove_and_pop(write_tree):
+    """Universal_Robots_ROS2_Driver's ur_control.launch.py: the initial joint controller
+    moves from the inactive list to the active one (``append`` / ``remove``)."""
+    model, _ = run(write_tree, """
+def generate_launch_description():
+    active = ['broadcaster']
+    inactive = ['joint_trajectory_controller', 'forward_controller', 'spare']
+    chosen = LaunchConfiguration('initial', default='joint_trajectory_controller')
+    chosen = 'joint_trajectory_controller'
+    active.append(chosen)
+    inactive.remove(chosen)
+    last = inactive.pop()
+    options = {'a': 1, 'b': 2}
+    first = options.pop('a')
+    other = options.pop('zzz', 'fallback')
+    inactive.remove('not_there')
+    return LaunchDescription([
+        Node(package='cm', executable='spawner', name='active', arguments=active),
+        Node(package='cm', executable='spawner', name='inactive', arguments=inactive),
+        Node(package='p', executable='e', name=last + '_' + other + '_' + str(first)),
+    ])
+""")
+    assert [(n.name, n.args) for n in model.nodes] == [
+        ("/active", "broadcaster joint_trajectory_controller"),
+        ("/inactive", "forward_controller"), ("/spare_fallback_1", "")]
+    messages = [d.message for d in model.diagnostics]
+    assert messages == ["list.remove('not_there') fails: not in the list"]

@@ -172,6 +172,13 @@ def m_list(name: str) -> Method:
     def call(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
         if isinstance(owner, LaunchDescription) and name in ("append", "extend"):
             owner = owner.actions
+        if isinstance(owner, dict) and name == "pop" and 1 <= len(a) <= 2 and not k \
+                and isinstance(a[0], _PLAIN):
+            if a[0] in owner:
+                return owner.pop(a[0])
+            if len(a) == 2:
+                return a[1]
+            return i.unsupported(n, f"dict.pop({a[0]!r}) fails: no such key")
         if isinstance(owner, list):
             if name == "append" and len(a) == 1:
                 owner.append(a[0])
@@ -179,6 +186,20 @@ def m_list(name: str) -> Method:
                 owner.extend(a[0])
             elif name == "insert" and len(a) == 2 and isinstance(a[0], int):
                 owner.insert(a[0], a[1])
+            elif name == "remove" and len(a) == 1 and isinstance(a[0], _PLAIN):
+                if a[0] in owner:
+                    owner.remove(a[0])
+                elif any(isinstance(x, Unknown) for x in owner):
+                    return i.unsupported(n, f"list.remove({a[0]!r}) of a list holding a "
+                                            "value not known statically")
+                else:  # Python raises ValueError here: launch stops
+                    return i.unsupported(n, f"list.remove({a[0]!r}) fails: not in the list")
+            elif name == "pop" and len(a) <= 1 and all(isinstance(x, int) for x in a) \
+                    and not k:
+                index = a[0] if a else -1
+                if -len(owner) <= index < len(owner):
+                    return owner.pop(index)
+                return i.unsupported(n, "list.pop() fails: index out of range")
             else:
                 return i.unsupported(n, f"list.{name} with these arguments")
             i.sized(owner)
@@ -213,6 +234,9 @@ def m_str(name: str) -> Method:
             return i.unsupported(n, f"str.{name}() fails: {err.reason}" if err.kind == "error"
                                  else f"str.{name}(): {err.reason}")
     return call
+
+
+_PLAIN = (str, int, float, bool, type(None))
 
 
 def _same(value: Any) -> Any:
@@ -303,7 +327,8 @@ METHODS: dict[str, Method] = {
     "add_action": m_add_action, "add_entity": m_add_action, "find": m_find,
     "read": m_read, "evaluate": m_evaluate,
     "append": m_list("append"), "extend": m_list("extend"),
-    "insert": m_list("insert"), "items": m_dict("items"), "keys": m_dict("keys"),
+    "insert": m_list("insert"), "remove": m_list("remove"), "pop": m_list("pop"),
+    "items": m_dict("items"), "keys": m_dict("keys"),
     "values": m_dict("values"), "get": m_dict("get"), "update": m_dict("update"),
     "copy": m_dict("copy"), "perform": m_str("perform"),
     **{name: m_path(name) for name in ("as_posix", "joinpath", "with_name", "with_suffix")},
