@@ -292,3 +292,32 @@ def generate_launch_description():
         ("/inactive", "forward_controller"), ("/spare_fallback_1", "")]
     messages = [d.message for d in model.diagnostics]
     assert messages == ["list.remove('not_there') fails: not in the list"]
+
+
+def test_execute_process_of_ros2_run_and_ros2_topic_pub_starts_nodes(write_tree):
+    """pointcloud_to_laserscan's sample launch files publish the scan with
+    ``ExecuteProcess(cmd=['ros2', 'topic', 'pub', ...])``: a publisher of the graph
+    (``models.commands`` reads its topic), named as ros2cli names it; ``ros2 run PKG
+    EXE`` is that node. Other processes (a simulator) still make no node."""
+    model, _ = run(write_tree, """
+from launch.actions import ExecuteProcess
+
+def generate_launch_description():
+    scanner = LaunchConfiguration('scanner', default='front')
+    return LaunchDescription([
+        ExecuteProcess(cmd=['ros2', 'topic', 'pub', '-r', '10', [scanner, '/scan'],
+                            'sensor_msgs/msg/LaserScan', '{}'], name='scan_publisher'),
+        ExecuteProcess(cmd=['ros2', 'topic', 'pub', '--node-name', 'named_pub', 'chatter',
+                            'std_msgs/msg/String']),
+        ExecuteProcess(cmd=['ros2', 'run', 'demo_nodes_cpp', 'talker', '--ros-args', '-r',
+                            '__node:=speaker'],
+                       condition=IfCondition(LaunchConfiguration('talk', default='true'))),
+        ExecuteProcess(cmd=['gz', 'sim', '-r', 'world.sdf']),
+    ])
+""")
+    assert [(n.name, n.package, n.executable) for n in model.nodes] == [
+        ("/_ros2cli_?", "ros2topic", "ros2"), ("/named_pub", "ros2topic", "ros2"),
+        ("/speaker", "demo_nodes_cpp", "talker")]
+    assert model.nodes[0].args == (
+        "topic pub -r 10 front/scan sensor_msgs/msg/LaserScan {}")
+    assert "LAUNCH_UNSUPPORTED" not in codes(model)
