@@ -321,3 +321,29 @@ def generate_launch_description():
     assert model.nodes[0].args == (
         "topic pub -r 10 front/scan sensor_msgs/msg/LaserScan {}")
     assert "LAUNCH_UNSUPPORTED" not in codes(model)
+
+
+def test_xml_executable_of_ros2_topic_pub_read_when_performed(write_tree):
+    """Autoware's dummy_scenario_selector_*.launch.xml: ``<executable cmd="$(var cmd)"
+    shell="true"/>`` with cmd ``ros2 topic pub $(var output_scenario) TYPE '{...}'``:
+    the command line is known only when the file runs; then it is a publisher."""
+    from test_launch_ros2 import run as run_xml
+
+    model, _ = run_xml(write_tree, "main.launch.xml", """
+<launch>
+  <arg name="output_scenario" default="/planning/scenario"/>
+  <arg name="cmd" default="ros2 topic pub $(var output_scenario)
+    tier4_planning_msgs/msg/Scenario '{current_scenario: LaneDriving}'"/>
+  <executable cmd="$(var cmd)" name="scenario_pub" output="screen" shell="true"/>
+  <arg name="listen" default="false"/>
+  <executable cmd="ros2 run demo_nodes_cpp listener" if="$(var listen)"/>
+  <executable cmd="ros2 run demo_nodes_cpp talker --ros-args -r __node:=speaker"/>
+  <executable cmd="gz sim -r world.sdf"/>
+  <executable cmd="$(var not_declared_anywhere)"/>
+</launch>
+""")
+    assert [(n.name, n.package, n.executable) for n in model.nodes] == [
+        ("/_ros2cli_?", "ros2topic", "ros2"), ("/speaker", "demo_nodes_cpp", "talker")]
+    assert model.nodes[0].args == ("topic pub /planning/scenario "
+                                   "tier4_planning_msgs/msg/Scenario "
+                                   "'{current_scenario: LaneDriving}'")

@@ -319,33 +319,13 @@ def node(container: bool) -> Builder:
 
 
 def execute_process(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
-    """``ExecuteProcess(cmd=['ros2', 'run', PKG, EXE, ...])`` starts that node, as
-    ``Node(package=PKG, executable=EXE, arguments=[...])`` would; ``cmd=['ros2', 'topic',
-    'pub', ...]`` a publisher that ``models.commands`` reads from its arguments (its
-    node's name is ``-n`` / ``--node-name``, else ``_ros2cli_<pid>``). Any other process
-    (a simulator, xacro) has no node we can name: no effect, as before."""
+    """``ExecuteProcess(cmd=[...])``: the node of ``ros2 run PKG EXE ...`` or ``ros2
+    topic pub ...`` (``entities.ros2_command_node``); any other process, no node."""
     cmd = arg(a, k, 0, "cmd")
-    if not isinstance(cmd, (list, tuple)) or len(cmd) < 3:
+    if not isinstance(cmd, (list, tuple)):
         return None
-    head = [w if isinstance(w, str) else None for w in cmd[:3]]
-    if head[0] is None or os.path.basename(head[0]) != "ros2":
-        return None
-    if head[1] == "run" and len(cmd) >= 4:
-        action = e.NodeAction(to_text(cmd[2]), to_text(cmd[3]),
-                              arguments=[to_text(w) for w in cmd[4:]])
-        return finish(i, action, k, n)
-    if head[1:] == ["topic", "pub"]:
-        rest = list(cmd[3:])
-        # ros2cli's DirectNode: a hidden node _ros2cli_<process id> unless --node-name
-        name: e.Text = ("_ros2cli_", e.Opaque("the process id of ros2 topic pub",
-                                              report=False))
-        for index, word in enumerate(rest[:-1]):
-            if word in ("-n", "--node-name"):
-                name = to_text(rest[index + 1])
-        action = e.NodeAction(("ros2topic",), ("ros2",), name,
-                              arguments=[to_text(w) for w in cmd[1:]])
-        return finish(i, action, k, n)
-    return None
+    action = e.ros2_command_node([to_text(w) for w in cmd])
+    return None if action is None else finish(i, action, k, n)
 
 
 def composable_node(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
