@@ -347,3 +347,21 @@ def test_xml_executable_of_ros2_topic_pub_read_when_performed(write_tree):
     assert model.nodes[0].args == ("topic pub /planning/scenario "
                                    "tier4_planning_msgs/msg/Scenario "
                                    "'{current_scenario: LaneDriving}'")
+
+
+def test_undecided_info_names_two_instances_of_one_name_once():
+    """rosbot_bringup's combined.launch.py starts micro_ros_agent in either branch of an
+    ``if`` on an environment variable: two instances of one name, each of unknown
+    interface; the undecided info names it once, counted once per possible finding."""
+    from test_query_catalogue import RULES, configuration
+
+    from haros_arch.query.catalogue import run_rule
+
+    found = run_rule(RULES["subscriber-without-publisher"], configuration({
+        "nodes": [{"name": "/agent", "node": None}, {"name": "/agent", "node": None}],
+        "links": [{"kind": "subscribe", "node": "/controller", "name": "/joint_states",
+                   "type": "sensor_msgs/JointState"},
+                  {"kind": "subscribe", "node": "/controller", "name": "/odom",
+                   "type": "nav_msgs/Odometry"}]}))
+    (info,) = found
+    assert info.message.endswith(": /agent (2)"), info.message
