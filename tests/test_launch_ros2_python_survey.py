@@ -365,3 +365,40 @@ def test_undecided_info_names_two_instances_of_one_name_once():
                    "type": "nav_msgs/Odometry"}]}))
     (info,) = found
     assert info.message.endswith(": /agent (2)"), info.message
+
+
+def test_outcomes_that_share_actions_run_them_once(write_tree):
+    """One LaunchDescription returned from two places, or two lists that share their
+    first actions: each action is in the graph once, not once per outcome."""
+    model, _ = run(write_tree, """
+def generate_launch_description():
+    ld = LaunchDescription([Node(package='p', executable='e', name='base')])
+    base = [Node(package='p', executable='e', name='shared')]
+    if os.environ.get('NOT_SET_FOR_THIS_TEST'):
+        ld.add_action(Node(package='p', executable='e', name='extra'))
+        return LaunchDescription([ld] + base)
+    ld.add_action(Node(package='p', executable='e', name='other'))
+    return LaunchDescription([ld] + base)
+""")
+    names = sorted(n.name for n in model.nodes)
+    assert names == ["/base", "/extra", "/other", "/shared"]
+
+
+def test_a_helper_returning_one_of_two_lists_of_names_gives_an_unknown(write_tree):
+    model, _ = run(write_tree, """
+def controllers():
+    if os.environ.get('NOT_SET_FOR_THIS_TEST'):
+        return ['a']
+    return ['b']
+
+def same():
+    if os.environ.get('NOT_SET_FOR_THIS_TEST'):
+        return ['c']
+    return ['c']
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package='p', executable='spawner', name='s', arguments=controllers()),
+        Node(package='p', executable='spawner', name='t', arguments=same())])
+""")
+    assert [n.args for n in model.nodes] == ["?", "c"]

@@ -359,16 +359,21 @@ class Interpreter(Expressions):
         if all(v is None or isinstance(v, (e.Action, list, tuple, LaunchDescription))
                for v in values) and any(v is not None for v in values):
             actions: list[Any] = []
-            for value in values:
-                if isinstance(value, LaunchDescription):
-                    actions.extend(value.actions)
-                elif isinstance(value, (list, tuple)):
-                    actions.extend(value)
-                elif value is not None:
+            seen: set[int] = set()  # an action in several outcomes (one ld returned
+            stack = list(reversed(values))  # from two places, shared lists) runs once
+            while stack:
+                value = stack.pop()
+                if isinstance(value, (LaunchDescription, list, tuple)):
+                    items = value.actions if isinstance(value, LaunchDescription) else value
+                    stack.extend(reversed(items))
+                elif value is not None and id(value) not in seen:
+                    seen.add(id(value))
                     actions.append(value)
-            if all(v is None or isinstance(v, (list, tuple)) for v in values):
-                return actions  # lists of actions stay a list (``helper() + [...]``)
-            return LaunchDescription(actions)
+            if all(isinstance(a, (e.Action, Unknown)) for a in actions):
+                if all(v is None or isinstance(v, (list, tuple)) for v in values):
+                    return actions  # lists of actions stay a list (``helper() + [...]``)
+                return LaunchDescription(actions)
+            # lists of plain values (names, arguments): one of them, not all at once
         first = values[0]
         if all(type(v) is type(first) and v == first for v in values):
             return first
