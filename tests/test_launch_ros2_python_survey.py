@@ -263,6 +263,8 @@ def generate_launch_description():
     assert not model.nodes[3].conditions
     assert [n.executable for n in model.nodes] == ["driver", "fixed", "cam_node", "e"]
     assert not any("fails" in d.message for d in model.diagnostics)
+    assert any("filter not known statically; the item is kept" in d.message
+               for d in model.diagnostics)
 
 
 def test_list_remove_and_pop(write_tree):

@@ -339,9 +339,11 @@ class Expressions(Walker):
                     tests = [self.truth(self.eval(cond, scope)) for cond in gen.ifs]
                     if False in tests:
                         continue
-                    unknown = [_source(c) for c, t in zip(gen.ifs, tests, strict=True)
-                               if t is None]
-                    self.guards.extend(unknown)
+                    unknown = [c for c, t in zip(gen.ifs, tests, strict=True) if t is None]
+                    if unknown:  # kept, and said: a list of plain values may be too long
+                        self.unsupported(unknown[0], "comprehension filter not known "
+                                                     "statically; the item is kept")
+                    self.guards.extend(_source(c) for c in unknown)
                     try:
                         loop(index + 1, scope)
                     finally:
