@@ -303,6 +303,8 @@ def test_execute_process_of_ros2_run_and_ros2_topic_pub_starts_nodes(write_tree)
     EXE`` is that node. Other processes (a simulator) still make no node."""
     model, _ = run(write_tree, """
 from launch.actions import ExecuteProcess
+from launch.substitutions import PathJoinSubstitution
+from launch_ros.substitutions import FindPackagePrefix
 
 def generate_launch_description():
     scanner = LaunchConfiguration('scanner', default='front')
@@ -315,6 +317,8 @@ def generate_launch_description():
                             '__node:=speaker'],
                        condition=IfCondition(LaunchConfiguration('talk', default='true'))),
         ExecuteProcess(cmd=['gz', 'sim', '-r', 'world.sdf']),
+        ExecuteProcess(cmd=[PathJoinSubstitution([FindPackagePrefix('tools'), 'lib',
+                                                  'bridge.py']), scanner, '--port']),
     ])
 """)
     assert [(n.name, n.package, n.executable) for n in model.nodes] == [
@@ -323,6 +327,13 @@ def generate_launch_description():
     assert model.nodes[0].args == (
         "topic pub -r 10 front/scan sensor_msgs/msg/LaserScan {}")
     assert "LAUNCH_UNSUPPORTED" not in codes(model)
+    # the simulator is said: a ROS node it may start is not in the graph
+    assert [(d.code, d.severity, d.location.line, d.message) for d in model.diagnostics
+            if d.code == "LAUNCH_PROCESS"] == [
+        ("LAUNCH_PROCESS", "info", 26, "process gz sim -r started here is no node the "
+                                       "reader can name"),
+        ("LAUNCH_PROCESS", "info", 27, "process bridge.py started here is no node the "
+                                       "reader can name")]
 
 
 def test_xml_executable_of_ros2_topic_pub_read_when_performed(write_tree):
@@ -349,6 +360,9 @@ def test_xml_executable_of_ros2_topic_pub_read_when_performed(write_tree):
     assert model.nodes[0].args == ("topic pub /planning/scenario "
                                    "tier4_planning_msgs/msg/Scenario "
                                    "'{current_scenario: LaneDriving}'")
+    assert sorted(d.message.split(" started")[0] for d in model.diagnostics
+                  if d.code == "LAUNCH_PROCESS") == [
+        "process (a command not known statically)", "process gz sim -r"]
 
 
 def test_undecided_info_names_two_instances_of_one_name_once():

@@ -338,3 +338,19 @@ def ros2_command_node(words: list[Text]) -> NodeAction | None:
                 name = words[index + 1]
         return NodeAction(("ros2topic",), ("ros2",), name, arguments=list(words[1:]))
     return None
+
+
+def command_head(words: list[Text]) -> str:
+    """The first words of a command line for a message, the program without its folder
+    (``gz sim -r``, ``tool_communication.py`` of a path found at run time); ``?`` for a
+    part not known statically."""
+    head: list[str] = []
+    for word in words[:3]:
+        if len(word) == 1 and isinstance(word[0], PathJoin) and word[0].parts:
+            word = word[0].parts[-1]  # PathJoinSubstitution([..., 'lib', 'tool.py'])
+        text = "".join(p if isinstance(p, str) else "?" for p in word)
+        if not text or (head and "?" in text):
+            break
+        head.append(text.rsplit("/", 1)[-1] if not head else text)
+    return " ".join(head) if head and head[0] not in ("", "?") else \
+        "(a command not known statically)"

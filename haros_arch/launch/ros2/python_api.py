@@ -322,10 +322,14 @@ def execute_process(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     """``ExecuteProcess(cmd=[...])``: the node of ``ros2 run PKG EXE ...`` or ``ros2
     topic pub ...`` (``entities.ros2_command_node``); any other process, no node."""
     cmd = arg(a, k, 0, "cmd")
-    if not isinstance(cmd, (list, tuple)):
+    action = e.ros2_command_node([to_text(w) for w in cmd]) if isinstance(
+        cmd, (list, tuple)) else None
+    if action is None:  # said: a ROS node it may start is not in the graph
+        words = list(cmd) if isinstance(cmd, (list, tuple)) else [cmd]
+        i.diagnostics.append(diag.make("LAUNCH_PROCESS", i.where(n), command=e.command_head(
+            [to_text(w) for w in words if w is not None])))
         return None
-    action = e.ros2_command_node([to_text(w) for w in cmd])
-    return None if action is None else finish(i, action, k, n)
+    return finish(i, action, k, n)
 
 
 def composable_node(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:

@@ -314,16 +314,19 @@ class Runner:
         ...`` (that node) or ``ros2 topic pub ...`` (a publisher, see
         ``python_api.execute_process``); any other, or one not known here, no node."""
         value = self.value(action.cmd, scope, action.location)
-        if value is None or value.literal is None:
-            return
-        try:
-            words = shlex.split(str(value.literal))
-        except ValueError:
-            return
+        words: list[str] = []
+        if value is not None and value.literal is not None:
+            try:
+                words = shlex.split(str(value.literal))
+            except ValueError:
+                words = []
         node = e.ros2_command_node([(w,) for w in words])
-        if node is not None:
-            node.location = action.location
-            self.do_NodeAction(node, scope)
+        if node is None:  # said: a ROS node it may start is not in the graph
+            self.report("LAUNCH_PROCESS", action.location,
+                        command=e.command_head([(w,) for w in words]))
+            return
+        node.location = action.location
+        self.do_NodeAction(node, scope)
 
     def do_Unsupported(self, action: e.Unsupported, scope: Scope) -> None:
         self.report("LAUNCH_UNSUPPORTED", action.location, detail=action.what)
