@@ -243,6 +243,13 @@ CATALOGUE: dict[str, Entry] = {
         "interpreter evaluates (an unknown call, a while loop, an import of the "
         "workspace's own modules, ...). It is not run: its result is unknown, and what "
         "depends on it keeps '?' parts or a condition."),
+    "LAUNCH_PROCESS": Entry(
+        "info", "process {command} started here is no node the reader can name",
+        "A launch file runs a process (ExecuteProcess, <executable>) whose command line is "
+        "not 'ros2 run PKG EXE ...' nor 'ros2 topic pub ...', the two read as nodes: a "
+        "simulator, a converter, a test binary, a script. If it starts ROS nodes, they "
+        "are not in the graph: a finding that claims an absence (nobody publishes, "
+        "nobody reads) may be contradicted by them."),
     "LAUNCH_PY_LIFECYCLE": Entry(
         "info", "lifecycle transitions requested here are read as changing nothing in "
         "the graph",

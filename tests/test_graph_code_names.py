@@ -190,3 +190,15 @@ def test_a_parameter_file_of_an_unnamed_node_its_code_names_is_no_warning(write_
     warned = [d for d in config.diagnostics if d.code == "LAUNCH_PARAM_FILE"]
     assert [(d.severity, d.location.line) for d in warned] == [("warning", 8)]
     assert "/?, whose name is not known here" in warned[0].message
+
+
+def test_a_launch_name_not_known_statically_is_not_the_code_name(write_tree):
+    """usb_cam's camera.launch.py: ``Node(..., name=camera.name)`` with ``camera`` an
+    object the reader cannot compute. The launch does name the node (the code's name is
+    not used): the name stays unknown rather than becoming the code's 'talker'."""
+    config = build(workspace(write_tree, LAUNCH.format(
+        extra="name=os.environ.get('NOT_SET_HERE_AT_ALL'),").replace(
+        "from launch import", "import os\n    from launch import")))
+    assert [n.name for n in config.nodes] == ["/?"]
+    config = build(workspace(write_tree, LAUNCH.format(extra="")))
+    assert [n.name for n in config.nodes] == ["/talker"]

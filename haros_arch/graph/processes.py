@@ -120,7 +120,9 @@ def _own_names(decl: NodeDecl, nodes: Mapping[str, Node]) -> list[str]:
 
 
 def _unnamed(decl: NodeDecl) -> bool:
-    return decl.name.rsplit("/", 1)[-1] == UNKNOWN_MARK
+    """Launched without a name: its code's name (or a guess) names it. A name the launch
+    gives but that is not known statically (``name=camera.name``) stays unknown."""
+    return decl.name.rsplit("/", 1)[-1] == UNKNOWN_MARK and not decl.name_given
 
 
 def _renamed(decl: NodeDecl, own: str) -> str:

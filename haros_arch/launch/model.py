@@ -44,6 +44,9 @@ class NodeDecl:
     # launched without a name and named by the graph after its executable (no code, no
     # model): the real name is the one its code gives, which may differ
     name_guessed: bool = False
+    # ROS 2: the launch names the node (``name=``, ``__node:=``), with a value that may
+    # not be known statically: a ``?`` there is that value, not a name left to the code
+    name_given: bool = False
     container: str | None = None  # ROS 2: full name of the container it is loaded into
     # ROS 2: the parameter files given to the process, as read (rewritten), with where:
     # they apply by node name to every node the process makes (a nav2 server's costmap)

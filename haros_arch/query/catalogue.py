@@ -274,13 +274,18 @@ def _undecided_finding(rule: Rule, undecided: list[tuple[Any, list[Any]]],
                        config: Configuration | None) -> Finding:
     """One info for the matches of a rule that nodes of partial or unknown interface
     could contradict: how many, and which nodes could be the missing side."""
-    counts: dict[Any, int] = {}
+    # counted by name: two instances of one name (each under its own launch condition)
+    # are one name that could be the missing side, counted once per match
+    counts: dict[str, int] = {}
+    first_of: dict[str, Any] = {}
     for _match, nodes in undecided:
+        for name in dict.fromkeys(label(n).removeprefix("node ") for n in nodes):
+            counts[name] = counts.get(name, 0) + 1
         for node in nodes:
-            counts[node] = counts.get(node, 0) + 1
-    ranked = sorted(counts, key=lambda n: (-counts[n], getattr(n, "name", str(n))))
-    named = ", ".join(f"{label(n).removeprefix('node ')} ({counts[n]})"
-                      for n in ranked[:UNDECIDED_NAMED])
+            first_of.setdefault(label(node).removeprefix("node "), node)
+    ranked_names = sorted(counts, key=lambda n: (-counts[n], n))
+    ranked = [first_of[n] for n in ranked_names]
+    named = ", ".join(f"{n} ({counts[n]})" for n in ranked_names[:UNDECIDED_NAMED])
     more = f" and {len(ranked) - UNDECIDED_NAMED} more" if len(ranked) > UNDECIDED_NAMED \
         else ""
     first = "; ".join(label(e) for e in entities(undecided[0][0])[:1]) or label(

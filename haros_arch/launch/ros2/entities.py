@@ -301,7 +301,56 @@ class Callback(Action):
 
 
 @dataclass
+class Process(Action):
+    """``<executable cmd="...">``: a process, read when performed; a ROS node only when
+    its command line is ``ros2 run PKG EXE ...`` or ``ros2 topic pub ...``
+    (``runner.do_Process``)."""
+
+    cmd: Text
+
+
+@dataclass
 class Unsupported(Action):
     """Something we do not interpret; its effect on the graph is unknown."""
 
     what: str
+
+
+def ros2_command_node(words: list[Text]) -> NodeAction | None:
+    """The node a process's command line starts, when it is ``ros2 run PKG EXE ...``
+    (that node, as ``Node(package=PKG, executable=EXE, arguments=[...])``) or ``ros2
+    topic pub ...`` (a publisher that ``models.commands`` reads from its arguments,
+    named as ros2cli's DirectNode names it, ``_ros2cli_<pid>``, or by ``--node-name``);
+    None for any other process (a simulator, xacro), or when those words are not known.
+    """
+    def plain(word: Text) -> str | None:
+        return word[0] if len(word) == 1 and isinstance(word[0], str) else None
+
+    head = [plain(w) for w in words[:3]]
+    if len(head) < 3 or head[0] is None or head[0].rsplit("/", 1)[-1] != "ros2":
+        return None
+    if head[1] == "run" and len(words) >= 4:
+        return NodeAction(words[2], words[3], arguments=list(words[4:]))
+    if head[1:] == ["topic", "pub"]:
+        name: Text = ("_ros2cli_", Opaque("the process id of ros2 topic pub", report=False))
+        for index, word in enumerate(words[3:-1], start=3):
+            if plain(word) in ("-n", "--node-name"):
+                name = words[index + 1]
+        return NodeAction(("ros2topic",), ("ros2",), name, arguments=list(words[1:]))
+    return None
+
+
+def command_head(words: list[Text]) -> str:
+    """The first words of a command line for a message, the program without its folder
+    (``gz sim -r``, ``tool_communication.py`` of a path found at run time); ``?`` for a
+    part not known statically."""
+    head: list[str] = []
+    for word in words[:3]:
+        if len(word) == 1 and isinstance(word[0], PathJoin) and word[0].parts:
+            word = word[0].parts[-1]  # PathJoinSubstitution([..., 'lib', 'tool.py'])
+        text = "".join(p if isinstance(p, str) else "?" for p in word)
+        if not text or (head and "?" in text):
+            break
+        head.append(text.rsplit("/", 1)[-1] if not head else text)
+    return " ".join(head) if head and head[0] not in ("", "?") else \
+        "(a command not known statically)"

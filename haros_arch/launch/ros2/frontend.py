@@ -210,8 +210,9 @@ class Frontend:
         return None if name is None else e.SetEnv(name, value)
 
     def executable(self, ent: Entity) -> e.Action | None:
-        ent.read.update(ent.attrs)  # a process that is not a ROS node we can name
-        return None
+        cmd = self.text(ent, "cmd")
+        ent.read.update(ent.attrs)  # the rest (cwd, output, env...) changes no name
+        return None if cmd is None else e.Process(cmd)
 
     def timer(self, ent: Entity) -> e.Action | None:
         period = ent.attrs.get("period", "?")

@@ -56,7 +56,8 @@ def perform_node(runner: Runner, action: e.NodeAction, scope: Scope) -> None:
         name=full, package=_text(ev, action.package), executable=_text(ev, action.executable),
         namespace=naming.with_slash(namespace),
         args=" ".join(plain if action.split else map(_quoted, plain)), remaps=remaps,
-        conditions=scope.conditions, location=where))
+        conditions=scope.conditions, location=where,
+        name_given=given is not None or parsed.node_name is not None))
     entries: list[e.ParamEntry] = list(action.parameters)
     entries += [e.ParamFile((path,), location=where) for path in parsed.params_files]
     entries += [((key,), (value,)) for key, value in parsed.params]
@@ -81,7 +82,8 @@ def perform_composable(runner: Runner, component: e.ComposableNode, scope: Scope
     runner.model.nodes.append(node_decl(
         name=full, package=_text(ev, component.package), executable=_text(ev, component.plugin),
         namespace=naming.with_slash(namespace), remaps=remaps, conditions=inner.conditions,
-        location=where, composable=True, container=container))
+        location=where, composable=True, container=container,
+        name_given=component.name is not None))
     node_params(runner, ev, full, list(component.parameters), inner, where)
 
 

@@ -5,8 +5,10 @@
 launch / launch_ros API (``python_api.API``), list / dict literals, comprehensions and
 ``for`` loops over known values, ``if`` (both branches, conditional, when the test is
 unknown), helper functions of the same file, f-strings, ``%``, ``format`` and ``+``,
-``os.path`` helpers. Anything else gives an unknown value and a
-``LAUNCH_PY_UNSUPPORTED`` diagnostic; nothing outside the file is called. Work is
+``os.path`` helpers. Module-level code runs as importing the file would run it; a
+module of the workspace the file imports from a folder it put on ``sys.path`` is read
+the same way (``Module``). Anything else gives an unknown value and a
+``LAUNCH_PY_UNSUPPORTED`` diagnostic; nothing outside the workspace is read or called. Work is
 bounded: source size, AST size and depth, evaluation steps, call depth, value sizes.
 
 Strings that hold substitutions or unknown parts are ``Lazy`` (a ``Text``); the runner
@@ -18,6 +20,7 @@ from __future__ import annotations
 
 import ast
 import os
+from pathlib import PurePosixPath
 from typing import Any
 
 from ... import diagnostics as diag
@@ -27,6 +30,7 @@ from ...evaluate import operations as ops
 from ...model.launch_tree import PackageUse
 from ...model.location import Location
 from ...model.values import Unknown
+from ...share import share_source
 from ...workspace import Workspace
 from . import entities as e
 from .python_expressions import Expressions, _Bound
@@ -41,6 +45,7 @@ from .python_values import (
     Budget,
     Func,
     LaunchDescription,
+    Module,
     ReadOnlyFile,
     Ref,
     _Break,
@@ -69,6 +74,12 @@ class Interpreter(Expressions):
         self.limits = LIMITS
         self.depth = 0
         self.guards: list[str] = []  # texts of unknown Python `if` tests we are under
+        # per function being run: the values it returned under a test not known
+        self.returns: list[list[Any]] = []
+        # folders the file put on sys.path (sys.path.append), where `import name` looks
+        self.search: list[str] = []
+        # modules imported from them, by source path (None: being read, or unreadable)
+        self.modules: dict[str, Module | None] = {}
         from .python_api import API, BUILTINS
         from .python_methods import METHODS
 
@@ -101,22 +112,7 @@ class Interpreter(Expressions):
 
     # -- module ------------------------------------------------------------------------
     def module(self, tree: ast.Module) -> list[e.Action] | None:
-        for stmt in tree.body:
-            if isinstance(stmt, (ast.Import, ast.ImportFrom)):
-                self.import_(stmt, self.globals)
-            elif isinstance(stmt, ast.FunctionDef):
-                self.globals[stmt.name] = Func(stmt, self.globals)
-            elif isinstance(stmt, (ast.Assign, ast.AnnAssign)):
-                self.statement(stmt, self.globals)
-            elif isinstance(stmt, ast.Expr) and isinstance(stmt.value, ast.Constant):
-                continue  # docstring
-            elif isinstance(stmt, ast.If) and "__name__" in ast.dump(stmt.test):
-                continue  # if __name__ == '__main__': never run
-            elif isinstance(stmt, ast.ClassDef):  # never run; a use of it is reported
-                self.globals[stmt.name] = Unknown(f"class {stmt.name} (not interpreted)")
-            else:
-                self.unsupported(stmt, f"module-level {type(stmt).__name__} is not "
-                                       "interpreted (never run)")
+        self.module_body(tree, self.globals)
         entry = self.globals.get("generate_launch_description")
         if not isinstance(entry, Func):
             self.diagnostics.append(diag.make(
@@ -125,6 +121,25 @@ class Interpreter(Expressions):
             return None
         result = self.call(entry, [], {}, entry.node)
         return self.actions_of(result, entry.node)
+
+    def module_body(self, tree: ast.Module, env: dict[str, Any]) -> None:
+        """What importing the module does: its names, and its module-level code."""
+        for stmt in tree.body:
+            if isinstance(stmt, (ast.Import, ast.ImportFrom)):
+                self.import_(stmt, env)
+            elif isinstance(stmt, ast.FunctionDef):
+                env[stmt.name] = Func(stmt, env)
+            elif isinstance(stmt, ast.Expr) and isinstance(stmt.value, ast.Constant):
+                continue  # docstring
+            elif isinstance(stmt, ast.If) and "__name__" in ast.dump(stmt.test):
+                continue  # if __name__ == '__main__': never run
+            elif isinstance(stmt, ast.ClassDef):  # never run; a use of it is reported
+                env[stmt.name] = Unknown(f"class {stmt.name} (not interpreted)")
+            else:
+                # a call, loop or test at module level runs when launch imports the file
+                # (``CAMERAS.append(...)`` fills a list generate_launch_description
+                # reads): interpreted as in a function, what is not known says so
+                self.statement(stmt, env)
 
     def actions_of(self, value: Any, node: ast.AST) -> list[e.Action]:
         """The actions in a LaunchDescription, a list of actions, or one action."""
@@ -151,15 +166,86 @@ class Interpreter(Expressions):
     def import_(self, stmt: ast.Import | ast.ImportFrom, env: dict[str, Any]) -> None:
         if isinstance(stmt, ast.Import):
             for alias in stmt.names:
-                if alias.asname:
+                found = self.find_module(alias.name, stmt)
+                if found is not None:
+                    env[alias.asname or alias.name] = found
+                elif alias.asname:
                     env[alias.asname] = Ref(alias.name)
                 else:
                     top = alias.name.split(".")[0]
                     env[top] = Ref(top)
             return
         module = ("." * stmt.level) + (stmt.module or "")
+        found = self.find_module(module, stmt)
         for alias in stmt.names:
-            env[alias.asname or alias.name] = Ref(f"{module}.{alias.name}")
+            if found is None:
+                env[alias.asname or alias.name] = Ref(f"{module}.{alias.name}")
+            elif alias.name in found.names:
+                env[alias.asname or alias.name] = found.names[alias.name]
+            else:
+                env[alias.asname or alias.name] = self.unsupported(
+                    stmt, f"{alias.name} is not defined in {found.name} as read here")
+
+    # -- modules of the workspace imported from sys.path ---------------------------------
+    def add_search(self, func: Ref, args: list[Any], node: ast.AST) -> Any:
+        """``sys.path.append(folder)`` / ``sys.path.insert(i, folder)``: ``import name``
+        then finds ``name.py`` there, as Python would (launch itself puts nothing on
+        sys.path: a launch file that imports its helpers adds their folder)."""
+        folder = args[-1] if args else None
+        if isinstance(folder, PurePosixPath):
+            folder = str(folder)
+        if not isinstance(folder, str) or not os.path.isabs(folder):
+            return self.unsupported(node, f"{func.qualified} of a folder not known "
+                                          "statically; imports from it are not read")
+        if func.qualified.endswith(".insert"):
+            self.search.insert(0, folder)
+        else:
+            self.search.append(folder)
+        return None
+
+    def find_module(self, name: str, node: ast.AST) -> Module | None:
+        """The module ``name`` of a folder on the file's ``sys.path``, interpreted once;
+        None when it is not there (a library: a Ref, as before)."""
+        if not name or "." in name or _known_module(name) or not self.search:
+            return None
+        for folder in self.search:
+            source = os.path.realpath(share_source(self.workspace,
+                                                   os.path.join(folder, name + ".py")))
+            if not os.path.isfile(source) or not self.workspace.readable(
+                    source, self.environment):
+                continue
+            if source in self.modules:
+                found = self.modules[source]
+                if found is None:
+                    self.unsupported(node, f"module {name} imports itself (cycle)")
+                return found
+            self.modules[source] = None
+            module = self.load_module(name, source, node)
+            self.modules[source] = module
+            return module
+        return None
+
+    def load_module(self, name: str, source: str, node: ast.AST) -> Module | None:
+        from ...files import read_text
+
+        text, found = read_text(source, self.workspace.location(source), MAX_SOURCE)
+        self.diagnostics.extend(found)
+        if text is None:
+            return None
+        tree, problem = checked_tree(text, source, self.workspace)
+        if tree is None:
+            if problem is not None:
+                self.diagnostics.append(problem)
+            self.unsupported(node, f"module {name} could not be read")
+            return None
+        module = Module(name, source, {"__file__": source, "__name__": name})
+        outer = self.path
+        self.path = source
+        try:
+            self.module_body(tree, module.names)
+        finally:
+            self.path = outer
+        return module
 
     # -- statements --------------------------------------------------------------------
     def block(self, body: list[ast.stmt], env: dict[str, Any]) -> None:
@@ -240,16 +326,58 @@ class Interpreter(Expressions):
             self.block(stmt.orelse, env)
         else:
             text = _source(stmt.test)
-            self.guards.append(text)
-            try:
-                self.block(stmt.body, env)
-            finally:
-                self.guards.pop()
-            self.guards.append(f"not ({text})")
-            try:
-                self.block(stmt.orelse, env)
-            finally:
-                self.guards.pop()
+            taken = self.branch(stmt.body, env, text)
+            left = self.branch(stmt.orelse, env, f"not ({text})")
+            if taken is not None and left is not None:  # both return: so does the if
+                raise _Return(self.either([taken.value, left.value]))
+            returned = taken or left
+            if returned is not None:
+                # one branch returns: that value is one the function may give, and
+                # the rest of the function runs only under the other branch's test
+                if not self.returns:
+                    raise returned
+                self.returns[-1].append(returned.value)
+                self.guards.append(text if taken is None else f"not ({text})")
+
+    def branch(self, body: list[ast.stmt], env: dict[str, Any], guard: str
+               ) -> _Return | None:
+        """One branch of an ``if`` whose test is not known, under that test; its
+        ``return``, if it returns."""
+        self.guards.append(guard)
+        try:
+            self.block(body, env)
+        except _Return as ret:
+            return ret
+        finally:
+            self.guards.pop()
+        return None
+
+    def either(self, values: list[Any]) -> Any:
+        """What a function gives that returns one of ``values`` (a test not known
+        statically decides): the actions of all when they are actions (each made under
+        its branch's test), the value when they agree, else an unknown."""
+        if all(v is None or isinstance(v, (e.Action, list, tuple, LaunchDescription))
+               for v in values) and any(v is not None for v in values):
+            actions: list[Any] = []
+            seen: set[int] = set()  # an action in several outcomes (one ld returned
+            stack = list(reversed(values))  # from two places, shared lists) runs once
+            while stack:
+                value = stack.pop()
+                if isinstance(value, (LaunchDescription, list, tuple)):
+                    items = value.actions if isinstance(value, LaunchDescription) else value
+                    stack.extend(reversed(items))
+                elif value is not None and id(value) not in seen:
+                    seen.add(id(value))
+                    actions.append(value)
+            if all(isinstance(a, (e.Action, Unknown)) for a in actions):
+                if all(v is None or isinstance(v, (list, tuple)) for v in values):
+                    return actions  # lists of actions stay a list (``helper() + [...]``)
+                return LaunchDescription(actions)
+            # lists of plain values (names, arguments): one of them, not all at once
+        first = values[0]
+        if all(type(v) is type(first) and v == first for v in values):
+            return first
+        return Unknown("one of several return values (a test not known statically)")
 
     def with_(self, stmt: ast.With, env: dict[str, Any]) -> None:
         """``with open(path) as f:``: a read-only handle on a file we may read."""
@@ -284,6 +412,19 @@ class Interpreter(Expressions):
     def for_(self, stmt: ast.For, env: dict[str, Any]) -> None:
         items = self.iterable(self.eval(stmt.iter, env), stmt.iter)
         if items is None:
+            # the loop may run any number of times: its body once, on an item not
+            # known, under that loop (what it makes may run, named '?' where it is
+            # named after the item), rather than never
+            self.assign(stmt.target, Unknown(f"an item of {_source(stmt.iter)}"), env)
+            try:
+                returned = self.branch(stmt.body, env, f"for {_source(stmt.target)} in "
+                                                       f"{_source(stmt.iter)}")
+            except (_Break, _Continue):
+                returned = None
+            if returned is not None:  # it may return there, or run on
+                if not self.returns:
+                    raise returned
+                self.returns[-1].append(returned.value)
             return
         for item in items:
             self.step()
@@ -309,6 +450,8 @@ class Interpreter(Expressions):
         if isinstance(func, Func):
             return self.call_function(func, args, kwargs, node)
         if isinstance(func, Ref):
+            if func.qualified in ("sys.path.append", "sys.path.insert"):
+                return self.add_search(func, args, node)
             name = func.qualified
             short = name.rsplit(".", 1)[-1]
             handler = self.api.get(short)
@@ -336,6 +479,8 @@ class Interpreter(Expressions):
         if self.depth > MAX_CALL_DEPTH:
             self.depth = 0
             raise Budget(f"calls nested deeper than {MAX_CALL_DEPTH}")
+        outer = self.path
+        self.path = _file_of(func.closure, outer)  # a function of an imported module
         try:
             env = dict(func.closure) if isinstance(func.node, ast.Lambda) else {}
             env["__closure__"] = func.closure
@@ -361,13 +506,20 @@ class Interpreter(Expressions):
                                          if k not in positional}
             if isinstance(func.node, ast.Lambda):
                 return self.eval(func.node.body, env)
+            self.returns.append([])
+            guards = len(self.guards)
+            result: Any = None
             try:
                 self.block(func.node.body, env)
             except _Return as ret:
-                return ret.value
-            return None
+                result = ret.value
+            finally:
+                maybe = self.returns.pop()
+                del self.guards[guards:]
+            return self.either([*maybe, result]) if maybe else result
         finally:
             self.depth = max(self.depth - 1, 0)
+            self.path = outer
 
 
 def parse_python(text: str, path: str, workspace: Workspace,
@@ -377,27 +529,9 @@ def parse_python(text: str, path: str, workspace: Workspace,
     """The actions of a Python launch file, and what could not be interpreted; the
     packages whose folders it asks for as it runs are added to ``uses``."""
     where = workspace.location(path)
-    if len(text) > MAX_SOURCE:
-        return None, [diag.make("LAUNCH_PY_BUDGET", where,
-                                detail=f"file larger than {MAX_SOURCE} characters")]
-    try:
-        tree = syntax.parse(text, path)
-    except SyntaxError as err:
-        return None, [diag.make("LAUNCH_PY_SYNTAX", workspace.location(
-            path, err.lineno or 0, err.offset or 0), detail=err.msg)]
-    except (RecursionError, MemoryError, ValueError) as err:
-        return None, [diag.make("LAUNCH_PY_SYNTAX", where,
-                                detail=f"too deeply nested to parse ({type(err).__name__})")]
-    count = 0
-    stack: list[tuple[ast.AST, int]] = [(tree, 0)]
-    while stack:
-        node, depth = stack.pop()
-        count += 1
-        if count > MAX_NODES or depth > MAX_DEPTH:
-            what = f"more than {MAX_NODES} syntax nodes" if count > MAX_NODES else \
-                f"nesting deeper than {MAX_DEPTH}"
-            return None, [diag.make("LAUNCH_PY_BUDGET", where, detail=what)]
-        stack.extend((child, depth + 1) for child in ast.iter_child_nodes(node))
+    tree, problem = checked_tree(text, path, workspace)
+    if tree is None:
+        return None, [problem] if problem is not None else []
     interp = Interpreter(path, workspace, dict(environment or workspace.environment))
     try:
         actions = interp.module(tree)
@@ -411,6 +545,47 @@ def parse_python(text: str, path: str, workspace: Workspace,
     if uses is not None:
         uses.extend(interp.uses)
     return actions, interp.diagnostics
+
+
+def checked_tree(text: str, path: str, workspace: Workspace
+                 ) -> tuple[ast.Module | None, Diagnostic | None]:
+    """The syntax tree of a Python file within the size bounds, or why not."""
+    where = workspace.location(path)
+    if len(text) > MAX_SOURCE:
+        return None, diag.make("LAUNCH_PY_BUDGET", where,
+                               detail=f"file larger than {MAX_SOURCE} characters")
+    try:
+        tree = syntax.parse(text, path)
+    except SyntaxError as err:
+        return None, diag.make("LAUNCH_PY_SYNTAX", workspace.location(
+            path, err.lineno or 0, err.offset or 0), detail=err.msg)
+    except (RecursionError, MemoryError, ValueError) as err:
+        return None, diag.make("LAUNCH_PY_SYNTAX", where,
+                               detail=f"too deeply nested to parse ({type(err).__name__})")
+    count = 0
+    stack: list[tuple[ast.AST, int]] = [(tree, 0)]
+    while stack:
+        node, depth = stack.pop()
+        count += 1
+        if count > MAX_NODES or depth > MAX_DEPTH:
+            what = f"more than {MAX_NODES} syntax nodes" if count > MAX_NODES else \
+                f"nesting deeper than {MAX_DEPTH}"
+            return None, diag.make("LAUNCH_PY_BUDGET", where, detail=what)
+        stack.extend((child, depth + 1) for child in ast.iter_child_nodes(node))
+    return tree, None
+
+
+def _file_of(closure: dict[str, Any], default: str) -> str:
+    """The file a function was written in: its module's ``__file__``, up its closures."""
+    scope: dict[str, Any] | None = closure
+    for _ in range(MAX_CALL_DEPTH + 2):
+        if scope is None:
+            break
+        if "__closure__" not in scope:
+            found = scope.get("__file__")
+            return found if isinstance(found, str) else default
+        scope = scope.get("__closure__")
+    return default
 
 
 def _assigned(body: list[ast.stmt]) -> set[str]:

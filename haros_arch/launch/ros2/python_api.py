@@ -39,6 +39,8 @@ from .python_methods import (
 )
 from .python_nav2 import NAV2_COMMON
 from .python_values import (
+    MAX_DEPTH,
+    PLAIN,
     Budget,
     Context,
     LaunchDescription,
@@ -231,7 +233,11 @@ def set_configuration(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
 
 def launch_description(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     initial = arg(a, k, 0, "initial_entities", default=[])
-    return LaunchDescription(list(initial) if isinstance(initial, (list, tuple)) else [])
+    if isinstance(initial, (list, tuple)):
+        return LaunchDescription(list(initial))
+    if initial is not None:  # its actions are not known: said, not taken as none
+        i.unsupported(n, "launch description is not known statically")
+    return LaunchDescription([])
 
 
 def parameters(i: Interpreter, value: Any, n: ast.AST) -> list[e.ParamEntry]:
@@ -310,6 +316,20 @@ def node(container: bool) -> Builder:
             action.composable = composables(i, k.get("composable_node_descriptions"), n)
         return finish(i, action, k, n)
     return build
+
+
+def execute_process(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``ExecuteProcess(cmd=[...])``: the node of ``ros2 run PKG EXE ...`` or ``ros2
+    topic pub ...`` (``entities.ros2_command_node``); any other process, no node."""
+    cmd = arg(a, k, 0, "cmd")
+    action = e.ros2_command_node([to_text(w) for w in cmd]) if isinstance(
+        cmd, (list, tuple)) else None
+    if action is None:  # said: a ROS node it may start is not in the graph
+        words = list(cmd) if isinstance(cmd, (list, tuple)) else [cmd]
+        i.diagnostics.append(diag.make("LAUNCH_PROCESS", i.where(n), command=e.command_head(
+            [to_text(w) for w in words if w is not None])))
+        return None
+    return finish(i, action, k, n)
 
 
 def composable_node(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
@@ -506,6 +526,26 @@ def parameter_value(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
                         as_text)
 
 
+def copy_of(deep: bool) -> Builder:
+    """``copy.copy`` / ``copy.deepcopy`` of a list, tuple or dict (nested ones too when
+    deep): new containers, the same items (strings, actions and substitutions are
+    never changed in place here)."""
+    def dup(value: Any, depth: int) -> Any:
+        if depth > 0 and isinstance(value, list):
+            return [dup(v, depth - 1) for v in value]
+        if depth > 0 and isinstance(value, dict):
+            return {k: dup(v, depth - 1) for k, v in value.items()}
+        if depth > 0 and isinstance(value, tuple):
+            return tuple(dup(v, depth - 1) for v in value)
+        return value
+
+    def build(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+        if len(a) != 1 or k or not isinstance(a[0], (list, tuple, dict, *PLAIN)):
+            return Unknown("copy of a value not known statically")
+        return dup(a[0], MAX_DEPTH if deep else 1)
+    return build
+
+
 SCALARS = (str, int, float, bool, list, tuple, dict, type(None))
 API: dict[str, Builder] = {
     "LaunchDescription": launch_description,
@@ -563,7 +603,7 @@ API: dict[str, Builder] = {
     "OnStateTransition": state_handler, "ChangeState": lifecycle,
     "matches_node_name": lifecycle, "matches_action": lifecycle,
     "OpaqueFunction": opaque_function,
-    "LogInfo": ignored, "ExecuteProcess": ignored, "Shutdown": ignored,
+    "LogInfo": ignored, "ExecuteProcess": execute_process, "Shutdown": ignored,
     "EmitEvent": ignored, "AppendEnvironmentVariable": ignored, "SetROSLogDir": ignored,
     "SetUseSimTime": ignored,
     "ParameterFile": param_file, "ParameterValue": parameter_value, **NAV2_COMMON,
@@ -580,6 +620,7 @@ API: dict[str, Builder] = {
     "print": ignored, "isinstance": lambda i, a, k, n: Unknown("isinstance"),
     "all": builtin(all, list, tuple), "any": builtin(any, list, tuple),
     "open": open_file, "safe_load": safe_load,
+    "copy": copy_of(False), "deepcopy": copy_of(True),
     "process_file": xacro_process_file, "process": xacro_process,
 }
 BUILTINS = frozenset(("len", "str", "repr", "int", "float", "bool", "list", "tuple", "dict",

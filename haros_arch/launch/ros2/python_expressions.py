@@ -28,6 +28,7 @@ from .python_values import (
     Context,
     Func,
     Lazy,
+    Module,
     Ref,
     _hashable,
     _opaque,
@@ -194,6 +195,13 @@ class Expressions(Walker):
         if isinstance(op, ast.Add) and (is_stringy(left) or is_stringy(right)) and not (
                 isinstance(left, list) or isinstance(right, list)):
             return concat([left, right])
+        if isinstance(op, ast.Add) and (isinstance(left, list) != isinstance(right, list)) \
+                and all(isinstance(x, (list, Unknown, Lazy)) for x in (left, right)):
+            # ``unknown_actions() + [Node(...)]``: the known items keep their place, the
+            # unknown part (two unknowns added read as a Lazy text) stays one unknown
+            # item; what made it was reported
+            return [*(left if isinstance(left, list) else [_unknown_part(left)]),
+                    *(right if isinstance(right, list) else [_unknown_part(right)])]
         if isinstance(left, Unknown) or isinstance(right, Unknown):
             return Unknown("arithmetic on an unknown value")
         if isinstance(op, ast.Mod) and isinstance(left, str) and (
@@ -221,11 +229,24 @@ class Expressions(Walker):
         return Unknown("subscript")
 
     def eval_Attribute(self, node: ast.Attribute, env: dict[str, Any]) -> Any:
+        value = self.attribute(node, env)
+        if isinstance(value, _Bound) and isinstance(value.owner, Unknown):
+            # ``camera.namespace`` of a camera not known: an unknown that says which
+            return Unknown(f"{_source(node)} (an attribute of a value not known statically)")
+        return value
+
+    def attribute(self, node: ast.Attribute, env: dict[str, Any]) -> Any:
+        """``owner.attr``; a method of a value waits for its call (``_Bound``)."""
         owner = self.eval(node.value, env)
         if isinstance(owner, Ref):
             if owner.qualified == "os" and node.attr == "environ":
                 return _Environ()
             return Ref(f"{owner.qualified}.{node.attr}")
+        if isinstance(owner, Module):  # a module of the workspace the file imported
+            if node.attr in owner.names:
+                return owner.names[node.attr]
+            return self.unsupported(node, f"{owner.name}.{node.attr} is not defined in "
+                                          f"{owner.name} as read here")
         if isinstance(owner, Context) and node.attr == "launch_configurations":
             return owner
         if isinstance(owner, PurePosixPath) and node.attr in _PATH_ATTRIBUTES:
@@ -233,7 +254,11 @@ class Expressions(Walker):
         return _Bound(owner, node.attr)
 
     def eval_Call(self, node: ast.Call, env: dict[str, Any]) -> Any:
-        func = self.eval(node.func, env)
+        if isinstance(node.func, ast.Attribute):  # a method, even of an unknown value
+            self.step()
+            func = self.attribute(node.func, env)
+        else:
+            func = self.eval(node.func, env)
         args: list[Any] = []
         for arg in node.args:
             if isinstance(arg, ast.Starred):
@@ -290,20 +315,60 @@ class Expressions(Walker):
     def enter(self, env: Any) -> Any:
         return dict(env, __closure__=env)
 
-    def iterate(self, gen: ast.comprehension, env: Any) -> list[Any]:
-        return self.iterable(self.eval(gen.iter, env), gen.iter) or []
+    def comprehension(self, generators: list[ast.comprehension], env: Any,
+                      emit: Callable[[Any], None]) -> None:
+        """The evaluator's comprehension, where what is not known is not taken as
+        nothing: a loop over a value not known makes one item, not known, under that
+        loop; an item whose filter is not known is kept under that filter (its actions
+        may run), as an ``if`` of a test not known runs its body."""
+        def loop(index: int, scope: Any) -> None:
+            if index == len(generators):
+                emit(scope)
+                return
+            gen = generators[index]
+            items = self.iterable(self.eval(gen.iter, scope), gen.iter)
+            guard = None
+            if items is None:
+                guard = f"for {_source(gen.target)} in {_source(gen.iter)}"
+                items = [Unknown(f"an item of {_source(gen.iter)}")]
+                self.guards.append(guard)
+            try:
+                for item in items:
+                    self.step()
+                    self.let(gen.target, item, scope)
+                    tests = [self.truth(self.eval(cond, scope)) for cond in gen.ifs]
+                    if False in tests:
+                        continue
+                    unknown = [c for c, t in zip(gen.ifs, tests, strict=True) if t is None]
+                    if unknown:  # kept, and said: a list of plain values may be too long
+                        self.unsupported(unknown[0], "comprehension filter not known "
+                                                     "statically; the item is kept")
+                    self.guards.extend(_source(c) for c in unknown)
+                    try:
+                        loop(index + 1, scope)
+                    finally:
+                        del self.guards[len(self.guards) - len(unknown):]
+            finally:
+                if guard is not None:
+                    self.guards.pop()
+
+        scope = self.enter(env)
+        try:
+            loop(0, scope)
+        finally:
+            self.leave(scope)
 
     def let(self, target: ast.AST, item: object, env: Any = None) -> None:
         if isinstance(target, ast.expr):  # a comprehension's target always is
             self.assign(target, item, env)
 
     def keep(self, gen: ast.comprehension, env: Any) -> bool:
-        """Every filter is evaluated; one not known drops the item, reported."""
-        tests = [self.truth(self.eval(cond, env)) for cond in gen.ifs]
-        if None in tests:
-            self.unsupported(gen, "comprehension filter not known statically")
-            return False
-        return all(tests)
+        """Unused: ``comprehension`` keeps an item whose filter is not known."""
+        return all(self.truth(self.eval(cond, env)) is not False for cond in gen.ifs)
+
+
+def _unknown_part(value: Any) -> Unknown:
+    return value if isinstance(value, Unknown) else Unknown("a list not known statically")
 
 
 @dataclass

@@ -3,13 +3,14 @@
 ``builtin`` wraps a safe Python builtin for known arguments; ``open`` gives a read-only
 handle on a workspace file and ``yaml.safe_load`` reads it with the safe loader;
 ``METHODS`` maps a method name (``str.format``, ``list.append``,
-``LaunchDescription.add_action``, ``LaunchConfiguration.perform``,
+``LaunchDescription.add_action`` / ``add_entity``, ``LaunchConfiguration.perform``,
 ``IfCondition.evaluate``...) to its handler. Calls not listed are never made.
 """
 
 from __future__ import annotations
 
 import ast
+import os
 from collections.abc import Callable
 from pathlib import PurePosixPath
 from typing import TYPE_CHECKING, Any
@@ -75,7 +76,9 @@ def builtin(function: Callable[..., Any], *types: type,
     accepts = known or (lambda v: isinstance(v, types))
 
     def build(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
-        if k or not all(accepts(v) for v in a):
+        if k or not all(accepts(v) for v in a) or any(
+                isinstance(x, Unknown) for v in a if isinstance(v, (list, tuple))
+                for x in v):
             return Unknown(f"{name}() of values not known statically")
         try:
             return ops.call_builtin(function, a, {}, LIMITS)
@@ -157,6 +160,8 @@ def m_evaluate(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> An
 
 
 def m_add_action(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``LaunchDescription.add_action`` and ``add_entity``, which launch makes one: the
+    entity may be a whole ``LaunchDescription``, whose actions run in its place."""
     if isinstance(owner, LaunchDescription) and a:
         owner.actions.append(a[0])
         return None
@@ -167,6 +172,13 @@ def m_list(name: str) -> Method:
     def call(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
         if isinstance(owner, LaunchDescription) and name in ("append", "extend"):
             owner = owner.actions
+        if isinstance(owner, dict) and name == "pop" and 1 <= len(a) <= 2 and not k \
+                and isinstance(a[0], _PLAIN):
+            if a[0] in owner:
+                return owner.pop(a[0])
+            if len(a) == 2:
+                return a[1]
+            return i.unsupported(n, f"dict.pop({a[0]!r}) fails: no such key")
         if isinstance(owner, list):
             if name == "append" and len(a) == 1:
                 owner.append(a[0])
@@ -174,6 +186,20 @@ def m_list(name: str) -> Method:
                 owner.extend(a[0])
             elif name == "insert" and len(a) == 2 and isinstance(a[0], int):
                 owner.insert(a[0], a[1])
+            elif name == "remove" and len(a) == 1 and isinstance(a[0], _PLAIN):
+                if a[0] in owner:
+                    owner.remove(a[0])
+                elif any(isinstance(x, Unknown) for x in owner):
+                    return i.unsupported(n, f"list.remove({a[0]!r}) of a list holding a "
+                                            "value not known statically")
+                else:  # Python raises ValueError here: launch stops
+                    return i.unsupported(n, f"list.remove({a[0]!r}) fails: not in the list")
+            elif name == "pop" and len(a) <= 1 and all(isinstance(x, int) for x in a) \
+                    and not k:
+                index = a[0] if a else -1
+                if -len(owner) <= index < len(owner):
+                    return owner.pop(index)
+                return i.unsupported(n, "list.pop() fails: index out of range")
             else:
                 return i.unsupported(n, f"list.{name} with these arguments")
             i.sized(owner)
@@ -193,7 +219,9 @@ def m_str(name: str) -> Method:
             return i.operation(lambda: concat(partial.format_parts(
                 owner, a, k, _same, lambda reason: Unknown(reason), LIMITS.length)), n)
         if not isinstance(owner, str) or not all(
-                isinstance(v, (str, int, float, list, tuple)) for v in [*a, *k.values()]):
+                isinstance(v, (str, int, float, list, tuple)) for v in [*a, *k.values()]
+        ) or any(isinstance(x, Unknown) for v in a if isinstance(v, (list, tuple))
+                 for x in v):
             if name == "join" and isinstance(owner, str) and a and isinstance(a[0], list):
                 return i.operation(lambda: concat(partial.join_parts(
                     owner, a[0], _same, LIMITS.length)), n)
@@ -206,6 +234,9 @@ def m_str(name: str) -> Method:
             return i.unsupported(n, f"str.{name}() fails: {err.reason}" if err.kind == "error"
                                  else f"str.{name}(): {err.reason}")
     return call
+
+
+_PLAIN = (str, int, float, bool, type(None))
 
 
 def _same(value: Any) -> Any:
@@ -251,6 +282,14 @@ def m_path(name: str) -> Method:
     return call
 
 
+def m_absolute(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``Path.absolute()`` / ``resolve()`` of a path that is absolute already (one under
+    ``__file__``): itself, normalised; the current folder is not known here."""
+    if isinstance(owner, PurePosixPath) and owner.is_absolute() and not a and not k:
+        return PurePosixPath(os.path.normpath(str(owner)))
+    return Unknown("Path.absolute() of a path not known to be absolute")
+
+
 XACRO_NOT_RUN = "xacro is never run here; the document it makes is unknown"
 
 
@@ -285,12 +324,15 @@ def m_xml(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
 
 METHODS: dict[str, Method] = {
     "toxml": m_xml, "toprettyxml": m_xml,
-    "add_action": m_add_action, "find": m_find, "read": m_read, "evaluate": m_evaluate,
+    "add_action": m_add_action, "add_entity": m_add_action, "find": m_find,
+    "read": m_read, "evaluate": m_evaluate,
     "append": m_list("append"), "extend": m_list("extend"),
-    "insert": m_list("insert"), "items": m_dict("items"), "keys": m_dict("keys"),
+    "insert": m_list("insert"), "remove": m_list("remove"), "pop": m_list("pop"),
+    "items": m_dict("items"), "keys": m_dict("keys"),
     "values": m_dict("values"), "get": m_dict("get"), "update": m_dict("update"),
     "copy": m_dict("copy"), "perform": m_str("perform"),
     **{name: m_path(name) for name in ("as_posix", "joinpath", "with_name", "with_suffix")},
+    "absolute": m_absolute, "resolve": m_absolute,
     **{name: m_str(name) for name in (
         "format", "join", "replace", "split", "strip", "lstrip", "rstrip", "lower", "upper",
         "startswith", "endswith", "capitalize", "title", "rsplit", "removeprefix",

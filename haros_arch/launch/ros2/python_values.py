@@ -75,6 +75,16 @@ class Ref:
     qualified: str
 
 
+@dataclass(eq=False)
+class Module:
+    """A Python file of the workspace that the launch file imports by its name from a
+    folder it put on ``sys.path``: its module-level names, as interpreted here."""
+
+    name: str
+    path: str
+    names: dict[str, Any]
+
+
 @dataclass
 class Func:
     node: ast.FunctionDef | ast.Lambda
@@ -101,7 +111,7 @@ class Context:
 
 
 _KNOWN_ROOTS = ("launch", "launch_ros", "launch_xml", "launch_yaml", "os", "ament_index_python",
-                "nav2_common", "builtins", "pathlib", "yaml", "xacro")
+                "nav2_common", "builtins", "pathlib", "yaml", "xacro", "copy")
 
 
 def _known_module(qualified: str) -> bool:

@@ -9,6 +9,7 @@ started: a ``Node`` becomes a ``NodeDecl`` and its parameters ``ParamDecl``s.
 from __future__ import annotations
 
 import os
+import shlex
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field, replace
 from typing import Any
@@ -316,6 +317,25 @@ class Runner:
             if item not in self.model.diagnostics:
                 self.model.diagnostics.append(item)
         self.run(made, scope)
+
+    def do_Process(self, action: e.Process, scope: Scope) -> None:
+        """A process whose command line, as the shell splits it, is ``ros2 run PKG EXE
+        ...`` (that node) or ``ros2 topic pub ...`` (a publisher, see
+        ``python_api.execute_process``); any other, or one not known here, no node."""
+        value = self.value(action.cmd, scope, action.location)
+        words: list[str] = []
+        if value is not None and value.literal is not None:
+            try:
+                words = shlex.split(str(value.literal))
+            except ValueError:
+                words = []
+        node = e.ros2_command_node([(w,) for w in words])
+        if node is None:  # said: a ROS node it may start is not in the graph
+            self.report("LAUNCH_PROCESS", action.location,
+                        command=e.command_head([(w,) for w in words]))
+            return
+        node.location = action.location
+        self.do_NodeAction(node, scope)
 
     def do_Unsupported(self, action: e.Unsupported, scope: Scope) -> None:
         self.report("LAUNCH_UNSUPPORTED", action.location, detail=action.what)

@@ -1,0 +1,420 @@
+"""Python launch file shapes met on real workspaces (survey of 2026-11-29)."""
+
+from __future__ import annotations
+
+from test_launch_ros2_python import codes, run
+
+
+def test_add_entity_of_a_launch_description_declares_its_arguments(write_tree):
+    """ur_moveit_config's ur_moveit.launch.py: ``ld.add_entity(declare_arguments())``
+    adds a LaunchDescription of DeclareLaunchArgument; their defaults hold after it."""
+    model, _ = run(write_tree, """
+def declare_arguments():
+    return LaunchDescription([
+        DeclareLaunchArgument('launch_rviz', default_value='false'),
+        DeclareLaunchArgument('robot', default_value='r1'),
+    ])
+
+def generate_launch_description():
+    ld = LaunchDescription()
+    ld.add_entity(declare_arguments())
+    ld.add_entity(Node(package='p', executable='e', name=LaunchConfiguration('robot')))
+    ld.add_action(Node(package='p', executable='rviz', name='rviz',
+                       condition=IfCondition(LaunchConfiguration('launch_rviz'))))
+    return ld
+""")
+    assert [n.name for n in model.nodes] == ["/r1"]
+    assert "LAUNCH_PY_UNSUPPORTED" not in codes(model)
+    assert "LAUNCH_ARG_UNSET" not in codes(model)
+
+
+def test_module_level_calls_fill_the_lists_the_launch_function_reads(write_tree):
+    """usb_cam's camera.launch.py: ``CAMERAS.append(CameraConfig(...))`` at module level
+    and a comprehension over CAMERAS in generate_launch_description. The append runs
+    when launch imports the file: the list is not empty, its item is not known, and
+    the node it makes has an unknown name, not no node at all."""
+    model, _ = run(write_tree, """
+from camera_config import CameraConfig
+
+CAMERAS = []
+CAMERAS.append(CameraConfig(name='camera1'))
+EXTRA = []
+for index in range(2):
+    EXTRA.append('extra_%d' % index)
+
+def generate_launch_description():
+    nodes = [Node(package='cam', executable='cam_node', name=camera.name,
+                  namespace=camera.namespace) for camera in CAMERAS]
+    nodes += [Node(package='p', executable='e', name=name) for name in EXTRA]
+    return LaunchDescription(nodes)
+""")
+    names = [n.name for n in model.nodes]
+    assert len(names) == 3 and "?" in names[0]
+    assert names[1:] == ["/extra_0", "/extra_1"]
+    messages = [d.message for d in model.diagnostics]
+    assert any("camera_config.CameraConfig" in m for m in messages)
+    assert any("camera.name (an attribute of a value not known statically)" in m
+               for m in messages)
+    assert not any("_Bound" in m or "module-level" in m for m in messages)
+
+
+def test_a_list_joined_to_an_unknown_keeps_its_actions(write_tree):
+    """realsense2_camera's examples: ``helper.declare(...) + [Node(...), ...]`` where
+    the helper is not interpreted. The known actions stay; a LaunchDescription of a
+    value not known says so instead of being empty."""
+    model, _ = run(write_tree, """
+import helper_module
+
+def generate_launch_description():
+    return LaunchDescription(
+        helper_module.declare_arguments() + helper_module.more() + [
+            Node(package='rviz2', executable='rviz2', name='rviz2'),
+        ] + helper_module.tail() + [Node(package='p', executable='e', name='last')])
+""")
+    assert [n.name for n in model.nodes] == ["/rviz2", "/last"]
+    model, _ = run(write_tree, """
+import helper_module
+
+def generate_launch_description():
+    return LaunchDescription(helper_module.everything())
+""")
+    assert model.nodes == []
+    messages = [d.message for d in model.diagnostics]
+    assert any("launch description is not known statically" in m for m in messages)
+
+
+HELPER = """
+import os
+from launch.actions import DeclareLaunchArgument
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+
+PARAMETERS = [{'name': 'camera_name', 'default': 'cam'},
+              {'name': 'log_level', 'default': 'info'}]
+
+def declare(parameters):
+    return [DeclareLaunchArgument(p['name'], default_value=p['default'])
+            for p in parameters]
+
+def setup(context, suffix=''):
+    name = LaunchConfiguration('camera_name' + suffix).perform(context)
+    return [Node(package='cam', executable='cam_node', name=name,
+                 arguments=['--log-level', LaunchConfiguration('log_level' + suffix)])]
+"""
+
+
+def test_a_helper_module_put_on_sys_path_is_read(write_tree):
+    """realsense2_camera's examples (``sys.path.append(<share>/launch)``; ``import
+    rs_launch``; ``OpaqueFunction(function=rs_launch.launch_setup)``) and usb_cam
+    (``from camera_config import ...``): a module of the workspace found on the
+    sys.path the file builds is interpreted like the file; its nodes are placed in it."""
+    model, _ = run(write_tree, """
+import sys
+import pathlib
+sys.path.append(str(pathlib.Path(__file__).parent.absolute()))
+sys.path.append(os.path.join(get_package_share_directory('pkg'), 'launch', 'helpers'))
+import cam_helpers
+from cam_helpers import declare as declare_them
+
+def generate_launch_description():
+    return LaunchDescription(declare_them(cam_helpers.PARAMETERS) + [
+        OpaqueFunction(function=cam_helpers.setup)])
+""", extra={"src/pkg/launch/helpers/cam_helpers.py": HELPER})
+    assert [n.name for n in model.nodes] == ["/cam"]
+    node = model.nodes[0]
+    assert node.location.file.endswith("launch/helpers/cam_helpers.py")
+    written = HELPER.lstrip("\n").splitlines()
+    assert written[node.location.line - 1].strip().startswith("return [Node(")
+    assert not any(d.severity == "warning" for d in model.diagnostics), model.diagnostics
+
+
+def test_a_helper_module_not_on_sys_path_is_not_read(write_tree):
+    """launch loads the file by its path and puts no folder on sys.path: ``import
+    cam_helpers`` without ``sys.path.append`` finds nothing of the workspace."""
+    model, _ = run(write_tree, """
+import cam_helpers
+
+def generate_launch_description():
+    return LaunchDescription(cam_helpers.declare(cam_helpers.PARAMETERS) + [
+        OpaqueFunction(function=cam_helpers.setup)])
+""", extra={"src/pkg/launch/cam_helpers.py": HELPER})
+    assert model.nodes == []
+    assert "LAUNCH_UNSUPPORTED" in codes(model)
+
+
+def test_helper_modules_bounded_cycles_and_folders_outside(write_tree, tmp_path):
+    """A helper that imports itself is read once (said); a folder outside the workspace
+    put on sys.path is never read from; a folder not known statically is said."""
+    outside = tmp_path / "elsewhere"
+    outside.mkdir()
+    (outside / "secret_helper.py").write_text("NODES = ['x']\n")
+    model, _ = run(write_tree, f"""
+import sys
+sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
+sys.path.append({str(outside)!r})
+sys.path.append(os.environ.get('NOT_SET_ANYWHERE'))
+import looping
+import secret_helper
+
+def generate_launch_description():
+    return LaunchDescription([Node(package='p', executable='e', name=n)
+                              for n in looping.NAMES] + [
+        Node(package='p', executable='e', name=secret_helper.NODES[0])])
+""", extra={"src/pkg/launch/looping.py": "import looping\nNAMES = ['a', 'b']\n"})
+    assert [n.name for n in model.nodes][:2] == ["/a", "/b"]
+    assert "x" not in model.nodes[2].name
+    messages = [d.message for d in model.diagnostics]
+    assert any("module looping imports itself" in m for m in messages)
+    assert any("sys.path.append of a folder not known statically" in m for m in messages)
+
+
+def test_copy_and_deepcopy_of_known_values(write_tree):
+    """realsense2_camera's rs_dual_camera_launch.py: ``copy.deepcopy(params)`` then a
+    suffix on each copy's name, for two cameras; the original stays as it was."""
+    model, _ = run(write_tree, """
+import copy
+from copy import copy as shallow
+
+PARAMS = [{'name': 'camera_name', 'default': 'cam'}]
+
+def duplicate(params, suffix):
+    local = copy.deepcopy(params)
+    for p in local:
+        p['name'] += suffix
+    return local
+
+def generate_launch_description():
+    first, second = duplicate(PARAMS, '1'), duplicate(PARAMS, '2')
+    same = shallow(PARAMS)
+    same.append({'name': 'extra'})
+    return LaunchDescription([Node(package='p', executable='e', name=p['name'])
+                              for p in first + second + PARAMS + same])
+""")
+    assert [n.name for n in model.nodes] == [
+        "/camera_name1", "/camera_name2", "/camera_name", "/camera_name", "/extra"]
+    assert "LAUNCH_PY_UNSUPPORTED" not in codes(model)
+
+
+def _conditional(model) -> dict[str, bool]:
+    return {n.name: bool(n.conditions) for n in model.nodes}
+
+
+def test_a_return_under_a_test_not_known_is_one_of_the_outcomes(write_tree):
+    """realsense2_description's view_model.launch.py: ``if 'model' not in params:
+    print(usage); return LaunchDescription()`` with params from sys.argv. The early
+    return is one outcome; the nodes after it run under the other branch's test."""
+    model, _ = run(write_tree, """
+import sys
+
+def generate_launch_description():
+    params = dict([aa for aa in [aa.split(':=') for aa in sys.argv] if len(aa) == 2])
+    if 'model' not in params:
+        print('USAGE')
+        return LaunchDescription([Node(package='p', executable='usage', name='usage')])
+    return LaunchDescription([Node(package='rviz2', executable='rviz2', name='rviz2')])
+""")
+    assert _conditional(model) == {"/usage": True, "/rviz2": True}
+    rviz = model.nodes[1]
+    assert any("'model' not in params" in str(c) for c in rviz.conditions)
+
+
+def test_both_branches_returning_and_known_tests_are_as_before(write_tree):
+    model, _ = run(write_tree, """
+def pick(flag):
+    if flag:
+        return [Node(package='p', executable='e', name='yes')]
+    else:
+        return [Node(package='p', executable='e', name='no')]
+    return [Node(package='p', executable='e', name='never')]
+
+def generate_launch_description():
+    known = pick(True)
+    unknown = pick(os.environ.get('NOT_SET_HERE_EITHER') == '1')
+    return LaunchDescription(known + unknown)
+""")
+    assert [n.name for n in model.nodes] == ["/yes", "/yes", "/no"]
+    assert [bool(n.conditions) for n in model.nodes] == [False, True, True]
+
+
+def test_a_loop_over_a_value_not_known_may_make_its_nodes(write_tree):
+    """A ``for`` statement or a comprehension over a value not known statically
+    (``os.listdir``, ``sys.argv``, a helper's result) runs its body once on an unknown
+    item, under the loop: a conditional node of unknown name, not no node at all."""
+    model, _ = run(write_tree, """
+import sys
+
+def generate_launch_description():
+    nodes = []
+    for robot in sys.argv[1:]:
+        nodes.append(Node(package='p', executable='driver', name=robot + '_driver'))
+        nodes.append(Node(package='p', executable='fixed', name='fixed'))
+    devices = [d for d in os.listdir('/dev') if d.startswith('video')]
+    cameras = [Node(package='cam', executable='cam_node', name=d) for d in devices]
+    listed = dict([(d, len(d)) for d in devices])
+    return LaunchDescription(nodes + cameras + [
+        Node(package='p', executable='e', name='lister', arguments=[', '.join(devices)],
+             parameters=[listed])])
+""")
+    names = [n.name for n in model.nodes]
+    assert len(names) == 4 and "?" in names[0] and names[1] == "/fixed" and "?" in names[2]
+    # the loops' own nodes are conditional; a node made later from the list such a
+    # loop made is named '?' (the list holds one item not known, not a condition)
+    assert [bool(n.conditions) for n in model.nodes][:2] == [True, True]
+    assert not model.nodes[3].conditions
+    assert [n.executable for n in model.nodes] == ["driver", "fixed", "cam_node", "e"]
+    assert not any("fails" in d.message for d in model.diagnostics)
+    assert any("filter not known statically; the item is kept" in d.message
+               for d in model.diagnostics)
+
+
+def test_list_remove_and_pop(write_tree):
+    """Universal_Robots_ROS2_Driver's ur_control.launch.py: the initial joint controller
+    moves from the inactive list to the active one (``append`` / ``remove``)."""
+    model, _ = run(write_tree, """
+def generate_launch_description():
+    active = ['broadcaster']
+    inactive = ['joint_trajectory_controller', 'forward_controller', 'spare']
+    chosen = LaunchConfiguration('initial', default='joint_trajectory_controller')
+    chosen = 'joint_trajectory_controller'
+    active.append(chosen)
+    inactive.remove(chosen)
+    last = inactive.pop()
+    options = {'a': 1, 'b': 2}
+    first = options.pop('a')
+    other = options.pop('zzz', 'fallback')
+    inactive.remove('not_there')
+    return LaunchDescription([
+        Node(package='cm', executable='spawner', name='active', arguments=active),
+        Node(package='cm', executable='spawner', name='inactive', arguments=inactive),
+        Node(package='p', executable='e', name=last + '_' + other + '_' + str(first)),
+    ])
+""")
+    assert [(n.name, n.args) for n in model.nodes] == [
+        ("/active", "broadcaster joint_trajectory_controller"),
+        ("/inactive", "forward_controller"), ("/spare_fallback_1", "")]
+    messages = [d.message for d in model.diagnostics]
+    assert messages == ["list.remove('not_there') fails: not in the list"]
+
+
+def test_execute_process_of_ros2_run_and_ros2_topic_pub_starts_nodes(write_tree):
+    """pointcloud_to_laserscan's sample launch files publish the scan with
+    ``ExecuteProcess(cmd=['ros2', 'topic', 'pub', ...])``: a publisher of the graph
+    (``models.commands`` reads its topic), named as ros2cli names it; ``ros2 run PKG
+    EXE`` is that node. Other processes (a simulator) still make no node."""
+    model, _ = run(write_tree, """
+from launch.actions import ExecuteProcess
+from launch.substitutions import PathJoinSubstitution
+from launch_ros.substitutions import FindPackagePrefix
+
+def generate_launch_description():
+    scanner = LaunchConfiguration('scanner', default='front')
+    return LaunchDescription([
+        ExecuteProcess(cmd=['ros2', 'topic', 'pub', '-r', '10', [scanner, '/scan'],
+                            'sensor_msgs/msg/LaserScan', '{}'], name='scan_publisher'),
+        ExecuteProcess(cmd=['ros2', 'topic', 'pub', '--node-name', 'named_pub', 'chatter',
+                            'std_msgs/msg/String']),
+        ExecuteProcess(cmd=['ros2', 'run', 'demo_nodes_cpp', 'talker', '--ros-args', '-r',
+                            '__node:=speaker'],
+                       condition=IfCondition(LaunchConfiguration('talk', default='true'))),
+        ExecuteProcess(cmd=['gz', 'sim', '-r', 'world.sdf']),
+        ExecuteProcess(cmd=[PathJoinSubstitution([FindPackagePrefix('tools'), 'lib',
+                                                  'bridge.py']), scanner, '--port']),
+    ])
+""")
+    assert [(n.name, n.package, n.executable) for n in model.nodes] == [
+        ("/_ros2cli_?", "ros2topic", "ros2"), ("/named_pub", "ros2topic", "ros2"),
+        ("/speaker", "demo_nodes_cpp", "talker")]
+    assert model.nodes[0].args == (
+        "topic pub -r 10 front/scan sensor_msgs/msg/LaserScan {}")
+    assert "LAUNCH_UNSUPPORTED" not in codes(model)
+    # the simulator is said: a ROS node it may start is not in the graph
+    assert [(d.code, d.severity, d.location.line, d.message) for d in model.diagnostics
+            if d.code == "LAUNCH_PROCESS"] == [
+        ("LAUNCH_PROCESS", "info", 26, "process gz sim -r started here is no node the "
+                                       "reader can name"),
+        ("LAUNCH_PROCESS", "info", 27, "process bridge.py started here is no node the "
+                                       "reader can name")]
+
+
+def test_xml_executable_of_ros2_topic_pub_read_when_performed(write_tree):
+    """Autoware's dummy_scenario_selector_*.launch.xml: ``<executable cmd="$(var cmd)"
+    shell="true"/>`` with cmd ``ros2 topic pub $(var output_scenario) TYPE '{...}'``:
+    the command line is known only when the file runs; then it is a publisher."""
+    from test_launch_ros2 import run as run_xml
+
+    model, _ = run_xml(write_tree, "main.launch.xml", """
+<launch>
+  <arg name="output_scenario" default="/planning/scenario"/>
+  <arg name="cmd" default="ros2 topic pub $(var output_scenario)
+    tier4_planning_msgs/msg/Scenario '{current_scenario: LaneDriving}'"/>
+  <executable cmd="$(var cmd)" name="scenario_pub" output="screen" shell="true"/>
+  <arg name="listen" default="false"/>
+  <executable cmd="ros2 run demo_nodes_cpp listener" if="$(var listen)"/>
+  <executable cmd="ros2 run demo_nodes_cpp talker --ros-args -r __node:=speaker"/>
+  <executable cmd="gz sim -r world.sdf"/>
+  <executable cmd="$(var not_declared_anywhere)"/>
+</launch>
+""")
+    assert [(n.name, n.package, n.executable) for n in model.nodes] == [
+        ("/_ros2cli_?", "ros2topic", "ros2"), ("/speaker", "demo_nodes_cpp", "talker")]
+    assert model.nodes[0].args == ("topic pub /planning/scenario "
+                                   "tier4_planning_msgs/msg/Scenario "
+                                   "'{current_scenario: LaneDriving}'")
+    assert sorted(d.message.split(" started")[0] for d in model.diagnostics
+                  if d.code == "LAUNCH_PROCESS") == [
+        "process (a command not known statically)", "process gz sim -r"]
+
+
+def test_undecided_info_names_two_instances_of_one_name_once():
+    """rosbot_bringup's combined.launch.py starts micro_ros_agent in either branch of an
+    ``if`` on an environment variable: two instances of one name, each of unknown
+    interface; the undecided info names it once, counted once per possible finding."""
+    from test_query_catalogue import RULES, configuration
+
+    from haros_arch.query.catalogue import run_rule
+
+    found = run_rule(RULES["subscriber-without-publisher"], configuration({
+        "nodes": [{"name": "/agent", "node": None}, {"name": "/agent", "node": None}],
+        "links": [{"kind": "subscribe", "node": "/controller", "name": "/joint_states",
+                   "type": "sensor_msgs/JointState"},
+                  {"kind": "subscribe", "node": "/controller", "name": "/odom",
+                   "type": "nav_msgs/Odometry"}]}))
+    (info,) = found
+    assert info.message.endswith(": /agent (2)"), info.message
+
+
+def test_outcomes_that_share_actions_run_them_once(write_tree):
+    """One LaunchDescription returned from two places, or two lists that share their
+    first actions: each action is in the graph once, not once per outcome."""
+    model, _ = run(write_tree, """
+def generate_launch_description():
+    ld = LaunchDescription([Node(package='p', executable='e', name='base')])
+    base = [Node(package='p', executable='e', name='shared')]
+    if os.environ.get('NOT_SET_FOR_THIS_TEST'):
+        ld.add_action(Node(package='p', executable='e', name='extra'))
+        return LaunchDescription([ld] + base)
+    ld.add_action(Node(package='p', executable='e', name='other'))
+    return LaunchDescription([ld] + base)
+""")
+    names = sorted(n.name for n in model.nodes)
+    assert names == ["/base", "/extra", "/other", "/shared"]
+
+
+def test_a_helper_returning_one_of_two_lists_of_names_gives_an_unknown(write_tree):
+    model, _ = run(write_tree, """
+def controllers():
+    if os.environ.get('NOT_SET_FOR_THIS_TEST'):
+        return ['a']
+    return ['b']
+
+def same():
+    if os.environ.get('NOT_SET_FOR_THIS_TEST'):
+        return ['c']
+    return ['c']
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package='p', executable='spawner', name='s', arguments=controllers()),
+        Node(package='p', executable='spawner', name='t', arguments=same())])
+""")
+    assert [n.args for n in model.nodes] == ["?", "c"]
