@@ -100,3 +100,34 @@ def test_ros2_environment_and_given_arguments_are_not_hard_coded(write_tree):
     reloaded = from_data(json.loads(json.dumps(model_to_data(model))))
     for found in (run_rule(rule, model), run_rule(rule, reloaded)):
         assert sorted(f.entities for f in found) == [("parameter:/loader/socket",)]
+
+
+PYTHON_LAUNCH = """
+import os
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    data = os.path.join(os.environ["HOME"], "robot_data")
+    maps = os.getenv("ROBOT_MAPS", "/opt/maps")
+    return LaunchDescription([Node(package="nav", executable="loader", name="loader",
+                                   parameters=[{"model_path": data + "/net.onnx",
+                                                "map_file": maps + "/town.yaml",
+                                                "socket": "/opt/robot/reader.sock"}])])
+"""
+
+
+def test_ros2_python_environment_paths_are_not_hard_coded(write_tree):
+    """A Python launch file's ``os.environ[...]`` / ``os.getenv(...)`` follow the
+    machine; the default of a variable that is not set is the file's own."""
+    root = write_tree({
+        "src/nav/package.xml": package_xml("nav", "ament_cmake"),
+        "src/nav/CMakeLists.txt": "project(nav)\n",
+        "src/nav/launch/map.launch.py": PYTHON_LAUNCH,
+        "project.yaml": "project: p\nconfigurations:\n  c: [nav/launch/map.launch.py]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {"PATH": "", "HOME": "/home/bob"})
+    (rule,) = [r for r in load_catalogue() if r.id == "absolute-paths-in-launch"]
+    found = sorted(f.entities for f in run_rule(rule, model))
+    assert found == [("parameter:/loader/map_file",), ("parameter:/loader/socket",)]

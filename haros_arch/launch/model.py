@@ -7,6 +7,7 @@ remappings are kept as written, because a node resolves them in its own namespac
 from __future__ import annotations
 
 import dataclasses
+from collections.abc import Iterator, Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -146,3 +147,24 @@ def without_tests(model: LaunchModel) -> LaunchModel:
               for p in params]
     return dataclasses.replace(model, nodes=kept, params=params,
                                diagnostics=[*model.diagnostics, *notes])
+
+
+class RecordedEnvironment(Mapping[str, str]):
+    """The environment, noting in ``read`` each value a launch file takes from it
+    (``LaunchModel.environment_values``); asking whether a variable is set notes nothing."""
+
+    def __init__(self, environment: Mapping[str, str], read: list[str]) -> None:
+        self._environment = environment
+        self._read = read
+
+    def __getitem__(self, key: str) -> str:
+        value = self._environment[key]
+        if value not in self._read:
+            self._read.append(value)
+        return value
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._environment)
+
+    def __len__(self) -> int:
+        return len(self._environment)

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import os
 import re
-from collections.abc import Callable, Iterator, Mapping
+from collections.abc import Callable, Mapping
 
 from lxml import etree
 
@@ -25,7 +25,7 @@ from ...model.location import Location
 from ...model.rosname import is_legal_name
 from ...model.values import Value
 from ...workspace import Workspace
-from ..model import LaunchModel, NodeDecl
+from ..model import LaunchModel, NodeDecl, RecordedEnvironment
 from ..tree import MAX_SKIPPED, node_items, param_names, ros1_condition
 from . import tags_params
 from .scope import Scope, canonical, global_ns
@@ -64,31 +64,11 @@ REQUIRED: dict[str, tuple[str, ...]] = {
 }
 
 
-class _Recorded(Mapping[str, str]):
-    """The environment, noting in ``read`` each value a substitution takes from it."""
-
-    def __init__(self, environment: Mapping[str, str], read: list[str]) -> None:
-        self._environment = environment
-        self._read = read
-
-    def __getitem__(self, key: str) -> str:
-        value = self._environment[key]
-        if value not in self._read:
-            self._read.append(value)
-        return value
-
-    def __iter__(self) -> Iterator[str]:
-        return iter(self._environment)
-
-    def __len__(self) -> int:
-        return len(self._environment)
-
-
 class Ros1Loader:
     def __init__(self, workspace: Workspace, environment: Mapping[str, str]) -> None:
         self.workspace = workspace
         self.model = LaunchModel()
-        self.environment: Mapping[str, str] = _Recorded(environment,
+        self.environment: Mapping[str, str] = RecordedEnvironment(environment,
                                                         self.model.environment_values)
         self.default_machine: str | None = None
         self.node_names: dict[str, list[tuple[Location, tuple[Condition, ...]]]] = {}

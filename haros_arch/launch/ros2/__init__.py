@@ -45,7 +45,7 @@ def parse_file(path: str, runner: Runner, where: Location) -> list[e.Action] | N
         runner.model.diagnostics.extend(found)
         if text is None:
             return None
-        actions, problems = parse_python(text, path, workspace,
+        actions, problems = parse_python(text, path, workspace, runner.environment,
                                          uses=runner.model.package_uses)
         runner.model.diagnostics.extend(problems)
         return actions

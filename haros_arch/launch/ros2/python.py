@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import ast
 import os
+from collections.abc import Mapping
 from pathlib import PurePosixPath
 from typing import Any
 
@@ -61,7 +62,7 @@ from .python_values import (
 class Interpreter(Expressions):
     """Statements, calls and the module; expressions come from ``Expressions``."""
 
-    def __init__(self, path: str, workspace: Workspace, environment: dict[str, str]) -> None:
+    def __init__(self, path: str, workspace: Workspace, environment: Mapping[str, str]) -> None:
         self.path = path
         self.workspace = workspace
         self.environment = environment
@@ -523,7 +524,7 @@ class Interpreter(Expressions):
 
 
 def parse_python(text: str, path: str, workspace: Workspace,
-                 environment: dict[str, str] | None = None,
+                 environment: Mapping[str, str] | None = None,
                  uses: list[PackageUse] | None = None,
                  ) -> tuple[list[e.Action] | None, list[Diagnostic]]:
     """The actions of a Python launch file, and what could not be interpreted; the
@@ -532,7 +533,8 @@ def parse_python(text: str, path: str, workspace: Workspace,
     tree, problem = checked_tree(text, path, workspace)
     if tree is None:
         return None, [problem] if problem is not None else []
-    interp = Interpreter(path, workspace, dict(environment or workspace.environment))
+    interp = Interpreter(path, workspace,
+                         environment if environment is not None else workspace.environment)
     try:
         actions = interp.module(tree)
     except Budget as stop:

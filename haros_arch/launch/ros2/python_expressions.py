@@ -13,7 +13,7 @@ gives an unknown value and a diagnostic.
 from __future__ import annotations
 
 import ast
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass
 from pathlib import PurePosixPath
 from typing import TYPE_CHECKING, Any, NoReturn
@@ -55,7 +55,7 @@ class Expressions(Walker):
     globals: dict[str, Any]
     builtins: frozenset[str]
     methods: dict[str, Any]
-    environment: dict[str, str]
+    environment: Mapping[str, str]
     guards: list[str]
 
     def sized(self, value: Any) -> Any:

@@ -25,7 +25,7 @@ from ...model.location import Location
 from ...model.values import Unknown, Value
 from ...share import share_source
 from ...workspace import Workspace
-from ..model import LaunchModel, NodeDecl, ParamDecl
+from ..model import LaunchModel, NodeDecl, ParamDecl, RecordedEnvironment
 from ..partial_yaml import marked_text, unknown_parts
 from ..tree import node_items
 from . import entities as e
@@ -62,9 +62,12 @@ class Runner:
     def __init__(self, workspace: Workspace, environment: Mapping[str, str],
                  parse: Parser) -> None:
         self.workspace = workspace
-        self.environment = environment
         self.parse = parse
         self.model = LaunchModel()
+        # what the launch reads of the machine's environment is noted: a path under it
+        # follows the machine, not a folder the launch file hard-codes
+        self.environment: Mapping[str, str] = RecordedEnvironment(
+            environment, self.model.environment_values)
         self.stack: list[str] = []
         self.performed = 0
         self.param_entries = 0  # parameter entries applied to nodes (nodes.node_params)
@@ -76,15 +79,6 @@ class Runner:
         found = diag.make(code, location, **params)
         if found not in self.model.diagnostics:
             self.model.diagnostics.append(found)
-
-    def from_environment(self, name: str) -> str:
-        """The machine's environment variable ``name`` (it is there), noted as a value
-        the launch took from the environment (``LaunchModel.environment_values``): a
-        path under it follows the machine, not a folder the launch file hard-codes."""
-        value = self.environment[name]
-        if value not in self.model.environment_values:
-            self.model.environment_values.append(value)
-        return value
 
     def uses(self, package: str, location: Location) -> None:
         """A substitution asked for the folder of ``package`` (``?`` for parts not known)."""

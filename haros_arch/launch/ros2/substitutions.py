@@ -238,7 +238,7 @@ class Evaluator:
         if name in self.scope.environment:
             return Value.of(self.scope.environment[name])
         if name in self.runner.environment and name + "\0unset" not in self.scope.environment:
-            return Value.of(self.runner.from_environment(name))
+            return Value.of(self.runner.environment[name])
         if s.default is not None:
             return self.value(s.default)
         return Value.unknown(f"env {name}")
@@ -314,7 +314,7 @@ class Evaluator:
         if name in self.scope.environment:
             return self.scope.environment[name]
         if name in self.runner.environment and name + "\0unset" not in self.scope.environment:
-            return self.runner.from_environment(name)
+            return self.runner.environment[name]
         return None
 
     def s_GlobalParam(self, s: e.GlobalParam) -> Value:
