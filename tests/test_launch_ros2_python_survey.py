@@ -418,3 +418,26 @@ def generate_launch_description():
         Node(package='p', executable='spawner', name='t', arguments=same())])
 """)
     assert [n.args for n in model.nodes] == ["?", "c"]
+
+
+def test_a_launch_configuration_default_that_is_no_text_is_pythons_str(write_tree):
+    """rosbot_xl_bringup's combined.launch.py: ``LaunchConfiguration(name,
+    default=True)``. launch turns a default item that is neither a str nor a
+    substitution into ``str(item)``: "True", not "true", so a PythonExpression over it
+    (bringup.launch.py's ``use_sim or combined_launch_deprecated``) is valid Python and
+    its condition is known."""
+    model, _ = run(write_tree, """
+def generate_launch_description():
+    flag = LaunchConfiguration('deprecated', default=True)
+    return LaunchDescription([
+        Node(package='p', executable='e', name='agent',
+             condition=UnlessCondition(PythonExpression(['False or ', flag]))),
+        Node(package='p', executable='e', name='kept',
+             condition=IfCondition(PythonExpression([flag, ' and True']))),
+        Node(package='p', executable='e',
+             name=LaunchConfiguration('unit', default=['n', 7, True])),
+        Node(package='p', executable='e', name=LaunchConfiguration('count', default=3)),
+    ])
+""")
+    assert [n.name for n in model.nodes] == ["/kept", "/n7True", "/3"]
+    assert "LAUNCH_UNSUPPORTED" not in codes(model)

@@ -65,7 +65,19 @@ def actions(interp: Interpreter, value: Any, node: ast.AST) -> list[e.Action]:
 # -- substitutions ----------------------------------------------------------------------
 def launch_configuration(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     default = arg(a, k, 1, "default")
-    return e.Var(to_text(arg(a, k, 0, "variable_name")), text_or_none(default))
+    return e.Var(to_text(arg(a, k, 0, "variable_name")), configuration_default(default))
+
+
+def configuration_default(value: Any) -> e.Text | None:
+    """``LaunchConfiguration``'s ``default`` as launch keeps it: a str as it is, else each
+    item of it (the value itself when it is not iterable), a str or substitution as it
+    is and any other plain value as Python's ``str`` of it (``default=True`` is "True",
+    which a ``PythonExpression`` over it reads as Python's ``True``)."""
+    if value is None or isinstance(value, str):
+        return text_or_none(value)
+    items = value if isinstance(value, (list, tuple)) else [value]
+    return e.text(*(to_text(str(item)) if isinstance(item, PLAIN) else to_text(item)
+                    for item in items))
 
 
 def environment_variable(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
