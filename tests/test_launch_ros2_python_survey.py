@@ -441,3 +441,30 @@ def generate_launch_description():
 """)
     assert [n.name for n in model.nodes] == ["/kept", "/n7True", "/3"]
     assert "LAUNCH_UNSUPPORTED" not in codes(model)
+
+
+def test_a_process_is_said_only_where_it_is_performed(write_tree):
+    """px4_ros_com's sensor_combined_listener.launch.py makes an ``ExecuteProcess`` of
+    the micro-ROS agent and leaves it out of the description (``#micro_ros_agent,``):
+    nothing starts it, so no ``LAUNCH_PROCESS`` says it is started. One under a condition
+    that does not hold is not started either; one under a condition not known is said."""
+    model, _ = run(write_tree, """
+from launch.actions import ExecuteProcess
+
+def generate_launch_description():
+    agent = ExecuteProcess(cmd=[['micro-ros-agent udp4 --port 8888 -v ']], shell=True)
+    gz = ExecuteProcess(cmd=['gz', 'sim', '-r', 'world.sdf'],
+                        condition=IfCondition(LaunchConfiguration('sim', default='false')))
+    tool = ExecuteProcess(cmd=['tool.py', '--port'],
+                          condition=IfCondition(EnvironmentVariable('USE_TOOL')))
+    listener = Node(package='p', executable='listener', name='listener')
+    return LaunchDescription([
+        # agent,
+        gz, tool, listener,
+    ])
+""")
+    assert [n.name for n in model.nodes] == ["/listener"]
+    assert [(d.code, d.location.line, d.message) for d in model.diagnostics
+            if d.code == "LAUNCH_PROCESS"] == [
+        ("LAUNCH_PROCESS", 18, "process tool.py --port started here is no node the reader "
+                               "can name")]

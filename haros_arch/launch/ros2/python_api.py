@@ -336,11 +336,9 @@ def execute_process(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     cmd = arg(a, k, 0, "cmd")
     action = e.ros2_command_node([to_text(w) for w in cmd]) if isinstance(
         cmd, (list, tuple)) else None
-    if action is None:  # said: a ROS node it may start is not in the graph
+    if action is None:  # said when performed: a ROS node it may start is not in the graph
         words = list(cmd) if isinstance(cmd, (list, tuple)) else [cmd]
-        i.diagnostics.append(diag.make("LAUNCH_PROCESS", i.where(n), command=e.command_head(
-            [to_text(w) for w in words if w is not None])))
-        return None
+        return finish(i, e.Process((), [to_text(w) for w in words if w is not None]), k, n)
     return finish(i, action, k, n)
 
 
