@@ -468,3 +468,31 @@ def generate_launch_description():
             if d.code == "LAUNCH_PROCESS"] == [
         ("LAUNCH_PROCESS", 18, "process tool.py --port started here is no node the reader "
                                "can name")]
+
+
+def test_a_context_performs_a_substitution(write_tree):
+    """rosbot_xl_gazebo's spawn.launch.py / simulation.launch.py and realsense2_camera's
+    rs_launch.py read launch configurations in an OpaqueFunction with
+    ``context.perform_substitution(LaunchConfiguration(name))``, the same as
+    ``LaunchConfiguration(name).perform(context)``; nav2_common's
+    ``launch.utilities.perform_substitutions(context, [...])`` joins a list's values."""
+    model, _ = run(write_tree, """
+import launch
+
+def setup(context, *args, **kwargs):
+    namespace = context.perform_substitution(LaunchConfiguration('namespace'))
+    model = context.perform_substitution(TextSubstitution(text='s1'))
+    name = launch.utilities.perform_substitutions(
+        context, [LaunchConfiguration('prefix'), TextSubstitution(text='_lidar')])
+    return [Node(package='p', executable='e', name=name + '_' + model, namespace=namespace)]
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('namespace', default_value='robot1'),
+        DeclareLaunchArgument('prefix', default_value='front'),
+        OpaqueFunction(function=setup),
+    ])
+""")
+    assert [n.name for n in model.nodes] == ["/robot1/front_lidar_s1"]
+    assert "LAUNCH_PY_UNSUPPORTED" not in codes(model)
+    assert "LAUNCH_UNSUPPORTED" not in codes(model)

@@ -80,6 +80,15 @@ def configuration_default(value: Any) -> e.Text | None:
                     for item in items))
 
 
+def perform_substitutions(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``launch.utilities.perform_substitutions(context, subs)``: the values of ``subs``
+    (a list of substitutions and strings) performed in ``context``, joined."""
+    context, subs = arg(a, k, 0, "context"), arg(a, k, 1, "subs")
+    if isinstance(context, Context) and subs is not None:
+        return context.perform(to_text(subs))
+    return i.unsupported(n, "perform_substitutions() outside an OpaqueFunction")
+
+
 def environment_variable(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     return e.Env(to_text(arg(a, k, 0, "name")), text_or_none(arg(a, k, 1, "default_value")))
 
@@ -560,6 +569,7 @@ SCALARS = (str, int, float, bool, list, tuple, dict, type(None))
 API: dict[str, Builder] = {
     "LaunchDescription": launch_description,
     "LaunchConfiguration": launch_configuration,
+    "perform_substitutions": perform_substitutions,
     "EnvironmentVariable": environment_variable,
     "LaunchContext": launch_context,
     "FindPackageShare": find_package(True), "FindPackagePrefix": find_package(False),
