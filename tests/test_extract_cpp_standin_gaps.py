@@ -89,3 +89,46 @@ def test_a_looked_up_transform_as_a_message_in_ros1(write_tree) -> None:
     result = _extract(write_tree, _source("ros1_tf2_lookup_result.cpp"), "catkin")
     assert _errors(result) == []
     assert [(c.kind, c.name) for c in result.calls] == [("publish", "lookup_done")]
+
+
+def test_a_time_point_cast(write_tree) -> None:
+    """px4_ros_com's debug_vect_advertiser stamps its message with
+    ``std::chrono::time_point_cast<std::chrono::microseconds>(steady_clock::now())
+    .time_since_epoch().count()`` inside the timer lambda of the function that makes
+    its publisher: the stand-in <chrono> lacked time_point_cast, an error near the call
+    made the node partial."""
+    result = _extract(write_tree, """
+#include <chrono>
+#include <memory>
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/int64.hpp>
+
+class Stamper : public rclcpp::Node {
+public:
+  Stamper() : Node("stamper") {
+    publisher_ = this->create_publisher<std_msgs::msg::Int64>("stamp", 10);
+    auto tick = [this]() -> void {
+      std_msgs::msg::Int64 msg;
+      msg.data = std::chrono::time_point_cast<std::chrono::microseconds>(
+          std::chrono::steady_clock::now()).time_since_epoch().count();
+      auto ms = std::chrono::time_point_cast<std::chrono::milliseconds>(
+          std::chrono::system_clock::now());
+      msg.data += ms.time_since_epoch().count();
+      publisher_->publish(msg);
+    };
+    timer_ = this->create_wall_timer(std::chrono::milliseconds(500), tick);
+  }
+private:
+  rclcpp::Publisher<std_msgs::msg::Int64>::SharedPtr publisher_;
+  rclcpp::TimerBase::SharedPtr timer_;
+};
+
+int main(int argc, char ** argv) {
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<Stamper>());
+  return 0;
+}
+""", "ament_cmake")
+    assert _errors(result) == []
+    assert [(c.kind, c.name, c.type) for c in result.calls if c.kind == "publish"] == [
+        ("publish", "stamp", "std_msgs/msg/Int64")]

@@ -418,3 +418,81 @@ def generate_launch_description():
         Node(package='p', executable='spawner', name='t', arguments=same())])
 """)
     assert [n.args for n in model.nodes] == ["?", "c"]
+
+
+def test_a_launch_configuration_default_that_is_no_text_is_pythons_str(write_tree):
+    """rosbot_xl_bringup's combined.launch.py: ``LaunchConfiguration(name,
+    default=True)``. launch turns a default item that is neither a str nor a
+    substitution into ``str(item)``: "True", not "true", so a PythonExpression over it
+    (bringup.launch.py's ``use_sim or combined_launch_deprecated``) is valid Python and
+    its condition is known."""
+    model, _ = run(write_tree, """
+def generate_launch_description():
+    flag = LaunchConfiguration('deprecated', default=True)
+    return LaunchDescription([
+        Node(package='p', executable='e', name='agent',
+             condition=UnlessCondition(PythonExpression(['False or ', flag]))),
+        Node(package='p', executable='e', name='kept',
+             condition=IfCondition(PythonExpression([flag, ' and True']))),
+        Node(package='p', executable='e',
+             name=LaunchConfiguration('unit', default=['n', 7, True])),
+        Node(package='p', executable='e', name=LaunchConfiguration('count', default=3)),
+    ])
+""")
+    assert [n.name for n in model.nodes] == ["/kept", "/n7True", "/3"]
+    assert "LAUNCH_UNSUPPORTED" not in codes(model)
+
+
+def test_a_process_is_said_only_where_it_is_performed(write_tree):
+    """px4_ros_com's sensor_combined_listener.launch.py makes an ``ExecuteProcess`` of
+    the micro-ROS agent and leaves it out of the description (``#micro_ros_agent,``):
+    nothing starts it, so no ``LAUNCH_PROCESS`` says it is started. One under a condition
+    that does not hold is not started either; one under a condition not known is said."""
+    model, _ = run(write_tree, """
+from launch.actions import ExecuteProcess
+
+def generate_launch_description():
+    agent = ExecuteProcess(cmd=[['micro-ros-agent udp4 --port 8888 -v ']], shell=True)
+    gz = ExecuteProcess(cmd=['gz', 'sim', '-r', 'world.sdf'],
+                        condition=IfCondition(LaunchConfiguration('sim', default='false')))
+    tool = ExecuteProcess(cmd=['tool.py', '--port'],
+                          condition=IfCondition(EnvironmentVariable('USE_TOOL')))
+    listener = Node(package='p', executable='listener', name='listener')
+    return LaunchDescription([
+        # agent,
+        gz, tool, listener,
+    ])
+""")
+    assert [n.name for n in model.nodes] == ["/listener"]
+    assert [(d.code, d.location.line, d.message) for d in model.diagnostics
+            if d.code == "LAUNCH_PROCESS"] == [
+        ("LAUNCH_PROCESS", 18, "process tool.py --port started here is no node the reader "
+                               "can name")]
+
+
+def test_a_context_performs_a_substitution(write_tree):
+    """rosbot_xl_gazebo's spawn.launch.py / simulation.launch.py and realsense2_camera's
+    rs_launch.py read launch configurations in an OpaqueFunction with
+    ``context.perform_substitution(LaunchConfiguration(name))``, the same as
+    ``LaunchConfiguration(name).perform(context)``; nav2_common's
+    ``launch.utilities.perform_substitutions(context, [...])`` joins a list's values."""
+    model, _ = run(write_tree, """
+import launch
+
+def setup(context, *args, **kwargs):
+    namespace = context.perform_substitution(LaunchConfiguration('namespace'))
+    model = context.perform_substitution(TextSubstitution(text='s1'))
+    name = launch.utilities.perform_substitutions(
+        context, [LaunchConfiguration('prefix'), TextSubstitution(text='_lidar')])
+    return [Node(package='p', executable='e', name=name + '_' + model, namespace=namespace)]
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('namespace', default_value='robot1'),
+        DeclareLaunchArgument('prefix', default_value='front'),
+        OpaqueFunction(function=setup),
+    ])
+""")
+    assert [n.name for n in model.nodes] == ["/robot1/front_lidar_s1"]
+    assert "LAUNCH_PY_UNSUPPORTED" not in codes(model)
+    assert "LAUNCH_UNSUPPORTED" not in codes(model)

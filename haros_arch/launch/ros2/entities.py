@@ -304,9 +304,12 @@ class Callback(Action):
 class Process(Action):
     """``<executable cmd="...">``: a process, read when performed; a ROS node only when
     its command line is ``ros2 run PKG EXE ...`` or ``ros2 topic pub ...``
-    (``runner.do_Process``)."""
+    (``runner.do_Process``). ``words``: a Python ``ExecuteProcess``'s command, known at
+    build time to start no node we can name; said (``LAUNCH_PROCESS``) only when the
+    action is performed, not where it is made (it may never be added or run)."""
 
     cmd: Text
+    words: list[Text] | None = None
 
 
 @dataclass

@@ -65,7 +65,28 @@ def actions(interp: Interpreter, value: Any, node: ast.AST) -> list[e.Action]:
 # -- substitutions ----------------------------------------------------------------------
 def launch_configuration(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     default = arg(a, k, 1, "default")
-    return e.Var(to_text(arg(a, k, 0, "variable_name")), text_or_none(default))
+    return e.Var(to_text(arg(a, k, 0, "variable_name")), configuration_default(default))
+
+
+def configuration_default(value: Any) -> e.Text | None:
+    """``LaunchConfiguration``'s ``default`` as launch keeps it: a str as it is, else each
+    item of it (the value itself when it is not iterable), a str or substitution as it
+    is and any other plain value as Python's ``str`` of it (``default=True`` is "True",
+    which a ``PythonExpression`` over it reads as Python's ``True``)."""
+    if value is None or isinstance(value, str):
+        return text_or_none(value)
+    items = value if isinstance(value, (list, tuple)) else [value]
+    return e.text(*(to_text(str(item)) if isinstance(item, PLAIN) else to_text(item)
+                    for item in items))
+
+
+def perform_substitutions(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``launch.utilities.perform_substitutions(context, subs)``: the values of ``subs``
+    (a list of substitutions and strings) performed in ``context``, joined."""
+    context, subs = arg(a, k, 0, "context"), arg(a, k, 1, "subs")
+    if isinstance(context, Context) and subs is not None:
+        return context.perform(to_text(subs))
+    return i.unsupported(n, "perform_substitutions() outside an OpaqueFunction")
 
 
 def environment_variable(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
@@ -324,11 +345,9 @@ def execute_process(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     cmd = arg(a, k, 0, "cmd")
     action = e.ros2_command_node([to_text(w) for w in cmd]) if isinstance(
         cmd, (list, tuple)) else None
-    if action is None:  # said: a ROS node it may start is not in the graph
+    if action is None:  # said when performed: a ROS node it may start is not in the graph
         words = list(cmd) if isinstance(cmd, (list, tuple)) else [cmd]
-        i.diagnostics.append(diag.make("LAUNCH_PROCESS", i.where(n), command=e.command_head(
-            [to_text(w) for w in words if w is not None])))
-        return None
+        return finish(i, e.Process((), [to_text(w) for w in words if w is not None]), k, n)
     return finish(i, action, k, n)
 
 
@@ -550,6 +569,7 @@ SCALARS = (str, int, float, bool, list, tuple, dict, type(None))
 API: dict[str, Builder] = {
     "LaunchDescription": launch_description,
     "LaunchConfiguration": launch_configuration,
+    "perform_substitutions": perform_substitutions,
     "EnvironmentVariable": environment_variable,
     "LaunchContext": launch_context,
     "FindPackageShare": find_package(True), "FindPackagePrefix": find_package(False),

@@ -243,6 +243,15 @@ def _same(value: Any) -> Any:
     return value
 
 
+def m_perform_substitution(i: Interpreter, owner: Any, a: Args, k: Kwargs,
+                           n: ast.AST) -> Any:
+    """``LaunchContext.perform_substitution(sub)``: ``sub.perform(context)``."""
+    value = a[0] if a else k.get("substitution")
+    if isinstance(owner, Context) and isinstance(value, (e.Subst, Lazy, str)):
+        return owner.perform(to_text(value))
+    return i.unsupported(n, ".perform_substitution() of a value not known statically")
+
+
 def m_dict(name: str) -> Method:
     def call(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
         if isinstance(owner, Context) and name == "get" and a:
@@ -331,6 +340,7 @@ METHODS: dict[str, Method] = {
     "items": m_dict("items"), "keys": m_dict("keys"),
     "values": m_dict("values"), "get": m_dict("get"), "update": m_dict("update"),
     "copy": m_dict("copy"), "perform": m_str("perform"),
+    "perform_substitution": m_perform_substitution,
     **{name: m_path(name) for name in ("as_posix", "joinpath", "with_name", "with_suffix")},
     "absolute": m_absolute, "resolve": m_absolute,
     **{name: m_str(name) for name in (

@@ -316,6 +316,10 @@ class Runner:
         """A process whose command line, as the shell splits it, is ``ros2 run PKG EXE
         ...`` (that node) or ``ros2 topic pub ...`` (a publisher, see
         ``python_api.execute_process``); any other, or one not known here, no node."""
+        if action.words is not None:  # known to be no node when it was made
+            self.report("LAUNCH_PROCESS", action.location,
+                        command=e.command_head(action.words))
+            return
         value = self.value(action.cmd, scope, action.location)
         words: list[str] = []
         if value is not None and value.literal is not None:

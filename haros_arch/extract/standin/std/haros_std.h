@@ -1015,6 +1015,8 @@ public:
   D time_since_epoch() const;
   time_point& operator+=(const D& d);
 };
+template<class To, class C, class D>
+constexpr time_point<C, To> time_point_cast(const time_point<C, D>& t);
 template<class C, class D1, class D2>
 D1 operator-(const time_point<C, D1>& a, const time_point<C, D2>& b);
 template<class C, class D, class R, class P>
