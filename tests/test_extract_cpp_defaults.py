@@ -115,3 +115,42 @@ def test_a_read_into_a_variable_that_holds_a_value_has_that_default(tmp_path):
     assert got == {"~lazy": (True, False), "~unreliable": (True, False),
                    "~count": (False, None), "~name": (False, None),
                    "~rate": (True, None), "~frame": (False, None)}
+
+
+STATIC_MEMBERS = """
+#include <ros/ros.h>
+#include <string>
+class Camera {
+ public:
+  Camera();
+  static std::string io_method;   // defined (= "mmap") in another file of the node
+  static int width;               // defined (= 320) in another file of the node
+  static std::string here;        // defined below, empty
+  static int counted;             // defined below, with a value
+  static int zeroed;              // defined below, without one
+};
+std::string Camera::here;
+int Camera::counted = 4;
+int Camera::zeroed;
+Camera::Camera() {
+  ros::NodeHandle pnh("~");
+  pnh.getParam("io_method", io_method);
+  pnh.getParam("width", width);
+  pnh.getParam("here", here);
+  pnh.getParam("counted", counted);
+  pnh.getParam("zeroed", zeroed);
+}
+"""
+
+
+def test_a_read_into_a_static_member_defined_elsewhere_has_a_default_not_known(tmp_path):
+    """usb_cam (develop): ``node.getParam("io_method", io_method_name)`` into a static
+    member that camera_driver.cpp defines as "mmap". Its definition is in another
+    translation unit: the member holds a value there, not known in this file (not
+    "no default", not zero). A definition in this file gives its value as before."""
+    source = tmp_path / "n.cpp"
+    source.write_text(STATIC_MEMBERS)
+    result = extract_cpp([str(source)], Workspace(root=str(tmp_path)), cache_dir=None)
+    got = {c.name: (c.has_default, c.default) for c in result.calls}
+    assert got == {"~io_method": (True, None), "~width": (True, None),
+                   "~here": (False, None), "~counted": (True, 4), "~zeroed": (True, 0)}

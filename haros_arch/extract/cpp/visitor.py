@@ -978,13 +978,20 @@ class CallFinder:
         self._emit(spec, field, [], decl, (), Scope(None, self.macros, self.source, self.sites))
 
 
+# classes whose VAR_DECL children are static data members
+_CLASSES = frozenset({CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL, CursorKind.UNION_DECL,
+                      CursorKind.CLASS_TEMPLATE,
+                      CursorKind.CLASS_TEMPLATE_PARTIAL_SPECIALIZATION})
+
+
 def _kept_value(out: Cursor, scope: Scope) -> tuple[bool, object]:
     """A read into ``out`` that leaves it as it is when the parameter is not there (ROS
     1's ``getParam(name, out)``, rclcpp's ``get_parameter(name, out)``) has a default
     when ``out`` holds a value before it: a local written with an initialiser
     (``bool unreliable = false;``), a variable of static storage of a builtin type
-    (topic_tools' ``bool g_lazy;``, zero), a member its class initialises. Its value
-    when that is a literal."""
+    (topic_tools' ``bool g_lazy;``, zero), a member its class initialises, a static
+    data member whose definition is in another file (a value, not known here). Its
+    value when that is a literal."""
     target = strip(out)
     decl = target.referenced if target.kind in (
         CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR) else None
@@ -993,11 +1000,19 @@ def _kept_value(out: Cursor, scope: Scope) -> tuple[bool, object]:
     value: Cursor | None = None
     where = scope
     if decl.kind == CursorKind.VAR_DECL:
-        init = initializer(decl.get_definition() or decl)
+        definition = decl.get_definition()
+        member = decl.semantic_parent is not None and decl.semantic_parent.kind in _CLASSES
+        init = initializer(definition or decl)
         if init is not None and not default_constructed(init):
             value = init
+        elif init is None and member and definition is None:
+            # a static data member defined in another file of the node (usb_cam's
+            # ``std::string AbstractV4LUSBCam::io_method_name = "mmap";``): it holds
+            # a value there, whether zero or another is not known in this file
+            return True, None
         elif init is None and decl.type.get_canonical().kind in _ZEROED and (
             decl.storage_class == StorageClass.STATIC
+            or member
             or decl.semantic_parent is None
             or decl.semantic_parent.kind in (CursorKind.NAMESPACE,
                                              CursorKind.TRANSLATION_UNIT)
