@@ -935,6 +935,10 @@ class CallFinder:
             parts = scope.string(args[index])
             if _known(parts):
                 default = render(parts)
+            elif spec.out_arg is not None and spec.out_arg < len(args) \
+                    and index != spec.out_arg and _same_variable(args[index], args[spec.out_arg]):
+                kept = _kept_value(args[spec.out_arg], scope)[1]  # param("t", t, t)
+                default = kept if isinstance(kept, str) else None
         return (name, default)
 
     def _member(self, spec: api.RosFunction, call: Cursor, shift: int) -> Cursor | None:
@@ -964,7 +968,13 @@ class CallFinder:
             index = spec.out_arg  # nh.param<T>(name, default) returns the value
         if index >= len(args):
             return False, None
-        return True, _literal(args[index], scope)
+        value = _literal(args[index], scope)
+        if value is None and spec.out_arg is not None and spec.out_arg < len(args) \
+                and index != spec.out_arg and _same_variable(args[index], args[spec.out_arg]):
+            # ``nh.param("topic", topic, topic)``: the default is what the variable holds
+            # before the call (costmap_converter: a local initialised with a literal)
+            value = _kept_value(args[spec.out_arg], scope)[1]
+        return True, value
 
     def _field(self, field: Cursor) -> None:
         """A member whose mere construction is a primitive (a tf broadcaster)."""
@@ -982,6 +992,14 @@ class CallFinder:
 _CLASSES = frozenset({CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL, CursorKind.UNION_DECL,
                       CursorKind.CLASS_TEMPLATE,
                       CursorKind.CLASS_TEMPLATE_PARTIAL_SPECIALIZATION})
+
+
+def _same_variable(a: Cursor, b: Cursor) -> bool:
+    """Two arguments that name one variable (``x``, ``x``; ``this->x_``, ``x_``)."""
+    first, second = strip(a), strip(b)
+    names = (CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR)
+    return (first.kind in names and second.kind in names and first.referenced is not None
+            and first.referenced == second.referenced)
 
 
 def _kept_value(out: Cursor, scope: Scope) -> tuple[bool, object]:
