@@ -115,3 +115,76 @@ def test_a_read_into_a_variable_that_holds_a_value_has_that_default(tmp_path):
     assert got == {"~lazy": (True, False), "~unreliable": (True, False),
                    "~count": (False, None), "~name": (False, None),
                    "~rate": (True, None), "~frame": (False, None)}
+
+
+STATIC_MEMBERS = """
+#include <ros/ros.h>
+#include <string>
+class Camera {
+ public:
+  Camera();
+  static std::string io_method;   // defined (= "mmap") in another file of the node
+  static int width;               // defined (= 320) in another file of the node
+  static std::string here;        // defined below, empty
+  static int counted;             // defined below, with a value
+  static int zeroed;              // defined below, without one
+};
+std::string Camera::here;
+int Camera::counted = 4;
+int Camera::zeroed;
+Camera::Camera() {
+  ros::NodeHandle pnh("~");
+  pnh.getParam("io_method", io_method);
+  pnh.getParam("width", width);
+  pnh.getParam("here", here);
+  pnh.getParam("counted", counted);
+  pnh.getParam("zeroed", zeroed);
+}
+"""
+
+
+def test_a_read_into_a_static_member_defined_elsewhere_has_a_default_not_known(tmp_path):
+    """usb_cam (develop): ``node.getParam("io_method", io_method_name)`` into a static
+    member that camera_driver.cpp defines as "mmap". Its definition is in another
+    translation unit: the member holds a value there, not known in this file (not
+    "no default", not zero). A definition in this file gives its value as before."""
+    source = tmp_path / "n.cpp"
+    source.write_text(STATIC_MEMBERS)
+    result = extract_cpp([str(source)], Workspace(root=str(tmp_path)), cache_dir=None)
+    got = {c.name: (c.has_default, c.default) for c in result.calls}
+    assert got == {"~io_method": (True, None), "~width": (True, None),
+                   "~here": (False, None), "~counted": (True, 4), "~zeroed": (True, 0)}
+
+
+SELF_DEFAULT = """
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+#include <string>
+void cb(const std_msgs::String::ConstPtr& m) {}
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "conv");
+  ros::NodeHandle n("~");
+  std::string topic = "/move_base/local_costmap/costmap";
+  n.param("costmap_topic", topic, topic);
+  int size = 100;
+  n.param("size", size, size);
+  ros::Subscriber s = n.subscribe(topic, 1, cb);
+  return 0;
+}
+"""
+
+
+def test_a_read_whose_default_is_its_own_variable_has_that_variable_s_value(tmp_path):
+    """costmap_converter_node.cpp:72-84: ``n_.param("costmap_topic", costmap_topic,
+    costmap_topic)`` after ``std::string costmap_topic = "/move_base/...";``: the default
+    is what the variable holds before the call, so the subscribe named by the parameter
+    falls back to it when the launch file does not set it (it was ``~?`` whatever)."""
+    source = tmp_path / "n.cpp"
+    source.write_text(SELF_DEFAULT)
+    result = extract_cpp([str(source)], Workspace(root=str(tmp_path)), cache_dir=None)
+    reads = {c.name: (c.has_default, c.default) for c in result.calls if c.kind == "read"}
+    assert reads == {"~costmap_topic": (True, "/move_base/local_costmap/costmap"),
+                     "~size": (True, 100)}
+    [sub] = [c for c in result.calls if c.kind == "subscribe"]
+    assert (sub.name_param, sub.name_default) == (
+        "~costmap_topic", "/move_base/local_costmap/costmap")

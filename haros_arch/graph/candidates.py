@@ -4,12 +4,22 @@ from __future__ import annotations
 
 import re
 
+from ..model.rosname import pattern_for
 from ..model.runtime import Configuration, Resource
+from ..model.values import UNKNOWN_MARK
 
 
 def compatible(a: Resource, b: Resource) -> bool:
-    """Types agree, or one side does not know its type."""
-    return not a.types or not b.types or bool(set(a.types) & set(b.types))
+    """Types agree, or one side does not know its type: no type, or a type with ``?``
+    (rosserial's bridge publishes whatever the device asks, of type ``?``) that may be
+    the other's."""
+    if not a.types or not b.types or set(a.types) & set(b.types):
+        return True
+    return any(_may_be(x, y) or _may_be(y, x) for x in a.types for y in b.types)
+
+
+def _may_be(unknown: str, other: str) -> bool:
+    return UNKNOWN_MARK in unknown and re.match(pattern_for(unknown), other) is not None
 
 
 def _rank(unknown: Resource, candidate: Resource) -> tuple[int, int, int, str]:

@@ -2,7 +2,8 @@
 
 package.xml ``<export><nodelet plugin="${prefix}/nodelets.xml"/>`` (any export tag, and
 ROS 2's ``pluginlib_export_plugin_description_file``) names a plugin description; its
-``<library path="lib/libfoo">`` elements (one, or several in ``<class_libraries>``) hold
+``<library path="lib/libfoo">`` elements (one, several in ``<class_libraries>``, or several
+at the top of a file, which pluginlib reads too) hold
 ``<class name="pkg/Name" type="ns::Class" base_class_type="..."/>`` entries. Each class
 becomes a ``Node`` of kind ``nodelet`` or ``plugin`` whose executable is the name launch
 files and hosts use (``pkg/Name``, else the type) and whose sources are those of the
@@ -92,10 +93,15 @@ def plugin_classes(package: Package, workspace: Files, libraries: Mapping[str, L
                 base.startswith(plugin.kind + "::") for base in bases):
             continue
         path = os.path.join(workspace.root, plugin.file)
-        root = _read_description(path, workspace, found)
-        if root is None:
+        roots = _read_description(path, workspace, found)
+        if not roots:
             continue
-        elements = [root] if root.tag == "library" else list(root.iter("library"))
+        root = roots[0]
+        # pluginlib reads the first element (stepping into <class_libraries>) and the
+        # <library> elements that follow it at the top (a file of several <library>
+        # roots, as pointcloud_to_laserscan's nodelets.xml is, loads every one)
+        elements = [r for r in roots if r.tag == "library"] if root.tag == "library" \
+            else list(root.iter("library"))
         for element in elements:
             wanted = library_name(element.get("path", ""))
             for cls in element.iter("class"):
@@ -133,19 +139,37 @@ def plugin_classes(package: Package, workspace: Files, libraries: Mapping[str, L
     return nodes, found
 
 
+_PROLOGUE = re.compile(rb"^(\xef\xbb\xbf)?\s*(<\?xml[^>]*\?>)?")
+
+
 def _read_description(path: str, workspace: Files,
-                      found: list[Diagnostic]) -> etree._Element | None:
+                      found: list[Diagnostic]) -> list[etree._Element]:
+    """The top-level elements of a plugin description: one, or several where the file
+    has more than one root (not well-formed XML, but pluginlib's TinyXML reads it)."""
     data, problems = read_bytes(path, workspace.location(path))
     found.extend(problems)
     if data is None:
-        return None
+        return []
     try:
-        return etree.fromstring(data, xml_parser())
+        return [etree.fromstring(data, xml_parser())]
     except etree.XMLSyntaxError as err:
-        line, column = err.position if err.position else (0, 0)
-        found.append(diag.make("PLUGIN_XML_SYNTAX", workspace.location(path, line, column),
-                               detail=err.msg))
-        return None
+        error = err
+    if "Extra content at the end of the document" in error.msg:
+        # the same bytes inside one wrapper element; the XML declaration, allowed only
+        # at the very start, becomes blanks so lines and columns stay as they were
+        prologue = _PROLOGUE.match(data)
+        head = len(prologue.group(0)) if prologue else 0
+        blanked = re.sub(rb"[^\n]", b" ", data[:head]) + data[head:]
+        try:
+            wrapper = etree.fromstring(b"<roots>" + blanked + b"</roots>", xml_parser())
+        except etree.XMLSyntaxError:
+            pass
+        else:
+            return [child for child in wrapper if isinstance(child.tag, str)]
+    line, column = error.position if error.position else (0, 0)
+    found.append(diag.make("PLUGIN_XML_SYNTAX", workspace.location(path, line, column),
+                           detail=error.msg))
+    return []
 
 
 def remembered(kind: str, source: str, workspace: Files, compute: Callable[[], T]) -> T:

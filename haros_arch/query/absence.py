@@ -19,6 +19,7 @@ from collections.abc import Callable
 from typing import Any
 from weakref import WeakKeyDictionary
 
+from ..model.launch_tree import LaunchItem
 from ..model.rosname import pattern_for
 from ..model.runtime import Configuration, Link, NodeInstance, Parameter, Resource
 from ..model.values import UNKNOWN_MARK
@@ -36,6 +37,12 @@ class _Known:
         for node in config.nodes:
             self.by_name.setdefault(node.name, node)
         self.incomplete = config.incomplete_nodes
+        # includes the launch stage could not read (a file not known statically, a
+        # package not found: tiago's ``$(find cartesian_impedance)/launch/...``): what
+        # they start or set is not seen, so they may be the missing side of anything
+        self.unread: list[LaunchItem] = [
+            item for tree in config.launch_tree for item in tree.walk()
+            if item.kind == "include" and not item.skipped]
         # ROS 1 dynamic_reconfigure servers: each reads and sets every field of its .cfg
         # under the namespace of the handle it is given (``N/set_parameters``,
         # ``N/parameter_updates``), names we do not read. Namespace -> serving nodes;
@@ -186,25 +193,27 @@ def _settings(config: Configuration) -> _Settings:
 
 
 def unknown_users(charge: Charge, config: Any, resource: Any
-                  ) -> list[NodeInstance | Parameter]:
+                  ) -> list[NodeInstance | Parameter | LaunchItem]:
     """``_unknown_users`` of a resource or link, or of each of a list of them (what
     could use any of them unseen)."""
     if isinstance(resource, list):
-        found: list[NodeInstance | Parameter] = []
+        found: list[NodeInstance | Parameter | LaunchItem] = []
         for each in resource:
             found.extend(_unknown_users(charge, config, each))
-        return list(dict.fromkeys(found))
+        return _unique(found)
     return _unknown_users(charge, config, resource)
 
 
 def _unknown_users(charge: Charge, config: Any, resource: Any
-                   ) -> list[NodeInstance | Parameter]:
+                   ) -> list[NodeInstance | Parameter | LaunchItem]:
     """The node instances that could use ``resource`` through a call the model does not
     show: those of partial or unknown interface, and those that use a name with ``?``
     that may stand for it (a ``getParam(name_read_at_run_time)``). For a parameter
     that nothing is seen to set, also the parameters with ``?`` that the launch sets
     and that may be it (``/ns/node/?`` of a parameter file not read): the launch may
-    set it unseen.
+    set it unseen. And the includes the launch stage could not read, which may start
+    or set anything (for a parameter private to a node of known interface, only when
+    nothing is seen to set it).
 
     A node of partial or unknown interface could publish, subscribe, serve or call any
     topic, service or action name, and read or set any shared parameter; a private
@@ -220,18 +229,33 @@ def _unknown_users(charge: Charge, config: Any, resource: Any
                              "action, parameter or link")
     known = _known(config)
     charge(1)
-    found: list[NodeInstance | Parameter] = list(known.incomplete)
+    found: list[NodeInstance | Parameter | LaunchItem] = list(known.incomplete)
+    found.extend(known.unread)
     if isinstance(resource, Parameter):
         owner = owner_of(config, resource)
         if owner is not None:
             found = [] if owner.is_complete else [owner]
+            if not resource.is_set:  # an include not read may set it
+                found.extend(known.unread)
         charge(len(known.reconfigured_unresolved) // 64)
         found.extend(reconfiguring(config, resource))
         if not resource.is_set:
             found.extend(known.launch_guessed.get(id(resource), ()))
     found.extend(known.guessed.get(id(resource), ()))
     charge(len(found) // 64)
-    return list(dict.fromkeys(found))
+    return _unique(found)
+
+
+def _unique(items: list[Any]) -> list[Any]:
+    """Each item once, in order (a launch item, not hashable, by identity)."""
+    seen: set[Any] = set()
+    out: list[Any] = []
+    for item in items:
+        key = ("item", id(item)) if isinstance(item, LaunchItem) else item
+        if key not in seen:
+            seen.add(key)
+            out.append(item)
+    return out
 
 
 MAX_DISTANCE = 2

@@ -6,7 +6,7 @@ from typing import Any
 
 from ..model.conditions import Condition
 from ..model.diagnostic import Diagnostic
-from ..model.launch_tree import PackageUse
+from ..model.launch_tree import LaunchItem, PackageUse
 from ..model.location import NOWHERE, Location
 from ..model.model import Model
 from ..model.rosname import RosName
@@ -120,4 +120,6 @@ def label(item: Any) -> str:
         return f"{type(item).__name__.lower()} {item.name}"
     if isinstance(item, Node):
         return f"executable {item.name}"
+    if isinstance(item, LaunchItem) and item.kind == "include":
+        return f"include {item.name} (not read)"
     return str(plain(item))

@@ -67,6 +67,7 @@ def template_message(decl: Cursor, ros2: bool | None) -> str | None:
 
 
 _POINTER_SUFFIXES = ("SharedPtr", "ConstSharedPtr", "UniquePtr", "Ptr", "ConstPtr")
+_ROS1_TYPEDEFS = ("ConstPtr", "Ptr")
 _INTERFACE_FOLDERS = ("msg", "srv", "action")
 _INTERFACE_PACKAGE = re.compile(r"[a-z][a-z0-9_]*")
 
@@ -84,6 +85,13 @@ def written_type(text: str, ros2: bool | None, used_as_message: bool = False) ->
         return None
     if not _INTERFACE_PACKAGE.fullmatch(parts[0]):
         return None
+    if len(parts) == 2 and ros2 is not True:
+        # a ROS 1 message header's own typedefs, ``pkg::NameConstPtr`` / ``pkg::NamePtr``
+        # (costmap_converter's map_msgs::OccupancyGridUpdateConstPtr, header missing)
+        for suffix in _ROS1_TYPEDEFS:
+            if parts[1].endswith(suffix) and len(parts[1]) > len(suffix):
+                parts[1] = parts[1][: -len(suffix)]
+                break
     if len(parts) == 3 and parts[1] in _INTERFACE_FOLDERS and ros2 is not False:
         return "/".join(parts)
     if len(parts) == 2 and ros2 is not True and ((used_as_message and ros2 is False) or (

@@ -935,6 +935,10 @@ class CallFinder:
             parts = scope.string(args[index])
             if _known(parts):
                 default = render(parts)
+            elif spec.out_arg is not None and spec.out_arg < len(args) \
+                    and index != spec.out_arg and _same_variable(args[index], args[spec.out_arg]):
+                kept = _kept_value(args[spec.out_arg], scope)[1]  # param("t", t, t)
+                default = kept if isinstance(kept, str) else None
         return (name, default)
 
     def _member(self, spec: api.RosFunction, call: Cursor, shift: int) -> Cursor | None:
@@ -964,7 +968,13 @@ class CallFinder:
             index = spec.out_arg  # nh.param<T>(name, default) returns the value
         if index >= len(args):
             return False, None
-        return True, _literal(args[index], scope)
+        value = _literal(args[index], scope)
+        if value is None and spec.out_arg is not None and spec.out_arg < len(args) \
+                and index != spec.out_arg and _same_variable(args[index], args[spec.out_arg]):
+            # ``nh.param("topic", topic, topic)``: the default is what the variable holds
+            # before the call (costmap_converter: a local initialised with a literal)
+            value = _kept_value(args[spec.out_arg], scope)[1]
+        return True, value
 
     def _field(self, field: Cursor) -> None:
         """A member whose mere construction is a primitive (a tf broadcaster)."""
@@ -978,13 +988,28 @@ class CallFinder:
         self._emit(spec, field, [], decl, (), Scope(None, self.macros, self.source, self.sites))
 
 
+# classes whose VAR_DECL children are static data members
+_CLASSES = frozenset({CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL, CursorKind.UNION_DECL,
+                      CursorKind.CLASS_TEMPLATE,
+                      CursorKind.CLASS_TEMPLATE_PARTIAL_SPECIALIZATION})
+
+
+def _same_variable(a: Cursor, b: Cursor) -> bool:
+    """Two arguments that name one variable (``x``, ``x``; ``this->x_``, ``x_``)."""
+    first, second = strip(a), strip(b)
+    names = (CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR)
+    return (first.kind in names and second.kind in names and first.referenced is not None
+            and first.referenced == second.referenced)
+
+
 def _kept_value(out: Cursor, scope: Scope) -> tuple[bool, object]:
     """A read into ``out`` that leaves it as it is when the parameter is not there (ROS
     1's ``getParam(name, out)``, rclcpp's ``get_parameter(name, out)``) has a default
     when ``out`` holds a value before it: a local written with an initialiser
     (``bool unreliable = false;``), a variable of static storage of a builtin type
-    (topic_tools' ``bool g_lazy;``, zero), a member its class initialises. Its value
-    when that is a literal."""
+    (topic_tools' ``bool g_lazy;``, zero), a member its class initialises, a static
+    data member whose definition is in another file (a value, not known here). Its
+    value when that is a literal."""
     target = strip(out)
     decl = target.referenced if target.kind in (
         CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR) else None
@@ -993,11 +1018,19 @@ def _kept_value(out: Cursor, scope: Scope) -> tuple[bool, object]:
     value: Cursor | None = None
     where = scope
     if decl.kind == CursorKind.VAR_DECL:
-        init = initializer(decl.get_definition() or decl)
+        definition = decl.get_definition()
+        member = decl.semantic_parent is not None and decl.semantic_parent.kind in _CLASSES
+        init = initializer(definition or decl)
         if init is not None and not default_constructed(init):
             value = init
+        elif init is None and member and definition is None:
+            # a static data member defined in another file of the node (usb_cam's
+            # ``std::string AbstractV4LUSBCam::io_method_name = "mmap";``): it holds
+            # a value there, whether zero or another is not known in this file
+            return True, None
         elif init is None and decl.type.get_canonical().kind in _ZEROED and (
             decl.storage_class == StorageClass.STATIC
+            or member
             or decl.semantic_parent is None
             or decl.semantic_parent.kind in (CursorKind.NAMESPACE,
                                              CursorKind.TRANSLATION_UNIT)

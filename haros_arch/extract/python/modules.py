@@ -4,7 +4,8 @@
 ``PY_PARSE_ERROR``; Python 2 files get a line-preserving repair of the common
 statements and ``PY_PYTHON2``) and indexes it as a ``Module``: its imports, module
 constants, functions and classes. ``Loader.resolve_import`` finds modules of the same
-package (relative imports, and ``from pkg.sub import X`` inside the package's folder).
+package (relative imports, and ``from pkg.sub import X`` inside the package's folder),
+and Python packages other packages of the workspace hold (``src/<name>/__init__.py``).
 """
 
 from __future__ import annotations
@@ -93,6 +94,8 @@ class Loader:
         self.package_root = package_root
         self.modules: dict[str, Module | None] = {}
         self.diagnostics: list[Diagnostic] = []
+        # top-level Python package name -> folder holding it, in other workspace packages
+        self._others: dict[str, str] | None = None
 
     def location(self, path: str, line: int = 0, column: int = 0) -> Location:
         return self.workspace.location(path, line, column)
@@ -164,7 +167,30 @@ class Loader:
             found = _module_file(root, parts)
             if found is not None:
                 return found
-        return None
+        return self._other_package(parts)
+
+    def _other_package(self, parts: list[str]) -> str | None:
+        """A Python package another package of the workspace holds (``src/<name>`` or
+        ``<name>`` with an ``__init__.py``, as catkin_python_setup / setup.py install
+        it): rosserial_arduino's ``from rosserial_python import SerialClient``."""
+        if self._others is None:
+            self._others = {}
+            own = os.path.abspath(self.package_root) if self.package_root else None
+            for package in getattr(self.workspace, "packages", {}).values():
+                root = package.root
+                if not root or os.path.abspath(root) == own:
+                    continue
+                for base in (os.path.join(root, "src"), root):
+                    try:
+                        names = sorted(os.listdir(base))
+                    except OSError:
+                        continue
+                    for name in names:
+                        if name.isidentifier() and os.path.isfile(
+                                os.path.join(base, name, "__init__.py")):
+                            self._others.setdefault(name, base)
+        base = self._others.get(parts[0])
+        return _module_file(base, parts) if base is not None else None
 
     def _search_roots(self, module_path: str) -> list[str]:
         assert self.package_root is not None
@@ -269,7 +295,13 @@ def add_import(module: Module, loader: Loader, statement: ast.Import | ast.Impor
         name = alias.asname or alias.name
         submodule = loader.resolve_import(
             module.path, statement.level, f"{source}.{alias.name}" if source else alias.name)
-        if submodule is not None:
+        if submodule is not None and local is not None \
+                and os.path.basename(local) == "__init__.py":
+            # ``from pkg import X``: what pkg's __init__ binds to X (rosserial_arduino's
+            # ``from .SerialClient import *`` binds the class over the submodule of the
+            # same name), else the submodule (``Scopes.lookup`` falls back to it)
+            local_imports[name] = (local, alias.name)
+        elif submodule is not None:
             local_imports[name] = (submodule, None)
         elif local is not None:
             local_imports[name] = (local, alias.name)

@@ -13,7 +13,7 @@ import ast
 
 from ...model.values import Unknown
 from . import msg_types
-from .modules import Loader, Module
+from .modules import Loader, Module, submodule
 from .objects import Frame, ModuleRef, Ref, Seq
 
 MAX_UNROLL = 32  # a for loop over a known sequence is walked once per item, up to this
@@ -43,7 +43,13 @@ class Scopes(EvaluatorBase):
             other = self.loader.load(path)
             if other is None:
                 return Unknown(name)
-            return ModuleRef(other) if symbol is None else self.lookup(other, symbol)
+            if symbol is None:
+                return ModuleRef(other)
+            found = self.lookup(other, symbol)
+            inner = submodule(other.path, symbol) if isinstance(found, Unknown) else None
+            loaded = self.loader.load(inner) if inner is not None else None
+            # a name the package's __init__ does not bind: its submodule, as import does
+            return ModuleRef(loaded) if loaded is not None else found
         if name in module.imports:
             return Ref(module.imports[name])
         if name in module.classes:

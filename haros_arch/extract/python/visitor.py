@@ -323,9 +323,11 @@ class Walker:
             self._inline(target, call, frame, conds)
         elif isinstance(target, ClassInfo):
             init = ev.method(target, "__init__")
-            if target.module.path not in self.main and \
-                    target not in self._used_classes:
-                self._used_classes.append(target)
+            # its methods and those it inherits (rosserial_arduino's SerialClient runs
+            # rosserial_python's, whose run() sets up the device's topics)
+            for used in ev.mro(target):
+                if used.module.path not in self.main and used not in self._used_classes:
+                    self._used_classes.append(used)
             if init is not None:
                 self._inline(BoundMethod(ev.new(target), init), call, frame, conds)
 

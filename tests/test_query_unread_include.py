@@ -1,0 +1,74 @@
+"""An include the launch stage cannot read (its package is not in the workspace: tiago's
+``$(find cartesian_impedance)/launch/cartesian_impedance.launch``, pointcloud_to_laserscan's
+openni2_launch) may start nodes and set parameters we do not see: a topic nobody is seen
+to publish, a shared parameter nobody is seen to read, is undecided (the info names the
+include), not a finding. A private parameter of a node of known interface stays decided
+when the launch sets it: no node of the include reads it."""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+from typing import Any
+
+import pytest
+from conftest import package_xml
+
+from haros_arch.pipeline import Options, analyse
+from haros_arch.project import load
+from haros_arch.query import run_catalogue
+
+NODE = """#!/usr/bin/env python
+import rospy
+from std_msgs.msg import String
+rospy.init_node('scan')
+rospy.Subscriber('points', String, lambda m: None)
+rate = rospy.get_param('~rate', 1.0)
+"""
+
+LAUNCH = """<launch>
+  INCLUDE
+  <rosparam>gains: {p: 1.0}</rosparam>
+  <node name="scan" pkg="conv" type="scan.py">
+    <param name="rte" value="2.0"/>
+  </node>
+</launch>
+"""
+
+
+def _findings(write_tree: Any, include: str) -> dict[str, list[str]]:
+    root: Path = write_tree({
+        "src/conv/package.xml": package_xml("conv"),
+        "src/conv/CMakeLists.txt": "project(conv)\n",
+        "src/conv/scripts/scan.py": NODE,
+        "src/conv/launch/a.launch": LAUNCH.replace("INCLUDE", include),
+        "project.yaml": "project: p\nconfigurations:\n  c: [conv/launch/a.launch]\n",
+    })
+    os.chmod(root / "src/conv/scripts/scan.py", 0o755)
+    project = load(str(root / "project.yaml"))
+    model = analyse(project, {"PATH": os.environ.get("PATH", "")}, Options(cache_dir=None))
+    found: dict[str, list[str]] = {}
+    for finding in run_catalogue(model, project):
+        found.setdefault(finding.rule, []).append(finding.message)
+    return found
+
+
+def test_without_an_unread_include_the_absences_are_findings(write_tree: Any) -> None:
+    found = _findings(write_tree, "")
+    assert len(found.get("subscriber-without-publisher", [])) == 1
+    assert len(found.get("parameter-set-not-read", [])) == 2  # /gains/p, /scan/rte
+
+
+@pytest.mark.parametrize("include", [
+    '<include file="$(find not_in_workspace)/launch/sensor.launch"/>',
+    '<include file="$(arg driver_launch)"/>',
+], ids=["absent-package", "file-not-known"])
+def test_an_unread_include_leaves_them_undecided(write_tree: Any, include: str) -> None:
+    launch_arg = '<arg name="driver_launch"/>\n  ' if "arg" in include else ""
+    found = _findings(write_tree, launch_arg + include)
+    assert "subscriber-without-publisher" not in found
+    undecided = found["subscriber-without-publisher-undecided"]
+    assert len(undecided) == 1 and "(not read)" in undecided[0]
+    # the shared /gains/p: the include may read it; /scan/rte: scan's own, known
+    assert [m.split(" ")[0] for m in found["parameter-set-not-read"]] == ["/scan/rte"]
+    assert "/gains/p" in found["parameter-set-not-read-undecided"][0]
