@@ -16,7 +16,7 @@ from __future__ import annotations
 import re
 from collections import OrderedDict
 from collections.abc import Callable
-from typing import Any
+from typing import Any, TypeVar
 from weakref import WeakKeyDictionary
 
 from ..model.launch_tree import LaunchItem
@@ -122,10 +122,21 @@ _KNOWN: WeakKeyDictionary[Configuration, _Known] = WeakKeyDictionary()
 
 
 def _known(config: Configuration) -> _Known:
-    known = _KNOWN.get(config)
-    if known is None or known.size != (len(config.nodes), len(config.links)):
-        known = _KNOWN[config] = _Known(config)
-    return known
+    return _per_configuration(_KNOWN, config, (len(config.nodes), len(config.links)), _Known)
+
+
+Built = TypeVar("Built", "_Known", "_Settings")
+
+
+def _per_configuration(cache: WeakKeyDictionary[Configuration, Built], config: Configuration,
+                       size: tuple[int, int], build: Callable[[Configuration], Built]
+                       ) -> Built:
+    """What ``build`` makes of a configuration, made again when its ``size`` changed
+    (a configuration a hint or a query grew)."""
+    found = cache.get(config)
+    if found is None or found.size != size:
+        found = cache[config] = build(config)
+    return found
 
 
 def owner_of(config: Configuration, parameter: Parameter) -> NodeInstance | None:
@@ -186,10 +197,8 @@ _SETTINGS: WeakKeyDictionary[Configuration, _Settings] = WeakKeyDictionary()
 
 
 def _settings(config: Configuration) -> _Settings:
-    found = _SETTINGS.get(config)
-    if found is None or found.size != (len(config.nodes), len(config.parameters)):
-        found = _SETTINGS[config] = _Settings(config)
-    return found
+    return _per_configuration(_SETTINGS, config, (len(config.nodes), len(config.parameters)),
+                              _Settings)
 
 
 def unknown_users(charge: Charge, config: Any, resource: Any
