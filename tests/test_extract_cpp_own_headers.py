@@ -185,3 +185,55 @@ def test_headers_beside_the_sources_included_from_the_package_root(write_tree) -
     result = extract_cpp([str(source)], scan([str(root)]), cache_dir=None)
     assert [(c.kind, c.name, c.queue_size) for c in result.calls] == [
         ("publish", "submap_list", 1)]
+
+
+REPUBLISH_HPP = """
+#include <string>
+#include "image_transport/image_transport.hpp"
+#include "image_transport/visibility_control.hpp"
+#include "image_transport/publisher.hpp"
+#include <rclcpp/rclcpp.hpp>
+namespace image_transport {
+class IMAGE_TRANSPORT_PUBLIC Republisher : public rclcpp::Node {
+public:
+  explicit Republisher(const rclcpp::NodeOptions & options);
+private:
+  image_transport::Publisher pub_;
+};
+}
+"""
+
+REPUBLISH_CPP = """
+#include "image_transport/republish.hpp"
+#include <std_msgs/msg/string.hpp>
+namespace image_transport {
+Republisher::Republisher(const rclcpp::NodeOptions & options)
+: Node("image_republisher", options) {
+  std::string in_transport = "raw";
+  this->declare_parameter<std::string>("in_transport", in_transport);
+  pub_ = image_transport::create_publisher(this, "out");
+}
+}
+"""
+
+
+def test_a_header_of_a_stood_in_package_that_the_stand_in_lacks_is_read(write_tree) -> None:
+    """image_transport's own ``republish.hpp`` declares a class (``Republisher``) that no
+    stand-in of image_transport has: it was replaced by the umbrella stand-in like the
+    package's API headers, ``Republisher`` was undeclared and the node's calls lost."""
+    root = write_tree({
+        "image_transport/package.xml": package_xml("image_transport", "ament_cmake"),
+        "image_transport/include/image_transport/republish.hpp": REPUBLISH_HPP,
+        "image_transport/include/image_transport/image_transport.hpp": (
+            "namespace image_transport { class ImageTransport { public: int x; }; }\n"),
+        "image_transport/include/image_transport/visibility_control.hpp": (
+            "#define IMAGE_TRANSPORT_PUBLIC\n"),
+        "image_transport/include/image_transport/publisher.hpp": (
+            "namespace image_transport {\nclass Publisher\n{ public: int ours; };\n}\n"),
+        "image_transport/src/republish.cpp": REPUBLISH_CPP,
+    })
+    source = root / "image_transport" / "src" / "republish.cpp"
+    result = extract_cpp([str(source)], scan([str(root)]), cache_dir=None)
+    assert sorted((c.kind, c.name) for c in result.calls) == [
+        ("declare", "in_transport"), ("publish", "out")]
+    assert not [d for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"]

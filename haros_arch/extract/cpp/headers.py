@@ -28,7 +28,10 @@ resolved the way the preprocessor will, and:
   provide (rclcpp_components, bondcpp, class_loader, ...) is parsed with the package's
   ``include`` folder first and without the precompiled stand-ins (whose classes its own
   headers define again); not a package whose API the extractor knows by its stand-ins
-  (tf2_ros, image_transport, ...: the API tables name its classes).
+  (tf2_ros, image_transport, ...: the API tables name its classes); of such a package
+  being extracted, a header with no stand-in file that defines none of the classes its
+  stand-ins name is read from the package (``_own_extra``: image_transport's
+  ``republish.hpp``, which declares the node class ``Republisher``).
 
 The workspace's include folders (hundreds on Autoware) reach clang as one header map
 (``header_map``), written before the first parse: an ``#include`` is one look-up in it,
@@ -153,6 +156,47 @@ _LIBRARY_HEADERS = ("sensor_msgs/image_encodings.", "sensor_msgs/point_cloud2_it
                     "sensor_msgs/distortion_models.")
 
 
+# a class or struct defined (not only declared): ``class VISIBILITY Name final : ...{``
+_CLASS_DEFINITION = re.compile(
+    r"\b(?:class|struct)\s+(?:[A-Z][A-Z0-9_]*\s+)*([A-Za-z_]\w*)\s*(?:final\s*)?[:{]")
+# a class or struct the stand-ins name, declared or defined
+_CLASS_NAMED = re.compile(r"\b(?:class|struct)\s+(?:[A-Z][A-Z0-9_]*\s+)*([A-Za-z_]\w*)\s*[:{;]")
+_COMMENT = re.compile(r"//[^\n]*|/\*.*?\*/", re.DOTALL)
+
+
+def _strip_comments(text: str) -> str:
+    return _COMMENT.sub(" ", text)
+
+
+_STANDIN_CLASSES: dict[str, frozenset[str]] = {}
+
+
+def _standin_classes(package: str) -> frozenset[str]:
+    """The classes and structs the stand-ins of ``package`` name: its stand-in files
+    and the stand-ins its umbrella includes, transitively (``tf2/``'s umbrella is
+    ``tf2_ros/buffer.h``)."""
+    if package not in _STANDIN_CLASSES:
+        paths = [os.path.join(folder, name)
+                 for folder, _, files in os.walk(os.path.join(STANDIN, package))
+                 for name in files]
+        umbrella = UMBRELLAS.get(f"{package}/")
+        if umbrella is not None:
+            paths.append(os.path.join(STANDIN, umbrella))
+        names: set[str] = set()
+        seen: set[str] = set()
+        while paths:
+            path = paths.pop()
+            if path in seen or not os.path.isfile(path):
+                continue
+            seen.add(path)
+            with open(path, encoding="utf-8") as f:
+                text = _strip_comments(f.read())
+            names.update(m.group(1) for m in _CLASS_NAMED.finditer(text))
+            paths += [os.path.join(STANDIN, m.group(2)) for m in _INCLUDE.finditer(text)]
+        _STANDIN_CLASSES[package] = frozenset(names)
+    return _STANDIN_CLASSES[package]
+
+
 def _library_include_dirs(workspace: Workspace) -> list[str]:
     """``<package>/<folder>/include`` of every workspace package, sorted. Not those one
     level deeper (slam_toolbox's ``lib/karto_sdk/include``, a library the package
@@ -233,12 +277,20 @@ class IncludeSetup:
         # the packages being extracted that our stand-ins also provide, with their
         # include folders: their own headers win (``_own_header``, ``arguments``)
         self.own: dict[str, list[str]] = {}
+        self.own_extra: dict[str, list[str]] = {}
         for source in sources:
             package = workspace.package_of(source)
             if package is not None and package.root and package.name in _STANDIN_PACKAGES:
                 folder = os.path.join(package.root, "include")
                 nested = os.path.join(folder, package.name)
                 self.own[package.name] = [f for f in (folder, nested) if os.path.isdir(
+                    os.path.join(f, package.name))]
+            elif package is not None and package.root and f"{package.name}/" in UMBRELLAS:
+                # a package whose API our stand-ins give (image_transport): its headers
+                # that define none of the stand-ins' classes are read (``_own_extra``)
+                folder = os.path.join(package.root, "include")
+                nested = os.path.join(folder, package.name)
+                self.own_extra[package.name] = [f for f in (folder, nested) if os.path.isdir(
                     os.path.join(f, package.name))]
         self.diagnostics: list[Diagnostic] = []
         self._handled: set[str] = set()
@@ -375,7 +427,7 @@ class IncludeSetup:
             self._ros2_interface(header, ros2.group(1), ros2.group(2), ros2.group(3), where)
             return None
         qt = _QT_HEADER.fullmatch(header) is not None
-        own = self._own_header(header)
+        own = self._own_header(header) or self._own_extra(header)
         if own is not None:
             return own
         if not self.system_headers and (header.startswith(SHADOWED) or qt):
@@ -481,6 +533,27 @@ class IncludeSetup:
             return None
         return next((os.path.join(f, header) for f in self.own.get(prefix, ())
                      if os.path.isfile(os.path.join(f, header))), None)
+
+    def _own_extra(self, header: str) -> str | None:
+        """The real file of ``header`` when it is a header of a package being extracted
+        whose API our stand-ins give, that has no stand-in file and defines no class the
+        stand-ins of that package name (image_transport's ``republish.hpp``, which
+        declares its node class): the umbrella stand-in would leave that class
+        undeclared. A header that defines one of the stand-ins' classes
+        (``publisher.hpp``) keeps the umbrella: both would define it. None otherwise."""
+        prefix, _, rest = header.partition("/")
+        if not rest or self.system_headers or prefix not in self.own_extra or (
+                os.path.isfile(os.path.join(STANDIN, header))):
+            return None
+        path = next((os.path.join(f, header) for f in self.own_extra[prefix]
+                     if os.path.isfile(os.path.join(f, header))), None)
+        if path is None:
+            return None
+        text, _ = read_text(path, self.workspace.location(path))
+        if text is None:
+            return None
+        defined = {m.group(1) for m in _CLASS_DEFINITION.finditer(_strip_comments(text))}
+        return path if not defined & _standin_classes(prefix) else None
 
     def _fallback(self, header: str) -> None:
         """``header`` from the stand-ins of ``FALLBACK`` (the workspace has none by that
