@@ -294,7 +294,11 @@ CATALOGUE: dict[str, Entry] = {
         "info", "{text}: loads plugin classes through pluginlib",
         "The code creates instances of plugin classes by name (pluginlib's "
         "createSharedInstance / createUniqueInstance / createUnmanagedInstance / "
-        "createInstance). Their calls are made on this node but are not in its code: "
+        "createInstance), or loads nodelets by name in its own process (nodelet::Loader's "
+        "load(name, type, ...), as image_view's wrapper executable does; not when a "
+        "source of the node exports a plugin class: it links the nodelet's library, "
+        "whose code is read with it). "
+        "Their calls are made on this node but are not in its code: "
         "unless the node is a plugin host whose plugins are attached ([Plugins] in the "
         "README: nav2 servers, costmaps, move_base, controller managers, ...), each "
         "instance of it is 'partial', so checks that claim something is absent do not "

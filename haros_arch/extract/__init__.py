@@ -21,6 +21,7 @@ from ..diagnostics import Diagnostic
 from ..files import read_text
 from ..model.source import Node
 from ..model.values import UNKNOWN_MARK
+from ..plugins.classes import exported_classes
 from ..plugins.inherit import without_overridden
 from ..workspace import Workspace
 
@@ -96,6 +97,22 @@ _PARTIAL_CAUSES = {
 _PARTIAL_CODE = {"cpp": "CPP_NODE_PARTIAL", "python": "PY_NODE_PARTIAL"}
 
 
+# nodelet::Loader's load(name, type, ...): a nodelet made by name in this process (the
+# wrapper executables of image_view, stereo_image_proc, ...), with arguments
+NODELET_LOAD = re.compile(r"(?:\.|->)\s*(load)\s*\(\s*[^)\s]")
+
+
+def _links_plugin_classes(node: Node, workspace: Workspace | None) -> bool:
+    """Whether a source of ``node`` exports a plugin class: a standalone nodelet
+    executable that links its nodelet's library (pointcloud_to_laserscan_node) runs
+    that code, read with it (``cmake.nodes``), so its ``nodelet::Loader`` load hides
+    nothing; one that links none (image_view's) makes calls we do not see."""
+    if workspace is None:
+        return False
+    return any(exported_classes(os.path.join(workspace.root, source), workspace)
+               for source in node.sources)
+
+
 def completeness(node: Node, found: Sequence[Diagnostic],
                  workspace: Workspace | None = None) -> list[Diagnostic]:
     """Mark ``node`` partial when the diagnostics of its sources say calls may be
@@ -107,9 +124,12 @@ def completeness(node: Node, found: Sequence[Diagnostic],
         node.completeness = "unknown"
         node.completeness_reasons = ["no source file of the node was found"]
         return []
-    node.plugin_loads = list(dict.fromkeys(
-        f"{d.location.file}:{d.location.line}" for d in found
-        if d.code == "CPP_PLUGINS_LOADED" and d.location.file))
+    loads = [d for d in found if d.code == "CPP_PLUGINS_LOADED" and d.location.file]
+    if any(NODELET_LOAD.search(d.message) for d in loads) and _links_plugin_classes(
+            node, workspace):
+        loads = [d for d in loads if not NODELET_LOAD.search(d.message)]
+    node.plugin_loads = list(dict.fromkeys(f"{d.location.file}:{d.location.line}"
+                                           for d in loads))
     # a unit's errors are in its files and the headers they include; an unreadable
     # file counts when it is one of the node's
     causes = [d for d in found if d.code in _PARTIAL_CAUSES.get(node.language, ())

@@ -27,6 +27,7 @@ from ...manifest import ros_version
 from ...model.location import Location
 from ...model.source import PrimitiveCall
 from ...workspace import Workspace
+from .. import NODELET_LOAD
 from . import cache, links, recall, synthesis, toolchain
 from . import compile_commands as commands
 from .headers import STANDIN, IncludeSetup
@@ -388,18 +389,24 @@ _PLUGIN_LOAD = re.compile(
     r"(?:\.|->)\s*(?:template\s+)?(createSharedInstance|createUniqueInstance|"
     r"createUnmanagedInstance|createInstance)\s*(?:<[^;(]*>)?\s*\(")
 _PLUGIN_LOADER = re.compile(r"pluginlib|class_loader|ClassLoader")
+_NODELET_LOADER = re.compile(r"nodelet\s*::\s*Loader\b|nodelet/loader\.h")
 MAX_PLUGIN_LOADS = 5  # sites said per file
 
 
 def plugin_loads(path: str, text: str, workspace: Workspace) -> list[Diagnostic]:
     """The lines of ``text`` (the unit's own source) that create plugin instances
-    through pluginlib or class_loader (``CPP_PLUGINS_LOADED``): what the node runs there
-    is not in its code (``extract.completeness`` keeps them on the node)."""
+    through pluginlib or class_loader, or nodelets through a ``nodelet::Loader``
+    (``CPP_PLUGINS_LOADED``): what the node runs there is not in its code
+    (``extract.completeness`` keeps them on the node)."""
     # the loader is often a member declared in the class's header: the three names of
-    # its own are enough; ``createInstance`` counts only beside a loader's name
+    # its own are enough; ``createInstance`` counts only beside a loader's name, a
+    # ``load(...)`` only in a file that names nodelet's Loader
     loader = _PLUGIN_LOADER.search(text) is not None
+    sites = list(_PLUGIN_LOAD.finditer(text))
+    if _NODELET_LOADER.search(text) is not None:
+        sites = sorted([*sites, *NODELET_LOAD.finditer(text)], key=lambda m: m.start())
     found: list[Diagnostic] = []
-    for match in _PLUGIN_LOAD.finditer(text):
+    for match in sites:
         if match.group(1) == "createInstance" and not loader:
             continue
         start = text.rfind("\n", 0, match.start()) + 1
