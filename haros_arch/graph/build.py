@@ -35,7 +35,7 @@ from ..plugins.transports import Transports
 from ..robot.attach import attach as attach_descriptions
 from ..workspace import Workspace, installed_roots
 from .actions import action_links
-from .conditions import decide_links, drop_links
+from .conditions import arguments_left, decide_links, drop_links
 from .processes import guessed_names, process_nodes, process_params, unnamed_param_files
 
 RESOURCE_OF_KIND: dict[str, type[Resource]] = {
@@ -548,12 +548,7 @@ def _argument_values(instance: NodeInstance) -> dict[str, str]:
             words = shlex.split(instance.args)
         except ValueError:
             words = []
-        if "--ros-args" in words:  # rclcpp takes these out (up to a lone "--")
-            start = words.index("--ros-args")
-            end = words.index("--", start) + 1 if "--" in words[start:] else len(words)
-            words = words[:start] + words[end:]
-        if instance.ros_version == 1:  # roscpp takes out remaps and special keys
-            words = [w for w in words if ":=" not in w]
+        words = arguments_left(words, instance.ros_version)
         positions: dict[str, set[int]] = {}
         for write in writes:
             assert write.program_arg is not None

@@ -34,6 +34,7 @@ from typing import Any
 
 from .. import diagnostics as diag
 from ..evaluate.python import evaluate, is_unknown
+from ..launch.ros2.naming import split_arguments
 from ..model.conditions import Condition
 from ..model.runtime import Configuration, Link, NodeInstance, Parameter
 from ..model.values import UNKNOWN_MARK, Unknown
@@ -200,11 +201,20 @@ def argv_views(instance: NodeInstance) -> list[list[str]] | None:
     except ValueError:
         return None
     program = instance.node.executable if instance.node is not None else "node"
-    given = [w for w in words if ":=" not in w]
+    given = arguments_left(words, 1)
     remaps = len(instance.remaps) - (len(words) - len(given))
     before = [program, *words, *(["from:=to"] * max(remaps, 0)),
               f"__name:={instance.name.rpartition('/')[2]}", "__log:=log"]
     return [before, [program, *given]]
+
+
+def arguments_left(words: list[str], ros_version: int) -> list[str]:
+    """What a program's client library leaves of its arguments: roscpp's ``ros::init``
+    takes every ``:=`` word (remaps, ``__name:=``), rclcpp every ``--ros-args ... --``
+    section."""
+    if ros_version == 1:
+        return [w for w in words if ":=" not in w]
+    return split_arguments(words)[0]
 
 
 _TYPES: dict[str, tuple[type, ...]] = {"bool": (bool,), "int": (int,),
