@@ -354,7 +354,7 @@ class CallFinder:
             if child.kind != CursorKind.PARM_DECL]
         while stack:
             node, conditions = stack.pop()
-            if node.kind == CursorKind.CALL_EXPR and place_of(node) == wanted:
+            if node.kind == call.kind and place_of(node) == wanted:  # a delegation too
                 return conditions
             branches = self.reader.branches(node)
             stack.extend((child, conditions + extra) for child, extra in reversed(branches))
