@@ -27,7 +27,7 @@ from ..model.runtime import (
     Topic,
 )
 from ..model.source import NUMBERED, Node, PrimitiveCall
-from ..model.values import UNKNOWN_MARK
+from ..model.values import UNKNOWN_MARK, Unknown
 from ..models.commands import command_node
 from ..plugins.attach import PluginModels, class_packages
 from ..plugins.attach import attach as attach_plugins
@@ -35,7 +35,7 @@ from ..plugins.transports import Transports
 from ..robot.attach import attach as attach_descriptions
 from ..workspace import Workspace, installed_roots
 from .actions import action_links
-from .conditions import arguments_left, decide_links, drop_links
+from .conditions import arguments_left, decide, decide_links, drop_links, program_views
 from .processes import guessed_names, process_nodes, process_params, unnamed_param_files
 
 RESOURCE_OF_KIND: dict[str, type[Resource]] = {
@@ -531,6 +531,10 @@ def _given_name(call: PrimitiveCall, instance: NodeInstance, resources: Resource
 _ARGUMENT_VALUES: WeakKeyDictionary[NodeInstance, dict[str, str]] = WeakKeyDictionary()
 
 
+def _no_values(name: str) -> object:
+    return Unknown(f"{name} is not one of the program's arguments")
+
+
 def _argument_values(instance: NodeInstance) -> dict[str, str]:
     """The parameters the instance's code sets from its command-line arguments
     (``PrimitiveCall.program_arg``: topic_tools' relay takes ``input_topic`` from its
@@ -541,8 +545,13 @@ def _argument_values(instance: NodeInstance) -> dict[str, str]:
     if found is not None:
         return found
     found = {}
+    views = program_views(instance)
+    # the writes that may happen with these arguments: those under a condition over the
+    # arguments that they decide false are left out (throttle's "messages" mode takes
+    # output_topic from its fourth argument, its "bytes" mode from its fifth)
     writes = [] if instance.node is None else [
-        c for c in instance.node.calls if c.kind == "write" and c.program_arg is not None]
+        c for c in instance.node.calls if c.kind == "write" and c.program_arg is not None
+        and not any(decide(k, _no_values, views) is False for k in c.conditions)]
     if writes:
         try:
             words = shlex.split(instance.args)

@@ -68,7 +68,9 @@ def conditions(data: Any) -> tuple[Condition, ...]:
         elif isinstance(item, dict):
             found.append(Condition(str(item.get("text", "")), item.get("kind", "source"),
                                    item.get("statement", "if"), location(item.get("location")),
-                                   bool(item.get("program_args", False))))
+                                   bool(item.get("program_args", False)),
+                                   left if isinstance(left := item.get("args_left"), str)
+                                   else None))
     return tuple(found)
 
 

@@ -271,9 +271,8 @@ class CallFinder:
 
     def _function(self, function: Cursor) -> None:
         scope = self._scope = Scope(function, self.macros, self.source, self.sites)
-        params = [c.spelling for c in function.get_children() if c.kind == CursorKind.PARM_DECL]
         # main(argc, argv): its conditions over them are over the program's arguments
-        self.reader.in_main = function.spelling == "main" and params[:2] == ["argc", "argv"]
+        self.reader.enter(function, _ARGUMENTS_LEFT)
         self._owner = owner_of(function)
         self._constructor = None
         # of a class, not a class template: a template's constructions name its
@@ -293,7 +292,7 @@ class CallFinder:
         # a constructor's calls exist where the class is constructed: under the
         # conditions of its construction sites in this file
         made_under = self._constructed_under(function, 0)
-        self.reader.in_main = function.spelling == "main" and params[:2] == ["argc", "argv"]
+        self.reader.enter(function, _ARGUMENTS_LEFT)
         stack: list[tuple[Cursor, tuple[Condition, ...]]] = [
             (child, made_under) for child in reversed(list(function.get_children()))
             if child.kind != CursorKind.PARM_DECL]
@@ -347,8 +346,7 @@ class CallFinder:
         """The source conditions of ``call`` in the body of ``function`` (None when it is
         not found there), as ``_function`` reads them."""
         wanted = place_of(call)
-        params = [c.spelling for c in function.get_children() if c.kind == CursorKind.PARM_DECL]
-        self.reader.in_main = function.spelling == "main" and params[:2] == ["argc", "argv"]
+        self.reader.enter(function, _ARGUMENTS_LEFT)
         stack: list[tuple[Cursor, tuple[Condition, ...]]] = [
             (child, ()) for child in reversed(list(function.get_children()))
             if child.kind != CursorKind.PARM_DECL]
