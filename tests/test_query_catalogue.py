@@ -232,6 +232,18 @@ def test_a_long_place_keeps_its_line_in_the_message():
     assert f"({path}:15 and {path}:37)" in finding.message
 
 
+def test_a_diagnostic_s_message_is_filled_in_whole():
+    # Autoware's "node type autoware_lidar_centerpoint/autoware::lidar_centerpoint::
+    # LidarCenterPointNode is not in the workspace; its int…": the sentence is the finding
+    text = ("node type autoware_lidar_centerpoint/autoware::lidar_centerpoint::"
+            "LidarCenterPointNode is not in the workspace; its interface is unknown")
+    model = configuration({"diagnostics": [
+        {"code": "NODE_NOT_FOUND", "severity": "warning", "message": text,
+         "location": {"file": "perception/launch/detection.launch.xml", "line": 7}}]})
+    (finding,) = run_rule(RULES["launch-missing-reference"], model)
+    assert finding.message == text
+
+
 def test_a_double_read_as_an_int_is_a_mismatch_but_for_roscpp():
     # roscpp's getParam(int) rounds a double; rclcpp throws, rospy hands a float on
     def reader(node: str, file: str) -> dict:

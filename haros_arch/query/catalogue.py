@@ -185,12 +185,17 @@ def render(template: str, match: Any, evaluator: Evaluator) -> str:
             return _shorten(", ".join(str(plain(v)) for v in value))
         if isinstance(value, Location):  # a place is whole: its line ends it
             return str(plain(value))
+        if isinstance(value, str) and fields and fields[-1] == "message" and (
+            len(value) <= MAX_MESSAGE
+        ):
+            return value  # a diagnostic's own sentence, not data read from the workspace
         return label(value) if entities(value) else _shorten(str(plain(value)))
 
     return _FIELD.sub(fill, template)
 
 
 MESSAGE_VALUE = 120  # characters of one filled-in value (a binfile, a YAML map) in a message
+MAX_MESSAGE = 2000  # a diagnostic's message filled in whole, up to this length
 
 
 def _shorten(text: str) -> str:
