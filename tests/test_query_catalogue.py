@@ -244,6 +244,18 @@ def test_a_diagnostic_s_message_is_filled_in_whole():
     assert finding.message == text
 
 
+def test_a_long_list_is_cut_between_its_items_and_a_long_name_is_whole():
+    # Autoware's /service_log, published by 22 nodes: "... /localization/util/default_a…"
+    publishers = [f"/localization/util/node_number_{i:02d}" for i in range(22)]
+    model = configuration({"links": [
+        {"kind": "publish", "node": node, "name": "/service_log", "type": "a/Log"}
+        for node in publishers]})
+    (finding,) = run_rule(RULES["multiple-publishers"], model)
+    assert "…" not in finding.message
+    shown = [p for p in publishers if p in finding.message]
+    assert 3 <= len(shown) < 22 and f"and {22 - len(shown)} more" in finding.message
+
+
 def test_a_double_read_as_an_int_is_a_mismatch_but_for_roscpp():
     # roscpp's getParam(int) rounds a double; rclcpp throws, rospy hands a float on
     def reader(node: str, file: str) -> dict:
