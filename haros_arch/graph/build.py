@@ -120,6 +120,8 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
     started: list[tuple[NodeDecl, NodeInstance]] = []
     for decl, own in process_nodes(launch.nodes, nodes):
         instance = _instance(decl, nodes, workspace, config)
+        if own is not None and own.rsplit("/", 1)[-1] != instance.name.rsplit("/", 1)[-1]:
+            instance.code_name = own
         started.append((decl, instance))
         # two instances with one name keep apart by id; the duplicate-node-names query
         # reports them (and roslaunch's own refusal is LAUNCH_NODE_DUPLICATE)
