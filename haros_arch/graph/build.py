@@ -12,6 +12,7 @@ from weakref import WeakKeyDictionary
 from .. import diagnostics as diag
 from ..diagnostics import Diagnostic
 from ..launch.model import LaunchModel, NodeDecl
+from ..model.conditions import Condition
 from ..model.launch_tree import PackageUse
 from ..model.location import Location
 from ..model.rosname import RosName, namespace_of, remap, resolve, resolve_remaps
@@ -122,6 +123,7 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
         instance = _instance(decl, nodes, workspace, config)
         if own is not None and own.rsplit("/", 1)[-1] != instance.name.rsplit("/", 1)[-1]:
             instance.code_name = own
+        instance.conditions = (*instance.conditions, *_made_under(instance.node, own))
         started.append((decl, instance))
         # two instances with one name keep apart by id; the duplicate-node-names query
         # reports them (and roslaunch's own refusal is LAUNCH_NODE_DUPLICATE)
@@ -528,6 +530,19 @@ def _given_name(call: PrimitiveCall, instance: NodeInstance, resources: Resource
             call.name == UNKNOWN_MARK or call.name.endswith("/" + UNKNOWN_MARK)):
         return value  # a global or private name is not resolved in the handle's namespace
     return call.name.replace(UNKNOWN_MARK, value, 1)
+
+
+def _made_under(node: Node | None, own: str | None) -> tuple[Condition, ...]:
+    """The source conditions under which a process makes one of its nodes but the first:
+    those all its calls share (the extractor gives each call of such a node the
+    conditions of its construction, ``cpp._made_under``)."""
+    if node is None or own is None or len(node.rosnames) < 2 or own == node.rosnames[0]:
+        return ()
+    calls = node.calls_of(own)
+    if not calls:
+        return ()
+    return tuple(c for c in calls[0].conditions if c.kind == "source"
+                 and all(c in other.conditions for other in calls[1:]))
 
 
 _ARGUMENT_VALUES: WeakKeyDictionary[NodeInstance, dict[str, str]] = WeakKeyDictionary()

@@ -24,6 +24,7 @@ from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
 from ...files import MAX_FILE_BYTES, read_text
 from ...manifest import ros_version
+from ...model.conditions import Condition
 from ...model.location import Location
 from ...model.source import PrimitiveCall
 from ...workspace import Workspace
@@ -111,6 +112,9 @@ class CppResult:
     rosnames: list[str] = field(default_factory=list)
     node_names: list[tuple[str, str]] = field(default_factory=list)
     constructions: list[tuple[str, str]] = field(default_factory=list)  # visitor's
+    # in a translation unit's result: each construction of a class of the workspace, as
+    # (class, the source conditions it is made under), one per place
+    made_under: list[tuple[str, tuple[Condition, ...]]] = field(default_factory=list)
     # in a translation unit's result: the words of its code where an error left by the
     # parse can hide a statement (each function with one, a constructor with its class's
     # member types; ``*``: anything, the unit was not parsed), so a construction of a
@@ -272,14 +276,39 @@ def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
                 result.rosnames.append(name)
     if len(result.rosnames) < 2:
         result.rosnames = []
+    under = _made_under(units, owners, result.rosnames)
     calls = []
     nodes: dict[str, str | None] = {}
     for call in result.calls:
         node = _node_of(call.node_name, owners, made_by, result.rosnames, nodes, 0)
         # a copy: a translation unit's calls are shared by the nodes that build it
-        calls.append(call if call.node_name is None and node is None
-                     else dataclasses.replace(call, node_name=node))
+        if call.node_name is None and node is None:
+            calls.append(call)
+            continue
+        extra = tuple(c for c in under.get(node or "", ()) if c not in call.conditions)
+        calls.append(dataclasses.replace(call, node_name=node,
+                                         conditions=(*extra, *call.conditions)))
     result.calls = calls
+
+
+def _made_under(units: list[tuple[str, CppResult]], owners: dict[str, list[str]],
+                rosnames: list[str]) -> dict[str, tuple[Condition, ...]]:
+    """The source conditions under which the process makes each of its nodes but the
+    first: those every construction of the node's class shares, in any file of the
+    executable (ublox_gps_node makes its raw_data_pa node only ``if
+    (getRosBoolean(this, "raw_data_stream.enable"))``). Each of the node's calls holds
+    them: the node, and all it does, exists only where they hold."""
+    found: dict[str, tuple[Condition, ...]] = {}
+    for owner, names in owners.items():
+        if len(names) != 1 or names[0] not in rosnames[1:]:
+            continue
+        sites = [made for _, unit in units for cls, made in unit.made_under if cls == owner]
+        if not sites:
+            continue
+        shared = tuple(c for c in sites[0] if all(c in other for other in sites[1:]))
+        if shared:
+            found[names[0]] = shared
+    return found
 
 
 MAX_CONSTRUCTION_DEPTH = 8
@@ -325,12 +354,12 @@ def _units(texts: dict[str, str], ros2: dict[str, bool], setup: IncludeSetup,
                 digests[path] = kept[1]
             elif kept is not None and kept[0] is not None:
                 try:
-                    calls, rosname, found, facts, named, made, unseen = cache.from_data(
-                        kept[0])
+                    calls, rosname, found, facts, named, made, unseen, under = (
+                        cache.from_data(kept[0]))
                 except (ValueError, TypeError, KeyError):
                     continue
                 done[path] = CppResult(calls, rosname, found, facts, node_names=named,
-                                       constructions=made, unseen=unseen)
+                                       constructions=made, unseen=unseen, made_under=under)
                 digests[path] = kept[1]
     todo = [path for path in texts if path not in done and path not in digests]
     tasks = [(path, texts[path], ros2[path]) for path in todo]
@@ -380,7 +409,7 @@ def _unit_and_data(path: str, text: str, ros2: bool, setup: IncludeSetup
     where the unit was parsed (in a worker: not in the serial part of the run)."""
     unit, headers = _translation_unit(path, text, ros2, setup)
     data = cache.to_data(unit.calls, unit.rosname, unit.diagnostics, unit.facts,
-                         unit.node_names, unit.constructions, unit.unseen)
+                         unit.node_names, unit.constructions, unit.unseen, unit.made_under)
     return unit, headers, data, cache.digest(data)
 
 
@@ -478,6 +507,7 @@ def _translation_unit(path: str, text: str, ros2: bool,
     result.facts = finder.facts
     result.node_names = finder.node_names
     result.constructions = finder.constructions
+    result.made_under = finder.made_under
     # the node handed to code the parse does not read (another package's class, a
     # function it does not know) may construct anything there
     result.unseen = ["*"] if any(d.code in _HANDED for d in result.diagnostics) else sorted(

@@ -142,6 +142,8 @@ class CallFinder:
         # its constructor's node when it names none itself (a device object given the
         # node's handle)
         self.constructions: list[tuple[str, str]] = []
+        # each construction of a class of the workspace and its source conditions
+        self.made_under: list[tuple[str, tuple[Condition, ...]]] = []
         self.diagnostics: list[Diagnostic] = []
         # the words of the declarations of the classes the unit constructs without the
         # code of their constructor: what those build is not seen (``links.resolve``)
@@ -311,7 +313,7 @@ class CallFinder:
             elif node.kind == CursorKind.CALL_EXPR and not node.spelling:
                 self._dependent(node, conditions, scope)
             if node.kind == CursorKind.CALL_EXPR:
-                self._construction(node)
+                self._construction(node, conditions)
                 self._to_unknown(node)
             tested.visit(node)
             branches = self.reader.branches(node)
@@ -490,7 +492,7 @@ class CallFinder:
     def _unresolved_rows(self) -> dict[str, api.RosFunction]:
         return api.UNRESOLVED_ROS2 if self.ros2 else api.UNRESOLVED_ROS1
 
-    def _construction(self, call: Cursor) -> None:
+    def _construction(self, call: Cursor, conditions: tuple[Condition, ...] = ()) -> None:
         """Record that the function being walked constructs a class of the workspace;
         say so when that class is another package's, built here with the node and
         defined elsewhere (``CPP_NODE_PASSED``: its calls on the node are not read)."""
@@ -511,10 +513,10 @@ class CallFinder:
                     "CPP_NODE_PASSED", here, cls=qualified_name(cls), package=there.package,
                     given="".join(t.spelling for t in given.get_tokens())[:60]))
         name = constructed_class(call, self.owned)
-        if name is not None and self._owner is not None and name != self._owner and (
-            (self._owner, name) not in self.constructions
-        ):
-            self.constructions.append((self._owner, name))
+        if name is not None and self._owner is not None and name != self._owner:
+            self.made_under.append((name, tuple(c for c in conditions if c.kind == "source")))
+            if (self._owner, name) not in self.constructions:
+                self.constructions.append((self._owner, name))
 
     def _to_unknown(self, call: Cursor) -> None:
         """Say when ``call`` gives the node to a function or class the parse knows only
