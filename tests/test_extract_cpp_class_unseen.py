@@ -278,3 +278,50 @@ def test_messages_services_and_function_calls_are_no_classes(write_tree: Any) ->
     node, _ = _teleop(write_tree, NOT_CLASSES, "vendor_msgs", "costmap_2d", "geometry_msgs")
     assert node.completeness == "complete", node.completeness_reasons
 
+
+LASER = """
+    #include <ros/ros.h>
+    #include <laser_geometry/laser_geometry.h>
+    #include <sensor_msgs/LaserScan.h>
+    #include <sensor_msgs/PointCloud2.h>
+    #include <tf/transform_listener.h>
+
+    class Filter {
+     public:
+      Filter() {
+        sub_ = nh_.subscribe("scan", 5, &Filter::scan, this);
+        pub_ = nh_.advertise<sensor_msgs::PointCloud2>("cloud", 5);
+      }
+     private:
+      void scan(const sensor_msgs::LaserScanConstPtr& msg) {
+        sensor_msgs::PointCloud2 cloud;
+        projector_.transformLaserScanToPointCloud("base", *msg, cloud, listener_, -1.0,
+                                                  laser_geometry::channel_option::Distance);
+        projector_.projectLaser(*msg, cloud);
+        pub_.publish(cloud);
+      }
+      ros::NodeHandle nh_;
+      ros::Subscriber sub_;
+      ros::Publisher pub_;
+      tf::TransformListener listener_;
+      laser_geometry::LaserProjection projector_;
+    };
+
+    int main(int argc, char** argv) {
+      ros::init(argc, argv, "teleop");
+      Filter filter;
+      ros::spin();
+    }
+    """
+
+
+def test_laser_geometry_is_a_stand_in(write_tree: Any) -> None:
+    # laser_geometry installed, not in the workspace: its LaserProjection computes and
+    # makes no ROS call (a stand-in of FALLBACK), so the node stays complete
+    node, model = _teleop(write_tree, LASER, "laser_geometry", "tf", "sensor_msgs")
+    assert node.completeness == "complete", node.completeness_reasons
+    assert {(c.kind, c.name) for c in node.calls} >= {("subscribe", "scan"),
+                                                      ("publish", "cloud")}
+    assert not [d for d in model.diagnostics if d.code in (
+        "CPP_INCLUDE_MISSING", "CPP_PARSE_ERROR", "CPP_NAMES_DECLARED")], [
+        d.message for d in model.diagnostics if d.code.startswith("CPP")]

@@ -30,7 +30,7 @@ from ...workspace import Workspace
 from .. import NODELET_LOAD
 from . import cache, links, recall, synthesis, toolchain
 from . import compile_commands as commands
-from .headers import STANDIN, IncludeSetup
+from .headers import FALLBACK, STANDIN, IncludeSetup
 from .interfaces import interface_package
 from .interfaces import known as known_interface
 from .owners import node_names
@@ -585,7 +585,9 @@ def ros1_clients(path: str, workspace: Workspace,
 
 def _client(name: str, cls: str, declared: set[str], workspace: Workspace,
             generated: str) -> bool:
-    if os.path.isdir(os.path.join(STANDIN, name)) or interface_package(name):
+    if any(os.path.isdir(os.path.join(folder, name)) for folder in (STANDIN, FALLBACK)) or (
+        interface_package(name)
+    ):
         return False
     last = cls.rsplit("::", 1)[-1]
     for each in {last, re.sub(r"(?:Request|Response)$", "", last)}:
