@@ -325,3 +325,32 @@ def test_laser_geometry_is_a_stand_in(write_tree: Any) -> None:
     assert not [d for d in model.diagnostics if d.code in (
         "CPP_INCLUDE_MISSING", "CPP_PARSE_ERROR", "CPP_NAMES_DECLARED")], [
         d.message for d in model.diagnostics if d.code.startswith("CPP")]
+
+
+def test_the_cache_follows_the_file_that_defines_the_class(write_tree: Any,
+                                                           tmp_path: Any) -> None:
+    # the unit's cached result holds what the library's source said: a changed source
+    # (its constructor now makes a handle) is read again
+    quiet = LIBRARY_SOURCE.replace(
+        'ros::NodeHandle nh("~/" + name);', 'ROS_INFO("map %s", name.c_str());').replace(
+        'int size; nh.param("size", size, 10);', '')
+    root = write_tree({
+        "src/grid/package.xml": _depends("grid", "roscpp"),
+        "src/grid/CMakeLists.txt": "project(grid)\nadd_library(grid src/map.cpp)\n",
+        "src/grid/include/grid/map.h": LIBRARY_HEADER,
+        "src/grid/src/map.cpp": quiet,
+        "src/user/package.xml": _depends("user", "roscpp", "grid"),
+        "src/user/CMakeLists.txt": "project(user)\nadd_executable(user src/user.cpp)\n",
+        "src/user/src/user.cpp": USER,
+        "project.yaml": "project: p\nworkspace: [src]\nconfigurations: {}\n",
+    })
+    cache = str(tmp_path / "cache")
+
+    def user() -> Any:
+        model = analyse(load(str(root / "project.yaml")),
+                        {"PATH": os.environ.get("PATH", "")}, Options(cache_dir=cache))
+        return next(n for p in model.packages for n in p.nodes if n.name == "user/user")
+
+    assert user().completeness == "complete"
+    (root / "src/grid/src/map.cpp").write_text(LIBRARY_SOURCE)
+    assert user().completeness == "partial"
