@@ -320,7 +320,8 @@ CATALOGUE: dict[str, Entry] = {
         "local planner) without being handed the node. The node is 'partial', so checks "
         "that claim something is absent do not decide on it. Classes whose API the "
         "extractor models (tf, image_transport, actionlib, message_filters, ...) do not "
-        "count, nor a class whose constructor a source of the node defines. ROS 2 code "
+        "count, nor a class whose members a source of the node defines (a library it links: "
+        "then this is not said). ROS 2 code "
         "communicates only through a node it is given (CPP_NODE_PASSED, "
         "CPP_NODE_TO_UNKNOWN)."),
     "CPP_NODE_TO_UNKNOWN": Entry(

@@ -182,12 +182,15 @@ def _user(write_tree: Any, grid_deps: tuple[str, ...], links: bool,
             "add_executable(user src/user.cpp)\n" + link,
         "src/user/src/user.cpp": USER,
     })
-    return next(n for p in model.packages for n in p.nodes if n.name == "user/user")
+    node = next(n for p in model.packages for n in p.nodes if n.name == "user/user")
+    node.said = [d for d in model.diagnostics if d.code == "CPP_CLASS_UNSEEN"]
+    return node
 
 
 def test_a_workspace_ros_class_whose_library_is_not_read(write_tree: Any) -> None:
     node = _user(write_tree, ("roscpp",), False)
     assert node.completeness == "partial"
+    assert [d.location.line for d in node.said] == [5]
     assert any(r.startswith("user/src/user.cpp:5:")
                and "grid::Map of ROS package grid" in r
                for r in node.completeness_reasons), node.completeness_reasons
@@ -197,6 +200,8 @@ def test_a_workspace_class_whose_library_is_linked_is_read(write_tree: Any) -> N
     node = _user(write_tree, ("roscpp",), True)
     assert node.completeness == "complete", node.completeness_reasons
     assert "~map/size" in [c.name for c in node.calls]
+    # the unit's information is not said either: the class's code is read
+    assert node.said == []
 
 
 def test_a_workspace_class_of_a_package_without_roscpp(write_tree: Any) -> None:

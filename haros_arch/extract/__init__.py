@@ -26,7 +26,7 @@ from ..plugins.inherit import without_overridden
 from ..workspace import Workspace
 
 if TYPE_CHECKING:
-    from .cpp import CppBatch
+    from .cpp import CppBatch, CppResult
 
 AUTO_CACHE = "auto"  # cache_dir: the default cache folder (``cpp.cache.default_folder``)
 
@@ -60,7 +60,7 @@ def extract_nodes(nodes: Sequence[Node], workspace: Workspace, *,
         if cpp_batch is not None:
             cpp_batch.units.update(batch.units)
             cpp_batch.diagnostics.extend(batch.diagnostics)
-        found.extend(batch.all_diagnostics())
+        found.extend(_read_elsewhere(batch.all_diagnostics(), cpp, batch.results, workspace))
         for node, result in zip(cpp, batch.results, strict=True):
             found.extend(completeness(node, [*batch.diagnostics, *result.diagnostics],
                                       workspace))
@@ -153,6 +153,20 @@ def completeness(node: Node, found: Sequence[Diagnostic],
 _DEFINED_ELSEWHERE = {"CPP_NODE_PASSED": " of package ", "CPP_CLASS_UNSEEN": " of ROS package "}
 
 
+def _read_elsewhere(found: list[Diagnostic], nodes: Sequence[Node],
+                    results: Sequence[CppResult], workspace: Workspace) -> list[Diagnostic]:
+    """``found`` without the ``CPP_CLASS_UNSEEN`` that no node it is said for keeps: a
+    class whose code every such node reads from a library it links (``move_base``'s
+    ``Costmap2DROS``) is no unseen code there."""
+    kept: set[Diagnostic] = set()
+    dropped: set[Diagnostic] = set()
+    for node, result in zip(nodes, results, strict=True):
+        for said in result.diagnostics:
+            if said.code == "CPP_CLASS_UNSEEN":
+                (dropped if _constructed_here(said, node, workspace) else kept).add(said)
+    return [d for d in found if d not in dropped or d in kept]
+
+
 def _constructed_here(said: Diagnostic, node: Node, workspace: Workspace) -> bool:
     """Whether a source of ``node`` has the code of the class that ``said`` (a
     ``CPP_NODE_PASSED``, ``CPP_CLASS_UNSEEN``) names (``_DEFINED_ELSEWHERE``)."""
@@ -198,7 +212,8 @@ def extract_node(node: Node, workspace: Workspace) -> list[Diagnostic]:
         node.calls = without_overridden(node, result.calls, workspace)
         node.rosname = _rosname(node, result.rosname)
         _process_nodes(node, result.rosnames)
-        return [*result.diagnostics, *completeness(node, result.diagnostics, workspace)]
+        said = _read_elsewhere(result.diagnostics, [node], [result], workspace)
+        return [*said, *completeness(node, result.diagnostics, workspace)]
     if node.language == "python" and sources:
         from .python import extract_python
 
