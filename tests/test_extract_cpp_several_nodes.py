@@ -203,3 +203,4 @@ int main(int argc, char ** argv)
     found = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
     assert found.rosname == "manager"
     assert found.rosnames == []
+

@@ -493,7 +493,7 @@ def _translation_unit(path: str, text: str, ros2: bool,
                 else "CPP_PARSE_ERROR")
         result.diagnostics.append(diag.make(
             code, workspace.location(error.path, error.line, error.column),
-            detail=error.spelling))
+            detail=error_detail(error.spelling, setup.generated)))
     # the header of the names declared permissively, when this parse has them
     declared = os.path.join(setup.generated, synthesis.HEADER_NAME) if any(
         d.code == "CPP_NAMES_DECLARED" for d in result.diagnostics) else None
@@ -676,6 +676,13 @@ def _defining_code(root: str, cls: str, read: list[str]) -> str | None:
                 found.append(text)
                 read.append(full)
     return "\n".join(found) if found else None
+
+
+def error_detail(spelling: str, generated: str) -> str:
+    """A clang error as said: a header we synthesised is named without the run's
+    temporary folder (``haros_synthesised_names.h:124:3``), so the message is the same in
+    every run and in the cache."""
+    return spelling.replace(generated.rstrip(os.sep) + os.sep, "")
 
 
 _HANDED = frozenset({"CPP_NODE_PASSED", "CPP_NODE_TO_UNKNOWN"})
