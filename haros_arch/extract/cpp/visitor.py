@@ -100,6 +100,11 @@ _VALUE_METHODS = frozenset({"c_str", "str", "as_string", "as_int", "as_double", 
                             "get_value", "value_to_string"})
 
 
+# the parameter a value is read from: its name, its default when known (one ``?`` where
+# the default holds another parameter's value) and that other parameter's name
+Source = tuple[str, str | None, str | None]
+
+
 class CallFinder:
     """Collects the primitive calls and the node name of one translation unit."""
 
@@ -125,7 +130,8 @@ class CallFinder:
         self.types = CallTypes(ros2)
         self.namespaces = Namespaces(self.macros, source)
         self._fixed: set[tuple[str, str, str | None]] = set()  # fixed-name calls already found
-        self._declared: dict[str, str] = {}  # ROS 2 parameter -> its declared default
+        # ROS 2 parameter -> its declared default, and the parameter it holds (``Source``)
+        self._declared: dict[str, tuple[str, str | None]] = {}
         self.calls: list[PrimitiveCall] = []
         self.functions: list[Cursor] = []
         # (file, line) of the calls of an API function's name that the parse resolved,
@@ -206,8 +212,10 @@ class CallFinder:
                     read.also = also or None
         self.facts = argument_facts(self.sites, self.namespaces, self.owned)
         for call in self.calls:  # get_parameter("p") of a declare_parameter("p", default)
-            if call.name_param is not None and call.name_default is None:
-                call.name_default = self._declared.get(call.name_param)
+            if call.name_param is not None and call.name_default is None and (
+                call.name_param in self._declared
+            ):
+                call.name_default, call.default_param = self._declared[call.name_param]
 
     def _constants(self, member: Cursor, sites: int, reads: set[Key]) -> list[object] | None:
         """The member's writes in the file besides the reads (``sites`` of them, made at
@@ -765,7 +773,7 @@ class CallFinder:
         target = site.referenced
         location = self.where(site if target is not None and (
             target.kind == CursorKind.CONSTRUCTOR) else callee)
-        names: list[tuple[str, tuple[str, str | None] | None]]
+        names: list[tuple[str, Source | None]]
         namespace: str | None = None
         if spec.fixed_name is not None:
             if spec.handle_default is not None:  # relative to the handle given
@@ -818,10 +826,15 @@ class CallFinder:
             queue = qos.get("depth") if qos else None
         latch_expr = arg(spec.latch_arg)
         latch = spec.latched or (latch_expr is not None and scope.boolean(latch_expr) is True)
+        # a declaration whose default holds another parameter's value keeps it, for the
+        # names its node's other files take from this parameter (``cpp._node_result``)
+        holds: tuple[str | None, str | None] = (None, None)
         if spec.kind == "declare" and len(names) == 1:
             declared = self._parameter(spec, call, scope)
             if declared is not None and declared[1] is not None:
-                self._declared[declared[0]] = declared[1]
+                self._declared[declared[0]] = (declared[1], declared[2])
+                if declared[2] is not None:
+                    holds = (declared[1], declared[2])
         has_default, default = self._default(spec, args, scope)
         program_arg = _program_argument(arg(spec.type_arg), scope) if (
             spec.kind == "write") else None
@@ -855,7 +868,8 @@ class CallFinder:
                 latch=latch, callback=callback_name(function), conditions=conditions,
                 location=location,
                 name_param=source[0] if source else None,
-                name_default=source[1] if source else None,
+                name_default=source[1] if source else holds[0],
+                default_param=source[2] if source else holds[1],
                 has_default=has_default, default=default,
                 searched=spec.searched, handle_namespace=handle_namespace,
                 deletes=spec.deletes, node_name=owner, transport=transport,
@@ -962,7 +976,7 @@ class CallFinder:
                     "CPP_DYNAMIC_NAME", location, kind="declare", name=full))
 
     def _names(self, spec: api.RosFunction, call: Cursor, expr: Cursor, args: list[Cursor],
-               scope: Scope) -> list[tuple[str, tuple[str, str | None] | None]]:
+               scope: Scope) -> list[tuple[str, Source | None]]:
         """The names a call gives (several for set_parameters({...})), each with the
         parameter its value comes from, if any."""
         if spec.per_element:
@@ -972,7 +986,7 @@ class CallFinder:
             return [self._name(e, scope) for e in _elements(expr)]
         return [self._name(expr, scope)]
 
-    def _name(self, expr: Cursor, scope: Scope) -> tuple[str, tuple[str, str | None] | None]:
+    def _name(self, expr: Cursor, scope: Scope) -> tuple[str, Source | None]:
         inner = strip(expr)
         target = inner.referenced if inner.kind == CursorKind.CALL_EXPR else None
         if target is not None and target.kind == CursorKind.CONSTRUCTOR and (
@@ -995,7 +1009,7 @@ class CallFinder:
         return (name, None)
 
     def _parameter_source(self, expr: Cursor, scope: Scope,
-                          depth: int) -> tuple[str, str | None] | None:
+                          depth: int) -> Source | None:
         """The parameter (name, default) whose value ``expr`` holds, if it is one."""
         expr = strip(expr)
         if depth > MAX_DEPTH:
@@ -1009,14 +1023,18 @@ class CallFinder:
                 call, index = passed
                 spec, _ = self._row(call)
                 if spec is not None and spec.out_arg == index and spec.kind in _PARAM_KINDS:
-                    return self._parameter(spec, call, scope)
+                    return self._parameter(spec, call, scope, depth)
             value = scope.variable(decl)
+            if value is None and expr.kind == CursorKind.MEMBER_REF_EXPR and (
+                decl.kind == CursorKind.FIELD_DECL
+            ):  # a member this body assigned before (``input_topic_ = declare_..``)
+                value = scope.assigned(decl, expr)
             return None if value is None else self._parameter_source(value, scope, depth + 1)
         if expr.kind != CursorKind.CALL_EXPR:
             return None
         spec, _ = self._row(expr)
         if spec is not None and spec.kind in _PARAM_KINDS:
-            return self._parameter(spec, expr, scope)
+            return self._parameter(spec, expr, scope, depth)
         children = list(expr.get_children())
         if expr.spelling in _VALUE_METHODS and children and (
             children[0].kind == CursorKind.MEMBER_REF_EXPR
@@ -1031,7 +1049,9 @@ class CallFinder:
         return None
 
     def _parameter(self, spec: api.RosFunction, call: Cursor,
-                   scope: Scope) -> tuple[str, str | None] | None:
+                   scope: Scope, depth: int = 0) -> Source | None:
+        """The parameter a read or declaration names: its name, its default when known
+        (with one ``?`` where it holds another parameter's value), and that parameter."""
         args = written_arguments(call)
         if spec.name_arg >= len(args):
             return None
@@ -1040,6 +1060,7 @@ class CallFinder:
             name = join_name(render(self.namespaces.of_call(call, callee_of_call(call), scope)),
                              name)
         default: str | None = None
+        other: str | None = None
         index = spec.default_arg
         if index is not None and index >= len(args) and spec.out_arg == len(args) - 1:
             index = spec.out_arg  # nh.param<T>(name, default) returns the value
@@ -1051,7 +1072,15 @@ class CallFinder:
                     and index != spec.out_arg and _same_variable(args[index], args[spec.out_arg]):
                 kept = _kept_value(args[spec.out_arg], scope)[1]  # param("t", t, t)
                 default = kept if isinstance(kept, str) else None
-        return (name, default)
+            elif depth < MAX_DEPTH and parts.count(None) == 1:
+                # another parameter's value with text around it (topic_tools' relay:
+                # ``declare_parameter("output_topic", input + "_relay")``)
+                unknown = _unknown_operands(args[index], scope)
+                source = self._parameter_source(unknown[0], scope, depth + 1) if len(
+                    unknown) == 1 else None
+                if source is not None and source[0] != name and "?" not in source[0]:
+                    default, other = render(parts), source[0]
+        return (name, default, other)
 
     def _member(self, spec: api.RosFunction, call: Cursor, shift: int) -> Cursor | None:
         """The member variable a parameter read stores its value in: its out argument
