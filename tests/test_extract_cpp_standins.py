@@ -604,3 +604,41 @@ def test_a_message_filters_subscriber_takes_a_member_callback(tmp_path) -> None:
     assert [(c.kind, c.name) for c in result.calls] == [
         ("subscribe", "imu/data_raw"), ("publish", "imu/data")]
     assert [d.message for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"] == []
+
+
+@pytest.mark.parametrize("ros2", [False, True])
+def test_a_message_filters_subscriber_on_an_empty_topic_subscribes_to_nothing(
+        tmp_path, ros2: bool) -> None:
+    """fake_localization (noetic): ``new message_filters::Subscriber<M>(nh, "", 100)`` is
+    a filter fed by ``add()``: message_filters subscribes only when the topic is not
+    empty, in ROS 1 and ROS 2 alike; it was a subscription to the node's namespace."""
+    if ros2:
+        manifest, text = package_xml("fake", "ament_cmake"), (
+            "#include <rclcpp/rclcpp.hpp>\n#include <nav_msgs/msg/odometry.hpp>\n"
+            "#include <message_filters/subscriber.h>\n"
+            "using Odom = nav_msgs::msg::Odometry;\n"
+            "struct Fake : rclcpp::Node {\n"
+            "  Fake() : Node(\"fake\") {\n"
+            "    feed_ = new message_filters::Subscriber<Odom>(this, \"\");\n"
+            "    odom_.subscribe(this, \"odom\");\n"
+            "  }\n"
+            "  message_filters::Subscriber<Odom>* feed_;\n"
+            "  message_filters::Subscriber<Odom> odom_;\n"
+            "};\n")
+    else:
+        manifest, text = package_xml("fake", "catkin"), (
+            "#include <ros/ros.h>\n#include <nav_msgs/Odometry.h>\n"
+            "#include <message_filters/subscriber.h>\n"
+            "struct Fake {\n"
+            "  Fake(ros::NodeHandle& nh) {\n"
+            "    feed_ = new message_filters::Subscriber<nav_msgs::Odometry>(nh, \"\", 100);\n"
+            "    odom_.subscribe(nh, \"odom\", 10);\n"
+            "  }\n"
+            "  message_filters::Subscriber<nav_msgs::Odometry>* feed_;\n"
+            "  message_filters::Subscriber<nav_msgs::Odometry> odom_;\n"
+            "};\n"
+            "int main(int argc, char** argv) {\n"
+            "  ros::init(argc, argv, \"fake\");\n  ros::NodeHandle nh;\n  Fake fake(nh);\n"
+            "}\n")
+    result = _extract(tmp_path, manifest, text)
+    assert [(c.kind, c.name) for c in result.calls] == [("subscribe", "odom")]

@@ -681,6 +681,10 @@ class CallFinder:
                 return
             names = [("", None)] if name_expr is None else self._names(
                 spec, call, name_expr, args, scope)
+            if spec.empty_is_none:
+                names = [(name, source) for name, source in names if name]
+                if not names:
+                    return
             if spec.name_suffix is not None:  # a parameter client: the remote's services
                 names = [(join_name(name or "~", spec.name_suffix), source)
                          for name, source in names]
