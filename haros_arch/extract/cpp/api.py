@@ -110,7 +110,7 @@ NODE_HANDLE = "ros::NodeHandle"
 
 _PARAM_READ = RosFunction("read", type_from=("value",), type_arg=1, out_arg=1)
 _PARAM_READ_DEFAULT = RosFunction(
-    "read", type_from=("value", "template-value"), type_arg=1, out_arg=1, default_arg=2)
+    "read", type_from=("template-value", "value"), type_arg=1, out_arg=1, default_arg=2)
 _PARAM_WRITE = RosFunction("write", type_from=("value",), type_arg=1)
 
 ROSCPP: dict[tuple[str, str], RosFunction] = {
@@ -143,7 +143,7 @@ ROSCPP: dict[tuple[str, str], RosFunction] = {
     ("ros::param", "getCached"): RosFunction(
         "read", type_from=("value",), type_arg=1, out_arg=1, on_handle=False),
     ("ros::param", "param"): RosFunction(
-        "read", type_from=("value", "template-value"), type_arg=1, out_arg=1, default_arg=2,
+        "read", type_from=("template-value", "value"), type_arg=1, out_arg=1, default_arg=2,
         on_handle=False),
     ("ros::param", "has"): RosFunction("read", on_handle=False),
     ("ros::param", "search"): RosFunction("read", on_handle=False, searched=True),

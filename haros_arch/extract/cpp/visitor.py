@@ -715,6 +715,8 @@ class CallFinder:
             if declared is not None and declared[1] is not None:
                 self._declared[declared[0]] = declared[1]
         has_default, default = self._default(spec, args, scope)
+        if spec.kind in ("read", "declare"):
+            default = _converted(default, ctype)
         program_arg = _program_argument(arg(spec.type_arg), scope) if (
             spec.kind == "write") else None
         status = _status_read(spec, site, len(args) - shift)
@@ -1101,6 +1103,22 @@ def _program_argument(expr: Cursor | None, scope: Scope) -> int | None:
 
 _LITERALS = (CursorKind.CXX_BOOL_LITERAL_EXPR, CursorKind.INTEGER_LITERAL,
              CursorKind.STRING_LITERAL)
+
+
+def _converted(value: object, ptype: str | None) -> object:
+    """A literal default as the call converts it to the type it reads or declares
+    (``param<bool>(name, "false")``: a string literal is a pointer that is not null, so
+    true; ``param<double>(name, 10)``: 10.0); None where C++ has no implicit conversion
+    we can follow (a pointer to a number, a number to std::string)."""
+    if value is None or ptype not in ("bool", "int", "double", "str"):
+        return value
+    if ptype == "bool":
+        return True if isinstance(value, str) else bool(value)
+    if isinstance(value, str):
+        return value if ptype == "str" else None
+    if ptype == "str" or not isinstance(value, (bool, int, float)):
+        return None
+    return float(value) if ptype == "double" else int(value)
 
 
 def _literal(expr: Cursor, scope: Scope) -> object:
