@@ -103,8 +103,12 @@ class Ros1Loader:
             self.model.package_uses.append(PackageUse(name, self.where(scope, element)))
             return self.workspace.find(name)
 
+        def declared(name: str) -> bool:
+            return name in scope.arg_names or (
+                scope.include_args is not None and name in scope.outer_arg_names)
+
         ctx = Context(scope.args, self.environment, find, scope.filename,
-                      scope.anon, lambda name: name in scope.arg_names)
+                      scope.anon, declared)
         try:
             result = substitute(raw, ctx)
         except ArgUndefined as err:
@@ -118,7 +122,7 @@ class Ros1Loader:
             self.fail(scope, element, f"\"{raw}\": {err}")
             return Value.unknown(raw)
         for name in dict.fromkeys(ctx.unset):
-            if scope.in_include:
+            if scope.in_include and not scope.command_line:
                 self.report("LAUNCH_ARG_REQUIRED", scope, element,
                             path=self.workspace.relpath(scope.path), name=name)
             else:
