@@ -25,7 +25,7 @@ from ...model.location import Location
 from ...model.rosname import is_legal_name
 from ...model.values import Value
 from ...workspace import Workspace
-from ..model import LaunchModel, NodeDecl, RecordedEnvironment
+from ..model import LaunchModel, NodeDecl, RecordedEnvironment, UnreadInclude
 from ..tree import MAX_SKIPPED, node_items, param_names, ros1_condition
 from . import tags_params
 from .scope import Scope, canonical, global_ns
@@ -511,6 +511,10 @@ class Ros1Loader:
                         detail=f"include file \"{element.get('file')}\" is not known statically")
             scope.item.add(LaunchItem("include", element.get("file", ""), where,
                                       condition=guard))
+            ns = self.text(element, "ns", scope)
+            self.model.unread_includes.append(UnreadInclude(
+                element.get("file", ""), scope.child(ns).ns, list(scope.remaps),
+                scope.conditions, where))
             return
         self.include_pattern(element, scope)
         pass_all = self.flag(element, "pass_all_args", scope, False)
