@@ -642,3 +642,23 @@ def test_a_message_filters_subscriber_on_an_empty_topic_subscribes_to_nothing(
             "}\n")
     result = _extract(tmp_path, manifest, text)
     assert [(c.kind, c.name) for c in result.calls] == [("subscribe", "odom")]
+
+
+def test_tf_get_prefix_param_searches_tf_prefix_from_the_handle_given(tmp_path) -> None:
+    """velodyne (melodic-devel, driver.cc:57, transform.cc:30):
+    ``tf::getPrefixParam(private_nh)`` (tf/transform_listener.h) is
+    ``searchParam("tf_prefix")`` on the handle given, then a read of what it found. The
+    stand-in lacked it: the node given to a function the parse did not know
+    (CPP_NODE_TO_UNKNOWN) made the driver and transform nodes partial."""
+    result = _extract(tmp_path, package_xml("velo", "catkin"), (
+        "#include <ros/ros.h>\n#include <tf/transform_listener.h>\n"
+        "int main(int argc, char** argv) {\n"
+        "  ros::init(argc, argv, \"driver\");\n"
+        "  ros::NodeHandle private_nh(\"~\"), nh;\n"
+        "  std::string prefix = tf::getPrefixParam(private_nh);\n"
+        "  std::string other = tf::getPrefixParam(nh);\n"
+        "  return prefix.size() + other.size();\n}\n"))
+    assert [(c.kind, c.name, c.searched) for c in result.calls] == [
+        ("read", "~tf_prefix", True), ("read", "tf_prefix", True)]
+    assert not [d for d in result.diagnostics if d.code in (
+        "CPP_NODE_TO_UNKNOWN", "CPP_PARSE_ERROR")]

@@ -278,6 +278,9 @@ LIBRARIES: dict[tuple[str, str], RosFunction] = {
         "read", fixed_name="~tf_prefix", on_handle=False, searched=True),
     ("tf", "remap"): RosFunction("read", fixed_name="~tf_prefix", on_handle=False,
                                  searched=True),
+    # getPrefixParam(nh) searches tf_prefix from the handle given
+    ("tf", "getPrefixParam"): RosFunction("read", fixed_name="tf_prefix", on_handle=False,
+                                          handle_default="", searched=True),
 }
 
 # rclcpp parameter clients: the services of the remote node they are made for (argument
