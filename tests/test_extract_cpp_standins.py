@@ -662,3 +662,29 @@ def test_tf_get_prefix_param_searches_tf_prefix_from_the_handle_given(tmp_path) 
         ("read", "~tf_prefix", True), ("read", "tf_prefix", True)]
     assert not [d for d in result.diagnostics if d.code in (
         "CPP_NODE_TO_UNKNOWN", "CPP_PARSE_ERROR")]
+
+
+def test_a_vector_takes_a_value_of_an_unknown_name_by_assignment(tmp_path) -> None:
+    """joint_state_controller (ros_controllers noetic, joint_state_controller.cpp:56):
+    ``joint_names = hw->getNames();`` with hardware_interface not in the workspace: the
+    value is of the permissive class, and std::vector's three assignments (copy, move,
+    initializer_list) were equally good, an ambiguity error in a function that calls
+    the ROS API, so the controller was partial. As std::string already does, the
+    stand-in vector takes such a value."""
+    result = _extract(tmp_path, package_xml("ctl", "catkin"), (
+        "#include <ros/ros.h>\n#include <std_msgs/String.h>\n"
+        "#include <vendor_interface/hw.h>\n#include <vector>\n#include <string>\n"
+        "class Ctl : public vendor_interface::Controller<vendor_interface::Hw> {\n"
+        " public:\n"
+        "  bool init(vendor_interface::Hw* hw, ros::NodeHandle& nh) {\n"
+        "    std::vector<std::string> names;\n"
+        "    if (!nh.getParam(\"joints\", names)) { names = hw->getNames(); }\n"
+        "    pub_ = nh.advertise<std_msgs::String>(\"out\", 1);\n"
+        "    return true;\n  }\n"
+        "  ros::Publisher pub_;\n};\n"
+        "int main(int argc, char** argv) {\n"
+        "  ros::init(argc, argv, \"n\");\n  ros::NodeHandle nh;\n"
+        "  Ctl c;\n  c.init(nullptr, nh);\n}\n"))
+    assert [(c.kind, c.name) for c in result.calls] == [("read", "joints"), ("publish", "out")]
+    assert [d.message for d in result.diagnostics if d.code in (
+        "CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL")] == []
