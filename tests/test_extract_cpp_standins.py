@@ -670,7 +670,8 @@ def test_a_vector_takes_a_value_of_an_unknown_name_by_assignment(tmp_path) -> No
     value is of the permissive class, and std::vector's three assignments (copy, move,
     initializer_list) were equally good, an ambiguity error in a function that calls
     the ROS API, so the controller was partial. As std::string already does, the
-    stand-in vector takes such a value."""
+    stand-in vector takes such a value, and is built from one (rosserial_server's
+    ``std::vector<uint8_t> message(length)``, its length of an unknown type)."""
     result = _extract(tmp_path, package_xml("ctl", "catkin"), (
         "#include <ros/ros.h>\n#include <std_msgs/String.h>\n"
         "#include <vendor_interface/hw.h>\n#include <vector>\n#include <string>\n"
@@ -679,6 +680,7 @@ def test_a_vector_takes_a_value_of_an_unknown_name_by_assignment(tmp_path) -> No
         "  bool init(vendor_interface::Hw* hw, ros::NodeHandle& nh) {\n"
         "    std::vector<std::string> names;\n"
         "    if (!nh.getParam(\"joints\", names)) { names = hw->getNames(); }\n"
+        "    std::vector<unsigned char> buffer(hw->length());\n"
         "    pub_ = nh.advertise<std_msgs::String>(\"out\", 1);\n"
         "    return true;\n  }\n"
         "  ros::Publisher pub_;\n};\n"

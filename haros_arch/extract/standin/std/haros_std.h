@@ -324,6 +324,8 @@ public:
   template<class It> vector(It first, It last);
   vector(const vector& v);
   vector(vector&& v);
+  template<class U, class = typename enable_if<__is_base_of(::haros_any, U)>::type>
+  explicit vector(const U& unknown);  // built from a value of an unknown name, as string is
   ~vector();
   vector& operator=(const vector& v);
   vector& operator=(vector&& v);
