@@ -448,18 +448,8 @@ class Names:
             last == "value" or rest.lstrip()[:1] == b"("
         ):
             if not _C_VENDOR.fullmatch(written[-1]):
-                # an unqualified function or variable: in a class, often a member clang
-                # could not find (an invalid base); declared at the top it would shadow
-                # it, so it is a member of the permissive class, found only from a
-                # class derived from a declared one (ur_robot_driver's
-                # ``registerInterface(&js_interface_)`` in a hardware_interface::RobotHW
-                # it does not know); an API method stays the API's (``read_members``)
-                from . import api
-                name = written[-1]
-                if name not in self.members and not (
-                        len(name) > 4 and any(name == n for _, n in api.ALL)):
-                    self.members.add(name)
-                return
+                return  # an unqualified function or variable: in a class, often a member
+                # clang could not find (an invalid base); declaring it would shadow it
             # but a C library's constant or prefixed function, whose header is missing
             # (``SDL_Init(SDL_INIT_JOYSTICK | SDL_INIT_HAPTIC)``, ``SDL_GetError()``),
             # is no member: a value (a call is the value's ``operator()``)
