@@ -690,3 +690,31 @@ def test_a_vector_takes_a_value_of_an_unknown_name_by_assignment(tmp_path) -> No
     assert [(c.kind, c.name) for c in result.calls] == [("read", "joints"), ("publish", "out")]
     assert [d.message for d in result.diagnostics if d.code in (
         "CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL")] == []
+
+
+def test_a_callback_held_in_a_function_object_gives_the_message_type(tmp_path) -> None:
+    """franka_example_controllers (dual_arm_cartesian_impedance_example_controller.cpp:
+    118-123): ``boost::function<void(const geometry_msgs::PoseStamped::ConstPtr&)>
+    callback = boost::bind(...); subscribe_options.init("target", 1, callback);``: the
+    type is the message of the function type the variable holds (it was unknown)."""
+    result = _extract(tmp_path, package_xml("arm", "catkin"), (
+        "#include <ros/ros.h>\n#include <geometry_msgs/PoseStamped.h>\n"
+        "#include <boost/function.hpp>\n#include <boost/bind.hpp>\n#include <functional>\n"
+        "struct Ctl {\n"
+        "  void target(const geometry_msgs::PoseStamped::ConstPtr& m);\n"
+        "  void init(ros::NodeHandle& nh) {\n"
+        "    boost::function<void(const geometry_msgs::PoseStamped::ConstPtr&)> callback =\n"
+        "        boost::bind(&Ctl::target, this, _1);\n"
+        "    ros::SubscribeOptions options;\n"
+        "    options.init(\"target\", 1, callback);\n"
+        "    sub_ = nh.subscribe(options);\n"
+        "    std::function<void(const geometry_msgs::PoseStamped::ConstPtr&)> other =\n"
+        "        [](const geometry_msgs::PoseStamped::ConstPtr&) {};\n"
+        "    sub2_ = nh.subscribe(\"other\", 1, other);\n"
+        "  }\n"
+        "  ros::Subscriber sub_, sub2_;\n};\n"
+        "int main(int argc, char** argv) {\n"
+        "  ros::init(argc, argv, \"arm\");\n  ros::NodeHandle nh;\n  Ctl c;\n  c.init(nh);\n}\n"))
+    assert [(c.kind, c.name, c.type) for c in result.calls] == [
+        ("subscribe", "target", "geometry_msgs/PoseStamped"),
+        ("subscribe", "other", "geometry_msgs/PoseStamped")]
