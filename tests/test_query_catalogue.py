@@ -219,6 +219,19 @@ def test_a_long_value_is_shortened_in_the_message():
     assert "set as binary (QUJDQUJD" in finding.message and len(finding.message) < 300
 
 
+def test_a_long_place_keeps_its_line_in_the_message():
+    # Autoware's sensor kit: a launch file's path of 118 characters, whose line was cut
+    # off as a long value ("gnss.launch.xml:… and gnss.launch.xml:…")
+    path = ("autowarefoundation+autoware_launch/sensor_kit/sample_sensor_kit_launch/"
+            "sample_sensor_kit_launch/launch/gnss.launch.xml")
+    model = configuration({"nodes": [
+        {"name": "/sensing/gnss/ublox", "location": {"file": path, "line": 15}},
+        {"name": "/sensing/gnss/ublox", "id": "node:/sensing/gnss/ublox#2",
+         "location": {"file": path, "line": 37}}]})
+    (finding,) = run_rule(RULES["duplicate-node-names"], model)
+    assert f"({path}:15 and {path}:37)" in finding.message
+
+
 def test_a_double_read_as_an_int_is_a_mismatch_but_for_roscpp():
     # roscpp's getParam(int) rounds a double; rclcpp throws, rospy hands a float on
     def reader(node: str, file: str) -> dict:

@@ -183,6 +183,8 @@ def render(template: str, match: Any, evaluator: Evaluator) -> str:
                 else str(plain(v)) for v in value)))
         if isinstance(value, list | tuple):  # a value: every element, as it is
             return _shorten(", ".join(str(plain(v)) for v in value))
+        if isinstance(value, Location):  # a place is whole: its line ends it
+            return str(plain(value))
         return label(value) if entities(value) else _shorten(str(plain(value)))
 
     return _FIELD.sub(fill, template)

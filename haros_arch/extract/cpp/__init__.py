@@ -23,14 +23,16 @@ from clang.cindex import Diagnostic as ClangDiagnostic
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
 from ...files import MAX_FILE_BYTES, read_text
-from ...manifest import ros_version
+from ...manifest import parse_manifest, ros_version
 from ...model.location import Location
 from ...model.source import PrimitiveCall
-from ...workspace import Workspace
+from ...workspace import Workspace, manifest_of
 from .. import NODELET_LOAD
 from . import cache, links, recall, synthesis, toolchain
 from . import compile_commands as commands
-from .headers import STANDIN, IncludeSetup
+from .headers import FALLBACK, STANDIN, IncludeSetup
+from .interfaces import interface_package
+from .interfaces import known as known_interface
 from .owners import node_names
 from .visitor import WORDS, CallFinder
 
@@ -466,7 +468,10 @@ def _translation_unit(path: str, text: str, ros2: bool,
     # the header of the names declared permissively, when this parse has them
     declared = os.path.join(setup.generated, synthesis.HEADER_NAME) if any(
         d.code == "CPP_NAMES_DECLARED" for d in result.diagnostics) else None
-    finder = CallFinder(tu, source, owned, where, ros2=ros2, declared=declared)
+    read: list[str] = []  # the workspace files the ROS 1 client test reads
+    finder = CallFinder(tu, source, owned, where, ros2=ros2, declared=declared,
+                        clients=None if ros2 else ros1_clients(path, workspace, setup.generated,
+                                                               read))
     finder.run()
     result.diagnostics.extend(plugin_loads(path, text, workspace))
     result.calls = sorted(finder.calls, key=lambda c: (
@@ -482,7 +487,7 @@ def _translation_unit(path: str, text: str, ros2: bool,
     # function it does not know) may construct anything there
     result.unseen = ["*"] if any(d.code in _HANDED for d in result.diagnostics) else sorted(
         word.decode() for word in _unseen(errors, finder, source) | finder.unseen)
-    headers = [path]
+    headers = [path, *read]
     for include in tu.get_includes():
         name = os.path.abspath(include.include.name)
         if name.startswith((workspace.root + os.sep, setup.generated + os.sep)) or (
@@ -547,6 +552,100 @@ def _hidden(path: str, errors: list[_Error], finder: CallFinder,
                     detail=error.spelling))
     found.extend(_node_given(errors, finder, source, workspace))
     return found[:recall.MAX_REASONS]
+
+
+ROSCPP = "roscpp"
+# what ROS 1 code that communicates names: a handle, or the free parameter functions
+_ROS1_CLIENT_CODE = re.compile(r"\bNodeHandle\b|\bros\s*::\s*(?:param|topic|service)\s*::")
+_SOURCE_SUFFIXES = (".cpp", ".cc", ".cxx", ".c++", ".h", ".hpp", ".hh", ".hxx")
+MAX_CLIENT_FILES = 400  # files of a package read to find where a class is defined
+
+
+def ros1_clients(path: str, workspace: Workspace, generated: str,
+                 read: list[str]) -> Callable[[str, str], bool]:
+    """Whether a class (qualified) of a package (both by name) may make ROS calls of its
+    own in code a ROS 1 unit builds without reading it (``CallFinder._unseen_class``).
+    Not a class of a package the stand-in headers provide, nor a message or service
+    (of the catalogue, or named as a header the unit includes: ``<pkg/Name.h>`` is how
+    ROS 1 generates them). A workspace package's when it depends on roscpp and the
+    files that define the class's constructors (when found) name a NodeHandle or the
+    parameter, topic or service functions; another package's when the unit's package
+    declares it as a dependency and it is installed with a package.xml that depends on
+    roscpp, or found nowhere (its headers are missing: what it does is not known). The
+    workspace files it reads (manifests, the files that define a class) go to ``read``,
+    so a cached result is used only while they are unchanged."""
+    package = workspace.package_of(path)
+    if package is not None and package.root:
+        read.append(manifest_of(package.root))
+    declared = {d.name for d in package.dependencies} if package is not None else set()
+    known: dict[tuple[str, str], bool] = {}
+
+    def client(name: str, cls: str) -> bool:
+        found = known.get((name, cls))
+        if found is None:
+            found = known[(name, cls)] = _client(name, cls, declared, workspace, generated,
+                                                 read)
+        return found
+
+    return client
+
+
+def _client(name: str, cls: str, declared: set[str], workspace: Workspace,
+            generated: str, read: list[str]) -> bool:
+    if any(os.path.isdir(os.path.join(folder, name)) for folder in (STANDIN, FALLBACK)) or (
+        interface_package(name)
+    ):
+        return False
+    last = cls.rsplit("::", 1)[-1]
+    for each in {last, re.sub(r"(?:Request|Response)$", "", last)}:
+        if known_interface(name, each) is not None or os.path.isfile(
+                os.path.join(generated, name, each + ".h")):
+            return False
+    other = workspace.packages.get(name)
+    if other is not None:
+        if not any(d.name == ROSCPP for d in other.dependencies):
+            return False
+        if other.root:
+            read.append(manifest_of(other.root))
+        code = _defining_code(other.root, last, read)
+        return code is None or _ROS1_CLIENT_CODE.search(code) is not None
+    if name not in declared:
+        return False
+    folder = workspace.find(name)
+    manifest = os.path.join(folder, "package.xml") if folder else None
+    if manifest is None or not os.path.isfile(manifest):
+        return True
+    parsed, _ = parse_manifest(manifest, workspace.location(manifest), folder or "",
+                               workspace.environment)
+    return parsed is None or any(d.name == ROSCPP for d in parsed.dependencies)
+
+
+def _defining_code(root: str, cls: str, read: list[str]) -> str | None:
+    """The text of the files under ``root`` that define a constructor of ``cls`` out of
+    its class (``cls::cls(``), joined; None when none does."""
+    defines = re.compile(rf"\b{re.escape(cls)}\s*::\s*{re.escape(cls)}\s*\(")
+    found: list[str] = []
+    seen = 0
+    for folder, dirs, files in os.walk(root):
+        dirs.sort()
+        for file in sorted(files):
+            if not file.endswith(_SOURCE_SUFFIXES):
+                continue
+            seen += 1
+            if seen > MAX_CLIENT_FILES:
+                return "\n".join(found) if found else None
+            full = os.path.join(folder, file)
+            try:
+                if os.path.getsize(full) > MAX_FILE_BYTES:
+                    continue
+                with open(full, encoding="utf-8", errors="replace") as handle:
+                    text = handle.read()
+            except OSError:
+                continue
+            if defines.search(text):
+                found.append(text)
+                read.append(full)
+    return "\n".join(found) if found else None
 
 
 _HANDED = frozenset({"CPP_NODE_PASSED", "CPP_NODE_TO_UNKNOWN"})

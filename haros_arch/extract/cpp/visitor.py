@@ -45,6 +45,7 @@ from .links import Fact, argument_facts, constructed_by
 from .members import MemberWrites, member_of
 from .owners import (
     constructed_class,
+    constructors_here,
     handle_node,
     node_arguments,
     opaque_construction,
@@ -87,6 +88,10 @@ _ZEROED: dict[TypeKind, object] = {
     TypeKind.ULONG: 0, TypeKind.LONGLONG: 0, TypeKind.ULONGLONG: 0, TypeKind.SHORT: 0,
     TypeKind.USHORT: 0, TypeKind.FLOAT: 0.0, TypeKind.DOUBLE: 0.0,
 }
+# the classes the API rows model: their construction is a call we read
+_API_CLASSES = frozenset(owner for owner, _ in [*api.ALL, *api.OPTIONS]) | api.HANDLE_CLASSES
+# what can build an object (``_unseen_class``)
+_MAKES = frozenset({CursorKind.CALL_EXPR, CursorKind.VAR_DECL, CursorKind.CXX_NEW_EXPR})
 MAX_SITE_DEPTH = 3  # constructors of constructors whose sites' conditions are followed
 _PREPROCESSED = frozenset({CursorKind.MACRO_INSTANTIATION, CursorKind.INCLUSION_DIRECTIVE})
 _PARAM_KINDS = ("read", "declare")
@@ -100,8 +105,13 @@ class CallFinder:
 
     def __init__(self, tu: TranslationUnit, source: dict[str, bytes],
                  owned: Callable[[str], bool], where: Callable[[Cursor], Location],
-                 ros2: bool = False, declared: str | None = None) -> None:
+                 ros2: bool = False, declared: str | None = None,
+                 clients: Callable[[str, str], bool] | None = None) -> None:
         self.tu = tu
+        # ROS 1: whether a class of a package (both by name) may make ROS calls in code
+        # of its own, not handed the node (``_unseen_class``); None in ROS 2
+        self.clients = clients
+        self._classes_said: set[str] = set()
         # the header of the names declared permissively (``synthesis``): a call of one
         # given the node hands it to code nobody reads (``_to_unknown``)
         self.declared = declared
@@ -250,8 +260,12 @@ class CallFinder:
         a function without one adds nothing, and its walk is left out."""
         names, rows = self.wrappers.names, self._unresolved_rows()
         nodes = self.wrappers.preorder.get(id(function))
+        if self.clients is not None and function.kind == CursorKind.CONSTRUCTOR:
+            self._unseen_members(function)
         for node in function.walk_preorder() if nodes is None else nodes:
             kind = node.kind
+            if kind in _MAKES:
+                self._unseen_class(node)  # in every function, walked or not
             if kind == CursorKind.CALL_EXPR:
                 self._to_unknown(node)  # in every function, walked or not
                 spelling = node.spelling
@@ -314,6 +328,8 @@ class CallFinder:
             if node.kind == CursorKind.CALL_EXPR:
                 self._construction(node)
                 self._to_unknown(node)
+            if node.kind in _MAKES:
+                self._unseen_class(node)
             tested.visit(node)
             branches = self.reader.branches(node)
             stack.extend((child, conditions + extra) for child, extra in reversed(branches))
@@ -354,7 +370,7 @@ class CallFinder:
             if child.kind != CursorKind.PARM_DECL]
         while stack:
             node, conditions = stack.pop()
-            if node.kind == CursorKind.CALL_EXPR and place_of(node) == wanted:
+            if node.kind == call.kind and place_of(node) == wanted:  # a delegation too
                 return conditions
             branches = self.reader.branches(node)
             stack.extend((child, conditions + extra) for child, extra in reversed(branches))
@@ -517,6 +533,102 @@ class CallFinder:
             (self._owner, name) not in self.constructions
         ):
             self.constructions.append((self._owner, name))
+
+    def _unseen_class(self, node: Cursor) -> None:
+        """ROS 1: say where ``node`` builds an object of a class of another ROS package
+        whose code this parse does not have (``_unseen_of``): ``CPP_CLASS_UNSEEN``. A
+        variable of the class (``ns::C c(args);``), ``new ns::C(...)``,
+        ``make_shared<ns::C>(...)``, or a call of a constructor of the workspace; a
+        call of a name declared permissively is no construction (``tf::pointMsgToTF(a,
+        b)`` is a function, unknown to the parse as a type or not)."""
+        if self.clients is None:
+            return
+        kind = node.kind
+        if kind == CursorKind.VAR_DECL:
+            if node.type.get_canonical().kind == TypeKind.RECORD:
+                # ``C c = f();`` keeps what ``f`` returns: built where ``f`` built it
+                self._say_unseen(node.type.get_canonical().get_declaration(), node,
+                                 not _copy_initialised(node))
+        elif kind == CursorKind.CXX_NEW_EXPR:
+            made = node.type.get_canonical().get_pointee()
+            if made.kind == TypeKind.RECORD:
+                self._say_unseen(made.get_declaration(), node, True)
+        elif kind == CursorKind.CALL_EXPR:
+            target = node.referenced
+            if target is None:
+                return
+            if target.kind == CursorKind.CONSTRUCTOR:
+                self._say_unseen(target.semantic_parent, node, False)
+            elif (qualified_name(target.semantic_parent), target.spelling) in api.FACTORIES:
+                made_cls = factory_made(node)
+                if made_cls is not None:
+                    self._say_unseen(made_cls, node, True)
+
+    def _unseen_members(self, constructor: Cursor) -> None:
+        """ROS 1: the members of the constructor's class that it builds by value, whose
+        class is one ``_unseen_of`` finds, at their initialiser (``costmap_ros_("costmap",
+        tf_)``), else at their declaration (built by default, which the code does not
+        write: ``base_local_planner::TrajectoryPlannerROS planner_;``)."""
+        if not constructor.is_definition():
+            return
+        owner = constructor.semantic_parent
+        if owner is None:
+            return
+        named = {place_of(child.referenced): child for child in constructor.get_children()
+                 if child.kind == CursorKind.MEMBER_REF and child.referenced is not None}
+        for member in owner.get_children():
+            if member.kind == CursorKind.FIELD_DECL and (
+                member.type.get_canonical().kind == TypeKind.RECORD
+            ):
+                self._say_unseen(member.type.get_canonical().get_declaration(),
+                                 named.get(place_of(member), member), True)
+
+    def _say_unseen(self, cls: Cursor | None, at: Cursor, declared: bool) -> None:
+        found = self._unseen_of(cls, declared) if cls is not None else None
+        if found is None:
+            return
+        name, package = found
+        self._classes_said.add(name)
+        self.diagnostics.append(diag.make("CPP_CLASS_UNSEEN", self.where(at), cls=name,
+                                          package=package))
+
+    def _unseen_of(self, cls: Cursor, declared: bool) -> tuple[str, str] | None:
+        """The class (qualified) and ROS package of ``cls`` when it is a class of another
+        ROS package whose constructor's code the parse does not have: one the parse
+        knows only as a name declared permissively (its header is missing) in the
+        namespace of a package, built where the code names it as a type
+        (``declared``), or a class of another workspace package that declares a
+        constructor the unit has no code of; when the ``clients`` predicate accepts
+        the package and the class. A class the API rows model (``tf::TransformListener``,
+        an actionlib client, one that inherits such a class's constructors) is read by
+        its row; one of a package the stand-in headers provide is no client's."""
+        assert self.clients is not None
+        if cls.kind not in (CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL,
+                            CursorKind.CLASS_TEMPLATE):
+            return None
+        where = cls.location.file
+        if where is None:
+            return None
+        name = qualified_name(cls)
+        if not name or name in self._classes_said or "::" not in name:
+            return None
+        if where.name == self.declared:
+            if not declared or cls.spelling == synthesis.ANY or cls.spelling.endswith("Ptr"):
+                return None  # ``pkg::NameConstPtr``: a message's pointer, as ROS 1 names it
+            package = name.split("::", 1)[0]
+        elif self.owned(where.name):
+            package = self.where(cls).package or ""
+            here = self.where(self.tu.cursor).package
+            definition = cls.get_definition() or cls
+            if not package or package == here or constructors_here(cls) or not any(
+                child.kind == CursorKind.CONSTRUCTOR for child in definition.get_children()
+            ):
+                return None  # a class without constructors of its own runs no code
+        else:
+            return None
+        if name in _API_CLASSES or qualified_name(row_class(cls)) in _API_CLASSES:
+            return None
+        return (name, package) if self.clients(package, name) else None
 
     def _to_unknown(self, call: Cursor) -> None:
         """Say when ``call`` gives the node to a function or class the parse knows only
@@ -998,6 +1110,16 @@ class CallFinder:
 _CLASSES = frozenset({CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL, CursorKind.UNION_DECL,
                       CursorKind.CLASS_TEMPLATE,
                       CursorKind.CLASS_TEMPLATE_PARTIAL_SPECIALIZATION})
+
+
+def _copy_initialised(var: Cursor) -> bool:
+    """Whether a variable's declaration is ``T name = ...`` (its value copied or moved
+    from an expression), not ``T name(...)``, ``T name{...}`` nor ``T name;``."""
+    tokens = [t.spelling for t in itertools.islice(var.get_tokens(), 64)]
+    for index, token in enumerate(tokens[:-1]):
+        if token == var.spelling:
+            return tokens[index + 1] == "="
+    return False
 
 
 def _same_variable(a: Cursor, b: Cursor) -> bool:
