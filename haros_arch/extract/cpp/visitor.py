@@ -615,6 +615,8 @@ class CallFinder:
         if where.name == self.declared:
             if not declared or cls.spelling == synthesis.ANY or cls.spelling.endswith("Ptr"):
                 return None  # ``pkg::NameConstPtr``: a message's pointer, as ROS 1 names it
+            if msg_types.written_type(name, False) is not None:
+                return None  # a message no header declares (``vendor_msgs::Pose``): data
             package = name.split("::", 1)[0]
         elif self.owned(where.name):
             package = self.where(cls).package or ""
