@@ -10,6 +10,7 @@ from .diagnostics import Diagnostic
 from .model.location import Location
 
 MAX_FILE_BYTES = 8 * 1024 * 1024
+_BOM = b"\xef\xbb\xbf"
 
 
 def _refuse_special(path: str, location: Location) -> list[Diagnostic]:
@@ -24,7 +25,9 @@ def _refuse_special(path: str, location: Location) -> list[Diagnostic]:
 def read_text(
     path: str, location: Location, limit: int = MAX_FILE_BYTES
 ) -> tuple[str | None, list[Diagnostic]]:
-    """Read ``path`` as text. Problems become diagnostics at ``location``; never raises."""
+    """Read ``path`` as text. Problems become diagnostics at ``location``; never raises.
+    A UTF-8 byte-order mark at the start is an encoding mark, not text: CMake, Python,
+    YAML and C++ compilers all skip it, so it is dropped here for every reader."""
     try:
         special = _refuse_special(path, location)
         if special:
@@ -38,6 +41,8 @@ def read_text(
     except OSError as err:
         return None, [diag.make("FILE_UNREADABLE", location, path=location.file or path,
                                 detail=err.strerror or str(err))]
+    if raw.startswith(_BOM):
+        raw = raw[len(_BOM):]
     try:
         return raw.decode("utf-8"), []
     except UnicodeDecodeError as err:

@@ -132,6 +132,22 @@ def test_syntax_error_keeps_commands_before_it(write_tree):
         ("CMAKE_SYNTAX", "pkg/CMakeLists.txt", 3)]
 
 
+def test_byte_order_mark_before_the_first_command(write_tree):
+    """cmake-language(7): a source file may begin with a UTF-8 byte-order mark."""
+    ws, pkg = workspace_with(write_tree, """
+        project(pkg)
+        add_executable(first src/a.cpp)
+        """)
+    path = ws.packages["pkg"].root + "/CMakeLists.txt"
+    with open(path, "rb") as handle:
+        text = handle.read()
+    with open(path, "wb") as handle:
+        handle.write(b"\xef\xbb\xbf" + text)
+    nodes, found = parse_package(pkg, ws)
+    assert [n.executable for n in nodes] == ["first"]
+    assert found == []
+
+
 def test_rosbuild_package_executables(write_tree):
     root = write_tree({
         "src/old/manifest.xml": '<package><depend package="roscpp"/></package>',

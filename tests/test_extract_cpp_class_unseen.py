@@ -359,3 +359,32 @@ def test_the_cache_follows_the_file_that_defines_the_class(write_tree: Any,
     assert user().completeness == "complete"
     (root / "src/grid/src/map.cpp").write_text(LIBRARY_SOURCE)
     assert user().completeness == "partial"
+
+
+def test_a_message_no_header_declares_is_no_class(write_tree: Any) -> None:
+    """open_manipulator_control_gui (noetic, qnode.hpp:120): a member
+    ``open_manipulator_msgs::KinematicsPose kinematics_pose_;`` whose header no include
+    gives (open_manipulator_msgs is not in the workspace), so the name is declared
+    permissively: a message of a ``_msgs`` package is data, built without running any
+    ROS code; the node was partial for it (CPP_CLASS_UNSEEN)."""
+    node, _ = _teleop(write_tree, """
+        #include <ros/ros.h>
+        #include <std_msgs/String.h>
+
+        class Gui {
+         public:
+          Gui() { pub_ = nh_.advertise<std_msgs::String>("option", 10); }
+         private:
+          ros::NodeHandle nh_;
+          ros::Publisher pub_;
+          vendor_msgs::KinematicsPose pose_;
+        };
+
+        int main(int argc, char** argv) {
+          ros::init(argc, argv, "gui");
+          Gui gui;
+          vendor_msgs::Limits limits;
+          ros::spin();
+        }
+        """, "vendor_msgs", "std_msgs")
+    assert node.completeness == "complete", node.completeness_reasons

@@ -188,3 +188,29 @@ def test_a_read_whose_default_is_its_own_variable_has_that_variable_s_value(tmp_
     [sub] = [c for c in result.calls if c.kind == "subscribe"]
     assert (sub.name_param, sub.name_default) == (
         "~costmap_topic", "/move_base/local_costmap/costmap")
+
+
+def test_a_template_argument_written_is_the_type_read(tmp_path):
+    """Universal_Robots_ROS_Driver (hardware_interface.cpp:200):
+    ``param<bool>("use_tool_communication", "false")`` reads a bool, and its default is
+    the string literal converted to bool, a pointer that is not null: true. The literal's
+    own type (str) made a false parameter-type-mismatch with the launch file's bool;
+    ``param<double>("rate", 10)`` reads a double whose default is 10.0 (a double literal
+    keeps no default value, as before)."""
+    source = tmp_path / "n.cpp"
+    source.write_text(
+        "#include <ros/ros.h>\n#include <string>\n"
+        "int main(int argc, char** argv) {\n"
+        "  ros::init(argc, argv, \"n\");\n  ros::NodeHandle nh(\"~\");\n"
+        "  bool tool = nh.param<bool>(\"tool\", \"false\");\n"
+        "  double rate = nh.param<double>(\"rate\", 10);\n"
+        "  int count = nh.param<int>(\"count\", 2.5);\n"
+        "  std::string frame = nh.param<std::string>(\"frame\", \"map\");\n"
+        "  double gain; nh.param(\"gain\", gain, 1.5);\n"
+        "  bool on = ros::param::param<bool>(\"/on\", 0);\n"
+        "  return 0;\n}\n")
+    result = extract_cpp([str(source)], Workspace(root=str(tmp_path)), cache_dir=None)
+    got = [(c.name, c.type, c.default) for c in result.calls]
+    assert got == [("~tool", "bool", True), ("~rate", "double", 10.0), ("~count", "int", None),
+                   ("~frame", "str", "map"), ("~gain", "double", None), ("/on", "bool", False)]
+    assert [type(c.default) for c in result.calls[:2]] == [bool, float]

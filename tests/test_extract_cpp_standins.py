@@ -604,3 +604,117 @@ def test_a_message_filters_subscriber_takes_a_member_callback(tmp_path) -> None:
     assert [(c.kind, c.name) for c in result.calls] == [
         ("subscribe", "imu/data_raw"), ("publish", "imu/data")]
     assert [d.message for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"] == []
+
+
+@pytest.mark.parametrize("ros2", [False, True])
+def test_a_message_filters_subscriber_on_an_empty_topic_subscribes_to_nothing(
+        tmp_path, ros2: bool) -> None:
+    """fake_localization (noetic): ``new message_filters::Subscriber<M>(nh, "", 100)`` is
+    a filter fed by ``add()``: message_filters subscribes only when the topic is not
+    empty, in ROS 1 and ROS 2 alike; it was a subscription to the node's namespace."""
+    if ros2:
+        manifest, text = package_xml("fake", "ament_cmake"), (
+            "#include <rclcpp/rclcpp.hpp>\n#include <nav_msgs/msg/odometry.hpp>\n"
+            "#include <message_filters/subscriber.h>\n"
+            "using Odom = nav_msgs::msg::Odometry;\n"
+            "struct Fake : rclcpp::Node {\n"
+            "  Fake() : Node(\"fake\") {\n"
+            "    feed_ = new message_filters::Subscriber<Odom>(this, \"\");\n"
+            "    odom_.subscribe(this, \"odom\");\n"
+            "  }\n"
+            "  message_filters::Subscriber<Odom>* feed_;\n"
+            "  message_filters::Subscriber<Odom> odom_;\n"
+            "};\n")
+    else:
+        manifest, text = package_xml("fake", "catkin"), (
+            "#include <ros/ros.h>\n#include <nav_msgs/Odometry.h>\n"
+            "#include <message_filters/subscriber.h>\n"
+            "struct Fake {\n"
+            "  Fake(ros::NodeHandle& nh) {\n"
+            "    feed_ = new message_filters::Subscriber<nav_msgs::Odometry>(nh, \"\", 100);\n"
+            "    odom_.subscribe(nh, \"odom\", 10);\n"
+            "  }\n"
+            "  message_filters::Subscriber<nav_msgs::Odometry>* feed_;\n"
+            "  message_filters::Subscriber<nav_msgs::Odometry> odom_;\n"
+            "};\n"
+            "int main(int argc, char** argv) {\n"
+            "  ros::init(argc, argv, \"fake\");\n  ros::NodeHandle nh;\n  Fake fake(nh);\n"
+            "}\n")
+    result = _extract(tmp_path, manifest, text)
+    assert [(c.kind, c.name) for c in result.calls] == [("subscribe", "odom")]
+
+
+def test_tf_get_prefix_param_searches_tf_prefix_from_the_handle_given(tmp_path) -> None:
+    """velodyne (melodic-devel, driver.cc:57, transform.cc:30):
+    ``tf::getPrefixParam(private_nh)`` (tf/transform_listener.h) is
+    ``searchParam("tf_prefix")`` on the handle given, then a read of what it found. The
+    stand-in lacked it: the node given to a function the parse did not know
+    (CPP_NODE_TO_UNKNOWN) made the driver and transform nodes partial."""
+    result = _extract(tmp_path, package_xml("velo", "catkin"), (
+        "#include <ros/ros.h>\n#include <tf/transform_listener.h>\n"
+        "int main(int argc, char** argv) {\n"
+        "  ros::init(argc, argv, \"driver\");\n"
+        "  ros::NodeHandle private_nh(\"~\"), nh;\n"
+        "  std::string prefix = tf::getPrefixParam(private_nh);\n"
+        "  std::string other = tf::getPrefixParam(nh);\n"
+        "  return prefix.size() + other.size();\n}\n"))
+    assert [(c.kind, c.name, c.searched) for c in result.calls] == [
+        ("read", "~tf_prefix", True), ("read", "tf_prefix", True)]
+    assert not [d for d in result.diagnostics if d.code in (
+        "CPP_NODE_TO_UNKNOWN", "CPP_PARSE_ERROR")]
+
+
+def test_a_vector_takes_a_value_of_an_unknown_name_by_assignment(tmp_path) -> None:
+    """joint_state_controller (ros_controllers noetic, joint_state_controller.cpp:56):
+    ``joint_names = hw->getNames();`` with hardware_interface not in the workspace: the
+    value is of the permissive class, and std::vector's three assignments (copy, move,
+    initializer_list) were equally good, an ambiguity error in a function that calls
+    the ROS API, so the controller was partial. As std::string already does, the
+    stand-in vector takes such a value, and is built from one (rosserial_server's
+    ``std::vector<uint8_t> message(length)``, its length of an unknown type)."""
+    result = _extract(tmp_path, package_xml("ctl", "catkin"), (
+        "#include <ros/ros.h>\n#include <std_msgs/String.h>\n"
+        "#include <vendor_interface/hw.h>\n#include <vector>\n#include <string>\n"
+        "class Ctl : public vendor_interface::Controller<vendor_interface::Hw> {\n"
+        " public:\n"
+        "  bool init(vendor_interface::Hw* hw, ros::NodeHandle& nh) {\n"
+        "    std::vector<std::string> names;\n"
+        "    if (!nh.getParam(\"joints\", names)) { names = hw->getNames(); }\n"
+        "    std::vector<unsigned char> buffer(hw->length());\n"
+        "    pub_ = nh.advertise<std_msgs::String>(\"out\", 1);\n"
+        "    return true;\n  }\n"
+        "  ros::Publisher pub_;\n};\n"
+        "int main(int argc, char** argv) {\n"
+        "  ros::init(argc, argv, \"n\");\n  ros::NodeHandle nh;\n"
+        "  Ctl c;\n  c.init(nullptr, nh);\n}\n"))
+    assert [(c.kind, c.name) for c in result.calls] == [("read", "joints"), ("publish", "out")]
+    assert [d.message for d in result.diagnostics if d.code in (
+        "CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL")] == []
+
+
+def test_a_callback_held_in_a_function_object_gives_the_message_type(tmp_path) -> None:
+    """franka_example_controllers (dual_arm_cartesian_impedance_example_controller.cpp:
+    118-123): ``boost::function<void(const geometry_msgs::PoseStamped::ConstPtr&)>
+    callback = boost::bind(...); subscribe_options.init("target", 1, callback);``: the
+    type is the message of the function type the variable holds (it was unknown)."""
+    result = _extract(tmp_path, package_xml("arm", "catkin"), (
+        "#include <ros/ros.h>\n#include <geometry_msgs/PoseStamped.h>\n"
+        "#include <boost/function.hpp>\n#include <boost/bind.hpp>\n#include <functional>\n"
+        "struct Ctl {\n"
+        "  void target(const geometry_msgs::PoseStamped::ConstPtr& m);\n"
+        "  void init(ros::NodeHandle& nh) {\n"
+        "    boost::function<void(const geometry_msgs::PoseStamped::ConstPtr&)> callback =\n"
+        "        boost::bind(&Ctl::target, this, _1);\n"
+        "    ros::SubscribeOptions options;\n"
+        "    options.init(\"target\", 1, callback);\n"
+        "    sub_ = nh.subscribe(options);\n"
+        "    std::function<void(const geometry_msgs::PoseStamped::ConstPtr&)> other =\n"
+        "        [](const geometry_msgs::PoseStamped::ConstPtr&) {};\n"
+        "    sub2_ = nh.subscribe(\"other\", 1, other);\n"
+        "  }\n"
+        "  ros::Subscriber sub_, sub2_;\n};\n"
+        "int main(int argc, char** argv) {\n"
+        "  ros::init(argc, argv, \"arm\");\n  ros::NodeHandle nh;\n  Ctl c;\n  c.init(nh);\n}\n"))
+    assert [(c.kind, c.name, c.type) for c in result.calls] == [
+        ("subscribe", "target", "geometry_msgs/PoseStamped"),
+        ("subscribe", "other", "geometry_msgs/PoseStamped")]

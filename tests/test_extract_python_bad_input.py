@@ -124,3 +124,14 @@ def test_helper_fan_out_is_bounded_by_the_evaluation_budget(write_tree, monkeypa
     assert [c.name for c in result.calls][:1] == ["/before"]
     assert "PY_TOO_COMPLEX" in codes(result)
     assert any("evaluation steps" in d.message for d in result.diagnostics)
+
+
+def test_byte_order_mark_is_not_text(write_tree) -> None:
+    """Python itself skips a UTF-8 byte-order mark at the start of a source file."""
+    folder = write_tree({"pkg/package.xml": package_xml("pkg"), "pkg/scripts/bom.py": ""})
+    (folder / "pkg" / "scripts" / "bom.py").write_bytes(
+        b"\xef\xbb\xbfimport rospy\nfrom std_msgs.msg import String\n"
+        b"rospy.Publisher('ok', String, queue_size=1)\n")
+    result = run(folder, "bom.py")
+    assert [c.name for c in result.calls] == ["ok"]
+    assert codes(result) == []

@@ -63,7 +63,7 @@ def test_nested_loops(tmp_path) -> None:
 
 def test_long_or_unknown_sequences_keep_unknown(tmp_path) -> None:
     result = run(tmp_path,
-                 "        for i in range(33):\n"
+                 "        for i in range(257):\n"
                  "            self.create_publisher(Image, f'big{i}', 10)\n"
                  "        for t in self.get_topics():\n"
                  "            self.create_publisher(Image, t + '/out', 10)\n"
@@ -90,3 +90,20 @@ def test_loop_variable_is_unknown_after_the_loop(tmp_path) -> None:
                  "            pass\n"
                  "        self.create_publisher(Image, side, 10)\n")
     assert [n for n, _ in names(result)] == ["?"]
+
+
+def test_a_long_sequence_is_unrolled_in_no_other_unrolled_loop(tmp_path) -> None:
+    """mir_driver's mir_bridge.py (noetic): ``for pub_topic in PUB_TOPICS:
+    PublisherWrapper(pub_topic, ...)`` over 65 ``TopicConfig`` entries, each making a
+    publisher; past ``MAX_UNROLL`` (32) it was one publisher named '?'. A loop inside no
+    other unrolled loop costs its items only: unrolled up to ``MAX_UNROLL_OUTER``; in
+    an unrolled loop a long one is walked once, as before."""
+    result = run(tmp_path,
+                 "        topics = [f'topic{i}' for i in range(40)]\n"
+                 "        for t in topics:\n"
+                 "            self.create_publisher(Image, t, 10)\n"
+                 "        for robot in ['r1', 'r2']:\n"
+                 "            for i in range(40):\n"
+                 "                self.create_publisher(Image, f'{robot}/n{i}', 10)\n")
+    got = [n for n, _ in names(result)]
+    assert got == [f"topic{i}" for i in range(40)] + ["r1/n?", "r2/n?"]

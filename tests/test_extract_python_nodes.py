@@ -150,6 +150,29 @@ def test_rospy_own_name_and_namespace_in_names(tmp_path) -> None:
     assert [c.name for c in result.calls] == ["~status", "image", "~x", "~"]
 
 
+def test_rospy_resolve_name_is_the_name_it_resolves(tmp_path) -> None:
+    """franka_example_controllers' move_to_start.py: ``rospy.resolve_name('~x')`` gives
+    the name rospy resolves (and remaps) as a publisher's or a client's own name would
+    be: the name as written, which the graph resolves; it was unknown ('?'), the action
+    client, parameter and subscription of the script lost."""
+    result = run(tmp_path,
+                 "import rospy as ros\nfrom actionlib import SimpleActionClient\n"
+                 "from sensor_msgs.msg import JointState\n"
+                 "from control_msgs.msg import FollowJointTrajectoryAction\n"
+                 "ros.init_node('move_to_start')\n"
+                 "action = ros.resolve_name('~follow_joint_trajectory')\n"
+                 "client = SimpleActionClient(action, FollowJointTrajectoryAction)\n"
+                 "param = ros.resolve_name('~joint_pose')\n"
+                 "pose = ros.get_param(param, None)\n"
+                 "topic = ros.resolve_name('joint_states')\n"
+                 "state = ros.wait_for_message(topic, JointState)\n"
+                 "other = ros.resolve_name('x', 'elsewhere')\n"
+                 "ros.Publisher(other, JointState, queue_size=1)\n")
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("action-client", "~follow_joint_trajectory"), ("read", "~joint_pose"),
+        ("subscribe", "joint_states"), ("publish", "?")]
+
+
 def test_rospy_init_node_on_two_branches(tmp_path) -> None:
     result = run(tmp_path,
                  "import rospy, sys\n"

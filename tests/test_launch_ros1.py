@@ -156,3 +156,81 @@ def test_an_element_is_located_where_its_start_tag_begins(write_tree):
         ("/spawner", 3), ("/one", 7)]
     assert {p.name: p.location.line for p in model.params} == {
         "/text": 6, "/one/rate": 7}
+
+
+def test_an_argument_the_command_line_gives_passed_to_an_include(write_tree):
+    """franka_ros (develop): a top-level file declares ``robot_ip`` / ``robot_ips``
+    without a value, for the command line to give, and hands it to an include, as an
+    ``<arg value="$(arg robot_ips)">`` of the include or through pass_all_args. That is
+    an argument left unset (a warning, once per use), not an argument "not defined here"
+    nor one "the include does not pass" (errors)."""
+    model = load_launch(write_tree, """
+        <launch>
+          <arg name="robot_ip" />
+          <include file="$(dirname)/part.launch" pass_all_args="true" />
+          <include file="$(dirname)/part.launch" ns="two">
+            <arg name="robot_ip" value="$(arg robot_ip)" />
+          </include>
+          <include file="$(dirname)/part.launch" ns="three" />
+        </launch>
+        """, extra={"src/pkg/launch/part.launch": """
+        <launch>
+          <arg name="robot_ip" />
+          <node name="driver" pkg="p" type="d">
+            <param name="ip" value="$(arg robot_ip)" />
+          </node>
+        </launch>
+        """})
+    found = [(d.code, d.location.file, d.location.line) for d in model.diagnostics]
+    assert found == [
+        ("LAUNCH_ARG_UNSET", "pkg/launch/part.launch", 4),
+        ("LAUNCH_ARG_UNSET", "pkg/launch/main.launch", 5),
+        # no value given at all: roslaunch refuses the file even with robot_ip:=...
+        ("LAUNCH_ARG_REQUIRED", "pkg/launch/part.launch", 4)]
+    assert [n.name for n in model.nodes] == ["/driver", "/two/driver", "/three/driver"]
+
+
+def test_pass_all_args_hands_on_what_the_command_line_gives(write_tree):
+    """franka_ros' example controllers: ``roslaunch ... robot_ip:=IP`` on a file that
+    does not declare robot_ip and includes franka_control.launch, which requires it, with
+    pass_all_args: roslaunch passes the command line's arguments on, so the argument is
+    unset in this configuration (a warning), not refused; through a second pass_all_args
+    too, but not through an include without it."""
+    model = load_launch(write_tree, """
+        <launch>
+          <include file="$(dirname)/middle.launch" pass_all_args="true" />
+        </launch>
+        """, extra={"src/pkg/launch/middle.launch": """
+        <launch>
+          <include file="$(dirname)/part.launch" pass_all_args="true" />
+          <include file="$(dirname)/part.launch" ns="two" />
+        </launch>
+        """, "src/pkg/launch/part.launch": """
+        <launch>
+          <arg name="robot_ip" />
+          <node name="driver" pkg="p" type="d" args="$(arg robot_ip)" />
+        </launch>
+        """})
+    found = [(d.code, d.location.file, d.location.line) for d in model.diagnostics]
+    assert found == [("LAUNCH_ARG_UNSET", "pkg/launch/part.launch", 3),
+                     ("LAUNCH_ARG_REQUIRED", "pkg/launch/part.launch", 3)]
+
+
+def test_rosparam_text_an_unset_argument_makes_is_unknown_not_a_scalar(write_tree):
+    """franka_combined_control.launch: ``<rosparam subst_value="True">$(arg
+    robot_ips)</rosparam>``, robot_ips given on the command line as a YAML dictionary.
+    Unset, the text is unknown: it may set anything under the namespace (``/?``), where
+    it was refused as a non-dictionary value (a LAUNCH_YAML error)."""
+    model = load_launch(write_tree, """
+        <launch>
+          <arg name="robot_ips" />
+          <group ns="arm">
+            <rosparam subst_value="true">$(arg robot_ips)</rosparam>
+            <rosparam subst_value="true" param="one">$(arg robot_ips)</rosparam>
+          </group>
+          <rosparam>just text</rosparam>
+        </launch>
+        """)
+    found = [(d.code, d.location.line) for d in model.diagnostics]
+    assert found == [("LAUNCH_ARG_UNSET", 4), ("LAUNCH_ARG_UNSET", 5), ("LAUNCH_YAML", 7)]
+    assert [(p.name, p.value) for p in model.params] == [("/arm/?", None), ("/arm/one", None)]

@@ -312,3 +312,31 @@ def test_names_the_tool_derives_keep_the_form_the_code_wrote():
     (typed,) = [link for link in config.links if link.node.name == "/gazebo"
                 and link.resource.name == "/joint_state_controller/type"]
     assert typed.rosname.given == "joint_state_controller/type"
+
+
+@pytest.mark.parametrize(("ns", "expected"), [
+    ("/", [("/gazebo", "publish", "/bot/joint_states"), ("/gazebo", "publish", "/imu/data"),
+           ("/gazebo", "publish", "/odom"), ("/gazebo", "publish", "/tf"),
+           ("/gazebo", "server", "/default_imu"),
+           ("/gazebo", "subscribe", "/bot/cmd_vel")]),
+    # in a namespace: the diff drive's robotNamespace / keeps its topics out of it (and
+    # of the remaps, which name /sim/joint_states); the imu's are in it
+    ("sim", [("/sim/gazebo", "publish", "/joint_states"), ("/sim/gazebo", "publish", "/odom"),
+             ("/sim/gazebo", "publish", "/sim/imu/data"), ("/sim/gazebo", "publish", "/tf"),
+             ("/sim/gazebo", "server", "/default_imu"),
+             ("/sim/gazebo", "subscribe", "/cmd_vel")]),
+])
+def test_gazebo_from_an_unread_gazebo_ros_launch_file_takes_the_remaps_around_it(
+        ns: str, expected: list[tuple[str, str, str]]):
+    """mir_gazebo (noetic): ``<remap from="joint_states" to="mir/joint_states"/>`` around
+    ``<include file="$(find gazebo_ros)/launch/empty_world.launch">``, gazebo_ros not
+    found. The gazebo node that file starts takes those remaps and the include's
+    namespace; the stand-in /gazebo took neither, so it published /joint_states beside
+    joint_state_publisher, a false multiple-publishers."""
+    config = configuration(ROS1, "bot_gazebo/launch/world.launch", {"BOT_CAMERA": "0"},
+                           ns=ns)
+    gazebo = expected[0][0]
+    assert [n.name for n in config.nodes if n.origin == "description"] == [gazebo]
+    assert [(n, kind, name) for n, kind, name, _ in made(config)] == expected
+    assert ("GAZEBO_NOT_STARTED", gazebo) in {
+        (d.code, d.message.rsplit(" ", 1)[-1]) for d in config.diagnostics}

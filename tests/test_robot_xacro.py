@@ -224,6 +224,24 @@ def test_load_yaml_reads_a_workspace_file_with_xacro_angle_tags(tmp_path: Path):
     assert codes(description) == [("ROBOT_DESCRIPTION_XACRO", 2)]
 
 
+def test_load_yaml_keys_read_as_attributes(tmp_path: Path):
+    """franka_description's utils.xacro: ``${inertial.origin.xyz}``, ``${limits.lower}``
+    on what ``xacro.load_yaml`` gives (xacro's YamlDictWrapper reads keys as attributes,
+    nested mappings and those in lists too); each was refused, "attribute 'xyz' is not
+    supported", and the link kept '?'. A key that is not there is xacro's error."""
+    write(tmp_path, "inertial.yaml",
+          "link1:\n  origin: {xyz: 1 2 3}\n  mass: 2.5\nlinks: [{name: a}]\n")
+    description = tmp_expand(
+        tmp_path, '<xacro:property name="i" value="${xacro.load_yaml(\'inertial.yaml\')}"/>'
+                  '<xacro:property name="l" value="${i[\'link1\']}"/>'
+                  '<o xyz="${l.origin.xyz}" m="${l.mass}" n="${i.links[0].name}"/>\n'
+                  '<p v="${l.nothing}"/>')
+    o = description.root.find("o")
+    assert (o.get("xyz"), o.get("m"), o.get("n")) == ("1 2 3", "2.5", "a")
+    assert description.root.find("p").get("v") == "?"
+    assert codes(description) == [("ROBOT_DESCRIPTION_XACRO", 2)]
+
+
 def test_macro_arguments_are_read_as_numbers_as_xacro_does(tmp_path: Path):
     description = tmp_expand(tmp_path, '<xacro:macro name="w" params="reflect s:=2.5">'
                                        '<a v="${reflect * 3}" s="${s * 2}"/></xacro:macro>'

@@ -43,11 +43,17 @@ from . import operations as ops
 from . import syntax
 from .operations import BUILTINS, MATH, Limits, Refused
 
-__all__ = ["BUILTINS", "MATH", "Limits", "Unknown", "Walker", "evaluate", "evaluate_counted",
-           "evaluate_node", "is_unknown", "names_from"]
+__all__ = ["BUILTINS", "MATH", "KeyAttributes", "Limits", "Unknown", "Walker", "evaluate",
+           "evaluate_counted", "evaluate_node", "is_unknown", "names_from"]
 
 def is_unknown(value: object) -> bool:
     return isinstance(value, Unknown)
+
+
+class KeyAttributes(dict):
+    """A mapping whose keys read as attributes too, ``d.origin`` for ``d["origin"]``
+    where no method of dict has the name: what xacro's ``load_yaml`` gives (its
+    YamlDictWrapper). A name that is no key is an error, as it is there."""
 
 
 class _Stop(Exception):
@@ -297,11 +303,26 @@ class _Interpreter(Walker):
             raise _Stop(Unknown(f"name '{name}' is not defined", "undefined")) from None
 
     def eval_Attribute(self, node: ast.Attribute, env: Any = None) -> Any:
-        """A dotted name of the caller's table (``math.pi``); no other attribute."""
+        """A dotted name of the caller's table (``math.pi``), or a key of a
+        ``KeyAttributes`` mapping read as an attribute; no other attribute."""
         dotted = _dotted(node)
-        if not self.is_function(dotted) or node.attr.startswith("_"):
-            raise _Stop(Unknown(f"attribute '{node.attr}' is not supported", "unsupported"))
-        return self.named(str(dotted))
+        unsupported = _Stop(Unknown(f"attribute '{node.attr}' is not supported",
+                                    "unsupported"))
+        if node.attr.startswith("_"):
+            raise unsupported
+        if self.is_function(dotted):
+            return self.named(str(dotted))
+        try:
+            owner = self.eval(node.value)
+        except _Stop:
+            raise unsupported from None
+        if isinstance(owner, KeyAttributes) and not hasattr(dict, node.attr):
+            if node.attr in owner:
+                return owner[node.attr]
+            raise _Stop(Unknown(f"no such key: '{node.attr}'", "error"))
+        if isinstance(owner, Unknown):
+            raise _Stop(owner)  # what it would be read from is not known
+        raise unsupported
 
     # -- containers ----------------------------------------------------------------------
     def item(self, node: ast.AST) -> Any:

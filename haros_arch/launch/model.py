@@ -97,6 +97,19 @@ class ParamDecl:
 
 
 @dataclass
+class UnreadInclude:
+    """A ROS 1 ``<include>`` whose file is not known statically (its package is not
+    found): what it would start would be in this namespace and take these remaps (the
+    Gazebo a ``$(find gazebo_ros)`` launch file starts, ``robot.attach``)."""
+
+    file: str  # as written
+    namespace: str
+    remaps: list[tuple[str, str]]
+    conditions: tuple[Condition, ...] = ()
+    location: Location = NOWHERE
+
+
+@dataclass
 class LaunchModel:
     files: list[str] = field(default_factory=list)  # every file read, includes too
     nodes: list[NodeDecl] = field(default_factory=list)
@@ -120,6 +133,7 @@ class LaunchModel:
     # (and, per configuration, the values it gives the launch arguments: they come
     # from its command line too)
     environment_values: list[str] = field(default_factory=list)
+    unread_includes: list[UnreadInclude] = field(default_factory=list)
 
 
 def without_tests(model: LaunchModel) -> LaunchModel:

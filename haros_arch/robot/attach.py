@@ -23,6 +23,7 @@ of the description that cannot be known. The description as read is kept in
 from __future__ import annotations
 
 import os
+import re
 import shlex
 from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass
@@ -148,7 +149,7 @@ def _spawned(spawn: Spawn, started: Sequence[tuple[NodeDecl, NodeInstance]],
     if (decl.package, decl.executable) in GZ_SPAWNERS:
         _gz(spawn, launch, workspace, config, params, managers)
         return []
-    host = _host(config, started, decl, spawn.ros_version)
+    host = _host(config, started, decl, spawn.ros_version, launch)
     made = _description(spawn, launch, workspace, config)
     if made is None:
         own_partial(host, f"the robot description spawned at {decl.location.file}:"
@@ -343,22 +344,44 @@ def _note(config: Configuration, where: Location, detail: str) -> None:
 
 # -- the gazebo node --------------------------------------------------------------------
 def _host(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance]],
-          spawner: NodeDecl, ros_version: int) -> NodeInstance:
+          spawner: NodeDecl, ros_version: int, launch: LaunchModel) -> NodeInstance:
     for decl, instance in started:
         if decl.package == "gazebo_ros" and decl.executable in GAZEBO_EXECUTABLES:
             return instance
+    unread = _unread_gazebo(launch) if ros_version == 1 else None
+    namespace, remaps, conditions = unread if unread is not None else ("/", [], ())
+    name = clean(namespace + GAZEBO_NAME[1:])
     for instance in config.nodes:
-        if instance.name == GAZEBO_NAME and instance.origin == "description":
+        if instance.name == name and instance.origin == "description":
             return instance
-    instance = NodeInstance(GAZEBO_NAME, None, namespace="/", location=spawner.location,
+    instance = NodeInstance(name, None, namespace=namespace, remaps=list(remaps),
+                            conditions=conditions, location=spawner.location,
                             origin="description", ros_version=ros_version)
-    instance.id = f"node:{GAZEBO_NAME}"
-    if any(n.name == GAZEBO_NAME for n in config.nodes):
-        instance.id += f"#{sum(1 for n in config.nodes if n.name == GAZEBO_NAME) + 1}"
+    instance.id = f"node:{name}"
+    if any(n.name == name for n in config.nodes):
+        instance.id += f"#{sum(1 for n in config.nodes if n.name == name) + 1}"
     config.nodes.append(instance)
-    config.diagnostics.append(diag.make("GAZEBO_NOT_STARTED", spawner.location,
-                                        name=GAZEBO_NAME))
+    config.diagnostics.append(diag.make("GAZEBO_NOT_STARTED", spawner.location, name=name))
     return instance
+
+
+_GAZEBO_ROS_FILE = re.compile(r"^\s*\$\(find\s+gazebo_ros\s*\)/")
+
+
+def _unread_gazebo(launch: LaunchModel,
+                   ) -> tuple[str, list[tuple[str, str]], tuple[Condition, ...]] | None:
+    """Where a ROS 1 configuration starts Gazebo through one of gazebo_ros' own launch
+    files (``$(find gazebo_ros)/launch/empty_world.launch``) that was not read, the
+    package not being found: the namespace, remaps and conditions in effect at that
+    include, which its gazebo node (named ``gazebo``, no ``ns`` of its own) takes
+    (mir_gazebo remaps joint_states to mir/joint_states there). None when no such
+    include is there, or several disagree."""
+    found = {(u.namespace, tuple(u.remaps), u.conditions)
+             for u in launch.unread_includes if _GAZEBO_ROS_FILE.match(u.file)}
+    if len(found) != 1:
+        return None
+    namespace, remaps, conditions = found.pop()
+    return namespace, list(remaps), conditions
 
 
 # -- one plugin -------------------------------------------------------------------------

@@ -38,6 +38,7 @@ from lxml import etree
 
 from .. import diagnostics as diag
 from .. import safe_yaml
+from ..evaluate.python import KeyAttributes
 from ..files import read_bytes, read_text
 from ..launch import expression
 from ..manifest import xml_parser
@@ -422,7 +423,7 @@ class _Expander:
             return expression.Unknown(f"{self.workspace.relpath(path)} is not YAML: "
                                       f"{problem}", "error")
         return expression.Unknown(f"{self.workspace.relpath(path)} is empty") \
-            if value is None else value
+            if value is None else _key_attributes(value)
 
     def lookup(self, element: Element, name: str, scope: _Scope) -> Any:
         owner = scope.owner(name)
@@ -739,6 +740,16 @@ _HANDLERS: dict[str, Callable[[_Expander, Element, _Scope, int], list[Element]]]
     "insert_block": _insert_block, "call": _dynamic_call, "element": _named_element,
     "attribute": _attribute,
 }
+
+
+def _key_attributes(value: Any) -> Any:
+    """What xacro's ``load_yaml`` gives: each mapping, nested ones too (in lists as
+    well), reads its keys as attributes (``${inertial.origin.xyz}``)."""
+    if isinstance(value, dict):
+        return KeyAttributes((k, _key_attributes(v)) for k, v in value.items())
+    if isinstance(value, list):
+        return [_key_attributes(v) for v in value]
+    return value
 
 
 class _YamlLoader(yaml.SafeLoader):

@@ -98,6 +98,9 @@ class RosFunction:
     # the call's name is the name argument's then this (a parameter client's remote node
     # + "/get_parameters"); no name argument, or an empty one, is the node's own "~"
     name_suffix: str | None = None
+    # a name written empty makes no call: message_filters::Subscriber(nh, "", q) is a
+    # filter its owner feeds through add(); it subscribes only to a topic not empty
+    empty_is_none: bool = False
     # the same function as ROS 2's library makes the call, where it differs (a class
     # both have, by one name: camera_info_manager's CameraInfoManager)
     ros2: RosFunction | None = None
@@ -107,7 +110,7 @@ NODE_HANDLE = "ros::NodeHandle"
 
 _PARAM_READ = RosFunction("read", type_from=("value",), type_arg=1, out_arg=1)
 _PARAM_READ_DEFAULT = RosFunction(
-    "read", type_from=("value", "template-value"), type_arg=1, out_arg=1, default_arg=2)
+    "read", type_from=("template-value", "value"), type_arg=1, out_arg=1, default_arg=2)
 _PARAM_WRITE = RosFunction("write", type_from=("value",), type_arg=1)
 
 ROSCPP: dict[tuple[str, str], RosFunction] = {
@@ -140,7 +143,7 @@ ROSCPP: dict[tuple[str, str], RosFunction] = {
     ("ros::param", "getCached"): RosFunction(
         "read", type_from=("value",), type_arg=1, out_arg=1, on_handle=False),
     ("ros::param", "param"): RosFunction(
-        "read", type_from=("value", "template-value"), type_arg=1, out_arg=1, default_arg=2,
+        "read", type_from=("template-value", "value"), type_arg=1, out_arg=1, default_arg=2,
         on_handle=False),
     ("ros::param", "has"): RosFunction("read", on_handle=False),
     ("ros::param", "search"): RosFunction("read", on_handle=False, searched=True),
@@ -154,10 +157,11 @@ _CAMERA_INFO_IN: tuple[Sibling, ...] = (
     ("subscribe", "camera_info", "sensor_msgs/CameraInfo"),)
 _TF = "tf2_msgs/TFMessage"
 
-# message_filters::Subscriber(nh, topic, queue) and its subscribe(...) make one subscription
+# message_filters::Subscriber(nh, topic, queue) and its subscribe(...) make one subscription,
+# none on an empty topic (ROS 1 and ROS 2 both test topic.empty())
 _FILTER_SUBSCRIBER = RosFunction(
     "subscribe", type_from=("class",), on_handle=False, handle_arg=0, name_arg=1,
-    queue_arg=2, qos_arg=2)
+    queue_arg=2, qos_arg=2, empty_is_none=True)
 # image_transport::SubscriberFilter, a message_filters source, and its subscribe(...):
 # ROS 1 (it, base_topic, queue_size, hints) subscribes as ImageTransport::subscribe does,
 # ROS 2 (node, base_topic, transport, qos, options) as create_subscription does
@@ -274,6 +278,9 @@ LIBRARIES: dict[tuple[str, str], RosFunction] = {
         "read", fixed_name="~tf_prefix", on_handle=False, searched=True),
     ("tf", "remap"): RosFunction("read", fixed_name="~tf_prefix", on_handle=False,
                                  searched=True),
+    # getPrefixParam(nh) searches tf_prefix from the handle given
+    ("tf", "getPrefixParam"): RosFunction("read", fixed_name="tf_prefix", on_handle=False,
+                                          handle_default="", searched=True),
 }
 
 # rclcpp parameter clients: the services of the remote node they are made for (argument

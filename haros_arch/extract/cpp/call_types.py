@@ -82,8 +82,11 @@ class CallTypes:
                 ctype = cls.type
                 if ctype.get_num_template_arguments() > 0:
                     found = self._message(ctype.get_template_argument_type(0))
-            elif source in ("callback", "service-callback") and function is not None:
-                params = parameters(function)
+            elif source in ("callback", "service-callback") and (
+                function is not None or spec.callback_arg is not None
+            ):
+                params = parameters(function) if function is not None else _held_parameters(
+                    args, spec.callback_arg if not spec.optional_handle else None)
                 if source == "service-callback" and len(params) == 3:
                     params = params[1:]  # ROS 2: (request header, request, response)
                 if params:
@@ -106,6 +109,23 @@ class CallTypes:
             if found is not None:
                 return found
         return None
+
+
+def _held_parameters(args: list[Cursor], index: int | None) -> list[Type]:
+    """The parameter types of a callback given as a variable that holds one
+    (``boost::function<void(const M::ConstPtr&)> cb = boost::bind(...);
+    ops.init("topic", 1, cb)``): of the function type its class is instantiated with."""
+    if index is None or index >= len(args):
+        return []
+    held = strip(args[index]).type.get_canonical()
+    if held.kind == TypeKind.LVALUEREFERENCE or held.kind == TypeKind.RVALUEREFERENCE:
+        held = held.get_pointee().get_canonical()
+    if held.get_num_template_arguments() < 1:
+        return []
+    signature = held.get_template_argument_type(0).get_canonical()
+    if signature.kind != TypeKind.FUNCTIONPROTO:
+        return []
+    return list(signature.argument_types())
 
 
 def callee(call: Cursor) -> Cursor:

@@ -623,6 +623,8 @@ class CallFinder:
         if where.name == self.declared:
             if not declared or cls.spelling == synthesis.ANY or cls.spelling.endswith("Ptr"):
                 return None  # ``pkg::NameConstPtr``: a message's pointer, as ROS 1 names it
+            if msg_types.written_type(name, False) is not None:
+                return None  # a message no header declares (``vendor_msgs::Pose``): data
             package = name.split("::", 1)[0]
         elif self.owned(where.name):
             package = self.where(cls).package or ""
@@ -801,6 +803,10 @@ class CallFinder:
                 return
             names = [("", None)] if name_expr is None else self._names(
                 spec, call, name_expr, args, scope)
+            if spec.empty_is_none:
+                names = [(name, source) for name, source in names if name]
+                if not names:
+                    return
             if spec.name_suffix is not None:  # a parameter client: the remote's services
                 names = [(join_name(name or "~", spec.name_suffix), source)
                          for name, source in names]
@@ -836,6 +842,8 @@ class CallFinder:
                 if declared[2] is not None:
                     holds = (declared[1], declared[2])
         has_default, default = self._default(spec, args, scope)
+        if spec.kind in ("read", "declare"):
+            default = _converted(default, ctype)
         program_arg = _program_argument(arg(spec.type_arg), scope) if (
             spec.kind == "write") else None
         status = _status_read(spec, site, len(args) - shift)
@@ -1248,6 +1256,22 @@ def _program_argument(expr: Cursor | None, scope: Scope) -> int | None:
 
 _LITERALS = (CursorKind.CXX_BOOL_LITERAL_EXPR, CursorKind.INTEGER_LITERAL,
              CursorKind.STRING_LITERAL)
+
+
+def _converted(value: object, ptype: str | None) -> object:
+    """A literal default as the call converts it to the type it reads or declares
+    (``param<bool>(name, "false")``: a string literal is a pointer that is not null, so
+    true; ``param<double>(name, 10)``: 10.0); None where C++ has no implicit conversion
+    we can follow (a pointer to a number, a number to std::string)."""
+    if value is None or ptype not in ("bool", "int", "double", "str"):
+        return value
+    if ptype == "bool":
+        return True if isinstance(value, str) else bool(value)
+    if isinstance(value, str):
+        return value if ptype == "str" else None
+    if ptype == "str" or not isinstance(value, (bool, int, float)):
+        return None
+    return float(value) if ptype == "double" else int(value)
 
 
 def _literal(expr: Cursor, scope: Scope) -> object:

@@ -17,6 +17,9 @@ from .modules import Loader, Module, submodule
 from .objects import Frame, ModuleRef, Ref, Seq
 
 MAX_UNROLL = 32  # a for loop over a known sequence is walked once per item, up to this
+# ... and a loop inside no other unrolled loop, up to this: its cost grows with its items
+# only, not with theirs times an outer loop's (mir_bridge's 65 topics, one publisher each)
+MAX_UNROLL_OUTER = 256
 
 
 class EvaluatorBase:
@@ -95,9 +98,10 @@ class Scopes(EvaluatorBase):
             return frame.instance
         return self.lookup(frame.module, name)
 
-    def iteration(self, expr: ast.expr, frame: Frame) -> tuple[object, ...] | None:
+    def iteration(self, expr: ast.expr, frame: Frame,
+                  limit: int = MAX_UNROLL) -> tuple[object, ...] | None:
         """The items a ``for`` loop over ``expr`` takes, when known and at most
-        ``MAX_UNROLL``: a list or tuple, ``range(...)`` of integers, ``enumerate(...)``."""
+        ``limit``: a list or tuple, ``range(...)`` of integers, ``enumerate(...)``."""
         if isinstance(expr, ast.Call) and isinstance(expr.func, ast.Name) \
                 and not expr.keywords and isinstance(self.eval(expr.func, frame), Unknown):
             args = [self.eval(a, frame) for a in expr.args]
@@ -105,13 +109,13 @@ class Scopes(EvaluatorBase):
             if expr.func.id == "range" and 1 <= len(bounds) == len(args) <= 3 \
                     and (len(bounds) < 3 or bounds[2] != 0):
                 steps = range(*bounds)
-                return tuple(steps) if len(steps) <= MAX_UNROLL else None
+                return tuple(steps) if len(steps) <= limit else None
             if expr.func.id == "enumerate" and len(args) == 1 and isinstance(args[0], Seq):
                 items = args[0].items
                 return tuple(Seq((i, item)) for i, item in enumerate(items)) \
-                    if len(items) <= MAX_UNROLL else None
+                    if len(items) <= limit else None
             return None
         value = self.eval(expr, frame)
-        if isinstance(value, Seq) and len(value.items) <= MAX_UNROLL:
+        if isinstance(value, Seq) and len(value.items) <= limit:
             return value.items
         return None

@@ -288,6 +288,10 @@ class Evaluator(Instances, QoSProfiles, Walker):
             return Value.of("~")  # the node's own name: private names resolve to it
         if key == ("rospy", "get_namespace") and not expr.args:
             return Value.unknown(NAMESPACE)  # relative names resolve in it
+        if key == ("rospy", "resolve_name") and len(expr.args) == 1 and not expr.keywords:
+            # the name resolved (and remapped) in the node's namespace, as rospy does to
+            # a publisher's own name: the name as written, which the graph resolves
+            return self.eval(expr.args[0], frame)
         if key == ("rclpy", "AsyncParameterClient"):
             remote = argument(expr, rclpy.PARAMETER_CLIENT)
             return ParameterClient(text_of(self.eval(remote, frame)) if remote is not None

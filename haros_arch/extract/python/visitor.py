@@ -6,8 +6,9 @@ again wherever it is called in the package (``helper('scan')``, ``self.setup()``
 function that is walked at one of its call sites does not count as an entry, so its
 calls carry the caller's values and conditions. Statements are dispatched by node type
 (one method per kind, one fallback), and calls are matched against the API tables.
-A ``for`` loop over a known list, tuple or ``range`` of at most ``MAX_UNROLL`` items is
-walked once per item, so ``for side in ['left', 'right']`` gives one call per side.
+A ``for`` loop over a known list, tuple or ``range`` of at most ``MAX_UNROLL`` items
+(``MAX_UNROLL_OUTER`` for a loop inside no other unrolled one) is walked once per item,
+so ``for side in ['left', 'right']`` gives one call per side.
 """
 
 from __future__ import annotations
@@ -38,6 +39,7 @@ from .objects import (
     plain_value,
     text_of,
 )
+from .scopes import MAX_UNROLL, MAX_UNROLL_OUTER
 from .specials import evaluate, param_name, special_calls
 from .values import MAX_CALL_DEPTH, NAMESPACE, Evaluator, argument, unknown_params
 
@@ -54,6 +56,7 @@ class Walker:
         self.calls: list[PrimitiveCall] = []
         self.diagnostics: list[Diagnostic] = []
         self._limit_reported = False
+        self._unrolled = 0  # unrolled loops the walk is in
         self.rosname: str | None = None
         self.namespace: str | None = None
         self.anonymous = False
@@ -171,11 +174,16 @@ class Walker:
         self._expr(statement.iter, frame, conds)
         text = f"{self._text(frame, statement.target)} in {self._text(frame, statement.iter)}"
         loop = condition("for", text, self._where(frame, statement))
-        items = self.evaluator.iteration(statement.iter, frame)
+        items = self.evaluator.iteration(
+            statement.iter, frame, MAX_UNROLL if self._unrolled else MAX_UNROLL_OUTER)
         # a loop over a known, short sequence is unrolled: one walk of the body per item
-        for item in items if items else (Unknown("loop variable"),):
-            self.evaluator.bind(statement.target, item, frame)
-            self._block(statement.body, frame, (*conds, loop))
+        self._unrolled += 1 if items else 0
+        try:
+            for item in items if items else (Unknown("loop variable"),):
+                self.evaluator.bind(statement.target, item, frame)
+                self._block(statement.body, frame, (*conds, loop))
+        finally:
+            self._unrolled -= 1 if items else 0
         if items:  # after the loop its variable is unknown to the rest of the walk
             self.evaluator.bind(statement.target, Unknown("loop variable"), frame)
         self._block(statement.orelse, frame, conds)

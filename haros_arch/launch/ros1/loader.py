@@ -25,7 +25,7 @@ from ...model.location import Location
 from ...model.rosname import is_legal_name
 from ...model.values import Value
 from ...workspace import Workspace
-from ..model import LaunchModel, NodeDecl, RecordedEnvironment
+from ..model import LaunchModel, NodeDecl, RecordedEnvironment, UnreadInclude
 from ..tree import MAX_SKIPPED, node_items, param_names, ros1_condition
 from . import tags_params
 from .scope import Scope, canonical, global_ns
@@ -103,8 +103,12 @@ class Ros1Loader:
             self.model.package_uses.append(PackageUse(name, self.where(scope, element)))
             return self.workspace.find(name)
 
+        def declared(name: str) -> bool:
+            return name in scope.arg_names or (
+                scope.include_args is not None and name in scope.outer_arg_names)
+
         ctx = Context(scope.args, self.environment, find, scope.filename,
-                      scope.anon, lambda name: name in scope.arg_names)
+                      scope.anon, declared)
         try:
             result = substitute(raw, ctx)
         except ArgUndefined as err:
@@ -118,7 +122,7 @@ class Ros1Loader:
             self.fail(scope, element, f"\"{raw}\": {err}")
             return Value.unknown(raw)
         for name in dict.fromkeys(ctx.unset):
-            if scope.in_include:
+            if scope.in_include and not scope.command_line:
                 self.report("LAUNCH_ARG_REQUIRED", scope, element,
                             path=self.workspace.relpath(scope.path), name=name)
             else:
@@ -507,6 +511,10 @@ class Ros1Loader:
                         detail=f"include file \"{element.get('file')}\" is not known statically")
             scope.item.add(LaunchItem("include", element.get("file", ""), where,
                                       condition=guard))
+            ns = self.text(element, "ns", scope)
+            self.model.unread_includes.append(UnreadInclude(
+                element.get("file", ""), scope.child(ns).ns, list(scope.remaps),
+                scope.conditions, where))
             return
         self.include_pattern(element, scope)
         pass_all = self.flag(element, "pass_all_args", scope, False)

@@ -66,6 +66,14 @@ class Scope:
     anon: dict[str, Unknown] = field(default_factory=dict)
     conditions: tuple[Condition, ...] = ()
     in_include: bool = False
+    # while an <include>'s own <arg>s are read: the arguments the including file declares,
+    # which their values may name (``include_args`` is set then)
+    outer_arg_names: tuple[str, ...] = ()
+    # the file gets every argument of the command line: the top-level file, and a file
+    # such a file includes with pass_all_args (roslaunch passes its whole arg_dict, what
+    # the command line gives too); an argument it declares without a value is the
+    # command line's to give (LAUNCH_ARG_UNSET), not one the include forgot to pass
+    command_line: bool = True
     stack: tuple[str, ...] = ()
     # the launch tree's file or group being read (shared by the scopes made from it)
     item: LaunchItem = field(default_factory=lambda: LaunchItem("file", ""))
@@ -83,6 +91,7 @@ class Scope:
 
     def include_child(self, ns: str | None, filename: str) -> Scope:
         inner = self.child(ns)
+        inner.outer_arg_names = tuple(self.arg_names)
         inner.arg_names = []
         inner.filename = filename
         inner.include_args = {}
@@ -94,6 +103,8 @@ class Scope:
         self.arg_names = []
         self.args = dict(passed)
         self.include_args = None
+        self.outer_arg_names = ()
+        self.command_line = self.command_line and self.pass_all_args
         self.anon = {}
         self.in_include = True
         return list(passed)

@@ -158,6 +158,12 @@ def tag_rosparam(loader: Ros1Loader, element: Element, scope: Scope) -> None:
         return
     if data_value is None:
         data_value = {}
+    if isinstance(data_value, str) and MARK in data_value and (
+            not param or canonical(full) == "/"):
+        # text a substitution not known statically makes (``$(arg robot_ips)``): it may
+        # well be the dictionary roslaunch wants; what it sets is not known
+        unseen(loader, full, scope, where)
+        return
     if not param and not isinstance(data_value, dict):
         loader.report("LAUNCH_YAML", scope, element, detail=(
             "'param' attribute must be set for non-dictionary values"))

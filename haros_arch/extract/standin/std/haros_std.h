@@ -324,10 +324,16 @@ public:
   template<class It> vector(It first, It last);
   vector(const vector& v);
   vector(vector&& v);
+  template<class U, class = typename enable_if<__is_base_of(::haros_any, U)>::type>
+  explicit vector(const U& unknown);  // built from a value of an unknown name, as string is
   ~vector();
   vector& operator=(const vector& v);
   vector& operator=(vector&& v);
   vector& operator=(initializer_list<T> items);
+  // a value of the permissive class of unknown names (``names = hw->getNames();``):
+  // without it the three assignments above are equally good and the use ambiguous
+  template<class U, class = typename enable_if<__is_base_of(::haros_any, U)>::type>
+  vector& operator=(const U& unknown);
   T& operator[](size_t i);
   const T& operator[](size_t i) const;
   T& at(size_t i);

@@ -154,5 +154,6 @@ template<class A, class B> void transformStampedTFToMsg(const A& t, B& msg);
 template<class A, class B> void vector3TFToMsg(const A& v, B& msg);
 std::string resolve(const std::string& prefix, const std::string& frame_name);
 std::string remap(const std::string& frame_id);
+std::string getPrefixParam(ros::NodeHandle& nh);
 }  // namespace tf
 #endif
