@@ -61,3 +61,40 @@ def test_a_name_around_a_parameter_value_keeps_its_text(write_tree) -> None:
                   if link.kind in ("client", "subscribe")) == [
         ("client", "/arm/base/clear"), ("client", "/arm/direct"),
         ("subscribe", "/arm/feedback")]
+
+
+MEMBER_NODE = """
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+class Hazards : public rclcpp::Node
+{
+public:
+  Hazards() : rclcpp::Node("hazards")
+  {
+    topic_ =
+      this->declare_parameter("publisher_topic", "hazard_detection");
+    pub_ = create_publisher<std_msgs::msg::String>(topic_, rclcpp::SensorDataQoS());
+    later_ = this->declare_parameter("later_topic", std::string("later"));
+  }
+  void start() { sub_ = create_subscription<std_msgs::msg::String>(later_, 10, cb); }
+  static void cb(const std_msgs::msg::String::SharedPtr) {}
+  std::string topic_, later_;
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+  rclcpp::Subscription<std_msgs::msg::String>::SharedPtr sub_;
+};
+"""
+
+
+def test_a_name_held_by_a_member_the_parameter_was_assigned_to(write_tree) -> None:
+    """``topic_ = declare_parameter("publisher_topic", "x")`` then ``create_publisher(
+    topic_, ..)``, in the constructor or in another method: the name is the parameter's
+    value, as it is through a local variable (create3_sim's hazards_vector_publisher.cpp:18-29
+    and seven more of its nodes named their topics '?')."""
+    root = write_tree({"ex/package.xml": package_xml("ex", "ament_cmake"),
+                       "ex/src/node.cpp": MEMBER_NODE})
+    result = extract_cpp([str(root / "ex" / "src" / "node.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    calls = sorted((c.kind, c.name, c.name_param, c.name_default) for c in result.calls
+                   if c.kind in ("publish", "subscribe"))
+    assert calls == [("publish", "?", "publisher_topic", "hazard_detection"),
+                     ("subscribe", "?", "later_topic", "later")]

@@ -899,7 +899,19 @@ class CallFinder:
                 if spec is not None and spec.out_arg == index and spec.kind in _PARAM_KINDS:
                     return self._parameter(spec, call, scope)
             value = scope.variable(decl)
-            return None if value is None else self._parameter_source(value, scope, depth + 1)
+            # a member, as Scope.string reads it: what this body assigned it before here
+            # (``topic_ = declare_parameter("publisher_topic", "x");`` then
+            # ``create_publisher(topic_, ..)`` in one constructor), else what a constructor
+            # of its class gives it, read in that constructor
+            if value is None and expr.kind == CursorKind.MEMBER_REF_EXPR and (
+                decl.kind == CursorKind.FIELD_DECL
+            ):
+                value = scope.assigned(decl, expr)
+            if value is None:
+                found = scope.field(decl)
+                return None if found is None else self._parameter_source(
+                    found[0], found[1], depth + 1)
+            return self._parameter_source(value, scope, depth + 1)
         if expr.kind != CursorKind.CALL_EXPR:
             return None
         spec, _ = self._row(expr)
