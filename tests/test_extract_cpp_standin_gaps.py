@@ -132,3 +132,14 @@ int main(int argc, char ** argv) {
     assert _errors(result) == []
     assert [(c.kind, c.name, c.type) for c in result.calls if c.kind == "publish"] == [
         ("publish", "stamp", "std_msgs/msg/Int64")]
+
+
+def test_ros2_parameter_callbacks_chrono_and_spin(write_tree) -> None:
+    """teleop_twist_joy's parameter callback (get_value<rclcpp::PARAMETER_INTEGER>()) and
+    main (rclcpp::spin of a unique_ptr), create3_sim's constexpr control period, its
+    callback registered on the parameters interface and Duration::max(), ros2/demos'
+    ``time_left < wait_period ? time_left : wait_period``: each was a clang error in a
+    function that calls the ROS API, and the node partial."""
+    result = _extract(write_tree, _source("ros2_params_chrono.cpp"), "ament_cmake")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "cmd")]
