@@ -375,6 +375,14 @@ class Runner:
                         detail=f"parameter file {path} is not known statically")
             return None
         file = share_source(self.workspace, path.literal)
+        if not os.path.lexists(file):
+            # said where the launch file gives it (not at a file that is not there):
+            # launch_ros warns "Parameter file path is not a file" and starts the node
+            # without it; a build step may make it, so what it would set stays unknown
+            self.report("LAUNCH_PARAM_FILE", where, detail=(
+                f"parameter file {self.workspace.relpath(file)} does not exist; "
+                "ros2 launch starts the node without it (with a warning)"))
+            return None
         text, found = read_text(file, self.workspace.location(file), MAX_PARAM_FILE)
         self.model.diagnostics.extend(found)
         if text is None:
