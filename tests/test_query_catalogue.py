@@ -413,3 +413,18 @@ def test_a_name_not_known_statically_is_no_qos_incompatibility():
         assert run_catalogue(configuration({"links": links(name)}), None, [rule]) == []
     assert [f.rule for f in run_catalogue(configuration({"links": links("/scan")}), None,
                                           [rule])] == ["qos-incompatible"]
+
+
+def test_a_finding_about_a_topic_points_at_a_publisher():
+    """multiple-publishers reports a topic: its place is a publisher's, not that of the
+    topic's first link when that is a subscriber (create3_sim: /dock_status, published
+    twice, was shown at docking_behavior.cpp:27, a subscription)."""
+    model = configuration({"links": [
+        {"kind": "subscribe", "node": "/user", "name": "/dock", "type": "std_msgs/msg/String",
+         "location": {"file": "user.cpp", "line": 27}},
+        {"kind": "publish", "node": "/a", "name": "/dock", "type": "std_msgs/msg/String",
+         "location": {"file": "a.cpp", "line": 5}},
+        {"kind": "publish", "node": "/b", "name": "/dock", "type": "std_msgs/msg/String",
+         "location": {"file": "b.cpp", "line": 9}}]})
+    [found] = run_catalogue(model, None, [RULES["multiple-publishers"]])
+    assert (found.location.file, found.location.line) == ("a.cpp", 5)
