@@ -98,3 +98,92 @@ def test_a_name_held_by_a_member_the_parameter_was_assigned_to(write_tree) -> No
                    if c.kind in ("publish", "subscribe"))
     assert calls == [("publish", "?", "publisher_topic", "hazard_detection"),
                      ("subscribe", "?", "later_topic", "later")]
+
+
+LOOP_NODE = """
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+class Hazards : public rclcpp::Node
+{
+public:
+  Hazards() : rclcpp::Node("hazards")
+  {
+    topics_ = this->declare_parameter("subscription_topics", std::vector<std::string>());
+    for (std::string topic : topics_) {
+      subs_.push_back(create_subscription<std_msgs::msg::String>(topic, 10, cb));
+    }
+    auto outs = this->declare_parameter("publish_topics", std::vector<std::string>());
+    for (const std::string & out : outs) {
+      for (const std::string & side : sides_) {
+        if (out.find(side) != std::string::npos) {
+          pubs_.push_back(create_publisher<std_msgs::msg::String>(out, 10));
+        }
+      }
+    }
+  }
+  static void cb(const std_msgs::msg::String::SharedPtr) {}
+  std::vector<std::string> topics_;
+  std::vector<std::string> sides_{"left", "right"};
+  std::vector<rclcpp::Subscription<std_msgs::msg::String>::SharedPtr> subs_;
+  std::vector<rclcpp::Publisher<std_msgs::msg::String>::SharedPtr> pubs_;
+};
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<Hazards>());
+}
+"""
+
+LOOP_LAUNCH = """
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package='ex', executable='hazards', name='hazards',
+             parameters=[{'subscription_topics': ['bumper', '/cliff/left']}]),
+    ])
+"""
+
+
+def test_a_call_in_a_loop_over_a_list_parameter_is_one_call_per_element(write_tree) -> None:
+    """``for (std::string topic : topics_) create_subscription(topic, ..)`` with
+    ``topics_`` a list parameter: one subscription per element the configuration gives
+    the list (create3_sim's hazards_vector_publisher.cpp:51-58 subscribes its eight
+    hazard topics so, its sensors_node its cliff and IR topics: all were '?'); the loop is
+    then no condition of each. A list the configuration does not set keeps the one call,
+    named '?', under its loop ("for each")."""
+    import os
+
+    from haros_arch.pipeline import Options, analyse
+    from haros_arch.project import load
+
+    root = write_tree({
+        "src/ex/package.xml": package_xml("ex", "ament_cmake"),
+        "src/ex/CMakeLists.txt": "cmake_minimum_required(VERSION 3.8)\nproject(ex)\n"
+                                 "add_executable(hazards src/node.cpp)\n",
+        "src/ex/src/node.cpp": LOOP_NODE,
+        "src/ex/launch/ex.launch.py": LOOP_LAUNCH,
+        "project.yaml": "project: p\nconfigurations:\n  c: [ex/launch/ex.launch.py]\n"})
+    result = extract_cpp([str(root / "src/ex/src/node.cpp")], scan([str(root / "src")]),
+                         cache_dir=None)
+    made = [(c.kind, c.name, c.name_param, c.name_each, [str(x) for x in c.conditions])
+            for c in result.calls if c.kind in ("publish", "subscribe")]
+    assert made == [
+        ("subscribe", "?", "subscription_topics", ".",
+         ["for each (std::string topic : topics_)"]),
+        ("publish", "?", "publish_topics", ".",
+         ["for each (const std::string & out : outs)",
+          "for (const std::string & side : sides_)",
+          "if (out.find(side) != std::string::npos)"])]
+    model = analyse(load(str(root / "project.yaml")), {"PATH": os.environ.get("PATH", "")},
+                    Options(cache_dir=None))
+    links = sorted((link.kind, link.rosname.full, tuple(str(c) for c in link.conditions))
+                   for link in model.configuration("c").links
+                   if link.kind in ("publish", "subscribe"))
+    assert links == [
+        ("publish", "/?", ("for each (const std::string & out : outs)",
+                           "for (const std::string & side : sides_)",
+                           "if (out.find(side) != std::string::npos)")),
+        ("subscribe", "/bumper", ()), ("subscribe", "/cliff/left", ())]

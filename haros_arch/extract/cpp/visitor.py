@@ -21,9 +21,10 @@ from clang.cindex import Cursor, CursorKind, StorageClass, TranslationUnit, Type
 
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
-from ...model.conditions import Condition
+from ...model.conditions import EACH_STATEMENT, Condition
 from ...model.location import Location
 from ...model.source import PrimitiveCall
+from ...model.values import UNKNOWN_MARK
 from . import api, msg_types, parameter_library, reconfigure, synthesis
 from .call_sites import CallSites
 from .call_types import CallTypes, factory_made, row_class
@@ -81,6 +82,11 @@ _API_NAMES = frozenset(
     [name for _, name in [*api.ALL, *api.NODE_NAME, *api.RCLCPP_NODE_NAME, *api.FACTORIES]]
     + [parameter_library.LISTENER])
 MAX_DEPTH = 16
+# where a call's name comes from: the parameter, its default, ``EACH`` when the name is
+# each element of that list parameter in turn (PrimitiveCall.name_each), and then the
+# (line, column) of the range-based for that walks it
+NameSource = tuple[str, str | None, str | None, tuple[int, int] | None]
+EACH = "."
 # builtin types a variable of static storage starts as zero of (C++'s zero-initialisation)
 _ZEROED: dict[TypeKind, object] = {
     TypeKind.BOOL: False, TypeKind.INT: 0, TypeKind.UINT: 0, TypeKind.LONG: 0,
@@ -653,7 +659,7 @@ class CallFinder:
         target = site.referenced
         location = self.where(site if target is not None and (
             target.kind == CursorKind.CONSTRUCTOR) else callee)
-        names: list[tuple[str, tuple[str, str | None] | None]]
+        names: list[tuple[str, NameSource | None]]
         namespace: str | None = None
         if spec.fixed_name is not None:
             if spec.handle_default is not None:  # relative to the handle given
@@ -727,6 +733,12 @@ class CallFinder:
         # handle's namespace (graph.build._handle_name): the prefix is the call's
         prefix = scope.names_prefix(base) if not self.ros2 and base is not None else None
         for written, source in names:
+            if source is not None and source[3] is not None:
+                # the loop over the list: one call per element, each made by that
+                # element's turn (the graph drops it where it knows the elements)
+                conditions = tuple(dataclasses.replace(c, statement=EACH_STATEMENT) if (
+                    c.statement == "for" and (c.location.line, c.location.column) == source[3]
+                ) else c for c in conditions)
             # getName() is "~": only as the start of a name is it the node's own name
             name = _private(written[:1] + written[1:].replace("~", "?"))
             handle_namespace = None
@@ -744,6 +756,7 @@ class CallFinder:
                 location=location,
                 name_param=source[0] if source else None,
                 name_default=source[1] if source else None,
+                name_each=source[2] if source else None,
                 has_default=has_default, default=default,
                 searched=spec.searched, handle_namespace=handle_namespace,
                 deletes=spec.deletes, node_name=owner, transport=transport,
@@ -850,9 +863,10 @@ class CallFinder:
                     "CPP_DYNAMIC_NAME", location, kind="declare", name=full))
 
     def _names(self, spec: api.RosFunction, call: Cursor, expr: Cursor, args: list[Cursor],
-               scope: Scope) -> list[tuple[str, tuple[str, str | None] | None]]:
+               scope: Scope) -> list[tuple[str, NameSource | None]]:
         """The names a call gives (several for set_parameters({...})), each with the
-        parameter its value comes from, if any."""
+        parameter its value comes from, if any: (parameter, its default, and ``.`` when
+        the name is each element of that list parameter in turn)."""
         if spec.per_element:
             if call.spelling in ("declare_parameters", "get_parameters") and len(args) >= 2:
                 prefix = render(scope.string(expr))
@@ -860,7 +874,7 @@ class CallFinder:
             return [self._name(e, scope) for e in _elements(expr)]
         return [self._name(expr, scope)]
 
-    def _name(self, expr: Cursor, scope: Scope) -> tuple[str, tuple[str, str | None] | None]:
+    def _name(self, expr: Cursor, scope: Scope) -> tuple[str, NameSource | None]:
         inner = strip(expr)
         target = inner.referenced if inner.kind == CursorKind.CALL_EXPR else None
         if target is not None and target.kind == CursorKind.CONSTRUCTOR and (
@@ -870,6 +884,16 @@ class CallFinder:
             return (render(scope.string(values[0])) if values else "?", None)
         parts = scope.string(expr)
         name = render(parts)
+        loop = inner.referenced if inner.kind == CursorKind.DECL_REF_EXPR else None
+        walk = scope.range_of(loop) if loop is not None and name == UNKNOWN_MARK else None
+        if walk is not None:
+            # ``for (std::string topic : topics_) create_subscription(topic, ..)`` over a
+            # list parameter (create3_sim's hazards_vector_publisher): one call per
+            # element of the value the configuration gives it (graph.element_calls)
+            over = list(walk.get_children())[1]
+            listed = self._parameter_source(over, scope, 0)
+            at = (walk.location.line, walk.location.column)
+            return (name, (listed[0], None, EACH, at) if listed is not None else None)
         if None in parts and name.count("?") == 1:
             # the one unknown part: the whole name, or a run of it that the text around
             # keeps (``"/" + robot_name + "/base_feedback"``; a wrapper's ``before`` and
@@ -879,7 +903,7 @@ class CallFinder:
             if len(unknown) == 1:
                 source = self._parameter_source(unknown[0], scope, 0)
             if source is not None:
-                return (name, source)
+                return (name, (*source, None, None))
         return (name, None)
 
     def _parameter_source(self, expr: Cursor, scope: Scope,
