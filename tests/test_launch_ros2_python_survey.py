@@ -573,3 +573,38 @@ def test_xml_executable_of_ros2_launch_runs_that_launch_file(write_tree):
     assert [n.name for n in model.nodes] == ["/r2/driver"]
     assert [(d.code, d.location.line) for d in model.diagnostics] == [
         ("LAUNCH_FILE_MISSING", 4)]
+
+
+def test_a_command_line_in_one_word_with_shell_is_split_as_the_shell_does(write_tree):
+    """``ExecuteProcess(cmd=['ros2 launch pkg child.launch.py robot:=r3'], shell=True)``:
+    launch joins the words and the shell splits the line; without shell=True the one
+    word is a program of that name (no node)."""
+    child = """
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('robot', default_value='own'),
+        Node(package='pkg', executable='driver', name='driver',
+             namespace=LaunchConfiguration('robot')),
+    ])
+"""
+    model, _ = run(write_tree, """
+from launch.actions import ExecuteProcess
+
+def generate_launch_description():
+    who = LaunchConfiguration('who', default='r4')
+    return LaunchDescription([
+        ExecuteProcess(cmd=['ros2 launch pkg child.launch.py robot:=r3'], shell=True),
+        ExecuteProcess(cmd=['ros2 run demo_nodes_cpp talker --ros-args -r',
+                            ['__node:=', who]], shell=True),
+        ExecuteProcess(cmd=['ros2 run demo_nodes_cpp listener']),
+    ])
+""", extra={"src/pkg/launch/child.launch.py": child})
+    assert [n.name for n in model.nodes] == ["/r3/driver", "/r4"]
+    assert [d.message for d in model.diagnostics if d.code == "LAUNCH_PROCESS"] == [
+        "process ros2 run demo_nodes_cpp listener started here is no node the reader "
+        "can name"]
