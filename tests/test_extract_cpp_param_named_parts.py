@@ -187,3 +187,41 @@ def test_a_call_in_a_loop_over_a_list_parameter_is_one_call_per_element(write_tr
                            "for (const std::string & side : sides_)",
                            "if (out.find(side) != std::string::npos)")),
         ("subscribe", "/bumper", ()), ("subscribe", "/cliff/left", ())]
+
+
+MAP_NODE = """
+#include <map>
+#include <rclcpp/rclcpp.hpp>
+class Teleop : public rclcpp::Node
+{
+public:
+  Teleop() : rclcpp::Node("teleop")
+  {
+    std::map<std::string, int64_t> default_linear_map{
+      {"x", 5L},
+      {"y", -1L},
+    };
+    this->declare_parameters("axis_linear", default_linear_map);
+    this->get_parameters("axis_linear", linear_);
+    std::map<std::string, double> changed{{"a", 1.0}};
+    changed["b"] = 2.0;
+    this->declare_parameters("changed", changed);
+  }
+  std::map<std::string, int64_t> linear_;
+};
+"""
+
+
+def test_declare_parameters_of_a_local_map_declares_its_keys(write_tree) -> None:
+    """teleop_twist_joy.cpp:89-94: ``declare_parameters("axis_linear", m)`` with ``m`` a
+    local map initialised with string keys declares ``axis_linear.x`` ... each with the
+    map's value as its default; it was ``axis_linear.?`` (5 settings of its launch files
+    undecided). A map the body also changes keeps '?'; ``get_parameters(prefix, out)``
+    reads whatever is declared under the prefix: '?'."""
+    root = write_tree({"ex/package.xml": package_xml("ex", "ament_cmake"),
+                       "ex/src/node.cpp": MAP_NODE})
+    result = extract_cpp([str(root / "ex" / "src" / "node.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    assert [(c.kind, c.name, c.has_default) for c in result.calls] == [
+        ("declare", "axis_linear.x", True), ("declare", "axis_linear.y", True),
+        ("read", "axis_linear.?", False), ("declare", "changed.?", True)]

@@ -60,10 +60,12 @@ from .values import (
     SEPARATOR,
     Scope,
     initializer,
+    literal,
     render,
     strip,
     written_arguments,
 )
+from .values import _walk as walk_cursors
 from .values import key_of as place_of
 from .wrappers import FACTORY_NAMES, Wrappers, is_constructor, of_class_template
 from .writes import default_constructed, may_write
@@ -870,7 +872,12 @@ class CallFinder:
         if spec.per_element:
             if call.spelling in ("declare_parameters", "get_parameters") and len(args) >= 2:
                 prefix = render(scope.string(expr))
-                return [((prefix + "." if prefix else "") + "?", None)]
+                given = next((i for i, a in enumerate(args) if a == expr), None)
+                keys = _map_keys(args[given + 1], scope) if (
+                    call.spelling == "declare_parameters" and given is not None
+                    and given + 1 < len(args)) else None
+                return [((prefix + "." if prefix else "") + key, None)
+                        for key in (keys or ["?"])]
             return [self._name(e, scope) for e in _elements(expr)]
         return [self._name(expr, scope)]
 
@@ -1265,6 +1272,35 @@ def _known(parts: tuple[str | None, ...]) -> bool:
 def _private(name: str) -> str:
     """ROS 2's ``~/name`` written the ROS 1 way, ``~name``."""
     return "~" + name[2:] if name.startswith("~/") else name
+
+
+def _map_keys(expr: Cursor, scope: Scope) -> list[str] | None:
+    """The keys of the map given to ``declare_parameters(prefix, map)`` when it is
+    written there, or is a local variable whose initialiser is and that nothing else in
+    the body names, with string literals as keys (``std::map<std::string, int64_t>
+    m{{"x", 5L}, {"y", -1L}};``: teleop_twist_joy's ``axis_linear`` map), else None."""
+    inner = strip(expr)
+    decl = inner.referenced if inner.kind == CursorKind.DECL_REF_EXPR else None
+    value: Cursor | None = expr  # the map written in the call: std::map<..>{{"k", v}}
+    if decl is not None:
+        if decl.kind != CursorKind.VAR_DECL or scope.body is None:
+            return None
+        uses = sum(1 for node in walk_cursors(scope.body)
+                   if node.kind == CursorKind.DECL_REF_EXPR and node.referenced is not None
+                   and node.referenced == decl)
+        value = scope.variable(decl) if uses == 1 else None
+    if value is None:
+        return None
+    keys: list[str] = []
+    for element in _elements(value):
+        parts = [c for c in strip(element).get_children() if c.kind.is_expression()]
+        first = strip(parts[0]) if parts else None
+        key = literal(first.spelling) if first is not None and (
+            first.kind == CursorKind.STRING_LITERAL) else None
+        if key is None or element == value:
+            return None
+        keys.append(key)
+    return keys or None
 
 
 def _elements(expr: Cursor, depth: int = 0) -> list[Cursor]:
