@@ -171,6 +171,10 @@ public:
   Time now();
   rcl_clock_type_t get_clock_type() const;
   bool sleep_for(Duration d);
+  bool sleep_until(Time until);
+  bool wait_until_started();
+  template<class R, class P> bool wait_until_started(const std::chrono::duration<R, P>& timeout);
+  bool started();
 };
 class Rate {
 public:
@@ -586,6 +590,7 @@ using OnSetParametersCallbackHandle = node_interfaces::OnSetParametersCallbackHa
   template<class T> bool get_parameter(const std::string& name, T& value) const; \
   template<class T> bool get_parameter_or(const std::string& name, T& value, \
       const T& alternative) const; \
+  template<class T> T get_parameter_or(const std::string& name, const T& alternative) const; \
   std::vector<rclcpp::Parameter> get_parameters(const std::vector<std::string>& names) const; \
   template<class T> bool get_parameters(const std::string& prefix, \
       std::map<std::string, T>& values) const; \
