@@ -428,3 +428,21 @@ def test_a_finding_about_a_topic_points_at_a_publisher():
          "location": {"file": "b.cpp", "line": 9}}]})
     [found] = run_catalogue(model, None, [RULES["multiple-publishers"]])
     assert (found.location.file, found.location.line) == ("a.cpp", 5)
+
+
+def test_two_instances_of_one_name_are_counted_in_a_message():
+    """create3_sim includes one launch file twice: two /sensors_node publish
+    /dock_status, and multiple-publishers said "/dock_status is published by
+    /sensors_node", one name, as if one node published it."""
+    model = configuration({
+        "nodes": [{"name": "/sensors", "node": "k/sensors", "id": "node:/sensors"},
+                  {"name": "/sensors", "node": "k/sensors", "id": "node:/sensors#2"}],
+        "links": [
+            {"kind": "publish", "node": "/sensors", "node_id": "node:/sensors",
+             "name": "/dock", "type": "std_msgs/msg/String",
+             "location": {"file": "a.cpp", "line": 5}},
+            {"kind": "publish", "node": "/sensors", "node_id": "node:/sensors#2",
+             "name": "/dock", "type": "std_msgs/msg/String",
+             "location": {"file": "a.cpp", "line": 5}}]})
+    [found] = run_catalogue(model, None, [RULES["multiple-publishers"]])
+    assert found.message == "/dock is published by /sensors (2 instances)"
