@@ -267,3 +267,32 @@ def generate_launch_description():
         == [("LAUNCH_PARAM_FILE", "warning", "p/launch/a.launch.py", 10)]
     assert "p/config/missing.yaml does not exist" in model.diagnostics[0].message
     assert params_of(model, "/n")["rate"] == 5
+
+
+def test_a_parameter_file_outside_the_workspace_is_not_read(write_tree) -> None:
+    """A ROS 2 parameter file is read only inside the workspace and the installed
+    packages, as a ROS 1 ``<rosparam file>`` and ``$(file-content)`` are: it was read
+    from anywhere (clearpath_common's /etc/clearpath/platform/config/control.yaml was an
+    error for not being there; any file that is there was read into the model)."""
+    from conftest import package_xml
+
+    root = write_tree({
+        "src/p/package.xml": package_xml("p", "ament_cmake"),
+        "outside.yaml": "/**:\n  ros__parameters:\n    secret: 42\n",
+        "src/p/launch/a.launch.py": """from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package='p', executable='e', name='n', parameters=['PLACE/outside.yaml']),
+    ])
+"""})
+    launch = root / "src/p/launch/a.launch.py"
+    launch.write_text(launch.read_text().replace("PLACE", str(root)))
+    workspace = scan([str(root / "src")], {})
+    model = load(str(launch), workspace, {}, {})
+    assert "secret" not in params_of(model, "/n")
+    assert [(d.code, d.location.line) for d in model.diagnostics] == [
+        ("LAUNCH_UNKNOWN_VALUE", 7)]
+    assert "outside the workspace" in model.diagnostics[0].message

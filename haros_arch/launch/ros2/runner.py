@@ -472,6 +472,14 @@ class Runner:
                         detail=f"parameter file {path} is not known statically")
             return None
         file = share_source(self.workspace, path.literal)
+        if not self.workspace.readable(file, self.environment):
+            # as a ROS 1 <rosparam file> and $(file-content): only the workspace's and the
+            # installed packages' files are read (Clearpath's /etc/clearpath/... files
+            # are made on the robot); what it would set stays unknown
+            self.report("LAUNCH_UNKNOWN_VALUE", where, detail=(
+                f"parameter file {file} is outside the workspace and installed packages; "
+                "it is not read"))
+            return None
         if not os.path.lexists(file):
             # said where the launch file gives it (not at a file that is not there):
             # launch_ros warns "Parameter file path is not a file" and starts the node
