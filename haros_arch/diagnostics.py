@@ -311,6 +311,20 @@ CATALOGUE: dict[str, Entry] = {
         "handle), and that class's constructor is defined in a source of the other "
         "package: the ROS calls it makes on the node are not read. The node is "
         "'partial', so checks that claim something is absent do not decide on it."),
+    "CPP_CLASS_UNSEEN": Entry(
+        "info", "{cls} of ROS package {package} is built here and its code is not read",
+        "A ROS 1 node builds an object of a class of another ROS package (one that "
+        "depends on roscpp, or a dependency of the node's package whose headers are "
+        "missing) whose constructor's code the extraction does not have. In ROS 1 any "
+        "code can make its own NodeHandle, so such a class may read parameters and make "
+        "topics and services under the names it is given (costmap_2d's Costmap2DROS, a "
+        "local planner) without being handed the node. The node is 'partial', so checks "
+        "that claim something is absent do not decide on it. Classes whose API the "
+        "extractor models (tf, image_transport, actionlib, message_filters, ...) do not "
+        "count, nor a class whose members a source of the node defines (a library it links: "
+        "then this is not said). ROS 2 code "
+        "communicates only through a node it is given (CPP_NODE_PASSED, "
+        "CPP_NODE_TO_UNKNOWN)."),
     "CPP_NODE_TO_UNKNOWN": Entry(
         "info", "the node ({given}) is given to {name}, which the parse does not know",
         "A call passes the node (or its handle or an interface of it) to a function or "

@@ -9,7 +9,9 @@ target briefly; ``scripts/fuzz SECONDS`` runs each longer and prints executions 
 
 from __future__ import annotations
 
+import atexit
 import json
+import shutil
 import signal
 import tempfile
 import time
@@ -124,6 +126,7 @@ class _Workspace:
         from haros_arch.workspace import scan
 
         self.root = Path(tempfile.mkdtemp(prefix="haros-arch-fuzz-"))
+        atexit.register(shutil.rmtree, self.root, True)
         for name, tool in (("fz1", "catkin"), ("fz2", "ament_cmake"),
                            ("fz3", "ament_python")):
             folder = self.root / "src" / name
@@ -311,19 +314,20 @@ def _bag_seeds(suffix: str) -> Callable[[], list[bytes]]:
             from rosbags.typesys import Stores, get_typestore
         except ImportError:
             return []
-        folder = Path(tempfile.mkdtemp(prefix="haros-arch-fuzz-bag-"))
-        if suffix == ".bag":
-            store = get_typestore(Stores.ROS1_NOETIC)
-            with Writer1(folder / "s.bag") as writer:
+        with tempfile.TemporaryDirectory(prefix="haros-arch-fuzz-bag-") as made:
+            folder = Path(made)
+            if suffix == ".bag":
+                store = get_typestore(Stores.ROS1_NOETIC)
+                with Writer1(folder / "s.bag") as writer:
+                    for topic in ("/a", "/b"):
+                        writer.add_connection(topic, "std_msgs/msg/String", typestore=store,
+                                              callerid="/talker")
+                return [(folder / "s.bag").read_bytes()]
+            store = get_typestore(Stores.ROS2_HUMBLE)
+            with Writer2(folder / "s", version=9, storage_plugin=StoragePlugin.MCAP) as writer:
                 for topic in ("/a", "/b"):
-                    writer.add_connection(topic, "std_msgs/msg/String", typestore=store,
-                                          callerid="/talker")
-            return [(folder / "s.bag").read_bytes()]
-        store = get_typestore(Stores.ROS2_HUMBLE)
-        with Writer2(folder / "s", version=9, storage_plugin=StoragePlugin.MCAP) as writer:
-            for topic in ("/a", "/b"):
-                writer.add_connection(topic, "std_msgs/msg/String", typestore=store)
-        return [next((folder / "s").glob("*.mcap")).read_bytes()]
+                    writer.add_connection(topic, "std_msgs/msg/String", typestore=store)
+            return [next((folder / "s").glob("*.mcap")).read_bytes()]
 
     return seeds
 

@@ -56,9 +56,9 @@ def run(text: str) -> Interpreter:
 @pytest.mark.parametrize("case", sorted(CASES))
 def test_growth_and_depth_end_with_a_limit(case: str) -> None:
     body, detail = CASES[case]
-    started = time.monotonic()
+    started = time.process_time()  # work done, not how busy the machine is
     it = run(PREFIX + body)
-    assert time.monotonic() - started < 5
+    assert time.process_time() - started < 5
     limits = [d for d in it.diagnostics if d.code == "CMAKE_LIMIT"]
     assert len(limits) == 1 and detail in limits[0].message
     assert limits[0].location.line > 2

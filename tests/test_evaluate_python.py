@@ -41,9 +41,9 @@ HOSTILE = {
 
 @pytest.mark.parametrize("case", sorted(HOSTILE))
 def test_core_refuses_each_hostile_class(case: str) -> None:
-    started = time.monotonic()
+    started = time.process_time()  # work done, not how busy the machine is
     result = core.evaluate(HOSTILE[case])
-    assert time.monotonic() - started < 10
+    assert time.process_time() - started < 10
     assert isinstance(result, core.Unknown) and result.kind == "limit", result
 
 
@@ -100,9 +100,9 @@ def _write(tmp_path, files: dict[str, str]):
 def _launch(tmp_path, name: str, text: str):
     ws = _write(tmp_path, {"src/pkg/package.xml": package_xml("pkg", "ament_cmake"),
                            f"src/pkg/launch/{name}": text})
-    started = time.monotonic()
+    started = time.process_time()  # work done, not how busy the machine is
     model = load(str(tmp_path / "src/pkg/launch" / name), ws, {}, {})
-    assert time.monotonic() - started < 10
+    assert time.process_time() - started < 10
     return model
 
 
@@ -145,9 +145,9 @@ def test_setup_py_gives_a_diagnostic(tmp_path, case: str) -> None:
              "setup(name='pkg', entry_points={'console_scripts': [name + ' = pkg.n:main']})\n")
     ws = _write(tmp_path, {"src/pkg/package.xml": package_xml("pkg", "ament_python"),
                            "src/pkg/setup.py": setup})
-    started = time.monotonic()
+    started = time.process_time()  # work done, not how busy the machine is
     nodes, found = pysetup.parse_package(ws.packages["pkg"], ws)
-    assert time.monotonic() - started < 10
+    assert time.process_time() - started < 10
     assert not nodes and {d.code for d in found} == {"PYSETUP_DYNAMIC"}
     assert any(d.location.line == 2 for d in found), "the bound is said where it was reached"
 
@@ -160,9 +160,9 @@ def test_python_node_reader_keeps_the_name_unknown(tmp_path, case: str) -> None:
             f"rospy.Publisher('t' + str({HOSTILE[case]}), String, queue_size=1)\n")
     ws = _write(tmp_path, {"src/pkg/package.xml": package_xml("pkg"),
                            "src/pkg/scripts/n.py": text})
-    started = time.monotonic()
+    started = time.process_time()  # work done, not how busy the machine is
     result = extract_python([str(tmp_path / "src/pkg/scripts/n.py")], ws, package="pkg")
-    assert time.monotonic() - started < 10
+    assert time.process_time() - started < 10
     assert len(result.calls) == 1 and str(result.calls[0].name).startswith("t")
     assert len(str(result.calls[0].name)) < 1000
 

@@ -5,6 +5,7 @@ node of the class (or function) it is in, and the graph makes one instance per n
 
 from __future__ import annotations
 
+import json
 import os
 
 import pytest
@@ -12,6 +13,8 @@ from conftest import FIXTURES
 
 from haros_arch.extract.cpp import CppResult, extract_cpp
 from haros_arch.extract.cpp.cache import from_data, to_data
+from haros_arch.model.conditions import Condition
+from haros_arch.model.location import Location
 from haros_arch.model.model import Model
 from haros_arch.pipeline import Options, analyse
 from haros_arch.project import load
@@ -95,11 +98,14 @@ def test_node_names_survive_the_cache(tmp_path: object) -> None:
     cached = extract_cpp(sources, workspace, cache_dir=str(tmp_path), jobs=1)
     assert cached.rosnames == first.rosnames == ["rover_base_node", "odometry_node"]
     assert rows(cached) == rows(first)
+    under = Condition("enabled_", location=Location("rover_base", "src/main.cpp", 9))
     data = to_data([], None, [], [], [("rover::Odometry", "odometry_node")],
-                   [("rover::BaseDriver", "rover::devices::Battery")], ["Battery", "vendor"])
-    assert from_data(data)[4:] == ([("rover::Odometry", "odometry_node")],
-                                   [("rover::BaseDriver", "rover::devices::Battery")],
-                                   ["Battery", "vendor"])
+                   [("rover::BaseDriver", "rover::devices::Battery")], ["Battery", "vendor"],
+                   [("rover::Odometry", (under,))])
+    assert from_data(json.loads(json.dumps(data)))[4:] == (
+        [("rover::Odometry", "odometry_node")],
+        [("rover::BaseDriver", "rover::devices::Battery")], ["Battery", "vendor"],
+        [("rover::Odometry", (under,))])
     with pytest.raises(TypeError):
         from_data({**data, "unseen": [None]})
     with pytest.raises(TypeError):
@@ -197,3 +203,4 @@ int main(int argc, char ** argv)
     found = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
     assert found.rosname == "manager"
     assert found.rosnames == []
+

@@ -250,7 +250,11 @@ def test_the_condition_grammar_reads_only_what_it_can_compute():
 
     assert python_of("!a == b") == ("((not a) == b)", frozenset({"a", "b"}))
     assert python_of("this->x_ && _y") == ("(x_ and _y)", frozenset({"x_", "_y"}))
-    for text in ("f(x)", "ns::flag", "x.size() > 0", "int i = 0; i < n; ++i", "a = 1",
+    assert python_of("x.size() > 0") == ("(len(x) > 0)", frozenset({"x"}))
+    assert python_of('!args.empty() && args.at(1) == "bytes"') == (
+        '((not (len(args) == 0)) and (args[1] == "bytes"))', frozenset({"args"}))
+    for text in ("f(x)", "ns::flag", "x.begin() != x.end()", "x.at(i) == 1", "x.size",
+                 "int i = 0; i < n; ++i", "a = 1",
                  "__import__", "(" * 500 + "a" + ")" * 500, "a" * 2000, "default"):
         assert python_of(text) is None, text
     values = {"a": True, "b": 2}.get
@@ -263,7 +267,17 @@ def test_the_condition_grammar_reads_only_what_it_can_compute():
     assert decide(Condition("a && c"), known) is None      # c has no value
     assert decide(Condition("!a && c"), known) is False    # decided whatever c is
     assert decide(Condition("a", statement="for"), known) is None
-    assert decide(Condition("argc > 1"), known, [["x", "y"]]) is None  # not main's
+    assert decide(Condition("argc > 1"), known, [(["x", "y"], ["x"])]) is None  # not main's
+    # main's local that keeps what rclcpp leaves (the program's name first); argv
+    # itself is not known for a ROS 2 instance
+    left = Condition('args.size() >= 3 && args.at(1) == "bytes"', program_args=True,
+                     args_left="args")
+    assert decide(left, known, [(None, ["throttle", "bytes", "/in"])]) is True
+    assert decide(left, known, [(None, ["throttle", "messages", "/in"])]) is False
+    assert decide(left, known, [(None, ["throttle", "bytes"])]) is False
+    assert decide(left, known, None) is None  # the launch file's arguments not known
+    assert decide(Condition("argc > 2", program_args=True, args_left="args"), known,
+                  [(None, ["throttle", "bytes", "/in"])]) is None
 
 
 def test_a_member_a_base_class_header_reads_decides_a_condition_in_another_file(

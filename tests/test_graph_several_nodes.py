@@ -82,6 +82,15 @@ def test_launch_name_renames_every_node_of_the_process(model: Model) -> None:
     (rule,) = [r for r in load_catalogue() if r.id == "duplicate-node-names"]
     found = [f for f in run_rule(rule, model) if f.configuration == "pair"]
     assert [f.entities for f in found] == [("node:/wheels", "node:/wheels#2")]
+    # one launch action, not two: the message says the name renamed both nodes
+    assert [n.code_name for n in wheels] == ["left_wheel", "right_wheel"]
+    assert found[0].message.endswith(
+        "; one process: the launch file's name renames every node its code makes, "
+        "left_wheel and right_wheel")
+    # kept in the saved model
+    again = from_data(json.loads(json.dumps(model_to_data(model))))
+    assert [n.code_name for n in again.configuration("pair").nodes
+            if n.name == "/wheels"] == ["left_wheel", "right_wheel"]
 
 
 def test_the_model_round_trips_and_single_node_json_is_unchanged(model: Model) -> None:

@@ -65,9 +65,9 @@ def test_set_parameters_between_many_nodes_are_bounded(write_tree) -> None:
                        "src/pkg/launch/many.launch.xml": f"<launch><group>{body}</group>"
                                                          "</launch>\n"})
     ws = scan([str(root / "src")], {})
-    started = time.monotonic()
+    started = time.process_time()  # work done, not how busy the machine is
     model = load(str(root / "src/pkg/launch/many.launch.xml"), ws, {}, {})
-    assert time.monotonic() - started < 10
+    assert time.process_time() - started < 10
     assert len(model.nodes) == 700
     assert [d.code for d in model.diagnostics] == ["LAUNCH_PY_BUDGET"]
     assert "parameter entries" in model.diagnostics[0].message
@@ -82,10 +82,10 @@ def test_a_query_whose_results_grow_without_bound_is_a_query_limit() -> None:
     doubled = ", ".join(f"a{i} = a{i - 1} + a{i - 1}" for i in range(1, 16))
     text = (f"for x in {items}, y in {items}, z in {items} "
             f"let a0 = str(x) + 'abcdefg', {doubled} return a15")  # 10**6 results of 0.5 MB
-    started = time.monotonic()
+    started = time.process_time()  # work done, not how busy the machine is
     with pytest.raises(QueryLimitError, match="results and the strings it builds"):
         query.search(text, query.model_scope(Model("m")))
-    assert time.monotonic() - started < 10
+    assert time.process_time() - started < 10
     # a query that returns a lot of small results is not refused
     assert len(query.search(f"for x in {items}, y in {items} return str(x) + str(y)",
                             query.model_scope(Model("m")))) == 10_000
@@ -98,10 +98,10 @@ def test_project_file_of_opening_brackets_is_refused_at_once(tmp_path) -> None:
 
     path = tmp_path / "project.yaml"
     path.write_text("[" * 200_000)
-    started = time.monotonic()
+    started = time.process_time()  # work done, not how busy the machine is
     with pytest.raises(ProjectError, match="nested too deeply"):
         load_project(str(path))
-    assert time.monotonic() - started < 5
+    assert time.process_time() - started < 5
 
 
 def test_python_node_reader_is_linear_in_a_chain_of_calls(write_tree) -> None:
@@ -111,8 +111,8 @@ def test_python_node_reader_is_linear_in_a_chain_of_calls(write_tree) -> None:
     text = ("import rospy\nrospy.init_node('n')\nrospy.spin()" + ".spin()" * 58 + "\n"
             "rospy.Publisher('t', rospy.AnyMsg, queue_size=1)\n")
     folder = write_tree({"pkg/package.xml": package_xml("pkg"), "pkg/scripts/n.py": text})
-    started = time.monotonic()
+    started = time.process_time()  # work done, not how busy the machine is
     result = extract_python([str(folder / "pkg/scripts/n.py")], scan([str(folder)]),
                             package="pkg")
-    assert time.monotonic() - started < 5
+    assert time.process_time() - started < 5
     assert [str(c.name) for c in result.calls if c.kind == "publish"] == ["t"]

@@ -21,9 +21,9 @@ def launch(write_tree, name: str, text: str, extra: dict[str, str] | None = None
     files.update(extra or {})
     root = write_tree(files)
     ws = scan([str(root / "src")], {})
-    started = time.monotonic()
+    started = time.process_time()  # work done, not how busy the machine is
     model = load(str(root / "src/pkg/launch" / name), ws, {}, {})
-    assert time.monotonic() - started < 10
+    assert time.process_time() - started < 10
     return model
 
 
@@ -68,9 +68,9 @@ BUILDING = {
 def test_eval_refuses_to_build_huge_values(case: str) -> None:
     from haros_arch.launch.expression import BUILTINS, Unknown, evaluate
 
-    started = time.monotonic()
+    started = time.process_time()  # work done, not how busy the machine is
     result = evaluate(BUILDING[case], None, BUILTINS)
-    assert time.monotonic() - started < 5
+    assert time.process_time() - started < 5
     assert isinstance(result, Unknown) and result.kind == "limit", result
 
 
@@ -155,19 +155,19 @@ def test_query_round_and_int_stay_bounded() -> None:
     from haros_arch.query.errors import QueryError
 
     scope = query.model_scope(Model("m"))
-    started = time.monotonic()
+    started = time.process_time()  # work done, not how busy the machine is
     assert query.search("return round(5, 0-1000000000)", scope) == [0]
-    assert time.monotonic() - started < 5
+    assert time.process_time() - started < 5
     assert query.search("return round(1250, 0-2)", scope) == [1200]
     with pytest.raises(QueryError, match="infinity"):
         query.search("return int(float('1e400'))", scope)
 
 
 def test_yaml_opening_brackets_without_end_is_refused_at_once() -> None:
-    started = time.monotonic()
+    started = time.process_time()  # work done, not how busy the machine is
     with pytest.raises(ParamError, match="nested"):
         load_yaml("baud: " + "[" * 200_000)
-    assert time.monotonic() - started < 5
+    assert time.process_time() - started < 5
     assert load_yaml('a: "' + "[" * 300 + '"') == {"a": "[" * 300}  # in a string: fine
 
 
@@ -191,9 +191,9 @@ def test_scan_does_not_follow_links_to_root_or_ancestors(write_tree) -> None:
     os.makedirs(root / "ws/src/deep/er")
     os.symlink("../..", root / "ws/src/deep/er/up")
     os.symlink(root / "elsewhere", root / "ws/src/external")  # a checkout kept elsewhere
-    started = time.monotonic()
+    started = time.process_time()  # work done, not how busy the machine is
     workspace = scan([str(root / "ws/src")], {})
-    assert time.monotonic() - started < 5
+    assert time.process_time() - started < 5
     assert sorted(workspace.packages) == ["good", "kept"]
 
 
@@ -302,10 +302,10 @@ def test_python_node_reader_stops_doubling_values(write_tree, grow: str) -> None
             "n = 10 ** 1\nn = 99999999999999999999\n" + (grow + "\n") * 40
             + "rospy.init_node('n')\nrospy.Publisher(name + str(n), String, queue_size=1)\n")
     folder = write_tree({"pkg/package.xml": package_xml("pkg"), "pkg/scripts/grow.py": text})
-    started = time.monotonic()
+    started = time.process_time()  # work done, not how busy the machine is
     result = extract_python([str(folder / "pkg" / "scripts" / "grow.py")], scan([str(folder)]),
                             package="pkg")
-    assert time.monotonic() - started < 10
+    assert time.process_time() - started < 10
     assert len(result.calls) == 1 and len(str(result.calls[0].name)) < 1000
 
 
@@ -325,9 +325,9 @@ def test_compiler_warnings_about_workspace_python_are_not_printed(write_tree) ->
 def test_comparing_huge_shared_lists_is_charged_by_their_size() -> None:
     from haros_arch.launch.expression import BUILTINS, Unknown, evaluate
 
-    started = time.monotonic()
+    started = time.process_time()  # work done, not how busy the machine is
     result = evaluate("[[[1] * 1000] * 1000] * 1000 == [[[1] * 1000] * 1000] * 1000", None,
                       BUILTINS)
-    assert time.monotonic() - started < 5
+    assert time.process_time() - started < 5
     assert isinstance(result, Unknown) and result.kind == "limit"
     assert evaluate("[1, 2] == [1, 2] and 'ab' in 'xaby'", None, BUILTINS) is True

@@ -540,6 +540,34 @@ def test_ros2_topic_tools_take_their_topics_from_their_parameters(write_tree):
                                                         ["/mux/selected"])
 
 
+def test_ros2_throttle_takes_its_output_topic_from_the_argument_its_mode_reads(write_tree):
+    # the model keeps the conditions over what rclcpp leaves of the arguments
+    # (``args.at(1) == "messages"``, ``args.size() >= 5``): the instance's words decide
+    # them, so each mode's output topic is the argument that mode reads
+    root = write_tree({
+        "src/base/package.xml": _package_xml("base"),
+        "src/base/launch/throttle.launch.py": """
+            from launch import LaunchDescription
+            from launch_ros.actions import Node
+
+            def generate_launch_description():
+                return LaunchDescription([
+                    Node(package='topic_tools', executable='throttle', name='scan_slow',
+                         arguments=['messages', '/scan', '2.0', '/scan_2hz']),
+                    Node(package='topic_tools', executable='throttle', name='image_slow',
+                         arguments=['bytes', '/image', '1000', '1.0', '/image_1k']),
+                ])
+            """,
+        "project.yaml": "project: p\nconfigurations:\n  c: [base/launch/throttle.launch.py]\n",
+    })
+    config = _configuration(root)
+    for name, topics in (("/scan_slow", (["/scan"], ["/scan_2hz"])),
+                         ("/image_slow", (["/image"], ["/image_1k"]))):
+        instance = _instance(config, name)
+        assert ([link.name for link in instance.subscribers],
+                [link.name for link in instance.publishers]) == topics
+
+
 def test_a_modelled_node_launched_without_name_takes_its_section_of_a_parameter_file(
         write_tree):
     root = write_tree({

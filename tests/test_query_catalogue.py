@@ -219,6 +219,43 @@ def test_a_long_value_is_shortened_in_the_message():
     assert "set as binary (QUJDQUJD" in finding.message and len(finding.message) < 300
 
 
+def test_a_long_place_keeps_its_line_in_the_message():
+    # Autoware's sensor kit: a launch file's path of 118 characters, whose line was cut
+    # off as a long value ("gnss.launch.xml:… and gnss.launch.xml:…")
+    path = ("autowarefoundation+autoware_launch/sensor_kit/sample_sensor_kit_launch/"
+            "sample_sensor_kit_launch/launch/gnss.launch.xml")
+    model = configuration({"nodes": [
+        {"name": "/sensing/gnss/ublox", "location": {"file": path, "line": 15}},
+        {"name": "/sensing/gnss/ublox", "id": "node:/sensing/gnss/ublox#2",
+         "location": {"file": path, "line": 37}}]})
+    (finding,) = run_rule(RULES["duplicate-node-names"], model)
+    assert f"({path}:15 and {path}:37)" in finding.message
+
+
+def test_a_diagnostic_s_message_is_filled_in_whole():
+    # Autoware's "node type autoware_lidar_centerpoint/autoware::lidar_centerpoint::
+    # LidarCenterPointNode is not in the workspace; its int…": the sentence is the finding
+    text = ("node type autoware_lidar_centerpoint/autoware::lidar_centerpoint::"
+            "LidarCenterPointNode is not in the workspace; its interface is unknown")
+    model = configuration({"diagnostics": [
+        {"code": "NODE_NOT_FOUND", "severity": "warning", "message": text,
+         "location": {"file": "perception/launch/detection.launch.xml", "line": 7}}]})
+    (finding,) = run_rule(RULES["launch-missing-reference"], model)
+    assert finding.message == text
+
+
+def test_a_long_list_is_cut_between_its_items_and_a_long_name_is_whole():
+    # Autoware's /service_log, published by 22 nodes: "... /localization/util/default_a…"
+    publishers = [f"/localization/util/node_number_{i:02d}" for i in range(22)]
+    model = configuration({"links": [
+        {"kind": "publish", "node": node, "name": "/service_log", "type": "a/Log"}
+        for node in publishers]})
+    (finding,) = run_rule(RULES["multiple-publishers"], model)
+    assert "…" not in finding.message
+    shown = [p for p in publishers if p in finding.message]
+    assert 3 <= len(shown) < 22 and f"and {22 - len(shown)} more" in finding.message
+
+
 def test_a_double_read_as_an_int_is_a_mismatch_but_for_roscpp():
     # roscpp's getParam(int) rounds a double; rclcpp throws, rospy hands a float on
     def reader(node: str, file: str) -> dict:

@@ -26,7 +26,7 @@ from ..plugins.inherit import without_overridden
 from ..workspace import Workspace
 
 if TYPE_CHECKING:
-    from .cpp import CppBatch
+    from .cpp import CppBatch, CppResult
 
 AUTO_CACHE = "auto"  # cache_dir: the default cache folder (``cpp.cache.default_folder``)
 
@@ -60,7 +60,7 @@ def extract_nodes(nodes: Sequence[Node], workspace: Workspace, *,
         if cpp_batch is not None:
             cpp_batch.units.update(batch.units)
             cpp_batch.diagnostics.extend(batch.diagnostics)
-        found.extend(batch.all_diagnostics())
+        found.extend(_read_elsewhere(batch.all_diagnostics(), cpp, batch.results, workspace))
         for node, result in zip(cpp, batch.results, strict=True):
             found.extend(completeness(node, [*batch.diagnostics, *result.diagnostics],
                                       workspace))
@@ -91,7 +91,7 @@ def cpp_sources(nodes: Sequence[Node], workspace: Workspace) -> list[str]:
 # read or parsed)
 _PARTIAL_CAUSES = {
     "cpp": ("CPP_CALL_MISSED", "CPP_ERROR_NEAR_CALL", "CPP_PARSE_FAILED", "FILE_UNREADABLE",
-            "CPP_NODE_PASSED", "CPP_NODE_TO_UNKNOWN"),
+            "CPP_NODE_PASSED", "CPP_NODE_TO_UNKNOWN", "CPP_CLASS_UNSEEN"),
     "python": ("PY_PARSE_ERROR", "PY_TOO_COMPLEX", "FILE_UNREADABLE"),
 }
 _PARTIAL_CODE = {"cpp": "CPP_NODE_PARTIAL", "python": "PY_NODE_PARTIAL"}
@@ -134,7 +134,7 @@ def completeness(node: Node, found: Sequence[Diagnostic],
     # file counts when it is one of the node's
     causes = [d for d in found if d.code in _PARTIAL_CAUSES.get(node.language, ())
               and (d.code != "FILE_UNREADABLE" or d.location.file in node.sources)
-              and (d.code != "CPP_NODE_PASSED" or workspace is None
+              and (d.code not in _DEFINED_ELSEWHERE or workspace is None
                    or not _constructed_here(d, node, workspace))]
     if not causes:
         return []
@@ -146,13 +146,35 @@ def completeness(node: Node, found: Sequence[Diagnostic],
                       count=len(causes), first=first)]
 
 
-def _constructed_here(passed: Diagnostic, node: Node, workspace: Workspace) -> bool:
-    """Whether a source of ``node`` defines the constructor of the class that
-    ``passed`` (a ``CPP_NODE_PASSED``) says the node is given to."""
-    cls = passed.message.split(" of package ", 1)[0].rsplit("::", 1)[-1].strip()
+# the causes that name a class whose code another source of the node may hold: the
+# first word of the message is the class; a source that defines its constructor (of a
+# class built with the node) or any member of it (of a ROS 1 class built without)
+# is a library of its package the node links, whose calls are the node's
+_DEFINED_ELSEWHERE = {"CPP_NODE_PASSED": " of package ", "CPP_CLASS_UNSEEN": " of ROS package "}
+
+
+def _read_elsewhere(found: list[Diagnostic], nodes: Sequence[Node],
+                    results: Sequence[CppResult], workspace: Workspace) -> list[Diagnostic]:
+    """``found`` without the ``CPP_CLASS_UNSEEN`` that no node it is said for keeps: a
+    class whose code every such node reads from a library it links (``move_base``'s
+    ``Costmap2DROS``) is no unseen code there."""
+    kept: set[Diagnostic] = set()
+    dropped: set[Diagnostic] = set()
+    for node, result in zip(nodes, results, strict=True):
+        for said in result.diagnostics:
+            if said.code == "CPP_CLASS_UNSEEN":
+                (dropped if _constructed_here(said, node, workspace) else kept).add(said)
+    return [d for d in found if d not in dropped or d in kept]
+
+
+def _constructed_here(said: Diagnostic, node: Node, workspace: Workspace) -> bool:
+    """Whether a source of ``node`` has the code of the class that ``said`` (a
+    ``CPP_NODE_PASSED``, ``CPP_CLASS_UNSEEN``) names (``_DEFINED_ELSEWHERE``)."""
+    cls = said.message.split(_DEFINED_ELSEWHERE[said.code], 1)[0].rsplit("::", 1)[-1].strip()
     if not cls.isidentifier():
         return False
-    defines = re.compile(rf"\b{cls}\s*::\s*{cls}\s*\(")
+    member = cls if said.code == "CPP_NODE_PASSED" else r"~?\w+"
+    defines = re.compile(rf"\b{cls}\s*::\s*{member}\s*\(")
     for source in _paths(node, workspace):
         text, _ = read_text(source, workspace.location(source))
         if text and defines.search(text):
@@ -190,7 +212,8 @@ def extract_node(node: Node, workspace: Workspace) -> list[Diagnostic]:
         node.calls = without_overridden(node, result.calls, workspace)
         node.rosname = _rosname(node, result.rosname)
         _process_nodes(node, result.rosnames)
-        return [*result.diagnostics, *completeness(node, result.diagnostics, workspace)]
+        said = _read_elsewhere(result.diagnostics, [node], [result], workspace)
+        return [*said, *completeness(node, result.diagnostics, workspace)]
     if node.language == "python" and sources:
         from .python import extract_python
 

@@ -12,7 +12,7 @@ from weakref import WeakKeyDictionary
 from .. import diagnostics as diag
 from ..diagnostics import Diagnostic
 from ..launch.model import LaunchModel, NodeDecl
-from ..model.conditions import EACH_STATEMENT
+from ..model.conditions import EACH_STATEMENT, Condition
 from ..model.launch_tree import PackageUse
 from ..model.location import Location
 from ..model.rosname import RosName, namespace_of, remap, resolve, resolve_remaps
@@ -28,7 +28,7 @@ from ..model.runtime import (
     Topic,
 )
 from ..model.source import NUMBERED, Node, PrimitiveCall
-from ..model.values import UNKNOWN_MARK
+from ..model.values import UNKNOWN_MARK, Unknown
 from ..models.commands import command_node
 from ..plugins.attach import PluginModels, class_packages
 from ..plugins.attach import attach as attach_plugins
@@ -36,7 +36,7 @@ from ..plugins.transports import Transports
 from ..robot.attach import attach as attach_descriptions
 from ..workspace import Workspace, installed_roots
 from .actions import action_links
-from .conditions import arguments_left, decide_links, drop_links
+from .conditions import arguments_left, decide, decide_links, drop_links, program_views
 from .processes import guessed_names, process_nodes, process_params, unnamed_param_files
 
 RESOURCE_OF_KIND: dict[str, type[Resource]] = {
@@ -121,6 +121,9 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
     started: list[tuple[NodeDecl, NodeInstance]] = []
     for decl, own in process_nodes(launch.nodes, nodes):
         instance = _instance(decl, nodes, workspace, config)
+        if own is not None and own.rsplit("/", 1)[-1] != instance.name.rsplit("/", 1)[-1]:
+            instance.code_name = own
+        instance.conditions = (*instance.conditions, *_made_under(instance.node, own))
         started.append((decl, instance))
         # two instances with one name keep apart by id; the duplicate-node-names query
         # reports them (and roslaunch's own refusal is LAUNCH_NODE_DUPLICATE)
@@ -529,7 +532,24 @@ def _given_name(call: PrimitiveCall, instance: NodeInstance, resources: Resource
     return call.name.replace(UNKNOWN_MARK, value, 1)
 
 
+def _made_under(node: Node | None, own: str | None) -> tuple[Condition, ...]:
+    """The source conditions under which a process makes one of its nodes but the first:
+    those all its calls share (the extractor gives each call of such a node the
+    conditions of its construction, ``cpp._made_under``)."""
+    if node is None or own is None or len(node.rosnames) < 2 or own == node.rosnames[0]:
+        return ()
+    calls = node.calls_of(own)
+    if not calls:
+        return ()
+    return tuple(c for c in calls[0].conditions if c.kind == "source"
+                 and all(c in other.conditions for other in calls[1:]))
+
+
 _ARGUMENT_VALUES: WeakKeyDictionary[NodeInstance, dict[str, str]] = WeakKeyDictionary()
+
+
+def _no_values(name: str) -> object:
+    return Unknown(f"{name} is not one of the program's arguments")
 
 
 def _argument_values(instance: NodeInstance) -> dict[str, str]:
@@ -542,8 +562,13 @@ def _argument_values(instance: NodeInstance) -> dict[str, str]:
     if found is not None:
         return found
     found = {}
+    views = program_views(instance)
+    # the writes that may happen with these arguments: those under a condition over the
+    # arguments that they decide false are left out (throttle's "messages" mode takes
+    # output_topic from its fourth argument, its "bytes" mode from its fifth)
     writes = [] if instance.node is None else [
-        c for c in instance.node.calls if c.kind == "write" and c.program_arg is not None]
+        c for c in instance.node.calls if c.kind == "write" and c.program_arg is not None
+        and not any(decide(k, _no_values, views) is False for k in c.conditions)]
     if writes:
         try:
             words = shlex.split(instance.args)

@@ -13,10 +13,14 @@ this instance gives it:
 - ``argc`` / ``argv`` of a condition in ``main`` (``Condition.program_args``) of a
   ROS 1 instance whose ``args`` are known: roslaunch starts it with its ``args`` words,
   its remappings, ``__name:=`` and ``__log:=``, and ``ros::init`` removes the ``:=``
-  words; the condition is decided only when both views of ``argv`` give one answer.
+  words; the condition is decided only when both views of ``argv`` give one answer;
+- the local of ``main`` that keeps what rclcpp leaves of the arguments
+  (``Condition.args_left``: ``args.size()``, ``args.at(1) == "messages"``) of an
+  instance whose ``args`` are known: its words outside ``--ros-args`` sections.
 
 The C++ text is read by a small grammar (``||``, ``&&``, ``!``, comparisons,
-parentheses, literals, names, ``argv[N]``, ``std::string(..)``); anything else leaves it
+parentheses, literals, names, ``argv[N]``, ``x.size()`` / ``x.empty()`` / ``x.at(N)``,
+``std::string(..)``); anything else leaves it
 undecided, as do names with no value. The expression is then computed by the one safe
 evaluator (``haros_arch.evaluate``). A link whose condition is false does not exist in
 this configuration: it is dropped, with a CONDITION_FALSE info that says which call and
@@ -45,7 +49,7 @@ _TOKEN = re.compile(r"""\s*(?:
     (?P<string>"[^"\\\n]*")
   | (?P<number>\d+(?:\.\d+)?)(?![\w.])
   | (?P<name>this\s*->\s*[A-Za-z_]\w*|[A-Za-z_]\w*(?:\s*::\s*[A-Za-z_]\w*)*)
-  | (?P<op>&&|\|\||==|!=|<=|>=|[!<>()\[\]])
+  | (?P<op>&&|\|\||==|!=|<=|>=|[!<>()\[\].])
 )""", re.X)
 _KEYWORDS = {"true": "True", "false": "False"}
 _ALTERNATIVE = {"and": "&&", "or": "||", "not": "!"}
@@ -135,6 +139,20 @@ class _Grammar:
         ):
             raise ValueError(value)  # a qualified name or a call: not read
         self.names.add(value)
+        if self._peek() == ("op", "."):  # a container's size() / empty() / at(N)
+            self.at += 1
+            kind, method = self._peek()
+            self.at += 1
+            self._take("(")
+            if kind == "name" and method in ("size", "length", "empty"):
+                self._take(")")
+                return f"len({value})" if method != "empty" else f"(len({value}) == 0)"
+            if (kind, method) != ("name", "at") or self._peek()[0] != "number":
+                raise ValueError(method)
+            number = self._peek()[1]
+            self.at += 1
+            self._take(")")
+            return f"{value}[{number}]"
         if self._peek() == ("op", "["):
             self.at += 1
             index, _ = self._peek()
@@ -160,28 +178,36 @@ def python_of(text: str) -> tuple[str, frozenset[str]] | None:
 
 
 def decide(condition: Condition, values: Callable[[str], object],
-           argv_views: list[list[str]] | None = None) -> bool | None:
+           views: list[ProgramView] | None = None) -> bool | None:
     """True / False when ``condition`` is decided with the names' ``values`` (an
-    ``Unknown`` for a name with none); None when it is not. ``argv_views``: the
-    program's ``argv`` as the condition may see it (each view gives ``argc`` too)."""
+    ``Unknown`` for a name with none); None when it is not. ``views``: the program's
+    arguments as the condition may see them (``program_views``)."""
     if condition.kind != "source" or condition.statement not in DECIDED_STATEMENTS:
         return None
     read = python_of(condition.text)
     if read is None:
         return None
     expression, names = read
-    uses_args = bool(names & {"argc", "argv"})
-    if uses_args and (not condition.program_args or not argv_views):
+    left = condition.args_left
+    uses_argv = bool(names & {"argc", "argv"})
+    uses_left = left is not None and left in names
+    if (uses_argv or uses_left) and (not condition.program_args or not views):
         return None
     answers = set()
-    for argv in (argv_views if uses_args and argv_views else [[]]):
-        def value(name: str, argv: list[str] = argv) -> object:
-            if uses_args and name == "argv":
+    for argv, kept in (views if views and (uses_argv or uses_left) else [(None, [])]):
+        if uses_argv and argv is None:
+            return None  # argc / argv themselves are not known (a ROS 2 instance's)
+
+        def value(name: str, argv: list[str] | None = argv, kept: list[str] = kept
+                  ) -> object:
+            if uses_left and name == left:
+                return kept
+            if uses_argv and argv is not None and name == "argv":
                 return argv
-            if uses_args and name == "argc":
+            if uses_argv and argv is not None and name == "argc":
                 return len(argv)
             return values(name)
-        result = evaluate(expression, value, {})
+        result = evaluate(expression, value, {"len": len})
         if is_unknown(result) or not isinstance(result, (bool, int, float, str)):
             return None
         answers.add(bool(result))
@@ -191,21 +217,32 @@ def decide(condition: Condition, values: Callable[[str], object],
     return (not truth) if condition.statement == "else" else truth
 
 
-def argv_views(instance: NodeInstance) -> list[list[str]] | None:
-    """A ROS 1 instance's ``argv`` before and after ``ros::init`` (see the module's
-    docstring); None when its arguments are not known."""
-    if instance.ros_version != 1 or UNKNOWN_MARK in instance.args or "$(" in instance.args:
+# the program's ``argv`` as a condition may see it (None: not known), and what its client
+# library leaves of it (the program's name first)
+ProgramView = tuple[list[str] | None, list[str]]
+
+
+def program_views(instance: NodeInstance) -> list[ProgramView] | None:
+    """The ways an instance's code may see its arguments; None when they are not known.
+    ROS 1: ``argv`` before and after ``ros::init`` (which takes the ``:=`` words: roslaunch
+    starts the node with its ``args`` words, its remappings, ``__name:=`` and ``__log:=``);
+    a condition is decided only when both give one answer. ROS 2: only what rclcpp leaves
+    (``init_and_remove_ros_arguments``: the words outside ``--ros-args`` sections);
+    ``argv`` holds the arguments launch_ros adds, which are not told here."""
+    if UNKNOWN_MARK in instance.args or "$(" in instance.args:
         return None
     try:
         words = shlex.split(instance.args)
     except ValueError:
         return None
     program = instance.node.executable if instance.node is not None else "node"
-    given = arguments_left(words, 1)
-    remaps = len(instance.remaps) - (len(words) - len(given))
+    given = [program, *arguments_left(words, instance.ros_version)]
+    if instance.ros_version != 1:
+        return [(None, given)]
+    remaps = len(instance.remaps) - (len(words) - len(given) + 1)
     before = [program, *words, *(["from:=to"] * max(remaps, 0)),
               f"__name:={instance.name.rpartition('/')[2]}", "__log:=log"]
-    return [before, [program, *given]]
+    return [(before, given), (given, given)]
 
 
 def arguments_left(words: list[str], ros_version: int) -> list[str]:
@@ -291,7 +328,7 @@ def decide_links(config: Configuration) -> None:
     dropped: list[Link] = []
     for instance in config.nodes:
         members = _member_values(instance)
-        views = argv_views(instance)
+        views = program_views(instance)
         for link in list(instance.links):
             kept: list[Condition] = []
             false: Condition | None = None

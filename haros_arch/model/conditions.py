@@ -31,6 +31,10 @@ class Condition:
     # a source condition in ``main``: its ``argc`` / ``argv`` are the program's own
     # arguments, which a launch file's ``args`` tell (graph.conditions decides it)
     program_args: bool = field(default=False, metadata={"optional": True})
+    # the local of that ``main`` that holds what the client library leaves of them
+    # (``auto args = rclcpp::init_and_remove_ros_arguments(argc, argv)``): its ``size()``
+    # and ``at(N)`` are the arguments a launch file gives, the program's name first
+    args_left: str | None = field(default=None, metadata={"optional": True})
 
     def __str__(self) -> str:
         return f"{self.statement} ({self.text})"

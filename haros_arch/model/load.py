@@ -68,7 +68,9 @@ def conditions(data: Any) -> tuple[Condition, ...]:
         elif isinstance(item, dict):
             found.append(Condition(str(item.get("text", "")), item.get("kind", "source"),
                                    item.get("statement", "if"), location(item.get("location")),
-                                   bool(item.get("program_args", False))))
+                                   bool(item.get("program_args", False)),
+                                   left if isinstance(left := item.get("args_left"), str)
+                                   else None))
     return tuple(found)
 
 
@@ -211,7 +213,8 @@ def _configuration(data: dict[str, Any], nodes: dict[str, Node],
             ros_version=int(item.get("ros_version", 1) or 1),
             test=bool(item.get("test", False)),
             remaps_applied=[str(n) for n in item.get("remaps_applied") or ()
-                            if isinstance(n, str)])
+                            if isinstance(n, str)],
+            code_name=code if isinstance(code := item.get("code_name"), str) else None)
         config.nodes.append(instance)
         by_name.setdefault(name, instance)
         by_id.setdefault(instance.id, instance)

@@ -50,6 +50,10 @@ class NodeInstance:
     # the remaps' sources (resolved in this instance's namespace) that changed a name
     # its links were made with: what ROS would remap (``graph.build`` records them)
     remaps_applied: list[str] = field(default_factory=list, metadata={"optional": True})
+    # ROS 2: the name its code gives this node when the launch name renames it, as it
+    # renames every node of a process that runs several (ublox_gps_node's own node and
+    # its raw_data_pa, both /sensing/gnss/ublox under name="ublox")
+    code_name: str | None = field(default=None, metadata={"optional": True})
     links: list[Link] = field(default_factory=list, metadata=INDEX)
 
     JSON_VIEWS: ClassVar[dict[str, Callable[[Any], Any]]] = {

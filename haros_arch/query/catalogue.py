@@ -186,21 +186,43 @@ def render(template: str, match: Any, evaluator: Evaluator) -> str:
                     instances.setdefault(v.node.name, set()).add(v.node.id)
                 else:
                     instances.setdefault(label(v) if entities(v) else str(plain(v)), set())
-            return _shorten(", ".join(
-                name + (f" ({len(ids)} instances)" if len(ids) > 1 else "")
-                for name, ids in instances.items()))
+            return _items([name + (f" ({len(ids)} instances)" if len(ids) > 1 else "")
+                           for name, ids in instances.items()])
         if isinstance(value, list | tuple):  # a value: every element, as it is
-            return _shorten(", ".join(str(plain(v)) for v in value))
+            return _items([str(plain(v)) for v in value])
+        if isinstance(value, Location):  # a place is whole: its line ends it
+            return str(plain(value))
+        if isinstance(value, str) and fields and fields[-1] == "message" and (
+            len(value) <= MAX_MESSAGE
+        ):
+            return value  # a diagnostic's own sentence, not data read from the workspace
         return label(value) if entities(value) else _shorten(str(plain(value)))
 
     return _FIELD.sub(fill, template)
 
 
-MESSAGE_VALUE = 120  # characters of one filled-in value (a binfile, a YAML map) in a message
+MESSAGE_VALUE = 120  # characters a long filled-in value (a binfile, a YAML map) is cut to
+WHOLE_VALUE = 256  # a value up to this length is filled in whole (a long ROS name)
+MESSAGE_ITEMS = 240  # characters of a list's items before the rest are only counted
+MAX_MESSAGE = 2000  # a diagnostic's message filled in whole, up to this length
 
 
 def _shorten(text: str) -> str:
-    return text if len(text) <= MESSAGE_VALUE else text[:MESSAGE_VALUE - 1] + "…"
+    return text if len(text) <= WHOLE_VALUE else text[:MESSAGE_VALUE - 1] + "…"
+
+
+def _items(items: list[str]) -> str:
+    """A list's items, each whole, joined by commas; past ``MESSAGE_ITEMS`` characters
+    the items left are counted ("and 12 more"), not cut in the middle of a name."""
+    out: list[str] = []
+    size = 0
+    for index, item in enumerate(items):
+        text = _shorten(item)
+        if out and size + len(text) > MESSAGE_ITEMS:
+            return f"{', '.join(out)} and {len(items) - index} more"
+        out.append(text)
+        size += len(text) + 2
+    return ", ".join(out)
 
 
 def _finding(rule: Rule, match: Any, config: Configuration | None,

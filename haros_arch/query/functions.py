@@ -319,7 +319,23 @@ def apart(charge: Charge, first: Any, second: Any) -> list[Any]:
     return [] if same_conditions(one, other) else [first, second]
 
 
+def one_process(charge: Charge, first: Any, second: Any) -> str:
+    """For two node instances of one name that one launched process runs (the launch
+    name renames every node of it), a clause that says so and names the nodes its code
+    makes; else nothing."""
+    charge(1)
+    if not isinstance(first, NodeInstance) or not isinstance(second, NodeInstance):
+        raise QueryTypeError("one_process() takes node instances")
+    if first.code_name is None or second.code_name is None or (
+        first.location != second.location
+    ):
+        return ""
+    return ("; one process: the launch file's name renames every node its code makes, "
+            f"{first.code_name} and {second.code_name}")
+
+
 # two node instances of one name: a duplicate only when both can start
+FUNCTIONS["one_process"] = Function("one_process", one_process, 2, 2, charged=True)
 FUNCTIONS["never_together"] = Function("never_together", never_together, 2, 2, charged=True)
 FUNCTIONS["apart"] = Function("apart", apart, 2, 2, charged=True)
 

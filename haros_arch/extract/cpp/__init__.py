@@ -23,14 +23,17 @@ from clang.cindex import Diagnostic as ClangDiagnostic
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
 from ...files import MAX_FILE_BYTES, read_text
-from ...manifest import ros_version
+from ...manifest import parse_manifest, ros_version
+from ...model.conditions import Condition
 from ...model.location import Location
 from ...model.source import PrimitiveCall
-from ...workspace import Workspace
+from ...workspace import Workspace, manifest_of
 from .. import NODELET_LOAD
 from . import cache, links, recall, synthesis, toolchain
 from . import compile_commands as commands
-from .headers import STANDIN, IncludeSetup
+from .headers import FALLBACK, STANDIN, IncludeSetup
+from .interfaces import interface_package
+from .interfaces import known as known_interface
 from .owners import node_names
 from .visitor import WORDS, CallFinder
 
@@ -111,6 +114,9 @@ class CppResult:
     rosnames: list[str] = field(default_factory=list)
     node_names: list[tuple[str, str]] = field(default_factory=list)
     constructions: list[tuple[str, str]] = field(default_factory=list)  # visitor's
+    # in a translation unit's result: each construction of a class of the workspace, as
+    # (class, the source conditions it is made under), one per place
+    made_under: list[tuple[str, tuple[Condition, ...]]] = field(default_factory=list)
     # in a translation unit's result: the words of its code where an error left by the
     # parse can hide a statement (each function with one, a constructor with its class's
     # member types; ``*``: anything, the unit was not parsed), so a construction of a
@@ -272,14 +278,39 @@ def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
                 result.rosnames.append(name)
     if len(result.rosnames) < 2:
         result.rosnames = []
+    under = _made_under(units, owners, result.rosnames)
     calls = []
     nodes: dict[str, str | None] = {}
     for call in result.calls:
         node = _node_of(call.node_name, owners, made_by, result.rosnames, nodes, 0)
         # a copy: a translation unit's calls are shared by the nodes that build it
-        calls.append(call if call.node_name is None and node is None
-                     else dataclasses.replace(call, node_name=node))
+        if call.node_name is None and node is None:
+            calls.append(call)
+            continue
+        extra = tuple(c for c in under.get(node or "", ()) if c not in call.conditions)
+        calls.append(dataclasses.replace(call, node_name=node,
+                                         conditions=(*extra, *call.conditions)))
     result.calls = calls
+
+
+def _made_under(units: list[tuple[str, CppResult]], owners: dict[str, list[str]],
+                rosnames: list[str]) -> dict[str, tuple[Condition, ...]]:
+    """The source conditions under which the process makes each of its nodes but the
+    first: those every construction of the node's class shares, in any file of the
+    executable (ublox_gps_node makes its raw_data_pa node only ``if
+    (getRosBoolean(this, "raw_data_stream.enable"))``). Each of the node's calls holds
+    them: the node, and all it does, exists only where they hold."""
+    found: dict[str, tuple[Condition, ...]] = {}
+    for owner, names in owners.items():
+        if len(names) != 1 or names[0] not in rosnames[1:]:
+            continue
+        sites = [made for _, unit in units for cls, made in unit.made_under if cls == owner]
+        if not sites:
+            continue
+        shared = tuple(c for c in sites[0] if all(c in other for other in sites[1:]))
+        if shared:
+            found[names[0]] = shared
+    return found
 
 
 MAX_CONSTRUCTION_DEPTH = 8
@@ -325,12 +356,12 @@ def _units(texts: dict[str, str], ros2: dict[str, bool], setup: IncludeSetup,
                 digests[path] = kept[1]
             elif kept is not None and kept[0] is not None:
                 try:
-                    calls, rosname, found, facts, named, made, unseen = cache.from_data(
-                        kept[0])
+                    calls, rosname, found, facts, named, made, unseen, under = (
+                        cache.from_data(kept[0]))
                 except (ValueError, TypeError, KeyError):
                     continue
                 done[path] = CppResult(calls, rosname, found, facts, node_names=named,
-                                       constructions=made, unseen=unseen)
+                                       constructions=made, unseen=unseen, made_under=under)
                 digests[path] = kept[1]
     todo = [path for path in texts if path not in done and path not in digests]
     tasks = [(path, texts[path], ros2[path]) for path in todo]
@@ -380,7 +411,7 @@ def _unit_and_data(path: str, text: str, ros2: bool, setup: IncludeSetup
     where the unit was parsed (in a worker: not in the serial part of the run)."""
     unit, headers = _translation_unit(path, text, ros2, setup)
     data = cache.to_data(unit.calls, unit.rosname, unit.diagnostics, unit.facts,
-                         unit.node_names, unit.constructions, unit.unseen)
+                         unit.node_names, unit.constructions, unit.unseen, unit.made_under)
     return unit, headers, data, cache.digest(data)
 
 
@@ -462,11 +493,14 @@ def _translation_unit(path: str, text: str, ros2: bool,
                 else "CPP_PARSE_ERROR")
         result.diagnostics.append(diag.make(
             code, workspace.location(error.path, error.line, error.column),
-            detail=error.spelling))
+            detail=error_detail(error.spelling, setup.generated)))
     # the header of the names declared permissively, when this parse has them
     declared = os.path.join(setup.generated, synthesis.HEADER_NAME) if any(
         d.code == "CPP_NAMES_DECLARED" for d in result.diagnostics) else None
-    finder = CallFinder(tu, source, owned, where, ros2=ros2, declared=declared)
+    read: list[str] = []  # the workspace files the ROS 1 client test reads
+    finder = CallFinder(tu, source, owned, where, ros2=ros2, declared=declared,
+                        clients=None if ros2 else ros1_clients(path, workspace, setup.generated,
+                                                               read))
     finder.run()
     result.diagnostics.extend(plugin_loads(path, text, workspace))
     result.calls = sorted(finder.calls, key=lambda c: (
@@ -478,11 +512,12 @@ def _translation_unit(path: str, text: str, ros2: bool,
     result.facts = finder.facts
     result.node_names = finder.node_names
     result.constructions = finder.constructions
+    result.made_under = finder.made_under
     # the node handed to code the parse does not read (another package's class, a
     # function it does not know) may construct anything there
     result.unseen = ["*"] if any(d.code in _HANDED for d in result.diagnostics) else sorted(
         word.decode() for word in _unseen(errors, finder, source) | finder.unseen)
-    headers = [path]
+    headers = [path, *read]
     for include in tu.get_includes():
         name = os.path.abspath(include.include.name)
         if name.startswith((workspace.root + os.sep, setup.generated + os.sep)) or (
@@ -547,6 +582,107 @@ def _hidden(path: str, errors: list[_Error], finder: CallFinder,
                     detail=error.spelling))
     found.extend(_node_given(errors, finder, source, workspace))
     return found[:recall.MAX_REASONS]
+
+
+ROSCPP = "roscpp"
+# what ROS 1 code that communicates names: a handle, or the free parameter functions
+_ROS1_CLIENT_CODE = re.compile(r"\bNodeHandle\b|\bros\s*::\s*(?:param|topic|service)\s*::")
+_SOURCE_SUFFIXES = (".cpp", ".cc", ".cxx", ".c++", ".h", ".hpp", ".hh", ".hxx")
+MAX_CLIENT_FILES = 400  # files of a package read to find where a class is defined
+
+
+def ros1_clients(path: str, workspace: Workspace, generated: str,
+                 read: list[str]) -> Callable[[str, str], bool]:
+    """Whether a class (qualified) of a package (both by name) may make ROS calls of its
+    own in code a ROS 1 unit builds without reading it (``CallFinder._unseen_class``).
+    Not a class of a package the stand-in headers provide, nor a message or service
+    (of the catalogue, or named as a header the unit includes: ``<pkg/Name.h>`` is how
+    ROS 1 generates them). A workspace package's when it depends on roscpp and the
+    files that define the class's constructors (when found) name a NodeHandle or the
+    parameter, topic or service functions; another package's when the unit's package
+    declares it as a dependency and it is installed with a package.xml that depends on
+    roscpp, or found nowhere (its headers are missing: what it does is not known). The
+    workspace files it reads (manifests, the files that define a class) go to ``read``,
+    so a cached result is used only while they are unchanged."""
+    package = workspace.package_of(path)
+    if package is not None and package.root:
+        read.append(manifest_of(package.root))
+    declared = {d.name for d in package.dependencies} if package is not None else set()
+    known: dict[tuple[str, str], bool] = {}
+
+    def client(name: str, cls: str) -> bool:
+        found = known.get((name, cls))
+        if found is None:
+            found = known[(name, cls)] = _client(name, cls, declared, workspace, generated,
+                                                 read)
+        return found
+
+    return client
+
+
+def _client(name: str, cls: str, declared: set[str], workspace: Workspace,
+            generated: str, read: list[str]) -> bool:
+    if any(os.path.isdir(os.path.join(folder, name)) for folder in (STANDIN, FALLBACK)) or (
+        interface_package(name)
+    ):
+        return False
+    last = cls.rsplit("::", 1)[-1]
+    for each in {last, re.sub(r"(?:Request|Response)$", "", last)}:
+        if known_interface(name, each) is not None or os.path.isfile(
+                os.path.join(generated, name, each + ".h")):
+            return False
+    other = workspace.packages.get(name)
+    if other is not None:
+        if not any(d.name == ROSCPP for d in other.dependencies):
+            return False
+        if other.root:
+            read.append(manifest_of(other.root))
+        code = _defining_code(other.root, last, read)
+        return code is None or _ROS1_CLIENT_CODE.search(code) is not None
+    if name not in declared:
+        return False
+    folder = workspace.find(name)
+    manifest = os.path.join(folder, "package.xml") if folder else None
+    if manifest is None or not os.path.isfile(manifest):
+        return True
+    parsed, _ = parse_manifest(manifest, workspace.location(manifest), folder or "",
+                               workspace.environment)
+    return parsed is None or any(d.name == ROSCPP for d in parsed.dependencies)
+
+
+def _defining_code(root: str, cls: str, read: list[str]) -> str | None:
+    """The text of the files under ``root`` that define a constructor of ``cls`` out of
+    its class (``cls::cls(``), joined; None when none does."""
+    defines = re.compile(rf"\b{re.escape(cls)}\s*::\s*{re.escape(cls)}\s*\(")
+    found: list[str] = []
+    seen = 0
+    for folder, dirs, files in os.walk(root):
+        dirs.sort()
+        for file in sorted(files):
+            if not file.endswith(_SOURCE_SUFFIXES):
+                continue
+            seen += 1
+            if seen > MAX_CLIENT_FILES:
+                return "\n".join(found) if found else None
+            full = os.path.join(folder, file)
+            try:
+                if os.path.getsize(full) > MAX_FILE_BYTES:
+                    continue
+                with open(full, encoding="utf-8", errors="replace") as handle:
+                    text = handle.read()
+            except OSError:
+                continue
+            if defines.search(text):
+                found.append(text)
+                read.append(full)
+    return "\n".join(found) if found else None
+
+
+def error_detail(spelling: str, generated: str) -> str:
+    """A clang error as said: a header we synthesised is named without the run's
+    temporary folder (``haros_synthesised_names.h:124:3``), so the message is the same in
+    every run and in the cache."""
+    return spelling.replace(generated.rstrip(os.sep) + os.sep, "")
 
 
 _HANDED = frozenset({"CPP_NODE_PASSED", "CPP_NODE_TO_UNKNOWN"})

@@ -177,27 +177,35 @@ def to_data(calls: list[PrimitiveCall], rosname: str | None,
             facts: list[tuple[str, int, str, str]] | None = None,
             node_names: list[tuple[str, str]] | None = None,
             constructions: list[tuple[str, str]] | None = None,
-            unseen: list[str] | None = None) -> dict[str, Any]:
+            unseen: list[str] | None = None,
+            made_under: list[tuple[str, tuple[Condition, ...]]] | None = None
+            ) -> dict[str, Any]:
     return {"calls": [dataclasses.asdict(c) for c in calls], "rosname": rosname,
             "diagnostics": [dataclasses.asdict(d) for d in diagnostics],
             "facts": [list(f) for f in facts or ()],
             "node_names": [list(n) for n in node_names or ()],
             "constructions": [list(n) for n in constructions or ()],
-            "unseen": list(unseen or ())}
+            "unseen": list(unseen or ()),
+            "made_under": [[made, [dataclasses.asdict(c) for c in under]]
+                           for made, under in made_under or ()]}
 
 
 def from_data(data: dict[str, Any]) -> tuple[
         list[PrimitiveCall], str | None, list[Diagnostic], list[tuple[str, int, str, str]],
-        list[tuple[str, str]], list[tuple[str, str]], list[str]]:
+        list[tuple[str, str]], list[tuple[str, str]], list[str],
+        list[tuple[str, tuple[Condition, ...]]]]:
     """Raises ValueError / TypeError / KeyError for data that is not ours."""
     calls = []
     for item in data["calls"]:
         item = dict(item)
         item["location"] = Location(**item["location"])
-        item["conditions"] = tuple(
-            Condition(**{**c, "location": Location(**c["location"])})
-            for c in item["conditions"])
+        item["conditions"] = _conditions(item["conditions"])
         calls.append(PrimitiveCall(**item))
+    made_under = []
+    for made, under in data.get("made_under", ()):
+        if not isinstance(made, str):
+            raise TypeError("made_under")
+        made_under.append((made, _conditions(under)))
     # the severity comes from today's catalogue, not from when the entry was written
     diagnostics = [Diagnostic(**{**d, "location": Location(**d["location"]),
                                  "severity": _severity(d["code"], d["severity"])})
@@ -215,7 +223,11 @@ def from_data(data: dict[str, Any]) -> tuple[
     if not (isinstance(unseen, list) and all(isinstance(word, str) for word in unseen)):
         raise TypeError("unseen")
     return (calls, rosname, diagnostics, facts, _pairs(data, "node_names"),
-            _pairs(data, "constructions"), unseen)
+            _pairs(data, "constructions"), unseen, made_under)
+
+
+def _conditions(data: Any) -> tuple[Condition, ...]:
+    return tuple(Condition(**{**c, "location": Location(**c["location"])}) for c in data)
 
 
 def _pairs(data: dict[str, Any], key: str) -> list[tuple[str, str]]:

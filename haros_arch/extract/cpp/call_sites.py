@@ -12,6 +12,7 @@ files pass: one ROS call per value.
 
 from __future__ import annotations
 
+import itertools
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 
@@ -31,6 +32,7 @@ from .writes import writes_of
 
 _CALLABLE = frozenset({CursorKind.FUNCTION_DECL, CursorKind.CXX_METHOD, CursorKind.CONSTRUCTOR,
                        CursorKind.FUNCTION_TEMPLATE})
+_CONSTRUCTORS = frozenset({CursorKind.CONSTRUCTOR, CursorKind.FUNCTION_TEMPLATE})
 _MAKERS = frozenset({"make_shared", "make_unique", "allocate_shared"})
 
 
@@ -204,13 +206,26 @@ class CallSites:
                     if callee is not None:
                         self._index.setdefault(key_of(callee.canonical), []).append(
                             (node, function))
+                # a constructor that delegates to another calls it with that argument
+                # list (``Filter(nh, priv) : Filter(nh, priv, getName()) {}``)
+                if function.kind in _CONSTRUCTORS:
+                    arguments = delegation(function)
+                    target = delegated_to(function, arguments) if arguments is not None \
+                        else None
+                    if arguments is not None and target is not None and (
+                        arguments.kind != CursorKind.CALL_EXPR  # that is one above
+                    ):
+                        self._index.setdefault(key_of(target.canonical), []).append(
+                            (arguments, function))
         return self._index
 
 
 def argument(call: Cursor, parm: Cursor, index: int) -> Cursor | None:
     """What ``call`` passes for parameter ``parm`` (at ``index``): the written argument,
-    or the parameter's default when the call leaves it out."""
-    args = list(call.get_arguments())
+    or the parameter's default when the call leaves it out. A constructor's delegation
+    (``delegation``) is its argument list."""
+    args = list(call.get_arguments()) if call.kind == CursorKind.CALL_EXPR \
+        else list(call.get_children())
     if index < len(args) and not is_default_argument(args[index]):
         return args[index]
     return default_argument(parm)
@@ -233,6 +248,57 @@ def default_argument(parm: Cursor) -> Cursor | None:
             if value:
                 return value[-1]
     return None
+
+
+def is_constructor(function: Cursor) -> bool:
+    """A constructor, or a constructor template (``ServiceServer<ServiceT>``)."""
+    parent = function.semantic_parent
+    return function.kind == CursorKind.CONSTRUCTOR or (
+        parent is not None and function.spelling.split("<")[0] == parent.spelling)
+
+
+def delegation(function: Cursor) -> Cursor | None:
+    """The call of the constructor that constructor ``function`` delegates to (``T(a) :
+    T(a, "x") {}``): the reference to its own class, then the call, or the argument list
+    when clang kept no call (always so in a class template, whose arguments depend on a
+    template parameter): an unexposed expression whose children are the arguments."""
+    if not is_constructor(function):
+        return None
+    parent = function.semantic_parent
+    own = parent.spelling.split("<")[0] if parent is not None else ""
+    for first, second in itertools.pairwise(function.get_children()):
+        if first.kind == CursorKind.TYPE_REF and own and (
+            first.spelling.split("<")[0].split("::")[-1].split()[-1] == own  # "class T"
+        ) and second.kind in (CursorKind.UNEXPOSED_EXPR, CursorKind.CALL_EXPR):
+            inner = list(second.get_children()) if second.kind == CursorKind.UNEXPOSED_EXPR \
+                else [second]
+            target = inner[0].referenced if len(inner) == 1 and (
+                inner[0].kind == CursorKind.CALL_EXPR) else None
+            if target is not None and target.kind == CursorKind.CONSTRUCTOR and (
+                target.semantic_parent is not None
+                and target.semantic_parent.spelling.split("<")[0] == own
+            ):
+                return inner[0]  # the call, resolved (not one of an argument's class)
+            return second if second.kind == CursorKind.UNEXPOSED_EXPR else None
+    return None
+
+
+def delegated_to(function: Cursor, arguments: Cursor) -> Cursor | None:
+    """The one other constructor of ``function``'s class that may take the delegation's
+    ``arguments`` (the closest, as ``closest``), None when no single one does."""
+    parent = function.semantic_parent
+    if parent is None:
+        return None
+    if arguments.kind == CursorKind.CALL_EXPR:
+        target = arguments.referenced
+        return target if target is not None and target.semantic_parent is not None and (
+            key_of(target.semantic_parent) == key_of(parent)) else None
+    args = list(arguments.get_children())
+    own = key_of(function.canonical)
+    found = [c for c in parent.get_children() if c.kind in _CONSTRUCTORS and is_constructor(c)
+             and key_of(c.canonical) != own and _takes(c, len(args))]
+    found = closest(found, args)
+    return found[0] if len(found) == 1 else None
 
 
 def callee_of(call: Cursor) -> Cursor | None:
@@ -330,8 +396,18 @@ def constructor_values(field: Cursor, source: dict[str, bytes]
         if definition is None or _copies(definition, owner):
             continue
         value = _written(field, definition, True, source)
+        if value is None and _delegates(definition):
+            continue  # the constructor it delegates to gives the value, with its arguments
         (writing if value is not None else leaving).append((value, definition))
     return writing + leaving
+
+
+def _delegates(constructor: Cursor) -> bool:
+    """Whether a constructor delegates to one other constructor of its class that this
+    file defines (whose values, read with the delegation's arguments, are the members')."""
+    arguments = delegation(constructor)
+    target = delegated_to(constructor, arguments) if arguments is not None else None
+    return target is not None and target.get_definition() is not None
 
 
 def _copies(constructor: Cursor, owner: Cursor) -> bool:

@@ -12,7 +12,8 @@ exception declaration; a ``switch``'s is its value against the ``case`` labels t
 call follows (``mode == 1``; after ``default:``, ``mode != 1 && mode != 2``). Condition
 texts are taken from the source as written (macros unexpanded), whitespace collapsed.
 A condition in ``main(argc, argv)`` says so (``program_args``): its ``argc`` / ``argv``
-are the program's arguments, which the graph can decide from a launch file's ``args``.
+are the program's arguments, which the graph can decide from a launch file's ``args``,
+as it can the local that keeps what rclcpp leaves of them (``args_left``).
 """
 
 from __future__ import annotations
@@ -41,6 +42,8 @@ class ConditionReader:
         self.source = source
         self.where = where
         self.in_main = False  # the function walked is main(argc, argv)
+        # main's local that holds the arguments the client library leaves (``args_left``)
+        self.args_left: str | None = None
 
     def branches(self, node: Cursor) -> list[Branch]:
         kind = node.kind
@@ -129,7 +132,24 @@ class ConditionReader:
     # -- text -------------------------------------------------------------------------
 
     def _condition(self, node: Cursor, statement: str, text: str) -> Condition:
-        return Condition(text, "source", statement, self.where(node), self.in_main)
+        return Condition(text, "source", statement, self.where(node), self.in_main,
+                         self.args_left if self.in_main else None)
+
+    def enter(self, function: Cursor, arguments_left: frozenset[str]) -> None:
+        """Read the conditions of ``function`` next: whether it is ``main(argc, argv)``,
+        and its local initialised by a call of ``arguments_left`` (rclcpp's
+        ``init_and_remove_ros_arguments``), when it has one such local."""
+        params = [c.spelling for c in function.get_children()
+                  if c.kind == CursorKind.PARM_DECL]
+        self.in_main = function.spelling == "main" and params[:2] == ["argc", "argv"]
+        self.args_left = None
+        if not self.in_main:
+            return
+        found = {node.spelling for node in function.walk_preorder()
+                 if node.kind == CursorKind.VAR_DECL and any(
+                     call.kind == CursorKind.CALL_EXPR and call.spelling in arguments_left
+                     for call in node.walk_preorder())}
+        self.args_left = found.pop() if len(found) == 1 else None
 
     def _bytes(self, node_file: object) -> bytes | None:
         name = getattr(node_file, "name", None)

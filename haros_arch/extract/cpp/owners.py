@@ -97,6 +97,16 @@ def opaque_construction(call: Cursor, owned: Callable[[str], bool]) -> Cursor | 
     return made[0]
 
 
+def constructors_here(cls: Cursor) -> bool:
+    """Whether the unit has the code of a constructor of ``cls``: defined in the class,
+    out of it in a file of the unit, or as a template (``_code_here``)."""
+    definition = cls.get_definition() or cls
+    for child in definition.get_children():
+        if child.kind == CursorKind.CONSTRUCTOR and child.get_definition() is not None:
+            return True
+    return _code_here(None, cls)
+
+
 def _code_here(constructor: Cursor | None, cls: Cursor) -> bool:
     """Whether the unit has the code of the constructor (or, made through make_shared,
     of one of the class's constructors), a template's too (a header's class template or

@@ -46,6 +46,7 @@ from .links import Fact, argument_facts, constructed_by
 from .members import MemberWrites, member_of
 from .owners import (
     constructed_class,
+    constructors_here,
     handle_node,
     node_arguments,
     opaque_construction,
@@ -95,6 +96,10 @@ _ZEROED: dict[TypeKind, object] = {
     TypeKind.ULONG: 0, TypeKind.LONGLONG: 0, TypeKind.ULONGLONG: 0, TypeKind.SHORT: 0,
     TypeKind.USHORT: 0, TypeKind.FLOAT: 0.0, TypeKind.DOUBLE: 0.0,
 }
+# the classes the API rows model: their construction is a call we read
+_API_CLASSES = frozenset(owner for owner, _ in [*api.ALL, *api.OPTIONS]) | api.HANDLE_CLASSES
+# what can build an object (``_unseen_class``)
+_MAKES = frozenset({CursorKind.CALL_EXPR, CursorKind.VAR_DECL, CursorKind.CXX_NEW_EXPR})
 MAX_SITE_DEPTH = 3  # constructors of constructors whose sites' conditions are followed
 _PREPROCESSED = frozenset({CursorKind.MACRO_INSTANTIATION, CursorKind.INCLUSION_DIRECTIVE})
 _PARAM_KINDS = ("read", "declare")
@@ -108,8 +113,13 @@ class CallFinder:
 
     def __init__(self, tu: TranslationUnit, source: dict[str, bytes],
                  owned: Callable[[str], bool], where: Callable[[Cursor], Location],
-                 ros2: bool = False, declared: str | None = None) -> None:
+                 ros2: bool = False, declared: str | None = None,
+                 clients: Callable[[str, str], bool] | None = None) -> None:
         self.tu = tu
+        # ROS 1: whether a class of a package (both by name) may make ROS calls in code
+        # of its own, not handed the node (``_unseen_class``); None in ROS 2
+        self.clients = clients
+        self._classes_said: set[str] = set()
         # the header of the names declared permissively (``synthesis``): a call of one
         # given the node hands it to code nobody reads (``_to_unknown``)
         self.declared = declared
@@ -150,6 +160,8 @@ class CallFinder:
         # its constructor's node when it names none itself (a device object given the
         # node's handle)
         self.constructions: list[tuple[str, str]] = []
+        # each construction of a class of the workspace and its source conditions
+        self.made_under: list[tuple[str, tuple[Condition, ...]]] = []
         self.diagnostics: list[Diagnostic] = []
         # the words of the declarations of the classes the unit constructs without the
         # code of their constructor: what those build is not seen (``links.resolve``)
@@ -258,8 +270,12 @@ class CallFinder:
         a function without one adds nothing, and its walk is left out."""
         names, rows = self.wrappers.names, self._unresolved_rows()
         nodes = self.wrappers.preorder.get(id(function))
+        if self.clients is not None and function.kind == CursorKind.CONSTRUCTOR:
+            self._unseen_members(function)
         for node in function.walk_preorder() if nodes is None else nodes:
             kind = node.kind
+            if kind in _MAKES:
+                self._unseen_class(node)  # in every function, walked or not
             if kind == CursorKind.CALL_EXPR:
                 self._to_unknown(node)  # in every function, walked or not
                 spelling = node.spelling
@@ -279,9 +295,8 @@ class CallFinder:
 
     def _function(self, function: Cursor) -> None:
         scope = self._scope = Scope(function, self.macros, self.source, self.sites)
-        params = [c.spelling for c in function.get_children() if c.kind == CursorKind.PARM_DECL]
         # main(argc, argv): its conditions over them are over the program's arguments
-        self.reader.in_main = function.spelling == "main" and params[:2] == ["argc", "argv"]
+        self.reader.enter(function, _ARGUMENTS_LEFT)
         self._owner = owner_of(function)
         self._constructor = None
         # of a class, not a class template: a template's constructions name its
@@ -301,7 +316,7 @@ class CallFinder:
         # a constructor's calls exist where the class is constructed: under the
         # conditions of its construction sites in this file
         made_under = self._constructed_under(function, 0)
-        self.reader.in_main = function.spelling == "main" and params[:2] == ["argc", "argv"]
+        self.reader.enter(function, _ARGUMENTS_LEFT)
         stack: list[tuple[Cursor, tuple[Condition, ...]]] = [
             (child, made_under) for child in reversed(list(function.get_children()))
             if child.kind != CursorKind.PARM_DECL]
@@ -320,8 +335,10 @@ class CallFinder:
             elif node.kind == CursorKind.CALL_EXPR and not node.spelling:
                 self._dependent(node, conditions, scope)
             if node.kind == CursorKind.CALL_EXPR:
-                self._construction(node)
+                self._construction(node, conditions)
                 self._to_unknown(node)
+            if node.kind in _MAKES:
+                self._unseen_class(node)
             tested.visit(node)
             branches = self.reader.branches(node)
             stack.extend((child, conditions + extra) for child, extra in reversed(branches))
@@ -355,14 +372,13 @@ class CallFinder:
         """The source conditions of ``call`` in the body of ``function`` (None when it is
         not found there), as ``_function`` reads them."""
         wanted = place_of(call)
-        params = [c.spelling for c in function.get_children() if c.kind == CursorKind.PARM_DECL]
-        self.reader.in_main = function.spelling == "main" and params[:2] == ["argc", "argv"]
+        self.reader.enter(function, _ARGUMENTS_LEFT)
         stack: list[tuple[Cursor, tuple[Condition, ...]]] = [
             (child, ()) for child in reversed(list(function.get_children()))
             if child.kind != CursorKind.PARM_DECL]
         while stack:
             node, conditions = stack.pop()
-            if node.kind == CursorKind.CALL_EXPR and place_of(node) == wanted:
+            if node.kind == call.kind and place_of(node) == wanted:  # a delegation too
                 return conditions
             branches = self.reader.branches(node)
             stack.extend((child, conditions + extra) for child, extra in reversed(branches))
@@ -500,7 +516,7 @@ class CallFinder:
     def _unresolved_rows(self) -> dict[str, api.RosFunction]:
         return api.UNRESOLVED_ROS2 if self.ros2 else api.UNRESOLVED_ROS1
 
-    def _construction(self, call: Cursor) -> None:
+    def _construction(self, call: Cursor, conditions: tuple[Condition, ...] = ()) -> None:
         """Record that the function being walked constructs a class of the workspace;
         say so when that class is another package's, built here with the node and
         defined elsewhere (``CPP_NODE_PASSED``: its calls on the node are not read)."""
@@ -521,10 +537,106 @@ class CallFinder:
                     "CPP_NODE_PASSED", here, cls=qualified_name(cls), package=there.package,
                     given="".join(t.spelling for t in given.get_tokens())[:60]))
         name = constructed_class(call, self.owned)
-        if name is not None and self._owner is not None and name != self._owner and (
-            (self._owner, name) not in self.constructions
-        ):
-            self.constructions.append((self._owner, name))
+        if name is not None and self._owner is not None and name != self._owner:
+            self.made_under.append((name, tuple(c for c in conditions if c.kind == "source")))
+            if (self._owner, name) not in self.constructions:
+                self.constructions.append((self._owner, name))
+
+    def _unseen_class(self, node: Cursor) -> None:
+        """ROS 1: say where ``node`` builds an object of a class of another ROS package
+        whose code this parse does not have (``_unseen_of``): ``CPP_CLASS_UNSEEN``. A
+        variable of the class (``ns::C c(args);``), ``new ns::C(...)``,
+        ``make_shared<ns::C>(...)``, or a call of a constructor of the workspace; a
+        call of a name declared permissively is no construction (``tf::pointMsgToTF(a,
+        b)`` is a function, unknown to the parse as a type or not)."""
+        if self.clients is None:
+            return
+        kind = node.kind
+        if kind == CursorKind.VAR_DECL:
+            if node.type.get_canonical().kind == TypeKind.RECORD:
+                # ``C c = f();`` keeps what ``f`` returns: built where ``f`` built it
+                self._say_unseen(node.type.get_canonical().get_declaration(), node,
+                                 not _copy_initialised(node))
+        elif kind == CursorKind.CXX_NEW_EXPR:
+            made = node.type.get_canonical().get_pointee()
+            if made.kind == TypeKind.RECORD:
+                self._say_unseen(made.get_declaration(), node, True)
+        elif kind == CursorKind.CALL_EXPR:
+            target = node.referenced
+            if target is None:
+                return
+            if target.kind == CursorKind.CONSTRUCTOR:
+                self._say_unseen(target.semantic_parent, node, False)
+            elif (qualified_name(target.semantic_parent), target.spelling) in api.FACTORIES:
+                made_cls = factory_made(node)
+                if made_cls is not None:
+                    self._say_unseen(made_cls, node, True)
+
+    def _unseen_members(self, constructor: Cursor) -> None:
+        """ROS 1: the members of the constructor's class that it builds by value, whose
+        class is one ``_unseen_of`` finds, at their initialiser (``costmap_ros_("costmap",
+        tf_)``), else at their declaration (built by default, which the code does not
+        write: ``base_local_planner::TrajectoryPlannerROS planner_;``)."""
+        if not constructor.is_definition():
+            return
+        owner = constructor.semantic_parent
+        if owner is None:
+            return
+        named = {place_of(child.referenced): child for child in constructor.get_children()
+                 if child.kind == CursorKind.MEMBER_REF and child.referenced is not None}
+        for member in owner.get_children():
+            if member.kind == CursorKind.FIELD_DECL and (
+                member.type.get_canonical().kind == TypeKind.RECORD
+            ):
+                self._say_unseen(member.type.get_canonical().get_declaration(),
+                                 named.get(place_of(member), member), True)
+
+    def _say_unseen(self, cls: Cursor | None, at: Cursor, declared: bool) -> None:
+        found = self._unseen_of(cls, declared) if cls is not None else None
+        if found is None:
+            return
+        name, package = found
+        self._classes_said.add(name)
+        self.diagnostics.append(diag.make("CPP_CLASS_UNSEEN", self.where(at), cls=name,
+                                          package=package))
+
+    def _unseen_of(self, cls: Cursor, declared: bool) -> tuple[str, str] | None:
+        """The class (qualified) and ROS package of ``cls`` when it is a class of another
+        ROS package whose constructor's code the parse does not have: one the parse
+        knows only as a name declared permissively (its header is missing) in the
+        namespace of a package, built where the code names it as a type
+        (``declared``), or a class of another workspace package that declares a
+        constructor the unit has no code of; when the ``clients`` predicate accepts
+        the package and the class. A class the API rows model (``tf::TransformListener``,
+        an actionlib client, one that inherits such a class's constructors) is read by
+        its row; one of a package the stand-in headers provide is no client's."""
+        assert self.clients is not None
+        if cls.kind not in (CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL,
+                            CursorKind.CLASS_TEMPLATE):
+            return None
+        where = cls.location.file
+        if where is None:
+            return None
+        name = qualified_name(cls)
+        if not name or name in self._classes_said or "::" not in name:
+            return None
+        if where.name == self.declared:
+            if not declared or cls.spelling == synthesis.ANY or cls.spelling.endswith("Ptr"):
+                return None  # ``pkg::NameConstPtr``: a message's pointer, as ROS 1 names it
+            package = name.split("::", 1)[0]
+        elif self.owned(where.name):
+            package = self.where(cls).package or ""
+            here = self.where(self.tu.cursor).package
+            definition = cls.get_definition() or cls
+            if not package or package == here or constructors_here(cls) or not any(
+                child.kind == CursorKind.CONSTRUCTOR for child in definition.get_children()
+            ):
+                return None  # a class without constructors of its own runs no code
+        else:
+            return None
+        if name in _API_CLASSES or qualified_name(row_class(cls)) in _API_CLASSES:
+            return None
+        return (name, package) if self.clients(package, name) else None
 
     def _to_unknown(self, call: Cursor) -> None:
         """Say when ``call`` gives the node to a function or class the parse knows only
@@ -1035,6 +1147,16 @@ class CallFinder:
 _CLASSES = frozenset({CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL, CursorKind.UNION_DECL,
                       CursorKind.CLASS_TEMPLATE,
                       CursorKind.CLASS_TEMPLATE_PARTIAL_SPECIALIZATION})
+
+
+def _copy_initialised(var: Cursor) -> bool:
+    """Whether a variable's declaration is ``T name = ...`` (its value copied or moved
+    from an expression), not ``T name(...)``, ``T name{...}`` nor ``T name;``."""
+    tokens = [t.spelling for t in itertools.islice(var.get_tokens(), 64)]
+    for index, token in enumerate(tokens[:-1]):
+        if token == var.spelling:
+            return tokens[index + 1] == "="
+    return False
 
 
 def _same_variable(a: Cursor, b: Cursor) -> bool:

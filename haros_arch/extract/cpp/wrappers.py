@@ -25,7 +25,6 @@ from __future__ import annotations
 
 import bisect
 import dataclasses
-import itertools
 import re
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
@@ -35,7 +34,7 @@ from clang.cindex import Cursor, CursorKind, TypeKind
 
 from ...model.conditions import Condition
 from . import api, msg_types
-from .call_sites import closest
+from .call_sites import closest, delegation, is_constructor
 from .call_types import template_argument
 from .cursors import Node, overloads
 from .handles import callback, callback_name, is_handle, join_name, qualified_name
@@ -998,13 +997,6 @@ def _targets(call: Cursor) -> list[Key]:
     return [_key(d.canonical) for d in _overloads(children[0])] if children else []
 
 
-def is_constructor(function: Cursor) -> bool:
-    """A constructor, or a constructor template (``ServiceServer<ServiceT>``)."""
-    parent = function.semantic_parent
-    return function.kind == CursorKind.CONSTRUCTOR or (
-        parent is not None and function.spelling.split("<")[0] == parent.spelling)
-
-
 def of_class_template(function: Cursor) -> bool:
     parent = function.semantic_parent
     return parent is not None and parent.kind in (
@@ -1096,19 +1088,10 @@ def _scan(function: Cursor, every: list[Cursor] | None = None
 
 
 def _delegation(function: Cursor) -> Cursor | None:
-    """The argument list of the constructor a class template's constructor delegates
-    to, when clang kept it as one (its arguments depend on a template parameter): the
-    reference to its own class, then an unexposed expression, among its children."""
-    if not (is_constructor(function) and of_class_template(function)):
-        return None
-    own = function.semantic_parent.spelling if function.semantic_parent else None
-    children = list(function.get_children())
-    for first, second in itertools.pairwise(children):
-        if first.kind == CursorKind.TYPE_REF and own and (
-            first.spelling.split("<")[0].split("::")[-1] == own.split("<")[0]
-        ) and second.kind == CursorKind.UNEXPOSED_EXPR:
-            return second
-    return None
+    """A class template's constructor's delegation (``call_sites.delegation``): clang
+    keeps no call of the constructor it delegates to, only the argument list."""
+    found = delegation(function) if of_class_template(function) else None
+    return found if found is not None and found.kind == CursorKind.UNEXPOSED_EXPR else None
 
 
 def _dependent_name(name: str) -> bool:

@@ -1,0 +1,361 @@
+"""A ROS 1 node that builds an object of another ROS package's class whose code is not
+read is partial (CPP_CLASS_UNSEEN): in ROS 1 any code can make its own NodeHandle, so
+the class may read parameters and make topics under the names it is given without being
+handed the node. navigation_experimental's assisted_teleop builds costmap_2d's
+Costmap2DROS("costmap", tf) and a base_local_planner TrajectoryPlannerROS, neither in the
+workspace; its launch file's costmap and planner parameters were called unread. Classes
+whose API the rows model, classes of packages that are no ROS client, and ROS 2 code
+(which communicates only through a node it is given) leave the node complete."""
+
+from __future__ import annotations
+
+import os
+from typing import Any
+
+from conftest import package_xml
+
+from haros_arch.pipeline import Options, analyse
+from haros_arch.project import load
+
+TELEOP = """
+    #include <string>
+    #include <ros/ros.h>
+    #include <costmap_2d/costmap_2d_ros.h>
+    #include <base_local_planner/trajectory_planner_ros.h>
+    #include <tf2_ros/buffer.h>
+    #include <tf2_ros/transform_listener.h>
+
+    class Teleop {
+     public:
+      Teleop() : tfl_(tf_), costmap_ros_("costmap", tf_) {
+        ros::NodeHandle private_nh("~");
+        private_nh.param("controller_frequency", frequency_, 10.0);
+        planner_.initialize("planner", &tf_, &costmap_ros_);
+      }
+     private:
+      double frequency_;
+      tf2_ros::Buffer tf_;
+      tf2_ros::TransformListener tfl_;
+      costmap_2d::Costmap2DROS costmap_ros_;
+      base_local_planner::TrajectoryPlannerROS planner_;
+    };
+
+    int main(int argc, char** argv) {
+      ros::init(argc, argv, "teleop");
+      Teleop teleop;
+      ros::spin();
+    }
+    """
+
+
+def _depends(name: str, *deps: str, build_type: str | None = None) -> str:
+    return package_xml(name, build_type).replace(
+        "</package>", "".join(f"<depend>{d}</depend>" for d in deps) + "</package>")
+
+
+def _model(write_tree: Any, files: dict[str, str]) -> Any:
+    root = write_tree({**files,
+                       "project.yaml": "project: p\nworkspace: [src]\nconfigurations: {}\n"})
+    return analyse(load(str(root / "project.yaml")), {"PATH": os.environ.get("PATH", "")},
+                   Options(cache_dir=None))
+
+
+def _teleop(write_tree: Any, code: str, *deps: str) -> Any:
+    model = _model(write_tree, {
+        "src/teleop/package.xml": _depends("teleop", "roscpp", "tf2_ros", *deps),
+        "src/teleop/CMakeLists.txt": "project(teleop)\nadd_executable(teleop src/teleop.cpp)\n",
+        "src/teleop/src/teleop.cpp": code,
+    })
+    node = next(n for p in model.packages for n in p.nodes if n.name == "teleop/teleop")
+    return node, model
+
+
+def test_a_missing_ros_package_class_built_by_the_node_makes_it_partial(
+        write_tree: Any) -> None:
+    node, _ = _teleop(write_tree, TELEOP, "costmap_2d", "base_local_planner")
+    assert node.completeness == "partial"
+    reasons = node.completeness_reasons
+    # the construction in the initialiser list, and the member built by default
+    assert any(r.startswith("teleop/src/teleop.cpp:10:")
+               and "costmap_2d::Costmap2DROS of ROS package costmap_2d is built here" in r
+               for r in reasons), reasons
+    assert any(r.startswith("teleop/src/teleop.cpp:20:")
+               and "base_local_planner::TrajectoryPlannerROS of ROS package "
+               "base_local_planner" in r for r in reasons), reasons
+    # the node's own reads are still read
+    assert "~controller_frequency" in [c.name for c in node.calls]
+
+
+def test_a_class_in_no_dependency_namespace_leaves_it_complete(write_tree: Any) -> None:
+    # a vendor library's class: its namespace is no package the node depends on
+    code = TELEOP.replace("costmap_2d::Costmap2DROS", "vendor::Grid").replace(
+        "base_local_planner::TrajectoryPlannerROS", "vendor::Planner")
+    node, _ = _teleop(write_tree, code, "costmap_2d", "base_local_planner")
+    assert node.completeness == "complete", node.completeness_reasons
+
+
+def test_a_locally_built_and_a_new_object(write_tree: Any) -> None:
+    code = TELEOP.replace("      Teleop teleop;\n", "      Teleop teleop;\n"
+                          "      filters::FilterChain chain(\"double\");\n"
+                          "      auto* map = new costmap_2d::Costmap2DROS(\"map\", 0);\n")
+    node, _ = _teleop(write_tree, code.replace("costmap_2d::Costmap2DROS costmap_ros_;",
+                                               "int costmap_ros_;").replace(
+        "base_local_planner::TrajectoryPlannerROS planner_;", "int planner_;").replace(
+        "planner_.initialize(\"planner\", &tf_, &costmap_ros_);", ""),
+        "costmap_2d", "filters")
+    reasons = node.completeness_reasons
+    assert any(r.startswith("teleop/src/teleop.cpp:26:")
+               and "filters::FilterChain of ROS package filters" in r for r in reasons), reasons
+    assert any(r.startswith("teleop/src/teleop.cpp:27:")
+               and "costmap_2d::Costmap2DROS" in r for r in reasons), reasons
+
+
+MODELLED = """
+    #include <ros/ros.h>
+    #include <tf/transform_listener.h>
+    #include <actionlib/client/simple_action_client.h>
+    #include <move_base_msgs/MoveBaseAction.h>
+
+    int main(int argc, char** argv) {
+      ros::init(argc, argv, "teleop");
+      tf::TransformListener listener;
+      actionlib::SimpleActionClient<move_base_msgs::MoveBaseAction> client("move_base", true);
+      ros::spin();
+    }
+    """
+
+
+def test_classes_the_api_rows_model_leave_it_complete(write_tree: Any) -> None:
+    node, _ = _teleop(write_tree, MODELLED, "tf", "actionlib", "move_base_msgs")
+    assert node.completeness == "complete", node.completeness_reasons
+    assert {c.name for c in node.calls} >= {"move_base", "/tf"}
+
+
+LIBRARY_HEADER = """
+    #include <string>
+    namespace grid {
+    class Map {
+     public:
+      explicit Map(const std::string & name);
+     private:
+      std::string name_;
+    };
+    }  // namespace grid
+    """
+
+LIBRARY_SOURCE = """
+    #include <ros/ros.h>
+    #include "grid/map.h"
+    namespace grid {
+    Map::Map(const std::string & name) : name_(name) {
+      ros::NodeHandle nh("~/" + name);
+      int size; nh.param("size", size, 10);
+    }
+    }  // namespace grid
+    """
+
+USER = """
+    #include <ros/ros.h>
+    #include "grid/map.h"
+    int main(int argc, char** argv) {
+      ros::init(argc, argv, "user");
+      grid::Map map("map");
+      ros::spin();
+    }
+    """
+
+
+def _user(write_tree: Any, grid_deps: tuple[str, ...], links: bool,
+          source: str = LIBRARY_SOURCE) -> Any:
+    link = "target_link_libraries(user ${catkin_LIBRARIES})\n" if links else ""
+    model = _model(write_tree, {
+        "src/grid/package.xml": _depends("grid", *grid_deps),
+        "src/grid/CMakeLists.txt":
+            "project(grid)\nfind_package(catkin REQUIRED)\n"
+            "catkin_package(INCLUDE_DIRS include LIBRARIES grid)\n"
+            "add_library(grid src/map.cpp)\n",
+        "src/grid/include/grid/map.h": LIBRARY_HEADER,
+        "src/grid/src/map.cpp": source,
+        "src/user/package.xml": _depends("user", "roscpp", "grid"),
+        "src/user/CMakeLists.txt":
+            "project(user)\nfind_package(catkin REQUIRED COMPONENTS roscpp grid)\n"
+            "add_executable(user src/user.cpp)\n" + link,
+        "src/user/src/user.cpp": USER,
+    })
+    node = next(n for p in model.packages for n in p.nodes if n.name == "user/user")
+    node.said = [d for d in model.diagnostics if d.code == "CPP_CLASS_UNSEEN"]
+    return node
+
+
+def test_a_workspace_ros_class_whose_library_is_not_read(write_tree: Any) -> None:
+    node = _user(write_tree, ("roscpp",), False)
+    assert node.completeness == "partial"
+    assert [d.location.line for d in node.said] == [5]
+    assert any(r.startswith("user/src/user.cpp:5:")
+               and "grid::Map of ROS package grid" in r
+               for r in node.completeness_reasons), node.completeness_reasons
+
+
+def test_a_workspace_class_whose_library_is_linked_is_read(write_tree: Any) -> None:
+    node = _user(write_tree, ("roscpp",), True)
+    assert node.completeness == "complete", node.completeness_reasons
+    assert "~map/size" in [c.name for c in node.calls]
+    # the unit's information is not said either: the class's code is read
+    assert node.said == []
+
+
+def test_a_workspace_class_of_a_package_without_roscpp(write_tree: Any) -> None:
+    node = _user(write_tree, (), False)
+    assert node.completeness == "complete", node.completeness_reasons
+
+
+ROS2 = """
+    #include <memory>
+    #include <rclcpp/rclcpp.hpp>
+    #include <costmap_2d/costmap_2d_ros.hpp>
+
+    class Teleop : public rclcpp::Node {
+     public:
+      Teleop() : Node("teleop"), grid_("costmap") {
+        rate_ = declare_parameter<double>("rate", 10.0);
+      }
+     private:
+      double rate_;
+      costmap_2d::Grid grid_;
+    };
+
+    int main(int argc, char ** argv) {
+      rclcpp::init(argc, argv);
+      rclcpp::spin(std::make_shared<Teleop>());
+    }
+    """
+
+
+def test_ros2_a_class_not_given_the_node_leaves_it_complete(write_tree: Any) -> None:
+    # a ROS 2 class communicates only through a node it is given
+    model = _model(write_tree, {
+        "src/teleop/package.xml": _depends("teleop", "rclcpp", "costmap_2d",
+                                           build_type="ament_cmake"),
+        "src/teleop/CMakeLists.txt": "project(teleop)\nadd_executable(teleop src/teleop.cpp)\n",
+        "src/teleop/src/teleop.cpp": ROS2,
+    })
+    node = next(n for p in model.packages for n in p.nodes if n.name == "teleop/teleop")
+    assert node.completeness == "complete", node.completeness_reasons
+
+
+def test_a_workspace_class_whose_code_makes_no_handle(write_tree: Any) -> None:
+    # grid depends on roscpp (for its logging), but Map's constructor names no
+    # NodeHandle nor a parameter, topic or service function: it communicates nothing
+    node = _user(write_tree, ("roscpp",), False, LIBRARY_SOURCE.replace(
+        'ros::NodeHandle nh("~/" + name);', 'ROS_INFO("map %s", name.c_str());').replace(
+        'int size; nh.param("size", size, 10);', ''))
+    assert node.completeness == "complete", node.completeness_reasons
+
+
+NOT_CLASSES = """
+    #include <ros/ros.h>
+    #include <vendor_msgs/Mode.h>
+    #include <vendor_msgs/SetMode.h>
+    #include <costmap_2d/cost_values.h>
+    #include <geometry_msgs/PoseStamped.h>
+
+    int main(int argc, char** argv) {
+      ros::init(argc, argv, "teleop");
+      ros::NodeHandle nh;
+      vendor_msgs::Mode mode;
+      vendor_msgs::SetMode srv;
+      vendor_msgs::SetModeRequest request;
+      geometry_msgs::QuaternionStamped q;
+      double cost = costmap_2d::scaled_cost(mode, 3);
+      costmap_2d::convert(q, mode);
+      vendor_msgs::ModeConstPtr last;
+      costmap_2d::Layer copy = costmap_2d::layer_of(mode);
+      ros::Publisher pub = nh.advertise<geometry_msgs::PoseStamped>("pose", 1);
+      ros::spin();
+    }
+    """
+
+
+def test_messages_services_and_function_calls_are_no_classes(write_tree: Any) -> None:
+    # a message or service of a package the node depends on whose header is missing
+    # (<vendor_msgs/Mode.h>: named as ROS 1 generates it), one of the catalogue used
+    # without its header, and calls of names of a missing header: nothing is built
+    node, _ = _teleop(write_tree, NOT_CLASSES, "vendor_msgs", "costmap_2d", "geometry_msgs")
+    assert node.completeness == "complete", node.completeness_reasons
+
+
+LASER = """
+    #include <ros/ros.h>
+    #include <laser_geometry/laser_geometry.h>
+    #include <sensor_msgs/LaserScan.h>
+    #include <sensor_msgs/PointCloud2.h>
+    #include <tf/transform_listener.h>
+
+    class Filter {
+     public:
+      Filter() {
+        sub_ = nh_.subscribe("scan", 5, &Filter::scan, this);
+        pub_ = nh_.advertise<sensor_msgs::PointCloud2>("cloud", 5);
+      }
+     private:
+      void scan(const sensor_msgs::LaserScanConstPtr& msg) {
+        sensor_msgs::PointCloud2 cloud;
+        projector_.transformLaserScanToPointCloud("base", *msg, cloud, listener_, -1.0,
+                                                  laser_geometry::channel_option::Distance);
+        projector_.projectLaser(*msg, cloud);
+        pub_.publish(cloud);
+      }
+      ros::NodeHandle nh_;
+      ros::Subscriber sub_;
+      ros::Publisher pub_;
+      tf::TransformListener listener_;
+      laser_geometry::LaserProjection projector_;
+    };
+
+    int main(int argc, char** argv) {
+      ros::init(argc, argv, "teleop");
+      Filter filter;
+      ros::spin();
+    }
+    """
+
+
+def test_laser_geometry_is_a_stand_in(write_tree: Any) -> None:
+    # laser_geometry installed, not in the workspace: its LaserProjection computes and
+    # makes no ROS call (a stand-in of FALLBACK), so the node stays complete
+    node, model = _teleop(write_tree, LASER, "laser_geometry", "tf", "sensor_msgs")
+    assert node.completeness == "complete", node.completeness_reasons
+    assert {(c.kind, c.name) for c in node.calls} >= {("subscribe", "scan"),
+                                                      ("publish", "cloud")}
+    assert not [d for d in model.diagnostics if d.code in (
+        "CPP_INCLUDE_MISSING", "CPP_PARSE_ERROR", "CPP_NAMES_DECLARED")], [
+        d.message for d in model.diagnostics if d.code.startswith("CPP")]
+
+
+def test_the_cache_follows_the_file_that_defines_the_class(write_tree: Any,
+                                                           tmp_path: Any) -> None:
+    # the unit's cached result holds what the library's source said: a changed source
+    # (its constructor now makes a handle) is read again
+    quiet = LIBRARY_SOURCE.replace(
+        'ros::NodeHandle nh("~/" + name);', 'ROS_INFO("map %s", name.c_str());').replace(
+        'int size; nh.param("size", size, 10);', '')
+    root = write_tree({
+        "src/grid/package.xml": _depends("grid", "roscpp"),
+        "src/grid/CMakeLists.txt": "project(grid)\nadd_library(grid src/map.cpp)\n",
+        "src/grid/include/grid/map.h": LIBRARY_HEADER,
+        "src/grid/src/map.cpp": quiet,
+        "src/user/package.xml": _depends("user", "roscpp", "grid"),
+        "src/user/CMakeLists.txt": "project(user)\nadd_executable(user src/user.cpp)\n",
+        "src/user/src/user.cpp": USER,
+        "project.yaml": "project: p\nworkspace: [src]\nconfigurations: {}\n",
+    })
+    cache = str(tmp_path / "cache")
+
+    def user() -> Any:
+        model = analyse(load(str(root / "project.yaml")),
+                        {"PATH": os.environ.get("PATH", "")}, Options(cache_dir=cache))
+        return next(n for p in model.packages for n in p.nodes if n.name == "user/user")
+
+    assert user().completeness == "complete"
+    (root / "src/grid/src/map.cpp").write_text(LIBRARY_SOURCE)
+    assert user().completeness == "partial"
