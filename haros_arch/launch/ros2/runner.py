@@ -81,6 +81,11 @@ class Runner:
         self.param_entries = 0  # parameter entries applied to nodes (nodes.node_params)
         self.anon: dict[str, Unknown] = {}
         self.guard: LaunchCondition | None = None  # the condition of the action at hand
+        # the unknown output of each Command evaluated, with its command line: a value
+        # that is one of them, through launch configurations (``<let name="d"
+        # value="$(command 'xacro ...')"/>`` then ``value="$(var d)"``), is that command's
+        # output, which robot descriptions read (``nodes.command_line``)
+        self.command_outputs: list[tuple[Unknown, str]] = []
 
     # -- diagnostics and values --------------------------------------------------
     def report(self, code: str, location: Location, **params: object) -> None:
