@@ -80,8 +80,22 @@ def test_each_instance_takes_its_mode_s_arguments() -> None:
         ("publish", "/image_slow"), ("subscribe", "/image"),
         ("write", "/image_throttle/bytes_per_sec"), ("write", "/image_throttle/input_topic"),
         ("write", "/image_throttle/output_topic"), ("write", "/image_throttle/window")]
-    # too few for the output topic: its default, from the input topic's value, not known
+    # too few for the output topic: its default, the input topic's value and "_throttle"
     assert links["/odom_throttle"] == [
-        ("publish", "/?"), ("subscribe", "/odom"),
+        ("publish", "/odom_throttle"), ("subscribe", "/odom"),
         ("write", "/odom_throttle/input_topic"), ("write", "/odom_throttle/msgs_per_sec")]
     assert not [link for n in config.nodes for link in n.links if link.conditions]
+
+
+def test_a_default_that_holds_another_parameter_s_value_names_it() -> None:
+    # declare_parameter("output_topic", input + "_throttle"), input the value of
+    # declare_parameter("input_topic"): the publisher's name is output_topic's value,
+    # else "?_throttle" with input_topic's value in place of the "?"
+    found = extract_cpp([os.path.join(ROOT, "src", "relayer", "src", "throttle.cpp")],
+                        scan([ROOT]), cache_dir=None)
+    (publisher,) = [c for c in found.calls if c.kind == "publish"]
+    assert (publisher.name_param, publisher.name_default, publisher.default_param) == (
+        "output_topic", "?_throttle", "input_topic")
+    (subscriber,) = [c for c in found.calls if c.kind == "subscribe"]
+    assert (subscriber.name_param, subscriber.name_default, subscriber.default_param) == (
+        "input_topic", None, None)

@@ -556,13 +556,21 @@ def test_ros2_throttle_takes_its_output_topic_from_the_argument_its_mode_reads(w
                          arguments=['messages', '/scan', '2.0', '/scan_2hz']),
                     Node(package='topic_tools', executable='throttle', name='image_slow',
                          arguments=['bytes', '/image', '1000', '1.0', '/image_1k']),
+                    Node(package='topic_tools', executable='throttle', name='odom_slow',
+                         arguments=['messages', '/odom', '5.0']),
+                    Node(package='topic_tools', executable='relay', name='echo',
+                         parameters=[{'input_topic': 'imu'}]),
                 ])
             """,
         "project.yaml": "project: p\nconfigurations:\n  c: [base/launch/throttle.launch.py]\n",
     })
     config = _configuration(root)
+    # without an output topic, the default the code declares: the input topic's value
+    # and "_throttle" / "_relay" (relay_node.cpp declares it, tool_base_node.cpp uses it)
     for name, topics in (("/scan_slow", (["/scan"], ["/scan_2hz"])),
-                         ("/image_slow", (["/image"], ["/image_1k"]))):
+                         ("/image_slow", (["/image"], ["/image_1k"])),
+                         ("/odom_slow", (["/odom"], ["/odom_throttle"])),
+                         ("/echo", (["/imu"], ["/imu_relay"]))):
         instance = _instance(config, name)
         assert ([link.name for link in instance.subscribers],
                 [link.name for link in instance.publishers]) == topics

@@ -514,22 +514,32 @@ def _given_name(call: PrimitiveCall, instance: NodeInstance, resources: Resource
         return _node_scoped(call.name)
     if call.name_param is None or UNKNOWN_MARK not in call.name:
         return call.name
-    source = call.name_param
-    if instance.ros_version == 2:
-        source = _node_scoped(source)
-    param_name = RosName.make(source, instance.namespace, instance.name).full
-    param = resources.by_name.get((Parameter, param_name))
-    value: str | None = call.name_default
-    if isinstance(param, Parameter) and param.set_by_launch and isinstance(param.value, str):
-        value = param.value
-    else:  # the node sets it itself from its command-line arguments
-        value = _argument_values(instance).get(param_name, value)
+    value = _parameter_value(call.name_param, call.name_default, instance, resources)
+    if value is not None and UNKNOWN_MARK in value and call.default_param is not None:
+        # the default holds another parameter's value (topic_tools' relay: the input
+        # topic and "_relay"); that one's value, or its own default: known only when it is
+        # one the code sets from a value it knows, not read recursively any further
+        other = _parameter_value(call.default_param, None, instance, resources)
+        value = value.replace(UNKNOWN_MARK, other, 1) if other else None
     if not value:  # none, or empty: no topic is named "" (rosbot's gz bridge guards it)
         return call.name
     if value.startswith(("/", "~")) and (
             call.name == UNKNOWN_MARK or call.name.endswith("/" + UNKNOWN_MARK)):
         return value  # a global or private name is not resolved in the handle's namespace
     return call.name.replace(UNKNOWN_MARK, value, 1)
+
+
+def _parameter_value(written: str, default: str | None, instance: NodeInstance,
+                     resources: Resources) -> str | None:
+    """The text value of the instance's parameter ``written`` (as the code names it):
+    the launch value, else the one the node sets from its arguments, else ``default``."""
+    source = _node_scoped(written) if instance.ros_version == 2 else written
+    param_name = RosName.make(source, instance.namespace, instance.name).full
+    param = resources.by_name.get((Parameter, param_name))
+    if isinstance(param, Parameter) and param.set_by_launch and isinstance(param.value, str):
+        return param.value
+    # the node sets it itself from its command-line arguments
+    return _argument_values(instance).get(param_name, default)
 
 
 def _made_under(node: Node | None, own: str | None) -> tuple[Condition, ...]:

@@ -91,6 +91,8 @@ def call_from_data(c: dict[str, Any]) -> PrimitiveCall:
                          c.get("callback"), conditions(c.get("conditions")),
                          location(c.get("location")),
                          name_param=c.get("name_param"), name_default=c.get("name_default"),
+                         default_param=c.get("default_param") if isinstance(
+                             c.get("default_param"), str) else None,
                          origin=str(c.get("origin", "source")),
                          has_default=bool(c.get("has_default", False)),
                          default=c.get("default"), searched=bool(c.get("searched", False)),

@@ -145,6 +145,27 @@ class PrimitiveCall:
     # no call in that unit gives; the node makes it only if one of its files constructs
     # the class (``extract.cpp.links.resolve``)
     made_in: str | None = field(default=None, metadata={"optional": True})
+    # a name taken from a parameter whose default holds another parameter's value in place
+    # of its one ``?`` (topic_tools' ROS 2 relay: ``output_topic`` defaults to
+    # ``input_topic + "_relay"``, name_default "?_relay"): that other parameter's name, as
+    # the code writes it; the graph fills in its value (launch value, else the value the
+    # node's arguments give it, else its own default)
+    default_param: str | None = field(default=None, metadata={"optional": True})
+
+
+def declared_defaults(calls: list[PrimitiveCall]) -> list[PrimitiveCall]:
+    """The calls, where one takes its name from a parameter whose default it does not
+    know, with the default a declaration of that parameter gives when the default holds a
+    third parameter's value (topic_tools' relay: relay_node.cpp declares ``output_topic``
+    with ``input_topic_ + "_relay"``, tool_base_node.cpp publishes on the member)."""
+    held = {(c.name, c.node_name): (c.name_default, c.default_param) for c in calls
+            if c.kind == "declare" and c.default_param is not None}
+    if not held:
+        return calls
+    return [replace(c, name_default=found[0], default_param=found[1])
+            if c.name_param is not None and c.name_default is None and c.kind != "declare"
+            and (found := held.get((c.name_param, c.node_name))) is not None else c
+            for c in calls]
 
 
 def wire_call(action: PrimitiveCall, kind: CallKind, name: str, type_: str | None,
@@ -154,7 +175,7 @@ def wire_call(action: PrimitiveCall, kind: CallKind, name: str, type_: str | Non
     and facts under the wire's kind, full name and type, with ``origin`` "action"."""
     return replace(action, kind=kind, name=name, type=type_, queue_size=None, qos=None,
                    latch=False, callback=None, name_param=None, name_default=None,
-                   origin="action", conditions=conditions)
+                   default_param=None, origin="action", conditions=conditions)
 
 
 @dataclass

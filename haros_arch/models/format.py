@@ -52,7 +52,7 @@ SCHEMA_VERSION = 2
 SCHEMA = f"haros-arch-model/{SCHEMA_VERSION}"
 SCHEMA_PREFIX = "haros-arch-model/"
 _TEXT_FIELDS = ("type", "name_param", "name_default", "name_each", "handle_namespace",
-                "node_name", "callback", "transport", "variable")
+                "node_name", "callback", "transport", "variable", "default_param")
 
 
 class ModelFileError(ValueError):

@@ -42,7 +42,7 @@ from ..files import read_text
 from ..graph.hints import apply_node_hints
 from ..model.conditions import Condition
 from ..model.location import Location
-from ..model.source import NUMBERED, Node, PrimitiveCall
+from ..model.source import NUMBERED, Node, PrimitiveCall, declared_defaults
 from ..model.values import UNKNOWN_MARK
 from ..pipeline import read_build_files
 from ..workspace import scan
@@ -258,6 +258,7 @@ def _apply_override(task: Task, nodes: list[Node], found: list[Diagnostic]) -> s
             _override_drop(node, block.get("drop"), relative, found)
             _override_conditions(node, block.get("conditions"), relative, found)
             _override_names(node, block.get("names"), relative, found)
+            node.calls = declared_defaults(node.calls)
         if isinstance(block, dict) and isinstance(block.get("aliases"), list):
             node.aliases = [str(a) for a in block["aliases"] if isinstance(a, str)]
         if isinstance(block, dict) and isinstance(block.get("partial"), str):

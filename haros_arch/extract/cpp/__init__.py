@@ -26,7 +26,7 @@ from ...files import MAX_FILE_BYTES, read_text
 from ...manifest import parse_manifest, ros_version
 from ...model.conditions import Condition
 from ...model.location import Location
-from ...model.source import PrimitiveCall
+from ...model.source import PrimitiveCall, declared_defaults
 from ...workspace import Workspace, manifest_of
 from .. import NODELET_LOAD
 from . import cache, links, recall, synthesis, toolchain
@@ -256,6 +256,7 @@ def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True
                 result.calls.append(call)
     result.diagnostics = list(dict.fromkeys(result.diagnostics))
     _name_nodes(result, sorted(paths_units, key=lambda pair: pair[0]), facts)
+    result.calls = declared_defaults(result.calls)
     return result
 
 

@@ -85,10 +85,11 @@ _API_NAMES = frozenset(
     [name for _, name in [*api.ALL, *api.NODE_NAME, *api.RCLCPP_NODE_NAME, *api.FACTORIES]]
     + [parameter_library.LISTENER])
 MAX_DEPTH = 16
-# where a call's name comes from: the parameter, its default, ``EACH`` when the name is
-# each element of that list parameter in turn (PrimitiveCall.name_each), and then the
-# (line, column) of the range-based for that walks it
-NameSource = tuple[str, str | None, str | None, tuple[int, int] | None]
+# where a call's name comes from: a ``Source`` (the parameter, its default, the
+# parameter the default holds), then ``EACH`` when the name is each element of that list
+# parameter in turn (PrimitiveCall.name_each) and the (line, column) of the range-based
+# for that walks it
+NameSource = tuple[str, str | None, str | None, str | None, tuple[int, int] | None]
 EACH = "."
 # builtin types a variable of static storage starts as zero of (C++'s zero-initialisation)
 _ZEROED: dict[TypeKind, object] = {
@@ -106,6 +107,11 @@ _PARAM_KINDS = ("read", "declare")
 CAMERA_INFO = "sensor_msgs/CameraInfo"  # an image_transport camera's sibling topic
 _VALUE_METHODS = frozenset({"c_str", "str", "as_string", "as_int", "as_double", "as_bool",
                             "get_value", "value_to_string"})
+
+
+# the parameter a value is read from: its name, its default when known (one ``?`` where
+# the default holds another parameter's value) and that other parameter's name
+Source = tuple[str, str | None, str | None]
 
 
 class CallFinder:
@@ -133,7 +139,8 @@ class CallFinder:
         self.types = CallTypes(ros2)
         self.namespaces = Namespaces(self.macros, source)
         self._fixed: set[tuple[str, str, str | None]] = set()  # fixed-name calls already found
-        self._declared: dict[str, str] = {}  # ROS 2 parameter -> its declared default
+        # ROS 2 parameter -> its declared default, and the parameter it holds (``Source``)
+        self._declared: dict[str, tuple[str, str | None]] = {}
         self.calls: list[PrimitiveCall] = []
         self.functions: list[Cursor] = []
         # (file, line) of the calls of an API function's name that the parse resolved,
@@ -214,8 +221,10 @@ class CallFinder:
                     read.also = also or None
         self.facts = argument_facts(self.sites, self.namespaces, self.owned)
         for call in self.calls:  # get_parameter("p") of a declare_parameter("p", default)
-            if call.name_param is not None and call.name_default is None:
-                call.name_default = self._declared.get(call.name_param)
+            if call.name_param is not None and call.name_default is None and (
+                call.name_param in self._declared
+            ):
+                call.name_default, call.default_param = self._declared[call.name_param]
 
     def _constants(self, member: Cursor, sites: int, reads: set[Key]) -> list[object] | None:
         """The member's writes in the file besides the reads (``sites`` of them, made at
@@ -826,10 +835,15 @@ class CallFinder:
             queue = qos.get("depth") if qos else None
         latch_expr = arg(spec.latch_arg)
         latch = spec.latched or (latch_expr is not None and scope.boolean(latch_expr) is True)
+        # a declaration whose default holds another parameter's value keeps it, for the
+        # names its node's other files take from this parameter (``cpp._node_result``)
+        holds: tuple[str | None, str | None] = (None, None)
         if spec.kind == "declare" and len(names) == 1:
             declared = self._parameter(spec, call, scope)
             if declared is not None and declared[1] is not None:
-                self._declared[declared[0]] = declared[1]
+                self._declared[declared[0]] = (declared[1], declared[2])
+                if declared[2] is not None:
+                    holds = (declared[1], declared[2])
         has_default, default = self._default(spec, args, scope)
         program_arg = _program_argument(arg(spec.type_arg), scope) if (
             spec.kind == "write") else None
@@ -847,11 +861,11 @@ class CallFinder:
         # handle's namespace (graph.build._handle_name): the prefix is the call's
         prefix = scope.names_prefix(base) if not self.ros2 and base is not None else None
         for written, source in names:
-            if source is not None and source[3] is not None:
+            if source is not None and source[4] is not None:
                 # the loop over the list: one call per element, each made by that
                 # element's turn (the graph drops it where it knows the elements)
                 conditions = tuple(dataclasses.replace(c, statement=EACH_STATEMENT) if (
-                    c.statement == "for" and (c.location.line, c.location.column) == source[3]
+                    c.statement == "for" and (c.location.line, c.location.column) == source[4]
                 ) else c for c in conditions)
             # getName() is "~": only as the start of a name is it the node's own name
             name = _private(written[:1] + written[1:].replace("~", "?"))
@@ -869,8 +883,9 @@ class CallFinder:
                 latch=latch, callback=callback_name(function), conditions=conditions,
                 location=location,
                 name_param=source[0] if source else None,
-                name_default=source[1] if source else None,
-                name_each=source[2] if source else None,
+                name_default=source[1] if source else holds[0],
+                default_param=source[2] if source else holds[1],
+                name_each=source[3] if source else None,
                 has_default=has_default, default=default,
                 searched=spec.searched, handle_namespace=handle_namespace,
                 deletes=spec.deletes, node_name=owner, transport=transport,
@@ -1012,7 +1027,7 @@ class CallFinder:
             over = list(walk.get_children())[1]
             listed = self._parameter_source(over, scope, 0)
             at = (walk.location.line, walk.location.column)
-            return (name, (listed[0], None, EACH, at) if listed is not None else None)
+            return (name, (listed[0], None, None, EACH, at) if listed is not None else None)
         if None in parts and name.count("?") == 1:
             # the one unknown part: the whole name, or a run of it that the text around
             # keeps (``"/" + robot_name + "/base_feedback"``; a wrapper's ``before`` and
@@ -1026,7 +1041,7 @@ class CallFinder:
         return (name, None)
 
     def _parameter_source(self, expr: Cursor, scope: Scope,
-                          depth: int) -> tuple[str, str | None] | None:
+                          depth: int) -> Source | None:
         """The parameter (name, default) whose value ``expr`` holds, if it is one."""
         expr = strip(expr)
         if depth > MAX_DEPTH:
@@ -1040,7 +1055,7 @@ class CallFinder:
                 call, index = passed
                 spec, _ = self._row(call)
                 if spec is not None and spec.out_arg == index and spec.kind in _PARAM_KINDS:
-                    return self._parameter(spec, call, scope)
+                    return self._parameter(spec, call, scope, depth)
             value = scope.variable(decl)
             # a member, as Scope.string reads it: what this body assigned it before here
             # (``topic_ = declare_parameter("publisher_topic", "x");`` then
@@ -1059,7 +1074,7 @@ class CallFinder:
             return None
         spec, _ = self._row(expr)
         if spec is not None and spec.kind in _PARAM_KINDS:
-            return self._parameter(spec, expr, scope)
+            return self._parameter(spec, expr, scope, depth)
         children = list(expr.get_children())
         if expr.spelling in _VALUE_METHODS and children and (
             children[0].kind == CursorKind.MEMBER_REF_EXPR
@@ -1074,7 +1089,9 @@ class CallFinder:
         return None
 
     def _parameter(self, spec: api.RosFunction, call: Cursor,
-                   scope: Scope) -> tuple[str, str | None] | None:
+                   scope: Scope, depth: int = 0) -> Source | None:
+        """The parameter a read or declaration names: its name, its default when known
+        (with one ``?`` where it holds another parameter's value), and that parameter."""
         args = written_arguments(call)
         if spec.name_arg >= len(args):
             return None
@@ -1083,6 +1100,7 @@ class CallFinder:
             name = join_name(render(self.namespaces.of_call(call, callee_of_call(call), scope)),
                              name)
         default: str | None = None
+        other: str | None = None
         index = spec.default_arg
         if index is not None and index >= len(args) and spec.out_arg == len(args) - 1:
             index = spec.out_arg  # nh.param<T>(name, default) returns the value
@@ -1094,7 +1112,15 @@ class CallFinder:
                     and index != spec.out_arg and _same_variable(args[index], args[spec.out_arg]):
                 kept = _kept_value(args[spec.out_arg], scope)[1]  # param("t", t, t)
                 default = kept if isinstance(kept, str) else None
-        return (name, default)
+            elif depth < MAX_DEPTH and parts.count(None) == 1:
+                # another parameter's value with text around it (topic_tools' relay:
+                # ``declare_parameter("output_topic", input + "_relay")``)
+                unknown = _unknown_operands(args[index], scope)
+                source = self._parameter_source(unknown[0], scope, depth + 1) if len(
+                    unknown) == 1 else None
+                if source is not None and source[0] != name and "?" not in source[0]:
+                    default, other = render(parts), source[0]
+        return (name, default, other)
 
     def _member(self, spec: api.RosFunction, call: Cursor, shift: int) -> Cursor | None:
         """The member variable a parameter read stores its value in: its out argument
