@@ -132,3 +132,36 @@ int main(int argc, char ** argv) {
     assert _errors(result) == []
     assert [(c.kind, c.name, c.type) for c in result.calls if c.kind == "publish"] == [
         ("publish", "stamp", "std_msgs/msg/Int64")]
+
+
+def test_ros2_parameter_callbacks_chrono_and_spin(write_tree) -> None:
+    """teleop_twist_joy's parameter callback (get_value<rclcpp::PARAMETER_INTEGER>()) and
+    main (rclcpp::spin of a unique_ptr), create3_sim's constexpr control period, its
+    callback registered on the parameters interface and Duration::max(), ros2/demos'
+    ``time_left < wait_period ? time_left : wait_period``: each was a clang error in a
+    function that calls the ROS API, and the node partial."""
+    result = _extract(write_tree, _source("ros2_params_chrono.cpp"), "ament_cmake")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "cmd")]
+
+
+def test_get_parameter_or_that_returns_the_value(write_tree) -> None:
+    """rclcpp's ``T get_parameter_or(name, alternative)``: controller_manager's
+    ros2_control_node (jazzy) calls it five times in main, and waits for its clock
+    (``Clock::wait_until_started``); each was a clang error in main, which makes the
+    node partial."""
+    result = _extract(write_tree, """
+#include <rclcpp/rclcpp.hpp>
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  auto cm = std::make_shared<rclcpp::Node>("controller_manager");
+  const bool use_sim_time = cm->get_parameter_or("use_sim_time", false);
+  const bool lock_memory = cm->get_parameter_or<bool>("lock_memory", true);
+  cm->get_clock()->wait_until_started();
+  return use_sim_time && lock_memory;
+}
+""", "ament_cmake")
+    assert _errors(result) == []
+    assert [(c.kind, c.name, c.has_default, c.default) for c in result.calls] == [
+        ("read", "use_sim_time", True, False), ("read", "lock_memory", True, True)]

@@ -158,7 +158,9 @@ def test_parameter_forms_of_real_nodes() -> None:
         ("declare", "gain", "double", False, None),
         ("declare", "frame_id", "str", True, "map"),
         ("declare", "map_file", None, True, None),
-        ("declare", "limits.?", None, False, None),
+        # declare_parameters: each key of the map written there, its value the default
+        ("declare", "limits.low", None, True, None),
+        ("declare", "limits.high", None, True, None),
         ("read", "retries", "int", True, 3),
         ("read", "mode", "str", False, None),
     ]

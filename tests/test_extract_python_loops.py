@@ -107,3 +107,31 @@ def test_a_long_sequence_is_unrolled_in_no_other_unrolled_loop(tmp_path) -> None
                  "                self.create_publisher(Image, f'{robot}/n{i}', 10)\n")
     got = [n for n, _ in names(result)]
     assert got == [f"topic{i}" for i in range(40)] + ["r1/n?", "r2/n?"]
+
+
+def test_a_loop_over_a_list_parameter_names_one_call_per_element(tmp_path) -> None:
+    """open_manipulator's joint_trajectory_executor.py:70-74: ``for step_name in
+    self.step_names: self.declare_parameter(step_name, ...)``, ``self.step_names`` the
+    value of the parameter ``step_names``: each call is named by each element of that
+    list (``name_each``), which the graph expands from the configuration's value; the
+    loop is a "for each". The value is read as the executor does, through the
+    ParameterValue message's ``string_array_value``."""
+    result = run(tmp_path,
+                 "        self.declare_parameter('step_names', ['home'])\n"
+                 "        self.steps = (self.get_parameter('step_names')\n"
+                 "                      .get_parameter_value().string_array_value)\n"
+                 "        for step in self.steps:\n"
+                 "            self.declare_parameter(step, [0.0])\n"
+                 "            self.get_parameter(step)\n"
+                 "        for topic in self.get_parameter('topics').value:\n"
+                 "            self.create_subscription(Image, topic, print, 10)\n"
+                 "            self.create_publisher(Image, 'fixed', 10)\n")
+    made = [(c.kind, c.name, c.name_param, c.name_each, tuple(str(x) for x in c.conditions))
+            for c in result.calls if c.name != "step_names"]
+    steps = ("for each (step in self.steps)",)
+    topics = ("for each (topic in self.get_parameter('topics').value)",)
+    assert made == [("declare", "?", "step_names", ".", steps),
+                    ("read", "?", "step_names", ".", steps),
+                    ("read", "topics", None, None, ()),
+                    ("subscribe", "?", "topics", ".", topics),
+                    ("publish", "fixed", None, None, topics)]

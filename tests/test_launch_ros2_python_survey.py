@@ -496,3 +496,115 @@ def generate_launch_description():
     assert [n.name for n in model.nodes] == ["/robot1/front_lidar_s1"]
     assert "LAUNCH_PY_UNSUPPORTED" not in codes(model)
     assert "LAUNCH_UNSUPPORTED" not in codes(model)
+
+
+def test_ros2_launch_as_a_process_runs_that_launch_file(write_tree):
+    """open_manipulator's omx_ai.launch.py starts its follower and leader with
+    ``ExecuteProcess(cmd=['ros2', 'launch', 'open_manipulator_bringup', 'omx_f_follower_ai
+    .launch.py'])``, the second on the exit of a node: their controller managers, state
+    publishers and spawners were not in the graph (a subscriber of /joint_states without
+    publisher). The file ros2launch finds in the package is run as a launch of its own:
+    only the arguments on the command line reach it (not this file's configurations,
+    namespace or parameters), and the process's conditions are its nodes'."""
+    child = """
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('robot', default_value='own'),
+        DeclareLaunchArgument('mode', default_value='sim'),
+        Node(package='pkg', executable='driver', name='driver',
+             namespace=LaunchConfiguration('robot'),
+             parameters=[{'mode': LaunchConfiguration('mode')}]),
+    ])
+"""
+    model, _ = run(write_tree, """
+from launch.actions import ExecuteProcess, RegisterEventHandler
+from launch.event_handlers import OnProcessExit
+from launch_ros.actions import PushRosNamespace, SetParameter
+
+def generate_launch_description():
+    first = Node(package='pkg', executable='setup', name='setup')
+    return LaunchDescription([
+        DeclareLaunchArgument('mode', default_value='real'),
+        PushRosNamespace('outer'),
+        SetParameter(name='shared', value=1),
+        first,
+        ExecuteProcess(cmd=['ros2', 'launch', 'pkg', 'child.launch.py', 'robot:=r1']),
+        RegisterEventHandler(OnProcessExit(target_action=first, on_exit=[
+            ExecuteProcess(cmd=['ros2', 'launch', '--debug', 'pkg', 'child.launch.py'],
+                           shell=True)])),
+        ExecuteProcess(cmd=['ros2', 'launch', 'pkg', 'absent.launch.py']),
+        ExecuteProcess(cmd=['ros2', 'launch', 'elsewhere', 'x.launch.py']),
+        ExecuteProcess(cmd=['ros2', 'launch', '--print', 'pkg', 'child.launch.py']),
+    ])
+""", extra={"src/pkg/launch/sub/child.launch.py": child})
+    nodes = [(n.name, [c.statement for c in n.conditions]) for n in model.nodes]
+    assert nodes == [("/outer/setup", []), ("/r1/driver", []),
+                     ("/own/driver", ["event"])]
+    assert [sorted(p.name for p in model.params if p.name.startswith(n))
+            for n in ("/r1/", "/own/")] == [["/r1/driver/mode"], ["/own/driver/mode"]]
+    assert {p.name: p.value for p in model.params}["/r1/driver/mode"] == "sim"
+    assert "pkg/launch/sub/child.launch.py" in model.files
+    found = {(d.code, d.location.line) for d in model.diagnostics}
+    assert ("LAUNCH_FILE_MISSING", 27) in found  # ros2 launch fails: no such file
+    assert ("LAUNCH_UNKNOWN_VALUE", 28) in found  # a package not here: unknown
+    assert "LAUNCH_PROCESS" not in codes(model)
+
+
+def test_xml_executable_of_ros2_launch_runs_that_launch_file(write_tree):
+    from test_launch_ros2 import run as run_xml
+
+    model, _ = run_xml(write_tree, "main.launch.xml", """
+<launch>
+  <arg name="who" default="r2"/>
+  <executable cmd="ros2 launch pkg child.launch.xml robot:=$(var who)" shell="true"/>
+  <executable cmd="ros2 launch pkg missing.launch.xml"/>
+</launch>
+""", extra={"src/pkg/launch/child.launch.xml": """
+<launch>
+  <arg name="robot" default="own"/>
+  <node pkg="pkg" exec="driver" name="driver" namespace="$(var robot)"/>
+</launch>
+"""})
+    assert [n.name for n in model.nodes] == ["/r2/driver"]
+    assert [(d.code, d.location.line) for d in model.diagnostics] == [
+        ("LAUNCH_FILE_MISSING", 4)]
+
+
+def test_a_command_line_in_one_word_with_shell_is_split_as_the_shell_does(write_tree):
+    """``ExecuteProcess(cmd=['ros2 launch pkg child.launch.py robot:=r3'], shell=True)``:
+    launch joins the words and the shell splits the line; without shell=True the one
+    word is a program of that name (no node)."""
+    child = """
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('robot', default_value='own'),
+        Node(package='pkg', executable='driver', name='driver',
+             namespace=LaunchConfiguration('robot')),
+    ])
+"""
+    model, _ = run(write_tree, """
+from launch.actions import ExecuteProcess
+
+def generate_launch_description():
+    who = LaunchConfiguration('who', default='r4')
+    return LaunchDescription([
+        ExecuteProcess(cmd=['ros2 launch pkg child.launch.py robot:=r3'], shell=True),
+        ExecuteProcess(cmd=['ros2 run demo_nodes_cpp talker --ros-args -r',
+                            ['__node:=', who]], shell=True),
+        ExecuteProcess(cmd=['ros2 run demo_nodes_cpp listener']),
+    ])
+""", extra={"src/pkg/launch/child.launch.py": child})
+    assert [n.name for n in model.nodes] == ["/r3/driver", "/r4"]
+    assert [d.message for d in model.diagnostics if d.code == "LAUNCH_PROCESS"] == [
+        "process ros2 run demo_nodes_cpp listener started here is no node the reader "
+        "can name"]

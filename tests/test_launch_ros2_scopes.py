@@ -235,3 +235,64 @@ def test_reset_launch_configurations_clears_namespace_remaps_and_globals(
     assert (node.name, node.remaps) == ("/r1_kept", [])
     assert {p.key: p.value for p in model.params} == {"rate": 9}
     assert model.diagnostics == []
+
+
+def test_a_parameter_file_that_is_not_there_is_said_where_it_is_given(write_tree) -> None:
+    """robotiq_control.launch.py:99-117 gives controller_manager
+    config/robotiq_update_rate.yaml, which the package does not have: one warning at the
+    Node (launch_ros skips the file with a warning and starts the node), not an error
+    located at the missing file's own path, line 0; what it would set stays unknown."""
+    from conftest import package_xml
+
+    root = write_tree({
+        "src/p/package.xml": package_xml("p", "ament_cmake"),
+        "src/p/config/there.yaml": "/**:\n  ros__parameters:\n    rate: 5\n",
+        "src/p/launch/a.launch.py": """from launch import LaunchDescription
+from launch.substitutions import PathJoinSubstitution
+from launch_ros.actions import Node
+from launch_ros.substitutions import FindPackageShare
+
+
+def generate_launch_description():
+    share = FindPackageShare('p')
+    return LaunchDescription([
+        Node(package='p', executable='e', name='n',
+             parameters=[PathJoinSubstitution([share, 'config', 'missing.yaml']),
+                         PathJoinSubstitution([share, 'config', 'there.yaml'])]),
+    ])
+"""})
+    workspace = scan([str(root / "src")], {})
+    model = load(str(root / "src/p/launch/a.launch.py"), workspace, {}, {})
+    assert [(d.code, d.severity, d.location.file, d.location.line) for d in model.diagnostics] \
+        == [("LAUNCH_PARAM_FILE", "warning", "p/launch/a.launch.py", 10)]
+    assert "p/config/missing.yaml does not exist" in model.diagnostics[0].message
+    assert params_of(model, "/n")["rate"] == 5
+
+
+def test_a_parameter_file_outside_the_workspace_is_not_read(write_tree) -> None:
+    """A ROS 2 parameter file is read only inside the workspace and the installed
+    packages, as a ROS 1 ``<rosparam file>`` and ``$(file-content)`` are: it was read
+    from anywhere (clearpath_common's /etc/clearpath/platform/config/control.yaml was an
+    error for not being there; any file that is there was read into the model)."""
+    from conftest import package_xml
+
+    root = write_tree({
+        "src/p/package.xml": package_xml("p", "ament_cmake"),
+        "outside.yaml": "/**:\n  ros__parameters:\n    secret: 42\n",
+        "src/p/launch/a.launch.py": """from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package='p', executable='e', name='n', parameters=['PLACE/outside.yaml']),
+    ])
+"""})
+    launch = root / "src/p/launch/a.launch.py"
+    launch.write_text(launch.read_text().replace("PLACE", str(root)))
+    workspace = scan([str(root / "src")], {})
+    model = load(str(launch), workspace, {}, {})
+    assert "secret" not in params_of(model, "/n")
+    assert [(d.code, d.location.line) for d in model.diagnostics] == [
+        ("LAUNCH_UNKNOWN_VALUE", 7)]
+    assert "outside the workspace" in model.diagnostics[0].message

@@ -638,3 +638,19 @@ def test_a_model_node_is_found_by_an_alias():
     model = from_document(json.loads(json.dumps(data)))
     assert model.node("old") is model.node("p_old") is model.nodes[0]
     assert model.node("p_old_too") is model.nodes[1] and model.node("other") is None
+
+
+def test_the_shipped_jazzy_static_transform_publisher_publishes_tf_static():
+    """The jazzy tf2_ros model (geometry2 646342c6) was built before the extractor read
+    a stand-in package's own headers: static_transform_publisher was partial with no call
+    at all (no /tf_static publisher in any ROS 2 configuration that starts it; create3_sim
+    and others). Rebuilt with ``models build --only tf2_ros`` from the pinned tree."""
+    from haros_arch.models.library import Library
+
+    model = Library().find("tf2_ros", "jazzy")
+    assert model is not None
+    node = model.node("static_transform_publisher")
+    assert node is not None and node.completeness == "complete"
+    made = {(c.kind, c.name) for c in node.calls}
+    assert ("publish", "/tf_static") in made
+    assert {("declare", f"translation.{axis}") for axis in "xyz"} <= made

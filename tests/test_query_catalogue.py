@@ -433,3 +433,53 @@ def test_a_type_not_known_statically_is_no_mismatch(kinds):
         {"kind": other, "node": "/b", "name": "/t", "type": "std_msgs/msg/String",
          "location": {"file": "b/b.cpp", "line": 2}}]})
     assert [f.rule for f in run_catalogue(model, None, [RULES[rule]])] == [rule]
+
+
+def test_a_name_not_known_statically_is_no_qos_incompatibility():
+    """Two names with '?' print alike (``/?``) whatever topics they stand for: a
+    publisher and a subscriber whose names both come from values not known statically
+    are no pair (create3_sim: every node's parameter-named topics met /ros_gz_sim's on
+    /?, 25 errors). The other pairwise checks already skip them."""
+    def links(name: str) -> list[dict]:
+        return [{"kind": "publish", "node": "/a", "name": name, "type": "std_msgs/msg/String",
+                 "qos": {"reliability": "best_effort"}, "location": {"file": "a.cpp", "line": 1}},
+                {"kind": "subscribe", "node": "/b", "name": name, "type": "std_msgs/msg/String",
+                 "qos": {"reliability": "reliable"}, "location": {"file": "b.cpp", "line": 2}}]
+    rule = RULES["qos-incompatible"]
+    for name in ("/?", "/robot/?/scan"):
+        assert run_catalogue(configuration({"links": links(name)}), None, [rule]) == []
+    assert [f.rule for f in run_catalogue(configuration({"links": links("/scan")}), None,
+                                          [rule])] == ["qos-incompatible"]
+
+
+def test_a_finding_about_a_topic_points_at_a_publisher():
+    """multiple-publishers reports a topic: its place is a publisher's, not that of the
+    topic's first link when that is a subscriber (create3_sim: /dock_status, published
+    twice, was shown at docking_behavior.cpp:27, a subscription)."""
+    model = configuration({"links": [
+        {"kind": "subscribe", "node": "/user", "name": "/dock", "type": "std_msgs/msg/String",
+         "location": {"file": "user.cpp", "line": 27}},
+        {"kind": "publish", "node": "/a", "name": "/dock", "type": "std_msgs/msg/String",
+         "location": {"file": "a.cpp", "line": 5}},
+        {"kind": "publish", "node": "/b", "name": "/dock", "type": "std_msgs/msg/String",
+         "location": {"file": "b.cpp", "line": 9}}]})
+    [found] = run_catalogue(model, None, [RULES["multiple-publishers"]])
+    assert (found.location.file, found.location.line) == ("a.cpp", 5)
+
+
+def test_two_instances_of_one_name_are_counted_in_a_message():
+    """create3_sim includes one launch file twice: two /sensors_node publish
+    /dock_status, and multiple-publishers said "/dock_status is published by
+    /sensors_node", one name, as if one node published it."""
+    model = configuration({
+        "nodes": [{"name": "/sensors", "node": "k/sensors", "id": "node:/sensors"},
+                  {"name": "/sensors", "node": "k/sensors", "id": "node:/sensors#2"}],
+        "links": [
+            {"kind": "publish", "node": "/sensors", "node_id": "node:/sensors",
+             "name": "/dock", "type": "std_msgs/msg/String",
+             "location": {"file": "a.cpp", "line": 5}},
+            {"kind": "publish", "node": "/sensors", "node_id": "node:/sensors#2",
+             "name": "/dock", "type": "std_msgs/msg/String",
+             "location": {"file": "a.cpp", "line": 5}}]})
+    [found] = run_catalogue(model, None, [RULES["multiple-publishers"]])
+    assert found.message == "/dock is published by /sensors (2 instances)"

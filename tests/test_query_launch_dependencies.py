@@ -191,6 +191,9 @@ def test_an_installed_metapackage_brings_its_members(tmp_path):
     assert {"gazebo_ros", "gazebo_plugins"} <= installed_with(gazebo, [gazebo])
     nav = package("nav_robot", ("exec_depend", "navigation"))
     assert {"amcl", "move_base", "map_server"} <= installed_with(nav, [nav])
+    # ros2_control's metapackage folder also holds doc/ and rosdoc2.yaml
+    arm = package("arm_bringup", ("exec_depend", "ros2_control"), build_type="ament_cmake")
+    assert "controller_manager" in installed_with(arm, [arm])
     plain = package("plain_robot", ("exec_depend", "rviz"))
     assert installed_with(plain, [plain]) == {"rviz"}
 
@@ -213,9 +216,23 @@ def test_models_metapackages_reads_the_pinned_trees(tmp_path, capsys):
                                                build_type="ament_cmake"))
     (ros2 / "CMakeLists.txt").write_text("project(stack2)\n")
     (ros2 / "README.md").write_text("a stack\n")
+    # ROS 2, with its documentation (ros2_control's metapackage: doc/, rosdoc2.yaml)
+    documented = tree / "stack3"
+    (documented / "doc").mkdir(parents=True)
+    (documented / "doc" / "index.rst").write_text("Stack 3\n")
+    (documented / "package.xml").write_text(manifest("stack3", ("exec_depend", "four"),
+                                                     build_type="ament_cmake"))
+    (documented / "CMakeLists.txt").write_text("project(stack3)\n")
+    (documented / "rosdoc2.yaml").write_text("type: 'rosdoc2 config'\n")
+    (documented / "stack3.repos").write_text("repositories: {}\n")
     code = tree / "one"  # a package with code is no metapackage
     (code / "src").mkdir(parents=True)
     (code / "package.xml").write_text(manifest("one", ("exec_depend", "two")))
+    configs = tree / "configs"  # nor one with files of its own (a config folder, a YAML)
+    (configs / "config").mkdir(parents=True)
+    (configs / "package.xml").write_text(manifest("configs", ("exec_depend", "five"),
+                                                  build_type="ament_cmake"))
+    (configs / "params.yaml").write_text("a: 1\n")
     listing = tmp_path / "list.yaml"
     listing.write_text(yaml.safe_dump([{"repository": "github:someone/stack",
                                         "commit": commit, "distro": "noetic",
@@ -225,10 +242,10 @@ def test_models_metapackages_reads_the_pinned_trees(tmp_path, capsys):
                  str(tmp_path / "sources"), "-o", str(out)]) == 0
     table = json.loads(out.read_text())
     assert table["metapackages"] == {"noetic": {"stack": ["one", "two"],
-                                                "stack2": ["three"]}}
+                                                "stack2": ["three"], "stack3": ["four"]}}
     assert table["sources"] == [{"repository": "github:someone/stack", "commit": commit,
                                  "distro": "noetic"}]
-    assert "noetic: 2 metapackages" in capsys.readouterr().out
+    assert "noetic: 3 metapackages" in capsys.readouterr().out
 
 
 def test_the_shipped_metapackage_table_comes_from_the_pinned_lists():

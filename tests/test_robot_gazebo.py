@@ -131,6 +131,20 @@ def test_a_xacro_command_through_find_executable_without_xacro_installed():
         config)
 
 
+def test_a_xacro_command_kept_in_a_launch_configuration():
+    """``<let name="d" value="$(command '$(find-exec xacro) ...')"/>`` then ``<param
+    name="robot_description" value="$(var d)"/>`` (gz_ros2_control's XML demos): the
+    description is that command's output, as when the Command is given directly; it was
+    not known (ROBOT_DESCRIPTION_UNKNOWN), so the simulated robot's plugins and its
+    controller manager were missing from the XML configurations."""
+    config = configuration(ROS2, "bot2_description/launch/sim_let.launch.xml")
+    (description,) = config.robot_descriptions
+    assert description.links == ["front_base_link"]
+    assert ("/bot2/drive", "subscribe", "/bot2/cmd_vel", "geometry_msgs/msg/Twist") in made(
+        config)
+    assert "ROBOT_DESCRIPTION_UNKNOWN" not in {d.code for d in config.diagnostics}
+
+
 def test_ros2_spawner_file_is_read_as_it_is():
     config = configuration(ROS2, "bot2_description/launch/model.launch.py")
     assert made(config) == [

@@ -12,7 +12,7 @@ from weakref import WeakKeyDictionary
 from .. import diagnostics as diag
 from ..diagnostics import Diagnostic
 from ..launch.model import LaunchModel, NodeDecl
-from ..model.conditions import Condition
+from ..model.conditions import EACH_STATEMENT, Condition
 from ..model.launch_tree import PackageUse
 from ..model.location import Location
 from ..model.rosname import RosName, namespace_of, remap, resolve, resolve_remaps
@@ -624,8 +624,10 @@ def element_calls(call: PrimitiveCall, instance: NodeInstance, resources: Resour
              if name is not None]
     if not names:
         return [call]
-    return [replace(call, name=name, name_param=None, name_default=None, name_each=None)
-            for name in names]
+    # the loop over the list that the extractor saw is what these calls stand for
+    kept = tuple(c for c in call.conditions if c.statement != EACH_STATEMENT)
+    return [replace(call, name=name, name_param=None, name_default=None, name_each=None,
+                    conditions=kept) for name in names]
 
 
 def _name_param_unset(instance: NodeInstance, call: PrimitiveCall) -> Diagnostic:

@@ -14,6 +14,10 @@ from .location import NOWHERE, Location
 from .values import UNKNOWN_MARK
 
 ConditionKind = Literal["launch", "source", "hint"]
+# the statement of the loop over a list parameter whose elements name a call, one call
+# per element (``PrimitiveCall.name_each``): where the graph knows the elements, each
+# call it makes stands for one turn of the loop, which is then no condition of it
+EACH_STATEMENT = "for each"
 
 
 @dataclass(frozen=True)

@@ -38,18 +38,31 @@ DISTROS = {1: "noetic", 2: "jazzy"}  # the distribution of each ROS generation's
 
 
 _PAPERS = (".md", ".rst", ".txt", ".xml")  # CMakeLists.txt, CHANGELOG.rst, README.md
+# what else a metapackage's folder holds for its documentation: rosdoc2's configuration,
+# a vcstool list of its repositories, a folder of documentation pages (ros2_control's
+# and ros2_controllers' metapackages have all three)
+_DOC_FILES = ("rosdoc2.yaml",)
+_DOC_SUFFIXES = (".repos",)
+_DOC_FOLDERS = ("doc", "docs")
 
 
 def _only_manifest(folder: str) -> bool:
-    """A package folder that holds nothing but its manifest, build file and papers: a
-    ROS 2 metapackage (navigation2, gazebo_ros_pkgs, image_pipeline), which has no
-    ``<metapackage/>`` export."""
+    """A package folder that holds nothing but its manifest, build file, papers and
+    documentation: a ROS 2 metapackage (navigation2, gazebo_ros_pkgs, image_pipeline,
+    ros2_control), which has no ``<metapackage/>`` export."""
     try:
         entries = os.listdir(folder)
     except OSError:
         return False
-    return all((not os.path.isdir(os.path.join(folder, e)) and e.endswith(_PAPERS))
-               or e.startswith(".") for e in entries)
+
+    def paper(entry: str) -> bool:
+        if entry.startswith("."):
+            return True
+        if os.path.isdir(os.path.join(folder, entry)):
+            return entry in _DOC_FOLDERS
+        return entry.endswith(_PAPERS + _DOC_SUFFIXES) or entry in _DOC_FILES
+
+    return all(paper(e) for e in entries)
 
 
 def _metapackage(path: str) -> tuple[str, list[str]] | None:

@@ -177,10 +177,17 @@ def render(template: str, match: Any, evaluator: Evaluator) -> str:
         if isinstance(value, list | tuple) and not value:
             return "none"
         if isinstance(value, list | tuple) and any(entities(v) for v in value):
-            # entities by name, each once (the nodes of several links)
-            return _items(list(dict.fromkeys(
-                v.node.name if isinstance(v, Link) else label(v) if entities(v)
-                else str(plain(v)) for v in value)))
+            # entities by name, each once (the nodes of several links); a name that
+            # several node instances have says how many ("/driver (2 instances)": a
+            # launch file included twice), else the message would name one node
+            instances: dict[str, set[str]] = {}
+            for v in value:
+                if isinstance(v, Link):
+                    instances.setdefault(v.node.name, set()).add(v.node.id)
+                else:
+                    instances.setdefault(label(v) if entities(v) else str(plain(v)), set())
+            return _items([name + (f" ({len(ids)} instances)" if len(ids) > 1 else "")
+                           for name, ids in instances.items()])
         if isinstance(value, list | tuple):  # a value: every element, as it is
             return _items([str(plain(v)) for v in value])
         if isinstance(value, Location):  # a place is whole: its line ends it

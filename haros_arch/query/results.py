@@ -87,8 +87,15 @@ def location_of(item: Any) -> Location:
     if isinstance(item, Link | NodeInstance | Node | PrimitiveCall):
         return item.location
     if isinstance(item, Resource) and item.links:
-        return item.links[0].location
+        # where it is made: a topic's first publisher, a service's or action's first
+        # server (a finding about who publishes it points at a publisher, not at the
+        # subscriber that happens to come first), else its first link
+        makers = [link for link in item.links if link.kind in _MAKERS]
+        return (makers or item.links)[0].location
     return NOWHERE
+
+
+_MAKERS = frozenset({"publish", "server", "action-server"})
 
 
 def best_location(items: list[Any]) -> Location:

@@ -364,8 +364,10 @@ _RCLCPP_NODE: dict[str, RosFunction] = {
     "declare_parameter": RosFunction(
         "declare", type_from=("template-value", "value", "result"), type_arg=1,
         default_arg=1, on_handle=False),
+    # declare_parameters(namespace, map): the map's values are the defaults
     "declare_parameters": RosFunction(
-        "declare", type_from=("template-value",), on_handle=False, per_element=True),
+        "declare", type_from=("template-value",), default_arg=1, on_handle=False,
+        per_element=True),
     "get_parameter": RosFunction(
         "read", type_from=("value",), type_arg=1, out_arg=1, on_handle=False),
     "get_parameter_or": RosFunction(

@@ -192,6 +192,22 @@ class Scope:
     def _write(self, decl: Cursor, value: Cursor | None) -> None:
         self.writes.setdefault(key_of(decl), []).append(value)
 
+    def range_of(self, decl: Cursor) -> Cursor | None:
+        """The range-based ``for`` of this body whose loop variable ``decl`` is (``for
+        (std::string topic : topics_)``); its second child is the range it walks."""
+        if self.body is None or decl.kind != CursorKind.VAR_DECL:
+            return None
+        key = key_of(decl)
+        for node in _walk(self.body):
+            if node.kind != CursorKind.CXX_FOR_RANGE_STMT:
+                continue
+            children = list(node.get_children())
+            if len(children) >= 3 and children[0].kind == CursorKind.VAR_DECL and (
+                key_of(children[0]) == key
+            ):
+                return node
+        return None
+
     def method_calls(self, decl: Cursor, at: Cursor) -> list[tuple[Cursor, bool]]:
         """The calls of a method on local variable ``decl`` in this body before ``at``
         (``qos.transient_local();``), in order, each with whether it may not run before

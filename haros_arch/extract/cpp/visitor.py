@@ -21,9 +21,10 @@ from clang.cindex import Cursor, CursorKind, StorageClass, TranslationUnit, Type
 
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
-from ...model.conditions import Condition
+from ...model.conditions import EACH_STATEMENT, Condition
 from ...model.location import Location
 from ...model.source import PrimitiveCall
+from ...model.values import UNKNOWN_MARK
 from . import api, msg_types, parameter_library, reconfigure, synthesis
 from .call_sites import CallSites
 from .call_types import CallTypes, factory_made, row_class
@@ -60,10 +61,12 @@ from .values import (
     SEPARATOR,
     Scope,
     initializer,
+    literal,
     render,
     strip,
     written_arguments,
 )
+from .values import _walk as walk_cursors
 from .values import key_of as place_of
 from .wrappers import FACTORY_NAMES, Wrappers, is_constructor, of_class_template
 from .writes import default_constructed, may_write
@@ -82,6 +85,12 @@ _API_NAMES = frozenset(
     [name for _, name in [*api.ALL, *api.NODE_NAME, *api.RCLCPP_NODE_NAME, *api.FACTORIES]]
     + [parameter_library.LISTENER])
 MAX_DEPTH = 16
+# where a call's name comes from: a ``Source`` (the parameter, its default, the
+# parameter the default holds), then ``EACH`` when the name is each element of that list
+# parameter in turn (PrimitiveCall.name_each) and the (line, column) of the range-based
+# for that walks it
+NameSource = tuple[str, str | None, str | None, str | None, tuple[int, int] | None]
+EACH = "."
 # builtin types a variable of static storage starts as zero of (C++'s zero-initialisation)
 _ZEROED: dict[TypeKind, object] = {
     TypeKind.BOOL: False, TypeKind.INT: 0, TypeKind.UINT: 0, TypeKind.LONG: 0,
@@ -775,7 +784,7 @@ class CallFinder:
         target = site.referenced
         location = self.where(site if target is not None and (
             target.kind == CursorKind.CONSTRUCTOR) else callee)
-        names: list[tuple[str, Source | None]]
+        names: list[tuple[str, NameSource | None]]
         namespace: str | None = None
         if spec.fixed_name is not None:
             if spec.handle_default is not None:  # relative to the handle given
@@ -860,6 +869,12 @@ class CallFinder:
         # handle's namespace (graph.build._handle_name): the prefix is the call's
         prefix = scope.names_prefix(base) if not self.ros2 and base is not None else None
         for written, source in names:
+            if source is not None and source[4] is not None:
+                # the loop over the list: one call per element, each made by that
+                # element's turn (the graph drops it where it knows the elements)
+                conditions = tuple(dataclasses.replace(c, statement=EACH_STATEMENT) if (
+                    c.statement == "for" and (c.location.line, c.location.column) == source[4]
+                ) else c for c in conditions)
             # getName() is "~": only as the start of a name is it the node's own name
             name = _private(written[:1] + written[1:].replace("~", "?"))
             handle_namespace = None
@@ -878,6 +893,7 @@ class CallFinder:
                 name_param=source[0] if source else None,
                 name_default=source[1] if source else holds[0],
                 default_param=source[2] if source else holds[1],
+                name_each=source[3] if source else None,
                 has_default=has_default, default=default,
                 searched=spec.searched, handle_namespace=handle_namespace,
                 deletes=spec.deletes, node_name=owner, transport=transport,
@@ -984,17 +1000,23 @@ class CallFinder:
                     "CPP_DYNAMIC_NAME", location, kind="declare", name=full))
 
     def _names(self, spec: api.RosFunction, call: Cursor, expr: Cursor, args: list[Cursor],
-               scope: Scope) -> list[tuple[str, Source | None]]:
+               scope: Scope) -> list[tuple[str, NameSource | None]]:
         """The names a call gives (several for set_parameters({...})), each with the
-        parameter its value comes from, if any."""
+        parameter its value comes from, if any: (parameter, its default, and ``.`` when
+        the name is each element of that list parameter in turn)."""
         if spec.per_element:
             if call.spelling in ("declare_parameters", "get_parameters") and len(args) >= 2:
                 prefix = render(scope.string(expr))
-                return [((prefix + "." if prefix else "") + "?", None)]
+                given = next((i for i, a in enumerate(args) if a == expr), None)
+                keys = _map_keys(args[given + 1], scope) if (
+                    call.spelling == "declare_parameters" and given is not None
+                    and given + 1 < len(args)) else None
+                return [((prefix + "." if prefix else "") + key, None)
+                        for key in (keys or ["?"])]
             return [self._name(e, scope) for e in _elements(expr)]
         return [self._name(expr, scope)]
 
-    def _name(self, expr: Cursor, scope: Scope) -> tuple[str, Source | None]:
+    def _name(self, expr: Cursor, scope: Scope) -> tuple[str, NameSource | None]:
         inner = strip(expr)
         target = inner.referenced if inner.kind == CursorKind.CALL_EXPR else None
         if target is not None and target.kind == CursorKind.CONSTRUCTOR and (
@@ -1004,6 +1026,16 @@ class CallFinder:
             return (render(scope.string(values[0])) if values else "?", None)
         parts = scope.string(expr)
         name = render(parts)
+        loop = inner.referenced if inner.kind == CursorKind.DECL_REF_EXPR else None
+        walk = scope.range_of(loop) if loop is not None and name == UNKNOWN_MARK else None
+        if walk is not None:
+            # ``for (std::string topic : topics_) create_subscription(topic, ..)`` over a
+            # list parameter (create3_sim's hazards_vector_publisher): one call per
+            # element of the value the configuration gives it (graph.element_calls)
+            over = list(walk.get_children())[1]
+            listed = self._parameter_source(over, scope, 0)
+            at = (walk.location.line, walk.location.column)
+            return (name, (listed[0], None, None, EACH, at) if listed is not None else None)
         if None in parts and name.count("?") == 1:
             # the one unknown part: the whole name, or a run of it that the text around
             # keeps (``"/" + robot_name + "/base_feedback"``; a wrapper's ``before`` and
@@ -1013,7 +1045,7 @@ class CallFinder:
             if len(unknown) == 1:
                 source = self._parameter_source(unknown[0], scope, 0)
             if source is not None:
-                return (name, source)
+                return (name, (*source, None, None))
         return (name, None)
 
     def _parameter_source(self, expr: Cursor, scope: Scope,
@@ -1033,11 +1065,19 @@ class CallFinder:
                 if spec is not None and spec.out_arg == index and spec.kind in _PARAM_KINDS:
                     return self._parameter(spec, call, scope, depth)
             value = scope.variable(decl)
+            # a member, as Scope.string reads it: what this body assigned it before here
+            # (``topic_ = declare_parameter("publisher_topic", "x");`` then
+            # ``create_publisher(topic_, ..)`` in one constructor), else what a constructor
+            # of its class gives it, read in that constructor
             if value is None and expr.kind == CursorKind.MEMBER_REF_EXPR and (
                 decl.kind == CursorKind.FIELD_DECL
-            ):  # a member this body assigned before (``input_topic_ = declare_..``)
+            ):
                 value = scope.assigned(decl, expr)
-            return None if value is None else self._parameter_source(value, scope, depth + 1)
+            if value is None:
+                found = scope.field(decl)
+                return None if found is None else self._parameter_source(
+                    found[0], found[1], depth + 1)
+            return self._parameter_source(value, scope, depth + 1)
         if expr.kind != CursorKind.CALL_EXPR:
             return None
         spec, _ = self._row(expr)
@@ -1404,6 +1444,35 @@ def _known(parts: tuple[str | None, ...]) -> bool:
 def _private(name: str) -> str:
     """ROS 2's ``~/name`` written the ROS 1 way, ``~name``."""
     return "~" + name[2:] if name.startswith("~/") else name
+
+
+def _map_keys(expr: Cursor, scope: Scope) -> list[str] | None:
+    """The keys of the map given to ``declare_parameters(prefix, map)`` when it is
+    written there, or is a local variable whose initialiser is and that nothing else in
+    the body names, with string literals as keys (``std::map<std::string, int64_t>
+    m{{"x", 5L}, {"y", -1L}};``: teleop_twist_joy's ``axis_linear`` map), else None."""
+    inner = strip(expr)
+    decl = inner.referenced if inner.kind == CursorKind.DECL_REF_EXPR else None
+    value: Cursor | None = expr  # the map written in the call: std::map<..>{{"k", v}}
+    if decl is not None:
+        if decl.kind != CursorKind.VAR_DECL or scope.body is None:
+            return None
+        uses = sum(1 for node in walk_cursors(scope.body)
+                   if node.kind == CursorKind.DECL_REF_EXPR and node.referenced is not None
+                   and node.referenced == decl)
+        value = scope.variable(decl) if uses == 1 else None
+    if value is None:
+        return None
+    keys: list[str] = []
+    for element in _elements(value):
+        parts = [c for c in strip(element).get_children() if c.kind.is_expression()]
+        first = strip(parts[0]) if parts else None
+        key = literal(first.spelling) if first is not None and (
+            first.kind == CursorKind.STRING_LITERAL) else None
+        if key is None or element == value:
+            return None
+        keys.append(key)
+    return keys or None
 
 
 def _elements(expr: Cursor, depth: int = 0) -> list[Cursor]:

@@ -34,6 +34,15 @@ class ParamValue:
 
 
 @dataclass(frozen=True)
+class ParamElement:
+    """An element of the list parameter ``name``: the variable of a loop over its value
+    (``for step in self.get_parameter('steps').value``); a call it names is one call per
+    element (``PrimitiveCall.name_each``)."""
+
+    name: str
+
+
+@dataclass(frozen=True)
 class ParamObject:
     """An rclpy ``Parameter`` object (from ``get_parameter`` / ``declare_parameter``)."""
 
@@ -123,6 +132,8 @@ def text_of(value: object) -> Value:
         return Value.of(repr(value))
     if isinstance(value, ParamValue):
         return Value.unknown(f"parameter {value.name}")
+    if isinstance(value, ParamElement):
+        return Value.unknown(f"an element of parameter {value.name}")
     return Value.unknown(getattr(value, "origin", "") or type(value).__name__)
 
 

@@ -62,6 +62,13 @@ class _Over(Exception):
     """The file's evaluation budget is spent."""
 
 
+# a Parameter's value, or its ParameterValue message's field of each type
+_PARAMETER_VALUES = frozenset({
+    "value", "string_value", "integer_value", "double_value", "bool_value",
+    "string_array_value", "integer_array_value", "double_array_value", "bool_array_value",
+    "byte_array_value"})
+
+
 class Evaluator(Instances, QoSProfiles, Walker):
     """The static value of an expression (``eval``), never running it: a configuration of
     the one evaluator's walk (dispatch, steps, size checks). Its handlers are those of its
@@ -221,8 +228,7 @@ class Evaluator(Instances, QoSProfiles, Walker):
                                              or attr == "get_namespace"):
             return NodeMethod(attr, owner=base)
         if isinstance(base, ParamObject):
-            if attr in ("value", "string_value", "integer_value", "double_value",
-                        "bool_value"):
+            if attr in _PARAMETER_VALUES:
                 return ParamValue(base.name, base.default)
             if attr == "get_parameter_value":
                 return base

@@ -17,7 +17,7 @@ import ast
 
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
-from ...model.conditions import Condition
+from ...model.conditions import EACH_STATEMENT, Condition
 from ...model.location import Location
 from ...model.source import PrimitiveCall
 from ...model.values import Unknown, Value
@@ -32,6 +32,7 @@ from .objects import (
     Instance,
     NodeHandle,
     NodeMethod,
+    ParamElement,
     ParamValue,
     Ref,
     SuperInit,
@@ -176,6 +177,13 @@ class Walker:
         loop = condition("for", text, self._where(frame, statement))
         items = self.evaluator.iteration(
             statement.iter, frame, MAX_UNROLL if self._unrolled else MAX_UNROLL_OUTER)
+        walked = self.evaluator.eval(statement.iter, frame) if items is None else None
+        if isinstance(walked, ParamValue) and isinstance(statement.target, ast.Name):
+            # a loop over a list parameter's value: a call named by its variable is one
+            # call per element the configuration gives it (the graph expands it, and the
+            # loop, "for each", is then no condition of those calls)
+            loop = condition(EACH_STATEMENT, text, self._where(frame, statement))
+            items = (ParamElement(walked.name),)
         # a loop over a known, short sequence is unrolled: one walk of the body per item
         self._unrolled += 1 if items else 0
         try:
@@ -468,6 +476,9 @@ class Walker:
                 value.name.removeprefix("~"))
             if isinstance(default, Value) and default.is_known:
                 call.name_default = default.text
+        elif isinstance(value, ParamElement):
+            call.name_param = param_name(Value.of(value.name)) if version == 2 else value.name
+            call.name_each = "."
         else:
             params = [p.origin for p in text.parts if isinstance(p, Unknown)]
             if len(params) == 1 and params[0].startswith("parameter "):

@@ -313,6 +313,15 @@ class Process(Action):
 
 
 @dataclass
+class LaunchCommand(Action):
+    """A process whose command line is ``ros2 launch PKG FILE [NAME:=VALUE ...]`` (or
+    ``ros2 launch PATH ...``): the launch file it runs, in a launch process of its own
+    (``runner.do_LaunchCommand``). ``words``: the words after ``ros2 launch``."""
+
+    words: list[Text]
+
+
+@dataclass
 class Unsupported(Action):
     """Something we do not interpret; its effect on the graph is unknown."""
 
@@ -340,6 +349,15 @@ def ros2_command_node(words: list[Text]) -> NodeAction | None:
             if plain(word) in ("-n", "--node-name"):
                 name = words[index + 1]
         return NodeAction(("ros2topic",), ("ros2",), name, arguments=list(words[1:]))
+    return None
+
+
+def ros2_launch_words(words: list[Text]) -> list[Text] | None:
+    """The words after ``ros2 launch`` when the command line starts so, else None."""
+    head = [w[0] if len(w) == 1 and isinstance(w[0], str) else None for w in words[:2]]
+    if len(head) == 2 and head[0] is not None and head[0].rsplit("/", 1)[-1] == "ros2" \
+            and head[1] == "launch":
+        return list(words[2:])
     return None
 
 

@@ -211,9 +211,16 @@ def command_line(value: Any, ev: Evaluator) -> str | None:
         return None
     commands = [part for part in value if isinstance(part, e.Command)]
     rest = [part for part in value if not isinstance(part, e.Command)]
-    if len(commands) != 1 or any(not isinstance(p, str) or p.strip() for p in rest):
+    if len(commands) == 1 and all(isinstance(p, str) and not p.strip() for p in rest):
+        return ev.value(commands[0].command).text
+    if commands or not any(isinstance(part, e.Var) for part in value):
         return None
-    return ev.value(commands[0].command).text
+    # a launch configuration that holds a Command's output (``$(var description)``)
+    parts = [p for p in ev.value(value).parts if not (isinstance(p, str) and not p.strip())]
+    if len(parts) != 1 or isinstance(parts[0], str):
+        return None
+    return next((line for output, line in ev.runner.command_outputs
+                 if output is parts[0]), None)
 
 
 def _as_given(runner: Runner, entry: e.ParamFile, scope: Scope,

@@ -341,8 +341,22 @@ def node(container: bool) -> Builder:
 
 def execute_process(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     """``ExecuteProcess(cmd=[...])``: the node of ``ros2 run PKG EXE ...`` or ``ros2
-    topic pub ...`` (``entities.ros2_command_node``); any other process, no node."""
+    topic pub ...`` (``entities.ros2_command_node``), the launch file ``ros2 launch PKG
+    FILE ...`` runs (``entities.LaunchCommand``); any other process, no node."""
     cmd = arg(a, k, 0, "cmd")
+    if k.get("shell") is True and isinstance(cmd, (list, tuple)) and cmd and None not in cmd \
+            and isinstance(cmd[0], str) and len(cmd[0].split()) > 1:
+        # a command line in one word (cmd=['ros2 launch pkg robot.launch.py'],
+        # shell=True): launch joins the words with spaces and the shell splits the line,
+        # as <executable cmd="..."> is read when performed
+        line: list[e.Text] = []
+        for index, word in enumerate(cmd):
+            line += [(" ",), to_text(word)] if index else [to_text(word)]
+        return finish(i, e.Process(e.text(*line)), k, n)
+    if isinstance(cmd, (list, tuple)) and None not in cmd:
+        launched = e.ros2_launch_words([to_text(w) for w in cmd])
+        if launched is not None:  # ros2 launch PKG FILE ...: that launch file's nodes
+            return finish(i, e.LaunchCommand(launched), k, n)
     action = e.ros2_command_node([to_text(w) for w in cmd]) if isinstance(
         cmd, (list, tuple)) else None
     if action is None:  # said when performed: a ROS node it may start is not in the graph

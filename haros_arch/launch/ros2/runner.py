@@ -35,9 +35,17 @@ from .substitutions import Evaluator
 MAX_INCLUDE_DEPTH = 24
 MAX_ACTIONS = 20_000
 MAX_PARAM_FILE = 1024 * 1024
+MAX_WALKED = 50_000  # files and folders of a package looked through for ros2 launch's file
 
 # path -> actions (or None when the file could not be read); set by ros2.__init__
 Parser = Callable[[str, "Runner", Location], "list[e.Action] | None"]
+
+
+# ros2 launch's options that print the launch description and start nothing, and
+# those that take a value
+_LAUNCH_PRINTS = frozenset({"-p", "--print", "--print-description", "-s", "--show-args",
+                            "--show-arguments"})
+_LAUNCH_OPTIONS_WITH_VALUE = frozenset({"--launch-prefix", "--launch-prefix-filter"})
 
 
 @dataclass
@@ -73,6 +81,11 @@ class Runner:
         self.param_entries = 0  # parameter entries applied to nodes (nodes.node_params)
         self.anon: dict[str, Unknown] = {}
         self.guard: LaunchCondition | None = None  # the condition of the action at hand
+        # the unknown output of each Command evaluated, with its command line: a value
+        # that is one of them, through launch configurations (``<let name="d"
+        # value="$(command 'xacro ...')"/>`` then ``value="$(var d)"``), is that command's
+        # output, which robot descriptions read (``nodes.command_line``)
+        self.command_outputs: list[tuple[Unknown, str]] = []
 
     # -- diagnostics and values --------------------------------------------------
     def report(self, code: str, location: Location, **params: object) -> None:
@@ -327,6 +340,10 @@ class Runner:
                 words = shlex.split(str(value.literal))
             except ValueError:
                 words = []
+        launched = e.ros2_launch_words([(w,) for w in words])
+        if launched is not None:
+            self.do_LaunchCommand(e.LaunchCommand(launched, location=action.location), scope)
+            return
         node = e.ros2_command_node([(w,) for w in words])
         if node is None:  # said: a ROS node it may start is not in the graph
             self.report("LAUNCH_PROCESS", action.location,
@@ -334,6 +351,91 @@ class Runner:
             return
         node.location = action.location
         self.do_NodeAction(node, scope)
+
+    def do_LaunchCommand(self, action: e.LaunchCommand, scope: Scope) -> None:
+        """``ros2 launch PKG FILE [NAME:=VALUE ...]`` (or ``ros2 launch PATH ...``) as a
+        process: the launch file ros2launch finds, the one file of that name in the
+        package's folder, run as a launch of its own. Only the arguments given on the
+        command line reach it, not this launch's configurations, namespace, remaps or
+        parameters; the process's conditions (an event handler's) are its nodes'."""
+        where = action.location
+        positional: list[str] = []
+        arguments: list[tuple[str, Value | None]] = []
+        words = list(action.words)
+        index = 0
+        while index < len(words):
+            value = self.value(words[index], scope, where)
+            text = value.literal if value is not None else None
+            index += 1
+            if text is not None and text.startswith("-"):
+                if text in _LAUNCH_PRINTS:  # prints the launch description, starts nothing
+                    return
+                if text in _LAUNCH_OPTIONS_WITH_VALUE:
+                    index += 1
+                continue
+            if value is not None and ":=" in value.text:
+                head = value.text.split(":=", 1)[0]
+                if "?" not in head:  # NAME:=VALUE, the value maybe not known statically
+                    rest = text.split(":=", 1)[1] if text is not None else None
+                    arguments.append((head, Value.of(rest) if rest is not None
+                                      else Value.unknown(f"argument {head} of ros2 launch")))
+                    continue
+            if text is None:
+                self.report("LAUNCH_PROCESS", where, command=e.command_head(
+                    [("ros2",), ("launch",), *action.words]))
+                return
+            positional.append(text)
+        path = self._launched_file(positional, where)
+        if path is None:
+            return
+        inner = Scope({name: value for name, value in arguments},
+                      conditions=scope.conditions, environment=dict(scope.environment))
+        item = LaunchItem("file", self.workspace.relpath(share_source(self.workspace, path)),
+                          where, namespace="/", condition=self.take_guard())
+        item.args = [LaunchArg(name, value.text if value is not None else None,
+                               "command line", where) for name, value in arguments]
+        inner.item = scope.item.add(item)
+        self.run_file(path, inner, where)
+
+    def _launched_file(self, positional: list[str], where: Location) -> str | None:
+        """The file ``ros2 launch`` runs: ``PKG FILE``, the one file named FILE in the
+        package's folder (ros2launch walks its share folder so); ``PATH``, that file."""
+        if len(positional) == 1 and os.path.isabs(positional[0]):
+            return positional[0]  # run_file says when it is not there
+        if len(positional) != 2:
+            self.report("LAUNCH_PROCESS", where, command=" ".join(
+                ["ros2", "launch", *positional]))
+            return None
+        package, name = positional
+        self.uses(package, where)
+        folder = self.workspace.find(package)
+        if folder is None:  # installed on the robot, perhaps: what it starts is unknown
+            self.report("LAUNCH_UNKNOWN_VALUE", where, detail=(
+                f"package {package} is not in the workspace nor installed here; what "
+                f"ros2 launch {package} {name} starts is unknown"))
+            return None
+        found: list[str] = []
+        seen = 0
+        for top, folders, files in os.walk(folder):
+            folders[:] = sorted(f for f in folders if not f.startswith("."))
+            found.extend(os.path.join(top, f) for f in sorted(files) if f == name)
+            seen += len(files) + len(folders)
+            if len(found) > 1 or seen > MAX_WALKED:
+                break
+        if seen > MAX_WALKED and len(found) < 2:
+            self.report("LAUNCH_UNSUPPORTED", where, detail=(
+                f"package {package} has more than {MAX_WALKED} files; {name} is not "
+                "looked for in it"))
+            return None
+        if not found:
+            self.report("LAUNCH_FILE_MISSING", where, path=f"{package}/.../{name}")
+            return None
+        if len(found) > 1:
+            self.report("LAUNCH_UNSUPPORTED", where, detail=(
+                f"package {package} has several files named {name}; which one ros2 "
+                "launch runs depends on what the build installs"))
+            return None
+        return found[0]
 
     def do_Unsupported(self, action: e.Unsupported, scope: Scope) -> None:
         self.report("LAUNCH_UNSUPPORTED", action.location, detail=action.what)
@@ -375,6 +477,22 @@ class Runner:
                         detail=f"parameter file {path} is not known statically")
             return None
         file = share_source(self.workspace, path.literal)
+        if not self.workspace.readable(file, self.environment):
+            # as a ROS 1 <rosparam file> and $(file-content): only the workspace's and the
+            # installed packages' files are read (Clearpath's /etc/clearpath/... files
+            # are made on the robot); what it would set stays unknown
+            self.report("LAUNCH_UNKNOWN_VALUE", where, detail=(
+                f"parameter file {file} is outside the workspace and installed packages; "
+                "it is not read"))
+            return None
+        if not os.path.lexists(file):
+            # said where the launch file gives it (not at a file that is not there):
+            # launch_ros warns "Parameter file path is not a file" and starts the node
+            # without it; a build step may make it, so what it would set stays unknown
+            self.report("LAUNCH_PARAM_FILE", where, detail=(
+                f"parameter file {self.workspace.relpath(file)} does not exist; "
+                "ros2 launch starts the node without it (with a warning)"))
+            return None
         text, found = read_text(file, self.workspace.location(file), MAX_PARAM_FILE)
         self.model.diagnostics.extend(found)
         if text is None:

@@ -440,7 +440,10 @@ class Evaluator:
         return self.value(s.file.path)
 
     def s_Command(self, s: e.Command) -> Value:
-        return self.s_Opaque(e.Opaque(s.origin))
+        output = self.s_Opaque(e.Opaque(s.origin))
+        line = self.value(s.command).text
+        self.runner.command_outputs.append((output.parts[0], line))  # type: ignore[arg-type]
+        return output
 
     def s_Opaque(self, s: e.Opaque) -> Value:
         if s.report:

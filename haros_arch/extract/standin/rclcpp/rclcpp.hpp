@@ -81,12 +81,27 @@ std::vector<std::string> remove_ros_arguments(int argc, char const* const argv[]
 enum ParameterType : unsigned char { PARAMETER_NOT_SET, PARAMETER_BOOL, PARAMETER_INTEGER,
   PARAMETER_DOUBLE, PARAMETER_STRING, PARAMETER_BYTE_ARRAY, PARAMETER_BOOL_ARRAY,
   PARAMETER_INTEGER_ARRAY, PARAMETER_DOUBLE_ARRAY, PARAMETER_STRING_ARRAY };
+// the value type of get<ParameterType>() / get_value<ParameterType>()
+template<ParameterType P> struct haros_parameter_value { using type = std::string; };
+template<> struct haros_parameter_value<PARAMETER_BOOL> { using type = bool; };
+template<> struct haros_parameter_value<PARAMETER_INTEGER> { using type = int64_t; };
+template<> struct haros_parameter_value<PARAMETER_DOUBLE> { using type = double; };
+template<> struct haros_parameter_value<PARAMETER_BYTE_ARRAY> {
+  using type = std::vector<uint8_t>; };
+template<> struct haros_parameter_value<PARAMETER_BOOL_ARRAY> { using type = std::vector<bool>; };
+template<> struct haros_parameter_value<PARAMETER_INTEGER_ARRAY> {
+  using type = std::vector<int64_t>; };
+template<> struct haros_parameter_value<PARAMETER_DOUBLE_ARRAY> {
+  using type = std::vector<double>; };
+template<> struct haros_parameter_value<PARAMETER_STRING_ARRAY> {
+  using type = std::vector<std::string>; };
 class ParameterValue {
 public:
   ParameterValue();
   template<class T> ParameterValue(const T& v);
   ParameterType get_type() const;
   template<class T> T get() const;
+  template<ParameterType P> const typename haros_parameter_value<P>::type& get() const;
 };
 class Parameter {
 public:
@@ -98,6 +113,7 @@ public:
   std::string get_type_name() const;
   ParameterValue get_parameter_value() const;
   template<class T> T get_value() const;
+  template<ParameterType P> const typename haros_parameter_value<P>::type& get_value() const;
   bool as_bool() const;
   int64_t as_int() const;
   double as_double() const;
@@ -115,6 +131,7 @@ public:
   Duration(const builtin_interfaces::msg::Duration& d);
   static Duration from_seconds(double seconds);
   static Duration from_nanoseconds(int64_t ns);
+  static Duration max();
   double seconds() const;
   int64_t nanoseconds() const;
   template<class D> D to_chrono() const;
@@ -154,6 +171,10 @@ public:
   Time now();
   rcl_clock_type_t get_clock_type() const;
   bool sleep_for(Duration d);
+  bool sleep_until(Time until);
+  bool wait_until_started();
+  template<class R, class P> bool wait_until_started(const std::chrono::duration<R, P>& timeout);
+  bool started();
 };
 class Rate {
 public:
@@ -454,7 +475,11 @@ class NodeBaseInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeBaseInterface
 class NodeTopicsInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeTopicsInterface)
   std::string resolve_topic_name(const std::string& name, bool only_expand = false) const; };
 // rclcpp's parameter API on the node's parameters interface (api.RCLCPP_INTERFACES)
+struct OnSetParametersCallbackHandle;
 class NodeParametersInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeParametersInterface)
+  template<class C> std::shared_ptr<OnSetParametersCallbackHandle>
+      add_on_set_parameters_callback(C callback);
+  void remove_on_set_parameters_callback(const OnSetParametersCallbackHandle* handler);
   const rclcpp::ParameterValue& declare_parameter(const std::string& name,
       const rclcpp::ParameterValue& default_value = rclcpp::ParameterValue(),
       const rcl_interfaces::msg::ParameterDescriptor& descriptor =
@@ -565,6 +590,7 @@ using OnSetParametersCallbackHandle = node_interfaces::OnSetParametersCallbackHa
   template<class T> bool get_parameter(const std::string& name, T& value) const; \
   template<class T> bool get_parameter_or(const std::string& name, T& value, \
       const T& alternative) const; \
+  template<class T> T get_parameter_or(const std::string& name, const T& alternative) const; \
   std::vector<rclcpp::Parameter> get_parameters(const std::vector<std::string>& names) const; \
   template<class T> bool get_parameters(const std::string& prefix, \
       std::map<std::string, T>& values) const; \
@@ -677,6 +703,9 @@ std::string to_string(const FutureReturnCode& code);
 namespace executor { using FutureReturnCode = rclcpp::FutureReturnCode; }
 template<class N> void spin(std::shared_ptr<N> node);
 template<class N> void spin_some(std::shared_ptr<N> node);
+// rclcpp's spin takes a Node::SharedPtr, which a std::unique_ptr converts to
+template<class N, class D> void spin(std::unique_ptr<N, D>&& node);
+template<class N, class D> void spin_some(std::unique_ptr<N, D>&& node);
 template<class N, class F> FutureReturnCode spin_until_future_complete(std::shared_ptr<N> node,
                                                                        const F& future);
 template<class N, class F, class R, class P> FutureReturnCode spin_until_future_complete(

@@ -970,16 +970,26 @@ typedef ratio<1, 1000000> micro;
 typedef ratio<1, 1000> milli;
 namespace chrono {
 template<class R, class P = ratio<1>> class duration {
+  R haros_count_;
 public:
   typedef R rep;
   typedef P period;
-  constexpr duration();
-  template<class R2> constexpr explicit duration(const R2& count);
-  template<class R2, class P2> constexpr duration(const duration<R2, P2>& d);
-  constexpr R count() const;
-  static constexpr duration zero();
-  static constexpr duration max();
-  static constexpr duration min();
+  // defined, so that a constexpr duration can be initialised with them
+  // (constexpr auto period = std::chrono::duration<double>(1.0 / 40.0);)
+  constexpr duration() : haros_count_() {}
+  template<class R2> constexpr explicit duration(const R2& count) : haros_count_(count) {}
+  // implicit where the standard allows it: to a floating-point count, or from a count
+  // of a period that is a whole multiple of this one (seconds to milliseconds, not back,
+  // so that a conditional between the two has one type); from a floating-point count
+  // too, which the standard refuses, as this file's arithmetic gives double counts
+  template<class R2, class P2, class = typename enable_if<
+      __is_floating_point(R) || __is_floating_point(R2) ||
+      (P2::num * P::den) % (P2::den * P::num) == 0>::type>
+  constexpr duration(const duration<R2, P2>& d) : haros_count_(d.count()) {}
+  constexpr R count() const { return haros_count_; }
+  static constexpr duration zero() { return duration(); }
+  static constexpr duration max() { return duration(); }
+  static constexpr duration min() { return duration(); }
   duration operator-() const;
   duration& operator+=(const duration& d);
   duration& operator-=(const duration& d);
@@ -1012,7 +1022,9 @@ typedef duration<long, milli> milliseconds;
 typedef duration<long> seconds;
 typedef duration<long, ratio<60>> minutes;
 typedef duration<long, ratio<3600>> hours;
-template<class To, class R, class P> constexpr To duration_cast(const duration<R, P>& d);
+template<class To, class R, class P> constexpr To duration_cast(const duration<R, P>& d) {
+  return To(d.count());
+}
 template<class C, class D = typename C::duration> class time_point {
 public:
   typedef D duration;
@@ -1047,14 +1059,14 @@ struct steady_clock {
 typedef steady_clock high_resolution_clock;
 }  // namespace chrono
 inline namespace literals { inline namespace chrono_literals {
-constexpr chrono::hours operator""h(unsigned long long v);
-constexpr chrono::minutes operator""min(unsigned long long v);
-constexpr chrono::seconds operator""s(unsigned long long v);
-constexpr chrono::milliseconds operator""ms(unsigned long long v);
-constexpr chrono::microseconds operator""us(unsigned long long v);
-constexpr chrono::nanoseconds operator""ns(unsigned long long v);
-constexpr chrono::duration<double> operator""s(long double v);
-constexpr chrono::duration<double, milli> operator""ms(long double v);
+constexpr chrono::hours operator""h(unsigned long long v) { return chrono::hours(v); }
+constexpr chrono::minutes operator""min(unsigned long long v) { return chrono::minutes(v); }
+constexpr chrono::seconds operator""s(unsigned long long v) { return chrono::seconds(v); }
+constexpr chrono::milliseconds operator""ms(unsigned long long v) { return chrono::milliseconds(v); }
+constexpr chrono::microseconds operator""us(unsigned long long v) { return chrono::microseconds(v); }
+constexpr chrono::nanoseconds operator""ns(unsigned long long v) { return chrono::nanoseconds(v); }
+constexpr chrono::duration<double> operator""s(long double v) { return chrono::duration<double>(v); }
+constexpr chrono::duration<double, milli> operator""ms(long double v) { return chrono::duration<double, milli>(v); }
 } }
 namespace chrono { using namespace literals::chrono_literals; }
 class thread {
