@@ -135,3 +135,23 @@ def test_byte_order_mark_is_not_text(write_tree) -> None:
     result = run(folder, "bom.py")
     assert [c.name for c in result.calls] == ["ok"]
     assert codes(result) == []
+
+
+def test_a_package_that_imports_its_own_modules_from_itself(write_tree) -> None:
+    # mavros' __init__.py: ``from . import system`` (the package is that very module),
+    # then ``system.SystemPlugin`` in a class of it: the name is the submodule, found
+    # once, not looked up in the package for ever (a RecursionError ended the run)
+    folder = write_tree({
+        "pkg/package.xml": package_xml("pkg"),
+        "pkg/src/pkg/__init__.py": "from . import system\nfrom .system import TOPIC\n\n"
+                                   "def topic():\n    return system.TOPIC\n",
+        "pkg/src/pkg/system.py": "from . import system\nTOPIC = 'state'\n",
+        "pkg/scripts/node.py": "import rospy\nfrom std_msgs.msg import String\n"
+                               "import pkg\nfrom pkg import system\n"
+                               "rospy.init_node('n')\n"
+                               "rospy.Publisher(system.TOPIC, String, queue_size=1)\n"
+                               "rospy.Publisher(pkg.topic(), String, queue_size=1)\n",
+        "pkg/setup.py": "from setuptools import setup\nsetup(name='pkg', packages=['pkg'],"
+                        " package_dir={'': 'src'})\n"})
+    result = run(folder, "node.py")
+    assert [c.name for c in result.calls if c.kind == "publish"] == ["state", "state"]

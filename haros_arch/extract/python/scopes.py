@@ -48,7 +48,16 @@ class Scopes(EvaluatorBase):
                 return Unknown(name)
             if symbol is None:
                 return ModuleRef(other)
-            found = self.lookup(other, symbol)
+            # a name imported in a cycle (``from . import system`` in the package's own
+            # ``__init__``: the package is the module itself) is looked up once
+            key = (f"import:{module.path}", name)
+            if key in self._computing:
+                return Unknown(name)
+            self._computing.add(key)
+            try:
+                found = self.lookup(other, symbol)
+            finally:
+                self._computing.discard(key)
             inner = submodule(other.path, symbol) if isinstance(found, Unknown) else None
             loaded = self.loader.load(inner) if inner is not None else None
             # a name the package's __init__ does not bind: its submodule, as import does
