@@ -155,3 +155,21 @@ def test_a_package_that_imports_its_own_modules_from_itself(write_tree) -> None:
                         " package_dir={'': 'src'})\n"})
     result = run(folder, "node.py")
     assert [c.name for c in result.calls if c.kind == "publish"] == ["state", "state"]
+
+
+def test_an_api_module_of_the_workspace_is_read_by_its_rows(write_tree) -> None:
+    # ros_comm holds rospy's own sources (clients/rospy/src/rospy): a script of its
+    # topic_tools that calls rospy.ServiceProxy makes a service client, not a call of
+    # the class in those sources (the model of topic_tools' mux_add had lost both)
+    folder = write_tree({
+        "pkg/package.xml": package_xml("pkg"),
+        "rospy/package.xml": package_xml("rospy"),
+        "rospy/src/rospy/__init__.py": "from .impl import ServiceProxy\n",
+        "rospy/src/rospy/impl.py": "class ServiceProxy(object):\n"
+                                   "    def __init__(self, name, cls):\n"
+                                   "        self.name = name\n",
+        "pkg/scripts/add.py": "import rospy\nfrom std_srvs.srv import Empty\n"
+                              "rospy.init_node('adder')\n"
+                              "rospy.ServiceProxy('mux/add', Empty)\n"})
+    result = run(folder, "add.py")
+    assert [(c.kind, c.name) for c in result.calls] == [("client", "mux/add")]

@@ -11,6 +11,7 @@ and Python packages other packages of the workspace hold (``src/<name>/__init__.
 from __future__ import annotations
 
 import ast
+import functools
 import os
 import re
 from dataclasses import dataclass, field
@@ -189,6 +190,8 @@ class Loader:
                         if name.isidentifier() and os.path.isfile(
                                 os.path.join(base, name, "__init__.py")):
                             self._others.setdefault(name, base)
+        if parts[0] in api_modules():
+            return None  # its API rows read it, not its own code (ros_comm holds rospy's)
         base = self._others.get(parts[0])
         return _module_file(base, parts) if base is not None else None
 
@@ -400,3 +403,12 @@ def _scan(code: str, quote: str = "") -> tuple[int, int, str]:
             depth -= 1
         i += 1
     return depth, len(code), quote if len(quote) == 3 else ""
+
+
+@functools.lru_cache(maxsize=1)
+def api_modules() -> frozenset[str]:
+    """The top modules whose calls the API tables read (``rospy``, ``rclpy``,
+    ``actionlib``, ...): never read from a workspace package's sources."""
+    from . import rclpy, rospy
+
+    return frozenset(module for module, _ in (*rospy.ROWS, *rclpy.ROWS))
