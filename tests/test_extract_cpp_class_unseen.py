@@ -388,3 +388,47 @@ def test_a_message_no_header_declares_is_no_class(write_tree: Any) -> None:
         }
         """, "vendor_msgs", "std_msgs")
     assert node.completeness == "complete", node.completeness_reasons
+
+
+def test_an_alias_or_enumeration_of_a_workspace_package_is_no_class(write_tree: Any) -> None:
+    # mavros' frame_tf.h: ``using Covariance3d = sensor_msgs::Imu::_angular_velocity_
+    # covariance_type;``, a type the parse may not know; built by the imu plugin, it made
+    # the node partial as a class "whose code is not read". An alias or an enumeration
+    # has no code; a class defined in a header is read where it is defined.
+    header = """
+        #pragma once
+        #include <vendor/matrix.h>
+        namespace grid {
+        using Covariance = vendor::Matrix3;
+        typedef vendor::Frame FrameId;
+        enum class Mode : int { IDLE, RUN };
+        class Watcher {
+         public:
+          Watcher() { ros::NodeHandle nh("~"); nh.param("rate", rate_, 1.0); }
+          double rate_;
+        };
+        }  // namespace grid
+        """
+    user = """
+        #include <ros/ros.h>
+        #include "grid/types.h"
+        int main(int argc, char** argv) {
+          ros::init(argc, argv, "user");
+          grid::Covariance covariance;
+          grid::FrameId frame;
+          ros::spin();
+        }
+        """
+    model = _model(write_tree, {
+        "src/grid/package.xml": _depends("grid", "roscpp"),
+        "src/grid/CMakeLists.txt": "project(grid)\nfind_package(catkin REQUIRED)\n"
+                                   "catkin_package(INCLUDE_DIRS include)\n",
+        "src/grid/include/grid/types.h": header,
+        "src/user/package.xml": _depends("user", "roscpp", "grid"),
+        "src/user/CMakeLists.txt": "project(user)\nfind_package(catkin REQUIRED COMPONENTS"
+                                   " roscpp grid)\nadd_executable(user src/user.cpp)\n",
+        "src/user/src/user.cpp": user,
+    })
+    node = next(n for p in model.packages for n in p.nodes if n.name == "user/user")
+    said = [d.message for d in model.diagnostics if d.code == "CPP_CLASS_UNSEEN"]
+    assert node.completeness == "complete" and not said, (node.completeness_reasons, said)

@@ -653,9 +653,18 @@ def _client(name: str, cls: str, declared: set[str], workspace: Workspace,
 
 def _defining_code(root: str, cls: str, read: list[str]) -> str | None:
     """The text of the files under ``root`` that define a constructor of ``cls`` out of
-    its class (``cls::cls(``), joined; None when none does."""
-    defines = re.compile(rf"\b{re.escape(cls)}\s*::\s*{re.escape(cls)}\s*\(")
+    its class (``cls::cls(``), joined; else of those that define the class itself
+    (``class cls {``, its constructors inline); "" when ``cls`` is only an alias or an
+    enumeration there (``using Covariance3d = ...``, ``enum class cls``: no code of its
+    own); None when no file says."""
+    name = re.escape(cls)
+    defines = re.compile(rf"\b{name}\s*::\s*{name}\s*\(")
+    declares = re.compile(rf"\b(?:class|struct)\s+(?:\w+\s+)?{name}\b[^;{{]*{{")
+    plain = re.compile(rf"\busing\s+{name}\s*=|\btypedef\b[^;]*\b{name}\s*;|"
+                       rf"\benum\s+(?:class\s+|struct\s+)?{name}\b")
     found: list[str] = []
+    classes: list[tuple[str, str]] = []
+    alias = False
     seen = 0
     for folder, dirs, files in os.walk(root):
         dirs.sort()
@@ -664,7 +673,7 @@ def _defining_code(root: str, cls: str, read: list[str]) -> str | None:
                 continue
             seen += 1
             if seen > MAX_CLIENT_FILES:
-                return "\n".join(found) if found else None
+                break
             full = os.path.join(folder, file)
             try:
                 if os.path.getsize(full) > MAX_FILE_BYTES:
@@ -676,7 +685,19 @@ def _defining_code(root: str, cls: str, read: list[str]) -> str | None:
             if defines.search(text):
                 found.append(text)
                 read.append(full)
-    return "\n".join(found) if found else None
+            elif declares.search(text):
+                classes.append((full, text))
+            elif plain.search(text):
+                alias = True
+                read.append(full)
+        if seen > MAX_CLIENT_FILES:
+            break
+    if found:
+        return "\n".join(found)
+    if classes:
+        read.extend(full for full, _ in classes)
+        return "\n".join(text for _, text in classes)
+    return "" if alias else None
 
 
 def error_detail(spelling: str, generated: str) -> str:
