@@ -63,6 +63,10 @@ ROWS: dict[tuple[str, str], PyFunction] = {
     ("tf2_ros", "StaticTransformBroadcaster"): PyFunction(
         "publish", owner=NODE, name=None, fixed_name="/tf_static",
         fixed_type="tf2_msgs/msg/TFMessage", fixed_qos="tf_static"),
+    # Buffer(cache_time=None, node=None): given a node, it serves tf2_frames on it
+    ("tf2_ros", "Buffer"): PyFunction(
+        "server", owner=Arg(1, "node"), name=None, fixed_name="tf2_frames",
+        fixed_type="tf2_msgs/srv/FrameGraph", special="tf2-buffer-node"),
     # TransformListener(buffer, node)
     ("tf2_ros", "TransformListener"): PyFunction(
         "subscribe", owner=Arg(1, "node"), name=None, fixed_type="tf2_msgs/msg/TFMessage",

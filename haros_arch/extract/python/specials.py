@@ -21,7 +21,8 @@ def special_calls(ev: Evaluator, spec: PyFunction, call: ast.Call, frame: Frame,
     from one argument list): one per parameter of ``declare_parameters`` /
     ``get_parameters`` / ``set_parameters``, every parameter under the prefix of
     ``get_parameters_by_prefix`` (``prefix.?``, optional), ``/tf`` and ``/tf_static`` for a
-    ``TransformListener``, a tf2 buffer's frames service unless ``debug=False``."""
+    ``TransformListener``, a tf2 buffer's frames service unless ``debug=False`` (ROS 2:
+    only when it is given a node)."""
     if spec.special == "tf-listener":
         qos = ({"tf": rclpy.PRESETS["tf"], "tf_static": rclpy.PRESETS["tf_static"]}
                if version == 2 else {})
@@ -31,6 +32,11 @@ def special_calls(ev: Evaluator, spec: PyFunction, call: ast.Call, frame: Frame,
     if spec.special == "tf2-buffer":
         debug = argument(call, Arg(1, "debug"))
         if debug is not None and evaluate(ev, debug, frame) is False:
+            return []
+        return [replace(base, name=spec.fixed_name or "?")]
+    if spec.special == "tf2-buffer-node":  # ROS 2: only a buffer given a node serves it
+        node = argument(call, spec.owner) if spec.owner is not None else None
+        if node is None or (isinstance(node, ast.Constant) and node.value is None):
             return []
         return [replace(base, name=spec.fixed_name or "?")]
     made: list[PrimitiveCall] = []
