@@ -244,6 +244,59 @@ def test_ros2_declared_parameters_decide_conditions(write_tree):
     assert published.get("extra") == []
 
 
+NODE3 = """
+    #include <rclcpp/rclcpp.hpp>
+    #include <std_msgs/msg/string.hpp>
+
+    class Loader : public rclcpp::Node {
+     public:
+      Loader() : Node("loader") {
+        declare_parameter("enable_selected_map_loading", false);
+        declare_parameter("publish_partial_map", true);
+        declare_parameter("debug_topics", false);
+        if (get_parameter("enable_selected_map_loading").as_bool()) {
+          selected_pub_ = create_publisher<std_msgs::msg::String>("selected", 10);
+        }
+        if (!this->get_parameter("publish_partial_map").as_bool()) {
+          whole_pub_ = create_publisher<std_msgs::msg::String>("whole", 10);
+        }
+        if (get_parameter("debug_topics").as_bool()) {
+          debug_pub_ = create_publisher<std_msgs::msg::String>("debug", 10);
+        }
+      }
+     private:
+      rclcpp::Publisher<std_msgs::msg::String>::SharedPtr selected_pub_, whole_pub_, debug_pub_;
+    };
+
+    int main(int argc, char** argv) {
+      rclcpp::init(argc, argv);
+      rclcpp::spin(std::make_shared<Loader>());
+    }
+    """
+
+
+def test_ros2_get_parameter_values_decide_conditions(write_tree):
+    # Autoware's lanelet2_map_loader_node.cpp:98: ``if (get_parameter(
+    # "enable_selected_map_loading").as_bool())``: the node's parameter, as the launch file
+    # sets it, else as the code declares it
+    root = write_tree({
+        "src/loader/package.xml": package_xml("loader", build_type="ament_cmake"),
+        "src/loader/CMakeLists.txt": "project(loader)\nadd_executable(loader src/loader.cpp)\n"
+                                     "install(TARGETS loader DESTINATION lib/${PROJECT_NAME})\n",
+        "src/loader/src/loader.cpp": NODE3,
+        "src/loader/launch/loader.launch.xml": """
+            <launch>
+              <node pkg="loader" exec="loader" name="loader">
+                <param name="enable_selected_map_loading" value="true"/>
+              </node>
+            </launch>
+            """,
+        "project.yaml": "project: p\nconfigurations:\n  c: [loader/launch/loader.launch.xml]\n",
+    })
+    published = _publishers(_config(root), "/loader")
+    assert published == {"selected": []}  # set true; declared true (so not whole); false
+
+
 def test_the_condition_grammar_reads_only_what_it_can_compute():
     from haros_arch.graph.conditions import decide, python_of
     from haros_arch.model.values import Unknown
@@ -253,7 +306,11 @@ def test_the_condition_grammar_reads_only_what_it_can_compute():
     assert python_of("x.size() > 0") == ("(len(x) > 0)", frozenset({"x"}))
     assert python_of('!args.empty() && args.at(1) == "bytes"') == (
         '((not (len(args) == 0)) and (args[1] == "bytes"))', frozenset({"args"}))
-    for text in ("f(x)", "ns::flag", "x.begin() != x.end()", "x.at(i) == 1", "x.size",
+    assert python_of('get_parameter("a.b").as_bool()') == (
+        "haros_parameter_612e62", frozenset({"haros_parameter_612e62"}))
+    for text in ("get_parameter(name).as_bool()", 'get_parameter("a").as_array()',
+                 'get_parameter("a")', "f(x)", "ns::flag", "x.begin() != x.end()",
+                 "x.at(i) == 1", "x.size",
                  "int i = 0; i < n; ++i", "a = 1",
                  "__import__", "(" * 500 + "a" + ")" * 500, "a" * 2000, "default"):
         assert python_of(text) is None, text

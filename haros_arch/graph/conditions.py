@@ -134,6 +134,8 @@ class _Grammar:
             inner = self._binary(0)
             self._take(")")
             return inner
+        if value == "get_parameter" and self._peek() == ("op", "("):
+            return self._parameter()
         if "::" in value or "__" in value or value in _PYTHON_WORDS or (
             value in _CPP_WORDS or self._peek() == ("op", "(")
         ):
@@ -163,6 +165,42 @@ class _Grammar:
             self._take("]")
             return f"{value}[{number}]"
         return value
+
+
+    def _parameter(self) -> str:
+        """rclcpp's ``get_parameter("name").as_bool()`` (``as_int``, ``as_double``,
+        ``as_string``): the node's parameter, as a name of its own (``parameter_name``)."""
+        self._take("(")
+        kind, text = self._peek()
+        self.at += 1
+        if kind != "string":
+            raise ValueError("parameter name")
+        self._take(")")
+        self._take(".")
+        kind, method = self._peek()
+        self.at += 1
+        if kind != "name" or method not in _PARAMETER_VALUES:
+            raise ValueError(method)
+        self._take("(")
+        self._take(")")
+        name = PARAMETER_PREFIX + text[1:-1].encode().hex()
+        self.names.add(name)
+        return name
+
+
+# the typed values of an rclcpp Parameter a condition reads
+_PARAMETER_VALUES = frozenset({"as_bool", "as_int", "as_double", "as_string"})
+PARAMETER_PREFIX = "haros_parameter_"
+
+
+def parameter_name(name: str) -> str | None:
+    """The parameter a grammar name stands for (``get_parameter("x")``), else None."""
+    if not name.startswith(PARAMETER_PREFIX):
+        return None
+    try:
+        return bytes.fromhex(name[len(PARAMETER_PREFIX):]).decode()
+    except ValueError:
+        return None
 
 
 @functools.lru_cache(maxsize=4096)
@@ -301,8 +339,11 @@ def _member_values(instance: NodeInstance) -> Callable[..., object]:
         # a read in the condition's own file, else in another file of the node: a base
         # class's header that reads what its subclasses test (pcl_ros' PCLNodelet::onInit
         # reads ~use_indices into use_indices_, filter.cpp tests it); reads that disagree
-        # leave the member unknown
-        found = reads.get((file, name)) or anywhere.get(name)
+        # leave the member unknown. ``get_parameter("x")``: the node's reads of x.
+        parameter = parameter_name(name)
+        found = reads.get((file, name)) or anywhere.get(name) if parameter is None else [
+            link for link in instance.links if link.call is not None
+            and link.kind in ("read", "declare") and link.call.name == parameter]
         if not found:
             return Unknown(f"{name} is not known to hold a parameter")
         # a ROS 2 read without a default gets what the node's declarations of that
