@@ -69,6 +69,11 @@ def _run(write_tree: Any, body: str) -> tuple[Any, dict[str, list[tuple[str, ...
         "src/viewer/launch/viewer.launch": LAUNCH,
         "project.yaml": "project: p\nconfigurations:\n  c: [viewer/launch/viewer.launch]\n",
     })
+    return _analyse(root)
+
+
+def _analyse(root: Any) -> tuple[Any, dict[str, list[tuple[str, ...]]]]:
+    """The /viewer instance of the project at ``root``, and the findings by rule."""
     project = load(str(root / "project.yaml"))
     model = analyse(project, {"PATH": os.environ.get("PATH", "")}, Options(cache_dir=None))
     found: dict[str, list[tuple[str, ...]]] = {}
@@ -124,18 +129,12 @@ def test_a_wrapper_that_links_its_nodelet_runs_its_code(write_tree: Any) -> None
             "catkin_package()\nadd_library(view src/view.cpp)\n"
             "add_executable(viewer src/viewer.cpp)\ntarget_link_libraries(viewer view)\n",
         "src/viewer/src/view.cpp": NODELET,
-        "src/viewer/src/viewer.cpp": WRAPPER.replace("BODY", LOAD.replace(
-            "viewer/view", "viewer/view")),
+        "src/viewer/src/viewer.cpp": WRAPPER.replace("BODY", LOAD),
         "src/viewer/launch/viewer.launch": LAUNCH.replace(
             '<param name="autosize" value="true"/>',
             '<param name="autosize" value="true"/><param name="autosise" value="1"/>'),
         "project.yaml": "project: p\nconfigurations:\n  c: [viewer/launch/viewer.launch]\n",
     })
-    project = load(str(root / "project.yaml"))
-    model = analyse(project, {"PATH": os.environ.get("PATH", "")}, Options(cache_dir=None))
-    found: dict[str, list[tuple[str, ...]]] = {}
-    for finding in run_catalogue(model, project):
-        found.setdefault(finding.rule, []).append(finding.entities)
-    instance = next(n for n in model.configurations[0].nodes if n.name == "/viewer")
+    instance, found = _analyse(root)
     assert instance.completeness == "complete" and not instance.node.plugin_loads
     assert found["parameter-set-not-read"] == [("parameter:/viewer/autosise",)]

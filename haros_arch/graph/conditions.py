@@ -149,23 +149,25 @@ class _Grammar:
             if kind == "name" and method in ("size", "length", "empty"):
                 self._take(")")
                 return f"len({value})" if method != "empty" else f"(len({value}) == 0)"
-            if (kind, method) != ("name", "at") or self._peek()[0] != "number":
+            if (kind, method) != ("name", "at"):
                 raise ValueError(method)
-            number = self._peek()[1]
-            self.at += 1
+            number = self._number()
             self._take(")")
             return f"{value}[{number}]"
         if self._peek() == ("op", "["):
             self.at += 1
-            index, _ = self._peek()
-            if index != "number":
-                raise ValueError("index")
-            number = self._peek()[1]
-            self.at += 1
+            number = self._number()
             self._take("]")
             return f"{value}[{number}]"
         return value
 
+    def _number(self) -> str:
+        """An index, as written: only a number is read."""
+        kind, number = self._peek()
+        if kind != "number":
+            raise ValueError("index")
+        self.at += 1
+        return number
 
     def _parameter(self) -> str:
         """rclcpp's ``get_parameter("name").as_bool()`` (``as_int``, ``as_double``,

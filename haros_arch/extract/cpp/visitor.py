@@ -304,8 +304,6 @@ class CallFinder:
 
     def _function(self, function: Cursor) -> None:
         scope = self._scope = Scope(function, self.macros, self.source, self.sites)
-        # main(argc, argv): its conditions over them are over the program's arguments
-        self.reader.enter(function, _ARGUMENTS_LEFT)
         self._owner = owner_of(function)
         self._constructor = None
         # of a class, not a class template: a template's constructions name its
@@ -325,6 +323,8 @@ class CallFinder:
         # a constructor's calls exist where the class is constructed: under the
         # conditions of its construction sites in this file
         made_under = self._constructed_under(function, 0)
+        # main(argc, argv): its conditions over them are over the program's arguments (set
+        # after the construction sites, whose walk enters their own functions)
         self.reader.enter(function, _ARGUMENTS_LEFT)
         stack: list[tuple[Cursor, tuple[Condition, ...]]] = [
             (child, made_under) for child in reversed(list(function.get_children()))
