@@ -662,6 +662,29 @@ class Wrappers:
                         setattr(made, field, value)
         return True
 
+    def parameter_calls(self, call: Cursor, scope: Scope
+                        ) -> list[tuple[api.RosFunction, Scope]]:
+        """For a call of a wrapper that reads or declares a parameter (nav2's
+        ``declare_or_get_parameter``), each row it makes and the call site's scope in which
+        its name argument reads as the wrapper names it (what ``emit`` gives the calls);
+        empty for any other call."""
+        args = _arguments(call)
+        if _key(call) in self._inner or len(args) != len(written_arguments(call)):
+            return []  # (a lambda's call: ``_parameter`` reads the written arguments)
+        found: list[tuple[api.RosFunction, Scope]] = []
+        bound = _made_with(call, scope)
+        for wrapper in self._called(call):
+            row = wrapper.row
+            if row.kind not in ("read", "declare") or wrapper.namespace or (
+                row.name_arg >= len(args) or row.fixed_name is not None
+                or wrapper.spec_param is not None
+            ):
+                return []
+            before, after = _bind(wrapper.before, bound), _bind(wrapper.after, bound)
+            found.append((row, _NamedScope(scope, args[row.name_arg], before, after)
+                          if before or after else scope))
+        return found
+
     def _of_spec(self, row: api.RosFunction, call: Cursor,
                  index: int) -> api.RosFunction | None:
         """``row`` with the name and type of the interface spec ``call`` passes as its
