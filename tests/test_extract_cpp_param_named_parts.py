@@ -412,6 +412,7 @@ protected:
 
 POLYGON_CPP = """
 #include "ex/polygon.hpp"
+#include "ex/zone.hpp"
 Polygon::Polygon(rclcpp::Node * node, const std::string & polygon_name)
 : node_(node), polygon_name_(polygon_name) {}
 void Polygon::configure()
@@ -419,6 +420,29 @@ void Polygon::configure()
   node_->declare_parameter<bool>(polygon_name_ + ".enabled", true);
   sub_ = node_->create_subscription<std_msgs::msg::String>(
     polygon_name_ + "/points", 10, [](const std_msgs::msg::String::SharedPtr) {});
+  // a list named after what another file passes: its elements are not known here
+  std::vector<std::string> zones = node_->declare_parameter<std::vector<std::string>>(
+    polygon_name_ + ".zones", std::vector<std::string>());
+  for (std::string zone : zones) {
+    Zone(node_, zone);
+  }
+}
+"""
+
+ZONE_H = """
+#include <rclcpp/rclcpp.hpp>
+class Zone
+{
+public:
+  Zone(rclcpp::Node * node, const std::string & zone_name);
+};
+"""
+
+ZONE_CPP = """
+#include "ex/zone.hpp"
+Zone::Zone(rclcpp::Node * node, const std::string & zone_name)
+{
+  node->declare_parameter<bool>(zone_name + ".visible", true);
 }
 """
 
@@ -459,15 +483,23 @@ def test_a_list_parameter_element_given_to_a_class_of_another_file(write_tree) -
 
     root = write_tree({"ex/package.xml": package_xml("ex", "ament_cmake"),
                        "ex/include/ex/polygon.hpp": POLYGON_H,
+                       "ex/include/ex/zone.hpp": ZONE_H,
+                       "ex/src/zone.cpp": ZONE_CPP,
                        "ex/src/polygon.cpp": POLYGON_CPP,
                        "ex/src/monitor.cpp": MONITOR_CPP})
     src = root / "ex" / "src"
-    batch = extract_cpp_nodes([[str(src / "monitor.cpp"), str(src / "polygon.cpp")]],
+    batch = extract_cpp_nodes([[str(src / "monitor.cpp"), str(src / "polygon.cpp"),
+                                str(src / "zone.cpp")]],
                               scan([str(root)]), cache_dir=None, jobs=1)
     made = sorted((c.kind, c.name, c.name_param, c.name_each)
                   for c in batch.results[0].calls
                   if c.location.file.endswith("polygon.cpp"))
     assert made == [("declare", "/?.enabled", "single", None),
+                    ("declare", "/?.zones", "single", None),
                     ("declare", "?.enabled", "polygons", "."),
+                    ("declare", "?.zones", "polygons", "."),
                     ("subscribe", "/?/points", "single", None),
                     ("subscribe", "?/points", "polygons", ".")]
+    zones = [(c.kind, c.name, c.name_param) for c in batch.results[0].calls
+             if c.location.file.endswith("zone.cpp")]
+    assert zones == [("declare", "?.visible", None)]

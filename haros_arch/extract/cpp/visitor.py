@@ -41,7 +41,7 @@ from .handles import (
     qualified_name,
     record_class,
 )
-from .links import Fact, argument_facts, constructed_by, parameter_mark
+from .links import PARAMETER, Fact, argument_facts, constructed_by, parameter_mark
 from .members import MemberWrites, member_of
 from .owners import (
     constructed_class,
@@ -1055,7 +1055,11 @@ class CallFinder:
         """A string passed to another file's function whose one unknown run is a
         parameter's value, with that parameter marked (``links.parameter_mark``)."""
         name, source = self._name(expr, scope)
-        if source is None or "?" in source[0] or PLACEHOLDER in name:
+        # (a parameter named after what other files pass is not known until they are
+        # read: its name stays unknown)
+        if source is None or PLACEHOLDER in name or any(
+            mark in source[0] for mark in ("?", PLACEHOLDER, PARAMETER)
+        ):
             return None
         return parameter_mark(name, source[0], source[3])
 
