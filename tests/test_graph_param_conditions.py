@@ -532,3 +532,95 @@ def test_a_member_the_code_also_sets_to_a_constant_is_decided_when_they_agree(wr
     assert links == {("/on", "subscribe", "/cmd_vel"): ["use_control_"],
                      ("/unset", "publish", "/mode_three"): ["mode_ == 3"],
                      ("/on", "publish", "/mode_three"): ["mode_ == 3"]}
+
+
+LOCAL_NODE = """
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+class Mpc : public rclcpp::Node
+{
+public:
+  Mpc() : rclcpp::Node("mpc")
+  {
+    const std::string vehicle_model_type = declare_parameter<std::string>("vehicle_model_type");
+    if (vehicle_model_type == "dynamics") {
+      mass_ = declare_parameter<double>("vehicle.mass_fl");
+    }
+    const bool debug = declare_parameter("publish_debug", false);
+    if (debug) {
+      pub_ = create_publisher<std_msgs::msg::String>("debug", 1);
+    }
+    bool changed = declare_parameter("changed", true);
+    changed = !changed;
+    if (changed) {
+      other_ = create_publisher<std_msgs::msg::String>("changed", 1);
+    }
+  }
+  void other()
+  {
+    bool debug = true;  // the same name in another function: no parameter
+    if (debug) {
+      third_ = create_publisher<std_msgs::msg::String>("always", 1);
+    }
+  }
+  double mass_ = 0.0;
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_, other_, third_;
+};
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  auto node = std::make_shared<Mpc>();
+  node->other();
+  rclcpp::spin(node);
+}
+"""
+
+LOCAL_LAUNCH = """
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package='ex', executable='mpc', name='mpc',
+             parameters=[{'vehicle_model_type': 'kinematics', 'changed': True}]),
+    ])
+"""
+
+
+def test_a_condition_over_a_local_that_holds_a_parameter(write_tree) -> None:
+    """Autoware's MPC lateral controller reads ``vehicle.mass_fl`` and five more only
+    ``if (vehicle_model_type == "dynamics")``, a local it declared the parameter into
+    (mpc_lateral_controller.cpp:170-188); its configuration says "kinematics", so those
+    reads are not made there (they were "read but never set" warnings). A local written
+    again, or one of another function, is no parameter's."""
+    root = write_tree({
+        "src/ex/package.xml": package_xml("ex", "ament_cmake"),
+        "src/ex/CMakeLists.txt": "cmake_minimum_required(VERSION 3.8)\nproject(ex)\n"
+                                 "add_executable(mpc src/node.cpp)\n",
+        "src/ex/src/node.cpp": LOCAL_NODE,
+        "src/ex/launch/ex.launch.py": LOCAL_LAUNCH,
+        "project.yaml": "project: p\nconfigurations:\n  c: [ex/launch/ex.launch.py]\n"})
+    found = extract_cpp([str(root / "src/ex/src/node.cpp")], scan([str(root / "src")]),
+                        cache_dir=None)
+    held = {c.name: [k.parameters for k in c.conditions] for c in found.calls
+            if c.kind in ("declare", "publish") and c.conditions}
+    assert held == {
+        "vehicle.mass_fl": [(("vehicle_model_type", "vehicle_model_type"),)],
+        "debug": [(("debug", "publish_debug"),)],
+        "changed": [None],
+        "always": [None],
+    }
+    model = analyse(load(str(root / "project.yaml")), {"PATH": os.environ.get("PATH", "")},
+                    Options(cache_dir=None))
+    (config,) = model.configurations
+    names = {(link.kind, link.rosname.full, tuple(str(c) for c in link.conditions))
+             for link in config.links if link.kind in ("read", "declare", "publish")
+             and "parameter_events" not in link.rosname.full
+             and "rosout" not in link.rosname.full}
+    assert ("read", "/mpc/vehicle.mass_fl", ()) not in names
+    assert not [n for n in names if "mass_fl" in n[1]]  # kinematics: not read
+    assert ("publish", "/debug", ()) not in names  # false by the declared default
+    assert not [n for n in names if n[1] == "/debug"]
+    assert ("publish", "/changed", ("if (changed)",)) in names  # undecided
+    assert ("publish", "/always", ("if (debug)",)) in names

@@ -15,6 +15,7 @@ from tests.conftest import package_xml
 
 NODE = """
 #include <rclcpp/rclcpp.hpp>
+#include <tf2/exceptions.h>
 class Monitor : public rclcpp::Node
 {
 public:
@@ -25,9 +26,14 @@ public:
       RCLCPP_WARN(get_logger(), "max_points is deprecated");
     } catch (const std::exception &) {
     }
+    try {
+      frame_ = declare_parameter<std::string>("frame");  // its failure is not caught
+    } catch (const tf2::TransformException &) {
+    }
     min_points_ = declare_parameter<int>("min_points");
   }
   int max_points_ = 0, min_points_ = 0;
+  std::string frame_;
 };
 int main(int argc, char ** argv)
 {
@@ -45,6 +51,16 @@ try:
 except KeyError:
     pass
 rate = rospy.get_param('~rate')
+
+
+def main():
+    needed = rospy.get_param('~needed')
+
+
+try:
+    main()
+except rospy.ROSInterruptException:  # not what a missing parameter raises
+    pass
 """
 
 LAUNCH = """
@@ -78,4 +94,5 @@ def test_a_read_in_a_try_block_is_no_read_not_set(write_tree) -> None:
                     Options(cache_dir=None))
     unset = sorted(f.message.split(" ")[0] for f in run_catalogue(model)
                    if f.rule == "parameter-read-not-set")
-    assert unset == ["/monitor/min_points", "/watcher/rate"]
+    assert unset == ["/monitor/frame", "/monitor/min_points", "/watcher/needed",
+                     "/watcher/rate"]

@@ -5,7 +5,8 @@ condition holds there. The condition is decided when every name it uses has a va
 this instance gives it:
 
 - a member variable that one parameter read stores into (``PrimitiveCall.variable``; of
-  the same file, else of any file of the node): the value the configuration gives the
+  the same file, else of any file of the node), or a local of the condition's function
+  written once by a parameter read (``Condition.parameters``): the value the configuration gives the
   parameter (the launch files', with no launch condition and no node setting it), else
   the read's default (a ROS 2 read without one: the node's declarations of the
   parameter); a value whose type is not the read's is not used (roscpp would keep the
@@ -337,12 +338,16 @@ def _member_values(instance: NodeInstance) -> Callable[..., object]:
         if link.call is not None and link.call.kind == "declare":
             declared.setdefault(id(link.resource), []).append(link)
 
-    def value(name: str, *, file: str | None) -> object:
+    def value(name: str, *, file: str | None,
+              held: dict[str, str] | None = None) -> object:
         # a read in the condition's own file, else in another file of the node: a base
         # class's header that reads what its subclasses test (pcl_ros' PCLNodelet::onInit
         # reads ~use_indices into use_indices_, filter.cpp tests it); reads that disagree
-        # leave the member unknown. ``get_parameter("x")``: the node's reads of x.
-        parameter = parameter_name(name)
+        # leave the member unknown. ``get_parameter("x")``, or a local of the condition's
+        # function that holds the value of x (``Condition.parameters``): the node's
+        # reads of x.
+        parameter = held.get(name) if held else None
+        parameter = parameter if parameter is not None else parameter_name(name)
         found = reads.get((file, name)) or anywhere.get(name) if parameter is None else [
             link for link in instance.links if link.call is not None
             and link.kind in ("read", "declare") and link.call.name == parameter]
@@ -377,7 +382,9 @@ def decide_links(config: Configuration) -> None:
             false: Condition | None = None
             for condition in link.conditions:
                 answer = decide(condition, functools.partial(
-                    members, file=condition.location.file), views)
+                    members, file=condition.location.file,
+                    held=dict(condition.parameters) if condition.parameters else None),
+                    views)
                 if answer is False:
                     false = condition
                     break

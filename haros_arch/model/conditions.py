@@ -35,6 +35,11 @@ class Condition:
     # (``auto args = rclcpp::init_and_remove_ros_arguments(argc, argv)``): its ``size()``
     # and ``at(N)`` are the arguments a launch file gives, the program's name first
     args_left: str | None = field(default=None, metadata={"optional": True})
+    # the locals its text names that hold a parameter's value, read in the function
+    # before it (``const auto type = declare_parameter<std::string>("vehicle_model_type");
+    # if (type == "dynamics")``): (local, parameter), which the graph decides it by
+    parameters: tuple[tuple[str, str], ...] | None = field(
+        default=None, metadata={"optional": True})
 
     def __str__(self) -> str:
         return f"{self.statement} ({self.text})"

@@ -70,8 +70,17 @@ def conditions(data: Any) -> tuple[Condition, ...]:
                                    item.get("statement", "if"), location(item.get("location")),
                                    bool(item.get("program_args", False)),
                                    left if isinstance(left := item.get("args_left"), str)
-                                   else None))
+                                   else None, _held(item.get("parameters"))))
     return tuple(found)
+
+
+def _held(data: Any) -> tuple[tuple[str, str], ...] | None:
+    """A condition's (local, parameter) pairs as the JSON model lists them."""
+    if not isinstance(data, list):
+        return None
+    found = tuple((str(pair[0]), str(pair[1])) for pair in data
+                  if isinstance(pair, list | tuple) and len(pair) == 2)
+    return found or None
 
 
 def _diagnostic(data: dict[str, Any]) -> Diagnostic:

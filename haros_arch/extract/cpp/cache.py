@@ -227,7 +227,9 @@ def from_data(data: dict[str, Any]) -> tuple[
 
 
 def _conditions(data: Any) -> tuple[Condition, ...]:
-    return tuple(Condition(**{**c, "location": Location(**c["location"])}) for c in data)
+    return tuple(Condition(**{**c, "location": Location(**c["location"]), "parameters": tuple(
+        (str(local), str(param)) for local, param in c["parameters"]) if c.get(
+        "parameters") else None}) for c in data)
 
 
 def _pairs(data: dict[str, Any], key: str) -> list[tuple[str, str]]:

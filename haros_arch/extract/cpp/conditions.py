@@ -18,6 +18,7 @@ as it can the local that keeps what rclcpp leaves of them (``args_left``).
 
 from __future__ import annotations
 
+import dataclasses
 import re
 from collections.abc import Callable
 
@@ -33,6 +34,11 @@ _LABELS = (CursorKind.CASE_STMT, CursorKind.DEFAULT_STMT)
 _SPACE = re.compile(r"\s+")
 _ELSE = re.compile(r"\belse\b")
 _SHORT_CIRCUIT = re.compile(r"^\s*(&&|\|\||\band\b|\bor\b)\s*$")
+# a handler that catches what rclcpp throws for a parameter that is not set (its
+# exceptions, std::exception, or anything)
+_CATCHES_FAILURE = re.compile(
+    r"^\s*\.\.\.\s*$|\bstd::(?:exception|runtime_error)\b|\brclcpp::exceptions::"
+    r"|\bParameter\w*Exception\b")
 
 
 class ConditionReader:
@@ -44,6 +50,12 @@ class ConditionReader:
         self.in_main = False  # the function walked is main(argc, argv)
         # main's local that holds the arguments the client library leaves (``args_left``)
         self.args_left: str | None = None
+        # the locals a tested expression names that hold a parameter's value, in the
+        # function read (``Condition.parameters``)
+        self.held: Callable[[Cursor], tuple[tuple[str, str], ...]] | None = None
+        # the ``try`` conditions whose handlers catch a parameter's failure: a read in the
+        # block is prepared for the parameter not being set (``PrimitiveCall.tested``)
+        self.handled: set[Condition] = set()
 
     def branches(self, node: Cursor) -> list[Branch]:
         kind = node.kind
@@ -58,22 +70,27 @@ class ConditionReader:
             return [(children[0], (self._condition(node, "do", text),)),
                     *((c, ()) for c in children[1:])]
         if kind == CursorKind.SWITCH_STMT and children:
-            switch = self._condition(node, "switch", self._parens(node.extent.start))
+            switch = self._condition(node, "switch", self._parens(node.extent.start),
+                                     children[-2] if len(children) >= 2 else None)
             return [(c, ()) for c in children[:-1]] + self._switch_body(children[-1], switch)
         if kind == CursorKind.CXX_TRY_STMT and children:
-            return [(children[0], (self._condition(node, "try", ""),)),
-                    *((c, ()) for c in children[1:])]
+            attempt = self._condition(node, "try", "")
+            if any(c.kind == CursorKind.CXX_CATCH_STMT and _CATCHES_FAILURE.search(
+                    self._parens(c.extent.start)) for c in children[1:]):
+                self.handled.add(attempt)
+            return [(children[0], (attempt,)), *((c, ()) for c in children[1:])]
         if kind == CursorKind.CONDITIONAL_OPERATOR and len(children) == 3:
             text = self._text(children[0])
-            return [(children[0], ()), (children[1], (self._condition(node, "if", text),)),
-                    (children[2], (self._condition(node, "else", text),))]
+            return [(children[0], ()),
+                    (children[1], (self._condition(node, "if", text, children[0]),)),
+                    (children[2], (self._condition(node, "else", text, children[0]),))]
         if kind == CursorKind.BINARY_OPERATOR and len(children) == 2:
             operator = self._between(children[0], children[1], _SHORT_CIRCUIT)
             if operator:  # ``a && f()`` calls f if a; ``a || f()`` calls it if not a
                 statement = "if" if operator in ("&&", "and") else "else"
                 text = self._text(children[0])
                 return [(children[0], ()),
-                        (children[1], (self._condition(node, statement, text),))]
+                        (children[1], (self._condition(node, statement, text, children[0]),))]
         if kind == CursorKind.CXX_CATCH_STMT and children:
             catch = self._condition(node, "catch", self._parens(node.extent.start))
             return [(c, (catch,)) for c in children]
@@ -86,9 +103,10 @@ class ConditionReader:
         has_else = len(children) >= 3 and self._between(children[-2], children[-1], _ELSE) == "else"
         then = len(children) - (2 if has_else else 1)
         out: list[Branch] = [(c, ()) for c in children[:then]]
-        out.append((children[then], (self._condition(node, "if", text),)))
+        tested = children[then - 1]
+        out.append((children[then], (self._condition(node, "if", text, tested),)))
         if has_else:
-            out.append((children[-1], (self._condition(node, "else", text),)))
+            out.append((children[-1], (self._condition(node, "else", text, tested),)))
         return out
 
     def _switch_body(self, body: Cursor, switch: Condition) -> list[Branch]:
@@ -124,21 +142,27 @@ class ConditionReader:
                     text = " && ".join(f"{value} != {t}" for t in labels) or "default"
                 else:
                     text = " || ".join(f"{value} == {t}" for t in texts)
-                condition = self._condition(start, "switch", text)
+                condition = dataclasses.replace(self._condition(start, "switch", text),
+                                                parameters=switch.parameters)
             if statement.kind not in _LABELS:
                 out.append((statement, (condition,)))
         return out
 
     # -- text -------------------------------------------------------------------------
 
-    def _condition(self, node: Cursor, statement: str, text: str) -> Condition:
+    def _condition(self, node: Cursor, statement: str, text: str,
+                   tested: Cursor | None = None) -> Condition:
+        held = self.held(tested) if tested is not None and self.held is not None else ()
         return Condition(text, "source", statement, self.where(node), self.in_main,
-                         self.args_left if self.in_main else None)
+                         self.args_left if self.in_main else None, held or None)
 
-    def enter(self, function: Cursor, arguments_left: frozenset[str]) -> None:
+    def enter(self, function: Cursor, arguments_left: frozenset[str],
+              held: Callable[[Cursor], tuple[tuple[str, str], ...]] | None = None) -> None:
         """Read the conditions of ``function`` next: whether it is ``main(argc, argv)``,
         and its local initialised by a call of ``arguments_left`` (rclcpp's
-        ``init_and_remove_ros_arguments``), when it has one such local."""
+        ``init_and_remove_ros_arguments``), when it has one such local; ``held`` tells
+        the locals of a tested expression that hold a parameter's value."""
+        self.held = held
         params = [c.spelling for c in function.get_children()
                   if c.kind == CursorKind.PARM_DECL]
         self.in_main = function.spelling == "main" and params[:2] == ["argc", "argv"]

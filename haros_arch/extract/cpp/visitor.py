@@ -321,12 +321,14 @@ class CallFinder:
             function.kind == CursorKind.FUNCTION_TEMPLATE and function.location.file
             is not None and function.location.file.name != self.tu.spelling) else None
         tested, self._status_reads = TestedCalls(self.reader), []
+        first = len(self.calls)
         # a constructor's calls exist where the class is constructed: under the
         # conditions of its construction sites in this file
         made_under = self._constructed_under(function, 0)
         # main(argc, argv): its conditions over them are over the program's arguments (set
         # after the construction sites, whose walk enters their own functions)
-        self.reader.enter(function, _ARGUMENTS_LEFT)
+        self.reader.enter(function, _ARGUMENTS_LEFT,
+                          functools.partial(self._held_parameters, scope=scope))
         stack: list[tuple[Cursor, tuple[Condition, ...]]] = [
             (child, made_under) for child in reversed(list(function.get_children()))
             if child.kind != CursorKind.PARM_DECL]
@@ -354,6 +356,14 @@ class CallFinder:
             stack.extend((child, conditions + extra) for child, extra in reversed(branches))
         for site, read in self._status_reads:
             read.tested = read.tested or site in tested.keys
+        for call in self.calls[first:]:
+            # a read or declaration without a default in a ``try`` block whose handler
+            # catches rclcpp's exception for it (navigation2's collision monitor reads
+            # the deprecated ``max_points`` so, only to warn when it is set)
+            if self.ros2 and call.kind in ("read", "declare") and not call.has_default and any(
+                c in self.reader.handled for c in call.conditions
+            ):
+                call.tested = True
 
     def _constructed_under(self, function: Cursor, depth: int) -> tuple[Condition, ...]:
         """The conditions under which this file constructs the class of the constructor
@@ -382,7 +392,9 @@ class CallFinder:
         """The source conditions of ``call`` in the body of ``function`` (None when it is
         not found there), as ``_function`` reads them."""
         wanted = place_of(call)
-        self.reader.enter(function, _ARGUMENTS_LEFT)
+        held = functools.partial(self._held_parameters, scope=self.sites.scope(function)) if (
+            self.sites is not None) else None
+        self.reader.enter(function, _ARGUMENTS_LEFT, held)
         stack: list[tuple[Cursor, tuple[Condition, ...]]] = [
             (child, ()) for child in reversed(list(function.get_children()))
             if child.kind != CursorKind.PARM_DECL]
@@ -1050,6 +1062,23 @@ class CallFinder:
         if source is None and len(unknown) == 1 and unknown[0] is not inner:
             source = self._parameter_source(unknown[0], scope, 0)
         return (name, None if source is None else (*source, None, None))
+
+    def _held_parameters(self, tested: Cursor, scope: Scope) -> tuple[tuple[str, str], ...]:
+        """The locals ``tested`` names that hold a parameter's value: each written once,
+        by a read (or declaration) of a parameter with a known name."""
+        found: dict[str, str] = {}
+        for node in tested.walk_preorder():
+            decl = node.referenced if node.kind == CursorKind.DECL_REF_EXPR else None
+            if decl is None or decl.kind != CursorKind.VAR_DECL or decl.spelling in found or (
+                decl.semantic_parent is None or decl.semantic_parent.kind not in FUNCTIONS
+            ):
+                continue
+            source = self._parameter_source(node, scope, 0)
+            if source is not None and not any(
+                mark in source[0] for mark in ("?", PLACEHOLDER, PARAMETER)
+            ):
+                found[decl.spelling] = source[0]
+        return tuple(sorted(found.items()))
 
     def _marked(self, expr: Cursor, scope: Scope) -> str | None:
         """A string passed to another file's function whose one unknown run is a

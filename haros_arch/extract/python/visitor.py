@@ -14,6 +14,7 @@ so ``for side in ['left', 'right']`` gives one call per side.
 from __future__ import annotations
 
 import ast
+import re
 
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
@@ -48,6 +49,11 @@ Conditions = tuple[Condition, ...]
 MAX_STEPS = 200_000
 _PARAM_KINDS = ("read", "write", "declare")
 _CONVERSIONS = frozenset({"int", "float", "str", "bool"})
+# a handler's exception type that catches a parameter read's failure (rospy's KeyError,
+# rclpy's ParameterNotDeclaredException / ParameterUninitializedException, Exception)
+_CATCHES_FAILURE = re.compile(
+    r"\b(?:KeyError|LookupError|Exception|BaseException|ParameterNotDeclaredException"
+    r"|ParameterUninitializedException)\b")
 
 
 class Walker:
@@ -76,6 +82,9 @@ class Walker:
         self.main: set[str] = set()
         # the calls whose result is a condition (ids of their ast.Call nodes)
         self._tested: set[int] = set()
+        # the ``try`` conditions whose handlers catch a parameter's failure (KeyError,
+        # rclpy's exceptions, Exception or anything): a read there is prepared for it
+        self._handled: set[Condition] = set()
         # reads whose value the code converts (``int(rospy.get_param('~baud', '500000'))``):
         # any value the conversion takes will do, so the read has no type of its own
         self._converted: set[int] = set()
@@ -207,6 +216,9 @@ class Walker:
 
     def _Try(self, statement: ast.Try, frame: Frame, conds: Conditions) -> None:
         attempt = condition("try", "", self._where(frame, statement))
+        if any(handler.type is None or _CATCHES_FAILURE.search(self._text(frame, handler.type))
+               for handler in statement.handlers):
+            self._handled.add(attempt)
         self._block(statement.body, frame, (*conds, attempt))
         for handler in statement.handlers:
             text = self._text(frame, handler.type) if handler.type is not None else ""
@@ -463,7 +475,9 @@ class Walker:
         if spec.kind == "read" and id(call) in self._converted:
             base.type = None
         base.searched = spec.search
-        base.tested = spec.tests and id(call) in self._tested
+        base.tested = (spec.tests and id(call) in self._tested) or (
+            spec.kind in ("read", "declare") and not base.has_default
+            and any(c in self._handled for c in conds))
         base.deletes = spec.deletes
         self._add(base)
 

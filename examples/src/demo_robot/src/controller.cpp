@@ -31,7 +31,7 @@ int main(int argc, char** argv)
   ros::Subscriber scan_sub = nh.subscribe("scan", 5, onScan);
   bool use_reset = false;
   pnh.getParam("use_reset", use_reset);
-  if (use_reset)
+  if (use_reset || ros::service::exists("driver/reset", false))
   {
     ros::ServiceClient reset = nh.serviceClient<std_srvs::Empty>("driver/reset");
     std_srvs::Empty call;
