@@ -127,6 +127,15 @@ class Runner:
             self.report("LAUNCH_BAD_VALUE", where,
                         detail=f"include cycle or depth: {self.workspace.relpath(path)}")
             return
+        if self.stack and not self.workspace.readable(path, self.environment):
+            # as parameter files: an included launch file is read only from the workspace
+            # and the installed packages (Clearpath's robot_spawn.launch.py includes
+            # $HOME/clearpath/platform/launch/*.launch.py, written on the robot by the
+            # generator it starts first): what it would start stays unknown, not missing
+            self.report("LAUNCH_UNKNOWN_VALUE", where, detail=(
+                f"launch file {path} is outside the workspace and installed packages; "
+                "it is not read"))
+            return
         if not os.path.isfile(path):
             self.report("LAUNCH_FILE_MISSING", where, path=self.workspace.relpath(path))
             return
