@@ -18,6 +18,7 @@ from typing import Any
 
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
+from ...model.conditions import exit_event
 from ...model.launch_tree import PackageUse
 from ...model.values import Unknown, Value
 from ...share import install_prefix
@@ -476,6 +477,12 @@ def event_handler(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
             contents.extend(actions(i, value, n))
         elif value is not None:
             i.unsupported(n, f"{label} with a callable is not interpreted")
+    target = k.get("target_action")
+    if label.rsplit(".", 1)[-1] == "OnProcessExit" and isinstance(target, e.Action) \
+            and target.location.file:
+        # what it starts runs after that process has ended, never beside it
+        # (conditions.after_exit reads it back): named by where the process is made
+        return e.Delayed(contents, exit_event(target.location), "event", location=i.where(n))
     return e.Delayed(contents, f"on event {label}", "event", location=i.where(n))
 
 
