@@ -220,8 +220,8 @@ def m_str(name: str) -> Method:
                 owner, a, k, _same, lambda reason: Unknown(reason), LIMITS.length)), n)
         if not isinstance(owner, str) or not all(
                 isinstance(v, (str, int, float, list, tuple)) for v in [*a, *k.values()]
-        ) or any(isinstance(x, Unknown) for v in a if isinstance(v, (list, tuple))
-                 for x in v):
+        ) or any(isinstance(x, (Unknown, Lazy, e.Subst)) for v in a
+                 if isinstance(v, (list, tuple)) for x in v):
             if name == "join" and isinstance(owner, str) and a and isinstance(a[0], list):
                 return i.operation(lambda: concat(partial.join_parts(
                     owner, a[0], _same, LIMITS.length)), n)
