@@ -605,6 +605,7 @@ class Ros1Loader:
             self.report("LAUNCH_UNKNOWN_VALUE", parent, element, detail=(
                 f"launch file {path} is outside the workspace and installed packages; "
                 "it is not read"))
+            scope.item.kind = "include"  # the include that reached it, not read
             return False
         location = self.where(parent, element) if parent else self.workspace.location(path)
         root = self.parse(path, location)

@@ -128,6 +128,7 @@ class Runner:
                         detail=f"include cycle or depth: {self.workspace.relpath(path)}")
             return
         if self.stack and not self.workspace.readable(path, self.environment):
+            scope.item.kind = "include"  # the include that reached it, not read
             # as parameter files: an included launch file is read only from the workspace
             # and the installed packages (Clearpath's robot_spawn.launch.py includes
             # $HOME/clearpath/platform/launch/*.launch.py, written on the robot by the
@@ -301,6 +302,7 @@ class Runner:
         if path is None or path.literal is None:
             self.report("LAUNCH_UNSUPPORTED", action.location,
                         detail=f"included file {path} is not known statically")
+            self.unread(str(path) if path is not None else "?", scope, action.location)
             return
         item = LaunchItem("file", self.workspace.relpath(share_source(
             self.workspace, os.path.abspath(path.literal))), action.location,
@@ -396,6 +398,8 @@ class Runner:
             positional.append(text)
         path = self._launched_file(positional, where)
         if path is None:
+            if len(positional) == 2 and self.workspace.find(positional[0]) is None:
+                self.unread(" ".join(positional), scope, where)
             return
         inner = Scope({name: value for name, value in arguments},
                       conditions=scope.conditions, environment=dict(scope.environment))
@@ -405,6 +409,14 @@ class Runner:
                                "command line", where) for name, value in arguments]
         inner.item = scope.item.add(item)
         self.run_file(path, inner, where)
+
+    def unread(self, name: str, scope: Scope, where: Location) -> None:
+        """A launch file included (or run by ``ros2 launch``) that cannot be read: its
+        path not known statically, its package not here. What it starts or sets is not
+        seen, so it may be the missing side of anything (``query.absence``); ROS 1's
+        ``<include>`` of a file not known is kept so too."""
+        scope.item.add(LaunchItem("include", name, where, namespace=scope.namespace or "/",
+                                  condition=self.take_guard()))
 
     def _launched_file(self, positional: list[str], where: Location) -> str | None:
         """The file ``ros2 launch`` runs: ``PKG FILE``, the one file named FILE in the
