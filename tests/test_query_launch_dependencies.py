@@ -155,6 +155,56 @@ def test_ros2_nodes_and_package_shares(write_tree):
                                (launch, 18, "teleop2")]
 
 
+
+GUARDED_LAUNCH = """import os
+
+from ament_index_python.packages import get_package_share_directory, get_packages_with_prefixes
+from ament_index_python.resources import has_resource
+from launch import LaunchDescription
+from launch.actions import IncludeLaunchDescription
+from launch.launch_description_sources import PythonLaunchDescriptionSource
+from launch.substitutions import PathJoinSubstitution
+from launch_ros.actions import Node
+from launch_ros.substitutions import FindPackageShare
+
+
+def generate_launch_description():
+    nodes = []
+    if 'nav2_bringup' in get_packages_with_prefixes():
+        nodes.append(IncludeLaunchDescription(PythonLaunchDescriptionSource(os.path.join(
+            get_package_share_directory('nav2_bringup'), 'launch', 'bringup_launch.py'))))
+        nodes.append(Node(package='nav2_bringup', executable='tool', name='tool'))
+    if has_resource('packages', 'image_view'):
+        nodes.append(Node(package='image_view', executable='image_view', name='view',
+                          arguments=[PathJoinSubstitution([FindPackageShare('image_view'),
+                                                           'a.yaml'])]))
+    if 'moveit' in get_packages_with_prefixes():
+        nodes.append(Node(package='moveit_ros_move_group', executable='move_group'))
+    nodes.append(Node(package='rviz2', executable='rviz2', name='rviz2'))
+    return LaunchDescription(nodes)
+"""
+
+
+def test_ros2_a_package_used_where_the_file_found_it_installed_is_optional(write_tree):
+    """webots_ros2's launch files use nav2_bringup, turtlebot3_navigation2 and
+    turtlebot3_cartographer only under ``if 'nav2_bringup' in get_packages_with_prefixes():``
+    (turtlebot3_bringup: ``has_resource('packages', 'image_view')``): they run without
+    them, so these are no undeclared dependency (6 warnings). A package used under the
+    check of another (moveit_ros_move_group under 'moveit') is undecided."""
+    root = write_tree({
+        "src/sim/package.xml": manifest("sim", build_type="ament_cmake"),
+        "src/sim/CMakeLists.txt": "project(sim)\n",
+        "src/sim/launch/robot.launch.py": GUARDED_LAUNCH,
+        "project.yaml": "project: p\nconfigurations:\n  c: [sim/launch/robot.launch.py]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {"PATH": ""})
+    assert findings(model) == [("sim/launch/robot.launch.py", 25, "rviz2")]
+    undecided = [f.message for f in run_rule(RULE, model) if f.rule.endswith(UNDECIDED)]
+    assert len(undecided) == 1 and "moveit_ros_move_group" in undecided[0]
+    reloaded = from_data(json.loads(json.dumps(model_to_data(model))))
+    assert findings(reloaded) == findings(model)
+
+
 def test_ros1_a_nodelet_uses_the_package_its_class_is_found_in(write_tree):
     root = write_tree({
         "src/cam/package.xml": manifest("cam", ("exec_depend", "nodelet")),

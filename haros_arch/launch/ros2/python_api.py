@@ -19,7 +19,7 @@ from typing import Any
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
 from ...model.conditions import exit_event
-from ...model.launch_tree import PackageUse
+from ...model.launch_tree import PackageUse, installed_check
 from ...model.values import Unknown, Value
 from ...share import install_prefix
 from . import entities as e
@@ -137,7 +137,7 @@ def package_directory(share: bool) -> Builder:
     def build(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
         name = arg(a, k, 0, "package_name")
         if isinstance(name, str):
-            i.uses.append(PackageUse(name, i.where(n)))
+            i.uses.append(PackageUse(name, i.where(n), guard=installed_check(i.guards)))
             found = i.workspace.find(name) if share else install_prefix(i.workspace, name)
             if found is not None:
                 return found

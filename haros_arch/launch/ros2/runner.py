@@ -20,7 +20,14 @@ from ... import diagnostics as diag
 from ... import safe_yaml
 from ...files import read_text
 from ...model.conditions import Condition
-from ...model.launch_tree import ArgOrigin, LaunchArg, LaunchCondition, LaunchItem, PackageUse
+from ...model.launch_tree import (
+    ArgOrigin,
+    LaunchArg,
+    LaunchCondition,
+    LaunchItem,
+    PackageUse,
+    installed_check,
+)
 from ...model.location import Location
 from ...model.values import Unknown, Value
 from ...share import share_source
@@ -93,9 +100,12 @@ class Runner:
         if found not in self.model.diagnostics:
             self.model.diagnostics.append(found)
 
-    def uses(self, package: str, location: Location) -> None:
-        """A substitution asked for the folder of ``package`` (``?`` for parts not known)."""
-        self.model.package_uses.append(PackageUse(package, location))
+    def uses(self, package: str, location: Location,
+             conditions: tuple[Condition, ...] = ()) -> None:
+        """A substitution asked for the folder of ``package`` (``?`` for parts not known),
+        under ``conditions`` (a Python test of whether a package is installed, maybe)."""
+        self.model.package_uses.append(PackageUse(package, location, guard=installed_check(
+            c.text for c in conditions if c.kind == "launch" and c.statement == "if")))
 
     def evaluator(self, scope: Scope, location: Location) -> Evaluator:
         return Evaluator(self, scope, location)
