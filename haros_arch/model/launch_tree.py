@@ -47,7 +47,8 @@ class LaunchItem:
     name: str  # file: its path; group: its namespace; node: its final full name
     location: Location = NOWHERE  # file: the include that reached it; else where written
     namespace: str = field(default="", metadata=OPTIONAL)  # in effect for its contents
-    detail: str = field(default="", metadata=OPTIONAL)  # node: package/executable
+    # node: package/executable; include: "action" for an action not interpreted
+    detail: str = field(default="", metadata=OPTIONAL)
     condition: LaunchCondition | None = field(default=None, metadata=OPTIONAL)
     skipped: bool = field(default=False, metadata=OPTIONAL)  # left out by its condition
     args: list[LaunchArg] = field(default_factory=list, metadata=OPTIONAL)

@@ -420,13 +420,14 @@ class Runner:
         inner.item = scope.item.add(item)
         self.run_file(path, inner, where)
 
-    def unread(self, name: str, scope: Scope, where: Location) -> None:
+    def unread(self, name: str, scope: Scope, where: Location, detail: str = "") -> None:
         """A launch file included (or run by ``ros2 launch``) that cannot be read: its
-        path not known statically, its package not here. What it starts or sets is not
-        seen, so it may be the missing side of anything (``query.absence``); ROS 1's
-        ``<include>`` of a file not known is kept so too."""
+        path not known statically, its package not here; or an action not interpreted
+        (``detail`` "action"). What it starts or sets is not seen, so it may be the
+        missing side of anything (``query.absence``); ROS 1's ``<include>`` of a file
+        not known is kept so too."""
         scope.item.add(LaunchItem("include", name, where, namespace=scope.namespace or "/",
-                                  condition=self.take_guard()))
+                                  detail=detail, condition=self.take_guard()))
 
     def _launched_file(self, positional: list[str], where: Location) -> str | None:
         """The file ``ros2 launch`` runs: ``PKG FILE``, the one file named FILE in the
@@ -470,6 +471,10 @@ class Runner:
 
     def do_Unsupported(self, action: e.Unsupported, scope: Scope) -> None:
         self.report("LAUNCH_UNSUPPORTED", action.location, detail=action.what)
+        self.unread(action.what, scope, action.location, "action")
+
+    def do_UnknownAction(self, action: e.UnknownAction, scope: Scope) -> None:
+        self.unread(action.what, scope, action.location, "action")
 
     def do_NodeAction(self, action: e.NodeAction, scope: Scope) -> None:
         from .nodes import perform_node
