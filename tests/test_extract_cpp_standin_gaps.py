@@ -7,7 +7,7 @@ setters, topic_tools' QoS !=; ROS 1: tf's LinearMath and listener methods, gmapp
 is_zero, mavros' maxDatagramSize, polled_camera's getTopic, OpenCV's version macros,
 urg_node's ROS 1 bond::Bond; tf2_ros' lookupTransform result as a message, ROS 1 and 2;
 humble image_view's HighGUI windows and message_filters subscription, turtlebot3_node's
-parameter events).
+parameter events, ros2_controllers' Duration == and std::optional{value}).
 Each parses with no error and keeps its calls. The sources are
 fixtures/cpp/standin_gaps."""
 
@@ -182,3 +182,14 @@ def test_ros2_highgui_filter_subscription_and_parameter_events(write_tree) -> No
             if c.kind in ("declare", "subscribe")] == [
         ("declare", "autosize"), ("subscribe", "left/image"),
         ("subscribe", "/parameter_events")]
+
+
+def test_ros2_duration_equality_and_deduced_optional(write_tree) -> None:
+    """ros2_controllers (jazzy): diff_drive_controller.cpp:481 and
+    omni_wheel_drive_controller.cpp:113 compare ``rclcpp::Duration``s with ``==``,
+    pose_broadcaster.cpp:90 builds ``std::optional{rclcpp::Duration::from_seconds(..)}``:
+    clang errors in ``on_configure``, which calls the ROS API, made each partial."""
+    result = _extract(write_tree, _source("ros2_duration_optional.cpp"), "ament_cmake")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("subscribe", "cmd_vel"), ("publish", "out")]

@@ -180,6 +180,8 @@ public:
   bool operator>(const Duration& o) const;
   bool operator>=(const Duration& o) const;
   bool operator<=(const Duration& o) const;
+  bool operator==(const Duration& o) const;
+  bool operator!=(const Duration& o) const;
   Duration operator+(const Duration& o) const;
   Duration operator-(const Duration& o) const;
   Duration operator*(double s) const;

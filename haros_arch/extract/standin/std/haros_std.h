@@ -739,6 +739,7 @@ public:
   template<class... A> T& emplace(A&&... args);
   void swap(optional& other) noexcept;
 };
+template<class T> optional(T) -> optional<T>;  // std::optional{value}
 template<class T> optional<typename decay<T>::type> make_optional(T&& v);
 template<class T, class... A> optional<T> make_optional(A&&... args);
 
