@@ -173,8 +173,9 @@ def test_ros2_highgui_filter_subscription_and_parameter_events(write_tree) -> No
     """image_view's window set-up (humble: ``cv::WINDOW_KEEPRATIO`` flags, the node given
     to ``cv::setMouseCallback``), stereo_view's ``sub.getSubscriber()->get_topic_name()``
     and turtlebot3_node's parameter event callback (``event->changed_parameters``,
-    ``rclcpp::Parameter::from_parameter_msg``): clang errors in the constructor, or the
-    node handed to a function the parse does not know, each made the node partial."""
+    ``rclcpp::Parameter::from_parameter_msg``), rtabmap CoreWrapper's
+    ``on_parameter_event(callback, qos, options)``: clang errors in the constructor, or
+    the node handed to a function the parse does not know, each made the node partial."""
     result = _extract(write_tree, _source("ros2_gui_param_events.cpp"), "ament_cmake")
     assert _errors(result) == []
     assert [d.code for d in result.diagnostics if d.code.startswith("CPP_NODE")] == []

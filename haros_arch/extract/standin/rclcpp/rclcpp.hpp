@@ -779,6 +779,8 @@ public:
   struct ListParametersResult { std::vector<std::string> names; std::vector<std::string> prefixes; };
   ListParametersResult list_parameters(const std::vector<std::string>& prefixes, uint64_t depth);
   template<class C> std::shared_ptr<void> on_parameter_event(C&& callback);
+  template<class C, class... O> std::shared_ptr<void> on_parameter_event(
+      C&& callback, const QoS& qos, const O&... options);
   template<class N, class C> static std::shared_ptr<void> on_parameter_event(N node,
                                                                              C&& callback);
   void delete_parameters(const std::vector<std::string>& names);
@@ -802,6 +804,8 @@ public:
   std::shared_future<SyncParametersClient::ListParametersResult> list_parameters(
       const std::vector<std::string>& prefixes, uint64_t depth, C callback = nullptr);
   template<class C> std::shared_ptr<void> on_parameter_event(C&& callback);
+  template<class C, class... O> std::shared_ptr<void> on_parameter_event(
+      C&& callback, const QoS& qos, const O&... options);
   template<class N, class C> static std::shared_ptr<void> on_parameter_event(N node,
                                                                              C&& callback);
 };
