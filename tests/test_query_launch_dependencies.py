@@ -275,6 +275,14 @@ def test_models_metapackages_reads_the_pinned_trees(tmp_path, capsys):
     (documented / "CMakeLists.txt").write_text("project(stack3)\n")
     (documented / "rosdoc2.yaml").write_text("type: 'rosdoc2 config'\n")
     (documented / "stack3.repos").write_text("repositories: {}\n")
+    # a package that builds nothing but installs launch files (jazzy's velodyne): its
+    # install brings its run dependencies as a metapackage's does
+    launcher = tree / "stack4"
+    (launcher / "launch").mkdir(parents=True)
+    (launcher / "launch" / "all.launch.py").write_text("# starts the stack\n")
+    (launcher / "package.xml").write_text(manifest("stack4", ("exec_depend", "six"),
+                                                   build_type="ament_cmake"))
+    (launcher / "CMakeLists.txt").write_text("project(stack4)\n")
     code = tree / "one"  # a package with code is no metapackage
     (code / "src").mkdir(parents=True)
     (code / "package.xml").write_text(manifest("one", ("exec_depend", "two")))
@@ -292,10 +300,11 @@ def test_models_metapackages_reads_the_pinned_trees(tmp_path, capsys):
                  str(tmp_path / "sources"), "-o", str(out)]) == 0
     table = json.loads(out.read_text())
     assert table["metapackages"] == {"noetic": {"stack": ["one", "two"],
-                                                "stack2": ["three"], "stack3": ["four"]}}
+                                                "stack2": ["three"], "stack3": ["four"],
+                                                "stack4": ["six"]}}
     assert table["sources"] == [{"repository": "github:someone/stack", "commit": commit,
                                  "distro": "noetic"}]
-    assert "noetic: 3 metapackages" in capsys.readouterr().out
+    assert "noetic: 4 metapackages" in capsys.readouterr().out
 
 
 def test_the_shipped_metapackage_table_comes_from_the_pinned_lists():
