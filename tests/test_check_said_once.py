@@ -162,6 +162,45 @@ def test_a_ros2_duplicate_is_reported_once(write_tree):
         ("duplicate-node-names", "cams/launch/two.launch.xml", 2)]
 
 
+
+def test_ros2_nodes_of_one_name_one_started_on_the_others_exit_are_no_duplicate(
+        write_tree):
+    """clearpath_simulator's robot_spawn.launch.py names two generator processes
+    ``generate_launch``; the second starts on the exit of the first (``OnProcessExit``),
+    so they never run together: no duplicate. Two started by the exits of different
+    processes may run together, which is not known: undecided (an info), not an error."""
+    root = write_tree({
+        "src/cams/package.xml": package_xml("cams", "ament_python"),
+        "src/cams/setup.py": SETUP,
+        "src/cams/cams/__init__.py": "",
+        "src/cams/cams/cam.py": ROS2_NODE,
+        "src/cams/launch/chain.launch.py": """
+from launch import LaunchDescription
+from launch.actions import RegisterEventHandler
+from launch.event_handlers import OnProcessExit
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    first = Node(package='cams', executable='cam', name='gen')
+    second = Node(package='cams', executable='cam', name='gen')
+    third = Node(package='cams', executable='cam', name='other')
+    fourth = Node(package='cams', executable='cam', name='shared')
+    fifth = Node(package='cams', executable='cam', name='shared')
+    return LaunchDescription([
+        first, third,
+        RegisterEventHandler(OnProcessExit(target_action=first, on_exit=[second])),
+        RegisterEventHandler(OnProcessExit(target_action=second, on_exit=[fourth])),
+        RegisterEventHandler(OnProcessExit(target_action=third, on_exit=[fifth])),
+    ])
+""",
+        "project.yaml": "project: p\nconfigurations:\n  c: [cams/launch/chain.launch.py]\n",
+    })
+    report = check(root)
+    assert about(report, "DUPLICATE", "duplicate") == [
+        ("duplicate-node-names-undecided", "cams/launch/chain.launch.py", 11)]
+
+
 def test_a_listed_package_missing_from_the_workspace_is_shown(write_tree):
     root = write_tree({"src/cams/package.xml": package_xml("cams"),
                        "project.yaml": "project: p\npackages: [nope]\nconfigurations:\n"

@@ -5,7 +5,9 @@ nav2's action server timeout, rcutils' logging macros, the graph API of image_vi
 pointcloud_to_laserscan, robot_localization's add_timer, image_view's descriptor
 setters, topic_tools' QoS !=; ROS 1: tf's LinearMath and listener methods, gmapping's
 is_zero, mavros' maxDatagramSize, polled_camera's getTopic, OpenCV's version macros,
-urg_node's ROS 1 bond::Bond; tf2_ros' lookupTransform result as a message, ROS 1 and 2).
+urg_node's ROS 1 bond::Bond; tf2_ros' lookupTransform result as a message, ROS 1 and 2;
+humble image_view's HighGUI windows and message_filters subscription, turtlebot3_node's
+parameter events, ros2_controllers' Duration == and std::optional{value}).
 Each parses with no error and keeps its calls. The sources are
 fixtures/cpp/standin_gaps."""
 
@@ -165,3 +167,30 @@ int main(int argc, char ** argv)
     assert _errors(result) == []
     assert [(c.kind, c.name, c.has_default, c.default) for c in result.calls] == [
         ("read", "use_sim_time", True, False), ("read", "lock_memory", True, True)]
+
+
+def test_ros2_highgui_filter_subscription_and_parameter_events(write_tree) -> None:
+    """image_view's window set-up (humble: ``cv::WINDOW_KEEPRATIO`` flags, the node given
+    to ``cv::setMouseCallback``), stereo_view's ``sub.getSubscriber()->get_topic_name()``
+    and turtlebot3_node's parameter event callback (``event->changed_parameters``,
+    ``rclcpp::Parameter::from_parameter_msg``), rtabmap CoreWrapper's
+    ``on_parameter_event(callback, qos, options)``: clang errors in the constructor, or
+    the node handed to a function the parse does not know, each made the node partial."""
+    result = _extract(write_tree, _source("ros2_gui_param_events.cpp"), "ament_cmake")
+    assert _errors(result) == []
+    assert [d.code for d in result.diagnostics if d.code.startswith("CPP_NODE")] == []
+    assert [(c.kind, c.name) for c in result.calls
+            if c.kind in ("declare", "subscribe")] == [
+        ("declare", "autosize"), ("subscribe", "left/image"),
+        ("subscribe", "/parameter_events")]
+
+
+def test_ros2_duration_equality_and_deduced_optional(write_tree) -> None:
+    """ros2_controllers (jazzy): diff_drive_controller.cpp:481 and
+    omni_wheel_drive_controller.cpp:113 compare ``rclcpp::Duration``s with ``==``,
+    pose_broadcaster.cpp:90 builds ``std::optional{rclcpp::Duration::from_seconds(..)}``:
+    clang errors in ``on_configure``, which calls the ROS API, made each partial."""
+    result = _extract(write_tree, _source("ros2_duration_optional.cpp"), "ament_cmake")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("subscribe", "cmd_vel"), ("publish", "out")]

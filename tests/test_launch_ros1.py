@@ -234,3 +234,24 @@ def test_rosparam_text_an_unset_argument_makes_is_unknown_not_a_scalar(write_tre
     found = [(d.code, d.location.line) for d in model.diagnostics]
     assert found == [("LAUNCH_ARG_UNSET", 4), ("LAUNCH_ARG_UNSET", 5), ("LAUNCH_YAML", 7)]
     assert [(p.name, p.value) for p in model.params] == [("/arm/?", None), ("/arm/one", None)]
+
+
+def test_an_included_file_outside_the_workspace_is_not_read(write_tree):
+    """``<include file="$(env HOME)/gen/there.launch"/>``: a file outside the workspace
+    and the installed packages is not read (as ``<rosparam file>``), whether it is on the
+    analysing machine or not: what it would start stays unknown, no missing file."""
+    import os
+
+    probe = write_tree({"home/gen/there.launch": """
+        <launch><node name="stray" pkg="pkg" type="n" /></launch>
+        """})
+    env = {"HOME": os.path.join(str(probe), "home")}
+    model = load_launch(write_tree, """
+        <launch>
+          <include file="$(env HOME)/gen/there.launch" />
+          <include file="$(env HOME)/gen/gone.launch" />
+        </launch>
+        """, env=env)
+    assert [n.name for n in model.nodes] == []
+    assert [(d.code, d.location.line) for d in model.diagnostics] == [
+        ("LAUNCH_UNKNOWN_VALUE", 2), ("LAUNCH_UNKNOWN_VALUE", 3)]

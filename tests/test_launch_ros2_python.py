@@ -462,3 +462,23 @@ def generate_launch_description():
     assert model.nodes[0].conditions == ()
     assert [c.statement for c in model.nodes[1].conditions] == ["event"]
     assert [(d.code, d.severity) for d in model.diagnostics] == [("LAUNCH_PY_LIFECYCLE", "info")]
+
+
+def test_str_join_of_a_list_with_parts_not_known_is_a_value_not_known(write_tree):
+    """clearpath_simulator's gz_sim.launch.py joins ``os.path.join(p, 'share')`` for each
+    entry of ``AMENT_PREFIX_PATH`` (not set here): the loop runs once on an entry not
+    known, and ``':'.join`` of those paths is a value with a part not known, not
+    "str.join() fails: ... Lazy found" (Python's join does not fail there)."""
+    model, _ = run(write_tree, """
+def generate_launch_description():
+    paths = [os.path.join(p, 'share') for p in os.getenv('AMENT_PREFIX_PATH').split(':')]
+    joined = ':'.join(paths)
+    return LaunchDescription([
+        Node(package='pkg', executable='sim', name='sim',
+             parameters=[{'path': '/base:' + joined,
+                          'arg': ':'.join([LaunchConfiguration('w'), 'x'])}]),
+    ])
+""")
+    assert not [d.message for d in model.diagnostics if "fails" in d.message]
+    params = {p.name: p.value for p in model.params}
+    assert set(params) == {"/sim/path", "/sim/arg"}

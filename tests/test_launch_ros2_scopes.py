@@ -296,3 +296,43 @@ def generate_launch_description():
     assert [(d.code, d.location.line) for d in model.diagnostics] == [
         ("LAUNCH_UNKNOWN_VALUE", 7)]
     assert "outside the workspace" in model.diagnostics[0].message
+
+
+def test_an_included_launch_file_outside_the_workspace_is_not_read(write_tree) -> None:
+    """An included launch file is read only inside the workspace and the installed
+    packages, as parameter files are: Clearpath's robot_spawn.launch.py includes
+    ``$HOME/clearpath/platform/launch/platform-service.launch.py``, which its generator
+    writes on the robot; the analysing machine's HOME made it a missing file (an error,
+    launch-missing-reference), and a file there would have been read into the model."""
+    from conftest import package_xml
+
+    root = write_tree({
+        "src/p/package.xml": package_xml("p", "ament_cmake"),
+        "home/gen/there.launch.py": """from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([Node(package='p', executable='e', name='stray')])
+""",
+        "src/p/launch/a.launch.py": """from launch import LaunchDescription
+from launch.actions import IncludeLaunchDescription
+from launch.launch_description_sources import PythonLaunchDescriptionSource
+from launch.substitutions import EnvironmentVariable, PathJoinSubstitution
+
+
+def generate_launch_description():
+    here = PathJoinSubstitution([EnvironmentVariable('HOME'), 'gen', 'there.launch.py'])
+    gone = PathJoinSubstitution([EnvironmentVariable('HOME'), 'gen', 'gone.launch.py'])
+    return LaunchDescription([
+        IncludeLaunchDescription(PythonLaunchDescriptionSource([here])),
+        IncludeLaunchDescription(PythonLaunchDescriptionSource([gone])),
+    ])
+"""})
+    environment = {"HOME": str(root / "home")}
+    workspace = scan([str(root / "src")], environment)
+    model = load(str(root / "src/p/launch/a.launch.py"), workspace, {}, environment)
+    assert [n.name for n in model.nodes] == []
+    assert [(d.code, d.location.line) for d in model.diagnostics] == [
+        ("LAUNCH_UNKNOWN_VALUE", 11), ("LAUNCH_UNKNOWN_VALUE", 12)]
+    assert all("outside the workspace" in d.message for d in model.diagnostics)

@@ -155,6 +155,56 @@ def test_ros2_nodes_and_package_shares(write_tree):
                                (launch, 18, "teleop2")]
 
 
+
+GUARDED_LAUNCH = """import os
+
+from ament_index_python.packages import get_package_share_directory, get_packages_with_prefixes
+from ament_index_python.resources import has_resource
+from launch import LaunchDescription
+from launch.actions import IncludeLaunchDescription
+from launch.launch_description_sources import PythonLaunchDescriptionSource
+from launch.substitutions import PathJoinSubstitution
+from launch_ros.actions import Node
+from launch_ros.substitutions import FindPackageShare
+
+
+def generate_launch_description():
+    nodes = []
+    if 'nav2_bringup' in get_packages_with_prefixes():
+        nodes.append(IncludeLaunchDescription(PythonLaunchDescriptionSource(os.path.join(
+            get_package_share_directory('nav2_bringup'), 'launch', 'bringup_launch.py'))))
+        nodes.append(Node(package='nav2_bringup', executable='tool', name='tool'))
+    if has_resource('packages', 'image_view'):
+        nodes.append(Node(package='image_view', executable='image_view', name='view',
+                          arguments=[PathJoinSubstitution([FindPackageShare('image_view'),
+                                                           'a.yaml'])]))
+    if 'moveit' in get_packages_with_prefixes():
+        nodes.append(Node(package='moveit_ros_move_group', executable='move_group'))
+    nodes.append(Node(package='rviz2', executable='rviz2', name='rviz2'))
+    return LaunchDescription(nodes)
+"""
+
+
+def test_ros2_a_package_used_where_the_file_found_it_installed_is_optional(write_tree):
+    """webots_ros2's launch files use nav2_bringup, turtlebot3_navigation2 and
+    turtlebot3_cartographer only under ``if 'nav2_bringup' in get_packages_with_prefixes():``
+    (turtlebot3_bringup: ``has_resource('packages', 'image_view')``): they run without
+    them, so these are no undeclared dependency (6 warnings). A package used under the
+    check of another (moveit_ros_move_group under 'moveit') is undecided."""
+    root = write_tree({
+        "src/sim/package.xml": manifest("sim", build_type="ament_cmake"),
+        "src/sim/CMakeLists.txt": "project(sim)\n",
+        "src/sim/launch/robot.launch.py": GUARDED_LAUNCH,
+        "project.yaml": "project: p\nconfigurations:\n  c: [sim/launch/robot.launch.py]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {"PATH": ""})
+    assert findings(model) == [("sim/launch/robot.launch.py", 25, "rviz2")]
+    undecided = [f.message for f in run_rule(RULE, model) if f.rule.endswith(UNDECIDED)]
+    assert len(undecided) == 1 and "moveit_ros_move_group" in undecided[0]
+    reloaded = from_data(json.loads(json.dumps(model_to_data(model))))
+    assert findings(reloaded) == findings(model)
+
+
 def test_ros1_a_nodelet_uses_the_package_its_class_is_found_in(write_tree):
     root = write_tree({
         "src/cam/package.xml": manifest("cam", ("exec_depend", "nodelet")),
@@ -225,6 +275,14 @@ def test_models_metapackages_reads_the_pinned_trees(tmp_path, capsys):
     (documented / "CMakeLists.txt").write_text("project(stack3)\n")
     (documented / "rosdoc2.yaml").write_text("type: 'rosdoc2 config'\n")
     (documented / "stack3.repos").write_text("repositories: {}\n")
+    # a package that builds nothing but installs launch files (jazzy's velodyne): its
+    # install brings its run dependencies as a metapackage's does
+    launcher = tree / "stack4"
+    (launcher / "launch").mkdir(parents=True)
+    (launcher / "launch" / "all.launch.py").write_text("# starts the stack\n")
+    (launcher / "package.xml").write_text(manifest("stack4", ("exec_depend", "six"),
+                                                   build_type="ament_cmake"))
+    (launcher / "CMakeLists.txt").write_text("project(stack4)\n")
     code = tree / "one"  # a package with code is no metapackage
     (code / "src").mkdir(parents=True)
     (code / "package.xml").write_text(manifest("one", ("exec_depend", "two")))
@@ -242,10 +300,11 @@ def test_models_metapackages_reads_the_pinned_trees(tmp_path, capsys):
                  str(tmp_path / "sources"), "-o", str(out)]) == 0
     table = json.loads(out.read_text())
     assert table["metapackages"] == {"noetic": {"stack": ["one", "two"],
-                                                "stack2": ["three"], "stack3": ["four"]}}
+                                                "stack2": ["three"], "stack3": ["four"],
+                                                "stack4": ["six"]}}
     assert table["sources"] == [{"repository": "github:someone/stack", "commit": commit,
                                  "distro": "noetic"}]
-    assert "noetic: 3 metapackages" in capsys.readouterr().out
+    assert "noetic: 4 metapackages" in capsys.readouterr().out
 
 
 def test_the_shipped_metapackage_table_comes_from_the_pinned_lists():

@@ -72,3 +72,78 @@ def test_an_unread_include_leaves_them_undecided(write_tree: Any, include: str) 
     # the shared /gains/p: the include may read it; /scan/rte: scan's own, known
     assert [m.split(" ")[0] for m in found["parameter-set-not-read"]] == ["/scan/rte"]
     assert "/gains/p" in found["parameter-set-not-read-undecided"][0]
+
+
+ROS2_NODE = """import rclpy
+from std_msgs.msg import String
+
+
+def main():
+    rclpy.init()
+    node = rclpy.create_node('scan')
+    node.create_subscription(String, 'points', lambda m: None, 10)
+"""
+
+ROS2_LAUNCH = """from launch import LaunchDescription
+from launch.actions import ExecuteProcess, IncludeLaunchDescription
+from launch.launch_description_sources import PythonLaunchDescriptionSource
+from launch.substitutions import EnvironmentVariable, LaunchConfiguration, PathJoinSubstitution
+from launch_ros.actions import Node
+from launch_ros.substitutions import FindPackageShare
+from vendor_driver.launcher import Controller
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        INCLUDE,
+        Node(package='conv', executable='scan', name='scan'),
+    ])
+"""
+
+
+def _ros2_findings(write_tree: Any, include: str) -> dict[str, list[str]]:
+    root: Path = write_tree({
+        "src/conv/package.xml": package_xml("conv", "ament_python"),
+        "src/conv/setup.py": "from setuptools import setup\nsetup(name='conv', "
+                             "packages=['conv'], entry_points={'console_scripts': "
+                             "['scan = conv.scan:main']})\n",
+        "src/conv/conv/__init__.py": "",
+        "src/conv/conv/scan.py": ROS2_NODE,
+        "src/conv/launch/a.launch.py": ROS2_LAUNCH.replace("INCLUDE", include),
+        "project.yaml": "project: p\nconfigurations:\n  c: [conv/launch/a.launch.py]\n",
+    })
+    project = load(str(root / "project.yaml"))
+    environment = {"PATH": os.environ.get("PATH", ""), "HOME": str(root / "home")}
+    model = analyse(project, environment, Options(cache_dir=None))
+    found: dict[str, list[str]] = {}
+    for finding in run_catalogue(model, project):
+        found.setdefault(finding.rule, []).append(finding.message)
+    return found
+
+
+@pytest.mark.parametrize("include", [
+    "Node(package='conv', executable='scan', name='other')",
+    "IncludeLaunchDescription(PythonLaunchDescriptionSource(PathJoinSubstitution(["
+    "FindPackageShare('not_in_workspace'), 'launch', 'sensor.launch.py'])))",
+    "IncludeLaunchDescription(PythonLaunchDescriptionSource(["
+    "LaunchConfiguration('lidar_dir'), '/lidar.launch.py']))",
+    "ExecuteProcess(cmd=['ros2', 'launch', 'not_in_workspace', 'sensor.launch.py'])",
+    "IncludeLaunchDescription(PythonLaunchDescriptionSource(["
+    "EnvironmentVariable('HOME'), '/gen/sensor.launch.py']))",
+    "Controller(robot='r1')",
+], ids=["none", "absent-package", "file-not-known", "ros2-launch-absent-package",
+        "outside-the-workspace", "action-not-interpreted"])
+def test_a_ros2_unread_include_leaves_them_undecided(write_tree: Any, include: str) -> None:
+    """turtlebot3_bringup's robot.launch.py includes its lidar driver's launch file from
+    a package not installed here (``[lidar_pkg_dir, LDS_LAUNCH_FILE]``); webots_ros2's
+    launch files start the simulated robot's driver through ``WebotsController(...)``, a
+    class the interpreter does not run: ROS 2 kept no trace of an include it could not
+    read nor of an action not known, so every absence was decided."""
+    found = _ros2_findings(write_tree, include)
+    if include.startswith("Node"):
+        assert len(found.get("subscriber-without-publisher", [])) == 2
+        return
+    assert "subscriber-without-publisher" not in found
+    undecided = found["subscriber-without-publisher-undecided"]
+    said = "action not interpreted" if include.startswith("Controller") else "(not read)"
+    assert len(undecided) == 1 and said in undecided[0]

@@ -13,7 +13,7 @@ from .. import diagnostics as diag
 from ..diagnostics import Diagnostic
 from ..launch.model import LaunchModel, NodeDecl
 from ..model.conditions import EACH_STATEMENT, Condition
-from ..model.launch_tree import PackageUse
+from ..model.launch_tree import PackageUse, installed_check
 from ..model.location import Location
 from ..model.rosname import RosName, namespace_of, remap, resolve, resolve_remaps
 from ..model.runtime import (
@@ -300,8 +300,10 @@ def package_uses(launch: LaunchModel, workspace: Workspace,
     (``$(find pkg)``); ``test`` when rostest or launch_testing runs the file (one under
     its package's test/ or tests/ folder, a ``.test`` file) or the node is a ``<test>``,
     where a package's test dependencies are installed too."""
-    uses = [PackageUse(d.package, d.location, "node", d.is_test) for d in launch.nodes]
-    uses += [PackageUse(instance.node.package, decl.location, "node", decl.is_test)
+    uses = [PackageUse(d.package, d.location, "node", d.is_test, _guard(d))
+            for d in launch.nodes]
+    uses += [PackageUse(instance.node.package, decl.location, "node", decl.is_test,
+                        _guard(decl))
              for decl, instance in started
              if instance.node is not None and nodelet_plugin(decl) is not None]
     uses += launch.package_uses
@@ -315,8 +317,17 @@ def package_uses(launch: LaunchModel, workspace: Workspace,
         if file not in tests:
             tests[file] = _test_file(file, workspace)
         test = use.test or tests[file]
-        found.setdefault((file, use.package, test), replace(use, test=test))
+        key = (file, use.package, test)
+        if key not in found or (found[key].guard is not None and use.guard is None):
+            found[key] = replace(use, test=test)  # one not under an install check wins
     return list(found.values())
+
+
+def _guard(decl: NodeDecl) -> str | None:
+    """The package whose installation a launch condition of ``decl`` checks (a ROS 2
+    Python ``if 'G' in get_packages_with_prefixes():`` around it)."""
+    return installed_check(c.text for c in decl.conditions
+                           if c.kind == "launch" and c.statement == "if")
 
 
 def _test_file(file: str, workspace: Workspace) -> bool:

@@ -29,6 +29,8 @@ def label(item: LaunchItem) -> str:
         text = f"[bold]{escape(item.name)}[/]{reached}"
         if item.namespace not in ("", "/"):
             text += f"  ns {escape(item.namespace)}"
+    elif item.kind == "include" and item.detail == "action":
+        text = f"action not interpreted: {escape(item.name)}  [dim]{where}[/]"
     elif item.kind == "include":
         text = f"include [bold]{escape(item.name)}[/]  [dim]{where}[/]"
     elif item.kind == "group":

@@ -93,6 +93,25 @@ def exclusive(first: tuple[Condition, ...], second: tuple[Condition, ...]) -> bo
     return any(contradict(a, b) for a in first for b in second)
 
 
+# a ROS 2 launch event handler ``OnProcessExit(target_action=X, on_exit=[...])``: what it
+# starts runs once the process X, made at that place of a launch file, has ended
+_EXIT_EVENT = "on event OnProcessExit of the process at "
+
+
+def exit_event(target: Location) -> str:
+    """The text of the condition of what starts when the process made at ``target``
+    ends."""
+    return f"{_EXIT_EVENT}{target}"
+
+
+def after_exit(conditions: tuple[Condition, ...], target: Location) -> bool:
+    """Whether ``conditions`` start their entity only after the process made at
+    ``target`` has ended (so the two never run together)."""
+    return bool(target.file) and any(
+        c.kind == "launch" and c.statement == "event" and c.text == exit_event(target)
+        for c in conditions)
+
+
 def same_conditions(first: tuple[Condition, ...], second: tuple[Condition, ...]) -> bool:
     """Whether two conjunctions are the same conditions (written alike): the one holds
     exactly when the other does (a text not known is no condition's but its own)."""

@@ -9,6 +9,8 @@ the remaps and parameters set in its scope. The loaders record it as they walk.
 
 from __future__ import annotations
 
+import re
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 from typing import Any, Literal
 
@@ -45,7 +47,8 @@ class LaunchItem:
     name: str  # file: its path; group: its namespace; node: its final full name
     location: Location = NOWHERE  # file: the include that reached it; else where written
     namespace: str = field(default="", metadata=OPTIONAL)  # in effect for its contents
-    detail: str = field(default="", metadata=OPTIONAL)  # node: package/executable
+    # node: package/executable; include: "action" for an action not interpreted
+    detail: str = field(default="", metadata=OPTIONAL)
     condition: LaunchCondition | None = field(default=None, metadata=OPTIONAL)
     skipped: bool = field(default=False, metadata=OPTIONAL)  # left out by its condition
     args: list[LaunchArg] = field(default_factory=list, metadata=OPTIONAL)
@@ -88,18 +91,61 @@ class PackageUse:
     location: Location
     kind: str = "file"
     test: bool = False
+    # a ROS 2 Python launch file's use under ``if 'G' in get_packages_with_prefixes():``
+    # (or ``has_resource('packages', 'G')``): G, the package whose installation the file
+    # checks before it uses this one, so it runs without them
+    guard: str | None = field(default=None, metadata=OPTIONAL)
 
     @property
     def user(self) -> str | None:
         return self.location.package
+
+    @property
+    def optional(self) -> bool:
+        """Used only where the launch file found it (or the installed metapackage of
+        the shipped table that brings it) installed: a run dependency it need not
+        declare."""
+        if self.guard is None:
+            return False
+        if self.guard == self.package:
+            return True
+        from ..models.metapackages import members  # the installed metapackages' table
+
+        return self.package in members(self.guard, 2)
+
+
+# ``'G' in get_packages_with_prefixes()`` (ament_index_python: every installed package)
+# and ``has_resource('packages', 'G')``: a test of whether package G is installed
+_IN_INSTALLED = re.compile(
+    r"""\s*(['"])([A-Za-z_][\w.-]*)\1\s+in\s+(?:[\w.]+\.)?get_packages_with_prefixes"""
+    r"""\(\s*\)\s*""")
+_HAS_PACKAGE = re.compile(
+    r"""\s*(?:[\w.]+\.)?has_resource\(\s*(['"])packages\1\s*,\s*(['"])([A-Za-z_][\w.-]*)"""
+    r"""\2\s*\)\s*""")
+
+
+def installed_check(texts: Iterable[str]) -> str | None:
+    """The package whose installation one of ``texts`` (Python ``if`` tests a launch
+    file is under, each maybe a conjunction with ``and``) checks, the innermost first."""
+    for text in reversed(list(texts)):
+        for part in reversed(text.split(" and ")):
+            found = _IN_INSTALLED.fullmatch(part)
+            if found is not None:
+                return found.group(2)
+            found = _HAS_PACKAGE.fullmatch(part)
+            if found is not None:
+                return found.group(3)
+    return None
 
 
 def use_from_data(data: Any) -> PackageUse | None:
     """The inverse of ``serialise.to_data`` for one package use."""
     if not isinstance(data, dict) or not isinstance(data.get("package"), str):
         return None
+    guard = data.get("guard")
     return PackageUse(data["package"], _location(data.get("location")),
-                      str(data.get("kind", "file")), bool(data.get("test", False)))
+                      str(data.get("kind", "file")), bool(data.get("test", False)),
+                      guard if isinstance(guard, str) else None)
 
 
 MAX_CHILDREN = 5_000

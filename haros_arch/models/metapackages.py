@@ -9,8 +9,9 @@ workspace is read from the workspace; those that come installed are this table.
 ``haros-arch models metapackages --sources DIR -o FILE`` reads the package.xml of every
 package of the pinned trees of the models' lists (``sources.yaml``, ``interfaces.yaml``
 and ``metapackages.yaml``, their ``with`` trees too) whose ``<export>`` says ``<metapackage/>``
-(ROS 1), or whose folder holds nothing but its manifest, build file and papers (ROS 2
-has no such export), and writes each one's run dependencies per distribution, with the
+(ROS 1), or whose folder holds nothing but its manifest, build file, papers and launch
+files (ROS 2 has no such export), and writes each one's run dependencies per
+distribution, with the
 repositories and commits read. ``members`` answers from the shipped file.
 """
 
@@ -44,12 +45,17 @@ _PAPERS = (".md", ".rst", ".txt", ".xml")  # CMakeLists.txt, CHANGELOG.rst, READ
 _DOC_FILES = ("rosdoc2.yaml",)
 _DOC_SUFFIXES = (".repos",)
 _DOC_FOLDERS = ("doc", "docs")
+# a package that only installs launch files builds nothing either: what a binary install
+# of it brings is its run dependencies (jazzy's velodyne, which exec_depends
+# velodyne_driver and velodyne_pointcloud; noetic's hector_geotiff_launch)
+_LAUNCH_FOLDERS = ("launch",)
 
 
 def _only_manifest(folder: str) -> bool:
-    """A package folder that holds nothing but its manifest, build file, papers and
-    documentation: a ROS 2 metapackage (navigation2, gazebo_ros_pkgs, image_pipeline,
-    ros2_control), which has no ``<metapackage/>`` export."""
+    """A package folder that holds nothing but its manifest, build file, papers,
+    documentation and a folder of launch files: a ROS 2 metapackage (navigation2,
+    gazebo_ros_pkgs, image_pipeline, ros2_control), which has no ``<metapackage/>``
+    export, or a package that builds nothing and brings its run dependencies (velodyne)."""
     try:
         entries = os.listdir(folder)
     except OSError:
@@ -59,7 +65,7 @@ def _only_manifest(folder: str) -> bool:
         if entry.startswith("."):
             return True
         if os.path.isdir(os.path.join(folder, entry)):
-            return entry in _DOC_FOLDERS
+            return entry in _DOC_FOLDERS + _LAUNCH_FOLDERS
         return entry.endswith(_PAPERS + _DOC_SUFFIXES) or entry in _DOC_FILES
 
     return all(paper(e) for e in entries)

@@ -71,7 +71,7 @@ FIELDS: dict[type, tuple[str, ...]] = {
     Configuration: ("name", "launch", "args", "nodes", "topics", "services", "actions",
                     "parameters", "links", "direct_links", "diagnostics", "package_paths",
                     "incomplete_nodes", "remaps", "package_uses"),
-    PackageUse: ("package", "user", "kind", "test", "location"),
+    PackageUse: ("package", "user", "kind", "test", "guard", "optional", "location"),
     Remap: ("source", "target", "text", "nodes", "node", "users", "unseen", "near", "hint",
             "node_names", "location"),
     NodeInstance: ("name", "id", "node", "namespace", "remaps", "args", "conditions",

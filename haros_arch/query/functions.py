@@ -13,7 +13,7 @@ from typing import Any
 
 from .. import manifest
 from ..model import rosname
-from ..model.conditions import Condition, exclusive, same_conditions
+from ..model.conditions import Condition, after_exit, exclusive, same_conditions
 from ..model.runtime import Link, NodeInstance, Resource
 from ..model.source import Package
 from .absence import distance, same_setting, similar_to, unknown_users
@@ -305,9 +305,15 @@ def _conditions(value: Any, function: str) -> tuple[Condition, ...]:
 
 def never_together(charge: Charge, first: Any, second: Any) -> bool:
     """True when the conditions of two node instances (or links) cannot both hold:
-    ``<group if="$(eval model == 'a')">`` and ``'b'``, ``if`` and ``unless`` of one value."""
+    ``<group if="$(eval model == 'a')">`` and ``'b'``, ``if`` and ``unless`` of one value;
+    or when one instance starts only once the other's process has ended (a ROS 2 launch
+    ``OnProcessExit`` whose target is the other)."""
     one, other = _conditions(first, "never_together"), _conditions(second, "never_together")
     charge(1 + len(one) * len(other))
+    if isinstance(first, NodeInstance) and isinstance(second, NodeInstance) and (
+        after_exit(one, second.location) or after_exit(other, first.location)
+    ):
+        return True
     return exclusive(one, other)
 
 

@@ -128,5 +128,7 @@ def label(item: Any) -> str:
     if isinstance(item, Node):
         return f"executable {item.name}"
     if isinstance(item, LaunchItem) and item.kind == "include":
+        if item.detail == "action":
+            return f"action not interpreted ({item.name})"
         return f"include {item.name} (not read)"
     return str(plain(item))

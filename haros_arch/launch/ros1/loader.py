@@ -598,6 +598,15 @@ class Ros1Loader:
                         path=self.workspace.relpath(path))
             return False
         self.includes += 1
+        if parent is not None and element is not None and not self.workspace.readable(
+                path, self.environment):
+            # an included file is read only from the workspace and the installed packages
+            # (as <rosparam file>): what it would start stays unknown, not missing
+            self.report("LAUNCH_UNKNOWN_VALUE", parent, element, detail=(
+                f"launch file {path} is outside the workspace and installed packages; "
+                "it is not read"))
+            scope.item.kind = "include"  # the include that reached it, not read
+            return False
         location = self.where(parent, element) if parent else self.workspace.location(path)
         root = self.parse(path, location)
         if root is None:

@@ -328,6 +328,15 @@ class Unsupported(Action):
     what: str
 
 
+@dataclass
+class UnknownAction(Action):
+    """A value not known statically among a launch description's actions (what a call
+    the interpreter does not run made: webots_ros2's ``WebotsController(...)``, an
+    ``ExecuteProcess`` of its own); said where it was made, and it may start anything."""
+
+    what: str
+
+
 def ros2_command_node(words: list[Text]) -> NodeAction | None:
     """The node a process's command line starts, when it is ``ros2 run PKG EXE ...``
     (that node, as ``Node(package=PKG, executable=EXE, arguments=[...])``) or ``ros2

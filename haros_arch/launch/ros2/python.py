@@ -160,7 +160,11 @@ class Interpreter(Expressions):
                 out.extend(self.actions_of(item, node))
             elif isinstance(item, e.Action):
                 out.append(item)
-            elif item is not None and not isinstance(item, Unknown):
+            elif isinstance(item, Unknown):
+                # the interpreter said why it is not known where it was made; as an
+                # action it may start or set anything (query.absence)
+                out.append(e.UnknownAction(item.origin or "?", location=self.where(node)))
+            elif item is not None:
                 self.unsupported(node, f"{type(item).__name__} is not a launch action")
         return out
 

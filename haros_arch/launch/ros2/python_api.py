@@ -18,7 +18,8 @@ from typing import Any
 
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
-from ...model.launch_tree import PackageUse
+from ...model.conditions import exit_event
+from ...model.launch_tree import PackageUse, installed_check
 from ...model.values import Unknown, Value
 from ...share import install_prefix
 from . import entities as e
@@ -136,7 +137,7 @@ def package_directory(share: bool) -> Builder:
     def build(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
         name = arg(a, k, 0, "package_name")
         if isinstance(name, str):
-            i.uses.append(PackageUse(name, i.where(n)))
+            i.uses.append(PackageUse(name, i.where(n), guard=installed_check(i.guards)))
             found = i.workspace.find(name) if share else install_prefix(i.workspace, name)
             if found is not None:
                 return found
@@ -476,6 +477,12 @@ def event_handler(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
             contents.extend(actions(i, value, n))
         elif value is not None:
             i.unsupported(n, f"{label} with a callable is not interpreted")
+    target = k.get("target_action")
+    if label.rsplit(".", 1)[-1] == "OnProcessExit" and isinstance(target, e.Action) \
+            and target.location.file:
+        # what it starts runs after that process has ended, never beside it
+        # (conditions.after_exit reads it back): named by where the process is made
+        return e.Delayed(contents, exit_event(target.location), "event", location=i.where(n))
     return e.Delayed(contents, f"on event {label}", "event", location=i.where(n))
 
 

@@ -20,7 +20,7 @@ import yaml
 from ... import safe_yaml
 from ...evaluate import operations as ops
 from ...evaluate import partial
-from ...model.launch_tree import PackageUse
+from ...model.launch_tree import PackageUse, installed_check
 from ...model.values import Unknown
 from . import entities as e
 from .python_values import (
@@ -126,7 +126,7 @@ Method = Callable[["Interpreter", Any, Args, Kwargs, ast.AST], Any]
 def m_find(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
     """``FindPackageShare('pkg').find('pkg')``: the share folder, now."""
     if isinstance(owner, e.FindPackage) and a and isinstance(a[0], str):
-        i.uses.append(PackageUse(a[0], i.where(n)))
+        i.uses.append(PackageUse(a[0], i.where(n), guard=installed_check(i.guards)))
         found = i.workspace.find(a[0])
         if found is not None and owner.share:
             return found
@@ -220,8 +220,8 @@ def m_str(name: str) -> Method:
                 owner, a, k, _same, lambda reason: Unknown(reason), LIMITS.length)), n)
         if not isinstance(owner, str) or not all(
                 isinstance(v, (str, int, float, list, tuple)) for v in [*a, *k.values()]
-        ) or any(isinstance(x, Unknown) for v in a if isinstance(v, (list, tuple))
-                 for x in v):
+        ) or any(isinstance(x, (Unknown, Lazy, e.Subst)) for v in a
+                 if isinstance(v, (list, tuple)) for x in v):
             if name == "join" and isinstance(owner, str) and a and isinstance(a[0], list):
                 return i.operation(lambda: concat(partial.join_parts(
                     owner, a[0], _same, LIMITS.length)), n)

@@ -20,7 +20,14 @@ from ... import diagnostics as diag
 from ... import safe_yaml
 from ...files import read_text
 from ...model.conditions import Condition
-from ...model.launch_tree import ArgOrigin, LaunchArg, LaunchCondition, LaunchItem, PackageUse
+from ...model.launch_tree import (
+    ArgOrigin,
+    LaunchArg,
+    LaunchCondition,
+    LaunchItem,
+    PackageUse,
+    installed_check,
+)
 from ...model.location import Location
 from ...model.values import Unknown, Value
 from ...share import share_source
@@ -93,9 +100,12 @@ class Runner:
         if found not in self.model.diagnostics:
             self.model.diagnostics.append(found)
 
-    def uses(self, package: str, location: Location) -> None:
-        """A substitution asked for the folder of ``package`` (``?`` for parts not known)."""
-        self.model.package_uses.append(PackageUse(package, location))
+    def uses(self, package: str, location: Location,
+             conditions: tuple[Condition, ...] = ()) -> None:
+        """A substitution asked for the folder of ``package`` (``?`` for parts not known),
+        under ``conditions`` (a Python test of whether a package is installed, maybe)."""
+        self.model.package_uses.append(PackageUse(package, location, guard=installed_check(
+            c.text for c in conditions if c.kind == "launch" and c.statement == "if")))
 
     def evaluator(self, scope: Scope, location: Location) -> Evaluator:
         return Evaluator(self, scope, location)
@@ -126,6 +136,16 @@ class Runner:
         if path in self.stack or len(self.stack) >= MAX_INCLUDE_DEPTH:
             self.report("LAUNCH_BAD_VALUE", where,
                         detail=f"include cycle or depth: {self.workspace.relpath(path)}")
+            return
+        if self.stack and not self.workspace.readable(path, self.environment):
+            scope.item.kind = "include"  # the include that reached it, not read
+            # as parameter files: an included launch file is read only from the workspace
+            # and the installed packages (Clearpath's robot_spawn.launch.py includes
+            # $HOME/clearpath/platform/launch/*.launch.py, written on the robot by the
+            # generator it starts first): what it would start stays unknown, not missing
+            self.report("LAUNCH_UNKNOWN_VALUE", where, detail=(
+                f"launch file {path} is outside the workspace and installed packages; "
+                "it is not read"))
             return
         if not os.path.isfile(path):
             self.report("LAUNCH_FILE_MISSING", where, path=self.workspace.relpath(path))
@@ -292,6 +312,7 @@ class Runner:
         if path is None or path.literal is None:
             self.report("LAUNCH_UNSUPPORTED", action.location,
                         detail=f"included file {path} is not known statically")
+            self.unread(str(path) if path is not None else "?", scope, action.location)
             return
         item = LaunchItem("file", self.workspace.relpath(share_source(
             self.workspace, os.path.abspath(path.literal))), action.location,
@@ -387,6 +408,8 @@ class Runner:
             positional.append(text)
         path = self._launched_file(positional, where)
         if path is None:
+            if len(positional) == 2 and self.workspace.find(positional[0]) is None:
+                self.unread(" ".join(positional), scope, where)
             return
         inner = Scope({name: value for name, value in arguments},
                       conditions=scope.conditions, environment=dict(scope.environment))
@@ -396,6 +419,15 @@ class Runner:
                                "command line", where) for name, value in arguments]
         inner.item = scope.item.add(item)
         self.run_file(path, inner, where)
+
+    def unread(self, name: str, scope: Scope, where: Location, detail: str = "") -> None:
+        """A launch file included (or run by ``ros2 launch``) that cannot be read: its
+        path not known statically, its package not here; or an action not interpreted
+        (``detail`` "action"). What it starts or sets is not seen, so it may be the
+        missing side of anything (``query.absence``); ROS 1's ``<include>`` of a file
+        not known is kept so too."""
+        scope.item.add(LaunchItem("include", name, where, namespace=scope.namespace or "/",
+                                  detail=detail, condition=self.take_guard()))
 
     def _launched_file(self, positional: list[str], where: Location) -> str | None:
         """The file ``ros2 launch`` runs: ``PKG FILE``, the one file named FILE in the
@@ -439,6 +471,10 @@ class Runner:
 
     def do_Unsupported(self, action: e.Unsupported, scope: Scope) -> None:
         self.report("LAUNCH_UNSUPPORTED", action.location, detail=action.what)
+        self.unread(action.what, scope, action.location, "action")
+
+    def do_UnknownAction(self, action: e.UnknownAction, scope: Scope) -> None:
+        self.unread(action.what, scope, action.location, "action")
 
     def do_NodeAction(self, action: e.NodeAction, scope: Scope) -> None:
         from .nodes import perform_node

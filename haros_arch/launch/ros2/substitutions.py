@@ -245,7 +245,8 @@ class Evaluator:
 
     def s_FindPackage(self, s: e.FindPackage) -> Value:
         name = self.known(s.package)
-        self.runner.uses(self.value(s.package).text, self.location)
+        self.runner.uses(self.value(s.package).text, self.location,
+                         self.scope.conditions)
         if name is None:
             return Value.unknown("package with an unknown name")
         found = self.runner.workspace.find(name)
@@ -286,7 +287,8 @@ class Evaluator:
     def in_package(self, executable: str, package_text: e.Text) -> Value:
         """``$(exec-in-pkg)``: ``<prefix>/lib/<pkg>/<exe>`` when the package installs it."""
         package = self.known(package_text)
-        self.runner.uses(self.value(package_text).text, self.location)
+        self.runner.uses(self.value(package_text).text, self.location,
+                         self.scope.conditions)
         if package is None:
             return Value.unknown("package with an unknown name")
         workspace = self.runner.workspace

@@ -8,6 +8,18 @@
 #include <boost/function.hpp>
 namespace ros { class Subscriber; }
 namespace message_filters {
+// getSubscriber(): ROS 1 gives the ros::Subscriber, ROS 2 the rclcpp subscription's
+// shared pointer; one stand-in answers both uses (sub.getSubscriber().getTopic(),
+// sub.getSubscriber()->get_topic_name())
+struct haros_filter_subscription {
+  const haros_filter_subscription* operator->() const;
+  operator const ros::Subscriber&() const;
+  explicit operator bool() const;
+  std::string getTopic() const;
+  uint32_t getNumPublishers() const;
+  const char* get_topic_name() const;
+  size_t get_publisher_count() const;
+};
 template<class M, class NodeType = void> class Subscriber {
 public:
   Subscriber();
@@ -15,7 +27,7 @@ public:
   template<class N, class... A> void subscribe(N&& node, const std::string& topic, A&&... more);
   void unsubscribe();
   std::string getTopic() const;
-  const ros::Subscriber& getSubscriber() const;
+  const haros_filter_subscription& getSubscriber() const;
   template<class C> void registerCallback(const C& callback);
   template<class C, class T> void registerCallback(const C& callback, T* object);
 };

@@ -137,7 +137,18 @@ enum { COLOR_BGR2GRAY = 6, COLOR_RGB2GRAY = 7, COLOR_GRAY2BGR = 8, COLOR_BGR2RGB
 enum CmpTypes { CMP_EQ = 0, CMP_GT = 1, CMP_GE = 2, CMP_LT = 3, CMP_LE = 4, CMP_NE = 5 };
 enum { INTER_NEAREST = 0, INTER_LINEAR = 1, INTER_CUBIC = 2, INTER_AREA = 3 };
 enum { THRESH_BINARY = 0, THRESH_BINARY_INV = 1, THRESH_OTSU = 8 };
-enum { WINDOW_NORMAL = 0, WINDOW_AUTOSIZE = 1 };
+enum { WINDOW_NORMAL = 0, WINDOW_AUTOSIZE = 1, WINDOW_OPENGL = 0x1000,
+  WINDOW_FULLSCREEN = 1, WINDOW_FREERATIO = 0x100, WINDOW_KEEPRATIO = 0,
+  WINDOW_GUI_EXPANDED = 0, WINDOW_GUI_NORMAL = 0x10 };
+enum { WND_PROP_FULLSCREEN = 0, WND_PROP_AUTOSIZE = 1, WND_PROP_ASPECT_RATIO = 2,
+  WND_PROP_OPENGL = 3, WND_PROP_VISIBLE = 4 };
+enum { EVENT_MOUSEMOVE = 0, EVENT_LBUTTONDOWN = 1, EVENT_RBUTTONDOWN = 2,
+  EVENT_MBUTTONDOWN = 3, EVENT_LBUTTONUP = 4, EVENT_RBUTTONUP = 5, EVENT_MBUTTONUP = 6,
+  EVENT_LBUTTONDBLCLK = 7, EVENT_RBUTTONDBLCLK = 8, EVENT_MBUTTONDBLCLK = 9,
+  EVENT_MOUSEWHEEL = 10, EVENT_MOUSEHWHEEL = 11 };
+enum { EVENT_FLAG_LBUTTON = 1, EVENT_FLAG_RBUTTON = 2, EVENT_FLAG_MBUTTON = 4,
+  EVENT_FLAG_CTRLKEY = 8, EVENT_FLAG_SHIFTKEY = 16, EVENT_FLAG_ALTKEY = 32 };
+typedef void (*MouseCallback)(int event, int x, int y, int flags, void* userdata);
 enum { LINE_8 = 8, LINE_AA = 16, FILLED = -1 };
 enum { FONT_HERSHEY_SIMPLEX = 0, FONT_HERSHEY_PLAIN = 1 };
 enum { RETR_EXTERNAL = 0, RETR_LIST = 1, RETR_TREE = 3, CHAIN_APPROX_SIMPLE = 2 };
@@ -176,6 +187,12 @@ void destroyWindow(const std::string& window);
 void destroyAllWindows();
 int waitKey(int delay = 0);
 void startWindowThread();
+void setMouseCallback(const std::string& window, MouseCallback on_mouse, void* userdata = 0);
+void resizeWindow(const std::string& window, int width, int height);
+void moveWindow(const std::string& window, int x, int y);
+void setWindowTitle(const std::string& window, const std::string& title);
+double getWindowProperty(const std::string& window, int prop);
+void setWindowProperty(const std::string& window, int prop, double value);
 class VideoCapture {
 public:
   VideoCapture();

@@ -65,10 +65,48 @@ struct ParameterType {
     PARAMETER_STRING_ARRAY = 9;
 };
 } }
-namespace rcl_interfaces { namespace msg { struct ParameterEvent; } }
 namespace builtin_interfaces { namespace msg {
 struct Time { int32_t sec; uint32_t nanosec; using _sec_type = int32_t; using _nanosec_type = uint32_t; };
 struct Duration { int32_t sec; uint32_t nanosec; using _sec_type = int32_t; using _nanosec_type = uint32_t; };
+} }
+// the parameter event messages, as rosidl generates them: rclcpp's headers include them
+// (a parameter event callback reads event->changed_parameters without an include)
+namespace rcl_interfaces { namespace msg {
+struct ParameterValue {
+  ParameterValue();
+  uint8_t type; using _type_type = uint8_t; ParameterValue& set__type(const uint8_t& _arg);
+  bool bool_value; using _bool_value_type = bool; ParameterValue& set__bool_value(const bool& _arg);
+  int64_t integer_value; using _integer_value_type = int64_t; ParameterValue& set__integer_value(const int64_t& _arg);
+  double double_value; using _double_value_type = double; ParameterValue& set__double_value(const double& _arg);
+  std::string string_value; using _string_value_type = std::string; ParameterValue& set__string_value(const std::string& _arg);
+  std::vector<uint8_t> byte_array_value; using _byte_array_value_type = std::vector<uint8_t>; ParameterValue& set__byte_array_value(const std::vector<uint8_t>& _arg);
+  std::vector<bool> bool_array_value; using _bool_array_value_type = std::vector<bool>; ParameterValue& set__bool_array_value(const std::vector<bool>& _arg);
+  std::vector<int64_t> integer_array_value; using _integer_array_value_type = std::vector<int64_t>; ParameterValue& set__integer_array_value(const std::vector<int64_t>& _arg);
+  std::vector<double> double_array_value; using _double_array_value_type = std::vector<double>; ParameterValue& set__double_array_value(const std::vector<double>& _arg);
+  std::vector<std::string> string_array_value; using _string_array_value_type = std::vector<std::string>; ParameterValue& set__string_array_value(const std::vector<std::string>& _arg);
+  bool operator==(const ParameterValue& other) const;
+  bool operator!=(const ParameterValue& other) const;
+  RCLCPP_SMART_PTR_ALIASES_ONLY(ParameterValue)
+};
+struct Parameter {
+  Parameter();
+  std::string name; using _name_type = std::string; Parameter& set__name(const std::string& _arg);
+  ParameterValue value; using _value_type = ParameterValue; Parameter& set__value(const ParameterValue& _arg);
+  bool operator==(const Parameter& other) const;
+  bool operator!=(const Parameter& other) const;
+  RCLCPP_SMART_PTR_ALIASES_ONLY(Parameter)
+};
+struct ParameterEvent {
+  ParameterEvent();
+  builtin_interfaces::msg::Time stamp; using _stamp_type = builtin_interfaces::msg::Time; ParameterEvent& set__stamp(const builtin_interfaces::msg::Time& _arg);
+  std::string node; using _node_type = std::string; ParameterEvent& set__node(const std::string& _arg);
+  std::vector<Parameter> new_parameters; using _new_parameters_type = std::vector<Parameter>; ParameterEvent& set__new_parameters(const std::vector<Parameter>& _arg);
+  std::vector<Parameter> changed_parameters; using _changed_parameters_type = std::vector<Parameter>; ParameterEvent& set__changed_parameters(const std::vector<Parameter>& _arg);
+  std::vector<Parameter> deleted_parameters; using _deleted_parameters_type = std::vector<Parameter>; ParameterEvent& set__deleted_parameters(const std::vector<Parameter>& _arg);
+  bool operator==(const ParameterEvent& other) const;
+  bool operator!=(const ParameterEvent& other) const;
+  RCLCPP_SMART_PTR_ALIASES_ONLY(ParameterEvent)
+};
 } }
 namespace rclcpp {
 void init(int argc, char const* const argv[]);
@@ -123,6 +161,8 @@ public:
   const std::vector<double>& as_double_array() const;
   const std::vector<std::string>& as_string_array() const;
   std::string value_to_string() const;
+  static Parameter from_parameter_msg(const rcl_interfaces::msg::Parameter& parameter);
+  rcl_interfaces::msg::Parameter to_parameter_msg() const;
 };
 class Duration {
 public:
@@ -140,6 +180,8 @@ public:
   bool operator>(const Duration& o) const;
   bool operator>=(const Duration& o) const;
   bool operator<=(const Duration& o) const;
+  bool operator==(const Duration& o) const;
+  bool operator!=(const Duration& o) const;
   Duration operator+(const Duration& o) const;
   Duration operator-(const Duration& o) const;
   Duration operator*(double s) const;
@@ -737,6 +779,8 @@ public:
   struct ListParametersResult { std::vector<std::string> names; std::vector<std::string> prefixes; };
   ListParametersResult list_parameters(const std::vector<std::string>& prefixes, uint64_t depth);
   template<class C> std::shared_ptr<void> on_parameter_event(C&& callback);
+  template<class C, class... O> std::shared_ptr<void> on_parameter_event(
+      C&& callback, const QoS& qos, const O&... options);
   template<class N, class C> static std::shared_ptr<void> on_parameter_event(N node,
                                                                              C&& callback);
   void delete_parameters(const std::vector<std::string>& names);
@@ -760,6 +804,8 @@ public:
   std::shared_future<SyncParametersClient::ListParametersResult> list_parameters(
       const std::vector<std::string>& prefixes, uint64_t depth, C callback = nullptr);
   template<class C> std::shared_ptr<void> on_parameter_event(C&& callback);
+  template<class C, class... O> std::shared_ptr<void> on_parameter_event(
+      C&& callback, const QoS& qos, const O&... options);
   template<class N, class C> static std::shared_ptr<void> on_parameter_event(N node,
                                                                              C&& callback);
 };

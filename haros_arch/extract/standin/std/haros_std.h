@@ -739,6 +739,9 @@ public:
   template<class... A> T& emplace(A&&... args);
   void swap(optional& other) noexcept;
 };
+#if __cplusplus >= 201703L
+template<class T> optional(T) -> optional<T>;  // std::optional{value}
+#endif
 template<class T> optional<typename decay<T>::type> make_optional(T&& v);
 template<class T, class... A> optional<T> make_optional(A&&... args);
 
