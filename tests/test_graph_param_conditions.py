@@ -624,3 +624,49 @@ def test_a_condition_over_a_local_that_holds_a_parameter(write_tree) -> None:
     assert not [n for n in names if n[1] == "/debug"]
     assert ("publish", "/changed", ("if (changed)",)) in names  # undecided
     assert ("publish", "/always", ("if (debug)",)) in names
+
+
+UNKNOWN_NAME_NODE = """
+#include <cstdlib>
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+class Zone : public rclcpp::Node
+{
+public:
+  Zone() : rclcpp::Node("zone")
+  {
+    visualize_ = declare_parameter(std::string(std::getenv("ZONE")) + ".visualize", false);
+    if (visualize_) {
+      pub_ = create_publisher<std_msgs::msg::String>("zone_markers", 1);
+    }
+  }
+  bool visualize_ = false;
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+};
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<Zone>());
+}
+"""
+
+
+def test_a_member_read_from_a_name_not_known_decides_nothing(write_tree) -> None:
+    """navigation2's exclusion zones read ``visualize_`` from ``zone_name_ +
+    ".visualize"``, a name not known here: the configuration may set the real one, so
+    ``if (visualize_)`` is not decided by the read's default (its publisher was dropped
+    as "false")."""
+    root = write_tree({
+        "src/ex/package.xml": package_xml("ex", "ament_cmake"),
+        "src/ex/CMakeLists.txt": "cmake_minimum_required(VERSION 3.8)\nproject(ex)\n"
+                                 "add_executable(zone src/node.cpp)\n",
+        "src/ex/src/node.cpp": UNKNOWN_NAME_NODE,
+        "src/ex/launch/ex.launch.py": LOCAL_LAUNCH.replace("'mpc'", "'zone'").replace(
+            "parameters=[{'vehicle_model_type': 'kinematics', 'changed': True}]", ""),
+        "project.yaml": "project: p\nconfigurations:\n  c: [ex/launch/ex.launch.py]\n"})
+    model = analyse(load(str(root / "project.yaml")), {"PATH": os.environ.get("PATH", "")},
+                    Options(cache_dir=None))
+    (config,) = model.configurations
+    assert [(link.rosname.full, [str(c) for c in link.conditions]) for link in config.links
+            if link.kind == "publish" and "markers" in link.rosname.full] == [
+        ("/zone_markers", ["if (visualize_)"])]

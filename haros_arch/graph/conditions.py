@@ -315,6 +315,9 @@ def _read_value(link: Link) -> object:
     call, param = link.call, link.resource
     if call is None or not isinstance(param, Parameter):
         return Unknown("not a parameter read")
+    if param.is_unresolved:
+        # a name not known (``zone_name_ + ".visualize"``): whatever sets the real one
+        return Unknown(f"the name {param.name} is not known")
     if param.set_by_launch:
         if param.launch_conditions or param.setters:
             return Unknown(f"{param.name} is set under a condition or by a node")
