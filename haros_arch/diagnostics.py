@@ -464,6 +464,14 @@ CATALOGUE: dict[str, Entry] = {
         "warning", "node type {node} is not in the workspace; its interface is unknown",
         "A launch file starts an executable that no workspace package builds; the "
         "instance is kept without publishers, subscribers or other links."),
+    "NODE_NOT_READ": Entry(
+        "warning", "node type {node} is {path}, a program this tool does not read (not a "
+                   "built target nor a Python program); its interface is unknown",
+        "A ROS 1 launch file starts an executable file of the package that is neither "
+        "built by its CMakeLists nor a Python program (a shell script, a prebuilt "
+        "binary): roslaunch finds it in the package's folder and runs it. The instance "
+        "is kept without links, of unknown interface; describe it with hints if it "
+        "matters."),
     "NODE_PACKAGE_UNKNOWN": Entry(
         "warning", "package {name} of node {node} is neither in the workspace nor "
                    "installed; its interface is unknown",
