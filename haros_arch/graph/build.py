@@ -150,6 +150,7 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
     _drop_base_copies(config, attached)
     for action, call, name in action_links(config):
         link(action.node, call, {}, resources, config, name)
+    config.launch_tree = launch.tree  # what decide_links asks of includes not read
     decide_links(config)  # source conditions this configuration decides
     _namespace_values(config)
     config.package_paths = package_paths(launch, workspace)
