@@ -559,6 +559,13 @@ NODE_PRESENCE = """
       }
       ros::Publisher shown;
       if (!ros::param::has("~quiet")) shown = nh.advertise<std_msgs::String>("shown", 1);
+      std::map<std::string, int> axes;
+      std::map<std::string, std::map<std::string, double>> turbo;
+      if (nh.getParam("axis", axes)) {
+        nh.getParam("turbo", turbo["x"]);
+      } else {
+        nh.param<double>("turbo", turbo["x"]["x"], 2.0);
+      }
       ros::spin();
     }
     """
@@ -570,8 +577,11 @@ def test_a_condition_testing_whether_a_parameter_is_there_is_decided(write_tree)
     } else { nh.param<double>(.., 1.0); }``. With linear_scale set nowhere, and nothing
     unseen that could set it, getParam is false: the reads without a default are not
     made (they were a false parameter-read-not-set); hasParam of a parameter the launch
-    sets is true (diff_drive_controller's wheel_radius_multiplier). A parameter that a
-    file not read may set (``$(arg f)``) leaves it undecided."""
+    sets is true (diff_drive_controller's wheel_radius_multiplier). getParam into a
+    ``std::map`` (a ``dict`` read) of a parameter set to a number is false, as roscpp
+    fills a map from a dictionary only (teleop_twist_joy.cpp:89-99 with jackal's
+    ``axis_angular: 0``: scale_angular_turbo is read with its default). A parameter that
+    a file not read may set (``$(arg f)``) leaves it undecided."""
     root = write_tree({
         "src/marker/package.xml": package_xml("marker"),
         "src/marker/CMakeLists.txt": "project(marker)\nadd_executable(marker src/m.cpp)\n",
@@ -580,6 +590,7 @@ def test_a_condition_testing_whether_a_parameter_is_there_is_decided(write_tree)
             <launch>
               <node pkg="marker" type="marker" name="marker">
                 <param name="radius_multiplier" value="1.0"/>
+                <param name="axis" value="1"/>
               </node>
             </launch>
             """,
@@ -602,11 +613,13 @@ def test_a_condition_testing_whether_a_parameter_is_there_is_decided(write_tree)
                       for link in config.links if link.kind == "read")
     plain = model.configuration("plain")
     assert reads(plain) == [
+        ("/marker/axis", 26, False),
         ("/marker/linear_scale", 12, False),  # the test itself
         ("/marker/max_velocity", 15, False),  # else: no condition left
         ("/marker/quiet", 23, False),
         ("/marker/radius_multiplier", 17, False),
-        ("/marker/radius_multiplier", 18, False)]
+        ("/marker/radius_multiplier", 18, False),
+        ("/marker/turbo", 29, False)]  # else: the read with a default
     assert _publishers(plain, "/marker") == {"shown": []}
     said = [d.message for d in plain.diagnostics if d.code == "CONDITION_FALSE"]
     assert any("no read /marker/max_velocity" in m and "getParam" in m for m in said)
@@ -615,4 +628,8 @@ def test_a_condition_testing_whether_a_parameter_is_there_is_decided(write_tree)
     assert findings == []
     unseen = model.configuration("unseen")
     assert ("/marker/max_velocity", 13, True) in reads(unseen)
+    assert ("/marker/turbo", 27, True) in reads(unseen)
+    types = {(link.rosname.full, link.location.line): link.call.type for link in plain.links
+             if link.kind == "read"}
+    assert types[("/marker/axis", 26)] == "dict"
     assert _publishers(unseen, "/marker") == {"shown": ['!ros::param::has("~quiet")']}

@@ -429,6 +429,15 @@ def _present(config: Configuration, link: Link, kind: str, made: dict[str, Any])
             return unknown
         if kind == "has":
             return True
+        ctype = link.call.type or ""
+        if param.set_by_launch and not [p for p in set_here if p is not param] and (
+            param.value is not None and not is_unknown(param.value)
+        ) and ((ctype == "dict" and not isinstance(param.value, dict)) or (
+            ctype.endswith("[]") and not isinstance(param.value, list))):
+            # roscpp's getParam fills a std::map from a dictionary only, a std::vector
+            # from a list only (teleop_twist_joy's ``getParam("axis_linear", map)`` of
+            # ``axis_linear: 1``)
+            return False
         typed = _typed(param.value, link.call.type) if param.set_by_launch else unknown
         return unknown if is_unknown(typed) else True
     # nothing seen sets it: nothing unseen may either (a node of partial or unknown
