@@ -6,6 +6,8 @@ subscription were all named ``/my_gen3``, the parameter's value alone."""
 
 from __future__ import annotations
 
+import pytest
+
 from haros_arch.extract.cpp import extract_cpp
 from haros_arch.graph import build
 from haros_arch.launch.model import LaunchModel, NodeDecl, ParamDecl
@@ -225,3 +227,279 @@ def test_declare_parameters_of_a_local_map_declares_its_keys(write_tree) -> None
     assert [(c.kind, c.name, c.has_default) for c in result.calls] == [
         ("declare", "axis_linear.x", True), ("declare", "axis_linear.y", True),
         ("read", "axis_linear.?", False), ("declare", "changed.?", True)]
+
+
+ELEMENT_PART_NODE = """
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+class Monitor : public rclcpp::Node
+{
+public:
+  Monitor() : rclcpp::Node("monitor")
+  {
+    std::vector<std::string> polygon_names =
+      declare_parameter<std::vector<std::string>>("polygons", std::vector<std::string>());
+    for (std::string polygon_name : polygon_names) {
+      const std::string type = declare_parameter<std::string>(polygon_name + ".type", "");
+      subs_.push_back(create_subscription<std_msgs::msg::String>(
+        "/" + polygon_name + "/points", 10, &Monitor::cb));
+    }
+  }
+  static void cb(const std_msgs::msg::String::SharedPtr) {}
+  std::vector<rclcpp::Subscription<std_msgs::msg::String>::SharedPtr> subs_;
+};
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<Monitor>());
+}
+"""
+
+# the list read through a wrapper of declare_parameter, as navigation2's LifecycleNode
+# gives (``node->declare_or_get_parameter<std::vector<std::string>>("polygons")``)
+WRAPPED_ELEMENT_NODE = """
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+class Base : public rclcpp::Node
+{
+public:
+  Base() : rclcpp::Node("monitor") {}
+  template<class T>
+  T declare_or_get(const std::string & name, const T & value = T())
+  {
+    if (!has_parameter(name)) {
+      return declare_parameter<T>(name, value);
+    }
+    return get_parameter(name).get_value<T>();
+  }
+};
+class Monitor : public Base
+{
+public:
+  Monitor()
+  {
+    std::vector<std::string> polygon_names =
+      declare_or_get<std::vector<std::string>>("polygons");
+    for (std::string polygon_name : polygon_names) {
+      const std::string type = declare_or_get<std::string>(polygon_name + ".type");
+      subs_.push_back(create_subscription<std_msgs::msg::String>(
+        "/" + polygon_name + "/points", 10, &Monitor::cb));
+    }
+  }
+  static void cb(const std_msgs::msg::String::SharedPtr) {}
+  std::vector<rclcpp::Subscription<std_msgs::msg::String>::SharedPtr> subs_;
+};
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<Monitor>());
+}
+"""
+
+# a loop counting over the list, its ids kept in a member of a member, as navigation2's
+# controller server does (``params_.controller_ids[i]``, parameter_handler.cpp:130-132)
+COUNTED_ELEMENT_NODE = """
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+struct Params { std::vector<std::string> ids; };
+class Monitor : public rclcpp::Node
+{
+public:
+  Monitor() : rclcpp::Node("monitor")
+  {
+    params_.ids = declare_parameter<std::vector<std::string>>(
+      "polygons", std::vector<std::string>());
+    for (size_t i = 0; i != params_.ids.size(); i++) {
+      const std::string type = declare_parameter<std::string>(params_.ids[i] + ".type", "");
+      subs_.push_back(create_subscription<std_msgs::msg::String>(
+        "/" + params_.ids[i] + "/points", 10, &Monitor::cb));
+    }
+    for (size_t i = 1; i < params_.ids.size(); i++) {  // not each element
+      declare_parameter<int>(params_.ids[i] + ".other", 0);
+    }
+  }
+  static void cb(const std_msgs::msg::String::SharedPtr) {}
+  Params params_;
+  std::vector<rclcpp::Subscription<std_msgs::msg::String>::SharedPtr> subs_;
+};
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<Monitor>());
+}
+"""
+
+ELEMENT_PART_LAUNCH = """
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package='ex', executable='monitor', name='collision_monitor',
+             parameters=[{'polygons': ['FootprintApproach', 'Stop'],
+                          'FootprintApproach.type': 'polygon', 'Stop.type': 'circle',
+                          'Slow.type': 'circle'}]),
+    ])
+"""
+
+
+@pytest.mark.parametrize("code", [ELEMENT_PART_NODE, WRAPPED_ELEMENT_NODE,
+                                  COUNTED_ELEMENT_NODE])
+def test_a_name_made_of_each_element_of_a_list_parameter(write_tree, code: str) -> None:
+    """``for (std::string polygon_name : polygon_names)`` over a list parameter, reading
+    ``polygon_name + ".type"`` (navigation2's collision monitor,
+    collision_monitor_node.cpp:307-312): one read per element the configuration gives,
+    the element in the place of the ``?`` (was ``~/?.type``, so every polygon's settings
+    were set and never read by name); the text around the element stays."""
+    import os
+
+    from haros_arch.pipeline import Options, analyse
+    from haros_arch.project import load
+    from haros_arch.query.catalogue import run_catalogue
+
+    root = write_tree({
+        "src/ex/package.xml": package_xml("ex", "ament_cmake"),
+        "src/ex/CMakeLists.txt": "cmake_minimum_required(VERSION 3.8)\nproject(ex)\n"
+                                 "add_executable(monitor src/node.cpp)\n",
+        "src/ex/src/node.cpp": code,
+        "src/ex/launch/ex.launch.py": ELEMENT_PART_LAUNCH,
+        "project.yaml": "project: p\nconfigurations:\n  c: [ex/launch/ex.launch.py]\n"})
+    result = extract_cpp([str(root / "src/ex/src/node.cpp")], scan([str(root / "src")]),
+                         cache_dir=None)
+    made = {(c.kind, c.name, c.name_param, c.name_each) for c in result.calls
+            if c.kind in ("subscribe", "declare", "read") and c.name != "polygons"
+            and c.location.line > (20 if code is WRAPPED_ELEMENT_NODE else 0)
+            and "other" not in c.name}
+    # (the wrapper's own declare_parameter<T> depends on T: kept where it is written)
+    assert made == {("read" if code is WRAPPED_ELEMENT_NODE else "declare", "?.type",
+                     "polygons", "."), ("subscribe", "/?/points", "polygons", ".")}
+    model = analyse(load(str(root / "project.yaml")), {"PATH": os.environ.get("PATH", "")},
+                    Options(cache_dir=None))
+    config = model.configuration("c")
+    assert sorted(link.rosname.full for link in config.links if link.kind == "subscribe"
+                  ) == ["/FootprintApproach/points", "/Stop/points"]
+    read = {link.rosname.full for link in config.links if link.kind == "read"}
+    assert {"/collision_monitor/FootprintApproach.type", "/collision_monitor/Stop.type",
+            "/collision_monitor/polygons"} <= read
+    if code is WRAPPED_ELEMENT_NODE:
+        return  # its dependent declaration keeps a '?': "set, not read" is undecided
+    if code is COUNTED_ELEMENT_NODE:
+        assert [c.name_param for c in result.calls if "other" in c.name] == [None]
+        return
+    assert len(read) == 3
+    # the one set for no polygon of the list is set and never read
+    unread = [f.message for f in run_catalogue(model) if f.rule == "parameter-set-not-read"]
+    assert [m for m in unread if m.startswith("/collision_monitor/Slow.type ")]
+    assert not [m for m in unread if m.startswith(("/collision_monitor/Stop.type ",
+                                                   "/collision_monitor/FootprintApproach"))]
+
+
+POLYGON_H = """
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+class Polygon
+{
+public:
+  Polygon(rclcpp::Node * node, const std::string & polygon_name);
+  void configure();
+protected:
+  rclcpp::Node * node_;
+  std::string polygon_name_;
+  rclcpp::Subscription<std_msgs::msg::String>::SharedPtr sub_;
+};
+"""
+
+POLYGON_CPP = """
+#include "ex/polygon.hpp"
+#include "ex/zone.hpp"
+Polygon::Polygon(rclcpp::Node * node, const std::string & polygon_name)
+: node_(node), polygon_name_(polygon_name) {}
+void Polygon::configure()
+{
+  node_->declare_parameter<bool>(polygon_name_ + ".enabled", true);
+  sub_ = node_->create_subscription<std_msgs::msg::String>(
+    polygon_name_ + "/points", 10, [](const std_msgs::msg::String::SharedPtr) {});
+  // a list named after what another file passes: its elements are not known here
+  std::vector<std::string> zones = node_->declare_parameter<std::vector<std::string>>(
+    polygon_name_ + ".zones", std::vector<std::string>());
+  for (std::string zone : zones) {
+    Zone(node_, zone);
+  }
+}
+"""
+
+ZONE_H = """
+#include <rclcpp/rclcpp.hpp>
+class Zone
+{
+public:
+  Zone(rclcpp::Node * node, const std::string & zone_name);
+};
+"""
+
+ZONE_CPP = """
+#include "ex/zone.hpp"
+Zone::Zone(rclcpp::Node * node, const std::string & zone_name)
+{
+  node->declare_parameter<bool>(zone_name + ".visible", true);
+}
+"""
+
+MONITOR_CPP = """
+#include <memory>
+#include "ex/polygon.hpp"
+class Monitor : public rclcpp::Node
+{
+public:
+  Monitor() : rclcpp::Node("monitor")
+  {
+    std::vector<std::string> names =
+      declare_parameter<std::vector<std::string>>("polygons", std::vector<std::string>());
+    for (std::string polygon_name : names) {
+      polygons_.push_back(std::make_shared<Polygon>(this, polygon_name));
+      polygons_.back()->configure();
+    }
+    std::string single = declare_parameter<std::string>("single", "one");
+    polygons_.push_back(std::make_shared<Polygon>(this, "/" + single));
+  }
+  std::vector<std::shared_ptr<Polygon>> polygons_;
+};
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<Monitor>());
+}
+"""
+
+
+def test_a_list_parameter_element_given_to_a_class_of_another_file(write_tree) -> None:
+    """navigation2's collision monitor makes a ``Polygon`` per name of its ``polygons``
+    list (collision_monitor_node.cpp:309-317), and the polygon, in polygon.cpp, reads
+    ``polygon_name_ + ".enabled"`` and the rest: across the files of the node the call
+    is named by each element of the list (``name_each``), and by the parameter a name
+    given once holds (``name_param``)."""
+    from haros_arch.extract.cpp import extract_cpp_nodes
+
+    root = write_tree({"ex/package.xml": package_xml("ex", "ament_cmake"),
+                       "ex/include/ex/polygon.hpp": POLYGON_H,
+                       "ex/include/ex/zone.hpp": ZONE_H,
+                       "ex/src/zone.cpp": ZONE_CPP,
+                       "ex/src/polygon.cpp": POLYGON_CPP,
+                       "ex/src/monitor.cpp": MONITOR_CPP})
+    src = root / "ex" / "src"
+    batch = extract_cpp_nodes([[str(src / "monitor.cpp"), str(src / "polygon.cpp"),
+                                str(src / "zone.cpp")]],
+                              scan([str(root)]), cache_dir=None, jobs=1)
+    made = sorted((c.kind, c.name, c.name_param, c.name_each)
+                  for c in batch.results[0].calls
+                  if c.location.file.endswith("polygon.cpp"))
+    assert made == [("declare", "/?.enabled", "single", None),
+                    ("declare", "/?.zones", "single", None),
+                    ("declare", "?.enabled", "polygons", "."),
+                    ("declare", "?.zones", "polygons", "."),
+                    ("subscribe", "/?/points", "single", None),
+                    ("subscribe", "?/points", "polygons", ".")]
+    zones = [(c.kind, c.name, c.name_param) for c in batch.results[0].calls
+             if c.location.file.endswith("zone.cpp")]
+    assert zones == [("declare", "?.visible", None)]

@@ -421,3 +421,23 @@ def test_a_wrapper_method_called_on_a_dependent_object(tmp_path) -> None:
                   if c.location.file and c.location.file.endswith("heading.cpp")) == [
         ("declare", "?.speed", "double"), ("declare", "limit", "double"),
         ("read", "?.speed", None), ("read", "limit", None)]
+
+
+def test_a_spec_deduced_from_the_type_of_the_member_given(ws: Workspace) -> None:
+    """Autoware universe 0.43's adaptor: ``adaptor.init_pub(pub_)`` with ``pub_`` a
+    ``Publisher<Spec>::SharedPtr``, and inside ``using SpecT = typename
+    SharedPtrT::element_type::SpecType; pub = create_publisher_impl<SpecT>(node_)``: the
+    spec is the member's type's (its 21 default API nodes had a publisher and a server
+    named '?' in the adaptor's header each, whether they made one or not, and none of
+    their own interfaces). Also through a service class template's constructor, where
+    clang keeps ``SpecT::name`` as a member reference, and through a second wrapper that
+    passes its own parameter on (``init_twice(other_)``)."""
+    node = "src/adapi/src/deduced_node.cpp"
+    result = extract_cpp([str(FIXTURE / node)], ws, cache_dir=None)
+    assert [(c.kind, c.name, c.type, c.location.file, c.location.line)
+            for c in result.calls] == [
+        ("publish", "/api/state", "std_msgs/msg/String", node, 8),
+        ("server", "/api/reset", "std_srvs/srv/Trigger", node, 9),
+        ("publish", "/api/other", "std_msgs/msg/String", node, 11),
+    ]
+    assert not [d for d in result.diagnostics if d.code == "CPP_DYNAMIC_NAME"]

@@ -643,8 +643,10 @@ def element_calls(call: PrimitiveCall, instance: NodeInstance, resources: Resour
         return [call]
     # the loop over the list that the extractor saw is what these calls stand for
     kept = tuple(c for c in call.conditions if c.statement != EACH_STATEMENT)
-    return [replace(call, name=name, name_param=None, name_default=None, name_each=None,
-                    conditions=kept) for name in names]
+    # the element is the whole name, or its one unknown run (``polygon_name + ".type"``)
+    written = call.name if call.name.count(UNKNOWN_MARK) == 1 else UNKNOWN_MARK
+    return [replace(call, name=written.replace(UNKNOWN_MARK, name, 1), name_param=None,
+                    name_default=None, name_each=None, conditions=kept) for name in names]
 
 
 def _name_param_unset(instance: NodeInstance, call: PrimitiveCall) -> Diagnostic:

@@ -13,6 +13,21 @@ WRAPPERS = frozenset({
     CursorKind.CXX_CONST_CAST_EXPR,
 })
 _REFS = frozenset({CursorKind.TYPE_REF, CursorKind.NAMESPACE_REF, CursorKind.TEMPLATE_REF})
+# the declarations a qualified name is made of
+_SCOPES = frozenset({
+    CursorKind.NAMESPACE, CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL,
+    CursorKind.CLASS_TEMPLATE, CursorKind.CLASS_TEMPLATE_PARTIAL_SPECIALIZATION,
+})
+
+
+def qualified_name(cursor: Cursor | None) -> str:
+    """``ros::NodeHandle`` for the NodeHandle class declaration, and so on."""
+    parts: list[str] = []
+    while cursor is not None and cursor.kind in _SCOPES:
+        if cursor.spelling:
+            parts.append(cursor.spelling)
+        cursor = cursor.semantic_parent
+    return "::".join(reversed(parts))
 
 
 def is_default_argument(cursor: Cursor) -> bool:

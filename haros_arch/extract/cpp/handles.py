@@ -15,6 +15,7 @@ from clang.cindex import Cursor, CursorKind, TypeKind
 
 from . import api
 from .call_sites import CallSites, member_initialiser, uses_parameter, value_text
+from .expressions import qualified_name
 from .members import MemberWrites
 from .values import (
     PLACEHOLDER,
@@ -33,10 +34,6 @@ from .writes import writes_of
 MAX_DEPTH = 16
 # a declaration's initialiser that starts with a string literal and a ``+``
 _PREFIX_PLUS = re.compile(rb'\s*[({]\s*("(?:[^"\\\n]|\\.)*")\s*\+')
-_SCOPES = frozenset({
-    CursorKind.NAMESPACE, CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL,
-    CursorKind.CLASS_TEMPLATE, CursorKind.CLASS_TEMPLATE_PARTIAL_SPECIALIZATION,
-})
 _FUNCTIONS = frozenset({
     CursorKind.FUNCTION_DECL, CursorKind.CXX_METHOD, CursorKind.CONSTRUCTOR,
     CursorKind.DESTRUCTOR, CursorKind.FUNCTION_TEMPLATE, CursorKind.CONVERSION_FUNCTION,
@@ -44,16 +41,6 @@ _FUNCTIONS = frozenset({
 _POINTERS = ("shared_ptr", "unique_ptr", "weak_ptr")
 _POINTER_READS = ("operator->", "operator*", "get")  # a smart pointer's handle
 _UNSURE = (None, None)  # a member whose writes differ (``Namespaces._assigned``)
-
-
-def qualified_name(cursor: Cursor | None) -> str:
-    """``ros::NodeHandle`` for the NodeHandle class declaration, and so on."""
-    parts: list[str] = []
-    while cursor is not None and cursor.kind in _SCOPES:
-        if cursor.spelling:
-            parts.append(cursor.spelling)
-        cursor = cursor.semantic_parent
-    return "::".join(reversed(parts))
 
 
 def join_name(namespace: str, name: str) -> str:

@@ -50,9 +50,11 @@ _SPLIT = "\x02"
 
 
 def argument_facts(sites: CallSites, namespaces: Namespaces,
-                   owned: Callable[[str], bool]) -> list[Fact]:
+                   owned: Callable[[str], bool],
+                   named: Callable[[Cursor, Scope], str | None] | None = None) -> list[Fact]:
     """What this file passes, as handles' namespaces or strings, to the workspace
-    functions it calls but does not define."""
+    functions it calls but does not define; ``named`` gives a string that is (or holds)
+    a parameter's value with that parameter marked (``parameter_mark``)."""
     facts: list[Fact] = []
     done: set[tuple[str, int]] = set()
     for _round in range(MAX_DEPTH):  # reading a value may give another function a mark
@@ -72,7 +74,7 @@ def argument_facts(sites: CallSites, namespaces: Namespaces,
             given = len(facts)
             for index, parm in enumerate(params):
                 arg = argument(call, parm, index)
-                value = _value(arg, scope, namespaces) if arg is not None else None
+                value = _value(arg, scope, namespaces, named) if arg is not None else None
                 if value is not None:
                     facts.append((usr, index, value, site))
             if len(facts) == given:  # called, with nothing read: called all the same
@@ -93,12 +95,46 @@ def argument_facts(sites: CallSites, namespaces: Namespaces,
     return list(dict.fromkeys(facts))
 
 
-def _value(arg: Cursor, scope: Scope, namespaces: Namespaces) -> str | None:
+def _value(arg: Cursor, scope: Scope, namespaces: Namespaces,
+           named: Callable[[Cursor, Scope], str | None] | None) -> str | None:
     if is_handle(arg):
         return render(namespaces.of(arg, scope))
     if msg_types.param_type(arg.type) == "str":
-        return render(scope.string(arg))
+        marked = named(arg, scope) if named is not None else None
+        return marked if marked is not None else render(scope.string(arg))
     return None
+
+
+# A string passed to another file's function whose one unknown run is a parameter's value
+# (or each element of a list parameter in turn) holds, in the place of its ``?``,
+# PARAMETER, the parameter's name, PARAMETER, the element's field (``name_each``, or
+# nothing), PARAMETER: the call named by it there takes the parameter as its
+# ``name_param`` (navigation2's collision monitor passes each name of its ``polygons``
+# list to a ``Polygon`` made in another file, which reads ``polygon_name_ + ".enabled"``)
+PARAMETER = "\x03"
+_PARAMETER = re.compile(f"{PARAMETER}([^{PARAMETER}]*){PARAMETER}([^{PARAMETER}]*){PARAMETER}")
+
+
+def parameter_mark(name: str, param: str, each: str | None) -> str:
+    """``name`` (one ``?``) with the parameter it is named by in the place of its ``?``."""
+    return name.replace("?", f"{PARAMETER}{param}{PARAMETER}{each or ''}{PARAMETER}", 1)
+
+
+def _unmarked(text: str) -> str:
+    return _PARAMETER.sub("?", text)
+
+
+def _named_by(call: PrimitiveCall) -> PrimitiveCall:
+    """``call`` with the parameter marks of its name taken out: its ``name_param`` when
+    the name holds one mark and no other unknown run."""
+    if PARAMETER not in call.name:
+        return call
+    marks = _PARAMETER.findall(call.name)
+    name = _unmarked(call.name)
+    if len(marks) != 1 or name.count("?") != 1 or call.name_param is not None:
+        return dataclasses.replace(call, name=name)
+    param, each = marks[0]
+    return dataclasses.replace(call, name=name, name_param=param, name_each=each or None)
 
 
 # ``made_in`` of one alternative of a call whose member the class's constructors give
@@ -171,13 +207,15 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact],
             call.camera_of.startswith(prefix)) else None
         for filled in _expand(text, passed, 0):
             ns, _, name = filled.partition(_SPLIT)
-            ns = normalise(ns) if ns else ""
+            ns = normalise(_unmarked(ns)) if ns else ""
             made = dataclasses.replace(
                 call, name=join_name(ns, name) if ns else name,
                 handle_namespace=ns if ns and not name.startswith(("/", "~")) else None,
                 camera_of=call.camera_of if call.camera_of is None or (
                     PLACEHOLDER not in call.camera_of) else (
-                    join_name(ns, camera) if camera and PLACEHOLDER not in camera else None))
+                    join_name(ns, _unmarked(camera)) if camera and PLACEHOLDER not in camera
+                    else None))
+            made = _named_by(made)
             out.append(made)
             if "?" in made.name:
                 found.append(diag.make("CPP_DYNAMIC_NAME", made.location, kind=made.kind,
@@ -191,7 +229,7 @@ def resolve_name(name: str, facts: Iterable[Fact]) -> str:
     if PLACEHOLDER not in name:
         return name
     found = _expand(name, _passed(facts), 0)
-    return found[0] if len(found) == 1 and PLACEHOLDER not in found[0] else (
+    return _unmarked(found[0]) if len(found) == 1 and PLACEHOLDER not in found[0] else (
         _MARK.sub("?", name))
 
 

@@ -14,12 +14,19 @@ from __future__ import annotations
 
 import re
 from collections.abc import Iterator
-from typing import TYPE_CHECKING, TypeVar
+from typing import TYPE_CHECKING, Any, TypeVar
 
 from clang.cindex import Cursor, CursorKind, TypeKind
 
 from .cursors import _Place
-from .expressions import binary_operator, initializer, operand, strip, written_arguments
+from .expressions import (
+    binary_operator,
+    initializer,
+    operand,
+    qualified_name,
+    strip,
+    written_arguments,
+)
 from .writes import Write, const_array, writes_of
 
 if TYPE_CHECKING:
@@ -34,6 +41,34 @@ SEPARATOR = "\x01"
 Value = TypeVar("Value")
 UNKNOWN: Parts = (None,)
 MAX_DEPTH = 24
+
+
+class NodeName(str):
+    """The part rclcpp's ``get_name()`` gives: the node's own name, unknown to ``render``;
+    in a call's name ``own_name`` makes it ``~`` where a ``/`` or nothing follows it
+    (``get_name() + std::string("/manage_nodes")`` is a private name; ``node_name_ +
+    ".verbose"`` one that starts with the node's name, not known; a node's namespace
+    ``uas->get_fully_qualified_name()`` is another node's name)."""
+
+
+NODE_NAME = NodeName("~")
+
+
+def own_name(parts: Parts) -> Parts:
+    """``parts`` with the node's own name unknown where it is not the node's private
+    namespace: anywhere but first, or followed by text that does not start with ``/``."""
+    if not any(isinstance(part, NodeName) for part in parts):
+        return parts
+    found: list[str | None] = []
+    for index, part in enumerate(parts):
+        if isinstance(part, NodeName):
+            after = next((p for p in parts[index + 1:] if p != ""), "")
+            first = not any(p != "" for p in parts[:index])
+            private = first and (after == "" or (after is not None and after.startswith("/")))
+            found.append("~" if private else None)
+        else:
+            found.append(part)
+    return tuple(found)
 
 # rclcpp's node interfaces resolve a name: expanded in the node's namespace and remapped
 # (unless ``only_expand``). The graph does both when it links a call, so the value is the
@@ -65,7 +100,7 @@ def render(parts: Parts) -> str:
     """The name with ``?`` for each unknown run of parts."""
     text: list[str] = []
     for part in parts:
-        if part is None:
+        if part is None or isinstance(part, NodeName):
             if not text or text[-1] != "?":
                 text.append("?")
         else:
@@ -105,7 +140,9 @@ class Scope:
         self._writes: dict[tuple[str, int], list[Cursor | None]] | None = None
         self._passed: dict[tuple[str, int], tuple[Cursor, int]] = {}
         # member -> (offset, expression) of each ``member_ = value`` of this body
-        self._members: dict[tuple[str, int], list[tuple[int, Cursor]]] = {}
+        # member (or chain of members from this object: ``_named``) -> (offset, value)
+        # of each assignment in this body
+        self._members: dict[Any, list[tuple[int, Cursor]]] = {}
         # (start, end) offsets of the parts of this body that may not run, or run later:
         # branches, loop bodies, cases, handlers, lambdas
         self._regions: list[tuple[int, int]] = []
@@ -170,6 +207,11 @@ class Scope:
         elif value is not None and is_own_member(target):
             self._members.setdefault(key_of(target.referenced), []).append(
                 (write.at.extent.start.offset, value))
+        elif value is not None and target.kind == CursorKind.MEMBER_REF_EXPR and (
+            (chain := _named(target)) is not None and len(chain) > 1
+        ):  # a member of a member of this object (``params_.controller_ids = ...``)
+            self._members.setdefault(chain, []).append(
+                (write.at.extent.start.offset, value))
 
     def assigned(self, decl: Cursor, at: Cursor) -> Cursor | None:
         """What this body last assigned to member ``decl`` before ``at`` (``topic_ =
@@ -177,7 +219,9 @@ class Scope:
         OdometryHelperRos::setOdomTopic), when every assignment of it here is written
         before ``at``: the value the read sees when the body runs straight on."""
         _ = self.writes  # read from the body together
-        found = self._members.get(key_of(decl))
+        chain = _named(at) if at.kind == CursorKind.MEMBER_REF_EXPR else None
+        found = self._members.get(chain if chain is not None and len(chain) > 1
+                                  else key_of(decl))
         if not found:
             return None
         where = at.extent.start.offset
@@ -206,6 +250,47 @@ class Scope:
                 key_of(children[0]) == key
             ):
                 return node
+        return None
+
+    def counted_loop(self, index: Cursor, container: Cursor) -> Cursor | None:
+        """The ``for`` of this body that counts ``index`` (a variable it declares) from
+        its start up to ``container.size()`` (``for (size_t i = 0; i != ids.size(); i++)``),
+        when ``container`` names the variable or member that condition names: then
+        ``container[index]`` is each element in turn."""
+        if self.body is None or index.kind != CursorKind.VAR_DECL:
+            return None
+        key, named = key_of(index), _named(container)
+        if named is None:
+            return None
+        for node in _walk(self.body):
+            if node.kind != CursorKind.FOR_STMT:
+                continue
+            children = list(node.get_children())
+            if len(children) < 4 or children[0].kind != CursorKind.DECL_STMT:
+                continue
+            declared = [c for c in children[0].get_children() if c.kind == CursorKind.VAR_DECL]
+            if len(declared) != 1 or key_of(declared[0]) != key:
+                continue
+            start = initializer(declared[0])
+            if start is None or strip(start).kind != CursorKind.INTEGER_LITERAL or [
+                t.spelling for t in strip(start).get_tokens()] != ["0"]:
+                return None
+            test = children[1]
+            sides = [c for c in test.get_children() if c.kind.is_expression()]
+            if test.kind != CursorKind.BINARY_OPERATOR or len(sides) != 2 or (
+                binary_operator(test, sides) not in ("<", "!=")
+            ):
+                return None
+            counter, bound = strip(sides[0]), strip(sides[1])
+            size = list(bound.get_children())
+            if counter.kind != CursorKind.DECL_REF_EXPR or counter.referenced is None or (
+                key_of(counter.referenced) != key or bound.kind != CursorKind.CALL_EXPR
+                or bound.spelling != "size" or not size
+                or size[0].kind != CursorKind.MEMBER_REF_EXPR
+            ):
+                return None
+            objects = [c for c in size[0].get_children() if c.kind.is_expression()]
+            return node if objects and _named(objects[0]) == named else None
         return None
 
     def method_calls(self, decl: Cursor, at: Cursor) -> list[tuple[Cursor, bool]]:
@@ -320,9 +405,14 @@ class Scope:
         if target is None:  # an implicit conversion wrapping the real expression
             inner = operand(call)
             return self.string(inner, depth + 1) if inner is not None else UNKNOWN
-        if target.spelling == "getName" and not args and target.semantic_parent is not None \
+        if not args and target.spelling == "getName" and target.semantic_parent is not None \
                 and target.semantic_parent.spelling == "this_node":
             return ("~",)  # ros::this_node::getName(): the node's own (private) name
+        if not args and _names_node(target):
+            # an rclcpp node's get_name() (or its base interface's): the node's own name
+            # (``get_name() + std::string("/manage_nodes")`` is ``<namespace>/<node>/
+            # manage_nodes``, ``~/manage_nodes``: ``own_name``)
+            return (NODE_NAME,)
         if args and (_resolver(target) is not None or _names_resolve(target)):
             return self.string(args[0], depth + 1)
         if (target.spelling == "getCameraInfoTopic" and len(args) == 1
@@ -491,6 +581,23 @@ def key_of(decl: Cursor) -> tuple[str, int]:
     return (where.file.name if where.file else "", where.offset)
 
 
+def _named(expr: Cursor) -> tuple[tuple[str, int], ...] | None:
+    """The variable or member chain an expression names (``params_.controller_ids``:
+    the two declarations' places), None for any other expression."""
+    found: list[tuple[str, int]] = []
+    expr = strip(expr)
+    while expr.kind in (CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR):
+        decl = expr.referenced
+        if decl is None:
+            return None
+        found.append(key_of(decl))
+        inner = [c for c in expr.get_children() if c.kind.is_expression()]
+        if expr.kind == CursorKind.DECL_REF_EXPR or not inner:
+            return tuple(found)  # a variable, or a member of ``this``
+        expr = strip(inner[0])
+    return tuple(found) if found and expr.kind == CursorKind.CXX_THIS_EXPR else None
+
+
 def _walk(cursor: Cursor) -> Iterator[Cursor]:
     stack = [cursor]
     while stack:
@@ -513,3 +620,21 @@ def literal(spelling: str) -> str | None:
             out.append(char)
             i += 1
     return "".join(out)
+
+
+# rclcpp's functions that give the node's own name (``get_name`` without its namespace,
+# ``get_fully_qualified_name`` with), by the class that declares them
+_NODE_NAMES = {
+    "get_name": frozenset({"rclcpp::Node", "rclcpp_lifecycle::LifecycleNode",
+                           "rclcpp::node_interfaces::NodeBaseInterface"}),
+    "get_fully_qualified_name": frozenset({
+        "rclcpp::Node", "rclcpp_lifecycle::LifecycleNode",
+        "rclcpp::node_interfaces::NodeBaseInterface"}),
+}
+
+
+def _names_node(target: Cursor) -> bool:
+    """Whether calling ``target`` gives the name of the node the code runs as."""
+    owners = _NODE_NAMES.get(target.spelling)
+    return owners is not None and target.semantic_parent is not None and (
+        qualified_name(target.semantic_parent) in owners)

@@ -24,7 +24,6 @@ from ...diagnostics import Diagnostic
 from ...model.conditions import EACH_STATEMENT, Condition
 from ...model.location import Location
 from ...model.source import PrimitiveCall
-from ...model.values import UNKNOWN_MARK
 from . import api, msg_types, parameter_library, reconfigure, synthesis
 from .call_sites import CallSites
 from .call_types import CallTypes, factory_made, row_class
@@ -42,7 +41,7 @@ from .handles import (
     qualified_name,
     record_class,
 )
-from .links import Fact, argument_facts, constructed_by
+from .links import PARAMETER, Fact, argument_facts, constructed_by, parameter_mark
 from .members import MemberWrites, member_of
 from .owners import (
     constructed_class,
@@ -59,9 +58,11 @@ from .tested import key as key_of
 from .values import (
     PLACEHOLDER,
     SEPARATOR,
+    NodeName,
     Scope,
     initializer,
     literal,
+    own_name,
     render,
     strip,
     written_arguments,
@@ -219,7 +220,7 @@ class CallFinder:
                 for read in reads:
                     read.variable = member.spelling
                     read.also = also or None
-        self.facts = argument_facts(self.sites, self.namespaces, self.owned)
+        self.facts = argument_facts(self.sites, self.namespaces, self.owned, self._marked)
         for call in self.calls:  # get_parameter("p") of a declare_parameter("p", default)
             if call.name_param is not None and call.name_default is None and (
                 call.name_param in self._declared
@@ -1024,29 +1025,43 @@ class CallFinder:
         ):
             values = written_arguments(inner)
             return (render(scope.string(values[0])) if values else "?", None)
-        parts = scope.string(expr)
+        parts = own_name(scope.string(expr))
         name = render(parts)
-        loop = inner.referenced if inner.kind == CursorKind.DECL_REF_EXPR else None
-        walk = scope.range_of(loop) if loop is not None and name == UNKNOWN_MARK else None
-        if walk is not None:
+        if None not in parts or name.count("?") != 1:
+            return (name, None)
+        # the one unknown part: the whole name, or a run of it that the text around keeps
+        # (``"/" + robot_name + "/base_feedback"``; a wrapper's ``before`` and ``after``)
+        unknown = [inner] if inner.kind == CursorKind.DECL_REF_EXPR or _subscript(
+            inner) is not None else _unknown_operands(expr, scope)
+        one = strip(unknown[0]) if len(unknown) == 1 else None
+        walk, over = _element_loop(one, scope) if one is not None else (None, None)
+        if walk is not None and over is not None:
             # ``for (std::string topic : topics_) create_subscription(topic, ..)`` over a
-            # list parameter (create3_sim's hazards_vector_publisher): one call per
-            # element of the value the configuration gives it (graph.element_calls)
-            over = list(walk.get_children())[1]
+            # list parameter (create3_sim's hazards_vector_publisher), or a name made of
+            # the element (``polygon_name + ".type"``, navigation2's collision monitor;
+            # ``ids[i] + ".plugin"`` in a loop counting ``i`` up to ``ids.size()``, its
+            # controller server): one call per element of the value the configuration
+            # gives it, in the place of the ``?`` (graph.element_calls)
             listed = self._parameter_source(over, scope, 0)
             at = (walk.location.line, walk.location.column)
             return (name, (listed[0], None, None, EACH, at) if listed is not None else None)
-        if None in parts and name.count("?") == 1:
-            # the one unknown part: the whole name, or a run of it that the text around
-            # keeps (``"/" + robot_name + "/base_feedback"``; a wrapper's ``before`` and
-            # ``after``); the graph puts the parameter's value in its place
-            source = self._parameter_source(expr, scope, 0)
-            unknown = _unknown_operands(expr, scope) if source is None else []
-            if len(unknown) == 1:
-                source = self._parameter_source(unknown[0], scope, 0)
-            if source is not None:
-                return (name, (*source, None, None))
-        return (name, None)
+        # a parameter's value: the graph puts it in the place of the ``?``
+        source = self._parameter_source(expr, scope, 0)
+        if source is None and len(unknown) == 1 and unknown[0] is not inner:
+            source = self._parameter_source(unknown[0], scope, 0)
+        return (name, None if source is None else (*source, None, None))
+
+    def _marked(self, expr: Cursor, scope: Scope) -> str | None:
+        """A string passed to another file's function whose one unknown run is a
+        parameter's value, with that parameter marked (``links.parameter_mark``)."""
+        name, source = self._name(expr, scope)
+        # (a parameter named after what other files pass is not known until they are
+        # read: its name stays unknown)
+        if source is None or PLACEHOLDER in name or any(
+            mark in source[0] for mark in ("?", PLACEHOLDER, PARAMETER)
+        ):
+            return None
+        return parameter_mark(name, source[0], source[3])
 
     def _parameter_source(self, expr: Cursor, scope: Scope,
                           depth: int) -> Source | None:
@@ -1083,6 +1098,14 @@ class CallFinder:
         spec, _ = self._row(expr)
         if spec is not None and spec.kind in _PARAM_KINDS:
             return self._parameter(spec, expr, scope, depth)
+        if spec is None:
+            # a wrapper's call: the parameter when every read or declaration it makes
+            # names the same one
+            sources = [self._parameter(row, expr, named, depth)
+                       for row, named in self.wrappers.parameter_calls(expr, scope)]
+            known = [s for s in sources if s is not None]
+            if known and len(known) == len(sources) and all(s[0] == known[0][0] for s in known):
+                return next((s for s in known if s[1] is not None), known[0])
         children = list(expr.get_children())
         if expr.spelling in _VALUE_METHODS and children and (
             children[0].kind == CursorKind.MEMBER_REF_EXPR
@@ -1438,7 +1461,8 @@ def _creator(expr: Cursor, depth: int = 0) -> tuple[api.RosFunction, Cursor] | N
 
 def _known(parts: tuple[str | None, ...]) -> bool:
     """A value with no unknown part and no placeholder for what other calls pass."""
-    return all(part is not None and PLACEHOLDER not in part for part in parts)
+    return all(part is not None and PLACEHOLDER not in part and not isinstance(part, NodeName)
+               for part in parts)
 
 
 def _private(name: str) -> str:
@@ -1504,6 +1528,35 @@ def _renames_itself(arg: Cursor) -> bool:
         if "__node:=" in token.spelling:
             return True
     return False
+
+
+def _subscript(expr: Cursor) -> tuple[Cursor, Cursor] | None:
+    """(container, index) of ``container[index]`` (a vector's ``operator[]`` or an
+    array's subscript), else None."""
+    if expr.kind == CursorKind.CALL_EXPR and expr.spelling == "operator[]":
+        args = written_arguments(expr)
+    elif expr.kind == CursorKind.ARRAY_SUBSCRIPT_EXPR:
+        args = [c for c in expr.get_children() if c.kind.is_expression()]
+    else:
+        return None
+    return (args[0], args[1]) if len(args) == 2 else None
+
+
+def _element_loop(expr: Cursor, scope: Scope) -> tuple[Cursor | None, Cursor | None]:
+    """The loop that makes ``expr`` each element of a list in turn, and that list's
+    expression: a range-based ``for``'s variable, or ``list[i]`` in a ``for`` counting
+    ``i`` from 0 up to ``list.size()``."""
+    if expr.kind == CursorKind.DECL_REF_EXPR and expr.referenced is not None:
+        walk = scope.range_of(expr.referenced)
+        return (walk, list(walk.get_children())[1]) if walk is not None else (None, None)
+    found = _subscript(expr)
+    if found is None:
+        return None, None
+    container, index = found[0], strip(found[1])
+    if index.kind != CursorKind.DECL_REF_EXPR or index.referenced is None:
+        return None, None
+    walk = scope.counted_loop(index.referenced, container)
+    return (walk, container) if walk is not None else (None, None)
 
 
 def _unknown_operands(expr: Cursor, scope: Scope, depth: int = 0) -> list[Cursor]:

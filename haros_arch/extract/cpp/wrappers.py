@@ -30,7 +30,7 @@ from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from clang.cindex import Cursor, CursorKind, TypeKind
+from clang.cindex import Cursor, CursorKind, Type, TypeKind, conf
 
 from ...model.conditions import Condition
 from . import api, msg_types
@@ -98,10 +98,18 @@ class Wrapper:
     # parameter of this index (an interface spec: ``create_publisher<Spec>()``); its
     # type is ``T::Message`` (``T::Service``)
     spec_param: int | None = None
+    # the spec deduced from the call site's argument of this index instead (the wrapper's
+    # parameter ``SharedPtrT & pub``), and the member types that lead from that
+    # argument's type to the spec (``typename SharedPtrT::element_type::SpecType``:
+    # Autoware's component interface adaptor, ``adaptor.init_pub(pub_)``)
+    spec_arg: int | None = None
+    spec_path: tuple[str, ...] = ()
 
     def same(self, other: Wrapper) -> bool:
-        return (self.row, self.before, self.after, self.namespace, self.spec_param) == (
-            other.row, other.before, other.after, other.namespace, other.spec_param)
+        return (self.row, self.before, self.after, self.namespace, self.spec_param,
+                self.spec_arg, self.spec_path) == (
+            other.row, other.before, other.after, other.namespace, other.spec_param,
+            other.spec_arg, other.spec_path)
 
 
 class Wrappers:
@@ -443,13 +451,30 @@ class Wrappers:
 
         scope = self.finder.sites.scope(function) if self.finder.sites else None
         spec_param: int | None = None
+        spec_arg: int | None = None
+        spec_path = inner.spec_path
         if inner.spec_param is not None:
-            # a wrapper named by its template argument: this function's template
-            # parameter, passed on as that argument (``make_publisher<SpecT>(node)``)
-            spec_param = _template_parameter_index(
-                _explicit_template_argument(call, inner.spec_param), function)
-            if spec_param is None:
-                return None
+            if inner.spec_arg is not None:
+                # a spec deduced from the argument the inner wrapper is given: this
+                # function's parameter, passed on (``init_sub(sub, std::bind(...))``)
+                spec_param = inner.spec_param
+                spec_arg = _parameter_index(
+                    args[inner.spec_arg] if inner.spec_arg < len(args) else None, params)
+                if spec_arg is None:
+                    return None
+            else:
+                # a wrapper named by its template argument: this function's template
+                # parameter, passed on as that argument (``make_publisher<SpecT>(node)``),
+                # or a type this function names after one of its parameters' types
+                # (``using SpecT = typename SharedPtrT::element_type::SpecType``)
+                ref = _explicit_template_argument(call, inner.spec_param)
+                spec_param = _template_parameter_index(ref, function)
+                if spec_param is None:
+                    deduced = _deduced_spec(ref, function, params)
+                    if deduced is None:
+                        return None
+                    spec_param, spec_arg, path = deduced
+                    spec_path = (*path, *spec_path)
             before, name_arg, after = inner.before, spec.name_arg, inner.after
             inner = dataclasses.replace(inner, before=(), after=())
         else:
@@ -488,7 +513,7 @@ class Wrappers:
         return Wrapper(row, (*inner.before, *before), (*after, *inner.after),
                        namespace if isinstance(namespace, str) else None,
                        inner.through | {_key(function.canonical)}, tuple(own.items()),
-                       spec_param)
+                       spec_param, spec_arg, spec_path)
 
     def _own(self, spec: api.RosFunction, args: list[Cursor], shift: int,
              arg: Callable[[int | None], Cursor | None], fields: dict[str, object],
@@ -638,7 +663,7 @@ class Wrappers:
             if wrapper.spec_param is not None:
                 # a spec the call site does not name, or whose name is no literal:
                 # the call is kept, its name unknown
-                row = self._of_spec(row, call, wrapper.spec_param) or dataclasses.replace(
+                row = self._of_spec(row, call, wrapper) or dataclasses.replace(
                     row, fixed_name="?")
             elif row.name_arg >= len(args):
                 continue
@@ -662,14 +687,48 @@ class Wrappers:
                         setattr(made, field, value)
         return True
 
+    def parameter_calls(self, call: Cursor, scope: Scope
+                        ) -> list[tuple[api.RosFunction, Scope]]:
+        """For a call of a wrapper that reads or declares a parameter (nav2's
+        ``declare_or_get_parameter``), each row it makes and the call site's scope in which
+        its name argument reads as the wrapper names it (what ``emit`` gives the calls);
+        empty for any other call."""
+        args = _arguments(call)
+        if _key(call) in self._inner or len(args) != len(written_arguments(call)):
+            return []  # (a lambda's call: ``_parameter`` reads the written arguments)
+        found: list[tuple[api.RosFunction, Scope]] = []
+        bound = _made_with(call, scope)
+        for wrapper in self._called(call):
+            row = wrapper.row
+            if row.kind not in ("read", "declare") or wrapper.namespace or (
+                row.name_arg >= len(args) or row.fixed_name is not None
+                or wrapper.spec_param is not None
+            ):
+                return []
+            before, after = _bind(wrapper.before, bound), _bind(wrapper.after, bound)
+            found.append((row, _NamedScope(scope, args[row.name_arg], before, after)
+                          if before or after else scope))
+        return found
+
     def _of_spec(self, row: api.RosFunction, call: Cursor,
-                 index: int) -> api.RosFunction | None:
+                 wrapper: Wrapper) -> api.RosFunction | None:
         """``row`` with the name and type of the interface spec ``call`` passes as its
-        template argument ``index`` (``Spec::name``, ``Spec::Message``), as a fixed name
+        template argument ``wrapper.spec_param`` (``Spec::name``, ``Spec::Message``), or
+        that the type of its argument ``wrapper.spec_arg`` leads to, as a fixed name
         (once per node, as the spec's topic is); None when the call site does not name
         a spec whose name is a literal."""
-        ref = _explicit_template_argument(call, index)
-        decl = ref.referenced if ref is not None else None
+        decl: Cursor | None = None
+        if wrapper.spec_arg is not None:
+            args = _arguments(call)
+            given = args[wrapper.spec_arg].type if wrapper.spec_arg < len(args) else None
+            spec = nested_type(given, wrapper.spec_path) if given is not None else None
+            decl = spec.get_declaration() if spec is not None else None
+        else:
+            ref = _explicit_template_argument(call, wrapper.spec_param or 0)
+            decl = ref.referenced if ref is not None else None
+            if decl is not None and wrapper.spec_path:
+                spec = nested_type(decl.type, wrapper.spec_path)
+                decl = spec.get_declaration() if spec is not None else None
         if decl is None or decl.kind not in (CursorKind.STRUCT_DECL,
                                              CursorKind.CLASS_DECL):
             return None
@@ -798,11 +857,83 @@ def _template_parameter_index(ref: Cursor | None, function: Cursor) -> int | Non
     return next((i for i, p in enumerate(params) if _key(p) == where), None)
 
 
+_DEPENDENT_MEMBERS = re.compile(r"(?:typename\s+)?(\w+)((?:::\w+)+)")
+# the smart pointers whose ``element_type`` is their first template argument
+_POINTER_CLASSES = frozenset({"std::shared_ptr", "std::unique_ptr", "std::weak_ptr"})
+
+
+def _deduced_spec(ref: Cursor | None, function: Cursor, params: list[Cursor]
+                  ) -> tuple[int, int, tuple[str, ...]] | None:
+    """For a template argument that names a type alias of ``function`` written as member
+    types of one of its template parameters (``using SpecT = typename
+    SharedPtrT::element_type::SpecType``), deduced from a parameter of that type
+    (``SharedPtrT & pub``): the template parameter's index, the parameter's, and the
+    member names."""
+    alias = ref.referenced if ref is not None else None
+    if alias is None or alias.kind not in (CursorKind.TYPE_ALIAS_DECL,
+                                           CursorKind.TYPEDEF_DECL):
+        return None
+    written = _DEPENDENT_MEMBERS.fullmatch(alias.underlying_typedef_type.spelling.strip())
+    if written is None:
+        return None
+    templates = _template_parameters(function)
+    index = next((i for i, t in enumerate(templates) if t.spelling == written.group(1)),
+                 None)
+    if index is None:
+        return None
+    for position, param in enumerate(params):
+        ptype = param.type
+        if ptype.kind in (TypeKind.LVALUEREFERENCE, TypeKind.RVALUEREFERENCE):
+            ptype = ptype.get_pointee()
+        if ptype.spelling.replace("const ", "").strip() == written.group(1):
+            return index, position, tuple(written.group(2).split("::")[1:])
+    return None
+
+
+def nested_type(given: Type, path: tuple[str, ...]) -> Type | None:
+    """The type ``given::a::b`` for ``path`` ``(a, b)``, each a member type alias of a
+    class template that stands for one of its template parameters (``using SpecType =
+    SpecT``: that template argument of the specialisation), or a smart pointer's
+    ``element_type``."""
+    found = given
+    for member in path:
+        found = found.get_canonical()
+        if found.kind in (TypeKind.LVALUEREFERENCE, TypeKind.RVALUEREFERENCE):
+            found = found.get_pointee().get_canonical()
+        decl = found.get_declaration()
+        if decl is None or decl.kind == CursorKind.NO_DECL_FOUND:
+            return None
+        if member == "element_type" and qualified_name(decl) in _POINTER_CLASSES:
+            argument = found.get_template_argument_type(0)
+            if argument.kind == TypeKind.INVALID:
+                return None
+            found = argument
+            continue
+        template = conf.lib.clang_getSpecializedCursorTemplate(decl)
+        if template is None or template.kind != CursorKind.CLASS_TEMPLATE:
+            return None
+        alias = next((c for c in template.get_children() if c.spelling == member and c.kind in (
+            CursorKind.TYPE_ALIAS_DECL, CursorKind.TYPEDEF_DECL)), None)
+        if alias is None:
+            return None
+        named = alias.underlying_typedef_type.spelling
+        index = next((i for i, t in enumerate(_template_parameters(template))
+                      if t.spelling == named), None)
+        if index is None:
+            return None
+        argument = found.get_template_argument_type(index)
+        if argument.kind == TypeKind.INVALID:
+            return None
+        found = argument
+    return found
+
+
 def _spec_member(expr: Cursor, function: Cursor, member: str) -> int | None:
     """The index of ``function``'s template type parameter ``T`` when ``expr`` is
     ``T::member`` (an interface spec's static member)."""
     expr = strip(expr)
-    if expr.kind != CursorKind.DECL_REF_EXPR:
+    # (in a member function clang may keep ``T::name`` as a member reference)
+    if expr.kind not in (CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR):
         return None
     tokens = [t.spelling for t in expr.get_tokens()]
     if len(tokens) != 3 or tokens[1:] != ["::", member]:
