@@ -194,7 +194,10 @@ CATALOGUE: dict[str, Entry] = {
     "LAUNCH_ARG_UNSET": Entry(
         "warning", "launch argument {name} has no value; names that use it keep '?'",
         "An $(arg) refers to an argument that was declared without a value and not "
-        "given one; what depends on it is kept with an unknown part."),
+        "given one (in a ROS 1 top-level file, or one it includes with pass_all_args, "
+        "also an argument not declared at all: roslaunch takes every name:=value of "
+        "its command line as an argument); what depends on it is kept with an unknown "
+        "part."),
     "LAUNCH_UNSUPPORTED": Entry(
         "warning", "{detail}",
         "A launch construct that the static interpreter does not evaluate; what it "
@@ -211,8 +214,9 @@ CATALOGUE: dict[str, Entry] = {
         "roslaunch refuses a launch whose node names collide."),
     "LAUNCH_ARG_UNDEFINED": Entry(
         "error", "argument {name} is not defined here",
-        "$(arg) names an argument that is neither declared in this scope nor passed; "
-        "roslaunch refuses the file. The value is kept unknown."),
+        "$(arg) names an argument that is neither declared in this scope nor passed "
+        "(in an included file; the top-level file may get it from the command line, "
+        "LAUNCH_ARG_UNSET); roslaunch refuses the file. The value is kept unknown."),
     "LAUNCH_ARG_REQUIRED": Entry(
         "error", "{path} requires argument {name}, which the include does not pass",
         "An included file uses an argument it declares without a value, and the <include> "
@@ -460,6 +464,14 @@ CATALOGUE: dict[str, Entry] = {
         "warning", "node type {node} is not in the workspace; its interface is unknown",
         "A launch file starts an executable that no workspace package builds; the "
         "instance is kept without publishers, subscribers or other links."),
+    "NODE_NOT_READ": Entry(
+        "warning", "node type {node} is {path}, a program this tool does not read (not a "
+                   "built target nor a Python program); its interface is unknown",
+        "A ROS 1 launch file starts an executable file of the package that is neither "
+        "built by its CMakeLists nor a Python program (a shell script, a prebuilt "
+        "binary): roslaunch finds it in the package's folder and runs it. The instance "
+        "is kept without links, of unknown interface; describe it with hints if it "
+        "matters."),
     "NODE_PACKAGE_UNKNOWN": Entry(
         "warning", "package {name} of node {node} is neither in the workspace nor "
                    "installed; its interface is unknown",

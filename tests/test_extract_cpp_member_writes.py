@@ -230,3 +230,36 @@ def test_writes_that_differ_as_text_but_name_one_namespace_agree(write_tree) -> 
                          cache_dir=None)
     assert [(c.kind, c.name) for c in result.calls] == [
         ("read", "~concurrency"), ("publish", "scan")]
+
+
+STRUCT = """
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+
+struct Context { ros::NodeHandle* nh; int rate; };
+struct Owner { ros::NodeHandle own; };
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "ctx");
+  ros::NodeHandle pnh("~");
+  Context ctx{&pnh, 10};
+  ctx.nh->hasParam("through_pointer");
+  Context copy = {&pnh, 5};
+  ros::Publisher out = copy.nh->advertise<std_msgs::String>("pointer_out", 1);
+  Owner owner;
+  owner.own.hasParam("value_member");
+  ros::spin();
+}
+"""
+
+
+def test_a_pointer_member_nothing_seen_sets_is_not_the_default_handle(tmp_path: Path
+                                                                      ) -> None:
+    """A handle *value* member that nothing sets is the default handle (``Owner::own``);
+    a *pointer* to a handle that no constructor and no assignment of the unit sets points
+    to one set where the extraction does not look (an aggregate's ``{&pnh, 10}``, a copy
+    of the struct): its namespace is unknown, ``?/through_pointer``, not the node's
+    namespace (which made ``/through_pointer`` of a private parameter)."""
+    assert _calls(tmp_path, "ctx.cpp", STRUCT) == {
+        "through_pointer": "?/through_pointer", "pointer_out": "?/pointer_out",
+        "value_member": "value_member"}

@@ -56,6 +56,17 @@ def test_ros1_tf_time_and_transport_hints(write_tree) -> None:
         ("subscribe", "/tf_static")]
 
 
+def test_ros1_tf_quaternion_message_from_yaw(write_tree) -> None:
+    """tf::createQuaternionMsgFromYaw (and ..FromRollPitchYaw) returns a
+    geometry_msgs::Quaternion: declared as a template of its return type, it matched no
+    call, an error in the function that publishes, so the ROS wiki's odometry publisher
+    (turtlebot3_fake's, kobuki's) was partial."""
+    result = _extract(write_tree, _source("ros1_tf_quaternion_msg.cpp"), "catkin")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "odom"),
+                                                        ("publish", "/tf")]
+
+
 def test_members_of_declared_names_in_code_without_ros_calls(write_tree) -> None:
     """The first parse with the unknown names declared has more errors than the parse
     without (members a macro forwards to, in a helper class with no ROS call): those

@@ -71,6 +71,24 @@ def test_candidates_match_pattern_and_type():
     assert all(not t.candidates for t in config.topics if not t.is_unresolved)
 
 
+def test_a_ros1_read_with_an_unknown_part_may_read_the_parameters_under_it():
+    """diagnostic_aggregator's AnalyzerGroup reads ``analyzers`` whole in the namespace an
+    add_diagnostics request names (``?/analyzers``): the parameters set under any
+    ``<ns>/analyzers/`` (add_analyzers' ``/add_localization_analyzers/analyzers/jackal/
+    type``) may be what it reads, as the parameter server answers a namespace with its
+    tree; a name that only begins the same (``analyzers_old``) may not."""
+    agg = node("p", "agg", call("read", "?/analyzers"))
+    config = graph([NodeDecl("/agg", "p", "agg")], params=[
+        ParamDecl("/add/analyzers/jackal/type", "GenericAnalyzer", "str"),
+        ParamDecl("/add/analyzers", "x", "str"),
+        ParamDecl("/add/analyzers_old/type", "y", "str"),
+        ParamDecl("/elsewhere/type", "z", "str")], nodes=[agg])
+    find_candidates(config)
+    unknown = next(p for p in config.parameters if p.is_unresolved)
+    assert [c.name for c in unknown.candidates] == ["/add/analyzers",
+                                                    "/add/analyzers/jackal/type"]
+
+
 def test_names_from_parameters_take_the_launch_value_then_the_default():
     def listener(executable):
         n = node("p", executable, call("subscribe", "?", "sensor_msgs/LaserScan"))

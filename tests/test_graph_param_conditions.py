@@ -14,6 +14,7 @@ from haros_arch.model.conditions import Condition
 from haros_arch.models.format import from_document
 from haros_arch.pipeline import Options, analyse
 from haros_arch.project import load
+from haros_arch.query.catalogue import run_catalogue
 from haros_arch.workspace import scan
 
 NODE = """
@@ -670,3 +671,103 @@ def test_a_member_read_from_a_name_not_known_decides_nothing(write_tree) -> None
     assert [(link.rosname.full, [str(c) for c in link.conditions]) for link in config.links
             if link.kind == "publish" and "markers" in link.rosname.full] == [
         ("/zone_markers", ["if (visualize_)"])]
+
+
+NODE_PRESENCE = """
+    #include <ros/ros.h>
+    #include <std_msgs/String.h>
+    #include <map>
+    #include <string>
+
+    int main(int argc, char** argv) {
+      ros::init(argc, argv, "marker");
+      ros::NodeHandle nh("~");
+      ros::NodeHandle* handle = &nh;
+      std::map<std::string, double> scale, top;
+      double r = 1.0, left = 1.0;
+      if (nh.getParam("linear_scale", scale)) {
+        nh.getParam("max_velocity", top);
+      } else {
+        nh.param<double>("max_velocity", top["x"], 1.0);
+      }
+      if (handle->hasParam("radius_multiplier")) {
+        nh.getParam("radius_multiplier", r);
+      } else {
+        nh.param("left_multiplier", left, 1.0);
+      }
+      ros::Publisher shown;
+      if (!ros::param::has("~quiet")) shown = nh.advertise<std_msgs::String>("shown", 1);
+      std::map<std::string, int> axes;
+      std::map<std::string, std::map<std::string, double>> turbo;
+      if (nh.getParam("axis", axes)) {
+        nh.getParam("turbo", turbo["x"]);
+      } else {
+        nh.param<double>("turbo", turbo["x"]["x"], 2.0);
+      }
+      ros::spin();
+    }
+    """
+
+
+def test_a_condition_testing_whether_a_parameter_is_there_is_decided(write_tree):
+    """interactive_marker_twist_server (marker_server.cpp:54-64): ``if
+    (nh.getParam("linear_scale", map)) { nh.getParam("max_positive_linear_velocity", m);
+    } else { nh.param<double>(.., 1.0); }``. With linear_scale set nowhere, and nothing
+    unseen that could set it, getParam is false: the reads without a default are not
+    made (they were a false parameter-read-not-set); hasParam of a parameter the launch
+    sets is true (diff_drive_controller's wheel_radius_multiplier). getParam into a
+    ``std::map`` (a ``dict`` read) of a parameter set to a number is false, as roscpp
+    fills a map from a dictionary only (teleop_twist_joy.cpp:89-99 with jackal's
+    ``axis_angular: 0``: scale_angular_turbo is read with its default). A parameter that
+    a file not read may set (``$(arg f)``) leaves it undecided."""
+    root = write_tree({
+        "src/marker/package.xml": package_xml("marker"),
+        "src/marker/CMakeLists.txt": "project(marker)\nadd_executable(marker src/m.cpp)\n",
+        "src/marker/src/m.cpp": NODE_PRESENCE,
+        "src/marker/launch/plain.launch": """
+            <launch>
+              <node pkg="marker" type="marker" name="marker">
+                <param name="radius_multiplier" value="1.0"/>
+                <param name="axis" value="1"/>
+              </node>
+            </launch>
+            """,
+        "src/marker/launch/unseen.launch": """
+            <launch>
+              <arg name="f" default="$(env NOT_SET_ANYWHERE)"/>
+              <node pkg="marker" type="marker" name="marker">
+                <rosparam command="load" file="$(find marker)/config/$(arg f).yaml"/>
+              </node>
+            </launch>
+            """,
+        "project.yaml": "project: p\nconfigurations:\n  plain: [marker/launch/plain.launch]\n"
+                        "  unseen: [marker/launch/unseen.launch]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {"PATH": os.environ.get("PATH", "")},
+                    Options(cache_dir=None))
+
+    def reads(config):
+        return sorted((link.rosname.full, link.location.line, bool(link.conditions))
+                      for link in config.links if link.kind == "read")
+    plain = model.configuration("plain")
+    assert reads(plain) == [
+        ("/marker/axis", 26, False),
+        ("/marker/linear_scale", 12, False),  # the test itself
+        ("/marker/max_velocity", 15, False),  # else: no condition left
+        ("/marker/quiet", 23, False),
+        ("/marker/radius_multiplier", 17, False),
+        ("/marker/radius_multiplier", 18, False),
+        ("/marker/turbo", 29, False)]  # else: the read with a default
+    assert _publishers(plain, "/marker") == {"shown": []}
+    said = [d.message for d in plain.diagnostics if d.code == "CONDITION_FALSE"]
+    assert any("no read /marker/max_velocity" in m and "getParam" in m for m in said)
+    assert any("no read /marker/left_multiplier" in m for m in said)
+    findings = [f for f in run_catalogue(model) if f.rule == "parameter-read-not-set"]
+    assert findings == []
+    unseen = model.configuration("unseen")
+    assert ("/marker/max_velocity", 13, True) in reads(unseen)
+    assert ("/marker/turbo", 27, True) in reads(unseen)
+    types = {(link.rosname.full, link.location.line): link.call.type for link in plain.links
+             if link.kind == "read"}
+    assert types[("/marker/axis", 26)] == "dict"
+    assert _publishers(unseen, "/marker") == {"shown": ['!ros::param::has("~quiet")']}

@@ -124,7 +124,7 @@ def test_bad_input_becomes_diagnostics(write_tree):
         ("LAUNCH_UNKNOWN_TAG", 2), ("LAUNCH_UNKNOWN_ATTRIBUTE", 3),
         ("LAUNCH_MISSING_ATTRIBUTE", 4), ("LAUNCH_MISSING_ATTRIBUTE", 5),
         ("LAUNCH_BAD_VALUE", 6), ("LAUNCH_FILE_MISSING", 7), ("LAUNCH_INCLUDE_CYCLE", 8),
-        ("LAUNCH_ARG_UNDEFINED", 9)]
+        ("LAUNCH_ARG_UNSET", 9)]
     assert [(n.name, n.executable) for n in model.nodes] == [
         ("/x", "d"), ("/z", "?"), ("/e", "2")]
     assert all(d.location.file == "pkg/launch/main.launch" for d in model.diagnostics)
@@ -214,6 +214,36 @@ def test_pass_all_args_hands_on_what_the_command_line_gives(write_tree):
     found = [(d.code, d.location.file, d.location.line) for d in model.diagnostics]
     assert found == [("LAUNCH_ARG_UNSET", "pkg/launch/part.launch", 3),
                      ("LAUNCH_ARG_REQUIRED", "pkg/launch/part.launch", 3)]
+
+
+def test_an_undeclared_argument_of_the_top_level_file_is_the_command_lines(write_tree):
+    """cartographer_ros' demo_backpack_2d.launch: ``args="--clock $(arg bag_filename)"``
+    with no <arg name="bag_filename">: roslaunch makes every ``name:=value`` of its
+    command line an argument of the top-level file, declared or not (and pass_all_args
+    hands them on), so the file is run as ``roslaunch ... bag_filename:=FILE``. Left
+    unset here: a warning, not "not defined here" (an error); a file included without
+    pass_all_args still lacks it (an error); a value the configuration gives is used."""
+    extra = {"src/pkg/launch/part.launch": """
+        <launch>
+          <node name="play" pkg="p" type="d" args="$(arg bag)" />
+        </launch>
+        """}
+    launch = """
+        <launch>
+          <node name="top" pkg="p" type="d" args="--clock $(arg bag)" />
+          <include file="$(dirname)/part.launch" pass_all_args="true" />
+          <include file="$(dirname)/part.launch" ns="two" />
+        </launch>
+        """
+    model = load_launch(write_tree, launch, extra=extra)
+    found = [(d.code, d.location.file, d.location.line) for d in model.diagnostics]
+    assert found == [("LAUNCH_ARG_UNSET", "pkg/launch/main.launch", 2),
+                     ("LAUNCH_ARG_UNSET", "pkg/launch/part.launch", 2),
+                     ("LAUNCH_ARG_REQUIRED", "pkg/launch/part.launch", 2)]
+    given = load_launch(write_tree, launch, extra=extra, args={"bag": "b.bag"})
+    assert [(n.name, n.args) for n in given.nodes] == [
+        ("/top", "--clock b.bag"), ("/play", "b.bag"), ("/two/play", "?")]
+    assert [d.code for d in given.diagnostics] == ["LAUNCH_ARG_REQUIRED"]
 
 
 def test_rosparam_text_an_unset_argument_makes_is_unknown_not_a_scalar(write_tree):

@@ -67,3 +67,41 @@ def test_launched_scripts_are_extracted_in_the_one_batch(write_tree, monkeypatch
     model = analyse(load(str(root / "project.yaml")), {"PATH": ""})
     assert batches == [["pkg/relay"]]
     assert model.configurations[0].node("/r").node is not None
+
+
+def test_a_launched_executable_that_is_not_python_is_there_but_not_read(write_tree):
+    """cartographer_ros' grpc_demo_backpack_2d.launch starts ``cartographer_grpc_server.sh``
+    (scripts/, executable): roslaunch finds it in the package's folder and runs it, so the
+    launch does not name a missing executable (launch-missing-reference, an error); the
+    tool does not read shell scripts, so its interface is unknown (NODE_NOT_READ, a
+    warning). A name that no file of the package has stays NODE_NOT_FOUND."""
+    root = write_tree({
+        "src/pkg/package.xml": package_xml("pkg"),
+        "src/pkg/CMakeLists.txt": "project(pkg)\n",
+        "src/pkg/scripts/server.sh": "#!/bin/bash\nexec server_binary \"$@\"\n",
+        "src/pkg/scripts/notes.sh": "#!/bin/bash\n",
+        "src/pkg/launch/s.launch": """
+            <launch>
+              <node name="server" pkg="pkg" type="server.sh" />
+              <node name="notes" pkg="pkg" type="notes.sh" />
+              <node name="gone" pkg="pkg" type="missing_node" />
+            </launch>
+            """,
+        "project.yaml": "project: p\nconfigurations:\n  c: [pkg/launch/s.launch]\n",
+    })
+    os.chmod(root / "src/pkg/scripts/server.sh", 0o755)  # notes.sh: not executable
+    model = analyse(load(str(root / "project.yaml")), {"PATH": ""})
+    (config,) = model.configurations
+    assert config.node("/server").node is None
+    assert [(d.code, d.location.line, d.message) for d in config.diagnostics] == [
+        ("NODE_NOT_READ", 2, "node type pkg/server.sh is pkg/scripts/server.sh, a program "
+                             "this tool does not read (not a built target nor a Python "
+                             "program); its interface is unknown"),
+        ("NODE_NOT_FOUND", 3, "node type pkg/notes.sh is not in the workspace; its "
+                              "interface is unknown"),
+        ("NODE_NOT_FOUND", 4, "node type pkg/missing_node is not in the workspace; its "
+                              "interface is unknown")]
+    from haros_arch.query.catalogue import run_catalogue
+    findings = [(f.rule, f.location.line) for f in run_catalogue(model)
+                if f.rule == "launch-missing-reference"]
+    assert findings == [("launch-missing-reference", 3), ("launch-missing-reference", 4)]

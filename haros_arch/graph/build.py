@@ -34,6 +34,7 @@ from ..plugins.attach import PluginModels, class_packages
 from ..plugins.attach import attach as attach_plugins
 from ..plugins.transports import Transports
 from ..robot.attach import attach as attach_descriptions
+from ..rosrun import find_executable
 from ..workspace import Workspace, installed_roots
 from .actions import action_links
 from .conditions import arguments_left, decide, decide_links, drop_links, program_views
@@ -149,6 +150,7 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
     _drop_base_copies(config, attached)
     for action, call, name in action_links(config):
         link(action.node, call, {}, resources, config, name)
+    config.launch_tree = launch.tree  # what decide_links asks of includes not read
     decide_links(config)  # source conditions this configuration decides
     _namespace_values(config)
     config.package_paths = package_paths(launch, workspace)
@@ -385,6 +387,11 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
     elif node is None and workspace.find(key.partition("/")[0]) is None:
         config.diagnostics.append(diag.make("NODE_PACKAGE_UNKNOWN", decl.location,
                                             name=key.partition("/")[0], node=plugin or key))
+    elif node is None and plugin is None and decl.ros_version == 1 and (
+        found := _program_file(workspace, *key.partition("/")[::2])
+    ):
+        config.diagnostics.append(diag.make("NODE_NOT_READ", decl.location, node=key,
+                                            path=workspace.relpath(found)))
     elif node is None:
         config.diagnostics.append(diag.make("NODE_NOT_FOUND", decl.location,
                                             node=plugin or key))
@@ -396,6 +403,16 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
     return NodeInstance(decl.name, node, namespace=decl.namespace, remaps=remaps,
                         args=decl.args, conditions=decl.conditions, location=decl.location,
                         ros_version=decl.ros_version, test=decl.is_test)
+
+
+def _program_file(workspace: Workspace, package: str, name: str) -> str | None:
+    """An executable file ``name`` in ``package``'s folder, as roslaunch finds a node
+    type (``rosrun.find_executable``): a shell script in scripts/, a prebuilt program.
+    None when there is none, or the name is not a plain file name."""
+    root = workspace.find(package)
+    if not root or not name or "/" in name or UNKNOWN_MARK in name:
+        return None
+    return find_executable(root, name)
 
 
 def is_container(decl: NodeDecl) -> bool:

@@ -5,7 +5,7 @@ from __future__ import annotations
 import re
 
 from ..model.rosname import pattern_for
-from ..model.runtime import Configuration, Resource
+from ..model.runtime import Configuration, Parameter, Resource
 from ..model.values import UNKNOWN_MARK
 
 
@@ -42,6 +42,14 @@ def find_candidates(config: Configuration) -> None:
         for resource in collection:
             if not resource.is_unresolved:
                 continue
-            pattern = re.compile(resource.rosname.pattern)
+            written = resource.rosname.pattern
+            if isinstance(resource, Parameter) and any(
+                link.kind == "read" and link.node.ros_version == 1 for link in resource.links
+            ):
+                # a ROS 1 read of a name is a read of everything under it too (the
+                # parameter server answers a namespace with its tree: diagnostic_aggregator
+                # reads ``<ns>/analyzers`` whole, the namespace a service request names)
+                written = written.removesuffix("$") + "(?:/.*)?$"
+            pattern = re.compile(written)
             matches = [c for c in known if pattern.match(c.name) and compatible(resource, c)]
             resource.candidates = sorted(matches, key=lambda c: _rank(resource, c))

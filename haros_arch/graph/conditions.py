@@ -41,6 +41,7 @@ from .. import diagnostics as diag
 from ..evaluate.python import evaluate, is_unknown
 from ..launch.ros2.naming import split_arguments
 from ..model.conditions import Condition
+from ..model.rosname import pattern_for
 from ..model.runtime import Configuration, Link, NodeInstance, Parameter
 from ..model.values import UNKNOWN_MARK, Unknown
 
@@ -50,7 +51,7 @@ _TOKEN = re.compile(r"""\s*(?:
     (?P<string>"[^"\\\n]*")
   | (?P<number>\d+(?:\.\d+)?)(?![\w.])
   | (?P<name>this\s*->\s*[A-Za-z_]\w*|[A-Za-z_]\w*(?:\s*::\s*[A-Za-z_]\w*)*)
-  | (?P<op>&&|\|\||==|!=|<=|>=|[!<>()\[\].])
+  | (?P<op>&&|\|\||==|!=|<=|>=|->|,|[!<>()\[\].])
 )""", re.X)
 _KEYWORDS = {"true": "True", "false": "False"}
 _ALTERNATIVE = {"and": "&&", "or": "||", "not": "!"}
@@ -137,6 +138,12 @@ class _Grammar:
             return inner
         if value == "get_parameter" and self._peek() == ("op", "("):
             return self._parameter()
+        if value in _PRESENCE_FUNCTIONS and self._peek() == ("op", "("):
+            return self._presence(_PRESENCE_FUNCTIONS[value])
+        if self._peek() in (("op", "."), ("op", "->")):
+            presence = self._handle_presence()
+            if presence is not None:
+                return presence
         if "::" in value or "__" in value or value in _PYTHON_WORDS or (
             value in _CPP_WORDS or self._peek() == ("op", "(")
         ):
@@ -170,6 +177,42 @@ class _Grammar:
         self.at += 1
         return number
 
+    def _handle_presence(self) -> str | None:
+        """``nh.getParam("x", v)`` / ``nh_param->hasParam("x")`` (through members:
+        ``pimpl_->nh.getParam``): whether roscpp finds the parameter; None (nothing
+        taken) for any other member use."""
+        start = self.at
+        while self._peek() in (("op", "."), ("op", "->")):
+            self.at += 1
+            kind, method = self._peek()
+            self.at += 1
+            if kind != "name":
+                break
+            if method in _PRESENCE_METHODS and self._peek() == ("op", "("):
+                return self._presence(_PRESENCE_METHODS[method])
+        self.at = start
+        return None
+
+    def _presence(self, kind: str) -> str:
+        """The call's parameter name (a string literal, first) as a name of its own;
+        the other arguments (the variable getParam writes) are passed over."""
+        self._take("(")
+        literal, text = self._peek()
+        self.at += 1
+        if literal != "string":
+            raise ValueError("parameter name")
+        depth = 0
+        while depth or self._peek() != ("op", ")"):
+            token = self._peek()
+            if token == ("", ""):
+                raise ValueError("unclosed call")
+            depth += {("op", "("): 1, ("op", ")"): -1}.get(token, 0)
+            self.at += 1
+        self._take(")")
+        name = f"{PRESENCE_PREFIX}{kind}_{text[1:-1].encode().hex()}"
+        self.names.add(name)
+        return name
+
     def _parameter(self) -> str:
         """rclcpp's ``get_parameter("name").as_bool()`` (``as_int``, ``as_double``,
         ``as_string``): the node's parameter, as a name of its own (``parameter_name``)."""
@@ -194,6 +237,26 @@ class _Grammar:
 # the typed values of an rclcpp Parameter a condition reads
 _PARAMETER_VALUES = frozenset({"as_bool", "as_int", "as_double", "as_string"})
 PARAMETER_PREFIX = "haros_parameter_"
+
+
+# roscpp's tests of a parameter's presence: ``getParam`` (true when it is there and its
+# value converts to the variable's type) and ``hasParam``, on a handle or ros::param
+_PRESENCE_METHODS = {"getParam": "get", "hasParam": "has", "getParamCached": "get"}
+_PRESENCE_FUNCTIONS = {"ros::param::get": "get", "ros::param::has": "has",
+                       "ros::param::getCached": "get"}
+PRESENCE_PREFIX = "haros_presence_"
+
+
+def presence_name(name: str) -> tuple[str, str] | None:
+    """(``get`` or ``has``, the parameter as written) a grammar name stands for
+    (``nh.getParam("x", v)``), else None."""
+    if not name.startswith(PRESENCE_PREFIX):
+        return None
+    kind, _, encoded = name[len(PRESENCE_PREFIX):].partition("_")
+    try:
+        return kind, bytes.fromhex(encoded).decode()
+    except ValueError:
+        return None
 
 
 def parameter_name(name: str) -> str | None:
@@ -329,7 +392,84 @@ def _read_value(link: Link) -> object:
     return Unknown(f"{param.name} is not set and its default is not known")
 
 
-def _member_values(instance: NodeInstance) -> Callable[..., object]:
+def _presence_value(config: Configuration, instance: NodeInstance, file: str | None,
+                    kind: str, written: str, made: dict[str, Any]) -> object:
+    """Whether a ROS 1 ``getParam("x", v)`` / ``hasParam("x")`` in a condition finds the
+    parameter, from the instance's tested read of it in that file (the call the
+    condition makes, resolved like any read): True for hasParam of a parameter the
+    launch sets with no condition (or sets under, a namespace), and for getParam when
+    the value is of the read's type; False for one that nothing sets and nothing unseen
+    could set; else unknown."""
+    if instance.ros_version != 1:
+        return Unknown("not a ROS 1 node")
+    found = {id(link.resource): link for link in instance.links
+             if link.kind == "read" and link.call is not None and link.call.tested
+             and link.call.location.file == file and isinstance(link.resource, Parameter)
+             and _own(link.call.name) == _own(written)
+             and link.call.name.lstrip("~").endswith(written.lstrip("~"))}
+    if not found:
+        return Unknown(f"no read of {written} in {file}")
+    answers = {_present(config, link, kind, made) for link in found.values()}
+    if len(answers) != 1:
+        return Unknown(f"the reads of {written} differ")
+    return answers.pop()
+
+
+def _own(name: str) -> str:
+    return name.lstrip("~").rpartition("/")[2]
+
+
+def _present(config: Configuration, link: Link, kind: str, made: dict[str, Any]) -> object:
+    param = link.resource
+    assert isinstance(param, Parameter) and link.call is not None
+    unknown = Unknown(f"whether {param.name} is set")
+    if param.is_unresolved or param.setters:
+        return unknown
+    prefix = param.name.rstrip("/") + "/"
+    set_here = [p for p in config.parameters if p.set_by_launch and (
+        p is param or p.name.startswith(prefix))]
+    if set_here:
+        if any(p.launch_conditions or p.is_unresolved for p in set_here):
+            return unknown
+        if kind == "has":
+            return True
+        ctype = link.call.type or ""
+        if param.set_by_launch and not [p for p in set_here if p is not param] and (
+            param.value is not None and not is_unknown(param.value)
+        ) and ((ctype == "dict" and not isinstance(param.value, dict)) or (
+            ctype.endswith("[]") and not isinstance(param.value, list))):
+            # roscpp's getParam fills a std::map from a dictionary only, a std::vector
+            # from a list only (teleop_twist_joy's ``getParam("axis_linear", map)`` of
+            # ``axis_linear: 1``)
+            return False
+        typed = _typed(param.value, link.call.type) if param.set_by_launch else unknown
+        return unknown if is_unknown(typed) else True
+    # nothing seen sets it: nothing unseen may either (a node of partial or unknown
+    # interface, its own for a private parameter; a parameter with '?' that may be it;
+    # a dynamic_reconfigure server above it, which writes its fields; an include the
+    # launch stage could not read)
+    from ..query.absence import Known, owner_of, reconfiguring
+
+    # made once per decide_links, not the queries' cache: no candidates are found yet
+    known = made.get("known") or made.setdefault("known", Known(config))
+    owner = owner_of(config, param, known)
+    if (owner is not None and not owner.is_complete) or (
+        owner is None and config.incomplete_nodes
+    ):
+        return unknown
+    if any(p.is_unresolved and re.match(pattern_for(p.name), param.name)
+           for p in config.parameters):
+        return unknown
+    if reconfiguring(config, param, known):
+        return unknown
+    if any(item.kind == "include" and not item.skipped
+           for tree in config.launch_tree for item in tree.walk()):
+        return unknown
+    return False
+
+
+def _member_values(instance: NodeInstance, config: Configuration | None = None,
+                   made: dict[str, Any] | None = None) -> Callable[..., object]:
     """A member's value, by name and the file of the condition using it."""
     reads: dict[tuple[str | None, str], list[Link]] = {}
     anywhere: dict[str, list[Link]] = {}  # by member, in whichever file of the node
@@ -349,6 +489,11 @@ def _member_values(instance: NodeInstance) -> Callable[..., object]:
         # leave the member unknown. ``get_parameter("x")``, or a local of the condition's
         # function that holds the value of x (``Condition.parameters``): the node's
         # reads of x.
+        presence = presence_name(name)
+        if presence is not None:
+            return (_presence_value(config, instance, file, *presence,
+                                    {} if made is None else made)
+                    if config is not None else Unknown("no configuration"))
         parameter = held.get(name) if held else None
         parameter = parameter if parameter is not None else parameter_name(name)
         found = reads.get((file, name)) or anywhere.get(name) if parameter is None else [
@@ -377,8 +522,9 @@ def decide_links(config: Configuration) -> None:
     """Take off each link the source conditions this configuration decides: a link
     under a false one is dropped (CONDITION_FALSE says so), a true one is removed."""
     dropped: list[Link] = []
+    made: dict[str, Any] = {}
     for instance in config.nodes:
-        members = _member_values(instance)
+        members = _member_values(instance, config, made)
         views = program_views(instance)
         for link in list(instance.links):
             kept: list[Condition] = []

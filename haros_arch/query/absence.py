@@ -28,7 +28,7 @@ from .errors import QueryTypeError
 Charge = Callable[[int], None]
 
 
-class _Known:
+class Known:
     """What ``unknown_users`` needs of a configuration, built once per configuration."""
 
     def __init__(self, config: Configuration) -> None:
@@ -99,11 +99,14 @@ def _reconfigure_namespace(link: Link) -> str | None:
     return None
 
 
-def reconfiguring(config: Configuration, parameter: Parameter) -> list[NodeInstance]:
+def reconfiguring(config: Configuration, parameter: Parameter,
+                  known: Known | None = None) -> list[NodeInstance]:
     """The nodes whose dynamic_reconfigure server may read and set the parameter: those
     serving on a namespace its name is under (not those right above it whose reads of
-    their .cfg's parameters are known: they read it or not as their links say)."""
-    known = _known(config)
+    their .cfg's parameters are known: they read it or not as their links say).
+    ``known``: ``Known(config)`` made by the caller, not the cached one (the graph
+    stage, before the queries' candidates are found)."""
+    known = known or _known(config)
     found: list[NodeInstance] = []
     name = parameter.name
     deeper = False  # the namespace is the parameter's own (its reads decide) or above it
@@ -118,14 +121,14 @@ def reconfiguring(config: Configuration, parameter: Parameter) -> list[NodeInsta
     return found
 
 
-_KNOWN: WeakKeyDictionary[Configuration, _Known] = WeakKeyDictionary()
+_KNOWN: WeakKeyDictionary[Configuration, Known] = WeakKeyDictionary()
 
 
-def _known(config: Configuration) -> _Known:
-    return _per_configuration(_KNOWN, config, (len(config.nodes), len(config.links)), _Known)
+def _known(config: Configuration) -> Known:
+    return _per_configuration(_KNOWN, config, (len(config.nodes), len(config.links)), Known)
 
 
-Built = TypeVar("Built", "_Known", "_Settings")
+Built = TypeVar("Built", "Known", "_Settings")
 
 
 def _per_configuration(cache: WeakKeyDictionary[Configuration, Built], config: Configuration,
@@ -139,10 +142,11 @@ def _per_configuration(cache: WeakKeyDictionary[Configuration, Built], config: C
     return found
 
 
-def owner_of(config: Configuration, parameter: Parameter) -> NodeInstance | None:
+def owner_of(config: Configuration, parameter: Parameter,
+             known: Known | None = None) -> NodeInstance | None:
     """The node instance a parameter is private to (``/ns/node/param`` of ``/ns/node``;
     a ROS 2 parameter always belongs to its node), or None for a shared one."""
-    by_name = _known(config).by_name
+    by_name = (known or _known(config)).by_name
     name = parameter.name
     while "/" in name.rstrip("/"):
         name = name.rstrip("/").rsplit("/", 1)[0]

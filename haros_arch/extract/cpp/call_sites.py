@@ -54,6 +54,9 @@ class CallSites:
         # part that the calls in the node's files fill (``links``)
         self.external = external
         self.marked: set[tuple[str, int]] = set()  # functions given a placeholder
+        # a virtual method given a placeholder -> (itself, the USRs of the base methods
+        # it overrides): a call of one of those may run it (``links.OVERRIDES``)
+        self.overrides: dict[str, tuple[Cursor, list[str]]] = {}
         self._index: dict[tuple[str, int], list[tuple[Cursor, Cursor]]] | None = None
         self._scopes: dict[tuple[str, int], Scope] = {}
         self._active: set[tuple[str, int]] = set()  # parameters being read (recursion)
@@ -97,6 +100,9 @@ class CallSites:
         if index is None or not usr or PLACEHOLDER in usr or SEPARATOR in usr:
             return None
         self.marked.add(key_of(function.canonical))
+        if usr not in self.overrides:
+            self.overrides[usr] = (function,
+                                   [b.canonical.get_usr() for b in overridden(function)])
         return f"{PLACEHOLDER}{usr}{SEPARATOR}{index}{PLACEHOLDER}"
 
     def passing_sites(self, done: set[tuple[str, int]]
@@ -218,6 +224,33 @@ class CallSites:
                         self._index.setdefault(key_of(target.canonical), []).append(
                             (arguments, function))
         return self._index
+
+
+def overridden(method: Cursor, depth: int = 0) -> list[Cursor]:
+    """The virtual methods of ``method``'s base classes (transitively) that it
+    overrides: the same name and number of parameters (``AnalyzerGroup::init`` over
+    ``Analyzer::init``, called as ``boost::shared_ptr<Analyzer>``'s ``group->init``)."""
+    if method.kind != CursorKind.CXX_METHOD or not method.is_virtual_method() or depth > 8:
+        return []
+    params = len([c for c in method.get_children() if c.kind == CursorKind.PARM_DECL])
+    found: list[Cursor] = []
+    parent = method.semantic_parent
+    for base in parent.get_children() if parent is not None else []:
+        if base.kind != CursorKind.CXX_BASE_SPECIFIER:
+            continue
+        decl = base.type.get_canonical().get_declaration()
+        decl = decl.get_definition() or decl
+        for other in decl.get_children():
+            if other.kind == CursorKind.CXX_METHOD and other.spelling == method.spelling and (
+                other.is_virtual_method()
+            ) and len([c for c in other.get_children()
+                       if c.kind == CursorKind.PARM_DECL]) == params:
+                found.append(other)
+                break
+        else:
+            continue
+        found.extend(overridden(found[-1], depth + 1))
+    return found
 
 
 def argument(call: Cursor, parm: Cursor, index: int) -> Cursor | None:

@@ -171,8 +171,10 @@ class Namespaces:
             if value is None and found is not None:  # left to its default initialiser
                 value, where = initializer(field), None
             if value is None:
-                # a member nothing sets: the default handle
-                return ("",) if is_handle(expr) else UNKNOWN
+                # a member nothing sets: the default handle when it holds one; a pointer
+                # (or smart pointer) to one points to a handle set where we do not see
+                # (``Impl impl{&nh}``, a copy of the struct): not known
+                return ("",) if is_handle(expr) and _holds_handle(field) else UNKNOWN
             # read where it is written: ``ros::NodeHandle right(nh, "right"); right_nh_ =
             # right;``
             return self.of(value, Scope(None, self.macros, self.source, self.sites)
@@ -305,6 +307,15 @@ class Namespaces:
             return parent
         child = render(scope.string(args[index]))
         return (normalise(join_name(render(parent), child)),)
+
+
+def _holds_handle(field: Cursor) -> bool:
+    """A member whose type is a handle class itself, not a pointer or reference to one."""
+    ctype = field.type.get_canonical()
+    if ctype.kind in (TypeKind.POINTER, TypeKind.LVALUEREFERENCE, TypeKind.RVALUEREFERENCE):
+        return False
+    decl = ctype.get_declaration()
+    return decl is not None and qualified_name(decl) in api.HANDLE_CLASSES
 
 
 def _is_global(decl: Cursor) -> bool:

@@ -33,6 +33,14 @@ from .values import PLACEHOLDER, SEPARATOR, Scope, key_of, render
 
 Fact = tuple[str, int, str, str]  # callee USR, parameter index, value passed, call site
 CALLED = -1  # the index of a fact that says only that the call site calls the function
+# the index of a fact that says the function (a virtual method) overrides the one whose
+# USR is its value: the handle a call of that one passes (at the parameter whose index
+# is the fact's site) is passed to it too, as the call may run it
+# (``boost::shared_ptr<Analyzer> group; group->init(base, nh)`` runs
+# ``AnalyzerGroup::init``). Handles only: a string member a call passes is read as its
+# constructor sets it, not as a later method does (nav2's CostmapFilter::activate passes
+# ``filter_info_topic_``, "" in its constructor, set from a parameter in onInitialize)
+OVERRIDES = -2
 _SPECIALISED = frozenset({CursorKind.FUNCTION_DECL, CursorKind.CONSTRUCTOR,
                           CursorKind.CXX_METHOD})
 MAX_VALUES = 8
@@ -80,6 +88,10 @@ def argument_facts(sites: CallSites, namespaces: Namespaces,
                 # ``CallFinder._made_in``, a constructor template's names)
                 facts.extend((template.get_usr(), index, value, at)
                              for _usr, index, value, at in facts[given:])
+    for usr, (function, bases) in sites.overrides.items():
+        params = [c for c in function.get_children() if c.kind == CursorKind.PARM_DECL]
+        facts.extend((usr, OVERRIDES, base, str(index)) for base in bases if base
+                     for index, parm in enumerate(params) if is_handle(parm))
     return list(dict.fromkeys(facts))
 
 
@@ -171,7 +183,7 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact],
     the words ``unseen`` of the code where the parse left errors (``*``: anywhere)."""
     facts = list(facts)
     passed = _passed(facts)
-    called = {fact[0] for fact in facts}
+    called = {fact[0] for fact in facts if fact[1] != OVERRIDES}
     constructed = {class_of(usr) for usr in called if _constructor(usr)}
     out: list[PrimitiveCall] = []
     found: list[Diagnostic] = []
@@ -240,10 +252,25 @@ def _constructor(usr: str) -> bool:
 def _passed(facts: Iterable[Fact]) -> dict[str, dict[str, dict[int, str]]]:
     """USR -> call site -> parameter index -> the value passed there."""
     passed: dict[str, dict[str, dict[int, str]]] = {}
+    facts = list(facts)
     for usr, index, value, site in facts:
-        if index != CALLED:
+        if index >= 0:
             passed.setdefault(usr, {}).setdefault(site, {})[index] = value
+    for usr, index, base, parameter in facts:
+        if index == OVERRIDES and base in passed and parameter.isdigit():
+            # the calls of the base method: sites of the override too, for that
+            # parameter (a site that passes the override's own placeholder back, a
+            # recursive group of analyzers, is a chain of any length: ``_expand``)
+            mine = passed.setdefault(usr, {})
+            for site, values in passed[base].items():
+                if int(parameter) in values:
+                    mine.setdefault(site, {})[int(parameter)] = values[int(parameter)]
     return passed
+
+
+def _marked_usrs(text: str) -> set[str]:
+    """The functions whose placeholders ``text`` holds."""
+    return {found.group(1) for found in _MARK.finditer(text)} if PLACEHOLDER in text else set()
 
 
 def _expand(text: str, passed: dict[str, dict[str, dict[int, str]]],
@@ -261,7 +288,11 @@ def _expand(text: str, passed: dict[str, dict[str, dict[int, str]]],
         def fill(found: re.Match[str], values: dict[int, str] = values) -> str:
             if found.group(1) != usr:
                 return found.group(0)
-            return values.get(int(found.group(2)), "?")
+            value = values.get(int(found.group(2)), "?")
+            # a value that holds the function's own placeholder (a call it makes of
+            # itself, directly or through a base method) stands for a chain of any
+            # length: unknown (it expanded until MAX_VALUES made every value unknown)
+            return "?" if usr in _marked_usrs(value) else value
         for filled in _expand(_MARK.sub(fill, text), passed, depth + 1):
             if filled not in out:
                 out.append(filled)

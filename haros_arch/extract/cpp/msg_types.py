@@ -109,7 +109,9 @@ def _synthesised(decl: Cursor) -> bool:
 
 
 def param_type(ctype: Type) -> str | None:
-    """The parameter type of a C++ value type, where cheap: double, int, str, bool."""
+    """The parameter type of a C++ value type, where cheap: double, int, str, bool, an
+    array of one (``T[]``), and ``dict`` for a ``std::map`` keyed by strings (roscpp's
+    getParam fills one from a dictionary only)."""
     ctype = _bare(ctype)
     if ctype.kind in _PARAM_TYPES:
         return _PARAM_TYPES[ctype.kind]
@@ -126,6 +128,9 @@ def param_type(ctype: Type) -> str | None:
         element = ctype.get_template_argument_type(0)
         inner = param_type(element) if element.kind != TypeKind.INVALID else None
         return f"{inner}[]" if inner is not None and not inner.endswith("[]") else None
+    if decl.spelling == "map" and ctype.get_num_template_arguments() > 1:
+        key = ctype.get_template_argument_type(0)
+        return "dict" if key.kind != TypeKind.INVALID and param_type(key) == "str" else None
     return None
 
 

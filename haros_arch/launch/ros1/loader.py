@@ -112,7 +112,13 @@ class Ros1Loader:
         try:
             result = substitute(raw, ctx)
         except ArgUndefined as err:
-            if err.name in scope.arg_names or scope.in_include:
+            if scope.command_line and err.name not in scope.arg_names:
+                # roslaunch makes every ``name:=value`` of its command line an argument
+                # of the top-level file (load_sysargs_into_context), declared or not, and
+                # pass_all_args hands them on: ``$(arg bag_filename)`` with no <arg>
+                # (cartographer_ros' demo launches) wants a value from the command line
+                self.report("LAUNCH_ARG_UNSET", scope, element, name=err.name)
+            elif err.name in scope.arg_names or scope.in_include:
                 self.report("LAUNCH_ARG_REQUIRED", scope, element,
                             path=self.workspace.relpath(scope.path), name=err.name)
             else:

@@ -143,6 +143,14 @@ public:
 };
 Quaternion createQuaternionFromRPY(double roll, double pitch, double yaw);
 Quaternion createQuaternionFromYaw(double yaw);
+// a geometry_msgs::Quaternion (tf/transform_datatypes.h), whose header this stand-in
+// does not include: the message's fields, and it converts to the message type
+struct QuaternionMsg {
+  double x, y, z, w;
+  template<class M> operator M() const;
+};
+QuaternionMsg createQuaternionMsgFromYaw(double yaw);
+QuaternionMsg createQuaternionMsgFromRollPitchYaw(double roll, double pitch, double yaw);
 template<class M> M createQuaternionMsgFromYaw(double yaw);
 double getYaw(const Quaternion& q);
 template<class M> double getYaw(const M& q);
