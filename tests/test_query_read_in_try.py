@@ -1,6 +1,7 @@
 """A parameter read without a default inside a ``try`` block is prepared for the
-parameter not to be set (rclcpp throws, rospy raises KeyError, and a handler is there):
-no "read but never set". navigation2's collision monitor reads the deprecated
+parameter not to be set when a handler catches what a missing parameter raises (rclcpp
+throws, rospy raises KeyError) and goes on after the block (no ``throw`` / ``raise``,
+``return`` or exit in it): no "read but never set". navigation2's collision monitor reads the deprecated
 ``<polygon>.max_points`` so, only to warn when a configuration still sets it
 (polygon.cpp:455-464); the same read outside a ``try`` is still a finding."""
 
@@ -30,10 +31,15 @@ public:
       frame_ = declare_parameter<std::string>("frame");  // its failure is not caught
     } catch (const tf2::TransformException &) {
     }
+    try {
+      topic_ = declare_parameter<std::string>("topic");
+    } catch (const std::exception & ex) {  // caught, and thrown on: the node fails
+      throw std::runtime_error(std::string("no topic: ") + ex.what());
+    }
     min_points_ = declare_parameter<int>("min_points");
   }
   int max_points_ = 0, min_points_ = 0;
-  std::string frame_;
+  std::string frame_, topic_;
 };
 int main(int argc, char ** argv)
 {
@@ -55,6 +61,11 @@ rate = rospy.get_param('~rate')
 
 def main():
     needed = rospy.get_param('~needed')
+    try:
+        port = rospy.get_param('~port')
+    except KeyError:
+        rospy.logfatal('no port')
+        return
 
 
 try:
@@ -94,5 +105,5 @@ def test_a_read_in_a_try_block_is_no_read_not_set(write_tree) -> None:
                     Options(cache_dir=None))
     unset = sorted(f.message.split(" ")[0] for f in run_catalogue(model)
                    if f.rule == "parameter-read-not-set")
-    assert unset == ["/monitor/frame", "/monitor/min_points", "/watcher/needed",
-                     "/watcher/rate"]
+    assert unset == ["/monitor/frame", "/monitor/min_points", "/monitor/topic",
+                     "/watcher/needed", "/watcher/port", "/watcher/rate"]

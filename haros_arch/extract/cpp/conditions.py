@@ -76,7 +76,7 @@ class ConditionReader:
         if kind == CursorKind.CXX_TRY_STMT and children:
             attempt = self._condition(node, "try", "")
             if any(c.kind == CursorKind.CXX_CATCH_STMT and _CATCHES_FAILURE.search(
-                    self._parens(c.extent.start)) for c in children[1:]):
+                    self._parens(c.extent.start)) and _goes_on(c) for c in children[1:]):
                 self.handled.add(attempt)
             return [(children[0], (attempt,)), *((c, ()) for c in children[1:])]
         if kind == CursorKind.CONDITIONAL_OPERATOR and len(children) == 3:
@@ -227,3 +227,18 @@ class ConditionReader:
 
 def _clean(raw: bytes) -> str:
     return _SPACE.sub(" ", raw.decode("utf-8", "replace")).strip()
+
+
+# what ends a handler other than by going on after the ``try``
+_LEAVES = frozenset({CursorKind.CXX_THROW_EXPR, CursorKind.RETURN_STMT})
+_EXITS = frozenset({"exit", "abort", "_exit", "quick_exit", "terminate", "shutdown"})
+
+
+def _goes_on(handler: Cursor) -> bool:
+    """Whether a ``catch`` block lets the code go on after its ``try`` (no ``throw``,
+    ``return`` or exit in it): then the failure it catches is handled, as navigation2's
+    ``catch (const std::exception &) {}`` around a deprecated parameter's read; one that
+    rethrows or returns false makes the failure the caller's."""
+    return not any(node.kind in _LEAVES or (
+        node.kind == CursorKind.CALL_EXPR and node.spelling in _EXITS)
+        for node in handler.walk_preorder())

@@ -51,6 +51,24 @@ _PARAM_KINDS = ("read", "write", "declare")
 _CONVERSIONS = frozenset({"int", "float", "str", "bool"})
 # a handler's exception type that catches a parameter read's failure (rospy's KeyError,
 # rclpy's ParameterNotDeclaredException / ParameterUninitializedException, Exception)
+_EXITS = frozenset({"exit", "_exit", "abort", "signal_shutdown", "shutdown"})
+
+
+def _goes_on(handler: ast.ExceptHandler) -> bool:
+    """Whether an ``except`` block lets the code go on after its ``try`` (no ``raise``,
+    ``return`` or exit in it): the failure it catches is then handled."""
+    for node in ast.walk(handler):
+        if isinstance(node, ast.Raise | ast.Return):
+            return False
+        if isinstance(node, ast.Call):
+            func = node.func
+            name = func.attr if isinstance(func, ast.Attribute) else (
+                func.id if isinstance(func, ast.Name) else "")
+            if name in _EXITS:
+                return False
+    return True
+
+
 _CATCHES_FAILURE = re.compile(
     r"\b(?:KeyError|LookupError|Exception|BaseException|ParameterNotDeclaredException"
     r"|ParameterUninitializedException)\b")
@@ -216,7 +234,8 @@ class Walker:
 
     def _Try(self, statement: ast.Try, frame: Frame, conds: Conditions) -> None:
         attempt = condition("try", "", self._where(frame, statement))
-        if any(handler.type is None or _CATCHES_FAILURE.search(self._text(frame, handler.type))
+        if any((handler.type is None or _CATCHES_FAILURE.search(
+                self._text(frame, handler.type))) and _goes_on(handler)
                for handler in statement.handlers):
             self._handled.add(attempt)
         self._block(statement.body, frame, (*conds, attempt))
