@@ -1,9 +1,9 @@
 """A parameter read without a default inside a ``try`` block is prepared for the
 parameter not to be set when a handler catches what a missing parameter raises (rclcpp
 throws, rospy raises KeyError) and goes on after the block (no ``throw`` / ``raise``,
-``return`` or exit in it): no "read but never set". navigation2's collision monitor reads the deprecated
-``<polygon>.max_points`` so, only to warn when a configuration still sets it
-(polygon.cpp:455-464); the same read outside a ``try`` is still a finding."""
+``return`` or exit in it): no "read but never set". navigation2's collision monitor
+reads the deprecated ``<polygon>.max_points`` so, only to warn when a configuration still
+sets it (polygon.cpp:455-464); the same read outside a ``try`` is still a finding."""
 
 from __future__ import annotations
 
