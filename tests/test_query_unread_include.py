@@ -147,3 +147,43 @@ def test_a_ros2_unread_include_leaves_them_undecided(write_tree: Any, include: s
     undecided = found["subscriber-without-publisher-undecided"]
     said = "action not interpreted" if include.startswith("Controller") else "(not read)"
     assert len(undecided) == 1 and said in undecided[0]
+
+
+ROS2_READER = ROS2_NODE.replace(
+    "    node.create_subscription(String, 'points', lambda m: None, 10)\n",
+    "    node.create_subscription(String, 'points', lambda m: None, 10)\n"
+    "    node.declare_parameter('frame', rclpy.Parameter.Type.STRING)\n"
+    "    frame = node.get_parameter('frame').value\n")
+
+
+@pytest.mark.parametrize("after", [True, False], ids=["include-after", "include-before"])
+def test_a_ros2_unread_include_sets_no_parameter_of_a_node_before_it(
+        write_tree: Any, after: bool) -> None:
+    """A ROS 2 parameter belongs to its node: a file included and not read can set it only
+    through a ``SetParameter`` that reaches the nodes launched after the include (Autoware:
+    one include of ``topic_state_monitor?.launch.xml``, a name not known, left 285 "read
+    but never set" of every node undecided). Before the node, it may; after it, not."""
+    include = ("IncludeLaunchDescription(PythonLaunchDescriptionSource(PathJoinSubstitution(["
+               "FindPackageShare('not_in_workspace'), 'launch', 'sensor.launch.py'])))")
+    launch = ROS2_LAUNCH.replace("        INCLUDE,\n", "") if after else ROS2_LAUNCH.replace(
+        "INCLUDE", include)
+    if after:
+        launch = launch.replace("name='scan'),\n", f"name='scan'),\n        {include},\n")
+    root: Path = write_tree({
+        "src/conv/package.xml": package_xml("conv", "ament_python"),
+        "src/conv/setup.py": "from setuptools import setup\nsetup(name='conv', "
+                             "packages=['conv'], entry_points={'console_scripts': "
+                             "['scan = conv.scan:main']})\n",
+        "src/conv/conv/__init__.py": "",
+        "src/conv/conv/scan.py": ROS2_READER,
+        "src/conv/launch/a.launch.py": launch,
+        "project.yaml": "project: p\nconfigurations:\n  c: [conv/launch/a.launch.py]\n",
+    })
+    project = load(str(root / "project.yaml"))
+    model = analyse(project, {"PATH": os.environ.get("PATH", "")}, Options(cache_dir=None))
+    found = {f.rule: f.message for f in run_catalogue(model, project)}
+    if after:
+        assert found["parameter-read-not-set"].startswith("/scan/frame ")
+    else:
+        assert "parameter-read-not-set" not in found
+        assert "(not read)" in found["parameter-read-not-set-undecided"]

@@ -249,7 +249,8 @@ def _unknown_users(charge: Charge, config: Any, resource: Any
         if owner is not None:
             found = [] if owner.is_complete else [owner]
             if not resource.is_set:  # an include not read may set it
-                found.extend(known.unread)
+                found.extend(known.unread if owner.ros_version == 1 else [
+                    item for item in known.unread if _sets_later(item, owner)])
         charge(len(known.reconfigured_unresolved) // 64)
         found.extend(reconfiguring(config, resource))
         if not resource.is_set:
@@ -257,6 +258,16 @@ def _unknown_users(charge: Charge, config: Any, resource: Any
     found.extend(known.guessed.get(id(resource), ()))
     charge(len(found) // 64)
     return _unique(found)
+
+
+def _sets_later(include: LaunchItem, owner: NodeInstance) -> bool:
+    """Whether a ROS 2 include not read may set a parameter of ``owner``: a ROS 2
+    parameter belongs to its node, and a file it includes can set it only through a
+    ``SetParameter`` that reaches the nodes launched after the include in the file that
+    includes it (ROS 1's parameter server takes any name from any file). Nodes launched
+    from files that file includes later are not followed."""
+    where, at = include.location, owner.location
+    return where.file is not None and where.file == at.file and where.line < at.line
 
 
 def _unique(items: list[Any]) -> list[Any]:
