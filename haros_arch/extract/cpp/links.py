@@ -100,8 +100,10 @@ def _value(arg: Cursor, scope: Scope, namespaces: Namespaces,
     if is_handle(arg):
         return render(namespaces.of(arg, scope))
     if msg_types.param_type(arg.type) == "str":
-        marked = named(arg, scope) if named is not None else None
-        return marked if marked is not None else render(scope.string(arg))
+        parts = scope.string(arg)
+        # only a string with one unknown run can hold a parameter's value with a mark
+        marked = named(arg, scope) if named is not None and parts.count(None) == 1 else None
+        return marked if marked is not None else render(parts)
     return None
 
 

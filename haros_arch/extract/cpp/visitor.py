@@ -177,6 +177,8 @@ class CallFinder:
         self.facts: list[Fact] = []  # what this file passes to other files' functions
         self.wrappers = Wrappers(self)  # the file's functions that wrap the ROS API
         self.members: MemberWrites | None = None
+        # a local's place -> the parameter it holds the value of, if any (_held_parameters)
+        self._held: dict[tuple[str, int], str | None] = {}
         # parameter reads and the member variable each stores its value in
         self._stored: list[tuple[PrimitiveCall, Cursor, Key | None]] = []
         # (file, offset) of the macro expansions and #includes of the workspace's files:
@@ -1073,11 +1075,16 @@ class CallFinder:
                 decl.semantic_parent is None or decl.semantic_parent.kind not in FUNCTIONS
             ):
                 continue
-            source = self._parameter_source(node, scope, 0)
-            if source is not None and not any(
-                mark in source[0] for mark in ("?", PLACEHOLDER, PARAMETER)
-            ):
-                found[decl.spelling] = source[0]
+            # a local's one value is its function's: asked once per unit, whichever walk
+            # (the function's own, a construction site's) meets the condition
+            key = place_of(decl)
+            if key not in self._held:
+                source = self._parameter_source(node, scope, 0)
+                self._held[key] = source[0] if source is not None and not any(
+                    mark in source[0] for mark in ("?", PLACEHOLDER, PARAMETER)) else None
+            parameter = self._held[key]
+            if parameter is not None:
+                found[decl.spelling] = parameter
         return tuple(sorted(found.items()))
 
     def _marked(self, expr: Cursor, scope: Scope) -> str | None:
