@@ -104,6 +104,10 @@ class RosFunction:
     # the same function as ROS 2's library makes the call, where it differs (a class
     # both have, by one name: camera_info_manager's CameraInfoManager)
     ros2: RosFunction | None = None
+    # a ROS 1 library's class that ROS 2 code names too for something else (ROS 1
+    # ros_control's ControllerManager, built by a hardware node, against ros2_control's,
+    # a node of its own): no call in ROS 2 code
+    ros1_only: bool = False
 
 
 NODE_HANDLE = "ros::NodeHandle"
@@ -268,6 +272,19 @@ LIBRARIES: dict[tuple[str, str], RosFunction] = {
             fixed_type="diagnostic_msgs/msg/DiagnosticArray", on_handle=False,
             siblings=(("declare", "diagnostic_updater.period", "double"),
                       ("declare", "diagnostic_updater.use_fqn", "bool")))),
+    # ROS 1 ros_control: the manager a hardware node builds serves the manager's
+    # services under ``controller_manager/`` in the namespace of the handle given (by
+    # default the node's), where the spawners load controllers into it
+    ("controller_manager::ControllerManager", "ControllerManager"): RosFunction(
+        "server", fixed_name="controller_manager/load_controller",
+        fixed_type="controller_manager_msgs/LoadController", on_handle=False,
+        handle_default="", ros1_only=True, siblings=tuple(
+            ("server", name, f"controller_manager_msgs/{kind}") for name, kind in (
+                ("list_controllers", "ListControllers"),
+                ("list_controller_types", "ListControllerTypes"),
+                ("unload_controller", "UnloadController"),
+                ("switch_controller", "SwitchController"),
+                ("reload_controller_libraries", "ReloadControllerLibraries")))),
     ("tf::TransformBroadcaster", "TransformBroadcaster"): RosFunction(
         "publish", fixed_name="/tf", fixed_type=_TF, on_handle=False),
     ("tf::TransformListener", "TransformListener"): RosFunction(

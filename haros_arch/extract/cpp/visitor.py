@@ -781,6 +781,8 @@ class CallFinder:
                   at: Cursor | None = None, at_scope: Scope | None = None) -> None:
         """Emit ``call`` of ``spec``; ``at`` is the call that makes it, when another one
         (``nh.subscribe(ops)`` for ``ops.init<M>(...)``) gives its location and handle."""
+        if self.ros2 and spec.ros1_only:
+            return  # a ROS 1 library's class by a name ROS 2 code gives another
         if self.ros2 and spec.ros2 is not None:
             spec = spec.ros2  # the call as ROS 2's library makes it
         shift, handle_arg = 0, spec.handle_arg
