@@ -8,7 +8,7 @@ is_zero, mavros' maxDatagramSize, polled_camera's getTopic, OpenCV's version mac
 urg_node's ROS 1 bond::Bond; tf2_ros' lookupTransform result as a message, ROS 1 and 2;
 humble image_view's HighGUI windows and message_filters subscription, turtlebot3_node's
 parameter events, ros2_controllers' Duration == and std::optional{value}; wiimote's
-ROS 1 publisher compared with nullptr).
+ROS 1 publisher compared with nullptr, ros::master's topic list).
 Each parses with no error and keeps its calls. The sources are
 fixtures/cpp/standin_gaps."""
 
@@ -219,3 +219,14 @@ def test_ros1_handles_compare_with_null(write_tree) -> None:
     assert sorted((c.kind, c.name) for c in result.calls) == [
         ("client", "reset"), ("publish", "extra"), ("publish", "main"),
         ("subscribe", "extra_in")]
+
+
+def test_ros1_master_queries(write_tree) -> None:
+    """roscpp's ros::master (getTopics, TopicInfo, getNodes, check, getURI) had no
+    stand-in: ``ros::master::getTopics (t_list);`` parsed as a declaration of a second
+    ``t_list`` (sac_inc_ground_removal_standalone.cpp:107), an error in the constructor
+    that subscribes, so the node was partial."""
+    result = _extract(write_tree, _source("ros1_master_topics.cpp"), "catkin")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("subscribe", "cloud_in"), ("publish", "cloud_out")]
