@@ -105,3 +105,51 @@ def test_ros2_code_naming_a_controller_manager_makes_no_ros1_service(write_tree:
                     Options(cache_dir=None))
     node = next(n for p in model.packages for n in p.nodes if n.name == "cm/cm")
     assert [c for c in node.calls if c.kind == "server"] == []
+
+
+def test_controller_manager_sources_in_the_workspace_are_read_instead(write_tree: Any) -> None:
+    # with ros_control's sources in the workspace its header is no stand-in: the node
+    # takes the services its code advertises, not the stand-in's row as well
+    xml = package_xml("controller_manager", None).replace(
+        "</package>", "<depend>roscpp</depend></package>")
+    root = write_tree({
+        "src/controller_manager/package.xml": xml,
+        "src/controller_manager/CMakeLists.txt":
+            "project(controller_manager)\nfind_package(catkin REQUIRED)\n"
+            "catkin_package(INCLUDE_DIRS include LIBRARIES controller_manager)\n"
+            "add_library(controller_manager src/controller_manager.cpp)\n",
+        "src/controller_manager/include/controller_manager/controller_manager.h":
+            "#include <ros/ros.h>\n#include <std_srvs/Empty.h>\n"
+            "namespace controller_manager {\nclass ControllerManager {\n public:\n"
+            "  ControllerManager(void* hw, const ros::NodeHandle& nh = ros::NodeHandle());\n"
+            "  bool load(std_srvs::Empty::Request&, std_srvs::Empty::Response&);\n"
+            " private:\n  ros::NodeHandle cm_node_;\n  ros::ServiceServer srv_;\n};\n}\n",
+        "src/controller_manager/src/controller_manager.cpp":
+            "#include <controller_manager/controller_manager.h>\n"
+            "namespace controller_manager {\n"
+            "ControllerManager::ControllerManager(void* hw, const ros::NodeHandle& nh)\n"
+            "    : cm_node_(nh, \"controller_manager\") {\n"
+            "  srv_ = cm_node_.advertiseService(\"load_controller\",\n"
+            "                                   &ControllerManager::load, this);\n"
+            "}\n"
+            "bool ControllerManager::load(std_srvs::Empty::Request&, std_srvs::Empty::Response&)"
+            " { return true; }\n}\n",
+        "src/robot_base/package.xml": package_xml("robot_base", None).replace(
+            "</package>", "<depend>roscpp</depend><depend>controller_manager</depend>"
+                          "</package>"),
+        "src/robot_base/CMakeLists.txt":
+            "project(robot_base)\nfind_package(catkin REQUIRED COMPONENTS controller_manager)\n"
+            "add_executable(base_node src/base.cpp)\n"
+            "target_link_libraries(base_node ${catkin_LIBRARIES})\n",
+        "src/robot_base/src/base.cpp":
+            "#include <ros/ros.h>\n#include <controller_manager/controller_manager.h>\n"
+            "int main(int argc, char** argv) {\n  ros::init(argc, argv, \"base_node\");\n"
+            "  ros::NodeHandle nh;\n  int robot = 0;\n"
+            "  controller_manager::ControllerManager cm(&robot, nh);\n  ros::spin();\n}\n",
+        "project.yaml": "project: p\nworkspace: [src]\nconfigurations: {}\n"})
+    model = analyse(load(str(root / "project.yaml")), {"PATH": os.environ.get("PATH", "")},
+                    Options(cache_dir=None))
+    node = next(n for p in model.packages for n in p.nodes if n.name == "robot_base/base_node")
+    servers = [c for c in node.calls if c.kind == "server"]
+    assert servers and all(c.location.file.endswith("controller_manager.cpp")
+                           for c in servers), [(c.name, c.location.file) for c in servers]

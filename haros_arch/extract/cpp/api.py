@@ -104,10 +104,11 @@ class RosFunction:
     # the same function as ROS 2's library makes the call, where it differs (a class
     # both have, by one name: camera_info_manager's CameraInfoManager)
     ros2: RosFunction | None = None
-    # a ROS 1 library's class that ROS 2 code names too for something else (ROS 1
-    # ros_control's ControllerManager, built by a hardware node, against ros2_control's,
-    # a node of its own): no call in ROS 2 code
-    ros1_only: bool = False
+    # the row describes our stand-in of ``standin/fallback`` (a library installed, not
+    # in the workspace): a class of that name declared elsewhere makes no such call (ROS
+    # 1 ros_control's ControllerManager: with controller_manager's sources in the
+    # workspace its own code is read; ros2_control's is a node of its own)
+    standin_only: bool = False
 
 
 NODE_HANDLE = "ros::NodeHandle"
@@ -278,7 +279,7 @@ LIBRARIES: dict[tuple[str, str], RosFunction] = {
     ("controller_manager::ControllerManager", "ControllerManager"): RosFunction(
         "server", fixed_name="controller_manager/load_controller",
         fixed_type="controller_manager_msgs/LoadController", on_handle=False,
-        handle_default="", ros1_only=True, siblings=tuple(
+        handle_default="", standin_only=True, siblings=tuple(
             ("server", name, f"controller_manager_msgs/{kind}") for name, kind in (
                 ("list_controllers", "ListControllers"),
                 ("list_controller_types", "ListControllerTypes"),
