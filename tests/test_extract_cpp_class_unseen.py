@@ -332,6 +332,58 @@ def test_laser_geometry_is_a_stand_in(write_tree: Any) -> None:
         d.message for d in model.diagnostics if d.code.startswith("CPP")]
 
 
+MESHES = """
+    #include <ros/ros.h>
+    #include <resource_retriever/retriever.h>
+    #include <sensor_msgs/PointCloud2.h>
+
+    class SelfFilter {
+     public:
+      SelfFilter() {
+        nh_.param<std::string>("mesh", url_, "package://robot/meshes/base.stl");
+        load(url_);
+        pub_ = nh_.advertise<sensor_msgs::PointCloud2>("cloud_filtered", 1);
+      }
+     private:
+      bool load(const std::string& url) {
+        resource_retriever::Retriever retriever;
+        resource_retriever::MemoryResource res;
+        try {
+          res = retriever.get(url);
+        } catch (resource_retriever::Exception& e) {
+          ROS_ERROR("%s", e.what());
+          return false;
+        }
+        const uint8_t* first = res.data.get();
+        return res.size > 0 && first != nullptr && res.data[0] != 0;
+      }
+      ros::NodeHandle nh_;
+      ros::Publisher pub_;
+      std::string url_;
+      mutable resource_retriever::Retriever cached_;
+    };
+
+    int main(int argc, char** argv) {
+      ros::init(argc, argv, "teleop");
+      SelfFilter filter;
+      ros::spin();
+    }
+    """
+
+
+def test_resource_retriever_is_a_stand_in(write_tree: Any) -> None:
+    # resource_retriever installed, not in the workspace: its Retriever reads a URL into
+    # memory and makes no ROS call (a stand-in of FALLBACK), so the node that loads its
+    # meshes stays complete (pr2_navigation_self_filter's self_mask.h:95, load_mesh.cpp)
+    node, model = _teleop(write_tree, MESHES, "resource_retriever", "sensor_msgs")
+    assert node.completeness == "complete", node.completeness_reasons
+    assert [(c.kind, c.name) for c in node.calls] == [("read", "mesh"),
+                                                      ("publish", "cloud_filtered")]
+    assert not [d for d in model.diagnostics if d.code in (
+        "CPP_INCLUDE_MISSING", "CPP_PARSE_ERROR", "CPP_NAMES_DECLARED")], [
+        d.message for d in model.diagnostics if d.code.startswith("CPP")]
+
+
 def test_the_cache_follows_the_file_that_defines_the_class(write_tree: Any,
                                                            tmp_path: Any) -> None:
     # the unit's cached result holds what the library's source said: a changed source

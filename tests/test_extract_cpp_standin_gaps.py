@@ -7,7 +7,8 @@ setters, topic_tools' QoS !=; ROS 1: tf's LinearMath and listener methods, gmapp
 is_zero, mavros' maxDatagramSize, polled_camera's getTopic, OpenCV's version macros,
 urg_node's ROS 1 bond::Bond; tf2_ros' lookupTransform result as a message, ROS 1 and 2;
 humble image_view's HighGUI windows and message_filters subscription, turtlebot3_node's
-parameter events, ros2_controllers' Duration == and std::optional{value}).
+parameter events, ros2_controllers' Duration == and std::optional{value}; wiimote's
+ROS 1 publisher compared with nullptr, ros::master's topic list).
 Each parses with no error and keeps its calls. The sources are
 fixtures/cpp/standin_gaps."""
 
@@ -205,3 +206,27 @@ def test_ros2_duration_equality_and_deduced_optional(write_tree) -> None:
     assert _errors(result) == []
     assert [(c.kind, c.name) for c in result.calls] == [
         ("subscribe", "cmd_vel"), ("publish", "out")]
+
+
+def test_ros1_handles_compare_with_null(write_tree) -> None:
+    """roscpp's Publisher, Subscriber, ServiceServer, ServiceClient and Timer have
+    ``operator void*()`` (and ==, !=, <), not an explicit ``operator bool``: comparing
+    one with nullptr or NULL (wiimote_controller.cpp:591, advertised while the nunchuk is
+    attached) was an error in the function that publishes, so wiimote_node was
+    partial."""
+    result = _extract(write_tree, _source("ros1_handle_void_ptr.cpp"), "catkin")
+    assert _errors(result) == []
+    assert sorted((c.kind, c.name) for c in result.calls) == [
+        ("client", "reset"), ("publish", "extra"), ("publish", "main"),
+        ("subscribe", "extra_in")]
+
+
+def test_ros1_master_queries(write_tree) -> None:
+    """roscpp's ros::master (getTopics, TopicInfo, getNodes, check, getURI) had no
+    stand-in: ``ros::master::getTopics (t_list);`` parsed as a declaration of a second
+    ``t_list`` (sac_inc_ground_removal_standalone.cpp:107), an error in the constructor
+    that subscribes, so the node was partial."""
+    result = _extract(write_tree, _source("ros1_master_topics.cpp"), "catkin")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("subscribe", "cloud_in"), ("publish", "cloud_out")]

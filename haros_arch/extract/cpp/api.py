@@ -104,6 +104,11 @@ class RosFunction:
     # the same function as ROS 2's library makes the call, where it differs (a class
     # both have, by one name: camera_info_manager's CameraInfoManager)
     ros2: RosFunction | None = None
+    # the row describes our stand-in of ``standin/fallback`` (a library installed, not
+    # in the workspace): a class of that name declared elsewhere makes no such call (ROS
+    # 1 ros_control's ControllerManager: with controller_manager's sources in the
+    # workspace its own code is read; ros2_control's is a node of its own)
+    standin_only: bool = False
 
 
 NODE_HANDLE = "ros::NodeHandle"
@@ -268,6 +273,19 @@ LIBRARIES: dict[tuple[str, str], RosFunction] = {
             fixed_type="diagnostic_msgs/msg/DiagnosticArray", on_handle=False,
             siblings=(("declare", "diagnostic_updater.period", "double"),
                       ("declare", "diagnostic_updater.use_fqn", "bool")))),
+    # ROS 1 ros_control: the manager a hardware node builds serves the manager's
+    # services under ``controller_manager/`` in the namespace of the handle given (by
+    # default the node's), where the spawners load controllers into it
+    ("controller_manager::ControllerManager", "ControllerManager"): RosFunction(
+        "server", fixed_name="controller_manager/load_controller",
+        fixed_type="controller_manager_msgs/LoadController", on_handle=False,
+        handle_default="", standin_only=True, siblings=tuple(
+            ("server", name, f"controller_manager_msgs/{kind}") for name, kind in (
+                ("list_controllers", "ListControllers"),
+                ("list_controller_types", "ListControllerTypes"),
+                ("unload_controller", "UnloadController"),
+                ("switch_controller", "SwitchController"),
+                ("reload_controller_libraries", "ReloadControllerLibraries")))),
     ("tf::TransformBroadcaster", "TransformBroadcaster"): RosFunction(
         "publish", fixed_name="/tf", fixed_type=_TF, on_handle=False),
     ("tf::TransformListener", "TransformListener"): RosFunction(

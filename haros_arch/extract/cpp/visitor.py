@@ -13,6 +13,7 @@ from __future__ import annotations
 import dataclasses
 import functools
 import itertools
+import os
 import re
 from collections.abc import Callable, Iterator
 from typing import Any
@@ -783,6 +784,8 @@ class CallFinder:
                   at: Cursor | None = None, at_scope: Scope | None = None) -> None:
         """Emit ``call`` of ``spec``; ``at`` is the call that makes it, when another one
         (``nh.subscribe(ops)`` for ``ops.init<M>(...)``) gives its location and handle."""
+        if spec.standin_only and not _from_fallback((at or call).referenced):
+            return  # the class of that name is not our stand-in's: its code is read
         if self.ros2 and spec.ros2 is not None:
             spec = spec.ros2  # the call as ROS 2's library makes it
         shift, handle_arg = 0, spec.handle_arg
@@ -1234,6 +1237,23 @@ class CallFinder:
         if spec is None or spec.fixed_name is None:
             return
         self._emit(spec, field, [], decl, (), Scope(None, self.macros, self.source, self.sites))
+
+
+_FALLBACK = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))),
+                         "standin", "fallback")
+
+
+def _from_fallback(target: Cursor | None) -> bool:
+    """Whether ``target`` (the function or constructor a call names) is declared in a
+    stand-in of ``standin/fallback``."""
+    if target is None or target.location.file is None:
+        return False
+    return _in_fallback(target.location.file.name)
+
+
+@functools.lru_cache(maxsize=1024)
+def _in_fallback(path: str) -> bool:
+    return os.path.realpath(path).startswith(os.path.realpath(_FALLBACK) + os.sep)
 
 
 # classes whose VAR_DECL children are static data members

@@ -12,7 +12,12 @@ public:
   std::string getTopic() const;
   uint32_t getNumSubscribers() const;
   bool isLatched() const;
-  explicit operator bool() const;
+  // as roscpp declares it: valid handles convert to a non-null void* (so
+  // `if (pub)`, `nullptr == pub` and `bool ok = pub;` all compile)
+  operator void*() const;
+  bool operator<(const Publisher& rhs) const;
+  bool operator==(const Publisher& rhs) const;
+  bool operator!=(const Publisher& rhs) const;
 };
 class Subscriber {
 public:
@@ -20,7 +25,12 @@ public:
   void shutdown();
   std::string getTopic() const;
   uint32_t getNumPublishers() const;
-  explicit operator bool() const;
+  // as roscpp declares it: valid handles convert to a non-null void* (so
+  // `if (pub)`, `nullptr == pub` and `bool ok = pub;` all compile)
+  operator void*() const;
+  bool operator<(const Subscriber& rhs) const;
+  bool operator==(const Subscriber& rhs) const;
+  bool operator!=(const Subscriber& rhs) const;
 };
 }  // namespace ros
 #endif

@@ -13,4 +13,5 @@
 #include <ros/service.h>
 #include <ros/topic.h>
 #include <ros/callback_queue.h>
+#include <ros/master.h>
 #endif

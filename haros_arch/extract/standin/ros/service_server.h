@@ -9,7 +9,12 @@ public:
   ServiceServer();
   void shutdown();
   std::string getService() const;
-  explicit operator bool() const;
+  // as roscpp declares it: valid handles convert to a non-null void* (so
+  // `if (pub)`, `nullptr == pub` and `bool ok = pub;` all compile)
+  operator void*() const;
+  bool operator<(const ServiceServer& rhs) const;
+  bool operator==(const ServiceServer& rhs) const;
+  bool operator!=(const ServiceServer& rhs) const;
 };
 class ServiceClient {
 public:
@@ -22,7 +27,12 @@ public:
   bool waitForExistence(ros::Duration timeout = ros::Duration(-1));
   void shutdown();
   std::string getService();
-  explicit operator bool() const;
+  // as roscpp declares it: valid handles convert to a non-null void* (so
+  // `if (pub)`, `nullptr == pub` and `bool ok = pub;` all compile)
+  operator void*() const;
+  bool operator<(const ServiceClient& rhs) const;
+  bool operator==(const ServiceClient& rhs) const;
+  bool operator!=(const ServiceClient& rhs) const;
 };
 }  // namespace ros
 #endif

@@ -17,7 +17,12 @@ public:
   void stop();
   void setPeriod(const Duration& period, bool reset = true);
   bool hasPending();
-  explicit operator bool() const;
+  // as roscpp declares it: valid handles convert to a non-null void* (so
+  // `if (pub)`, `nullptr == pub` and `bool ok = pub;` all compile)
+  operator void*() const;
+  bool operator<(const Timer& rhs) const;
+  bool operator==(const Timer& rhs) const;
+  bool operator!=(const Timer& rhs) const;
 };
 typedef Timer WallTimer;
 typedef Timer SteadyTimer;
