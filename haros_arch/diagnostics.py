@@ -409,8 +409,9 @@ CATALOGUE: dict[str, Entry] = {
         "print/exec/except statements); it gives no calls."),
     "PY_PYTHON2": Entry(
         "info", "Python 2 syntax; read after a line-preserving repair",
-        "The file uses Python 2 statements (print, exec, 'except E, e'); they were "
-        "rewritten in memory so its ROS calls could be read. The file is never run."),
+        "The file uses Python 2 statements (print, exec, 'except E, e') or indents a "
+        "block with tabs and spaces mixed (a tab to the next multiple of 8 columns); they "
+        "were rewritten in memory so its ROS calls could be read. The file is never run."),
     "PY_TOO_COMPLEX": Entry(
         "warning", "Python code too large to analyse fully ({limit}); calls past it are "
         "not extracted",
