@@ -83,6 +83,13 @@ CATALOGUE: dict[str, Entry] = {
         "the package, one of which defines main(): that executable is taken as built, "
         "linking the package's libraries its code names, so launch files that run it "
         "find it."),
+    "CMAKE_EXTERNAL_PROJECT": Entry(
+        "warning", "ExternalProject_Add({name}) builds {folder} as a project of its own, "
+        "whose executables are not read; the nodes it builds are unknown",
+        "CMake configures and builds an external project's folder separately at build "
+        "time; the executables its CMakeLists.txt builds (and the package installs) are "
+        "not in the model, so launch files that run them and their interfaces are not "
+        "known."),
     "CMAKE_LIMIT": Entry(
         "warning", "CMake evaluation bounded: {detail}",
         "The CMake interpreter bounds its work (commands evaluated, loop iterations, "
