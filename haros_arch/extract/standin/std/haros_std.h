@@ -612,6 +612,26 @@ public:
   long use_count() const noexcept;
   explicit operator bool() const noexcept;
 };
+// shared_ptr<void> (rclcpp's type-erased messages, timer data, wait set entities) has no
+// dereference: the primary template's T& would make a complete shared_ptr<void> an error
+template<> class shared_ptr<void> {
+public:
+  typedef void element_type;
+  constexpr shared_ptr() noexcept;
+  constexpr shared_ptr(nullptr_t) noexcept;
+  template<class Y> explicit shared_ptr(Y* p);
+  template<class Y, class D> shared_ptr(Y* p, D d);
+  shared_ptr(const shared_ptr& other) noexcept;
+  template<class Y> shared_ptr(const shared_ptr<Y>& other) noexcept;
+  template<class Y, class D> shared_ptr(unique_ptr<Y, D>&& other);
+  shared_ptr& operator=(const shared_ptr& other) noexcept;
+  template<class Y> shared_ptr& operator=(const shared_ptr<Y>& other) noexcept;
+  void* get() const noexcept;
+  void reset() noexcept;
+  template<class Y> void reset(Y* p);
+  long use_count() const noexcept;
+  explicit operator bool() const noexcept;
+};
 template<class T, class U> bool operator==(const shared_ptr<T>& a, const shared_ptr<U>& b);
 template<class T> bool operator==(const shared_ptr<T>& a, nullptr_t);
 template<class T> bool operator!=(const shared_ptr<T>& a, nullptr_t);
