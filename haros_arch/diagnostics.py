@@ -83,6 +83,13 @@ CATALOGUE: dict[str, Entry] = {
         "the package, one of which defines main(): that executable is taken as built, "
         "linking the package's libraries its code names, so launch files that run it "
         "find it."),
+    "CMAKE_EXTERNAL_PROJECT": Entry(
+        "warning", "ExternalProject_Add({name}) builds {folder} as a project of its own, "
+        "whose executables are not read; the nodes it builds are unknown",
+        "CMake configures and builds an external project's folder separately at build "
+        "time; the executables its CMakeLists.txt builds (and the package installs) are "
+        "not in the model, so launch files that run them and their interfaces are not "
+        "known."),
     "CMAKE_LIMIT": Entry(
         "warning", "CMake evaluation bounded: {detail}",
         "The CMake interpreter bounds its work (commands evaluated, loop iterations, "
@@ -409,8 +416,9 @@ CATALOGUE: dict[str, Entry] = {
         "print/exec/except statements); it gives no calls."),
     "PY_PYTHON2": Entry(
         "info", "Python 2 syntax; read after a line-preserving repair",
-        "The file uses Python 2 statements (print, exec, 'except E, e'); they were "
-        "rewritten in memory so its ROS calls could be read. The file is never run."),
+        "The file uses Python 2 statements (print, exec, 'except E, e') or indents a "
+        "block with tabs and spaces mixed (a tab to the next multiple of 8 columns); they "
+        "were rewritten in memory so its ROS calls could be read. The file is never run."),
     "PY_TOO_COMPLEX": Entry(
         "warning", "Python code too large to analyse fully ({limit}); calls past it are "
         "not extracted",

@@ -319,3 +319,41 @@ def test_setup_cfg_entry_points_that_ament_python_install_package_installs(
     assert [n.sources for n in nodes if n.kind == "script"] == [
         ["pkg/pkg/spawner.py"] for _ in scripts]
     assert found == []
+
+
+def test_an_external_project_that_builds_executables_is_said(write_tree):
+    """micro-ROS-demos' rclc package builds each demo with ExternalProject_Add(SOURCE_DIR
+    <demo folder>) from a function and installs what they built: the package had no
+    node and no diagnostic, as if it built nothing. An external project of the package
+    whose CMakeLists.txt builds an executable is CMAKE_EXTERNAL_PROJECT (warning); one
+    that builds only a library, or a folder outside the package, is not."""
+    root = write_tree({
+        "src/demos/package.xml": package_xml("demos", "ament_cmake"),
+        "src/demos/CMakeLists.txt": """\
+            cmake_minimum_required(VERSION 3.5)
+            project(demos)
+            include(ExternalProject)
+            function(export_demo leaf)
+                ExternalProject_Add(${leaf}
+                    PREFIX ${PROJECT_BINARY_DIR}/${leaf}
+                    SOURCE_DIR ${PROJECT_SOURCE_DIR}/${leaf}
+                    BUILD_ALWAYS 1)
+            endfunction()
+            export_demo(talker)
+            export_demo(vendored)
+            ExternalProject_Add(outside SOURCE_DIR ${PROJECT_SOURCE_DIR}/../elsewhere)
+            ament_package()
+            """,
+        "src/demos/talker/CMakeLists.txt": "project(talker C)\n"
+                                          "add_executable(${PROJECT_NAME} main.c)\n",
+        "src/demos/talker/main.c": "int main() { return 0; }\n",
+        "src/demos/vendored/CMakeLists.txt": "add_library(v STATIC v.c)\n",
+        "src/elsewhere/CMakeLists.txt": "add_executable(e main.c)\n",
+    })
+    ws = scan([str(root / "src")], {})
+    nodes, found = parse_package(ws.packages["demos"], ws)
+    assert nodes == []
+    said = [d for d in found if d.code == "CMAKE_EXTERNAL_PROJECT"]
+    assert [(d.severity, d.location.line, d.message) for d in said] == [
+        ("warning", 5, "ExternalProject_Add(talker) builds talker as a project of its own, "
+         "whose executables are not read; the nodes it builds are unknown")]

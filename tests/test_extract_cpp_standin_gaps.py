@@ -230,3 +230,21 @@ def test_ros1_master_queries(write_tree) -> None:
     assert _errors(result) == []
     assert [(c.kind, c.name) for c in result.calls] == [
         ("subscribe", "cloud_in"), ("publish", "cloud_out")]
+
+
+def test_ros2_wait_sets_client_pruning_and_timer_calls(write_tree) -> None:
+    """ros2/examples (jazzy): rclcpp's WaitSet was an empty class (wait_set.cpp:38 "no
+    matching constructor", listener.cpp:48 no add_subscription, static_wait_set.cpp:34
+    StaticWaitSet unknown), Subscription::take, TimerBase::call, Client's
+    prune_requests_older_than / remove_pending_request (async_client main.cpp:46,
+    minimal_client main.cpp:44), get_network_flow_endpoints, wait_for_all_acked, the
+    random engine's result_type and std::shuffle (random_talker.hpp:33), a duration
+    over a duration (cbg_executor ping_node.cpp:82): each a clang error in a function
+    that calls the ROS API, 22 nodes partial."""
+    result = _extract(write_tree, _source("ros2_wait_set_client_timer.cpp"), "ament_cmake")
+    assert _errors(result) == []
+    assert "CPP_NODE_PARTIAL" not in [d.code for d in result.diagnostics]
+    assert [(c.kind, c.name) for c in result.calls
+            if c.kind in ("subscribe", "publish", "client")] == [
+        ("subscribe", "fixed_in"), ("subscribe", "in"), ("publish", "out"),
+        ("client", "add"), ("publish", "?")]

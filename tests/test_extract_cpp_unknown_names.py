@@ -724,3 +724,22 @@ def test_case_labels_the_code_writes_are_read_as_c_reads_them() -> None:
     (``case 09:``) is left out, not a crash."""
     text = b"switch (x) { case 010: case 0x1F: case 3u: case 09: case vendor::A: ; }"
     assert synthesis._case_literals(text) == {8, 31, 3}
+
+
+def test_a_function_declared_with_an_api_name_is_no_call_site() -> None:
+    """flir's spinnaker_wrapper_impl.cpp:209 defines a GenICam helper
+    ``static std::string set_parameter(`` (rclcpp::Node's method name, called bare in a
+    node class): the line declares a function, it calls nothing, and made the camera
+    driver partial (CPP_CALL_MISSED). A call after ``return`` / ``else`` or assigned, and
+    an API call on the same line as a declaration of another name, stay call sites."""
+    from haros_arch.extract.cpp import recall
+
+    text = ("static std::string set_parameter(\n"
+            "  rcl_interfaces::msg::SetParametersResult set_parameter(const P & p);\n"
+            "  return set_parameter(rclcpp::Parameter(\"x\", 1));\n"
+            "  else set_parameter(rclcpp::Parameter(\"x\", 2));\n"
+            "  auto r = set_parameter(rclcpp::Parameter(\"x\", 3));\n"
+            "  set_parameter(rclcpp::Parameter(\"x\", 4));\n"
+            "void f(int a) { node->set_parameter(rclcpp::Parameter(\"x\", a)); }\n"
+            "inline auto declare_parameter(int a) { return a; }\n")
+    assert [s.line for s in recall.call_sites(text)] == [3, 4, 5, 6, 7]

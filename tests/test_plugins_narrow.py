@@ -113,3 +113,31 @@ def test_the_description_of_a_class_nobody_builds(write_tree) -> None:
     driver = next(n for n in model.nodes if n.name == "lidar/lidar/Driver")
     assert driver.sources == ["lidar/src/driver.cpp"]
     assert "PLUGIN_CLASS_NOT_BUILT" in [d.code for d in model.diagnostics]
+
+
+def test_an_export_macro_in_a_comment_exports_nothing(tmp_path: Path) -> None:
+    """perception_pcl (ros2): pcl_ros' filter.cpp, the base class Filter's file (whose
+    subscribe() and constructor make every filter's input / indices subscriptions and
+    output publisher), keeps ``//PLUGINLIB_EXPORT_CLASS(PixelGrid,nodelet::Nodelet);``
+    inside a block comment. Taken as exporting other classes, it was left out of every
+    filter component: CropBox, PassThrough, VoxelGrid... had no input and no output. A
+    component registered in a comment is no component either."""
+    files = dict(FILES)
+    files["src/filter.cpp"] = (
+        '#include "pre/filter.hpp"\n/*//PLUGINLIB_EXPORT_CLASS(PixelGrid,nodelet::Nodelet);\n'
+        "//PLUGINLIB_EXPORT_CLASS(Dimension, nodelet::Nodelet);*/\n"
+        "namespace pre {\nFilter::Filter() {}  // RCLCPP_COMPONENTS_REGISTER_NODE(pre::Old)\n}\n"
+        'const char * url = "http://x"; PLUGINLIB_EXPORT_CLASS(pre::Kept, pre::Base)\n')
+    for name, text in files.items():
+        path = tmp_path / "pre" / name
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(text)
+    ws = scan([str(tmp_path)])
+    from haros_arch.plugins.classes import exported_classes
+    assert exported_classes(str(tmp_path / "pre" / "src" / "filter.cpp"), ws) == [
+        ("pre::Kept", 7)]
+    files["src/filter.cpp"] = files["src/filter.cpp"].rsplit("const char", 1)[0]
+    (tmp_path / "pre" / "src" / "filter.cpp").write_text(files["src/filter.cpp"])
+    ws = scan([str(tmp_path)])
+    assert narrow(SOURCES, "pre::CropBox", ws) == [
+        "pre/src/filter.cpp", "pre/src/util.cpp", "pre/src/crop_box.cpp"]

@@ -296,6 +296,34 @@ def _add_subdirectory(it: Interpreter, command: Invocation, args: list[str]) -> 
         it.add_subdirectory(command, it.path(args[0]))
 
 
+_BUILDS_EXECUTABLE = re.compile(rb"^\s*add_executable\s*\(", re.IGNORECASE | re.MULTILINE)
+
+
+@handles("externalproject_add")
+def _external_project(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    """``ExternalProject_Add(name SOURCE_DIR folder ...)``: CMake configures and builds
+    ``folder`` as a project of its own at build time, so its targets are not this
+    package's and are not read here. When the folder is inside the package and its
+    CMakeLists.txt builds executables (micro-ROS-demos' rclc package builds each demo so
+    and installs the results), the package has nodes the model does not hold: said by
+    ``CMAKE_EXTERNAL_PROJECT``, not left silent."""
+    if "SOURCE_DIR" not in args[1:-1]:
+        return
+    folder = it.path(args[args.index("SOURCE_DIR", 1) + 1])
+    listing = os.path.join(folder, "CMakeLists.txt")
+    if not it.inside_package(folder) or not os.path.isfile(listing):
+        return
+    try:
+        with open(listing, "rb") as handle:
+            text = handle.read(MAX_MAIN_READ)
+    except OSError:
+        return
+    if _BUILDS_EXECUTABLE.search(text):
+        it.diagnostics.append(diag.make(
+            "CMAKE_EXTERNAL_PROJECT", it.where(command), name=args[0],
+            folder=os.path.relpath(folder, it.package_root)))
+
+
 # -- targets --------------------------------------------------------------------
 EXECUTABLE_FLAGS = ("WIN32", "MACOSX_BUNDLE", "EXCLUDE_FROM_ALL", "NO_TARGET_LINK_LIBRARIES")
 LIBRARY_FLAGS = ("STATIC", "SHARED", "MODULE", "OBJECT", "EXCLUDE_FROM_ALL",

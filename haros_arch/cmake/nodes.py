@@ -20,6 +20,7 @@ from ..model.location import Location
 from ..model.source import Node, Package
 from ..plugins import Files, narrow
 from ..plugins.classes import (
+    code_only,
     code_words,
     defined_in,
     derives_from,
@@ -302,6 +303,7 @@ def _registered_in(path: str, workspace: Files) -> Iterable[tuple[str, int]]:
     text, _ = read_text(path, workspace.location(path))
     if not text or "RCLCPP_COMPONENTS_REGISTER_NODE" not in text:
         return
+    text = code_only(text)
     for match in _COMPONENT_MACRO.finditer(text):
         yield match.group(1).lstrip(":"), text.count("\n", 0, match.start()) + 1
 

@@ -185,6 +185,23 @@ def remembered(kind: str, source: str, workspace: Files, compute: Callable[[], T
     return memo[key]
 
 
+# a C/C++ comment, and the string and character literals a comment mark may sit in
+_COMMENT_OR_LITERAL = re.compile(
+    r"\"(?:\\.|[^\"\\\n])*\"|'(?:\\.|[^'\\\n])*'|//[^\n]*|/\*.*?(?:\*/|\Z)", re.DOTALL)
+
+
+def code_only(text: str) -> str:
+    """C/C++ text with its comments blanked (newlines kept, so lines stay where they
+    were): an export macro commented out exports nothing (perception_pcl's filter.cpp
+    keeps ``//PLUGINLIB_EXPORT_CLASS(PixelGrid, ...)`` from its ROS 1 days)."""
+    def blank(match: re.Match[str]) -> str:
+        found = match.group(0)
+        if found[0] in "\"'":
+            return found
+        return re.sub(r"[^\n]", " ", found)
+    return _COMMENT_OR_LITERAL.sub(blank, text)
+
+
 def exported_classes(path: str, workspace: Files) -> list[tuple[str, int]]:
     """Classes a C++ file exports with a pluginlib or rclcpp_components macro, with lines."""
     return remembered("exported", path, workspace, lambda: _exported(path, workspace))
@@ -194,6 +211,7 @@ def _exported(path: str, workspace: Files) -> list[tuple[str, int]]:
     text, _ = read_text(path, workspace.location(path))
     if not text or not any(mark in text for mark in _EXPORT_MARKS):
         return []
+    text = code_only(text)
     out = []
     for match in _EXPORT.finditer(text):
         words = re.findall(r"[A-Za-z_][\w:]*", match.group(2))

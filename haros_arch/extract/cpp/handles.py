@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import re
 
-from clang.cindex import Cursor, CursorKind, TypeKind
+from clang.cindex import Cursor, CursorKind, TypeKind, conf
 
 from . import api
 from .call_sites import CallSites, member_initialiser, uses_parameter, value_text
@@ -82,11 +82,18 @@ def is_ros2_node(decl: Cursor | None, depth: int = 0) -> bool:
     if qualified_name(decl) in api.RCLCPP_NODES:
         return True
     definition = decl.get_definition() or decl
-    for child in definition.get_children():
-        if child.kind == CursorKind.CXX_BASE_SPECIFIER:
-            base = child.type.get_canonical().get_declaration()
-            if is_ros2_node(base, depth + 1):
-                return True
+    # a class template's specialisation (``class Filter : public PCLNode<PointCloud2>``)
+    # lists no base of its own where the template is only instantiated: its bases are
+    # the template's (perception_pcl's pcl_ros::PCLNode<T> derives from rclcpp::Node)
+    template = conf.lib.clang_getSpecializedCursorTemplate(decl)
+    for each in (definition, template):
+        if each is None:
+            continue
+        for child in each.get_children():
+            if child.kind == CursorKind.CXX_BASE_SPECIFIER:
+                base = child.type.get_canonical().get_declaration()
+                if is_ros2_node(base, depth + 1):
+                    return True
     return False
 
 

@@ -54,6 +54,13 @@ MAX_REASONS = 20  # per unit
 
 # a line that defines a function of the API's name: ``Type Class::create_publisher(``
 _DEFINITION = re.compile(r"^\s*(?:[\w:<>,*&]+\s+)+[*&]*\s*(?:\w+::)+\w+\s*\(")
+# a line that declares or defines a function (or a method in its class) of a bare name:
+# ``static std::string set_parameter(`` (flir's spinnaker_wrapper_impl.cpp, a GenICam
+# helper); types and specifiers only before the name, no statement keyword
+# (``return set_parameter(`` is a call)
+_FREE_DEFINITION = re.compile(
+    r"^\s*(?:(?!(?:return|throw|else|case|co_return|co_yield|co_await|new|delete|goto|do)"
+    r"\b)[\w:<>,*&]+\s+)+[*&]*\s*(?P<name>\w+)\s*\(")
 
 
 @dataclass(frozen=True)
@@ -101,7 +108,8 @@ def _is_class(owner: str) -> bool:
 
 def call_sites(text: str, extra: Iterable[str] = ()) -> list[Site]:
     """The API call sites of one file's text (comments left out, and lines that define
-    a function of the same name: ``Node::create_publisher(``). The headers of a package
+    a function of the same name: ``Node::create_publisher(``, or declare one:
+    ``static std::string set_parameter(``). The headers of a package
     are read by each of its units: the sites of a text are kept (a few texts)."""
     return list(_call_sites(text, frozenset(extra)))
 
@@ -125,7 +133,10 @@ def _call_sites(text: str, extra: frozenset[str]) -> tuple[Site, ...]:
         code = line.split("//", 1)[0]
         if code.lstrip().startswith("#") or _DEFINITION.match(code):
             continue
+        declared = _FREE_DEFINITION.match(code)
+        named = declared.start("name") if declared is not None else None
         if any(not _unevaluated(code, m.start()) and not _named_type(code, m, extra)
+               and m.start("bare") != named
                for m in pattern.finditer(code)):
             found.append(Site(number, code.strip()[:80]))
     return tuple(found)

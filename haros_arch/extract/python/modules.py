@@ -122,13 +122,14 @@ class Loader:
         try:
             tree = _ast_parse(text, path)
         except SyntaxError as err:
-            repaired = _repair_python2(text)
+            repaired, shifts = _expand_python2_tabs(_repair_python2(text))
             if repaired != text:
                 try:
                     tree = _ast_parse(repaired, path)
                 except (SyntaxError, ValueError, RecursionError, MemoryError):
                     pass
                 else:
+                    _shift_columns(tree, shifts)
                     self.diagnostics.append(diag.make(
                         "PY_PYTHON2", self.location(path, err.lineno or 0,
                                                     err.offset or 0)))
@@ -354,6 +355,47 @@ def _repair_python2(text: str) -> str:
         fixed = fixed.replace("ur\"", "\"").replace("ur'", "'")
         lines[i] = fixed
     return "\n".join(lines)
+
+
+def _expand_python2_tabs(text: str) -> tuple[str, dict[int, int]]:
+    """Python 2's indentation: a tab goes to the next multiple of 8 columns, so a block
+    may mix tabs and spaces (``\t`` and ``    \t`` are one level) where Python 3 raises
+    TabError. The leading whitespace of every line that starts a statement is expanded
+    that way; lines inside brackets, triple-quoted strings or after a backslash are left
+    alone. Returns the text and, per line number (1-based) changed, how many characters
+    its indentation grew, for `_shift_columns`."""
+    lines = text.split("\n")
+    shifts: dict[int, int] = {}
+    depth, quote, joined = 0, "", False
+    for i, line in enumerate(lines):
+        starts = depth <= 0 and not quote and not joined
+        if starts:
+            body = line.lstrip(" \t\f")
+            indent = line[:len(line) - len(body)]
+            if "\t" in indent and body:
+                width = 0
+                for char in indent:
+                    width = (width // 8 + 1) * 8 if char == "\t" else width + 1
+                lines[i] = " " * width + body
+                shifts[i + 1] = width - len(indent)
+        opened, comment, quote = _scan(line, quote)
+        depth = max(depth + opened, 0)
+        joined = not quote and line[:comment].rstrip().endswith("\\")
+    return "\n".join(lines), shifts
+
+
+def _shift_columns(tree: ast.AST, shifts: dict[int, int]) -> None:
+    """Put the columns of a tree parsed from `_expand_python2_tabs`'s text back on the
+    file's own lines (the text other readers slice with them)."""
+    if not shifts:
+        return
+    for node in ast.walk(tree):
+        line, column = getattr(node, "lineno", None), getattr(node, "col_offset", None)
+        if line in shifts and isinstance(column, int):
+            node.col_offset = max(column - shifts[line], 0)  # type: ignore[attr-defined]
+        line, column = getattr(node, "end_lineno", None), getattr(node, "end_col_offset", None)
+        if line in shifts and isinstance(column, int):
+            node.end_col_offset = max(column - shifts[line], 0)  # type: ignore[attr-defined]
 
 
 def _strip_chevron(rest: str) -> str:

@@ -1,6 +1,7 @@
 // haros_arch stand-in: rclcpp, the ROS 2 C++ client library (declarations only)
 #ifndef HAROS_STANDIN_RCLCPP_HPP
 #define HAROS_STANDIN_RCLCPP_HPP
+#include <array>
 #include <chrono>
 #include <functional>
 #include <future>
@@ -373,7 +374,7 @@ struct PublisherOptionsBase {
   PublisherEventCallbacks event_callbacks;
   bool use_default_callbacks;
   QosOverridingOptions qos_overriding_options;
-  int require_unique_network_flow_endpoints;
+  rmw_unique_network_flow_endpoints_requirement_t require_unique_network_flow_endpoints;
 };
 struct SubscriptionOptionsBase {
   std::shared_ptr<CallbackGroup> callback_group;
@@ -384,7 +385,7 @@ struct SubscriptionOptionsBase {
   detail::TopicStatisticsOptions topic_stats_options;
   QosOverridingOptions qos_overriding_options;
   detail::ContentFilterOptions content_filter_options;
-  int require_unique_network_flow_endpoints;
+  rmw_unique_network_flow_endpoints_requirement_t require_unique_network_flow_endpoints;
 };
 template<class A = void> struct PublisherOptionsWithAllocator : PublisherOptionsBase {
   PublisherOptionsWithAllocator();
@@ -398,10 +399,25 @@ template<class A = void> struct SubscriptionOptionsWithAllocator : SubscriptionO
 };
 using PublisherOptions = PublisherOptionsWithAllocator<std::allocator<void>>;
 using SubscriptionOptions = SubscriptionOptionsWithAllocator<std::allocator<void>>;
+// rclcpp/network_flow_endpoint.hpp
+class NetworkFlowEndpoint {
+public:
+  const std::string& transport_protocol() const;
+  const std::string& internet_protocol() const;
+  uint16_t transport_port() const;
+  uint32_t flow_label() const;
+  uint8_t dscp() const;
+  const std::string& internet_address() const;
+  bool operator==(const NetworkFlowEndpoint& other) const;
+  bool operator!=(const NetworkFlowEndpoint& other) const;
+};
 class PublisherBase {
 public:
   RCLCPP_SMART_PTR_DEFINITIONS(PublisherBase)
   const char* get_topic_name() const;
+  std::vector<NetworkFlowEndpoint> get_network_flow_endpoints() const;
+  template<class R = long, class P = std::milli>
+  bool wait_for_all_acked(std::chrono::duration<R, P> timeout = std::chrono::duration<R, P>(-1)) const;
   size_t get_subscription_count() const;
   size_t get_intra_process_subscription_count() const;
 };
@@ -419,10 +435,15 @@ public:
   LoanedMessage borrow_loaned_message();
   void publish(LoanedMessage&& loaned);
 };
+class MessageInfo;
 class SubscriptionBase {
 public:
   RCLCPP_SMART_PTR_DEFINITIONS(SubscriptionBase)
   const char* get_topic_name() const;
+  std::vector<NetworkFlowEndpoint> get_network_flow_endpoints() const;
+  std::shared_ptr<void> create_message();
+  bool take_type_erased(void* message, MessageInfo& message_info);
+  void handle_message(std::shared_ptr<void>& message, const MessageInfo& message_info);
 };
 // rclcpp/message_info.hpp: what a subscription callback's second parameter can be
 class MessageInfo {
@@ -434,6 +455,7 @@ public:
 template<class M, class A = void> class Subscription : public SubscriptionBase {
 public:
   RCLCPP_SMART_PTR_DEFINITIONS(Subscription)
+  bool take(M& message_out, MessageInfo& message_info_out);
   bool is_cft_enabled() const;
   void set_content_filter(const std::string& expression,
                           const std::vector<std::string>& parameters = {});
@@ -468,10 +490,17 @@ public:
   using SharedRequest = std::shared_ptr<typename S::Request>;
   using SharedResponse = std::shared_ptr<typename S::Response>;
   using SharedFuture = std::shared_future<SharedResponse>;
+  using SharedFutureWithRequest = std::shared_future<std::pair<SharedRequest, SharedResponse>>;
   struct FutureAndRequestId : std::future<SharedResponse> { std::shared_future<SharedResponse> future; long request_id; };
   using SharedFutureAndRequestId = FutureAndRequestId;
   FutureAndRequestId async_send_request(SharedRequest request);
   template<class F> FutureAndRequestId async_send_request(SharedRequest request, F&& callback);
+  bool remove_pending_request(long request_id);
+  bool remove_pending_request(const FutureAndRequestId& future);
+  size_t prune_pending_requests();
+  template<class A = std::allocator<long>>
+  size_t prune_requests_older_than(std::chrono::time_point<std::chrono::system_clock> time_point,
+                                   std::vector<long, A>* pruned_requests = nullptr);
   void configure_introspection(std::shared_ptr<Clock> clock, const QoS& qos,
                                rcl_service_introspection_state_t state);
 };
@@ -481,6 +510,8 @@ public:
   void cancel();
   void reset();
   bool is_canceled();
+  std::shared_ptr<void> call();
+  void execute_callback(const std::shared_ptr<void>& data);
 };
 template<class F, class = void> class GenericTimer : public TimerBase {
 public: RCLCPP_SMART_PTR_DEFINITIONS(GenericTimer) };
@@ -824,7 +855,103 @@ public:
   static std::vector<Parameter> get_parameters_from_event(
       const rcl_interfaces::msg::ParameterEvent& event);
 };
-class WaitSet { public: WaitSet(); };
+// rclcpp/guard_condition.hpp, wait_result_kind.hpp, wait_result.hpp, wait_set_template.hpp
+// and wait_set.hpp: a wait set over the node's entities (waits, takes; makes no ROS name)
+class GuardCondition {
+public:
+  RCLCPP_SMART_PTR_DEFINITIONS(GuardCondition)
+  explicit GuardCondition(std::shared_ptr<Context> context = nullptr);
+  void trigger();
+};
+class Waitable { public: RCLCPP_SMART_PTR_DEFINITIONS(Waitable) };
+struct SubscriptionWaitSetMask {
+  bool include_subscription = true;
+  bool include_events = true;
+  bool include_intra_process_waitable = true;
+};
+enum WaitResultKind { Ready, Timeout, Empty };
+template<class W> class WaitResult {
+public:
+  WaitResultKind kind() const;
+  const W& get_wait_set() const;
+  W& get_wait_set();
+};
+namespace wait_set_policies {
+struct SequentialSynchronization {};
+struct ThreadSafeSynchronization {};
+struct haros_entries {
+  struct SubscriptionEntry {
+    SubscriptionEntry(std::shared_ptr<SubscriptionBase> subscription = nullptr,
+                      const SubscriptionWaitSetMask& mask = {});
+    std::shared_ptr<SubscriptionBase> subscription;
+    SubscriptionWaitSetMask mask;
+  };
+  struct WaitableEntry {
+    WaitableEntry(std::shared_ptr<Waitable> waitable = nullptr,
+                  std::shared_ptr<void> associated_entity = nullptr);
+    std::shared_ptr<Waitable> waitable;
+    std::shared_ptr<void> associated_entity;
+  };
+};
+struct DynamicStorage : haros_entries {
+  using SubscriptionsIterable = std::vector<SubscriptionEntry>;
+  using GuardConditionsIterable = std::vector<std::shared_ptr<GuardCondition>>;
+  using TimersIterable = std::vector<std::shared_ptr<TimerBase>>;
+  using ClientsIterable = std::vector<std::shared_ptr<ClientBase>>;
+  using ServicesIterable = std::vector<std::shared_ptr<ServiceBase>>;
+  using WaitablesIterable = std::vector<WaitableEntry>;
+};
+template<size_t S, size_t G, size_t T, size_t C, size_t V, size_t W>
+struct StaticStorage : haros_entries {
+  using SubscriptionsIterable = std::array<SubscriptionEntry, S>;
+  using GuardConditionsIterable = std::array<std::shared_ptr<GuardCondition>, G>;
+  using TimersIterable = std::array<std::shared_ptr<TimerBase>, T>;
+  using ClientsIterable = std::array<std::shared_ptr<ClientBase>, C>;
+  using ServicesIterable = std::array<std::shared_ptr<ServiceBase>, V>;
+  using WaitablesIterable = std::array<WaitableEntry, W>;
+};
+}  // namespace wait_set_policies
+template<class Sync, class Storage> class WaitSetTemplate {
+public:
+  RCLCPP_SMART_PTR_DEFINITIONS(WaitSetTemplate)
+  using SubscriptionEntry = typename Storage::SubscriptionEntry;
+  using WaitableEntry = typename Storage::WaitableEntry;
+  explicit WaitSetTemplate(
+    const typename Storage::SubscriptionsIterable& subscriptions = {},
+    const typename Storage::GuardConditionsIterable& guard_conditions = {},
+    const typename Storage::TimersIterable& timers = {},
+    const typename Storage::ClientsIterable& clients = {},
+    const typename Storage::ServicesIterable& services = {},
+    const typename Storage::WaitablesIterable& waitables = {},
+    std::shared_ptr<Context> context = nullptr);
+  const rcl_wait_set_t& get_rcl_wait_set() const;
+  void add_subscription(std::shared_ptr<SubscriptionBase> subscription,
+                        SubscriptionWaitSetMask mask = {});
+  void remove_subscription(std::shared_ptr<SubscriptionBase> subscription,
+                           SubscriptionWaitSetMask mask = {});
+  void add_guard_condition(std::shared_ptr<GuardCondition> guard_condition);
+  void remove_guard_condition(std::shared_ptr<GuardCondition> guard_condition);
+  void add_timer(std::shared_ptr<TimerBase> timer);
+  void remove_timer(std::shared_ptr<TimerBase> timer);
+  void add_client(std::shared_ptr<ClientBase> client);
+  void remove_client(std::shared_ptr<ClientBase> client);
+  void add_service(std::shared_ptr<ServiceBase> service);
+  void remove_service(std::shared_ptr<ServiceBase> service);
+  void add_waitable(std::shared_ptr<Waitable> waitable,
+                    std::shared_ptr<void> associated_entity = nullptr);
+  void remove_waitable(std::shared_ptr<Waitable> waitable);
+  void prune_deleted_entities();
+  template<class R = long, class P = std::nano>
+  WaitResult<WaitSetTemplate> wait(std::chrono::duration<R, P> time_to_wait =
+                                   std::chrono::duration<R, P>(-1));
+};
+using WaitSet = WaitSetTemplate<wait_set_policies::SequentialSynchronization,
+                                wait_set_policies::DynamicStorage>;
+using ThreadSafeWaitSet = WaitSetTemplate<wait_set_policies::ThreadSafeSynchronization,
+                                          wait_set_policies::DynamicStorage>;
+template<size_t S, size_t G, size_t T, size_t C, size_t V, size_t W>
+using StaticWaitSet = WaitSetTemplate<wait_set_policies::SequentialSynchronization,
+                                      wait_set_policies::StaticStorage<S, G, T, C, V, W>>;
 // rclcpp/create_publisher.hpp, create_subscription.hpp: the free functions on a node
 template<class M, class A = std::allocator<void>, class P = rclcpp::Publisher<M>, class N,
          class... R>

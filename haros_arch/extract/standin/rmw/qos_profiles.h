@@ -14,6 +14,12 @@ typedef enum { RMW_QOS_POLICY_LIVELINESS_SYSTEM_DEFAULT, RMW_QOS_POLICY_LIVELINE
                RMW_QOS_POLICY_LIVELINESS_MANUAL_BY_NODE,
                RMW_QOS_POLICY_LIVELINESS_MANUAL_BY_TOPIC,
                RMW_QOS_POLICY_LIVELINESS_UNKNOWN } rmw_qos_liveliness_policy_t;
+// rmw/network_flow_endpoint.h: what publisher / subscription options ask of the endpoints
+typedef enum { RMW_UNIQUE_NETWORK_FLOW_ENDPOINTS_NOT_REQUIRED = 0,
+               RMW_UNIQUE_NETWORK_FLOW_ENDPOINTS_STRICTLY_REQUIRED,
+               RMW_UNIQUE_NETWORK_FLOW_ENDPOINTS_OPTIONALLY_REQUIRED,
+               RMW_UNIQUE_NETWORK_FLOW_ENDPOINTS_SYSTEM_DEFAULT
+} rmw_unique_network_flow_endpoints_requirement_t;
 typedef struct rmw_time_t { unsigned long long sec; unsigned long long nsec; } rmw_time_t;
 #define RMW_QOS_POLICY_DEPTH_SYSTEM_DEFAULT 0
 #define RMW_QOS_DEADLINE_DEFAULT {0, 0}

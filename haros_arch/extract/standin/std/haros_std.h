@@ -289,6 +289,9 @@ string to_string(double v);
 int stoi(const string& s, size_t* pos = nullptr, int base = 10);
 long stol(const string& s, size_t* pos = nullptr, int base = 10);
 unsigned long stoul(const string& s, size_t* pos = nullptr, int base = 10);
+long long stoll(const string& s, size_t* pos = nullptr, int base = 10);
+unsigned long long stoull(const string& s, size_t* pos = nullptr, int base = 10);
+long double stold(const string& s, size_t* pos = nullptr);
 float stof(const string& s, size_t* pos = nullptr);
 double stod(const string& s, size_t* pos = nullptr);
 class string_view {
@@ -526,6 +529,7 @@ template<class T> T min(initializer_list<T> items);
 template<class T> T max(initializer_list<T> items);
 template<class T> const T& clamp(const T& v, const T& lo, const T& hi);
 template<class It> void sort(It first, It last);
+template<class It, class G> void shuffle(It first, It last, G&& g);
 template<class It, class C> void sort(It first, It last, C compare);
 template<class It, class T> It find(It first, It last, const T& v);
 template<class It, class P> It find_if(It first, It last, P pred);
@@ -603,6 +607,26 @@ public:
   T* operator->() const noexcept;
   T& operator*() const noexcept;
   T* get() const noexcept;
+  void reset() noexcept;
+  template<class Y> void reset(Y* p);
+  long use_count() const noexcept;
+  explicit operator bool() const noexcept;
+};
+// shared_ptr<void> (rclcpp's type-erased messages, timer data, wait set entities) has no
+// dereference: the primary template's T& would make a complete shared_ptr<void> an error
+template<> class shared_ptr<void> {
+public:
+  typedef void element_type;
+  constexpr shared_ptr() noexcept;
+  constexpr shared_ptr(nullptr_t) noexcept;
+  template<class Y> explicit shared_ptr(Y* p);
+  template<class Y, class D> shared_ptr(Y* p, D d);
+  shared_ptr(const shared_ptr& other) noexcept;
+  template<class Y> shared_ptr(const shared_ptr<Y>& other) noexcept;
+  template<class Y, class D> shared_ptr(unique_ptr<Y, D>&& other);
+  shared_ptr& operator=(const shared_ptr& other) noexcept;
+  template<class Y> shared_ptr& operator=(const shared_ptr<Y>& other) noexcept;
+  void* get() const noexcept;
   void reset() noexcept;
   template<class Y> void reset(Y* p);
   long use_count() const noexcept;
@@ -1007,6 +1031,9 @@ template<class R1, class R2, class P2>
 duration<R2, P2> operator*(const R1& s, const duration<R2, P2>& a);
 template<class R1, class P1, class R2>
 duration<R1, P1> operator/(const duration<R1, P1>& a, const R2& s);
+// a duration over a duration is a count (how many periods of b fit in a)
+template<class R1, class P1, class R2, class P2>
+decltype(R1() / R2()) operator/(const duration<R1, P1>& a, const duration<R2, P2>& b);
 template<class R1, class P1, class R2, class P2>
 bool operator<(const duration<R1, P1>& a, const duration<R2, P2>& b);
 template<class R1, class P1, class R2, class P2>
@@ -1042,6 +1069,8 @@ template<class C, class D1, class D2>
 D1 operator-(const time_point<C, D1>& a, const time_point<C, D2>& b);
 template<class C, class D, class R, class P>
 time_point<C, D> operator+(const time_point<C, D>& a, const duration<R, P>& d);
+template<class C, class D, class R, class P>
+time_point<C, D> operator-(const time_point<C, D>& a, const duration<R, P>& d);
 template<class C, class D1, class D2>
 bool operator<(const time_point<C, D1>& a, const time_point<C, D2>& b);
 template<class C, class D1, class D2>
@@ -1236,6 +1265,9 @@ template<class T> T* any_cast(any* operand) noexcept;
 class random_device { public: random_device(); unsigned int operator()(); };
 template<class U> class haros_engine {
 public:
+  typedef U result_type;
+  static constexpr U min() { return 0; }
+  static constexpr U max() { return U(-1); }
   haros_engine();
   explicit haros_engine(U seed);
   void seed(U value);
