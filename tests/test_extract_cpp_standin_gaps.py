@@ -52,7 +52,10 @@ def test_ros1_tf_time_and_transport_hints(write_tree) -> None:
     result = _extract(write_tree, _source("ros1_tf.cpp"), "catkin")
     assert _errors(result) == []
     assert [(c.kind, c.name) for c in result.calls] == [
-        ("subscribe", "chatter"), ("publish", "out"), ("publish", "opencv3"),
+        ("subscribe", "chatter"), ("publish", "out"),
+        # the bond's heartbeat, both ways (bondcpp's Bond)
+        ("publish", "/diagnostics_agg/bond"), ("subscribe", "/diagnostics_agg/bond"),
+        ("publish", "opencv3"),
         ("subscribe", "/tf"),
         ("subscribe", "/tf_static")]
 

@@ -39,7 +39,8 @@ from dataclasses import dataclass
 
 from ...model.source import LIFECYCLE_EVENTS, LIFECYCLE_SERVICES, CallKind
 
-# (kind, name relative to the call's name's namespace or global, ROS 1 type)
+# (kind, name relative to the call's name's namespace or global, or "" for the call's
+# own name, ROS 1 type)
 Sibling = tuple[CallKind, str, str]
 
 
@@ -286,6 +287,14 @@ LIBRARIES: dict[tuple[str, str], RosFunction] = {
                 ("unload_controller", "UnloadController"),
                 ("switch_controller", "SwitchController"),
                 ("reload_controller_libraries", "ReloadControllerLibraries")))),
+    # bondcpp: a bond exchanges its heartbeat on the topic given (argument 0), of bond's
+    # Status, both ways (the sibling named "" is the call's own name); ROS 1 on a
+    # NodeHandle of its own (the node's namespace), ROS 2 on the node given
+    ("bond::Bond", "Bond"): RosFunction(
+        "publish", fixed_type="bond/Status", on_handle=False,
+        siblings=(("subscribe", "", "bond/Status"),), ros2=RosFunction(
+            "publish", fixed_type="bond/msg/Status", on_handle=False,
+            siblings=(("subscribe", "", "bond/msg/Status"),))),
     ("tf::TransformBroadcaster", "TransformBroadcaster"): RosFunction(
         "publish", fixed_name="/tf", fixed_type=_TF, on_handle=False),
     ("tf::TransformListener", "TransformListener"): RosFunction(

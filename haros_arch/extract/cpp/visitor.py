@@ -925,7 +925,9 @@ class CallFinder:
                 self.diagnostics.append(diag.make(
                     "CPP_DYNAMIC_NAME", location, kind=spec.kind, name=name))
             for kind, sibling, stype in spec.siblings:
-                if spec.name_suffix is not None:  # beside it, in the remote node's name
+                if not sibling:  # the same name the other way (a bond's topic)
+                    full = name
+                elif spec.name_suffix is not None:  # beside it, in the remote node's name
                     full = name.removesuffix(spec.name_suffix) + sibling
                 elif kind in ("declare", "read") and name.startswith("/"):
                     full = sibling  # the node's own parameter beside a global topic
@@ -937,7 +939,7 @@ class CallFinder:
                 # and a camera's camera_info, in the image topic's namespace, on its handle
                 camera = stype == CAMERA_INFO and bool(spec.transport)
                 sibling_namespace = handle_namespace if (
-                    (spec.handle_default is not None or camera)
+                    (spec.handle_default is not None or camera or not sibling)
                     and not sibling.startswith("/")) else None
                 self.calls.append(PrimitiveCall(
                     kind=kind, name=full, type=self.types.ros_type(stype), queue_size=queue,

@@ -6,6 +6,7 @@ template<class T> class shared_ptr {
 public:
   typedef T element_type;
   shared_ptr();
+  shared_ptr(decltype(nullptr));  // ``boost::shared_ptr<T> p_ = nullptr;`` (Boost 1.53 on)
   template<class Y> explicit shared_ptr(Y* p);
   template<class Y> shared_ptr(const shared_ptr<Y>& other);
   T* operator->() const;
