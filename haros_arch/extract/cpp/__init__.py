@@ -841,7 +841,8 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
     first = mine(tu)
     before = len(first)
     fieldless = _fieldless_packages(setup.diagnostics)
-    names = synthesis.Names(fieldless, _declared_in(tu))
+    names = synthesis.Names(fieldless, _declared_in(tu), synthesis.library_prefixes(
+        d.message for d in setup.diagnostics if d.code == "CPP_INCLUDE_MISSING"))
     header = os.path.join(setup.generated, synthesis.HEADER_NAME)
     # the functions of each file, by line, and its API call sites (the same text in
     # every parse of the unit: each file is read once, not once per parse)

@@ -238,6 +238,25 @@ def _bare_macro(name: str, text: bytes, offset: int) -> bool:
     return not line[:offset - start].strip() and not after
 
 
+_MISSING_HEADER = re.compile(r"^header (\S+) not found")
+
+
+def library_prefixes(messages: Iterable[str]) -> set[str]:
+    """The words (before a ``_``, three letters or more) that start the folders and file
+    names of the headers found missing (``header ogg/ogg.h not found``: ``ogg``;
+    ``urg_c/urg_sensor.h``: ``urg``): the prefixes of the C libraries they declare."""
+    found: set[str] = set()
+    for message in messages:
+        match = _MISSING_HEADER.match(message)
+        if match is None:
+            continue
+        for part in re.split(r"[/\\]", match.group(1)):
+            word = part.split(".")[0].split("_")[0]
+            if len(word) >= 3 and word.isidentifier():
+                found.add(word)
+    return found
+
+
 def _spelled_at(name: str, text: bytes, offset: int) -> int:
     """Where the unknown ``name`` an error is about is written: clang places an error
     in a macro's arguments at the macro (``RCLCPP_ERROR(logger, "%s", SDL_GetError())``
@@ -255,12 +274,16 @@ class Names:
     """The unknown names of one translation unit, collected over the rounds."""
 
     def __init__(self, packages: Iterable[str] = (),
-                 declared: Callable[[str], frozenset[str]] | None = None) -> None:
+                 declared: Callable[[str], frozenset[str]] | None = None,
+                 libraries: Iterable[str] = ()) -> None:
         """``packages``: those whose messages are known only by name (any package's
         ``pkg::msg::Name`` and ``*_msgs::Name`` count as well). ``declared``: the names
         the parse already has in a top-level namespace (a stand-in's class in a vendor
-        namespace whose other names are unknown), never declared again."""
+        namespace whose other names are unknown), never declared again. ``libraries``:
+        the prefixes of the C libraries whose headers are missing (``library_prefixes``):
+        an unqualified function under one (``ogg_stream_init(...)``) is the library's."""
         self.packages = frozenset(packages)
+        self.libraries = frozenset(libraries)
         self.declared = declared
         self.root = _Name(known=True)
         self.members: set[str] = set()
@@ -447,12 +470,16 @@ class Names:
         if use == "any" and not scope and len(written) == 1 and (
             last == "value" or rest.lstrip()[:1] == b"("
         ):
-            if not _C_VENDOR.fullmatch(written[-1]):
+            if not _C_VENDOR.fullmatch(written[-1]) and not (
+                rest.lstrip()[:1] == b"(" and "_" in written[-1]
+                and written[-1].split("_")[0] in self.libraries
+            ):
                 return  # an unqualified function or variable: in a class, often a member
                 # clang could not find (an invalid base); declaring it would shadow it
             # but a C library's constant or prefixed function, whose header is missing
-            # (``SDL_Init(SDL_INIT_JOYSTICK | SDL_INIT_HAPTIC)``, ``SDL_GetError()``),
-            # is no member: a value (a call is the value's ``operator()``)
+            # (``SDL_Init(SDL_INIT_JOYSTICK | SDL_INIT_HAPTIC)``, ``SDL_GetError()``; a
+            # lowercase one named after the missing header: ``ogg_stream_init(...)`` of
+            # <ogg/ogg.h>), is no member: a value (a call is the value's ``operator()``)
             last = "value"
         if written[0] in self.aliases and (not scope or len(written) > 1):
             # ``Mode::FAST`` where the code declares ``using Mode = vendor::Mode;``: not

@@ -1,0 +1,79 @@
+"""A lowercase C function named after a header found missing (``ogg_stream_init`` of
+<ogg/ogg.h>, theora_image_transport's ogg_saver) is declared permissively, as an
+upper-case prefixed one (``SDL_Init``) was: left undeclared, its error sat in a function
+that calls the ROS API and made the node partial though no ROS call can hide in it. An
+unqualified lowercase call of no missing library's prefix is still not declared (in a
+class it may be a member of a base the parse could not read)."""
+
+from __future__ import annotations
+
+from haros_arch import cmake
+from haros_arch.extract import extract_nodes
+from haros_arch.extract.cpp import synthesis
+from haros_arch.workspace import scan
+from tests.conftest import package_xml
+
+FILES = {
+    "saver/package.xml": package_xml("saver", "catkin").replace(
+        "<export>", "<depend>roscpp</depend><depend>std_msgs</depend><export>"),
+    "saver/CMakeLists.txt": """
+        cmake_minimum_required(VERSION 3.0.2)
+        project(saver)
+        find_package(catkin REQUIRED COMPONENTS roscpp std_msgs)
+        add_executable(saver src/saver.cpp)
+        """,
+    "saver/src/saver.cpp": """
+        #include <ros/ros.h>
+        #include <ogg/ogg.h>
+        #include <std_msgs/String.h>
+        class Saver {
+        public:
+          Saver() {
+            if (ogg_stream_init(nullptr, 0) == -1) {
+              ROS_FATAL("cannot initialise the stream");
+            }
+            sub_ = nh_.subscribe("stream", 10, &Saver::write, this);
+          }
+          void write(const std_msgs::String::ConstPtr& msg) {
+            ogg_stream_packetin(nullptr, msg->data.c_str());
+          }
+        private:
+          ros::NodeHandle nh_;
+          ros::Subscriber sub_;
+        };
+        int main(int argc, char ** argv)
+        {
+          ros::init(argc, argv, "saver");
+          Saver saver;
+          ros::spin();
+        }
+        """,
+}
+
+
+def test_a_function_of_a_missing_c_header_is_declared(write_tree) -> None:
+    ws = scan([str(write_tree(FILES))])
+    pkg = ws.packages["saver"]
+    pkg.nodes, _ = cmake.parse_package(pkg, ws)
+    found = extract_nodes(pkg.nodes, ws, cache_dir=None, jobs=1)
+    node = pkg.nodes[0]
+    assert [(c.kind, c.name) for c in node.calls] == [("subscribe", "stream")]
+    codes = [d.code for d in found]
+    assert "CPP_NODE_PARTIAL" not in codes
+    assert "CPP_ERROR_NEAR_CALL" not in codes
+    assert node.completeness == "complete"
+
+
+def test_library_prefixes_and_what_they_declare() -> None:
+    assert synthesis.library_prefixes([
+        "header ogg/ogg.h not found; an empty stand-in was used",
+        "header urg_c/urg_sensor.h not found; an empty stand-in was used",
+        "header io.h not found; an empty stand-in was used",
+        "C++ error: something else"]) == {"ogg", "urg"}
+    text = b"void f() { ogg_stream_init(&s, 0); read_frame(&s); }"
+    names = synthesis.Names(libraries={"ogg"})
+    names.learn([("use of undeclared identifier 'ogg_stream_init'", text,
+                  text.index(b"ogg_stream_init")),
+                 ("use of undeclared identifier 'read_frame'", text, text.index(b"read_frame"))])
+    assert "ogg_stream_init" in names.root.children
+    assert "read_frame" not in names.root.children
