@@ -259,7 +259,9 @@ _INFRASTRUCTURE = frozenset({"/tf", "/tf_static", "/diagnostics", "/diagnostics_
 # diagnostics' topics of a robot in a namespace (``/robot1/tf`` of the usual
 # ``remappings=[("/tf", "tf")]``, which every broadcaster of the robot publishes)
 _INFRASTRUCTURE_OWN = frozenset({"parameter_descriptions", "parameter_updates", "tf",
-                                 "tf_static", "diagnostics", "diagnostics_agg"})
+                                 "tf_static", "diagnostics", "diagnostics_agg",
+                                 # bondcpp: both sides of a bond publish on its one topic
+                                 "bond"})
 
 
 def is_infrastructure(charge: Charge, name: Any) -> bool:
