@@ -209,7 +209,7 @@ class _Grammar:
             depth += {("op", "("): 1, ("op", ")"): -1}.get(token, 0)
             self.at += 1
         self._take(")")
-        name = f"{PRESENCE_PREFIX}{kind}_{text[1:-1].encode().hex()}"
+        name = _encoded(f"{PRESENCE_PREFIX}{kind}_", text)
         self.names.add(name)
         return name
 
@@ -229,7 +229,7 @@ class _Grammar:
             raise ValueError(method)
         self._take("(")
         self._take(")")
-        name = PARAMETER_PREFIX + text[1:-1].encode().hex()
+        name = _encoded(PARAMETER_PREFIX, text)
         self.names.add(name)
         return name
 
@@ -253,18 +253,25 @@ def presence_name(name: str) -> tuple[str, str] | None:
     if not name.startswith(PRESENCE_PREFIX):
         return None
     kind, _, encoded = name[len(PRESENCE_PREFIX):].partition("_")
-    try:
-        return kind, bytes.fromhex(encoded).decode()
-    except ValueError:
-        return None
+    written = _decoded(encoded)
+    return None if written is None else (kind, written)
 
 
 def parameter_name(name: str) -> str | None:
     """The parameter a grammar name stands for (``get_parameter("x")``), else None."""
-    if not name.startswith(PARAMETER_PREFIX):
-        return None
+    return _decoded(name[len(PARAMETER_PREFIX):]) if name.startswith(PARAMETER_PREFIX) \
+        else None
+
+
+def _encoded(prefix: str, literal: str) -> str:
+    """A grammar name of its own for a string literal's text (``"x"``): the prefix, then
+    the text in hex (any text makes a valid name)."""
+    return prefix + literal[1:-1].encode().hex()
+
+
+def _decoded(encoded: str) -> str | None:
     try:
-        return bytes.fromhex(name[len(PARAMETER_PREFIX):]).decode()
+        return bytes.fromhex(encoded).decode()
     except ValueError:
         return None
 

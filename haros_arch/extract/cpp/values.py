@@ -18,6 +18,7 @@ from typing import TYPE_CHECKING, Any, TypeVar
 
 from clang.cindex import Cursor, CursorKind, TypeKind
 
+from . import api
 from .cursors import _Place
 from .expressions import (
     binary_operator,
@@ -623,18 +624,12 @@ def literal(spelling: str) -> str | None:
 
 
 # rclcpp's functions that give the node's own name (``get_name`` without its namespace,
-# ``get_fully_qualified_name`` with), by the class that declares them
-_NODE_NAMES = {
-    "get_name": frozenset({"rclcpp::Node", "rclcpp_lifecycle::LifecycleNode",
-                           "rclcpp::node_interfaces::NodeBaseInterface"}),
-    "get_fully_qualified_name": frozenset({
-        "rclcpp::Node", "rclcpp_lifecycle::LifecycleNode",
-        "rclcpp::node_interfaces::NodeBaseInterface"}),
-}
+# ``get_fully_qualified_name`` with), declared by a node class or its base interface
+_NODE_NAME_FUNCTIONS = frozenset({"get_name", "get_fully_qualified_name"})
+_NODE_NAME_OWNERS = frozenset({*api.RCLCPP_NODES, "rclcpp::node_interfaces::NodeBaseInterface"})
 
 
 def _names_node(target: Cursor) -> bool:
     """Whether calling ``target`` gives the name of the node the code runs as."""
-    owners = _NODE_NAMES.get(target.spelling)
-    return owners is not None and target.semantic_parent is not None and (
-        qualified_name(target.semantic_parent) in owners)
+    return target.spelling in _NODE_NAME_FUNCTIONS and target.semantic_parent is not None and (
+        qualified_name(target.semantic_parent) in _NODE_NAME_OWNERS)

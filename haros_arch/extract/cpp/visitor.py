@@ -1085,8 +1085,8 @@ class CallFinder:
             key = place_of(decl)
             if key not in self._held:
                 source = self._parameter_source(node, scope, 0)
-                self._held[key] = source[0] if source is not None and not any(
-                    mark in source[0] for mark in ("?", PLACEHOLDER, PARAMETER)) else None
+                self._held[key] = source[0] if source is not None and _known_name(
+                    source[0]) else None
             parameter = self._held[key]
             if parameter is not None:
                 found[decl.spelling] = parameter
@@ -1098,9 +1098,7 @@ class CallFinder:
         name, source = self._name(expr, scope)
         # (a parameter named after what other files pass is not known until they are
         # read: its name stays unknown)
-        if source is None or PLACEHOLDER in name or any(
-            mark in source[0] for mark in ("?", PLACEHOLDER, PARAMETER)
-        ):
+        if source is None or PLACEHOLDER in name or not _known_name(source[0]):
             return None
         return parameter_mark(name, source[0], source[3])
 
@@ -1586,6 +1584,12 @@ def _renames_itself(arg: Cursor) -> bool:
         if "__node:=" in token.spelling:
             return True
     return False
+
+
+def _known_name(name: str) -> bool:
+    """A parameter's name known in this file: no unknown run, no placeholder of what
+    another file passes, no parameter mark."""
+    return not any(mark in name for mark in ("?", PLACEHOLDER, PARAMETER))
 
 
 def _subscript(expr: Cursor) -> tuple[Cursor, Cursor] | None:
