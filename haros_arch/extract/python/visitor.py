@@ -42,7 +42,7 @@ from .objects import (
     text_of,
 )
 from .scopes import MAX_UNROLL, MAX_UNROLL_OUTER
-from .specials import evaluate, param_name, special_calls
+from .specials import evaluate, param_name, special_calls, type_only
 from .values import MAX_CALL_DEPTH, NAMESPACE, Evaluator, argument, unknown_params
 
 Conditions = tuple[Condition, ...]
@@ -576,24 +576,3 @@ def _remote(remote: Value, name: str) -> str:
     """A parameter of another node: ``~x`` of node ``board`` is ``board/x``."""
     node = remote.text.rstrip("/")
     return f"{node}/{name.removeprefix('~')}" if node else name
-
-
-# rclpy's parameter types (Parameter.Type.X, ParameterType.PARAMETER_X) as the model
-# names parameter types, for declarations that give a type and no value
-_DECLARED_TYPES: dict[str, str | None] = {
-    "BOOL": param_type(True), "INTEGER": param_type(0), "DOUBLE": param_type(0.0),
-    "STRING": "str", **{f"{kind}_ARRAY": "list" for kind in (
-        "BYTE", "BOOL", "INTEGER", "DOUBLE", "STRING")}}
-
-
-def type_only(expr: ast.expr | None) -> str | None:
-    """The parameter type a ``declare_parameter`` value argument names when it is a type
-    rather than a value, else None."""
-    if not isinstance(expr, ast.Attribute):
-        return None
-    owner = expr.value
-    owner_name = owner.attr if isinstance(owner, ast.Attribute) else (
-        owner.id if isinstance(owner, ast.Name) else "")
-    if owner_name not in ("Type", "ParameterType"):
-        return None
-    return _DECLARED_TYPES.get(expr.attr.removeprefix("PARAMETER_"))
