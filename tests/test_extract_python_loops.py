@@ -135,3 +135,56 @@ def test_a_loop_over_a_list_parameter_names_one_call_per_element(tmp_path) -> No
                     ("read", "topics", None, None, ()),
                     ("subscribe", "?", "topics", ".", topics),
                     ("publish", "fixed", None, None, topics)]
+
+
+def test_an_element_of_a_list_parameter_with_text_around_it(tmp_path, write_tree) -> None:
+    """``for robot in self.get_parameter('robots').value:
+    self.create_publisher(Twist, f'/{robot}/cmd_vel', 10)`` (a fleet's command topics):
+    the element with text around it names one call per element as the element alone
+    does; the graph puts each element the configuration gives in the place of the
+    ``?`` (`/?/cmd_vel` was left unknown)."""
+    import os
+
+    from conftest import package_xml
+
+    from haros_arch.pipeline import Options, analyse
+    from haros_arch.project import load
+
+    code = ("import rclpy\nfrom rclpy.node import Node\n"
+            "from geometry_msgs.msg import Twist\n"
+            "class Fleet(Node):\n"
+            "    def __init__(self):\n"
+            "        super().__init__('fleet')\n"
+            "        self.declare_parameter('robots', ['a'])\n"
+            "        for robot in self.get_parameter('robots').value:\n"
+            "            self.create_publisher(Twist, f'/{robot}/cmd_vel', 10)\n"
+            "            self.create_publisher(Twist, robot + '/odom_cmd', 10)\n"
+            "            self.create_publisher(Twist, f'{robot}/{robot}', 10)\n"
+            "def main():\n    rclpy.init()\n    Fleet()\n")
+    launch = ("from launch import LaunchDescription\n"
+              "from launch_ros.actions import Node\n"
+              "def generate_launch_description():\n"
+              "    return LaunchDescription([Node(package='fleet', executable='fleet',\n"
+              "        parameters=[{'robots': ['r1', 'r2']}])])\n")
+    root = write_tree({
+        "src/fleet/package.xml": package_xml("fleet", build_type="ament_python"),
+        "src/fleet/setup.py": "from setuptools import setup\n"
+                              "setup(name='fleet', packages=['fleet'], entry_points="
+                              "{'console_scripts': ['fleet = fleet.fleet:main']})\n",
+        "src/fleet/resource/fleet": "",
+        "src/fleet/fleet/__init__.py": "",
+        "src/fleet/fleet/fleet.py": code,
+        "src/fleet/launch/fleet.launch.py": launch,
+        "project.yaml": "project: p\nconfigurations:\n  c: [fleet/launch/fleet.launch.py]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {"PATH": os.environ.get("PATH", "")},
+                    Options(cache_dir=None))
+    calls = [c for p in model.packages for n in p.nodes for c in n.calls
+             if c.kind == "publish"]
+    assert [(c.name, c.name_param, c.name_each) for c in calls] == [
+        ("/?/cmd_vel", "robots", "."), ("?/odom_cmd", "robots", "."),
+        ("?/?", None, None)]
+    topics = sorted(t.name for t in model.configurations[0].topics)
+    assert "/r1/cmd_vel" in topics and "/r2/cmd_vel" in topics
+    assert "/r1/odom_cmd" in topics and "/r2/odom_cmd" in topics
+    assert not any("cmd" in t and "?" in t for t in topics)

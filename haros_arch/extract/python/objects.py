@@ -33,6 +33,9 @@ class ParamValue:
     default: object = None
 
 
+ELEMENT_OF = "an element of parameter "  # the origin of a ``ParamElement``'s unknown text
+
+
 @dataclass(frozen=True)
 class ParamElement:
     """An element of the list parameter ``name``: the variable of a loop over its value
@@ -133,7 +136,7 @@ def text_of(value: object) -> Value:
     if isinstance(value, ParamValue):
         return Value.unknown(f"parameter {value.name}")
     if isinstance(value, ParamElement):
-        return Value.unknown(f"an element of parameter {value.name}")
+        return Value.unknown(f"{ELEMENT_OF}{value.name}")
     return Value.unknown(getattr(value, "origin", "") or type(value).__name__)
 
 

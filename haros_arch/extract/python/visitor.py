@@ -28,6 +28,7 @@ from .conditions import condition, is_main_guard, source_text
 from .modules import ClassInfo, FunctionInfo, Loader, Module, add_import
 from .msg_types import ros_type
 from .objects import (
+    ELEMENT_OF,
     BoundMethod,
     Frame,
     Instance,
@@ -514,7 +515,13 @@ class Walker:
             call.name_each = "."
         else:
             params = [p.origin for p in text.parts if isinstance(p, Unknown)]
-            if len(params) == 1 and params[0].startswith("parameter "):
+            if len(params) == 1 and params[0].startswith(ELEMENT_OF):
+                # an element with text around it (``f"/{robot}/cmd_vel"``): one call
+                # per element too, the element in the place of the ``?``
+                name = params[0].removeprefix(ELEMENT_OF)
+                call.name_param = param_name(Value.of(name)) if version == 2 else name
+                call.name_each = "."
+            elif len(params) == 1 and params[0].startswith("parameter "):
                 name = params[0].removeprefix("parameter ")
                 call.name_param = param_name(Value.of(name)) if version == 2 else name
                 default = ev.param_defaults.get(name)
