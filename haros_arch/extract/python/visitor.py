@@ -36,12 +36,14 @@ from .objects import (
     NodeMethod,
     ParamElement,
     ParamValue,
+    QoS,
     Ref,
     SuperInit,
     param_type,
     plain_value,
     text_of,
 )
+from .qos import with_policy
 from .scopes import MAX_UNROLL, MAX_UNROLL_OUTER
 from .specials import evaluate, param_name, special_calls, type_only
 from .values import MAX_CALL_DEPTH, NAMESPACE, Evaluator, argument, unknown_params
@@ -107,6 +109,9 @@ class Walker:
         # reads whose value the code converts (``int(rospy.get_param('~baud', '500000'))``):
         # any value the conversion takes will do, so the read has no type of its own
         self._converted: set[int] = set()
+        # the conditions under which each QoS profile held by a local or an attribute of
+        # ``self`` was made (``_qos_assigned``)
+        self._qos_made: dict[tuple[int, str], Conditions] = {}
 
     # -- entries ------------------------------------------------------------------------
 
@@ -182,6 +187,39 @@ class Walker:
         if statement.value is not None:
             self._expr(statement.value, frame, conds)
         self.evaluator.assign(statement, frame)
+        targets = statement.targets if isinstance(statement, ast.Assign) else [statement.target]
+        for target in targets:
+            self._qos_assigned(target, frame, conds)
+
+    def _qos_assigned(self, target: ast.expr, frame: Frame, conds: Conditions) -> None:
+        """Where a QoS profile is bound to a local or an attribute of ``self``, and its
+        policies set after (``qos.durability = ...``): a policy set under a condition
+        the profile was not made under may not be set, so it is unknown, as a C++
+        setter that may not run leaves its field."""
+        ev = self.evaluator
+        if isinstance(target, ast.Attribute) and (target.attr == "depth"
+                                                  or target.attr in rclpy.POLICIES):
+            holder = ev.eval(target.value, frame)
+            key = self._holder(target.value, frame)
+            made = self._qos_made.get(key) if key is not None else None
+            if isinstance(holder, QoS) and any(c not in (made or ()) for c in conds):
+                unset = with_policy(holder, target.attr, None)
+                if unset is not None:
+                    ev.bind(target.value, unset, frame)
+            return
+        key = self._holder(target, frame)
+        if key is not None and isinstance(ev.eval(target, frame), QoS):
+            self._qos_made[key] = conds
+
+    @staticmethod
+    def _holder(expr: ast.expr, frame: Frame) -> tuple[int, str] | None:
+        """A local (in its frame) or an attribute of ``self`` (of its instance)."""
+        if isinstance(expr, ast.Name):
+            return id(frame), expr.id
+        if isinstance(expr, ast.Attribute) and isinstance(expr.value, ast.Name) \
+                and expr.value.id == "self" and frame.instance is not None:
+            return id(frame.instance), expr.attr
+        return None
 
     _AnnAssign = _Assign
     _AugAssign = _Assign
