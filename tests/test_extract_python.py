@@ -355,3 +355,30 @@ def test_rclpy_qos_policy_set_under_a_condition_is_unknown(tmp_path) -> None:
     assert qos["data"] == {**DEFAULT_QOS, "depth": 10, "reliability": None,
                            "durability": None}
     assert qos["other"] == {**DEFAULT_QOS, "depth": 1, "durability": "transient_local"}
+
+
+def test_rclpy_super_init_runs_a_base_class_of_the_package(tmp_path) -> None:
+    """A node class built on another of the package (``class Arm(Base)`` with
+    ``super().__init__('arm', 'arm_cmd')``, ``Base.__init__(self, name, topic)`` making
+    the node and its publisher): ``super().__init__`` runs the base's ``__init__`` with
+    those arguments, as Python does. It was taken for rclpy's ``Node.__init__`` (the
+    topic for the namespace) and the base's publisher was ``?``."""
+    from haros_arch.extract.python import extract_python
+    from haros_arch.workspace import scan
+
+    source = tmp_path / "n.py"
+    source.write_text(
+        "import rclpy\nfrom rclpy.node import Node\nfrom std_msgs.msg import Float64\n"
+        "class Base(Node):\n"
+        "    def __init__(self, name, topic):\n"
+        "        super().__init__(name, namespace='robot')\n"
+        "        self.pub = self.create_publisher(Float64, topic, 10)\n"
+        "class Arm(Base):\n"
+        "    def __init__(self):\n"
+        "        super().__init__('arm', 'arm_cmd')\n"
+        "        self.create_subscription(Float64, 'arm_state', print, 10)\n"
+        "def main():\n    rclpy.init()\n    rclpy.spin(Arm())\n")
+    found = extract_python([str(source)], scan([str(tmp_path)]))
+    assert (found.rosname, found.namespace) == ("arm", "robot")
+    assert sorted((c.kind, c.name) for c in found.calls) == [
+        ("publish", "arm_cmd"), ("subscribe", "arm_state")]

@@ -123,6 +123,8 @@ class Frame:
     depth: int = 0
     # the module's own top-level code: its imports and definitions are indexed already
     top: bool = False
+    # the class whose method this frame runs (``super()`` starts after it)
+    owner: ClassInfo | None = None
 
 
 def text_of(value: object) -> Value:

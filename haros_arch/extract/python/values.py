@@ -271,11 +271,26 @@ class Evaluator(Instances, QoSProfiles, Walker):
             inner = func.value
             if isinstance(inner, ast.Call) and isinstance(inner.func, ast.Name) \
                     and inner.func.id == "super":
-                return SuperInit()
+                return self._super_init(frame)
             base = self.eval(inner, frame)
             if isinstance(base, Ref) and base.key in rclpy.NODE_CLASSES:
                 return SuperInit()
         return self.eval(func, frame)
+
+    def _super_init(self, frame: Frame) -> object:
+        """What ``super().__init__`` runs: the ``__init__`` of the next class of the
+        package after the method's own in the object's class order (a node class of the
+        workspace built on another: ``Base.__init__(self, name, topic)`` makes the
+        publisher the subclass names), else the ROS node's (``SuperInit``)."""
+        instance, owner = frame.instance, frame.owner
+        if instance is None or owner is None:
+            return SuperInit()
+        order = list(self.mro(instance.cls))
+        after = order[next((i for i, c in enumerate(order) if c is owner), len(order)) + 1:]
+        for cls in after:
+            if "__init__" in cls.methods:
+                return BoundMethod(instance, cls.methods["__init__"])
+        return SuperInit()
 
     def _call_ref(self, ref: Ref, expr: ast.Call, frame: Frame) -> object:
         key = ref.key

@@ -153,7 +153,7 @@ class Walker:
 
     def _entry(self, info: FunctionInfo) -> None:
         instance = self.evaluator.new(info.cls) if info.cls is not None else None
-        frame = Frame(info.module, unknown_params(info), instance)
+        frame = Frame(info.module, unknown_params(info), instance, owner=info.cls)
         self._active.add(id(info.node))
         try:
             self._block(info.node.body, frame, ())
