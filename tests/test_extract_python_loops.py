@@ -188,3 +188,30 @@ def test_an_element_of_a_list_parameter_with_text_around_it(tmp_path, write_tree
     assert "/r1/cmd_vel" in topics and "/r2/cmd_vel" in topics
     assert "/r1/odom_cmd" in topics and "/r2/odom_cmd" in topics
     assert not any("cmd" in t and "?" in t for t in topics)
+
+
+def test_comprehensions_are_walked_as_their_loops(tmp_path) -> None:
+    """``[rospy.Publisher(t + '/cmd', ...) for t in topics]`` and a dict comprehension
+    over a list parameter make one call per element as a ``for`` statement does (they
+    were ``?/cmd``, the comprehension's variable unknown); a comprehension over a known
+    tuple is unrolled, its ``if`` a condition; its variable does not leak."""
+    result = run(tmp_path,
+                 "        topics = self.get_parameter('topics').value\n"
+                 "        self.pubs = [self.create_publisher(Image, t + '/raw', 10)\n"
+                 "                     for t in topics]\n"
+                 "        self.named = {t: self.create_publisher(Image, f'{t}/rect', 10)\n"
+                 "                      for t in self.get_parameter('cams').value}\n"
+                 "        t = 'fixed'\n"
+                 "        subs = list(self.create_subscription(Image, side, print, 10)\n"
+                 "                    for side in ('left', 'right') if side != t)\n"
+                 "        self.create_publisher(Image, t, 10)\n")
+    made = [(c.kind, c.name, c.name_param, c.name_each, tuple(x.text for x in c.conditions))
+            for c in result.calls if c.kind in ("publish", "subscribe")]
+    assert made == [
+        ("publish", "?/raw", "topics", ".", ("t in topics",)),
+        ("publish", "?/rect", "cams", ".", ("t in self.get_parameter('cams').value",)),
+        ("subscribe", "left", None, None,
+         ("side in ('left', 'right')", "side != t")),
+        ("subscribe", "right", None, None,
+         ("side in ('left', 'right')", "side != t")),
+        ("publish", "fixed", None, None, ())]

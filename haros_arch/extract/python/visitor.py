@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import ast
 import re
+from collections.abc import Callable
 
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
@@ -239,28 +240,36 @@ class Walker:
 
     def _For(self, statement: ast.For | ast.AsyncFor, frame: Frame, conds: Conditions) -> None:
         self._expr(statement.iter, frame, conds)
-        text = f"{self._text(frame, statement.target)} in {self._text(frame, statement.iter)}"
-        loop = condition("for", text, self._where(frame, statement))
+        self._loop(statement.target, statement.iter, frame, self._where(frame, statement),
+                   lambda loop: self._block(statement.body, frame, (*conds, loop)))
+        self._block(statement.orelse, frame, conds)
+
+    def _loop(self, target: ast.expr, over: ast.expr, frame: Frame, where: Location,
+              body: Callable[[Condition], None]) -> None:
+        """Walk a loop's body (``body(loop condition)``) once per item of a known, short
+        sequence (unrolled), else once with the variable unknown; over a list
+        parameter's value, once with the variable its element (``ParamElement``)."""
+        text = f"{self._text(frame, target)} in {self._text(frame, over)}"
+        loop = condition("for", text, where)
         items = self.evaluator.iteration(
-            statement.iter, frame, MAX_UNROLL if self._unrolled else MAX_UNROLL_OUTER)
-        walked = self.evaluator.eval(statement.iter, frame) if items is None else None
-        if isinstance(walked, ParamValue) and isinstance(statement.target, ast.Name):
+            over, frame, MAX_UNROLL if self._unrolled else MAX_UNROLL_OUTER)
+        walked = self.evaluator.eval(over, frame) if items is None else None
+        if isinstance(walked, ParamValue) and isinstance(target, ast.Name):
             # a loop over a list parameter's value: a call named by its variable is one
             # call per element the configuration gives it (the graph expands it, and the
             # loop, "for each", is then no condition of those calls)
-            loop = condition(EACH_STATEMENT, text, self._where(frame, statement))
+            loop = condition(EACH_STATEMENT, text, where)
             items = (ParamElement(walked.name),)
         # a loop over a known, short sequence is unrolled: one walk of the body per item
         self._unrolled += 1 if items else 0
         try:
             for item in items if items else (Unknown("loop variable"),):
-                self.evaluator.bind(statement.target, item, frame)
-                self._block(statement.body, frame, (*conds, loop))
+                self.evaluator.bind(target, item, frame)
+                body(loop)
         finally:
             self._unrolled -= 1 if items else 0
         if items:  # after the loop its variable is unknown to the rest of the walk
-            self.evaluator.bind(statement.target, Unknown("loop variable"), frame)
-        self._block(statement.orelse, frame, conds)
+            self.evaluator.bind(target, Unknown("loop variable"), frame)
 
     _AsyncFor = _For
 
@@ -361,10 +370,53 @@ class Walker:
                 and isinstance(node.args[0], ast.Call)
             ):
                 self._converted.add(id(node.args[0]))
-        calls = [n for n in ast.walk(expr) if isinstance(n, ast.Call)]
+        calls: list[ast.Call] = []
+        comprehensions: list[_Comprehension] = []
+        _outside_comprehensions(expr, calls, comprehensions)
         calls.sort(key=lambda c: (c.lineno, c.col_offset))
         for call in calls:
             self._call(call, frame, conds)
+        for made in comprehensions:
+            self._comprehension(made, frame, conds)
+
+    def _comprehension(self, made: _Comprehension, frame: Frame, conds: Conditions) -> None:
+        """A list, set, dict or generator comprehension walked as the ``for`` loops it
+        is (``[rospy.Publisher(t + '/cmd', ...) for t in topics]``: one call per element
+        of the list parameter ``topics``), each ``if`` of it a condition; its variables
+        are its own, as in Python 3."""
+        parts = [made.key, made.value] if isinstance(made, ast.DictComp) else [made.elt]
+        names = {n.id for gen in made.generators for n in ast.walk(gen.target)
+                 if isinstance(n, ast.Name)}
+        saved = {name: frame.locals[name] for name in names if name in frame.locals}
+
+        def level(index: int, inner: Conditions) -> None:
+            if index == len(made.generators):
+                for part in parts:
+                    self._expr(part, frame, inner)
+                return
+            gen = made.generators[index]
+            if index:  # the first one's iterable is the enclosing scope's
+                self._expr(gen.iter, frame, inner)
+
+            def body(loop: Condition) -> None:
+                tests = (*inner, loop)
+                for test in gen.ifs:
+                    self._test(test)
+                    self._expr(test, frame, tests)
+                    tests = (*tests, condition("if", self._text(frame, test),
+                                               self._where(frame, test)))
+                level(index + 1, tests)
+
+            self._loop(gen.target, gen.iter, frame, self._where(frame, made), body)
+
+        try:
+            level(0, conds)
+        finally:
+            for name in names:
+                if name in saved:
+                    frame.locals[name] = saved[name]
+                else:
+                    frame.locals.pop(name, None)
 
     def _call(self, call: ast.Call, frame: Frame, conds: Conditions) -> None:
         ev = self.evaluator
@@ -621,3 +673,20 @@ def _remote(remote: Value, name: str) -> str:
     """A parameter of another node: ``~x`` of node ``board`` is ``board/x``."""
     node = remote.text.rstrip("/")
     return f"{node}/{name.removeprefix('~')}" if node else name
+
+
+_Comprehension = ast.ListComp | ast.SetComp | ast.DictComp | ast.GeneratorExp
+
+
+def _outside_comprehensions(expr: ast.AST, calls: list[ast.Call],
+                            comprehensions: list[_Comprehension]) -> None:
+    """The calls of ``expr`` outside its comprehensions (the first iterable of one is
+    outside: the enclosing scope evaluates it), and its outermost comprehensions."""
+    if isinstance(expr, _Comprehension):
+        comprehensions.append(expr)
+        _outside_comprehensions(expr.generators[0].iter, calls, comprehensions)
+        return
+    if isinstance(expr, ast.Call):
+        calls.append(expr)
+    for child in ast.iter_child_nodes(expr):
+        _outside_comprehensions(child, calls, comprehensions)
