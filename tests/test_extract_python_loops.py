@@ -215,3 +215,54 @@ def test_comprehensions_are_walked_as_their_loops(tmp_path) -> None:
         ("subscribe", "right", None, None,
          ("side in ('left', 'right')", "side != t")),
         ("publish", "fixed", None, None, ())]
+
+
+def test_a_field_of_each_element_of_a_list_or_dict_parameter(write_tree) -> None:
+    """A multiplexer's inputs: ``for src in rospy.get_param('~sources'):
+    rospy.Subscriber(src['topic'], ...)`` over a list of dictionaries, and ``for name,
+    cfg in rospy.get_param('~inputs').items(): ... cfg['topic']`` over a dictionary of
+    them, as twist_mux's C++ does: one subscription per entry, named by its ``topic``
+    (both were ``/?``). A dictionary a ``rosparam`` sets is its leaves until a node reads
+    it whole: the entries are read from them."""
+    import os
+
+    from conftest import package_xml
+
+    from haros_arch.pipeline import Options, analyse
+    from haros_arch.project import load
+
+    code = ("#!/usr/bin/env python\nimport rospy\nfrom std_msgs.msg import String\n"
+            "rospy.init_node('mux')\n"
+            "for src in rospy.get_param('~sources'):\n"
+            "    rospy.Subscriber(src['topic'], String, print, queue_size=1)\n"
+            "for name, cfg in rospy.get_param('~inputs', {}).items():\n"
+            "    rospy.Subscriber(cfg['topic'] + '_in', String, print, queue_size=1)\n"
+            "for cfg in rospy.get_param('~outputs').values():\n"
+            "    rospy.Publisher(cfg['topic'], String, queue_size=1)\n")
+    launch = ("<launch><node pkg=\"mux\" type=\"mux.py\" name=\"mux\">\n"
+              "<rosparam param=\"sources\">[{topic: joy, priority: 1}, {topic: nav}]"
+              "</rosparam>\n"
+              "<rosparam param=\"inputs\">{a: {topic: left}, b: {topic: right}}</rosparam>\n"
+              "<rosparam param=\"outputs\">{o: {topic: merged}}</rosparam>\n"
+              "</node></launch>\n")
+    root = write_tree({
+        "src/mux/package.xml": package_xml("mux"),
+        "src/mux/CMakeLists.txt": "cmake_minimum_required(VERSION 3.0.2)\nproject(mux)\n"
+                                  "find_package(catkin REQUIRED COMPONENTS rospy)\n"
+                                  "catkin_package()\n"
+                                  "catkin_install_python(PROGRAMS scripts/mux.py "
+                                  "DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})\n",
+        "src/mux/scripts/mux.py": code,
+        "src/mux/launch/mux.launch": launch,
+        "project.yaml": "project: p\nconfigurations:\n  c: [mux/launch/mux.launch]\n",
+    })
+    os.chmod(root / "src/mux/scripts/mux.py", 0o755)
+    model = analyse(load(str(root / "project.yaml")), {"PATH": os.environ.get("PATH", "")},
+                    Options(cache_dir=None))
+    calls = [(c.kind, c.name, c.name_param, c.name_each) for p in model.packages
+             for n in p.nodes for c in n.calls if c.kind in ("publish", "subscribe")]
+    assert calls == [("subscribe", "?", "~sources", "topic"),
+                     ("subscribe", "?_in", "~inputs", "topic"),
+                     ("publish", "?", "~outputs", "topic")]
+    topics = sorted(t.name for t in model.configurations[0].topics)
+    assert topics == ["/joy", "/left_in", "/merged", "/nav", "/right_in"]

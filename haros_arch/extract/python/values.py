@@ -34,6 +34,7 @@ from .objects import (
     ModuleRef,
     NodeHandle,
     NodeMethod,
+    ParamElement,
     ParameterClient,
     ParamObject,
     ParamValue,
@@ -191,6 +192,9 @@ class Evaluator(Instances, QoSProfiles, Walker):
         if isinstance(base, Seq) and isinstance(index, int) and -len(base.items) <= index < len(
                 base.items):
             return base.items[index]
+        if isinstance(base, ParamElement) and base.field == "." and isinstance(
+                index, Value) and index.is_known and index.text:
+            return ParamElement(base.name, index.text)  # src['topic']
         return Unknown("subscript")
 
     def eval_Attribute(self, expr: ast.Attribute, frame: Frame) -> object:

@@ -30,6 +30,7 @@ from .modules import ClassInfo, FunctionInfo, Loader, Module, add_import
 from .msg_types import ros_type
 from .objects import (
     ELEMENT_OF,
+    FIELD_OF,
     BoundMethod,
     Frame,
     Instance,
@@ -39,6 +40,7 @@ from .objects import (
     ParamValue,
     QoS,
     Ref,
+    Seq,
     SuperInit,
     param_type,
     plain_value,
@@ -248,28 +250,51 @@ class Walker:
               body: Callable[[Condition], None]) -> None:
         """Walk a loop's body (``body(loop condition)``) once per item of a known, short
         sequence (unrolled), else once with the variable unknown; over a list
-        parameter's value, once with the variable its element (``ParamElement``)."""
+        parameter's value, or a dict parameter's ``values()`` / ``items()``, once with
+        the variable its element (``ParamElement``; an entry's key is unknown)."""
+        ev = self.evaluator
         text = f"{self._text(frame, target)} in {self._text(frame, over)}"
         loop = condition("for", text, where)
-        items = self.evaluator.iteration(
-            over, frame, MAX_UNROLL if self._unrolled else MAX_UNROLL_OUTER)
-        walked = self.evaluator.eval(over, frame) if items is None else None
-        if isinstance(walked, ParamValue) and isinstance(target, ast.Name):
-            # a loop over a list parameter's value: a call named by its variable is one
-            # call per element the configuration gives it (the graph expands it, and the
-            # loop, "for each", is then no condition of those calls)
-            loop = condition(EACH_STATEMENT, text, where)
-            items = (ParamElement(walked.name),)
+        items = ev.iteration(over, frame, MAX_UNROLL if self._unrolled else MAX_UNROLL_OUTER)
+        if items is None:
+            element = self._element_loop(target, over, frame)
+            if element is not None:
+                # a loop over a list parameter's value: a call named by its variable is
+                # one call per element the configuration gives it (the graph expands it,
+                # and the loop, "for each", is then no condition of those calls)
+                loop = condition(EACH_STATEMENT, text, where)
+                items = (element,)
         # a loop over a known, short sequence is unrolled: one walk of the body per item
         self._unrolled += 1 if items else 0
         try:
             for item in items if items else (Unknown("loop variable"),):
-                self.evaluator.bind(target, item, frame)
+                ev.bind(target, item, frame)
                 body(loop)
         finally:
             self._unrolled -= 1 if items else 0
         if items:  # after the loop its variable is unknown to the rest of the walk
-            self.evaluator.bind(target, Unknown("loop variable"), frame)
+            ev.bind(target, Unknown("loop variable"), frame)
+
+    def _element_loop(self, target: ast.expr, over: ast.expr, frame: Frame) -> object:
+        """What a loop's variable holds when the loop is over a parameter's elements:
+        ``ParamElement`` (``for x in p``, ``for x in p.values()``), a key unknown and
+        the element (``for k, x in p.items()``); else None."""
+        ev = self.evaluator
+        walked = ev.eval(over, frame)
+        if isinstance(walked, ParamValue):
+            return ParamElement(walked.name) if isinstance(target, ast.Name) else None
+        if not (isinstance(over, ast.Call) and isinstance(over.func, ast.Attribute)
+                and over.func.attr in ("items", "values") and not over.args):
+            return None
+        owner = ev.eval(over.func.value, frame)
+        if not isinstance(owner, ParamValue):
+            return None
+        if over.func.attr == "values":
+            return ParamElement(owner.name) if isinstance(target, ast.Name) else None
+        if isinstance(target, ast.Tuple) and len(target.elts) == 2 and isinstance(
+                target.elts[1], ast.Name):
+            return Seq((Unknown("loop variable"), ParamElement(owner.name)))
+        return None
 
     _AsyncFor = _For
 
@@ -602,15 +627,15 @@ class Walker:
                 call.name_default = default.text
         elif isinstance(value, ParamElement):
             call.name_param = param_name(Value.of(value.name)) if version == 2 else value.name
-            call.name_each = "."
+            call.name_each = value.field
         else:
             params = [p.origin for p in text.parts if isinstance(p, Unknown)]
             if len(params) == 1 and params[0].startswith(ELEMENT_OF):
                 # an element with text around it (``f"/{robot}/cmd_vel"``): one call
                 # per element too, the element in the place of the ``?``
-                name = params[0].removeprefix(ELEMENT_OF)
+                name, _, field = params[0].removeprefix(ELEMENT_OF).partition(FIELD_OF)
                 call.name_param = param_name(Value.of(name)) if version == 2 else name
-                call.name_each = "."
+                call.name_each = field or "."
             elif len(params) == 1 and params[0].startswith("parameter "):
                 name = params[0].removeprefix("parameter ")
                 call.name_param = param_name(Value.of(name)) if version == 2 else name
