@@ -382,3 +382,35 @@ def test_rclpy_super_init_runs_a_base_class_of_the_package(tmp_path) -> None:
     assert (found.rosname, found.namespace) == ("arm", "robot")
     assert sorted((c.kind, c.name) for c in found.calls) == [
         ("publish", "arm_cmd"), ("subscribe", "arm_state")]
+
+
+def test_rclpy_a_node_class_nothing_builds_is_no_node_of_the_process(tmp_path) -> None:
+    """A module that defines two node classes and whose ``main()`` builds one: the other
+    was walked as if it ran, its name a second node of the process (an instance of its
+    own in the graph) and its calls made. As a C++ class the node never builds, it makes
+    none; a class nothing builds in a module that names no node otherwise keeps its
+    calls and name (it may be built out of our sight)."""
+    from haros_arch.extract.python import extract_python
+    from haros_arch.workspace import scan
+
+    source = tmp_path / "n.py"
+    source.write_text(
+        "import rclpy\nfrom rclpy.node import Node\nfrom std_msgs.msg import String\n"
+        "class Talker(Node):\n"
+        "    def __init__(self):\n"
+        "        super().__init__('talker')\n"
+        "        self.create_publisher(String, 'chatter', 10)\n"
+        "class Listener(Node):\n"
+        "    def __init__(self):\n"
+        "        super().__init__('listener')\n"
+        "        self.create_subscription(String, 'chatter', print, 10)\n"
+        "def main():\n    rclpy.init()\n    rclpy.spin(Talker())\n")
+    found = extract_python([str(source)], scan([str(tmp_path)]))
+    assert (found.rosname, found.names, found.nodes) == ("talker", ["talker"], [])
+    assert [(c.kind, c.name) for c in found.calls] == [("publish", "chatter")]
+    alone = tmp_path / "alone"
+    alone.mkdir()
+    (alone / "m.py").write_text(source.read_text().split("def main")[0])
+    found = extract_python([str(alone / "m.py")], scan([str(alone)]))
+    assert sorted((c.kind, c.name) for c in found.calls) == [
+        ("publish", "chatter"), ("subscribe", "chatter")]

@@ -98,6 +98,8 @@ class Walker:
         # the names each Node subclass was given (for methods walked without a caller)
         self.rclpy_names: list[str] = []
         self._class_names: dict[int, list[str]] = {}
+        # the classes the walk constructs, and those they derive from (ids)
+        self._constructed: set[int] = set()
         self.steps = 0
         self._inlined: set[int] = set()
         self._active: set[int] = set()
@@ -142,9 +144,34 @@ class Walker:
                 continue
             done.add(id(info.node))
             entries.append((info, self._collect(lambda i=info: self._entry(i))))
+        unbuilt = self._unbuilt(modules)
         for info, calls in entries:
-            if id(info.node) not in self._inlined:
+            if id(info.node) not in self._inlined and (info.cls is None
+                                                       or id(info.cls) not in unbuilt):
                 self.calls.extend(calls)
+
+    def _unbuilt(self, modules: list[Module]) -> set[int]:
+        """The node classes of the executable's modules that nothing it runs constructs,
+        when it makes its node(s) otherwise (a module with a class per node whose
+        ``main()`` builds one): they are no node of the process and make no call, as a
+        C++ class the node never builds; their names are dropped (a node class the code
+        may build out of our sight keeps its calls where nothing else names the node)."""
+        ev = self.evaluator
+        unbuilt = {id(cls) for module in modules for cls in module.classes.values()
+                   if id(cls) not in self._constructed and ev.is_node_class(cls)}
+        theirs = {name for key in unbuilt for name in self._class_names.get(key, ())}
+        others = {name for key, names in self._class_names.items() if key not in unbuilt
+                  for name in names}
+        dropped = theirs - others
+        kept = [i for i, name in enumerate(self.names) if name not in dropped]
+        if not unbuilt or not kept:
+            return set()
+        self.names_at = [self.names_at[i] for i in kept]
+        self.names = [self.names[i] for i in kept]
+        self.rclpy_names = [name for name in self.rclpy_names if name not in dropped]
+        if self.rosname in dropped:
+            self.rosname, self.namespace = self.names[0], None
+        return unbuilt
 
     def _collect(self, walk: object) -> list[PrimitiveCall]:
         saved, self.calls = self.calls, []
@@ -486,6 +513,7 @@ class Walker:
             self._inline(target, call, frame, conds)
         elif isinstance(target, ClassInfo):
             init = ev.method(target, "__init__")
+            self._constructed.update(id(c) for c in ev.mro(target))
             # its methods and those it inherits (rosserial_arduino's SerialClient runs
             # rosserial_python's, whose run() sets up the device's topics)
             for used in ev.mro(target):
