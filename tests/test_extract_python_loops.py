@@ -266,3 +266,23 @@ def test_a_field_of_each_element_of_a_list_or_dict_parameter(write_tree) -> None
                      ("publish", "?", "~outputs", "topic")]
     topics = sorted(t.name for t in model.configurations[0].topics)
     assert topics == ["/joy", "/left_in", "/merged", "/nav", "/right_in"]
+
+
+def test_an_entry_of_a_ros1_dictionary_parameter_names_a_call(tmp_path) -> None:
+    """``cam = rospy.get_param('~camera'); rospy.Subscriber(cam['topic'], ...)``: the
+    name is the parameter ``~camera/topic`` (rospy gives the dictionary of what is
+    under ``~camera``), ``cam.get('out', 'cam_out')`` the same with a default; both
+    were ``?`` with nothing for the graph to fill in."""
+    source = tmp_path / "node.py"
+    source.write_text("import rospy\nfrom std_msgs.msg import String\n"
+                      "rospy.init_node('n')\n"
+                      "cam = rospy.get_param('~camera')\n"
+                      "rospy.Subscriber(cam['topic'], String, print, queue_size=1)\n"
+                      "rospy.Publisher(cam.get('out', 'cam_out'), String, queue_size=1)\n"
+                      "rospy.Publisher(cam[key], String, queue_size=1)\n")
+    result = extract_python([str(source)], Workspace(root=str(tmp_path)), package="p")
+    made = [(c.kind, c.name, c.name_param, c.name_default) for c in result.calls
+            if c.kind != "read"]
+    assert made == [("subscribe", "?", "~camera/topic", None),
+                    ("publish", "?", "~camera/out", "cam_out"),
+                    ("publish", "?", None, None)]
