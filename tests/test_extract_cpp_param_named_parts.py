@@ -503,3 +503,62 @@ def test_a_list_parameter_element_given_to_a_class_of_another_file(write_tree) -
     zones = [(c.kind, c.name, c.name_param) for c in batch.results[0].calls
              if c.location.file.endswith("zone.cpp")]
     assert zones == [("declare", "?.visible", None)]
+
+
+DEFAULT_LIST_NODE = """
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+class Wheels : public rclcpp::Node
+{
+public:
+  Wheels() : rclcpp::Node("wheels")
+  {
+    auto names = declare_parameter<std::vector<std::string>>("wheels", {"left", "right"});
+    for (const auto & w : names) {
+      pubs_.push_back(create_publisher<std_msgs::msg::String>(w + "/cmd", 10));
+    }
+    auto cams = declare_parameter("cameras", std::vector<std::string>{"front"});
+    for (const auto & c : cams) {
+      subs_.push_back(create_subscription<std_msgs::msg::String>(c, 10, cb));
+    }
+  }
+  static void cb(const std_msgs::msg::String::SharedPtr) {}
+  std::vector<rclcpp::Publisher<std_msgs::msg::String>::SharedPtr> pubs_;
+  std::vector<rclcpp::Subscription<std_msgs::msg::String>::SharedPtr> subs_;
+};
+"""
+
+
+def test_a_list_parameter_s_default_in_code_gives_its_elements(write_tree) -> None:
+    """``declare_parameter<std::vector<std::string>>("wheels", {"left", "right"})``:
+    the braced list is the declaration's default (it was none), and a call named by
+    each element of a list the configuration does not set is one call per element of
+    that default (``/left/cmd``, ``/right/cmd``; they were ``/?/cmd``); a value the
+    launch file gives wins."""
+    import os
+
+    from haros_arch.pipeline import Options, analyse
+    from haros_arch.project import load
+
+    launch = LOOP_LAUNCH.replace("executable='hazards', name='hazards',\n             "
+                                 "parameters=[{'subscription_topics': ['bumper', "
+                                 "'/cliff/left']}]",
+                                 "executable='wheels', name='wheels',\n             "
+                                 "parameters=[{'cameras': ['rear']}]")
+    root = write_tree({
+        "src/ex/package.xml": package_xml("ex", "ament_cmake"),
+        "src/ex/CMakeLists.txt": "cmake_minimum_required(VERSION 3.8)\nproject(ex)\n"
+                                 "add_executable(wheels src/node.cpp)\n",
+        "src/ex/src/node.cpp": DEFAULT_LIST_NODE,
+        "src/ex/launch/ex.launch.py": launch,
+        "project.yaml": "project: p\nconfigurations:\n  c: [ex/launch/ex.launch.py]\n"})
+    result = extract_cpp([str(root / "src/ex/src/node.cpp")], scan([str(root / "src")]),
+                         cache_dir=None)
+    declared = {c.name: c.default for c in result.calls if c.kind == "declare"}
+    assert declared == {"wheels": ["left", "right"], "cameras": ["front"]}
+    model = analyse(load(str(root / "project.yaml")), {"PATH": os.environ.get("PATH", "")},
+                    Options(cache_dir=None))
+    links = sorted((link.kind, link.rosname.full) for link in model.configuration("c").links
+                   if link.kind in ("publish", "subscribe"))
+    assert links == [("publish", "/left/cmd"), ("publish", "/right/cmd"),
+                     ("subscribe", "/rear")]

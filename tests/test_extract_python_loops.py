@@ -160,6 +160,9 @@ def test_an_element_of_a_list_parameter_with_text_around_it(tmp_path, write_tree
             "            self.create_publisher(Twist, f'/{robot}/cmd_vel', 10)\n"
             "            self.create_publisher(Twist, robot + '/odom_cmd', 10)\n"
             "            self.create_publisher(Twist, f'{robot}/{robot}', 10)\n"
+            "        self.declare_parameter('spares', ['s1'])\n"
+            "        for spare in self.get_parameter('spares').value:\n"
+            "            self.create_publisher(Twist, f'/{spare}/cmd_vel', 10)\n"
             "def main():\n    rclpy.init()\n    Fleet()\n")
     launch = ("from launch import LaunchDescription\n"
               "from launch_ros.actions import Node\n"
@@ -183,11 +186,13 @@ def test_an_element_of_a_list_parameter_with_text_around_it(tmp_path, write_tree
              if c.kind == "publish"]
     assert [(c.name, c.name_param, c.name_each) for c in calls] == [
         ("/?/cmd_vel", "robots", "."), ("?/odom_cmd", "robots", "."),
-        ("?/?", None, None)]
+        ("?/?", None, None), ("/?/cmd_vel", "spares", ".")]
     topics = sorted(t.name for t in model.configurations[0].topics)
     assert "/r1/cmd_vel" in topics and "/r2/cmd_vel" in topics
     assert "/r1/odom_cmd" in topics and "/r2/odom_cmd" in topics
     assert not any("cmd" in t and "?" in t for t in topics)
+    # a list the configuration does not set: the elements of its default in code
+    assert "/s1/cmd_vel" in topics
 
 
 def test_comprehensions_are_walked_as_their_loops(tmp_path) -> None:

@@ -645,6 +645,8 @@ def element_calls(call: PrimitiveCall, instance: NodeInstance, resources: Resour
     value = param.value if isinstance(param, Parameter) and param.set_by_launch else None
     if value is None:
         value = _dotted_groups(full, resources, "." if instance.ros_version == 2 else "/")
+    if value is None:
+        value = _list_default(call, instance)
     elements = list(value.values()) if isinstance(value, dict) else value
     if not isinstance(elements, list):
         return [call]
@@ -658,6 +660,19 @@ def element_calls(call: PrimitiveCall, instance: NodeInstance, resources: Resour
     written = call.name if call.name.count(UNKNOWN_MARK) == 1 else UNKNOWN_MARK
     return [replace(call, name=written.replace(UNKNOWN_MARK, name, 1), name_param=None,
                     name_default=None, name_each=None, conditions=kept) for name in names]
+
+
+def _list_default(call: PrimitiveCall, instance: NodeInstance) -> list[Any] | None:
+    """The list a node's code gives a list parameter when nothing sets it: the one
+    default of its declarations and reads with a known list default (``declare_parameter(
+    "wheels", std::vector<std::string>{"left", "right"})``, ``declare_parameter('robots',
+    ['r1'])``); None when there is none or they disagree."""
+    if instance.node is None:
+        return None
+    found = [c.default for c in instance.node.calls
+             if c.kind in ("declare", "read") and c.name == call.name_param and c.has_default
+             and isinstance(c.default, list) and c.node_name == call.node_name]
+    return found[0] if found and all(d == found[0] for d in found) else None
 
 
 def _name_param_unset(instance: NodeInstance, call: PrimitiveCall) -> Diagnostic:

@@ -18,7 +18,7 @@ import re
 from collections.abc import Callable, Iterator
 from typing import Any
 
-from clang.cindex import Cursor, CursorKind, StorageClass, TranslationUnit, TypeKind
+from clang.cindex import Cursor, CursorKind, StorageClass, TranslationUnit, Type, TypeKind
 
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
@@ -1394,14 +1394,47 @@ def _converted(value: object, ptype: str | None) -> object:
 
 
 def _literal(expr: Cursor, scope: Scope) -> object:
-    """A default's value when it is a literal (a boolean, an integer, a known string),
-    else None."""
+    """A default's value when it is a literal (a boolean, an integer, a known string, a
+    braced list of them), else None."""
     for read in (scope.boolean, scope.integer):
         value = read(expr)
         if value is not None:
             return value
     parts = scope.string(expr)
-    return render(parts) if parts and _known(parts) else None
+    if parts and _known(parts):
+        return render(parts)
+    return _list_literal(expr, scope)
+
+
+MAX_LIST_DEPTH = 12  # the wrappers between an argument and its braced list
+
+
+def _scalar(ctype: Type) -> bool:
+    """A builtin type (``bool``, ``int``, ``double``, ...) or a pointer."""
+    kind = ctype.get_canonical().kind
+    return kind == TypeKind.POINTER or TypeKind.BOOL.value <= kind.value <= (
+        TypeKind.LONGDOUBLE.value)
+
+
+def _list_literal(expr: Cursor, scope: Scope) -> object:
+    """A braced list of literals that is the whole expression (``{"left", "right"}``,
+    ``std::vector<std::string>{"front", "back"}``, through the conversions and
+    constructions clang wraps it in), each item a literal; None otherwise."""
+    node = expr
+    for _ in range(MAX_LIST_DEPTH):
+        if node.kind == CursorKind.INIT_LIST_EXPR:
+            items = [_literal(item, scope) for item in node.get_children()]
+            if not items or not all(isinstance(item, str | int | float) for item in items):
+                return None
+            if _scalar(node.type):  # ``bool warn{false}``: a scalar braced, not a list
+                return items[0] if len(items) == 1 else None
+            return items
+        inner = [c for c in node.get_children() if c.kind not in (
+            CursorKind.TYPE_REF, CursorKind.TEMPLATE_REF, CursorKind.NAMESPACE_REF)]
+        if len(inner) != 1 or not inner[0].kind.is_expression():
+            return None
+        node = inner[0]
+    return None
 
 
 def _status_read(spec: api.RosFunction, site: Cursor, count: int) -> Key | None:
