@@ -414,3 +414,41 @@ def test_rclpy_a_node_class_nothing_builds_is_no_node_of_the_process(tmp_path) -
     found = extract_python([str(alone / "m.py")], scan([str(alone)]))
     assert sorted((c.kind, c.name) for c in found.calls) == [
         ("publish", "chatter"), ("subscribe", "chatter")]
+
+
+def test_rclpy_a_local_the_paths_of_an_if_set_differently(tmp_path) -> None:
+    """teleop_twist_keyboard (2.4): ``if stamped: TwistMsg = TwistStamped`` ``else:
+    TwistMsg = Twist`` then ``create_publisher(TwistMsg, 'cmd_vel', 10)``: one publisher
+    per path, each under its path's condition. The walk in order kept the last branch's
+    type for both paths (with ``TwistMsg = Twist; if stamped: TwistMsg = ...`` the
+    stamped type everywhere: a false type mismatch where the parameter is not set); the
+    else path now starts from what was before the if."""
+    from haros_arch.extract.python import extract_python
+    from haros_arch.workspace import scan
+
+    source = tmp_path / "n.py"
+    source.write_text(
+        "import rclpy\nfrom geometry_msgs.msg import Twist, TwistStamped\n"
+        "def main():\n"
+        "    node = rclpy.create_node('teleop')\n"
+        "    stamped = node.declare_parameter('stamped', False).value\n"
+        "    TwistMsg = Twist\n"
+        "    if stamped:\n"
+        "        TwistMsg = TwistStamped\n"
+        "    node.create_publisher(TwistMsg, 'cmd_vel', 10)\n"
+        "    topic = 'front'\n"
+        "    if node.get_parameter('rear').value:\n"
+        "        topic = 'rear'\n"
+        "    else:\n"
+        "        other = topic + '_other'\n"
+        "    node.create_subscription(Twist, topic, print, 10)\n")
+    found = extract_python([str(source)], scan([str(tmp_path)]))
+    made = [(c.kind, c.name, c.type, tuple(f"{x.statement} {x.text}" for x in c.conditions))
+            for c in found.calls if c.kind in ("publish", "subscribe")]
+    assert made == [
+        ("publish", "cmd_vel", "geometry_msgs/msg/TwistStamped", ("if stamped",)),
+        ("publish", "cmd_vel", "geometry_msgs/msg/Twist", ("else stamped",)),
+        ("subscribe", "rear", "geometry_msgs/msg/Twist",
+         ("if node.get_parameter('rear').value",)),
+        ("subscribe", "front", "geometry_msgs/msg/Twist",
+         ("else node.get_parameter('rear').value",))]

@@ -72,10 +72,15 @@ def extract_python(sources: list[str], workspace: Workspace, *,
             call.node_name = None
     # a call site also reached with its names known does not keep its '?' variant
     known = {(c.kind, c.location, c.node_name) for c in calls if "?" not in c.name}
+    # and one reached with its type known does not keep its unknown type (a call per
+    # type is kept where the paths of an if give it different ones)
+    typed = {(c.kind, c.name, c.location, c.node_name) for c in calls
+             if c.type not in (None, "?")}
     for call in calls:
-        key = (call.kind, call.name, call.location, call.node_name)
+        key = (call.kind, call.name, call.location, call.node_name, call.type)
         if key in seen or ("?" in call.name and (
-                call.kind, call.location, call.node_name) in known):
+                call.kind, call.location, call.node_name) in known) or (
+                call.type == "?" and key[:4] in typed):
             continue
         seen.add(key)
         result.calls.append(call)

@@ -9,6 +9,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any
 
+from ...model.conditions import Condition
 from ...model.values import Value, scalar_type
 from .modules import ClassInfo, FunctionInfo, Module
 
@@ -111,6 +112,16 @@ class QoS:
 @dataclass(frozen=True)
 class Seq:
     items: tuple[object, ...]
+
+
+@dataclass(frozen=True)
+class Alternatives:
+    """A local that the two paths of an ``if`` leave different (``TwistMsg =
+    TwistStamped`` if ``stamped``, else ``Twist``): each value with the conditions under
+    which it holds. A call given it as an argument is one call per value, under its
+    conditions (``PyVisitor._call``)."""
+
+    options: tuple[tuple[object, tuple[Condition, ...]], ...]
 
 
 @dataclass(frozen=True)

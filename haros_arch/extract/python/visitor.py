@@ -31,6 +31,7 @@ from .msg_types import ros_type
 from .objects import (
     ELEMENT_OF,
     FIELD_OF,
+    Alternatives,
     BoundMethod,
     Frame,
     Instance,
@@ -263,9 +264,17 @@ class Walker:
             return
         text = self._text(frame, statement.test)
         where = self._where(frame, statement)
-        self._block(statement.body, frame, (*conds, condition("if", text, where)))
+        yes, no = condition("if", text, where), condition("else", text, where)
+        before = dict(frame.locals)
+        self._block(statement.body, frame, (*conds, yes))
+        taken = dict(frame.locals)
+        frame.locals.clear()  # the other path starts from what was before the if
+        frame.locals.update(before)
         if statement.orelse:
-            self._block(statement.orelse, frame, (*conds, condition("else", text, where)))
+            self._block(statement.orelse, frame, (*conds, no))
+        other = dict(frame.locals)
+        frame.locals.clear()
+        frame.locals.update(_joined(before, taken, other, yes, no))
 
     def _For(self, statement: ast.For | ast.AsyncFor, frame: Frame, conds: Conditions) -> None:
         self._expr(statement.iter, frame, conds)
@@ -471,6 +480,17 @@ class Walker:
                     frame.locals.pop(name, None)
 
     def _call(self, call: ast.Call, frame: Frame, conds: Conditions) -> None:
+        for arg in (*call.args, *(k.value for k in call.keywords)):
+            held = frame.locals.get(arg.id) if isinstance(arg, ast.Name) else None
+            if isinstance(held, Alternatives) and isinstance(arg, ast.Name):
+                # a local the paths of an if left different: one call per value
+                try:
+                    for value, under in held.options:
+                        frame.locals[arg.id] = value
+                        self._call(call, frame, (*conds, *under))
+                finally:
+                    frame.locals[arg.id] = held
+                return
         ev = self.evaluator
         target = ev.callee(call.func, frame)
         version = frame.module.version
@@ -743,3 +763,56 @@ def _outside_comprehensions(expr: ast.AST, calls: list[ast.Call],
         calls.append(expr)
     for child in ast.iter_child_nodes(expr):
         _outside_comprehensions(child, calls, comprehensions)
+
+
+MAX_ALTERNATIVES = 4  # values a local may hold after the ifs that set it
+_UNSET = object()
+
+
+def _joined(before: dict[str, object], taken: dict[str, object], other: dict[str, object],
+            yes: Condition, no: Condition) -> dict[str, object]:
+    """The locals after an ``if``: those both paths leave alike as they are; an imported
+    name, a string or a number the paths set differently as ``Alternatives`` (each value
+    under its path's condition); a QoS profile with the policies they set differently
+    unknown; anything else as a walk in order had left it (the ``else`` path's value
+    where it set one, else the ``if`` path's)."""
+    joined: dict[str, object] = {}
+    for name in dict.fromkeys([*taken, *other]):
+        first, second = taken.get(name, _UNSET), other.get(name, _UNSET)
+        if first is second or _same(first, second):
+            joined[name] = first
+            continue
+        options = (*_options(first, yes), *_options(second, no))
+        if len(options) <= MAX_ALTERNATIVES and all(
+                _alternative(value) for value, _ in options):
+            joined[name] = Alternatives(options)
+            continue
+        if isinstance(first, QoS) and isinstance(second, QoS):
+            # a profile the paths set differently: what they do not agree on is unknown
+            one, two = first.as_dict(), second.as_dict()
+            joined[name] = QoS(tuple((key, value if two.get(key) == value else None)
+                                     for key, value in one.items()))
+            continue
+        kept = second if second is not before.get(name, _UNSET) else first
+        if kept is not _UNSET:
+            joined[name] = kept
+    return joined
+
+
+def _same(first: object, second: object) -> bool:
+    try:
+        return bool(first == second)
+    except Exception:
+        return False
+
+
+def _options(value: object, under: Condition) -> tuple[tuple[object, tuple[Condition, ...]], ...]:
+    if isinstance(value, Alternatives):
+        return tuple((each, (under, *conditions)) for each, conditions in value.options)
+    return ((value, (under,)),)
+
+
+def _alternative(value: object) -> bool:
+    """A value a call's argument can take per path: a message type or other imported
+    name, a string, a number."""
+    return isinstance(value, Ref | Value | int | float)
