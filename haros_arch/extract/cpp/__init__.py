@@ -26,7 +26,7 @@ from ...files import MAX_FILE_BYTES, read_text
 from ...manifest import parse_manifest, ros_version
 from ...model.conditions import Condition
 from ...model.location import Location
-from ...model.source import PrimitiveCall, declared_defaults
+from ...model.source import Package, PrimitiveCall, declared_defaults
 from ...workspace import Workspace, manifest_of
 from .. import NODELET_LOAD
 from . import cache, links, recall, synthesis, toolchain
@@ -602,13 +602,15 @@ def ros1_clients(path: str, workspace: Workspace, generated: str,
     files that define the class's constructors (when found) name a NodeHandle or the
     parameter, topic or service functions; another package's when the unit's package
     declares it as a dependency and it is installed with a package.xml that depends on
-    roscpp, or found nowhere (its headers are missing: what it does is not known). The
-    workspace files it reads (manifests, the files that define a class) go to ``read``,
-    so a cached result is used only while they are unchanged."""
+    roscpp, or found nowhere (its headers are missing: what it does is not known). A
+    dependency counts when the unit's package declares it or a workspace package it
+    depends on exports it (``_visible``). The workspace files it reads (manifests, the
+    files that define a class) go to ``read``, so a cached result is used only while
+    they are unchanged."""
     package = workspace.package_of(path)
     if package is not None and package.root:
         read.append(manifest_of(package.root))
-    declared = {d.name for d in package.dependencies} if package is not None else set()
+    declared = _visible(package, workspace, read) if package is not None else set()
     known: dict[tuple[str, str], bool] = {}
 
     def client(name: str, cls: str) -> bool:
@@ -619,6 +621,36 @@ def ros1_clients(path: str, workspace: Workspace, generated: str,
         return found
 
     return client
+
+
+# the dependencies of a package whose headers the packages depending on it see (REP 140:
+# ``depend`` and ``build_export_depend``; format 1's ``run_depend`` is both)
+_EXPORTED = frozenset({"depend", "build_export_depend", "run_depend"})
+
+
+def _visible(package: Package, workspace: Workspace, read: list[str]) -> set[str]:
+    """The packages whose headers a unit of ``package`` may include: its dependencies,
+    and those the workspace packages among them export (``_EXPORTED``), in turn. A node
+    that includes a workspace library's header reaches the classes that header names
+    (hector_exploration_node builds costmap_2d's Costmap2DROS through
+    hector_exploration_planner, which depends on costmap_2d; it declares only the
+    planner). The manifests read go to ``read``."""
+    found = {d.name for d in package.dependencies}
+    todo = sorted(found)
+    seen = {package.name}
+    while todo:
+        name = todo.pop()
+        other = workspace.packages.get(name)
+        if name in seen or other is None:
+            continue
+        seen.add(name)
+        if other.root:
+            read.append(manifest_of(other.root))
+        for dep in other.dependencies:
+            if dep.kind in _EXPORTED and dep.name not in found:
+                found.add(dep.name)
+                todo.append(dep.name)
+    return found
 
 
 def _client(name: str, cls: str, declared: set[str], workspace: Workspace,
