@@ -251,3 +251,20 @@ def test_ros2_wait_sets_client_pruning_and_timer_calls(write_tree) -> None:
             if c.kind in ("subscribe", "publish", "client")] == [
         ("subscribe", "fixed_in"), ("subscribe", "in"), ("publish", "out"),
         ("client", "add"), ("publish", "?")]
+
+
+def test_ros1_action_goal_handles_and_boost_time(write_tree) -> None:
+    """actionlib's ActionServer had no GoalHandle, ACTION_DEFINITION types nor callback
+    registration, ActionClient no sendGoal / ClientGoalHandle, boost's thread_group no
+    remove_thread, and ros::Time no toBoost: move_base_flex's AbstractActionBase
+    (abstract_action_base.hpp:77 ``typename actionlib::ActionServer<Action>::GoalHandle``)
+    was an invalid class, so the constructors that build on it (controller_action.cpp:49,
+    which advertises ``~controller_goal``) were errors and mbf_costmap_nav partial;
+    bebop_driver's onInit (``ros::Time::now().toBoost()``, bebop_driver_nodelet.cpp:117)
+    likewise."""
+    result = _extract(write_tree, _source("ros1_action_goal_handle.cpp"), "catkin")
+    assert _errors(result) == []
+    assert sorted((c.kind, c.name) for c in result.calls) == [
+        ("action-client", "follow_joint_trajectory"),
+        ("action-server", "joint_trajectory_action"),
+        ("publish", "~controller_goal")]
