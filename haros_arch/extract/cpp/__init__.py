@@ -243,6 +243,7 @@ def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True
     # where a construction may be missed: the words of the code around the errors the
     # parse left (an error drops its statement), everywhere when a file was not read
     unseen = {word for unit in units for word in unit.unseen} if complete else {"*"}
+    built = _built_under(facts, unseen)
     for unit in units:
         result.diagnostics.extend(unit.diagnostics)
         if unit.rosname is not None and result.rosname is None:
@@ -250,6 +251,11 @@ def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True
         calls, found = links.resolve(unit.calls, facts, unseen)
         result.diagnostics.extend(found)
         for call in calls:
+            if call.built_in is not None:
+                extra = tuple(c for c in built.get(call.built_in, ())
+                              if c not in call.conditions)
+                call = dataclasses.replace(call, built_in=None,
+                                           conditions=(*extra, *call.conditions))
             key = (call.kind, call.name, call.location)
             if key not in seen:
                 seen.add(key)
@@ -258,6 +264,37 @@ def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True
     _name_nodes(result, sorted(paths_units, key=lambda pair: pair[0]), facts)
     result.calls = declared_defaults(result.calls)
     return result
+
+
+def _built_under(facts: list[links.Fact], unseen: set[str]) -> dict[str, tuple[Condition, ...]]:
+    """Constructor USR -> the source conditions every place of the node's files that
+    calls it shares (``links.CONDITIONS``): the calls the constructor makes in a file
+    that constructs its class nowhere exist only under them (sick_tim310 makes its
+    ``SickTimCommonMockup``, which subscribes ``datagram`` in sick_tim_common_mockup.cpp,
+    only ``if (subscribe_datagram)``). None for a constructor with a place that is
+    unconditional, or whose class the errors the parse left may construct unseen."""
+    sites: dict[str, dict[str, tuple[Condition, ...] | None]] = {}
+    for usr, index, value, site in facts:
+        if index == links.OVERRIDES:
+            continue
+        at = sites.setdefault(usr, {})
+        if index != links.CONDITIONS:
+            at.setdefault(site, None)
+            continue
+        try:
+            at[site] = cache.conditions_of_text(value)
+        except (ValueError, TypeError, KeyError):
+            at[site] = None
+    found: dict[str, tuple[Condition, ...]] = {}
+    for usr, at in sites.items():
+        held = list(at.values())
+        if "*" in unseen or links.class_of(usr) in unseen or any(c is None for c in held):
+            continue
+        shared = tuple(c for c in held[0] or () if all(c in other for other in held[1:]
+                                                      if other is not None))
+        if shared:
+            found[usr] = shared
+    return found
 
 
 def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],

@@ -223,7 +223,8 @@ class CallFinder:
                 for read in reads:
                     read.variable = member.spelling
                     read.also = also or None
-        self.facts = argument_facts(self.sites, self.namespaces, self.owned, self._marked)
+        self.facts = argument_facts(self.sites, self.namespaces, self.owned, self._marked,
+                                    self._site_conditions)
         for call in self.calls:  # get_parameter("p") of a declare_parameter("p", default)
             if call.name_param is not None and call.name_default is None and (
                 call.name_param in self._declared
@@ -326,8 +327,11 @@ class CallFinder:
         tested, self._status_reads = TestedCalls(self.reader), []
         first = len(self.calls)
         # a constructor's calls exist where the class is constructed: under the
-        # conditions of its construction sites in this file
+        # conditions of its construction sites in this file; a file that constructs it
+        # nowhere leaves them to the node's other files (``built_in``)
         made_under = self._constructed_under(function, 0)
+        built_in = self._constructor[0] if self._constructor is not None and (
+            self.sites is not None and not self.sites.callers(function)) else None
         # main(argc, argv): its conditions over them are over the program's arguments (set
         # after the construction sites, whose walk enters their own functions)
         self.reader.enter(function, _ARGUMENTS_LEFT,
@@ -360,6 +364,7 @@ class CallFinder:
         for site, read in self._status_reads:
             read.tested = read.tested or site in tested.keys
         for call in self.calls[first:]:
+            call.built_in = call.built_in or built_in
             # a read or declaration without a default in a ``try`` block whose handler
             # catches rclcpp's exception for it (navigation2's collision monitor reads
             # the deprecated ``max_points`` so, only to warn when it is set)
@@ -390,6 +395,12 @@ class CallFinder:
             if not shared:
                 return ()
         return shared or ()
+
+    def _site_conditions(self, function: Cursor, call: Cursor) -> tuple[Condition, ...]:
+        """The source conditions under which ``function`` makes ``call`` (a construction
+        of another file's class): none where it is not found."""
+        found = self._conditions_at(function, call)
+        return tuple(c for c in found or () if c.kind == "source")
 
     def _conditions_at(self, function: Cursor, call: Cursor) -> tuple[Condition, ...] | None:
         """The source conditions of ``call`` in the body of ``function`` (None when it is
@@ -551,8 +562,10 @@ class CallFinder:
             data = self.source.get(opaque.location.file.name)
             extent = opaque.extent
             if data is not None:
-                self.unseen.update(WORDS.findall(
-                    data[extent.start.offset:extent.end.offset]))
+                # not the class's own name, which its declaration writes and its
+                # constructor (read where it is defined) does not construct again
+                self.unseen.update(set(WORDS.findall(
+                    data[extent.start.offset:extent.end.offset])) - {opaque.spelling.encode()})
         unseen = unseen_construction(call, self.owned) if opaque is not None else None
         if unseen is not None:
             cls, given = unseen
