@@ -339,8 +339,11 @@ class CallFinder:
         stack: list[tuple[Cursor, tuple[Condition, ...]]] = [
             (child, made_under) for child in reversed(list(function.get_children()))
             if child.kind != CursorKind.PARM_DECL]
+        lost = _lost_initialisers(function) if function.kind == CursorKind.CONSTRUCTOR else {}
         while stack:
             node, conditions = stack.pop()
+            if lost and node.kind == CursorKind.UNEXPOSED_EXPR and place_of(node) in lost:
+                self._lost_initialiser(node, *lost[place_of(node)], conditions, scope)
             if node.kind == CursorKind.CALL_EXPR and (
                 node.spelling in _API_NAMES or node.spelling in self.wrappers.names
             ):
@@ -548,6 +551,20 @@ class CallFinder:
         self.diagnostics.append(diag.make(
             "CPP_CALL_UNRESOLVED", self.calls[before].location, function=function,
             type=self.calls[before].type or "?"))
+
+    def _lost_initialiser(self, init: Cursor, spec: api.RosFunction, made: Cursor,
+                          conditions: tuple[Condition, ...], scope: Scope) -> None:
+        """A member of an API class (``action_server_(nh, "follow", boost::bind(...))``)
+        whose initialiser clang could not resolve (it names a method an error made
+        invalid): the construction kept as the class's row reads its arguments, its type
+        from the member's, and a diagnostic that says so."""
+        args = [c for c in init.get_children() if c.kind.is_expression()]
+        before = len(self.calls)
+        self._emit(spec, init, args, made, conditions, scope)
+        if len(self.calls) > before:
+            self.diagnostics.append(diag.make(
+                "CPP_CALL_UNRESOLVED", self.calls[before].location, function=made.spelling,
+                type=self.calls[before].type or "?"))
 
     def _unresolved_rows(self) -> dict[str, api.RosFunction]:
         return api.UNRESOLVED_ROS2 if self.ros2 else api.UNRESOLVED_ROS1
@@ -1461,6 +1478,37 @@ def _dependent_made(call: Cursor) -> tuple[api.RosFunction, Cursor] | None:
     if spec is None or spec.fixed_name is None:
         return None
     return spec, made
+
+
+def _lost_initialisers(constructor: Cursor
+                       ) -> dict[tuple[str, int], tuple[api.RosFunction, Cursor]]:
+    """The member initialisers of ``constructor`` that build a member of an API class
+    (a row of ``api.ALL`` named as its class) but hold no call of its constructor: an
+    expression clang kept unresolved, as where an argument names a method an error made
+    invalid (industrial_core's ``action_server_(node_, "joint_trajectory_action",
+    boost::bind(&JointTrajectoryAction::goalCB, this, _1), ...)`` when ``goalCB`` takes
+    a type the parse does not have). By the place of that expression, with the row and
+    the member's class."""
+    found: dict[tuple[str, int], tuple[api.RosFunction, Cursor]] = {}
+    children = list(constructor.get_children())
+    for member, init in itertools.pairwise(children):
+        if member.kind != CursorKind.MEMBER_REF or init.kind != CursorKind.UNEXPOSED_EXPR:
+            continue
+        made = member.type.get_canonical().get_declaration()
+        if made.kind == CursorKind.NO_DECL_FOUND:
+            continue
+        base = row_class(made)
+        spec = api.ALL.get((qualified_name(base), base.spelling))
+        if spec is None or any(
+            node.kind == CursorKind.CALL_EXPR and node.referenced is not None
+            and node.referenced.kind == CursorKind.CONSTRUCTOR
+            and node.referenced.semantic_parent is not None
+            and node.referenced.semantic_parent.canonical == made.canonical
+            for node in init.walk_preorder()
+        ):
+            continue
+        found[place_of(init)] = (spec, base)
+    return found
 
 
 def _recovered_name(expr: Cursor) -> str:
