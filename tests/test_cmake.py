@@ -292,6 +292,43 @@ def test_a_class_the_executable_defines_itself_names_no_library_file(write_tree)
         ("slam", ["carto/src/node.cc", "carto/src/slam_main.cc"])]
 
 
+def test_a_member_initialiser_from_the_first_column_defines_no_member(write_tree):
+    """slam_toolbox's merge_maps_kinematic links toolbox_common and uses only its
+    laser_utils; slam_toolbox_common.cpp writes its constructor's initialiser from the
+    first column, ``: rclcpp_lifecycle::LifecycleNode("slam_toolbox", "", options),``,
+    which was read as a definition of a member of ``rclcpp_lifecycle``, a word the
+    executable names: the whole SLAM node's interface, and its node name (a false
+    duplicate-node-names), went to the merge node. A ``::ns::T C::f(`` line still
+    defines ``C::f``."""
+    root = write_tree({
+        "src/slam/package.xml": package_xml("slam", build_type="ament_cmake"),
+        "src/slam/CMakeLists.txt": """
+            project(slam)
+            add_library(common src/toolbox.cpp src/laser.cpp src/global.cpp)
+            add_executable(merge src/merge.cpp)
+            target_link_libraries(merge common)
+            add_executable(stamp src/stamp.cpp)
+            target_link_libraries(stamp common)
+            """,
+        "src/slam/src/toolbox.cpp": "#include \"toolbox.hpp\"\n"
+                                    "Toolbox::Toolbox(rclcpp::NodeOptions options)\n"
+                                    ": rclcpp_lifecycle::LifecycleNode(\"slam\", \"\", options),\n"
+                                    "  scans_(0)\n{}\n",
+        "src/slam/src/laser.cpp": "#include \"laser.hpp\"\nLaser::Laser() {}\n",
+        "src/slam/src/global.cpp": "::std::string Clock::stamp() { return \"\"; }\n",
+        "src/slam/src/merge.cpp": "#include \"laser.hpp\"\n"
+                                  "#include <rclcpp_lifecycle/lifecycle_node.hpp>\n"
+                                  "void on(const rclcpp_lifecycle::State &) {}\n"
+                                  "int main() { Laser laser; }\n",
+        "src/slam/src/stamp.cpp": "int main() { Clock c; c.stamp(); }\n",
+    })
+    ws = scan([str(root / "src")], {})
+    nodes, _found = parse_package(ws.packages["slam"], ws)
+    assert sorted((n.executable, sorted(n.sources)) for n in nodes) == [
+        ("merge", ["slam/src/laser.cpp", "slam/src/merge.cpp"]),
+        ("stamp", ["slam/src/global.cpp", "slam/src/stamp.cpp"])]
+
+
 @pytest.mark.parametrize(("install", "scripts"), [
     ("ament_python_install_package(pkg SCRIPTS_DESTINATION lib/pkg)", ["spawner"]),
     ("ament_python_install_package(pkg)", []),  # the module only, no executable

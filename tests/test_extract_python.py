@@ -287,3 +287,130 @@ def test_extract_node_fills_a_python_node(ws: Workspace) -> None:
     assert node.rosname == "topics"
     assert len(node.calls) == 14
     assert [d.code for d in diagnostics] == []
+
+
+def test_rclpy_qos_policies_set_after_the_profile_is_made(tmp_path) -> None:
+    """``qos = QoSProfile(depth=10); qos.reliability = ReliabilityPolicy.BEST_EFFORT``
+    (rclpy's QoSProfile properties, the common way to ask for a latched map or a sensor
+    stream): the policy set after the profile was made was ignored, so a best-effort
+    subscription counted as reliable and a transient-local one as volatile, both to the
+    QoS compatibility check."""
+    from haros_arch.extract.python import extract_python
+    from haros_arch.workspace import scan
+
+    source = tmp_path / "n.py"
+    source.write_text(
+        "import rclpy\nfrom rclpy.node import Node\n"
+        "from rclpy.qos import QoSProfile, ReliabilityPolicy, DurabilityPolicy\n"
+        "from nav_msgs.msg import OccupancyGrid, Odometry\n"
+        "class N(Node):\n"
+        "    def __init__(self):\n"
+        "        super().__init__('n')\n"
+        "        qos = QoSProfile(depth=10)\n"
+        "        qos.reliability = ReliabilityPolicy.BEST_EFFORT\n"
+        "        self.create_subscription(Odometry, 'odom', print, qos)\n"
+        "        self.latched = QoSProfile(depth=1)\n"
+        "        self.latched.durability = DurabilityPolicy.TRANSIENT_LOCAL\n"
+        "        self.latched.depth = 5\n"
+        "        self.create_subscription(OccupancyGrid, 'map', print, self.latched)\n"
+        "        msg = OccupancyGrid()\n"
+        "        msg.info.resolution = 0.05\n")
+    found = extract_python([str(source)], scan([str(tmp_path)]))
+    qos = {c.name: c.qos for c in found.calls if c.kind == "subscribe"}
+    assert qos["odom"] == {**DEFAULT_QOS, "depth": 10, "reliability": "best_effort"}
+    assert qos["map"] == {**DEFAULT_QOS, "depth": 5, "durability": "transient_local"}
+
+
+def test_rclpy_qos_policy_set_under_a_condition_is_unknown(tmp_path) -> None:
+    """ros2/demos' data_publisher.py:69-89: ``if args.best_effort: qos.reliability =
+    BEST_EFFORT else: ... RELIABLE``, and a durability set only under one branch: the
+    policy depends on the run, so it is unknown (as a C++ setter that may not run
+    leaves its field), not the last branch's nor the default; one set where the profile
+    was made, in the same block, holds."""
+    from haros_arch.extract.python import extract_python
+    from haros_arch.workspace import scan
+
+    source = tmp_path / "n.py"
+    source.write_text(
+        "import sys\nimport rclpy\nfrom rclpy.node import Node\n"
+        "from rclpy.qos import QoSProfile, ReliabilityPolicy, DurabilityPolicy\n"
+        "from std_msgs.msg import Header\n"
+        "class N(Node):\n"
+        "    def __init__(self, best_effort, latched):\n"
+        "        super().__init__('n')\n"
+        "        qos = QoSProfile(depth=10)\n"
+        "        if best_effort:\n"
+        "            qos.reliability = ReliabilityPolicy.BEST_EFFORT\n"
+        "        else:\n"
+        "            qos.reliability = ReliabilityPolicy.RELIABLE\n"
+        "        if latched:\n"
+        "            qos.durability = DurabilityPolicy.TRANSIENT_LOCAL\n"
+        "        self.create_publisher(Header, 'data', qos)\n"
+        "        if latched:\n"
+        "            other = QoSProfile(depth=1)\n"
+        "            other.durability = DurabilityPolicy.TRANSIENT_LOCAL\n"
+        "            self.create_publisher(Header, 'other', other)\n")
+    found = extract_python([str(source)], scan([str(tmp_path)]))
+    qos = {c.name: c.qos for c in found.calls if c.kind == "publish"}
+    assert qos["data"] == {**DEFAULT_QOS, "depth": 10, "reliability": None,
+                           "durability": None}
+    assert qos["other"] == {**DEFAULT_QOS, "depth": 1, "durability": "transient_local"}
+
+
+def test_rclpy_super_init_runs_a_base_class_of_the_package(tmp_path) -> None:
+    """A node class built on another of the package (``class Arm(Base)`` with
+    ``super().__init__('arm', 'arm_cmd')``, ``Base.__init__(self, name, topic)`` making
+    the node and its publisher): ``super().__init__`` runs the base's ``__init__`` with
+    those arguments, as Python does. It was taken for rclpy's ``Node.__init__`` (the
+    topic for the namespace) and the base's publisher was ``?``."""
+    from haros_arch.extract.python import extract_python
+    from haros_arch.workspace import scan
+
+    source = tmp_path / "n.py"
+    source.write_text(
+        "import rclpy\nfrom rclpy.node import Node\nfrom std_msgs.msg import Float64\n"
+        "class Base(Node):\n"
+        "    def __init__(self, name, topic):\n"
+        "        super().__init__(name, namespace='robot')\n"
+        "        self.pub = self.create_publisher(Float64, topic, 10)\n"
+        "class Arm(Base):\n"
+        "    def __init__(self):\n"
+        "        super().__init__('arm', 'arm_cmd')\n"
+        "        self.create_subscription(Float64, 'arm_state', print, 10)\n"
+        "def main():\n    rclpy.init()\n    rclpy.spin(Arm())\n")
+    found = extract_python([str(source)], scan([str(tmp_path)]))
+    assert (found.rosname, found.namespace) == ("arm", "robot")
+    assert sorted((c.kind, c.name) for c in found.calls) == [
+        ("publish", "arm_cmd"), ("subscribe", "arm_state")]
+
+
+def test_rclpy_a_node_class_nothing_builds_is_no_node_of_the_process(tmp_path) -> None:
+    """A module that defines two node classes and whose ``main()`` builds one: the other
+    was walked as if it ran, its name a second node of the process (an instance of its
+    own in the graph) and its calls made. As a C++ class the node never builds, it makes
+    none; a class nothing builds in a module that names no node otherwise keeps its
+    calls and name (it may be built out of our sight)."""
+    from haros_arch.extract.python import extract_python
+    from haros_arch.workspace import scan
+
+    source = tmp_path / "n.py"
+    source.write_text(
+        "import rclpy\nfrom rclpy.node import Node\nfrom std_msgs.msg import String\n"
+        "class Talker(Node):\n"
+        "    def __init__(self):\n"
+        "        super().__init__('talker')\n"
+        "        self.create_publisher(String, 'chatter', 10)\n"
+        "class Listener(Node):\n"
+        "    def __init__(self):\n"
+        "        super().__init__('listener')\n"
+        "        self.create_subscription(String, 'chatter', print, 10)\n"
+        "def main():\n    rclpy.init()\n    rclpy.spin(Talker())\n")
+    found = extract_python([str(source)], scan([str(tmp_path)]))
+    assert (found.rosname, found.names, found.nodes) == ("talker", ["talker"], [])
+    assert [(c.kind, c.name) for c in found.calls] == [("publish", "chatter")]
+    alone = tmp_path / "alone"
+    alone.mkdir()
+    (alone / "m.py").write_text(source.read_text().split("def main")[0])
+    found = extract_python([str(alone / "m.py")], scan([str(alone)]))
+    assert sorted((c.kind, c.name) for c in found.calls) == [
+        ("publish", "chatter"), ("subscribe", "chatter")]

@@ -135,3 +135,154 @@ def test_a_loop_over_a_list_parameter_names_one_call_per_element(tmp_path) -> No
                     ("read", "topics", None, None, ()),
                     ("subscribe", "?", "topics", ".", topics),
                     ("publish", "fixed", None, None, topics)]
+
+
+def test_an_element_of_a_list_parameter_with_text_around_it(tmp_path, write_tree) -> None:
+    """``for robot in self.get_parameter('robots').value:
+    self.create_publisher(Twist, f'/{robot}/cmd_vel', 10)`` (a fleet's command topics):
+    the element with text around it names one call per element as the element alone
+    does; the graph puts each element the configuration gives in the place of the
+    ``?`` (`/?/cmd_vel` was left unknown)."""
+    import os
+
+    from conftest import package_xml
+
+    from haros_arch.pipeline import Options, analyse
+    from haros_arch.project import load
+
+    code = ("import rclpy\nfrom rclpy.node import Node\n"
+            "from geometry_msgs.msg import Twist\n"
+            "class Fleet(Node):\n"
+            "    def __init__(self):\n"
+            "        super().__init__('fleet')\n"
+            "        self.declare_parameter('robots', ['a'])\n"
+            "        for robot in self.get_parameter('robots').value:\n"
+            "            self.create_publisher(Twist, f'/{robot}/cmd_vel', 10)\n"
+            "            self.create_publisher(Twist, robot + '/odom_cmd', 10)\n"
+            "            self.create_publisher(Twist, f'{robot}/{robot}', 10)\n"
+            "def main():\n    rclpy.init()\n    Fleet()\n")
+    launch = ("from launch import LaunchDescription\n"
+              "from launch_ros.actions import Node\n"
+              "def generate_launch_description():\n"
+              "    return LaunchDescription([Node(package='fleet', executable='fleet',\n"
+              "        parameters=[{'robots': ['r1', 'r2']}])])\n")
+    root = write_tree({
+        "src/fleet/package.xml": package_xml("fleet", build_type="ament_python"),
+        "src/fleet/setup.py": "from setuptools import setup\n"
+                              "setup(name='fleet', packages=['fleet'], entry_points="
+                              "{'console_scripts': ['fleet = fleet.fleet:main']})\n",
+        "src/fleet/resource/fleet": "",
+        "src/fleet/fleet/__init__.py": "",
+        "src/fleet/fleet/fleet.py": code,
+        "src/fleet/launch/fleet.launch.py": launch,
+        "project.yaml": "project: p\nconfigurations:\n  c: [fleet/launch/fleet.launch.py]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {"PATH": os.environ.get("PATH", "")},
+                    Options(cache_dir=None))
+    calls = [c for p in model.packages for n in p.nodes for c in n.calls
+             if c.kind == "publish"]
+    assert [(c.name, c.name_param, c.name_each) for c in calls] == [
+        ("/?/cmd_vel", "robots", "."), ("?/odom_cmd", "robots", "."),
+        ("?/?", None, None)]
+    topics = sorted(t.name for t in model.configurations[0].topics)
+    assert "/r1/cmd_vel" in topics and "/r2/cmd_vel" in topics
+    assert "/r1/odom_cmd" in topics and "/r2/odom_cmd" in topics
+    assert not any("cmd" in t and "?" in t for t in topics)
+
+
+def test_comprehensions_are_walked_as_their_loops(tmp_path) -> None:
+    """``[rospy.Publisher(t + '/cmd', ...) for t in topics]`` and a dict comprehension
+    over a list parameter make one call per element as a ``for`` statement does (they
+    were ``?/cmd``, the comprehension's variable unknown); a comprehension over a known
+    tuple is unrolled, its ``if`` a condition; its variable does not leak."""
+    result = run(tmp_path,
+                 "        topics = self.get_parameter('topics').value\n"
+                 "        self.pubs = [self.create_publisher(Image, t + '/raw', 10)\n"
+                 "                     for t in topics]\n"
+                 "        self.named = {t: self.create_publisher(Image, f'{t}/rect', 10)\n"
+                 "                      for t in self.get_parameter('cams').value}\n"
+                 "        t = 'fixed'\n"
+                 "        subs = list(self.create_subscription(Image, side, print, 10)\n"
+                 "                    for side in ('left', 'right') if side != t)\n"
+                 "        self.create_publisher(Image, t, 10)\n")
+    made = [(c.kind, c.name, c.name_param, c.name_each, tuple(x.text for x in c.conditions))
+            for c in result.calls if c.kind in ("publish", "subscribe")]
+    assert made == [
+        ("publish", "?/raw", "topics", ".", ("t in topics",)),
+        ("publish", "?/rect", "cams", ".", ("t in self.get_parameter('cams').value",)),
+        ("subscribe", "left", None, None,
+         ("side in ('left', 'right')", "side != t")),
+        ("subscribe", "right", None, None,
+         ("side in ('left', 'right')", "side != t")),
+        ("publish", "fixed", None, None, ())]
+
+
+def test_a_field_of_each_element_of_a_list_or_dict_parameter(write_tree) -> None:
+    """A multiplexer's inputs: ``for src in rospy.get_param('~sources'):
+    rospy.Subscriber(src['topic'], ...)`` over a list of dictionaries, and ``for name,
+    cfg in rospy.get_param('~inputs').items(): ... cfg['topic']`` over a dictionary of
+    them, as twist_mux's C++ does: one subscription per entry, named by its ``topic``
+    (both were ``/?``). A dictionary a ``rosparam`` sets is its leaves until a node reads
+    it whole: the entries are read from them."""
+    import os
+
+    from conftest import package_xml
+
+    from haros_arch.pipeline import Options, analyse
+    from haros_arch.project import load
+
+    code = ("#!/usr/bin/env python\nimport rospy\nfrom std_msgs.msg import String\n"
+            "rospy.init_node('mux')\n"
+            "for src in rospy.get_param('~sources'):\n"
+            "    rospy.Subscriber(src['topic'], String, print, queue_size=1)\n"
+            "for name, cfg in rospy.get_param('~inputs', {}).items():\n"
+            "    rospy.Subscriber(cfg['topic'] + '_in', String, print, queue_size=1)\n"
+            "for cfg in rospy.get_param('~outputs').values():\n"
+            "    rospy.Publisher(cfg['topic'], String, queue_size=1)\n")
+    launch = ("<launch><node pkg=\"mux\" type=\"mux.py\" name=\"mux\">\n"
+              "<rosparam param=\"sources\">[{topic: joy, priority: 1}, {topic: nav}]"
+              "</rosparam>\n"
+              "<rosparam param=\"inputs\">{a: {topic: left}, b: {topic: right}}</rosparam>\n"
+              "<rosparam param=\"outputs\">{o: {topic: merged}}</rosparam>\n"
+              "</node></launch>\n")
+    root = write_tree({
+        "src/mux/package.xml": package_xml("mux"),
+        "src/mux/CMakeLists.txt": "cmake_minimum_required(VERSION 3.0.2)\nproject(mux)\n"
+                                  "find_package(catkin REQUIRED COMPONENTS rospy)\n"
+                                  "catkin_package()\n"
+                                  "catkin_install_python(PROGRAMS scripts/mux.py "
+                                  "DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})\n",
+        "src/mux/scripts/mux.py": code,
+        "src/mux/launch/mux.launch": launch,
+        "project.yaml": "project: p\nconfigurations:\n  c: [mux/launch/mux.launch]\n",
+    })
+    os.chmod(root / "src/mux/scripts/mux.py", 0o755)
+    model = analyse(load(str(root / "project.yaml")), {"PATH": os.environ.get("PATH", "")},
+                    Options(cache_dir=None))
+    calls = [(c.kind, c.name, c.name_param, c.name_each) for p in model.packages
+             for n in p.nodes for c in n.calls if c.kind in ("publish", "subscribe")]
+    assert calls == [("subscribe", "?", "~sources", "topic"),
+                     ("subscribe", "?_in", "~inputs", "topic"),
+                     ("publish", "?", "~outputs", "topic")]
+    topics = sorted(t.name for t in model.configurations[0].topics)
+    assert topics == ["/joy", "/left_in", "/merged", "/nav", "/right_in"]
+
+
+def test_an_entry_of_a_ros1_dictionary_parameter_names_a_call(tmp_path) -> None:
+    """``cam = rospy.get_param('~camera'); rospy.Subscriber(cam['topic'], ...)``: the
+    name is the parameter ``~camera/topic`` (rospy gives the dictionary of what is
+    under ``~camera``), ``cam.get('out', 'cam_out')`` the same with a default; both
+    were ``?`` with nothing for the graph to fill in."""
+    source = tmp_path / "node.py"
+    source.write_text("import rospy\nfrom std_msgs.msg import String\n"
+                      "rospy.init_node('n')\n"
+                      "cam = rospy.get_param('~camera')\n"
+                      "rospy.Subscriber(cam['topic'], String, print, queue_size=1)\n"
+                      "rospy.Publisher(cam.get('out', 'cam_out'), String, queue_size=1)\n"
+                      "rospy.Publisher(cam[key], String, queue_size=1)\n")
+    result = extract_python([str(source)], Workspace(root=str(tmp_path)), package="p")
+    made = [(c.kind, c.name, c.name_param, c.name_default) for c in result.calls
+            if c.kind != "read"]
+    assert made == [("subscribe", "?", "~camera/topic", None),
+                    ("publish", "?", "~camera/out", "cam_out"),
+                    ("publish", "?", None, None)]

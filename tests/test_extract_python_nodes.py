@@ -128,7 +128,8 @@ NAMES = (
     "    def reset(self, request, response):\n"
     "        return response\n"
     "node = rclpy.create_node('helper')\n"
-    "node.create_publisher(String, node.get_name() + '/out', 1)\n")
+    "node.create_publisher(String, node.get_name() + '/out', 1)\n"
+    "cam = Cam()\n")
 
 
 def test_rclpy_own_name_and_namespace_in_names(tmp_path) -> None:

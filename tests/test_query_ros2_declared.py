@@ -79,6 +79,48 @@ def test_a_declaration_by_type_has_that_type_and_no_default(tmp_path):
     assert declared["gain"] == ("double", True)
 
 
+DECLARED_TOGETHER = """
+    import rclpy
+    from rclpy.node import Node
+
+    class Follower(Node):
+        def __init__(self):
+            super().__init__('follower')
+            self.declare_parameters(namespace='', parameters=[
+                ('scan_topic', 'scan'), ('gain', 0.5), ('port', rclpy.Parameter.Type.STRING),
+                ('ids',)])
+            self.declare_parameters('limits', [('max_speed', 1.0)])
+            topic = self.get_parameter('scan_topic').value
+            gain = self.get_parameter('gain').value
+            port = self.get_parameter('port').value
+            ids = self.get_parameter('ids').value
+            top = self.get_parameter('limits.max_speed').value
+
+    def main():
+        rclpy.init()
+        Follower()
+    """
+
+
+def test_parameters_declared_together_keep_their_defaults(write_tree):
+    """``declare_parameters(namespace, [(name, value), ...])``, the rclpy idiom for many
+    parameters at once, gives each its default as ``declare_parameter`` does: the
+    defaults were dropped, so every read of them was a false 'read but never set'."""
+    model = _analysed(write_tree, "follower", DECLARED_TOGETHER,
+                      LAUNCH.replace("talker", "follower"))
+    rule = next(r for r in load_catalogue() if r.id == "parameter-read-not-set")
+    found = sorted(e for f in run_rule(rule, model) for e in f.entities
+                   if e.startswith("parameter:"))
+    assert found == ["parameter:/follower/ids", "parameter:/follower/port"]
+    declared = {c.name: (c.type, c.has_default, c.default)
+                for p in model.packages for n in p.nodes for c in n.calls
+                if c.kind == "declare"}
+    assert declared["scan_topic"] == ("str", True, "scan")
+    assert declared["gain"] == ("double", True, 0.5)
+    assert declared["port"] == ("str", False, None)
+    assert declared["limits.max_speed"] == ("double", True, 1.0)
+
+
 JSP = """
     import rclpy
     from rclpy.node import Node

@@ -643,8 +643,8 @@ def element_calls(call: PrimitiveCall, instance: NodeInstance, resources: Resour
         return _numbered_calls(call, full, resources)
     param = resources.by_name.get((Parameter, full))
     value = param.value if isinstance(param, Parameter) and param.set_by_launch else None
-    if value is None and instance.ros_version == 2:
-        value = _dotted_groups(full, resources)
+    if value is None:
+        value = _dotted_groups(full, resources, "." if instance.ros_version == 2 else "/")
     elements = list(value.values()) if isinstance(value, dict) else value
     if not isinstance(elements, list):
         return [call]
@@ -688,16 +688,19 @@ def _numbered_calls(call: PrimitiveCall, full: str, resources: Resources
                     name_default=None, name_each=None) for name in names]
 
 
-def _dotted_groups(full: str, resources: Resources) -> dict[str, dict[str, Any]] | None:
+def _dotted_groups(full: str, resources: Resources, separator: str = "."
+                   ) -> dict[str, dict[str, Any]] | None:
     """ROS 2 parameters under a prefix, by their next segment (``topics.nav.topic`` and
     ``topics.nav.priority`` give ``{"nav": {"topic": ..., "priority": ...}}``), as
-    ``list_parameters({prefix})`` lists them; None when the launch file sets none."""
+    ``list_parameters({prefix})`` lists them; None when the launch file sets none. ROS 1
+    (``separator`` ``/``): a dictionary a launch file's ``rosparam`` sets is its leaves
+    (``/mux/inputs/a/topic``) until a node reads it whole."""
     groups: dict[str, dict[str, Any]] = {}
     for (cls, name), found in resources.by_name.items():
-        if cls is Parameter and name.startswith(full + ".") and isinstance(
+        if cls is Parameter and name.startswith(full + separator) and isinstance(
                 found, Parameter) and found.set_by_launch:
-            key, _, field = name[len(full) + 1:].partition(".")
-            if key and field and "." not in field:
+            key, _, field = name[len(full) + 1:].partition(separator)
+            if key and field and separator not in field:
                 groups.setdefault(key, {})[field] = found.value
     return groups or None
 

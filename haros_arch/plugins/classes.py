@@ -318,8 +318,11 @@ def _untemplated(name: str) -> str:
 # ``Type Name::member(`` / ``Name<T>::member(`` on a line that starts in the first column
 # (a definition; a call in a body is indented): a member defined
 # (template arguments nest one level and never hold another declaration's words:
-# ``std::vector<bool> RosFilter<T>::load(`` defines a member of RosFilter, not of vector)
-_MEMBER = re.compile(r"^(?![ \t])[\w:<>,&* \t]*?\b([A-Za-z_]\w*)\s*"
+# ``std::vector<bool> RosFilter<T>::load(`` defines a member of RosFilter, not of vector);
+# not a constructor's member initialiser written from the first column (slam_toolbox's
+# ``: rclcpp_lifecycle::LifecycleNode("slam_toolbox", "", options),``, which names the
+# base class, not a member the file defines), though ``::ns::T C::f(`` is a definition
+_MEMBER = re.compile(r"^(?![ \t,]|:(?!:))[\w:<>,&* \t]*?\b([A-Za-z_]\w*)\s*"
                      r"(?:<[^;{}()\n<>]*(?:<[^;{}()\n<>]*>[^;{}()\n<>]*)*>)?\s*::"
                      r"\s*(~?\w+)\s*\(", re.MULTILINE)
 _QUOTED_INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]([^>"]+)[>"]', re.MULTILINE)

@@ -26,7 +26,7 @@ class Calls(Scopes):
         keywords = {k.arg: self.eval(k.value, frame) for k in expr.keywords if k.arg}
         return Frame(info.module, self.bind_arguments(info, values, keywords, starred,
                                                       skip_self=instance is not None),
-                     instance, frame.depth + 1)
+                     instance, frame.depth + 1, owner=info.cls)
 
     def bind_arguments(self, info: FunctionInfo, values: list[object],
                        keywords: dict[str, object], starred: bool,

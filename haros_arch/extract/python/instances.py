@@ -12,7 +12,8 @@ from ...model.values import Unknown
 from . import rclpy
 from .calls import MAX_CALL_DEPTH, Calls, unknown_params
 from .modules import ClassInfo, FunctionInfo
-from .objects import BoundMethod, Frame, Instance, Ref, Seq
+from .objects import BoundMethod, Frame, Instance, QoS, Ref, Seq
+from .qos import with_policy
 
 
 class Instances(Calls):
@@ -109,6 +110,12 @@ class Instances(Calls):
                     value = Unknown(f"self.{target.attr}")
                 seen[target.attr] = value
             frame.instance.attrs[target.attr] = value
+        elif isinstance(target, ast.Attribute) and isinstance(
+                holder := self.eval(target.value, frame), QoS):
+            # a policy set on a profile held by a local or an attribute of ``self``
+            changed = with_policy(holder, target.attr, value)
+            if changed is not None:
+                self.bind(target.value, changed, frame, seen)
         elif isinstance(target, ast.Tuple | ast.List):
             items = value.items if isinstance(value, Seq) and len(value.items) == len(
                 target.elts) else (Unknown(),) * len(target.elts)

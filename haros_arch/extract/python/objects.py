@@ -33,13 +33,19 @@ class ParamValue:
     default: object = None
 
 
+ELEMENT_OF = "an element of parameter "  # the origin of a ``ParamElement``'s unknown text
+FIELD_OF = ", field "  # after it, the element's field
+
+
 @dataclass(frozen=True)
 class ParamElement:
     """An element of the list parameter ``name``: the variable of a loop over its value
     (``for step in self.get_parameter('steps').value``); a call it names is one call per
-    element (``PrimitiveCall.name_each``)."""
+    element (``PrimitiveCall.name_each``), or per element's ``field`` (``src['topic']``
+    of ``for src in rospy.get_param('~sources')``; ``.``: the element itself)."""
 
     name: str
+    field: str = "."
 
 
 @dataclass(frozen=True)
@@ -120,6 +126,8 @@ class Frame:
     depth: int = 0
     # the module's own top-level code: its imports and definitions are indexed already
     top: bool = False
+    # the class whose method this frame runs (``super()`` starts after it)
+    owner: ClassInfo | None = None
 
 
 def text_of(value: object) -> Value:
@@ -133,7 +141,8 @@ def text_of(value: object) -> Value:
     if isinstance(value, ParamValue):
         return Value.unknown(f"parameter {value.name}")
     if isinstance(value, ParamElement):
-        return Value.unknown(f"an element of parameter {value.name}")
+        field = "" if value.field == "." else f"{FIELD_OF}{value.field}"
+        return Value.unknown(f"{ELEMENT_OF}{value.name}{field}")
     return Value.unknown(getattr(value, "origin", "") or type(value).__name__)
 
 

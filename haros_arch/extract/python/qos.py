@@ -46,6 +46,21 @@ class QoSProfiles(EvaluatorBase):
         return QoS(tuple(policies.items()))
 
 
+def with_policy(qos: QoS, attr: str, value: object) -> QoS | None:
+    """``qos`` after ``qos.<attr> = value`` (``profile.durability =
+    DurabilityPolicy.TRANSIENT_LOCAL``, ``profile.depth = 1``: rclpy's QoSProfile
+    properties), or None when ``attr`` is no policy of it."""
+    policies = qos.as_dict()
+    if attr == "depth":
+        policies["depth"] = value if isinstance(value, int) and not isinstance(
+            value, bool) else None
+    elif attr in rclpy.POLICIES:
+        policies[attr] = _policy(value, rclpy.POLICIES[attr])
+    else:
+        return None
+    return QoS(tuple(policies.items()))
+
+
 def _policy(value: object, words: tuple[str, ...]) -> str | None:
     """``ReliabilityPolicy.BEST_EFFORT`` (or its older spellings) -> ``best_effort``."""
     if isinstance(value, Ref):

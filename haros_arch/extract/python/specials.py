@@ -11,7 +11,7 @@ from ...model.source import PrimitiveCall
 from ...model.values import Value
 from . import rclpy
 from .api import Arg, PyFunction
-from .objects import Frame, Seq, param_type, text_of
+from .objects import Frame, Seq, param_type, plain_value, text_of
 from .values import Evaluator, argument
 
 
@@ -48,9 +48,16 @@ def special_calls(ev: Evaluator, spec: PyFunction, call: ast.Call, frame: Frame,
             pair = element.elts if isinstance(element, ast.Tuple) else [element]
             name = text_of(ev.eval(pair[0], frame)).text
             full = f"{prefix}.{name}" if prefix else name
+            # ``(name, value)`` declares with that default, ``(name, Parameter.Type.X)``
+            # a type and no value, ``(name,)`` neither: as ``declare_parameter`` does
+            declared_type = type_only(pair[1]) if len(pair) > 1 else None
             value = ev.eval(pair[1], frame) if len(pair) > 1 else None
             ev.declared[full] = value
-            made.append(replace(base, name=full, type=param_type(value)))
+            if len(pair) > 1 and declared_type is None:
+                made.append(replace(base, name=full, type=param_type(value),
+                                    has_default=True, default=plain_value(value)))
+            else:
+                made.append(replace(base, name=full, type=declared_type))
     elif spec.special == "parameters-under":
         prefix = param_name(text_of(evaluate(ev, argument(call, Arg(0, "prefix")), frame)))
         made.append(replace(base, name=f"{prefix}.?" if prefix else "?",
@@ -93,3 +100,24 @@ def param_name(text: Value) -> str:
     (``use_sim_time``; the graph resolves it in the node's own scope)."""
     name = text.text
     return name[2:] if name.startswith("~/") else name.removeprefix("~")
+
+
+# rclpy's parameter types (Parameter.Type.X, ParameterType.PARAMETER_X) as the model
+# names parameter types, for declarations that give a type and no value
+_DECLARED_TYPES: dict[str, str | None] = {
+    "BOOL": param_type(True), "INTEGER": param_type(0), "DOUBLE": param_type(0.0),
+    "STRING": "str", **{f"{kind}_ARRAY": "list" for kind in (
+        "BYTE", "BOOL", "INTEGER", "DOUBLE", "STRING")}}
+
+
+def type_only(expr: ast.expr | None) -> str | None:
+    """The parameter type a ``declare_parameter`` value argument names when it is a type
+    rather than a value, else None."""
+    if not isinstance(expr, ast.Attribute):
+        return None
+    owner = expr.value
+    owner_name = owner.attr if isinstance(owner, ast.Attribute) else (
+        owner.id if isinstance(owner, ast.Name) else "")
+    if owner_name not in ("Type", "ParameterType"):
+        return None
+    return _DECLARED_TYPES.get(expr.attr.removeprefix("PARAMETER_"))

@@ -34,6 +34,7 @@ from .objects import (
     ModuleRef,
     NodeHandle,
     NodeMethod,
+    ParamElement,
     ParameterClient,
     ParamObject,
     ParamValue,
@@ -191,6 +192,11 @@ class Evaluator(Instances, QoSProfiles, Walker):
         if isinstance(base, Seq) and isinstance(index, int) and -len(base.items) <= index < len(
                 base.items):
             return base.items[index]
+        if isinstance(base, ParamElement) and base.field == "." and isinstance(
+                index, Value) and index.is_known and index.text:
+            return ParamElement(base.name, index.text)  # src['topic']
+        if isinstance(base, ParamValue) and frame.module.version == 1:
+            return _entry_of(base, index, None)  # rospy.get_param('~camera')['topic']
         return Unknown("subscript")
 
     def eval_Attribute(self, expr: ast.Attribute, frame: Frame) -> object:
@@ -254,6 +260,11 @@ class Evaluator(Instances, QoSProfiles, Walker):
             return self.construct(func, expr, frame)
         if isinstance(func, FunctionInfo | BoundMethod):
             return self.returned(func, expr, frame)
+        if isinstance(expr.func, ast.Attribute) and expr.func.attr == "get" and isinstance(
+                base, ParamValue) and frame.module.version == 1 and 1 <= len(expr.args) <= 2:
+            # a dictionary parameter's entry: cfg.get('topic', 'scan')
+            args = [self.eval(a, frame) for a in expr.args]
+            return _entry_of(base, args[0], args[1] if len(args) > 1 else None)
         if isinstance(expr.func, ast.Attribute) and isinstance(func, Unknown) \
                 and isinstance(base, Value):
             return string_method(base, expr.func.attr, [self.eval(a, frame) for a in expr.args])
@@ -271,11 +282,26 @@ class Evaluator(Instances, QoSProfiles, Walker):
             inner = func.value
             if isinstance(inner, ast.Call) and isinstance(inner.func, ast.Name) \
                     and inner.func.id == "super":
-                return SuperInit()
+                return self._super_init(frame)
             base = self.eval(inner, frame)
             if isinstance(base, Ref) and base.key in rclpy.NODE_CLASSES:
                 return SuperInit()
         return self.eval(func, frame)
+
+    def _super_init(self, frame: Frame) -> object:
+        """What ``super().__init__`` runs: the ``__init__`` of the next class of the
+        package after the method's own in the object's class order (a node class of the
+        workspace built on another: ``Base.__init__(self, name, topic)`` makes the
+        publisher the subclass names), else the ROS node's (``SuperInit``)."""
+        instance, owner = frame.instance, frame.owner
+        if instance is None or owner is None:
+            return SuperInit()
+        order = list(self.mro(instance.cls))
+        after = order[next((i for i, c in enumerate(order) if c is owner), len(order)) + 1:]
+        for cls in after:
+            if "__init__" in cls.methods:
+                return BoundMethod(instance, cls.methods["__init__"])
+        return SuperInit()
 
     def _call_ref(self, ref: Ref, expr: ast.Call, frame: Frame) -> object:
         key = ref.key
@@ -336,6 +362,17 @@ class Evaluator(Instances, QoSProfiles, Walker):
             elif not isinstance(statement, ast.Expr | ast.Pass):
                 break
         return Unknown(f"{info.qualname}()")
+
+
+def _entry_of(param: ParamValue, key: object, default: object) -> object:
+    """An entry of a ROS 1 dictionary parameter: the parameter under it
+    (``rospy.get_param('~camera')['topic']`` reads ``~camera/topic``), its default the
+    one given, else the entry of the dictionary's default; unknown for a key not known."""
+    if not (isinstance(key, Value) and key.is_known and key.text) or "?" in param.name:
+        return Unknown("subscript")
+    if default is None and isinstance(param.default, dict):
+        default = param.default.get(key.text)
+    return ParamValue(f"{param.name.rstrip('/')}/{key.text}", default)
 
 
 def _length(value: object) -> int:

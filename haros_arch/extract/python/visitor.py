@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import ast
 import re
+from collections.abc import Callable
 
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
@@ -28,6 +29,8 @@ from .conditions import condition, is_main_guard, source_text
 from .modules import ClassInfo, FunctionInfo, Loader, Module, add_import
 from .msg_types import ros_type
 from .objects import (
+    ELEMENT_OF,
+    FIELD_OF,
     BoundMethod,
     Frame,
     Instance,
@@ -35,14 +38,17 @@ from .objects import (
     NodeMethod,
     ParamElement,
     ParamValue,
+    QoS,
     Ref,
+    Seq,
     SuperInit,
     param_type,
     plain_value,
     text_of,
 )
+from .qos import with_policy
 from .scopes import MAX_UNROLL, MAX_UNROLL_OUTER
-from .specials import evaluate, param_name, special_calls
+from .specials import evaluate, param_name, special_calls, type_only
 from .values import MAX_CALL_DEPTH, NAMESPACE, Evaluator, argument, unknown_params
 
 Conditions = tuple[Condition, ...]
@@ -92,6 +98,8 @@ class Walker:
         # the names each Node subclass was given (for methods walked without a caller)
         self.rclpy_names: list[str] = []
         self._class_names: dict[int, list[str]] = {}
+        # the classes the walk constructs, and those they derive from (ids)
+        self._constructed: set[int] = set()
         self.steps = 0
         self._inlined: set[int] = set()
         self._active: set[int] = set()
@@ -106,6 +114,9 @@ class Walker:
         # reads whose value the code converts (``int(rospy.get_param('~baud', '500000'))``):
         # any value the conversion takes will do, so the read has no type of its own
         self._converted: set[int] = set()
+        # the conditions under which each QoS profile held by a local or an attribute of
+        # ``self`` was made (``_qos_assigned``)
+        self._qos_made: dict[tuple[int, str], Conditions] = {}
 
     # -- entries ------------------------------------------------------------------------
 
@@ -133,9 +144,34 @@ class Walker:
                 continue
             done.add(id(info.node))
             entries.append((info, self._collect(lambda i=info: self._entry(i))))
+        unbuilt = self._unbuilt(modules)
         for info, calls in entries:
-            if id(info.node) not in self._inlined:
+            if id(info.node) not in self._inlined and (info.cls is None
+                                                       or id(info.cls) not in unbuilt):
                 self.calls.extend(calls)
+
+    def _unbuilt(self, modules: list[Module]) -> set[int]:
+        """The node classes of the executable's modules that nothing it runs constructs,
+        when it makes its node(s) otherwise (a module with a class per node whose
+        ``main()`` builds one): they are no node of the process and make no call, as a
+        C++ class the node never builds; their names are dropped (a node class the code
+        may build out of our sight keeps its calls where nothing else names the node)."""
+        ev = self.evaluator
+        unbuilt = {id(cls) for module in modules for cls in module.classes.values()
+                   if id(cls) not in self._constructed and ev.is_node_class(cls)}
+        theirs = {name for key in unbuilt for name in self._class_names.get(key, ())}
+        others = {name for key, names in self._class_names.items() if key not in unbuilt
+                  for name in names}
+        dropped = theirs - others
+        kept = [i for i, name in enumerate(self.names) if name not in dropped]
+        if not unbuilt or not kept:
+            return set()
+        self.names_at = [self.names_at[i] for i in kept]
+        self.names = [self.names[i] for i in kept]
+        self.rclpy_names = [name for name in self.rclpy_names if name not in dropped]
+        if self.rosname in dropped:
+            self.rosname, self.namespace = self.names[0], None
+        return unbuilt
 
     def _collect(self, walk: object) -> list[PrimitiveCall]:
         saved, self.calls = self.calls, []
@@ -147,7 +183,7 @@ class Walker:
 
     def _entry(self, info: FunctionInfo) -> None:
         instance = self.evaluator.new(info.cls) if info.cls is not None else None
-        frame = Frame(info.module, unknown_params(info), instance)
+        frame = Frame(info.module, unknown_params(info), instance, owner=info.cls)
         self._active.add(id(info.node))
         try:
             self._block(info.node.body, frame, ())
@@ -181,6 +217,39 @@ class Walker:
         if statement.value is not None:
             self._expr(statement.value, frame, conds)
         self.evaluator.assign(statement, frame)
+        targets = statement.targets if isinstance(statement, ast.Assign) else [statement.target]
+        for target in targets:
+            self._qos_assigned(target, frame, conds)
+
+    def _qos_assigned(self, target: ast.expr, frame: Frame, conds: Conditions) -> None:
+        """Where a QoS profile is bound to a local or an attribute of ``self``, and its
+        policies set after (``qos.durability = ...``): a policy set under a condition
+        the profile was not made under may not be set, so it is unknown, as a C++
+        setter that may not run leaves its field."""
+        ev = self.evaluator
+        if isinstance(target, ast.Attribute) and (target.attr == "depth"
+                                                  or target.attr in rclpy.POLICIES):
+            holder = ev.eval(target.value, frame)
+            key = self._holder(target.value, frame)
+            made = self._qos_made.get(key) if key is not None else None
+            if isinstance(holder, QoS) and any(c not in (made or ()) for c in conds):
+                unset = with_policy(holder, target.attr, None)
+                if unset is not None:
+                    ev.bind(target.value, unset, frame)
+            return
+        key = self._holder(target, frame)
+        if key is not None and isinstance(ev.eval(target, frame), QoS):
+            self._qos_made[key] = conds
+
+    @staticmethod
+    def _holder(expr: ast.expr, frame: Frame) -> tuple[int, str] | None:
+        """A local (in its frame) or an attribute of ``self`` (of its instance)."""
+        if isinstance(expr, ast.Name):
+            return id(frame), expr.id
+        if isinstance(expr, ast.Attribute) and isinstance(expr.value, ast.Name) \
+                and expr.value.id == "self" and frame.instance is not None:
+            return id(frame.instance), expr.attr
+        return None
 
     _AnnAssign = _Assign
     _AugAssign = _Assign
@@ -200,28 +269,59 @@ class Walker:
 
     def _For(self, statement: ast.For | ast.AsyncFor, frame: Frame, conds: Conditions) -> None:
         self._expr(statement.iter, frame, conds)
-        text = f"{self._text(frame, statement.target)} in {self._text(frame, statement.iter)}"
-        loop = condition("for", text, self._where(frame, statement))
-        items = self.evaluator.iteration(
-            statement.iter, frame, MAX_UNROLL if self._unrolled else MAX_UNROLL_OUTER)
-        walked = self.evaluator.eval(statement.iter, frame) if items is None else None
-        if isinstance(walked, ParamValue) and isinstance(statement.target, ast.Name):
-            # a loop over a list parameter's value: a call named by its variable is one
-            # call per element the configuration gives it (the graph expands it, and the
-            # loop, "for each", is then no condition of those calls)
-            loop = condition(EACH_STATEMENT, text, self._where(frame, statement))
-            items = (ParamElement(walked.name),)
+        self._loop(statement.target, statement.iter, frame, self._where(frame, statement),
+                   lambda loop: self._block(statement.body, frame, (*conds, loop)))
+        self._block(statement.orelse, frame, conds)
+
+    def _loop(self, target: ast.expr, over: ast.expr, frame: Frame, where: Location,
+              body: Callable[[Condition], None]) -> None:
+        """Walk a loop's body (``body(loop condition)``) once per item of a known, short
+        sequence (unrolled), else once with the variable unknown; over a list
+        parameter's value, or a dict parameter's ``values()`` / ``items()``, once with
+        the variable its element (``ParamElement``; an entry's key is unknown)."""
+        ev = self.evaluator
+        text = f"{self._text(frame, target)} in {self._text(frame, over)}"
+        loop = condition("for", text, where)
+        items = ev.iteration(over, frame, MAX_UNROLL if self._unrolled else MAX_UNROLL_OUTER)
+        if items is None:
+            element = self._element_loop(target, over, frame)
+            if element is not None:
+                # a loop over a list parameter's value: a call named by its variable is
+                # one call per element the configuration gives it (the graph expands it,
+                # and the loop, "for each", is then no condition of those calls)
+                loop = condition(EACH_STATEMENT, text, where)
+                items = (element,)
         # a loop over a known, short sequence is unrolled: one walk of the body per item
         self._unrolled += 1 if items else 0
         try:
             for item in items if items else (Unknown("loop variable"),):
-                self.evaluator.bind(statement.target, item, frame)
-                self._block(statement.body, frame, (*conds, loop))
+                ev.bind(target, item, frame)
+                body(loop)
         finally:
             self._unrolled -= 1 if items else 0
         if items:  # after the loop its variable is unknown to the rest of the walk
-            self.evaluator.bind(statement.target, Unknown("loop variable"), frame)
-        self._block(statement.orelse, frame, conds)
+            ev.bind(target, Unknown("loop variable"), frame)
+
+    def _element_loop(self, target: ast.expr, over: ast.expr, frame: Frame) -> object:
+        """What a loop's variable holds when the loop is over a parameter's elements:
+        ``ParamElement`` (``for x in p``, ``for x in p.values()``), a key unknown and
+        the element (``for k, x in p.items()``); else None."""
+        ev = self.evaluator
+        walked = ev.eval(over, frame)
+        if isinstance(walked, ParamValue):
+            return ParamElement(walked.name) if isinstance(target, ast.Name) else None
+        if not (isinstance(over, ast.Call) and isinstance(over.func, ast.Attribute)
+                and over.func.attr in ("items", "values") and not over.args):
+            return None
+        owner = ev.eval(over.func.value, frame)
+        if not isinstance(owner, ParamValue):
+            return None
+        if over.func.attr == "values":
+            return ParamElement(owner.name) if isinstance(target, ast.Name) else None
+        if isinstance(target, ast.Tuple) and len(target.elts) == 2 and isinstance(
+                target.elts[1], ast.Name):
+            return Seq((Unknown("loop variable"), ParamElement(owner.name)))
+        return None
 
     _AsyncFor = _For
 
@@ -322,10 +422,53 @@ class Walker:
                 and isinstance(node.args[0], ast.Call)
             ):
                 self._converted.add(id(node.args[0]))
-        calls = [n for n in ast.walk(expr) if isinstance(n, ast.Call)]
+        calls: list[ast.Call] = []
+        comprehensions: list[_Comprehension] = []
+        _outside_comprehensions(expr, calls, comprehensions)
         calls.sort(key=lambda c: (c.lineno, c.col_offset))
         for call in calls:
             self._call(call, frame, conds)
+        for made in comprehensions:
+            self._comprehension(made, frame, conds)
+
+    def _comprehension(self, made: _Comprehension, frame: Frame, conds: Conditions) -> None:
+        """A list, set, dict or generator comprehension walked as the ``for`` loops it
+        is (``[rospy.Publisher(t + '/cmd', ...) for t in topics]``: one call per element
+        of the list parameter ``topics``), each ``if`` of it a condition; its variables
+        are its own, as in Python 3."""
+        parts = [made.key, made.value] if isinstance(made, ast.DictComp) else [made.elt]
+        names = {n.id for gen in made.generators for n in ast.walk(gen.target)
+                 if isinstance(n, ast.Name)}
+        saved = {name: frame.locals[name] for name in names if name in frame.locals}
+
+        def level(index: int, inner: Conditions) -> None:
+            if index == len(made.generators):
+                for part in parts:
+                    self._expr(part, frame, inner)
+                return
+            gen = made.generators[index]
+            if index:  # the first one's iterable is the enclosing scope's
+                self._expr(gen.iter, frame, inner)
+
+            def body(loop: Condition) -> None:
+                tests = (*inner, loop)
+                for test in gen.ifs:
+                    self._test(test)
+                    self._expr(test, frame, tests)
+                    tests = (*tests, condition("if", self._text(frame, test),
+                                               self._where(frame, test)))
+                level(index + 1, tests)
+
+            self._loop(gen.target, gen.iter, frame, self._where(frame, made), body)
+
+        try:
+            level(0, conds)
+        finally:
+            for name in names:
+                if name in saved:
+                    frame.locals[name] = saved[name]
+                else:
+                    frame.locals.pop(name, None)
 
     def _call(self, call: ast.Call, frame: Frame, conds: Conditions) -> None:
         ev = self.evaluator
@@ -370,6 +513,7 @@ class Walker:
             self._inline(target, call, frame, conds)
         elif isinstance(target, ClassInfo):
             init = ev.method(target, "__init__")
+            self._constructed.update(id(c) for c in ev.mro(target))
             # its methods and those it inherits (rosserial_arduino's SerialClient runs
             # rosserial_python's, whose run() sets up the device's topics)
             for used in ev.mro(target):
@@ -511,10 +655,16 @@ class Walker:
                 call.name_default = default.text
         elif isinstance(value, ParamElement):
             call.name_param = param_name(Value.of(value.name)) if version == 2 else value.name
-            call.name_each = "."
+            call.name_each = value.field
         else:
             params = [p.origin for p in text.parts if isinstance(p, Unknown)]
-            if len(params) == 1 and params[0].startswith("parameter "):
+            if len(params) == 1 and params[0].startswith(ELEMENT_OF):
+                # an element with text around it (``f"/{robot}/cmd_vel"``): one call
+                # per element too, the element in the place of the ``?``
+                name, _, field = params[0].removeprefix(ELEMENT_OF).partition(FIELD_OF)
+                call.name_param = param_name(Value.of(name)) if version == 2 else name
+                call.name_each = field or "."
+            elif len(params) == 1 and params[0].startswith("parameter "):
                 name = params[0].removeprefix("parameter ")
                 call.name_param = param_name(Value.of(name)) if version == 2 else name
                 default = ev.param_defaults.get(name)
@@ -578,22 +728,18 @@ def _remote(remote: Value, name: str) -> str:
     return f"{node}/{name.removeprefix('~')}" if node else name
 
 
-# rclpy's parameter types (Parameter.Type.X, ParameterType.PARAMETER_X) as the model
-# names parameter types, for declarations that give a type and no value
-_DECLARED_TYPES: dict[str, str | None] = {
-    "BOOL": param_type(True), "INTEGER": param_type(0), "DOUBLE": param_type(0.0),
-    "STRING": "str", **{f"{kind}_ARRAY": "list" for kind in (
-        "BYTE", "BOOL", "INTEGER", "DOUBLE", "STRING")}}
+_Comprehension = ast.ListComp | ast.SetComp | ast.DictComp | ast.GeneratorExp
 
 
-def type_only(expr: ast.expr | None) -> str | None:
-    """The parameter type a ``declare_parameter`` value argument names when it is a type
-    rather than a value, else None."""
-    if not isinstance(expr, ast.Attribute):
-        return None
-    owner = expr.value
-    owner_name = owner.attr if isinstance(owner, ast.Attribute) else (
-        owner.id if isinstance(owner, ast.Name) else "")
-    if owner_name not in ("Type", "ParameterType"):
-        return None
-    return _DECLARED_TYPES.get(expr.attr.removeprefix("PARAMETER_"))
+def _outside_comprehensions(expr: ast.AST, calls: list[ast.Call],
+                            comprehensions: list[_Comprehension]) -> None:
+    """The calls of ``expr`` outside its comprehensions (the first iterable of one is
+    outside: the enclosing scope evaluates it), and its outermost comprehensions."""
+    if isinstance(expr, _Comprehension):
+        comprehensions.append(expr)
+        _outside_comprehensions(expr.generators[0].iter, calls, comprehensions)
+        return
+    if isinstance(expr, ast.Call):
+        calls.append(expr)
+    for child in ast.iter_child_nodes(expr):
+        _outside_comprehensions(child, calls, comprehensions)
