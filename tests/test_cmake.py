@@ -1,5 +1,7 @@
 from __future__ import annotations
 
+import os
+
 import pytest
 from conftest import package_xml
 
@@ -394,3 +396,24 @@ def test_an_external_project_that_builds_executables_is_said(write_tree):
     assert [(d.severity, d.location.line, d.message) for d in said] == [
         ("warning", 5, "ExternalProject_Add(talker) builds talker as a project of its own, "
          "whose executables are not read; the nodes it builds are unknown")]
+
+
+def test_an_included_file_named_without_a_folder(write_tree):
+    # include(<name>) with no folder and no .cmake suffix: a module of CMAKE_MODULE_PATH
+    # when there is one, else the file of that name in the current source folder
+    ws, pkg = workspace_with(write_tree, """
+        project(pkg)
+        set(CMAKE_MODULE_PATH ${CMAKE_CURRENT_SOURCE_DIR}/cmake)
+        include(Helpers)
+        include(CMakeLists_catkin.txt)
+        return()
+        add_executable(pkg_after_return src/c.cpp)
+        """)
+    root = pkg.root
+    with open(f"{root}/CMakeLists_catkin.txt", "w", encoding="utf-8") as handle:
+        handle.write("add_executable(pkg_node ${NODE_SOURCE})\n")
+    os.makedirs(f"{root}/cmake")
+    with open(f"{root}/cmake/Helpers.cmake", "w", encoding="utf-8") as handle:
+        handle.write("set(NODE_SOURCE src/a.cpp)\n")
+    nodes, _ = parse_package(pkg, ws)
+    assert [(n.executable, n.sources) for n in nodes] == [("pkg_node", ["pkg/src/a.cpp"])]

@@ -484,3 +484,48 @@ def test_an_alias_or_enumeration_of_a_workspace_package_is_no_class(write_tree: 
     node = next(n for p in model.packages for n in p.nodes if n.name == "user/user")
     said = [d.message for d in model.diagnostics if d.code == "CPP_CLASS_UNSEEN"]
     assert node.completeness == "complete" and not said, (node.completeness_reasons, said)
+
+
+def _through_library(write_tree: Any, tag: str) -> Any:
+    """``node`` declares only the workspace library ``planner``, whose header includes
+    costmap_2d's (missing) and whose manifest names costmap_2d with ``tag``."""
+    model = _model(write_tree, {
+        "src/planner/package.xml": package_xml("planner").replace(
+            "</package>", f"<depend>roscpp</depend><{tag}>costmap_2d</{tag}></package>"),
+        "src/planner/CMakeLists.txt": "project(planner)\nadd_library(planner src/planner.cpp)\n",
+        "src/planner/include/planner/planner.h":
+            "#pragma once\n#include <costmap_2d/costmap_2d_ros.h>\n"
+            "namespace planner { struct Planner { void plan(costmap_2d::Costmap2DROS* c); }; }\n",
+        "src/planner/src/planner.cpp":
+            "#include <planner/planner.h>\n"
+            "void planner::Planner::plan(costmap_2d::Costmap2DROS*) {}\n",
+        "src/node/package.xml": _depends("node", "roscpp", "planner"),
+        "src/node/CMakeLists.txt": "project(node)\nadd_executable(node src/node.cpp)\n",
+        "src/node/src/node.cpp": """
+            #include <ros/ros.h>
+            #include <planner/planner.h>
+            int main(int argc, char** argv) {
+              ros::init(argc, argv, "node");
+              auto* costmap = new costmap_2d::Costmap2DROS("global_costmap", 0);
+              planner::Planner().plan(costmap);
+              ros::spin();
+            }
+            """,
+    })
+    return next(n for p in model.packages for n in p.nodes if n.name == "node/node")
+
+
+def test_a_class_of_a_dependency_a_workspace_library_exports(write_tree: Any) -> None:
+    # the node reaches costmap_2d through the planner's header: the planner exports it
+    # (``run_depend`` of format 1, ``depend``, ``build_export_depend``)
+    for tag in ("run_depend", "depend", "build_export_depend"):
+        node = _through_library(write_tree, tag)
+        assert node.completeness == "partial", tag
+        assert any("costmap_2d::Costmap2DROS of ROS package costmap_2d" in r
+                   for r in node.completeness_reasons), node.completeness_reasons
+
+
+def test_a_dependency_a_workspace_library_does_not_export(write_tree: Any) -> None:
+    # a test dependency of the planner reaches no package depending on it
+    node = _through_library(write_tree, "test_depend")
+    assert node.completeness == "complete", node.completeness_reasons

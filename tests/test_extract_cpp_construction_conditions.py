@@ -1,7 +1,10 @@
 """The calls a constructor makes exist where the class is constructed: they carry the
 conditions of its construction sites in the file, as a wrapper's calls carry those of
 its call site (hector_mapping's HectorDrawings, made only ``if (p_pub_drawings)``,
-advertises ``visualization_marker`` in its constructor)."""
+advertises ``visualization_marker`` in its constructor), and, for a constructor defined
+in a file that constructs its class nowhere, those the node's other files construct it
+under (sick_tim310 makes the SickTimCommonMockup of sick_tim_common_mockup.cpp, which
+subscribes ``datagram``, only ``if (subscribe_datagram)``)."""
 
 from __future__ import annotations
 
@@ -96,3 +99,77 @@ def test_the_one_construction_s_condition(write_tree) -> None:
                        "mapping/src/mapping.cpp": NODE.replace(
                            "    always = new Drawings();\n", "")})
     assert _conditions(root, "mapping.cpp")["marker"] == ["if drawings_on_"]
+
+
+MOCKUP_H = """
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+class Scanner {
+public:
+  virtual ~Scanner() {}
+};
+class Mockup : public Scanner {
+public:
+  Mockup();
+private:
+  ros::NodeHandle nh_;
+  ros::Subscriber sub_;
+  void datagramCB(const std_msgs::String::ConstPtr & msg) {}
+};
+class Device : public Scanner {
+public:
+  explicit Device(int number);
+};
+"""
+
+MOCKUP_CPP = """
+#include "mockup.h"
+Mockup::Mockup()
+{
+  sub_ = nh_.subscribe("datagram", 1, &Mockup::datagramCB, this);
+}
+"""
+
+SCANNER_MAIN = """
+#include "mockup.h"
+int main(int argc, char ** argv)
+{
+  ros::init(argc, argv, "scanner");
+  ros::NodeHandle pnh("~");
+  bool subscribe_datagram;
+  pnh.param("subscribe_datagram", subscribe_datagram, false);
+  Scanner * s = nullptr;
+  while (ros::ok()) {
+    if (subscribe_datagram)
+      s = new Mockup();
+    else
+      s = new Device(0);
+    delete s;
+  }
+}
+"""
+
+
+def _node(write_tree, main: str) -> dict[str, list[str]]:
+    root = write_tree({"scanner/package.xml": package_xml("scanner"),
+                       "scanner/src/mockup.h": MOCKUP_H,
+                       "scanner/src/mockup.cpp": MOCKUP_CPP,
+                       "scanner/src/main.cpp": main})
+    result = extract_cpp([str(root / "scanner" / "src" / "main.cpp"),
+                          str(root / "scanner" / "src" / "mockup.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    assert all(getattr(c, "built_in", None) is None for c in result.calls)
+    return {c.name: [f"{k.statement} {k.text}" for k in c.conditions]
+            for c in result.calls if c.kind == "subscribe"}
+
+
+def test_the_construction_s_condition_in_another_file(write_tree) -> None:
+    found = _node(write_tree, SCANNER_MAIN)
+    assert found["datagram"] == ["while ros::ok()", "if subscribe_datagram"]
+
+
+def test_a_construction_in_another_file_without_condition(write_tree) -> None:
+    # also made before the loop, unconditionally: the calls as they are
+    found = _node(write_tree, SCANNER_MAIN.replace(
+        "  Scanner * s = nullptr;\n", "  Scanner * s = new Mockup();\n"))
+    assert found["datagram"] == []

@@ -251,3 +251,43 @@ def test_ros2_wait_sets_client_pruning_and_timer_calls(write_tree) -> None:
             if c.kind in ("subscribe", "publish", "client")] == [
         ("subscribe", "fixed_in"), ("subscribe", "in"), ("publish", "out"),
         ("client", "add"), ("publish", "?")]
+
+
+def test_ros1_action_goal_handles_and_boost_time(write_tree) -> None:
+    """actionlib's ActionServer had no GoalHandle, ACTION_DEFINITION types nor callback
+    registration, ActionClient no sendGoal / ClientGoalHandle, boost's thread_group no
+    remove_thread, and ros::Time no toBoost: move_base_flex's AbstractActionBase
+    (abstract_action_base.hpp:77 ``typename actionlib::ActionServer<Action>::GoalHandle``)
+    was an invalid class, so the constructors that build on it (controller_action.cpp:49,
+    which advertises ``~controller_goal``) were errors and mbf_costmap_nav partial;
+    bebop_driver's onInit (``ros::Time::now().toBoost()``, bebop_driver_nodelet.cpp:117)
+    likewise."""
+    result = _extract(write_tree, _source("ros1_action_goal_handle.cpp"), "catkin")
+    assert _errors(result) == []
+    assert sorted((c.kind, c.name) for c in result.calls) == [
+        ("action-client", "follow_joint_trajectory"),
+        ("action-server", "joint_trajectory_action"),
+        ("publish", "~controller_goal")]
+
+
+def test_ros1_boost_foreach(write_tree) -> None:
+    """boost/foreach.hpp had no stand-in: ``BOOST_FOREACH(VAR, COL) { ... }`` (naoqi_driver
+    writes it ``for_each``, naoqi_driver.cpp:111) left the rest of the file unparsed
+    ("expected '}'" at its last line), so none of its functions was read; amcl_node.cpp
+    and slam_gmapping.cpp use it too."""
+    result = _extract(write_tree, _source("ros1_boost_foreach.cpp"), "catkin")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("read", "names"), ("publish", "relayed")]
+
+
+def test_ros1_declaration_macro_scoped_ptr_and_shared_from_this(write_tree) -> None:
+    """naoqi_driver: ``QI_REGISTER_OBJECT(Driver, ...)`` with no ``;`` at the end of its
+    namespace (libqi missing) took the namespace's ``}`` for a function body and lost the
+    unit's functions; ``boost::scoped_ptr<ros::NodeHandle> nhPtr_`` had no stand-in, so
+    ``nhPtr_.reset(new ros::NodeHandle("~"))`` gave the node to an unknown function
+    (naoqi_driver.cpp:997), and ``boost::enable_shared_from_this`` none either."""
+    result = _extract(write_tree, _source("ros1_declaration_macro.cpp"), "catkin")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "~info")]
+    assert not [d for d in result.diagnostics if d.code == "CPP_NODE_TO_UNKNOWN"]

@@ -106,6 +106,24 @@ def test_a_macro_alone_on_its_line_is_defined_empty_not_declared_a_type() -> Non
     assert "struct VENDOR_HANDLE : haros_any {" in header  # it declares ``handle``
 
 
+def test_a_macro_call_written_as_a_declaration_is_defined_empty() -> None:
+    """naoqi_driver's event/audio.hpp ends its namespace with ``QI_REGISTER_OBJECT(
+    AudioEventRegister, processRemote)`` and no ``;`` (libqi's header missing): clang
+    took it for a function's declaration, the namespace's ``}`` for its body, and the
+    rest of the unit (naoqi_driver.cpp's every function) was lost."""
+    names = synthesis.Names()
+    text = (b"namespace naoqi {\nclass A {\n}; // class\n\n"
+            b"QI_REGISTER_OBJECT( A,\n  start, /* rpc */ stop )\n\n} //naoqi\n")
+    assert names.learn([("expected function body after function declarator", text,
+                         text.rindex(b"}"))])
+    assert "#define QI_REGISTER_OBJECT(...)\n" in names.header()
+    # a declaration that is no macro call is left as it is
+    other = synthesis.Names()
+    text = b"namespace n {\nvoid handler(int a)\n}\n"
+    assert not other.learn([("expected function body after function declarator", text,
+                             text.rindex(b"}"))])
+
+
 def test_unresolved_calls_are_kept_by_name() -> None:
     result = extract("invalid_object.cpp")
     assert rows(result) == [

@@ -281,8 +281,12 @@ def _include(it: Interpreter, command: Invocation, args: list[str]) -> None:
         it.set(args[args.index("RESULT_VARIABLE") + 1], "NOTFOUND")
     candidates = [it.path(name)]
     if "/" not in name and not name.endswith(".cmake"):
+        # a module first (``<name>.cmake`` on CMAKE_MODULE_PATH), else, as CMake does, a
+        # file of that name in the current source folder (naoqi_driver's
+        # ``include(CMakeLists_catkin.txt)``, which defines its executable)
         folders = split_list(it.get("CMAKE_MODULE_PATH"))
-        candidates = [os.path.join(it.path(folder), name + ".cmake") for folder in folders]
+        candidates = [*(os.path.join(it.path(folder), name + ".cmake") for folder in folders),
+                      it.path(name)]
     for path in candidates:
         if it.include(command, path):
             if "RESULT_VARIABLE" in args[1:-1]:

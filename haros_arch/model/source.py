@@ -145,6 +145,11 @@ class PrimitiveCall:
     # no call in that unit gives; the node makes it only if one of its files constructs
     # the class (``extract.cpp.links.resolve``)
     made_in: str | None = field(default=None, metadata={"optional": True})
+    # in one translation unit's calls only (never in a node's): the USR of the
+    # constructor whose body makes this call, when that unit constructs the class
+    # nowhere; the node's call holds the source conditions every construction of the
+    # class in the node's other files shares (``extract.cpp._built_under``)
+    built_in: str | None = field(default=None, metadata={"optional": True})
     # a name taken from a parameter whose default holds another parameter's value in place
     # of its one ``?`` (topic_tools' ROS 2 relay: ``output_topic`` defaults to
     # ``input_topic + "_relay"``, name_default "?_relay"): that other parameter's name, as

@@ -26,7 +26,7 @@ from ...files import MAX_FILE_BYTES, read_text
 from ...manifest import parse_manifest, ros_version
 from ...model.conditions import Condition
 from ...model.location import Location
-from ...model.source import PrimitiveCall, declared_defaults
+from ...model.source import Package, PrimitiveCall, declared_defaults
 from ...workspace import Workspace, manifest_of
 from .. import NODELET_LOAD
 from . import cache, links, recall, synthesis, toolchain
@@ -243,6 +243,7 @@ def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True
     # where a construction may be missed: the words of the code around the errors the
     # parse left (an error drops its statement), everywhere when a file was not read
     unseen = {word for unit in units for word in unit.unseen} if complete else {"*"}
+    built = _built_under(facts, unseen)
     for unit in units:
         result.diagnostics.extend(unit.diagnostics)
         if unit.rosname is not None and result.rosname is None:
@@ -250,6 +251,11 @@ def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True
         calls, found = links.resolve(unit.calls, facts, unseen)
         result.diagnostics.extend(found)
         for call in calls:
+            if call.built_in is not None:
+                extra = tuple(c for c in built.get(call.built_in, ())
+                              if c not in call.conditions)
+                call = dataclasses.replace(call, built_in=None,
+                                           conditions=(*extra, *call.conditions))
             key = (call.kind, call.name, call.location)
             if key not in seen:
                 seen.add(key)
@@ -258,6 +264,37 @@ def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True
     _name_nodes(result, sorted(paths_units, key=lambda pair: pair[0]), facts)
     result.calls = declared_defaults(result.calls)
     return result
+
+
+def _built_under(facts: list[links.Fact], unseen: set[str]) -> dict[str, tuple[Condition, ...]]:
+    """Constructor USR -> the source conditions every place of the node's files that
+    calls it shares (``links.CONDITIONS``): the calls the constructor makes in a file
+    that constructs its class nowhere exist only under them (sick_tim310 makes its
+    ``SickTimCommonMockup``, which subscribes ``datagram`` in sick_tim_common_mockup.cpp,
+    only ``if (subscribe_datagram)``). None for a constructor with a place that is
+    unconditional, or whose class the errors the parse left may construct unseen."""
+    sites: dict[str, dict[str, tuple[Condition, ...] | None]] = {}
+    for usr, index, value, site in facts:
+        if index == links.OVERRIDES:
+            continue
+        at = sites.setdefault(usr, {})
+        if index != links.CONDITIONS:
+            at.setdefault(site, None)
+            continue
+        try:
+            at[site] = cache.conditions_of_text(value)
+        except (ValueError, TypeError, KeyError):
+            at[site] = None
+    found: dict[str, tuple[Condition, ...]] = {}
+    for usr, at in sites.items():
+        held = list(at.values())
+        if "*" in unseen or links.class_of(usr) in unseen or any(c is None for c in held):
+            continue
+        shared = tuple(c for c in held[0] or () if all(c in other for other in held[1:]
+                                                      if other is not None))
+        if shared:
+            found[usr] = shared
+    return found
 
 
 def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
@@ -602,13 +639,15 @@ def ros1_clients(path: str, workspace: Workspace, generated: str,
     files that define the class's constructors (when found) name a NodeHandle or the
     parameter, topic or service functions; another package's when the unit's package
     declares it as a dependency and it is installed with a package.xml that depends on
-    roscpp, or found nowhere (its headers are missing: what it does is not known). The
-    workspace files it reads (manifests, the files that define a class) go to ``read``,
-    so a cached result is used only while they are unchanged."""
+    roscpp, or found nowhere (its headers are missing: what it does is not known). A
+    dependency counts when the unit's package declares it or a workspace package it
+    depends on exports it (``_visible``). The workspace files it reads (manifests, the
+    files that define a class) go to ``read``, so a cached result is used only while
+    they are unchanged."""
     package = workspace.package_of(path)
     if package is not None and package.root:
         read.append(manifest_of(package.root))
-    declared = {d.name for d in package.dependencies} if package is not None else set()
+    declared = _visible(package, workspace, read) if package is not None else set()
     known: dict[tuple[str, str], bool] = {}
 
     def client(name: str, cls: str) -> bool:
@@ -619,6 +658,36 @@ def ros1_clients(path: str, workspace: Workspace, generated: str,
         return found
 
     return client
+
+
+# the dependencies of a package whose headers the packages depending on it see (REP 140:
+# ``depend`` and ``build_export_depend``; format 1's ``run_depend`` is both)
+_EXPORTED = frozenset({"depend", "build_export_depend", "run_depend"})
+
+
+def _visible(package: Package, workspace: Workspace, read: list[str]) -> set[str]:
+    """The packages whose headers a unit of ``package`` may include: its dependencies,
+    and those the workspace packages among them export (``_EXPORTED``), in turn. A node
+    that includes a workspace library's header reaches the classes that header names
+    (hector_exploration_node builds costmap_2d's Costmap2DROS through
+    hector_exploration_planner, which depends on costmap_2d; it declares only the
+    planner). The manifests read go to ``read``."""
+    found = {d.name for d in package.dependencies}
+    todo = sorted(found)
+    seen = {package.name}
+    while todo:
+        name = todo.pop()
+        other = workspace.packages.get(name)
+        if name in seen or other is None:
+            continue
+        seen.add(name)
+        if other.root:
+            read.append(manifest_of(other.root))
+        for dep in other.dependencies:
+            if dep.kind in _EXPORTED and dep.name not in found:
+                found.add(dep.name)
+                todo.append(dep.name)
+    return found
 
 
 def _client(name: str, cls: str, declared: set[str], workspace: Workspace,

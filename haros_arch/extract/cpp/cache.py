@@ -226,6 +226,17 @@ def from_data(data: dict[str, Any]) -> tuple[
             _pairs(data, "constructions"), unseen, made_under)
 
 
+def conditions_text(conditions: Iterable[Condition]) -> str:
+    """Conditions as one string (a ``links.CONDITIONS`` fact's value)."""
+    return json.dumps([dataclasses.asdict(c) for c in conditions], sort_keys=True)
+
+
+def conditions_of_text(text: str) -> tuple[Condition, ...]:
+    """The conditions ``conditions_text`` wrote; ValueError / TypeError / KeyError for
+    text that is not such."""
+    return _conditions(json.loads(text))
+
+
 def _conditions(data: Any) -> tuple[Condition, ...]:
     return tuple(Condition(**{**c, "location": Location(**c["location"]), "parameters": tuple(
         (str(local), str(param)) for local, param in c["parameters"]) if c.get(

@@ -38,7 +38,7 @@ _FUNCTIONS = frozenset({
     CursorKind.FUNCTION_DECL, CursorKind.CXX_METHOD, CursorKind.CONSTRUCTOR,
     CursorKind.DESTRUCTOR, CursorKind.FUNCTION_TEMPLATE, CursorKind.CONVERSION_FUNCTION,
 })
-_POINTERS = ("shared_ptr", "unique_ptr", "weak_ptr")
+_POINTERS = ("shared_ptr", "unique_ptr", "weak_ptr", "scoped_ptr")
 _POINTER_READS = ("operator->", "operator*", "get")  # a smart pointer's handle
 _UNSURE = (None, None)  # a member whose writes differ (``Namespaces._assigned``)
 

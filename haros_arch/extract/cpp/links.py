@@ -25,8 +25,10 @@ from clang.cindex import Cursor, CursorKind, conf
 
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
+from ...model.conditions import Condition
 from ...model.source import PrimitiveCall
 from . import msg_types
+from .cache import conditions_text
 from .call_sites import CallSites, argument
 from .handles import Namespaces, is_handle, join_name, normalise
 from .values import PLACEHOLDER, SEPARATOR, Scope, key_of, render
@@ -41,6 +43,9 @@ CALLED = -1  # the index of a fact that says only that the call site calls the f
 # constructor sets it, not as a later method does (nav2's CostmapFilter::activate passes
 # ``filter_info_topic_``, "" in its constructor, set from a parameter in onInitialize)
 OVERRIDES = -2
+# the index of a fact that says the call site (a construction) is made under the source
+# conditions its value holds (``cache.conditions_text``)
+CONDITIONS = -3
 _SPECIALISED = frozenset({CursorKind.FUNCTION_DECL, CursorKind.CONSTRUCTOR,
                           CursorKind.CXX_METHOD})
 MAX_VALUES = 8
@@ -51,10 +56,14 @@ _SPLIT = "\x02"
 
 def argument_facts(sites: CallSites, namespaces: Namespaces,
                    owned: Callable[[str], bool],
-                   named: Callable[[Cursor, Scope], str | None] | None = None) -> list[Fact]:
+                   named: Callable[[Cursor, Scope], str | None] | None = None,
+                   conditioned: Callable[[Cursor, Cursor], tuple[Condition, ...]] | None = None
+                   ) -> list[Fact]:
     """What this file passes, as handles' namespaces or strings, to the workspace
     functions it calls but does not define; ``named`` gives a string that is (or holds)
-    a parameter's value with that parameter marked (``parameter_mark``)."""
+    a parameter's value with that parameter marked (``parameter_mark``); ``conditioned``
+    the source conditions of a call in its function, said of the constructions
+    (``CONDITIONS``)."""
     facts: list[Fact] = []
     done: set[tuple[str, int]] = set()
     for _round in range(MAX_DEPTH):  # reading a value may give another function a mark
@@ -79,6 +88,10 @@ def argument_facts(sites: CallSites, namespaces: Namespaces,
                     facts.append((usr, index, value, site))
             if len(facts) == given:  # called, with nothing read: called all the same
                 facts.append((usr, CALLED, "", site))
+            if conditioned is not None and callee.kind == CursorKind.CONSTRUCTOR:
+                under = conditioned(caller, call)
+                if under:
+                    facts.append((usr, CONDITIONS, conditions_text(under), site))
             template = conf.lib.clang_getSpecializedCursorTemplate(callee)
             if template is not None and callee.kind in _SPECIALISED and (
                 template.kind == CursorKind.FUNCTION_TEMPLATE

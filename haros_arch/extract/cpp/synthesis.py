@@ -239,6 +239,23 @@ def _bare_macro(name: str, text: bytes, offset: int) -> bool:
 
 
 _MISSING_HEADER = re.compile(r"^header (\S+) not found")
+# a declaration clang took for a function's that wants a body: a macro call that stands
+# for declarations, written with no ``;`` (libqi's ``QI_REGISTER_OBJECT(Type, method)``
+# at namespace scope, its header missing): defined empty, or the next ``}`` is taken for
+# the body and the rest of the unit is lost
+_BODY_EXPECTED = re.compile(r"^expected function body after function declarator")
+_DECLARATION_MACRO = re.compile(
+    rb"([A-Z][A-Z0-9]*(?:_[A-Z0-9]+)+)\s*\((?:[^;{}()]|\([^;{}()]*\))*\)")
+
+
+def _declaration_macro(text: bytes, offset: int) -> str | None:
+    """The macro whose call is the whole declaration that ends before ``offset`` (from
+    the last ``;``, ``{`` or ``}`` before it, comments left out), if it is one."""
+    window = text[max(0, offset - _MACRO_SPAN):offset]
+    start = max(window.rfind(b";"), window.rfind(b"{"), window.rfind(b"}")) + 1
+    statement = re.sub(rb"//[^\n]*|/\*.*?\*/", b" ", window[start:], flags=re.DOTALL).strip()
+    found = _DECLARATION_MACRO.fullmatch(statement)
+    return found.group(1).decode() if found is not None else None
 
 
 def library_prefixes(messages: Iterable[str]) -> set[str]:
@@ -304,6 +321,8 @@ class Names:
         # unknown macros written alone on their line (``EIGEN_MAKE_ALIGNED_OPERATOR_NEW``
         # in a class body, its header not reached): defined empty, not declared as types
         self.macros: set[str] = set()
+        # unknown function-like macros written as a whole declaration (``_BODY_EXPECTED``)
+        self.declaration_macros: set[str] = set()
         self._read: set[int] = set()  # the files whose using-directives were read
         self._texts: list[bytes] = []  # those files
         self._defined: set[str] = set()  # the names they define (see ``_spread``)
@@ -386,6 +405,12 @@ class Names:
                                 self.flags.add(name)
 
     def _learn_one(self, message: str, text: bytes | None, offset: int) -> None:
+        if _BODY_EXPECTED.match(message):
+            macro = _declaration_macro(text, offset) if text is not None else None
+            if macro is not None and macro not in self.declaration_macros:
+                self.declaration_macros.add(macro)
+                self.count += 1
+            return
         ambiguous = _AMBIGUOUS.match(message)
         if ambiguous is not None:
             self.withdrawn.add(ambiguous.group(1))
@@ -561,6 +586,7 @@ class Names:
                            for m in sorted(self.constants & self.members))
         lines = [_PRELUDE % (_COMPOUND_MEMBERS, members, _OPERATORS)]
         lines += [f"#define {name}" for name in sorted(self.macros)]
+        lines += [f"#define {name}(...)" for name in sorted(self.declaration_macros)]
         # static: a field reads as ``msg.f`` and a constant as ``Msg::F``, and the
         # message stays the plain struct it was (no member to construct or copy)
         lines += [f"#define {interfaces.fields_macro(record)} " + " ".join(

@@ -223,7 +223,8 @@ class CallFinder:
                 for read in reads:
                     read.variable = member.spelling
                     read.also = also or None
-        self.facts = argument_facts(self.sites, self.namespaces, self.owned, self._marked)
+        self.facts = argument_facts(self.sites, self.namespaces, self.owned, self._marked,
+                                    self._site_conditions)
         for call in self.calls:  # get_parameter("p") of a declare_parameter("p", default)
             if call.name_param is not None and call.name_default is None and (
                 call.name_param in self._declared
@@ -326,8 +327,11 @@ class CallFinder:
         tested, self._status_reads = TestedCalls(self.reader), []
         first = len(self.calls)
         # a constructor's calls exist where the class is constructed: under the
-        # conditions of its construction sites in this file
+        # conditions of its construction sites in this file; a file that constructs it
+        # nowhere leaves them to the node's other files (``built_in``)
         made_under = self._constructed_under(function, 0)
+        built_in = self._constructor[0] if self._constructor is not None and (
+            self.sites is not None and not self.sites.callers(function)) else None
         # main(argc, argv): its conditions over them are over the program's arguments (set
         # after the construction sites, whose walk enters their own functions)
         self.reader.enter(function, _ARGUMENTS_LEFT,
@@ -335,8 +339,11 @@ class CallFinder:
         stack: list[tuple[Cursor, tuple[Condition, ...]]] = [
             (child, made_under) for child in reversed(list(function.get_children()))
             if child.kind != CursorKind.PARM_DECL]
+        lost = _lost_initialisers(function) if function.kind == CursorKind.CONSTRUCTOR else {}
         while stack:
             node, conditions = stack.pop()
+            if lost and node.kind == CursorKind.UNEXPOSED_EXPR and place_of(node) in lost:
+                self._lost_initialiser(node, *lost[place_of(node)], conditions, scope)
             if node.kind == CursorKind.CALL_EXPR and (
                 node.spelling in _API_NAMES or node.spelling in self.wrappers.names
             ):
@@ -360,6 +367,7 @@ class CallFinder:
         for site, read in self._status_reads:
             read.tested = read.tested or site in tested.keys
         for call in self.calls[first:]:
+            call.built_in = call.built_in or built_in
             # a read or declaration without a default in a ``try`` block whose handler
             # catches rclcpp's exception for it (navigation2's collision monitor reads
             # the deprecated ``max_points`` so, only to warn when it is set)
@@ -390,6 +398,12 @@ class CallFinder:
             if not shared:
                 return ()
         return shared or ()
+
+    def _site_conditions(self, function: Cursor, call: Cursor) -> tuple[Condition, ...]:
+        """The source conditions under which ``function`` makes ``call`` (a construction
+        of another file's class): none where it is not found."""
+        found = self._conditions_at(function, call)
+        return tuple(c for c in found or () if c.kind == "source")
 
     def _conditions_at(self, function: Cursor, call: Cursor) -> tuple[Condition, ...] | None:
         """The source conditions of ``call`` in the body of ``function`` (None when it is
@@ -538,6 +552,20 @@ class CallFinder:
             "CPP_CALL_UNRESOLVED", self.calls[before].location, function=function,
             type=self.calls[before].type or "?"))
 
+    def _lost_initialiser(self, init: Cursor, spec: api.RosFunction, made: Cursor,
+                          conditions: tuple[Condition, ...], scope: Scope) -> None:
+        """A member of an API class (``action_server_(nh, "follow", boost::bind(...))``)
+        whose initialiser clang could not resolve (it names a method an error made
+        invalid): the construction kept as the class's row reads its arguments, its type
+        from the member's, and a diagnostic that says so."""
+        args = [c for c in init.get_children() if c.kind.is_expression()]
+        before = len(self.calls)
+        self._emit(spec, init, args, made, conditions, scope)
+        if len(self.calls) > before:
+            self.diagnostics.append(diag.make(
+                "CPP_CALL_UNRESOLVED", self.calls[before].location, function=made.spelling,
+                type=self.calls[before].type or "?"))
+
     def _unresolved_rows(self) -> dict[str, api.RosFunction]:
         return api.UNRESOLVED_ROS2 if self.ros2 else api.UNRESOLVED_ROS1
 
@@ -551,8 +579,10 @@ class CallFinder:
             data = self.source.get(opaque.location.file.name)
             extent = opaque.extent
             if data is not None:
-                self.unseen.update(WORDS.findall(
-                    data[extent.start.offset:extent.end.offset]))
+                # not the class's own name, which its declaration writes and its
+                # constructor (read where it is defined) does not construct again
+                self.unseen.update(set(WORDS.findall(
+                    data[extent.start.offset:extent.end.offset])) - {opaque.spelling.encode()})
         unseen = unseen_construction(call, self.owned) if opaque is not None else None
         if unseen is not None:
             cls, given = unseen
@@ -1481,6 +1511,37 @@ def _dependent_made(call: Cursor) -> tuple[api.RosFunction, Cursor] | None:
     if spec is None or spec.fixed_name is None:
         return None
     return spec, made
+
+
+def _lost_initialisers(constructor: Cursor
+                       ) -> dict[tuple[str, int], tuple[api.RosFunction, Cursor]]:
+    """The member initialisers of ``constructor`` that build a member of an API class
+    (a row of ``api.ALL`` named as its class) but hold no call of its constructor: an
+    expression clang kept unresolved, as where an argument names a method an error made
+    invalid (industrial_core's ``action_server_(node_, "joint_trajectory_action",
+    boost::bind(&JointTrajectoryAction::goalCB, this, _1), ...)`` when ``goalCB`` takes
+    a type the parse does not have). By the place of that expression, with the row and
+    the member's class."""
+    found: dict[tuple[str, int], tuple[api.RosFunction, Cursor]] = {}
+    children = list(constructor.get_children())
+    for member, init in itertools.pairwise(children):
+        if member.kind != CursorKind.MEMBER_REF or init.kind != CursorKind.UNEXPOSED_EXPR:
+            continue
+        made = member.type.get_canonical().get_declaration()
+        if made.kind == CursorKind.NO_DECL_FOUND:
+            continue
+        base = row_class(made)
+        spec = api.ALL.get((qualified_name(base), base.spelling))
+        if spec is None or any(
+            node.kind == CursorKind.CALL_EXPR and node.referenced is not None
+            and node.referenced.kind == CursorKind.CONSTRUCTOR
+            and node.referenced.semantic_parent is not None
+            and node.referenced.semantic_parent.canonical == made.canonical
+            for node in init.walk_preorder()
+        ):
+            continue
+        found[place_of(init)] = (spec, base)
+    return found
 
 
 def _recovered_name(expr: Cursor) -> str:

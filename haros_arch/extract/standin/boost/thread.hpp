@@ -1,6 +1,7 @@
 // haros_arch stand-in: boost threads (declarations only)
 #ifndef HAROS_STANDIN_BOOST_THREAD_HPP
 #define HAROS_STANDIN_BOOST_THREAD_HPP
+#include <string>
 #include <boost/function.hpp>
 namespace boost {
 namespace posix_time {
@@ -8,6 +9,18 @@ struct time_duration { long total_milliseconds() const; };
 time_duration milliseconds(long n);
 time_duration seconds(long n);
 time_duration microseconds(long n);
+// a point in time (ros::Time::toBoost gives one)
+struct ptime {
+  ptime();
+  time_duration operator-(const ptime& other) const;
+  bool operator<(const ptime& other) const;
+  bool operator==(const ptime& other) const;
+};
+struct microsec_clock { static ptime local_time(); static ptime universal_time(); };
+struct second_clock { static ptime local_time(); static ptime universal_time(); };
+std::string to_iso_extended_string(const ptime& t);
+std::string to_iso_string(const ptime& t);
+std::string to_simple_string(const ptime& t);
 }
 class thread {
 public:
@@ -31,6 +44,11 @@ class thread_group {
 public:
   template<class F> thread* create_thread(F f);
   void join_all();
+  void add_thread(thread* t);
+  void remove_thread(thread* t);
+  bool is_this_thread_in();
+  void interrupt_all();
+  unsigned long size() const;
 };
 class mutex {
 public:

@@ -2,6 +2,8 @@
 #ifndef HAROS_STANDIN_ROS_TIME_H
 #define HAROS_STANDIN_ROS_TIME_H
 #include <stdint.h>
+// as rostime declares them: the conversions below return boost's types
+namespace boost { namespace posix_time { struct ptime; struct time_duration; } }
 namespace ros {
 class Duration {
 public:
@@ -13,6 +15,8 @@ public:
   Duration& fromNSec(int64_t t);
   double toSec() const;
   int64_t toNSec() const;
+  boost::posix_time::time_duration toBoost() const;
+  static Duration fromBoost(const boost::posix_time::time_duration& d);
   bool sleep() const;
   Duration operator+(const Duration& rhs) const;
   Duration operator-(const Duration& rhs) const;
@@ -43,6 +47,8 @@ public:
   bool is_zero() const;
   Time& fromSec(double t);
   Time& fromNSec(uint64_t t);
+  boost::posix_time::ptime toBoost() const;
+  static Time fromBoost(const boost::posix_time::ptime& t);
   Duration operator-(const Time& rhs) const;
   Time operator+(const Duration& rhs) const;
   Time operator-(const Duration& rhs) const;

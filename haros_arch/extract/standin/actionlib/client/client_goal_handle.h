@@ -1,0 +1,2 @@
+// haros_arch stand-in
+#include <actionlib/server/simple_action_server.h>
