@@ -452,3 +452,21 @@ def test_rclpy_a_local_the_paths_of_an_if_set_differently(tmp_path) -> None:
          ("if node.get_parameter('rear').value",)),
         ("subscribe", "front", "geometry_msgs/msg/Twist",
          ("else node.get_parameter('rear').value",))]
+
+
+def test_rclpy_names_joined_with_os_path_join(tmp_path) -> None:
+    """``os.path.join(NS, 'cmd')`` builds a name as on Linux (one ``/`` between parts,
+    a part starting with ``/`` starts over); it was ``?``."""
+    from haros_arch.extract.python import extract_python
+    from haros_arch.workspace import scan
+
+    source = tmp_path / "n.py"
+    source.write_text(
+        "import os\nfrom os.path import join\nimport rclpy\nfrom std_msgs.msg import String\n"
+        "node = rclpy.create_node('n')\nNS = 'robot'\n"
+        "node.create_publisher(String, os.path.join(NS, 'cmd'), 1)\n"
+        "node.create_publisher(String, join('/a/', 'b'), 1)\n"
+        "node.create_publisher(String, os.path.join('x', '/abs', 'y'), 1)\n"
+        "node.create_publisher(String, os.path.join(node.get_namespace(), 'c'), 1)\n")
+    found = extract_python([str(source)], scan([str(tmp_path)]))
+    assert [c.name for c in found.calls] == ["robot/cmd", "/a/b", "/abs/y", "c"]

@@ -330,6 +330,9 @@ class Evaluator(Instances, QoSProfiles, Walker):
                                    else Value.unknown("remote node"))
         if key == ("rclpy", "QoSProfile"):
             return self.qos_profile(expr, frame)
+        if ref.qualname in ("os.path.join", "posixpath.join") and expr.args and not any(
+                isinstance(a, ast.Starred) for a in expr.args):
+            return _path_join([text_of(self.eval(a, frame)) for a in expr.args])
         return Unknown(ref.qualname)
 
     def _node_method(self, name: str, expr: ast.Call, frame: Frame) -> object:
@@ -362,6 +365,20 @@ class Evaluator(Instances, QoSProfiles, Walker):
             elif not isinstance(statement, ast.Expr | ast.Pass):
                 break
         return Unknown(f"{info.qualname}()")
+
+
+def _path_join(parts: list[Value]) -> Value:
+    """``os.path.join(a, b, ...)`` on Linux: a part that starts with ``/`` starts over,
+    the others are joined with one ``/`` (a name built so: ``os.path.join(ns, 'cmd')``)."""
+    joined = parts[0]
+    for part in parts[1:]:
+        if part.text.startswith("/"):
+            joined = part
+        elif not joined.text or joined.text.endswith("/"):
+            joined = joined + part
+        else:
+            joined = joined + "/" + part
+    return joined
 
 
 def _entry_of(param: ParamValue, key: object, default: object) -> object:
