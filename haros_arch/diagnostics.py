@@ -366,6 +366,17 @@ CATALOGUE: dict[str, Entry] = {
         "that calls the API): calls there may be missing. The node model is "
         "'partial' (completeness, with the first reasons); checks that claim something "
         "is absent do not trust it."),
+    "PY_CLASS_UNSEEN": Entry(
+        "info", "{cls} of ROS package {package} is built here and its code is not read",
+        "A Python node builds an object of a class of a ROS package its package depends "
+        "on and the workspace does not hold (an installed package): such a class may be a "
+        "node of its own or communicate through the node it is given (nav2_simple_"
+        "commander's BasicNavigator is a node with a dozen action clients; smach_ros' "
+        "IntrospectionServer publishes). Its calls are not read, so the node is "
+        "'partial' and checks that claim something is absent do not decide on it. "
+        "Messages, services and actions, the classes the API tables model (rospy, rclpy, "
+        "actionlib, tf, tf2_ros, message_filters) and packages known to make no ROS call "
+        "(tf_transformations, cv_bridge, image_geometry, ...) do not count."),
     "PY_NODE_PARTIAL": Entry(
         "warning", "node {node}: its calls may be incomplete, {count} of its Python "
         "sources could not be read or analysed in full (first: {first})",

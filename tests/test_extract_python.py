@@ -470,3 +470,62 @@ def test_rclpy_names_joined_with_os_path_join(tmp_path) -> None:
         "node.create_publisher(String, os.path.join(node.get_namespace(), 'c'), 1)\n")
     found = extract_python([str(source)], scan([str(tmp_path)]))
     assert [c.name for c in found.calls] == ["robot/cmd", "/a/b", "/abs/y", "c"]
+
+
+def test_python_class_of_an_unread_ros_package_makes_the_node_partial(write_tree) -> None:
+    """nav2_simple_commander's ``BasicNavigator()`` (a node with a dozen action clients),
+    built by a script that starts rclpy, is code we do not read: the node was complete
+    with no call. ``PY_CLASS_UNSEEN`` makes it partial. Not for a package known to make
+    no ROS call (tf_transformations), a message, a class the API tables model, nor in a
+    script that starts no ROS program (a generator of launch files)."""
+    import os
+
+    from conftest import package_xml
+
+    from haros_arch.pipeline import Options, analyse
+    from haros_arch.project import load
+
+    manifest = package_xml("nav", build_type="ament_python").replace(
+        "</package>", "<exec_depend>nav2_simple_commander</exec_depend>"
+                      "<exec_depend>tf_transformations</exec_depend>"
+                      "<exec_depend>clearpath_config</exec_depend></package>")
+    goto = ("import rclpy\n"
+            "from geometry_msgs.msg import PoseStamped\n"
+            "from nav2_simple_commander.robot_navigator import BasicNavigator\n"
+            "from tf_transformations import Quaternion\n"
+            "def main():\n"
+            "    rclpy.init()\n"
+            "    nav = BasicNavigator()\n"
+            "    goal = PoseStamped()\n"
+            "    q = Quaternion()\n"
+            "    nav.goToPose(goal)\n")
+    generate = ("from clearpath_config.clearpath_config import ClearpathConfig\n"
+                "def main():\n"
+                "    ClearpathConfig('robot.yaml')\n")
+    launch = ("from launch import LaunchDescription\n"
+              "from launch_ros.actions import Node\n"
+              "def generate_launch_description():\n"
+              "    return LaunchDescription([Node(package='nav', executable='goto'),\n"
+              "                              Node(package='nav', executable='generate')])\n")
+    root = write_tree({
+        "src/nav/package.xml": manifest,
+        "src/nav/setup.py": "from setuptools import setup\n"
+                            "setup(name='nav', packages=['nav'], entry_points="
+                            "{'console_scripts': ['goto = nav.goto:main', "
+                            "'generate = nav.generate:main']})\n",
+        "src/nav/resource/nav": "",
+        "src/nav/nav/__init__.py": "",
+        "src/nav/nav/goto.py": goto,
+        "src/nav/nav/generate.py": generate,
+        "src/nav/launch/nav.launch.py": launch,
+        "project.yaml": "project: p\nconfigurations:\n  c: [nav/launch/nav.launch.py]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {"PATH": os.environ.get("PATH", "")},
+                    Options(cache_dir=None))
+    nodes = {n.executable: n for p in model.packages for n in p.nodes}
+    assert nodes["goto"].completeness == "partial"
+    assert "BasicNavigator of ROS package nav2_simple_commander" in (
+        nodes["goto"].completeness_reasons[0])
+    assert nodes["generate"].completeness == "complete"
+    said = [d for d in model.diagnostics if d.code == "PY_CLASS_UNSEEN"]
+    assert [(d.location.line, d.severity) for d in said] == [(7, "info")]

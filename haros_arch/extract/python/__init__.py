@@ -52,6 +52,7 @@ def extract_python(sources: list[str], workspace: Workspace, *,
         if module is not None and module not in modules:
             modules.append(module)
     walker = Walker(loader)
+    walker.unseen_packages = _unseen_packages(workspace, package)
     walker.run(modules)
     result.rosname, result.namespace = walker.rosname, walker.namespace
     result.anonymous = walker.anonymous
@@ -89,6 +90,32 @@ def extract_python(sources: list[str], workspace: Workspace, *,
                 "PY_DYNAMIC_NAME", call.location, kind=call.kind, name=call.name))
     result.diagnostics[:0] = loader.diagnostics + walker.diagnostics
     return result
+
+
+# ROS packages whose Python code makes no ROS call of its own (math, conversions, file
+# formats, tools) or whose classes the API tables model (rospy, rclpy, actionlib, tf,
+# tf2_ros, message_filters): building one of their classes hides nothing
+NOT_CLIENTS = frozenset({
+    "rospy", "rclpy", "actionlib", "tf", "tf2_ros", "message_filters", "tf_transformations",
+    "tf2_geometry_msgs", "tf2_sensor_msgs", "tf2_kdl", "tf2_py", "tf_conversions",
+    "cv_bridge", "image_geometry", "sensor_msgs_py", "laser_geometry", "rospkg", "roslib",
+    "rosgraph", "rosbag", "rosbag2_py", "ament_index_python", "launch", "launch_ros",
+    "genpy", "rosidl_runtime_py", "rosidl_parser", "python_qt_binding", "qt_gui",
+    "qt_gui_py_common", "urdf_parser_py", "urdfdom_py", "xacro", "kdl_parser_py",
+    "pykdl_utils", "angles", "smach", "rospy_message_converter", "ros2cli", "ros2topic",
+    "rosunit", "rostest", "launch_testing", "launch_testing_ros", "ament_copyright",
+    "ament_flake8", "ament_pep257", "pytest", "catkin_pkg",
+})
+
+
+def _unseen_packages(workspace: Workspace, package: str | None) -> frozenset[str]:
+    """The packages the node's package depends on that the workspace does not hold and
+    that may make ROS calls (``NOT_CLIENTS`` do not)."""
+    found = workspace.packages.get(package) if package is not None else None
+    if found is None:
+        return frozenset()
+    return frozenset(d.name for d in found.dependencies
+                     if d.name not in workspace.packages and d.name not in NOT_CLIENTS)
 
 
 def _package_root(sources: list[str], workspace: Workspace, package: str | None) -> str | None:

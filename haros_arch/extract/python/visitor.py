@@ -99,6 +99,11 @@ class Walker:
         # the names each Node subclass was given (for methods walked without a caller)
         self.rclpy_names: list[str] = []
         self._class_names: dict[int, list[str]] = {}
+        # the ROS packages the node's package depends on whose code is not read, and
+        # the classes of them said built (``_unseen_class``)
+        self.unseen_packages: frozenset[str] = frozenset()
+        self._classes_said: dict[str, Location] = {}
+        self._ros_init = False  # rclpy.init() is called
         # the classes the walk constructs, and those they derive from (ids)
         self._constructed: set[int] = set()
         self.steps = 0
@@ -145,6 +150,7 @@ class Walker:
                 continue
             done.add(id(info.node))
             entries.append((info, self._collect(lambda i=info: self._entry(i))))
+        self._unseen_said()
         unbuilt = self._unbuilt(modules)
         for info, calls in entries:
             if id(info.node) not in self._inlined and (info.cls is None
@@ -522,6 +528,8 @@ class Walker:
                 if spec.owner is not None:
                     self._made_on(self.calls[start:], evaluate(ev, argument(
                         call, spec.owner), frame))
+            else:
+                self._unseen_class(target, call, frame)
         elif isinstance(target, NodeMethod) and target.name in rclpy.NODE_METHODS:
             start = len(self.calls)
             self._record(rclpy.NODE_METHODS[target.name], call, frame, conds, 2)
@@ -719,6 +727,34 @@ class Walker:
             return expr.attr
         return None
 
+    def _unseen_class(self, target: Ref, call: ast.Call, frame: Frame) -> None:
+        """Say where the node builds an object of a class of a ROS package its own
+        package depends on whose code is not read (an installed package:
+        nav2_simple_commander's ``BasicNavigator()``, a node with a dozen action
+        clients; ``smach_ros.IntrospectionServer``): it may communicate under names we
+        cannot see (``PY_CLASS_UNSEEN``), so the node is partial. Not a message,
+        service or action, nor a class of a module the API tables model or of a
+        package known to make no ROS call (``NOT_CLIENTS``)."""
+        if target.key == ("rclpy", "init"):
+            self._ros_init = True
+        parts = target.qualname.split(".")
+        if len(parts) < 2 or parts[0] not in self.unseen_packages or not parts[-1][:1].isupper() \
+                or parts[0] in _MODELLED or target.qualname in self._classes_said \
+                or any(part in ("msg", "srv", "action") for part in parts[1:-1]):
+            return
+        self._classes_said[target.qualname] = self._where(frame, call)
+
+    def _unseen_said(self) -> None:
+        """``PY_CLASS_UNSEEN`` where the executable makes a ROS node of its own or starts
+        rclpy (``rclpy.init()``, then ``BasicNavigator()``, a node): a script that does
+        neither (a generator of launch files, an installer) runs no such class as part
+        of a ROS program."""
+        if self.rosname is None and not self.names and not self._ros_init:
+            return
+        for cls, where in self._classes_said.items():
+            self.diagnostics.append(diag.make("PY_CLASS_UNSEEN", where, cls=cls,
+                                              package=cls.split(".", 1)[0]))
+
     def _add(self, call: PrimitiveCall) -> None:
         self.calls.append(call)
 
@@ -816,3 +852,8 @@ def _alternative(value: object) -> bool:
     """A value a call's argument can take per path: a message type or other imported
     name, a string, a number."""
     return isinstance(value, Ref | Value | int | float)
+
+
+# the packages whose classes the API tables model (by their first module name)
+_MODELLED = frozenset(key[0] for table in (rospy.ROWS, rclpy.ROWS, rospy.NODE_NAMES,
+                                           rclpy.NODE_NAMES) for key in table)
