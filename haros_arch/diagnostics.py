@@ -341,7 +341,10 @@ CATALOGUE: dict[str, Entry] = {
         "A call passes the node (or its handle or an interface of it) to a function or "
         "class whose declaration is not in the workspace (a vendor library's helper, such "
         "as a parameter getter): the ROS calls it makes on the node are not read. The node "
-        "is 'partial', so checks that claim something is absent do not decide on it."),
+        "is 'partial', so checks that claim something is absent do not decide on it. Not "
+        "said when the call is also given a pointer to a member function of the node's "
+        "class (a callback binding, ecl::Slot(&Node::cb, *this): the member's calls are "
+        "read where it is defined)."),
     "CPP_NAMES_DECLARED": Entry(
         "info", "{count} name(s) unknown to the parse declared permissively ({names}); "
         "clang errors in this unit: {before} before, {after} after",

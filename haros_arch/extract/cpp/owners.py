@@ -11,7 +11,7 @@ from __future__ import annotations
 import re
 from collections.abc import Callable
 
-from clang.cindex import Cursor, CursorKind, conf
+from clang.cindex import Cursor, CursorKind, TypeKind, conf
 
 from . import api
 from .call_types import factory_made, template_argument
@@ -147,6 +147,36 @@ def node_names(function: Cursor) -> frozenset[str]:
     ):
         found |= {"this", "shared_from_this"}
     return frozenset(found)
+
+
+def binds_own_member(call: Cursor, given: list[Cursor]) -> bool:
+    """Whether ``call`` is given, beside the node object, a pointer to a member function
+    of that object's class or of one of its bases (kobuki_ros' ``ecl::Slot<...>(
+    &KobukiRos::publishVersionInfo, *this)``, a signal's slot): a callback binding, which
+    calls that member on the object, whose calls are read where it is defined."""
+    classes: set[str] = set()
+    for arg in given:
+        kind = arg.type.get_canonical()
+        if kind.kind == TypeKind.POINTER:
+            kind = kind.get_pointee()
+        decl = kind.get_declaration()
+        for _ in range(MAX_DEPTH):  # the class and its bases, first base first
+            if decl is None or decl.kind not in _CLASSES:
+                break
+            classes.add(decl.get_usr())
+            bases = [c.referenced for c in decl.get_children()
+                     if c.kind == CursorKind.CXX_BASE_SPECIFIER and c.referenced is not None]
+            decl = bases[0].get_definition() or bases[0] if bases else None
+    if not classes:
+        return False
+    for arg in call.get_arguments():
+        kind = arg.type.get_canonical()
+        if kind.kind != TypeKind.MEMBERPOINTER:
+            continue
+        owner = kind.get_class_type().get_declaration()
+        if owner is not None and owner.get_usr() in classes:
+            return True
+    return False
 
 
 def _is_node(arg: Cursor) -> bool:

@@ -45,6 +45,7 @@ from .handles import (
 from .links import PARAMETER, Fact, argument_facts, constructed_by, parameter_mark
 from .members import MemberWrites, member_of
 from .owners import (
+    binds_own_member,
     constructed_class,
     constructors_here,
     handle_node,
@@ -680,6 +681,8 @@ class CallFinder:
         if key in self._unknown:
             return
         given = node_arguments(call)
+        if given and binds_own_member(call, given):
+            return  # a callback binding: the member's calls are read where it is defined
         if given:  # once per place (a conversion of the made object starts there too)
             self._unknown.add(key)
             name = call.spelling
