@@ -188,7 +188,10 @@ CATALOGUE: dict[str, Entry] = {
         "The launch file could not be parsed; nothing from it is used."),
     "LAUNCH_UNKNOWN_TAG": Entry(
         "warning", "unknown tag <{tag}> is ignored",
-        "roslaunch ignores tags it does not know, with a warning; so do we."),
+        "roslaunch ignores tags it does not know, with a warning; so do we. In a ROS 2 "
+        "launch file an action tag comes from a launch extension an installed package "
+        "exposes (ros_gz_bridge's <ros_gz_bridge>), else ros2 launch fails: it is kept "
+        "as an action not interpreted, which may start anything."),
     "LAUNCH_UNKNOWN_ATTRIBUTE": Entry(
         "warning", "unknown attribute {attribute}= on <{tag}> is ignored",
         "The attribute is not part of the launch format for this tag."),
