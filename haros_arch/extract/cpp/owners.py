@@ -45,6 +45,31 @@ def constructed_class(call: Cursor, owned: Callable[[str], bool]) -> str | None:
     return (qualified_name(made[0]) or None) if made is not None else None
 
 
+def constructed_bases(call: Cursor, owned: Callable[[str], bool]) -> list[tuple[str, str]]:
+    """(class, base) for each base of the workspace, transitively, of the class ``call``
+    constructs: constructing a class runs its bases' constructors, implicit ones too
+    (a base whose constructor names the node: ``class D : public B {}``)."""
+    made = _construction(call, owned)
+    out: list[tuple[str, str]] = []
+    stack = [(made[0], 0)] if made is not None else []
+    while stack:
+        cls, depth = stack.pop()
+        definition = cls.get_definition() or cls
+        for child in definition.get_children():
+            base = child.referenced if child.kind == CursorKind.CXX_BASE_SPECIFIER else None
+            if base is None:
+                continue
+            base = base.get_definition() or base
+            where = base.location.file
+            if base.kind not in _CLASSES or where is None or not owned(where.name):
+                continue
+            pair = (qualified_name(cls), qualified_name(base))
+            if all(pair) and pair not in out and depth < MAX_DEPTH:
+                out.append(pair)
+                stack.append((base, depth + 1))
+    return out
+
+
 def _construction(call: Cursor, owned: Callable[[str], bool]
                   ) -> tuple[Cursor, Cursor | None] | None:
     """The class of the workspace a call constructs and the constructor it calls (None

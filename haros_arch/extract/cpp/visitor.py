@@ -46,6 +46,7 @@ from .links import PARAMETER, Fact, argument_facts, constructed_by, parameter_ma
 from .members import MemberWrites, member_of
 from .owners import (
     binds_own_member,
+    constructed_bases,
     constructed_class,
     constructors_here,
     handle_node,
@@ -567,6 +568,9 @@ class CallFinder:
             self.made_under.append((name, tuple(c for c in conditions if c.kind == "source")))
             if (self._owner, name) not in self.constructions:
                 self.constructions.append((self._owner, name))
+            for pair in constructed_bases(call, self.owned):
+                if pair not in self.constructions:
+                    self.constructions.append(pair)
 
     def _unseen_class(self, node: Cursor) -> None:
         """ROS 1: say where ``node`` builds an object of a class of another ROS package
