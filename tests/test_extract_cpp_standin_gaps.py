@@ -251,3 +251,17 @@ def test_ros2_wait_sets_client_pruning_and_timer_calls(write_tree) -> None:
             if c.kind in ("subscribe", "publish", "client")] == [
         ("subscribe", "fixed_in"), ("subscribe", "in"), ("publish", "out"),
         ("client", "add"), ("publish", "?")]
+
+
+def test_ros2_stream_iterators(write_tree) -> None:
+    """plansys2 (jazzy-devel) reads its PDDL files whole with
+    ``std::string s((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>())``
+    in on_configure (DomainExpertNode.cpp:143, ProblemExpertNode.cpp:230) and in the
+    terminal (Terminal.cpp:246), and the executor assigns one so (``s.assign(first,
+    last)``, ExecutorNode.cpp:130) and names a file by ``path.stem().u8string()``
+    (ComputeBT.cpp:328): a clang error in a function that calls the ROS API made
+    domain_expert_node, problem_expert_node and plansys2_terminal partial."""
+    result = _extract(write_tree, _source("ros2_stream_iterators.cpp"), "ament_cmake")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("declare", "model_file"), ("publish", "domain")]
