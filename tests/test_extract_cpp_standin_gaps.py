@@ -265,3 +265,20 @@ def test_ros2_stream_iterators(write_tree) -> None:
     assert _errors(result) == []
     assert [(c.kind, c.name) for c in result.calls] == [
         ("declare", "model_file"), ("publish", "domain")]
+
+
+def test_ros2_a_container_derived_from_the_component_manager(write_tree) -> None:
+    """ros2_canopen's DeviceContainer (device_container.hpp:54-76) derives from
+    rclcpp_components' ComponentManager: ``weak_ptr<MultiThreadedExecutor>`` converted to
+    ``weak_ptr<rclcpp::Executor>`` and its ``loadNode_srv_`` / ``unloadNode_srv_`` members
+    were errors in the constructor that declares its parameters (6 nodes partial); and
+    the container's own services, which the manager's constructor serves, were missing."""
+    result = _extract(write_tree, _source("ros2_component_manager.cpp"), "ament_cmake")
+    assert _errors(result) == []
+    # private names, as written or as the extractor keeps them (``~x`` is ``~/x``)
+    assert sorted((c.kind, c.name.replace("~/", "~"), c.type) for c in result.calls) == [
+        ("declare", "bus_config", "str"),
+        ("server", "~_container/list_nodes", "composition_interfaces/srv/ListNodes"),
+        ("server", "~_container/load_node", "composition_interfaces/srv/LoadNode"),
+        ("server", "~_container/unload_node", "composition_interfaces/srv/UnloadNode"),
+        ("server", "~init_driver", "std_srvs/srv/Trigger")]

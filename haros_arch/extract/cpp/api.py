@@ -340,6 +340,15 @@ RCLCPP_LIBRARIES: dict[tuple[str, str], RosFunction] = {
     # (node_base, node_graph, node_services, name, qos, group)
     ("rclcpp", "create_client"): RosFunction(
         "client", type_from=("template",), on_handle=False, name_arg=3),
+    # rclcpp_components' container, built as the base of a class of the workspace
+    # (ros2_canopen's DeviceContainer): its constructor serves the container's services
+    # on the node (rclcpp_components' component_manager.cpp, a library the node links,
+    # whose code is not read with it)
+    ("rclcpp_components::ComponentManager", "ComponentManager"): RosFunction(
+        "server", fixed_name="~/_container/load_node",
+        fixed_type="composition_interfaces/srv/LoadNode", on_handle=False, siblings=(
+            ("server", "~/_container/unload_node", "composition_interfaces/srv/UnloadNode"),
+            ("server", "~/_container/list_nodes", "composition_interfaces/srv/ListNodes"))),
     ("rclcpp::AsyncParametersClient", "AsyncParametersClient"): _PARAMETER_CLIENT,
     ("rclcpp::SyncParametersClient", "SyncParametersClient"): _PARAMETER_CLIENT,
     ("rclcpp::AsyncParametersClient", "on_parameter_event"): _PARAMETER_EVENTS,

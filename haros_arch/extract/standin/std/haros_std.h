@@ -643,7 +643,13 @@ template<class T> bool operator!=(nullptr_t, const shared_ptr<T>& a);
 template<class T> class weak_ptr {
 public:
   constexpr weak_ptr() noexcept;
+  weak_ptr(const weak_ptr& other) noexcept;
+  template<class Y> weak_ptr(const weak_ptr<Y>& other) noexcept;
   template<class Y> weak_ptr(const shared_ptr<Y>& other) noexcept;
+  weak_ptr& operator=(const weak_ptr& other) noexcept;
+  template<class Y> weak_ptr& operator=(const weak_ptr<Y>& other) noexcept;
+  template<class Y> weak_ptr& operator=(const shared_ptr<Y>& other) noexcept;
+  long use_count() const noexcept;
   shared_ptr<T> lock() const noexcept;
   bool expired() const noexcept;
   void reset() noexcept;
