@@ -282,3 +282,15 @@ def test_ros2_a_container_derived_from_the_component_manager(write_tree) -> None
         ("server", "~_container/load_node", "composition_interfaces/srv/LoadNode"),
         ("server", "~_container/unload_node", "composition_interfaces/srv/UnloadNode"),
         ("server", "~init_driver", "std_srvs/srv/Trigger")]
+
+
+def test_ros2_gflags_flags_name_calls_not_known_statically(write_tree) -> None:
+    """ros_gz_sim's create.cpp defines its options with gflags (``DEFINE_string(param,
+    "", ...)``, create.cpp:41-53) and reads ``FLAGS_param`` / ``FLAGS_topic`` for a
+    parameter and a topic (:185-196): gflags' header missing, every ``FLAGS_x`` was an
+    error in main and the node partial. A flag's value comes from the command line:
+    the names are not known (``?``), not the flag's default."""
+    result = _extract(write_tree, _source("ros2_gflags.cpp"), "ament_cmake")
+    assert _errors(result) == []
+    assert sorted((c.kind, c.name) for c in result.calls) == [
+        ("declare", "?"), ("subscribe", "?")]
