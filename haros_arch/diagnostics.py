@@ -188,7 +188,10 @@ CATALOGUE: dict[str, Entry] = {
         "The launch file could not be parsed; nothing from it is used."),
     "LAUNCH_UNKNOWN_TAG": Entry(
         "warning", "unknown tag <{tag}> is ignored",
-        "roslaunch ignores tags it does not know, with a warning; so do we."),
+        "roslaunch ignores tags it does not know, with a warning; so do we. In a ROS 2 "
+        "launch file an action tag comes from a launch extension an installed package "
+        "exposes (ros_gz_bridge's <ros_gz_bridge>), else ros2 launch fails: it is kept "
+        "as an action not interpreted, which may start anything."),
     "LAUNCH_UNKNOWN_ATTRIBUTE": Entry(
         "warning", "unknown attribute {attribute}= on <{tag}> is ignored",
         "The attribute is not part of the launch format for this tag."),
@@ -341,7 +344,10 @@ CATALOGUE: dict[str, Entry] = {
         "A call passes the node (or its handle or an interface of it) to a function or "
         "class whose declaration is not in the workspace (a vendor library's helper, such "
         "as a parameter getter): the ROS calls it makes on the node are not read. The node "
-        "is 'partial', so checks that claim something is absent do not decide on it."),
+        "is 'partial', so checks that claim something is absent do not decide on it. Not "
+        "said when the call is also given a pointer to a member function of the node's "
+        "class (a callback binding, ecl::Slot(&Node::cb, *this): the member's calls are "
+        "read where it is defined)."),
     "CPP_NAMES_DECLARED": Entry(
         "info", "{count} name(s) unknown to the parse declared permissively ({names}); "
         "clang errors in this unit: {before} before, {after} after",

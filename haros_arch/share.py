@@ -58,9 +58,11 @@ def share_map(package: Package, workspace: Workspace) -> dict[str, str]:
     if cached is not None:
         return cached
     found: dict[str, str] = {}
+    generated: dict[str, tuple[str, int]] = {}
+    workspace.generated_shares[package.name] = generated
     setup_py = os.path.join(package.root, "setup.py")
     if os.path.isfile(os.path.join(package.root, "CMakeLists.txt")):
-        _from_cmake(package, workspace, found)
+        _from_cmake(package, workspace, found, generated)
         # ament_package() / catkin_package() install the manifest
         found.setdefault("package.xml", os.path.join(package.root, "package.xml"))
     elif os.path.isfile(setup_py):
@@ -107,6 +109,25 @@ def lib_executables(package: Package, workspace: Workspace) -> frozenset[str]:
     return found
 
 
+def generated_at(workspace: Workspace, path: str) -> tuple[str, int] | None:
+    """The CMake file and line of the install rule that puts ``path`` (as
+    ``share_source`` takes it) into its package's share folder from the build folder: a
+    file the build makes (``configure_file``, ``file(GENERATE)``, a custom command),
+    which has no source to read; None when no rule installs it so."""
+    path = _from_prefix(workspace, os.path.normpath(os.path.abspath(path)))
+    package = workspace.package_of(path)
+    if package is None or path == package.root:
+        return None
+    share_map(package, workspace)
+    generated = workspace.generated_shares.get(package.name, {})
+    relative = os.path.relpath(path, package.root).replace(os.sep, "/")
+    found = generated.get(relative)
+    if found is not None:
+        return found
+    return next((where for folder, where in generated.items()
+                 if folder.endswith("/") and relative.startswith(folder)), None)
+
+
 def share_source(workspace: Workspace, path: str) -> str:
     """The source file that ``path``, a path in a workspace package's share folder as
     ``Workspace.find`` gives it (the package's source folder) or as its install prefix
@@ -134,9 +155,12 @@ def _from_prefix(workspace: Workspace, path: str) -> str:
 
 
 # -- CMake -----------------------------------------------------------------------------
-def _from_cmake(package: Package, workspace: Workspace, found: dict[str, str]) -> None:
+def _from_cmake(package: Package, workspace: Workspace, found: dict[str, str],
+                generated: dict[str, tuple[str, int]]) -> None:
     interpreter, _ = interpret(package, workspace)  # the build stage reports problems
     for install in interpreter.installs:
+        for relative in generated_files(install, package):
+            generated.setdefault(relative, (install.file, install.line))
         for relative, source in installed_files(install, package):
             if len(found) >= MAX_FILES:
                 return
@@ -165,6 +189,25 @@ def installed_files(install: Install, package: Package) -> Iterator[tuple[str, s
             rename = options.rename if len(items) == 1 else None
             yield posixpath.normpath(posixpath.join(sub, rename or os.path.basename(source))), \
                 source
+
+
+def generated_files(install: Install, package: Package) -> Iterator[str]:
+    """The share-relative paths one install rule fills from the build folder (a folder
+    as ``sub/``): what the build makes there is installed, but there is no file to read."""
+    items, options = _split(install.args)
+    sub = _share_sub(options.destination, package.name)
+    if sub is None:
+        return
+    for item in items:
+        if not item.startswith(BINARY_ROOT + "/"):
+            continue
+        name = posixpath.basename(item.rstrip("/"))
+        if install.form == "DIRECTORY":
+            folder = sub if item.endswith("/") else posixpath.join(sub, name)
+            yield folder.rstrip("/") + "/" if folder else ""
+        else:
+            rename = options.rename if len(items) == 1 else None
+            yield posixpath.normpath(posixpath.join(sub, rename or name))
 
 
 @dataclass

@@ -35,6 +35,10 @@ class Workspace:
     _path_index: dict[str, str] | None = field(default=None, repr=False)
     # package name -> {share-relative path: source file}, filled by haros_arch.share
     share_maps: dict[str, dict[str, str]] = field(default_factory=dict, repr=False)
+    # package name -> {share-relative path (a folder ends in "/"): (CMake file, line) of
+    # the rule installing it from the build folder}, filled by haros_arch.share
+    generated_shares: dict[str, dict[str, tuple[str, int]]] = field(
+        default_factory=dict, repr=False)
     # package name -> executables colcon installs in lib/<pkg>, filled by haros_arch.share
     lib_executables: dict[str, frozenset[str]] = field(default_factory=dict, repr=False)
     # package folder -> package, for package_of; rebuilt when the packages change

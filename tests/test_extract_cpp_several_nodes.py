@@ -204,3 +204,87 @@ int main(int argc, char ** argv)
     assert found.rosname == "manager"
     assert found.rosnames == []
 
+
+
+LIBRARY = """
+#include <memory>
+#include "rclcpp/rclcpp.hpp"
+#include "std_msgs/msg/string.hpp"
+
+namespace plan {
+class Client {
+public:
+  Client() { node_ = rclcpp::Node::make_shared("domain_client"); }
+  rclcpp::Node::SharedPtr node_;
+};
+class Executor : public rclcpp::Node {
+public:
+  Executor() : Node("executor") { client_ = std::make_shared<Client>(); }
+  std::shared_ptr<Client> client_;
+};
+class ExecutorClient {
+public:
+  ExecutorClient() { node_ = rclcpp::Node::make_shared("executor_client"); }
+  rclcpp::Node::SharedPtr node_;
+};
+class Base : public rclcpp::Node {
+public:
+  Base() : Node("base") {
+    pub_ = create_publisher<std_msgs::msg::String>("state", 10);
+  }
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+};
+class Derived : public Base {};
+class Planner : public rclcpp::Node {
+public:
+  Planner() : Node("planner") { client_ = std::make_shared<Client>(); }
+  std::shared_ptr<Client> client_;
+  std::shared_ptr<Derived> derived_ = std::make_shared<Derived>();
+};
+}  // namespace plan
+"""
+
+
+def test_only_the_nodes_the_executable_makes_name_its_process(write_tree) -> None:
+    """plansys2's compute_bt links the executor library, whose ExecutorNode and
+    ExecutorClient name nodes "executor" and "executor_client", and builds neither: the
+    process's nodes were every name of every file (28 false duplicate-node-names errors,
+    domain_expert_node first named after a client it never builds). Now the names of
+    the classes main() constructs, transitively, and their bases (an implicit base
+    constructor names the node too)."""
+    root = write_tree({
+        "pkg/package.xml": '<?xml version="1.0"?>\n<package format="2"><name>pkg</name>'
+                           "<version>0.1.0</version><description>d</description>"
+                           '<maintainer email="a@b.c">m</maintainer><license>MIT</license>'
+                           "<depend>rclcpp</depend><export><build_type>ament_cmake"
+                           "</build_type></export></package>\n",
+        "pkg/include/pkg/lib.hpp": LIBRARY,
+        "pkg/src/lib.cpp": '#include "pkg/lib.hpp"\n',
+        "pkg/src/executor_main.cpp": '#include "pkg/lib.hpp"\nint main(int argc, char ** argv)'
+                                     " {\n  rclcpp::init(argc, argv);\n"
+                                     "  auto node = std::make_shared<plan::Executor>();\n"
+                                     "  rclcpp::spin(node);\n}\n",
+        "pkg/src/base_main.cpp": '#include "pkg/lib.hpp"\nint main(int argc, char ** argv)'
+                                 " {\n  rclcpp::init(argc, argv);\n"
+                                 "  rclcpp::spin(std::make_shared<plan::Base>());\n}\n",
+        "pkg/src/planner_main.cpp": '#include "pkg/lib.hpp"\nint main(int argc, char ** argv)'
+                                    " {\n  rclcpp::init(argc, argv);\n"
+                                    "  auto node = std::make_shared<plan::Planner>();\n"
+                                    "  rclcpp::spin(node);\n}\n",
+    })
+    workspace = scan([str(root)])
+    executor = extract_cpp([str(root / "pkg/src/lib.cpp"),
+                            str(root / "pkg/src/executor_main.cpp")], workspace, cache_dir=None)
+    assert executor.rosnames == ["domain_client", "executor"]
+    planner = extract_cpp([str(root / "pkg/src/planner_main.cpp"),
+                           str(root / "pkg/src/lib.cpp")], workspace, cache_dir=None)
+    assert sorted(planner.rosnames) == ["base", "domain_client", "planner"]
+    # one node: named by the class main builds, not by the first name of the library
+    # (plansys2's domain_expert_node was "domain_expert_client")
+    single = extract_cpp([str(root / "pkg/src/base_main.cpp"), str(root / "pkg/src/lib.cpp")],
+                         workspace, cache_dir=None)
+    assert (single.rosname, single.rosnames) == ("base", [])
+    # without a main (a component library), every name stays
+    library = extract_cpp([str(root / "pkg/src/lib.cpp")], workspace, cache_dir=None)
+    assert sorted(library.rosnames) == ["base", "domain_client", "executor",
+                                        "executor_client", "planner"]

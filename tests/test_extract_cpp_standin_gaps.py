@@ -291,3 +291,46 @@ def test_ros1_declaration_macro_scoped_ptr_and_shared_from_this(write_tree) -> N
     assert _errors(result) == []
     assert [(c.kind, c.name) for c in result.calls] == [("publish", "~info")]
     assert not [d for d in result.diagnostics if d.code == "CPP_NODE_TO_UNKNOWN"]
+
+
+def test_ros2_stream_iterators(write_tree) -> None:
+    """plansys2 (jazzy-devel) reads its PDDL files whole with
+    ``std::string s((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>())``
+    in on_configure (DomainExpertNode.cpp:143, ProblemExpertNode.cpp:230) and in the
+    terminal (Terminal.cpp:246), and the executor assigns one so (``s.assign(first,
+    last)``, ExecutorNode.cpp:130) and names a file by ``path.stem().u8string()``
+    (ComputeBT.cpp:328): a clang error in a function that calls the ROS API made
+    domain_expert_node, problem_expert_node and plansys2_terminal partial."""
+    result = _extract(write_tree, _source("ros2_stream_iterators.cpp"), "ament_cmake")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("declare", "model_file"), ("publish", "domain")]
+
+
+def test_ros2_a_container_derived_from_the_component_manager(write_tree) -> None:
+    """ros2_canopen's DeviceContainer (device_container.hpp:54-76) derives from
+    rclcpp_components' ComponentManager: ``weak_ptr<MultiThreadedExecutor>`` converted to
+    ``weak_ptr<rclcpp::Executor>`` and its ``loadNode_srv_`` / ``unloadNode_srv_`` members
+    were errors in the constructor that declares its parameters (6 nodes partial); and
+    the container's own services, which the manager's constructor serves, were missing."""
+    result = _extract(write_tree, _source("ros2_component_manager.cpp"), "ament_cmake")
+    assert _errors(result) == []
+    # private names, as written or as the extractor keeps them (``~x`` is ``~/x``)
+    assert sorted((c.kind, c.name.replace("~/", "~"), c.type) for c in result.calls) == [
+        ("declare", "bus_config", "str"),
+        ("server", "~_container/list_nodes", "composition_interfaces/srv/ListNodes"),
+        ("server", "~_container/load_node", "composition_interfaces/srv/LoadNode"),
+        ("server", "~_container/unload_node", "composition_interfaces/srv/UnloadNode"),
+        ("server", "~init_driver", "std_srvs/srv/Trigger")]
+
+
+def test_ros2_gflags_flags_name_calls_not_known_statically(write_tree) -> None:
+    """ros_gz_sim's create.cpp defines its options with gflags (``DEFINE_string(param,
+    "", ...)``, create.cpp:41-53) and reads ``FLAGS_param`` / ``FLAGS_topic`` for a
+    parameter and a topic (:185-196): gflags' header missing, every ``FLAGS_x`` was an
+    error in main and the node partial. A flag's value comes from the command line:
+    the names are not known (``?``), not the flag's default."""
+    result = _extract(write_tree, _source("ros2_gflags.cpp"), "ament_cmake")
+    assert _errors(result) == []
+    assert sorted((c.kind, c.name) for c in result.calls) == [
+        ("declare", "?"), ("subscribe", "?")]

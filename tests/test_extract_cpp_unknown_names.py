@@ -761,3 +761,59 @@ def test_a_function_declared_with_an_api_name_is_no_call_site() -> None:
             "void f(int a) { node->set_parameter(rclcpp::Parameter(\"x\", a)); }\n"
             "inline auto declare_parameter(int a) { return a; }\n")
     assert [s.line for s in recall.call_sites(text)] == [3, 4, 5, 6, 7]
+
+
+def test_a_vendor_name_in_parentheses_in_a_case_label_is_a_constant(write_tree) -> None:
+    """kobuki_ros' ``case (ecl::OpenError):`` (ecl's headers missing): a CamelCase name
+    followed by ``)`` was declared a class, so the label was a cast with no operand
+    (``expected expression``) in the constructor that creates the node's publishers,
+    and the node partial (CPP_ERROR_NEAR_CALL). In a case label's parentheses it is a
+    value, an enumerator of its own."""
+    result = _server(
+        write_tree,
+        "#include <rclcpp/rclcpp.hpp>\n#include <std_msgs/msg/string.hpp>\n"
+        "#include <ecl/exceptions.hpp>\n"
+        "class Server : public rclcpp::Node {\n public:\n"
+        "  Server() : Node(\"server\") {\n"
+        "    pub_ = create_publisher<std_msgs::msg::String>(\"state\", 10);\n"
+        "    try { open(); } catch (const ecl::StandardException &e) {\n"
+        "      switch (e.flag()) {\n"
+        "        case (ecl::OpenError): RCLCPP_ERROR(get_logger(), \"open\"); break;\n"
+        "        case (ecl::ConfigurationError): break;\n"
+        "        default: break;\n      }\n    }\n  }\n"
+        "  void open();\n"
+        "  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;\n};\n")
+    assert [(c.kind, c.name, c.location.line) for c in result.calls] == [
+        ("publish", "state", 7)]
+    assert "CPP_ERROR_NEAR_CALL" not in codes(result)
+    assert "CPP_PARSE_ERROR" not in codes(result)
+
+
+def test_the_node_bound_with_its_own_member_function_is_a_callback_binding(
+        write_tree) -> None:
+    """kobuki_ros builds 17 ``ecl::Slot<...>(&KobukiRos::publishX, *this)`` members (ecl's
+    headers missing): the node given to an unknown class with a pointer to one of its
+    own member functions (or a base's) is a callback binding, no CPP_NODE_TO_UNKNOWN
+    (the node was partial for it); the member's calls are read where it is defined.
+    Given the node alone, or with another class's member, the unknown class still
+    makes the node partial."""
+    source = (
+        "#include <rclcpp/rclcpp.hpp>\n#include <std_msgs/msg/string.hpp>\n"
+        "#include <ecl/sigslots.hpp>\n"
+        "class Base : public rclcpp::Node {\n public:\n"
+        "  Base() : Node(\"server\") {}\n  void ping(const std::string &s);\n};\n"
+        "class Other { public: void f(); };\n"
+        "class Server : public Base {\n public:\n"
+        "  Server() : slot_(&Server::publish, *this), base_slot_(&Base::ping, *this),\n"
+        "      OTHER {\n"
+        "    pub_ = create_publisher<std_msgs::msg::String>(\"state\", 10);\n  }\n"
+        "  void publish(const std::string &s);\n"
+        "  ecl::Slot<const std::string &> slot_, base_slot_, other_;\n"
+        "  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;\n};\n")
+    bound = _server(write_tree, source.replace("OTHER", "other_(&Server::publish, this)"))
+    assert [(c.kind, c.name) for c in bound.calls] == [("publish", "state")]
+    assert "CPP_NODE_TO_UNKNOWN" not in codes(bound)
+    for other in ("other_(*this)", "other_(&Other::f, *this)"):
+        given = _server(write_tree, source.replace("OTHER", other))
+        assert [(d.code, d.location.line) for d in given.diagnostics
+                if d.code == "CPP_NODE_TO_UNKNOWN"] == [("CPP_NODE_TO_UNKNOWN", 13)]

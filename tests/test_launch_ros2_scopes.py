@@ -336,3 +336,54 @@ def generate_launch_description():
     assert [(d.code, d.location.line) for d in model.diagnostics] == [
         ("LAUNCH_UNKNOWN_VALUE", 11), ("LAUNCH_UNKNOWN_VALUE", 12)]
     assert all("outside the workspace" in d.message for d in model.diagnostics)
+
+
+def test_an_included_launch_file_the_build_makes_is_unread_not_missing(write_tree) -> None:
+    """A launch file a package installs from its build folder (ros_gz_sim's
+    gz_sim.launch.py: ``configure_file`` of gz_sim.launch.py.in, then
+    ``install(FILES ${CMAKE_CURRENT_BINARY_DIR}/launch/gz_sim.launch.py ...)``) is there
+    after colcon build but has no source file: an unread include (what it starts is
+    unknown), not a missing file (an error, launch-missing-reference). A file no rule
+    installs stays missing."""
+    from conftest import package_xml
+
+    root = write_tree({
+        "src/q/package.xml": package_xml("q", "ament_cmake"),
+        "src/q/CMakeLists.txt": """cmake_minimum_required(VERSION 3.5)
+project(q)
+configure_file(launch/sim.launch.py.in launch/sim.launch.py @ONLY)
+install(FILES "${CMAKE_CURRENT_BINARY_DIR}/launch/sim.launch.py"
+  DESTINATION share/${PROJECT_NAME}/launch)
+install(DIRECTORY "${CMAKE_CURRENT_BINARY_DIR}/made" DESTINATION share/${PROJECT_NAME})
+""",
+        "src/q/launch/sim.launch.py.in": "# @X@\n",
+        "src/p/package.xml": package_xml("p", "ament_cmake"),
+        "src/p/launch/a.launch.py": """import os
+from ament_index_python.packages import get_package_share_directory
+from launch import LaunchDescription
+from launch.actions import IncludeLaunchDescription
+from launch.launch_description_sources import PythonLaunchDescriptionSource
+
+
+def generate_launch_description():
+    q = get_package_share_directory('q')
+    return LaunchDescription([
+        IncludeLaunchDescription(PythonLaunchDescriptionSource(
+            os.path.join(q, 'launch', 'sim.launch.py'))),
+        IncludeLaunchDescription(PythonLaunchDescriptionSource(
+            os.path.join(q, 'made', 'deep', 'x.launch.py'))),
+        IncludeLaunchDescription(PythonLaunchDescriptionSource(
+            os.path.join(q, 'launch', 'gone.launch.py'))),
+    ])
+"""})
+    workspace = scan([str(root / "src")], {})
+    model = load(str(root / "src/p/launch/a.launch.py"), workspace, {}, {})
+    assert [(d.code, d.location.line) for d in model.diagnostics] == [
+        ("LAUNCH_UNKNOWN_VALUE", 11), ("LAUNCH_UNKNOWN_VALUE", 13),
+        ("LAUNCH_FILE_MISSING", 15)]
+    assert "made by the build" in model.diagnostics[0].message
+    assert "CMakeLists.txt:4" in model.diagnostics[0].message
+    assert "CMakeLists.txt:6" in model.diagnostics[1].message
+    (top,) = model.tree
+    kinds = [(item.kind, item.name.rsplit("/", 1)[-1]) for item in top.children]
+    assert kinds[:2] == [("include", "sim.launch.py"), ("include", "x.launch.py")]

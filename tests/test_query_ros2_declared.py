@@ -157,3 +157,40 @@ def test_parameters_by_prefix_is_an_optional_read_of_every_parameter_under_it(wr
         ("parameter-set-not-read", ["parameter:/jsp/other"]),
         ("parameter-set-not-read-undecided", ["node:/jsp"])]
     assert "/jsp/dependent_joints.j1.parent" in found[1][2]
+
+
+QOS_NODE = """
+    import rclpy
+
+    def main():
+        rclpy.init()
+        node = rclpy.create_node('talker')
+        node.create_publisher(String, '/chatter', 10)
+    """
+
+QOS_LAUNCH = """
+    from launch import LaunchDescription
+    from launch_ros.actions import Node
+
+    def generate_launch_description():
+        return LaunchDescription([Node(package='talk', executable='talker', parameters=[{
+            'qos_overrides./chatter.publisher.reliability': 'best_effort',
+            'qos_overrides./a/b.subscription.depth': 5,
+            'qos_overrides./chatter.subscriber.reliability': 'reliable',
+            'gain': 1.0}])])
+    """
+
+
+def test_qos_overrides_of_a_topic_full_name_are_not_reported(write_tree):
+    """rclcpp's QoS override parameters are ``qos_overrides.<the topic's full name>.
+    publisher|subscription.<policy>`` (ros_gz's air_pressure.launch.py sets
+    ``qos_overrides./air_pressure.publisher.reliability`` for parameter_bridge): the
+    rule leaves them out, as its description says, also when the topic's "/" makes the
+    last part of the name ``air_pressure.publisher.reliability``; one that names no
+    entity rclcpp reads (``subscriber``, ros_gz's diff_drive.launch.py) stays."""
+    model = _analysed(write_tree, "talker", QOS_NODE, QOS_LAUNCH)
+    rule = next(r for r in load_catalogue() if r.id == "parameter-set-not-read")
+    found = sorted(e for f in run_rule(rule, model) for e in f.entities
+                   if e.startswith("parameter:"))
+    assert found == ["parameter:/talker/gain",
+                     "parameter:/talker/qos_overrides./chatter.subscriber.reliability"]

@@ -187,3 +187,41 @@ def test_a_ros2_unread_include_sets_no_parameter_of_a_node_before_it(
     else:
         assert "parameter-read-not-set" not in found
         assert "(not read)" in found["parameter-read-not-set-undecided"]
+
+
+@pytest.mark.parametrize(("tag", "undecided"), [
+    ("<ros_gz_bridge bridge_name='b' config_file='c.yaml'/>", True),
+    ("<ros_gz_bridge bridge_name='b' if='false'/>", False),
+    ("", False),
+], ids=["extension-tag", "extension-tag-off", "none"])
+def test_a_ros2_xml_tag_of_a_launch_extension_leaves_them_undecided(
+        write_tree: Any, tag: str, undecided: bool) -> None:
+    """ros_gz's XML launch files start the bridge and gz sim through tags that ros_gz's
+    Python packages expose as launch extensions (``<ros_gz_bridge>``, ``<gz_server>``):
+    ros2 launch runs them (or fails without the package); they were dropped with a
+    warning, so every absence beside them was decided."""
+    launch = f"<launch>\n  {tag}\n  <node pkg='conv' exec='scan' name='scan'/>\n</launch>\n"
+    root: Path = write_tree({
+        "src/conv/package.xml": package_xml("conv", "ament_python"),
+        "src/conv/setup.py": "from setuptools import setup\nsetup(name='conv', "
+                             "packages=['conv'], entry_points={'console_scripts': "
+                             "['scan = conv.scan:main']})\n",
+        "src/conv/conv/__init__.py": "",
+        "src/conv/conv/scan.py": ROS2_NODE,
+        "src/conv/launch/a.launch.xml": launch,
+        "project.yaml": "project: p\nconfigurations:\n  c: [conv/launch/a.launch.xml]\n",
+    })
+    project = load(str(root / "project.yaml"))
+    model = analyse(project, {"PATH": os.environ.get("PATH", "")}, Options(cache_dir=None))
+    found: dict[str, list[str]] = {}
+    for finding in run_catalogue(model, project):
+        found.setdefault(finding.rule, []).append(finding.message)
+    if undecided:
+        assert "subscriber-without-publisher" not in found
+        (said,) = found["subscriber-without-publisher-undecided"]
+        assert "action not interpreted (<ros_gz_bridge>)" in said
+    else:
+        assert len(found["subscriber-without-publisher"]) == 1
+    if tag:
+        assert [d.code for d in model.configurations[0].diagnostics
+                if d.code == "LAUNCH_UNKNOWN_TAG"] == ["LAUNCH_UNKNOWN_TAG"]

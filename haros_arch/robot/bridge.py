@@ -13,7 +13,10 @@ Facts from ros_gz's ``ros_gz_bridge/src/parameter_bridge.cpp``, ``bridge_config.
 
 A bridge instance with no source gets these calls: with no interface model, on a node
 made here (partial when its config file cannot be read); with one (the model knows the
-bridge's parameters, not the topics they name), beside the model's calls.
+bridge's parameters, not the topics they name), beside the model's calls. So does one
+whose source is in the workspace (ros_gz itself): its code makes the topics from argv and
+the config file, in factories generated at build time, so the source gives none; it is
+made partial when its config file cannot be read.
 """
 
 from __future__ import annotations
@@ -33,6 +36,7 @@ from ..model.location import Location
 from ..model.runtime import Configuration, NodeInstance
 from ..model.source import CallKind, Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK
+from ..plugins.attach import own_partial
 from ..share import share_source
 from ..workspace import Workspace
 
@@ -49,12 +53,15 @@ def bridges(config: Configuration, launch: LaunchModel,
             ) -> list[tuple[NodeInstance, list[PrimitiveCall]]]:
     """The calls of the ros_gz bridge instances whose interface is not otherwise known."""
     out = []
+    owned: set[int] = set()
     for decl, instance in started:
         key = (decl.package, decl.executable)
-        modelled = instance.node is not None and instance.node.model is not None
-        if (instance.node is not None and not modelled) or key not in (
-                *PARAMETER_BRIDGES, *IMAGE_BRIDGES):
+        if key not in (*PARAMETER_BRIDGES, *IMAGE_BRIDGES):
             continue
+        # known = from an interface model or from the workspace's own ros_gz sources:
+        # either way the code makes its topics from argv and the config file at run
+        # time (parameter_bridge's in factories generated at build time), not seen there
+        known = instance.node is not None
         # the calls go on a node of their own: a model's node is shared by its instances
         node = Node(decl.package, decl.executable, location=decl.location)
         positional, params = _arguments(decl.args)
@@ -70,8 +77,12 @@ def bridges(config: Configuration, launch: LaunchModel,
             path = _launch_param(launch, decl, "config_file") or params.get("config_file")
             if path:
                 node.calls.extend(_from_file(path, decl, node, workspace, config))
-        if not modelled:  # a modelled instance stays as its model says (partial)
+        if not known:
             instance.node = node
+        elif node.completeness == "partial" and instance.node is not None and (
+                instance.node.model is None):
+            for reason in node.completeness_reasons:  # a config file not read
+                own_partial(instance, reason, owned)
         out.append((instance, list(node.calls)))
     return out
 

@@ -307,13 +307,19 @@ def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
     for _, unit in units:
         for maker, made in unit.constructions:
             made_by.setdefault(made, []).append(maker)
+    reached = _reached(units)
+    for _, unit in units:
         for owner, written in unit.node_names:
             name = links.resolve_name(written, facts)
             owners.setdefault(owner, [])
             if name not in owners[owner]:
                 owners[owner].append(name)
-            if "?" not in name and name not in result.rosnames:
+            if "?" not in name and name not in result.rosnames and (
+                    reached is None or owner in reached):
                 result.rosnames.append(name)
+    if reached is not None and result.rosname is not None and result.rosnames and not any(
+            owner in reached for owner, names in owners.items() if result.rosname in names):
+        result.rosname = result.rosnames[0]  # named by a class the process never makes
     if len(result.rosnames) < 2:
         result.rosnames = []
     under = _made_under(units, owners, result.rosnames)
@@ -329,6 +335,33 @@ def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
         calls.append(dataclasses.replace(call, node_name=node,
                                          conditions=(*extra, *call.conditions)))
     result.calls = calls
+
+
+def _reached(units: list[tuple[str, CppResult]]) -> set[str] | None:
+    """The owners whose code the executable runs, when its files hold a ``main()``: the
+    free functions, and the classes they construct, transitively (a class's bases with
+    it). A class of a library the executable links that nothing here constructs makes
+    no node in this process (plansys2's compute_bt links ExecutorNode, which names the
+    node "executor", and never builds one). None without a ``main()`` (a component:
+    its container constructs it)."""
+    edges: dict[str, list[str]] = {}
+    starts: set[str] = set()
+    for _, unit in units:
+        for maker, made in unit.constructions:
+            edges.setdefault(maker, []).append(made)
+            if maker.endswith("()"):
+                starts.add(maker)
+        starts.update(owner for owner, _ in unit.node_names if owner.endswith("()"))
+    if not any(owner == "main()" or owner.endswith("::main()") for owner in starts):
+        return None
+    reached = set(starts)
+    stack = list(starts)
+    while stack:
+        for made in edges.get(stack.pop(), ()):
+            if made not in reached:
+                reached.add(made)
+                stack.append(made)
+    return reached
 
 
 def _made_under(units: list[tuple[str, CppResult]], owners: dict[str, list[str]],

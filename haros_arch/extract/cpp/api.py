@@ -105,10 +105,11 @@ class RosFunction:
     # the same function as ROS 2's library makes the call, where it differs (a class
     # both have, by one name: camera_info_manager's CameraInfoManager)
     ros2: RosFunction | None = None
-    # the row describes our stand-in of ``standin/fallback`` (a library installed, not
-    # in the workspace): a class of that name declared elsewhere makes no such call (ROS
-    # 1 ros_control's ControllerManager: with controller_manager's sources in the
-    # workspace its own code is read; ros2_control's is a node of its own)
+    # the row describes our stand-in (of ``standin/fallback`` or ``standin/``: a library
+    # installed, not in the workspace): a class of that name declared elsewhere makes no
+    # such call (ROS 1 ros_control's ControllerManager: with controller_manager's sources
+    # in the workspace its own code is read; ros2_control's is a node of its own;
+    # rclcpp_components' ComponentManager)
     standin_only: bool = False
 
 
@@ -340,6 +341,17 @@ RCLCPP_LIBRARIES: dict[tuple[str, str], RosFunction] = {
     # (node_base, node_graph, node_services, name, qos, group)
     ("rclcpp", "create_client"): RosFunction(
         "client", type_from=("template",), on_handle=False, name_arg=3),
+    # rclcpp_components' container, built as the base of a class of the workspace
+    # (ros2_canopen's DeviceContainer): its constructor serves the container's services
+    # on the node (rclcpp_components' component_manager.cpp, a library the node links,
+    # whose code is not read with it; with rclcpp_components' sources in the workspace,
+    # its own headers and code are read instead)
+    ("rclcpp_components::ComponentManager", "ComponentManager"): RosFunction(
+        "server", fixed_name="~/_container/load_node",
+        fixed_type="composition_interfaces/srv/LoadNode", on_handle=False,
+        standin_only=True, siblings=(
+            ("server", "~/_container/unload_node", "composition_interfaces/srv/UnloadNode"),
+            ("server", "~/_container/list_nodes", "composition_interfaces/srv/ListNodes"))),
     ("rclcpp::AsyncParametersClient", "AsyncParametersClient"): _PARAMETER_CLIENT,
     ("rclcpp::SyncParametersClient", "SyncParametersClient"): _PARAMETER_CLIENT,
     ("rclcpp::AsyncParametersClient", "on_parameter_event"): _PARAMETER_EVENTS,

@@ -118,7 +118,7 @@ UMBRELLAS = {
     "angles/": "angles/angles.h",
     "urdf/": "urdf/model.h", "urdf_model/": "urdf/model.h", "urdf_parser/": "urdf/model.h",
     "cv_bridge/": "cv_bridge/cv_bridge.h", "Eigen/": "Eigen/Dense", "eigen3/": "Eigen/Dense",
-    "yaml-cpp/": "yaml-cpp/yaml.h",
+    "yaml-cpp/": "yaml-cpp/yaml.h", "gflags/": "gflags/gflags.h",
     **{f"Qt{m}/": QT for m in ("Core", "Gui", "Widgets", "Network", "Concurrent", "Test")},
 }
 SHADOWED = ("ros/", "boost/", "tf/", *UMBRELLAS)
@@ -135,12 +135,14 @@ _NOT_FOUND = re.compile(r"^'([^']+)' file not found")
 # the packages whose headers the stand-ins provide (rclcpp_components, bondcpp, ...) and
 # whose own headers win when they are modelled; not those whose classes the API tables
 # name (tf2_ros, image_transport, ...): their stand-ins are the API the extractor knows,
-# and their own sources are modelled against them
+# and their own sources are modelled against them (a row that describes only our
+# stand-in, rclcpp_components' ComponentManager, does not count)
 _STANDIN_PACKAGES = frozenset({p.rstrip("/") for p in SHADOWED} | {
     f for f in os.listdir(STANDIN) if os.path.isdir(os.path.join(STANDIN, f))}) - {
     "std", os.path.basename(FALLBACK), *(
-        row[0].split("::")[0] for table in (api.ROSCPP, api.LIBRARIES, api.RCLCPP,
-                                            api.RCLCPP_LIBRARIES) for row in table)}
+        key[0].split("::")[0] for table in (api.ROSCPP, api.LIBRARIES, api.RCLCPP,
+                                            api.RCLCPP_LIBRARIES)
+        for key, row in table.items() if not row.standin_only)}
 
 # ``<name>_export.h`` from CMake's generate_export_header (not in the source tree): its
 # macros, defined empty, as for a static build

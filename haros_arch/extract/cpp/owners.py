@@ -11,7 +11,7 @@ from __future__ import annotations
 import re
 from collections.abc import Callable
 
-from clang.cindex import Cursor, CursorKind, conf
+from clang.cindex import Cursor, CursorKind, TypeKind, conf
 
 from . import api
 from .call_types import factory_made, template_argument
@@ -43,6 +43,31 @@ def constructed_class(call: Cursor, owned: Callable[[str], bool]) -> str | None:
     ``std::make_shared<T>(...)``), by its qualified name."""
     made = _construction(call, owned)
     return (qualified_name(made[0]) or None) if made is not None else None
+
+
+def constructed_bases(call: Cursor, owned: Callable[[str], bool]) -> list[tuple[str, str]]:
+    """(class, base) for each base of the workspace, transitively, of the class ``call``
+    constructs: constructing a class runs its bases' constructors, implicit ones too
+    (a base whose constructor names the node: ``class D : public B {}``)."""
+    made = _construction(call, owned)
+    out: list[tuple[str, str]] = []
+    stack = [(made[0], 0)] if made is not None else []
+    while stack:
+        cls, depth = stack.pop()
+        definition = cls.get_definition() or cls
+        for child in definition.get_children():
+            base = child.referenced if child.kind == CursorKind.CXX_BASE_SPECIFIER else None
+            if base is None:
+                continue
+            base = base.get_definition() or base
+            where = base.location.file
+            if base.kind not in _CLASSES or where is None or not owned(where.name):
+                continue
+            pair = (qualified_name(cls), qualified_name(base))
+            if all(pair) and pair not in out and depth < MAX_DEPTH:
+                out.append(pair)
+                stack.append((base, depth + 1))
+    return out
 
 
 def _construction(call: Cursor, owned: Callable[[str], bool]
@@ -147,6 +172,36 @@ def node_names(function: Cursor) -> frozenset[str]:
     ):
         found |= {"this", "shared_from_this"}
     return frozenset(found)
+
+
+def binds_own_member(call: Cursor, given: list[Cursor]) -> bool:
+    """Whether ``call`` is given, beside the node object, a pointer to a member function
+    of that object's class or of one of its bases (kobuki_ros' ``ecl::Slot<...>(
+    &KobukiRos::publishVersionInfo, *this)``, a signal's slot): a callback binding, which
+    calls that member on the object, whose calls are read where it is defined."""
+    classes: set[str] = set()
+    for arg in given:
+        kind = arg.type.get_canonical()
+        if kind.kind == TypeKind.POINTER:
+            kind = kind.get_pointee()
+        decl = kind.get_declaration()
+        for _ in range(MAX_DEPTH):  # the class and its bases, first base first
+            if decl is None or decl.kind not in _CLASSES:
+                break
+            classes.add(decl.get_usr())
+            bases = [c.referenced for c in decl.get_children()
+                     if c.kind == CursorKind.CXX_BASE_SPECIFIER and c.referenced is not None]
+            decl = bases[0].get_definition() or bases[0] if bases else None
+    if not classes:
+        return False
+    for arg in call.get_arguments():
+        kind = arg.type.get_canonical()
+        if kind.kind != TypeKind.MEMBERPOINTER:
+            continue
+        owner = kind.get_class_type().get_declaration()
+        if owner is not None and owner.get_usr() in classes:
+            return True
+    return False
 
 
 def _is_node(arg: Cursor) -> bool:

@@ -93,6 +93,8 @@ def _aliased(window: bytes) -> bool:
 _CONSTANT_SPAN = 400  # bytes before a name searched for its statement
 _ENUM_SPAN = 4000  # bytes before a name searched for the brace of an enum's body
 _CASE_WORDS = re.compile(rb"\b(?:case|static_assert)\b")
+# ``case (`` then the scope written before a name: the label's value in parentheses
+_CASE_OPEN = re.compile(rb"\bcase\s*\(\s*(?:[A-Za-z_]\w*\s*::\s*)*$")
 _CONSTEXPR = re.compile(rb"\bconstexpr\b")
 _COMBINING = (b"|", b"&", b"^", b"+", b"-")
 # a declaration before ``[``: a type, then the declared name (``char errbuf_``,
@@ -488,9 +490,13 @@ class Names:
         if last == "type" and use == "any" and rest.lstrip()[:1] in (b")", b",", b"}") and (
             _CONSTANT.fullmatch(written[-1])
             or text[max(0, offset - 8):offset].rstrip().endswith(b"=")
+            or (rest.lstrip()[:1] == b")" and _CASE_OPEN.search(
+                text[max(0, offset - _CONSTANT_SPAN):offset]) is not None)
         ):
             # ``f(vendor::MODE_A)``, ``x = vendor::FRAMING_OK,``: an enumerator or a
-            # constant read as a value (a class there would be a syntax error)
+            # constant read as a value (a class there would be a syntax error); so is
+            # one in parentheses after ``case`` (kobuki's ``case (ecl::OpenError):``,
+            # where a type is a cast with no operand)
             last = "value"
         if use == "any" and not scope and len(written) == 1 and (
             last == "value" or rest.lstrip()[:1] == b"("

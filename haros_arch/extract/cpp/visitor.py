@@ -45,6 +45,8 @@ from .handles import (
 from .links import PARAMETER, Fact, argument_facts, constructed_by, parameter_mark
 from .members import MemberWrites, member_of
 from .owners import (
+    binds_own_member,
+    constructed_bases,
     constructed_class,
     constructors_here,
     handle_node,
@@ -596,6 +598,9 @@ class CallFinder:
             self.made_under.append((name, tuple(c for c in conditions if c.kind == "source")))
             if (self._owner, name) not in self.constructions:
                 self.constructions.append((self._owner, name))
+            for pair in constructed_bases(call, self.owned):
+                if pair not in self.constructions:
+                    self.constructions.append(pair)
 
     def _unseen_class(self, node: Cursor) -> None:
         """ROS 1: say where ``node`` builds an object of a class of another ROS package
@@ -710,6 +715,8 @@ class CallFinder:
         if key in self._unknown:
             return
         given = node_arguments(call)
+        if given and binds_own_member(call, given):
+            return  # a callback binding: the member's calls are read where it is defined
         if given:  # once per place (a conversion of the made object starts there too)
             self._unknown.add(key)
             name = call.spelling
@@ -814,7 +821,9 @@ class CallFinder:
                   at: Cursor | None = None, at_scope: Scope | None = None) -> None:
         """Emit ``call`` of ``spec``; ``at`` is the call that makes it, when another one
         (``nh.subscribe(ops)`` for ``ops.init<M>(...)``) gives its location and handle."""
-        if spec.standin_only and not _from_fallback((at or call).referenced):
+        if spec.standin_only and not _from_standin(
+                cls if cls is not None and cls.kind != CursorKind.NO_DECL_FOUND
+                else (at or call).referenced):
             return  # the class of that name is not our stand-in's: its code is read
         if self.ros2 and spec.ros2 is not None:
             spec = spec.ros2  # the call as ROS 2's library makes it
@@ -1269,21 +1278,22 @@ class CallFinder:
         self._emit(spec, field, [], decl, (), Scope(None, self.macros, self.source, self.sites))
 
 
-_FALLBACK = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))),
-                         "standin", "fallback")
+_STANDIN = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))),
+                        "standin")
 
 
-def _from_fallback(target: Cursor | None) -> bool:
-    """Whether ``target`` (the function or constructor a call names) is declared in a
-    stand-in of ``standin/fallback``."""
+def _from_standin(target: Cursor | None) -> bool:
+    """Whether ``target`` (the function or constructor a call names) is declared in one
+    of our stand-ins (``standin/``, ``standin/fallback`` included), not in a header of the
+    workspace."""
     if target is None or target.location.file is None:
         return False
-    return _in_fallback(target.location.file.name)
+    return _in_standin(target.location.file.name)
 
 
 @functools.lru_cache(maxsize=1024)
-def _in_fallback(path: str) -> bool:
-    return os.path.realpath(path).startswith(os.path.realpath(_FALLBACK) + os.sep)
+def _in_standin(path: str) -> bool:
+    return os.path.realpath(path).startswith(os.path.realpath(_STANDIN) + os.sep)
 
 
 # classes whose VAR_DECL children are static data members

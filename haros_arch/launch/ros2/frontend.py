@@ -118,6 +118,11 @@ class Frontend:
             handler = self.tags.get(child.tag)
             if handler is None:
                 self.report("LAUNCH_UNKNOWN_TAG", child, tag=child.tag)
+                # ros2 launch takes an action tag from a launch extension an installed
+                # package exposes (ros_gz_bridge's <ros_gz_bridge>, ros_gz_sim's
+                # <gz_server>), else fails: what it starts is unknown, not nothing
+                out.append(e.UnknownAction(f"<{child.tag}>", condition=self.cond_of(child),
+                                           location=self.where(child)))
                 continue
             action = handler(child)
             if action is not None:

@@ -30,7 +30,7 @@ from ...model.launch_tree import (
 )
 from ...model.location import Location
 from ...model.values import Unknown, Value
-from ...share import share_source
+from ...share import generated_at, share_source
 from ...workspace import Workspace
 from ..model import LaunchModel, NodeDecl, ParamDecl, RecordedEnvironment
 from ..partial_yaml import marked_text, unknown_parts
@@ -148,6 +148,16 @@ class Runner:
                 "it is not read"))
             return
         if not os.path.isfile(path):
+            made = generated_at(self.workspace, path)
+            if made is not None:
+                # installed from the build folder (ros_gz_sim's gz_sim.launch.py, made by
+                # configure_file from gz_sim.launch.py.in): there, but not readable here
+                scope.item.kind = "include"
+                self.report("LAUNCH_UNKNOWN_VALUE", where, detail=(
+                    f"launch file {self.workspace.relpath(path)} is made by the build "
+                    f"(installed from the build folder at {self.workspace.relpath(made[0])}"
+                    f":{made[1]}); it is not read"))
+                return
             self.report("LAUNCH_FILE_MISSING", where, path=self.workspace.relpath(path))
             return
         actions = self.parse(path, self, where)

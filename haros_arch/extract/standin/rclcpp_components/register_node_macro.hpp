@@ -20,9 +20,23 @@ template<class N> class NodeFactoryTemplate : public NodeFactory {
 public:
   NodeInstanceWrapper create_node_instance(const rclcpp::NodeOptions& options) override;
 };
+// a container node; a class of the workspace may derive from it (ros2_canopen's
+// DeviceContainer): its constructor serves ~/_container/load_node, unload_node and
+// list_nodes (an API row), and these are the members a subclass uses
 class ComponentManager : public rclcpp::Node {
 public:
   template<class... A> explicit ComponentManager(A&&... args);
+  virtual ~ComponentManager();
+protected:
+  virtual rclcpp::NodeOptions create_node_options(const std::shared_ptr<void> request);
+  virtual void add_node_to_executor(uint64_t node_id);
+  virtual void remove_node_from_executor(uint64_t node_id);
+  std::weak_ptr<rclcpp::Executor> executor_;
+  uint64_t unique_id_;
+  std::map<uint64_t, NodeInstanceWrapper> node_wrappers_;
+  rclcpp::ServiceBase::SharedPtr loadNode_srv_;
+  rclcpp::ServiceBase::SharedPtr unloadNode_srv_;
+  rclcpp::ServiceBase::SharedPtr listNodes_srv_;
 };
 }
 namespace haros_standin { template<class T> struct component_registration { typedef T type; }; }

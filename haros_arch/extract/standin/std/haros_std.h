@@ -233,6 +233,9 @@ public:
   basic_string& append(const C* s);
   basic_string& append(size_t n, C c);
   basic_string& assign(const basic_string& s);
+  basic_string& assign(const C* s);
+  basic_string& assign(size_t n, C c);
+  template<class It> basic_string& assign(It first, It last);
   basic_string& insert(size_t pos, const basic_string& s);
   basic_string& erase(size_t pos = 0, size_t n = npos);
   iterator erase(iterator first, iterator last);
@@ -640,7 +643,13 @@ template<class T> bool operator!=(nullptr_t, const shared_ptr<T>& a);
 template<class T> class weak_ptr {
 public:
   constexpr weak_ptr() noexcept;
+  weak_ptr(const weak_ptr& other) noexcept;
+  template<class Y> weak_ptr(const weak_ptr<Y>& other) noexcept;
   template<class Y> weak_ptr(const shared_ptr<Y>& other) noexcept;
+  weak_ptr& operator=(const weak_ptr& other) noexcept;
+  template<class Y> weak_ptr& operator=(const weak_ptr<Y>& other) noexcept;
+  template<class Y> weak_ptr& operator=(const shared_ptr<Y>& other) noexcept;
+  long use_count() const noexcept;
   shared_ptr<T> lock() const noexcept;
   bool expired() const noexcept;
   void reset() noexcept;
@@ -912,6 +921,40 @@ public:
   explicit operator bool() const;
 };
 class iostream : public ostream, public istream {};
+// <iterator>'s stream iterators
+template<class C, class Tr = char_traits<C>> class istreambuf_iterator {
+public:
+  typedef C value_type;
+  istreambuf_iterator() noexcept;
+  istreambuf_iterator(istream& is) noexcept;
+  istreambuf_iterator(streambuf* sb) noexcept;
+  C operator*() const;
+  istreambuf_iterator& operator++();
+  istreambuf_iterator operator++(int);
+  bool operator==(const istreambuf_iterator& other) const;
+  bool operator!=(const istreambuf_iterator& other) const;
+};
+template<class T, class C = char> class istream_iterator {
+public:
+  typedef T value_type;
+  istream_iterator();
+  istream_iterator(istream& is);
+  const T& operator*() const;
+  const T* operator->() const;
+  istream_iterator& operator++();
+  istream_iterator operator++(int);
+  bool operator==(const istream_iterator& other) const;
+  bool operator!=(const istream_iterator& other) const;
+};
+template<class T, class C = char> class ostream_iterator {
+public:
+  ostream_iterator(ostream& os);
+  ostream_iterator(ostream& os, const C* delimiter);
+  ostream_iterator& operator=(const T& value);
+  ostream_iterator& operator*();
+  ostream_iterator& operator++();
+  ostream_iterator& operator++(int);
+};
 istream& getline(istream& is, string& s);
 istream& getline(istream& is, string& s, char delim);
 ostream& endl(ostream& os);
