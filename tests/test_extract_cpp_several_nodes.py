@@ -288,3 +288,63 @@ def test_only_the_nodes_the_executable_makes_name_its_process(write_tree) -> Non
     library = extract_cpp([str(root / "pkg/src/lib.cpp")], workspace, cache_dir=None)
     assert sorted(library.rosnames) == ["base", "domain_client", "executor",
                                         "executor_client", "planner"]
+
+
+UNBUILT = """
+#include <memory>
+#include "rclcpp/rclcpp.hpp"
+#include "std_msgs/msg/string.hpp"
+
+namespace plan {
+class Executor : public rclcpp::Node {
+public:
+  Executor() : Node("executor") {
+    pub_ = create_publisher<std_msgs::msg::String>("plan", 10);
+  }
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+};
+class Monitor : public rclcpp::Node {
+public:
+  Monitor() : Node("monitor") {
+    sub_ = create_subscription<std_msgs::msg::String>("plan", 10, &Monitor::cb);
+  }
+  static void cb(const std_msgs::msg::String::SharedPtr) {}
+  rclcpp::Subscription<std_msgs::msg::String>::SharedPtr sub_;
+};
+}  // namespace plan
+"""
+
+
+def test_the_calls_of_a_node_class_main_never_builds_are_not_the_process_s(
+        write_tree) -> None:
+    """plansys2's domain_expert_node links DomainExpertClient, a class that makes a node
+    of its own, and never builds it: the client's 14 calls were given to the process's
+    node. A node class the executable's main() never builds makes no call there; with
+    a main() that loads plugins by name (a factory may build it), its calls stay."""
+    root = write_tree({
+        "pkg/package.xml": '<?xml version="1.0"?>\n<package format="2"><name>pkg</name>'
+                           "<version>0.1.0</version><description>d</description>"
+                           '<maintainer email="a@b.c">m</maintainer><license>MIT</license>'
+                           "<depend>rclcpp</depend><export><build_type>ament_cmake"
+                           "</build_type></export></package>\n",
+        "pkg/include/pkg/lib.hpp": UNBUILT,
+        "pkg/src/lib.cpp": '#include "pkg/lib.hpp"\n',
+        "pkg/src/main.cpp": '#include "pkg/lib.hpp"\nint main(int argc, char ** argv)'
+                            " {\n  rclcpp::init(argc, argv);\n"
+                            "  rclcpp::spin(std::make_shared<plan::Executor>());\n}\n",
+        "pkg/src/loader.cpp": '#include "pkg/lib.hpp"\n'
+                              "#include <pluginlib/class_loader.hpp>\n"
+                              "int main(int argc, char ** argv)"
+                              " {\n  rclcpp::init(argc, argv);\n"
+                              "  pluginlib::ClassLoader<rclcpp::Node> loader(\"pkg\", "
+                              "\"rclcpp::Node\");\n"
+                              "  auto extra = loader.createSharedInstance(\"pkg/Monitor\");\n"
+                              "  rclcpp::spin(std::make_shared<plan::Executor>());\n}\n",
+    })
+    workspace = scan([str(root)])
+    built = extract_cpp([str(root / "pkg/src/lib.cpp"), str(root / "pkg/src/main.cpp")],
+                        workspace, cache_dir=None)
+    assert (built.rosname, rows(built)) == ("executor", {("publish", "plan", None)})
+    loading = extract_cpp([str(root / "pkg/src/lib.cpp"), str(root / "pkg/src/loader.cpp")],
+                          workspace, cache_dir=None)
+    assert ("subscribe", "plan") in {(kind, name) for kind, name, _ in rows(loading)}

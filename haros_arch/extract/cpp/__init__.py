@@ -12,7 +12,7 @@ from __future__ import annotations
 import dataclasses
 import os
 import re
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Collection, Sequence
 from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
 from typing import Any
@@ -261,7 +261,7 @@ def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True
                 seen.add(key)
                 result.calls.append(call)
     result.diagnostics = list(dict.fromkeys(result.diagnostics))
-    _name_nodes(result, sorted(paths_units, key=lambda pair: pair[0]), facts)
+    _name_nodes(result, sorted(paths_units, key=lambda pair: pair[0]), facts, unseen)
     result.calls = declared_defaults(result.calls)
     return result
 
@@ -298,10 +298,12 @@ def _built_under(facts: list[links.Fact], unseen: set[str]) -> dict[str, tuple[C
 
 
 def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
-                facts: list[links.Fact]) -> None:
+                facts: list[links.Fact], unseen: Collection[str] = frozenset({"*"})) -> None:
     """The executable's nodes when its files construct several with fully known names
     (in the order met, files by path), and each call's node (``_node_of``); None where
-    no one node can be told (the graph gives those calls to the first node)."""
+    no one node can be told (the graph gives those calls to the first node). The calls
+    of a node class the executable's ``main()`` never builds are left out
+    (``_unbuilt``)."""
     owners: dict[str, list[str]] = {}
     made_by: dict[str, list[str]] = {}
     for _, unit in units:
@@ -323,9 +325,12 @@ def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
     if len(result.rosnames) < 2:
         result.rosnames = []
     under = _made_under(units, owners, result.rosnames)
+    unbuilt = _unbuilt(owners, reached, result, unseen)
     calls = []
     nodes: dict[str, str | None] = {}
     for call in result.calls:
+        if call.node_name in unbuilt:
+            continue
         node = _node_of(call.node_name, owners, made_by, result.rosnames, nodes, 0)
         # a copy: a translation unit's calls are shared by the nodes that build it
         if call.node_name is None and node is None:
@@ -335,6 +340,26 @@ def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
         calls.append(dataclasses.replace(call, node_name=node,
                                          conditions=(*extra, *call.conditions)))
     result.calls = calls
+
+
+def _unbuilt(owners: dict[str, list[str]], reached: set[str] | None, result: CppResult,
+             unseen: Collection[str]) -> set[str]:
+    """The node classes (a class whose constructor names a node) of the executable's
+    files that its ``main()`` never builds (``_reached``): they make no node and no call
+    in this process (plansys2's compute_bt links ExecutorNode and never builds one; its
+    ``transition_event`` publisher was given to the process's node). None when the
+    executable loads plugins or nodelets by name, or components (a factory may build
+    them), nor a class
+    whose name the code around the parse's errors holds (they may hide its
+    construction)."""
+    if reached is None or "*" in unseen or any(
+            d.code == "CPP_PLUGINS_LOADED" for d in result.diagnostics) or any(
+            call.name.endswith("_container/load_node") for call in result.calls):
+        return set()  # a component container (ros2_canopen's) loads node classes too
+    return {owner for owner, names in owners.items()
+            if names and owner not in reached and not owner.endswith("()")
+            and "@" not in owner  # a class, not a function nor a handle (its USR)
+            and owner.rsplit("::", 1)[-1] not in unseen}
 
 
 def _reached(units: list[tuple[str, CppResult]]) -> set[str] | None:
