@@ -251,3 +251,13 @@ def test_ros2_wait_sets_client_pruning_and_timer_calls(write_tree) -> None:
             if c.kind in ("subscribe", "publish", "client")] == [
         ("subscribe", "fixed_in"), ("subscribe", "in"), ("publish", "out"),
         ("client", "add"), ("publish", "?")]
+
+
+def test_ros1_video_capture_back_end_and_tf2_set_euler(write_tree) -> None:
+    """OpenCV's ``VideoCapture::open(path, cv::CAP_V4L)`` (cv_camera) and tf2's
+    ``Quaternion::setEuler`` (multirobot_map_merge) were errors in functions that call the
+    ROS API: both models partial for them."""
+    result = _extract(write_tree, _source("ros1_capture_euler.cpp"), "catkin")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("publish", "~image_raw"), ("publish", "~init_pose")]
