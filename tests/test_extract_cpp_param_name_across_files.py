@@ -58,3 +58,15 @@ def test_a_parameter_named_through_a_handle_of_another_file_is_resolved(tmp_path
     assert sorted((c.kind, c.name, c.name_param, c.name_default) for c in calls) == [
         ("read", "~costmap_topic", None, None),
         ("subscribe", "?", "~costmap_topic", "costmap")]
+
+
+def test_the_marks_of_a_handle_no_caller_names_are_unknown() -> None:
+    """A plugin's ``initialize(name)`` that reads ``~<name>/plan_topic`` (sbpl_recovery):
+    no file of the node calls it (its host does), so the handle's part is ``?``."""
+    from haros_arch.extract.cpp.links import _parameter_filled
+    from haros_arch.extract.cpp.values import PLACEHOLDER, SEPARATOR
+
+    mark = f"{PLACEHOLDER}c:@S@Recovery@F@initialize#{SEPARATOR}0{PLACEHOLDER}"
+    assert _parameter_filled(f"~{mark}/plan_topic", {}) == "~?/plan_topic"
+    passed = {"c:@S@Recovery@F@initialize#": {"main.cpp:9": {0: "recovery"}}}
+    assert _parameter_filled(f"~{mark}/plan_topic", passed) == "~recovery/plan_topic"

@@ -228,12 +228,12 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact],
     return out, found
 
 
-def _parameter_filled(param: str, passed: dict[str, dict[str, dict[int, str]]]
-                      ) -> str | None:
+def _parameter_filled(param: str, passed: dict[str, dict[str, dict[int, str]]]) -> str:
     """The parameter that names a call (``name_param``) read on a handle a caller in
     another file passes (its namespace a placeholder, then ``/name``): that handle's
-    namespace joined to the name, as the read's own name is (``~costmap_topic``); None
-    (the name stays unknown) when the callers pass several handles or none."""
+    namespace joined to the name, as the read's own name is (``~costmap_topic``); ``?``
+    in its place when the callers pass several handles or none (``~?/plan_topic`` of a
+    plugin's ``initialize(name)``, which its host names)."""
     mark = _MARK.match(param)
     text = f"{param[:mark.end()]}{_SPLIT}{param[mark.end():].lstrip('/')}" if mark else param
     found = set()
@@ -241,10 +241,10 @@ def _parameter_filled(param: str, passed: dict[str, dict[str, dict[int, str]]]
         ns, _, name = filled.partition(_SPLIT)
         ns = normalise(_unmarked(ns)) if ns else ""
         found.add(join_name(ns, name) if ns and name else ns or name)
-    if len(found) != 1:
-        return None
-    value = found.pop()
-    return None if PLACEHOLDER in value or "?" in value else value
+    value = found.pop() if len(found) == 1 else ""
+    if value and PLACEHOLDER not in value:
+        return value
+    return _unmarked(_MARK.sub("?", param))
 
 
 def resolve_name(name: str, facts: Iterable[Fact]) -> str:
