@@ -334,3 +334,13 @@ def test_ros2_gflags_flags_name_calls_not_known_statically(write_tree) -> None:
     assert _errors(result) == []
     assert sorted((c.kind, c.name) for c in result.calls) == [
         ("declare", "?"), ("subscribe", "?")]
+
+
+def test_ros1_video_capture_back_end_and_tf2_set_euler(write_tree) -> None:
+    """OpenCV's ``VideoCapture::open(path, cv::CAP_V4L)`` (cv_camera) and tf2's
+    ``Quaternion::setEuler`` (multirobot_map_merge) were errors in functions that call the
+    ROS API: both models partial for them."""
+    result = _extract(write_tree, _source("ros1_capture_euler.cpp"), "catkin")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("publish", "~image_raw"), ("publish", "~init_pose")]

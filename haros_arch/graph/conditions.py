@@ -4,7 +4,8 @@ A call under ``if (publish_acceleration_)`` exists in a configuration exactly wh
 condition holds there. The condition is decided when every name it uses has a value
 this instance gives it:
 
-- a member variable that one parameter read stores into (``PrimitiveCall.variable``; of
+- a member variable (C++ ``x_`` or ``this->x_``, Python ``self.x``) that one parameter
+  read stores into (``PrimitiveCall.variable``; of
   the same file, else of any file of the node), or a local of the condition's function
   written once by a parameter read (``Condition.parameters``): the value the configuration gives the
   parameter (the launch files', with no launch condition and no node setting it), else
@@ -50,7 +51,8 @@ MAX_TEXT = 1000  # longer condition texts are left undecided
 _TOKEN = re.compile(r"""\s*(?:
     (?P<string>"[^"\\\n]*")
   | (?P<number>\d+(?:\.\d+)?)(?![\w.])
-  | (?P<name>this\s*->\s*[A-Za-z_]\w*|[A-Za-z_]\w*(?:\s*::\s*[A-Za-z_]\w*)*)
+  | (?P<name>this\s*->\s*[A-Za-z_]\w*|self\s*\.\s*[A-Za-z_]\w*
+             |[A-Za-z_]\w*(?:\s*::\s*[A-Za-z_]\w*)*)
   | (?P<op>&&|\|\||==|!=|<=|>=|->|,|[!<>()\[\].])
 )""", re.X)
 _KEYWORDS = {"true": "True", "false": "False"}
@@ -77,7 +79,8 @@ class _Grammar:
             kind = found.lastgroup or ""
             value = found.group(kind)
             if kind == "name":
-                value = re.sub(r"\s+", "", value).removeprefix("this->")
+                # a member: C++'s ``this->x``, Python's ``self.x``
+                value = re.sub(r"\s+", "", value).removeprefix("this->").removeprefix("self.")
                 if value in _ALTERNATIVE:
                     kind, value = "op", _ALTERNATIVE[value]
             self.tokens.append((kind, value))

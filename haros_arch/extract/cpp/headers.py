@@ -645,7 +645,13 @@ class IncludeSetup:
         return chosen
 
     def _action(self, package: str, name: str, where: Location) -> bool:
-        """``pkg/DoAction.h``, ``pkg/DoGoal.h``, ...: the headers of ``action/Do.action``."""
+        """``pkg/DoAction.h``, ``pkg/DoGoal.h``, ...: the headers of ``action/Do.action``.
+        ``pkg/DoAction.h`` of a package neither in the workspace nor in the catalogue is
+        still an action's (genaction names it so): its parts are declared without
+        fields, as an unknown message is, so that an actionlib server or client of it
+        (``SimpleActionServer<pkg::DoAction>``, which reads the action's nested types)
+        is still a call (kobuki_auto_docking's ``as_(nh_, name_ + "_action", false)``
+        was lost with kobuki_msgs absent, and its node said complete)."""
         folder = self.workspace.find(package)
         for part in interfaces.ACTION_PARTS:
             base = name.removesuffix(part)
@@ -657,6 +663,11 @@ class IncludeSetup:
                 self.diagnostics.extend(found)
             elif folder is None:  # an installed package's: the shipped catalogue's
                 text = interfaces.known(package, base, kinds=("action",))
+                if text is None and part == "Action" and (
+                        interfaces.known(package, name) is None):
+                    text = ""
+                    self.diagnostics.append(diag.make(
+                        "CPP_MESSAGE_UNKNOWN", where, header=f"{package}/{name}.h"))
                 if text is None:
                     continue
             else:

@@ -207,6 +207,9 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact],
             if not _made(call.made_in, called, constructed, unseen):
                 continue  # no file of the node constructs the class so: not made
             call = dataclasses.replace(call, made_in=None)
+        if call.name_param is not None and PLACEHOLDER in call.name_param:
+            call = dataclasses.replace(call, name_param=_parameter_filled(call.name_param,
+                                                                          passed))
         if PLACEHOLDER not in call.name and PLACEHOLDER not in (call.handle_namespace or ""):
             out.append(call)
             continue
@@ -236,6 +239,25 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact],
                 found.append(diag.make("CPP_DYNAMIC_NAME", made.location, kind=made.kind,
                                        name=made.name))
     return out, found
+
+
+def _parameter_filled(param: str, passed: dict[str, dict[str, dict[int, str]]]) -> str:
+    """The parameter that names a call (``name_param``) read on a handle a caller in
+    another file passes (its namespace a placeholder, then ``/name``): that handle's
+    namespace joined to the name, as the read's own name is (``~costmap_topic``); ``?``
+    in its place when the callers pass several handles or none (``~?/plan_topic`` of a
+    plugin's ``initialize(name)``, which its host names)."""
+    mark = _MARK.match(param)
+    text = f"{param[:mark.end()]}{_SPLIT}{param[mark.end():].lstrip('/')}" if mark else param
+    found = set()
+    for filled in _expand(text, passed, 0):
+        ns, _, name = filled.partition(_SPLIT)
+        ns = normalise(_unmarked(ns)) if ns else ""
+        found.add(join_name(ns, name) if ns and name else ns or name)
+    value = found.pop() if len(found) == 1 else ""
+    if value and PLACEHOLDER not in value:
+        return value
+    return _unmarked(_MARK.sub("?", param))
 
 
 def resolve_name(name: str, facts: Iterable[Fact]) -> str:

@@ -1273,9 +1273,21 @@ class CallFinder:
             return
         decl = row_class(decl)
         spec = api.ALL.get((qualified_name(decl), decl.spelling))
-        if spec is None or spec.fixed_name is None:
+        if spec is None or spec.fixed_name is None or not _default_constructible(decl):
+            # a class that takes arguments (camera_info_manager's, given a handle) is
+            # made where a constructor initialises the member, whose call is that one
             return
         self._emit(spec, field, [], decl, (), Scope(None, self.macros, self.source, self.sites))
+
+
+def _default_constructible(cls: Cursor) -> bool:
+    """Whether a member of class ``cls`` can be made with no argument: it declares no
+    constructor, or one whose parameters all have defaults."""
+    constructors = [c for c in cls.get_children() if c.kind == CursorKind.CONSTRUCTOR]
+    return not constructors or any(
+        all(any(child.kind.is_expression() for child in p.get_children())
+            for p in c.get_children() if p.kind == CursorKind.PARM_DECL)
+        for c in constructors)
 
 
 _STANDIN = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))),

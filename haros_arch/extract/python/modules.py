@@ -73,6 +73,8 @@ class Module:
     classes: dict[str, ClassInfo] = field(default_factory=dict)
     values: dict[str, object] = field(default_factory=dict)
     _lines: list[str] | None = None
+    # how many statements assign each ``self.<member>`` (visitor._member_writes)
+    member_writes: dict[str, int] | None = None
 
     @property
     def lines(self) -> list[str]:

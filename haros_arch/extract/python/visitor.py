@@ -221,8 +221,10 @@ class Walker:
 
     def _Assign(self, statement: ast.Assign | ast.AnnAssign | ast.AugAssign, frame: Frame,
                 conds: Conditions) -> None:
+        before = len(self.calls)
         if statement.value is not None:
             self._expr(statement.value, frame, conds)
+        self._stored(statement, frame, self.calls[before:])
         self.evaluator.assign(statement, frame)
         targets = statement.targets if isinstance(statement, ast.Assign) else [statement.target]
         for target in targets:
@@ -257,6 +259,29 @@ class Walker:
                 and expr.value.id == "self" and frame.instance is not None:
             return id(frame.instance), expr.attr
         return None
+
+    def _stored(self, statement: ast.Assign | ast.AnnAssign | ast.AugAssign, frame: Frame,
+                made: list[PrimitiveCall]) -> None:
+        """``self.x = self.get_parameter("x").value`` (rospy's ``get_param``, a
+        ``declare_parameter(..).value``): the read names the member it stores into
+        (``PrimitiveCall.variable``), as the C++ extraction does, so a condition over
+        ``self.x`` is decided from the parameter, when this is the member's one
+        assignment in its file and the statement's one read, written in it."""
+        targets = statement.targets if isinstance(statement, ast.Assign) else [statement.target]
+        if isinstance(statement, ast.AugAssign) or len(targets) != 1:
+            return
+        member = _self_member(targets[0])
+        if member is None or not _read_as_is(statement.value):
+            return
+        last = getattr(statement, "end_lineno", None) or statement.lineno
+        reads = [c for c in made if c.kind in ("read", "declare")]
+        if member is None or len(reads) != 1 or not (
+            statement.lineno <= reads[0].location.line <= last
+            and reads[0].location.file == self._where(frame, statement).file
+        ):
+            return
+        if _member_writes(frame.module).get(member) == 1:
+            reads[0].variable = member
 
     _AnnAssign = _Assign
     _AugAssign = _Assign
@@ -766,6 +791,50 @@ class Walker:
     def _where(self, frame: Frame, node: ast.AST) -> Location:
         return self.loader.location(frame.module.path, getattr(node, "lineno", 0),
                                     getattr(node, "col_offset", -1) + 1)
+
+
+def _self_member(target: ast.expr) -> str | None:
+    """``x`` of the assignment target ``self.x``."""
+    if (isinstance(target, ast.Attribute) and isinstance(target.value, ast.Name)
+            and target.value.id == "self"):
+        return target.attr
+    return None
+
+
+def _read_as_is(value: ast.expr | None) -> bool:
+    """Whether an assigned value is a call's result as it is: a chain of attributes and
+    method calls on a name (``self.get_parameter("x").value``,
+    ``.get_parameter_value().bool_value``, ``rospy.get_param("~x", 1)``) whose calls take
+    no call's result, not a value computed from one (``float(..)``, ``x * 1000``)."""
+    while isinstance(value, ast.Attribute | ast.Call):
+        if isinstance(value, ast.Call):
+            if any(isinstance(node, ast.Call) for argument in (
+                    *value.args, *(k.value for k in value.keywords))
+                   for node in ast.walk(argument)):
+                return False
+            value = value.func
+        else:
+            value = value.value
+    return isinstance(value, ast.Name)
+
+
+def _member_writes(module: Module) -> dict[str, int]:
+    """How many statements of the module assign each ``self.<member>``."""
+    if module.member_writes is None:
+        found: dict[str, int] = {}
+        for node in ast.walk(module.tree):
+            targets: list[ast.expr] = []
+            if isinstance(node, ast.Assign):
+                targets = [t for target in node.targets for t in (
+                    target.elts if isinstance(target, ast.Tuple | ast.List) else [target])]
+            elif isinstance(node, ast.AnnAssign | ast.AugAssign):
+                targets = [node.target]
+            for target in targets:
+                member = _self_member(target)
+                if member is not None:
+                    found[member] = found.get(member, 0) + 1
+        module.member_writes = found
+    return module.member_writes
 
 
 def _in_namespace(text: Value) -> Value:

@@ -193,13 +193,17 @@ void moveWindow(const std::string& window, int x, int y);
 void setWindowTitle(const std::string& window, const std::string& title);
 double getWindowProperty(const std::string& window, int prop);
 void setWindowProperty(const std::string& window, int prop, double value);
+// the capture back ends a caller may ask for (videoio.hpp's VideoCaptureAPIs)
+enum VideoCaptureAPIs { CAP_ANY = 0, CAP_V4L = 200, CAP_V4L2 = 200, CAP_FIREWIRE = 300,
+                        CAP_DSHOW = 700, CAP_OPENNI = 900, CAP_GSTREAMER = 1800,
+                        CAP_FFMPEG = 1900, CAP_IMAGES = 2000 };
 class VideoCapture {
 public:
   VideoCapture();
-  explicit VideoCapture(int device);
-  explicit VideoCapture(const std::string& path);
-  bool open(int device);
-  bool open(const std::string& path);
+  explicit VideoCapture(int device, int api_preference = CAP_ANY);
+  explicit VideoCapture(const std::string& path, int api_preference = CAP_ANY);
+  bool open(int device, int api_preference = CAP_ANY);
+  bool open(const std::string& path, int api_preference = CAP_ANY);
   bool isOpened() const;
   bool read(Mat& image);
   bool grab();

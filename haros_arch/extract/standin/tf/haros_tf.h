@@ -39,6 +39,7 @@ public:
   Quaternion();
   Quaternion(double x, double y, double z, double w);
   void setRPY(double roll, double pitch, double yaw);
+  void setEuler(double yaw, double pitch, double roll);
   double x() const; double y() const; double z() const; double w() const;
   double getX() const; double getY() const; double getZ() const; double getW() const;
   void setValue(double x, double y, double z, double w);

@@ -47,6 +47,7 @@ public:
   Quaternion();
   Quaternion(double x, double y, double z, double w);
   void setRPY(double roll, double pitch, double yaw);
+  void setEuler(double yaw, double pitch, double roll);
   void setRotation(const class Vector3& axis, double angle);
   double x() const; double y() const; double z() const; double w() const;
   double getAngle() const;
