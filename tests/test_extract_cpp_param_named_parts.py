@@ -562,3 +562,50 @@ def test_a_list_parameter_s_default_in_code_gives_its_elements(write_tree) -> No
                    if link.kind in ("publish", "subscribe"))
     assert links == [("publish", "/left/cmd"), ("publish", "/right/cmd"),
                      ("subscribe", "/rear")]
+
+
+INIT_PARAM_NODE = """
+#include <string>
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+class Lidar : public rclcpp::Node
+{
+public:
+  Lidar() : rclcpp::Node("lidar")
+  {
+    init_param();
+    pub_ = create_publisher<std_msgs::msg::String>(topic_name_, 10);
+    frames_ = create_publisher<std_msgs::msg::String>(frame_topic_, 10);
+    twice_ = create_publisher<std_msgs::msg::String>(changed_, 10);
+  }
+
+private:
+  void init_param()
+  {
+    this->declare_parameter<std::string>("topic_name", "scan");
+    this->get_parameter("topic_name", topic_name_);
+    frame_topic_ = this->declare_parameter("frame_topic", std::string("frames"));
+    changed_ = this->declare_parameter("changed", std::string("a"));
+  }
+  void later() { changed_ = "b"; }
+  std::string topic_name_, frame_topic_, changed_;
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_, frames_, twice_;
+};
+"""
+
+
+def test_a_member_a_method_stores_a_parameter_in_names_the_call(write_tree) -> None:
+    """rplidar_ros / sllidar_ros2: the constructor calls ``init_param()``, which stores
+    the parameters in members (``get_parameter("topic_name", topic_name_)``, ``frame_ =
+    declare_parameter(..)``), then makes its publisher on the member: the name is that
+    parameter's value (it was ``?``) where that is the member's one write in the file;
+    a member written twice stays unknown."""
+    root = write_tree({
+        "src/ex/package.xml": package_xml("ex", "ament_cmake"),
+        "src/ex/src/node.cpp": INIT_PARAM_NODE})
+    result = extract_cpp([str(root / "src/ex/src/node.cpp")], scan([str(root / "src")]),
+                         cache_dir=None)
+    made = [(c.name, c.name_param, c.name_default) for c in result.calls
+            if c.kind == "publish"]
+    assert made == [("?", "topic_name", "scan"), ("?", "frame_topic", "frames"),
+                    ("?", None, None)]

@@ -1168,6 +1168,8 @@ class CallFinder:
                 value = scope.assigned(decl, expr)
             if value is None:
                 found = scope.field(decl)
+                if found is None and expr.kind == CursorKind.MEMBER_REF_EXPR:
+                    return self._written_once(decl, depth)
                 return None if found is None else self._parameter_source(
                     found[0], found[1], depth + 1)
             return self._parameter_source(value, scope, depth + 1)
@@ -1195,6 +1197,43 @@ class CallFinder:
             expr.referenced.kind == CursorKind.CONSTRUCTOR and len(inner) == 1
         ):
             return self._parameter_source(inner[-1], scope, depth + 1) if inner else None
+        return None
+
+    def _written_once(self, member: Cursor, depth: int) -> Source | None:
+        """The parameter a member holds when its one write in the file's functions is a
+        read or declaration of that parameter, in another method than the one using it
+        (rplidar_ros' ``init_param()``, which the constructor calls before it makes the
+        publisher: ``get_parameter("topic_name", topic_name_)``, ``frame_ =
+        declare_parameter("frame_id", ..)``)."""
+        if self.members is None or member.kind != CursorKind.FIELD_DECL or (
+            self.members.writes(member) != 1
+        ):
+            return None
+        assigned = self.members.assignments(member)
+        if len(assigned) == 1:
+            value, function = assigned[0]
+            return self._parameter_source(
+                value, Scope(function, self.macros, self.source, self.sites), depth + 1)
+        if assigned:
+            return None
+        spelling = member.spelling
+        for function in self.functions:
+            if spelling not in "".join(t.spelling for t in function.get_tokens()):
+                continue
+            for node in function.walk_preorder():
+                if node.kind != CursorKind.CALL_EXPR:
+                    continue
+                spec, _ = self._row(node)
+                if spec is not None and self.ros2 and spec.ros2 is not None:
+                    spec = spec.ros2
+                if spec is None or spec.kind not in _PARAM_KINDS or spec.out_arg is None:
+                    continue
+                args = list(node.get_arguments())
+                shift = 1 if spec.optional_handle and args and is_handle(args[0]) else 0
+                if self._member(spec, node, shift) == member:
+                    return self._parameter(
+                        spec, node, Scope(function, self.macros, self.source, self.sites),
+                        depth + 1)
         return None
 
     def _parameter(self, spec: api.RosFunction, call: Cursor,
