@@ -11,7 +11,7 @@ from ...model.source import PrimitiveCall
 from ...model.values import Value
 from . import rclpy
 from .api import Arg, PyFunction
-from .objects import Frame, Seq, param_type, plain_value, text_of
+from .objects import Frame, NewParameter, Seq, param_type, plain_value, text_of
 from .values import Evaluator, argument
 
 
@@ -76,6 +76,13 @@ def special_calls(ev: Evaluator, spec: PyFunction, call: ast.Call, frame: Frame,
                     element, _kw("value"))
                 made.append(replace(base, name=name, type=param_type(
                     evaluate(ev, value_expr, frame))))
+                continue
+            built = ev.eval(element, frame)  # param = Parameter(...); set_parameters([param])
+            if isinstance(built, NewParameter):
+                made.append(replace(base, name=param_name(built.name),
+                                    type=param_type(built.value)))
+            else:  # a parameter not known statically: unknown, not absent
+                made.append(replace(base, name="?"))
     if not made:
         made.append(replace(base, name="?"))
     return made
