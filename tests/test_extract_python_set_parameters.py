@@ -35,3 +35,8 @@ def test_keywords_and_a_mix_with_a_direct_one(tmp_path) -> None:
 def test_a_variable_of_unknown_value_stays_unknown(tmp_path) -> None:
     body = "        self.set_parameters([make()])\n"
     assert _writes(tmp_path, body) == [("?", None)]
+
+
+def test_an_unknown_one_beside_known_ones_is_kept(tmp_path) -> None:
+    body = "        self.set_parameters([make(), Parameter('a', value=1)])\n"
+    assert _writes(tmp_path, body) == [("?", None), ("a", "int")]

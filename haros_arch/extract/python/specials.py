@@ -70,6 +70,10 @@ def special_calls(ev: Evaluator, spec: PyFunction, call: ast.Call, frame: Frame,
     elif spec.special == "set-parameters":
         items = call.args[0] if call.args else argument(call, _kw("parameter_list"))
         for element in _elements(items):
+            # each parameter where the list names it: one not known statically is kept
+            # beside those known (a call site keeps its '?' only where nothing is known)
+            base = replace(base, location=replace(
+                base.location, line=element.lineno, column=element.col_offset + 1))
             if isinstance(element, ast.Call) and element.args:
                 name = param_name(text_of(ev.eval(element.args[0], frame)))
                 value_expr = element.args[2] if len(element.args) > 2 else argument(
