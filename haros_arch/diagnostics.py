@@ -75,6 +75,14 @@ CATALOGUE: dict[str, Entry] = {
     "CMAKE_SOURCE_MISSING": Entry(
         "warning", "source file {path} of target {target} does not exist",
         "A build target names a source file that is not in the package."),
+    "CMAKE_PROGRAM_NOT_IN_SOURCES": Entry(
+        "info", "program {path} installed here is not in the sources; the package's "
+        "{command} ({where}) may make it at build time",
+        "install(PROGRAMS) names a file the source tree does not hold, in a package "
+        "whose add_custom_target or add_custom_command runs commands whose outputs are "
+        "not known statically (webots_ros2_driver's make builds webots/webots-controller): "
+        "the file may exist once built, so it is not reported missing; if it is a node, "
+        "its interface is unknown."),
     "CMAKE_GUESSED_EXECUTABLE": Entry(
         "info", "{command}() is defined outside the workspace; {target} is taken as an "
         "executable built from {sources}, one of which defines main()",

@@ -218,21 +218,44 @@ def _console_scripts(node: ast.expr, module: Module, path: str,
     else:
         computed = module.value(node)
         if isinstance(computed, dict):
-            strings = computed.get("console_scripts", [])
-            return [EntryPoint(*parsed, where) for s in strings
-                    if isinstance(s, str) and (parsed := parse_entry(s))]
+            lines = _entry_lines(computed.get("console_scripts", []))
+            if lines is None:
+                found.append(diag.make("PYSETUP_DYNAMIC", where, detail="a console script"))
+            return [EntryPoint(*parsed, where) for s in lines or []
+                    if (parsed := parse_entry(s))]
         found.append(diag.make("PYSETUP_DYNAMIC", where, detail="entry_points"))
         return []
-    entries = []
-    for item in items:
-        text = module.value(item)
-        item_where = workspace.location(path, item.lineno, item.col_offset + 1)
-        parsed = parse_entry(text) if isinstance(text, str) else None
-        if parsed is None:
-            found.append(diag.make("PYSETUP_DYNAMIC", item_where, detail="a console script"))
+    entries: list[EntryPoint] = []
+    while items:
+        item = items.pop(0)
+        if isinstance(item, (ast.List, ast.Tuple)):  # setuptools flattens nested lists
+            items[:0] = item.elts
             continue
-        entries.append(EntryPoint(parsed[0], parsed[1], item_where))
+        item_where = workspace.location(path, item.lineno, item.col_offset + 1)
+        lines = _entry_lines(module.value(item))
+        results = [parse_entry(s) for s in lines] if lines is not None else [None]
+        if None in results:
+            found.append(diag.make("PYSETUP_DYNAMIC", item_where, detail="a console script"))
+        entries.extend(EntryPoint(r[0], r[1], item_where) for r in results if r is not None)
     return entries
+
+
+def _entry_lines(value: Any) -> list[str] | None:
+    """The entry-point lines of a console_scripts value as setuptools reads them: a
+    string is split into lines (blank and ``#`` lines dropped), a list or tuple is
+    flattened, nested; None when some part is not a string."""
+    if isinstance(value, str):
+        return [t for line in value.splitlines()
+                if (t := line.strip()) and not t.startswith("#")]
+    if isinstance(value, (list, tuple)):
+        out: list[str] = []
+        for part in value:
+            lines = _entry_lines(part)
+            if lines is None:
+                return None
+            out.extend(lines)
+        return out
+    return None
 
 
 # -- setup.cfg ---------------------------------------------------------------------

@@ -84,6 +84,9 @@ class Interpreter:
         self.auto_libraries: list[str] = []
         self.programs: list[Program] = []
         self.program_dirs: list[Program] = []
+        # add_custom_target / add_custom_command: what they make at build time is not
+        # known here (a program installed from the source folder may be one)
+        self.custom_builds: list[Invocation] = []
         self.installs: list[Install] = []  # for haros_arch.share
         # ament_python_install_package(... SCRIPTS_DESTINATION ...): setup.cfg's entry
         # points are installed as executables
@@ -272,6 +275,8 @@ class Interpreter:
         if definition is not None:
             self.call(definition, command)
             return index + 1
+        if name in ("add_custom_target", "add_custom_command"):
+            self.custom_builds.append(command)
         handler = HANDLERS.get(name[1:] if name.startswith("_") else name)
         if handler is not None:
             handler(self, command, self.arguments(command.args))

@@ -343,7 +343,16 @@ def scripts(it: Interpreter, package: Package, workspace: Files,
                            location=location)
 
     for program in it.programs:
-        if not os.path.isfile(program.path):
+        if not os.path.isfile(program.path) and it.custom_builds:
+            # webots_ros2_driver installs webots/webots-controller, which the make of
+            # its add_custom_target builds: absent from the sources is not missing
+            custom = it.custom_builds[0]
+            found.append(diag.make(
+                "CMAKE_PROGRAM_NOT_IN_SOURCES",
+                workspace.location(program.file, program.line, program.column),
+                path=workspace.relpath(program.path), command=custom.name,
+                where=f"{workspace.relpath(custom.file)}:{custom.line}"))
+        elif not os.path.isfile(program.path):
             found.append(diag.make(
                 "CMAKE_SOURCE_MISSING",
                 workspace.location(program.file, program.line, program.column),

@@ -12,8 +12,8 @@ from ...model.values import Unknown
 from . import rclpy
 from .calls import MAX_CALL_DEPTH, Calls, unknown_params
 from .modules import ClassInfo, FunctionInfo
-from .objects import BoundMethod, Frame, Instance, QoS, Ref, Seq
-from .qos import with_policy
+from .objects import BoundMethod, Frame, Instance, Ref, Seq
+from .qos import as_profile, with_policy
 
 
 class Instances(Calls):
@@ -110,9 +110,10 @@ class Instances(Calls):
                     value = Unknown(f"self.{target.attr}")
                 seen[target.attr] = value
             frame.instance.attrs[target.attr] = value
-        elif isinstance(target, ast.Attribute) and isinstance(
-                holder := self.eval(target.value, frame), QoS):
-            # a policy set on a profile held by a local or an attribute of ``self``
+        elif isinstance(target, ast.Attribute) and (
+                holder := as_profile(self.eval(target.value, frame))) is not None:
+            # a policy set on a profile held by a local or an attribute of ``self`` (a
+            # preset too: ``qos = qos_profile_sensor_data`` then ``qos.reliability = ..``)
             changed = with_policy(holder, target.attr, value)
             if changed is not None:
                 self.bind(target.value, changed, frame, seen)

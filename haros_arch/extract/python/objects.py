@@ -58,6 +58,15 @@ class ParamObject:
 
 
 @dataclass(frozen=True)
+class NewParameter:
+    """An rclpy ``Parameter(name, type, value)`` the code builds (to give to
+    ``set_parameters``), kept in a variable: its name and the value expression's value."""
+
+    name: Value
+    value: object = None
+
+
+@dataclass(frozen=True)
 class ParameterClient:
     """An rclpy ``AsyncParameterClient`` for the parameters of the node ``remote``."""
 

@@ -22,13 +22,8 @@ class QoSProfiles(EvaluatorBase):
             return {**rclpy.DEFAULT_QOS, "depth": value}
         if isinstance(value, QoS):
             return value.as_dict()
-        if isinstance(value, Ref):
-            parts = value.qualname.split(".")
-            if parts[-1] in rclpy.PRESETS:
-                return dict(rclpy.PRESETS[parts[-1]])
-            if len(parts) >= 2 and parts[-1] == "value" and parts[-2] in rclpy.PRESET_ENUM:
-                return dict(rclpy.PRESETS[rclpy.PRESET_ENUM[parts[-2]]])
-        return None
+        preset = as_profile(value)
+        return preset.as_dict() if preset is not None else None
 
     def qos_profile(self, expr: ast.Call, frame: Frame) -> QoS:
         policies: dict[str, Any] = dict(rclpy.DEFAULT_QOS)
@@ -44,6 +39,20 @@ class QoSProfiles(EvaluatorBase):
                 if base:
                     policies.update(base)
         return QoS(tuple(policies.items()))
+
+
+def as_profile(value: object) -> QoS | None:
+    """A profile, or a preset profile named (``qos_profile_sensor_data``,
+    ``QoSPresetProfiles.SENSOR_DATA.value``) as one, else None."""
+    if isinstance(value, QoS):
+        return value
+    if isinstance(value, Ref):
+        parts = value.qualname.split(".")
+        if parts[-1] in rclpy.PRESETS:
+            return QoS(tuple(rclpy.PRESETS[parts[-1]].items()))
+        if len(parts) >= 2 and parts[-1] == "value" and parts[-2] in rclpy.PRESET_ENUM:
+            return QoS(tuple(rclpy.PRESETS[rclpy.PRESET_ENUM[parts[-2]]].items()))
+    return None
 
 
 def with_policy(qos: QoS, attr: str, value: object) -> QoS | None:

@@ -11,7 +11,7 @@ from ...model.source import PrimitiveCall
 from ...model.values import Value
 from . import rclpy
 from .api import Arg, PyFunction
-from .objects import Frame, Seq, param_type, plain_value, text_of
+from .objects import Frame, NewParameter, Seq, param_type, plain_value, text_of
 from .values import Evaluator, argument
 
 
@@ -70,12 +70,23 @@ def special_calls(ev: Evaluator, spec: PyFunction, call: ast.Call, frame: Frame,
     elif spec.special == "set-parameters":
         items = call.args[0] if call.args else argument(call, _kw("parameter_list"))
         for element in _elements(items):
+            # each parameter where the list names it: one not known statically is kept
+            # beside those known (a call site keeps its '?' only where nothing is known)
+            base = replace(base, location=replace(
+                base.location, line=element.lineno, column=element.col_offset + 1))
             if isinstance(element, ast.Call) and element.args:
                 name = param_name(text_of(ev.eval(element.args[0], frame)))
                 value_expr = element.args[2] if len(element.args) > 2 else argument(
                     element, _kw("value"))
                 made.append(replace(base, name=name, type=param_type(
                     evaluate(ev, value_expr, frame))))
+                continue
+            built = ev.eval(element, frame)  # param = Parameter(...); set_parameters([param])
+            if isinstance(built, NewParameter):
+                made.append(replace(base, name=param_name(built.name),
+                                    type=param_type(built.value)))
+            else:  # a parameter not known statically: unknown, not absent
+                made.append(replace(base, name="?"))
     if not made:
         made.append(replace(base, name="?"))
     return made

@@ -24,6 +24,7 @@ from ...evaluate import operations as ops
 from ...evaluate.python import BUILTINS, Walker, evaluate_counted
 from ...model.values import Unknown, Value
 from . import rclpy, rospy
+from .api import Arg
 from .calls import MAX_CALL_DEPTH, argument, unknown_params
 from .instances import Instances
 from .modules import ClassInfo, FunctionInfo, Loader, submodule
@@ -32,6 +33,7 @@ from .objects import (
     Frame,
     Instance,
     ModuleRef,
+    NewParameter,
     NodeHandle,
     NodeMethod,
     ParamElement,
@@ -328,6 +330,12 @@ class Evaluator(Instances, QoSProfiles, Walker):
             remote = argument(expr, rclpy.PARAMETER_CLIENT)
             return ParameterClient(text_of(self.eval(remote, frame)) if remote is not None
                                    else Value.unknown("remote node"))
+        if key == ("rclpy", "Parameter") and (expr.args or expr.keywords):
+            named = argument(expr, Arg(0, "name"))
+            given = argument(expr, Arg(2, "value"))
+            return NewParameter(text_of(self.eval(named, frame)) if named is not None
+                                else Value.unknown("parameter name"),
+                                self.eval(given, frame) if given is not None else None)
         if key == ("rclpy", "QoSProfile"):
             return self.qos_profile(expr, frame)
         if ref.qualname in ("os.path.join", "posixpath.join") and expr.args and not any(

@@ -47,7 +47,7 @@ from .objects import (
     plain_value,
     text_of,
 )
-from .qos import with_policy
+from .qos import as_profile, with_policy
 from .scopes import MAX_UNROLL, MAX_UNROLL_OUTER
 from .specials import evaluate, param_name, special_calls, type_only
 from .values import MAX_CALL_DEPTH, NAMESPACE, Evaluator, argument, unknown_params
@@ -226,9 +226,31 @@ class Walker:
             self._expr(statement.value, frame, conds)
         self._stored(statement, frame, self.calls[before:])
         self.evaluator.assign(statement, frame)
+        self._choice_assigned(statement, frame)
         targets = statement.targets if isinstance(statement, ast.Assign) else [statement.target]
         for target in targets:
             self._qos_assigned(target, frame, conds)
+
+    def _choice_assigned(self, statement: ast.stmt, frame: Frame) -> None:
+        """``x = A if test else B`` with a test not known statically: the local holds
+        both values, each under its side of the test, as after ``if test: x = A else:
+        x = B`` (webots_ros2's ``state_topic = '/state' if old else
+        '/controller_state'``)."""
+        if not (isinstance(statement, ast.Assign) and len(statement.targets) == 1
+                and isinstance(statement.targets[0], ast.Name)
+                and isinstance(statement.value, ast.IfExp)):
+            return
+        name, choice = statement.targets[0].id, statement.value
+        ev = self.evaluator
+        if not isinstance(frame.locals.get(name), Unknown) or not isinstance(
+                ev.eval(choice.test, frame), Unknown):
+            return  # the evaluator decided the test
+        text = self._text(frame, choice.test)
+        where = self._where(frame, choice)
+        options = (*_options(ev.eval(choice.body, frame), condition("if", text, where)),
+                   *_options(ev.eval(choice.orelse, frame), condition("else", text, where)))
+        if len(options) <= MAX_ALTERNATIVES and all(_alternative(v) for v, _ in options):
+            frame.locals[name] = Alternatives(options)
 
     def _qos_assigned(self, target: ast.expr, frame: Frame, conds: Conditions) -> None:
         """Where a QoS profile is bound to a local or an attribute of ``self``, and its
@@ -238,16 +260,16 @@ class Walker:
         ev = self.evaluator
         if isinstance(target, ast.Attribute) and (target.attr == "depth"
                                                   or target.attr in rclpy.POLICIES):
-            holder = ev.eval(target.value, frame)
+            holder = as_profile(ev.eval(target.value, frame))
             key = self._holder(target.value, frame)
             made = self._qos_made.get(key) if key is not None else None
-            if isinstance(holder, QoS) and any(c not in (made or ()) for c in conds):
+            if holder is not None and any(c not in (made or ()) for c in conds):
                 unset = with_policy(holder, target.attr, None)
                 if unset is not None:
                     ev.bind(target.value, unset, frame)
             return
         key = self._holder(target, frame)
-        if key is not None and isinstance(ev.eval(target, frame), QoS):
+        if key is not None and as_profile(ev.eval(target, frame)) is not None:
             self._qos_made[key] = conds
 
     @staticmethod
@@ -512,16 +534,17 @@ class Walker:
 
     def _call(self, call: ast.Call, frame: Frame, conds: Conditions) -> None:
         for arg in (*call.args, *(k.value for k in call.keywords)):
-            held = frame.locals.get(arg.id) if isinstance(arg, ast.Name) else None
-            if isinstance(held, Alternatives) and isinstance(arg, ast.Name):
-                # a local the paths of an if left different: one call per value
-                try:
-                    for value, under in held.options:
-                        frame.locals[arg.id] = value
-                        self._call(call, frame, (*conds, *under))
-                finally:
-                    frame.locals[arg.id] = held
-                return
+            for part in ast.walk(arg):  # the local itself or in an expression: prefix + x
+                held = frame.locals.get(part.id) if isinstance(part, ast.Name) else None
+                if isinstance(held, Alternatives) and isinstance(part, ast.Name):
+                    # a local the paths of an if left different: one call per value
+                    try:
+                        for value, under in held.options:
+                            frame.locals[part.id] = value
+                            self._call(call, frame, (*conds, *under))
+                    finally:
+                        frame.locals[part.id] = held
+                    return
         ev = self.evaluator
         target = ev.callee(call.func, frame)
         version = frame.module.version

@@ -34,7 +34,7 @@ from ...model.values import Unknown
 from ...share import share_source
 from ...workspace import Workspace
 from . import entities as e
-from .python_expressions import Expressions, _Bound
+from .python_expressions import Expressions, _Bound, math_constant
 from .python_values import (
     LIMITS,
     MAX_CALL_DEPTH,
@@ -183,7 +183,9 @@ class Interpreter(Expressions):
         module = ("." * stmt.level) + (stmt.module or "")
         found = self.find_module(module, stmt)
         for alias in stmt.names:
-            if found is None:
+            if found is None and module == "math" and math_constant(alias.name):
+                env[alias.asname or alias.name] = ops.MATH[alias.name]  # from math import pi
+            elif found is None:
                 env[alias.asname or alias.name] = Ref(f"{module}.{alias.name}")
             elif alias.name in found.names:
                 env[alias.asname or alias.name] = found.names[alias.name]
@@ -459,6 +461,11 @@ class Interpreter(Expressions):
                 return self.add_search(func, args, node)
             name = func.qualified
             short = name.rsplit(".", 1)[-1]
+            if name == f"math.{short}" and callable(ops.MATH.get(short)) and not kwargs \
+                    and all(isinstance(a, int | float) and not isinstance(a, bool)
+                            for a in args):  # math.sin(x) of numbers known statically
+                return self.operation(
+                    lambda: ops.call_builtin(ops.MATH[short], args, None, LIMITS), node)
             handler = self.api.get(short)
             if handler is not None and (_known_module(name) or short in self.builtins):
                 self.charge_arguments([*args, *kwargs.values()])

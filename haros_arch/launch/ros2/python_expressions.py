@@ -241,6 +241,8 @@ class Expressions(Walker):
         if isinstance(owner, Ref):
             if owner.qualified == "os" and node.attr == "environ":
                 return _Environ()
+            if owner.qualified == "math" and math_constant(node.attr):
+                return ops.MATH[node.attr]  # math.pi
             return Ref(f"{owner.qualified}.{node.attr}")
         if isinstance(owner, Module):  # a module of the workspace the file imported
             if node.attr in owner.names:
@@ -367,6 +369,12 @@ class Expressions(Walker):
         return all(self.truth(self.eval(cond, env)) is not False for cond in gen.ifs)
 
 
+def math_constant(name: str) -> bool:
+    """Whether ``math.<name>`` is one of the constants of the safe table (``pi``, ``e``,
+    ``tau``, ``inf``, ``nan``)."""
+    return isinstance(ops.MATH.get(name), float)
+
+
 def _unknown_part(value: Any) -> Unknown:
     return value if isinstance(value, Unknown) else Unknown("a list not known statically")
 
@@ -381,6 +389,11 @@ class _Bound:
     def call(self, interp: Interpreter, args: list[Any], kwargs: dict[str, Any],
              node: ast.AST) -> Any:
         handler = interp.methods.get(self.attr)
+        if handler is None and isinstance(self.owner, Unknown) \
+                and self.owner.kind == "unsupported":
+            # a method of a value whose construct was said not interpreted where it was
+            # made (``c = LocalClass()`` then ``c.add(...)`` 30 times): said there, once
+            return Unknown(f"method .{self.attr}() of a value not known statically")
         if handler is None:
             return interp.unsupported(node, f"method .{self.attr}() is not interpreted")
         return handler(interp, self.owner, args, kwargs, node)
