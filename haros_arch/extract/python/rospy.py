@@ -65,6 +65,16 @@ ROWS: dict[tuple[str, str], PyFunction] = {
         "subscribe", name=None, fixed_type="tf2_msgs/TFMessage", special="tf-listener"),
     # message_filters.Subscriber(name, data_class, ...)
     ("message_filters", "Subscriber"): PyFunction("subscribe", type=Arg(1, "data_class")),
+    # dynamic_reconfigure.server.Server(type, callback, namespace=""): in "~" (or the
+    # namespace given), a read of each parameter of the config (its package's
+    # cfg/*.cfg), two latched topics and its service
+    ("dynamic_reconfigure", "Server"): PyFunction(
+        "server", name=None, fixed_type="dynamic_reconfigure/Reconfigure",
+        callback=Arg(1, "callback"), special="reconfigure-server"),
+    # dynamic_reconfigure.client.Client(name, ...): the server's service and topics
+    ("dynamic_reconfigure", "Client"): PyFunction(
+        "client", fixed_type="dynamic_reconfigure/Reconfigure",
+        special="reconfigure-client"),
     # diagnostic_updater.Updater() publishes its status on /diagnostics (as roscpp's)
     ("diagnostic_updater", "Updater"): PyFunction(
         "publish", name=None, fixed_name="/diagnostics",
