@@ -50,7 +50,7 @@ from .objects import (
 from .qos import with_policy
 from .scopes import MAX_UNROLL, MAX_UNROLL_OUTER
 from .specials import evaluate, param_name, special_calls, type_only
-from .values import MAX_CALL_DEPTH, NAMESPACE, Evaluator, argument, unknown_params
+from .values import MAX_CALL_DEPTH, NAMESPACE, Evaluator, argument, own_name, unknown_params
 
 Conditions = tuple[Condition, ...]
 MAX_STEPS = 200_000
@@ -723,7 +723,7 @@ class Walker:
                 default = ev.param_defaults.get(name)
                 if isinstance(default, Value) and default.is_known:
                     call.name_default = default.text
-        text = _in_namespace(text)
+        text = _in_namespace(own_name(text))
         if version == 2 and call.kind in _PARAM_KINDS:
             call.name = param_name(text)
         elif text.text.startswith("~/"):  # f"{get_name()}/x": the private name ~x
