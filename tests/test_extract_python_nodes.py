@@ -205,3 +205,19 @@ def test_own_name_followed_by_other_text_is_not_a_private_name(tmp_path) -> None
     assert [(c.kind, c.name) for c in result.calls] == [
         ("server", "?_is_interruptible"), ("server", "?_create"), ("server", "~reset"),
         ("server", "~"), ("read", "~rate"), ("server", "~_literal")]
+
+
+def test_a_read_of_the_name_search_param_found_is_a_searched_read(tmp_path) -> None:
+    """naoqi_bridge's naoqi_joint_states.py: ``name = rospy.search_param('tf_prefix')``
+    then ``if name: rospy.get_param(name)`` reads the parameter the search found: a
+    searched read of ``tf_prefix``, not a read of an unknown name ('?', PY_DYNAMIC_NAME,
+    an unresolved-names finding)."""
+    result = run(tmp_path,
+                 "import rospy\n"
+                 "rospy.init_node('joints')\n"
+                 "found = rospy.search_param('tf_prefix')\n"
+                 "if found:\n"
+                 "    prefix = rospy.get_param(found, '')\n")
+    assert [(c.kind, c.name, c.searched, c.type, c.location.line) for c in result.calls] == [
+        ("read", "tf_prefix", True, None, 3), ("read", "tf_prefix", True, "str", 5)]
+    assert "PY_DYNAMIC_NAME" not in [d.code for d in result.diagnostics]

@@ -60,6 +60,18 @@ NAMESPACE = "node namespace"  # origin of the unknown get_namespace() gives
 NODE_NAME = "node name"  # origin of the unknown get_name() gives (see own_name)
 
 
+SEARCHED = "found by search_param: "  # origin of the name rospy.search_param(x) gives
+
+
+def searched_name(text: Value) -> str | None:
+    """``x`` when ``text`` is the name ``rospy.search_param(x)`` returned, else None."""
+    parts = text.parts
+    if len(parts) == 1 and isinstance(parts[0], Unknown) and parts[0].origin.startswith(
+            SEARCHED):
+        return parts[0].origin[len(SEARCHED):]
+    return None
+
+
 def own_name(text: Value) -> Value:
     """A name that starts with the node's own name (``rospy.get_name()``, rclpy's
     ``get_name()``), alone or followed by ``/``, is the node's private name: ``~`` and
@@ -329,6 +341,14 @@ class Evaluator(Instances, QoSProfiles, Walker):
                                self.eval(default, frame) if default is not None else None)
             self.param_defaults[value.name] = value.default
             return value
+        if key == ("rospy", "search_param"):
+            # the full name of the parameter the search finds: a read of it is a
+            # searched read of that parameter (``searched_name``)
+            name = argument(expr, rospy.ROWS[key].name)
+            text = text_of(self.eval(name, frame)) if name is not None else None
+            if text is not None and text.is_known and text.text:
+                return Value.unknown(SEARCHED + text.text)
+            return Value.unknown("search_param")
         if key == ("rospy", "get_name") and not expr.args:
             return Value.unknown(NODE_NAME)  # the node's own name: ~ at a name's start
         if key == ("rospy", "get_namespace") and not expr.args:
