@@ -12,7 +12,7 @@ from ...model.values import Value
 from . import rclpy
 from .api import Arg, PyFunction
 from .objects import Frame, Ref, Seq, param_type, plain_value, text_of
-from .values import Evaluator, argument
+from .values import Evaluator, argument, own_name
 
 
 def special_calls(ev: Evaluator, spec: PyFunction, call: ast.Call, frame: Frame,
@@ -39,14 +39,20 @@ def special_calls(ev: Evaluator, spec: PyFunction, call: ast.Call, frame: Frame,
         if node is None or (isinstance(node, ast.Constant) and node.value is None):
             return []
         return [replace(base, name=spec.fixed_name or "?")]
+    if spec.special == "smach-introspection":
+        server = _under(ev, argument(call, Arg(0, "server_name")), frame)
+        return [replace(base, name=f"{server}smach/container_init"),
+                *(replace(base, kind="publish", name=f"{server}smach/container_{topic}",
+                          type=f"smach_msgs/SmachContainer{kind}", queue_size=1)
+                  for topic, kind in (("structure", "Structure"), ("status", "Status")))]
     if spec.special == "reconfigure-server":
         return _reconfigure_server(ev, call, frame, base)
     if spec.special == "reconfigure-client":
-        server = text_of(evaluate(ev, argument(call, Arg(0, "name")), frame)).text
-        return [replace(base, name=f"{server}/set_parameters"),
-                replace(base, kind="subscribe", name=f"{server}/parameter_descriptions",
+        server = _under(ev, argument(call, Arg(0, "name")), frame)
+        return [replace(base, name=f"{server}set_parameters"),
+                replace(base, kind="subscribe", name=f"{server}parameter_descriptions",
                         type="dynamic_reconfigure/ConfigDescription"),
-                replace(base, kind="subscribe", name=f"{server}/parameter_updates",
+                replace(base, kind="subscribe", name=f"{server}parameter_updates",
                         type="dynamic_reconfigure/Config")]
     made: list[PrimitiveCall] = []
     if spec.special == "declare-parameters":
@@ -88,6 +94,17 @@ def special_calls(ev: Evaluator, spec: PyFunction, call: ast.Call, frame: Frame,
     if not made:
         made.append(replace(base, name="?"))
     return made
+
+
+def _under(ev: Evaluator, expr: ast.expr | None, frame: Frame) -> str:
+    """The prefix of names a library joins to the name it is given with ``/``: the node's
+    own name (``rospy.get_name()``) is its private namespace ``~``."""
+    text = own_name(text_of(evaluate(ev, expr, frame))).text or "?"
+    if text.startswith("~/"):
+        text = "~" + text[2:]
+    if text == "~":
+        return text
+    return text if text.endswith("/") else text + "/"
 
 
 def _reconfigure_server(ev: Evaluator, call: ast.Call, frame: Frame,
