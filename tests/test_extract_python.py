@@ -128,8 +128,10 @@ def test_rospy_services_and_parameters(ros1) -> None:
         ("write", "~debug", None, None, False, None, 43,
          (("if", "rospy.has_param('~debug')"),)),
         ("read", "frame_id", None, None, False, None, 44, ()),
-        ("read", "?", None, None, False, None, 45, ()),
+        # get_param(found), found = search_param('frame_id'): the parameter it found
+        ("read", "frame_id", None, None, False, None, 45, ()),
     ]
+    assert [c.searched for c in result.calls[-2:]] == [True, True]
 
 
 def test_parameter_valued_name(ros1) -> None:

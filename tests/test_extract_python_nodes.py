@@ -184,3 +184,40 @@ def test_rospy_init_node_on_two_branches(tmp_path) -> None:
     assert result.rosname == "left_driver"
     assert [d.code for d in result.diagnostics] == ["PY_SEVERAL_NODES"]
     assert result.nodes == []  # rospy: one node per process, whatever its name
+
+
+def test_own_name_followed_by_other_text_is_not_a_private_name(tmp_path) -> None:
+    """strands_executive's AbstractTaskServer: ``rospy.Service('%s_is_interruptible' %
+    self.name, ...)`` with ``name=rospy.get_name()`` is ``/wait_node_is_interruptible``,
+    a sibling of the node, not its private ``~_is_interruptible`` (which resolves to
+    ``/wait_node/_is_interruptible``): unknown there. Followed by ``/`` or by nothing the
+    node's name is still ``~``."""
+    result = run(tmp_path,
+                 "import rospy\nfrom std_srvs.srv import Empty\n"
+                 "rospy.init_node('wait_node')\n"
+                 "name = rospy.get_name()\n"
+                 "rospy.Service('%s_is_interruptible' % name, Empty, None)\n"
+                 "rospy.Service(name + '_create', Empty, None)\n"
+                 "rospy.Service(f'{name}/reset', Empty, None)\n"
+                 "rospy.Service(name, Empty, None)\n"
+                 "rospy.get_param(name + '/rate', 1)\n"
+                 "rospy.Service('~_literal', Empty, None)\n")
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("server", "?_is_interruptible"), ("server", "?_create"), ("server", "~reset"),
+        ("server", "~"), ("read", "~rate"), ("server", "~_literal")]
+
+
+def test_a_read_of_the_name_search_param_found_is_a_searched_read(tmp_path) -> None:
+    """naoqi_bridge's naoqi_joint_states.py: ``name = rospy.search_param('tf_prefix')``
+    then ``if name: rospy.get_param(name)`` reads the parameter the search found: a
+    searched read of ``tf_prefix``, not a read of an unknown name ('?', PY_DYNAMIC_NAME,
+    an unresolved-names finding)."""
+    result = run(tmp_path,
+                 "import rospy\n"
+                 "rospy.init_node('joints')\n"
+                 "found = rospy.search_param('tf_prefix')\n"
+                 "if found:\n"
+                 "    prefix = rospy.get_param(found, '')\n")
+    assert [(c.kind, c.name, c.searched, c.type, c.location.line) for c in result.calls] == [
+        ("read", "tf_prefix", True, None, 3), ("read", "tf_prefix", True, "str", 5)]
+    assert "PY_DYNAMIC_NAME" not in [d.code for d in result.diagnostics]

@@ -285,3 +285,21 @@ def test_an_included_file_outside_the_workspace_is_not_read(write_tree):
     assert [n.name for n in model.nodes] == []
     assert [(d.code, d.location.line) for d in model.diagnostics] == [
         ("LAUNCH_UNKNOWN_VALUE", 2), ("LAUNCH_UNKNOWN_VALUE", 3)]
+
+
+def test_a_typed_param_of_unknown_value_gets_the_model_type_name(write_tree):
+    """strands_navigation's manager.launch: ``<param name="white_list_file" value="$(arg
+    white_list_file)" type="string"/>`` with the argument unset. Its type stayed the
+    launch spelling "string", and parameter-type-mismatch reported "set as string but
+    read as str" against a node reading it with a str default."""
+    model = load_launch(write_tree, """
+        <launch>
+          <arg name="f" />
+          <param name="a" value="$(arg f)" type="string" />
+          <param name="b" value="$(arg f)" type="boolean" />
+          <param name="c" value="$(arg f)" type="Double" />
+          <param name="d" value="$(arg f)" />
+        </launch>
+        """)
+    assert [(p.name, p.value, p.type) for p in model.params] == [
+        ("/a", None, "str"), ("/b", None, "bool"), ("/c", None, "double"), ("/d", None, None)]

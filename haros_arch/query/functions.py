@@ -285,8 +285,10 @@ FUNCTIONS["same_setting"] = Function("same_setting", same_setting, 2, 2, charged
 # topics that rviz's tools publish when an operator clicks: 2D Pose Estimate, 2D Nav Goal
 # (ROS 1 and ROS 2) and Publish Point; nodes subscribe to them to wait for a person,
 # also in a robot's namespace (summit_xl's amcl in /summit_xl: /summit_xl/initialpose,
-# where the operator points the tool)
-_TOOL_INPUTS = ("/initialpose", "/move_base_simple/goal", "/goal_pose", "/clicked_point")
+# where the operator points the tool); and the command smach_viewer sends to a smach_ros
+# IntrospectionServer to set a state machine's initial state (<server>/smach/container_init)
+_TOOL_INPUTS = ("/initialpose", "/move_base_simple/goal", "/goal_pose", "/clicked_point",
+                "/smach/container_init")
 
 
 def is_tool_input(charge: Charge, name: Any) -> bool:

@@ -321,8 +321,10 @@ _HEAD = (r"^(\s*(?:(?:if|elif|while|for|with|except)\b[^#:'\"]*:\s*"
          r"|(?:else|try|finally)\s*:\s*)?)")
 _PRINT = re.compile(_HEAD + r"print\b(?!\s*\()(?!\s*=)(.*)$")
 _EXEC = re.compile(_HEAD + r"exec\s+(?!\()(.*)$")
-_EXCEPT = re.compile(r"^(\s*except\s+[^,:]+),\s*(\w+)\s*:")
-_OCTAL = re.compile(r"(?<![\w.])0([0-7]+)(?![\w.])")
+# ``except E, e:`` and ``except (E1, E2), e:``
+_EXCEPT = re.compile(r"^(\s*except\s+(?:\([^()]*\)|[^,:()]+)),\s*(\w+)\s*:")
+# ``010`` but not a float's exponent (``2e-06``)
+_OCTAL = re.compile(r"(?<![\w.])(?<![\d.][eE][-+])0([0-7]+)(?![\w.])")
 _LONG = re.compile(r"(?<![\w.])(\d+)[lL](?!\w)")
 _BACKTICK = re.compile(r"`([^`\n]*)`")
 _RAISE = re.compile(r"^(\s*raise\s+[\w.]+)\s*,\s*(.+)$")

@@ -65,6 +65,31 @@ ROWS: dict[tuple[str, str], PyFunction] = {
         "subscribe", name=None, fixed_type="tf2_msgs/TFMessage", special="tf-listener"),
     # message_filters.Subscriber(name, data_class, ...)
     ("message_filters", "Subscriber"): PyFunction("subscribe", type=Arg(1, "data_class")),
+    # smach_ros (noetic-devel): ROS states, the action server wrapper and the
+    # introspection server, named and typed as actionlib and rospy are
+    ("smach_ros", "SimpleActionState"): PyFunction(
+        "action-client", name=Arg(0, "action_name"), type=Arg(1, "action_spec")),
+    ("smach_ros", "ServiceState"): PyFunction(
+        "client", name=Arg(0, "service_name"), type=Arg(1, "service_spec")),
+    ("smach_ros", "MonitorState"): PyFunction(
+        "subscribe", name=Arg(0, "topic"), type=Arg(1, "msg_type")),
+    ("smach_ros", "ActionServerWrapper"): PyFunction(
+        "action-server", name=Arg(0, "server_name"), type=Arg(1, "action_spec")),
+    # IntrospectionServer(server_name, state, path): <server>/smach/container_init,
+    # container_structure and container_status
+    ("smach_ros", "IntrospectionServer"): PyFunction(
+        "subscribe", name=Arg(0, "server_name"),
+        fixed_type="smach_msgs/SmachContainerInitialStatusCmd", special="smach-introspection"),
+    # dynamic_reconfigure.server.Server(type, callback, namespace=""): in "~" (or the
+    # namespace given), a read of each parameter of the config (its package's
+    # cfg/*.cfg), two latched topics and its service
+    ("dynamic_reconfigure", "Server"): PyFunction(
+        "server", name=None, fixed_type="dynamic_reconfigure/Reconfigure",
+        callback=Arg(1, "callback"), special="reconfigure-server"),
+    # dynamic_reconfigure.client.Client(name, ...): the server's service and topics
+    ("dynamic_reconfigure", "Client"): PyFunction(
+        "client", fixed_type="dynamic_reconfigure/Reconfigure",
+        special="reconfigure-client"),
     # diagnostic_updater.Updater() publishes its status on /diagnostics (as roscpp's)
     ("diagnostic_updater", "Updater"): PyFunction(
         "publish", name=None, fixed_name="/diagnostics",

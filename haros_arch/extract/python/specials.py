@@ -11,8 +11,8 @@ from ...model.source import PrimitiveCall
 from ...model.values import Value
 from . import rclpy
 from .api import Arg, PyFunction
-from .objects import Frame, NewParameter, Seq, param_type, plain_value, text_of
-from .values import Evaluator, argument
+from .objects import Frame, NewParameter, Ref, Seq, param_type, plain_value, text_of
+from .values import Evaluator, argument, own_name
 
 
 def special_calls(ev: Evaluator, spec: PyFunction, call: ast.Call, frame: Frame,
@@ -39,6 +39,21 @@ def special_calls(ev: Evaluator, spec: PyFunction, call: ast.Call, frame: Frame,
         if node is None or (isinstance(node, ast.Constant) and node.value is None):
             return []
         return [replace(base, name=spec.fixed_name or "?")]
+    if spec.special == "smach-introspection":
+        server = _under(ev, argument(call, Arg(0, "server_name")), frame)
+        return [replace(base, name=f"{server}smach/container_init"),
+                *(replace(base, kind="publish", name=f"{server}smach/container_{topic}",
+                          type=f"smach_msgs/SmachContainer{kind}", queue_size=1)
+                  for topic, kind in (("structure", "Structure"), ("status", "Status")))]
+    if spec.special == "reconfigure-server":
+        return _reconfigure_server(ev, call, frame, base)
+    if spec.special == "reconfigure-client":
+        server = _under(ev, argument(call, Arg(0, "name")), frame)
+        return [replace(base, name=f"{server}set_parameters"),
+                replace(base, kind="subscribe", name=f"{server}parameter_descriptions",
+                        type="dynamic_reconfigure/ConfigDescription"),
+                replace(base, kind="subscribe", name=f"{server}parameter_updates",
+                        type="dynamic_reconfigure/Config")]
     made: list[PrimitiveCall] = []
     if spec.special == "declare-parameters":
         prefix = text_of(evaluate(ev, call.args[0] if call.args else argument(
@@ -90,6 +105,70 @@ def special_calls(ev: Evaluator, spec: PyFunction, call: ast.Call, frame: Frame,
     if not made:
         made.append(replace(base, name="?"))
     return made
+
+
+def _under(ev: Evaluator, expr: ast.expr | None, frame: Frame) -> str:
+    """The prefix of names a library joins to the name it is given with ``/``: the node's
+    own name (``rospy.get_name()``) is its private namespace ``~``."""
+    text = own_name(text_of(evaluate(ev, expr, frame))).text or "?"
+    if text.startswith("~/"):
+        text = "~" + text[2:]
+    if text == "~":
+        return text
+    return text if text.endswith("/") else text + "/"
+
+
+def _reconfigure_server(ev: Evaluator, call: ast.Call, frame: Frame,
+                        base: PrimitiveCall) -> list[PrimitiveCall]:
+    """A rospy dynamic_reconfigure server: in its namespace (``~``, or ``~<given>/``, or
+    an absolute one), a read of each parameter of its config class with the .cfg's
+    default (it writes them back as read: no write is said, as for roscpp's server),
+    its two latched topics (queue 10) and its ``set_parameters`` service. A config whose
+    .cfg is not found, or names parameters at run time, reads ``?`` there too."""
+    given = argument(call, Arg(2, "namespace"))
+    namespace = text_of(evaluate(ev, given, frame)).text if given is not None else ""
+    if not namespace or namespace == "~":
+        namespace = "~"
+    else:
+        if namespace[0] not in "/~":
+            namespace = "~" + namespace
+        namespace = (namespace + "/").replace("//", "/")
+    made: list[PrimitiveCall] = []
+    parameters, partial = _config_parameters(ev, evaluate(ev, argument(
+        call, Arg(0, "type")), frame))
+    plain = replace(base, callback=None)
+    for name, kind, default in parameters:
+        made.append(replace(plain, kind="read", name=namespace + name, type=kind,
+                            has_default=True, default=default))
+    if partial:
+        made.append(replace(plain, kind="read", name=namespace + "?", type=None))
+    for topic, kind in (("parameter_descriptions", "ConfigDescription"),
+                        ("parameter_updates", "Config")):
+        made.append(replace(plain, kind="publish", name=namespace + topic,
+                            type=f"dynamic_reconfigure/{kind}", latch=True, queue_size=10))
+    made.append(replace(base, name=namespace + "set_parameters"))
+    return made
+
+
+def _config_parameters(ev: Evaluator, config: object,
+                       ) -> tuple[list[tuple[str, str | None, object]], bool]:
+    """The parameters (name, type, default) of a generated config class
+    (``<package>.cfg.<Name>Config``), from its package's ``cfg/*.cfg``; and whether
+    some may be missing (the class or its .cfg not found, or a partial .cfg)."""
+    from ..cpp import reconfigure  # the .cfg reader the C++ extraction shares
+    parts = config.qualname.split(".") if isinstance(config, Ref) else []
+    if len(parts) < 3 or parts[-2] != "cfg":
+        return [], True
+    package = parts[-3]
+    root = ev.loader.workspace.find(package)
+    if root is None:
+        return [], True
+    found, _ = reconfigure.configs(root, package)
+    cfg = found.get(parts[-1])
+    if cfg is None:
+        return [], True
+    return ([(name, reconfigure.TYPES[kind][1] if kind in reconfigure.TYPES else None,
+              default) for name, kind, default in cfg.parameters], cfg.partial)
 
 
 def evaluate(ev: Evaluator, expr: ast.expr | None, frame: Frame) -> object:

@@ -49,8 +49,8 @@ from .qos import QoSProfiles
 from .scopes import MAX_UNROLL
 from .strings import from_plain, number, percent, plain, string_method
 
-__all__ = ["MAX_CALL_DEPTH", "MAX_UNROLL", "NAMESPACE", "Evaluator", "argument",
-           "unknown_params"]
+__all__ = ["MAX_CALL_DEPTH", "MAX_UNROLL", "NAMESPACE", "NODE_NAME", "Evaluator", "argument",
+           "own_name", "unknown_params"]
 
 MAX_EVAL_DEPTH = 60
 # the one evaluator's bounds for the values of one walk (a node's files); steps: every
@@ -59,6 +59,31 @@ LIMITS = ops.Limits(steps=500_000)
 # methods of an rclpy node that give its own name; in a name they are the private '~'
 NAME_METHODS = ("get_name", "get_fully_qualified_name")
 NAMESPACE = "node namespace"  # origin of the unknown get_namespace() gives
+NODE_NAME = "node name"  # origin of the unknown get_name() gives (see own_name)
+
+
+SEARCHED = "found by search_param: "  # origin of the name rospy.search_param(x) gives
+
+
+def searched_name(text: Value) -> str | None:
+    """``x`` when ``text`` is the name ``rospy.search_param(x)`` returned, else None."""
+    parts = text.parts
+    if len(parts) == 1 and isinstance(parts[0], Unknown) and parts[0].origin.startswith(
+            SEARCHED):
+        return parts[0].origin[len(SEARCHED):]
+    return None
+
+
+def own_name(text: Value) -> Value:
+    """A name that starts with the node's own name (``rospy.get_name()``, rclpy's
+    ``get_name()``), alone or followed by ``/``, is the node's private name: ``~`` and
+    ``~/x``. Followed by other text (``get_name() + '_status'``, a sibling of the node,
+    ``/cam_status``) or anywhere else, the node's name stays unknown."""
+    parts = text.parts
+    if parts and isinstance(parts[0], Unknown) and parts[0].origin == NODE_NAME and (
+            len(parts) == 1 or (isinstance(parts[1], str) and parts[1].startswith("/"))):
+        return Value.of("~", *parts[1:])
+    return text
 
 
 class _Over(Exception):
@@ -314,12 +339,20 @@ class Evaluator(Instances, QoSProfiles, Walker):
         if key in (("rospy", "get_param"), ("rospy", "get_param_cached")):
             name = argument(expr, rospy.ROWS[key].name)
             default = argument(expr, rospy.ROWS[key].value)
-            value = ParamValue(text_of(self.eval(name, frame)).text if name else "?",
+            value = ParamValue(own_name(text_of(self.eval(name, frame))).text if name else "?",
                                self.eval(default, frame) if default is not None else None)
             self.param_defaults[value.name] = value.default
             return value
+        if key == ("rospy", "search_param"):
+            # the full name of the parameter the search finds: a read of it is a
+            # searched read of that parameter (``searched_name``)
+            name = argument(expr, rospy.ROWS[key].name)
+            text = text_of(self.eval(name, frame)) if name is not None else None
+            if text is not None and text.is_known and text.text:
+                return Value.unknown(SEARCHED + text.text)
+            return Value.unknown("search_param")
         if key == ("rospy", "get_name") and not expr.args:
-            return Value.of("~")  # the node's own name: private names resolve to it
+            return Value.unknown(NODE_NAME)  # the node's own name: ~ at a name's start
         if key == ("rospy", "get_namespace") and not expr.args:
             return Value.unknown(NAMESPACE)  # relative names resolve in it
         if key == ("rospy", "resolve_name") and len(expr.args) == 1 and not expr.keywords:
@@ -345,7 +378,7 @@ class Evaluator(Instances, QoSProfiles, Walker):
 
     def _node_method(self, name: str, expr: ast.Call, frame: Frame) -> object:
         if name in NAME_METHODS and not expr.args:
-            return Value.of("~")  # the node's own name: as rospy.get_name()
+            return Value.unknown(NODE_NAME)  # the node's own name: as rospy.get_name()
         if name == "get_namespace" and not expr.args:
             return Value.unknown(NAMESPACE)
         if name in ("get_parameter", "declare_parameter", "get_parameter_or"):

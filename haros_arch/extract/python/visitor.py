@@ -50,7 +50,15 @@ from .objects import (
 from .qos import as_profile, with_policy
 from .scopes import MAX_UNROLL, MAX_UNROLL_OUTER
 from .specials import evaluate, param_name, special_calls, type_only
-from .values import MAX_CALL_DEPTH, NAMESPACE, Evaluator, argument, unknown_params
+from .values import (
+    MAX_CALL_DEPTH,
+    NAMESPACE,
+    Evaluator,
+    argument,
+    own_name,
+    searched_name,
+    unknown_params,
+)
 
 Conditions = tuple[Condition, ...]
 MAX_STEPS = 200_000
@@ -713,7 +721,7 @@ class Walker:
                 ev.declared[base.name.removeprefix("~")] = value
         if spec.kind == "read" and id(call) in self._converted:
             base.type = None
-        base.searched = spec.search
+        base.searched = spec.search or base.searched
         base.tested = (spec.tests and id(call) in self._tested) or (
             spec.kind in ("read", "declare") and not base.has_default
             and any(c in self._handled for c in conds))
@@ -746,7 +754,11 @@ class Walker:
                 default = ev.param_defaults.get(name)
                 if isinstance(default, Value) and default.is_known:
                     call.name_default = default.text
-        text = _in_namespace(text)
+        found = searched_name(text)
+        if found is not None:  # get_param(search_param('x')): the parameter found
+            call.name, call.searched = found, True
+            return
+        text = _in_namespace(own_name(text))
         if version == 2 and call.kind in _PARAM_KINDS:
             call.name = param_name(text)
         elif text.text.startswith("~/"):  # f"{get_name()}/x": the private name ~x

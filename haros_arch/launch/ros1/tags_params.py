@@ -29,6 +29,9 @@ Element = etree._Element
 MAX_PARAM_FILE = 2 * 1024 * 1024
 
 
+_TYPE_NAMES = {"string": "str", "boolean": "bool"}
+
+
 def tag_param(loader: Ros1Loader, element: Element, scope: Scope,
               local: bool = False) -> None:
     kind = (element.get("type") or "auto").lower().strip()
@@ -58,8 +61,9 @@ def tag_param(loader: Ros1Loader, element: Element, scope: Scope,
     # the command line the value comes from (textfile: the file's content, as cat gives it)
     command = raw.text if source == "command" else (
         f"cat {shlex.quote(raw.text)}" if source == "textfile" else None)
+    # a value not known here keeps the type= it is given, in the model's names
     declared = type_name(value) if value is not None else (
-        None if kind == "auto" else kind)
+        None if kind == "auto" else _TYPE_NAMES.get(kind, kind))
     if name.startswith("~") or local:
         scope.add_private(PrivateParam(name, value, declared, scope.conditions, where,
                                        source, command))
