@@ -314,6 +314,41 @@ def generate_launch_description():
     assert codes(model) == []
 
 
+def test_os_path_split_of_the_launch_file_path(write_tree):
+    # livox_ros_driver2's launch files: the config folder from os.path.split(...)[0]
+    model, root = run(write_tree, """
+from launch_ros.actions import Node
+
+here = os.path.split(os.path.realpath(__file__))[0] + '/'
+config = os.path.join(here + '../config', 'lidar.json')
+head, tail = os.path.split('a/b/c.txt')
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package='p', executable='e', name='n',
+             parameters=[{'config': config, 'head': head, 'tail': tail}]),
+    ])
+""")
+    assert {p.key: p.value for p in model.params} == {
+        "config": str(root / "src/pkg/launch") + "/../config/lidar.json",  # join keeps '..'
+        "head": "a/b", "tail": "c.txt"}
+    assert codes(model) == []
+
+
+def test_a_subscript_of_an_unknown_value_says_which(write_tree):
+    # a value not known statically, indexed: the diagnostic names the expression
+    model, _ = run(write_tree, """
+stem = os.path.splitext('robot.yaml')[0]
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package='p', executable='e', name='n', parameters=[{'stem': stem}]),
+    ])
+""")
+    messages = sorted(d.message for d in model.diagnostics if d.code == "LAUNCH_UNSUPPORTED")
+    assert messages and all("os.path.splitext('robot.yaml')[0]" in m for m in messages)
+
+
 def test_an_argument_with_a_space_stays_one_argument(write_tree):
     # ros2_control_demos' spawners: "--controller-ros-args", "-r ~/cmd_vel:=/cmd_vel"
     model, _ = run(write_tree, """

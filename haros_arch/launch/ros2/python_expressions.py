@@ -226,7 +226,8 @@ class Expressions(Walker):
                 return ops.subscript(value, _hashable(key))
             except ops.Refused:
                 return self.unsupported(node, f"{_source(node)} is not known statically")
-        return Unknown("subscript")
+        # which expression, as an attribute of an unknown value says (it was "subscript")
+        return Unknown(f"{_source(node)} (a subscript of a value not known statically)")
 
     def eval_Attribute(self, node: ast.Attribute, env: dict[str, Any]) -> Any:
         value = self.attribute(node, env)
