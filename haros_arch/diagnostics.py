@@ -333,6 +333,17 @@ CATALOGUE: dict[str, Entry] = {
         "handle), and that class's constructor is defined in a source of the other "
         "package: the ROS calls it makes on the node are not read. The node is "
         "'partial', so checks that claim something is absent do not decide on it."),
+    "CPP_BUILD_MACRO": Entry(
+        "warning", "{text}: under a condition on {macro}, which the package's CMake defines "
+        "({cmake}) and the extraction does not apply",
+        "The package's CMake files define a macro for the compiler (add_definitions, "
+        "add_compile_definitions, target_compile_definitions: a package built for ROS 1 "
+        "and ROS 2 from one tree, livox_ros_driver2's BUILDING_ROS2) and this source "
+        "chooses ROS calls with it (#if / #ifdef / #elif). The extraction applies the "
+        "macros of a compile_commands.json, not those of CMake commands, so these calls "
+        "may be missing or the other branch's read instead. The node is 'partial'; give "
+        "the analysis the workspace's compile_commands.json (colcon build "
+        "--cmake-args -DCMAKE_EXPORT_COMPILE_COMMANDS=ON) to read the build's code."),
     "CPP_CLASS_UNSEEN": Entry(
         "info", "{cls} of ROS package {package} is built here and its code is not read",
         "A ROS 1 node builds an object of a class of another ROS package (one that "

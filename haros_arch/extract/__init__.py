@@ -61,9 +61,11 @@ def extract_nodes(nodes: Sequence[Node], workspace: Workspace, *,
             cpp_batch.units.update(batch.units)
             cpp_batch.diagnostics.extend(batch.diagnostics)
         found.extend(_read_elsewhere(batch.all_diagnostics(), cpp, batch.results, workspace))
-        for node, result in zip(cpp, batch.results, strict=True):
-            found.extend(completeness(node, [*batch.diagnostics, *result.diagnostics],
-                                      workspace))
+        macros = _build_macros(cpp, workspace, compile_commands)
+        found.extend(d for said in macros for d in said)
+        for node, result, said in zip(cpp, batch.results, macros, strict=True):
+            found.extend(completeness(node, [*batch.diagnostics, *result.diagnostics,
+                                             *said], workspace))
     middle = time.perf_counter()
     for node in nodes:
         if node.language != "cpp":
@@ -73,6 +75,26 @@ def extract_nodes(nodes: Sequence[Node], workspace: Workspace, *,
     if timings is not None:
         timings["C++"] = timings.get("C++", 0.0) + middle - start
         timings["Python"] = timings.get("Python", 0.0) + time.perf_counter() - middle
+    return found
+
+
+def _build_macros(nodes: Sequence[Node], workspace: Workspace,
+                  compile_commands: Sequence[str] | None) -> list[list[Diagnostic]]:
+    """Per C++ node, the ROS calls its sources choose with a macro its package's CMake
+    defines (``cpp.build_macros``); none where a compile_commands.json gives the build's
+    macros."""
+    from .cpp import build_macros
+    from .cpp import compile_commands as commands
+
+    given = compile_commands if compile_commands is not None else commands.find(workspace)
+    if any(os.path.isfile(path) or os.path.isdir(path) for path in given):
+        return [[] for _ in nodes]
+    found: list[list[Diagnostic]] = []
+    for node in nodes:
+        paths = _paths(node, workspace)
+        package = workspace.package_of(paths[0]) if paths else None
+        found.append(build_macros.build_macro_calls(
+            paths, package.root if package is not None else None, workspace))
     return found
 
 
@@ -91,7 +113,7 @@ def cpp_sources(nodes: Sequence[Node], workspace: Workspace) -> list[str]:
 # read or parsed)
 _PARTIAL_CAUSES = {
     "cpp": ("CPP_CALL_MISSED", "CPP_ERROR_NEAR_CALL", "CPP_PARSE_FAILED", "FILE_UNREADABLE",
-            "CPP_NODE_PASSED", "CPP_NODE_TO_UNKNOWN", "CPP_CLASS_UNSEEN"),
+            "CPP_NODE_PASSED", "CPP_NODE_TO_UNKNOWN", "CPP_CLASS_UNSEEN", "CPP_BUILD_MACRO"),
     "python": ("PY_PARSE_ERROR", "PY_TOO_COMPLEX", "FILE_UNREADABLE", "PY_CLASS_UNSEEN"),
 }
 _PARTIAL_CODE = {"cpp": "CPP_NODE_PARTIAL", "python": "PY_NODE_PARTIAL"}

@@ -1,0 +1,88 @@
+"""ROS calls chosen with a macro the package's CMake defines (livox_ros_driver2's
+``add_definitions(-DBUILDING_ROS2)`` and ``#elif defined BUILDING_ROS2`` around its
+declarations and publishers): the extraction does not apply CMake's macros, so the node
+was read empty and complete (9 false "set but never read" warnings). It says so
+(CPP_BUILD_MACRO) and the node is partial; with a compile_commands.json it is not said."""
+
+from __future__ import annotations
+
+import json
+import os
+
+from conftest import package_xml
+
+from haros_arch.pipeline import Options, analyse
+from haros_arch.project import load
+from haros_arch.query.catalogue import load_catalogue, run_rule
+
+NODE = """
+#include <memory>
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+class Driver : public rclcpp::Node {
+public:
+  Driver() : Node("driver") {
+#ifdef BUILDING_ROS2
+    this->declare_parameter("frame_id", std::string("lidar"));
+    pub_ = create_publisher<std_msgs::msg::String>("points", 10);
+#endif
+  }
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+};
+int main(int argc, char ** argv) {
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<Driver>());
+}
+"""
+
+LAUNCH = """
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([Node(package='drv', executable='driver',
+                                   parameters=[{'frame_id': 'lidar'}])])
+"""
+
+
+def _model(write_tree, commands: bool):
+    files = {
+        "src/drv/package.xml": package_xml("drv", "ament_cmake").replace(
+            "</package>", "<depend>rclcpp</depend></package>"),
+        "src/drv/CMakeLists.txt": "cmake_minimum_required(VERSION 3.8)\nproject(drv)\n"
+                                  "if(ROS_EDITION STREQUAL \"ROS2\")\n"
+                                  "  add_definitions(-DBUILDING_ROS2)\nendif()\n"
+                                  "add_executable(driver src/driver.cpp)\n",
+        "src/drv/src/driver.cpp": NODE,
+        "src/drv/launch/drv.launch.py": LAUNCH,
+        "project.yaml": "project: p\nconfigurations:\n  c: [drv/launch/drv.launch.py]\n",
+    }
+    root = write_tree(files)
+    if commands:
+        source = root / "src/drv/src/driver.cpp"
+        entry = {"directory": str(root / "src"), "file": str(source),
+                 "command": f"c++ -DBUILDING_ROS2 -c {source}"}
+        (root / "src/compile_commands.json").write_text(json.dumps([entry]))
+    return analyse(load(str(root / "project.yaml")), {"PATH": os.environ.get("PATH", "")},
+                   Options(cache_dir=None))
+
+
+def test_calls_under_a_macro_the_cmake_defines_make_the_node_partial(write_tree) -> None:
+    model = _model(write_tree, False)
+    node = next(n for p in model.packages for n in p.nodes if n.executable == "driver")
+    assert node.completeness == "partial"
+    said = [d for d in model.diagnostics if d.code == "CPP_BUILD_MACRO"]
+    assert [(d.location.line, d.severity) for d in said] == [(8, "warning")]
+    assert "BUILDING_ROS2" in said[0].message and "CMakeLists.txt:4" in said[0].message
+    # its parameter is not said set and never read (the node may read it): undecided
+    rule = next(r for r in load_catalogue() if r.id == "parameter-set-not-read")
+    assert [f.rule for f in run_rule(rule, model)] == ["parameter-set-not-read-undecided"]
+
+
+def test_with_the_build_s_compile_commands_the_macro_is_applied(write_tree) -> None:
+    model = _model(write_tree, True)
+    node = next(n for p in model.packages for n in p.nodes if n.executable == "driver")
+    assert node.completeness == "complete"
+    assert ("publish", "points") in {(c.kind, c.name) for c in node.calls}
+    assert not [d for d in model.diagnostics if d.code == "CPP_BUILD_MACRO"]
