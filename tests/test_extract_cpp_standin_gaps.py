@@ -344,3 +344,21 @@ def test_ros1_video_capture_back_end_and_tf2_set_euler(write_tree) -> None:
     assert _errors(result) == []
     assert [(c.kind, c.name) for c in result.calls] == [
         ("publish", "~image_raw"), ("publish", "~init_pose")]
+
+
+def test_ros1_posix_strtok_r(write_tree) -> None:
+    """POSIX ``strtok_r`` (um7's covariance parameter) was undeclared by the stand-in C
+    library: an error in the function that reads the parameters, so the node was partial."""
+    result = _extract(write_tree, _source("ros1_strtok_r.cpp"), "catkin")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [("read", "~values"),
+                                                        ("publish", "sum")]
+
+
+def test_ros1_tf2_to_msg_of_linear_math_types(write_tree) -> None:
+    """``tf2::toMsg`` of a tf2::Quaternion is a geometry_msgs::Quaternion (and of a
+    tf2::Vector3 a geometry_msgs::Vector3): the stand-in gave back the tf2 type, an error in
+    the function that advertises (create_driver's odometry), so the node was partial."""
+    result = _extract(write_tree, _source("ros1_tf2_to_msg.cpp"), "catkin")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "odom")]

@@ -188,6 +188,7 @@ char* strrchr(const char* s, int c);
 char* strstr(const char* s, const char* t);
 char* strdup(const char* s);
 char* strtok(char* s, const char* delim);
+char* strtok_r(char* s, const char* delim, char** saveptr);
 char* strerror(int errnum);
 void* memcpy(void* d, const void* s, size_t n);
 void* memmove(void* d, const void* s, size_t n);

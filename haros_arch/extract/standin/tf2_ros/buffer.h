@@ -98,6 +98,19 @@ public:
 };
 double angle(const Quaternion& a, const Quaternion& b);
 template<class A, class B> void fromMsg(const A& a, B& b);
+// tf2_geometry_msgs: a LinearMath quaternion or vector becomes its geometry_msgs message,
+// whose header this stand-in does not include: the message's fields, and it converts to
+// the message type
+struct QuaternionMsg {
+  double x, y, z, w;
+  template<class M> operator M() const;
+};
+struct Vector3Msg {
+  double x, y, z;
+  template<class M> operator M() const;
+};
+QuaternionMsg toMsg(const Quaternion& q);
+Vector3Msg toMsg(const Vector3& v);
 template<class A> A toMsg(const A& a);
 template<class A, class B> B& toMsg(const A& a, B& b);
 template<class T> void convert(const T& a, T& b);
