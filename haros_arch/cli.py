@@ -29,6 +29,13 @@ if TYPE_CHECKING:
 EXIT_OK, EXIT_FINDINGS, EXIT_USAGE, EXIT_INTERNAL = 0, 1, 2, 3
 
 
+
+def make_console(**options: Any) -> Console:
+    """A console for our output: lines not wrapped, and no ``:name:`` emoji codes (a
+    reason's ``view_controller.cpp:100:`` is a file and line, not a hundred-points
+    sign)."""
+    return Console(soft_wrap=True, emoji=False, **options)
+
 def _parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="haros-arch",
@@ -295,7 +302,7 @@ def cmd_check(args: argparse.Namespace, out: Console, err: Console) -> int:
         console, handle = out, None
         if args.output:
             handle = open(args.output, "w", encoding="utf-8")  # noqa: SIM115
-            console = Console(file=handle, soft_wrap=True, no_color=True)
+            console = make_console(file=handle, no_color=True)
         try:
             print_check(checked, console, getattr(args, "verbose", True))
             if verbose:
@@ -684,8 +691,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     if args.command != "launch":
         select(getattr(args, "launch", []),
                dict(a.split(":=", 1) for a in getattr(args, "arg", [])))
-    out = Console(soft_wrap=True)
-    err = Console(stderr=True, soft_wrap=True)
+    out = make_console()
+    err = make_console(stderr=True)
     handlers = {"extract": cmd_extract, "check": cmd_check, "explain": cmd_explain,
                 "capture": cmd_capture, "compare": cmd_compare, "report": cmd_report,
                 "launch": cmd_launch, "query": cmd_query, "init": cmd_init,

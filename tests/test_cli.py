@@ -177,3 +177,35 @@ def test_check_text_counts_info_diagnostics_unless_verbose(write_tree):
     verbose = run("check", str(root / "project.yaml"), "--fail-on", "never", "-v")
     assert "pkg/src/n.cpp:4:" in verbose.stdout and "pkg/src/n.cpp:5:" in verbose.stdout
     assert "not listed" not in verbose.stdout
+
+
+def test_the_summary_says_when_launch_includes_were_not_read(tmp_path, write_tree):
+    """A configuration whose launch file includes a file the launch stage cannot read
+    (an installed package's) printed "every node's interface is known", though what the
+    include starts is not seen (webots_ros2's robot configurations: 0 nodes). It says how
+    many includes or actions were not read; and a reason's ``file:100:`` is not taken for
+    an emoji code (rviz2's model's reason printed a hundred-points emoji)."""
+    root = write_tree({
+        "src/app/package.xml": package_xml("app", build_type="ament_python"),
+        "src/app/setup.py": "from setuptools import setup\nsetup(name='app')\n",
+        "src/app/launch/app.launch.py": (
+            "from launch import LaunchDescription\n"
+            "from launch.actions import IncludeLaunchDescription\n"
+            "from launch.launch_description_sources import PythonLaunchDescriptionSource\n"
+            "from ament_index_python.packages import get_package_share_directory\n"
+            "def generate_launch_description():\n"
+            "    share = get_package_share_directory('vendor_sim')\n"
+            "    return LaunchDescription([IncludeLaunchDescription(\n"
+            "        PythonLaunchDescriptionSource(share + '/launch/sim.launch.py'))])\n"),
+    })
+    result = run("extract", str(root / "src"), "-o", str(tmp_path / "m.json"))
+    assert result.returncode == 0, result.stderr
+    assert "1 launch include(s) or action(s) not read" in result.stdout
+    assert "every node's interface is known" not in result.stdout
+
+    from haros_arch.cli import make_console
+
+    console = make_console()
+    with console.capture() as captured:
+        console.print("view_controller.cpp:100: C++ error")
+    assert "view_controller.cpp:100: C++ error" in captured.get()

@@ -124,6 +124,12 @@ def reconfiguring(config: Configuration, parameter: Parameter,
 _KNOWN: WeakKeyDictionary[Configuration, Known] = WeakKeyDictionary()
 
 
+def unread_launch(config: Configuration) -> list[LaunchItem]:
+    """The includes and launch actions the launch stage could not read: what they start
+    or set is not seen (``Known.unread``)."""
+    return list(_known(config).unread)
+
+
 def _known(config: Configuration) -> Known:
     return _per_configuration(_KNOWN, config, (len(config.nodes), len(config.links)), Known)
 

@@ -10,6 +10,7 @@ from rich.console import Console
 from ..model.diagnostic import SEVERITY_RANK, Diagnostic
 from ..model.model import Model
 from ..model.runtime import LAUNCH_WRITER, Configuration, NodeInstance, Parameter, Resource
+from ..query.absence import unread_launch
 from .escape import escape
 
 
@@ -75,7 +76,8 @@ def print_summary(model: Model, console: Console, verbose: bool = False) -> None
             ("parameters", config.parameters), ("links", config.links)))
         console.print(f"\n[bold]configuration {escape(config.name)}[/bold]: {counts}",
                       highlight=False)
-        _print_incomplete(config.incomplete_nodes, console, verbose)
+        _print_incomplete(config.incomplete_nodes, console, verbose,
+                          len(unread_launch(config)))
         if verbose:
             _print_everything(config, console)
     if not verbose and model.configurations:
@@ -84,9 +86,15 @@ def print_summary(model: Model, console: Console, verbose: bool = False) -> None
 
 
 def _print_incomplete(incomplete: list[NodeInstance], console: Console,
-                      verbose: bool) -> None:
+                      verbose: bool, unread: int = 0) -> None:
+    if unread:
+        # what an include or action the launch stage could not read starts is not known
+        console.print(f"  {unread} launch include(s) or action(s) not read: the nodes "
+                      "they start are not seen, so checks that claim an absence do not "
+                      "decide", highlight=False)
     if not incomplete:
-        console.print("  every node's interface is known", highlight=False)
+        console.print("  every node's interface is known" if not unread else
+                      "  every node seen has a known interface", highlight=False)
         return
     by_kind: dict[str, int] = defaultdict(int)
     for instance in incomplete:
