@@ -90,11 +90,14 @@ def _build_macros(nodes: Sequence[Node], workspace: Workspace,
     if any(os.path.isfile(path) or os.path.isdir(path) for path in given):
         return [[] for _ in nodes]
     found: list[list[Diagnostic]] = []
+    macros: dict[str, dict[str, tuple[str, int]]] = {}  # per package root: read once
     for node in nodes:
         paths = _paths(node, workspace)
         package = workspace.package_of(paths[0]) if paths else None
-        found.append(build_macros.build_macro_calls(
-            paths, package.root if package is not None else None, workspace))
+        root = package.root if package is not None else ""
+        if root and root not in macros:
+            macros[root] = build_macros.cmake_macros(root, workspace)
+        found.append(build_macros.build_macro_calls(paths, macros.get(root, {}), workspace))
     return found
 
 

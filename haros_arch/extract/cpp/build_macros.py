@@ -74,7 +74,7 @@ def skipped_calls(text: str, macros: dict[str, tuple[str, int]]
         if match is None:
             continue
         kind, rest = match.group(1), match.group(2)
-        if kind in ("if", "ifdef", "ifndef", "elif", "else", "endif") and current is not None:
+        if current is not None:  # every directive ends the open branch
             blocks.append((start, number, current))
         if kind == "endif":
             current = None
@@ -89,13 +89,10 @@ def skipped_calls(text: str, macros: dict[str, tuple[str, int]]
     return found
 
 
-def build_macro_calls(sources: list[str], package_root: str | None,
+def build_macro_calls(sources: list[str], macros: dict[str, tuple[str, int]],
                       workspace: Workspace) -> list[Diagnostic]:
     """``CPP_BUILD_MACRO`` at the first ROS call of each block of the node's sources that
-    only a macro of its package's CMake files turns on."""
-    if not package_root:
-        return []
-    macros = cmake_macros(package_root, workspace)
+    only one of ``macros`` (its package's CMake files', ``cmake_macros``) turns on."""
     if not macros:
         return []
     found: list[Diagnostic] = []

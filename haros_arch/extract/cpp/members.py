@@ -116,6 +116,13 @@ class MemberWrites:
         self._read_where(lambda index: spelling in self._texts[index])  # type: ignore[operator]
         return self.count.get(key_of(member), 0)
 
+    def naming(self, member: Cursor) -> list[Cursor]:
+        """The file's functions whose text names ``member`` (all of those whose text is
+        not at hand)."""
+        spelling = member.spelling.encode("utf-8")
+        return [function for function, text in zip(self._functions, self._texts, strict=True)
+                if text is None or spelling in text]
+
     def assignments(self, member: Cursor) -> list[tuple[Cursor, Cursor]]:
         """(value, function) of each write that replaces ``member``'s value (``=``,
         ``reset(p)``) in the file's functions but its destructors, on any object."""

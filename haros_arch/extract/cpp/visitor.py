@@ -1216,10 +1216,7 @@ class CallFinder:
                 value, Scope(function, self.macros, self.source, self.sites), depth + 1)
         if assigned:
             return None
-        spelling = member.spelling
-        for function in self.functions:
-            if spelling not in "".join(t.spelling for t in function.get_tokens()):
-                continue
+        for function in self.members.naming(member):
             for node in function.walk_preorder():
                 if node.kind != CursorKind.CALL_EXPR:
                     continue

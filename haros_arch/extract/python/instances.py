@@ -111,6 +111,7 @@ class Instances(Calls):
                 seen[target.attr] = value
             frame.instance.attrs[target.attr] = value
         elif isinstance(target, ast.Attribute) and (
+                target.attr == "depth" or target.attr in rclpy.POLICIES) and (
                 holder := as_profile(self.eval(target.value, frame))) is not None:
             # a policy set on a profile held by a local or an attribute of ``self`` (a
             # preset too: ``qos = qos_profile_sensor_data`` then ``qos.reliability = ..``)
