@@ -60,6 +60,71 @@ MAX_OVERLOADS = 8  # the declarations of an overloaded name read
 _PARENT = slice(16, 24)  # data[1] of a CXCursor: kind, xdata (4 bytes each), data[3]
 
 
+class _RawString(ctypes.Structure):
+    """libclang's ``CXString``, read and disposed of where it is asked for (the
+    binding's own makes three objects and a finaliser per string)."""
+
+    _fields_ = [("data", ctypes.c_void_p), ("flags", c_uint)]
+
+
+class _Raw:
+    """The few libclang functions every node asks, declared once more on a handle of
+    our own (the binding's declarations convert every result through Python
+    callbacks): a cursor's spelling, location and extent, a range's ends, and a
+    location's file, line, column and offset, written into buffers kept here (one
+    call at a time: a worker process walks one unit at a time, on one thread)."""
+
+    def __init__(self) -> None:
+        lib = ctypes.CDLL(conf.lib._name)  # the library the binding loaded
+        self.spelling = lib.clang_getCursorSpelling
+        self.spelling.argtypes, self.spelling.restype = [Cursor], _RawString
+        self.text = lib.clang_getCString
+        self.text.argtypes, self.text.restype = [_RawString], ctypes.c_char_p
+        self.dispose = lib.clang_disposeString
+        self.dispose.argtypes, self.dispose.restype = [_RawString], None
+        self.location = lib.clang_getCursorLocation
+        self.location.argtypes, self.location.restype = [Cursor], _Place
+        self.extent = lib.clang_getCursorExtent
+        self.extent.argtypes, self.extent.restype = [Cursor], _Span
+        self.start = lib.clang_getRangeStart
+        self.start.argtypes, self.start.restype = [SourceRange], _Place
+        self.end = lib.clang_getRangeEnd
+        self.end.argtypes, self.end.restype = [SourceRange], _Place
+        self.where = lib.clang_getInstantiationLocation
+        self.where.argtypes = [SourceLocation, *[ctypes.c_void_p] * 4]
+        self.where.restype = None
+        self.handle, self.line, self.column, self.offset = (
+            ctypes.c_void_p(), c_uint(), c_uint(), c_uint())
+        self.out = tuple(ctypes.addressof(value) for value in (
+            self.handle, self.line, self.column, self.offset))
+
+    def spelled(self, cursor: Cursor) -> str | None:
+        """What ``Cursor.spelling`` gives (None for a null string, as the binding)."""
+        found = self.spelling(cursor)
+        text = self.text(found)
+        self.dispose(found)
+        return None if text is None else text.decode("utf8")
+
+    def instantiation(self, location: SourceLocation) -> tuple[int | None, int, int, int]:
+        """The address of the location's file handle (None: no file), its line, column
+        and offset."""
+        self.where(location, *self.out)
+        return self.handle.value, self.line.value, self.column.value, self.offset.value
+
+    def file_handle(self, location: SourceLocation) -> int | None:
+        self.where(location, self.out[0], None, None, None)
+        return self.handle.value
+
+
+_RAW: list[_Raw] = []  # made on first use: the library is loaded by then
+
+
+def _raw() -> _Raw:
+    if not _RAW:
+        _RAW.append(_Raw())
+    return _RAW[0]
+
+
 class cached(Generic[Value]):
     """An attribute computed on first use and then kept in the instance's ``__dict__``
     (``functools.cached_property`` takes a lock on every first use, a third of the cost
@@ -107,15 +172,15 @@ class _Unit:
     def file(self, handle: File | None) -> _File | None:
         if handle is None:
             return None
-        return self.handle(ctypes.cast(handle.obj, ctypes.c_void_p).value, handle.obj)
+        return self.handle(ctypes.cast(handle.obj, ctypes.c_void_p).value)
 
-    def handle(self, key: int | None, obj: Any) -> _File | None:
-        """The one ``_File`` of the file handle ``obj`` whose address is ``key``."""
+    def handle(self, key: int | None) -> _File | None:
+        """The one ``_File`` of the file handle whose address is ``key``."""
         if not key:
             return None
         found = self.files.get(key)
         if found is None:
-            found = self.files[key] = _File(obj)
+            found = self.files[key] = _File(ctypes.cast(key, c_object_p))
             found._tu = self.tu
         return found
 
@@ -186,13 +251,11 @@ def by_file(judge: Callable[[str], Value]) -> Callable[[Any], Value | None]:
     None for a location in no file. Each file is told by its handle (one libclang call
     per location, no ``File`` or ``SourceLocation`` made), so a visit over the thousands
     of cursors of a unit's headers asks each file's name once."""
-    lib = conf.lib
-    handle = c_object_p()
+    file_handle = _raw().file_handle
     judged: dict[int | None, Value | None] = {None: None}
 
     def of(location: Any) -> Value | None:
-        lib.clang_getInstantiationLocation(location, ctypes.byref(handle), None, None, None)
-        key = ctypes.cast(handle, ctypes.c_void_p).value
+        key = file_handle(location)
         if key not in judged:
             assert key is not None  # None is judged above: no file
             judged[key] = judge(File(ctypes.cast(key, c_object_p)).name)
@@ -249,13 +312,8 @@ class _Place(SourceLocation):
         (no ``File`` made each time); its four parts are then the location's own
         attributes (``file``, ``line``, ``column``, ``offset``: no call to read one)."""
         if self._data is None:
-            handle, line, column, offset = c_object_p(), c_uint(), c_uint(), c_uint()
-            conf.lib.clang_getInstantiationLocation(
-                self, ctypes.byref(handle), ctypes.byref(line), ctypes.byref(column),
-                ctypes.byref(offset))
-            data = self._data = (
-                self._unit.handle(ctypes.cast(handle, ctypes.c_void_p).value, handle),
-                line.value, column.value, offset.value)
+            key, line, column, offset = _raw().instantiation(self)
+            data = self._data = (self._unit.handle(key), line, column, offset)
             facts = self.__dict__
             facts["file"], facts["line"], facts["column"], facts["offset"] = data
         return self._data
@@ -283,12 +341,6 @@ class _Place(SourceLocation):
         return (where[0].name if where[0] is not None else "", where[3])
 
 
-def _place(location: SourceLocation, unit: _Unit) -> _Place:
-    place = _Place.from_buffer_copy(location)
-    place._unit = unit
-    return place
-
-
 class _Span(SourceRange):
     """A source range whose ends are asked once."""
 
@@ -296,11 +348,15 @@ class _Span(SourceRange):
 
     @cached
     def start(self) -> _Place:
-        return _place(SourceRange.start.fget(self), self._unit)
+        place: _Place = _raw().start(self)
+        place._unit = self._unit
+        return place
 
     @cached
     def end(self) -> _Place:
-        return _place(SourceRange.end.fget(self), self._unit)
+        place: _Place = _raw().end(self)
+        place._unit = self._unit
+        return place
 
 
 class _Type(Type):
@@ -475,15 +531,17 @@ class Node(Cursor):
 
     @cached
     def spelling(self) -> str:
-        return Cursor.spelling.fget(self)
+        return _raw().spelled(self)  # type: ignore[return-value]  # as the binding's
 
     @cached
     def location(self) -> _Place:
-        return _place(Cursor.location.fget(self), self._unit)
+        place: _Place = _raw().location(self)
+        place._unit = self._unit
+        return place
 
     @cached
     def extent(self) -> _Span:
-        span = _Span.from_buffer_copy(Cursor.extent.fget(self))
+        span: _Span = _raw().extent(self)
         span._unit = self._unit
         return span
 
