@@ -37,7 +37,7 @@ from clang.cindex import (
     conf,
 )
 
-__all__ = ["Node", "by_file", "children_in", "overloads", "root"]
+__all__ = ["Node", "by_file", "children_in", "overloads", "release", "root"]
 
 _VISIT = callbacks["cursor_visit"]
 Value = TypeVar("Value")
@@ -169,6 +169,16 @@ class _Unit:
             self.nodes[raw] = found
         return found
 
+    def release(self) -> None:
+        """Forget every node and what each keeps (the unit is done with): the nodes
+        refer to the unit and to each other, cycles the reference counts alone would
+        never free; broken here, the unit's millions of objects go at once, with no
+        collection of the cyclic garbage collector walking them."""
+        for node in self.nodes.values():
+            node.__dict__.clear()
+        self.nodes.clear()
+        self.files.clear()
+
     def file(self, handle: File | None) -> _File | None:
         if handle is None:
             return None
@@ -244,6 +254,12 @@ def root(tu: TranslationUnit) -> Node:
     node = _Unit(tu).node(tu.cursor)
     assert node is not None
     return node
+
+
+def release(node: Node) -> None:
+    """Free the nodes of ``node``'s unit (``_Unit.release``): no node of it may be used
+    after this."""
+    node._unit.release()
 
 
 def by_file(judge: Callable[[str], Value]) -> Callable[[Any], Value | None]:

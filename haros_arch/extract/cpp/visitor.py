@@ -30,7 +30,7 @@ from .call_sites import CallSites
 from .call_types import CallTypes, factory_made, row_class
 from .call_types import callee as callee_of_call
 from .conditions import ConditionReader
-from .cursors import children_in, root
+from .cursors import children_in, release, root
 from .expressions import binary_operator
 from .handles import (
     Namespaces,
@@ -157,6 +157,7 @@ class CallFinder:
         # owner (``owner_of``) is the class whose constructor names it (``: Node("x")``)
         # or the free function that makes it (``make_shared<rclcpp::Node>("x")`` in main)
         self.node_names: list[tuple[str, str]] = []
+        self._root: Any = None  # the unit's cursor as a node (``run``), until ``release``
         self._owner: str | None = None  # of the function being walked
         # the placeholder that starts a parameter of the constructor being walked, whose
         # calls named after it are made only where the class is constructed (``_emit``)
@@ -189,7 +190,8 @@ class CallFinder:
         self.opaque: list[tuple[str, int]] = []
 
     def run(self) -> None:
-        self.functions = list(self._definitions(root(self.tu), top=True))
+        self._root = root(self.tu)
+        self.functions = list(self._definitions(self._root, top=True))
         self.sites = self.namespaces.sites = CallSites(self.functions, self.macros, self.source,
                                                        external=True, main=self.tu.spelling)
         self.wrappers.build()
@@ -232,6 +234,14 @@ class CallFinder:
                 call.name_param in self._declared
             ):
                 call.name_default, call.default_param = self._declared[call.name_param]
+
+    def release(self) -> None:
+        """Free the unit's nodes (``cursors.release``) once everything is read from
+        them: no cursor of the unit may be used after this."""
+        if self._root is not None:
+            release(self._root)
+            self._root = None
+        self.functions = []
 
     def _constants(self, member: Cursor, sites: int, reads: set[Key]) -> list[object] | None:
         """The member's writes in the file besides the reads (``sites`` of them, made at
