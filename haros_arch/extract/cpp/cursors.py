@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import ctypes
 import sys
+import threading
 from collections.abc import Callable, Iterator
 from ctypes import c_uint
 from typing import Any, Generic, TypeVar
@@ -72,7 +73,7 @@ class _Raw:
     our own (the binding's declarations convert every result through Python
     callbacks): a cursor's spelling, location and extent, a range's ends, and a
     location's file, line, column and offset, written into buffers kept here (one
-    call at a time: a worker process walks one unit at a time, on one thread)."""
+    ``_Raw`` per thread)."""
 
     def __init__(self) -> None:
         lib = ctypes.CDLL(conf.lib._name)  # the library the binding loaded
@@ -116,13 +117,15 @@ class _Raw:
         return self.handle.value
 
 
-_RAW: list[_Raw] = []  # made on first use: the library is loaded by then
+_RAW = threading.local()  # each thread's own (its buffers), made on first use
 
 
 def _raw() -> _Raw:
-    if not _RAW:
-        _RAW.append(_Raw())
-    return _RAW[0]
+    try:
+        found: _Raw = _RAW.raw
+    except AttributeError:
+        found = _RAW.raw = _Raw()
+    return found
 
 
 class cached(Generic[Value]):
