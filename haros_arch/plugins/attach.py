@@ -54,6 +54,7 @@ from ..model.source import Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK
 from ..share import share_source
 from ..workspace import Workspace
+from . import behavior_trees
 from .hosts import (
     EXPORTED,
     EXTENDS,
@@ -141,6 +142,9 @@ def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance
                     out.extend(_load(choice, slot, instance, index, workspace, models,
                                      params, config, owned, made, loaded, decl))
     out.extend(ros1_controllers(config, started, index, params, workspace, models, owned))
+    out.extend(behavior_trees.attach(config, started, params, workspace,
+                                     lambda instance, reason: own_partial(instance, reason,
+                                                                          owned)))
     return out
 
 

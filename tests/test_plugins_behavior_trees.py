@@ -1,0 +1,194 @@
+"""A BehaviorTree.CPP tree host (nav2's bt_navigator) gets the calls of the BT nodes its
+tree files instantiate (plugins.behavior_trees)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from haros_arch.graph import build
+from haros_arch.launch.model import LaunchModel, NodeDecl, ParamDecl
+from haros_arch.model import Configuration, Location, Node
+from haros_arch.workspace import scan
+
+HEADER = """#include "behaviortree_cpp/bt_factory.h"
+namespace my_bt {
+class GoThere : public nav2_behavior_tree::BtActionNode<my_msgs::action::GoThere>
+{
+public:
+  GoThere(const std::string & n, const std::string & a, const BT::NodeConfiguration & c);
+};
+class CancelGo : public BtCancelActionNode<my_msgs::action::GoThere> {};
+class Clear
+  : public nav2_behavior_tree::BtServiceNode<my_msgs::srv::Clear>
+{
+};
+class Watch : public BT::ConditionNode
+{
+public:
+  static BT::PortsList providedPorts()
+  {
+    return {
+      BT::InputPort<double>("level", "a level"),
+      BT::InputPort<std::string>(
+        "watch_topic", "/watched", "Topic watched"),
+    };
+  }
+};
+}  // namespace my_bt
+"""
+
+SOURCE = """#include "my_bt/nodes.hpp"
+namespace my_bt {
+Clear::Clear(const std::string & name, const BT::NodeConfiguration & conf)
+: BtServiceNode<my_msgs::srv::Clear>(name, conf, "clear_all")
+{
+}
+Watch::Watch(const std::string & name, const BT::NodeConfiguration & conf)
+: BT::ConditionNode(name, conf)
+{
+  std::string topic;
+  getInput("watch_topic", topic);
+  topic_ = topic;
+  sub_ = node_->create_subscription<std_msgs::msg::Bool>(topic_, 10, cb);
+  pub_ = node_->create_publisher<std_msgs::msg::String>("watch_state", 10);
+}
+}  // namespace my_bt
+
+BT_REGISTER_NODES(factory)
+{
+  BT::NodeBuilder builder =
+    [](const std::string & name, const BT::NodeConfiguration & config)
+    {
+      return std::make_unique<my_bt::GoThere>(
+        name, "go_there", config);
+    };
+  factory.registerBuilder<my_bt::GoThere>("GoThere", builder);
+  BT::NodeBuilder cancel =
+    [](const std::string & name, const BT::NodeConfiguration & config)
+    {
+      return std::make_unique<my_bt::CancelGo>(name, "go_there", config);
+    };
+  factory.registerBuilder<my_bt::CancelGo>("CancelGo", cancel);
+  factory.registerNodeType<my_bt::Clear>("Clear");
+  factory.registerNodeType<my_bt::Watch>("Watch");
+}
+"""
+
+TREE = """<root BTCPP_format="4" main_tree_to_execute="Main">
+  <BehaviorTree ID="Main">
+    <Sequence>
+      <Watch level="0.5"/>
+      <GoThere goal="{goal}"/>
+      <Action ID="GoThere" server_name="other_go"/>
+      <Fallback>
+        <Clear/>
+        <Clear service_name="{from_board}"/>
+        <CancelGo/>
+      </Fallback>
+      <Unregistered/>
+    </Sequence>
+  </BehaviorTree>
+  <TreeNodesModel><Action ID="NotInTheTree"/></TreeNodesModel>
+</root>
+"""
+
+
+def _workspace(tmp_path: Path, tree: str = TREE) -> Path:
+    package = tmp_path / "my_bt"
+    (package / "src").mkdir(parents=True)
+    (package / "include" / "my_bt").mkdir(parents=True)
+    (package / "trees").mkdir()
+    (package / "package.xml").write_text(
+        '<package format="3"><name>my_bt</name><version>1.0.0</version>'
+        "<description>x</description><maintainer email='a@b.c'>a</maintainer>"
+        "<license>x</license><buildtool_depend>ament_cmake</buildtool_depend>"
+        "<depend>behaviortree_cpp</depend><export><build_type>ament_cmake</build_type>"
+        "</export></package>")
+    (package / "CMakeLists.txt").write_text(
+        "cmake_minimum_required(VERSION 3.8)\nproject(my_bt)\n"
+        "add_library(my_bt_nodes SHARED src/nodes.cpp)\n")
+    (package / "include" / "my_bt" / "nodes.hpp").write_text(HEADER)
+    (package / "src" / "nodes.cpp").write_text(SOURCE)
+    (package / "trees" / "main.xml").write_text(tree)
+    return package / "trees" / "main.xml"
+
+
+def _config(tmp_path: Path, tree: str = TREE, libraries: object = ("my_bt_nodes",)):
+    path = _workspace(tmp_path, tree)
+    workspace = scan([str(tmp_path)])
+    navigator = Node("nav2_bt_navigator", "bt_navigator")
+    where = Location("bringup", "bringup/params.yaml", 4, 0)
+    launch = LaunchModel(
+        nodes=[NodeDecl("/nav/bt_navigator", "nav2_bt_navigator", "bt_navigator", "/nav/",
+                        ros_version=2)],
+        params=[ParamDecl("/nav/bt_navigator/plugin_lib_names", list(libraries),
+                          location=where),
+                ParamDecl("/nav/bt_navigator/default_nav_to_pose_bt_xml", str(path),
+                          location=where)])
+    return build(Configuration("c"), launch, workspace, {navigator.name: navigator})
+
+
+def _links(config):
+    return sorted((link.kind, link.resource.name, link.call.type) for link in config.links
+                  if link.node.name == "/nav/bt_navigator" and "/_action/" not in
+                  link.resource.name)
+
+
+def test_tree_nodes_make_their_calls_on_the_navigator(tmp_path):
+    config = _config(tmp_path)
+    assert _links(config) == [
+        ("action-client", "/nav/go_there", "my_msgs/action/GoThere"),  # builder default
+        ("action-client", "/nav/other_go", "my_msgs/action/GoThere"),  # server_name
+        ("client", "/nav/?", "my_msgs/srv/Clear"),  # from the blackboard: unknown
+        ("client", "/nav/clear_all", "my_msgs/srv/Clear"),  # the base's default
+        ("publish", "/nav/watch_state", "std_msgs/msg/String"),
+        ("subscribe", "/watched", "std_msgs/msg/Bool"),  # the port's default
+    ]
+    # a tag no library registers: a diagnostic at its line, the instance partial
+    (unknown,) = [d for d in config.diagnostics if d.code == "BT_NODE_UNKNOWN"]
+    assert unknown.location.line == 12 and "Unregistered" in unknown.message
+    instance = config.node("/nav/bt_navigator")
+    assert instance.completeness == "partial"
+    assert any("Unregistered" in r for r in instance.completeness_reasons)
+    # nav2_behavior_tree (its built-in nodes) is not in this workspace: said so
+    assert any("nav2_behavior_tree" in r for r in instance.completeness_reasons)
+
+
+def test_a_port_given_in_the_tag_names_the_topic(tmp_path):
+    tree = TREE.replace('<Watch level="0.5"/>', '<Watch watch_topic="/mine"/>')
+    assert ("subscribe", "/mine", "std_msgs/msg/Bool") in _links(_config(tmp_path, tree))
+
+
+def test_a_bad_tree_file_is_a_diagnostic_with_its_line_and_the_host_is_partial(tmp_path):
+    config = _config(tmp_path, TREE.replace("</Fallback>", ""))
+    (bad,) = [d for d in config.diagnostics if d.code == "BT_XML_SYNTAX"]
+    assert bad.location.file.endswith("main.xml") and bad.location.line > 0
+    assert _links(config) == []
+    instance = config.node("/nav/bt_navigator")
+    assert any("cannot be read" in r for r in instance.completeness_reasons)
+
+
+def test_a_library_not_found_is_a_diagnostic_and_its_nodes_unknown(tmp_path):
+    config = _config(tmp_path, libraries=("elsewhere_nodes",))
+    codes = sorted({d.code for d in config.diagnostics if d.code.startswith("BT_")})
+    assert codes == ["BT_LIBRARY_NOT_FOUND", "BT_NODE_UNKNOWN"]
+    assert _links(config) == []
+    assert config.node("/nav/bt_navigator").completeness == "partial"
+
+
+def test_a_modelled_navigator_without_the_tree_sources_is_partial_not_complete(tmp_path):
+    # bt_navigator from its interface model, neither nav2_behavior_tree nor
+    # nav2_bt_navigator (its default trees) in the workspace: its tree nodes' calls
+    # are not known, so the instance says so
+    (tmp_path / "empty").mkdir()
+    navigator = Node("nav2_bt_navigator", "bt_navigator", completeness="model",
+                     model="jazzy/nav2_bt_navigator 1.3.0")
+    launch = LaunchModel(nodes=[NodeDecl("/bt_navigator", "nav2_bt_navigator",
+                                         "bt_navigator", ros_version=2)])
+    config = build(Configuration("c"), launch, scan([str(tmp_path)]),
+                   {navigator.name: navigator})
+    instance = config.node("/bt_navigator")
+    assert instance.completeness == "partial"
+    reasons = " ".join(instance.completeness_reasons)
+    assert "nav2_behavior_tree" in reasons and "default_nav_to_pose_bt_xml" in reasons
+    assert navigator.completeness == "model"  # the shared model is not touched
