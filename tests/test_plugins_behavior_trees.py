@@ -34,6 +34,17 @@ public:
     };
   }
 };
+using Trig = std_srvs::srv::Trigger;
+class Pause : public BT::ControlNode
+{
+public:
+  static BT::PortsList providedPorts()
+  {
+    return {BT::InputPort<std::string>("pause_service_name", "Name of the service"),
+      BT::InputPort<std::string>("other", "described")};
+  }
+};
+class Updater : public BT::DecoratorNode {};
 }  // namespace my_bt
 """
 
@@ -51,6 +62,18 @@ Watch::Watch(const std::string & name, const BT::NodeConfiguration & conf)
   topic_ = topic;
   sub_ = node_->create_subscription<std_msgs::msg::Bool>(topic_, 10, cb);
   pub_ = node_->create_publisher<std_msgs::msg::String>("watch_state", 10);
+}
+Pause::Pause(const std::string & name, const BT::NodeConfiguration & conf)
+: BT::ControlNode(name, conf)
+{
+  getInput("pause_service_name", pause_name_);
+  srv_ = node_->create_service<Trig>(pause_name_, cb);
+}
+void Updater::initialize()
+{
+  std::string topic_new;
+  node_->get_parameter_or<std::string>("updater_topic", topic_new, "goal_update");
+  sub_ = node_->create_subscription<geometry_msgs::msg::PoseStamped>(topic_new, 10, cb);
 }
 }  // namespace my_bt
 
@@ -71,6 +94,8 @@ BT_REGISTER_NODES(factory)
   factory.registerBuilder<my_bt::CancelGo>("CancelGo", cancel);
   factory.registerNodeType<my_bt::Clear>("Clear");
   factory.registerNodeType<my_bt::Watch>("Watch");
+  factory.registerNodeType<my_bt::Pause>("Pause");
+  factory.registerNodeType<my_bt::Updater>("Updater");
 }
 """
 
@@ -192,3 +217,17 @@ def test_a_modelled_navigator_without_the_tree_sources_is_partial_not_complete(t
     reasons = " ".join(instance.completeness_reasons)
     assert "nav2_behavior_tree" in reasons and "default_nav_to_pose_bt_xml" in reasons
     assert navigator.completeness == "model"  # the shared model is not touched
+
+
+def test_a_port_without_default_is_unknown_and_a_node_parameter_names_a_topic(tmp_path):
+    # InputPort<std::string>(name, description): no default, so a service named by it
+    # is '?' unless the tag gives it; an alias (``using Trig = ...``) gives the type; a
+    # topic from the node's get_parameter_or is the parameter's value, else its default
+    tree = TREE.replace("<Unregistered/>", '<Pause><Updater><Watch/></Updater></Pause>')
+    links = _links(_config(tmp_path, tree))
+    assert ("server", "/nav/?", "std_srvs/srv/Trigger") in links
+    assert ("subscribe", "/nav/goal_update", "geometry_msgs/msg/PoseStamped") in links
+    assert ("read", "/nav/bt_navigator/updater_topic", "string") in links
+    tree = tree.replace("<Pause>", '<Pause pause_service_name="pause">')
+    assert ("server", "/nav/pause", "std_srvs/srv/Trigger") in _links(_config(tmp_path / "b",
+                                                                           tree))

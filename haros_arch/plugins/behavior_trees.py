@@ -72,7 +72,9 @@ _MADE = re.compile(r"make_(?:unique|shared)\s*<\s*([\w:]+)\s*>\s*\(\s*\w+\s*,\s*
 _BASE = r"(?:[\w:]*::)?(BtActionNode|BtCancelActionNode|BtServiceNode)\s*<\s*([\w:]+)\s*>"
 _MADE_CALL = re.compile(r"\bcreate_(subscription|publisher|service|client)\s*<\s*([\w:]+)\s*>"
                         r"\s*\(\s*(\"[^\"]*\"|[\w.>\-]+)")
-_MEMBER_DEF = re.compile(r"^[^\s#/].*?\b(\w+)\s*::\s*~?\w+\s*\(", re.MULTILINE)
+# ``Class::member(`` from the first column, after its return type: a member defined
+_MEMBER_DEF = re.compile(r"^(?![\s#/:,])(?:[\w:<>*&]+\s+)*(\w+)\s*::\s*~?\w+\s*\(",
+                         re.MULTILINE)
 _KIND = {"subscription": "subscribe", "publisher": "publish", "service": "server",
          "client": "client"}
 
@@ -88,8 +90,9 @@ class Registered:
     default: str | None = None  # the action / service name the builder or base is given
     base: str | None = None  # BtActionNode, BtCancelActionNode, BtServiceNode
     type: str | None = None  # the base's template argument, as an interface name
-    # its own calls: (kind, type, literal name or None, port the name is read from)
-    calls: list[tuple[str, str | None, str | None, str | None]] = field(default_factory=list)
+    # its own calls: kind, type, and where the name comes from: ("literal", name),
+    # ("port", port) or ("parameter", parameter of the node, its default); None: unknown
+    calls: list[tuple[str, str | None, tuple[str, ...] | None]] = field(default_factory=list)
     ports: dict[str, str] = field(default_factory=dict)  # port defaults (strings)
 
 
@@ -168,9 +171,11 @@ def _read_class(each: Registered, code: str, everything: str) -> None:
                                r"\s*\(\s*\w+\s*,\s*\w+\s*,\s*\"([^\"]*)\"", code)
             each.default = passed.group(1) if passed else None
         return
+    # InputPort<std::string>(name, default, description): a default only where a
+    # description follows it (with two arguments the second is the description)
     for port, default in re.findall(
             r"InputPort\s*<\s*std::string\s*>\s*\(\s*\"(\w+)\"\s*,\s*"
-            r"(?:std::string\s*\(\s*)?\"([^\"]*)\"\s*\)?\s*,", everything):
+            r"(?:std::string\s*\(\s*)?\"([^\"]*)\"\s*(?:\)\s*)?,\s*\"", everything):
         each.ports.setdefault(port, default)
     owners = [(m.start(), m.group(1)) for m in _MEMBER_DEF.finditer(code)]
     for made in _MADE_CALL.finditer(code):
@@ -178,21 +183,29 @@ def _read_class(each: Registered, code: str, everything: str) -> None:
         if owner is not None and owner != short and owner in _classes_of(code):
             continue  # another registered class's code in the same file
         kind, cpp, given = _KIND[made.group(1)], made.group(2), made.group(3)
-        if given.startswith('"'):
-            each.calls.append((kind, interface_name(cpp), given[1:-1], None))
-            continue
-        each.calls.append((kind, interface_name(cpp), None,
-                           _port_read(given.split(".")[-1].split(">")[-1], code)))
+        if "::" not in cpp:  # an alias: ``using Trigger = std_srvs::srv::Trigger;``
+            alias = re.search(rf"\busing\s+{re.escape(cpp)}\s*=\s*([\w:]+)\s*;", everything)
+            cpp = alias.group(1) if alias else cpp
+        source = ("literal", given[1:-1]) if given.startswith('"') else _name_source(
+            given.split(".")[-1].split(">")[-1], code)
+        each.calls.append((kind, interface_name(cpp), source))
 
 
-def _port_read(variable: str, code: str, depth: int = 3) -> str | None:
-    """The input port a variable's value is read from: ``getInput("port", variable)``, or
-    through the variable it is assigned from (``topic_name_ = topic_new;``)."""
+def _name_source(variable: str, code: str, depth: int = 3) -> tuple[str, ...] | None:
+    """Where a variable's value comes from: the input port ``getInput("port", variable)``
+    reads, or the node parameter ``get_parameter_or("name", variable, "default")`` reads
+    (nav2's GoalUpdater), also through the variable it is assigned from
+    (``topic_name_ = topic_new;``); None when not known."""
     for _ in range(depth):
-        read = re.search(rf"getInput\s*(?:<[^>]*>)?\s*\(\s*\"(\w+)\"\s*,\s*"
-                         rf"{re.escape(variable)}\s*\)", code)
+        name = re.escape(variable)
+        read = re.search(rf"getInput\s*(?:<[^>]*>)?\s*\(\s*\"(\w+)\"\s*,\s*{name}\s*\)",
+                         code)
         if read is not None:
-            return read.group(1)
+            return ("port", read.group(1))
+        parameter = re.search(r"get_parameter_or\s*(?:<[^>]*>)?\s*\(\s*\"([\w.]+)\"\s*,\s*"
+                              rf"{name}\s*,\s*(?:std::string\s*\(\s*)?\"([^\"]*)\"", code)
+        if parameter is not None:
+            return ("parameter", parameter.group(1), parameter.group(2))
         assigned = re.findall(rf"(?<![\w.>]){re.escape(variable)}\s*=\s*(\w+)\s*;", code)
         if len(set(assigned)) != 1:
             return None
@@ -320,7 +333,7 @@ def _host_calls(host: TreeHost, instance: NodeInstance, params: Any, workspace: 
             for ident, each in library.items():
                 registered.setdefault(ident, each)
     calls: list[PrimitiveCall] = []
-    seen: set[tuple[str, str, str | None]] = set()
+    seen: set[tuple[str, str, str | None, str | None]] = set()
     for parameter, package, relative in host.trees:
         given = _param(params, base + parameter)
         path = _tree_path(given, package, relative, workspace)
@@ -348,7 +361,7 @@ def _host_calls(host: TreeHost, instance: NodeInstance, params: Any, workspace: 
                                f"({tag.location.file}:{tag.location.line})")
                 continue
             for call in _tag_calls(tag, chosen):
-                key = (call.kind, call.name, call.type)
+                key = (call.kind, call.name, call.type, call.name_param)
                 if key not in seen:
                     seen.add(key)
                     calls.append(call)
@@ -384,9 +397,18 @@ def _tag_calls(tag: Tag, each: Registered) -> list[PrimitiveCall]:
         return [PrimitiveCall("client", _port(tag, "service_name", each.default), each.type,
                               location=tag.location, origin="plugin")]
     out = []
-    for kind, type_, literal, port in each.calls:
-        name = literal if literal is not None else (
-            _port(tag, port, each.ports.get(port)) if port else UNKNOWN_MARK)
+    for kind, type_, source in each.calls:
+        if source is not None and source[0] == "parameter":
+            # named by the node's parameter (the graph puts in its value, else the
+            # default), which the node reads
+            out.append(PrimitiveCall(kind, UNKNOWN_MARK, type_,  # type: ignore[arg-type]
+                                     location=tag.location, origin="plugin",
+                                     name_param=source[1], name_default=source[2]))
+            out.append(PrimitiveCall("read", source[1], "string", location=tag.location,
+                                     origin="plugin", has_default=True, default=source[2]))
+            continue
+        name = source[1] if source is not None and source[0] == "literal" else (
+            _port(tag, source[1], each.ports.get(source[1])) if source else UNKNOWN_MARK)
         out.append(PrimitiveCall(kind, name, type_, location=tag.location,  # type: ignore[arg-type]
                                  origin="plugin"))
     return out
