@@ -206,7 +206,10 @@ def test_a_modelled_navigator_without_the_tree_sources_is_partial_not_complete(t
     # nav2_bt_navigator (its default trees) in the workspace: its tree nodes' calls
     # are not known, so the instance says so
     (tmp_path / "empty").mkdir()
-    navigator = Node("nav2_bt_navigator", "bt_navigator", completeness="model",
+    # the model is partial already, with as many reasons as a node keeps: the trees'
+    # come first all the same
+    navigator = Node("nav2_bt_navigator", "bt_navigator", completeness="partial",
+                     completeness_reasons=[f"model reason {i}" for i in range(5)],
                      model="jazzy/nav2_bt_navigator 1.3.0")
     launch = LaunchModel(nodes=[NodeDecl("/bt_navigator", "nav2_bt_navigator",
                                          "bt_navigator", ros_version=2)])
@@ -216,7 +219,8 @@ def test_a_modelled_navigator_without_the_tree_sources_is_partial_not_complete(t
     assert instance.completeness == "partial"
     reasons = " ".join(instance.completeness_reasons)
     assert "nav2_behavior_tree" in reasons and "default_nav_to_pose_bt_xml" in reasons
-    assert navigator.completeness == "model"  # the shared model is not touched
+    assert "nav2_behavior_tree" in instance.completeness_reasons[0]
+    assert len(navigator.completeness_reasons) == 5  # the shared model is not touched
 
 
 def test_a_port_without_default_is_unknown_and_a_node_parameter_names_a_topic(tmp_path):
@@ -231,3 +235,20 @@ def test_a_port_without_default_is_unknown_and_a_node_parameter_names_a_topic(tm
     tree = tree.replace("<Pause>", '<Pause pause_service_name="pause">')
     assert ("server", "/nav/pause", "std_srvs/srv/Trigger") in _links(_config(tmp_path / "b",
                                                                            tree))
+
+
+def test_a_navigator_of_another_class_runs_trees_not_read(tmp_path):
+    path = _workspace(tmp_path)
+    navigator = Node("nav2_bt_navigator", "bt_navigator")
+    launch = LaunchModel(
+        nodes=[NodeDecl("/bt_navigator", "nav2_bt_navigator", "bt_navigator", ros_version=2)],
+        params=[ParamDecl("/bt_navigator/plugin_lib_names", ["my_bt_nodes"]),
+                ParamDecl("/bt_navigator/default_nav_to_pose_bt_xml", str(path)),
+                ParamDecl("/bt_navigator/default_nav_through_poses_bt_xml", str(path)),
+                ParamDecl("/bt_navigator/navigators", ["navigate_to_pose", "cover"]),
+                ParamDecl("/bt_navigator/cover.plugin", "opennav_coverage::Navigator")])
+    config = build(Configuration("c"), launch, scan([str(tmp_path)]),
+                   {navigator.name: navigator})
+    reasons = config.node("/bt_navigator").completeness_reasons
+    assert any("navigator cover (opennav_coverage::Navigator)" in r for r in reasons)
+    assert not any("navigate_to_pose" in r for r in reasons)

@@ -291,7 +291,7 @@ def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance
         if host is None:
             continue
         calls, reasons = _host_calls(host, instance, params, workspace, config.diagnostics)
-        for reason in reasons:
+        for reason in reversed(reasons[:5]):  # each goes first: the first stays first
             partial(instance, reason)
         out.append((instance, calls))
     return out
@@ -332,6 +332,7 @@ def _host_calls(host: TreeHost, instance: NodeInstance, params: Any, workspace: 
                 continue
             for ident, each in library.items():
                 registered.setdefault(ident, each)
+    reasons.extend(_other_navigators(host, base, params))
     calls: list[PrimitiveCall] = []
     seen: set[tuple[str, str, str | None, str | None]] = set()
     for parameter, package, relative in host.trees:
@@ -366,6 +367,30 @@ def _host_calls(host: TreeHost, instance: NodeInstance, params: Any, workspace: 
                     seen.add(key)
                     calls.append(call)
     return calls, list(dict.fromkeys(reasons))
+
+
+def _other_navigators(host: TreeHost, base: str, params: Any) -> list[str]:
+    """Why the host runs trees not read: a navigator of its list (``<id>.plugin``, the
+    default class for a default id) that is not one whose trees the row names."""
+    if host.navigators is None:
+        return []
+    parameter, known = host.navigators
+    listed = _param(params, base + parameter)
+    if listed is None:
+        return []
+    ids = listed.value if isinstance(listed.value, list) else [listed.value]
+    out = []
+    for ident in ids[:200]:
+        if not isinstance(ident, str) or UNKNOWN_MARK in ident:
+            out.append(f"{parameter}: a navigator not known statically")
+            continue
+        typed = _param(params, f"{base}{ident}.plugin")
+        cls = typed.value if typed is not None else dict(known).get(ident)
+        if (ident, cls) not in known and cls not in dict(known).values():
+            where = (typed or listed).launch_location
+            out.append(f"navigator {ident} ({cls or '?'}) runs behavior trees not read "
+                       f"({where.file}:{where.line})")
+    return out
 
 
 def _tree_path(given: Parameter | None, package: str, relative: str,

@@ -374,6 +374,9 @@ class TreeHost:
     libraries: str
     builtin: tuple[str, ...]
     trees: tuple[tuple[str, str, str], ...]  # (parameter, share package, share path)
+    # the parameter listing the host's navigators, and the navigators (id, class) whose
+    # trees ``trees`` names: another navigator runs trees of its own, not read
+    navigators: tuple[str, tuple[tuple[str, str], ...]] | None = None
 
 
 # nav2_bt_navigator (bt_navigator.cpp: BT_BUILTIN_PLUGINS, the libraries of
@@ -386,7 +389,10 @@ TREE_HOSTS: tuple[TreeHost, ...] = (
                  ("default_nav_to_pose_bt_xml", "nav2_bt_navigator",
                   "behavior_trees/navigate_to_pose_w_replanning_and_recovery.xml"),
                  ("default_nav_through_poses_bt_xml", "nav2_bt_navigator",
-                  "behavior_trees/navigate_through_poses_w_replanning_and_recovery.xml"))),
+                  "behavior_trees/navigate_through_poses_w_replanning_and_recovery.xml")),
+             ("navigators", (("navigate_to_pose", "nav2_bt_navigator::NavigateToPoseNavigator"),
+                             ("navigate_through_poses",
+                              "nav2_bt_navigator::NavigateThroughPosesNavigator")))),
 )
 
 
