@@ -120,7 +120,7 @@ TREE = """<root BTCPP_format="4" main_tree_to_execute="Main">
 
 def _workspace(tmp_path: Path, tree: str = TREE) -> Path:
     package = tmp_path / "my_bt"
-    (package / "src").mkdir(parents=True)
+    (package / "src").mkdir(parents=True, exist_ok=True)
     (package / "include" / "my_bt").mkdir(parents=True)
     (package / "trees").mkdir()
     (package / "package.xml").write_text(
@@ -252,3 +252,23 @@ def test_a_navigator_of_another_class_runs_trees_not_read(tmp_path):
     reasons = config.node("/bt_navigator").completeness_reasons
     assert any("navigator cover (opennav_coverage::Navigator)" in r for r in reasons)
     assert not any("navigate_to_pose" in r for r in reasons)
+
+
+def test_included_files_are_read_and_an_undefined_subtree_is_said(tmp_path):
+    tree = """<root BTCPP_format="4" main_tree_to_execute="Main">
+  <include path="../more/recovery.xml"/>
+  <BehaviorTree ID="Main">
+    <Sequence><SubTree ID="Recovery"/><SubTree ID="Elsewhere"/></Sequence>
+  </BehaviorTree>
+</root>
+"""
+    more = tmp_path / "my_bt" / "more"
+    more.mkdir(parents=True)
+    (more / "recovery.xml").write_text(
+        '<root><BehaviorTree ID="Recovery"><GoThere server_name="recover"/></BehaviorTree>'
+        '<include path="missing.xml"/></root>')
+    config = _config(tmp_path, tree)
+    assert _links(config) == [("action-client", "/nav/recover", "my_msgs/action/GoThere")]
+    reasons = " ".join(config.node("/nav/bt_navigator").completeness_reasons)
+    assert "subtree Elsewhere not defined" in reasons and "Recovery not" not in reasons
+    assert "include missing.xml not read" in reasons

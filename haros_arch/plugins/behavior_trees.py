@@ -229,10 +229,55 @@ class Tag:
     location: Location
 
 
-def read_tree(path: str, workspace: Workspace,
-              found: list[Diagnostic]) -> tuple[list[Tag], list[str]] | None:
-    """The node tags of a tree file (and the files it includes, not read); None when it
-    cannot be read (a diagnostic says why)."""
+@dataclass
+class Tree:
+    """What the files of one tree hold: node tags, the trees they define, the subtrees
+    they run, and what could not be read (reasons)."""
+
+    tags: list[Tag] = field(default_factory=list)
+    defined: set[str] = field(default_factory=set)
+    subtrees: list[Tag] = field(default_factory=list)
+    reasons: list[str] = field(default_factory=list)
+
+
+MAX_INCLUDES = 32  # files read for one tree (its includes, theirs, ...)
+
+
+def read_tree(path: str, workspace: Workspace, found: list[Diagnostic]) -> Tree | None:
+    """The tree of a file and of the files it includes (``<include path="..."/>``,
+    relative to the including file as BehaviorTree.CPP reads it); None when the file
+    itself cannot be read (a diagnostic says why)."""
+    tree = Tree()
+    waiting: list[str] = [path]
+    seen: set[str] = set()
+    while waiting and len(seen) < MAX_INCLUDES:
+        each = os.path.realpath(waiting.pop(0))
+        if each in seen:
+            continue
+        seen.add(each)
+        includes = _read_file(each, workspace, found, tree)
+        if includes is None:
+            if each == os.path.realpath(path):
+                return None
+            tree.reasons.append(f"behavior tree {workspace.relpath(each)} cannot be read")
+            continue
+        for element, line in includes:
+            given = element.get("path", "")
+            target = os.path.normpath(os.path.join(os.path.dirname(each), given))
+            if not given or element.get("ros_pkg") or not (
+                    os.path.isfile(target) and workspace.readable(target)):
+                tree.reasons.append(f"behavior tree include {given or '?'} not read "
+                                    f"({workspace.relpath(each)}:{line})")
+                continue
+            waiting.append(target)
+    if waiting:
+        tree.reasons.append(f"behavior tree includes beyond {MAX_INCLUDES} files not read")
+    return tree
+
+
+def _read_file(path: str, workspace: Workspace, found: list[Diagnostic],
+               tree: Tree) -> list[tuple[etree._Element, int]] | None:
+    """Add one file's tags to ``tree``; its include elements, None when not read."""
     where = workspace.location(path)
     data, problems = read_bytes(path, where)
     found.extend(problems)
@@ -245,26 +290,32 @@ def read_tree(path: str, workspace: Workspace,
         found.append(diag.make("BT_XML_SYNTAX", workspace.location(path, line, column),
                                detail=err.msg))
         return None
-    tags: list[Tag] = []
-    includes: list[str] = []
+    includes: list[tuple[etree._Element, int]] = []
     for element in _elements(root):
         tag = element.tag
         if not isinstance(tag, str):
             continue
         line = element.sourceline if isinstance(element.sourceline, int) else 0
         if tag == "include":
-            includes.append(f"{element.get('path', '?')} ({workspace.relpath(path)}:{line})")
+            includes.append((element, line))
             continue
+        if tag == "BehaviorTree":
+            tree.defined.add(element.get("ID", ""))
         if tag in _STRUCTURE:
             continue
         ident = element.get("ID", "") if tag in _GENERIC_TAGS else tag
-        if not ident or ident in _BUILTIN_IDS or tag in ("SubTree", "SubTreePlus"):
-            continue
         attributes = {str(k): str(v) for k, v in element.attrib.items()}
-        tags.append(Tag(ident, attributes, workspace.location(path, line, 0)))
-        if len(tags) >= MAX_TREE_ELEMENTS:
+        if tag in ("SubTree", "SubTreePlus"):
+            tree.subtrees.append(Tag(ident, attributes, workspace.location(path, line, 0)))
+            continue
+        if not ident or ident in _BUILTIN_IDS:
+            continue
+        tree.tags.append(Tag(ident, attributes, workspace.location(path, line, 0)))
+        if len(tree.tags) >= MAX_TREE_ELEMENTS:
+            tree.reasons.append(f"behavior tree {workspace.relpath(path)}: more than "
+                                f"{MAX_TREE_ELEMENTS} nodes, the rest not read")
             break
-    return tags, includes
+    return includes
 
 
 def _elements(root: etree._Element) -> Iterator[etree._Element]:
@@ -350,10 +401,13 @@ def _host_calls(host: TreeHost, instance: NodeInstance, params: Any, workspace: 
         if read is None:
             reasons.append(f"behavior tree {workspace.relpath(path)} cannot be read")
             continue
-        tags, includes = read
-        for included in includes:
-            reasons.append(f"behavior tree include {included} not read")
-        for tag in tags:
+        reasons.extend(read.reasons)
+        for subtree in read.subtrees:
+            if subtree.id not in read.defined:
+                where = subtree.location
+                reasons.append(f"behavior subtree {subtree.id or '?'} not defined in the "
+                               f"files read ({where.file}:{where.line})")
+        for tag in read.tags:
             chosen = registered.get(tag.id)
             if chosen is None:
                 found.append(diag.make("BT_NODE_UNKNOWN", tag.location, id=tag.id,
