@@ -272,3 +272,24 @@ def test_included_files_are_read_and_an_undefined_subtree_is_said(tmp_path):
     reasons = " ".join(config.node("/nav/bt_navigator").completeness_reasons)
     assert "subtree Elsewhere not defined" in reasons and "Recovery not" not in reasons
     assert "include missing.xml not read" in reasons
+
+
+def test_plansys2_bt_action_node_is_a_tree_host_of_its_plugins_and_file(tmp_path):
+    path = _workspace(tmp_path)
+    node = Node("plansys2_bt_actions", "bt_action_node")
+    decl = NodeDecl("/move", "plansys2_bt_actions", "bt_action_node", ros_version=2)
+    launch = LaunchModel(nodes=[decl], params=[
+        ParamDecl("/move/plugins", ["my_bt_nodes"]),
+        ParamDecl("/move/bt_xml_file", str(path))])
+    config = build(Configuration("c"), launch, scan([str(tmp_path)]), {node.name: node})
+    names = {(link.kind, link.resource.name) for link in config.links
+             if link.node.name == "/move"}
+    assert {("action-client", "/go_there"), ("client", "/clear_all")} <= names
+    # no built-in library, so only the unregistered tag makes it partial
+    assert [r.split(" (")[0] for r in config.node("/move").completeness_reasons] == [
+        "behavior tree node Unregistered has no registered class found"]
+    # without its file the tree is not known
+    launch = LaunchModel(nodes=[decl], params=[ParamDecl("/move/plugins", ["my_bt_nodes"])])
+    config = build(Configuration("c"), launch, scan([str(tmp_path)]), {node.name: node})
+    assert config.node("/move").completeness_reasons == [
+        "behavior tree bt_xml_file not set: the tree is not known"]

@@ -391,7 +391,9 @@ def _host_calls(host: TreeHost, instance: NodeInstance, params: Any, workspace: 
         path = _tree_path(given, package, relative, workspace)
         if path is None:
             what = given.value if given is not None else f"{package}/{relative}"
-            reasons.append(f"behavior tree {parameter} ({what}) not found or not known")
+            reasons.append(f"behavior tree {parameter} ({what}) not found or not known"
+                           if given is not None or package else
+                           f"behavior tree {parameter} not set: the tree is not known")
             if given is not None and isinstance(given.value, str) \
                     and UNKNOWN_MARK not in given.value:
                 found.append(diag.make("BT_TREE_NOT_FOUND", given.launch_location,
@@ -450,7 +452,7 @@ def _other_navigators(host: TreeHost, base: str, params: Any) -> list[str]:
 def _tree_path(given: Parameter | None, package: str, relative: str,
                workspace: Workspace) -> str | None:
     if given is None:
-        owner = workspace.packages.get(package)
+        owner = workspace.packages.get(package) if package else None
         return share_map(owner, workspace).get(relative) if owner is not None else None
     value = given.value
     if not isinstance(value, str) or UNKNOWN_MARK in value or not os.path.isabs(value):

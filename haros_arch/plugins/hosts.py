@@ -373,7 +373,8 @@ class TreeHost:
     executables: tuple[str, ...]
     libraries: str
     builtin: tuple[str, ...]
-    trees: tuple[tuple[str, str, str], ...]  # (parameter, share package, share path)
+    # (parameter, share package, share path of the default; "" "": no default)
+    trees: tuple[tuple[str, str, str], ...]
     # the parameter listing the host's navigators, and the navigators (id, class) whose
     # trees ``trees`` names: another navigator runs trees of its own, not read
     navigators: tuple[str, tuple[tuple[str, str], ...]] | None = None
@@ -393,6 +394,11 @@ TREE_HOSTS: tuple[TreeHost, ...] = (
              ("navigators", (("navigate_to_pose", "nav2_bt_navigator::NavigateToPoseNavigator"),
                              ("navigate_through_poses",
                               "nav2_bt_navigator::NavigateThroughPosesNavigator")))),
+    # PlanSys2's BT action executor (plansys2_bt_actions/src/plansys2_bt_actions/
+    # BTAction.cpp): the libraries of ``plugins``, the tree of ``bt_xml_file`` (no
+    # default), the node itself on the blackboard
+    TreeHost("plansys2_bt_actions", ("bt_action_node",), "plugins", (),
+             (("bt_xml_file", "", ""),)),
 )
 
 
