@@ -144,6 +144,27 @@ CATALOGUE: dict[str, Entry] = {
         "The parameter that gives the plugin's class (``<name>.plugin``, ``<name>.type``, "
         "``base_global_planner``, a spawner's parameter file) is not set or its value is "
         "not known statically; the host instance is partial."),
+    "BT_XML_SYNTAX": Entry(
+        "error", "behavior tree file is not well-formed XML: {detail}",
+        "A BehaviorTree.CPP tree file that a tree host (nav2's bt_navigator) runs could "
+        "not be parsed; the calls of its nodes are unknown and the host instance is "
+        "partial."),
+    "BT_NODE_UNKNOWN": Entry(
+        "warning", "behavior tree node {id} run by {host} has no registered class found",
+        "No BT plugin library the host loads (BT_REGISTER_NODES in the libraries of the "
+        "analysed packages) registers this tree ID: its calls are unknown and the host "
+        "instance is partial."),
+    "BT_LIBRARY_NOT_FOUND": Entry(
+        "warning", "behavior tree library {library} loaded by {host} is not built by an "
+        "analysed package",
+        "The host's plugin library list names a library that no library target of an "
+        "analysed package depending on BehaviorTree.CPP builds with BT_REGISTER_NODES; "
+        "the nodes it registers are unknown and the host instance is partial."),
+    "BT_TREE_NOT_FOUND": Entry(
+        "warning", "behavior tree file {path} run by {host} cannot be found",
+        "The parameter naming the tree file gives a path that is neither in the "
+        "workspace nor in an installed package; its nodes' calls are unknown and the "
+        "host instance is partial."),
     "PLUGIN_PARAM_FILE": Entry(
         "warning", "parameter file {path} of a controller spawner cannot be read",
         "A controller_manager spawner's --param-file names a file that does not exist, "

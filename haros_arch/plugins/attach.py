@@ -54,6 +54,7 @@ from ..model.source import Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK
 from ..share import share_source
 from ..workspace import Workspace
+from . import behavior_trees
 from .hosts import (
     EXPORTED,
     EXTENDS,
@@ -141,6 +142,9 @@ def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance
                     out.extend(_load(choice, slot, instance, index, workspace, models,
                                      params, config, owned, made, loaded, decl))
     out.extend(ros1_controllers(config, started, index, params, workspace, models, owned))
+    out.extend(behavior_trees.attach(config, started, params, workspace,
+                                     lambda instance, reason: own_partial(
+                                         instance, reason, owned, first=True)))
     return out
 
 
@@ -396,9 +400,12 @@ def _loads(node: Node) -> str:
             "calls are not known here")
 
 
-def own_partial(instance: NodeInstance, reason: str, owned: set[int]) -> None:
+def own_partial(instance: NodeInstance, reason: str, owned: set[int],
+                first: bool = False) -> None:
     """Mark ``instance`` partial without touching the node model other instances share:
-    the instance gets its own copy first (``owned`` holds the ids of those that have)."""
+    the instance gets its own copy first (``owned`` holds the ids of those that have).
+    ``first``: the reason goes before those the node model has (which keep only a few):
+    what the configuration adds to a node already partial is said."""
     if instance.node is None:
         return
     if id(instance) not in owned:
@@ -406,6 +413,9 @@ def own_partial(instance: NodeInstance, reason: str, owned: set[int]) -> None:
         node.completeness_reasons = list(node.completeness_reasons)
         instance.node = node
         owned.add(id(instance))
+    if first and reason not in instance.node.completeness_reasons:
+        instance.node.completeness_reasons.insert(0, reason)
+        del instance.node.completeness_reasons[5:]  # as mark_partial keeps them
     instance.node.mark_partial(reason)
 
 

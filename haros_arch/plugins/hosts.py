@@ -355,3 +355,56 @@ TRANSPORTS: tuple[Transport, ...] = (
 DISABLE_PUB_PLUGINS = "disable_pub_plugins"
 ENABLE_PUB_PLUGINS = "enable_pub_plugins"
 TRANSPORT_PARAM = "image_transport"
+
+
+# -- BehaviorTree.CPP navigators -----------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class TreeHost:
+    """A node whose ROS calls are mostly made by the BehaviorTree.CPP nodes of the trees
+    it runs (``plugins.behavior_trees``): the BT plugin libraries it loads (those of the
+    ``builtin`` packages always, plus the library names of the ``libraries`` parameter)
+    and the tree files it runs (``trees``: parameter, and the default as a path in a
+    package's share folder). Each tree tag makes the calls of the class registered under
+    its ID (``BT_REGISTER_NODES``), on the host's node."""
+
+    package: str
+    executables: tuple[str, ...]
+    libraries: str
+    builtin: tuple[str, ...]
+    # (parameter, share package, share path of the default; "" "": no default)
+    trees: tuple[tuple[str, str, str], ...]
+    # the parameter listing the host's navigators, and the navigators (id, class) whose
+    # trees ``trees`` names: another navigator runs trees of its own, not read
+    navigators: tuple[str, tuple[tuple[str, str], ...]] | None = None
+
+
+# nav2_bt_navigator (bt_navigator.cpp: BT_BUILTIN_PLUGINS, the libraries of
+# nav2_behavior_tree, plus ``plugin_lib_names``; Humble and Iron list the same libraries
+# as the parameter's default); navigators/navigate_to_pose.cpp and
+# navigate_through_poses.cpp: the default trees in nav2_bt_navigator's share folder
+TREE_HOSTS: tuple[TreeHost, ...] = (
+    TreeHost("nav2_bt_navigator", ("bt_navigator", "nav2_bt_navigator::BtNavigator"),
+             "plugin_lib_names", ("nav2_behavior_tree",), (
+                 ("default_nav_to_pose_bt_xml", "nav2_bt_navigator",
+                  "behavior_trees/navigate_to_pose_w_replanning_and_recovery.xml"),
+                 ("default_nav_through_poses_bt_xml", "nav2_bt_navigator",
+                  "behavior_trees/navigate_through_poses_w_replanning_and_recovery.xml")),
+             ("navigators", (("navigate_to_pose", "nav2_bt_navigator::NavigateToPoseNavigator"),
+                             ("navigate_through_poses",
+                              "nav2_bt_navigator::NavigateThroughPosesNavigator")))),
+    # PlanSys2's BT action executor (plansys2_bt_actions/src/plansys2_bt_actions/
+    # BTAction.cpp): the libraries of ``plugins``, the tree of ``bt_xml_file`` (no
+    # default), the node itself on the blackboard
+    TreeHost("plansys2_bt_actions", ("bt_action_node",), "plugins", (),
+             (("bt_xml_file", "", ""),)),
+)
+
+
+def tree_host_of(package: str, executable: str, ros_version: int) -> TreeHost | None:
+    """The tree host row for a node started as ``package``/``executable``, if any."""
+    if ros_version != 2:
+        return None
+    return next((host for host in TREE_HOSTS
+                 if host.package == package and executable in host.executables), None)
