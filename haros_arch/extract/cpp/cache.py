@@ -164,7 +164,8 @@ class Cache:
                 # the result (``load`` without ``wanted`` reads only the first)
                 handle.write(json.dumps({"headers": listed,
                                          "digest": result_digest or digest(result)}) + "\n")
-                json.dump({"result": result}, handle)
+                # ``dumps``: C's encoder (``dump`` to a file always takes Python's)
+                handle.write(json.dumps({"result": result}))
             os.replace(temporary, os.path.join(self.folder, entry + ".json"))
         except OSError:
             pass  # a cache that cannot be written is no cache, not an error
