@@ -169,14 +169,18 @@ def extract_cpp(sources: list[str], workspace: Workspace, *,
 def extract_cpp_nodes(nodes: Sequence[Sequence[str]], workspace: Workspace, *,
                       include_dirs: Sequence[str] = (), system_headers: bool = False,
                       cache_dir: str | None = cache.AUTO, jobs: int | None = None,
-                      compile_commands: Sequence[str] | None = None) -> CppBatch:
+                      compile_commands: Sequence[str] | None = None,
+                      meanwhile: Callable[[], None] | None = None) -> CppBatch:
     """The ROS calls of several nodes, each given by its translation units' paths.
 
     Every translation unit is read and parsed once however many nodes build it, all of
     them in one pool of worker processes; options as for ``extract_cpp``.
+    ``meanwhile``, when given, is called once, while the workers parse (after the
+    batch when there are none): work of the calling process that needs no result of
+    the batch runs beside it rather than after it.
     """
     batch, results = _batch(nodes, workspace, include_dirs, system_headers, cache_dir, jobs,
-                            compile_commands, True)
+                            compile_commands, True, meanwhile)
     for sources in nodes:
         paths = list(dict.fromkeys(map(os.path.abspath, sources)))
         batch.results.append(_node_result([(p, results[p]) for p in paths if p in results],
@@ -196,7 +200,8 @@ def unit_digests(paths: Sequence[str], workspace: Workspace, *,
 
 def _batch(nodes: Sequence[Sequence[str]], workspace: Workspace, include_dirs: Sequence[str],
            system_headers: bool, cache_dir: str | None, jobs: int | None,
-           compile_commands: Sequence[str] | None, wanted: bool
+           compile_commands: Sequence[str] | None, wanted: bool,
+           meanwhile: Callable[[], None] | None = None
            ) -> tuple[CppBatch, dict[str, CppResult]]:
     """The batch's diagnostics and unit digests, and each unit's result (without
     ``wanted``: only those parsed)."""
@@ -220,9 +225,12 @@ def _batch(nodes: Sequence[Sequence[str]], workspace: Workspace, include_dirs: S
             if text is not None:
                 texts[path] = text
                 ros2[path] = _is_ros2(path, setup.scan(path, text), workspace)
-        results = _units(texts, ros2, setup, store, jobs, batch.units, wanted)
+        results = _units(texts, ros2, setup, store, jobs, batch.units, wanted, meanwhile)
+        meanwhile = None  # called by _units
     finally:
         setup.close()
+    if meanwhile is not None:  # the batch failed before: the caller's work still runs
+        meanwhile()
     batch.diagnostics += [*setup.diagnostics, *read]
     return batch, results
 
@@ -438,10 +446,12 @@ def _node_of(owner: str | None, owners: dict[str, list[str]],
 
 def _units(texts: dict[str, str], ros2: dict[str, bool], setup: IncludeSetup,
            store: cache.Cache | None, jobs: int | None, digests: dict[str, str],
-           wanted: bool = True) -> dict[str, CppResult]:
+           wanted: bool = True, meanwhile: Callable[[], None] | None = None
+           ) -> dict[str, CppResult]:
     """Each translation unit's result, from the cache or parsed (in parallel); the
     digest of each in ``digests``. Without ``wanted`` a kept result is not read back
-    (only its digest) and is left out."""
+    (only its digest) and is left out. ``meanwhile`` is called once: while the workers
+    parse, else at the end."""
     keys = {path: cache.key(setup.workspace.relpath(path), text,
                             [*setup.arguments(False, path), f"ros2={ros2[path]}"],
                             setup.generated)
@@ -474,19 +484,38 @@ def _units(texts: dict[str, str], ros2: dict[str, bool], setup: IncludeSetup,
         # next, so the workers end within about one unit of each other (in chunks of an
         # eighth of the units, one worker could wait a whole chunk for the other)
         order = sorted(range(len(tasks)), key=lambda index: -len(tasks[index][1]))
+        # a unit's cache entry is written as its result comes back, while the workers
+        # parse the next ones
+        by_task = {}
         with ProcessPoolExecutor(max_workers=workers, initializer=_start_worker,
                                  initargs=(setup,)) as pool:
-            by_task = dict(zip(order, pool.map(_worker_unit, [tasks[i] for i in order]),
-                               strict=True))
+            results = pool.map(_worker_unit, [tasks[i] for i in order])
+            if meanwhile is not None:  # every task is submitted: the workers are busy
+                meanwhile()
+                meanwhile = None
+            for index, outcome in zip(order, results, strict=True):
+                by_task[index] = outcome
+                _store(store, keys[todo[index]], outcome)
         parsed = [by_task[index] for index in range(len(tasks))]
     else:
         parsed = [_unit_and_data(*task, setup) for task in tasks]
-    for path, (unit, headers, data, digest) in zip(todo, parsed, strict=True):
+        for path, outcome in zip(todo, parsed, strict=True):
+            _store(store, keys[path], outcome)
+    for path, (unit, _headers, _data, digest) in zip(todo, parsed, strict=True):
         done[path] = unit
         digests[path] = digest
-        if store is not None and headers:
-            store.store(keys[path], headers, data, digest)
+    if meanwhile is not None:
+        meanwhile()
     return {path: done[path] for path in texts if path in done}
+
+
+def _store(store: cache.Cache | None, key: str,
+           outcome: tuple[CppResult, list[str], dict[str, Any], str]) -> None:
+    """Keep a parsed unit's result in the cache (not one that must not be kept: no
+    headers)."""
+    _unit, headers, data, digest = outcome
+    if store is not None and headers:
+        store.store(key, headers, data, digest)
 
 
 _WORKER_SETUP: IncludeSetup | None = None
