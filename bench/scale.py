@@ -10,7 +10,8 @@ waits for a processor: compare CPU). Stages (seconds of wall time): cache (the r
 cache's snapshot and entry), scan (folders and package manifests), launch, build files
 (CMake / setup.py), C++ (libclang's parse apart from the rest, the walk of the syntax
 trees and the cache; the split is measured with ``--jobs 1`` only: workers parse out of
-sight), Python, models, graph, queries (the catalogue) and report (the HTML file). The
+sight), Python (the other nodes, read while the C++ workers parse: their seconds are
+within C++'s), models, graph, queries (the catalogue) and report (the HTML file). The
 changed file is ``--touch`` or the first C++ source of the model; a comment is appended
 to it and removed again afterwards (use a copy of a fetched tree: this writes into it).
 Each run uses its own cache folder (a temporary one, empty for the cold run), never the

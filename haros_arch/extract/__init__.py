@@ -41,9 +41,10 @@ def extract_nodes(nodes: Sequence[Node], workspace: Workspace, *,
     processes (default: the number of cores); ``compile_commands``: the
     compile_commands.json files to take flags from (None: those in the workspace);
     ``timings``, when given, gets the seconds of the C++ batch ("C++") and of the
-    other nodes ("Python"), added; ``cpp_batch``, when given, the C++ batch's own
-    diagnostics and the digest of what each translation unit gave (``CppBatch.units``;
-    not the node results, which are the nodes')."""
+    other nodes ("Python", read during the batch: within its seconds), added;
+    ``cpp_batch``, when given, the C++ batch's own diagnostics and the digest of what
+    each translation unit gave (``CppBatch.units``; not the node results, which are the
+    nodes')."""
     found: list[Diagnostic] = []
     start = time.perf_counter()
     others: list[Diagnostic] = []  # the other nodes' diagnostics, after the C++ batch's
@@ -82,8 +83,9 @@ def extract_nodes(nodes: Sequence[Node], workspace: Workspace, *,
             found.extend(completeness(node, [*batch.diagnostics, *result.diagnostics,
                                              *said], workspace))
     found.extend(others)
-    if timings is not None:  # the other nodes' seconds apart, though they overlap
-        timings["C++"] = timings.get("C++", 0.0) + time.perf_counter() - start - spent[0]
+    if timings is not None:  # with workers, the other nodes' seconds are within C++'s
+        batch_seconds = time.perf_counter() - start if cpp else 0.0
+        timings["C++"] = timings.get("C++", 0.0) + batch_seconds
         timings["Python"] = timings.get("Python", 0.0) + spent[0]
     return found
 
