@@ -94,10 +94,28 @@ class _Raw:
         self.where = lib.clang_getInstantiationLocation
         self.where.argtypes = [SourceLocation, *[ctypes.c_void_p] * 4]
         self.where.restype = None
+        self.referenced = self._to_cursor(lib.clang_getCursorReferenced)
+        self.semantic_parent = self._to_cursor(lib.clang_getCursorSemanticParent)
+        self.lexical_parent = self._to_cursor(lib.clang_getCursorLexicalParent)
+        self.canonical = self._to_cursor(lib.clang_getCanonicalCursor)
+        self.definition = self._to_cursor(lib.clang_getCursorDefinition)
+        null = bytes(conf.lib.clang_getNullCursor())
+        self.null = (null[:4], null[8:])  # what clang_equalCursors compares
         self.handle, self.line, self.column, self.offset = (
             ctypes.c_void_p(), c_uint(), c_uint(), c_uint())
         self.out = tuple(ctypes.addressof(value) for value in (
             self.handle, self.line, self.column, self.offset))
+
+    @staticmethod
+    def _to_cursor(function: Any) -> Any:
+        function.argtypes, function.restype = [Cursor], Cursor
+        return function
+
+    def related(self, function: Any, cursor: Cursor) -> bytes | None:
+        """The bytes of the cursor ``function`` gives for ``cursor``; None for the null
+        cursor (the binding's ``Cursor.from_result`` asks libclang twice to tell)."""
+        raw = bytes(function(cursor))
+        return None if (raw[:4], raw[8:]) == self.null else raw
 
     def spelled(self, cursor: Cursor) -> str | None:
         """What ``Cursor.spelling`` gives (None for a null string, as the binding)."""
@@ -568,25 +586,29 @@ class Node(Cursor):
     def type(self) -> _Type:
         return _type(Cursor.type.fget(self), self._unit)
 
+    def _related(self, function: Any) -> Node | None:
+        raw = _raw().related(function, self)
+        return None if raw is None else self._unit.made(raw)
+
     @cached
     def referenced(self) -> Node | None:
-        return self._unit.node(Cursor.referenced.fget(self))
+        return self._related(_raw().referenced)
 
     @cached
     def semantic_parent(self) -> Node | None:
-        return self._unit.node(Cursor.semantic_parent.fget(self))
+        return self._related(_raw().semantic_parent)
 
     @cached
     def lexical_parent(self) -> Node | None:
-        return self._unit.node(Cursor.lexical_parent.fget(self))
+        return self._related(_raw().lexical_parent)
 
     @cached
     def canonical(self) -> Node | None:
-        return self._unit.node(Cursor.canonical.fget(self))
+        return self._related(_raw().canonical)
 
     @cached
     def _definition(self) -> Node | None:
-        return self._unit.node(Cursor.get_definition(self))
+        return self._related(_raw().definition)
 
     def get_definition(self) -> Node | None:
         return self._definition
