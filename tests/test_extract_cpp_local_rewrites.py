@@ -1,6 +1,6 @@
 """A local variable written several times holds, where a call reads it, the value of
 the write before the read (``Scope.written_before``), when nothing else may run between;
-a compound assignment a class overloads (``topic += "/x"``) changes it."""
+``topic += "/x"`` appends to what it held."""
 
 from __future__ import annotations
 
@@ -65,7 +65,36 @@ def test_a_local_written_again_is_read_as_last_written(tmp_path) -> None:
         # either branch may have run, the loop's next turn sees "after", the lambda
         # runs after "late": not known
         ("?", 17), ("?", 20), ("?", 24),
-        # += changes it in place (it was read as "grown" before)
-        ("?", 29),
+        # += appends (it was read as "grown" before)
+        ("grown/more", 29),
         ("again", 31),
     ]
+
+
+LOOPED = """\
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+using S = std_msgs::msg::String;
+class Cam : public rclcpp::Node {
+public:
+  Cam() : Node("cam") {
+    std::string key = "port";
+    for (int i = 0; i < 3; ++i) {
+      key += "/x";
+      a_ = create_publisher<S>(key, 1);
+    }
+    std::string again = "base";
+    for (int i = 0; i < 3; ++i) {
+      again = again + "/y";
+      b_ = create_publisher<S>(again, 1);
+    }
+  }
+  rclcpp::Publisher<S>::SharedPtr a_, b_;
+};
+"""
+
+
+def test_a_local_that_grows_in_a_loop_is_not_its_first_turn(tmp_path) -> None:
+    # each turn appends again: what it held before the append is not known
+    result = _extract(tmp_path, LOOPED)
+    assert [c.name for c in result.calls if c.kind == "publish"] == ["?/x", "?/y"]

@@ -252,9 +252,12 @@ class Scope:
 
     def _place(self, decl: Cursor, write: Write) -> None:
         if decl.kind == CursorKind.VAR_DECL:
+            value = write.value if write.whole else None
+            if not write.whole and write.at.kind == CursorKind.CALL_EXPR and (
+                    write.at.spelling == "operator+="):
+                value = write.at  # ``key += "/port_name"``: what it held, then that
             self._placed.setdefault(key_of(decl), []).append(
-                (write.at.extent.start.offset, write.at.extent.end.offset,
-                 write.value if write.whole else None))
+                (write.at.extent.start.offset, write.at.extent.end.offset, value))
 
     def written_before(self, decl: Cursor, at: Cursor) -> Cursor | None:
         """What local variable ``decl``, written several times in this body, holds where
@@ -460,7 +463,8 @@ class Scope:
     def _string_call(self, call: Cursor, depth: int) -> Parts:
         args = written_arguments(call)
         target = call.referenced
-        if call.spelling == "operator+" and len(args) == 2:
+        if call.spelling in ("operator+", "operator+=") and len(args) == 2:
+            # (``a += b`` is read where a write of ``a`` names it: ``written_before``)
             return self.string(args[0], depth + 1) + self.string(args[1], depth + 1)
         if target is None:  # an implicit conversion wrapping the real expression
             inner = operand(call)
