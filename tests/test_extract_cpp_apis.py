@@ -337,3 +337,41 @@ def test_ros1_image_transport_subscriber_filters_subscribe(tmp_path) -> None:
         ("subscribe", "stereo/right/image", "sensor_msgs/Image", "?/", 4),
     ]
     assert "CPP_PARSE_ERROR" not in codes(result)
+
+
+CAMERA_ENDS_ROS2 = """\
+#include <rclcpp/rclcpp.hpp>
+#include <image_transport/camera_subscriber.hpp>
+#include <image_transport/camera_publisher.hpp>
+#include <sensor_msgs/msg/camera_info.hpp>
+#include <sensor_msgs/msg/image.hpp>
+
+class Tags : public rclcpp::Node {
+public:
+  Tags() : Node("tags"),
+    sub_{this, "image_rect",
+         std::bind(&Tags::on_camera, this, std::placeholders::_1, std::placeholders::_2),
+         declare_parameter("image_transport", "raw"), rmw_qos_profile_sensor_data},
+    pub_(this, "overlay") {}
+  void on_camera(const sensor_msgs::msg::Image::ConstSharedPtr &,
+                 const sensor_msgs::msg::CameraInfo::ConstSharedPtr &) {}
+  const image_transport::CameraSubscriber sub_;
+  image_transport::CameraPublisher pub_;
+};
+"""
+
+
+def test_ros2_camera_subscriber_and_publisher_constructors(tmp_path) -> None:
+    # ROS 2's image_transport constructs its camera ends from a node (apriltag_ros'
+    # AprilTagNode: CameraSubscriber{node, topic, callback, transport, qos}): an image
+    # and its camera_info, as create_camera_subscription / create_camera_publisher
+    result = _extract_ros2(tmp_path, CAMERA_ENDS_ROS2)
+    assert [(c.kind, c.name, c.type) for c in result.calls
+            if c.kind in ("subscribe", "publish")] == [
+        ("subscribe", "image_rect", "sensor_msgs/msg/Image"),
+        ("subscribe", "camera_info", "sensor_msgs/msg/CameraInfo"),
+        ("publish", "overlay", "sensor_msgs/msg/Image"),
+        ("publish", "camera_info", "sensor_msgs/msg/CameraInfo"),
+    ]
+    assert not {"CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL", "CPP_CALL_MISSED"} & set(
+        codes(result))

@@ -55,6 +55,8 @@ def extract(ws: Path, **options: object) -> object:
 FULL = [("publish", "scan", "sensor_msgs/LaserScan", 4),
         ("publish", "health", "std_msgs/String", 1),
         ("publish", "laser/status", "std_msgs/String", 1)]
+LOST = [("publish", "scan", "sensor_msgs/LaserScan", 4),
+        ("publish", "lidar_link/status", "std_msgs/String", 1)]
 
 
 def test_flags_of_the_unit_are_used(ws: Path) -> None:
@@ -67,6 +69,16 @@ def test_flags_of_the_unit_are_used(ws: Path) -> None:
 
 
 def test_without_the_file_what_depends_on_flags_is_lost(ws: Path) -> None:
+    result = extract(ws)
+    # the macros of the command (WITH_HEALTH, LIDAR_FRAME) are lost; the include folder
+    # the CMakeLists gives (config) is not: the scan topic's header is read
+    assert calls(result) == LOST
+    assert "CPP_INCLUDE_MISSING" not in [d.code for d in result.diagnostics]  # type: ignore[attr-defined]
+
+
+def test_without_the_file_nor_the_cmake_folder_the_header_is_lost(ws: Path) -> None:
+    cmake = ws / "src" / "lidar" / "CMakeLists.txt"
+    cmake.write_text(cmake.read_text().replace("include_directories(config ", "(config "))
     result = extract(ws)
     # the missing header's macros (LIDAR_SCAN_TOPIC, LIDAR_QUEUE) are declared as
     # values: the scan publisher is kept, its name and queue size unknown
@@ -110,8 +122,7 @@ def test_bad_file_is_a_diagnostic(ws: Path, text: str) -> None:
     result = extract(ws)
     codes = [d.code for d in result.diagnostics]  # type: ignore[attr-defined]
     assert "CPP_COMPILE_COMMANDS" in codes
-    assert calls(result) == [("publish", "?", "sensor_msgs/LaserScan", None),
-                             ("publish", "lidar_link/status", "std_msgs/String", 1)]
+    assert calls(result) == LOST
 
 
 def test_size_is_bounded(ws: Path, monkeypatch: pytest.MonkeyPatch) -> None:
@@ -150,9 +161,9 @@ def test_project_key_names_the_folder_and_flags_key_the_cache(ws: Path,
         (node,) = [n for p in model.packages for n in p.nodes]
         return [c.name for c in node.calls]
 
-    # no -I of the topics header: its macros are unknown values (the scan is '?')
-    assert published() == ["?", "health", "lidar_link/status"]
+    # no -I of the topics header: the CMakeLists' include folder finds it
+    assert published() == ["scan", "health", "lidar_link/status"]
     write_commands(ws, [driver_entry(ws, '-DLIDAR_FRAME="laser"')],
                    "../out/compile_commands.json")
-    assert published() == ["?", "laser/status"]  # new flags: not the cached result
+    assert published() == ["scan", "laser/status"]  # new flags: not the cached result
     assert os.path.isdir(os.path.join(store, "cpp"))

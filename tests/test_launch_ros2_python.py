@@ -194,6 +194,31 @@ def generate_launch_description():
         assert hostile.nodes == []
 
 
+def test_recursion_on_values_not_known_stops_at_the_recursive_call(write_tree):
+    # zed_wrapper's helper walks a YAML file it loads (not known here) recursively: each
+    # call recurses on an unknown item again; the recursive call's value is unknown,
+    # and what the launch function makes after it is still read (not a budget stop)
+    model, _ = run(write_tree, """
+def find(node):
+    if isinstance(node, dict):
+        for value in node.values():
+            found = find(value)
+            if found is not None:
+                return found
+    return None
+
+def setup(context, *args, **kwargs):
+    data = os.path.isfile('/no/such.yaml')
+    flag = find(data)
+    return [Node(package='p', executable='e', name='camera', parameters=[{'f': flag}])]
+
+def generate_launch_description():
+    return LaunchDescription([OpaqueFunction(function=setup)])
+""")
+    assert [n.name for n in model.nodes] == ["/camera"]
+    assert "LAUNCH_PY_BUDGET" not in codes(model)
+    assert any("recursive call" in d.message for d in model.diagnostics)
+
 def test_hostile_sources_are_refused_before_interpretation(write_tree):
     nested, _ = run(write_tree, "x = " + "(" * 5000 + "1" + ")" * 5000 + "\n")
     assert codes(nested) in (["LAUNCH_PY_SYNTAX"], ["LAUNCH_PY_BUDGET"])

@@ -3,6 +3,8 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 from haros_arch.graph import build
 from haros_arch.launch.model import LaunchModel, NodeDecl, ParamDecl
 from haros_arch.model import Configuration, Location, Node, PrimitiveCall
@@ -255,6 +257,24 @@ def test_ros2_camera_info_follows_the_expanded_image_topic_not_its_remap():
     assert [name for _, name, _, _ in topics(config, "/scan")] == [
         "/camera/depth/camera_info", "/camera/depth/image_raw"]
 
+
+
+def test_ros2_camera_info_follows_a_base_the_code_resolved_and_remapped():
+    # a ROS 2 node that gives its camera subscriber a base it resolved itself
+    # (resolve_topic_name: remapped, the "=" mark) has camera_info named beside the
+    # remapped image topic, where a remap of that camera_info then applies (apriltag_ros'
+    # launch file remaps both)
+    tags = camera_subscriber(2)
+    tags = Node("cam", "scan", calls=[replace(tags.calls[0], transport="?="),
+                                      tags.calls[1]])
+    decl = NodeDecl("/tags/scan", "cam", "scan", "/tags/", ros_version=2,
+                    remaps=[("/tags/image", "/camera/image_rect"),
+                            ("/camera/camera_info", "/camera/raw/camera_info")])
+    config = graph([decl], nodes=[tags])
+    assert [name for _, name, _, _ in topics(config, "/tags/scan")] == [
+        "/camera/image_rect", "/camera/raw/camera_info"]
+    (instance,) = config.nodes
+    assert "/camera/camera_info" in instance.remaps_applied
 
 SCAN = """
 #include <ros/ros.h>

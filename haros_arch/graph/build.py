@@ -228,7 +228,8 @@ def _camera_info(instance: NodeInstance, info: PrimitiveCall, images: list[Primi
     """The camera_info topic of an image_transport camera publisher or subscriber:
     ``camera_info`` in the namespace of its image topic (of ``images``, the image_transport
     calls at the same place: the one of the same kind, or the one named as ``camera_of``
-    says) as ROS 1 resolves and remaps it (``resolveName``) or ROS 2 expands it, then
+    says) as ROS 1 resolves and remaps it (``resolveName``) or ROS 2 expands it (or takes
+    it as the code resolved it), then
     remapped on its own; named as the code wrote it. None when the image topic is not
     known: the info call's own name is used."""
     same = [c for c in images if c.kind == info.kind]
@@ -237,8 +238,10 @@ def _camera_info(instance: NodeInstance, info: PrimitiveCall, images: list[Primi
     if len(same) != 1:
         return None
     image = same[0]
-    base = resolved_name(instance, image, remaps if instance.ros_version == 1 else {},
-                         resources)
+    # ROS 2 expands it only, unless the code gave a base it resolved (and so remapped)
+    # itself (``=`` mark: apriltag_ros' resolve_topic_name("image_rect"))
+    remapped = instance.ros_version == 1 or (image.transport or "").endswith("=")
+    base = resolved_name(instance, image, remaps if remapped else {}, resources)
     if UNKNOWN_MARK in base.full:
         return None
     named = RosName.make(f"{base.full.rpartition('/')[0]}/camera_info", instance.namespace,

@@ -224,6 +224,14 @@ LIBRARIES: dict[tuple[str, str], RosFunction] = {
     ("image_transport", "create_camera_subscription"): RosFunction(
         "subscribe", fixed_type=_IMAGE, on_handle=False, handle_arg=0, name_arg=1,
         callback_arg=2, siblings=_CAMERA_INFO_IN, transport="?", transport_arg=3),
+    # ROS 2's camera ends built from a node, as the two functions above (ROS 1's
+    # constructors are ImageTransport's own)
+    ("image_transport::CameraPublisher", "CameraPublisher"): RosFunction(
+        "publish", fixed_type=_IMAGE, on_handle=False, handle_arg=0, name_arg=1,
+        siblings=_CAMERA_INFO, transport="*"),
+    ("image_transport::CameraSubscriber", "CameraSubscriber"): RosFunction(
+        "subscribe", fixed_type=_IMAGE, on_handle=False, handle_arg=0, name_arg=1,
+        callback_arg=2, siblings=_CAMERA_INFO_IN, transport="?", transport_arg=3),
     # nodelet_topic_tools::NodeletLazy's advertise<T>(nh, topic, queue, latch): a
     # publisher on that handle (pcl_ros' and jsk's nodelets publish through it)
     ("nodelet_topic_tools::NodeletLazy", "advertise"): RosFunction(

@@ -61,6 +61,7 @@ from ...model.location import Location
 from ...workspace import Workspace
 from . import (
     api,
+    cmake_includes,
     header_map,
     interfaces,
     parameter_library,
@@ -274,6 +275,14 @@ class IncludeSetup:
                            if inc not in self.user_dirs]
         self.user_dirs += [root for root in _headers_beside_sources(workspace)
                            if root not in self.user_dirs]
+        # and the folders deeper that the CMake files of the packages being extracted
+        # give (zed_components' src/zed_camera/include), not those of a sub-project
+        roots = dict.fromkeys(package.root for package in (
+            workspace.package_of(source) for source in sources)
+            if package is not None and package.root)
+        for root in roots:
+            self.user_dirs += [inc for inc in cmake_includes.cmake_include_dirs(root, workspace)
+                               if inc not in self.user_dirs]
         for unit in self.units.values():  # so that the scan before parsing finds them
             self.user_dirs += [d for d in unit.include_dirs if d not in self.user_dirs]
         # the packages being extracted that our stand-ins also provide, with their

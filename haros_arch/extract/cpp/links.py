@@ -48,7 +48,7 @@ OVERRIDES = -2
 CONDITIONS = -3
 _SPECIALISED = frozenset({CursorKind.FUNCTION_DECL, CursorKind.CONSTRUCTOR,
                           CursorKind.CXX_METHOD})
-MAX_VALUES = 8
+MAX_VALUES = 32  # realsense2_camera's setParam is called with ~30 names in its files
 MAX_DEPTH = 8
 _MARK = re.compile(f"{PLACEHOLDER}([^{PLACEHOLDER}{SEPARATOR}]*){SEPARATOR}(\\d+){PLACEHOLDER}")
 _SPLIT = "\x02"

@@ -147,6 +147,12 @@ class Scope:
         # (start, end) offsets of the parts of this body that may not run, or run later:
         # branches, loop bodies, cases, handlers, lambdas
         self._regions: list[tuple[int, int]] = []
+        # the parts of those that may run again or later: loop bodies, lambdas
+        self._repeated: list[tuple[int, int]] = []
+        self._lambdas: set[tuple[int, int]] = set()
+        # local variable -> (start, end, value or None) of each write of it in this body,
+        # those of an unknown value too (passed to a reference, ``+=``)
+        self._placed: dict[tuple[str, int], list[tuple[int, int, Cursor | None]]] = {}
 
     # -- writes -----------------------------------------------------------------------
 
@@ -181,6 +187,11 @@ class Scope:
                     parts = children[-1:]  # a loop's or a switch's body
                 self._regions.extend((p.extent.start.offset, p.extent.end.offset)
                                      for p in parts)
+                if kind in _REPEATED:
+                    self._repeated.extend((p.extent.start.offset, p.extent.end.offset)
+                                          for p in parts)
+                if kind == CursorKind.LAMBDA_EXPR:
+                    self._lambdas.add((node.extent.start.offset, node.extent.end.offset))
             elif kind == CursorKind.CALL_EXPR:
                 args = list(node.get_arguments())
                 if node.spelling == "operator=" and len(args) == 2:
@@ -200,8 +211,10 @@ class Scope:
         target, value = write.target, write.value
         if target.kind == CursorKind.VAR_DECL:
             self._write(target, value)
+            self._place(target, write)
         elif target.kind == CursorKind.DECL_REF_EXPR and target.referenced is not None:
             decl = target.referenced
+            self._place(decl, write)
             if value is None and (decl.type.is_const_qualified() or not _plain_value(decl)):
                 return
             self._write(decl, value)
@@ -236,6 +249,53 @@ class Scope:
 
     def _write(self, decl: Cursor, value: Cursor | None) -> None:
         self.writes.setdefault(key_of(decl), []).append(value)
+
+    def _place(self, decl: Cursor, write: Write) -> None:
+        if decl.kind == CursorKind.VAR_DECL:
+            value = write.value if write.whole else None
+            if not write.whole and write.at.kind == CursorKind.CALL_EXPR and (
+                    write.at.spelling == "operator+="):
+                value = write.at  # ``key += "/port_name"``: what it held, then that
+            self._placed.setdefault(key_of(decl), []).append(
+                (write.at.extent.start.offset, write.at.extent.end.offset, value))
+
+    def written_before(self, decl: Cursor, at: Cursor) -> Cursor | None:
+        """What local variable ``decl``, written several times in this body, holds where
+        ``at`` reads it: the value of the write that ends last before the read (``name
+        = prefix + "reset"; create_service(name, ...); name = prefix + "pose"; ...``:
+        zed_wrapper's), when that write runs before the read whenever the read runs (not
+        in a branch, loop or lambda the read is outside of) and no write may run between
+        it and the read: none later in a loop or lambda the read is in (the next turn,
+        a later call), none later at all for a read in a lambda. None otherwise, or
+        when that write's value is not known."""
+        _ = self.writes  # read from the body together
+        placed = self._placed.get(key_of(decl))
+        if not placed or len(placed) < 2 or self.body is None:
+            return None
+        where = at.extent.start.offset
+        body, read = self.body.extent, at.extent
+        if not (body.start.offset <= where <= body.end.offset and body.start.file
+                and read.start.file and body.start.file.name == read.start.file.name):
+            return None  # read elsewhere (a value walked back from another function)
+        before = [w for w in placed if w[1] <= where]
+        if not before:
+            return None
+        start, _end, value = max(before, key=lambda w: w[1])
+        if value is None:
+            return None
+        if any(first <= start <= last and not first <= where <= last
+               for first, last in self._regions):
+            return None  # it may not run before the read
+        later = [w[0] for w in placed if w[1] > where]
+        for first, last in self._repeated:
+            if first <= where <= last and any(
+                    first <= other <= last or self._in_lambda(first, last)
+                    for other in later):
+                return None
+        return value
+
+    def _in_lambda(self, first: int, last: int) -> bool:
+        return (first, last) in self._lambdas
 
     def range_of(self, decl: Cursor) -> Cursor | None:
         """The range-based ``for`` of this body whose loop variable ``decl`` is (``for
@@ -359,6 +419,8 @@ class Scope:
                 decl.kind == CursorKind.FIELD_DECL
             ):
                 value = self.assigned(decl, cursor)
+            elif value is None and decl.kind == CursorKind.VAR_DECL:
+                value = self.written_before(decl, cursor)
             if value is None:
                 found = self.field(decl)
                 return UNKNOWN if found is None else found[1].string(found[0], depth + 1)
@@ -401,7 +463,8 @@ class Scope:
     def _string_call(self, call: Cursor, depth: int) -> Parts:
         args = written_arguments(call)
         target = call.referenced
-        if call.spelling == "operator+" and len(args) == 2:
+        if call.spelling in ("operator+", "operator+=") and len(args) == 2:
+            # (``a += b`` is read where a write of ``a`` names it: ``written_before``)
             return self.string(args[0], depth + 1) + self.string(args[1], depth + 1)
         if target is None:  # an implicit conversion wrapping the real expression
             inner = operand(call)
@@ -569,6 +632,11 @@ _BRANCHING = frozenset({
     CursorKind.WHILE_STMT, CursorKind.DO_STMT, CursorKind.SWITCH_STMT, CursorKind.CASE_STMT,
     CursorKind.DEFAULT_STMT, CursorKind.CXX_CATCH_STMT, CursorKind.LAMBDA_EXPR,
 })
+
+
+# statements whose body may run again, or later (a lambda, when it is called)
+_REPEATED = frozenset({CursorKind.FOR_STMT, CursorKind.CXX_FOR_RANGE_STMT,
+                       CursorKind.WHILE_STMT, CursorKind.DO_STMT, CursorKind.LAMBDA_EXPR})
 
 
 _WHOLE_REGIONS = frozenset({CursorKind.CASE_STMT, CursorKind.DEFAULT_STMT,

@@ -78,6 +78,10 @@ def _call(call: Cursor, source: dict[str, bytes]) -> list[Write]:
     args = list(call.get_arguments())
     if call.spelling == "operator=" and len(args) == 2:
         return [Write(strip(args[0]), args[1], call, True)]
+    if call.spelling in _COMPOUND and len(args) == 2:
+        # ``topic += "/more"`` on a class (std::string): a member operator whose object
+        # is argument 0, changed in place (not the first parameter of its signature)
+        return [Write(strip(args[0]), None, call, False)]
     operator = between(args[0], args[1], source) if (
         call.referenced is None and len(args) == 2) else None
     if operator in _READING:
@@ -171,6 +175,11 @@ def between(first: Cursor, second: Cursor, source: dict[str, bytes]) -> str:
     if text is None:
         return ""
     return text[end.offset:start.offset].decode("utf-8", "replace").strip()
+
+
+# compound assignments a class overloads: they change their left operand
+_COMPOUND = frozenset(f"operator{op}=" for op in ("+", "-", "*", "/", "%", "&", "|", "^",
+                                                   "<<", ">>"))
 
 
 def may_write(call: Cursor, index: int, decayed: bool = False) -> bool:

@@ -10,7 +10,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from ...model.conditions import Condition
-from ...model.values import Value, scalar_type
+from ...model.values import Unknown, Value, scalar_type
 from .modules import ClassInfo, FunctionInfo, Module
 
 
@@ -121,6 +121,21 @@ class QoS:
 @dataclass(frozen=True)
 class Seq:
     items: tuple[object, ...]
+
+
+@dataclass(frozen=True)
+class Record:
+    """A dict literal whose keys are known strings (crane_x7's ``{"control":
+    "/crane_x7/crane_x7_control", "joint": "crane_x7_wrist_joint"}``): an entry read with
+    a known key is its value."""
+
+    entries: tuple[tuple[str, object], ...]
+
+    def entry(self, key: str) -> object:
+        for name, value in self.entries:
+            if name == key:
+                return value
+        return Unknown(f"entry {key}")
 
 
 @dataclass(frozen=True)

@@ -40,6 +40,7 @@ from .objects import (
     ParameterClient,
     ParamObject,
     ParamValue,
+    Record,
     Ref,
     Seq,
     SuperInit,
@@ -53,6 +54,7 @@ __all__ = ["MAX_CALL_DEPTH", "MAX_UNROLL", "NAMESPACE", "NODE_NAME", "Evaluator"
            "own_name", "unknown_params"]
 
 MAX_EVAL_DEPTH = 60
+MAX_RECORD = 64  # entries of a dict literal kept (``Record``)
 # the one evaluator's bounds for the values of one walk (a node's files); steps: every
 # expression evaluated, helpers' bodies and folded constructs included
 LIMITS = ops.Limits(steps=500_000)
@@ -213,9 +215,21 @@ class Evaluator(Instances, QoSProfiles, Walker):
 
     eval_List = eval_Tuple
 
+    def eval_Dict(self, expr: ast.Dict, frame: Frame) -> object:
+        if len(expr.keys) > MAX_RECORD or any(k is None for k in expr.keys):
+            return Unknown("dict")  # ``{**other}``, or too large to keep
+        keys = [self.eval(k, frame) for k in expr.keys if k is not None]
+        texts = [k.literal if isinstance(k, Value) else None for k in keys]
+        if any(text is None for text in texts) or len(set(texts)) != len(texts):
+            return Unknown("dict")
+        return Record(tuple((str(text), self.eval(v, frame))
+                            for text, v in zip(texts, expr.values, strict=True)))
+
     def eval_Subscript(self, expr: ast.Subscript, frame: Frame) -> object:
         base = self.eval(expr.value, frame)
         index = self.eval(expr.slice, frame)
+        if isinstance(base, Record) and isinstance(index, Value) and index.literal is not None:
+            return base.entry(index.literal)
         if isinstance(base, Seq) and isinstance(index, int) and -len(base.items) <= index < len(
                 base.items):
             return base.items[index]

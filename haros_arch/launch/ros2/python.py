@@ -74,6 +74,7 @@ class Interpreter(Expressions):
         self.steps = 0
         self.limits = LIMITS
         self.depth = 0
+        self.running: list[ast.AST] = []  # the functions being run, outermost first
         self.guards: list[str] = []  # texts of unknown Python `if` tests we are under
         # per function being run: the values it returned under a test not known
         self.returns: list[list[Any]] = []
@@ -487,10 +488,21 @@ class Interpreter(Expressions):
 
     def call_function(self, func: Func, args: list[Any], kwargs: dict[str, Any],
                       node: ast.AST) -> Any:
+        given = [*args, *kwargs.values()]
+        if func.node in self.running and given and all(
+                isinstance(v, Unknown) for v in given):
+            # a function that runs calls itself on values none of which is known (a
+            # walk of a YAML file not read, zed_wrapper's): interpreted, each call
+            # would recurse on another unknown until the depth bound stops the file;
+            # its value is unknown instead
+            name = getattr(func.node, "name", "lambda")
+            return self.unsupported(node, f"recursive call of {name} on values not known "
+                                          "statically")
         self.depth += 1
         if self.depth > MAX_CALL_DEPTH:
             self.depth = 0
             raise Budget(f"calls nested deeper than {MAX_CALL_DEPTH}")
+        self.running.append(func.node)
         outer = self.path
         self.path = _file_of(func.closure, outer)  # a function of an imported module
         try:
@@ -531,6 +543,7 @@ class Interpreter(Expressions):
             return self.either([*maybe, result]) if maybe else result
         finally:
             self.depth = max(self.depth - 1, 0)
+            self.running.pop()
             self.path = outer
 
 

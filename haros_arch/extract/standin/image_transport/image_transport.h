@@ -28,6 +28,9 @@ public:
 class CameraPublisher {
 public:
   CameraPublisher();
+  // ROS 2: (node, base_topic, qos, options)
+  template<class N, class... A> CameraPublisher(N&& node, const std::string& base_topic,
+      A&&... more);
   template<class I, class C> void publish(const I& image, const C& info) const;
   uint32_t getNumSubscribers() const;
   std::string getTopic() const;
@@ -35,7 +38,15 @@ public:
   void shutdown();
   operator void*() const;
 };
-class CameraSubscriber { public: CameraSubscriber(); void shutdown(); operator void*() const; };
+class CameraSubscriber {
+public:
+  CameraSubscriber();
+  // ROS 2: (node, base_topic, callback, transport, qos)
+  template<class N, class C, class... A> CameraSubscriber(N&& node,
+      const std::string& base_topic, const C& callback, A&&... more);
+  void shutdown();
+  operator void*() const;
+};
 class TransportHints {
 public:
   template<class... A> explicit TransportHints(A&&... args);

@@ -1,0 +1,106 @@
+"""The include folders a package's CMake files give inside the package.
+
+The parse searches every workspace package's ``include`` folder and those one level down
+(``headers.IncludeSetup``); a package that keeps its headers deeper names them in its
+CMakeLists (zed_components: ``target_include_directories(zed_camera_component PUBLIC
+${CMAKE_CURRENT_SOURCE_DIR}/src/zed_camera/include ...)``), and without them every class
+of the package is unknown to the parse. Read as text, like the macros
+(``build_macros``): ``include_directories`` and ``target_include_directories`` words that
+are a folder of the package, relative or under the source folder variables. Not a folder
+of a library the package builds with ``add_subdirectory`` (one with a CMakeLists.txt of
+its own that calls ``project()``, slam_toolbox's ``lib/karto_sdk/include``), whose
+headers the parse synthesises as those of a missing package (see
+``headers._library_include_dirs``).
+"""
+
+from __future__ import annotations
+
+import os
+import re
+
+from ...files import read_text
+from ...workspace import Workspace
+
+_COMMAND = re.compile(r"^[ \t]*(include_directories|target_include_directories)\s*\(([^)]*)\)",
+                      re.IGNORECASE | re.MULTILINE)
+_COMMENT = re.compile(r"#[^\n]*")
+_KEYWORDS = frozenset({"SYSTEM", "BEFORE", "AFTER", "PUBLIC", "PRIVATE", "INTERFACE"})
+_BUILD_INTERFACE = re.compile(r"\$<BUILD_INTERFACE:([^>]*)>")
+_FILE_DIRS = ("${CMAKE_CURRENT_SOURCE_DIR}", "${CMAKE_CURRENT_LIST_DIR}")
+_ROOT_DIRS = ("${PROJECT_SOURCE_DIR}", "${CMAKE_SOURCE_DIR}")
+_PROJECT = re.compile(r"^[ \t]*project\s*\(", re.IGNORECASE | re.MULTILINE)
+MAX_CMAKE_FILES = 40
+MAX_PROJECT_READ = 256 * 1024
+
+
+def cmake_include_dirs(root: str, workspace: Workspace) -> list[str]:
+    """The folders inside package ``root`` that its CMake files give as include
+    folders, in the order first given (not the root itself, nor a folder of a
+    sub-project the files do not own)."""
+    root = os.path.abspath(root)
+    files: list[str] = []
+    for folder, dirs, names in os.walk(root):
+        dirs[:] = sorted(d for d in dirs if not d.startswith((".", "build", "install")))
+        files.extend(os.path.join(folder, n) for n in sorted(names)
+                     if n == "CMakeLists.txt" or n.endswith(".cmake"))
+        if len(files) >= MAX_CMAKE_FILES:
+            break
+    found: list[str] = []
+    for path in files[:MAX_CMAKE_FILES]:
+        text, _ = read_text(path, workspace.location(path))
+        here = os.path.dirname(path)
+        for match in _COMMAND.finditer(_COMMENT.sub("", text or "")):
+            words = match.group(2).split()
+            if match.group(1).lower() == "target_include_directories":
+                words = words[1:]  # the target
+            for word in words:
+                named = _folder(word.strip("\"'"), here, root)
+                if named is not None and named not in found and _owned(named, root):
+                    found.append(named)
+    return found
+
+
+def _folder(word: str, here: str, root: str) -> str | None:
+    """The folder ``word`` names, written in the CMake file in ``here``, or None (a
+    keyword, another variable, a folder outside the package or not there)."""
+    inner = _BUILD_INTERFACE.fullmatch(word)
+    if inner is not None:
+        word = inner.group(1)
+    if not word or word.upper() in _KEYWORDS:
+        return None
+    for variable in _FILE_DIRS:
+        if word.startswith(variable):
+            word = here + word[len(variable):]
+    for variable in _ROOT_DIRS:
+        if word.startswith(variable):
+            word = root + word[len(variable):]
+    if "$" in word:
+        return None
+    folder = os.path.normpath(os.path.join(here, word))
+    if folder == root or not folder.startswith(root + os.sep) or os.path.islink(folder) \
+            or not os.path.isdir(folder):
+        return None
+    return folder
+
+
+def _owned(folder: str, root: str) -> bool:
+    """Whether ``folder`` belongs to the package's own CMake project: no folder between
+    the package root and it (itself included) is another project, one whose
+    CMakeLists.txt calls ``project()`` (even when that project's own files give it)."""
+    current = folder
+    while current.startswith(root + os.sep):
+        if _is_project(os.path.join(current, "CMakeLists.txt")):
+            return False
+        current = os.path.dirname(current)
+    return True
+
+
+def _is_project(path: str) -> bool:
+    if not os.path.isfile(path):
+        return False
+    try:
+        with open(path, encoding="utf-8", errors="replace") as handle:
+            text = handle.read(MAX_PROJECT_READ)
+    except OSError:
+        return False
+    return _PROJECT.search(_COMMENT.sub("", text)) is not None

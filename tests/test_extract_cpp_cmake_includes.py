@@ -1,0 +1,86 @@
+"""Include folders a package's CMake files give deeper than ``<pkg>/<dir>/include``
+(``extract.cpp.cmake_includes``): found by the parse, except a sub-project's."""
+
+from __future__ import annotations
+
+import os
+
+from conftest import package_xml
+
+from haros_arch.extract.cpp import extract_cpp
+from haros_arch.extract.cpp.cmake_includes import cmake_include_dirs
+from haros_arch.workspace import scan
+
+CMAKE = """\
+cmake_minimum_required(VERSION 3.8)
+project(cam)
+find_package(rclcpp REQUIRED)
+add_subdirectory(lib/sdk)
+# include_directories(src/old/include)
+add_library(cam_component SHARED src/cam/src/cam_node.cpp)
+target_include_directories(cam_component PUBLIC
+    ${CMAKE_CURRENT_SOURCE_DIR}/src/common
+    $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/src/cam/include>
+    ${OTHER_INCLUDE_DIRS}
+    lib/sdk/include
+)
+"""
+HEADER = """\
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+namespace cam {
+class CamNode : public rclcpp::Node {
+public:
+  explicit CamNode(const rclcpp::NodeOptions & options);
+private:
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr status_pub_;
+};
+}
+"""
+SOURCE = """\
+#include "cam_node.hpp"
+namespace cam {
+CamNode::CamNode(const rclcpp::NodeOptions & options) : Node("cam", options) {
+  status_pub_ = create_publisher<std_msgs::msg::String>("~/status", 10);
+}
+}
+"""
+
+
+def _package(tmp_path):
+    root = tmp_path / "cam"
+    files = {
+        "package.xml": package_xml("cam", "ament_cmake").replace(
+            "</package>", "<depend>rclcpp</depend><depend>std_msgs</depend></package>"),
+        "CMakeLists.txt": CMAKE,
+        "src/cam/include/cam_node.hpp": HEADER,
+        "src/cam/src/cam_node.cpp": SOURCE,
+        "src/common/.keep": "",
+        "src/old/include/.keep": "",
+        "lib/sdk/CMakeLists.txt": "project(sdk)\ninclude_directories(include)\n",
+        "lib/sdk/include/sdk.hpp": "int sdk();\n",
+    }
+    for name, text in files.items():
+        path = root / name
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(text)
+    return root
+
+
+def test_the_folders_a_package_cmake_gives_except_a_sub_project_s(tmp_path) -> None:
+    root = _package(tmp_path)
+    ws = scan([str(tmp_path)])
+    # commented out, another variable's, and the sub-project's (given by either file)
+    # are not searched
+    assert cmake_include_dirs(str(root), ws) == [
+        str(root / "src" / "common"), str(root / "src" / "cam" / "include")]
+
+
+def test_a_class_declared_in_a_folder_the_cmake_gives_is_known(tmp_path) -> None:
+    root = _package(tmp_path)
+    source = os.path.join(root, "src", "cam", "src", "cam_node.cpp")
+    result = extract_cpp([source], scan([str(tmp_path)]), cache_dir=None)
+    assert [(c.kind, c.name, c.type) for c in result.calls if c.kind == "publish"] == [
+        ("publish", "~status", "std_msgs/msg/String")]
+    assert not {"CPP_INCLUDE_MISSING", "CPP_PARSE_ERROR"} & {
+        d.code for d in result.diagnostics}

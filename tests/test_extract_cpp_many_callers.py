@@ -1,0 +1,64 @@
+"""A wrapper of the ROS API defined in one file of a node and called from another with
+many names (realsense2_camera's ``Parameters::setParam``, called with each of ~30
+parameter names): one call per name, up to ``links.MAX_VALUES``, not one ``?`` for all."""
+
+from __future__ import annotations
+
+from conftest import package_xml
+
+from haros_arch.extract.cpp import extract_cpp
+from haros_arch.workspace import scan
+
+HEADER = """\
+#include <rclcpp/rclcpp.hpp>
+class Params {
+public:
+  explicit Params(rclcpp::Node & node) : node_(node) {}
+  double get(const std::string & name, double initial);
+private:
+  rclcpp::Node & node_;
+};
+"""
+WRAPPER = """\
+#include "params.hpp"
+double Params::get(const std::string & name, double initial) {
+  return node_.declare_parameter(name, initial);
+}
+"""
+
+
+def caller(names: list[str]) -> str:
+    return """\
+#include "params.hpp"
+class Driver : public rclcpp::Node {
+public:
+  Driver() : Node("driver"), params_(*this) {
+    std::string name;
+""" + "".join(f'    name = "{n}";\n    params_.get(name, 1.0);\n' for n in names) + """\
+  }
+  Params params_;
+};
+"""
+
+
+def declared(tmp_path, names: list[str]) -> list[str]:
+    (tmp_path / "package.xml").write_text(package_xml("drv", "ament_cmake").replace(
+        "</package>", "<depend>rclcpp</depend></package>"))
+    (tmp_path / "include").mkdir()
+    (tmp_path / "include" / "params.hpp").write_text(HEADER)
+    (tmp_path / "src").mkdir()
+    (tmp_path / "src" / "params.cpp").write_text(WRAPPER)
+    (tmp_path / "src" / "driver.cpp").write_text(caller(names))
+    result = extract_cpp([str(tmp_path / "src" / "params.cpp"),
+                          str(tmp_path / "src" / "driver.cpp")],
+                         scan([str(tmp_path)]), cache_dir=None)
+    return sorted(c.name for c in result.calls if c.kind == "declare")
+
+
+def test_twenty_callers_name_twenty_parameters(tmp_path) -> None:
+    names = [f"gain_{i}" for i in range(20)]
+    assert declared(tmp_path, names) == sorted(names)
+
+
+def test_more_names_than_the_bound_are_one_unknown(tmp_path) -> None:
+    assert declared(tmp_path, [f"gain_{i}" for i in range(40)]) == ["?"]
