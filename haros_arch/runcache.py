@@ -40,6 +40,7 @@ from collections.abc import Callable, Iterable, Mapping
 from typing import Any, TypeVar
 
 from . import __version__
+from .collector import held_back
 from .files import MAX_FILE_BYTES
 from .model.finding import Finding
 from .model.load import from_data
@@ -242,9 +243,11 @@ def load(folder: str, key: str) -> Model | None:
 def store(folder: str, key: str, model: Model) -> None:
     """Keep ``model`` under ``key`` when it reads back as it is, and only the newest
     ``KEEP`` entries."""
-    data = model_to_data(model)
-    text = json.dumps(data, sort_keys=True)
-    if json.dumps(model_to_data(from_data(json.loads(text))), sort_keys=True) != text:
+    with held_back():  # the model's data, and the model it reads back as, live on
+        data = model_to_data(model)
+        text = json.dumps(data, sort_keys=True)
+        same = json.dumps(model_to_data(from_data(json.loads(text))), sort_keys=True) == text
+    if not same:
         return  # a model that does not read back whole is not kept (never a wrong one)
     _KEPT[model] = (folder, key)
     _write(_entry(folder, key), {"model": data}, folder)

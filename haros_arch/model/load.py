@@ -7,9 +7,9 @@ name are created when the document does not list them.
 
 from __future__ import annotations
 
-import gc
 from typing import Any
 
+from ..collector import held_back
 from .conditions import Condition
 from .diagnostic import Diagnostic
 from .launch_tree import item_from_data, use_from_data
@@ -416,24 +416,20 @@ def from_data(data: Any) -> Model:
     if schema is not None and not str(schema).startswith("haros-arch/"):
         raise ModelDataError(f"unknown schema {schema!r}")
     # the collector would walk every object made so far again and again while hundreds of
-    # thousands are made (half the load time of a 300,000-link model): paused, then run
-    paused = gc.isenabled()
-    gc.disable()
+    # thousands are made (half the load time of a 300,000-link model): held back
     try:
-        model = Model(str(data.get("project", "")))
-        model.packages = [_package(p) for p in data.get("packages", ())]
-        nodes = {node.name: node for package in model.packages for node in package.nodes}
-        hinted: dict[str, Node] = {}
-        model.configurations = [_configuration(c, nodes, hinted)
-                                for c in data.get("configurations", ())]
-        model.diagnostics = [_diagnostic(d) for d in data.get("diagnostics", ())]
+        with held_back():
+            model = Model(str(data.get("project", "")))
+            model.packages = [_package(p) for p in data.get("packages", ())]
+            nodes = {node.name: node for package in model.packages for node in package.nodes}
+            hinted: dict[str, Node] = {}
+            model.configurations = [_configuration(c, nodes, hinted)
+                                    for c in data.get("configurations", ())]
+            model.diagnostics = [_diagnostic(d) for d in data.get("diagnostics", ())]
     except (AttributeError, TypeError, KeyError, ValueError, OverflowError,
             RecursionError) as err:
         # a field of the wrong type (a list where an object belongs, ...): the document is
         # not one extract writes; say so instead of failing inside the reader
         raise ModelDataError(f"not a haros-arch model: a field has the wrong type or shape "
                              f"({type(err).__name__}: {err})") from None
-    finally:
-        if paused:
-            gc.enable()
     return model

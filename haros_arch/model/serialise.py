@@ -16,6 +16,7 @@ import json
 from typing import Any
 
 from .. import SCHEMA
+from ..collector import held_back
 from .model import Model
 from .rosname import RosName
 from .runtime import Configuration
@@ -123,11 +124,12 @@ def _default(f: dataclasses.Field[Any]) -> Any:
 def model_to_data(model: Model) -> dict[str, Any]:
     """The versioned JSON document of DESIGN.md ("The JSON model"), with what reading it
     back needs to give the same model (``_read_back``)."""
-    data = {"schema": SCHEMA, **_dataclass_to_data(model)}
-    listed = {id(node) for package in model.packages for node in package.nodes}
-    for config, written in zip(model.configurations, data.get("configurations", ()),
-                               strict=True):
-        _read_back(config, written, listed)
+    with held_back():  # hundreds of thousands of dictionaries that all live on
+        data = {"schema": SCHEMA, **_dataclass_to_data(model)}
+        listed = {id(node) for package in model.packages for node in package.nodes}
+        for config, written in zip(model.configurations, data.get("configurations", ()),
+                                   strict=True):
+            _read_back(config, written, listed)
     return data
 
 

@@ -9,12 +9,10 @@ and walks the functions defined in the workspace for calls listed in ``api.ROSCP
 
 from __future__ import annotations
 
-import contextlib
 import dataclasses
-import gc
 import os
 import re
-from collections.abc import Callable, Collection, Iterator, Sequence
+from collections.abc import Callable, Collection, Sequence
 from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
 from typing import Any
@@ -23,6 +21,7 @@ from clang.cindex import Cursor, CursorKind, TranslationUnit, TranslationUnitLoa
 from clang.cindex import Diagnostic as ClangDiagnostic
 
 from ... import diagnostics as diag
+from ...collector import held_back
 from ...diagnostics import Diagnostic
 from ...files import MAX_FILE_BYTES, read_text
 from ...manifest import parse_manifest, ros_version
@@ -540,21 +539,11 @@ def _worker_unit(task: tuple[str, str, bool]
 YOUNG_THRESHOLD = 1_000_000
 
 
-@contextlib.contextmanager
-def _few_collections() -> Iterator[None]:
-    before = gc.get_threshold()
-    gc.set_threshold(YOUNG_THRESHOLD, *before[1:])
-    try:
-        yield
-    finally:
-        gc.set_threshold(*before)
-
-
 def _unit_and_data(path: str, text: str, ros2: bool, setup: IncludeSetup
                    ) -> tuple[CppResult, list[str], dict[str, Any], str]:
     """``_translation_unit`` with the result as the cache keeps it and its digest, made
     where the unit was parsed (in a worker: not in the serial part of the run)."""
-    with _few_collections():
+    with held_back(YOUNG_THRESHOLD):
         unit, headers = _translation_unit(path, text, ros2, setup)
     data = cache.to_data(unit.calls, unit.rosname, unit.diagnostics, unit.facts,
                          unit.node_names, unit.constructions, unit.unseen, unit.made_under)
