@@ -83,11 +83,10 @@ def test_rospy_topics(ros1) -> None:
          (("else", wait[1]), ("if", "RATE > 5"))),
         ("publish", "slow", "std_msgs/String", None, False, None, 39,
          (("else", wait[1]), ("else", "RATE > 5"))),
-        # a loop over a known tuple is unrolled: one call per item
-        ("publish", "left/cmd", "std_msgs/Float64", 1, False, None, 41,
-         (("for", "side in ('left', 'right')"),)),
-        ("publish", "right/cmd", "std_msgs/Float64", 1, False, None, 41,
-         (("for", "side in ('left', 'right')"),)),
+        # a loop over a known tuple is unrolled: one call per item, each made for sure
+        # (the body holds no break, return or raise): no condition
+        ("publish", "left/cmd", "std_msgs/Float64", 1, False, None, 41, ()),
+        ("publish", "right/cmd", "std_msgs/Float64", 1, False, None, 41, ()),
         ("subscribe", "loop", "std_msgs/String", None, False, "on_chatter", 44,
          (loop, ("try", ""))),
         ("publish", "errors", "std_msgs/String", 1, False, None, 46,
@@ -236,7 +235,7 @@ def test_rclpy_qos(ros2) -> None:
 def test_rclpy_create_node_actions_tf_filters(ros2) -> None:
     result = ros2("actions.py")
     assert result.rosname == "actions"
-    loop = (("for", "name in ('left', 'right')"),)
+    loop = ()  # unrolled over a known tuple, the body run whole: each call for sure
     assert [row(c) for c in result.calls] == [
         ("action-server", "fibonacci", "example_interfaces/action/Fibonacci", None, False,
          "execute", 17, ()),

@@ -1,5 +1,8 @@
-"""A for loop over a known, short sequence is unrolled: one call per item, each with the
-loop's condition; longer or unknown sequences keep '?'."""
+"""A for loop over a known, short sequence is unrolled: one call per item, made for sure
+(no condition) unless the body can leave the loop early (``break``, ``return``, ``raise``:
+then each with the loop's condition); longer or unknown sequences keep '?'. A list
+changed in place before the loop (``append``, ``extend``, ``insert``, an item set) is
+the list it then is, or unknown."""
 
 from __future__ import annotations
 
@@ -26,8 +29,7 @@ def test_list_of_strings(tmp_path) -> None:
     result = run(tmp_path,
                  "        for side in ['left', 'right']:\n"
                  "            self.create_publisher(Image, f'{side}/image', 10)\n")
-    loop = ("side in ['left', 'right']",)
-    assert names(result) == [("left/image", loop), ("right/image", loop)]
+    assert names(result) == [("left/image", ()), ("right/image", ())]
     assert [d.code for d in result.diagnostics] == []
     assert {c.location.line for c in result.calls} == {8}
 
@@ -58,7 +60,53 @@ def test_nested_loops(tmp_path) -> None:
                  "            for side in ['left', 'right']:\n"
                  "                self.create_publisher(Image, f'{robot}/{side}', 10)\n")
     assert [n for n, _ in names(result)] == ["r1/left", "r1/right", "r2/left", "r2/right"]
-    assert all(len(c) == 2 for _, c in names(result))
+    assert all(c == () for _, c in names(result))
+
+
+def test_a_body_that_can_leave_early_keeps_the_loop_condition(tmp_path) -> None:
+    result = run(tmp_path,
+                 "        for side in ['a', 'b']:\n"
+                 "            if side == self.stop:\n"
+                 "                break\n"
+                 "            self.create_publisher(Image, side + '/x', 10)\n"
+                 "        for side in ['c']:\n"
+                 "            for inner in range(2):\n"
+                 "                break\n"
+                 "            self.create_publisher(Image, side + '/y', 10)\n"
+                 "        for side in ['d']:\n"
+                 "            for inner in range(2):\n"
+                 "                return\n"
+                 "            self.create_publisher(Image, side + '/z', 10)\n")
+    assert names(result) == [
+        ("a/x", ("side in ['a', 'b']",)), ("b/x", ("side in ['a', 'b']",)),
+        ("c/y", ()),  # the inner loop's break is its own
+        ("d/z", ("side in ['d']",))]  # a return leaves every loop
+
+
+def test_a_list_changed_in_place_is_what_it_became(tmp_path) -> None:
+    """``self.sides.append('right')`` before the loop: the loop runs over both (the
+    second was missed, a definite publisher left out); a list whose item is set, or
+    changed by a method we do not follow, is unknown: one call named '?'."""
+    result = run(tmp_path,
+                 "        self.sides = ['left']\n"
+                 "        self.sides.append('right')\n"
+                 "        more = ['x']\n"
+                 "        more.extend(['y'])\n"
+                 "        more.insert(0, 'w')\n"
+                 "        for side in self.sides:\n"
+                 "            self.create_publisher(Image, side + '/image', 10)\n"
+                 "        for m in more:\n"
+                 "            self.create_publisher(Image, m, 10)\n"
+                 "        names = ['p', 'q']\n"
+                 "        names[0] = 'z'\n"
+                 "        for n in names:\n"
+                 "            self.create_publisher(Image, n + '/n', 10)\n"
+                 "        kept = ['k']\n"
+                 "        kept.sort()\n"
+                 "        for k in kept:\n"
+                 "            self.create_publisher(Image, k + '/k', 10)\n")
+    assert [n for n, _ in names(result)] == [
+        "left/image", "right/image", "w", "x", "y", "?/n", "?/k"]
 
 
 def test_long_or_unknown_sequences_keep_unknown(tmp_path) -> None:
@@ -199,7 +247,8 @@ def test_comprehensions_are_walked_as_their_loops(tmp_path) -> None:
     """``[rospy.Publisher(t + '/cmd', ...) for t in topics]`` and a dict comprehension
     over a list parameter make one call per element as a ``for`` statement does (they
     were ``?/cmd``, the comprehension's variable unknown); a comprehension over a known
-    tuple is unrolled, its ``if`` a condition; its variable does not leak."""
+    tuple is unrolled (each item for sure: no loop condition), its ``if`` a condition;
+    its variable does not leak."""
     result = run(tmp_path,
                  "        topics = self.get_parameter('topics').value\n"
                  "        self.pubs = [self.create_publisher(Image, t + '/raw', 10)\n"
@@ -216,9 +265,9 @@ def test_comprehensions_are_walked_as_their_loops(tmp_path) -> None:
         ("publish", "?/raw", "topics", ".", ("t in topics",)),
         ("publish", "?/rect", "cams", ".", ("t in self.get_parameter('cams').value",)),
         ("subscribe", "left", None, None,
-         ("side in ('left', 'right')", "side != t")),
+         ("side != t",)),
         ("subscribe", "right", None, None,
-         ("side in ('left', 'right')", "side != t")),
+         ("side != t",)),
         ("publish", "fixed", None, None, ())]
 
 

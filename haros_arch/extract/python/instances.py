@@ -12,7 +12,7 @@ from ...model.values import Unknown
 from . import rclpy
 from .calls import MAX_CALL_DEPTH, Calls, unknown_params
 from .modules import ClassInfo, FunctionInfo
-from .objects import BoundMethod, Frame, Instance, Ref, Seq
+from .objects import BoundMethod, Frame, Instance, Record, Ref, Seq
 from .qos import as_profile, with_policy
 
 
@@ -118,6 +118,13 @@ class Instances(Calls):
             changed = with_policy(holder, target.attr, value)
             if changed is not None:
                 self.bind(target.value, changed, frame, seen)
+        elif isinstance(target, ast.Subscript) and (isinstance(target.value, ast.Name) or (
+                isinstance(target.value, ast.Attribute)
+                and isinstance(target.value.value, ast.Name) and target.value.value.id == "self")
+        ) and isinstance(self.eval(target.value, frame), Seq | Record):
+            # an item of a list or dict set (``topics[0] = '/scan'``): what the walk
+            # knew of the whole is no longer
+            self.bind(target.value, Unknown("changed in place"), frame, seen)
         elif isinstance(target, ast.Tuple | ast.List):
             items = value.items if isinstance(value, Seq) and len(value.items) == len(
                 target.elts) else (Unknown(),) * len(target.elts)

@@ -40,6 +40,7 @@ from .objects import (
     ParamElement,
     ParamValue,
     QoS,
+    Record,
     Ref,
     Seq,
     SuperInit,
@@ -340,26 +341,32 @@ class Walker:
     def _For(self, statement: ast.For | ast.AsyncFor, frame: Frame, conds: Conditions) -> None:
         self._expr(statement.iter, frame, conds)
         self._loop(statement.target, statement.iter, frame, self._where(frame, statement),
-                   lambda loop: self._block(statement.body, frame, (*conds, loop)))
+                   lambda loop: self._block(statement.body, frame, (*conds, *loop)),
+                   whole=not _leaves_early(statement.body))
         self._block(statement.orelse, frame, conds)
 
     def _loop(self, target: ast.expr, over: ast.expr, frame: Frame, where: Location,
-              body: Callable[[Condition], None]) -> None:
-        """Walk a loop's body (``body(loop condition)``) once per item of a known, short
+              body: Callable[[tuple[Condition, ...]], None], whole: bool = True) -> None:
+        """Walk a loop's body (``body(loop conditions)``) once per item of a known, short
         sequence (unrolled), else once with the variable unknown; over a list
         parameter's value, or a dict parameter's ``values()`` / ``items()``, once with
-        the variable its element (``ParamElement``; an entry's key is unknown)."""
+        the variable its element (``ParamElement``; an entry's key is unknown). An
+        unrolled loop over items that are there, whose body runs ``whole`` (no
+        ``break``, ``return`` or ``raise`` of its own), runs it for each for sure: no
+        condition (as a C++ loop over a list parameter's elements)."""
         ev = self.evaluator
         text = f"{self._text(frame, target)} in {self._text(frame, over)}"
-        loop = condition("for", text, where)
+        loop: tuple[Condition, ...] = (condition("for", text, where),)
         items = ev.iteration(over, frame, MAX_UNROLL if self._unrolled else MAX_UNROLL_OUTER)
+        if items and whole:
+            loop = ()
         if items is None:
             element = self._element_loop(target, over, frame)
             if element is not None:
                 # a loop over a list parameter's value: a call named by its variable is
                 # one call per element the configuration gives it (the graph expands it,
                 # and the loop, "for each", is then no condition of those calls)
-                loop = condition(EACH_STATEMENT, text, where)
+                loop = (condition(EACH_STATEMENT, text, where),)
                 items = (element,)
         # a loop over a known, short sequence is unrolled: one walk of the body per item
         self._unrolled += 1 if items else 0
@@ -520,8 +527,8 @@ class Walker:
             if index:  # the first one's iterable is the enclosing scope's
                 self._expr(gen.iter, frame, inner)
 
-            def body(loop: Condition) -> None:
-                tests = (*inner, loop)
+            def body(loop: tuple[Condition, ...]) -> None:
+                tests = (*inner, *loop)
                 for test in gen.ifs:
                     self._test(test)
                     self._expr(test, frame, tests)
@@ -541,6 +548,7 @@ class Walker:
                     frame.locals.pop(name, None)
 
     def _call(self, call: ast.Call, frame: Frame, conds: Conditions) -> None:
+        self._changed_in_place(call, frame)
         for arg in (*call.args, *(k.value for k in call.keywords)):
             for part in ast.walk(arg):  # the local itself or in an expression: prefix + x
                 held = frame.locals.get(part.id) if isinstance(part, ast.Name) else None
@@ -605,6 +613,28 @@ class Walker:
                     self._used_classes.append(used)
             if init is not None:
                 self._inline(BoundMethod(ev.new(target), init), call, frame, conds)
+
+    def _changed_in_place(self, call: ast.Call, frame: Frame) -> None:
+        """A list or dict a local or an attribute of ``self`` holds, changed by one of its
+        methods (``self.sides.append('right')``): the value the walk knows is changed
+        too (an item appended, inserted or a list extended by one known), else unknown
+        from here on: a loop over it no longer runs over the items it had."""
+        func = call.func
+        if not (isinstance(func, ast.Attribute) and func.attr in _IN_PLACE):
+            return
+        holder = func.value
+        if not (isinstance(holder, ast.Name) or (
+                isinstance(holder, ast.Attribute) and isinstance(holder.value, ast.Name)
+                and holder.value.id == "self")):
+            return
+        ev = self.evaluator
+        value = ev.eval(holder, frame)
+        if not isinstance(value, Seq | Record):
+            return
+        changed = None if call.keywords else _changed(
+            value, func.attr, [ev.eval(arg, frame) for arg in call.args])
+        ev.bind(holder, changed if changed is not None else Unknown(
+            f"{self._text(frame, holder)} changed in place"), frame)
 
     def _inline(self, func: FunctionInfo | BoundMethod, call: ast.Call, frame: Frame,
                 conds: Conditions) -> None:
@@ -889,6 +919,49 @@ def _remote(remote: Value, name: str) -> str:
 
 
 _Comprehension = ast.ListComp | ast.SetComp | ast.DictComp | ast.GeneratorExp
+
+
+# the methods that change a list, dict or set in place
+_IN_PLACE = frozenset({"append", "extend", "insert", "remove", "pop", "clear", "sort",
+                       "reverse", "update", "setdefault", "popitem", "add", "discard"})
+
+
+def _changed(value: Seq | Record, method: str, args: list[object]) -> Seq | None:
+    """A list after ``append`` / ``extend`` / ``insert`` with arguments it can take;
+    None for every other change (the value is then unknown)."""
+    if not isinstance(value, Seq):
+        return None
+    if method == "append" and len(args) == 1:
+        return Seq((*value.items, args[0]))
+    if method == "extend" and len(args) == 1 and isinstance(args[0], Seq):
+        return Seq((*value.items, *args[0].items))
+    if method == "insert" and len(args) == 2 and isinstance(args[0], int) and not isinstance(
+            args[0], bool):
+        items = list(value.items)
+        items.insert(args[0], args[1])
+        return Seq(tuple(items))
+    return None
+
+
+def _leaves_early(body: list[ast.stmt]) -> bool:
+    """Whether a loop's body holds a ``break`` of its own, a ``return`` or a ``raise``
+    (not inside a function or class it defines): its later items may not run."""
+    stack: list[ast.AST] = list(body)
+    while stack:
+        node = stack.pop()
+        if isinstance(node, ast.Return | ast.Raise):
+            return True
+        if isinstance(node, ast.Break):
+            return True
+        if isinstance(node, ast.FunctionDef | ast.AsyncFunctionDef | ast.ClassDef | ast.Lambda):
+            continue
+        if isinstance(node, ast.For | ast.AsyncFor | ast.While):
+            # a break there is that loop's; a return or raise leaves this one too
+            stack.extend(n for n in ast.walk(node) if isinstance(n, ast.Return | ast.Raise))
+            stack.extend(node.orelse)
+            continue
+        stack.extend(ast.iter_child_nodes(node))
+    return False
 
 
 def _outside_comprehensions(expr: ast.AST, calls: list[ast.Call],
