@@ -156,6 +156,11 @@ class PrimitiveCall:
     # the code writes it; the graph fills in its value (launch value, else the value the
     # node's arguments give it, else its own default)
     default_param: str | None = field(default=None, metadata={"optional": True})
+    # the name (``?``) is wholly the one string parameter of a virtual method that no
+    # code of the node calls with a value (``links.HOST_NAMED``): the string the host of
+    # a plugin passes, the plugin's name (nav2's TimedBehavior serves its action under
+    # the ``name`` given to ``configure``); the host fills it in (``plugins.attach``)
+    host_named: bool = field(default=False, metadata={"optional": True})
 
 
 def declared_defaults(calls: list[PrimitiveCall]) -> list[PrimitiveCall]:

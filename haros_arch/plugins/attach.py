@@ -719,14 +719,19 @@ def _under(call: PrimitiveCall, plugin: str, conditions: tuple[Condition, ...],
            ) -> PrimitiveCall:
     """The call as the plugin named ``plugin`` makes it on its host: an unknown first
     part of its name (and handle namespace, and the parameter its name comes from) is
-    the plugin name; the conditions of the choice come first. A name taken from a
+    the plugin name, and so is a name that is wholly the string the host passes the
+    plugin (``host_named``); the conditions of the choice come first. A name taken from a
     parameter keeps its ``?`` for the value (the graph fills it from the renamed
     parameter) unless the ``?`` is its handle's namespace."""
     name = call.name
-    if not call.name_param or (call.handle_namespace and name.startswith(
+    if call.host_named and plugin and name.lstrip("~/") == UNKNOWN_MARK:
+        # wholly the string the host passes the plugin's entry method: its name
+        name = name[:-1] + plugin
+    elif not call.name_param or (call.handle_namespace and name.startswith(
             call.handle_namespace + "/")):
         name = _named(name, plugin)
-    return replace(call, name=name, handle_namespace=_named(call.handle_namespace, plugin),
+    return replace(call, name=name, host_named=False,
+                   handle_namespace=_named(call.handle_namespace, plugin),
                    name_param=_named(call.name_param, plugin),
                    conditions=(*conditions, *call.conditions))
 

@@ -46,6 +46,13 @@ OVERRIDES = -2
 # the index of a fact that says the call site (a construction) is made under the source
 # conditions its value holds (``cache.conditions_text``)
 CONDITIONS = -3
+# the index of a fact that says the function is a virtual method whose one string
+# parameter is the one at the fact's site: a host calls a plugin through its base class,
+# and the one string such a method takes from it is the plugin's name (nav2's
+# ``configure(parent, name, tf, ...)``, ROS 1 nav_core's ``initialize(name, ...)``). A
+# call named wholly by that parameter, where no file of the node passes it, is
+# ``PrimitiveCall.host_named``
+HOST_NAMED = -4
 _SPECIALISED = frozenset({CursorKind.FUNCTION_DECL, CursorKind.CONSTRUCTOR,
                           CursorKind.CXX_METHOD})
 MAX_VALUES = 8
@@ -105,6 +112,10 @@ def argument_facts(sites: CallSites, namespaces: Namespaces,
         params = [c for c in function.get_children() if c.kind == CursorKind.PARM_DECL]
         facts.extend((usr, OVERRIDES, base, str(index)) for base in bases if base
                      for index, parm in enumerate(params) if is_handle(parm))
+        strings = [index for index, parm in enumerate(params)
+                   if msg_types.param_type(parm.type) == "str"]
+        if len(strings) == 1 and function.is_virtual_method():
+            facts.append((usr, HOST_NAMED, "", str(strings[0])))
     return list(dict.fromkeys(facts))
 
 
@@ -198,7 +209,9 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact],
     the words ``unseen`` of the code where the parse left errors (``*``: anywhere)."""
     facts = list(facts)
     passed = _passed(facts)
-    called = {fact[0] for fact in facts if fact[1] != OVERRIDES}
+    called = {fact[0] for fact in facts if fact[1] not in (OVERRIDES, HOST_NAMED)}
+    hosted = {(usr, int(site)) for usr, index, _value, site in facts
+              if index == HOST_NAMED and usr not in passed}
     constructed = {class_of(usr) for usr in called if _constructor(usr)}
     out: list[PrimitiveCall] = []
     found: list[Diagnostic] = []
@@ -234,6 +247,9 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact],
                     join_name(ns, _unmarked(camera)) if camera and PLACEHOLDER not in camera
                     else None))
             made = _named_by(made)
+            whole = _MARK.fullmatch(written) if not namespace else None
+            if made.name == "?" and whole and (whole.group(1), int(whole.group(2))) in hosted:
+                made = dataclasses.replace(made, host_named=True)
             out.append(made)
             if "?" in made.name:
                 found.append(diag.make("CPP_DYNAMIC_NAME", made.location, kind=made.kind,

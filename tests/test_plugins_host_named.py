@@ -1,0 +1,118 @@
+"""A plugin whose call is named wholly by the string its host passes it (nav2's
+TimedBehavior: ``behavior_name_ = name`` in ``configure``, then an action server under
+``behavior_name_``) makes that call under its plugin name on the host."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from haros_arch.extract.cpp import extract_cpp_nodes
+from haros_arch.graph import build
+from haros_arch.launch.model import LaunchModel, NodeDecl, ParamDecl
+from haros_arch.model import Configuration, Node
+from haros_arch.workspace import Workspace, scan
+
+HEADER = """#include <string>
+#include "rclcpp/rclcpp.hpp"
+#include "rclcpp_action/rclcpp_action.hpp"
+#include "geometry_msgs/msg/twist.hpp"
+namespace my_beh {
+class Behavior
+{
+public:
+  virtual ~Behavior() = default;
+  virtual void configure(
+    const rclcpp::Node::WeakPtr & parent, const std::string & name, int tf) = 0;
+  virtual void relabel(const std::string & from, const std::string & to) = 0;
+};
+template<class ActionT>
+class Timed : public Behavior
+{
+public:
+  void configure(
+    const rclcpp::Node::WeakPtr & parent, const std::string & name, int tf) override
+  {
+    node_ = parent;
+    auto node = node_.lock();
+    behavior_name_ = name;
+    server_ = rclcpp_action::create_server<ActionT>(
+      node, behavior_name_, nullptr, nullptr, nullptr);
+  }
+  void relabel(const std::string & from, const std::string & to) override
+  {
+    auto node = node_.lock();
+    label_ = to;
+    pub_ = node->create_publisher<geometry_msgs::msg::Twist>(label_, 10);
+  }
+  void watch(const std::string & topic)
+  {
+    auto node = node_.lock();
+    topic_ = topic;
+    sub_ = node->create_subscription<geometry_msgs::msg::Twist>(topic_, 10, nullptr);
+  }
+
+protected:
+  rclcpp::Node::WeakPtr node_;
+  std::string behavior_name_;
+  std::string label_;
+  std::string topic_;
+  typename rclcpp_action::Server<ActionT>::SharedPtr server_;
+  rclcpp::Publisher<geometry_msgs::msg::Twist>::SharedPtr pub_;
+  rclcpp::Subscription<geometry_msgs::msg::Twist>::SharedPtr sub_;
+};
+}  // namespace my_beh
+"""
+
+SOURCE = """#include "my_beh/timed.hpp"
+namespace my_beh {
+class Spin : public Timed<my_msgs::action::Spin>
+{
+};
+}  // namespace my_beh
+"""
+
+
+def _calls(tmp_path: Path):
+    package = tmp_path / "my_beh"
+    (package / "src").mkdir(parents=True)
+    (package / "include" / "my_beh").mkdir(parents=True)
+    (package / "package.xml").write_text(
+        '<package format="3"><name>my_beh</name><version>1.0.0</version>'
+        "<description>x</description><maintainer email='a@b.c'>a</maintainer>"
+        "<license>x</license><buildtool_depend>ament_cmake</buildtool_depend>"
+        "<depend>rclcpp</depend><export><build_type>ament_cmake</build_type>"
+        "</export></package>")
+    (package / "include" / "my_beh" / "timed.hpp").write_text(HEADER)
+    (package / "src" / "spin.cpp").write_text(SOURCE)
+    ws = scan([str(tmp_path)])
+    batch = extract_cpp_nodes([[str(package / "src" / "spin.cpp")]], ws, cache_dir=None,
+                              jobs=1)
+    return batch.results[0].calls
+
+
+def test_a_name_wholly_from_the_one_string_of_a_virtual_method_is_the_hosts(tmp_path):
+    calls = {c.kind: c for c in _calls(tmp_path)}
+    assert calls["action-server"].name == "?"
+    assert calls["action-server"].host_named
+    # a virtual method with two strings, and a method no base class declares: their
+    # strings are not known to be the plugin's name
+    assert calls["publish"].name == "?" and not calls["publish"].host_named
+    assert calls["subscribe"].name == "?" and not calls["subscribe"].host_named
+
+
+def test_the_host_names_such_a_call_by_the_plugin_name(tmp_path):
+    spin = Node("my_beh", "my_beh::Spin", "plugin", calls=_calls(tmp_path),
+                plugin_class="my_beh::Spin")
+    decl = NodeDecl("/behavior_server", "nav2_behaviors", "behavior_server")
+    decl.ros_version = 2
+    params = [ParamDecl("/behavior_server/behavior_plugins", ["spin"]),
+              ParamDecl("/behavior_server/spin.plugin", "my_beh::Spin")]
+    config = build(Configuration("c"), LaunchModel(nodes=[decl], params=params),
+                   Workspace(root="/nowhere"), {spin.name: spin})
+    served = sorted(link.resource.name for link in config.links
+                    if link.node.name == "/behavior_server" and link.kind == "action-server")
+    assert served == ["/spin"]
+    # the others stay unknown: not named by the plugin
+    assert sorted((link.kind, link.resource.name) for link in config.links
+                  if link.kind in ("publish", "subscribe") and link.origin != "action"
+                  ) == [("publish", "/?"), ("subscribe", "/?")]
