@@ -24,6 +24,10 @@ public:
   virtual void configure(
     const rclcpp::Node::WeakPtr & parent, const std::string & name, int tf) = 0;
   virtual void relabel(const std::string & from, const std::string & to) = 0;
+  // the base's own code calls it: its string is not the host's
+  virtual void follow(const std::string & topic) = 0;
+  void start() {follow(followed_);}
+  std::string followed_;
 };
 template<class ActionT>
 class Timed : public Behavior
@@ -44,6 +48,12 @@ public:
     label_ = to;
     pub_ = node->create_publisher<geometry_msgs::msg::Twist>(label_, 10);
   }
+  void follow(const std::string & topic) override
+  {
+    auto node = node_.lock();
+    following_ = topic;
+    pub_ = node->create_publisher<geometry_msgs::msg::Twist>(following_, 10);
+  }
   void watch(const std::string & topic)
   {
     auto node = node_.lock();
@@ -55,6 +65,7 @@ protected:
   rclcpp::Node::WeakPtr node_;
   std::string behavior_name_;
   std::string label_;
+  std::string following_;
   std::string topic_;
   typename rclcpp_action::Server<ActionT>::SharedPtr server_;
   rclcpp::Publisher<geometry_msgs::msg::Twist>::SharedPtr pub_;
@@ -91,13 +102,11 @@ def _calls(tmp_path: Path):
 
 
 def test_a_name_wholly_from_the_one_string_of_a_virtual_method_is_the_hosts(tmp_path):
-    calls = {c.kind: c for c in _calls(tmp_path)}
-    assert calls["action-server"].name == "?"
-    assert calls["action-server"].host_named
-    # a virtual method with two strings, and a method no base class declares: their
-    # strings are not known to be the plugin's name
-    assert calls["publish"].name == "?" and not calls["publish"].host_named
-    assert calls["subscribe"].name == "?" and not calls["subscribe"].host_named
+    calls = sorted((c.kind, c.name, c.host_named, c.location.line) for c in _calls(tmp_path))
+    # a virtual method with two strings, one its plugin's own code calls (through the
+    # base), and a method no base class declares: their strings are not the host's
+    assert [c[:3] for c in calls] == [("action-server", "?", True), ("publish", "?", False),
+                                      ("publish", "?", False), ("subscribe", "?", False)]
 
 
 def test_the_host_names_such_a_call_by_the_plugin_name(tmp_path):
@@ -115,4 +124,4 @@ def test_the_host_names_such_a_call_by_the_plugin_name(tmp_path):
     # the others stay unknown: not named by the plugin
     assert sorted((link.kind, link.resource.name) for link in config.links
                   if link.kind in ("publish", "subscribe") and link.origin != "action"
-                  ) == [("publish", "/?"), ("subscribe", "/?")]
+                  ) == [("publish", "/?"), ("publish", "/?"), ("subscribe", "/?")]

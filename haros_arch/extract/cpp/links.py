@@ -47,10 +47,12 @@ OVERRIDES = -2
 # conditions its value holds (``cache.conditions_text``)
 CONDITIONS = -3
 # the index of a fact that says the function is a virtual method whose one string
-# parameter is the one at the fact's site: a host calls a plugin through its base class,
-# and the one string such a method takes from it is the plugin's name (nav2's
-# ``configure(parent, name, tf, ...)``, ROS 1 nav_core's ``initialize(name, ...)``). A
-# call named wholly by that parameter, where no file of the node passes it, is
+# parameter is the one at the fact's site (its value: the USRs of the base methods it
+# overrides, one per line): a host calls a plugin through its base class, and the one
+# string such a method takes from it is the plugin's name (nav2's ``configure(parent,
+# name, tf, ...)``, ROS 1 nav_core's ``initialize(name, ...)``). A call named wholly by
+# that parameter, where no file of the node calls the method or one it overrides (nav2's
+# CostmapFilter calls its filters' ``initializeFilter(topic)`` itself), is
 # ``PrimitiveCall.host_named``
 HOST_NAMED = -4
 _SPECIALISED = frozenset({CursorKind.FUNCTION_DECL, CursorKind.CONSTRUCTOR,
@@ -115,7 +117,8 @@ def argument_facts(sites: CallSites, namespaces: Namespaces,
         strings = [index for index, parm in enumerate(params)
                    if msg_types.param_type(parm.type) == "str"]
         if len(strings) == 1 and function.is_virtual_method():
-            facts.append((usr, HOST_NAMED, "", str(strings[0])))
+            facts.append((usr, HOST_NAMED, "\n".join(b for b in bases if b),
+                          str(strings[0])))
     return list(dict.fromkeys(facts))
 
 
@@ -210,8 +213,9 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact],
     facts = list(facts)
     passed = _passed(facts)
     called = {fact[0] for fact in facts if fact[1] not in (OVERRIDES, HOST_NAMED)}
-    hosted = {(usr, int(site)) for usr, index, _value, site in facts
-              if index == HOST_NAMED and usr not in passed}
+    hosted = {(usr, int(site)) for usr, index, bases, site in facts
+              if index == HOST_NAMED and usr not in called
+              and not any(base in called for base in bases.split("\n"))}
     constructed = {class_of(usr) for usr in called if _constructor(usr)}
     out: list[PrimitiveCall] = []
     found: list[Diagnostic] = []
