@@ -18,6 +18,7 @@ from dataclasses import dataclass
 
 from clang.cindex import Cursor, CursorKind, Type, TypeKind, conf
 
+from . import msg_types
 from .expressions import is_default_argument
 from .values import (
     PLACEHOLDER,
@@ -162,6 +163,22 @@ class CallSites:
                 return None
             found.append((values[0], body))
         return found or None
+
+    def virtual_callees(self) -> set[str]:
+        """The USRs of the virtual methods taking one string that this unit's functions
+        call (defined here or not): a plugin's own code that calls one (nav2's
+        ``Polygon`` calls ``createSubscription(topic)``, which ``Circle`` overrides) gives
+        its string itself (``links.CALLED_VIRTUAL``)."""
+        found: set[str] = set()
+        for calls in self._sites().values():
+            callee = callee_of(calls[0][0])
+            if callee is None or callee.kind != CursorKind.CXX_METHOD or (
+                    not callee.is_virtual_method()):
+                continue
+            params = [c for c in callee.get_children() if c.kind == CursorKind.PARM_DECL]
+            if sum(1 for p in params if msg_types.param_type(p.type) == "str") == 1:
+                found.add(callee.canonical.get_usr())
+        return found
 
     def callers(self, function: Cursor) -> list[tuple[Cursor, Cursor]]:
         """(call, calling function) for the calls of ``function`` in this file."""

@@ -55,6 +55,9 @@ CONDITIONS = -3
 # CostmapFilter calls its filters' ``initializeFilter(topic)`` itself), is
 # ``PrimitiveCall.host_named``
 HOST_NAMED = -4
+# the index of a fact that says the unit's code calls the function, a virtual method
+# taking one string (``CallSites.virtual_callees``), wherever it is defined
+CALLED_VIRTUAL = -5
 _SPECIALISED = frozenset({CursorKind.FUNCTION_DECL, CursorKind.CONSTRUCTOR,
                           CursorKind.CXX_METHOD})
 MAX_VALUES = 8
@@ -119,6 +122,7 @@ def argument_facts(sites: CallSites, namespaces: Namespaces,
         if len(strings) == 1 and function.is_virtual_method():
             facts.append((usr, HOST_NAMED, "\n".join(b for b in bases if b),
                           str(strings[0])))
+    facts.extend((usr, CALLED_VIRTUAL, "", "") for usr in sorted(sites.virtual_callees()))
     return list(dict.fromkeys(facts))
 
 
@@ -212,10 +216,12 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact],
     the words ``unseen`` of the code where the parse left errors (``*``: anywhere)."""
     facts = list(facts)
     passed = _passed(facts)
-    called = {fact[0] for fact in facts if fact[1] not in (OVERRIDES, HOST_NAMED)}
+    called = {fact[0] for fact in facts if fact[1] not in (OVERRIDES, HOST_NAMED,
+                                                           CALLED_VIRTUAL)}
+    calling = called | {fact[0] for fact in facts if fact[1] == CALLED_VIRTUAL}
     hosted = {(usr, int(site)) for usr, index, bases, site in facts
-              if index == HOST_NAMED and usr not in called
-              and not any(base in called for base in bases.split("\n"))}
+              if index == HOST_NAMED and usr not in calling
+              and not any(base in calling for base in bases.split("\n"))}
     constructed = {class_of(usr) for usr in called if _constructor(usr)}
     out: list[PrimitiveCall] = []
     found: list[Diagnostic] = []
