@@ -157,7 +157,8 @@ class PrimitiveCall:
     # node's arguments give it, else its own default)
     default_param: str | None = field(default=None, metadata={"optional": True})
     # the name (``?``) is wholly the one string parameter of a virtual method that no
-    # code of the node calls with a value (``links.HOST_NAMED``): the string the host of
+    # code of the node calls, nor a base method it overrides (``links.HOST_NAMED``),
+    # written on the node itself (no handle namespace): the string the host of
     # a plugin passes, the plugin's name (nav2's TimedBehavior serves its action under
     # the ``name`` given to ``configure``); the host fills it in (``plugins.attach``)
     host_named: bool = field(default=False, metadata={"optional": True})
