@@ -9,14 +9,15 @@ from pathlib import Path
 from haros_arch.extract.cpp import extract_cpp_nodes
 from haros_arch.graph import build
 from haros_arch.launch.model import LaunchModel, NodeDecl, ParamDecl
-from haros_arch.model import Configuration, Node
+from haros_arch.model import Configuration, Node, PrimitiveCall
 from haros_arch.workspace import Workspace, scan
 
 HEADER = """#include <string>
 #include "rclcpp/rclcpp.hpp"
 #include "rclcpp_action/rclcpp_action.hpp"
 #include "geometry_msgs/msg/twist.hpp"
-namespace my_beh {
+namespace nav2_core {
+// the base class the host loads its plugins by
 class Behavior
 {
 public:
@@ -29,6 +30,8 @@ public:
   void start() {follow(followed_);}
   std::string followed_;
 };
+}  // namespace nav2_core
+namespace my_beh {
 // a base that calls its own virtual method in the file that defines it (shape.cpp), a
 // subclass of another file overriding it (nav2's Polygon::createSubscription, Circle)
 class Shape
@@ -42,7 +45,7 @@ public:
   rclcpp::Subscription<geometry_msgs::msg::Twist>::SharedPtr sub_;
 };
 template<class ActionT>
-class Timed : public Behavior
+class Timed : public nav2_core::Behavior
 {
 public:
   void configure(
@@ -66,6 +69,8 @@ public:
     following_ = topic;
     pub_ = node->create_publisher<geometry_msgs::msg::Twist>(following_, 10);
   }
+  // declared here, not by the class the host loads: the host never calls it
+  virtual void relay(const std::string & topic) {}
   void watch(const std::string & topic)
   {
     auto node = node_.lock();
@@ -90,6 +95,15 @@ SOURCE = """#include "my_beh/timed.hpp"
 namespace my_beh {
 class Spin : public Timed<my_msgs::action::Spin>
 {
+public:
+  void relay(const std::string & topic) override
+  {
+    auto node = node_.lock();
+    relayed_ = topic;
+    relay_pub_ = node->create_publisher<geometry_msgs::msg::Twist>(relayed_, 10);
+  }
+  std::string relayed_;
+  rclcpp::Publisher<geometry_msgs::msg::Twist>::SharedPtr relay_pub_;
 };
 class Ring : public Shape
 {
@@ -139,16 +153,25 @@ def _calls(tmp_path: Path):
 
 
 def test_a_name_wholly_from_the_one_string_of_a_virtual_method_is_the_hosts(tmp_path):
-    calls = sorted((c.kind, c.name, c.host_named, c.location.line) for c in _calls(tmp_path))
+    calls = sorted((c.kind, c.name, c.host_named or "", c.location.line)
+                   for c in _calls(tmp_path))
     # a virtual method with two strings, one its plugin's own code calls (through the
-    # base), and a method no base class declares: their strings are not the host's
-    assert [c[:3] for c in calls] == [("action-server", "?", True), ("publish", "?", False),
-                                      ("publish", "?", False), ("subscribe", "?", False),
-                                      ("subscribe", "?", False)]
+    # base, or in the file that defines it), and a method no base class declares: their
+    # strings are not the host's, nor that of an override of a virtual method no base
+    # class the host loads by declares (Spin::relay)
+    assert [c[:3] for c in calls] == [
+        ("action-server", "?", "nav2_core::Behavior"), ("publish", "?", ""),
+        ("publish", "?", ""), ("publish", "?", ""), ("subscribe", "?", ""),
+        ("subscribe", "?", "")]
 
 
 def test_the_host_names_such_a_call_by_the_plugin_name(tmp_path):
-    spin = Node("my_beh", "my_beh::Spin", "plugin", calls=_calls(tmp_path),
+    # and one named by a method of a class the host does not load plugins by (nav2's
+    # filters' ``initializeFilter(topic)``, which their base CostmapFilter calls from
+    # the costmap's core library, code outside the plugin's own)
+    other = PrimitiveCall("subscribe", "?", "geometry_msgs/msg/Twist",
+                          host_named="my_beh::Filter")
+    spin = Node("my_beh", "my_beh::Spin", "plugin", calls=[*_calls(tmp_path), other],
                 plugin_class="my_beh::Spin")
     decl = NodeDecl("/behavior_server", "nav2_behaviors", "behavior_server")
     decl.ros_version = 2
@@ -162,5 +185,5 @@ def test_the_host_names_such_a_call_by_the_plugin_name(tmp_path):
     # the others stay unknown: not named by the plugin
     assert sorted((link.kind, link.resource.name) for link in config.links
                   if link.kind in ("publish", "subscribe") and link.origin != "action"
-                  ) == [("publish", "/?"), ("publish", "/?"), ("subscribe", "/?"),
-                        ("subscribe", "/?")]
+                  ) == [("publish", "/?"), ("publish", "/?"), ("publish", "/?"),
+                        ("subscribe", "/?"), ("subscribe", "/?"), ("subscribe", "/?")]

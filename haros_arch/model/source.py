@@ -158,10 +158,12 @@ class PrimitiveCall:
     default_param: str | None = field(default=None, metadata={"optional": True})
     # the name (``?``) is wholly the one string parameter of a virtual method that no
     # code of the node calls, nor a base method it overrides (``links.HOST_NAMED``),
-    # written on the node itself (no handle namespace): the string the host of
-    # a plugin passes, the plugin's name (nav2's TimedBehavior serves its action under
-    # the ``name`` given to ``configure``); the host fills it in (``plugins.attach``)
-    host_named: bool = field(default=False, metadata={"optional": True})
+    # written on the node itself (no handle namespace): the classes (qualified, separated
+    # by spaces) that declare the methods it overrides. A host that loads the plugin by
+    # one of them calls it with the plugin's name (nav2's TimedBehavior serves its action
+    # under the ``name`` nav2_core::Behavior's ``configure`` is given); the host fills it
+    # in (``plugins.attach``)
+    host_named: str | None = field(default=None, metadata={"optional": True})
 
 
 def declared_defaults(calls: list[PrimitiveCall]) -> list[PrimitiveCall]:

@@ -219,8 +219,10 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact],
     called = {fact[0] for fact in facts if fact[1] not in (OVERRIDES, HOST_NAMED,
                                                            CALLED_VIRTUAL)}
     calling = called | {fact[0] for fact in facts if fact[1] == CALLED_VIRTUAL}
-    hosted = {(usr, int(site)) for usr, index, bases, site in facts
-              if index == HOST_NAMED and usr not in calling
+    hosted = {(usr, int(site)): " ".join(dict.fromkeys(
+                  qualified_class(base) for base in bases.split("\n") if base))
+              for usr, index, bases, site in facts
+              if index == HOST_NAMED and bases and usr not in calling
               and not any(base in calling for base in bases.split("\n"))}
     constructed = {class_of(usr) for usr in called if _constructor(usr)}
     out: list[PrimitiveCall] = []
@@ -258,8 +260,9 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact],
                     else None))
             made = _named_by(made)
             whole = _MARK.fullmatch(written) if not namespace else None
-            if made.name == "?" and whole and (whole.group(1), int(whole.group(2))) in hosted:
-                made = dataclasses.replace(made, host_named=True)
+            classes = hosted.get((whole.group(1), int(whole.group(2)))) if whole else None
+            if made.name == "?" and classes:
+                made = dataclasses.replace(made, host_named=classes)
             out.append(made)
             if "?" in made.name:
                 found.append(diag.make("CPP_DYNAMIC_NAME", made.location, kind=made.kind,
@@ -294,6 +297,14 @@ def resolve_name(name: str, facts: Iterable[Fact]) -> str:
     found = _expand(name, _passed(facts), 0)
     return _unmarked(found[0]) if len(found) == 1 and PLACEHOLDER not in found[0] else (
         _MARK.sub("?", name))
+
+
+def qualified_class(usr: str) -> str:
+    """The qualified name of the class of a method's USR (``nav2_core::Behavior``)."""
+    parts = usr.split("@F@")[0].split("@")[1:]
+    names = [name for kind, name in zip(parts[::2], parts[1::2], strict=False)
+             if kind == "N" or kind.startswith("S")]
+    return "::".join(names)
 
 
 _CLASS = re.compile(r"@(?:S|ST>\d+(?:#[^@]*)?)@([A-Za-z_]\w*)@F")
