@@ -187,3 +187,13 @@ def test_the_host_names_such_a_call_by_the_plugin_name(tmp_path):
                   if link.kind in ("publish", "subscribe") and link.origin != "action"
                   ) == [("publish", "/?"), ("publish", "/?"), ("publish", "/?"),
                         ("subscribe", "/?"), ("subscribe", "/?"), ("subscribe", "/?")]
+
+
+def test_an_interface_model_keeps_what_names_a_call():
+    # a plugin node read back from its model (a package without source) keeps the mark
+    from haros_arch.model.load import node_from_data
+    from haros_arch.model.serialise import to_data
+
+    node = Node("p", "p::A", "plugin", calls=[
+        PrimitiveCall("action-server", "?", host_named="nav2_core::Behavior")])
+    assert node_from_data(to_data(node), "p").calls[0].host_named == "nav2_core::Behavior"
