@@ -114,7 +114,9 @@ def call_from_data(c: dict[str, Any]) -> PrimitiveCall:
                          variable=c.get("variable"),
                          also=c.get("also") if isinstance(c.get("also"), list) else None,
                          queue_size_missing=bool(c.get("queue_size_missing", False)),
-                         camera_of=c.get("camera_of"))
+                         camera_of=c.get("camera_of"),
+                         host_named=c.get("host_named") if isinstance(
+                             c.get("host_named"), str) else None)
 
 
 def node_from_data(data: dict[str, Any], package: str) -> Node:

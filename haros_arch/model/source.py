@@ -156,6 +156,14 @@ class PrimitiveCall:
     # the code writes it; the graph fills in its value (launch value, else the value the
     # node's arguments give it, else its own default)
     default_param: str | None = field(default=None, metadata={"optional": True})
+    # the name (``?``) is wholly the one string parameter of a virtual method that no
+    # code of the node calls, nor a base method it overrides (``links.HOST_NAMED``),
+    # written on the node itself (no handle namespace): the classes (qualified, separated
+    # by spaces) that declare the methods it overrides. A host that loads the plugin by
+    # one of them calls it with the plugin's name (nav2's TimedBehavior serves its action
+    # under the ``name`` nav2_core::Behavior's ``configure`` is given); the host fills it
+    # in (``plugins.attach``)
+    host_named: str | None = field(default=None, metadata={"optional": True})
 
 
 def declared_defaults(calls: list[PrimitiveCall]) -> list[PrimitiveCall]:

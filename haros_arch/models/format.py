@@ -52,7 +52,8 @@ SCHEMA_VERSION = 2
 SCHEMA = f"haros-arch-model/{SCHEMA_VERSION}"
 SCHEMA_PREFIX = "haros-arch-model/"
 _TEXT_FIELDS = ("type", "name_param", "name_default", "name_each", "handle_namespace",
-                "node_name", "callback", "transport", "variable", "default_param")
+                "node_name", "callback", "transport", "variable", "default_param",
+                "host_named")
 
 
 class ModelFileError(ValueError):

@@ -176,7 +176,7 @@ def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str
             own_partial(instance, f"plugin {node.name}: {reasons[0]}", owned)
         elif node.plugin_loads:  # a plugin that loads plugins (nav2 MPPI's critics)
             own_partial(instance, f"plugin {node.name}: {_loads(node)}", owned)
-        calls = [_under(call, plugin, choice.conditions)
+        calls = [_under(call, plugin, choice.conditions, slot.bases)
                  for call in _with_base(node, index, workspace, models)]
         row = sources_of(choice.cls or "", instance.ros_version) or sources_of(
             node.plugin_class or "", instance.ros_version)
@@ -716,17 +716,25 @@ def _plugin_instance(host: NodeInstance, choice: Choice, node: Node,
 
 
 def _under(call: PrimitiveCall, plugin: str, conditions: tuple[Condition, ...],
-           ) -> PrimitiveCall:
+           bases: tuple[str, ...] = ()) -> PrimitiveCall:
     """The call as the plugin named ``plugin`` makes it on its host: an unknown first
     part of its name (and handle namespace, and the parameter its name comes from) is
-    the plugin name; the conditions of the choice come first. A name taken from a
+    the plugin name, and so is a name that is wholly the string the host passes the
+    plugin (``host_named`` by a class of the host's ``bases``: the host calls the plugin
+    only through them); the conditions of the choice come first. A name taken from a
     parameter keeps its ``?`` for the value (the graph fills it from the renamed
     parameter) unless the ``?`` is its handle's namespace."""
     name = call.name
-    if not call.name_param or (call.handle_namespace and name.startswith(
+    loaded = {base.lstrip(":") for base in bases}
+    if call.host_named and plugin and name.lstrip("~/") == UNKNOWN_MARK and (
+            loaded & set(call.host_named.split())):
+        # wholly the string the host passes the plugin's entry method: its name
+        name = name[:-1] + plugin
+    elif not call.name_param or (call.handle_namespace and name.startswith(
             call.handle_namespace + "/")):
         name = _named(name, plugin)
-    return replace(call, name=name, handle_namespace=_named(call.handle_namespace, plugin),
+    return replace(call, name=name, host_named=None,
+                   handle_namespace=_named(call.handle_namespace, plugin),
                    name_param=_named(call.name_param, plugin),
                    conditions=(*conditions, *call.conditions))
 

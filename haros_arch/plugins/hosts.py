@@ -170,6 +170,14 @@ HOSTS: tuple[Host, ...] = (
         Slot("waypoint_task_executor_plugin", "{name}.plugin",
              ("nav2_core", "nav2_core::WaypointTaskExecutor")),)),
     Host("nav2_costmap_2d", ("nav2_costmap_2d",), 2, _NAV2_COSTMAP),
+    # bt_navigator loads its navigators by id (bt_navigator.cpp: ``navigators``, each
+    # class from ``<id>.plugin``; the two defaults when the list is not set); a navigator
+    # names its action and parameters by its ``getName()``, not by the id
+    Host("nav2_bt_navigator", ("bt_navigator", "nav2_bt_navigator::BtNavigator"), 2, (
+        Slot("navigators", "{name}.plugin", ("nav2_core", "nav2_core::NavigatorBase"),
+             defaults=(("navigate_to_pose", "nav2_bt_navigator::NavigateToPoseNavigator"),
+                       ("navigate_through_poses",
+                        "nav2_bt_navigator::NavigateThroughPosesNavigator"))),)),
     # move_base: planners named by their class (initialised with the class's short
     # name), recovery behaviours and costmap layers by {name, type} lists; a layer is
     # initialised with the name ``<costmap>/<layer>``

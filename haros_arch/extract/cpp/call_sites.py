@@ -16,8 +16,9 @@ import itertools
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 
-from clang.cindex import Cursor, CursorKind, Type, TypeKind
+from clang.cindex import Cursor, CursorKind, Type, TypeKind, conf
 
+from . import msg_types
 from .expressions import is_default_argument
 from .values import (
     PLACEHOLDER,
@@ -128,6 +129,57 @@ class CallSites:
             self._scopes[key] = Scope(function, self.macros, self.source, self)
         return self._scopes[key]
 
+    def returns(self, method: Cursor) -> list[tuple[Cursor, Cursor]] | None:
+        """(expression, method) for each body a call of ``method`` (a method without
+        parameters) may run, whose one statement returns the expression: its own
+        definition unless it is pure, and for a virtual one each of this unit's
+        definitions that override it (a base class's ``getName()``, pure, that each
+        navigator defines as ``return std::string("navigate_to_pose");``). None when one
+        of them is not such a body, or none is known."""
+        if method.kind != CursorKind.CXX_METHOD or any(
+                c.kind == CursorKind.PARM_DECL for c in method.get_children()):
+            return None
+        bodies: list[Cursor] = []
+        definition = method.get_definition()
+        if definition is not None and not method.is_pure_virtual_method():
+            bodies.append(definition)
+        owner = method.semantic_parent
+        if method.is_virtual_method() and owner is not None:
+            target = key_of(owner.canonical)
+            bodies.extend(
+                function for function in self.functions
+                if function.kind == CursorKind.CXX_METHOD and function not in bodies
+                and function.spelling == method.spelling and function.is_virtual_method()
+                and not any(c.kind == CursorKind.PARM_DECL for c in function.get_children())
+                and function.semantic_parent is not None
+                and target in _bases(function.semantic_parent))
+        found: list[tuple[Cursor, Cursor]] = []
+        for body in bodies:
+            statements = [c for c in body.get_children() if c.kind == CursorKind.COMPOUND_STMT]
+            inner = list(statements[0].get_children()) if len(statements) == 1 else []
+            values = list(inner[0].get_children()) if len(inner) == 1 and (
+                inner[0].kind == CursorKind.RETURN_STMT) else []
+            if len(values) != 1:
+                return None
+            found.append((values[0], body))
+        return found or None
+
+    def virtual_callees(self) -> set[str]:
+        """The USRs of the virtual methods taking one string that this unit's functions
+        call (defined here or not): a plugin's own code that calls one (nav2's
+        ``Polygon`` calls ``createSubscription(topic)``, which ``Circle`` overrides) gives
+        its string itself (``links.CALLED_VIRTUAL``)."""
+        found: set[str] = set()
+        for calls in self._sites().values():
+            callee = callee_of(calls[0][0])
+            if callee is None or callee.kind != CursorKind.CXX_METHOD or (
+                    not callee.is_virtual_method()):
+                continue
+            params = [c for c in callee.get_children() if c.kind == CursorKind.PARM_DECL]
+            if sum(1 for p in params if msg_types.param_type(p.type) == "str") == 1:
+                found.add(callee.canonical.get_usr())
+        return found
+
     def callers(self, function: Cursor) -> list[tuple[Cursor, Cursor]]:
         """(call, calling function) for the calls of ``function`` in this file."""
         return self._sites().get(key_of(function.canonical), [])
@@ -224,6 +276,28 @@ class CallSites:
                         self._index.setdefault(key_of(target.canonical), []).append(
                             (arguments, function))
         return self._index
+
+
+def _bases(cls: Cursor, depth: int = 0) -> set[tuple[str, int]]:
+    """The keys of ``cls``'s base classes, transitively; a base that is a class
+    template's specialisation (``Navigator<ToPose>``) also as that template."""
+    found: set[tuple[str, int]] = set()
+    if depth > 8:
+        return found
+    for base in cls.get_children():
+        if base.kind != CursorKind.CXX_BASE_SPECIFIER:
+            continue
+        decl = base.type.get_canonical().get_declaration()
+        template = conf.lib.clang_getSpecializedCursorTemplate(decl)
+        for each in (decl, template):
+            if each is not None and each.kind != CursorKind.NO_DECL_FOUND:
+                found.add(key_of(each.canonical))
+        definition = decl.get_definition()
+        if definition is None and template is not None:
+            definition = template.get_definition()
+        if definition is not None:
+            found |= _bases(definition, depth + 1)
+    return found
 
 
 def overridden(method: Cursor, depth: int = 0) -> list[Cursor]:
@@ -339,7 +413,9 @@ def callee_of(call: Cursor) -> Cursor | None:
     (std or boost) the one constructor of ``T`` that takes that many arguments (with
     its defaults)."""
     target = call.referenced
-    if target is None or target.kind not in _CALLABLE:
+    if target is None:
+        return _dependent_maker(call)
+    if target.kind not in _CALLABLE:
         return None
     if target.spelling not in _MAKERS or target.kind == CursorKind.CONSTRUCTOR:
         return target
@@ -355,6 +431,30 @@ def callee_of(call: Cursor) -> Cursor | None:
                  and c.spelling.split("<")[0] == decl.spelling.split("<")[0]))
              and _takes(c, len(args))]
     found = closest(found, args)
+    return found[0] if len(found) == 1 else None
+
+
+def _dependent_maker(call: Cursor) -> Cursor | None:
+    """In a template, ``std::make_unique<C<T>>(args)`` whose class depends on a template
+    parameter is no call clang resolves: the one constructor of class template ``C``
+    that takes that many arguments (nav2's ``BehaviorTreeNavigator<ActionT>`` makes its
+    ``BtActionServer<ActionT, ...>`` so)."""
+    children = list(call.get_children())
+    refs = list(children[0].get_children()) if children and (
+        children[0].kind == CursorKind.DECL_REF_EXPR) else []
+    makers = [i for i, c in enumerate(refs) if c.kind == CursorKind.OVERLOADED_DECL_REF
+              and c.spelling in _MAKERS]
+    if not makers:
+        return None
+    classes = [c.referenced for c in refs[makers[0] + 1:]
+               if c.kind == CursorKind.TEMPLATE_REF and c.referenced is not None
+               and c.referenced.kind == CursorKind.CLASS_TEMPLATE]
+    if not classes:
+        return None
+    decl = classes[0].get_definition() or classes[0]
+    args = written_arguments(call)
+    found = closest([c for c in decl.get_children() if c.kind == CursorKind.CONSTRUCTOR
+                     and _takes(c, len(args))], args)
     return found[0] if len(found) == 1 else None
 
 

@@ -46,6 +46,18 @@ OVERRIDES = -2
 # the index of a fact that says the call site (a construction) is made under the source
 # conditions its value holds (``cache.conditions_text``)
 CONDITIONS = -3
+# the index of a fact that says the function is a virtual method whose one string
+# parameter is the one at the fact's site (its value: the USRs of the base methods it
+# overrides, one per line): a host calls a plugin through its base class, and the one
+# string such a method takes from it is the plugin's name (nav2's ``configure(parent,
+# name, tf, ...)``, ROS 1 nav_core's ``initialize(name, ...)``). A call named wholly by
+# that parameter, where no file of the node calls the method or one it overrides (nav2's
+# CostmapFilter calls its filters' ``initializeFilter(topic)`` itself), is
+# ``PrimitiveCall.host_named``
+HOST_NAMED = -4
+# the index of a fact that says the unit's code calls the function, a virtual method
+# taking one string (``CallSites.virtual_callees``), wherever it is defined
+CALLED_VIRTUAL = -5
 _SPECIALISED = frozenset({CursorKind.FUNCTION_DECL, CursorKind.CONSTRUCTOR,
                           CursorKind.CXX_METHOD})
 MAX_VALUES = 32  # realsense2_camera's setParam is called with ~30 names in its files
@@ -105,6 +117,12 @@ def argument_facts(sites: CallSites, namespaces: Namespaces,
         params = [c for c in function.get_children() if c.kind == CursorKind.PARM_DECL]
         facts.extend((usr, OVERRIDES, base, str(index)) for base in bases if base
                      for index, parm in enumerate(params) if is_handle(parm))
+        strings = [index for index, parm in enumerate(params)
+                   if msg_types.param_type(parm.type) == "str"]
+        if len(strings) == 1 and function.is_virtual_method():
+            facts.append((usr, HOST_NAMED, "\n".join(b for b in bases if b),
+                          str(strings[0])))
+    facts.extend((usr, CALLED_VIRTUAL, "", "") for usr in sorted(sites.virtual_callees()))
     return list(dict.fromkeys(facts))
 
 
@@ -198,7 +216,14 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact],
     the words ``unseen`` of the code where the parse left errors (``*``: anywhere)."""
     facts = list(facts)
     passed = _passed(facts)
-    called = {fact[0] for fact in facts if fact[1] != OVERRIDES}
+    called = {fact[0] for fact in facts if fact[1] not in (OVERRIDES, HOST_NAMED,
+                                                           CALLED_VIRTUAL)}
+    calling = called | {fact[0] for fact in facts if fact[1] == CALLED_VIRTUAL}
+    hosted = {(usr, int(site)): " ".join(dict.fromkeys(
+                  qualified_class(base) for base in bases.split("\n") if base))
+              for usr, index, bases, site in facts
+              if index == HOST_NAMED and bases and usr not in calling
+              and not any(base in calling for base in bases.split("\n"))}
     constructed = {class_of(usr) for usr in called if _constructor(usr)}
     out: list[PrimitiveCall] = []
     found: list[Diagnostic] = []
@@ -234,6 +259,10 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact],
                     join_name(ns, _unmarked(camera)) if camera and PLACEHOLDER not in camera
                     else None))
             made = _named_by(made)
+            whole = _MARK.fullmatch(written) if not namespace else None
+            classes = hosted.get((whole.group(1), int(whole.group(2)))) if whole else None
+            if made.name == "?" and classes:
+                made = dataclasses.replace(made, host_named=classes)
             out.append(made)
             if "?" in made.name:
                 found.append(diag.make("CPP_DYNAMIC_NAME", made.location, kind=made.kind,
@@ -268,6 +297,14 @@ def resolve_name(name: str, facts: Iterable[Fact]) -> str:
     found = _expand(name, _passed(facts), 0)
     return _unmarked(found[0]) if len(found) == 1 and PLACEHOLDER not in found[0] else (
         _MARK.sub("?", name))
+
+
+def qualified_class(usr: str) -> str:
+    """The qualified name of the class of a method's USR (``nav2_core::Behavior``)."""
+    parts = usr.split("@F@")[0].split("@")[1:]
+    names = [name for kind, name in zip(parts[::2], parts[1::2], strict=False)
+             if kind == "N" or kind.startswith("S")]
+    return "::".join(names)
 
 
 _CLASS = re.compile(r"@(?:S|ST>\d+(?:#[^@]*)?)@([A-Za-z_]\w*)@F")

@@ -496,6 +496,14 @@ class Scope:
                 objects = list(children[0].get_children())
                 if objects:
                     return self.string(objects[0], depth + 1)
+        if not args and self.sites is not None:
+            # a getter: what its one ``return`` gives, in each body the call may run
+            # (read in that method, its members as its class's constructors set them)
+            bodies = self.sites.returns(target)
+            values = {self.sites.scope(method).string(value, depth + 1)
+                      for value, method in bodies or ()}
+            if len(values) == 1:
+                return values.pop()
         return UNKNOWN
 
     def resolved(self, cursor: Cursor, depth: int = 0) -> bool:
