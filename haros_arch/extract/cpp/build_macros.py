@@ -29,9 +29,9 @@ _KEYWORDS = frozenset({"PRIVATE", "PUBLIC", "INTERFACE", "defined"})
 MAX_CMAKE_FILES = 40
 
 
-def cmake_macros(root: str, workspace: Workspace) -> dict[str, tuple[str, int]]:
-    """The macros a package's CMake files define, each with where (file, line)."""
-    found: dict[str, tuple[str, int]] = {}
+def cmake_files(root: str) -> list[str]:
+    """A package's CMake files (``CMakeLists.txt``, ``*.cmake``) under ``root``, in a
+    stable order, not in hidden, build or install folders; at most ``MAX_CMAKE_FILES``."""
     files: list[str] = []
     for folder, dirs, names in os.walk(root):
         dirs[:] = sorted(d for d in dirs if not d.startswith((".", "build", "install")))
@@ -39,7 +39,13 @@ def cmake_macros(root: str, workspace: Workspace) -> dict[str, tuple[str, int]]:
                      if n == "CMakeLists.txt" or n.endswith(".cmake"))
         if len(files) >= MAX_CMAKE_FILES:
             break
-    for path in files[:MAX_CMAKE_FILES]:
+    return files[:MAX_CMAKE_FILES]
+
+
+def cmake_macros(root: str, workspace: Workspace) -> dict[str, tuple[str, int]]:
+    """The macros a package's CMake files define, each with where (file, line)."""
+    found: dict[str, tuple[str, int]] = {}
+    for path in cmake_files(root):
         text, _ = read_text(path, workspace.location(path))
         for match in _COMMAND.finditer(text or ""):
             line = text.count("\n", 0, match.start()) + 1 if text else 0

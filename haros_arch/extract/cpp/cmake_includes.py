@@ -20,6 +20,7 @@ import re
 
 from ...files import read_text
 from ...workspace import Workspace
+from .build_macros import cmake_files
 
 _COMMAND = re.compile(r"^[ \t]*(include_directories|target_include_directories)\s*\(([^)]*)\)",
                       re.IGNORECASE | re.MULTILINE)
@@ -29,7 +30,6 @@ _BUILD_INTERFACE = re.compile(r"\$<BUILD_INTERFACE:([^>]*)>")
 _FILE_DIRS = ("${CMAKE_CURRENT_SOURCE_DIR}", "${CMAKE_CURRENT_LIST_DIR}")
 _ROOT_DIRS = ("${PROJECT_SOURCE_DIR}", "${CMAKE_SOURCE_DIR}")
 _PROJECT = re.compile(r"^[ \t]*project\s*\(", re.IGNORECASE | re.MULTILINE)
-MAX_CMAKE_FILES = 40
 MAX_PROJECT_READ = 256 * 1024
 
 
@@ -38,15 +38,8 @@ def cmake_include_dirs(root: str, workspace: Workspace) -> list[str]:
     folders, in the order first given (not the root itself, nor a folder of a
     sub-project the files do not own)."""
     root = os.path.abspath(root)
-    files: list[str] = []
-    for folder, dirs, names in os.walk(root):
-        dirs[:] = sorted(d for d in dirs if not d.startswith((".", "build", "install")))
-        files.extend(os.path.join(folder, n) for n in sorted(names)
-                     if n == "CMakeLists.txt" or n.endswith(".cmake"))
-        if len(files) >= MAX_CMAKE_FILES:
-            break
     found: list[str] = []
-    for path in files[:MAX_CMAKE_FILES]:
+    for path in cmake_files(root):
         text, _ = read_text(path, workspace.location(path))
         here = os.path.dirname(path)
         for match in _COMMAND.finditer(_COMMENT.sub("", text or "")):
