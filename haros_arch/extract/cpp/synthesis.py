@@ -71,6 +71,11 @@ _MEMBER_TYPE = re.compile(  # ``Msg::_code_type``; ``Synthesised<T>::ConstPtr``
 _AMBIGUOUS = re.compile(r"^reference to '(\w+)' is ambiguous")
 _RECORD = re.compile(r"[a-z]\w*(?:::\w+)+")  # a message's struct: ``pkg::msg::Name``
 _AFTER_MEMBER = re.compile(rb"(?:\.|->)\s*([A-Za-z_]\w*)")
+# a member template named with C++'s ``template`` keyword (``bb->template set<T>(k, v)``,
+# where the object's type depends on a template parameter or is unknown)
+_TEMPLATE_MEMBER = re.compile(rb"(?:\.|->)\s*template\s+([A-Za-z_]\w*)\s*<")
+_NOT_TEMPLATE = re.compile(
+    r"^'(\w+)' following the 'template' keyword does not refer to a template")
 # a value read from a scope: ``Mode::FAST)``, ``case Mode::FAST:``, an enumerator of a
 # vendor enum
 _SCOPED_VALUE = re.compile(rb"::\s*([A-Za-z_]\w*)\s*(?=[);,\]}]|:(?!:))")
@@ -306,6 +311,9 @@ class Names:
         self.declared = declared
         self.root = _Name(known=True)
         self.members: set[str] = set()
+        # the members written after C++'s ``template`` keyword: member templates (any
+        # template arguments, any call arguments), not static members
+        self.member_templates: set[str] = set()
         # the members read where C++ needs a constant (``case Mode::FAST:``): enumerators
         self.constants: set[str] = set()
         self.flags: set[str] = set()  # those an operator combines (``_constant_at``)
@@ -378,9 +386,11 @@ class Names:
         """Every name the code reads after ``.`` or ``->``, and every value it reads from
         a scope (``Mode::FAST``), as a member of the declared classes (a member of a
         vendor object is an error only once its class is declared: the next wave), but
-        the API's own methods. Not as member templates: ``x.get<T>("node")`` is
-        better left an error, so that the calls on what it returns are kept by their
-        API name (a declared template returns an object whose API calls then fail)."""
+        the API's own methods. Not as member templates where the code does not say it
+        names one: ``x.get<T>("node")`` is better left an error, so that the calls on
+        what it returns are kept by their API name (a declared template returns an
+        object whose API calls then fail); a name after C++'s ``template`` keyword
+        (``bb->template set<T>("node", node_)``) is one (``member_templates``)."""
         from . import api
         # the API's methods (longer than four letters, as ``recall`` counts them: ``get``
         # / ``set`` / ``call`` are any class's) stay the API's: a class built on a real
@@ -390,6 +400,10 @@ class Names:
             if text is not None:
                 self.members.update(
                     n for n in (m.decode() for m in _AFTER_MEMBER.findall(text)) if n not in skip)
+                # ``x->template get<T>()`` says itself that it names a template
+                self.member_templates.update(
+                    n for n in (m.decode() for m in _TEMPLATE_MEMBER.findall(text))
+                    if n not in skip)
                 self.taken.update(_case_literals(text))
                 for found in _SCOPED_VALUE.finditer(text):  # not ``using A = ns::A;``
                     line = text[text.rfind(b"\n", 0, found.start()) + 1:found.start()]
@@ -411,6 +425,12 @@ class Names:
             macro = _declaration_macro(text, offset) if text is not None else None
             if macro is not None and macro not in self.declaration_macros:
                 self.declaration_macros.add(macro)
+                self.count += 1
+            return
+        template = _NOT_TEMPLATE.match(message)
+        if template is not None:
+            if template.group(1) not in self.member_templates:
+                self.member_templates.add(template.group(1))
                 self.count += 1
             return
         ambiguous = _AMBIGUOUS.match(message)
@@ -587,7 +607,10 @@ class Names:
     def header(self) -> str:
         values = _Values(self.taken)
         members = "".join(f"  static haros_any {m};\n" for m in sorted(self.members)
-                          if m not in self.constants)
+                          if m not in self.constants and m not in self.member_templates)
+        members += "".join(
+            f"  template <class... T, class... A> static haros_any &{m}(const A &...);\n"
+            for m in sorted(self.member_templates - self.constants))
         members += "".join(f"  enum : int {{ {m} = {values.next(m in self.flags)} }};\n"
                            for m in sorted(self.constants & self.members))
         lines = [_PRELUDE % (_COMPOUND_MEMBERS, members, _OPERATORS)]
