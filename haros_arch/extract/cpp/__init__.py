@@ -225,11 +225,8 @@ def _batch(nodes: Sequence[Sequence[str]], workspace: Workspace, include_dirs: S
                 texts[path] = text
                 ros2[path] = _is_ros2(path, setup.scan(path, text), workspace)
         results = _units(texts, ros2, setup, store, jobs, batch.units, wanted, meanwhile)
-        meanwhile = None  # called by _units
     finally:
         setup.close()
-    if meanwhile is not None:  # the batch failed before: the caller's work still runs
-        meanwhile()
     batch.diagnostics += [*setup.diagnostics, *read]
     return batch, results
 

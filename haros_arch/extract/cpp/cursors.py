@@ -38,7 +38,7 @@ from clang.cindex import (
     conf,
 )
 
-__all__ = ["Node", "by_file", "children_in", "overloads", "release", "root"]
+__all__ = ["Node", "by_file", "children_in", "line_of", "overloads", "release", "root"]
 
 _VISIT = callbacks["cursor_visit"]
 Value = TypeVar("Value")
@@ -281,6 +281,12 @@ def release(node: Node) -> None:
     """Free the nodes of ``node``'s unit (``_Unit.release``): no node of it may be used
     after this."""
     node._unit.release()
+
+
+def line_of(location: SourceLocation) -> int:
+    """The line of a source location (where it is instantiated), asked of libclang once
+    (``_Raw.instantiation``)."""
+    return _raw().instantiation(location)[1]
 
 
 def by_file(judge: Callable[[str], Value]) -> Callable[[Any], Value | None]:

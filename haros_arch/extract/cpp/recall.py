@@ -36,7 +36,6 @@ from dataclasses import dataclass
 from clang.cindex import (
     Cursor,
     LibclangError,
-    SourceLocation,
     SourceRange,
     TranslationUnit,
     callbacks,
@@ -44,7 +43,7 @@ from clang.cindex import (
 )
 
 from . import api
-from .cursors import by_file
+from .cursors import by_file, line_of
 
 __all__ = ["NEAR", "Function", "Site", "call_sites", "holding", "missed", "site_pattern"]
 
@@ -275,17 +274,12 @@ def definitions(tu: TranslationUnit, files: set[str]) -> dict[str, list[Function
     functions = {kind.value for kind in FUNCTIONS}
     containers = {kind.value for kind in CONTAINERS}
     found: dict[str, list[Function]] = {}
-    line = ctypes.c_uint()
 
     def asked(name: str) -> str | None:
         full = os.path.abspath(name)
         return full if full in files else None
 
     file_of = by_file(asked)  # the location's file, when it is one of ``files``
-
-    def line_of(location: SourceLocation) -> int:
-        lib.clang_getInstantiationLocation(location, None, ctypes.byref(line), None, None)
-        return line.value
 
     def visit(cursor: Cursor, _parent: Cursor, _data: object) -> int:
         name = file_of(lib.clang_getCursorLocation(cursor))
