@@ -208,12 +208,11 @@ def _batch(nodes: Sequence[Sequence[str]], workspace: Workspace, include_dirs: S
     if compile_commands is None:
         compile_commands = commands.find(workspace)
     units, batch.diagnostics = commands.load(compile_commands, workspace)
+    folder = None if cache_dir is None else (
+        cache.default_folder(workspace.root) if cache_dir == cache.AUTO else cache_dir)
     setup = IncludeSetup(workspace, include_dirs, system_headers, units,
-                         [p for sources in nodes for p in sources])
-    store = None
-    if cache_dir is not None:
-        folder = cache.default_folder(workspace.root) if cache_dir == cache.AUTO else cache_dir
-        store = cache.Cache(folder, setup.generated, setup.written)
+                         [p for sources in nodes for p in sources], kept_in=folder)
+    store = None if folder is None else cache.Cache(folder, setup.generated, setup.written)
     read: list[Diagnostic] = []
     try:
         texts: dict[str, str] = {}

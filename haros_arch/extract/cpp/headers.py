@@ -44,6 +44,9 @@ lacks are synthesised, so the real ROS headers are used.
 from __future__ import annotations
 
 import atexit
+import contextlib
+import fcntl
+import hashlib
 import os
 import re
 import shutil
@@ -258,11 +261,16 @@ class IncludeSetup:
 
     def __init__(self, workspace: Workspace, include_dirs: Sequence[str],
                  system_headers: bool, units: Mapping[str, UnitFlags] | None = None,
-                 sources: Sequence[str] = ()) -> None:
+                 sources: Sequence[str] = (), kept_in: str | None = None) -> None:
         self.workspace = workspace
         self.units = dict(units or {})  # real source path -> its compile command's flags
         self.system_headers = system_headers
-        self.generated = tempfile.mkdtemp(prefix="haros-arch-cpp-")
+        # the synthesised headers' folder: the workspace's own in the cache folder
+        # ``kept_in``, kept from run to run, when no other run holds it (``_kept``);
+        # else a temporary one
+        self._lock: int | None = None
+        kept = self._kept(workspace.root, kept_in) if kept_in else None
+        self.generated = kept or tempfile.mkdtemp(prefix="haros-arch-cpp-")
         self.user_dirs = [os.path.abspath(d) for d in include_dirs]
         self.user_dirs += [inc for inc in (os.path.join(p.root, "include")
                                            for p in workspace.packages.values() if p.root)
@@ -378,10 +386,34 @@ class IncludeSetup:
         return self.own.get(package.name, []) if package is not None else []
 
     def close(self) -> None:
-        if self._on_disk:
+        if self._lock is not None:  # kept for the next run, which makes it what it needs
+            os.close(self._lock)
+            self._lock = None
+        elif self._on_disk:
             shutil.rmtree(self.generated, ignore_errors=True)
         else:
             os.rmdir(self.generated)
+
+    def _kept(self, root: str, folder: str) -> str | None:
+        """The workspace's folder of synthesised headers in the cache ``folder``, locked
+        for this run; None when it cannot be made or another run holds it. Writing the
+        headers of a large workspace and removing them again cost a run that parses
+        one changed source more than its parse (hundreds of folders of message
+        headers); ``materialise`` brings the kept folder to exactly this run's set."""
+        name = hashlib.sha256(os.fsencode(root)).hexdigest()[:16]
+        path = os.path.join(folder, "generated", name)
+        try:
+            os.makedirs(path, exist_ok=True)
+            lock = os.open(path + ".lock", os.O_RDWR | os.O_CREAT, 0o644)
+        except OSError:
+            return None
+        try:
+            fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except OSError:
+            os.close(lock)
+            return None
+        self._lock = lock
+        return path
 
     # -- before parsing ---------------------------------------------------------------
 
@@ -809,8 +841,11 @@ class IncludeSetup:
         only in memory: a run answered from the cache writes none)."""
         if not self._on_disk:
             self._on_disk = True
-            for path, text in self.written.items():
-                _write_file(path, text)
+            if self._lock is not None:
+                _sync(self.generated, self.written, {os.path.join(self.generated, HEADER_MAP)})
+            else:
+                for path, text in self.written.items():
+                    _write_file(path, text)
             self.search = header_map.search_path(
                 os.path.join(self.generated, HEADER_MAP), self.user_dirs)
 
@@ -884,6 +919,33 @@ def _parents(path: str, root: str) -> list[str]:
         found.append(folder)
         folder = os.path.dirname(folder)
     return found
+
+
+def _sync(folder: str, wanted: Mapping[str, str], spared: set[str]) -> None:
+    """Make ``folder`` hold exactly the files ``wanted`` (path -> text), and those
+    ``spared``: a file of an earlier run that this one does not write is removed (a
+    header clang would find where this run's repair says it is missing), one whose
+    text differs is written again, one that is the same is left as it is."""
+    for parent, _folders, files in os.walk(folder, topdown=False):
+        for name in files:
+            path = os.path.join(parent, name)
+            if path not in wanted and path not in spared:
+                with contextlib.suppress(OSError):
+                    os.remove(path)
+        if parent != folder and not os.listdir(parent):
+            with contextlib.suppress(OSError):
+                os.rmdir(parent)
+    for path, text in wanted.items():
+        data = text.encode("utf-8")
+        try:
+            with open(path, "rb") as handle:
+                same = handle.read(len(data) + 1) == data
+        except OSError:
+            same = False
+        if not same:
+            if os.path.isdir(path):  # a folder of an earlier run where this one writes a file
+                shutil.rmtree(path, ignore_errors=True)
+            _write_file(path, text)
 
 
 def _write_file(path: str, text: str) -> None:
