@@ -81,14 +81,18 @@ def analyse(project: Project, environment: Mapping[str, str] | None = None,
         earlier = runcache.load_outer(folder, outer) if kept is None else None
     if kept is not None:
         return kept
+    others = None
     if earlier is not None:  # only C++ files changed: the same model if they give the same
         model = _again(project, env, options, folder, *earlier)
         if model is not None:
             with _stage(options, "cache"):
                 runcache.store_alias(folder, key, earlier[0], outer)
             return model
+        # else the other nodes give what they gave: they read no C++ file (``_units_tell``)
+        found = earlier[1].get("others")
+        others = found if isinstance(found, dict) else None
     record: dict[str, Any] = {}
-    model = _analyse(project, env, options, record)
+    model = _analyse(project, env, options, record, others)
     with _stage(options, "cache"):
         runcache.store(folder, key, model)
         if record:
@@ -133,12 +137,13 @@ def _compile_commands(project: Project) -> list[str] | None:
 
 
 def _extract(nodes: list[Node], workspace: Workspace, project: Project,
-             options: Options, cpp_batch: CppBatch | None = None
+             options: Options, cpp_batch: CppBatch | None = None,
+             kept: dict[str, Any] | None = None, keep: dict[str, Any] | None = None
              ) -> list[diag.Diagnostic]:
     return extract_nodes(  # every C++ source once, in parallel, cached
         nodes, workspace, cache_dir=options.cache_dir, jobs=options.jobs,
         compile_commands=_compile_commands(project), timings=options.timings,
-        cpp_batch=cpp_batch)
+        cpp_batch=cpp_batch, kept=kept, keep=keep)
 
 
 def _gave(batch: CppBatch | None) -> dict[str, Any]:
@@ -154,10 +159,12 @@ def _json(data: Any) -> str:
 
 
 def _analyse(project: Project, env: Mapping[str, str], options: Options,
-             record: dict[str, Any] | None) -> Model:
+             record: dict[str, Any] | None, kept: dict[str, Any] | None = None) -> Model:
     """The run; ``record`` (when given) gets the C++ translation units of its nodes and
-    what they gave, for ``_again`` (left empty when a node of another language reads a
-    file named as C++: ``_units_tell``)."""
+    what they gave, for ``_again``, and what the nodes of other languages gave (left
+    empty when a node of another language reads a file named as C++: ``_units_tell``);
+    ``kept``: what they gave in an earlier run whose files but C++ ones were these
+    (``extract_nodes``)."""
     from . import graph, launch
     from .graph.build import nodelet_plugin
     from .model.runtime import Configuration
@@ -204,9 +211,12 @@ def _analyse(project: Project, env: Mapping[str, str], options: Options,
         from .extract.cpp import CppBatch
 
         batch = CppBatch()
-    model.diagnostics.extend(_extract(every, workspace, project, options, batch))
-    if record is not None and _units_tell(every):
-        record.update(units=sources, gave=_gave(batch))
+    tells = _units_tell(every)
+    others: dict[str, Any] = {}
+    model.diagnostics.extend(_extract(every, workspace, project, options, batch,
+                                      kept if tells else None, others))
+    if record is not None and tells:
+        record.update(units=sources, gave=_gave(batch), others=others)
 
     project_file = Location(file=os.path.relpath(project.path))
     models = Attacher(Library(project.models, DATA if options.models else None),

@@ -194,6 +194,36 @@ def test_a_cpp_change_does_not_extract_the_python_nodes_again(tmp_path: Path,
     assert again == first == json.dumps(model_to_data(fresh), sort_keys=True)
 
 
+def test_a_cpp_change_that_extracts_otherwise_takes_the_python_nodes_as_they_were(
+        tmp_path: Path, monkeypatch) -> None:
+    """Only C++ files changed and they give other calls: the run is made again, but the
+    nodes of other languages, whose files are the same, are not read again: the model
+    is the one a fresh run gives."""
+    from haros_arch.extract import python
+
+    project = _copy_examples(tmp_path)
+    first, _ = _run(project, tmp_path / "cache")
+    source = project.parent / "src" / "demo_robot" / "src" / "driver.cpp"
+    source.write_text("// moved\n" + source.read_text())  # every call's line changes
+
+    def fails(*args: object, **kwargs: object) -> None:
+        raise AssertionError("a Python node extracted again")
+
+    with monkeypatch.context() as patch:
+        patch.setattr(python, "extract_python", fails)
+        changed, timings = _run(project, tmp_path / "cache")
+    assert "graph" in timings and changed != first  # made again, Python nodes kept
+    fresh = analyse(load(str(project)), {}, Options(cache_dir=None, jobs=1))
+    assert changed == json.dumps(model_to_data(fresh), sort_keys=True)
+    assert '"language": "python"' in changed
+    source.write_text("// moved again\n" + source.read_text())  # the same twice over
+    with monkeypatch.context() as patch:
+        patch.setattr(python, "extract_python", fails)
+        again, _ = _run(project, tmp_path / "cache")
+    fresh = analyse(load(str(project)), {}, Options(cache_dir=None, jobs=1))
+    assert again == json.dumps(model_to_data(fresh), sort_keys=True)
+
+
 def test_a_python_change_after_a_cpp_change_is_in_the_model(tmp_path: Path) -> None:
     project = _copy_examples(tmp_path)
     first, _ = _run(project, tmp_path / "cache")

@@ -9,12 +9,13 @@ C++ goes through libclang, Python through ``ast``.
 
 from __future__ import annotations
 
+import json
 import os
 import re
 import time
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import replace
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from .. import diagnostics as diag
 from ..diagnostics import Diagnostic
@@ -35,7 +36,9 @@ def extract_nodes(nodes: Sequence[Node], workspace: Workspace, *,
                   cache_dir: str | None = AUTO_CACHE, jobs: int | None = None,
                   compile_commands: Sequence[str] | None = None,
                   timings: dict[str, float] | None = None,
-                  cpp_batch: CppBatch | None = None) -> list[Diagnostic]:
+                  cpp_batch: CppBatch | None = None,
+                  kept: Mapping[str, Any] | None = None,
+                  keep: dict[str, Any] | None = None) -> list[Diagnostic]:
     """Extract every node; C++ nodes in one batch (``cpp.extract_cpp_nodes``): a source
     shared by several nodes is parsed once. ``cache_dir`` None: no cache; ``jobs``: worker
     processes (default: the number of cores); ``compile_commands``: the
@@ -44,7 +47,10 @@ def extract_nodes(nodes: Sequence[Node], workspace: Workspace, *,
     other nodes ("Python", read during the batch: within its seconds), added;
     ``cpp_batch``, when given, the C++ batch's own diagnostics and the digest of what
     each translation unit gave (``CppBatch.units``; not the node results, which are the
-    nodes')."""
+    nodes'); ``kept``: what an earlier run's nodes of other languages gave, by
+    ``other_key`` (``keep`` of that run), taken instead of reading them again where the
+    caller knows their files unchanged (``pipeline``: only C++ files changed since);
+    ``keep``, when given, gets what this run's give."""
     found: list[Diagnostic] = []
     start = time.perf_counter()
     others: list[Diagnostic] = []  # the other nodes' diagnostics, after the C++ batch's
@@ -54,7 +60,13 @@ def extract_nodes(nodes: Sequence[Node], workspace: Workspace, *,
         began = time.perf_counter()
         for node in nodes:
             if node.language != "cpp":
-                others.extend(extract_node(node, workspace))
+                key = other_key(node)
+                said = _kept_result(node, kept.get(key)) if kept is not None else None
+                if said is None:
+                    said = extract_node(node, workspace)
+                if keep is not None:
+                    keep[key] = _result_data(node, said)
+                others.extend(said)
             elif not node.sources:
                 completeness(node, [])
         spent[0] += time.perf_counter() - began
@@ -88,6 +100,41 @@ def extract_nodes(nodes: Sequence[Node], workspace: Workspace, *,
         timings["C++"] = timings.get("C++", 0.0) + batch_seconds
         timings["Python"] = timings.get("Python", 0.0) + spent[0]
     return found
+
+
+def other_key(node: Node) -> str:
+    """What names a node of another language than C++ from run to run: its package,
+    executable, kind, language and sources."""
+    return json.dumps([node.package, node.executable, node.kind, node.language,
+                       node.sources])
+
+
+# the node fields extraction sets (``extract_node``, ``completeness``)
+_RESULT_FIELDS = ("calls", "rosname", "rosnames", "completeness", "completeness_reasons",
+                  "plugin_loads")
+
+
+def _result_data(node: Node, said: list[Diagnostic]) -> dict[str, Any]:
+    from ..model.serialise import to_data
+
+    data = to_data(node)
+    return {"node": {k: data[k] for k in ("package", *_RESULT_FIELDS) if k in data},
+            "diagnostics": to_data(said)}
+
+
+def _kept_result(node: Node, data: Any) -> list[Diagnostic] | None:
+    """Set ``node``'s extraction fields from an earlier run's ``_result_data``; its
+    diagnostics. None (``node`` untouched) when ``data`` is not such data."""
+    from ..model.load import diagnostic_from_data, node_from_data
+
+    try:
+        kept = node_from_data(data["node"], node.package)
+        said = [diagnostic_from_data(d) for d in data["diagnostics"]]
+    except (KeyError, TypeError, ValueError, AttributeError):
+        return None
+    for name in _RESULT_FIELDS:
+        setattr(node, name, getattr(kept, name))
+    return said
 
 
 def _build_macros(nodes: Sequence[Node], workspace: Workspace,

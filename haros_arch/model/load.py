@@ -83,7 +83,7 @@ def _held(data: Any) -> tuple[tuple[str, str], ...] | None:
     return found or None
 
 
-def _diagnostic(data: dict[str, Any]) -> Diagnostic:
+def diagnostic_from_data(data: dict[str, Any]) -> Diagnostic:
     return Diagnostic(str(data.get("code", "")), data.get("severity", "warning"),
                       str(data.get("message", "")), location(data.get("location")))
 
@@ -296,7 +296,7 @@ def _configuration(data: dict[str, Any], nodes: dict[str, Node],
             calls = instance.node.calls
             calls.extend(link.call for link in instance.links if link.call is not None
                          and link.origin != "action" and link.call not in calls)
-    config.diagnostics = [_diagnostic(d) for d in data.get("diagnostics", ())]
+    config.diagnostics = [diagnostic_from_data(d) for d in data.get("diagnostics", ())]
     return config
 
 
@@ -427,7 +427,7 @@ def from_data(data: Any) -> Model:
             hinted: dict[str, Node] = {}
             model.configurations = [_configuration(c, nodes, hinted)
                                     for c in data.get("configurations", ())]
-            model.diagnostics = [_diagnostic(d) for d in data.get("diagnostics", ())]
+            model.diagnostics = [diagnostic_from_data(d) for d in data.get("diagnostics", ())]
     except (AttributeError, TypeError, KeyError, ValueError, OverflowError,
             RecursionError) as err:
         # a field of the wrong type (a list where an object belongs, ...): the document is
