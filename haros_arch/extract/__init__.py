@@ -35,7 +35,8 @@ def extract_nodes(nodes: Sequence[Node], workspace: Workspace, *,
                   cache_dir: str | None = AUTO_CACHE, jobs: int | None = None,
                   compile_commands: Sequence[str] | None = None,
                   timings: dict[str, float] | None = None,
-                  cpp_batch: CppBatch | None = None) -> list[Diagnostic]:
+                  cpp_batch: CppBatch | None = None,
+                  distro: str | None = None) -> list[Diagnostic]:
     """Extract every node; C++ nodes in one batch (``cpp.extract_cpp_nodes``): a source
     shared by several nodes is parsed once. ``cache_dir`` None: no cache; ``jobs``: worker
     processes (default: the number of cores); ``compile_commands``: the
@@ -44,7 +45,8 @@ def extract_nodes(nodes: Sequence[Node], workspace: Workspace, *,
     other nodes ("Python", read during the batch: within its seconds), added;
     ``cpp_batch``, when given, the C++ batch's own diagnostics and the digest of what
     each translation unit gave (``CppBatch.units``; not the node results, which are the
-    nodes')."""
+    nodes'); ``distro``: the ROS distribution whose rclcpp version C++ is parsed with
+    (``cpp.versions``; None: not known)."""
     found: list[Diagnostic] = []
     start = time.perf_counter()
     others: list[Diagnostic] = []  # the other nodes' diagnostics, after the C++ batch's
@@ -68,7 +70,8 @@ def extract_nodes(nodes: Sequence[Node], workspace: Workspace, *,
         # the other nodes are read while the workers parse C++ (they need none of it)
         batch = extract_cpp_nodes([_paths(node, workspace) for node in cpp], workspace,
                                   cache_dir=cache_dir, jobs=jobs,
-                                  compile_commands=compile_commands, meanwhile=other_nodes)
+                                  compile_commands=compile_commands, meanwhile=other_nodes,
+                                  distro=distro)
         for node, result in zip(cpp, batch.results, strict=True):
             node.calls = without_overridden(node, result.calls, workspace)
             node.rosname = _rosname(node, result.rosname)
@@ -128,7 +131,8 @@ def cpp_sources(nodes: Sequence[Node], workspace: Workspace) -> list[str]:
 # read or parsed)
 _PARTIAL_CAUSES = {
     "cpp": ("CPP_CALL_MISSED", "CPP_ERROR_NEAR_CALL", "CPP_PARSE_FAILED", "FILE_UNREADABLE",
-            "CPP_NODE_PASSED", "CPP_NODE_TO_UNKNOWN", "CPP_CLASS_UNSEEN", "CPP_BUILD_MACRO"),
+            "CPP_NODE_PASSED", "CPP_NODE_TO_UNKNOWN", "CPP_CLASS_UNSEEN", "CPP_BUILD_MACRO",
+            "CPP_VERSION_UNKNOWN"),
     "python": ("PY_PARSE_ERROR", "PY_TOO_COMPLEX", "FILE_UNREADABLE", "PY_CLASS_UNSEEN"),
 }
 _PARTIAL_CODE = {"cpp": "CPP_NODE_PARTIAL", "python": "PY_NODE_PARTIAL"}
