@@ -219,3 +219,22 @@ def test_a_branch_inside_code_skipped_for_another_reason_says_nothing(tmp_path) 
             "#ifdef _WIN32\n#if RCLCPP_VERSION_MAJOR >= 30\n"
             "  node.declare_parameter(\"windows\", 1);\n#endif\n#endif\n}\n")
     assert _calls(tmp_path, text, None) == (set(), [])
+
+
+def test_kilted_s_action_introspection_parses(tmp_path) -> None:
+    # nav2's setIntrospectionMode configures an action client or server as from Kilted:
+    # the rclcpp_action stand-ins lacked the method, an error made nodes partial
+    text = ("#include <rclcpp/rclcpp.hpp>\n#include <rclcpp_action/rclcpp_action.hpp>\n"
+            "#include <nav2_msgs/action/spin.hpp>\n"
+            "template<typename T> void configure(T & it, rclcpp::Node & node) {\n"
+            "#if RCLCPP_VERSION_GTE(29, 0, 0)\n"
+            "  it->configure_introspection(node.get_clock(), rclcpp::ServicesQoS(),\n"
+            "                              RCL_SERVICE_INTROSPECTION_METADATA);\n#endif\n}\n"
+            "void f(rclcpp::Node & node, rclcpp_action::Client<nav2_msgs::action::Spin>::"
+            "SharedPtr c, rclcpp_action::Server<nav2_msgs::action::Spin>::SharedPtr s) {\n"
+            "  configure(c, node);\n  configure(s, node);\n}\n")
+    source = tmp_path / "n.cpp"
+    source.write_text(text)
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None,
+                         distro="kilted")
+    assert [d.message for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"] == []
