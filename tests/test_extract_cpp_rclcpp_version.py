@@ -160,8 +160,13 @@ def test_without_a_distribution_each_branch_left_out_is_said(tmp_path) -> None:
     calls, unknown = _calls(tmp_path, BRANCHES, None)
     assert calls == {("declare", "older")}  # jazzy's, the stand-ins' own
     assert unknown == [5, 7]
-    # a distribution that is no ROS 2 one we know is none known
+    # a distribution that is no ROS 2 one we know is none known, and said so
     assert _calls(tmp_path, BRANCHES, "noetic")[1] == [5, 7]
+    source = tmp_path / "n.cpp"
+    said = [d.message for d in extract_cpp([str(source)], scan([str(tmp_path)]),
+                                           cache_dir=None, distro="jazy").diagnostics
+            if d.code == "CPP_VERSION_UNKNOWN"]
+    assert len(said) == 2 and "jazy is no ROS 2 distribution of ours" in said[0]
 
 
 def test_a_taken_branch_or_another_macro_says_nothing(tmp_path) -> None:

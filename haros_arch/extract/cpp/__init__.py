@@ -646,7 +646,8 @@ def _translation_unit(path: str, text: str, ros2: bool,
     result.diagnostics.extend(_hidden(path, errors, finder, source, fieldless, workspace))
     library = versions.RCLCPP if ros2 else versions.ROSCPP
     if library.version(setup.distro) is None and not setup.system_headers:
-        result.diagnostics.extend(_version_unknown(tu, source, owned, workspace, library))
+        result.diagnostics.extend(_version_unknown(tu, source, owned, workspace, library,
+                                                   setup.distro))
     result.diagnostics[:0] = setup.diagnostics[before:]
     result.rosname = finder.rosname
     result.facts = finder.facts
@@ -670,7 +671,7 @@ def _translation_unit(path: str, text: str, ros2: bool,
 
 def _version_unknown(tu: TranslationUnit, source: SourceCache,
                      owned: Callable[[str], bool], workspace: Workspace,
-                     library: versions.Library) -> list[Diagnostic]:
+                     library: versions.Library, distro: str | None) -> list[Diagnostic]:
     """``CPP_VERSION_UNKNOWN`` at the first ROS call of each branch of a condition on
     ``library``'s version that the parse left out, in the unit's workspace files: with
     no distribution of it known, the stand-ins' default version chose (``versions``)."""
@@ -683,7 +684,7 @@ def _version_unknown(tu: TranslationUnit, source: SourceCache,
             found.append(diag.make(
                 "CPP_VERSION_UNKNOWN", workspace.location(name, line), text=call.strip()[:80],
                 condition=condition, library=library.name,
-                version=library.describe(None)))
+                version=library.describe(distro)))
     return found
 
 

@@ -57,8 +57,9 @@ class Library:
         if found is not None:
             return f"{distro}'s ({self.name} {'.'.join(map(str, found))})"
         default = ".".join(map(str, self.table[self.default]))
-        return (f"{self.default}'s ({self.name} {default}), as no ROS {self.ros} "
-                f"distribution is known")
+        why = (f"{distro} is no ROS {self.ros} distribution of ours" if distro else
+               f"no ROS {self.ros} distribution is known")
+        return f"{self.default}'s ({self.name} {default}), as {why}"
 
 
 # rclcpp's version in each ROS 2 distribution: the newest release of its branch listed by
