@@ -243,3 +243,22 @@ def test_kilted_s_action_introspection_parses(tmp_path) -> None:
     result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None,
                          distro="kilted")
     assert [d.message for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"] == []
+
+
+def test_a_run_for_another_distribution_does_not_reuse_the_cached_parse(tmp_path) -> None:
+    tree = tmp_path / "ws"
+    tree.mkdir()
+    source = tree / "n.cpp"
+    source.write_text(BRANCHES)
+    cache = str(tmp_path / "cache")
+
+    def declared(distro: str | None) -> set[str]:
+        result = extract_cpp([str(source)], scan([str(tree)]), cache_dir=cache,
+                             distro=distro)
+        return {c.name for c in result.calls}
+
+    assert declared("jazzy") == {"older"}
+    assert declared("kilted") == {"kilted"}
+    assert declared("rolling") == {"rolling_only"}
+    assert declared("jazzy") == {"older"}  # read back from the cache
+    assert os.listdir(cache)
