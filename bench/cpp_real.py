@@ -2,7 +2,7 @@
 errors are left against our stand-in headers, for every package (or those named).
 
     .venv/bin/python bench/cpp_real.py WORKSPACE [--package P ...] [--node SUBSTRING]
-        [--errors] [--calls] [--json FILE] [--jobs N] [--profile N]
+        [--errors] [--calls] [--json FILE] [--jobs N] [--profile N] [--distro D]
 
 Runs the source stage of the pipeline (workspace scan, build files, C++ extraction; no
 cache, so every translation unit is parsed) and prints the number of C++ nodes, calls
@@ -14,7 +14,9 @@ fields, conditions and location, its ROS names, the diagnostics of its units) as
 compare two checkouts exactly: run each checkout's copy of this script on the same tree
 and ``diff`` the files. ``--jobs N`` parses in N processes (default 1); ``--profile N``
 runs under cProfile (with one job) and prints the N costliest functions by own time and
-the CPU seconds in libclang's parse against the rest.
+the CPU seconds in libclang's parse against the rest. ``--distro D`` parses for that
+ROS distribution's rclcpp (``extract.cpp.versions``; default: none known, as a project
+without ``distro:`` or ROS_DISTRO).
 """
 
 from __future__ import annotations
@@ -49,6 +51,7 @@ def main() -> None:
     parser.add_argument("--json", default=None)
     parser.add_argument("--jobs", type=int, default=1)
     parser.add_argument("--profile", type=int, default=0)
+    parser.add_argument("--distro", default=None)
     args = parser.parse_args()
     workspace = scan([os.path.abspath(args.workspace)], dict(os.environ))
     nodes = []
@@ -63,7 +66,7 @@ def main() -> None:
     if profile is not None:
         profile.enable()
     found = extract_nodes(nodes, workspace, cache_dir=None,
-                          jobs=1 if profile is not None else args.jobs)
+                          jobs=1 if profile is not None else args.jobs, distro=args.distro)
     if profile is not None:
         profile.disable()
     total = time.process_time() - start

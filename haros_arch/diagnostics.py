@@ -365,6 +365,19 @@ CATALOGUE: dict[str, Entry] = {
         "may be missing or the other branch's read instead. The node is 'partial'; give "
         "the analysis the workspace's compile_commands.json (colcon build "
         "--cmake-args -DCMAKE_EXPORT_COMPILE_COMMANDS=ON) to read the build's code."),
+    "CPP_VERSION_UNKNOWN": Entry(
+        "warning", "{text}: under '#if {condition}', which this parse leaves out as it "
+        "takes {library} to be {version}",
+        "ROS code chooses ROS calls by its client library's version (rclcpp/version.h's "
+        "RCLCPP_VERSION_GTE, RCLCPP_VERSION_MAJOR, ...; roscpp's ROS_VERSION_MINIMUM, "
+        "...), and the analysis knows no distribution of that ROS: neither the project "
+        "file's 'distro' nor ROS_DISTRO in the environment names one (or the "
+        "configurations' ROS_DISTRO differ: the sources are read once). The stand-in "
+        "headers then announce Jazzy's rclcpp (Noetic's roscpp), and this call, which "
+        "another release makes, is not read. The node is 'partial', so checks that claim "
+        "something is absent do not decide on it; set 'distro:' in the project file "
+        "(humble, iron, jazzy, kilted, rolling; kinetic, melodic, noetic) to read the "
+        "code of that release."),
     "CPP_CLASS_UNSEEN": Entry(
         "info", "{cls} of ROS package {package} is built here and its code is not read",
         "A ROS 1 node builds an object of a class of another ROS package (one that "

@@ -117,7 +117,8 @@ def _again(project: Project, env: Mapping[str, str], options: Options, folder: s
     if paths:
         with _stage(options, "C++"):
             batch = unit_digests(paths, workspace, cache_dir=options.cache_dir,
-                                 jobs=options.jobs, compile_commands=_compile_commands(project))
+                                 jobs=options.jobs, compile_commands=_compile_commands(project),
+                                 distro=source_distro(project, env))
     if _json(_gave(batch)) != _json(extraction.get("gave")):
         return None
     with _stage(options, "cache"):
@@ -137,13 +138,25 @@ def _compile_commands(project: Project) -> list[str] | None:
 
 
 def _extract(nodes: list[Node], workspace: Workspace, project: Project,
-             options: Options, cpp_batch: CppBatch | None = None,
+             options: Options, env: Mapping[str, str], cpp_batch: CppBatch | None = None,
              kept: dict[str, Any] | None = None, keep: dict[str, Any] | None = None
              ) -> list[diag.Diagnostic]:
     return extract_nodes(  # every C++ source once, in parallel, cached
         nodes, workspace, cache_dir=options.cache_dir, jobs=options.jobs,
         compile_commands=_compile_commands(project), timings=options.timings,
-        cpp_batch=cpp_batch, kept=kept, keep=keep)
+        cpp_batch=cpp_batch, kept=kept, keep=keep, distro=source_distro(project, env))
+
+
+def source_distro(project: Project, env: Mapping[str, str]) -> str | None:
+    """The ROS distribution the sources are read for (the rclcpp version the C++
+    stand-ins announce): the project file's ``distro:``, else ``ROS_DISTRO`` of the
+    configurations' environments when they agree (the sources are read once for all of
+    them), else of the run's; None when none is said or they differ."""
+    if project.distro:
+        return project.distro
+    said = {spec.environment.get("ROS_DISTRO", env.get("ROS_DISTRO", ""))
+            for spec in project.configurations} or {env.get("ROS_DISTRO", "")}
+    return (said.pop() or None) if len(said) == 1 else None
 
 
 def _gave(batch: CppBatch | None) -> dict[str, Any]:
@@ -213,7 +226,7 @@ def _analyse(project: Project, env: Mapping[str, str], options: Options,
         batch = CppBatch()
     tells = _units_tell(every)
     others: dict[str, Any] = {}
-    model.diagnostics.extend(_extract(every, workspace, project, options, batch,
+    model.diagnostics.extend(_extract(every, workspace, project, options, env, batch,
                                       kept if tells else None, others))
     if record is not None and tells:
         record.update(units=sources, gave=_gave(batch), others=others)

@@ -38,7 +38,8 @@ def extract_nodes(nodes: Sequence[Node], workspace: Workspace, *,
                   timings: dict[str, float] | None = None,
                   cpp_batch: CppBatch | None = None,
                   kept: Mapping[str, Any] | None = None,
-                  keep: dict[str, Any] | None = None) -> list[Diagnostic]:
+                  keep: dict[str, Any] | None = None,
+                  distro: str | None = None) -> list[Diagnostic]:
     """Extract every node; C++ nodes in one batch (``cpp.extract_cpp_nodes``): a source
     shared by several nodes is parsed once. ``cache_dir`` None: no cache; ``jobs``: worker
     processes (default: the number of cores); ``compile_commands``: the
@@ -50,7 +51,8 @@ def extract_nodes(nodes: Sequence[Node], workspace: Workspace, *,
     nodes'); ``kept``: what an earlier run's nodes of other languages gave, by
     ``other_key`` (``keep`` of that run), taken instead of reading them again where the
     caller knows their files unchanged (``pipeline``: only C++ files changed since);
-    ``keep``, when given, gets what this run's give."""
+    ``keep``, when given, gets what this run's give; ``distro``: the ROS distribution
+    whose rclcpp version C++ is parsed with (``cpp.versions``; None: not known)."""
     found: list[Diagnostic] = []
     start = time.perf_counter()
     others: list[Diagnostic] = []  # the other nodes' diagnostics, after the C++ batch's
@@ -80,7 +82,8 @@ def extract_nodes(nodes: Sequence[Node], workspace: Workspace, *,
         # the other nodes are read while the workers parse C++ (they need none of it)
         batch = extract_cpp_nodes([_paths(node, workspace) for node in cpp], workspace,
                                   cache_dir=cache_dir, jobs=jobs,
-                                  compile_commands=compile_commands, meanwhile=other_nodes)
+                                  compile_commands=compile_commands, meanwhile=other_nodes,
+                                  distro=distro)
         for node, result in zip(cpp, batch.results, strict=True):
             node.calls = without_overridden(node, result.calls, workspace)
             node.rosname = _rosname(node, result.rosname)
@@ -175,7 +178,8 @@ def cpp_sources(nodes: Sequence[Node], workspace: Workspace) -> list[str]:
 # read or parsed)
 _PARTIAL_CAUSES = {
     "cpp": ("CPP_CALL_MISSED", "CPP_ERROR_NEAR_CALL", "CPP_PARSE_FAILED", "FILE_UNREADABLE",
-            "CPP_NODE_PASSED", "CPP_NODE_TO_UNKNOWN", "CPP_CLASS_UNSEEN", "CPP_BUILD_MACRO"),
+            "CPP_NODE_PASSED", "CPP_NODE_TO_UNKNOWN", "CPP_CLASS_UNSEEN", "CPP_BUILD_MACRO",
+            "CPP_VERSION_UNKNOWN"),
     "python": ("PY_PARSE_ERROR", "PY_TOO_COMPLEX", "FILE_UNREADABLE", "PY_CLASS_UNSEEN"),
 }
 _PARTIAL_CODE = {"cpp": "CPP_NODE_PARTIAL", "python": "PY_NODE_PARTIAL"}

@@ -196,7 +196,8 @@ def _build(task: Task, outcome: Outcome) -> Outcome:
         outcome.problem = f"no package {task.package} in {task.entry.repository}"
         return outcome
     found = read_build_files(package, workspace)
-    found += extract_nodes(package.nodes, workspace, cache_dir=task.cache_dir, jobs=1)
+    found += extract_nodes(package.nodes, workspace, cache_dir=task.cache_dir, jobs=1,
+                           distro=task.entry.distro)  # the code of that release's rclcpp
     override = _apply_override(task, package.nodes, found)
     outcome.override_problems = [f"{d.location.file}: {d.message}" for d in found
                                  if d.code == "HINT_INVALID"]

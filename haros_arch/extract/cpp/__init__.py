@@ -30,7 +30,7 @@ from ...model.location import Location
 from ...model.source import Package, PrimitiveCall, declared_defaults
 from ...workspace import Workspace, manifest_of
 from .. import NODELET_LOAD
-from . import cache, links, recall, synthesis, toolchain
+from . import cache, links, recall, synthesis, toolchain, versions
 from . import compile_commands as commands
 from .headers import FALLBACK, STANDIN, IncludeSetup
 from .interfaces import interface_package
@@ -146,7 +146,8 @@ class CppBatch:
 def extract_cpp(sources: list[str], workspace: Workspace, *,
                 include_dirs: Sequence[str] = (), system_headers: bool = False,
                 cache_dir: str | None = cache.AUTO, jobs: int | None = None,
-                compile_commands: Sequence[str] | None = None) -> CppResult:
+                compile_commands: Sequence[str] | None = None,
+                distro: str | None = None) -> CppResult:
     """The ROS calls in the translation units ``sources`` (absolute paths) of a node.
 
     With ``system_headers`` the installed ROS headers are used instead of the stand-ins.
@@ -155,11 +156,12 @@ def extract_cpp(sources: list[str], workspace: Workspace, *,
     time in worker processes (default: the number of cores, at most the sources).
     ``compile_commands`` are the compile_commands.json files whose include folders,
     macros and standard each source is parsed with (None: those found in the workspace,
-    see ``compile_commands.find``).
+    see ``compile_commands.find``). ``distro`` is the ROS distribution whose rclcpp
+    version the stand-ins announce (``versions``; None: not known).
     """
     batch = extract_cpp_nodes([sources], workspace, include_dirs=include_dirs,
                               system_headers=system_headers, cache_dir=cache_dir, jobs=jobs,
-                              compile_commands=compile_commands)
+                              compile_commands=compile_commands, distro=distro)
     result = batch.results[0]
     result.diagnostics[:0] = batch.diagnostics
     return result
@@ -169,7 +171,8 @@ def extract_cpp_nodes(nodes: Sequence[Sequence[str]], workspace: Workspace, *,
                       include_dirs: Sequence[str] = (), system_headers: bool = False,
                       cache_dir: str | None = cache.AUTO, jobs: int | None = None,
                       compile_commands: Sequence[str] | None = None,
-                      meanwhile: Callable[[], None] | None = None) -> CppBatch:
+                      meanwhile: Callable[[], None] | None = None,
+                      distro: str | None = None) -> CppBatch:
     """The ROS calls of several nodes, each given by its translation units' paths.
 
     Every translation unit is read and parsed once however many nodes build it, all of
@@ -179,7 +182,7 @@ def extract_cpp_nodes(nodes: Sequence[Sequence[str]], workspace: Workspace, *,
     the batch runs beside it rather than after it.
     """
     batch, results = _batch(nodes, workspace, include_dirs, system_headers, cache_dir, jobs,
-                            compile_commands, True, meanwhile)
+                            compile_commands, True, meanwhile, distro)
     for sources in nodes:
         paths = list(dict.fromkeys(map(os.path.abspath, sources)))
         batch.results.append(_node_result([(p, results[p]) for p in paths if p in results],
@@ -189,18 +192,20 @@ def extract_cpp_nodes(nodes: Sequence[Sequence[str]], workspace: Workspace, *,
 
 def unit_digests(paths: Sequence[str], workspace: Workspace, *,
                  cache_dir: str | None = cache.AUTO, jobs: int | None = None,
-                 compile_commands: Sequence[str] | None = None) -> CppBatch:
+                 compile_commands: Sequence[str] | None = None,
+                 distro: str | None = None) -> CppBatch:
     """What the translation units ``paths`` (the sources of a batch's nodes, in order)
     give, in short: the batch's own diagnostics and each unit's digest (``CppBatch.units``),
     no results (a unit's kept result is not even read back); options as for
     ``extract_cpp``. The same as a batch of the same nodes gave: the same results."""
-    return _batch([paths], workspace, (), False, cache_dir, jobs, compile_commands, False)[0]
+    return _batch([paths], workspace, (), False, cache_dir, jobs, compile_commands, False,
+                  distro=distro)[0]
 
 
 def _batch(nodes: Sequence[Sequence[str]], workspace: Workspace, include_dirs: Sequence[str],
            system_headers: bool, cache_dir: str | None, jobs: int | None,
            compile_commands: Sequence[str] | None, wanted: bool,
-           meanwhile: Callable[[], None] | None = None
+           meanwhile: Callable[[], None] | None = None, distro: str | None = None
            ) -> tuple[CppBatch, dict[str, CppResult]]:
     """The batch's diagnostics and unit digests, and each unit's result (without
     ``wanted``: only those parsed)."""
@@ -211,7 +216,7 @@ def _batch(nodes: Sequence[Sequence[str]], workspace: Workspace, include_dirs: S
     folder = None if cache_dir is None else (
         cache.default_folder(workspace.root) if cache_dir == cache.AUTO else cache_dir)
     setup = IncludeSetup(workspace, include_dirs, system_headers, units,
-                         [p for sources in nodes for p in sources], kept_in=folder)
+                         [p for sources in nodes for p in sources], distro, kept_in=folder)
     store = None if folder is None else cache.Cache(folder, setup.generated, setup.written)
     read: list[Diagnostic] = []
     try:
@@ -638,6 +643,10 @@ def _translation_unit(path: str, text: str, ros2: bool,
         c.location.file or "", c.location.line, c.location.column))
     result.diagnostics.extend(finder.diagnostics)
     result.diagnostics.extend(_hidden(path, errors, finder, source, fieldless, workspace))
+    library = versions.RCLCPP if ros2 else versions.ROSCPP
+    if library.version(setup.distro) is None and not setup.system_headers:
+        result.diagnostics.extend(_version_unknown(tu, source, owned, workspace, library,
+                                                   setup.distro))
     result.diagnostics[:0] = setup.diagnostics[before:]
     result.rosname = finder.rosname
     result.facts = finder.facts
@@ -657,6 +666,25 @@ def _translation_unit(path: str, text: str, ros2: bool,
         ):
             headers.append(name)
     return result, sorted(set(headers))
+
+
+def _version_unknown(tu: TranslationUnit, source: SourceCache,
+                     owned: Callable[[str], bool], workspace: Workspace,
+                     library: versions.Library, distro: str | None) -> list[Diagnostic]:
+    """``CPP_VERSION_UNKNOWN`` at the first ROS call of each branch of a condition on
+    ``library``'s version that the parse left out, in the unit's workspace files: with
+    no distribution of it known, the stand-ins' default version chose (``versions``)."""
+    found: list[Diagnostic] = []
+    for name, skipped in sorted(recall.skipped_lines(tu).items()):
+        text = source.text(name) if owned(name) else None
+        if not text:
+            continue
+        for line, call, condition in versions.unknown_version_calls(text, skipped, library):
+            found.append(diag.make(
+                "CPP_VERSION_UNKNOWN", workspace.location(name, line), text=call.strip()[:80],
+                condition=condition, library=library.name,
+                version=library.describe(distro)))
+    return found
 
 
 def _hidden(path: str, errors: list[_Error], finder: CallFinder,

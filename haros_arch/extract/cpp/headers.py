@@ -71,6 +71,7 @@ from . import (
     reconfigure,
     ros2_interfaces,
     toolchain,
+    versions,
 )
 from .compile_commands import UnitFlags
 
@@ -261,8 +262,13 @@ class IncludeSetup:
 
     def __init__(self, workspace: Workspace, include_dirs: Sequence[str],
                  system_headers: bool, units: Mapping[str, UnitFlags] | None = None,
-                 sources: Sequence[str] = (), kept_in: str | None = None) -> None:
+                 sources: Sequence[str] = (), distro: str | None = None,
+                 kept_in: str | None = None) -> None:
         self.workspace = workspace
+        # the distribution whose client libraries the stand-ins announce (``versions``);
+        # not with the system's headers, which say it
+        self.distro = distro
+        self._versions = [] if system_headers else versions.flags(distro)
         self.units = dict(units or {})  # real source path -> its compile command's flags
         self.system_headers = system_headers
         # the synthesised headers' folder: the workspace's own in the cache folder
@@ -340,7 +346,10 @@ class IncludeSetup:
         precompiled stand-ins and the header map are left out (the flags that key the
         cache, which must not name this process's files): the folders are listed."""
         unit = self.units.get(os.path.realpath(source)) if source and self.units else None
-        flags = toolchain.base_arguments(self.system_headers, unit.std if unit else None)
+        # the version macros are language flags: the precompiled stand-ins are keyed by
+        # them, and so is the cache (``arguments(False)``)
+        flags = [*toolchain.base_arguments(self.system_headers, unit.std if unit else None),
+                 *self._versions]
         args = ["-I", self.generated, "-I", self.overflow]
         own = self._own_folders(source)
         if own:  # before everything, and no precompiled stand-ins that would redefine

@@ -27,11 +27,14 @@
 #define RCLCPP_DISABLE_COPY(T)
 #define RCLCPP_PUBLIC
 #define RCLCPP_LOCAL
-// rclcpp/version.h: the stand-ins follow the Jazzy API (rclcpp 28)
+// rclcpp/version.h: the version of the analysed distribution, given as -D flags
+// (extract/cpp/versions.py); without them Jazzy's, whose API the stand-ins follow
+#ifndef RCLCPP_VERSION_MAJOR
 #define RCLCPP_VERSION_MAJOR (28)
 #define RCLCPP_VERSION_MINOR (1)
-#define RCLCPP_VERSION_PATCH (0)
-#define RCLCPP_VERSION_STR "28.1.0"
+#define RCLCPP_VERSION_PATCH (14)
+#define RCLCPP_VERSION_STR "28.1.14"
+#endif
 #define RCLCPP_VERSION_GTE(major, minor, patch) ( \
   (major < RCLCPP_VERSION_MAJOR) ? true : (major > RCLCPP_VERSION_MAJOR) ? false : \
   (minor < RCLCPP_VERSION_MINOR) ? true : (minor > RCLCPP_VERSION_MINOR) ? false : \

@@ -45,10 +45,19 @@ public:
   const GoalUUID& get_goal_id() const;
   int8_t get_status();
 };
-template<class A> class Server { public: RCLCPP_SMART_PTR_DEFINITIONS(Server) };
+template<class A> class Server {
+public:
+  RCLCPP_SMART_PTR_DEFINITIONS(Server)
+  // as from Kilted (rclcpp_action 29): what an action's services and feedback show to
+  // introspection
+  void configure_introspection(std::shared_ptr<rclcpp::Clock> clock, const rclcpp::QoS& qos,
+                               rcl_service_introspection_state_t state);
+};
 template<class A> class Client {
 public:
   RCLCPP_SMART_PTR_DEFINITIONS(Client)
+  void configure_introspection(std::shared_ptr<rclcpp::Clock> clock, const rclcpp::QoS& qos,
+                               rcl_service_introspection_state_t state);
   using Goal = typename A::Goal;
   using GoalHandle = ClientGoalHandle<A>;
   using WrappedResult = typename GoalHandle::WrappedResult;

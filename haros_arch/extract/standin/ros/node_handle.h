@@ -166,6 +166,12 @@ public:
   template<class T>
   Timer createWallTimer(Duration period, void (T::*callback)(const TimerEvent&), T* obj,
                         bool oneshot = false, bool autostart = true) const;
+  // roscpp 1.13.1 on (ROS_VERSION_MINIMUM): a timer on the monotonic clock
+  Timer createSteadyTimer(Duration period, const TimerCallback& callback,
+                          bool oneshot = false, bool autostart = true) const;
+  template<class T>
+  Timer createSteadyTimer(Duration period, void (T::*callback)(const TimerEvent&), T* obj,
+                          bool oneshot = false, bool autostart = true) const;
 
   // parameters
   void setParam(const std::string& key, const XmlRpc::XmlRpcValue& v) const;

@@ -1,0 +1,264 @@
+"""ROS 2 code that picks calls by rclcpp's version (navigation2 1.5.0 declares
+``introspection_mode`` only under ``#if RCLCPP_VERSION_GTE(29, 0, 0)``): the stand-ins
+announced Jazzy's rclcpp whatever the project's distribution, so a launch file's
+``introspection_mode`` was "set but never read" for Kilted and Rolling too. The version
+now follows the project's ``distro:`` (else ROS_DISTRO); with none known, a call the
+default version leaves out makes the node partial (CPP_VERSION_UNKNOWN)."""
+
+from __future__ import annotations
+
+import os
+import re
+
+import pytest
+from conftest import package_xml
+
+from haros_arch.extract.cpp import extract_cpp, versions
+from haros_arch.extract.cpp.headers import STANDIN
+from haros_arch.pipeline import Options, analyse, source_distro
+from haros_arch.project import load
+from haros_arch.query.catalogue import load_catalogue, run_rule
+from haros_arch.workspace import scan
+
+NODE = """
+#include <memory>
+#include <rclcpp/rclcpp.hpp>
+#include <rclcpp/version.h>
+int main(int argc, char ** argv) {
+  rclcpp::init(argc, argv);
+  auto node = std::make_shared<rclcpp::Node>("server");
+  node->declare_parameter("rate", 10);
+#if RCLCPP_VERSION_GTE(29, 0, 0)
+  node->declare_parameter("introspection_mode", std::string("disabled"));
+#else
+  (void)node;
+#endif
+  rclcpp::spin(node);
+}
+"""
+
+LAUNCH = """
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([Node(package='srv', executable='server', parameters=[
+        {'rate': 5, 'introspection_mode': 'metadata'}])])
+"""
+
+
+def _tree(write_tree, project: str):
+    return write_tree({
+        "src/srv/package.xml": package_xml("srv", "ament_cmake").replace(
+            "</package>", "<depend>rclcpp</depend></package>"),
+        "src/srv/CMakeLists.txt": "cmake_minimum_required(VERSION 3.8)\nproject(srv)\n"
+                                  "add_executable(server src/server.cpp)\n",
+        "src/srv/src/server.cpp": NODE,
+        "src/srv/launch/srv.launch.py": LAUNCH,
+        "project.yaml": "project: p\nconfigurations:\n  c: [srv/launch/srv.launch.py]\n"
+                        + project,
+    })
+
+
+def _model(write_tree, project: str, env: dict[str, str] | None = None):
+    root = _tree(write_tree, project)
+    return analyse(load(str(root / "project.yaml")),
+                   {"PATH": os.environ.get("PATH", ""), **(env or {})},
+                   Options(cache_dir=None))
+
+
+def _findings(model) -> list[tuple[str, str]]:
+    rule = next(r for r in load_catalogue() if r.id == "parameter-set-not-read")
+    return [(f.rule, f.message.split(" ")[0]) for f in run_rule(rule, model)]
+
+
+def _declared(model) -> set[str]:
+    node = next(n for p in model.packages for n in p.nodes if n.executable == "server")
+    return {c.name for c in node.calls if c.kind == "declare"}
+
+
+def test_jazzy_does_not_read_what_kilted_reads(write_tree) -> None:
+    model = _model(write_tree, "distro: jazzy\n")
+    assert _declared(model) == {"rate"}
+    assert _findings(model) == [("parameter-set-not-read", "/server/introspection_mode")]
+    assert not [d for d in model.diagnostics if d.code == "CPP_VERSION_UNKNOWN"]
+
+
+@pytest.mark.parametrize("distro", ["kilted", "rolling"])
+def test_kilted_and_rolling_read_it(write_tree, distro: str) -> None:
+    model = _model(write_tree, f"distro: {distro}\n")
+    assert _declared(model) == {"rate", "introspection_mode"}
+    assert _findings(model) == []
+
+
+def test_ros_distro_of_the_environment_chooses_when_the_project_does_not(write_tree) -> None:
+    model = _model(write_tree, "", {"ROS_DISTRO": "kilted"})
+    assert _declared(model) == {"rate", "introspection_mode"}
+    # the project file's distro wins over the environment's
+    model = _model(write_tree, "distro: jazzy\n", {"ROS_DISTRO": "kilted"})
+    assert _declared(model) == {"rate"}
+
+
+def test_no_distribution_known_leaves_the_read_undecided(write_tree) -> None:
+    model = _model(write_tree, "")
+    node = next(n for p in model.packages for n in p.nodes if n.executable == "server")
+    assert node.completeness == "partial"
+    said = [d for d in model.diagnostics if d.code == "CPP_VERSION_UNKNOWN"]
+    assert [(d.location.file, d.location.line, d.severity) for d in said] == [
+        ("srv/src/server.cpp", 9, "warning")]
+    assert "RCLCPP_VERSION_GTE(29, 0, 0)" in said[0].message
+    assert _findings(model) == [("parameter-set-not-read-undecided", "1")]
+
+
+def test_the_configurations_disagreeing_is_no_distribution(write_tree) -> None:
+    root = _tree(write_tree, "")
+    text = (root / "project.yaml").read_text().replace(
+        "  c: [srv/launch/srv.launch.py]\n",
+        "  c:\n    launch: [srv/launch/srv.launch.py]\n    environment: {ROS_DISTRO: jazzy}\n"
+        "  d:\n    launch: [srv/launch/srv.launch.py]\n    environment: {ROS_DISTRO: kilted}\n")
+    (root / "project.yaml").write_text(text)
+    assert source_distro(load(str(root / "project.yaml")), {}) is None
+    text = text.replace("{ROS_DISTRO: kilted}", "{ROS_DISTRO: jazzy}")
+    (root / "project.yaml").write_text(text)
+    assert source_distro(load(str(root / "project.yaml")), {"ROS_DISTRO": "kilted"}) == "jazzy"
+
+
+def _calls(tmp_path, text: str, distro: str | None):
+    source = tmp_path / "n.cpp"
+    source.write_text(text)
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None,
+                         distro=distro)
+    return ({(c.kind, c.name) for c in result.calls},
+            [d.location.line for d in result.diagnostics if d.code == "CPP_VERSION_UNKNOWN"])
+
+
+BRANCHES = """
+#include <rclcpp/rclcpp.hpp>
+void f(rclcpp::Node & node) {
+#if RCLCPP_VERSION_MAJOR >= 30
+  node.declare_parameter("rolling_only", 1);
+#elif RCLCPP_VERSION_GTE(29, 5, 0)
+  node.declare_parameter("kilted", 1);
+#else
+  node.declare_parameter("older", 1);
+#endif
+}
+"""
+
+
+@pytest.mark.parametrize(("distro", "name"), [
+    ("humble", "older"), ("iron", "older"), ("jazzy", "older"), ("kilted", "kilted"),
+    ("rolling", "rolling_only")])
+def test_each_distribution_takes_its_own_branch(tmp_path, distro: str, name: str) -> None:
+    calls, unknown = _calls(tmp_path, BRANCHES, distro)
+    assert calls == {("declare", name)}
+    assert unknown == []
+
+
+def test_without_a_distribution_each_branch_left_out_is_said(tmp_path) -> None:
+    calls, unknown = _calls(tmp_path, BRANCHES, None)
+    assert calls == {("declare", "older")}  # jazzy's, the stand-ins' own
+    assert unknown == [5, 7]
+    # a distribution that is no ROS 2 one we know is none known, and said so
+    assert _calls(tmp_path, BRANCHES, "noetic")[1] == [5, 7]
+    source = tmp_path / "n.cpp"
+    said = [d.message for d in extract_cpp([str(source)], scan([str(tmp_path)]),
+                                           cache_dir=None, distro="jazy").diagnostics
+            if d.code == "CPP_VERSION_UNKNOWN"]
+    assert len(said) == 2 and "jazy is no ROS 2 distribution of ours" in said[0]
+
+
+def test_a_taken_branch_or_another_macro_says_nothing(tmp_path) -> None:
+    text = ("#include <rclcpp/rclcpp.hpp>\nvoid f(rclcpp::Node & node) {\n"
+            "#if RCLCPP_VERSION_GTE(16, 0, 0)\n  node.declare_parameter(\"a\", 1);\n#endif\n"
+            "#ifdef SOMETHING_ELSE\n  node.declare_parameter(\"b\", 1);\n#endif\n}\n")
+    assert _calls(tmp_path, text, None) == ({("declare", "a")}, [])
+
+
+@pytest.mark.parametrize(("library", "header"), [
+    (versions.RCLCPP, "rclcpp/rclcpp.hpp"), (versions.ROSCPP, "ros/common.h")])
+def test_the_stand_in_announces_the_default_of_the_table(library, header: str) -> None:
+    with open(os.path.join(STANDIN, header), encoding="utf-8") as f:
+        text = f.read()
+    found = tuple(int(re.search(rf"#define {library.prefix}_{part} \(?(\d+)\)?",
+                                text).group(1)) for part in ("MAJOR", "MINOR", "PATCH"))
+    assert found == library.table[library.default]
+    # given as flags, the table's version replaces it
+    assert f"#ifndef {library.prefix}_MAJOR" in text
+
+
+ROS1 = """
+#include <ros/ros.h>
+int main(int argc, char ** argv) {
+  ros::init(argc, argv, "n");
+  ros::NodeHandle pnh("~");
+#if ROS_VERSION_MINIMUM(1, 13, 1)
+  ros::SteadyTimer t = pnh.createSteadyTimer(ros::WallDuration(0.5),
+                                             [](const ros::SteadyTimerEvent&) {});
+  pnh.param("steady", true);
+#else
+  pnh.param("wall", true);
+#endif
+}
+"""
+
+
+@pytest.mark.parametrize(("distro", "name", "unknown"), [
+    ("noetic", "~steady", []), ("melodic", "~steady", []), ("kinetic", "~wall", []),
+    (None, "~steady", [11]), ("jazzy", "~steady", [11])])
+def test_roscpp_s_version_follows_the_distribution(tmp_path, distro, name, unknown) -> None:
+    # ROS_VERSION_MINIMUM was no macro of the stand-ins: an error, and the #else read
+    source = tmp_path / "n.cpp"
+    source.write_text(ROS1)
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None,
+                         distro=distro)
+    assert {(c.kind, c.name) for c in result.calls} == {("read", name)}
+    assert [d.location.line for d in result.diagnostics
+            if d.code == "CPP_VERSION_UNKNOWN"] == unknown
+    assert not [d for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"]
+
+
+def test_a_branch_inside_code_skipped_for_another_reason_says_nothing(tmp_path) -> None:
+    text = ("#include <rclcpp/rclcpp.hpp>\nvoid f(rclcpp::Node & node) {\n"
+            "#ifdef _WIN32\n#if RCLCPP_VERSION_MAJOR >= 30\n"
+            "  node.declare_parameter(\"windows\", 1);\n#endif\n#endif\n}\n")
+    assert _calls(tmp_path, text, None) == (set(), [])
+
+
+def test_kilted_s_action_introspection_parses(tmp_path) -> None:
+    # nav2's setIntrospectionMode configures an action client or server as from Kilted:
+    # the rclcpp_action stand-ins lacked the method, an error made nodes partial
+    text = ("#include <rclcpp/rclcpp.hpp>\n#include <rclcpp_action/rclcpp_action.hpp>\n"
+            "#include <nav2_msgs/action/spin.hpp>\n"
+            "template<typename T> void configure(T & it, rclcpp::Node & node) {\n"
+            "#if RCLCPP_VERSION_GTE(29, 0, 0)\n"
+            "  it->configure_introspection(node.get_clock(), rclcpp::ServicesQoS(),\n"
+            "                              RCL_SERVICE_INTROSPECTION_METADATA);\n#endif\n}\n"
+            "void f(rclcpp::Node & node, rclcpp_action::Client<nav2_msgs::action::Spin>::"
+            "SharedPtr c, rclcpp_action::Server<nav2_msgs::action::Spin>::SharedPtr s) {\n"
+            "  configure(c, node);\n  configure(s, node);\n}\n")
+    source = tmp_path / "n.cpp"
+    source.write_text(text)
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None,
+                         distro="kilted")
+    assert [d.message for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"] == []
+
+
+def test_a_run_for_another_distribution_does_not_reuse_the_cached_parse(tmp_path) -> None:
+    tree = tmp_path / "ws"
+    tree.mkdir()
+    source = tree / "n.cpp"
+    source.write_text(BRANCHES)
+    cache = str(tmp_path / "cache")
+
+    def declared(distro: str | None) -> set[str]:
+        result = extract_cpp([str(source)], scan([str(tree)]), cache_dir=cache,
+                             distro=distro)
+        return {c.name for c in result.calls}
+
+    assert declared("jazzy") == {"older"}
+    assert declared("kilted") == {"kilted"}
+    assert declared("rolling") == {"rolling_only"}
+    assert declared("jazzy") == {"older"}  # read back from the cache
+    assert os.listdir(cache)
