@@ -1,6 +1,7 @@
 // haros_arch stand-in: roscpp forward declarations and common types
 #ifndef HAROS_STANDIN_ROS_FORWARDS_H
 #define HAROS_STANDIN_ROS_FORWARDS_H
+#include <ros/common.h>
 #include <stdint.h>
 #include <map>
 #include <string>
