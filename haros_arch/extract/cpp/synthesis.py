@@ -617,10 +617,14 @@ class Names:
         lines += [f"#define {name}" for name in sorted(self.macros)]
         lines += [f"#define {name}(...)" for name in sorted(self.declaration_macros)]
         # static: a field reads as ``msg.f`` and a constant as ``Msg::F``, and the
-        # message stays the plain struct it was (no member to construct or copy)
+        # message stays the plain struct it was (no member to construct or copy); a
+        # constant read where C++ needs one (``case Msg::Goal::TOOL_CONTACT:``) is an
+        # enumerator of a value of its own
         lines += [f"#define {interfaces.fields_macro(record)} " + " ".join(
             [*(f"typedef haros_any {t};" for t in sorted(self.types.get(record, ()))),
-             *(f"static haros_any {f};" for f in sorted(self.fields.get(record, ())))])
+             *(f"enum : int {{ {f} = {values.next(f in self.flags)} }};"
+               if f in self.constants else f"static haros_any {f};"
+               for f in sorted(self.fields.get(record, ())))])
             for record in sorted({*self.fields, *self.types})]
         hidden = self._found_by_using()
         for name, node in sorted(self.root.children.items()):
