@@ -176,6 +176,9 @@ _C_VENDOR = re.compile(r"[A-Z][A-Za-z0-9]*(?:_[A-Za-z0-9]+)+")
 # a namespace, class, struct or enum the code defines (the first name of ``a::b``)
 _DEFINED = re.compile(rb"\b(?:namespace|class|struct|enum)\s+(?:class\s+|struct\s+)?([A-Za-z_]\w*)")
 _USING = re.compile(rb"\busing\s+namespace\s+(?:::)?([A-Za-z_][\w:]*)\s*;")
+# ``using vendor::conn::Connection;``: a using-declaration of one qualified name
+_USING_ONE = re.compile(
+    rb"\busing\s+(?!namespace\b)(?:typename\s+)?(?:::\s*)?([A-Za-z_]\w*(?:\s*::\s*[A-Za-z_]\w*)+)\s*;")
 
 # binary operators for any operand of a synthesised class (and nothing else)
 _OPERATORS = "template <bool C, class R> struct haros_if {};\n" \
@@ -324,6 +327,8 @@ class Names:
         self.fields: dict[str, set[str]] = {}
         self.types: dict[str, set[str]] = {}
         self.using: set[str] = set()  # namespaces named by ``using namespace``
+        # the qualified names of using-declarations: ``using vendor::conn::Connection;``
+        self.brought: set[str] = set()
         self.aliases: set[str] = set()  # names the code declares: ``using Mode = ...;``
         # unknown names that made a use ambiguous (the real declaration was invalid only
         # until other names were declared): no longer declared
@@ -350,6 +355,8 @@ class Names:
                 self._texts.append(text)
                 self._defined.update(m.decode() for m in _DEFINED.findall(text))
                 self.using.update(m.decode() for m in _USING.findall(text))
+                self.brought.update(re.sub(r"\s+", "", m.decode())
+                                    for m in _USING_ONE.findall(text))
                 self.aliases.update(m.decode() for m in _ALIAS_NAME.findall(text))
                 self.taken.update(_case_literals(text))
         for message, text, offset in errors:
@@ -642,10 +649,16 @@ class Names:
     def _found_by_using(self) -> set[str]:
         """Unknown names used unqualified that a ``using namespace`` of a namespace
         declared here also gives (``Pose2`` and ``karto::Pose2`` after ``using namespace
-        karto``): declared once, in the namespace (with what was learnt of the
-        unqualified one), or the unqualified use is ambiguous."""
+        karto``), or a using-declaration of that one name (``using
+        vendor::conn::Connection;``, motoman's SmplMsgConnection): declared once, in the
+        namespace (with what was learnt of the unqualified one), or the unqualified use
+        is ambiguous (the using-declaration conflicts with it)."""
         found: set[str] = set()
-        for space in sorted(self.using):
+        # each namespace a ``using namespace`` names, with all its names; each
+        # using-declaration (``using vendor::conn::Connection;``), with its one name
+        wanted = [(space, None) for space in sorted(self.using)] + [
+            (one.rpartition("::")[0], one.rpartition("::")[2]) for one in sorted(self.brought)]
+        for space, only in wanted:
             node: _Name | None = self.root
             for part in space.split("::"):
                 node = node.children.get(part) if node is not None else None
@@ -653,8 +666,14 @@ class Names:
                 continue
             for name, child in node.children.items():
                 top = self.root.children.get(name)
-                if child.known or top is None or top.known or name in found:
+                if (only is not None and name != only) or child.known or top is None or \
+                        top.known or name in found:
                     continue
+                if only is not None and top.uses and top.uses <= {"value", "constant", "flag"}:
+                    # a name the code reads only as a value: not the type that the
+                    # using-declaration's line suggests of a capitalised name
+                    # (``using nav2_costmap_2d::LETHAL_OBSTACLE;``)
+                    child.uses = set(top.uses)
                 _merge(child, top)
                 found.add(name)
         return found
