@@ -69,6 +69,18 @@ _MEMBER = re.compile(
 _MEMBER_TYPE = re.compile(  # ``Msg::_code_type``; ``Synthesised<T>::ConstPtr``
     r"^no type named '(\w+)' in '(?:const )?(?:(?:struct|class) )?([\w:]+)(<.*>)?'")
 _AMBIGUOUS = re.compile(r"^reference to '(\w+)' is ambiguous")
+# a pointer to one declared class given where a pointer to another is wanted (motoman's
+# ``init(&default_tcp_connection_)``, a TcpClient for a SmplMsgConnection): the vendor's
+# classes derive so
+_POINTER_TO = re.compile(
+    r"^(?:cannot initialize (?:a parameter|a variable|a member subobject|return object) "
+    r"of type '(?:const )?([\w:]+) \*' with an [lr]value of type '(?:const )?([\w:]+) \*'"
+    r"|(?:incompatible pointer types )?assigning to '(?:const )?([\w:]+) \*' from "
+    r"(?:incompatible type )?'(?:const )?([\w:]+) \*')")
+# the same, in the note of a candidate of a call no overload takes (``_Error.notes``)
+_NOT_CONVERTED = re.compile(
+    r"^candidate .*no known conversion from '(?:const )?([\w:]+) \*' to "
+    r"'(?:const )?([\w:]+) \*' for")
 _RECORD = re.compile(r"[a-z]\w*(?:::\w+)+")  # a message's struct: ``pkg::msg::Name``
 _AFTER_MEMBER = re.compile(rb"(?:\.|->)\s*([A-Za-z_]\w*)")
 # a member template named with C++'s ``template`` keyword (``bb->template set<T>(k, v)``,
@@ -228,6 +240,8 @@ class _Name:
     uses: set[str] = field(default_factory=set)
     known: bool = False  # a real namespace, reopened
     children: dict[str, _Name] = field(default_factory=dict)
+    # the declared class a pointer to this one was given for (``_POINTER_TO``): its base
+    base: str | None = None
 
 
 _MACRO_SPAN = 4000  # bytes of a macro call searched for a name clang placed at the macro
@@ -440,6 +454,16 @@ class Names:
                 self.member_templates.add(template.group(1))
                 self.count += 1
             return
+        converted = _NOT_CONVERTED.match(message)
+        if converted is not None:
+            self._derive(converted.group(1), converted.group(2))
+            return
+        pointer = _POINTER_TO.match(message)
+        if pointer is not None:
+            wanted, given = (pointer.group(1), pointer.group(2)) if pointer.group(1) else (
+                pointer.group(3), pointer.group(4))
+            self._derive(given, wanted)
+            return
         ambiguous = _AMBIGUOUS.match(message)
         if ambiguous is not None:
             self.withdrawn.add(ambiguous.group(1))
@@ -611,6 +635,79 @@ class Names:
             node = node.children[part]
         return not node.known
 
+    def _class_path(self, written: str) -> list[str] | None:
+        """The path of the one declared class (in namespaces only) that ``written``
+        names, as clang prints it (unqualified after a using-declaration): None when
+        none or several are."""
+        parts = [p for p in written.split("::") if p]
+        found: list[list[str]] = []
+        stack: list[tuple[list[str], _Name]] = [([], self.root)]
+        while stack:
+            path, node = stack.pop()
+            for name, child in node.children.items():
+                if child.known or _is_namespace(child):
+                    stack.append(([*path, name], child))
+                elif [*path, name][-len(parts):] == parts and "template" not in child.uses:
+                    found.append([*path, name])
+        if len(found) > 1:  # the one a using-declaration or -directive brings
+            found = [f for f in found if "::".join(f) in self.brought
+                     or "::".join(f[:-1]) in self.using]
+        return found[0] if len(found) == 1 else None
+
+    def _derive(self, given: str, wanted: str) -> None:
+        derived, base = self._class_path(given), self._class_path(wanted)
+        if derived is None or base is None or derived == base:
+            return
+        node = self._node("::".join(derived))
+        qualified = "::".join(base)
+        seen: set[str] = {"::".join(derived)}  # no cycle of bases
+        at: str | None = qualified
+        while at is not None and at not in seen:
+            seen.add(at)
+            at = self._node(at).base
+        if at is None and node.base is None:
+            node.base = qualified
+            self.count += 1
+
+    def _derived(self, hidden: set[str], values: _Values) -> list[str]:
+        """The classes with a base (``_derive``), defined after every other name, bases
+        first, each in its namespaces: ``struct B : ::vendor::A`` (its place in the tree
+        holds a declaration)."""
+        pending: list[tuple[list[str], _Name]] = []
+        stack: list[tuple[list[str], _Name]] = [
+            ([name], child) for name, child in self.root.children.items() if name not in hidden]
+        while stack:
+            path, node = stack.pop()
+            if node.base is not None:
+                pending.append((path, node))
+            elif node.known or _is_namespace(node):
+                stack.extend(([*path, name], child) for name, child in node.children.items())
+        lines: list[str] = []
+        done: set[str] = set()
+        while pending:
+            ready = [(p, n) for p, n in pending if n.base in done or
+                     self._node(n.base or "").base is None]
+            if not ready:
+                break
+            for path, node in sorted(ready, key=lambda item: item[0]):
+                base = "::" + (node.base or "")
+                node_base, node.base = node.base, None
+                body = _render(path[-1], node, "", nested=False, values=values,
+                               withdrawn=self.withdrawn)
+                node.base = node_base
+                if not body or not body[0].startswith(("struct ", "template")):
+                    continue
+                head = body[0].replace(": haros_any {", f": {base} {{", 1)
+                inherit = f"  using {base}::{base.rsplit('::', 1)[-1]};"
+                body = [head, inherit, *(line for line in body[1:]
+                                         if line.strip() != "using haros_any::haros_any;")]
+                lines += [*(f"namespace {p} {{" for p in path[:-1]), *body,
+                          "}" * (len(path) - 1)]
+                done.add("::".join(path))
+            pending = [(p, n) for p, n in pending if "::".join(p) not in done and
+                       (p, n) not in ready]
+        return lines
+
     def header(self) -> str:
         values = _Values(self.taken)
         members = "".join(f"  static haros_any {m};\n" for m in sorted(self.members)
@@ -638,6 +735,7 @@ class Names:
             if name not in hidden:
                 lines.extend(_render(name, node, "", nested=False, values=values,
                                      withdrawn=self.withdrawn))
+        lines += self._derived(hidden, values)
         return "\n".join(lines) + "\n"
 
     def _message(self, record: str) -> bool:
@@ -742,6 +840,8 @@ def _render(name: str, node: _Name, indent: str, nested: bool, values: _Values,
                              withdrawn=withdrawn))
     if space:
         return [f"{indent}namespace {name} {{", *inner, f"{indent}}}"]
+    if node.base is not None and not nested:
+        return [f"{indent}struct {name};"]  # defined after its base (``Names._derived``)
     if node.uses - {"flag"} == {"value", "constant"} and not node.children:
         # read where C++ needs a constant: an enumerator (an unnamed enum's, which
         # converts to any integer and makes ``enum_value(X)``'s underlying type), that
