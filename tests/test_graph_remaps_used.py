@@ -109,3 +109,20 @@ def test_a_ros1_handle_whose_namespace_is_not_known_may_be_the_remapped_one() ->
         config = _config([decl], {"depth_image_proc/disparity": disparity})
         (remap,) = config.remaps
         assert (len(remap.users), len(remap.unseen)) == (0, unseen)
+
+
+def test_a_remap_source_not_known_statically_may_be_a_name_the_node_uses() -> None:
+    """spot_ros2's image stitcher: ``(f"{cam_prefix}/left/image", ...)`` with cam_prefix
+    ``"/" + spot_name`` or "" and spot_name from a helper not interpreted: the source
+    ``?/left/image`` may be the ``left/image`` the node subscribes to, absolute or not
+    (undecided); one no name of the node can match is not used."""
+    stitcher = Node("spot", "stitcher", calls=[
+        PrimitiveCall("subscribe", "left/image", "sensor_msgs/msg/Image")])
+    decl = NodeDecl("/?/stitcher", "spot", "stitcher", "/?/", ros_version=2, remaps=[
+        ("?/left/image", "?/camera/frontleft/image"),
+        ("?/right/image", "?/camera/frontright/image")])
+    config = _config([decl], {"spot/stitcher": stitcher})
+    (instance,) = config.nodes
+    remaps = {r.source: r for r in config.remaps}
+    assert (remaps["?/left/image"].users, remaps["?/left/image"].unseen) == ([], [instance])
+    assert (remaps["?/right/image"].users, remaps["?/right/image"].unseen) == ([], [])

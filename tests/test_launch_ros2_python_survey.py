@@ -608,3 +608,37 @@ def generate_launch_description():
     assert [d.message for d in model.diagnostics if d.code == "LAUNCH_PROCESS"] == [
         "process ros2 run demo_nodes_cpp listener started here is no node the reader "
         "can name"]
+
+
+def test_an_opaque_function_adds_to_the_description_it_is_given(write_tree):
+    """spot_ros2's spot_driver.launch.py: ``ld.add_action(OpaqueFunction(function=
+    launch_setup, args=[ld]))`` and launch_setup calls ``ld.add_action(Node(...))`` and
+    returns nothing. launch visits the description's own list, which grows while it is
+    visited: those actions run after the rest of it (the node added before them does not
+    take their SetParameter), with the arguments of the moment. A description that does
+    not hold the function is not run: what is added there is said, not started."""
+    model, _ = run(write_tree, """
+def launch_setup(context, ld, extra=None):
+    robot = LaunchConfiguration('robot').perform(context)
+    ld.add_action(SetParameter(name='use_sim_time', value='true'))
+    ld.add_action(Node(package='p', executable='driver', name=robot + '_driver'))
+    if extra is not None:
+        extra.add_action(Node(package='p', executable='extra', name='extra'))
+    return [Node(package='p', executable='returned', name='returned')]
+
+def generate_launch_description():
+    ld = LaunchDescription([DeclareLaunchArgument('robot', default_value='spot')])
+    more = LaunchDescription()
+    ld.add_action(OpaqueFunction(function=launch_setup, args=[ld],
+                                 kwargs={'extra': more}))
+    ld.add_action(Node(package='p', executable='after', name='after'))
+    ld.add_action(OpaqueFunction(function=launch_setup, args=[ld],
+                                 condition=IfCondition(LaunchConfiguration('twice'))))
+    return ld
+""")
+    assert [n.name for n in model.nodes] == [
+        "/returned", "/after", "/returned", "/spot_driver", "/spot_driver"]
+    assert sorted({p.name for p in model.params}) == ["/spot_driver/use_sim_time"]
+    assert [bool(n.conditions) for n in model.nodes] == [False, False, True, False, True]
+    messages = [d.message for d in model.diagnostics]
+    assert any("launch description that does not hold it" in m for m in messages)

@@ -71,14 +71,42 @@ def _equality(condition: Condition) -> tuple[str, str, bool] | None:
     return None
 
 
+def _negated(text: str) -> str | None:
+    """``X`` for ``not (X)`` (a Python launch file's ``else`` branch, as the interpreter
+    writes it), when the parentheses enclose the whole rest; else None."""
+    text = text.strip()
+    if not (text.startswith("not (") and text.endswith(")")):
+        return None
+    depth = 0
+    for index, char in enumerate(text[4:], 4):
+        depth += {"(": 1, ")": -1}.get(char, 0)
+        if depth == 0 and index != len(text) - 1:
+            return None  # ``not (a) or (b)``
+    return text[5:-1].strip()
+
+
+def _polarity(condition: Condition) -> tuple[str, bool] | None:
+    """``(text, holds when true)`` of an ``if`` / ``unless`` condition, ``not (X)``
+    read as X false (again for each ``not``)."""
+    if condition.statement not in ("if", "unless"):
+        return None
+    holds = condition.statement == "if"
+    text = condition.text.strip()
+    while (inner := _negated(text)) is not None:
+        text, holds = inner, not holds
+    return text, holds
+
+
 def contradict(first: Condition, second: Condition) -> bool:
-    """Whether two launch conditions cannot both hold: ``if`` and ``unless`` of one text,
-    or one argument compared with strings that cannot both match (``x == 'a'`` and
-    ``x == 'b'``; ``x == 'a'`` and ``x != 'a'``). Read as written: both are taken to
-    read the argument of one scope."""
-    statements = {first.statement, second.statement}
-    if statements == {"if", "unless"} and first.text.strip() == second.text.strip() \
-            and first.text.strip() != UNKNOWN_MARK:  # a text not known is not one text
+    """Whether two launch conditions cannot both hold: ``if`` and ``unless`` of one text
+    (``if X`` and ``if not (X)``, a Python launch file's ``if`` / ``else``), or one
+    argument compared with strings that cannot both match (``x == 'a'`` and ``x ==
+    'b'``; ``x == 'a'`` and ``x != 'a'``). Read as written: both are taken to read the
+    argument of one scope."""
+    one_side, other_side = _polarity(first), _polarity(second)
+    if one_side is not None and other_side is not None and one_side[0] == other_side[0] \
+            and one_side[1] != other_side[1] \
+            and one_side[0] != UNKNOWN_MARK:  # a text not known is not one text
         return True
     one, other = _equality(first), _equality(second)
     if one is None or other is None or one[0] != other[0]:

@@ -536,6 +536,24 @@ def _could_use(instance: NodeInstance, name: str) -> bool:
     return False
 
 
+def _may_be_used(instance: NodeInstance, source: str, name: str) -> bool:
+    """Whether a remap's source with ``?`` (a launch value not known statically:
+    spot_ros2's ``f"{cam_prefix}/left/image"``, ``cam_prefix`` ``"/" + spot_name`` or
+    empty) may be a name ``instance`` uses: one its ``?`` parts match, resolved in the
+    node's namespace or, when the source starts with ``?``, as written (the unknown
+    part may make it absolute)."""
+    if UNKNOWN_MARK not in source:
+        return False
+    patterns = [pattern_for(name)]
+    if source.startswith(UNKNOWN_MARK):
+        patterns.append(pattern_for(source))
+    for link in instance.links:
+        before = resolve(link.rosname.given, instance.namespace, instance.name)
+        if any(re.match(p, before) or re.match(p, link.rosname.full) for p in patterns):
+            return True
+    return False
+
+
 def _near(instance: NodeInstance, name: str) -> list[str]:
     namespace, _, own = name.rpartition("/")
     found: set[str] = set()
@@ -580,7 +598,7 @@ def remaps_of(nodes: list[NodeInstance]) -> list[Remap]:
             remap.nodes.append(instance)
             if used:
                 remap.users.append(instance)
-            elif _could_use(instance, name):
+            elif _could_use(instance, name) or _may_be_used(instance, source, name):
                 remap.unseen.append(instance)
             remap.near.extend(n for n in _near(instance, name) if n not in remap.near)
     return list(found.values())

@@ -329,6 +329,16 @@ def apart(charge: Charge, first: Any, second: Any) -> list[Any]:
     return [] if same_conditions(one, other) else [first, second]
 
 
+def together(charge: Charge, values: Any) -> list[Any]:
+    """The node instances (or links) of a list that can exist together with another of
+    it: none of two that ``never_together`` says exclude each other (the two branches of
+    a launch file's ``if`` / ``else``, ``if`` and ``unless`` of one argument)."""
+    if not isinstance(values, list):
+        raise QueryTypeError("together() takes a list of node instances or links")
+    return [one for one in values if any(
+        other is not one and not never_together(charge, one, other) for other in values)]
+
+
 def one_process(charge: Charge, first: Any, second: Any) -> str:
     """For two node instances of one name that one launched process runs (the launch
     name renames every node of it), a clause that says so and names the nodes its code
@@ -348,6 +358,7 @@ def one_process(charge: Charge, first: Any, second: Any) -> str:
 FUNCTIONS["one_process"] = Function("one_process", one_process, 2, 2, charged=True)
 FUNCTIONS["never_together"] = Function("never_together", never_together, 2, 2, charged=True)
 FUNCTIONS["apart"] = Function("apart", apart, 2, 2, charged=True)
+FUNCTIONS["together"] = Function("together", together, charged=True)
 
 
 def installed_with(charge: Charge, package: Any, packages: Any, test: Any = False

@@ -59,6 +59,10 @@ def _fieldless_packages(found: Sequence[Diagnostic]) -> set[str]:
     return packages
 
 
+_NO_MATCHING = "no matching "  # function / member function / constructor for call
+_NO_CONVERSION = "no known conversion from '"
+
+
 @dataclass(frozen=True, slots=True)
 class _Error:
     """A clang error of a parse, each of its facts asked of libclang once (a parse's
@@ -71,6 +75,9 @@ class _Error:
     line: int
     column: int
     offset: int
+    # what its notes say of a call no overload takes: each candidate's "no known
+    # conversion from 'B *' to 'A *'" (``synthesis.Names`` learns bases from them)
+    notes: tuple[str, ...] = ()
 
 
 def _errors(tu: TranslationUnit) -> list[_Error]:
@@ -84,9 +91,11 @@ def _errors(tu: TranslationUnit) -> list[_Error]:
             loc = d.location
             file = loc.file
             name = file.name if file is not None else None
+            notes = tuple(n.spelling for n in d.children if _NO_CONVERSION in n.spelling) \
+                if d.spelling.startswith(_NO_MATCHING) else ()
             found.append(_Error(d.spelling, name,
                                 os.path.abspath(name) if name is not None else None,
-                                loc.line, loc.column, loc.offset))
+                                loc.line, loc.column, loc.offset, notes))
         tu._haros_errors = found
     return found
 
@@ -1165,7 +1174,8 @@ def _sites(name: str, source: SourceCache, sites: dict[str, list[recall.Site]]
 def _located(errors: list[_Error],
              source: SourceCache) -> list[tuple[str, bytes | None, int]]:
     """Errors as ``synthesis.Names.learn`` reads them: message, file bytes, offset."""
-    return [(e.spelling, source.get(e.name), e.offset) for e in errors if e.name is not None]
+    return [(message, source.get(e.name), e.offset) for e in errors if e.name is not None
+            for message in (e.spelling, *e.notes)]
 
 
 class SourceCache(dict[str, bytes]):

@@ -108,6 +108,32 @@ def _synthesised(decl: Cursor) -> bool:
     return False
 
 
+_WRITTEN_SCALARS = {
+    "bool": "bool", "float": "double", "double": "double",
+    "string": "str", "std::string": "str",
+}
+_WRITTEN_INTEGER = re.compile(
+    r"(?:(?:signed|unsigned|short|long|int|char)\s*)+|(?:std::)?u?int(?:8|16|32|64)_t|"
+    r"(?:std::)?size_t")
+
+
+def written_param_type(text: str) -> str | None:
+    """The parameter type of a C++ value type as written (``double``, ``std::string``,
+    ``std::vector<int64_t>``), for a call the parse could not resolve: its template
+    argument has no type to read, and a builtin one no cursor either. None for any
+    other spelling."""
+    text = " ".join(text.replace("::", " :: ").split()).replace(" :: ", "::").strip()
+    text = text.removeprefix("const ").lstrip(":")
+    if text.startswith(("std::vector<", "vector<")) and text.endswith(">"):
+        inner = written_param_type(text[text.index("<") + 1:-1])
+        return f"{inner}[]" if inner is not None and not inner.endswith("[]") else None
+    if text in _WRITTEN_SCALARS:
+        return _WRITTEN_SCALARS[text]
+    if text != "char" and _WRITTEN_INTEGER.fullmatch(text):
+        return "int"
+    return None
+
+
 def param_type(ctype: Type) -> str | None:
     """The parameter type of a C++ value type, where cheap: double, int, str, bool, an
     array of one (``T[]``), and ``dict`` for a ``std::map`` keyed by strings (roscpp's

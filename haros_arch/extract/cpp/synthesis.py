@@ -69,6 +69,18 @@ _MEMBER = re.compile(
 _MEMBER_TYPE = re.compile(  # ``Msg::_code_type``; ``Synthesised<T>::ConstPtr``
     r"^no type named '(\w+)' in '(?:const )?(?:(?:struct|class) )?([\w:]+)(<.*>)?'")
 _AMBIGUOUS = re.compile(r"^reference to '(\w+)' is ambiguous")
+# a pointer to one declared class given where a pointer to another is wanted (motoman's
+# ``init(&default_tcp_connection_)``, a TcpClient for a SmplMsgConnection): the vendor's
+# classes derive so
+_POINTER_TO = re.compile(
+    r"^(?:cannot initialize (?:a parameter|a variable|a member subobject|return object) "
+    r"of type '(?:const )?([\w:]+) \*' with an [lr]value of type '(?:const )?([\w:]+) \*'"
+    r"|(?:incompatible pointer types )?assigning to '(?:const )?([\w:]+) \*' from "
+    r"(?:incompatible type )?'(?:const )?([\w:]+) \*')")
+# the same, in the note of a candidate of a call no overload takes (``_Error.notes``)
+_NOT_CONVERTED = re.compile(
+    r"^candidate .*no known conversion from '(?:const )?([\w:]+) \*' to "
+    r"'(?:const )?([\w:]+) \*' for")
 _RECORD = re.compile(r"[a-z]\w*(?:::\w+)+")  # a message's struct: ``pkg::msg::Name``
 _AFTER_MEMBER = re.compile(rb"(?:\.|->)\s*([A-Za-z_]\w*)")
 # a member template named with C++'s ``template`` keyword (``bb->template set<T>(k, v)``,
@@ -176,6 +188,9 @@ _C_VENDOR = re.compile(r"[A-Z][A-Za-z0-9]*(?:_[A-Za-z0-9]+)+")
 # a namespace, class, struct or enum the code defines (the first name of ``a::b``)
 _DEFINED = re.compile(rb"\b(?:namespace|class|struct|enum)\s+(?:class\s+|struct\s+)?([A-Za-z_]\w*)")
 _USING = re.compile(rb"\busing\s+namespace\s+(?:::)?([A-Za-z_][\w:]*)\s*;")
+# ``using vendor::conn::Connection;``: a using-declaration of one qualified name
+_USING_ONE = re.compile(
+    rb"\busing\s+(?!namespace\b)(?:typename\s+)?(?:::\s*)?([A-Za-z_]\w*(?:\s*::\s*[A-Za-z_]\w*)+)\s*;")
 
 # binary operators for any operand of a synthesised class (and nothing else)
 _OPERATORS = "template <bool C, class R> struct haros_if {};\n" \
@@ -225,6 +240,8 @@ class _Name:
     uses: set[str] = field(default_factory=set)
     known: bool = False  # a real namespace, reopened
     children: dict[str, _Name] = field(default_factory=dict)
+    # the declared class a pointer to this one was given for (``_POINTER_TO``): its base
+    base: str | None = None
 
 
 _MACRO_SPAN = 4000  # bytes of a macro call searched for a name clang placed at the macro
@@ -324,6 +341,8 @@ class Names:
         self.fields: dict[str, set[str]] = {}
         self.types: dict[str, set[str]] = {}
         self.using: set[str] = set()  # namespaces named by ``using namespace``
+        # the qualified names of using-declarations: ``using vendor::conn::Connection;``
+        self.brought: set[str] = set()
         self.aliases: set[str] = set()  # names the code declares: ``using Mode = ...;``
         # unknown names that made a use ambiguous (the real declaration was invalid only
         # until other names were declared): no longer declared
@@ -350,6 +369,8 @@ class Names:
                 self._texts.append(text)
                 self._defined.update(m.decode() for m in _DEFINED.findall(text))
                 self.using.update(m.decode() for m in _USING.findall(text))
+                self.brought.update(re.sub(r"\s+", "", m.decode())
+                                    for m in _USING_ONE.findall(text))
                 self.aliases.update(m.decode() for m in _ALIAS_NAME.findall(text))
                 self.taken.update(_case_literals(text))
         for message, text, offset in errors:
@@ -432,6 +453,16 @@ class Names:
             if template.group(1) not in self.member_templates:
                 self.member_templates.add(template.group(1))
                 self.count += 1
+            return
+        converted = _NOT_CONVERTED.match(message)
+        if converted is not None:
+            self._derive(converted.group(1), converted.group(2))
+            return
+        pointer = _POINTER_TO.match(message)
+        if pointer is not None:
+            wanted, given = (pointer.group(1), pointer.group(2)) if pointer.group(1) else (
+                pointer.group(3), pointer.group(4))
+            self._derive(given, wanted)
             return
         ambiguous = _AMBIGUOUS.match(message)
         if ambiguous is not None:
@@ -604,6 +635,79 @@ class Names:
             node = node.children[part]
         return not node.known
 
+    def _class_path(self, written: str) -> list[str] | None:
+        """The path of the one declared class (in namespaces only) that ``written``
+        names, as clang prints it (unqualified after a using-declaration): None when
+        none or several are."""
+        parts = [p for p in written.split("::") if p]
+        found: list[list[str]] = []
+        stack: list[tuple[list[str], _Name]] = [([], self.root)]
+        while stack:
+            path, node = stack.pop()
+            for name, child in node.children.items():
+                if child.known or _is_namespace(child):
+                    stack.append(([*path, name], child))
+                elif [*path, name][-len(parts):] == parts and "template" not in child.uses:
+                    found.append([*path, name])
+        if len(found) > 1:  # the one a using-declaration or -directive brings
+            found = [f for f in found if "::".join(f) in self.brought
+                     or "::".join(f[:-1]) in self.using]
+        return found[0] if len(found) == 1 else None
+
+    def _derive(self, given: str, wanted: str) -> None:
+        derived, base = self._class_path(given), self._class_path(wanted)
+        if derived is None or base is None or derived == base:
+            return
+        node = self._node("::".join(derived))
+        qualified = "::".join(base)
+        seen: set[str] = {"::".join(derived)}  # no cycle of bases
+        at: str | None = qualified
+        while at is not None and at not in seen:
+            seen.add(at)
+            at = self._node(at).base
+        if at is None and node.base is None:
+            node.base = qualified
+            self.count += 1
+
+    def _derived(self, hidden: set[str], values: _Values) -> list[str]:
+        """The classes with a base (``_derive``), defined after every other name, bases
+        first, each in its namespaces: ``struct B : ::vendor::A`` (its place in the tree
+        holds a declaration)."""
+        pending: list[tuple[list[str], _Name]] = []
+        stack: list[tuple[list[str], _Name]] = [
+            ([name], child) for name, child in self.root.children.items() if name not in hidden]
+        while stack:
+            path, node = stack.pop()
+            if node.base is not None:
+                pending.append((path, node))
+            elif node.known or _is_namespace(node):
+                stack.extend(([*path, name], child) for name, child in node.children.items())
+        lines: list[str] = []
+        done: set[str] = set()
+        while pending:
+            ready = [(p, n) for p, n in pending if n.base in done or
+                     self._node(n.base or "").base is None]
+            if not ready:
+                break
+            for path, node in sorted(ready, key=lambda item: item[0]):
+                base = "::" + (node.base or "")
+                node_base, node.base = node.base, None
+                body = _render(path[-1], node, "", nested=False, values=values,
+                               withdrawn=self.withdrawn)
+                node.base = node_base
+                if not body or not body[0].startswith(("struct ", "template")):
+                    continue
+                head = body[0].replace(": haros_any {", f": {base} {{", 1)
+                inherit = f"  using {base}::{base.rsplit('::', 1)[-1]};"
+                body = [head, inherit, *(line for line in body[1:]
+                                         if line.strip() != "using haros_any::haros_any;")]
+                lines += [*(f"namespace {p} {{" for p in path[:-1]), *body,
+                          "}" * (len(path) - 1)]
+                done.add("::".join(path))
+            pending = [(p, n) for p, n in pending if "::".join(p) not in done and
+                       (p, n) not in ready]
+        return lines
+
     def header(self) -> str:
         values = _Values(self.taken)
         members = "".join(f"  static haros_any {m};\n" for m in sorted(self.members)
@@ -617,16 +721,21 @@ class Names:
         lines += [f"#define {name}" for name in sorted(self.macros)]
         lines += [f"#define {name}(...)" for name in sorted(self.declaration_macros)]
         # static: a field reads as ``msg.f`` and a constant as ``Msg::F``, and the
-        # message stays the plain struct it was (no member to construct or copy)
+        # message stays the plain struct it was (no member to construct or copy); a
+        # constant read where C++ needs one (``case Msg::Goal::TOOL_CONTACT:``) is an
+        # enumerator of a value of its own
         lines += [f"#define {interfaces.fields_macro(record)} " + " ".join(
             [*(f"typedef haros_any {t};" for t in sorted(self.types.get(record, ()))),
-             *(f"static haros_any {f};" for f in sorted(self.fields.get(record, ())))])
+             *(f"enum : int {{ {f} = {values.next(f in self.flags)} }};"
+               if f in self.constants else f"static haros_any {f};"
+               for f in sorted(self.fields.get(record, ())))])
             for record in sorted({*self.fields, *self.types})]
         hidden = self._found_by_using()
         for name, node in sorted(self.root.children.items()):
             if name not in hidden:
                 lines.extend(_render(name, node, "", nested=False, values=values,
                                      withdrawn=self.withdrawn))
+        lines += self._derived(hidden, values)
         return "\n".join(lines) + "\n"
 
     def _message(self, record: str) -> bool:
@@ -638,10 +747,16 @@ class Names:
     def _found_by_using(self) -> set[str]:
         """Unknown names used unqualified that a ``using namespace`` of a namespace
         declared here also gives (``Pose2`` and ``karto::Pose2`` after ``using namespace
-        karto``): declared once, in the namespace (with what was learnt of the
-        unqualified one), or the unqualified use is ambiguous."""
+        karto``), or a using-declaration of that one name (``using
+        vendor::conn::Connection;``, motoman's SmplMsgConnection): declared once, in the
+        namespace (with what was learnt of the unqualified one), or the unqualified use
+        is ambiguous (the using-declaration conflicts with it)."""
         found: set[str] = set()
-        for space in sorted(self.using):
+        # each namespace a ``using namespace`` names, with all its names; each
+        # using-declaration (``using vendor::conn::Connection;``), with its one name
+        wanted = [(space, None) for space in sorted(self.using)] + [
+            (one.rpartition("::")[0], one.rpartition("::")[2]) for one in sorted(self.brought)]
+        for space, only in wanted:
             node: _Name | None = self.root
             for part in space.split("::"):
                 node = node.children.get(part) if node is not None else None
@@ -649,8 +764,14 @@ class Names:
                 continue
             for name, child in node.children.items():
                 top = self.root.children.get(name)
-                if child.known or top is None or top.known or name in found:
+                if (only is not None and name != only) or child.known or top is None or \
+                        top.known or name in found:
                     continue
+                if only is not None and top.uses and top.uses <= {"value", "constant", "flag"}:
+                    # a name the code reads only as a value: not the type that the
+                    # using-declaration's line suggests of a capitalised name
+                    # (``using nav2_costmap_2d::LETHAL_OBSTACLE;``)
+                    child.uses = set(top.uses)
                 _merge(child, top)
                 found.add(name)
         return found
@@ -719,6 +840,8 @@ def _render(name: str, node: _Name, indent: str, nested: bool, values: _Values,
                              withdrawn=withdrawn))
     if space:
         return [f"{indent}namespace {name} {{", *inner, f"{indent}}}"]
+    if node.base is not None and not nested:
+        return [f"{indent}struct {name};"]  # defined after its base (``Names._derived``)
     if node.uses - {"flag"} == {"value", "constant"} and not node.children:
         # read where C++ needs a constant: an enumerator (an unnamed enum's, which
         # converts to any integer and makes ``enum_value(X)``'s underlying type), that

@@ -553,9 +553,15 @@ class CallFinder:
         if len(self.calls) == before:
             return
         written = _written_template(call)
+        # a parameter's type as written (``node.template declare_parameter<double>("t",
+        # 34)`` declares a double), before the value's
+        written_param = (msg_types.written_param_type(written)
+                         if spec.kind in ("read", "write", "declare") else None)
         for index in range(before, len(self.calls)):
             made = self.calls[index]
-            if (made.type is None and spec.kind not in ("read", "write", "declare")) or (
+            if written_param is not None and made.type != written_param:
+                self.calls[index] = dataclasses.replace(made, type=written_param)
+            elif (made.type is None and spec.kind not in ("read", "write", "declare")) or (
                 made.type == "?"
             ):
                 self.calls[index] = dataclasses.replace(

@@ -298,6 +298,9 @@ class Callback(Action):
     """
 
     run: Callable[[Callable[[Text], Value]], tuple[list[Action], list[Diagnostic]]]
+    # what the last run added to the launch description that holds this action (an
+    # argument of the function): run after the rest of that description
+    later: list[Action] = field(default_factory=list)
 
 
 @dataclass

@@ -530,9 +530,29 @@ def opaque_function(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
                               for p in value.parts))
 
         before = len(i.diagnostics)
+        # a launch description given to the function that holds it (spot_ros2's
+        # ``ld.add_action(OpaqueFunction(function=launch_setup, args=[ld]))``): what the
+        # function adds there runs too, after the rest of that description (launch
+        # visits the description's own list, which grows while it is visited); taken
+        # back out, so that another run starts from the same list
+        given = [v for v in (*extra, *extra_kwargs.values()) if isinstance(v, LaunchDescription)]
+        sizes = [len(d.actions) for d in given]
+        action.later = []
+        added: list[Any] = []
+        elsewhere: list[Any] = []
         try:
-            result = i.call(function, [Context(py), *extra], extra_kwargs, n)
+            try:
+                result = i.call(function, [Context(py), *extra], extra_kwargs, n)
+            finally:
+                for described, size in zip(given, sizes, strict=True):
+                    holds = any(x is action for x in described.actions[:size])
+                    (added if holds else elsewhere).extend(described.actions[size:])
+                    del described.actions[size:]
             made = actions(i, result, n) if result is not None else []
+            action.later = actions(i, added, n)
+            if elsewhere:
+                i.unsupported(n, "actions an OpaqueFunction adds to a launch description "
+                                 "that does not hold it are not read")
         except Budget as stop:
             i.diagnostics.append(diag.make("LAUNCH_PY_BUDGET", i.where(n), detail=str(stop)))
             made = []
@@ -542,7 +562,8 @@ def opaque_function(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
             made = []
         return made, i.diagnostics[before:]
 
-    return finish(i, e.Callback(run), k, n)
+    action = e.Callback(run)
+    return finish(i, action, k, n)
 
 
 def ignored(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:

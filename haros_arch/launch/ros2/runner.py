@@ -85,6 +85,8 @@ class Runner:
             environment, self.model.environment_values)
         self.stack: list[str] = []
         self.performed = 0
+        # the action lists being run, innermost last (``run``)
+        self.running: list[list[e.Action]] = []
         self.param_entries = 0  # parameter entries applied to nodes (nodes.node_params)
         self.anon: dict[str, Unknown] = {}
         self.guard: LaunchCondition | None = None  # the condition of the action at hand
@@ -175,6 +177,15 @@ class Runner:
 
     # -- actions -------------------------------------------------------------------
     def run(self, actions: list[e.Action], scope: Scope) -> None:
+        # a copy, which an OpaqueFunction may lengthen (``do_Callback``)
+        pending = list(actions)
+        self.running.append(pending)
+        try:
+            self._run(pending, scope)
+        finally:
+            self.running.pop()
+
+    def _run(self, actions: list[e.Action], scope: Scope) -> None:
         for action in actions:
             self.performed += 1
             if self.performed > MAX_ACTIONS:
@@ -354,6 +365,15 @@ class Runner:
         for item in found:
             if item not in self.model.diagnostics:
                 self.model.diagnostics.append(item)
+        # what it added to the launch description that holds it runs after the rest of
+        # that description, as launch visits the list that grew
+        if action.later and action.condition is not None:
+            # under the condition of the OpaqueFunction that added them
+            self.running[-1].append(e.Group(action.later, scoped=False,
+                                            condition=action.condition,
+                                            location=action.location))
+        else:
+            self.running[-1].extend(action.later)
         self.run(made, scope)
 
     def do_Process(self, action: e.Process, scope: Scope) -> None:

@@ -79,11 +79,12 @@ public:
 template<class A, class N, class G, class C, class H>
 typename Server<A>::SharedPtr create_server(N node, const std::string& name, G handle_goal,
     C handle_cancel, H handle_accepted,
-    const rcl_interfaces::msg::ParameterDescriptor& options = rcl_interfaces::msg::ParameterDescriptor(),
+    const rcl_action_server_options_t& options = rcl_action_server_get_default_options(),
     rclcpp::CallbackGroup::SharedPtr group = nullptr);
 template<class A, class N>
 typename Client<A>::SharedPtr create_client(N node, const std::string& name,
-    rclcpp::CallbackGroup::SharedPtr group = nullptr);
+    rclcpp::CallbackGroup::SharedPtr group = nullptr,
+    const rcl_action_client_options_t& options = rcl_action_client_get_default_options());
 template<class A, class B, class G, class L, class W>
 typename Client<A>::SharedPtr create_client(B base, G graph, L logging, W waitables,
     const std::string& name, rclcpp::CallbackGroup::SharedPtr group = nullptr);

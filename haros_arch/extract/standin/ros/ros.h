@@ -2,6 +2,7 @@
 #ifndef HAROS_STANDIN_ROS_ROS_H
 #define HAROS_STANDIN_ROS_ROS_H
 #include <ros/forwards.h>
+#include <ros/common.h>
 #include <ros/time.h>
 #include <ros/console.h>
 #include <ros/init.h>

@@ -1,0 +1,62 @@
+"""A parameter call on a node of a template parameter's type (``node.template
+declare_parameter<double>("rate", 34)`` in ``template <typename NodeT>``) is one the
+parse cannot resolve: it is kept by its name, and its type is the one written as the
+template argument, not the default value's (sick_safetyscanners2's
+initializeParameters)."""
+
+from __future__ import annotations
+
+from conftest import package_xml
+
+from haros_arch.extract.cpp import extract_cpp
+from haros_arch.extract.cpp.msg_types import written_param_type
+from haros_arch.workspace import scan
+
+SOURCE = """\
+#include <string>
+#include <vector>
+#include <rclcpp/rclcpp.hpp>
+struct Config {
+  template <typename NodeT> static void declare(NodeT & node) {
+    node.template declare_parameter<double>("rate", 34);
+    node.template declare_parameter<std::string>("frame", "scan");
+    node.template declare_parameter<int>("skip", 0.0);
+    node.template declare_parameter<bool>("on", 1);
+    node.template declare_parameter<std::vector<int64_t>>("ids", std::vector<int64_t>{});
+    node.template declare_parameter("plain", 2);
+  }
+  template <typename NodeT> void load(NodeT & node) {
+    node.template get_parameter<double>("rate", rate_);
+  }
+  double rate_{0.0};
+};
+class Scanner : public rclcpp::Node {
+ public:
+  Scanner() : Node("scanner") { Config::declare(*this); config_.load(*this); }
+  Config config_;
+};
+"""
+
+
+def test_a_dependent_parameter_call_takes_its_written_type(tmp_path) -> None:
+    (tmp_path / "package.xml").write_text(package_xml("scan", "ament_cmake").replace(
+        "</package>", "<depend>rclcpp</depend></package>"))
+    source = tmp_path / "scanner.cpp"
+    source.write_text(SOURCE)
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    assert [(c.kind, c.name, c.type) for c in result.calls] == [
+        ("declare", "rate", "double"), ("declare", "frame", "str"),
+        ("declare", "skip", "int"), ("declare", "on", "bool"),
+        ("declare", "ids", "int[]"), ("declare", "plain", "int"),
+        ("read", "rate", "double")]
+    unresolved = [d for d in result.diagnostics if d.code == "CPP_CALL_UNRESOLVED"]
+    assert "with type double" in unresolved[0].message
+
+
+def test_written_parameter_types() -> None:
+    assert [written_param_type(t) for t in (
+        "double", "float", "bool", "std::string", "int", "unsigned long", "std::int64_t",
+        "uint8_t", "std::vector<std::string>", "std::vector<double>", "char", "long double",
+        "Foo", "std::vector<Foo>", "std::vector<std::vector<int>>", "const std::string",
+    )] == ["double", "double", "bool", "str", "int", "int", "int", "int", "str[]",
+           "double[]", None, None, None, None, None, "str"]

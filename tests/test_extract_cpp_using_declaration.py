@@ -1,0 +1,84 @@
+"""A vendor class the header names qualified and the source through a using-declaration
+(motoman_driver's ``using industrial::smpl_msg_connection::SmplMsgConnection;`` then
+``bool JointRelayHandler::init(SmplMsgConnection* connection, ...)``): one class, so the
+out-of-line definition matches its declaration and the function is not partial."""
+
+from __future__ import annotations
+
+from conftest import package_xml
+
+from haros_arch.extract.cpp import extract_cpp
+from haros_arch.workspace import scan
+
+HEADER = """\
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+#include "vendor/connection.h"
+namespace relay {
+class Relay {
+ public:
+  bool init(vendor::conn::Connection* connection, int type);
+  ros::NodeHandle node_;
+  ros::Publisher pub_;
+};
+}
+"""
+
+SOURCE = """\
+#include "pkg/relay.h"
+using vendor::conn::Connection;
+namespace relay {
+bool Relay::init(Connection* connection, int type) {
+  pub_ = node_.advertise<std_msgs::String>("state", 1);
+  return connection != nullptr;
+}
+}
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "relay");
+  relay::Relay r;
+  r.init(nullptr, 1);
+}
+"""
+
+
+def test_a_using_declaration_names_the_qualified_vendor_class(tmp_path) -> None:
+    (tmp_path / "package.xml").write_text(package_xml("pkg").replace(
+        "</package>", "<depend>roscpp</depend><depend>std_msgs</depend></package>"))
+    (tmp_path / "include" / "pkg").mkdir(parents=True)
+    (tmp_path / "include" / "pkg" / "relay.h").write_text(HEADER)
+    (tmp_path / "src").mkdir()
+    source = tmp_path / "src" / "relay.cpp"
+    source.write_text(SOURCE)
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "state")]
+    codes = [d.code for d in result.diagnostics]
+    assert "CPP_NAMES_DECLARED" in codes
+    assert "CPP_PARSE_ERROR" not in codes and "CPP_ERROR_NEAR_CALL" not in codes
+
+
+CONSTANT = """\
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+#include "vendor/limits.h"
+using vendor::limits::MAX_SPEED;
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "limiter");
+  ros::NodeHandle nh;
+  double scale = (MAX_SPEED - 1) * 2.0;
+  ros::Publisher pub = nh.advertise<std_msgs::String>("limited", 1);
+  return scale > 0 ? 0 : 1;
+}
+"""
+
+
+def test_a_using_declaration_of_a_constant_the_code_reads_as_a_value(tmp_path) -> None:
+    """nav2's gradient_layer tutorial: ``using nav2_costmap_2d::LETHAL_OBSTACLE;`` then
+    ``(LETHAL_OBSTACLE - gradient_index * GRADIENT_FACTOR)``: a value, not a type."""
+    (tmp_path / "package.xml").write_text(package_xml("pkg").replace(
+        "</package>", "<depend>roscpp</depend><depend>std_msgs</depend></package>"))
+    source = tmp_path / "limiter.cpp"
+    source.write_text(CONSTANT)
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "limited")]
+    codes = [d.code for d in result.diagnostics]
+    assert "CPP_PARSE_ERROR" not in codes and "CPP_ERROR_NEAR_CALL" not in codes
