@@ -1,7 +1,8 @@
 """How the cost of a whole run grows with the workspace (issue #24): per project file, a
-cold run (empty cache), a no-change re-run, and a re-run after one C++ source changed,
-each in a fresh process, with the seconds of every stage, per translation unit and per
-package, and a check that the three runs give the same JSON model.
+cold run (empty cache), a no-change re-run, and two re-runs after one C++ source changed
+(a comment appended: the same model; a line added before its code: another), each in a
+fresh process, with the seconds of every stage, per translation unit and per package,
+and a check that the first three runs give the same JSON model.
 
     .venv/bin/python bench/scale.py [--jobs N] [--touch FILE.cpp] PROJECT.yaml [...]
 
@@ -13,7 +14,11 @@ trees and the cache; the split is measured with ``--jobs 1`` only: workers parse
 sight), Python (the other nodes, read while the C++ workers parse: their seconds are
 within C++'s), models, graph, queries (the catalogue) and report (the HTML file). The
 changed file is ``--touch`` or the first C++ source of the model; a comment is appended
-to it and removed again afterwards (use a copy of a fetched tree: this writes into it).
+to it (touched: what the unit gives is the same, the kept run answers) and, in a fourth
+run, a comment line is put before its first line instead (edited: every call of the
+file moves, so the run is made again, from the unit cache and the other nodes' kept
+results); the file is restored afterwards (use a copy of a fetched tree: this writes
+into it).
 Each run uses its own cache folder (a temporary one, empty for the cold run), never the
 user's.
 """
@@ -174,7 +179,7 @@ def main() -> None:
                 shutil.rmtree(folder, ignore_errors=True)
                 os.makedirs(folder)
             cache = os.path.join(folder, "cache")
-            models = [os.path.join(folder, f"model{i}.json") for i in range(3)]
+            models = [os.path.join(folder, f"model{i}.json") for i in range(4)]
             cold = run(project, cache, args.jobs, models[0])
             show("cold", cold, None)
             warm = run(project, cache, args.jobs, models[1])
@@ -189,11 +194,17 @@ def main() -> None:
                 with open(path, "ab") as handle:
                     handle.write(b"\n// touched by bench/scale.py\n")
                 touched = run(project, cache, args.jobs, models[2])
+                # an edit that changes what the unit gives: a line before the code moves
+                # every call of the file, so the run is made again from the caches
+                with open(path, "wb") as handle:
+                    handle.write(b"// edited by bench/scale.py\n" + original)
+                edited = run(project, cache, args.jobs, models[3])
             finally:
                 with open(path, "wb") as handle:
                     handle.write(original)
             show("touched", touched, cold)
-            print(f"    touched {path}")
+            show("edited", edited, cold)
+            print(f"    touched / edited {path}")
             same = cold["digest"] == warm["digest"]
             print(f"  same model cold / no change: {same}; cold / touched: "
                   f"{cold['digest'] == touched['digest']} (a touched file's lines move "

@@ -250,7 +250,8 @@ def store(folder: str, key: str, model: Model) -> None:
     if not same:
         return  # a model that does not read back whole is not kept (never a wrong one)
     _KEPT[model] = (folder, key)
-    _write(_entry(folder, key), {"model": data}, folder)
+    _write_text(_entry(folder, key), '{"model": ' + text + "}")  # the text made above
+    _prune(folder)
 
 
 def store_alias(folder: str, key: str, same_as: str, outer: str | None = None) -> None:
