@@ -109,6 +109,9 @@ def test_no_distribution_known_leaves_the_read_undecided(write_tree) -> None:
         ("srv/src/server.cpp", 9, "warning")]
     assert "RCLCPP_VERSION_GTE(29, 0, 0)" in said[0].message
     assert _findings(model) == [("parameter-set-not-read-undecided", "1")]
+    # said once, at the place: no node warning on top for each node it makes partial
+    assert not [d for d in model.diagnostics if d.code == "CPP_NODE_PARTIAL"]
+    assert any("RCLCPP_VERSION_GTE(29, 0, 0)" in r for r in node.completeness_reasons)
 
 
 def test_the_configurations_disagreeing_is_no_distribution(write_tree) -> None:

@@ -183,6 +183,10 @@ _PARTIAL_CAUSES = {
     "python": ("PY_PARSE_ERROR", "PY_TOO_COMPLEX", "FILE_UNREADABLE", "PY_CLASS_UNSEEN"),
 }
 _PARTIAL_CODE = {"cpp": "CPP_NODE_PARTIAL", "python": "PY_NODE_PARTIAL"}
+# causes whose own warning (one per place) says all there is to say: a version branch
+# that no known distribution decides is in a header nearly every node of a workspace
+# includes (navigation2's node_utils.hpp), which made a node warning of each of 116 nodes
+_SAID_AT_THE_PLACE = frozenset({"CPP_VERSION_UNKNOWN"})
 
 
 # nodelet::Loader's load(name, type, ...): a nodelet made by name in this process (the
@@ -229,6 +233,8 @@ def completeness(node: Node, found: Sequence[Diagnostic],
     for cause in causes:
         where = f"{cause.location.file}:{cause.location.line}" if cause.location.file else ""
         node.mark_partial(f"{where}: {cause.message}" if where else cause.message)
+    if all(c.code in _SAID_AT_THE_PLACE for c in causes):
+        return []  # partial: each place says why once, not once more for every node
     first = node.completeness_reasons[0]
     return [diag.make(_PARTIAL_CODE[node.language], node.location, node=node.name,
                       count=len(causes), first=first)]
