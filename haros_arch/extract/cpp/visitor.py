@@ -281,8 +281,13 @@ class CallFinder:
                 yield cursor
             elif kind == CursorKind.FIELD_DECL:
                 self._field(cursor)
+                self.types.specialised(cursor.type, parent)
                 if initializer(cursor) is not None:
                     yield cursor  # a default member initialiser: walked like a function
+            elif kind in (CursorKind.CXX_BASE_SPECIFIER, CursorKind.VAR_DECL):
+                # a class template's specialisations: a base, a global (a plugin's
+                # export, ``PLUGINLIB_EXPORT_CLASS(DriveOnHeading<>, Behavior)``)
+                self.types.specialised(cursor.type, parent)
             elif kind in CONTAINERS:
                 if cursor.spelling in ("TypeAdapter", "ImplicitTypeAdapter"):
                     self.types.adapter(cursor)
