@@ -480,6 +480,15 @@ CATALOGUE: dict[str, Entry] = {
     "CPP_DYNAMIC_NAME": Entry(
         "info", "the name of this {kind} call is computed at run time; kept as '{name}'",
         "The extractor could not resolve every part of the name statically."),
+    "CPP_NAME_MEMBER_ELSEWHERE": Entry(
+        "info", "the name of this {kind} call holds {member}, which nothing in this file "
+        "sets (its class's constructors are in another file); kept as '{name}'",
+        "The name is read from a member (often through a getter, costmap_.getName()) of "
+        "a class whose constructors this translation unit does not define: what they, or "
+        "an initialisation method defined with them, give the member, and which "
+        "constructor built the object used here, are not followed across files, so that "
+        "part of the name stays '?' (a plugin's name that its host gives, as a costmap "
+        "layer's Layer::name_, is filled in by the host)."),
     "PY_PARSE_ERROR": Entry(
         "error", "Python syntax error: {detail}",
         "The Python file could not be parsed (nor read as Python 2 after repairing its "

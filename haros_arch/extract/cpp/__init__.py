@@ -275,10 +275,17 @@ def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True
                               if c not in call.conditions)
                 call = dataclasses.replace(call, built_in=None,
                                            conditions=(*extra, *call.conditions))
-            key = (call.kind, call.name, call.location)
+            # (two calls named '?' by different parameters are two: nav2's
+            # CostmapSubscriber, built with the local and the global costmap's topic)
+            key = (call.kind, call.name, call.location, call.name_param)
             if key not in seen:
                 seen.add(key)
                 result.calls.append(call)
+    # a copy named by no parameter beside one that is (a header's function that another
+    # unit reads without its caller: opennav_docking's parseDockParams) is that one
+    named = {(c.kind, c.name, c.location) for c in result.calls if c.name_param is not None}
+    result.calls = [c for c in result.calls if c.name_param is not None
+                    or (c.kind, c.name, c.location) not in named]
     result.diagnostics = list(dict.fromkeys(result.diagnostics))
     _name_nodes(result, sorted(paths_units, key=lambda pair: pair[0]), facts, unseen)
     result.calls = declared_defaults(result.calls)

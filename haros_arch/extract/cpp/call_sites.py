@@ -66,6 +66,10 @@ class CallSites:
         self.forks: list[Fork] | None = None
         self._members: dict[tuple[str, int], list[tuple[Cursor | None, Cursor]]] = {}
         self.choice: tuple[tuple[str, int], tuple[str, int]] | None = None
+        # ``Class::member`` of each member read while a value was asked whose class's
+        # constructors are all defined in other files, which may set it (cleared by the
+        # caller that reports why a name is unknown)
+        self.elsewhere: list[str] = []
 
     def agreed(self, parm: Cursor, read: Callable[[Cursor, Scope], Value],
                unknown: Value) -> Value:
@@ -198,6 +202,23 @@ class CallSites:
         value = initializer(field)
         return (value, Scope(None, self.macros, self.source, self)) if value is not None \
             else None
+
+    def unset(self, field: Cursor) -> None:
+        """Note ``field``, a member nothing in this unit gives a value, when its class
+        declares constructors and this unit defines none of them (``elsewhere``)."""
+        owner = field.semantic_parent
+        where = owner.location.file if owner is not None else None
+        if owner is None or field.kind != CursorKind.FIELD_DECL or (
+            where is None or where.name not in self.source
+        ):  # a class of the workspace's own files, not a message (synthesised): its
+            # field holds what is received or filled in at run time
+            return
+        constructors = [c for c in owner.get_children() if c.kind in _CONSTRUCTORS
+                        and is_constructor(c)]
+        if constructors and all(c.get_definition() is None for c in constructors):
+            named = f"{owner.spelling}::{field.spelling}"
+            if named not in self.elsewhere:
+                self.elsewhere.append(named)
 
     def member(self, field: Cursor, function: Cursor | None = None
                ) -> tuple[Cursor | None, Cursor] | None:
@@ -523,7 +544,9 @@ def constructor_values(field: Cursor, source: dict[str, bytes]
     writing: list[tuple[Cursor | None, Cursor]] = []
     leaving: list[tuple[Cursor | None, Cursor]] = []
     for member in owner.get_children():
-        if member.kind != CursorKind.CONSTRUCTOR:
+        if member.kind != CursorKind.CONSTRUCTOR and not (
+            member.kind == CursorKind.FUNCTION_TEMPLATE and is_constructor(member)
+        ):  # (a constructor template: nav2's ``CostmapSubscriber(const NodeT &, topic)``)
             continue
         definition = member.get_definition()
         if definition is None or _copies(definition, owner):

@@ -9,13 +9,22 @@ argument's C++ type, or an argument that names the type as a string
 
 from __future__ import annotations
 
-from clang.cindex import Cursor, CursorKind, Type, TypeKind
+import re
+
+from clang.cindex import Cursor, CursorKind, Type, TypeKind, conf
 
 from . import api, msg_types
 from .handles import parameters, qualified_name
-from .values import Scope, render, strip
+from .values import Scope, key_of, render, strip
 
 _INTERFACE = ("msg", "srv", "action")
+# the canonical spelling of a class template's own type parameter, as a type that uses
+# it inside the template reads (``Server<ActionT>`` in ``Navigator<ActionT>``)
+_PARAMETER = re.compile(r"type-parameter-0-(\d+)")
+_TEMPLATE_PARAMETERS = frozenset({CursorKind.TEMPLATE_TYPE_PARAMETER,
+                                  CursorKind.TEMPLATE_NON_TYPE_PARAMETER,
+                                  CursorKind.TEMPLATE_TEMPLATE_PARAMETER})
+MAX_USES = 64  # specialisations of one class template recorded per unit
 
 
 class CallTypes:
@@ -24,12 +33,78 @@ class CallTypes:
     def __init__(self, ros2: bool) -> None:
         self.ros2 = ros2
         self.adapters: dict[str, Type] = {}  # custom type's spelling -> ROS message type
+        # class template -> (specialisation, the class or class template naming it) for
+        # each base class and member type of the unit's classes that specialises it
+        self.uses: dict[tuple[str, int], list[tuple[Type, Cursor]]] = {}
 
     def adapter(self, specialisation: Cursor) -> None:
         """Record what a ``TypeAdapter`` / ``ImplicitTypeAdapter`` specialisation adapts."""
         found = msg_types.adapted_types(specialisation)
         if found is not None:
             self.adapters[found[0]] = found[1]
+
+    def specialised(self, ctype: Type, owner: Cursor, depth: int = 0) -> None:
+        """Record the class template specialisations ``ctype`` (a base class or a
+        member's type, declared in ``owner``) names, its template arguments' too
+        (``std::unique_ptr<Server<ActionT>>``)."""
+        if depth > 3 or ctype.kind == TypeKind.INVALID:
+            return
+        if ctype.get_canonical().get_num_template_arguments() > 0:
+            ctype = ctype.get_canonical()  # with the defaults (``Heading<>``)
+        count = ctype.get_num_template_arguments()
+        if count < 1:
+            return
+        decl = ctype.get_canonical().get_declaration()
+        if decl.kind == CursorKind.NO_DECL_FOUND:
+            decl = ctype.get_declaration()  # a dependent one names the template itself
+        template = decl if decl.kind == CursorKind.CLASS_TEMPLATE else \
+            conf.lib.clang_getSpecializedCursorTemplate(decl)
+        if template is not None and template.kind == CursorKind.CLASS_TEMPLATE:
+            uses = self.uses.setdefault(key_of(template.canonical), [])
+            if len(uses) < MAX_USES:
+                uses.append((ctype, owner))
+        for index in range(count):
+            self.specialised(ctype.get_template_argument_type(index), owner, depth + 1)
+
+    def bound(self, parm: Cursor, depth: int = 0, within: Cursor | None = None
+              ) -> Type | None:
+        """The type a class template's type parameter ``parm`` stands for in this unit:
+        the argument every specialisation of the template that the unit's classes derive
+        from or hold as members gives it, through the parameters of class templates that
+        pass theirs on (``class Spin : public Timed<SpinAction>``, ``Navigator<ActionT>``
+        holding a ``Server<ActionT>``); None when they disagree or none is known."""
+        template = parm.semantic_parent
+        if (template is None or template.kind != CursorKind.CLASS_TEMPLATE) and (
+            within is not None and any(key_of(c) == key_of(parm)
+                                       for c in within.get_children())
+        ):  # a parameter of a member defined out of its class template (``template<class
+            # T> void Server<T>::on_configure()``): the class's parameter
+            template = within.semantic_parent
+        own = _PARAMETER.fullmatch(parm.type.get_canonical().spelling)
+        if depth > 4 or own is None or template is None or (
+                template.kind != CursorKind.CLASS_TEMPLATE):
+            return None
+        index = int(own.group(1))
+        found: dict[str, Type] = {}
+        for ctype, owner in self.uses.get(key_of(template.canonical), []):
+            if index >= ctype.get_num_template_arguments():
+                return None
+            given = ctype.get_template_argument_type(index)
+            if given.kind == TypeKind.INVALID:
+                return None
+            passed = _PARAMETER.fullmatch(given.get_canonical().spelling)
+            if passed is not None:  # the owner's own parameter, passed on
+                owner_params = [c for c in owner.get_children()
+                                if c.kind in _TEMPLATE_PARAMETERS]
+                at = int(passed.group(1))
+                if owner.kind != CursorKind.CLASS_TEMPLATE or at >= len(owner_params):
+                    return None
+                bound = self.bound(owner_params[at], depth + 1)
+                if bound is None:
+                    return None
+                given = bound
+            found.setdefault(given.get_canonical().spelling, given)
+        return next(iter(found.values())) if len(found) == 1 else None
 
     def ros_type(self, name: str) -> str:
         """A ROS 1 type name, written the ROS 2 way (``pkg/msg/Name``) in a ROS 2 node."""
@@ -57,6 +132,9 @@ class CallTypes:
             if source in ("template", "template-value"):
                 ref = template_argument(call)
                 ctype = ref.type if ref is not None else constructed_argument(call)
+                held = ref.referenced if ref is not None else None
+                if held is not None and held.kind == CursorKind.TEMPLATE_TYPE_PARAMETER:
+                    ctype = self.bound(held, within=scope.body) or ctype
                 if ctype is None and source == "template-value":
                     ctype = _explicit_parameter_type(call, spec.type_arg)
                 written = _class_template_first(call)

@@ -423,6 +423,8 @@ class Scope:
                 value = self.written_before(decl, cursor)
             if value is None:
                 found = self.field(decl)
+                if found is None and self.sites is not None:
+                    self.sites.unset(decl)  # why the name is unknown (``CallSites.unset``)
                 return UNKNOWN if found is None else found[1].string(found[0], depth + 1)
             return self.string(value, depth + 1)
         if kind == CursorKind.CALL_EXPR:

@@ -281,8 +281,13 @@ class CallFinder:
                 yield cursor
             elif kind == CursorKind.FIELD_DECL:
                 self._field(cursor)
+                self.types.specialised(cursor.type, parent)
                 if initializer(cursor) is not None:
                     yield cursor  # a default member initialiser: walked like a function
+            elif kind in (CursorKind.CXX_BASE_SPECIFIER, CursorKind.VAR_DECL):
+                # a class template's specialisations: a base, a global (a plugin's
+                # export, ``PLUGINLIB_EXPORT_CLASS(DriveOnHeading<>, Behavior)``)
+                self.types.specialised(cursor.type, parent)
             elif kind in CONTAINERS:
                 if cursor.spelling in ("TypeAdapter", "ImplicitTypeAdapter"):
                     self.types.adapter(cursor)
@@ -859,6 +864,7 @@ class CallFinder:
             target.kind == CursorKind.CONSTRUCTOR) else callee)
         names: list[tuple[str, NameSource | None]]
         namespace: str | None = None
+        elsewhere: list[str] = []  # members read for the name that other files set
         if spec.fixed_name is not None:
             if spec.handle_default is not None:  # relative to the handle given
                 handle = next((a for a in args if is_handle(a)), None)
@@ -883,8 +889,12 @@ class CallFinder:
                     break
             if name_expr is None and spec.name_suffix is None:
                 return
+            sites = self.sites
+            if sites is not None:
+                sites.elsewhere.clear()
             names = [("", None)] if name_expr is None else self._names(
                 spec, call, name_expr, args, scope)
+            elsewhere = list(sites.elsewhere) if sites is not None else []
             if spec.empty_is_none:
                 names = [(name, source) for name, source in names if name]
                 if not names:
@@ -976,7 +986,12 @@ class CallFinder:
             member = self._member(spec, call, shift) if len(names) == 1 else None
             if member is not None:
                 self._stored.append((self.calls[-1], member, key_of(call)))
-            if "?" in name and PLACEHOLDER not in name:
+            if "?" in name and PLACEHOLDER not in name and elsewhere:
+                # a member whose class's constructors this unit does not define
+                self.diagnostics.append(diag.make(
+                    "CPP_NAME_MEMBER_ELSEWHERE", location, kind=spec.kind, name=name,
+                    member=", ".join(elsewhere)))
+            elif "?" in name and PLACEHOLDER not in name:
                 self.diagnostics.append(diag.make(
                     "CPP_DYNAMIC_NAME", location, kind=spec.kind, name=name))
             for kind, sibling, stype in spec.siblings:
@@ -1173,6 +1188,13 @@ class CallFinder:
                 spec, _ = self._row(call)
                 if spec is not None and spec.out_arg == index and spec.kind in _PARAM_KINDS:
                     return self._parameter(spec, call, scope, depth)
+            if scope.sites is not None and scope.is_parameter(decl):
+                # a function's parameter: the parameter every call of the file passes
+                # (nav2's ``CostmapSubscriber(node, costmap_topic)``, the topic a local
+                # read from ``costmap_topic``)
+                return scope.sites.agreed(
+                    decl, lambda arg, site: self._parameter_source(arg, site, depth + 1),
+                    None)
             value = scope.variable(decl)
             # a member, as Scope.string reads it: what this body assigned it before here
             # (``topic_ = declare_parameter("publisher_topic", "x");`` then
