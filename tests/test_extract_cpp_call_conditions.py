@@ -161,3 +161,14 @@ def test_an_error_that_may_hide_a_call_leaves_none(write_tree) -> None:
     found = _conditions(_tree(write_tree, streamer), "streamer.cpp", "iface.cpp")
     assert found[("subscribe", "std_msgs/String")] == []
     assert found[("subscribe", "std_msgs/Int32")] == []
+
+
+def test_a_loop_around_the_call_is_not_carried(write_tree) -> None:
+    # a helper called once per element of a list: its calls are made per element
+    node = IFACE_CPP.replace(
+        "    return init(groups);\n",
+        "    for (int g : groups) { init(groups); }\n    return true;\n")
+    root = write_tree({"drv/package.xml": package_xml("drv"), "drv/src/iface.h": IFACE_H,
+                       "drv/src/iface.cpp": node, "drv/src/streamer.cpp": STREAMER_CPP})
+    found = _conditions(root, "streamer.cpp", "iface.cpp")
+    assert found[("subscribe", "std_msgs/Int32")] == ['if getGroups("topic_list", groups)']

@@ -21,7 +21,7 @@ from collections.abc import Callable, Collection, Iterable
 
 from clang.cindex import Cursor, CursorKind
 
-from ...model.conditions import Condition
+from ...model.conditions import EACH_STATEMENT, Condition
 from .cache import conditions_of_text, conditions_text
 from .call_sites import CallSites, callee_of
 from .conditions import ConditionReader
@@ -48,6 +48,11 @@ _CONTAINERS = frozenset({
 _KINDS = frozenset({CursorKind.FUNCTION_DECL, CursorKind.CXX_METHOD})
 _REFERENCES = frozenset({CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR})
 MAX_DEPTH = 8
+# the conditions of a site not carried: a loop's (a call named by each element of a
+# list the loop walks is made once per element, the loop no condition of it: navigation2's
+# collision monitor configures a Polygon per name of ``polygon_names``) and a ``try``
+# block's (its body runs unless something fails)
+_NOT_CARRIED = frozenset({"for", "while", "do", EACH_STATEMENT, "try"})
 VIRTUAL = "\x01"  # marks a call that may dispatch to an override, while sites are read
 
 
@@ -184,8 +189,8 @@ def _conditions(function: Cursor, wanted: dict[tuple[str, int], str],
         if node.kind == CursorKind.CALL_EXPR:
             place = _place(node)
             if place in wanted and found[place][1] is None:
-                found[place] = (wanted[place],
-                                tuple(c for c in conditions if c.kind == "source"))
+                found[place] = (wanted[place], tuple(
+                    c for c in conditions if c.kind == "source" and c.statement not in _NOT_CARRIED))
         stack.extend((child, conditions + extra)
                      for child, extra in reversed(reader.branches(node)))
     return found
