@@ -190,7 +190,8 @@ def _conditions(function: Cursor, wanted: dict[tuple[str, int], str],
             place = _place(node)
             if place in wanted and found[place][1] is None:
                 found[place] = (wanted[place], tuple(
-                    c for c in conditions if c.kind == "source" and c.statement not in _NOT_CARRIED))
+                    c for c in conditions
+                    if c.kind == "source" and c.statement not in _NOT_CARRIED))
         stack.extend((child, conditions + extra)
                      for child, extra in reversed(reader.branches(node)))
     return found
