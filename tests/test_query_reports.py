@@ -30,8 +30,13 @@ def run(*args: str) -> subprocess.CompletedProcess[str]:
 
 @pytest.fixture(scope="module")
 def findings():
-    model = from_data(yaml.safe_load((FIXTURES / "queries/paper.yaml").read_text()))
-    return run_catalogue(model)
+    # the paper's example with its /chatter subscriber made unconditional: a mismatch
+    # with a side that may not exist is undecided, not an error
+    doc = yaml.safe_load((FIXTURES / "queries/paper.yaml").read_text())
+    for link in doc["configurations"][0]["links"]:
+        if link["node"] == "/listener":
+            link.pop("conditions", None)
+    return run_catalogue(from_data(doc))
 
 
 def test_sarif_validates_and_points_at_the_source_line(findings, tmp_path):

@@ -150,6 +150,11 @@ class PrimitiveCall:
     # nowhere; the node's call holds the source conditions every construction of the
     # class in the node's other files shares (``extract.cpp._built_under``)
     built_in: str | None = field(default=None, metadata={"optional": True})
+    # in one translation unit's calls only (never in a node's): the USR of the free
+    # function or method whose body makes this call; the node's call holds the source
+    # conditions every call of that function in the node's files shares
+    # (``extract.cpp.call_conditions``)
+    called_in: str | None = field(default=None, metadata={"optional": True})
     # a name taken from a parameter whose default holds another parameter's value in place
     # of its one ``?`` (topic_tools' ROS 2 relay: ``output_topic`` defaults to
     # ``input_topic + "_relay"``, name_default "?_relay"): that other parameter's name, as

@@ -30,7 +30,7 @@ from ...model.location import Location
 from ...model.source import Package, PrimitiveCall, declared_defaults
 from ...workspace import Workspace, manifest_of
 from .. import NODELET_LOAD
-from . import cache, links, recall, synthesis, toolchain, versions
+from . import cache, call_conditions, links, recall, synthesis, toolchain, versions
 from . import compile_commands as commands
 from .headers import FALLBACK, STANDIN, IncludeSetup
 from .interfaces import interface_package
@@ -263,6 +263,7 @@ def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True
     # parse left (an error drops its statement), everywhere when a file was not read
     unseen = {word for unit in units for word in unit.unseen} if complete else {"*"}
     built = _built_under(facts, unseen)
+    called = call_conditions.shared(facts, unseen)
     for unit in units:
         result.diagnostics.extend(unit.diagnostics)
         if unit.rosname is not None and result.rosname is None:
@@ -274,6 +275,11 @@ def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True
                 extra = tuple(c for c in built.get(call.built_in, ())
                               if c not in call.conditions)
                 call = dataclasses.replace(call, built_in=None,
+                                           conditions=(*extra, *call.conditions))
+            if call.called_in is not None:
+                extra = tuple(c for c in called.get(call.called_in, ())
+                              if c not in call.conditions)
+                call = dataclasses.replace(call, called_in=None,
                                            conditions=(*extra, *call.conditions))
             # (two calls named '?' by different parameters are two: nav2's
             # CostmapSubscriber, built with the local and the global costmap's topic)
@@ -301,7 +307,9 @@ def _built_under(facts: list[links.Fact], unseen: set[str]) -> dict[str, tuple[C
     unconditional, or whose class the errors the parse left may construct unseen."""
     sites: dict[str, dict[str, tuple[Condition, ...] | None]] = {}
     for usr, index, value, site in facts:
-        if index in (links.OVERRIDES, links.HOST_NAMED, links.CALLED_VIRTUAL):
+        if index in (links.OVERRIDES, links.HOST_NAMED, links.CALLED_VIRTUAL) or (
+            index in call_conditions.INDICES
+        ):
             continue
         at = sites.setdefault(usr, {})
         if index != links.CONDITIONS:
@@ -673,6 +681,9 @@ def _translation_unit(path: str, text: str, ros2: bool,
     # function it does not know) may construct anything there
     result.unseen = ["*"] if any(d.code in _HANDED for d in result.diagnostics) else sorted(
         word.decode() for word in _unseen(errors, finder, source) | finder.unseen)
+    if result.unseen and result.unseen != ["*"]:
+        result.facts = [*result.facts, *call_conditions.hidden_facts(
+            finder.unit_cursor(), owned, _error_words(errors, finder, source))]
     finder.release()
     headers = [path, *read]
     for include in tu.get_includes():
@@ -979,6 +990,21 @@ def _node_given(errors: list[_Error], finder: CallFinder, source: SourceCache,
             found.append(diag.make(
                 "CPP_NODE_TO_UNKNOWN", workspace.location(error.path, error.line, error.column),
                 given=given, name=name))
+    return found
+
+
+def _error_words(errors: list[_Error], finder: CallFinder, source: SourceCache
+                 ) -> list[tuple[set[str], tuple[str, int] | None]]:
+    """The words of the code each error can hide a statement in (``_unseen``), with
+    the error's place when it is outside the functions (its line's words: the
+    declarations there are no calls, ``call_conditions.hidden_facts``)."""
+    found: list[tuple[set[str], tuple[str, int] | None]] = []
+    for error in errors:
+        if error.path is None:
+            continue
+        words = {w.decode() for w in _unseen([error], finder, source)}
+        inside = _innermost(finder.functions, error.path, error.line) is not None
+        found.append((words, None if inside or "*" in words else (error.path, error.line)))
     return found
 
 

@@ -29,6 +29,7 @@ from ...model.conditions import Condition
 from ...model.source import PrimitiveCall
 from . import msg_types
 from .cache import conditions_text
+from .call_conditions import INDICES
 from .call_sites import CallSites, argument
 from .handles import Namespaces, is_handle, join_name, normalise
 from .values import PLACEHOLDER, SEPARATOR, Scope, key_of, render
@@ -217,7 +218,7 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact],
     facts = list(facts)
     passed = _passed(facts)
     called = {fact[0] for fact in facts if fact[1] not in (OVERRIDES, HOST_NAMED,
-                                                           CALLED_VIRTUAL)}
+                                                           CALLED_VIRTUAL, *INDICES)}
     calling = called | {fact[0] for fact in facts if fact[1] == CALLED_VIRTUAL}
     hosted = {(usr, int(site)): " ".join(dict.fromkeys(
                   qualified_class(base) for base in bases.split("\n") if base))

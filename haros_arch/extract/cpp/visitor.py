@@ -25,7 +25,7 @@ from ...diagnostics import Diagnostic
 from ...model.conditions import EACH_STATEMENT, Condition
 from ...model.location import Location
 from ...model.source import PrimitiveCall
-from . import api, msg_types, parameter_library, reconfigure, synthesis
+from . import api, call_conditions, msg_types, parameter_library, reconfigure, synthesis
 from .call_sites import CallSites
 from .call_types import CallTypes, factory_made, row_class
 from .call_types import callee as callee_of_call
@@ -229,11 +229,17 @@ class CallFinder:
                     read.also = also or None
         self.facts = argument_facts(self.sites, self.namespaces, self.owned, self._marked,
                                     self._site_conditions)
+        self.facts.extend(call_conditions.site_facts(
+            self.functions, self.sites, self.reader, self.owned, self._enter))
         for call in self.calls:  # get_parameter("p") of a declare_parameter("p", default)
             if call.name_param is not None and call.name_default is None and (
                 call.name_param in self._declared
             ):
                 call.name_default, call.default_param = self._declared[call.name_param]
+
+    def unit_cursor(self) -> Any:
+        """The unit's cursor as a node (``run``), until ``release``."""
+        return self._root
 
     def release(self) -> None:
         """Free the unit's nodes (``cursors.release``) once everything is read from
@@ -242,6 +248,12 @@ class CallFinder:
             release(self._root)
             self._root = None
         self.functions = []
+
+    def _enter(self, function: Cursor) -> None:
+        """Ready the condition reader for ``function``'s body (``_conditions_at``)."""
+        held = functools.partial(self._held_parameters, scope=self.sites.scope(function)) if (
+            self.sites is not None) else None
+        self.reader.enter(function, _ARGUMENTS_LEFT, held)
 
     def _constants(self, member: Cursor, sites: int, reads: set[Key]) -> list[object] | None:
         """The member's writes in the file besides the reads (``sites`` of them, made at
@@ -383,8 +395,12 @@ class CallFinder:
             stack.extend((child, conditions + extra) for child, extra in reversed(branches))
         for site, read in self._status_reads:
             read.tested = read.tested or site in tested.keys
+        # a function's calls exist where it is called: under the conditions its call
+        # sites in the node's files share (``call_conditions``), joined per node
+        called_in = function.canonical.get_usr() if call_conditions.eligible(function) else None
         for call in self.calls[first:]:
             call.built_in = call.built_in or built_in
+            call.called_in = call.called_in or called_in or None
             # a read or declaration without a default in a ``try`` block whose handler
             # catches rclcpp's exception for it (navigation2's collision monitor reads
             # the deprecated ``max_points`` so, only to warn when it is set)

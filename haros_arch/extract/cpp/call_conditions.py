@@ -1,0 +1,339 @@
+"""The conditions a function's calls carry from the places that call it.
+
+A function of the node's files (a free function or a method, not a constructor, which
+``visitor.CallFinder._constructed_under`` and ``_built_under`` cover) runs only where
+something calls it: when every call site in the node's files shares a source condition
+(motoman's ``JointTrajectoryInterface::init(connection)`` calls the single-group
+``init(connection, joint_names)`` only in the ``else`` of ``if (getJointGroups(...))``),
+the calls the function makes exist only under it. Each translation unit says, as facts
+(``links.Fact``), where it calls such functions and under what conditions
+(``SITE_UNDER``), which it uses otherwise than by a call (``REFERENCED``: a callback, a
+function pointer, a virtual method a class we do not read may call) and which base
+methods a virtual method overrides (``BASES``: a call of one may run it); the node's
+result joins them (``shared``). A function no file calls, or called from one place with
+no condition, gives none."""
+
+from __future__ import annotations
+
+import json
+import os
+from collections.abc import Callable, Collection, Iterable
+
+from clang.cindex import Cursor, CursorKind
+
+from ...model.conditions import EACH_STATEMENT, Condition
+from .cache import conditions_of_text, conditions_text
+from .call_sites import CallSites, callee_of
+from .conditions import ConditionReader
+from .cursors import children_in
+
+Fact = tuple[str, int, str, str]
+# the index of a fact: the site (``file:offset``, a newline, the USR of the function
+# that holds the call) calls the function under the source conditions of the value
+SITE_UNDER = -6
+# the function is used otherwise than called (its address taken, a virtual method of a
+# class the node's files do not define): it may run anywhere
+REFERENCED = -7
+# the function is a virtual method overriding the methods whose USRs the value holds,
+# one per line: a call of one of those may run it
+BASES = -8
+# the unit declares the function and the parse left errors in code that names it: a
+# call of it may be hidden there
+HIDDEN = -9
+INDICES = frozenset({SITE_UNDER, REFERENCED, BASES, HIDDEN})
+_CONTAINERS = frozenset({
+    CursorKind.NAMESPACE, CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL,
+    CursorKind.LINKAGE_SPEC, CursorKind.UNEXPOSED_DECL,
+})
+_KINDS = frozenset({CursorKind.FUNCTION_DECL, CursorKind.CXX_METHOD})
+_REFERENCES = frozenset({CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR})
+MAX_DEPTH = 8
+# the conditions of a site not carried: a loop's (a call named by each element of a
+# list the loop walks is made once per element, the loop no condition of it: navigation2's
+# collision monitor configures a Polygon per name of ``polygon_names``) and a ``try``
+# block's (its body runs unless something fails)
+_NOT_CARRIED = frozenset({"for", "while", "do", EACH_STATEMENT, "try"})
+VIRTUAL = "\x01"  # marks a call that may dispatch to an override, while sites are read
+
+
+def eligible(function: Cursor) -> bool:
+    """Whether the calls ``function`` makes can take its call sites' conditions: a
+    free function or method that is no template nor a class template's member, no
+    operator (library code calls those: ``std::for_each`` a functor's ``operator()``)."""
+    if function.kind not in _KINDS or function.spelling.startswith("operator"):
+        return False
+    parent = function.semantic_parent
+    return parent is None or parent.kind not in (
+        CursorKind.CLASS_TEMPLATE, CursorKind.CLASS_TEMPLATE_PARTIAL_SPECIALIZATION)
+
+
+def site_facts(functions: list[Cursor], sites: CallSites, reader: ConditionReader,
+               owned: Callable[[str], bool],
+               enter: Callable[[Cursor], None]) -> list[Fact]:
+    """The unit's facts (``SITE_UNDER``, ``REFERENCED``, ``BASES``) over the eligible
+    functions of the workspace's files it calls or defines; ``enter`` readies
+    ``reader`` for a function's body."""
+    def ours(cursor: Cursor | None) -> bool:
+        where = cursor.location.file if cursor is not None else None
+        return where is not None and owned(where.name) and eligible(cursor)
+
+    facts: list[Fact] = []
+    calls: dict[str, int] = {}
+    refs: dict[str, int] = {}
+    by_caller: dict[tuple[str, int], tuple[Cursor, dict[tuple[str, int], str]]] = {}
+    for function in functions:
+        for node in function.walk_preorder():
+            if node.kind in _REFERENCES and node.referenced is not None and (
+                ours(node.referenced)
+            ):
+                usr = node.referenced.canonical.get_usr()
+                if usr:
+                    refs[usr] = refs.get(usr, 0) + 1
+            elif node.kind == CursorKind.CALL_EXPR:
+                callee = callee_of(node)
+                if callee is None or not ours(callee):
+                    continue
+                usr = callee.canonical.get_usr()
+                if not usr:
+                    continue
+                calls[usr] = calls.get(usr, 0) + 1
+                place = _place(node)
+                # a virtual method called unqualified may run an override instead
+                virtual = callee.kind == CursorKind.CXX_METHOD and (
+                    callee.is_virtual_method()) and not _qualified(node)
+                by_caller.setdefault(_place(function), (function, {}))[1][place] = (
+                    usr + (VIRTUAL if virtual else ""))
+    for function, wanted in by_caller.values():
+        caller = function.canonical.get_usr() if eligible(function) else ""
+        for place, (usr, under) in _conditions(function, wanted, reader, enter).items():
+            text = conditions_text(under) if under is not None else ""
+            called, virtual = usr.removesuffix(VIRTUAL), usr.endswith(VIRTUAL)
+            facts.append((called, SITE_UNDER, text,
+                          f"{place[0]}:{place[1]}\n{caller}\n{'v' if virtual else ''}"))
+    # a function used otherwise than by the calls seen (``&C::callback``) may run anywhere
+    facts.extend((usr, REFERENCED, "", "") for usr, count in refs.items()
+                 if count > calls.get(usr, 0))
+    for function in functions:
+        if function.kind != CursorKind.CXX_METHOD or not function.is_virtual_method() or (
+            not eligible(function)
+        ):
+            continue
+        usr = function.canonical.get_usr()
+        bases = _overridden(function, owned)
+        if usr:
+            facts.append((usr, BASES, "\n".join(bases), "") if bases is not None
+                         else (usr, REFERENCED, "", ""))
+    return list(dict.fromkeys(facts))
+
+
+def hidden_facts(root: Cursor, owned: Callable[[str], bool],
+                 errors: list[tuple[set[str], tuple[str, int] | None]]) -> list[Fact]:
+    """``HIDDEN`` facts: the eligible functions of the workspace's files this unit
+    declares whose names are among the words of the code where the parse left an error
+    that can hide a statement (``errors``: each error's words, with its place when it
+    is outside the functions, the words of its line; a function declared on that line
+    is no call there: ``void MotionCtrl::init()`` with ``MotionCtrl`` unknown)."""
+    declared: list[tuple[str, str, tuple[str, int]]] = []
+    stack = [root]
+    while stack:
+        parent = stack.pop()
+        for cursor in children_in(parent, owned):
+            if cursor.kind in _CONTAINERS:
+                stack.append(cursor)
+            elif cursor.kind in _KINDS:
+                where = cursor.location
+                place = (os.path.abspath(where.file.name) if where.file else "", where.line)
+                usr = cursor.canonical.get_usr() if eligible(cursor) else ""
+                declared.append((cursor.spelling, usr, place))
+    at: dict[tuple[str, int], set[str]] = {}
+    for name, _usr, place in declared:
+        at.setdefault(place, set()).add(name)
+    words: set[str] = set()
+    for found, spot in errors:
+        words |= found - at.get(spot, set()) if spot is not None else found
+    return list(dict.fromkeys((usr, HIDDEN, "", "") for name, usr, _ in declared
+                              if usr and name in words))
+
+
+def _qualified(call: Cursor) -> bool:
+    """Whether the call names its method with a class (``Base::init(...)``): no
+    virtual dispatch then."""
+    for child in call.get_children():
+        if child.kind == CursorKind.UNEXPOSED_EXPR:
+            child = next(iter(child.get_children()), child)
+        if child.kind in _REFERENCES:
+            return any(c.kind in (CursorKind.TYPE_REF, CursorKind.NAMESPACE_REF,
+                                  CursorKind.TEMPLATE_REF) for c in child.get_children())
+        break
+    return False
+
+
+def _place(cursor: Cursor) -> tuple[str, int]:
+    where = cursor.location
+    return (where.file.name if where.file else "", where.offset)
+
+
+def _conditions(function: Cursor, wanted: dict[tuple[str, int], str],
+                reader: ConditionReader, enter: Callable[[Cursor], None]
+                ) -> dict[tuple[str, int], tuple[str, tuple[Condition, ...] | None]]:
+    """The callee's USR and the source conditions of each wanted call in ``function``
+    (None: not met in the walk, so unknown)."""
+    enter(function)
+    found: dict[tuple[str, int], tuple[str, tuple[Condition, ...] | None]] = {
+        place: (usr, None) for place, usr in wanted.items()}
+    stack: list[tuple[Cursor, tuple[Condition, ...]]] = [
+        (child, ()) for child in reversed(list(function.get_children()))
+        if child.kind != CursorKind.PARM_DECL]
+    while stack:
+        node, conditions = stack.pop()
+        if node.kind == CursorKind.CALL_EXPR:
+            place = _place(node)
+            if place in wanted and found[place][1] is None:
+                found[place] = (wanted[place], tuple(
+                    c for c in conditions
+                    if c.kind == "source" and c.statement not in _NOT_CARRIED))
+        stack.extend((child, conditions + extra)
+                     for child, extra in reversed(reader.branches(node)))
+    return found
+
+
+def _overridden(method: Cursor, owned: Callable[[str], bool],
+                depth: int = 0) -> list[str] | None:
+    """The USRs of the virtual methods of ``method``'s base classes (transitively) that
+    it overrides (same name and parameter types); None when a base class cannot be
+    read or is not of the workspace's files (its own code, or a host's, may call
+    the method)."""
+    parent = method.semantic_parent
+    if parent is None or depth > MAX_DEPTH:
+        return None
+    types = [p.type.get_canonical().spelling for p in method.get_children()
+             if p.kind == CursorKind.PARM_DECL]
+    found: list[str] = []
+    for base in parent.get_children():
+        if base.kind != CursorKind.CXX_BASE_SPECIFIER:
+            continue
+        decl = base.type.get_canonical().get_declaration()
+        decl = decl.get_definition() or decl
+        if decl.kind == CursorKind.NO_DECL_FOUND:
+            return None
+        for other in decl.get_children():
+            if other.kind == CursorKind.CXX_METHOD and other.spelling == method.spelling and (
+                other.is_virtual_method()
+            ) and [p.type.get_canonical().spelling for p in other.get_children()
+                   if p.kind == CursorKind.PARM_DECL] == types:
+                where = other.location.file
+                if where is None or not owned(where.name):
+                    return None
+                found.append(other.canonical.get_usr())
+                deeper = _overridden(other, owned, depth + 1)
+                if deeper is None:
+                    return None
+                found.extend(deeper)
+                break
+        else:
+            # a base we read, without the method: its own bases may have it
+            deeper = _overridden_in(decl, method.spelling, types, owned, depth + 1)
+            if deeper is None:
+                return None
+            found.extend(deeper)
+    return found
+
+
+def _overridden_in(cls: Cursor, name: str, types: list[str], owned: Callable[[str], bool],
+                   depth: int) -> list[str] | None:
+    """The overridden methods (``_overridden``) found in the bases of ``cls``."""
+    if depth > MAX_DEPTH:
+        return None
+    found: list[str] = []
+    for base in cls.get_children():
+        if base.kind != CursorKind.CXX_BASE_SPECIFIER:
+            continue
+        decl = base.type.get_canonical().get_declaration()
+        decl = decl.get_definition() or decl
+        if decl.kind == CursorKind.NO_DECL_FOUND:
+            return None
+        hit = False
+        for other in decl.get_children():
+            if other.kind == CursorKind.CXX_METHOD and other.spelling == name and (
+                other.is_virtual_method()
+            ) and [p.type.get_canonical().spelling for p in other.get_children()
+                   if p.kind == CursorKind.PARM_DECL] == types:
+                where = other.location.file
+                if where is None or not owned(where.name):
+                    return None
+                found.append(other.canonical.get_usr())
+                deeper = _overridden(other, owned, depth + 1)
+                if deeper is None:
+                    return None
+                found.extend(deeper)
+                hit = True
+                break
+        if not hit:
+            deeper = _overridden_in(decl, name, types, owned, depth + 1)
+            if deeper is None:
+                return None
+            found.extend(deeper)
+    return found
+
+
+def shared(facts: Iterable[Fact], unseen: Collection[str]) -> dict[str, tuple[Condition, ...]]:
+    """Function USR -> the source conditions every call of it in the node's files is
+    made under, with those its calling function is called under in turn (a base
+    method's calls count too, as they may run an override). None for a function with
+    no call seen, used otherwise, one a unit declares and names where the parse left an
+    error (``HIDDEN``: a call of it may be hidden; any, ``*`` in ``unseen``, when a
+    unit was not read), or with one site unconditional."""
+    sites: dict[str, dict[str, tuple[tuple[Condition, ...] | None, str, bool]]] = {}
+    referenced: set[str] = set()
+    bases: dict[str, list[str]] = {}
+    hidden: set[str] = set()
+    for usr, index, value, site in facts:
+        if index == HIDDEN:
+            hidden.add(usr)
+        elif index == SITE_UNDER:
+            place, _, rest = site.partition("\n")
+            caller, _, virtual = rest.partition("\n")
+            try:
+                under = conditions_of_text(value) if value else None
+            except (ValueError, TypeError, KeyError, json.JSONDecodeError):
+                under = None
+            sites.setdefault(usr, {})[place] = (under, caller, virtual == "v")
+        elif index == REFERENCED:
+            referenced.add(usr)
+        elif index == BASES:
+            bases[usr] = [b for b in value.split("\n") if b]
+    memo: dict[str, tuple[Condition, ...]] = {}
+
+    def of(usr: str, active: frozenset[str]) -> tuple[Condition, ...]:
+        if usr in memo:
+            return memo[usr]
+        every = [usr, *bases.get(usr, [])]
+        if "*" in unseen or len(active) > MAX_DEPTH or (
+            any(u in referenced or u in hidden for u in every)
+        ):
+            return ()
+        # its own calls, and those of the methods it overrides that may dispatch to it
+        found_sites = [(under, caller) for u in every
+                       for under, caller, virtual in sites.get(u, {}).values()
+                       if u == usr or virtual]
+        if not found_sites:
+            return ()
+        result: tuple[Condition, ...] | None = None
+        for under, caller in found_sites:
+            if under is None:
+                result = ()
+                break
+            outer = of(caller, active | {usr}) if caller and caller not in active else ()
+            held = (*outer, *(c for c in under if c not in outer))
+            result = held if result is None else tuple(c for c in result if c in held)
+            if not result:
+                break
+        memo[usr] = result or ()
+        return memo[usr]
+
+    out: dict[str, tuple[Condition, ...]] = {}
+    for usr in list(sites) + list(bases):
+        found = of(usr, frozenset())
+        if found:
+            out[usr] = found
+    return out
