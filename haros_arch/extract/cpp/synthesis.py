@@ -185,6 +185,10 @@ _CONSTANT = re.compile(r"[A-Z][A-Z0-9]*(?:_[A-Z0-9]+)+|[A-Z]{2,}[0-9]*")
 # (``SDL_INIT_JOYSTICK``) or a function under a capitalised prefix (``SDL_GetError``,
 # ``PhidgetNet_addServer``); members are rarely written so
 _C_VENDOR = re.compile(r"[A-Z][A-Za-z0-9]*(?:_[A-Za-z0-9]+)+")
+# a name in capitals ending with an underscore, called: a function-like macro of a
+# missing header (MRPT's ``ASSERT_(x)``, ``ASSERTMSG_(c, m)``, ``ASSERT_GT_(a, b)``);
+# no member is written so
+_CAPS_MACRO = re.compile(r"[A-Z][A-Z0-9]*(?:_[A-Z0-9]+)*_")
 # a namespace, class, struct or enum the code defines (the first name of ``a::b``)
 _DEFINED = re.compile(rb"\b(?:namespace|class|struct|enum)\s+(?:class\s+|struct\s+)?([A-Za-z_]\w*)")
 _USING = re.compile(rb"\busing\s+namespace\s+(?:::)?([A-Za-z_][\w:]*)\s*;")
@@ -552,10 +556,11 @@ class Names:
         if use == "any" and not scope and len(written) == 1 and (
             last == "value" or rest.lstrip()[:1] == b"("
         ):
+            called = rest.lstrip()[:1] == b"("
             if not _C_VENDOR.fullmatch(written[-1]) and not (
-                rest.lstrip()[:1] == b"(" and "_" in written[-1]
+                called and "_" in written[-1]
                 and written[-1].split("_")[0] in self.libraries
-            ):
+            ) and not (called and _CAPS_MACRO.fullmatch(written[-1])):
                 return  # an unqualified function or variable: in a class, often a member
                 # clang could not find (an invalid base); declaring it would shadow it
             # but a C library's constant or prefixed function, whose header is missing
