@@ -233,6 +233,17 @@ struct haros_any {
   haros_any operator-() const; haros_any operator+() const; haros_any operator~() const;
 %s  operator haros_integral() const;
 %s};
+// a range-for over a permissive object (found by argument-dependent lookup, unless the
+// code reads members begin / end of one, which then serve), and a structured binding of
+// its elements as a pair's (mrpt_map_server's ``for (auto& [name, layer] : map.layers)``)
+haros_any *begin(const haros_any &); haros_any *end(const haros_any &);
+namespace std {
+template <class T> struct tuple_size;
+template <decltype(sizeof 0) I, class T> struct tuple_element;
+template <> struct tuple_size<haros_any> { static constexpr decltype(sizeof 0) value = 2; };
+template <decltype(sizeof 0) I> struct tuple_element<I, haros_any> { typedef haros_any type; };
+}
+template <decltype(sizeof 0) I> haros_any &get(const haros_any &);
 %s"""
 
 
