@@ -91,6 +91,13 @@ CATALOGUE: dict[str, Entry] = {
         "the package, one of which defines main(): that executable is taken as built, "
         "linking the package's libraries its code names, so launch files that run it "
         "find it."),
+    "CMAKE_SUPERBUILD": Entry(
+        "info", "ExternalProject_Add({name}) configures the package's own folder again "
+        "with {values}; its targets are read from that configuration",
+        "A superbuild: the package's CMakeLists.txt, as configured first, builds "
+        "dependencies and then itself as an external project with other cache entries "
+        "(USE_SUPERBUILD=OFF). The executables and libraries the package installs are "
+        "those of the second configuration, which is read in place of the first."),
     "CMAKE_EXTERNAL_PROJECT": Entry(
         "warning", "ExternalProject_Add({name}) builds {folder} as a project of its own, "
         "whose executables are not read; the nodes it builds are unknown",

@@ -417,3 +417,63 @@ def test_an_included_file_named_without_a_folder(write_tree):
         handle.write("set(NODE_SOURCE src/a.cpp)\n")
     nodes, _ = parse_package(pkg, ws)
     assert [(n.executable, n.sources) for n in nodes] == [("pkg_node", ["pkg/src/a.cpp"])]
+
+
+def test_a_superbuild_of_the_package_itself_reads_its_second_configuration(write_tree):
+    """panther_ros' panther_diagnostics: an option chooses a superbuild, which builds a
+    dependency and then the package's own folder as an external project with
+    -DUSE_SUPERBUILD=OFF, and returns; the first reading stopped there and the package
+    had no executable (its launch file's node 'not in the workspace'). The targets are
+    those of the configuration the external project gives; a cache entry it does not
+    give keeps its option's default, and an external project of the package's folder
+    with no cache entry is read no second time."""
+    root = write_tree({
+        "src/diag/package.xml": package_xml("diag", "ament_cmake"),
+        "src/diag/CMakeLists.txt": """\
+            cmake_minimum_required(VERSION 3.8)
+            option(USE_SUPERBUILD "superbuild" ON)
+            option(WITH_EXTRA "extra" OFF)
+            if(USE_SUPERBUILD)
+              project(SUPERBUILD NONE)
+              include(cmake/SuperBuild.cmake)
+              return()
+            else()
+              project(diag)
+            endif()
+            add_executable(monitor src/main.cpp)
+            if(WITH_EXTRA)
+              add_executable(extra src/main.cpp)
+            endif()
+            install(TARGETS monitor DESTINATION lib/${PROJECT_NAME})
+            """,
+        "src/diag/cmake/SuperBuild.cmake": """\
+            include(ExternalProject)
+            ExternalProject_Add(ep_dep GIT_REPOSITORY https://example.org/dep.git)
+            ExternalProject_Add(ep_diag
+              DEPENDS ep_dep
+              SOURCE_DIR ${PROJECT_SOURCE_DIR}
+              CMAKE_ARGS -DUSE_SUPERBUILD:BOOL=OFF
+              INSTALL_COMMAND "")
+            """,
+        "src/diag/src/main.cpp": "int main() { return 0; }\n",
+        "src/plain/package.xml": package_xml("plain", "ament_cmake"),
+        "src/plain/CMakeLists.txt": """\
+            project(plain)
+            include(ExternalProject)
+            ExternalProject_Add(again SOURCE_DIR ${PROJECT_SOURCE_DIR})
+            return()
+            add_executable(never main.cpp)
+            """,
+        "src/plain/main.cpp": "int main() { return 0; }\n",
+    })
+    ws = scan([str(root / "src")], {})
+    nodes, found = parse_package(ws.packages["diag"], ws)
+    assert [(n.executable, n.kind) for n in nodes] == [("monitor", "executable")]
+    said = [d for d in found if d.code == "CMAKE_SUPERBUILD"]
+    assert [(d.severity, d.location.file, d.location.line, d.message) for d in said] == [
+        ("info", "diag/cmake/SuperBuild.cmake", 3,
+         "ExternalProject_Add(ep_diag) configures the package's own folder again with "
+         "-DUSE_SUPERBUILD=OFF; its targets are read from that configuration")]
+    nodes, found = parse_package(ws.packages["plain"], ws)
+    assert nodes == []
+    assert [d.code for d in found if d.code.startswith("CMAKE_")] == ["CMAKE_EXTERNAL_PROJECT"]

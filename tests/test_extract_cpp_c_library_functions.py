@@ -77,3 +77,53 @@ def test_library_prefixes_and_what_they_declare() -> None:
                  ("use of undeclared identifier 'read_frame'", text, text.index(b"read_frame"))])
     assert "ogg_stream_init" in names.root.children
     assert "read_frame" not in names.root.children
+
+
+def test_a_macro_in_capitals_ending_with_an_underscore_is_declared(write_tree) -> None:
+    """mrpt_navigation's nodes check with MRPT's ``ASSERT_(x)`` / ``ASSERTMSG_(c, m)`` /
+    ``ASSERT_GT_(a, b)`` from <mrpt/core/exceptions.h>: with the header missing, each
+    was an undeclared name in the constructor that makes the node's calls, and the node
+    partial. A called name in capitals ending with ``_`` is a function-like macro of a
+    missing header: declared permissively, the node complete."""
+    files = {
+        "pf/package.xml": package_xml("pf", "ament_cmake").replace(
+            "<export>", "<depend>rclcpp</depend><depend>std_msgs</depend><export>"),
+        "pf/CMakeLists.txt": """
+            cmake_minimum_required(VERSION 3.8)
+            project(pf)
+            find_package(rclcpp REQUIRED)
+            add_executable(pf_node src/pf.cpp)
+            """,
+        "pf/src/pf.cpp": """
+            #include <rclcpp/rclcpp.hpp>
+            #include <mrpt/core/exceptions.h>
+            #include <std_msgs/msg/string.hpp>
+            class Pf : public rclcpp::Node {
+            public:
+              Pf() : rclcpp::Node("pf") {
+                period_ = declare_parameter<double>("period", 0.1);
+                ASSERT_(period_ > 0);
+                ASSERTMSG_(period_ < 10, "too slow");
+                ASSERT_GT_(period_, 0.0);
+                pub_ = create_publisher<std_msgs::msg::String>("status", 10);
+              }
+            private:
+              double period_;
+              rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+            };
+            int main(int argc, char ** argv) {
+              rclcpp::init(argc, argv);
+              rclcpp::spin(std::make_shared<Pf>());
+            }
+            """,
+    }
+    ws = scan([str(write_tree(files))])
+    pkg = ws.packages["pf"]
+    pkg.nodes, _ = cmake.parse_package(pkg, ws)
+    found = extract_nodes(pkg.nodes, ws, cache_dir=None, jobs=1)
+    node = pkg.nodes[0]
+    assert [(c.kind, c.name) for c in node.calls] == [
+        ("declare", "period"), ("publish", "status")]
+    codes = [d.code for d in found]
+    assert "CPP_ERROR_NEAR_CALL" not in codes and "CPP_NODE_PARTIAL" not in codes
+    assert node.completeness == "complete"

@@ -733,7 +733,7 @@ def test_constants_are_enumerators_of_their_own_values() -> None:
                      r"    enum : int \{ SLOW = \d+ \};\n    extern haros_any STOP;", tree)
     # a subscript, arguments, and a member not in capitals (``::value``): no constants
     assert "extern haros_any GAIN;" in tree and "extern haros_any INDEX;" in tree
-    assert "static haros_any value;" in header and "value = " not in header
+    assert "static haros_any value;" in header and "{ value = " not in header
     assert "extern haros_any VND_C;" in header  # called: a macro, no constant
 
 

@@ -146,3 +146,41 @@ def test_a_condition_over_a_parameter_the_server_reads_stays_decided(write_tree)
     (root / "tracker" / "src" / "tracker.cpp").write_text(source)
     report = _check(root)
     assert not [f for f in report["findings"] if "filtered" in f["message"]]
+
+
+def test_a_config_named_in_lowercase_is_synthesised(write_tree) -> None:
+    """yocs_cmd_vel_mux's reload.cfg ends with gen.generate(PACKAGE, node, "reload"), so
+    dynamic_reconfigure writes <yocs_cmd_vel_mux/reloadConfig.h>; only a header named with
+    a capital was taken for a config (or a message), so this one was an empty stand-in,
+    the server's parameters were unread and `config.yaml_cfg_data` an error in the
+    callback that makes the node's subscriptions."""
+    cfg = ("PACKAGE = 'mux'\nfrom dynamic_reconfigure.parameter_generator_catkin import *\n"
+           "gen = ParameterGenerator()\n"
+           "gen.add('yaml_cfg_file', str_t, 0, 'path', '')\n"
+           "exit(gen.generate(PACKAGE, 'mux_reload', 'reload'))\n")
+    source = ('#include <ros/ros.h>\n#include <dynamic_reconfigure/server.h>\n'
+              '#include <mux/reloadConfig.h>\n'
+              'void cb(mux::reloadConfig &config, uint32_t) {\n'
+              '  ros::NodeHandle nh;\n'
+              '  if (config.yaml_cfg_file.size() > 0) nh.subscribe("input", 1, &cb2);\n}\n'
+              'int main(int argc, char **argv) {\n  ros::init(argc, argv, "mux");\n'
+              '  ros::NodeHandle pnh("~");\n'
+              '  dynamic_reconfigure::Server<mux::reloadConfig> server(pnh);\n  return 0;\n}\n')
+    source = source.replace('nh.subscribe("input", 1, &cb2)',
+                            'nh.advertise<std_msgs::String>("output", 1)').replace(
+        "#include <ros/ros.h>\n", "#include <ros/ros.h>\n#include <std_msgs/String.h>\n")
+    root = write_tree({
+        "mux/package.xml": package_xml("mux", "catkin"),
+        "mux/CMakeLists.txt": (
+            "cmake_minimum_required(VERSION 3.0.2)\nproject(mux)\n"
+            "find_package(catkin REQUIRED COMPONENTS roscpp dynamic_reconfigure)\n"
+            "generate_dynamic_reconfigure_options(cfg/reload.cfg)\n"
+            "catkin_package()\nadd_executable(mux_node src/mux.cpp)\n"),
+        "mux/src/mux.cpp": source,
+        "mux/cfg/reload.cfg": cfg})
+    result = extract_cpp([str(root / "mux" / "src" / "mux.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    calls = [(c.kind, c.name) for c in result.calls]
+    assert ("read", "~yaml_cfg_file") in calls and ("publish", "output") in calls
+    codes = [d.code for d in result.diagnostics]
+    assert "CPP_INCLUDE_MISSING" not in codes and "CPP_PARSE_ERROR" not in codes

@@ -105,7 +105,19 @@ def _run(package: Package, workspace: Workspace,
     path = os.path.join(package.root, "CMakeLists.txt")
     if os.path.isfile(path):
         interpreter.run_file(reader(path))
-    return interpreter, found + interpreter.diagnostics
+    if interpreter.superbuild is None:
+        return interpreter, found + interpreter.diagnostics
+    # a superbuild configures the package's own folder again with the cache entries it
+    # gives: the targets built are that configuration's (read once more, not again after)
+    where, name, values = interpreter.superbuild
+    first = found + interpreter.diagnostics
+    found = []
+    again = Interpreter(package.root, workspace.environment, reader, files.location)
+    again.cache.update(values)
+    again.run_file(reader(path))
+    said = diag.make("CMAKE_SUPERBUILD", where, name=name,
+                     values=" ".join(f"-D{k}={v}" for k, v in values.items()))
+    return again, list(dict.fromkeys([*first, said, *found, *again.diagnostics]))
 
 
 def targets_of(package: Package, workspace: Workspace) -> tuple[list[Target], list[Diagnostic]]:

@@ -314,6 +314,15 @@ def _external_project(it: Interpreter, command: Invocation, args: list[str]) -> 
     if "SOURCE_DIR" not in args[1:-1]:
         return
     folder = it.path(args[args.index("SOURCE_DIR", 1) + 1])
+    if os.path.realpath(folder) == it.package_root:
+        # a superbuild: the package builds its own folder once more with other cache
+        # values (panther_ros' ``ExternalProject_Add(ep SOURCE_DIR ${PROJECT_SOURCE_DIR}
+        # CMAKE_ARGS -DUSE_SUPERBUILD=OFF)`` after it builds a dependency): that second
+        # configuration's targets are the package's, read by a second run
+        values = _cache_arguments(args)
+        if values and it.superbuild is None:
+            it.superbuild = (it.where(command), args[0], values)
+            return
     listing = os.path.join(folder, "CMakeLists.txt")
     if not it.inside_package(folder) or not os.path.isfile(listing):
         return
@@ -326,6 +335,29 @@ def _external_project(it: Interpreter, command: Invocation, args: list[str]) -> 
         it.diagnostics.append(diag.make(
             "CMAKE_EXTERNAL_PROJECT", it.where(command), name=args[0],
             folder=os.path.relpath(folder, it.package_root)))
+
+
+_CACHE_KEYWORDS = ("CMAKE_ARGS", "CMAKE_CACHE_ARGS", "CMAKE_CACHE_DEFAULT_ARGS")
+_CACHE_DEFINITION = re.compile(r"-D([A-Za-z_][A-Za-z0-9_.+-]*)(?::[A-Za-z]+)?=(.*)", re.DOTALL)
+
+
+def _cache_arguments(args: list[str]) -> dict[str, str]:
+    """The ``-DNAME[:TYPE]=VALUE`` cache entries an external project's configuration is
+    given (its ``CMAKE_ARGS`` / ``CMAKE_CACHE_ARGS`` options, each a run of arguments
+    starting with ``-``)."""
+    values: dict[str, str] = {}
+    index = 1
+    while index < len(args):
+        if args[index] in _CACHE_KEYWORDS:
+            index += 1
+            while index < len(args) and args[index].startswith("-"):
+                match = _CACHE_DEFINITION.fullmatch(args[index])
+                if match:
+                    values[match.group(1)] = match.group(2)
+                index += 1
+        else:
+            index += 1
+    return values
 
 
 # -- targets --------------------------------------------------------------------

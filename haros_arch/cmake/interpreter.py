@@ -99,6 +99,9 @@ class Interpreter:
         self.definitions: dict[str, Definition] = {}
         self.conditions: list[Condition] = []  # enclosing if / while not decided
         self.returns: list[Condition] = []  # return() under a condition not decided
+        # ExternalProject_Add of the package's own folder with cache entries (a
+        # superbuild): where, the external project's name, the entries
+        self.superbuild: tuple[Location, str, dict[str, str]] | None = None
         self.diagnostics: list[Diagnostic] = []
         self.steps = 0
         self.expanded = 0  # characters of arguments expanded, against MAX_EXPANDED

@@ -457,6 +457,10 @@ _INTERFACE_METHODS = ("declare_parameter", "undeclare_parameter", "has_parameter
 RCLCPP: dict[tuple[str, str], RosFunction] = {
     **{(cls, name): row for cls in RCLCPP_NODES for name, row in _RCLCPP_NODE.items()},
     **{(RCLCPP_PARAMETERS_INTERFACE, name): _RCLCPP_NODE[name] for name in _INTERFACE_METHODS},
+    # every parameter the node is given (launch values and overrides), read whole:
+    # mrpt_pf_localization turns them all into its YAML configuration
+    (RCLCPP_PARAMETERS_INTERFACE, "get_parameter_overrides"): RosFunction(
+        "read", fixed_name="~", on_handle=False),
     # the options a node is built with set its parameters before any launch value is
     # taken (topic_tools' relay: ``append_parameter_override("input_topic", args.at(1))``
     # in its main, from the command line): a write of the parameter

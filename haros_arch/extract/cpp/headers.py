@@ -132,6 +132,9 @@ _ROS2_HEADER = re.compile(r"([A-Za-z_]\w*)/(msg|srv|action)/([a-z0-9_]+)\.hpp")
 
 _INCLUDE = re.compile(r'^[ \t]*#[ \t]*include[ \t]*([<"])([^>"\n]+)[>"]', re.MULTILINE)
 _MESSAGE_HEADER = re.compile(r"([A-Za-z_]\w*)/([A-Z]\w*)\.h")
+# dynamic_reconfigure's generated header: ``<name>Config.h``, the name as the .cfg's
+# ``gen.generate(PACKAGE, node, name)`` writes it, lowercase too
+_CONFIG_HEADER = re.compile(r"([A-Za-z_]\w*)/([A-Za-z_]\w*Config)\.h")
 # a header that is a message when the package defines one by that name (tf's tfMessage)
 _DEFINED_HEADER = re.compile(r"([A-Za-z_]\w*)/([A-Za-z]\w*)\.h")
 _NOT_FOUND = re.compile(r"^'([^']+)' file not found")
@@ -518,6 +521,11 @@ class IncludeSetup:
             header, message.group(1), message.group(2), where
         ):
             return None
+        config = _CONFIG_HEADER.fullmatch(header)
+        if message is None and config is not None and self._reconfigure(
+            header, config.group(1), config.group(2), where
+        ):
+            return None  # a config named in lowercase: yocs_cmd_vel_mux's reloadConfig.h
         found = self._resolve(header)
         if found is None and _fallback_file(header) is not None:
             self._fallback(header)

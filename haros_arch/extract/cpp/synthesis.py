@@ -185,6 +185,10 @@ _CONSTANT = re.compile(r"[A-Z][A-Z0-9]*(?:_[A-Z0-9]+)+|[A-Z]{2,}[0-9]*")
 # (``SDL_INIT_JOYSTICK``) or a function under a capitalised prefix (``SDL_GetError``,
 # ``PhidgetNet_addServer``); members are rarely written so
 _C_VENDOR = re.compile(r"[A-Z][A-Za-z0-9]*(?:_[A-Za-z0-9]+)+")
+# a name in capitals ending with an underscore, called: a function-like macro of a
+# missing header (MRPT's ``ASSERT_(x)``, ``ASSERTMSG_(c, m)``, ``ASSERT_GT_(a, b)``);
+# no member is written so
+_CAPS_MACRO = re.compile(r"[A-Z][A-Z0-9]*(?:_[A-Z0-9]+)*_")
 # a namespace, class, struct or enum the code defines (the first name of ``a::b``)
 _DEFINED = re.compile(rb"\b(?:namespace|class|struct|enum)\s+(?:class\s+|struct\s+)?([A-Za-z_]\w*)")
 _USING = re.compile(rb"\busing\s+namespace\s+(?:::)?([A-Za-z_][\w:]*)\s*;")
@@ -229,6 +233,17 @@ struct haros_any {
   haros_any operator-() const; haros_any operator+() const; haros_any operator~() const;
 %s  operator haros_integral() const;
 %s};
+// a range-for over a permissive object (found by argument-dependent lookup, unless the
+// code reads members begin / end of one, which then serve), and a structured binding of
+// its elements as a pair's (mrpt_map_server's ``for (auto& [name, layer] : map.layers)``)
+haros_any *begin(const haros_any &); haros_any *end(const haros_any &);
+namespace std {
+template <class T> struct tuple_size;
+template <decltype(sizeof 0) I, class T> struct tuple_element;
+template <> struct tuple_size<haros_any> { static constexpr decltype(sizeof 0) value = 2; };
+template <decltype(sizeof 0) I> struct tuple_element<I, haros_any> { typedef haros_any type; };
+}
+template <decltype(sizeof 0) I> haros_any &get(const haros_any &);
 %s"""
 
 
@@ -552,10 +567,11 @@ class Names:
         if use == "any" and not scope and len(written) == 1 and (
             last == "value" or rest.lstrip()[:1] == b"("
         ):
+            called = rest.lstrip()[:1] == b"("
             if not _C_VENDOR.fullmatch(written[-1]) and not (
-                rest.lstrip()[:1] == b"(" and "_" in written[-1]
+                called and "_" in written[-1]
                 and written[-1].split("_")[0] in self.libraries
-            ):
+            ) and not (called and _CAPS_MACRO.fullmatch(written[-1])):
                 return  # an unqualified function or variable: in a class, often a member
                 # clang could not find (an invalid base); declaring it would shadow it
             # but a C library's constant or prefixed function, whose header is missing

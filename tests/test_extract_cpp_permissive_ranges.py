@@ -1,0 +1,47 @@
+"""A range-for over an object of a library the parse does not have (mrpt_map_server's
+``for (const auto& [layerName, layerMap] : theMap_.layers)``, map_server_node.cpp:171)
+was an error, "invalid range expression of type 'haros_any'", and the publishers made
+in the loop's body were lost (5 create_publisher calls, CPP_CALL_MISSED). A permissive
+object is now a range, by argument-dependent begin / end, and its elements bind as a
+pair's do."""
+
+from __future__ import annotations
+
+from haros_arch.extract.cpp import extract_cpp
+from haros_arch.workspace import scan
+from tests.conftest import package_xml
+
+NODE = """
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+#include <vendor/maps.h>
+class Server : public rclcpp::Node
+{
+public:
+  Server() : rclcpp::Node("server")
+  {
+    for (const auto & [name, layer] : map_.layers) {
+      pubs_[name] = create_publisher<std_msgs::msg::String>("layer/" + name, 1);
+    }
+    for (const auto & item : map_.items) {
+      (void)item;
+      other_ = create_publisher<std_msgs::msg::String>("items", 1);
+    }
+  }
+  vendor::Map map_;
+  std::map<std::string, rclcpp::Publisher<std_msgs::msg::String>::SharedPtr> pubs_;
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr other_;
+};
+"""
+
+
+def test_a_range_for_over_an_unknown_library_s_object_keeps_its_calls(write_tree) -> None:
+    root = write_tree({"srv/package.xml": package_xml("srv", "ament_cmake"),
+                       "srv/src/server.cpp": NODE})
+    result = extract_cpp([str(root / "srv" / "src" / "server.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    # the layer's name is the library's value: the whole name is not known
+    assert sorted((c.kind, c.name) for c in result.calls) == [
+        ("publish", "?"), ("publish", "items")]
+    codes = [d.code for d in result.diagnostics]
+    assert "CPP_CALL_MISSED" not in codes and "CPP_ERROR_NEAR_CALL" not in codes
