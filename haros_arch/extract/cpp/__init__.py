@@ -307,9 +307,7 @@ def _built_under(facts: list[links.Fact], unseen: set[str]) -> dict[str, tuple[C
     unconditional, or whose class the errors the parse left may construct unseen."""
     sites: dict[str, dict[str, tuple[Condition, ...] | None]] = {}
     for usr, index, value, site in facts:
-        if index in (links.OVERRIDES, links.HOST_NAMED, links.CALLED_VIRTUAL) or (
-            index in call_conditions.INDICES
-        ):
+        if index in links.NOT_CALLS or index in call_conditions.INDICES:
             continue
         at = sites.setdefault(usr, {})
         if index != links.CONDITIONS:

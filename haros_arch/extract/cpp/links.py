@@ -59,6 +59,19 @@ HOST_NAMED = -4
 # the index of a fact that says the unit's code calls the function, a virtual method
 # taking one string (``CallSites.virtual_callees``), wherever it is defined
 CALLED_VIRTUAL = -5
+# the index of a fact that says the function (a virtual method) overrides the one whose
+# USR is its value, for a string parameter (the fact's site its index): a call of that one
+# passes it the strings it writes as literals alone (``LITERAL``), which no later code can
+# change, and ``?`` for any other (a member's may change before the call: ``OVERRIDES``):
+# rviz_common's ``VisualizerApp::init`` calls ``RosClientAbstractionIface::init(argc,
+# argv, "rviz", false)``, which runs ``RosClientAbstraction::init``, whose ``name`` names
+# the node
+STRING_OVERRIDES = -10
+# the index of a fact that says the call site passes, at the parameter whose index is
+# the fact's value, a string written in literals alone (no variable, member or parameter)
+LITERAL = -11
+# facts that say no call of their function
+NOT_CALLS = frozenset({OVERRIDES, HOST_NAMED, CALLED_VIRTUAL, STRING_OVERRIDES, LITERAL})
 _SPECIALISED = frozenset({CursorKind.FUNCTION_DECL, CursorKind.CONSTRUCTOR,
                           CursorKind.CXX_METHOD})
 MAX_VALUES = 32  # realsense2_camera's setParam is called with ~30 names in its files
@@ -99,6 +112,8 @@ def argument_facts(sites: CallSites, namespaces: Namespaces,
                 value = _value(arg, scope, namespaces, named) if arg is not None else None
                 if value is not None:
                     facts.append((usr, index, value, site))
+                    if _literal(arg, value):
+                        facts.append((usr, LITERAL, str(index), site))
             if len(facts) == given:  # called, with nothing read: called all the same
                 facts.append((usr, CALLED, "", site))
             if conditioned is not None and callee.kind == CursorKind.CONSTRUCTOR:
@@ -120,11 +135,26 @@ def argument_facts(sites: CallSites, namespaces: Namespaces,
                      for index, parm in enumerate(params) if is_handle(parm))
         strings = [index for index, parm in enumerate(params)
                    if msg_types.param_type(parm.type) == "str"]
+        facts.extend((usr, STRING_OVERRIDES, base, str(index)) for base in bases if base
+                     for index in strings)
         if len(strings) == 1 and function.is_virtual_method():
             facts.append((usr, HOST_NAMED, "\n".join(b for b in bases if b),
                           str(strings[0])))
     facts.extend((usr, CALLED_VIRTUAL, "", "") for usr in sorted(sites.virtual_callees()))
     return list(dict.fromkeys(facts))
+
+
+_VARIABLES = frozenset({CursorKind.VAR_DECL, CursorKind.FIELD_DECL, CursorKind.PARM_DECL})
+
+
+def _literal(arg: Cursor, value: str) -> bool:
+    """Whether a string argument is written in literals alone: its value known whole and
+    no variable, member or parameter read in it (``"rviz"``, ``std::string("a") + "b"``)."""
+    if "?" in value or PLACEHOLDER in value or PARAMETER in value or is_handle(arg):
+        return False
+    return not any(node.kind in (CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR)
+                   and (node.referenced is None or node.referenced.kind in _VARIABLES)
+                   for node in arg.walk_preorder())
 
 
 def _value(arg: Cursor, scope: Scope, namespaces: Namespaces,
@@ -217,8 +247,7 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact],
     the words ``unseen`` of the code where the parse left errors (``*``: anywhere)."""
     facts = list(facts)
     passed = _passed(facts)
-    called = {fact[0] for fact in facts if fact[1] not in (OVERRIDES, HOST_NAMED,
-                                                           CALLED_VIRTUAL, *INDICES)}
+    called = {fact[0] for fact in facts if fact[1] not in NOT_CALLS | INDICES}
     calling = called | {fact[0] for fact in facts if fact[1] == CALLED_VIRTUAL}
     hosted = {(usr, int(site)): " ".join(dict.fromkeys(
                   qualified_class(base) for base in bases.split("\n") if base))
@@ -340,6 +369,14 @@ def _passed(facts: Iterable[Fact]) -> dict[str, dict[str, dict[int, str]]]:
             for site, values in passed[base].items():
                 if int(parameter) in values:
                     mine.setdefault(site, {})[int(parameter)] = values[int(parameter)]
+    literal = {(usr, site, value) for usr, index, value, site in facts if index == LITERAL}
+    for usr, index, base, parameter in facts:
+        if index == STRING_OVERRIDES and base in passed and parameter.isdigit():
+            mine = passed.setdefault(usr, {})
+            for site, values in list(passed[base].items()):
+                if int(parameter) in values:  # another value, a member's, is unknown
+                    mine.setdefault(site, {})[int(parameter)] = values[int(parameter)] if (
+                        base, site, parameter) in literal else "?"
     return passed
 
 
