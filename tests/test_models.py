@@ -329,6 +329,27 @@ def test_rviz2_is_partial_its_displays_are_plugins_of_its_configuration(write_tr
     assert "plugins its configuration file loads" in " ".join(rviz.node.completeness_reasons)
 
 
+def test_rviz2_launched_without_a_name_is_named_as_its_code_names_it(write_tree):
+    # rviz_common's VisualizerApp::init calls init(argc, argv, "rviz", false) on its
+    # RosClientAbstractionIface (visualizer_app.cpp:150 of ros2/rviz jazzy): the node is
+    # /rviz, not a name guessed from the executable (the model's rosname was '?')
+    root = write_tree({
+        "src/base/package.xml": _package_xml("base"),
+        "src/base/launch/view.launch.py": """
+            from launch import LaunchDescription
+            from launch_ros.actions import Node
+
+            def generate_launch_description():
+                return LaunchDescription([Node(package='rviz2', executable='rviz2')])
+            """,
+        "project.yaml": "project: p\nconfigurations:\n  c: [base/launch/view.launch.py]\n",
+    })
+    config = _configuration(root)
+    rviz = _instance(config, "/rviz")
+    assert rviz.node is not None and rviz.node.model.startswith("jazzy/rviz2 ")
+    assert "NODE_NAME_GUESSED" not in {d.code for d in config.diagnostics}
+
+
 def test_the_jazzy_spawner_is_in_controller_manager_s_model(write_tree):
     # ros2_control installs spawner from setup.cfg's entry points through
     # ament_python_install_package(... SCRIPTS_DESTINATION ...): the model had no node
