@@ -68,28 +68,49 @@ def eligible(function: Cursor) -> bool:
 
 
 def site_facts(functions: list[Cursor], sites: CallSites, reader: ConditionReader,
-               owned: Callable[[str], bool],
-               enter: Callable[[Cursor], None]) -> list[Fact]:
+               owned: Callable[[str], bool], enter: Callable[[Cursor], None],
+               walked: Callable[[Cursor], tuple[list[Cursor], list[Cursor]] | None]
+               = lambda function: None) -> list[Fact]:
     """The unit's facts (``SITE_UNDER``, ``REFERENCED``, ``BASES``) over the eligible
     functions of the workspace's files it calls or defines; ``enter`` readies
-    ``reader`` for a function's body."""
+    ``reader`` for a function's body; ``walked`` gives a function's calls (among other
+    nodes) and its references to declarations, each in preorder, when a walk of the
+    unit kept them (else its nodes are walked here)."""
+    # whether a declaration is an eligible function of the workspace's files, by the
+    # node (one per cursor of the unit, kept with its answer: many references and
+    # calls name the same declaration)
+    known: dict[int, tuple[Cursor, bool]] = {}
+
     def ours(cursor: Cursor | None) -> bool:
-        where = cursor.location.file if cursor is not None else None
-        return where is not None and owned(where.name) and eligible(cursor)
+        if cursor is None or cursor.kind not in _KINDS:  # no function ``eligible`` takes
+            return False
+        found = known.get(id(cursor))
+        if found is None:
+            where = cursor.location.file
+            found = known[id(cursor)] = (
+                cursor, where is not None and owned(where.name) and eligible(cursor))
+        return found[1]
 
     facts: list[Fact] = []
     calls: dict[str, int] = {}
     refs: dict[str, int] = {}
     by_caller: dict[tuple[str, int], tuple[Cursor, dict[tuple[str, int], str]]] = {}
     for function in functions:
-        for node in function.walk_preorder():
-            if node.kind in _REFERENCES and node.referenced is not None and (
-                ours(node.referenced)
-            ):
-                usr = node.referenced.canonical.get_usr()
+        kept = walked(function)
+        if kept is None:
+            every = list(function.walk_preorder())
+            nodes: Iterable[Cursor] = every
+            references: Iterable[Cursor] = [n for n in every if n.kind in _REFERENCES]
+        else:
+            nodes, references = kept
+        for node in references:
+            target = node.referenced
+            if target is not None and ours(target):
+                usr = target.canonical.get_usr()
                 if usr:
                     refs[usr] = refs.get(usr, 0) + 1
-            elif node.kind == CursorKind.CALL_EXPR:
+        for node in nodes:
+            if node.kind == CursorKind.CALL_EXPR:
                 callee = callee_of(node)
                 if callee is None or not ours(callee):
                     continue
@@ -184,7 +205,8 @@ def _conditions(function: Cursor, wanted: dict[tuple[str, int], str],
     stack: list[tuple[Cursor, tuple[Condition, ...]]] = [
         (child, ()) for child in reversed(list(function.get_children()))
         if child.kind != CursorKind.PARM_DECL]
-    while stack:
+    left = len(found)  # the wanted calls not met yet: the walk ends when none is left
+    while stack and left:
         node, conditions = stack.pop()
         if node.kind == CursorKind.CALL_EXPR:
             place = _place(node)
@@ -192,6 +214,7 @@ def _conditions(function: Cursor, wanted: dict[tuple[str, int], str],
                 found[place] = (wanted[place], tuple(
                     c for c in conditions
                     if c.kind == "source" and c.statement not in _NOT_CARRIED))
+                left -= 1
         stack.extend((child, conditions + extra)
                      for child, extra in reversed(reader.branches(node)))
     return found

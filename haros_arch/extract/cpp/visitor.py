@@ -200,7 +200,6 @@ class CallFinder:
         for function in self.functions:
             if self._gives(function):
                 self._function(function)
-        self.wrappers.preorder.clear()
         # the member's writes are all these reads, of one parameter (nav2's
         # TwistSubscriber: each of its two constructors reads enable_stamped_cmd_vel
         # into is_stamped_ with the same default), grouped by call site: one site may
@@ -230,7 +229,9 @@ class CallFinder:
         self.facts = argument_facts(self.sites, self.namespaces, self.owned, self._marked,
                                     self._site_conditions)
         self.facts.extend(call_conditions.site_facts(
-            self.functions, self.sites, self.reader, self.owned, self._enter))
+            self.functions, self.sites, self.reader, self.owned, self._enter, self._walked))
+        self.wrappers.preorder.clear()
+        self.wrappers.references.clear()
         for call in self.calls:  # get_parameter("p") of a declare_parameter("p", default)
             if call.name_param is not None and call.name_default is None and (
                 call.name_param in self._declared
@@ -248,6 +249,13 @@ class CallFinder:
             release(self._root)
             self._root = None
         self.functions = []
+
+    def _walked(self, function: Cursor) -> tuple[list[Cursor], list[Cursor]] | None:
+        """The function's calls (among other nodes) and references to declarations,
+        each in preorder, as the wrappers' walk kept them (None: not kept)."""
+        nodes = self.wrappers.preorder.get(id(function))
+        references = self.wrappers.references.get(id(function))
+        return None if nodes is None or references is None else (nodes, references)
 
     def _enter(self, function: Cursor) -> None:
         """Ready the condition reader for ``function``'s body (``_conditions_at``)."""

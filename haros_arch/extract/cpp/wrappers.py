@@ -132,6 +132,10 @@ class Wrappers:
         # id of each function of the unit -> its calls and unexposed expressions in
         # preorder (``_scan``), for ``CallFinder._gives``
         self.preorder: dict[int, list[Cursor]] = {}
+        # id of each function of the unit -> its references to declarations
+        # (``DECL_REF_EXPR``, ``MEMBER_REF_EXPR``) in preorder, for
+        # ``call_conditions.site_facts``
+        self.references: dict[int, list[Cursor]] = {}
         # the wrapper methods (not constructors) by name, for a call on a dependent object
         self._methods: dict[str, list[Cursor]] = {}
         # id of a call (a node of the unit) -> the constructors it may call through a
@@ -168,9 +172,11 @@ class Wrappers:
         while todo:
             function = todo.pop()
             every: list[Cursor] | None = None
+            references: list[Cursor] | None = None
             if id(function) in top:
                 every = self.preorder[id(function)] = []
-            inner, lambdas = _scan(function, every)
+                references = self.references[id(function)] = []
+            inner, lambdas = _scan(function, every, references)
             found[_key(function.canonical)] = inner
             todo += lambdas
             functions += [lam for lam in lambdas if _parameters(lam)]
@@ -1178,17 +1184,20 @@ def _bind(parts: Parts, bound: dict[str, Parts]) -> Parts:
     return tuple(found)
 
 
+_REFERENCES = frozenset({CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR})
 _LAMBDA_END = object()  # in ``_scan``'s stack: the walk leaves a lambda's body
 
 
-def _scan(function: Cursor, every: list[Cursor] | None = None
-          ) -> tuple[list[Cursor], list[Cursor]]:
+def _scan(function: Cursor, every: list[Cursor] | None = None,
+          references: list[Cursor] | None = None) -> tuple[list[Cursor], list[Cursor]]:
     """The calls in ``function``'s body, in order, and the lambdas it makes; not the
     calls inside those (a lambda's body runs when it is called, not where it is
     written): one walk of the body. With ``every``, the walk goes into the lambdas'
     bodies too and puts in it every call and unexposed expression of the function's
     whole subtree, in the order of ``walk_preorder`` (what ``CallFinder._gives`` reads:
-    the function's nodes are then walked once for both)."""
+    the function's nodes are then walked once for both); with ``references``, the
+    walk puts in it the subtree's references to declarations, in the same order (what
+    ``call_conditions.site_facts`` reads)."""
     calls: list[Cursor] = []
     lambdas: list[Cursor] = []
     stack: list[Any] = list(reversed(list(function.get_children())))
@@ -1207,6 +1216,8 @@ def _scan(function: Cursor, every: list[Cursor] | None = None
         elif kind == CursorKind.UNEXPOSED_EXPR:
             if every is not None:
                 every.append(node)
+        elif references is not None and kind in _REFERENCES:
+            references.append(node)
         elif kind == CursorKind.LAMBDA_EXPR:
             if not inside:
                 lambdas.append(node)
