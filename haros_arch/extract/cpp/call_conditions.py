@@ -231,35 +231,7 @@ def _overridden(method: Cursor, owned: Callable[[str], bool],
         return None
     types = [p.type.get_canonical().spelling for p in method.get_children()
              if p.kind == CursorKind.PARM_DECL]
-    found: list[str] = []
-    for base in parent.get_children():
-        if base.kind != CursorKind.CXX_BASE_SPECIFIER:
-            continue
-        decl = base.type.get_canonical().get_declaration()
-        decl = decl.get_definition() or decl
-        if decl.kind == CursorKind.NO_DECL_FOUND:
-            return None
-        for other in decl.get_children():
-            if other.kind == CursorKind.CXX_METHOD and other.spelling == method.spelling and (
-                other.is_virtual_method()
-            ) and [p.type.get_canonical().spelling for p in other.get_children()
-                   if p.kind == CursorKind.PARM_DECL] == types:
-                where = other.location.file
-                if where is None or not owned(where.name):
-                    return None
-                found.append(other.canonical.get_usr())
-                deeper = _overridden(other, owned, depth + 1)
-                if deeper is None:
-                    return None
-                found.extend(deeper)
-                break
-        else:
-            # a base we read, without the method: its own bases may have it
-            deeper = _overridden_in(decl, method.spelling, types, owned, depth + 1)
-            if deeper is None:
-                return None
-            found.extend(deeper)
-    return found
+    return _overridden_in(parent, method.spelling, types, owned, depth)
 
 
 def _overridden_in(cls: Cursor, name: str, types: list[str], owned: Callable[[str], bool],
