@@ -51,3 +51,37 @@ def test_the_overrides_are_every_parameter_of_the_node_read_whole(write_tree) ->
     read = {p.name: p.is_read for p in config.parameters if p.set_by_launch}
     assert read == {"/loc/pf": True, "/loc/pf/rate_hz": True,
                     "/loc/pf/pf_options.BETA": True, "/loc/other/rate_hz": False}
+
+
+LOOKUP = """
+#include <rclcpp/rclcpp.hpp>
+class Nav : public rclcpp::Node
+{
+public:
+  Nav() : rclcpp::Node("nav")
+  {
+    auto params = this->get_node_parameters_interface();
+    const bool given = params->get_parameter_overrides().find("rate") !=
+      params->get_parameter_overrides().end();
+    const bool also = params->get_parameter_overrides().count("rate") > 0;
+    if (given && also) { rate_ = declare_parameter("rate", 1.0); }
+  }
+  double rate_ = 0.0;
+};
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<Nav>());
+}
+"""
+
+
+def test_looking_one_name_up_in_the_overrides_reads_no_other(write_tree) -> None:
+    """navigation2's declare_or_get_parameter asks get_parameter_overrides().find(name)
+    whether the launch gave that parameter: not a read of every parameter, which would
+    hide each parameter the launch sets that the node never reads."""
+    root = write_tree({"nav/package.xml": package_xml("nav", "ament_cmake"),
+                       "nav/src/nav.cpp": LOOKUP})
+    result = extract_cpp([str(root / "nav" / "src" / "nav.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    assert [(c.kind, c.name) for c in result.calls] == [("declare", "rate")]

@@ -64,6 +64,9 @@ class RosFunction:
     optional_handle: bool = False
     # a name fixed by the API (tf's "/tf") instead of one read from an argument
     fixed_name: str | None = None
+    # a map of every parameter (rclcpp's get_parameter_overrides()): no read where the
+    # code only looks one name up in it (``.find(name)``, ``.count(name)``, ``[name]``)
+    not_looked_up: bool = False
     # the fixed name is relative to the first argument that is a handle, else to this
     # namespace (dynamic_reconfigure's Server(nh) and Server(mutex, nh), whose handle
     # defaults to NodeHandle("~"))
@@ -459,8 +462,10 @@ RCLCPP: dict[tuple[str, str], RosFunction] = {
     **{(RCLCPP_PARAMETERS_INTERFACE, name): _RCLCPP_NODE[name] for name in _INTERFACE_METHODS},
     # every parameter the node is given (launch values and overrides), read whole:
     # mrpt_pf_localization turns them all into its YAML configuration
+    # (not where one name is looked up in it: navigation2's declare_or_get_parameter
+    # asks ``get_parameter_overrides().find(name)`` whether the launch gave that one)
     (RCLCPP_PARAMETERS_INTERFACE, "get_parameter_overrides"): RosFunction(
-        "read", fixed_name="~", on_handle=False),
+        "read", fixed_name="~", on_handle=False, not_looked_up=True),
     # the options a node is built with set its parameters before any launch value is
     # taken (topic_tools' relay: ``append_parameter_override("input_topic", args.at(1))``
     # in its main, from the command line): a write of the parameter

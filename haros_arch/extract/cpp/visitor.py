@@ -89,6 +89,8 @@ _API_NAMES = frozenset(
     [name for _, name in [*api.ALL, *api.NODE_NAME, *api.RCLCPP_NODE_NAME, *api.FACTORIES]]
     + [parameter_library.LISTENER])
 MAX_DEPTH = 16
+# the text after a call whose result the code looks one key up in (``_looked_up``)
+_LOOKUP = re.compile(rb"\s*(?:(?:\.|->)\s*(?:find|count|contains|at|end)\s*\(|\[)")
 # where a call's name comes from: a ``Source`` (the parameter, its default, the
 # parameter the default holds), then ``EACH`` when the name is each element of that list
 # parameter in turn (PrimitiveCall.name_each) and the (line, column) of the range-based
@@ -416,6 +418,13 @@ class CallFinder:
                 c in self.reader.handled for c in call.conditions
             ):
                 call.tested = True
+
+    def _looked_up(self, call: Cursor) -> bool:
+        """Whether the code only looks one key up in what ``call`` returns: the text
+        after it is ``.find(``, ``.count(``, ``.contains(``, ``.at(``, ``.end(`` or ``[``."""
+        end = call.extent.end
+        data = self.source.get(end.file.name) if end.file is not None else None
+        return data is not None and _LOOKUP.match(data, end.offset) is not None
 
     def _constructed_under(self, function: Cursor, depth: int) -> tuple[Condition, ...]:
         """The conditions under which this file constructs the class of the constructor
@@ -872,6 +881,8 @@ class CallFinder:
             return  # the class of that name is not our stand-in's: its code is read
         if self.ros2 and spec.ros2 is not None:
             spec = spec.ros2  # the call as ROS 2's library makes it
+        if spec.not_looked_up and self._looked_up(at or call):
+            return
         shift, handle_arg = 0, spec.handle_arg
         if spec.optional_handle and args and is_handle(args[0]):
             shift, handle_arg = 1, 0
