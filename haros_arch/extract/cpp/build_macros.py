@@ -23,7 +23,6 @@ from . import recall
 _COMMAND = re.compile(r"\b(add_definitions|add_compile_definitions|target_compile_definitions)"
                       r"\s*\(([^)]*)\)", re.IGNORECASE)
 _DEFINED = re.compile(r"(?:-D)?([A-Za-z_]\w*)(?:=[^\s)]*)?")
-_DIRECTIVE = re.compile(r"^\s*#\s*(if|ifdef|ifndef|elif|else|endif)\b(.*)$")
 _WORD = re.compile(r"[A-Za-z_]\w*")
 _KEYWORDS = frozenset({"PRIVATE", "PUBLIC", "INTERFACE", "defined"})
 MAX_CMAKE_FILES = 40
@@ -76,7 +75,7 @@ def skipped_calls(text: str, macros: dict[str, tuple[str, int]]
     start = 0
     blocks: list[tuple[int, int, str]] = []
     for number, line in enumerate(lines, 1):
-        match = _DIRECTIVE.match(line)
+        match = recall.DIRECTIVE.match(line)
         if match is None:
             continue
         kind, rest = match.group(1), match.group(2)
@@ -89,9 +88,9 @@ def skipped_calls(text: str, macros: dict[str, tuple[str, int]]
         current = named[0] if named and kind in ("if", "ifdef", "elif") else None
         start = number
     for first, last, macro in blocks:
-        inside = [s for s in sites if first < s.line < last]
-        if inside:
-            found.append((inside[0].line, macro, inside[0].text))
+        site = recall.first_site(sites, first, last)
+        if site is not None:
+            found.append((site.line, macro, site.text))
     return found
 
 

@@ -105,6 +105,16 @@ def _is_class(owner: str) -> bool:
     return owner.rsplit("::", 1)[-1][:1].isupper()
 
 
+# a line of the preprocessor's conditionals: the directive and the rest of the line
+DIRECTIVE = re.compile(r"^\s*#\s*(if|ifdef|ifndef|elif|else|endif)\b(.*)$")
+
+
+def first_site(sites: Sequence[Site], first: int, last: int) -> Site | None:
+    """The first of ``sites`` strictly between lines ``first`` and ``last`` (a
+    conditional block's directive lines)."""
+    return next((s for s in sites if first < s.line < last), None)
+
+
 def call_sites(text: str, extra: Iterable[str] = ()) -> list[Site]:
     """The API call sites of one file's text (comments left out, and lines that define
     a function of the same name: ``Node::create_publisher(``, or declare one:

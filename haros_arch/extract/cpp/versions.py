@@ -82,8 +82,6 @@ ROSCPP = Library(
      "ROS_VERSION_PATCH"))
 LIBRARIES = (RCLCPP, ROSCPP)
 
-_DIRECTIVE = re.compile(r"^\s*#\s*(if|ifdef|ifndef|elif|else|endif)\b(.*)$")
-
 
 def flags(distro: str | None) -> list[str]:
     """The ``-D`` flags that make the stand-ins announce the client library of
@@ -111,7 +109,7 @@ def version_blocks(text: str, library: Library
     # per open chain: its directive lines and the conditions that name the version
     stack: list[tuple[list[int], list[str]]] = []
     for number, line in enumerate(text.splitlines(), 1):
-        match = _DIRECTIVE.match(line)
+        match = recall.DIRECTIVE.match(line)
         if match is None:
             continue
         kind, rest = match.group(1), match.group(2).strip()
@@ -151,7 +149,7 @@ def unknown_version_calls(text: str, skipped: list[tuple[int, int]], library: Li
         if not any(start in chain and start <= first and last <= end
                    for start, end in skipped):
             continue
-        inside = [s for s in sites if first < s.line < last]
-        if inside:
-            found.append((inside[0].line, inside[0].text, condition))
+        site = recall.first_site(sites, first, last)
+        if site is not None:
+            found.append((site.line, site.text, condition))
     return found
