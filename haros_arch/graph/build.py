@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import bisect
 import os
 import shlex
 from collections.abc import Mapping, Sequence
@@ -353,11 +354,19 @@ def _namespace_values(config: Configuration) -> None:
     sets ``gains/P``, ``gains/I``) holds the dictionary of what is set under it, as the
     parameter server answers."""
     set_params = [p for p in config.parameters if p.set_by_launch]
+    # their names in order, and each one's place among them: the names under a prefix
+    # are one run of the sorted names (found by bisection, then taken in their order)
+    order = sorted(range(len(set_params)), key=lambda index: set_params[index].name)
+    names = [set_params[index].name for index in order]
     for param in config.parameters:
         if param.set_by_launch or not param.readers or param.is_unresolved:
             continue
         prefix = param.name.rstrip("/") + "/"
-        below = [p for p in set_params if p.name.startswith(prefix)]
+        first = bisect.bisect_left(names, prefix)
+        last = first
+        while last < len(names) and names[last].startswith(prefix):
+            last += 1
+        below = [set_params[index] for index in sorted(order[first:last])]
         if not below:
             continue
         tree: dict[str, Any] = {}

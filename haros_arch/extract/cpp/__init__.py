@@ -264,11 +264,12 @@ def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True
     unseen = {word for unit in units for word in unit.unseen} if complete else {"*"}
     built = _built_under(facts, unseen)
     called = call_conditions.shared(facts, unseen)
+    known = links.NodeFacts(facts)  # read once for every unit's calls
     for unit in units:
         result.diagnostics.extend(unit.diagnostics)
         if unit.rosname is not None and result.rosname is None:
-            result.rosname = links.resolve_name(unit.rosname, facts)
-        calls, found = links.resolve(unit.calls, facts, unseen)
+            result.rosname = links.resolve_name(unit.rosname, known)
+        calls, found = links.resolve(unit.calls, known, unseen)
         result.diagnostics.extend(found)
         for call in calls:
             if call.built_in is not None:
@@ -293,7 +294,7 @@ def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True
     result.calls = [c for c in result.calls if c.name_param is not None
                     or (c.kind, c.name, c.location) not in named]
     result.diagnostics = list(dict.fromkeys(result.diagnostics))
-    _name_nodes(result, sorted(paths_units, key=lambda pair: pair[0]), facts, unseen)
+    _name_nodes(result, sorted(paths_units, key=lambda pair: pair[0]), known, unseen)
     result.calls = declared_defaults(result.calls)
     return result
 
@@ -330,7 +331,7 @@ def _built_under(facts: list[links.Fact], unseen: set[str]) -> dict[str, tuple[C
 
 
 def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
-                facts: list[links.Fact], unseen: Collection[str] = frozenset({"*"})) -> None:
+                facts: links.NodeFacts, unseen: Collection[str] = frozenset({"*"})) -> None:
     """The executable's nodes when its files construct several with fully known names
     (in the order met, files by path), and each call's node (``_node_of``); None where
     no one node can be told (the graph gives those calls to the first node). The calls
