@@ -883,6 +883,19 @@ class IncludeSetup:
 
     # -- after parsing ----------------------------------------------------------------
 
+    def message_header(self, header: str) -> bool:
+        """Whether ``header`` is the generated header of a message or service the
+        workspace or the catalogue defines, made ready to include (a unit that uses the
+        type with no include of its own: ``_unincluded_messages``)."""
+        if self.system_headers:
+            return False
+        spec = self._message_header(header)
+        if spec is None or self._definition(spec.group(1), spec.group(2)) is None:
+            return False
+        if header in self._handled:
+            return True
+        return self._message(header, spec.group(1), spec.group(2), Location())
+
     def repair(self, messages: list[tuple[str, Location]]) -> bool:
         """Create what clang reported as not found; True when a new parse may help."""
         changed = False
