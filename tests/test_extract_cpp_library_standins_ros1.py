@@ -148,3 +148,47 @@ def test_libc_files_signals_and_users_make_no_error(write_tree) -> None:
     errors = [d.message for d in result.diagnostics
               if d.code in ("CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL", "CPP_INCLUDE_MISSING")]
     assert errors == []
+
+
+TF2 = """#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+#include <tf2/LinearMath/Matrix3x3.h>
+#include <tf2/LinearMath/Quaternion.h>
+#include <tf2/LinearMath/Vector3.h>
+
+class Force : public rclcpp::Node {
+public:
+  Force() : Node("force") {
+    tf2::Matrix3x3 flip(1, 0, 0, 0, -1, 0, 0, 0, -1);
+    tf2::Quaternion q;
+    q.setX(0); q.setW(1);
+    tf2::Vector3 axis = q.getAxis();
+    tf2::Vector3 turned = tf2::quatRotate(q, axis.cross(flip.getRow(0)).normalized());
+    double d = turned.dot(axis) + q.angleShortestPath(tf2::Quaternion::getIdentity());
+    pub_ = create_publisher<std_msgs::msg::String>("wrench_state", 10);
+  }
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+};
+
+int main(int argc, char** argv) {
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<Force>());
+}
+"""
+
+
+def test_tf2_linear_math_makes_no_error(write_tree) -> None:
+    """Universal_Robots_ROS2_Driver's force_mode_controller reads ``q.getAxis()``,
+    robot_localization uses ``tf2::quatRotate``: errors where a node makes its calls."""
+    root = write_tree({
+        "force/package.xml": package_xml("force", "ament_cmake"),
+        "force/CMakeLists.txt": (
+            "cmake_minimum_required(VERSION 3.8)\nproject(force)\n"
+            "find_package(rclcpp REQUIRED)\nadd_executable(force src/force.cpp)\n"),
+        "force/src/force.cpp": TF2})
+    result = extract_cpp([str(root / "force" / "src" / "force.cpp")], scan([str(root)]),
+                         cache_dir=None, jobs=1)
+    assert ("publish", "wrench_state") in [(c.kind, c.name) for c in result.calls]
+    errors = [d.message for d in result.diagnostics
+              if d.code in ("CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL", "CPP_INCLUDE_MISSING")]
+    assert errors == []
