@@ -453,11 +453,14 @@ CATALOGUE: dict[str, Entry] = {
         "the node is 'partial' and checks that claim something is absent do not decide "
         "on it, rather than take a robot's whole base for a node with no interface."),
     "PY_NODE_PARTIAL": Entry(
-        "warning", "node {node}: its calls may be incomplete, {count} of its Python "
-        "sources could not be read or analysed in full (first: {first})",
-        "A source of the node could not be read or parsed, or was too large to analyse: "
-        "calls in it may be missing. The node model is 'partial' (completeness, with "
-        "the first reasons); checks that claim something is absent do not trust it."),
+        "warning", "node {node}: its calls may be incomplete, {count} place(s) in its "
+        "Python sources where calls may be missing or made by code not read (first: "
+        "{first})",
+        "A source of the node could not be read or parsed, or was too large to analyse, "
+        "or the node builds a class whose code is not read (PY_CLASS_UNSEEN) or runs "
+        "roslaunch in its process (PY_LAUNCHES): calls may be missing. The node model is "
+        "'partial' (completeness, with the first reasons); checks that claim something "
+        "is absent do not trust it."),
     "CPP_PARAMETER_LIBRARY": Entry(
         "warning", "generate_parameter_library's YAML of {target} cannot be used: {detail}",
         "The header generate_parameter_library writes at build time is synthesised from "
