@@ -155,6 +155,8 @@ TF2 = """#include <rclcpp/rclcpp.hpp>
 #include <tf2/LinearMath/Matrix3x3.h>
 #include <tf2/LinearMath/Quaternion.h>
 #include <tf2/LinearMath/Vector3.h>
+#include <tf2/LinearMath/Transform.h>
+#include <tf2/transform_datatypes.h>
 
 class Force : public rclcpp::Node {
 public:
@@ -165,6 +167,10 @@ public:
     tf2::Vector3 axis = q.getAxis();
     tf2::Vector3 turned = tf2::quatRotate(q, axis.cross(flip.getRow(0)).normalized());
     double d = turned.dot(axis) + q.angleShortestPath(tf2::Quaternion::getIdentity());
+    tf2::Stamped<tf2::Transform> stamped;
+    stamped.setData(tf2::Transform(q));
+    tf2::Transform moved;
+    moved.mult(moved, stamped);
     pub_ = create_publisher<std_msgs::msg::String>("wrench_state", 10);
   }
   rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;

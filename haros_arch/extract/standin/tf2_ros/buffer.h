@@ -132,12 +132,17 @@ public:
   Transform inverse() const;
   Transform inverseTimes(const Transform& t) const;
   Transform operator*(const Transform& t) const;
+  Transform& operator*=(const Transform& t);
+  Quaternion operator*(const Quaternion& q) const;
+  void mult(const Transform& a, const Transform& b);
+  void setBasis(const Matrix3x3& basis);
   Vector3 operator*(const Vector3& v) const;
   static const Transform& getIdentity();
 };
 template<class T> class Stamped : public T {
 public:
   Stamped(); Stamped(const T& input, const ros::Time& stamp, const std::string& frame_id);
+  void setData(const T& input);
   ros::Time stamp_; std::string frame_id_;
 };
 double angle(const Quaternion& a, const Quaternion& b);
