@@ -1046,7 +1046,56 @@ def _parse(path: str, text: str, setup: IncludeSetup, workspace: Workspace,
         if not missing or not setup.repair(missing):
             break
     assert tu is not None
+    wanted = _unincluded_messages(tu, setup, source)
+    if wanted:
+        more = [*args, *(word for header in wanted for word in ("-include", header))]
+        again = _parse_once(path, more, unsaved, workspace, result)
+        if again is not None and len(_errors(again)) < len(_errors(tu)):
+            tu, args = again, more
     return _synthesise(path, tu, args, unsaved, setup, workspace, result, source, owned)
+
+
+# an error naming a namespace clang does not know, or a name missing from one
+_UNKNOWN_SPACE = re.compile(r"^use of undeclared identifier '(\w+)'$"
+                            r"|^no (?:type|member|template) named '\w+' in namespace '(\w+)'$")
+_QUALIFIED = re.compile(rb"\b([A-Za-z_]\w*)\s*::\s*([A-Za-z_]\w*)")
+_POINTER_SUFFIXES = ("ConstPtr", "Ptr")
+
+
+def _unincluded_messages(tu: TranslationUnit, setup: IncludeSetup,
+                         source: SourceCache) -> list[str]:
+    """The message headers a unit uses without including them: MoveIt's headers bring
+    ``geometry_msgs/PoseStamped.h``, so kinova's pick_place names
+    ``geometry_msgs::PoseStampedConstPtr`` with no include of its own; with MoveIt's
+    headers missing the type was declared permissively and ``subscribe<geometry_msgs::
+    PoseStamped>(topic, 1, &PickPlace::get_current_pose, this)`` an error. A name
+    ``pkg::Name`` (or ``NameConstPtr`` / ``NamePtr``) in a file with such an error, where
+    ``pkg`` is a namespace an error says is unknown and the workspace or the catalogue
+    defines the message ``pkg/Name``: its ``pkg/Name.h``."""
+    errors = [e for e in _errors(tu) if e.name is not None]
+    spaces: set[str] = set()
+    files: set[str] = set()
+    for error in errors:
+        found = _UNKNOWN_SPACE.match(error.spelling)
+        if found is not None:
+            spaces.add(found.group(1) or found.group(2))
+            files.add(error.name or "")
+    if not spaces:
+        return []
+    headers: list[str] = []
+    for name in sorted(files):
+        text = source.get(name)
+        for match in _QUALIFIED.finditer(text or b""):
+            space = match.group(1).decode()
+            if space not in spaces:
+                continue
+            written = match.group(2).decode()
+            base = next((written[: -len(s)] for s in _POINTER_SUFFIXES
+                         if written.endswith(s) and len(written) > len(s)), written)
+            header = f"{space}/{base}.h"
+            if header not in headers and setup.message_header(header):
+                headers.append(header)
+    return headers
 
 
 def _parse_once(path: str, args: list[str], unsaved: list[tuple[str, str]],

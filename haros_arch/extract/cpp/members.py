@@ -37,15 +37,38 @@ def _every(_index: int) -> bool:
     return True
 
 
+_SCOPES = (CursorKind.TRANSLATION_UNIT, CursorKind.NAMESPACE)
+
+
 def member_of(expr: Cursor | None) -> Cursor | None:
-    """The member variable of a plain type that ``expr`` names, or None."""
+    """The member variable of a plain type that ``expr`` names, or None; also a global
+    variable of a plain type that the unit's own source file declares, the only one in
+    which it is declared (VINS-Mono's ar_demo: ``int USE_UNDISTORED_IMG;`` beside
+    ``main``): no other file can write it, so its writes are those of the file's
+    functions, as a member's are. One a header declares (``extern``) may be written by
+    any file that includes it: not one."""
     if expr is None:
         return None
     expr = strip(expr)
     decl = expr.referenced if expr.kind in _REFS else None
-    if decl is None or decl.kind != CursorKind.FIELD_DECL or not _plain_value(decl):
+    if decl is None or not _plain_value(decl):
         return None
-    return decl
+    if decl.kind == CursorKind.FIELD_DECL:
+        return decl
+    return decl if decl.kind == CursorKind.VAR_DECL and _own_global(decl) else None
+
+
+def _own_global(decl: Cursor) -> bool:
+    """Whether ``decl`` is a variable at namespace scope whose every declaration is in the
+    main file of its translation unit."""
+    parent = decl.semantic_parent
+    if parent is None or parent.kind not in _SCOPES:
+        return False
+    main = decl.translation_unit.spelling
+    canonical = decl.canonical
+    seen = [canonical, decl, decl.get_definition()]
+    return all(d is None or (d.location.file is not None and d.location.file.name == main)
+               for d in seen)
 
 
 def _negates(node: Cursor, source: dict[str, bytes]) -> bool:
