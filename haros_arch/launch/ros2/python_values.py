@@ -136,6 +136,10 @@ def _hashable(value: Any) -> Any:
         return tuple(_hashable(v) for v in value)
     if isinstance(value, dict):
         return Unknown("dict key")
+    try:
+        hash(value)
+    except TypeError:  # a value of the interpreter's own (a method not called, ...)
+        return Unknown("dict key not known statically")
     return value
 
 
