@@ -653,3 +653,28 @@ def test_a_ros2_spawner_is_named_and_calls_the_manager_as_its_arguments_say():
     # controllers not known: the model's node, as before
     assert links_of(config, f"/{UNKNOWN_MARK}") == [("client", f"/{UNKNOWN_MARK}")]
     assert "NODE_NAME_GUESSED" not in [d.code for d in config.diagnostics]
+
+
+def test_a_controller_whose_class_is_not_here_is_a_node_of_unknown_interface(tmp_path):
+    """turtlebot3_manipulation's base.launch.py spawns joint_state_broadcaster and four
+    more controllers of ros2_controllers, whose sources are not in the workspace (their
+    types in hardware_controller_manager.yaml). Each is a node of its own all the same,
+    named after the controller, its interface unknown; before, no node was made and the
+    manager was marked partial instead, though its own interface is known."""
+    params = tmp_path / "controllers.yaml"
+    params.write_text("controller_manager:\n  ros__parameters:\n    jsb:\n"
+                      "      type: joint_state_broadcaster/JointStateBroadcaster\n")
+    manager = Node("controller_manager", "ros2_control_node", calls=[
+        call("publish", "~/activity", "std_msgs/msg/String")])
+    decls = [ros2(NodeDecl("/controller_manager", "controller_manager",
+                           "ros2_control_node", "/")),
+             ros2(NodeDecl(f"/{UNKNOWN_MARK}", "controller_manager", "spawner", "/",
+                           args=f"jsb --param-file {params}"))]
+    config = graph(decls, nodes=[manager], root=str(tmp_path))
+    added = {n.name: n for n in config.nodes if n.origin == "plugin"}
+    assert list(added) == ["/jsb"] and added["/jsb"].node is None
+    assert links_of(config, "/jsb") == base_declares("/jsb")
+    host = next(n for n in config.nodes if n.name == "/controller_manager")
+    assert host.node is not None and host.node.completeness == "complete"
+    assert [d.code for d in config.diagnostics if d.code.startswith("PLUGIN")] == [
+        "PLUGIN_NOT_FOUND"]
