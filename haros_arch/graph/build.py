@@ -30,7 +30,7 @@ from ..model.runtime import (
 )
 from ..model.source import NUMBERED, Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK, Unknown
-from ..models.commands import command_node
+from ..models.commands import by_arguments, command_node
 from ..plugins.attach import PluginModels, class_packages
 from ..plugins.attach import attach as attach_plugins
 from ..plugins.transports import Transports
@@ -391,7 +391,10 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
               config: Configuration) -> NodeInstance:
     key = node_key(decl, nodes)
     plugin = nodelet_plugin(decl)
-    node = nodes.get(key) or command_node(decl)  # rostopic pub: its arguments say
+    # rostopic pub, a ROS 2 spawner: its arguments say (a spawner's first: its code or
+    # interface model builds its names from sys.argv)
+    node = (command_node(decl) if by_arguments(decl) else None) or nodes.get(key) \
+        or command_node(decl)
     if node is None and plugin is None and is_container(decl):
         # a nodelet manager or component container: what it loads are node instances of
         # their own; the process's own interface is its loader's services, known

@@ -28,7 +28,7 @@ from clang.cindex import Cursor, CursorKind
 
 from .tested import Key, key
 from .values import _plain_value, _walk, key_of, strip
-from .writes import writes_of
+from .writes import parameter_callback, writes_of
 
 _REFS = (CursorKind.MEMBER_REF_EXPR, CursorKind.DECL_REF_EXPR)
 
@@ -113,6 +113,7 @@ class MemberWrites:
         # their own but the read's default
         self._skipped: set[Key] = set()
         self._index = 0  # of the function being read
+        self._callback = False  # it is a parameter callback (``writes.parameter_callback``)
         self._spans: list[tuple[str, int, int] | None] = []
         self._texts: list[bytes | None] = []
         inside: dict[str, list[int]] = {}
@@ -177,8 +178,10 @@ class MemberWrites:
                 continue
             self._read.add(index)
             self._index = index
+            self._callback = parameter_callback(function)
             for node in _walk(function):
                 self._visit(node)
+        self._callback = False
 
     def _add(self, member: Cursor | None) -> None:
         if member is not None:
@@ -218,11 +221,12 @@ class MemberWrites:
         for write in writes_of(node, self.source):
             target, value = write.target, write.value
             member = member_of(target)
-            self._add(member)
+            if not self._callback:  # (a parameter callback's writes come after start-up)
+                self._add(member)
             if not write.whole or value is None:
                 continue
             if target.kind == CursorKind.MEMBER_REF_EXPR and target.referenced is not None \
-                    and target.referenced.kind == CursorKind.FIELD_DECL:
+                    and target.referenced.kind == CursorKind.FIELD_DECL and not self._callback:
                 self._values.setdefault(key_of(target.referenced), []).append(
                     (value, self._index))
             value = strip(value)
