@@ -126,3 +126,24 @@ def test_a_remap_source_not_known_statically_may_be_a_name_the_node_uses() -> No
     remaps = {r.source: r for r in config.remaps}
     assert (remaps["?/left/image"].users, remaps["?/left/image"].unseen) == ([], [instance])
     assert (remaps["?/right/image"].users, remaps["?/right/image"].unseen) == ([], [])
+
+
+def test_a_node_known_from_a_model_of_code_that_loads_no_plugins_is_judged() -> None:
+    """A complete interface model lists every name its code makes (its options' under
+    their conditions), as the workspace's own code would: a remap none of them is was
+    left undecided for every modelled node (jackal's teleop.launch gave cmd_vel:=/cmd_vel
+    to interactive_marker_twist_server, which publishes ~cmd_vel). A model of code that
+    loads plugins by name stays undecided: a plugin's names are not in it."""
+    def server(loads: list[str]) -> Node:
+        return Node("twist", "marker_server", completeness="complete", model="noetic/twist",
+                    plugin_loads=loads, calls=[
+                        PrimitiveCall("publish", "~cmd_vel", "geometry_msgs/Twist")])
+    decl = NodeDecl("/twist_marker_server", "twist", "marker_server", "/",
+                    remaps=[("cmd_vel", "/cmd_vel_out")])
+    config = _config([decl], {"twist/marker_server": server([])})
+    (remap,) = config.remaps
+    assert (remap.users, remap.unseen) == ([], [])
+    assert remap.near == ["/twist_marker_server/cmd_vel"]
+    config = _config([decl], {"twist/marker_server": server(["src/server.cpp:40"])})
+    (remap,) = config.remaps
+    assert (remap.users, [n.name for n in remap.unseen]) == ([], ["/twist_marker_server"])

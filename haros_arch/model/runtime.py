@@ -513,15 +513,18 @@ class Remap:
 
 def _could_use(instance: NodeInstance, name: str) -> bool:
     """Whether ``instance`` may use ``name`` through something the model does not show:
-    an interface partly or wholly unknown; one read from an interface model (a model
-    lists what the code makes in the usual set-up, and a remap is often given for a
-    name a plugin or an option adds: move_base's ``odom`` is its local planner's); a
+    an interface partly or wholly unknown; one read from an interface model of code that
+    loads plugins (a remap is often given for a name a plugin adds: move_base's ``odom``
+    is its local planner's; a complete model of code that loads none lists every name,
+    its options' under their conditions, as the workspace's own code would); a
     container, whose components take the process's remaps; a name with ``?`` that may
     be it; in ROS 1, a name on a handle whose namespace is not known (``?/camera_info``):
     roscpp resolves and remaps a NodeHandle's namespace, so that namespace may be it
     (depth_image_proc's ``NodeHandle(nh, "right")`` with ``right:=projector``)."""
     node = instance.node
-    if node is None or not instance.is_complete or node.model is not None:
+    if node is None or not instance.is_complete or (
+        node.model is not None and node.plugin_loads
+    ):
         return True
     for link in instance.links:
         given = link.rosname.given
