@@ -317,6 +317,17 @@ CATALOGUE: dict[str, Entry] = {
         "warning", "{detail}",
         "A parameter file given to a node cannot be read or matched statically; the "
         "parameters it would set are unknown."),
+    "LAUNCH_PARAMS_NO_NODE": Entry(
+        "warning", "parameter file {file} is given to {nodes}, but its sections are for "
+        "{patterns}: rcl gives their parameters to none of them",
+        "A ROS 2 parameter file applies a section (the keys above ros__parameters) only to "
+        "a node whose full name it matches. Every section of this file is for a name that "
+        "none of the nodes it is given to has, nor a node their processes make (a file "
+        "written for another node name, imu_filter: for a node launched as "
+        "imu_filter_node), so none of its parameters is set and the node runs on its "
+        "defaults. Not said when a node it is given to may make nodes unseen (code not "
+        "known, plugins loaded by name). Fix: key the section by the node's name (or "
+        "/**), or launch the node under the name the file uses."),
     # sources
     "CPP_PARSE_ERROR": Entry(
         "info", "C++ error: {detail}",

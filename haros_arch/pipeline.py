@@ -340,6 +340,7 @@ def _load_launch(spec: ConfigurationSpec, project: Project, workspace: Workspace
         merged.package_uses.extend(loaded.package_uses)
         merged.environment_values.extend(loaded.environment_values)
         merged.unread_includes.extend(loaded.unread_includes)
+        merged.foreign_sections.extend(loaded.foreign_sections)
     # the values the configuration gives its launch arguments come from outside the
     # launch files, as the environment's do (a map folder given as ``map_path:=``)
     merged.environment_values.extend(v for v in spec.args.values() if isinstance(v, str))

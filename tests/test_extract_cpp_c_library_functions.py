@@ -64,12 +64,59 @@ def test_a_function_of_a_missing_c_header_is_declared(write_tree) -> None:
     assert node.completeness == "complete"
 
 
+PLAYER = {
+    "player/package.xml": FILES["saver/package.xml"].replace("saver", "player"),
+    "player/CMakeLists.txt": FILES["saver/CMakeLists.txt"].replace("saver", "player"),
+    # cob_sound: <vlc/vlc.h> declares libvlc_new, libvlc_media_player_new, ...
+    "player/src/player.cpp": """
+        #include <ros/ros.h>
+        #include <vlc/vlc.h>
+        #include <std_msgs/String.h>
+        class Player {
+        public:
+          Player() {
+            nh_ = ros::NodeHandle("~");
+            pub_ = nh_.advertise<std_msgs::String>("diagnostics", 1);
+            inst_ = libvlc_new(0, NULL);
+            player_ = libvlc_media_player_new(inst_);
+          }
+        private:
+          ros::NodeHandle nh_;
+          ros::Publisher pub_;
+          libvlc_instance_t* inst_;
+          libvlc_media_player_t* player_;
+        };
+        int main(int argc, char ** argv)
+        {
+          ros::init(argc, argv, "player");
+          Player player;
+          ros::spin();
+        }
+        """,
+}
+
+
+def test_a_function_named_lib_and_the_missing_header_is_declared(write_tree) -> None:
+    """``libvlc_new`` of <vlc/vlc.h> (cob_sound): left undeclared, its error in the
+    constructor that advertises made the node partial, and a remap of a name it does
+    not use undecided."""
+    ws = scan([str(write_tree(PLAYER))])
+    pkg = ws.packages["player"]
+    pkg.nodes, _ = cmake.parse_package(pkg, ws)
+    found = extract_nodes(pkg.nodes, ws, cache_dir=None, jobs=1)
+    node = pkg.nodes[0]
+    assert [(c.kind, c.name) for c in node.calls] == [("publish", "~diagnostics")]
+    assert "CPP_ERROR_NEAR_CALL" not in [d.code for d in found]
+    assert node.completeness == "complete"
+
+
 def test_library_prefixes_and_what_they_declare() -> None:
     assert synthesis.library_prefixes([
         "header ogg/ogg.h not found; an empty stand-in was used",
         "header urg_c/urg_sensor.h not found; an empty stand-in was used",
         "header io.h not found; an empty stand-in was used",
-        "C++ error: something else"]) == {"ogg", "urg"}
+        "header libusb-1.0/libusb.h not found; an empty stand-in was used",
+        "C++ error: something else"]) == {"ogg", "libogg", "urg", "liburg", "libusb"}
     text = b"void f() { ogg_stream_init(&s, 0); read_frame(&s); }"
     names = synthesis.Names(libraries={"ogg"})
     names.learn([("use of undeclared identifier 'ogg_stream_init'", text,

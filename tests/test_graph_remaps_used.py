@@ -57,10 +57,12 @@ def test_a_remap_shared_by_several_nodes_is_used_when_one_uses_it() -> None:
     (remap,) = config.remaps
     assert [n.name for n in remap.nodes] == ["/r/planner", "/r/map_server"]
     assert [n.name for n in remap.users] == ["/r/planner"]
-    # without a namespace the remap names the name itself: nothing to check
+    # without a namespace the remap names the name itself: it changes nothing here, and
+    # the map server uses no /tf in any namespace
     config = _config([NodeDecl("/map_server", "nav", "map_server", "/", remaps=shared)],
                      {"nav/map_server": maps})
-    assert config.remaps == []
+    (remap,) = config.remaps
+    assert (remap.users, remap.unseen) == ([], [])
 
 
 def test_a_name_from_a_parameter_whose_value_is_empty_stays_unknown() -> None:
@@ -126,3 +128,60 @@ def test_a_remap_source_not_known_statically_may_be_a_name_the_node_uses() -> No
     remaps = {r.source: r for r in config.remaps}
     assert (remaps["?/left/image"].users, remaps["?/left/image"].unseen) == ([], [instance])
     assert (remaps["?/right/image"].users, remaps["?/right/image"].unseen) == ([], [])
+
+
+def test_a_node_known_from_a_model_of_code_that_loads_no_plugins_is_judged() -> None:
+    """A complete interface model lists every name its code makes (its options' under
+    their conditions), as the workspace's own code would: a remap none of them is was
+    left undecided for every modelled node (jackal's teleop.launch gave cmd_vel:=/cmd_vel
+    to interactive_marker_twist_server, which publishes ~cmd_vel). A model of code that
+    loads plugins by name stays undecided: a plugin's names are not in it."""
+    def server(loads: list[str]) -> Node:
+        return Node("twist", "marker_server", completeness="complete", model="noetic/twist",
+                    plugin_loads=loads, calls=[
+                        PrimitiveCall("publish", "~cmd_vel", "geometry_msgs/Twist")])
+    decl = NodeDecl("/twist_marker_server", "twist", "marker_server", "/",
+                    remaps=[("cmd_vel", "/cmd_vel_out")])
+    config = _config([decl], {"twist/marker_server": server([])})
+    (remap,) = config.remaps
+    assert (remap.users, remap.unseen) == ([], [])
+    assert remap.near == ["/twist_marker_server/cmd_vel"]
+    config = _config([decl], {"twist/marker_server": server(["src/server.cpp:40"])})
+    (remap,) = config.remaps
+    assert (remap.users, [n.name for n in remap.unseen]) == ([], ["/twist_marker_server"])
+
+
+def test_a_remap_of_a_name_to_itself_that_no_node_uses() -> None:
+    """A remap of a name to itself changes nothing, but says the author took the name to
+    be the node's: robot_localization's dual_ekf_navsat_example gave navsat_transform
+    imu/data:=imu/data, and the node subscribes imu; jackal's teleop.launch gave the
+    marker server cmd_vel:=/cmd_vel in the root namespace, and it publishes ~cmd_vel.
+    Both were left out as changing nothing. A remap of a name to itself that the node
+    uses stays quiet."""
+    navsat = Node("rl", "navsat", calls=[
+        PrimitiveCall("subscribe", "imu", "sensor_msgs/msg/Imu"),
+        PrimitiveCall("subscribe", "gps/fix", "sensor_msgs/msg/NavSatFix")])
+    decl = NodeDecl("/navsat_transform", "rl", "navsat", "/", ros_version=2,
+                    remaps=[("imu/data", "imu/data"), ("gps/fix", "gps/fix")])
+    config = _config([decl], {"rl/navsat": navsat})
+    remaps = {r.text: r for r in config.remaps}
+    assert (remaps["imu/data:=imu/data"].users, remaps["imu/data:=imu/data"].unseen) == ([], [])
+    assert [n.name for n in remaps["gps/fix:=gps/fix"].users] == ["/navsat_transform"]
+
+
+def test_one_text_given_in_two_namespaces_is_two_remaps() -> None:
+    """The same from:=to written for two nodes of different namespaces remaps two names:
+    each is judged by its own nodes (jackal: teleop_twist_joy in /bluetooth_teleop uses
+    cmd_vel, the marker server in / does not)."""
+    teleop = Node("joy", "teleop", calls=[
+        PrimitiveCall("publish", "cmd_vel", "geometry_msgs/Twist")])
+    marker = Node("twist", "marker", calls=[
+        PrimitiveCall("publish", "~cmd_vel", "geometry_msgs/Twist")])
+    given = [("cmd_vel", "/cmd_vel")]
+    config = _config([NodeDecl("/bluetooth_teleop/teleop", "joy", "teleop", "/bluetooth_teleop/",
+                               remaps=given),
+                      NodeDecl("/twist_marker_server", "twist", "marker", "/", remaps=given)],
+                     {"joy/teleop": teleop, "twist/marker": marker})
+    found = sorted(([n.name for n in r.nodes], [n.name for n in r.users]) for r in config.remaps)
+    assert found == [(["/bluetooth_teleop/teleop"], ["/bluetooth_teleop/teleop"]),
+                     (["/twist_marker_server"], [])]

@@ -13,6 +13,7 @@ from weakref import WeakKeyDictionary
 from .. import diagnostics as diag
 from ..diagnostics import Diagnostic
 from ..launch.model import LaunchModel, NodeDecl
+from ..launch.ros2.naming import pattern_matches
 from ..model.conditions import EACH_STATEMENT, Condition
 from ..model.launch_tree import PackageUse, installed_check
 from ..model.location import Location
@@ -149,6 +150,7 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
     for instance, calls in attached:
         _link_calls(instance, calls, resources, config, transports)
     _drop_base_copies(config, attached)
+    config.diagnostics.extend(_foreign_sections(launch, config))
     for action, call, name in action_links(config):
         link(action.node, call, {}, resources, config, name)
     config.launch_tree = launch.tree  # what decide_links asks of includes not read
@@ -157,6 +159,29 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
     config.package_paths = package_paths(launch, workspace)
     config.package_uses = package_uses(launch, workspace, started)
     return config
+
+
+def _foreign_sections(launch: LaunchModel, config: Configuration) -> list[Diagnostic]:
+    """``LAUNCH_PARAMS_NO_NODE`` for each ROS 2 parameter file whose sections are all for
+    names none of the nodes it is given to has (``LaunchModel.foreign_sections``). rcl
+    applies the file in the processes it is given to, so only a node one of them makes
+    can take a section: not said when a node of the configuration has one of the names
+    (a nav2 server's costmap takes its section of the server's file), nor when a node
+    it is given to may make nodes we do not see (its code is not known, or it loads
+    plugins by name)."""
+    names = [n.name for n in config.nodes]
+    by_name = {n.name: n for n in config.nodes}
+    found: list[Diagnostic] = []
+    for item in launch.foreign_sections:
+        given = [by_name.get(name) for name in item.nodes]
+        if any(n is None or n.node is None or n.node.plugin_loads for n in given):
+            continue
+        if any(pattern_matches(p, name) for p in item.patterns for name in names):
+            continue
+        found.append(diag.make("LAUNCH_PARAMS_NO_NODE", item.location, file=item.path,
+                               nodes=", ".join(item.nodes),
+                               patterns=", ".join(item.patterns)))
+    return found
 
 
 def _link_calls(instance: NodeInstance, calls: Sequence[PrimitiveCall], resources: Resources,

@@ -63,6 +63,19 @@ class NodeDecl:
 
 
 @dataclass
+class ForeignSections:
+    """ROS 2: a parameter file whose every section for particular nodes is for a name
+    that none of the nodes it is given to has (``nodes.sections_for_no_node``): the
+    graph says so (``LAUNCH_PARAMS_NO_NODE``) unless a node its process makes has one of
+    those names."""
+
+    path: str
+    nodes: list[str]  # full names of the nodes it is given to
+    patterns: list[str]  # its sections' node name patterns
+    location: Location = NOWHERE  # where it is first given
+
+
+@dataclass
 class ParamDecl:
     """A parameter given a value by the launch file."""
 
@@ -134,6 +147,7 @@ class LaunchModel:
     # from its command line too)
     environment_values: list[str] = field(default_factory=list)
     unread_includes: list[UnreadInclude] = field(default_factory=list)
+    foreign_sections: list[ForeignSections] = field(default_factory=list)
 
 
 def without_tests(model: LaunchModel) -> LaunchModel:

@@ -513,15 +513,18 @@ class Remap:
 
 def _could_use(instance: NodeInstance, name: str) -> bool:
     """Whether ``instance`` may use ``name`` through something the model does not show:
-    an interface partly or wholly unknown; one read from an interface model (a model
-    lists what the code makes in the usual set-up, and a remap is often given for a
-    name a plugin or an option adds: move_base's ``odom`` is its local planner's); a
+    an interface partly or wholly unknown; one read from an interface model of code that
+    loads plugins (a remap is often given for a name a plugin adds: move_base's ``odom``
+    is its local planner's; a complete model of code that loads none lists every name,
+    its options' under their conditions, as the workspace's own code would); a
     container, whose components take the process's remaps; a name with ``?`` that may
     be it; in ROS 1, a name on a handle whose namespace is not known (``?/camera_info``):
     roscpp resolves and remaps a NodeHandle's namespace, so that namespace may be it
     (depth_image_proc's ``NodeHandle(nh, "right")`` with ``right:=projector``)."""
     node = instance.node
-    if node is None or not instance.is_complete or node.model is not None:
+    if node is None or not instance.is_complete or (
+        node.model is not None and node.plugin_loads
+    ):
         return True
     for link in instance.links:
         given = link.rosname.given
@@ -569,11 +572,18 @@ def _near(instance: NodeInstance, name: str) -> list[str]:
 
 
 def remaps_of(nodes: list[NodeInstance]) -> list[Remap]:
-    """The remaps given to ``nodes``, one per ``from:=to`` pair as written (a pair given
-    to several instances is one remap: a list of remappings shared by a launch file's
-    nodes, a ``<remap>`` of a group). Special keys (``__name``, ``__ns``) and a remap of a
-    name to itself are left out."""
-    found: dict[tuple[str, str], Remap] = {}
+    """The remaps given to ``nodes``, one per ``from:=to`` pair as written and name it
+    remaps (a pair given to several instances in one namespace is one remap: a list of
+    remappings shared by a launch file's nodes, a ``<remap>`` of a group; the same text
+    given in two namespaces remaps two names, each its own remap: jackal's teleop.launch
+    gives ``cmd_vel:=/cmd_vel`` to teleop_twist_joy in ``/bluetooth_teleop``, which uses
+    it, and to the marker server in ``/``, which does not). Special keys (``__name``,
+    ``__ns``) are left out. A remap of a name to itself (``imu/data:=imu/data``;
+    ``cmd_vel:=/cmd_vel`` in the root namespace) is kept: it changes nothing here, but it
+    says the author took the name to be one the node uses, and when no node it is given
+    to uses it, that is wrong in every namespace (robot_localization's navsat_transform
+    subscribes ``imu``; interactive_marker_twist_server publishes ``~cmd_vel``)."""
+    found: dict[tuple[str, str, str], Remap] = {}
     # the launch's nodes first: the remaps are theirs; the nodes hosts make can only use
     for instance in sorted(nodes, key=lambda n: n.origin != "launch"):
         rules = resolve_remaps(instance.remaps, instance.namespace, instance.name)
@@ -585,16 +595,22 @@ def remaps_of(nodes: list[NodeInstance]) -> list[Remap]:
             if not source or source.startswith("__"):
                 continue
             name = resolve(source, instance.namespace, instance.name)
-            if name == resolve(target, instance.namespace, instance.name):
-                continue
             used = name in instance.remaps_applied or rules.get(name) in reached
             if instance.origin != "launch":
                 # a node a host makes in its process (nav2's costmaps) takes the
                 # process's remaps, given for the host: a use counts, a non-use does not
-                if used and (source, target) in found:
-                    found[(source, target)].users.append(instance)
+                # (resolved in its own namespace, the name is not its host's: the remap
+                # is the one given to a launch node whose namespace holds it)
+                if used:
+                    inside = instance.namespace.rstrip("/") + "/"
+                    for key, remap in found.items():
+                        if key[:2] == (source, target) and any(
+                            inside.startswith(n.namespace.rstrip("/") + "/")
+                            for n in remap.nodes
+                        ):
+                            remap.users.append(instance)
                 continue
-            remap = found.setdefault((source, target), Remap(source, target))
+            remap = found.setdefault((source, target, name), Remap(source, target))
             remap.nodes.append(instance)
             if used:
                 remap.users.append(instance)

@@ -300,7 +300,9 @@ def _declaration_macro(text: bytes, offset: int) -> str | None:
 def library_prefixes(messages: Iterable[str]) -> set[str]:
     """The words (before a ``_``, three letters or more) that start the folders and file
     names of the headers found missing (``header ogg/ogg.h not found``: ``ogg``;
-    ``urg_c/urg_sensor.h``: ``urg``): the prefixes of the C libraries they declare."""
+    ``urg_c/urg_sensor.h``: ``urg``): the prefixes of the C libraries they declare, each
+    also with ``lib`` before it, as C libraries often name their functions
+    (``libvlc_new`` of <vlc/vlc.h>)."""
     found: set[str] = set()
     for message in messages:
         match = _MISSING_HEADER.match(message)
@@ -310,6 +312,8 @@ def library_prefixes(messages: Iterable[str]) -> set[str]:
             word = part.split(".")[0].split("_")[0]
             if len(word) >= 3 and word.isidentifier():
                 found.add(word)
+                if not word.startswith("lib"):
+                    found.add("lib" + word)
     return found
 
 

@@ -24,6 +24,7 @@ from ..dialect import ros_version
 from ..model import LaunchModel
 from . import entities as e
 from .frontend import Frontend, xml_entities, yaml_entities
+from .nodes import sections_for_no_node
 from .runner import Runner, Scope
 
 __all__ = ["is_ros2", "load"]
@@ -96,6 +97,7 @@ def load(path: str, workspace: Workspace, args: Mapping[str, str] | None = None,
                             workspace.location(path), namespace="/")
     runner.model.tree.append(scope.item)
     runner.run_file(path, scope, workspace.location(path))
+    sections_for_no_node(runner)
     model = runner.model
     for name, value in (args or {}).items():
         model.args.setdefault(name, value)

@@ -13,6 +13,8 @@ from typing import TYPE_CHECKING, Any
 
 from ...model.location import Location
 from ...model.values import UNKNOWN_MARK, Value
+from ...share import share_source
+from ..model import ForeignSections
 from . import entities as e
 from . import naming
 from .runner import make_param, node_decl
@@ -120,6 +122,9 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
         path = runner.value(entry.path, scope, location) if not (
             len(entry.path) == 1 and isinstance(entry.path[0], e.FileRef)) else None
         shared = path.literal if path is not None else None
+        if shared:
+            runner.file_uses.setdefault(shared, []).append(
+                (document, node, location, scope.conditions))
         if UNKNOWN_MARK not in node:
             every = _for_every_node(document, node) if shared else set()
             for name, leaf in naming.params_for_node(document, node):
@@ -178,6 +183,34 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
         runner.model.params.append(param)
     if unseen:
         _unseen(runner, node, scope, unseen[0])
+
+
+def sections_for_no_node(runner: Runner) -> None:
+    """Each parameter file given to nodes by a path known statically whose every section
+    for particular nodes is for a name none of those nodes has (clearpath_control's
+    imu_filter.yaml, ``imu_filter:``, given to the node ``imu_filter_node``): rcl sets
+    none of those parameters (``LaunchModel.foreign_sections``, judged by the graph).
+    Not when a node it is given to has a name not known statically (it may be the
+    section's) or the file has no section for particular nodes (only ``/**``)."""
+    for path, uses in runner.file_uses.items():
+        nodes = list(dict.fromkeys(node for _, node, _, _ in uses))
+        if any(UNKNOWN_MARK in node for node in nodes):
+            continue
+        patterns: list[str] = []
+        for document, _, _, _ in uses:
+            for pattern, _ in naming.node_patterns(document):
+                if pattern == "/**" or any(naming.pattern_matches(pattern, n) for n in nodes):
+                    patterns = []
+                    break
+                if pattern not in patterns:
+                    patterns.append(pattern)
+            else:
+                continue
+            break
+        if patterns:
+            file = runner.workspace.relpath(share_source(runner.workspace, path))
+            runner.model.foreign_sections.append(
+                ForeignSections(file, nodes, patterns, uses[0][2]))
 
 
 def _for_every_node(document: Any, node: str) -> set[str]:

@@ -88,6 +88,11 @@ class Runner:
         # the action lists being run, innermost last (``run``)
         self.running: list[list[e.Action]] = []
         self.param_entries = 0  # parameter entries applied to nodes (nodes.node_params)
+        # each parameter file given to nodes by a path known statically: the document
+        # read for each use, the node's full name, where and under which conditions
+        # (``nodes.sections_for_no_node``)
+        self.file_uses: dict[str, list[tuple[Any, str, Location,
+                                             tuple[Condition, ...]]]] = {}
         self.anon: dict[str, Unknown] = {}
         self.guard: LaunchCondition | None = None  # the condition of the action at hand
         # the unknown output of each Command evaluated, with its command line: a value

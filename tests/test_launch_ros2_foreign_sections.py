@@ -1,0 +1,76 @@
+"""A ROS 2 parameter file whose every section is for a node name that none of the nodes
+it is given to has sets nothing: rcl applies a section only to a node of its name
+(clearpath_control's imu_filter.yaml, ``imu_filter:``, given to the node launched as
+``imu_filter_node``: use_mag, fixed_frame, ... never reached the filter, and nothing
+said so). LAUNCH_PARAMS_NO_NODE; not for a file one of whose sections matches, a file
+of ``/**`` entries, nor a section a node of the process has (a made node's)."""
+
+from __future__ import annotations
+
+import json
+
+from conftest import package_xml
+
+from haros_arch.cli import main
+
+SETUP = """
+    from setuptools import setup
+    setup(name="imu", packages=["imu"],
+          entry_points={"console_scripts": ["filter = imu.filt:main"]})
+    """
+NODE = """
+    import rclpy
+    from sensor_msgs.msg import Imu
+    def main():
+        rclpy.init()
+        node = rclpy.create_node("imu_filter_node")
+        mag = node.declare_parameter("use_mag", True).value
+        node.create_subscription(Imu, "imu/data_raw", print, 10)
+    """
+LAUNCH = """
+    import os
+    from ament_index_python.packages import get_package_share_directory
+    from launch import LaunchDescription
+    from launch_ros.actions import Node
+
+    def generate_launch_description():
+        config = os.path.join(get_package_share_directory("imu"), "config", "{file}")
+        return LaunchDescription([
+            Node(package="imu", executable="filter", name="imu_filter_node",
+                 parameters=[config]),
+        ])
+    """
+
+
+def _check(write_tree, sections: str) -> list[tuple[str, str]]:
+    root = write_tree({
+        "src/imu/package.xml": package_xml("imu", "ament_python"),
+        "src/imu/setup.py": SETUP,
+        "src/imu/imu/__init__.py": "",
+        "src/imu/imu/filt.py": NODE,
+        "src/imu/config/filter.yaml": sections,
+        "src/imu/launch/filter.launch.py": LAUNCH.format(file="filter.yaml"),
+        "project.yaml": "project: p\nconfigurations:\n  c: [imu/launch/filter.launch.py]\n",
+    })
+    out = root / "check.json"
+    main(["check", str(root / "project.yaml"), "--format", "json", "-o", str(out),
+          "--fail-on", "never"])
+    report = json.loads(out.read_text())
+    return [(d["location"]["file"], d["message"]) for d in report["diagnostics"]
+            if d["code"] == "LAUNCH_PARAMS_NO_NODE"]
+
+
+def test_a_file_for_another_node_name_is_said(write_tree) -> None:
+    found = _check(write_tree, "imu_filter:\n  ros__parameters:\n    use_mag: false\n")
+    assert len(found) == 1
+    file, message = found[0]
+    assert file == "imu/launch/filter.launch.py"
+    assert "given to /imu_filter_node" in message and "sections are for /imu_filter" in message
+
+
+def test_a_file_whose_section_matches_or_sets_every_node_is_not(write_tree) -> None:
+    assert _check(write_tree, "imu_filter_node:\n  ros__parameters:\n    use_mag: false\n"
+                              "other:\n  ros__parameters:\n    x: 1\n") == []
+    assert _check(write_tree, "/**:\n  ros__parameters:\n    use_mag: false\n") == []
+    assert _check(write_tree, "/**/imu_filter_node:\n  ros__parameters:\n    use_mag: false\n"
+                  ) == []
