@@ -745,12 +745,13 @@ def _hidden(path: str, errors: list[_Error], finder: CallFinder,
     for name, ranges in recall.skipped_lines(finder.tu).items():
         silent.setdefault(name, []).extend(ranges)  # no code of this build
     wrappers = sorted(n for n in finder.wrappers.site_names if n)
+    bare = finder.wrappers.site_names_bare
     found: list[Diagnostic] = []
     for name in files:
         text = source.text(name)
         if text is None:
             continue
-        sites = recall.call_sites(text, wrappers)
+        sites = recall.call_sites(text, wrappers, bare)
         if not sites:
             continue
         relative = workspace.relpath(name)
