@@ -146,3 +146,24 @@ def test_a_model_file_carries_the_argument_index() -> None:
     for bad in (0, "1", True):
         with pytest.raises(ModelFileError, match="name_arg"):
             from_document(document(bad))
+
+
+def test_a_name_the_arguments_do_not_tell_says_why(write_tree) -> None:
+    root = _tree(write_tree)
+    model = analyse(load(str(root / "project.yaml")), {"PATH": os.environ.get("PATH", "")},
+                    Options(cache_dir=None))
+    config = model.configuration("c")
+    found = sorted((os.path.basename(d.location.file), d.location.line, d.message)
+                   for d in config.diagnostics if d.code == "NAME_ARG_UNSET")
+    none = "argv[argc - 1], which its args ('') do not give; it stays unknown"
+    remap = ("which differs before and after ros::init takes the ':=' words of its args; "
+             "it stays unknown")
+    assert found == [
+        ("early.cpp", 11, "/early_remap: the name of this publish holds the process's "
+         f"command-line argument argv[1], {remap}"),
+        ("early.cpp", 12, "/early_remap: the name of this publish holds the process's "
+         f"command-line argument argv[2], {remap}"),
+        ("server.cpp", 8, "/none: the name of this publish holds the process's "
+         f"command-line argument {none}"),
+        ("server.cpp", 10, "/none: the name of this subscribe holds the process's "
+         f"command-line argument {none}")]

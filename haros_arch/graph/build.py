@@ -205,6 +205,10 @@ def _link_calls(instance: NodeInstance, calls: Sequence[PrimitiveCall], resource
             base = resolved_name(instance, each, remaps, resources)
             if each.name_param is not None and base.is_unresolved:
                 config.diagnostics.append(_name_param_unset(instance, each))
+            if each.name_arg is not None and UNKNOWN_MARK in each.name and not (
+                program_argument(instance, each.name_arg)
+            ):
+                config.diagnostics.append(_name_arg_unset(instance, each))
             if each.transport is None:
                 link(instance, each, remaps, resources, config, base)
                 continue
@@ -727,6 +731,21 @@ def _name_param_unset(instance: NodeInstance, call: PrimitiveCall) -> Diagnostic
             }.get(call.name_each, f"elements of the list parameter {param}")
     return diag.make("NAME_PARAM_UNSET", call.location, node=instance.name,
                      kind=call.kind, what=what)
+
+
+def _name_arg_unset(instance: NodeInstance, call: PrimitiveCall) -> Diagnostic:
+    """Why a name taken from a command-line argument stays unknown."""
+    index = call.name_arg or 0
+    which = f"argv[{index}]" if index > 0 else f"argv[argc - {-index}]"
+    if program_views(instance) is None:
+        why = f"and its args ({instance.args!r}) are not known statically"
+    elif instance.ros_version == 1 and index > 0 and any(
+            ":=" in word for word in instance.args.split()):
+        why = "which differs before and after ros::init takes the ':=' words of its args"
+    else:
+        why = f"which its args ({instance.args!r}) do not give"
+    return diag.make("NAME_ARG_UNSET", call.location, node=instance.name, kind=call.kind,
+                     which=which, why=why)
 
 
 def _numbered_calls(call: PrimitiveCall, full: str, resources: Resources
