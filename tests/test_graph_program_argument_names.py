@@ -167,3 +167,48 @@ def test_a_name_the_arguments_do_not_tell_says_why(write_tree) -> None:
          f"command-line argument {none}"),
         ("server.cpp", 10, "/none: the name of this subscribe holds the process's "
          f"command-line argument {none}")]
+
+
+# rospy: sys.argv is every word as given (roslaunch's := words after the user's),
+# rospy.myargv() what is left without them
+RELAY = """#!/usr/bin/env python
+import sys
+import rospy
+from std_msgs.msg import String
+
+rospy.init_node("relay")
+args = rospy.myargv(argv=sys.argv)
+pub = rospy.Publisher("/" + sys.argv[1] + "/out", String, queue_size=1)
+sub = rospy.Subscriber(args[-1] + "/in", String, lambda m: pub.publish(m))
+raw = rospy.Publisher(sys.argv[-1] + "/raw", String, queue_size=1)
+rospy.spin()
+"""
+
+RELAY_LAUNCH = """<launch>
+  <node pkg="rel" type="relay.py" name="relay" args="left right"/>
+  <node pkg="rel" type="relay.py" name="bare"/>
+</launch>
+"""
+
+
+def test_rospy_names_from_sys_argv_and_myargv(write_tree) -> None:
+    root = write_tree({
+        "src/rel/package.xml": package_xml("rel"),
+        "src/rel/CMakeLists.txt": "project(rel)\n"
+                                  "catkin_install_python(PROGRAMS scripts/relay.py)\n",
+        "src/rel/scripts/relay.py": RELAY,
+        "src/rel/launch/rel.launch": RELAY_LAUNCH,
+        "project.yaml": "project: p\nconfigurations:\n  c: [rel/launch/rel.launch]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {"PATH": os.environ.get("PATH", "")},
+                    Options(cache_dir=None))
+    config = model.configuration("c")
+    names = {(link.node.name, link.kind, link.rosname.full) for link in config.links
+             if link.kind in ("publish", "subscribe")}
+    assert names == {
+        ("/relay", "publish", "/left/out"), ("/relay", "subscribe", "/right/in"),
+        # the last word as given is roslaunch's __log:=: unknown
+        ("/relay", "publish", "/?/raw"),
+        ("/bare", "publish", "/?/out"), ("/bare", "subscribe", "/?/in"),
+        ("/bare", "publish", "/?/raw"),
+    }
