@@ -247,6 +247,7 @@ def _analyse(project: Project, env: Mapping[str, str], options: Options,
             graph.build(config, launches[spec.name], workspace, known,
                         models.plugin_models(launches[spec.name], config.environment))
             config.launch_tree = launches[spec.name].tree
+            graph.external_containers(config, launches[spec.name])
             if spec.hints:
                 where = Location(file=project_file.file, line=spec.line, column=1)
                 config.diagnostics.extend(graph.apply_hints(config, spec.hints, nodes, where))
