@@ -189,7 +189,15 @@ class Interpreter(Expressions):
         module = ("." * stmt.level) + (stmt.module or "")
         found = self.find_module(module, stmt)
         for alias in stmt.names:
-            if found is None and module == "math" and math_constant(alias.name):
+            if found is not None and alias.name == "*":
+                # ``from utils_yaml import *`` (OrbbecSDK_ROS2's orbbec_camera.launch.py):
+                # the module's public names, or those its ``__all__`` lists, as Python
+                listed = found.names.get("__all__")
+                public = [n for n in listed if isinstance(n, str)] if isinstance(
+                    listed, (list, tuple)) else [n for n in found.names
+                                                 if not n.startswith("_")]
+                env.update((n, found.names[n]) for n in public if n in found.names)
+            elif found is None and module == "math" and math_constant(alias.name):
                 env[alias.asname or alias.name] = ops.MATH[alias.name]  # from math import pi
             elif found is None:
                 env[alias.asname or alias.name] = Ref(f"{module}.{alias.name}")
