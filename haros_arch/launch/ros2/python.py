@@ -536,12 +536,15 @@ class Interpreter(Expressions):
     def call_function(self, func: Func, args: list[Any], kwargs: dict[str, Any],
                       node: ast.AST) -> Any:
         given = [*args, *kwargs.values()]
-        if func.node in self.running and given and all(
-                isinstance(v, Unknown) for v in given):
+        unknown = [isinstance(v, Unknown) for v in given]
+        if func.node in self.running and given and (all(unknown) or (
+                any(unknown) and self.running.count(func.node) >= _RECURSION_UNKNOWN)):
             # a function that runs calls itself on values none of which is known (a
-            # walk of a YAML file not read, zed_wrapper's): interpreted, each call
-            # would recurse on another unknown until the depth bound stops the file;
-            # its value is unknown instead
+            # walk of a YAML file not read, zed_wrapper's), or some of which are not,
+            # nested a few times (OrbbecSDK_ROS2's parse_yaml(value, prefix, params) of
+            # a YAML file not read, with params a dict): interpreted, each call would
+            # recurse on another unknown until the depth bound stops the file; its
+            # value is unknown instead
             name = getattr(func.node, "name", "lambda")
             return self.unsupported(node, f"recursive call of {name} on values not known "
                                           "statically")
@@ -680,6 +683,11 @@ def _assigned(body: list[ast.stmt]) -> set[str]:
         stack.extend(ast.iter_child_nodes(node))
     return names
 
+
+# how deep a function may call itself with some argument not known before the call's
+# value is taken as unknown (a walk of a structure not known would go on to the bound,
+# and one that takes both branches of an isinstance() test not known doubles per level)
+_RECURSION_UNKNOWN = 3
 
 # Python's builtin exception classes by name, to tell which handler catches which
 _EXCEPTIONS: dict[str, type] = {
