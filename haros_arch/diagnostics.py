@@ -313,6 +313,12 @@ CATALOGUE: dict[str, Entry] = {
         "warning", "interpretation stopped: {detail}",
         "A launch file exceeded a bound of the static interpreter (steps, call depth, "
         "size of a value, number of actions). What was computed before is kept."),
+    "LAUNCH_CONTAINER_EXTERNAL": Entry(
+        "info", "components are loaded into the container {container}, which this "
+        "configuration does not start: it runs elsewhere, with components not seen here",
+        "A launch file loads components into a container that no launch file of the "
+        "configuration starts (another launch file runs it); what else runs in that "
+        "container is not seen, so checks that claim an absence do not decide."),
     "LAUNCH_PARAM_FILE": Entry(
         "warning", "{detail}",
         "A parameter file given to a node cannot be read or matched statically; the "

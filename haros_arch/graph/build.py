@@ -15,7 +15,7 @@ from ..diagnostics import Diagnostic
 from ..launch.model import LaunchModel, NodeDecl
 from ..launch.ros2.naming import pattern_matches
 from ..model.conditions import EACH_STATEMENT, Condition
-from ..model.launch_tree import PackageUse, installed_check
+from ..model.launch_tree import LaunchItem, PackageUse, installed_check
 from ..model.location import Location
 from ..model.rosname import RosName, namespace_of, remap, resolve, resolve_remaps
 from ..model.runtime import (
@@ -457,6 +457,33 @@ def _program_file(workspace: Workspace, package: str, name: str) -> str | None:
     if not root or not name or "/" in name or UNKNOWN_MARK in name:
         return None
     return find_executable(root, name)
+
+
+def external_containers(config: Configuration, launch: LaunchModel) -> None:
+    """Components the configuration loads into a container it does not start
+    (``LoadComposableNodes(target_container=...)`` of a container that another launch
+    file runs: clearpath_sensors' image_proc launch files load into the camera's
+    ``image_processing_container``): that container runs elsewhere, with components
+    of its own not seen here (the camera driver that publishes the image the loaded
+    node subscribes to). Each such container is an unread part of the launch tree
+    (``query.absence``: checks that claim an absence do not decide), said once
+    (LAUNCH_CONTAINER_EXTERNAL)."""
+    started = {decl.name for decl in launch.nodes}
+    said: set[str] = set()
+    for decl in launch.nodes:
+        target = decl.container
+        if not decl.composable or not target or UNKNOWN_MARK in target or "$(" in target:
+            continue
+        full = target if target.startswith("/") else "/" + target
+        if full in started or target in started or full in said:
+            continue
+        said.add(full)
+        config.diagnostics.append(diag.make("LAUNCH_CONTAINER_EXTERNAL", decl.location,
+                                            container=full))
+        if config.launch_tree:
+            config.launch_tree[0].add(LaunchItem("include", full, decl.location,
+                                                 namespace=decl.namespace,
+                                                 detail="container"))
 
 
 def is_container(decl: NodeDecl) -> bool:

@@ -1344,6 +1344,13 @@ class CallFinder:
         index = spec.default_arg
         if index is not None and index >= len(args) and spec.out_arg == len(args) - 1:
             index = spec.out_arg  # nh.param<T>(name, default) returns the value
+        if index is None and spec.kind == "read" and spec.out_arg is not None \
+                and spec.out_arg < len(args):
+            # ``get_parameter("topic_odometry", topic_)`` leaves the variable as it was
+            # when the parameter is not set: what it holds before is the default
+            # (mrpt_reactivenav2d's ``std::string subTopicOdometry_ = "/odom";``)
+            kept = _kept_value(args[spec.out_arg], scope)[1]
+            default = kept if isinstance(kept, str) else None
         if index is not None and index < len(args):
             parts = scope.string(args[index])
             if _known(parts):
