@@ -35,6 +35,7 @@ topics are ``sensor_msgs/Image``); in a ROS 2 node it is written ``pkg/msg/Name`
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 
 from ...model.source import LIFECYCLE_EVENTS, LIFECYCLE_SERVICES, CallKind
@@ -102,6 +103,10 @@ class RosFunction:
     # the call's name is the name argument's then this (a parameter client's remote node
     # + "/get_parameters"); no name argument, or an empty one, is the node's own "~"
     name_suffix: str | None = None
+    # with no name argument (none of ``name_candidates`` a string) the call is not one:
+    # pal_statistics' getRegistry(key) finds a registry made before, getRegistry(node,
+    # topic) makes one
+    name_required: bool = False
     # a name written empty makes no call: message_filters::Subscriber(nh, "", q) is a
     # filter its owner feeds through add(); it subscribes only to a topic not empty
     empty_is_none: bool = False
@@ -337,7 +342,20 @@ _PARAMETER_CLIENT = RosFunction(
 _PARAMETER_EVENTS = RosFunction(
     "subscribe", fixed_name="/parameter_events",
     fixed_type="rcl_interfaces/msg/ParameterEvent", on_handle=False)
+# pal_statistics: the registry made for a node's topic T (argument 1 of the node overloads,
+# 4 of getOrCreateRegistry's interfaces one, 5 of getRegistry's) publishes the statistics
+# on T/full, their names on T/names and their values on T/values
+_PAL_STATISTICS: tuple[Sibling, ...] = tuple(
+    ("publish", part, f"pal_statistics_msgs/msg/{kind}") for part, kind in (
+        ("names", "StatisticsNames"), ("values", "StatisticsValues")))
+_PAL_REGISTRY = RosFunction(
+    "publish", name_arg=1, name_candidates=(1, 4), on_handle=False, name_suffix="full",
+    name_required=True, fixed_type="pal_statistics_msgs/msg/Statistics",
+    siblings=_PAL_STATISTICS)
 RCLCPP_LIBRARIES: dict[tuple[str, str], RosFunction] = {
+    ("pal_statistics", "getOrCreateRegistry"): _PAL_REGISTRY,
+    ("pal_statistics", "getRegistry"): dataclasses.replace(_PAL_REGISTRY,
+                                                           name_candidates=(1, 5)),
     # rclcpp::create_publisher<M>(node, topic, qos, options), as nav2's factories call it
     ("rclcpp", "create_publisher"): RosFunction(
         "publish", type_from=("template",), on_handle=False, name_arg=1, qos_arg=2),

@@ -115,6 +115,7 @@ UMBRELLAS = {
     "camera_info_manager/": "camera_info_manager/camera_info_manager.h",
     "bondcpp/": "bondcpp/bond.hpp",
     "realtime_tools/": "realtime_tools/realtime_publisher.h",
+    "pal_statistics/": "pal_statistics/pal_statistics_macros.hpp",
     # test nodes (rostest, launch_testing): without it a TEST's body, and every ROS call
     # in it, is lost to the parse errors of its macros
     "gtest/": "gtest/gtest.h", "gmock/": "gtest/gtest.h",

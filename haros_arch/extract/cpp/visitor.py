@@ -938,7 +938,7 @@ class CallFinder:
                 if index < len(args) and msg_types.param_type(args[index].type) == "str":
                     name_expr = args[index]
                     break
-            if name_expr is None and spec.name_suffix is None:
+            if name_expr is None and (spec.name_suffix is None or spec.name_required):
                 return
             sites = self.sites
             if sites is not None:

@@ -549,7 +549,8 @@ class NodeBaseInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeBaseInterface
   std::string resolve_topic_or_service_name(const std::string& name, bool is_service,
       bool only_expand = false) const;
   template<class... A> std::shared_ptr<CallbackGroup> create_callback_group(A&&... args);
-  std::shared_ptr<CallbackGroup> get_default_callback_group(); };
+  std::shared_ptr<CallbackGroup> get_default_callback_group();
+  std::atomic_bool& get_associated_with_executor_atomic(); };
 class NodeTopicsInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeTopicsInterface)
   std::string resolve_topic_name(const std::string& name, bool only_expand = false) const; };
 // rclcpp's parameter API on the node's parameters interface (api.RCLCPP_INTERFACES)
