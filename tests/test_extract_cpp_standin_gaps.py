@@ -375,3 +375,42 @@ def test_ros2_posix_shared_memory_signals_and_eight_placeholders(write_tree) -> 
     assert _errors(result) == []
     assert [(c.kind, c.name) for c in result.calls if c.kind == "publish"] == [
         ("publish", "status")]
+
+
+# ros2_control's controller base and manager (jazzy): an atomic stored with a memory
+# order, a lifecycle callback registered on the node, typeid (ControllerManager::
+# load_controller); their errors sat in functions that call the ROS API
+ROS2_CONTROL_BASE = """
+#include <atomic>
+#include <typeinfo>
+#include "rclcpp/rclcpp.hpp"
+#include "rclcpp_lifecycle/lifecycle_node.hpp"
+class Base {
+public:
+  void init()
+  {
+    node_ = std::make_shared<rclcpp_lifecycle::LifecycleNode>("base", "", rclcpp::NodeOptions(),
+                                                              false);
+    id_.store(1, std::memory_order_release);
+    node_->register_on_configure(
+      [this](const rclcpp_lifecycle::State &) {
+        id_.store(2, std::memory_order_release);
+        return rclcpp_lifecycle::LifecycleNode::CallbackReturn::SUCCESS;
+      });
+    RCLCPP_INFO(node_->get_logger(), "%s", typeid(*this).name());
+    pub_ = node_->create_publisher<std_msgs::msg::String>("state", 1);
+  }
+  virtual ~Base() = default;
+private:
+  std::atomic<int> id_;
+  rclcpp_lifecycle::LifecycleNode::SharedPtr node_;
+  std::shared_ptr<rclcpp::Publisher<std_msgs::msg::String>> pub_;
+};
+"""
+
+
+def test_ros2_control_base_atomic_order_lifecycle_registration_typeid(write_tree) -> None:
+    result = _extract(write_tree, "#include \"std_msgs/msg/string.hpp\"\n" + ROS2_CONTROL_BASE,
+                      "ament_cmake")
+    assert _errors(result) == []
+    assert ("publish", "state") in [(c.kind, c.name) for c in result.calls]

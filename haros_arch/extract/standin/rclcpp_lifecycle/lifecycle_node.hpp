@@ -55,6 +55,13 @@ public:
   virtual CallbackReturn on_cleanup(const State& state);
   virtual CallbackReturn on_shutdown(const State& state);
   virtual CallbackReturn on_error(const State& state);
+  // a transition's callback set without deriving (ros2_control's controller base)
+  bool register_on_configure(std::function<CallbackReturn(const State&)> fcn);
+  bool register_on_cleanup(std::function<CallbackReturn(const State&)> fcn);
+  bool register_on_shutdown(std::function<CallbackReturn(const State&)> fcn);
+  bool register_on_activate(std::function<CallbackReturn(const State&)> fcn);
+  bool register_on_deactivate(std::function<CallbackReturn(const State&)> fcn);
+  bool register_on_error(std::function<CallbackReturn(const State&)> fcn);
   const State& configure();
   const State& activate();
   const State& deactivate();

@@ -787,6 +787,17 @@ template<class T> optional(T) -> optional<T>;  // std::optional{value}
 template<class T> optional<typename decay<T>::type> make_optional(T&& v);
 template<class T, class... A> optional<T> make_optional(A&&... args);
 
+// <typeinfo>: what ``typeid`` gives (clang refuses typeid with no std::type_info)
+class type_info {
+public:
+  virtual ~type_info();
+  const char* name() const noexcept;
+  bool before(const type_info& other) const noexcept;
+  size_t hash_code() const noexcept;
+  bool operator==(const type_info& other) const noexcept;
+  bool operator!=(const type_info& other) const noexcept;
+};
+
 // <exception>, <stdexcept>
 class exception {
 public:
@@ -1241,15 +1252,18 @@ public:
 typedef condition_variable condition_variable_any;
 struct once_flag { once_flag(); };
 template<class F, class... A> void call_once(once_flag& flag, F&& f, A&&... args);
+enum memory_order { memory_order_relaxed, memory_order_consume, memory_order_acquire,
+                    memory_order_release, memory_order_acq_rel, memory_order_seq_cst };
 template<class T> struct atomic {
   atomic() noexcept;
   constexpr atomic(T v) noexcept;
   T operator=(T v) noexcept;
   operator T() const noexcept;
-  T load() const noexcept;
-  void store(T v) noexcept;
-  T exchange(T v) noexcept;
-  bool compare_exchange_strong(T& expected, T desired) noexcept;
+  T load(memory_order order = memory_order_seq_cst) const noexcept;
+  void store(T v, memory_order order = memory_order_seq_cst) noexcept;
+  T exchange(T v, memory_order order = memory_order_seq_cst) noexcept;
+  bool compare_exchange_strong(T& expected, T desired,
+                               memory_order order = memory_order_seq_cst) noexcept;
   T operator++() noexcept;
   T operator++(int) noexcept;
   T operator--() noexcept;
