@@ -103,6 +103,16 @@ class RosFunction:
     # the call's name is the name argument's then this (a parameter client's remote node
     # + "/get_parameters"); no name argument, or an empty one, is the node's own "~"
     name_suffix: str | None = None
+    # the suffix is written after the name argument as it is, not joined as a name (a
+    # parameter prefix "async_parameters." + "thread_priority")
+    suffix_appended: bool = False
+    # a parameter read the library makes with its own default (or only when the
+    # parameter is set): has_default, as its siblings' reads
+    library_default: bool = False
+    # the method's name marks a line as a ROS call site for the recall check
+    # (``recall.site_pattern``); not a name as common as realtime_tools' ``initialize``
+    # (ros2_control's ``hardware.initialize(params)`` is no ROS call)
+    call_site: bool = True
     # with no name argument (none of ``name_candidates`` a string) the call is not one:
     # pal_statistics' getRegistry(key) finds a registry made before, getRegistry(node,
     # topic) makes one
@@ -312,6 +322,16 @@ LIBRARIES: dict[tuple[str, str], RosFunction] = {
         siblings=(("subscribe", "", "bond/Status"),), ros2=RosFunction(
             "publish", fixed_type="bond/msg/Status", on_handle=False,
             siblings=(("subscribe", "", "bond/msg/Status"),))),
+    # realtime_tools (jazzy on): AsyncFunctionHandlerParams::initialize(node, prefix)
+    # reads the handler's settings under the prefix (argument 1), each only when the node
+    # has it (``has_parameter``), else the struct's default
+    ("realtime_tools::AsyncFunctionHandlerParams", "initialize"): RosFunction(
+        "read", name_arg=1, on_handle=False, name_suffix="thread_priority",
+        suffix_appended=True, library_default=True, fixed_type="int", call_site=False,
+        siblings=(("read", "cpu_affinity", "int[]"), ("read", "scheduling_policy", "str"),
+                  ("read", "execution_rate", "int"),
+                  ("read", "wait_until_initial_trigger", "bool"),
+                  ("read", "print_warnings", "bool"))),
     ("tf::TransformBroadcaster", "TransformBroadcaster"): RosFunction(
         "publish", fixed_name="/tf", fixed_type=_TF, on_handle=False),
     ("tf::TransformListener", "TransformListener"): RosFunction(

@@ -89,8 +89,8 @@ def site_pattern(extra: frozenset[str] = frozenset()) -> re.Pattern[str]:
     # a method of a class (``ros::NodeHandle``) is called on an object; a function of a
     # namespace (``ros::param::search``, ``ros::service::exists``) is not, and ``.search(``
     # on any other object is no call of it: it is found written with its namespace
-    names = {name for owner, name in api.ALL if name[:1].islower() and len(name) > 4
-             and _is_class(owner)}
+    names = {name for (owner, name), row in api.ALL.items() if name[:1].islower()
+             and len(name) > 4 and _is_class(owner) and row.call_site}
     scoped = {f"{owner.rsplit('::', 1)[-1]}::{name}" for owner, name in api.ALL
               if name[:1].islower() and not _is_class(owner)}
     bare = {name for name in names if "_" in name} | set(extra)

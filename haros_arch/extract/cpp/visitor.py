@@ -951,7 +951,8 @@ class CallFinder:
                 if not names:
                     return
             if spec.name_suffix is not None:  # a parameter client: the remote's services
-                names = [(join_name(name or "~", spec.name_suffix), source)
+                names = [(name + spec.name_suffix if spec.suffix_appended
+                          else join_name(name or "~", spec.name_suffix), source)
                          for name, source in names]
         owner = self._owner
         if spec.on_handle:  # node->create_x(...), node = rclcpp::Node::make_shared("x")
@@ -985,6 +986,7 @@ class CallFinder:
                 if declared[2] is not None:
                     holds = (declared[1], declared[2])
         has_default, default = self._default(spec, args, scope)
+        has_default = has_default or spec.library_default
         if spec.kind in ("read", "declare"):
             default = _converted(default, ctype)
         program_arg = program_argument(arg(spec.type_arg), scope) if (
