@@ -60,3 +60,38 @@ def test_a_method_named_initialize_is_no_ros_call_site() -> None:
     from haros_arch.extract.cpp.recall import call_sites
     text = "void f() {\n  auto state = hardware.initialize(component_params);\n}\n"
     assert call_sites(text) == []
+
+
+def test_an_unknown_class_s_initialize_is_still_declared_permissively(write_tree) -> None:
+    # the form of ros2_controllers' admittance_rule_impl.hpp:62, kinematics_->initialize
+    # (...) on a class of a library with no stand-in: the node given to it makes the node
+    # partial. (A guard: on admittance_controller itself the row's ``initialize`` kept
+    # out of the permissive declarations lost this; this small unit declares the member
+    # from clang's error either way.)
+    source = """
+#include "rclcpp/rclcpp.hpp"
+#include "kinematics_interface/kinematics_interface.hpp"
+class Rule {
+public:
+  void configure(const std::shared_ptr<rclcpp::Node> & node)
+  {
+    kinematics_->calculate_link_transform(joints_, "tip", transform_);
+    if (!kinematics_->initialize(description_, node->get_node_parameters_interface(), "tip")) {
+      return;
+    }
+    pub_ = node->create_publisher<std_msgs::msg::String>("state", 1);
+  }
+private:
+  std::unique_ptr<kinematics_interface::KinematicsInterface> kinematics_;
+  std::vector<double> joints_;
+  std::vector<double> transform_;
+  std::string description_;
+  std::shared_ptr<rclcpp::Publisher<std_msgs::msg::String>> pub_;
+};
+"""
+    root = write_tree({"pkg/package.xml": package_xml("pkg", "ament_cmake"),
+                       "pkg/src/node.cpp": '#include "std_msgs/msg/string.hpp"\n' + source})
+    result = extract_cpp([str(root / "pkg" / "src" / "node.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    assert [d.code for d in result.diagnostics if d.code == "CPP_NODE_TO_UNKNOWN"] == [
+        "CPP_NODE_TO_UNKNOWN"]

@@ -444,8 +444,11 @@ class Names:
         from . import api
         # the API's methods (longer than four letters, as ``recall`` counts them: ``get``
         # / ``set`` / ``call`` are any class's) stay the API's: a class built on a real
-        # node and a declared class would find the name twice
-        skip = _KEYWORDS | {name for _, name in api.ALL if len(name) > 4}
+        # node and a declared class would find the name twice; not a name too common to
+        # be the API's (``call_site``: realtime_tools' ``initialize``, which an unknown
+        # class's method of that name, kinematics_interface's, must still be)
+        skip = _KEYWORDS | {name for (_, name), row in api.ALL.items()
+                            if len(name) > 4 and row.call_site}
         for text in texts:
             if text is not None:
                 self.members.update(
