@@ -360,7 +360,9 @@ CATALOGUE: dict[str, Entry] = {
         "An error the parse could not get past is inside a function that calls the ROS "
         "API, so a call there may be missing or read with a wrong name or type. The node "
         "is 'partial'. Errors in code that calls no ROS API cannot hide a call and leave "
-        "the node complete."),
+        "the node complete, as does an unqualified call of a standard function clang "
+        "could not find through its arguments' types (make_pair(x->name(), x) with x of "
+        "a header the parse lacks) outside the statement of a ROS call."),
     "CPP_PLUGINS_LOADED": Entry(
         "info", "{text}: loads plugin classes through pluginlib",
         "The code creates instances of plugin classes by name (pluginlib's "
