@@ -465,12 +465,24 @@ CATALOGUE: dict[str, Entry] = {
         "Messages, services and actions, the classes the API tables model (rospy, rclpy, "
         "actionlib, tf, tf2_ros, message_filters) and packages known to make no ROS call "
         "(tf_transformations, cv_bridge, image_geometry, ...) do not count."),
+    "PY_LAUNCHES": Entry(
+        "info", "{call} starts the nodes of a launch file at run time (roslaunch's "
+        "Python API); what it starts is not read",
+        "A Python program runs roslaunch in its own process (``roslaunch.main(argv)``, "
+        "``roslaunch.parent.ROSLaunchParent``, ``roslaunch.scriptapi.ROSLaunch``): magni's "
+        "launch_core.py writes the robot's core launch file from a template and runs it. "
+        "The nodes it starts, and what they communicate, are decided at run time, so "
+        "the node is 'partial' and checks that claim something is absent do not decide "
+        "on it, rather than take a robot's whole base for a node with no interface."),
     "PY_NODE_PARTIAL": Entry(
-        "warning", "node {node}: its calls may be incomplete, {count} of its Python "
-        "sources could not be read or analysed in full (first: {first})",
-        "A source of the node could not be read or parsed, or was too large to analyse: "
-        "calls in it may be missing. The node model is 'partial' (completeness, with "
-        "the first reasons); checks that claim something is absent do not trust it."),
+        "warning", "node {node}: its calls may be incomplete, {count} place(s) in its "
+        "Python sources where calls may be missing or made by code not read (first: "
+        "{first})",
+        "A source of the node could not be read or parsed, or was too large to analyse, "
+        "or the node builds a class whose code is not read (PY_CLASS_UNSEEN) or runs "
+        "roslaunch in its process (PY_LAUNCHES): calls may be missing. The node model is "
+        "'partial' (completeness, with the first reasons); checks that claim something "
+        "is absent do not trust it."),
     "CPP_PARAMETER_LIBRARY": Entry(
         "warning", "generate_parameter_library's YAML of {target} cannot be used: {detail}",
         "The header generate_parameter_library writes at build time is synthesised from "

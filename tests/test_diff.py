@@ -187,7 +187,8 @@ EXPECTED = {
         "/rover/lidar/scan but nothing publishes it  (demo_rover/src/lidar_filter.cpp:21:21)",
         "diagnostics",
         "+ new warning [PY_NODE_PARTIAL] node demo_rover/safety_stop.py: its calls may be "
-        "incomplete, 1 of its Python sources could not be read or analysed in full (first: "
+        "incomplete, 1 place(s) in its Python sources where calls may be missing or made "
+        "by code not read (first: "
         f"{PY}:25: Python syntax error: invalid syntax)  (demo_rover/CMakeLists.txt:16:1)",
         f"+ new error [PY_PARSE_ERROR] Python syntax error: invalid syntax  ({PY}:25:10)"],
     # lines moved: no link, resource or finding changes (they are not keyed by line)

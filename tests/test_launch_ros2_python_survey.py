@@ -642,3 +642,36 @@ def generate_launch_description():
     assert [bool(n.conditions) for n in model.nodes] == [False, False, True, False, True]
     messages = [d.message for d in model.diagnostics]
     assert any("launch description that does not hold it" in m for m in messages)
+
+
+def test_the_name_of_a_declared_argument_keys_a_dict_of_every_argument(write_tree):
+    """OrbbecSDK_ROS2's camera launch files: ``{arg.name: LaunchConfiguration(arg.name)
+    .perform(context) for arg in args}`` over a list of DeclareLaunchArgument makes the
+    node's parameters, one per argument. ``arg.name`` is the argument's name (it was a
+    method waiting for a call, and a dict key that cannot be hashed stopped the run)."""
+    model, _ = run(write_tree, """
+def load(context, args):
+    return {arg.name: LaunchConfiguration(arg.name).perform(context) for arg in args}
+
+def generate_launch_description():
+    args = [DeclareLaunchArgument('fps', default_value='30'),
+            DeclareLaunchArgument('serial', default_value='')]
+    return LaunchDescription(args + [OpaqueFunction(function=lambda context: [
+        Node(package='p', executable='e', name='cam', parameters=[load(context, args)])])])
+""")
+    assert [n.name for n in model.nodes] == ["/cam"]
+    params = {p.name: p.value for p in model.params}
+    assert params == {"/cam/fps": "30", "/cam/serial": ""}, params
+    assert "LAUNCH_PY_UNSUPPORTED" not in codes(model)
+
+
+def test_a_dict_key_that_cannot_be_hashed_is_not_known(write_tree):
+    """A dict comprehension whose key is a value the interpreter cannot hash (here a
+    method of an action, never called) makes an unknown key, not a crash."""
+    model, _ = run(write_tree, """
+def generate_launch_description():
+    args = [DeclareLaunchArgument('fps', default_value='30')]
+    table = {arg.description: 1 for arg in args}
+    return LaunchDescription(args + [Node(package='p', executable='e', name='cam')])
+""")
+    assert [n.name for n in model.nodes] == ["/cam"]

@@ -370,8 +370,11 @@ def test_the_jazzy_spawner_is_in_controller_manager_s_model(write_tree):
     })
     config = _configuration(root)
     (spawner,) = config.nodes
-    assert spawner.node is not None and spawner.node.model.startswith(
-        "jazzy/controller_manager ")
+    # its arguments name its node and the manager's services it calls: they are taken
+    # over the model's (``models.commands``), which builds those names from sys.argv
+    assert spawner.node is not None and spawner.node.model == (
+        "the arguments of controller_manager spawner")
+    assert spawner.name == "/spawner_joint_state_broadcaster"
     assert "MODEL_NODE_MISSING" not in {d.code for d in config.diagnostics}
 
 

@@ -617,3 +617,64 @@ def test_a_costmap_a_server_makes_keeps_its_own_unnamed_calls():
     names = links_of(config, "/global_costmap/global_costmap")
     assert ("read", "/global_costmap/global_costmap/static.enabled") in names
     assert ("server", "/global_costmap/clear_except_?") in names
+
+
+def test_a_ros2_spawner_is_named_and_calls_the_manager_as_its_arguments_say():
+    """controller_manager's ROS 2 spawner names itself ``spawner_<first controller>``
+    and calls the manager's services that ``-c`` / ``--namespace`` name. Its interface
+    model (names built from sys.argv) had the node ``/?`` calling a service ``/?``: every
+    ros2_control launch file (turtlebot3_manipulation's base.launch.py, franka's) showed
+    spawners without names and service calls that no server could be matched to."""
+    model = Node("controller_manager", "spawner", "executable", "python",
+                 calls=[call("client", UNKNOWN_MARK)], rosname=f"spawner_{UNKNOWN_MARK}")
+    model.completeness = "model"
+    decls = [ros2(NodeDecl("/robot/controller_manager", "controller_manager",
+                           "ros2_control_node", "/robot/")),
+             ros2(NodeDecl(f"/robot/{UNKNOWN_MARK}", "controller_manager", "spawner",
+                           "/robot/", args="joint_state_broadcaster arm -c controller_manager")),
+             ros2(NodeDecl(f"/{UNKNOWN_MARK}", "controller_manager", "spawner", "/",
+                           args="gripper --load-only --namespace robot -t pkg/G "
+                                "--ros-args --log-level warn")),
+             ros2(NodeDecl(f"/{UNKNOWN_MARK}", "controller_manager", "spawner", "/",
+                           args=f"{UNKNOWN_MARK} -c /cm"))]
+    config = graph(decls, nodes=[model])
+    names = sorted(n.name for n in config.nodes if n.node is not None
+                   and n.node.executable == "spawner")
+    assert names == [f"/{UNKNOWN_MARK}", "/robot/spawner_joint_state_broadcaster",
+                     "/spawner_gripper"], names
+    manager = "/robot/controller_manager"
+    assert links_of(config, "/robot/spawner_joint_state_broadcaster") == [
+        ("client", f"{manager}/{verb}") for verb in (
+            "configure_controller", "list_controllers", "load_controller",
+            "switch_controller")]
+    assert links_of(config, "/spawner_gripper") == [
+        ("client", f"{manager}/{verb}") for verb in (
+            "list_controllers", "load_controller", "set_parameters")]
+    # controllers not known: the model's node, as before
+    assert links_of(config, f"/{UNKNOWN_MARK}") == [("client", f"/{UNKNOWN_MARK}")]
+    assert "NODE_NAME_GUESSED" not in [d.code for d in config.diagnostics]
+
+
+def test_a_controller_whose_class_is_not_here_is_a_node_of_unknown_interface(tmp_path):
+    """turtlebot3_manipulation's base.launch.py spawns joint_state_broadcaster and four
+    more controllers of ros2_controllers, whose sources are not in the workspace (their
+    types in hardware_controller_manager.yaml). Each is a node of its own all the same,
+    named after the controller, its interface unknown; before, no node was made and the
+    manager was marked partial instead, though its own interface is known."""
+    params = tmp_path / "controllers.yaml"
+    params.write_text("controller_manager:\n  ros__parameters:\n    jsb:\n"
+                      "      type: joint_state_broadcaster/JointStateBroadcaster\n")
+    manager = Node("controller_manager", "ros2_control_node", calls=[
+        call("publish", "~/activity", "std_msgs/msg/String")])
+    decls = [ros2(NodeDecl("/controller_manager", "controller_manager",
+                           "ros2_control_node", "/")),
+             ros2(NodeDecl(f"/{UNKNOWN_MARK}", "controller_manager", "spawner", "/",
+                           args=f"jsb --param-file {params}"))]
+    config = graph(decls, nodes=[manager], root=str(tmp_path))
+    added = {n.name: n for n in config.nodes if n.origin == "plugin"}
+    assert list(added) == ["/jsb"] and added["/jsb"].node is None
+    assert links_of(config, "/jsb") == base_declares("/jsb")
+    host = next(n for n in config.nodes if n.name == "/controller_manager")
+    assert host.node is not None and host.node.completeness == "complete"
+    assert [d.code for d in config.diagnostics if d.code.startswith("PLUGIN")] == [
+        "PLUGIN_NOT_FOUND"]

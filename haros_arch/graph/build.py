@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import bisect
 import os
 import shlex
 from collections.abc import Mapping, Sequence
@@ -30,7 +31,7 @@ from ..model.runtime import (
 )
 from ..model.source import NUMBERED, Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK, Unknown
-from ..models.commands import command_node
+from ..models.commands import by_arguments, command_node
 from ..plugins.attach import PluginModels, class_packages
 from ..plugins.attach import attach as attach_plugins
 from ..plugins.transports import Transports
@@ -378,11 +379,19 @@ def _namespace_values(config: Configuration) -> None:
     sets ``gains/P``, ``gains/I``) holds the dictionary of what is set under it, as the
     parameter server answers."""
     set_params = [p for p in config.parameters if p.set_by_launch]
+    # their names in order, and each one's place among them: the names under a prefix
+    # are one run of the sorted names (found by bisection, then taken in their order)
+    order = sorted(range(len(set_params)), key=lambda index: set_params[index].name)
+    names = [set_params[index].name for index in order]
     for param in config.parameters:
         if param.set_by_launch or not param.readers or param.is_unresolved:
             continue
         prefix = param.name.rstrip("/") + "/"
-        below = [p for p in set_params if p.name.startswith(prefix)]
+        first = bisect.bisect_left(names, prefix)
+        last = first
+        while last < len(names) and names[last].startswith(prefix):
+            last += 1
+        below = [set_params[index] for index in sorted(order[first:last])]
         if not below:
             continue
         tree: dict[str, Any] = {}
@@ -407,7 +416,10 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
               config: Configuration) -> NodeInstance:
     key = node_key(decl, nodes)
     plugin = nodelet_plugin(decl)
-    node = nodes.get(key) or command_node(decl)  # rostopic pub: its arguments say
+    # rostopic pub, a ROS 2 spawner: its arguments say (a spawner's first: its code or
+    # interface model builds its names from sys.argv)
+    node = (command_node(decl) if by_arguments(decl) else None) or nodes.get(key) \
+        or command_node(decl)
     if node is None and plugin is None and is_container(decl):
         # a nodelet manager or component container: what it loads are node instances of
         # their own; the process's own interface is its loader's services, known

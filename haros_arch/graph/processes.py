@@ -29,10 +29,19 @@ from ..launch.model import LaunchModel, NodeDecl, ParamDecl
 from ..launch.ros2.naming import pattern_matches
 from ..model.source import Node
 from ..model.values import UNKNOWN_MARK
+from ..models.commands import by_arguments, command_node
 
 
 def node_key(decl: NodeDecl) -> str:
     return f"{decl.package}/{decl.executable}"
+
+
+def code_node(decl: NodeDecl, nodes: Mapping[str, Node]) -> Node | None:
+    """The node a declaration runs: the one its arguments make when they say all (a
+    ROS 2 controller spawner, ``commands.by_arguments``), else the code's or interface
+    model's, else the one its arguments make (``rostopic pub``), if any."""
+    made = command_node(decl) if by_arguments(decl) else None
+    return made or nodes.get(node_key(decl)) or command_node(decl)
 
 
 def process_nodes(decls: Sequence[NodeDecl], nodes: Mapping[str, Node]
@@ -44,7 +53,7 @@ def process_nodes(decls: Sequence[NodeDecl], nodes: Mapping[str, Node]
         if not owns:
             yield decl, None
             continue
-        guessed = nodes.get(node_key(decl)) is None  # named after its executable
+        guessed = code_node(decl, nodes) is None  # named after its executable
         for own in owns:
             name = _renamed(decl, own)
             yield (decl if name == decl.name else replace(
@@ -84,7 +93,7 @@ def guessed_names(launch: LaunchModel, nodes: Mapping[str, Node]) -> list[Diagno
     return [diag.make("NODE_NAME_GUESSED", decl.location, name=_renamed(decl, names[0]),
                       executable=decl.executable)
             for decl in launch.nodes
-            if nodes.get(node_key(decl)) is None and (names := _own_names(decl, nodes))]
+            if code_node(decl, nodes) is None and (names := _own_names(decl, nodes))]
 
 
 def unnamed_param_files(launch: LaunchModel, nodes: Mapping[str, Node]) -> list[Diagnostic]:
@@ -98,12 +107,12 @@ def unnamed_param_files(launch: LaunchModel, nodes: Mapping[str, Node]) -> list[
                       detail=f"parameter file applied to {decl.name}, whose name is not "
                              "known here: only its /** entries are used")
             for decl in launch.nodes if decl.unnamed_param_files
-            and (nodes.get(node_key(decl)) is None or not _own_names(decl, nodes))
+            and (code_node(decl, nodes) is None or not _own_names(decl, nodes))
             for where in decl.unnamed_param_files]
 
 
 def _own_names(decl: NodeDecl, nodes: Mapping[str, Node]) -> list[str]:
-    node = nodes.get(node_key(decl))
+    node = code_node(decl, nodes)
     if node is None and decl.ros_version == 2 and _unnamed(decl) and not decl.composable \
             and decl.executable and UNKNOWN_MARK not in decl.executable:
         # no code: rcl would use the name the code gives; the executable's name is the

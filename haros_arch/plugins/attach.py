@@ -157,7 +157,17 @@ def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str
     out: list[tuple[NodeInstance, list[PrimitiveCall]]] = []
     node = _lookup(choice, index, workspace, models)
     reader = instance
-    if node is None:
+    if node is None and slot.placement == "node" and _named_class(choice):
+        # a controller of a class known by name that no package here or model exports
+        # (ros2_controllers' JointStateBroadcaster without its source): still a node of
+        # its own, of unknown interface; the host's own interface is whole
+        config.diagnostics.append(_not_found(choice, instance.name))
+        reader = _plugin_instance(instance, choice, None, config)
+        if slot.declares:
+            out.append((reader, [PrimitiveCall(
+                "declare", name, location=choice.location, conditions=choice.conditions,
+                has_default=True, origin="plugin") for name in slot.declares]))
+    elif node is None:
         _missing(config, instance, choice, owned)
     elif slot.placement == "node":
         reader = _plugin_instance(instance, choice, node, config)
@@ -368,6 +378,13 @@ def _given(choice: Choice, slot: Slot) -> str:
     if slot.name_from_class and choice.cls:
         return choice.cls.rsplit("/", 1)[-1].rsplit("::", 1)[-1]
     return choice.name
+
+
+def _named_class(choice: Choice) -> bool:
+    """A choice whose plugin name and class are both known (PLUGIN_NOT_FOUND, not
+    PLUGIN_CLASS_UNKNOWN)."""
+    return bool(choice.name) and UNKNOWN_MARK not in choice.name and bool(
+        choice.cls) and UNKNOWN_MARK not in (choice.cls or "")
 
 
 def _not_found(choice: Choice, host: str) -> diag.Diagnostic:
@@ -700,7 +717,7 @@ def _set_params(params: Params, node_name: str, values: Mapping[str, Any],
         parameter.launch_conditions = conditions
 
 
-def _plugin_instance(host: NodeInstance, choice: Choice, node: Node,
+def _plugin_instance(host: NodeInstance, choice: Choice, node: Node | None,
                      config: Configuration) -> NodeInstance:
     """A node instance of its own for a controller loaded into ``host``."""
     namespace = host.namespace if host.namespace.endswith("/") else host.namespace + "/"

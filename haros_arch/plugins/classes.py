@@ -208,7 +208,7 @@ def exported_classes(path: str, workspace: Files) -> list[tuple[str, int]]:
 
 
 def _exported(path: str, workspace: Files) -> list[tuple[str, int]]:
-    text, _ = read_text(path, workspace.location(path))
+    text = _text(path, workspace)
     if not text or not any(mark in text for mark in _EXPORT_MARKS):
         return []
     text = code_only(text)
@@ -350,8 +350,8 @@ def _local_classes(source: str, workspace: Files) -> set[str]:
     if not source.endswith(_C_SOURCES):
         return set()
     path = os.path.join(workspace.root, source)
-    text, _ = read_text(path, workspace.location(path))
-    return set(_CLASS.findall(text or ""))
+    return remembered("local classes", path, workspace,
+                      lambda: set(_CLASS.findall(_text(path, workspace) or "")))
 
 
 def _defined(source: str, workspace: Files) -> set[str]:
@@ -366,8 +366,7 @@ def defined_in(sources: Iterable[str], workspace: Files) -> set[str]:
 
 def _read_defined(source: str, workspace: Files) -> set[str]:
     path = os.path.join(workspace.root, source)
-    text, _ = read_text(path, workspace.location(path))
-    text = text or ""
+    text = _text(path, workspace) or ""
     functions = {name for name, rest in _FUNCTION.findall(text)
                  if not rest.rstrip().endswith(";")} - _NOT_FUNCTIONS
     return {match.group(1) for match in _MEMBER.finditer(text)} | functions
@@ -431,7 +430,19 @@ def named_words(source: str, workspace: Files) -> frozenset[str]:
 def with_headers(source: str, workspace: Files, depth: int = 1) -> list[str]:
     """The text of a file (workspace-relative or absolute) and of the headers of the
     workspace it includes, found beside it or in its package's ``include`` folder, and
-    theirs down to ``depth`` levels of inclusion."""
+    theirs down to ``depth`` levels of inclusion (read once per run: every executable
+    that links a library asks for its files again)."""
+    return list(remembered(f"with headers {depth}", source, workspace,
+                           lambda: _with_headers(source, workspace, depth)))
+
+
+def _text(path: str, workspace: Files) -> str | None:
+    """A file's text, read once per run (a header many sources include)."""
+    return remembered("text", path, workspace,
+                      lambda: read_text(path, workspace.location(path))[0])
+
+
+def _with_headers(source: str, workspace: Files, depth: int) -> list[str]:
     path = os.path.join(workspace.root, source)
     texts: list[str] = []
     seen: set[str] = set()
@@ -442,7 +453,7 @@ def with_headers(source: str, workspace: Files, depth: int = 1) -> list[str]:
             if each in seen:
                 continue
             seen.add(each)
-            text, _ = read_text(each, workspace.location(each))
+            text = _text(each, workspace)
             texts.append(text or "")
             if step < depth:
                 below.extend(_included(each, text or "", workspace))

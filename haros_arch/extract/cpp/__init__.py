@@ -264,11 +264,12 @@ def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True
     unseen = {word for unit in units for word in unit.unseen} if complete else {"*"}
     built = _built_under(facts, unseen)
     called = call_conditions.shared(facts, unseen)
+    known = links.NodeFacts(facts)  # read once for every unit's calls
     for unit in units:
         result.diagnostics.extend(unit.diagnostics)
         if unit.rosname is not None and result.rosname is None:
-            result.rosname = links.resolve_name(unit.rosname, facts)
-        calls, found = links.resolve(unit.calls, facts, unseen)
+            result.rosname = links.resolve_name(unit.rosname, known)
+        calls, found = links.resolve(unit.calls, known, unseen)
         result.diagnostics.extend(found)
         for call in calls:
             if call.built_in is not None:
@@ -293,7 +294,7 @@ def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True
     result.calls = [c for c in result.calls if c.name_param is not None
                     or (c.kind, c.name, c.location) not in named]
     result.diagnostics = list(dict.fromkeys(result.diagnostics))
-    _name_nodes(result, sorted(paths_units, key=lambda pair: pair[0]), facts, unseen)
+    _name_nodes(result, sorted(paths_units, key=lambda pair: pair[0]), known, unseen)
     result.calls = declared_defaults(result.calls)
     return result
 
@@ -330,7 +331,7 @@ def _built_under(facts: list[links.Fact], unseen: set[str]) -> dict[str, tuple[C
 
 
 def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
-                facts: list[links.Fact], unseen: Collection[str] = frozenset({"*"})) -> None:
+                facts: links.NodeFacts, unseen: Collection[str] = frozenset({"*"})) -> None:
     """The executable's nodes when its files construct several with fully known names
     (in the order met, files by path), and each call's node (``_node_of``); None where
     no one node can be told (the graph gives those calls to the first node). The calls
@@ -746,12 +747,13 @@ def _hidden(path: str, errors: list[_Error], finder: CallFinder,
     for name, ranges in recall.skipped_lines(finder.tu).items():
         silent.setdefault(name, []).extend(ranges)  # no code of this build
     wrappers = sorted(n for n in finder.wrappers.site_names if n)
+    bare = finder.wrappers.site_names_bare
     found: list[Diagnostic] = []
     for name in files:
         text = source.text(name)
         if text is None:
             continue
-        sites = recall.call_sites(text, wrappers)
+        sites = recall.call_sites(text, wrappers, bare)
         if not sites:
             continue
         relative = workspace.relpath(name)
@@ -1047,7 +1049,56 @@ def _parse(path: str, text: str, setup: IncludeSetup, workspace: Workspace,
         if not missing or not setup.repair(missing):
             break
     assert tu is not None
+    wanted = _unincluded_messages(tu, setup, source)
+    if wanted:
+        more = [*args, *(word for header in wanted for word in ("-include", header))]
+        again = _parse_once(path, more, unsaved, workspace, result)
+        if again is not None and len(_errors(again)) < len(_errors(tu)):
+            tu, args = again, more
     return _synthesise(path, tu, args, unsaved, setup, workspace, result, source, owned)
+
+
+# an error naming a namespace clang does not know, or a name missing from one
+_UNKNOWN_SPACE = re.compile(r"^use of undeclared identifier '(\w+)'$"
+                            r"|^no (?:type|member|template) named '\w+' in namespace '(\w+)'$")
+_QUALIFIED = re.compile(rb"\b([A-Za-z_]\w*)\s*::\s*([A-Za-z_]\w*)")
+_POINTER_SUFFIXES = ("ConstPtr", "Ptr")
+
+
+def _unincluded_messages(tu: TranslationUnit, setup: IncludeSetup,
+                         source: SourceCache) -> list[str]:
+    """The message headers a unit uses without including them: MoveIt's headers bring
+    ``geometry_msgs/PoseStamped.h``, so kinova's pick_place names
+    ``geometry_msgs::PoseStampedConstPtr`` with no include of its own; with MoveIt's
+    headers missing the type was declared permissively and ``subscribe<geometry_msgs::
+    PoseStamped>(topic, 1, &PickPlace::get_current_pose, this)`` an error. A name
+    ``pkg::Name`` (or ``NameConstPtr`` / ``NamePtr``) in a file with such an error, where
+    ``pkg`` is a namespace an error says is unknown and the workspace or the catalogue
+    defines the message ``pkg/Name``: its ``pkg/Name.h``."""
+    errors = [e for e in _errors(tu) if e.name is not None]
+    spaces: set[str] = set()
+    files: set[str] = set()
+    for error in errors:
+        found = _UNKNOWN_SPACE.match(error.spelling)
+        if found is not None:
+            spaces.add(found.group(1) or found.group(2))
+            files.add(error.name or "")
+    if not spaces:
+        return []
+    headers: list[str] = []
+    for name in sorted(files):
+        text = source.get(name)
+        for match in _QUALIFIED.finditer(text or b""):
+            space = match.group(1).decode()
+            if space not in spaces:
+                continue
+            written = match.group(2).decode()
+            base = next((written[: -len(s)] for s in _POINTER_SUFFIXES
+                         if written.endswith(s) and len(written) > len(s)), written)
+            header = f"{space}/{base}.h"
+            if header not in headers and setup.message_header(header):
+                headers.append(header)
+    return headers
 
 
 def _parse_once(path: str, args: list[str], unsaved: list[tuple[str, str]],

@@ -232,9 +232,11 @@ def conditions_text(conditions: Iterable[Condition]) -> str:
     return json.dumps([dataclasses.asdict(c) for c in conditions], sort_keys=True)
 
 
+@functools.lru_cache(maxsize=4096)
 def conditions_of_text(text: str) -> tuple[Condition, ...]:
     """The conditions ``conditions_text`` wrote; ValueError / TypeError / KeyError for
-    text that is not such."""
+    text that is not such. Remembered: a node's facts repeat the same few texts (every
+    unit that includes a header gives its call sites again), and conditions are frozen."""
     return _conditions(json.loads(text))
 
 

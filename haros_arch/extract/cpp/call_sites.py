@@ -29,7 +29,7 @@ from .values import (
     key_of,
     written_arguments,
 )
-from .writes import writes_of
+from .writes import parameter_callback, writes_of
 
 _CALLABLE = frozenset({CursorKind.FUNCTION_DECL, CursorKind.CXX_METHOD, CursorKind.CONSTRUCTOR,
                        CursorKind.FUNCTION_TEMPLATE})
@@ -65,6 +65,7 @@ class CallSites:
         # recorded), and the constructor to take for one of them (member, constructor)
         self.forks: list[Fork] | None = None
         self._members: dict[tuple[str, int], list[tuple[Cursor | None, Cursor]]] = {}
+        self._written: dict[tuple[str, int], bool] = {}  # ``written``, by member
         self.choice: tuple[tuple[str, int], tuple[str, int]] | None = None
         # ``Class::member`` of each member read while a value was asked whose class's
         # constructors are all defined in other files, which may set it (cleared by the
@@ -188,20 +189,47 @@ class CallSites:
         """(call, calling function) for the calls of ``function`` in this file."""
         return self._sites().get(key_of(function.canonical), [])
 
-    def field(self, field: Cursor, function: Cursor | None = None
+    def field(self, field: Cursor, function: Cursor | None = None, initial: bool = False
               ) -> tuple[Cursor, Scope] | None:
         """What a member holds, read in ``function``: the value a constructor of its
         class initialises or assigns it with (read in that constructor), else its default
-        initialiser. When the class's constructors disagree, the one ``function`` is
-        (``member``)."""
+        initialiser, unless another function writes it (``written``; ``initial``: the
+        value it holds first all the same). When the class's constructors disagree, the
+        one ``function`` is (``member``)."""
         found = self.member(field, function)
         if found is not None:
             value, constructor = found
             if value is not None:
                 return value, self.scope(constructor)
         value = initializer(field)
-        return (value, Scope(None, self.macros, self.source, self)) if value is not None \
-            else None
+        if value is None or (not initial and self.written(field)):
+            return None
+        return value, Scope(None, self.macros, self.source, self)
+
+    def written(self, field: Cursor) -> bool:
+        """Whether a function of this unit but a destructor writes ``field`` (on any
+        object): then its default initialiser is not what it holds where it is read
+        (``camera_name_`` of OrbbecSDK_ROS2's OBLidarNode, set in getParameters() by a
+        helper that takes it by non-const reference). A constructor's or initialisation
+        method's write with a known value is ``member``'s answer, taken before; a
+        parameter callback's writes come after start-up (``parameter_callback``)."""
+        found = key_of(field)
+        cached = self._written.get(found)
+        if cached is not None:
+            return cached
+        spelling = field.spelling.encode("utf-8")
+        result = False
+        for function in self.functions:
+            if function.kind == CursorKind.DESTRUCTOR or not _may_name(
+                    function, spelling, self.source) or parameter_callback(function):
+                continue
+            if any(write.variable is not None and key_of(write.variable) == found
+                   for node in function.walk_preorder()
+                   for write in writes_of(node, self.source)):
+                result = True
+                break
+        self._written[found] = result
+        return result
 
     def unset(self, field: Cursor) -> None:
         """Note ``field``, a member nothing in this unit gives a value, when its class
@@ -648,6 +676,16 @@ def _takes(constructor: Cursor, count: int) -> bool:
     required = sum(1 for p in params if not any(c.kind.is_expression()
                                                 for c in p.get_children()))
     return required <= count <= len(params)
+
+
+def _may_name(function: Cursor, spelling: bytes, source: dict[str, bytes]) -> bool:
+    """Whether ``function``'s text may name ``spelling``: it does, or its text is not
+    at hand in one file (read then, to be safe)."""
+    start, end = function.extent.start, function.extent.end
+    if start.file is None or end.file is None or start.file.name != end.file.name:
+        return True
+    data = source.get(start.file.name)
+    return data is None or spelling in data[start.offset:end.offset]
 
 
 def _defined_in(function: Cursor) -> str | None:

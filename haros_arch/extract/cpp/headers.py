@@ -516,7 +516,7 @@ class IncludeSetup:
         if _EXPORT_HEADER.fullmatch(os.path.basename(header)) and self._resolve(header) is None:
             self._empty(header, where)  # CMake's export header, not a message's
             return None
-        message = _MESSAGE_HEADER.fullmatch(header)
+        message = self._message_header(header)
         if message is not None and self._message(
             header, message.group(1), message.group(2), where
         ):
@@ -634,6 +634,21 @@ class IncludeSetup:
             if text is not None:
                 self.scan(path, text)
             del self.diagnostics[before:]  # nothing to report about our own headers
+
+    def _message_header(self, header: str) -> re.Match[str] | None:
+        """The package and name of ``header`` when it may be a message's or service's
+        generated header: a capitalised name, or one in lowercase that the package (or
+        the catalogue) defines and no real file of that name is (ROS 1 allows message
+        names in lowercase: LIO-SAM's ``msg/cloud_info.msg`` and ``srv/save_map.srv``
+        generate ``<lio_sam/cloud_info.h>`` and ``<lio_sam/save_map.h>``)."""
+        found = _MESSAGE_HEADER.fullmatch(header)
+        if found is not None:
+            return found
+        found = _DEFINED_HEADER.fullmatch(header)
+        if found is None or found.group(2).endswith("Config") or (
+                self._resolve(header) is not None):
+            return None
+        return found if self._definition(found.group(1), found.group(2)) else None
 
     def _message(self, header: str, package: str, name: str, where: Location) -> bool:
         """Synthesise a message / service header when that is what ``header`` is."""
@@ -868,6 +883,19 @@ class IncludeSetup:
 
     # -- after parsing ----------------------------------------------------------------
 
+    def message_header(self, header: str) -> bool:
+        """Whether ``header`` is the generated header of a message or service the
+        workspace or the catalogue defines, made ready to include (a unit that uses the
+        type with no include of its own: ``_unincluded_messages``)."""
+        if self.system_headers:
+            return False
+        spec = self._message_header(header)
+        if spec is None or self._definition(spec.group(1), spec.group(2)) is None:
+            return False
+        if header in self._handled:
+            return True
+        return self._message(header, spec.group(1), spec.group(2), Location())
+
     def repair(self, messages: list[tuple[str, Location]]) -> bool:
         """Create what clang reported as not found; True when a new parse may help."""
         changed = False
@@ -877,7 +905,7 @@ class IncludeSetup:
                 continue
             header = match.group(1)
             self._handled.add(header)
-            spec = _MESSAGE_HEADER.fullmatch(header)
+            spec = self._message_header(header)
             if spec is None or not self._message(header, spec.group(1), spec.group(2), where):
                 self._empty(header, where)
             changed = True

@@ -18,6 +18,7 @@ its files left no error that could hide a construction.
 from __future__ import annotations
 
 import dataclasses
+import functools
 import re
 from collections.abc import Callable, Collection, Iterable
 
@@ -239,32 +240,52 @@ def _made(made_in: str, called: set[str], constructed: set[str | None],
     return "*" in unseen or cls in unseen
 
 
-def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact],
+class NodeFacts:
+    """The facts of one node's files, with what ``resolve`` reads of them worked out once
+    for all its units' calls, and only when a call needs it (most need none)."""
+
+    def __init__(self, facts: Iterable[Fact]) -> None:
+        self.facts = list(facts)
+
+    @functools.cached_property
+    def passed(self) -> dict[str, dict[str, dict[int, str]]]:
+        return _passed(self.facts)
+
+    @functools.cached_property
+    def called(self) -> set[str]:
+        return {fact[0] for fact in self.facts if fact[1] not in NOT_CALLS | INDICES}
+
+    @functools.cached_property
+    def constructed(self) -> set[str | None]:
+        return {class_of(usr) for usr in self.called if _constructor(usr)}
+
+    @functools.cached_property
+    def hosted(self) -> dict[tuple[str, int], str]:
+        calling = self.called | {fact[0] for fact in self.facts if fact[1] == CALLED_VIRTUAL}
+        return {(usr, int(site)): " ".join(dict.fromkeys(
+                    qualified_class(base) for base in bases.split("\n") if base))
+                for usr, index, bases, site in self.facts
+                if index == HOST_NAMED and bases and usr not in calling
+                and not any(base in calling for base in bases.split("\n"))}
+
+
+def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
             unseen: Collection[str] = ("*",)) -> tuple[list[PrimitiveCall], list[Diagnostic]]:
     """The calls with their placeholders filled from ``facts`` (of the same node). A
     call a constructor makes with a name from its parameters (``made_in``) is left out
     when no file of the node calls that constructor and the class's name is not among
     the words ``unseen`` of the code where the parse left errors (``*``: anywhere)."""
-    facts = list(facts)
-    passed = _passed(facts)
-    called = {fact[0] for fact in facts if fact[1] not in NOT_CALLS | INDICES}
-    calling = called | {fact[0] for fact in facts if fact[1] == CALLED_VIRTUAL}
-    hosted = {(usr, int(site)): " ".join(dict.fromkeys(
-                  qualified_class(base) for base in bases.split("\n") if base))
-              for usr, index, bases, site in facts
-              if index == HOST_NAMED and bases and usr not in calling
-              and not any(base in calling for base in bases.split("\n"))}
-    constructed = {class_of(usr) for usr in called if _constructor(usr)}
+    known = facts if isinstance(facts, NodeFacts) else NodeFacts(facts)
     out: list[PrimitiveCall] = []
     found: list[Diagnostic] = []
     for call in calls:
         if call.made_in is not None:
-            if not _made(call.made_in, called, constructed, unseen):
+            if not _made(call.made_in, known.called, known.constructed, unseen):
                 continue  # no file of the node constructs the class so: not made
             call = dataclasses.replace(call, made_in=None)
         if call.name_param is not None and PLACEHOLDER in call.name_param:
             call = dataclasses.replace(call, name_param=_parameter_filled(call.name_param,
-                                                                          passed))
+                                                                          known.passed))
         if PLACEHOLDER not in call.name and PLACEHOLDER not in (call.handle_namespace or ""):
             out.append(call)
             continue
@@ -278,7 +299,7 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact],
         # a camera's camera_info names its image topic as written on the same handle
         camera = call.camera_of[len(prefix):] if namespace and call.camera_of and (
             call.camera_of.startswith(prefix)) else None
-        for filled in _expand(text, passed, 0):
+        for filled in _expand(text, known.passed, 0):
             ns, _, name = filled.partition(_SPLIT)
             ns = normalise(_unmarked(ns)) if ns else ""
             made = dataclasses.replace(
@@ -290,7 +311,8 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact],
                     else None))
             made = _named_by(made)
             whole = _MARK.fullmatch(written) if not namespace else None
-            classes = hosted.get((whole.group(1), int(whole.group(2)))) if whole else None
+            classes = known.hosted.get((whole.group(1), int(whole.group(2)))) if (
+                whole) else None
             if made.name == "?" and classes:
                 made = dataclasses.replace(made, host_named=classes)
             out.append(made)
@@ -319,12 +341,13 @@ def _parameter_filled(param: str, passed: dict[str, dict[str, dict[int, str]]]) 
     return _unmarked(_MARK.sub("?", param))
 
 
-def resolve_name(name: str, facts: Iterable[Fact]) -> str:
+def resolve_name(name: str, facts: Iterable[Fact] | NodeFacts) -> str:
     """A node name (``Node(name)`` in a constructor) with its placeholders filled: the
     one value the node's files pass, else ``?`` where they pass none or several."""
     if PLACEHOLDER not in name:
         return name
-    found = _expand(name, _passed(facts), 0)
+    found = _expand(name, (facts if isinstance(facts, NodeFacts) else NodeFacts(facts)
+                           ).passed, 0)
     return _unmarked(found[0]) if len(found) == 1 and PLACEHOLDER not in found[0] else (
         _MARK.sub("?", name))
 

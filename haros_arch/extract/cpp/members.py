@@ -28,7 +28,7 @@ from clang.cindex import Cursor, CursorKind
 
 from .tested import Key, key
 from .values import _plain_value, _walk, key_of, strip
-from .writes import writes_of
+from .writes import parameter_callback, writes_of
 
 _REFS = (CursorKind.MEMBER_REF_EXPR, CursorKind.DECL_REF_EXPR)
 
@@ -37,15 +37,38 @@ def _every(_index: int) -> bool:
     return True
 
 
+_SCOPES = (CursorKind.TRANSLATION_UNIT, CursorKind.NAMESPACE)
+
+
 def member_of(expr: Cursor | None) -> Cursor | None:
-    """The member variable of a plain type that ``expr`` names, or None."""
+    """The member variable of a plain type that ``expr`` names, or None; also a global
+    variable of a plain type that the unit's own source file declares, the only one in
+    which it is declared (VINS-Mono's ar_demo: ``int USE_UNDISTORED_IMG;`` beside
+    ``main``): no other file can write it, so its writes are those of the file's
+    functions, as a member's are. One a header declares (``extern``) may be written by
+    any file that includes it: not one."""
     if expr is None:
         return None
     expr = strip(expr)
     decl = expr.referenced if expr.kind in _REFS else None
-    if decl is None or decl.kind != CursorKind.FIELD_DECL or not _plain_value(decl):
+    if decl is None or not _plain_value(decl):
         return None
-    return decl
+    if decl.kind == CursorKind.FIELD_DECL:
+        return decl
+    return decl if decl.kind == CursorKind.VAR_DECL and _own_global(decl) else None
+
+
+def _own_global(decl: Cursor) -> bool:
+    """Whether ``decl`` is a variable at namespace scope whose every declaration is in the
+    main file of its translation unit."""
+    parent = decl.semantic_parent
+    if parent is None or parent.kind not in _SCOPES:
+        return False
+    main = decl.translation_unit.spelling
+    canonical = decl.canonical
+    seen = [canonical, decl, decl.get_definition()]
+    return all(d is None or (d.location.file is not None and d.location.file.name == main)
+               for d in seen)
 
 
 def _negates(node: Cursor, source: dict[str, bytes]) -> bool:
@@ -90,6 +113,7 @@ class MemberWrites:
         # their own but the read's default
         self._skipped: set[Key] = set()
         self._index = 0  # of the function being read
+        self._callback = False  # it is a parameter callback (``writes.parameter_callback``)
         self._spans: list[tuple[str, int, int] | None] = []
         self._texts: list[bytes | None] = []
         inside: dict[str, list[int]] = {}
@@ -154,8 +178,10 @@ class MemberWrites:
                 continue
             self._read.add(index)
             self._index = index
+            self._callback = parameter_callback(function)
             for node in _walk(function):
                 self._visit(node)
+        self._callback = False
 
     def _add(self, member: Cursor | None) -> None:
         if member is not None:
@@ -195,11 +221,12 @@ class MemberWrites:
         for write in writes_of(node, self.source):
             target, value = write.target, write.value
             member = member_of(target)
-            self._add(member)
+            if not self._callback:  # (a parameter callback's writes come after start-up)
+                self._add(member)
             if not write.whole or value is None:
                 continue
             if target.kind == CursorKind.MEMBER_REF_EXPR and target.referenced is not None \
-                    and target.referenced.kind == CursorKind.FIELD_DECL:
+                    and target.referenced.kind == CursorKind.FIELD_DECL and not self._callback:
                 self._values.setdefault(key_of(target.referenced), []).append(
                     (value, self._index))
             value = strip(value)

@@ -92,7 +92,7 @@ def site_pattern(extra: frozenset[str] = frozenset()) -> re.Pattern[str]:
     made = "|".join(sorted((re.escape(owner) for owner, name in api.ALL
                             if "::" in owner and owner.rsplit("::", 1)[1] == name),
                            key=len, reverse=True))
-    return re.compile(rf"(?:(?:\.|->)\s*(?:template\s+)?(?:{member})"
+    return re.compile(rf"(?:(?:\.|->)\s*(?:template\s+)?(?P<member>{member})"
                       rf"|(?<![\w.>:~])(?:\w+::)?(?P<bare>{free}))\s*[<(]"
                       rf"|(?:make_shared|make_unique)\s*<\s*(?:::)?(?:{made})\s*[<>(]"
                       rf"|\bnew\s+(?:::)?(?:{made})\s*[<(]")
@@ -115,16 +115,20 @@ def first_site(sites: Sequence[Site], first: int, last: int) -> Site | None:
     return next((s for s in sites if first < s.line < last), None)
 
 
-def call_sites(text: str, extra: Iterable[str] = ()) -> list[Site]:
+def call_sites(text: str, extra: Iterable[str] = (), bare: Iterable[str] = ()) -> list[Site]:
     """The API call sites of one file's text (comments left out, and lines that define
     a function of the same name: ``Node::create_publisher(``, or declare one:
-    ``static std::string set_parameter(``). The headers of a package
-    are read by each of its units: the sites of a text are kept (a few texts)."""
-    return list(_call_sites(text, frozenset(extra)))
+    ``static std::string set_parameter(``). ``extra`` are the unit's wrappers, and
+    ``bare`` those of them a call with no argument may be: a call of another one is a
+    site only with an argument or template arguments, and never written in ``std::``
+    (``ptr.get()``, ``std::get<I>(t)`` where the unit has a wrapper ``get(node,
+    name)``). The headers of a package are read by each of its units: the sites of a
+    text are kept (a few texts)."""
+    return list(_call_sites(text, frozenset(extra), frozenset(bare)))
 
 
 @functools.lru_cache(maxsize=64)
-def _call_sites(text: str, extra: frozenset[str]) -> tuple[Site, ...]:
+def _call_sites(text: str, extra: frozenset[str], bare: frozenset[str]) -> tuple[Site, ...]:
     pattern = site_pattern(extra)
     found = []
     in_comment = False
@@ -145,7 +149,7 @@ def _call_sites(text: str, extra: frozenset[str]) -> tuple[Site, ...]:
         declared = _FREE_DEFINITION.match(code)
         named = declared.start("name") if declared is not None else None
         if any(not _unevaluated(code, m.start()) and not _named_type(code, m, extra)
-               and m.start("bare") != named
+               and m.start("bare") != named and not _not_a_wrapper(code, m, extra, bare)
                for m in pattern.finditer(code)):
             found.append(Site(number, code.strip()[:80]))
     return tuple(found)
@@ -185,6 +189,23 @@ def _named_type(code: str, match: re.Match[str], extra: frozenset[str]) -> bool:
         return False  # the template arguments go on past the line
     rest = code[at + 1:]
     return bool(rest.strip()) and not _BUILT_BEFORE.match(rest)
+
+
+_EMPTY_CALL = re.compile(r"\(\s*\)")
+
+
+def _not_a_wrapper(code: str, match: re.Match[str], extra: frozenset[str],
+                   bare: frozenset[str]) -> bool:
+    """Whether ``match``, a call of a name that only the unit's wrappers (``extra``)
+    have, cannot be one of theirs: written in ``std::``, or with no argument where no
+    wrapper of that name can be called so (not in ``bare``)."""
+    name = match.group("bare") or match.group("member")
+    if name is None or name not in extra or site_pattern().match(code, match.start()):
+        return False  # (a call the API's own grep finds there too)
+    if match.group("bare") is not None and code[:match.start("bare")].endswith("std::"):
+        return True
+    return match.group(0).endswith("(") and name not in bare and bool(
+        _EMPTY_CALL.match(code, match.end() - 1))
 
 
 _UNEVALUATED = re.compile(r"\b(?:decltype|sizeof|alignof|noexcept)\s*\(")

@@ -214,6 +214,16 @@ _OPERATORS += "".join(
     f"template <class A, class B> typename haros_if<__is_base_of(haros_any, B) && "
     f"!__is_base_of(haros_any, A), A &>::type operator{o}(A &, const B &);\n"
     for o in _COMPOUND)
+# shifts and the comma with a synthesised class on the left: Eigen's comma initialiser on
+# a vendor's vector type, ``(gtsam::Vector(6) << 1e-2, 1e-2, ...).finished()`` (LIO-SAM's
+# imuPreintegration.cpp:218-225); without them ``<<`` was ambiguous between the built-in
+# shift (through ``operator haros_integral``) and the standard library's stream output
+# (through ``operator T &``), and the comma left a ``double`` whose ``.finished()`` was an
+# error, both in the constructor that makes the node's calls. A stream on the left
+# (``std::cout << vendor_value``) keeps the standard library's operator
+_OPERATORS += "".join(
+    f"template <class A, class B> typename haros_if<__is_base_of(haros_any, A), "
+    f"haros_any &>::type operator{o}(const A &, const B &);\n" for o in ("<<", ">>", ","))
 
 _PRELUDE = """\
 // haros_arch: permissive declarations of names the parse did not know

@@ -448,14 +448,15 @@ class Scope:
             return UNKNOWN
         return left + right
 
-    def field(self, decl: Cursor) -> tuple[Cursor, Scope] | None:
+    def field(self, decl: Cursor, initial: bool = False) -> tuple[Cursor, Scope] | None:
         """A member this function does not write: the value its class's constructor
-        gives it, and the scope to read that value in."""
+        gives it, and the scope to read that value in. ``initial``: the value it holds
+        first (its default initialiser even where other functions write it later)."""
         if decl.kind != CursorKind.FIELD_DECL or self.sites is None or (
             key_of(decl) in self.writes
         ):
             return None
-        return self.sites.field(decl, self.body)
+        return self.sites.field(decl, self.body, initial)
 
     def is_parameter(self, decl: Cursor) -> bool:
         """A parameter this function never assigns, whose callers may tell its value."""

@@ -1477,7 +1477,7 @@ def _kept_value(out: Cursor, scope: Scope) -> tuple[bool, object]:
             zero = _ZEROED[decl.type.get_canonical().kind]
             return True, zero
     elif decl.kind == CursorKind.FIELD_DECL:
-        found = scope.field(decl)
+        found = scope.field(decl, initial=True)  # what it holds before the read
         if found is not None:
             value, where = found
     if value is None:

@@ -34,7 +34,7 @@ from clang.cindex import Cursor, CursorKind, Type, TypeKind, conf
 
 from ...model.conditions import Condition
 from . import api, msg_types
-from .call_sites import closest, delegation, is_constructor
+from .call_sites import closest, default_argument, delegation, is_constructor
 from .call_types import template_argument
 from .cursors import Node, overloads
 from .handles import callback, callback_name, is_handle, join_name, qualified_name
@@ -120,6 +120,7 @@ class Wrappers:
         self.summaries: dict[Key, list[Wrapper]] = {}
         self.names: frozenset[str] = frozenset()  # the wrappers' spellings
         self.site_names: frozenset[str] = frozenset()  # those a call-site grep looks for
+        self.site_names_bare: frozenset[str] = frozenset()  # those called with no argument
         self._inner: dict[Key, Key] = {}  # call inside a wrapper -> the wrapper
         self._kept: set[Key] = set()  # wrappers whose inner calls are still emitted
         self._recursive: set[Key] = set()
@@ -257,6 +258,16 @@ class Wrappers:
                 by_name[name] = by_name.get(name, True) and all(
                     w.spec_param is not None for w in summary)
         self.site_names = self.names - {name for name, spec in by_name.items() if spec}
+        # those a call with no argument at all may be (``get()``): a wrapper with no
+        # template parameter and a default for each parameter it has; a call ``get()``
+        # of any other name is no call of a wrapper (a smart pointer's ``.get()`` where
+        # the unit has a wrapper ``get(node, name)``: nav2_smac_planner's SearchInfo)
+        self.site_names_bare = frozenset(
+            f.spelling.split("<")[0] for f in functions
+            if self.summaries.get(_key(f.canonical)) and f.kind != CursorKind.LAMBDA_EXPR
+            and not _template_parameters(f)
+            and all(default_argument(p) is not None for p in _parameters(f))
+        ) & self.site_names
 
     def silent(self, function: Cursor) -> bool:
         """Whether the calls inside ``function`` are emitted where it is called, not

@@ -231,3 +231,18 @@ def const_array(decl: Cursor) -> bool:
     # a typedef of an array type (va_list) has no element type of its own
     written = decl.type if decl.type.kind in arrays else canonical
     return bool(written.element_type.is_const_qualified())
+
+
+def parameter_callback(function: Cursor) -> bool:
+    """Whether ``function`` takes rclcpp parameters (``std::vector<rclcpp::Parameter>``,
+    ``const rclcpp::Parameter &``): a callback of parameter changes at run time (every
+    navigation2 server's ``dynamicParametersCallback``). What it writes is written when
+    a user sets a parameter after start-up, not on the way to the node's calls: the
+    member readers leave its writes out (amcl's ``scan_topic_``, set from its parameter
+    in ``initParameters`` and again there)."""
+    for child in function.get_children():
+        if child.kind == CursorKind.PARM_DECL and "rclcpp::Parameter" in (
+                child.type.get_canonical().spelling.replace("rclcpp::ParameterEvent", "")):
+            return True
+    return False
+

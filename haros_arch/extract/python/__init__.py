@@ -11,6 +11,7 @@ Problems become diagnostics; nothing here raises for bad input.
 from __future__ import annotations
 
 import os
+import re
 from dataclasses import dataclass, field
 
 from ... import diagnostics as diag
@@ -71,16 +72,21 @@ def extract_python(sources: list[str], workspace: Workspace, *,
     for call in calls:
         if call.node_name not in result.nodes:
             call.node_name = None
-    # a call site also reached with its names known does not keep its '?' variant
-    known = {(c.kind, c.location, c.node_name) for c in calls if "?" not in c.name}
+    # a call site also reached with its names known does not keep a '?' variant that
+    # one of them fits (the site walked with its function's arguments unbound); one no
+    # known name fits is a call of its own (a wrapper given "zeros/" + a joint's name)
+    known: dict[tuple[object, ...], list[str]] = {}
+    for c in calls:
+        if "?" not in c.name:
+            known.setdefault((c.kind, c.location, c.node_name), []).append(c.name)
     # and one reached with its type known does not keep its unknown type (a call per
     # type is kept where the paths of an if give it different ones)
     typed = {(c.kind, c.name, c.location, c.node_name) for c in calls
              if c.type not in (None, "?")}
     for call in calls:
         key = (call.kind, call.name, call.location, call.node_name, call.type)
-        if key in seen or ("?" in call.name and (
-                call.kind, call.location, call.node_name) in known) or (
+        if key in seen or ("?" in call.name and _fitted(call.name, known.get(
+                (call.kind, call.location, call.node_name), []))) or (
                 call.type == "?" and key[:4] in typed):
             continue
         seen.add(key)
@@ -90,6 +96,12 @@ def extract_python(sources: list[str], workspace: Workspace, *,
                 "PY_DYNAMIC_NAME", call.location, kind=call.kind, name=call.name))
     result.diagnostics[:0] = loader.diagnostics + walker.diagnostics
     return result
+
+
+def _fitted(unknown: str, names: list[str]) -> bool:
+    """Whether one of ``names`` is what ``unknown`` may be, each '?' any text."""
+    pattern = re.compile(".*".join(re.escape(part) for part in unknown.split("?")))
+    return any(pattern.fullmatch(name) for name in names)
 
 
 # ROS packages whose Python code makes no ROS call of its own (math, conversions, file

@@ -113,6 +113,7 @@ class Walker:
         self.unseen_packages: frozenset[str] = frozenset()
         self._classes_said: dict[str, Location] = {}
         self._ros_init = False  # rclpy.init() is called
+        self._launches_said: set[Location] = set()  # where roslaunch runs (PY_LAUNCHES)
         # the classes the walk constructs, and those they derive from (ids)
         self._constructed: set[int] = set()
         self.steps = 0
@@ -592,6 +593,13 @@ class Walker:
                 if spec.owner is not None:
                     self._made_on(self.calls[start:], evaluate(ev, argument(
                         call, spec.owner), frame))
+            elif target.qualname.split(".")[0] == "roslaunch" and (
+                    target.key[1] in _LAUNCHERS):
+                where = self._where(frame, call)
+                if where not in self._launches_said:  # a function walked twice: once
+                    self._launches_said.add(where)
+                    self.diagnostics.append(diag.make(
+                        "PY_LAUNCHES", where, call=target.qualname))
             else:
                 self._unseen_class(target, call, frame)
         elif isinstance(target, NodeMethod) and target.name in rclpy.NODE_METHODS:
@@ -856,6 +864,10 @@ class Walker:
     def _where(self, frame: Frame, node: ast.AST) -> Location:
         return self.loader.location(frame.module.path, getattr(node, "lineno", 0),
                                     getattr(node, "col_offset", -1) + 1)
+
+
+# roslaunch's entry points that start the nodes of launch files in the calling process
+_LAUNCHERS = frozenset({"main", "ROSLaunchParent", "ROSLaunch", "ROSLaunchRunner"})
 
 
 def _self_member(target: ast.expr) -> str | None:

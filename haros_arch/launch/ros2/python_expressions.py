@@ -254,6 +254,8 @@ class Expressions(Walker):
             return owner
         if isinstance(owner, PurePosixPath) and node.attr in _PATH_ATTRIBUTES:
             return getattr(owner, node.attr)
+        if isinstance(owner, e.DeclareArg) and node.attr == "name":
+            return owner.name  # DeclareLaunchArgument.name, a property
         return _Bound(owner, node.attr)
 
     def eval_Call(self, node: ast.Call, env: dict[str, Any]) -> Any:

@@ -53,6 +53,15 @@ class _Continue(_Flow):
     pass
 
 
+class Raised(Exception):
+    """A builtin exception the interpreted code raises (``int("camera")``) inside a
+    ``try`` whose handler catches it: the interpreter goes on in that handler, as Python
+    does (``Interpreter.failed``)."""
+
+    def __init__(self, name: str) -> None:
+        self.name = name
+
+
 @dataclass(frozen=True)
 class Lazy:
     """A string with substitutions or unknown parts, computed when the action runs."""
@@ -136,6 +145,12 @@ def _hashable(value: Any) -> Any:
         return tuple(_hashable(v) for v in value)
     if isinstance(value, dict):
         return Unknown("dict key")
+    if _opaque(value) or isinstance(value, slice):  # a substitution, an unknown: the
+        return value  # lookup says what it cannot; a slice is no key
+    try:
+        hash(value)
+    except TypeError:  # a value of the interpreter's own (a method not called, ...)
+        return Unknown("dict key not known statically")
     return value
 
 

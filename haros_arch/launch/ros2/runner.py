@@ -598,8 +598,8 @@ class Runner:
                     where: Location) -> Any:
         """``allow_substs`` on a rewritten file: launch_ros substitutes in the YAML that
         the rewrite dumped (without the source's comments), then reads it again."""
-        if not entry.allow_substs:
-            return document
+        if not entry.allow_substs or not _substitutes(document):
+            return document  # (nothing to perform: the text read again is the same data)
         text = self.substitute(yaml.safe_dump(document, default_flow_style=False), scope,
                                where)
         if text is None:
@@ -693,6 +693,22 @@ class Runner:
             if root is not None and root.text:
                 document = {root.text: document}
         return document
+
+
+def _substitutes(node: Any, depth: int = 0) -> bool:
+    """Whether a parameter document holds text that launch_ros would perform as a
+    substitution (``$(``) once it dumps the document for ``allow_substs``; without one,
+    dumping and reading again gives the same data. Deeper than the bound: said to."""
+    if depth > naming.MAX_PARAM_DEPTH:
+        return True
+    if isinstance(node, str):
+        return "$(" in node
+    if isinstance(node, dict):
+        return any(_substitutes(key, depth + 1) or _substitutes(value, depth + 1)
+                   for key, value in node.items())
+    if isinstance(node, list | tuple | set | frozenset):
+        return any(_substitutes(value, depth + 1) for value in node)
+    return False
 
 
 def _rename_keys(node: Any, renames: dict[str, str], depth: int) -> Any:

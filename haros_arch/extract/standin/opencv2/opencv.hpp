@@ -43,34 +43,145 @@ typedef unsigned char uchar;  // global in OpenCV (cvdef.h)
 typedef unsigned short ushort;
 namespace cv {
 using ::uchar;
+template<class T> class Rect_;
 template<class T> class Point_ {
 public:
   Point_(); Point_(T x, T y);
+  template<class U> operator Point_<U>() const;
+  T dot(const Point_& p) const;
+  double ddot(const Point_& p) const;
+  double cross(const Point_& p) const;
+  bool inside(const Rect_<T>& r) const;
   T x, y;
 };
+template<class T> Point_<T> operator+(const Point_<T>& a, const Point_<T>& b);
+template<class T> Point_<T> operator-(const Point_<T>& a, const Point_<T>& b);
+template<class T> Point_<T> operator-(const Point_<T>& a);
+template<class T> Point_<T> operator*(const Point_<T>& a, double s);
+template<class T> Point_<T> operator*(double s, const Point_<T>& a);
+template<class T> Point_<T> operator/(const Point_<T>& a, double s);
+template<class T> Point_<T>& operator+=(Point_<T>& a, const Point_<T>& b);
+template<class T> Point_<T>& operator-=(Point_<T>& a, const Point_<T>& b);
+template<class T> Point_<T>& operator*=(Point_<T>& a, double s);
+template<class T> Point_<T>& operator/=(Point_<T>& a, double s);
+template<class T> bool operator==(const Point_<T>& a, const Point_<T>& b);
+template<class T> bool operator!=(const Point_<T>& a, const Point_<T>& b);
+template<class T> double norm(const Point_<T>& p);
 typedef Point_<int> Point;
 typedef Point_<int> Point2i;
 typedef Point_<float> Point2f;
 typedef Point_<double> Point2d;
-template<class T> class Point3_ { public: Point3_(); Point3_(T x, T y, T z); T x, y, z; };
+template<class T> class Point3_ {
+public:
+  Point3_(); Point3_(T x, T y, T z);
+  template<class U> operator Point3_<U>() const;
+  T dot(const Point3_& p) const;
+  Point3_ cross(const Point3_& p) const;
+  T x, y, z;
+};
+template<class T> Point3_<T> operator+(const Point3_<T>& a, const Point3_<T>& b);
+template<class T> Point3_<T> operator-(const Point3_<T>& a, const Point3_<T>& b);
+template<class T> Point3_<T> operator-(const Point3_<T>& a);
+template<class T> Point3_<T> operator*(const Point3_<T>& a, double s);
+template<class T> Point3_<T> operator*(double s, const Point3_<T>& a);
+template<class T> Point3_<T> operator/(const Point3_<T>& a, double s);
+template<class T> Point3_<T>& operator+=(Point3_<T>& a, const Point3_<T>& b);
+template<class T> Point3_<T>& operator-=(Point3_<T>& a, const Point3_<T>& b);
+template<class T> double norm(const Point3_<T>& p);
 typedef Point3_<float> Point3f;
 typedef Point3_<double> Point3d;
-template<class T> class Size_ { public: Size_(); Size_(T w, T h); T width, height; T area() const; };
+template<class T> class Size_ {
+public:
+  Size_(); Size_(T w, T h);
+  template<class U> operator Size_<U>() const;
+  T width, height;
+  T area() const;
+  bool empty() const;
+};
+template<class T> Size_<T> operator*(const Size_<T>& a, T s);
+template<class T> Size_<T> operator/(const Size_<T>& a, T s);
+template<class T> Size_<T> operator+(const Size_<T>& a, const Size_<T>& b);
+template<class T> Size_<T> operator-(const Size_<T>& a, const Size_<T>& b);
+template<class T> bool operator==(const Size_<T>& a, const Size_<T>& b);
+template<class T> bool operator!=(const Size_<T>& a, const Size_<T>& b);
 typedef Size_<int> Size;
 typedef Size_<float> Size2f;
 template<class T> class Rect_ {
 public:
   Rect_(); Rect_(T x, T y, T w, T h);
+  Rect_(const Point_<T>& a, const Point_<T>& b);
+  Rect_(const Point_<T>& origin, const Size_<T>& size);
   T x, y, width, height;
   T area() const;
+  Point_<T> tl() const;
+  Point_<T> br() const;
+  Size_<T> size() const;
+  bool empty() const;
+  bool contains(const Point_<T>& p) const;
 };
+template<class T> Rect_<T> operator&(const Rect_<T>& a, const Rect_<T>& b);
+template<class T> Rect_<T> operator|(const Rect_<T>& a, const Rect_<T>& b);
 typedef Rect_<int> Rect;
-class Scalar { public: Scalar(); Scalar(double v0, double v1 = 0, double v2 = 0, double v3 = 0); double operator[](int i) const; };
-template<class T, int n> class Vec { public: Vec(); T& operator[](int i); const T& operator[](int i) const; };
+class Scalar {
+public:
+  Scalar(); Scalar(double v0, double v1 = 0, double v2 = 0, double v3 = 0);
+  static Scalar all(double v);
+  double operator[](int i) const;
+  double& operator[](int i);
+  double val[4];
+};
+template<class T, int n> class Vec {
+public:
+  Vec();
+  template<class... A> Vec(T v0, A... more);
+  T& operator[](int i); const T& operator[](int i) const;
+  T& operator()(int i); const T& operator()(int i) const;
+  T val[n];
+};
 typedef Vec<uchar, 3> Vec3b;
+typedef Vec<uchar, 4> Vec4b;
+typedef Vec<int, 2> Vec2i;
+typedef Vec<int, 3> Vec3i;
+typedef Vec<int, 4> Vec4i;
+typedef Vec<float, 2> Vec2f;
 typedef Vec<float, 3> Vec3f;
+typedef Vec<float, 4> Vec4f;
+typedef Vec<float, 6> Vec6f;
+typedef Vec<double, 2> Vec2d;
 typedef Vec<double, 3> Vec3d;
-class Range { public: Range(); Range(int start, int end); static Range all(); };
+typedef Vec<double, 4> Vec4d;
+// a small fixed-size matrix (core/matx.hpp): any number of initial values
+template<class T, int m, int n> class Matx {
+public:
+  Matx();
+  template<class... A> Matx(T v0, A... more);
+  explicit Matx(const T* values);
+  T& operator()(int i, int j); const T& operator()(int i, int j) const;
+  T& operator()(int i); const T& operator()(int i) const;
+  Matx<T, n, m> t() const;
+  Matx inv(int method = 0) const;
+  T dot(const Matx& other) const;
+  static Matx eye(); static Matx zeros(); static Matx ones(); static Matx all(T value);
+  T val[m * n];
+};
+template<class T, int m, int k, int n> Matx<T, m, n> operator*(const Matx<T, m, k>& a, const Matx<T, k, n>& b);
+template<class T, int m, int n> Vec<T, m> operator*(const Matx<T, m, n>& a, const Vec<T, n>& b);
+template<class T, int m, int n> Matx<T, m, n> operator*(const Matx<T, m, n>& a, double s);
+template<class T, int m, int n> Matx<T, m, n> operator+(const Matx<T, m, n>& a, const Matx<T, m, n>& b);
+template<class T, int m, int n> Matx<T, m, n> operator-(const Matx<T, m, n>& a, const Matx<T, m, n>& b);
+typedef Matx<float, 2, 2> Matx22f;
+typedef Matx<double, 2, 2> Matx22d;
+typedef Matx<float, 3, 3> Matx33f;
+typedef Matx<double, 3, 3> Matx33d;
+typedef Matx<float, 3, 4> Matx34f;
+typedef Matx<double, 3, 4> Matx34d;
+typedef Matx<float, 4, 4> Matx44f;
+typedef Matx<double, 4, 4> Matx44d;
+typedef Matx<float, 3, 1> Matx31f;
+typedef Matx<double, 3, 1> Matx31d;
+typedef Matx<float, 1, 3> Matx13f;
+typedef Matx<double, 1, 3> Matx13d;
+class Range { public: Range(); Range(int start, int end); static Range all(); int start, end; int size() const; };
 class Mat {
 public:
   Mat();
@@ -80,10 +191,30 @@ public:
   Mat(Size size, int type);
   Mat(Size size, int type, const Scalar& value);
   Mat(const Mat& m, const Rect& roi);
+  Mat(const Mat& m, const Range& rows, const Range& cols = Range::all());
   Mat(const Mat& m);
+  template<class T> explicit Mat(const std::vector<T>& values, bool copy = false);
+  template<class T, int m, int n> Mat(const Matx<T, m, n>& values, bool copy = true);
+  template<class T, int n> Mat(const Vec<T, n>& values, bool copy = true);
+  template<class T> explicit Mat(const Point_<T>& p, bool copy = true);
+  template<class T> explicit Mat(const Point3_<T>& p, bool copy = true);
   Mat& operator=(const Mat& m);
   Mat& operator=(const Scalar& s);
   Mat operator()(const Rect& roi) const;
+  Mat operator()(const Range& rows, const Range& cols) const;
+  Mat rowRange(int start, int end) const;
+  Mat rowRange(const Range& r) const;
+  Mat colRange(int start, int end) const;
+  Mat colRange(const Range& r) const;
+  Mat diag(int d = 0) const;
+  Mat mul(const Mat& m, double scale = 1) const;
+  Mat cross(const Mat& m) const;
+  Mat& setTo(const Scalar& value);
+  Mat& setTo(const Scalar& value, const Mat& mask);
+  void push_back(const Mat& m);
+  int checkVector(int channels, int depth = -1, bool continuous = true) const;
+  Mat getMat(int index = -1) const;  // InputArray's, which is a Mat here
+  void copyTo(std::vector<Mat>& out) const;
   Mat clone() const;
   void copyTo(Mat& m) const;
   void copyTo(Mat& m, const Mat& mask) const;
@@ -125,12 +256,131 @@ public:
 typedef Mat InputArray;
 typedef Mat OutputArray;
 typedef Mat InputOutputArray;
-template<class T> class Mat_ : public Mat { public: Mat_(); Mat_(int rows, int cols); T& operator()(int r, int c); };
+template<class T> class Mat_ : public Mat {
+public:
+  Mat_(); Mat_(int rows, int cols); Mat_(int rows, int cols, const T& value);
+  Mat_(const Mat& m);
+  template<int m, int n> Mat_(const Matx<T, m, n>& values, bool copy = true);
+  T& operator()(int r, int c); const T& operator()(int r, int c) const;
+  T& operator()(int i); const T& operator()(int i) const;
+  T& operator()(Point pt); const T& operator()(Point pt) const;
+  Mat_ t() const; Mat_ inv(int method = 0) const;
+};
 typedef Mat_<double> Mat1d;
+typedef Mat_<float> Mat1f;
+typedef Mat_<uchar> Mat1b;
+typedef Mat_<int> Mat1i;
+// `(Mat_<double>(3, 3) << 1, 0, 0, ...)`
+template<class T> class MatCommaInitializer_ {
+public:
+  template<class V> MatCommaInitializer_& operator,(V value);
+  operator Mat_<T>() const;
+  Mat_<T> operator*() const;
+};
+template<class T, class V> MatCommaInitializer_<T> operator<<(const Mat_<T>& m, V value);
 Mat operator+(const Mat& a, const Mat& b);
+Mat operator+(const Mat& a, const Scalar& s);
 Mat operator-(const Mat& a, const Mat& b);
+Mat operator-(const Mat& a, const Scalar& s);
+Mat operator-(const Mat& a);
 Mat operator*(const Mat& a, const Mat& b);
 Mat operator*(const Mat& a, double s);
+Mat operator*(double s, const Mat& a);
+Mat operator/(const Mat& a, double s);
+Mat operator/(const Mat& a, const Mat& b);
+Mat& operator+=(Mat& a, const Mat& b);
+Mat& operator-=(Mat& a, const Mat& b);
+Mat& operator*=(Mat& a, double s);
+Mat& operator/=(Mat& a, double s);
+Mat operator>(const Mat& a, double s);
+Mat operator<(const Mat& a, double s);
+Mat operator==(const Mat& a, double s);
+Mat operator&(const Mat& a, const Mat& b);
+Mat operator|(const Mat& a, const Mat& b);
+Mat operator~(const Mat& a);
+double norm(const Mat& src, int type = 4);
+double norm(const Mat& a, const Mat& b, int type = 4);
+double determinant(const Mat& m);
+double invert(const Mat& src, Mat& dst, int flags = 0);
+bool solve(const Mat& a, const Mat& b, Mat& dst, int flags = 0);
+void transpose(const Mat& src, Mat& dst);
+void hconcat(const Mat& a, const Mat& b, Mat& dst);
+void vconcat(const Mat& a, const Mat& b, Mat& dst);
+void Rodrigues(const Mat& src, Mat& dst);
+void Rodrigues(const Mat& src, Mat& dst, Mat& jacobian);
+Scalar mean(const Mat& src);
+Scalar mean(const Mat& src, const Mat& mask);
+int countNonZero(const Mat& src);
+void minMaxIdx(const Mat& src, double* min, double* max = 0, int* min_idx = 0, int* max_idx = 0);
+void absdiff(const Mat& a, const Mat& b, Mat& dst);
+void add(const Mat& a, const Mat& b, Mat& dst);
+void subtract(const Mat& a, const Mat& b, Mat& dst);
+void multiply(const Mat& a, const Mat& b, Mat& dst, double scale = 1);
+void addWeighted(const Mat& a, double alpha, const Mat& b, double beta, double gamma, Mat& dst);
+void bitwise_and(const Mat& a, const Mat& b, Mat& dst);
+void bitwise_or(const Mat& a, const Mat& b, Mat& dst);
+void bitwise_not(const Mat& a, Mat& dst);
+void equalizeHist(const Mat& src, Mat& dst);
+void remap(const Mat& src, Mat& dst, const Mat& map1, const Mat& map2, int interpolation, int border = 0, const Scalar& value = Scalar());
+void warpAffine(const Mat& src, Mat& dst, const Mat& m, Size size, int flags = 1);
+void warpPerspective(const Mat& src, Mat& dst, const Mat& m, Size size, int flags = 1);
+Mat getRotationMatrix2D(Point2f center, double angle, double scale);
+void dilate(const Mat& src, Mat& dst, const Mat& kernel);
+void erode(const Mat& src, Mat& dst, const Mat& kernel);
+Mat getStructuringElement(int shape, Size size);
+// core/eigen.hpp: between OpenCV and Eigen matrices
+template<class M> void cv2eigen(const Mat& src, M& dst);
+template<class M> void eigen2cv(const M& src, Mat& dst);
+// core/persistence.hpp: reading and writing XML / YAML settings files
+class FileNodeIterator;
+class FileNode {
+public:
+  enum { NONE = 0, INT = 1, REAL = 2, FLOAT = 2, STR = 3, STRING = 3, SEQ = 4, MAP = 5,
+         TYPE_MASK = 7, FLOW = 8, UNIFORM = 8, EMPTY = 16, NAMED = 32 };
+  FileNode();
+  FileNode operator[](const std::string& key) const;
+  FileNode operator[](const char* key) const;
+  FileNode operator[](int i) const;
+  int type() const;
+  bool empty() const; bool isNone() const; bool isSeq() const; bool isMap() const;
+  bool isInt() const; bool isReal() const; bool isString() const; bool isNamed() const;
+  std::string name() const;
+  size_t size() const;
+  operator int() const; operator float() const; operator double() const;
+  operator std::string() const;
+  double real() const; std::string string() const; Mat mat() const;
+  FileNodeIterator begin() const; FileNodeIterator end() const;
+};
+class FileNodeIterator {
+public:
+  FileNode operator*() const;
+  FileNodeIterator& operator++(); FileNodeIterator operator++(int);
+  bool operator==(const FileNodeIterator& other) const;
+  bool operator!=(const FileNodeIterator& other) const;
+};
+class FileStorage {
+public:
+  enum Mode { READ = 0, WRITE = 1, APPEND = 2, MEMORY = 4, FORMAT_AUTO = 0,
+              FORMAT_XML = 8, FORMAT_YAML = 16, FORMAT_JSON = 24 };
+  FileStorage();
+  FileStorage(const std::string& filename, int flags, const std::string& encoding = std::string());
+  bool open(const std::string& filename, int flags, const std::string& encoding = std::string());
+  bool isOpened() const;
+  void release();
+  std::string releaseAndGetString();
+  FileNode getFirstTopLevelNode() const;
+  FileNode root(int index = 0) const;
+  FileNode operator[](const std::string& name) const;
+  FileNode operator[](const char* name) const;
+  void write(const std::string& name, int value);
+  void write(const std::string& name, double value);
+  void write(const std::string& name, const std::string& value);
+  void write(const std::string& name, const Mat& value);
+  void writeComment(const std::string& comment, bool append = false);
+  template<class T> FileStorage& operator<<(const T& value);
+};
+template<class T> void operator>>(const FileNode& node, T& value);
+template<class T> void read(const FileNode& node, T& value, const T& fallback);
 enum { COLOR_BGR2GRAY = 6, COLOR_RGB2GRAY = 7, COLOR_GRAY2BGR = 8, COLOR_BGR2RGB = 4,
        COLOR_RGB2BGR = 4, COLOR_BGR2HSV = 40, COLOR_HSV2BGR = 54, COLOR_BGRA2BGR = 1,
        COLOR_YUV2BGR_UYVY = 108, COLOR_YUV2BGR_YUYV = 116 };

@@ -147,6 +147,17 @@ int ungetc(int c, FILE* stream);
 int fputc(int c, FILE* stream);
 int fputs(const char* s, FILE* stream);
 int fscanf(FILE* stream, const char* format, ...);
+int feof(FILE* stream);
+int ferror(FILE* stream);
+void clearerr(FILE* stream);
+int fseek(FILE* stream, long offset, int whence);
+long ftell(FILE* stream);
+void rewind(FILE* stream);
+int fileno(FILE* stream);
+FILE* popen(const char* command, const char* type);
+int pclose(FILE* stream);
+int remove(const char* path);
+int rename(const char* from, const char* to);
 struct sched_param { int sched_priority; };
 int sched_setscheduler(int pid, int policy, const struct sched_param* param);
 int sched_getscheduler(int pid);
@@ -274,6 +285,26 @@ int poll(struct pollfd* fds, unsigned long n, int timeout);
 int ioctl(int fd, unsigned long request, ...);
 typedef void (*sighandler_t)(int);
 sighandler_t signal(int signum, sighandler_t handler);
+typedef struct { unsigned long haros_bits[16]; } sigset_t;
+typedef struct { int si_signo; int si_errno; int si_code; } siginfo_t;
+struct sigaction {
+  void (*sa_handler)(int);
+  void (*sa_sigaction)(int, siginfo_t*, void*);
+  sigset_t sa_mask;
+  int sa_flags;
+  void (*sa_restorer)(void);
+};
+int sigaction(int signum, const struct sigaction* act, struct sigaction* old);
+int sigemptyset(sigset_t* set);
+int sigfillset(sigset_t* set);
+int sigaddset(sigset_t* set, int signum);
+int raise(int sig);
+int kill(int pid, int sig);
+// <pwd.h>
+struct passwd { char* pw_name; char* pw_passwd; uid_t pw_uid; unsigned pw_gid;
+                char* pw_gecos; char* pw_dir; char* pw_shell; };
+struct passwd* getpwuid(uid_t uid);
+struct passwd* getpwnam(const char* name);
 // <time.h>: broken-down time
 struct tm { int tm_sec, tm_min, tm_hour, tm_mday, tm_mon, tm_year, tm_wday, tm_yday,
   tm_isdst; long tm_gmtoff; const char* tm_zone; };

@@ -25,6 +25,10 @@ using ::isnan; using ::isinf; using ::isfinite; using ::signal;
 using ::strerror; using ::isalpha; using ::isdigit; using ::isspace; using ::isalnum;
 using ::isupper; using ::islower; using ::ispunct; using ::isxdigit; using ::toupper;
 using ::tolower; using ::hypotf; using ::nan; using ::nanf;
+using ::fopen; using ::fclose; using ::fread; using ::fwrite; using ::fgets; using ::fputs;
+using ::fflush; using ::fgetc; using ::fputc; using ::fscanf; using ::sscanf; using ::feof;
+using ::ferror; using ::fseek; using ::ftell; using ::rewind; using ::remove; using ::rename;
+using ::puts; using ::perror; using ::calloc; using ::realloc; using ::raise;
 double hypot(double x, double y, double z);
 float hypot(float x, float y, float z);
 typedef decltype(nullptr) nullptr_t;
@@ -864,8 +868,16 @@ public:
   long width(long w);
   int precision(int p);
   class streambuf* rdbuf() const;
+  typedef int iostate;
+  static const iostate goodbit = 0, badbit = 1, eofbit = 2, failbit = 4;
+  void clear(iostate state = goodbit);
+  iostate rdstate() const;
+  void setstate(iostate state);
+  bool bad() const;
 };
 typedef ios_base ios;
+typedef long streamsize;
+typedef long streamoff;
 class streambuf {
 public:
   virtual ~streambuf();

@@ -50,7 +50,26 @@ public:
   void setEuler(double yaw, double pitch, double roll);
   void setRotation(const class Vector3& axis, double angle);
   double x() const; double y() const; double z() const; double w() const;
+  double getX() const; double getY() const; double getZ() const; double getW() const;
+  void setX(double v); void setY(double v); void setZ(double v); void setW(double v);
+  void setValue(double x, double y, double z, double w);
   double getAngle() const;
+  double getAngleShortestPath() const;
+  class Vector3 getAxis() const;
+  double dot(const Quaternion& q) const;
+  double length() const; double length2() const;
+  double angle(const Quaternion& q) const;
+  double angleShortestPath(const Quaternion& q) const;
+  Quaternion slerp(const Quaternion& q, double t) const;
+  static const Quaternion& getIdentity();
+  Quaternion operator+(const Quaternion& q) const;
+  Quaternion operator-(const Quaternion& q) const;
+  Quaternion operator-() const;
+  Quaternion operator*(double s) const;
+  Quaternion operator/(double s) const;
+  Quaternion& operator*=(const Quaternion& q);
+  Quaternion& operator*=(double s);
+  bool operator==(const Quaternion& q) const; bool operator!=(const Quaternion& q) const;
   Quaternion normalized() const;
   Quaternion& normalize();
   Quaternion inverse() const;
@@ -67,10 +86,35 @@ public:
   Vector3 operator+(const Vector3& v) const; Vector3 operator-(const Vector3& v) const;
   Vector3 operator*(double s) const;
   double operator[](int i) const; double& operator[](int i);
+  double dot(const Vector3& v) const; Vector3 cross(const Vector3& v) const;
+  double distance(const Vector3& v) const; double distance2(const Vector3& v) const;
+  double angle(const Vector3& v) const;
+  Vector3& normalize(); Vector3 normalized() const;
+  Vector3 rotate(const Vector3& axis, double angle) const;
+  Vector3 absolute() const;
+  void setZero(); bool isZero() const; bool fuzzyZero() const;
+  Vector3 operator-() const; Vector3 operator/(double s) const;
+  Vector3& operator+=(const Vector3& v); Vector3& operator-=(const Vector3& v);
+  Vector3& operator*=(double s); Vector3& operator/=(double s);
+  bool operator==(const Vector3& v) const; bool operator!=(const Vector3& v) const;
 };
 class Matrix3x3 {
 public:
   Matrix3x3(); explicit Matrix3x3(const Quaternion& q);
+  Matrix3x3(double xx, double xy, double xz, double yx, double yy, double yz,
+            double zx, double zy, double zz);
+  void setValue(double xx, double xy, double xz, double yx, double yy, double yz,
+                double zx, double zy, double zz);
+  Vector3 getRow(int i) const; Vector3 getColumn(int i) const;
+  Vector3& operator[](int i);
+  void setIdentity(); static const Matrix3x3& getIdentity();
+  void setRotation(const Quaternion& q);
+  void setEulerYPR(double yaw, double pitch, double roll);
+  Matrix3x3 transpose() const; Matrix3x3 inverse() const;
+  double determinant() const;
+  Vector3 operator*(const Vector3& v) const;
+  Matrix3x3 operator*(const Matrix3x3& m) const;
+  Matrix3x3& operator*=(const Matrix3x3& m);
   void getRPY(double& roll, double& pitch, double& yaw, unsigned int solution = 1) const;
   void getEulerYPR(double& yaw, double& pitch, double& roll, unsigned int solution = 1) const;
   void getRotation(Quaternion& q) const;
@@ -88,15 +132,30 @@ public:
   Transform inverse() const;
   Transform inverseTimes(const Transform& t) const;
   Transform operator*(const Transform& t) const;
+  Transform& operator*=(const Transform& t);
+  Quaternion operator*(const Quaternion& q) const;
+  void mult(const Transform& a, const Transform& b);
+  void setBasis(const Matrix3x3& basis);
   Vector3 operator*(const Vector3& v) const;
   static const Transform& getIdentity();
 };
 template<class T> class Stamped : public T {
 public:
   Stamped(); Stamped(const T& input, const ros::Time& stamp, const std::string& frame_id);
+  void setData(const T& input);
   ros::Time stamp_; std::string frame_id_;
 };
 double angle(const Quaternion& a, const Quaternion& b);
+Vector3 quatRotate(const Quaternion& rotation, const Vector3& v);
+Quaternion slerp(const Quaternion& a, const Quaternion& b, double t);
+Quaternion inverse(const Quaternion& q);
+double dot(const Quaternion& a, const Quaternion& b);
+Quaternion shortestArcQuat(const Vector3& a, const Vector3& b);
+Quaternion operator*(const Quaternion& q, const Vector3& v);
+Vector3 operator*(double s, const Vector3& v);
+double tf2Dot(const Vector3& a, const Vector3& b);
+Vector3 tf2Cross(const Vector3& a, const Vector3& b);
+double tf2Distance(const Vector3& a, const Vector3& b);
 template<class A, class B> void fromMsg(const A& a, B& b);
 // tf2_geometry_msgs: a LinearMath quaternion or vector becomes its geometry_msgs message,
 // whose header this stand-in does not include: the message's fields, and it converts to

@@ -1,0 +1,1 @@
+#include <tf/haros_tf.h>

@@ -1,0 +1,2 @@
+// haros_arch stand-in
+#include <tf2_ros/buffer.h>
