@@ -313,6 +313,12 @@ CATALOGUE: dict[str, Entry] = {
         "warning", "interpretation stopped: {detail}",
         "A launch file exceeded a bound of the static interpreter (steps, call depth, "
         "size of a value, number of actions). What was computed before is kept."),
+    "LAUNCH_CONTAINER_EXTERNAL": Entry(
+        "info", "components are loaded into the container {container}, which this "
+        "configuration does not start: it runs elsewhere, with components not seen here",
+        "A launch file loads components into a container that no launch file of the "
+        "configuration starts (another launch file runs it); what else runs in that "
+        "container is not seen, so checks that claim an absence do not decide."),
     "LAUNCH_PARAM_FILE": Entry(
         "warning", "{detail}",
         "A parameter file given to a node cannot be read or matched statically; the "
@@ -588,6 +594,14 @@ CATALOGUE: dict[str, Entry] = {
         "parameter (robot_localization's imu0, twist_mux's topics list) and neither the "
         "launch files nor their parameter files set it, and the code gives no default: "
         "the link's name stays '?'. Set the parameter where the node is launched."),
+    "NAME_ARG_UNSET": Entry(
+        "info", "{node}: the name of this {kind} holds the process's command-line "
+        "argument {which}, {why}; it stays unknown",
+        "The code builds a topic or service name from its command-line arguments "
+        "(kinova_driver's robot_name = argv[argc-1]) and the instance's args do not "
+        "tell that argument: the launch file gives too few, its args are not known "
+        "statically, or the argument differs before and after ros::init (a ':=' word "
+        "among the args). Give the node its args where it is launched."),
     "NODE_NOT_FOUND": Entry(
         "warning", "node type {node} is not in the workspace; its interface is unknown",
         "A launch file starts an executable that no workspace package builds; the "

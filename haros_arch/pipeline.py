@@ -63,7 +63,7 @@ def analyse(project: Project, environment: Mapping[str, str] | None = None,
             options: Options | None = None) -> Model:
     """Scan the workspace, read build files and sources, and build every configuration."""
     options = options or Options()
-    env = {**(os.environ if environment is None else environment), **project.environment}
+    env = distro_environment(project, os.environ if environment is None else environment)
     if options.cache_dir is None:
         return _analyse(project, env, options, None)
     with _stage(options, "cache"):  # a run with nothing changed: its model, kept
@@ -145,6 +145,19 @@ def _extract(nodes: list[Node], workspace: Workspace, project: Project,
         nodes, workspace, cache_dir=options.cache_dir, jobs=options.jobs,
         compile_commands=_compile_commands(project), timings=options.timings,
         cpp_batch=cpp_batch, kept=kept, keep=keep, distro=source_distro(project, env))
+
+
+def distro_environment(project: Project, environment: Mapping[str, str]) -> dict[str, str]:
+    """The run's environment with the project file's: a ``distro:`` is the ROS_DISTRO the
+    launch files run under (as the distribution's setup script sets it), over the shell's
+    own, unless the project's ``environment:`` (or a configuration's) names one:
+    OrbbecSDK_ROS2's camera launch files choose a plain node or a component on
+    ``os.environ["ROS_DISTRO"] == "foxy"``, and left unset both were started."""
+    env = dict(environment)
+    if project.distro:
+        env["ROS_DISTRO"] = project.distro
+    env.update(project.environment)
+    return env
 
 
 def source_distro(project: Project, env: Mapping[str, str]) -> str | None:
@@ -247,6 +260,7 @@ def _analyse(project: Project, env: Mapping[str, str], options: Options,
             graph.build(config, launches[spec.name], workspace, known,
                         models.plugin_models(launches[spec.name], config.environment))
             config.launch_tree = launches[spec.name].tree
+            graph.external_containers(config, launches[spec.name])
             if spec.hints:
                 where = Location(file=project_file.file, line=spec.line, column=1)
                 config.diagnostics.extend(graph.apply_hints(config, spec.hints, nodes, where))

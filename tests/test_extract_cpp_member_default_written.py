@@ -98,3 +98,37 @@ def test_a_member_set_from_a_parameter_and_in_a_parameter_callback_is_that_param
     result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
     subs = [c for c in result.calls if c.kind == "subscribe"]
     assert len(subs) == 1 and subs[0].name_param == "scan_topic", subs
+
+
+RNAV = """\
+#include <rclcpp/rclcpp.hpp>
+#include <nav_msgs/msg/odometry.hpp>
+using Odom = nav_msgs::msg::Odometry;
+class Rnav : public rclcpp::Node {
+public:
+  Rnav() : Node("rnav") {
+    read_parameters();
+    sub_ = create_subscription<Odom>(topic_odometry_, 1, [](Odom::ConstSharedPtr) {});
+  }
+  void read_parameters() {
+    declare_parameter<std::string>("topic_odometry", topic_odometry_);
+    get_parameter("topic_odometry", topic_odometry_);
+  }
+  std::string topic_odometry_ = "/odom";
+  rclcpp::Subscription<Odom>::SharedPtr sub_;
+};
+"""
+
+
+def test_a_member_read_into_keeps_its_initialiser_as_the_names_default(tmp_path) -> None:
+    """mrpt_reactivenav2d: ``std::string subTopicOdometry_ = "/odom";`` then
+    ``get_parameter("topic_odometry", subTopicOdometry_)``: the subscription is named
+    by that parameter, with "/odom" as its default (the variable is left as it was when
+    the parameter is not set), not a name wholly unknown."""
+    (tmp_path / "package.xml").write_text(package_xml("rnav", "ament_cmake").replace(
+        "</package>", "<depend>rclcpp</depend><depend>nav_msgs</depend></package>"))
+    source = tmp_path / "rnav.cpp"
+    source.write_text(RNAV)
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    (sub,) = [c for c in result.calls if c.kind == "subscribe"]
+    assert (sub.name_param, sub.name_default) == ("topic_odometry", "/odom"), sub

@@ -362,3 +362,16 @@ def test_ros1_tf2_to_msg_of_linear_math_types(write_tree) -> None:
     result = _extract(write_tree, _source("ros1_tf2_to_msg.cpp"), "catkin")
     assert _errors(result) == []
     assert [(c.kind, c.name) for c in result.calls] == [("publish", "odom")]
+
+
+def test_ros2_posix_shared_memory_signals_and_eight_placeholders(write_tree) -> None:
+    """OrbbecSDK_ROS2's camera driver installs handlers for SIGSEGV / SIGABRT / SIGFPE /
+    SIGILL and shares a process-shared pthread mutex through shm_open / ftruncate / mmap
+    in init(), which makes its publishers; dynamic_params compares two
+    rclcpp::ParameterValue, ob_camera_node locks with std::try_to_lock, and its examples
+    bind eight placeholders. Each was undeclared by the stand-ins: errors in functions
+    that call the ROS API, and all 58 driver instances of the workspace partial."""
+    result = _extract(write_tree, _source("ros2_shared_memory.cpp"), "ament_cmake")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls if c.kind == "publish"] == [
+        ("publish", "status")]

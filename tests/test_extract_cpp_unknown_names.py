@@ -817,3 +817,22 @@ def test_the_node_bound_with_its_own_member_function_is_a_callback_binding(
         given = _server(write_tree, source.replace("OTHER", other))
         assert [(d.code, d.location.line) for d in given.diagnostics
                 if d.code == "CPP_NODE_TO_UNKNOWN"] == [("CPP_NODE_TO_UNKNOWN", 13)]
+
+
+def test_an_explicit_template_instantiation_is_no_call_site() -> None:
+    """OrbbecSDK_ROS2's dynamic_params.cpp instantiates its wrapper for each type
+    (``template void Parameters::setParamT<bool>(std::string param_name, ...);``): a
+    declaration, no call. Each was a missed call site and made every orbbec camera
+    driver instance partial (58 of 96 instances). A call through ``->template`` and an
+    ``extern template`` declaration are told apart; a specialisation's body still counts."""
+    from haros_arch.extract.cpp import recall
+
+    text = ("template void Parameters::setParamT<bool>(std::string param_name,\n"
+            "    rclcpp::ParameterValue initial_value, bool &param);\n"
+            "extern template void Parameters::setParamT<int>(std::string n, int &p);\n"
+            "  pub_ = node_->template create_publisher<Array>(\"f\", 1);\n"
+            "template <class T> void f(T& p) {\n"
+            "  setParamT<T>(\"x\", p);\n"
+            "  sub_ = node_->\n"
+            "    template create_subscription<Array>(\"g\", 1, cb);\n")
+    assert [s.line for s in recall.call_sites(text, ["setParamT"])] == [4, 6, 8]

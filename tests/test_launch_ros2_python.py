@@ -219,6 +219,39 @@ def generate_launch_description():
     assert "LAUNCH_PY_BUDGET" not in codes(model)
     assert any("recursive call" in d.message for d in model.diagnostics)
 
+
+def test_recursion_with_some_values_not_known_stops_too(write_tree):
+    """OrbbecSDK_ROS2's utils_yaml.parse_yaml(data, prefix, params) walks a YAML file not
+    read here, passing the dict it fills on: not every argument is unknown, so each
+    call recursed again until the depth bound stopped the whole file (orbbec_multicamera:
+    no node at all). Nested a few times on a value not known, its value is unknown; a
+    recursion on known values runs to its end."""
+    model, _ = run(write_tree, """
+def parse(data, prefix='', params=None):
+    if params is None:
+        params = {}
+    if isinstance(data, dict):
+        for key, value in data.items():
+            params = parse(value, prefix=f'{key}.', params=params)
+    else:
+        params[prefix[:-1]] = data
+    return params
+
+def depth(n):
+    return 0 if n == 0 else 1 + depth(n - 1)
+
+def setup(context, *args, **kwargs):
+    data = os.path.isfile('/no/such.yaml')
+    parsed = parse(data)
+    return [Node(package='p', executable='e', name='camera_%d' % depth(20),
+                 parameters=[parsed])]
+
+def generate_launch_description():
+    return LaunchDescription([OpaqueFunction(function=setup)])
+""")
+    assert [n.name for n in model.nodes] == ["/camera_20"]
+    assert "LAUNCH_PY_BUDGET" not in codes(model)
+
 def test_hostile_sources_are_refused_before_interpretation(write_tree):
     nested, _ = run(write_tree, "x = " + "(" * 5000 + "1" + ")" * 5000 + "\n")
     assert codes(nested) in (["LAUNCH_PY_SYNTAX"], ["LAUNCH_PY_BUDGET"])

@@ -675,3 +675,64 @@ def generate_launch_description():
     return LaunchDescription(args + [Node(package='p', executable='e', name='cam')])
 """)
     assert [n.name for n in model.nodes] == ["/cam"]
+
+
+def test_a_builtin_exception_goes_to_the_handler_that_catches_it(write_tree):
+    """OrbbecSDK_ROS2's convert_value: ``try: return int(value) except ValueError: pass``
+    then float(), then 'true' / 'false', else the string. The handlers were not run:
+    each int('camera_01') was a LAUNCH_PY_UNSUPPORTED warning (358 on the workspace) and
+    made the parameter unknown. A handler of a class not known here is not taken."""
+    model, _ = run(write_tree, """
+import json
+
+def convert(value):
+    try:
+        return int(value)
+    except ValueError:
+        pass
+    try:
+        return float(value)
+    except (TypeError, ValueError) as err:
+        pass
+    if value.lower() == 'true':
+        return True
+    return value
+
+def other(value):
+    try:
+        return int(value)
+    except json.JSONDecodeError:
+        return 'caught'
+
+def generate_launch_description():
+    return LaunchDescription([Node(package='p', executable='e', name='cam', parameters=[{
+        'name': convert('camera_01'), 'rate': convert('30'), 'scale': convert('0.5'),
+        'on': convert('true'), 'x': other('y')}])])
+""")
+    params = {p.name: p.value for p in model.params}
+    assert {k: params[k] for k in ("/cam/name", "/cam/rate", "/cam/scale", "/cam/on")} == {
+        "/cam/name": "camera_01", "/cam/rate": 30, "/cam/scale": 0.5, "/cam/on": True}
+    messages = [d.message for d in model.diagnostics if d.code == "LAUNCH_PY_UNSUPPORTED"]
+    assert len(messages) == 1 and "int() fails" in messages[0], messages
+
+
+def test_a_star_import_of_a_helper_module_binds_its_public_names(write_tree):
+    """OrbbecSDK_ROS2's orbbec_camera.launch.py: ``sys.path.append(<its folder>)`` then
+    ``from utils_yaml import *`` and calls of load_and_parse_yaml, update_params,
+    find_param: each name was "not defined here". A module's ``__all__`` limits them."""
+    model, _ = run(write_tree, """
+import sys
+sys.path.append(os.path.dirname(os.path.realpath(__file__)))
+from name_helpers import *
+from listed_helpers import *
+
+def generate_launch_description():
+    names = [camera_name('front'), PREFIX]
+    return LaunchDescription([Node(package='p', executable='e', name=n) for n in names])
+""", extra={"src/pkg/launch/name_helpers.py": "PREFIX = 'rig'\n_private = 'no'\n"
+                                              "def camera_name(side):\n"
+                                              "    return 'cam_' + side\n",
+            "src/pkg/launch/listed_helpers.py": "__all__ = ['other']\nother = 1\n"
+                                                "PREFIX = 'overwritten'\n"})
+    assert [n.name for n in model.nodes] == ["/cam_front", "/rig"]
+    assert not any("not defined" in d.message for d in model.diagnostics), model.diagnostics

@@ -483,3 +483,21 @@ def test_two_instances_of_one_name_are_counted_in_a_message():
              "location": {"file": "a.cpp", "line": 5}}]})
     [found] = run_catalogue(model, None, [RULES["multiple-publishers"]])
     assert found.message == "/dock is published by /sensors (2 instances)"
+
+
+def test_similar_disconnected_topics_leaves_names_not_known_out():
+    """OrbbecSDK_ROS2: once its driver was read whole, 64 warnings paired topics whose
+    names hold '?' (``/camera_01/?`` with ``/start_benchmark/?``, a publisher of
+    ``/?/depth_to_color/image_raw`` with a subscriber of ``/?/color/image_raw``): a name
+    not known may be the other's, or have a partner; every other absence rule leaves
+    such names out (unresolved-names lists them)."""
+    def pair(published: str, subscribed: str) -> object:
+        return configuration({"links": [
+            {"kind": "publish", "node": "/cam", "name": published, "given": published,
+             "type": "sensor_msgs/Image"},
+            {"kind": "subscribe", "node": "/bench", "name": subscribed,
+             "given": subscribed, "type": "sensor_msgs/Image"}]})
+    rule = RULES["similar-disconnected-topics"]
+    assert len(run_rule(rule, pair("/cam/image", "/bench/image"))) == 1
+    assert run_rule(rule, pair("/cam/?", "/bench/?")) == []
+    assert run_rule(rule, pair("/?/depth/image_raw", "/?/color/image_raw")) == []

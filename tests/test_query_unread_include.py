@@ -16,6 +16,7 @@ from conftest import package_xml
 
 from haros_arch.pipeline import Options, analyse
 from haros_arch.project import load
+from haros_arch.project import load as load_project
 from haros_arch.query import run_catalogue
 
 NODE = """#!/usr/bin/env python
@@ -225,3 +226,59 @@ def test_a_ros2_xml_tag_of_a_launch_extension_leaves_them_undecided(
     if tag:
         assert [d.code for d in model.configurations[0].diagnostics
                 if d.code == "LAUNCH_UNKNOWN_TAG"] == ["LAUNCH_UNKNOWN_TAG"]
+
+
+COMPONENT_LAUNCH = """from launch import LaunchDescription
+from launch_ros.actions import ComposableNodeContainer, LoadComposableNodes, Node
+from launch_ros.descriptions import ComposableNode
+
+
+def generate_launch_description():
+    rectify = [ComposableNode(package='image_proc', plugin='image_proc::RectifyNode',
+                              name='rectify', namespace='camera')]
+    return LaunchDescription([
+        LOAD,
+        Node(package='conv', executable='scan', name='scan'),
+    ])
+"""
+
+
+@pytest.mark.parametrize("load", [
+    "ComposableNodeContainer(name='container', namespace='camera', "
+    "package='rclcpp_components', executable='component_container', "
+    "composable_node_descriptions=rectify)",
+    "LoadComposableNodes(target_container='/camera/container', "
+    "composable_node_descriptions=rectify)",
+], ids=["container-here", "container-elsewhere"])
+def test_components_loaded_into_a_container_started_elsewhere_leave_them_undecided(
+        write_tree: Any, load: str) -> None:
+    """clearpath_sensors' image_rectify.launch.py loads image_proc's RectifyNode into
+    ``<namespace>/image_processing_container``, which the camera's launch file starts
+    with the camera driver in it: the driver that publishes the image is not seen, and
+    the subscriber-without-publisher warnings on the image were decided all the same."""
+    root: Path = write_tree({
+        "src/conv/package.xml": package_xml("conv", "ament_python"),
+        "src/conv/setup.py": "from setuptools import setup\nsetup(name='conv', "
+                             "packages=['conv'], entry_points={'console_scripts': "
+                             "['scan = conv.scan:main']})\n",
+        "src/conv/conv/__init__.py": "",
+        "src/conv/conv/scan.py": ROS2_NODE,
+        "src/conv/launch/a.launch.py": COMPONENT_LAUNCH.replace("LOAD", load),
+        "project.yaml": "project: p\ndistro: jazzy\n"
+                        "configurations:\n  c: [conv/launch/a.launch.py]\n",
+    })
+    project = load_project(str(root / "project.yaml"))
+    model = analyse(project, {"PATH": os.environ.get("PATH", "")}, Options(cache_dir=None))
+    found: dict[str, list[str]] = {}
+    for finding in run_catalogue(model, project):
+        found.setdefault(finding.rule, []).append(finding.message)
+    codes = {d.code for c in model.configurations for d in c.diagnostics}
+    if load.startswith("ComposableNodeContainer"):
+        assert any(m.startswith("/scan subscribes to /points")
+                   for m in found["subscriber-without-publisher"])
+        assert "LAUNCH_CONTAINER_EXTERNAL" not in codes
+        return
+    assert "subscriber-without-publisher" not in found
+    assert "LAUNCH_CONTAINER_EXTERNAL" in codes
+    assert all("container /camera/container (started elsewhere)" in m
+               for m in found["subscriber-without-publisher-undecided"])

@@ -290,13 +290,18 @@ def test_project_names_launch_files_where_they_are_installed(tmp_path: Path) -> 
     model = analyse(load(str(ROOT.parent / "project.yaml")), {},
                     Options(cache_dir=str(tmp_path / "cache"), jobs=1))
     arm, teleop = model.configurations
-    # robot_state_publisher and spawner (no source here, unnamed in the launch file) are
-    # named by their jazzy interface models, as their code names them: the spawner
-    # "spawner_" + its first controller (spawner.py:401), known at run time only
+    # robot_state_publisher (no source here, unnamed in the launch file) is named by its
+    # jazzy interface model, as its code names it; the spawner by its arguments, as its
+    # code does: "spawner_" + its first controller (spawner.py:401, models.commands); the
+    # controller it loads (a ros2_controllers class, no source here) is a node of its own
     assert sorted(n.name for n in arm.nodes if "?" not in n.name) == [
-        "/controller_manager", "/gripper", "/joint_state_publisher", "/robot_state_publisher"]
+        "/controller_manager", "/gripper", "/joint_state_broadcaster",
+        "/joint_state_publisher", "/robot_state_publisher",
+        "/spawner_joint_state_broadcaster"]
     assert [n.name for n in arm.nodes if n.node is not None
-            and n.node.name == "controller_manager/spawner"] == ["/?"]
+            and n.node.name == "controller_manager/spawner"] == [
+        "/spawner_joint_state_broadcaster"]
+    assert arm.node("/joint_state_broadcaster").node is None  # its interface unknown
     gripper = arm.node("/gripper")
     assert gripper is not None and gripper.node is not None  # built from gripper_driver
     force = next(p for p in arm.parameters if p.name == "/gripper/max_force")

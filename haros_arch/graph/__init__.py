@@ -4,8 +4,9 @@
 the project file's extraction hints; ``find_candidates`` lists what unknown names may be.
 """
 
-from .build import build
+from .build import build, external_containers
 from .candidates import find_candidates
 from .hints import apply_hints, apply_node_hints, prune_orphans
 
-__all__ = ["apply_hints", "apply_node_hints", "build", "find_candidates", "prune_orphans"]
+__all__ = ["apply_hints", "apply_node_hints", "build", "external_containers",
+           "find_candidates", "prune_orphans"]

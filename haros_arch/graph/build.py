@@ -15,7 +15,7 @@ from ..diagnostics import Diagnostic
 from ..launch.model import LaunchModel, NodeDecl
 from ..launch.ros2.naming import pattern_matches
 from ..model.conditions import EACH_STATEMENT, Condition
-from ..model.launch_tree import PackageUse, installed_check
+from ..model.launch_tree import LaunchItem, PackageUse, installed_check
 from ..model.location import Location
 from ..model.rosname import RosName, namespace_of, remap, resolve, resolve_remaps
 from ..model.runtime import (
@@ -39,7 +39,7 @@ from ..robot.attach import attach as attach_descriptions
 from ..rosrun import find_executable
 from ..workspace import Workspace, installed_roots
 from .actions import action_links
-from .conditions import arguments_left, decide, decide_links, drop_links, program_views
+from .conditions import decide, decide_links, drop_links, program_argument, program_views
 from .processes import guessed_names, process_nodes, process_params, unnamed_param_files
 
 RESOURCE_OF_KIND: dict[str, type[Resource]] = {
@@ -205,6 +205,10 @@ def _link_calls(instance: NodeInstance, calls: Sequence[PrimitiveCall], resource
             base = resolved_name(instance, each, remaps, resources)
             if each.name_param is not None and base.is_unresolved:
                 config.diagnostics.append(_name_param_unset(instance, each))
+            if each.name_arg is not None and UNKNOWN_MARK in each.name and not (
+                program_argument(instance, each.name_arg)
+            ):
+                config.diagnostics.append(_name_arg_unset(instance, each))
             if each.transport is None:
                 link(instance, each, remaps, resources, config, base)
                 continue
@@ -455,6 +459,33 @@ def _program_file(workspace: Workspace, package: str, name: str) -> str | None:
     return find_executable(root, name)
 
 
+def external_containers(config: Configuration, launch: LaunchModel) -> None:
+    """Components the configuration loads into a container it does not start
+    (``LoadComposableNodes(target_container=...)`` of a container that another launch
+    file runs: clearpath_sensors' image_proc launch files load into the camera's
+    ``image_processing_container``): that container runs elsewhere, with components
+    of its own not seen here (the camera driver that publishes the image the loaded
+    node subscribes to). Each such container is an unread part of the launch tree
+    (``query.absence``: checks that claim an absence do not decide), said once
+    (LAUNCH_CONTAINER_EXTERNAL)."""
+    started = {decl.name for decl in launch.nodes}
+    said: set[str] = set()
+    for decl in launch.nodes:
+        target = decl.container
+        if not decl.composable or not target or UNKNOWN_MARK in target or "$(" in target:
+            continue
+        full = target if target.startswith("/") else "/" + target
+        if full in started or target in started or full in said:
+            continue
+        said.add(full)
+        config.diagnostics.append(diag.make("LAUNCH_CONTAINER_EXTERNAL", decl.location,
+                                            container=full))
+        if config.launch_tree:
+            config.launch_tree[0].add(LaunchItem("include", full, decl.location,
+                                                 namespace=decl.namespace,
+                                                 detail="container"))
+
+
 def is_container(decl: NodeDecl) -> bool:
     """A nodelet manager or an rclcpp component container (their plugins do the work)."""
     return decl.package == "nodelet" or (
@@ -578,6 +609,11 @@ def _given_name(call: PrimitiveCall, instance: NodeInstance, resources: Resource
     neither, the name keeps its ``?``. ROS 2 parameters belong to their node, so their
     names are resolved as private names.
     """
+    if call.name_arg is not None and UNKNOWN_MARK in call.name:
+        # a command-line argument's value (``"/" + argv[1] + "/cmd"``); none: the ``?``
+        given = program_argument(instance, call.name_arg)
+        if given:
+            call = replace(call, name=_filled(call.name, given), name_arg=None)
     if instance.ros_version == 2 and RESOURCE_OF_KIND[call.kind] is Parameter:
         return _node_scoped(call.name)
     if call.name_param is None or UNKNOWN_MARK not in call.name:
@@ -591,10 +627,15 @@ def _given_name(call: PrimitiveCall, instance: NodeInstance, resources: Resource
         value = value.replace(UNKNOWN_MARK, other, 1) if other else None
     if not value:  # none, or empty: no topic is named "" (rosbot's gz bridge guards it)
         return call.name
+    return _filled(call.name, value)
+
+
+def _filled(name: str, value: str) -> str:
+    """``name`` with ``value`` in the place of its (first) ``?``."""
     if value.startswith(("/", "~")) and (
-            call.name == UNKNOWN_MARK or call.name.endswith("/" + UNKNOWN_MARK)):
+            name == UNKNOWN_MARK or name.endswith("/" + UNKNOWN_MARK)):
         return value  # a global or private name is not resolved in the handle's namespace
-    return call.name.replace(UNKNOWN_MARK, value, 1)
+    return name.replace(UNKNOWN_MARK, value, 1)
 
 
 def _parameter_value(written: str, default: str | None, instance: NodeInstance,
@@ -648,11 +689,6 @@ def _argument_values(instance: NodeInstance) -> dict[str, str]:
         c for c in instance.node.calls if c.kind == "write" and c.program_arg is not None
         and not any(decide(k, _no_values, views) is False for k in c.conditions)]
     if writes:
-        try:
-            words = shlex.split(instance.args)
-        except ValueError:
-            words = []
-        words = arguments_left(words, instance.ros_version)
         positions: dict[str, set[int]] = {}
         for write in writes:
             assert write.program_arg is not None
@@ -662,8 +698,8 @@ def _argument_values(instance: NodeInstance) -> dict[str, str]:
                 positions.setdefault(full, set()).add(write.program_arg)
         # one argument per parameter: writes from different ones depend on conditions
         # over the arguments not read here (throttle's "messages" against "bytes")
-        found = {full: words[at - 1] for full, (at, *others) in positions.items()
-                 if not others and at <= len(words)}
+        found = {full: value for full, (at, *others) in positions.items()
+                 if not others and (value := program_argument(instance, at)) is not None}
     _ARGUMENT_VALUES[instance] = found
     return found
 
@@ -722,6 +758,21 @@ def _name_param_unset(instance: NodeInstance, call: PrimitiveCall) -> Diagnostic
             }.get(call.name_each, f"elements of the list parameter {param}")
     return diag.make("NAME_PARAM_UNSET", call.location, node=instance.name,
                      kind=call.kind, what=what)
+
+
+def _name_arg_unset(instance: NodeInstance, call: PrimitiveCall) -> Diagnostic:
+    """Why a name taken from a command-line argument stays unknown."""
+    index = call.name_arg or 0
+    which = f"argv[{index}]" if index > 0 else f"argv[argc - {-index}]"
+    if program_views(instance) is None:
+        why = f"and its args ({instance.args!r}) are not known statically"
+    elif instance.ros_version == 1 and index > 0 and any(
+            ":=" in word for word in instance.args.split()):
+        why = "which differs before and after ros::init takes the ':=' words of its args"
+    else:
+        why = f"which its args ({instance.args!r}) do not give"
+    return diag.make("NAME_ARG_UNSET", call.location, node=instance.name, kind=call.kind,
+                     which=which, why=why)
 
 
 def _numbered_calls(call: PrimitiveCall, full: str, resources: Resources

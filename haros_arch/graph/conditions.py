@@ -359,6 +359,23 @@ def program_views(instance: NodeInstance) -> list[ProgramView] | None:
     return [(before, given), (given, given)]
 
 
+def program_argument(instance: NodeInstance, index: int) -> str | None:
+    """The instance's ``index``-th command-line argument as its code sees it
+    (``PrimitiveCall.program_arg`` / ``name_arg``): counted from the front, in every way
+    the code may see its arguments (``program_views``: ROS 1's ``argv`` before and after
+    ``ros::init``, which must agree); from the end (negative), in what the client library
+    leaves, which the extractor tells only after it took its words. None when the
+    arguments are not known or the instance has no such argument (never its program)."""
+    views = program_views(instance)
+    found = set()
+    for argv, kept in views or ():
+        seen = argv if argv is not None and index > 0 else kept
+        if not -len(seen) < index < len(seen) or index == 0:
+            return None
+        found.add(seen[index])
+    return found.pop() if len(found) == 1 else None
+
+
 def arguments_left(words: list[str], ros_version: int) -> list[str]:
     """What a program's client library leaves of its arguments: roscpp's ``ros::init``
     takes every ``:=`` word (remaps, ``__name:=``), rclcpp every ``--ros-args ... --``

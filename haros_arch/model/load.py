@@ -89,8 +89,9 @@ def diagnostic_from_data(data: dict[str, Any]) -> Diagnostic:
 
 
 def _program_arg(value: Any) -> int | None:
+    """A program argument's index: K > 0 from the front, -K from the end."""
     return value if isinstance(value, int) and not isinstance(value, bool) and (
-        0 < value < 1000) else None
+        0 < abs(value) < 1000) else None
 
 
 def call_from_data(c: dict[str, Any]) -> PrimitiveCall:
@@ -110,6 +111,7 @@ def call_from_data(c: dict[str, Any]) -> PrimitiveCall:
                          deletes=bool(c.get("deletes", False)),
                          node_name=c.get("node_name"), name_each=c.get("name_each"),
                          program_arg=_program_arg(c.get("program_arg")),
+                         name_arg=_program_arg(c.get("name_arg")),
                          transport=c.get("transport"),
                          variable=c.get("variable"),
                          also=c.get("also") if isinstance(c.get("also"), list) else None,

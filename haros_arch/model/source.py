@@ -113,6 +113,12 @@ class PrimitiveCall:
     # the first argument): topic_tools' relay sets ``input_topic`` from ``args.at(1)``.
     # The graph takes the value from the arguments the launch file gives the instance
     program_arg: int | None = field(default=None, metadata={"optional": True})
+    # a name whose one ``?`` is the process's K-th command-line argument, counted as
+    # ``program_arg`` is, and from the end when negative (-1: roscpp's ``argv[argc - 1]``
+    # after ``ros::init``, which has taken roslaunch's ``:=`` words off): kinova's
+    # ``"/" + robot_name + "_driver/..."`` with ``robot_name = argv[argc - 1]``. The graph
+    # takes the value from the arguments the launch file gives the instance
+    name_arg: int | None = field(default=None, metadata={"optional": True})
     # a call made through image_transport (``plugins.hosts.TRANSPORTS``): ``*`` for a
     # publisher, which also publishes the topic of every transport plugin it loads; for
     # a subscriber the transport its code names (``raw``, ``compressed``), or ``?`` when

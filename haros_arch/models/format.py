@@ -134,9 +134,11 @@ def from_document(data: Any, path: str = "") -> InterfaceModel:
                                  f"{', '.join(CALL_KINDS)}")
         if not all(isinstance(call.get(key), str | None) for key in _TEXT_FIELDS):
             raise ModelFileError(f"a call's {', '.join(_TEXT_FIELDS)} must be strings")
-        arg = call.get("program_arg")
-        if arg is not None and (not isinstance(arg, int) or isinstance(arg, bool) or arg < 1):
-            raise ModelFileError("a call's program_arg must be a positive integer")
+        for key in ("program_arg", "name_arg"):
+            arg = call.get(key)
+            if arg is not None and (not isinstance(arg, int) or isinstance(arg, bool)
+                                    or arg == 0):
+                raise ModelFileError(f"a call's {key} must be a non-zero integer")
     try:
         built = [node_from_data(n, package) for n in nodes]
     except (TypeError, ValueError, AttributeError) as error:

@@ -130,5 +130,7 @@ def label(item: Any) -> str:
     if isinstance(item, LaunchItem) and item.kind == "include":
         if item.detail == "action":
             return f"action not interpreted ({item.name})"
+        if item.detail == "container":
+            return f"container {item.name} (started elsewhere)"
         return f"include {item.name} (not read)"
     return str(plain(item))

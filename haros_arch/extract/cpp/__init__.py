@@ -618,10 +618,8 @@ def _translation_unit(path: str, text: str, ros2: bool,
     """What one source file gives, and the workspace / synthesised headers it read
     (empty when the result must not be cached)."""
     workspace = setup.workspace
-    result = CppResult()
     before = len(setup.diagnostics)
     data = text.encode("utf-8")
-    source = SourceCache(workspace.root, {path: data})
 
     known: dict[str, bool] = {}  # clang names the same few files for every error
 
@@ -640,32 +638,45 @@ def _translation_unit(path: str, text: str, ros2: bool,
             return workspace.location(path)
         return workspace.location(os.path.abspath(loc.file.name), loc.line, loc.column)
 
-    tu = _parse(path, text, setup, workspace, result, source, owned, ros2)
-    if tu is None:
-        result.unseen = ["*"]
-        return result, []
-    errors = [e for e in _errors(tu) if e.name is not None and owned(e.name)]
-    fieldless = _fieldless_packages(setup.diagnostics)
-    for error in errors[:MAX_ERRORS_PER_FILE]:
-        assert error.path is not None
-        code = ("CPP_MESSAGE_FIELD" if _names_fieldless_type(error.spelling, fieldless)
-                else "CPP_PARSE_ERROR")
-        result.diagnostics.append(diag.make(
-            code, workspace.location(error.path, error.line, error.column),
-            detail=error_detail(error.spelling, setup.generated)))
-    # the header of the names declared permissively, when this parse has them
-    declared = os.path.join(setup.generated, synthesis.HEADER_NAME) if any(
-        d.code == "CPP_NAMES_DECLARED" for d in result.diagnostics) else None
-    read: list[str] = []  # the workspace files the ROS 1 client test reads
-    finder = CallFinder(tu, source, owned, where, ros2=ros2, declared=declared,
-                        clients=None if ros2 else ros1_clients(path, workspace, setup.generated,
-                                                               read))
-    finder.run()
+    # the unit's own wrappers of the API, once a walk found them: a second parse declares
+    # the names of the errors in functions that call them (``_again_for``)
+    wrappers: tuple[frozenset[str], frozenset[str]] | None = None
+    while True:
+        result = CppResult()
+        source = SourceCache(workspace.root, {path: data})
+        tu = _parse(path, text, setup, workspace, result, source, owned, ros2, wrappers)
+        if tu is None:
+            result.unseen = ["*"]
+            return result, []
+        errors = [e for e in _errors(tu) if e.name is not None and owned(e.name)]
+        fieldless = _fieldless_packages(setup.diagnostics)
+        for error in errors[:MAX_ERRORS_PER_FILE]:
+            assert error.path is not None
+            code = ("CPP_MESSAGE_FIELD" if _names_fieldless_type(error.spelling, fieldless)
+                    else "CPP_PARSE_ERROR")
+            result.diagnostics.append(diag.make(
+                code, workspace.location(error.path, error.line, error.column),
+                detail=error_detail(error.spelling, setup.generated)))
+        # the header of the names declared permissively, when this parse has them
+        declared = os.path.join(setup.generated, synthesis.HEADER_NAME) if any(
+            d.code == "CPP_NAMES_DECLARED" for d in result.diagnostics) else None
+        read: list[str] = []  # the workspace files the ROS 1 client test reads
+        finder = CallFinder(tu, source, owned, where, ros2=ros2, declared=declared,
+                            clients=None if ros2 else ros1_clients(
+                                path, workspace, setup.generated, read))
+        finder.run()
+        hidden = _hidden(path, errors, finder, source, fieldless, workspace)
+        if wrappers is None:
+            wrappers = _again_for(tu, errors, finder, hidden, source, fieldless)
+            if wrappers is not None:
+                finder.release()
+                continue
+        break
     result.diagnostics.extend(plugin_loads(path, text, workspace))
     result.calls = sorted(finder.calls, key=lambda c: (
         c.location.file or "", c.location.line, c.location.column))
     result.diagnostics.extend(finder.diagnostics)
-    result.diagnostics.extend(_hidden(path, errors, finder, source, fieldless, workspace))
+    result.diagnostics.extend(hidden)
     library = versions.RCLCPP if ros2 else versions.ROSCPP
     if library.version(setup.distro) is None and not setup.system_headers:
         result.diagnostics.extend(_version_unknown(tu, source, owned, workspace, library,
@@ -692,6 +703,28 @@ def _translation_unit(path: str, text: str, ros2: bool,
         ):
             headers.append(name)
     return result, sorted(set(headers))
+
+
+_MAY_HIDE = frozenset({"CPP_CALL_MISSED", "CPP_ERROR_NEAR_CALL"})
+
+
+def _again_for(tu: TranslationUnit, errors: list[_Error], finder: CallFinder,
+               hidden: list[Diagnostic], source: SourceCache, fieldless: set[str]
+               ) -> tuple[frozenset[str], frozenset[str]] | None:
+    """The unit's wrappers (names, and those called with no argument), when the unit is
+    to be parsed again with them: an error left can hide a call (``hidden``) and sits in
+    a function that calls only the unit's own wrappers, so the synthesis, which knows
+    the API's call sites only, left its names undeclared (navigation2's vector object
+    server: ``uuid_parse`` of the missing <uuid/uuid.h> beside ``declare_or_get_parameter``
+    of nav2_ros_common). None otherwise."""
+    names = frozenset(n for n in finder.wrappers.site_names if n)
+    if not names or not errors or not any(d.code in _MAY_HIDE for d in hidden):
+        return None
+    wrappers = (names, finder.wrappers.site_names_bare)
+    functions: dict[str, list[recall.Function]] = {}
+    plain = _hiding(tu, errors, source, fieldless, functions, _Sites())
+    more = _hiding(tu, errors, source, fieldless, functions, _Sites(wrappers))
+    return wrappers if len(more) > len(plain) else None
 
 
 def _version_unknown(tu: TranslationUnit, source: SourceCache,
@@ -1028,7 +1061,9 @@ def _innermost(functions: list[Cursor], path: str, line: int) -> Cursor | None:
 
 def _parse(path: str, text: str, setup: IncludeSetup, workspace: Workspace,
            result: CppResult, source: SourceCache,
-           owned: Callable[[str], bool], ros2: bool = False) -> TranslationUnit | None:
+           owned: Callable[[str], bool], ros2: bool = False,
+           wrappers: tuple[frozenset[str], frozenset[str]] | None = None
+           ) -> TranslationUnit | None:
     """Parse ``path``; headers clang still misses are stood in for and parsed again, then
     names it does not know are declared (``synthesis``) and parsed again while that
     leaves fewer errors."""
@@ -1055,7 +1090,8 @@ def _parse(path: str, text: str, setup: IncludeSetup, workspace: Workspace,
         again = _parse_once(path, more, unsaved, workspace, result)
         if again is not None and len(_errors(again)) < len(_errors(tu)):
             tu, args = again, more
-    return _synthesise(path, tu, args, unsaved, setup, workspace, result, source, owned)
+    return _synthesise(path, tu, args, unsaved, setup, workspace, result, source, owned,
+                       wrappers)
 
 
 # an error naming a namespace clang does not know, or a name missing from one
@@ -1116,8 +1152,12 @@ def _parse_once(path: str, args: list[str], unsaved: list[tuple[str, str]],
 def _synthesise(path: str, tu: TranslationUnit, args: list[str],
                 unsaved: list[tuple[str, str]], setup: IncludeSetup, workspace: Workspace,
                 result: CppResult, source: SourceCache,
-                owned: Callable[[str], bool]) -> TranslationUnit:
-    """The parse with the fewest errors once the unknown names are declared."""
+                owned: Callable[[str], bool],
+                wrappers: tuple[frozenset[str], frozenset[str]] | None = None
+                ) -> TranslationUnit:
+    """The parse with the fewest errors once the unknown names are declared;
+    ``wrappers``: the names of the unit's own wrappers of the API, whose calls count as
+    the API's where an error may cost one (known once the unit was walked)."""
 
     def mine(unit: TranslationUnit) -> list[_Error]:
         return [e for e in _errors(unit) if e.name is not None and owned(e.name)]
@@ -1131,7 +1171,7 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
     # the functions of each file, by line, and its API call sites (the same text in
     # every parse of the unit: each file is read once, not once per parse)
     functions: dict[str, list[recall.Function]] = {}
-    sites: dict[str, list[recall.Site]] = {}
+    sites = _Sites(wrappers)
     if synthesis.MAX_ROUNDS < 1 or not _hiding(tu, first, source, fieldless, functions, sites) or (
         not names.learn(_located(first, source))
     ):
@@ -1265,13 +1305,25 @@ def _in_ros_call(error: _Error, source: SourceCache,
     return recall.in_call(lines, _sites(name, source, sites), error.line)
 
 
+class _Sites(dict[str, list[recall.Site]]):
+    """The ROS API call sites of each file read (``recall.call_sites``), found once; with
+    ``wrappers`` (names, and those called with no argument), the calls of the unit's
+    own wrappers too (``_translation_unit``'s second synthesis)."""
+
+    def __init__(self, wrappers: tuple[frozenset[str], frozenset[str]] | None = None
+                 ) -> None:
+        super().__init__()
+        self.wrappers = wrappers or (frozenset(), frozenset())
+
+
 def _sites(name: str, source: SourceCache, sites: dict[str, list[recall.Site]]
            ) -> list[recall.Site]:
     """The ROS API call sites of file ``name`` (``recall.call_sites``), found once: kept
-    in ``sites``."""
+    in ``sites`` (with the wrappers' calls when it is a ``_Sites`` that names them)."""
     if name not in sites:
         text = source.text(name)
-        sites[name] = recall.call_sites(text) if text else []
+        extra, bare = sites.wrappers if isinstance(sites, _Sites) else ((), ())
+        sites[name] = recall.call_sites(text, extra, bare) if text else []
     return sites[name]
 
 

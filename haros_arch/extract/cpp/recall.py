@@ -62,6 +62,15 @@ _FREE_DEFINITION = re.compile(
     r"\b)[\w:<>,*&]+\s+)+[*&]*\s*(?P<name>\w+)\s*\(")
 
 
+# an explicit instantiation (``template void Parameters::setParamT<bool>(...);``,
+# ``extern template ...``): ``template`` opening the line, with no parameter list after
+# it, declares the function for those arguments and calls nothing
+# (a type then a name: ``template create_publisher<T>(`` alone on a line is a member call
+# going on from the line before)
+_INSTANTIATION = re.compile(
+    r"^\s*(?:extern\s+)?template\s+(?:(?:class|struct)\b|[\w:<>,*&]+\s+[*&]*\s*[\w:~]+)")
+
+
 @dataclass(frozen=True)
 class Site:
     """A line of source where a grep finds a ROS API call."""
@@ -144,7 +153,8 @@ def _call_sites(text: str, extra: frozenset[str], bare: frozenset[str]) -> tuple
             else:
                 line, in_comment = head, True
         code = line.split("//", 1)[0]
-        if code.lstrip().startswith("#") or _DEFINITION.match(code):
+        if code.lstrip().startswith("#") or _DEFINITION.match(code) or (
+                _INSTANTIATION.match(code)):
             continue
         declared = _FREE_DEFINITION.match(code)
         named = declared.start("name") if declared is not None else None

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Iterator
+from contextlib import contextmanager
 from typing import TYPE_CHECKING, Any, TypeVar
 
 from clang.cindex import Cursor, CursorKind, TypeKind
@@ -53,6 +54,64 @@ class NodeName(str):
 
 
 NODE_NAME = NodeName("~")
+
+
+class ProgramArgument(str):
+    """A part that is the process's ``position``-th command-line argument (``argv[1]`` of
+    ``main``): unknown to ``render``; a call whose name has it as its one unknown run
+    carries ``position`` (``PrimitiveCall.name_arg``), which the graph takes from the
+    arguments the launch file gives the instance. ``position`` counts as
+    ``PrimitiveCall.program_arg`` does, and from the end when negative (``argv[argc -
+    1]``, -1: only after ``ros::init``, which takes roslaunch's ``:=`` words off)."""
+
+    position: int
+
+    def __new__(cls, position: int) -> ProgramArgument:
+        made = super().__new__(cls, "?")
+        made.position = position
+        return made
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, ProgramArgument) and other.position == self.position
+
+    def __ne__(self, other: object) -> bool:
+        return not self == other
+
+    def __hash__(self) -> int:
+        return hash(("argv", self.position))
+
+
+# whether ``Scope.string`` gives a program argument as a ``ProgramArgument`` part (only
+# for a call's name, ``program_arguments``; other readers of parts know only None)
+_ARGUMENTS = [False]
+
+
+@contextmanager
+def program_arguments() -> Iterator[None]:
+    """Within it, ``Scope.string`` gives ``argv[K]`` as a ``ProgramArgument`` part."""
+    saved = _ARGUMENTS[0]
+    _ARGUMENTS[0] = True
+    try:
+        yield
+    finally:
+        _ARGUMENTS[0] = saved
+
+
+def argument_of(parts: Parts) -> int | None:
+    """The index of the program argument that is the one unknown run of ``parts``."""
+    runs: list[list[str | None]] = []
+    after_known = True
+    for part in parts:
+        if part is None or isinstance(part, (NodeName, ProgramArgument)):
+            if after_known:
+                runs.append([])
+            runs[-1].append(part)
+            after_known = False
+        else:  # (an empty part too: ``render`` writes each run's ``?``)
+            after_known = True
+    if len(runs) != 1 or len(runs[0]) != 1 or not isinstance(runs[0][0], ProgramArgument):
+        return None
+    return runs[0][0].position
 
 
 def own_name(parts: Parts) -> Parts:
@@ -101,7 +160,7 @@ def render(parts: Parts) -> str:
     """The name with ``?`` for each unknown run of parts."""
     text: list[str] = []
     for part in parts:
-        if part is None or isinstance(part, NodeName):
+        if part is None or isinstance(part, (NodeName, ProgramArgument)):
             if not text or text[-1] != "?":
                 text.append("?")
         else:
@@ -120,7 +179,7 @@ def camera_info_topic(base: Parts) -> Parts:
     the base (``left/image_rect`` -> ``left/camera_info``); unknown when that namespace
     is."""
     last = base[-1]
-    if last is None or PLACEHOLDER in last:
+    if last is None or PLACEHOLDER in last or isinstance(last, ProgramArgument):
         return UNKNOWN
     if "/" in last:
         return (*base[:-1], last.rpartition("/")[0] + "/camera_info")
@@ -179,6 +238,10 @@ class Scope:
                 children = list(node.get_children())
                 if kind == CursorKind.IF_STMT:
                     parts = children[1:]  # then, else: not the condition
+                    if len(parts) == 2 and _leaves(parts[0]):
+                        # ``if (argc < 2) { ...; return 1; } else { name = argv[1]; }``:
+                        # what follows the ``if`` runs only after the ``else``
+                        parts = parts[:1]
                 elif kind == CursorKind.DO_STMT:
                     parts = children[:1]  # the body, before the condition
                 elif kind in _WHOLE_REGIONS:
@@ -427,6 +490,11 @@ class Scope:
                     self.sites.unset(decl)  # why the name is unknown (``CallSites.unset``)
                 return UNKNOWN if found is None else found[1].string(found[0], depth + 1)
             return self.string(value, depth + 1)
+        if _ARGUMENTS[0] and (kind == CursorKind.ARRAY_SUBSCRIPT_EXPR or (
+                kind == CursorKind.CALL_EXPR and cursor.spelling in _ELEMENT)):
+            index = program_argument(cursor, self)
+            if index is not None:
+                return (ProgramArgument(index),)
         if kind == CursorKind.CALL_EXPR:
             return self._string_call(cursor, depth)
         if kind == CursorKind.BINARY_OPERATOR:
@@ -609,6 +677,108 @@ class Scope:
                 return None if found is None else found[1].boolean(found[0])
             return self.boolean(value)
         return None
+
+
+# what rclcpp leaves of argv once it has taken its own arguments (``--ros-args ...``)
+ARGUMENTS_LEFT = frozenset({"init_and_remove_ros_arguments", "remove_ros_arguments"})
+_ELEMENT = frozenset({"at", "operator[]"})
+
+
+def program_argument(expr: Cursor | None, scope: Scope) -> int | None:
+    """K when ``expr`` is the process's K-th command-line argument: ``args.at(K)`` or
+    ``args[K]`` of a local that ``rclcpp::init_and_remove_ros_arguments(argc, argv)``
+    (or ``remove_ros_arguments``) initialises, or ``argv[K]`` of ``main``, through the
+    conversions to a parameter value; None otherwise. ``argv[argc - N]`` is -N when
+    ``main`` has called ``ros::init(argc, argv, ...)`` before, as a statement of its
+    own body: roscpp then has taken the ``:=`` words (roslaunch's remappings,
+    ``__name:=``, ``__log:=``, which it puts after the launch file's ``args``) off
+    ``argv`` and counted them out of ``argc``; before it, the last word is roslaunch's."""
+    node = expr
+    for _depth in range(8):  # conversions and ParameterValue(...) around the element
+        if node is None:
+            return None
+        if node.kind == CursorKind.CALL_EXPR and node.spelling in _ELEMENT:
+            break
+        if node.kind == CursorKind.ARRAY_SUBSCRIPT_EXPR:
+            break
+        inner = [c for c in node.get_children() if c.kind.is_expression()]
+        if len(inner) != 1:
+            return None
+        node = inner[0]
+    else:
+        return None
+    parts = [c for c in node.get_children() if c.kind.is_expression()]
+    if len(parts) < 2:
+        return None
+    holder = strip(parts[0])
+    if holder.kind == CursorKind.MEMBER_REF_EXPR:  # args.at: the object is its child
+        objects = [c for c in holder.get_children() if c.kind.is_expression()]
+        holder = strip(objects[0]) if objects else holder
+    variable = holder.referenced if holder.kind == CursorKind.DECL_REF_EXPR else None
+    if variable is None:
+        return None
+    if variable.kind == CursorKind.PARM_DECL:  # argv of main(argc, argv)
+        function = variable.semantic_parent
+        params = [c for c in function.get_children() if c.kind == CursorKind.PARM_DECL] \
+            if function is not None and function.spelling == "main" else []
+        if len(params) < 2 or params[1] != variable:
+            return None
+        index = scope.integer(parts[-1])
+        if index is None:
+            index = _from_end(parts[-1], params[0], function, node, scope)
+            return index if index is not None and -1000 < index < 0 else None
+        return index if isinstance(index, int) and not isinstance(index, bool) and (
+            0 < index < 1000) else None
+    index = scope.integer(parts[-1])
+    if not isinstance(index, int) or isinstance(index, bool) or not 0 < index < 1000:
+        return None
+    made = initializer(variable) if variable.kind == CursorKind.VAR_DECL else None
+    calls = [] if made is None else [
+        c for c in made.walk_preorder() if c.kind == CursorKind.CALL_EXPR
+        and c.spelling in ARGUMENTS_LEFT]
+    return index if calls else None
+
+
+def _from_end(index: Cursor, argc: Cursor, main: Cursor, read: Cursor,
+              scope: Scope) -> int | None:
+    """-N for an index ``argc - N`` read after ``main``'s own ``ros::init(argc, argv,
+    ...)`` statement (``program_argument``); None otherwise."""
+    index = strip(index)
+    sides = [c for c in index.get_children() if c.kind.is_expression()]
+    if index.kind != CursorKind.BINARY_OPERATOR or len(sides) != 2 or (
+        binary_operator(index, sides) != "-"
+    ):
+        return None
+    counted, less = strip(sides[0]), scope.integer(sides[1])
+    if counted.kind != CursorKind.DECL_REF_EXPR or counted.referenced != argc or (
+        not isinstance(less, int) or isinstance(less, bool) or less < 1
+    ):
+        return None
+    body = next((c for c in main.get_children() if c.kind == CursorKind.COMPOUND_STMT), None)
+    if body is None:
+        return None
+    where = read.extent.start.offset
+    for statement in body.get_children():
+        if statement.extent.end.offset >= where:
+            return None
+        call = strip(statement)
+        target = call.referenced if call.kind == CursorKind.CALL_EXPR else None
+        parent = None if target is None else target.semantic_parent
+        if target is not None and target.spelling == "init" and parent is not None and (
+            parent.spelling == "ros" and parent.kind == CursorKind.NAMESPACE
+        ):
+            return -less
+    return None
+
+
+def _leaves(statement: Cursor) -> bool:
+    """Whether ``statement`` always ends in a ``return`` (or ``throw``)."""
+    if statement.kind == CursorKind.COMPOUND_STMT:
+        inner = list(statement.get_children())
+        return bool(inner) and _leaves(inner[-1])
+    if statement.kind == CursorKind.RETURN_STMT:
+        return True
+    return strip(statement).kind == CursorKind.CXX_THROW_EXPR
 
 
 def _string_constant(decl: Cursor) -> bool:

@@ -59,13 +59,17 @@ from .qos import qos as qos_of
 from .tested import Key, TestedCalls
 from .tested import key as key_of
 from .values import (
+    ARGUMENTS_LEFT,
     PLACEHOLDER,
     SEPARATOR,
     NodeName,
     Scope,
+    argument_of,
     initializer,
     literal,
     own_name,
+    program_argument,
+    program_arguments,
     render,
     strip,
     written_arguments,
@@ -97,6 +101,18 @@ _LOOKUP = re.compile(rb"\s*(?:(?:\.|->)\s*(?:find|count|contains|at|end)\s*\(|\[
 # for that walks it
 NameSource = tuple[str, str | None, str | None, str | None, tuple[int, int] | None]
 EACH = "."
+
+
+class ArgumentName(str):
+    """A call's name whose one ``?`` is the process's ``program_arg``-th command-line
+    argument (``values.ProgramArgument``): ``PrimitiveCall.name_arg``."""
+
+    program_arg: int
+
+    def __new__(cls, name: str, program_arg: int) -> ArgumentName:
+        made = super().__new__(cls, name)
+        made.program_arg = program_arg
+        return made
 # builtin types a variable of static storage starts as zero of (C++'s zero-initialisation)
 _ZEROED: dict[TypeKind, object] = {
     TypeKind.BOOL: False, TypeKind.INT: 0, TypeKind.UINT: 0, TypeKind.LONG: 0,
@@ -263,7 +279,7 @@ class CallFinder:
         """Ready the condition reader for ``function``'s body (``_conditions_at``)."""
         held = functools.partial(self._held_parameters, scope=self.sites.scope(function)) if (
             self.sites is not None) else None
-        self.reader.enter(function, _ARGUMENTS_LEFT, held)
+        self.reader.enter(function, ARGUMENTS_LEFT, held)
 
     def _constants(self, member: Cursor, sites: int, reads: set[Key]) -> list[object] | None:
         """The member's writes in the file besides the reads (``sites`` of them, made at
@@ -373,7 +389,7 @@ class CallFinder:
             self.sites is not None and not self.sites.callers(function)) else None
         # main(argc, argv): its conditions over them are over the program's arguments (set
         # after the construction sites, whose walk enters their own functions)
-        self.reader.enter(function, _ARGUMENTS_LEFT,
+        self.reader.enter(function, ARGUMENTS_LEFT,
                           functools.partial(self._held_parameters, scope=scope))
         stack: list[tuple[Cursor, tuple[Condition, ...]]] = [
             (child, made_under) for child in reversed(list(function.get_children()))
@@ -461,7 +477,7 @@ class CallFinder:
         wanted = place_of(call)
         held = functools.partial(self._held_parameters, scope=self.sites.scope(function)) if (
             self.sites is not None) else None
-        self.reader.enter(function, _ARGUMENTS_LEFT, held)
+        self.reader.enter(function, ARGUMENTS_LEFT, held)
         stack: list[tuple[Cursor, tuple[Condition, ...]]] = [
             (child, ()) for child in reversed(list(function.get_children()))
             if child.kind != CursorKind.PARM_DECL]
@@ -971,7 +987,7 @@ class CallFinder:
         has_default, default = self._default(spec, args, scope)
         if spec.kind in ("read", "declare"):
             default = _converted(default, ctype)
-        program_arg = _program_argument(arg(spec.type_arg), scope) if (
+        program_arg = program_argument(arg(spec.type_arg), scope) if (
             spec.kind == "write") else None
         status = _status_read(spec, site, len(args) - shift)
         transport = spec.transport
@@ -1015,7 +1031,9 @@ class CallFinder:
                 has_default=has_default, default=default,
                 searched=spec.searched, handle_namespace=handle_namespace,
                 deletes=spec.deletes, node_name=owner, transport=transport,
-                made_in=made_in, program_arg=program_arg))
+                made_in=made_in, program_arg=program_arg,
+                name_arg=written.program_arg if isinstance(written, ArgumentName) and (
+                    name.count("?") == 1) else None))
             if status is not None:
                 self._status_reads.append((status, self.calls[-1]))
             member = self._member(spec, call, shift) if len(names) == 1 else None
@@ -1149,8 +1167,12 @@ class CallFinder:
         ):
             values = written_arguments(inner)
             return (render(scope.string(values[0])) if values else "?", None)
-        parts = own_name(scope.string(expr))
+        with program_arguments():
+            parts = own_name(scope.string(expr))
         name = render(parts)
+        argument = argument_of(parts)
+        if argument is not None:
+            return (ArgumentName(name, argument), None)
         if None not in parts or name.count("?") != 1:
             return (name, None)
         # the one unknown part: the whole name, or a run of it that the text around keeps
@@ -1322,6 +1344,13 @@ class CallFinder:
         index = spec.default_arg
         if index is not None and index >= len(args) and spec.out_arg == len(args) - 1:
             index = spec.out_arg  # nh.param<T>(name, default) returns the value
+        if index is None and spec.kind == "read" and spec.out_arg is not None \
+                and spec.out_arg < len(args):
+            # ``get_parameter("topic_odometry", topic_)`` leaves the variable as it was
+            # when the parameter is not set: what it holds before is the default
+            # (mrpt_reactivenav2d's ``std::string subTopicOdometry_ = "/odom";``)
+            kept = _kept_value(args[spec.out_arg], scope)[1]
+            default = kept if isinstance(kept, str) else None
         if index is not None and index < len(args):
             parts = scope.string(args[index])
             if _known(parts):
@@ -1483,55 +1512,6 @@ def _kept_value(out: Cursor, scope: Scope) -> tuple[bool, object]:
     if value is None:
         return False, None
     return True, _literal(value, where)
-
-
-# what rclcpp leaves of argv once it has taken its own arguments (``--ros-args ...``)
-_ARGUMENTS_LEFT = frozenset({"init_and_remove_ros_arguments", "remove_ros_arguments"})
-_ELEMENT = frozenset({"at", "operator[]"})
-
-
-def _program_argument(expr: Cursor | None, scope: Scope) -> int | None:
-    """K when ``expr`` is the process's K-th command-line argument: ``args.at(K)`` or
-    ``args[K]`` of a local that ``rclcpp::init_and_remove_ros_arguments(argc, argv)``
-    (or ``remove_ros_arguments``) initialises, or ``argv[K]`` of ``main``, through the
-    conversions to a parameter value; None otherwise."""
-    node = expr
-    for _depth in range(8):  # conversions and ParameterValue(...) around the element
-        if node is None:
-            return None
-        if node.kind == CursorKind.CALL_EXPR and node.spelling in _ELEMENT:
-            break
-        if node.kind == CursorKind.ARRAY_SUBSCRIPT_EXPR:
-            break
-        inner = [c for c in node.get_children() if c.kind.is_expression()]
-        if len(inner) != 1:
-            return None
-        node = inner[0]
-    else:
-        return None
-    parts = [c for c in node.get_children() if c.kind.is_expression()]
-    if len(parts) < 2:
-        return None
-    index = scope.integer(parts[-1])
-    if not isinstance(index, int) or isinstance(index, bool) or not 0 < index < 1000:
-        return None
-    holder = strip(parts[0])
-    if holder.kind == CursorKind.MEMBER_REF_EXPR:  # args.at: the object is its child
-        objects = [c for c in holder.get_children() if c.kind.is_expression()]
-        holder = strip(objects[0]) if objects else holder
-    variable = holder.referenced if holder.kind == CursorKind.DECL_REF_EXPR else None
-    if variable is None:
-        return None
-    if variable.kind == CursorKind.PARM_DECL:  # argv of main(argc, argv)
-        function = variable.semantic_parent
-        params = [c for c in function.get_children() if c.kind == CursorKind.PARM_DECL] \
-            if function is not None and function.spelling == "main" else []
-        return index if len(params) >= 2 and params[1] == variable else None
-    made = initializer(variable) if variable.kind == CursorKind.VAR_DECL else None
-    calls = [] if made is None else [
-        c for c in made.walk_preorder() if c.kind == CursorKind.CALL_EXPR
-        and c.spelling in _ARGUMENTS_LEFT]
-    return index if calls else None
 
 
 _LITERALS = (CursorKind.CXX_BOOL_LITERAL_EXPR, CursorKind.INTEGER_LITERAL,

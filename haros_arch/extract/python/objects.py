@@ -26,6 +26,29 @@ class Ref:
         return parts[0], parts[-1]
 
 
+# the origin of the unknown text of a program's command-line argument: its index follows
+# (``sys.argv[1]``: 1; ``rospy.myargv()[-1]``: -1), as ``PrimitiveCall.name_arg`` counts
+PROGRAM_ARGUMENT = "program argument "
+
+
+@dataclass(frozen=True)
+class ProgramArgs:
+    """A program's command-line arguments: ``sys.argv``, every word as given (after the
+    user's arguments roslaunch adds its ``:=`` words, ros2 launch its ``--ros-args``), or
+    what ``rospy.myargv()`` leaves of them (``stripped``: its ``:=`` words taken off)."""
+
+    stripped: bool
+
+    def item(self, index: object) -> object:
+        """``args[index]``: the argument's unknown text, which the launch file's
+        arguments for the instance tell (``graph``); from the end only of what rospy
+        leaves (the last word as given is roslaunch's ``__log:=``)."""
+        if isinstance(index, int) and not isinstance(index, bool) and (
+                index > 0 or (index < 0 and self.stripped)):
+            return Value.unknown(f"{PROGRAM_ARGUMENT}{index}")
+        return Value.unknown("program argument")
+
+
 @dataclass(frozen=True)
 class ParamValue:
     """The value of a parameter read (``rospy.get_param('~topic', 'scan')``)."""

@@ -40,6 +40,7 @@ from .objects import (
     ParameterClient,
     ParamObject,
     ParamValue,
+    ProgramArgs,
     Record,
     Ref,
     Seq,
@@ -228,6 +229,10 @@ class Evaluator(Instances, QoSProfiles, Walker):
     def eval_Subscript(self, expr: ast.Subscript, frame: Frame) -> object:
         base = self.eval(expr.value, frame)
         index = self.eval(expr.slice, frame)
+        if isinstance(base, Ref) and base.qualname == "sys.argv":
+            base = ProgramArgs(stripped=False)
+        if isinstance(base, ProgramArgs):
+            return base.item(index)
         if isinstance(base, Record) and isinstance(index, Value) and index.literal is not None:
             return base.entry(index.literal)
         if isinstance(base, Seq) and isinstance(index, int) and -len(base.items) <= index < len(
@@ -365,6 +370,8 @@ class Evaluator(Instances, QoSProfiles, Walker):
             if text is not None and text.is_known and text.text:
                 return Value.unknown(SEARCHED + text.text)
             return Value.unknown("search_param")
+        if ref.qualname == "rospy.myargv":  # the arguments without roslaunch's := words
+            return ProgramArgs(stripped=True)
         if key == ("rospy", "get_name") and not expr.args:
             return Value.unknown(NODE_NAME)  # the node's own name: ~ at a name's start
         if key == ("rospy", "get_namespace") and not expr.args:

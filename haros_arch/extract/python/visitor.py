@@ -31,6 +31,7 @@ from .msg_types import ros_type
 from .objects import (
     ELEMENT_OF,
     FIELD_OF,
+    PROGRAM_ARGUMENT,
     Alternatives,
     BoundMethod,
     Frame,
@@ -786,6 +787,10 @@ class Walker:
                 name, _, field = params[0].removeprefix(ELEMENT_OF).partition(FIELD_OF)
                 call.name_param = param_name(Value.of(name)) if version == 2 else name
                 call.name_each = field or "."
+            elif len(params) == 1 and params[0].startswith(PROGRAM_ARGUMENT):
+                # a command-line argument with text around it (``sys.argv[1] + "/out"``):
+                # the graph puts the instance's argument in the place of the ``?``
+                call.name_arg = int(params[0].removeprefix(PROGRAM_ARGUMENT))
             elif len(params) == 1 and params[0].startswith("parameter "):
                 name = params[0].removeprefix("parameter ")
                 call.name_param = param_name(Value.of(name)) if version == 2 else name

@@ -19,6 +19,7 @@ reaches them, with ``context`` standing for the launch context of that moment.
 from __future__ import annotations
 
 import ast
+import builtins
 import os
 from collections.abc import Mapping
 from pathlib import PurePosixPath
@@ -47,6 +48,7 @@ from .python_values import (
     Func,
     LaunchDescription,
     Module,
+    Raised,
     ReadOnlyFile,
     Ref,
     _Break,
@@ -76,6 +78,9 @@ class Interpreter(Expressions):
         self.depth = 0
         self.running: list[ast.AST] = []  # the functions being run, outermost first
         self.guards: list[str] = []  # texts of unknown Python `if` tests we are under
+        # the enclosing ``try`` statements: the exception classes their handlers name
+        # (None: one not known) and how many guards there were when each began
+        self.catching: list[tuple[list[tuple[str, ...] | None], int]] = []
         # per function being run: the values it returned under a test not known
         self.returns: list[list[Any]] = []
         # folders the file put on sys.path (sys.path.append), where `import name` looks
@@ -184,7 +189,15 @@ class Interpreter(Expressions):
         module = ("." * stmt.level) + (stmt.module or "")
         found = self.find_module(module, stmt)
         for alias in stmt.names:
-            if found is None and module == "math" and math_constant(alias.name):
+            if found is not None and alias.name == "*":
+                # ``from utils_yaml import *`` (OrbbecSDK_ROS2's orbbec_camera.launch.py):
+                # the module's public names, or those its ``__all__`` lists, as Python
+                listed = found.names.get("__all__")
+                public = [n for n in listed if isinstance(n, str)] if isinstance(
+                    listed, (list, tuple)) else [n for n in found.names
+                                                 if not n.startswith("_")]
+                env.update((n, found.names[n]) for n in public if n in found.names)
+            elif found is None and module == "math" and math_constant(alias.name):
                 env[alias.asname or alias.name] = ops.MATH[alias.name]  # from math import pi
             elif found is None:
                 env[alias.asname or alias.name] = Ref(f"{module}.{alias.name}")
@@ -289,9 +302,7 @@ class Interpreter(Expressions):
         elif isinstance(stmt, (ast.Import, ast.ImportFrom)):
             self.import_(stmt, env)
         elif isinstance(stmt, ast.Try):
-            self.block(stmt.body, env)
-            self.block(stmt.orelse, env)
-            self.block(stmt.finalbody, env)
+            self.try_(stmt, env)
         elif isinstance(stmt, ast.Pass):
             pass
         elif isinstance(stmt, ast.Break):
@@ -325,6 +336,42 @@ class Interpreter(Expressions):
                 container[key] = value
         else:
             self.unsupported(target, "assignment to this target is not interpreted")
+
+    def try_(self, stmt: ast.Try, env: dict[str, Any]) -> None:
+        """``try``: its body, then ``else`` and ``finally``. A builtin exception the body
+        raises (``failed``) that one of its handlers names goes to that handler, as in
+        Python (``try: return int(value) except ValueError: pass``, OrbbecSDK_ROS2's
+        convert_value); a handler of a class not known (``json.JSONDecodeError``) is
+        not taken, and the failure is said as before."""
+        self.catching.append((_caught(stmt.handlers), len(self.guards)))
+        try:
+            try:
+                self.block(stmt.body, env)
+            finally:
+                self.catching.pop()
+        except Raised as raised:
+            handler = next((h for h in stmt.handlers
+                            if _catches(_handler_classes(h), raised.name)), None)
+            if handler is None:
+                self.block(stmt.finalbody, env)
+                raise
+            if handler.name:
+                env[handler.name] = Unknown(f"the {raised.name} caught")
+            self.block(handler.body, env)
+        else:
+            self.block(stmt.orelse, env)
+        self.block(stmt.finalbody, env)
+
+    def failed(self, node: ast.AST | None, detail: str, reason: str) -> Unknown:
+        """A Python error of the interpreted code (``reason``: "ValueError: ..."): raised
+        to the ``try`` around it whose handler catches it (no test not known in
+        between), else said and unknown (``unsupported``)."""
+        name = reason.partition(":")[0].strip()
+        if name in _EXCEPTIONS and any(
+                guards == len(self.guards) and _catches(classes, name)
+                for classes, guards in self.catching):
+            raise Raised(name)
+        return self.unsupported(node, detail)
 
     def if_(self, stmt: ast.If, env: dict[str, Any]) -> None:
         test = self.truth(self.eval(stmt.test, env))
@@ -489,12 +536,15 @@ class Interpreter(Expressions):
     def call_function(self, func: Func, args: list[Any], kwargs: dict[str, Any],
                       node: ast.AST) -> Any:
         given = [*args, *kwargs.values()]
-        if func.node in self.running and given and all(
-                isinstance(v, Unknown) for v in given):
+        unknown = [isinstance(v, Unknown) for v in given]
+        if func.node in self.running and given and (all(unknown) or (
+                any(unknown) and self.running.count(func.node) >= _RECURSION_UNKNOWN)):
             # a function that runs calls itself on values none of which is known (a
-            # walk of a YAML file not read, zed_wrapper's): interpreted, each call
-            # would recurse on another unknown until the depth bound stops the file;
-            # its value is unknown instead
+            # walk of a YAML file not read, zed_wrapper's), or some of which are not,
+            # nested a few times (OrbbecSDK_ROS2's parse_yaml(value, prefix, params) of
+            # a YAML file not read, with params a dict): interpreted, each call would
+            # recurse on another unknown until the depth bound stops the file; its
+            # value is unknown instead
             name = getattr(func.node, "name", "lambda")
             return self.unsupported(node, f"recursive call of {name} on values not known "
                                           "statically")
@@ -632,3 +682,43 @@ def _assigned(body: list[ast.stmt]) -> set[str]:
             names.add(node.id)
         stack.extend(ast.iter_child_nodes(node))
     return names
+
+
+# how deep a function may call itself with some argument not known before the call's
+# value is taken as unknown (a walk of a structure not known would go on to the bound,
+# and one that takes both branches of an isinstance() test not known doubles per level)
+_RECURSION_UNKNOWN = 3
+
+# Python's builtin exception classes by name, to tell which handler catches which
+_EXCEPTIONS: dict[str, type] = {
+    name: value for name, value in vars(builtins).items()
+    if isinstance(value, type) and issubclass(value, BaseException)}
+
+
+def _handler_classes(handler: ast.ExceptHandler) -> tuple[str, ...] | None:
+    """The builtin exception classes an ``except`` names (``()``: a bare ``except``);
+    None when one is not a builtin class (its hierarchy is not known here)."""
+    if handler.type is None:
+        return ()
+    items = handler.type.elts if isinstance(handler.type, ast.Tuple) else [handler.type]
+    names = tuple(item.id for item in items if isinstance(item, ast.Name)
+                  and item.id in _EXCEPTIONS)
+    return names if len(names) == len(items) else None
+
+
+def _caught(handlers: list[ast.ExceptHandler]) -> list[tuple[str, ...] | None]:
+    return [_handler_classes(h) for h in handlers]
+
+
+def _catches(classes: object, name: str) -> bool:
+    """Whether a handler's classes (``_handler_classes``), or any of a list of them,
+    catch the builtin exception ``name``."""
+    if isinstance(classes, list):
+        return any(_catches(c, name) for c in classes)
+    if classes is None or not isinstance(classes, tuple):
+        return False
+    if classes == ():
+        return True
+    raised = _EXCEPTIONS[name]
+    return any(issubclass(raised, _EXCEPTIONS[c]) for c in classes)
+

@@ -64,6 +64,11 @@ class Expressions(Walker):
     def unsupported(self, node: ast.AST | None, detail: str) -> Unknown:
         raise NotImplementedError
 
+    def failed(self, node: ast.AST | None, detail: str, reason: str) -> Unknown:
+        """A Python error of the interpreted code: said and unknown; the launch file's
+        interpreter gives it to a ``try`` that catches it (``Interpreter.failed``)."""
+        return self.unsupported(node, detail)
+
     def unknown_value(self, node: ast.AST, detail: str) -> None:
         """Report a value that cannot be known statically (LAUNCH_UNKNOWN_VALUE)."""
         raise NotImplementedError
@@ -115,8 +120,9 @@ class Expressions(Walker):
             raise Budget(err.reason) from None
         if what in ("comparison", "unary"):
             return Unknown(_NOT_KNOWN[what] if what == "unary" else what)
-        return self.unsupported(node, f"operation fails: {err.reason}" if err.kind
-                                == "error" else err.reason)
+        if err.kind == "error":
+            return self.failed(node, f"operation fails: {err.reason}", err.reason)
+        return self.unsupported(node, err.reason)
 
     def operation(self, action: Callable[[], Any], node: ast.AST) -> Any:
         """An operation of the one evaluator on known values (``refused`` if it refuses)."""

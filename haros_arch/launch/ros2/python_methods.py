@@ -85,7 +85,7 @@ def builtin(function: Callable[..., Any], *types: type,
         except ops.Refused as err:
             if err.kind == "limit":
                 raise Budget(err.reason) from None
-            return i.unsupported(n, f"{name}() fails: {err.reason}")
+            return i.failed(n, f"{name}() fails: {err.reason}", err.reason)
     return build
 
 
@@ -178,7 +178,7 @@ def m_list(name: str) -> Method:
                 return owner.pop(a[0])
             if len(a) == 2:
                 return a[1]
-            return i.unsupported(n, f"dict.pop({a[0]!r}) fails: no such key")
+            return i.failed(n, f"dict.pop({a[0]!r}) fails: no such key", "KeyError")
         if isinstance(owner, list):
             if name == "append" and len(a) == 1:
                 owner.append(a[0])
@@ -193,13 +193,14 @@ def m_list(name: str) -> Method:
                     return i.unsupported(n, f"list.remove({a[0]!r}) of a list holding a "
                                             "value not known statically")
                 else:  # Python raises ValueError here: launch stops
-                    return i.unsupported(n, f"list.remove({a[0]!r}) fails: not in the list")
+                    return i.failed(n, f"list.remove({a[0]!r}) fails: not in the list",
+                                    "ValueError")
             elif name == "pop" and len(a) <= 1 and all(isinstance(x, int) for x in a) \
                     and not k:
                 index = a[0] if a else -1
                 if -len(owner) <= index < len(owner):
                     return owner.pop(index)
-                return i.unsupported(n, "list.pop() fails: index out of range")
+                return i.failed(n, "list.pop() fails: index out of range", "IndexError")
             else:
                 return i.unsupported(n, f"list.{name} with these arguments")
             i.sized(owner)
@@ -231,8 +232,9 @@ def m_str(name: str) -> Method:
         except ops.Refused as err:
             if err.kind == "limit":
                 raise Budget(err.reason) from None
-            return i.unsupported(n, f"str.{name}() fails: {err.reason}" if err.kind == "error"
-                                 else f"str.{name}(): {err.reason}")
+            if err.kind == "error":
+                return i.failed(n, f"str.{name}() fails: {err.reason}", err.reason)
+            return i.unsupported(n, f"str.{name}(): {err.reason}")
     return call
 
 

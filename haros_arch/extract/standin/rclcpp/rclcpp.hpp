@@ -144,6 +144,8 @@ public:
   ParameterType get_type() const;
   template<class T> T get() const;
   template<ParameterType P> const typename haros_parameter_value<P>::type& get() const;
+  bool operator==(const ParameterValue& other) const;
+  bool operator!=(const ParameterValue& other) const;
 };
 class Parameter {
 public:

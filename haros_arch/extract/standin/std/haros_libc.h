@@ -99,8 +99,20 @@ typedef __builtin_va_list va_list;
 #define _IOFBF 0
 #define SCHED_FIFO 1
 #define SCHED_RR 2
+#define SIGHUP 1
 #define SIGINT 2
+#define SIGQUIT 3
+#define SIGILL 4
+#define SIGABRT 6
+#define SIGFPE 8
+#define SIGKILL 9
+#define SIGUSR1 10
+#define SIGSEGV 11
+#define SIGUSR2 12
+#define SIGPIPE 13
+#define SIGALRM 14
 #define SIGTERM 15
+#define SIGCHLD 17
 #define SIG_DFL ((void (*)(int))0)
 #define SIG_IGN ((void (*)(int))1)
 #define errno (*__errno_location())
@@ -116,6 +128,10 @@ typedef __builtin_va_list va_list;
 #define POLLIN 1
 #define O_RDWR 2
 #define O_RDONLY 0
+#define O_WRONLY 1
+#define O_CREAT 64
+#define O_EXCL 128
+#define O_TRUNC 512
 #define CLOCK_REALTIME 0
 extern "C" {
 int* __errno_location();
@@ -347,6 +363,47 @@ int pthread_attr_setschedpolicy(pthread_attr_t* attr, int policy);
 int pthread_attr_setinheritsched(pthread_attr_t* attr, int inherit);
 int pthread_setschedparam(pthread_t thread, int policy, const struct sched_param* param);
 pthread_t pthread_self(void);
+typedef struct { char haros_opaque[4]; } pthread_mutexattr_t;
+#define PTHREAD_PROCESS_PRIVATE 0
+#define PTHREAD_PROCESS_SHARED 1
+int pthread_mutexattr_init(pthread_mutexattr_t* attr);
+int pthread_mutexattr_destroy(pthread_mutexattr_t* attr);
+int pthread_mutexattr_setpshared(pthread_mutexattr_t* attr, int shared);
+int pthread_mutex_init(pthread_mutex_t* mutex, const pthread_mutexattr_t* attr);
+int pthread_mutex_destroy(pthread_mutex_t* mutex);
+int pthread_mutex_lock(pthread_mutex_t* mutex);
+int pthread_mutex_trylock(pthread_mutex_t* mutex);
+int pthread_mutex_unlock(pthread_mutex_t* mutex);
+// <sys/mman.h>, <semaphore.h>, <sys/shm.h>, <unistd.h>'s ftruncate, <malloc.h>
+#define PROT_NONE 0
+#define PROT_READ 1
+#define PROT_WRITE 2
+#define MAP_SHARED 1
+#define MAP_PRIVATE 2
+#define MAP_ANONYMOUS 32
+#define MAP_FAILED ((void*)-1)
+void* mmap(void* addr, unsigned long length, int prot, int flags, int fd, long offset);
+int munmap(void* addr, unsigned long length);
+int shm_open(const char* name, int oflag, unsigned int mode);
+int shm_unlink(const char* name);
+int ftruncate(int fd, long length);
+typedef struct { char haros_opaque[32]; } sem_t;
+#define SEM_FAILED ((sem_t*)0)
+sem_t* sem_open(const char* name, int oflag, ...);
+int sem_close(sem_t* sem);
+int sem_unlink(const char* name);
+int sem_wait(sem_t* sem);
+int sem_trywait(sem_t* sem);
+int sem_post(sem_t* sem);
+int sem_init(sem_t* sem, int pshared, unsigned int value);
+int sem_destroy(sem_t* sem);
+#define IPC_CREAT 512
+#define IPC_EXCL 1024
+#define IPC_RMID 0
+int shmget(int key, unsigned long size, int shmflg);
+void* shmat(int shmid, const void* shmaddr, int shmflg);
+int shmdt(const void* shmaddr);
+int malloc_trim(unsigned long pad);
 // <sys/resource.h>
 typedef unsigned long rlim_t;
 struct rlimit { rlim_t rlim_cur; rlim_t rlim_max; };

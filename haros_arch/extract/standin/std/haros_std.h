@@ -739,6 +739,11 @@ extern const haros_placeholder<1> _1;
 extern const haros_placeholder<2> _2;
 extern const haros_placeholder<3> _3;
 extern const haros_placeholder<4> _4;
+extern const haros_placeholder<5> _5;
+extern const haros_placeholder<6> _6;
+extern const haros_placeholder<7> _7;
+extern const haros_placeholder<8> _8;
+extern const haros_placeholder<9> _9;
 }
 template<class F> struct haros_bind_t {
   template<class... A> void operator()(A&&... args) const;
@@ -1193,8 +1198,10 @@ public:
 class shared_timed_mutex : public shared_mutex {};
 struct defer_lock_t {};
 struct adopt_lock_t {};
+struct try_to_lock_t {};
 extern const defer_lock_t defer_lock;
 extern const adopt_lock_t adopt_lock;
+extern const try_to_lock_t try_to_lock;
 template<class M> class lock_guard {
 public:
   explicit lock_guard(M& m);
@@ -1210,6 +1217,8 @@ public:
   unique_lock();
   explicit unique_lock(M& m);
   unique_lock(M& m, defer_lock_t t);
+  unique_lock(M& m, try_to_lock_t t);
+  unique_lock(M& m, adopt_lock_t t);
   void lock();
   void unlock();
   bool owns_lock() const;
