@@ -1,6 +1,7 @@
 """Recall of ``haros-arch check`` on real architecture bugs from the ROBUST dataset.
 
-    .venv/bin/python bench/robust_bugs.py [--mirrors DIR] [--keep DIR] [--only ID ...] [-v]
+    .venv/bin/python bench/robust_bugs.py [--data FILE] [--mirrors DIR] [--keep DIR]
+                                          [--only ID ...] [-v]
 
 ``robust_bugs.yaml`` beside this script lists the bugs of ROBUST (github:robust-rosin/robust,
 one ``.bug`` file per bug) whose fault is in the architecture (a name, remap, namespace,
@@ -28,6 +29,11 @@ process each, ``--jobs 1``). Per bug it prints:
 - ``setup error``: check reports the project file itself (a launch file it names is
   not there): the data file is wrong, not the tool;
 - ``tool error``: check stopped without its JSON (an internal error), with its last line.
+
+``--data real_bugs.yaml`` (a file beside this script, or a path) reads another list of the
+same format: ``real_bugs.yaml`` holds bugs we found ourselves in the history of public
+repositories (fix commits whose diff changes a name, remap, namespace or parameter between
+code and launch files), each with its ``source``.
 
 Recall is found / (bugs in scope that ran). Mirrors are the bare repositories the
 ``fetch`` tool brings (``DIR/owner+name/repo``). Nothing goes to the network.
@@ -127,11 +133,15 @@ class CheckFailed(Exception):
 
 
 def check(project: Path) -> list[dict[str, Any]]:
+    """The findings of ``check`` on ``project``, then its warning and error diagnostics
+    (each with its ``code``, no ``rule``)."""
     done = subprocess.run([sys.executable, "-m", "haros_arch", "check", str(project),
                            "--format", "json", "--jobs", "1"],
                           capture_output=True, text=True, cwd=project.parent, check=False)
     try:
-        return list(json.loads(done.stdout)["findings"])
+        report = json.loads(done.stdout)
+        return [*report["findings"], *(d for d in report.get("diagnostics", [])
+                                       if d.get("severity") in ("warning", "error"))]
     except (ValueError, KeyError):
         last = (done.stderr.strip().splitlines() or ["no output"])[-1]
         raise CheckFailed(f"{project.parent.name}: {last[:300]}") from None
@@ -139,11 +149,13 @@ def check(project: Path) -> list[dict[str, Any]]:
 
 def pointing(findings: list[dict[str, Any]], expect: dict[str, Any], suffix: str = ""
              ) -> list[dict[str, Any]]:
-    """The findings of the expected rules (``rule + suffix``) that point at the bug."""
+    """The findings of the expected rules (``rule + suffix``) that point at the bug; an
+    expected rule in capitals is a diagnostic's code (a warning the launch or graph
+    stage gives: ``LAUNCH_PARAMS_NO_NODE``)."""
     rules = {rule + suffix for rule in expect["rules"]}
     out = []
     for finding in findings:
-        if finding["rule"] not in rules:
+        if finding.get("rule", finding.get("code")) not in rules:
             continue
         files = [finding.get("location") or {}] + [a.get("location") or {}
                                                    for a in finding.get("also", [])]
@@ -174,7 +186,7 @@ def verdict(bug: dict[str, Any], trees: dict[str, Path], verbose: bool) -> str:
     found = pointing(buggy, bug["expect"])
     if verbose:
         for finding in found or pointing(buggy, bug["expect"], "-undecided"):
-            print(f"    {finding['rule']}: {finding['message'][:300]}")
+            print(f"    {finding.get('rule', finding.get('code'))}: {finding['message'][:300]}")
     if found:
         after = "gone after fix" if not pointing(fixed, bug["expect"]) else "stays after fix"
         return f"found, {after}"
@@ -199,12 +211,17 @@ def matches(project: Path, text: str) -> bool:
 
 def main(argv: list[str]) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--data", default=str(DATA),
+                        help="the list of bugs (a file beside this script or a path)")
     parser.add_argument("--mirrors", default="/work/.mirror", type=Path)
     parser.add_argument("--keep", type=Path, help="write the trees here and keep them")
     parser.add_argument("--only", nargs="*", default=[], help="bug ids (system/id or id)")
     parser.add_argument("-v", "--verbose", action="store_true")
     args = parser.parse_args(argv)
-    bugs = yaml.safe_load(DATA.read_text())["bugs"]
+    data = Path(args.data)
+    if not data.is_file() and (HERE / data).is_file():
+        data = HERE / data
+    bugs = yaml.safe_load(data.read_text())["bugs"]
     counts: dict[str, int] = {}
     with tempfile.TemporaryDirectory(prefix="robust-") as scratch:
         base = args.keep or Path(scratch)

@@ -323,6 +323,15 @@ CATALOGUE: dict[str, Entry] = {
         "warning", "{detail}",
         "A parameter file given to a node cannot be read or matched statically; the "
         "parameters it would set are unknown."),
+    "LAUNCH_PARAMS_OUTSIDE": Entry(
+        "error", "parameter file {file}: {keys} hold a value outside ros__parameters, "
+        "a parameter of no node",
+        "In a ROS 2 parameter file, the keys above ros__parameters spell a node's name "
+        "(node: ros__parameters: name: value); a value written there (a section that "
+        "lacks its ros__parameters level) belongs to no node. rcl refuses the whole file "
+        "(\"Cannot have a value before ros__parameters\"), so a node given it on its "
+        "command line does not start. Fix: put the values under the node's "
+        "ros__parameters."),
     "LAUNCH_PARAMS_NO_NODE": Entry(
         "warning", "parameter file {file} is given to {nodes}, but its sections are for "
         "{patterns}: rcl gives their parameters to none of them",
@@ -357,7 +366,9 @@ CATALOGUE: dict[str, Entry] = {
         "An error the parse could not get past is inside a function that calls the ROS "
         "API, so a call there may be missing or read with a wrong name or type. The node "
         "is 'partial'. Errors in code that calls no ROS API cannot hide a call and leave "
-        "the node complete."),
+        "the node complete, as does an unqualified call of a standard function clang "
+        "could not find through its arguments' types (make_pair(x->name(), x) with x of "
+        "a header the parse lacks) outside the statement of a ROS call."),
     "CPP_PLUGINS_LOADED": Entry(
         "info", "{text}: loads plugin classes through pluginlib",
         "The code creates instances of plugin classes by name (pluginlib's "

@@ -74,3 +74,34 @@ def test_a_file_whose_section_matches_or_sets_every_node_is_not(write_tree) -> N
     assert _check(write_tree, "/**:\n  ros__parameters:\n    use_mag: false\n") == []
     assert _check(write_tree, "/**/imu_filter_node:\n  ros__parameters:\n    use_mag: false\n"
                   ) == []
+
+
+def _outside(write_tree, sections: str) -> list[tuple[str, str]]:
+    root = write_tree({
+        "src/imu/package.xml": package_xml("imu", "ament_python"),
+        "src/imu/setup.py": SETUP,
+        "src/imu/imu/__init__.py": "",
+        "src/imu/imu/filt.py": NODE,
+        "src/imu/config/filter.yaml": sections,
+        "src/imu/launch/filter.launch.py": LAUNCH.format(file="filter.yaml"),
+        "project.yaml": "project: p\nconfigurations:\n  c: [imu/launch/filter.launch.py]\n",
+    })
+    out = root / "check.json"
+    main(["check", str(root / "project.yaml"), "--format", "json", "-o", str(out),
+          "--fail-on", "never"])
+    report = json.loads(out.read_text())
+    return [(d["severity"], d["message"]) for d in report["diagnostics"]
+            if d["code"] == "LAUNCH_PARAMS_OUTSIDE"]
+
+
+def test_a_value_outside_ros__parameters_is_said(write_tree) -> None:
+    """ouster-ros's os_sensor_cloud_image_params.yaml had ``ouster/os_image:`` with
+    ``use_system_default_qos: false`` right under it, no ros__parameters level: a value
+    of no node, and a file rcl refuses. The reader skipped such a section silently."""
+    found = _outside(write_tree, "imu_filter_node:\n  ros__parameters:\n    use_mag: false\n"
+                                 "ouster/os_image:\n  use_system_default_qos: false\n")
+    assert found == [("error", "parameter file imu/config/filter.yaml: "
+                      "ouster/os_image/use_system_default_qos hold a value outside "
+                      "ros__parameters, a parameter of no node")]
+    assert _outside(write_tree, "imu_filter_node:\n  ros__parameters:\n    use_mag: false\n"
+                                "    nested:\n      a: 1\n") == []

@@ -755,7 +755,9 @@ def _hidden(path: str, errors: list[_Error], finder: CallFinder,
     the errors inside a function that holds such a site. None in a unit without
     errors: there the parse read every call, and the walk judged each."""
     near: dict[str, list[recall.Site]] = {}
-    errors = [e for e in errors if not _names_fieldless_type(e.spelling, fieldless)
+    std = _declared_in(finder.tu)
+    errors = [e for e in errors if not (_names_fieldless_type(e.spelling, fieldless)
+                                        or _std_by_adl(e, source, std))
               or _in_ros_call(e, source, near)]
     if not errors:
         return []
@@ -1268,6 +1270,26 @@ def _hiding(tu: TranslationUnit, errors: list[_Error],
         if recall.holding(line, around, _sites(name, source, sites)) is not None:
             kept.append(error)
     return kept
+
+
+_UNDECLARED = re.compile(r"^use of undeclared identifier '(\w+)'$")
+
+
+def _std_by_adl(error: _Error, source: SourceCache,
+                declared: Callable[[str], frozenset[str]]) -> bool:
+    """Whether ``error`` is an unqualified call of a function the unit's namespace std
+    declares, which clang could not find: C++ finds it through its arguments' types
+    (``make_pair(laser->getName(), laser)``), and those come from a header the parse
+    lacks. A standard function makes no ROS call; the error hides one only in the
+    statement of a ROS call (``_in_ros_call``, asked by the caller)."""
+    match = _UNDECLARED.match(error.spelling)
+    if match is None or match.group(1) not in declared("std") or error.path is None:
+        return False
+    lines = source.lines(error.path)
+    if lines is None or not 0 < error.line <= len(lines):
+        return False
+    rest = lines[error.line - 1][error.column - 1:]
+    return re.match(re.escape(match.group(1)) + r"\s*(?:<[^;()]*>\s*)?\(", rest) is not None
 
 
 def _in_ros_call(error: _Error, source: SourceCache,

@@ -247,6 +247,23 @@ def node_patterns(document: Any, depth: int = 0,
         yield from node_patterns(value, depth + 1, (*path, str(key)))
 
 
+def values_outside(document: Any, depth: int = 0, path: tuple[str, ...] = ()) -> list[str]:
+    """The keys of a parameter file that hold a value (no mapping) above any
+    ``ros__parameters``, as ``a/b/key``: rcl refuses such a file ("Cannot have a value
+    before ros__parameters"), and none of those values is a node's parameter."""
+    if not isinstance(document, dict) or depth > MAX_PARAM_DEPTH:
+        return []
+    found: list[str] = []
+    for key, value in document.items():
+        if key == PARAMS_KEY:
+            continue
+        if isinstance(value, dict):
+            found.extend(values_outside(value, depth + 1, (*path, str(key))))
+        else:
+            found.append("/".join((*path, str(key))))
+    return found
+
+
 def pattern_matches(pattern: str, node: str) -> bool:
     """rcl's node name matching: ``*`` one token, ``**`` zero or more tokens."""
     if UNKNOWN_MARK in node:

@@ -117,11 +117,20 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
             unseen.append(location)
             return
         runner.model.nodes[-1].param_files.append((document, location))
-        # what the file's ``/**`` entries give every node it is given to (an entry for
-        # this node's name is this node's own): a setting for each of them
+        outside = naming.values_outside(document)
         path = runner.value(entry.path, scope, location) if not (
             len(entry.path) == 1 and isinstance(entry.path[0], e.FileRef)) else None
         shared = path.literal if path is not None else None
+        said = shared or f"{location.file}:{location.line}:{location.column}"
+        if outside and said not in runner.outside_said:
+            runner.outside_said.add(said)
+            file = runner.workspace.relpath(share_source(runner.workspace, shared)) if (
+                shared) else "a rewritten parameter file"
+            runner.report("LAUNCH_PARAMS_OUTSIDE", location, file=file,
+                          keys=", ".join(outside[:5]) + (
+                              f" and {len(outside) - 5} more" if len(outside) > 5 else ""))
+        # what the file's ``/**`` entries give every node it is given to (an entry for
+        # this node's name is this node's own): a setting for each of them (``shared``)
         if shared:
             runner.file_uses.setdefault(shared, []).append(
                 (document, node, location, scope.conditions))

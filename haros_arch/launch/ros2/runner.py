@@ -93,6 +93,7 @@ class Runner:
         # (``nodes.sections_for_no_node``)
         self.file_uses: dict[str, list[tuple[Any, str, Location,
                                              tuple[Condition, ...]]]] = {}
+        self.outside_said: set[str] = set()  # files LAUNCH_PARAMS_OUTSIDE named
         self.anon: dict[str, Unknown] = {}
         self.guard: LaunchCondition | None = None  # the condition of the action at hand
         # the unknown output of each Command evaluated, with its command line: a value
