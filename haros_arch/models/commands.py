@@ -52,6 +52,7 @@ import shlex
 from typing import Any
 
 from ..launch.model import NodeDecl
+from ..launch.ros2.naming import split_arguments
 from ..model.source import CallKind, Node, PrimitiveCall
 
 ROS1_VALUE_OPTIONS = {"-r", "--rate", "-f", "--file"}
@@ -161,16 +162,7 @@ def _program_words(args: str) -> list[str]:
         words = shlex.split(args)
     except ValueError:
         words = args.split()
-    kept: list[str] = []
-    inside = False
-    for word in words:
-        if word == "--ros-args":
-            inside = True
-        elif inside and word == "--":
-            inside = False
-        elif not inside:
-            kept.append(word)
-    return kept
+    return split_arguments(words)[0]
 
 
 def _spawner(decl: NodeDecl, words: list[str]) -> Node | None:
