@@ -249,17 +249,21 @@ def test_ros2_python_xacro_process_file_gives_the_description():
 
 def test_gazebo_ros2_control_starts_a_controller_manager_that_hosts_the_spawned_controllers():
     # the plugin's <parameters> file gives the controller's class; its package is not
-    # in the workspace here, so the host says which class it could not find
+    # in the workspace here, so the controller takes ros2_controllers' jazzy model
     config = configuration(ROS2, "bot2_description/launch/sim.launch.py")
     manager = config.node("/controller_manager")
     assert manager is not None and manager.origin == "description"
-    (missing,) = [d for d in config.diagnostics if d.code == "PLUGIN_NOT_FOUND"]
-    assert "diff_drive_controller/DiffDriveController" in missing.message
-    assert "/controller_manager" in missing.message
-    assert (missing.location.file, missing.location.line) == (
-        "bot2_description/params/controllers.yaml", 1)
+    assert not [d for d in config.diagnostics if d.code == "PLUGIN_NOT_FOUND"]
+    base = config.node("/base")
+    assert base is not None and base.origin == "plugin" and base.node is not None
+    assert base.node.model is not None and "diff_drive_controller" in base.node.model
+    assert {(link.kind, link.resource.name) for link in config.links
+            if link.node.name == "/base" and link.kind in ("publish", "subscribe")} == {
+        ("subscribe", "/base/cmd_vel"), ("publish", "/base/cmd_vel_out"),
+        ("publish", "/base/odom"), ("publish", "/tf")}
     (separation,) = [p for p in config.parameters if p.name == "/base/wheel_separation"]
     assert separation.value == 0.3 and separation.set_by_launch
+    assert [r.node.name for r in separation.readers] == ["/base"]  # declared by the model
     assert config.node("/gazebo_ros2_control").completeness == "partial"
 
 
