@@ -158,11 +158,7 @@ _SPAWNER_TYPES = {verb: "controller_manager_msgs/srv/" + "".join(
 def _program_words(args: str) -> list[str]:
     """The words a ROS 2 program's own parser sees: those outside ``--ros-args ...
     [--]``, which rclpy's ``remove_ros_args`` takes away."""
-    try:
-        words = shlex.split(args)
-    except ValueError:
-        words = args.split()
-    return split_arguments(words)[0]
+    return split_arguments(_split(args))[0]
 
 
 def _spawner(decl: NodeDecl, words: list[str]) -> Node | None:
@@ -228,12 +224,17 @@ def _topic_tools(decl: NodeDecl, words: list[str]) -> Node | None:
     return node
 
 
-def _words(args: str) -> list[str]:
+def _split(args: str) -> list[str]:
+    """A command line's words as a shell splits them (on blanks when its quotes do not
+    close)."""
     try:
-        words = shlex.split(args)
+        return shlex.split(args)
     except ValueError:
-        words = args.split()
-    return [w for w in words if ":=" not in w and w != "--ros-args"]
+        return args.split()
+
+
+def _words(args: str) -> list[str]:
+    return [w for w in _split(args) if ":=" not in w and w != "--ros-args"]
 
 
 def _positional(words: list[str], value_options: set[str]) -> tuple[list[str], dict[str, str],

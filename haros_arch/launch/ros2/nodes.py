@@ -205,17 +205,12 @@ def sections_for_no_node(runner: Runner) -> None:
         nodes = list(dict.fromkeys(node for _, node, _, _ in uses))
         if any(UNKNOWN_MARK in node for node in nodes):
             continue
-        patterns: list[str] = []
-        for document, _, _, _ in uses:
-            for pattern, _ in naming.node_patterns(document):
-                if pattern == "/**" or any(naming.pattern_matches(pattern, n) for n in nodes):
-                    patterns = []
-                    break
-                if pattern not in patterns:
-                    patterns.append(pattern)
-            else:
-                continue
-            break
+        patterns = list(dict.fromkeys(
+            pattern for document, _, _, _ in uses
+            for pattern, _ in naming.node_patterns(document)))
+        if any(pattern == "/**" or any(naming.pattern_matches(pattern, n) for n in nodes)
+               for pattern in patterns):
+            continue
         if patterns:
             file = runner.workspace.relpath(share_source(runner.workspace, path))
             runner.model.foreign_sections.append(

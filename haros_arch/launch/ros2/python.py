@@ -343,7 +343,7 @@ class Interpreter(Expressions):
         Python (``try: return int(value) except ValueError: pass``, OrbbecSDK_ROS2's
         convert_value); a handler of a class not known (``json.JSONDecodeError``) is
         not taken, and the failure is said as before."""
-        self.catching.append((_caught(stmt.handlers), len(self.guards)))
+        self.catching.append(([_handler_classes(h) for h in stmt.handlers], len(self.guards)))
         try:
             try:
                 self.block(stmt.body, env)
@@ -368,8 +368,8 @@ class Interpreter(Expressions):
         between), else said and unknown (``unsupported``)."""
         name = reason.partition(":")[0].strip()
         if name in _EXCEPTIONS and any(
-                guards == len(self.guards) and _catches(classes, name)
-                for classes, guards in self.catching):
+                guards == len(self.guards) and any(_catches(c, name) for c in handlers)
+                for handlers, guards in self.catching):
             raise Raised(name)
         return self.unsupported(node, detail)
 
@@ -706,16 +706,10 @@ def _handler_classes(handler: ast.ExceptHandler) -> tuple[str, ...] | None:
     return names if len(names) == len(items) else None
 
 
-def _caught(handlers: list[ast.ExceptHandler]) -> list[tuple[str, ...] | None]:
-    return [_handler_classes(h) for h in handlers]
-
-
-def _catches(classes: object, name: str) -> bool:
-    """Whether a handler's classes (``_handler_classes``), or any of a list of them,
-    catch the builtin exception ``name``."""
-    if isinstance(classes, list):
-        return any(_catches(c, name) for c in classes)
-    if classes is None or not isinstance(classes, tuple):
+def _catches(classes: tuple[str, ...] | None, name: str) -> bool:
+    """Whether a handler's classes (``_handler_classes``) catch the builtin exception
+    ``name``."""
+    if classes is None:
         return False
     if classes == ():
         return True
