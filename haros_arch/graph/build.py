@@ -31,7 +31,6 @@ from ..model.runtime import (
 )
 from ..model.source import NUMBERED, Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK, Unknown
-from ..models.commands import by_arguments, command_node
 from ..plugins.attach import PluginModels, class_packages
 from ..plugins.attach import attach as attach_plugins
 from ..plugins.transports import Transports
@@ -40,7 +39,13 @@ from ..rosrun import find_executable
 from ..workspace import Workspace, installed_roots
 from .actions import action_links
 from .conditions import decide, decide_links, drop_links, program_argument, program_views
-from .processes import guessed_names, process_nodes, process_params, unnamed_param_files
+from .processes import (
+    code_node,
+    guessed_names,
+    process_nodes,
+    process_params,
+    unnamed_param_files,
+)
 
 RESOURCE_OF_KIND: dict[str, type[Resource]] = {
     "publish": Topic, "subscribe": Topic, "server": Service, "client": Service,
@@ -422,8 +427,7 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
     plugin = nodelet_plugin(decl)
     # rostopic pub, a ROS 2 spawner: its arguments say (a spawner's first: its code or
     # interface model builds its names from sys.argv)
-    node = (command_node(decl) if by_arguments(decl) else None) or nodes.get(key) \
-        or command_node(decl)
+    node = code_node(decl, nodes, key)
     if node is None and plugin is None and is_container(decl):
         # a nodelet manager or component container: what it loads are node instances of
         # their own; the process's own interface is its loader's services, known

@@ -36,12 +36,14 @@ def node_key(decl: NodeDecl) -> str:
     return f"{decl.package}/{decl.executable}"
 
 
-def code_node(decl: NodeDecl, nodes: Mapping[str, Node]) -> Node | None:
+def code_node(decl: NodeDecl, nodes: Mapping[str, Node], key: str | None = None
+              ) -> Node | None:
     """The node a declaration runs: the one its arguments make when they say all (a
     ROS 2 controller spawner, ``commands.by_arguments``), else the code's or interface
-    model's, else the one its arguments make (``rostopic pub``), if any."""
+    model's (``nodes[key]``, by default ``pkg/exec``), else the one its arguments make
+    (``rostopic pub``), if any."""
     made = command_node(decl) if by_arguments(decl) else None
-    return made or nodes.get(node_key(decl)) or command_node(decl)
+    return made or nodes.get(key or node_key(decl)) or command_node(decl)
 
 
 def process_nodes(decls: Sequence[NodeDecl], nodes: Mapping[str, Node]
