@@ -527,6 +527,12 @@ IMPLICIT: dict[tuple[str, str], RosFunction] = {
         on_handle=False, siblings=tuple(
             ("server", f"~{name}", kind) for name, kind in LIFECYCLE_SERVICES)),
 }
+# the constructor argument that, given as false, makes none of them
+# (``LifecycleNode(name, ns, options, false)``: enable_communication_interface; the
+# controllers of ros2_control make their nodes so, controller_interface_base.cpp:77)
+IMPLICIT_SWITCH: dict[tuple[str, str], int] = {
+    ("rclcpp_lifecycle::LifecycleNode", "LifecycleNode"): 3,
+}
 # (class, method) -> the argument that names the sub-namespace
 RCLCPP_SUB_NODE: dict[tuple[str, str], int] = {("rclcpp::Node", "create_sub_node"): 0}
 

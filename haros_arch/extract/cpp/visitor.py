@@ -556,7 +556,11 @@ class CallFinder:
             return
         if key in api.RCLCPP_NODE_NAME:
             self._node_name(api.RCLCPP_NODE_NAME[key], args, scope)
-            if key in api.IMPLICIT:
+            switch = api.IMPLICIT_SWITCH.get(key)
+            if key in api.IMPLICIT and not (
+                switch is not None and switch < len(args)
+                and scope.boolean(args[switch]) is False
+            ):
                 self._emit(api.IMPLICIT[key], call, args, None, conditions, scope)
             return
         spec, cls = self._row(call)
