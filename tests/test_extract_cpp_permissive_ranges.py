@@ -45,3 +45,41 @@ def test_a_range_for_over_an_unknown_library_s_object_keeps_its_calls(write_tree
         ("publish", "?"), ("publish", "items")]
     codes = [d.code for d in result.diagnostics]
     assert "CPP_CALL_MISSED" not in codes and "CPP_ERROR_NEAR_CALL" not in codes
+
+
+ELEMENT = """
+#include <rclcpp/rclcpp.hpp>
+#include <std_srvs/srv/trigger.hpp>
+#include <variant>
+#include <vendor/dashboard.h>
+class Dashboard : public rclcpp::Node
+{
+public:
+  Dashboard() : rclcpp::Node("dashboard")
+  {
+    srv_ = create_service<std_srvs::srv::Trigger>(
+      "get_loaded_program",
+      [this](const std::shared_ptr<std_srvs::srv::Trigger::Request>,
+             std::shared_ptr<std_srvs::srv::Trigger::Response> resp) {
+        vendor::Response answer = client_.call();
+        resp->message = std::get<std::string>(answer.data.at("program_name"));
+        resp->success = std::get<0>(answer.flags);
+      });
+  }
+  vendor::Client client_;
+  rclcpp::Service<std_srvs::srv::Trigger>::SharedPtr srv_;
+};
+"""
+
+
+def test_an_element_of_an_unknown_library_s_variant_keeps_the_call(write_tree) -> None:
+    """ur_robot_driver's dashboard client reads ``std::get<std::string>(...)`` of a
+    variant its vendor library returns: no std::get took the permissive object, an error
+    in the function that makes the service, so the node was partial."""
+    root = write_tree({"srv/package.xml": package_xml("srv", "ament_cmake"),
+                       "srv/src/dashboard.cpp": ELEMENT})
+    result = extract_cpp([str(root / "srv" / "src" / "dashboard.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    assert [(c.kind, c.name) for c in result.calls] == [("server", "get_loaded_program")]
+    codes = [d.code for d in result.diagnostics]
+    assert "CPP_ERROR_NEAR_CALL" not in codes and "CPP_PARSE_ERROR" not in codes

@@ -252,6 +252,10 @@ template <class T> struct tuple_size;
 template <decltype(sizeof 0) I, class T> struct tuple_element;
 template <> struct tuple_size<haros_any> { static constexpr decltype(sizeof 0) value = 2; };
 template <decltype(sizeof 0) I> struct tuple_element<I, haros_any> { typedef haros_any type; };
+// an element of a permissive object that is a variant or tuple, by type or by index
+// (ur_robot_driver's ``std::get<std::string>(response.data.at("program_name"))``)
+template <class T> T &get(const haros_any &);
+template <decltype(sizeof 0) I> haros_any &get(const haros_any &);
 }
 template <decltype(sizeof 0) I> haros_any &get(const haros_any &);
 %s"""

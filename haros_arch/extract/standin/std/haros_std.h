@@ -302,14 +302,17 @@ long double stold(const string& s, size_t* pos = nullptr);
 float stof(const string& s, size_t* pos = nullptr);
 double stod(const string& s, size_t* pos = nullptr);
 class string_view {
+  const char* data_ = nullptr;
+  size_t size_ = 0;
 public:
-  string_view();
-  string_view(const char* s);
-  string_view(const char* s, size_t n);
+  constexpr string_view() {}
+  constexpr string_view(const char* s) : data_(s), size_(__builtin_strlen(s)) {}
+  constexpr string_view(const char* s, size_t n) : data_(s), size_(n) {}
   string_view(const string& s);
-  size_t size() const;
-  const char* data() const;
-  bool empty() const;
+  constexpr size_t size() const { return size_; }
+  constexpr size_t length() const { return size_; }
+  constexpr const char* data() const { return data_; }
+  constexpr bool empty() const { return size_ == 0; }
   operator string() const;
 };
 inline namespace literals { inline namespace string_literals {
@@ -412,11 +415,16 @@ template<class T, size_t N> struct array {
   constexpr size_t size() const;
   bool empty() const;
   T* data();
+  const T* data() const;
+  T& front(); const T& front() const;
+  T& back(); const T& back() const;
   void fill(const T& v);
   T* begin();
   T* end();
   const T* begin() const;
   const T* end() const;
+  const T* cbegin() const;
+  const T* cend() const;
 };
 template<class K, class V> class haros_map_iterator {
 public:
@@ -924,6 +932,10 @@ ostream& operator<<(ostream& os, char c);
 ostream& operator<<(ostream& os, const char* s);
 ostream& operator<<(ostream& os, const string& s);
 template<class T> ostream& operator<<(ostream& os, const T& v);
+// a stream written while a temporary, ``(std::ostringstream() << a << b).str()``: the
+// stream itself comes back (realsense2_camera's STREAM_NAME)
+template<class S, class T, class = typename enable_if<__is_base_of(ostream, S)>::type>
+S&& operator<<(S&& os, const T& v);
 class istream : virtual public ios_base {
 public:
   istream& operator>>(bool& v);
@@ -1301,12 +1313,14 @@ public:
   promise();
   future<T> get_future();
   void set_value(const T& v);
+  template<class E> void set_exception(E e);
 };
 template<> class promise<void> {
 public:
   promise();
   future<void> get_future();
   void set_value();
+  template<class E> void set_exception(E e);
 };
 enum class launch { async = 1, deferred = 2 };
 template<class F, class... A> future<int> async(launch policy, F&& f, A&&... args);
