@@ -123,6 +123,8 @@ _ZEROED: dict[TypeKind, object] = {
 _API_CLASSES = frozenset(owner for owner, _ in [*api.ALL, *api.OPTIONS]) | api.HANDLE_CLASSES
 # what can build an object (``_unseen_class``)
 _MAKES = frozenset({CursorKind.CALL_EXPR, CursorKind.VAR_DECL, CursorKind.CXX_NEW_EXPR})
+# the standard factories that build their template argument with their arguments
+_FACTORIES = frozenset({"make_shared", "make_unique"})
 MAX_SITE_DEPTH = 3  # constructors of constructors whose sites' conditions are followed
 _PREPROCESSED = frozenset({CursorKind.MACRO_INSTANTIATION, CursorKind.INCLUSION_DIRECTIVE})
 _PARAM_KINDS = ("read", "declare")
@@ -783,7 +785,7 @@ class CallFinder:
             return
         target = call.referenced
         where = target.location.file if target is not None else None
-        if where is None or where.name != self.declared:
+        if where is None or (where.name != self.declared and not self._makes_declared(call)):
             return
         key = place_of(call)
         if key in self._unknown:
@@ -794,7 +796,10 @@ class CallFinder:
         if given:  # once per place (a conversion of the made object starts there too)
             self._unknown.add(key)
             name = call.spelling
-            if not name or name == synthesis.ANY or name.startswith("operator"):
+            if name in _FACTORIES and where is not None and where.name != self.declared:
+                # the class the factory builds (``make_unique<C>``)
+                name = call.type.get_canonical().get_template_argument_type(0).spelling
+            elif not name or name == synthesis.ANY or name.startswith("operator"):
                 # a declared class's construction (its constructor is the permissive
                 # base's) or a call on such an object: the type, else the text
                 name = call.type.spelling
@@ -805,6 +810,20 @@ class CallFinder:
             self.diagnostics.append(diag.make(
                 "CPP_NODE_TO_UNKNOWN", self.where(call),
                 given="".join(t.spelling for t in given[0].get_tokens())[:60], name=name))
+
+    def _makes_declared(self, call: Cursor) -> bool:
+        """Whether ``call`` is ``std::make_shared<C>(args)`` / ``std::make_unique<C>(args)``
+        of a class ``C`` declared permissively: it builds ``C`` with those arguments
+        (interactive_marker_twist_server gives its node's interfaces to
+        ``make_unique<interactive_markers::InteractiveMarkerServer>(...)``)."""
+        if call.spelling not in _FACTORIES:
+            return False
+        made = call.type.get_canonical()
+        if made.get_num_template_arguments() < 1:
+            return False
+        decl = made.get_template_argument_type(0).get_canonical().get_declaration()
+        where = decl.location.file if decl is not None else None
+        return where is not None and where.name == self.declared
 
     def _options(self, expr: Cursor,
                  scope: Scope) -> tuple[api.RosFunction, Cursor, Scope] | None:
