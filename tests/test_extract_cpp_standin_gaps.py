@@ -448,3 +448,21 @@ def test_ros1_message_cache_urdf_safety_and_tf2_timeout(write_tree) -> None:
     assert [(c.kind, c.name) for c in result.calls] == [
         ("subscribe", "pose"), ("read", "robot_description"), ("publish", "soft_limit"),
         ("publish", "elevation")]
+
+
+def test_ros1_bag_replay_and_camera_model_of_installed_packages(write_tree) -> None:
+    """rosbag (slam_gmapping's replay: ``m.instantiate<sensor_msgs::LaserScan>()`` was an
+    error beside its advertise calls) and image_geometry (turtlebot_actions' fiducial
+    finder: a PinholeCameraModel of an installed package, CPP_CLASS_UNSEEN) make no ROS
+    call: the fallback stand-ins declare them when the workspace does not have them."""
+    root = write_tree({
+        "pkg/package.xml": package_xml("pkg", "catkin").replace(
+            "</license>", "</license><depend>roscpp</depend><depend>rosbag</depend>"
+            "<depend>image_geometry</depend>"),
+        "pkg/src/node.cpp": _source("ros1_bag_camera_model.cpp")})
+    result = extract_cpp([str(root / "pkg" / "src" / "node.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    assert _errors(result) == []
+    assert [d.code for d in result.diagnostics if d.code.startswith("CPP_")] == []
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("publish", "~entropy"), ("publish", "scan_replayed"), ("publish", "target")]
