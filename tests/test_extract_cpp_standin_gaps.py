@@ -466,3 +466,17 @@ def test_ros1_bag_replay_and_camera_model_of_installed_packages(write_tree) -> N
     assert [d.code for d in result.diagnostics if d.code.startswith("CPP_")] == []
     assert [(c.kind, c.name) for c in result.calls] == [
         ("publish", "~entropy"), ("publish", "scan_replayed"), ("publish", "target")]
+
+
+def test_ros1_controllers_and_robot_hw_of_installed_ros_control(write_tree) -> None:
+    """ROS 1 ros_control installed, not in the workspace: franka's controllers take their
+    interfaces with ``robot_hw->get<hardware_interface::VelocityJointInterface>()`` (an
+    error beside init's calls: 11 franka_ros controllers were partial); a RobotHW
+    registers its interfaces. Two PLUGINLIB_EXPORT_CLASS in one file are two exports, not
+    a redefinition."""
+    result = _extract(write_tree, _source("ros1_controller_robot_hw.cpp"), "catkin")
+    assert _errors(result) == []
+    # each on the NodeHandle its init is given (the controller's, named where it is loaded)
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("read", "?/arm_id"), ("subscribe", "?/command"), ("read", "?/joint"),
+        ("read", "?/robot_ip")]

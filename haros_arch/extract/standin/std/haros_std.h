@@ -319,6 +319,44 @@ inline namespace literals { inline namespace string_literals {
 string operator""s(const char* s, size_t n);
 } }
 
+// <bitset> (ur_robot_driver's robot mode bits)
+template<size_t N> class bitset {
+public:
+  class reference {
+  public:
+    reference& operator=(bool value);
+    reference& operator=(const reference& other);
+    operator bool() const;
+    bool operator~() const;
+    reference& flip();
+  };
+  constexpr bitset() {}
+  constexpr bitset(unsigned long long value) {}
+  explicit bitset(const string& text, size_t pos = 0, size_t n = size_t(-1));
+  explicit bitset(const char* text);
+  constexpr bool operator[](size_t pos) const { return false; }
+  reference operator[](size_t pos);
+  bool test(size_t pos) const;
+  bool all() const; bool any() const; bool none() const;
+  size_t count() const;
+  constexpr size_t size() const { return N; }
+  bitset& set(); bitset& set(size_t pos, bool value = true);
+  bitset& reset(); bitset& reset(size_t pos);
+  bitset& flip(); bitset& flip(size_t pos);
+  unsigned long to_ulong() const;
+  unsigned long long to_ullong() const;
+  string to_string(char zero = '0', char one = '1') const;
+  bitset& operator&=(const bitset& other); bitset& operator|=(const bitset& other);
+  bitset& operator^=(const bitset& other);
+  bitset operator~() const;
+  bitset operator<<(size_t pos) const; bitset operator>>(size_t pos) const;
+  bitset& operator<<=(size_t pos); bitset& operator>>=(size_t pos);
+  bool operator==(const bitset& other) const; bool operator!=(const bitset& other) const;
+};
+template<size_t N> bitset<N> operator&(const bitset<N>& a, const bitset<N>& b);
+template<size_t N> bitset<N> operator|(const bitset<N>& a, const bitset<N>& b);
+template<size_t N> bitset<N> operator^(const bitset<N>& a, const bitset<N>& b);
+
 // <vector>, <deque>, <list>, <array>, <set>, <map>, <unordered_map>, <queue>
 template<class T, class A = allocator<T>> class vector {
 public:
