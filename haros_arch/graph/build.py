@@ -508,12 +508,17 @@ _CONTAINER_SERVICES = {
     1: (("~load_nodelet", "nodelet/NodeletLoad"), ("~unload_nodelet", "nodelet/NodeletUnload"),
         ("~list", "nodelet/NodeletList")),
 }
+# and the parameters it reads there: nodelet's Loader (loader.cpp, advertiseRosApi) reads
+# ``num_worker_threads`` (default 0: as many as the machine has cores) on the manager's
+# private handle
+_CONTAINER_READS = {1: (("~num_worker_threads", "int"),), 2: ()}
 _CONTAINERS: dict[tuple[str, str, int], Node] = {}
 
 
 def container_node(decl: NodeDecl) -> Node | None:
     """The node type of a nodelet manager (``nodelet manager``) or a component container:
-    known whole (completeness ``model``), as the services its loader serves."""
+    known whole (completeness ``model``), as the services its loader serves and the
+    parameters it reads."""
     if decl.package == "nodelet" and decl.args.split()[:1] != ["manager"]:
         return None
     version = 2 if decl.package == "rclcpp_components" else 1
@@ -521,8 +526,10 @@ def container_node(decl: NodeDecl) -> Node | None:
     if key not in _CONTAINERS:
         _CONTAINERS[key] = Node(
             decl.package, decl.executable,
-            calls=[PrimitiveCall("server", name, type_) for name, type_ in
-                   _CONTAINER_SERVICES[version]],
+            calls=[*(PrimitiveCall("server", name, type_) for name, type_ in
+                     _CONTAINER_SERVICES[version]),
+                   *(PrimitiveCall("read", name, type_, has_default=True)
+                     for name, type_ in _CONTAINER_READS[version])],
             completeness="model", model="built-in: the loader services of a "
             + ("component container" if version == 2 else "nodelet manager"))
     return _CONTAINERS[key]
@@ -547,11 +554,15 @@ def node_key(decl: NodeDecl, nodes: Mapping[str, Node]) -> str:
 
 
 def nodelet_plugin(decl: NodeDecl) -> str | None:
-    """``pkg/Name`` for ``<node pkg="nodelet" type="nodelet" args="load pkg/Name mgr">``."""
+    """``pkg/Name`` for ``<node pkg="nodelet" type="nodelet" args="load pkg/Name mgr">``
+    (or ``pkg::Class``, a class looked up by its type)."""
     if (decl.package, decl.executable) != ("nodelet", "nodelet"):
         return None
     words = decl.args.split()
-    if len(words) >= 2 and words[0] in ("load", "standalone") and "/" in words[1]:
+    # the lookup name: ``pkg/Name``, or the C++ type of a class its description gives no
+    # name (pluginlib then looks it up by its type: ``vesc_ackermann::VescToOdomNodelet``)
+    if len(words) >= 2 and words[0] in ("load", "standalone") and (
+            "/" in words[1] or "::" in words[1].strip(":")):
         return words[1]
     return None
 
