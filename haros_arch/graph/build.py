@@ -433,8 +433,12 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
         # their own; the process's own interface is its loader's services, known
         node = container_node(decl)
     elif node is None and workspace.find(key.partition("/")[0]) is None:
-        config.diagnostics.append(diag.make("NODE_PACKAGE_UNKNOWN", decl.location,
-                                            name=key.partition("/")[0], node=plugin or key))
+        # the package's interface model was found without this node: said there
+        if not any(d.code == "MODEL_NODE_MISSING" and d.location == decl.location
+                   for d in config.diagnostics):
+            config.diagnostics.append(diag.make("NODE_PACKAGE_UNKNOWN", decl.location,
+                                                name=key.partition("/")[0],
+                                                node=plugin or key))
     elif node is None and plugin is None and decl.ros_version == 1 and (
         found := _program_file(workspace, *key.partition("/")[::2])
     ):
