@@ -38,7 +38,14 @@ from ..robot.attach import attach as attach_descriptions
 from ..rosrun import find_executable
 from ..workspace import Workspace, installed_roots
 from .actions import action_links
-from .conditions import decide, decide_links, drop_links, program_argument, program_views
+from .conditions import (
+    decide,
+    decide_links,
+    drop_links,
+    program_argument,
+    program_option,
+    program_views,
+)
 from .processes import (
     code_node,
     guessed_names,
@@ -633,6 +640,11 @@ def _given_name(call: PrimitiveCall, instance: NodeInstance, resources: Resource
         given = program_argument(instance, call.name_arg)
         if given:
             call = replace(call, name=_filled(call.name, given), name_arg=None)
+    if call.name_option is not None and UNKNOWN_MARK in call.name:
+        # an option's value (``"/robot/limb/" + args.limb``); not given: the ``?``
+        given = program_option(instance, call.name_option)
+        if given:
+            call = replace(call, name=_filled(call.name, given), name_option=None)
     if instance.ros_version == 2 and RESOURCE_OF_KIND[call.kind] is Parameter:
         return _node_scoped(call.name)
     if call.name_param is None or UNKNOWN_MARK not in call.name:

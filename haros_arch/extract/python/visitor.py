@@ -32,6 +32,7 @@ from .objects import (
     ELEMENT_OF,
     FIELD_OF,
     PROGRAM_ARGUMENT,
+    PROGRAM_OPTION,
     Alternatives,
     BoundMethod,
     Frame,
@@ -830,6 +831,10 @@ class Walker:
                 # a command-line argument with text around it (``sys.argv[1] + "/out"``):
                 # the graph puts the instance's argument in the place of the ``?``
                 call.name_arg = int(params[0].removeprefix(PROGRAM_ARGUMENT))
+            elif len(params) == 1 and params[0].startswith(PROGRAM_OPTION):
+                # an option argparse parses (``"/robot/limb/" + args.limb``): the value the
+                # instance's arguments give it
+                call.name_option = params[0].removeprefix(PROGRAM_OPTION)
             elif len(params) == 1 and params[0].startswith("parameter "):
                 name = params[0].removeprefix("parameter ")
                 call.name_param = param_name(Value.of(name)) if version == 2 else name
