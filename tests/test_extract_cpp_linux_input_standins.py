@@ -1,8 +1,8 @@
 """joystick_drivers' ROS 1 joy_node reads the Linux joystick and event interfaces
 (``<linux/joystick.h>``'s ``js_event``, ``<linux/input.h>``'s ``input_event`` /
-``ff_effect`` / ``EVIOCSFF``), lists ``/dev/input`` with ``<dirent.h>`` and ``S_ISCHR``, and
-tests ``errno != EAGAIN``: with those headers empty, errors in ``main`` beside its ROS
-calls made the node partial (f1tenth_system's vendored joy)."""
+``ff_effect`` / ``EVIOCSFF``), lists ``/dev/input`` with ``<dirent.h>``, ``S_ISCHR`` and
+``realpath``, and tests ``errno != EAGAIN``: with those headers empty, errors in ``main``
+beside its ROS calls made the node partial (f1tenth_system's vendored joy)."""
 
 from __future__ import annotations
 
@@ -24,6 +24,8 @@ int main(int argc, char** argv) {
   ros::Publisher pub = nh.advertise<sensor_msgs::Joy>("joy", 1);
   DIR* dev = opendir("/dev/input");
   struct dirent* entry = readdir(dev);
+  char resolved[256];
+  realpath(entry->d_name, resolved);
   struct stat st;
   if (stat(entry->d_name, &st) == 0 && S_ISCHR(st.st_mode)) { closedir(dev); }
   int fd = open("/dev/input/js0", O_RDONLY);

@@ -376,6 +376,7 @@ int mkdir(const char* path, mode_t mode);
 typedef struct haros_DIR DIR;
 struct dirent { unsigned long d_ino; long d_off; unsigned short d_reclen; unsigned char d_type;
   char d_name[256]; };
+char* realpath(const char* path, char* resolved);
 DIR* opendir(const char* name);
 struct dirent* readdir(DIR* dir);
 int closedir(DIR* dir);
