@@ -29,6 +29,13 @@ class Server(object):
     def cb(self, msg):
         pass
 
+def start(limb, mode, valid):
+    if limb == "all":  # a server per limb the parameter names, else the one asked for
+        for each in valid:
+            Server(each, mode)
+    else:
+        Server(limb, mode)
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("-l", "--limb", dest="limb", default=rospy.get_param("~limb"))
@@ -36,7 +43,7 @@ def main():
     parser.add_argument("rate")
     args, unknown = parser.parse_known_args(rospy.myargv()[1:])
     rospy.init_node("server")
-    Server(args.limb, args.control_mode)
+    start(args.limb, args.control_mode, rospy.get_param("~limbs"))
     rospy.spin()
 
 if __name__ == "__main__":
@@ -63,14 +70,18 @@ def test_names_from_argparse_options(write_tree) -> None:
     ws = scan([str(root / "src")], {})
     result = extract_python([str(root / "src" / "arm" / "scripts" / "server.py")], ws,
                             package="arm")
-    assert sorted((c.name, c.name_option) for c in result.calls if c.kind != "read") == [
-        ("/robot/?/state", "-m --control-mode"), ("robot/limb/?/joint_command", "-l --limb")]
+    assert sorted((c.name, c.name_option or "") for c in result.calls if c.kind != "read") == [
+        ("/robot/?/state", "-m --control-mode"),
+        ("robot/limb/?/joint_command", ""), ("robot/limb/?/joint_command", "-l --limb")]
     model = analyse(load(str(root / "project.yaml")), {"PATH": os.environ.get("PATH", "")},
                     Options(cache_dir=None))
     config = model.configuration("c")
     names = {(link.node.name, link.kind, link.rosname.full) for link in config.links
              if link.kind in ("publish", "subscribe")}
     assert names == {
+        # a server per element of ~limbs (not set: unknown), or the one of --limb
+        ("/a", "publish", "/robot/limb/?/joint_command"),
+        ("/b", "publish", "/robot/limb/?/joint_command"),
         ("/a", "publish", "/robot/limb/right/joint_command"),
         ("/a", "subscribe", "/robot/velocity/state"),
         ("/b", "publish", "/robot/limb/left/joint_command"),
