@@ -213,11 +213,11 @@ def _run(target: Target, sources: SourceMap, workspace: Files) -> list[str]:
     executable whose code loads plugins by name runs all it links: the plugins' base
     classes are named by the plugins, not by it (nav2's costmap filters)."""
     own = sources.own(target)
-    return _with_elsewhere(_run_here(target, own, sources, workspace), target, sources,
+    return with_elsewhere(_run_here(target, own, sources, workspace), target, sources,
                            workspace)
 
 
-def _with_elsewhere(kept: list[str], target: Target, sources: SourceMap,
+def with_elsewhere(kept: list[str], target: Target, sources: SourceMap,
                     workspace: Files) -> list[str]:
     """``kept`` and the sources of other packages' libraries that ``target`` links and
     that kept code names: those defining a class member or free function it names, and
@@ -270,7 +270,7 @@ def components(it: Interpreter, package: Package, workspace: Files,
     registered: set[str] = set()
     for reg in it.registrations:
         target = it.targets.get(reg.target)
-        files = _with_elsewhere(narrow(sources.linked(target), reg.plugin, workspace),
+        files = with_elsewhere(narrow(sources.linked(target), reg.plugin, workspace),
                                 target, sources, workspace) if target else []
         conditions = (target.conditions if target else ()) + tuple(
             c for c in reg.conditions if target is None or c not in target.conditions)
@@ -290,7 +290,7 @@ def components(it: Interpreter, package: Package, workspace: Files,
                     continue
                 registered.add(plugin)
                 nodes.append(Node(package.name, plugin, "component", "cpp",
-                                  _with_elsewhere(narrow(sources.linked(target), plugin,
+                                  with_elsewhere(narrow(sources.linked(target), plugin,
                                                          workspace), target, sources,
                                                   workspace),
                                   conditions=target.conditions,

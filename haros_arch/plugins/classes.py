@@ -17,7 +17,7 @@ from __future__ import annotations
 import os
 import re
 from collections.abc import Callable, Iterable, Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any, Protocol, TypeVar
 
 from lxml import etree
@@ -62,6 +62,9 @@ class Library:
     sources: list[str]  # workspace-relative
     conditions: tuple[Condition, ...] = ()
     own: list[str] | None = None
+    # a nodelet's files with those of other workspace packages' libraries the target
+    # links that they name (``cmake.nodes``' ``_with_elsewhere``, as a component's)
+    elsewhere: Callable[[list[str]], list[str]] | None = field(default=None, compare=False)
 
 
 def library_name(path: str) -> str:
@@ -128,6 +131,11 @@ def plugin_classes(package: Package, workspace: Files, libraries: Mapping[str, L
                     # its base classes' code, in whichever library it links builds it
                     sources += inherited_sources(registered, sources, library.sources,
                                                  workspace)
+                    if kind == "nodelet" and library.elsewhere is not None:
+                        # and what it names of other packages' libraries it links:
+                        # mrs_uav_managers' nodelets build mrs_lib's ParamLoader, whose
+                        # ParamProvider reads their parameters
+                        sources = library.elsewhere(sources)
                 if files and not sources:
                     found.append(diag.make("PLUGIN_CLASS_NOT_BUILT", where, plugin=name,
                                            cls=registered, library=wanted or "?"))
