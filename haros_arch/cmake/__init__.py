@@ -9,8 +9,8 @@ and Python scripts.
 
 from __future__ import annotations
 
+import functools
 import os
-from functools import partial
 
 from .. import diagnostics as diag
 from .. import plugins, pysetup
@@ -21,7 +21,14 @@ from ..plugins.classes import remembered
 from ..workspace import Workspace
 from .interpreter import Interpreter
 from .lexer import CMakeSyntaxError, Invocation, tokenize
-from .nodes import PackageFiles, SourceMap, components, executables, scripts
+from .nodes import (
+    PackageFiles,
+    SourceMap,
+    components,
+    executables,
+    scripts,
+    with_elsewhere,
+)
 from .targets import Target
 
 __all__ = ["CMAKE_BUILD_TYPES", "Target", "interpret", "package_libraries", "parse_package",
@@ -160,8 +167,11 @@ def parse_package(package: Package, workspace: Workspace) -> tuple[list[Node], l
     libraries: dict[str, plugins.Library] = {}
     for target in interpreter.targets.values():
         if target.kind == "library":
-            library = plugins.Library(sources.linked(target), target.conditions,
-                                      sources.own(target), partial(sources.reached, target))
+            library = plugins.Library(
+                sources.linked(target), target.conditions, sources.own(target),
+                functools.partial(sources.reached, target),
+                with_elsewhere=functools.partial(_elsewhere, target=target, sources=sources,
+                                                 files=files))
             libraries.setdefault(target.name, library)
             libraries.setdefault(target.output_name or target.name, library)
     described = [Plugin(base, files.relpath(path))
@@ -176,6 +186,13 @@ def parse_package(package: Package, workspace: Workspace) -> tuple[list[Node], l
         nodes.extend(entry_points)
         found.extend(problems)
     return _unique(nodes), found
+
+
+def _elsewhere(kept: list[str], *, target: Target, sources: SourceMap,
+               files: PackageFiles) -> list[str]:
+    """A nodelet's files ``kept`` and what they name of other workspace packages'
+    libraries that its library ``target`` links."""
+    return with_elsewhere(kept, target, sources, files)
 
 
 def _unique(nodes: list[Node]) -> list[Node]:

@@ -244,11 +244,11 @@ def _run(target: Target, sources: SourceMap, workspace: Files) -> list[str]:
     executable whose code loads plugins by name runs all it links: the plugins' base
     classes are named by the plugins, not by it (nav2's costmap filters)."""
     own = sources.own(target)
-    return _with_elsewhere(_run_here(target, own, sources, workspace), target, sources,
+    return with_elsewhere(_run_here(target, own, sources, workspace), target, sources,
                            workspace)
 
 
-def _with_elsewhere(kept: list[str], target: Target, sources: SourceMap,
+def with_elsewhere(kept: list[str], target: Target, sources: SourceMap,
                     workspace: Files) -> list[str]:
     """``kept`` and the sources of other packages' libraries that ``target`` links and
     that kept code names: those defining a class member or free function it names, and
@@ -297,13 +297,13 @@ def _run_here(target: Target, own: list[str], sources: SourceMap,
 
 def _component(target: Target, cls: str, sources: SourceMap, workspace: Files) -> list[str]:
     """The sources a component class runs: the files of its library that are its own
-    (``narrow``), what they name of other packages' libraries (``_with_elsewhere``), and
+    (``narrow``), what they name of other packages' libraries (``with_elsewhere``), and
     the files defining its base classes, in its package's libraries or in another
     package's (``inherit.inherited_sources``: a file that exports a class of its own is
     no helper, but it is a base's code)."""
     linked = sources.linked(target)
     kept = narrow(linked, cls, workspace)
-    files = _with_elsewhere(kept, target, sources, workspace)
+    files = with_elsewhere(kept, target, sources, workspace)
     if not kept:
         return files
     return [*files, *(s for s in inherited_sources(cls, files, linked, workspace,

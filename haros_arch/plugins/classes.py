@@ -17,7 +17,7 @@ from __future__ import annotations
 import os
 import re
 from collections.abc import Callable, Iterable, Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any, Protocol, TypeVar
 
 from lxml import etree
@@ -70,6 +70,10 @@ class Library:
     conditions: tuple[Condition, ...] = ()
     own: list[str] | None = None
     elsewhere: Callable[[], list[list[str]]] = _nothing
+    # a nodelet's files with those of other workspace packages' libraries the target
+    # links that they name (``cmake.nodes``' ``with_elsewhere``, as a component's)
+    with_elsewhere: Callable[[list[str]], list[str]] | None = field(default=None,
+                                                                    compare=False)
 
 
 def library_name(path: str) -> str:
@@ -137,6 +141,11 @@ def plugin_classes(package: Package, workspace: Files, libraries: Mapping[str, L
                     # of its package or of another
                     sources += inherited_sources(registered, sources, library.sources,
                                                  workspace, library.elsewhere)
+                    if kind == "nodelet" and library.with_elsewhere is not None:
+                        # and what it names of other packages' libraries it links:
+                        # mrs_uav_managers' nodelets build mrs_lib's ParamLoader, whose
+                        # ParamProvider reads their parameters
+                        sources = library.with_elsewhere(sources)
                 if files and not sources:
                     found.append(diag.make("PLUGIN_CLASS_NOT_BUILT", where, plugin=name,
                                            cls=registered, library=wanted or "?"))

@@ -760,6 +760,13 @@ public:
 };
 
 // <functional>
+// what std::function's converting constructor refuses, as the library's callable
+// constraint does: numbers, enumerators, pointers to objects (text) and strings
+template<class F> struct haros_not_callable
+    : integral_constant<bool, __is_arithmetic(F) || __is_enum(F)> {};
+template<class T> struct haros_not_callable<T*> : integral_constant<bool, !__is_function(T)> {};
+template<class C, class Tr, class A> struct haros_not_callable<basic_string<C, Tr, A>>
+    : true_type {};
 template<class Signature> class function;
 template<class R, class... A> class function<R(A...)> {
 public:
@@ -768,7 +775,8 @@ public:
   function(nullptr_t) noexcept;
   function(const function& f);
   function(function&& f) noexcept;
-  template<class F> function(F f);
+  template<class F, class = typename enable_if<!haros_not_callable<F>::value>::type>
+  function(F f);
   function& operator=(const function& f);
   function& operator=(nullptr_t) noexcept;
   template<class F> function& operator=(F&& f);
