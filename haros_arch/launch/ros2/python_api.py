@@ -145,6 +145,16 @@ def package_directory(share: bool) -> Builder:
     return build
 
 
+def package_share_path(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``get_package_share_path(name)``: ``get_package_share_directory`` as a
+    ``pathlib.Path`` (a pure path, grown with ``/``); a package not in the workspace is
+    its share folder found at launch time, a path join of one part."""
+    found = package_directory(True)(i, a, k, n)
+    if isinstance(found, str):
+        return PurePosixPath(found)
+    return e.PathJoin((to_text(found),))
+
+
 def path_join(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     parts = arg(a, k, 0, "substitutions", default=[])
     if not isinstance(parts, (list, tuple)):
@@ -617,6 +627,7 @@ API: dict[str, Builder] = {
     "FindPackageShare": find_package(True), "FindPackagePrefix": find_package(False),
     "FindPackage": find_package(True),
     "get_package_share_directory": package_directory(True),
+    "get_package_share_path": package_share_path,
     "get_package_prefix": package_directory(False),
     "join": os_path_join, "dirname": os_path(os.path.dirname),
     "basename": os_path(os.path.basename), "abspath": os_path(os.path.normpath),
