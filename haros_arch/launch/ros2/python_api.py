@@ -425,6 +425,21 @@ class _Source:
         self.path = path
 
 
+def include_in_package(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """launch_pal's ``include_launch_py_description(pkg, [folder, ..., file], **kw)``
+    (PAL's robots): the include of the Python launch file at that path of the package's
+    share folder (``FindPackageShare`` and ``PathJoinSubstitution``), the other keywords
+    the include's (``launch_arguments``, ``condition``)."""
+    package, parts = arg(a, k, 0, "pkg_name"), arg(a, k, 1, "paths")
+    if not isinstance(parts, (list, tuple)):
+        return i.unsupported(n, "include_launch_py_description of a path not known "
+                                "statically")
+    path = e.PathJoin((to_text(e.FindPackage(to_text(package), True)),
+                       *(to_text(part) for part in parts)))
+    rest = {key: value for key, value in k.items() if key not in ("pkg_name", "paths")}
+    return include(i, [_Source(to_text(path))], rest, n)
+
+
 def description_source(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     return _Source(to_text(arg(a, k, 0, "launch_file_path")))
 
@@ -658,7 +673,7 @@ API: dict[str, Builder] = {
     "Node": node(False), "LifecycleNode": node(False),
     "ComposableNodeContainer": node(True), "ComposableNode": composable_node,
     "LoadComposableNodes": load_composable,
-    "IncludeLaunchDescription": include,
+    "IncludeLaunchDescription": include, "include_launch_py_description": include_in_package,
     "PythonLaunchDescriptionSource": description_source,
     "XMLLaunchDescriptionSource": description_source,
     "YAMLLaunchDescriptionSource": description_source,
