@@ -181,3 +181,29 @@ def test_a_namespace_passed_empty_adds_no_slash(write_tree) -> None:
     written with ``//controller_server``."""
     assert _rosname(write_tree, '"server", ""') == "server"
     assert _rosname(write_tree, '"server", "/robot"') == "/robot/server"
+
+
+def test_a_member_function_template_called_from_many_places_keeps_each_name(
+        write_tree) -> None:
+    """OrbbecSDK_ROS2's ``setAndGetNodeParameter<T>(value, name, default)``, a member
+    function template of a plain class defined outside it and called for 25 parameters:
+    each declaration keeps its name (the calls of a class template's members found by
+    their definition's place must not take these beyond the sites read one by one)."""
+    names = [f"p{i}" for i in range(20)]
+    calls = "\n".join(f'    set<int>(v_, "{name}", {i});' for i, name in enumerate(names))
+    source = (
+        "#include <string>\n#include <rclcpp/rclcpp.hpp>\n"
+        "class Camera : public rclcpp::Node {\npublic:\n"
+        "  Camera() : rclcpp::Node(\"camera\") {\n" + calls + "\n  }\n"
+        "  template <typename T>\n"
+        "  void set(T & value, const std::string & name, const T & fallback);\n"
+        "  int v_;\n};\n"
+        "template <typename T>\n"
+        "void Camera::set(T & value, const std::string & name, const T & fallback) {\n"
+        "  value = this->declare_parameter<T>(name, fallback);\n}\n")
+    root = write_tree({"cam/package.xml": package_xml("cam", "ament_cmake").replace(
+                           "</package>", "<depend>rclcpp</depend></package>"),
+                       "cam/src/camera.cpp": source})
+    result = extract_cpp([str(root / "cam" / "src" / "camera.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    assert sorted(c.name for c in result.calls if c.kind == "declare") == sorted(names)

@@ -126,8 +126,7 @@ class CallSites:
             if key in done or (key in defined and key not in self.marked):
                 continue
             for call, caller in sites:
-                callee = callee_of(call) if call.kind == CursorKind.CALL_EXPR else (
-                    self._base_calls.get(key_of(call)))
+                callee = callee_of(call) or self._base_calls.get(key_of(call))
                 if callee is not None:
                     yield callee, call, caller
 
@@ -298,7 +297,10 @@ class CallSites:
         it is instantiated from: aerostack2's ``BehaviorServer<actionT>::
         BehaviorServer``, declared in the class, defined in an implementation header)."""
         key = key_of(function.canonical)
-        if key not in self._sites() and function.is_definition():
+        parent = function.semantic_parent
+        if key not in self._sites() and function.is_definition() and parent is not None and (
+                parent.kind in (CursorKind.CLASS_TEMPLATE,
+                                CursorKind.CLASS_TEMPLATE_PARTIAL_SPECIALIZATION)):
             own = key_of(function)
             if own in self._sites():
                 return own
