@@ -160,6 +160,10 @@ def _struct(name: str, fields: list[Field], package: str, kind: str = "msg",
             # the generated setter of each field (``header.set__frame_id("map")``)
             lines += [f"  {cpp} {fld.name};", f"  using _{fld.name}_type = {cpp};",
                       f"  {name}& set__{fld.name}(const {cpp}& _arg);"]
+    if known and not any(fld.constant is None for fld in fields):
+        # rosidl_generator_cpp gives a message without fields one placeholder member,
+        # which code may set (``request->structure_needs_at_least_one_member = 0``)
+        lines.append("  uint8_t structure_needs_at_least_one_member;")
     lines += [f"  bool operator==(const {name}& other) const;",
               f"  bool operator!=(const {name}& other) const;",
               f"  using SharedPtr = std::shared_ptr<{name}>;",
