@@ -647,6 +647,7 @@ API: dict[str, Builder] = {
     "join": os_path_join, "dirname": os_path(os.path.dirname),
     "basename": os_path(os.path.basename), "abspath": os_path(os.path.normpath),
     "realpath": os_path(os.path.normpath), "split": os_path(os.path.split),
+    "splitext": os_path(os.path.splitext),
     "getenv": getenv,
     "PathJoinSubstitution": path_join, "PathSubstitution": path_substitution,
     "Path": pure_path, "PurePath": pure_path, "PurePosixPath": pure_path,
