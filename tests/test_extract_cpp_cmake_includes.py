@@ -84,3 +84,41 @@ def test_a_class_declared_in_a_folder_the_cmake_gives_is_known(tmp_path) -> None
         ("publish", "~status", "std_msgs/msg/String")]
     assert not {"CPP_INCLUDE_MISSING", "CPP_PARSE_ERROR"} & {
         d.code for d in result.diagnostics}
+
+
+GEO_CMAKE = """\
+cmake_minimum_required(VERSION 3.5)
+set(PROJECT_NAME geo)
+project(${PROJECT_NAME})
+find_package(rclcpp REQUIRED)
+include_directories(
+  include
+  include/${PROJECT_NAME}
+)
+add_executable(${PROJECT_NAME}_node src/geo.cpp)
+"""
+
+
+def test_the_project_name_in_an_include_folder_is_the_package_s(tmp_path) -> None:
+    """aerostack2's ``include_directories(include include/${PROJECT_NAME})``, its sources
+    including ``"geo_node.hpp"`` from ``include/geo/``: ament_package() requires the project
+    to be named as the package."""
+    root = tmp_path / "geo"
+    files = {
+        "package.xml": package_xml("geo", "ament_cmake").replace(
+            "</package>", "<depend>rclcpp</depend><depend>std_msgs</depend></package>"),
+        "CMakeLists.txt": GEO_CMAKE,
+        "include/geo/geo_node.hpp": HEADER.replace("cam", "geo").replace("Cam", "Geo"),
+        "src/geo.cpp": SOURCE.replace("cam", "geo").replace("Cam", "Geo"),
+    }
+    for name, text in files.items():
+        path = root / name
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(text)
+    ws = scan([str(tmp_path)])
+    assert cmake_include_dirs(str(root), ws) == [
+        str(root / "include"), str(root / "include" / "geo")]
+    result = extract_cpp([str(root / "src" / "geo.cpp")], ws, cache_dir=None)
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "~status")]
+    assert not {"CPP_INCLUDE_MISSING", "CPP_PARSE_ERROR"} & {
+        d.code for d in result.diagnostics}

@@ -15,7 +15,9 @@ starts it gives one node instance per ROS node, named as ROS 2 names them: witho
 ``name=`` (``__node:=``) every node of the process takes that name, as rcl renames them
 all. Namespace, remaps and arguments apply to all of them. Parameters the launch file
 gives the unnamed node (``/ns/?``) are given to each, as launch_ros passes them to the
-whole process.
+whole process; each node takes a value only if it declares it, so such a copy is a
+setting for several nodes (``ParamDecl.setting``), unread only when no node of the
+process reads it.
 """
 
 from __future__ import annotations
@@ -84,9 +86,16 @@ def process_params(launch: LaunchModel, nodes: Mapping[str, Node]) -> list[Param
                 params.append(param)
             continue
         rest = param.name[len(param.node):]
-        params.extend(replace(param, name=target + rest, node=target, pattern=None)
-                      for target in dict.fromkeys(targets)
-                      if param.pattern is None or pattern_matches(param.pattern, target))
+        chosen = [target for target in dict.fromkeys(targets)
+                  if param.pattern is None or pattern_matches(param.pattern, target)]
+        setting = param.setting
+        if setting is None and len(chosen) > 1:
+            # a value for the process: each of its nodes gets it and takes it only if it
+            # declares it (``ParamDecl.setting``), so it is unread only when none does
+            where = param.location
+            setting = f"{where.file}:{where.line}:{where.column} (node {param.owner})"
+        params.extend(replace(param, name=target + rest, node=target, pattern=None,
+                              setting=setting) for target in chosen)
     return params
 
 

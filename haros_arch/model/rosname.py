@@ -22,6 +22,17 @@ PRIVATE = "~"
 _LEGAL = re.compile(r"^[~/A-Za-z?][\w/?]*$")
 
 
+def node_name_joined(name: str) -> str:
+    """A node name the code builds as ``/<ns>/<name>`` once a namespace given as a value
+    is known, as a namespace written there is taken: ``""`` adds nothing (``name``),
+    ``"/robot"`` one slash (``/robot/name``). nav2's ``LifecycleNode(name, ns = "")``;
+    the jazzy interface models were written with ``//controller_server``."""
+    if name.startswith("//"):
+        rest = name.lstrip("/")
+        name = rest if "/" not in rest else "/" + rest
+    return re.sub(r"/{2,}", "/", name)
+
+
 def is_legal_name(name: str) -> bool:
     """Whether roscpp and rospy accept ``name`` (the empty name too: the namespace)."""
     return not name or (_LEGAL.match(name) is not None and "//" not in name)

@@ -45,6 +45,7 @@ from typing import Any
 
 from .. import __version__
 from ..model.load import node_from_data
+from ..model.rosname import node_name_joined
 from ..model.serialise import to_data
 from ..model.source import CALL_KINDS, Node
 
@@ -143,6 +144,9 @@ def from_document(data: Any, path: str = "") -> InterfaceModel:
         built = [node_from_data(n, package) for n in nodes]
     except (TypeError, ValueError, AttributeError) as error:
         raise ModelFileError(f"a node entry cannot be read: {error}") from None
+    for node in built:  # models written when a namespace passed as "" left "//name"
+        node.rosname = node_name_joined(node.rosname) if node.rosname else node.rosname
+        node.rosnames = [node_name_joined(n) for n in node.rosnames]
     return InterfaceModel(package, distro, built, str(data.get("version") or ""),
                           _strings(data.get("source")), _strings(data.get("generator")),
                           data.get("override") if isinstance(data.get("override"), str)

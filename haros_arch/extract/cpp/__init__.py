@@ -265,10 +265,13 @@ def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True
     built = _built_under(facts, unseen)
     called = call_conditions.shared(facts, unseen)
     known = links.NodeFacts(facts)  # read once for every unit's calls
+    given = links.node_rosnames([unit.rosname for unit in units], known, unseen)
+    # the one name the units agree on; else unknown (``links.node_rosnames``), or a
+    # process of several nodes named as before from its first file (``_name_nodes``)
+    result.rosname = (given[0] if all(n == given[0] for n in given) else "?") if (
+        given) else None
     for unit in units:
         result.diagnostics.extend(unit.diagnostics)
-        if unit.rosname is not None and result.rosname is None:
-            result.rosname = links.resolve_name(unit.rosname, known)
         calls, found = links.resolve(unit.calls, known, unseen)
         result.diagnostics.extend(found)
         for call in calls:
@@ -294,7 +297,7 @@ def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True
     result.calls = [c for c in result.calls if c.name_param is not None
                     or (c.kind, c.name, c.location) not in named]
     result.diagnostics = list(dict.fromkeys(result.diagnostics))
-    _name_nodes(result, sorted(paths_units, key=lambda pair: pair[0]), known, unseen)
+    _name_nodes(result, sorted(paths_units, key=lambda pair: pair[0]), known, unseen, given)
     result.calls = declared_defaults(result.calls)
     return result
 
@@ -331,7 +334,8 @@ def _built_under(facts: list[links.Fact], unseen: set[str]) -> dict[str, tuple[C
 
 
 def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
-                facts: links.NodeFacts, unseen: Collection[str] = frozenset({"*"})) -> None:
+                facts: links.NodeFacts, unseen: Collection[str] = frozenset({"*"}),
+                given: Sequence[str] = ()) -> None:
     """The executable's nodes when its files construct several with fully known names
     (in the order met, files by path), and each call's node (``_node_of``); None where
     no one node can be told (the graph gives those calls to the first node). The calls
@@ -352,9 +356,16 @@ def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
             if "?" not in name and name not in result.rosnames and (
                     reached is None or owner in reached):
                 result.rosnames.append(name)
-    if reached is not None and result.rosname is not None and result.rosnames and not any(
+    if reached is not None and result.rosname is not None and not any(
             owner in reached for owner, names in owners.items() if result.rosname in names):
-        result.rosname = result.rosnames[0]  # named by a class the process never makes
+        # named by a class the process never makes (a header's node class beside the
+        # helper the node builds: aerostack2's UsbCameraInterfaceNode): the name of one
+        # it makes, when one is known; not known when none is
+        if result.rosnames:  # the first file's, of the nodes it makes
+            result.rosname = next((n for n in given if n in result.rosnames),
+                                  result.rosnames[0])
+        elif any(result.rosname in names for names in owners.values()):
+            result.rosname = "?"
     if len(result.rosnames) < 2:
         result.rosnames = []
     under = _made_under(units, owners, result.rosnames)
@@ -682,7 +693,8 @@ def _translation_unit(path: str, text: str, ros2: bool,
         result.diagnostics.extend(_version_unknown(tu, source, owned, workspace, library,
                                                    setup.distro))
     result.diagnostics[:0] = setup.diagnostics[before:]
-    result.rosname = finder.rosname
+    result.rosname = finder.rosname if finder.rosname is not None or (
+        not finder.rosname_unbuilt) else links.UNBUILT_NAMES.join(finder.rosname_unbuilt)
     result.facts = finder.facts
     result.node_names = finder.node_names
     result.constructions = finder.constructions

@@ -59,6 +59,8 @@ class CallSites:
         # it overrides): a call of one of those may run it (``links.OVERRIDES``)
         self.overrides: dict[str, tuple[Cursor, list[str]]] = {}
         self._index: dict[tuple[str, int], list[tuple[Cursor, Cursor]]] | None = None
+        # the base constructor each argument list of ``base_initialisers`` calls
+        self._base_calls: dict[tuple[str, int], Cursor] = {}
         self._scopes: dict[tuple[str, int], Scope] = {}
         self._active: set[tuple[str, int]] = set()  # parameters being read (recursion)
         # members whose constructors disagree, met while a call is emitted (None: not
@@ -124,7 +126,7 @@ class CallSites:
             if key in done or (key in defined and key not in self.marked):
                 continue
             for call, caller in sites:
-                callee = callee_of(call)
+                callee = callee_of(call) or self._base_calls.get(key_of(call))
                 if callee is not None:
                     yield callee, call, caller
 
@@ -187,7 +189,7 @@ class CallSites:
 
     def callers(self, function: Cursor) -> list[tuple[Cursor, Cursor]]:
         """(call, calling function) for the calls of ``function`` in this file."""
-        return self._sites().get(key_of(function.canonical), [])
+        return self._sites().get(self._key(function), [])
 
     def field(self, field: Cursor, function: Cursor | None = None, initial: bool = False
               ) -> tuple[Cursor, Scope] | None:
@@ -286,14 +288,30 @@ class CallSites:
 
     def _function_key(self, parm: Cursor) -> tuple[str, int]:
         function = parm.semantic_parent
-        return key_of(function.canonical) if function is not None else ("", -1)
+        return self._key(function) if function is not None else ("", -1)
+
+    def _key(self, function: Cursor) -> tuple[str, int]:
+        """The key a function's calls are indexed by: its first declaration's place; for
+        a member of a class template defined outside the class, its definition's when
+        only that has calls (a call of a specialisation's member names the definition
+        it is instantiated from: aerostack2's ``BehaviorServer<actionT>::
+        BehaviorServer``, declared in the class, defined in an implementation header)."""
+        key = key_of(function.canonical)
+        parent = function.semantic_parent
+        if key not in self._sites() and function.is_definition() and parent is not None and (
+                parent.kind in (CursorKind.CLASS_TEMPLATE,
+                                CursorKind.CLASS_TEMPLATE_PARTIAL_SPECIALIZATION)):
+            own = key_of(function)
+            if own in self._sites():
+                return own
+        return key
 
     def _arguments(self, parm: Cursor) -> list[tuple[Cursor, Scope]]:
         function = parm.semantic_parent
         if function is None:
             return []
         index = _index_of(function, parm)
-        sites = self._sites().get(key_of(function.canonical), [])
+        sites = self._sites().get(self._key(function), [])
         if index is None or len(sites) > self.MAX_SITES:
             return []
         found = []
@@ -307,6 +325,7 @@ class CallSites:
     def _sites(self) -> dict[tuple[str, int], list[tuple[Cursor, Cursor]]]:
         if self._index is None:
             self._index = {}
+            bases: list[tuple[Cursor, Cursor, Cursor]] = []
             for function in self.functions:
                 for node in function.walk_preorder():
                     callee = callee_of(node) if node.kind == CursorKind.CALL_EXPR else None
@@ -324,6 +343,19 @@ class CallSites:
                     ):
                         self._index.setdefault(key_of(target.canonical), []).append(
                             (arguments, function))
+                    # and a class template's constructor its base's, with the argument
+                    # list clang keeps there instead of a call
+                    bases.extend((arguments, target, function)
+                                 for arguments, target in base_initialisers(function))
+            # (only where this file instantiates that constructor: one no call here
+            # makes passes nothing here, a base's ``Node(name)`` of a template beside
+            # the subclass that names the node)
+            for arguments, target, function in bases:
+                if key_of(function.canonical) in self._index or key_of(function) in (
+                        self._index):
+                    self._index.setdefault(key_of(target.canonical), []).append(
+                        (arguments, function))
+                    self._base_calls[key_of(arguments)] = target
         return self._index
 
 
@@ -437,6 +469,33 @@ def delegation(function: Cursor) -> Cursor | None:
                 return inner[0]  # the call, resolved (not one of an argument's class)
             return second if second.kind == CursorKind.UNEXPOSED_EXPR else None
     return None
+
+
+def base_initialisers(function: Cursor) -> list[tuple[Cursor, Cursor]]:
+    """(argument list, base constructor) for each base a class template's constructor
+    initialises where clang keeps no call, only the list of arguments (an unexposed
+    expression; aerostack2's ``BehaviorServer<actionT>(name, options) : as2::Node(name,
+    options)``): the one constructor of that base that C++ would call with them
+    (``closest``); none when no single one would."""
+    parent = function.semantic_parent
+    if parent is None or parent.kind not in (
+            CursorKind.CLASS_TEMPLATE, CursorKind.CLASS_TEMPLATE_PARTIAL_SPECIALIZATION):
+        return []
+    bases = {key_of(b.referenced) for b in parent.get_children()
+             if b.kind == CursorKind.CXX_BASE_SPECIFIER and b.referenced is not None}
+    found = []
+    for first, second in itertools.pairwise(function.get_children()):
+        base = first.referenced if first.kind == CursorKind.TYPE_REF else None
+        if base is None or second.kind != CursorKind.UNEXPOSED_EXPR or (
+                key_of(base) not in bases):
+            continue
+        base = base.get_definition() or base
+        args = list(second.get_children())
+        chosen = closest([c for c in base.get_children() if c.kind in _CONSTRUCTORS
+                          and is_constructor(c) and _takes(c, len(args))], args)
+        if len(chosen) == 1:
+            found.append((second, chosen[0]))
+    return found
 
 
 def delegated_to(function: Cursor, arguments: Cursor) -> Cursor | None:

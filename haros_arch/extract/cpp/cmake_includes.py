@@ -6,7 +6,8 @@ CMakeLists (zed_components: ``target_include_directories(zed_camera_component PU
 ${CMAKE_CURRENT_SOURCE_DIR}/src/zed_camera/include ...)``), and without them every class
 of the package is unknown to the parse. Read as text, like the macros
 (``build_macros``): ``include_directories`` and ``target_include_directories`` words that
-are a folder of the package, relative or under the source folder variables. Not a folder
+are a folder of the package, relative or under the source folder variables (and
+``${PROJECT_NAME}``, the package's name). Not a folder
 of a library the package builds with ``add_subdirectory`` (one with a CMakeLists.txt of
 its own that calls ``project()``, slam_toolbox's ``lib/karto_sdk/include``), whose
 headers the parse synthesises as those of a missing package (see
@@ -39,6 +40,12 @@ def cmake_include_dirs(root: str, workspace: Workspace) -> list[str]:
     sub-project the files do not own)."""
     root = os.path.abspath(root)
     found: list[str] = []
+    # ament_package() and catkin_package() insist that the project is named as the
+    # package: ``include/${PROJECT_NAME}`` (aerostack2's packages, whose sources include
+    # their headers by file name) is the package's own folder
+    package = workspace.package_of(root)
+    project = package.name if package is not None and package.root == root and (
+        package.build_type in ("ament_cmake", "catkin")) else None
     for path in cmake_files(root):
         text, _ = read_text(path, workspace.location(path))
         here = os.path.dirname(path)
@@ -47,7 +54,10 @@ def cmake_include_dirs(root: str, workspace: Workspace) -> list[str]:
             if match.group(1).lower() == "target_include_directories":
                 words = words[1:]  # the target
             for word in words:
-                named = _folder(word.strip("\"'"), here, root)
+                word = word.strip("\"'")
+                if project is not None:
+                    word = word.replace("${PROJECT_NAME}", project)
+                named = _folder(word, here, root)
                 if named is not None and named not in found and _owned(named, root):
                     found.append(named)
     return found

@@ -793,7 +793,7 @@ class IncludeSetup:
         if definition is None:
             definition = interfaces.Interface(package, name, [[]], known=False)
         self._write(header, ros2_interfaces.render(definition, kind))
-        for dep in ros2_interfaces.dependencies(definition):
+        for dep in ros2_interfaces.dependencies(definition, kind):
             if dep not in self._handled:
                 self._prepare(dep, "", False, where)
 

@@ -27,6 +27,7 @@ from clang.cindex import Cursor, CursorKind, conf
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
 from ...model.conditions import Condition
+from ...model.rosname import node_name_joined
 from ...model.source import PrimitiveCall
 from . import msg_types
 from .cache import conditions_text
@@ -347,6 +348,42 @@ def _parameter_filled(param: str, passed: dict[str, dict[str, dict[int, str]]]) 
     return _unmarked(_MARK.sub("?", param))
 
 
+# a translation unit's node names made in constructors no call in that unit makes:
+# ``<constructor USR>UNBUILT<name>``, several joined by UNBUILT_NAMES (``node_rosnames``)
+UNBUILT = "\x03"
+UNBUILT_NAMES = "\x04"
+
+
+def unbuilt_name(constructor: str, name: str) -> str:
+    return f"{constructor}{UNBUILT}{name}"
+
+
+def is_unbuilt_name(name: str) -> bool:
+    return UNBUILT in name
+
+
+def node_rosnames(names: Iterable[str | None], facts: NodeFacts,
+                  unseen: Collection[str] = ("*",)) -> list[str]:
+    """The names the node's units give it (in file order), as the constructions the node
+    makes give them (the node's name: the one they agree on, else ``?``; units that
+    tell apart may see only a node class the process never makes, a header's
+    ``UsbCameraInterfaceNode`` beside the behaviour another file builds). A name made
+    in a constructor (``unbuilt_name``) counts when a file of the node calls that
+    constructor; failing any such, when errors could hide the call (``_made``).
+    aerostack2's ``as2::Node`` has a ``(name, ns, options)`` and a ``(name, options)``
+    constructor, and a subclass calls only the second. None made so: the first name."""
+    candidates = [each.rpartition(UNBUILT) for written in names if written is not None
+                  for each in written.split(UNBUILT_NAMES)]
+    if not candidates:
+        return []
+    made = [resolve_name(name, facts) for usr, marked, name in candidates
+            if not marked or usr in facts.called]
+    if not made:
+        made = [resolve_name(name, facts) for usr, _, name in candidates
+                if _made(usr, facts.called, facts.constructed, unseen)]
+    return made or [resolve_name(candidates[0][2], facts)]
+
+
 def resolve_name(name: str, facts: Iterable[Fact] | NodeFacts) -> str:
     """A node name (``Node(name)`` in a constructor) with its placeholders filled: the
     one value the node's files pass, else ``?`` where they pass none or several."""
@@ -354,8 +391,9 @@ def resolve_name(name: str, facts: Iterable[Fact] | NodeFacts) -> str:
         return name
     found = _expand(name, (facts if isinstance(facts, NodeFacts) else NodeFacts(facts)
                            ).passed, 0)
-    return _unmarked(found[0]) if len(found) == 1 and PLACEHOLDER not in found[0] else (
-        _MARK.sub("?", name))
+    if len(found) == 1 and PLACEHOLDER not in found[0]:
+        return node_name_joined(_unmarked(found[0]))
+    return _MARK.sub("?", name)
 
 
 def qualified_class(usr: str) -> str:

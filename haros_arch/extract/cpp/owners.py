@@ -55,7 +55,12 @@ def constructed_bases(call: Cursor, owned: Callable[[str], bool]) -> list[tuple[
     while stack:
         cls, depth = stack.pop()
         definition = cls.get_definition() or cls
-        for child in definition.get_children():
+        # a class template's specialisation (``class Zones : public Server<int>``): the
+        # bases its template declares (clang lists none on the implicit specialisation)
+        template = conf.lib.clang_getSpecializedCursorTemplate(definition)
+        children = [*definition.get_children(), *(
+            template.get_children() if template is not None else ())]
+        for child in children:
             base = child.referenced if child.kind == CursorKind.CXX_BASE_SPECIFIER else None
             if base is None:
                 continue

@@ -40,9 +40,17 @@ def header(package: str, kind: str, name: str) -> str:
     return f"{package}/{kind}/{snake_case(name)}.hpp"
 
 
-def dependencies(interface: Interface) -> list[str]:
-    """Headers of the message types the fields use."""
-    found: list[str] = []
+# what an action's ``Impl`` names besides its own parts (rosidl_generator_cpp's
+# ``action_msgs::msg::GoalStatusArray`` and ``action_msgs::srv::CancelGoal``) and the
+# fields of its SendGoal / GetResult / FeedbackMessage parts
+ACTION_HEADERS = ("unique_identifier_msgs/msg/uuid.hpp", "builtin_interfaces/msg/time.hpp",
+                  "action_msgs/msg/goal_status_array.hpp", "action_msgs/srv/cancel_goal.hpp")
+
+
+def dependencies(interface: Interface, kind: str = "msg") -> list[str]:
+    """Headers of the message types the fields use (and, for an action, those its
+    ``Impl`` types use)."""
+    found: list[str] = list(ACTION_HEADERS) if kind == "action" else []
     for section in interface.sections:
         for fld in section:
             full = _full(fld.type, interface.package)
@@ -70,7 +78,7 @@ def render(interface: Interface, kind: str) -> str:
     lines = [f"// synthesised by haros_arch for {pkg}/{kind}/{name}", f"#ifndef {guard}",
              f"#define {guard}", "#include <cstdint>", "#include <string>", "#include <vector>",
              "#include <array>", "#include <memory>"]
-    lines += [f"#include <{dep}>" for dep in dependencies(interface)
+    lines += [f"#include <{dep}>" for dep in dependencies(interface, kind)
               if dep != header(pkg, kind, name)]
     lines.append(f"namespace {pkg} {{ namespace {kind} {{")
     sections = interface.sections or [[]]
@@ -85,14 +93,48 @@ def render(interface: Interface, kind: str) -> str:
         sections = [*sections, [], [], []][:len(parts)]
         for part, fields in zip(parts, sections, strict=True):
             lines += _struct(f"{name}_{part}", fields, pkg, kind, interface.known)
+        if kind == "action":
+            lines += _action_impl_parts(name)
         lines.append(f"struct {name} {{")
         lines += [f"  using {part} = {name}_{part};" for part in parts]
         if kind == "action":
-            lines += ["  struct Impl { struct SendGoalService { struct Request {}; "
-                      "struct Response {}; }; }; };"]
+            # rosidl's ``Impl``: the services and topics an action is made of, as
+            # templated code names them (``typename ActionT::Impl::SendGoalService``)
+            lines += ["  struct Impl {",
+                      f"    using SendGoalService = {name}_SendGoal;",
+                      f"    using GetResultService = {name}_GetResult;",
+                      f"    using FeedbackMessage = {name}_FeedbackMessage;",
+                      "    using GoalStatusMessage = action_msgs::msg::GoalStatusArray;",
+                      "    using CancelGoalService = action_msgs::srv::CancelGoal;", "  };"]
         lines.append("};")
     lines += [f"}} }}  // namespace {pkg}::{kind}", "#endif", ""]
     return "\n".join(lines)
+
+
+def _action_impl_parts(name: str) -> list[str]:
+    """``Name_SendGoal``, ``Name_GetResult`` (services of a Request and a Response) and
+    ``Name_FeedbackMessage``, with the fields rosidl gives them."""
+    lines: list[str] = []
+    uuid = "unique_identifier_msgs::msg::UUID"
+    for struct, fields in (
+            (f"{name}_SendGoal_Request", [(uuid, "goal_id"), (f"{name}_Goal", "goal")]),
+            (f"{name}_SendGoal_Response", [("bool", "accepted"),
+                                           ("builtin_interfaces::msg::Time", "stamp")]),
+            (f"{name}_GetResult_Request", [(uuid, "goal_id")]),
+            (f"{name}_GetResult_Response", [("int8_t", "status"),
+                                            (f"{name}_Result", "result")]),
+            (f"{name}_FeedbackMessage", [(uuid, "goal_id"),
+                                         (f"{name}_Feedback", "feedback")])):
+        lines += [f"struct {struct} {{", f"  {struct}();"]
+        lines += [f"  {cpp} {field};" for cpp, field in fields]
+        lines += [f"  using SharedPtr = std::shared_ptr<{struct}>;",
+                  f"  using ConstSharedPtr = std::shared_ptr<const {struct}>;",
+                  f"  using UniquePtr = std::unique_ptr<{struct}>;", "};"]
+    for service in ("SendGoal", "GetResult"):
+        lines += [f"struct {name}_{service} {{",
+                  f"  using Request = {name}_{service}_Request;",
+                  f"  using Response = {name}_{service}_Response;", "};"]
+    return lines
 
 
 def _struct(name: str, fields: list[Field], package: str, kind: str = "msg",
@@ -118,6 +160,10 @@ def _struct(name: str, fields: list[Field], package: str, kind: str = "msg",
             # the generated setter of each field (``header.set__frame_id("map")``)
             lines += [f"  {cpp} {fld.name};", f"  using _{fld.name}_type = {cpp};",
                       f"  {name}& set__{fld.name}(const {cpp}& _arg);"]
+    if known and not any(fld.constant is None for fld in fields):
+        # rosidl_generator_cpp gives a message without fields one placeholder member,
+        # which code may set (``request->structure_needs_at_least_one_member = 0``)
+        lines.append("  uint8_t structure_needs_at_least_one_member;")
     lines += [f"  bool operator==(const {name}& other) const;",
               f"  bool operator!=(const {name}& other) const;",
               f"  using SharedPtr = std::shared_ptr<{name}>;",

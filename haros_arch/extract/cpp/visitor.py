@@ -25,7 +25,7 @@ from ...diagnostics import Diagnostic
 from ...model.conditions import EACH_STATEMENT, Condition
 from ...model.location import Location
 from ...model.source import PrimitiveCall
-from . import api, call_conditions, msg_types, parameter_library, reconfigure, synthesis
+from . import api, call_conditions, links, msg_types, parameter_library, reconfigure, synthesis
 from .call_sites import CallSites
 from .call_types import CallTypes, factory_made, row_class
 from .call_types import callee as callee_of_call
@@ -173,6 +173,8 @@ class CallFinder:
         self.sites: CallSites | None = None
         self._scope: Scope | None = None  # of the function being walked
         self.rosname: str | None = None
+        # node names made in constructors no call in this unit makes (``_node_name``)
+        self.rosname_unbuilt: list[str] = []
         # every rclcpp node the file constructs: (owner, name), in the order met; the
         # owner (``owner_of``) is the class whose constructor names it (``: Node("x")``)
         # or the free function that makes it (``make_shared<rclcpp::Node>("x")`` in main)
@@ -873,7 +875,14 @@ class CallFinder:
                 name = f"/{namespace}/{name}"
         if owner is not None and (owner, name) not in self.node_names:
             self.node_names.append((owner, name))
-        if self.rosname is None:
+        made_in = self._made_in(name, None)
+        if made_in is not None:
+            # named by the parameters of a constructor no call in this unit makes (a
+            # base class's ``Node(name, ns, options)`` beside the ``Node(name, options)``
+            # its subclass calls): the node's name only where a file of the node calls
+            # that constructor (``links.node_rosnames``)
+            self.rosname_unbuilt.append(links.unbuilt_name(made_in, name))
+        elif self.rosname is None or links.is_unbuilt_name(self.rosname):
             self.rosname = name
 
     def _emit(self, spec: api.RosFunction, call: Cursor, args: list[Cursor],

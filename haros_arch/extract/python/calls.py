@@ -9,7 +9,7 @@ import ast
 
 from ...model.values import Unknown
 from .modules import FunctionInfo
-from .objects import BoundMethod, Frame
+from .objects import BoundMethod, Frame, Instance
 from .scopes import Scopes
 
 MAX_CALL_DEPTH = 4
@@ -24,9 +24,14 @@ class Calls(Scopes):
         values = [self.eval(a, frame) for a in expr.args if not isinstance(a, ast.Starred)]
         starred = any(isinstance(a, ast.Starred) for a in expr.args)
         keywords = {k.arg: self.eval(k.value, frame) for k in expr.keywords if k.arg}
-        return Frame(info.module, self.bind_arguments(info, values, keywords, starred,
-                                                      skip_self=instance is not None),
-                     instance, frame.depth + 1, owner=info.cls)
+        bound = self.bind_arguments(info, values, keywords, starred,
+                                    skip_self=instance is not None)
+        if instance is None and info.cls is not None and values and isinstance(
+                values[0], Instance) and not starred:
+            # ``Base.method(self, ...)`` through the class (stretch's HelloNode.main(self,
+            # 'funmap', 'funmap')): a method of the instance passed first
+            instance = values[0]
+        return Frame(info.module, bound, instance, frame.depth + 1, owner=info.cls)
 
     def bind_arguments(self, info: FunctionInfo, values: list[object],
                        keywords: dict[str, object], starred: bool,

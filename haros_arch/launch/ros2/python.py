@@ -35,7 +35,7 @@ from ...model.values import Unknown
 from ...share import share_source
 from ...workspace import Workspace
 from . import entities as e
-from .python_expressions import Expressions, _Bound, math_constant
+from .python_expressions import Expressions, _Bound, math_constant, os_value
 from .python_values import (
     LIMITS,
     MAX_CALL_DEPTH,
@@ -199,6 +199,8 @@ class Interpreter(Expressions):
                 env.update((n, found.names[n]) for n in public if n in found.names)
             elif found is None and module == "math" and math_constant(alias.name):
                 env[alias.asname or alias.name] = ops.MATH[alias.name]  # from math import pi
+            elif found is None and os_value(module, alias.name) is not None:
+                env[alias.asname or alias.name] = os_value(module, alias.name)
             elif found is None:
                 env[alias.asname or alias.name] = Ref(f"{module}.{alias.name}")
             elif alias.name in found.names:

@@ -145,6 +145,16 @@ def package_directory(share: bool) -> Builder:
     return build
 
 
+def package_share_path(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``get_package_share_path(name)``: ``get_package_share_directory`` as a
+    ``pathlib.Path`` (a pure path, grown with ``/``); a package not in the workspace is
+    its share folder found at launch time, a path join of one part."""
+    found = package_directory(True)(i, a, k, n)
+    if isinstance(found, str):
+        return PurePosixPath(found)
+    return e.PathJoin((to_text(found),))
+
+
 def path_join(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     parts = arg(a, k, 0, "substitutions", default=[])
     if not isinstance(parts, (list, tuple)):
@@ -415,6 +425,21 @@ class _Source:
         self.path = path
 
 
+def include_in_package(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """launch_pal's ``include_launch_py_description(pkg, [folder, ..., file], **kw)``
+    (PAL's robots): the include of the Python launch file at that path of the package's
+    share folder (``FindPackageShare`` and ``PathJoinSubstitution``), the other keywords
+    the include's (``launch_arguments``, ``condition``)."""
+    package, parts = arg(a, k, 0, "pkg_name"), arg(a, k, 1, "paths")
+    if not isinstance(parts, (list, tuple)):
+        return i.unsupported(n, "include_launch_py_description of a path not known "
+                                "statically")
+    path = e.PathJoin((to_text(e.FindPackage(to_text(package), True)),
+                       *(to_text(part) for part in parts)))
+    rest = {key: value for key, value in k.items() if key not in ("pkg_name", "paths")}
+    return include(i, [_Source(to_text(path))], rest, n)
+
+
 def description_source(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     return _Source(to_text(arg(a, k, 0, "launch_file_path")))
 
@@ -617,10 +642,12 @@ API: dict[str, Builder] = {
     "FindPackageShare": find_package(True), "FindPackagePrefix": find_package(False),
     "FindPackage": find_package(True),
     "get_package_share_directory": package_directory(True),
+    "get_package_share_path": package_share_path,
     "get_package_prefix": package_directory(False),
     "join": os_path_join, "dirname": os_path(os.path.dirname),
     "basename": os_path(os.path.basename), "abspath": os_path(os.path.normpath),
     "realpath": os_path(os.path.normpath), "split": os_path(os.path.split),
+    "splitext": os_path(os.path.splitext),
     "getenv": getenv,
     "PathJoinSubstitution": path_join, "PathSubstitution": path_substitution,
     "Path": pure_path, "PurePath": pure_path, "PurePosixPath": pure_path,
@@ -647,7 +674,7 @@ API: dict[str, Builder] = {
     "Node": node(False), "LifecycleNode": node(False),
     "ComposableNodeContainer": node(True), "ComposableNode": composable_node,
     "LoadComposableNodes": load_composable,
-    "IncludeLaunchDescription": include,
+    "IncludeLaunchDescription": include, "include_launch_py_description": include_in_package,
     "PythonLaunchDescriptionSource": description_source,
     "XMLLaunchDescriptionSource": description_source,
     "YAMLLaunchDescriptionSource": description_source,

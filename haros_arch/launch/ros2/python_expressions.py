@@ -248,6 +248,8 @@ class Expressions(Walker):
         if isinstance(owner, Ref):
             if owner.qualified == "os" and node.attr == "environ":
                 return _Environ()
+            if f"{owner.qualified}.{node.attr}" in OS_VALUES:  # os.pathsep
+                return OS_VALUES[f"{owner.qualified}.{node.attr}"]
             if owner.qualified == "math" and math_constant(node.attr):
                 return ops.MATH[node.attr]  # math.pi
             return Ref(f"{owner.qualified}.{node.attr}")
@@ -376,6 +378,21 @@ class Expressions(Walker):
     def keep(self, gen: ast.comprehension, env: Any) -> bool:
         """Unused: ``comprehension`` keeps an item whose filter is not known."""
         return all(self.truth(self.eval(cond, env)) is not False for cond in gen.ifs)
+
+
+# the ``os`` constants of the Linux a ROS launch runs on (tiago_simulation's
+# tiago_gazebo.launch.py joins model paths with ``pathsep``)
+OS_VALUES = {"os.sep": "/", "os.path.sep": "/", "os.pathsep": ":", "os.path.pathsep": ":",
+             "os.linesep": "\n", "os.curdir": ".", "os.path.curdir": ".", "os.pardir": "..",
+             "os.path.pardir": "..", "os.extsep": ".", "os.path.extsep": "."}
+
+
+def os_value(module: str, name: str) -> Any:
+    """What ``from os import name`` (or ``os.path``) binds, when we know it: a constant,
+    or ``environ`` (the configuration's environment); None otherwise."""
+    if module == "os" and name == "environ":
+        return _Environ()
+    return OS_VALUES.get(f"{module}.{name}")
 
 
 def math_constant(name: str) -> bool:
