@@ -170,8 +170,10 @@ def parse_package(package: Package, workspace: Workspace) -> tuple[list[Node], l
             library = plugins.Library(
                 sources.linked(target), target.conditions, sources.own(target),
                 functools.partial(sources.reached, target),
-                with_elsewhere=functools.partial(_elsewhere, target=target, sources=sources,
-                                                 files=files))
+                # a nodelet's files with what they name of other workspace packages'
+                # libraries that its library links
+                with_elsewhere=functools.partial(with_elsewhere, target=target,
+                                                 sources=sources, workspace=files))
             libraries.setdefault(target.name, library)
             libraries.setdefault(target.output_name or target.name, library)
     described = [Plugin(base, files.relpath(path))
@@ -186,13 +188,6 @@ def parse_package(package: Package, workspace: Workspace) -> tuple[list[Node], l
         nodes.extend(entry_points)
         found.extend(problems)
     return _unique(nodes), found
-
-
-def _elsewhere(kept: list[str], *, target: Target, sources: SourceMap,
-               files: PackageFiles) -> list[str]:
-    """A nodelet's files ``kept`` and what they name of other workspace packages'
-    libraries that its library ``target`` links."""
-    return with_elsewhere(kept, target, sources, files)
 
 
 def _unique(nodes: list[Node]) -> list[Node]:
