@@ -638,6 +638,11 @@ CATALOGUE: dict[str, Entry] = {
                    "its interface is unknown",
         "The package's model does not list the executable the launch file starts: a "
         "different distribution or version, or a node the generator did not find."),
+    "RVIZ_CONFIG_INVALID": Entry(
+        "warning", "rviz display configuration {path} not read: {detail}",
+        "rviz is started with this configuration (-d), whose displays and tools say what "
+        "it subscribes to and publishes; it could not be read as YAML, so rviz keeps the "
+        "interface its model gives."),
     "MODEL_INVALID": Entry(
         "warning", "interface model not used: {detail}",
         "A model file (listed under 'models:' in the project file, or shipped) could not "

@@ -31,6 +31,7 @@ from ..model.runtime import (
 )
 from ..model.source import NUMBERED, Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK, Unknown
+from ..models import rviz
 from ..plugins.attach import PluginModels, class_packages
 from ..plugins.attach import attach as attach_plugins
 from ..plugins.transports import Transports
@@ -435,6 +436,8 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
     # rostopic pub, a ROS 2 spawner: its arguments say (a spawner's first: its code or
     # interface model builds its names from sys.argv)
     node = code_node(decl, nodes, key)
+    # rviz: the displays and tools of the configuration it is started with
+    node = rviz.with_displays(decl, node, workspace, config.diagnostics) or node
     if node is None and plugin is None and is_container(decl):
         # a nodelet manager or component container: what it loads are node instances of
         # their own; the process's own interface is its loader's services, known

@@ -1,0 +1,288 @@
+"""What rviz subscribes to and publishes, read from the display configuration it is
+started with (``rviz -d FILE``, ``rviz2 -d FILE``, ``--display-config FILE``).
+
+rviz's own code knows no topic: each display of the configuration subscribes to the
+topic its ``Topic`` property names (ROS 2: its ``Value``, with the display's QoS), each
+tool publishes on its ``Topic``, and the frame manager listens to ``/tf`` and
+``/tf_static``. A launched rviz whose configuration file is in the workspace takes these
+calls beside its interface model's; the file is read as YAML, never run. A display or
+tool is read only when it is enabled (a disabled group's displays are not). A display
+class, tool or panel this table does not know may subscribe or publish anything: the
+node is then partial, said with the class and the file.
+
+Facts from rviz's sources (ros-visualization/rviz noetic-devel ``src/rviz/default_plugin``
+and rviz2 ``rviz_default_plugins``): each display's message type; the Map display also
+subscribes ``<topic>_updates`` (map_msgs' OccupancyGridUpdate; ROS 2: its ``Update
+Topic``); the Camera display also ``camera_info`` beside its image; the interactive
+markers display subscribes ``<ns>/update`` and ``<ns>/update_full`` (ROS 1) and
+publishes ``<ns>/feedback`` (ROS 2: subscribes ``<ns>/update``, publishes
+``<ns>/feedback``, calls ``<ns>/get_interactive_markers``); the initial pose tool
+publishes ``initialpose``, the goal tool ROS 1 ``/move_base_simple/goal`` and ROS 2
+``goal_pose``, the point tool ``clicked_point``; ROS 2's robot model display subscribes
+to its ``Description Topic`` when its ``Description Source`` is a topic; ROS 1's reads
+the parameter its ``Robot Description`` names.
+"""
+
+from __future__ import annotations
+
+import os
+import shlex
+from dataclasses import replace
+from typing import Any
+
+import yaml
+
+from .. import diagnostics as diag
+from .. import safe_yaml
+from ..diagnostics import Diagnostic
+from ..launch.model import NodeDecl
+from ..model.source import Node, PrimitiveCall
+from ..workspace import Workspace
+
+RVIZ = {("rviz", "rviz"), ("rviz2", "rviz2")}
+MAX_BYTES = 2_000_000  # a configuration larger than this is not read
+# the last part of a display class (``rviz/LaserScan``, ``rviz_default_plugins/Map``) ->
+# (package, message) of what it subscribes to; None for a display of no topic
+_DISPLAYS: dict[str, tuple[str, str] | None] = {
+    "Grid": None, "Axes": None, "Group": None, "TF": None, "RobotModel": None,
+    "InteractiveMarkers": None, "Map": ("nav_msgs", "OccupancyGrid"),
+    "LaserScan": ("sensor_msgs", "LaserScan"), "PointCloud": ("sensor_msgs", "PointCloud"),
+    "PointCloud2": ("sensor_msgs", "PointCloud2"), "Image": ("sensor_msgs", "Image"),
+    "Camera": ("sensor_msgs", "Image"), "Path": ("nav_msgs", "Path"),
+    "Odometry": ("nav_msgs", "Odometry"), "Pose": ("geometry_msgs", "PoseStamped"),
+    "PoseArray": ("geometry_msgs", "PoseArray"),
+    "PoseWithCovariance": ("geometry_msgs", "PoseWithCovarianceStamped"),
+    "Marker": ("visualization_msgs", "Marker"),
+    "MarkerArray": ("visualization_msgs", "MarkerArray"),
+    "Polygon": ("geometry_msgs", "PolygonStamped"), "Range": ("sensor_msgs", "Range"),
+    "Temperature": ("sensor_msgs", "Temperature"),
+    "Illuminance": ("sensor_msgs", "Illuminance"),
+    "RelativeHumidity": ("sensor_msgs", "RelativeHumidity"),
+    "FluidPressure": ("sensor_msgs", "FluidPressure"),
+    "WrenchStamped": ("geometry_msgs", "WrenchStamped"),
+    "Wrench": ("geometry_msgs", "WrenchStamped"), "Point": ("geometry_msgs", "PointStamped"),
+    "GridCells": ("nav_msgs", "GridCells"), "Effort": ("sensor_msgs", "JointState"),
+    "Imu": ("sensor_msgs", "Imu"),
+}
+# a tool -> (ROS 1 topic, ROS 2 topic, package, message) it publishes by default; None:
+# a tool that publishes nothing
+_TOOLS: dict[str, tuple[str, str, str, str] | None] = {
+    "MoveCamera": None, "Interact": None, "Select": None, "FocusCamera": None,
+    "Measure": None,
+    "SetInitialPose": ("initialpose", "initialpose", "geometry_msgs",
+                       "PoseWithCovarianceStamped"),
+    "SetGoal": ("/move_base_simple/goal", "goal_pose", "geometry_msgs", "PoseStamped"),
+    "PublishPoint": ("clicked_point", "clicked_point", "geometry_msgs", "PointStamped"),
+}
+# panels of rviz itself, which make no ROS call
+_PANELS = {"Displays", "Selection", "Tool Properties", "Views", "Time"}
+_DURABILITY = {"Volatile": "volatile", "Transient Local": "transient_local"}
+_RELIABILITY = {"Reliable": "reliable", "Best Effort": "best_effort"}
+_HISTORY = {"Keep Last": "keep_last", "Keep All": "keep_all"}
+
+
+def config_file(decl: NodeDecl) -> str | None:
+    """The display configuration an rviz declaration is started with, when it is a
+    file that exists; None otherwise (no ``-d``, or a path not known statically)."""
+    if (decl.package, decl.executable) not in RVIZ:
+        return None
+    try:
+        words = shlex.split(decl.args)
+    except ValueError:
+        words = decl.args.split()
+    for i, word in enumerate(words):
+        path = None
+        if word in ("-d", "--display-config") and i + 1 < len(words):
+            path = words[i + 1]
+        elif word.startswith("--display-config="):
+            path = word.partition("=")[2]
+        if path and os.path.isabs(path) and os.path.isfile(path):
+            return path
+    return None
+
+
+def with_displays(decl: NodeDecl, base: Node | None, workspace: Workspace,
+                  found: list[Diagnostic]) -> Node | None:
+    """``base`` (rviz's code or interface model) with the calls of the displays and
+    tools of the configuration ``decl`` starts rviz with; None when it starts it with
+    none that can be read (``base`` stands). What cannot be read is said in ``found``."""
+    path = config_file(decl)
+    if path is None:
+        return None
+    where = workspace.location(path)
+    try:
+        if os.path.getsize(path) > MAX_BYTES:
+            found.append(diag.make("RVIZ_CONFIG_INVALID", where, path=path,
+                                   detail=f"larger than {MAX_BYTES} bytes, not read"))
+            return None
+        with open(path, encoding="utf-8", errors="replace") as handle:
+            data = safe_yaml.load(handle.read())
+    except (OSError, yaml.YAMLError) as error:
+        mark = getattr(error, "problem_mark", None)
+        if mark is not None:
+            where = workspace.location(path, mark.line + 1, mark.column + 1)
+        found.append(diag.make("RVIZ_CONFIG_INVALID", where, path=path,
+                               detail=str(error).splitlines()[0]))
+        return None
+    manager = data.get("Visualization Manager") if isinstance(data, dict) else None
+    if not isinstance(manager, dict):
+        found.append(diag.make("RVIZ_CONFIG_INVALID", where, path=path,
+                               detail="no 'Visualization Manager' mapping"))
+        return None
+    ros2 = decl.ros_version == 2
+    calls: list[PrimitiveCall] = [
+        PrimitiveCall("subscribe", name, _type("tf2_msgs", "TFMessage", ros2),
+                      location=where, origin="config") for name in ("/tf", "/tf_static")]
+    unknown: list[str] = []
+    _displays(manager.get("Displays"), ros2, where, calls, unknown)
+    for tool in manager.get("Tools") or ():
+        if isinstance(tool, dict):
+            _tool(tool, ros2, where, calls, unknown)
+    panels = data.get("Panels") if isinstance(data, dict) else None
+    for panel in panels or ():
+        cls = panel.get("Class") if isinstance(panel, dict) else None
+        if isinstance(cls, str) and cls.rpartition("/")[2] not in _PANELS:
+            unknown.append(f"panel {cls}")
+    own = {(c.kind, c.name) for c in calls}
+    kept = [c for c in (base.calls if base is not None else ())
+            if (c.kind, c.name) not in own]
+    reasons = [f"{what} of {os.path.basename(path)} is not known: it may subscribe or "
+               "publish anything" for what in dict.fromkeys(unknown)]
+    node = replace(base, calls=[*kept, *calls]) if base is not None else Node(
+        decl.package, decl.executable, "executable", "cpp", calls=calls,
+        location=decl.location)
+    node.completeness = "partial" if reasons else "model"
+    node.completeness_reasons = reasons[:5]
+    node.plugin_loads = []  # the displays and tools it loads are these
+    node.model = (base.model if base is not None and base.model else "rviz") + (
+        f" with the displays of {path}")
+    return node
+
+
+def _type(package: str, name: str, ros2: bool) -> str:
+    return f"{package}/msg/{name}" if ros2 else f"{package}/{name}"
+
+
+def _topic(value: Any) -> tuple[str | None, dict[str, Any] | None]:
+    """A property's topic and, in ROS 2, its QoS."""
+    if isinstance(value, str):
+        return value or None, None
+    if not isinstance(value, dict) or not isinstance(value.get("Value"), str):
+        return None, None
+    qos: dict[str, Any] = {}
+    if isinstance(value.get("Depth"), int):
+        qos["depth"] = value["Depth"]
+    for key, table, field in (("Durability Policy", _DURABILITY, "durability"),
+                              ("Reliability Policy", _RELIABILITY, "reliability"),
+                              ("History Policy", _HISTORY, "history")):
+        if value.get(key) in table:
+            qos[field] = table[value[key]]
+    return value["Value"] or None, (qos or None)
+
+
+def _displays(displays: Any, ros2: bool, where: Any, calls: list[PrimitiveCall],
+              unknown: list[str]) -> None:
+    for display in displays or ():
+        if not isinstance(display, dict) or display.get("Enabled") is False:
+            continue
+        cls = display.get("Class")
+        if not isinstance(cls, str):
+            continue
+        kind = cls.rpartition("/")[2]
+        if kind == "Group":
+            _displays(display.get("Displays"), ros2, where, calls, unknown)
+            continue
+        if kind not in _DISPLAYS:
+            unknown.append(f"display {cls}")
+            continue
+        message = _DISPLAYS[kind]
+        if kind == "InteractiveMarkers":
+            _markers(display, ros2, where, calls)
+        elif kind == "RobotModel":
+            _robot_model(display, ros2, where, calls)
+        if message is None:
+            continue
+        key = "Marker Topic" if kind in ("Marker", "MarkerArray") and not ros2 else "Topic"
+        if kind == "Camera" and not ros2:
+            key = "Image Topic"
+        name, qos = _topic(display.get(key) if key in display else display.get("Topic"))
+        if name is None:
+            continue
+        calls.append(PrimitiveCall("subscribe", name, _type(*message, ros2), qos=qos,
+                                   location=where, origin="config"))
+        if kind == "Map":
+            update, update_qos = _topic(display.get("Update Topic")) if ros2 else (
+                name + "_updates", None)
+            if update:
+                calls.append(PrimitiveCall(
+                    "subscribe", update, _type("map_msgs", "OccupancyGridUpdate", ros2),
+                    qos=update_qos, location=where, origin="config"))
+        elif kind == "Camera":
+            info = name.rpartition("/")[0] + "/camera_info" if "/" in name else "camera_info"
+            calls.append(PrimitiveCall("subscribe", info, _type("sensor_msgs", "CameraInfo",
+                                                                ros2),
+                                       location=where, origin="config"))
+
+
+def _markers(display: dict[str, Any], ros2: bool, where: Any,
+             calls: list[PrimitiveCall]) -> None:
+    if ros2:
+        space = display.get("Interactive Markers Namespace")
+        space, _ = _topic(space)
+        if not space:
+            return
+        calls.append(PrimitiveCall("subscribe", space + "/update", _type(
+            "visualization_msgs", "InteractiveMarkerUpdate", True), location=where,
+            origin="config"))
+        calls.append(PrimitiveCall("publish", space + "/feedback", _type(
+            "visualization_msgs", "InteractiveMarkerFeedback", True), location=where,
+            origin="config"))
+        calls.append(PrimitiveCall("client", space + "/get_interactive_markers",
+                                   "visualization_msgs/srv/GetInteractiveMarkers",
+                                   location=where, origin="config"))
+        return
+    update, _ = _topic(display.get("Update Topic"))
+    if not update or not update.endswith("/update"):
+        return
+    space = update[:-len("/update")]
+    for name, message in ((update, "InteractiveMarkerUpdate"),
+                          (space + "/update_full", "InteractiveMarkerInit")):
+        calls.append(PrimitiveCall("subscribe", name, _type("visualization_msgs", message,
+                                                           False),
+                                   location=where, origin="config"))
+    calls.append(PrimitiveCall("publish", space + "/feedback", _type(
+        "visualization_msgs", "InteractiveMarkerFeedback", False), location=where,
+        origin="config"))
+
+
+def _robot_model(display: dict[str, Any], ros2: bool, where: Any,
+                 calls: list[PrimitiveCall]) -> None:
+    if ros2:
+        if display.get("Description Source", "Topic") != "Topic":
+            return
+        name, qos = _topic(display.get("Description Topic"))
+        if name:
+            calls.append(PrimitiveCall("subscribe", name, _type("std_msgs", "String", True),
+                                       qos=qos, location=where, origin="config"))
+        return
+    param = display.get("Robot Description", "robot_description")
+    if isinstance(param, str) and param:
+        calls.append(PrimitiveCall("read", param, "str", location=where, origin="config"))
+
+
+def _tool(tool: dict[str, Any], ros2: bool, where: Any, calls: list[PrimitiveCall],
+          unknown: list[str]) -> None:
+    cls = tool.get("Class")
+    if not isinstance(cls, str):
+        return
+    kind = cls.rpartition("/")[2]
+    if kind not in _TOOLS:
+        unknown.append(f"tool {cls}")
+        return
+    default = _TOOLS[kind]
+    if default is None:
+        return
+    name, qos = _topic(tool.get("Topic"))
+    calls.append(PrimitiveCall("publish", name or default[1 if ros2 else 0],
+                               _type(default[2], default[3], ros2), qos=qos,
+                               location=where, origin="config"))

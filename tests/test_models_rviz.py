@@ -1,0 +1,140 @@
+"""rviz started with a display configuration (``-d FILE``): its enabled displays
+subscribe, its tools publish, read from the file (never run). husky_viz's robot.rviz and
+navigation2's nav2_default_view.rviz are the shapes."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from haros_arch.graph import build
+from haros_arch.launch.model import LaunchModel, NodeDecl
+from haros_arch.model import Configuration, Node, PrimitiveCall
+from haros_arch.workspace import Workspace
+
+ROS1 = """\
+Panels:
+  - Class: rviz/Displays
+Visualization Manager:
+  Displays:
+    - Class: rviz/Grid
+      Enabled: true
+    - Class: rviz/RobotModel
+      Enabled: true
+      Robot Description: robot_description
+    - Class: rviz/Group
+      Enabled: true
+      Displays:
+        - Class: rviz/LaserScan
+          Enabled: true
+          Topic: /front/scan
+        - Class: rviz/Map
+          Enabled: true
+          Topic: /map
+    - Class: rviz/Group
+      Enabled: false
+      Displays:
+        - Class: rviz/Path
+          Enabled: true
+          Topic: /move_base/NavfnROS/plan
+    - Class: rviz/InteractiveMarkers
+      Enabled: true
+      Update Topic: /twist_marker_server/update
+  Tools:
+    - Class: rviz/Interact
+    - Class: rviz/SetGoal
+      Topic: /move_base_simple/goal
+"""
+
+ROS2 = """\
+Visualization Manager:
+  Displays:
+    - Class: rviz_default_plugins/Map
+      Enabled: true
+      Topic:
+        Value: map
+        Depth: 1
+        Durability Policy: Transient Local
+        Reliability Policy: Reliable
+      Update Topic:
+        Value: map_updates
+    - Class: nav2_rviz_plugins/ParticleCloud
+      Enabled: true
+      Topic:
+        Value: particle_cloud
+  Tools:
+    - Class: rviz_default_plugins/SetInitialPose
+      Topic:
+        Value: initialpose
+"""
+
+
+def _graph(tmp_path: Path, text: str, ros_version: int, publishers=()):
+    config_file = tmp_path / "view.rviz"
+    config_file.write_text(text)
+    rviz = ("rviz", "rviz") if ros_version == 1 else ("rviz2", "rviz2")
+    decl = NodeDecl("/rviz", *rviz, args=f"-d {config_file}")
+    decl.ros_version = ros_version
+    model = Node(*rviz, calls=[PrimitiveCall("subscribe", "/tf", "tf2_msgs/TFMessage")],
+                 completeness="partial", completeness_reasons=["display code"])
+    model.model = "rviz model"
+    decls = [decl]
+    nodes = {model.name: model}
+    for topic, message in publishers:
+        pub = NodeDecl("/driver", "drv", "driver")
+        pub.ros_version = ros_version
+        decls.append(pub)
+        nodes["drv/driver"] = Node("drv", "driver",
+                                   calls=[PrimitiveCall("publish", topic, message)])
+    launch = LaunchModel(nodes=decls)
+    return build(Configuration("c"), launch, Workspace(root=str(tmp_path)), nodes)
+
+
+def test_ros1_enabled_displays_subscribe_and_tools_publish(tmp_path: Path) -> None:
+    config = _graph(tmp_path, ROS1, 1, [("/front/scan", "sensor_msgs/LaserScan")])
+    rviz = next(n for n in config.nodes if n.name == "/rviz")
+    links = sorted((link.kind, link.resource.name, link.type) for link in rviz.links)
+    assert links == sorted([
+        ("subscribe", "/tf", "tf2_msgs/TFMessage"),
+        ("subscribe", "/tf_static", "tf2_msgs/TFMessage"),
+        ("read", "/robot_description", "str"),
+        ("subscribe", "/front/scan", "sensor_msgs/LaserScan"),
+        ("subscribe", "/map", "nav_msgs/OccupancyGrid"),
+        ("subscribe", "/map_updates", "map_msgs/OccupancyGridUpdate"),
+        # the disabled group's path display subscribes to nothing
+        ("subscribe", "/twist_marker_server/update",
+         "visualization_msgs/InteractiveMarkerUpdate"),
+        ("subscribe", "/twist_marker_server/update_full",
+         "visualization_msgs/InteractiveMarkerInit"),
+        ("publish", "/twist_marker_server/feedback",
+         "visualization_msgs/InteractiveMarkerFeedback"),
+        ("publish", "/move_base_simple/goal", "geometry_msgs/PoseStamped")])
+    assert {link.origin for link in rviz.links} == {"config"}
+    assert rviz.is_complete  # every class is known: the model's display gaps are these
+    scan = config.topic("/front/scan")
+    assert sorted(link.node.name for link in scan.links) == ["/driver", "/rviz"]
+
+
+def test_ros2_displays_take_their_qos_and_an_unknown_class_makes_rviz_partial(
+        tmp_path: Path) -> None:
+    config = _graph(tmp_path, ROS2, 2)
+    rviz = next(n for n in config.nodes if n.name == "/rviz")
+    by_name = {link.resource.name: link for link in rviz.links}
+    assert by_name["/map"].type == "nav_msgs/msg/OccupancyGrid"
+    assert by_name["/map"].qos == {"depth": 1, "durability": "transient_local",
+                                   "reliability": "reliable"}
+    assert by_name["/map_updates"].type == "map_msgs/msg/OccupancyGridUpdate"
+    assert by_name["/initialpose"].kind == "publish"
+    assert "/particle_cloud" not in by_name
+    assert not rviz.is_complete
+    assert rviz.completeness_reasons == [
+        "display nav2_rviz_plugins/ParticleCloud of view.rviz is not known: it may "
+        "subscribe or publish anything"]
+
+
+def test_a_configuration_that_is_no_yaml_is_said_and_rviz_keeps_its_model(
+        tmp_path: Path) -> None:
+    config = _graph(tmp_path, "Visualization Manager: [\n", 1)
+    rviz = next(n for n in config.nodes if n.name == "/rviz")
+    assert [link.resource.name for link in rviz.links] == ["/tf"]
+    (said,) = [d for d in config.diagnostics if d.code == "RVIZ_CONFIG_INVALID"]
+    assert said.location.file.endswith("view.rviz") and said.location.line == 2
