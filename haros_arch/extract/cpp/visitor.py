@@ -13,7 +13,6 @@ from __future__ import annotations
 import dataclasses
 import functools
 import itertools
-import os
 import re
 from collections.abc import Callable, Iterator
 from typing import Any
@@ -30,7 +29,7 @@ from .call_sites import CallSites
 from .call_types import CallTypes, factory_made, row_class
 from .call_types import callee as callee_of_call
 from .conditions import ConditionReader
-from .cursors import children_in, release, root
+from .cursors import children_in, from_standin, release, root
 from .expressions import binary_operator
 from .handles import (
     Namespaces,
@@ -90,7 +89,8 @@ FUNCTIONS = frozenset({
     CursorKind.DESTRUCTOR, CursorKind.FUNCTION_TEMPLATE, CursorKind.CONVERSION_FUNCTION,
 })
 _API_NAMES = frozenset(
-    [name for _, name in [*api.ALL, *api.NODE_NAME, *api.RCLCPP_NODE_NAME, *api.FACTORIES]]
+    [name for _, name in [*api.ALL, *api.NODE_NAME, *api.RCLCPP_NODE_NAME,
+                          *api.STANDIN_NODE_NAME, *api.FACTORIES]]
     + [parameter_library.LISTENER])
 MAX_DEPTH = 16
 # the text after a call whose result the code looks one key up in (``_looked_up``)
@@ -492,7 +492,17 @@ class CallFinder:
     # -- one call ---------------------------------------------------------------------
 
     def _row(self, call: Cursor) -> tuple[api.RosFunction | None, Cursor | None]:
-        """The API row a call matches and the class whose template argument types it."""
+        """The API row a call matches and the class whose template argument types it; a
+        row of our stand-in only (``standin_only``) where the function is the stand-in's
+        (with navigation2's sources in the workspace, its own code is read)."""
+        spec, cls = self._any_row(call)
+        if spec is not None and spec.standin_only and not from_standin(
+                cls if cls is not None and cls.kind != CursorKind.NO_DECL_FOUND
+                else call.referenced):
+            return None, None
+        return spec, cls
+
+    def _any_row(self, call: Cursor) -> tuple[api.RosFunction | None, Cursor | None]:
         target = call.referenced
         if target is None:
             return None, None
@@ -554,14 +564,16 @@ class CallFinder:
         if declared is not None:
             self._listener(call, args, declared, conditions, scope)
             return
-        if key in api.RCLCPP_NODE_NAME:
-            self._node_name(api.RCLCPP_NODE_NAME[key], args, scope)
+        node_name = api.RCLCPP_NODE_NAME.get(key)
+        if node_name is None and key in api.STANDIN_NODE_NAME and from_standin(made or target):
+            node_name = api.STANDIN_NODE_NAME[key]  # the stand-in's class, not the real one
+        if node_name is not None:
+            self._node_name(node_name, args, scope)
             switch = api.IMPLICIT_SWITCH.get(key)
-            if key in api.IMPLICIT and not (
-                switch is not None and switch < len(args)
-                and scope.boolean(args[switch]) is False
-            ):
-                self._emit(api.IMPLICIT[key], call, args, None, conditions, scope)
+            if not (switch is not None and switch < len(args)
+                    and scope.boolean(args[switch]) is False):
+                for implicit in api.IMPLICIT.get(key, ()):
+                    self._emit(implicit, call, args, None, conditions, scope)
             return
         spec, cls = self._row(call)
         if spec is not None and len(args) == 1 and record_class(args[0]) is not None and (
@@ -895,7 +907,7 @@ class CallFinder:
                   at: Cursor | None = None, at_scope: Scope | None = None) -> None:
         """Emit ``call`` of ``spec``; ``at`` is the call that makes it, when another one
         (``nh.subscribe(ops)`` for ``ops.init<M>(...)``) gives its location and handle."""
-        if spec.standin_only and not _from_standin(
+        if spec.standin_only and not from_standin(
                 cls if cls is not None and cls.kind != CursorKind.NO_DECL_FOUND
                 else (at or call).referenced):
             return  # the class of that name is not our stand-in's: its code is read
@@ -950,6 +962,8 @@ class CallFinder:
             names = [("", None)] if name_expr is None else self._names(
                 spec, call, name_expr, args, scope)
             elsewhere = list(sites.elsewhere) if sites is not None else []
+            if spec.name_prefix is not None:
+                names = [(spec.name_prefix + name, source) for name, source in names]
             if spec.empty_is_none:
                 names = [(name, source) for name, source in names if name]
                 if not names:
@@ -1434,22 +1448,6 @@ def _default_constructible(cls: Cursor) -> bool:
         for c in constructors)
 
 
-_STANDIN = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))),
-                        "standin")
-
-
-def _from_standin(target: Cursor | None) -> bool:
-    """Whether ``target`` (the function or constructor a call names) is declared in one
-    of our stand-ins (``standin/``, ``standin/fallback`` included), not in a header of the
-    workspace."""
-    if target is None or target.location.file is None:
-        return False
-    return _in_standin(target.location.file.name)
-
-
-@functools.lru_cache(maxsize=1024)
-def _in_standin(path: str) -> bool:
-    return os.path.realpath(path).startswith(os.path.realpath(_STANDIN) + os.sep)
 
 
 # classes whose VAR_DECL children are static data members

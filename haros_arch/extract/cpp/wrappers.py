@@ -36,7 +36,7 @@ from ...model.conditions import Condition
 from . import api, msg_types
 from .call_sites import closest, default_argument, delegation, is_constructor
 from .call_types import template_argument
-from .cursors import Node, overloads
+from .cursors import Node, from_standin, overloads
 from .handles import callback, callback_name, is_handle, join_name, qualified_name
 from .qos import qos as qos_of
 from .values import (
@@ -448,7 +448,7 @@ class Wrappers:
             for wrapper in self.summaries.get(callee, ()):
                 yield wrapper, args, None, callee
             spec = api.ALL.get((qualified_name(decl.semantic_parent), decl.spelling))
-            if spec is not None:
+            if spec is not None and (not spec.standin_only or from_standin(decl)):
                 yield Wrapper(spec), args, None, None
 
     def _lift(self, function: Cursor, inner: Wrapper, call: Cursor, args: list[Cursor],
