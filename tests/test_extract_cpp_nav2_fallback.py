@@ -239,3 +239,40 @@ def test_navigation2_own_headers_win(tmp_path) -> None:
         "      this, \"gain\", rclcpp::ParameterValue(2.0));\n  }\n};\n")
     result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
     assert [(c.kind, c.name) for c in result.calls] == [("read", "gain"), ("declare", "gain")]
+
+
+UNREAD = """\
+#include <memory>
+#include "nav2_costmap_2d/costmap_subscriber.hpp"
+#include "nav2_util/lifecycle_node.hpp"
+#include "vendor/helper.hpp"
+class Checker : public nav2_util::LifecycleNode {
+ public:
+  Checker() : nav2_util::LifecycleNode("checker") {}
+  nav2_util::CallbackReturn on_configure(const rclcpp_lifecycle::State &) override {
+    auto node = shared_from_this();
+    costmap_ = std::make_unique<nav2_costmap_2d::CostmapSubscriber>(node, "costmap_raw");
+    nav2_costmap_2d::CostmapSubscriber local(node, "local_costmap_raw");
+    helper_ = std::make_shared<vendor::Helper>(node, "x");
+    return nav2_util::CallbackReturn::SUCCESS;
+  }
+  std::unique_ptr<nav2_costmap_2d::CostmapSubscriber> costmap_;
+  std::shared_ptr<vendor::Helper> helper_;
+};
+"""
+
+
+def test_node_given_to_a_class_not_read(tmp_path) -> None:
+    """A class the stand-ins declare only so that code using it parses (``HAROS_UNREAD``:
+    nav2_costmap_2d's CostmapSubscriber subscribes to the topic given) or that the parse
+    declares permissively (a vendor's), built with the node directly or through
+    make_unique / make_shared, makes the node partial: ``CPP_NODE_TO_UNKNOWN``."""
+    result = _extract(tmp_path, UNREAD)
+    assert sorted((d.location.line, d.message) for d in result.diagnostics
+                  if d.code == "CPP_NODE_TO_UNKNOWN") == [
+        (10, "the node (node) is given to nav2_costmap_2d::CostmapSubscriber, which the "
+             "parse does not know"),
+        (11, "the node (node) is given to nav2_costmap_2d::CostmapSubscriber, which the "
+             "parse does not know"),
+        (12, "the node (node) is given to vendor::Helper, which the parse does not know"),
+    ]

@@ -791,11 +791,8 @@ class CallFinder:
         as a name declared permissively (its package is not in the workspace:
         ``CPP_NODE_TO_UNKNOWN``, the node is partial): what it does with the node is
         not read."""
-        if self.declared is None:
-            return
-        target = call.referenced
-        where = target.location.file if target is not None else None
-        if where is None or where.name != self.declared:
+        unknown = self._unknown_callee(call)
+        if unknown is None:
             return
         key = place_of(call)
         if key in self._unknown:
@@ -805,7 +802,7 @@ class CallFinder:
             return  # a callback binding: the member's calls are read where it is defined
         if given:  # once per place (a conversion of the made object starts there too)
             self._unknown.add(key)
-            name = call.spelling
+            name = call.spelling if unknown is call.referenced else qualified_name(unknown)
             if not name or name == synthesis.ANY or name.startswith("operator"):
                 # a declared class's construction (its constructor is the permissive
                 # base's) or a call on such an object: the type, else the text
@@ -817,6 +814,31 @@ class CallFinder:
             self.diagnostics.append(diag.make(
                 "CPP_NODE_TO_UNKNOWN", self.where(call),
                 given="".join(t.spelling for t in given[0].get_tokens())[:60], name=name))
+
+    def _unknown_callee(self, call: Cursor) -> Cursor | None:
+        """What ``call`` runs whose code the parse does not have: a function or class
+        declared permissively (in the synthesised header), a class a stand-in declares
+        only so that code using it parses (``HAROS_UNREAD``: nav2_costmap_2d's
+        CostmapSubscriber), built directly or by ``make_shared`` / ``make_unique``."""
+        target = call.referenced
+        if target is None:
+            return None
+        if target.spelling in FACTORY_NAMES and (
+            qualified_name(target.semantic_parent), target.spelling
+        ) in api.FACTORIES:
+            made = factory_made(call)
+            return made if made is not None and (
+                self._declared_here(made) or _unread(made)) else None
+        if self._declared_here(target):
+            return target
+        if target.kind == CursorKind.CONSTRUCTOR and _unread(target.semantic_parent):
+            return target.semantic_parent
+        return None
+
+    def _declared_here(self, decl: Cursor) -> bool:
+        """Whether ``decl`` is in the header of names declared permissively."""
+        where = decl.location.file
+        return where is not None and self.declared is not None and where.name == self.declared
 
     def _options(self, expr: Cursor,
                  scope: Scope) -> tuple[api.RosFunction, Cursor, Scope] | None:
@@ -1436,6 +1458,18 @@ class CallFinder:
             # made where a constructor initialises the member, whose call is that one
             return
         self._emit(spec, field, [], decl, (), Scope(None, self.macros, self.source, self.sites))
+
+
+UNREAD = "haros_unread"  # the annotation of a stand-in's class whose calls no row says
+
+
+def _unread(cls: Cursor | None) -> bool:
+    """Whether ``cls`` is a class of our stand-ins marked ``HAROS_UNREAD``: declared so
+    that code using it parses, while what it makes on the node it is given is not
+    described (nav2_costmap_2d's CostmapSubscriber subscribes to a costmap topic)."""
+    return cls is not None and from_standin(cls) and any(
+        child.kind == CursorKind.ANNOTATE_ATTR and child.spelling == UNREAD
+        for child in cls.get_children())
 
 
 def _default_constructible(cls: Cursor) -> bool:
