@@ -75,8 +75,8 @@ def test_controller_plugin_declares_through_nav2_util(tmp_path) -> None:
     ``p.plugin``, a string without default; the Jazzy Controller's overrides parse."""
     result = _extract(tmp_path, CONTROLLER)
     assert _rows(result) == [
-        ("declare", "lookahead", None, True, 14),
-        ("declare", "frame", None, True, 16),
+        ("declare", "lookahead", "double", True, 14),
+        ("declare", "frame", "str", False, 16),
         ("read", "lookahead", "double", False, 17),
         ("declare", "checker.plugin", "str", False, 18),
         ("publish", "local_plan", "nav_msgs/msg/Path", False, 19),
@@ -120,7 +120,7 @@ def test_costmap_layer_declares_under_its_name(tmp_path) -> None:
     Kilted lifecycle node, takes a Jazzy-style create_publisher(topic, qos, options)."""
     result = _extract(tmp_path, LAYER)
     assert _rows(result) == [
-        ("declare", "?.enabled", None, True, 10),
+        ("declare", "?.enabled", "bool", True, 10),
         ("read", "?.enabled", "bool", False, 11),
         ("publish", "level", "std_msgs/msg/Float32", False, 13),
     ]
@@ -207,7 +207,7 @@ def test_nav2_lifecycle_servers(tmp_path) -> None:
                      ("action-server", "dock", "nav2_msgs/action/DockRobot"),
                      ("publish", "bond", "bond/msg/Status"),
                      ("subscribe", "bond", "bond/msg/Status")]
-    assert kilted == [*_LIFECYCLE, ("declare", "cartesian", None),
+    assert kilted == [*_LIFECYCLE, ("declare", "cartesian", "bool"),
                       ("declare", "tolerance", "double"),
                       ("action-server", "follow", "nav2_msgs/action/DockRobot"),
                       ("publish", "plan", "nav_msgs/msg/Path"),
@@ -276,3 +276,62 @@ def test_node_given_to_a_class_not_read(tmp_path) -> None:
              "parse does not know"),
         (12, "the node (node) is given to vendor::Helper, which the parse does not know"),
     ]
+
+
+def test_parameter_value_and_type_arguments(tmp_path) -> None:
+    """A declaration's default given as ``rclcpp::ParameterValue(v)`` has v's type and
+    value; one given an ``rclcpp::ParameterType`` constant is typed by it, without
+    default (rclcpp's declare_parameter as nav2's helpers)."""
+    result = _extract(tmp_path, """\
+#include <string>
+#include <rclcpp/rclcpp.hpp>
+class N : public rclcpp::Node {
+ public:
+  N() : Node("n") {
+    declare_parameter("gain", rclcpp::ParameterValue(0.5));
+    declare_parameter("frame", rclcpp::ParameterValue(std::string("odom")));
+    declare_parameter("enabled", rclcpp::ParameterValue{true});
+    declare_parameter("ids", rclcpp::PARAMETER_INTEGER_ARRAY);
+    declare_parameter("rate", rclcpp::ParameterType::PARAMETER_DOUBLE);
+  }
+};
+""")
+    assert [(c.name, c.type, c.has_default, c.default) for c in result.calls] == [
+        ("gain", "double", True, None), ("frame", "str", True, "odom"),
+        ("enabled", "bool", True, True), ("ids", "int[]", False, None),
+        ("rate", "double", False, None)]
+
+
+def test_helper_called_with_a_node_of_a_template_parameter(tmp_path) -> None:
+    """opennav_coverage's generators declare in a constructor template on any node type
+    (``template<typename NodeT> explicit Gen(const NodeT & node)``): a call clang cannot
+    resolve, kept by its name as a declaration where the name may be the stand-in's."""
+    result = _extract(tmp_path, """\
+#include <memory>
+#include <string>
+#include "nav2_ros_common/lifecycle_node.hpp"
+#include "nav2_ros_common/node_utils.hpp"
+class Gen {
+ public:
+  template<typename NodeT>
+  explicit Gen(const NodeT & node) {
+    nav2::declare_parameter_if_not_declared(
+      node, "default_type", rclcpp::ParameterValue("CONSTANT"));
+    type_ = node->get_parameter("default_type").as_string();
+  }
+  std::string type_;
+};
+class Server : public nav2::LifecycleNode {
+ public:
+  Server() : nav2::LifecycleNode("server", "") {}
+  nav2::CallbackReturn on_configure(const rclcpp_lifecycle::State &) override {
+    gen_ = std::make_unique<Gen>(shared_from_this());
+    return nav2::CallbackReturn::SUCCESS;
+  }
+  std::unique_ptr<Gen> gen_;
+};
+""")
+    assert [(c.kind, c.name, c.type, c.has_default, c.default) for c in result.calls
+            if "default_type" in c.name] == [
+        ("declare", "default_type", "str", True, "CONSTANT"),
+        ("read", "default_type", None, False, None)]

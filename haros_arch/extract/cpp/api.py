@@ -618,6 +618,10 @@ RCLCPP_SUB_NODE: dict[tuple[str, str], int] = {("rclcpp::Node", "create_sub_node
 UNRESOLVED_ROS2: dict[str, RosFunction] = {
     **_RCLCPP_NODE,
     "create_server": LIBRARIES[("rclcpp_action", "create_server")],
+    # nav2's helpers called with a node of a template parameter (only where one of the
+    # functions the name may be is the stand-in's: ``standin_only``)
+    "declare_parameter_if_not_declared": _NAV2_DECLARE,
+    "get_plugin_type_param": _NAV2_PLUGIN_TYPE,
 }
 UNRESOLVED_ROS1: dict[str, RosFunction] = {
     name: row for (owner, name), row in ROSCPP.items() if owner == NODE_HANDLE}

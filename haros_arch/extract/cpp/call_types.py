@@ -180,8 +180,9 @@ class CallTypes:
                     # ros::service::call(name, request, response): the request names its
                     # service
                     found = self._message(ctype, spec.kind in ("client", "server"))
-                else:
-                    found = msg_types.param_type(ctype)
+                else:  # the value a ParameterValue holds; a ParameterType constant
+                    found = msg_types.param_type(strip(msg_types.held_value(arg)).type) or (
+                        msg_types.parameter_type_constant(arg))
             elif source == "result" and call.kind == CursorKind.CALL_EXPR:
                 found = msg_types.param_type(call.type)
             if found is not None:

@@ -29,7 +29,7 @@ from .call_sites import CallSites
 from .call_types import CallTypes, factory_made, row_class
 from .call_types import callee as callee_of_call
 from .conditions import ConditionReader
-from .cursors import children_in, from_standin, release, root
+from .cursors import children_in, from_standin, overloads, release, root
 from .expressions import binary_operator
 from .handles import (
     Namespaces,
@@ -613,6 +613,18 @@ class CallFinder:
         if spec is None or (spec.kind == "action-server" and "rclcpp_action" not in
                             _callee_text(call)):
             return
+        if spec.standin_only:  # a dependent call of a stand-in's function (of nav2's
+            # declare_parameter_if_not_declared in a template): one of the overloads its
+            # name may be is the stand-in's row
+            heads = list(call.get_children())[:1]
+            found = [d for head in heads for child in [head, *head.get_children()]
+                     if child.kind == CursorKind.OVERLOADED_DECL_REF
+                     for d in overloads(child) if d is not None]
+            if not any(from_standin(d) and api.ALL.get(
+                    (qualified_name(d.semantic_parent), d.spelling)) is not None
+                       for d in found):
+                return
+            spec = dataclasses.replace(spec, standin_only=False)
         if spec.name_candidates or (self.ros2 and spec.on_handle):
             # ROS 2: made on the node itself, in its namespace
             spec = dataclasses.replace(spec, name_candidates=(), on_handle=False)
@@ -1438,7 +1450,9 @@ class CallFinder:
             index = spec.out_arg  # nh.param<T>(name, default) returns the value
         if index >= len(args):
             return False, None
-        value = _literal(args[index], scope)
+        if msg_types.parameter_type_constant(args[index]) is not None:
+            return False, None  # declare_parameter(name, rclcpp::PARAMETER_DOUBLE): typed
+        value = _literal(msg_types.held_value(args[index]), scope)
         if value is None and spec.out_arg is not None and spec.out_arg < len(args) \
                 and index != spec.out_arg and _same_variable(args[index], args[spec.out_arg]):
             # ``nh.param("topic", topic, topic)``: the default is what the variable holds

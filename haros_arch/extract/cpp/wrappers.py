@@ -449,7 +449,9 @@ class Wrappers:
                 yield wrapper, args, None, callee
             spec = api.ALL.get((qualified_name(decl.semantic_parent), decl.spelling))
             if spec is not None and (not spec.standin_only or from_standin(decl)):
-                yield Wrapper(spec), args, None, None
+                # (a stand-in's row checked here, on the declaration the call may be of:
+                # a dependent call names none)
+                yield Wrapper(dataclasses.replace(spec, standin_only=False)), args, None, None
 
     def _lift(self, function: Cursor, inner: Wrapper, call: Cursor, args: list[Cursor],
               cls: Cursor | None) -> Wrapper | None:
