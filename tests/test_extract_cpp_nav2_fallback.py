@@ -253,18 +253,23 @@ class Checker : public nav2_util::LifecycleNode {
     auto node = shared_from_this();
     costmap_ = std::make_unique<nav2_costmap_2d::CostmapSubscriber>(node, "costmap_raw");
     nav2_costmap_2d::CostmapSubscriber local(node, "local_costmap_raw");
+    footprint_ = std::make_unique<nav2_costmap_2d::FootprintSubscriber>(
+      node, "footprint", *tf_);
     helper_ = std::make_shared<vendor::Helper>(node, "x");
     return nav2_util::CallbackReturn::SUCCESS;
   }
   std::unique_ptr<nav2_costmap_2d::CostmapSubscriber> costmap_;
   std::shared_ptr<vendor::Helper> helper_;
+  std::unique_ptr<nav2_costmap_2d::FootprintSubscriber> footprint_;
+  std::shared_ptr<tf2_ros::Buffer> tf_;
 };
 """
 
 
 def test_node_given_to_a_class_not_read(tmp_path) -> None:
     """A class the stand-ins declare only so that code using it parses (``HAROS_UNREAD``:
-    nav2_costmap_2d's CostmapSubscriber subscribes to the topic given) or that the parse
+    nav2_costmap_2d's CostmapSubscriber subscribes to the topic given, and from Jazzy on
+    to its ``_updates`` too) or that the parse
     declares permissively (a vendor's), built with the node directly or through
     make_unique / make_shared, makes the node partial: ``CPP_NODE_TO_UNKNOWN``."""
     result = _extract(tmp_path, UNREAD)
@@ -274,8 +279,11 @@ def test_node_given_to_a_class_not_read(tmp_path) -> None:
              "parse does not know"),
         (11, "the node (node) is given to nav2_costmap_2d::CostmapSubscriber, which the "
              "parse does not know"),
-        (12, "the node (node) is given to vendor::Helper, which the parse does not know"),
+        (14, "the node (node) is given to vendor::Helper, which the parse does not know"),
     ]
+    # FootprintSubscriber's subscription is a row: the node given to it is read
+    assert [(c.kind, c.name, c.type) for c in result.calls if c.kind == "subscribe"] == [
+        ("subscribe", "footprint", "geometry_msgs/msg/PolygonStamped")]
 
 
 def test_parameter_value_and_type_arguments(tmp_path) -> None:
@@ -335,3 +343,28 @@ class Server : public nav2::LifecycleNode {
             if "default_type" in c.name] == [
         ("declare", "default_type", "str", True, "CONSTANT"),
         ("read", "default_type", None, False, None)]
+
+
+def test_stand_in_row_inside_a_wrapper_of_the_workspace(tmp_path) -> None:
+    """A function of the workspace that passes its parameter on to a stand-in's row (a
+    plugin's own helper around declare_parameter_if_not_declared) is a wrapper: the call
+    is made at each of its call sites, though those are not the stand-in's."""
+    result = _extract(tmp_path, """\
+#include <string>
+#include "nav2_util/lifecycle_node.hpp"
+#include "nav2_util/node_utils.hpp"
+void declare(const rclcpp_lifecycle::LifecycleNode::SharedPtr & node,
+             const std::string & name, double value) {
+  nav2_util::declare_parameter_if_not_declared(node, name, rclcpp::ParameterValue(value));
+}
+class Server : public nav2_util::LifecycleNode {
+ public:
+  Server() : nav2_util::LifecycleNode("server") {}
+  nav2_util::CallbackReturn on_configure(const rclcpp_lifecycle::State &) override {
+    declare(shared_from_this(), "gain", 0.5);
+    return nav2_util::CallbackReturn::SUCCESS;
+  }
+};
+""")
+    assert [(c.kind, c.name, c.location.line) for c in result.calls if c.name == "gain"] == [
+        ("declare", "gain", 12)]

@@ -540,6 +540,12 @@ NAV2: dict[tuple[str, str], RosFunction] = {
         "publish", fixed_name="bond", fixed_type="bond/msg/Status", on_handle=False,
         standin_only=True, siblings=(("subscribe", "", "bond/msg/Status"),))
        for scope in ("nav2_util", "nav2")},
+    # nav2_costmap_2d's FootprintSubscriber(node, topic, tf, ...): the robot's footprint
+    # (Humble to Kilted alike; its CostmapSubscriber subscribes to topic_updates too
+    # from Jazzy on, so it stays HAROS_UNREAD)
+    ("nav2_costmap_2d::FootprintSubscriber", "FootprintSubscriber"): RosFunction(
+        "subscribe", fixed_type="geometry_msgs/msg/PolygonStamped", on_handle=False,
+        name_arg=1, standin_only=True),
     # SimpleActionServer<A>(node, name, execute, ...) serves A on the node
     # (nav2_util's also from four node interfaces, the name after them)
     **{(f"{scope}::SimpleActionServer", "SimpleActionServer"): RosFunction(

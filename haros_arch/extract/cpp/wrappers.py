@@ -422,7 +422,9 @@ class Wrappers:
                     yield wrapper, args, None, callee
             spec, cls = self.finder._row(call)
             if spec is not None:
-                yield Wrapper(spec), args, cls, None
+                # (a stand-in's row, checked by ``_row`` here: a wrapper's callers are no
+                # stand-in's functions)
+                yield Wrapper(dataclasses.replace(spec, standin_only=False)), args, cls, None
             return
         for callee in self._constructed(call, args):
             for wrapper in self.summaries.get(callee, ()):

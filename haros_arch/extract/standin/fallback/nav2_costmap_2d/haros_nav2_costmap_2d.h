@@ -4,8 +4,9 @@
 // headers.FALLBACK_UMBRELLAS). Humble's and Jazzy's API beside Kilted's: a layer's node
 // is the Kilted lifecycle node, whose pointer converts to the older one. A layer's
 // declareParameter(name, value) declares ``<the layer's name>.name`` on its node (an API
-// row; the layer's name is given at run time, so ``?.name``). Classes that subscribe or
-// publish on the node they are given (CostmapSubscriber, FootprintSubscriber,
+// row; the layer's name is given at run time, so ``?.name``). FootprintSubscriber's
+// subscription is a row; the classes that subscribe or publish on the node they are
+// given in ways that differ between releases (CostmapSubscriber,
 // CostmapTopicCollisionChecker, Costmap2DPublisher) are declared HAROS_UNREAD: what they
 // make is not described, and a node given to one is partial (CPP_NODE_TO_UNKNOWN).
 #ifndef HAROS_STANDIN_NAV2_COSTMAP_2D_H
@@ -14,7 +15,6 @@
 #include <memory>
 #include <mutex>
 #include <string>
-#include <string_view>
 #include <utility>
 #include <vector>
 #include <rclcpp/rclcpp.hpp>
@@ -29,6 +29,7 @@
 #include <geometry_msgs/msg/pose2_d.hpp>
 #include <geometry_msgs/msg/pose_stamped.hpp>
 #include <nav_msgs/msg/occupancy_grid.hpp>
+#include <std_msgs/msg/header.hpp>
 #ifndef HAROS_UNREAD
 #define HAROS_UNREAD __attribute__((annotate("haros_unread")))
 #endif
@@ -302,13 +303,17 @@ public:
   std::shared_ptr<Costmap2D> getCostmap();
   bool isCostmapReceived();
 };
-class HAROS_UNREAD FootprintSubscriber {
+// subscribes to the robot's footprint on topic_name (an API row)
+class FootprintSubscriber {
 public:
-  template<typename... Args> explicit FootprintSubscriber(Args&&... args);
+  template<typename NodeT>
+  FootprintSubscriber(const NodeT& parent, const std::string& topic_name, tf2_ros::Buffer& tf,
+                      std::string robot_base_frame = "base_link",
+                      double transform_tolerance = 0.1);
   bool getFootprintRaw(std::vector<geometry_msgs::msg::Point>& footprint,
-                       std::string_view& header);
+                       std_msgs::msg::Header& footprint_header);
   bool getFootprintInRobotFrame(std::vector<geometry_msgs::msg::Point>& footprint,
-                                std::string_view& header);
+                                std_msgs::msg::Header& footprint_header);
 };
 class HAROS_UNREAD CostmapTopicCollisionChecker {
 public:
