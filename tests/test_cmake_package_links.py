@@ -515,3 +515,43 @@ def test_a_linked_class_that_is_a_node_of_its_own_stays_out(write_tree) -> None:
     assert node.sources == ["server/src/server.cpp", "util/src/lifecycle_node.cpp"]
     assert [c.name for c in node.calls if c.kind == "declare"] == ["bond_heartbeat_period"]
     assert "costmap" not in {c.name for c in node.calls}
+
+
+def test_a_nodelet_runs_the_named_files_of_another_package_it_links(write_tree) -> None:
+    # mrs_uav_managers' nodelets (plugin classes of a library target linking
+    # catkin_LIBRARIES) build mrs_lib's Profiler, which advertises "profiler": the
+    # library's file was not read for them, as it was for an executable or a component
+    files = {key: value for key, value in ROS1.items() if not key.startswith("planner/")}
+    files["manager/package.xml"] = package_xml("manager", "catkin").replace(
+        "</export>", "<nodelet plugin=\"${prefix}/nodelets.xml\"/></export>")
+    files["manager/nodelets.xml"] = (
+        '<library path="lib/libmanager">\n'
+        '  <class name="manager/Manager" type="manager::Manager"'
+        ' base_class_type="nodelet::Nodelet"/>\n'
+        "</library>\n")
+    files["manager/CMakeLists.txt"] = """
+        cmake_minimum_required(VERSION 3.0.2)
+        project(manager)
+        find_package(catkin REQUIRED COMPONENTS roscpp nodelet costs)
+        catkin_package()
+        add_library(manager src/manager.cpp)
+        target_link_libraries(manager ${catkin_LIBRARIES})
+        """
+    files["manager/src/manager.cpp"] = """
+        #include <ros/ros.h>
+        #include <nodelet/nodelet.h>
+        #include <pluginlib/class_list_macros.h>
+        #include <costs/map_ros.h>
+        namespace manager {
+        class Manager : public nodelet::Nodelet {
+          void onInit() { map_ = new costs::MapROS("map"); }
+          costs::MapROS* map_;
+        };
+        }
+        PLUGINLIB_EXPORT_CLASS(manager::Manager, nodelet::Nodelet)
+        """
+    node, _ = _node(write_tree, files, "manager", "manager/Manager")
+    assert node.sources == ["manager/src/manager.cpp", "costs/src/map_ros.cpp"]
+    calls = sorted((c.kind, c.name) for c in node.calls)
+    assert calls == [("publish", "~map/costmap"), ("read", "~map/update_rate")]
+    assert node.completeness == "complete"

@@ -229,3 +229,47 @@ def test_an_undeclared_name_without_the_node_leaves_it_complete(write_tree: Any)
         'vendor_utils::clamp(rate_, 0.0)')
     node = _checker(write_tree, code)
     assert node.completeness == "complete", node.completeness_reasons
+
+
+# interactive_marker_twist_server builds its marker server with
+# ``std::make_unique<interactive_markers::InteractiveMarkerServer>("twist_server",
+# get_node_base_interface(), ..., get_node_topics_interface(), ...)``: the class, declared
+# permissively (interactive_markers is not in the workspace), publishes and subscribes on
+# the node through the interfaces the factory hands its constructor
+FACTORY_MADE = """
+    #include <rclcpp/rclcpp.hpp>
+    #include <interactive_markers/interactive_marker_server.hpp>
+
+    class Checker : public rclcpp::Node {
+     public:
+      Checker()
+      : Node("checker"),
+        server_(std::make_unique<interactive_markers::InteractiveMarkerServer>(
+          "twist_server", get_node_base_interface(), get_node_topics_interface()))
+      {
+        rate_ = declare_parameter<double>("rate", 10.0);
+      }
+     private:
+      std::unique_ptr<interactive_markers::InteractiveMarkerServer> server_;
+      double rate_{0.0};
+    };
+
+    int main(int argc, char ** argv) {
+      rclcpp::init(argc, argv);
+      rclcpp::spin(std::make_shared<Checker>());
+    }
+    """
+
+
+def test_the_node_given_to_a_factory_of_a_class_declared_permissively(
+        write_tree: Any) -> None:
+    node = _checker(write_tree, FACTORY_MADE)
+    assert node.completeness == "partial"
+    assert any("is given to interactive_markers::InteractiveMarkerServer" in r
+               for r in node.completeness_reasons), node.completeness_reasons
+    # a factory of a class the parse knows is read as before
+    known = _checker(write_tree, FACTORY_MADE.replace(
+        "#include <interactive_markers/interactive_marker_server.hpp>",
+        "namespace interactive_markers { struct InteractiveMarkerServer {\n"
+        "  template <class... A> InteractiveMarkerServer(A &&...) {} }; }"))
+    assert known.completeness == "complete", known.completeness_reasons

@@ -414,3 +414,69 @@ def test_ros2_control_base_atomic_order_lifecycle_registration_typeid(write_tree
                       "ament_cmake")
     assert _errors(result) == []
     assert ("publish", "state") in [(c.kind, c.name) for c in result.calls]
+
+
+def test_ros2_eigen_views_filters_and_temporary_streams(write_tree) -> None:
+    """Eigen's coefficient views (robot_localization's ``covariance.diagonal() =
+    VectorXd::Map(...)``, ``noalias()``, ``eval()``), ``rclcpp::ok(context)``
+    (pointcloud_to_laserscan's listener thread), ``get_service_name`` (zed,
+    robot_localization), a ``std::ostringstream`` written while a temporary
+    (realsense2_camera's STREAM_NAME), ``std::array``'s ``cbegin`` (franka), tf2's
+    ``toMsg`` of a transform and ROS 2 ``Stamped`` time, ``rclcpp::Time !=`` and a
+    message's ``to_yaml`` (robot_localization's filter): each was an error in a function
+    that calls the ROS API, so the node was partial. A declaration whose default is an
+    ``rclcpp::ParameterValue`` of a string has the type str (beluga's, typed only while
+    its ``constexpr std::string_view`` was an error)."""
+    result = _extract(write_tree, _source("ros2_eigen_filter.cpp"), "ament_cmake")
+    assert _errors(result) == []
+    assert {(c.kind, c.name, c.type) for c in result.calls
+            if c.name == "model_type"} == {("declare", "model_type", "str")}
+    assert {(c.kind, c.name) for c in result.calls} == {
+        ("declare", "two_d_mode"), ("declare", "model_type"), ("publish", "out"),
+        ("subscribe", "in"),
+        ("server", "reset"), ("declare", "joint_index"), ("declare", "listening"),
+        ("publish", "/diagnostics"), ("declare", "diagnostic_updater.period"),
+        ("declare", "diagnostic_updater.use_fqn"), ("publish", "odometry/filtered")}
+
+
+def test_ros1_message_cache_urdf_safety_and_tf2_timeout(write_tree) -> None:
+    """message_filters' ``Cache`` fed by ``connectInput`` (elevation_mapping), a URDF
+    joint's ``safety`` limits (franka), ``ros::Time::sleepUntil`` (cartographer_ros) and
+    ``tf2::TimeoutException``: no error, every call kept."""
+    result = _extract(write_tree, _source("ros1_cache_urdf.cpp"), "catkin")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("subscribe", "pose"), ("read", "robot_description"), ("publish", "soft_limit"),
+        ("publish", "elevation")]
+
+
+def test_ros1_bag_replay_and_camera_model_of_installed_packages(write_tree) -> None:
+    """rosbag (slam_gmapping's replay: ``m.instantiate<sensor_msgs::LaserScan>()`` was an
+    error beside its advertise calls) and image_geometry (turtlebot_actions' fiducial
+    finder: a PinholeCameraModel of an installed package, CPP_CLASS_UNSEEN) make no ROS
+    call: the fallback stand-ins declare them when the workspace does not have them."""
+    root = write_tree({
+        "pkg/package.xml": package_xml("pkg", "catkin").replace(
+            "</license>", "</license><depend>roscpp</depend><depend>rosbag</depend>"
+            "<depend>image_geometry</depend>"),
+        "pkg/src/node.cpp": _source("ros1_bag_camera_model.cpp")})
+    result = extract_cpp([str(root / "pkg" / "src" / "node.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    assert _errors(result) == []
+    assert [d.code for d in result.diagnostics if d.code.startswith("CPP_")] == []
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("publish", "~entropy"), ("publish", "scan_replayed"), ("publish", "target")]
+
+
+def test_ros1_controllers_and_robot_hw_of_installed_ros_control(write_tree) -> None:
+    """ROS 1 ros_control installed, not in the workspace: franka's controllers take their
+    interfaces with ``robot_hw->get<hardware_interface::VelocityJointInterface>()`` (an
+    error beside init's calls: 11 franka_ros controllers were partial); a RobotHW
+    registers its interfaces. Two PLUGINLIB_EXPORT_CLASS in one file are two exports, not
+    a redefinition."""
+    result = _extract(write_tree, _source("ros1_controller_robot_hw.cpp"), "catkin")
+    assert _errors(result) == []
+    # each on the NodeHandle its init is given (the controller's, named where it is loaded)
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("read", "?/arm_id"), ("subscribe", "?/command"), ("read", "?/joint"),
+        ("read", "?/robot_ip")]

@@ -120,11 +120,12 @@ def test_nodelets_loaded_by_the_nodelet_executable_get_their_interface():
     ], nodes=[plugin])
     assert [t.name for t in config.topics] == ["/cam/disparity"]
     assert config.node("/cam/disparity").node is plugin
-    # the manager's own node: its loader's services, known whole
+    # the manager's own node: its loader's services and thread count, known whole
     manager = config.node("/manager")
     assert manager.node is not None and manager.is_complete
     assert sorted(link.resource.name for link in manager.links) == [
-        "/manager/list", "/manager/load_nodelet", "/manager/unload_nodelet"]
+        "/manager/list", "/manager/load_nodelet", "/manager/num_worker_threads",
+        "/manager/unload_nodelet"]
     assert [(d.code, d.message) for d in config.diagnostics] == [
         ("NODE_PACKAGE_UNKNOWN", "package stereo of node stereo/missing is neither in "
                                  "the workspace nor installed; its interface is unknown")]

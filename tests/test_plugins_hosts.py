@@ -252,6 +252,28 @@ def test_spawned_ros2_controllers_are_nodes_in_the_managers_namespace(tmp_path: 
     assert codes == ["PLUGIN_CLASS_UNKNOWN"]  # "missing" has no type anywhere
 
 
+def test_spawned_controllers_take_the_remaps_of_the_managers_process(tmp_path: Path):
+    # open_manipulator remaps /arm_controller/joint_trajectory on ros2_control_node: rcl
+    # applies a process's -r remaps to every node in it, a controller's own
+    # --controller-ros-args over them
+    params = tmp_path / "controllers.yaml"
+    params.write_text("/controller_manager:\n  ros__parameters:\n    arm:\n"
+                      "      type: my/Arm\n    hand:\n      type: my/Arm\n")
+    arm = plugin("my", "my/Arm", "my::Arm",
+                 call("subscribe", "~/joint_trajectory", "std_msgs/msg/String"))
+    decls = [ros2(NodeDecl("/controller_manager", "controller_manager", "ros2_control_node",
+                           remaps=[("/arm/joint_trajectory", "/leader/joint_trajectory"),
+                                   ("/hand/joint_trajectory", "/leader/hand")])),
+             ros2(NodeDecl("/spawner", "controller_manager", "spawner",
+                           args=f"arm --param-file {params}")),
+             ros2(NodeDecl("/spawner_hand", "controller_manager", "spawner",
+                           args=f"hand --param-file {params} "
+                                "--controller-ros-args -r ~/joint_trajectory:=/own"))]
+    config = graph(decls, nodes=[arm], root=str(tmp_path))
+    assert ("subscribe", "/leader/joint_trajectory") in links_of(config, "/arm")
+    assert ("subscribe", "/own") in links_of(config, "/hand")
+
+
 def test_spawner_arguments_are_read_as_its_argparse_does():
     spawn = spawn_args(NodeDecl("/s", "controller_manager", "spawner", args=(
         "a b -c /x/cm --param-file /p.yaml --inactive -t pkg/T "

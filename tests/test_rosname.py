@@ -40,6 +40,16 @@ def test_patterns_match_candidates():
     assert not RosName.make("/chatter").matches("/chatter2")
 
 
+def test_an_unknown_part_may_be_empty():
+    """joint_state_broadcaster publishes ``prefix + "joint_states"``, its prefix "~/" or
+    "" (``use_local_topics``): ``/?joint_states`` may be ``/joint_states`` itself, so a
+    subscriber of that topic is not without a publisher."""
+    name = RosName.make("?joint_states", "/", "/joint_state_broadcaster")
+    assert name.matches("/joint_states")
+    assert name.matches("/joint_state_broadcaster/joint_states")
+    assert not name.matches("/dynamic_joint_states/x")
+
+
 def test_namespaces_normalise():
     assert as_namespace("") == "/"
     assert as_namespace("a") == "/a/"

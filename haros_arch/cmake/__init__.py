@@ -9,6 +9,7 @@ and Python scripts.
 
 from __future__ import annotations
 
+import functools
 import os
 
 from .. import diagnostics as diag
@@ -20,7 +21,14 @@ from ..plugins.classes import remembered
 from ..workspace import Workspace
 from .interpreter import Interpreter
 from .lexer import CMakeSyntaxError, Invocation, tokenize
-from .nodes import PackageFiles, SourceMap, components, executables, scripts
+from .nodes import (
+    PackageFiles,
+    SourceMap,
+    components,
+    executables,
+    scripts,
+    with_elsewhere,
+)
 from .targets import Target
 
 __all__ = ["CMAKE_BUILD_TYPES", "Target", "interpret", "package_libraries", "parse_package",
@@ -92,6 +100,26 @@ def _package_libraries(name: str, workspace: Workspace) -> list[str] | None:
                               if target.kind == "library" for source in sources.own(target)))
 
 
+def package_links(name: str, workspace: Workspace) -> list[str]:
+    """The other packages the libraries of the workspace package ``name`` link (as
+    ``SourceMap.packages`` says for each); none when it is not a CMake package of the
+    workspace."""
+    return remembered("library links", name, workspace,
+                      lambda: _package_links(name, workspace))
+
+
+def _package_links(name: str, workspace: Workspace) -> list[str]:
+    package = workspace.packages.get(name)
+    if package is None or package.build_type not in CMAKE_BUILD_TYPES:
+        return []
+    files = PackageFiles(package, workspace)
+    interpreter, _ = _interpret(package, workspace, files)
+    sources = SourceMap(interpreter, files, build_depends=build_depends(package),
+                        package=package.name)
+    return list(dict.fromkeys(other for target in interpreter.targets.values()
+                              if target.kind == "library" for other in sources.packages(target)))
+
+
 def _run(package: Package, workspace: Workspace,
          files: PackageFiles) -> tuple[Interpreter, list[Diagnostic]]:
     found: list[Diagnostic] = []
@@ -132,14 +160,18 @@ def parse_package(package: Package, workspace: Workspace) -> tuple[list[Node], l
     interpreter, found = _interpret(package, workspace, files)
     found = list(found)
     sources = SourceMap(interpreter, files, lambda name: package_libraries(name, workspace),
-                        build_depends(package), package.name)
+                        build_depends(package), package.name,
+                        lambda name: package_links(name, workspace))
     nodes = executables(interpreter, package, files, sources)
     nodes.extend(components(interpreter, package, files, sources))
     libraries: dict[str, plugins.Library] = {}
     for target in interpreter.targets.values():
         if target.kind == "library":
-            library = plugins.Library(sources.linked(target), target.conditions,
-                                      sources.own(target))
+            library = plugins.Library(
+                sources.linked(target), target.conditions, sources.own(target),
+                functools.partial(sources.reached, target),
+                with_elsewhere=functools.partial(_elsewhere, target=target, sources=sources,
+                                                 files=files))
             libraries.setdefault(target.name, library)
             libraries.setdefault(target.output_name or target.name, library)
     described = [Plugin(base, files.relpath(path))
@@ -154,6 +186,13 @@ def parse_package(package: Package, workspace: Workspace) -> tuple[list[Node], l
         nodes.extend(entry_points)
         found.extend(problems)
     return _unique(nodes), found
+
+
+def _elsewhere(kept: list[str], *, target: Target, sources: SourceMap,
+               files: PackageFiles) -> list[str]:
+    """A nodelet's files ``kept`` and what they name of other workspace packages'
+    libraries that its library ``target`` links."""
+    return with_elsewhere(kept, target, sources, files)
 
 
 def _unique(nodes: list[Node]) -> list[Node]:

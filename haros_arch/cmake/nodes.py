@@ -11,6 +11,7 @@ import os
 import re
 import stat
 from collections.abc import Callable, Iterable, Sequence
+from functools import partial
 
 from .. import diagnostics as diag
 from ..diagnostics import Diagnostic
@@ -31,6 +32,7 @@ from ..plugins.classes import (
     node_classes,
     uses_ros,
 )
+from ..plugins.inherit import inherited_sources
 from ..workspace import Workspace
 from .commands import C_SUFFIXES
 from .interpreter import BINARY_ROOT, Interpreter
@@ -78,6 +80,10 @@ def _with_extension(source: str) -> str | None:
 # workspace-relative sources of its libraries (``cmake.package_libraries``); None when
 # the package is not in the workspace
 Elsewhere = Callable[[str], "list[str] | None"]
+# the other packages the libraries of a package of the workspace link, by its name
+# (``cmake.package_links``)
+Links = Callable[[str], "list[str]"]
+MAX_REACHED = 64  # packages followed from a target for its classes' base classes
 
 
 _STANDIN = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))),
@@ -99,7 +105,8 @@ class SourceMap:
     and the libraries of other workspace packages they link (``elsewhere``)."""
 
     def __init__(self, it: Interpreter, workspace: Files, elsewhere: Elsewhere | None = None,
-                 build_depends: Sequence[str] = (), package: str = "") -> None:
+                 build_depends: Sequence[str] = (), package: str = "",
+                 links: Links | None = None) -> None:
         self.targets = it.targets
         self.workspace = workspace
         self.diagnostics: list[Diagnostic] = []
@@ -107,6 +114,7 @@ class SourceMap:
         self._elsewhere = elsewhere
         self._build_depends = list(build_depends)
         self._package = package  # its own libraries are ``linked``'s
+        self._links = links
 
     def own(self, target: Target, seen: frozenset[str] = frozenset()) -> list[str]:
         if target.name in self._own:
@@ -184,6 +192,29 @@ class SourceMap:
         found = (self._elsewhere(name) for name in self.packages(target))
         return [group for group in found if group]
 
+    def reached(self, target: Target) -> list[list[str]]:
+        """``elsewhere``'s groups, then those of the packages their libraries link, and
+        so on: where the base classes of a class of ``target`` may be built, and their
+        own bases (position_controllers' class derives from forward_command_controller's,
+        which derives from controller_interface's)."""
+        if self._elsewhere is None:
+            return []
+        names = self.packages(target)
+        seen = {self._package, *names}
+        out: list[list[str]] = []
+        index = 0
+        while index < len(names) and index < MAX_REACHED:
+            name = names[index]
+            index += 1
+            group = self._elsewhere(name)
+            if group:
+                out.append(group)
+            for other in self._links(name) if self._links is not None else ():
+                if other not in seen and other not in MODELLED_PACKAGES:
+                    seen.add(other)
+                    names.append(other)
+        return out
+
 
 def executables(it: Interpreter, package: Package, workspace: Files,
                 sources: SourceMap) -> list[Node]:
@@ -213,11 +244,11 @@ def _run(target: Target, sources: SourceMap, workspace: Files) -> list[str]:
     executable whose code loads plugins by name runs all it links: the plugins' base
     classes are named by the plugins, not by it (nav2's costmap filters)."""
     own = sources.own(target)
-    return _with_elsewhere(_run_here(target, own, sources, workspace), target, sources,
+    return with_elsewhere(_run_here(target, own, sources, workspace), target, sources,
                            workspace)
 
 
-def _with_elsewhere(kept: list[str], target: Target, sources: SourceMap,
+def with_elsewhere(kept: list[str], target: Target, sources: SourceMap,
                     workspace: Files) -> list[str]:
     """``kept`` and the sources of other packages' libraries that ``target`` links and
     that kept code names: those defining a class member or free function it names, and
@@ -264,14 +295,29 @@ def _run_here(target: Target, own: list[str], sources: SourceMap,
     return [*own, *(s for s in named if not exported[s] or exported[s] & words)]
 
 
+def _component(target: Target, cls: str, sources: SourceMap, workspace: Files) -> list[str]:
+    """The sources a component class runs: the files of its library that are its own
+    (``narrow``), what they name of other packages' libraries (``with_elsewhere``), and
+    the files defining its base classes, in its package's libraries or in another
+    package's (``inherit.inherited_sources``: a file that exports a class of its own is
+    no helper, but it is a base's code)."""
+    linked = sources.linked(target)
+    kept = narrow(linked, cls, workspace)
+    files = with_elsewhere(kept, target, sources, workspace)
+    if not kept:
+        return files
+    return [*files, *(s for s in inherited_sources(cls, files, linked, workspace,
+                                                   partial(sources.reached, target))
+                      if s not in files)]
+
+
 def components(it: Interpreter, package: Package, workspace: Files,
                sources: SourceMap) -> list[Node]:
     nodes: list[Node] = []
     registered: set[str] = set()
     for reg in it.registrations:
         target = it.targets.get(reg.target)
-        files = _with_elsewhere(narrow(sources.linked(target), reg.plugin, workspace),
-                                target, sources, workspace) if target else []
+        files = _component(target, reg.plugin, sources, workspace) if target else []
         conditions = (target.conditions if target else ()) + tuple(
             c for c in reg.conditions if target is None or c not in target.conditions)
         where = workspace.location(reg.file, reg.line, reg.column)
@@ -290,9 +336,7 @@ def components(it: Interpreter, package: Package, workspace: Files,
                     continue
                 registered.add(plugin)
                 nodes.append(Node(package.name, plugin, "component", "cpp",
-                                  _with_elsewhere(narrow(sources.linked(target), plugin,
-                                                         workspace), target, sources,
-                                                  workspace),
+                                  _component(target, plugin, sources, workspace),
                                   conditions=target.conditions,
                                   location=workspace.location(
                                       os.path.join(workspace.root, path), line, 1)))

@@ -38,7 +38,14 @@ from ..robot.attach import attach as attach_descriptions
 from ..rosrun import find_executable
 from ..workspace import Workspace, installed_roots
 from .actions import action_links
-from .conditions import decide, decide_links, drop_links, program_argument, program_views
+from .conditions import (
+    decide,
+    decide_links,
+    drop_links,
+    program_argument,
+    program_option,
+    program_views,
+)
 from .processes import (
     code_node,
     guessed_names,
@@ -433,8 +440,12 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
         # their own; the process's own interface is its loader's services, known
         node = container_node(decl)
     elif node is None and workspace.find(key.partition("/")[0]) is None:
-        config.diagnostics.append(diag.make("NODE_PACKAGE_UNKNOWN", decl.location,
-                                            name=key.partition("/")[0], node=plugin or key))
+        # the package's interface model was found without this node: said there
+        if not any(d.code == "MODEL_NODE_MISSING" and d.location == decl.location
+                   for d in config.diagnostics):
+            config.diagnostics.append(diag.make("NODE_PACKAGE_UNKNOWN", decl.location,
+                                                name=key.partition("/")[0],
+                                                node=plugin or key))
     elif node is None and plugin is None and decl.ros_version == 1 and (
         found := _program_file(workspace, *key.partition("/")[::2])
     ):
@@ -508,12 +519,17 @@ _CONTAINER_SERVICES = {
     1: (("~load_nodelet", "nodelet/NodeletLoad"), ("~unload_nodelet", "nodelet/NodeletUnload"),
         ("~list", "nodelet/NodeletList")),
 }
+# and the parameters it reads there: nodelet's Loader (loader.cpp, advertiseRosApi) reads
+# ``num_worker_threads`` (default 0: as many as the machine has cores) on the manager's
+# private handle
+_CONTAINER_READS = {1: (("~num_worker_threads", "int"),), 2: ()}
 _CONTAINERS: dict[tuple[str, str, int], Node] = {}
 
 
 def container_node(decl: NodeDecl) -> Node | None:
     """The node type of a nodelet manager (``nodelet manager``) or a component container:
-    known whole (completeness ``model``), as the services its loader serves."""
+    known whole (completeness ``model``), as the services its loader serves and the
+    parameters it reads."""
     if decl.package == "nodelet" and decl.args.split()[:1] != ["manager"]:
         return None
     version = 2 if decl.package == "rclcpp_components" else 1
@@ -521,8 +537,10 @@ def container_node(decl: NodeDecl) -> Node | None:
     if key not in _CONTAINERS:
         _CONTAINERS[key] = Node(
             decl.package, decl.executable,
-            calls=[PrimitiveCall("server", name, type_) for name, type_ in
-                   _CONTAINER_SERVICES[version]],
+            calls=[*(PrimitiveCall("server", name, type_) for name, type_ in
+                     _CONTAINER_SERVICES[version]),
+                   *(PrimitiveCall("read", name, type_, has_default=True)
+                     for name, type_ in _CONTAINER_READS[version])],
             completeness="model", model="built-in: the loader services of a "
             + ("component container" if version == 2 else "nodelet manager"))
     return _CONTAINERS[key]
@@ -547,11 +565,15 @@ def node_key(decl: NodeDecl, nodes: Mapping[str, Node]) -> str:
 
 
 def nodelet_plugin(decl: NodeDecl) -> str | None:
-    """``pkg/Name`` for ``<node pkg="nodelet" type="nodelet" args="load pkg/Name mgr">``."""
+    """``pkg/Name`` for ``<node pkg="nodelet" type="nodelet" args="load pkg/Name mgr">``
+    (or ``pkg::Class``, a class looked up by its type)."""
     if (decl.package, decl.executable) != ("nodelet", "nodelet"):
         return None
     words = decl.args.split()
-    if len(words) >= 2 and words[0] in ("load", "standalone") and "/" in words[1]:
+    # the lookup name: ``pkg/Name``, or the C++ type of a class its description gives no
+    # name (pluginlib then looks it up by its type: ``vesc_ackermann::VescToOdomNodelet``)
+    if len(words) >= 2 and words[0] in ("load", "standalone") and (
+            "/" in words[1] or "::" in words[1].strip(":")):
         return words[1]
     return None
 
@@ -618,6 +640,11 @@ def _given_name(call: PrimitiveCall, instance: NodeInstance, resources: Resource
         given = program_argument(instance, call.name_arg)
         if given:
             call = replace(call, name=_filled(call.name, given), name_arg=None)
+    if call.name_option is not None and UNKNOWN_MARK in call.name:
+        # an option's value (``"/robot/limb/" + args.limb``); not given: the ``?``
+        given = program_option(instance, call.name_option)
+        if given:
+            call = replace(call, name=_filled(call.name, given), name_option=None)
     if instance.ros_version == 2 and RESOURCE_OF_KIND[call.kind] is Parameter:
         return _node_scoped(call.name)
     if call.name_param is None or UNKNOWN_MARK not in call.name:

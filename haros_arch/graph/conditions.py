@@ -376,6 +376,34 @@ def program_argument(instance: NodeInstance, index: int) -> str | None:
     return found.pop() if len(found) == 1 else None
 
 
+def program_option(instance: NodeInstance, flags: str) -> str | None:
+    """The value the instance's command line gives an option that argparse parses
+    (``PrimitiveCall.name_option``: its flags, ``-l --limb``): ``--limb right``,
+    ``--limb=right``, ``-l right`` or ``-lright``, the last one given, in the words the
+    client library leaves (argparse reads ``rospy.myargv()`` or ``sys.argv``, whose
+    roslaunch words are no option); None when the arguments are not known or do not give
+    it (its default is not told)."""
+    views = program_views(instance)
+    names = flags.split()
+    found = set()
+    for _, kept in views or ():
+        value = None
+        words = kept[1:]
+        for at, word in enumerate(words):
+            for flag in names:
+                if word == flag and at + 1 < len(words):
+                    value = words[at + 1]
+                elif flag.startswith("--") and word.startswith(flag + "="):
+                    value = word[len(flag) + 1:]
+                elif not flag.startswith("--") and len(flag) == 2 and word.startswith(
+                        flag) and len(word) > 2 and not word.startswith("--"):
+                    value = word[2:]
+        if value is None:
+            return None
+        found.add(value)
+    return found.pop() if len(found) == 1 else None
+
+
 def arguments_left(words: list[str], ros_version: int) -> list[str]:
     """What a program's client library leaves of its arguments: roscpp's ``ros::init``
     takes every ``:=`` word (remaps, ``__name:=``), rclcpp every ``--ros-args ... --``

@@ -112,6 +112,8 @@ def call_from_data(c: dict[str, Any]) -> PrimitiveCall:
                          node_name=c.get("node_name"), name_each=c.get("name_each"),
                          program_arg=_program_arg(c.get("program_arg")),
                          name_arg=_program_arg(c.get("name_arg")),
+                         name_option=c.get("name_option") if isinstance(
+                             c.get("name_option"), str) else None,
                          transport=c.get("transport"),
                          variable=c.get("variable"),
                          also=c.get("also") if isinstance(c.get("also"), list) else None,

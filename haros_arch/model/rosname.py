@@ -73,9 +73,13 @@ def resolve_remaps(
 
 
 def pattern_for(full: str) -> str:
-    """A regular expression matching the names that a name with ``?`` parts could be."""
+    """A regular expression matching the names that a name with ``?`` parts could be.
+    A ``?`` may stand for nothing at all: a prefix a parameter or a condition chooses
+    is often empty (ros2_controllers' joint_state_broadcaster publishes
+    ``prefix + "joint_states"``, its prefix ``"~/"`` or ``""``: ``/joint_states`` by
+    default)."""
     parts = full.split(UNKNOWN_MARK)
-    return "^" + ".+".join(re.escape(p) for p in parts) + "$"
+    return "^" + ".*".join(re.escape(p) for p in parts) + "$"
 
 
 @dataclass(frozen=True)

@@ -119,6 +119,11 @@ class PrimitiveCall:
     # ``"/" + robot_name + "_driver/..."`` with ``robot_name = argv[argc - 1]``. The graph
     # takes the value from the arguments the launch file gives the instance
     name_arg: int | None = field(default=None, metadata={"optional": True})
+    # a name whose one ``?`` is the value of an option of the process's command line that
+    # argparse parses (its flags, space separated: ``-l --limb``): intera_interface's
+    # joint trajectory action server's ``--limb``, which names its topics. The graph takes
+    # the value from the arguments the launch file gives the instance
+    name_option: str | None = field(default=None, metadata={"optional": True})
     # a call made through image_transport (``plugins.hosts.TRANSPORTS``): ``*`` for a
     # publisher, which also publishes the topic of every transport plugin it loads; for
     # a subscriber the transport its code names (``raw``, ``compressed``), or ``?`` when

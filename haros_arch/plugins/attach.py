@@ -719,10 +719,15 @@ def _set_params(params: Params, node_name: str, values: Mapping[str, Any],
 
 def _plugin_instance(host: NodeInstance, choice: Choice, node: Node | None,
                      config: Configuration) -> NodeInstance:
-    """A node instance of its own for a controller loaded into ``host``."""
+    """A node instance of its own for a controller loaded into ``host``. It takes the
+    remaps of the host's process (launch_ros gives a node's remappings as ``-r from:=to``,
+    which rcl applies to every node of the process: open_manipulator remaps the arm
+    controller's ``/arm_controller/joint_trajectory`` on ros2_control_node), its own
+    (``--controller-ros-args``) over them."""
     namespace = host.namespace if host.namespace.endswith("/") else host.namespace + "/"
     name = namespace + choice.name
-    instance = NodeInstance(name, node, namespace=namespace, remaps=list(choice.remaps),
+    remaps = [*host.remaps, *choice.remaps]
+    instance = NodeInstance(name, node, namespace=namespace, remaps=remaps,
                             conditions=(*host.conditions, *choice.conditions),
                             location=choice.location, origin="plugin",
                             ros_version=host.ros_version)

@@ -17,7 +17,7 @@ from __future__ import annotations
 import os
 import re
 from collections.abc import Callable, Iterable, Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any, Protocol, TypeVar
 
 from lxml import etree
@@ -53,15 +53,27 @@ class Files(Protocol):
     def relpath(self, path: str) -> str: ...
 
 
+def _nothing() -> list[list[str]]:
+    return []
+
+
 @dataclass(frozen=True)
 class Library:
     """A library target as far as plugins care: its sources (with those of the package
     libraries it links, for nodelets) and conditions; ``own``: the target's own sources
-    (a host plugin links its host's framework library, whose code is the host's)."""
+    (a host plugin links its host's framework library, whose code is the host's);
+    ``elsewhere``: the sources of the other workspace packages it links, and of those
+    these link, a list per package (``SourceMap.reached``; asked only for a class's
+    base classes)."""
 
     sources: list[str]  # workspace-relative
     conditions: tuple[Condition, ...] = ()
     own: list[str] | None = None
+    elsewhere: Callable[[], list[list[str]]] = _nothing
+    # a nodelet's files with those of other workspace packages' libraries the target
+    # links that they name (``cmake.nodes``' ``with_elsewhere``, as a component's)
+    with_elsewhere: Callable[[list[str]], list[str]] | None = field(default=None,
+                                                                    compare=False)
 
 
 def library_name(path: str) -> str:
@@ -125,9 +137,15 @@ def plugin_classes(package: Package, workspace: Files, libraries: Mapping[str, L
                     kind == "nodelet" or library.own is None) else library.own
                 sources = narrow(files, registered, workspace)
                 if sources and library is not None:
-                    # its base classes' code, in whichever library it links builds it
+                    # its base classes' code, in whichever library it links builds it,
+                    # of its package or of another
                     sources += inherited_sources(registered, sources, library.sources,
-                                                 workspace)
+                                                 workspace, library.elsewhere)
+                    if kind == "nodelet" and library.with_elsewhere is not None:
+                        # and what it names of other packages' libraries it links:
+                        # mrs_uav_managers' nodelets build mrs_lib's ParamLoader, whose
+                        # ParamProvider reads their parameters
+                        sources = library.with_elsewhere(sources)
                 if files and not sources:
                     found.append(diag.make("PLUGIN_CLASS_NOT_BUILT", where, plugin=name,
                                            cls=registered, library=wanted or "?"))

@@ -17,11 +17,25 @@ and out-of-line member definitions ``Base::method(`` starting a line.
 
 from __future__ import annotations
 
+import os
 import re
-from collections.abc import Iterable, Sequence
+from collections.abc import Callable, Iterable, Sequence
 
 from ..model.source import Node, PrimitiveCall
-from .classes import _MEMBER, Files, _untemplated, with_headers
+from .classes import (
+    _MEMBER,
+    Files,
+    _untemplated,
+    code_words,
+    defined_in,
+    derives_from,
+    exported_classes,
+    named_closure,
+    node_classes,
+    remembered,
+    uses_ros,
+    with_headers,
+)
 
 MAX_BASE_DEPTH = 8  # base classes followed from a plugin class
 HEADER_DEPTH = 2  # levels of includes read for a class's declaration
@@ -29,16 +43,56 @@ _ACCESS = frozenset({"public", "protected", "private", "virtual"})
 
 
 def inherited_sources(cls: str, own: Sequence[str], candidates: Sequence[str],
-                      workspace: Files) -> list[str]:
+                      workspace: Files,
+                      elsewhere: Callable[[], list[list[str]]] | None = None) -> list[str]:
     """The ``candidates`` (not in ``own``) that define members of the base classes of
-    ``cls``, its bases' bases and so on, in the order of ``candidates``."""
-    defining = {source: {match.group(1) for match in _MEMBER.finditer(_text(source, workspace))}
-                for source in candidates if source not in own}
+    ``cls``, its bases' bases and so on, in the order of ``candidates``; then, with
+    ``elsewhere`` (the sources of other workspace packages' libraries that the class's
+    library links, a list per package), those of them that do, with the helpers of their
+    package that these name (``_helpers``). A file that defines a base class's members
+    runs for the class even when it exports a plugin class of its own (forward_command_
+    controller's ``ForwardCommandController``, which position_controllers' class
+    derives from); the files that export only other classes are never taken."""
+    groups = [[s for s in group if s not in own and s not in candidates]
+              for group in (elsewhere() if elsewhere is not None else [])]
+    defining = {source: _members(source, workspace)
+                for source in [*candidates, *(s for group in groups for s in group)]
+                if source not in own}
     if not defining:
         return []
     files = list(own)
     chain(cls, files, workspace, defining)
-    return [s for s in candidates if s in files and s not in own]
+    out = [s for s in candidates if s in files and s not in own]
+    for group in groups:
+        found = [s for s in group if s in files]
+        if found:
+            # the base's own files, whatever they name (forward_command_controller.cpp
+            # names no client library: its ParamListener declares the parameters); of
+            # their helpers, a file that names none makes no call of the node
+            out.extend([*found, *(s for s in _helpers(found, group, [*own, *out], workspace)
+                                  if uses_ros(s, workspace))])
+    return list(dict.fromkeys(out))
+
+
+def _helpers(found: list[str], group: list[str], kept: list[str],
+             workspace: Files) -> list[str]:
+    """The files of ``group`` (one package's libraries) that the base-class files
+    ``found`` there need, as an executable takes another package's (``cmake.nodes.
+    _with_elsewhere``): those defining what they name, transitively, never one that
+    exports classes or that is a node class of its own that the node does not derive
+    from."""
+    mine = [*kept, *found]
+    words = code_words(found, workspace) - defined_in(mine, workspace)
+    others = [s for s in group if s not in found
+              and not exported_classes(os.path.join(workspace.root, s), workspace)
+              and all(derives_from(c, mine, workspace) for c in node_classes(s, workspace))]
+    return named_closure(words, others, workspace, anonymous=False)
+
+
+def _members(source: str, workspace: Files) -> set[str]:
+    """The classes whose members ``source`` defines out of line."""
+    return remembered("members", source, workspace, lambda: {
+        match.group(1) for match in _MEMBER.finditer(_text(source, workspace))})
 
 
 def chain(cls: str, files: list[str], workspace: Files,
@@ -46,8 +100,12 @@ def chain(cls: str, files: list[str], workspace: Files,
     """``cls`` and its base classes, most derived first (plain names), as the
     declarations in ``files`` and their headers give them; with ``defining`` (the
     classes whose members each other file defines), a base's defining files are read
-    for its own bases and appended to ``files``."""
+    for its own bases and appended to ``files``. A base written with its namespace
+    (``forward_command_controller::ForwardCommandController``) is defined only by a
+    file that opens that namespace or qualifies the class with it: another package's
+    class of the same plain name is another class."""
     out = [_plain(cls)]
+    spaces = {out[0]: _qualifier(cls)}
     texts: dict[str, list[str]] = {}
     index = 0
     while index < len(out) and len(out) <= MAX_BASE_DEPTH:
@@ -55,13 +113,33 @@ def chain(cls: str, files: list[str], workspace: Files,
         index += 1
         if defining is not None:
             files.extend(s for s, defined in defining.items()
-                         if current in defined and s not in files)
+                         if current in defined and s not in files
+                         and _in_namespace(s, spaces[current], current, workspace))
         for source in files:
             if source not in texts:
                 texts[source] = with_headers(source, workspace, HEADER_DEPTH)
-        bases = _bases(current, [t for source in files for t in texts[source]])
-        out.extend(b for b in bases if b not in out)
+        for base in _bases(current, [t for source in files for t in texts[source]]):
+            plain = _plain(base)
+            if plain not in out:
+                out.append(plain)
+                spaces[plain] = _qualifier(base)
     return out
+
+
+def _qualifier(name: str) -> str | None:
+    """The innermost namespace a class name is written with (``a::b::C``: ``b``)."""
+    parts = [p.strip() for p in _untemplated(name).strip().lstrip(":").split("::")]
+    return parts[-2] if len(parts) > 1 and parts[-2] else None
+
+
+def _in_namespace(source: str, space: str | None, cls: str, workspace: Files) -> bool:
+    """Whether ``source`` opens the namespace ``space`` (``namespace a::space``) or
+    qualifies ``cls`` with it; any file when ``space`` is None."""
+    if space is None:
+        return True
+    pattern = re.compile(rf"\bnamespace\s+(?:\w+\s*::\s*)*{re.escape(space)}\b"
+                         rf"|\b{re.escape(space)}\s*::\s*{re.escape(cls)}\b")
+    return pattern.search(_text(source, workspace)) is not None
 
 
 def overridden(node: Node, workspace: Files) -> list[tuple[str, int, int]]:
@@ -88,10 +166,20 @@ def overridden(node: Node, workspace: Files) -> list[tuple[str, int, int]]:
     defined = {(cls, method) for _, cls, method, _, _ in spans}
     headers = [t for source in node.sources for t in with_headers(source, workspace, 1)]
     defined |= {(cls, method) for cls in bases for method in _inline_methods(cls, headers)}
+
+    def definer(start: str, method: str) -> str | None:
+        """The class whose ``method`` ``start::method()`` runs: the first of the chain
+        from ``start`` towards its bases that defines it."""
+        return next((c for c in bases[rank[start]:] if (c, method) in defined), None)
+
     out = []
     for source, cls, method, first, end in spans:
         derived = any((other, method) in defined for other in bases[:rank[cls]])
-        if derived and not _called(cls, method, texts.values()):
+        # called by its class, or through a class between that does not redefine it
+        # (``ForwardCommandController::on_init()`` runs ForwardControllersBase's)
+        called = any(_called(c, method, texts.values()) for c in bases[:rank[cls] + 1]
+                     if definer(c, method) == cls)
+        if derived and not called:
             out.append((source, first, end))
     return out
 
@@ -107,7 +195,8 @@ def without_overridden(node: Node, calls: list[PrimitiveCall],
 
 
 def _bases(cls: str, texts: list[str]) -> list[str]:
-    """The base classes (plain names) a declaration ``class cls : ... {`` lists."""
+    """The base classes a declaration ``class cls : ... {`` lists, as written (without
+    template arguments)."""
     head = re.compile(r"\b(?:class|struct)\s+(?:\w+\s+)*?" + re.escape(cls)
                       + r"\s*(?:final\s*)?:(?!:)([^{;]*)\{")
     for text in texts:
@@ -120,7 +209,7 @@ def _bases(cls: str, texts: list[str]) -> list[str]:
             for part in listed.split(","):
                 words = [w for w in part.split() if w not in _ACCESS]
                 if words:
-                    out.append(_plain(words[-1]))
+                    out.append(words[-1])
             return out
     return []
 

@@ -135,6 +135,7 @@ _QT_HEADER = re.compile(r"Q[A-Z][A-Za-z]*(\.h)?|Qt[A-Z][A-Za-z]*")  # <QObject>,
 _ROS2_HEADER = re.compile(r"([A-Za-z_]\w*)/(msg|srv|action)/([a-z0-9_]+)\.hpp")
 
 _INCLUDE = re.compile(r'^[ \t]*#[ \t]*include[ \t]*([<"])([^>"\n]+)[>"]', re.MULTILINE)
+_SERVICE_PART = re.compile(r"(\w+)(?:Request|Response)")
 _MESSAGE_HEADER = re.compile(r"([A-Za-z_]\w*)/([A-Z]\w*)\.h")
 # dynamic_reconfigure's generated header: ``<name>Config.h``, the name as the .cfg's
 # ``gen.generate(PACKAGE, node, name)`` writes it, lowercase too
@@ -670,6 +671,16 @@ class IncludeSetup:
             return False  # an ordinary header of a package, or the real generated one
         if self.system_headers and real is not None:
             return False
+        part = _SERVICE_PART.fullmatch(name) if definition is None and real is None else None
+        service = self._definition(package, part.group(1)) if part is not None else None
+        if part is not None and service is not None and len(service.sections) == 2:
+            # gencpp's header of one part of a service (<pkg/SrvRequest.h>): the part is
+            # in the service's header, which is made ready in its turn
+            whole = f"{package}/{part.group(1)}.h"
+            self._handled.add(header)
+            self._write(header, f"// {header}, created by haros_arch\n#include <{whole}>\n")
+            self._prepare(whole, "", False, where)
+            return True
         if definition is None:
             definition = interfaces.Interface(package, name, [[], []], known=False)
             self.diagnostics.append(diag.make(

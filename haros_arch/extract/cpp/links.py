@@ -278,6 +278,12 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
     known = facts if isinstance(facts, NodeFacts) else NodeFacts(facts)
     out: list[PrimitiveCall] = []
     found: list[Diagnostic] = []
+
+    def unbuilt(usr: str) -> bool:
+        """A constructor no file of the node calls, whose class no error may hide."""
+        return _constructor(usr) and usr not in known.called and "*" not in unseen and (
+            class_of(usr) not in unseen)
+
     for call in calls:
         if call.made_in is not None:
             if not _made(call.made_in, known.called, known.constructed, unseen):
@@ -299,7 +305,7 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
         # a camera's camera_info names its image topic as written on the same handle
         camera = call.camera_of[len(prefix):] if namespace and call.camera_of and (
             call.camera_of.startswith(prefix)) else None
-        for filled in _expand(text, known.passed, 0):
+        for filled in _expand(text, known.passed, 0, unbuilt):
             ns, _, name = filled.partition(_SPLIT)
             ns = normalise(_unmarked(ns)) if ns else ""
             made = dataclasses.replace(
@@ -409,15 +415,20 @@ def _marked_usrs(text: str) -> set[str]:
 
 
 def _expand(text: str, passed: dict[str, dict[str, dict[int, str]]],
-            depth: int) -> list[str]:
+            depth: int, unbuilt: Callable[[str], bool] | None = None) -> list[str]:
     """``text`` with its placeholders filled: the placeholders of one function take the
     values of the same call site together (``attach(n, "left")``, ``attach(base,
-    "right")`` never give ``base/left``)."""
+    "right")`` never give ``base/left``). A value that a caller takes from a parameter of
+    a constructor that ``unbuilt`` says the node never runs gives nothing: that caller
+    never runs either (vesc_ackermann's ``getRequiredParam(nh, ...)`` in the constructor
+    of a class the nodelet does not build)."""
     match = _MARK.search(text)
     if match is None:
         return [text]
     usr = match.group(1)
     sites = list(passed.get(usr, {}).values()) if depth < MAX_DEPTH else []
+    if depth and not sites and unbuilt is not None and unbuilt(usr):
+        return []
     out: list[str] = []
     for values in sites or [{}]:
         def fill(found: re.Match[str], values: dict[int, str] = values) -> str:
@@ -428,7 +439,7 @@ def _expand(text: str, passed: dict[str, dict[str, dict[int, str]]],
             # itself, directly or through a base method) stands for a chain of any
             # length: unknown (it expanded until MAX_VALUES made every value unknown)
             return "?" if usr in _marked_usrs(value) else value
-        for filled in _expand(_MARK.sub(fill, text), passed, depth + 1):
+        for filled in _expand(_MARK.sub(fill, text), passed, depth + 1, unbuilt):
             if filled not in out:
                 out.append(filled)
     if len(out) > MAX_VALUES:

@@ -123,7 +123,12 @@ def _struct(name: str, fields: list[Field], package: str, kind: str = "msg",
               f"  using SharedPtr = std::shared_ptr<{name}>;",
               f"  using ConstSharedPtr = std::shared_ptr<const {name}>;",
               f"  using UniquePtr = std::unique_ptr<{name}>;",
-              f"  using WeakPtr = std::weak_ptr<{name}>;", "};"]
+              f"  using WeakPtr = std::weak_ptr<{name}>;", "};",
+              # rosidl's YAML of a message, beside it (``RCLCPP_INFO_STREAM(logger,
+              # geometry_msgs::msg::to_yaml(pose))``)
+              f"std::string to_yaml(const {name}& msg, bool use_flow_style = false);",
+              f"std::string to_flow_style_yaml(const {name}& msg);",
+              f"std::string to_block_style_yaml(const {name}& msg);"]
     return lines
 
 

@@ -228,6 +228,7 @@ _OPERATORS += "".join(
 _PRELUDE = """\
 // haros_arch: permissive declarations of names the parse did not know
 #pragma clang system_header
+#include <string>  // std::to_string of a permissive value (below)
 enum haros_integral : long long {};
 struct haros_any {
   template <class... A> haros_any(A &&...) {}
@@ -252,6 +253,28 @@ template <class T> struct tuple_size;
 template <decltype(sizeof 0) I, class T> struct tuple_element;
 template <> struct tuple_size<haros_any> { static constexpr decltype(sizeof 0) value = 2; };
 template <decltype(sizeof 0) I> struct tuple_element<I, haros_any> { typedef haros_any type; };
+// a standard function of one permissive value (franka's ``std::abs(state.q_d[i] -
+// q_start[i])`` of libfranka's RobotState, ouster's ``std::to_string(mode)``): every
+// standard overload takes it through a conversion, ambiguously; one of its own is exact
+haros_any &abs(const haros_any &);
+haros_any &fabs(const haros_any &);
+haros_any &sqrt(const haros_any &);
+haros_any &floor(const haros_any &);
+haros_any &ceil(const haros_any &);
+haros_any &round(const haros_any &);
+haros_any &exp(const haros_any &);
+haros_any &log(const haros_any &);
+haros_any &sin(const haros_any &);
+haros_any &cos(const haros_any &);
+haros_any &tan(const haros_any &);
+haros_any &isnan(const haros_any &);
+haros_any &isinf(const haros_any &);
+haros_any &isfinite(const haros_any &);
+string to_string(const haros_any &);
+// an element of a permissive object that is a variant or tuple, by type or by index
+// (ur_robot_driver's ``std::get<std::string>(response.data.at("program_name"))``)
+template <class T> T &get(const haros_any &);
+template <decltype(sizeof 0) I> haros_any &get(const haros_any &);
 }
 template <decltype(sizeof 0) I> haros_any &get(const haros_any &);
 %s"""

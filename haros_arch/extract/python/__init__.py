@@ -84,7 +84,9 @@ def extract_python(sources: list[str], workspace: Workspace, *,
     typed = {(c.kind, c.name, c.location, c.node_name) for c in calls
              if c.type not in (None, "?")}
     for call in calls:
-        key = (call.kind, call.name, call.location, call.node_name, call.type)
+        # (one named by an option of the command line is not one named otherwise)
+        key = (call.kind, call.name, call.location, call.node_name, call.type,
+               call.name_option)
         if key in seen or ("?" in call.name and _fitted(call.name, known.get(
                 (call.kind, call.location, call.node_name), []))) or (
                 call.type == "?" and key[:4] in typed):

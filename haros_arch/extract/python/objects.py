@@ -31,6 +31,33 @@ class Ref:
 PROGRAM_ARGUMENT = "program argument "
 
 
+# the origin of the unknown text of an option of the program's command line that
+# argparse parses (``args.limb`` of ``add_argument("-l", "--limb")``): its flags follow,
+# separated by spaces, as ``PrimitiveCall.name_option`` keeps them
+PROGRAM_OPTION = "program option "
+
+
+@dataclass(frozen=True)
+class ArgParser:
+    """An ``argparse.ArgumentParser``: its options are the ``add_argument`` calls made on
+    the same receiver in its module (``ProgramOptions``, once parsed)."""
+
+
+@dataclass(frozen=True)
+class ProgramOptions:
+    """What ``parse_args`` gives: each option's value (by ``dest``) is the unknown text the
+    launch file's arguments for the instance tell; ``options`` maps a ``dest`` to the
+    option's flags, space separated."""
+
+    options: tuple[tuple[str, str], ...]
+
+    def value(self, dest: str) -> object:
+        flags = dict(self.options).get(dest)
+        if flags is None:
+            return Unknown(f"option {dest}")
+        return Value.unknown(f"{PROGRAM_OPTION}{flags}")
+
+
 @dataclass(frozen=True)
 class ProgramArgs:
     """A program's command-line arguments: ``sys.argv``, every word as given (after the

@@ -1,4 +1,4 @@
-"""The ROS 1 Python API as data: rospy, actionlib, tf / tf2_ros, message_filters.
+"""The ROS 1 Python API as data: rospy, rosparam, actionlib, tf / tf2_ros, message_filters.
 
 Rows are keyed by (top module, last name): ``("rospy", "Publisher")`` serves
 ``rospy.Publisher``, ``rospy.topics.Publisher`` and ``from rospy import Publisher``.
@@ -37,6 +37,14 @@ ROWS: dict[tuple[str, str], PyFunction] = {
     ("rospy", "set_param"): PyFunction(
         "write", name=_PARAM_NAME, value=Arg(1, "param_value")),
     ("rospy", "delete_param"): PyFunction("write", name=_PARAM_NAME, deletes=True),
+    # rosparam's Python API (``import rosparam``): the master's parameter calls, the name
+    # as given (relative to the process's namespace, as a node's own relative names are);
+    # set_param parses its value as YAML text, so its type is not the argument's
+    ("rosparam", "get_param"): PyFunction("read", name=Arg(0, "param")),
+    ("rosparam", "set_param_raw"): PyFunction(
+        "write", name=Arg(0, "param"), value=Arg(1, "value")),
+    ("rosparam", "set_param"): PyFunction("write", name=Arg(0, "param")),
+    ("rosparam", "delete_param"): PyFunction("write", name=Arg(0, "param"), deletes=True),
     # actions (actionlib; the action type is the spec's name without "Action")
     ("actionlib", "SimpleActionServer"): PyFunction(
         "action-server", type=Arg(1, "ActionSpec"), callback=Arg(2, "execute_cb")),

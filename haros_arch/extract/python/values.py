@@ -29,6 +29,7 @@ from .calls import MAX_CALL_DEPTH, argument, unknown_params
 from .instances import Instances
 from .modules import ClassInfo, FunctionInfo, Loader, submodule
 from .objects import (
+    ArgParser,
     BoundMethod,
     Frame,
     Instance,
@@ -41,6 +42,7 @@ from .objects import (
     ParamObject,
     ParamValue,
     ProgramArgs,
+    ProgramOptions,
     Record,
     Ref,
     Seq,
@@ -279,6 +281,8 @@ class Evaluator(Instances, QoSProfiles, Walker):
         if isinstance(base, NodeHandle) and (attr in rclpy.NODE_METHODS or attr in NAME_METHODS
                                              or attr == "get_namespace"):
             return NodeMethod(attr, owner=base)
+        if isinstance(base, ProgramOptions):
+            return base.value(attr)
         if isinstance(base, ParamObject):
             if attr in _PARAMETER_VALUES:
                 return ParamValue(base.name, base.default)
@@ -306,6 +310,11 @@ class Evaluator(Instances, QoSProfiles, Walker):
             return self.construct(func, expr, frame)
         if isinstance(func, FunctionInfo | BoundMethod):
             return self.returned(func, expr, frame)
+        if isinstance(base, ArgParser) and isinstance(expr.func, ast.Attribute) and (
+                expr.func.attr in ("parse_args", "parse_known_args")):
+            parsed = ProgramOptions(_parser_options(expr.func.value, frame.module.tree))
+            # parse_known_args: the options and the words left
+            return parsed if expr.func.attr == "parse_args" else Seq((parsed, Unknown("args")))
         if isinstance(expr.func, ast.Attribute) and expr.func.attr == "get" and isinstance(
                 base, ParamValue) and frame.module.version == 1 and 1 <= len(expr.args) <= 2:
             # a dictionary parameter's entry: cfg.get('topic', 'scan')
@@ -372,6 +381,8 @@ class Evaluator(Instances, QoSProfiles, Walker):
             return Value.unknown("search_param")
         if ref.qualname == "rospy.myargv":  # the arguments without roslaunch's := words
             return ProgramArgs(stripped=True)
+        if key == ("argparse", "ArgumentParser"):
+            return ArgParser()
         if key == ("rospy", "get_name") and not expr.args:
             return Value.unknown(NODE_NAME)  # the node's own name: ~ at a name's start
         if key == ("rospy", "get_namespace") and not expr.args:
@@ -461,3 +472,31 @@ def _length(value: object) -> int:
     if isinstance(value, Seq):
         return len(value.items)
     return len(value) if isinstance(value, str) else 1
+
+
+def _parser_options(receiver: ast.expr, tree: ast.Module) -> tuple[tuple[str, str], ...]:
+    """The options ``add_argument`` gives a parser: every such call in the module on a
+    receiver written as ``receiver`` is (``parser.add_argument("-l", "--limb",
+    dest="limb")``), each as (``dest``, its flags) as argparse names it: ``dest=``, else
+    the first long flag, else the first short one, without dashes, ``-`` as ``_``.
+    Positional arguments are not options."""
+    written = ast.unparse(receiver)
+    found: dict[str, str] = {}
+    for node in ast.walk(tree):
+        if not (isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute)
+                and node.func.attr == "add_argument"
+                and ast.unparse(node.func.value) == written):
+            continue
+        flags = [a.value for a in node.args
+                 if isinstance(a, ast.Constant) and isinstance(a.value, str)]
+        if not flags or len(flags) != len(node.args) or not all(
+                f.startswith("-") and len(f) > 1 for f in flags):
+            continue
+        dest = next((k.value.value for k in node.keywords if k.arg == "dest"
+                     and isinstance(k.value, ast.Constant) and isinstance(k.value.value, str)),
+                    None)
+        if dest is None:
+            long = [f for f in flags if f.startswith("--")]
+            dest = (long or flags)[0].lstrip("-").replace("-", "_")
+        found.setdefault(dest, " ".join(flags))
+    return tuple(found.items())

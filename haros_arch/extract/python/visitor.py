@@ -32,6 +32,7 @@ from .objects import (
     ELEMENT_OF,
     FIELD_OF,
     PROGRAM_ARGUMENT,
+    PROGRAM_OPTION,
     Alternatives,
     BoundMethod,
     Frame,
@@ -149,12 +150,20 @@ class Walker:
             queue.extend(module.functions.values())
             for cls in module.classes.values():
                 queue.extend(cls.methods.values())
-        while queue or self._nested or self._used_classes:
+        # the methods of the classes of other modules the walk builds, not yet named
+        pending: list[FunctionInfo] = []
+        while queue or self._nested or self._used_classes or pending:
             if not queue:
                 if self._nested:
                     queue.append(self._nested.pop(0))
+                elif self._used_classes:
+                    pending.extend(self._used_classes.pop(0).methods.values())
                 else:
-                    queue.extend(self._used_classes.pop(0).methods.values())
+                    named = self._named(done)
+                    queue = [info for info in pending if self._reachable(info, named)]
+                    if not queue:
+                        break
+                    pending = [info for info in pending if info not in queue]
                 continue
             info = queue.pop(0)
             if id(info.node) in done:
@@ -167,6 +176,37 @@ class Walker:
             if id(info.node) not in self._inlined and (info.cls is None
                                                        or id(info.cls) not in unbuilt):
                 self.calls.extend(calls)
+
+    def _named(self, done: set[int]) -> set[str]:
+        """The attribute names (and identifier strings, for ``getattr``) the code may use:
+        in every module read, outside the methods of classes of other modules that the
+        walk has not run (``done``: walked as entries; ``_inlined``: at call sites)."""
+        named: set[str] = set()
+        for module in self.loader.modules.values():
+            if module is None:
+                continue
+            walked = module.path in self.main
+            skipped = set() if walked else {
+                id(method.node) for cls in module.classes.values()
+                for method in cls.methods.values()
+                if id(method.node) not in done and id(method.node) not in self._inlined}
+            named |= _attribute_names(module.tree, skipped)
+        return named
+
+    def _reachable(self, info: FunctionInfo, named: set[str]) -> bool:
+        """Whether a method of a class of another module the walk builds may run: a
+        special method, one whose name the code uses, or any of a class with a base the
+        walk cannot read (whose code may call it: ``threading.Thread.run``). The others
+        (intera_interface's ``RobotEnable.enable``, a publisher of ``robot/set_super_enable``,
+        in a node that builds a RobotEnable to read its state) are never called."""
+        name = info.node.name
+        if name.startswith("__") or name in named or info.cls is None:
+            return True
+        ev = self.evaluator
+        return any(not isinstance(base, ClassInfo) and not (
+                       isinstance(written, ast.Name) and written.id == "object")
+                   for cls in ev.mro(info.cls)
+                   for written, base in zip(cls.node.bases, ev.bases(cls), strict=True))
 
     def _unbuilt(self, modules: list[Module]) -> set[int]:
         """The node classes of the executable's modules that nothing it runs constructs,
@@ -791,6 +831,10 @@ class Walker:
                 # a command-line argument with text around it (``sys.argv[1] + "/out"``):
                 # the graph puts the instance's argument in the place of the ``?``
                 call.name_arg = int(params[0].removeprefix(PROGRAM_ARGUMENT))
+            elif len(params) == 1 and params[0].startswith(PROGRAM_OPTION):
+                # an option argparse parses (``"/robot/limb/" + args.limb``): the value the
+                # instance's arguments give it
+                call.name_option = params[0].removeprefix(PROGRAM_OPTION)
             elif len(params) == 1 and params[0].startswith("parameter "):
                 name = params[0].removeprefix("parameter ")
                 call.name_param = param_name(Value.of(name)) if version == 2 else name
@@ -873,6 +917,27 @@ class Walker:
 
 # roslaunch's entry points that start the nodes of launch files in the calling process
 _LAUNCHERS = frozenset({"main", "ROSLaunchParent", "ROSLaunch", "ROSLaunchRunner"})
+
+
+_IDENTIFIER = re.compile(r"[A-Za-z_]\w*")
+
+
+def _attribute_names(tree: ast.AST, skipped: set[int]) -> set[str]:
+    """The attribute names ``tree`` uses and the identifiers its strings hold, outside
+    the function definitions whose ids are ``skipped``."""
+    found: set[str] = set()
+    stack = [tree]
+    while stack:
+        node = stack.pop()
+        if id(node) in skipped:
+            continue
+        if isinstance(node, ast.Attribute):
+            found.add(node.attr)
+        elif isinstance(node, ast.Constant) and isinstance(node.value, str) and (
+                _IDENTIFIER.fullmatch(node.value)):
+            found.add(node.value)
+        stack.extend(ast.iter_child_nodes(node))
+    return found
 
 
 def _self_member(target: ast.expr) -> str | None:

@@ -14,6 +14,7 @@ public:
   void mergeSummary(unsigned char level, const std::string& message);
   void mergeSummaryf(unsigned char level, const char* format, ...);
   void clearSummary();
+  void clear();
   template<class T> void add(const std::string& key, const T& value);
   void addf(const std::string& key, const char* format, ...);
 };
@@ -42,7 +43,11 @@ public:
   void update();
   void force_update();
   void broadcast(int level, const std::string& message);
+#ifdef HAROS_STANDIN_RCLCPP_HPP
+  rclcpp::Duration getPeriod();  // ROS 2: a duration (robot_localization's nanoseconds())
+#else
   double getPeriod();
+#endif
   template<class D> void setPeriod(D period);  // seconds, or an rclcpp::Duration
 };
 struct FrequencyStatusParam {

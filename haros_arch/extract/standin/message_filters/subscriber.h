@@ -53,9 +53,34 @@ public:
   template<class C> void registerCallback(const C& callback);
   template<class C, class T> void registerCallback(const C& callback, T* object);
 };
+// what a Cache gives: a message pointer of either ROS (ROS 1 boost, ROS 2 std), a time
+// of either (``toSec()`` / ``seconds()``)
+template<class M> struct haros_cached_message {
+  const M* operator->() const;
+  const M& operator*() const;
+  explicit operator bool() const;
+  operator boost::shared_ptr<const M>() const;
+  operator std::shared_ptr<const M>() const;
+};
+struct haros_cached_time {
+  double toSec() const;
+  unsigned long long toNSec() const;
+  double seconds() const;
+  long long nanoseconds() const;
+  bool isZero() const;
+  template<class T> operator T() const;
+};
 template<class M> class Cache {
 public:
-  template<class F> Cache(F& filter, unsigned int size);
+  Cache(unsigned int size = 1);
+  template<class F> Cache(F& filter, unsigned int size = 1);
+  template<class F> void connectInput(F& filter);
+  void setCacheSize(unsigned int size);
+  template<class T> haros_cached_message<M> getElemBeforeTime(const T& time) const;
+  template<class T> haros_cached_message<M> getElemAfterTime(const T& time) const;
+  haros_cached_time getLatestTime() const;
+  haros_cached_time getOldestTime() const;
+  template<class C> void registerCallback(const C& callback);
 };
 }
 #endif

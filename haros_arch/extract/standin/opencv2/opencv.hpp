@@ -259,6 +259,7 @@ typedef Mat InputOutputArray;
 template<class T> class Mat_ : public Mat {
 public:
   Mat_(); Mat_(int rows, int cols); Mat_(int rows, int cols, const T& value);
+  Mat_(int rows, int cols, T* data, size_t step = 0);  // a view of data the caller keeps
   Mat_(const Mat& m);
   template<int m, int n> Mat_(const Matx<T, m, n>& values, bool copy = true);
   T& operator()(int r, int c); const T& operator()(int r, int c) const;

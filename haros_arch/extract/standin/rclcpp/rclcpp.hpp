@@ -114,8 +114,8 @@ struct ParameterEvent {
 } }
 namespace rclcpp {
 void init(int argc, char const* const argv[]);
-bool ok();
-bool shutdown();
+bool ok(std::shared_ptr<class Context> context = nullptr);
+bool shutdown(std::shared_ptr<class Context> context = nullptr, const std::string& reason = "");
 void on_shutdown(std::function<void()> callback);
 template<class R, class P> bool sleep_for(const std::chrono::duration<R, P>& d);
 std::vector<std::string> init_and_remove_ros_arguments(int argc, char const* const argv[]);
@@ -211,6 +211,9 @@ public:
   bool operator>=(const Time& o) const;
   bool operator<=(const Time& o) const;
   bool operator==(const Time& o) const;
+  bool operator!=(const Time& o) const;
+  Time& operator+=(const Duration& d);
+  Time& operator-=(const Duration& d);
 };
 class Clock {
 public:
@@ -445,6 +448,8 @@ class SubscriptionBase {
 public:
   RCLCPP_SMART_PTR_DEFINITIONS(SubscriptionBase)
   const char* get_topic_name() const;
+  size_t get_publisher_count() const;
+  rclcpp::QoS get_actual_qos() const;
   std::vector<NetworkFlowEndpoint> get_network_flow_endpoints() const;
   std::shared_ptr<void> create_message();
   bool take_type_erased(void* message, MessageInfo& message_info);
@@ -473,7 +478,11 @@ public:
   void publish(const SerializedMessage& msg);
 };
 class GenericSubscription : public SubscriptionBase { public: RCLCPP_SMART_PTR_DEFINITIONS(GenericSubscription) };
-class ServiceBase { public: RCLCPP_SMART_PTR_DEFINITIONS(ServiceBase) };
+class ServiceBase {
+public:
+  RCLCPP_SMART_PTR_DEFINITIONS(ServiceBase)
+  const char* get_service_name() const;
+};
 template<class S> class Service : public ServiceBase {
 public:
   RCLCPP_SMART_PTR_DEFINITIONS(Service)

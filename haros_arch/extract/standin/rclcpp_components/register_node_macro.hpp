@@ -40,6 +40,9 @@ protected:
 };
 }
 namespace haros_standin { template<class T> struct component_registration { typedef T type; }; }
+// a name of its own per registration (a file may register several components)
+#define HAROS_COMPONENT_NAME2(counter) haros_component_registration_##counter
+#define HAROS_COMPONENT_NAME(counter) HAROS_COMPONENT_NAME2(counter)
 #define RCLCPP_COMPONENTS_REGISTER_NODE(NodeClass) \
-  static haros_standin::component_registration<NodeClass> haros_component_registration;
+  static haros_standin::component_registration<NodeClass> HAROS_COMPONENT_NAME(__COUNTER__);
 #endif

@@ -161,6 +161,17 @@ public:
   template<class T>
   Timer createTimer(Duration period, void (T::*callback)(const TimerEvent&), T* obj,
                     bool oneshot = false, bool autostart = true) const;
+  template<class T>
+  Timer createTimer(Duration period, void (T::*callback)(const TimerEvent&) const, T* obj,
+                    bool oneshot = false, bool autostart = true) const;
+  template<class T>
+  Timer createTimer(Duration period, void (T::*callback)(const TimerEvent&),
+                    const boost::shared_ptr<T>& obj, bool oneshot = false,
+                    bool autostart = true) const;
+  // at a rate: a member function and its object
+  template<class Handler, class Obj>
+  Timer createTimer(Rate r, Handler h, Obj o, bool oneshot = false,
+                    bool autostart = true) const;
   Timer createWallTimer(Duration period, const TimerCallback& callback, bool oneshot = false,
                         bool autostart = true) const;
   template<class T>

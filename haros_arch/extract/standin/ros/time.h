@@ -41,6 +41,7 @@ public:
   static bool waitForValid();
   static bool isSimTime();
   static bool isSystemTime();
+  static bool sleepUntil(const Time& end);
   double toSec() const;
   uint64_t toNSec() const;
   bool isZero() const;

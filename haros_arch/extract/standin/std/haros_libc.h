@@ -116,6 +116,29 @@ typedef __builtin_va_list va_list;
 #define SIG_DFL ((void (*)(int))0)
 #define SIG_IGN ((void (*)(int))1)
 #define errno (*__errno_location())
+// <errno.h>: the error numbers (Linux's values)
+#define EPERM 1
+#define ENOENT 2
+#define EINTR 4
+#define EIO 5
+#define ENXIO 6
+#define EBADF 9
+#define EAGAIN 11
+#define EWOULDBLOCK EAGAIN
+#define ENOMEM 12
+#define EACCES 13
+#define EBUSY 16
+#define EEXIST 17
+#define ENODEV 19
+#define EINVAL 22
+#define ENOSPC 28
+#define EPIPE 32
+#define ERANGE 34
+#define EADDRINUSE 98
+#define ECONNRESET 104
+#define ETIMEDOUT 110
+#define ECONNREFUSED 111
+#define EINPROGRESS 115
 #define assert(expr) ((void)(expr))
 #define CLOCK_MONOTONIC 1
 #define ICANON 2
@@ -343,6 +366,20 @@ int mkdir(const char* path, mode_t mode);
 #define S_IFREG 0100000
 #define S_ISDIR(m) (((m) & S_IFMT) == S_IFDIR)
 #define S_ISREG(m) (((m) & S_IFMT) == S_IFREG)
+#define S_IFCHR 0020000
+#define S_IFBLK 0060000
+#define S_IFLNK 0120000
+#define S_ISCHR(m) (((m) & S_IFMT) == S_IFCHR)
+#define S_ISBLK(m) (((m) & S_IFMT) == S_IFBLK)
+#define S_ISLNK(m) (((m) & S_IFMT) == S_IFLNK)
+// <dirent.h>
+typedef struct haros_DIR DIR;
+struct dirent { unsigned long d_ino; long d_off; unsigned short d_reclen; unsigned char d_type;
+  char d_name[256]; };
+char* realpath(const char* path, char* resolved);
+DIR* opendir(const char* name);
+struct dirent* readdir(DIR* dir);
+int closedir(DIR* dir);
 // <sys/select.h>
 typedef struct { long fds_bits[16]; } fd_set;
 int select(int nfds, fd_set* readfds, fd_set* writefds, fd_set* exceptfds,

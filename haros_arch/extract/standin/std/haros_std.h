@@ -302,19 +302,60 @@ long double stold(const string& s, size_t* pos = nullptr);
 float stof(const string& s, size_t* pos = nullptr);
 double stod(const string& s, size_t* pos = nullptr);
 class string_view {
+  const char* data_ = nullptr;
+  size_t size_ = 0;
 public:
-  string_view();
-  string_view(const char* s);
-  string_view(const char* s, size_t n);
+  constexpr string_view() {}
+  constexpr string_view(const char* s) : data_(s), size_(__builtin_strlen(s)) {}
+  constexpr string_view(const char* s, size_t n) : data_(s), size_(n) {}
   string_view(const string& s);
-  size_t size() const;
-  const char* data() const;
-  bool empty() const;
+  constexpr size_t size() const { return size_; }
+  constexpr size_t length() const { return size_; }
+  constexpr const char* data() const { return data_; }
+  constexpr bool empty() const { return size_ == 0; }
   operator string() const;
 };
 inline namespace literals { inline namespace string_literals {
 string operator""s(const char* s, size_t n);
 } }
+
+// <bitset> (ur_robot_driver's robot mode bits)
+template<size_t N> class bitset {
+public:
+  class reference {
+  public:
+    reference& operator=(bool value);
+    reference& operator=(const reference& other);
+    operator bool() const;
+    bool operator~() const;
+    reference& flip();
+  };
+  constexpr bitset() {}
+  constexpr bitset(unsigned long long value) {}
+  explicit bitset(const string& text, size_t pos = 0, size_t n = size_t(-1));
+  explicit bitset(const char* text);
+  constexpr bool operator[](size_t pos) const { return false; }
+  reference operator[](size_t pos);
+  bool test(size_t pos) const;
+  bool all() const; bool any() const; bool none() const;
+  size_t count() const;
+  constexpr size_t size() const { return N; }
+  bitset& set(); bitset& set(size_t pos, bool value = true);
+  bitset& reset(); bitset& reset(size_t pos);
+  bitset& flip(); bitset& flip(size_t pos);
+  unsigned long to_ulong() const;
+  unsigned long long to_ullong() const;
+  string to_string(char zero = '0', char one = '1') const;
+  bitset& operator&=(const bitset& other); bitset& operator|=(const bitset& other);
+  bitset& operator^=(const bitset& other);
+  bitset operator~() const;
+  bitset operator<<(size_t pos) const; bitset operator>>(size_t pos) const;
+  bitset& operator<<=(size_t pos); bitset& operator>>=(size_t pos);
+  bool operator==(const bitset& other) const; bool operator!=(const bitset& other) const;
+};
+template<size_t N> bitset<N> operator&(const bitset<N>& a, const bitset<N>& b);
+template<size_t N> bitset<N> operator|(const bitset<N>& a, const bitset<N>& b);
+template<size_t N> bitset<N> operator^(const bitset<N>& a, const bitset<N>& b);
 
 // <vector>, <deque>, <list>, <array>, <set>, <map>, <unordered_map>, <queue>
 template<class T, class A = allocator<T>> class vector {
@@ -412,11 +453,16 @@ template<class T, size_t N> struct array {
   constexpr size_t size() const;
   bool empty() const;
   T* data();
+  const T* data() const;
+  T& front(); const T& front() const;
+  T& back(); const T& back() const;
   void fill(const T& v);
   T* begin();
   T* end();
   const T* begin() const;
   const T* end() const;
+  const T* cbegin() const;
+  const T* cend() const;
 };
 template<class K, class V> class haros_map_iterator {
 public:
@@ -714,6 +760,13 @@ public:
 };
 
 // <functional>
+// what std::function's converting constructor refuses, as the library's callable
+// constraint does: numbers, enumerators, pointers to objects (text) and strings
+template<class F> struct haros_not_callable
+    : integral_constant<bool, __is_arithmetic(F) || __is_enum(F)> {};
+template<class T> struct haros_not_callable<T*> : integral_constant<bool, !__is_function(T)> {};
+template<class C, class Tr, class A> struct haros_not_callable<basic_string<C, Tr, A>>
+    : true_type {};
 template<class Signature> class function;
 template<class R, class... A> class function<R(A...)> {
 public:
@@ -722,7 +775,8 @@ public:
   function(nullptr_t) noexcept;
   function(const function& f);
   function(function&& f) noexcept;
-  template<class F> function(F f);
+  template<class F, class = typename enable_if<!haros_not_callable<F>::value>::type>
+  function(F f);
   function& operator=(const function& f);
   function& operator=(nullptr_t) noexcept;
   template<class F> function& operator=(F&& f);
@@ -924,6 +978,10 @@ ostream& operator<<(ostream& os, char c);
 ostream& operator<<(ostream& os, const char* s);
 ostream& operator<<(ostream& os, const string& s);
 template<class T> ostream& operator<<(ostream& os, const T& v);
+// a stream written while a temporary, ``(std::ostringstream() << a << b).str()``: the
+// stream itself comes back (realsense2_camera's STREAM_NAME)
+template<class S, class T, class = typename enable_if<__is_base_of(ostream, S)>::type>
+S&& operator<<(S&& os, const T& v);
 class istream : virtual public ios_base {
 public:
   istream& operator>>(bool& v);
@@ -1301,12 +1359,14 @@ public:
   promise();
   future<T> get_future();
   void set_value(const T& v);
+  template<class E> void set_exception(E e);
 };
 template<> class promise<void> {
 public:
   promise();
   future<void> get_future();
   void set_value();
+  template<class E> void set_exception(E e);
 };
 enum class launch { async = 1, deferred = 2 };
 template<class F, class... A> future<int> async(launch policy, F&& f, A&&... args);

@@ -39,6 +39,7 @@ class LookupException : public TransformException { public: using TransformExcep
 class ConnectivityException : public TransformException { public: using TransformException::TransformException; };
 class ExtrapolationException : public TransformException { public: using TransformException::TransformException; };
 class InvalidArgumentException : public TransformException { public: using TransformException::TransformException; };
+class TimeoutException : public TransformException { public: using TransformException::TransformException; };
 struct TimePointZero_t {};
 extern const TimePointZero_t TimePointZero;
 typedef double tf2Scalar;
@@ -46,6 +47,8 @@ class Quaternion {
 public:
   Quaternion();
   Quaternion(double x, double y, double z, double w);
+  Quaternion(const class Vector3& axis, double angle);
+  Quaternion(double yaw, double pitch, double roll);
   void setRPY(double roll, double pitch, double yaw);
   void setEuler(double yaw, double pitch, double roll);
   void setRotation(const class Vector3& axis, double angle);
@@ -139,11 +142,21 @@ public:
   Vector3 operator*(const Vector3& v) const;
   static const Transform& getIdentity();
 };
+using Duration = std::chrono::nanoseconds;
+using TimePoint = std::chrono::time_point<std::chrono::system_clock, Duration>;
+// a stamped datum: ROS 2's tf2 stamps it with its own TimePoint, ROS 1's with ros::Time
+// (a unit that has included rclcpp is ROS 2's: robot_localization's
+// ``pose.stamp_ = tf2::timeFromSec(...)``)
+#ifdef HAROS_STANDIN_RCLCPP_HPP
+typedef TimePoint haros_stamp_type;
+#else
+typedef ros::Time haros_stamp_type;
+#endif
 template<class T> class Stamped : public T {
 public:
-  Stamped(); Stamped(const T& input, const ros::Time& stamp, const std::string& frame_id);
+  Stamped(); Stamped(const T& input, const haros_stamp_type& stamp, const std::string& frame_id);
   void setData(const T& input);
-  ros::Time stamp_; std::string frame_id_;
+  haros_stamp_type stamp_; std::string frame_id_;
 };
 double angle(const Quaternion& a, const Quaternion& b);
 Vector3 quatRotate(const Quaternion& rotation, const Vector3& v);
@@ -170,15 +183,17 @@ struct Vector3Msg {
 };
 QuaternionMsg toMsg(const Quaternion& q);
 Vector3Msg toMsg(const Vector3& v);
+// a transform becomes geometry_msgs' Transform, a stamped one TransformStamped
+// (robot_localization's ``trans_msg.transform = tf2::toMsg(tf2::Transform::getIdentity())``)
+haros_standin::any_transform toMsg(const Transform& t);
+template<class T> haros_standin::any_transform_stamped toMsg(const Stamped<T>& t);
 template<class A> A toMsg(const A& a);
 template<class A, class B> B& toMsg(const A& a, B& b);
 template<class T> void convert(const T& a, T& b);
 template<class A, class B> void convert(const A& a, B& b);
 double getYaw(const Quaternion& q);
 template<class A> double getYaw(const A& a);
-// tf2/time.h
-using Duration = std::chrono::nanoseconds;
-using TimePoint = std::chrono::time_point<std::chrono::system_clock, Duration>;
+// tf2/time.h (its types: before Stamped)
 Duration durationFromSec(double t_sec);
 TimePoint timeFromSec(double t_sec);
 double durationToSec(const Duration& input);

@@ -45,6 +45,8 @@ public:
 class JointLimits { public: double lower, upper, effort, velocity; };
 class JointDynamics { public: double damping, friction; };
 class JointMimic { public: double offset, multiplier; std::string joint_name; };
+class JointSafety { public: double soft_upper_limit, soft_lower_limit, k_position, k_velocity; };
+class JointCalibration { public: std::shared_ptr<double> rising, falling; double reference_position; };
 class Joint {
 public:
   enum { UNKNOWN, REVOLUTE, CONTINUOUS, PRISMATIC, FLOATING, PLANAR, FIXED } type;
@@ -55,6 +57,8 @@ public:
   std::shared_ptr<JointDynamics> dynamics;
   std::shared_ptr<JointLimits> limits;
   std::shared_ptr<JointMimic> mimic;
+  std::shared_ptr<JointSafety> safety;
+  std::shared_ptr<JointCalibration> calibration;
 };
 class Link;
 typedef std::shared_ptr<Link> LinkSharedPtr;

@@ -1,0 +1,91 @@
+"""A Python name built from an option that argparse parses (intera_interface's joint
+trajectory action server: ``parser.add_argument("-l", "--limb", dest="limb",
+default=valid_limbs[0])``, ``args = parser.parse_args(rospy.myargv()[1:])``, then
+``"/robot/limb/" + limb + "/joint_command"`` in the classes it builds) carries the option's
+flags (``PrimitiveCall.name_option``), and the graph names it with the value the launch
+file's ``args`` give the instance (``--limb right``, ``-l left``, ``--limb=right``); with
+none, or arguments not known statically, the ``?`` stays."""
+
+from __future__ import annotations
+
+import os
+
+from conftest import package_xml
+
+from haros_arch.extract.python import extract_python
+from haros_arch.pipeline import Options, analyse
+from haros_arch.project import load
+from haros_arch.workspace import scan
+
+SERVER = """import argparse
+import rospy
+from std_msgs.msg import String
+
+class Server(object):
+    def __init__(self, limb, mode):
+        ns = "robot/limb/" + limb
+        self._pub = rospy.Publisher(ns + "/joint_command", String, queue_size=1)
+        self._sub = rospy.Subscriber("/robot/" + mode + "/state", String, self.cb)
+    def cb(self, msg):
+        pass
+
+def start(limb, mode, valid):
+    if limb == "all":  # a server per limb the parameter names, else the one asked for
+        for each in valid:
+            Server(each, mode)
+    else:
+        Server(limb, mode)
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("-l", "--limb", dest="limb", default=rospy.get_param("~limb"))
+    parser.add_argument("-m", "--control-mode", default="position")
+    parser.add_argument("rate")
+    args, unknown = parser.parse_known_args(rospy.myargv()[1:])
+    rospy.init_node("server")
+    start(args.limb, args.control_mode, rospy.get_param("~limbs"))
+    rospy.spin()
+
+if __name__ == "__main__":
+    main()
+"""
+
+LAUNCH = """<launch>
+  <node pkg="arm" type="server.py" name="a" args="--limb right --control-mode velocity 100"/>
+  <node pkg="arm" type="server.py" name="b" args="-lleft --control-mode=position 100"/>
+  <node pkg="arm" type="server.py" name="c" args="100"/>
+</launch>
+"""
+
+
+def test_names_from_argparse_options(write_tree) -> None:
+    root = write_tree({
+        "src/arm/package.xml": package_xml("arm"),
+        "src/arm/CMakeLists.txt": "project(arm)\n"
+                                  "catkin_install_python(PROGRAMS scripts/server.py)\n",
+        "src/arm/scripts/server.py": SERVER,
+        "src/arm/launch/arm.launch": LAUNCH,
+        "project.yaml": "project: p\nconfigurations:\n  c: [arm/launch/arm.launch]\n",
+    })
+    ws = scan([str(root / "src")], {})
+    result = extract_python([str(root / "src" / "arm" / "scripts" / "server.py")], ws,
+                            package="arm")
+    assert sorted((c.name, c.name_option or "") for c in result.calls if c.kind != "read") == [
+        ("/robot/?/state", "-m --control-mode"),
+        ("robot/limb/?/joint_command", ""), ("robot/limb/?/joint_command", "-l --limb")]
+    model = analyse(load(str(root / "project.yaml")), {"PATH": os.environ.get("PATH", "")},
+                    Options(cache_dir=None))
+    config = model.configuration("c")
+    names = {(link.node.name, link.kind, link.rosname.full) for link in config.links
+             if link.kind in ("publish", "subscribe")}
+    assert names == {
+        # a server per element of ~limbs (not set: unknown), or the one of --limb
+        ("/a", "publish", "/robot/limb/?/joint_command"),
+        ("/b", "publish", "/robot/limb/?/joint_command"),
+        ("/a", "publish", "/robot/limb/right/joint_command"),
+        ("/a", "subscribe", "/robot/velocity/state"),
+        ("/b", "publish", "/robot/limb/left/joint_command"),
+        ("/b", "subscribe", "/robot/position/state"),
+        ("/c", "publish", "/robot/limb/?/joint_command"),
+        ("/c", "subscribe", "/robot/?/state"),
+    }
