@@ -162,6 +162,7 @@ class Kilted : public nav2::LifecycleNode {
   nav2::CallbackReturn on_configure(const rclcpp_lifecycle::State &) override {
     auto node = shared_from_this();
     nav2::declare_parameter_if_not_declared(node, "cartesian", rclcpp::ParameterValue(true));
+    int port = nav2::declare_or_get_parameter(node, "port", 1667);
     double tolerance = node->declare_or_get_parameter("tolerance", 0.25);
     server_ = node->create_action_server<DockRobot>(
       "follow", std::bind(&Kilted::run, this), nullptr, std::chrono::milliseconds(500), true);
@@ -169,6 +170,7 @@ class Kilted : public nav2::LifecycleNode {
     sub_ = node->create_subscription<nav_msgs::msg::Path>(
       "path", [](nav_msgs::msg::Path::ConstSharedPtr) {}, rclcpp::QoS(3));
     (void)tolerance;
+    (void)port;
     return nav2::CallbackReturn::SUCCESS;
   }
   void run() {}
@@ -207,7 +209,7 @@ def test_nav2_lifecycle_servers(tmp_path) -> None:
                      ("action-server", "dock", "nav2_msgs/action/DockRobot"),
                      ("publish", "bond", "bond/msg/Status"),
                      ("subscribe", "bond", "bond/msg/Status")]
-    assert kilted == [*_LIFECYCLE, ("declare", "cartesian", "bool"),
+    assert kilted == [*_LIFECYCLE, ("declare", "cartesian", "bool"), ("declare", "port", "int"),
                       ("declare", "tolerance", "double"),
                       ("action-server", "follow", "nav2_msgs/action/DockRobot"),
                       ("publish", "plan", "nav_msgs/msg/Path"),

@@ -512,6 +512,9 @@ NAV2: dict[tuple[str, str], RosFunction] = {
     **{(scope, "declare_parameter_if_not_declared"): _NAV2_DECLARE
        for scope in ("nav2_util", "nav2")},
     **{(scope, "get_plugin_type_param"): _NAV2_PLUGIN_TYPE for scope in ("nav2_util", "nav2")},
+    # declare_or_get_parameter(node, name, default or ParameterType): declared unless it
+    # is already, then read (the stand-ins declare only these node-first overloads)
+    **{(scope, "declare_or_get_parameter"): _NAV2_DECLARE for scope in ("nav2_util", "nav2")},
     # Humble's and Jazzy's lifecycle node: add_parameter(name, default, ...) declares it
     ("nav2_util::LifecycleNode", "add_parameter"): dataclasses.replace(
         _RCLCPP_NODE["declare_parameter"], standin_only=True),
@@ -628,6 +631,7 @@ UNRESOLVED_ROS2: dict[str, RosFunction] = {
     # functions the name may be is the stand-in's: ``standin_only``)
     "declare_parameter_if_not_declared": _NAV2_DECLARE,
     "get_plugin_type_param": _NAV2_PLUGIN_TYPE,
+    "declare_or_get_parameter": _NAV2_DECLARE,
 }
 UNRESOLVED_ROS1: dict[str, RosFunction] = {
     name: row for (owner, name), row in ROSCPP.items() if owner == NODE_HANDLE}
