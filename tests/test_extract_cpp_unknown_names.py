@@ -175,7 +175,8 @@ def test_parameter_forms_of_real_nodes() -> None:
     assert [(c.kind, c.name, c.type, c.has_default, c.default) for c in result.calls] == [
         ("declare", "gain", "double", False, None),
         ("declare", "frame_id", "str", True, "map"),
-        ("declare", "map_file", None, True, None),
+        # a ParameterType constant: typed by it, no default
+        ("declare", "map_file", "str", False, None),
         # declare_parameters: each key of the map written there, its value the default
         ("declare", "limits.low", None, True, None),
         ("declare", "limits.high", None, True, None),

@@ -123,6 +123,9 @@ class RosFunction:
     # the same function as ROS 2's library makes the call, where it differs (a class
     # both have, by one name: camera_info_manager's CameraInfoManager)
     ros2: RosFunction | None = None
+    # written before the name argument: a costmap layer's ``declareParameter(name, v)``
+    # declares ``<the layer's name>.name``, the layer's name given at run time (``?.``)
+    name_prefix: str | None = None
     # the row describes our stand-in (of ``standin/fallback`` or ``standin/``: a library
     # installed, not in the workspace): a class of that name declared elsewhere makes no
     # such call (ROS 1 ros_control's ControllerManager: with controller_manager's sources
@@ -489,6 +492,69 @@ ROS2_CONTROL: dict[tuple[str, str], RosFunction] = {
     ("controller_interface::ControllerInterfaceBase", "auto_declare"):
         _RCLCPP_NODE["declare_parameter"],
 }
+# navigation2's libraries as their stand-ins (``standin/fallback``: nav2 installed, not in
+# the workspace) describe them; with their sources in the workspace, their own code is
+# read instead (``standin_only``). ``declare_parameter_if_not_declared(node, name, value)``
+# (nav2_util: Humble, Jazzy; nav2: Kilted and later) declares the parameter on the node
+# given unless it is declared already, as declare_parameter does; a value that is a
+# ParameterType declares it typed, without a default.
+_NAV2_DECLARE = dataclasses.replace(
+    _RCLCPP_NODE["declare_parameter"], name_arg=1, type_arg=2, default_arg=2,
+    standin_only=True)
+# ``get_plugin_type_param(node, plugin)``: declares ``<plugin>.plugin``, a string without
+# default (it throws when the parameter is not set), and reads it
+_NAV2_PLUGIN_TYPE = RosFunction(
+    "declare", fixed_type="str", on_handle=False, name_arg=1, name_suffix=".plugin",
+    suffix_appended=True, standin_only=True)
+# the Kilted lifecycle node's factories: topic first, QoS after the callback
+_NAV2_NODE = "nav2::LifecycleNode"
+NAV2: dict[tuple[str, str], RosFunction] = {
+    **{(scope, "declare_parameter_if_not_declared"): _NAV2_DECLARE
+       for scope in ("nav2_util", "nav2")},
+    **{(scope, "get_plugin_type_param"): _NAV2_PLUGIN_TYPE for scope in ("nav2_util", "nav2")},
+    # declare_or_get_parameter(node, name, default or ParameterType): declared unless it
+    # is already, then read (the stand-ins declare only these node-first overloads)
+    **{(scope, "declare_or_get_parameter"): _NAV2_DECLARE for scope in ("nav2_util", "nav2")},
+    # Humble's and Jazzy's lifecycle node: add_parameter(name, default, ...) declares it
+    ("nav2_util::LifecycleNode", "add_parameter"): dataclasses.replace(
+        _RCLCPP_NODE["declare_parameter"], standin_only=True),
+    # a Humble or Jazzy costmap layer's declareParameter(name, value): on the layer's
+    # node, under the layer's name (Layer::getFullName: ``<name_>.<name>``)
+    ("nav2_costmap_2d::Layer", "declareParameter"): dataclasses.replace(
+        _RCLCPP_NODE["declare_parameter"], name_prefix="?.", standin_only=True),
+    (_NAV2_NODE, "declare_or_get_parameter"): dataclasses.replace(
+        _RCLCPP_NODE["declare_parameter"], standin_only=True),
+    (_NAV2_NODE, "create_publisher"): RosFunction(
+        "publish", type_from=("template",), qos_arg=1, standin_only=True),
+    (_NAV2_NODE, "create_subscription"): RosFunction(
+        "subscribe", type_from=("template", "callback"), callback_arg=1, qos_arg=2,
+        standin_only=True),
+    (_NAV2_NODE, "create_service"): RosFunction(
+        "server", type_from=("template", "service-callback"), callback_arg=1,
+        standin_only=True),
+    (_NAV2_NODE, "create_client"): RosFunction(
+        "client", type_from=("template",), standin_only=True),
+    (_NAV2_NODE, "create_action_server"): RosFunction(
+        "action-server", type_from=("template",), standin_only=True),
+    (_NAV2_NODE, "create_action_client"): RosFunction(
+        "action-client", type_from=("template",), standin_only=True),
+    # createBond(): a bond with the lifecycle manager on topic bond (bondcpp's Bond)
+    **{(f"{scope}::LifecycleNode", "createBond"): RosFunction(
+        "publish", fixed_name="bond", fixed_type="bond/msg/Status", on_handle=False,
+        standin_only=True, siblings=(("subscribe", "", "bond/msg/Status"),))
+       for scope in ("nav2_util", "nav2")},
+    # nav2_costmap_2d's FootprintSubscriber(node, topic, tf, ...): the robot's footprint
+    # (Humble to Kilted alike; its CostmapSubscriber subscribes to topic_updates too
+    # from Jazzy on, so it stays HAROS_UNREAD)
+    ("nav2_costmap_2d::FootprintSubscriber", "FootprintSubscriber"): RosFunction(
+        "subscribe", fixed_type="geometry_msgs/msg/PolygonStamped", on_handle=False,
+        name_arg=1, standin_only=True),
+    # SimpleActionServer<A>(node, name, execute, ...) serves A on the node
+    # (nav2_util's also from four node interfaces, the name after them)
+    **{(f"{scope}::SimpleActionServer", "SimpleActionServer"): RosFunction(
+        "action-server", type_from=("class",), on_handle=False, name_arg=1,
+        name_candidates=(1, 4), standin_only=True) for scope in ("nav2_util", "nav2")},
+}
 # a node's parameters interface (node->get_node_parameters_interface()) has the same
 # parameter methods: slam_toolbox keeps one and declares through it
 RCLCPP_PARAMETERS_INTERFACE = "rclcpp::node_interfaces::NodeParametersInterface"
@@ -521,12 +587,31 @@ RCLCPP_NODE_NAME: dict[tuple[str, str], tuple[int, int]] = {
 }
 # What a node class's constructor creates by itself: rclcpp_lifecycle's LifecycleNode
 # publishes its transitions and serves its state machine under the node's own name.
-IMPLICIT: dict[tuple[str, str], RosFunction] = {
-    ("rclcpp_lifecycle::LifecycleNode", "LifecycleNode"): RosFunction(
-        "publish", fixed_name=f"~{LIFECYCLE_EVENTS[0]}", fixed_type=LIFECYCLE_EVENTS[1],
-        on_handle=False, siblings=tuple(
-            ("server", f"~{name}", kind) for name, kind in LIFECYCLE_SERVICES)),
+_LIFECYCLE = RosFunction(
+    "publish", fixed_name=f"~{LIFECYCLE_EVENTS[0]}", fixed_type=LIFECYCLE_EVENTS[1],
+    on_handle=False, siblings=tuple(
+        ("server", f"~{name}", kind) for name, kind in LIFECYCLE_SERVICES))
+# navigation2's lifecycle node (its stand-in: nav2 installed) is rclcpp_lifecycle's, and
+# its constructor declares and reads bond_heartbeat_period and autostart_node, and
+# declares and sets bond's global /bond_disable_heartbeat_timeout (nav2_util's
+# lifecycle_node.cpp, nav2_ros_common's lifecycle_node.hpp)
+_NAV2_LIFECYCLE_PARAMETERS = RosFunction(
+    "declare", fixed_name="bond_heartbeat_period", fixed_type="double", on_handle=False,
+    library_default=True, call_site=False, siblings=(
+        ("read", "bond_heartbeat_period", "double"), ("declare", "autostart_node", "bool"),
+        ("read", "autostart_node", "bool"),
+        ("declare", "/bond_disable_heartbeat_timeout", "bool"),
+        ("write", "/bond_disable_heartbeat_timeout", "bool")))
+IMPLICIT: dict[tuple[str, str], tuple[RosFunction, ...]] = {
+    ("rclcpp_lifecycle::LifecycleNode", "LifecycleNode"): (_LIFECYCLE,),
+    **{(f"{scope}::LifecycleNode", "LifecycleNode"): (_LIFECYCLE, _NAV2_LIFECYCLE_PARAMETERS)
+       for scope in ("nav2_util", "nav2")},
 }
+# node classes of our stand-ins (``standin_only``): named as rclcpp's, with what
+# ``IMPLICIT`` says they make, only where the class is the stand-in's (with navigation2's
+# sources in the workspace, its own constructor is read)
+STANDIN_NODE_NAME: dict[tuple[str, str], tuple[int, int]] = {
+    (f"{scope}::LifecycleNode", "LifecycleNode"): (0, 1) for scope in ("nav2_util", "nav2")}
 # the constructor argument that, given as false, makes none of them
 # (``LifecycleNode(name, ns, options, false)``: enable_communication_interface; the
 # controllers of ros2_control make their nodes so, controller_interface_base.cpp:77)
@@ -542,12 +627,18 @@ RCLCPP_SUB_NODE: dict[tuple[str, str], int] = {("rclcpp::Node", "create_sub_node
 UNRESOLVED_ROS2: dict[str, RosFunction] = {
     **_RCLCPP_NODE,
     "create_server": LIBRARIES[("rclcpp_action", "create_server")],
+    # nav2's helpers called with a node of a template parameter (only where one of the
+    # functions the name may be is the stand-in's: ``standin_only``)
+    "declare_parameter_if_not_declared": _NAV2_DECLARE,
+    "get_plugin_type_param": _NAV2_PLUGIN_TYPE,
+    "declare_or_get_parameter": _NAV2_DECLARE,
 }
 UNRESOLVED_ROS1: dict[str, RosFunction] = {
     name: row for (owner, name), row in ROSCPP.items() if owner == NODE_HANDLE}
 
 ALL: dict[tuple[str, str], RosFunction] = {**ROSCPP, **LIBRARIES, **RCLCPP,
-                                            **RCLCPP_LIBRARIES, **ROS2_CONTROL, **AUTOWARE}
+                                            **RCLCPP_LIBRARIES, **ROS2_CONTROL, **AUTOWARE,
+                                            **NAV2}
 
 # ``nh.subscribe(ops)`` / ``nh.advertise(ops)`` / ``nh.advertiseService(ops)``: the call is
 # made there (its handle, location and conditions), with the name, queue and type of the

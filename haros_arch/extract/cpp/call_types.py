@@ -180,11 +180,12 @@ class CallTypes:
                     # ros::service::call(name, request, response): the request names its
                     # service
                     found = self._message(ctype, spec.kind in ("client", "server"))
-                else:
+                else:  # the value a ParameterValue holds; a ParameterType constant
                     found = msg_types.param_type(ctype)
                     if found is None:
                         held = _parameter_value_of(arg)
-                        found = msg_types.param_type(held.type) if held is not None else None
+                        found = msg_types.param_type(held.type) if held is not None else (
+                            msg_types.parameter_type_constant(arg))
             elif source == "result" and call.kind == CursorKind.CALL_EXPR:
                 found = msg_types.param_type(call.type)
             if found is not None:

@@ -18,6 +18,8 @@ are equal exactly when ``clang_equalCursors`` says so.
 from __future__ import annotations
 
 import ctypes
+import functools
+import os
 import sys
 import threading
 from collections.abc import Callable, Iterator
@@ -647,3 +649,20 @@ class Node(Cursor):
 
     def is_definition(self) -> bool:
         return self._is_definition
+
+
+_STANDIN = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "standin")
+
+
+def from_standin(target: Cursor | None) -> bool:
+    """Whether ``target`` (the function, constructor or class a call names) is declared
+    in one of our stand-ins (``standin/``, ``standin/fallback`` included), not in a header
+    of the workspace."""
+    if target is None or target.location.file is None:
+        return False
+    return _in_standin(target.location.file.name)
+
+
+@functools.lru_cache(maxsize=1024)
+def _in_standin(path: str) -> bool:
+    return os.path.realpath(path).startswith(os.path.realpath(_STANDIN) + os.sep)

@@ -86,7 +86,10 @@ FALLBACK = os.path.join(STANDIN, "fallback")
 # umbrella there (PCL's many headers: ``pcl/segmentation/extract_clusters.h``)
 FALLBACK_UMBRELLAS = {"pcl/": "pcl/haros_pcl.h",
                       "pcl_conversions/": "pcl_conversions/pcl_conversions.h",
-                      "pcl_ros/": "pcl_ros/haros_pcl_ros.h"}
+                      "pcl_ros/": "pcl_ros/haros_pcl_ros.h",
+                      # navigation2's libraries, for its plugins outside navigation2
+                      **{f"{p}/": f"{p}/haros_{p}.h" for p in (
+                          "nav2_util", "nav2_ros_common", "nav2_core", "nav2_costmap_2d")}}
 # CXTranslationUnit_ForSerialization | Incomplete (a header, not a whole program)
 _PCH_OPTIONS = 0x10 | 0x02
 # a second folder of synthesised headers, for a header whose name is a folder of others

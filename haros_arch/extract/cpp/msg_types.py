@@ -12,6 +12,8 @@ from collections.abc import Mapping
 
 from clang.cindex import Cursor, CursorKind, Type, TypeKind
 
+from .expressions import strip
+
 _RECORDS = (CursorKind.STRUCT_DECL, CursorKind.CLASS_DECL, CursorKind.CLASS_TEMPLATE,
             CursorKind.CLASS_TEMPLATE_PARTIAL_SPECIALIZATION)
 _POINTERS = ("shared_ptr", "MessageEvent", "unique_ptr")
@@ -220,3 +222,42 @@ def _namespaces(cursor: Cursor | None) -> list[str]:
         scopes.append(cursor.spelling)
         cursor = cursor.semantic_parent
     return scopes[::-1]
+
+
+PARAMETER_VALUE = "rclcpp::ParameterValue"
+# the parameter types rclcpp's ParameterType constants name (``rclcpp::PARAMETER_DOUBLE``)
+PARAMETER_TYPE_NAMES = {
+    "PARAMETER_BOOL": "bool", "PARAMETER_INTEGER": "int", "PARAMETER_DOUBLE": "double",
+    "PARAMETER_STRING": "str", "PARAMETER_BOOL_ARRAY": "bool[]",
+    "PARAMETER_INTEGER_ARRAY": "int[]", "PARAMETER_DOUBLE_ARRAY": "double[]",
+    "PARAMETER_STRING_ARRAY": "str[]",
+}
+_BUILDS = frozenset({CursorKind.CALL_EXPR, CursorKind.CXX_FUNCTIONAL_CAST_EXPR,
+                     CursorKind.UNEXPOSED_EXPR, CursorKind.INIT_LIST_EXPR})
+
+
+def held_value(expr: Cursor) -> Cursor:
+    """What an ``rclcpp::ParameterValue`` built of one value (``ParameterValue(0.4)``,
+    ``ParameterValue{true}``, as nav2's ``declare_parameter_if_not_declared`` is given
+    its default) is built of; ``expr`` itself otherwise."""
+    node, descended = strip(expr), False
+    for _ in range(8):
+        if node.kind not in _BUILDS or (
+            node.type.get_canonical().spelling.removeprefix("const ") != PARAMETER_VALUE
+        ):
+            return node if descended else expr
+        inner = [c for c in node.get_children() if c.kind.is_expression()]
+        if len(inner) != 1:
+            return expr
+        node, descended = strip(inner[0]), True
+    return expr
+
+
+def parameter_type_constant(expr: Cursor) -> str | None:
+    """The parameter type an ``rclcpp::ParameterType`` constant names
+    (``rclcpp::PARAMETER_DOUBLE``: a declaration typed, with no default), else None."""
+    node = strip(expr)
+    target = node.referenced if node.kind == CursorKind.DECL_REF_EXPR else None
+    if target is None or target.kind != CursorKind.ENUM_CONSTANT_DECL:
+        return None
+    return PARAMETER_TYPE_NAMES.get(target.spelling)

@@ -11,10 +11,11 @@ from __future__ import annotations
 import re
 from collections.abc import Callable
 
-from clang.cindex import Cursor, CursorKind, TypeKind, conf
+from clang.cindex import Cursor, CursorKind, Type, TypeKind, conf
 
 from . import api
 from .call_types import factory_made, template_argument
+from .cursors import from_standin
 from .handles import qualified_name
 from .values import initializer, strip
 
@@ -99,6 +100,7 @@ def _construction(call: Cursor, owned: Callable[[str], bool]
 # the node classes whose object a node's code hands to other code (``*this`` of a class
 # derived from one, or an expression of one of these types)
 _NODE_CLASSES = ("rclcpp::Node", "rclcpp_lifecycle::LifecycleNode", "ros::NodeHandle")
+_SMART_POINTERS = frozenset({"shared_ptr", "weak_ptr", "unique_ptr"})
 _NODE_TYPE = re.compile(r"\b(?:rclcpp::Node|rclcpp_lifecycle::LifecycleNode|ros::NodeHandle|"
                         r"rclcpp::node_interfaces::Node(?:Topics|Services|Parameters)Interface)\b")
 
@@ -225,7 +227,29 @@ def _is_node(arg: Cursor) -> bool:
         return _derives_from_node(expr.type.get_pointee().get_declaration(), 0)
     if expr.kind == CursorKind.CALL_EXPR and expr.spelling == "shared_from_this":
         return True
-    return _NODE_TYPE.search(arg.type.get_canonical().spelling) is not None
+    canonical = arg.type.get_canonical()
+    if _NODE_TYPE.search(canonical.spelling) is not None:
+        return True
+    # a node class of our stand-ins (navigation2's lifecycle nodes, when navigation2 is
+    # installed: ``auto node = shared_from_this();`` in a class deriving nav2_util's)
+    decl = _pointee(canonical).get_declaration()
+    return from_standin(decl) and _derives_from_node(decl, 0)
+
+
+def _pointee(ctype: Type) -> Type:
+    """What a reference, pointer or smart pointer (``std::shared_ptr<T>``,
+    ``weak_ptr``, ``unique_ptr``) type refers to."""
+    for _ in range(MAX_DEPTH):
+        if ctype.kind in (TypeKind.LVALUEREFERENCE, TypeKind.RVALUEREFERENCE,
+                          TypeKind.POINTER):
+            ctype = ctype.get_pointee().get_canonical()
+        elif ctype.get_declaration().spelling in _SMART_POINTERS and (
+            ctype.get_num_template_arguments() > 0
+        ):
+            ctype = ctype.get_template_argument_type(0).get_canonical()
+        else:
+            break
+    return ctype
 
 
 def _derives_from_node(cls: Cursor, depth: int) -> bool:

@@ -13,7 +13,6 @@ from __future__ import annotations
 import dataclasses
 import functools
 import itertools
-import os
 import re
 from collections.abc import Callable, Iterator
 from typing import Any
@@ -30,7 +29,7 @@ from .call_sites import CallSites
 from .call_types import CallTypes, factory_made, row_class
 from .call_types import callee as callee_of_call
 from .conditions import ConditionReader
-from .cursors import children_in, release, root
+from .cursors import children_in, from_standin, overloads, release, root
 from .expressions import binary_operator
 from .handles import (
     Namespaces,
@@ -90,7 +89,8 @@ FUNCTIONS = frozenset({
     CursorKind.DESTRUCTOR, CursorKind.FUNCTION_TEMPLATE, CursorKind.CONVERSION_FUNCTION,
 })
 _API_NAMES = frozenset(
-    [name for _, name in [*api.ALL, *api.NODE_NAME, *api.RCLCPP_NODE_NAME, *api.FACTORIES]]
+    [name for _, name in [*api.ALL, *api.NODE_NAME, *api.RCLCPP_NODE_NAME,
+                          *api.STANDIN_NODE_NAME, *api.FACTORIES]]
     + [parameter_library.LISTENER])
 MAX_DEPTH = 16
 # the text after a call whose result the code looks one key up in (``_looked_up``)
@@ -123,8 +123,6 @@ _ZEROED: dict[TypeKind, object] = {
 _API_CLASSES = frozenset(owner for owner, _ in [*api.ALL, *api.OPTIONS]) | api.HANDLE_CLASSES
 # what can build an object (``_unseen_class``)
 _MAKES = frozenset({CursorKind.CALL_EXPR, CursorKind.VAR_DECL, CursorKind.CXX_NEW_EXPR})
-# the standard factories that build their template argument with their arguments
-_FACTORIES = frozenset({"make_shared", "make_unique"})
 MAX_SITE_DEPTH = 3  # constructors of constructors whose sites' conditions are followed
 _PREPROCESSED = frozenset({CursorKind.MACRO_INSTANTIATION, CursorKind.INCLUSION_DIRECTIVE})
 _PARAM_KINDS = ("read", "declare")
@@ -496,7 +494,17 @@ class CallFinder:
     # -- one call ---------------------------------------------------------------------
 
     def _row(self, call: Cursor) -> tuple[api.RosFunction | None, Cursor | None]:
-        """The API row a call matches and the class whose template argument types it."""
+        """The API row a call matches and the class whose template argument types it; a
+        row of our stand-in only (``standin_only``) where the function is the stand-in's
+        (with navigation2's sources in the workspace, its own code is read)."""
+        spec, cls = self._any_row(call)
+        if spec is not None and spec.standin_only and not from_standin(
+                cls if cls is not None and cls.kind != CursorKind.NO_DECL_FOUND
+                else call.referenced):
+            return None, None
+        return spec, cls
+
+    def _any_row(self, call: Cursor) -> tuple[api.RosFunction | None, Cursor | None]:
         target = call.referenced
         if target is None:
             return None, None
@@ -558,14 +566,16 @@ class CallFinder:
         if declared is not None:
             self._listener(call, args, declared, conditions, scope)
             return
-        if key in api.RCLCPP_NODE_NAME:
-            self._node_name(api.RCLCPP_NODE_NAME[key], args, scope)
+        node_name = api.RCLCPP_NODE_NAME.get(key)
+        if node_name is None and key in api.STANDIN_NODE_NAME and from_standin(made or target):
+            node_name = api.STANDIN_NODE_NAME[key]  # the stand-in's class, not the real one
+        if node_name is not None:
+            self._node_name(node_name, args, scope)
             switch = api.IMPLICIT_SWITCH.get(key)
-            if key in api.IMPLICIT and not (
-                switch is not None and switch < len(args)
-                and scope.boolean(args[switch]) is False
-            ):
-                self._emit(api.IMPLICIT[key], call, args, None, conditions, scope)
+            if not (switch is not None and switch < len(args)
+                    and scope.boolean(args[switch]) is False):
+                for implicit in api.IMPLICIT.get(key, ()):
+                    self._emit(implicit, call, args, None, conditions, scope)
             return
         spec, cls = self._row(call)
         if spec is not None and len(args) == 1 and record_class(args[0]) is not None and (
@@ -605,6 +615,18 @@ class CallFinder:
         if spec is None or (spec.kind == "action-server" and "rclcpp_action" not in
                             _callee_text(call)):
             return
+        if spec.standin_only:  # a dependent call of a stand-in's function (of nav2's
+            # declare_parameter_if_not_declared in a template): one of the overloads its
+            # name may be is the stand-in's row
+            heads = list(call.get_children())[:1]
+            found = [d for head in heads for child in [head, *head.get_children()]
+                     if child.kind == CursorKind.OVERLOADED_DECL_REF
+                     for d in overloads(child) if d is not None]
+            if not any(from_standin(d) and api.ALL.get(
+                    (qualified_name(d.semantic_parent), d.spelling)) is not None
+                       for d in found):
+                return
+            spec = dataclasses.replace(spec, standin_only=False)
         if spec.name_candidates or (self.ros2 and spec.on_handle):
             # ROS 2: made on the node itself, in its namespace
             spec = dataclasses.replace(spec, name_candidates=(), on_handle=False)
@@ -783,11 +805,8 @@ class CallFinder:
         as a name declared permissively (its package is not in the workspace:
         ``CPP_NODE_TO_UNKNOWN``, the node is partial): what it does with the node is
         not read."""
-        if self.declared is None:
-            return
-        target = call.referenced
-        where = target.location.file if target is not None else None
-        if where is None or (where.name != self.declared and not self._makes_declared(call)):
+        unknown = self._unknown_callee(call)
+        if unknown is None:
             return
         key = place_of(call)
         if key in self._unknown:
@@ -797,11 +816,8 @@ class CallFinder:
             return  # a callback binding: the member's calls are read where it is defined
         if given:  # once per place (a conversion of the made object starts there too)
             self._unknown.add(key)
-            name = call.spelling
-            if name in _FACTORIES and where is not None and where.name != self.declared:
-                # the class the factory builds (``make_unique<C>``)
-                name = call.type.get_canonical().get_template_argument_type(0).spelling
-            elif not name or name == synthesis.ANY or name.startswith("operator"):
+            name = call.spelling if unknown is call.referenced else qualified_name(unknown)
+            if not name or name == synthesis.ANY or name.startswith("operator"):
                 # a declared class's construction (its constructor is the permissive
                 # base's) or a call on such an object: the type, else the text
                 name = call.type.spelling
@@ -813,19 +829,30 @@ class CallFinder:
                 "CPP_NODE_TO_UNKNOWN", self.where(call),
                 given="".join(t.spelling for t in given[0].get_tokens())[:60], name=name))
 
-    def _makes_declared(self, call: Cursor) -> bool:
-        """Whether ``call`` is ``std::make_shared<C>(args)`` / ``std::make_unique<C>(args)``
-        of a class ``C`` declared permissively: it builds ``C`` with those arguments
-        (interactive_marker_twist_server gives its node's interfaces to
-        ``make_unique<interactive_markers::InteractiveMarkerServer>(...)``)."""
-        if call.spelling not in _FACTORIES:
-            return False
-        made = call.type.get_canonical()
-        if made.get_num_template_arguments() < 1:
-            return False
-        decl = made.get_template_argument_type(0).get_canonical().get_declaration()
-        where = decl.location.file if decl is not None else None
-        return where is not None and where.name == self.declared
+    def _unknown_callee(self, call: Cursor) -> Cursor | None:
+        """What ``call`` runs whose code the parse does not have: a function or class
+        declared permissively (in the synthesised header), a class a stand-in declares
+        only so that code using it parses (``HAROS_UNREAD``: nav2_costmap_2d's
+        CostmapSubscriber), built directly or by ``make_shared`` / ``make_unique``."""
+        target = call.referenced
+        if target is None:
+            return None
+        if target.spelling in FACTORY_NAMES and (
+            qualified_name(target.semantic_parent), target.spelling
+        ) in api.FACTORIES:
+            made = factory_made(call)
+            return made if made is not None and (
+                self._declared_here(made) or _unread(made)) else None
+        if self._declared_here(target):
+            return target
+        if target.kind == CursorKind.CONSTRUCTOR and _unread(target.semantic_parent):
+            return target.semantic_parent
+        return None
+
+    def _declared_here(self, decl: Cursor) -> bool:
+        """Whether ``decl`` is in the header of names declared permissively."""
+        where = decl.location.file
+        return where is not None and self.declared is not None and where.name == self.declared
 
     def _options(self, expr: Cursor,
                  scope: Scope) -> tuple[api.RosFunction, Cursor, Scope] | None:
@@ -923,7 +950,7 @@ class CallFinder:
                   at: Cursor | None = None, at_scope: Scope | None = None) -> None:
         """Emit ``call`` of ``spec``; ``at`` is the call that makes it, when another one
         (``nh.subscribe(ops)`` for ``ops.init<M>(...)``) gives its location and handle."""
-        if spec.standin_only and not _from_standin(
+        if spec.standin_only and not from_standin(
                 cls if cls is not None and cls.kind != CursorKind.NO_DECL_FOUND
                 else (at or call).referenced):
             return  # the class of that name is not our stand-in's: its code is read
@@ -978,6 +1005,8 @@ class CallFinder:
             names = [("", None)] if name_expr is None else self._names(
                 spec, call, name_expr, args, scope)
             elsewhere = list(sites.elsewhere) if sites is not None else []
+            if spec.name_prefix is not None:
+                names = [(spec.name_prefix + name, source) for name, source in names]
             if spec.empty_is_none:
                 names = [(name, source) for name, source in names if name]
                 if not names:
@@ -1430,7 +1459,9 @@ class CallFinder:
             index = spec.out_arg  # nh.param<T>(name, default) returns the value
         if index >= len(args):
             return False, None
-        value = _literal(args[index], scope)
+        if msg_types.parameter_type_constant(args[index]) is not None:
+            return False, None  # declare_parameter(name, rclcpp::PARAMETER_DOUBLE): typed
+        value = _literal(msg_types.held_value(args[index]), scope)
         if value is None and spec.out_arg is not None and spec.out_arg < len(args) \
                 and index != spec.out_arg and _same_variable(args[index], args[spec.out_arg]):
             # ``nh.param("topic", topic, topic)``: the default is what the variable holds
@@ -1452,6 +1483,18 @@ class CallFinder:
         self._emit(spec, field, [], decl, (), Scope(None, self.macros, self.source, self.sites))
 
 
+UNREAD = "haros_unread"  # the annotation of a stand-in's class whose calls no row says
+
+
+def _unread(cls: Cursor | None) -> bool:
+    """Whether ``cls`` is a class of our stand-ins marked ``HAROS_UNREAD``: declared so
+    that code using it parses, while what it makes on the node it is given is not
+    described (nav2_costmap_2d's CostmapSubscriber subscribes to a costmap topic)."""
+    return cls is not None and from_standin(cls) and any(
+        child.kind == CursorKind.ANNOTATE_ATTR and child.spelling == UNREAD
+        for child in cls.get_children())
+
+
 def _default_constructible(cls: Cursor) -> bool:
     """Whether a member of class ``cls`` can be made with no argument: it declares no
     constructor, or one whose parameters all have defaults."""
@@ -1462,22 +1505,6 @@ def _default_constructible(cls: Cursor) -> bool:
         for c in constructors)
 
 
-_STANDIN = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))),
-                        "standin")
-
-
-def _from_standin(target: Cursor | None) -> bool:
-    """Whether ``target`` (the function or constructor a call names) is declared in one
-    of our stand-ins (``standin/``, ``standin/fallback`` included), not in a header of the
-    workspace."""
-    if target is None or target.location.file is None:
-        return False
-    return _in_standin(target.location.file.name)
-
-
-@functools.lru_cache(maxsize=1024)
-def _in_standin(path: str) -> bool:
-    return os.path.realpath(path).startswith(os.path.realpath(_STANDIN) + os.sep)
 
 
 # classes whose VAR_DECL children are static data members

@@ -36,7 +36,7 @@ from ...model.conditions import Condition
 from . import api, msg_types
 from .call_sites import closest, default_argument, delegation, is_constructor
 from .call_types import template_argument
-from .cursors import Node, overloads
+from .cursors import Node, from_standin, overloads
 from .handles import callback, callback_name, is_handle, join_name, qualified_name
 from .qos import qos as qos_of
 from .values import (
@@ -422,7 +422,9 @@ class Wrappers:
                     yield wrapper, args, None, callee
             spec, cls = self.finder._row(call)
             if spec is not None:
-                yield Wrapper(spec), args, cls, None
+                # (a stand-in's row, checked by ``_row`` here: a wrapper's callers are no
+                # stand-in's functions)
+                yield Wrapper(dataclasses.replace(spec, standin_only=False)), args, cls, None
             return
         for callee in self._constructed(call, args):
             for wrapper in self.summaries.get(callee, ()):
@@ -448,8 +450,10 @@ class Wrappers:
             for wrapper in self.summaries.get(callee, ()):
                 yield wrapper, args, None, callee
             spec = api.ALL.get((qualified_name(decl.semantic_parent), decl.spelling))
-            if spec is not None:
-                yield Wrapper(spec), args, None, None
+            if spec is not None and (not spec.standin_only or from_standin(decl)):
+                # (a stand-in's row checked here, on the declaration the call may be of:
+                # a dependent call names none)
+                yield Wrapper(dataclasses.replace(spec, standin_only=False)), args, None, None
 
     def _lift(self, function: Cursor, inner: Wrapper, call: Cursor, args: list[Cursor],
               cls: Cursor | None) -> Wrapper | None:
