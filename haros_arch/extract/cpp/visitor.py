@@ -1048,6 +1048,13 @@ class CallFinder:
                     holds = (declared[1], declared[2])
         has_default, default = self._default(spec, args, scope)
         has_default = has_default or spec.library_default
+        # rclcpp's declare_parameter(name, rclcpp::PARAMETER_STRING) leaves a parameter no
+        # override sets uninitialised and does not throw (node_parameters.cpp): only a
+        # later read that needs the value fails, as with rclpy's declaration of a type
+        # (phidgets_drivers: then ``if (get_parameter("server_name", server_name_))``)
+        typed_only = spec.kind == "declare" and spec.default_arg is not None and (
+            spec.default_arg < len(args)
+        ) and msg_types.parameter_type_constant(args[spec.default_arg]) is not None
         if spec.kind in ("read", "declare"):
             default = _converted(default, ctype)
         program_arg = program_argument(arg(spec.type_arg), scope) if (
@@ -1091,7 +1098,7 @@ class CallFinder:
                 name_default=source[1] if source else holds[0],
                 default_param=source[2] if source else holds[1],
                 name_each=source[3] if source else None,
-                has_default=has_default, default=default,
+                has_default=has_default, default=default, tested=typed_only,
                 searched=spec.searched, handle_namespace=handle_namespace,
                 deletes=spec.deletes, node_name=owner, transport=transport,
                 made_in=made_in, program_arg=program_arg,
