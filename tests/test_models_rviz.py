@@ -30,6 +30,15 @@ Visualization Manager:
         - Class: rviz/Map
           Enabled: true
           Topic: /map
+        - Class: rviz/Image
+          Enabled: true
+          Image Topic: /camera/image_raw
+        - Class: rviz/MarkerArray
+          Enabled: true
+          Marker Topic: /planner/markers
+        - Class: rviz/Image
+          Enabled: true
+          Image Topic: ""
     - Class: rviz/Group
       Enabled: false
       Displays:
@@ -57,7 +66,7 @@ Visualization Manager:
         Reliability Policy: Reliable
       Update Topic:
         Value: map_updates
-    - Class: nav2_rviz_plugins/ParticleCloud
+    - Class: nav2_rviz_plugins/ParticleFilter
       Enabled: true
       Topic:
         Value: particle_cloud
@@ -100,6 +109,10 @@ def test_ros1_enabled_displays_subscribe_and_tools_publish(tmp_path: Path) -> No
         ("subscribe", "/front/scan", "sensor_msgs/LaserScan"),
         ("subscribe", "/map", "nav_msgs/OccupancyGrid"),
         ("subscribe", "/map_updates", "map_msgs/OccupancyGridUpdate"),
+        # ROS 1's image display names its property "Image Topic", markers "Marker
+        # Topic"; a display with an empty topic subscribes to nothing
+        ("subscribe", "/camera/image_raw", "sensor_msgs/Image"),
+        ("subscribe", "/planner/markers", "visualization_msgs/MarkerArray"),
         # the disabled group's path display subscribes to nothing
         ("subscribe", "/twist_marker_server/update",
          "visualization_msgs/InteractiveMarkerUpdate"),
@@ -127,7 +140,7 @@ def test_ros2_displays_take_their_qos_and_an_unknown_class_makes_rviz_partial(
     assert "/particle_cloud" not in by_name
     assert not rviz.is_complete
     assert rviz.completeness_reasons == [
-        "display nav2_rviz_plugins/ParticleCloud of view.rviz is not known: it may "
+        "display nav2_rviz_plugins/ParticleFilter of view.rviz is not known: it may "
         "subscribe or publish anything"]
 
 

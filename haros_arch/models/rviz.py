@@ -61,8 +61,12 @@ _DISPLAYS: dict[str, tuple[str, str] | None] = {
     "FluidPressure": ("sensor_msgs", "FluidPressure"),
     "WrenchStamped": ("geometry_msgs", "WrenchStamped"),
     "Wrench": ("geometry_msgs", "WrenchStamped"), "Point": ("geometry_msgs", "PointStamped"),
+    "PointStamped": ("geometry_msgs", "PointStamped"),
+    "TwistStamped": ("geometry_msgs", "TwistStamped"),
+    "AccelStamped": ("geometry_msgs", "AccelStamped"),
     "GridCells": ("nav_msgs", "GridCells"), "Effort": ("sensor_msgs", "JointState"),
     "Imu": ("sensor_msgs", "Imu"),
+    "ParticleCloud": ("nav2_msgs", "ParticleCloud"),  # nav2_rviz_plugins' (amcl's particles)
 }
 # a tool -> (ROS 1 topic, ROS 2 topic, package, message) it publishes by default; None:
 # a tool that publishes nothing
@@ -75,7 +79,7 @@ _TOOLS: dict[str, tuple[str, str, str, str] | None] = {
     "PublishPoint": ("clicked_point", "clicked_point", "geometry_msgs", "PointStamped"),
 }
 # panels of rviz itself, which make no ROS call
-_PANELS = {"Displays", "Selection", "Tool Properties", "Views", "Time"}
+_PANELS = {"Displays", "Selection", "Tool Properties", "Views", "Time", "Help"}
 _DURABILITY = {"Volatile": "volatile", "Transient Local": "transient_local"}
 _RELIABILITY = {"Reliable": "reliable", "Best Effort": "best_effort"}
 _HISTORY = {"Keep Last": "keep_last", "Keep All": "keep_all"}
@@ -202,10 +206,11 @@ def _displays(displays: Any, ros2: bool, where: Any, calls: list[PrimitiveCall],
             _robot_model(display, ros2, where, calls)
         if message is None:
             continue
-        key = "Marker Topic" if kind in ("Marker", "MarkerArray") and not ros2 else "Topic"
-        if kind == "Camera" and not ros2:
-            key = "Image Topic"
-        name, qos = _topic(display.get(key) if key in display else display.get("Topic"))
+        # ROS 1 names the property after what it shows: "Marker Topic" (markers),
+        # "Image Topic" (Image, Camera); ROS 2 calls each "Topic"
+        key = next((k for k in ("Topic", "Image Topic", "Marker Topic") if k in display),
+                   None)
+        name, qos = _topic(display.get(key)) if key is not None else (None, None)
         if name is None:
             continue
         calls.append(PrimitiveCall("subscribe", name, _type(*message, ros2), qos=qos,
