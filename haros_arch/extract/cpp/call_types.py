@@ -183,30 +183,14 @@ class CallTypes:
                 else:  # the value a ParameterValue holds; a ParameterType constant
                     found = msg_types.param_type(ctype)
                     if found is None:
-                        held = _parameter_value_of(arg)
-                        found = msg_types.param_type(held.type) if held is not None else (
+                        held = msg_types.held_value(arg)
+                        found = msg_types.param_type(held.type) if held is not arg else (
                             msg_types.parameter_type_constant(arg))
             elif source == "result" and call.kind == CursorKind.CALL_EXPR:
                 found = msg_types.param_type(call.type)
             if found is not None:
                 return found
         return None
-
-
-def _parameter_value_of(expr: Cursor) -> Cursor | None:
-    """The value an ``rclcpp::ParameterValue`` is built of (``ParameterValue(v)``,
-    ``ParameterValue{v}``: beluga's ``declare_parameter("laser_model_type",
-    rclcpp::ParameterValue(std::string(kLikelihoodFieldModelName)), descriptor)``), whose
-    type is the parameter's; None for another expression."""
-    expr = strip(expr)
-    if expr.type.get_declaration().spelling != "ParameterValue":
-        return None
-    inner = [c for c in expr.get_children() if c.kind.is_expression()]
-    while len(inner) == 1 and strip(inner[0]).type.get_declaration().spelling == (
-        "ParameterValue"
-    ):  # the copy of a temporary
-        inner = [c for c in strip(inner[0]).get_children() if c.kind.is_expression()]
-    return strip(inner[0]) if len(inner) == 1 else None
 
 
 def _held_parameters(args: list[Cursor], index: int | None) -> list[Type]:
