@@ -95,7 +95,7 @@ def command_node(decl: NodeDecl) -> Node | None:
             decl.ros_version == 1):
         return _spawner(decl, words)
     if by_arguments(decl):
-        return _ros2_spawner(decl, _program_words(decl.args))
+        return _ros2_spawner(decl, program_words(decl.args))
     return None
 
 
@@ -155,7 +155,7 @@ _SPAWNER_TYPES = {verb: "controller_manager_msgs/srv/" + "".join(
                  "switch_controller", "unload_controller")}
 
 
-def _program_words(args: str) -> list[str]:
+def program_words(args: str) -> list[str]:
     """The words a ROS 2 program's own parser sees: those outside ``--ros-args ...
     [--]``, which rclpy's ``remove_ros_args`` takes away."""
     return split_arguments(_split(args))[0]

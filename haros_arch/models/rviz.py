@@ -26,7 +26,6 @@ the parameter its ``Robot Description`` names.
 from __future__ import annotations
 
 import os
-import shlex
 from dataclasses import replace
 from typing import Any
 
@@ -38,6 +37,7 @@ from ..diagnostics import Diagnostic
 from ..launch.model import NodeDecl
 from ..model.source import Node, PrimitiveCall
 from ..workspace import Workspace
+from .commands import program_words
 
 RVIZ = {("rviz", "rviz"), ("rviz2", "rviz2")}
 MAX_BYTES = 2_000_000  # a configuration larger than this is not read
@@ -90,10 +90,7 @@ def config_file(decl: NodeDecl) -> str | None:
     file that exists; None otherwise (no ``-d``, or a path not known statically)."""
     if (decl.package, decl.executable) not in RVIZ:
         return None
-    try:
-        words = shlex.split(decl.args)
-    except ValueError:
-        words = decl.args.split()
+    words = program_words(decl.args)
     for i, word in enumerate(words):
         path = None
         if word in ("-d", "--display-config") and i + 1 < len(words):
@@ -135,8 +132,8 @@ def with_displays(decl: NodeDecl, base: Node | None, workspace: Workspace,
         return None
     ros2 = decl.ros_version == 2
     calls: list[PrimitiveCall] = [
-        PrimitiveCall("subscribe", name, _type("tf2_msgs", "TFMessage", ros2),
-                      location=where, origin="config") for name in ("/tf", "/tf_static")]
+        _config_call("subscribe", name, _type("tf2_msgs", "TFMessage", ros2), where)
+        for name in ("/tf", "/tf_static")]
     unknown: list[str] = []
     _displays(manager.get("Displays"), ros2, where, calls, unknown)
     for tool in manager.get("Tools") or ():
@@ -161,6 +158,12 @@ def with_displays(decl: NodeDecl, base: Node | None, workspace: Workspace,
     node.model = (base.model if base is not None and base.model else "rviz") + (
         f" with the displays of {path}")
     return node
+
+
+def _config_call(kind: Any, name: str, type_: str, where: Any,
+                 qos: dict[str, Any] | None = None) -> PrimitiveCall:
+    """A call of the configuration (links of origin ``config``), at its file."""
+    return PrimitiveCall(kind, name, type_, qos=qos, location=where, origin="config")
 
 
 def _type(package: str, name: str, ros2: bool) -> str:
@@ -213,20 +216,17 @@ def _displays(displays: Any, ros2: bool, where: Any, calls: list[PrimitiveCall],
         name, qos = _topic(display.get(key)) if key is not None else (None, None)
         if name is None:
             continue
-        calls.append(PrimitiveCall("subscribe", name, _type(*message, ros2), qos=qos,
-                                   location=where, origin="config"))
+        calls.append(_config_call("subscribe", name, _type(*message, ros2), where, qos))
         if kind == "Map":
             update, update_qos = _topic(display.get("Update Topic")) if ros2 else (
                 name + "_updates", None)
             if update:
-                calls.append(PrimitiveCall(
-                    "subscribe", update, _type("map_msgs", "OccupancyGridUpdate", ros2),
-                    qos=update_qos, location=where, origin="config"))
+                calls.append(_config_call("subscribe", update, _type(
+                    "map_msgs", "OccupancyGridUpdate", ros2), where, update_qos))
         elif kind == "Camera":
             info = name.rpartition("/")[0] + "/camera_info" if "/" in name else "camera_info"
-            calls.append(PrimitiveCall("subscribe", info, _type("sensor_msgs", "CameraInfo",
-                                                                ros2),
-                                       location=where, origin="config"))
+            calls.append(_config_call("subscribe", info,
+                                      _type("sensor_msgs", "CameraInfo", ros2), where))
 
 
 def _markers(display: dict[str, Any], ros2: bool, where: Any,
@@ -236,15 +236,12 @@ def _markers(display: dict[str, Any], ros2: bool, where: Any,
         space, _ = _topic(space)
         if not space:
             return
-        calls.append(PrimitiveCall("subscribe", space + "/update", _type(
-            "visualization_msgs", "InteractiveMarkerUpdate", True), location=where,
-            origin="config"))
-        calls.append(PrimitiveCall("publish", space + "/feedback", _type(
-            "visualization_msgs", "InteractiveMarkerFeedback", True), location=where,
-            origin="config"))
-        calls.append(PrimitiveCall("client", space + "/get_interactive_markers",
-                                   "visualization_msgs/srv/GetInteractiveMarkers",
-                                   location=where, origin="config"))
+        calls.append(_config_call("subscribe", space + "/update", _type(
+            "visualization_msgs", "InteractiveMarkerUpdate", True), where))
+        calls.append(_config_call("publish", space + "/feedback", _type(
+            "visualization_msgs", "InteractiveMarkerFeedback", True), where))
+        calls.append(_config_call("client", space + "/get_interactive_markers",
+                                  "visualization_msgs/srv/GetInteractiveMarkers", where))
         return
     update, _ = _topic(display.get("Update Topic"))
     if not update or not update.endswith("/update"):
@@ -252,12 +249,10 @@ def _markers(display: dict[str, Any], ros2: bool, where: Any,
     space = update[:-len("/update")]
     for name, message in ((update, "InteractiveMarkerUpdate"),
                           (space + "/update_full", "InteractiveMarkerInit")):
-        calls.append(PrimitiveCall("subscribe", name, _type("visualization_msgs", message,
-                                                           False),
-                                   location=where, origin="config"))
-    calls.append(PrimitiveCall("publish", space + "/feedback", _type(
-        "visualization_msgs", "InteractiveMarkerFeedback", False), location=where,
-        origin="config"))
+        calls.append(_config_call("subscribe", name,
+                                  _type("visualization_msgs", message, False), where))
+    calls.append(_config_call("publish", space + "/feedback", _type(
+        "visualization_msgs", "InteractiveMarkerFeedback", False), where))
 
 
 def _robot_model(display: dict[str, Any], ros2: bool, where: Any,
@@ -267,12 +262,12 @@ def _robot_model(display: dict[str, Any], ros2: bool, where: Any,
             return
         name, qos = _topic(display.get("Description Topic"))
         if name:
-            calls.append(PrimitiveCall("subscribe", name, _type("std_msgs", "String", True),
-                                       qos=qos, location=where, origin="config"))
+            calls.append(_config_call("subscribe", name, _type("std_msgs", "String", True),
+                                      where, qos))
         return
     param = display.get("Robot Description", "robot_description")
     if isinstance(param, str) and param:
-        calls.append(PrimitiveCall("read", param, "str", location=where, origin="config"))
+        calls.append(_config_call("read", param, "str", where))
 
 
 def _tool(tool: dict[str, Any], ros2: bool, where: Any, calls: list[PrimitiveCall],
@@ -288,6 +283,5 @@ def _tool(tool: dict[str, Any], ros2: bool, where: Any, calls: list[PrimitiveCal
     if default is None:
         return
     name, qos = _topic(tool.get("Topic"))
-    calls.append(PrimitiveCall("publish", name or default[1 if ros2 else 0],
-                               _type(default[2], default[3], ros2), qos=qos,
-                               location=where, origin="config"))
+    calls.append(_config_call("publish", name or default[1 if ros2 else 0],
+                              _type(default[2], default[3], ros2), where, qos))
