@@ -678,7 +678,11 @@ def test_a_c_librarys_constants_and_functions_are_values(write_tree) -> None:
     header = names.header()
     for value in ("SDL_INIT_VIDEO", "SDL_INIT_AUDIO", "SDL_GetTicks"):
         assert f"extern haros_any {value};" in header
-    assert "count_" not in header and "update" not in header
+    assert "count_" not in header
+    # a member clang could not find is not shadowed: the unqualified function is only
+    # a friend of the permissive class, which no lookup but by its arguments finds
+    assert [line.strip() for line in header.splitlines() if "update" in line] == [
+        "template <class... A> friend haros_any &update(const A &...);"]
 
 
 def test_vendor_constants_where_cpp_needs_a_constant() -> None:
@@ -837,3 +841,19 @@ def test_an_explicit_template_instantiation_is_no_call_site() -> None:
             "  sub_ = node_->\n"
             "    template create_subscription<Array>(\"g\", 1, cb);\n")
     assert [s.line for s in recall.call_sites(text, ["setParamT"])] == [4, 6, 8]
+
+
+def test_an_unqualified_vendor_function_of_vendor_values_is_found_by_their_lookup() -> None:
+    """ouster's ``to_string(info.format.udp_profile_lidar)``: the SDK's header is missing,
+    the call's argument a permissive value; the call is found as C++ finds it (by its
+    argument), and the error no longer marks the constructor's calls as possibly lost."""
+    result = extract("vendor_adl.cpp")
+    assert rows(result) == [("publish", "points", "std_msgs/msg/String", 13)]
+    assert "CPP_PARSE_ERROR" not in codes(result)
+    assert "CPP_ERROR_NEAR_CALL" not in codes(result)
+
+
+def test_an_unqualified_function_of_the_codes_own_values_stays_an_error() -> None:
+    result = extract("undeclared_helper.cpp")
+    assert rows(result) == [("publish", "out", "std_msgs/msg/String", 10)]
+    assert "CPP_PARSE_ERROR" in codes(result)

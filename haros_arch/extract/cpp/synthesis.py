@@ -383,6 +383,12 @@ class Names:
         # the members written after C++'s ``template`` keyword: member templates (any
         # template arguments, any call arguments), not static members
         self.member_templates: set[str] = set()
+        # unqualified functions the code calls that no lookup finds: friends of the
+        # permissive class declared in it only, which argument-dependent lookup alone
+        # finds, where an argument is a permissive value (ouster's ``to_string(info.
+        # format.udp_profile_lidar)`` of the SDK's types); the call of a member clang
+        # could not find (an invalid base) is never one, its arguments being the code's
+        self.friends: set[str] = set()
         # the members read where C++ needs a constant (``case Mode::FAST:``): enumerators
         self.constants: set[str] = set()
         self.flags: set[str] = set()  # those an operator combines (``_constant_at``)
@@ -612,6 +618,9 @@ class Names:
                 called and "_" in written[-1]
                 and written[-1].split("_")[0] in self.libraries
             ) and not (called and _CAPS_MACRO.fullmatch(written[-1])):
+                if called and written[-1] not in self.friends:
+                    self.friends.add(written[-1])
+                    self.count += 1
                 return  # an unqualified function or variable: in a class, often a member
                 # clang could not find (an invalid base); declaring it would shadow it
             # but a C library's constant or prefixed function, whose header is missing
@@ -773,6 +782,8 @@ class Names:
             for m in sorted(self.member_templates - self.constants))
         members += "".join(f"  enum : int {{ {m} = {values.next(m in self.flags)} }};\n"
                            for m in sorted(self.constants & self.members))
+        members += "".join(f"  template <class... A> friend haros_any &{f}(const A &...);\n"
+                           for f in sorted(self.friends - self.members - self.member_templates))
         lines = [_PRELUDE % (_COMPOUND_MEMBERS, members, _OPERATORS)]
         lines += [f"#define {name}" for name in sorted(self.macros)]
         lines += [f"#define {name}(...)" for name in sorted(self.declaration_macros)]
@@ -849,6 +860,7 @@ class Names:
             for member in sorted(self.fields[record]):
                 if len(found) < limit:
                     found.append(f"{record}::{member}")
+        found.extend(f"{f}()" for f in sorted(self.friends)[:max(0, limit - len(found))])
         return found
 
     def __bool__(self) -> bool:
