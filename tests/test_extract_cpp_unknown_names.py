@@ -857,3 +857,16 @@ def test_an_unqualified_function_of_the_codes_own_values_stays_an_error() -> Non
     result = extract("undeclared_helper.cpp")
     assert rows(result) == [("publish", "out", "std_msgs/msg/String", 10)]
     assert "CPP_PARSE_ERROR" in codes(result)
+
+
+def test_an_unqualified_call_that_may_be_an_unknown_bases_method_keeps_the_node_partial(
+) -> None:
+    """Found by the permissive friend, an unqualified call of vendor values in a method of
+    a class derived from an unknown vendor class may be that base's method (nav2's
+    ``declareParameter`` of a costmap layer declares a ROS parameter): the node is given
+    to code nobody reads, not an error gone quiet."""
+    result = extract("vendor_base_adl.cpp")
+    unknown = [(d.code, d.location.line) for d in result.diagnostics
+               if d.code == "CPP_NODE_TO_UNKNOWN"]
+    assert unknown == [("CPP_NODE_TO_UNKNOWN", 11)]  # Gradient's, not Node2's describe()
+    assert "CPP_PARSE_ERROR" not in codes(result)

@@ -348,7 +348,7 @@ class CallFinder:
             if kind in _MAKES:
                 self._unseen_class(node)  # in every function, walked or not
             if kind == CursorKind.CALL_EXPR:
-                self._to_unknown(node)  # in every function, walked or not
+                self._to_unknown(node, function)  # in every function, walked or not
                 spelling = node.spelling
                 if spelling in _API_NAMES or spelling in names or (
                     not spelling and _recovered_name(node) in rows
@@ -415,7 +415,7 @@ class CallFinder:
                 self._dependent(node, conditions, scope)
             if node.kind == CursorKind.CALL_EXPR:
                 self._construction(node, conditions)
-                self._to_unknown(node)
+                self._to_unknown(node, function)
             if node.kind in _MAKES:
                 self._unseen_class(node)
             tested.visit(node)
@@ -800,11 +800,13 @@ class CallFinder:
             return None
         return (name, package) if self.clients(package, name) else None
 
-    def _to_unknown(self, call: Cursor) -> None:
+    def _to_unknown(self, call: Cursor, function: Cursor | None = None) -> None:
         """Say when ``call`` gives the node to a function or class the parse knows only
         as a name declared permissively (its package is not in the workspace:
         ``CPP_NODE_TO_UNKNOWN``, the node is partial): what it does with the node is
-        not read."""
+        not read. So does an unqualified call that the permissive class's friend takes
+        (``synthesis.Names.friends``) in a method of ``function``'s class derived from a
+        class declared permissively: it may be that base's method, run on the object."""
         unknown = self._unknown_callee(call)
         if unknown is None:
             return
@@ -814,6 +816,11 @@ class CallFinder:
         given = node_arguments(call)
         if given and binds_own_member(call, given):
             return  # a callback binding: the member's calls are read where it is defined
+        if not given and self._of_unknown_base(unknown, function):
+            self._unknown.add(key)
+            self.diagnostics.append(diag.make(
+                "CPP_NODE_TO_UNKNOWN", self.where(call), given="this", name=call.spelling))
+            return
         if given:  # once per place (a conversion of the made object starts there too)
             self._unknown.add(key)
             name = call.spelling if unknown is call.referenced else qualified_name(unknown)
@@ -828,6 +835,29 @@ class CallFinder:
             self.diagnostics.append(diag.make(
                 "CPP_NODE_TO_UNKNOWN", self.where(call),
                 given="".join(t.spelling for t in given[0].get_tokens())[:60], name=name))
+
+    def _of_unknown_base(self, callee: Cursor, function: Cursor | None) -> bool:
+        """Whether ``callee`` is a friend of the permissive class (an unqualified function
+        no lookup found) called in a method of a class with a base declared permissively,
+        directly or through the workspace's classes: the base's own method, for C++."""
+        if function is None or function.kind not in (
+                CursorKind.CXX_METHOD, CursorKind.CONSTRUCTOR, CursorKind.DESTRUCTOR,
+                CursorKind.FUNCTION_TEMPLATE):
+            return False
+        lexical = callee.lexical_parent
+        if lexical is None or lexical.spelling != synthesis.ANY:
+            return False
+        classes = [function.semantic_parent]
+        for _ in range(MAX_DEPTH):
+            bases = [base.referenced for cls in classes if cls is not None
+                     for base in cls.get_children()
+                     if base.kind == CursorKind.CXX_BASE_SPECIFIER]
+            if any(b is not None and self._declared_here(b) for b in bases):
+                return True
+            classes = [b.get_definition() or b for b in bases if b is not None]
+            if not classes:
+                return False
+        return False
 
     def _unknown_callee(self, call: Cursor) -> Cursor | None:
         """What ``call`` runs whose code the parse does not have: a function or class
