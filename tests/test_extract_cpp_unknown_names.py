@@ -870,3 +870,15 @@ def test_an_unqualified_call_that_may_be_an_unknown_bases_method_keeps_the_node_
                if d.code == "CPP_NODE_TO_UNKNOWN"]
     assert unknown == [("CPP_NODE_TO_UNKNOWN", 11)]  # Gradient's, not Node2's describe()
     assert "CPP_PARSE_ERROR" not in codes(result)
+
+
+def test_a_member_a_real_base_has_is_not_the_permissive_classes_too() -> None:
+    """rtabmap's ``OdometryROS : public rclcpp::Node, public UThread``: with ``get_logger``
+    declared on the permissive class (the code reads it on a vendor object), the class
+    found it in both bases, ambiguously, in every function that logs: the member is
+    withdrawn and the node's own is the one found."""
+    result = extract("vendor_and_node_bases.cpp")
+    assert rows(result) == [("publish", "status", "std_msgs/msg/String", 13)]
+    messages = [d.message for d in result.diagnostics]
+    assert not any("multiple base classes" in m for m in messages), messages
+    assert "CPP_ERROR_NEAR_CALL" not in codes(result)

@@ -69,6 +69,10 @@ _MEMBER = re.compile(
 _MEMBER_TYPE = re.compile(  # ``Msg::_code_type``; ``Synthesised<T>::ConstPtr``
     r"^no type named '(\w+)' in '(?:const )?(?:(?:struct|class) )?([\w:]+)(<.*>)?'")
 _AMBIGUOUS = re.compile(r"^reference to '(\w+)' is ambiguous")
+# a member of the permissive class that a class finds twice: through a declared base and
+# through a real one (rtabmap's ``OdometryROS : public rclcpp::Node, public UThread``,
+# once ``get_logger`` is read on some object): the real base's it is
+_AMBIGUOUS_MEMBER = re.compile(r"^member '(\w+)' found in multiple base classes of different types")
 # a pointer to one declared class given where a pointer to another is wanted (motoman's
 # ``init(&default_tcp_connection_)``, a TcpClient for a SmplMsgConnection): the vendor's
 # classes derive so
@@ -405,6 +409,9 @@ class Names:
         # unknown names that made a use ambiguous (the real declaration was invalid only
         # until other names were declared): no longer declared
         self.withdrawn: set[str] = set()
+        # members of the permissive class a class also finds in a real base
+        # (``_AMBIGUOUS_MEMBER``): no longer declared
+        self.withdrawn_members: set[str] = set()
         # unknown macros written alone on their line (``EIGEN_MAKE_ALIGNED_OPERATOR_NEW``
         # in a class body, its header not reached): defined empty, not declared as types
         self.macros: set[str] = set()
@@ -419,7 +426,8 @@ class Names:
     def learn(self, errors: Iterable[tuple[str, bytes | None, int]]) -> bool:
         """Read ``(message, source bytes of its file, byte offset)`` errors; True when a
         name was learnt that was not known before."""
-        before = (self.count, len(self.members), len(self.withdrawn))
+        before = (self.count, len(self.members), len(self.withdrawn),
+                  len(self.withdrawn_members))
         errors = list(errors)
         for _message, text, _offset in errors:
             if text is not None and id(text) not in self._read:
@@ -436,7 +444,8 @@ class Names:
                 break
             self._learn_one(message, text, offset)
         self._spread()
-        return (self.count, len(self.members), len(self.withdrawn)) != before
+        return (self.count, len(self.members), len(self.withdrawn),
+                len(self.withdrawn_members)) != before
 
     def _spread(self) -> None:
         """Every qualified use of an unknown top-level name in the files read: clang
@@ -528,6 +537,11 @@ class Names:
         ambiguous = _AMBIGUOUS.match(message)
         if ambiguous is not None:
             self.withdrawn.add(ambiguous.group(1))
+            return
+        twice = _AMBIGUOUS_MEMBER.match(message)
+        if twice is not None:
+            if twice.group(1) in self.members | self.member_templates:
+                self.withdrawn_members.add(twice.group(1))
             return
         if _TYPE_AS_VALUE.match(message):
             if text is not None:
@@ -775,13 +789,14 @@ class Names:
 
     def header(self) -> str:
         values = _Values(self.taken)
-        members = "".join(f"  static haros_any {m};\n" for m in sorted(self.members)
+        kept = self.members - self.withdrawn_members
+        members = "".join(f"  static haros_any {m};\n" for m in sorted(kept)
                           if m not in self.constants and m not in self.member_templates)
         members += "".join(
             f"  template <class... T, class... A> static haros_any &{m}(const A &...);\n"
-            for m in sorted(self.member_templates - self.constants))
+            for m in sorted(self.member_templates - self.constants - self.withdrawn_members))
         members += "".join(f"  enum : int {{ {m} = {values.next(m in self.flags)} }};\n"
-                           for m in sorted(self.constants & self.members))
+                           for m in sorted(self.constants & kept))
         members += "".join(f"  template <class... A> friend haros_any &{f}(const A &...);\n"
                            for f in sorted(self.friends - self.members - self.member_templates))
         lines = [_PRELUDE % (_COMPOUND_MEMBERS, members, _OPERATORS)]

@@ -844,9 +844,10 @@ class CallFinder:
                 CursorKind.CXX_METHOD, CursorKind.CONSTRUCTOR, CursorKind.DESTRUCTOR,
                 CursorKind.FUNCTION_TEMPLATE):
             return False
-        lexical = callee.lexical_parent
-        if lexical is None or lexical.spelling != synthesis.ANY:
-            return False
+        lexical, semantic = callee.lexical_parent, callee.semantic_parent
+        if lexical is None or lexical.spelling != synthesis.ANY or (
+                semantic is not None and semantic.spelling == synthesis.ANY):
+            return False  # not declared in the class as a friend: its member
         classes = [function.semantic_parent]
         for _ in range(MAX_DEPTH):
             bases = [base.referenced for cls in classes if cls is not None
