@@ -480,3 +480,13 @@ def test_ros1_controllers_and_robot_hw_of_installed_ros_control(write_tree) -> N
     assert [(c.kind, c.name) for c in result.calls] == [
         ("read", "?/arm_id"), ("subscribe", "?/command"), ("read", "?/joint"),
         ("read", "?/robot_ip")]
+
+
+def test_ros2_cpp17_parallel_algorithms_and_utilities(write_tree) -> None:
+    """beluga's particle filter core: execution policies (a class template over one,
+    checked by is_execution_policy_v), reduce, tuple_size_v, invoke_result_t /
+    is_invocable_v, std::plus<>, as_const, make_reverse_iterator, nth_element, and
+    Eigen's Matrix2Xd / Matrix3Xd."""
+    result = _extract(write_tree, _source("ros2_cpp17_parallel.cpp"), "ament_cmake")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "total")]
