@@ -490,3 +490,17 @@ def test_ros2_cpp17_parallel_algorithms_and_utilities(write_tree) -> None:
     result = _extract(write_tree, _source("ros2_cpp17_parallel.cpp"), "ament_cmake")
     assert _errors(result) == []
     assert [(c.kind, c.name) for c in result.calls] == [("publish", "total")]
+
+
+def test_ros2_parameter_service_without_its_include(write_tree) -> None:
+    """webots_ros2's WebotsNode holds an ``rclcpp::Client<rcl_interfaces::srv::
+    SetParameters>`` with no include of its own (rclcpp's headers bring it): its type was
+    an error, the node class invalid and every call of its constructor lost. rclcpp's
+    own rcl_interfaces and builtin_interfaces messages are guarded as their generated
+    headers are, so either may come first."""
+    result = _extract(write_tree, _source("ros2_unincluded_service.cpp"), "ament_cmake")
+    assert _errors(result) == []
+    assert [(c.kind, c.name, c.type) for c in result.calls] == [
+        ("declare", "robot_description", "str"),
+        ("client", "/robot_state_publisher/set_parameters", "rcl_interfaces/srv/SetParameters"),
+        ("publish", "/remove_urdf_robot", "std_msgs/msg/String")]

@@ -30,7 +30,7 @@ from ...model.location import Location
 from ...model.source import Package, PrimitiveCall, declared_defaults
 from ...workspace import Workspace, manifest_of
 from .. import NODELET_LOAD
-from . import cache, call_conditions, links, recall, synthesis, toolchain, versions
+from . import cache, call_conditions, links, recall, ros2_interfaces, synthesis, toolchain, versions
 from . import compile_commands as commands
 from .headers import FALLBACK, STANDIN, IncludeSetup
 from .interfaces import interface_package
@@ -1110,6 +1110,9 @@ def _parse(path: str, text: str, setup: IncludeSetup, workspace: Workspace,
 _UNKNOWN_SPACE = re.compile(r"^use of undeclared identifier '(\w+)'$"
                             r"|^no (?:type|member|template) named '\w+' in namespace '(\w+)'$")
 _QUALIFIED = re.compile(rb"\b([A-Za-z_]\w*)\s*::\s*([A-Za-z_]\w*)")
+# a ROS 2 interface written in full: ``rcl_interfaces::srv::SetParameters``
+_QUALIFIED_ROS2 = re.compile(
+    rb"\b([A-Za-z_]\w*)\s*::\s*(msg|srv|action)\s*::\s*([A-Z]\w*)")
 _POINTER_SUFFIXES = ("ConstPtr", "Ptr")
 
 
@@ -1144,6 +1147,18 @@ def _unincluded_messages(tu: TranslationUnit, setup: IncludeSetup,
             base = next((written[: -len(s)] for s in _POINTER_SUFFIXES
                          if written.endswith(s) and len(written) > len(s)), written)
             header = f"{space}/{base}.h"
+            if header not in headers and setup.message_header(header):
+                headers.append(header)
+        # ROS 2: rclcpp's headers bring rcl_interfaces' parameter services, so webots'
+        # WebotsNode.hpp holds an ``rclcpp::Client<rcl_interfaces::srv::SetParameters>``
+        # with no include of its own; the member's type was an error and the node class
+        # invalid (``no member named 'srv' in namespace 'rcl_interfaces'``)
+        for match in _QUALIFIED_ROS2.finditer(text or b""):
+            space = match.group(1).decode()
+            if space not in spaces:
+                continue
+            header = ros2_interfaces.header(space, match.group(2).decode(),
+                                            match.group(3).decode())
             if header not in headers and setup.message_header(header):
                 headers.append(header)
     return headers
