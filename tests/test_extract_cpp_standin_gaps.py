@@ -504,3 +504,15 @@ def test_ros2_parameter_service_without_its_include(write_tree) -> None:
         ("declare", "robot_description", "str"),
         ("client", "/robot_state_publisher/set_parameters", "rcl_interfaces/srv/SetParameters"),
         ("publish", "/remove_urdf_robot", "std_msgs/msg/String")]
+
+
+def test_ros1_param_into_a_vendor_value_and_timer_options(write_tree) -> None:
+    """elevation_mapping's ``param("track_point_x", parameters.trackPoint_.x(), 0.0)``: the
+    value's type is declared permissively, the default a double, and roscpp's one type
+    for both could not be deduced (an error in the function that reads every parameter);
+    ``createTimer(TimerOptions&)`` was missing."""
+    result = _extract(write_tree, _source("ros1_param_vendor_value_timer_options.cpp"),
+                      "catkin")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("read", "~track_point_x"), ("read", "~point_cloud_topic"), ("publish", "~elevation_map")]
