@@ -486,7 +486,7 @@ def test_ros2_cpp17_parallel_algorithms_and_utilities(write_tree) -> None:
     """beluga's particle filter core: execution policies (a class template over one,
     checked by is_execution_policy_v), reduce, tuple_size_v, invoke_result_t /
     is_invocable_v, std::plus<>, as_const, make_reverse_iterator, nth_element, and
-    Eigen's Matrix2Xd / Matrix3Xd."""
+    Eigen's Matrix2Xd / Matrix3Xd, variant_npos / variant_size_v."""
     result = _extract(write_tree, _source("ros2_cpp17_parallel.cpp"), "ament_cmake")
     assert _errors(result) == []
     assert [(c.kind, c.name) for c in result.calls] == [("publish", "total")]

@@ -882,3 +882,23 @@ def test_a_member_a_real_base_has_is_not_the_permissive_classes_too() -> None:
     messages = [d.message for d in result.diagnostics]
     assert not any("multiple base classes" in m for m in messages), messages
     assert "CPP_ERROR_NEAR_CALL" not in codes(result)
+
+
+def test_a_vendor_member_template_called_as_a_statement_is_declared() -> None:
+    """plansys2's ``factory.registerNodeType<ExecuteAction>("ExecuteAction");`` of
+    BehaviorTree.CPP's factory, whose header is missing: its result unused, the member
+    is declared a member template; one whose result is used stays an error (what it
+    returns may make the ROS calls that are kept by their API name)."""
+    result = extract("vendor_member_template.cpp")
+    assert rows(result) == [("publish", "executing_plan", "std_msgs/msg/String", 11)]
+    assert "CPP_PARSE_ERROR" not in codes(result)
+    names = synthesis.Names()
+    text = (b"void f() {\n  factory.registerNodeType<A>(\"a\");\n"
+            b"  auto node = factory.get<B>(\"node\");\n  x = this->tree_.build<C>();\n}\n")
+    message = "'%s' does not name a template but is followed by template arguments"
+    names.learn([(message % n.decode(), text, text.index(n))
+                 for n in (b"registerNodeType", b"get", b"build")])
+    header = names.header()
+    declared = "template <class... T, class... A> static haros_any &%s(const A &...);"
+    assert declared % "registerNodeType" in header
+    assert declared % "get" not in header and declared % "build" not in header

@@ -22,6 +22,7 @@ workspaces they changed little and cost a parse each, so the default is one roun
 
 from __future__ import annotations
 
+import functools
 import itertools
 import re
 from collections.abc import Callable, Iterable
@@ -92,12 +93,61 @@ _AFTER_MEMBER = re.compile(rb"(?:\.|->)\s*([A-Za-z_]\w*)")
 _TEMPLATE_MEMBER = re.compile(rb"(?:\.|->)\s*template\s+([A-Za-z_]\w*)\s*<")
 _NOT_TEMPLATE = re.compile(
     r"^'(\w+)' following the 'template' keyword does not refer to a template")
+# a member of a declared object called with template arguments (plansys2's
+# ``factory.registerNodeType<ExecuteAction>("ExecuteAction");`` of BehaviorTree.CPP)
+_NAMES_NO_TEMPLATE = re.compile(
+    r"^'(\w+)' does not name a template but is followed by template arguments")
+# the object of a member call written as a statement's start: a name, ``this->``, and
+# members after ``.`` / ``->``
+_STATEMENT_OBJECT = re.compile(
+    rb"(?:^|[;{}])\s*(?:this\s*->\s*)?[A-Za-z_]\w*(?:\s*(?:\.|->)\s*[A-Za-z_]\w*)*"
+    rb"\s*(?:\.|->)\s*$")
 # a value read from a scope: ``Mode::FAST)``, ``case Mode::FAST:``, an enumerator of a
 # vendor enum
 _SCOPED_VALUE = re.compile(rb"::\s*([A-Za-z_]\w*)\s*(?=[);,\]}]|:(?!:))")
 # the name written next is what an alias, a typedef or a using-declaration names
 _ALIASED = re.compile(rb"(?:\busing\s+\w+\s*=|\btypedef|\busing)\s*(?:typename\s+)?(?:::\s*)?"
                       rb"(?:[A-Za-z_]\w*\s*::\s*)*$")
+
+
+def _discarded_member_call(text: bytes, offset: int, name: str) -> bool:
+    """Whether the member template ``name`` at ``offset`` is called as a whole statement,
+    ``obj.name<T>(args);``, its result unused: declared a member template (any template
+    arguments, any call arguments), nothing is then read from what it returns, whose own
+    ROS calls would be lost (``x.get<T>("node")->create_publisher(...)``, which is better
+    left an error and kept by its API name)."""
+    if not text.startswith(name.encode(), offset):
+        return False
+    if _STATEMENT_OBJECT.search(text[max(0, offset - 200):offset]) is None:
+        return False
+    closing = {ord("<"): ord(">"), ord("("): ord(")")}
+    stack: list[int] = []
+    called = False
+    for at in range(offset + len(name), min(len(text), offset + 2000)):
+        char = text[at]
+        if char in closing:
+            stack.append(closing[char])
+        elif stack and char == stack[-1]:
+            stack.pop()
+            called = called or (not stack and char == ord(")"))
+        elif char in (ord(";"), ord("{"), ord("}")) and stack:
+            return False
+        elif not stack and not chr(char).isspace():
+            return called and char == ord(";")
+    return False
+
+
+@functools.lru_cache(maxsize=1)
+def _api_methods() -> frozenset[str]:
+    """The API's methods (longer than four letters, as ``recall`` counts them: ``get`` /
+    ``set`` / ``call`` are any class's), which stay the API's: a class built on a real
+    node and a declared class would find such a member twice, and a call the parse
+    cannot resolve is kept by that name; not a name too common to be the API's
+    (``call_site``: realtime_tools' ``initialize``, which an unknown class's method of
+    that name, kinematics_interface's, must still be)."""
+    from . import api
+    return frozenset(name for (_, name), row in api.ALL.items()
+                     if len(name) > 4 and row.call_site)
 
 
 def _aliased(window: bytes) -> bool:
@@ -479,14 +529,7 @@ class Names:
         what it returns are kept by their API name (a declared template returns an
         object whose API calls then fail); a name after C++'s ``template`` keyword
         (``bb->template set<T>("node", node_)``) is one (``member_templates``)."""
-        from . import api
-        # the API's methods (longer than four letters, as ``recall`` counts them: ``get``
-        # / ``set`` / ``call`` are any class's) stay the API's: a class built on a real
-        # node and a declared class would find the name twice; not a name too common to
-        # be the API's (``call_site``: realtime_tools' ``initialize``, which an unknown
-        # class's method of that name, kinematics_interface's, must still be)
-        skip = _KEYWORDS | {name for (_, name), row in api.ALL.items()
-                            if len(name) > 4 and row.call_site}
+        skip = _KEYWORDS | _api_methods()
         for text in texts:
             if text is not None:
                 self.members.update(
@@ -522,6 +565,14 @@ class Names:
         if template is not None:
             if template.group(1) not in self.member_templates:
                 self.member_templates.add(template.group(1))
+                self.count += 1
+            return
+        named = _NAMES_NO_TEMPLATE.match(message)
+        if named is not None:
+            name = named.group(1)
+            if text is not None and name not in self.member_templates and (
+                    name not in _api_methods()) and _discarded_member_call(text, offset, name):
+                self.member_templates.add(name)
                 self.count += 1
             return
         converted = _NOT_CONVERTED.match(message)

@@ -1429,6 +1429,14 @@ template<class T, class... V> const T& get(const variant<V...>& v);
 template<class T, class... V> T* get_if(variant<V...>* v) noexcept;
 template<class F, class... V> auto visit(F&& f, V&&... v) -> decltype(f(0));
 struct monostate {};
+inline constexpr size_t variant_npos = static_cast<size_t>(-1);
+template<class T> struct variant_size;
+template<class... T> struct variant_size<variant<T...>> {
+  static constexpr size_t value = sizeof...(T); };
+template<class T> constexpr size_t variant_size_v = variant_size<T>::value;
+template<size_t I, class... V> auto& get(variant<V...>& v);
+template<size_t I, class... V> const auto& get(const variant<V...>& v);
+class bad_variant_access : public exception {};
 // <any>
 class bad_any_cast : public bad_cast {};
 class any {
