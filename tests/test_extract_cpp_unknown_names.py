@@ -853,6 +853,19 @@ def test_an_unqualified_vendor_function_of_vendor_values_is_found_by_their_looku
     assert "CPP_ERROR_NEAR_CALL" not in codes(result)
 
 
+def test_an_unqualified_api_method_is_no_friend() -> None:
+    """A call of an API method's name that the parse cannot resolve is kept by that name
+    (``CPP_CALL_UNRESOLVED``); found by its arguments as a friend, it would be a call of
+    nothing."""
+    names = synthesis.Names()
+    text = b"void f() { declare_parameter(\"rate\", v.x); to_string(v.mode); }\n"
+    names.learn([("use of undeclared identifier '" + n.decode() + "'", text, text.index(n))
+                 for n in (b"declare_parameter", b"to_string")])
+    header = names.header()
+    assert "friend haros_any &to_string(" in header
+    assert "declare_parameter" not in header
+
+
 def test_an_unqualified_function_of_the_codes_own_values_stays_an_error() -> None:
     result = extract("undeclared_helper.cpp")
     assert rows(result) == [("publish", "out", "std_msgs/msg/String", 10)]

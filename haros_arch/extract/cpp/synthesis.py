@@ -683,7 +683,10 @@ class Names:
                 called and "_" in written[-1]
                 and written[-1].split("_")[0] in self.libraries
             ) and not (called and _CAPS_MACRO.fullmatch(written[-1])):
-                if called and written[-1] not in self.friends:
+                if called and written[-1] not in self.friends and (
+                        written[-1] not in _api_methods()):
+                    # (an API method's name stays an error: a call the parse cannot
+                    # resolve is kept by that name, the friend would take it)
                     self.friends.add(written[-1])
                     self.count += 1
                 return  # an unqualified function or variable: in a class, often a member
