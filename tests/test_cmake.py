@@ -254,6 +254,38 @@ def test_an_executable_made_by_a_function_defined_outside_the_workspace(write_tr
     assert "google_binary() is defined outside the workspace" in guessed[0].message
 
 
+def test_an_outside_function_of_keyword_arguments_names_its_target_after_the_keyword(
+        write_tree):
+    """MOLA builds mola-cli with ``mola_add_executable(TARGET mola-cli SOURCES
+    mola-cli.cpp ...)``, a function of its mola_common package (not in the workspace):
+    the executable was taken to be named ``TARGET``, so the demos' launch files that
+    run mola_launcher/mola-cli had it "not in the workspace" (an error). The name is the
+    word after the keyword."""
+    root = write_tree({
+        "src/launcher/package.xml": package_xml("launcher"),
+        "src/launcher/CMakeLists.txt": """
+            project(launcher)
+            find_package(mola_common REQUIRED)
+            mola_add_library(TARGET ${PROJECT_NAME} SOURCES src/app.cpp)
+            add_subdirectory(apps)
+            install(TARGETS mola-cli RUNTIME DESTINATION lib/${PROJECT_NAME})
+            """,
+        "src/launcher/apps/CMakeLists.txt": """
+            mola_add_executable(
+              TARGET  mola-cli
+              SOURCES mola-cli.cpp
+              LINK_LIBRARIES mola::mola_launcher)
+            """,
+        "src/launcher/src/app.cpp": "void run() {}\n",
+        "src/launcher/apps/mola-cli.cpp": "int main(int argc, char** argv) { return 0; }\n",
+    })
+    ws = scan([str(root / "src")], {})
+    nodes, found = parse_package(ws.packages["launcher"], ws)
+    assert [n.executable for n in nodes] == ["mola-cli"]
+    guessed = [d for d in found if d.code == "CMAKE_GUESSED_EXECUTABLE"]
+    assert len(guessed) == 1 and "mola-cli is taken as an executable" in guessed[0].message
+
+
 def test_a_class_the_executable_defines_itself_names_no_library_file(write_tree):
     """cartographer_ros' occupancy_grid_node_main.cc defines its own ``class Node`` and
     links the package library, whose node.cc defines the SLAM ``Node``'s members: the

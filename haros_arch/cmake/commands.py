@@ -417,6 +417,9 @@ IGNORED = frozenset({
     "ament_export_libraries", "ament_export_targets", "ament_lint_auto_find_test_dependencies",
 })
 _TARGET_NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_.+-]*")
+# the keywords before a target's name in a function of keyword arguments
+# (``cmake_parse_arguments(ARG "" "TARGET;..." ...)``)
+_NAME_KEYWORDS = frozenset({"TARGET", "NAME", "TARGET_NAME"})
 _NOT_NODES = re.compile(r"test|gmock|benchmark", re.IGNORECASE)
 _MAIN = re.compile(rb"\bint\s+main\s*\(")
 MAX_MAIN_READ = 2_000_000  # bytes of a source read to find main()
@@ -437,7 +440,11 @@ def unknown_command(it: Interpreter, command: Invocation, args: list[str]) -> No
     files of the package, one of which defines ``main()``: an executable, which links the
     package's libraries declared so far (``nodes._run`` keeps of them what its code names,
     as for ament_auto). Tests and benchmarks (``ament_add_gmock``, ``catkin_add_gtest``,
-    ``ament_add_google_benchmark``, sources in a ``test`` folder) are no nodes."""
+    ``ament_add_google_benchmark``, sources in a ``test`` folder) are no nodes. A
+    function of keyword arguments names its target after a keyword (MOLA's
+    ``mola_add_executable(TARGET mola-cli SOURCES mola-cli.cpp)``): the word after it."""
+    if args[:1] and args[0] in _NAME_KEYWORDS:
+        args = args[1:]
     if (len(args) < 2 or _NOT_NODES.search(command.name) or args[0] in it.targets
             or not _TARGET_NAME.fullmatch(args[0])):
         return
