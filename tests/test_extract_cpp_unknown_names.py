@@ -837,3 +837,29 @@ def test_an_explicit_template_instantiation_is_no_call_site() -> None:
             "  sub_ = node_->\n"
             "    template create_subscription<Array>(\"g\", 1, cb);\n")
     assert [s.line for s in recall.call_sites(text, ["setParamT"])] == [4, 6, 8]
+
+
+def test_shared_from_this_of_a_class_that_is_no_node_is_not_the_node(write_tree) -> None:
+    """MOLA's ``ExecutableBase`` (no node: a std::enable_shared_from_this of itself, with
+    bases of MRPT, whose headers are missing) returns ``shared_from_this()`` as its ``Ptr``,
+    a name declared permissively: that was "the node given to Ptr" (CPP_NODE_TO_UNKNOWN)
+    and every program including the header, mola-cli too, partial. Only a node's own
+    ``shared_from_this()`` is the node; given to an unknown name it still is."""
+    module = (
+        "#include <memory>\n#include <mrpt/system/COutputLogger.h>\n"
+        "#include <rclcpp/rclcpp.hpp>\n#include <std_msgs/msg/string.hpp>\n"
+        "class Module : public mrpt::system::COutputLogger,\n"
+        "               public std::enable_shared_from_this<Module> {\n public:\n"
+        "  Ptr getAsPtr() { return shared_from_this(); }\n};\n")
+    node = (
+        "class Server : public rclcpp::Node {\n public:\n"
+        "  Server() : Node(\"server\") {\n"
+        "    pub_ = create_publisher<std_msgs::msg::String>(\"state\", 10);\n  }\n"
+        "  void start() { helper_ = vendor::make_helper(shared_from_this()); }\n"
+        "  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;\n"
+        "  std::shared_ptr<vendor::Helper> helper_;\n};\n")
+    alone = _server(write_tree, module + "int main() { return 0; }\n")
+    assert "CPP_NODE_TO_UNKNOWN" not in codes(alone)
+    both = _server(write_tree, module + node)
+    assert [(d.code, d.location.line) for d in both.diagnostics
+            if d.code == "CPP_NODE_TO_UNKNOWN"] == [("CPP_NODE_TO_UNKNOWN", 15)]
