@@ -163,6 +163,9 @@ class CallFinder:
         self._fixed: set[tuple[str, str, str | None]] = set()  # fixed-name calls already found
         # ROS 2 parameter -> its declared default, and the parameter it holds (``Source``)
         self._declared: dict[str, tuple[str, str | None]] = {}
+        # the keys each declare_parameters(prefix, map) of the unit declared under its
+        # prefix (None: a map whose keys are not known), for get_parameters(prefix, out)
+        self._prefix_keys: dict[str, list[str] | None] = {}
         self.calls: list[PrimitiveCall] = []
         self.functions: list[Cursor] = []
         # (file, line) of the calls of an API function's name that the parse resolved,
@@ -1224,6 +1227,15 @@ class CallFinder:
                 keys = _map_keys(args[given + 1], scope) if (
                     call.spelling == "declare_parameters" and given is not None
                     and given + 1 < len(args)) else None
+                if call.spelling == "declare_parameters":
+                    known = self._prefix_keys.get(prefix, [])
+                    self._prefix_keys[prefix] = None if keys is None or known is None \
+                        else [*known, *keys]
+                elif "?" not in prefix:
+                    # get_parameters(prefix, out) reads what is declared under the prefix:
+                    # the keys the unit's declare_parameters gave it (teleop_twist_joy's
+                    # axis_linear.x, .y, .z), else whatever that is
+                    keys = self._prefix_keys.get(prefix)
                 return [((prefix + "." if prefix else "") + key, None)
                         for key in (keys or ["?"])]
             return [self._name(e, scope) for e in _elements(expr)]
