@@ -177,9 +177,10 @@ def test_parameter_forms_of_real_nodes() -> None:
         ("declare", "frame_id", "str", True, "map"),
         # a ParameterType constant: typed by it, no default
         ("declare", "map_file", "str", False, None),
-        # declare_parameters: each key of the map written there, its value the default
-        ("declare", "limits.low", None, True, None),
-        ("declare", "limits.high", None, True, None),
+        # declare_parameters: each key of the map written there, its value the default,
+        # typed by the template argument (the element of the std::vector<T> it returns)
+        ("declare", "limits.low", "int", True, None),
+        ("declare", "limits.high", "int", True, None),
         ("read", "retries", "int", True, 3),
         ("read", "mode", "str", False, None),
     ]
