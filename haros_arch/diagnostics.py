@@ -91,6 +91,14 @@ CATALOGUE: dict[str, Entry] = {
         "the package, one of which defines main(): that executable is taken as built, "
         "linking the package's libraries its code names, so launch files that run it "
         "find it."),
+    "CMAKE_GUESSED_LIBRARY": Entry(
+        "info", "{command}() is defined outside the workspace; {target} is taken as a "
+        "library built from {sources}",
+        "A command the workspace does not define whose name says it makes a library "
+        "(MOLA's mola_add_library, cartographer's google_library) names a new target and "
+        "C/C++ sources of the package, none of which defines main(): that library is "
+        "taken as built, so the package's executables made after it link it, as they do "
+        "an add_library's (of which they run what their code names)."),
     "CMAKE_SUPERBUILD": Entry(
         "info", "ExternalProject_Add({name}) configures the package's own folder again "
         "with {values}; its targets are read from that configuration",
