@@ -390,6 +390,12 @@ CATALOGUE: dict[str, Entry] = {
         "README: nav2 servers, costmaps, move_base, controller managers, ...), each "
         "instance of it is 'partial', so checks that claim something is absent do not "
         "decide on it."),
+    "CPP_LIBRARY_LOADED": Entry(
+        "info", "{text}: loads a shared library chosen at run time",
+        "The code opens a shared library by name (POSIX dlopen, Windows LoadLibrary): "
+        "MOLA's mola-cli loads the modules its YAML file lists, its ROS 2 bridge among "
+        "them. What that library does on the node is not in the node's code: the node "
+        "is partial, so checks that claim something is absent do not decide on it."),
     "CPP_NODE_PASSED": Entry(
         "info", "{cls} of package {package} is built with the node ({given}) in code that "
         "is not read with this node",

@@ -663,6 +663,31 @@ def plugin_loads(path: str, text: str, workspace: Workspace) -> list[Diagnostic]
     return found
 
 
+# POSIX's and Windows' loaders of a shared library by name
+_LIBRARY_LOAD = re.compile(
+    r"(?<![\w.>:])(?:::\s*)?(dlopen|LoadLibrary[AW]?|LoadLibraryEx[AW]?)\s*\(")
+
+
+def library_loads(path: str, text: str, workspace: Workspace) -> list[Diagnostic]:
+    """The lines of ``text`` (the unit's own source) that open a shared library by name
+    (``CPP_LIBRARY_LOADED``, a cause of partial): MOLA's launcher dlopen()s the modules
+    its configuration lists; what they do on the node is not in its code."""
+    found: list[Diagnostic] = []
+    for match in _LIBRARY_LOAD.finditer(text):
+        start = text.rfind("\n", 0, match.start()) + 1
+        end = text.find("\n", match.end())
+        line = text[start:end if end != -1 else len(text)]
+        if line.lstrip().startswith(("//", "*", "/*", "#")):
+            continue
+        number = text.count("\n", 0, match.start()) + 1
+        found.append(diag.make("CPP_LIBRARY_LOADED",
+                               workspace.location(path, number, match.start(1) - start + 1),
+                               text=line.strip()[:120]))
+        if len(found) == MAX_PLUGIN_LOADS:
+            break
+    return found
+
+
 def _translation_unit(path: str, text: str, ros2: bool,
                       setup: IncludeSetup) -> tuple[CppResult, list[str]]:
     """What one source file gives, and the workspace / synthesised headers it read
@@ -723,6 +748,7 @@ def _translation_unit(path: str, text: str, ros2: bool,
                 continue
         break
     result.diagnostics.extend(plugin_loads(path, text, workspace))
+    result.diagnostics.extend(library_loads(path, text, workspace))
     result.calls = sorted(finder.calls, key=lambda c: (
         c.location.file or "", c.location.line, c.location.column))
     result.diagnostics.extend(finder.diagnostics)
