@@ -516,3 +516,35 @@ def test_ros1_param_into_a_vendor_value_and_timer_options(write_tree) -> None:
     assert _errors(result) == []
     assert [(c.kind, c.name) for c in result.calls] == [
         ("read", "~track_point_x"), ("read", "~point_cloud_topic"), ("publish", "~elevation_map")]
+
+
+def test_ros2_parameter_value_as_text_and_topic_endpoint_info(write_tree) -> None:
+    """orca4's camera_info_publisher logs each parameter with ros2_shared's context
+    macros, ``rclcpp::to_string(rclcpp::ParameterValue{cxt_.n_})``: the stand-ins had
+    only ``to_string(FutureReturnCode)``, so the constructor that creates the node's
+    publisher had an error and the node was partial. topic_tools' ToolBaseNode reads its
+    input's publishers with ``get_publishers_info_by_topic``, a vector of
+    ``rclcpp::TopicEndpointInfo`` whose QoS it copies: unknown to the stand-ins."""
+    source = (
+        "#include <rclcpp/rclcpp.hpp>\n#include <std_msgs/msg/string.hpp>\n"
+        "class Node : public rclcpp::Node {\n public:\n"
+        "  Node() : rclcpp::Node(\"relay\") {\n"
+        "    rate_ = declare_parameter(\"rate\", rate_);\n"
+        "    RCLCPP_INFO(get_logger(), \"rate = %s\",\n"
+        "                rclcpp::to_string(rclcpp::ParameterValue{rate_}).c_str());\n"
+        "    std::vector<rclcpp::TopicEndpointInfo> found =\n"
+        "        get_publishers_info_by_topic(\"in\");\n"
+        "    rclcpp::QoS qos{10};\n"
+        "    if (!found.empty()) {\n"
+        "      qos.reliability(found[0].qos_profile().reliability());\n"
+        "      std::string type = found[0].topic_type();\n    }\n"
+        "    auto graph = get_node_graph_interface();\n"
+        "    size_t readers = graph->get_subscriptions_info_by_topic(\"out\").size();\n"
+        "    pub_ = create_publisher<std_msgs::msg::String>(\"out\", qos);\n"
+        "    (void) readers;\n  }\n"
+        "  double rate_{1.0};\n"
+        "  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;\n};\n")
+    result = _extract(write_tree, source, "ament_cmake")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("declare", "rate"), ("publish", "out")]

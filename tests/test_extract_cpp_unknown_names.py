@@ -177,9 +177,10 @@ def test_parameter_forms_of_real_nodes() -> None:
         ("declare", "frame_id", "str", True, "map"),
         # a ParameterType constant: typed by it, no default
         ("declare", "map_file", "str", False, None),
-        # declare_parameters: each key of the map written there, its value the default
-        ("declare", "limits.low", None, True, None),
-        ("declare", "limits.high", None, True, None),
+        # declare_parameters: each key of the map written there, its value the default,
+        # typed by the template argument (the element of the std::vector<T> it returns)
+        ("declare", "limits.low", "int", True, None),
+        ("declare", "limits.high", "int", True, None),
         ("read", "retries", "int", True, 3),
         ("read", "mode", "str", False, None),
     ]
@@ -915,3 +916,29 @@ def test_a_vendor_member_template_called_as_a_statement_is_declared() -> None:
     declared = "template <class... T, class... A> static haros_any &%s(const A &...);"
     assert declared % "registerNodeType" in header
     assert declared % "get" not in header and declared % "build" not in header
+
+
+def test_shared_from_this_of_a_class_that_is_no_node_is_not_the_node(write_tree) -> None:
+    """MOLA's ``ExecutableBase`` (no node: a std::enable_shared_from_this of itself, with
+    bases of MRPT, whose headers are missing) returns ``shared_from_this()`` as its ``Ptr``,
+    a name declared permissively: that was "the node given to Ptr" (CPP_NODE_TO_UNKNOWN)
+    and every program including the header, mola-cli too, partial. Only a node's own
+    ``shared_from_this()`` is the node; given to an unknown name it still is."""
+    module = (
+        "#include <memory>\n#include <mrpt/system/COutputLogger.h>\n"
+        "#include <rclcpp/rclcpp.hpp>\n#include <std_msgs/msg/string.hpp>\n"
+        "class Module : public mrpt::system::COutputLogger,\n"
+        "               public std::enable_shared_from_this<Module> {\n public:\n"
+        "  Ptr getAsPtr() { return shared_from_this(); }\n};\n")
+    node = (
+        "class Server : public rclcpp::Node {\n public:\n"
+        "  Server() : Node(\"server\") {\n"
+        "    pub_ = create_publisher<std_msgs::msg::String>(\"state\", 10);\n  }\n"
+        "  void start() { helper_ = vendor::make_helper(shared_from_this()); }\n"
+        "  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;\n"
+        "  std::shared_ptr<vendor::Helper> helper_;\n};\n")
+    alone = _server(write_tree, module + "int main() { return 0; }\n")
+    assert "CPP_NODE_TO_UNKNOWN" not in codes(alone)
+    both = _server(write_tree, module + node)
+    assert [(d.code, d.location.line) for d in both.diagnostics
+            if d.code == "CPP_NODE_TO_UNKNOWN"] == [("CPP_NODE_TO_UNKNOWN", 15)]

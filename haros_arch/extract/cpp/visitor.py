@@ -99,6 +99,8 @@ _LOOKUP = re.compile(rb"\s*(?:(?:\.|->)\s*(?:find|count|contains|at|end)\s*\(|\[
 # parameter the default holds), then ``EACH`` when the name is each element of that list
 # parameter in turn (PrimitiveCall.name_each) and the (line, column) of the range-based
 # for that walks it
+# ``PrimitiveCall.stores`` of a read into a member the unit also writes otherwise
+OTHER_WRITES = "!"
 NameSource = tuple[str, str | None, str | None, str | None, tuple[int, int] | None]
 EACH = "."
 
@@ -163,6 +165,9 @@ class CallFinder:
         self._fixed: set[tuple[str, str, str | None]] = set()  # fixed-name calls already found
         # ROS 2 parameter -> its declared default, and the parameter it holds (``Source``)
         self._declared: dict[str, tuple[str, str | None]] = {}
+        # the keys each declare_parameters(prefix, map) of the unit declared under its
+        # prefix (None: a map whose keys are not known), for get_parameters(prefix, out)
+        self._prefix_keys: dict[str, list[str] | None] = {}
         self.calls: list[PrimitiveCall] = []
         self.functions: list[Cursor] = []
         # (file, line) of the calls of an API function's name that the parse resolved,
@@ -237,15 +242,18 @@ class CallFinder:
             member = members[key]
             made = [[(r.kind, r.name, r.handle_namespace, r.has_default, r.default,
                       r.conditions) for r in reads] for reads in sites.values()]
-            if not all(m == made[0] for m in made):
-                continue
-            also = self._constants(member, len(sites), calls.get(key, set()))
-            if also is None:
-                continue
+            usr = member.get_usr() or None
+            also = self._constants(member, len(sites), calls.get(key, set())) if all(
+                m == made[0] for m in made) else None
             for reads in sites.values():
                 for read in reads:
-                    read.variable = member.spelling
-                    read.also = also or None
+                    # what another file of the node names with the member is the
+                    # parameter's value when these reads are its only writes here
+                    # (``extract.cpp._members_named``); OTHER_WRITES: not only they
+                    read.stores = usr if also == [] or usr is None else OTHER_WRITES + usr
+                    if also is not None:
+                        read.variable = member.spelling
+                        read.also = also or None
         self.facts = argument_facts(self.sites, self.namespaces, self.owned, self._marked,
                                     self._site_conditions)
         self.facts.extend(call_conditions.site_facts(
@@ -1006,6 +1014,7 @@ class CallFinder:
         names: list[tuple[str, NameSource | None]]
         namespace: str | None = None
         elsewhere: list[str] = []  # members read for the name that other files set
+        name_expr: Cursor | None = None
         if spec.fixed_name is not None:
             if spec.handle_default is not None:  # relative to the handle given
                 handle = next((a for a in args if is_handle(a)), None)
@@ -1121,6 +1130,8 @@ class CallFinder:
                         ("/", "~")):
                     handle_namespace = namespace
             made_in = self._made_in(name, handle_namespace)
+            name_member = self._name_member(name_expr) if (
+                written == "?" and source is None and spec.fixed_name is None) else None
             self.calls.append(PrimitiveCall(
                 kind=spec.kind, name=name, type=ctype, queue_size=queue, qos=qos,
                 latch=latch, callback=callback_name(function), conditions=conditions,
@@ -1134,7 +1145,7 @@ class CallFinder:
                 deletes=spec.deletes, node_name=owner, transport=transport,
                 made_in=made_in, program_arg=program_arg,
                 name_arg=written.program_arg if isinstance(written, ArgumentName) and (
-                    name.count("?") == 1) else None))
+                    name.count("?") == 1) else None, name_member=name_member))
             if status is not None:
                 self._status_reads.append((status, self.calls[-1]))
             member = self._member(spec, call, shift) if len(names) == 1 else None
@@ -1255,6 +1266,15 @@ class CallFinder:
                 keys = _map_keys(args[given + 1], scope) if (
                     call.spelling == "declare_parameters" and given is not None
                     and given + 1 < len(args)) else None
+                if call.spelling == "declare_parameters":
+                    known = self._prefix_keys.get(prefix, [])
+                    self._prefix_keys[prefix] = None if keys is None or known is None \
+                        else [*known, *keys]
+                elif "?" not in prefix:
+                    # get_parameters(prefix, out) reads what is declared under the prefix:
+                    # the keys the unit's declare_parameters gave it (teleop_twist_joy's
+                    # axis_linear.x, .y, .z), else whatever that is
+                    keys = self._prefix_keys.get(prefix)
                 return [((prefix + "." if prefix else "") + key, None)
                         for key in (keys or ["?"])]
             return [self._name(e, scope) for e in _elements(expr)]
@@ -1298,6 +1318,19 @@ class CallFinder:
             source = self._parameter_source(unknown[0], scope, 0)
         return (name, None if source is None else (*source, None, None))
 
+    def _name_member(self, expr: Cursor | None) -> str | None:
+        """The USR of the member ``expr`` is, when no function of this unit writes it
+        (a base class's member that a subclass's constructor in another file sets:
+        topic_tools' ``output_topic_``), else None."""
+        inner = strip(expr) if expr is not None else None
+        field = inner.referenced if inner is not None and inner.kind in (
+            CursorKind.MEMBER_REF_EXPR, CursorKind.DECL_REF_EXPR) else None
+        if field is None or field.kind != CursorKind.FIELD_DECL or self.members is None or (
+            self.members.writes(field) != 0
+        ):
+            return None
+        return field.get_usr() or None
+
     def _held_parameters(self, tested: Cursor, scope: Scope) -> tuple[tuple[str, str], ...]:
         """The locals ``tested`` names that hold a parameter's value: each written once,
         by a read (or declaration) of a parameter with a known name."""
@@ -1313,7 +1346,7 @@ class CallFinder:
             key = place_of(decl)
             if key not in self._held:
                 source = self._parameter_source(node, scope, 0)
-                self._held[key] = source[0] if source is not None and _known_name(
+                self._held[key] = source[0] if source is not None and known_name(
                     source[0]) else None
             parameter = self._held[key]
             if parameter is not None:
@@ -1326,7 +1359,7 @@ class CallFinder:
         name, source = self._name(expr, scope)
         # (a parameter named after what other files pass is not known until they are
         # read: its name stays unknown)
-        if source is None or PLACEHOLDER in name or not _known_name(source[0]):
+        if source is None or PLACEHOLDER in name or not known_name(source[0]):
             return None
         return parameter_mark(name, source[0], source[3])
 
@@ -1890,7 +1923,7 @@ def _renames_itself(arg: Cursor) -> bool:
     return False
 
 
-def _known_name(name: str) -> bool:
+def known_name(name: str) -> bool:
     """A parameter's name known in this file: no unknown run, no placeholder of what
     another file passes, no parameter mark."""
     return not any(mark in name for mark in ("?", PLACEHOLDER, PARAMETER))

@@ -182,6 +182,10 @@ public:
   bool operator==(const ParameterValue& other) const;
   bool operator!=(const ParameterValue& other) const;
 };
+// rclcpp/parameter_value.hpp: a value or a type as text (ros2_shared's context macros
+// log each parameter with to_string(ParameterValue{member}))
+std::string to_string(ParameterType type);
+std::string to_string(const ParameterValue& value);
 class Parameter {
 public:
   Parameter();
@@ -343,6 +347,24 @@ class ServicesQoS : public QoS { public: explicit ServicesQoS(const QoSInitializ
 class RosoutQoS : public QoS { public: explicit RosoutQoS(const QoSInitialization& i = KeepLast(1000)); };
 class SystemDefaultsQoS : public QoS { public: explicit SystemDefaultsQoS(const QoSInitialization& i = KeepLast(10)); };
 class ClockQoS : public QoS { public: explicit ClockQoS(const QoSInitialization& i = KeepLast(1)); };
+// rclcpp/node_interfaces/node_graph_interface.hpp: an endpoint of a topic as the graph
+// tells it (topic_tools' relay takes the type and QoS of its input's publishers)
+enum class EndpointType { Invalid = 0, Publisher, Subscription };
+class TopicEndpointInfo {
+public:
+  std::string& node_name();
+  const std::string& node_name() const;
+  std::string& node_namespace();
+  const std::string& node_namespace() const;
+  std::string& topic_type();
+  const std::string& topic_type() const;
+  EndpointType& endpoint_type();
+  const EndpointType& endpoint_type() const;
+  std::array<uint8_t, 24>& endpoint_gid();
+  const std::array<uint8_t, 24>& endpoint_gid() const;
+  QoS& qos_profile();
+  const QoS& qos_profile() const;
+};
 // entities
 class CallbackGroup { public: RCLCPP_SMART_PTR_DEFINITIONS(CallbackGroup) };
 enum class CallbackGroupType { MutuallyExclusive, Reentrant };
@@ -633,6 +655,10 @@ class NodeGraphInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeGraphInterfa
   std::vector<std::string> get_node_names() const;
   size_t count_publishers(const std::string& topic) const;
   size_t count_subscribers(const std::string& topic) const;
+  std::vector<rclcpp::TopicEndpointInfo> get_publishers_info_by_topic(
+      const std::string& topic_name, bool no_mangle = false) const;
+  std::vector<rclcpp::TopicEndpointInfo> get_subscriptions_info_by_topic(
+      const std::string& topic_name, bool no_mangle = false) const;
   std::shared_ptr<rclcpp::Event> get_graph_event();
   void wait_for_graph_change(std::shared_ptr<rclcpp::Event> event,
                              std::chrono::nanoseconds timeout); };
@@ -742,6 +768,10 @@ using OnSetParametersCallbackHandle = node_interfaces::OnSetParametersCallbackHa
   rclcpp::node_interfaces::NodeWaitablesInterface::SharedPtr get_node_waitables_interface(); \
   size_t count_publishers(const std::string& topic) const; \
   size_t count_subscribers(const std::string& topic) const; \
+  std::vector<rclcpp::TopicEndpointInfo> get_publishers_info_by_topic( \
+      const std::string& topic_name, bool no_mangle = false) const; \
+  std::vector<rclcpp::TopicEndpointInfo> get_subscriptions_info_by_topic( \
+      const std::string& topic_name, bool no_mangle = false) const; \
   std::map<std::string, std::vector<std::string>> get_topic_names_and_types() const; \
   std::map<std::string, std::vector<std::string>> get_service_names_and_types() const; \
   std::vector<std::string> get_node_names() const; \
