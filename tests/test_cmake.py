@@ -254,6 +254,32 @@ def test_an_executable_made_by_a_function_defined_outside_the_workspace(write_tr
     assert "google_binary() is defined outside the workspace" in guessed[0].message
 
 
+def test_a_library_a_later_folder_adds_is_linked(write_tree):
+    """CMake resolves the names target_link_libraries gives once every file is read:
+    autorally_core adds src/gps, whose executable links SerialSensorInterface, before
+    src/SerialSensorInterface, which adds that library. Its GPS node read none of the
+    serial port's parameters."""
+    root = write_tree({
+        "src/pkg/package.xml": package_xml("pkg"),
+        "src/pkg/CMakeLists.txt": """
+            project(pkg)
+            add_subdirectory(src/gps)
+            add_subdirectory(src/serial)
+            """,
+        "src/pkg/src/gps/CMakeLists.txt": """
+            add_executable(gps gps.cpp)
+            target_link_libraries(gps ${catkin_LIBRARIES} Serial pthread)
+            """,
+        "src/pkg/src/serial/CMakeLists.txt": "add_library(Serial serial.cpp)\n",
+        "src/pkg/src/gps/gps.cpp": "void open_port();\nint main() { open_port(); }\n",
+        "src/pkg/src/serial/serial.cpp": "void open_port() {}\n",
+    })
+    ws = scan([str(root / "src")], {})
+    nodes, _found = parse_package(ws.packages["pkg"], ws)
+    assert [(n.executable, sorted(n.sources)) for n in nodes] == [
+        ("gps", ["pkg/src/gps/gps.cpp", "pkg/src/serial/serial.cpp"])]
+
+
 def test_a_class_the_executable_defines_itself_names_no_library_file(write_tree):
     """cartographer_ros' occupancy_grid_node_main.cc defines its own ``class Node`` and
     links the package library, whose node.cc defines the SLAM ``Node``'s members: the
