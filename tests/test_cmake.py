@@ -445,6 +445,39 @@ def test_an_included_file_named_without_a_folder(write_tree):
     assert [(n.executable, n.sources) for n in nodes] == [("pkg_node", ["pkg/src/a.cpp"])]
 
 
+def test_an_else_that_returns_after_a_test_not_decided(write_tree):
+    """rotors_hil_interface builds its node only when Mavlink is found: ``if
+    (Mavlink_DIR) message(...) else () catkin_package() return() endif ()``. The else's
+    return() ended the reading, so the launch file's rotors_hil_interface_node was 'not
+    in the workspace' (a launch-missing-reference error): it is built when the test
+    holds."""
+    ws, pkg = workspace_with(write_tree, """
+        project(pkg)
+        find_package(Mavlink QUIET)
+        if (Mavlink_DIR)
+          message(STATUS "building")
+        else ()
+          return()
+        endif ()
+        add_executable(pkg_node src/a.cpp)
+        if (NOT Mavlink_DIR)
+          return()
+        elseif (WITH_B)
+          add_executable(pkg_b src/b.cpp)
+        else ()
+          return()
+        endif ()
+        add_executable(pkg_c src/c.cpp)
+        """)
+    nodes, _ = parse_package(pkg, ws)
+    assert [(n.executable, [(c.statement, c.text) for c in n.conditions])
+            for n in nodes] == [
+        ("pkg_node", [("if", "Mavlink_DIR")]),
+        ("pkg_b", [("if", "Mavlink_DIR"), ("else", "NOT Mavlink_DIR"), ("elseif", "WITH_B")]),
+        ("pkg_c", [("if", "Mavlink_DIR"), ("if", "NOT (NOT Mavlink_DIR)"),
+                   ("if", "(NOT Mavlink_DIR) OR (WITH_B)")])]
+
+
 def test_a_superbuild_of_the_package_itself_reads_its_second_configuration(write_tree):
     """panther_ros' panther_diagnostics: an option chooses a superbuild, which builds a
     dependency and then the package's own folder as an external project with
