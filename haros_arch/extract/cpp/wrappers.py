@@ -687,7 +687,9 @@ class Wrappers:
                 row = self._of_spec(row, call, wrapper) or dataclasses.replace(
                     row, fixed_name="?")
             elif row.name_arg >= len(args):
-                continue
+                args = _with_defaults(call, args)  # ``limiter.init(nh)``: its default
+                if row.name_arg >= len(args):
+                    continue
             before, after = _bind(wrapper.before, bound), _bind(wrapper.after, bound)
             if (row, before, after) in done:
                 continue  # two summaries that differ only in the value now bound
@@ -827,8 +829,15 @@ def _name_shape(expr: Cursor, params: list[Cursor], scope: Scope | None,
         return _name_shape(value, params, scope, depth + 1) if value is not None else None
     operands: list[Cursor] = []
     if kind == CursorKind.CONDITIONAL_OPERATOR:
-        # ``ns.empty() ? name : ns + "." + name``: the branch that keeps the most text
-        branches = [c for c in expr.get_children() if c.kind.is_expression()][1:]
+        # ``ns.empty() ? name : ns + "." + name``: the branch that keeps the most text;
+        # not a test of the parameter that names it (``!field.empty() ? field + "/" :
+        # ""``): each call site's value picks the branch, as a call read through its
+        # call sites does (``Scope.string``), not the longest text
+        children = [c for c in expr.get_children() if c.kind.is_expression()]
+        if children and any(_parameter_index(node, params) is not None
+                            for node in children[0].walk_preorder()):
+            return None
+        branches = children[1:]
         shapes = [found for b in branches
                   if (found := _name_shape(b, params, scope, depth + 1)) is not None]
         return max(shapes, key=lambda f: len(f[0]) + len(f[2])) if shapes else None
@@ -1165,6 +1174,24 @@ def _arguments(call: Cursor) -> list[Cursor]:
         if parent is not None and parent.spelling.startswith("(lambda at "):
             return args[1:]
     return args
+
+
+def _with_defaults(call: Cursor, args: list[Cursor]) -> list[Cursor]:
+    """``args`` with the defaults of the parameters the call leaves out, in order, as
+    far as each has one (hector_quadrotor's ``attitude_limiter_.init(controller_nh)``
+    of ``init(nh, field = std::string())``, which names its parameters after
+    ``field``)."""
+    target = call.referenced
+    if target is None or call.spelling == "operator()":
+        return args
+    params = [c for c in target.get_children() if c.kind == CursorKind.PARM_DECL]
+    out = list(args)
+    for parm in params[len(args):]:
+        found = default_argument(parm)
+        if found is None:
+            break
+        out.append(found)
+    return out
 
 
 def _made_with(call: Cursor, scope: Scope) -> dict[str, Parts]:
