@@ -34,7 +34,7 @@ from .cache import conditions_text
 from .call_conditions import INDICES
 from .call_sites import CallSites, argument
 from .handles import Namespaces, is_handle, join_name, normalise
-from .values import CHOICE, CHOICE_END, CHOICE_SEP, PLACEHOLDER, SEPARATOR, Scope, key_of, render
+from .values import PLACEHOLDER, SEPARATOR, Scope, choose, key_of, render
 
 Fact = tuple[str, int, str, str]  # callee USR, parameter index, value passed, call site
 CALLED = -1  # the index of a fact that says only that the call site calls the function
@@ -80,30 +80,6 @@ MAX_VALUES = 32  # realsense2_camera's setParam is called with ~30 names in its 
 MAX_DEPTH = 8
 _MARK = re.compile(f"{PLACEHOLDER}([^{PLACEHOLDER}{SEPARATOR}]*){SEPARATOR}(\\d+){PLACEHOLDER}")
 _SPLIT = "\x02"
-# an innermost choice (``values.CHOICE``): the tested text, the text when it is empty,
-# the text when it is not
-_CHOICE = re.compile(f"{CHOICE}([^{CHOICE}{CHOICE_SEP}{CHOICE_END}]*){CHOICE_SEP}"
-                     f"([^{CHOICE}{CHOICE_SEP}{CHOICE_END}]*){CHOICE_SEP}"
-                     f"([^{CHOICE}{CHOICE_SEP}{CHOICE_END}]*){CHOICE_END}")
-
-
-def choose(text: str) -> str:
-    """``text`` with each choice (``values.CHOICE``) replaced by its side for the tested
-    text as filled: the first when it is empty, the second when it has text; ``?`` while
-    that text holds a placeholder or an unknown part it may be empty for."""
-    def pick(found: re.Match[str]) -> str:
-        tested, if_empty, if_not = found.groups()
-        if tested == "":
-            return if_empty
-        if PLACEHOLDER in tested or tested == "?":
-            return "?"
-        return if_not if tested.replace("?", "") else "?"
-    while CHOICE in text:
-        chosen = _CHOICE.sub(pick, text)
-        if chosen == text:
-            return text
-        text = chosen
-    return text
 
 
 def argument_facts(sites: CallSites, namespaces: Namespaces,

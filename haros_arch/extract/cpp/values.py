@@ -48,6 +48,9 @@ SEPARATOR = "\x01"
 CHOICE = "\x05"
 CHOICE_SEP = "\x06"
 CHOICE_END = "\x07"
+# in a side of a choice: the tested text (a wrapper's ``field + "/"`` where the tested
+# string is its name argument, bound at each call site)
+BACKREF = "\x08"
 Value = TypeVar("Value")
 UNKNOWN: Parts = (None,)
 MAX_DEPTH = 24
@@ -173,7 +176,70 @@ def render(parts: Parts) -> str:
                 text.append("?")
         else:
             text.append(part)
-    return "".join(text)
+    joined = "".join(text)
+    return choose(joined) if CHOICE in joined and PLACEHOLDER not in joined else joined
+
+
+def emptiness_test(test: Cursor) -> tuple[Cursor, bool] | None:
+    """A test of whether a string is empty: (the string, whether the test holds when it
+    is empty) for ``s.empty()``, ``!test``, ``s.length() > 0`` / ``!= 0`` / ``>= 1``,
+    ``s.size() == 0`` / ``< 1`` / ``<= 0``, ``s == ""``, ``s != ""``; None for any other."""
+    test = strip(test)
+    kind = test.kind
+    children = [c for c in test.get_children() if c.kind.is_expression()]
+    if kind == CursorKind.UNARY_OPERATOR and len(children) == 1:
+        tokens = list(test.get_tokens())
+        if not tokens or tokens[0].spelling != "!":
+            return None
+        inner = emptiness_test(children[0])
+        return None if inner is None else (inner[0], not inner[1])
+    if kind == CursorKind.CALL_EXPR:
+        args = written_arguments(test)
+        if test.spelling == "empty" and not args:
+            subject = _method_object(test)
+            return None if subject is None else (subject, True)
+        if test.spelling in ("operator==", "operator!=") and len(args) == 2:
+            for subject, other in ((args[0], args[1]), (args[1], args[0])):
+                other = strip(other)
+                if other.kind == CursorKind.STRING_LITERAL and literal(other.spelling) == "":
+                    return subject, test.spelling == "operator=="
+        return None
+    if kind == CursorKind.BINARY_OPERATOR and len(children) == 2:
+        size = _size_of(children[0])
+        number = strip(children[1])
+        tokens = list(number.get_tokens()) if number.kind == CursorKind.INTEGER_LITERAL else []
+        if size is None or len(tokens) != 1 or not tokens[0].spelling.isdigit():
+            return None
+        pair = (binary_operator(test, children), int(tokens[0].spelling))
+        if pair in ((">", 0), ("!=", 0), (">=", 1)):
+            return size, False
+        if pair in (("==", 0), ("<", 1), ("<=", 0)):
+            return size, True
+    return None
+
+
+_CHOSEN = re.compile(f"{CHOICE}([^{CHOICE}{CHOICE_SEP}{CHOICE_END}]*){CHOICE_SEP}"
+                     f"([^{CHOICE}{CHOICE_SEP}{CHOICE_END}]*){CHOICE_SEP}"
+                     f"([^{CHOICE}{CHOICE_SEP}{CHOICE_END}]*){CHOICE_END}")
+
+
+def choose(text: str) -> str:
+    """``text`` with each choice (``CHOICE``) replaced by its side for the tested text:
+    the first when it is empty, the second (its ``BACKREF`` the tested text) when it has
+    text; ``?`` while that text holds a placeholder, or is unknown and may be empty."""
+    def pick(found: re.Match[str]) -> str:
+        tested, if_empty, if_not = found.groups()
+        if tested == "":
+            return if_empty
+        if PLACEHOLDER in tested or not tested.replace("?", ""):
+            return "?"
+        return if_not.replace(BACKREF, tested)
+    while CHOICE in text:
+        chosen = _CHOSEN.sub(pick, text)
+        if chosen == text:
+            return text
+        text = chosen
+    return text
 
 
 def is_empty(parts: Parts) -> bool | None:
@@ -577,47 +643,10 @@ class Scope:
                 + CHOICE_SEP + _choice_text(self.string(if_not, depth + 1)) + CHOICE_END,)
 
     def _emptiness(self, test: Cursor, depth: int) -> tuple[Parts, bool] | None:
-        """A test of whether a string is empty: (the string, whether the test holds
-        when it is empty); None for any other test."""
-        test = strip(test)
-        kind = test.kind
-        children = [c for c in test.get_children() if c.kind.is_expression()]
-        if kind == CursorKind.UNARY_OPERATOR and len(children) == 1:
-            tokens = list(test.get_tokens())
-            if not tokens or tokens[0].spelling != "!":
-                return None
-            inner = self._emptiness(children[0], depth)
-            return None if inner is None else (inner[0], not inner[1])
-        if kind == CursorKind.CALL_EXPR:
-            args = written_arguments(test)
-            if test.spelling == "empty" and not args:
-                subject = _method_object(test)
-                return None if subject is None else (self.string(subject, depth + 1), True)
-            if test.spelling in ("operator==", "operator!=") and len(args) == 2:
-                return self._compared_empty(args[0], args[1], test.spelling == "operator==",
-                                            depth)
-            return None
-        if kind == CursorKind.BINARY_OPERATOR and len(children) == 2:
-            operator = binary_operator(test, children)
-            left, right = children
-            size = _size_of(left)
-            number = self.integer(right)
-            if size is None or number is None:
-                return None
-            subject = self.string(size, depth + 1)
-            if (operator, number) in ((">", 0), ("!=", 0), (">=", 1)):
-                return subject, False
-            if (operator, number) in (("==", 0), ("<", 1), ("<=", 0)):
-                return subject, True
-        return None
-
-    def _compared_empty(self, left: Cursor, right: Cursor, equal: bool,
-                        depth: int) -> tuple[Parts, bool] | None:
-        """``s == ""`` / ``s != ""`` (either side): a test of whether ``s`` is empty."""
-        for subject, other in ((left, right), (right, left)):
-            if strip(other).kind == CursorKind.STRING_LITERAL and self.string(other) == ("",):
-                return self.string(subject, depth + 1), equal
-        return None
+        """A test of whether a string is empty (``emptiness_test``): the string's value
+        and whether the test holds when it is empty."""
+        found = emptiness_test(test)
+        return None if found is None else (self.string(found[0], depth + 1), found[1])
 
     def _string_sum(self, cursor: Cursor, depth: int) -> Parts:
         """``a + b`` that the parse kept as an operator, not a call of ``operator+``:

@@ -40,10 +40,16 @@ from .cursors import Node, from_standin, overloads
 from .handles import callback, callback_name, is_handle, join_name, qualified_name
 from .qos import qos as qos_of
 from .values import (
+    BACKREF,
+    CHOICE,
+    CHOICE_END,
+    CHOICE_SEP,
     PLACEHOLDER,
     SEPARATOR,
+    UNKNOWN,
     Parts,
     Scope,
+    emptiness_test,
     initializer,
     strip,
     written_arguments,
@@ -806,6 +812,36 @@ class _NamedScope(Scope):
         return (*self._before, *parts, *self._after) if cursor == self._arg else parts
 
 
+def _choice_shape(children: list[Cursor], params: list[Cursor], scope: Scope | None,
+                  depth: int) -> tuple[Parts, int, Parts] | None:
+    """``test ? a : b`` whose test is whether the wrapper's parameter is empty
+    (hector_quadrotor's ``!field.empty() ? field + "/" : ""``): a choice (``values.
+    CHOICE``) tested on the argument each call site binds, each side the text around
+    it (``BACKREF`` where it is) or a constant; None for any other test of a parameter
+    (a longest side would be a name no call makes)."""
+    found = emptiness_test(children[0])
+    index = _parameter_index(strip(found[0]), params) if found is not None else None
+    if found is None or index is None:
+        return None
+    sides: list[str] = []
+    for branch in children[1:]:
+        shape = _name_shape(branch, params, scope, depth + 1)
+        if shape is not None and shape[1] == index:
+            sides.append(_text(shape[0]) + BACKREF + _text(shape[2]))
+            continue
+        value = scope.string(branch) if scope is not None else UNKNOWN
+        if None in value or any(PLACEHOLDER in (part or "") or CHOICE in (part or "")
+                                for part in value):
+            return None
+        sides.append(_text(value))
+    if_empty, if_not = sides if found[1] else sides[::-1]
+    return (CHOICE,), index, (f"{CHOICE_SEP}{if_empty}{CHOICE_SEP}{if_not}{CHOICE_END}",)
+
+
+def _text(parts: Parts) -> str:
+    return "".join("?" if part is None else part for part in parts)
+
+
 def _name_shape(expr: Cursor, params: list[Cursor], scope: Scope | None,
                 depth: int) -> tuple[Parts, int, Parts] | None:
     """``expr`` as (parts before, index of the wrapper's parameter, parts after), when it
@@ -834,9 +870,9 @@ def _name_shape(expr: Cursor, params: list[Cursor], scope: Scope | None,
         # ""``): each call site's value picks the branch, as a call read through its
         # call sites does (``Scope.string``), not the longest text
         children = [c for c in expr.get_children() if c.kind.is_expression()]
-        if children and any(_parameter_index(node, params) is not None
-                            for node in children[0].walk_preorder()):
-            return None
+        if len(children) == 3 and any(_parameter_index(node, params) is not None
+                                      for node in children[0].walk_preorder()):
+            return _choice_shape(children, params, scope, depth)
         branches = children[1:]
         shapes = [found for b in branches
                   if (found := _name_shape(b, params, scope, depth + 1)) is not None]
