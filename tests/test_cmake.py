@@ -295,6 +295,32 @@ def test_an_outside_function_of_keyword_arguments_names_its_target_after_the_key
         "executable built from mola-cli.cpp, one of which defines main()"]
 
 
+def test_a_library_a_later_folder_adds_is_linked(write_tree):
+    """CMake resolves the names target_link_libraries gives once every file is read:
+    autorally_core adds src/gps, whose executable links SerialSensorInterface, before
+    src/SerialSensorInterface, which adds that library. Its GPS node read none of the
+    serial port's parameters."""
+    root = write_tree({
+        "src/pkg/package.xml": package_xml("pkg"),
+        "src/pkg/CMakeLists.txt": """
+            project(pkg)
+            add_subdirectory(src/gps)
+            add_subdirectory(src/serial)
+            """,
+        "src/pkg/src/gps/CMakeLists.txt": """
+            add_executable(gps gps.cpp)
+            target_link_libraries(gps ${catkin_LIBRARIES} Serial pthread)
+            """,
+        "src/pkg/src/serial/CMakeLists.txt": "add_library(Serial serial.cpp)\n",
+        "src/pkg/src/gps/gps.cpp": "void open_port();\nint main() { open_port(); }\n",
+        "src/pkg/src/serial/serial.cpp": "void open_port() {}\n",
+    })
+    ws = scan([str(root / "src")], {})
+    nodes, _found = parse_package(ws.packages["pkg"], ws)
+    assert [(n.executable, sorted(n.sources)) for n in nodes] == [
+        ("gps", ["pkg/src/gps/gps.cpp", "pkg/src/serial/serial.cpp"])]
+
+
 def test_a_class_the_executable_defines_itself_names_no_library_file(write_tree):
     """cartographer_ros' occupancy_grid_node_main.cc defines its own ``class Node`` and
     links the package library, whose node.cc defines the SLAM ``Node``'s members: the
@@ -458,6 +484,39 @@ def test_an_included_file_named_without_a_folder(write_tree):
         handle.write("set(NODE_SOURCE src/a.cpp)\n")
     nodes, _ = parse_package(pkg, ws)
     assert [(n.executable, n.sources) for n in nodes] == [("pkg_node", ["pkg/src/a.cpp"])]
+
+
+def test_an_else_that_returns_after_a_test_not_decided(write_tree):
+    """rotors_hil_interface builds its node only when Mavlink is found: ``if
+    (Mavlink_DIR) message(...) else () catkin_package() return() endif ()``. The else's
+    return() ended the reading, so the launch file's rotors_hil_interface_node was 'not
+    in the workspace' (a launch-missing-reference error): it is built when the test
+    holds."""
+    ws, pkg = workspace_with(write_tree, """
+        project(pkg)
+        find_package(Mavlink QUIET)
+        if (Mavlink_DIR)
+          message(STATUS "building")
+        else ()
+          return()
+        endif ()
+        add_executable(pkg_node src/a.cpp)
+        if (NOT Mavlink_DIR)
+          return()
+        elseif (WITH_B)
+          add_executable(pkg_b src/b.cpp)
+        else ()
+          return()
+        endif ()
+        add_executable(pkg_c src/c.cpp)
+        """)
+    nodes, _ = parse_package(pkg, ws)
+    assert [(n.executable, [(c.statement, c.text) for c in n.conditions])
+            for n in nodes] == [
+        ("pkg_node", [("if", "Mavlink_DIR")]),
+        ("pkg_b", [("if", "Mavlink_DIR"), ("else", "NOT Mavlink_DIR"), ("elseif", "WITH_B")]),
+        ("pkg_c", [("if", "Mavlink_DIR"), ("if", "NOT (NOT Mavlink_DIR)"),
+                   ("if", "(NOT Mavlink_DIR) OR (WITH_B)")])]
 
 
 def test_a_superbuild_of_the_package_itself_reads_its_second_configuration(write_tree):

@@ -718,3 +718,54 @@ def test_a_callback_held_in_a_function_object_gives_the_message_type(tmp_path) -
     assert [(c.kind, c.name, c.type) for c in result.calls] == [
         ("subscribe", "target", "geometry_msgs/PoseStamped"),
         ("subscribe", "other", "geometry_msgs/PoseStamped")]
+
+
+ROS1_MANIFEST = package_xml("hil").replace(
+    "</package>", "<depend>roscpp</depend><depend>urdf</depend></package>")
+
+
+def test_ros1_stand_ins_for_auto_ptr_eigen_rotations_and_urdf_inertials(tmp_path) -> None:
+    """rotors_hil_interface builds its interface with ``std::auto_ptr`` and a quaternion
+    from ``AngleAxisd`` products; hector_quadrotor reads the root link's ``inertial``
+    from the URDF. Each was an error in a function that calls the ROS API (the node
+    partial) and, for the first, hid the construction whose constructor subscribes."""
+    result = _extract(tmp_path, ROS1_MANIFEST, """
+#include <memory>
+#include <string>
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+#include <urdf/model.h>
+#include <Eigen/Dense>
+class Interface {
+ public:
+  explicit Interface(const Eigen::Quaterniond& q) {
+    ros::NodeHandle pnh("~");
+    sub_ = pnh.subscribe<std_msgs::String>("imu", 1, &Interface::cb, this);
+  }
+  void cb(const std_msgs::String::ConstPtr&) {}
+  ros::Subscriber sub_;
+};
+double mass(const ros::NodeHandle& nh) {
+  std::string xml;
+  nh.getParam("robot_description", xml);
+  urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(xml);
+  urdf::InertialSharedPtr inertial = model->getRoot()->inertial;
+  return inertial ? inertial->mass + inertial->ixx : 0.0;
+}
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "hil");
+  ros::NodeHandle nh;
+  Eigen::AngleAxisd roll(0.1, Eigen::Vector3d::UnitX()), yaw(0.2, Eigen::Vector3d::UnitZ());
+  const Eigen::Quaterniond q = roll * yaw * roll;
+  std::auto_ptr<Interface> hil;
+  hil = std::auto_ptr<Interface>(new Interface(q));
+  mass(nh);
+  ros::spin();
+  return 0;
+}
+""")
+    errors = [d.message for d in result.diagnostics if d.code in (
+        "CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL", "CPP_CALL_MISSED")]
+    assert errors == []
+    assert sorted((c.kind, c.name) for c in result.calls) == [
+        ("read", "robot_description"), ("subscribe", "~imu")]

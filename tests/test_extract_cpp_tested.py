@@ -9,7 +9,7 @@ import os
 import pytest
 
 from haros_arch.extract.cpp import CppResult, extract_cpp
-from haros_arch.workspace import scan
+from haros_arch.workspace import Workspace, scan
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.join(os.path.dirname(HERE), "fixtures", "cpp", "tested_reads")
@@ -55,3 +55,42 @@ def test_ros2_reads(ros2: dict[str, bool]) -> None:
         "plain": False,        # result dropped
         "whole": False,        # get_parameter(name) returns the parameter
     }
+
+
+OPTIONAL_TOPICS = r"""
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+#include <string>
+std::string g_pose_topic;
+std::string g_frame;
+void cb(const std_msgs::String::ConstPtr&) {}
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "tf");
+  ros::NodeHandle node, priv_nh("~");
+  priv_nh.getParam("pose_topic", g_pose_topic);
+  priv_nh.getParam("frame", g_frame);
+  ros::Subscriber sub;
+  if (!g_pose_topic.empty()) {
+    sub = node.subscribe(g_pose_topic, 10, &cb);
+  }
+  std::string publish_topic;
+  priv_nh.getParam("publish_topic", publish_topic);
+  ros::Publisher pub;
+  if (!publish_topic.empty())
+    pub = node.advertise<std_msgs::String>(publish_topic, 10);
+  ROS_INFO("%s", g_frame.c_str());
+  ros::spin();
+  return 0;
+}
+"""
+
+
+def test_a_string_a_read_wrote_tested_for_being_empty_is_a_tested_read(tmp_path):
+    """uuv_assistants' message_to_tf reads optional topics into strings and subscribes
+    or advertises only when they are not empty: the absence is handled (6 false
+    parameter-read-not-set); a string read and used as it is stays untested."""
+    source = tmp_path / "n.cpp"
+    source.write_text(OPTIONAL_TOPICS)
+    result = extract_cpp([str(source)], Workspace(root=str(tmp_path)), cache_dir=None)
+    assert {c.name: c.tested for c in result.calls if c.kind == "read"} == {
+        "~pose_topic": True, "~frame": False, "~publish_topic": True}

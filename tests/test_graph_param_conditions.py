@@ -771,3 +771,42 @@ def test_a_condition_testing_whether_a_parameter_is_there_is_decided(write_tree)
              if link.kind == "read"}
     assert types[("/marker/axis", 26)] == "dict"
     assert _publishers(unseen, "/marker") == {"shown": ['!ros::param::has("~quiet")']}
+
+
+MODE_NODE = """
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "gps");
+  ros::NodeHandle nh;
+  std::string node_name = ros::this_node::getName();
+  std::string mode;
+  if (!nh.getParam(node_name + "/mode", mode)) { ROS_ERROR("no mode"); }
+  ros::Publisher pub;
+  if (mode == "base") {
+    pub = nh.advertise<std_msgs::String>("corrections", 5);
+  } else if (mode == "rover") {
+    pub = nh.advertise<std_msgs::String>("rover_status", 5);
+  }
+  ros::spin();
+  return 0;
+}
+"""
+
+
+def test_a_local_holding_a_private_parameter_read_through_the_node_name(write_tree):
+    """autorally's GPS node reads ``getName() + "/mode"`` (``~/mode``) into a local and
+    tests ``mode == "base"``: the read is the call ``~mode``, the condition held
+    ``~/mode``, and the two names never met, so the rover's base-station publisher
+    stayed (a false multiple-publishers with the real base station's relay)."""
+    root = write_tree({
+        "src/gps/package.xml": package_xml("gps"),
+        "src/gps/CMakeLists.txt": "project(gps)\nadd_executable(gps src/gps.cpp)\n",
+        "src/gps/src/gps.cpp": MODE_NODE,
+        "src/gps/launch/gps.launch": (
+            '<launch><node pkg="gps" type="gps" name="rover">'
+            '<param name="mode" value="rover"/></node></launch>'),
+        "project.yaml": "project: p\nconfigurations:\n  c: [gps/launch/gps.launch]\n",
+    })
+    config = _config(root)
+    assert _publishers(config, "/rover") == {"rover_status": []}

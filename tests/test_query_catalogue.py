@@ -360,6 +360,26 @@ def test_a_read_of_a_name_known_only_at_run_time_could_be_the_missing_reader():
     assert [f.rule for f in found] == ["parameter-set-not-read"]
 
 
+def test_a_read_with_a_whole_unknown_segment_could_read_the_name_without_it():
+    # autorally's serial ports read nodeName + (handle.empty() ? "" : "/" + handle) +
+    # "/serialBaud": ~?/serialBaud, resolved /port/?/serialBaud; with the handle empty
+    # roscpp cleans "//" and reads /port/serialBaud, which the launch file sets
+    from haros_arch.graph.candidates import find_candidates
+
+    doc = {"parameters": [{"name": "/port/serialBaud", "type": "int", "value": 9600,
+                           "writers": ["<launch>"]},
+                          {"name": "/port/other/rate", "type": "int", "value": 1,
+                           "writers": ["<launch>"]}],
+           "links": [{"kind": "read", "node": "/port", "name": "/port/?/serialBaud",
+                      "given": "~?/serialBaud"}]}
+    model = configuration(doc)
+    find_candidates(model.configurations[0])
+    found = run_rule(RULES["parameter-set-not-read"], model)
+    assert sorted((f.rule, f.entities) for f in found) == [
+        ("parameter-set-not-read", ("parameter:/port/other/rate",)),
+        ("parameter-set-not-read" + UNDECIDED, ("node:/port",))]
+
+
 def test_a_rule_that_hits_the_step_budget_is_a_query_limit_warning(monkeypatch):
     from haros_arch.query import catalogue
     from haros_arch.query.command import _exit_code

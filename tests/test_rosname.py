@@ -36,7 +36,10 @@ def test_patterns_match_candidates():
     assert name.is_unresolved
     assert name.matches("/robot/left/scan")
     assert name.matches("/robot/a/b/scan")
-    assert not name.matches("/robot/scan")
+    # a whole segment may be none: "/robot/" + "" + "/scan" is /robot/scan once roscpp's
+    # names::clean (rospy's canonicalize_name) drops the empty segment
+    assert name.matches("/robot/scan")
+    assert not name.matches("/robotscan")
     assert not RosName.make("/chatter").matches("/chatter2")
 
 

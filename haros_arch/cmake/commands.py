@@ -496,6 +496,7 @@ _LINK_KEYWORDS = frozenset({"PUBLIC", "PRIVATE", "INTERFACE", "SYSTEM", "LINK_PU
                             "LINK_PRIVATE", "LINK_INTERFACE_LIBRARIES", "debug",
                             "optimized", "general"})
 _PACKAGE_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
+_TARGET_NAME = re.compile(r"[A-Za-z0-9_.+-]+")
 
 
 @handles("find_package")
@@ -526,10 +527,17 @@ def _target_link_libraries(it: Interpreter, command: Invocation, args: list[str]
         return
     project = it.get("PROJECT_NAME")
     for arg in args[1:]:
-        if arg in it.targets:
+        mark = _PACKAGE_MARK.fullmatch(arg)
+        if arg in it.targets or (
+            command.name.lower() == "target_link_libraries" and mark is None
+            and arg not in _LINK_KEYWORDS and _TARGET_NAME.fullmatch(arg)
+        ):
+            # a library the package adds later is linked too: CMake resolves the names
+            # once every file is read (autorally_core adds its executables' folder,
+            # src/gps, before src/SerialSensorInterface, the library they link); a name
+            # that never becomes a target (pthread) is a system library, and skipped
             target.links.append(arg)
             continue
-        mark = _PACKAGE_MARK.fullmatch(arg)
         package = mark.group(1) if mark else arg.split("::", 1)[0] if "::" in arg else (
             arg if command.name.lower() == "ament_target_dependencies" else None)
         if (package and package != project and package not in _LINK_KEYWORDS

@@ -330,18 +330,31 @@ class Interpreter:
         end = marks[-1]
         pushed = 0
         returned: list[Condition] = []
+        undecided: list[tuple[str, Invocation]] = []  # the tests not decided, in order
         try:
             for number, start in enumerate(branches):
                 stop = marks[number]
                 head = commands[start]
                 if head.name == "else":
-                    self.run(commands, start + 1, stop)
+                    try:
+                        self.run(commands, start + 1, stop)
+                    except _Return:
+                        if not undecided:
+                            raise
+                        # an ``else`` after a test not decided that returns: what follows
+                        # runs only when one of those tests held (rotors_hil_interface's
+                        # ``if (Mavlink_DIR) ... else () ... return() endif ()``)
+                        text = " OR ".join(f"({t})" for t, _ in undecided) \
+                            if len(undecided) > 1 else undecided[0][0]
+                        returned.append(Condition(text, "source", "if",
+                                                  self.where(undecided[-1][1])))
                     break
                 if number:  # an elseif's test is work too (the if's own is its step)
                     self.charge(head)
                 decided = self.evaluate(self.arguments(head.args))
                 if decided is None:
                     text = " ".join(a.text for a in head.args)
+                    undecided.append((text, head))
                     self.conditions.append(Condition(text, "source", head.name,
                                                      self.where(head)))
                     pushed += 1

@@ -260,6 +260,12 @@ def presence_name(name: str) -> tuple[str, str] | None:
     return None if written is None else (kind, written)
 
 
+def _private_form(name: str) -> str:
+    """A private name as calls are named, ``~x``: a local tested in a condition may hold
+    the read of ``getName() + "/x"``, ``~/x`` (autorally's GPS node's ``mode``)."""
+    return "~" + name[2:] if name.startswith("~/") else name
+
+
 def parameter_name(name: str) -> str | None:
     """The parameter a grammar name stands for (``get_parameter("x")``), else None."""
     return _decoded(name[len(PARAMETER_PREFIX):]) if name.startswith(PARAMETER_PREFIX) \
@@ -553,7 +559,8 @@ def _member_values(instance: NodeInstance, config: Configuration | None = None,
         parameter = parameter if parameter is not None else parameter_name(name)
         found = reads.get((file, name)) or anywhere.get(name) if parameter is None else [
             link for link in instance.links if link.call is not None
-            and link.kind in ("read", "declare") and link.call.name == parameter]
+            and link.kind in ("read", "declare")
+            and _private_form(link.call.name) == _private_form(parameter)]
         if not found:
             return Unknown(f"{name} is not known to hold a parameter")
         # a ROS 2 read without a default gets what the node's declarations of that

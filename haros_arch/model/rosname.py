@@ -88,9 +88,25 @@ def pattern_for(full: str) -> str:
     A ``?`` may stand for nothing at all: a prefix a parameter or a condition chooses
     is often empty (ros2_controllers' joint_state_broadcaster publishes
     ``prefix + "joint_states"``, its prefix ``"~/"`` or ``""``: ``/joint_states`` by
-    default)."""
+    default). A ``?`` that is a whole segment, ``/a/?/b``, may also stand for no
+    segment: roscpp cleans the ``//`` an empty text leaves (autorally's serial ports
+    read ``nodeName + (handle.empty() ? "" : "/" + handle) + "/serialBaud"``, which is
+    ``~?/serialBaud``, ``/node/?/serialBaud`` resolved, and ``/node/serialBaud`` when the
+    handle is empty)."""
     parts = full.split(UNKNOWN_MARK)
-    return "^" + ".*".join(re.escape(p) for p in parts) + "$"
+    out = ["^", re.escape(parts[0])]
+    after_slash = parts[0].endswith(SEP)
+    for part in parts[1:]:
+        if after_slash and part.startswith(SEP):
+            out.append("(?:.*/)?")  # the segment, and its slash, or nothing
+            part = part[1:]
+        else:
+            out.append(".*")
+            after_slash = False
+        out.append(re.escape(part))
+        if part:
+            after_slash = part.endswith(SEP)
+    return "".join(out) + "$"
 
 
 @dataclass(frozen=True)

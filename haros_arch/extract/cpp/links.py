@@ -34,7 +34,7 @@ from .cache import conditions_text
 from .call_conditions import INDICES
 from .call_sites import CallSites, argument
 from .handles import Namespaces, is_handle, join_name, normalise
-from .values import PLACEHOLDER, SEPARATOR, Scope, key_of, render
+from .values import PLACEHOLDER, SEPARATOR, Scope, choose, key_of, render
 
 Fact = tuple[str, int, str, str]  # callee USR, parameter index, value passed, call site
 CALLED = -1  # the index of a fact that says only that the call site calls the function
@@ -309,6 +309,8 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
         for filled in _expand(text, known.passed, 0, unbuilt):
             ns, _, name = filled.partition(_SPLIT)
             ns = normalise(_unmarked(ns)) if ns else ""
+            if name.startswith("~/"):  # written as the visitor writes a private name
+                name = "~" + name[2:]
             made = dataclasses.replace(
                 call, name=join_name(ns, name) if ns else name,
                 handle_namespace=ns if ns and not name.startswith(("/", "~")) else None,
@@ -345,7 +347,7 @@ def _parameter_filled(param: str, passed: dict[str, dict[str, dict[int, str]]]) 
     value = found.pop() if len(found) == 1 else ""
     if value and PLACEHOLDER not in value:
         return value
-    return _unmarked(_MARK.sub("?", param))
+    return _unmarked(choose(_MARK.sub("?", param)))
 
 
 # a translation unit's node names made in constructors no call in that unit makes:
@@ -393,7 +395,7 @@ def resolve_name(name: str, facts: Iterable[Fact] | NodeFacts) -> str:
                            ).passed, 0)
     if len(found) == 1 and PLACEHOLDER not in found[0]:
         return node_name_joined(_unmarked(found[0]))
-    return _MARK.sub("?", name)
+    return choose(_MARK.sub("?", name))
 
 
 def qualified_class(usr: str) -> str:
@@ -462,7 +464,7 @@ def _expand(text: str, passed: dict[str, dict[str, dict[int, str]]],
     of a class the nodelet does not build)."""
     match = _MARK.search(text)
     if match is None:
-        return [text]
+        return [choose(text)]
     usr = match.group(1)
     sites = list(passed.get(usr, {}).values()) if depth < MAX_DEPTH else []
     if depth and not sites and unbuilt is not None and unbuilt(usr):
@@ -481,5 +483,5 @@ def _expand(text: str, passed: dict[str, dict[str, dict[int, str]]],
             if filled not in out:
                 out.append(filled)
     if len(out) > MAX_VALUES:
-        return [_MARK.sub("?", text)]
+        return [choose(_MARK.sub("?", text))]
     return out

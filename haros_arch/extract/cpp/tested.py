@@ -15,6 +15,7 @@ import re
 from clang.cindex import Cursor, CursorKind
 
 from .conditions import ConditionReader
+from .values import emptiness_test, strip
 
 Key = tuple[str, int, int]
 _WRAPPERS = (CursorKind.UNEXPOSED_EXPR, CursorKind.PAREN_EXPR)
@@ -37,9 +38,13 @@ class TestedCalls:
         self.reader = reader
         self.keys: set[Key] = set()
         self._results: dict[Key, Key] = {}  # a bool variable -> the call it holds
+        # a variable -> the calls it was passed to before (``getParam("x", topic)``)
+        self._passed: dict[Key, list[Key]] = {}
 
     def visit(self, node: Cursor) -> None:
         kind = node.kind
+        if kind == CursorKind.CALL_EXPR:
+            self._pass(node)
         if kind in (CursorKind.IF_STMT, CursorKind.WHILE_STMT):
             children = list(node.get_children())
             if children:
@@ -84,7 +89,31 @@ class TestedCalls:
         if held is not None and made is not None:
             self._results[held] = made
 
+    def _pass(self, call: Cursor) -> None:
+        made = key(call)
+        if made is None:
+            return
+        for arg in call.get_arguments():
+            arg = strip(arg)
+            variable = arg.referenced if arg.kind == CursorKind.DECL_REF_EXPR else None
+            held = key(variable) if variable is not None and (
+                variable.kind == CursorKind.VAR_DECL) else None
+            if held is not None:
+                self._passed.setdefault(held, []).append(made)
+
     def _condition(self, expr: Cursor) -> None:
+        found = emptiness_test(expr)
+        if found is not None:
+            # ``getParam("topic", topic); if (!topic.empty())``: a string a read wrote,
+            # tested for being empty, the absence handled (uuv_assistants'
+            # message_to_tf: an optional topic, subscribed only when given)
+            subject = strip(found[0])
+            variable = subject.referenced if subject.kind == CursorKind.DECL_REF_EXPR \
+                else None
+            held = key(variable) if variable is not None else None
+            if held is not None:
+                self.keys.update(self._passed.get(held, ()))
+            return
         if expr.kind == CursorKind.VAR_DECL:  # if (bool ok = nh.getParam(..))
             children = [c for c in expr.get_children() if c.kind.is_expression()]
             expr = children[-1] if children else expr

@@ -40,6 +40,17 @@ Parts = tuple[str | None, ...]
 # translation units are joined by ``links.resolve`` once all of them are read.
 PLACEHOLDER = "\x00"
 SEPARATOR = "\x01"
+# A part standing for "one of two texts, as a string another file passes is empty or
+# not": CHOICE, the tested text (holding a placeholder), CHOICE_SEP, the text when it is
+# empty, CHOICE_SEP, the text when it is not, CHOICE_END (``links.choose`` picks one
+# once the placeholders are filled): autorally's ``name + (handle.empty() ? "" : "/" +
+# handle)``, hector_quadrotor's ``!field.empty() ? field + "/" : ""``
+CHOICE = "\x05"
+CHOICE_SEP = "\x06"
+CHOICE_END = "\x07"
+# in a side of a choice: the tested text (a wrapper's ``field + "/"`` where the tested
+# string is its name argument, bound at each call site)
+BACKREF = "\x08"
 Value = TypeVar("Value")
 UNKNOWN: Parts = (None,)
 MAX_DEPTH = 24
@@ -165,7 +176,109 @@ def render(parts: Parts) -> str:
                 text.append("?")
         else:
             text.append(part)
-    return "".join(text)
+    joined = "".join(text)
+    return choose(joined) if CHOICE in joined and PLACEHOLDER not in joined else joined
+
+
+def emptiness_test(test: Cursor) -> tuple[Cursor, bool] | None:
+    """A test of whether a string is empty: (the string, whether the test holds when it
+    is empty) for ``s.empty()``, ``!test``, ``s.length() > 0`` / ``!= 0`` / ``>= 1``,
+    ``s.size() == 0`` / ``< 1`` / ``<= 0``, ``s == ""``, ``s != ""``; None for any other."""
+    test = strip(test)
+    kind = test.kind
+    children = [c for c in test.get_children() if c.kind.is_expression()]
+    if kind == CursorKind.UNARY_OPERATOR and len(children) == 1:
+        tokens = list(test.get_tokens())
+        if not tokens or tokens[0].spelling != "!":
+            return None
+        inner = emptiness_test(children[0])
+        return None if inner is None else (inner[0], not inner[1])
+    if kind == CursorKind.CALL_EXPR:
+        args = written_arguments(test)
+        if test.spelling == "empty" and not args:
+            subject = _method_object(test)
+            return None if subject is None else (subject, True)
+        if test.spelling in ("operator==", "operator!=") and len(args) == 2:
+            for subject, other in ((args[0], args[1]), (args[1], args[0])):
+                other = strip(other)
+                if other.kind == CursorKind.STRING_LITERAL and literal(other.spelling) == "":
+                    return subject, test.spelling == "operator=="
+        return None
+    if kind == CursorKind.BINARY_OPERATOR and len(children) == 2:
+        size = _size_of(children[0])
+        number = strip(children[1])
+        tokens = list(number.get_tokens()) if number.kind == CursorKind.INTEGER_LITERAL else []
+        if size is None or len(tokens) != 1 or not tokens[0].spelling.isdigit():
+            return None
+        pair = (binary_operator(test, children), int(tokens[0].spelling))
+        if pair in ((">", 0), ("!=", 0), (">=", 1)):
+            return size, False
+        if pair in (("==", 0), ("<", 1), ("<=", 0)):
+            return size, True
+    return None
+
+
+_CHOSEN = re.compile(f"{CHOICE}([^{CHOICE}{CHOICE_SEP}{CHOICE_END}]*){CHOICE_SEP}"
+                     f"([^{CHOICE}{CHOICE_SEP}{CHOICE_END}]*){CHOICE_SEP}"
+                     f"([^{CHOICE}{CHOICE_SEP}{CHOICE_END}]*){CHOICE_END}")
+
+
+def choose(text: str) -> str:
+    """``text`` with each choice (``CHOICE``) replaced by its side for the tested text:
+    the first when it is empty, the second (its ``BACKREF`` the tested text) when it has
+    text; ``?`` while that text holds a placeholder, or is unknown and may be empty."""
+    def pick(found: re.Match[str]) -> str:
+        tested, if_empty, if_not = found.groups()
+        if tested == "":
+            return if_empty
+        if PLACEHOLDER in tested or not tested.replace("?", ""):
+            return "?"
+        return if_not.replace(BACKREF, tested)
+    while CHOICE in text:
+        chosen = _CHOSEN.sub(pick, text)
+        if chosen == text:
+            return text
+        text = chosen
+    return text
+
+
+def is_empty(parts: Parts) -> bool | None:
+    """Whether a string value is empty: False when a known part has text (a node's own
+    name has), True when every part is known and none has, else None."""
+    known = True
+    for part in parts:
+        if isinstance(part, NodeName):
+            return False
+        if part is None or isinstance(part, ProgramArgument) or PLACEHOLDER in part or (
+                CHOICE in part):
+            known = False
+        elif part:
+            return False
+    return True if known else None
+
+
+def _choice_text(parts: Parts) -> str:
+    """A side of a ``CHOICE``: its text, ``?`` for an unknown run (placeholders kept)."""
+    return "".join("?" if part is None or isinstance(part, (NodeName, ProgramArgument))
+                   else part for part in parts)
+
+
+def _method_object(call: Cursor) -> Cursor | None:
+    """The object of ``obj.method()``."""
+    children = list(call.get_children())
+    if children and children[0].kind == CursorKind.MEMBER_REF_EXPR:
+        objects = list(children[0].get_children())
+        return objects[0] if objects else None
+    return None
+
+
+def _size_of(cursor: Cursor) -> Cursor | None:
+    """The string of ``s.length()`` / ``s.size()``."""
+    call = strip(cursor)
+    if call.kind == CursorKind.CALL_EXPR and call.spelling in ("length", "size") and not (
+            written_arguments(call)):
+        return _method_object(call)
+    return None
 
 
 def _resolver(target: Cursor) -> int | None:
@@ -499,7 +612,41 @@ class Scope:
             return self._string_call(cursor, depth)
         if kind == CursorKind.BINARY_OPERATOR:
             return self._string_sum(cursor, depth)
+        if kind == CursorKind.CONDITIONAL_OPERATOR:
+            return self._string_choice(cursor, depth)
         return UNKNOWN
+
+    def _string_choice(self, cursor: Cursor, depth: int) -> Parts:
+        """``test ? a : b``: the side the test picks when it is decided here (a boolean,
+        or whether a string is empty: ``s.empty()``, ``!s.empty()``, ``s.length() > 0``,
+        ``s.size() == 0``, ``s == ""``); a ``CHOICE`` part when the string is one other
+        call sites pass (a placeholder), which ``links.choose`` decides per value; else
+        unknown."""
+        children = [c for c in cursor.get_children() if c.kind.is_expression()]
+        if len(children) != 3:
+            return UNKNOWN
+        test, yes, no = children
+        found = self._emptiness(test, depth)
+        if found is None:
+            truth = self.boolean(test)
+            return UNKNOWN if truth is None else self.string(yes if truth else no, depth + 1)
+        subject, when_empty = found
+        empty = is_empty(subject)
+        if empty is not None:
+            return self.string(yes if empty == when_empty else no, depth + 1)
+        if not all(part is not None and type(part) is str for part in subject) or not any(
+                PLACEHOLDER in part for part in subject if part is not None):
+            return UNKNOWN
+        if_empty, if_not = (yes, no) if when_empty else (no, yes)
+        return (CHOICE + "".join(subject)  # type: ignore[arg-type]
+                + CHOICE_SEP + _choice_text(self.string(if_empty, depth + 1))
+                + CHOICE_SEP + _choice_text(self.string(if_not, depth + 1)) + CHOICE_END,)
+
+    def _emptiness(self, test: Cursor, depth: int) -> tuple[Parts, bool] | None:
+        """A test of whether a string is empty (``emptiness_test``): the string's value
+        and whether the test holds when it is empty."""
+        found = emptiness_test(test)
+        return None if found is None else (self.string(found[0], depth + 1), found[1])
 
     def _string_sum(self, cursor: Cursor, depth: int) -> Parts:
         """``a + b`` that the parse kept as an operator, not a call of ``operator+``:

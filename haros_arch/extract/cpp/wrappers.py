@@ -40,10 +40,16 @@ from .cursors import Node, from_standin, overloads
 from .handles import callback, callback_name, is_handle, join_name, qualified_name
 from .qos import qos as qos_of
 from .values import (
+    BACKREF,
+    CHOICE,
+    CHOICE_END,
+    CHOICE_SEP,
     PLACEHOLDER,
     SEPARATOR,
+    UNKNOWN,
     Parts,
     Scope,
+    emptiness_test,
     initializer,
     strip,
     written_arguments,
@@ -687,7 +693,9 @@ class Wrappers:
                 row = self._of_spec(row, call, wrapper) or dataclasses.replace(
                     row, fixed_name="?")
             elif row.name_arg >= len(args):
-                continue
+                args = _with_defaults(call, args)  # ``limiter.init(nh)``: its default
+                if row.name_arg >= len(args):
+                    continue
             before, after = _bind(wrapper.before, bound), _bind(wrapper.after, bound)
             if (row, before, after) in done:
                 continue  # two summaries that differ only in the value now bound
@@ -804,6 +812,36 @@ class _NamedScope(Scope):
         return (*self._before, *parts, *self._after) if cursor == self._arg else parts
 
 
+def _choice_shape(children: list[Cursor], params: list[Cursor], scope: Scope | None,
+                  depth: int) -> tuple[Parts, int, Parts] | None:
+    """``test ? a : b`` whose test is whether the wrapper's parameter is empty
+    (hector_quadrotor's ``!field.empty() ? field + "/" : ""``): a choice (``values.
+    CHOICE``) tested on the argument each call site binds, each side the text around
+    it (``BACKREF`` where it is) or a constant; None for any other test of a parameter
+    (a longest side would be a name no call makes)."""
+    found = emptiness_test(children[0])
+    index = _parameter_index(strip(found[0]), params) if found is not None else None
+    if found is None or index is None:
+        return None
+    sides: list[str] = []
+    for branch in children[1:]:
+        shape = _name_shape(branch, params, scope, depth + 1)
+        if shape is not None and shape[1] == index:
+            sides.append(_text(shape[0]) + BACKREF + _text(shape[2]))
+            continue
+        value = scope.string(branch) if scope is not None else UNKNOWN
+        if None in value or any(PLACEHOLDER in (part or "") or CHOICE in (part or "")
+                                for part in value):
+            return None
+        sides.append(_text(value))
+    if_empty, if_not = sides if found[1] else sides[::-1]
+    return (CHOICE,), index, (f"{CHOICE_SEP}{if_empty}{CHOICE_SEP}{if_not}{CHOICE_END}",)
+
+
+def _text(parts: Parts) -> str:
+    return "".join("?" if part is None else part for part in parts)
+
+
 def _name_shape(expr: Cursor, params: list[Cursor], scope: Scope | None,
                 depth: int) -> tuple[Parts, int, Parts] | None:
     """``expr`` as (parts before, index of the wrapper's parameter, parts after), when it
@@ -827,8 +865,15 @@ def _name_shape(expr: Cursor, params: list[Cursor], scope: Scope | None,
         return _name_shape(value, params, scope, depth + 1) if value is not None else None
     operands: list[Cursor] = []
     if kind == CursorKind.CONDITIONAL_OPERATOR:
-        # ``ns.empty() ? name : ns + "." + name``: the branch that keeps the most text
-        branches = [c for c in expr.get_children() if c.kind.is_expression()][1:]
+        # ``ns.empty() ? name : ns + "." + name``: the branch that keeps the most text;
+        # not a test of the parameter that names it (``!field.empty() ? field + "/" :
+        # ""``): each call site's value picks the branch, as a call read through its
+        # call sites does (``Scope.string``), not the longest text
+        children = [c for c in expr.get_children() if c.kind.is_expression()]
+        if len(children) == 3 and any(_parameter_index(node, params) is not None
+                                      for node in children[0].walk_preorder()):
+            return _choice_shape(children, params, scope, depth)
+        branches = children[1:]
         shapes = [found for b in branches
                   if (found := _name_shape(b, params, scope, depth + 1)) is not None]
         return max(shapes, key=lambda f: len(f[0]) + len(f[2])) if shapes else None
@@ -1165,6 +1210,24 @@ def _arguments(call: Cursor) -> list[Cursor]:
         if parent is not None and parent.spelling.startswith("(lambda at "):
             return args[1:]
     return args
+
+
+def _with_defaults(call: Cursor, args: list[Cursor]) -> list[Cursor]:
+    """``args`` with the defaults of the parameters the call leaves out, in order, as
+    far as each has one (hector_quadrotor's ``attitude_limiter_.init(controller_nh)``
+    of ``init(nh, field = std::string())``, which names its parameters after
+    ``field``)."""
+    target = call.referenced
+    if target is None or call.spelling == "operator()":
+        return args
+    params = [c for c in target.get_children() if c.kind == CursorKind.PARM_DECL]
+    out = list(args)
+    for parm in params[len(args):]:
+        found = default_argument(parm)
+        if found is None:
+            break
+        out.append(found)
+    return out
 
 
 def _made_with(call: Cursor, scope: Scope) -> dict[str, Parts]:

@@ -14,6 +14,7 @@ so ``for side in ['left', 'right']`` gives one call per side.
 from __future__ import annotations
 
 import ast
+import dataclasses
 import re
 from collections.abc import Callable
 
@@ -458,10 +459,12 @@ class Walker:
                for handler in statement.handlers):
             self._handled.add(attempt)
         self._block(statement.body, frame, (*conds, attempt))
+        tried = _state(frame)
         for handler in statement.handlers:
             text = self._text(frame, handler.type) if handler.type is not None else ""
             caught = condition("except", text, self._where(frame, handler))
             self._block(handler.body, frame, (*conds, caught))
+        _fallen_back(frame, tried)
         self._block(statement.orelse, frame, (*conds, attempt))
         self._block(statement.finalbody, frame, conds)
 
@@ -1062,6 +1065,39 @@ def _outside_comprehensions(expr: ast.AST, calls: list[ast.Call],
 
 MAX_ALTERNATIVES = 4  # values a local may hold after the ifs that set it
 _UNSET = object()
+
+
+def _state(frame: Frame) -> tuple[dict[str, object], dict[str, object]]:
+    """A frame's locals and its instance's attributes, as they are."""
+    return dict(frame.locals), dict(frame.instance.attrs) if frame.instance is not None else {}
+
+
+def _fallen_back(frame: Frame, tried: tuple[dict[str, object], dict[str, object]]) -> None:
+    """After a ``try``'s handlers: a local or attribute of ``self`` that the block set
+    from a parameter read (``self._prefix = rospy.get_param("~vehicle_prefix")``) and a
+    handler set again (``self._prefix = ""``) is the parameter's value, the handler's
+    constant its default: the handler runs when the read fails, the parameter not set
+    (autorally's controller: its topics were named by the handler's "" alone)."""
+    holders = [(frame.locals, tried[0])]
+    if frame.instance is not None:
+        holders.append((frame.instance.attrs, tried[1]))
+    for now, then in holders:
+        for name, value in then.items():
+            handled = now.get(name, _UNSET)
+            if handled is value or not _from_parameter(value):
+                continue
+            if isinstance(value, ParamValue) and value.default is None and (
+                    isinstance(handled, int | float) or (
+                        isinstance(handled, Value) and handled.is_known)):
+                value = dataclasses.replace(value, default=handled)
+            now[name] = value
+
+
+def _from_parameter(value: object) -> bool:
+    """A parameter's value, or a text holding one (``"/" + prefix``)."""
+    return isinstance(value, ParamValue) or (isinstance(value, Value) and any(
+        isinstance(part, Unknown) and part.origin.startswith("parameter ")
+        for part in value.parts))
 
 
 def _joined(before: dict[str, object], taken: dict[str, object], other: dict[str, object],

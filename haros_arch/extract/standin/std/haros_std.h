@@ -747,6 +747,21 @@ public:
   bool expired() const noexcept;
   void reset() noexcept;
 };
+// C++98's auto_ptr (removed in C++17; ROS 1 code still builds it as C++11 / 14)
+template<class T> class auto_ptr {
+public:
+  typedef T element_type;
+  explicit auto_ptr(T* p = 0) noexcept;
+  auto_ptr(const auto_ptr& other) noexcept;
+  template<class Y> auto_ptr(const auto_ptr<Y>& other) noexcept;
+  auto_ptr& operator=(const auto_ptr& other) noexcept;
+  template<class Y> auto_ptr& operator=(const auto_ptr<Y>& other) noexcept;
+  T& operator*() const noexcept;
+  T* operator->() const noexcept;
+  T* get() const noexcept;
+  T* release() noexcept;
+  void reset(T* p = 0) noexcept;
+};
 template<class T, class D = default_delete<T>> class unique_ptr;
 template<class T, class D> class unique_ptr {
 public:

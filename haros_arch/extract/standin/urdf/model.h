@@ -36,11 +36,13 @@ public:
   std::shared_ptr<Geometry> geometry;
   std::string name;
 };
+class Material;
 class Visual {
 public:
   Pose origin;
   std::shared_ptr<Geometry> geometry;
-  std::string name;
+  std::string name, material_name;
+  std::shared_ptr<Material> material;
 };
 class JointLimits { public: double lower, upper, effort, velocity; };
 class JointDynamics { public: double damping, friction; };
@@ -60,6 +62,16 @@ public:
   std::shared_ptr<JointSafety> safety;
   std::shared_ptr<JointCalibration> calibration;
 };
+class Inertial {
+public:
+  Pose origin;
+  double mass, ixx, ixy, ixz, iyy, iyz, izz;
+};
+class Color { public: float r, g, b, a; };
+class Material { public: std::string name, texture_filename; Color color; };
+typedef std::shared_ptr<Inertial> InertialSharedPtr;
+typedef std::shared_ptr<const Inertial> InertialConstSharedPtr;
+typedef std::shared_ptr<Material> MaterialSharedPtr;
 class Link;
 typedef std::shared_ptr<Link> LinkSharedPtr;
 typedef std::shared_ptr<const Link> LinkConstSharedPtr;
@@ -73,6 +85,7 @@ typedef std::shared_ptr<Sphere> SphereSharedPtr;
 class Link {
 public:
   std::string name;
+  std::shared_ptr<Inertial> inertial;
   std::shared_ptr<Collision> collision;
   std::vector<std::shared_ptr<Collision> > collision_array;
   std::shared_ptr<Visual> visual;
