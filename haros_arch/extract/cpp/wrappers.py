@@ -687,7 +687,12 @@ class Wrappers:
                 row = self._of_spec(row, call, wrapper) or dataclasses.replace(
                     row, fixed_name="?")
             elif row.name_arg >= len(args):
-                continue
+                # the name is a parameter the call leaves to its default (MoveIt's
+                # ``startPublishingPlanningScene(event)``, its topic defaulting to
+                # MONITORED_PLANNING_SCENE_TOPIC): the default is what it passes
+                args = _with_defaults(call, args, row.name_arg)
+                if row.name_arg >= len(args):
+                    continue
             before, after = _bind(wrapper.before, bound), _bind(wrapper.after, bound)
             if (row, before, after) in done:
                 continue  # two summaries that differ only in the value now bound
@@ -1165,6 +1170,20 @@ def _arguments(call: Cursor) -> list[Cursor]:
         if parent is not None and parent.spelling.startswith("(lambda at "):
             return args[1:]
     return args
+
+
+def _with_defaults(call: Cursor, args: list[Cursor], upto: int) -> list[Cursor]:
+    """``args`` followed by the default arguments of the called function's parameters
+    the call leaves out, up to index ``upto`` (fewer when one has no default)."""
+    target = call.referenced
+    params = _parameters(target) if target is not None else []
+    found = list(args)
+    while len(found) <= upto and len(found) < len(params):
+        value = default_argument(params[len(found)])
+        if value is None:
+            break
+        found.append(value)
+    return found
 
 
 def _made_with(call: Cursor, scope: Scope) -> dict[str, Parts]:
