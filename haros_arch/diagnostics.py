@@ -91,6 +91,14 @@ CATALOGUE: dict[str, Entry] = {
         "the package, one of which defines main(): that executable is taken as built, "
         "linking the package's libraries its code names, so launch files that run it "
         "find it."),
+    "CMAKE_GUESSED_LIBRARY": Entry(
+        "info", "{command}() is defined outside the workspace; {target} is taken as a "
+        "library built from {sources}",
+        "A command the workspace does not define whose name says it makes a library "
+        "(MOLA's mola_add_library, cartographer's google_library) names a new target and "
+        "C/C++ sources of the package, none of which defines main(): that library is "
+        "taken as built, so the package's executables made after it link it, as they do "
+        "an add_library's (of which they run what their code names)."),
     "CMAKE_SUPERBUILD": Entry(
         "info", "ExternalProject_Add({name}) configures the package's own folder again "
         "with {values}; its targets are read from that configuration",
@@ -382,6 +390,12 @@ CATALOGUE: dict[str, Entry] = {
         "README: nav2 servers, costmaps, move_base, controller managers, ...), each "
         "instance of it is 'partial', so checks that claim something is absent do not "
         "decide on it."),
+    "CPP_LIBRARY_LOADED": Entry(
+        "info", "{text}: loads a shared library chosen at run time",
+        "The code opens a shared library by name (POSIX dlopen, Windows LoadLibrary): "
+        "MOLA's mola-cli loads the modules its YAML file lists, its ROS 2 bridge among "
+        "them. What that library does on the node is not in the node's code: the node "
+        "is partial, so checks that claim something is absent do not decide on it."),
     "CPP_NODE_PASSED": Entry(
         "info", "{cls} of package {package} is built with the node ({given}) in code that "
         "is not read with this node",

@@ -254,6 +254,47 @@ def test_an_executable_made_by_a_function_defined_outside_the_workspace(write_tr
     assert "google_binary() is defined outside the workspace" in guessed[0].message
 
 
+def test_an_outside_function_of_keyword_arguments_names_its_target_after_the_keyword(
+        write_tree):
+    """MOLA builds mola-cli with ``mola_add_executable(TARGET mola-cli SOURCES
+    mola-cli.cpp ...)``, a function of its mola_common package (not in the workspace):
+    the executable was taken to be named ``TARGET``, so the demos' launch files that
+    run mola_launcher/mola-cli had it "not in the workspace" (an error). The name is the
+    word after the keyword. Its ``mola_add_library(TARGET mola_launcher ...)``, whose
+    sources define no main(), is a library: mola-cli links it (it runs its code)."""
+    root = write_tree({
+        "src/launcher/package.xml": package_xml("launcher"),
+        "src/launcher/CMakeLists.txt": """
+            project(launcher)
+            find_package(mola_common REQUIRED)
+            mola_add_library(TARGET ${PROJECT_NAME} SOURCES src/app.cpp)
+            add_subdirectory(apps)
+            install(TARGETS mola-cli RUNTIME DESTINATION lib/${PROJECT_NAME})
+            """,
+        "src/launcher/apps/CMakeLists.txt": """
+            mola_add_executable(
+              TARGET  mola-cli
+              SOURCES mola-cli.cpp
+              LINK_LIBRARIES mola::mola_launcher)
+            """,
+        "src/launcher/src/app.cpp": "#include \"launcher/app.h\"\nvoid App::run() {}\n",
+        "src/launcher/include/launcher/app.h": "class App { public: void run(); };\n",
+        "src/launcher/apps/mola-cli.cpp": "#include <launcher/app.h>\n"
+                                          "int main(int argc, char** argv) { App().run(); }\n",
+    })
+    ws = scan([str(root / "src")], {})
+    nodes, found = parse_package(ws.packages["launcher"], ws)
+    # the library (no main(), a command named for libraries) is linked: its code runs
+    assert [(n.executable, sorted(n.sources)) for n in nodes] == [
+        ("mola-cli", ["launcher/apps/mola-cli.cpp", "launcher/src/app.cpp"])]
+    guessed = [d.message for d in found if d.code.startswith("CMAKE_GUESSED_")]
+    assert guessed == [
+        "mola_add_library() is defined outside the workspace; launcher is taken as a "
+        "library built from app.cpp",
+        "mola_add_executable() is defined outside the workspace; mola-cli is taken as an "
+        "executable built from mola-cli.cpp, one of which defines main()"]
+
+
 def test_a_class_the_executable_defines_itself_names_no_library_file(write_tree):
     """cartographer_ros' occupancy_grid_node_main.cc defines its own ``class Node`` and
     links the package library, whose node.cc defines the SLAM ``Node``'s members: the

@@ -370,3 +370,39 @@ class Server : public nav2_util::LifecycleNode {
 """)
     assert [(c.kind, c.name, c.location.line) for c in result.calls if c.name == "gain"] == [
         ("declare", "gain", 12)]
+
+
+SERVICE_CLIENT = """\
+#include <memory>
+#include "nav2_util/service_client.hpp"
+#include "rclcpp/rclcpp.hpp"
+#include "std_srvs/srv/set_bool.hpp"
+#include "std_srvs/srv/trigger.hpp"
+class Manager : public rclcpp::Node {
+ public:
+  Manager() : rclcpp::Node("manager") {}
+  void start() {
+    arm_ = std::make_shared<nav2_util::ServiceClient<std_srvs::srv::SetBool>>(
+      "/driver/arm", shared_from_this());
+    reset_ = std::make_shared<nav2_util::ServiceClient<std_srvs::srv::Trigger>>(
+      "reset", shared_from_this(), true);
+    auto request = std::make_shared<std_srvs::srv::SetBool::Request>();
+    auto response = std::make_shared<std_srvs::srv::SetBool::Response>();
+    if (arm_->invoke(request, response)) { arm_->wait_for_service(); }
+  }
+  std::shared_ptr<nav2_util::ServiceClient<std_srvs::srv::SetBool>> arm_;
+  nav2_util::ServiceClient<std_srvs::srv::Trigger>::SharedPtr reset_;
+};
+"""
+
+
+def test_service_client_of_nav2_util_is_a_client(tmp_path) -> None:
+    """orca4's manager calls mavros and nav2's lifecycle manager through nav2_util's
+    ``ServiceClient<S>(name, node)`` (Humble; Jazzy adds use_internal_executor): a
+    name the stand-ins did not declare, so the node was given to an unknown class five
+    times (CPP_NODE_TO_UNKNOWN, partial) and had none of its clients."""
+    result = _extract(tmp_path, SERVICE_CLIENT)
+    assert _unclean(result) == []
+    assert [(c.kind, c.name, c.type, c.location.line) for c in result.calls] == [
+        ("client", "/driver/arm", "std_srvs/srv/SetBool", 10),
+        ("client", "reset", "std_srvs/srv/Trigger", 12)]

@@ -520,3 +520,71 @@ def test_ros1_stringstream_state_and_ws(write_tree) -> None:
     assert _errors(result) == []
     assert [(c.kind, c.name) for c in result.calls] == [
         ("read", "~solvers"), ("read", "~timeout_?")]
+
+
+def test_ros2_cpp17_parallel_algorithms_and_utilities(write_tree) -> None:
+    """beluga's particle filter core: execution policies (a class template over one,
+    checked by is_execution_policy_v), reduce, tuple_size_v, invoke_result_t /
+    is_invocable_v, std::plus<>, as_const, make_reverse_iterator, nth_element, and
+    Eigen's Matrix2Xd / Matrix3Xd, variant_npos / variant_size_v."""
+    result = _extract(write_tree, _source("ros2_cpp17_parallel.cpp"), "ament_cmake")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "total")]
+
+
+def test_ros2_parameter_service_without_its_include(write_tree) -> None:
+    """webots_ros2's WebotsNode holds an ``rclcpp::Client<rcl_interfaces::srv::
+    SetParameters>`` with no include of its own (rclcpp's headers bring it): its type was
+    an error, the node class invalid and every call of its constructor lost. rclcpp's
+    own rcl_interfaces and builtin_interfaces messages are guarded as their generated
+    headers are, so either may come first."""
+    result = _extract(write_tree, _source("ros2_unincluded_service.cpp"), "ament_cmake")
+    assert _errors(result) == []
+    assert [(c.kind, c.name, c.type) for c in result.calls] == [
+        ("declare", "robot_description", "str"),
+        ("client", "/robot_state_publisher/set_parameters", "rcl_interfaces/srv/SetParameters"),
+        ("publish", "/remove_urdf_robot", "std_msgs/msg/String")]
+
+
+def test_ros1_param_into_a_vendor_value_and_timer_options(write_tree) -> None:
+    """elevation_mapping's ``param("track_point_x", parameters.trackPoint_.x(), 0.0)``: the
+    value's type is declared permissively, the default a double, and roscpp's one type
+    for both could not be deduced (an error in the function that reads every parameter);
+    ``createTimer(TimerOptions&)`` was missing."""
+    result = _extract(write_tree, _source("ros1_param_vendor_value_timer_options.cpp"),
+                      "catkin")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("read", "~track_point_x"), ("read", "~point_cloud_topic"), ("publish", "~elevation_map")]
+
+
+def test_ros2_parameter_value_as_text_and_topic_endpoint_info(write_tree) -> None:
+    """orca4's camera_info_publisher logs each parameter with ros2_shared's context
+    macros, ``rclcpp::to_string(rclcpp::ParameterValue{cxt_.n_})``: the stand-ins had
+    only ``to_string(FutureReturnCode)``, so the constructor that creates the node's
+    publisher had an error and the node was partial. topic_tools' ToolBaseNode reads its
+    input's publishers with ``get_publishers_info_by_topic``, a vector of
+    ``rclcpp::TopicEndpointInfo`` whose QoS it copies: unknown to the stand-ins."""
+    source = (
+        "#include <rclcpp/rclcpp.hpp>\n#include <std_msgs/msg/string.hpp>\n"
+        "class Node : public rclcpp::Node {\n public:\n"
+        "  Node() : rclcpp::Node(\"relay\") {\n"
+        "    rate_ = declare_parameter(\"rate\", rate_);\n"
+        "    RCLCPP_INFO(get_logger(), \"rate = %s\",\n"
+        "                rclcpp::to_string(rclcpp::ParameterValue{rate_}).c_str());\n"
+        "    std::vector<rclcpp::TopicEndpointInfo> found =\n"
+        "        get_publishers_info_by_topic(\"in\");\n"
+        "    rclcpp::QoS qos{10};\n"
+        "    if (!found.empty()) {\n"
+        "      qos.reliability(found[0].qos_profile().reliability());\n"
+        "      std::string type = found[0].topic_type();\n    }\n"
+        "    auto graph = get_node_graph_interface();\n"
+        "    size_t readers = graph->get_subscriptions_info_by_topic(\"out\").size();\n"
+        "    pub_ = create_publisher<std_msgs::msg::String>(\"out\", qos);\n"
+        "    (void) readers;\n  }\n"
+        "  double rate_{1.0};\n"
+        "  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;\n};\n")
+    result = _extract(write_tree, source, "ament_cmake")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("declare", "rate"), ("publish", "out")]

@@ -5,7 +5,8 @@ lacks: clang says ``use of undeclared identifier 'make_pair'``. slam_gmapping's
 initMapper, which reads parameters, had that error, and the node was partial: every
 parameter the launch set and the node did not read (``map_udpate_interval``) was
 undecided. Such an error, outside the statement of any ROS call, hides none: the node
-stays complete. A ROS call in the same statement keeps it partial."""
+stays complete. Where the arguments are values of names declared permissively, the
+function is declared too, found the same way (``synthesis.Names.friends``)."""
 
 from __future__ import annotations
 
@@ -75,9 +76,19 @@ def test_a_standard_function_found_through_unknown_arguments_hides_no_call(write
     assert node.completeness == "complete"
 
 
-def test_in_a_ros_call_or_not_a_standard_function_it_still_may_hide_one(write_tree):
+def test_in_a_ros_call_its_value_is_unknown(write_tree):
+    # found through its unknown argument as a function declared permissively, the
+    # ROS call parses, and the name it is given is one nobody knows: ``?``
     node, codes = _node(write_tree,
                         "private_nh_.param(make_pair(laser_->getName(), 1).first, interval, 1.0);")
-    assert "CPP_ERROR_NEAR_CALL" in codes and node.completeness == "partial"
+    assert ("read", "~?") in [(c.kind, c.name) for c in node.calls]
+    assert "CPP_DYNAMIC_NAME" in codes
+
+
+def test_a_vendor_function_found_through_unknown_arguments_is_declared(write_tree):
+    # not a standard function: the vendor's own, which C++ finds in the namespace of its
+    # arguments' types (GMapping's); declared permissively, found the same way, it parses
+    # and, handed no node, hides no call
     node, codes = _node(write_tree, "smap.insert(frobnicate(laser_->getName(), laser_));")
-    assert "CPP_ERROR_NEAR_CALL" in codes and node.completeness == "partial"
+    assert "CPP_ERROR_NEAR_CALL" not in codes and node.completeness == "complete"
+    assert ("publish", "entropy") in [(c.kind, c.name) for c in node.calls]

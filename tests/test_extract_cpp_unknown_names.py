@@ -177,9 +177,10 @@ def test_parameter_forms_of_real_nodes() -> None:
         ("declare", "frame_id", "str", True, "map"),
         # a ParameterType constant: typed by it, no default
         ("declare", "map_file", "str", False, None),
-        # declare_parameters: each key of the map written there, its value the default
-        ("declare", "limits.low", None, True, None),
-        ("declare", "limits.high", None, True, None),
+        # declare_parameters: each key of the map written there, its value the default,
+        # typed by the template argument (the element of the std::vector<T> it returns)
+        ("declare", "limits.low", "int", True, None),
+        ("declare", "limits.high", "int", True, None),
         ("read", "retries", "int", True, 3),
         ("read", "mode", "str", False, None),
     ]
@@ -678,7 +679,11 @@ def test_a_c_librarys_constants_and_functions_are_values(write_tree) -> None:
     header = names.header()
     for value in ("SDL_INIT_VIDEO", "SDL_INIT_AUDIO", "SDL_GetTicks"):
         assert f"extern haros_any {value};" in header
-    assert "count_" not in header and "update" not in header
+    assert "count_" not in header
+    # a member clang could not find is not shadowed: the unqualified function is only
+    # a friend of the permissive class, which no lookup but by its arguments finds
+    assert [line.strip() for line in header.splitlines() if "update" in line] == [
+        "template <class... A> friend haros_any &update(const A &...);"]
 
 
 def test_vendor_constants_where_cpp_needs_a_constant() -> None:
@@ -837,3 +842,103 @@ def test_an_explicit_template_instantiation_is_no_call_site() -> None:
             "  sub_ = node_->\n"
             "    template create_subscription<Array>(\"g\", 1, cb);\n")
     assert [s.line for s in recall.call_sites(text, ["setParamT"])] == [4, 6, 8]
+
+
+def test_an_unqualified_vendor_function_of_vendor_values_is_found_by_their_lookup() -> None:
+    """ouster's ``to_string(info.format.udp_profile_lidar)``: the SDK's header is missing,
+    the call's argument a permissive value; the call is found as C++ finds it (by its
+    argument), and the error no longer marks the constructor's calls as possibly lost."""
+    result = extract("vendor_adl.cpp")
+    assert rows(result) == [("publish", "points", "std_msgs/msg/String", 13)]
+    assert "CPP_PARSE_ERROR" not in codes(result)
+    assert "CPP_ERROR_NEAR_CALL" not in codes(result)
+
+
+def test_an_unqualified_api_method_is_no_friend() -> None:
+    """A call of an API method's name that the parse cannot resolve is kept by that name
+    (``CPP_CALL_UNRESOLVED``); found by its arguments as a friend, it would be a call of
+    nothing."""
+    names = synthesis.Names()
+    text = b"void f() { declare_parameter(\"rate\", v.x); to_string(v.mode); }\n"
+    names.learn([("use of undeclared identifier '" + n.decode() + "'", text, text.index(n))
+                 for n in (b"declare_parameter", b"to_string")])
+    header = names.header()
+    assert "friend haros_any &to_string(" in header
+    assert "declare_parameter" not in header
+
+
+def test_an_unqualified_function_of_the_codes_own_values_stays_an_error() -> None:
+    result = extract("undeclared_helper.cpp")
+    assert rows(result) == [("publish", "out", "std_msgs/msg/String", 10)]
+    assert "CPP_PARSE_ERROR" in codes(result)
+
+
+def test_an_unqualified_call_that_may_be_an_unknown_bases_method_keeps_the_node_partial(
+) -> None:
+    """Found by the permissive friend, an unqualified call of vendor values in a method of
+    a class derived from an unknown vendor class may be that base's method (nav2's
+    ``declareParameter`` of a costmap layer declares a ROS parameter): the node is given
+    to code nobody reads, not an error gone quiet."""
+    result = extract("vendor_base_adl.cpp")
+    unknown = [(d.code, d.location.line) for d in result.diagnostics
+               if d.code == "CPP_NODE_TO_UNKNOWN"]
+    assert unknown == [("CPP_NODE_TO_UNKNOWN", 11)]  # Gradient's, not Node2's describe()
+    assert "CPP_PARSE_ERROR" not in codes(result)
+
+
+def test_a_member_a_real_base_has_is_not_the_permissive_classes_too() -> None:
+    """rtabmap's ``OdometryROS : public rclcpp::Node, public UThread``: with ``get_logger``
+    declared on the permissive class (the code reads it on a vendor object), the class
+    found it in both bases, ambiguously, in every function that logs: the member is
+    withdrawn and the node's own is the one found."""
+    result = extract("vendor_and_node_bases.cpp")
+    assert rows(result) == [("publish", "status", "std_msgs/msg/String", 13)]
+    messages = [d.message for d in result.diagnostics]
+    assert not any("multiple base classes" in m for m in messages), messages
+    assert "CPP_ERROR_NEAR_CALL" not in codes(result)
+
+
+def test_a_vendor_member_template_called_as_a_statement_is_declared() -> None:
+    """plansys2's ``factory.registerNodeType<ExecuteAction>("ExecuteAction");`` of
+    BehaviorTree.CPP's factory, whose header is missing: its result unused, the member
+    is declared a member template; one whose result is used stays an error (what it
+    returns may make the ROS calls that are kept by their API name)."""
+    result = extract("vendor_member_template.cpp")
+    assert rows(result) == [("publish", "executing_plan", "std_msgs/msg/String", 11)]
+    assert "CPP_PARSE_ERROR" not in codes(result)
+    names = synthesis.Names()
+    text = (b"void f() {\n  factory.registerNodeType<A>(\"a\");\n"
+            b"  auto node = factory.get<B>(\"node\");\n  x = this->tree_.build<C>();\n}\n")
+    message = "'%s' does not name a template but is followed by template arguments"
+    names.learn([(message % n.decode(), text, text.index(n))
+                 for n in (b"registerNodeType", b"get", b"build")])
+    header = names.header()
+    declared = "template <class... T, class... A> static haros_any &%s(const A &...);"
+    assert declared % "registerNodeType" in header
+    assert declared % "get" not in header and declared % "build" not in header
+
+
+def test_shared_from_this_of_a_class_that_is_no_node_is_not_the_node(write_tree) -> None:
+    """MOLA's ``ExecutableBase`` (no node: a std::enable_shared_from_this of itself, with
+    bases of MRPT, whose headers are missing) returns ``shared_from_this()`` as its ``Ptr``,
+    a name declared permissively: that was "the node given to Ptr" (CPP_NODE_TO_UNKNOWN)
+    and every program including the header, mola-cli too, partial. Only a node's own
+    ``shared_from_this()`` is the node; given to an unknown name it still is."""
+    module = (
+        "#include <memory>\n#include <mrpt/system/COutputLogger.h>\n"
+        "#include <rclcpp/rclcpp.hpp>\n#include <std_msgs/msg/string.hpp>\n"
+        "class Module : public mrpt::system::COutputLogger,\n"
+        "               public std::enable_shared_from_this<Module> {\n public:\n"
+        "  Ptr getAsPtr() { return shared_from_this(); }\n};\n")
+    node = (
+        "class Server : public rclcpp::Node {\n public:\n"
+        "  Server() : Node(\"server\") {\n"
+        "    pub_ = create_publisher<std_msgs::msg::String>(\"state\", 10);\n  }\n"
+        "  void start() { helper_ = vendor::make_helper(shared_from_this()); }\n"
+        "  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;\n"
+        "  std::shared_ptr<vendor::Helper> helper_;\n};\n")
+    alone = _server(write_tree, module + "int main() { return 0; }\n")
+    assert "CPP_NODE_TO_UNKNOWN" not in codes(alone)
+    both = _server(write_tree, module + node)
+    assert [(d.code, d.location.line) for d in both.diagnostics
+            if d.code == "CPP_NODE_TO_UNKNOWN"] == [("CPP_NODE_TO_UNKNOWN", 15)]

@@ -186,6 +186,64 @@ def generate_launch_description():
     assert model.diagnostics == []
 
 
+def test_rewritten_yaml_passed_to_an_include_keeps_its_rewrites(write_tree) -> None:
+    """orca4's bringup rewrites nav2_params.yaml (``default_nav_to_pose_bt_xml`` set to
+    its own tree) and gives the RewrittenYaml to nav2's navigation_launch.py as
+    ``params_file``, which rewrites it again (use_sim_time, a root key): the included
+    file read the source file, without the first rewrites (bt_navigator's tree was "bringup.py
+    should replace me", BT_TREE_NOT_FOUND). Both apply, the outer's last."""
+    from conftest import package_xml
+
+    root = write_tree({
+        "src/p/package.xml": package_xml("p", "ament_python"),
+        "src/p/config/nav.yaml": """bt_navigator:
+  ros__parameters:
+    tree: "replace me"
+    use_sim_time: true
+    rate: 1
+""",
+        "src/p/launch/bringup.launch.py": """
+import os
+from ament_index_python.packages import get_package_share_directory
+from launch import LaunchDescription
+from launch.actions import IncludeLaunchDescription
+from launch.launch_description_sources import PythonLaunchDescriptionSource
+from nav2_common.launch import RewrittenYaml
+
+def generate_launch_description():
+    share = get_package_share_directory('p')
+    configured = RewrittenYaml(
+        source_file=os.path.join(share, 'config', 'nav.yaml'),
+        param_rewrites={'tree': '/trees/mine.xml', 'rate': '5'}, convert_types=True)
+    return LaunchDescription([
+        IncludeLaunchDescription(
+            PythonLaunchDescriptionSource(os.path.join(share, 'launch', 'nav.launch.py')),
+            launch_arguments={'params_file': configured, 'sim': 'False'}.items()),
+    ])
+""",
+        "src/p/launch/nav.launch.py": """
+from launch import LaunchDescription
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+from nav2_common.launch import RewrittenYaml
+
+def generate_launch_description():
+    params = RewrittenYaml(
+        source_file=LaunchConfiguration('params_file'), root_key='',
+        param_rewrites={'use_sim_time': LaunchConfiguration('sim'), 'rate': '7'},
+        convert_types=True)
+    return LaunchDescription([
+        Node(package='p', executable='bt', name='bt_navigator', parameters=[params]),
+    ])
+"""})
+    workspace = scan([str(root / "src")], {})
+    model = load(str(root / "src/p/launch/bringup.launch.py"), workspace, {}, {})
+    assert {p.name: p.value for p in model.params} == {
+        "/bt_navigator/tree": "/trees/mine.xml", "/bt_navigator/use_sim_time": False,
+        "/bt_navigator/rate": 7}
+    assert model.diagnostics == []
+
+
 RESET_XML = """<launch>
   <arg name="robot" default="r1"/>
   <arg name="rate" default="5"/>

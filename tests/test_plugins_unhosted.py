@@ -10,7 +10,9 @@ from typing import Any
 
 from conftest import package_xml
 
-from haros_arch.extract.cpp import plugin_loads
+from haros_arch.extract import completeness
+from haros_arch.extract.cpp import library_loads, plugin_loads
+from haros_arch.model.source import Node
 from haros_arch.pipeline import Options, analyse
 from haros_arch.project import load
 from haros_arch.query import run_catalogue
@@ -127,3 +129,31 @@ def test_the_same_node_without_plugins_decides(write_tree: Any) -> None:
                                        '"modules", std::vector<std::string>{});')
     assert instance.completeness == "complete" and not instance.node.plugin_loads
     assert found["parameter-set-not-read"] == [("parameter:/planner/stop.margin",)]
+
+
+def test_a_shared_library_opened_by_name_makes_the_node_partial(tmp_path: Any) -> None:
+    """MOLA's mola-cli dlopen()s the modules its YAML file lists (its ROS 2 bridge
+    among them), in mola_launcher's MolaDLL_Loader.cpp: the node was complete with no
+    ROS call, and rviz's displays of the bridge's topics "showed nothing" (4 false
+    infos). A dlopen / LoadLibrary call (not a comment, not a method of that name) is
+    CPP_LIBRARY_LOADED, a cause of partial."""
+    text = (
+        "#include <dlfcn.h>\n"
+        "void load(const std::string & path) {\n"
+        "  void * handle = dlopen(path.c_str(), RTLD_LAZY);\n"
+        "  // dlopen(path.c_str(), RTLD_NOW);\n"
+        "  HMODULE other = LoadLibrary(path.c_str());\n"
+        "  auto same = ::dlopen(nullptr, RTLD_NOLOAD);\n"
+        "  loader.dlopen(path);\n"
+        "}\n")
+    ws = scan([str(tmp_path)])
+    assert [(d.code, d.location.line) for d in library_loads(
+        str(tmp_path / "a.cpp"), text, ws)] == [
+        ("CPP_LIBRARY_LOADED", 3), ("CPP_LIBRARY_LOADED", 5), ("CPP_LIBRARY_LOADED", 6)]
+    node = Node("pkg", "cli", language="cpp", sources=["pkg/src/a.cpp"])
+    found = library_loads(str(tmp_path / "a.cpp"), text, ws)
+    completeness(node, found)
+    assert node.completeness == "partial"
+    assert node.completeness_reasons[0].endswith(
+        "void * handle = dlopen(path.c_str(), RTLD_LAZY);: loads a shared library chosen "
+        "at run time")

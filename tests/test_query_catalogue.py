@@ -83,6 +83,22 @@ def test_findings_point_at_the_source_line():
     assert finding.severity == "info"
 
 
+def test_a_global_name_from_the_configuration_is_no_global_name_in_code():
+    """topic_tools' relay publishes on its output_topic parameter, which relay.launch
+    sets to /relay_output: the code wrote no global name (the clean fixture). A global
+    default the code writes for the parameter is one."""
+    links = [{"kind": "subscribe", "node": "/driver", "name": "/scan", "given": "/scan",
+              "type": "sensor_msgs/LaserScan",
+              "location": {"file": "base/src/driver.cpp", "line": 31},
+              "call": {"kind": "subscribe", "name": "?", "name_param": "topic",
+                       "name_default": default}}
+             for default in ("/scan", "scan")]
+    found = [run_rule(RULES["global-names"], configuration({"links": [link]}))
+             for link in links]
+    assert [[f.entities for f in each] for each in found] == [
+        [("node:/driver", "topic:/scan")], []]
+
+
 def test_inline_suppressions_in_source_and_launch_files(write_tree):
     root = write_tree({
         "base/src/driver.cpp": "int x;\n// haros-arch: ignore global-names\n"

@@ -417,7 +417,11 @@ IGNORED = frozenset({
     "ament_export_libraries", "ament_export_targets", "ament_lint_auto_find_test_dependencies",
 })
 _TARGET_NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_.+-]*")
+# the keywords before a target's name in a function of keyword arguments
+# (``cmake_parse_arguments(ARG "" "TARGET;..." ...)``)
+_NAME_KEYWORDS = frozenset({"TARGET", "NAME", "TARGET_NAME"})
 _NOT_NODES = re.compile(r"test|gmock|benchmark", re.IGNORECASE)
+_LIBRARY_COMMAND = re.compile(r"librar", re.IGNORECASE)
 _MAIN = re.compile(rb"\bint\s+main\s*\(")
 MAX_MAIN_READ = 2_000_000  # bytes of a source read to find main()
 
@@ -437,15 +441,32 @@ def unknown_command(it: Interpreter, command: Invocation, args: list[str]) -> No
     files of the package, one of which defines ``main()``: an executable, which links the
     package's libraries declared so far (``nodes._run`` keeps of them what its code names,
     as for ament_auto). Tests and benchmarks (``ament_add_gmock``, ``catkin_add_gtest``,
-    ``ament_add_google_benchmark``, sources in a ``test`` folder) are no nodes."""
+    ``ament_add_google_benchmark``, sources in a ``test`` folder) are no nodes. A
+    function of keyword arguments names its target after a keyword (MOLA's
+    ``mola_add_executable(TARGET mola-cli SOURCES mola-cli.cpp)``): the word after it."""
+    if args[:1] and args[0] in _NAME_KEYWORDS:
+        args = args[1:]
     if (len(args) < 2 or _NOT_NODES.search(command.name) or args[0] in it.targets
             or not _TARGET_NAME.fullmatch(args[0])):
         return
     sources = [it.path(a) for a in args[1:] if a.endswith(C_SUFFIXES)]
     sources = [s for s in sources if it.inside_package(s) and os.path.isfile(s)]
-    if (not sources or any(_NOT_NODES.search(part) for s in sources
-                           for part in os.path.relpath(s, it.package_root).split(os.sep)[:-1])
-            or not any(_defines_main(s) for s in sources)):
+    if not sources or any(_NOT_NODES.search(part) for s in sources
+                          for part in os.path.relpath(s, it.package_root).split(os.sep)[:-1]):
+        return
+    if not any(_defines_main(s) for s in sources):
+        if _LIBRARY_COMMAND.search(command.name):
+            # a library the name says (MOLA's mola_add_library(TARGET mola_launcher
+            # SOURCES ...), cartographer's google_library): the package's executables
+            # made after it link it, as they do an add_library's
+            it.targets[args[0]] = Target(
+                args[0], "library", sources, conditions=it.current_conditions(),
+                line=command.line, column=command.column, file=command.file)
+            named = [os.path.basename(s) for s in sources]
+            it.diagnostics.append(diag.make(
+                "CMAKE_GUESSED_LIBRARY", it.where(command), command=command.name,
+                target=args[0], sources=", ".join(named[:4]) + (
+                    f" and {len(named) - 4} more" if len(named) > 4 else "")))
         return
     target = it.targets[args[0]] = Target(
         args[0], "executable", sources, conditions=it.current_conditions(),

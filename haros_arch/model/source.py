@@ -180,6 +180,14 @@ class PrimitiveCall:
     # under the ``name`` nav2_core::Behavior's ``configure`` is given); the host fills it
     # in (``plugins.attach``)
     host_named: str | None = field(default=None, metadata={"optional": True})
+    # in one translation unit's calls only (never in a node's): a name that is wholly a
+    # member of a class that no function of the unit writes (topic_tools' ToolBaseNode
+    # publishes on ``output_topic_``, which its subclass RelayNode sets in another
+    # file): the member's USR; and a parameter read whose value the unit stores in a
+    # member and nothing else there does: that member's USR. A node whose files do both
+    # takes the name from that parameter (``extract.cpp._members_named``)
+    name_member: str | None = field(default=None, metadata={"optional": True})
+    stores: str | None = field(default=None, metadata={"optional": True})
 
 
 def declared_defaults(calls: list[PrimitiveCall]) -> list[PrimitiveCall]:

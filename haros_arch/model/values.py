@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 from dataclasses import dataclass, field
-from typing import Literal
+from typing import Any, Literal
 
 UNKNOWN_MARK = "?"
 
@@ -48,6 +48,10 @@ Part = str | Unknown
 @dataclass(frozen=True)
 class Value:
     parts: tuple[Part, ...] = ()
+    # the rewritten parameter file (a launch ``ParamFile``) this path stands for, when
+    # the value is that file's path passed on as it is (nav2's ``RewrittenYaml`` given to
+    # an included launch file as its ``params_file`` argument); text made of it has none
+    file: Any = field(default=None, compare=False, hash=False, repr=False)
 
     @classmethod
     def of(cls, *parts: Part | Value) -> Value:

@@ -30,13 +30,13 @@ from ...model.location import Location
 from ...model.source import Package, PrimitiveCall, declared_defaults
 from ...workspace import Workspace, manifest_of
 from .. import NODELET_LOAD
-from . import cache, call_conditions, links, recall, synthesis, toolchain, versions
+from . import cache, call_conditions, links, recall, ros2_interfaces, synthesis, toolchain, versions
 from . import compile_commands as commands
 from .headers import FALLBACK, STANDIN, IncludeSetup
 from .interfaces import interface_package
 from .interfaces import known as known_interface
 from .owners import node_names
-from .visitor import WORDS, CallFinder
+from .visitor import OTHER_WRITES, WORDS, CallFinder, known_name
 
 __all__ = ["CppBatch", "CppResult", "extract_cpp", "extract_cpp_nodes"]
 
@@ -296,10 +296,49 @@ def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True
     named = {(c.kind, c.name, c.location) for c in result.calls if c.name_param is not None}
     result.calls = [c for c in result.calls if c.name_param is not None
                     or (c.kind, c.name, c.location) not in named]
+    result.calls = _members_named(result.calls)
     result.diagnostics = list(dict.fromkeys(result.diagnostics))
     _name_nodes(result, sorted(paths_units, key=lambda pair: pair[0]), known, unseen, given)
     result.calls = declared_defaults(result.calls)
     return result
+
+
+def _members_named(calls: list[PrimitiveCall]) -> list[PrimitiveCall]:
+    """The node's calls, where a name is wholly a member that its own file never writes
+    (``PrimitiveCall.name_member``) and another file of the node stores one parameter's
+    value in that member and nothing else there (``stores``), named by that parameter:
+    topic_tools' ToolBaseNode publishes on ``output_topic_`` (tool_base_node.cpp), which
+    RelayNode's constructor sets from ``declare_parameter("output_topic", ...)``
+    (relay_node.cpp). Reads of different parameters into one member leave it '?'. The
+    two marks are a unit's only: cleared here."""
+    held: dict[str, set[str]] = {}
+    # the parameter's default as a name: a string, or one holding another parameter's
+    # value (``input_topic_ + "_relay"``: "?_relay" and that parameter)
+    defaults: dict[str, tuple[str | None, str | None]] = {}
+    for call in calls:
+        if call.stores is not None and call.kind in ("read", "declare"):
+            # a file that writes the member otherwise too: not that value alone
+            other = call.stores.startswith(OTHER_WRITES)
+            usr = call.stores.removeprefix(OTHER_WRITES)
+            held.setdefault(usr, set()).add("?" if other else call.name)
+            if call.name_default is not None:
+                defaults.setdefault(usr, (call.name_default, call.default_param))
+            elif isinstance(call.default, str) and call.has_default:
+                defaults.setdefault(usr, (call.default, None))
+    out: list[PrimitiveCall] = []
+    for call in calls:
+        if call.name_member is not None or call.stores is not None:
+            names = held.get(call.name_member or "", set())
+            named = call.name_member is not None and call.name == "?" and (
+                call.name_param is None and len(names) == 1 and known_name(next(iter(names))))
+            default, other_param = defaults.get(call.name_member or "", (None, None)) if (
+                named) else (call.name_default, call.default_param)
+            call = dataclasses.replace(
+                call, name_member=None, stores=None,
+                name_param=next(iter(names)) if named else call.name_param,
+                name_default=default, default_param=other_param)
+        out.append(call)
+    return out
 
 
 def _built_under(facts: list[links.Fact], unseen: set[str]) -> dict[str, tuple[Condition, ...]]:
@@ -624,6 +663,31 @@ def plugin_loads(path: str, text: str, workspace: Workspace) -> list[Diagnostic]
     return found
 
 
+# POSIX's and Windows' loaders of a shared library by name
+_LIBRARY_LOAD = re.compile(
+    r"(?<![\w.>:])(?:::\s*)?(dlopen|LoadLibrary[AW]?|LoadLibraryEx[AW]?)\s*\(")
+
+
+def library_loads(path: str, text: str, workspace: Workspace) -> list[Diagnostic]:
+    """The lines of ``text`` (the unit's own source) that open a shared library by name
+    (``CPP_LIBRARY_LOADED``, a cause of partial): MOLA's launcher dlopen()s the modules
+    its configuration lists; what they do on the node is not in its code."""
+    found: list[Diagnostic] = []
+    for match in _LIBRARY_LOAD.finditer(text):
+        start = text.rfind("\n", 0, match.start()) + 1
+        end = text.find("\n", match.end())
+        line = text[start:end if end != -1 else len(text)]
+        if line.lstrip().startswith(("//", "*", "/*", "#")):
+            continue
+        number = text.count("\n", 0, match.start()) + 1
+        found.append(diag.make("CPP_LIBRARY_LOADED",
+                               workspace.location(path, number, match.start(1) - start + 1),
+                               text=line.strip()[:120]))
+        if len(found) == MAX_PLUGIN_LOADS:
+            break
+    return found
+
+
 def _translation_unit(path: str, text: str, ros2: bool,
                       setup: IncludeSetup) -> tuple[CppResult, list[str]]:
     """What one source file gives, and the workspace / synthesised headers it read
@@ -684,6 +748,7 @@ def _translation_unit(path: str, text: str, ros2: bool,
                 continue
         break
     result.diagnostics.extend(plugin_loads(path, text, workspace))
+    result.diagnostics.extend(library_loads(path, text, workspace))
     result.calls = sorted(finder.calls, key=lambda c: (
         c.location.file or "", c.location.line, c.location.column))
     result.diagnostics.extend(finder.diagnostics)
@@ -1110,6 +1175,9 @@ def _parse(path: str, text: str, setup: IncludeSetup, workspace: Workspace,
 _UNKNOWN_SPACE = re.compile(r"^use of undeclared identifier '(\w+)'$"
                             r"|^no (?:type|member|template) named '\w+' in namespace '(\w+)'$")
 _QUALIFIED = re.compile(rb"\b([A-Za-z_]\w*)\s*::\s*([A-Za-z_]\w*)")
+# a ROS 2 interface written in full: ``rcl_interfaces::srv::SetParameters``
+_QUALIFIED_ROS2 = re.compile(
+    rb"\b([A-Za-z_]\w*)\s*::\s*(msg|srv|action)\s*::\s*([A-Z]\w*)")
 _POINTER_SUFFIXES = ("ConstPtr", "Ptr")
 
 
@@ -1144,6 +1212,18 @@ def _unincluded_messages(tu: TranslationUnit, setup: IncludeSetup,
             base = next((written[: -len(s)] for s in _POINTER_SUFFIXES
                          if written.endswith(s) and len(written) > len(s)), written)
             header = f"{space}/{base}.h"
+            if header not in headers and setup.message_header(header):
+                headers.append(header)
+        # ROS 2: rclcpp's headers bring rcl_interfaces' parameter services, so webots'
+        # WebotsNode.hpp holds an ``rclcpp::Client<rcl_interfaces::srv::SetParameters>``
+        # with no include of its own; the member's type was an error and the node class
+        # invalid (``no member named 'srv' in namespace 'rcl_interfaces'``)
+        for match in _QUALIFIED_ROS2.finditer(text or b""):
+            space = match.group(1).decode()
+            if space not in spaces:
+                continue
+            header = ros2_interfaces.header(space, match.group(2).decode(),
+                                            match.group(3).decode())
             if header not in headers and setup.message_header(header):
                 headers.append(header)
     return headers

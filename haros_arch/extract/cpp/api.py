@@ -549,6 +549,11 @@ NAV2: dict[tuple[str, str], RosFunction] = {
     ("nav2_costmap_2d::FootprintSubscriber", "FootprintSubscriber"): RosFunction(
         "subscribe", fixed_type="geometry_msgs/msg/PolygonStamped", on_handle=False,
         name_arg=1, standin_only=True),
+    # Humble's and Jazzy's ServiceClient<S>(name, node[, use_internal_executor]): a client
+    # of S on the node (Kilted's nav2::ServiceClient is made by the lifecycle node's
+    # create_client, a row above)
+    ("nav2_util::ServiceClient", "ServiceClient"): RosFunction(
+        "client", type_from=("class",), on_handle=False, name_arg=0, standin_only=True),
     # SimpleActionServer<A>(node, name, execute, ...) serves A on the node
     # (nav2_util's also from four node interfaces, the name after them)
     **{(f"{scope}::SimpleActionServer", "SimpleActionServer"): RosFunction(

@@ -137,6 +137,14 @@ class CallTypes:
                     ctype = self.bound(held, within=scope.body) or ctype
                 if ctype is None and source == "template-value":
                     ctype = _explicit_parameter_type(call, spec.type_arg)
+                if ctype is None and spec.kind == "declare" and spec.per_element:
+                    # declare_parameters(prefix, std::map<std::string, T>) deduces T,
+                    # each parameter's type: the element of the std::vector<T> it returns
+                    returned = call.type.get_canonical()
+                    if returned.get_declaration().spelling == "vector" and (
+                        returned.get_num_template_arguments() >= 1
+                    ):
+                        ctype = returned.get_template_argument_type(0)
                 written = _class_template_first(call)
                 if source == "template-value" and written is not None:
                     # declare_parameter<std::vector<T>>: T[], what it returns (a call the

@@ -904,6 +904,16 @@ class IncludeSetup:
         type with no include of its own: ``_unincluded_messages``)."""
         if self.system_headers:
             return False
+        ros2 = _ROS2_HEADER.fullmatch(header)
+        if ros2 is not None:
+            if header not in self._handled:
+                if self._resolve(header) is not None or not (
+                        self.workspace.find(ros2.group(1)) is not None
+                        or interfaces.interface_package(ros2.group(1), True)):
+                    return False
+                self._ros2_interface(header, ros2.group(1), ros2.group(2), ros2.group(3),
+                                     Location())
+            return True
         spec = self._message_header(header)
         if spec is None or self._definition(spec.group(1), spec.group(2)) is None:
             return False

@@ -226,7 +226,11 @@ def _is_node(arg: Cursor) -> bool:
     if expr.kind == CursorKind.CXX_THIS_EXPR:
         return _derives_from_node(expr.type.get_pointee().get_declaration(), 0)
     if expr.kind == CursorKind.CALL_EXPR and expr.spelling == "shared_from_this":
-        return True
+        # the node's (rclcpp::Node is a std::enable_shared_from_this<Node>), not that of
+        # another class that enables it for itself (MOLA's ExecutableBase::getAsPtr(),
+        # in a program of no node); a type the parse cannot tell may be the node's
+        made = _pointee(expr.type.get_canonical()).get_declaration()
+        return made.kind not in _CLASSES or _derives_from_node(made, 0)
     canonical = arg.type.get_canonical()
     if _NODE_TYPE.search(canonical.spelling) is not None:
         return True

@@ -22,6 +22,7 @@ workspaces they changed little and cost a parse each, so the default is one roun
 
 from __future__ import annotations
 
+import functools
 import itertools
 import re
 from collections.abc import Callable, Iterable
@@ -69,6 +70,10 @@ _MEMBER = re.compile(
 _MEMBER_TYPE = re.compile(  # ``Msg::_code_type``; ``Synthesised<T>::ConstPtr``
     r"^no type named '(\w+)' in '(?:const )?(?:(?:struct|class) )?([\w:]+)(<.*>)?'")
 _AMBIGUOUS = re.compile(r"^reference to '(\w+)' is ambiguous")
+# a member of the permissive class that a class finds twice: through a declared base and
+# through a real one (rtabmap's ``OdometryROS : public rclcpp::Node, public UThread``,
+# once ``get_logger`` is read on some object): the real base's it is
+_AMBIGUOUS_MEMBER = re.compile(r"^member '(\w+)' found in multiple base classes of different types")
 # a pointer to one declared class given where a pointer to another is wanted (motoman's
 # ``init(&default_tcp_connection_)``, a TcpClient for a SmplMsgConnection): the vendor's
 # classes derive so
@@ -88,12 +93,61 @@ _AFTER_MEMBER = re.compile(rb"(?:\.|->)\s*([A-Za-z_]\w*)")
 _TEMPLATE_MEMBER = re.compile(rb"(?:\.|->)\s*template\s+([A-Za-z_]\w*)\s*<")
 _NOT_TEMPLATE = re.compile(
     r"^'(\w+)' following the 'template' keyword does not refer to a template")
+# a member of a declared object called with template arguments (plansys2's
+# ``factory.registerNodeType<ExecuteAction>("ExecuteAction");`` of BehaviorTree.CPP)
+_NAMES_NO_TEMPLATE = re.compile(
+    r"^'(\w+)' does not name a template but is followed by template arguments")
+# the object of a member call written as a statement's start: a name, ``this->``, and
+# members after ``.`` / ``->``
+_STATEMENT_OBJECT = re.compile(
+    rb"(?:^|[;{}])\s*(?:this\s*->\s*)?[A-Za-z_]\w*(?:\s*(?:\.|->)\s*[A-Za-z_]\w*)*"
+    rb"\s*(?:\.|->)\s*$")
 # a value read from a scope: ``Mode::FAST)``, ``case Mode::FAST:``, an enumerator of a
 # vendor enum
 _SCOPED_VALUE = re.compile(rb"::\s*([A-Za-z_]\w*)\s*(?=[);,\]}]|:(?!:))")
 # the name written next is what an alias, a typedef or a using-declaration names
 _ALIASED = re.compile(rb"(?:\busing\s+\w+\s*=|\btypedef|\busing)\s*(?:typename\s+)?(?:::\s*)?"
                       rb"(?:[A-Za-z_]\w*\s*::\s*)*$")
+
+
+def _discarded_member_call(text: bytes, offset: int, name: str) -> bool:
+    """Whether the member template ``name`` at ``offset`` is called as a whole statement,
+    ``obj.name<T>(args);``, its result unused: declared a member template (any template
+    arguments, any call arguments), nothing is then read from what it returns, whose own
+    ROS calls would be lost (``x.get<T>("node")->create_publisher(...)``, which is better
+    left an error and kept by its API name)."""
+    if not text.startswith(name.encode(), offset):
+        return False
+    if _STATEMENT_OBJECT.search(text[max(0, offset - 200):offset]) is None:
+        return False
+    closing = {ord("<"): ord(">"), ord("("): ord(")")}
+    stack: list[int] = []
+    called = False
+    for at in range(offset + len(name), min(len(text), offset + 2000)):
+        char = text[at]
+        if char in closing:
+            stack.append(closing[char])
+        elif stack and char == stack[-1]:
+            stack.pop()
+            called = called or (not stack and char == ord(")"))
+        elif char in (ord(";"), ord("{"), ord("}")) and stack:
+            return False
+        elif not stack and not chr(char).isspace():
+            return called and char == ord(";")
+    return False
+
+
+@functools.lru_cache(maxsize=1)
+def _api_methods() -> frozenset[str]:
+    """The API's methods (longer than four letters, as ``recall`` counts them: ``get`` /
+    ``set`` / ``call`` are any class's), which stay the API's: a class built on a real
+    node and a declared class would find such a member twice, and a call the parse
+    cannot resolve is kept by that name; not a name too common to be the API's
+    (``call_site``: realtime_tools' ``initialize``, which an unknown class's method of
+    that name, kinematics_interface's, must still be)."""
+    from . import api
+    return frozenset(name for (_, name), row in api.ALL.items()
+                     if len(name) > 4 and row.call_site)
 
 
 def _aliased(window: bytes) -> bool:
@@ -383,6 +437,12 @@ class Names:
         # the members written after C++'s ``template`` keyword: member templates (any
         # template arguments, any call arguments), not static members
         self.member_templates: set[str] = set()
+        # unqualified functions the code calls that no lookup finds: friends of the
+        # permissive class declared in it only, which argument-dependent lookup alone
+        # finds, where an argument is a permissive value (ouster's ``to_string(info.
+        # format.udp_profile_lidar)`` of the SDK's types); the call of a member clang
+        # could not find (an invalid base) is never one, its arguments being the code's
+        self.friends: set[str] = set()
         # the members read where C++ needs a constant (``case Mode::FAST:``): enumerators
         self.constants: set[str] = set()
         self.flags: set[str] = set()  # those an operator combines (``_constant_at``)
@@ -399,6 +459,9 @@ class Names:
         # unknown names that made a use ambiguous (the real declaration was invalid only
         # until other names were declared): no longer declared
         self.withdrawn: set[str] = set()
+        # members of the permissive class a class also finds in a real base
+        # (``_AMBIGUOUS_MEMBER``): no longer declared
+        self.withdrawn_members: set[str] = set()
         # unknown macros written alone on their line (``EIGEN_MAKE_ALIGNED_OPERATOR_NEW``
         # in a class body, its header not reached): defined empty, not declared as types
         self.macros: set[str] = set()
@@ -413,7 +476,8 @@ class Names:
     def learn(self, errors: Iterable[tuple[str, bytes | None, int]]) -> bool:
         """Read ``(message, source bytes of its file, byte offset)`` errors; True when a
         name was learnt that was not known before."""
-        before = (self.count, len(self.members), len(self.withdrawn))
+        before = (self.count, len(self.members), len(self.withdrawn),
+                  len(self.withdrawn_members))
         errors = list(errors)
         for _message, text, _offset in errors:
             if text is not None and id(text) not in self._read:
@@ -430,7 +494,8 @@ class Names:
                 break
             self._learn_one(message, text, offset)
         self._spread()
-        return (self.count, len(self.members), len(self.withdrawn)) != before
+        return (self.count, len(self.members), len(self.withdrawn),
+                len(self.withdrawn_members)) != before
 
     def _spread(self) -> None:
         """Every qualified use of an unknown top-level name in the files read: clang
@@ -464,14 +529,7 @@ class Names:
         what it returns are kept by their API name (a declared template returns an
         object whose API calls then fail); a name after C++'s ``template`` keyword
         (``bb->template set<T>("node", node_)``) is one (``member_templates``)."""
-        from . import api
-        # the API's methods (longer than four letters, as ``recall`` counts them: ``get``
-        # / ``set`` / ``call`` are any class's) stay the API's: a class built on a real
-        # node and a declared class would find the name twice; not a name too common to
-        # be the API's (``call_site``: realtime_tools' ``initialize``, which an unknown
-        # class's method of that name, kinematics_interface's, must still be)
-        skip = _KEYWORDS | {name for (_, name), row in api.ALL.items()
-                            if len(name) > 4 and row.call_site}
+        skip = _KEYWORDS | _api_methods()
         for text in texts:
             if text is not None:
                 self.members.update(
@@ -509,6 +567,14 @@ class Names:
                 self.member_templates.add(template.group(1))
                 self.count += 1
             return
+        named = _NAMES_NO_TEMPLATE.match(message)
+        if named is not None:
+            name = named.group(1)
+            if text is not None and name not in self.member_templates and (
+                    name not in _api_methods()) and _discarded_member_call(text, offset, name):
+                self.member_templates.add(name)
+                self.count += 1
+            return
         converted = _NOT_CONVERTED.match(message)
         if converted is not None:
             self._derive(converted.group(1), converted.group(2))
@@ -522,6 +588,11 @@ class Names:
         ambiguous = _AMBIGUOUS.match(message)
         if ambiguous is not None:
             self.withdrawn.add(ambiguous.group(1))
+            return
+        twice = _AMBIGUOUS_MEMBER.match(message)
+        if twice is not None:
+            if twice.group(1) in self.members | self.member_templates:
+                self.withdrawn_members.add(twice.group(1))
             return
         if _TYPE_AS_VALUE.match(message):
             if text is not None:
@@ -612,6 +683,12 @@ class Names:
                 called and "_" in written[-1]
                 and written[-1].split("_")[0] in self.libraries
             ) and not (called and _CAPS_MACRO.fullmatch(written[-1])):
+                if called and written[-1] not in self.friends and (
+                        written[-1] not in _api_methods()):
+                    # (an API method's name stays an error: a call the parse cannot
+                    # resolve is kept by that name, the friend would take it)
+                    self.friends.add(written[-1])
+                    self.count += 1
                 return  # an unqualified function or variable: in a class, often a member
                 # clang could not find (an invalid base); declaring it would shadow it
             # but a C library's constant or prefixed function, whose header is missing
@@ -766,13 +843,16 @@ class Names:
 
     def header(self) -> str:
         values = _Values(self.taken)
-        members = "".join(f"  static haros_any {m};\n" for m in sorted(self.members)
+        kept = self.members - self.withdrawn_members
+        members = "".join(f"  static haros_any {m};\n" for m in sorted(kept)
                           if m not in self.constants and m not in self.member_templates)
         members += "".join(
             f"  template <class... T, class... A> static haros_any &{m}(const A &...);\n"
-            for m in sorted(self.member_templates - self.constants))
+            for m in sorted(self.member_templates - self.constants - self.withdrawn_members))
         members += "".join(f"  enum : int {{ {m} = {values.next(m in self.flags)} }};\n"
-                           for m in sorted(self.constants & self.members))
+                           for m in sorted(self.constants & kept))
+        members += "".join(f"  template <class... A> friend haros_any &{f}(const A &...);\n"
+                           for f in sorted(self.friends - self.members - self.member_templates))
         lines = [_PRELUDE % (_COMPOUND_MEMBERS, members, _OPERATORS)]
         lines += [f"#define {name}" for name in sorted(self.macros)]
         lines += [f"#define {name}(...)" for name in sorted(self.declaration_macros)]
@@ -849,6 +929,7 @@ class Names:
             for member in sorted(self.fields[record]):
                 if len(found) < limit:
                     found.append(f"{record}::{member}")
+        found.extend(f"{f}()" for f in sorted(self.friends)[:max(0, limit - len(found))])
         return found
 
     def __bool__(self) -> bool:

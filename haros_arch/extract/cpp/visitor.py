@@ -99,6 +99,8 @@ _LOOKUP = re.compile(rb"\s*(?:(?:\.|->)\s*(?:find|count|contains|at|end)\s*\(|\[
 # parameter the default holds), then ``EACH`` when the name is each element of that list
 # parameter in turn (PrimitiveCall.name_each) and the (line, column) of the range-based
 # for that walks it
+# ``PrimitiveCall.stores`` of a read into a member the unit also writes otherwise
+OTHER_WRITES = "!"
 NameSource = tuple[str, str | None, str | None, str | None, tuple[int, int] | None]
 EACH = "."
 
@@ -163,6 +165,9 @@ class CallFinder:
         self._fixed: set[tuple[str, str, str | None]] = set()  # fixed-name calls already found
         # ROS 2 parameter -> its declared default, and the parameter it holds (``Source``)
         self._declared: dict[str, tuple[str, str | None]] = {}
+        # the keys each declare_parameters(prefix, map) of the unit declared under its
+        # prefix (None: a map whose keys are not known), for get_parameters(prefix, out)
+        self._prefix_keys: dict[str, list[str] | None] = {}
         self.calls: list[PrimitiveCall] = []
         self.functions: list[Cursor] = []
         # (file, line) of the calls of an API function's name that the parse resolved,
@@ -237,15 +242,18 @@ class CallFinder:
             member = members[key]
             made = [[(r.kind, r.name, r.handle_namespace, r.has_default, r.default,
                       r.conditions) for r in reads] for reads in sites.values()]
-            if not all(m == made[0] for m in made):
-                continue
-            also = self._constants(member, len(sites), calls.get(key, set()))
-            if also is None:
-                continue
+            usr = member.get_usr() or None
+            also = self._constants(member, len(sites), calls.get(key, set())) if all(
+                m == made[0] for m in made) else None
             for reads in sites.values():
                 for read in reads:
-                    read.variable = member.spelling
-                    read.also = also or None
+                    # what another file of the node names with the member is the
+                    # parameter's value when these reads are its only writes here
+                    # (``extract.cpp._members_named``); OTHER_WRITES: not only they
+                    read.stores = usr if also == [] or usr is None else OTHER_WRITES + usr
+                    if also is not None:
+                        read.variable = member.spelling
+                        read.also = also or None
         self.facts = argument_facts(self.sites, self.namespaces, self.owned, self._marked,
                                     self._site_conditions)
         self.facts.extend(call_conditions.site_facts(
@@ -348,7 +356,7 @@ class CallFinder:
             if kind in _MAKES:
                 self._unseen_class(node)  # in every function, walked or not
             if kind == CursorKind.CALL_EXPR:
-                self._to_unknown(node)  # in every function, walked or not
+                self._to_unknown(node, function)  # in every function, walked or not
                 spelling = node.spelling
                 if spelling in _API_NAMES or spelling in names or (
                     not spelling and _recovered_name(node) in rows
@@ -415,7 +423,7 @@ class CallFinder:
                 self._dependent(node, conditions, scope)
             if node.kind == CursorKind.CALL_EXPR:
                 self._construction(node, conditions)
-                self._to_unknown(node)
+                self._to_unknown(node, function)
             if node.kind in _MAKES:
                 self._unseen_class(node)
             tested.visit(node)
@@ -800,11 +808,13 @@ class CallFinder:
             return None
         return (name, package) if self.clients(package, name) else None
 
-    def _to_unknown(self, call: Cursor) -> None:
+    def _to_unknown(self, call: Cursor, function: Cursor | None = None) -> None:
         """Say when ``call`` gives the node to a function or class the parse knows only
         as a name declared permissively (its package is not in the workspace:
         ``CPP_NODE_TO_UNKNOWN``, the node is partial): what it does with the node is
-        not read."""
+        not read. So does an unqualified call that the permissive class's friend takes
+        (``synthesis.Names.friends``) in a method of ``function``'s class derived from a
+        class declared permissively: it may be that base's method, run on the object."""
         unknown = self._unknown_callee(call)
         if unknown is None:
             return
@@ -814,6 +824,11 @@ class CallFinder:
         given = node_arguments(call)
         if given and binds_own_member(call, given):
             return  # a callback binding: the member's calls are read where it is defined
+        if not given and self._of_unknown_base(unknown, function):
+            self._unknown.add(key)
+            self.diagnostics.append(diag.make(
+                "CPP_NODE_TO_UNKNOWN", self.where(call), given="this", name=call.spelling))
+            return
         if given:  # once per place (a conversion of the made object starts there too)
             self._unknown.add(key)
             name = call.spelling if unknown is call.referenced else qualified_name(unknown)
@@ -828,6 +843,30 @@ class CallFinder:
             self.diagnostics.append(diag.make(
                 "CPP_NODE_TO_UNKNOWN", self.where(call),
                 given="".join(t.spelling for t in given[0].get_tokens())[:60], name=name))
+
+    def _of_unknown_base(self, callee: Cursor, function: Cursor | None) -> bool:
+        """Whether ``callee`` is a friend of the permissive class (an unqualified function
+        no lookup found) called in a method of a class with a base declared permissively,
+        directly or through the workspace's classes: the base's own method, for C++."""
+        if function is None or function.kind not in (
+                CursorKind.CXX_METHOD, CursorKind.CONSTRUCTOR, CursorKind.DESTRUCTOR,
+                CursorKind.FUNCTION_TEMPLATE):
+            return False
+        lexical, semantic = callee.lexical_parent, callee.semantic_parent
+        if lexical is None or lexical.spelling != synthesis.ANY or (
+                semantic is not None and semantic.spelling == synthesis.ANY):
+            return False  # not declared in the class as a friend: its member
+        classes = [function.semantic_parent]
+        for _ in range(MAX_DEPTH):
+            bases = [base.referenced for cls in classes if cls is not None
+                     for base in cls.get_children()
+                     if base.kind == CursorKind.CXX_BASE_SPECIFIER]
+            if any(b is not None and self._declared_here(b) for b in bases):
+                return True
+            classes = [b.get_definition() or b for b in bases if b is not None]
+            if not classes:
+                return False
+        return False
 
     def _unknown_callee(self, call: Cursor) -> Cursor | None:
         """What ``call`` runs whose code the parse does not have: a function or class
@@ -975,6 +1014,7 @@ class CallFinder:
         names: list[tuple[str, NameSource | None]]
         namespace: str | None = None
         elsewhere: list[str] = []  # members read for the name that other files set
+        name_expr: Cursor | None = None
         if spec.fixed_name is not None:
             if spec.handle_default is not None:  # relative to the handle given
                 handle = next((a for a in args if is_handle(a)), None)
@@ -1090,6 +1130,8 @@ class CallFinder:
                         ("/", "~")):
                     handle_namespace = namespace
             made_in = self._made_in(name, handle_namespace)
+            name_member = self._name_member(name_expr) if (
+                written == "?" and source is None and spec.fixed_name is None) else None
             self.calls.append(PrimitiveCall(
                 kind=spec.kind, name=name, type=ctype, queue_size=queue, qos=qos,
                 latch=latch, callback=callback_name(function), conditions=conditions,
@@ -1103,7 +1145,7 @@ class CallFinder:
                 deletes=spec.deletes, node_name=owner, transport=transport,
                 made_in=made_in, program_arg=program_arg,
                 name_arg=written.program_arg if isinstance(written, ArgumentName) and (
-                    name.count("?") == 1) else None))
+                    name.count("?") == 1) else None, name_member=name_member))
             if status is not None:
                 self._status_reads.append((status, self.calls[-1]))
             member = self._member(spec, call, shift) if len(names) == 1 else None
@@ -1224,6 +1266,15 @@ class CallFinder:
                 keys = _map_keys(args[given + 1], scope) if (
                     call.spelling == "declare_parameters" and given is not None
                     and given + 1 < len(args)) else None
+                if call.spelling == "declare_parameters":
+                    known = self._prefix_keys.get(prefix, [])
+                    self._prefix_keys[prefix] = None if keys is None or known is None \
+                        else [*known, *keys]
+                elif "?" not in prefix:
+                    # get_parameters(prefix, out) reads what is declared under the prefix:
+                    # the keys the unit's declare_parameters gave it (teleop_twist_joy's
+                    # axis_linear.x, .y, .z), else whatever that is
+                    keys = self._prefix_keys.get(prefix)
                 return [((prefix + "." if prefix else "") + key, None)
                         for key in (keys or ["?"])]
             return [self._name(e, scope) for e in _elements(expr)]
@@ -1267,6 +1318,19 @@ class CallFinder:
             source = self._parameter_source(unknown[0], scope, 0)
         return (name, None if source is None else (*source, None, None))
 
+    def _name_member(self, expr: Cursor | None) -> str | None:
+        """The USR of the member ``expr`` is, when no function of this unit writes it
+        (a base class's member that a subclass's constructor in another file sets:
+        topic_tools' ``output_topic_``), else None."""
+        inner = strip(expr) if expr is not None else None
+        field = inner.referenced if inner is not None and inner.kind in (
+            CursorKind.MEMBER_REF_EXPR, CursorKind.DECL_REF_EXPR) else None
+        if field is None or field.kind != CursorKind.FIELD_DECL or self.members is None or (
+            self.members.writes(field) != 0
+        ):
+            return None
+        return field.get_usr() or None
+
     def _held_parameters(self, tested: Cursor, scope: Scope) -> tuple[tuple[str, str], ...]:
         """The locals ``tested`` names that hold a parameter's value: each written once,
         by a read (or declaration) of a parameter with a known name."""
@@ -1282,7 +1346,7 @@ class CallFinder:
             key = place_of(decl)
             if key not in self._held:
                 source = self._parameter_source(node, scope, 0)
-                self._held[key] = source[0] if source is not None and _known_name(
+                self._held[key] = source[0] if source is not None and known_name(
                     source[0]) else None
             parameter = self._held[key]
             if parameter is not None:
@@ -1295,7 +1359,7 @@ class CallFinder:
         name, source = self._name(expr, scope)
         # (a parameter named after what other files pass is not known until they are
         # read: its name stays unknown)
-        if source is None or PLACEHOLDER in name or not _known_name(source[0]):
+        if source is None or PLACEHOLDER in name or not known_name(source[0]):
             return None
         return parameter_mark(name, source[0], source[3])
 
@@ -1859,7 +1923,7 @@ def _renames_itself(arg: Cursor) -> bool:
     return False
 
 
-def _known_name(name: str) -> bool:
+def known_name(name: str) -> bool:
     """A parameter's name known in this file: no unknown run, no placeholder of what
     another file passes, no parameter mark."""
     return not any(mark in name for mark in ("?", PLACEHOLDER, PARAMETER))

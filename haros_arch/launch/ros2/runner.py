@@ -544,6 +544,16 @@ class Runner:
             return self.substituted(self.rewrite(document, entry, scope, where), entry,
                                     scope, where)
         path = self.value(entry.path, scope, where)
+        if path is not None and isinstance(path.file, e.ParamFile) and depth < 8 and (
+            path.file is not entry
+        ):
+            # a rewritten file passed on in a launch argument (orca4's bringup gives
+            # nav2's navigation_launch.py its RewrittenYaml as params_file, which that
+            # rewrites again): its own rewrites first, then this one's
+            inner = e.ParamFile((e.FileRef(path.file),), entry.root_key, entry.rewrites,
+                                entry.location, entry.replacements, entry.condition,
+                                entry.allow_substs, entry.key_rewrites, entry.value_rewrites)
+            return self.param_file(inner, scope, where, depth + 1)
         if path is None or path.literal is None:
             self.report("LAUNCH_PARAM_FILE", where,
                         detail=f"parameter file {path} is not known statically")

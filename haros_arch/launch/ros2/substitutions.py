@@ -199,7 +199,9 @@ class Evaluator:
         parts: list[str | Value] = []
         for part in t:
             parts.append(part if isinstance(part, str) else self.one(part))
-        result = Value.of(*parts)
+        # one substitution's value as it is: a rewritten file's path keeps its file
+        result = parts[0] if len(parts) == 1 and isinstance(parts[0], Value) else (
+            Value.of(*parts))
         if len(result.text) > MAX_TEXT:
             self.report("LAUNCH_PY_BUDGET", detail=f"a value longer than {MAX_TEXT}")
             return Value.unknown("too long")
@@ -439,7 +441,9 @@ class Evaluator:
         return Value.unknown("unreadable file") if content is None else Value.of(content)
 
     def s_FileRef(self, s: e.FileRef) -> Value:
-        return self.value(s.file.path)
+        # the path, which the file's rewrites go with where it is read as parameters
+        # (``Runner.param_file``): a launch argument's value passes both on
+        return Value(self.value(s.file.path).parts, file=s.file)
 
     def s_Command(self, s: e.Command) -> Value:
         output = self.s_Opaque(e.Opaque(s.origin))

@@ -39,14 +39,24 @@
   (major < RCLCPP_VERSION_MAJOR) ? true : (major > RCLCPP_VERSION_MAJOR) ? false : \
   (minor < RCLCPP_VERSION_MINOR) ? true : (minor > RCLCPP_VERSION_MINOR) ? false : \
   (patch <= RCLCPP_VERSION_PATCH))
+// each message as its generated header (``ros2_interfaces.render``) guards it: the first
+// definition met is the one, whichever of the two a unit includes first
 namespace rcl_interfaces { namespace msg {
 // with the generated messages' set__<field> setters (chained: each returns the message)
+#ifndef HAROS_SYNTH2_RCL_INTERFACES_MSG_FLOATINGPOINTRANGE_HPP
+#define HAROS_SYNTH2_RCL_INTERFACES_MSG_FLOATINGPOINTRANGE_HPP
 struct FloatingPointRange { double from_value, to_value, step;
   FloatingPointRange& set__from_value(double v); FloatingPointRange& set__to_value(double v);
   FloatingPointRange& set__step(double v); };
+#endif
+#ifndef HAROS_SYNTH2_RCL_INTERFACES_MSG_INTEGERRANGE_HPP
+#define HAROS_SYNTH2_RCL_INTERFACES_MSG_INTEGERRANGE_HPP
 struct IntegerRange { int64_t from_value, to_value; uint64_t step;
   IntegerRange& set__from_value(int64_t v); IntegerRange& set__to_value(int64_t v);
   IntegerRange& set__step(uint64_t v); };
+#endif
+#ifndef HAROS_SYNTH2_RCL_INTERFACES_MSG_PARAMETERDESCRIPTOR_HPP
+#define HAROS_SYNTH2_RCL_INTERFACES_MSG_PARAMETERDESCRIPTOR_HPP
 struct ParameterDescriptor {
   std::string name; uint8_t type; std::string description; std::string additional_constraints;
   bool read_only; bool dynamic_typing;
@@ -60,22 +70,40 @@ struct ParameterDescriptor {
   ParameterDescriptor& set__floating_point_range(const std::vector<FloatingPointRange>& v);
   ParameterDescriptor& set__integer_range(const std::vector<IntegerRange>& v);
 };
+#endif
+#ifndef HAROS_SYNTH2_RCL_INTERFACES_MSG_SETPARAMETERSRESULT_HPP
+#define HAROS_SYNTH2_RCL_INTERFACES_MSG_SETPARAMETERSRESULT_HPP
 struct SetParametersResult { bool successful; std::string reason; };
+#endif
+#ifndef HAROS_SYNTH2_RCL_INTERFACES_MSG_LISTPARAMETERSRESULT_HPP
+#define HAROS_SYNTH2_RCL_INTERFACES_MSG_LISTPARAMETERSRESULT_HPP
 struct ListParametersResult { std::vector<std::string> names; std::vector<std::string> prefixes; };
+#endif
+#ifndef HAROS_SYNTH2_RCL_INTERFACES_MSG_PARAMETERTYPE_HPP
+#define HAROS_SYNTH2_RCL_INTERFACES_MSG_PARAMETERTYPE_HPP
 struct ParameterType {
   static constexpr uint8_t PARAMETER_NOT_SET = 0, PARAMETER_BOOL = 1, PARAMETER_INTEGER = 2,
     PARAMETER_DOUBLE = 3, PARAMETER_STRING = 4, PARAMETER_BYTE_ARRAY = 5,
     PARAMETER_BOOL_ARRAY = 6, PARAMETER_INTEGER_ARRAY = 7, PARAMETER_DOUBLE_ARRAY = 8,
     PARAMETER_STRING_ARRAY = 9;
 };
+#endif
 } }
 namespace builtin_interfaces { namespace msg {
+#ifndef HAROS_SYNTH2_BUILTIN_INTERFACES_MSG_TIME_HPP
+#define HAROS_SYNTH2_BUILTIN_INTERFACES_MSG_TIME_HPP
 struct Time { int32_t sec; uint32_t nanosec; using _sec_type = int32_t; using _nanosec_type = uint32_t; };
+#endif
+#ifndef HAROS_SYNTH2_BUILTIN_INTERFACES_MSG_DURATION_HPP
+#define HAROS_SYNTH2_BUILTIN_INTERFACES_MSG_DURATION_HPP
 struct Duration { int32_t sec; uint32_t nanosec; using _sec_type = int32_t; using _nanosec_type = uint32_t; };
+#endif
 } }
 // the parameter event messages, as rosidl generates them: rclcpp's headers include them
 // (a parameter event callback reads event->changed_parameters without an include)
 namespace rcl_interfaces { namespace msg {
+#ifndef HAROS_SYNTH2_RCL_INTERFACES_MSG_PARAMETERVALUE_HPP
+#define HAROS_SYNTH2_RCL_INTERFACES_MSG_PARAMETERVALUE_HPP
 struct ParameterValue {
   ParameterValue();
   uint8_t type; using _type_type = uint8_t; ParameterValue& set__type(const uint8_t& _arg);
@@ -92,6 +120,9 @@ struct ParameterValue {
   bool operator!=(const ParameterValue& other) const;
   RCLCPP_SMART_PTR_ALIASES_ONLY(ParameterValue)
 };
+#endif
+#ifndef HAROS_SYNTH2_RCL_INTERFACES_MSG_PARAMETER_HPP
+#define HAROS_SYNTH2_RCL_INTERFACES_MSG_PARAMETER_HPP
 struct Parameter {
   Parameter();
   std::string name; using _name_type = std::string; Parameter& set__name(const std::string& _arg);
@@ -100,6 +131,9 @@ struct Parameter {
   bool operator!=(const Parameter& other) const;
   RCLCPP_SMART_PTR_ALIASES_ONLY(Parameter)
 };
+#endif
+#ifndef HAROS_SYNTH2_RCL_INTERFACES_MSG_PARAMETEREVENT_HPP
+#define HAROS_SYNTH2_RCL_INTERFACES_MSG_PARAMETEREVENT_HPP
 struct ParameterEvent {
   ParameterEvent();
   builtin_interfaces::msg::Time stamp; using _stamp_type = builtin_interfaces::msg::Time; ParameterEvent& set__stamp(const builtin_interfaces::msg::Time& _arg);
@@ -111,6 +145,7 @@ struct ParameterEvent {
   bool operator!=(const ParameterEvent& other) const;
   RCLCPP_SMART_PTR_ALIASES_ONLY(ParameterEvent)
 };
+#endif
 } }
 namespace rclcpp {
 void init(int argc, char const* const argv[]);
@@ -147,6 +182,10 @@ public:
   bool operator==(const ParameterValue& other) const;
   bool operator!=(const ParameterValue& other) const;
 };
+// rclcpp/parameter_value.hpp: a value or a type as text (ros2_shared's context macros
+// log each parameter with to_string(ParameterValue{member}))
+std::string to_string(ParameterType type);
+std::string to_string(const ParameterValue& value);
 class Parameter {
 public:
   Parameter();
@@ -308,6 +347,24 @@ class ServicesQoS : public QoS { public: explicit ServicesQoS(const QoSInitializ
 class RosoutQoS : public QoS { public: explicit RosoutQoS(const QoSInitialization& i = KeepLast(1000)); };
 class SystemDefaultsQoS : public QoS { public: explicit SystemDefaultsQoS(const QoSInitialization& i = KeepLast(10)); };
 class ClockQoS : public QoS { public: explicit ClockQoS(const QoSInitialization& i = KeepLast(1)); };
+// rclcpp/node_interfaces/node_graph_interface.hpp: an endpoint of a topic as the graph
+// tells it (topic_tools' relay takes the type and QoS of its input's publishers)
+enum class EndpointType { Invalid = 0, Publisher, Subscription };
+class TopicEndpointInfo {
+public:
+  std::string& node_name();
+  const std::string& node_name() const;
+  std::string& node_namespace();
+  const std::string& node_namespace() const;
+  std::string& topic_type();
+  const std::string& topic_type() const;
+  EndpointType& endpoint_type();
+  const EndpointType& endpoint_type() const;
+  std::array<uint8_t, 24>& endpoint_gid();
+  const std::array<uint8_t, 24>& endpoint_gid() const;
+  QoS& qos_profile();
+  const QoS& qos_profile() const;
+};
 // entities
 class CallbackGroup { public: RCLCPP_SMART_PTR_DEFINITIONS(CallbackGroup) };
 enum class CallbackGroupType { MutuallyExclusive, Reentrant };
@@ -598,6 +655,10 @@ class NodeGraphInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeGraphInterfa
   std::vector<std::string> get_node_names() const;
   size_t count_publishers(const std::string& topic) const;
   size_t count_subscribers(const std::string& topic) const;
+  std::vector<rclcpp::TopicEndpointInfo> get_publishers_info_by_topic(
+      const std::string& topic_name, bool no_mangle = false) const;
+  std::vector<rclcpp::TopicEndpointInfo> get_subscriptions_info_by_topic(
+      const std::string& topic_name, bool no_mangle = false) const;
   std::shared_ptr<rclcpp::Event> get_graph_event();
   void wait_for_graph_change(std::shared_ptr<rclcpp::Event> event,
                              std::chrono::nanoseconds timeout); };
@@ -707,6 +768,10 @@ using OnSetParametersCallbackHandle = node_interfaces::OnSetParametersCallbackHa
   rclcpp::node_interfaces::NodeWaitablesInterface::SharedPtr get_node_waitables_interface(); \
   size_t count_publishers(const std::string& topic) const; \
   size_t count_subscribers(const std::string& topic) const; \
+  std::vector<rclcpp::TopicEndpointInfo> get_publishers_info_by_topic( \
+      const std::string& topic_name, bool no_mangle = false) const; \
+  std::vector<rclcpp::TopicEndpointInfo> get_subscriptions_info_by_topic( \
+      const std::string& topic_name, bool no_mangle = false) const; \
   std::map<std::string, std::vector<std::string>> get_topic_names_and_types() const; \
   std::map<std::string, std::vector<std::string>> get_service_names_and_types() const; \
   std::vector<std::string> get_node_names() const; \

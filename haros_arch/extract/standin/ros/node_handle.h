@@ -172,6 +172,7 @@ public:
   template<class Handler, class Obj>
   Timer createTimer(Rate r, Handler h, Obj o, bool oneshot = false,
                     bool autostart = true) const;
+  Timer createTimer(TimerOptions& ops) const;
   Timer createWallTimer(Duration period, const TimerCallback& callback, bool oneshot = false,
                         bool autostart = true) const;
   template<class T>
@@ -216,6 +217,11 @@ public:
   bool getParamNames(std::vector<std::string>& keys) const;
   template<typename T>
   bool param(const std::string& param_name, T& param_val, const T& default_val) const;
+  // a value of a type whose header is missing (declared permissively: elevation_mapping's
+  // ``param("track_point_x", parameters.trackPoint_.x(), 0.0)``, a kindr position) read
+  // with a default of a real type: roscpp deduces T from both, which here differ
+  template<typename T, typename D>
+  bool param(const std::string& param_name, T& param_val, const D& default_val) const;
   template<typename T> T param(const std::string& param_name, const T& default_val) const;
 };
 }  // namespace ros

@@ -28,6 +28,7 @@ bool del(const std::string& key);
 bool search(const std::string& key, std::string& result);
 bool getParamNames(std::vector<std::string>& keys);
 template<typename T> bool param(const std::string& name, T& value, const T& default_val);
+template<typename T, typename D> bool param(const std::string& name, T& value, const D& default_val);
 template<typename T> T param(const std::string& name, const T& default_val);
 } }  // namespace ros::param
 #endif

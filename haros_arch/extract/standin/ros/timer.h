@@ -26,5 +26,17 @@ public:
 };
 typedef Timer WallTimer;
 typedef Timer SteadyTimer;
+class CallbackQueueInterface;
+// roscpp's timer_options.h (elevation_mapping's ``nodeHandle_.createTimer(timerOptions)``)
+struct TimerOptions {
+  TimerOptions();
+  TimerOptions(Duration period, const TimerCallback& callback, CallbackQueueInterface* queue,
+               bool oneshot = false, bool autostart = true);
+  Duration period;
+  TimerCallback callback;
+  CallbackQueueInterface* callback_queue;
+  bool oneshot;
+  bool autostart;
+};
 }  // namespace ros
 #endif

@@ -144,6 +144,7 @@ template<class T> struct tuple_size;
 template<class... T> struct tuple_size<tuple<T...>> { static constexpr size_t value = sizeof...(T); };
 template<class A, class B> struct tuple_size<pair<A, B>> { static constexpr size_t value = 2; };
 template<class T> struct tuple_size<const T> { static constexpr size_t value = tuple_size<T>::value; };
+template<class T> constexpr size_t tuple_size_v = tuple_size<T>::value;
 template<size_t I, class T> struct tuple_element;
 template<size_t I, class H, class... R> struct tuple_element<I, tuple<H, R...>>
     : tuple_element<I - 1, tuple<R...>> {};
@@ -171,6 +172,34 @@ template<class T> struct hash { size_t operator()(const T& v) const; };
 template<class T> struct less { bool operator()(const T& a, const T& b) const; };
 template<class T> struct greater { bool operator()(const T& a, const T& b) const; };
 template<class T> struct equal_to { bool operator()(const T& a, const T& b) const; };
+// arithmetic function objects (``std::plus<>{}`` as a reduction), invoke_result,
+// apply, as_const, and reverse_iterator as a class template (C++14 / 17)
+template<class T = void> struct plus {
+  template<class A, class B> auto operator()(const A& a, const B& b) const -> decltype(a + b); };
+template<class T = void> struct minus {
+  template<class A, class B> auto operator()(const A& a, const B& b) const -> decltype(a - b); };
+template<class T = void> struct multiplies {
+  template<class A, class B> auto operator()(const A& a, const B& b) const -> decltype(a * b); };
+template<class T = void> struct divides {
+  template<class A, class B> auto operator()(const A& a, const B& b) const -> decltype(a / b); };
+template<class F, class... A> struct invoke_result {
+  typedef decltype(declval<F>()(declval<A>()...)) type; };
+template<class F, class... A> using invoke_result_t = typename invoke_result<F, A...>::type;
+template<class F, class... A> struct is_invocable {
+  template<class G> static auto test(int) -> decltype(declval<G>()(declval<A>()...), true_type());
+  template<class G> static false_type test(...);
+  static constexpr bool value = decltype(test<F>(0))::value;
+};
+template<class F, class... A> constexpr bool is_invocable_v = is_invocable<F, A...>::value;
+template<class F, class T> decltype(auto) apply(F&& f, T&& t);
+template<class T> const T& as_const(T& t) noexcept;
+template<class It> struct reverse_iterator {
+  reverse_iterator(); explicit reverse_iterator(It it);
+  decltype(auto) operator*() const; reverse_iterator& operator++(); reverse_iterator operator++(int);
+  reverse_iterator& operator--(); It base() const;
+  bool operator==(const reverse_iterator& o) const; bool operator!=(const reverse_iterator& o) const;
+};
+template<class It> reverse_iterator<It> make_reverse_iterator(It it);
 template<class T> class allocator {
 public:
   typedef T value_type;
@@ -603,6 +632,15 @@ template<class It, class P> It find_if_not(It first, It last, P pred);
 template<class It, class P> bool none_of(It first, It last, P pred);
 template<class It> It unique(It first, It last);
 template<class It> void stable_sort(It first, It last);
+template<class It> void nth_element(It first, It nth, It last);
+template<class It, class C> void nth_element(It first, It nth, It last, C compare);
+template<class It> void partial_sort(It first, It middle, It last);
+template<class It, class C> void partial_sort(It first, It middle, It last, C compare);
+template<class It, class O> O partial_sum(It first, It last, O out);
+template<class It, class O, class Op> O partial_sum(It first, It last, O out, Op op);
+template<class It, class O> O inclusive_scan(It first, It last, O out);
+template<class It, class O, class T> O exclusive_scan(It first, It last, O out, T init);
+template<class It, class O> O adjacent_difference(It first, It last, O out);
 template<class It, class C> void stable_sort(It first, It last, C compare);
 template<class It> void reverse(It first, It last);
 template<class It> It min_element(It first, It last);
@@ -616,6 +654,11 @@ template<class It, class P> bool any_of(It first, It last, P pred);
 template<class It, class P> bool all_of(It first, It last, P pred);
 template<class It, class T> T accumulate(It first, It last, T init);
 template<class It, class T, class Op> T accumulate(It first, It last, T init, Op op);
+template<class It> auto reduce(It first, It last) -> typename decay<decltype(*first)>::type;
+template<class It, class T> T reduce(It first, It last, T init);
+template<class It, class T, class Op> T reduce(It first, It last, T init, Op op);
+template<class It, class T, class R, class U>
+T transform_reduce(It first, It last, T init, R reduce, U transform);
 template<class It, class T> void iota(It first, It last, T value);
 template<class It> It adjacent_find(It first, It last);
 template<class C> auto begin(C& c) -> decltype(c.begin());
@@ -1387,6 +1430,14 @@ template<class T, class... V> const T& get(const variant<V...>& v);
 template<class T, class... V> T* get_if(variant<V...>* v) noexcept;
 template<class F, class... V> auto visit(F&& f, V&&... v) -> decltype(f(0));
 struct monostate {};
+inline constexpr size_t variant_npos = static_cast<size_t>(-1);
+template<class T> struct variant_size;
+template<class... T> struct variant_size<variant<T...>> {
+  static constexpr size_t value = sizeof...(T); };
+template<class T> constexpr size_t variant_size_v = variant_size<T>::value;
+template<size_t I, class... V> auto& get(variant<V...>& v);
+template<size_t I, class... V> const auto& get(const variant<V...>& v);
+class bad_variant_access : public exception {};
 // <any>
 class bad_any_cast : public bad_cast {};
 class any {

@@ -2,7 +2,8 @@
 // plugins and servers outside navigation2 use (declarations only; every nav2_util/...
 // header stands in as this one, read only when the workspace has no nav2_util package,
 // headers.FALLBACK_UMBRELLAS). Its ROS calls are API rows (api.NAV2): the parameter
-// helpers declare on the node they are given; SimpleActionServer serves its action.
+// helpers declare on the node they are given; SimpleActionServer serves its action,
+// ServiceClient is a client of its service.
 // Classes of nav2_util that make calls the rows do not describe (TwistPublisher,
 // OdomSmoother, ...) are left out: the parse declares them as unknown names, and a node
 // given to one is partial.
@@ -195,6 +196,25 @@ public:
   void succeeded_current(typename std::shared_ptr<typename ActionT::Result> result =
                            std::make_shared<typename ActionT::Result>());
   void publish_feedback(typename std::shared_ptr<typename ActionT::Feedback> feedback);
+};
+
+// service_client.hpp: a client of ServiceT named ``service_name`` on the node given
+// (API row); Jazzy adds use_internal_executor
+template<class ServiceT, typename NodeT = rclcpp::Node::SharedPtr>
+class ServiceClient {
+public:
+  using RequestType = typename ServiceT::Request;
+  using ResponseType = typename ServiceT::Response;
+  using SharedPtr = std::shared_ptr<ServiceClient<ServiceT, NodeT>>;
+  explicit ServiceClient(const std::string& service_name, const NodeT& provided_node,
+                         bool use_internal_executor = false);
+  typename ResponseType::SharedPtr invoke(
+    typename RequestType::SharedPtr& request,
+    const std::chrono::nanoseconds timeout = std::chrono::nanoseconds(-1));
+  bool invoke(typename RequestType::SharedPtr& request,
+              typename ResponseType::SharedPtr& response);
+  bool wait_for_service(const std::chrono::nanoseconds timeout = std::chrono::nanoseconds::max());
+  std::string getServiceName();
 };
 
 }  // namespace nav2_util
