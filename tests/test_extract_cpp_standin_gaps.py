@@ -8,7 +8,8 @@ is_zero, mavros' maxDatagramSize, polled_camera's getTopic, OpenCV's version mac
 urg_node's ROS 1 bond::Bond; tf2_ros' lookupTransform result as a message, ROS 1 and 2;
 humble image_view's HighGUI windows and message_filters subscription, turtlebot3_node's
 parameter events, ros2_controllers' Duration == and std::optional{value}; wiimote's
-ROS 1 publisher compared with nullptr, ros::master's topic list).
+ROS 1 publisher compared with nullptr, ros::master's topic list; MoveIt 1's
+kinematics plugin loader's std::stringstream state and std::ws).
 Each parses with no error and keeps its calls. The sources are
 fixtures/cpp/standin_gaps."""
 
@@ -480,6 +481,45 @@ def test_ros1_controllers_and_robot_hw_of_installed_ros_control(write_tree) -> N
     assert [(c.kind, c.name) for c in result.calls] == [
         ("read", "?/arm_id"), ("subscribe", "?/command"), ("read", "?/joint"),
         ("read", "?/robot_ip")]
+
+
+STREAM_WORDS = """\
+#include <ros/ros.h>
+#include <sstream>
+#include <string>
+#include <vector>
+
+// MoveIt 1's kinematics_plugin_loader.cpp:316-327: a parameter's words read from a
+// std::stringstream, tested with good() and eof(), spaces skipped with std::ws
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "loader");
+  ros::NodeHandle nh("~");
+  std::string solvers;
+  if (nh.getParam("solvers", solvers)) {
+    std::stringstream ss(solvers);
+    std::vector<std::string> names;
+    while (ss.good() && !ss.eof()) {
+      std::string solver;
+      ss >> solver >> std::ws;
+      names.push_back(solver);
+      nh.param("timeout_" + solver, 0.1);
+    }
+    if (!ss || ss.fail())
+      return 1;
+  }
+  return 0;
+}
+"""
+
+
+def test_ros1_stringstream_state_and_ws(write_tree) -> None:
+    """A stream that reads and writes has one state (basic_ios'): ``ss.good()`` on a
+    std::stringstream is no ambiguity, and ``std::ws`` skips white space; the C++ errors
+    these gave hid the reads of the loop (MoveIt's kinematics solver parameters)."""
+    result = _extract(write_tree, STREAM_WORDS, "catkin")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("read", "~solvers"), ("read", "~timeout_?")]
 
 
 def test_ros2_cpp17_parallel_algorithms_and_utilities(write_tree) -> None:

@@ -441,3 +441,55 @@ def test_a_spec_deduced_from_the_type_of_the_member_given(ws: Workspace) -> None
         ("publish", "/api/other", "std_msgs/msg/String", node, 11),
     ]
     assert not [d for d in result.diagnostics if d.code == "CPP_DYNAMIC_NAME"]
+
+
+MONITOR = """\
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+#include <string>
+
+// MoveIt 1's PlanningSceneMonitor (planning_scene_monitor.h:264-265, .cpp:333 and its
+// reconfigure callback): a method whose topic parameter defaults to a class constant,
+// called with that default
+class Monitor {
+public:
+  static const std::string DEFAULT_TOPIC;
+  Monitor() : nh_("~") {}
+  void start(int type, const std::string& topic = DEFAULT_TOPIC);
+  void reconfigure(bool on) {
+    if (on)
+      start(1);
+  }
+private:
+  ros::NodeHandle nh_;
+  ros::Publisher pub_;
+};
+const std::string Monitor::DEFAULT_TOPIC = "monitored";
+
+void Monitor::start(int type, const std::string& topic) {
+  pub_ = nh_.advertise<std_msgs::String>(topic, 100, false);
+}
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "monitor");
+  Monitor m;
+  m.reconfigure(true);
+  m.start(2, "given");
+  ros::spin();
+}
+"""
+
+
+def test_a_wrapper_called_with_its_name_left_to_the_default(write_tree) -> None:
+    """A wrapper's call that leaves the name parameter to its default passes the
+    default: it is a call of that name, not no call at all (the call inside the wrapper
+    is not reported on its own, so it used to be lost)."""
+    from tests.conftest import package_xml
+
+    root = write_tree({"pkg/package.xml": package_xml("pkg", "catkin"),
+                       "pkg/src/node.cpp": MONITOR})
+    result = extract_cpp([str(root / "pkg" / "src" / "node.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    assert sorted((c.kind, c.name, c.type) for c in result.calls) == [
+        ("publish", "~given", "std_msgs/String"),
+        ("publish", "~monitored", "std_msgs/String")]

@@ -173,6 +173,32 @@ def test_shipped_models_are_found(package, distro):
     assert found.distro == distro and found.source.get("commit")
 
 
+@pytest.mark.parametrize("distro, joint_states, monitored, limit", [
+    ("noetic", "?", "~?", "/?_planning/joint_limits/?/max_position"),
+    ("jazzy", "joint_states", "monitored_planning_scene",
+     "?_planning.joint_limits.?.max_position")])
+def test_shipped_move_group_names_its_planning_scene_monitor_topics(
+        distro, joint_states, monitored, limit):
+    """The overrides of moveit_ros_move_group (read in MoveIt's source) name the planning
+    scene monitor's topics: noetic's from MoveItCpp's options with the monitor's
+    defaults, jazzy's from its constants; both publish the monitored scene, which the
+    extraction misses, and read the joint limits as RobotModelLoader names them."""
+    found = Library().find("moveit_ros_move_group", distro)
+    assert found is not None
+    node = next(n for n in found.nodes if n.executable == "move_group")
+    calls = {(c.kind, c.name, c.name_default) for c in node.calls}
+    assert ("subscribe", joint_states, "joint_states" if distro == "noetic" else None) in calls
+    assert ("publish", monitored, "monitored_planning_scene" if distro == "noetic"
+            else None) in calls
+    assert ("read", limit, None) in calls
+    assert not [c for c in node.calls
+                if c.kind == "subscribe" and c.name == "?" and c.name_param is None]
+    # a capability makes no MoveItCpp option read: only move_group's main does
+    capability = next(n for n in found.nodes
+                      if n.executable == "move_group/MoveGroupGetPlanningSceneService")
+    assert [(c.kind, c.name) for c in capability.calls] == [("server", "get_planning_scene")]
+
+
 LISTENER = """
     import rclpy
     from sensor_msgs.msg import JointState

@@ -151,3 +151,77 @@ def test_a_configuration_that_is_no_yaml_is_said_and_rviz_keeps_its_model(
     assert [link.resource.name for link in rviz.links] == ["/tf"]
     (said,) = [d for d in config.diagnostics if d.code == "RVIZ_CONFIG_INVALID"]
     assert said.location.file.endswith("view.rviz") and said.location.line == 2
+
+
+MOVEIT1 = """\
+Visualization Manager:
+  Displays:
+    - Class: moveit_rviz_plugin/MotionPlanning
+      Enabled: true
+      Move Group Namespace: ""
+      Planned Path:
+        Trajectory Topic: move_group/display_planned_path
+      Planning Scene Topic: move_group/monitored_planning_scene
+      Robot Description: robot_description
+    - Class: moveit_rviz_plugin/Trajectory
+      Enabled: true
+      Robot Description: arm_description
+    - Class: rtabmap_rviz_plugins/Info
+      Enabled: true
+      Topic: /rtabmap/info
+  Tools:
+    - Class: nav2_rviz_plugins/GoalTool
+"""
+
+
+def test_moveit_displays_subscribe_to_what_their_properties_name(tmp_path: Path) -> None:
+    """MoveIt's motion planning display subscribes to its planning scene and planned
+    path topics, calls get_planning_scene in its move group namespace and reads the
+    robot description and its semantic part; what its planning frame does is not
+    listed, so rviz stays partial, saying so. The trajectory display takes its topic's
+    default when the file does not save it, and is whole in ROS 1."""
+    config = _graph(tmp_path, MOVEIT1, 1, [("/move_group/display_planned_path",
+                                            "moveit_msgs/DisplayTrajectory")])
+    rviz = next(n for n in config.nodes if n.name == "/rviz")
+    links = {(link.kind, link.resource.name, link.type) for link in rviz.links}
+    assert {("subscribe", "/move_group/monitored_planning_scene",
+             "moveit_msgs/PlanningScene"),
+            ("subscribe", "/move_group/display_planned_path",
+             "moveit_msgs/DisplayTrajectory"),
+            ("client", "/get_planning_scene", "moveit_msgs/GetPlanningScene"),
+            ("read", "/robot_description", "str"),
+            ("read", "/robot_description_semantic", "str"),
+            ("read", "/arm_description", "str"),
+            ("read", "/arm_description_semantic", "str"),
+            ("subscribe", "/rtabmap/info", "rtabmap_msgs/Info")} <= links
+    assert not any(kind == "publish" for kind, _, _ in links)  # nav2's goal tool: none
+    assert not rviz.is_complete
+    (reason,) = rviz.completeness_reasons
+    assert reason.startswith("display moveit_rviz_plugin/MotionPlanning of view.rviz: "
+                             "its planning frame's MoveGroupInterface")
+    path = config.topic("/move_group/display_planned_path")  # two displays subscribe
+    assert sorted(link.node.name for link in path.links) == ["/driver", "/rviz", "/rviz"]
+
+
+def test_ros2_moveit_trajectory_display_is_partial_for_its_description_topic(
+        tmp_path: Path) -> None:
+    text = """\
+Visualization Manager:
+  Displays:
+    - Class: moveit_rviz_plugin/Trajectory
+      Enabled: true
+      Trajectory Topic: /display_planned_path
+    - Class: moveit_rviz_plugin/PlanningScene
+      Enabled: true
+      Move Group Namespace: /arm
+"""
+    config = _graph(tmp_path, text, 2)
+    rviz = next(n for n in config.nodes if n.name == "/rviz")
+    links = {(link.kind, link.resource.name, link.type) for link in rviz.links}
+    assert {("subscribe", "/display_planned_path", "moveit_msgs/msg/DisplayTrajectory"),
+            ("subscribe", "/monitored_planning_scene", "moveit_msgs/msg/PlanningScene"),
+            ("client", "/arm/get_planning_scene", "moveit_msgs/srv/GetPlanningScene"),
+            } <= links
+    assert [r.partition(":")[0] for r in rviz.completeness_reasons] == [
+        "display moveit_rviz_plugin/Trajectory of view.rviz",
+        "display moveit_rviz_plugin/PlanningScene of view.rviz"]

@@ -167,3 +167,45 @@ def test_modelled_move_group_gets_capabilities_named_by_another_prefix(tmp_path)
     assert ("server", "/plan_kinematic_path") in _links(config)
     assert not [d for d in config.diagnostics if d.code.startswith("PLUGIN")]
     assert config.node("/move_group").completeness == "model"
+
+
+def test_ros1_move_group_hosts_its_capabilities_from_two_packages(tmp_path):
+    """MoveIt 1's move_group loads its default capabilities, those its ``~capabilities``
+    string adds, less ``~disable_capabilities``; its default pick and place capability
+    (``move_group/MoveGroupPickPlaceAction``) is moveit_ros_manipulation's, found
+    through the ``move_group`` prefix too."""
+    def capability(package: str, name: str, kind: str, topic: str, type_: str) -> dict:
+        return {"package": package, "executable": f"move_group/{name}", "kind": "plugin",
+                "plugin_class": f"move_group::{name}",
+                "calls": [{"kind": kind, "name": topic, "type": type_}]}
+    group = "moveit_ros_move_group"
+    move_group = _model(tmp_path / "move_group.json", group, [
+        {"package": group, "executable": "move_group",
+         "calls": [{"kind": "read", "name": "~capabilities", "type": "str"}]},
+        capability(group, "MoveGroupMoveAction", "action-server", "move_group",
+                   "moveit_msgs/MoveGroup"),
+        capability(group, "MoveGroupPlanService", "server", "plan_kinematic_path",
+                   "moveit_msgs/GetMotionPlan"),
+        capability(group, "Extra", "server", "extra", "std_srvs/Empty")], distro="noetic")
+    manipulation = _model(tmp_path / "manipulation.json", "moveit_ros_manipulation", [
+        capability("moveit_ros_manipulation", "MoveGroupPickPlaceAction", "action-server",
+                   "pickup", "moveit_msgs/Pickup")], distro="noetic")
+    decl = NodeDecl("/move_group", group, "move_group", ros_version=1)
+    launch = LaunchModel(nodes=[decl], params=[
+        ParamDecl("/move_group/capabilities", "move_group/Extra"),
+        ParamDecl("/move_group/disable_capabilities", "move_group/MoveGroupPlanService")])
+    attacher = Attacher(Library([move_group, manipulation], shipped=None), "noetic", [])
+    config = Configuration("c")
+    workspace = Workspace(root=str(tmp_path))
+    nodes = attacher.nodes_for(launch, workspace, {}, {}, config.diagnostics)
+    build(config, launch, workspace, nodes, attacher.plugin_models(launch, {}))
+    links = _links(config)
+    assert ("action-server", "/move_group") in links
+    assert ("action-server", "/pickup") in links
+    assert ("server", "/extra") in links
+    assert ("server", "/plan_kinematic_path") not in links
+    # the defaults no model holds here (kinematics, cartesian path, ...) are not found
+    missing = {d.message.split()[2] for d in config.diagnostics
+               if d.code == "PLUGIN_NOT_FOUND"}
+    assert "move_group/MoveGroupPickPlaceAction" not in missing
+    assert "move_group/MoveGroupKinematicsService" in missing

@@ -26,7 +26,7 @@ the parameter its ``Robot Description`` names.
 from __future__ import annotations
 
 import os
-from dataclasses import replace
+from dataclasses import dataclass, replace
 from typing import Any
 
 import yaml
@@ -77,6 +77,78 @@ _TOOLS: dict[str, tuple[str, str, str, str] | None] = {
                        "PoseWithCovarianceStamped"),
     "SetGoal": ("/move_base_simple/goal", "goal_pose", "geometry_msgs", "PoseStamped"),
     "PublishPoint": ("clicked_point", "clicked_point", "geometry_msgs", "PointStamped"),
+    # nav2_rviz_plugins' goal tool hands the pose to its Navigation 2 panel
+    # (goal_tool.cpp:44-49, GoalUpdater.setGoal), which sends the goal: it publishes nothing
+    "GoalTool": None,
+}
+
+
+@dataclass(frozen=True)
+class _Plugin:
+    """A display of a plugin package, known by its whole class name: the topics it
+    subscribes to, each named by a property (a path of property names, a sub-property
+    under its category) with its default (ROS 1, ROS 2) when the file does not save it,
+    and the message (package, name); with ``scene`` the planning scene service its
+    ``Move Group Namespace`` puts the name in; with ``description`` the parameter its
+    ``Robot Description`` names and that name with ``_semantic``; ``gaps`` what else it
+    does that is not listed (ROS 1, ROS 2; None: nothing), which leaves rviz partial."""
+
+    subscribes: tuple[tuple[tuple[str, ...], tuple[str, str], tuple[str, str]], ...] = ()
+    scene: bool = False
+    description: bool = False
+    gaps: tuple[str | None, str | None] = (None, None)
+
+
+# MoveIt's displays (moveit_ros_visualization; moveit noetic-devel 7c0343f0 and moveit2
+# jazzy 4d841063): the planning scene display subscribes to its "Planning Scene Topic"
+# (planning_scene_display.cpp:82 / :83, then startSceneMonitor at :382 / :404) and calls
+# get_planning_scene in its "Move Group Namespace" (:383-387 / :405-409, the PSM's
+# DEFAULT_PLANNING_SCENE_SERVICE); the trajectory visualisation subscribes to its
+# "Trajectory Topic" (trajectory_visualization.cpp:71, :287 / :80, :299), under the
+# category "Planned Path" in the motion planning display; the robot state display to its
+# "Robot State Topic" (robot_state_display.cpp:72, :300 / :73, :308). ROS 1's RDFLoader
+# reads the parameter "Robot Description" names and its "_semantic" (rdf_loader.cpp:67,
+# :82); ROS 2's reads them through SynchronizedStringParameter (rdf_loader.cpp:73-80),
+# which subscribes to a topic of that name when the parameter is empty
+# (synchronized_string_parameter.cpp:50-94): not listed.
+_ROS2_DESCRIPTION = ("its robot description comes from the parameter 'Robot Description' "
+                     "names, or from a topic of that name when the parameter is empty "
+                     "(moveit_ros_planning's SynchronizedStringParameter): not listed")
+_SCENE_MONITOR = ("its planning scene monitor loads the robot model with its kinematics "
+                  "solvers (plugins), whose parameter reads are not listed")
+_SCENE = (("Planning Scene Topic",), ("move_group/monitored_planning_scene",
+                                      "/monitored_planning_scene"),
+          ("moveit_msgs", "PlanningScene"))
+_TRAJECTORY = ("move_group/display_planned_path", "/display_planned_path")
+_DISPLAY_TRAJECTORY = ("moveit_msgs", "DisplayTrajectory")
+_PLUGINS: dict[str, _Plugin] = {
+    "moveit_rviz_plugin/PlanningScene": _Plugin(
+        (_SCENE,), scene=True, description=True, gaps=(_SCENE_MONITOR, _SCENE_MONITOR)),
+    "moveit_rviz_plugin/MotionPlanning": _Plugin(
+        (_SCENE, (("Planned Path", "Trajectory Topic"), _TRAJECTORY, _DISPLAY_TRAJECTORY)),
+        scene=True, description=True,
+        gaps=(("its planning frame's MoveGroupInterface, robot interaction markers and "
+               "remote-control topics (moveit_ros_planning_interface, "
+               "moveit_ros_robot_interaction) and " + _SCENE_MONITOR,) * 2)),
+    "moveit_rviz_plugin/Trajectory": _Plugin(
+        ((("Trajectory Topic",), _TRAJECTORY, _DISPLAY_TRAJECTORY),), description=True,
+        gaps=(None, _ROS2_DESCRIPTION)),
+    "moveit_rviz_plugin/RobotState": _Plugin(
+        ((("Robot State Topic",), ("display_robot_state", "display_robot_state"),
+          ("moveit_msgs", "DisplayRobotState")),), description=True,
+        gaps=(None, _ROS2_DESCRIPTION)),
+    # rtabmap_rviz_plugins (introlab/rtabmap_ros noetic-devel and ros2, aec4f91f): each a
+    # MessageFilterDisplay of one message on its "Topic" (InfoDisplay.h:40 / :47,
+    # MapGraphDisplay.h:56 / :62, MapCloudDisplay.h:76 / :103); the map cloud display
+    # also downloads the map through rtabmap's services (its "Download namespace",
+    # MapCloudDisplay.cpp:195; ROS 2 from a client node of its own, :100-101)
+    "rtabmap_rviz_plugins/Info": _Plugin(
+        ((("Topic",), ("", ""), ("rtabmap_msgs", "Info")),)),
+    "rtabmap_rviz_plugins/MapGraph": _Plugin(
+        ((("Topic",), ("", ""), ("rtabmap_msgs", "MapGraph")),)),
+    "rtabmap_rviz_plugins/MapCloud": _Plugin(
+        ((("Topic",), ("", ""), ("rtabmap_msgs", "MapData")),),
+        gaps=(("its map download services (its 'Download namespace') are not listed",) * 2)),
 }
 # panels of rviz itself, which make no ROS call
 _PANELS = {"Displays", "Selection", "Tool Properties", "Views", "Time", "Help"}
@@ -135,7 +207,8 @@ def with_displays(decl: NodeDecl, base: Node | None, workspace: Workspace,
         _config_call("subscribe", name, _type("tf2_msgs", "TFMessage", ros2), where)
         for name in ("/tf", "/tf_static")]
     unknown: list[str] = []
-    _displays(manager.get("Displays"), ros2, where, calls, unknown)
+    gaps: list[tuple[str, str]] = []  # what displays known in part do beyond their calls
+    _displays(manager.get("Displays"), ros2, where, calls, unknown, gaps)
     for tool in manager.get("Tools") or ():
         if isinstance(tool, dict):
             _tool(tool, ros2, where, calls, unknown)
@@ -148,7 +221,8 @@ def with_displays(decl: NodeDecl, base: Node | None, workspace: Workspace,
     kept = [c for c in (base.calls if base is not None else ())
             if (c.kind, c.name) not in own]
     reasons = [f"{what} of {os.path.basename(path)} is not known: it may subscribe or "
-               "publish anything" for what in dict.fromkeys(unknown)]
+               "publish anything" for what in dict.fromkeys(unknown)] + [
+        f"{what} of {os.path.basename(path)}: {why}" for what, why in dict.fromkeys(gaps)]
     node = replace(base, calls=[*kept, *calls]) if base is not None else Node(
         decl.package, decl.executable, "executable", "cpp", calls=calls,
         location=decl.location)
@@ -188,7 +262,7 @@ def _topic(value: Any) -> tuple[str | None, dict[str, Any] | None]:
 
 
 def _displays(displays: Any, ros2: bool, where: Any, calls: list[PrimitiveCall],
-              unknown: list[str]) -> None:
+              unknown: list[str], gaps: list[tuple[str, str]]) -> None:
     for display in displays or ():
         if not isinstance(display, dict) or display.get("Enabled") is False:
             continue
@@ -197,7 +271,13 @@ def _displays(displays: Any, ros2: bool, where: Any, calls: list[PrimitiveCall],
             continue
         kind = cls.rpartition("/")[2]
         if kind == "Group":
-            _displays(display.get("Displays"), ros2, where, calls, unknown)
+            _displays(display.get("Displays"), ros2, where, calls, unknown, gaps)
+            continue
+        if cls in _PLUGINS:
+            _plugin(display, _PLUGINS[cls], ros2, where, calls)
+            gap = _PLUGINS[cls].gaps[1 if ros2 else 0]
+            if gap is not None:
+                gaps.append((f"display {cls}", gap))
             continue
         if kind not in _DISPLAYS:
             unknown.append(f"display {cls}")
@@ -227,6 +307,30 @@ def _displays(displays: Any, ros2: bool, where: Any, calls: list[PrimitiveCall],
             info = name.rpartition("/")[0] + "/camera_info" if "/" in name else "camera_info"
             calls.append(_config_call("subscribe", info,
                                       _type("sensor_msgs", "CameraInfo", ros2), where))
+
+
+def _plugin(display: dict[str, Any], plugin: _Plugin, ros2: bool, where: Any,
+            calls: list[PrimitiveCall]) -> None:
+    """The calls of a display of ``_PLUGINS``: a property the file does not save has
+    its default."""
+    for path, default, message in plugin.subscribes:
+        value: Any = display
+        for key in path:
+            value = value.get(key) if isinstance(value, dict) else None
+        name, qos = _topic(value) if value is not None else (default[1 if ros2 else 0],
+                                                               None)
+        if name:
+            calls.append(_config_call("subscribe", name, _type(*message, ros2), where, qos))
+    if plugin.scene:
+        space = display.get("Move Group Namespace", "")
+        space = space.rstrip("/") + "/" if isinstance(space, str) and space else ""
+        service = "moveit_msgs/srv/GetPlanningScene" if ros2 else "moveit_msgs/GetPlanningScene"
+        calls.append(_config_call("client", space + "get_planning_scene", service, where))
+    if plugin.description:
+        param = display.get("Robot Description", "robot_description")
+        if isinstance(param, str) and param:
+            for name in (param, param + "_semantic"):
+                calls.append(_config_call("read", name, "str", where))
 
 
 def _markers(display: dict[str, Any], ros2: bool, where: Any,

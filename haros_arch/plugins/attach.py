@@ -370,7 +370,7 @@ def class_packages(cls: str) -> list[str]:
     first = cls.split("/", 1)[0] if "/" in cls else cls.split("::", 1)[0]
     if not first or first == cls:
         return []
-    return [first, LOOKUP_PACKAGES[first]] if first in LOOKUP_PACKAGES else [first]
+    return [first, *LOOKUP_PACKAGES.get(first, ())]
 
 
 def _given(choice: Choice, slot: Slot) -> str:

@@ -210,6 +210,26 @@ HOSTS: tuple[Host, ...] = (
                  "move_group/MoveGroupGetPlanningSceneService",
                  "move_group/ApplyPlanningSceneService", "move_group/ClearOctomapService")),
              disable="disable_capabilities"),)),
+    # MoveIt 1's move_group (moveit noetic-devel 7c0343f0, move_group.cpp:57-69
+    # DEFAULT_CAPABILITIES, :136-141 ``~capabilities`` split on spaces, :157-163
+    # ``~disable_capabilities``, :165-180 each loaded and initialised); a capability
+    # makes its calls on handles of move_group's process (move_group_capability.h:60,
+    # 97-98: ``~`` and the node's namespace). MoveGroupPickPlaceAction is
+    # moveit_ros_manipulation's (pick_place_capability_plugin_description.xml)
+    Host("moveit_ros_move_group", ("move_group",), 1, (
+        Slot("capabilities", None, ("moveit_ros_move_group",
+                                    "move_group::MoveGroupCapability"),
+             defaults=tuple((name, name) for name in (
+                 "move_group/MoveGroupCartesianPathService",
+                 "move_group/MoveGroupKinematicsService",
+                 "move_group/MoveGroupExecuteTrajectoryAction",
+                 "move_group/MoveGroupMoveAction", "move_group/MoveGroupPickPlaceAction",
+                 "move_group/MoveGroupPlanService",
+                 "move_group/MoveGroupQueryPlannersService",
+                 "move_group/MoveGroupStateValidationService",
+                 "move_group/MoveGroupGetPlanningSceneService",
+                 "move_group/ApplyPlanningSceneService", "move_group/ClearOctomapService")),
+             disable="disable_capabilities"),)),
     # mavros (mavros/src/lib/mavros.cpp, mavros_uas.cpp) loads every class its plugin
     # loader declares unless its lists say otherwise; ROS 1 plugins make their calls on
     # the mavros node through handles their code names (``~imu``); a ROS 2 plugin is a
@@ -252,10 +272,14 @@ EXTENDS: dict[str, str] = {
 
 
 # lookup-name prefixes that are not the package exporting the class (pluginlib's
-# convention is ``pkg/Name``): MoveIt's capabilities are ``move_group/...``, exported by
-# moveit_ros_move_group (default_capabilities_plugin_description.xml); perception_pcl's
+# convention is ``pkg/Name``), with the packages that do: MoveIt's capabilities are
+# ``move_group/...``, exported by moveit_ros_move_group
+# (default_capabilities_plugin_description.xml) and, MoveIt 1's pick and place, by
+# moveit_ros_manipulation (pick_place_capability_plugin_description.xml); perception_pcl's
 # nodelets are ``pcl/VoxelGrid``, ..., exported by pcl_ros (plugins/nodelet/*.xml)
-LOOKUP_PACKAGES: dict[str, str] = {"move_group": "moveit_ros_move_group", "pcl": "pcl_ros"}
+LOOKUP_PACKAGES: dict[str, tuple[str, ...]] = {
+    "move_group": ("moveit_ros_move_group", "moveit_ros_manipulation"),
+    "pcl": ("pcl_ros",)}
 
 
 def sources_of(cls: str, ros_version: int) -> Sources | None:

@@ -693,7 +693,10 @@ class Wrappers:
                 row = self._of_spec(row, call, wrapper) or dataclasses.replace(
                     row, fixed_name="?")
             elif row.name_arg >= len(args):
-                args = _with_defaults(call, args)  # ``limiter.init(nh)``: its default
+                # the name is a parameter the call leaves to its default (hector's
+                # ``limiter.init(nh)``; MoveIt's ``startPublishingPlanningScene(event)``,
+                # its topic defaulting to MONITORED_PLANNING_SCENE_TOPIC)
+                args = _with_defaults(call, args)
                 if row.name_arg >= len(args):
                     continue
             before, after = _bind(wrapper.before, bound), _bind(wrapper.after, bound)

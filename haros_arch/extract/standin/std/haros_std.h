@@ -1002,6 +1002,12 @@ public:
   iostate rdstate() const;
   void setstate(iostate state);
   bool bad() const;
+  // basic_ios' state, one for a stream that reads and writes (std::stringstream's
+  // ``ss.good()`` is no ambiguity between its input and output sides)
+  bool good() const;
+  bool fail() const;
+  bool eof() const;
+  explicit operator bool() const;
 };
 typedef ios_base ios;
 typedef long streamsize;
@@ -1028,9 +1034,6 @@ public:
   ostream& operator<<(ostream& (*manip)(ostream&));
   ostream& flush();
   ostream& write(const char* s, long n);
-  bool good() const;
-  bool fail() const;
-  explicit operator bool() const;
 };
 ostream& operator<<(ostream& os, char c);
 ostream& operator<<(ostream& os, const char* s);
@@ -1059,10 +1062,7 @@ public:
   istream& seekg(long off, ios_base::seekdir dir);
   long tellg();
   long gcount() const;
-  bool good() const;
-  bool fail() const;
-  bool eof() const;
-  explicit operator bool() const;
+  istream& operator>>(istream& (*manip)(istream&));
 };
 class iostream : public ostream, public istream {};
 // <iterator>'s stream iterators
@@ -1101,6 +1101,7 @@ public:
 };
 istream& getline(istream& is, string& s);
 istream& getline(istream& is, string& s, char delim);
+istream& ws(istream& is);
 ostream& endl(ostream& os);
 ostream& flush(ostream& os);
 ostream& fixed(ostream& os);
