@@ -628,3 +628,28 @@ def test_a_plugin_runs_the_classes_it_builds_of_another_package(write_tree) -> N
     assert node.sources == ["local/src/local.cpp", "costs/src/odometry.cpp"]
     assert sorted((c.kind, c.name) for c in node.calls) == [("subscribe", "odom")]
     assert node.completeness == "complete"
+
+
+def test_a_member_named_in_an_expression_is_no_definition(tmp_path) -> None:
+    # mavros' imu.cpp writes ``cond ? Eigen::Vector3d::Zero() : v) {``: no member of a
+    # Vector3d defined there, so a plugin holding a Vector3d does not run that file
+    from haros_arch.model.location import Location
+    from haros_arch.plugins.inherit import _defines
+
+    class Files:
+        root = str(tmp_path)
+
+        def location(self, path, line=0, column=0):
+            return Location(None, path, line, column)
+
+    (tmp_path / "a.cpp").write_text(
+        "namespace costs {\n"
+        "  Odometry::Odometry(const std::string& topic) : topic_(topic) {\n  }\n"
+        "  void Odometry::setTopic(const std::string& t)\n  {\n  }\n"
+        "  bool Grid::ready() const { return true; }\n"
+        "  void use(bool c) {\n"
+        "    if (c ? Eigen::Vector3d::Zero() : other) {\n    }\n"
+        "    Helper::call(x);\n"
+        "    return Maker::make(a) ;\n  }\n"
+        "}\n")
+    assert _defines("a.cpp", Files()) == {"Odometry", "Grid"}

@@ -341,16 +341,26 @@ def _built(classes: set[str], texts: list[str]) -> set[tuple[str, str | None]]:
     return found
 
 
-# ``C::member(params) const : initialisers {`` anywhere in a line: a member of ``C``
-# defined, indented or not (navigation's files define their classes' members inside an
-# indented ``namespace`` block); a call ``C::f(x);`` ends without a body
-_DEFINITION = re.compile(r"\b([A-Za-z_]\w*)\s*(?:<[^;{}()<>]*>)?\s*::\s*~?\w+\s*"
+# ``C::member(params) const {`` (``C::C(params) : initialisers {`` for a constructor) at
+# the start of a line after its indentation and return type: a member of ``C`` defined,
+# indented or not (navigation's files define their classes' members inside an indented
+# ``namespace`` block); a call ``C::f(x);`` ends without a body, and one inside an
+# expression (``v = c ? Eigen::Vector3d::Zero() : w; if (x) {``) starts no line
+_DEFINITION = re.compile(r"^[ \t]*(?:(?!return\b)[\w:<>,*&]+[ \t]+[*&]*)*?[*&]*"
+                         r"\b([A-Za-z_]\w*)\s*(?:<[^;{}()<>]*>)?\s*::\s*(~?\w+)\s*"
                          r"\([^;{}]*\)\s*(?:const\b\s*)?(?:noexcept\b\s*)?"
-                         r"(?::(?!:)[^;{]*)?\{")
+                         r"(:(?!:)[^;{]*)?\{", re.MULTILINE)
 
 
 def _defines(source: str, workspace: Files) -> set[str]:
     """The classes whose members ``source`` defines out of line (its code, comments
     blanked)."""
-    return remembered("defines", source, workspace, lambda: set(
-        _DEFINITION.findall(code_only(_text(source, workspace)))))
+    def read() -> set[str]:
+        found = set()
+        for match in _DEFINITION.finditer(code_only(_text(source, workspace))):
+            cls, member, initialisers = match.groups()
+            if initialisers is None or member == cls:
+                found.add(cls)
+        return found
+
+    return remembered("defines", source, workspace, read)
