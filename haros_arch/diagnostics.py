@@ -525,10 +525,13 @@ CATALOGUE: dict[str, Entry] = {
         "this one does not parse, so the config header it generates is not known."),
     "CPP_RECONFIGURE_PARTIAL": Entry(
         "info", "dynamic_reconfigure config {name}: some parameters are named at run time "
-        "(not literal in the .cfg); only the {count} literal ones are known",
+        "or added by a function not read (not literal in the .cfg); only the {count} "
+        "literal ones are known",
         "The server of this config reads and writes every parameter of the .cfg; those "
-        "added with a computed name are not known, so the node's reads under the "
-        "server's namespace stay partly unknown."),
+        "added with a computed name, or by a function the generator is handed to that "
+        "is neither in the .cfg nor in a module beside it or in a workspace package's "
+        "src/ folder, are not known, so the node's reads under the server's namespace "
+        "stay partly unknown."),
     "CPP_MESSAGE_UNKNOWN": Entry(
         "info", "no definition found for {header}; it was synthesised without fields",
         "The header names a message or service whose .msg / .srv file is neither in the "

@@ -555,3 +555,101 @@ def test_a_nodelet_runs_the_named_files_of_another_package_it_links(write_tree) 
     calls = sorted((c.kind, c.name) for c in node.calls)
     assert calls == [("publish", "~map/costmap"), ("read", "~map/update_rate")]
     assert node.completeness == "complete"
+
+
+def test_a_plugin_runs_the_classes_it_builds_of_another_package(write_tree) -> None:
+    # dwa_local_planner's DWAPlannerROS holds base_local_planner's OdometryHelperRos by
+    # value (its constructor subscribes to odom) and is handed move_base's costmap: the
+    # helper's file runs in the plugin, the costmap's (its builder's calls) does not
+    files = {key: value for key, value in ROS1.items() if not key.startswith("planner/")}
+    files["costs/CMakeLists.txt"] = files["costs/CMakeLists.txt"].replace(
+        "src/unused.cpp", "src/unused.cpp src/odometry.cpp")
+    files["costs/include/costs/odometry.h"] = """
+        #include <string>
+        #include <ros/ros.h>
+        namespace costs {
+        class Odometry {
+        public:
+          explicit Odometry(const std::string& topic);
+          void setTopic(const std::string& topic);
+        private:
+          ros::Subscriber sub_;
+        };
+        }
+        """
+    files["costs/src/odometry.cpp"] = """
+        #include <costs/odometry.h>
+        #include <std_msgs/String.h>
+        namespace costs {
+          void received(const std_msgs::String::ConstPtr& message) {}
+
+          Odometry::Odometry(const std::string& topic) { setTopic(topic); }
+
+          void Odometry::setTopic(const std::string& topic) {
+            ros::NodeHandle nh;
+            sub_ = nh.subscribe<std_msgs::String>(topic, 1, received);
+          }
+        }
+        """
+    files["local/package.xml"] = package_xml("local", "catkin").replace(
+        "</export>", "<nav_core plugin=\"${prefix}/plugins.xml\"/></export>")
+    files["local/plugins.xml"] = (
+        '<library path="lib/liblocal">\n'
+        '  <class name="local/Local" type="local::Local"'
+        ' base_class_type="nav_core::BaseLocalPlanner"/>\n'
+        "</library>\n")
+    files["local/CMakeLists.txt"] = """
+        cmake_minimum_required(VERSION 3.0.2)
+        project(local)
+        find_package(catkin REQUIRED COMPONENTS roscpp nav_core costs)
+        catkin_package()
+        add_library(local src/local.cpp)
+        target_link_libraries(local ${catkin_LIBRARIES})
+        """
+    files["local/src/local.cpp"] = """
+        #include <ros/ros.h>
+        #include <nav_core/base_local_planner.h>
+        #include <pluginlib/class_list_macros.h>
+        #include <costs/map_ros.h>
+        #include <costs/odometry.h>
+        namespace local {
+        class Local : public nav_core::BaseLocalPlanner {
+        public:
+          Local() : odometry_("odom") {}
+          void initialize(std::string name, costs::MapROS* costmap) { costmap_ = costmap; }
+        private:
+          costs::Odometry odometry_;
+          costs::MapROS* costmap_;
+        };
+        }
+        PLUGINLIB_EXPORT_CLASS(local::Local, nav_core::BaseLocalPlanner)
+        """
+    node, _ = _node(write_tree, files, "local", "local/Local")
+    assert node.sources == ["local/src/local.cpp", "costs/src/odometry.cpp"]
+    assert sorted((c.kind, c.name) for c in node.calls) == [("subscribe", "odom")]
+    assert node.completeness == "complete"
+
+
+def test_a_member_named_in_an_expression_is_no_definition(tmp_path) -> None:
+    # mavros' imu.cpp writes ``cond ? Eigen::Vector3d::Zero() : v) {``: no member of a
+    # Vector3d defined there, so a plugin holding a Vector3d does not run that file
+    from haros_arch.model.location import Location
+    from haros_arch.plugins.inherit import _defines
+
+    class Files:
+        root = str(tmp_path)
+
+        def location(self, path, line=0, column=0):
+            return Location(None, path, line, column)
+
+    (tmp_path / "a.cpp").write_text(
+        "namespace costs {\n"
+        "  Odometry::Odometry(const std::string& topic) : topic_(topic) {\n  }\n"
+        "  void Odometry::setTopic(const std::string& t)\n  {\n  }\n"
+        "  bool Grid::ready() const { return true; }\n"
+        "  void use(bool c) {\n"
+        "    if (c ? Eigen::Vector3d::Zero() : other) {\n    }\n"
+        "    Helper::call(x);\n"
+        "    return Maker::make(a) ;\n  }\n"
+        "}\n")
+    assert _defines("a.cpp", Files()) == {"Odometry", "Grid"}

@@ -23,6 +23,18 @@ def test_node_hint_completes_an_unknown_name_and_adds_calls():
         ("publish", "chatter", "hint"), ("read", "~rate", "hint")]
 
 
+
+def test_a_getter_hint_keeps_the_codes_default():
+    # noetic dwa_local_planner's override: LatchedStopRotateController reads
+    # latch_xy_goal_tolerance with a default (false); a read with a default is never
+    # "read but not set", so the hint must say it has one
+    planner = node("p", "planner")
+    apply_node_hints({planner.name: planner}, {"p/planner": {"getters": [
+        {"parameter": "~latch", "param_type": "bool", "default": False},
+        {"parameter": "~other", "param_type": "bool"}]}}, WHERE)
+    assert [(c.name, c.has_default, c.default) for c in planner.calls] == [
+        ("~latch", True, False), ("~other", False, None)]
+
 def test_node_hint_for_a_node_nobody_builds_creates_it():
     nodes = {}
     apply_node_hints(nodes, {"drivers/laser": {

@@ -88,14 +88,13 @@ def test_node_types_no_package_lists_read_back_whole():
     model, data, again = saved_and_reloaded(FIXTURES / "cache_readback/project.yaml")
     listed = {id(n) for n in model.nodes}
     modelled = [i for c in model.configurations for i in c.nodes if id(i.node) not in listed]
-    # amcl's is its package's; move_base's host instance makes the calls of a partial
-    # plugin (noetic DWAPlannerROS builds classes of base_local_planner it does not
-    # read, CPP_CLASS_UNSEEN), so it has a partial node type of its own
-    assert [i.name for i in modelled] == ["/move_base", "/spawner"]
-    assert len(data["configurations"][0]["node_types"]) == 2
+    # amcl's and move_base's are their packages' (move_base's plugins, noetic NavfnROS
+    # and DWAPlannerROS, are modelled whole: DWAPlannerROS's model reads the classes of
+    # base_local_planner it builds), the spawner's its arguments'
+    assert [i.name for i in modelled] == ["/spawner"]
+    assert len(data["configurations"][0]["node_types"]) == 1
     host = next(i.node for i in model.configurations[0].nodes if i.name == "/move_base")
-    assert host.completeness == "partial" and any(
-        "MapGridVisualizer" in r for r in host.completeness_reasons), host.completeness_reasons
+    assert host.completeness == "model" and not host.completeness_reasons
     for before, after in zip(model.configurations, again.configurations, strict=True):
         for one, other in zip(before.nodes, after.nodes, strict=True):
             assert (one.node.name, one.node.language, one.node.model, one.node.calls,

@@ -118,6 +118,31 @@ def test_a_plugin_not_in_the_workspace_is_a_diagnostic_and_only_that_instance_is
     assert other.node is move_base and partial.node is not move_base
 
 
+
+def test_a_host_whose_plugin_parameter_a_file_not_read_may_set_is_partial():
+    # yujin_ocs' move_base_with_vel_smoother.launch loads turtlebot_navigation's
+    # move_base_params.yaml, a package not in the workspace: /move_base/? may set
+    # base_local_planner (turtlebot's sets dwa_local_planner/DWAPlannerROS), so the
+    # default TrajectoryPlannerROS is only one possibility and move_base is not whole
+    move_base = Node("move_base", "move_base", calls=[call("publish", "~goal")])
+    defaults = [plugin("navfn", "navfn/NavfnROS", "navfn::NavfnROS"),
+                plugin("base_local_planner", "base_local_planner/TrajectoryPlannerROS",
+                       "base_local_planner::TrajectoryPlannerROS")]
+    unread = [ParamDecl(f"/a/move_base/{UNKNOWN_MARK}", None, location=where(4)),
+              ParamDecl(f"/b/move_base/global_costmap/{UNKNOWN_MARK}", None,
+                        location=where(5))]
+    params = [*unread, *no_layers("/a/move_base", "global_costmap", "local_costmap"),
+              *no_layers("/b/move_base", "global_costmap", "local_costmap")]
+    config = graph([NodeDecl("/a/move_base", "move_base", "move_base", "/a/"),
+                    NodeDecl("/b/move_base", "move_base", "move_base", "/b/")],
+                   params, [move_base, *defaults])
+    partial, other = config.node("/a/move_base"), config.node("/b/move_base")
+    assert partial.completeness == "partial"
+    assert any("/a/move_base/base_local_planner" in r and "nav.launch:4" in r
+               for r in partial.completeness_reasons), partial.completeness_reasons
+    # a file that can only set a costmap's parameters chooses none of move_base's
+    assert other.completeness == "complete"
+
 def test_a_modelled_host_whose_plugin_is_not_known_is_partial():
     # noetic move_base from its interface model (completeness "model") on Fetch loads
     # base_local_planner/TrajectoryPlannerROS, which no analysed package exports: its

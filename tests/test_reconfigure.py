@@ -115,10 +115,14 @@ def test_a_parameter_the_cfg_does_not_declare_is_not_read(write_tree) -> None:
     report = _check(_tree(write_tree, complete, LAUNCH))
     findings = [(f["rule"], f["entities"]) for f in report["findings"]
                 if f["rule"].startswith("parameter-set-not-read")]
-    # right under the server's namespace its reads decide; deeper, code out of sight
-    # may read it (move_base's server on ~ and its costmaps' parameters)
-    assert findings == [("parameter-set-not-read", ["parameter:/tracker/use_filtre"]),
-                        ("parameter-set-not-read-undecided", ["node:/tracker"])]
+    # right under the server's namespace its reads decide; deeper, the server reads
+    # nothing (the generated code reads its config's fields under its handle's
+    # namespace alone) and the node's code, read whole, reads no planner/rate either
+    # (move_base's server on ~ and its costmaps' parameters: costmap_2d's code, in
+    # move_base's model, reads those)
+    assert sorted(findings) == [
+        ("parameter-set-not-read", ["parameter:/tracker/planner/rate"]),
+        ("parameter-set-not-read", ["parameter:/tracker/use_filtre"])]
 
 
 def test_a_partial_cfg_leaves_its_namespace_undecided(write_tree) -> None:
@@ -184,3 +188,53 @@ def test_a_config_named_in_lowercase_is_synthesised(write_tree) -> None:
     assert ("read", "~yaml_cfg_file") in calls and ("publish", "output") in calls
     codes = [d.code for d in result.diagnostics]
     assert "CPP_INCLUDE_MISSING" not in codes and "CPP_PARSE_ERROR" not in codes
+
+
+def test_a_generator_handed_to_a_workspace_module_gets_its_parameters(write_tree) -> None:
+    # navigation's DWAPlanner.cfg hands its generator to base_local_planner's
+    # add_generic_localplanner_params (src/local_planner_limits/__init__.py, installed by
+    # catkin_python_setup): its adds are the config's (max_vel_x, xy_goal_tolerance, ...)
+    cfg = _fixture("Tracker.cfg").replace(
+        'for axis in ["x", "y"]:\n    gen.add("offset_" + axis, double_t, 0, "an offset", 0.0)\n',
+        "add_limits(gen)\n").replace(
+        "gen = ParameterGenerator()",
+        "from limits_params import add_limits\ngen = ParameterGenerator()")
+    assert "add_limits(gen)" in cfg and "import add_limits" in cfg
+    root = _tree(write_tree, cfg)
+    limits = {
+        "limits/package.xml": package_xml("limits", "catkin"),
+        "limits/src/limits_params/__init__.py": (
+            "from dynamic_reconfigure.parameter_generator_catkin import double_t\n\n\n"
+            "def add_limits(gen):\n"
+            "    gen.add('max_vel_x', double_t, 0, 'the fastest', 0.55)\n"
+            "    gen.add('offset_x', double_t, 0, 'an offset', 0.0)\n")}
+    write_tree(limits)
+    result = extract_cpp([str(root / "tracker" / "src" / "tracker.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    reads = [(c.name, c.default) for c in result.calls if c.kind == "read"]
+    assert ("~max_vel_x", 0.55) in reads and ("~offset_x", 0.0) in reads
+    assert not any("?" in name for name, _ in reads)
+    codes = [d.code for d in result.diagnostics]
+    assert "CPP_RECONFIGURE_PARTIAL" not in codes and "CPP_PARSE_ERROR" not in codes
+
+
+def test_a_generator_handed_on_again_or_to_an_unknown_function_stays_partial(tmp_path
+                                                                            ) -> None:
+    module = tmp_path / "helpers.py"
+    module.write_text("def add_on(gen):\n    more(gen)\n\n\n"
+                      "def add_one(group):\n    group.add('a', double_t, 0, 'a', 1.0)\n")
+    head = ("from helpers import add_on, add_one\ngen = ParameterGenerator()\n")
+    tail = "exit(gen.generate('p', 'n', 'Name'))\n"
+
+    def read(call: str) -> reconfigure.Config:
+        config, _ = reconfigure.read_cfg("Name.cfg", head + call + tail, "p",
+                                         lambda name: str(module) if name == "helpers"
+                                         else None)
+        assert config is not None
+        return config
+
+    handed_on = read("add_on(gen)\n")
+    assert handed_on.partial and handed_on.parameters == []
+    followed = read("add_one(group=gen)\n")
+    assert not followed.partial and followed.parameters == [("a", "double_t", 1.0)]
+    assert read("unknown(gen)\n").partial

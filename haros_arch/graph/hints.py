@@ -75,6 +75,10 @@ def _calls(owner: str, hints: Mapping[str, Any], where: Location,
                 queue_size=queue if isinstance(queue, int) else None,
                 latch=bool(entry.get("latch", entry.get("latched", False))),
                 conditions=_conditions(entry.get("conditions"), where),
+                # a read's default in code (``default: false``): a read with one is
+                # never "read but not set"
+                has_default=kind == "read" and "default" in entry,
+                default=entry.get("default") if kind == "read" else None,
                 location=_location(entry.get("location"), where), origin="hint"))
     return calls
 

@@ -28,6 +28,7 @@ from __future__ import annotations
 import copy
 import fnmatch
 import os
+import re
 import shlex
 from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, replace
@@ -48,7 +49,7 @@ from ..launch.ros2.naming import (
 )
 from ..model.conditions import Condition
 from ..model.location import Location
-from ..model.rosname import namespace_of, resolve
+from ..model.rosname import namespace_of, pattern_for, resolve
 from ..model.runtime import Configuration, NodeInstance, Parameter, Resource
 from ..model.source import Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK
@@ -138,6 +139,9 @@ def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance
                     choices = list(_exported(instance, slot, params, nodes))
                 else:
                     choices = list(_chosen(instance, slot, params))
+                    unseen = _unseen_choice(instance, slot, params)
+                    if unseen is not None:
+                        own_partial(instance, unseen, owned)
                 for choice in choices:
                     out.extend(_load(choice, slot, instance, index, workspace, models,
                                      params, config, owned, made, loaded, decl))
@@ -440,6 +444,30 @@ def _parameter(params: Params, name: str) -> Parameter | None:
     found = params.by_name.get((Parameter, name))
     if isinstance(found, Parameter) and found.set_by_launch:
         return found
+    return None
+
+
+def _unseen_choice(instance: NodeInstance, slot: Slot, params: Params) -> str | None:
+    """Why the plugins ``slot`` loads on ``instance`` are not known, when the
+    parameter that names them is not set as far as we see but a launch parameter not
+    known statically may be it (``/move_base/?`` of a parameter file that is not read:
+    it may name ``base_local_planner``, which would load another class than the
+    default); None otherwise."""
+    base = instance.name.rstrip("/") + "/"
+    written = slot.type_of if slot.names is None else slot.names
+    if not written or "{" in written:
+        return None
+    name = base + written
+    if _parameter(params, name) is not None:
+        return None
+    for (kind, full), each in params.by_name.items():
+        if kind is Parameter and UNKNOWN_MARK in full and isinstance(each, Parameter) and (
+            each.set_by_launch and re.match(pattern_for(full), name)
+        ):
+            where = each.launch_location
+            return (f"{name}, which names the plugins it loads, may be set by the launch "
+                    f"parameter {full} not known statically ({where.file}:{where.line}): "
+                    "they may be others than the defaults")
     return None
 
 

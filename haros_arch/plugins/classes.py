@@ -94,7 +94,8 @@ def plugin_classes(package: Package, workspace: Files, libraries: Mapping[str, L
     ``type``) and keeps its C++ type in ``plugin_class``. Classes nothing loads (rviz,
     rqt panels) are not nodes.
     """
-    from .inherit import inherited_sources  # it reads classes with this module's helpers
+    # they read classes with this module's helpers
+    from .inherit import built_sources, inherited_sources
 
     bases = plugin_bases()
     names = node_name_patterns()
@@ -141,6 +142,13 @@ def plugin_classes(package: Package, workspace: Files, libraries: Mapping[str, L
                     # of its package or of another
                     sources += inherited_sources(registered, sources, library.sources,
                                                  workspace, library.elsewhere)
+                    if kind == "plugin":
+                        # and the code of the classes it builds of other packages'
+                        # libraries it links (dwa_local_planner's members of
+                        # base_local_planner's classes), not of those it is given
+                        sources += [s for s in built_sources(sources, workspace,
+                                                             library.elsewhere)
+                                    if s not in sources]
                     if kind == "nodelet" and library.with_elsewhere is not None:
                         # and what it names of other packages' libraries it links:
                         # mrs_uav_managers' nodelets build mrs_lib's ParamLoader, whose

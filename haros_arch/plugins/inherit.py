@@ -26,6 +26,7 @@ from .classes import (
     _MEMBER,
     Files,
     _untemplated,
+    code_only,
     code_words,
     defined_in,
     derives_from,
@@ -265,3 +266,101 @@ def _plain(name: str) -> str:
 
 def _text(source: str, workspace: Files) -> str:
     return with_headers(source, workspace, 0)[0]
+
+
+MAX_BUILT_ROUNDS = 8  # classes built by classes built by the plugin, and so on
+
+
+def built_sources(own: Sequence[str], workspace: Files,
+                  elsewhere: Callable[[], list[list[str]]] | None = None) -> list[str]:
+    """The sources of other workspace packages' libraries (``elsewhere``, a list per
+    package) that define members of a class the code of ``own`` builds (``_built``: an
+    object of it held by value, a member or a local, or made by ``new`` /
+    ``make_shared`` / ``make_unique``), and of the bases of such a class; then what
+    those build in turn. The object's constructor and methods run in the plugin, on its
+    node and with the names it gives them: dwa_local_planner's ``DWAPlannerROS`` holds
+    base_local_planner's ``OdometryHelperRos`` (which subscribes to ``odom``),
+    ``LatchedStopRotateController`` and ``MapGridVisualizer`` as members. A class the
+    code is only given, by pointer or reference, is not: move_base hands every planner
+    the ``Costmap2DROS`` it built, whose calls are move_base's, not the planner's. Not a
+    file that defines a class which is a node of its own (a ROS 2 node class: its calls
+    are that node's); a file that names no ROS client library is followed for what it
+    builds, not kept (it makes no call)."""
+    groups = [[s for s in group if s not in own]
+              for group in (elsewhere() if elsewhere is not None else [])]
+    defining = {source: _defines(source, workspace)
+                for group in groups for source in group}
+    defining = {source: classes for source, classes in defining.items()
+                if classes and not node_classes(source, workspace)}
+    if not defining:
+        return []
+    files = list(own)
+    scanned: set[str] = set()
+    for _ in range(MAX_BUILT_ROUNDS):
+        texts = [code_only(text) for source in files if source not in scanned
+                 for text in with_headers(source, workspace, HEADER_DEPTH)]
+        scanned.update(files)
+        classes = {cls for found in defining.values() for cls in found}
+        added = False
+        for cls, space in _built(classes, texts):
+            before = len(files)
+            files.extend(s for s, defined in defining.items()
+                         if cls in defined and s not in files
+                         and _in_namespace(s, space, cls, workspace))
+            if len(files) > before:
+                chain(cls if space is None else f"{space}::{cls}", files, workspace,
+                      defining)
+                added = True
+        if not added:
+            break
+    return [s for s in files if s not in own and uses_ros(s, workspace)]
+
+
+def _built(classes: set[str], texts: list[str]) -> set[tuple[str, str | None]]:
+    """The classes of ``classes`` that ``texts`` (code, comments blanked) build, each
+    with the namespace it is written with (None when unqualified)."""
+    if not classes:
+        return set()
+    names = "|".join(re.escape(c) for c in sorted(classes, key=len, reverse=True))
+    qualified = rf"(?:::)?((?:\w+\s*::\s*)*)({names})\b"
+    pattern = re.compile(
+        # ``new ns::C(...)``, ``make_shared<ns::C>(...)``
+        rf"\bnew\s+{qualified}|\bmake_(?:shared|unique)\s*<\s*{qualified}"
+        # ``ns::C name;`` / ``ns::C name(args);`` / ``ns::C name = ...;`` starting a
+        # line: a member or a local held by value (not ``ns::C* p``, ``ns::C& r``)
+        rf"|^[ \t]*(?:(?:static|mutable|const)\s+)*{qualified}\s*(?:<[^;{{}}()]*>)?\s+"
+        rf"(?!const\b|operator\b)[A-Za-z_]\w*\s*[;({{=\[]", re.MULTILINE)
+    found: set[tuple[str, str | None]] = set()
+    for text in texts:
+        for match in pattern.finditer(text):
+            groups = match.groups()
+            for index in range(0, len(groups), 2):
+                if groups[index + 1]:
+                    space = _qualifier(groups[index] + groups[index + 1])
+                    found.add((groups[index + 1], space))
+    return found
+
+
+# ``C::member(params) const {`` (``C::C(params) : initialisers {`` for a constructor) at
+# the start of a line after its indentation and return type: a member of ``C`` defined,
+# indented or not (navigation's files define their classes' members inside an indented
+# ``namespace`` block); a call ``C::f(x);`` ends without a body, and one inside an
+# expression (``v = c ? Eigen::Vector3d::Zero() : w; if (x) {``) starts no line
+_DEFINITION = re.compile(r"^[ \t]*(?:(?!return\b)[\w:<>,*&]+[ \t]+[*&]*)*?[*&]*"
+                         r"\b([A-Za-z_]\w*)\s*(?:<[^;{}()<>]*>)?\s*::\s*(~?\w+)\s*"
+                         r"\([^;{}]*\)\s*(?:const\b\s*)?(?:noexcept\b\s*)?"
+                         r"(:(?!:)[^;{]*)?\{", re.MULTILINE)
+
+
+def _defines(source: str, workspace: Files) -> set[str]:
+    """The classes whose members ``source`` defines out of line (its code, comments
+    blanked)."""
+    def read() -> set[str]:
+        found = set()
+        for match in _DEFINITION.finditer(code_only(_text(source, workspace))):
+            cls, member, initialisers = match.groups()
+            if initialisers is None or member == cls:
+                found.add(cls)
+        return found
+
+    return remembered("defines", source, workspace, read)

@@ -50,8 +50,11 @@ class Known:
         # whose reads the extraction made from its .cfg (``extract.cpp.reconfigure``: at
         # the server's own place in the code) is read as they say for the parameters
         # right under its namespace (``reconfigured_read``); deeper ones stay undecided
-        # by it, as the code that reads them may be out of sight (move_base's server on
-        # ``~`` and its costmaps' parameters, read in costmap_2d's library)
+        # by it only while its node's interface is not wholly known, as the code that
+        # reads them may be out of sight (the generated server reads and sets its
+        # config's fields under its handle's namespace, never a name below: move_base's
+        # server on ``~`` reads none of its costmaps' parameters, costmap_2d's library
+        # does, which a complete model of move_base shows)
         self.reconfigured: dict[str, list[NodeInstance]] = {}
         self.reconfigured_read: dict[str, list[NodeInstance]] = {}
         self.reconfigured_unresolved: list[tuple[re.Pattern[str], NodeInstance]] = []
@@ -113,8 +116,10 @@ def reconfiguring(config: Configuration, parameter: Parameter,
     while "/" in name.rstrip("/"):
         name = name.rstrip("/").rsplit("/", 1)[0]
         found.extend(known.reconfigured.get(name, ()))
-        if deeper:
-            found.extend(known.reconfigured_read.get(name, ()))
+        if deeper:  # a server's own reads stop at its namespace: deeper, the node's
+            # other code reads, which only an interface not wholly known may hide
+            found.extend(node for node in known.reconfigured_read.get(name, ())
+                         if not node.is_complete)
         deeper = True
     found.extend(node for pattern, node in known.reconfigured_unresolved
                  if pattern.match(parameter.name))

@@ -553,7 +553,7 @@ class IncludeSetup:
         if found is None:
             folder = self.workspace.find(package)
             found, problems = ({}, []) if folder is None else reconfigure.configs(
-                folder, package)
+                folder, package, reconfigure.workspace_modules(self.workspace))
             self._configs[package] = found
             self.diagnostics.extend(problems)
         config = found.get(name)

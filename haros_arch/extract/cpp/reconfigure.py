@@ -26,6 +26,7 @@ import ast
 import json
 import os
 import re
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -92,9 +93,21 @@ def _argument(call: ast.Call, index: int, keyword: str) -> ast.AST | None:
     return next((k.value for k in call.keywords if k.arg == keyword), None)
 
 
-def read_cfg(path: str, text: str, package: str) -> tuple[Config | None, list[Diagnostic]]:
+# a function a .cfg hands its generator to: read with ``ast`` from the module it is
+# imported from (``from local_planner_limits import add_generic_localplanner_params``)
+MAX_MODULE_BYTES = 1 << 20
+Modules = Callable[[str], "str | None"]
+
+
+def read_cfg(path: str, text: str, package: str, modules: Modules | None = None
+             ) -> tuple[Config | None, list[Diagnostic]]:
     """The config a ``.cfg`` generates; None when it generates none that we can name
-    (no ``generate(package, node, "Name")`` with a literal name)."""
+    (no ``generate(package, node, "Name")`` with a literal name). A generator handed to
+    a function (``add_generic_localplanner_params(gen)``) gets the parameters that
+    function's body adds on the parameter it is passed as, when the function is
+    defined in the .cfg or in a module ``modules`` finds (module name to file: the
+    .cfg's folder, a workspace package's Python modules); else the config is
+    partial."""
     try:
         tree = ast.parse(text, filename=path)
     except (SyntaxError, ValueError, MemoryError, RecursionError) as error:
@@ -103,41 +116,28 @@ def read_cfg(path: str, text: str, package: str) -> tuple[Config | None, list[Di
                                 detail=str(getattr(error, "msg", error)))]
     name: str | None = None
     config = Config(package, "", path)
-    # the generator and its groups: handed to a function we do not read (navigation's
-    # ``add_generic_localplanner_params(gen)``, imported from another module), they may
-    # get parameters we cannot see
+    # the generator and its groups: handed to a function we cannot read, they may get
+    # parameters we cannot see
     generators = {target.id for node in ast.walk(tree) if isinstance(node, ast.Assign)
                   and isinstance(node.value, ast.Call) and _makes_generator(node.value)
                   for target in node.targets if isinstance(target, ast.Name)}
+    functions = _functions(tree, modules)
     for node in ast.walk(tree):
-        if isinstance(node, ast.Call) and any(
-            isinstance(arg, ast.Name) and arg.id in generators
-            for arg in [*node.args, *(k.value for k in node.keywords)]
-        ):
-            config.partial = True
+        if isinstance(node, ast.Call):
+            handed = _handed(node, generators)
+            if handed is not None:
+                body = functions.get(node.func.id) if isinstance(node.func, ast.Name) \
+                    else None
+                if body is None or not _take_function(body, handed, config):
+                    config.partial = True
         if not isinstance(node, ast.Call) or not isinstance(node.func, ast.Attribute):
             continue
-        method = node.func.attr
-        if method == "generate":
+        if node.func.attr == "generate":
             found = _literal(_argument(node, 2, "name"))
             if isinstance(found, str) and _NAME.fullmatch(found):
                 name = found
-        elif method == "add" and len(node.args) + len(node.keywords) >= 4:
-            kind = _type_name(_argument(node, 1, "paramtype"))
-            if kind is None:
-                continue  # not a parameter's add (a set's, a list's)
-            written = _literal(_argument(node, 0, "name"))
-            if not isinstance(written, str) or not _NAME.fullmatch(written):
-                config.partial = True
-                continue
-            default = _literal(_argument(node, 4, "default"))
-            config.parameters.append((written, kind, default))
-        elif method == "const":
-            written = _literal(_argument(node, 0, "name"))
-            kind = _type_name(_argument(node, 1, "paramtype"))
-            value = _literal(_argument(node, 2, "value"))
-            if isinstance(written, str) and _NAME.fullmatch(written) and kind is not None:
-                config.constants.append((written, kind, value))
+        else:
+            _take(node, config)
     if name is None:
         return None, []
     config.name = name
@@ -148,8 +148,122 @@ def read_cfg(path: str, text: str, package: str) -> tuple[Config | None, list[Di
     return config, []
 
 
-def configs(folder: str, package: str) -> tuple[dict[str, Config], list[Diagnostic]]:
-    """The configs of a package's ``cfg/*.cfg`` by class name (``NameConfig``)."""
+def _handed(call: ast.Call, generators: set[str]) -> str | int | None:
+    """Where ``call`` hands a generator: the argument's index, or its keyword."""
+    for index, arg in enumerate(call.args):
+        if isinstance(arg, ast.Starred):
+            return -1 if isinstance(arg.value, ast.Name) and arg.value.id in generators \
+                else None
+        if isinstance(arg, ast.Name) and arg.id in generators:
+            return index
+    for keyword in call.keywords:
+        if isinstance(keyword.value, ast.Name) and keyword.value.id in generators:
+            return keyword.arg if keyword.arg is not None else -1
+    return None
+
+
+def _take(node: ast.Call, config: Config) -> None:
+    """A generator's ``add`` (a parameter) or ``const`` (a constant) call into
+    ``config``; a parameter named otherwise than by a literal makes it partial."""
+    assert isinstance(node.func, ast.Attribute)
+    method = node.func.attr
+    if method == "add" and len(node.args) + len(node.keywords) >= 4:
+        kind = _type_name(_argument(node, 1, "paramtype"))
+        if kind is None:
+            return  # not a parameter's add (a set's, a list's)
+        written = _literal(_argument(node, 0, "name"))
+        if not isinstance(written, str) or not _NAME.fullmatch(written):
+            config.partial = True
+            return
+        default = _literal(_argument(node, 4, "default"))
+        config.parameters.append((written, kind, default))
+    elif method == "const":
+        written = _literal(_argument(node, 0, "name"))
+        kind = _type_name(_argument(node, 1, "paramtype"))
+        value = _literal(_argument(node, 2, "value"))
+        if isinstance(written, str) and _NAME.fullmatch(written) and kind is not None:
+            config.constants.append((written, kind, value))
+
+
+def _functions(tree: ast.Module, modules: Modules | None) -> dict[str, ast.FunctionDef]:
+    """The functions a .cfg may call by name: those it defines at its top level, and
+    those it imports by name (``from module import f [as g]``) from a module
+    ``modules`` finds and ``ast`` reads."""
+    found: dict[str, ast.FunctionDef] = {}
+    read: dict[str, dict[str, ast.FunctionDef]] = {}
+    for node in tree.body:
+        if isinstance(node, ast.FunctionDef):
+            found[node.name] = node
+        elif isinstance(node, ast.ImportFrom) and node.module and not node.level and (
+            modules is not None
+        ):
+            if node.module not in read:
+                read[node.module] = _module_functions(modules(node.module))
+            for alias in node.names:
+                function = read[node.module].get(alias.name)
+                if function is not None:
+                    found[alias.asname or alias.name] = function
+    return found
+
+
+def _module_functions(path: str | None) -> dict[str, ast.FunctionDef]:
+    """The top-level functions of the Python file at ``path`` (none when it cannot be
+    read or parsed)."""
+    if path is None:
+        return {}
+    try:
+        if os.path.getsize(path) > MAX_MODULE_BYTES:
+            return {}
+    except OSError:
+        return {}
+    text, _ = read_text(path, Location(None, path))
+    if text is None:
+        return {}
+    try:
+        module = ast.parse(text, filename=path)
+    except (SyntaxError, ValueError, MemoryError, RecursionError):
+        return {}
+    return {node.name: node for node in module.body if isinstance(node, ast.FunctionDef)}
+
+
+def _take_function(function: ast.FunctionDef, handed: str | int, config: Config) -> bool:
+    """The parameters ``function`` adds on the generator it is handed (at argument
+    index or keyword ``handed``); False when that cannot be told: the parameter is not
+    found, or the body hands it on to another function or keeps it elsewhere."""
+    params = [*function.args.posonlyargs, *function.args.args]
+    if isinstance(handed, int):
+        if handed < 0 or handed >= len(params):
+            return False
+        own = params[handed].arg
+    else:
+        names = {p.arg for p in [*params, *function.args.kwonlyargs]}
+        if handed not in names:
+            return False
+        own = handed
+    for node in ast.walk(function):
+        if isinstance(node, ast.Name) and node.id == own:
+            continue
+        if isinstance(node, ast.Call):
+            if _handed(node, {own}) is not None:
+                return False  # handed on: not followed
+            func = node.func
+            if isinstance(func, ast.Attribute) and isinstance(func.value, ast.Name) and (
+                func.value.id == own
+            ):
+                _take(node, config)
+        elif isinstance(node, ast.Assign | ast.AugAssign | ast.AnnAssign | ast.NamedExpr):
+            targets = node.targets if isinstance(node, ast.Assign) else [node.target]
+            if any(isinstance(target, ast.Name) and target.id == own for target in targets) \
+                    or (isinstance(node.value, ast.Name) and node.value.id == own):
+                return False  # the generator rebound or stored: not followed
+    return True
+
+
+def configs(folder: str, package: str, modules: Modules | None = None
+            ) -> tuple[dict[str, Config], list[Diagnostic]]:
+    """The configs of a package's ``cfg/*.cfg`` by class name (``NameConfig``); the
+    modules a .cfg imports are looked for beside it (Python's path starts with the
+    script's folder), then by ``modules``."""
     found: dict[str, Config] = {}
     problems: list[Diagnostic] = []
     cfg = os.path.join(folder, "cfg")
@@ -168,11 +282,41 @@ def configs(folder: str, package: str) -> tuple[dict[str, Config], list[Diagnost
         problems += read_problems
         if text is None:
             continue
-        config, more = read_cfg(path, text, package)
+        config, more = read_cfg(path, text, package,
+                                lambda name: _beside(cfg, name) or (
+                                    modules(name) if modules is not None else None))
         problems += more
         if config is not None:
             found.setdefault(config.name + "Config", config)
     return found, problems
+
+
+def _beside(folder: str, name: str) -> str | None:
+    """The file of Python module ``name`` (dotted) in ``folder``, if there."""
+    return module_file([folder], name)
+
+
+def module_file(folders: list[str], name: str) -> str | None:
+    """The file of Python module ``name`` (dotted: ``a.b``) under one of ``folders``:
+    ``a/b.py`` or ``a/b/__init__.py``, the first found."""
+    parts = name.split(".")
+    if not all(_NAME.fullmatch(part) for part in parts):
+        return None
+    for folder in folders:
+        base = os.path.join(folder, *parts)
+        for candidate in (base + ".py", os.path.join(base, "__init__.py")):
+            if os.path.isfile(candidate):
+                return candidate
+    return None
+
+
+def workspace_modules(workspace: Any) -> Modules:
+    """A ``Modules`` over the workspace's packages: the module in a package's ``src``
+    folder, where catkin's ``catkin_python_setup`` installs it from
+    (``package_dir={'': 'src'}``): base_local_planner's ``local_planner_limits``."""
+    folders = sorted(os.path.join(package.root, "src")
+                     for package in workspace.packages.values() if package.root)
+    return lambda name: module_file(folders, name)
 
 
 def _constant(kind: str, value: Any) -> str | None:

@@ -163,7 +163,8 @@ def _config_parameters(ev: Evaluator, config: object,
     root = ev.loader.workspace.find(package)
     if root is None:
         return [], True
-    found, _ = reconfigure.configs(root, package)
+    found, _ = reconfigure.configs(root, package,
+                                   reconfigure.workspace_modules(ev.loader.workspace))
     cfg = found.get(parts[-1])
     if cfg is None:
         return [], True
