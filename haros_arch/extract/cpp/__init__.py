@@ -388,7 +388,7 @@ def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
     reached = _reached(units)
     for _, unit in units:
         for owner, written in unit.node_names:
-            name = links.resolve_name(written, facts)
+            name = links.resolve_name(written, facts, unseen)
             owners.setdefault(owner, [])
             if name not in owners[owner]:
                 owners[owner].append(name)

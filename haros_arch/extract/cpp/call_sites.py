@@ -16,7 +16,7 @@ import itertools
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 
-from clang.cindex import Cursor, CursorKind, Type, TypeKind, conf
+from clang.cindex import Cursor, CursorKind, LinkageKind, Type, TypeKind, conf
 
 from . import msg_types
 from .expressions import is_default_argument
@@ -81,7 +81,8 @@ class CallSites:
         if key in self._active:
             return unknown
         strings = self.external and isinstance(unknown, tuple)
-        if strings and not self._sites().get(self._function_key(parm)):
+        if strings and (not self._sites().get(self._function_key(parm))
+                        or self._shared(parm.semantic_parent)):
             marker = self.placeholder(parm)
             if marker is not None:
                 return (marker,)  # type: ignore[return-value]
@@ -97,6 +98,26 @@ class CallSites:
             if marker is not None:
                 return (marker,)  # type: ignore[return-value]
         return unknown
+
+    def _shared(self, function: Cursor | None) -> bool:
+        """Whether the node's other files may call ``function`` too, and only this unit
+        reads its code: defined in this unit's own source, first declared in a header,
+        with external linkage. The calls this unit holds are then not all its calls, and
+        their agreeing on a value does not give the value (ouster_ros' ``OusterSensor(
+        name, options)``: its own file delegates to it with "os_sensor", os_driver_node.cpp
+        calls it with "os_driver"); a placeholder does, filled from every file's calls
+        (``links``). A function defined in a header is read by every unit that includes
+        it, each with its own calls (nav2's ``LifecycleNode(name, ns, options)``)."""
+        if function is None or self.main is None or function.kind not in _CALLABLE:
+            return False
+        canonical = function.canonical
+        where = canonical.location.file if canonical is not None else None
+        if where is None or where.name == self.main:
+            return False
+        definition = function.get_definition()
+        if definition is None or _defined_in(definition) != self.main:
+            return False
+        return canonical.linkage == LinkageKind.EXTERNAL
 
     def placeholder(self, parm: Cursor) -> str | None:
         """The placeholder part of ``parm`` (None for a parameter of no function)."""

@@ -279,12 +279,7 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
     known = facts if isinstance(facts, NodeFacts) else NodeFacts(facts)
     out: list[PrimitiveCall] = []
     found: list[Diagnostic] = []
-
-    def unbuilt(usr: str) -> bool:
-        """A constructor no file of the node calls, whose class no error may hide."""
-        return _constructor(usr) and usr not in known.called and "*" not in unseen and (
-            class_of(usr) not in unseen)
-
+    unbuilt = _unbuilt(known, unseen)
     for call in calls:
         if call.made_in is not None:
             if not _made(call.made_in, known.called, known.constructed, unseen):
@@ -378,21 +373,34 @@ def node_rosnames(names: Iterable[str | None], facts: NodeFacts,
                   for each in written.split(UNBUILT_NAMES)]
     if not candidates:
         return []
-    made = [resolve_name(name, facts) for usr, marked, name in candidates
+    made = [resolve_name(name, facts, unseen) for usr, marked, name in candidates
             if not marked or usr in facts.called]
     if not made:
-        made = [resolve_name(name, facts) for usr, _, name in candidates
+        made = [resolve_name(name, facts, unseen) for usr, _, name in candidates
                 if _made(usr, facts.called, facts.constructed, unseen)]
-    return made or [resolve_name(candidates[0][2], facts)]
+    return made or [resolve_name(candidates[0][2], facts, unseen)]
 
 
-def resolve_name(name: str, facts: Iterable[Fact] | NodeFacts) -> str:
+def _unbuilt(known: NodeFacts, unseen: Collection[str]) -> Callable[[str], bool]:
+    """Whether a USR is a constructor no file of the node calls, whose class no error may
+    hide (``_expand``)."""
+    def unbuilt(usr: str) -> bool:
+        return _constructor(usr) and usr not in known.called and "*" not in unseen and (
+            class_of(usr) not in unseen)
+    return unbuilt
+
+
+def resolve_name(name: str, facts: Iterable[Fact] | NodeFacts,
+                 unseen: Collection[str] = ("*",)) -> str:
     """A node name (``Node(name)`` in a constructor) with its placeholders filled: the
-    one value the node's files pass, else ``?`` where they pass none or several."""
+    one value the node's files pass, else ``?`` where they pass none or several. A value
+    passed on from a parameter of a constructor that no file of the node calls gives
+    nothing (a header's delegating ``Router(name) : Router(NodeOptions(), name)`` beside
+    the ``Router(options, "mavros_router")`` that mavros_node builds)."""
     if PLACEHOLDER not in name:
         return name
-    found = _expand(name, (facts if isinstance(facts, NodeFacts) else NodeFacts(facts)
-                           ).passed, 0)
+    known = facts if isinstance(facts, NodeFacts) else NodeFacts(facts)
+    found = _expand(name, known.passed, 0, _unbuilt(known, unseen))
     if len(found) == 1 and PLACEHOLDER not in found[0]:
         return node_name_joined(_unmarked(found[0]))
     return choose(_MARK.sub("?", name))
