@@ -630,6 +630,61 @@ def test_a_plugin_runs_the_classes_it_builds_of_another_package(write_tree) -> N
     assert node.completeness == "complete"
 
 
+def test_a_class_of_the_plugins_own_package_named_unqualified_is_its_own(
+        write_tree) -> None:
+    # nav2's RotationShimController builds ``std::make_unique<ParameterHandler>(...)``,
+    # its own package's class, in its namespace: nav2_controller's class of that name
+    # (a linked package) ran in it, 48 calls of the controller server's parameters
+    files = {key: value for key, value in ROS1.items() if not key.startswith("planner/")}
+    files["costs/CMakeLists.txt"] = files["costs/CMakeLists.txt"].replace(
+        "src/unused.cpp", "src/unused.cpp src/handler.cpp")
+    files["costs/src/handler.cpp"] = """
+        #include <ros/ros.h>
+        namespace costs {
+          Handler::Handler() { ros::NodeHandle nh("~"); nh.param("frequency", f_, 20.0); }
+        }
+        """
+    files["local/package.xml"] = package_xml("local", "catkin").replace(
+        "</export>", "<nav_core plugin=\"${prefix}/plugins.xml\"/></export>")
+    files["local/plugins.xml"] = (
+        '<library path="lib/liblocal">\n'
+        '  <class name="local/Local" type="local::Local"'
+        ' base_class_type="nav_core::BaseLocalPlanner"/>\n'
+        "</library>\n")
+    files["local/CMakeLists.txt"] = """
+        cmake_minimum_required(VERSION 3.0.2)
+        project(local)
+        find_package(catkin REQUIRED COMPONENTS roscpp nav_core costs)
+        catkin_package()
+        add_library(local src/local.cpp src/handler.cpp)
+        target_link_libraries(local ${catkin_LIBRARIES})
+        """
+    files["local/src/handler.cpp"] = """
+        #include <ros/ros.h>
+        namespace local {
+          Handler::Handler() { ros::NodeHandle nh("~"); nh.param("angular_dist", d_, 0.7); }
+        }
+        """
+    files["local/src/local.cpp"] = """
+        #include <memory>
+        #include <ros/ros.h>
+        #include <nav_core/base_local_planner.h>
+        #include <pluginlib/class_list_macros.h>
+        namespace local {
+        class Handler { public: Handler(); double d_; };
+        class Local : public nav_core::BaseLocalPlanner {
+        public:
+          void initialize(std::string name) { handler_ = std::make_unique<Handler>(); }
+        private:
+          std::unique_ptr<Handler> handler_;
+        };
+        }
+        PLUGINLIB_EXPORT_CLASS(local::Local, nav_core::BaseLocalPlanner)
+        """
+    node, _ = _node(write_tree, files, "local", "local/Local")
+    assert "costs/src/handler.cpp" not in node.sources
+
+
 def test_a_member_named_in_an_expression_is_no_definition(tmp_path) -> None:
     # mavros' imu.cpp writes ``cond ? Eigen::Vector3d::Zero() : v) {``: no member of a
     # Vector3d defined there, so a plugin holding a Vector3d does not run that file

@@ -101,6 +101,12 @@ def test_mavros_loads_every_exported_plugin_its_deny_list_lets_through():
     assert ("publish", "/mavros/state", "source") in links(config, "/mavros/sys")
     imu_frame = next(p for p in config.parameters if p.name == "/mavros/imu/frame_id")
     assert imu_frame.value == "imu_link"
+    # the /** entries go to each node of mavros_node's process (mavros, mavros_router,
+    # mavros_node), a setting for several nodes: unread only when none of them reads it
+    read_by_setting = {(p.setting, p.rosname.own) for p in config.parameters if p.is_read}
     never_read = [p.name for p in config.parameters if p.set_by_launch and not p.is_read
-                  and not p.name.startswith("/mavros/?")]
+                  and not p.name.startswith("/mavros/?")
+                  and (p.setting is None or (p.setting, p.rosname.own) not in read_by_setting)]
     assert never_read == []
+    assert {n.name for n in config.nodes if n.origin == "launch"} == {
+        "/mavros/mavros", "/mavros/mavros_router", "/mavros/mavros_node"}

@@ -117,11 +117,19 @@ def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance
     made: dict[int, set[tuple[Any, ...]]] = {}  # per host instance: calls it has
     loaded: set[tuple[int, str]] = set()  # (instance, parameter) read to load a plugin
     out: list[tuple[NodeInstance, list[PrimitiveCall]]] = []
+    hosted: set[tuple[object, ...]] = set()  # launch nodes whose process hosts already
     for decl, started_instance in started:
         top = host_of(decl.package, decl.executable, decl.ros_version)
         if top is None:
             _unhosted(started_instance, owned)
             continue
+        process = (decl.package, decl.executable, decl.namespace, decl.location)
+        if process in hosted:
+            # a process of several nodes (mavros_node makes mavros, mavros_router and
+            # mavros_node, each an instance of the one launch node): its plugins are
+            # loaded once, by the first it makes
+            continue
+        hosted.add(process)
         hosts = [(top, started_instance)]
         for child in top.children:
             own, node = _child_instance(decl, started_instance, child, nodes, models,

@@ -295,6 +295,10 @@ def built_sources(own: Sequence[str], workspace: Files,
     if not defining:
         return []
     files = list(own)
+    # a class the plugin's own sources define is the one its code names unqualified
+    # (nav2's RotationShimController builds its own ParameterHandler, not
+    # nav2_controller's class of that name)
+    mine = {cls for source in own for cls in _defines(source, workspace)}
     scanned: set[str] = set()
     for _ in range(MAX_BUILT_ROUNDS):
         texts = [code_only(text) for source in files if source not in scanned
@@ -303,6 +307,8 @@ def built_sources(own: Sequence[str], workspace: Files,
         classes = {cls for found in defining.values() for cls in found}
         added = False
         for cls, space in _built(classes, texts):
+            if space is None and cls in mine:
+                continue
             before = len(files)
             files.extend(s for s, defined in defining.items()
                          if cls in defined and s not in files
