@@ -308,7 +308,10 @@ CATALOGUE: dict[str, Entry] = {
         "'ros2 launch PKG FILE ...', read as that launch file: a "
         "simulator, a converter, a test binary, a script. If it starts ROS nodes, they "
         "are not in the graph: a finding that claims an absence (nobody publishes, "
-        "nobody reads) may be contradicted by them."),
+        "nobody reads) may be contradicted by them. A ROS 2 command not interpreted "
+        "(ros2 bag play, which publishes what was recorded) is such a node for the "
+        "queries: an absence it may be the missing side of is undecided, named in the "
+        "-undecided info."),
     "LAUNCH_PY_LIFECYCLE": Entry(
         "info", "lifecycle transitions requested here are read as changing nothing in "
         "the graph",

@@ -282,3 +282,23 @@ def test_components_loaded_into_a_container_started_elsewhere_leave_them_undecid
     assert "LAUNCH_CONTAINER_EXTERNAL" in codes
     assert all("container /camera/container (started elsewhere)" in m
                for m in found["subscriber-without-publisher-undecided"])
+
+
+
+@pytest.mark.parametrize("command", [
+    "ExecuteProcess(cmd=['ros2', 'bag', 'play', LaunchConfiguration('bag_file')])",
+    "ExecuteProcess(cmd=['sleep', '5'])",
+], ids=["ros2-bag-play", "no-ros-tool"])
+def test_a_ros2_command_not_interpreted_may_be_the_missing_side(
+        write_tree: Any, command: str) -> None:
+    """ouster's replay launch plays a bag, ``ros2 bag play $(var bag_file) --clock``: the
+    player publishes what was recorded, which is not seen, so the point cloud node's
+    subscriptions are undecided, not "nothing publishes". A command that is no ROS tool
+    leaves them decided."""
+    found = _ros2_findings(write_tree, command)
+    if "sleep" in command:
+        assert len(found.get("subscriber-without-publisher", [])) == 1
+        return
+    assert "subscriber-without-publisher" not in found
+    undecided = found["subscriber-without-publisher-undecided"]
+    assert len(undecided) == 1 and "process ros2 bag play" in undecided[0]

@@ -132,5 +132,7 @@ def label(item: Any) -> str:
             return f"action not interpreted ({item.name})"
         if item.detail == "container":
             return f"container {item.name} (started elsewhere)"
+        if item.detail == "process":
+            return f"process {item.name} (a ROS command not interpreted)"
         return f"include {item.name} (not read)"
     return str(plain(item))

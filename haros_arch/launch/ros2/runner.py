@@ -387,8 +387,9 @@ class Runner:
         ...`` (that node) or ``ros2 topic pub ...`` (a publisher, see
         ``python_api.execute_process``); any other, or one not known here, no node."""
         if action.words is not None:  # known to be no node when it was made
-            self.report("LAUNCH_PROCESS", action.location,
-                        command=e.command_head(action.words))
+            head = e.command_head(action.words)
+            self.report("LAUNCH_PROCESS", action.location, command=head)
+            self._ros_command(head, scope, action.location)
             return
         value = self.value(action.cmd, scope, action.location)
         words: list[str] = []
@@ -405,9 +406,20 @@ class Runner:
         if node is None:  # said: a ROS node it may start is not in the graph
             self.report("LAUNCH_PROCESS", action.location,
                         command=e.command_head([(w,) for w in words]))
+            text = str(value.literal if value is not None and value.literal is not None
+                       else value.text if value is not None else "")
+            self._ros_command(" ".join(text.split()[:3]), scope, action.location)
             return
         node.location = action.location
         self.do_NodeAction(node, scope)
+
+    def _ros_command(self, head: str, scope: Scope, where: Location) -> None:
+        """A ROS 2 command a process runs that is not interpreted here (``ros2 bag play``,
+        which publishes the recorded topics: ouster's replay launch) starts a node whose
+        topics and parameters are not seen: it may be the missing side of anything, as
+        an include not read is."""
+        if head.split()[:1] == ["ros2"]:
+            self.unread(head, scope, where, detail="process")
 
     def do_LaunchCommand(self, action: e.LaunchCommand, scope: Scope) -> None:
         """``ros2 launch PKG FILE [NAME:=VALUE ...]`` (or ``ros2 launch PATH ...``) as a
