@@ -588,3 +588,17 @@ def test_ros2_parameter_value_as_text_and_topic_endpoint_info(write_tree) -> Non
     assert _errors(result) == []
     assert [(c.kind, c.name) for c in result.calls] == [
         ("declare", "rate"), ("publish", "out")]
+
+
+def test_ros2_std_string_literals_name_a_topic(write_tree) -> None:
+    """ouster's ``create_client<ChangeState>(name + "/change_state"s)``: the ``s`` literal
+    is a call of ``operator""s``, whose value was unknown (the client ``os_driver?``)."""
+    source = (
+        "#include <string>\n#include <rclcpp/rclcpp.hpp>\n#include <std_msgs/msg/string.hpp>\n"
+        "using namespace std::string_literals;\n"
+        "class N : public rclcpp::Node {\n public:\n"
+        "  N() : rclcpp::Node(\"n\") {\n"
+        "    pub_ = create_publisher<std_msgs::msg::String>(\"base\"s + \"/state\"s, 10);\n  }\n"
+        "  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;\n};\n")
+    result = _extract(write_tree, source, "ament_cmake")
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "base/state")]

@@ -684,6 +684,10 @@ class Scope:
         if call.spelling in ("operator+", "operator+=") and len(args) == 2:
             # (``a += b`` is read where a write of ``a`` names it: ``written_before``)
             return self.string(args[0], depth + 1) + self.string(args[1], depth + 1)
+        if call.spelling in ('operator""s', 'operator""sv') and args and (
+                strip(args[0]).kind == CursorKind.STRING_LITERAL):
+            # std's string literal, ``"/change_state"s`` (ouster's lifecycle client)
+            return self.string(args[0], depth + 1)
         if target is None:  # an implicit conversion wrapping the real expression
             inner = operand(call)
             return self.string(inner, depth + 1) if inner is not None else UNKNOWN
