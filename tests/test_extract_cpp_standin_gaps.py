@@ -602,3 +602,9 @@ def test_ros2_std_string_literals_name_a_topic(write_tree) -> None:
         "  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;\n};\n")
     result = _extract(write_tree, source, "ament_cmake")
     assert [(c.kind, c.name) for c in result.calls] == [("publish", "base/state")]
+
+
+def test_ros1_bind_with_nine_placeholders(write_tree) -> None:
+    result = _extract(write_tree, _source("ros1_bind_many_placeholders.cpp"), "catkin")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "out")]
