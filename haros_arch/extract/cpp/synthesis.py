@@ -440,8 +440,10 @@ class Names:
         # unqualified functions the code calls that no lookup finds: friends of the
         # permissive class declared in it only, which argument-dependent lookup alone
         # finds, where an argument is a permissive value (ouster's ``to_string(info.
-        # format.udp_profile_lidar)`` of the SDK's types); the call of a member clang
-        # could not find (an invalid base) is never one, its arguments being the code's
+        # format.udp_profile_lidar)`` of the SDK's types); ordinary lookup never sees
+        # them, so a member of a class is not hidden; one called with a permissive value
+        # in a method of a class derived from a declared class may be that base's
+        # method, which the visitor says (``CallFinder._of_unknown_base``)
         self.friends: set[str] = set()
         # the members read where C++ needs a constant (``case Mode::FAST:``): enumerators
         self.constants: set[str] = set()
