@@ -184,7 +184,7 @@ class CallSites:
                 and function.spelling == method.spelling and function.is_virtual_method()
                 and not any(c.kind == CursorKind.PARM_DECL for c in function.get_children())
                 and function.semantic_parent is not None
-                and target in _bases(function.semantic_parent))
+                and target in base_keys(function.semantic_parent))
         found: list[tuple[Cursor, Cursor]] = []
         for body in bodies:
             statements = [c for c in body.get_children() if c.kind == CursorKind.COMPOUND_STMT]
@@ -384,7 +384,7 @@ class CallSites:
         return self._index
 
 
-def _bases(cls: Cursor, depth: int = 0) -> set[tuple[str, int]]:
+def base_keys(cls: Cursor, depth: int = 0) -> set[tuple[str, int]]:
     """The keys of ``cls``'s base classes, transitively; a base that is a class
     template's specialisation (``Navigator<ToPose>``) also as that template."""
     found: set[tuple[str, int]] = set()
@@ -402,7 +402,7 @@ def _bases(cls: Cursor, depth: int = 0) -> set[tuple[str, int]]:
         if definition is None and template is not None:
             definition = template.get_definition()
         if definition is not None:
-            found |= _bases(definition, depth + 1)
+            found |= base_keys(definition, depth + 1)
     return found
 
 

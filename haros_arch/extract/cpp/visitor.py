@@ -25,7 +25,7 @@ from ...model.conditions import EACH_STATEMENT, Condition
 from ...model.location import Location
 from ...model.source import PrimitiveCall
 from . import api, call_conditions, links, msg_types, parameter_library, reconfigure, synthesis
-from .call_sites import CallSites
+from .call_sites import CallSites, base_keys
 from .call_types import CallTypes, factory_made, row_class
 from .call_types import callee as callee_of_call
 from .conditions import ConditionReader
@@ -856,17 +856,9 @@ class CallFinder:
         if lexical is None or lexical.spelling != synthesis.ANY or (
                 semantic is not None and semantic.spelling == synthesis.ANY):
             return False  # not declared in the class as a friend: its member
-        classes = [function.semantic_parent]
-        for _ in range(MAX_DEPTH):
-            bases = [base.referenced for cls in classes if cls is not None
-                     for base in cls.get_children()
-                     if base.kind == CursorKind.CXX_BASE_SPECIFIER]
-            if any(b is not None and self._declared_here(b) for b in bases):
-                return True
-            classes = [b.get_definition() or b for b in bases if b is not None]
-            if not classes:
-                return False
-        return False
+        owner = function.semantic_parent
+        return owner is not None and self.declared is not None and any(
+            where == self.declared for where, _ in base_keys(owner))
 
     def _unknown_callee(self, call: Cursor) -> Cursor | None:
         """What ``call`` runs whose code the parse does not have: a function or class
