@@ -12,7 +12,7 @@ from __future__ import annotations
 import dataclasses
 import os
 import re
-from collections.abc import Callable, Collection, Sequence
+from collections.abc import Callable, Collection, Iterable, Sequence
 from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
 from typing import Any
@@ -645,18 +645,26 @@ def plugin_loads(path: str, text: str, workspace: Workspace) -> list[Diagnostic]
     sites = list(_PLUGIN_LOAD.finditer(text))
     if _NODELET_LOADER.search(text) is not None:
         sites = sorted([*sites, *NODELET_LOAD.finditer(text)], key=lambda m: m.start())
+    return _load_lines("CPP_PLUGINS_LOADED", path, text, workspace,
+                       (m for m in sites if m.group(1) != "createInstance" or loader),
+                       ("//", "*", "/*"))
+
+
+def _load_lines(code: str, path: str, text: str, workspace: Workspace,
+                sites: Iterable[re.Match[str]], comments: tuple[str, ...]) -> list[Diagnostic]:
+    """A ``code`` diagnostic at each of ``sites`` (group 1: the loader's name) whose line
+    of ``text`` is no comment (``comments``: how one starts), with the line's text; at
+    most ``MAX_PLUGIN_LOADS``."""
     found: list[Diagnostic] = []
     for match in sites:
-        if match.group(1) == "createInstance" and not loader:
-            continue
         start = text.rfind("\n", 0, match.start()) + 1
         end = text.find("\n", match.end())
         line = text[start:end if end != -1 else len(text)]
-        if line.lstrip().startswith(("//", "*", "/*")):
+        if line.lstrip().startswith(comments):
             continue
         number = text.count("\n", 0, match.start()) + 1
-        found.append(diag.make("CPP_PLUGINS_LOADED",
-                               workspace.location(path, number, match.start(1) - start + 1),
+        found.append(diag.make(code, workspace.location(path, number,
+                                                        match.start(1) - start + 1),
                                text=line.strip()[:120]))
         if len(found) == MAX_PLUGIN_LOADS:
             break
@@ -672,20 +680,8 @@ def library_loads(path: str, text: str, workspace: Workspace) -> list[Diagnostic
     """The lines of ``text`` (the unit's own source) that open a shared library by name
     (``CPP_LIBRARY_LOADED``, a cause of partial): MOLA's launcher dlopen()s the modules
     its configuration lists; what they do on the node is not in its code."""
-    found: list[Diagnostic] = []
-    for match in _LIBRARY_LOAD.finditer(text):
-        start = text.rfind("\n", 0, match.start()) + 1
-        end = text.find("\n", match.end())
-        line = text[start:end if end != -1 else len(text)]
-        if line.lstrip().startswith(("//", "*", "/*", "#")):
-            continue
-        number = text.count("\n", 0, match.start()) + 1
-        found.append(diag.make("CPP_LIBRARY_LOADED",
-                               workspace.location(path, number, match.start(1) - start + 1),
-                               text=line.strip()[:120]))
-        if len(found) == MAX_PLUGIN_LOADS:
-            break
-    return found
+    return _load_lines("CPP_LIBRARY_LOADED", path, text, workspace,
+                       _LIBRARY_LOAD.finditer(text), ("//", "*", "/*", "#"))
 
 
 def _translation_unit(path: str, text: str, ros2: bool,
