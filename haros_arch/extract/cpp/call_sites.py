@@ -102,13 +102,13 @@ class CallSites:
     def _shared(self, function: Cursor | None) -> bool:
         """Whether the node's other files may call the constructor ``function`` too, and
         only this unit reads its code: defined in this unit's own source, first declared
-        in a header,
-        with external linkage. The calls this unit holds are then not all its calls, and
-        their agreeing on a value does not give the value (ouster_ros' ``OusterSensor(
-        name, options)``: its own file delegates to it with "os_sensor", os_driver_node.cpp
-        calls it with "os_driver"); a placeholder does, filled from every file's calls
-        (``links``). A function defined in a header is read by every unit that includes
-        it, each with its own calls (nav2's ``LifecycleNode(name, ns, options)``)."""
+        in a header, with external linkage. The calls this unit holds are then not all its
+        calls, and their agreeing on a value does not give the value (ouster_ros'
+        ``OusterSensor(name, options)``: its own file delegates to it with "os_sensor",
+        os_driver_node.cpp calls it with "os_driver"); a placeholder does, filled from
+        every file's calls (``links``). A function defined in a header is read by every
+        unit that includes it, each with its own calls (nav2's ``LifecycleNode(name, ns,
+        options)``)."""
         if function is None or self.main is None or function.kind != CursorKind.CONSTRUCTOR:
             # a constructor's: a method's values (a handle's namespace, a name) come
             # through its own class's code, a virtual one's from the host's calls of the

@@ -34,6 +34,7 @@ from clang.cindex import Cursor, CursorKind
 
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
+from ...evaluate import syntax
 from ...files import read_text
 from ...model.location import Location
 from .parameter_library import annotation
@@ -109,7 +110,7 @@ def read_cfg(path: str, text: str, package: str, modules: Modules | None = None
     .cfg's folder, a workspace package's Python modules); else the config is
     partial."""
     try:
-        tree = ast.parse(text, filename=path)
+        tree = syntax.parse(text, path)
     except (SyntaxError, ValueError, MemoryError, RecursionError) as error:
         line = getattr(error, "lineno", None) or 0
         return None, [diag.make("RECONFIGURE_CFG_INVALID", Location(package, path, line),
@@ -220,7 +221,7 @@ def _module_functions(path: str | None) -> dict[str, ast.FunctionDef]:
     if text is None:
         return {}
     try:
-        module = ast.parse(text, filename=path)
+        module = syntax.parse(text, path)
     except (SyntaxError, ValueError, MemoryError, RecursionError):
         return {}
     return {node.name: node for node in module.body if isinstance(node, ast.FunctionDef)}
