@@ -255,18 +255,21 @@ def _inline_methods(cls: str, texts: list[str]) -> set[str]:
 
 def _called(cls: str, method: str, texts: Iterable[str]) -> bool:
     """Whether an indented line of the texts calls ``cls::method(``. Each place the
-    qualified name is written is found first (a zero-width search, so none is hidden by
-    an overlapping one), then its line's indentation is looked at: a search anchored at
-    every line's start costs a backtracking scan of each line."""
-    call = re.compile(r"(?=\b" + re.escape(cls) + r"\s*::\s*" + re.escape(method)
-                      + r"\s*\()")
+    class's name is written is found by a plain text search, then the call is matched
+    there and its line's indentation looked at: a pattern anchored at every line's start
+    costs a backtracking scan of each line, and one that starts with ``\\b`` is tried at
+    every character."""
+    call = re.compile(r"\b" + re.escape(cls) + r"\s*::\s*" + re.escape(method) + r"\s*\(")
     for text in texts:
         if method not in text:
             continue
-        for match in call.finditer(text):
-            start = text.rfind("\n", 0, match.start()) + 1
-            if start < match.start() and text[start] in " \t":
-                return True
+        at = text.find(cls)
+        while at >= 0:
+            if call.match(text, at) is not None:
+                start = text.rfind("\n", 0, at) + 1
+                if start < at and text[start] in " \t":
+                    return True
+            at = text.find(cls, at + 1)
     return False
 
 
