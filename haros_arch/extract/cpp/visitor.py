@@ -372,8 +372,15 @@ class CallFinder:
                 return True
         return False
 
+    def _scope_of(self, function: Cursor) -> Scope:
+        """The scope of ``function``'s body: the unit's one (``CallSites.scope``), whose
+        writes are read from the body once, whichever walk asks first."""
+        if self.sites is not None:
+            return self.sites.scope(function)
+        return Scope(function, self.macros, self.source, self.sites)
+
     def _function(self, function: Cursor) -> None:
-        scope = self._scope = Scope(function, self.macros, self.source, self.sites)
+        scope = self._scope = self._scope_of(function)
         self._owner = owner_of(function)
         self._constructor = None
         # of a class, not a class template: a template's constructions name its
@@ -911,8 +918,7 @@ class CallFinder:
                 callee = callee_of_call(node)
                 objects = [c for c in callee.get_children() if c.kind.is_expression()]
                 if row is not None and objects and strip(objects[0]).referenced == decl:
-                    found = scope if function == scope.body else Scope(
-                        function, self.macros, self.source, self.sites)
+                    found = scope if function == scope.body else self._scope_of(function)
                     return row, node, found
         return None
 
@@ -1434,7 +1440,7 @@ class CallFinder:
         if len(assigned) == 1:
             value, function = assigned[0]
             return self._parameter_source(
-                value, Scope(function, self.macros, self.source, self.sites), depth + 1)
+                value, self._scope_of(function), depth + 1)
         if assigned:
             return None
         for function in self.members.naming(member):
@@ -1450,8 +1456,7 @@ class CallFinder:
                 shift = 1 if spec.optional_handle and args and is_handle(args[0]) else 0
                 if self._member(spec, node, shift) == member:
                     return self._parameter(
-                        spec, node, Scope(function, self.macros, self.source, self.sites),
-                        depth + 1)
+                        spec, node, self._scope_of(function), depth + 1)
         return None
 
     def _parameter(self, spec: api.RosFunction, call: Cursor,
