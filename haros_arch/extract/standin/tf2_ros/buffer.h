@@ -56,6 +56,8 @@ public:
   double getX() const; double getY() const; double getZ() const; double getW() const;
   void setX(double v); void setY(double v); void setZ(double v); void setW(double v);
   void setValue(double x, double y, double z, double w);
+  // tf2's QuadWord converts to its array of four: ``q[0]`` is x
+  double operator[](int i) const; double& operator[](int i);
   double getAngle() const;
   double getAngleShortestPath() const;
   class Vector3 getAxis() const;
