@@ -168,6 +168,7 @@ def _call_sites(text: str, extra: frozenset[str], bare: frozenset[str],
         named = declared.start("name") if declared is not None else None
         if any(not _unevaluated(code, m.start()) and not _named_type(code, m, extra)
                and m.start("bare") != named and not _not_a_wrapper(code, m, extra, bare)
+               and not _constructor_declared(code, m, extra)
                for m in pattern.finditer(code)):
             found.append(Site(number, code.strip()[:80]))
     return tuple(found)
@@ -206,7 +207,40 @@ def _named_type(code: str, match: re.Match[str], extra: frozenset[str]) -> bool:
     else:
         return False  # the template arguments go on past the line
     rest = code[at + 1:]
+    member = _MEMBER_AFTER.match(rest)
+    if member is not None and (member.group(1).lstrip("~") == name or (
+            _TYPE_BEFORE.search(before) and not _KEYWORD_BEFORE.search(before))):
+        # a member of the class template defined out of it, not a static factory's
+        # call: its constructor, ``Wrapper<T>::Wrapper(``, or a method after its return
+        # type, ``void Wrapper<T>::start(`` (depthai_bridge's BridgePublisher.hpp)
+        return True
     return bool(rest.strip()) and not _BUILT_BEFORE.match(rest)
+
+
+# a member named after a class's template arguments: ``::name(``
+_MEMBER_AFTER = re.compile(r"\s*::\s*(~?\w+)\s*\(")
+# a return type ends just before the class's name (a name, ``>``, ``*``, ``&``), a
+# statement keyword does not
+_TYPE_BEFORE = re.compile(r"[\w>*&]\s+$")
+_KEYWORD_BEFORE = re.compile(r"\b(?:return|co_return|throw|else|case|do)\s+$")
+# a constructor's declaration in its class, with no return type: the name opens the line
+# (after ``explicit`` / ``inline`` / ``constexpr``), and its first parameter declares a
+# name after its type (``BridgePublisher(std::shared_ptr<Queue> queue,``,
+# ``BridgePublisher(const BridgePublisher& other);``), which no call's argument does
+_DECLARATION_START = re.compile(r"^\s*(?:(?:explicit|inline|constexpr)\s+)*$")
+_FIRST_PARAMETER = re.compile(
+    r"\s*(?:const\s+)?(?:typename\s+)?[\w:]+(?:<[^()]*>)?(?:\s*[*&]+\s*|\s+)\w+\s*[,)=]")
+
+
+def _constructor_declared(code: str, match: re.Match[str], extra: frozenset[str]) -> bool:
+    """Whether ``match``, one of the unit's wrappers (``extra``) called bare, is a
+    constructor's declaration in its class (``_DECLARATION_START``, ``_FIRST_PARAMETER``):
+    a class template's constructor is a wrapper, and its class declares it."""
+    name = match.group("bare")
+    if name is None or name not in extra or not match.group(0).endswith("("):
+        return False
+    return bool(_DECLARATION_START.match(code[:match.start("bare")])) and bool(
+        _FIRST_PARAMETER.match(code, match.end()))
 
 
 _EMPTY_CALL = re.compile(r"\(\s*\)")

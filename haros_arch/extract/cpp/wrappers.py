@@ -642,8 +642,7 @@ class Wrappers:
         if of_class_template(function) and is_constructor(function):
             # a constructor of a class template: the class's first parameter is what a
             # construction's template argument gives (make_shared<Server<T>>)
-            templates = [c for c in function.semantic_parent.get_children()
-                         if c.kind == CursorKind.TEMPLATE_TYPE_PARAMETER]
+            templates = _class_parameters(function)
         sources: list[str] = []
         type_arg: int | None = None
 
@@ -946,10 +945,26 @@ def _template_parameter_index(ref: Cursor | None, function: Cursor) -> int | Non
     if decl is None or decl.kind != CursorKind.TEMPLATE_TYPE_PARAMETER:
         return None
     where = _key(decl)
-    params = _template_parameters(function.semantic_parent) if (
+    params = _class_parameters(function) if (
         of_class_template(function) and is_constructor(function)
     ) else _template_parameters(function)
     return next((i for i, p in enumerate(params) if _key(p) == where), None)
+
+
+def _class_parameters(constructor: Cursor) -> list[Cursor]:
+    """The template type parameters of a class template's constructor's class, as its
+    body names them: defined out of the class, its own template header declares them
+    again, first (depthai_bridge's ``template <class RosMsg, class SimMsg>
+    BridgePublisher<RosMsg, SimMsg>::BridgePublisher(..)``, whose body's ``RosMsg`` is
+    the header's); defined in the class, the class's."""
+    cls = constructor.semantic_parent
+    own = _template_parameters(cls) if cls is not None else []
+    lexical = constructor.lexical_parent
+    if lexical is not None and cls is not None and _key(lexical) != _key(cls):
+        header = _template_parameters(constructor)
+        if len(header) >= len(own):
+            return header[:len(own)]
+    return own
 
 
 _DEPENDENT_MEMBERS = re.compile(r"(?:typename\s+)?(\w+)((?:::\w+)+)")
