@@ -40,8 +40,11 @@ class ConnectivityException : public TransformException { public: using Transfor
 class ExtrapolationException : public TransformException { public: using TransformException::TransformException; };
 class InvalidArgumentException : public TransformException { public: using TransformException::TransformException; };
 class TimeoutException : public TransformException { public: using TransformException::TransformException; };
-struct TimePointZero_t {};
-extern const TimePointZero_t TimePointZero;
+using Duration = std::chrono::nanoseconds;
+using TimePoint = std::chrono::time_point<std::chrono::system_clock, Duration>;
+// tf2's ``TimePoint(Duration::zero())``, a time point as any other (swri_transform_util's
+// ``GetTransform(target, source, tf2::TimePointZero, transform)`` takes a TimePoint)
+extern const TimePoint TimePointZero;
 typedef double tf2Scalar;
 class Quaternion {
 public:
@@ -144,8 +147,6 @@ public:
   Vector3 operator*(const Vector3& v) const;
   static const Transform& getIdentity();
 };
-using Duration = std::chrono::nanoseconds;
-using TimePoint = std::chrono::time_point<std::chrono::system_clock, Duration>;
 // a stamped datum: ROS 2's tf2 stamps it with its own TimePoint, ROS 1's with ros::Time
 // (a unit that has included rclcpp is ROS 2's: robot_localization's
 // ``pose.stamp_ = tf2::timeFromSec(...)``)
