@@ -39,9 +39,9 @@ from collections.abc import Callable
 from typing import Any
 
 from .. import diagnostics as diag
-from ..evaluate.python import evaluate, is_unknown
+from ..evaluate.python import KeyAttributes, evaluate, is_unknown
 from ..launch.ros2.naming import split_arguments
-from ..model.conditions import Condition
+from ..model.conditions import PARAMETER_VALUE, Condition
 from ..model.rosname import pattern_for
 from ..model.runtime import Configuration, Link, NodeInstance, Parameter
 from ..model.values import UNKNOWN_MARK, Unknown
@@ -49,7 +49,7 @@ from ..model.values import UNKNOWN_MARK, Unknown
 DECIDED_STATEMENTS = ("if", "else", "switch")
 MAX_TEXT = 1000  # longer condition texts are left undecided
 _TOKEN = re.compile(r"""\s*(?:
-    (?P<string>"[^"\\\n]*")
+    (?P<string>"[^"\\\n]*"|'[^'\\\n]*')
   | (?P<number>\d+(?:\.\d+)?)(?![\w.])
   | (?P<name>this\s*->\s*[A-Za-z_]\w*|self\s*\.\s*[A-Za-z_]\w*
              |[A-Za-z_]\w*(?:\s*::\s*[A-Za-z_]\w*)*)
@@ -97,7 +97,11 @@ class _Grammar:
     _PYTHON = {"||": "or", "&&": "and"}
 
     def _peek(self) -> tuple[str, str]:
-        return self.tokens[self.at] if self.at < len(self.tokens) else ("", "")
+        return self._ahead(0)
+
+    def _ahead(self, count: int) -> tuple[str, str]:
+        at = self.at + count
+        return self.tokens[at] if at < len(self.tokens) else ("", "")
 
     def _take(self, value: str) -> None:
         if self._peek() != ("op", value):
@@ -152,6 +156,10 @@ class _Grammar:
         ):
             raise ValueError(value)  # a qualified name or a call: not read
         self.names.add(value)
+        if self._peek() == ("op", ".") and self._ahead(1) == ("name", "value") and (
+                self._ahead(2) != ("op", "(")):
+            self.at += 2  # a Python parameter object's value (``PARAMETER_VALUE``)
+            return f"{value}{PARAMETER_VALUE}"
         if self._peek() == ("op", "."):  # a container's size() / empty() / at(N)
             self.at += 1
             kind, method = self._peek()
@@ -557,6 +565,13 @@ def _member_values(instance: NodeInstance, config: Configuration | None = None,
                     if config is not None else Unknown("no configuration"))
         parameter = held.get(name) if held else None
         parameter = parameter if parameter is not None else parameter_name(name)
+        if parameter is None and not (reads.get((file, name)) or anywhere.get(name)) and (
+                reads.get((file, name + PARAMETER_VALUE))
+                or anywhere.get(name + PARAMETER_VALUE)):
+            # a member that holds the parameter object: its ``value`` is the parameter's
+            held_value = value(name + PARAMETER_VALUE, file=file)
+            return held_value if is_unknown(held_value) else KeyAttributes(
+                {PARAMETER_VALUE.lstrip("."): held_value})
         found = reads.get((file, name)) or anywhere.get(name) if parameter is None else [
             link for link in instance.links if link.call is not None
             and link.kind in ("read", "declare")

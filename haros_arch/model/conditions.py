@@ -18,6 +18,10 @@ ConditionKind = Literal["launch", "source", "hint"]
 # per element (``PrimitiveCall.name_each``): where the graph knows the elements, each
 # call it makes stands for one turn of the loop, which is then no condition of it
 EACH_STATEMENT = "for each"
+# the end of a ``PrimitiveCall.variable`` that holds a parameter object, not its value:
+# rclpy's ``self.origin_param = self.declare_parameter(..)``, read by a condition as
+# ``self.origin_param.value``
+PARAMETER_VALUE = ".value"
 
 
 @dataclass(frozen=True)

@@ -48,7 +48,8 @@ UNDECIDED = "-undecided"  # suffix of the id of a rule's info on matches it cann
 ABSORBED_CODES = frozenset({"LAUNCH_FILE_MISSING", "PACKAGE_NOT_FOUND", "NODE_NOT_FOUND"})
 # a name computed at run time, said by the extractor about a call; where a configuration
 # instantiates the call, the graph says it better: unresolved-names reports the name per
-# node instance, or a launch value or code default has completed it
+# node instance, or a launch value or code default has completed it, or a condition
+# false there has dropped it
 DYNAMIC_NAME_CODES = frozenset({"CPP_DYNAMIC_NAME", "PY_DYNAMIC_NAME"})
 
 
@@ -60,6 +61,10 @@ def absorbed(model: Model) -> set[Diagnostic]:
              if d.code in ABSORBED_CODES}
     linked = {link.location for config in model.configurations
               for link in config.direct_links}
+    # a call a configuration made and dropped, its condition false there (CONDITION_FALSE
+    # says so at the call): the graph said what became of it
+    linked.update(d.location for config in model.configurations
+                  for d in config.diagnostics if d.code == "CONDITION_FALSE")
     found.update(d for d in model.diagnostics
                  if d.code in DYNAMIC_NAME_CODES and d.location in linked)
     return found

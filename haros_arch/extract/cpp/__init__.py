@@ -859,7 +859,7 @@ def _hidden(path: str, errors: list[_Error], finder: CallFinder,
         text = source.text(name)
         if text is None:
             continue
-        sites = recall.call_sites(text, wrappers, bare)
+        sites = recall.call_sites(text, wrappers, bare, finder.ros2)
         if not sites:
             continue
         relative = workspace.relpath(name)

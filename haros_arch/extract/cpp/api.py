@@ -641,6 +641,11 @@ UNRESOLVED_ROS2: dict[str, RosFunction] = {
 UNRESOLVED_ROS1: dict[str, RosFunction] = {
     name: row for (owner, name), row in ROSCPP.items() if owner == NODE_HANDLE}
 
+# the top namespaces of the rows whose API only ROS 1 has (roscpp, tf, actionlib,
+# nodelet_topic_tools, dynamic_reconfigure): ROS 2 code cannot call them, so their names
+# are no call site there (``recall.site_pattern``)
+ROS1_ONLY = frozenset({"ros", "tf", "actionlib", "nodelet", "nodelet_topic_tools",
+                       "dynamic_reconfigure"})
 ALL: dict[tuple[str, str], RosFunction] = {**ROSCPP, **LIBRARIES, **RCLCPP,
                                             **RCLCPP_LIBRARIES, **ROS2_CONTROL, **AUTOWARE,
                                             **NAV2}

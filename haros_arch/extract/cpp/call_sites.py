@@ -29,7 +29,7 @@ from .values import (
     key_of,
     written_arguments,
 )
-from .writes import parameter_callback, writes_of
+from .writes import default_constructed, parameter_callback, writes_of
 
 _CALLABLE = frozenset({CursorKind.FUNCTION_DECL, CursorKind.CXX_METHOD, CursorKind.CONSTRUCTOR,
                        CursorKind.FUNCTION_TEMPLATE})
@@ -68,6 +68,9 @@ class CallSites:
         self.forks: list[Fork] | None = None
         self._members: dict[tuple[str, int], list[tuple[Cursor | None, Cursor]]] = {}
         self._written: dict[tuple[str, int], bool] = {}  # ``written``, by member
+        # the classes some function of the unit assigns an object of as a whole
+        # (``whole_records``), read once when first asked
+        self._whole: set[tuple[str, int]] | None = None
         self.choice: tuple[tuple[str, int], tuple[str, int]] | None = None
         # ``Class::member`` of each member read while a value was asked whose class's
         # constructors are all defined in other files, which may set it (cleared by the
@@ -255,8 +258,38 @@ class CallSites:
                    for write in writes_of(node, self.source)):
                 result = True
                 break
+        if not result and field.kind == CursorKind.FIELD_DECL:
+            owner = field.semantic_parent
+            result = owner is not None and key_of(owner.canonical) in self.whole_records()
         self._written[found] = result
         return result
+
+    def whole_records(self) -> set[tuple[str, int]]:
+        """The classes (their canonical declarations' places) of which a function of this
+        unit but a destructor assigns an object as a whole, ``=`` or a constructor's
+        initialiser with arguments: each field of such an object may then hold what
+        was copied into it, not its default initialiser (depthai's ImagePublisher:
+        ``pubConfig = pubConf;`` in ``setup``, then ``pubConfig.topicName +
+        pubConfig.topicSuffix``, whose ``topicName = ""`` the callers in other files
+        set before they pass the struct)."""
+        if self._whole is not None:
+            return self._whole
+        found: set[tuple[str, int]] = set()
+        for function in self.functions:
+            if function.kind == CursorKind.DESTRUCTOR or parameter_callback(function):
+                continue
+            children = list(function.get_children())
+            for child, value in itertools.pairwise(children):  # ``config_(conf)``
+                if child.kind == CursorKind.MEMBER_REF and child.referenced is not None and (
+                        not default_constructed(value)):
+                    _note_record(child.referenced.type, found)
+            for node in function.walk_preorder():
+                for write in writes_of(node, self.source):
+                    if write.whole and write.value is not None and (
+                            write.target.kind != CursorKind.VAR_DECL):
+                        _note_record(write.target.type, found)
+        self._whole = found
+        return found
 
     def unset(self, field: Cursor) -> None:
         """Note ``field``, a member nothing in this unit gives a value, when its class
@@ -725,6 +758,13 @@ def member_initialiser(field: Cursor, source: dict[str, bytes]
         if value is not None:
             return value, definition
     return None
+
+
+def _note_record(of: Type, found: set[tuple[str, int]]) -> None:
+    """Add to ``found`` the class of an object of type ``of`` (not a pointer's)."""
+    declaration = of.get_canonical().get_declaration()
+    if declaration.kind in (CursorKind.STRUCT_DECL, CursorKind.CLASS_DECL):
+        found.add(key_of(declaration.canonical))
 
 
 def _written(field: Cursor, definition: Cursor, constructor: bool,

@@ -40,9 +40,32 @@ def written_arguments(call: Cursor) -> list[Cursor]:
 
 
 def operand(cursor: Cursor) -> Cursor | None:
-    """The expression a wrapper wraps, or None."""
+    """The expression a wrapper wraps, or None (also for an operator call the parse
+    left unresolved, ``unresolved_operator``: its last child is its right operand, not
+    its value)."""
     inner = [c for c in cursor.get_children() if c.kind not in _REFS]
+    if len(inner) == 3 and unresolved_operator(cursor) is not None:
+        return None
     return inner[-1] if inner else None
+
+
+def unresolved_operator(cursor: Cursor) -> tuple[str, Cursor, Cursor] | None:
+    """``a + b`` in a template where an operand's type depends on a template parameter
+    and the operator is an overload set looked up at instantiation (depthai's
+    ``Detection<T>``: ``"~/" + getName() + "/detections"``, ``getName()`` of a base):
+    a call with no declaration whose children are the left operand, a reference to the
+    overloaded ``operator+``, the right operand. The operator's symbol and the two
+    operands, else None."""
+    if cursor.kind != CursorKind.CALL_EXPR or cursor.referenced is not None:
+        return None
+    children = list(cursor.get_children())
+    if len(children) != 3 or children[1].kind != CursorKind.DECL_REF_EXPR:
+        return None
+    refs = list(children[1].get_children())
+    if len(refs) != 1 or refs[0].kind != CursorKind.OVERLOADED_DECL_REF or not (
+            refs[0].spelling.startswith("operator")):
+        return None
+    return refs[0].spelling[len("operator"):], children[0], children[2]
 
 
 def strip(cursor: Cursor) -> Cursor:

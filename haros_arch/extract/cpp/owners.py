@@ -142,7 +142,7 @@ def constructors_here(cls: Cursor) -> bool:
 def _code_here(constructor: Cursor | None, cls: Cursor) -> bool:
     """Whether the unit has the code of the constructor (or, made through make_shared,
     of one of the class's constructors), a template's too (a header's class template or
-    template constructor: nav2's TwistSubscriber)."""
+    template constructor: nav2's TwistSubscriber; defined in the class or out of it)."""
     if constructor is not None:
         if constructor.get_definition() is not None:
             return True
@@ -157,7 +157,9 @@ def _code_here(constructor: Cursor | None, cls: Cursor) -> bool:
             constructs = child.kind == CursorKind.CONSTRUCTOR or (
                 child.kind == CursorKind.FUNCTION_TEMPLATE and CursorKind.from_id(
                     conf.lib.clang_getTemplateCursorKind(child)) == CursorKind.CONSTRUCTOR)
-            if constructs and child.is_definition():
+            # defined in the class, or out of it in the unit (depthai_bridge's header:
+            # ``template <..> BridgePublisher<R, S>::BridgePublisher(..) { .. }``)
+            if constructs and (child.is_definition() or child.get_definition() is not None):
                 return True
     return False
 

@@ -80,25 +80,30 @@ class Site:
 
 
 @functools.lru_cache(maxsize=8)
-def site_pattern(extra: frozenset[str] = frozenset()) -> re.Pattern[str]:
+def site_pattern(extra: frozenset[str] = frozenset(), ros2: bool | None = None
+                 ) -> re.Pattern[str]:
     """The grep for API call sites: every method of the API tables (longer than four
     letters, so ``get`` / ``set`` / ``call`` of other classes do not count) as a member
     call; rclcpp's ``snake_case`` methods also bare (``create_publisher<T>(`` in a node
     class) and with their namespace (``rclcpp_action::create_server<``); ``extra`` names
-    (a unit's wrappers) as member or bare calls."""
+    (a unit's wrappers) as member or bare calls. ``ros2``: the unit's code is ROS 2, whose
+    code cannot call an API of ROS 1 only (``api.ROS1_ONLY``): ublox's ROS 2 driver calls
+    asio's ``resolver.resolve(query)``, no ``tf::TransformListener::resolve``."""
     # a method of a class (``ros::NodeHandle``) is called on an object; a function of a
     # namespace (``ros::param::search``, ``ros::service::exists``) is not, and ``.search(``
     # on any other object is no call of it: it is found written with its namespace
-    names = {name for (owner, name), row in api.ALL.items() if name[:1].islower()
+    rows = {key: row for key, row in api.ALL.items()
+            if not (ros2 and key[0].split("::", 1)[0] in api.ROS1_ONLY)}
+    names = {name for (owner, name), row in rows.items() if name[:1].islower()
              and len(name) > 4 and _is_class(owner) and row.call_site}
-    scoped = {f"{owner.rsplit('::', 1)[-1]}::{name}" for owner, name in api.ALL
+    scoped = {f"{owner.rsplit('::', 1)[-1]}::{name}" for owner, name in rows
               if name[:1].islower() and not _is_class(owner)}
     bare = {name for name in names if "_" in name} | set(extra)
     member = "|".join(sorted(map(re.escape, names | set(extra)), key=len, reverse=True))
     free = "|".join(sorted(map(re.escape, bare | scoped), key=len, reverse=True))
     # the API's classes whose construction is the call, written qualified, made with a
     # factory or new (``make_unique<message_filters::Subscriber<M, Node>>(``)
-    made = "|".join(sorted((re.escape(owner) for owner, name in api.ALL
+    made = "|".join(sorted((re.escape(owner) for owner, name in rows
                             if "::" in owner and owner.rsplit("::", 1)[1] == name),
                            key=len, reverse=True))
     return re.compile(rf"(?:(?:\.|->)\s*(?:template\s+)?(?P<member>{member})"
@@ -124,7 +129,8 @@ def first_site(sites: Sequence[Site], first: int, last: int) -> Site | None:
     return next((s for s in sites if first < s.line < last), None)
 
 
-def call_sites(text: str, extra: Iterable[str] = (), bare: Iterable[str] = ()) -> list[Site]:
+def call_sites(text: str, extra: Iterable[str] = (), bare: Iterable[str] = (),
+               ros2: bool | None = None) -> list[Site]:
     """The API call sites of one file's text (comments left out, and lines that define
     a function of the same name: ``Node::create_publisher(``, or declare one:
     ``static std::string set_parameter(``). ``extra`` are the unit's wrappers, and
@@ -132,13 +138,15 @@ def call_sites(text: str, extra: Iterable[str] = (), bare: Iterable[str] = ()) -
     site only with an argument or template arguments, and never written in ``std::``
     (``ptr.get()``, ``std::get<I>(t)`` where the unit has a wrapper ``get(node,
     name)``). The headers of a package are read by each of its units: the sites of a
-    text are kept (a few texts)."""
-    return list(_call_sites(text, frozenset(extra), frozenset(bare)))
+    text are kept (a few texts). ``ros2``: the code is ROS 2 (``site_pattern``); None
+    when not known."""
+    return list(_call_sites(text, frozenset(extra), frozenset(bare), ros2))
 
 
 @functools.lru_cache(maxsize=64)
-def _call_sites(text: str, extra: frozenset[str], bare: frozenset[str]) -> tuple[Site, ...]:
-    pattern = site_pattern(extra)
+def _call_sites(text: str, extra: frozenset[str], bare: frozenset[str],
+                ros2: bool | None = None) -> tuple[Site, ...]:
+    pattern = site_pattern(extra, ros2)
     found = []
     in_comment = False
     for number, line in enumerate(text.splitlines(), 1):
@@ -160,6 +168,7 @@ def _call_sites(text: str, extra: frozenset[str], bare: frozenset[str]) -> tuple
         named = declared.start("name") if declared is not None else None
         if any(not _unevaluated(code, m.start()) and not _named_type(code, m, extra)
                and m.start("bare") != named and not _not_a_wrapper(code, m, extra, bare)
+               and not _constructor_declared(code, m, extra)
                for m in pattern.finditer(code)):
             found.append(Site(number, code.strip()[:80]))
     return tuple(found)
@@ -198,7 +207,40 @@ def _named_type(code: str, match: re.Match[str], extra: frozenset[str]) -> bool:
     else:
         return False  # the template arguments go on past the line
     rest = code[at + 1:]
+    member = _MEMBER_AFTER.match(rest)
+    if member is not None and (member.group(1).lstrip("~") == name or (
+            _TYPE_BEFORE.search(before) and not _KEYWORD_BEFORE.search(before))):
+        # a member of the class template defined out of it, not a static factory's
+        # call: its constructor, ``Wrapper<T>::Wrapper(``, or a method after its return
+        # type, ``void Wrapper<T>::start(`` (depthai_bridge's BridgePublisher.hpp)
+        return True
     return bool(rest.strip()) and not _BUILT_BEFORE.match(rest)
+
+
+# a member named after a class's template arguments: ``::name(``
+_MEMBER_AFTER = re.compile(r"\s*::\s*(~?\w+)\s*\(")
+# a return type ends just before the class's name (a name, ``>``, ``*``, ``&``), a
+# statement keyword does not
+_TYPE_BEFORE = re.compile(r"[\w>*&]\s+$")
+_KEYWORD_BEFORE = re.compile(r"\b(?:return|co_return|throw|else|case|do)\s+$")
+# a constructor's declaration in its class, with no return type: the name opens the line
+# (after ``explicit`` / ``inline`` / ``constexpr``), and its first parameter declares a
+# name after its type (``BridgePublisher(std::shared_ptr<Queue> queue,``,
+# ``BridgePublisher(const BridgePublisher& other);``), which no call's argument does
+_DECLARATION_START = re.compile(r"^\s*(?:(?:explicit|inline|constexpr)\s+)*$")
+_FIRST_PARAMETER = re.compile(
+    r"\s*(?:const\s+)?(?:typename\s+)?[\w:]+(?:<[^()]*>)?(?:\s*[*&]+\s*|\s+)\w+\s*[,)=]")
+
+
+def _constructor_declared(code: str, match: re.Match[str], extra: frozenset[str]) -> bool:
+    """Whether ``match``, one of the unit's wrappers (``extra``) called bare, is a
+    constructor's declaration in its class (``_DECLARATION_START``, ``_FIRST_PARAMETER``):
+    a class template's constructor is a wrapper, and its class declares it."""
+    name = match.group("bare")
+    if name is None or name not in extra or not match.group(0).endswith("("):
+        return False
+    return bool(_DECLARATION_START.match(code[:match.start("bare")])) and bool(
+        _FIRST_PARAMETER.match(code, match.end()))
 
 
 _EMPTY_CALL = re.compile(r"\(\s*\)")

@@ -27,6 +27,7 @@ from .expressions import (
     operand,
     qualified_name,
     strip,
+    unresolved_operator,
     written_arguments,
 )
 from .writes import Write, const_array, writes_of
@@ -689,6 +690,12 @@ class Scope:
             # std's string literal, ``"/change_state"s`` (ouster's lifecycle client)
             return self.string(args[0], depth + 1)
         if target is None:  # an implicit conversion wrapping the real expression
+            unresolved = unresolved_operator(call)
+            if unresolved is not None:  # ``a + b`` left to the template's instantiation
+                symbol, left, right = unresolved
+                if symbol != "+":
+                    return UNKNOWN
+                return self.string(left, depth + 1) + self.string(right, depth + 1)
             inner = operand(call)
             return self.string(inner, depth + 1) if inner is not None else UNKNOWN
         if not args and target.spelling == "getName" and target.semantic_parent is not None \

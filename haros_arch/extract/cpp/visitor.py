@@ -24,6 +24,7 @@ from ...diagnostics import Diagnostic
 from ...model.conditions import EACH_STATEMENT, Condition
 from ...model.location import Location
 from ...model.source import PrimitiveCall
+from ...model.values import UNKNOWN_MARK
 from . import api, call_conditions, links, msg_types, parameter_library, reconfigure, synthesis
 from .call_sites import CallSites, base_keys
 from .call_types import CallTypes, factory_made, row_class
@@ -1982,5 +1983,13 @@ def _unknown_operands(expr: Cursor, scope: Scope, depth: int = 0) -> list[Cursor
 def _name_namespace(name: str) -> str:
     """The namespace of a call's name, as written (``~image_raw``: ``~``): where the
     names beside it go (a server's topics, a camera's camera_info, a reconfigure
-    server's parameters)."""
-    return name.rpartition("/")[0] if "/" in name else ("~" if name.startswith("~") else "")
+    server's parameters). A last segment not known (``?``, or ``cam?``) may hold more
+    segments at run time: its namespace is not known either (depthai's camera publisher
+    of ``pubConfig.topicName + pubConfig.topicSuffix``, a name not known at all, has its
+    camera_info somewhere, ``?/camera_info``, not ``camera_info`` at the node's
+    namespace)."""
+    head, slash, last = name.rpartition("/")
+    if UNKNOWN_MARK in last and PLACEHOLDER not in last:
+        return f"{head}/{UNKNOWN_MARK}" if slash else (
+            "~" + UNKNOWN_MARK if name.startswith("~") else UNKNOWN_MARK)
+    return head if slash else ("~" if name.startswith("~") else "")

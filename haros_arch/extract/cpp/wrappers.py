@@ -39,6 +39,8 @@ from .call_types import template_argument
 from .cursors import Node, from_standin, overloads
 from .handles import callback, callback_name, is_handle, join_name, qualified_name
 from .qos import qos as qos_of
+from .tested import TestedCalls
+from .tested import key as tested_key
 from .values import (
     BACKREF,
     CHOICE,
@@ -82,6 +84,9 @@ _WORD = re.compile(rb"\w+")
 _BUILTINS = frozenset({TypeKind.BOOL, TypeKind.INT, TypeKind.LONG, TypeKind.DOUBLE,
                        TypeKind.FLOAT, TypeKind.UINT, TypeKind.ULONG, TypeKind.LONGLONG})
 _THIS_CALLS = frozenset({"shared_from_this", "get", "weak_from_this"})
+# the types of a call that may return whether a parameter is there: ``bool``, or not
+# known until a template is instantiated
+_MAY_BE_BOOL = frozenset({TypeKind.BOOL, TypeKind.DEPENDENT, TypeKind.UNEXPOSED})
 
 
 @dataclass(frozen=True)
@@ -534,6 +539,8 @@ class Wrappers:
         for field, value in self._own(spec, args, shift, arg, fields, params, scope).items():
             if value is not None and value is not False:
                 own.setdefault(field, value)
+        if spec.kind == "read" and self._handles_absence(function, call):
+            own.setdefault("tested", True)
         row = dataclasses.replace(
             spec, name_arg=name_arg, optional_handle=False, name_candidates=(),
             out_arg=None, **fields)  # type: ignore[arg-type]
@@ -541,6 +548,25 @@ class Wrappers:
                        namespace if isinstance(namespace, str) else None,
                        inner.through | {_key(function.canonical)}, tuple(own.items()),
                        spec_param, spec_arg, spec_path)
+
+    def _handles_absence(self, function: Cursor, call: Cursor) -> bool:
+        """Whether ``function`` tests whether the parameter that ``call`` reads is there
+        (``call`` returns that, and is a condition in ``function``: ``tested``) and keeps
+        the answer to itself: it returns no ``bool`` that would hand it to its callers,
+        whose own tests then decide (ublox's ``getRosUint(node, key, u, default_val)``
+        sets ``u = default_val`` when ``getRosUint(node, key, u)`` says the parameter is
+        not there: each call of it has a default; the three-argument one returns that
+        answer, and a call site that tests it is ``tested`` there)."""
+        if call.type.get_canonical().kind not in _MAY_BE_BOOL or (
+                function.result_type.get_canonical().kind == TypeKind.BOOL):
+            return False  # (a call a template leaves to its instantiation: its type)
+        found = tested_key(call)
+        if found is None:
+            return False
+        calls = TestedCalls(self.finder.reader)
+        for node in function.walk_preorder():
+            calls.visit(node)
+        return found in calls.keys
 
     def _own(self, spec: api.RosFunction, args: list[Cursor], shift: int,
              arg: Callable[[int | None], Cursor | None], fields: dict[str, object],
@@ -616,8 +642,7 @@ class Wrappers:
         if of_class_template(function) and is_constructor(function):
             # a constructor of a class template: the class's first parameter is what a
             # construction's template argument gives (make_shared<Server<T>>)
-            templates = [c for c in function.semantic_parent.get_children()
-                         if c.kind == CursorKind.TEMPLATE_TYPE_PARAMETER]
+            templates = _class_parameters(function)
         sources: list[str] = []
         type_arg: int | None = None
 
@@ -920,10 +945,26 @@ def _template_parameter_index(ref: Cursor | None, function: Cursor) -> int | Non
     if decl is None or decl.kind != CursorKind.TEMPLATE_TYPE_PARAMETER:
         return None
     where = _key(decl)
-    params = _template_parameters(function.semantic_parent) if (
+    params = _class_parameters(function) if (
         of_class_template(function) and is_constructor(function)
     ) else _template_parameters(function)
     return next((i for i, p in enumerate(params) if _key(p) == where), None)
+
+
+def _class_parameters(constructor: Cursor) -> list[Cursor]:
+    """The template type parameters of a class template's constructor's class, as its
+    body names them: defined out of the class, its own template header declares them
+    again, first (depthai_bridge's ``template <class RosMsg, class SimMsg>
+    BridgePublisher<RosMsg, SimMsg>::BridgePublisher(..)``, whose body's ``RosMsg`` is
+    the header's); defined in the class, the class's."""
+    cls = constructor.semantic_parent
+    own = _template_parameters(cls) if cls is not None else []
+    lexical = constructor.lexical_parent
+    if lexical is not None and cls is not None and _key(lexical) != _key(cls):
+        header = _template_parameters(constructor)
+        if len(header) >= len(own):
+            return header[:len(own)]
+    return own
 
 
 _DEPENDENT_MEMBERS = re.compile(r"(?:typename\s+)?(\w+)((?:::\w+)+)")

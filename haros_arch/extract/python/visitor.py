@@ -20,7 +20,7 @@ from collections.abc import Callable
 
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
-from ...model.conditions import EACH_STATEMENT, Condition
+from ...model.conditions import EACH_STATEMENT, PARAMETER_VALUE, Condition
 from ...model.location import Location
 from ...model.source import PrimitiveCall
 from ...model.values import Unknown, Value
@@ -345,8 +345,6 @@ class Walker:
         if isinstance(statement, ast.AugAssign) or len(targets) != 1:
             return
         member = _self_member(targets[0])
-        if member is None or not _read_as_is(statement.value):
-            return
         last = getattr(statement, "end_lineno", None) or statement.lineno
         reads = [c for c in made if c.kind in ("read", "declare")]
         if member is None or len(reads) != 1 or not (
@@ -354,8 +352,16 @@ class Walker:
             and reads[0].location.file == self._where(frame, statement).file
         ):
             return
+        at = (reads[0].location.line, reads[0].location.column - 1)
+        if not _read_as_is(statement.value, at):
+            return
         if _member_writes(frame.module).get(member) == 1:
-            reads[0].variable = member
+            # rclpy's ``declare_parameter`` / ``get_parameter`` give the Parameter, whose
+            # ``.value`` a condition reads (``self.origin_param.value == 'auto'``)
+            reads[0].variable = member + PARAMETER_VALUE if (
+                isinstance(statement.value, ast.Call) and isinstance(
+                    statement.value.func, ast.Attribute)
+                and statement.value.func.attr in _PARAMETER_OBJECTS) else member
 
     _AnnAssign = _Assign
     _AugAssign = _Assign
@@ -923,6 +929,8 @@ _LAUNCHERS = frozenset({"main", "ROSLaunchParent", "ROSLaunch", "ROSLaunchRunner
 
 
 _IDENTIFIER = re.compile(r"[A-Za-z_]\w*")
+# rclpy's node methods that give a Parameter, not its value
+_PARAMETER_OBJECTS = frozenset({"declare_parameter", "get_parameter"})
 
 
 def _attribute_names(tree: ast.AST, skipped: set[int]) -> set[str]:
@@ -951,14 +959,21 @@ def _self_member(target: ast.expr) -> str | None:
     return None
 
 
-def _read_as_is(value: ast.expr | None) -> bool:
+def _read_as_is(value: ast.expr | None, read: tuple[int, int] | None = None) -> bool:
     """Whether an assigned value is a call's result as it is: a chain of attributes and
     method calls on a name (``self.get_parameter("x").value``,
     ``.get_parameter_value().bool_value``, ``rospy.get_param("~x", 1)``) whose calls take
-    no call's result, not a value computed from one (``float(..)``, ``x * 1000``)."""
+    no call's result, not a value computed from one (``float(..)``, ``x * 1000``). The
+    read itself (the call at ``read``: line, column from 0), a method called on a name,
+    may take calls' results: they make its name, default or descriptor, not its value
+    (``self.declare_parameter('origin', 'auto', descriptor=ParameterDescriptor(..))``,
+    marti_common's initialize_origin)."""
     while isinstance(value, ast.Attribute | ast.Call):
         if isinstance(value, ast.Call):
-            if any(isinstance(node, ast.Call) for argument in (
+            own = read is not None and (value.lineno, value.col_offset) == read and (
+                isinstance(value.func, ast.Attribute)
+                and isinstance(value.func.value, ast.Name))
+            if not own and any(isinstance(node, ast.Call) for argument in (
                     *value.args, *(k.value for k in value.keywords))
                    for node in ast.walk(argument)):
                 return False

@@ -260,6 +260,10 @@ class Expressions(Walker):
                                           f"{owner.name} as read here")
         if isinstance(owner, Context) and node.attr == "launch_configurations":
             return owner
+        if isinstance(owner, Context) and node.attr == "environment":
+            # the process's environment, as ``os.environ`` (depthai's camera.launch.py:
+            # ``context.environment.get("DEPTHAI_DEBUG")``)
+            return _Environ()
         if isinstance(owner, PurePosixPath) and node.attr in _PATH_ATTRIBUTES:
             return getattr(owner, node.attr)
         if isinstance(owner, e.DeclareArg) and node.attr == "name":

@@ -128,6 +128,8 @@ public:
   static Scalar all(double v);
   double operator[](int i) const;
   double& operator[](int i);
+  bool operator==(const Scalar& other) const;
+  bool operator!=(const Scalar& other) const;
   double val[4];
 };
 template<class T, int n> class Vec {
@@ -246,6 +248,7 @@ public:
   static Mat zeros(int rows, int cols, int type);
   static Mat zeros(Size size, int type);
   static Mat ones(int rows, int cols, int type);
+  static Mat ones(Size size, int type);
   static Mat eye(int rows, int cols, int type);
   int rows, cols, dims, flags;
   uchar* data;
@@ -328,7 +331,8 @@ void warpPerspective(const Mat& src, Mat& dst, const Mat& m, Size size, int flag
 Mat getRotationMatrix2D(Point2f center, double angle, double scale);
 void dilate(const Mat& src, Mat& dst, const Mat& kernel);
 void erode(const Mat& src, Mat& dst, const Mat& kernel);
-Mat getStructuringElement(int shape, Size size);
+enum { MORPH_RECT = 0, MORPH_CROSS = 1, MORPH_ELLIPSE = 2 };
+Mat getStructuringElement(int shape, Size size, Point anchor = Point(-1, -1));
 // core/eigen.hpp: between OpenCV and Eigen matrices
 template<class M> void cv2eigen(const Mat& src, M& dst);
 template<class M> void eigen2cv(const M& src, Mat& dst);

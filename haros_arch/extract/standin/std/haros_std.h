@@ -994,6 +994,8 @@ public:
   fmtflags flags(fmtflags f);
   long width() const;
   long width(long w);
+  char fill() const;
+  char fill(char c);
   int precision(int p);
   class streambuf* rdbuf() const;
   typedef int iostate;

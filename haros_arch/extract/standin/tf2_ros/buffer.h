@@ -40,8 +40,11 @@ class ConnectivityException : public TransformException { public: using Transfor
 class ExtrapolationException : public TransformException { public: using TransformException::TransformException; };
 class InvalidArgumentException : public TransformException { public: using TransformException::TransformException; };
 class TimeoutException : public TransformException { public: using TransformException::TransformException; };
-struct TimePointZero_t {};
-extern const TimePointZero_t TimePointZero;
+using Duration = std::chrono::nanoseconds;
+using TimePoint = std::chrono::time_point<std::chrono::system_clock, Duration>;
+// tf2's ``TimePoint(Duration::zero())``, a time point as any other (swri_transform_util's
+// ``GetTransform(target, source, tf2::TimePointZero, transform)`` takes a TimePoint)
+extern const TimePoint TimePointZero;
 typedef double tf2Scalar;
 class Quaternion {
 public:
@@ -56,6 +59,8 @@ public:
   double getX() const; double getY() const; double getZ() const; double getW() const;
   void setX(double v); void setY(double v); void setZ(double v); void setW(double v);
   void setValue(double x, double y, double z, double w);
+  // tf2's QuadWord converts to its array of four: ``q[0]`` is x
+  double operator[](int i) const; double& operator[](int i);
   double getAngle() const;
   double getAngleShortestPath() const;
   class Vector3 getAxis() const;
@@ -142,8 +147,6 @@ public:
   Vector3 operator*(const Vector3& v) const;
   static const Transform& getIdentity();
 };
-using Duration = std::chrono::nanoseconds;
-using TimePoint = std::chrono::time_point<std::chrono::system_clock, Duration>;
 // a stamped datum: ROS 2's tf2 stamps it with its own TimePoint, ROS 1's with ros::Time
 // (a unit that has included rclcpp is ROS 2's: robot_localization's
 // ``pose.stamp_ = tf2::timeFromSec(...)``)
