@@ -942,3 +942,55 @@ def test_shared_from_this_of_a_class_that_is_no_node_is_not_the_node(write_tree)
     both = _server(write_tree, module + node)
     assert [(d.code, d.location.line) for d in both.diagnostics
             if d.code == "CPP_NODE_TO_UNKNOWN"] == [("CPP_NODE_TO_UNKNOWN", 15)]
+
+
+def test_casts_between_declared_classes_keep_the_calls(write_tree) -> None:
+    """A simulator's model classes from a missing header (stage_ros' ``Stg::Model`` and
+    ``Stg::ModelPosition`` of <stage.hh>): a ``static_cast`` from a pointer to one to a
+    pointer to the other in an advertise call's arguments, and a ``dynamic_cast`` of a
+    pointer to the base, were errors left on the declared classes (not related by
+    inheritance, not polymorphic) that cost the calls; the classes now derive and have a
+    virtual destructor, and the calls are there."""
+    root = write_tree({
+        "sim/package.xml": package_xml("sim", "catkin").replace(
+            "</package>", "<depend>roscpp</depend></package>"),
+        "sim/src/sim.cpp": (
+            "#include <ros/ros.h>\n#include <std_msgs/String.h>\n#include <stage.hh>\n"
+            "const char *topic(const char *name, Stg::Model *mod) { return name; }\n"
+            "int main(int argc, char **argv) {\n"
+            "  ros::init(argc, argv, \"sim\");\n  ros::NodeHandle n;\n"
+            "  Stg::Model *mod = Stg::World::Find(\"robot\");\n"
+            "  Stg::ModelPosition *pos = dynamic_cast<Stg::ModelPosition *>(mod);\n"
+            "  ros::Publisher odom = n.advertise<std_msgs::String>(\n"
+            "      topic(\"odom\", static_cast<Stg::Model *>(pos)), 10);\n"
+            "  if (Stg::ModelRanger *r = dynamic_cast<Stg::ModelRanger *>(mod))\n"
+            "    n.advertise<std_msgs::String>(\"scan\", 10);\n"
+            "  ros::spin();\n}\n")})
+    result = extract_cpp([str(root / "sim" / "src" / "sim.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    # the name a function of the node returns is not followed: '?', as stage_ros' are
+    assert [(c.kind, c.name, c.location.line) for c in result.calls] == [
+        ("publish", "?", 10), ("publish", "scan", 13)]
+    assert not [d for d in result.diagnostics if d.code in (
+        "CPP_CALL_MISSED", "CPP_ERROR_NEAR_CALL", "CPP_PARSE_ERROR")]
+
+
+def test_every_call_of_a_missing_c_librarys_function_is_declared_at_once() -> None:
+    """gscam's GStreamer (<gst/gst.h> missing): ``GstCaps *caps = gst_app_sink_get_caps(
+    ...)`` shows clang's error on ``GstCaps`` only, its function one parse later, and
+    another statement's functions later still: the rounds ran out with errors left in the
+    function that advertises the node's publishers. Every call in the file of a function
+    named after the library is declared with the first error; not one the file declares
+    itself (a word or a ``*`` before it on its line), nor one of another prefix."""
+    names = synthesis.Names(libraries=synthesis.library_prefixes(
+        ["header gst/gst.h not found; an empty stand-in was used"]))
+    text = (b"GstCaps *gst_own_helper(int depth);\n"
+            b"void start() {\n  GstCaps *caps = gst_app_sink_get_caps(sink);\n"
+            b"#endif\n  gst_app_sink_set_caps(sink, caps);\n"
+            b"  if (ok) { helper_call(caps); }\n}\n")
+    names.learn([("unknown type name 'GstCaps'", text, text.index(b"GstCaps *caps"))])
+    header = names.header()
+    for value in ("gst_app_sink_get_caps", "gst_app_sink_set_caps"):
+        assert f"extern haros_any {value};" in header
+    assert "gst_own_helper" not in header
+    assert "helper_call" not in header

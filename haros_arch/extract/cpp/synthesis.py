@@ -82,6 +82,16 @@ _POINTER_TO = re.compile(
     r"of type '(?:const )?([\w:]+) \*' with an [lr]value of type '(?:const )?([\w:]+) \*'"
     r"|(?:incompatible pointer types )?assigning to '(?:const )?([\w:]+) \*' from "
     r"(?:incompatible type )?'(?:const )?([\w:]+) \*')")
+# a pointer to one declared class cast to a pointer to another (stage_ros'
+# ``static_cast<Stg::Model*>(robot->positionmodel)``, a ``Stg::ModelPosition *``, in the
+# arguments of its advertise calls): one derives from the other, either way round, so
+# the cast is an up- or a down-cast
+_CAST_UNRELATED = re.compile(
+    r"^static_cast from '(?:const )?([\w:]+) \*' to '(?:const )?([\w:]+) \*', which are "
+    r"not related by inheritance")
+# a ``dynamic_cast`` of a pointer to a declared class (stage_ros' ``dynamic_cast<Stg::
+# ModelRanger *>(mod)`` of a ``Stg::Model *``): the class has a virtual destructor
+_NOT_POLYMORPHIC = re.compile(r"^'([\w:]+)' is not polymorphic")
 # the same, in the note of a candidate of a call no overload takes (``_Error.notes``)
 _NOT_CONVERTED = re.compile(
     r"^candidate .*no known conversion from '(?:const )?([\w:]+) \*' to "
@@ -344,6 +354,7 @@ class _Name:
     children: dict[str, _Name] = field(default_factory=dict)
     # the declared class a pointer to this one was given for (``_POINTER_TO``): its base
     base: str | None = None
+    polymorphic: bool = False  # ``_NOT_POLYMORPHIC``: declared with a virtual destructor
 
 
 _MACRO_SPAN = 4000  # bytes of a macro call searched for a name clang placed at the macro
@@ -521,6 +532,36 @@ class Names:
                 ):
                     continue  # the stand-ins have it (autoware_utils' polling subscriber)
                 self._from_source(text, found.start(), "any", [])
+        self._spread_calls()
+
+    def _spread_calls(self) -> None:
+        """Every call in the files read of a function named after a C library whose
+        header is missing (``library_prefixes``): clang reports one unknown name of a
+        statement, and none in a declaration whose type is unknown (gscam's ``GstCaps *caps
+        = gst_app_sink_get_caps(...)``: ``GstCaps`` first, the function only on the next
+        parse, which the rounds had run out of, so the function that makes the node's
+        publishers kept an error). Not a name written on its line after another word or
+        a ``*`` / ``&`` (a declaration of the workspace's own)."""
+        if not self.libraries:
+            return
+        words = b"|".join(re.escape(p.encode()) for p in sorted(self.libraries, key=len)[::-1])
+        pattern = re.compile(rb"(?<![\w:.>])((?:" + words + rb")_\w+)\s*\(")
+        for text in self._texts:
+            if (id(text), "\0calls") in self._spread_done:
+                continue
+            self._spread_done.add((id(text), "\0calls"))
+            for found in pattern.finditer(text):
+                if self.count >= MAX_NAMES:
+                    return
+                name = found.group(1).decode()
+                if name in self.root.children or name in self.friends:
+                    continue
+                before = text[text.rfind(b"\n", 0, found.start()) + 1:found.start()].rstrip()
+                last = before[-1:]
+                word = last.isalnum() or last == b"_"
+                if last and (last in b"*&" or (word and not before.endswith(b"return"))):
+                    continue
+                self._from_source(text, found.start(), "any", [])
 
     def read_members(self, texts: Iterable[bytes]) -> None:
         """Every name the code reads after ``.`` or ``->``, and every value it reads from
@@ -586,6 +627,17 @@ class Names:
             wanted, given = (pointer.group(1), pointer.group(2)) if pointer.group(1) else (
                 pointer.group(3), pointer.group(4))
             self._derive(given, wanted)
+            return
+        cast = _CAST_UNRELATED.match(message)
+        if cast is not None:
+            self._derive(cast.group(1), cast.group(2))
+            return
+        polymorphic = _NOT_POLYMORPHIC.match(message)
+        if polymorphic is not None:
+            path = self._class_path(polymorphic.group(1))
+            if path is not None and not self._node("::".join(path)).polymorphic:
+                self._node("::".join(path)).polymorphic = True
+                self.count += 1
             return
         ambiguous = _AMBIGUOUS.match(message)
         if ambiguous is not None:
@@ -992,6 +1044,7 @@ def _render(name: str, node: _Name, indent: str, nested: bool, values: _Values,
     return [f"{indent}{head}struct {name} : haros_any {{",
             f"{indent}  using haros_any::haros_any;",
             f"{indent}  using haros_any::operator=;",
+            *([f"{indent}  virtual ~{name}();"] if node.polymorphic else []),
             *inner, f"{indent}}};"]
 
 
