@@ -987,10 +987,12 @@ def test_every_call_of_a_missing_c_librarys_function_is_declared_at_once() -> No
     text = (b"GstCaps *gst_own_helper(int depth);\n"
             b"void start() {\n  GstCaps *caps = gst_app_sink_get_caps(sink);\n"
             b"#endif\n  gst_app_sink_set_caps(sink, caps);\n"
-            b"  if (ok) { helper_call(caps); }\n}\n")
+            b"  if (ok) { helper_call(caps); }\n}\n"
+            b"Sink::Sink() : gst_sink_(nullptr) {}\n")
     names.learn([("unknown type name 'GstCaps'", text, text.index(b"GstCaps *caps"))])
     header = names.header()
     for value in ("gst_app_sink_get_caps", "gst_app_sink_set_caps"):
         assert f"extern haros_any {value};" in header
     assert "gst_own_helper" not in header
     assert "helper_call" not in header
+    assert "gst_sink_" not in header  # a member initialised

@@ -541,7 +541,8 @@ class Names:
         = gst_app_sink_get_caps(...)``: ``GstCaps`` first, the function only on the next
         parse, which the rounds had run out of, so the function that makes the node's
         publishers kept an error). Not a name written on its line after another word or
-        a ``*`` / ``&`` (a declaration of the workspace's own)."""
+        a ``*`` / ``&`` (a declaration of the workspace's own), nor one ending in ``_``
+        (motoman's ``robot_id_(robot_id)``, a member initialised, under ``robot``)."""
         if not self.libraries:
             return
         words = b"|".join(re.escape(p.encode()) for p in sorted(self.libraries, key=len)[::-1])
@@ -554,8 +555,8 @@ class Names:
                 if self.count >= MAX_NAMES:
                     return
                 name = found.group(1).decode()
-                if name in self.root.children or name in self.friends:
-                    continue
+                if name in self.root.children or name in self.friends or name.endswith("_"):
+                    continue  # (``robot_id_(id)``: a member in an initialiser list)
                 before = text[text.rfind(b"\n", 0, found.start()) + 1:found.start()].rstrip()
                 last = before[-1:]
                 word = last.isalnum() or last == b"_"
