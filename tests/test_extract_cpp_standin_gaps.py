@@ -608,3 +608,23 @@ def test_ros1_bind_with_nine_placeholders(write_tree) -> None:
     result = _extract(write_tree, _source("ros1_bind_many_placeholders.cpp"), "catkin")
     assert _errors(result) == []
     assert [(c.kind, c.name) for c in result.calls] == [("publish", "out")]
+
+
+def test_ros1_time_bounds_and_compound_assignments(write_tree) -> None:
+    """novatel_gps_driver's nodelet shifts each message's stamp by a rolling offset
+    (``msg->header.stamp += sync_offset``) and starts its sync time at ``ros::TIME_MIN``:
+    errors in the functions that publish its messages, which made it partial."""
+    source = (
+        "#include <ros/ros.h>\n#include <std_msgs/Header.h>\n"
+        "ros::Time last = ros::TIME_MIN;\n"
+        "int main(int argc, char **argv) {\n"
+        "  ros::init(argc, argv, \"stamper\");\n  ros::NodeHandle nh;\n"
+        "  std_msgs::Header h;\n  ros::Duration offset(0.5);\n"
+        "  h.stamp += offset;\n  h.stamp -= -offset;\n  offset *= 2.0;\n"
+        "  offset += ros::DURATION_MIN;\n"
+        "  if (last != ros::TIME_MIN && offset != ros::DURATION_MAX && h.stamp < ros::TIME_MAX) {\n"
+        "    ros::Publisher pub = nh.advertise<std_msgs::Header>(\"stamped\", 1);\n  }\n"
+        "  ros::spin();\n}\n")
+    result = _extract(write_tree, source, "catkin")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "stamped")]
