@@ -308,8 +308,10 @@ _PRELUDE = """\
 enum haros_integral : long long {};
 struct haros_any {
   template <class... A> haros_any(A &&...) {}
-  // braces of braces (naoqi's ``boost::array<double, 9>{{556.8, 0, 309.4, ...}}``)
-  haros_any(std::initializer_list<haros_any>);
+  // braces of braces (naoqi's ``boost::array<double, 9>{{556.8, 0, 309.4, ...}}``); not
+  // an initializer_list, which list-initialisation would prefer for flat braces too
+  // (``debug_{this, "~/debug"}``, the node given to a vendor's class: CPP_NODE_TO_UNKNOWN)
+  template <decltype(sizeof 0) N> haros_any(const haros_any (&)[N]);
   template <class T> operator T &() const;
   haros_any *operator->() const;
   haros_any &operator*() const;
