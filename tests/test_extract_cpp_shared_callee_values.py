@@ -138,3 +138,54 @@ def test_a_delegating_constructor_nobody_calls_gives_no_name(write_tree) -> None
     sources = [str(root / "hub" / "src" / f) for f in ("main.cpp", "router.cpp")]
     result = extract_cpp(sources, scan([str(root)]), cache_dir=None)
     assert sorted(result.rosnames) == ["hub_node", "hub_router"]
+
+
+CONFIG_HEADER = """\
+#pragma once
+#include <string>
+#include <ros/ros.h>
+namespace cfg {
+double readValue(const ros::NodeHandle & nh, const std::string & field);
+double readScaled(const ros::NodeHandle & nh, const std::string & field);
+}  // namespace cfg
+"""
+CONFIG_SOURCE = """\
+#include "cfg/config.h"
+namespace cfg {
+double readValue(const ros::NodeHandle & nh, const std::string & field) {
+  double value = 0.0;
+  nh.getParam(field, value);
+  return value;
+}
+double readScaled(const ros::NodeHandle & nh, const std::string & field) {
+  return 2.0 * readValue(nh, field);
+}
+}  // namespace cfg
+"""
+CONFIG_MAIN = """\
+#include "cfg/config.h"
+int main(int argc, char ** argv) {
+  ros::init(argc, argv, "tracker");
+  ros::NodeHandle nh("~");
+  double gain = cfg::readValue(nh, "gain");
+  double offset = cfg::readScaled(nh, "offset");
+  return 0;
+}
+"""
+
+
+def test_a_free_wrapper_its_own_file_calls_takes_every_files_names(write_tree) -> None:
+    """msckf_vio's ``utils::getTransformCV(nh, field)``, a wrapper of ``getParam`` defined
+    in utils.cpp, is called there by ``getTransformEigen(nh, field)`` and in
+    image_processor.cpp with "cam0/T_cam_imu": the image processor's reads of its
+    transforms were lost, as the wrapper's calls were named at its own file's call site
+    only (named by getTransformEigen's callers: none in that node)."""
+    root = write_tree({"cfg/package.xml": package_xml("cfg", "catkin").replace(
+                           "</package>", "<depend>roscpp</depend></package>"),
+                       "cfg/include/cfg/config.h": CONFIG_HEADER,
+                       "cfg/src/config.cpp": CONFIG_SOURCE,
+                       "cfg/src/main.cpp": CONFIG_MAIN})
+    sources = [str(root / "cfg" / "src" / f) for f in ("main.cpp", "config.cpp")]
+    result = extract_cpp(sources, scan([str(root)]), cache_dir=None)
+    assert sorted((c.kind, c.name) for c in result.calls) == [
+        ("read", "~gain"), ("read", "~offset")]

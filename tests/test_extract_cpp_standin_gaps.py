@@ -608,3 +608,51 @@ def test_ros1_bind_with_nine_placeholders(write_tree) -> None:
     result = _extract(write_tree, _source("ros1_bind_many_placeholders.cpp"), "catkin")
     assert _errors(result) == []
     assert [(c.kind, c.name) for c in result.calls] == [("publish", "out")]
+
+
+def test_ros1_time_bounds_and_compound_assignments(write_tree) -> None:
+    """novatel_gps_driver's nodelet shifts each message's stamp by a rolling offset
+    (``msg->header.stamp += sync_offset``) and starts its sync time at ``ros::TIME_MIN``:
+    errors in the functions that publish its messages, which made it partial."""
+    source = (
+        "#include <ros/ros.h>\n#include <std_msgs/Header.h>\n"
+        "ros::Time last = ros::TIME_MIN;\n"
+        "int main(int argc, char **argv) {\n"
+        "  ros::init(argc, argv, \"stamper\");\n  ros::NodeHandle nh;\n"
+        "  std_msgs::Header h;\n  ros::Duration offset(0.5);\n"
+        "  h.stamp += offset;\n  h.stamp -= -offset;\n  offset *= 2.0;\n"
+        "  offset += ros::DURATION_MIN;\n"
+        "  if (last != ros::TIME_MIN && offset != ros::DURATION_MAX && h.stamp < ros::TIME_MAX) {\n"
+        "    ros::Publisher pub = nh.advertise<std_msgs::Header>(\"stamped\", 1);\n  }\n"
+        "  ros::spin();\n}\n")
+    result = _extract(write_tree, source, "catkin")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "stamped")]
+
+
+def test_ros1_opencv_regions_as_small_matrices_and_a_time_synchronizers_inputs(
+        write_tree) -> None:
+    """msckf_vio's image processor reads its camera transforms into ``cv::Matx33d`` and
+    ``cv::Vec3d`` from regions of a ``cv::Mat``, transposes and negates them, and connects
+    its stereo ``TimeSynchronizer`` built with a queue size only: 8 errors in the
+    functions that read its parameters and subscribe, which made it partial."""
+    source = (
+        "#include <ros/ros.h>\n#include <opencv2/opencv.hpp>\n"
+        "#include <sensor_msgs/Image.h>\n#include <message_filters/subscriber.h>\n"
+        "#include <message_filters/time_synchronizer.h>\n"
+        "int main(int argc, char **argv) {\n"
+        "  ros::init(argc, argv, \"stereo\");\n  ros::NodeHandle nh(\"~\");\n"
+        "  cv::Mat T = cv::Mat::eye(4, 4, CV_64FC1);\n"
+        "  cv::Matx33d R(T(cv::Rect(0, 0, 3, 3)));\n"
+        "  cv::Vec3d t = T(cv::Rect(3, 0, 1, 3));\n"
+        "  cv::Matx33d R_inv = R.t();\n  cv::Vec3d t_inv = -R.t() * t;\n"
+        "  cv::Matx13d row = t.t();\n"
+        "  message_filters::Subscriber<sensor_msgs::Image> left, right;\n"
+        "  message_filters::TimeSynchronizer<sensor_msgs::Image, sensor_msgs::Image> sync(10);\n"
+        "  left.subscribe(nh, \"cam0_image\", 10);\n  right.subscribe(nh, \"cam1_image\", 10);\n"
+        "  sync.connectInput(left, right);\n"
+        "  ros::spin();\n}\n")
+    result = _extract(write_tree, source, "catkin")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("subscribe", "~cam0_image"), ("subscribe", "~cam1_image")]

@@ -942,3 +942,139 @@ def test_shared_from_this_of_a_class_that_is_no_node_is_not_the_node(write_tree)
     both = _server(write_tree, module + node)
     assert [(d.code, d.location.line) for d in both.diagnostics
             if d.code == "CPP_NODE_TO_UNKNOWN"] == [("CPP_NODE_TO_UNKNOWN", 15)]
+
+
+def test_casts_between_declared_classes_keep_the_calls(write_tree) -> None:
+    """A simulator's model classes from a missing header (stage_ros' ``Stg::Model`` and
+    ``Stg::ModelPosition`` of <stage.hh>): a ``static_cast`` from a pointer to one to a
+    pointer to the other in an advertise call's arguments, and a ``dynamic_cast`` of a
+    pointer to the base, were errors left on the declared classes (not related by
+    inheritance, not polymorphic) that cost the calls; the classes now derive and have a
+    virtual destructor, and the calls are there."""
+    root = write_tree({
+        "sim/package.xml": package_xml("sim", "catkin").replace(
+            "</package>", "<depend>roscpp</depend></package>"),
+        "sim/src/sim.cpp": (
+            "#include <ros/ros.h>\n#include <std_msgs/String.h>\n#include <stage.hh>\n"
+            "const char *topic(const char *name, Stg::Model *mod) { return name; }\n"
+            "int main(int argc, char **argv) {\n"
+            "  ros::init(argc, argv, \"sim\");\n  ros::NodeHandle n;\n"
+            "  Stg::Model *mod = Stg::World::Find(\"robot\");\n"
+            "  Stg::ModelPosition *pos = dynamic_cast<Stg::ModelPosition *>(mod);\n"
+            "  ros::Publisher odom = n.advertise<std_msgs::String>(\n"
+            "      topic(\"odom\", static_cast<Stg::Model *>(pos)), 10);\n"
+            "  if (Stg::ModelRanger *r = dynamic_cast<Stg::ModelRanger *>(mod))\n"
+            "    n.advertise<std_msgs::String>(\"scan\", 10);\n"
+            "  ros::spin();\n}\n")})
+    result = extract_cpp([str(root / "sim" / "src" / "sim.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    # the name a function of the node returns is not followed: '?', as stage_ros' are
+    assert [(c.kind, c.name, c.location.line) for c in result.calls] == [
+        ("publish", "?", 10), ("publish", "scan", 13)]
+    assert not [d for d in result.diagnostics if d.code in (
+        "CPP_CALL_MISSED", "CPP_ERROR_NEAR_CALL", "CPP_PARSE_ERROR")]
+
+
+def test_every_call_of_a_missing_c_librarys_function_is_declared_at_once() -> None:
+    """gscam's GStreamer (<gst/gst.h> missing): ``GstCaps *caps = gst_app_sink_get_caps(
+    ...)`` shows clang's error on ``GstCaps`` only, its function one parse later, and
+    another statement's functions later still: the rounds ran out with errors left in the
+    function that advertises the node's publishers. Every call in the file of a function
+    named after the library is declared with the first error; not one the file declares
+    itself (a word or a ``*`` before it on its line), nor one of another prefix."""
+    names = synthesis.Names(libraries=synthesis.library_prefixes(
+        ["header gst/gst.h not found; an empty stand-in was used"]))
+    text = (b"GstCaps *gst_own_helper(int depth);\n"
+            b"void start() {\n  GstCaps *caps = gst_app_sink_get_caps(sink);\n"
+            b"#endif\n  gst_app_sink_set_caps(sink, caps);\n"
+            b"  if (ok) { helper_call(caps); }\n}\n"
+            b"Sink::Sink() : gst_sink_(nullptr) {}\n"
+            b"Pipe::Pipe() : gst_caps_pool(4),\n    gst_bus_pool(2) {}\n")
+    names.learn([("unknown type name 'GstCaps'", text, text.index(b"GstCaps *caps"))])
+    header = names.header()
+    for value in ("gst_app_sink_get_caps", "gst_app_sink_set_caps"):
+        assert f"extern haros_any {value};" in header
+    assert "gst_own_helper" not in header
+    assert "helper_call" not in header
+    assert "gst_sink_" not in header  # members initialised
+    assert "gst_caps_pool" not in header and "gst_bus_pool" not in header
+
+
+NODELET_WITH_VENDOR_MEMBERS = (
+    "#include <ros/ros.h>\n#include <nodelet/nodelet.h>\n#include <std_srvs/Empty.h>\n"
+    "#include <vendor/buffer.h>\n#include <vendor/accumulators.h>\n"
+    "namespace stats = vendor::accumulators;\n"
+    "class Gps : public nodelet::Nodelet {\n public:\n"
+    "  void onInit() override {\n"
+    "    ros::NodeHandle &priv = getPrivateNodeHandle();\n"
+    "    reset_ = priv.advertiseService(\"freset\", &Gps::reset, this);\n  }\n"
+    "  bool reset(std_srvs::Empty::Request &, std_srvs::Empty::Response &) { return true; }\n"
+    "  ros::ServiceServer reset_;\n"
+    "  vendor::Buffer<unsigned char, 10000> socket_buffer_;\n"
+    "  stats::accumulator_set<float, stats::stats<stats::tag::max, stats::tag::min,\n"
+    "      stats::tag::mean, stats::tag::variance> > offset_stats_;\n"
+    "  double k_[9] = {0};\n"
+    "  vendor::Buffer<double, 9> matrix_ =\n"
+    "      vendor::Buffer<double, 9>{{1, 0, 0, 0, 1, 0, 0, 0, 1}};\n"
+    "};\n")
+
+
+def test_vendor_members_of_a_nodelet_keep_its_class_valid(write_tree) -> None:
+    """novatel_gps_driver's nodelet has a ``boost::array<uint8_t, 10000>`` (its boost
+    header missing: a declared template of types only, which a value made an error) and
+    boost accumulators through a namespace alias of a missing header, whose names came
+    one per parse (``stats::tag::max``, then ``min``, ...: the alias was taken for a
+    namespace the code defines, and not spread). Either left a member invalid, so the
+    class, so ``getPrivateNodeHandle()`` on it: its ``freset`` service was ``?/freset``.
+    A declared template takes a value where the code gives one (naoqi's
+    ``boost::array<double, 9>{{...}}`` too, braces of braces)."""
+    root = write_tree({
+        "gps/package.xml": package_xml("gps", "catkin").replace(
+            "</package>", "<depend>roscpp</depend><depend>nodelet</depend></package>"),
+        "gps/src/gps.cpp": NODELET_WITH_VENDOR_MEMBERS})
+    result = extract_cpp([str(root / "gps" / "src" / "gps.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    assert [(c.kind, c.name) for c in result.calls] == [("server", "~freset")]
+    # the alias of a namespace nobody declares stays an error (``stats`` is declared on
+    # its own, its names spread), in code that makes no call
+    assert [(d.location.line, d.message) for d in result.diagnostics
+            if d.code == "CPP_PARSE_ERROR"] == [(6, "C++ error: expected namespace name")]
+    names = synthesis.Names()
+    text = (b"vendor::Buffer<unsigned char, 10000> a;\nvendor::Grid<3> g;\n"
+            b"auto p = vendor::make<vendor::io::Builder>();\n")
+    names.learn([("no template named 'Buffer' in namespace 'vendor'", text,
+                  text.index(b"Buffer")),
+                 ("no template named 'Grid' in namespace 'vendor'", text,
+                  text.index(b"Grid")),
+                 ("no template named 'make' in namespace 'vendor'", text,
+                  text.index(b"make"))])
+    names.learn([("template argument for template type parameter must be a type", text,
+                  text.index(b"10000")),
+                 ("template argument for template type parameter must be a type", text,
+                  text.index(b"3>")),
+                 # a type the parse took for a value: no value parameter there
+                 ("template argument for template type parameter must be a type", text,
+                  text.index(b"vendor::io"))])
+    header = names.header()
+    assert ("template <class T0 = haros_any, long long V1 = 0, class... T> struct Buffer"
+            in header)
+    assert "template <long long V0 = 0, class... T> struct Grid" in header
+    assert "template <class... T> struct make" in header
+
+
+def test_every_use_of_a_declared_template_gives_its_values_at_once() -> None:
+    """A-LOAM's ``ceres::AutoDiffCostFunction<LidarEdgeFactor, 3, 4, 3>`` (<ceres/ceres.h>
+    missing): clang names one value argument per template-id and parse, and none before
+    the template is declared; the numbers written in the files read are values from the
+    first parse on. A name, even in capitals (``Foo<T>``), stays a type unless an error
+    says it is a value."""
+    names = synthesis.Names()
+    text = (b"auto *f = new ceres::AutoDiffCostFunction<LidarEdgeFactor, 3, 4, 3>(c);\n"
+            b"ceres::Foo<T> foo;\n")
+    names.learn([("no template named 'AutoDiffCostFunction' in namespace 'ceres'", text,
+                  text.index(b"AutoDiff")),
+                 ("no template named 'Foo' in namespace 'ceres'", text, text.index(b"Foo"))])
+    header = names.header()
+    assert ("template <class T0 = haros_any, long long V1 = 0, long long V2 = 0, "
+            "long long V3 = 0, class... T> struct AutoDiffCostFunction") in header
+    assert "template <class... T> struct Foo" in header

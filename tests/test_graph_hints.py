@@ -135,3 +135,24 @@ def test_an_absolute_name_from_a_parameter_ignores_the_handles_namespace():
                layer("l3", "image_raw")])
     assert sorted(t.name for t in config.topics) == [
         "/camera/depth", "/head_camera/image_raw", "/relative/costmap/obstacles/image_raw"]
+
+
+def test_a_handle_namespace_from_a_parameter_takes_its_value_then_remaps():
+    # pointgrey's stereo nodelet: ``pnh.param("first_namespace", firstcam, "left");
+    # ros::NodeHandle lnh(nh, firstcam); it.advertiseCamera("image_raw", 5)`` on lnh:
+    # the handle's namespace is the parameter's value, resolved and remapped first
+    def stereo(executable):
+        n = node("p", executable, call("publish", "?/image_raw", "sensor_msgs/Image"))
+        n.calls[0].handle_namespace = "?"
+        n.calls[0].name_param = "~first_namespace"
+        n.calls[0].name_default = "left"
+        return n
+
+    config = graph(
+        [NodeDecl("/cam/set", "p", "s1", "/cam/"), NodeDecl("/cam/unset", "p", "s2", "/cam/"),
+         NodeDecl("/cam/remapped", "p", "s3", "/cam/", remaps=[("front", "/front_cam")])],
+        params=[ParamDecl("/cam/set/first_namespace", "wide", "str"),
+                ParamDecl("/cam/remapped/first_namespace", "front", "str")],
+        nodes=[stereo("s1"), stereo("s2"), stereo("s3")])
+    assert sorted(t.name for t in config.topics) == [
+        "/cam/left/image_raw", "/cam/wide/image_raw", "/front_cam/image_raw"]

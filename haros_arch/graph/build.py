@@ -604,6 +604,14 @@ def resolved_name(instance: NodeInstance, call: PrimitiveCall, remaps: Mapping[s
                   resources: Resources) -> RosName:
     """The name a call of ``instance`` resolves to, remapped."""
     given = _given_name(call, instance, resources)
+    namespace = call.handle_namespace
+    if namespace and UNKNOWN_MARK in namespace and call.name.startswith(namespace + "/") and (
+        given != call.name and given.endswith(call.name[len(namespace):])
+    ):
+        # the handle's namespace was the ``?`` a parameter's value filled (pointgrey's
+        # ``NodeHandle lnh(nh, firstcam)``): the handle's, resolved and remapped first
+        call = replace(call, handle_namespace=given[:len(given) - len(call.name) + len(
+            namespace)])
     rosname = _handle_name(given, call, instance, remaps) or RosName.make(
         given, instance.namespace, instance.name, remaps)
     if call.searched:

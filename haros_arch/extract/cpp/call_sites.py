@@ -112,8 +112,11 @@ class CallSites:
         every file's calls (``links``). A function defined in a header is read by every
         unit that includes it, each with its own calls (nav2's ``LifecycleNode(name, ns,
         options)``)."""
-        if function is None or self.main is None or function.kind != CursorKind.CONSTRUCTOR:
-            # a constructor's: a method's values (a handle's namespace, a name) come
+        if function is None or self.main is None or function.kind not in (
+                CursorKind.CONSTRUCTOR, CursorKind.FUNCTION_DECL):
+            # a constructor's, or a free function's (msckf_vio's ``utils::getTransformCV(
+            # nh, field)``, called in utils.cpp and with its transforms' names in
+            # image_processor.cpp): a method's values (a handle's namespace, a name) come
             # through its own class's code, a virtual one's from the host's calls of the
             # methods it overrides (``links.OVERRIDES``, ``HOST_NAMED``)
             return False
@@ -125,6 +128,11 @@ class CallSites:
         if definition is None or _defined_in(definition) != self.main:
             return False
         return canonical.linkage == LinkageKind.EXTERNAL
+
+    def shared(self, function: Cursor) -> bool:
+        """Whether the node's other files may call ``function`` (``_shared``), when its
+        string parameters are placeholders (``external``)."""
+        return self.external and self._shared(function)
 
     def placeholder(self, parm: Cursor) -> str | None:
         """The placeholder part of ``parm`` (None for a parameter of no function)."""

@@ -115,6 +115,13 @@ class Namespaces:
         # the writes of the unit's global variables in its main file's functions (see
         # ``_global_value``), found once
         self._globals: dict[tuple[str, int], list[Cursor]] | None = None
+        # the string that gave the last namespace asked (``of``) its one unknown run,
+        # with the scope it reads in: ``ros::NodeHandle lnh(nh, firstcam)`` where
+        # ``firstcam`` holds a parameter's value (pointgrey's stereo nodelet's
+        # ``first_namespace``), for the call to name that parameter (``name_param``);
+        # None when no string or several gave one
+        self.unknown_from: tuple[Cursor, Scope] | None = None
+        self._unknown_count = 0
 
     def of_call(self, call: Cursor, callee: Cursor, scope: Scope) -> Parts:
         """The namespace of the handle or node a member call is made on."""
@@ -132,7 +139,11 @@ class Namespaces:
 
     def of(self, expr: Cursor, scope: Scope, depth: int = 0) -> Parts:
         """The namespace of the handle ``expr`` stands for."""
+        if depth == 0:
+            self.unknown_from, self._unknown_count = None, 0
         found = self._namespace(expr, scope, depth)
+        if depth == 0 and self._unknown_count != 1:
+            self.unknown_from = None
         if (found == UNKNOWN or any(PLACEHOLDER in (p or "") for p in found)) and (
             is_ros2_node(record_class(expr))
         ):
@@ -220,8 +231,17 @@ class Namespaces:
             if len(args) == 1 or owner != api.NODE_HANDLE:
                 return (parent,)
             child = render(scope.string(args[1]))
+            self._unknown(child, args[1], scope)
             return (normalise(join_name(parent, child)) if parent else normalise(child),)
-        return (normalise(render(scope.string(args[0]))),)
+        written = render(scope.string(args[0]))
+        self._unknown(written, args[0], scope)
+        return (normalise(written),)
+
+    def _unknown(self, written: str, expr: Cursor, scope: Scope) -> None:
+        """Note ``expr`` as what gave a namespace its unknown run (``unknown_from``)."""
+        if "?" in written:
+            self.unknown_from = (expr, scope) if written.count("?") == 1 else None
+            self._unknown_count += written.count("?")
 
     def _assigned(self, field: Cursor, depth: int = 0
                   ) -> tuple[Cursor | None, Cursor] | None:

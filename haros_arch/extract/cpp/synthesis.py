@@ -82,12 +82,31 @@ _POINTER_TO = re.compile(
     r"of type '(?:const )?([\w:]+) \*' with an [lr]value of type '(?:const )?([\w:]+) \*'"
     r"|(?:incompatible pointer types )?assigning to '(?:const )?([\w:]+) \*' from "
     r"(?:incompatible type )?'(?:const )?([\w:]+) \*')")
+# a pointer to one declared class cast to a pointer to another (stage_ros'
+# ``static_cast<Stg::Model*>(robot->positionmodel)``, a ``Stg::ModelPosition *``, in the
+# arguments of its advertise calls): one derives from the other, either way round, so
+# the cast is an up- or a down-cast
+_CAST_UNRELATED = re.compile(
+    r"^static_cast from '(?:const )?([\w:]+) \*' to '(?:const )?([\w:]+) \*', which are "
+    r"not related by inheritance")
+# a ``dynamic_cast`` of a pointer to a declared class (stage_ros' ``dynamic_cast<Stg::
+# ModelRanger *>(mod)`` of a ``Stg::Model *``): the class has a virtual destructor
+_NOT_POLYMORPHIC = re.compile(r"^'([\w:]+)' is not polymorphic")
+# a value given to a declared template (``template <class... T>``), at the argument:
+# boost::array<double, 9> (naoqi's camera infos, through a missing boost header),
+# Eigen's DiagonalMatrix<double, 3>, Sophus::Vector<Scalar, M>
+_VALUE_ARGUMENT = re.compile(r"^template argument for template type parameter must be a type")
 # the same, in the note of a candidate of a call no overload takes (``_Error.notes``)
 _NOT_CONVERTED = re.compile(
     r"^candidate .*no known conversion from '(?:const )?([\w:]+) \*' to "
     r"'(?:const )?([\w:]+) \*' for")
 _RECORD = re.compile(r"[a-z]\w*(?:::\w+)+")  # a message's struct: ``pkg::msg::Name``
 _AFTER_MEMBER = re.compile(rb"(?:\.|->)\s*([A-Za-z_]\w*)")
+_TEMPLATE_SPAN = 400  # bytes searched back for the ``<`` of a template argument list
+_VALUE_LITERAL = re.compile(rb"\s*(?:[-+(]?\s*[0-9]|(?:true|false|sizeof)\b)")
+_VALUE_WRITTEN = re.compile(
+    rb"\s*(?:[-+(]?\s*[0-9]|(?:true|false|sizeof)\b|[A-Z][A-Z0-9_]*\b(?!\s*(?:<|::)))")
+_SCOPE_NAME_BEFORE = re.compile(rb"[A-Za-z_]\w*(?:\s*::\s*[A-Za-z_]\w*)*\s*$")
 # a member template named with C++'s ``template`` keyword (``bb->template set<T>(k, v)``,
 # where the object's type depends on a template parameter or is unknown)
 _TEMPLATE_MEMBER = re.compile(rb"(?:\.|->)\s*template\s+([A-Za-z_]\w*)\s*<")
@@ -244,7 +263,10 @@ _C_VENDOR = re.compile(r"[A-Z][A-Za-z0-9]*(?:_[A-Za-z0-9]+)+")
 # no member is written so
 _CAPS_MACRO = re.compile(r"[A-Z][A-Z0-9]*(?:_[A-Z0-9]+)*_")
 # a namespace, class, struct or enum the code defines (the first name of ``a::b``)
-_DEFINED = re.compile(rb"\b(?:namespace|class|struct|enum)\s+(?:class\s+|struct\s+)?([A-Za-z_]\w*)")
+# (not a namespace alias, ``namespace stats = boost::accumulators;``, whose target may
+# be unknown: novatel_gps_driver's ``stats::tag::min``, ``mean``, ... were one per parse)
+_DEFINED = re.compile(
+    rb"\b(?:namespace|class|struct|enum)\s+(?:class\s+|struct\s+)?([A-Za-z_]\w*)(?!\s*=)")
 _USING = re.compile(rb"\busing\s+namespace\s+(?:::)?([A-Za-z_][\w:]*)\s*;")
 # ``using vendor::conn::Connection;``: a using-declaration of one qualified name
 _USING_ONE = re.compile(
@@ -286,6 +308,10 @@ _PRELUDE = """\
 enum haros_integral : long long {};
 struct haros_any {
   template <class... A> haros_any(A &&...) {}
+  // braces of braces (naoqi's ``boost::array<double, 9>{{556.8, 0, 309.4, ...}}``); not
+  // an initializer_list, which list-initialisation would prefer for flat braces too
+  // (``debug_{this, "~/debug"}``, the node given to a vendor's class: CPP_NODE_TO_UNKNOWN)
+  template <decltype(sizeof 0) N> haros_any(const haros_any (&)[N]);
   template <class T> operator T &() const;
   haros_any *operator->() const;
   haros_any &operator*() const;
@@ -344,6 +370,10 @@ class _Name:
     children: dict[str, _Name] = field(default_factory=dict)
     # the declared class a pointer to this one was given for (``_POINTER_TO``): its base
     base: str | None = None
+    polymorphic: bool = False  # ``_NOT_POLYMORPHIC``: declared with a virtual destructor
+    # the argument positions of a declared template that the code gives values
+    # (``_VALUE_ARGUMENT``): non-type parameters there
+    value_arguments: set[int] = field(default_factory=set)
 
 
 _MACRO_SPAN = 4000  # bytes of a macro call searched for a name clang placed at the macro
@@ -402,6 +432,52 @@ def library_prefixes(messages: Iterable[str]) -> set[str]:
                 if not word.startswith("lib"):
                     found.add("lib" + word)
     return found
+
+
+def _template_arguments(text: bytes, start: int) -> list[tuple[int, int]]:
+    """(index, offset) of each argument of the template argument list that starts at
+    ``start`` (after its ``<``); empty when it does not close within a few hundred bytes."""
+    found: list[tuple[int, int]] = [(0, start)]
+    depth, at = 0, start
+    while at < len(text) and at < start + _TEMPLATE_SPAN:
+        char = text[at:at + 1]
+        if char in b"<([{":
+            depth += 1
+        elif char in b")]}":
+            depth -= 1
+        elif char == b">":
+            if depth == 0:
+                return found
+            depth -= 1
+        elif char == b"," and depth == 0:
+            found.append((len(found), at + 1))
+        elif char == b";":
+            break
+        at += 1
+    return []
+
+
+def _initialised_member(text: bytes, found: re.Match[bytes], before: bytes) -> bool:
+    """Whether the call ``found`` (a name and its ``(``) is an element of a constructor's
+    initialiser list (cartographer's ``: odometry_sampler(ratio), imu_sampler(ratio) {``):
+    after a ``:`` or ``,`` (``before``: its line up to the name, else the text before)
+    and followed by a ``,`` or the body's ``{``."""
+    ahead = text[max(0, found.start() - 200):found.start()].rstrip()
+    last = (before or ahead)[-1:]
+    if last not in (b":", b",") or (before or ahead).endswith(b"::"):
+        return False
+    depth, at = 0, found.end() - 1  # the ``(``
+    while at < len(text) and at < found.end() + 2000:
+        char = text[at:at + 1]
+        if char == b"(":
+            depth += 1
+        elif char == b")":
+            depth -= 1
+            if depth == 0:
+                rest = text[at + 1:at + 200].lstrip()
+                return rest[:1] in (b",", b"{")
+        at += 1
+    return False
 
 
 def _spelled_at(name: str, text: bytes, offset: int) -> int:
@@ -521,6 +597,62 @@ class Names:
                 ):
                     continue  # the stand-ins have it (autoware_utils' polling subscriber)
                 self._from_source(text, found.start(), "any", [])
+        self._spread_calls()
+        self._spread_values()
+
+    def _spread_values(self) -> None:
+        """The value arguments of every use of the declared templates in the files read
+        (``_value_argument``): clang reports one per template-id and parse, and only
+        once the template is declared (A-LOAM's ``ceres::AutoDiffCostFunction<
+        LidarEdgeFactor, 3, 4, 3>``, naoqi's ``boost::array<double, 9>``)."""
+        stack: list[tuple[str, _Name]] = [("", self.root)]
+        while stack:
+            name, node = stack.pop()
+            stack.extend(node.children.items())
+            if "template" not in node.uses or node.known:
+                continue
+            # a number, true / false, sizeof: a name in capitals may be a type
+            # parameter here (``vendor::Foo<T>``); one an error says is a value counts
+            pattern = re.compile(rb"(?<![\w.])" + re.escape(name.encode()) + rb"\s*<")
+            for text in self._texts:
+                for found in pattern.finditer(text):
+                    for index, offset in _template_arguments(text, found.end()):
+                        if index not in node.value_arguments and _VALUE_LITERAL.match(
+                                text, offset):
+                            node.value_arguments.add(index)
+                            self.count += 1
+
+    def _spread_calls(self) -> None:
+        """Every call in the files read of a function named after a C library whose
+        header is missing (``library_prefixes``): clang reports one unknown name of a
+        statement, and none in a declaration whose type is unknown (gscam's ``GstCaps *caps
+        = gst_app_sink_get_caps(...)``: ``GstCaps`` first, the function only on the next
+        parse, which the rounds had run out of, so the function that makes the node's
+        publishers kept an error). Not a name written on its line after another word or
+        a ``*`` / ``&`` (a declaration of the workspace's own), nor one ending in ``_``
+        (motoman's ``robot_id_(robot_id)``, a member initialised, under ``robot``)."""
+        if not self.libraries:
+            return
+        words = b"|".join(re.escape(p.encode()) for p in sorted(self.libraries, key=len)[::-1])
+        pattern = re.compile(rb"(?<![\w:.>])((?:" + words + rb")_\w+)\s*\(")
+        for text in self._texts:
+            if (id(text), "\0calls") in self._spread_done:
+                continue
+            self._spread_done.add((id(text), "\0calls"))
+            for found in pattern.finditer(text):
+                if self.count >= MAX_NAMES:
+                    return
+                name = found.group(1).decode()
+                if name in self.root.children or name in self.friends or name.endswith("_"):
+                    continue  # (``robot_id_(id)``: a member in an initialiser list)
+                before = text[text.rfind(b"\n", 0, found.start()) + 1:found.start()].rstrip()
+                last = before[-1:]
+                word = last.isalnum() or last == b"_"
+                if last and (last in b"*&" or (word and not before.endswith(b"return"))):
+                    continue
+                if _initialised_member(text, found, before):
+                    continue
+                self._from_source(text, found.start(), "any", [])
 
     def read_members(self, texts: Iterable[bytes]) -> None:
         """Every name the code reads after ``.`` or ``->``, and every value it reads from
@@ -586,6 +718,21 @@ class Names:
             wanted, given = (pointer.group(1), pointer.group(2)) if pointer.group(1) else (
                 pointer.group(3), pointer.group(4))
             self._derive(given, wanted)
+            return
+        if _VALUE_ARGUMENT.match(message):
+            if text is not None:
+                self._value_argument(text, offset)
+            return
+        cast = _CAST_UNRELATED.match(message)
+        if cast is not None:
+            self._derive(cast.group(1), cast.group(2))
+            return
+        polymorphic = _NOT_POLYMORPHIC.match(message)
+        if polymorphic is not None:
+            path = self._class_path(polymorphic.group(1))
+            if path is not None and not self._node("::".join(path)).polymorphic:
+                self._node("::".join(path)).polymorphic = True
+                self.count += 1
             return
         ambiguous = _AMBIGUOUS.match(message)
         if ambiguous is not None:
@@ -789,6 +936,60 @@ class Names:
                      or "::".join(f[:-1]) in self.using]
         return found[0] if len(found) == 1 else None
 
+    def _value_argument(self, text: bytes, offset: int) -> None:
+        """The argument at ``offset`` of a declared template's use is a value: its
+        position (the commas before it in the argument list) takes a non-type
+        parameter. Only a value written as one: a number, ``true`` / ``false``,
+        ``sizeof``, a name in capitals (``M``, ``N_SCANS``); not a name the parse
+        declared a value that names a type (``absl::make_unique<carto::io::Builder>``)."""
+        if not _VALUE_WRITTEN.match(text, offset):
+            return
+        depth, index, at = 0, 0, offset - 1
+        while at >= 0 and offset - at < _TEMPLATE_SPAN:
+            char = text[at:at + 1]
+            if char in b">)]}":
+                depth += 1
+            elif char in b"([{":
+                if depth == 0:
+                    return  # not in a template argument list
+                depth -= 1
+            elif char == b"<":
+                if depth == 0:
+                    break
+                depth -= 1
+            elif char == b"," and depth == 0:
+                index += 1
+            elif char == b";":
+                return
+            at -= 1
+        else:
+            return
+        name = _SCOPE_NAME_BEFORE.search(text[max(0, at - 200):at])
+        if name is None:
+            return
+        path = self._template_path(re.sub(rb"\s+", b"", name.group(0)).decode())
+        if path is None:
+            return
+        node = self._node("::".join(path))
+        if index not in node.value_arguments:
+            node.value_arguments.add(index)
+            self.count += 1
+
+    def _template_path(self, written: str) -> list[str] | None:
+        """The path of the one declared template ``written`` names (``_class_path``'s
+        look-up, for templates)."""
+        parts = [p for p in written.split("::") if p]
+        found: list[list[str]] = []
+        stack: list[tuple[list[str], _Name]] = [([], self.root)]
+        while stack:
+            path, node = stack.pop()
+            for name, child in node.children.items():
+                if "template" in child.uses and [*path, name][-len(parts):] == parts:
+                    found.append([*path, name])
+                if child.known or _is_namespace(child) or child.children:
+                    stack.append(([*path, name], child))
+        return found[0] if len(found) == 1 else None
+
     def _derive(self, given: str, wanted: str) -> None:
         derived, base = self._class_path(given), self._class_path(wanted)
         if derived is None or base is None or derived == base:
@@ -989,9 +1190,16 @@ def _render(name: str, node: _Name, indent: str, nested: bool, values: _Values,
     if node.uses <= {"value", "constant", "flag"}:
         return [f"{indent}{'static ' if nested else 'extern '}haros_any {name};"]
     head = "template <class... T> " if "template" in node.uses else ""
+    if head and node.value_arguments:
+        # a value at each position the code gives one, a type elsewhere, any number
+        # of types after (each with a default, for the uses that give fewer)
+        head = "template <" + ", ".join(
+            f"long long V{i} = 0" if i in node.value_arguments else f"class T{i} = haros_any"
+            for i in range(max(node.value_arguments) + 1)) + ", class... T> "
     return [f"{indent}{head}struct {name} : haros_any {{",
             f"{indent}  using haros_any::haros_any;",
             f"{indent}  using haros_any::operator=;",
+            *([f"{indent}  virtual ~{name}();"] if node.polymorphic else []),
             *inner, f"{indent}}};"]
 
 

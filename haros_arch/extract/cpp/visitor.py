@@ -1014,11 +1014,15 @@ class CallFinder:
         namespace: str | None = None
         elsewhere: list[str] = []  # members read for the name that other files set
         name_expr: Cursor | None = None
+        # the string whose value is the namespace's one unknown run (ROS 1)
+        unknown_from: tuple[Cursor, Scope] | None = None
         if spec.fixed_name is not None:
             if spec.handle_default is not None:  # relative to the handle given
                 handle = next((a for a in args if is_handle(a)), None)
                 namespace = spec.handle_default if handle is None else normalise(render(
                     self.namespaces.of(handle, scope)))
+                if handle is not None:
+                    unknown_from = self.namespaces.unknown_from
             # once per node (and handle): per owner when the file names several nodes
             once = self._owner if self._owner in dict(self.node_names) else ""
             key = (spec.kind, join_name(namespace or "", spec.fixed_name), once)
@@ -1064,8 +1068,10 @@ class CallFinder:
         if spec.fixed_name is None:
             if spec.on_handle:
                 namespace = render(self.namespaces.of_call(site, callee, at_scope or scope))
+                unknown_from = self.namespaces.unknown_from
             elif handle_arg is not None and handle_arg < len(args):
                 namespace = render(self.namespaces.of(args[handle_arg], scope))
+                unknown_from = self.namespaces.unknown_from
         function = callback(args, None if spec.callback_arg is None
                             else spec.callback_arg + shift)
         ctype = self.types.of_call(spec, call, args, function, cls, scope)
@@ -1111,6 +1117,13 @@ class CallFinder:
         # node's namespace, whatever the handle's, then the rest within it, as it does a
         # handle's namespace (graph.build._handle_name): the prefix is the call's
         prefix = scope.names_prefix(base) if not self.ros2 and base is not None else None
+        # the handle's namespace holds a parameter's value (pointgrey's stereo nodelet:
+        # ``ros::NodeHandle lnh(nh, firstcam)``, ``firstcam`` read from
+        # ``first_namespace``, default "left"): the graph puts it in the place of the
+        # ``?`` of each name given on that handle, as for a name that holds one
+        held = self._parameter_source(unknown_from[0], unknown_from[1], 0) if (
+            unknown_from is not None and not self.ros2 and namespace is not None
+            and namespace.count("?") == 1) else None
         for written, source in names:
             if source is not None and source[4] is not None:
                 # the loop over the list: one call per element, each made by that
@@ -1128,6 +1141,10 @@ class CallFinder:
                 if namespace and not self.ros2 and not _private(written).startswith(
                         ("/", "~")):
                     handle_namespace = namespace
+            if source is None and held is not None and handle_namespace == namespace and (
+                name.count("?") == 1
+            ):
+                source = (*held, None, None)
             made_in = self._made_in(name, handle_namespace)
             name_member = self._name_member(name_expr) if (
                 written == "?" and source is None and spec.fixed_name is None) else None
@@ -1184,6 +1201,11 @@ class CallFinder:
                     handle_namespace=sibling_namespace, node_name=owner,
                     made_in=self._made_in(full, sibling_namespace),
                     camera_of=name if camera else None))
+                if held is not None and namespace and sibling_namespace == namespace and (
+                    full.count("?") == 1 and full.startswith(namespace + "/")
+                ):
+                    beside = self.calls[-1]
+                    beside.name_param, beside.name_default, beside.default_param = held
             if spec.reconfigure:
                 self._reconfigured(call, cls, name, handle_namespace, conditions, location,
                                    owner)

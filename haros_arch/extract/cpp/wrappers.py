@@ -134,6 +134,9 @@ class Wrappers:
         self.site_names_bare: frozenset[str] = frozenset()  # those called with no argument
         self._inner: dict[Key, Key] = {}  # call inside a wrapper -> the wrapper
         self._kept: set[Key] = set()  # wrappers whose inner calls are still emitted
+        # those of them that the node's other files may call too: a call of one in this
+        # unit passes its values on (``links``) and makes no call of its own
+        self._shared: set[Key] = set()
         self._recursive: set[Key] = set()
         # the spellings of the functions summarised so far (None: one that an
         # unresolved call's text need not show, an operator)
@@ -242,6 +245,16 @@ class Wrappers:
                 and not sites.callers(function)
             ):
                 self._kept.add(key)
+            # a free function the node's other files may call as well as this one
+            # (msckf_vio's ``getTransformCV``, called in utils.cpp by getTransformEigen
+            # and in image_processor.cpp): its calls are named where written, with every
+            # value the node's files pass (links, with this file's calls among them),
+            # not at this file's call sites only, which lost the other files' names
+            elif key in self.summaries and sites is not None and (
+                function.kind == CursorKind.FUNCTION_DECL and sites.shared(function)
+            ):
+                self._kept.add(key)
+                self._shared.add(key)
         # a class template's constructor is spelled with its parameters
         # (``ServiceClient<ServiceT, NodeT>``), a construction's call without them
         self.names = frozenset(
@@ -702,6 +715,9 @@ class Wrappers:
         (a wrapper's call, or a call inside a wrapper that its callers make instead)."""
         owner = self._inner.get(_key(call))
         if owner is not None and owner not in self._kept:
+            return True
+        target = call.referenced
+        if target is not None and _key(target.canonical) in self._shared:
             return True
         wrappers = self._called(call)
         if not wrappers:

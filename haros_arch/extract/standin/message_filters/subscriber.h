@@ -50,6 +50,7 @@ public:
 template<class... M> class TimeSynchronizer {
 public:
   template<class... F> TimeSynchronizer(F&&... args);
+  template<class... F> void connectInput(F&... filters);  // built with a queue size only
   template<class C> void registerCallback(const C& callback);
   template<class C, class T> void registerCallback(const C& callback, T* object);
 };

@@ -132,13 +132,36 @@ public:
   bool operator!=(const Scalar& other) const;
   double val[4];
 };
-template<class T, int n> class Vec {
+template<class T, int n> class Vec;
+// a small fixed-size matrix (core/matx.hpp): any number of initial values
+template<class T, int m, int n> class Matx {
+public:
+  Matx();
+  template<class... A> Matx(T v0, A... more);
+  explicit Matx(const T* values);
+  T& operator()(int i, int j); const T& operator()(int i, int j) const;
+  T& operator()(int i); const T& operator()(int i) const;
+  Matx<T, n, m> t() const;
+  Matx inv(int method = 0) const;
+  Matx operator-() const;
+  T dot(const Matx& other) const;
+  static Matx eye(); static Matx zeros(); static Matx ones(); static Matx all(T value);
+  T val[m * n];
+};
+template<class T, int m, int k, int n> Matx<T, m, n> operator*(const Matx<T, m, k>& a, const Matx<T, k, n>& b);
+template<class T, int m, int n> Vec<T, m> operator*(const Matx<T, m, n>& a, const Vec<T, n>& b);
+template<class T, int m, int n> Matx<T, m, n> operator*(const Matx<T, m, n>& a, double s);
+template<class T, int m, int n> Matx<T, m, n> operator+(const Matx<T, m, n>& a, const Matx<T, m, n>& b);
+template<class T, int m, int n> Matx<T, m, n> operator-(const Matx<T, m, n>& a, const Matx<T, m, n>& b);
+// a vector is a one-column Matx (core/matx.hpp): ``t()``, products, ``val``
+template<class T, int n> class Vec : public Matx<T, n, 1> {
 public:
   Vec();
   template<class... A> Vec(T v0, A... more);
+  Vec(const Matx<T, n, 1>& m);
   T& operator[](int i); const T& operator[](int i) const;
   T& operator()(int i); const T& operator()(int i) const;
-  T val[n];
+  Vec operator-() const;
 };
 typedef Vec<uchar, 3> Vec3b;
 typedef Vec<uchar, 4> Vec4b;
@@ -152,25 +175,6 @@ typedef Vec<float, 6> Vec6f;
 typedef Vec<double, 2> Vec2d;
 typedef Vec<double, 3> Vec3d;
 typedef Vec<double, 4> Vec4d;
-// a small fixed-size matrix (core/matx.hpp): any number of initial values
-template<class T, int m, int n> class Matx {
-public:
-  Matx();
-  template<class... A> Matx(T v0, A... more);
-  explicit Matx(const T* values);
-  T& operator()(int i, int j); const T& operator()(int i, int j) const;
-  T& operator()(int i); const T& operator()(int i) const;
-  Matx<T, n, m> t() const;
-  Matx inv(int method = 0) const;
-  T dot(const Matx& other) const;
-  static Matx eye(); static Matx zeros(); static Matx ones(); static Matx all(T value);
-  T val[m * n];
-};
-template<class T, int m, int k, int n> Matx<T, m, n> operator*(const Matx<T, m, k>& a, const Matx<T, k, n>& b);
-template<class T, int m, int n> Vec<T, m> operator*(const Matx<T, m, n>& a, const Vec<T, n>& b);
-template<class T, int m, int n> Matx<T, m, n> operator*(const Matx<T, m, n>& a, double s);
-template<class T, int m, int n> Matx<T, m, n> operator+(const Matx<T, m, n>& a, const Matx<T, m, n>& b);
-template<class T, int m, int n> Matx<T, m, n> operator-(const Matx<T, m, n>& a, const Matx<T, m, n>& b);
 typedef Matx<float, 2, 2> Matx22f;
 typedef Matx<double, 2, 2> Matx22d;
 typedef Matx<float, 3, 3> Matx33f;
@@ -203,6 +207,10 @@ public:
   Mat& operator=(const Mat& m);
   Mat& operator=(const Scalar& s);
   Mat operator()(const Rect& roi) const;
+  // a region of known size read as a small matrix (msckf_vio's ``cv::Matx33d
+  // R(T(cv::Rect(0, 0, 3, 3)))``, ``cv::Vec3d t = T(cv::Rect(3, 0, 1, 3))``)
+  template<class T, int m, int n> operator Matx<T, m, n>() const;
+  template<class T, int n> operator Vec<T, n>() const;
   Mat operator()(const Range& rows, const Range& cols) const;
   Mat rowRange(int start, int end) const;
   Mat rowRange(const Range& r) const;

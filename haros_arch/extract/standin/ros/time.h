@@ -26,6 +26,11 @@ public:
   bool operator<=(const Duration& rhs) const;
   bool operator>=(const Duration& rhs) const;
   bool operator==(const Duration& rhs) const;
+  bool operator!=(const Duration& rhs) const;
+  Duration operator-() const;
+  Duration& operator+=(const Duration& rhs);
+  Duration& operator-=(const Duration& rhs);
+  Duration& operator*=(double scale);
   bool isZero() const;
 };
 typedef Duration WallDuration;
@@ -59,8 +64,13 @@ public:
   bool operator>=(const Time& rhs) const;
   bool operator==(const Time& rhs) const;
   bool operator!=(const Time& rhs) const;
+  Time& operator+=(const Duration& rhs);
+  Time& operator-=(const Duration& rhs);
 };
 typedef Time WallTime;
+// rostime's bounds (``last_sync_(ros::TIME_MIN)``, novatel_gps_driver)
+extern const Time TIME_MIN, TIME_MAX;
+extern const Duration DURATION_MIN, DURATION_MAX;
 class Rate {
 public:
   explicit Rate(double frequency);
