@@ -110,6 +110,8 @@ int main(int argc, char** argv) {
   bool w = true;
   bool ok = pnh.getParam("use_w", w);
   if (ok) pub_w = nh.advertise<std_msgs::String>("w", 1);
+  bool there = hasBool(pnh, "use_z");
+  if (there) pub_z = nh.advertise<std_msgs::String>("z2", 1);
   ros::spin();
 }
 """
@@ -156,6 +158,7 @@ def test_a_call_returning_a_parameter_value_is_held_in_the_condition(write_tree)
         "y": (('getBool(pnh, "use_y")', "~use_y"),),
         "z": None,  # hasBool: whether it is there
         "w": None,  # ``ok`` holds getParam's answer, not use_w's value
+        "z2": None,  # ``there`` holds hasBool's answer
     }
 
 
@@ -184,6 +187,7 @@ def test_a_condition_on_a_helper_value_is_decided(write_tree) -> None:
         "y": [],  # set true
         "z": ['hasBool(pnh, "use_z")'],  # whether use_z is there: not its value
         "w": ["ok"],  # getParam finds use_w (set false): not decided false
+        "z2": ["there"],
     }  # x: not set, getBool's own default false
     findings = [f for f in run_catalogue(model) if f.rule == "parameter-read-not-set"]
     assert findings == []

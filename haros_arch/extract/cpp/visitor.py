@@ -214,6 +214,8 @@ class CallFinder:
         self._held_calls: dict[tuple[str, int], str | None] = {}
         # a wrapper call's place -> whether it returns the parameter's value (_gives_value)
         self._value_calls: dict[tuple[str, int], bool] = {}
+        # a wrapper call's place -> whether it may return no value (_gives_status)
+        self._status_calls: dict[tuple[str, int], bool] = {}
         # parameter reads and the member variable each stores its value in
         self._stored: list[tuple[PrimitiveCall, Cursor, Key | None]] = []
         # (file, offset) of the macro expansions and #includes of the workspace's files:
@@ -1368,7 +1370,7 @@ class CallFinder:
             # (the function's own, a construction site's) meets the condition
             key = place_of(decl)
             if key not in self._held:
-                source = self._parameter_source(node, scope, 0)
+                source = self._parameter_source(node, scope, 0, value=True)
                 self._held[key] = source[0] if source is not None and known_name(
                     source[0]) else None
             parameter = self._held[key]
@@ -1456,16 +1458,33 @@ class CallFinder:
         self._value_calls[key] = answer
         return answer
 
+    def _gives_status(self, call: Cursor, depth: int = 0) -> bool:
+        """Whether ``call`` of functions of the workspace may return something else than
+        a parameter's value: a function it may call returns a ``true`` / ``false``
+        literal, or what a read returns about the parameter being there (``return
+        nh.getParam(n, v)``), or calls such a function in a ``return``."""
+        key = place_of(call)
+        known = self._status_calls.get(key)
+        if known is not None:
+            return known
+        self._status_calls[key] = False  # (a recursion)
+        answer = False
+        for _, function in self.wrappers.called(call) if depth < MAX_WRAPPED else ():
+            for statement in _returns(function):
+                values = [strip(c) for c in statement.get_children() if c.kind.is_expression()]
+                if not values or values[0].kind != CursorKind.CALL_EXPR:
+                    answer = answer or (bool(values) and values[0].kind == (
+                        CursorKind.CXX_BOOL_LITERAL_EXPR))
+                    continue
+                spec, _ = self._row(values[0])
+                answer = answer or (not self._returns_read(spec, values[0]) if spec is not None
+                                    else self._gives_status(values[0], depth + 1))
+        self._status_calls[key] = answer
+        return answer
+
     def _returns_value(self, function: Cursor, wrapper: tuple[str, int], depth: int) -> bool:
         scope = self._scope_of(function)
-        returns: list[Cursor] = []
-        stack = [c for c in function.get_children() if c.kind == CursorKind.COMPOUND_STMT]
-        while stack:
-            node = stack.pop()
-            if node.kind == CursorKind.RETURN_STMT:
-                returns.append(node)
-            elif node.kind != CursorKind.LAMBDA_EXPR:
-                stack.extend(node.get_children())
+        returns = _returns(function)
         if not returns:
             return False
         for statement in returns:
@@ -1529,8 +1548,12 @@ class CallFinder:
         return parameter_mark(name, source[0], source[3])
 
     def _parameter_source(self, expr: Cursor, scope: Scope,
-                          depth: int) -> Source | None:
-        """The parameter (name, default) whose value ``expr`` holds, if it is one."""
+                          depth: int, value: bool = False) -> Source | None:
+        """The parameter (name, default) whose value ``expr`` holds, if it is one.
+        ``value``: only a value a condition may stand for (``_held_parameters``): not
+        what a read returns about the parameter being there (``bool found =
+        nh.getParam("x", v)``), nor a wrapper's result unless it returns what it reads
+        (``_gives_status``)."""
         expr = strip(expr)
         if depth > MAX_DEPTH:
             return None
@@ -1549,34 +1572,34 @@ class CallFinder:
                 # (nav2's ``CostmapSubscriber(node, costmap_topic)``, the topic a local
                 # read from ``costmap_topic``)
                 return scope.sites.agreed(
-                    decl, lambda arg, site: self._parameter_source(arg, site, depth + 1),
-                    None)
-            value = scope.variable(decl)
+                    decl, lambda arg, site: self._parameter_source(
+                        arg, site, depth + 1, value), None)
+            written = scope.variable(decl)
             # a member, as Scope.string reads it: what this body assigned it before here
             # (``topic_ = declare_parameter("publisher_topic", "x");`` then
             # ``create_publisher(topic_, ..)`` in one constructor), else what a constructor
             # of its class gives it, read in that constructor
-            if value is None and expr.kind == CursorKind.MEMBER_REF_EXPR and (
+            if written is None and expr.kind == CursorKind.MEMBER_REF_EXPR and (
                 decl.kind == CursorKind.FIELD_DECL
             ):
-                value = scope.assigned(decl, expr)
-            if value is None:
+                written = scope.assigned(decl, expr)
+            if written is None:
                 found = scope.field(decl)
                 if found is None and expr.kind == CursorKind.MEMBER_REF_EXPR:
-                    return self._written_once(decl, depth)
+                    return self._written_once(decl, depth, value)
                 return None if found is None else self._parameter_source(
-                    found[0], found[1], depth + 1)
-            return self._parameter_source(value, scope, depth + 1)
+                    found[0], found[1], depth + 1, value)
+            return self._parameter_source(written, scope, depth + 1, value)
         if expr.kind != CursorKind.CALL_EXPR:
             return None
         spec, _ = self._row(expr)
         if spec is not None and spec.kind in _PARAM_KINDS:
-            # (not ``bool found = nh.getParam("x", v)``: whether x is there)
-            return self._parameter(spec, expr, scope, depth) if self._returns_read(
-                spec, expr) else None
-        if spec is None and self._gives_value(expr):
-            # a wrapper's call that returns what it reads: the parameter when every read
-            # or declaration it makes names the same one
+            # (for a value, not ``bool found = nh.getParam("x", v)``: whether x is there)
+            return self._parameter(spec, expr, scope, depth) if not value or (
+                self._returns_read(spec, expr)) else None
+        if spec is None and (not value or not self._gives_status(expr)):
+            # a wrapper's call: the parameter when every read or declaration it makes
+            # names the same one
             sources = [self._parameter(row, expr, named, depth)
                        for row, named in self.wrappers.parameter_calls(expr, scope)]
             known = [s for s in sources if s is not None]
@@ -1587,15 +1610,18 @@ class CallFinder:
             children[0].kind == CursorKind.MEMBER_REF_EXPR
         ):
             objects = [c for c in children[0].get_children() if c.kind.is_expression()]
-            return self._parameter_source(objects[0], scope, depth + 1) if objects else None
+            return self._parameter_source(
+                objects[0], scope, depth + 1, value) if objects else None
         inner = [c for c in children if c.kind.is_expression()]
         if expr.referenced is None or (
             expr.referenced.kind == CursorKind.CONSTRUCTOR and len(inner) == 1
         ):
-            return self._parameter_source(inner[-1], scope, depth + 1) if inner else None
+            return self._parameter_source(
+                inner[-1], scope, depth + 1, value) if inner else None
         return None
 
-    def _written_once(self, member: Cursor, depth: int) -> Source | None:
+    def _written_once(self, member: Cursor, depth: int,
+                      value: bool = False) -> Source | None:
         """The parameter a member holds when its one write in the file's functions is a
         read or declaration of that parameter, in another method than the one using it
         (rplidar_ros' ``init_param()``, which the constructor calls before it makes the
@@ -1607,9 +1633,9 @@ class CallFinder:
             return None
         assigned = self.members.assignments(member)
         if len(assigned) == 1:
-            value, function = assigned[0]
+            written, function = assigned[0]
             return self._parameter_source(
-                value, self._scope_of(function), depth + 1)
+                written, self._scope_of(function), depth + 1, value)
         if assigned:
             return None
         for function in self.members.naming(member):
@@ -1874,6 +1900,19 @@ def _list_literal(expr: Cursor, scope: Scope) -> object:
             return None
         node = inner[0]
     return None
+
+
+def _returns(function: Cursor) -> list[Cursor]:
+    """The ``return`` statements of ``function``'s body (not those of its lambdas)."""
+    found: list[Cursor] = []
+    stack = [c for c in function.get_children() if c.kind == CursorKind.COMPOUND_STMT]
+    while stack:
+        node = stack.pop()
+        if node.kind == CursorKind.RETURN_STMT:
+            found.append(node)
+        elif node.kind != CursorKind.LAMBDA_EXPR:
+            stack.extend(node.get_children())
+    return found
 
 
 def _status_read(spec: api.RosFunction, site: Cursor, count: int) -> Key | None:

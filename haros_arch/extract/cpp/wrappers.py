@@ -545,16 +545,19 @@ class Wrappers:
                 own.setdefault(field, value)
         if spec.kind == "read" and self._handles_absence(function, call):
             own.setdefault("tested", True)
-        if spec.kind in ("read", "declare") and spec.default_arg is not None and (
+        given = arg(spec.default_arg)
+        if spec.kind in ("read", "declare") and given is not None and (
             fields["default_arg"] is None and scope is not None
-        ):
-            # a default the wrapper writes itself (``nh.param(n, v, false)``): each call
-            # of it has that default (its value, when it is a literal)
+        ) and not any(node.kind == CursorKind.DECL_REF_EXPR and node.referenced is not None
+                      and node.referenced.kind == CursorKind.PARM_DECL
+                      for node in given.walk_preorder()):
+            # a literal default the wrapper writes itself (``nh.param(n, v, false)``):
+            # each call of it has that default (not one its callers pass, which each
+            # call site gives)
             has_default, default = self.finder._default(spec, args[shift:], scope)
-            if has_default:
+            if has_default and default is not None:
                 own.setdefault("has_default", True)
-                if default is not None:
-                    own.setdefault("default", default)
+                own.setdefault("default", default)
         row = dataclasses.replace(
             spec, name_arg=name_arg, optional_handle=False, name_candidates=(),
             out_arg=None, **fields)  # type: ignore[arg-type]
