@@ -305,6 +305,32 @@ def python_of(text: str) -> tuple[str, frozenset[str]] | None:
         return None
 
 
+# the name a call that returns a parameter's value takes in a condition's text
+# (``readable``): the grammar reads no call of the code's own
+HELD_CALL = "haros_call_"
+
+
+@functools.lru_cache(maxsize=4096)
+def readable(condition: Condition) -> tuple[str, dict[str, str] | None]:
+    """The condition's text with each call that returns a parameter's value
+    (``Condition.parameters`` keyed by the call's text: ublox's ``getRosBoolean(node_,
+    "nmea.set")``) written as a name of its own, and the locals and those names, each
+    with the parameter whose value it holds."""
+    held = dict(condition.parameters) if condition.parameters else None
+    if not held:
+        return condition.text, held
+    text = condition.text
+    names: dict[str, str] = {}
+    calls = sorted((k for k in held if not k.isidentifier()), key=lambda k: (-len(k), k))
+    for index, written in enumerate(calls):
+        name = f"{HELD_CALL}{index}"
+        # the whole call: not the end of another one's text (``x.f(a)`` for ``f(a)``)
+        text, count = re.subn(r"(?<![\w.>:])" + re.escape(written), name, text)
+        if count:
+            names[name] = held[written]
+    return text, {k: v for k, v in held.items() if k.isidentifier()} | names
+
+
 def decide(condition: Condition, values: Callable[[str], object],
            views: list[ProgramView] | None = None) -> bool | None:
     """True / False when ``condition`` is decided with the names' ``values`` (an
@@ -312,7 +338,7 @@ def decide(condition: Condition, values: Callable[[str], object],
     arguments as the condition may see them (``program_views``)."""
     if condition.kind != "source" or condition.statement not in DECIDED_STATEMENTS:
         return None
-    read = python_of(condition.text)
+    read = python_of(readable(condition)[0])
     if read is None:
         return None
     expression, names = read
@@ -608,8 +634,7 @@ def decide_links(config: Configuration) -> None:
             false: Condition | None = None
             for condition in link.conditions:
                 answer = decide(condition, functools.partial(
-                    members, file=condition.location.file,
-                    held=dict(condition.parameters) if condition.parameters else None),
+                    members, file=condition.location.file, held=readable(condition)[1]),
                     views)
                 if answer is False:
                     false = condition

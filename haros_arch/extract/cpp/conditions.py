@@ -207,6 +207,11 @@ class ConditionReader:
             i += 1
         return "?"
 
+    def text(self, node: Cursor) -> str:
+        """The source text of ``node``, whitespace collapsed (as conditions are); ``?``
+        when it is not in one file read."""
+        return self._text(node)
+
     def _text(self, node: Cursor) -> str:
         start, end = node.extent.start, node.extent.end
         text = self._bytes(start.file)

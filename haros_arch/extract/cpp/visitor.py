@@ -126,6 +126,7 @@ _ZEROED: dict[TypeKind, object] = {
 _API_CLASSES = frozenset(owner for owner, _ in [*api.ALL, *api.OPTIONS]) | api.HANDLE_CLASSES
 # what can build an object (``_unseen_class``)
 _MAKES = frozenset({CursorKind.CALL_EXPR, CursorKind.VAR_DECL, CursorKind.CXX_NEW_EXPR})
+MAX_WRAPPED = 4  # wrappers of wrappers whose returned value is followed (_gives_value)
 MAX_SITE_DEPTH = 3  # constructors of constructors whose sites' conditions are followed
 _PREPROCESSED = frozenset({CursorKind.MACRO_INSTANTIATION, CursorKind.INCLUSION_DIRECTIVE})
 _PARAM_KINDS = ("read", "declare")
@@ -209,6 +210,12 @@ class CallFinder:
         self.members: MemberWrites | None = None
         # a local's place -> the parameter it holds the value of, if any (_held_parameters)
         self._held: dict[tuple[str, int], str | None] = {}
+        # a call's place -> the parameter whose value it returns, if any (_held_call)
+        self._held_calls: dict[tuple[str, int], str | None] = {}
+        # a wrapper call's place -> whether it returns the parameter's value (_gives_value)
+        self._value_calls: dict[tuple[str, int], bool] = {}
+        # a wrapper call's place -> whether it may return no value (_gives_status)
+        self._status_calls: dict[tuple[str, int], bool] = {}
         # parameter reads and the member variable each stores its value in
         self._stored: list[tuple[PrimitiveCall, Cursor, Key | None]] = []
         # (file, offset) of the macro expansions and #includes of the workspace's files:
@@ -1105,6 +1112,10 @@ class CallFinder:
         program_arg = program_argument(arg(spec.type_arg), scope) if (
             spec.kind == "write") else None
         status = _status_read(spec, site, len(args) - shift)
+        if status is not None and site.kind == CursorKind.CALL_EXPR and (
+            self._gives_value(site)
+        ):
+            status = None  # a wrapper that returns the value (ublox's getRosBoolean)
         transport = spec.transport
         if transport is not None and arg(spec.transport_arg) is not None:
             written_transport = render(scope.string(arg(spec.transport_arg)))
@@ -1354,9 +1365,24 @@ class CallFinder:
 
     def _held_parameters(self, tested: Cursor, scope: Scope) -> tuple[tuple[str, str], ...]:
         """The locals ``tested`` names that hold a parameter's value: each written once,
-        by a read (or declaration) of a parameter with a known name."""
+        by a read (or declaration) of a parameter with a known name; and the calls it
+        makes that return a parameter's value (a function of the workspace that returns
+        what it reads, ublox's ``getRosBoolean(node_, "nmea.set")``; rclcpp's
+        ``node_->get_parameter("x").as_bool()``), each by its text."""
         found: dict[str, str] = {}
-        for node in tested.walk_preorder():
+        stack = [tested]
+        while stack:
+            node = stack.pop()
+            if node.kind == CursorKind.CALL_EXPR:
+                key = place_of(node)
+                if key not in self._held_calls:
+                    self._held_calls[key] = self._held_call(node, scope)
+                parameter = self._held_calls[key]
+                text = self.reader.text(node) if parameter is not None else "?"
+                if parameter is not None and text != "?":
+                    found[text] = parameter
+                    continue  # what it reads is not read again
+            stack.extend(reversed(list(node.get_children())))
             decl = node.referenced if node.kind == CursorKind.DECL_REF_EXPR else None
             if decl is None or decl.kind != CursorKind.VAR_DECL or decl.spelling in found or (
                 decl.semantic_parent is None or decl.semantic_parent.kind not in FUNCTIONS
@@ -1366,13 +1392,172 @@ class CallFinder:
             # (the function's own, a construction site's) meets the condition
             key = place_of(decl)
             if key not in self._held:
-                source = self._parameter_source(node, scope, 0)
+                source = self._parameter_source(node, scope, 0, value=True)
                 self._held[key] = source[0] if source is not None and known_name(
                     source[0]) else None
             parameter = self._held[key]
             if parameter is not None:
                 found[decl.spelling] = parameter
         return tuple(sorted(found.items()))
+
+    def _held_call(self, call: Cursor, scope: Scope) -> str | None:
+        """The parameter whose value ``call`` returns, named as its read is (with the
+        namespace of the handle it is given), when its name is known: a call of a
+        function of the workspace that returns the value of the parameter it reads or
+        declares (``_gives_value``), or an API read or declaration that returns the
+        value (``param<T>(name, default)``, ``declare_parameter(name, default)``,
+        ``get_parameter(name).as_bool()``); None for any other call (one that returns
+        whether the parameter is there: ``getParam(name, v)``)."""
+        spec, _ = self._row(call)
+        children = list(call.get_children())
+        if spec is None and call.spelling in _VALUE_METHODS and children and (
+            children[0].kind == CursorKind.MEMBER_REF_EXPR
+        ):
+            objects = [c for c in children[0].get_children() if c.kind.is_expression()]
+            inner = strip(objects[0]) if objects else None
+            if inner is None or inner.kind != CursorKind.CALL_EXPR:
+                return None
+            spec, _ = self._row(inner)
+            if spec is None or not self._returns_read(spec, inner):
+                return None
+            source = self._parameter(spec, inner, scope)
+            return source[0] if source is not None and known_name(source[0]) else None
+        if spec is not None:
+            if not self._returns_read(spec, call) or not _scalar(call.type):
+                return None
+            source = self._parameter(spec, call, scope)
+            return source[0] if source is not None and known_name(source[0]) else None
+        if call.spelling not in self.wrappers.names or not self._gives_value(call):
+            return None
+        args = written_arguments(call)
+        names = set()
+        for row, named in self.wrappers.parameter_calls(call, scope):
+            source = self._parameter(row, call, named)
+            if source is None:
+                return None
+            name = source[0]
+            if not row.on_handle and row.handle_arg is not None:
+                if row.handle_arg >= len(args):
+                    return None
+                name = join_name(render(self.namespaces.of(args[row.handle_arg], scope)),
+                                 name)
+            names.add(name)
+        one = names.pop() if len(names) == 1 else None
+        return one if one is not None and known_name(one) else None
+
+    def _returns_read(self, spec: api.RosFunction, call: Cursor) -> bool:
+        """Whether ``call`` of the API row ``spec`` is a read or declaration that returns
+        the parameter's value (or rclcpp's parameter object), not whether it is there."""
+        if self.ros2 and spec.ros2 is not None:
+            spec = spec.ros2
+        if spec.kind not in _PARAM_KINDS or spec.per_element:
+            return False
+        args = list(call.get_arguments())
+        shift = 1 if spec.optional_handle and args and is_handle(args[0]) else 0
+        if spec.kind == "read" and spec.out_arg is not None and not (
+            len(args) - shift <= spec.out_arg or (
+                spec.default_arg is not None and len(args) - shift <= spec.default_arg)
+        ):
+            return False  # ``getParam(name, v)``, ``param(name, v, d)``: the status
+        return not (spec.kind == "read" and spec.out_arg is None and (
+            call.type.get_canonical().kind == TypeKind.BOOL and spec.default_arg is None))
+
+    def _gives_value(self, call: Cursor, depth: int = 0) -> bool:
+        """Whether ``call`` of functions of the workspace that read or declare a
+        parameter (wrappers) returns the parameter's value: each function it may call
+        returns, at every ``return``, the value of a read or declaration it makes as a
+        wrapper (ublox's ``getRosBoolean``: ``get_parameter(name, ret)``, then ``return
+        ret``; a ``bool getBool(nh, n) { bool v = false; nh.param(n, v, false); return
+        v; }``). One that returns whether the read found the parameter (``return
+        nh.getParam(n, v)``, ``return true``) does not."""
+        key = place_of(call)
+        known = self._value_calls.get(key)
+        if known is not None:
+            return known
+        called = self.wrappers.called(call)
+        answer = bool(called) and depth < MAX_WRAPPED and all(
+            self._returns_value(function, wrapper, depth) for wrapper, function in called)
+        self._value_calls[key] = answer
+        return answer
+
+    def _gives_status(self, call: Cursor, depth: int = 0) -> bool:
+        """Whether ``call`` of functions of the workspace may return something else than
+        a parameter's value: a function it may call returns a ``true`` / ``false``
+        literal, or what a read returns about the parameter being there (``return
+        nh.getParam(n, v)``), or calls such a function in a ``return``."""
+        key = place_of(call)
+        known = self._status_calls.get(key)
+        if known is not None:
+            return known
+        self._status_calls[key] = False  # (a recursion)
+        answer = False
+        for _, function in self.wrappers.called(call) if depth < MAX_WRAPPED else ():
+            for statement in _returns(function):
+                values = [strip(c) for c in statement.get_children() if c.kind.is_expression()]
+                if not values or values[0].kind != CursorKind.CALL_EXPR:
+                    answer = answer or (bool(values) and values[0].kind == (
+                        CursorKind.CXX_BOOL_LITERAL_EXPR))
+                    continue
+                spec, _ = self._row(values[0])
+                answer = answer or (not self._returns_read(spec, values[0]) if spec is not None
+                                    else self._gives_status(values[0], depth + 1))
+        self._status_calls[key] = answer
+        return answer
+
+    def _returns_value(self, function: Cursor, wrapper: tuple[str, int], depth: int) -> bool:
+        scope = self._scope_of(function)
+        returns = _returns(function)
+        if not returns:
+            return False
+        for statement in returns:
+            values = [c for c in statement.get_children() if c.kind.is_expression()]
+            if len(values) != 1 or not self._read_value(values[0], wrapper, scope, depth):
+                return False
+        return True
+
+    def _read_value(self, expr: Cursor, wrapper: tuple[str, int], scope: Scope,
+                    depth: int) -> bool:
+        """Whether ``expr`` in the function ``wrapper`` is the value of a read or
+        declaration that the function makes as a wrapper (its name from its
+        parameters): the call itself, a typed value of it (``.as_bool()``), or a local
+        written once that it read into (its out argument) or was initialised by."""
+        expr = strip(expr)
+        if expr.kind == CursorKind.DECL_REF_EXPR:
+            decl = expr.referenced
+            if decl is None or decl.kind != CursorKind.VAR_DECL:
+                return False
+            # its writes: its initialiser, and the one call it is passed to by reference
+            # (None), which must be the read; nothing else
+            writes = scope.writes.get(place_of(decl), [])
+            start, end = decl.extent.start.offset, decl.extent.end.offset
+            passed = scope.passed_to(decl)
+            if sum(w is None for w in writes) != (passed is not None) or any(
+                w is not None and not start <= w.extent.start.offset <= end for w in writes
+            ):
+                return False
+            if passed is not None:
+                call, index = passed
+                spec, _ = self._row(call)
+                if spec is not None and self.ros2 and spec.ros2 is not None:
+                    spec = spec.ros2
+                return spec is not None and spec.kind in _PARAM_KINDS and (
+                    spec.out_arg == index) and self.wrappers.inner_of(call) == wrapper
+            return len(writes) == 1 and writes[0] is not None and self._read_value(
+                writes[0], wrapper, scope, depth)
+        if expr.kind != CursorKind.CALL_EXPR:
+            return False
+        children = list(expr.get_children())
+        if expr.spelling in _VALUE_METHODS and children and (
+            children[0].kind == CursorKind.MEMBER_REF_EXPR
+        ):
+            objects = [c for c in children[0].get_children() if c.kind.is_expression()]
+            return bool(objects) and self._read_value(objects[0], wrapper, scope, depth)
+        if self.wrappers.inner_of(expr) != wrapper:
+            return False
+        spec, _ = self._row(expr)
+        if spec is not None:
+            return self._returns_read(spec, expr)
+        return self._gives_value(expr, depth + 1)
 
     def _marked(self, expr: Cursor, scope: Scope) -> str | None:
         """A string passed to another file's function whose one unknown run is a
@@ -1385,8 +1570,12 @@ class CallFinder:
         return parameter_mark(name, source[0], source[3])
 
     def _parameter_source(self, expr: Cursor, scope: Scope,
-                          depth: int) -> Source | None:
-        """The parameter (name, default) whose value ``expr`` holds, if it is one."""
+                          depth: int, value: bool = False) -> Source | None:
+        """The parameter (name, default) whose value ``expr`` holds, if it is one.
+        ``value``: only a value a condition may stand for (``_held_parameters``): not
+        what a read returns about the parameter being there (``bool found =
+        nh.getParam("x", v)``), nor a wrapper's result unless it returns what it reads
+        (``_gives_status``)."""
         expr = strip(expr)
         if depth > MAX_DEPTH:
             return None
@@ -1405,30 +1594,32 @@ class CallFinder:
                 # (nav2's ``CostmapSubscriber(node, costmap_topic)``, the topic a local
                 # read from ``costmap_topic``)
                 return scope.sites.agreed(
-                    decl, lambda arg, site: self._parameter_source(arg, site, depth + 1),
-                    None)
-            value = scope.variable(decl)
+                    decl, lambda arg, site: self._parameter_source(
+                        arg, site, depth + 1, value), None)
+            written = scope.variable(decl)
             # a member, as Scope.string reads it: what this body assigned it before here
             # (``topic_ = declare_parameter("publisher_topic", "x");`` then
             # ``create_publisher(topic_, ..)`` in one constructor), else what a constructor
             # of its class gives it, read in that constructor
-            if value is None and expr.kind == CursorKind.MEMBER_REF_EXPR and (
+            if written is None and expr.kind == CursorKind.MEMBER_REF_EXPR and (
                 decl.kind == CursorKind.FIELD_DECL
             ):
-                value = scope.assigned(decl, expr)
-            if value is None:
+                written = scope.assigned(decl, expr)
+            if written is None:
                 found = scope.field(decl)
                 if found is None and expr.kind == CursorKind.MEMBER_REF_EXPR:
-                    return self._written_once(decl, depth)
+                    return self._written_once(decl, depth, value)
                 return None if found is None else self._parameter_source(
-                    found[0], found[1], depth + 1)
-            return self._parameter_source(value, scope, depth + 1)
+                    found[0], found[1], depth + 1, value)
+            return self._parameter_source(written, scope, depth + 1, value)
         if expr.kind != CursorKind.CALL_EXPR:
             return None
         spec, _ = self._row(expr)
         if spec is not None and spec.kind in _PARAM_KINDS:
-            return self._parameter(spec, expr, scope, depth)
-        if spec is None:
+            # (for a value, not ``bool found = nh.getParam("x", v)``: whether x is there)
+            return self._parameter(spec, expr, scope, depth) if not value or (
+                self._returns_read(spec, expr)) else None
+        if spec is None and (not value or not self._gives_status(expr)):
             # a wrapper's call: the parameter when every read or declaration it makes
             # names the same one
             sources = [self._parameter(row, expr, named, depth)
@@ -1441,15 +1632,18 @@ class CallFinder:
             children[0].kind == CursorKind.MEMBER_REF_EXPR
         ):
             objects = [c for c in children[0].get_children() if c.kind.is_expression()]
-            return self._parameter_source(objects[0], scope, depth + 1) if objects else None
+            return self._parameter_source(
+                objects[0], scope, depth + 1, value) if objects else None
         inner = [c for c in children if c.kind.is_expression()]
         if expr.referenced is None or (
             expr.referenced.kind == CursorKind.CONSTRUCTOR and len(inner) == 1
         ):
-            return self._parameter_source(inner[-1], scope, depth + 1) if inner else None
+            return self._parameter_source(
+                inner[-1], scope, depth + 1, value) if inner else None
         return None
 
-    def _written_once(self, member: Cursor, depth: int) -> Source | None:
+    def _written_once(self, member: Cursor, depth: int,
+                      value: bool = False) -> Source | None:
         """The parameter a member holds when its one write in the file's functions is a
         read or declaration of that parameter, in another method than the one using it
         (rplidar_ros' ``init_param()``, which the constructor calls before it makes the
@@ -1461,9 +1655,9 @@ class CallFinder:
             return None
         assigned = self.members.assignments(member)
         if len(assigned) == 1:
-            value, function = assigned[0]
+            written, function = assigned[0]
             return self._parameter_source(
-                value, self._scope_of(function), depth + 1)
+                written, self._scope_of(function), depth + 1, value)
         if assigned:
             return None
         for function in self.members.naming(member):
@@ -1728,6 +1922,19 @@ def _list_literal(expr: Cursor, scope: Scope) -> object:
             return None
         node = inner[0]
     return None
+
+
+def _returns(function: Cursor) -> list[Cursor]:
+    """The ``return`` statements of ``function``'s body (not those of its lambdas)."""
+    found: list[Cursor] = []
+    stack = [c for c in function.get_children() if c.kind == CursorKind.COMPOUND_STMT]
+    while stack:
+        node = stack.pop()
+        if node.kind == CursorKind.RETURN_STMT:
+            found.append(node)
+        elif node.kind != CursorKind.LAMBDA_EXPR:
+            stack.extend(node.get_children())
+    return found
 
 
 def _status_read(spec: api.RosFunction, site: Cursor, count: int) -> Key | None:

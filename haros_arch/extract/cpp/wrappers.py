@@ -156,6 +156,8 @@ class Wrappers:
         # id of a call (a node of the unit) -> the constructors it may call through a
         # factory (``_constructed``), wrappers or not
         self._constructors: dict[int, list[Key]] = {}
+        # each summarised function (and lambda) of the unit, by its key (``called``)
+        self._functions: dict[Key, Cursor] = {}
 
     # -- building -----------------------------------------------------------------------
 
@@ -233,6 +235,8 @@ class Wrappers:
                           or "template" in w.row.type_from or w.spec_param is not None])}
         self._inner = {call: owner for call, owner in self._inner.items()
                        if owner in self.summaries}
+        self._functions = {key: f for f in functions
+                           if (key := _key(f.canonical)) in self.summaries}
         sites = finder.sites
         main = finder.tu.spelling
         for function in functions:
@@ -554,6 +558,19 @@ class Wrappers:
                 own.setdefault(field, value)
         if spec.kind == "read" and self._handles_absence(function, call):
             own.setdefault("tested", True)
+        given = arg(spec.default_arg)
+        if spec.kind in ("read", "declare") and given is not None and (
+            fields["default_arg"] is None and scope is not None
+        ) and not any(node.kind == CursorKind.DECL_REF_EXPR and node.referenced is not None
+                      and node.referenced.kind == CursorKind.PARM_DECL
+                      for node in given.walk_preorder()):
+            # a literal default the wrapper writes itself (``nh.param(n, v, false)``):
+            # each call of it has that default (not one its callers pass, which each
+            # call site gives)
+            has_default, default = self.finder._default(spec, args[shift:], scope)
+            if has_default and default is not None:
+                own.setdefault("has_default", True)
+                own.setdefault("default", default)
         row = dataclasses.replace(
             spec, name_arg=name_arg, optional_handle=False, name_candidates=(),
             out_arg=None, **fields)  # type: ignore[arg-type]
@@ -824,23 +841,38 @@ class Wrappers:
 
     def _called(self, call: Cursor) -> list[Wrapper]:
         """The wrappers ``call`` calls (through the overloads a dependent call names)."""
+        return [w for key in self._called_keys(call) for w in self.summaries.get(key, ())]
+
+    def _called_keys(self, call: Cursor) -> list[Key]:
+        """The keys of the wrapper functions ``call`` calls (``_called``)."""
         target = call.referenced
         if target is not None:
-            return [w for key in self._constructed(call, _arguments(call))
-                    or [_key(target.canonical)] for w in self.summaries.get(key, ())]
+            return self._constructed(call, _arguments(call)) or [_key(target.canonical)]
         children = list(call.get_children())
         args = written_arguments(call)
         for decl in _fitting(children[0], args) if children else []:
-            found = self.summaries.get(_key(decl.canonical))
-            if found:
-                return found
+            if self.summaries.get(_key(decl.canonical)):
+                return [_key(decl.canonical)]
         if children and children[0].kind == CursorKind.MEMBER_REF_EXPR:
             # a method called on an object whose type depends on a template parameter
             # (``this->node_.lock()`` in nav2's DriveOnHeading<ActionT>): the wrapper
             # methods of that name, as the node's own API rows are matched by name
             for method in _preferred(self._methods.get(_member_name(children[0]), []), args):
-                return self.summaries[_key(method.canonical)]
+                return [_key(method.canonical)]
         return []
+
+    def called(self, call: Cursor) -> list[tuple[Key, Cursor]]:
+        """The wrapper functions ``call`` calls, with their keys: empty for a call of no
+        wrapper, or of one whose definition this unit does not hold."""
+        found = [(key, self._functions.get(key)) for key in self._called_keys(call)
+                 if self.summaries.get(key)]
+        return [(key, f) for key, f in found if f is not None] if all(
+            f is not None for _, f in found) else []
+
+    def inner_of(self, call: Cursor) -> Key | None:
+        """The wrapper whose callers make ``call`` (a read or declaration inside it whose
+        name comes from its parameters), if any."""
+        return self._inner.get(_key(call))
 
 
 class _NamedScope(Scope):
