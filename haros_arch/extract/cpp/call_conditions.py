@@ -215,8 +215,7 @@ def _conditions(function: Cursor, wanted: dict[tuple[str, int], str],
                     c for c in conditions
                     if c.kind == "source" and c.statement not in _NOT_CARRIED))
                 left -= 1
-        stack.extend((child, conditions + extra)
-                     for child, extra in reversed(reader.branches(node)))
+        stack.extend(reader.below(node, conditions))
     return found
 
 

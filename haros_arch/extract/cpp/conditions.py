@@ -31,6 +31,12 @@ Branch = tuple[Cursor, tuple[Condition, ...]]
 _LOOPS = {CursorKind.FOR_STMT: "for", CursorKind.CXX_FOR_RANGE_STMT: "for",
           CursorKind.WHILE_STMT: "while"}
 _LABELS = (CursorKind.CASE_STMT, CursorKind.DEFAULT_STMT)
+# the kinds ``branches`` gives conditions to children of; any other node's children run
+# under its own conditions
+_CONTROL = frozenset({
+    CursorKind.IF_STMT, *_LOOPS, CursorKind.DO_STMT, CursorKind.SWITCH_STMT,
+    CursorKind.CXX_TRY_STMT, CursorKind.CONDITIONAL_OPERATOR, CursorKind.BINARY_OPERATOR,
+    CursorKind.CXX_CATCH_STMT})
 _SPACE = re.compile(r"\s+")
 _ELSE = re.compile(r"\belse\b")
 _SHORT_CIRCUIT = re.compile(r"^\s*(&&|\|\||\band\b|\bor\b)\s*$")
@@ -56,6 +62,14 @@ class ConditionReader:
         # the ``try`` conditions whose handlers catch a parameter's failure: a read in the
         # block is prepared for the parameter not being set (``PrimitiveCall.tested``)
         self.handled: set[Condition] = set()
+
+    def below(self, node: Cursor, conditions: tuple[Condition, ...]) -> list[Branch]:
+        """The children of ``node``, each with the conditions it runs under inside code
+        that runs under ``conditions`` (``branches``), last first: what a walk pushes on
+        its stack to visit them in order."""
+        if node.kind not in _CONTROL:
+            return [(child, conditions) for child in reversed(list(node.get_children()))]
+        return [(child, conditions + extra) for child, extra in reversed(self.branches(node))]
 
     def branches(self, node: Cursor) -> list[Branch]:
         kind = node.kind

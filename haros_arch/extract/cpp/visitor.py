@@ -442,8 +442,7 @@ class CallFinder:
             if node.kind in _MAKES:
                 self._unseen_class(node)
             tested.visit(node)
-            branches = self.reader.branches(node)
-            stack.extend((child, conditions + extra) for child, extra in reversed(branches))
+            stack.extend(self.reader.below(node, conditions))
         for site, read in self._status_reads:
             read.tested = read.tested or site in tested.keys
         # a function's calls exist where it is called: under the conditions its call
@@ -510,8 +509,7 @@ class CallFinder:
             node, conditions = stack.pop()
             if node.kind == call.kind and place_of(node) == wanted:  # a delegation too
                 return conditions
-            branches = self.reader.branches(node)
-            stack.extend((child, conditions + extra) for child, extra in reversed(branches))
+            stack.extend(self.reader.below(node, conditions))
         return None
 
     # -- one call ---------------------------------------------------------------------
