@@ -143,10 +143,10 @@ def test_a_method_also_called_outside_a_constructor_keeps_its_call(tmp_path) -> 
 
 def test_a_method_nothing_calls_makes_no_call(tmp_path) -> None:
     # a member function of a class template that is not virtual exists only where it is
-    # called: ``unused()`` is called nowhere, so its publisher is no call of the node
+    # called: ``neverCalled()`` is called nowhere, so its publisher is no call of the node
     code = IN_CLASS.replace("  typename rclcpp::Publisher<M>::SharedPtr advertise(",
-                            "  void unused() { other_ = node_->template create_publisher<M>("
-                            "topic_ + \"/unused\", 1); }\n"
+                            "  void neverCalled() { other_ = node_->template create_publisher<M>("
+                            "topic_ + \"/spare\", 1); }\n"
                             "  typename rclcpp::Publisher<M>::SharedPtr other_;\n"
                             "  typename rclcpp::Publisher<M>::SharedPtr advertise(")
     (tmp_path / "pkg" / "src").mkdir(parents=True)
@@ -157,3 +157,25 @@ def test_a_method_nothing_calls_makes_no_call(tmp_path) -> None:
     result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
     names = sorted(c.name for c in result.calls)
     assert names == ["color/detections", "color/image"], names
+
+
+def test_a_method_bound_as_a_callback_keeps_its_call(tmp_path) -> None:
+    # its address is taken (a timer's callback): it exists, and runs when the timer fires
+    code = IN_CLASS.replace("    pub_ = advertise(depth);\n",
+                            "    pub_ = advertise(depth);\n"
+                            "    timer_ = node_->create_wall_timer(std::chrono::seconds(1),"
+                            " std::bind(&Bridge::later, this));\n").replace(
+        "  typename rclcpp::Publisher<M>::SharedPtr advertise(",
+        "  void later() { other_ = node_->template create_publisher<M>("
+        "topic_ + \"/later\", 1); }\n"
+        "  typename rclcpp::Publisher<M>::SharedPtr other_;\n"
+        "  rclcpp::TimerBase::SharedPtr timer_;\n"
+        "  typename rclcpp::Publisher<M>::SharedPtr advertise(")
+    (tmp_path / "pkg" / "src").mkdir(parents=True)
+    (tmp_path / "pkg" / "package.xml").write_text(package_xml("pkg", "ament_cmake").replace(
+        "</package>", DEPENDS + "</package>"))
+    source = tmp_path / "pkg" / "src" / "talker.cpp"
+    source.write_text(code)
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    names = sorted(c.name for c in result.calls if c.kind == "publish")
+    assert names == ["?/later", "color/detections", "color/image"], names

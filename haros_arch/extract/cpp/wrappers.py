@@ -267,7 +267,8 @@ class Wrappers:
             callers = sites.callers(method) if sites is not None and (
                 key in self.members) else []
             unused = not callers and key in self.members and sites is not None and (
-                not method.is_virtual_method()) and method.spelling not in named
+                not method.is_virtual_method()) and method.spelling not in named and (
+                not self._mentioned(method))
             if unused or (callers and key in lifted and all(
                 caller.kind == CursorKind.CONSTRUCTOR and _key(caller.canonical) in
                 self.summaries and any(key in w.through for w in self.summaries[
@@ -323,6 +324,21 @@ class Wrappers:
             and not _template_parameters(f)
             and all(default_argument(p) is not None for p in _parameters(f))
         ) & self.site_names
+
+    def _mentioned(self, method: Cursor) -> bool:
+        """Whether the unit's files write the method's name anywhere but where it is
+        declared and defined (a pointer to it, ``std::bind(&C::m, this)``, a call a
+        macro makes): it may then be instantiated and called there."""
+        name = method.spelling.split("<")[0].encode()
+        own = {(d.location.file.name, d.location.offset) for d in (method, method.canonical)
+               if d.location.file is not None}
+        pattern = re.compile(rb"\b" + re.escape(name) + rb"\b")
+        for path, data in self.finder.source.items():
+            if name not in data:
+                continue
+            if any((path, m.start()) not in own for m in pattern.finditer(data)):
+                return True
+        return False
 
     def silent(self, function: Cursor) -> bool:
         """Whether the calls inside ``function`` are emitted where it is called, not
