@@ -179,3 +179,74 @@ def test_a_method_bound_as_a_callback_keeps_its_call(tmp_path) -> None:
     result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
     names = sorted(c.name for c in result.calls if c.kind == "publish")
     assert names == ["?/later", "color/detections", "color/image"], names
+
+
+TAG_DISPATCHED = """\
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+#include <std_msgs/msg/int32.hpp>
+#include <type_traits>
+template <class M>
+class Bridge {
+ public:
+  Bridge(std::shared_ptr<rclcpp::Node> node, std::string topic, int depth)
+      : node_(node), topic_(topic) {
+    advertise(depth, std::is_same<M, std_msgs::msg::String>{});
+  }
+  void advertise(int depth, std::false_type) {
+    pub_ = node_->template create_publisher<M>(topic_, depth);
+  }
+  void advertise(int depth, std::true_type) {
+    pub_ = node_->template create_publisher<M>(topic_ + "/str", depth);
+  }
+ private:
+  std::shared_ptr<rclcpp::Node> node_;
+  std::string topic_;
+  typename rclcpp::Publisher<M>::SharedPtr pub_;
+};
+int main(int argc, char** argv) {
+  rclcpp::init(argc, argv);
+  auto node = std::make_shared<rclcpp::Node>("talker");
+  Bridge<std_msgs::msg::String> a(node, std::string("color/image"), 30);
+  Bridge<std_msgs::msg::Int32> b(node, std::string("color/detections"), 5);
+  rclcpp::spin(node);
+  return 0;
+}
+"""
+
+
+def test_tag_dispatched_overloads_are_chosen_per_construction(tmp_path) -> None:
+    # ``advertise(depth, std::is_same<M, String>{})`` with a ``std::true_type`` and a
+    # ``std::false_type`` overload (depthai_bridge's BridgePublisher): each construction
+    # makes the one its template argument picks
+    (tmp_path / "pkg" / "src").mkdir(parents=True)
+    (tmp_path / "pkg" / "package.xml").write_text(package_xml("pkg", "ament_cmake").replace(
+        "</package>", DEPENDS + "</package>"))
+    source = tmp_path / "pkg" / "src" / "talker.cpp"
+    source.write_text(TAG_DISPATCHED)
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    calls = sorted((c.kind, c.name, c.type, c.queue_size) for c in result.calls)
+    assert calls == [("publish", "color/detections", "std_msgs/msg/Int32", 5),
+                     ("publish", "color/image/str", "std_msgs/msg/String", 30)], calls
+
+
+def test_a_call_of_a_type_of_its_own_stays_in_the_method(tmp_path) -> None:
+    # its type is no construction's: read where it is written, through the call sites
+    # (both constructions name it: its name is not known there)
+    code = IN_CLASS.replace(
+        "    return node_->template create_publisher<M>(topic_, depth);",
+        "    info_ = node_->template create_publisher<std_msgs::msg::String>("
+        "topic_ + \"/info\", 1);\n"
+        "    return node_->template create_publisher<M>(topic_, depth);").replace(
+        "  std::string topic_;", "  std::string topic_;\n"
+        "  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr info_;")
+    (tmp_path / "pkg" / "src").mkdir(parents=True)
+    (tmp_path / "pkg" / "package.xml").write_text(package_xml("pkg", "ament_cmake").replace(
+        "</package>", DEPENDS + "</package>"))
+    source = tmp_path / "pkg" / "src" / "talker.cpp"
+    source.write_text(code)
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    calls = sorted((c.name, c.type) for c in result.calls)
+    assert ("color/image", "std_msgs/msg/String") in calls, calls
+    assert ("color/detections", "std_msgs/msg/Int32") in calls, calls
+    assert any(name.endswith("/info") for name, _ in calls), calls

@@ -121,12 +121,17 @@ class Wrapper:
     # summary is never emitted at a call site, only lifted into a constructor of the
     # class that calls the method (``Wrappers.members``)
     member: Key | None = None
+    # made only for the constructions whose class template argument of index ``when[1]``
+    # is (``when[3]``) or is not the type declared at ``when[2]`` (the class template at
+    # ``when[0]``): one of tag-dispatched overloads, ``advertise(depth,
+    # std::is_same<M, Image>{})`` with ``advertise(int, std::true_type)``
+    when: tuple[Key, int, Key, bool] | None = None
 
     def same(self, other: Wrapper) -> bool:
         return (self.row, self.before, self.after, self.namespace, self.spec_param,
-                self.spec_arg, self.spec_path, self.member) == (
+                self.spec_arg, self.spec_path, self.member, self.when) == (
             other.row, other.before, other.after, other.namespace, other.spec_param,
-            other.spec_arg, other.spec_path, other.member)
+            other.spec_arg, other.spec_path, other.member, other.when)
 
 
 class Wrappers:
@@ -164,7 +169,11 @@ class Wrappers:
         # call it on their own object; the members by place, and the calls by place
         self.members: dict[Key, list[Wrapper]] = {}
         self._fields: dict[Key, Cursor] = {}
-        self._member_inner: dict[Key, Key] = {}
+        # (a call -> its method, and whether a constructor's summary may take it: typed
+        # by the class's template parameter, as a construction gives it)
+        self._member_inner: dict[Key, tuple[Key, bool]] = {}
+        # a method -> (constructor, call) of each call of it lifted into a constructor
+        self._lifted_sites: dict[Key, set[tuple[Key, Key]]] = {}
 
     # -- building -----------------------------------------------------------------------
 
@@ -260,22 +269,23 @@ class Wrappers:
         # member of a class template that is not virtual exists only where it is called;
         # a unit that calls it makes them there)
         sites = finder.sites
-        lifted = {k for found in self.summaries.values() for w in found for k in w.through}
         named = _called_names(found.values()) if self.members else set()
         for method in methods:
             key = _key(method.canonical)
-            callers = sites.callers(method) if sites is not None and (
-                key in self.members) else []
-            unused = not callers and key in self.members and sites is not None and (
-                not method.is_virtual_method()) and method.spelling not in named and (
-                not self._mentioned(method))
-            if unused or (callers and key in lifted and all(
-                caller.kind == CursorKind.CONSTRUCTOR and _key(caller.canonical) in
-                self.summaries and any(key in w.through for w in self.summaries[
-                    _key(caller.canonical)]) for _, caller in callers
-            )):
-                self._inner.update({call: owner for call, owner in self._member_inner.items()
-                                    if owner == key})
+            if key not in self.members or sites is None:
+                continue
+            callers = [_key(c) for each in found.values() for c in each
+                       if _may_call(c, method)]
+            unused = not callers and not method.is_virtual_method() and (
+                method.spelling not in named) and not self._mentioned(method)
+            taken = {site for ctor, site in self._lifted_sites.get(key, ())
+                     if any(key in w.through for w in self.summaries.get(ctor, ()))}
+            if unused or (callers and all(c in taken for c in callers)):
+                # (where the constructors take them: not a call of a type of its own,
+                # which stays in the method, named through the call sites)
+                self._inner.update({call: owner for call, (owner, typed) in
+                                    self._member_inner.items()
+                                    if owner == key and (typed or unused)})
         main = finder.tu.spelling
         for function in functions:
             key = _key(function.canonical)
@@ -394,7 +404,9 @@ class Wrappers:
             lifted = self._lift(method, wrapper, call, args, cls, member=True)
             if lifted is None or lifted.member is None:
                 continue
-            self._member_inner[_key(call)] = key
+            self._member_inner[_key(call)] = (key, self._member_inner.get(_key(call), (
+                key, False))[1] or "template" in lifted.row.type_from
+                or "template-value" in lifted.row.type_from)
             found = self.members.setdefault(key, [])
             if not any(lifted.same(w) for w in found):
                 found.append(lifted)
@@ -402,7 +414,8 @@ class Wrappers:
     def _member_rows(self, function: Cursor, call: Cursor) -> list[Wrapper]:
         """The summaries named after a member (``Wrapper.member``) of the method that
         ``call``, in a constructor ``function`` of a class template, calls on the object it
-        constructs: one method the call resolves to, or the one overload it may be."""
+        constructs: one method the call resolves to, or the one overload it may be, or
+        each of tag-dispatched overloads under the test that chooses it (``when``)."""
         if not self.members or not is_constructor(function) or (
             not of_class_template(function)
         ):
@@ -417,17 +430,25 @@ class Wrappers:
             head.kind == CursorKind.MEMBER_REF_EXPR) else []
         if objects and not _is_this(objects[0]):
             return []
+        whens: list[tuple[Key, int, Key, bool] | None] = [None]
         if target is not None:
             decls = [target]
         else:
             decls = _fitting(head, _arguments(call))
-            if len(decls) != 1:
-                return []  # overloads the construction chooses between: not known here
-        decl = decls[0]
-        parent, own = decl.semantic_parent, function.semantic_parent
-        if parent is None or own is None or _key(parent) != _key(own):
-            return []
-        return self.members.get(_key(decl.canonical), [])
+            if len(decls) > 1:
+                # overloads the construction chooses between: each under its test
+                whens = [_dispatched(function, decl, _arguments(call)) for decl in decls]
+                if None in whens:
+                    return []
+        found: list[Wrapper] = []
+        for decl, when in zip(decls, whens * len(decls) if len(whens) == 1 else whens,
+                              strict=True):
+            parent, own = decl.semantic_parent, function.semantic_parent
+            if parent is None or own is None or _key(parent) != _key(own):
+                return []
+            found += [dataclasses.replace(w, when=when)
+                      for w in self.members.get(_key(decl.canonical), [])]
+        return found
 
     def _summarise(self, function: Cursor, key: Key, call: Cursor) -> bool:
         members = self._member_rows(function, call)
@@ -445,8 +466,10 @@ class Wrappers:
                         row = dataclasses.replace(row, type_from=(*row.type_from, source),
                                                   fixed_type=None)
                 self._inner[_key(call)] = key
-                added = self._keep(function, key, dataclasses.replace(lifted, row=row)) \
-                    or added
+                for method in wrapper.through:
+                    self._lifted_sites.setdefault(method, set()).add((key, _key(call)))
+                added = self._keep(function, key, dataclasses.replace(
+                    lifted, row=row, when=wrapper.when)) or added
             return added
         target = call.referenced
         if target is not None and target.spelling not in _ROW_NAMES and (
@@ -858,6 +881,8 @@ class Wrappers:
         done: set[tuple[object, ...]] = set()
         for wrapper in wrappers:
             row = wrapper.row
+            if wrapper.when is not None and _chosen(call, wrapper.when) is False:
+                continue  # the other overload's
             if wrapper.spec_param is not None:
                 # a spec the call site does not name, or whose name is no literal:
                 # the call is kept, its name unknown
@@ -1421,6 +1446,76 @@ def _fits(decl: Cursor, args: list[Cursor]) -> bool:
         ):
             return False  # a string parameter given another class (a duration)
     return True
+
+
+def _dispatched(constructor: Cursor, decl: Cursor, args: list[Cursor]
+                ) -> tuple[Key, int, Key, bool] | None:
+    """The test that picks overload ``decl`` for ``args``: a parameter of type
+    ``std::true_type`` (``std::false_type``) given ``std::is_same<T, X>{}``, T a type
+    parameter of the class of ``constructor``, X a class: (the class template, T's
+    index, X's place, whether T is X)."""
+    cls = constructor.semantic_parent
+    templates = _class_parameters(constructor)
+    for param, arg in zip(_parameters(decl), args, strict=False):
+        wanted = param.type.get_canonical().spelling.replace(" ", "")
+        if wanted not in ("std::integral_constant<bool,true>",
+                          "std::integral_constant<bool,false>"):
+            continue
+        refs = [c for c in strip(arg).walk_preorder()
+                if c.kind in (CursorKind.TEMPLATE_REF, CursorKind.TYPE_REF)]
+        if len(refs) != 3 or refs[0].kind != CursorKind.TEMPLATE_REF or (
+            refs[0].spelling != "is_same"
+        ):
+            continue
+        sides = [r.referenced for r in refs[1:]]
+        index = next((i for side in sides for i, t in enumerate(templates)
+                      if side is not None and _key(side) == _key(t)), None)
+        other = next((side for side in sides if side is not None and side.kind in (
+            CursorKind.STRUCT_DECL, CursorKind.CLASS_DECL)), None)
+        if index is None or other is None or cls is None:
+            continue
+        return (_key(cls), index, _key(other.canonical), wanted.endswith("true>"))
+    return None
+
+
+def _chosen(call: Cursor, when: tuple[Key, int, Key, bool]) -> bool | None:
+    """Whether the construction ``call`` (``C<T> c(..)``, ``make_unique<C<T>>(..)``)
+    makes an overload chosen by ``when`` (``Wrapper.when``); None where its class is not
+    known."""
+    made = call.type.get_canonical()
+    candidates = [made]
+    if made.get_num_template_arguments() > 0:
+        candidates.append(made.get_template_argument_type(0).get_canonical())
+    for each in candidates:
+        decl = each.get_declaration()
+        template = conf.lib.clang_getSpecializedCursorTemplate(decl) if (
+            decl.kind != CursorKind.NO_DECL_FOUND) else None
+        if template is None or template.kind == CursorKind.NO_DECL_FOUND or (
+            _key(template) != when[0] and _key(template.canonical) != when[0]
+        ) or each.get_num_template_arguments() <= when[1]:
+            continue
+        given = each.get_template_argument_type(when[1]).get_canonical().get_declaration()
+        if given.kind == CursorKind.NO_DECL_FOUND:
+            return None
+        return (_key(given.canonical) == when[2]) == when[3]
+    return None
+
+
+def _may_call(call: Cursor, method: Cursor) -> bool:
+    """Whether ``call`` may call ``method``: it resolves to it, or it is unresolved and
+    may be one of the overloads of its name."""
+    target = call.referenced
+    if target is not None:
+        return _key(method.canonical) in _specialised_keys(target) or (
+            _key(target.canonical) == _key(method.canonical))
+    head = next(iter(call.get_children()), None)
+    if head is None:
+        return False
+    decls = _overloads(head)
+    if decls:
+        return any(_key(d.canonical) == _key(method.canonical) for d in decls)
+    return head.kind == CursorKind.MEMBER_REF_EXPR and _member_name(head) == (
+        method.spelling.split("<")[0])
 
 
 def _called_names(calls: Iterator[list[Cursor]] | Any) -> set[str]:
