@@ -250,3 +250,19 @@ def test_a_call_of_a_type_of_its_own_stays_in_the_method(tmp_path) -> None:
     assert ("color/image", "std_msgs/msg/String") in calls, calls
     assert ("color/detections", "std_msgs/msg/Int32") in calls, calls
     assert any(name.endswith("/info") for name, _ in calls), calls
+
+
+def test_the_method_s_call_made_at_the_constructions_is_no_missed_call(tmp_path) -> None:
+    # a unit with an error is searched for ROS calls no call was extracted at: the
+    # method's, made at the constructions, is not one (as a wrapper's body is not)
+    code = IN_CLASS.replace("  rclcpp::spin(node);", "  not_declared_anywhere(node);\n"
+                            "  rclcpp::spin(node);")
+    (tmp_path / "pkg" / "src").mkdir(parents=True)
+    (tmp_path / "pkg" / "package.xml").write_text(package_xml("pkg", "ament_cmake").replace(
+        "</package>", DEPENDS + "</package>"))
+    source = tmp_path / "pkg" / "src" / "talker.cpp"
+    source.write_text(code)
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    names = sorted(c.name for c in result.calls)
+    assert names == ["color/detections", "color/image"], names
+    assert not [d.message for d in result.diagnostics if d.code == "CPP_CALL_MISSED"]

@@ -174,6 +174,7 @@ class Wrappers:
         self._member_inner: dict[Key, tuple[Key, bool]] = {}
         # a method -> (constructor, call) of each call of it lifted into a constructor
         self._lifted_sites: dict[Key, set[tuple[Key, Key]]] = {}
+        self._left: set[Key] = set()  # the methods whose calls those constructions make
 
     # -- building -----------------------------------------------------------------------
 
@@ -283,6 +284,7 @@ class Wrappers:
             if unused or (callers and all(c in taken for c in callers)):
                 # (where the constructors take them: not a call of a type of its own,
                 # which stays in the method, named through the call sites)
+                self._left.add(key)
                 self._inner.update({call: owner for call, (owner, typed) in
                                     self._member_inner.items()
                                     if owner == key and (typed or unused)})
@@ -354,7 +356,7 @@ class Wrappers:
         """Whether the calls inside ``function`` are emitted where it is called, not
         where they are written (a wrapper whose callers are in this unit)."""
         key = _key(function.canonical)
-        return key in self.summaries and key not in self._kept
+        return (key in self.summaries and key not in self._kept) or key in self._left
 
     def _constructed(self, call: Cursor, args: list[Cursor]) -> list[Key]:
         """The wrapper constructors ``std::make_shared<C>(args)`` may call (C a class
