@@ -284,10 +284,11 @@ class Wrappers:
             if unused or (callers and all(c in taken for c in callers)):
                 # (where the constructors take them: not a call of a type of its own,
                 # which stays in the method, named through the call sites)
-                self._left.add(key)
-                self._inner.update({call: owner for call, (owner, typed) in
-                                    self._member_inner.items()
-                                    if owner == key and (typed or unused)})
+                left = {call: owner for call, (owner, typed) in self._member_inner.items()
+                        if owner == key and (typed or unused)}
+                if left:
+                    self._left.add(key)
+                    self._inner.update(left)
         main = finder.tu.spelling
         for function in functions:
             key = _key(function.canonical)
