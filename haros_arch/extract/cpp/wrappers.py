@@ -115,12 +115,23 @@ class Wrapper:
     # Autoware's component interface adaptor, ``adaptor.init_pub(pub_)``)
     spec_arg: int | None = None
     spec_path: tuple[str, ...] = ()
+    # the name is not an argument but the member of this place (``before`` + member +
+    # ``after``): a method of a class template that names its call after a member its
+    # constructor initialises (depthai_bridge's ``advertise`` with ``_rosTopic``); such a
+    # summary is never emitted at a call site, only lifted into a constructor of the
+    # class that calls the method (``Wrappers.members``)
+    member: Key | None = None
+    # made only for the constructions whose class template argument of index ``when[1]``
+    # is (``when[3]``) or is not the type declared at ``when[2]`` (the class template at
+    # ``when[0]``): one of tag-dispatched overloads, ``advertise(depth,
+    # std::is_same<M, Image>{})`` with ``advertise(int, std::true_type)``
+    when: tuple[Key, int, Key, bool] | None = None
 
     def same(self, other: Wrapper) -> bool:
         return (self.row, self.before, self.after, self.namespace, self.spec_param,
-                self.spec_arg, self.spec_path) == (
+                self.spec_arg, self.spec_path, self.member, self.when) == (
             other.row, other.before, other.after, other.namespace, other.spec_param,
-            other.spec_arg, other.spec_path)
+            other.spec_arg, other.spec_path, other.member, other.when)
 
 
 class Wrappers:
@@ -158,6 +169,17 @@ class Wrappers:
         self._constructors: dict[int, list[Key]] = {}
         # each summarised function (and lambda) of the unit, by its key (``called``)
         self._functions: dict[Key, Cursor] = {}
+        # a class template's method (not a constructor) -> its calls named after a member
+        # of the class (``Wrapper.member``), lifted into the class's constructors that
+        # call it on their own object; the members by place, and the calls by place
+        self.members: dict[Key, list[Wrapper]] = {}
+        self._fields: dict[Key, Cursor] = {}
+        # (a call -> its method, and whether a constructor's summary may take it: typed
+        # by the class's template parameter, as a construction gives it)
+        self._member_inner: dict[Key, tuple[Key, bool]] = {}
+        # a method -> (constructor, call) of each call of it lifted into a constructor
+        self._lifted_sites: dict[Key, set[tuple[Key, Key]]] = {}
+        self._left: set[Key] = set()  # the methods whose calls those constructions make
 
     # -- building -----------------------------------------------------------------------
 
@@ -197,9 +219,20 @@ class Wrappers:
             found[_key(function.canonical)] = inner
             todo += lambdas
             functions += [lam for lam in lambdas if _parameters(lam)]
+        # a class template's method whose call is named after a member (``Wrapper.member``)
+        methods = [f for f in finder.functions if f.kind in (
+            CursorKind.CXX_METHOD, CursorKind.FUNCTION_TEMPLATE) and of_class_template(f)
+            and not is_constructor(f) and not f.is_static_method()]
+        api_names = {"", *_API_NAMES}
+        for method in methods:
+            for call in found.get(_key(method.canonical), ()):
+                if call.spelling in api_names:
+                    self._summarise_member(method, call)
         # the calls that may be of the API or of a wrapper (by name; "" depends on a
         # template parameter)
-        wanted = {"", *_API_NAMES, *(f.spelling for f in functions)}
+        wanted = {"", *_API_NAMES, *(f.spelling for f in functions),
+                  *(f.spelling.split("<")[0] for f in methods
+                    if _key(f.canonical) in self.members)}
         calls = {_key(f.canonical): [c for c in found.get(_key(f.canonical), ())
                                      if c.spelling in wanted]
                  for f in functions}
@@ -237,7 +270,32 @@ class Wrappers:
                        if owner in self.summaries}
         self._functions = {key: f for f in functions
                            if (key := _key(f.canonical)) in self.summaries}
+        # a method's calls named after a member are made at the constructions of the
+        # class when every call of the method in the unit is in a constructor whose
+        # summary took them (the member's value is the constructor's argument there)
+        # (or where nothing in the unit calls the method, nor names it in a call: a
+        # member of a class template that is not virtual exists only where it is called;
+        # a unit that calls it makes them there)
         sites = finder.sites
+        named = _called_names(found.values()) if self.members else set()
+        for method in methods:
+            key = _key(method.canonical)
+            if key not in self.members or sites is None:
+                continue
+            callers = [_key(c) for each in found.values() for c in each
+                       if _may_call(c, method)]
+            unused = not callers and not method.is_virtual_method() and (
+                method.spelling not in named) and not self._mentioned(method)
+            taken = {site for ctor, site in self._lifted_sites.get(key, ())
+                     if any(key in w.through for w in self.summaries.get(ctor, ()))}
+            if unused or (callers and all(c in taken for c in callers)):
+                # (where the constructors take them: not a call of a type of its own,
+                # which stays in the method, named through the call sites)
+                left = {call: owner for call, (owner, typed) in self._member_inner.items()
+                        if owner == key and (typed or unused)}
+                if left:
+                    self._left.add(key)
+                    self._inner.update(left)
         main = finder.tu.spelling
         for function in functions:
             key = _key(function.canonical)
@@ -297,11 +355,26 @@ class Wrappers:
             and all(default_argument(p) is not None for p in _parameters(f))
         ) & self.site_names
 
+    def _mentioned(self, method: Cursor) -> bool:
+        """Whether the unit's files write the method's name anywhere but where it is
+        declared and defined (a pointer to it, ``std::bind(&C::m, this)``, a call a
+        macro makes): it may then be instantiated and called there."""
+        name = method.spelling.split("<")[0].encode()
+        own = {(d.location.file.name, d.location.offset) for d in (method, method.canonical)
+               if d.location.file is not None}
+        pattern = re.compile(rb"\b" + re.escape(name) + rb"\b")
+        for path, data in self.finder.source.items():
+            if name not in data:
+                continue
+            if any((path, m.start()) not in own for m in pattern.finditer(data)):
+                return True
+        return False
+
     def silent(self, function: Cursor) -> bool:
         """Whether the calls inside ``function`` are emitted where it is called, not
         where they are written (a wrapper whose callers are in this unit)."""
         key = _key(function.canonical)
-        return key in self.summaries and key not in self._kept
+        return (key in self.summaries and key not in self._kept) or key in self._left
 
     def _constructed(self, call: Cursor, args: list[Cursor]) -> list[Key]:
         """The wrapper constructors ``std::make_shared<C>(args)`` may call (C a class
@@ -341,7 +414,83 @@ class Wrappers:
                 found.append(key)
         return found
 
+    def _summarise_member(self, method: Cursor, call: Cursor) -> None:
+        """Summarise the API call ``call`` of the class template's method ``method`` when
+        its name is a member of the class (``Wrapper.member``)."""
+        key = _key(method.canonical)
+        for wrapper, args, cls, callee in self._inner_rows(call):
+            if callee is not None:
+                continue
+            lifted = self._lift(method, wrapper, call, args, cls, member=True)
+            if lifted is None or lifted.member is None:
+                continue
+            self._member_inner[_key(call)] = (key, self._member_inner.get(_key(call), (
+                key, False))[1] or "template" in lifted.row.type_from
+                or "template-value" in lifted.row.type_from)
+            found = self.members.setdefault(key, [])
+            if not any(lifted.same(w) for w in found):
+                found.append(lifted)
+
+    def _member_rows(self, function: Cursor, call: Cursor) -> list[Wrapper]:
+        """The summaries named after a member (``Wrapper.member``) of the method that
+        ``call``, in a constructor ``function`` of a class template, calls on the object it
+        constructs: one method the call resolves to, or the one overload it may be, or
+        each of tag-dispatched overloads under the test that chooses it (``when``)."""
+        if not self.members or not is_constructor(function) or (
+            not of_class_template(function)
+        ):
+            return []
+        target = call.referenced
+        children = list(call.get_children())
+        head = strip(children[0]) if children else None
+        if head is None or head.kind not in (CursorKind.MEMBER_REF_EXPR,
+                                             CursorKind.DECL_REF_EXPR):
+            return []
+        objects = [c for c in head.get_children() if c.kind.is_expression()] if (
+            head.kind == CursorKind.MEMBER_REF_EXPR) else []
+        if objects and not _is_this(objects[0]):
+            return []
+        whens: list[tuple[Key, int, Key, bool] | None] = [None]
+        if target is not None:
+            decls = [target]
+        else:
+            decls = _fitting(head, _arguments(call))
+            if len(decls) > 1:
+                # overloads the construction chooses between: each under its test
+                whens = [_dispatched(function, decl, _arguments(call)) for decl in decls]
+                if None in whens:
+                    return []
+        found: list[Wrapper] = []
+        for decl, when in zip(decls, whens * len(decls) if len(whens) == 1 else whens,
+                              strict=True):
+            parent, own = decl.semantic_parent, function.semantic_parent
+            if parent is None or own is None or _key(parent) != _key(own):
+                return []
+            found += [dataclasses.replace(w, when=when)
+                      for w in self.members.get(_key(decl.canonical), [])]
+        return found
+
     def _summarise(self, function: Cursor, key: Key, call: Cursor) -> bool:
+        members = self._member_rows(function, call)
+        if members:
+            added = False
+            args = _arguments(call)
+            for wrapper in members:
+                lifted = self._lift(function, wrapper, call, args, None)
+                if lifted is None:
+                    continue
+                row = lifted.row
+                for source in ("template", "template-value"):
+                    # the class's type parameter: the construction's, as in the method
+                    if source in wrapper.row.type_from and source not in row.type_from:
+                        row = dataclasses.replace(row, type_from=(*row.type_from, source),
+                                                  fixed_type=None)
+                self._inner[_key(call)] = key
+                for method in wrapper.through:
+                    self._lifted_sites.setdefault(method, set()).add((key, _key(call)))
+                added = self._keep(function, key, dataclasses.replace(
+                    lifted, row=row, when=wrapper.when)) or added
+            return added
         target = call.referenced
         if target is not None and target.spelling not in _ROW_NAMES and (
             _key(target.canonical) not in self.summaries
@@ -484,9 +633,10 @@ class Wrappers:
                 yield Wrapper(dataclasses.replace(spec, standin_only=False)), args, None, None
 
     def _lift(self, function: Cursor, inner: Wrapper, call: Cursor, args: list[Cursor],
-              cls: Cursor | None) -> Wrapper | None:
+              cls: Cursor | None, member: bool = False) -> Wrapper | None:
         """``inner`` as made by ``function`` at ``call``, in terms of ``function``'s
-        parameters; None unless its name comes from one of them."""
+        parameters; None unless its name comes from one of them (``member``: from a
+        member of ``function``'s class, ``Wrapper.member``)."""
         spec = inner.row
         if spec.fixed_name is not None or spec.per_element:
             return None
@@ -502,7 +652,28 @@ class Wrappers:
         spec_param: int | None = None
         spec_arg: int | None = None
         spec_path = inner.spec_path
-        if inner.spec_param is not None:
+        member_key: Key | None = None
+        if inner.member is not None:
+            # a method's call named after a member, in a constructor of its class: the
+            # member's value is what this constructor initialises it with
+            decl = self._fields.get(inner.member)
+            given = scope.field(decl) if scope is not None and decl is not None else None
+            if given is None or given[1] is not scope:
+                return None
+            shape = _name_shape(given[0], params, scope, 1)
+            if shape is None:
+                return None
+            before, name_arg, after = shape
+        elif member:
+            name_expr = arg(spec.name_arg)
+            found = _member_shape(name_expr, function, scope, 0) if (
+                name_expr is not None) else None
+            if found is None:
+                return None
+            before, decl, after = found
+            name_arg, member_key = spec.name_arg, _key(decl)
+            self._fields[member_key] = decl
+        elif inner.spec_param is not None:
             if inner.spec_arg is not None:
                 # a spec deduced from the argument the inner wrapper is given: this
                 # function's parameter, passed on (``init_sub(sub, std::bind(...))``)
@@ -548,7 +719,7 @@ class Wrappers:
             fields["default_arg"] = _parameter_index(
                 _converted(arg(spec.default_arg)), params)
         fields.update(self._handle(function, spec, call, args, shift, params, scope))
-        fields.update(self._type(function, spec, call, args, shift, params, cls))
+        fields.update(self._type(function, spec, call, args, shift, params, cls, member))
         namespace = fields.pop("namespace", None)
         if inner.namespace is not None:
             namespace = inner.namespace
@@ -577,7 +748,7 @@ class Wrappers:
         return Wrapper(row, (*inner.before, *before), (*after, *inner.after),
                        namespace if isinstance(namespace, str) else None,
                        inner.through | {_key(function.canonical)}, tuple(own.items()),
-                       spec_param, spec_arg, spec_path)
+                       spec_param, spec_arg, spec_path, member_key)
 
     def _handles_absence(self, function: Cursor, call: Cursor) -> bool:
         """Whether ``function`` tests whether the parameter that ``call`` reads is there
@@ -663,15 +834,16 @@ class Wrappers:
 
     def _type(self, function: Cursor, spec: api.RosFunction, call: Cursor,
               args: list[Cursor], shift: int, params: list[Cursor],
-              cls: Cursor | None) -> dict[str, object]:
+              cls: Cursor | None, member: bool = False) -> dict[str, object]:
         """The derived row's type sources: the call site's template argument for the
         wrapper's first template parameter, its value or callback arguments, or the type
         fixed in the wrapper."""
         templates = [c for c in function.get_children()
                      if c.kind == CursorKind.TEMPLATE_TYPE_PARAMETER]
-        if of_class_template(function) and is_constructor(function):
+        if of_class_template(function) and (is_constructor(function) or member):
             # a constructor of a class template: the class's first parameter is what a
-            # construction's template argument gives (make_shared<Server<T>>)
+            # construction's template argument gives (make_shared<Server<T>>); so in a
+            # method lifted into one (``Wrapper.member``)
             templates = _class_parameters(function)
         sources: list[str] = []
         type_arg: int | None = None
@@ -745,6 +917,8 @@ class Wrappers:
         done: set[tuple[object, ...]] = set()
         for wrapper in wrappers:
             row = wrapper.row
+            if wrapper.when is not None and _chosen(call, wrapper.when) is False:
+                continue  # the other overload's
             if wrapper.spec_param is not None:
                 # a spec the call site does not name, or whose name is no literal:
                 # the call is kept, its name unknown
@@ -847,7 +1021,7 @@ class Wrappers:
         """The keys of the wrapper functions ``call`` calls (``_called``)."""
         target = call.referenced
         if target is not None:
-            return self._constructed(call, _arguments(call)) or [_key(target.canonical)]
+            return self._constructed(call, _arguments(call)) or _specialised_keys(target)
         children = list(call.get_children())
         args = written_arguments(call)
         for decl in _fitting(children[0], args) if children else []:
@@ -975,6 +1149,53 @@ def _name_shape(expr: Cursor, params: list[Cursor], scope: Scope | None,
     if left is not None:
         return left[0], left[1], (*left[2], *scope.string(operands[1]))
     right = _name_shape(operands[1], params, scope, depth + 1)
+    if right is not None:
+        return (*scope.string(operands[0]), *right[0]), right[1], right[2]
+    return None
+
+
+def _member_shape(expr: Cursor, function: Cursor, scope: Scope | None,
+                  depth: int) -> tuple[Parts, Cursor, Parts] | None:
+    """``expr`` as (parts before, a member of ``function``'s own object, parts after),
+    when it is such a member (``_rosTopic``, ``this->topic_``) with known text around it
+    (``_cameraName + "/camera_info"``)."""
+    expr = strip(expr)
+    if depth > 8:
+        return None
+    kind = expr.kind
+    if kind == CursorKind.MEMBER_REF_EXPR:
+        decl = expr.referenced
+        objects = [c for c in expr.get_children() if c.kind.is_expression()]
+        parent, own = (decl.semantic_parent if decl is not None else None,
+                       function.semantic_parent)
+        if decl is None or decl.kind != CursorKind.FIELD_DECL or parent is None or (
+            own is None or _key(parent) != _key(own)
+        ) or (objects and not _is_this(objects[0])):
+            return None
+        return (), decl, ()
+    operands: list[Cursor] = []
+    if kind == CursorKind.CALL_EXPR and expr.spelling == "operator+":
+        operands = written_arguments(expr)
+    elif kind == CursorKind.BINARY_OPERATOR and scope is not None:
+        children = list(expr.get_children())
+        if len(children) == 2 and between(children[0], children[1], scope.source) == "+":
+            operands = children
+    elif kind == CursorKind.CALL_EXPR:
+        inner = [c for c in expr.get_children() if c.kind.is_expression()]
+        target = expr.referenced
+        if len(inner) == 1 and (target is None or target.kind == CursorKind.CONSTRUCTOR
+                                or expr.spelling in ("c_str", "str")):
+            found = inner[0]
+            if found.kind == CursorKind.MEMBER_REF_EXPR and expr.spelling in ("c_str", "str"):
+                objects = [c for c in found.get_children() if c.kind.is_expression()]
+                found = objects[0] if objects else found
+            return _member_shape(found, function, scope, depth + 1)
+    if len(operands) != 2 or scope is None:
+        return None
+    left = _member_shape(operands[0], function, scope, depth + 1)
+    if left is not None:
+        return left[0], left[1], (*left[2], *scope.string(operands[1]))
+    right = _member_shape(operands[1], function, scope, depth + 1)
     if right is not None:
         return (*scope.string(operands[0]), *right[0]), right[1], right[2]
     return None
@@ -1276,6 +1497,109 @@ def _fits(decl: Cursor, args: list[Cursor]) -> bool:
         ):
             return False  # a string parameter given another class (a duration)
     return True
+
+
+def _dispatched(constructor: Cursor, decl: Cursor, args: list[Cursor]
+                ) -> tuple[Key, int, Key, bool] | None:
+    """The test that picks overload ``decl`` for ``args``: a parameter of type
+    ``std::true_type`` (``std::false_type``) given ``std::is_same<T, X>{}``, T a type
+    parameter of the class of ``constructor``, X a class: (the class template, T's
+    index, X's place, whether T is X)."""
+    cls = constructor.semantic_parent
+    templates = _class_parameters(constructor)
+    for param, arg in zip(_parameters(decl), args, strict=False):
+        wanted = param.type.get_canonical().spelling.replace(" ", "")
+        if wanted not in ("std::integral_constant<bool,true>",
+                          "std::integral_constant<bool,false>"):
+            continue
+        refs = [c for c in strip(arg).walk_preorder()
+                if c.kind in (CursorKind.TEMPLATE_REF, CursorKind.TYPE_REF)]
+        if len(refs) != 3 or refs[0].kind != CursorKind.TEMPLATE_REF or (
+            refs[0].spelling != "is_same"
+        ):
+            continue
+        sides = [r.referenced for r in refs[1:]]
+        index = next((i for side in sides for i, t in enumerate(templates)
+                      if side is not None and _key(side) == _key(t)), None)
+        other = next((side for side in sides if side is not None and side.kind in (
+            CursorKind.STRUCT_DECL, CursorKind.CLASS_DECL)), None)
+        if index is None or other is None or cls is None:
+            continue
+        return (_key(cls), index, _key(other.canonical), wanted.endswith("true>"))
+    return None
+
+
+def _chosen(call: Cursor, when: tuple[Key, int, Key, bool]) -> bool | None:
+    """Whether the construction ``call`` (``C<T> c(..)``, ``make_unique<C<T>>(..)``)
+    makes an overload chosen by ``when`` (``Wrapper.when``); None where its class is not
+    known."""
+    made = call.type.get_canonical()
+    candidates = [made]
+    if made.get_num_template_arguments() > 0:
+        candidates.append(made.get_template_argument_type(0).get_canonical())
+    for each in candidates:
+        decl = each.get_declaration()
+        template = conf.lib.clang_getSpecializedCursorTemplate(decl) if (
+            decl.kind != CursorKind.NO_DECL_FOUND) else None
+        if template is None or template.kind == CursorKind.NO_DECL_FOUND or (
+            _key(template) != when[0] and _key(template.canonical) != when[0]
+        ) or each.get_num_template_arguments() <= when[1]:
+            continue
+        given = each.get_template_argument_type(when[1]).get_canonical().get_declaration()
+        if given.kind == CursorKind.NO_DECL_FOUND:
+            return None
+        return (_key(given.canonical) == when[2]) == when[3]
+    return None
+
+
+def _may_call(call: Cursor, method: Cursor) -> bool:
+    """Whether ``call`` may call ``method``: it resolves to it, or it is unresolved and
+    may be one of the overloads of its name."""
+    target = call.referenced
+    if target is not None:
+        return _key(method.canonical) in _specialised_keys(target) or (
+            _key(target.canonical) == _key(method.canonical))
+    head = next(iter(call.get_children()), None)
+    if head is None:
+        return False
+    decls = _overloads(head)
+    if decls:
+        return any(_key(d.canonical) == _key(method.canonical) for d in decls)
+    return head.kind == CursorKind.MEMBER_REF_EXPR and _member_name(head) == (
+        method.spelling.split("<")[0])
+
+
+def _called_names(calls: Iterator[list[Cursor]] | Any) -> set[str]:
+    """The names the calls of the unit may call: each call's, a dependent member call's
+    method and the overloads an unresolved call's name may be."""
+    found: set[str] = set()
+    for each in calls:
+        for call in each:
+            if call.spelling:
+                found.add(call.spelling.split("<")[0])
+                continue
+            head = next(iter(call.get_children()), None)
+            if head is None:
+                continue
+            if head.kind == CursorKind.MEMBER_REF_EXPR:
+                found.add(_member_name(head))
+            found.update(d.spelling for d in _overloads(head))
+    return found
+
+
+def _specialised_keys(target: Cursor) -> list[Key]:
+    """The place of the function ``target``, and of its class template's member when it
+    is a specialisation's constructor: one defined out of the class (``template <class
+    M> Bridge<M>::Bridge(...)``) is, in a construction ``Bridge<Msg> b(...)``, known by
+    its definition, while the summary is the class's declaration's."""
+    found = [_key(target.canonical)]
+    if target.kind == CursorKind.CONSTRUCTOR:
+        template = conf.lib.clang_getSpecializedCursorTemplate(target)
+        if template is not None and template.kind != CursorKind.NO_DECL_FOUND and (
+            _key(template.canonical) not in found
+        ):
+            found.append(_key(template.canonical))
+    return found
 
 
 def _targets(call: Cursor) -> list[Key]:
