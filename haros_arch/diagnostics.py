@@ -448,11 +448,13 @@ CATALOGUE: dict[str, Entry] = {
         "info", "the node ({given}) is given to {name}, which the parse does not know",
         "A call passes the node (or its handle or an interface of it) to a function or "
         "class whose declaration is not in the workspace (a vendor library's helper, such "
-        "as a parameter getter): the ROS calls it makes on the node are not read. The node "
-        "is 'partial', so checks that claim something is absent do not decide on it. Not "
-        "said when the call is also given a pointer to a member function of the node's "
-        "class (a callback binding, ecl::Slot(&Node::cb, *this): the member's calls are "
-        "read where it is defined)."),
+        "as a parameter getter): the ROS calls it makes on the node are not read. So does "
+        "building such a class with an rclcpp::NodeOptions (a component class of a package "
+        "not in the workspace): it is a node of its own in the process, whose interface is "
+        "not read. The node is 'partial', so checks that claim something is absent do "
+        "not decide on it. Not said when the call is also given a pointer to a member "
+        "function of the node's class (a callback binding, ecl::Slot(&Node::cb, *this): "
+        "the member's calls are read where it is defined)."),
     "CPP_NAMES_DECLARED": Entry(
         "info", "{count} name(s) unknown to the parse declared permissively ({names}); "
         "clang errors in this unit: {before} before, {after} after",

@@ -1094,7 +1094,7 @@ def _node_given(errors: list[_Error], finder: CallFinder, source: SourceCache,
         given = recall.node_given(lines, error.line, node_names(function))
         if given is not None:
             said.add((error.path, error.line))
-            name = error.spelling[match.end():].split("'", 1)[0]
+            name = match.group("name") or match.group("scope")
             found.append(diag.make(
                 "CPP_NODE_TO_UNKNOWN", workspace.location(error.path, error.line, error.column),
                 given=given, name=name))

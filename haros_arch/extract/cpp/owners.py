@@ -169,6 +169,14 @@ def node_arguments(call: Cursor) -> list[Cursor]:
     return [arg for arg in call.get_arguments() if _is_node(arg)]
 
 
+def options_arguments(call: Cursor) -> list[Cursor]:
+    """The arguments of ``call`` that are an ``rclcpp::NodeOptions``: an object built
+    with them is a node of its own (a component class), in the process of the caller."""
+    return [arg for arg in call.get_arguments()
+            if qualified_name(_pointee(arg.type.get_canonical()).get_declaration())
+            == "rclcpp::NodeOptions"]
+
+
 def node_names(function: Cursor) -> frozenset[str]:
     """The words by which ``function``'s code names its node: its parameters of a node
     type (a node, NodeHandle, node interface, or a pointer to one), and ``this`` /
@@ -180,6 +188,13 @@ def node_names(function: Cursor) -> frozenset[str]:
         _derives_from_node(parent, 0)
     ):
         found |= {"this", "shared_from_this"}
+    # a NodeOptions (a parameter or a local): what is built with it is a node of its own
+    # in this process, a component class (raspimouse_ros2_examples' line_follower builds
+    # ``raspimouse::Raspimouse(options)`` of a missing header beside its own node)
+    found |= {c.spelling for c in function.walk_preorder()
+              if c.kind in (CursorKind.PARM_DECL, CursorKind.VAR_DECL) and c.spelling
+              and qualified_name(_pointee(c.type.get_canonical()).get_declaration())
+              == "rclcpp::NodeOptions"}
     return frozenset(found)
 
 

@@ -316,9 +316,14 @@ def in_call(lines: Sequence[str], sites: Sequence[Site], line: int) -> bool:
                if s.line <= line < s.line + STATEMENT_LINES)
 
 
-# clang's messages for a name it does not know
-UNKNOWN_NAME = re.compile(r"use of undeclared identifier '|no member named '[^']*' in "
-                          r"namespace '|no template named '|unknown type name '")
+# clang's messages for a name it does not know, the name in the group ``name`` (or
+# ``scope``: a name found, but not as the namespace or class written before ``::``, a
+# local variable named after the namespace of a missing header, ``auto raspimouse =
+# std::make_shared<raspimouse::Raspimouse>(options)``, where C++ looks that name up
+# among namespaces and types only)
+UNKNOWN_NAME = re.compile(r"(?:use of undeclared identifier '|no member named '[^']*' in "
+                          r"namespace '|no template named '|unknown type name ')(?P<name>[^']*)"
+                          r"|^'(?P<scope>\w+)' is not a class, namespace, or enumeration")
 
 
 def node_given(lines: Sequence[str], line: int, names: Iterable[str]) -> str | None:

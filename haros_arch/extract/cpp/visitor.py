@@ -52,6 +52,7 @@ from .owners import (
     handle_node,
     node_arguments,
     opaque_construction,
+    options_arguments,
     owner_of,
     unseen_construction,
 )
@@ -834,7 +835,10 @@ class CallFinder:
         key = place_of(call)
         if key in self._unknown:
             return
-        given = node_arguments(call)
+        # a class not read built with a NodeOptions is a node of its own in this
+        # process (raspimouse_ros2_examples' line_follower builds raspimouse::Raspimouse
+        # beside its own node): its interface is unseen as well
+        given = node_arguments(call) or options_arguments(call)
         if given and binds_own_member(call, given):
             return  # a callback binding: the member's calls are read where it is defined
         if not given and self._of_unknown_base(unknown, function):
