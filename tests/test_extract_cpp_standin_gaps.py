@@ -656,3 +656,16 @@ def test_ros1_opencv_regions_as_small_matrices_and_a_time_synchronizers_inputs(
     assert _errors(result) == []
     assert [(c.kind, c.name) for c in result.calls] == [
         ("subscribe", "~cam0_image"), ("subscribe", "~cam1_image")]
+
+
+def test_ros2_opencv_contours_with_hierarchy_and_moments(write_tree) -> None:
+    """raspimouse_ros2_examples' camera_line_follower: ``cv::findContours`` with the
+    contours' hierarchy, ``cv::drawContours`` given a line type and the hierarchy,
+    ``cv::morphologyEx``, ``cv::contourArea``, ``cv::moments`` and ``cv::LINE_4``: clang
+    errors in a function that reads a parameter made the node partial."""
+    result = _extract(write_tree, _source("ros2_opencv_contours.cpp"), "ament_cmake")
+    assert _errors(result) == []
+    assert [d.code for d in result.diagnostics if d.code.startswith("CPP_NODE")] == []
+    assert [(c.kind, c.name) for c in result.calls
+            if c.kind in ("declare", "read", "publish")] == [
+        ("declare", "min_brightness"), ("publish", "area"), ("read", "min_brightness")]

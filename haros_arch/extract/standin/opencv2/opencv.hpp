@@ -340,6 +340,12 @@ Mat getRotationMatrix2D(Point2f center, double angle, double scale);
 void dilate(const Mat& src, Mat& dst, const Mat& kernel);
 void erode(const Mat& src, Mat& dst, const Mat& kernel);
 enum { MORPH_RECT = 0, MORPH_CROSS = 1, MORPH_ELLIPSE = 2 };
+// imgproc.hpp's morphological operations
+enum { MORPH_ERODE = 0, MORPH_DILATE = 1, MORPH_OPEN = 2, MORPH_CLOSE = 3,
+       MORPH_GRADIENT = 4, MORPH_TOPHAT = 5, MORPH_BLACKHAT = 6 };
+void morphologyEx(const Mat& src, Mat& dst, int op, const Mat& kernel,
+                  Point anchor = Point(-1, -1), int iterations = 1, int border = 0,
+                  const Scalar& value = Scalar());
 Mat getStructuringElement(int shape, Size size, Point anchor = Point(-1, -1));
 // core/eigen.hpp: between OpenCV and Eigen matrices
 template<class M> void cv2eigen(const Mat& src, M& dst);
@@ -412,9 +418,10 @@ enum { EVENT_MOUSEMOVE = 0, EVENT_LBUTTONDOWN = 1, EVENT_RBUTTONDOWN = 2,
 enum { EVENT_FLAG_LBUTTON = 1, EVENT_FLAG_RBUTTON = 2, EVENT_FLAG_MBUTTON = 4,
   EVENT_FLAG_CTRLKEY = 8, EVENT_FLAG_SHIFTKEY = 16, EVENT_FLAG_ALTKEY = 32 };
 typedef void (*MouseCallback)(int event, int x, int y, int flags, void* userdata);
-enum { LINE_8 = 8, LINE_AA = 16, FILLED = -1 };
+enum { LINE_4 = 4, LINE_8 = 8, LINE_AA = 16, FILLED = -1 };
 enum { FONT_HERSHEY_SIMPLEX = 0, FONT_HERSHEY_PLAIN = 1 };
-enum { RETR_EXTERNAL = 0, RETR_LIST = 1, RETR_TREE = 3, CHAIN_APPROX_SIMPLE = 2 };
+enum { RETR_EXTERNAL = 0, RETR_LIST = 1, RETR_CCOMP = 2, RETR_TREE = 3, CHAIN_APPROX_NONE = 1,
+       CHAIN_APPROX_SIMPLE = 2, CHAIN_APPROX_TC89_L1 = 3, CHAIN_APPROX_TC89_KCOS = 4 };
 enum { CAP_PROP_FRAME_WIDTH = 3, CAP_PROP_FRAME_HEIGHT = 4, CAP_PROP_FPS = 5 };
 enum ImreadModes { IMREAD_COLOR = 1, IMREAD_GRAYSCALE = 0, IMREAD_UNCHANGED = -1 };
 Mat imdecode(const std::vector<uchar>& buf, int flags);
@@ -432,8 +439,29 @@ void flip(const Mat& src, Mat& dst, int code);
 void split(const Mat& src, std::vector<Mat>& channels);
 void merge(const std::vector<Mat>& channels, Mat& dst);
 void inRange(const Mat& src, const Scalar& lower, const Scalar& upper, Mat& dst);
-void findContours(Mat& image, std::vector<std::vector<Point> >& contours, int mode, int method);
-void drawContours(Mat& image, const std::vector<std::vector<Point> >& contours, int index, const Scalar& color, int thickness = 1);
+void findContours(Mat& image, std::vector<std::vector<Point> >& contours, int mode, int method,
+                  Point offset = Point());
+// with the contours' hierarchy (next, previous, first child, parent of each)
+void findContours(Mat& image, std::vector<std::vector<Point> >& contours,
+                  std::vector<Vec4i>& hierarchy, int mode, int method, Point offset = Point());
+void drawContours(Mat& image, const std::vector<std::vector<Point> >& contours, int index, const Scalar& color, int thickness = 1, int line = 8);
+void drawContours(Mat& image, const std::vector<std::vector<Point> >& contours, int index,
+                  const Scalar& color, int thickness, int line,
+                  const std::vector<Vec4i>& hierarchy, int max_level = 2147483647,
+                  Point offset = Point());
+double contourArea(const std::vector<Point>& contour, bool oriented = false);
+double contourArea(const std::vector<Point2f>& contour, bool oriented = false);
+// a shape's spatial, central and normalised central moments
+class Moments {
+public:
+  Moments();
+  double m00, m10, m01, m20, m11, m02, m30, m21, m12, m03;
+  double mu20, mu11, mu02, mu30, mu21, mu12, mu03;
+  double nu20, nu11, nu02, nu30, nu21, nu12, nu03;
+};
+Moments moments(const std::vector<Point>& contour, bool binary_image = false);
+Moments moments(const std::vector<Point2f>& contour, bool binary_image = false);
+Moments moments(const Mat& image, bool binary_image = false);
 void circle(Mat& img, Point center, int radius, const Scalar& color, int thickness = 1, int line = 8, int shift = 0);
 void line(Mat& img, Point a, Point b, const Scalar& color, int thickness = 1, int line = 8, int shift = 0);
 void rectangle(Mat& img, Point a, Point b, const Scalar& color, int thickness = 1, int line = 8, int shift = 0);
