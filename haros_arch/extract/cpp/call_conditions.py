@@ -40,13 +40,23 @@ BASES = -8
 # the unit declares the function and the parse left errors in code that names it: a
 # call of it may be hidden there
 HIDDEN = -9
-INDICES = frozenset({SITE_UNDER, REFERENCED, BASES, HIDDEN})
+# the function (of the workspace's files, a free function or a non-virtual method that
+# ``eligible`` takes, no ``main``) holds a string or handle parameter the unit made a
+# placeholder of: its code runs only where the node's files call or use it
+# (``links.NodeFacts.never_run``)
+RUNS_WHEN_CALLED = -12
+# the fact's USR is a name the unit's code writes where clang keeps only the overloads
+# it may be (``OVERLOADED_DECL_REF``: a call in a template that depends on its parameters,
+# ``&f`` of an overloaded ``f``): any function of that name may be called or used there
+OVERLOADED = -13
+INDICES = frozenset({SITE_UNDER, REFERENCED, BASES, HIDDEN, RUNS_WHEN_CALLED, OVERLOADED})
 _CONTAINERS = frozenset({
     CursorKind.NAMESPACE, CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL,
     CursorKind.LINKAGE_SPEC, CursorKind.UNEXPOSED_DECL,
 })
 _KINDS = frozenset({CursorKind.FUNCTION_DECL, CursorKind.CXX_METHOD})
 _REFERENCES = frozenset({CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR})
+_NAMES = _REFERENCES | {CursorKind.OVERLOADED_DECL_REF}  # what ``site_facts`` reads
 MAX_DEPTH = 8
 # the conditions of a site not carried: a loop's (a call named by each element of a
 # list the loop walks is made once per element, the loop no condition of it: navigation2's
@@ -70,12 +80,14 @@ def eligible(function: Cursor) -> bool:
 def site_facts(functions: list[Cursor], sites: CallSites, reader: ConditionReader,
                owned: Callable[[str], bool], enter: Callable[[Cursor], None],
                walked: Callable[[Cursor], tuple[list[Cursor], list[Cursor]] | None]
-               = lambda function: None) -> list[Fact]:
+               = lambda function: None, variables: Iterable[Cursor] = ()) -> list[Fact]:
     """The unit's facts (``SITE_UNDER``, ``REFERENCED``, ``BASES``) over the eligible
     functions of the workspace's files it calls or defines; ``enter`` readies
     ``reader`` for a function's body; ``walked`` gives a function's calls (among other
     nodes) and its references to declarations, each in preorder, when a walk of the
-    unit kept them (else its nodes are walked here)."""
+    unit kept them (else its nodes are walked here); ``variables``, the unit's variables
+    outside functions, use each function they name (a call there runs before ``main``,
+    a function's address in a table runs anywhere: ``REFERENCED``)."""
     # whether a declaration is an eligible function of the workspace's files, by the
     # node (one per cursor of the unit, kept with its answer: many references and
     # calls name the same declaration)
@@ -94,16 +106,20 @@ def site_facts(functions: list[Cursor], sites: CallSites, reader: ConditionReade
     facts: list[Fact] = []
     calls: dict[str, int] = {}
     refs: dict[str, int] = {}
+    overloaded: set[str] = set()
     by_caller: dict[tuple[str, int], tuple[Cursor, dict[tuple[str, int], str]]] = {}
     for function in functions:
         kept = walked(function)
         if kept is None:
             every = list(function.walk_preorder())
             nodes: Iterable[Cursor] = every
-            references: Iterable[Cursor] = [n for n in every if n.kind in _REFERENCES]
+            references: Iterable[Cursor] = [n for n in every if n.kind in _NAMES]
         else:
             nodes, references = kept
         for node in references:
+            if node.kind == CursorKind.OVERLOADED_DECL_REF:
+                overloaded.add(node.spelling)
+                continue
             target = node.referenced
             if target is not None and ours(target):
                 usr = target.canonical.get_usr()
@@ -131,9 +147,25 @@ def site_facts(functions: list[Cursor], sites: CallSites, reader: ConditionReade
             called, virtual = usr.removesuffix(VIRTUAL), usr.endswith(VIRTUAL)
             facts.append((called, SITE_UNDER, text,
                           f"{place[0]}:{place[1]}\n{caller}\n{'v' if virtual else ''}"))
+    used: set[str] = set()  # named in a variable's initialiser outside functions
+    for variable in variables:
+        for node in variable.walk_preorder():
+            if node.kind == CursorKind.OVERLOADED_DECL_REF:
+                overloaded.add(node.spelling)
+            elif node.kind in _REFERENCES and ours(node.referenced):
+                used.add(node.referenced.canonical.get_usr())
     # a function used otherwise than by the calls seen (``&C::callback``) may run anywhere
     facts.extend((usr, REFERENCED, "", "") for usr, count in refs.items()
                  if count > calls.get(usr, 0))
+    facts.extend((usr, REFERENCED, "", "") for usr in sorted(used) if usr)
+    facts.extend((name, OVERLOADED, "", "") for name in sorted(overloaded) if name)
+    # a placeholder's function that runs only when called (``RUNS_WHEN_CALLED``)
+    for usr, (function, _bases) in sites.overrides.items():
+        where = function.location.file
+        if where is not None and owned(where.name) and eligible(function) and (
+            function.spelling != "main") and not (
+                function.kind == CursorKind.CXX_METHOD and function.is_virtual_method()):
+            facts.append((usr, RUNS_WHEN_CALLED, "", ""))
     for function in functions:
         if function.kind != CursorKind.CXX_METHOD or not function.is_virtual_method() or (
             not eligible(function)
