@@ -92,6 +92,16 @@ template <typename T> double run(const ros::NodeHandle & nh, const T & field) {
 }"""
 
 
+# a member called on an object whose type depends on a template parameter: unresolved
+DEPENDENT = """\
+template <typename R> struct User {
+  R reader;
+  double go(const ros::NodeHandle & nh, const std::string & name) {
+    return reader.read(nh, name);
+  }
+};"""
+
+
 # a table outside any function
 TABLE = """\
 typedef double (*Reader)(const ros::NodeHandle &, const std::string &);
@@ -129,3 +139,8 @@ def test_a_wrapper_a_template_may_call_keeps_its_unknown_read(write_tree) -> Non
 def test_a_wrapper_a_table_outside_functions_holds_keeps_its_unknown_read(write_tree) -> None:
     reads = _reads(write_tree, "", TABLE)
     assert [line for _, line in reads if line == 13] == [13]  # readUnused's read
+
+
+def test_a_method_a_dependent_call_may_call_keeps_its_unknown_read(write_tree) -> None:
+    reads = _reads(write_tree, "", DEPENDENT)
+    assert [line for _, line in reads if line == 23] == [23]  # Reader::read's read

@@ -47,7 +47,8 @@ HIDDEN = -9
 RUNS_WHEN_CALLED = -12
 # the fact's USR is a name the unit's code writes where clang keeps only the overloads
 # it may be (``OVERLOADED_DECL_REF``: a call in a template that depends on its parameters,
-# ``&f`` of an overloaded ``f``): any function of that name may be called or used there
+# ``&f`` of an overloaded ``f``) or a member reference whose object's type depends on a
+# template parameter (``obj.f(x)``): any function of that name may run there
 OVERLOADED = -13
 INDICES = frozenset({SITE_UNDER, REFERENCED, BASES, HIDDEN, RUNS_WHEN_CALLED, OVERLOADED})
 _CONTAINERS = frozenset({
@@ -121,6 +122,11 @@ def site_facts(functions: list[Cursor], sites: CallSites, reader: ConditionReade
                 overloaded.add(node.spelling)
                 continue
             target = node.referenced
+            if target is None and node.kind == CursorKind.MEMBER_REF_EXPR:
+                # ``reader.read`` on a ``reader`` whose type depends on a template
+                # parameter: clang keeps neither the member nor its name
+                overloaded.add(node.spelling or _last_word(node))
+                continue
             if target is not None and ours(target):
                 usr = target.canonical.get_usr()
                 if usr:
@@ -177,6 +183,12 @@ def site_facts(functions: list[Cursor], sites: CallSites, reader: ConditionReade
             facts.append((usr, BASES, "\n".join(bases), "") if bases is not None
                          else (usr, REFERENCED, "", ""))
     return list(dict.fromkeys(facts))
+
+
+def _last_word(node: Cursor) -> str:
+    """The last identifier written in ``node`` (a member reference's member)."""
+    words = [t.spelling for t in node.get_tokens() if t.kind.name == "IDENTIFIER"]
+    return words[-1] if words else ""
 
 
 def hidden_facts(root: Cursor, owned: Callable[[str], bool],
