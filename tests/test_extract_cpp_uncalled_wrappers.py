@@ -144,3 +144,32 @@ def test_a_wrapper_a_table_outside_functions_holds_keeps_its_unknown_read(write_
 def test_a_method_a_dependent_call_may_call_keeps_its_unknown_read(write_tree) -> None:
     reads = _reads(write_tree, "", DEPENDENT)
     assert [line for _, line in reads if line == 23] == [23]  # Reader::read's read
+
+
+PLUGIN = """\
+#include <string>
+#include <ros/ros.h>
+#include <vendor/plugin_base.h>
+class Plugin : public vendor::PluginBase {
+ public:
+  void configure(const ros::NodeHandle & nh, const std::string & field) {
+    int value = 0;
+    nh.getParam(field, value);
+  }
+};
+int main(int argc, char ** argv) {
+  ros::init(argc, argv, "host");
+  return 0;
+}
+"""
+
+
+def test_a_method_of_a_class_whose_base_is_unknown_keeps_its_unknown_read(write_tree) -> None:
+    """The missing vendor header's ``PluginBase`` may declare ``configure`` virtual: the
+    method may override it, and a host may call it."""
+    root = write_tree({"host/package.xml": package_xml("host", "catkin").replace(
+                           "</package>", "<depend>roscpp</depend></package>"),
+                       "host/src/plugin.cpp": PLUGIN})
+    result = extract_cpp([str(root / "host" / "src" / "plugin.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    assert [c.location.line for c in result.calls if c.kind == "read"] == [8]

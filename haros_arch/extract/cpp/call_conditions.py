@@ -81,14 +81,17 @@ def eligible(function: Cursor) -> bool:
 def site_facts(functions: list[Cursor], sites: CallSites, reader: ConditionReader,
                owned: Callable[[str], bool], enter: Callable[[Cursor], None],
                walked: Callable[[Cursor], tuple[list[Cursor], list[Cursor]] | None]
-               = lambda function: None, variables: Iterable[Cursor] = ()) -> list[Fact]:
+               = lambda function: None, variables: Iterable[Cursor] = (),
+               declared: str | None = None) -> list[Fact]:
     """The unit's facts (``SITE_UNDER``, ``REFERENCED``, ``BASES``) over the eligible
     functions of the workspace's files it calls or defines; ``enter`` readies
     ``reader`` for a function's body; ``walked`` gives a function's calls (among other
     nodes) and its references to declarations, each in preorder, when a walk of the
     unit kept them (else its nodes are walked here); ``variables``, the unit's variables
     outside functions, use each function they name (a call there runs before ``main``,
-    a function's address in a table runs anywhere: ``REFERENCED``)."""
+    a function's address in a table runs anywhere: ``REFERENCED``); ``declared``, the
+    header of the names the unit declared permissively (a base class there may hide a
+    virtual method its subclass's method overrides)."""
     # whether a declaration is an eligible function of the workspace's files, by the
     # node (one per cursor of the unit, kept with its answer: many references and
     # calls name the same declaration)
@@ -169,8 +172,10 @@ def site_facts(functions: list[Cursor], sites: CallSites, reader: ConditionReade
     for usr, (function, _bases) in sites.overrides.items():
         where = function.location.file
         if where is not None and owned(where.name) and eligible(function) and (
-            function.spelling != "main") and not (
-                function.kind == CursorKind.CXX_METHOD and function.is_virtual_method()):
+            function.spelling != "main") and (
+                function.kind != CursorKind.CXX_METHOD or (
+                    not function.is_virtual_method()
+                    and _bases_read(function.semantic_parent, declared))):
             facts.append((usr, RUNS_WHEN_CALLED, "", ""))
     for function in functions:
         if function.kind != CursorKind.CXX_METHOD or not function.is_virtual_method() or (
@@ -183,6 +188,24 @@ def site_facts(functions: list[Cursor], sites: CallSites, reader: ConditionReade
             facts.append((usr, BASES, "\n".join(bases), "") if bases is not None
                          else (usr, REFERENCED, "", ""))
     return list(dict.fromkeys(facts))
+
+
+def _bases_read(cls: Cursor | None, declared: str | None, depth: int = 0) -> bool:
+    """Whether every base class of ``cls`` (transitively) is defined as written, none
+    unknown or declared permissively (``declared``): a method that looks non-virtual
+    may override a virtual one of a base the parse could not read."""
+    if cls is None or depth > MAX_DEPTH:
+        return False
+    for base in cls.get_children():
+        if base.kind != CursorKind.CXX_BASE_SPECIFIER:
+            continue
+        decl = base.type.get_canonical().get_declaration()
+        definition = decl.get_definition() if decl.kind != CursorKind.NO_DECL_FOUND else None
+        where = definition.location.file if definition is not None else None
+        if where is None or where.name == declared or not _bases_read(
+                definition, declared, depth + 1):
+            return False
+    return True
 
 
 def _last_word(node: Cursor) -> str:

@@ -270,7 +270,7 @@ class CallFinder:
                                     self._site_conditions)
         self.facts.extend(call_conditions.site_facts(
             self.functions, self.sites, self.reader, self.owned, self._enter, self._walked,
-            self.globals))
+            self.globals, self.declared))
         self.wrappers.preorder.clear()
         self.wrappers.references.clear()
         for call in self.calls:  # get_parameter("p") of a declare_parameter("p", default)
