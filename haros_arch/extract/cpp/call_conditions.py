@@ -50,7 +50,14 @@ RUNS_WHEN_CALLED = -12
 # ``&f`` of an overloaded ``f``) or a member reference whose object's type depends on a
 # template parameter (``obj.f(x)``): any function of that name may run there
 OVERLOADED = -13
-INDICES = frozenset({SITE_UNDER, REFERENCED, BASES, HIDDEN, RUNS_WHEN_CALLED, OVERLOADED})
+# the fact's USR is a class a variable outside functions names (a plugin's or a
+# component's export, ``PLUGINLIB_EXPORT_CLASS(C, Base)``; a global object): a loader or
+# any code may run its methods
+NAMED_CLASS = -14
+INDICES = frozenset({SITE_UNDER, REFERENCED, BASES, HIDDEN, RUNS_WHEN_CALLED, OVERLOADED,
+                     NAMED_CLASS})
+_CLASSES = frozenset({CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL,
+                      CursorKind.CLASS_TEMPLATE})
 _CONTAINERS = frozenset({
     CursorKind.NAMESPACE, CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL,
     CursorKind.LINKAGE_SPEC, CursorKind.UNEXPOSED_DECL,
@@ -157,10 +164,14 @@ def site_facts(functions: list[Cursor], sites: CallSites, reader: ConditionReade
             facts.append((called, SITE_UNDER, text,
                           f"{place[0]}:{place[1]}\n{caller}\n{'v' if virtual else ''}"))
     used: set[str] = set()  # named in a variable's initialiser outside functions
+    classes: set[str] = set()  # named in a variable's type or initialiser there
     for variable in variables:
         for node in variable.walk_preorder():
             if node.kind == CursorKind.OVERLOADED_DECL_REF:
                 overloaded.add(node.spelling)
+            elif node.kind == CursorKind.TYPE_REF and node.referenced is not None and (
+                    node.referenced.kind in _CLASSES):
+                classes.add(node.referenced.canonical.get_usr())
             elif node.kind in _REFERENCES and ours(node.referenced):
                 used.add(node.referenced.canonical.get_usr())
     # a function used otherwise than by the calls seen (``&C::callback``) may run anywhere
@@ -168,6 +179,7 @@ def site_facts(functions: list[Cursor], sites: CallSites, reader: ConditionReade
                  if count > calls.get(usr, 0))
     facts.extend((usr, REFERENCED, "", "") for usr in sorted(used) if usr)
     facts.extend((name, OVERLOADED, "", "") for name in sorted(overloaded) if name)
+    facts.extend((usr, NAMED_CLASS, "", "") for usr in sorted(classes) if usr)
     # a placeholder's function that runs only when called (``RUNS_WHEN_CALLED``)
     for usr, (function, _bases) in sites.overrides.items():
         where = function.location.file

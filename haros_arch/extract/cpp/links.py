@@ -35,6 +35,7 @@ from .call_conditions import (
     BASES,
     HIDDEN,
     INDICES,
+    NAMED_CLASS,
     OVERLOADED,
     REFERENCED,
     RUNS_WHEN_CALLED,
@@ -280,6 +281,10 @@ class NodeFacts:
         return {fact[0] for fact in self.facts if fact[1] == OVERLOADED}
 
     @functools.cached_property
+    def named_classes(self) -> set[str]:
+        return {fact[0] for fact in self.facts if fact[1] == NAMED_CLASS}
+
+    @functools.cached_property
     def runs_when_called(self) -> set[str]:
         return {fact[0] for fact in self.facts if fact[1] == RUNS_WHEN_CALLED}
 
@@ -419,12 +424,15 @@ def never_run(known: NodeFacts, unseen: Collection[str]) -> Callable[[str], bool
     (``call_conditions.RUNS_WHEN_CALLED``: a free function, a non-virtual method) that no
     file of the node calls, uses otherwise (``&f``, a callback, a name a template's
     dependent call or an overloaded ``&f`` may mean) or may call where the parse left
-    errors: a value taken from one of its parameters is never made (msckf_vio's
+    errors, nor a method of a class a variable outside functions names (a plugin's
+    export): a value taken from one of its parameters is never made (msckf_vio's
     ``getTransformEigen(nh, field)``, in utils.cpp that the image processor compiles
     and never calls, passes ``field`` on to the ``getTransformCV`` it does call)."""
     def unrun(usr: str) -> bool:
         if "*" in unseen or usr not in known.runs_when_called or usr in known.run:
             return False
+        if "@F@" in usr and usr.rsplit("@F@", 1)[0] in known.named_classes:
+            return False  # a method of a class exported as a plugin, or a global's
         names = _FUNCTION.findall(usr)
         return bool(names) and names[-1] not in known.overloaded and names[-1] not in unseen
     return unrun
