@@ -112,11 +112,12 @@ def test_handles_and_names_follow_constructors_and_functions_across_files(
 
 def test_a_shared_file_is_filled_per_node(batch: tuple[CppBatch, Path]) -> None:
     other = batch[0].results[1]
-    # no caller in this node: attach's arguments stay unknown; Motors, whose
-    # constructor subscribes on the handle it is given, is not constructed by this node,
-    # so that subscription is not its own (it was "?/stop")
-    assert rows(other.calls) == [("publish", "?/?", "?"), ("publish", "~range", "~")]
-    assert "CPP_DYNAMIC_NAME" in [d.code for d in other.diagnostics]
+    # no caller in this node: attach never runs there, and its publisher named by its
+    # arguments is not the node's (it was "?/?"); Motors, whose constructor subscribes
+    # on the handle it is given, is not constructed by this node, so that subscription
+    # is not its own (it was "?/stop")
+    assert rows(other.calls) == [("publish", "~range", "~")]
+    assert "CPP_DYNAMIC_NAME" not in [d.code for d in other.diagnostics]
     alone = batch[0].results[2]
     assert all("\x00" not in c.name for c in alone.calls)
 

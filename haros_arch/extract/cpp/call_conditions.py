@@ -40,13 +40,31 @@ BASES = -8
 # the unit declares the function and the parse left errors in code that names it: a
 # call of it may be hidden there
 HIDDEN = -9
-INDICES = frozenset({SITE_UNDER, REFERENCED, BASES, HIDDEN})
+# the function (of the workspace's files, a free function or a non-virtual method that
+# ``eligible`` takes, no ``main``) holds a string or handle parameter the unit made a
+# placeholder of: its code runs only where the node's files call or use it
+# (``links.NodeFacts.never_run``)
+RUNS_WHEN_CALLED = -12
+# the fact's USR is a name the unit's code writes where clang keeps only the overloads
+# it may be (``OVERLOADED_DECL_REF``: a call in a template that depends on its parameters,
+# ``&f`` of an overloaded ``f``) or a member reference whose object's type depends on a
+# template parameter (``obj.f(x)``): any function of that name may run there
+OVERLOADED = -13
+# the fact's USR is a class a variable outside functions names (a plugin's or a
+# component's export, ``PLUGINLIB_EXPORT_CLASS(C, Base)``; a global object): a loader or
+# any code may run its methods
+NAMED_CLASS = -14
+INDICES = frozenset({SITE_UNDER, REFERENCED, BASES, HIDDEN, RUNS_WHEN_CALLED, OVERLOADED,
+                     NAMED_CLASS})
+_CLASSES = frozenset({CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL,
+                      CursorKind.CLASS_TEMPLATE})
 _CONTAINERS = frozenset({
     CursorKind.NAMESPACE, CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL,
     CursorKind.LINKAGE_SPEC, CursorKind.UNEXPOSED_DECL,
 })
 _KINDS = frozenset({CursorKind.FUNCTION_DECL, CursorKind.CXX_METHOD})
 _REFERENCES = frozenset({CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR})
+_NAMES = _REFERENCES | {CursorKind.OVERLOADED_DECL_REF}  # what ``site_facts`` reads
 MAX_DEPTH = 8
 # the conditions of a site not carried: a loop's (a call named by each element of a
 # list the loop walks is made once per element, the loop no condition of it: navigation2's
@@ -70,12 +88,17 @@ def eligible(function: Cursor) -> bool:
 def site_facts(functions: list[Cursor], sites: CallSites, reader: ConditionReader,
                owned: Callable[[str], bool], enter: Callable[[Cursor], None],
                walked: Callable[[Cursor], tuple[list[Cursor], list[Cursor]] | None]
-               = lambda function: None) -> list[Fact]:
+               = lambda function: None, variables: Iterable[Cursor] = (),
+               declared: str | None = None) -> list[Fact]:
     """The unit's facts (``SITE_UNDER``, ``REFERENCED``, ``BASES``) over the eligible
     functions of the workspace's files it calls or defines; ``enter`` readies
     ``reader`` for a function's body; ``walked`` gives a function's calls (among other
     nodes) and its references to declarations, each in preorder, when a walk of the
-    unit kept them (else its nodes are walked here)."""
+    unit kept them (else its nodes are walked here); ``variables``, the unit's variables
+    outside functions, use each function they name (a call there runs before ``main``,
+    a function's address in a table runs anywhere: ``REFERENCED``); ``declared``, the
+    header of the names the unit declared permissively (a base class there may hide a
+    virtual method its subclass's method overrides)."""
     # whether a declaration is an eligible function of the workspace's files, by the
     # node (one per cursor of the unit, kept with its answer: many references and
     # calls name the same declaration)
@@ -94,17 +117,26 @@ def site_facts(functions: list[Cursor], sites: CallSites, reader: ConditionReade
     facts: list[Fact] = []
     calls: dict[str, int] = {}
     refs: dict[str, int] = {}
+    overloaded: set[str] = set()
     by_caller: dict[tuple[str, int], tuple[Cursor, dict[tuple[str, int], str]]] = {}
     for function in functions:
         kept = walked(function)
         if kept is None:
             every = list(function.walk_preorder())
             nodes: Iterable[Cursor] = every
-            references: Iterable[Cursor] = [n for n in every if n.kind in _REFERENCES]
+            references: Iterable[Cursor] = [n for n in every if n.kind in _NAMES]
         else:
             nodes, references = kept
         for node in references:
+            if node.kind == CursorKind.OVERLOADED_DECL_REF:
+                overloaded.add(node.spelling)
+                continue
             target = node.referenced
+            if target is None and node.kind == CursorKind.MEMBER_REF_EXPR:
+                # ``reader.read`` on a ``reader`` whose type depends on a template
+                # parameter: clang keeps neither the member nor its name
+                overloaded.add(node.spelling or _last_word(node))
+                continue
             if target is not None and ours(target):
                 usr = target.canonical.get_usr()
                 if usr:
@@ -131,9 +163,32 @@ def site_facts(functions: list[Cursor], sites: CallSites, reader: ConditionReade
             called, virtual = usr.removesuffix(VIRTUAL), usr.endswith(VIRTUAL)
             facts.append((called, SITE_UNDER, text,
                           f"{place[0]}:{place[1]}\n{caller}\n{'v' if virtual else ''}"))
+    used: set[str] = set()  # named in a variable's initialiser outside functions
+    classes: set[str] = set()  # named in a variable's type or initialiser there
+    for variable in variables:
+        for node in variable.walk_preorder():
+            if node.kind == CursorKind.OVERLOADED_DECL_REF:
+                overloaded.add(node.spelling)
+            elif node.kind == CursorKind.TYPE_REF and node.referenced is not None and (
+                    node.referenced.kind in _CLASSES):
+                classes.add(node.referenced.canonical.get_usr())
+            elif node.kind in _REFERENCES and ours(node.referenced):
+                used.add(node.referenced.canonical.get_usr())
     # a function used otherwise than by the calls seen (``&C::callback``) may run anywhere
     facts.extend((usr, REFERENCED, "", "") for usr, count in refs.items()
                  if count > calls.get(usr, 0))
+    facts.extend((usr, REFERENCED, "", "") for usr in sorted(used) if usr)
+    facts.extend((name, OVERLOADED, "", "") for name in sorted(overloaded) if name)
+    facts.extend((usr, NAMED_CLASS, "", "") for usr in sorted(classes) if usr)
+    # a placeholder's function that runs only when called (``RUNS_WHEN_CALLED``)
+    for usr, (function, _bases) in sites.overrides.items():
+        where = function.location.file
+        if where is not None and owned(where.name) and eligible(function) and (
+            function.spelling != "main") and (
+                function.kind != CursorKind.CXX_METHOD or (
+                    not function.is_virtual_method()
+                    and _bases_read(function.semantic_parent, declared))):
+            facts.append((usr, RUNS_WHEN_CALLED, "", ""))
     for function in functions:
         if function.kind != CursorKind.CXX_METHOD or not function.is_virtual_method() or (
             not eligible(function)
@@ -145,6 +200,30 @@ def site_facts(functions: list[Cursor], sites: CallSites, reader: ConditionReade
             facts.append((usr, BASES, "\n".join(bases), "") if bases is not None
                          else (usr, REFERENCED, "", ""))
     return list(dict.fromkeys(facts))
+
+
+def _bases_read(cls: Cursor | None, declared: str | None, depth: int = 0) -> bool:
+    """Whether every base class of ``cls`` (transitively) is defined as written, none
+    unknown or declared permissively (``declared``): a method that looks non-virtual
+    may override a virtual one of a base the parse could not read."""
+    if cls is None or depth > MAX_DEPTH:
+        return False
+    for base in cls.get_children():
+        if base.kind != CursorKind.CXX_BASE_SPECIFIER:
+            continue
+        decl = base.type.get_canonical().get_declaration()
+        definition = decl.get_definition() if decl.kind != CursorKind.NO_DECL_FOUND else None
+        where = definition.location.file if definition is not None else None
+        if where is None or where.name == declared or not _bases_read(
+                definition, declared, depth + 1):
+            return False
+    return True
+
+
+def _last_word(node: Cursor) -> str:
+    """The last identifier written in ``node`` (a member reference's member)."""
+    words = [t.spelling for t in node.get_tokens() if t.kind.name == "IDENTIFIER"]
+    return words[-1] if words else ""
 
 
 def hidden_facts(root: Cursor, owned: Callable[[str], bool],

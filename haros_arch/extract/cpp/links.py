@@ -31,7 +31,16 @@ from ...model.rosname import node_name_joined
 from ...model.source import PrimitiveCall
 from . import msg_types
 from .cache import conditions_text
-from .call_conditions import INDICES
+from .call_conditions import (
+    BASES,
+    HIDDEN,
+    INDICES,
+    NAMED_CLASS,
+    OVERLOADED,
+    REFERENCED,
+    RUNS_WHEN_CALLED,
+    SITE_UNDER,
+)
 from .call_sites import CallSites, argument
 from .handles import Namespaces, is_handle, join_name, normalise
 from .values import PLACEHOLDER, SEPARATOR, Scope, choose, key_of, render
@@ -261,6 +270,25 @@ class NodeFacts:
         return {class_of(usr) for usr in self.called if _constructor(usr)}
 
     @functools.cached_property
+    def run(self) -> set[str]:
+        """The functions a file of the node calls (its own file too), or uses otherwise
+        (``&f``, a virtual method's bases), or may call unseen (``HIDDEN``)."""
+        return self.called | {fact[0] for fact in self.facts if fact[1] in (
+            SITE_UNDER, REFERENCED, BASES, HIDDEN, CALLED_VIRTUAL)}
+
+    @functools.cached_property
+    def overloaded(self) -> set[str]:
+        return {fact[0] for fact in self.facts if fact[1] == OVERLOADED}
+
+    @functools.cached_property
+    def named_classes(self) -> set[str]:
+        return {fact[0] for fact in self.facts if fact[1] == NAMED_CLASS}
+
+    @functools.cached_property
+    def runs_when_called(self) -> set[str]:
+        return {fact[0] for fact in self.facts if fact[1] == RUNS_WHEN_CALLED}
+
+    @functools.cached_property
     def hosted(self) -> dict[tuple[str, int], str]:
         calling = self.called | {fact[0] for fact in self.facts if fact[1] == CALLED_VIRTUAL}
         return {(usr, int(site)): " ".join(dict.fromkeys(
@@ -280,6 +308,7 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
     out: list[PrimitiveCall] = []
     found: list[Diagnostic] = []
     unbuilt = _unbuilt(known, unseen)
+    unrun = never_run(known, unseen)
     for call in calls:
         if call.made_in is not None:
             if not _made(call.made_in, known.called, known.constructed, unseen):
@@ -301,7 +330,7 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
         # a camera's camera_info names its image topic as written on the same handle
         camera = call.camera_of[len(prefix):] if namespace and call.camera_of and (
             call.camera_of.startswith(prefix)) else None
-        for filled in _expand(text, known.passed, 0, unbuilt):
+        for filled in _expand(text, known.passed, 0, unbuilt, unrun):
             ns, _, name = filled.partition(_SPLIT)
             ns = normalise(_unmarked(ns)) if ns else ""
             if name.startswith("~/"):  # written as the visitor writes a private name
@@ -390,6 +419,25 @@ def _unbuilt(known: NodeFacts, unseen: Collection[str]) -> Callable[[str], bool]
     return unbuilt
 
 
+def never_run(known: NodeFacts, unseen: Collection[str]) -> Callable[[str], bool]:
+    """Whether a USR is a function whose code runs only when called or used
+    (``call_conditions.RUNS_WHEN_CALLED``: a free function, a non-virtual method) that no
+    file of the node calls, uses otherwise (``&f``, a callback, a name a template's
+    dependent call or an overloaded ``&f`` may mean) or may call where the parse left
+    errors, nor a method of a class a variable outside functions names (a plugin's
+    export): a value taken from one of its parameters is never made (msckf_vio's
+    ``getTransformEigen(nh, field)``, in utils.cpp that the image processor compiles
+    and never calls, passes ``field`` on to the ``getTransformCV`` it does call)."""
+    def unrun(usr: str) -> bool:
+        if "*" in unseen or usr not in known.runs_when_called or usr in known.run:
+            return False
+        if "@F@" in usr and usr.rsplit("@F@", 1)[0] in known.named_classes:
+            return False  # a method of a class exported as a plugin, or a global's
+        names = _FUNCTION.findall(usr)
+        return bool(names) and names[-1] not in known.overloaded and names[-1] not in unseen
+    return unrun
+
+
 def resolve_name(name: str, facts: Iterable[Fact] | NodeFacts,
                  unseen: Collection[str] = ("*",)) -> str:
     """A node name (``Node(name)`` in a constructor) with its placeholders filled: the
@@ -463,19 +511,24 @@ def _marked_usrs(text: str) -> set[str]:
 
 
 def _expand(text: str, passed: dict[str, dict[str, dict[int, str]]],
-            depth: int, unbuilt: Callable[[str], bool] | None = None) -> list[str]:
+            depth: int, unbuilt: Callable[[str], bool] | None = None,
+            unrun: Callable[[str], bool] | None = None) -> list[str]:
     """``text`` with its placeholders filled: the placeholders of one function take the
     values of the same call site together (``attach(n, "left")``, ``attach(base,
     "right")`` never give ``base/left``). A value that a caller takes from a parameter of
     a constructor that ``unbuilt`` says the node never runs gives nothing: that caller
     never runs either (vesc_ackermann's ``getRequiredParam(nh, ...)`` in the constructor
-    of a class the nodelet does not build)."""
+    of a class the nodelet does not build); nor does one of a function ``unrun`` says
+    nothing in the node calls or uses (``never_run``), at any depth: the call itself, or
+    the value a caller passes on, is never made."""
     match = _MARK.search(text)
     if match is None:
         return [choose(text)]
     usr = match.group(1)
     sites = list(passed.get(usr, {}).values()) if depth < MAX_DEPTH else []
     if depth and not sites and unbuilt is not None and unbuilt(usr):
+        return []
+    if not sites and depth < MAX_DEPTH and unrun is not None and unrun(usr):
         return []
     out: list[str] = []
     for values in sites or [{}]:
@@ -487,7 +540,7 @@ def _expand(text: str, passed: dict[str, dict[str, dict[int, str]]],
             # itself, directly or through a base method) stands for a chain of any
             # length: unknown (it expanded until MAX_VALUES made every value unknown)
             return "?" if usr in _marked_usrs(value) else value
-        for filled in _expand(_MARK.sub(fill, text), passed, depth + 1, unbuilt):
+        for filled in _expand(_MARK.sub(fill, text), passed, depth + 1, unbuilt, unrun):
             if filled not in out:
                 out.append(filled)
     if len(out) > MAX_VALUES:

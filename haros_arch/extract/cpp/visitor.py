@@ -173,6 +173,10 @@ class CallFinder:
         self._prefix_keys: dict[str, list[str] | None] = {}
         self.calls: list[PrimitiveCall] = []
         self.functions: list[Cursor] = []
+        # the variables outside functions whose initialisers may use a function
+        # (``std::map<std::string, Handler> handlers = {{"a", &readA}}``): read for
+        # ``call_conditions.site_facts``' uses only
+        self.globals: list[Cursor] = []
         # (file, line) of the calls of an API function's name that the parse resolved,
         # ROS or not (``set_parameters`` of a parameter client): read, so not hidden
         self.resolved: set[tuple[str, int]] = set()
@@ -266,7 +270,8 @@ class CallFinder:
         self.facts = argument_facts(self.sites, self.namespaces, self.owned, self._marked,
                                     self._site_conditions)
         self.facts.extend(call_conditions.site_facts(
-            self.functions, self.sites, self.reader, self.owned, self._enter, self._walked))
+            self.functions, self.sites, self.reader, self.owned, self._enter, self._walked,
+            self.globals, self.declared))
         self.wrappers.preorder.clear()
         self.wrappers.references.clear()
         for call in self.calls:  # get_parameter("p") of a declare_parameter("p", default)
@@ -286,6 +291,7 @@ class CallFinder:
             release(self._root)
             self._root = None
         self.functions = []
+        self.globals = []
 
     def _walked(self, function: Cursor) -> tuple[list[Cursor], list[Cursor]] | None:
         """The function's calls (among other nodes) and references to declarations,
@@ -345,6 +351,8 @@ class CallFinder:
                 # a class template's specialisations: a base, a global (a plugin's
                 # export, ``PLUGINLIB_EXPORT_CLASS(DriveOnHeading<>, Behavior)``)
                 self.types.specialised(cursor.type, parent)
+                if kind == CursorKind.VAR_DECL:
+                    self.globals.append(cursor)
             elif kind in CONTAINERS:
                 if cursor.spelling in ("TypeAdapter", "ImplicitTypeAdapter"):
                     self.types.adapter(cursor)

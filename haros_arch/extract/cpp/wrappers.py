@@ -1678,7 +1678,8 @@ def _bind(parts: Parts, bound: dict[str, Parts]) -> Parts:
     return tuple(found)
 
 
-_REFERENCES = frozenset({CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR})
+_REFERENCES = frozenset({CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR,
+                         CursorKind.OVERLOADED_DECL_REF})
 _LAMBDA_END = object()  # in ``_scan``'s stack: the walk leaves a lambda's body
 
 
