@@ -194,3 +194,33 @@ def test_qos_overrides_of_a_topic_full_name_are_not_reported(write_tree):
                    if e.startswith("parameter:"))
     assert found == ["parameter:/talker/gain",
                      "parameter:/talker/qos_overrides./chatter.subscriber.reliability"]
+
+
+DECLARED_FROM_LOCAL = DECLARED_TOGETHER.replace(
+    """            self.declare_parameters(namespace='', parameters=[
+                ('scan_topic', 'scan'), ('gain', 0.5), ('port', rclpy.Parameter.Type.STRING),
+                ('ids',)])""",
+    """            parameters = [
+                ('scan_topic', 'scan'), ('gain', 0.5), ('port', rclpy.Parameter.Type.STRING),
+                ('ids',)]
+            self.declare_parameters(namespace='', parameters=parameters)""")
+
+
+def test_parameters_declared_together_from_a_local_list(write_tree):
+    """raspimouse_ros2_examples' joystick_control builds its ``(name, default)`` list in a
+    local and then calls ``declare_parameters('', parameters)``: the local's one list is
+    read as if written in the call (its names, defaults and type-only entries), not as
+    one parameter named '?'."""
+    assert DECLARED_FROM_LOCAL != DECLARED_TOGETHER
+    model = _analysed(write_tree, "follower", DECLARED_FROM_LOCAL,
+                      LAUNCH.replace("talker", "follower"))
+    declared = {c.name: (c.type, c.has_default, c.default)
+                for p in model.packages for n in p.nodes for c in n.calls
+                if c.kind == "declare"}
+    assert declared == {"scan_topic": ("str", True, "scan"), "gain": ("double", True, 0.5),
+                        "port": ("str", False, None), "ids": (None, False, None),
+                        "limits.max_speed": ("double", True, 1.0)}
+    rule = next(r for r in load_catalogue() if r.id == "parameter-read-not-set")
+    found = sorted(e for f in run_rule(rule, model) for e in f.entities
+                   if e.startswith("parameter:"))
+    assert found == ["parameter:/follower/ids", "parameter:/follower/port"]

@@ -59,7 +59,7 @@ def special_calls(ev: Evaluator, spec: PyFunction, call: ast.Call, frame: Frame,
         prefix = text_of(evaluate(ev, call.args[0] if call.args else argument(
             call, _kw("namespace")), frame)).text
         items = call.args[1] if len(call.args) > 1 else argument(call, _kw("parameters"))
-        for element in _elements(items):
+        for element in _elements(_written(items, call, frame)):
             pair = element.elts if isinstance(element, ast.Tuple) else [element]
             name = text_of(ev.eval(pair[0], frame)).text
             full = f"{prefix}.{name}" if prefix else name
@@ -84,7 +84,7 @@ def special_calls(ev: Evaluator, spec: PyFunction, call: ast.Call, frame: Frame,
             made.append(replace(base, name=param_name(text_of(item))))
     elif spec.special == "set-parameters":
         items = call.args[0] if call.args else argument(call, _kw("parameter_list"))
-        for element in _elements(items):
+        for element in _elements(_written(items, call, frame)):
             # each parameter where the list names it: one not known statically is kept
             # beside those known (a call site keeps its '?' only where nothing is known)
             base = replace(base, location=replace(
@@ -178,6 +178,63 @@ def evaluate(ev: Evaluator, expr: ast.expr | None, frame: Frame) -> object:
 
 def _kw(keyword: str) -> object:
     return Arg(None, keyword)
+
+
+def _written(expr: ast.expr | None, call: ast.Call, frame: Frame) -> ast.expr | None:
+    """``expr``, or the list or tuple written for it when it is a local of the function
+    that makes ``call`` whose one write, before the call, is that literal and which
+    nothing else in the function (nor a function in it) names, nor declares ``global``
+    or ``nonlocal`` (so nothing appends to it or hands it on):
+    raspimouse_ros2_examples' ``parameters = [(name, default), ...]`` then
+    ``self.declare_parameters('', parameters)``."""
+    if not isinstance(expr, ast.Name):
+        return expr
+    function = _enclosing(frame.module.tree, call)
+    if function is None:
+        return expr
+    # every use in the function, its inner functions' too (a closure may append to it)
+    names = [node for node in ast.walk(function) if isinstance(node, ast.Name)
+             and node.id == expr.id]
+    writes = [node for node in names if isinstance(node.ctx, ast.Store)]
+    if len(names) != 2 or len(writes) != 1 or expr not in names or any(
+        isinstance(node, ast.Global | ast.Nonlocal) and expr.id in node.names
+        for node in ast.walk(function)
+    ):
+        return expr
+    assigned = next((node for node in _own_nodes(function) if isinstance(node, ast.Assign)
+                     and node.targets == [writes[0]]), None)
+    if assigned is None or not isinstance(assigned.value, ast.List | ast.Tuple) or (
+        assigned.end_lineno is None or assigned.end_lineno >= call.lineno
+    ):
+        return expr
+    return assigned.value
+
+
+def _enclosing(tree: ast.Module, call: ast.Call) -> ast.FunctionDef | ast.AsyncFunctionDef | None:
+    """The innermost function whose body holds ``call``."""
+    found = None
+    for node in ast.walk(tree):
+        if isinstance(node, ast.FunctionDef | ast.AsyncFunctionDef) and (
+            node.lineno <= call.lineno <= (node.end_lineno or node.lineno)
+        ) and any(inner is call for inner in ast.walk(node)) and (
+            found is None or node.lineno >= found.lineno
+        ):
+            found = node
+    return found
+
+
+def _own_nodes(function: ast.FunctionDef | ast.AsyncFunctionDef) -> list[ast.AST]:
+    """The nodes of ``function``'s body, not those of the functions, lambdas and classes
+    defined in it."""
+    found: list[ast.AST] = []
+    todo: list[ast.AST] = list(function.body)
+    while todo:
+        node = todo.pop()
+        found.append(node)
+        if isinstance(node, ast.FunctionDef | ast.AsyncFunctionDef | ast.Lambda | ast.ClassDef):
+            continue
+        todo.extend(ast.iter_child_nodes(node))
+    return found
 
 
 def _elements(expr: ast.expr | None) -> list[ast.expr]:
