@@ -28,7 +28,7 @@ import dataclasses
 import re
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, TypeVar
 
 from clang.cindex import Cursor, CursorKind, Type, TypeKind, conf
 
@@ -67,6 +67,7 @@ __all__ = ["DEPENDENT", "MAX_DEPTH", "Wrapper", "Wrappers", "is_constructor",
 
 MAX_DEPTH = 4  # a wrapper of a wrapper ... of an API call
 Key = tuple[str, int]
+Shape = TypeVar("Shape")  # what a string's shape holds between its known parts
 # what a member call on an object whose type is a template parameter may be: the node
 # handle's and rclcpp node's methods, by name
 DEPENDENT: dict[str, api.RosFunction] = {
@@ -1113,7 +1114,6 @@ def _name_shape(expr: Cursor, params: list[Cursor], scope: Scope | None,
             if initialised is not None and initialised[1] is scope:
                 value = initialised[0]
         return _name_shape(value, params, scope, depth + 1) if value is not None else None
-    operands: list[Cursor] = []
     if kind == CursorKind.CONDITIONAL_OPERATOR:
         # ``ns.empty() ? name : ns + "." + name``: the branch that keeps the most text;
         # not a test of the parameter that names it (``!field.empty() ? field + "/" :
@@ -1127,31 +1127,12 @@ def _name_shape(expr: Cursor, params: list[Cursor], scope: Scope | None,
         shapes = [found for b in branches
                   if (found := _name_shape(b, params, scope, depth + 1)) is not None]
         return max(shapes, key=lambda f: len(f[0]) + len(f[2])) if shapes else None
-    if kind == CursorKind.CALL_EXPR and expr.spelling == "operator+":
-        operands = written_arguments(expr)
-    elif kind == CursorKind.BINARY_OPERATOR and scope is not None:
-        children = list(expr.get_children())
-        if len(children) == 2 and between(children[0], children[1], scope.source) == "+":
-            operands = children
-    elif kind == CursorKind.CALL_EXPR:
-        inner = [c for c in expr.get_children() if c.kind.is_expression()]
-        target = expr.referenced
-        if len(inner) == 1 and (target is None or target.kind == CursorKind.CONSTRUCTOR
-                                or expr.spelling in ("c_str", "str")):
-            found = inner[0]
-            if found.kind == CursorKind.MEMBER_REF_EXPR:  # name.c_str()
-                objects = [c for c in found.get_children() if c.kind.is_expression()]
-                found = objects[0] if objects else found
-            return _name_shape(found, params, scope, depth + 1)
+    operands, inner = _string_parts(expr, scope, every_member=True)
+    if inner is not None:
+        return _name_shape(inner, params, scope, depth + 1)
     if len(operands) != 2 or scope is None:
         return None
-    left = _name_shape(operands[0], params, scope, depth + 1)
-    if left is not None:
-        return left[0], left[1], (*left[2], *scope.string(operands[1]))
-    right = _name_shape(operands[1], params, scope, depth + 1)
-    if right is not None:
-        return (*scope.string(operands[0]), *right[0]), right[1], right[2]
-    return None
+    return _around(operands, scope, lambda part: _name_shape(part, params, scope, depth + 1))
 
 
 def _member_shape(expr: Cursor, function: Cursor, scope: Scope | None,
@@ -1173,29 +1154,53 @@ def _member_shape(expr: Cursor, function: Cursor, scope: Scope | None,
         ) or (objects and not _is_this(objects[0])):
             return None
         return (), decl, ()
-    operands: list[Cursor] = []
+    operands, inner = _string_parts(expr, scope, every_member=False)
+    if inner is not None:
+        return _member_shape(inner, function, scope, depth + 1)
+    if len(operands) != 2 or scope is None:
+        return None
+    return _around(operands, scope,
+                   lambda part: _member_shape(part, function, scope, depth + 1))
+
+
+def _string_parts(expr: Cursor, scope: Scope | None,
+                  every_member: bool) -> tuple[list[Cursor], Cursor | None]:
+    """How the string ``expr`` is made: the two operands of a ``+`` (an ``operator+``
+    call, or with a scope to read it a ``+`` a template leaves to its instantiation), or
+    the one expression a conversion, a constructor or ``c_str()`` / ``str()`` wraps (of
+    ``name.c_str()`` the object ``name``; of another member access written there too,
+    its object, when ``every_member``); neither: ``([], None)``."""
+    kind = expr.kind
     if kind == CursorKind.CALL_EXPR and expr.spelling == "operator+":
-        operands = written_arguments(expr)
-    elif kind == CursorKind.BINARY_OPERATOR and scope is not None:
+        return written_arguments(expr), None
+    if kind == CursorKind.BINARY_OPERATOR and scope is not None:
         children = list(expr.get_children())
         if len(children) == 2 and between(children[0], children[1], scope.source) == "+":
-            operands = children
+            return children, None
     elif kind == CursorKind.CALL_EXPR:
         inner = [c for c in expr.get_children() if c.kind.is_expression()]
         target = expr.referenced
         if len(inner) == 1 and (target is None or target.kind == CursorKind.CONSTRUCTOR
                                 or expr.spelling in ("c_str", "str")):
             found = inner[0]
-            if found.kind == CursorKind.MEMBER_REF_EXPR and expr.spelling in ("c_str", "str"):
+            if found.kind == CursorKind.MEMBER_REF_EXPR and (
+                every_member or expr.spelling in ("c_str", "str")
+            ):
                 objects = [c for c in found.get_children() if c.kind.is_expression()]
                 found = objects[0] if objects else found
-            return _member_shape(found, function, scope, depth + 1)
-    if len(operands) != 2 or scope is None:
-        return None
-    left = _member_shape(operands[0], function, scope, depth + 1)
+            return [], found
+    return [], None
+
+
+def _around(operands: list[Cursor], scope: Scope,
+            shape: Callable[[Cursor], tuple[Parts, Shape, Parts] | None]
+            ) -> tuple[Parts, Shape, Parts] | None:
+    """The shape of ``left + right`` from its operand that has one (the left first),
+    with the other's text before or after it."""
+    left = shape(operands[0])
     if left is not None:
         return left[0], left[1], (*left[2], *scope.string(operands[1]))
-    right = _member_shape(operands[1], function, scope, depth + 1)
+    right = shape(operands[1])
     if right is not None:
         return (*scope.string(operands[0]), *right[0]), right[1], right[2]
     return None
