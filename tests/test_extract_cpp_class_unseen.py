@@ -529,3 +529,45 @@ def test_a_dependency_a_workspace_library_does_not_export(write_tree: Any) -> No
     # a test dependency of the planner reaches no package depending on it
     node = _through_library(write_tree, "test_depend")
     assert node.completeness == "complete", node.completeness_reasons
+
+
+TEMPLATED = """
+    #include <string>
+    #include <ros/ros.h>
+    #include <costmap_2d/costmap_2d_ros.h>
+
+    void readRate(ros::NodeHandle& nh, const std::string& name, double& out) {
+      nh.param(name, out, 1.0);
+    }
+
+    class Holder {
+     public:
+      template <typename T>
+      void prepare(T& thing) {
+        thing.reset();
+        costmap_2d::Costmap2DROS local;
+      }
+     private:
+      costmap_2d::Costmap2DROS* shared_;
+    };
+
+    int main(int argc, char** argv) {
+      ros::init(argc, argv, "teleop");
+      ros::NodeHandle nh("~");
+      double rate;
+      readRate(nh, "rate", rate);
+      ros::spin();
+    }
+    """
+
+
+def test_a_class_built_in_a_function_that_makes_no_ros_call(write_tree: Any) -> None:
+    # franka_hw's setupLimitInterface<T>: a function template whose calls depend on its
+    # parameter and make no ROS call, building joint_limits_interface's classes. Its
+    # body is not walked for calls; what it builds is still read (in every function)
+    node, _ = _teleop(write_tree, TEMPLATED, "costmap_2d")
+    assert node.completeness == "partial"
+    assert any(r.startswith("teleop/src/teleop.cpp:14:")
+               and "costmap_2d::Costmap2DROS of ROS package costmap_2d" in r
+               for r in node.completeness_reasons), node.completeness_reasons
+    assert "~rate" in [c.name for c in node.calls]

@@ -368,6 +368,7 @@ class CallFinder:
         nodes = self.wrappers.preorder.get(id(function))
         if self.clients is not None and function.kind == CursorKind.CONSTRUCTOR:
             self._unseen_members(function)
+        dependent = False  # a call that depends on a template parameter, of no wrapper
         for node in function.walk_preorder() if nodes is None else nodes:
             kind = node.kind
             if kind in _MAKES:
@@ -375,10 +376,16 @@ class CallFinder:
             if kind == CursorKind.CALL_EXPR:
                 self._to_unknown(node, function)  # in every function, walked or not
                 spelling = node.spelling
-                if spelling in _API_NAMES or spelling in names or (
+                if spelling in _API_NAMES or (spelling and spelling in names) or (
                     not spelling and _recovered_name(node) in rows
                 ) or constructed_class(node, self.owned) is not None:
                     return True
+                if not spelling and names:
+                    # ``_call`` takes it as a wrapper's call: one the unit's wrappers
+                    # match (``Wrappers.emit``) or one clang resolved gives something
+                    if node.referenced is not None or self.wrappers.calls_wrapper(node):
+                        return True
+                    dependent = True
             elif kind == CursorKind.UNEXPOSED_EXPR and not node.spelling and (
                 _recovered_name(node) in rows
             ):
@@ -387,7 +394,14 @@ class CallFinder:
                 _dependent_made(node) is not None
             ):
                 return True
-        return False
+        # a walk of a function whose only such call is another template's gives what the
+        # rest of ``_function``'s loop gives: a member initialiser clang lost, a
+        # construction of a class whose code the unit does not have
+        return dependent and (
+            (function.kind == CursorKind.CONSTRUCTOR and bool(_lost_initialisers(function)))
+            or any(node.kind == CursorKind.CALL_EXPR
+                   and opaque_construction(node, self.owned) is not None
+                   for node in (function.walk_preorder() if nodes is None else nodes)))
 
     def _scope_of(self, function: Cursor) -> Scope:
         """The scope of ``function``'s body: the unit's one (``CallSites.scope``), whose

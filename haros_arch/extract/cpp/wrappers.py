@@ -1014,6 +1014,10 @@ class Wrappers:
                                            self.finder.ros2)
         return dataclasses.replace(row, fixed_name=literal, fixed_type=found, type_from=())
 
+    def calls_wrapper(self, call: Cursor) -> bool:
+        """Whether ``emit`` may make calls for ``call``: it calls a wrapper."""
+        return bool(self._called(call))
+
     def _called(self, call: Cursor) -> list[Wrapper]:
         """The wrappers ``call`` calls (through the overloads a dependent call names)."""
         return [w for key in self._called_keys(call) for w in self.summaries.get(key, ())]
@@ -1688,16 +1692,21 @@ _REFERENCES = frozenset({CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR,
 _LAMBDA_END = object()  # in ``_scan``'s stack: the walk leaves a lambda's body
 
 
+# what ``_scan`` puts in ``every`` besides calls: expressions kept unresolved, and the
+# objects a function builds (``CallFinder._unseen_class`` reads them in every function)
+_EVERY = frozenset({CursorKind.UNEXPOSED_EXPR, CursorKind.VAR_DECL, CursorKind.CXX_NEW_EXPR})
+
+
 def _scan(function: Cursor, every: list[Cursor] | None = None,
           references: list[Cursor] | None = None) -> tuple[list[Cursor], list[Cursor]]:
     """The calls in ``function``'s body, in order, and the lambdas it makes; not the
     calls inside those (a lambda's body runs when it is called, not where it is
     written): one walk of the body. With ``every``, the walk goes into the lambdas'
-    bodies too and puts in it every call and unexposed expression of the function's
-    whole subtree, in the order of ``walk_preorder`` (what ``CallFinder._gives`` reads:
-    the function's nodes are then walked once for both); with ``references``, the
-    walk puts in it the subtree's references to declarations, in the same order (what
-    ``call_conditions.site_facts`` reads)."""
+    bodies too and puts in it every call, unexposed expression, variable and ``new`` of
+    the function's whole subtree, in the order of ``walk_preorder`` (what
+    ``CallFinder._gives`` reads: the function's nodes are then walked once for both);
+    with ``references``, the walk puts in it the subtree's references to declarations,
+    in the same order (what ``call_conditions.site_facts`` reads)."""
     calls: list[Cursor] = []
     lambdas: list[Cursor] = []
     stack: list[Any] = list(reversed(list(function.get_children())))
@@ -1713,7 +1722,7 @@ def _scan(function: Cursor, every: list[Cursor] | None = None,
                 calls.append(node)
             if every is not None:
                 every.append(node)
-        elif kind == CursorKind.UNEXPOSED_EXPR:
+        elif kind in _EVERY:
             if every is not None:
                 every.append(node)
         elif references is not None and kind in _REFERENCES:
