@@ -480,6 +480,23 @@ def _initialised_member(text: bytes, found: re.Match[bytes], before: bytes) -> b
     return False
 
 
+# a comment, or a string or character literal (its quotes kept): not code
+_COMMENT_OR_LITERAL = re.compile(
+    rb"\"(?:\\.|[^\"\\\n])*\"|'(?:\\.|[^'\\\n])*'|//[^\n]*|/\*.*?(?:\*/|\Z)", re.DOTALL)
+
+
+def code_only(text: bytes) -> bytes:
+    """``text`` with its comments and the insides of its literals blanked, every byte at
+    its offset and every line break kept: what the spreads over whole files read, so
+    that a comment's words (mqtt_client's ``// See https://.../mqtt_client (v2.4.1)``,
+    under the missing library ``mqtt``) are not taken for a call or a scope."""
+    def blank(match: re.Match[bytes]) -> bytes:
+        found = match.group(0)
+        inside = re.sub(rb"[^\r\n]", b" ", found)
+        return found[:1] + inside[1:-1] + found[-1:] if found[:1] in (b'"', b"'") else inside
+    return _COMMENT_OR_LITERAL.sub(blank, text)
+
+
 def _spelled_at(name: str, text: bytes, offset: int) -> int:
     """Where the unknown ``name`` an error is about is written: clang places an error
     in a macro's arguments at the macro (``RCLCPP_ERROR(logger, "%s", SDL_GetError())``
@@ -546,7 +563,7 @@ class Names:
         # unknown function-like macros written as a whole declaration (``_BODY_EXPECTED``)
         self.declaration_macros: set[str] = set()
         self._read: set[int] = set()  # the files whose using-directives were read
-        self._texts: list[bytes] = []  # those files
+        self._texts: list[bytes] = []  # those files, code only (``code_only``)
         self._defined: set[str] = set()  # the names they define (see ``_spread``)
         self._spread_done: set[tuple[int, str]] = set()  # (file, name) looked for
         self.count = 0
@@ -560,7 +577,7 @@ class Names:
         for _message, text, _offset in errors:
             if text is not None and id(text) not in self._read:
                 self._read.add(id(text))
-                self._texts.append(text)
+                self._texts.append(code_only(text))
                 self._defined.update(m.decode() for m in _DEFINED.findall(text))
                 self.using.update(m.decode() for m in _USING.findall(text))
                 self.brought.update(re.sub(r"\s+", "", m.decode())
