@@ -896,6 +896,12 @@ public:
 #if __cplusplus >= 201703L
 template<class T> optional(T) -> optional<T>;  // std::optional{value}
 #endif
+template<class T> bool operator==(const optional<T>& o, nullopt_t) noexcept;
+template<class T> bool operator==(nullopt_t, const optional<T>& o) noexcept;
+template<class T> bool operator!=(const optional<T>& o, nullopt_t) noexcept;
+template<class T> bool operator!=(nullopt_t, const optional<T>& o) noexcept;
+template<class T, class U> bool operator==(const optional<T>& a, const optional<U>& b);
+template<class T, class U> bool operator!=(const optional<T>& a, const optional<U>& b);
 template<class T> optional<typename decay<T>::type> make_optional(T&& v);
 template<class T, class... A> optional<T> make_optional(A&&... args);
 
