@@ -1395,7 +1395,17 @@ template<class T> struct atomic {
   T operator--(int) noexcept;
   T operator+=(T v) noexcept;
   T operator-=(T v) noexcept;
-  T fetch_add(T v) noexcept;
+  T operator&=(T v) noexcept;
+  T operator|=(T v) noexcept;
+  T operator^=(T v) noexcept;
+  T fetch_add(T v, memory_order order = memory_order_seq_cst) noexcept;
+  T fetch_sub(T v, memory_order order = memory_order_seq_cst) noexcept;
+  T fetch_and(T v, memory_order order = memory_order_seq_cst) noexcept;
+  T fetch_or(T v, memory_order order = memory_order_seq_cst) noexcept;
+  T fetch_xor(T v, memory_order order = memory_order_seq_cst) noexcept;
+  bool compare_exchange_weak(T& expected, T desired,
+                             memory_order order = memory_order_seq_cst) noexcept;
+  bool is_lock_free() const noexcept;
 };
 typedef atomic<bool> atomic_bool;
 typedef atomic<char> atomic_char;
