@@ -375,6 +375,8 @@ class CallFinder:
             if kind == CursorKind.CALL_EXPR:
                 self._to_unknown(node, function)  # in every function, walked or not
                 spelling = node.spelling
+                if spelling == "operator()":
+                    self._vendor_member_call(node)  # (so too in the walk, after a return)
                 if spelling in _API_NAMES or spelling in names or (
                     not spelling and _recovered_name(node) in rows
                 ) or constructed_class(node, self.owned) is not None:
@@ -445,6 +447,8 @@ class CallFinder:
                 self._unresolved(node, conditions, scope)
             elif node.kind == CursorKind.CALL_EXPR and not node.spelling:
                 self._dependent(node, conditions, scope)
+            elif node.kind == CursorKind.CALL_EXPR and node.spelling == "operator()":
+                self._vendor_member_call(node)
             if node.kind == CursorKind.CALL_EXPR:
                 self._construction(node, conditions)
                 self._to_unknown(node, function)
@@ -868,6 +872,24 @@ class CallFinder:
             self.diagnostics.append(diag.make(
                 "CPP_NODE_TO_UNKNOWN", self.where(call),
                 given="".join(t.spelling for t in given[0].get_tokens())[:60], name=name))
+
+    def _vendor_member_call(self, call: Cursor) -> None:
+        """A call of an API function's name that the parse resolved to a member of a class
+        declared permissively (its header is missing: mqtt_client's ``client_->subscribe(
+        topic, qos)`` on Paho's ``mqtt::async_client``) is no ROS call left unread, in
+        ROS 2 code: such an object communicates only through a node it is given, which
+        ``_to_unknown`` says where it is given (``resolved``, so not CPP_CALL_MISSED)."""
+        if not self.ros2:
+            return
+        callee = next((c for c in call.get_children() if c.kind.is_expression()), None)
+        callee = strip(callee) if callee is not None else None
+        if callee is None or callee.kind not in (CursorKind.MEMBER_REF_EXPR,
+                                                 CursorKind.DECL_REF_EXPR):
+            return
+        target = callee.referenced
+        if callee.spelling in _API_NAMES and target is not None and self._declared_here(
+                target) and callee.location.file is not None:
+            self.resolved.add((callee.location.file.name, callee.location.line))
 
     def _of_unknown_base(self, callee: Cursor, function: Cursor | None) -> bool:
         """Whether ``callee`` is a friend of the permissive class (an unqualified function
