@@ -122,3 +122,74 @@ def test_the_project_name_in_an_include_folder_is_the_package_s(tmp_path) -> Non
     assert [(c.kind, c.name) for c in result.calls] == [("publish", "~status")]
     assert not {"CPP_INCLUDE_MISSING", "CPP_PARSE_ERROR"} & {
         d.code for d in result.diagnostics}
+
+
+LIB_HEADER = """\
+#pragma once
+#include <geometry/point.h>
+namespace gait {
+class Planner {
+public:
+  geometry::Point next() const { return geometry::Point{}; }
+};
+}
+"""
+POINT = """\
+#pragma once
+namespace geometry { struct Point { double x = 0.0; }; }
+"""
+USER_CMAKE = """\
+cmake_minimum_required(VERSION 3.8)
+project(walker)
+find_package(rclcpp REQUIRED)
+find_package(gait REQUIRED)
+find_package(other REQUIRED)
+include_directories(include ${gait_INCLUDE_DIRS}/gait/ ${other_INCLUDE_DIRS}/x)
+add_executable(walker src/walker.cpp)
+"""
+WALKER = """\
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/float64.hpp>
+#include <gait/planner/planner.h>
+class Walker : public rclcpp::Node {
+public:
+  Walker() : Node("walker") {
+    rate_ = declare_parameter("rate", 50.0);
+    pub_ = create_publisher<std_msgs::msg::Float64>("x", 1);
+  }
+private:
+  gait::Planner planner_;
+  double rate_;
+  rclcpp::Publisher<std_msgs::msg::Float64>::SharedPtr pub_;
+};
+"""
+
+
+def test_a_folder_of_another_package_s_exported_include(tmp_path) -> None:
+    """champ_base's ``include_directories(${champ_INCLUDE_DIRS}/champ/)``: libchamp's
+    headers include each other from ``champ/include/champ`` (``<geometry/geometry.h>``);
+    not searched, the planner's header lost its includes, its class was declared
+    permissively, then redefined, and the node's class was invalid (CPP_NODE_PARTIAL).
+    A variable of no workspace package stays unread."""
+    files = {
+        "gait/package.xml": package_xml("gait", "ament_cmake"),
+        "gait/CMakeLists.txt": "project(gait)\nament_export_include_directories(include)\n",
+        "gait/include/gait/planner/planner.h": LIB_HEADER,
+        "gait/include/gait/geometry/point.h": POINT,
+        "walker/package.xml": package_xml("walker", "ament_cmake").replace(
+            "</package>", "<depend>rclcpp</depend><depend>std_msgs</depend>"
+            "<depend>gait</depend></package>"),
+        "walker/CMakeLists.txt": USER_CMAKE,
+        "walker/src/walker.cpp": WALKER,
+    }
+    for name, text in files.items():
+        path = tmp_path / name
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(text)
+    ws = scan([str(tmp_path)])
+    assert cmake_include_dirs(str(tmp_path / "walker"), ws) == [
+        str(tmp_path / "gait" / "include" / "gait")]
+    result = extract_cpp([str(tmp_path / "walker" / "src" / "walker.cpp")], ws,
+                         cache_dir=None)
+    assert [(c.kind, c.name) for c in result.calls] == [("declare", "rate"), ("publish", "x")]
+    assert [d.code for d in result.diagnostics if d.code.startswith("CPP_")] == []

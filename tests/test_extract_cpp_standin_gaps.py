@@ -9,7 +9,8 @@ urg_node's ROS 1 bond::Bond; tf2_ros' lookupTransform result as a message, ROS 1
 humble image_view's HighGUI windows and message_filters subscription, turtlebot3_node's
 parameter events, ros2_controllers' Duration == and std::optional{value}; wiimote's
 ROS 1 publisher compared with nullptr, ros::master's topic list; MoveIt 1's
-kinematics plugin loader's std::stringstream state and std::ws).
+kinematics plugin loader's std::stringstream state and std::ws; mqtt_client's
+std::optional compared with std::nullopt).
 Each parses with no error and keeps its calls. The sources are
 fixtures/cpp/standin_gaps."""
 
@@ -669,3 +670,12 @@ def test_ros2_opencv_contours_with_hierarchy_and_moments(write_tree) -> None:
     assert [(c.kind, c.name) for c in result.calls
             if c.kind in ("declare", "read", "publish")] == [
         ("declare", "min_brightness"), ("publish", "area"), ("read", "min_brightness")]
+
+
+def test_ros2_optional_compared_with_nullopt(write_tree) -> None:
+    """mqtt_client's setupSubscriptions compares a ``std::optional`` QoS policy with
+    ``std::nullopt``: the stand-in had no such operator, and the clang error in the
+    function that subscribes made the node partial."""
+    result = _extract(write_tree, _source("ros2_optional_nullopt.cpp"), "ament_cmake")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [("subscribe", "in")]

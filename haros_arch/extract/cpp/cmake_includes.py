@@ -7,7 +7,8 @@ ${CMAKE_CURRENT_SOURCE_DIR}/src/zed_camera/include ...)``), and without them eve
 of the package is unknown to the parse. Read as text, like the macros
 (``build_macros``): ``include_directories`` and ``target_include_directories`` words that
 are a folder of the package, relative or under the source folder variables (and
-``${PROJECT_NAME}``, the package's name). Not a folder
+``${PROJECT_NAME}``, the package's name), or a folder of another workspace package's
+exported ``include`` (``${champ_INCLUDE_DIRS}/champ/``). Not a folder
 of a library the package builds with ``add_subdirectory`` (one with a CMakeLists.txt of
 its own that calls ``project()``, slam_toolbox's ``lib/karto_sdk/include``), whose
 headers the parse synthesises as those of a missing package (see
@@ -57,10 +58,28 @@ def cmake_include_dirs(root: str, workspace: Workspace) -> list[str]:
                 word = word.strip("\"'")
                 if project is not None:
                     word = word.replace("${PROJECT_NAME}", project)
-                named = _folder(word, here, root)
-                if named is not None and named not in found and _owned(named, root):
+                word, owner = _exported(word, workspace, root)
+                named = _folder(word, here, owner)
+                if named is not None and named not in found and _owned(named, owner):
                     found.append(named)
     return found
+
+
+_EXPORTED = re.compile(r"^\$\{(\w+)_INCLUDE_DIRS?\}(?=/|$)")
+
+
+def _exported(word: str, workspace: Workspace, root: str) -> tuple[str, str]:
+    """``word`` with a leading ``${<pkg>_INCLUDE_DIRS}`` of a workspace package (what
+    its ``find_package`` gives: the package's ``include`` folder, as ament and catkin
+    export it) written as that folder, with the root of the package it is in (``root``
+    for any other word): champ_base's ``${champ_INCLUDE_DIRS}/champ/``, where
+    libchamp's headers include each other (``<geometry/geometry.h>``)."""
+    found = _EXPORTED.match(word)
+    package = workspace.packages.get(found.group(1)) if found is not None else None
+    if found is None or package is None or not package.root:
+        return word, root
+    owner = os.path.abspath(package.root)
+    return os.path.join(owner, "include") + word[found.end():], owner
 
 
 def _folder(word: str, here: str, root: str) -> str | None:

@@ -100,6 +100,15 @@ _VALUE_ARGUMENT = re.compile(r"^template argument for template type parameter mu
 _NOT_CONVERTED = re.compile(
     r"^candidate .*no known conversion from '(?:const )?([\w:]+) \*' to "
     r"'(?:const )?([\w:]+) \*' for")
+# a class the code only declares (``namespace libcamera { class CameraManager; }`` in
+# camera_ros' own headers) and whose defining header is missing, used where C++ needs
+# it complete: a field of it makes the class that holds it invalid, and every call in
+# that class's code fails (camera_ros' CameraNode: its declare_parameter and
+# create_publisher calls)
+_INCOMPLETE = re.compile(
+    r"^(?:field has |member access into |variable has |initialization of |)"
+    r"incomplete (?:result )?type '(?:const )?(?:(?:struct|class) )?"
+    r"([A-Za-z_]\w*(?:::[A-Za-z_]\w*)*)'")
 _RECORD = re.compile(r"[a-z]\w*(?:::\w+)+")  # a message's struct: ``pkg::msg::Name``
 _AFTER_MEMBER = re.compile(rb"(?:\.|->)\s*([A-Za-z_]\w*)")
 _TEMPLATE_SPAN = 400  # bytes searched back for the ``<`` of a template argument list
@@ -480,6 +489,23 @@ def _initialised_member(text: bytes, found: re.Match[bytes], before: bytes) -> b
     return False
 
 
+# a comment, or a string or character literal (its quotes kept): not code
+_COMMENT_OR_LITERAL = re.compile(
+    rb"\"(?:\\.|[^\"\\\n])*\"|'(?:\\.|[^'\\\n])*'|//[^\n]*|/\*.*?(?:\*/|\Z)", re.DOTALL)
+
+
+def code_only(text: bytes) -> bytes:
+    """``text`` with its comments and the insides of its literals blanked, every byte at
+    its offset and every line break kept: what the spreads over whole files read, so
+    that a comment's words (mqtt_client's ``// See https://.../mqtt_client (v2.4.1)``,
+    under the missing library ``mqtt``) are not taken for a call or a scope."""
+    def blank(match: re.Match[bytes]) -> bytes:
+        found = match.group(0)
+        inside = re.sub(rb"[^\r\n]", b" ", found)
+        return found[:1] + inside[1:-1] + found[-1:] if found[:1] in (b'"', b"'") else inside
+    return _COMMENT_OR_LITERAL.sub(blank, text)
+
+
 def _spelled_at(name: str, text: bytes, offset: int) -> int:
     """Where the unknown ``name`` an error is about is written: clang places an error
     in a macro's arguments at the macro (``RCLCPP_ERROR(logger, "%s", SDL_GetError())``
@@ -546,7 +572,7 @@ class Names:
         # unknown function-like macros written as a whole declaration (``_BODY_EXPECTED``)
         self.declaration_macros: set[str] = set()
         self._read: set[int] = set()  # the files whose using-directives were read
-        self._texts: list[bytes] = []  # those files
+        self._texts: list[bytes] = []  # those files, code only (``code_only``)
         self._defined: set[str] = set()  # the names they define (see ``_spread``)
         self._spread_done: set[tuple[int, str]] = set()  # (file, name) looked for
         self.count = 0
@@ -560,7 +586,7 @@ class Names:
         for _message, text, _offset in errors:
             if text is not None and id(text) not in self._read:
                 self._read.add(id(text))
-                self._texts.append(text)
+                self._texts.append(code_only(text))
                 self._defined.update(m.decode() for m in _DEFINED.findall(text))
                 self.using.update(m.decode() for m in _USING.findall(text))
                 self.brought.update(re.sub(r"\s+", "", m.decode())
@@ -708,6 +734,10 @@ class Names:
                     name not in _api_methods()) and _discarded_member_call(text, offset, name):
                 self.member_templates.add(name)
                 self.count += 1
+            return
+        incomplete = _INCOMPLETE.match(message)
+        if incomplete is not None:
+            self._complete(incomplete.group(1))
             return
         converted = _NOT_CONVERTED.match(message)
         if converted is not None:
@@ -873,6 +903,37 @@ class Names:
             and text[found.end():found.end() + 16].lstrip()[:1] != b"(") else None
         if kind is not None and not {"constant", kind} <= node.uses:
             node.uses.update(("constant", kind))
+            self.count += 1
+
+    def _complete(self, qualified: str) -> None:
+        """A class declared but never defined, which the code uses complete
+        (``_INCOMPLETE``): defined permissively, in its namespaces. Not when a file read
+        defines it (its definition is then real, if out of this parse's reach), nor a
+        class of the standard library, nor one whose scopes are not all namespaces the
+        files read open (a nested class cannot be defined from outside its class)."""
+        parts = qualified.split("::")
+        if parts[0] == "std" or any(p in _KEYWORDS for p in parts):
+            return
+        name = re.escape(parts[-1].encode())
+        defined = re.compile(rb"\b(?:class|struct)\s+(?:[A-Z][A-Z0-9_]*\s+)*" + name +
+                             rb"\s*(?:final\s*)?[:{]")
+        if any(defined.search(text) for text in self._texts):
+            return
+        node = self.root
+        for i, part in enumerate(parts[:-1]):
+            child = node.children.get(part)
+            if child is None:
+                opened = re.compile(rb"\bnamespace\s+(?:\w+\s*::\s*)*" + re.escape(
+                    part.encode()) + rb"\b")
+                if not (i == 0 and self.declared is not None and self.declared(part)) and (
+                        not any(opened.search(text) for text in self._texts)):
+                    return
+                child = node.children[part] = _Name(known=True)
+            if not _is_namespace(child):
+                return
+            node = child
+        if parts[-1] not in node.children:
+            node.children[parts[-1]] = _Name(uses={"type"})
             self.count += 1
 
     def _a_value(self, text: bytes, offset: int) -> None:

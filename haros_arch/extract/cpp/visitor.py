@@ -376,6 +376,8 @@ class CallFinder:
             if kind == CursorKind.CALL_EXPR:
                 self._to_unknown(node, function)  # in every function, walked or not
                 spelling = node.spelling
+                if spelling == "operator()":
+                    self._vendor_member_call(node)  # (so too in the walk, after a return)
                 if spelling in _API_NAMES or (spelling and spelling in names) or (
                     not spelling and _recovered_name(node) in rows
                 ) or constructed_class(node, self.owned) is not None:
@@ -459,6 +461,8 @@ class CallFinder:
                 self._unresolved(node, conditions, scope)
             elif node.kind == CursorKind.CALL_EXPR and not node.spelling:
                 self._dependent(node, conditions, scope)
+            elif node.kind == CursorKind.CALL_EXPR and node.spelling == "operator()":
+                self._vendor_member_call(node)
             if node.kind == CursorKind.CALL_EXPR:
                 self._construction(node, conditions)
                 self._to_unknown(node, function)
@@ -863,6 +867,8 @@ class CallFinder:
         given = node_arguments(call) or options_arguments(call)
         if given and binds_own_member(call, given):
             return  # a callback binding: the member's calls are read where it is defined
+        if given and self._listener_registration(call, given, function):
+            return  # the vendor sees the object as its own base: it calls the overrides
         if not given and self._of_unknown_base(unknown, function):
             self._unknown.add(key)
             self.diagnostics.append(diag.make(
@@ -882,6 +888,71 @@ class CallFinder:
             self.diagnostics.append(diag.make(
                 "CPP_NODE_TO_UNKNOWN", self.where(call),
                 given="".join(t.spelling for t in given[0].get_tokens())[:60], name=name))
+
+    def _listener_registration(self, call: Cursor, given: list[Cursor],
+                               function: Cursor | None) -> bool:
+        """Whether ``call`` gives the object itself (``this``, ``*this``) to a function
+        or to an object's method of a namespace that a base of the object's class
+        declared permissively is of: a listener registration (mqtt_client's
+        ``client_->set_callback(*this)``, its class deriving Paho's ``mqtt::callback``),
+        where the vendor's code has the object as that base of its own and calls the
+        class's overrides, read where they are defined."""
+        if function is None or not all(
+                "".join(t.spelling for t in arg.get_tokens()) in ("this", "*this")
+                for arg in given):
+            return False
+        owner = function.semantic_parent
+        if owner is None or owner.kind not in (CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL,
+                                               CursorKind.CLASS_TEMPLATE):
+            return False
+        spaces = set()
+        for base in owner.get_children():
+            if base.kind == CursorKind.CXX_BASE_SPECIFIER:
+                decl = base.type.get_canonical().get_declaration()
+                if decl is not None and self._declared_here(decl):
+                    spaces.add(qualified_name(decl).split("::")[0])
+        return bool(spaces) and self._vendor_space(call) in spaces
+
+    def _vendor_space(self, call: Cursor) -> str | None:
+        """The top namespace of what ``call`` runs when it is declared permissively: the
+        function's, or the class of the object a member is called on."""
+        target = call.referenced
+        name = qualified_name(target) if target is not None and self._declared_here(
+            target) else ""
+        if "::" in name and name.split("::")[0] != synthesis.ANY:
+            return name.split("::")[0]
+        callee = next((c for c in call.get_children() if c.kind.is_expression()), None)
+        callee = strip(callee) if callee is not None else None
+        if callee is None or callee.kind != CursorKind.MEMBER_REF_EXPR:
+            return None
+        subject = next((c for c in callee.get_children() if c.kind.is_expression()), None)
+        if subject is None:
+            return None
+        kind = subject.type.get_canonical()
+        if kind.kind == TypeKind.POINTER:
+            kind = kind.get_pointee()
+        decl = kind.get_declaration()
+        if decl is None or not self._declared_here(decl):
+            return None
+        return qualified_name(decl).split("::")[0]
+
+    def _vendor_member_call(self, call: Cursor) -> None:
+        """A call of an API function's name that the parse resolved to a member of a class
+        declared permissively (its header is missing: mqtt_client's ``client_->subscribe(
+        topic, qos)`` on Paho's ``mqtt::async_client``) is no ROS call left unread, in
+        ROS 2 code: such an object communicates only through a node it is given, which
+        ``_to_unknown`` says where it is given (``resolved``, so not CPP_CALL_MISSED)."""
+        if not self.ros2:
+            return
+        callee = next((c for c in call.get_children() if c.kind.is_expression()), None)
+        callee = strip(callee) if callee is not None else None
+        if callee is None or callee.kind not in (CursorKind.MEMBER_REF_EXPR,
+                                                 CursorKind.DECL_REF_EXPR):
+            return
+        target = callee.referenced
+        if callee.spelling in _API_NAMES and target is not None and self._declared_here(
+                target) and callee.location.file is not None:
+            self.resolved.add((callee.location.file.name, callee.location.line))
 
     def _of_unknown_base(self, callee: Cursor, function: Cursor | None) -> bool:
         """Whether ``callee`` is a friend of the permissive class (an unqualified function

@@ -145,6 +145,22 @@ def package_directory(share: bool) -> Builder:
     return build
 
 
+def has_resource(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """ament_index_python's ``has_resource('packages', name)``: whether a package is
+    installed (camera_ros adds image_view's viewer only then): True when the workspace
+    has it or it is installed here; else not known (it may be on the robot), an info,
+    and an ``if`` on it takes both branches, each under its test."""
+    kind, name = arg(a, k, 0, "resource_type"), arg(a, k, 1, "resource_name")
+    if kind != "packages" or not isinstance(name, str):
+        return i.unsupported(n, "has_resource() of a resource other than a package named "
+                             "statically")
+    if i.workspace.find(name) is not None:
+        return True
+    i.unknown_value(n, f"whether package {name} is installed where the launch file runs "
+                       "is not known here")
+    return Unknown(f"has_resource('packages', '{name}')")
+
+
 def package_share_path(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     """``get_package_share_path(name)``: ``get_package_share_directory`` as a
     ``pathlib.Path`` (a pure path, grown with ``/``); a package not in the workspace is
@@ -643,6 +659,7 @@ API: dict[str, Builder] = {
     "FindPackage": find_package(True),
     "get_package_share_directory": package_directory(True),
     "get_package_share_path": package_share_path,
+    "has_resource": has_resource,
     "get_package_prefix": package_directory(False),
     "join": os_path_join, "dirname": os_path(os.path.dirname),
     "basename": os_path(os.path.basename), "abspath": os_path(os.path.normpath),

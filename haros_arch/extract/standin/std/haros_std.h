@@ -896,6 +896,12 @@ public:
 #if __cplusplus >= 201703L
 template<class T> optional(T) -> optional<T>;  // std::optional{value}
 #endif
+template<class T> bool operator==(const optional<T>& o, nullopt_t) noexcept;
+template<class T> bool operator==(nullopt_t, const optional<T>& o) noexcept;
+template<class T> bool operator!=(const optional<T>& o, nullopt_t) noexcept;
+template<class T> bool operator!=(nullopt_t, const optional<T>& o) noexcept;
+template<class T, class U> bool operator==(const optional<T>& a, const optional<U>& b);
+template<class T, class U> bool operator!=(const optional<T>& a, const optional<U>& b);
 template<class T> optional<typename decay<T>::type> make_optional(T&& v);
 template<class T, class... A> optional<T> make_optional(A&&... args);
 
@@ -1389,10 +1395,42 @@ template<class T> struct atomic {
   T operator--(int) noexcept;
   T operator+=(T v) noexcept;
   T operator-=(T v) noexcept;
-  T fetch_add(T v) noexcept;
+  T operator&=(T v) noexcept;
+  T operator|=(T v) noexcept;
+  T operator^=(T v) noexcept;
+  T fetch_add(T v, memory_order order = memory_order_seq_cst) noexcept;
+  T fetch_sub(T v, memory_order order = memory_order_seq_cst) noexcept;
+  T fetch_and(T v, memory_order order = memory_order_seq_cst) noexcept;
+  T fetch_or(T v, memory_order order = memory_order_seq_cst) noexcept;
+  T fetch_xor(T v, memory_order order = memory_order_seq_cst) noexcept;
+  bool compare_exchange_weak(T& expected, T desired,
+                             memory_order order = memory_order_seq_cst) noexcept;
+  bool is_lock_free() const noexcept;
 };
 typedef atomic<bool> atomic_bool;
+typedef atomic<char> atomic_char;
+typedef atomic<signed char> atomic_schar;
+typedef atomic<unsigned char> atomic_uchar;
+typedef atomic<short> atomic_short;
+typedef atomic<unsigned short> atomic_ushort;
 typedef atomic<int> atomic_int;
+typedef atomic<unsigned int> atomic_uint;
+typedef atomic<long> atomic_long;
+typedef atomic<unsigned long> atomic_ulong;
+typedef atomic<long long> atomic_llong;
+typedef atomic<unsigned long long> atomic_ullong;
+typedef atomic<int8_t> atomic_int8_t;
+typedef atomic<uint8_t> atomic_uint8_t;
+typedef atomic<int16_t> atomic_int16_t;
+typedef atomic<uint16_t> atomic_uint16_t;
+typedef atomic<int32_t> atomic_int32_t;
+typedef atomic<uint32_t> atomic_uint32_t;
+typedef atomic<int64_t> atomic_int64_t;
+typedef atomic<uint64_t> atomic_uint64_t;
+typedef atomic<size_t> atomic_size_t;
+typedef atomic<ptrdiff_t> atomic_ptrdiff_t;
+typedef atomic<intptr_t> atomic_intptr_t;
+typedef atomic<uintptr_t> atomic_uintptr_t;
 enum class future_status { ready, timeout, deferred };
 template<class T> class shared_future;
 template<class T> class future {
