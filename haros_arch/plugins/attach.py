@@ -482,7 +482,7 @@ def _may_be_set(name: str, params: Params) -> str | None:
             where = each.launch_location
             return (f"{name}, which names the plugins it loads, may be set by the launch "
                     f"parameter {full} not known statically ({where.file}:{where.line}): "
-                    "they may be others than the defaults")
+                    "they may be others than those seen (its defaults, or none)")
     return None
 
 
