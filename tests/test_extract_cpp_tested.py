@@ -94,3 +94,40 @@ def test_a_string_a_read_wrote_tested_for_being_empty_is_a_tested_read(tmp_path)
     result = extract_cpp([str(source)], Workspace(root=str(tmp_path)), cache_dir=None)
     assert {c.name: c.tested for c in result.calls if c.kind == "read"} == {
         "~pose_topic": True, "~frame": False, "~publish_topic": True}
+
+
+DEPRECATED_NAME = r"""
+#include <ros/ros.h>
+class Chain {
+ public:
+  Chain() : private_nh_("~") {
+    deprecated_ = private_nh_.hasParam("old_name");
+    kept_ = private_nh_.hasParam("other");
+    if (deprecated_)
+      private_nh_.getParam("old_name", value_);
+    ROS_INFO("%d", kept_);
+  }
+ private:
+  ros::NodeHandle private_nh_;
+  bool deprecated_;
+  bool kept_;
+  int value_;
+};
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "chain");
+  Chain chain;
+  ros::spin();
+}
+"""
+
+
+def test_a_member_a_status_read_wrote_then_tested_is_a_tested_read(tmp_path):
+    """laser_filters' scan_to_scan_filter_chain stores ``hasParam("filter_chain")`` in a
+    member and tests it in the same constructor (the deprecated name, read only when
+    set): 15 false parameter-read-not-set. A member held and never tested stays
+    untested."""
+    source = tmp_path / "n.cpp"
+    source.write_text(DEPRECATED_NAME)
+    result = extract_cpp([str(source)], Workspace(root=str(tmp_path)), cache_dir=None)
+    reads = {(c.name, c.location.line): c.tested for c in result.calls if c.kind == "read"}
+    assert reads == {("~old_name", 6): True, ("~other", 7): False, ("~old_name", 9): False}

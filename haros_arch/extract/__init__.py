@@ -23,7 +23,7 @@ from ..files import read_text
 from ..model.source import Node
 from ..model.values import UNKNOWN_MARK
 from ..plugins.classes import exported_classes
-from ..plugins.inherit import without_overridden
+from ..plugins.inherit import without_other_classes, without_overridden
 from ..workspace import Workspace
 
 if TYPE_CHECKING:
@@ -85,7 +85,8 @@ def extract_nodes(nodes: Sequence[Node], workspace: Workspace, *,
                                   compile_commands=compile_commands, meanwhile=other_nodes,
                                   distro=distro)
         for node, result in zip(cpp, batch.results, strict=True):
-            node.calls = without_overridden(node, result.calls, workspace)
+            node.calls = without_other_classes(
+                node, without_overridden(node, result.calls, workspace), workspace)
             node.rosname = _rosname(node, result.rosname)
             _process_nodes(node, result.rosnames)
         if cpp_batch is not None:
@@ -304,7 +305,8 @@ def extract_node(node: Node, workspace: Workspace) -> list[Diagnostic]:
         from .cpp import extract_cpp  # libclang loads only when there is C++ to parse
 
         result = extract_cpp(sources, workspace)
-        node.calls = without_overridden(node, result.calls, workspace)
+        node.calls = without_other_classes(
+                node, without_overridden(node, result.calls, workspace), workspace)
         node.rosname = _rosname(node, result.rosname)
         _process_nodes(node, result.rosnames)
         said = _read_elsewhere(result.diagnostics, [node], [result], workspace)

@@ -32,7 +32,7 @@ from ..model.runtime import (
 from ..model.source import NUMBERED, Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK, Unknown
 from ..models import rviz
-from ..plugins.attach import PluginModels, class_packages
+from ..plugins.attach import PluginModels, chains, class_packages
 from ..plugins.attach import attach as attach_plugins
 from ..plugins.transports import Transports
 from ..robot.attach import attach as attach_descriptions
@@ -113,6 +113,9 @@ def remaps_in_args(args: str) -> list[tuple[str, str]]:
     return pairs
 
 
+CHAIN_DEPTH = 4  # filter chains configured by the filters of a chain, and so on
+
+
 def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
           nodes: Mapping[str, Node], plugin_models: PluginModels | None = None,
           ) -> Configuration:
@@ -162,7 +165,19 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
                               workspace, plugin_models)
     for instance, calls in attached:
         _link_calls(instance, calls, resources, config, transports)
-    _drop_base_copies(config, attached)
+    # then the classes any instance's own code loads by a parameter's value (filters'
+    # chains), controllers and plugins made above included, and the chains those
+    # classes configure in turn (a few levels)
+    chained: list[tuple[NodeInstance, list[PrimitiveCall]]] = []
+    done: set[tuple[int, str]] = set()
+    for _ in range(CHAIN_DEPTH):
+        more = chains(config, nodes, resources, workspace, plugin_models, done)
+        for instance, calls in more:
+            _link_calls(instance, calls, resources, config, transports)
+        chained += more
+        if not more:
+            break
+    _drop_base_copies(config, [*attached, *chained])
     config.diagnostics.extend(_foreign_sections(launch, config))
     for action, call, name in action_links(config):
         link(action.node, call, {}, resources, config, name)

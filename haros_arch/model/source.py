@@ -188,6 +188,12 @@ class PrimitiveCall:
     # takes the name from that parameter (``extract.cpp._members_named``)
     name_member: str | None = field(default=None, metadata={"optional": True})
     stores: str | None = field(default=None, metadata={"optional": True})
+    # the parameter this call reads or declares names the plugin classes the code loads
+    # by pluginlib, of the export tag / base class given (``plugins.hosts.CHAINS``): a
+    # filters FilterChain's ``configure`` (ROS 1 its list of {name, type, params}, ROS 2
+    # ``<prefix>filter1.type``, then filter2, ...); the graph gives the instance the calls
+    # of the classes its parameters name (``plugins.attach.chains``)
+    loads: str | None = field(default=None, metadata={"optional": True})
 
 
 def declared_defaults(calls: list[PrimitiveCall]) -> list[PrimitiveCall]:

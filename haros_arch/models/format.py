@@ -54,7 +54,7 @@ SCHEMA = f"haros-arch-model/{SCHEMA_VERSION}"
 SCHEMA_PREFIX = "haros-arch-model/"
 _TEXT_FIELDS = ("type", "name_param", "name_default", "name_each", "handle_namespace",
                 "node_name", "callback", "transport", "variable", "default_param",
-                "host_named")
+                "host_named", "loads")
 
 
 class ModelFileError(ValueError):

@@ -57,6 +57,7 @@ from ..share import share_source
 from ..workspace import Workspace
 from . import behavior_trees
 from .hosts import (
+    CHAINS,
     EXPORTED,
     EXTENDS,
     LOOKUP_PACKAGES,
@@ -163,7 +164,7 @@ def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance
 def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str, Node],
           workspace: Workspace, models: PluginModels | None, params: Params,
           config: Configuration, owned: set[int], made: dict[int, set[tuple[Any, ...]]],
-          loaded: set[tuple[int, str]], decl: NodeDecl,
+          loaded: set[tuple[int, str]], decl: NodeDecl | None,
           ) -> list[tuple[NodeInstance, list[PrimitiveCall]]]:
     """The calls one chosen plugin adds: to the host, or to a node of its own."""
     out: list[tuple[NodeInstance, list[PrimitiveCall]]] = []
@@ -183,7 +184,8 @@ def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str
         _missing(config, instance, choice, owned)
     elif slot.placement == "node":
         reader = _plugin_instance(instance, choice, node, config)
-        if slot.names == EXPORTED:  # a node the process makes: its files apply by name
+        if slot.names == EXPORTED and decl is not None:  # a node the process makes: its
+            # files apply by name
             _process_params(decl, reader, params)
         _unhosted(reader, owned)  # a controller that loads plugins of its own
         out.append((reader, _not_hosts(node.calls, instance)))
@@ -465,7 +467,12 @@ def _unseen_choice(instance: NodeInstance, slot: Slot, params: Params) -> str | 
     written = slot.type_of if slot.names is None else slot.names
     if not written or "{" in written:
         return None
-    name = base + written
+    return _may_be_set(base + written, params)
+
+
+def _may_be_set(name: str, params: Params) -> str | None:
+    """Why the plugins the parameter ``name`` names are not known, when it is not set
+    as far as we see but a launch parameter not known statically may be it; else None."""
     if _parameter(params, name) is not None:
         return None
     for (kind, full), each in params.by_name.items():
@@ -475,13 +482,17 @@ def _unseen_choice(instance: NodeInstance, slot: Slot, params: Params) -> str | 
             where = each.launch_location
             return (f"{name}, which names the plugins it loads, may be set by the launch "
                     f"parameter {full} not known statically ({where.file}:{where.line}): "
-                    "they may be others than the defaults")
+                    "they may be others than those seen (its defaults, or none)")
     return None
 
 
-def _chosen(instance: NodeInstance, slot: Slot, params: Params) -> Iterator[Choice]:
-    """The plugins a host slot names, from the instance's parameters or the defaults."""
-    base = instance.name.rstrip("/") + "/"
+def _chosen(instance: NodeInstance, slot: Slot, params: Params,
+            base: str | None = None) -> Iterator[Choice]:
+    """The plugins a host slot names, from the instance's parameters or the defaults;
+    ``base`` is put before the slot's parameter names (the instance's private
+    namespace unless given)."""
+    if base is None:
+        base = instance.name.rstrip("/") + "/"
     if slot.names is None:
         assert slot.type_of is not None
         given = _parameter(params, base + slot.type_of)
@@ -589,6 +600,102 @@ def _pre_hydro(instance: NodeInstance, slot: Slot, params: Params) -> Iterator[C
 
 def _text(value: Any) -> str | None:
     return value if isinstance(value, str) and value else None
+
+
+# -- plugins a node's own code loads by a parameter (filters' FilterChain) ----------------
+
+
+MAX_CHAIN = 100  # ROS 2 filters of one chain (filter1, filter2, ...)
+
+
+def chains(config: Configuration, nodes: Mapping[str, Node], params: Params,
+           workspace: Workspace, models: PluginModels | None = None,
+           done: set[tuple[int, str]] | None = None,
+           ) -> list[tuple[NodeInstance, list[PrimitiveCall]]]:
+    """The calls of the classes that node instances' own code loads by the value of a
+    parameter it names (a linked call marked ``loads``, ``hosts.CHAINS``: filters'
+    FilterChain), as a host's slot loads them: ROS 1 the list that parameter holds, of
+    ``{name, type, params}`` entries (as move_base's ``recovery_behaviors``), each
+    filter's calls made with its ``name``; ROS 2 ``<prefix>filterN.type`` and ``.name``
+    from 1 up to the first not set, each filter's calls with ``<prefix>filterN.params``
+    (its ``getParam`` declares below it), plus the declarations and reads of the names
+    and types the chain looks for. A chain not set loads nothing (the libraries take it
+    as empty), unless a launch parameter not known statically may set it: then the
+    instance is partial. A class not set or found is ``PLUGIN_CLASS_UNKNOWN`` /
+    ``PLUGIN_NOT_FOUND`` and the instance partial, as for a host. ``done``: the chains
+    (instance, parameter) an earlier call attached, not attached again (a filter's own
+    chain, laser_filters' LaserArrayFilter's, is linked after the call that loads that
+    filter)."""
+    index = plugin_index(nodes)
+    owned: set[int] = set()
+    made: dict[int, set[tuple[Any, ...]]] = {}
+    loaded: set[tuple[int, str]] = set()
+    out: list[tuple[NodeInstance, list[PrimitiveCall]]] = []
+    done = set() if done is None else done
+    for instance in list(config.nodes):
+        for each in list(instance.links):
+            call = each.call
+            if call is None or call.loads not in CHAINS or call.kind not in (
+                    "read", "declare"):
+                continue
+            full = each.resource.name
+            if (id(instance), full) in done:
+                continue
+            done.add((id(instance), full))
+            if UNKNOWN_MARK in full:  # a chain named at run time: its classes unknown
+                where = call.location
+                own_partial(instance, f"{where.file}:{where.line}: loads the plugin classes "
+                            f"the parameters {full} name, whose name is not known "
+                            "statically", owned)
+                continue
+            slot = Slot(full, None, (call.loads,))
+            if instance.ros_version == 2:
+                choices, calls = _numbered_filters(instance, call, full, params, owned)
+                if calls:
+                    out.append((instance, calls))
+            else:
+                unseen = _may_be_set(full, params)
+                if unseen is not None:
+                    own_partial(instance, unseen, owned)
+                choices = [replace(c, reads=(), conditions=(*call.conditions, *c.conditions))
+                           for c in _chosen(instance, slot, params, base="")]
+            for choice in choices:
+                out.extend(_load(choice, slot, instance, index, workspace, models, params,
+                                 config, owned, made, loaded, None))
+    return out
+
+
+def _numbered_filters(instance: NodeInstance, call: PrimitiveCall, full: str,
+                      params: Params, owned: set[int],
+                      ) -> tuple[list[Choice], list[PrimitiveCall]]:
+    """ROS 2 filters' chain (filter_chain.hpp, ``load_chain_config``): the filters its
+    ``<prefix>filterN.name`` / ``.type`` parameters give, N from 1 until neither is set,
+    and the declarations and reads of filter2 on (the code's call makes filter1's)."""
+    prefix = full[:-len("filter1.type")] if full.endswith("filter1.type") else None
+    own = instance.name.rstrip("/") + "/"
+    if prefix is None or not prefix.startswith(own):
+        return [], []
+    unseen = _may_be_set(full, params)
+    if unseen is not None:
+        own_partial(instance, unseen, owned)
+    relative = prefix[len(own):]
+    choices: list[Choice] = []
+    calls: list[PrimitiveCall] = []
+    for number in range(1, MAX_CHAIN + 1):
+        keys = [f"filter{number}.{field}" for field in ("type", "name")]
+        if number > 1:
+            calls.extend(replace(call, kind=kind, name=relative + key, loads=None,
+                                 has_default=True, origin="plugin")
+                         for key in keys for kind in ("declare", "read"))
+        typed, named = (_parameter(params, prefix + key) for key in keys)
+        if typed is None and named is None:
+            break
+        given = typed or named
+        assert given is not None
+        choices.append(Choice(
+            f"{relative}filter{number}.params", _text(typed.value) if typed else None,
+            given.launch_location, (*call.conditions, *given.launch_conditions)))
+    return choices, calls
 
 
 # -- ros2_control -----------------------------------------------------------------------

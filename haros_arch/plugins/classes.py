@@ -166,12 +166,29 @@ def plugin_classes(package: Package, workspace: Files, libraries: Mapping[str, L
 
 
 _PROLOGUE = re.compile(rb"^(\xef\xbb\xbf)?\s*(<\?xml[^>]*\?>)?")
+# a comment, or a tag with its quoted attribute values (which may hold ``<`` and ``>``)
+_TAG = re.compile(rb"<!--.*?-->|<(?![!?])(?:\"[^\"]*\"|'[^']*'|[^'\">])*>", re.DOTALL)
+_QUOTED = re.compile(rb"\"[^\"]*\"|'[^']*'")
+
+
+def _escaped_attributes(data: bytes) -> bytes:
+    """``data`` with ``<`` and ``>`` inside attribute values escaped: TinyXML, which
+    pluginlib reads descriptions with, takes them as written, and filters' plugins
+    write their base class so (``base_class_type="filters::FilterBase<T>"``)."""
+    def tag(match: re.Match[bytes]) -> bytes:
+        text = match.group(0)
+        if text.startswith(b"<!--"):
+            return text
+        return text[:1] + _QUOTED.sub(lambda quoted: quoted.group(0).replace(
+            b"<", b"&lt;").replace(b">", b"&gt;"), text[1:])
+    return _TAG.sub(tag, data)
 
 
 def _read_description(path: str, workspace: Files,
                       found: list[Diagnostic]) -> list[etree._Element]:
     """The top-level elements of a plugin description: one, or several where the file
-    has more than one root (not well-formed XML, but pluginlib's TinyXML reads it)."""
+    has more than one root (not well-formed XML, but pluginlib's TinyXML reads it, as it
+    reads ``<`` in an attribute's value)."""
     data, problems = read_bytes(path, workspace.location(path))
     found.extend(problems)
     if data is None:
@@ -180,6 +197,12 @@ def _read_description(path: str, workspace: Files,
         return [etree.fromstring(data, xml_parser())]
     except etree.XMLSyntaxError as err:
         error = err
+    if "Unescaped '<' not allowed in attributes values" in error.msg:
+        data = _escaped_attributes(data)
+        try:
+            return [etree.fromstring(data, xml_parser())]
+        except etree.XMLSyntaxError as err:
+            error = err
     if "Extra content at the end of the document" in error.msg:
         # the same bytes inside one wrapper element; the XML declaration, allowed only
         # at the very start, becomes blanks so lines and columns stay as they were

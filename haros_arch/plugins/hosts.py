@@ -305,6 +305,16 @@ def host_of(package: str, executable: str, ros_version: int) -> Host | None:
 ROS1_CONTROLLER_BASES = ("controller_interface", "controller_interface::ControllerBase")
 
 
+# classes that any node's own code loads by the value of a parameter its code names (a
+# call marked ``PrimitiveCall.loads`` with one of these export tags: the ROS package
+# filters' FilterChain, whose filters are ``<filters plugin=...>`` exports of base
+# filters::FilterBase<T>), attached by ``attach.chains`` wherever such a node runs: a
+# filter's calls go to the node, its name put where its code builds names from it
+# (ROS 1 ``NodeHandle("~" + getName())``; ROS 2 its parameters, below
+# ``<prefix>filterN.params``)
+CHAINS: tuple[str, ...] = ("filters",)
+
+
 def node_name_patterns() -> dict[str, str]:
     """Base class (or export tag) → the pattern that finds a plugin node's name in its
     class's sources, for the hosts whose plugins are nodes named by their code."""
@@ -314,7 +324,7 @@ def node_name_patterns() -> dict[str, str]:
 
 def plugin_bases() -> frozenset[str]:
     """Export tags and base classes of every class some host loads."""
-    return frozenset((*ROS1_CONTROLLER_BASES, *(
+    return frozenset((*ROS1_CONTROLLER_BASES, *CHAINS, *(
         base for host in HOSTS for slot in host.slots for base in slot.bases)))
 
 

@@ -21,6 +21,7 @@ import os
 import re
 from collections.abc import Callable, Iterable, Sequence
 
+from ..files import read_text
 from ..model.source import Node, PrimitiveCall
 from .classes import (
     _MEMBER,
@@ -193,6 +194,87 @@ def without_overridden(node: Node, calls: list[PrimitiveCall],
         return calls
     return [c for c in calls if not any(
         c.location.file == f and first <= c.location.line <= end for f, first, end in spans)]
+
+
+def without_other_classes(node: Node, calls: list[PrimitiveCall],
+                          workspace: Files) -> list[PrimitiveCall]:
+    """A plugin's (or nodelet's) ``calls`` but those made in a file of the workspace
+    that defines other classes its sources export (a class body, or members out of
+    line) and not its own, unless the definition of its own class names one of them (a
+    base, a member; its code, not its comments): a library whose one file exports many
+    classes that headers or other files of it define (laser_filters'
+    ``laser_scan_filters.cpp``, ROS 1 and 2: its filters) gave every class's node all of
+    their calls. Unchanged when its class's definition is not found in its sources or
+    the headers they include."""
+    if node.kind not in ("plugin", "nodelet") or not node.plugin_class:
+        return calls
+    own = _short(node.plugin_class)
+    exported = {_short(name) for source in node.sources for name, _ in exported_classes(
+        os.path.join(workspace.root, source), workspace)}
+    others = exported - {own}
+    if not others:
+        return calls
+    own_text = next((found for source in node.sources
+                     for text in with_headers(source, workspace)
+                     if (found := _class_text(code_only(text), own)) is not None), None)
+    if own_text is None:
+        return calls
+    named = {other for other in others if re.search(rf"\b{re.escape(other)}\b", own_text)}
+    foreign: dict[str, bool] = {}
+
+    def other_code(file: str | None) -> bool:
+        if not file:
+            return False
+        if file not in foreign:
+            path = os.path.join(workspace.root, file)
+            text = read_text(path, workspace.location(file))[0] or ""
+            # the classes the file defines: in a body, or members out of line
+            defined = {cls for cls in (*others, own)
+                       if _has_class(text, cls) or _has_members(text, cls)}
+            foreign[file] = bool(defined & others) and own not in defined and not (
+                defined & named)
+        return foreign[file]
+
+    return [c for c in calls if not other_code(c.location.file)]
+
+
+def _short(cls: str) -> str:
+    """A class's own name: ``laser_filters::LaserArrayFilter<T>`` is ``LaserArrayFilter``."""
+    return _untemplated(cls.strip()).rsplit("::", 1)[-1]
+
+
+def _class_head(cls: str) -> re.Pattern[str]:
+    return re.compile(r"\b(?:class|struct)\s+(?:\w+\s+)*?" + re.escape(cls) + r"\b[^;{]*\{")
+
+
+def _has_class(text: str, cls: str) -> bool:
+    """Whether ``text`` holds a definition of the class named ``cls`` (a body, not a
+    declaration)."""
+    return _class_head(cls).search(text) is not None
+
+
+def _has_members(text: str, cls: str) -> bool:
+    """Whether ``text`` defines a member of the class named ``cls`` out of line
+    (``bool ns::Cls::configure() {``, a namespace before it or not)."""
+    return re.search(r"\b" + re.escape(cls) + r"\s*(?:<[^;{}()]*>)?\s*::\s*~?\w+\s*"
+                     r"\([^;{}]*\)[^;{}()]*\{", text) is not None
+
+
+def _class_text(text: str, cls: str) -> str | None:
+    """The definition of the class ``cls`` in ``text`` (its head, bases and body, up to
+    the brace that closes it), if ``text`` has one."""
+    match = _class_head(cls).search(text)
+    if match is None:
+        return None
+    depth, end = 1, match.end()
+    limit = min(len(text), end + MAX_CLASS_BODY)
+    while depth and end < limit:
+        if text[end] == "{":
+            depth += 1
+        elif text[end] == "}":
+            depth -= 1
+        end += 1
+    return text[match.start():end]
 
 
 def _bases(cls: str, texts: list[str]) -> list[str]:

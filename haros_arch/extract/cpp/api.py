@@ -132,6 +132,16 @@ class RosFunction:
     # in the workspace its own code is read; ros2_control's is a node of its own;
     # rclcpp_components' ComponentManager)
     standin_only: bool = False
+    # ROS 1's library makes no ROS call here, ROS 2's makes the call the row says (filters'
+    # FilterBase::getParam: ROS 1 reads the filter's own ``params`` entry)
+    ros2_only: bool = False
+    # ``name_suffix`` is put after the name argument as a ROS 2 parameter prefix is
+    # normalised (filters' ``normalize_param_prefix``): a ``.`` between them unless the
+    # prefix is empty or ends with one
+    prefix_normalised: bool = False
+    # the parameter read or declared names plugin classes the call loads by pluginlib,
+    # of this export tag (``PrimitiveCall.loads``)
+    loads: str | None = None
 
 
 NODE_HANDLE = "ros::NodeHandle"
@@ -560,6 +570,42 @@ NAV2: dict[tuple[str, str], RosFunction] = {
         "action-server", type_from=("class",), on_handle=False, name_arg=1,
         name_candidates=(1, 4), standin_only=True) for scope in ("nav2_util", "nav2")},
 }
+# the ROS package filters (noetic-devel, ros2), as its stand-in (``standin/fallback``:
+# installed, not in the workspace) describes it. FilterChain<T>::configure loads the
+# filter classes (pluginlib, export tag ``filters``, base filters::FilterBase<T>) its
+# parameters name: ROS 1 ``configure(name, nh = NodeHandle())`` reads the list ``name``
+# ({name, type, params} entries) on the handle given, by default in the node's namespace
+# (each filter reads its ``params`` from its entry: no ROS call; not set, the chain is
+# empty: a read with the library's default); ROS 2
+# ``configure(prefix, logging, parameters)`` declares and reads ``<prefix>.filter1.name``
+# and ``.type``, then filter2, ... up to the first not set, and a filter's
+# ``getParam(name, value)`` declares ``<prefix>.filterN.params.<name>`` with its type's
+# default (``?.`` until the chain names the filter). MultiChannelFilterChain's take the
+# number of channels first.
+FILTERS_TAG = "filters"
+
+
+def _filter_chain(name_arg: int) -> RosFunction:
+    return RosFunction(
+        "read", name_arg=name_arg, on_handle=False, handle_arg=name_arg + 1,
+        name_required=True, library_default=True, standin_only=True, call_site=False,
+        loads=FILTERS_TAG, ros2=RosFunction(
+            "declare", name_arg=name_arg, on_handle=False, name_suffix="filter1.type",
+            suffix_appended=True, prefix_normalised=True, fixed_type="str",
+            name_required=True, library_default=True, standin_only=True, call_site=False,
+            loads=FILTERS_TAG,
+            siblings=(
+                ("read", "filter1.type", "str"), ("declare", "filter1.name", "str"),
+                ("read", "filter1.name", "str"))))
+
+
+FILTERS: dict[tuple[str, str], RosFunction] = {
+    ("filters::FilterChain", "configure"): _filter_chain(0),
+    ("filters::MultiChannelFilterChain", "configure"): _filter_chain(1),
+    ("filters::FilterBase", "getParam"): RosFunction(
+        "declare", type_from=("value",), type_arg=1, out_arg=1, on_handle=False,
+        name_prefix="?.", library_default=True, standin_only=True, ros2_only=True),
+}
 # a node's parameters interface (node->get_node_parameters_interface()) has the same
 # parameter methods: slam_toolbox keeps one and declares through it
 RCLCPP_PARAMETERS_INTERFACE = "rclcpp::node_interfaces::NodeParametersInterface"
@@ -648,7 +694,7 @@ ROS1_ONLY = frozenset({"ros", "tf", "actionlib", "nodelet", "nodelet_topic_tools
                        "dynamic_reconfigure"})
 ALL: dict[tuple[str, str], RosFunction] = {**ROSCPP, **LIBRARIES, **RCLCPP,
                                             **RCLCPP_LIBRARIES, **ROS2_CONTROL, **AUTOWARE,
-                                            **NAV2}
+                                            **NAV2, **FILTERS}
 
 # ``nh.subscribe(ops)`` / ``nh.advertise(ops)`` / ``nh.advertiseService(ops)``: the call is
 # made there (its handle, location and conditions), with the name, queue and type of the

@@ -87,6 +87,8 @@ FALLBACK = os.path.join(STANDIN, "fallback")
 FALLBACK_UMBRELLAS = {"pcl/": "pcl/haros_pcl.h",
                       "pcl_conversions/": "pcl_conversions/pcl_conversions.h",
                       "pcl_ros/": "pcl_ros/haros_pcl_ros.h",
+                      # the ROS package filters (its chains and filter bases)
+                      "filters/": "filters/filter_chain.h",
                       # navigation2's libraries, for its plugins outside navigation2
                       **{f"{p}/": f"{p}/haros_{p}.h" for p in (
                           "nav2_util", "nav2_ros_common", "nav2_core", "nav2_costmap_2d")}}

@@ -5,7 +5,9 @@ condition, is handled when the parameter is absent (``PrimitiveCall.tested``). T
 visitor shows this class every node of a function on its way down (parents before
 children); it records the calls in a condition: of an ``if``, ``while`` or ``do``, of
 ``?:``, an operand of ``!``, ``&&`` or ``||``, and a ``bool`` variable initialised or
-assigned from a call that is then one of those (``bool ok = nh.getParam(..); if (!ok)``).
+assigned from a call that is then one of those (``bool ok = nh.getParam(..); if (!ok)``),
+a member too, tested in the same function (laser_filters' ``using_filter_chain_deprecated_ =
+private_nh_.hasParam("filter_chain"); if (using_filter_chain_deprecated_)``).
 """
 
 from __future__ import annotations
@@ -83,7 +85,8 @@ class TestedCalls:
 
     def _hold(self, variable: Cursor | None, value: Cursor) -> None:
         call = _unwrap(value)
-        if variable is None or call is None or variable.kind != CursorKind.VAR_DECL:
+        if variable is None or call is None or variable.kind not in (
+                CursorKind.VAR_DECL, CursorKind.FIELD_DECL):
             return
         held, made = key(variable), key(call)
         if held is not None and made is not None:
@@ -120,7 +123,7 @@ class TestedCalls:
         call = _unwrap(expr)
         if call is None:
             return
-        if call.kind == CursorKind.DECL_REF_EXPR:
+        if call.kind in (CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR):
             variable = call.referenced
             held = key(variable) if variable is not None else None
             if held is not None and held in self._results:
@@ -136,7 +139,8 @@ def _unwrap(expr: Cursor) -> Cursor | None:
     parentheses and a comparison with ``true`` / ``false`` (kobuki's
     ``if (nh.getParam(..) == true)``)."""
     for _ in range(8):
-        if expr.kind in (CursorKind.CALL_EXPR, CursorKind.DECL_REF_EXPR):
+        if expr.kind in (CursorKind.CALL_EXPR, CursorKind.DECL_REF_EXPR,
+                         CursorKind.MEMBER_REF_EXPR):
             return expr
         if expr.kind == CursorKind.BINARY_OPERATOR:
             sides = list(expr.get_children())

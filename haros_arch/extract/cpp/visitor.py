@@ -546,6 +546,8 @@ class CallFinder:
         row of our stand-in only (``standin_only``) where the function is the stand-in's
         (with navigation2's sources in the workspace, its own code is read)."""
         spec, cls = self._any_row(call)
+        if spec is not None and spec.ros2_only and not self.ros2:
+            return None, None  # ROS 1's library makes no ROS call there
         if spec is not None and spec.standin_only and not from_standin(
                 cls if cls is not None and cls.kind != CursorKind.NO_DECL_FOUND
                 else call.referenced):
@@ -1134,10 +1136,12 @@ class CallFinder:
             names = [(spec.fixed_name, None)]
         else:
             name_expr = arg(spec.name_arg)
-            if spec.name_suffix is not None and name_expr is not None and (
-                msg_types.param_type(name_expr.type) != "str"
+            if (spec.name_suffix is not None or spec.name_required) and (
+                name_expr is not None and msg_types.param_type(name_expr.type) != "str"
             ):
-                name_expr = None  # SyncParametersClient(node, qos): no remote, the node
+                # SyncParametersClient(node, qos): no remote, the node; filters'
+                # FilterChain::configure(XmlRpcValue&, ns): a chain given, not read
+                name_expr = None
             for index in spec.name_candidates:
                 if index < len(args) and msg_types.param_type(args[index].type) == "str":
                     name_expr = args[index]
@@ -1157,7 +1161,7 @@ class CallFinder:
                 if not names:
                     return
             if spec.name_suffix is not None:  # a parameter client: the remote's services
-                names = [(name + spec.name_suffix if spec.suffix_appended
+                names = [(_prefixed(name, spec) + spec.name_suffix if spec.suffix_appended
                           else join_name(name or "~", spec.name_suffix), source)
                          for name, source in names]
         owner = self._owner
@@ -1267,7 +1271,8 @@ class CallFinder:
                 deletes=spec.deletes, node_name=owner, transport=transport,
                 made_in=made_in, program_arg=program_arg,
                 name_arg=written.program_arg if isinstance(written, ArgumentName) and (
-                    name.count("?") == 1) else None, name_member=name_member))
+                    name.count("?") == 1) else None, name_member=name_member,
+                loads=spec.loads))
             if status is not None:
                 self._status_reads.append((status, self.calls[-1]))
             member = self._member(spec, call, shift) if len(names) == 1 else None
@@ -2178,6 +2183,14 @@ def _known(parts: tuple[str | None, ...]) -> bool:
     """A value with no unknown part and no placeholder for what other calls pass."""
     return all(part is not None and PLACEHOLDER not in part and not isinstance(part, NodeName)
                for part in parts)
+
+
+def _prefixed(name: str, spec: api.RosFunction) -> str:
+    """A name argument as the prefix ``spec.name_suffix`` is appended to: as written, or
+    (``prefix_normalised``) with a ``.`` after it unless empty or ending with one."""
+    if spec.prefix_normalised and name and not name.endswith("."):
+        return name + "."
+    return name
 
 
 def _private(name: str) -> str:
