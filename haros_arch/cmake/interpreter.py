@@ -28,7 +28,7 @@ from .commands import HANDLERS, IGNORED, unknown_command
 from .conditions import Evaluator
 from .lexer import Argument, Invocation
 from .listops import split_list
-from .targets import Install, Program, Registration, Target
+from .targets import CompileDefinition, Install, Program, Registration, Target
 
 _VAR_REF = re.compile(r"\$(ENV|CACHE)?\{([^${}]*)\}")
 MAX_STEPS = 50_000  # commands and if / elseif tests; real packages take under 1,000
@@ -97,6 +97,9 @@ class Interpreter:
         # generate_parameter_library: (target, absolute path of its YAML, PROJECT_NAME)
         self.parameter_libraries: list[tuple[str, str, str]] = []
         self.definitions: dict[str, Definition] = {}
+        # the compile definitions of each directory being read, innermost last: a
+        # subdirectory starts with a copy of its parent's (``Target.directory_definitions``)
+        self.compile_definitions: list[list[CompileDefinition]] = [[]]
         self.conditions: list[Condition] = []  # enclosing if / while not decided
         self.returns: list[Condition] = []  # return() under a condition not decided
         # ExternalProject_Add of the package's own folder with cache entries (a
@@ -198,6 +201,25 @@ class Interpreter:
             if len(text) > 1_000_000:
                 break
         return text
+
+    def unknown_reference(self, text: str) -> bool:
+        """Whether expanding ``text`` reads a variable, environment setting or cache entry
+        that is not set here (its value is then not known, not empty)."""
+        if "$" not in text:
+            return False
+        for _ in range(1000):
+            match = _VAR_REF.search(text)
+            if not match:
+                return False
+            kind, name = match.group(1), match.group(2)
+            value = (self.environment.get(name) if kind == "ENV" else
+                     self.cache.get(name) if kind == "CACHE" else self.get(name))
+            if value is None:
+                return True
+            text = text[:match.start()] + value + text[match.end():]
+            if len(text) > 1_000_000:
+                break
+        return True
 
     def arguments(self, args: tuple[Argument, ...]) -> list[str]:
         """Expand references; unquoted arguments split on ';' as CMake does."""
@@ -526,6 +548,7 @@ class Interpreter:
             self.limit(command, f"add_subdirectory() nested deeper than {MAX_DEPTH}")
             return
         self.scopes.append(dict(self.scopes[-1]))
+        self.compile_definitions.append(list(self.compile_definitions[-1]))
         self._enter_directory(folder)
         self.depth += 1
         frame = len(self.returns)
@@ -537,6 +560,7 @@ class Interpreter:
             self.depth -= 1
             del self.returns[frame:]
             self.scopes.pop()
+            self.compile_definitions.pop()
 
 
 def _substitute(command: Invocation, values: Mapping[str, str]) -> Invocation:
