@@ -168,3 +168,39 @@ def test_a_compile_commands_json_gives_the_flags_instead(write_tree) -> None:
     talker = next(n for p in model.packages for n in p.nodes if n.executable == "talker")
     # the build's own flags only: no USE_FAST, LATE; UNKNOWN_TOPIC not defined at all
     assert sorted(c.name for c in talker.calls if c.kind == "publish") == ["?", "given", "x"]
+
+
+UNSURE = r"""
+cmake_minimum_required(VERSION 3.8)
+project(unsure)
+if("${tf2_geometry_msgs_VERSION}" VERSION_GREATER "0.12.0")
+  set(USE_NEW 1)
+else()
+  set(USE_NEW 0)
+endif()
+set(GIT_VERSION ${GIT_VERSION_OUT})
+string(REPLACE "v" "" CLEAN_VERSION "${GIT_VERSION}")
+if("$ENV{HAROS_TEST_UNSET_DISTRO}" STRLESS "humble")
+  add_definitions(-DPRE_HUMBLE)
+endif()
+set(KNOWN 3)
+add_executable(n src/n.cpp)
+target_compile_definitions(n PRIVATE USE_NEW=${USE_NEW} VERSION="${CLEAN_VERSION}"
+                           KNOWN=${KNOWN})
+"""
+
+
+def test_values_decided_on_what_is_not_known_are_unknown(write_tree) -> None:
+    """A variable set in a branch an if() chose on an unset variable (marti's
+    ``USE_NEW_TF2_TOMSG``), or from one (microstrain's git version, read by
+    execute_process), gives an unknown value, not 0 or ""; a definition under such a test
+    (rtabmap's ``if("$ENV{ROS_DISTRO}" STRLESS "humble")``) is not applied."""
+    root = write_tree({
+        "src/unsure/package.xml": package_xml("unsure", "ament_cmake"),
+        "src/unsure/CMakeLists.txt": UNSURE,
+        "src/unsure/src/n.cpp": "int main() { return 0; }\n",
+    })
+    ws = scan([str(root / "src")])
+    assert cmake_flags(str(root / "src/unsure/src/n.cpp"), ws) == [
+        "-DUSE_NEW=(haros_cmake_value_unknown_USE_NEW)",
+        "-DVERSION=(haros_cmake_value_unknown_VERSION)", "-DKNOWN=3"]

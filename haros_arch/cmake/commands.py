@@ -442,7 +442,8 @@ def _definitions(it: Interpreter, command: Invocation, raw: tuple[Argument, ...]
     with that value unknown."""
     found: list[tuple[str, CompileDefinition]] = []
     keyword = "PRIVATE"
-    conditions = it.current_conditions()
+    # (a test decided on what is not known may have chosen wrongly: as not decided)
+    conditions = (*it.current_conditions(), *it.unsure_tests)
     for arg in raw:
         unknown = arg.kind != "bracket" and it.unknown_reference(arg.text)
         written = arg.text.strip()
