@@ -184,7 +184,9 @@ if("$ENV{HAROS_TEST_UNSET_DISTRO}" STRLESS "humble")
   add_definitions(-DPRE_HUMBLE)
 endif()
 set(KNOWN 3)
+add_definitions(-DREMOVED -DKEPT)
 add_executable(n src/n.cpp)
+remove_definitions(-DREMOVED)
 target_compile_definitions(n PRIVATE USE_NEW=${USE_NEW} VERSION="${CLEAN_VERSION}"
                            KNOWN=${KNOWN})
 """
@@ -194,7 +196,8 @@ def test_values_decided_on_what_is_not_known_are_unknown(write_tree) -> None:
     """A variable set in a branch an if() chose on an unset variable (marti's
     ``USE_NEW_TF2_TOMSG``), or from one (microstrain's git version, read by
     execute_process), gives an unknown value, not 0 or ""; a definition under such a test
-    (rtabmap's ``if("$ENV{ROS_DISTRO}" STRLESS "humble")``) is not applied."""
+    (rtabmap's ``if("$ENV{ROS_DISTRO}" STRLESS "humble")``) is not applied; one
+    ``remove_definitions`` takes out is not either."""
     root = write_tree({
         "src/unsure/package.xml": package_xml("unsure", "ament_cmake"),
         "src/unsure/CMakeLists.txt": UNSURE,
@@ -202,5 +205,5 @@ def test_values_decided_on_what_is_not_known_are_unknown(write_tree) -> None:
     })
     ws = scan([str(root / "src")])
     assert cmake_flags(str(root / "src/unsure/src/n.cpp"), ws) == [
-        "-DUSE_NEW=(haros_cmake_value_unknown_USE_NEW)",
+        "-DKEPT", "-DUSE_NEW=(haros_cmake_value_unknown_USE_NEW)",
         "-DVERSION=(haros_cmake_value_unknown_VERSION)", "-DKNOWN=3"]

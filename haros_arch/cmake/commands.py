@@ -417,6 +417,15 @@ def _add_definitions(it: Interpreter, command: Invocation, args: list[str]) -> N
         it.compile_definitions[-1].append(found)
 
 
+@handles("remove_definitions")
+def _remove_definitions(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    """Takes the directory's ``-D`` definitions of those names out (for every target of
+    the directory, as the directory's property is read once it is all read)."""
+    names = {each.name for _, each in _definitions(it, command, command.args, "-D")}
+    it.compile_definitions[-1][:] = [d for d in it.compile_definitions[-1]
+                                     if d.name not in names]
+
+
 @handles("add_compile_definitions")
 def _add_compile_definitions(it: Interpreter, command: Invocation, args: list[str]) -> None:
     for _, found in _definitions(it, command, command.args, ""):
