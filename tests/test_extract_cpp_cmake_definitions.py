@@ -8,9 +8,9 @@ the targets they belong to, where no compile_commands.json gives the flags
   PRIVATE and PUBLIC, the targets that link t for PUBLIC and INTERFACE;
 - a value as the compiler gets it (``TOPIC="${topic_name}"``, a quoted argument's
   escapes); one that reads a variable never set is defined, its value unknown (``?``),
-  not empty; one under an ``if()`` that is not decided is not applied, and a block under
-  it is still said (``CPP_BUILD_MACRO``), but a macro defined only for other targets is
-  known absent and not said.
+  not empty, and a block whose ``#if`` tests that value is said (``CPP_BUILD_MACRO``);
+- one under an ``if()`` that is not decided is not applied, and a block under it is
+  still said, but a macro defined only for other targets is known absent and not said.
 depthai_examples names its network file ``BLOB_NAME``, a ``target_compile_definitions``
 per node; livox_ros_driver2 chooses its ROS 2 code with ``add_definitions``.
 """
@@ -36,7 +36,7 @@ add_definitions(-DUSE_FAST -Wall)
 add_compile_definitions(PREFIX="robot/" "QUOTED=\"q/\"")
 add_executable(talker src/talker.cpp)
 target_compile_definitions(talker PRIVATE TOPIC="${topic_name}"
-                           UNKNOWN_TOPIC="${NOT_SET_ANYWHERE}")
+                           UNKNOWN_TOPIC="${NOT_SET_ANYWHERE}" LEVEL=${NOT_SET_LEVEL})
 add_executable(other src/other.cpp)
 if($ENV{HAROS_TEST_UNSET} STREQUAL "x")
   target_compile_definitions(other PRIVATE MAYBE)
@@ -68,6 +68,12 @@ int main(int argc, char** argv) {
 #endif
 #ifdef SUB_ONLY
   auto wrong = node->create_publisher<std_msgs::msg::String>("sub_only", 10);
+#endif
+#ifdef UNKNOWN_TOPIC
+  auto defined = node->create_publisher<std_msgs::msg::String>("defined", 10);
+#endif
+#if LEVEL >= 2
+  auto level = node->create_publisher<std_msgs::msg::String>("level", 10);
 #endif
   rclcpp::spin(node);
 }
@@ -129,7 +135,8 @@ def test_flags_per_source(write_tree) -> None:
     src = root / "src" / "defs" / "src"
     assert cmake_flags(str(src / "talker.cpp"), ws) == [
         "-DUSE_FAST", '-DPREFIX="robot/"', '-DQUOTED="q/"', "-DLATE", '-DTOPIC="chatter"',
-        "-DUNKNOWN_TOPIC=(haros_cmake_value_unknown_UNKNOWN_TOPIC)"]
+        "-DUNKNOWN_TOPIC=(haros_cmake_value_unknown_UNKNOWN_TOPIC)",
+        "-DLEVEL=(haros_cmake_value_unknown_LEVEL)"]
     # MAYBE is under an undecided condition; the library's PUBLIC and INTERFACE ones
     assert cmake_flags(str(src / "other.cpp"), ws) == [
         "-DUSE_FAST", '-DPREFIX="robot/"', '-DQUOTED="q/"', "-DLATE", "-DHELPER_ON",
@@ -146,13 +153,15 @@ def test_calls_read_with_the_targets_macros(write_tree) -> None:
     model = _model(_tree(write_tree))
     nodes = {n.executable: n for p in model.packages for n in p.nodes}
     assert sorted(c.name for c in nodes["talker"].calls if c.kind == "publish") == [
-        "?", "chatter", "late", "q/x", "robot/fast"]
+        "?", "chatter", "defined", "late", "q/x", "robot/fast"]
     assert [c.name for c in nodes["other"].calls if c.kind == "publish"] == ["helper_linked"]
     assert [c.name for c in nodes["subnode"].calls if c.kind == "publish"] == ["sub_ok"]
-    said = [(d.location.file, d.location.line) for d in model.diagnostics
-            if d.code == "CPP_BUILD_MACRO"]
-    assert said == [("defs/src/other.cpp", 7)]  # MAYBE: not decided
-    assert nodes["talker"].completeness == "complete"
+    said = sorted((d.location.file, d.location.line) for d in model.diagnostics
+                  if d.code == "CPP_BUILD_MACRO")
+    # MAYBE: not decided; LEVEL: a value not known, tested by #if (not UNKNOWN_TOPIC:
+    # only whether it is defined, which it is)
+    assert said == [("defs/src/other.cpp", 7), ("defs/src/talker.cpp", 24)]
+    assert nodes["talker"].completeness == "partial"
     assert nodes["subnode"].completeness == "complete"
     assert nodes["other"].completeness == "partial"
 

@@ -51,20 +51,23 @@ def cmake_flags(source: str, workspace: Workspace) -> list[str]:
     return _cmake_macros(source, workspace)[0]
 
 
-def _cmake_macros(source: str, workspace: Workspace) -> tuple[list[str], set[str]]:
-    """``cmake_flags``, and the names of the macros whose presence the CMake reading
-    decides for ``source``: those flags', and those it records for other targets of the
-    package only (not defined here)."""
+def _cmake_macros(source: str, workspace: Workspace
+                  ) -> tuple[list[str], set[str], dict[str, tuple[str, int]]]:
+    """``cmake_flags``; the names of the macros whose presence the CMake reading decides
+    for ``source``: those flags', and those it records for other targets of the package
+    only (not defined here); and those of the flags whose value is not known, each with
+    where (file, line) it is defined."""
     from ...cmake import CONFLICT, source_definitions
 
     package = workspace.package_of(source)
     if package is None:
-        return [], set()
+        return [], set(), {}
     found = source_definitions(package, workspace)
     per_target = found.get(workspace.relpath(source))
     if not per_target:
-        return [], set()
+        return [], set(), {}
     flags: list[str] = []
+    valued: dict[str, tuple[str, int]] = {}
     settled = {name for targets in found.values() for defined in targets
                for name in defined} - {name for defined in per_target for name in defined}
     first, *others = per_target
@@ -76,7 +79,9 @@ def _cmake_macros(source: str, workspace: Workspace) -> tuple[list[str], set[str
         if valid_macro(flag):
             flags.append("-D" + flag)
             settled.add(name)
-    return flags, settled
+            if not each.known:
+                valued[name] = (each.file, each.line)
+    return flags, settled, valued
 
 
 def cmake_files(root: str) -> list[str]:
@@ -113,10 +118,14 @@ def cmake_macros(root: str, workspace: Workspace) -> dict[str, tuple[str, int]]:
     return found
 
 
-def skipped_calls(text: str, macros: dict[str, tuple[str, int]]
-                  ) -> list[tuple[int, str, str]]:
+_DEFINED_TEST = re.compile(r"\bdefined\s*(?:\(\s*\w+\s*\)|\w+)")
+
+
+def skipped_calls(text: str, macros: dict[str, tuple[str, int]],
+                  valued: frozenset[str] = frozenset()) -> list[tuple[int, str, str]]:
     """(line, macro, call text) of the first ROS API call of each conditional block of
-    ``text`` whose condition names one of ``macros``."""
+    ``text`` whose condition names one of ``macros``, or tests the value of one of
+    ``valued`` (``#if X >= 2``; not ``#ifdef X`` nor ``defined(X)``)."""
     sites = recall.call_sites(text)
     if not sites:
         return []
@@ -136,6 +145,8 @@ def skipped_calls(text: str, macros: dict[str, tuple[str, int]]
             current = None
             continue
         named = [w for w in _WORD.findall(rest) if w in macros] if kind != "else" else []
+        if kind in ("if", "elif") and valued:
+            named += [w for w in _WORD.findall(_DEFINED_TEST.sub(" ", rest)) if w in valued]
         current = named[0] if named and kind in ("if", "ifdef", "elif") else None
         start = number
     for first, last, macro in blocks:
@@ -150,19 +161,21 @@ def build_macro_calls(sources: list[str], macros: dict[str, tuple[str, int]],
     """``CPP_BUILD_MACRO`` at the first ROS call of each block of the node's sources that
     only one of ``macros`` (its package's CMake files', ``cmake_macros``) turns on, unless
     the CMake reading decides that macro for the source (given to its parse, or defined
-    for other targets only: ``_cmake_macros``)."""
-    if not macros:
-        return []
+    for other targets only: ``_cmake_macros``), and of each block whose condition tests
+    the value of a macro given with its value unknown."""
     found: list[Diagnostic] = []
     for source in sources:
+        _, settled, valued = _cmake_macros(source, workspace)
+        left = {name: where for name, where in macros.items() if name not in settled}
+        if not left and not valued:
+            continue
         text, _ = read_text(source, workspace.location(source))
         if not text:
             continue
-        settled = _cmake_macros(source, workspace)[1]
-        left = {name: where for name, where in macros.items() if name not in settled}
-        for line, macro, call in skipped_calls(text, left):
-            where, at = macros[macro]
+        for line, macro, call in skipped_calls(text, left, frozenset(valued)):
+            where, at = left.get(macro) or valued[macro]
+            named = macro if macro in left else f"{macro} (its value not known)"
             found.append(diag.make(
-                "CPP_BUILD_MACRO", workspace.location(source, line), macro=macro,
+                "CPP_BUILD_MACRO", workspace.location(source, line), macro=named,
                 text=call.strip()[:80], cmake=f"{workspace.relpath(where)}:{at}"))
     return found
