@@ -116,3 +116,45 @@ def test_ros2_sub_node_given_to_a_wrapper(write_tree) -> None:
     found = sorted((c.kind, c.name) for c in calls)
     assert found == [("declare", "f"), ("publish", "sn/t1"), ("publish", "sn/t3"),
                      ("publish", "t2")]
+
+
+SETUP = """\
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+#include <string>
+void setup(ros::NodeHandle& nh, ros::NodeHandle& pnh);
+static std::string getStr(const ros::NodeHandle& nh, const std::string& name) {
+  std::string v;
+  nh.getParam(name, v);
+  return v;
+}
+static ros::Publisher pub;
+void setup(ros::NodeHandle& nh, ros::NodeHandle& pnh) {
+  std::string t = getStr(pnh, "topic");
+  pub = nh.advertise<std_msgs::String>(t, 5);
+}
+"""
+
+MAIN = """\
+#include <ros/ros.h>
+void setup(ros::NodeHandle& nh, ros::NodeHandle& pnh);
+int main(int argc, char **argv) {
+  ros::init(argc, argv, "five");
+  ros::NodeHandle nh, pnh("~");
+  setup(nh, pnh);
+  ros::spin();
+}
+"""
+
+
+def test_the_handle_given_from_another_file(write_tree) -> None:
+    """The handle the wrapper is given is a parameter that main.cpp passes: the name
+    parameter is filled with that handle's namespace, as the read's name is."""
+    xml = package_xml("pkg", "catkin").replace(
+        "</package>", "<depend>roscpp</depend><depend>std_msgs</depend></package>")
+    root = write_tree({"pkg/package.xml": xml, "pkg/src/setup.cpp": SETUP,
+                       "pkg/src/main.cpp": MAIN})
+    result = extract_cpp([str(root / "pkg/src/main.cpp"), str(root / "pkg/src/setup.cpp")],
+                         scan([str(root)]), cache_dir=None)
+    assert sorted((c.kind, c.name, c.name_param) for c in result.calls) == [
+        ("publish", "?", "~topic"), ("read", "~topic", None)]
