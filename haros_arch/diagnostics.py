@@ -412,10 +412,13 @@ CATALOGUE: dict[str, Entry] = {
         "The package's CMake files define a macro for the compiler (add_definitions, "
         "add_compile_definitions, target_compile_definitions: a package built for ROS 1 "
         "and ROS 2 from one tree, livox_ros_driver2's BUILDING_ROS2) and this source "
-        "chooses ROS calls with it (#if / #ifdef / #elif). The extraction applies the "
-        "macros of a compile_commands.json, not those of CMake commands, so these calls "
-        "may be missing or the other branch's read instead. The node is 'partial'; give "
-        "the analysis the workspace's compile_commands.json (colcon build "
+        "chooses ROS calls with it (#if / #ifdef / #elif). The extraction applies such a "
+        "macro to the sources of the targets it belongs to, but not this one: it is "
+        "defined under an if() the analysis cannot decide (an environment setting, a "
+        "found package's version), differently for two targets that compile the source, "
+        "or in a way the CMake reading does not follow. These calls may be missing or "
+        "the other branch's read instead. The node is 'partial'; give the analysis the "
+        "workspace's compile_commands.json (colcon build "
         "--cmake-args -DCMAKE_EXPORT_COMPILE_COMMANDS=ON) to read the build's code."),
     "CPP_VERSION_UNKNOWN": Entry(
         "warning", "{text}: under '#if {condition}', which this parse leaves out as it "

@@ -1,8 +1,10 @@
 """ROS calls chosen with a macro the package's CMake defines (livox_ros_driver2's
 ``add_definitions(-DBUILDING_ROS2)`` and ``#elif defined BUILDING_ROS2`` around its
-declarations and publishers): the extraction does not apply CMake's macros, so the node
-was read empty and complete (9 false "set but never read" warnings). It says so
-(CPP_BUILD_MACRO) and the node is partial; with a compile_commands.json it is not said."""
+declarations and publishers) under an if() the analysis cannot decide: the macro is not
+applied, so the node was read empty and complete (9 false "set but never read"
+warnings). It says so (CPP_BUILD_MACRO) and the node is partial; with a
+compile_commands.json it is not said. (A macro defined unconditionally is applied:
+test_extract_cpp_cmake_definitions.)"""
 
 from __future__ import annotations
 

@@ -68,12 +68,26 @@ def test_flags_of_the_unit_are_used(ws: Path) -> None:
     assert result.diagnostics == []  # type: ignore[attr-defined]
 
 
-def test_without_the_file_what_depends_on_flags_is_lost(ws: Path) -> None:
+def test_without_the_file_the_cmake_gives_the_macros(ws: Path) -> None:
+    # the CMakeLists defines WITH_HEALTH and LIDAR_FRAME for the target (under the
+    # option WITH_HEALTH, ON by default): applied (``build_macros.cmake_flags``); the
+    # include folder it gives (config) too: the scan topic's header is read
     result = extract(ws)
-    # the macros of the command (WITH_HEALTH, LIDAR_FRAME) are lost; the include folder
-    # the CMakeLists gives (config) is not: the scan topic's header is read
-    assert calls(result) == LOST
+    assert calls(result) == FULL
     assert "CPP_INCLUDE_MISSING" not in [d.code for d in result.diagnostics]  # type: ignore[attr-defined]
+
+
+def without_cmake_macros(ws: Path) -> None:
+    """The CMakeLists without its ``target_compile_definitions``: the unit's macros can
+    come from a compile command only."""
+    cmake = ws / "src" / "lidar" / "CMakeLists.txt"
+    cmake.write_text(cmake.read_text().replace("target_compile_definitions", "message"))
+
+
+def test_without_the_file_what_depends_on_flags_is_lost(ws: Path) -> None:
+    without_cmake_macros(ws)
+    # the macros the build would give (WITH_HEALTH, LIDAR_FRAME) are lost
+    assert calls(extract(ws)) == LOST
 
 
 def test_without_the_file_nor_the_cmake_folder_the_header_is_lost(ws: Path) -> None:
@@ -116,6 +130,7 @@ def test_stand_ins_stay_first_and_unknown_flags_are_dropped(ws: Path) -> None:
 
 @pytest.mark.parametrize("text", ["{not json", '{"a": 1}', "[" * 100_000])
 def test_bad_file_is_a_diagnostic(ws: Path, text: str) -> None:
+    without_cmake_macros(ws)
     path = ws / "build" / "compile_commands.json"
     path.parent.mkdir(parents=True)
     path.write_text(text)
@@ -126,6 +141,7 @@ def test_bad_file_is_a_diagnostic(ws: Path, text: str) -> None:
 
 
 def test_size_is_bounded(ws: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    without_cmake_macros(ws)
     write_commands(ws, [driver_entry(ws, "-DWITH_HEALTH")])
     monkeypatch.setattr(compile_commands, "MAX_BYTES", 16)
     result = extract(ws)

@@ -29,10 +29,10 @@ from .nodes import (
     scripts,
     with_elsewhere,
 )
-from .targets import Target
+from .targets import CompileDefinition, Target
 
 __all__ = ["CMAKE_BUILD_TYPES", "Target", "interpret", "package_libraries", "parse_package",
-           "read_commands", "targets_of"]
+           "read_commands", "source_definitions", "targets_of"]
 
 
 def read_commands(path: str, workspace: Workspace | PackageFiles,
@@ -118,6 +118,50 @@ def _package_links(name: str, workspace: Workspace) -> list[str]:
                         package=package.name)
     return list(dict.fromkeys(other for target in interpreter.targets.values()
                               if target.kind == "library" for other in sources.packages(target)))
+
+
+# a macro two targets that compile one source define differently, or that a target and a
+# library it links define differently: which one a parse should take is not known
+CONFLICT = CompileDefinition("", None, known=False)
+
+
+def source_definitions(package: Package, workspace: Workspace
+                       ) -> dict[str, list[dict[str, CompileDefinition]]]:
+    """Each C/C++ source of the package's targets (workspace-relative) -> for each target
+    that compiles it, the macros that target's compile line defines, by name: its
+    directory's (``add_definitions``, ``add_compile_definitions``), its own PRIVATE and
+    PUBLIC ones (``target_compile_definitions``), and the PUBLIC and INTERFACE ones of the
+    package's libraries it links. A name given two different definitions is
+    ``CONFLICT``. Empty for a package CMake does not build."""
+    return remembered("compile definitions", package.root, workspace,
+                      lambda: _source_definitions(package, workspace))
+
+
+def _source_definitions(package: Package, workspace: Workspace
+                        ) -> dict[str, list[dict[str, CompileDefinition]]]:
+    if package.build_type not in CMAKE_BUILD_TYPES or not package.root:
+        return {}
+    files = PackageFiles(package, workspace)
+    interpreter, _ = _interpret(package, workspace, files)
+    sources = SourceMap(interpreter, files)
+    found: dict[str, list[dict[str, CompileDefinition]]] = {}
+    for target in interpreter.targets.values():
+        given = [*target.directory_definitions,
+                 *(each for keyword, each in target.definitions if keyword != "INTERFACE"),
+                 *(each for linked in sources.closure(target)[1:]
+                   for keyword, each in linked.definitions if keyword != "PRIVATE")]
+        defined: dict[str, CompileDefinition] = {}
+        for each in given:
+            known = defined.get(each.name)
+            defined[each.name] = each if known is None or _same(known, each) else CONFLICT
+        for source in sources.own(target):
+            found.setdefault(source, []).append(defined)
+    return found
+
+
+def _same(one: CompileDefinition, other: CompileDefinition) -> bool:
+    return (one.value, one.known, one.conditions) == (other.value, other.known,
+                                                      other.conditions)
 
 
 def _run(package: Package, workspace: Workspace,

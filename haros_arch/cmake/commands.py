@@ -15,9 +15,9 @@ from typing import TYPE_CHECKING
 
 from .. import diagnostics as diag
 from . import listops
-from .lexer import Invocation
+from .lexer import Argument, Invocation
 from .listops import RegexLimit, run_list, run_math, run_string, split_list
-from .targets import Install, Program, Registration, Target
+from .targets import CompileDefinition, Install, Program, Registration, Target
 
 if TYPE_CHECKING:
     from .interpreter import Interpreter
@@ -393,7 +393,8 @@ def _add_target(it: Interpreter, command: Invocation, args: list[str], kind: str
     sources.extend(it.path(a) for a in rest if a not in flags)
     target = it.targets[args[0]] = Target(
         args[0], kind, sources, conditions=it.current_conditions(), line=command.line,
-        column=command.column, file=command.file)
+        column=command.column, file=command.file,
+        directory_definitions=it.compile_definitions[-1])
     if command.name.lower().startswith("ament_auto_add_"):
         target.auto = True
         # ament_cmake_auto links the package's earlier ament_auto libraries unless told
@@ -404,12 +405,81 @@ def _add_target(it: Interpreter, command: Invocation, args: list[str], kind: str
             it.auto_libraries.append(args[0])
 
 
+# -- compile definitions ------------------------------------------------------------
+_DEFINE = re.compile(r"([A-Za-z_]\w*)(?:=(.*))?", re.S)
+_DEFINITION_KEYWORDS = frozenset({"PRIVATE", "PUBLIC", "INTERFACE"})
+
+
+@handles("add_definitions")
+def _add_definitions(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    """Only its ``-D`` flags are definitions (others are compiler flags, not read)."""
+    for _, found in _definitions(it, command, command.args, "-D"):
+        it.compile_definitions[-1].append(found)
+
+
+@handles("remove_definitions")
+def _remove_definitions(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    """Takes the directory's ``-D`` definitions of those names out (for every target of
+    the directory, as the directory's property is read once it is all read)."""
+    names = {each.name for _, each in _definitions(it, command, command.args, "-D")}
+    it.compile_definitions[-1][:] = [d for d in it.compile_definitions[-1]
+                                     if d.name not in names]
+
+
+@handles("add_compile_definitions")
+def _add_compile_definitions(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    for _, found in _definitions(it, command, command.args, ""):
+        it.compile_definitions[-1].append(found)
+
+
+@handles("target_compile_definitions")
+def _target_compile_definitions(it: Interpreter, command: Invocation,
+                                args: list[str]) -> None:
+    target = it.targets.get(args[0]) if args else None
+    if target is None or not command.args:
+        return  # an imported target, or one this reading did not make
+    target.definitions.extend(_definitions(it, command, command.args[1:], ""))
+
+
+def _definitions(it: Interpreter, command: Invocation, raw: tuple[Argument, ...],
+                 flag: str) -> list[tuple[str, CompileDefinition]]:
+    """The definitions ``raw`` (a command's arguments, not expanded) give, each with the
+    keyword before it (PRIVATE when none); ``flag``: only words that start with it
+    count, without it (``-D``), else a leading ``-D`` is dropped as CMake does. A word
+    whose name is not written in the file (a list variable's items, a generator
+    expression) is left out; one whose value reads something not set here is defined
+    with that value unknown."""
+    found: list[tuple[str, CompileDefinition]] = []
+    keyword = "PRIVATE"
+    # (a test decided on what is not known may have chosen wrongly: as not decided)
+    conditions = (*it.current_conditions(), *it.unsure_tests)
+    for arg in raw:
+        unknown = arg.kind != "bracket" and it.unknown_reference(arg.text)
+        written = arg.text.strip()
+        for item in it.arguments((arg,)):
+            if item in _DEFINITION_KEYWORDS:
+                keyword = item
+                continue
+            if flag and not item.startswith(flag):
+                continue
+            text = item[2:] if item.startswith("-D") else item
+            match = _DEFINE.fullmatch(text)
+            if match is None or "$<" in item:
+                continue
+            name, value = match.group(1), match.group(2)
+            if unknown and re.match(rf"(?:-D)?{name}(?:=|$)", written) is None:
+                continue  # the name itself comes from what is not known
+            found.append((keyword, CompileDefinition(
+                name, value, not unknown, conditions, command.file, command.line)))
+    return found
+
+
 # commands of CMake itself and of the ROS build tools that make no runnable program
 # (tests, messages): an unknown command is looked at only when it is none of these
 IGNORED = frozenset({
     "project", "cmake_minimum_required", "include_directories",
-    "link_directories", "add_definitions", "add_compile_options", "add_dependencies",
-    "target_include_directories", "target_compile_options", "target_compile_definitions",
+    "link_directories", "add_compile_options", "add_dependencies",
+    "target_include_directories", "target_compile_options",
     "target_compile_features", "catkin_package", "ament_package", "message",
     "add_custom_target", "add_custom_command", "add_test", "configure_file",
     "add_message_files", "add_service_files", "add_action_files", "generate_messages",

@@ -28,7 +28,7 @@ from .commands import HANDLERS, IGNORED, unknown_command
 from .conditions import Evaluator
 from .lexer import Argument, Invocation
 from .listops import split_list
-from .targets import Install, Program, Registration, Target
+from .targets import CompileDefinition, Install, Program, Registration, Target
 
 _VAR_REF = re.compile(r"\$(ENV|CACHE)?\{([^${}]*)\}")
 MAX_STEPS = 50_000  # commands and if / elseif tests; real packages take under 1,000
@@ -97,6 +97,18 @@ class Interpreter:
         # generate_parameter_library: (target, absolute path of its YAML, PROJECT_NAME)
         self.parameter_libraries: list[tuple[str, str, str]] = []
         self.definitions: dict[str, Definition] = {}
+        # the compile definitions of each directory being read, innermost last: a
+        # subdirectory starts with a copy of its parent's (``Target.directory_definitions``)
+        self.compile_definitions: list[list[CompileDefinition]] = [[]]
+        # variables whose value this reading may have wrong: set from something not set
+        # here (``set(V ${found_by_find_package})``), or in a branch chosen by a test
+        # that read such a thing (``if("${pkg_VERSION}" VERSION_GREATER 1)``, decided on
+        # an empty string); ``unknown_reference`` takes them as not known
+        self.uncertain: set[str] = set()
+        self._unsure = 0  # > 0: what is set now is uncertain
+        # the if() tests around the command being run that were decided on something not
+        # known (``uncertain``): what they guard may run when it should not, or not run
+        self.unsure_tests: list[Condition] = []
         self.conditions: list[Condition] = []  # enclosing if / while not decided
         self.returns: list[Condition] = []  # return() under a condition not decided
         # ExternalProject_Add of the package's own folder with cache entries (a
@@ -128,6 +140,10 @@ class Interpreter:
         self._bounded(name, value)
         self.scopes[-1][name] = value
         self.assigned.add(name)
+        if self._unsure:
+            self.uncertain.add(name)
+        else:
+            self.uncertain.discard(name)
 
     def _bounded(self, name: str, value: str) -> None:
         """A value past ``MAX_VALUE`` (a list or string doubled in a loop or through
@@ -198,6 +214,25 @@ class Interpreter:
             if len(text) > 1_000_000:
                 break
         return text
+
+    def unknown_reference(self, text: str) -> bool:
+        """Whether expanding ``text`` reads a variable, environment setting or cache entry
+        that is not set here (its value is then not known, not empty)."""
+        if "$" not in text:
+            return False
+        for _ in range(1000):
+            match = _VAR_REF.search(text)
+            if not match:
+                return False
+            kind, name = match.group(1), match.group(2)
+            value = (self.environment.get(name) if kind == "ENV" else
+                     self.cache.get(name) if kind == "CACHE" else self.get(name))
+            if value is None or (not kind and name in self.uncertain):
+                return True
+            text = text[:match.start()] + value + text[match.end():]
+            if len(text) > 1_000_000:
+                break
+        return True
 
     def arguments(self, args: tuple[Argument, ...]) -> list[str]:
         """Expand references; unquoted arguments split on ';' as CMake does."""
@@ -282,7 +317,12 @@ class Interpreter:
             self.custom_builds.append(command)
         handler = HANDLERS.get(name[1:] if name.startswith("_") else name)
         if handler is not None:
-            handler(self, command, self.arguments(command.args))
+            unsure = self._reads_unknown(command.args)
+            self._unsure += unsure
+            try:
+                handler(self, command, self.arguments(command.args))
+            finally:
+                self._unsure -= unsure
         elif name not in IGNORED:
             unknown_command(self, command, self.arguments(command.args))
         return index + 1
@@ -324,6 +364,12 @@ class Interpreter:
                               or name.lower() in self.definitions, self.assigned)
         return evaluator.evaluate(args)
 
+    def _reads_unknown(self, args: tuple[Argument, ...]) -> bool:
+        """Whether a command's arguments read something not known here (a reference, or
+        a variable named bare, as ``if(V)`` reads it, that is uncertain)."""
+        return any(arg.kind != "bracket" and (self.unknown_reference(arg.text) or (
+            arg.kind == "unquoted" and arg.text in self.uncertain)) for arg in args)
+
     def run_if(self, commands: list[Invocation], index: int, limit: int) -> int:
         marks = self.block_end(commands, index, limit, "if", "endif", ("elseif", "else"))
         branches = [index, *marks[:-1]]
@@ -331,10 +377,17 @@ class Interpreter:
         pushed = 0
         returned: list[Condition] = []
         undecided: list[tuple[str, Invocation]] = []  # the tests not decided, in order
+        unsure = 0  # 1 once a test read something not known: what follows may be wrong
         try:
             for number, start in enumerate(branches):
                 stop = marks[number]
                 head = commands[start]
+                if not unsure and head.name != "else" and self._reads_unknown(head.args):
+                    unsure = 1
+                    self._unsure += 1
+                    self.unsure_tests.append(Condition(
+                        " ".join(a.text for a in head.args), "source", head.name,
+                        self.where(head)))
                 if head.name == "else":
                     try:
                         self.run(commands, start + 1, stop)
@@ -370,6 +423,9 @@ class Interpreter:
                     break
         finally:
             del self.conditions[len(self.conditions) - pushed:]
+            self._unsure -= unsure
+            if unsure:
+                self.unsure_tests.pop()
         self.returns.extend(returned)
         return end + 1
 
@@ -526,6 +582,7 @@ class Interpreter:
             self.limit(command, f"add_subdirectory() nested deeper than {MAX_DEPTH}")
             return
         self.scopes.append(dict(self.scopes[-1]))
+        self.compile_definitions.append(list(self.compile_definitions[-1]))
         self._enter_directory(folder)
         self.depth += 1
         frame = len(self.returns)
@@ -537,6 +594,7 @@ class Interpreter:
             self.depth -= 1
             del self.returns[frame:]
             self.scopes.pop()
+            self.compile_definitions.pop()
 
 
 def _substitute(command: Invocation, values: Mapping[str, str]) -> Invocation:

@@ -149,7 +149,7 @@ class SourceMap:
         self._own[target.name] = out = list(dict.fromkeys(out))
         return out
 
-    def _closure(self, target: Target) -> list[Target]:
+    def closure(self, target: Target) -> list[Target]:
         """``target`` and the package libraries it links, transitively, in order."""
         out: list[Target] = []
         seen: set[str] = set()
@@ -165,14 +165,14 @@ class SourceMap:
 
     def linked(self, target: Target) -> list[str]:
         """The target's sources, then those of package libraries it links, transitively."""
-        return list(dict.fromkeys(source for linked in self._closure(target)
+        return list(dict.fromkeys(source for linked in self.closure(target)
                                   for source in self.own(linked)))
 
     def packages(self, target: Target) -> list[str]:
         """The other packages ``target`` links, itself or through the package's libraries
         it links (an ament_cmake_auto target links every build dependency)."""
         out: list[str] = []
-        for linked in self._closure(target):
+        for linked in self.closure(target):
             out.extend(linked.packages)
             if linked.auto:
                 out.extend(self._build_depends)

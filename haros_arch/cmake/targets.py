@@ -7,6 +7,21 @@ from dataclasses import dataclass, field
 from ..model.conditions import Condition
 
 
+@dataclass(frozen=True)
+class CompileDefinition:
+    """A macro the build defines for a target's sources (``add_definitions(-DNAME=v)``,
+    ``add_compile_definitions``, ``target_compile_definitions``)."""
+
+    name: str
+    value: str | None  # as the compiler gets it (``"x"`` with its quotes); None: no value
+    # False: the value uses a variable, environment setting or cache entry this reading
+    # never sets (a find_package result, a file read): defined, but to what is not known
+    known: bool = True
+    conditions: tuple[Condition, ...] = ()  # the if()s around it that are not decided
+    file: str = ""
+    line: int = 0
+
+
 @dataclass
 class Target:
     """A build target: ``add_executable`` or ``add_library``."""
@@ -26,6 +41,13 @@ class Target:
     line: int = 0
     column: int = 0
     file: str = ""
+    # the definitions of its directory (``add_definitions``, ``add_compile_definitions``:
+    # those of the directory's whole file, and of its parents' before it was added), the
+    # very list the interpreter adds to; and its own (``target_compile_definitions``),
+    # each with its keyword: PRIVATE and PUBLIC ones are its sources', PUBLIC and
+    # INTERFACE ones those of the targets that link it
+    directory_definitions: list[CompileDefinition] = field(default_factory=list)
+    definitions: list[tuple[str, CompileDefinition]] = field(default_factory=list)
 
 
 @dataclass

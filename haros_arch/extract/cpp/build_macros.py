@@ -1,11 +1,23 @@
-"""ROS calls the parse cannot see because the build defines a macro that chooses them.
+"""The macros a package's CMake files define, applied to the parse where they are known,
+and the ROS calls the parse cannot see where they are not.
 
 A package built for ROS 1 and ROS 2 from one source tree picks its code with a macro its
 CMakeLists.txt defines (livox_ros_driver2: ``add_definitions(-DBUILDING_ROS2)``, then
-``#elif defined BUILDING_ROS2`` around every declaration and publisher). The extraction
-applies the macros of a ``compile_commands.json`` only, not those of CMake commands, so a
-block under such a macro is code this parse leaves out: when it holds a ROS API call, the
-node says so (``CPP_BUILD_MACRO``), and is partial, rather than silently empty.
+``#elif defined BUILDING_ROS2`` around every declaration and publisher); depthai_examples
+names a file with ``target_compile_definitions(mobilenet_node PRIVATE
+BLOB_NAME="${mobilenet_blob_name}")``. Where no ``compile_commands.json`` gives a source's
+flags (they win: they are the build's own), ``cmake_flags`` gives the ``-D`` flags of the
+targets that compile it (``cmake.source_definitions``), each once every such target
+defines it alike and no undecided ``if()`` guards it. A value that reads something the
+CMake reading does not know is defined as ``UNKNOWN_VALUE``: an identifier nothing
+declares, so that what it gives is unknown, not empty (``#ifdef`` still holds), and the
+parse error it makes names the macro.
+
+A macro the CMake files define that the reading does not decide for a source (under an
+undecided condition, given two values, or defined in code the reading does not run or
+through a command it does not read) leaves a block this parse may not see: when it
+holds a ROS API call, the node says so (``CPP_BUILD_MACRO``), and is partial, rather
+than silently empty.
 """
 
 from __future__ import annotations
@@ -18,6 +30,7 @@ from ...diagnostics import Diagnostic
 from ...files import read_text
 from ...workspace import Workspace
 from . import recall
+from .compile_commands import valid_macro
 
 # the CMake commands that define macros for the compiler, and what they define
 _COMMAND = re.compile(r"\b(add_definitions|add_compile_definitions|target_compile_definitions)"
@@ -26,6 +39,49 @@ _DEFINED = re.compile(r"(?:-D)?([A-Za-z_]\w*)(?:=[^\s)]*)?")
 _WORD = re.compile(r"[A-Za-z_]\w*")
 _KEYWORDS = frozenset({"PRIVATE", "PUBLIC", "INTERFACE", "defined"})
 MAX_CMAKE_FILES = 40
+# what a macro whose value is not known holds: an identifier nothing declares, in
+# parentheses (``std::string s(NAME)`` stays an expression, not a function declaration)
+UNKNOWN_VALUE = "(haros_cmake_value_unknown_{})"
+
+
+def cmake_flags(source: str, workspace: Workspace) -> list[str]:
+    """The ``-D`` flags of the macros the CMake targets that compile ``source`` (an
+    absolute path) define, each where every one of them defines it alike and no
+    undecided condition guards it; none for a source no target of its package lists."""
+    return _cmake_macros(source, workspace)[0]
+
+
+def _cmake_macros(source: str, workspace: Workspace
+                  ) -> tuple[list[str], set[str], dict[str, tuple[str, int]]]:
+    """``cmake_flags``; the names of the macros whose presence the CMake reading decides
+    for ``source``: those flags', and those it records for other targets of the package
+    only (not defined here); and those of the flags whose value is not known, each with
+    where (file, line) it is defined."""
+    from ...cmake import CONFLICT, source_definitions
+
+    package = workspace.package_of(source)
+    if package is None:
+        return [], set(), {}
+    found = source_definitions(package, workspace)
+    per_target = found.get(workspace.relpath(source))
+    if not per_target:
+        return [], set(), {}
+    flags: list[str] = []
+    valued: dict[str, tuple[str, int]] = {}
+    settled = {name for targets in found.values() for defined in targets
+               for name in defined} - {name for defined in per_target for name in defined}
+    first, *others = per_target
+    for name, each in first.items():
+        if each is CONFLICT or each.conditions or any(o.get(name) != each for o in others):
+            continue
+        value = each.value if each.known else UNKNOWN_VALUE.format(name)
+        flag = name if value is None else f"{name}={value}"
+        if valid_macro(flag):
+            flags.append("-D" + flag)
+            settled.add(name)
+            if not each.known:
+                valued[name] = (each.file, each.line)
+    return flags, settled, valued
 
 
 def cmake_files(root: str) -> list[str]:
@@ -62,10 +118,14 @@ def cmake_macros(root: str, workspace: Workspace) -> dict[str, tuple[str, int]]:
     return found
 
 
-def skipped_calls(text: str, macros: dict[str, tuple[str, int]]
-                  ) -> list[tuple[int, str, str]]:
+_DEFINED_TEST = re.compile(r"\bdefined\s*(?:\(\s*\w+\s*\)|\w+)")
+
+
+def skipped_calls(text: str, macros: dict[str, tuple[str, int]],
+                  valued: frozenset[str] = frozenset()) -> list[tuple[int, str, str]]:
     """(line, macro, call text) of the first ROS API call of each conditional block of
-    ``text`` whose condition names one of ``macros``."""
+    ``text`` whose condition names one of ``macros``, or tests the value of one of
+    ``valued`` (``#if X >= 2``; not ``#ifdef X`` nor ``defined(X)``)."""
     sites = recall.call_sites(text)
     if not sites:
         return []
@@ -85,6 +145,8 @@ def skipped_calls(text: str, macros: dict[str, tuple[str, int]]
             current = None
             continue
         named = [w for w in _WORD.findall(rest) if w in macros] if kind != "else" else []
+        if kind in ("if", "elif") and valued:
+            named += [w for w in _WORD.findall(_DEFINED_TEST.sub(" ", rest)) if w in valued]
         current = named[0] if named and kind in ("if", "ifdef", "elif") else None
         start = number
     for first, last, macro in blocks:
@@ -97,17 +159,23 @@ def skipped_calls(text: str, macros: dict[str, tuple[str, int]]
 def build_macro_calls(sources: list[str], macros: dict[str, tuple[str, int]],
                       workspace: Workspace) -> list[Diagnostic]:
     """``CPP_BUILD_MACRO`` at the first ROS call of each block of the node's sources that
-    only one of ``macros`` (its package's CMake files', ``cmake_macros``) turns on."""
-    if not macros:
-        return []
+    only one of ``macros`` (its package's CMake files', ``cmake_macros``) turns on, unless
+    the CMake reading decides that macro for the source (given to its parse, or defined
+    for other targets only: ``_cmake_macros``), and of each block whose condition tests
+    the value of a macro given with its value unknown."""
     found: list[Diagnostic] = []
     for source in sources:
+        _, settled, valued = _cmake_macros(source, workspace)
+        left = {name: where for name, where in macros.items() if name not in settled}
+        if not left and not valued:
+            continue
         text, _ = read_text(source, workspace.location(source))
         if not text:
             continue
-        for line, macro, call in skipped_calls(text, macros):
-            where, at = macros[macro]
+        for line, macro, call in skipped_calls(text, left, frozenset(valued)):
+            where, at = left.get(macro) or valued[macro]
+            named = macro if macro in left else f"{macro} (its value not known)"
             found.append(diag.make(
-                "CPP_BUILD_MACRO", workspace.location(source, line), macro=macro,
+                "CPP_BUILD_MACRO", workspace.location(source, line), macro=named,
                 text=call.strip()[:80], cmake=f"{workspace.relpath(where)}:{at}"))
     return found

@@ -154,5 +154,10 @@ def _flags(args: Sequence[str], folder: str, allowed: Sequence[str]) -> UnitFlag
     return UnitFlags(tuple(includes), tuple(macros), std)
 
 
+def valid_macro(text: str) -> bool:
+    """A macro definition (``NAME`` or ``NAME=value``) kept as a ``-D`` flag."""
+    return _MACRO.fullmatch(text) is not None
+
+
 def _inside(path: str, folders: Iterable[str]) -> bool:
     return any(path == f or path.startswith(f.rstrip(os.sep) + os.sep) for f in folders)

@@ -336,6 +336,23 @@ class Namespaces:
         return (normalise(join_name(render(parent), child)),)
 
 
+def pointee(expr: Cursor) -> Cursor:
+    """The smart pointer a read of its object is made through (``node->``, ``*node``,
+    ``node.get()`` of a ``shared_ptr``: ``node``); ``expr`` itself for anything else."""
+    expr = strip(expr)
+    target = expr.referenced if expr.kind == CursorKind.CALL_EXPR else None
+    parent = target.semantic_parent if target is not None else None
+    if target is None or target.spelling not in _POINTER_READS or parent is None or (
+        parent.spelling not in _POINTERS
+    ):
+        return expr
+    children = [c for c in expr.get_children() if c.kind.is_expression()]
+    if children and children[0].kind == CursorKind.MEMBER_REF_EXPR:  # pointer.get()
+        children = [c for c in children[0].get_children() if c.kind.is_expression()]
+    objects = [c for c in children if strip(c).referenced != target]
+    return strip(objects[0]) if len(objects) == 1 else expr
+
+
 def _holds_handle(field: Cursor) -> bool:
     """A member whose type is a handle class itself, not a pointer or reference to one."""
     ctype = field.type.get_canonical()

@@ -64,6 +64,7 @@ from ...model.location import Location
 from ...workspace import Workspace
 from . import (
     api,
+    build_macros,
     cmake_includes,
     header_map,
     interfaces,
@@ -345,6 +346,12 @@ class IncludeSetup:
         self._roots: frozenset[str] | None = None  # see ``_inside``
         self._inside_of: dict[str, bool] = {}
         self._listed: dict[tuple[str, str], frozenset[str]] = {}  # see ``_entries``
+        # each source's -D flags from its package's CMake files (``package_macros``),
+        # found before the workers start, which take a copy
+        self._cmake_flags: dict[str, list[str]] = {}
+        for source in dict.fromkeys(map(os.path.abspath, sources)):
+            if os.path.realpath(source) not in self.units:
+                self._cmake_flags[source] = build_macros.cmake_flags(source, workspace)
         # generate_parameter_library's targets (``_parameter_header``), read when needed
         self._parameter_targets: list[parameter_library.Target] | None = None
         # the dynamic_reconfigure configs of each package read so far (``_reconfigure``)
@@ -379,22 +386,29 @@ class IncludeSetup:
         return [*args, "-include-pch", made] if made is not None else args
 
     def package_macros(self, source: str | None, unit: UnitFlags | None = None) -> list[str]:
-        """``-DROS_PACKAGE_NAME="<package>"`` for a unit of a package whose build defines
+        """The macros the build defines for a unit that no compile command gives: those
+        of its package's CMake files (``build_macros.cmake_flags``), and
+        ``-DROS_PACKAGE_NAME="<package>"`` for a unit of a package whose build defines
         it: every ROS 1 package (rosconsole's CMake extras, which catkin's roscpp brings,
         ``add_definitions`` it with the project's name) and a ROS 2 package built with
         ament_cmake_ros (its extras do the same; plain ament_cmake defines nothing).
         Not where the unit's compile command defines it already, nor for a package
         name no build would accept."""
         package = self.workspace.package_of(source) if source else None
-        given = {m[2:].partition("=")[0] for m in unit.macros} if unit is not None else set()
+        own: list[str] = []
+        if unit is None and source is not None:
+            if source not in self._cmake_flags:
+                self._cmake_flags[source] = build_macros.cmake_flags(source, self.workspace)
+            own = self._cmake_flags[source]
+        given = {m[2:].partition("=")[0] for m in (unit.macros if unit is not None else own)}
         if package is None or not _PACKAGE_NAME.fullmatch(package.name) or (
                 "ROS_PACKAGE_NAME" in given):
-            return []
+            return own
         version = ros_version(package)
         if version == 1 or (version == 2 and any(
                 d.name == "ament_cmake_ros" for d in package.dependencies)):
-            return [f'-DROS_PACKAGE_NAME="{package.name}"']
-        return []
+            return [*own, f'-DROS_PACKAGE_NAME="{package.name}"']
+        return own
 
     def _own_folders(self, source: str | None) -> list[str]:
         """The include folders of ``source``'s package when it is one our stand-ins also

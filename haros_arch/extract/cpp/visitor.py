@@ -1529,19 +1529,12 @@ class CallFinder:
             return source[0] if source is not None and known_name(source[0]) else None
         if call.spelling not in self.wrappers.names or not self._gives_value(call):
             return None
-        args = written_arguments(call)
         names = set()
         for row, named in self.wrappers.parameter_calls(call, scope):
             source = self._parameter(row, call, named)
             if source is None:
                 return None
-            name = source[0]
-            if not row.on_handle and row.handle_arg is not None:
-                if row.handle_arg >= len(args):
-                    return None
-                name = join_name(render(self.namespaces.of(args[row.handle_arg], scope)),
-                                 name)
-            names.add(name)
+            names.add(source[0])
         one = names.pop() if len(names) == 1 else None
         return one if one is not None and known_name(one) else None
 
@@ -1787,6 +1780,10 @@ class CallFinder:
         if spec.on_handle:
             name = join_name(render(self.namespaces.of_call(call, callee_of_call(call), scope)),
                              name)
+        elif spec.handle_arg is not None and spec.handle_arg < len(args):
+            # a wrapper given its handle (``getBool(pnh, "use_x")``): that handle's
+            # namespace, as the read it makes is named (``~use_x``)
+            name = join_name(render(self.namespaces.of(args[spec.handle_arg], scope)), name)
         default: str | None = None
         other: str | None = None
         index = spec.default_arg

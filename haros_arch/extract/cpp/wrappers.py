@@ -37,7 +37,7 @@ from . import api, msg_types
 from .call_sites import closest, default_argument, delegation, is_constructor
 from .call_types import template_argument
 from .cursors import Node, from_standin, overloads
-from .handles import callback, callback_name, is_handle, join_name, qualified_name
+from .handles import callback, callback_name, is_handle, join_name, pointee, qualified_name
 from .qos import qos as qos_of
 from .tested import TestedCalls
 from .tested import key as tested_key
@@ -1379,13 +1379,14 @@ def _parameters(function: Cursor) -> list[Cursor]:
 
 
 def _parameter_index(expr: Cursor | None, params: list[Cursor]) -> int | None:
-    """The index of the wrapper's parameter ``expr`` is (as it is, or dereferenced)."""
+    """The index of the wrapper's parameter ``expr`` is (as it is, or dereferenced,
+    also through a smart pointer: ``node->``, ``*node``, ``node.get()``)."""
     if expr is None:
         return None
-    expr = strip(expr)
+    expr = pointee(expr)
     if expr.kind == CursorKind.UNARY_OPERATOR:  # *node
         inner = [c for c in expr.get_children() if c.kind.is_expression()]
-        expr = strip(inner[0]) if len(inner) == 1 else expr
+        expr = pointee(inner[0]) if len(inner) == 1 else expr
     if expr.kind != CursorKind.DECL_REF_EXPR or expr.referenced is None or (
         expr.referenced.kind != CursorKind.PARM_DECL
     ):
