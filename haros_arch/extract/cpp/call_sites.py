@@ -134,6 +134,17 @@ class CallSites:
         string parameters are placeholders (``external``)."""
         return self.external and self._shared(function)
 
+    def member_placeholder(self, field: Cursor) -> str | None:
+        """The placeholder of a handle member ``field`` that the unit's files never set
+        and whose class's constructors are all defined in other files
+        (``constructed_elsewhere``): the value those files' code gives it
+        (``links.MEMBER``), filled for the node. None when the unit passes no value to
+        other files (``external``) or the member has no USR."""
+        usr = field.get_usr()
+        if not self.external or not usr or PLACEHOLDER in usr or SEPARATOR in usr:
+            return None
+        return f"{PLACEHOLDER}{usr}{SEPARATOR}0{PLACEHOLDER}"
+
     def placeholder(self, parm: Cursor) -> str | None:
         """The placeholder part of ``parm`` (None for a parameter of no function)."""
         function = parm.semantic_parent
@@ -309,9 +320,7 @@ class CallSites:
         ):  # a class of the workspace's own files, not a message (synthesised): its
             # field holds what is received or filled in at run time
             return
-        constructors = [c for c in owner.get_children() if c.kind in _CONSTRUCTORS
-                        and is_constructor(c)]
-        if constructors and all(c.get_definition() is None for c in constructors):
+        if constructed_elsewhere(field, self.source):
             named = f"{owner.spelling}::{field.spelling}"
             if named not in self.elsewhere:
                 self.elsewhere.append(named)
@@ -684,6 +693,20 @@ class Fork:
     field: tuple[str, int]
     options: list[tuple[Cursor | None, Cursor]]
     local: bool = False
+
+
+def constructed_elsewhere(field: Cursor, source: dict[str, bytes]) -> bool:
+    """Whether ``field`` is a member of a class of the workspace's files that declares
+    constructors and whose every constructor is defined outside this unit: what they
+    give the member is not seen here."""
+    owner = field.semantic_parent
+    where = owner.location.file if owner is not None else None
+    if owner is None or field.kind != CursorKind.FIELD_DECL or (
+            where is None or where.name not in source):
+        return False
+    constructors = [c for c in owner.get_children() if c.kind in _CONSTRUCTORS
+                    and is_constructor(c)]
+    return bool(constructors) and all(c.get_definition() is None for c in constructors)
 
 
 def constructor_values(field: Cursor, source: dict[str, bytes]
