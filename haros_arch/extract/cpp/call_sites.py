@@ -434,15 +434,20 @@ class CallSites:
         return self._index
 
 
-def base_keys(cls: Cursor, depth: int = 0) -> set[tuple[str, int]]:
+def base_keys(cls: Cursor, depth: int = 0, named: bool = False) -> set[tuple[str, int]]:
     """The keys of ``cls``'s base classes, transitively; a base that is a class
-    template's specialisation (``Navigator<ToPose>``) also as that template."""
+    template's specialisation (``Navigator<ToPose>``) also as that template. ``named``:
+    only the bases whose members an unqualified name may find, not one that depends on
+    a template parameter (C++ looks no name up there until the template is used: rovio's
+    ``FeatureOutputCT<STATE> : public LWF::CoordinateTransform<STATE, ...>``)."""
     found: set[tuple[str, int]] = set()
     if depth > 8:
         return found
     for base in cls.get_children():
         if base.kind != CursorKind.CXX_BASE_SPECIFIER:
             continue
+        if named and base.type.get_canonical().kind != TypeKind.RECORD:
+            continue  # a dependent base (a template parameter's, or a template of one)
         decl = base.type.get_canonical().get_declaration()
         template = conf.lib.clang_getSpecializedCursorTemplate(decl)
         for each in (decl, template):
@@ -452,7 +457,7 @@ def base_keys(cls: Cursor, depth: int = 0) -> set[tuple[str, int]]:
         if definition is None and template is not None:
             definition = template.get_definition()
         if definition is not None:
-            found |= base_keys(definition, depth + 1)
+            found |= base_keys(definition, depth + 1, named)
     return found
 
 

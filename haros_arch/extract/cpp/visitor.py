@@ -906,7 +906,7 @@ class CallFinder:
             return False  # not declared in the class as a friend: its member
         owner = function.semantic_parent
         return owner is not None and self.declared is not None and any(
-            where == self.declared for where, _ in base_keys(owner))
+            where == self.declared for where, _ in base_keys(owner, named=True))
 
     def _unknown_callee(self, call: Cursor) -> Cursor | None:
         """What ``call`` runs whose code the parse does not have: a function or class
