@@ -103,7 +103,7 @@ class CallSites:
         return unknown
 
     def _shared(self, function: Cursor | None) -> bool:
-        """Whether the node's other files may call the constructor ``function`` too, and
+        """Whether the node's other files may call the function ``function`` too, and
         only this unit reads its code: defined in this unit's own source, first declared
         in a header, with external linkage. The calls this unit holds are then not all its
         calls, and their agreeing on a value does not give the value (ouster_ros'
@@ -113,12 +113,14 @@ class CallSites:
         unit that includes it, each with its own calls (nav2's ``LifecycleNode(name, ns,
         options)``)."""
         if function is None or self.main is None or function.kind not in (
-                CursorKind.CONSTRUCTOR, CursorKind.FUNCTION_DECL):
-            # a constructor's, or a free function's (msckf_vio's ``utils::getTransformCV(
+                CursorKind.CONSTRUCTOR, CursorKind.FUNCTION_DECL, CursorKind.CXX_METHOD) or (
+                function.kind == CursorKind.CXX_METHOD and function.is_virtual_method()):
+            # a constructor's, a free function's (msckf_vio's ``utils::getTransformCV(
             # nh, field)``, called in utils.cpp and with its transforms' names in
-            # image_processor.cpp): a method's values (a handle's namespace, a name) come
-            # through its own class's code, a virtual one's from the host's calls of the
-            # methods it overrides (``links.OVERRIDES``, ``HOST_NAMED``)
+            # image_processor.cpp) or a non-virtual method's (hector_exploration_planner's
+            # ``initialize(name, costmap)``, called by its own file's constructor and by
+            # the exploration node's file); a virtual method's values come from the
+            # host's calls of the methods it overrides (``links.OVERRIDES``, ``HOST_NAMED``)
             return False
         canonical = function.canonical
         where = canonical.location.file if canonical is not None else None
