@@ -193,3 +193,79 @@ def test_a_folder_of_another_package_s_exported_include(tmp_path) -> None:
                          cache_dir=None)
     assert [(c.kind, c.name) for c in result.calls] == [("declare", "rate"), ("publish", "x")]
     assert [d.code for d in result.diagnostics if d.code.startswith("CPP_")] == []
+
+
+DRIVER_CMAKE = """\
+cmake_minimum_required(VERSION 3.0.2)
+project(imu_driver)
+find_package(catkin REQUIRED COMPONENTS roscpp std_msgs)
+catkin_package()
+set(SDK_INC sdk/C/Library/Include)
+set(SDK_UTIL_INC sdk/C/Utilities/Include)
+set(SDK_INCS ${SDK_INC} ${SDK_UTIL_INC})
+set(OLD_INC sdk/old)
+set(OLD_INC sdk/older)
+set(USER_INC sdk/user CACHE PATH "the user functions")
+include_directories(include/${PROJECT_NAME} ${SDK_INCS} ${OLD_INC} ${USER_INC}
+                    ${catkin_INCLUDE_DIRS})
+add_executable(imu_node src/imu_node.cpp)
+"""
+SDK_HEADER = """\
+#ifndef SDK_H
+#define SDK_H
+typedef unsigned char u8;
+typedef unsigned short u16;
+#define SDK_OK 0
+int sdk_open(u16 port);
+#endif
+"""
+DRIVER_SOURCE = """\
+#include <ros/ros.h>
+#include <std_msgs/UInt8.h>
+#include "sdk.h"
+#include "byteswap.h"
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "imu");
+  ros::NodeHandle nh("~");
+  u16 port = 0;
+  nh.param("port", port, port);
+  if (sdk_open(port) != SDK_OK) {
+    return 1;
+  }
+  u8 status = swap_byte(SDK_OK);
+  ros::Publisher pub = nh.advertise<std_msgs::UInt8>("status", 1);
+  ros::spin();
+  return status;
+}
+"""
+
+
+def test_include_folders_given_through_set_variables(tmp_path) -> None:
+    """microstrain_mips' ``set(MIPLIBINC MIPSDK/C/Library/Include)`` then
+    ``include_directories(include/${PROJECT_NAME} ${MIPLIBINC} ${MIPUTILINC} ...)``: the
+    SDK's headers were missing (``u8``, ``u16`` unknown types in every function of the
+    driver, which advertises and reads its parameters: the node partial). A variable set
+    to one value (in turn through another) is that value; one set to two values, or a
+    cache entry's default, is not known."""
+    root = tmp_path / "imu_driver"
+    files = {
+        "package.xml": package_xml("imu_driver", "catkin"),
+        "CMakeLists.txt": DRIVER_CMAKE,
+        "sdk/C/Library/Include/sdk.h": SDK_HEADER,
+        "sdk/C/Utilities/Include/byteswap.h": "unsigned char swap_byte(unsigned char b);\n",
+        "sdk/old/.keep": "", "sdk/older/.keep": "", "sdk/user/.keep": "",
+        "src/imu_node.cpp": DRIVER_SOURCE,
+    }
+    for name, text in files.items():
+        path = root / name
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(text)
+    ws = scan([str(tmp_path)])
+    assert cmake_include_dirs(str(root), ws) == [
+        str(root / "sdk" / "C" / "Library" / "Include"),
+        str(root / "sdk" / "C" / "Utilities" / "Include")]
+    result = extract_cpp([str(root / "src" / "imu_node.cpp")], ws, cache_dir=None)
+    assert sorted((c.kind, c.name) for c in result.calls) == [
+        ("publish", "~status"), ("read", "~port")]
+    assert not {"CPP_INCLUDE_MISSING", "CPP_PARSE_ERROR", "CPP_NODE_PARTIAL"} & {
+        d.code for d in result.diagnostics}

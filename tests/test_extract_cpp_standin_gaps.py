@@ -679,3 +679,30 @@ def test_ros2_optional_compared_with_nullopt(write_tree) -> None:
     result = _extract(write_tree, _source("ros2_optional_nullopt.cpp"), "ament_cmake")
     assert _errors(result) == []
     assert [(c.kind, c.name) for c in result.calls] == [("subscribe", "in")]
+
+
+def test_ros1_glog_logging_and_checks_beside_the_calls(write_tree) -> None:
+    """voxblox's servers and cartographer_ros log and check with glog: with its header
+    missing, ``google::InitGoogleLogging(argv[0]);`` was read as a declaration of a new
+    ``argv`` (the name declared permissively as a class) and every CHECK / DCHECK / LOG
+    an error, in functions that call the ROS API: the node partial, its handles' calls
+    in doubt. With a stand-in (gflags' functions in namespace google too, as Ubuntu's
+    build has them), no error and every call."""
+    result = _extract(write_tree, _source("ros1_glog.cpp"), "catkin")
+    assert _errors(result) == []
+    assert sorted((c.kind, c.name) for c in result.calls) == [
+        ("publish", "~mesh"), ("read", "~voxel_size"), ("subscribe", "input")]
+    assert "CPP_NODE_PARTIAL" not in {d.code for d in result.diagnostics}
+
+
+def test_ros1_c_library_functions_beside_the_calls(write_tree) -> None:
+    """microstrain_mips' service clients read their arguments with ``atoll`` (23 programs,
+    each partial: 'use of undeclared identifier' in main, which calls the API), its
+    driver times out with ``clock()``; VINS-Fusion's ``fminf`` / ``ceilf``, voxblox's
+    ``std::remainder`` / ``std::log2``, rovio's ``std::sinh`` and its stream's
+    ``imbue(std::locale(...))``: the C library's and <cmath>'s functions are declared,
+    so none is an error."""
+    result = _extract(write_tree, _source("ros1_libc.cpp"), "catkin")
+    assert _errors(result) == []
+    assert sorted((c.kind, c.name) for c in result.calls) == [
+        ("client", "SetAccelBias"), ("publish", "gain")]

@@ -1078,3 +1078,16 @@ def test_every_use_of_a_declared_template_gives_its_values_at_once() -> None:
     assert ("template <class T0 = haros_any, long long V1 = 0, long long V2 = 0, "
             "long long V3 = 0, class... T> struct AutoDiffCostFunction") in header
     assert "template <class... T> struct Foo" in header
+
+
+def test_an_unqualified_call_in_a_class_template_is_no_dependent_base_s_method() -> None:
+    """rovio's FeatureOutput, ImuPrediction, ... are class templates derived from
+    lightweight_filtering's templates of their own parameter (the library missing): their
+    ``MPD(qDC)``, ``gSM(...)`` on vendor values were each "the node (this) given to MPD"
+    (54 CPP_NODE_TO_UNKNOWN in rovio_node). C++ never finds a dependent base's member by
+    an unqualified name; a base that depends on no parameter still may be called so."""
+    result = extract("vendor_dependent_base_adl.cpp")
+    assert rows(result) == [("publish", "pose", "std_msgs/String", 34)]
+    unknown = [(d.code, d.location.line) for d in result.diagnostics
+               if d.code == "CPP_NODE_TO_UNKNOWN"]
+    assert unknown == [("CPP_NODE_TO_UNKNOWN", 25)]  # Layer's, not FeatureOutput's

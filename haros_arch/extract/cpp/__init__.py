@@ -261,7 +261,8 @@ def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True
     facts = [fact for unit in units for fact in unit.facts]
     # where a construction may be missed: the words of the code around the errors the
     # parse left (an error drops its statement), everywhere when a file was not read
-    unseen = {word for unit in units for word in unit.unseen} if complete else {"*"}
+    unseen = {word for unit in units for word in unit.unseen} | links.opaque_unseen(
+        facts) if complete else {"*"}
     built = _built_under(facts, unseen)
     called = call_conditions.shared(facts, unseen)
     known = links.NodeFacts(facts)  # read once for every unit's calls
@@ -764,7 +765,7 @@ def _translation_unit(path: str, text: str, ros2: bool,
     # function it does not know) may construct anything there
     result.unseen = ["*"] if any(d.code in _HANDED for d in result.diagnostics) else sorted(
         word.decode() for word in _unseen(errors, finder, source) | finder.unseen)
-    if result.unseen and result.unseen != ["*"]:
+    if (result.unseen or finder.opaque_words) and result.unseen != ["*"]:
         result.facts = [*result.facts, *call_conditions.hidden_facts(
             finder.unit_cursor(), owned, _error_words(errors, finder, source))]
     finder.release()

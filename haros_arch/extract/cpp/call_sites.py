@@ -103,7 +103,7 @@ class CallSites:
         return unknown
 
     def _shared(self, function: Cursor | None) -> bool:
-        """Whether the node's other files may call the constructor ``function`` too, and
+        """Whether the node's other files may call the function ``function`` too, and
         only this unit reads its code: defined in this unit's own source, first declared
         in a header, with external linkage. The calls this unit holds are then not all its
         calls, and their agreeing on a value does not give the value (ouster_ros'
@@ -113,12 +113,14 @@ class CallSites:
         unit that includes it, each with its own calls (nav2's ``LifecycleNode(name, ns,
         options)``)."""
         if function is None or self.main is None or function.kind not in (
-                CursorKind.CONSTRUCTOR, CursorKind.FUNCTION_DECL):
-            # a constructor's, or a free function's (msckf_vio's ``utils::getTransformCV(
+                CursorKind.CONSTRUCTOR, CursorKind.FUNCTION_DECL, CursorKind.CXX_METHOD) or (
+                function.kind == CursorKind.CXX_METHOD and function.is_virtual_method()):
+            # a constructor's, a free function's (msckf_vio's ``utils::getTransformCV(
             # nh, field)``, called in utils.cpp and with its transforms' names in
-            # image_processor.cpp): a method's values (a handle's namespace, a name) come
-            # through its own class's code, a virtual one's from the host's calls of the
-            # methods it overrides (``links.OVERRIDES``, ``HOST_NAMED``)
+            # image_processor.cpp) or a non-virtual method's (hector_exploration_planner's
+            # ``initialize(name, costmap)``, called by its own file's constructor and by
+            # the exploration node's file); a virtual method's values come from the
+            # host's calls of the methods it overrides (``links.OVERRIDES``, ``HOST_NAMED``)
             return False
         canonical = function.canonical
         where = canonical.location.file if canonical is not None else None
@@ -133,6 +135,17 @@ class CallSites:
         """Whether the node's other files may call ``function`` (``_shared``), when its
         string parameters are placeholders (``external``)."""
         return self.external and self._shared(function)
+
+    def member_placeholder(self, field: Cursor) -> str | None:
+        """The placeholder of a handle member ``field`` that the unit's files never set
+        and whose class's constructors are all defined in other files
+        (``constructed_elsewhere``): the value those files' code gives it
+        (``links.MEMBER``), filled for the node. None when the unit passes no value to
+        other files (``external``) or the member has no USR."""
+        usr = field.get_usr()
+        if not self.external or not usr or PLACEHOLDER in usr or SEPARATOR in usr:
+            return None
+        return f"{PLACEHOLDER}{usr}{SEPARATOR}0{PLACEHOLDER}"
 
     def placeholder(self, parm: Cursor) -> str | None:
         """The placeholder part of ``parm`` (None for a parameter of no function)."""
@@ -309,9 +322,7 @@ class CallSites:
         ):  # a class of the workspace's own files, not a message (synthesised): its
             # field holds what is received or filled in at run time
             return
-        constructors = [c for c in owner.get_children() if c.kind in _CONSTRUCTORS
-                        and is_constructor(c)]
-        if constructors and all(c.get_definition() is None for c in constructors):
+        if constructed_elsewhere(field, self.source):
             named = f"{owner.spelling}::{field.spelling}"
             if named not in self.elsewhere:
                 self.elsewhere.append(named)
@@ -425,15 +436,20 @@ class CallSites:
         return self._index
 
 
-def base_keys(cls: Cursor, depth: int = 0) -> set[tuple[str, int]]:
+def base_keys(cls: Cursor, depth: int = 0, named: bool = False) -> set[tuple[str, int]]:
     """The keys of ``cls``'s base classes, transitively; a base that is a class
-    template's specialisation (``Navigator<ToPose>``) also as that template."""
+    template's specialisation (``Navigator<ToPose>``) also as that template. ``named``:
+    only the bases whose members an unqualified name may find, not one that depends on
+    a template parameter (C++ looks no name up there until the template is used: rovio's
+    ``FeatureOutputCT<STATE> : public LWF::CoordinateTransform<STATE, ...>``)."""
     found: set[tuple[str, int]] = set()
     if depth > 8:
         return found
     for base in cls.get_children():
         if base.kind != CursorKind.CXX_BASE_SPECIFIER:
             continue
+        if named and base.type.get_canonical().kind != TypeKind.RECORD:
+            continue  # a dependent base (a template parameter's, or a template of one)
         decl = base.type.get_canonical().get_declaration()
         template = conf.lib.clang_getSpecializedCursorTemplate(decl)
         for each in (decl, template):
@@ -443,7 +459,7 @@ def base_keys(cls: Cursor, depth: int = 0) -> set[tuple[str, int]]:
         if definition is None and template is not None:
             definition = template.get_definition()
         if definition is not None:
-            found |= base_keys(definition, depth + 1)
+            found |= base_keys(definition, depth + 1, named)
     return found
 
 
@@ -684,6 +700,20 @@ class Fork:
     field: tuple[str, int]
     options: list[tuple[Cursor | None, Cursor]]
     local: bool = False
+
+
+def constructed_elsewhere(field: Cursor, source: dict[str, bytes]) -> bool:
+    """Whether ``field`` is a member of a class of the workspace's files that declares
+    constructors and whose every constructor is defined outside this unit: what they
+    give the member is not seen here."""
+    owner = field.semantic_parent
+    where = owner.location.file if owner is not None else None
+    if owner is None or field.kind != CursorKind.FIELD_DECL or (
+            where is None or where.name not in source):
+        return False
+    constructors = [c for c in owner.get_children() if c.kind in _CONSTRUCTORS
+                    and is_constructor(c)]
+    return bool(constructors) and all(c.get_definition() is None for c in constructors)
 
 
 def constructor_values(field: Cursor, source: dict[str, bytes]

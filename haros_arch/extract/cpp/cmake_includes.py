@@ -12,13 +12,18 @@ exported ``include`` (``${champ_INCLUDE_DIRS}/champ/``). Not a folder
 of a library the package builds with ``add_subdirectory`` (one with a CMakeLists.txt of
 its own that calls ``project()``, slam_toolbox's ``lib/karto_sdk/include``), whose
 headers the parse synthesises as those of a missing package (see
-``headers._library_include_dirs``).
+``headers._library_include_dirs``). A word that is a variable the package's CMake files
+``set`` to one value, or to the same value wherever they set it, is that value (in turn,
+a few levels): microstrain_mips' ``set(MIPLIBINC MIPSDK/C/Library/Include)`` then
+``include_directories(include/${PROJECT_NAME} ${MIPLIBINC} ...)``, where the SDK's headers
+are.
 """
 
 from __future__ import annotations
 
 import os
 import re
+from collections.abc import Iterable
 
 from ...files import read_text
 from ...workspace import Workspace
@@ -32,6 +37,10 @@ _BUILD_INTERFACE = re.compile(r"\$<BUILD_INTERFACE:([^>]*)>")
 _FILE_DIRS = ("${CMAKE_CURRENT_SOURCE_DIR}", "${CMAKE_CURRENT_LIST_DIR}")
 _ROOT_DIRS = ("${PROJECT_SOURCE_DIR}", "${CMAKE_SOURCE_DIR}")
 _PROJECT = re.compile(r"^[ \t]*project\s*\(", re.IGNORECASE | re.MULTILINE)
+_SET = re.compile(r"^[ \t]*set\s*\(\s*([A-Za-z_][A-Za-z0-9_]*)([^)]*)\)",
+                  re.IGNORECASE | re.MULTILINE)
+_VARIABLE = re.compile(r"\$\{([A-Za-z_][A-Za-z0-9_]*)\}")
+MAX_EXPANSIONS = 4  # variables within variables
 MAX_PROJECT_READ = 256 * 1024
 
 
@@ -47,21 +56,25 @@ def cmake_include_dirs(root: str, workspace: Workspace) -> list[str]:
     package = workspace.package_of(root)
     project = package.name if package is not None and package.root == root and (
         package.build_type in ("ament_cmake", "catkin")) else None
+    texts: list[tuple[str, str]] = []
     for path in cmake_files(root):
         text, _ = read_text(path, workspace.location(path))
+        texts.append((path, _COMMENT.sub("", text or "")))
+    variables = _variables(text for _, text in texts)
+    for path, text in texts:
         here = os.path.dirname(path)
-        for match in _COMMAND.finditer(_COMMENT.sub("", text or "")):
+        for match in _COMMAND.finditer(text):
             words = match.group(2).split()
             if match.group(1).lower() == "target_include_directories":
                 words = words[1:]  # the target
-            for word in words:
-                word = word.strip("\"'")
-                if project is not None:
-                    word = word.replace("${PROJECT_NAME}", project)
-                word, owner = _exported(word, workspace, root)
-                named = _folder(word, here, owner)
-                if named is not None and named not in found and _owned(named, owner):
-                    found.append(named)
+            for written in words:
+                for word in _expanded(written.strip("\"'"), variables):
+                    if project is not None:
+                        word = word.replace("${PROJECT_NAME}", project)
+                    word, owner = _exported(word, workspace, root)
+                    named = _folder(word, here, owner)
+                    if named is not None and named not in found and _owned(named, owner):
+                        found.append(named)
     return found
 
 
@@ -80,6 +93,43 @@ def _exported(word: str, workspace: Workspace, root: str) -> tuple[str, str]:
         return word, root
     owner = os.path.abspath(package.root)
     return os.path.join(owner, "include") + word[found.end():], owner
+
+
+def _variables(texts: Iterable[str]) -> dict[str, list[str]]:
+    """The variables the CMake ``texts`` set to one value (its words), or to the same
+    value each time; not those set to several values, nor a cache entry's default
+    (``set(X value CACHE ...)``: the command line may give another)."""
+    values: dict[str, list[str] | None] = {}
+    for text in texts:
+        for match in _SET.finditer(text):
+            name, words = match.group(1), [w.strip("\"'") for w in match.group(2).split()]
+            if "CACHE" in words:
+                values[name] = None
+                continue
+            if words[-1:] == ["PARENT_SCOPE"]:
+                words = words[:-1]
+            if name in values and values[name] != words:
+                values[name] = None
+            else:
+                values[name] = words
+    return {name: words for name, words in values.items() if words}
+
+
+def _expanded(word: str, variables: dict[str, list[str]], depth: int = 0) -> list[str]:
+    """``word`` with each variable of ``variables`` it is wholly replaced by that
+    variable's words, or with one it holds replaced by its one word; as written else."""
+    whole = _VARIABLE.fullmatch(word)
+    if depth >= MAX_EXPANSIONS or "$" not in word:
+        return [word]
+    if whole is not None and whole.group(1) in variables:
+        return [w for value in variables[whole.group(1)]
+                for w in _expanded(value, variables, depth + 1)]
+
+    def one(found: re.Match[str]) -> str:
+        value = variables.get(found.group(1))
+        return value[0] if value is not None and len(value) == 1 else found.group(0)
+    replaced = _VARIABLE.sub(one, word)
+    return [word] if replaced == word else _expanded(replaced, variables, depth + 1)
 
 
 def _folder(word: str, here: str, root: str) -> str | None:

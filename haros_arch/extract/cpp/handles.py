@@ -14,7 +14,13 @@ import re
 from clang.cindex import Cursor, CursorKind, TypeKind, conf
 
 from . import api
-from .call_sites import CallSites, member_initialiser, uses_parameter, value_text
+from .call_sites import (
+    CallSites,
+    constructed_elsewhere,
+    member_initialiser,
+    uses_parameter,
+    value_text,
+)
 from .expressions import qualified_name
 from .members import MemberWrites
 from .values import (
@@ -173,31 +179,7 @@ class Namespaces:
                 return self._dropped_prefix(decl)
             return UNKNOWN if value is None else self.of(value, scope, depth + 1)
         if kind == CursorKind.MEMBER_REF_EXPR and expr.referenced is not None:
-            field = expr.referenced
-            known = api.HANDLE_MEMBERS.get((qualified_name(field.semantic_parent),
-                                            field.spelling))
-            if known is not None:
-                return (known,)
-            found = member_initialiser(field, self.source) if self.sites is None else (
-                self.sites.member(field, scope.body))
-            if found is None or found[1].kind != CursorKind.CONSTRUCTOR:
-                assigned = self._assigned(field, depth)  # not set by a constructor: by the unit
-                if assigned is _UNSURE:
-                    return UNKNOWN
-                found = found or assigned
-            value, where = found if found is not None else (None, None)
-            if value is None and found is not None:  # left to its default initialiser
-                value, where = initializer(field), None
-            if value is None:
-                # a member nothing sets: the default handle when it holds one; a pointer
-                # (or smart pointer) to one points to a handle set where we do not see
-                # (``Impl impl{&nh}``, a copy of the struct): not known
-                return ("",) if is_handle(expr) and _holds_handle(field) else UNKNOWN
-            # read where it is written: ``ros::NodeHandle right(nh, "right"); right_nh_ =
-            # right;``
-            return self.of(value, Scope(None, self.macros, self.source, self.sites)
-                           if where is None or self.sites is None else self.sites.scope(where),
-                           depth + 1)
+            return self.member(expr.referenced, scope.body, depth, is_handle(expr))
         if kind == CursorKind.CXX_NEW_EXPR:
             inner = [c for c in expr.get_children() if c.kind.is_expression()]
             return self.of(inner[-1], scope, depth + 1) if inner else UNKNOWN
@@ -236,6 +218,43 @@ class Namespaces:
         written = render(scope.string(args[0]))
         self._unknown(written, args[0], scope)
         return (normalise(written),)
+
+    def member(self, field: Cursor, body: Cursor | None, depth: int = 0,
+               handle: bool = True) -> Parts:
+        """The namespace of the handle member ``field`` (read in ``body``, None: no
+        function's)."""
+        known = api.HANDLE_MEMBERS.get((qualified_name(field.semantic_parent),
+                                        field.spelling))
+        if known is not None:
+            return (known,)
+        found = member_initialiser(field, self.source) if self.sites is None else (
+            self.sites.member(field, body))
+        if found is None or found[1].kind != CursorKind.CONSTRUCTOR:
+            assigned = self._assigned(field, depth)  # not set by a constructor: by the unit
+            if assigned is _UNSURE:
+                return UNKNOWN
+            found = found or assigned
+        value, where = found if found is not None else (None, None)
+        if value is None and found is not None:  # left to its default initialiser
+            value, where = initializer(field), None
+        if value is None:
+            # a member nothing sets: the default handle when it holds one, unless its
+            # class's constructors are all in other files (a base class's handle that
+            # the base's constructor, in another file of the node, sets: voxblox's
+            # EsdfServer publishes on TsdfServer's ``nh_private_``): what those give it
+            # (``links.MEMBER``); a pointer (or smart pointer) to one points to a handle
+            # set where we do not see (``Impl impl{&nh}``, a copy of the struct): not known
+            if not (handle and holds_handle(field)):
+                return UNKNOWN
+            if self.sites is not None and constructed_elsewhere(field, self.source):
+                marker = self.sites.member_placeholder(field)
+                return (marker,) if marker is not None else UNKNOWN
+            return ("",)
+        # read where it is written: ``ros::NodeHandle right(nh, "right"); right_nh_ =
+        # right;``
+        return self.of(value, Scope(None, self.macros, self.source, self.sites)
+                       if where is None or self.sites is None else self.sites.scope(where),
+                       depth + 1)
 
     def _unknown(self, written: str, expr: Cursor, scope: Scope) -> None:
         """Note ``expr`` as what gave a namespace its unknown run (``unknown_from``)."""
@@ -353,7 +372,7 @@ def pointee(expr: Cursor) -> Cursor:
     return strip(objects[0]) if len(objects) == 1 else expr
 
 
-def _holds_handle(field: Cursor) -> bool:
+def holds_handle(field: Cursor) -> bool:
     """A member whose type is a handle class itself, not a pointer or reference to one."""
     ctype = field.type.get_canonical()
     if ctype.kind in (TypeKind.POINTER, TypeKind.LVALUEREFERENCE, TypeKind.RVALUEREFERENCE):

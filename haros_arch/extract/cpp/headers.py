@@ -130,7 +130,7 @@ UMBRELLAS = {
     "angles/": "angles/angles.h",
     "urdf/": "urdf/model.h", "urdf_model/": "urdf/model.h", "urdf_parser/": "urdf/model.h",
     "cv_bridge/": "cv_bridge/cv_bridge.h", "Eigen/": "Eigen/Dense", "eigen3/": "Eigen/Dense",
-    "yaml-cpp/": "yaml-cpp/yaml.h", "gflags/": "gflags/gflags.h",
+    "yaml-cpp/": "yaml-cpp/yaml.h", "gflags/": "gflags/gflags.h", "glog/": "glog/logging.h",
     **{f"Qt{m}/": QT for m in ("Core", "Gui", "Widgets", "Network", "Concurrent", "Test")},
 }
 SHADOWED = ("ros/", "boost/", "tf/", *UMBRELLAS)

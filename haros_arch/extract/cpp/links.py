@@ -81,8 +81,23 @@ STRING_OVERRIDES = -10
 # the index of a fact that says the call site passes, at the parameter whose index is
 # the fact's value, a string written in literals alone (no variable, member or parameter)
 LITERAL = -11
+# the index of a fact that says the unit builds an object through the constructor (the
+# fact's USR) without its code, and the words of the class's declaration (the value, one
+# space between them) name what that code may construct: unseen by the node unless one
+# of its units has the code (``DEFINED``). voxblox's esdf_server_node.cc builds
+# ``EsdfServer(nh, nh_private)``, whose class derives from TsdfServer; esdf_server.cc,
+# of the same node, defines that constructor and shows which of TsdfServer's it calls
+OPAQUE = -15
+# the index of a fact that says the unit's own source defines the constructor
+DEFINED = -16
+# the index of a fact that says the namespace of a handle member (the fact's USR, a
+# field's) is its value where the unit (its own source the fact's site) defines a
+# constructor of the member's class: another unit that reads the member and has none of
+# those constructors holds it as a placeholder (``CallSites.member_placeholder``)
+MEMBER = -17
 # facts that say no call of their function
-NOT_CALLS = frozenset({OVERRIDES, HOST_NAMED, CALLED_VIRTUAL, STRING_OVERRIDES, LITERAL})
+NOT_CALLS = frozenset({OVERRIDES, HOST_NAMED, CALLED_VIRTUAL, STRING_OVERRIDES, LITERAL,
+                       OPAQUE, DEFINED, MEMBER})
 _SPECIALISED = frozenset({CursorKind.FUNCTION_DECL, CursorKind.CONSTRUCTOR,
                           CursorKind.CXX_METHOD})
 MAX_VALUES = 32  # realsense2_camera's setParam is called with ~30 names in its files
@@ -156,6 +171,56 @@ def argument_facts(sites: CallSites, namespaces: Namespaces,
 
 
 _VARIABLES = frozenset({CursorKind.VAR_DECL, CursorKind.FIELD_DECL, CursorKind.PARM_DECL})
+
+
+def opaque_facts(functions: Iterable[Cursor], main: str,
+                 words: dict[str, set[bytes]]) -> list[Fact]:
+    """The ``OPAQUE`` facts of the constructions whose constructor's code the unit has
+    not (``words``: by the constructor's USR), and a ``DEFINED`` fact for each
+    constructor the unit's own source ``main`` defines."""
+    facts: list[Fact] = [(usr, OPAQUE, " ".join(sorted(w.decode() for w in found)), "")
+                         for usr, found in sorted(words.items())]
+    for function in functions:
+        where = function.location.file
+        if function.kind == CursorKind.CONSTRUCTOR and where is not None and (
+                where.name == main) and function.is_definition():
+            usr = function.canonical.get_usr()
+            if usr:
+                facts.append((usr, DEFINED, "", ""))
+    return facts
+
+
+def member_facts(functions: Iterable[Cursor], main: str,
+                 namespace: Callable[[Cursor], str | None]) -> list[Fact]:
+    """A ``MEMBER`` fact for each handle member of the classes whose constructors the
+    unit's own source ``main`` defines, with its namespace as ``namespace`` gives it
+    (None: not one to say)."""
+    facts: list[Fact] = []
+    seen: set[str] = set()
+    for function in functions:
+        where = function.location.file
+        owner = function.semantic_parent
+        if function.kind != CursorKind.CONSTRUCTOR or where is None or where.name != main or (
+                owner is None or not function.is_definition()):
+            continue
+        for field in owner.get_children():
+            usr = field.get_usr() if field.kind == CursorKind.FIELD_DECL else ""
+            if not usr or usr in seen:
+                continue
+            seen.add(usr)
+            value = namespace(field)
+            if value is not None and usr not in _marked_usrs(value):
+                facts.append((usr, MEMBER, value, main))
+    return facts
+
+
+def opaque_unseen(facts: Iterable[Fact]) -> set[str]:
+    """The words of the node's ``OPAQUE`` facts whose constructor no unit of the node
+    defines: what that code may construct is not seen."""
+    facts = list(facts)
+    defined = {usr for usr, index, _value, _site in facts if index == DEFINED}
+    return {word for usr, index, value, _site in facts
+            if index == OPAQUE and usr not in defined for word in value.split()}
 
 
 def _literal(arg: Cursor, value: str) -> bool:
@@ -485,6 +550,8 @@ def _passed(facts: Iterable[Fact]) -> dict[str, dict[str, dict[int, str]]]:
     for usr, index, value, site in facts:
         if index >= 0:
             passed.setdefault(usr, {}).setdefault(site, {})[index] = value
+        elif index == MEMBER:  # a member's value where its constructors are
+            passed.setdefault(usr, {}).setdefault(site, {})[0] = value
     for usr, index, base, parameter in facts:
         if index == OVERRIDES and base in passed and parameter.isdigit():
             # the calls of the base method: sites of the override too, for that

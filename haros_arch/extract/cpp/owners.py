@@ -123,10 +123,18 @@ def unseen_construction(call: Cursor, owned: Callable[[str], bool]
 def opaque_construction(call: Cursor, owned: Callable[[str], bool]) -> Cursor | None:
     """The workspace class ``call`` constructs when the code of its constructor is not
     in this translation unit: what that constructor builds is not seen here."""
+    made = opaque_constructor(call, owned)
+    return made[0] if made is not None else None
+
+
+def opaque_constructor(call: Cursor, owned: Callable[[str], bool]
+                       ) -> tuple[Cursor, Cursor | None] | None:
+    """``opaque_construction``'s class with the constructor ``call`` calls (None when
+    made through a factory, which may call any)."""
     made = _construction(call, owned)
     if made is None or _code_here(made[1], made[0]):
         return None
-    return made[0]
+    return made
 
 
 def constructors_here(cls: Cursor) -> bool:

@@ -36,6 +36,7 @@ from .handles import (
     Namespaces,
     callback,
     callback_name,
+    holds_handle,
     is_handle,
     join_name,
     normalise,
@@ -51,7 +52,7 @@ from .owners import (
     constructors_here,
     handle_node,
     node_arguments,
-    opaque_construction,
+    opaque_constructor,
     options_arguments,
     owner_of,
     unseen_construction,
@@ -210,6 +211,9 @@ class CallFinder:
         # the words of the declarations of the classes the unit constructs without the
         # code of their constructor: what those build is not seen (``links.resolve``)
         self.unseen: set[bytes] = set()
+        # the same words of a construction whose constructor is known, by its USR: unseen
+        # unless a unit of the node defines that constructor (``links.OPAQUE``)
+        self.opaque_words: dict[str, set[bytes]] = {}
         self.facts: list[Fact] = []  # what this file passes to other files' functions
         self.wrappers = Wrappers(self)  # the file's functions that wrap the ROS API
         self.members: MemberWrites | None = None
@@ -272,6 +276,10 @@ class CallFinder:
         self.facts.extend(call_conditions.site_facts(
             self.functions, self.sites, self.reader, self.owned, self._enter, self._walked,
             self.globals, self.declared))
+        self.facts.extend(links.opaque_facts(self.functions, self.tu.spelling,
+                                             self.opaque_words))
+        self.facts.extend(links.member_facts(self.functions, self.tu.spelling,
+                                             self._member_namespace))
         self.wrappers.preorder.clear()
         self.wrappers.references.clear()
         for call in self.calls:  # get_parameter("p") of a declare_parameter("p", default)
@@ -279,6 +287,13 @@ class CallFinder:
                 call.name_param in self._declared
             ):
                 call.name_default, call.default_param = self._declared[call.name_param]
+
+    def _member_namespace(self, field: Cursor) -> str | None:
+        """The namespace of a handle member, as the unit's constructors of its class give
+        it (``links.member_facts``); None for a member that holds no handle."""
+        if not holds_handle(field):
+            return None
+        return render(self.namespaces.member(field, None))
 
     def unit_cursor(self) -> Any:
         """The unit's cursor as a node (``run``), until ``release``."""
@@ -725,16 +740,24 @@ class CallFinder:
         """Record that the function being walked constructs a class of the workspace;
         say so when that class is another package's, built here with the node and
         defined elsewhere (``CPP_NODE_PASSED``: its calls on the node are not read)."""
-        opaque = opaque_construction(call, self.owned)
+        made = opaque_constructor(call, self.owned)
+        opaque, constructor = made if made is not None else (None, None)
         if opaque is not None and opaque.location.file is not None:
             # its class's declaration: the members it may construct, unseen here
             data = self.source.get(opaque.location.file.name)
             extent = opaque.extent
+            usr = constructor.canonical.get_usr() if constructor is not None else ""
             if data is not None:
                 # not the class's own name, which its declaration writes and its
                 # constructor (read where it is defined) does not construct again
-                self.unseen.update(set(WORDS.findall(
-                    data[extent.start.offset:extent.end.offset])) - {opaque.spelling.encode()})
+                words = set(WORDS.findall(
+                    data[extent.start.offset:extent.end.offset])) - {opaque.spelling.encode()}
+                if usr:
+                    # unseen here only: another unit of the node may have the
+                    # constructor's code (``links.OPAQUE``)
+                    self.opaque_words.setdefault(usr, set()).update(words)
+                else:
+                    self.unseen.update(words)
         unseen = unseen_construction(call, self.owned) if opaque is not None else None
         if unseen is not None:
             cls, given = unseen
@@ -970,7 +993,7 @@ class CallFinder:
             return False  # not declared in the class as a friend: its member
         owner = function.semantic_parent
         return owner is not None and self.declared is not None and any(
-            where == self.declared for where, _ in base_keys(owner))
+            where == self.declared for where, _ in base_keys(owner, named=True))
 
     def _unknown_callee(self, call: Cursor) -> Cursor | None:
         """What ``call`` runs whose code the parse does not have: a function or class

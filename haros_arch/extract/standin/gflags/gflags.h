@@ -1,6 +1,8 @@
 // haros_arch stand-in: gflags (declarations only). A flag defined with DEFINE_<type>
 // holds what the command line gives it, so its variable is declared without a value (a
 // name taken from it is not known statically), not defined with the default.
+// Declared in namespace google, as Debian's and Ubuntu's build does (glog's namespace too),
+// and named in namespace gflags by using-declarations, as its gflags_gflags.h does.
 #ifndef HAROS_STANDIN_GFLAGS_GFLAGS_H
 #define HAROS_STANDIN_GFLAGS_GFLAGS_H
 #include <cstdint>
@@ -21,7 +23,7 @@
 #define DECLARE_double(name) extern double FLAGS_##name
 #define DECLARE_string(name) extern std::string FLAGS_##name
 #define DEFINE_validator(name, validator) static const bool haros_##name##_validator = true
-namespace gflags {
+namespace google {
 uint32_t ParseCommandLineFlags(int* argc, char*** argv, bool remove_flags);
 uint32_t ParseCommandLineNonHelpFlags(int* argc, char*** argv, bool remove_flags);
 void AllowCommandLineReparsing();
@@ -32,6 +34,17 @@ void ShowUsageWithFlags(const char* argv0);
 void ShutDownCommandLineFlags();
 bool GetCommandLineOption(const char* name, std::string* value);
 std::string SetCommandLineOption(const char* name, const char* value);
+}  // namespace google
+namespace gflags {
+using google::ParseCommandLineFlags;
+using google::ParseCommandLineNonHelpFlags;
+using google::AllowCommandLineReparsing;
+using google::SetUsageMessage;
+using google::SetVersionString;
+using google::ProgramUsage;
+using google::ShowUsageWithFlags;
+using google::ShutDownCommandLineFlags;
+using google::GetCommandLineOption;
+using google::SetCommandLineOption;
 }  // namespace gflags
-namespace google = gflags;
 #endif

@@ -29,6 +29,15 @@ using ::fopen; using ::fclose; using ::fread; using ::fwrite; using ::fgets; usi
 using ::fflush; using ::fgetc; using ::fputc; using ::fscanf; using ::sscanf; using ::feof;
 using ::ferror; using ::fseek; using ::ftell; using ::rewind; using ::remove; using ::rename;
 using ::puts; using ::perror; using ::calloc; using ::realloc; using ::raise;
+using ::atol; using ::atoll; using ::strtoul; using ::strtoll; using ::strtoull;
+using ::strtof; using ::strtold; using ::labs; using ::llabs; using ::div_t; using ::ldiv_t;
+using ::lldiv_t; using ::div; using ::ldiv; using ::lldiv; using ::qsort; using ::bsearch;
+using ::clock_t; using ::clock; using ::difftime; using ::system;
+using ::sinh; using ::cosh; using ::tanh; using ::asinh; using ::acosh; using ::atanh;
+using ::log2; using ::exp2; using ::log1p; using ::expm1; using ::cbrt; using ::remainder;
+using ::rint; using ::nearbyint; using ::lrint; using ::llround; using ::llrint; using ::fdim;
+using ::fma; using ::erf; using ::erfc; using ::tgamma; using ::lgamma; using ::frexp;
+using ::ldexp; using ::modf; using ::scalbn;
 double hypot(double x, double y, double z);
 float hypot(float x, float y, float z);
 typedef decltype(nullptr) nullptr_t;
@@ -978,6 +987,23 @@ public:
 class bad_alloc : public exception {};
 class bad_cast : public exception {};
 
+// <locale>: a stream's imbue with a locale (a facet's format: rovio's bag file names)
+class locale {
+public:
+  class facet {
+  protected:
+    explicit facet(size_t refs = 0);
+    virtual ~facet();
+  };
+  locale();
+  locale(const locale& other);
+  explicit locale(const char* name);
+  explicit locale(const string& name);
+  template <class Facet> locale(const locale& other, Facet* f);
+  static const locale& classic();
+  static locale global(const locale& loc);
+  string name() const;
+};
 // <iostream>, <sstream>, <fstream>, <iomanip>
 class ios_base {
 public:
@@ -1016,6 +1042,8 @@ public:
   bool fail() const;
   bool eof() const;
   explicit operator bool() const;
+  locale imbue(const locale& loc);
+  locale getloc() const;
 };
 typedef ios_base ios;
 typedef long streamsize;
