@@ -5,10 +5,13 @@ from __future__ import annotations
 import os
 
 from conftest import FIXTURES
+from lxml import etree
 
 from haros_arch import pipeline
 from haros_arch.model.runtime import Configuration
 from haros_arch.project import ConfigurationSpec, Project
+from haros_arch.robot.attach import _PluginArguments
+from haros_arch.workspace import Workspace
 
 ROOT = str(FIXTURES / "robot" / "ros2_args")
 
@@ -43,8 +46,37 @@ def test_plugin_arguments_that_rcl_reads_as_remaps_rename_the_plugin_node_topics
     ]
     said = sorted((d.code, d.location.line) for d in config.diagnostics
                   if d.code.startswith("GAZEBO_PLUGIN_ARGUMENT"))
-    assert said == [("GAZEBO_PLUGIN_ARGUMENT", 20), ("GAZEBO_PLUGIN_ARGUMENT", 27),
-                    ("GAZEBO_PLUGIN_ARGUMENT_UNKNOWN", 45)]
+    # ROS 1's __log_level:= is no rule to rcl (ignored), then imu_b's and imu_c's words
+    assert said == [("GAZEBO_PLUGIN_ARGUMENT", 6), ("GAZEBO_PLUGIN_ARGUMENT", 23),
+                    ("GAZEBO_PLUGIN_ARGUMENT", 30), ("GAZEBO_PLUGIN_ARGUMENT_UNKNOWN", 48)]
     # a rostopic:// rule is not modelled: said, and the node is partial
     assert config.node("/imu_e").completeness == "partial"
     assert config.node("/truth").completeness == "complete"
+
+
+def read(*words: str, name: str = "p") -> tuple[_PluginArguments, list[str]]:
+    config = Configuration("c")
+    said = _PluginArguments(name, Workspace("/nowhere"), config)
+    for word in words:
+        element = etree.Element("argument")
+        element.text = word
+        said.word(element)
+    said.end()
+    return said, [d.code for d in config.diagnostics]
+
+
+def test_an_argument_with_unknown_parts_is_said_and_not_applied():
+    said, codes = read("~/out:=?/scan", "odom:=odom/truth")
+    assert codes == ["GAZEBO_PLUGIN_ARGUMENT_UNKNOWN"] and said.partial
+    assert said.remaps_for("p") == [("odom", "odom/truth")]
+
+
+def test_rcl_flags_and_their_values():
+    # a parameter's value is no rule; --enable-*-logs takes no value; -- ends --ros-args
+    said, codes = read("--ros-args", "-p", "a:=?", "--disable-stdout-logs", "-r", "x:=y",
+                       "--", "u:=v", "--ros-args", "-r")
+    assert said.remaps_for("p") == [("x", "y"), ("u", "v")]
+    assert codes == ["GAZEBO_PLUGIN_ARGUMENT"]  # the -r no rule follows
+    # a relative __ns is no rule to rcl; a rule for another node is not this one's
+    said, codes = read("__ns:=relative", "q:a:=b", "p:c:=d")
+    assert said.remaps_for("p") == [("c", "d")] and said.namespace is None

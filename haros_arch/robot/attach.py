@@ -715,7 +715,8 @@ class _PluginArguments:
 
     def word(self, element: etree._Element) -> None:
         text = (element.text or "").strip()
-        if UNKNOWN_MARK in text:
+        remap_value = self.flag is not None and self.flag[0] in ("-r", "--remap")
+        if UNKNOWN_MARK in text and (remap_value or self.flag is None):
             self._say("GAZEBO_PLUGIN_ARGUMENT_UNKNOWN", element, text,
                       "its text has parts that are not known")
             self.flag = None
@@ -723,7 +724,7 @@ class _PluginArguments:
         if self.flag is not None:
             flag, _ = self.flag
             self.flag = None
-            if flag in ("-r", "--remap"):
+            if remap_value:
                 found = self._rule(text)
                 if found == "scheme":
                     self._unmodelled(element, text)
@@ -780,8 +781,9 @@ class _PluginArguments:
             node, left = left.split(":", 1)
         # rcl has no wildcards nor back references in rules yet: not rules
         if not _RULE_NAME.fullmatch(left) or not _RULE_NAME.fullmatch(right) or \
-                right.startswith("__"):
-            return "no"
+                right.startswith("__") or (left.startswith("__") and left not in (
+                    "__ns", "__node", "__name")):
+            return "no"  # ROS 1 / dashing's __log_level:=, __params:= are not rules
         if node is not None and not re.fullmatch(r"[A-Za-z_]\w*", node):
             return "no"
         if left == "__ns" and not right.startswith("/"):
