@@ -211,6 +211,20 @@ CATALOGUE: dict[str, Entry] = {
         "A <plugin> of a robot description names a library that is not in the table of "
         "Gazebo plugins (haros_arch/robot/gazebo_plugins.py); its topics and services are "
         "unknown and the Gazebo node instance is partial."),
+    "GAZEBO_PLUGIN_ARGUMENT": Entry(
+        "warning", "<argument> {argument} of Gazebo plugin {name}: {detail}",
+        "gazebo_ros hands a ROS 2 plugin's <ros><argument> texts to its node, each as one "
+        "command-line word, ahead of the --ros-args of its <remapping> rules. rcl applies a "
+        "from:=to word as a remap (a deprecated form, with a warning), and, after a "
+        "--ros-args word, reads -r/--remap rules and its other flags. This argument is "
+        "either ignored by rcl (one word with spaces, a word that is not a ROS argument "
+        "where a ROS argument was meant) or rejected (the plugin's node cannot be made): it "
+        "is not applied."),
+    "GAZEBO_PLUGIN_ARGUMENT_UNKNOWN": Entry(
+        "info", "<argument> {argument} of Gazebo plugin {name} is not known: {detail}",
+        "A ROS 2 plugin's <ros><argument> has parts that are not known statically, or a "
+        "form the tool does not model; its effect on the plugin node's names is unknown "
+        "and the plugin's node instance is partial."),
     "BRIDGE_CONFIG_FILE": Entry(
         "warning", "config file {path} of a ros_gz bridge cannot be read",
         "A ros_gz_bridge parameter_bridge's config_file does not exist, lies outside the "

@@ -417,12 +417,15 @@ def _plugin(element: etree._Element, spawn: Spawn, host: NodeInstance,
     if row.manager:
         managers.append(_manager(element, spawn, where, conditions, workspace, config,
                                  params))
-    instance = _ros2_instance(element, name, spawn, host, where, conditions)
+    instance, unknown = _ros2_instance(element, name, spawn, host, where, conditions,
+                                       workspace, config)
     calls = list(_calls(element, row, where, conditions, None))
     instance.node = Node("gazebo_plugins", _base(filename), kind="plugin", calls=calls,
                          location=where)
     if row.partial:
         instance.node.mark_partial(f"{row.partial} ({where.file}:{where.line})")
+    for reason in unknown:
+        instance.node.mark_partial(reason)
     described.node = instance.name
     taken = sum(1 for n in config.nodes if n.name == instance.name)
     if taken:  # two robots' plugins of one name in one namespace: kept apart by id
@@ -632,13 +635,19 @@ def _ros1_namespace(element: etree._Element, row: Plugin, spawn: Spawn,
 
 
 def _ros2_instance(element: etree._Element, name: str, spawn: Spawn, host: NodeInstance,
-                   where: Location, conditions: tuple[Condition, ...]) -> NodeInstance:
+                   where: Location, conditions: tuple[Condition, ...],
+                   workspace: Workspace, config: Configuration) -> tuple[NodeInstance, list[str]]:
+    """The plugin's node instance and why it is partial (its ``<argument>`` words)."""
     namespace = _child(element, "ros/namespace")
     if spawn.robot_namespace:
         namespace = spawn.robot_namespace
     namespace = as_namespace(namespace or "/")
-    remaps = []
     ros = element.find("ros")
+    said = _PluginArguments(name, workspace, config)
+    for argument in ros.iterfind("argument") if ros is not None else ():
+        said.word(argument)
+    said.end()
+    remaps = []
     for rule in ros.iterfind("remapping") if ros is not None else ():
         text = (rule.text or "").strip()
         source, sep, target = text.partition(":=")
@@ -646,12 +655,157 @@ def _ros2_instance(element: etree._Element, name: str, spawn: Spawn, host: NodeI
             source, sep, target = text.partition("=")
         if sep and source and target:
             remaps.append((source.strip(), target.strip()))
-    full = clean(namespace + (name or UNKNOWN_MARK))
+    # rcl takes the first rule that matches a name: the arguments come first (a later
+    # rule for the same name is left out, since remaps are read as a mapping)
+    first: dict[str, str] = {}
+    for source, target in said.remaps_for(name) + remaps:
+        first.setdefault(source, target)
+    remaps = list(first.items())
+    if said.namespace is not None:
+        namespace = as_namespace(said.namespace)
+    full = clean(namespace + (said.name or name or UNKNOWN_MARK))
     instance = NodeInstance(full, None, namespace=namespace, remaps=remaps,
                             conditions=(*host.conditions, *conditions), location=where,
                             origin="description", ros_version=2)
     instance.id = f"node:{full}"
-    return instance
+    return instance, said.partial
+
+
+# rcl's flags after --ros-args that take the next word as their value, and those alone
+_ROS_VALUE_FLAGS = {"-r", "--remap", "-p", "--param", "--params-file", "-e", "--enclave",
+                    "--log-level", "--log-config-file", "--log-file-name"}
+_ROS_FLAGS = {f"--{way}-{what}-logs" for way in ("enable", "disable")
+              for what in ("stdout", "rosout", "external-lib")}
+_RULE_NAME = re.compile(r"~?/?[A-Za-z_][\w/]*|~|/|__ns|__node|__name")
+
+
+class _PluginArguments:
+    """A plugin's ``<ros><argument>`` words read as rcl reads a node's arguments.
+
+    gazebo_ros's ``Node::Get`` (gazebo_ros_pkgs eloquent to ros2/humble) puts each
+    ``<argument>`` text, whole, in the node's arguments, before the ``--ros-args -r rule``
+    words of its ``<remapping>`` elements. rcl (eloquent to rolling) reads words from the
+    start: outside ``--ros-args`` a word that parses as a remap rule (``from:=to``,
+    ``__ns:=/ns``, ``__node:=name``, ``node:from:=to``) is a remap (deprecated form,
+    warned about); any other word is not a ROS argument and is left alone. After
+    ``--ros-args``, ``-r``/``--remap`` take a rule and the other flags their value; a
+    word that is none of these makes rclcpp throw (the node is not made), as does a flag
+    whose value does not parse."""
+
+    def __init__(self, plugin: str, workspace: Workspace, config: Configuration) -> None:
+        self.plugin, self.workspace, self.config = plugin, workspace, config
+        self.rules: list[tuple[str | None, str, str]] = []
+        self.namespace: str | None = None
+        self.name: str | None = None
+        self.partial: list[str] = []
+        self.inside = False
+        self.flag: tuple[str, etree._Element] | None = None  # waiting for its value
+
+    def _say(self, code: str, element: etree._Element, text: str, detail: str) -> None:
+        where = _where(element, self.workspace)
+        self.config.diagnostics.append(diag.make(code, where, argument=repr(text),
+                                                 name=self.plugin, detail=detail))
+        if code == "GAZEBO_PLUGIN_ARGUMENT_UNKNOWN":
+            self.partial.append(f"<argument> {text!r} of plugin {self.plugin} not known "
+                                f"({where.file}:{where.line})")
+
+    def _unmodelled(self, element: etree._Element, text: str) -> None:
+        self._say("GAZEBO_PLUGIN_ARGUMENT_UNKNOWN", element, text,
+                  "a remap of topics or services alone is not modelled")
+
+    def word(self, element: etree._Element) -> None:
+        text = (element.text or "").strip()
+        remap_value = self.flag is not None and self.flag[0] in ("-r", "--remap")
+        if UNKNOWN_MARK in text and (remap_value or self.flag is None):
+            self._say("GAZEBO_PLUGIN_ARGUMENT_UNKNOWN", element, text,
+                      "its text has parts that are not known")
+            self.flag = None
+            return
+        if self.flag is not None:
+            flag, _ = self.flag
+            self.flag = None
+            if remap_value:
+                found = self._rule(text)
+                if found == "scheme":
+                    self._unmodelled(element, text)
+                elif found == "no":
+                    self._say("GAZEBO_PLUGIN_ARGUMENT", element, text,
+                              f"rcl cannot read it as the rule of {flag}: the plugin's node "
+                              "is not made")
+            return  # the value of another flag: no name changes
+        if text == "--ros-args":
+            self.inside = True
+            return
+        if self.inside:
+            if text == "--":
+                self.inside = False
+            elif text in _ROS_VALUE_FLAGS:
+                self.flag = (text, element)
+            elif text not in _ROS_FLAGS:
+                self._say("GAZEBO_PLUGIN_ARGUMENT", element, text,
+                          "after --ros-args rcl does not know it: the plugin's node is not "
+                          "made" + (" (a rule there needs -r before it)" if ":=" in text
+                                    else ""))
+            return
+        found = self._rule(text)
+        if found == "scheme":
+            self._unmodelled(element, text)
+        if found != "no":
+            return
+        if any(c.isspace() for c in text) and ("--ros-args" in text or ":=" in text):
+            self._say("GAZEBO_PLUGIN_ARGUMENT", element, text,
+                      "it is one word to rcl, not a remap rule, so it is ignored (give "
+                      "each word an <argument> of its own)")
+        elif ":=" in text:
+            self._say("GAZEBO_PLUGIN_ARGUMENT", element, text,
+                      "rcl cannot read it as a remap rule, so it is ignored")
+
+    def end(self) -> None:
+        if self.flag is not None:
+            flag, element = self.flag
+            if flag in ("-r", "--remap"):
+                self._say("GAZEBO_PLUGIN_ARGUMENT", element, flag,
+                          "no rule follows it among the <argument> words")
+
+    def _rule(self, text: str) -> str:
+        """``"rule"`` (kept) if ``text`` is a remap rule rcl reads, ``"scheme"`` if it is
+        one for topics or services alone (``rostopic://``: not modelled), else ``"no"``."""
+        if ":=" not in text:
+            return "no"
+        left, right = text.split(":=", 1)
+        node: str | None = None
+        scheme = re.match(r"(?:(\w+):)?(rostopic|rosservice)://", left)
+        if scheme:
+            return "scheme"
+        if ":" in left:
+            node, left = left.split(":", 1)
+        # rcl has no wildcards nor back references in rules yet: not rules
+        if not _RULE_NAME.fullmatch(left) or not _RULE_NAME.fullmatch(right) or \
+                right.startswith("__") or (left.startswith("__") and left not in (
+                    "__ns", "__node", "__name")):
+            return "no"  # ROS 1 / dashing's __log_level:=, __params:= are not rules
+        if node is not None and not re.fullmatch(r"[A-Za-z_]\w*", node):
+            return "no"
+        if left == "__ns" and not right.startswith("/"):
+            return "no"  # rcl wants a fully qualified namespace
+        if left in ("__node", "__name") and not re.fullmatch(r"[A-Za-z_]\w*", right):
+            return "no"
+        self.rules.append((node, left, right))
+        return "rule"
+
+    def remaps_for(self, name: str) -> list[tuple[str, str]]:
+        """The name remaps for the node called ``name``; sets its namespace and name.
+        rcl matches the ``__ns``/``__node`` rules against the plugin's name and the
+        others against the node's name after those (the first rule that matches wins)."""
+        for node, left, right in self.rules:
+            if node is None or node == name:
+                if left == "__ns" and self.namespace is None:
+                    self.namespace = right
+                elif left in ("__node", "__name") and self.name is None:
+                    self.name = right
+        final = self.name or name
+        return [(left, right) for node, left, right in self.rules
+                if left not in ("__ns", "__node", "__name") and node in (None, final)]
 
 
 def _base(filename: str) -> str:
