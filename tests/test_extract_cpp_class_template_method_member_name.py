@@ -266,3 +266,29 @@ def test_the_method_s_call_made_at_the_constructions_is_no_missed_call(tmp_path)
     names = sorted(c.name for c in result.calls)
     assert names == ["color/detections", "color/image"], names
     assert not [d.message for d in result.diagnostics if d.code == "CPP_CALL_MISSED"]
+
+
+def test_a_fixed_type_call_of_a_tag_dispatched_overload_is_made_where_it_is_chosen(
+        tmp_path) -> None:
+    # depthai_bridge's ``advertise(int, std::true_type)`` makes image_transport's
+    # publisher (a type of its own, Image) and the ``/camera_info`` one: only the
+    # constructions whose template argument picks that overload make them. They were
+    # read through the call sites for every construction: the tracker's
+    # TrackDetection2DArray publisher gave a false Image ``/color/yolov4_tracklets``
+    code = TAG_DISPATCHED.replace(
+        "    pub_ = node_->template create_publisher<M>(topic_ + \"/str\", depth);",
+        "    info_ = node_->template create_publisher<std_msgs::msg::Int32>("
+        "topic_ + \"/info\", 1);\n"
+        "    pub_ = node_->template create_publisher<M>(topic_ + \"/str\", depth);").replace(
+        "  std::string topic_;", "  std::string topic_;\n"
+        "  rclcpp::Publisher<std_msgs::msg::Int32>::SharedPtr info_;")
+    (tmp_path / "pkg" / "src").mkdir(parents=True)
+    (tmp_path / "pkg" / "package.xml").write_text(package_xml("pkg", "ament_cmake").replace(
+        "</package>", DEPENDS + "</package>"))
+    source = tmp_path / "pkg" / "src" / "talker.cpp"
+    source.write_text(code)
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    calls = sorted((c.kind, c.name, c.type) for c in result.calls)
+    assert calls == [("publish", "color/detections", "std_msgs/msg/Int32"),
+                     ("publish", "color/image/info", "std_msgs/msg/Int32"),
+                     ("publish", "color/image/str", "std_msgs/msg/String")], calls

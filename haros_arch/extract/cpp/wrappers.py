@@ -181,6 +181,8 @@ class Wrappers:
         # a method -> (constructor, call) of each call of it lifted into a constructor
         self._lifted_sites: dict[Key, set[tuple[Key, Key]]] = {}
         self._left: set[Key] = set()  # the methods whose calls those constructions make
+        # the tag-dispatched overloads lifted into a constructor under their test (``when``)
+        self._dispatched: set[Key] = set()
 
     # -- building -----------------------------------------------------------------------
 
@@ -260,13 +262,17 @@ class Wrappers:
                         _key(f.canonical)])))]
         # a recursive function is no wrapper, nor is one made through it; a class
         # template's constructor is one only where the construction gives the type (its
-        # other calls stay in it, named by what its callers pass: call_sites, links)
+        # other calls stay in it, named by what its callers pass: call_sites, links), or
+        # where the construction chooses the overload that makes the call (``when``: a
+        # call of a type of its own in a tag-dispatched overload, depthai_bridge's
+        # image_transport publisher, made only by the constructions of Image)
         constructors = {_key(f.canonical) for f in functions if is_constructor(f)}
         self.summaries = {
             key: kept for key, found in self.summaries.items() if key not in self._recursive
             and not any(self._recursive & w.through for w in found)
             and (kept := [w for w in found if key not in constructors
-                          or "template" in w.row.type_from or w.spec_param is not None])}
+                          or "template" in w.row.type_from or w.spec_param is not None
+                          or w.when is not None])}
         self._inner = {call: owner for call, owner in self._inner.items()
                        if owner in self.summaries}
         self._functions = {key: f for f in functions
@@ -292,8 +298,9 @@ class Wrappers:
             if unused or (callers and all(c in taken for c in callers)):
                 # (where the constructors take them: not a call of a type of its own,
                 # which stays in the method, named through the call sites)
+                # (a tag-dispatched overload's calls all go with the overload's choice)
                 left = {call: owner for call, (owner, typed) in self._member_inner.items()
-                        if owner == key and (typed or unused)}
+                        if owner == key and (typed or unused or key in self._dispatched)}
                 if left:
                     self._left.add(key)
                     self._inner.update(left)
@@ -467,6 +474,8 @@ class Wrappers:
             parent, own = decl.semantic_parent, function.semantic_parent
             if parent is None or own is None or _key(parent) != _key(own):
                 return []
+            if when is not None:
+                self._dispatched.add(_key(decl.canonical))
             found += [dataclasses.replace(w, when=when)
                       for w in self.members.get(_key(decl.canonical), [])]
         return found
