@@ -577,3 +577,48 @@ def test_a_superbuild_of_the_package_itself_reads_its_second_configuration(write
     nodes, found = parse_package(ws.packages["plain"], ws)
     assert nodes == []
     assert [d.code for d in found if d.code.startswith("CMAKE_")] == ["CMAKE_EXTERNAL_PROJECT"]
+
+
+def test_words_in_comments_and_strings_name_no_library_file(write_tree):
+    """laser_filters' scan_to_cloud_filter_chain links the package's filter library and
+    runs none of its filters, but a comment of its source says ``@b ScanShadowsFilter is
+    a simple node...``: that word gave it every filter's calls (69). A word of a comment
+    or of a string literal names nothing the code uses; one of code still does."""
+    root = write_tree({
+        "src/lf/package.xml": package_xml("lf", build_type="ament_cmake"),
+        "src/lf/CMakeLists.txt": """
+            cmake_minimum_required(VERSION 3.5)
+            project(lf)
+            find_package(ament_cmake_auto REQUIRED)
+            ament_auto_find_build_dependencies()
+            ament_auto_add_library(filters SHARED src/filters.cpp src/monitor.cpp
+                                   src/projector.cpp)
+            ament_auto_add_executable(chain src/chain.cpp)
+            ament_auto_package()
+            """,
+        "src/lf/src/filters.cpp": """
+            #include "filters.hpp"
+            bool ShadowsFilter::update() { return true; }
+            bool RangeFilter::update() { return true; }
+            PLUGINLIB_EXPORT_CLASS(lf::ShadowsFilter, filters::FilterBase)
+            PLUGINLIB_EXPORT_CLASS(lf::RangeFilter, filters::FilterBase)
+            """,
+        "src/lf/src/monitor.cpp": "#include \"monitor.hpp\"\nvoid Monitor::check() {}\n",
+        "src/lf/src/projector.cpp": "#include \"projector.hpp\"\nvoid Projector::run() {}\n",
+        "src/lf/src/chain.cpp": """
+            #include "projector.hpp"
+            /** @b ShadowsFilter is a simple node that filters shadow points
+             * (a Monitor watches it) */
+            int main() {
+              // RangeFilter next
+              const char * said = "RangeFilter and Monitor";
+              Projector p;  // not a Monitor
+              p.run();
+            }
+            """,
+    })
+    ws = scan([str(root / "src")], {})
+    nodes, _found = parse_package(ws.packages["lf"], ws)
+    assert [(n.executable, sorted(n.sources)) for n in nodes
+            if n.kind == "executable"] == [("chain", ["lf/src/chain.cpp",
+                                                      "lf/src/projector.cpp"])]

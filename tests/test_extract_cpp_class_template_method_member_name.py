@@ -266,3 +266,59 @@ def test_the_method_s_call_made_at_the_constructions_is_no_missed_call(tmp_path)
     names = sorted(c.name for c in result.calls)
     assert names == ["color/detections", "color/image"], names
     assert not [d.message for d in result.diagnostics if d.code == "CPP_CALL_MISSED"]
+
+
+def test_a_fixed_type_call_of_a_tag_dispatched_overload_is_made_where_it_is_chosen(
+        tmp_path) -> None:
+    # depthai_bridge's ``advertise(int, std::true_type)`` makes image_transport's
+    # publisher (a type of its own, Image) and the ``/camera_info`` one: only the
+    # constructions whose template argument picks that overload make them. They were
+    # read through the call sites for every construction: the tracker's
+    # TrackDetection2DArray publisher gave a false Image ``/color/yolov4_tracklets``
+    code = TAG_DISPATCHED.replace(
+        "    pub_ = node_->template create_publisher<M>(topic_ + \"/str\", depth);",
+        "    info_ = node_->template create_publisher<std_msgs::msg::Int32>("
+        "topic_ + \"/info\", 1);\n"
+        "    pub_ = node_->template create_publisher<M>(topic_ + \"/str\", depth);").replace(
+        "  std::string topic_;", "  std::string topic_;\n"
+        "  rclcpp::Publisher<std_msgs::msg::Int32>::SharedPtr info_;")
+    (tmp_path / "pkg" / "src").mkdir(parents=True)
+    (tmp_path / "pkg" / "package.xml").write_text(package_xml("pkg", "ament_cmake").replace(
+        "</package>", DEPENDS + "</package>"))
+    source = tmp_path / "pkg" / "src" / "talker.cpp"
+    source.write_text(code)
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    calls = sorted((c.kind, c.name, c.type) for c in result.calls)
+    assert calls == [("publish", "color/detections", "std_msgs/msg/Int32"),
+                     ("publish", "color/image/info", "std_msgs/msg/Int32"),
+                     ("publish", "color/image/str", "std_msgs/msg/String")], calls
+
+
+def test_a_condition_inside_the_method_goes_with_the_call_made_at_a_construction(
+        tmp_path) -> None:
+    # depthai_bridge's camera_info publisher is made only ``if(!_cameraName.empty())``
+    # inside ``advertise``: made at the construction, it is still under that condition
+    # (it was made there as if it always were)
+    code = TAG_DISPATCHED.replace(
+        "    pub_ = node_->template create_publisher<M>(topic_ + \"/str\", depth);",
+        "    if (!cam_.empty()) {\n"
+        "      info_ = node_->template create_publisher<std_msgs::msg::Int32>("
+        "cam_ + \"/info\", 1);\n    }\n"
+        "    pub_ = node_->template create_publisher<M>(topic_ + \"/str\", depth);").replace(
+        "  std::string topic_;", "  std::string topic_;\n  std::string cam_;\n"
+        "  rclcpp::Publisher<std_msgs::msg::Int32>::SharedPtr info_;").replace(
+        "std::string topic, int depth)\n      : node_(node), topic_(topic)",
+        "std::string topic, int depth, std::string cam = \"\")\n"
+        "      : node_(node), topic_(topic), cam_(cam)").replace(
+        '"color/image"), 30)', '"color/image"), 30, "color")')
+    (tmp_path / "pkg" / "src").mkdir(parents=True)
+    (tmp_path / "pkg" / "package.xml").write_text(package_xml("pkg", "ament_cmake").replace(
+        "</package>", DEPENDS + "</package>"))
+    source = tmp_path / "pkg" / "src" / "talker.cpp"
+    source.write_text(code)
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    calls = sorted((c.name, c.type, tuple(str(k) for k in c.conditions))
+                   for c in result.calls)
+    assert calls == [("color/detections", "std_msgs/msg/Int32", ()),
+                     ("color/image/str", "std_msgs/msg/String", ()),
+                     ("color/info", "std_msgs/msg/Int32", ("if (!cam_.empty())",))], calls

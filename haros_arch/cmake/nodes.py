@@ -347,7 +347,7 @@ def _registered_in(path: str, workspace: Files) -> Iterable[tuple[str, int]]:
     text, _ = read_text(path, workspace.location(path))
     if not text or "RCLCPP_COMPONENTS_REGISTER_NODE" not in text:
         return
-    text = code_only(text)
+    text = code_only(text, literals=True)
     for match in _COMPONENT_MACRO.finditer(text):
         yield match.group(1).lstrip(":"), text.count("\n", 0, match.start()) + 1
 

@@ -143,10 +143,10 @@ def _registrations(path: str, library: str, workspace: Workspace) -> list[Regist
     text, _ = read_text(path, workspace.location(path))
     if not text or "BT_REGISTER_NODES" not in text:
         return []
-    code = code_only(text)
+    code = code_only(text, literals=True)
     made = {cls.lstrip(":"): name for cls, name in _MADE.findall(code)}
     headers = with_headers(os.path.relpath(path, workspace.root), workspace)
-    everything = "\n".join(code_only(t) for t in headers)
+    everything = "\n".join(code_only(t, literals=True) for t in headers)
     out: list[Registered] = []
     for pattern in (_BUILDER, _NODE_TYPE):
         for match in pattern.finditer(code):

@@ -23,6 +23,7 @@ from typing import Any, Protocol, TypeVar
 from lxml import etree
 
 from .. import diagnostics as diag
+from ..ctext import code_only
 from ..diagnostics import Diagnostic
 from ..files import read_bytes, read_text
 from ..manifest import xml_parser
@@ -234,23 +235,6 @@ def remembered(kind: str, source: str, workspace: Files, compute: Callable[[], T
     return memo[key]
 
 
-# a C/C++ comment, and the string and character literals a comment mark may sit in
-_COMMENT_OR_LITERAL = re.compile(
-    r"\"(?:\\.|[^\"\\\n])*\"|'(?:\\.|[^'\\\n])*'|//[^\n]*|/\*.*?(?:\*/|\Z)", re.DOTALL)
-
-
-def code_only(text: str) -> str:
-    """C/C++ text with its comments blanked (newlines kept, so lines stay where they
-    were): an export macro commented out exports nothing (perception_pcl's filter.cpp
-    keeps ``//PLUGINLIB_EXPORT_CLASS(PixelGrid, ...)`` from its ROS 1 days)."""
-    def blank(match: re.Match[str]) -> str:
-        found = match.group(0)
-        if found[0] in "\"'":
-            return found
-        return re.sub(r"[^\n]", " ", found)
-    return _COMMENT_OR_LITERAL.sub(blank, text)
-
-
 def exported_classes(path: str, workspace: Files) -> list[tuple[str, int]]:
     """Classes a C++ file exports with a pluginlib or rclcpp_components macro, with lines."""
     return remembered("exported", path, workspace, lambda: _exported(path, workspace))
@@ -260,7 +244,7 @@ def _exported(path: str, workspace: Files) -> list[tuple[str, int]]:
     text = _text(path, workspace)
     if not text or not any(mark in text for mark in _EXPORT_MARKS):
         return []
-    text = code_only(text)
+    text = code_only(text, literals=True)
     out = []
     for match in _EXPORT.finditer(text):
         words = re.findall(r"[A-Za-z_][\w:]*", match.group(2))
@@ -463,14 +447,16 @@ def derives_from(cls: str, sources: Iterable[str], workspace: Files) -> bool:
 
 
 def named_words(source: str, workspace: Files) -> frozenset[str]:
-    """The words of a source file and of the headers of its package it includes (its
-    own header declares the members whose types name helper classes); a
+    """The words of the code of a source file and of the headers of its package it
+    includes (its own header declares the members whose types name helper classes),
+    not those of comments and string literals (``code_only``: laser_filters'
+    scan_to_cloud_filter_chain.cpp names ``ScanShadowsFilter`` only in a comment); a
     ``Workspace``'s read once per run."""
     memo: dict[str, frozenset[str]] | None = getattr(workspace, "named_words", None)
     found = memo.get(source) if memo is not None else None
     if found is None:
         found = frozenset(set().union(
-            *(_WORD.findall(text) for text in with_headers(source, workspace))))
+            *(_WORD.findall(code_only(text)) for text in with_headers(source, workspace))))
         if memo is not None:
             memo[source] = found
     return found

@@ -216,7 +216,8 @@ def without_other_classes(node: Node, calls: list[PrimitiveCall],
         return calls
     own_text = next((found for source in node.sources
                      for text in with_headers(source, workspace)
-                     if (found := _class_text(code_only(text), own)) is not None), None)
+                     if (found := _class_text(code_only(text, literals=True), own))
+                     is not None), None)
     if own_text is None:
         return calls
     named = {other for other in others if re.search(rf"\b{re.escape(other)}\b", own_text)}
@@ -396,7 +397,7 @@ def built_sources(own: Sequence[str], workspace: Files,
     mine = {cls for source in own for cls in _defines(source, workspace)}
     scanned: set[str] = set()
     for _ in range(MAX_BUILT_ROUNDS):
-        texts = [code_only(text) for source in files if source not in scanned
+        texts = [code_only(text, literals=True) for source in files if source not in scanned
                  for text in with_headers(source, workspace, HEADER_DEPTH)]
         scanned.update(files)
         classes = {cls for found in defining.values() for cls in found}
@@ -458,7 +459,7 @@ def _defines(source: str, workspace: Files) -> set[str]:
     blanked)."""
     def read() -> set[str]:
         found = set()
-        for match in _DEFINITION.finditer(code_only(_text(source, workspace))):
+        for match in _DEFINITION.finditer(code_only(_text(source, workspace), literals=True)):
             cls, member, initialisers = match.groups()
             if initialisers is None or member == cls:
                 found.add(cls)

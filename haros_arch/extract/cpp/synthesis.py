@@ -28,6 +28,7 @@ import re
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
 
+from ...ctext import code_only
 from . import interfaces, msg_types
 
 MAX_ROUNDS = 1  # rounds of declaring unknown names (0: none; more: probes for waves)
@@ -487,23 +488,6 @@ def _initialised_member(text: bytes, found: re.Match[bytes], before: bytes) -> b
                 return rest[:1] in (b",", b"{")
         at += 1
     return False
-
-
-# a comment, or a string or character literal (its quotes kept): not code
-_COMMENT_OR_LITERAL = re.compile(
-    rb"\"(?:\\.|[^\"\\\n])*\"|'(?:\\.|[^'\\\n])*'|//[^\n]*|/\*.*?(?:\*/|\Z)", re.DOTALL)
-
-
-def code_only(text: bytes) -> bytes:
-    """``text`` with its comments and the insides of its literals blanked, every byte at
-    its offset and every line break kept: what the spreads over whole files read, so
-    that a comment's words (mqtt_client's ``// See https://.../mqtt_client (v2.4.1)``,
-    under the missing library ``mqtt``) are not taken for a call or a scope."""
-    def blank(match: re.Match[bytes]) -> bytes:
-        found = match.group(0)
-        inside = re.sub(rb"[^\r\n]", b" ", found)
-        return found[:1] + inside[1:-1] + found[-1:] if found[:1] in (b'"', b"'") else inside
-    return _COMMENT_OR_LITERAL.sub(blank, text)
 
 
 def _spelled_at(name: str, text: bytes, offset: int) -> int:

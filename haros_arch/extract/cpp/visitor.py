@@ -239,6 +239,7 @@ class CallFinder:
         self.wrappers.build()
         self.members = self.namespaces.members = MemberWrites(self.functions, self.source,
                                                               self.opaque)
+        self.wrappers.read_inside(self._conditions_at)
         for function in self.functions:
             if self._gives(function):
                 self._function(function)

@@ -127,12 +127,16 @@ class Wrapper:
     # ``when[0]``): one of tag-dispatched overloads, ``advertise(depth,
     # std::is_same<M, Image>{})`` with ``advertise(int, std::true_type)``
     when: tuple[Key, int, Key, bool] | None = None
+    # the call inside a class template's method that a member summary was made of: the
+    # conditions it is under there (``Wrappers.read_inside``: depthai_bridge's
+    # ``if(!_cameraName.empty())`` around the camera_info publisher) go with it
+    inside: Key | None = None
 
     def same(self, other: Wrapper) -> bool:
         return (self.row, self.before, self.after, self.namespace, self.spec_param,
-                self.spec_arg, self.spec_path, self.member, self.when) == (
+                self.spec_arg, self.spec_path, self.member, self.when, self.inside) == (
             other.row, other.before, other.after, other.namespace, other.spec_param,
-            other.spec_arg, other.spec_path, other.member, other.when)
+            other.spec_arg, other.spec_path, other.member, other.when, other.inside)
 
 
 class Wrappers:
@@ -181,6 +185,12 @@ class Wrappers:
         # a method -> (constructor, call) of each call of it lifted into a constructor
         self._lifted_sites: dict[Key, set[tuple[Key, Key]]] = {}
         self._left: set[Key] = set()  # the methods whose calls those constructions make
+        # the tag-dispatched overloads lifted into a constructor under their test (``when``)
+        self._dispatched: set[Key] = set()
+        # a method's call a member summary was made of -> (the method, the call), and the
+        # source conditions of the call there (``read_inside``)
+        self._insides: dict[Key, tuple[Cursor, Cursor]] = {}
+        self._inside_conditions: dict[Key, tuple[Condition, ...]] = {}
 
     # -- building -----------------------------------------------------------------------
 
@@ -260,13 +270,17 @@ class Wrappers:
                         _key(f.canonical)])))]
         # a recursive function is no wrapper, nor is one made through it; a class
         # template's constructor is one only where the construction gives the type (its
-        # other calls stay in it, named by what its callers pass: call_sites, links)
+        # other calls stay in it, named by what its callers pass: call_sites, links), or
+        # where the construction chooses the overload that makes the call (``when``: a
+        # call of a type of its own in a tag-dispatched overload, depthai_bridge's
+        # image_transport publisher, made only by the constructions of Image)
         constructors = {_key(f.canonical) for f in functions if is_constructor(f)}
         self.summaries = {
             key: kept for key, found in self.summaries.items() if key not in self._recursive
             and not any(self._recursive & w.through for w in found)
             and (kept := [w for w in found if key not in constructors
-                          or "template" in w.row.type_from or w.spec_param is not None])}
+                          or "template" in w.row.type_from or w.spec_param is not None
+                          or w.when is not None])}
         self._inner = {call: owner for call, owner in self._inner.items()
                        if owner in self.summaries}
         self._functions = {key: f for f in functions
@@ -292,8 +306,9 @@ class Wrappers:
             if unused or (callers and all(c in taken for c in callers)):
                 # (where the constructors take them: not a call of a type of its own,
                 # which stays in the method, named through the call sites)
+                # (a tag-dispatched overload's calls all go with the overload's choice)
                 left = {call: owner for call, (owner, typed) in self._member_inner.items()
-                        if owner == key and (typed or unused)}
+                        if owner == key and (typed or unused or key in self._dispatched)}
                 if left:
                     self._left.add(key)
                     self._inner.update(left)
@@ -355,6 +370,18 @@ class Wrappers:
             and not _template_parameters(f)
             and all(default_argument(p) is not None for p in _parameters(f))
         ) & self.site_names
+
+    def read_inside(self, conditions_at: Callable[[Cursor, Cursor], tuple[Condition, ...] | None]
+                    ) -> None:
+        """Read the source conditions of each method's call a summary made at the
+        constructions keeps (``Wrapper.inside``), with ``conditions_at`` (the finder's,
+        before its walk: it readies the condition reader for the method)."""
+        used = {w.inside for found in self.summaries.values() for w in found
+                if w.inside is not None}
+        for key in used:
+            method, call = self._insides[key]
+            found = conditions_at(method, call) or ()
+            self._inside_conditions[key] = tuple(c for c in found if c.kind == "source")
 
     def _mentioned(self, method: Cursor) -> bool:
         """Whether the unit's files write the method's name anywhere but where it is
@@ -428,6 +455,8 @@ class Wrappers:
             self._member_inner[_key(call)] = (key, self._member_inner.get(_key(call), (
                 key, False))[1] or "template" in lifted.row.type_from
                 or "template-value" in lifted.row.type_from)
+            lifted = dataclasses.replace(lifted, inside=_key(call))
+            self._insides[_key(call)] = (method, call)
             found = self.members.setdefault(key, [])
             if not any(lifted.same(w) for w in found):
                 found.append(lifted)
@@ -467,6 +496,8 @@ class Wrappers:
             parent, own = decl.semantic_parent, function.semantic_parent
             if parent is None or own is None or _key(parent) != _key(own):
                 return []
+            if when is not None:
+                self._dispatched.add(_key(decl.canonical))
             found += [dataclasses.replace(w, when=when)
                       for w in self.members.get(_key(decl.canonical), [])]
         return found
@@ -490,7 +521,7 @@ class Wrappers:
                 for method in wrapper.through:
                     self._lifted_sites.setdefault(method, set()).add((key, _key(call)))
                 added = self._keep(function, key, dataclasses.replace(
-                    lifted, row=row, when=wrapper.when)) or added
+                    lifted, row=row, when=wrapper.when, inside=wrapper.inside)) or added
             return added
         target = call.referenced
         if target is not None and target.spelling not in _ROW_NAMES and (
@@ -560,7 +591,8 @@ class Wrappers:
                 for source in ("template", "template-value"):
                     if source in wrapper.row.type_from and source not in row.type_from:
                         row = dataclasses.replace(row, type_from=(*row.type_from, source))
-                added = self._keep(function, key, dataclasses.replace(lifted, row=row)) or added
+                added = self._keep(function, key, dataclasses.replace(
+                    lifted, row=row, when=wrapper.when, inside=wrapper.inside)) or added
         return added
 
     def _unnamed(self, call: Cursor) -> bool:
@@ -939,7 +971,9 @@ class Wrappers:
             named = _NamedScope(scope, args[row.name_arg], before, after) if (
                 before or after) else scope
             start = len(finder.calls)
-            finder._emit(row, call, args, None, conditions, named)
+            inside = self._inside_conditions.get(wrapper.inside, ()) if (
+                wrapper.inside is not None) else ()
+            finder._emit(row, call, args, None, (*conditions, *inside), named)
             for made in finder.calls[start:]:
                 if wrapper.namespace:
                     if not finder.ros2 and not made.name.startswith(("/", "~")):
