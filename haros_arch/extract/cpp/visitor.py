@@ -417,7 +417,7 @@ class CallFinder:
         return dependent and (
             (function.kind == CursorKind.CONSTRUCTOR and bool(_lost_initialisers(function)))
             or any(node.kind == CursorKind.CALL_EXPR
-                   and opaque_construction(node, self.owned) is not None
+                   and opaque_constructor(node, self.owned) is not None
                    for node in (function.walk_preorder() if nodes is None else nodes)))
 
     def _scope_of(self, function: Cursor) -> Scope:
