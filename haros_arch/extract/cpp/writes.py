@@ -196,6 +196,12 @@ def may_write(call: Cursor, index: int, decayed: bool = False) -> bool:
     if ftype.kind != TypeKind.FUNCTIONPROTO:
         return True
     types = list(ftype.argument_types())
+    if target.kind == CursorKind.CXX_METHOD and call.spelling.startswith("operator") and (
+        len(list(call.get_arguments())) == len(types) + 1
+    ):  # a member operator's call lists its object first (``f % kNs``: boost::format)
+        if index == 0:
+            return not target.is_const_method()
+        index -= 1
     if index >= len(types):
         return not decayed  # a C variadic: a printf family's arguments are read
     ptype = types[index]
