@@ -5,7 +5,9 @@ only known at run time; ``render`` writes the unknown parts as ``?``. Resolved:
 literals (also through ``#define``), ``const`` / ``constexpr`` variables, local variables
 written exactly once (at their declaration, by one assignment or a smart pointer's
 ``reset(p)``: the writes ``writes.writes_of`` reads), ``std::string``
-construction, ``+`` concatenation and ``.c_str()``, a function's parameter from the
+construction, ``+`` concatenation and ``.c_str()``, formatting calls with a literal
+format (``fmt::format``, ``std::format``, ``snprintf`` into an array, ``boost::format``,
+``std::to_string``: ``formats``), a function's parameter from the
 calls of the function (``call_sites.CallSites``), and a class member from what a
 constructor initialises it with. Anything else is unknown.
 """
