@@ -3,7 +3,9 @@ text, ``?`` for each argument not known (its value where it is known): {fmt}'s a
 std's ``format`` (mqtt_client's ``fmt::format("bridge.ros2mqtt.{}.qos", ros_topic)``),
 ``snprintf`` / ``sprintf`` into a character array read later as the name
 (livox_ros_driver2's ``snprintf(name_str, sizeof(name_str), "livox/lidar_%s", ip)``),
-``boost::format`` with ``%`` and ``std::to_string``. Before, each such name was ``?``."""
+``boost::format`` with ``%`` and ``std::to_string``. Before, each such name was ``?``.
+``f % kNs`` (a member operator, whose call lists its object first) reads ``kNs``: it
+was taken for a write, and every name built from ``kNs`` in the function was ``?``."""
 
 from __future__ import annotations
 
