@@ -1,7 +1,8 @@
 """Topic names kept in C character arrays: a ``constexpr char kTopic[] = "..."`` constant
 (the const is on the elements: cartographer_ros' node_constants.h, ROS 2 demos'
 ``DEFAULT_TOPIC_NAME``) is its literal; an array a call fills through a pointer
-(``snprintf(topic, size, "analog_output%02d", i)``: phidgets) is not its initializer."""
+(``snprintf(topic, size, "analog_output%02d", i)``: phidgets) is not its initializer,
+but what the call prints (``analog_output?``)."""
 
 from __future__ import annotations
 
@@ -53,4 +54,6 @@ def test_names_in_char_arrays(write_tree) -> None:
     result = extract_cpp([str(root / "carto" / "src" / "node.cc")], scan([str(root)]),
                          cache_dir=None)
     assert [(c.name, c.queue_size) for c in result.calls if c.kind == "publish"] == [
-        ("submap_list", 1), ("local_topic", 1), ("?", 1), ("kept_name", None), ("?", 1)]
+        # what snprintf prints into the array: its format, ``?`` for ``%02d`` of ``i``
+        ("submap_list", 1), ("local_topic", 1), ("analog_output?", 1), ("kept_name", None),
+        ("?", 1)]

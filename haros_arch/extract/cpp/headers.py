@@ -131,6 +131,7 @@ UMBRELLAS = {
     "urdf/": "urdf/model.h", "urdf_model/": "urdf/model.h", "urdf_parser/": "urdf/model.h",
     "cv_bridge/": "cv_bridge/cv_bridge.h", "Eigen/": "Eigen/Dense", "eigen3/": "Eigen/Dense",
     "yaml-cpp/": "yaml-cpp/yaml.h", "gflags/": "gflags/gflags.h", "glog/": "glog/logging.h",
+    "fmt/": "fmt/format.h",  # {fmt}: names formatted from a literal (``values.Scope``)
     **{f"Qt{m}/": QT for m in ("Core", "Gui", "Widgets", "Network", "Concurrent", "Test")},
 }
 SHADOWED = ("ros/", "boost/", "tf/", *UMBRELLAS)

@@ -5,7 +5,9 @@ only known at run time; ``render`` writes the unknown parts as ``?``. Resolved:
 literals (also through ``#define``), ``const`` / ``constexpr`` variables, local variables
 written exactly once (at their declaration, by one assignment or a smart pointer's
 ``reset(p)``: the writes ``writes.writes_of`` reads), ``std::string``
-construction, ``+`` concatenation and ``.c_str()``, a function's parameter from the
+construction, ``+`` concatenation and ``.c_str()``, formatting calls with a literal
+format (``fmt::format``, ``std::format``, ``snprintf`` into an array, ``boost::format``,
+``std::to_string``: ``formats``), a function's parameter from the
 calls of the function (``call_sites.CallSites``), and a class member from what a
 constructor initialises it with. Anything else is unknown.
 """
@@ -13,13 +15,13 @@ constructor initialises it with. Anything else is unknown.
 from __future__ import annotations
 
 import re
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from typing import TYPE_CHECKING, Any, TypeVar
 
 from clang.cindex import Cursor, CursorKind, TypeKind
 
-from . import api
+from . import api, formats
 from .cursors import _Place
 from .expressions import (
     binary_operator,
@@ -386,6 +388,11 @@ class Scope:
         advertise, do not change what we track), and ``member_ = value`` on this object
         (``this->`` written or not)."""
         target, value = write.target, write.value
+        if _printed(write):
+            # ``snprintf(buf, n, "lidar_%s", ip)`` writes all of ``buf``: the value of
+            # the array is what the call prints (``_string_format``)
+            write = Write(target, write.at, write.at, True)
+            value = write.value
         if target.kind == CursorKind.VAR_DECL:
             self._write(target, value)
             self._place(target, write)
@@ -725,6 +732,9 @@ class Scope:
                 objects = list(children[0].get_children())
                 if objects:
                     return self.string(objects[0], depth + 1)
+        formatted = self._string_format(call, target, args, depth)
+        if formatted is not None:
+            return formatted
         if not args and self.sites is not None:
             # a getter: what its one ``return`` gives, in each body the call may run
             # (read in that method, its members as its class's constructors set them)
@@ -733,6 +743,78 @@ class Scope:
                       for value, method in bodies or ()}
             if len(values) == 1:
                 return values.pop()
+        return UNKNOWN
+
+    def _string_format(self, call: Cursor, target: Cursor, args: list[Cursor],
+                       depth: int) -> Parts | None:
+        """A string a formatting function makes (``formats``): {fmt}'s and std's
+        ``format``, ``snprintf`` / ``sprintf`` (the text they write into their array,
+        read where the array is: ``_keep``), a ``boost::format`` with its ``%``
+        arguments (``boost::str(f)``; ``f.str()`` is read as ``.str()`` is) and
+        ``std::to_string``: the format's text, each argument's value where it is
+        known; unknown when the format is not known text. None for any other call."""
+        name, space = target.spelling, _namespace_of(target)
+        if name == "format" and space in ("fmt", "std") and args:
+            return self._fill(formats.brace_pieces, args[0], args[1:], depth)
+        if name in _PRINTERS and space in ("", "std") and len(args) > _PRINTERS[name]:
+            at = _PRINTERS[name]
+            return self._fill(formats.printf_pieces, args[at], args[at + 1:], depth)
+        if name == "str" and space == "boost" and len(args) == 1:
+            return self.string(args[0], depth + 1)
+        if name == "to_string" and space == "std" and len(args) == 1:
+            number = self.integer(args[0], depth + 1) if _integral(args[0]) else None
+            return UNKNOWN if number is None else (str(number),)
+        if name == "operator%" and len(args) == 2 and _boost_format(call):
+            given: list[Cursor] = []
+            made: Cursor | None = call
+            while made is not None and made.kind == CursorKind.CALL_EXPR and (
+                made.spelling == "operator%" and len(written_arguments(made)) == 2
+            ):
+                left, right = written_arguments(made)
+                given.insert(0, right)
+                made = _constructed(left)
+            if made is None or made.kind != CursorKind.CALL_EXPR or not _boost_format(made):
+                return UNKNOWN
+            text = written_arguments(made)
+            if len(text) != 1:
+                return UNKNOWN
+            return self._fill(formats.boost_pieces, text[0], given, depth)
+        return None
+
+    def _fill(self, split: Callable[[str], list[formats.Piece] | None], text: Cursor,
+              given: list[Cursor], depth: int) -> Parts:
+        """The value of a format (split into pieces by ``split``) with its holes
+        filled from ``given``; unknown when the format is not text known here."""
+        written = self.string(text, depth + 1)
+        if not all(type(part) is str for part in written):
+            return UNKNOWN
+        joined = "".join(written)  # type: ignore[arg-type]
+        if any(mark in joined for mark in _MARKS):
+            return UNKNOWN
+        pieces = split(joined)
+        if pieces is None:
+            return UNKNOWN
+        found: list[str | None] = []
+        for piece in pieces:
+            if isinstance(piece, str):
+                found.append(piece)
+            elif piece.index >= len(given):
+                return UNKNOWN  # more holes than arguments: the call fails
+            else:
+                found.extend(self._hole(given[piece.index], piece.conversion, depth))
+        return tuple(found)
+
+    def _hole(self, arg: Cursor, conversion: str, depth: int) -> Parts:
+        """What a format's hole writes for ``arg``: a string as it is, an integer in
+        the base the conversion says, anything else (or not known) unknown."""
+        if conversion == formats.OTHER:
+            return UNKNOWN
+        if _integral(arg):
+            number = self.integer(arg, depth + 1)
+            text = None if number is None else formats.integer_text(number, conversion)
+            return UNKNOWN if text is None else (text,)
+        if conversion == formats.TEXT and _textual(arg):
+            return self.string(arg, depth + 1)
         return UNKNOWN
 
     def resolved(self, cursor: Cursor, depth: int = 0) -> bool:
@@ -1028,6 +1110,87 @@ def literal(spelling: str) -> str | None:
             out.append(char)
             i += 1
     return "".join(out)
+
+
+# the C functions that print into an array, with the index of their format argument
+_PRINTERS = {"snprintf": 2, "sprintf": 1}
+
+
+def _printed(write: Write) -> bool:
+    """A write of an array by ``snprintf`` / ``sprintf`` into it (its first argument)."""
+    call, target = write.at, write.target
+    if call.kind != CursorKind.CALL_EXPR or call.spelling not in _PRINTERS or (
+        target.kind != CursorKind.DECL_REF_EXPR or call.referenced is None
+        or _namespace_of(call.referenced) not in ("", "std")
+    ):
+        return False
+    args = written_arguments(call)
+    return len(args) > _PRINTERS[call.spelling] and strip(args[0]) == target
+# the parts a formatted value cannot hold in its format: placeholders, choices
+_MARKS = (PLACEHOLDER, SEPARATOR, CHOICE, CHOICE_SEP, CHOICE_END, BACKREF)
+_INTEGRAL = frozenset({
+    TypeKind.SCHAR, TypeKind.UCHAR, TypeKind.SHORT, TypeKind.USHORT, TypeKind.INT,
+    TypeKind.UINT, TypeKind.LONG, TypeKind.ULONG, TypeKind.LONGLONG, TypeKind.ULONGLONG})
+_CHARS = (TypeKind.CHAR_S, TypeKind.CHAR_U)
+
+
+def _namespace_of(target: Cursor) -> str | None:
+    """The outermost namespace ``target`` is declared in ("" at file scope; {fmt}'s
+    inline ``fmt::v10`` is ``fmt``); None for a member of a class."""
+    parent, found = target.semantic_parent, ""
+    while parent is not None and parent.kind != CursorKind.TRANSLATION_UNIT:
+        if parent.kind == CursorKind.NAMESPACE:
+            found = parent.spelling
+        elif parent.kind not in (CursorKind.LINKAGE_SPEC, CursorKind.UNEXPOSED_DECL):
+            return None  # (C's functions are in ``extern "C"``)
+        parent = parent.semantic_parent
+    return found
+
+
+def _value_type(arg: Cursor) -> Any:
+    ctype = strip(arg).type.get_canonical()
+    if ctype.kind in (TypeKind.LVALUEREFERENCE, TypeKind.RVALUEREFERENCE):
+        ctype = ctype.get_pointee().get_canonical()
+    return ctype
+
+
+def _integral(arg: Cursor) -> bool:
+    """An integer argument (not a character, a bool or an enum)."""
+    return bool(_value_type(arg).kind in _INTEGRAL)
+
+
+def _textual(arg: Cursor) -> bool:
+    """A string argument: characters by pointer or array, ``std::string``, a view."""
+    ctype = _value_type(arg)
+    if ctype.kind == TypeKind.POINTER:
+        return bool(ctype.get_pointee().get_canonical().kind in _CHARS)
+    if ctype.kind in (TypeKind.CONSTANTARRAY, TypeKind.INCOMPLETEARRAY):
+        return bool(ctype.element_type.get_canonical().kind in _CHARS)
+    return ctype.kind == TypeKind.RECORD and ctype.get_declaration().spelling in (
+        "basic_string", "basic_string_view", "string_view")
+
+
+def _boost_format(call: Cursor) -> bool:
+    """Whether ``call`` makes a ``boost::format``: its constructor, or its ``%``."""
+    declaration = call.type.get_canonical()
+    if declaration.kind in (TypeKind.LVALUEREFERENCE, TypeKind.RVALUEREFERENCE):
+        declaration = declaration.get_pointee().get_canonical()
+    made = declaration.get_declaration()
+    return made.spelling == "format" and _namespace_of(made) == "boost"
+
+
+def _constructed(expr: Cursor) -> Cursor | None:
+    """``expr`` without the casts and temporaries around a construction or a call
+    (``boost::format("%s/x")`` is a functional cast around its constructor)."""
+    for _depth in range(8):
+        expr = strip(expr)
+        if expr.kind == CursorKind.CALL_EXPR:
+            return expr
+        inner = [c for c in expr.get_children() if c.kind.is_expression()]
+        if len(inner) != 1:
+            return None
+        expr = inner[0]
+    return None
 
 
 # rclcpp's functions that give the node's own name (``get_name`` without its namespace,

@@ -196,6 +196,16 @@ def may_write(call: Cursor, index: int, decayed: bool = False) -> bool:
     if ftype.kind != TypeKind.FUNCTIONPROTO:
         return True
     types = list(ftype.argument_types())
+    if target.kind == CursorKind.CXX_METHOD and call.spelling.startswith("operator") and (
+        call.spelling != "operator()" and len(list(call.get_arguments())) == len(types) + 1
+    ):  # a member operator's call lists its object first (``f % kNs``: boost::format).
+        # Not ``operator()``, left as it was (its arguments matched one parameter on): a
+        # permissive value's call (``haros_any``'s ``operator()(A &&...)``) would make
+        # every lvalue it is given a write, a change of its own to decide (cob_bms_driver's
+        # ``socketcan_interface_.init(can_device_, false)`` would lose the default can0)
+        if index == 0:
+            return not target.is_const_method()
+        index -= 1
     if index >= len(types):
         return not decayed  # a C variadic: a printf family's arguments are read
     ptype = types[index]
