@@ -52,6 +52,7 @@ from .owners import (
     constructors_here,
     handle_node,
     node_arguments,
+    opaque_construction,
     opaque_constructor,
     options_arguments,
     owner_of,
