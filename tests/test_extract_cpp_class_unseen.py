@@ -573,3 +573,69 @@ def test_a_class_built_in_a_function_that_makes_no_ros_call(write_tree: Any) -> 
                and "costmap_2d::Costmap2DROS of ROS package costmap_2d" in r
                for r in node.completeness_reasons), node.completeness_reasons
     assert "~rate" in [c.name for c in node.calls]
+
+
+# LeGO-LOAM's mapOptmization builds gtsam's classes (``gtsam::Vector``, ``gtsam::Pose3``);
+# its package.xml names gtsam, a library released into ROS 1 that makes no ROS calls,
+# and where it is not installed the parse knows the names only as declared permissively
+SMOOTHER = """
+    #include <ros/ros.h>
+    #include <gtsam/geometry/Pose3.h>
+    #include <octomap/OcTree.h>
+    #include <slam_lib/graph.h>
+
+    int main(int argc, char** argv) {
+      ros::init(argc, argv, "smoother");
+      ros::NodeHandle nh("~");
+      double rate;
+      nh.param("rate", rate, 1.0);
+      gtsam::Pose3 pose;
+      octomap::OcTree tree;
+      LIBRARY_OBJECT
+      ros::spin();
+    }
+    """
+
+
+def _smoother(write_tree: Any, library: str, *deps: str) -> Any:
+    model = _model(write_tree, {
+        "src/smoother/package.xml": _depends("smoother", "roscpp", *deps),
+        "src/smoother/CMakeLists.txt":
+            "project(smoother)\nadd_executable(smoother src/smoother.cpp)\n",
+        "src/smoother/src/smoother.cpp": SMOOTHER.replace("LIBRARY_OBJECT", library),
+    })
+    node = next(n for p in model.packages for n in p.nodes if n.name == "smoother/smoother")
+    node.said = [d for d in model.diagnostics if d.code == "CPP_CLASS_UNSEEN"]
+    return node
+
+
+def test_a_library_known_to_make_no_ros_calls_leaves_it_complete(write_tree: Any) -> None:
+    # gtsam and octomap are found nowhere, but the shipped table knows their manifests
+    node = _smoother(write_tree, "", "gtsam", "octomap")
+    assert node.completeness == "complete", node.completeness_reasons
+    assert node.said == []
+    assert "~rate" in [c.name for c in node.calls]
+
+
+def test_an_unknown_missing_dependency_beside_them_stays_partial(write_tree: Any) -> None:
+    # slam_lib is in no table and not installed: what its class does is not known
+    node = _smoother(write_tree, "slam_lib::Graph graph(\"graph\");", "gtsam", "octomap",
+                     "slam_lib")
+    assert node.completeness == "partial"
+    assert [d.location.line for d in node.said] == [13], node.said
+    assert any("slam_lib::Graph of ROS package slam_lib" in r
+               for r in node.completeness_reasons), node.completeness_reasons
+
+
+def test_the_table_names_its_sources() -> None:
+    from haros_arch import safe_yaml
+    from haros_arch.extract.cpp import NO_CLIENTS, no_clients
+
+    with open(NO_CLIENTS, encoding="utf-8") as handle:
+        data = safe_yaml.load(handle.read())
+    assert "gtsam" in no_clients() and "roscpp" not in no_clients()
+    # every released library names the manifest read: repository, commit, path
+    for name, source in data["released"].items():
+        repo, commit, path = source.split()
+        assert repo.startswith("github:") and len(commit) == 40, name
+        assert path.endswith("package.xml"), name

@@ -137,6 +137,25 @@ def test_an_absolute_name_from_a_parameter_ignores_the_handles_namespace():
         "/camera/depth", "/head_camera/image_raw", "/relative/costmap/obstacles/image_raw"]
 
 
+def test_an_absolute_name_from_a_parameter_on_the_private_handle_is_that_name():
+    # octomap_server's TrackingOctomapServer: ``NodeHandle private_nh("~");
+    # private_nh.param("topic_changes", t, "changes"); private_nh.subscribe(t, ...)``,
+    # its launch files setting ``/octomap_tracking_server/changeset``: roscpp takes a
+    # global name as it is, whatever the handle (the call's name is ``~?``, no slash)
+    def tracker(executable):
+        n = node("p", executable, call("subscribe", "~?", "sensor_msgs/PointCloud2"))
+        n.calls[0].name_param = "~topic_changes"
+        n.calls[0].name_default = "changes"
+        return n
+
+    config = graph(
+        [NodeDecl("/listener", "p", "l1"), NodeDecl("/plain", "p", "l2")],
+        params=[ParamDecl("/listener/topic_changes", "/tracking/changeset", "str")],
+        nodes=[tracker("l1"), tracker("l2")])
+    assert sorted(t.name for t in config.topics) == ["/plain/changes",
+                                                      "/tracking/changeset"]
+
+
 def test_a_handle_namespace_from_a_parameter_takes_its_value_then_remaps():
     # pointgrey's stereo nodelet: ``pnh.param("first_namespace", firstcam, "left");
     # ros::NodeHandle lnh(nh, firstcam); it.advertiseCamera("image_raw", 5)`` on lnh:

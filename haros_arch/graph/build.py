@@ -690,8 +690,10 @@ def _given_name(call: PrimitiveCall, instance: NodeInstance, resources: Resource
 def _filled(name: str, value: str) -> str:
     """``name`` with ``value`` in the place of its (first) ``?``."""
     if value.startswith(("/", "~")) and (
-            name == UNKNOWN_MARK or name.endswith("/" + UNKNOWN_MARK)):
-        return value  # a global or private name is not resolved in the handle's namespace
+            name in (UNKNOWN_MARK, "~" + UNKNOWN_MARK) or name.endswith("/" + UNKNOWN_MARK)):
+        # a global or private name is not resolved in the handle's namespace (the private
+        # handle's ``~`` takes no slash: ``~?``)
+        return value
     return name.replace(UNKNOWN_MARK, value, 1)
 
 

@@ -10,6 +10,7 @@ and walks the functions defined in the workspace for calls listed in ``api.ROSCP
 from __future__ import annotations
 
 import dataclasses
+import functools
 import os
 import re
 from collections.abc import Callable, Collection, Iterable, Sequence
@@ -21,6 +22,7 @@ from clang.cindex import Cursor, CursorKind, TranslationUnit, TranslationUnitLoa
 from clang.cindex import Diagnostic as ClangDiagnostic
 
 from ... import diagnostics as diag
+from ... import safe_yaml
 from ...collector import held_back
 from ...diagnostics import Diagnostic
 from ...files import MAX_FILE_BYTES, read_text
@@ -897,7 +899,8 @@ def ros1_clients(path: str, workspace: Workspace, generated: str,
     files that define the class's constructors (when found) name a NodeHandle or the
     parameter, topic or service functions; another package's when the unit's package
     declares it as a dependency and it is installed with a package.xml that depends on
-    roscpp, or found nowhere (its headers are missing: what it does is not known). A
+    roscpp, or found nowhere (its headers are missing: what it does is not known) and
+    not in the table of dependencies known to make no ROS calls (``no_clients``). A
     dependency counts when the unit's package declares it or a workspace package it
     depends on exports it (``_visible``). The workspace files it reads (manifests, the
     files that define a class) go to ``read``, so a cached result is used only while
@@ -972,10 +975,24 @@ def _client(name: str, cls: str, declared: set[str], workspace: Workspace,
     folder = workspace.find(name)
     manifest = os.path.join(folder, "package.xml") if folder else None
     if manifest is None or not os.path.isfile(manifest):
-        return True
+        return name not in no_clients()  # found nowhere: unknown, unless the table knows
     parsed, _ = parse_manifest(manifest, workspace.location(manifest), folder or "",
                                workspace.environment)
     return parsed is None or any(d.name == ROSCPP for d in parsed.dependencies)
+
+
+NO_CLIENTS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "nonclients.yaml")
+
+
+@functools.lru_cache(maxsize=1)
+def no_clients() -> frozenset[str]:
+    """The dependencies known to make no ROS calls though their manifests are not at hand
+    (``nonclients.yaml``, each list with its source): rosdep keys of system libraries
+    (``tinyxml2``, ``libpcl-all-dev``) and third-party libraries released into ROS 1
+    whose package.xml depends on no ROS client library (``gtsam``, ``octomap``)."""
+    with open(NO_CLIENTS, encoding="utf-8") as handle:
+        data = safe_yaml.load(handle.read())
+    return frozenset([*data["system"], *data["released"]])
 
 
 def _defining_code(root: str, cls: str, read: list[str]) -> str | None:

@@ -46,7 +46,8 @@ def default_folder(workspace_root: str) -> str:
 @functools.lru_cache(maxsize=1)
 def tool_version() -> str:
     """Our version, libclang's, and a hash of the stand-in headers and of this
-    extractor's own code (so a changed extractor never reads an older one's entries)."""
+    extractor's own code and data (so a changed extractor never reads an older one's
+    entries)."""
     from . import toolchain
 
     digest = hashlib.sha256(f"{__version__}/{FORMAT}".encode())
@@ -59,7 +60,7 @@ def tool_version() -> str:
         digest.update(b"libclang")
     here = os.path.dirname(os.path.abspath(__file__))
     code: list[tuple[str, list[str], list[str]]] = [
-        (here, [], sorted(f for f in os.listdir(here) if f.endswith(".py")))]
+        (here, [], sorted(f for f in os.listdir(here) if f.endswith((".py", ".yaml"))))]
     # the catalogue of interface definitions makes the headers of installed messages
     catalogue = sorted(os.walk(interfaces.CATALOGUE))
     for folder, _dirs, files in [*code, *sorted(os.walk(STANDIN)), *catalogue]:
