@@ -197,42 +197,34 @@ class Interpreter:
 
     # -- values ---------------------------------------------------------------
     def expand(self, text: str) -> str:
-        if "$" not in text:
-            return text
-        for _ in range(1000):
-            match = _VAR_REF.search(text)
-            if not match:
-                return text
-            kind, name = match.group(1), match.group(2)
-            if kind == "ENV":
-                value = self.environment.get(name, "")
-            elif kind == "CACHE":
-                value = self.cache.get(name, "")
-            else:
-                value = self.get(name) or ""
-            text = text[:match.start()] + value + text[match.end():]
-            if len(text) > 1_000_000:
-                break
-        return text
+        return self._expanded(text)[0]
 
     def unknown_reference(self, text: str) -> bool:
         """Whether expanding ``text`` reads a variable, environment setting or cache entry
         that is not set here (its value is then not known, not empty)."""
+        return self._expanded(text, stop_at_unknown=True)[1]
+
+    def _expanded(self, text: str, stop_at_unknown: bool = False) -> tuple[str, bool]:
+        """``text`` with its references replaced by their values (one not set: empty, as
+        CMake gives it), and whether one read is not known here: not set, or a variable
+        set under a test the reading cannot decide (``uncertain``). With
+        ``stop_at_unknown``, the walk ends at the first such reference. A text that
+        keeps growing past 1 MB or 1,000 replacements is not known either."""
         if "$" not in text:
-            return False
+            return text, False
         for _ in range(1000):
             match = _VAR_REF.search(text)
             if not match:
-                return False
+                return text, False
             kind, name = match.group(1), match.group(2)
             value = (self.environment.get(name) if kind == "ENV" else
                      self.cache.get(name) if kind == "CACHE" else self.get(name))
-            if value is None or (not kind and name in self.uncertain):
-                return True
-            text = text[:match.start()] + value + text[match.end():]
+            if stop_at_unknown and (value is None or (not kind and name in self.uncertain)):
+                return text, True
+            text = text[:match.start()] + (value or "") + text[match.end():]
             if len(text) > 1_000_000:
                 break
-        return True
+        return text, True
 
     def arguments(self, args: tuple[Argument, ...]) -> list[str]:
         """Expand references; unquoted arguments split on ';' as CMake does."""
