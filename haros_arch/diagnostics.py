@@ -334,6 +334,15 @@ CATALOGUE: dict[str, Entry] = {
         "graph: each managed node is taken with the whole interface its code makes, as "
         "once configured, whatever state the launch file drives it to. The actions an "
         "OnStateTransition handler runs are read, under that event. Said once per file."),
+    "LAUNCH_PY_ALWAYS_TRUE": Entry(
+        "info", "the Python test '{test}' is always true: a launch object is not "
+        "evaluated by Python",
+        "A Python 'if' of a launch file tests a launch object itself (a condition such as "
+        "LaunchConfigurationEquals(...), a substitution, an action). Python takes such an "
+        "object as true, whatever the launch arguments: launch evaluates a condition "
+        "only when it is an action's condition=. The 'if' branch is the one read, as it "
+        "is the one that runs; the file probably meant condition=IfCondition(...) or "
+        "the configuration's value performed in an OpaqueFunction."),
     "LAUNCH_PY_BUDGET": Entry(
         "warning", "interpretation stopped: {detail}",
         "A launch file exceeded a bound of the static interpreter (steps, call depth, "

@@ -575,3 +575,39 @@ def generate_launch_description():
     assert not [d.message for d in model.diagnostics if "fails" in d.message]
     params = {p.name: p.value for p in model.params}
     assert set(params) == {"/sim/path", "/sim/arg"}
+
+
+def test_python_if_on_a_launch_object_is_always_true(write_tree):
+    """A plain ``if`` on a launch object (a condition, a substitution, an action) is
+    Python's truth of an ordinary object: true, whatever the launch arguments (launch
+    evaluates a condition only as an action's ``condition=``). Only the ``if`` branch
+    runs, with an info that says so; ``not`` of one is false. A string with
+    substitutions, an unknown and a container keep their truth: not known (both
+    branches), or the container's length."""
+    model, root = run(write_tree, """
+def generate_launch_description():
+    chosen = []
+    if LaunchConfigurationEquals('aligned', 'True'):
+        chosen.append(Node(package='p', executable='e', name='aligned_node'))
+    else:
+        chosen.append(Node(package='p', executable='e', name='unaligned_node'))
+    if not IfCondition(LaunchConfiguration('rviz')):
+        chosen.append(Node(package='p', executable='e', name='never_node'))
+    if LaunchConfiguration('x') and []:
+        chosen.append(Node(package='p', executable='e', name='empty_list_node'))
+    if os.environ.get('UNSET_VAR_FOR_TEST'):
+        chosen.append(Node(package='p', executable='e', name='env_node'))
+    return LaunchDescription([DeclareLaunchArgument('aligned', default_value='False'),
+                              *chosen])
+""", args={"aligned": "False"})
+    assert [n.name for n in model.nodes] == ["/aligned_node", "/env_node"]
+    assert model.nodes[0].conditions == ()
+    assert model.nodes[1].conditions != ()  # an unset variable: both branches, guarded
+    lines = (root / "src/pkg/launch/main.launch.py").read_text().splitlines()
+    test_line = 1 + next(n for n, text in enumerate(lines) if "if LaunchConfigurationEq" in text)
+    found = [(d.code, d.severity, d.location.line) for d in model.diagnostics
+             if d.code in ("LAUNCH_PY_ALWAYS_TRUE", "LAUNCH_UNSUPPORTED", "LAUNCH_PY_UNSUPPORTED")
+             and d.location.line < test_line + 5]
+    assert found == [("LAUNCH_PY_ALWAYS_TRUE", "info", test_line)]
+    assert "LaunchConfigurationEquals('aligned', 'True')" in next(
+        d.message for d in model.diagnostics if d.code == "LAUNCH_PY_ALWAYS_TRUE")

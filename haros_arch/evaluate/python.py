@@ -150,7 +150,9 @@ class Walker:
         value = self.eval(node.operand, env)
         what = "not" if isinstance(node.op, ast.Not) else "unary"
         if self.opaque(value):
-            return self.not_known(node, what, (value,))
+            # ``not`` of a value the configuration knows the truth of (a launch object)
+            truth = self.truth(value) if what == "not" else None
+            return self.not_known(node, what, (value,)) if truth is None else not truth
         return self.compute(lambda: ops.unary(type(node.op), value), node, what)
 
     def eval_Slice(self, node: ast.Slice, env: Any = None) -> Any:

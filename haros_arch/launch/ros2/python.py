@@ -58,6 +58,7 @@ from .python_values import (
     _load,
     _Return,
     _source,
+    launch_object,
 )
 
 
@@ -376,7 +377,11 @@ class Interpreter(Expressions):
         return self.unsupported(node, detail)
 
     def if_(self, stmt: ast.If, env: dict[str, Any]) -> None:
-        test = self.truth(self.eval(stmt.test, env))
+        value = self.eval(stmt.test, env)
+        test = self.truth(value)
+        if launch_object(value):  # ``if LaunchConfigurationEquals(...):`` never tests it
+            self.diagnostics.append(diag.make("LAUNCH_PY_ALWAYS_TRUE", self.where(stmt.test),
+                                              test=_source(stmt.test)))
         if test is True:
             self.block(stmt.body, env)
         elif test is False:

@@ -37,6 +37,7 @@ from .python_values import (
     concat,
     is_lazy,
     is_stringy,
+    launch_object,
     printable,
     to_text,
 )
@@ -106,6 +107,13 @@ class Expressions(Walker):
 
     def opaque(self, value: object) -> bool:
         return _opaque(value)
+
+    def truth(self, value: object) -> bool | None:
+        """Python's truth of a value: a launch object is true (``launch_object``); a
+        string with substitutions or an unknown is not known."""
+        if launch_object(value):
+            return True
+        return super().truth(value)
 
     def not_known(self, node: ast.AST, what: str, values: Iterable[object]) -> Any:
         """An operation on a substitution or an unknown: an unknown, which says what."""

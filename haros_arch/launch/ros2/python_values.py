@@ -158,6 +158,13 @@ def _opaque(value: Any) -> bool:
     return isinstance(value, (Unknown, Lazy, e.Subst, e.Cond, e.Action))
 
 
+def launch_object(value: Any) -> bool:
+    """An object of launch's API (a condition, a substitution, an action): none of their
+    classes defines ``__bool__`` or ``__len__``, so Python takes each as true, unevaluated.
+    A string with substitutions (``Lazy``, a ``str`` when it runs) is not one."""
+    return isinstance(value, (e.Subst, e.Cond, e.Action))
+
+
 def is_lazy(value: Any) -> bool:
     return isinstance(value, (Lazy, e.Subst, Unknown))
 
