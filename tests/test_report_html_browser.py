@@ -479,3 +479,24 @@ def test_a_live_capture_shows_beside_the_graph(browser: Any, tmp_path: Path) -> 
     assert watched.ids("#graph .vertex.static-only") == {
         "node:/monitor", "topic:/count", "topic:/status"}
     assert watched.problems == []
+
+
+def test_the_report_opens_on_the_first_configuration_that_starts_a_node(
+        browser: Any, example: dict[str, Any], tmp_path: Path) -> None:
+    # champ's ros2 branch keeps a ROS 1 laser/sim.launch that starts nothing: it sorts
+    # first, and the report opened on an empty graph
+    data = json.loads(json.dumps(example["data"]))
+    first = data["configurations"][0]
+    empty = {**first, "name": "aaa/empty", "nodes": [], "topics": [], "services": [],
+             "actions": [], "parameters": [], "links": []}
+    data["configurations"].insert(0, empty)
+    path = tmp_path / "opening.html"
+    write_report(data, [], str(example["root"]), str(path))
+    watched = Watched(browser, path)
+    assert watched.page.eval_on_selector("#config", "s => s.options[s.selectedIndex].text") == (
+        first["name"])
+    assert watched.ids("#graph .vertex") == entity_ids(first)
+    watched.page.select_option("#config", label="aaa/empty")
+    assert watched.ids("#graph .vertex") == set()
+    assert watched.problems == []
+    watched.page.close()

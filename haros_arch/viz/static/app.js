@@ -482,5 +482,9 @@ function renderPackages() {
 }
 
 skeleton();
-setConfig(0);
+// the report opens on the first configuration that starts a node (a launch file that
+// includes nothing the workspace has, or only another robot's parts, starts none)
+const opening = Math.max(0, CONFIGS.findIndex(c => (c.nodes || []).length > 0));
+ui.config.value = String(opening);
+setConfig(opening);
 window.harosReport = {ready: true, scriptMs: performance.now() - started, readyAt: performance.now()};
