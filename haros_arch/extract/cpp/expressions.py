@@ -68,6 +68,13 @@ def unresolved_operator(cursor: Cursor) -> tuple[str, Cursor, Cursor] | None:
     return refs[0].spelling[len("operator"):], children[0], children[2]
 
 
+def first_operand(cursor: Cursor) -> Cursor | None:
+    """The first expression among ``cursor``'s children, without the wrappers around it
+    (a call's callee, the object of a member access); None when it has none."""
+    found = next((c for c in cursor.get_children() if c.kind.is_expression()), None)
+    return strip(found) if found is not None else None
+
+
 def strip(cursor: Cursor) -> Cursor:
     """``cursor`` without the wrappers around it."""
     while cursor.kind in WRAPPERS:

@@ -20,7 +20,7 @@ from __future__ import annotations
 import dataclasses
 import functools
 import re
-from collections.abc import Callable, Collection, Iterable
+from collections.abc import Callable, Collection, Iterable, Iterator
 
 from clang.cindex import Cursor, CursorKind, conf
 
@@ -180,14 +180,20 @@ def opaque_facts(functions: Iterable[Cursor], main: str,
     constructor the unit's own source ``main`` defines."""
     facts: list[Fact] = [(usr, OPAQUE, " ".join(sorted(w.decode() for w in found)), "")
                          for usr, found in sorted(words.items())]
+    for function in _own_constructors(functions, main):
+        usr = function.canonical.get_usr()
+        if usr:
+            facts.append((usr, DEFINED, "", ""))
+    return facts
+
+
+def _own_constructors(functions: Iterable[Cursor], main: str) -> Iterator[Cursor]:
+    """The constructors among ``functions`` that the unit's own source ``main`` defines."""
     for function in functions:
         where = function.location.file
         if function.kind == CursorKind.CONSTRUCTOR and where is not None and (
                 where.name == main) and function.is_definition():
-            usr = function.canonical.get_usr()
-            if usr:
-                facts.append((usr, DEFINED, "", ""))
-    return facts
+            yield function
 
 
 def member_facts(functions: Iterable[Cursor], main: str,
@@ -197,11 +203,9 @@ def member_facts(functions: Iterable[Cursor], main: str,
     (None: not one to say)."""
     facts: list[Fact] = []
     seen: set[str] = set()
-    for function in functions:
-        where = function.location.file
+    for function in _own_constructors(functions, main):
         owner = function.semantic_parent
-        if function.kind != CursorKind.CONSTRUCTOR or where is None or where.name != main or (
-                owner is None or not function.is_definition()):
+        if owner is None:
             continue
         for field in owner.get_children():
             usr = field.get_usr() if field.kind == CursorKind.FIELD_DECL else ""

@@ -25,6 +25,7 @@ from . import api, formats
 from .cursors import _Place
 from .expressions import (
     binary_operator,
+    first_operand,
     initializer,
     operand,
     qualified_name,
@@ -553,8 +554,7 @@ class Scope:
             callee = next(iter(node.get_children()), None)
             if callee is None or callee.kind != CursorKind.MEMBER_REF_EXPR:
                 continue
-            target = next((c for c in callee.get_children() if c.kind.is_expression()), None)
-            target = strip(target) if target is not None else None
+            target = first_operand(callee)
             offset = node.extent.start.offset
             if (target is None or target.kind != CursorKind.DECL_REF_EXPR
                     or target.referenced is None or key_of(target.referenced) != key

@@ -31,7 +31,7 @@ from .call_types import CallTypes, factory_made, row_class
 from .call_types import callee as callee_of_call
 from .conditions import ConditionReader
 from .cursors import children_in, from_standin, overloads, release, root
-from .expressions import binary_operator
+from .expressions import binary_operator, first_operand
 from .handles import (
     Namespaces,
     callback,
@@ -947,8 +947,7 @@ class CallFinder:
             target) else ""
         if "::" in name and name.split("::")[0] != synthesis.ANY:
             return name.split("::")[0]
-        callee = next((c for c in call.get_children() if c.kind.is_expression()), None)
-        callee = strip(callee) if callee is not None else None
+        callee = first_operand(call)
         if callee is None or callee.kind != CursorKind.MEMBER_REF_EXPR:
             return None
         subject = next((c for c in callee.get_children() if c.kind.is_expression()), None)
@@ -970,8 +969,7 @@ class CallFinder:
         ``_to_unknown`` says where it is given (``resolved``, so not CPP_CALL_MISSED)."""
         if not self.ros2:
             return
-        callee = next((c for c in call.get_children() if c.kind.is_expression()), None)
-        callee = strip(callee) if callee is not None else None
+        callee = first_operand(call)
         if callee is None or callee.kind not in (CursorKind.MEMBER_REF_EXPR,
                                                  CursorKind.DECL_REF_EXPR):
             return
