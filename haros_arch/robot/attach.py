@@ -37,7 +37,7 @@ from .. import diagnostics as diag
 from .. import safe_yaml
 from ..files import read_text
 from ..launch.model import LaunchModel, NodeDecl, ParamDecl
-from ..launch.ros2.naming import params_for_node
+from ..launch.ros2.naming import params_for_node, split_rule
 from ..model.conditions import Condition
 from ..model.location import NOWHERE, Location
 from ..model.robot import DescribedControl, DescribedPlugin, RobotDescription
@@ -770,15 +770,12 @@ class _PluginArguments:
     def _rule(self, text: str) -> str:
         """``"rule"`` (kept) if ``text`` is a remap rule rcl reads, ``"scheme"`` if it is
         one for topics or services alone (``rostopic://``: not modelled), else ``"no"``."""
-        if ":=" not in text:
+        rule = split_rule(text)
+        if rule is None:
             return "no"
-        left, right = text.split(":=", 1)
-        node: str | None = None
-        scheme = re.match(r"(?:(\w+):)?(rostopic|rosservice)://", left)
-        if scheme:
+        if re.match(r"(?:(\w+):)?(rostopic|rosservice)://", text):
             return "scheme"
-        if ":" in left:
-            node, left = left.split(":", 1)
+        node, left, right = rule
         # rcl has no wildcards nor back references in rules yet: not rules
         if not _RULE_NAME.fullmatch(left) or not _RULE_NAME.fullmatch(right) or \
                 right.startswith("__") or (left.startswith("__") and left not in (
