@@ -34,6 +34,7 @@ from ...workspace import Workspace, manifest_of
 from .. import NODELET_LOAD
 from . import cache, call_conditions, links, recall, ros2_interfaces, synthesis, toolchain, versions
 from . import compile_commands as commands
+from .conditions import fewest
 from .headers import FALLBACK, STANDIN, IncludeSetup
 from .interfaces import interface_package
 from .interfaces import known as known_interface
@@ -256,10 +257,33 @@ def _is_ros2(path: str, included: bool, workspace: Workspace) -> bool:
     return included if version is None else version == 2
 
 
+def _made_under_fewest(calls: list[PrimitiveCall],
+                       seen: dict[tuple[object, ...], list[PrimitiveCall]]
+                       ) -> list[PrimitiveCall]:
+    """``calls`` (the first of each kind, name and place), each once per set of
+    conditions it is made under that no other one covers (``conditions.fewest``): nav2's
+    ``declare_or_get_parameter`` reads the parameter ``if (param_interface->
+    has_parameter(name))`` and, after that branch returns, reads it again, so its call
+    site reads it either way; a wrapper that makes one publisher in an ``if`` and the
+    same in its ``else`` makes it under neither."""
+    out: list[PrimitiveCall] = []
+    for call in calls:
+        made = seen[(call.kind, call.name, call.location, call.name_param)]
+        if len(made) < 2:
+            out.append(call)
+            continue
+        ways = [(c.conditions, dataclasses.replace(c, conditions=())) for c in made]
+        for conditions, rest in fewest(ways):
+            out.append(dataclasses.replace(rest, conditions=conditions))
+    return out
+
+
 def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True) -> CppResult:
     result = CppResult()
     units = [unit for _, unit in paths_units]
-    seen: set[tuple[object, ...]] = set()
+    # each call by kind, name and place: one of them, and the conditions the others
+    # are made under (a wrapper's call site makes the calls of its branches)
+    seen: dict[tuple[object, ...], list[PrimitiveCall]] = {}
     facts = [fact for unit in units for fact in unit.facts]
     # where a construction may be missed: the words of the code around the errors the
     # parse left (an error drops its statement), everywhere when a file was not read
@@ -292,8 +316,11 @@ def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True
             # CostmapSubscriber, built with the local and the global costmap's topic)
             key = (call.kind, call.name, call.location, call.name_param)
             if key not in seen:
-                seen.add(key)
+                seen[key] = [call]
                 result.calls.append(call)
+            elif call.conditions not in (c.conditions for c in seen[key]):
+                seen[key].append(call)
+    result.calls = _made_under_fewest(result.calls, seen)
     # a copy named by no parameter beside one that is (a header's function that another
     # unit reads without its caller: opennav_docking's parseDockParams) is that one
     named = {(c.kind, c.name, c.location) for c in result.calls if c.name_param is not None}

@@ -21,6 +21,7 @@ from __future__ import annotations
 import dataclasses
 import re
 from collections.abc import Callable
+from typing import TypeVar
 
 from clang.cindex import Cursor, CursorKind
 
@@ -28,6 +29,7 @@ from ...model.conditions import Condition
 from ...model.location import Location
 
 Branch = tuple[Cursor, tuple[Condition, ...]]
+_Rest = TypeVar("_Rest")
 _LOOPS = {CursorKind.FOR_STMT: "for", CursorKind.CXX_FOR_RANGE_STMT: "for",
           CursorKind.WHILE_STMT: "while"}
 _LABELS = (CursorKind.CASE_STMT, CursorKind.DEFAULT_STMT)
@@ -38,6 +40,9 @@ _CONTROL = frozenset({
     CursorKind.CXX_TRY_STMT, CursorKind.CONDITIONAL_OPERATOR, CursorKind.BINARY_OPERATOR,
     CursorKind.CXX_CATCH_STMT})
 _SPACE = re.compile(r"\s+")
+# ``!node->has_parameter(name)``, ``!this->has_parameter("x")``, ``!has_parameter(x)``
+_NOT_DECLARED = re.compile(
+    r"!\s*(?:[A-Za-z_][\w:]*\s*(?:\(\s*\))?\s*(?:->|\.)\s*)*has_parameter\s*\(\s*(.+?)\s*\)")
 _ELSE = re.compile(r"\belse\b")
 _SHORT_CIRCUIT = re.compile(r"^\s*(&&|\|\||\band\b|\bor\b)\s*$")
 # a handler that catches what rclcpp throws for a parameter that is not set (its
@@ -226,6 +231,26 @@ class ConditionReader:
         when it is not in one file read."""
         return self._text(node)
 
+    def declared_anyway(self, conditions: tuple[Condition, ...], name: Cursor
+                        ) -> tuple[Condition, ...]:
+        """``conditions`` of an rclcpp parameter declaration named by ``name`` without
+        a test that the node has not declared that parameter yet (``if
+        (!node->has_parameter(name)) node->declare_parameter(name, value)``: nav2's
+        ``declare_parameter_if_not_declared``). rclcpp throws on a second declaration;
+        the test only spares that, and after the statement the parameter is declared
+        either way, so it is no condition of the declaration."""
+        written = None
+        kept = []
+        for condition in conditions:
+            found = _NOT_DECLARED.fullmatch(condition.text) if (
+                condition.statement == "if") else None
+            if found is not None:
+                written = self._text(name) if written is None else written
+                if found.group(1) == written:
+                    continue
+            kept.append(condition)
+        return tuple(kept) if len(kept) < len(conditions) else conditions
+
     def _text(self, node: Cursor) -> str:
         start, end = node.extent.start, node.extent.end
         text = self._bytes(start.file)
@@ -261,3 +286,50 @@ def _goes_on(handler: Cursor) -> bool:
     return not any(node.kind in _LEAVES or (
         node.kind == CursorKind.CALL_EXPR and node.spelling in _EXITS)
         for node in handler.walk_preorder())
+
+
+
+def fewest(alternatives: list[tuple[tuple[Condition, ...], _Rest]]
+           ) -> list[tuple[tuple[Condition, ...], _Rest]]:
+    """Of the ways one call is made (its conditions, and what else it is made with),
+    those no other one covers, in the order given: conditions that hold all of
+    another's hold only where that one does, and the call is made there anyway; two
+    made with the same rest that differ only in an ``if`` and its ``else`` (the same
+    test at the same place) are one, under their common part."""
+    work = list(alternatives)
+    changed = True
+    while changed and len(work) > 1:
+        changed = False
+        for i, (one, rest) in enumerate(work):
+            for j, (other, other_rest) in enumerate(work):
+                if i == j:
+                    continue
+                if set(other) <= set(one) and (set(other) < set(one) or j < i):
+                    del work[i]  # ``one`` is covered
+                    changed = True
+                    break
+                common = _branches_of(one, other) if rest == other_rest else None
+                if common is not None:
+                    work[min(i, j)] = (common, rest)
+                    del work[max(i, j)]
+                    changed = True
+                    break
+            if changed:
+                break
+    return work
+
+
+def _branches_of(one: tuple[Condition, ...], other: tuple[Condition, ...]
+                 ) -> tuple[Condition, ...] | None:
+    """``one`` less the one condition in which it differs from ``other``, when that is
+    an ``if`` in one and its ``else`` in the other; else None."""
+    if len(one) != len(other):
+        return None
+    differ = [i for i, (a, b) in enumerate(zip(one, other, strict=True)) if a != b]
+    if len(differ) != 1:
+        return None
+    a, b = one[differ[0]], other[differ[0]]
+    if {a.statement, b.statement} != {"if", "else"} or (a.text, a.location) != (
+            b.text, b.location):
+        return None
+    return (*one[:differ[0]], *one[differ[0] + 1:])

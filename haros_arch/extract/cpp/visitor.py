@@ -239,7 +239,7 @@ class CallFinder:
         self.wrappers.build()
         self.members = self.namespaces.members = MemberWrites(self.functions, self.source,
                                                               self.opaque)
-        self.wrappers.read_inside(self._conditions_at)
+        self.wrappers.read_inside(self._conditions_of)
         for function in self.functions:
             if self._gives(function):
                 self._function(function)
@@ -541,19 +541,30 @@ class CallFinder:
     def _conditions_at(self, function: Cursor, call: Cursor) -> tuple[Condition, ...] | None:
         """The source conditions of ``call`` in the body of ``function`` (None when it is
         not found there), as ``_function`` reads them."""
-        wanted = place_of(call)
+        return self._conditions_of(function, [call]).get(place_of(call))
+
+    def _conditions_of(self, function: Cursor, calls: list[Cursor]
+                       ) -> dict[object, tuple[Condition, ...]]:
+        """``_conditions_at`` of each of ``calls`` in one walk of ``function``, by the
+        call's place (a call not found there is left out)."""
+        wanted = {place_of(call): call.kind for call in calls}
         held = functools.partial(self._held_parameters, scope=self.sites.scope(function)) if (
             self.sites is not None) else None
         self.reader.enter(function, ARGUMENTS_LEFT, held)
         stack: list[tuple[Cursor, tuple[Condition, ...]]] = [
             (child, ()) for child in reversed(list(function.get_children()))
             if child.kind != CursorKind.PARM_DECL]
+        found: dict[object, tuple[Condition, ...]] = {}
         while stack:
             node, conditions = stack.pop()
-            if node.kind == call.kind and place_of(node) == wanted:  # a delegation too
-                return conditions
+            if node.kind in wanted.values():  # a delegation too
+                place = place_of(node)
+                if wanted.get(place) == node.kind and place not in found:
+                    found[place] = conditions
+                    if len(found) == len(wanted):
+                        break
             stack.extend(self.reader.below(node, conditions))
-        return None
+        return found
 
     # -- one call ---------------------------------------------------------------------
 
@@ -1085,6 +1096,8 @@ class CallFinder:
         constructor (``made_in``; a default constructor also where none of the others
         is called, as a loader makes the class), or each kept when this file constructs
         the class by several."""
+        if spec.kind == "declare" and self.ros2 and spec.name_arg < len(args):
+            conditions = self.reader.declared_anyway(conditions, args[spec.name_arg])
         sites = self.sites
         if sites is None or self._made_by is not None or sites.forks is not None:
             self._emit_one(spec, call, args, cls, conditions, scope, at, at_scope)

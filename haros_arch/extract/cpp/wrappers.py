@@ -8,8 +8,10 @@ into the name argument of a ROS call (a row of ``api.ALL``, or of another wrappe
 parameters (``Wrapper``). A call of it is then a ROS call at the call site, with the
 name, type (the call's template argument when the inner type is the wrapper's template
 parameter, or the value / callback it passes on), QoS, queue, default, handle and
-conditions of that call site; the call inside the wrapper is no longer emitted on its own
-(its name would be ``?``).
+conditions of that call site, and under the conditions the call is under inside the
+wrapper (and inside each wrapper of a chain: ``if (use_extra_)`` around a second
+publisher the wrapper makes); the call inside the wrapper is no longer emitted on its
+own (its name would be ``?``).
 
 Summaries are built per translation unit from every function defined in its workspace
 files (headers included): first the functions that call the API with a parameter-valued
@@ -25,6 +27,7 @@ from __future__ import annotations
 
 import bisect
 import dataclasses
+import functools
 import re
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
@@ -33,6 +36,7 @@ from typing import TYPE_CHECKING, Any, TypeVar
 from clang.cindex import Cursor, CursorKind, Type, TypeKind, conf
 
 from ...model.conditions import Condition
+from ...model.values import Unknown
 from . import api, msg_types
 from .call_sites import closest, default_argument, delegation, is_constructor
 from .call_types import template_argument
@@ -127,10 +131,14 @@ class Wrapper:
     # ``when[0]``): one of tag-dispatched overloads, ``advertise(depth,
     # std::is_same<M, Image>{})`` with ``advertise(int, std::true_type)``
     when: tuple[Key, int, Key, bool] | None = None
-    # the call inside a class template's method that a member summary was made of: the
-    # conditions it is under there (``Wrappers.read_inside``: depthai_bridge's
-    # ``if(!_cameraName.empty())`` around the camera_info publisher) go with it
-    inside: Key | None = None
+    # the calls the summary was lifted through, the outermost first: the call inside the
+    # wrapper (or the class template's method a member summary was made of), then the
+    # call inside the function that one calls, down to the API call. The source
+    # conditions each is under in its function (``Wrappers.read_inside``) go with every
+    # call made through the summary: depthai_bridge's ``if(!_cameraName.empty())``
+    # around the camera_info publisher; a wrapper's ``if (use_extra_)`` around a second
+    # publisher it makes
+    inside: tuple[Key, ...] = ()
 
     def same(self, other: Wrapper) -> bool:
         return (self.row, self.before, self.after, self.namespace, self.spec_param,
@@ -191,6 +199,9 @@ class Wrappers:
         # source conditions of the call there (``read_inside``)
         self._insides: dict[Key, tuple[Cursor, Cursor]] = {}
         self._inside_conditions: dict[Key, tuple[Condition, ...]] = {}
+        # the parameter declarations among those calls: the argument that names the
+        # parameter (``ConditionReader.declared_anyway``)
+        self._declared: dict[Key, Cursor] = {}
 
     # -- building -----------------------------------------------------------------------
 
@@ -371,17 +382,28 @@ class Wrappers:
             and all(default_argument(p) is not None for p in _parameters(f))
         ) & self.site_names
 
-    def read_inside(self, conditions_at: Callable[[Cursor, Cursor], tuple[Condition, ...] | None]
+    def read_inside(self, conditions_of: Callable[[Cursor, list[Cursor]],
+                                                  dict[Any, tuple[Condition, ...]]]
                     ) -> None:
-        """Read the source conditions of each method's call a summary made at the
-        constructions keeps (``Wrapper.inside``), with ``conditions_at`` (the finder's,
-        before its walk: it readies the condition reader for the method)."""
-        used = {w.inside for found in self.summaries.values() for w in found
-                if w.inside is not None}
-        for key in used:
-            method, call = self._insides[key]
-            found = conditions_at(method, call) or ()
-            self._inside_conditions[key] = tuple(c for c in found if c.kind == "source")
+        """Read the source conditions of each call a summary was lifted through
+        (``Wrapper.inside``) in its function, with ``conditions_of`` (the finder's,
+        before its walk: it readies the condition reader for the function and walks it
+        once for all of them)."""
+        used = {key for found in self.summaries.values() for w in found
+                for key in w.inside}
+        by_function: dict[Key, tuple[Cursor, list[Key]]] = {}
+        for key in sorted(used):
+            function, _call = self._insides[key]
+            by_function.setdefault(_key(function), (function, []))[1].append(key)
+        for function, keys in by_function.values():
+            found = conditions_of(function, [self._insides[key][1] for key in keys])
+            for key in keys:
+                conditions = found.get(key, ())
+                if key in self._declared:
+                    conditions = self.finder.reader.declared_anyway(
+                        conditions, self._declared[key])
+                self._inside_conditions[key] = tuple(
+                    c for c in conditions if c.kind == "source")
 
     def _mentioned(self, method: Cursor) -> bool:
         """Whether the unit's files write the method's name anywhere but where it is
@@ -455,8 +477,7 @@ class Wrappers:
             self._member_inner[_key(call)] = (key, self._member_inner.get(_key(call), (
                 key, False))[1] or "template" in lifted.row.type_from
                 or "template-value" in lifted.row.type_from)
-            lifted = dataclasses.replace(lifted, inside=_key(call))
-            self._insides[_key(call)] = (method, call)
+            lifted = dataclasses.replace(lifted, inside=self._through(method, call))
             found = self.members.setdefault(key, [])
             if not any(lifted.same(w) for w in found):
                 found.append(lifted)
@@ -521,7 +542,8 @@ class Wrappers:
                 for method in wrapper.through:
                     self._lifted_sites.setdefault(method, set()).add((key, _key(call)))
                 added = self._keep(function, key, dataclasses.replace(
-                    lifted, row=row, when=wrapper.when, inside=wrapper.inside)) or added
+                    lifted, row=row, when=wrapper.when,
+                    inside=self._through(function, call, wrapper))) or added
             return added
         target = call.referenced
         if target is not None and target.spelling not in _ROW_NAMES and (
@@ -545,8 +567,20 @@ class Wrappers:
             if lifted is None:
                 continue
             self._inner[_key(call)] = key
-            added = self._keep(function, key, lifted) or added
+            if callee is None and wrapper.row.kind == "declare":
+                shift = 1 if wrapper.row.optional_handle and args and is_handle(args[0]) else 0
+                if wrapper.row.name_arg + shift < len(args):
+                    self._declared[_key(call)] = args[wrapper.row.name_arg + shift]
+            added = self._keep(function, key, dataclasses.replace(
+                lifted, inside=self._through(function, call, wrapper))) or added
         return added
+
+    def _through(self, function: Cursor, call: Cursor, inner: Wrapper | None = None
+                 ) -> tuple[Key, ...]:
+        """``Wrapper.inside`` of a summary lifted at ``call`` in ``function`` from
+        ``inner`` (None: made there from the API call itself)."""
+        self._insides[_key(call)] = (function, call)
+        return (_key(call), *(inner.inside if inner is not None else ()))
 
     def _keep(self, function: Cursor, key: Key, lifted: Wrapper) -> bool:
         """Add ``lifted`` to the summary of ``function`` (``key``); whether it is new."""
@@ -965,14 +999,15 @@ class Wrappers:
                 if row.name_arg >= len(args):
                     continue
             before, after = _bind(wrapper.before, bound), _bind(wrapper.after, bound)
-            if (row, before, after) in done:
+            inside = self._inside_at(wrapper, call, args, scope)
+            if inside is None:
+                continue  # a condition in the wrapper this call site makes false
+            if (row, before, after, inside) in done:
                 continue  # two summaries that differ only in the value now bound
-            done.add((row, before, after))
+            done.add((row, before, after, inside))
             named = _NamedScope(scope, args[row.name_arg], before, after) if (
                 before or after) else scope
             start = len(finder.calls)
-            inside = self._inside_conditions.get(wrapper.inside, ()) if (
-                wrapper.inside is not None) else ()
             finder._emit(row, call, args, None, (*conditions, *inside), named)
             for made in finder.calls[start:]:
                 if wrapper.namespace:
@@ -985,6 +1020,53 @@ class Wrappers:
                     ):
                         setattr(made, field, value)
         return True
+
+    def _inside_at(self, wrapper: Wrapper, call: Cursor, args: list[Cursor], scope: Scope
+                   ) -> tuple[Condition, ...] | None:
+        """The conditions ``wrapper``'s call is under inside the wrappers, at the call
+        site ``call``: those of the wrapper it calls over that wrapper's own parameters
+        are decided with the literals the site passes (or the parameter's default),
+        as the graph decides a condition (navigation's ``move_parameter(old, new, name,
+        should_delete = true)`` deletes ``if (should_delete)``: not where a call passes
+        ``false``); None when one is false there."""
+        found: list[Condition] = []
+        for level, key in enumerate(wrapper.inside):
+            conditions = self._inside_conditions.get(key, ())
+            if level == 0 and conditions:
+                values = self._passed(self._insides[key][0], call, args, scope)
+                if values:
+                    from ...graph.conditions import decide  # (graph imports extraction)
+                    kept = []
+                    for condition in conditions:
+                        answer = decide(condition, functools.partial(_passed_value, values))
+                        if answer is False:
+                            return None
+                        if answer is None:
+                            kept.append(condition)
+                    conditions = tuple(kept)
+            found.extend(conditions)
+        return tuple(found)
+
+    def _passed(self, function: Cursor, call: Cursor, args: list[Cursor], scope: Scope
+                ) -> dict[str, object]:
+        """The literal values (``bool``, numbers) the call site passes to the
+        parameters of ``function`` that its body never assigns, by name."""
+        params = _parameters(function)
+        if not params:
+            return {}
+        given = _with_defaults(call, args) if len(args) < len(params) else args
+        body = _text_of(function, self.finder.source)
+        values: dict[str, object] = {}
+        for param, arg in zip(params, given, strict=False):
+            name = param.spelling
+            if not name or body is None or _assigned(name, body):
+                continue
+            value: object = scope.boolean(arg)
+            if value is None:
+                value = scope.integer(arg)
+            if value is not None:
+                values[name] = value
+        return values
 
     def parameter_calls(self, call: Cursor, scope: Scope
                         ) -> list[tuple[api.RosFunction, Scope]]:
@@ -1782,3 +1864,33 @@ def _delegation(function: Cursor) -> Cursor | None:
 
 def _dependent_name(name: str) -> bool:
     return "type-parameter" in name
+
+
+# an assignment to, or an increment or decrement of, a name (``name = ..``, ``name += ..``,
+# ``++name``): the text around the name
+_ASSIGNED = (r"(?<![\w.>])%s\s*(?:[-+*/%%&|^]|<<|>>)?=(?!=)"
+             r"|(?:\+\+|--)\s*%s\b|(?<![\w.>])%s\s*(?:\+\+|--)")
+
+
+def _passed_value(values: dict[str, object], name: str) -> object:
+    return values.get(name, Unknown())
+
+
+def _assigned(name: str, body: bytes) -> bool:
+    """Whether ``body`` may assign the variable ``name``, read from its text."""
+    word = re.escape(name)
+    return re.search((_ASSIGNED % (word, word, word)).encode(), body) is not None
+
+
+def _text_of(function: Cursor, source: dict[str, bytes]) -> bytes | None:
+    """The text of ``function``'s body (not its parameters' defaults), when it is in
+    one file read."""
+    body = next((c for c in function.get_children()
+                 if c.kind == CursorKind.COMPOUND_STMT), None)
+    if body is None:
+        return None
+    start, end = body.extent.start, body.extent.end
+    if start.file is None or end.file is None or start.file.name != end.file.name:
+        return None
+    data = source.get(start.file.name)
+    return None if data is None else data[start.offset:end.offset]
