@@ -44,6 +44,12 @@ class Condition:
     # if (type == "dynamics")``): (local, parameter), which the graph decides it by
     parameters: tuple[tuple[str, str], ...] | None = field(
         default=None, metadata={"optional": True})
+    # a ROS 2 launch condition that compares one launch argument with a string, as the
+    # launch reader evaluated it (``LaunchConfigurationEquals('hw', 'fake')``,
+    # ``LaunchConfigurationNotEquals``, ``$(equals $(var hw) fake)``): (argument,
+    # string, holds when equal), which ``contradict`` reads like an ``$(eval)``'s
+    compares: tuple[str, str, bool] | None = field(
+        default=None, metadata={"optional": True})
 
     def __str__(self) -> str:
         return f"{self.statement} ({self.text})"
@@ -62,6 +68,8 @@ def _equality(condition: Condition) -> tuple[str, str, bool] | None:
     one argument with a string, else None."""
     if condition.statement not in ("if", "unless"):
         return None
+    if condition.compares is not None:
+        return condition.compares
     inner = _EVAL.fullmatch(condition.text)
     compared = _COMPARED.fullmatch(inner.group(1)) if inner else None
     if compared is None:

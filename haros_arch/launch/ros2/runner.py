@@ -133,9 +133,37 @@ class Runner:
                                          {**self.environment, **scope.environment})
         if truth is None:
             statement = "unless" if cond.negate else "if"
-            made = Condition(cond.source or "?", "launch", statement, location)
+            made = Condition(cond.source or "?", "launch", statement, location,
+                             compares=self.compared(cond, scope, location))
             return replace(scope, conditions=(*scope.conditions, made))
         return scope if truth else None
+
+    def compared(self, cond: e.Cond, scope: Scope,
+                 location: Location) -> tuple[str, str, bool] | None:
+        """``(argument, string, holds when equal)`` for a condition not decided that
+        compares one launch argument with a known string: ``LaunchConfigurationEquals``
+        / ``NotEquals``, or ``$(equals $(var x) s)`` / ``$(not-equals ..)`` (their Python
+        classes too); else None. Conditions of one argument and other strings then
+        exclude each other (``model.conditions.contradict``)."""
+        equal = True
+        if cond.equals is not None:
+            sides: tuple[e.Text, ...] = (cond.expression, cond.equals)
+        elif len(cond.expression) == 1 and isinstance(cond.expression[0], e.Logic) and (
+                cond.expression[0].op in ("equals", "notequals")) and len(
+                cond.expression[0].operands) == 2:
+            sides = cond.expression[0].operands
+            equal = cond.expression[0].op == "equals"
+        else:
+            return None
+        evaluator = self.evaluator(scope, location)
+        for variable, other in (sides, sides[::-1]):
+            if len(variable) != 1 or not isinstance(variable[0], e.Var):
+                continue
+            name = evaluator.value(variable[0].name).literal
+            string = evaluator.value(other).literal
+            if name is not None and string is not None:
+                return name, string, equal != cond.negate
+        return None
 
     # -- files ---------------------------------------------------------------------
     def run_file(self, path: str, scope: Scope, where: Location) -> None:
