@@ -15,7 +15,7 @@ import os
 from conftest import package_xml
 
 from haros_arch.launch.ros2 import load
-from haros_arch.model.conditions import exclusive
+from haros_arch.model.conditions import Condition, exclusive
 from haros_arch.model.load import from_data
 from haros_arch.model.serialise import to_data
 from haros_arch.pipeline import Options, analyse
@@ -26,7 +26,9 @@ from haros_arch.workspace import scan
 PYTHON = """
 from launch import LaunchDescription
 from launch.actions import DeclareLaunchArgument
+from launch.conditions import IfCondition, UnlessCondition
 from launch.conditions import LaunchConfigurationEquals, LaunchConfigurationNotEquals
+from launch.substitutions import LaunchConfiguration, PythonExpression
 from launch_ros.actions import Node
 
 def generate_launch_description():
@@ -41,6 +43,16 @@ def generate_launch_description():
              name='rsp', condition=LaunchConfigurationNotEquals('hw', 'fake')),
         Node(package='robot_state_publisher', executable='robot_state_publisher',
              name='rsp', condition=LaunchConfigurationEquals('other', 'fake')),
+        Node(package='robot_state_publisher', executable='robot_state_publisher',
+             name='rsp', condition=IfCondition(PythonExpression(
+                 ['"', LaunchConfiguration('hw'), '"', " in ('actual', 'fake')"]))),
+        Node(package='robot_state_publisher', executable='robot_state_publisher',
+             name='rsp', condition=UnlessCondition(PythonExpression(
+                 ["'gz' == '", LaunchConfiguration('hw'), "'"]))),
+        Node(package='robot_state_publisher', executable='robot_state_publisher',
+             name='rsp', condition=IfCondition(PythonExpression(
+                 ["'", LaunchConfiguration('hw'), "' == '", LaunchConfiguration('other'),
+                  "'"]))),
     ])
 """
 
@@ -66,12 +78,26 @@ def _nodes(write_tree, name: str, text: str):
 
 
 def test_python_equals_of_one_argument_and_other_strings_exclude(write_tree) -> None:
-    actual, fake, not_fake, other = _nodes(write_tree, "a.launch.py", PYTHON)
-    assert actual.conditions[0].compares == ("hw", "actual", True)
+    actual, fake, not_fake, other, real, not_gz, two = _nodes(
+        write_tree, "a.launch.py", PYTHON)
+    assert actual.conditions[0].compares == ("hw", ("actual",), True)
     assert exclusive(actual.conditions, fake.conditions)
     assert exclusive(fake.conditions, not_fake.conditions)
     assert not exclusive(actual.conditions, not_fake.conditions)
     assert not exclusive(fake.conditions, other.conditions)  # another argument
+    # Interbotix's ros2_control branch: hardware_type in ('actual', 'fake')
+    assert real.conditions[0].compares == ("hw", ("actual", "fake"), True)
+    gz = [c.compares for c in not_gz.conditions]
+    assert gz == [("hw", ("gz",), False)]  # unless 'gz' == hw
+    assert not exclusive(real.conditions, actual.conditions)
+    assert exclusive(real.conditions, not_fake.conditions) is False
+    assert not exclusive(real.conditions, not_gz.conditions)
+    # ... and the Gazebo branch, hardware_type == 'gz_classic', never runs beside it
+    gz_classic = (Condition("x", "launch", "if", compares=("hw", ("gz_classic",), True)),)
+    assert exclusive(real.conditions, gz_classic) and exclusive(gz_classic, real.conditions)
+    assert exclusive(not_gz.conditions, (Condition(
+        "y", "launch", "if", compares=("hw", ("gz",), True)),))
+    assert two.conditions[0].compares is None  # two arguments not known
 
 
 def test_xml_equals_of_one_argument_and_other_strings_exclude(write_tree) -> None:

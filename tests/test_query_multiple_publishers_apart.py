@@ -5,8 +5,10 @@ Gazebo (``LaunchConfigurationEquals('hardware_type', 'gz_classic')``), an argume
 of its launch files sets: two instances of /wx250s/arm_controller under conditions not
 known and not the same, of which one may run without the other. They were a warning
 (/wx250s/arm_controller/controller_state "published by /wx250s/arm_controller (2
-instances)"); duplicate-node-names already counts such a pair as undecided. Publishers
-under the same condition still run together: a warning."""
+instances)"); duplicate-node-names already counts such a pair as undecided. (Those two
+conditions are now read as excluding each other, test_launch_ros2_equals_exclusive; two
+arguments not known, here, stay undecided.) Publishers under the same condition still
+run together: a warning."""
 
 from __future__ import annotations
 
@@ -28,13 +30,13 @@ from launch_ros.actions import Node
 def generate_launch_description():
     hw = LaunchConfiguration('hw')
     return LaunchDescription([
-        DeclareLaunchArgument('hw'),
+        DeclareLaunchArgument('hw'), DeclareLaunchArgument('gazebo'),
         DeclareLaunchArgument('sim'),
         Node(package='robot_state_publisher', executable='robot_state_publisher',
              name='rsp', condition=IfCondition(
-                 PythonExpression(['"', hw, '"', " in ('actual', 'fake')"]))),
+                 PythonExpression(["'", hw, "' in ('actual', 'fake')"]))),
         Node(package='robot_state_publisher', executable='robot_state_publisher',
-             name='rsp', condition=LaunchConfigurationEquals('hw', 'gz_classic')),
+             name='rsp', condition=LaunchConfigurationEquals('gazebo', 'classic')),
         Node(package='robot_state_publisher', executable='robot_state_publisher',
              name='sim_a', namespace='sim', condition=IfCondition(LaunchConfiguration('sim'))),
         Node(package='robot_state_publisher', executable='robot_state_publisher',

@@ -75,12 +75,13 @@ def conditions(data: Any) -> tuple[Condition, ...]:
     return tuple(found)
 
 
-def _compares(data: Any) -> tuple[str, str, bool] | None:
-    """A launch condition's (argument, string, holds when equal) as the JSON model
-    writes it."""
+def _compares(data: Any) -> tuple[str, tuple[str, ...], bool] | None:
+    """A launch condition's (argument, strings, holds when it is one of them) as the
+    JSON model writes it."""
     if isinstance(data, list) and len(data) == 3 and isinstance(data[0], str) and (
-            isinstance(data[1], str) and isinstance(data[2], bool)):
-        return data[0], data[1], data[2]
+            isinstance(data[1], list) and all(isinstance(s, str) for s in data[1])
+            and isinstance(data[2], bool)):
+        return data[0], tuple(data[1]), data[2]
     return None
 
 
