@@ -19,6 +19,7 @@ import yaml
 
 from ... import diagnostics as diag
 from ... import safe_yaml
+from ...evaluate.syntax import parse
 from ...files import read_text
 from ...model.conditions import Condition
 from ...model.launch_tree import (
@@ -816,8 +817,10 @@ def node_decl(**fields: Any) -> NodeDecl:
     return NodeDecl(ros_version=2, **fields)
 
 
-# what stands for the argument in a Python expression read by ``_compared_in``
+# what stands for the argument in a Python expression read by ``_compared_in``, and the
+# longest expression it reads (a comparison with a few strings)
 _ARGUMENT = "@haros-arch launch argument@"
+_COMPARED_TEXT = 2000
 
 
 def _compared_in(text: e.Text, evaluator: Evaluator
@@ -840,11 +843,12 @@ def _compared_in(text: e.Text, evaluator: Evaluator
         if name is None:
             return None
         parts.append(_ARGUMENT)
-    if name is None:
+    source = "".join(parts).strip()
+    if name is None or len(source) > _COMPARED_TEXT:
         return None
     try:
-        tree = ast.parse("".join(parts).strip(), mode="eval").body
-    except (SyntaxError, ValueError):
+        tree = parse(source, mode="eval").body
+    except (SyntaxError, ValueError, RecursionError, MemoryError):
         return None
     if not isinstance(tree, ast.Compare) or len(tree.ops) != 1:
         return None
