@@ -530,3 +530,62 @@ def test_python_class_of_an_unread_ros_package_makes_the_node_partial(write_tree
     assert nodes["generate"].completeness == "complete"
     said = [d for d in model.diagnostics if d.code == "PY_CLASS_UNSEEN"]
     assert [(d.location.line, d.severity) for d in said] == [(7, "info")]
+
+
+def test_python_class_derived_from_one_of_an_unread_ros_package(write_tree) -> None:
+    """Interbotix's xsarm_robot.py builds ``XSArmRobot``, its own subclass of
+    interbotix_xs_modules' ``InterbotixManipulatorXS``, whose ``__init__`` (called as
+    ``InterbotixManipulatorXS.__init__(self, ...)``) makes the node with its publishers
+    and service clients: the node was 'complete' with one subscription. Building the
+    subclass builds the unread base: ``PY_CLASS_UNSEEN``, partial. A subclass of rclpy's
+    Node is no such class."""
+    import os
+
+    from conftest import package_xml
+
+    from haros_arch.pipeline import Options, analyse
+    from haros_arch.project import load
+
+    manifest = package_xml("arm", build_type="ament_python").replace(
+        "</package>", "<exec_depend>vendor_modules</exec_depend></package>")
+    robot = ("import rclpy\n"
+             "from rclpy.node import Node\n"
+             "from std_msgs.msg import String\n"
+             "from vendor_modules.xs_robot.arm import VendorArm\n"
+             "class Robot(VendorArm):\n"
+             "    def __init__(self):\n"
+             "        VendorArm.__init__(self, robot_model='wx250s')\n"
+             "        self.core.get_node().create_subscription(String, 'cmd', None, 10)\n"
+             "class Plain(Node):\n"
+             "    def __init__(self):\n"
+             "        super().__init__('plain')\n"
+             "        self.create_subscription(String, 'cmd', None, 10)\n"
+             "def main():\n"
+             "    Robot()\n")  # the base starts rclpy
+    plain = robot.replace("    Robot()\n", "    rclpy.init()\n    Plain()\n")
+    launch = ("from launch import LaunchDescription\n"
+              "from launch_ros.actions import Node\n"
+              "def generate_launch_description():\n"
+              "    return LaunchDescription([Node(package='arm', executable='robot'),\n"
+              "                              Node(package='arm', executable='plain')])\n")
+    root = write_tree({
+        "src/arm/package.xml": manifest,
+        "src/arm/setup.py": "from setuptools import setup\n"
+                            "setup(name='arm', packages=['arm'], entry_points="
+                            "{'console_scripts': ['robot = arm.robot:main', "
+                            "'plain = arm.plain:main']})\n",
+        "src/arm/resource/arm": "",
+        "src/arm/arm/__init__.py": "",
+        "src/arm/arm/robot.py": robot,
+        "src/arm/arm/plain.py": plain,
+        "src/arm/launch/arm.launch.py": launch,
+        "project.yaml": "project: p\nconfigurations:\n  c: [arm/launch/arm.launch.py]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {"PATH": os.environ.get("PATH", "")},
+                    Options(cache_dir=None))
+    nodes = {n.executable: n for p in model.packages for n in p.nodes}
+    assert nodes["robot"].completeness == "partial"
+    assert "VendorArm of ROS package vendor_modules" in nodes["robot"].completeness_reasons[0]
+    assert nodes["plain"].completeness == "complete"
+    said = [d for d in model.diagnostics if d.code == "PY_CLASS_UNSEEN"]
+    assert [(d.location.file, d.location.line) for d in said] == [("arm/arm/robot.py", 14)]

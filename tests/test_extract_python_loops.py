@@ -340,3 +340,25 @@ def test_an_entry_of_a_ros1_dictionary_parameter_names_a_call(tmp_path) -> None:
     assert made == [("subscribe", "?", "~camera/topic", None),
                     ("publish", "?", "~camera/out", "cam_out"),
                     ("publish", "?", None, None)]
+
+
+def test_product_and_zip_of_lists(tmp_path) -> None:
+    """ds4_driver's twist node declares inputs.linear.x ... scales.angular.z over
+    ``itertools.product`` of three local lists (12 names, all '?.?.?' before); ``zip``
+    pairs lists item by item."""
+    source = tmp_path / "node.py"
+    source.write_text(
+        "import itertools\nfrom itertools import product\n" + HEAD
+        + "        kinds = ['inputs', 'scales']\n"
+          "        for t, a in itertools.product(kinds, ('x', 'y')):\n"
+          "            self.declare_parameter('{}.{}'.format(t, a), '')\n"
+          "        for t in product(['p'], ['q', 'r']):\n"
+          "            self.declare_parameter('.'.join(t), '')\n"
+          "        for topic, depth in zip(['u', 'v', 'w'], [1, 2]):\n"
+          "            self.create_publisher(Image, topic, depth)\n")
+    result = extract_python([str(source)], Workspace(root=str(tmp_path)), package="p")
+    assert names(result) == [(n, ()) for n in (
+        "inputs.x", "inputs.y", "scales.x", "scales.y", "p.q", "p.r")] + [
+        ("u", ()), ("v", ())]
+    assert [c.queue_size for c in result.calls if c.kind == "publish"] == [1, 2]
+    assert [d.code for d in result.diagnostics] == []

@@ -244,6 +244,10 @@ def test_an_installed_metapackage_brings_its_members(tmp_path):
     # ros2_control's metapackage folder also holds doc/ and rosdoc2.yaml
     arm = package("arm_bringup", ("exec_depend", "ros2_control"), build_type="ament_cmake")
     assert "controller_manager" in installed_with(arm, [arm])
+    # moveit2's moveit (its folder also holds maintainer scripts) brings move_group
+    # through moveit_ros (moveit2_tutorials' launch files start it)
+    tutorial = package("tutorial", ("exec_depend", "moveit"), build_type="ament_cmake")
+    assert "moveit_ros_move_group" in installed_with(tutorial, [tutorial])
     plain = package("plain_robot", ("exec_depend", "rviz"))
     assert installed_with(plain, [plain]) == {"rviz"}
 
@@ -283,6 +287,25 @@ def test_models_metapackages_reads_the_pinned_trees(tmp_path, capsys):
     (launcher / "package.xml").write_text(manifest("stack4", ("exec_depend", "six"),
                                                    build_type="ament_cmake"))
     (launcher / "CMakeLists.txt").write_text("project(stack4)\n")
+    # one whose CMakeLists.txt builds and installs nothing (moveit2's moveit): what else
+    # its folder holds (maintainer scripts) is not installed
+    tools = tree / "stack5"
+    (tools / "scripts").mkdir(parents=True)
+    (tools / "scripts" / "make_table.py").write_text("print('maintainers')\n")
+    (tools / "package.xml").write_text(manifest("stack5", ("exec_depend", "seven"),
+                                                build_type="ament_cmake"))
+    (tools / "CMakeLists.txt").write_text(
+        "cmake_minimum_required(VERSION 3.22)\nproject(stack5)\n"
+        "find_package(ament_cmake REQUIRED)\n\nament_package()\n")
+    installs = tree / "stack6"  # ... but one that installs its scripts is a package
+    (installs / "scripts").mkdir(parents=True)
+    (installs / "scripts" / "node.py").write_text("print('a node')\n")
+    (installs / "package.xml").write_text(manifest("stack6", ("exec_depend", "eight"),
+                                                   build_type="ament_cmake"))
+    (installs / "CMakeLists.txt").write_text(
+        "project(stack6)\nfind_package(ament_cmake REQUIRED)\n"
+        "install(PROGRAMS scripts/node.py DESTINATION lib/${PROJECT_NAME})\n"
+        "ament_package()\n")
     code = tree / "one"  # a package with code is no metapackage
     (code / "src").mkdir(parents=True)
     (code / "package.xml").write_text(manifest("one", ("exec_depend", "two")))
@@ -301,10 +324,10 @@ def test_models_metapackages_reads_the_pinned_trees(tmp_path, capsys):
     table = json.loads(out.read_text())
     assert table["metapackages"] == {"noetic": {"stack": ["one", "two"],
                                                 "stack2": ["three"], "stack3": ["four"],
-                                                "stack4": ["six"]}}
+                                                "stack4": ["six"], "stack5": ["seven"]}}
     assert table["sources"] == [{"repository": "github:someone/stack", "commit": commit,
                                  "distro": "noetic"}]
-    assert "noetic: 4 metapackages" in capsys.readouterr().out
+    assert "noetic: 5 metapackages" in capsys.readouterr().out
 
 
 def test_the_shipped_metapackage_table_comes_from_the_pinned_lists():

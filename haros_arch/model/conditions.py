@@ -44,6 +44,13 @@ class Condition:
     # if (type == "dynamics")``): (local, parameter), which the graph decides it by
     parameters: tuple[tuple[str, str], ...] | None = field(
         default=None, metadata={"optional": True})
+    # a ROS 2 launch condition that compares one launch argument with strings, as the
+    # launch reader evaluated it (``LaunchConfigurationEquals('hw', 'fake')``,
+    # ``LaunchConfigurationNotEquals``, ``$(equals $(var hw) fake)``, ``PythonExpression(
+    # ['"', hw, '"', " in ('actual', 'fake')"])``): (argument, the strings, holds when
+    # the argument is one of them), which ``contradict`` reads like an ``$(eval)``'s
+    compares: tuple[str, tuple[str, ...], bool] | None = field(
+        default=None, metadata={"optional": True})
 
     def __str__(self) -> str:
         return f"{self.statement} ({self.text})"
@@ -57,11 +64,13 @@ _ARG = re.compile(r"""(?:arg\(\s*(['"])(\w+)\1\s*\)|([A-Za-z_]\w*))""")
 _STRING = re.compile(r"""(['"])([^'"]*)\1""")
 
 
-def _equality(condition: Condition) -> tuple[str, str, bool] | None:
-    """``(argument, string, holds when equal)`` for a launch condition that compares
-    one argument with a string, else None."""
+def _equality(condition: Condition) -> tuple[str, tuple[str, ...], bool] | None:
+    """``(argument, strings, holds when it is one of them)`` for a launch condition that
+    compares one argument with strings, else None."""
     if condition.statement not in ("if", "unless"):
         return None
+    if condition.compares is not None:
+        return condition.compares
     inner = _EVAL.fullmatch(condition.text)
     compared = _COMPARED.fullmatch(inner.group(1)) if inner else None
     if compared is None:
@@ -71,7 +80,7 @@ def _equality(condition: Condition) -> tuple[str, str, bool] | None:
         name, string = _ARG.fullmatch(name_side), _STRING.fullmatch(string_side)
         if name is not None and string is not None and name_side not in ("True", "False"):
             equal = (operator == "==") == (condition.statement == "if")
-            return name.group(2) or name.group(3), string.group(2), equal
+            return name.group(2) or name.group(3), (string.group(2),), equal
     return None
 
 
@@ -105,7 +114,8 @@ def contradict(first: Condition, second: Condition) -> bool:
     """Whether two launch conditions cannot both hold: ``if`` and ``unless`` of one text
     (``if X`` and ``if not (X)``, a Python launch file's ``if`` / ``else``), or one
     argument compared with strings that cannot both match (``x == 'a'`` and ``x ==
-    'b'``; ``x == 'a'`` and ``x != 'a'``). Read as written: both are taken to read the
+    'b'``; ``x == 'a'`` and ``x != 'a'``; ``x in ('a', 'b')`` and ``x == 'c'``). Read as
+    written: both are taken to read the
     argument of one scope."""
     one_side, other_side = _polarity(first), _polarity(second)
     if one_side is not None and other_side is not None and one_side[0] == other_side[0] \
@@ -115,9 +125,14 @@ def contradict(first: Condition, second: Condition) -> bool:
     one, other = _equality(first), _equality(second)
     if one is None or other is None or one[0] != other[0]:
         return False
-    if one[1] == other[1]:
-        return one[2] != other[2]
-    return one[2] and other[2]
+    (_, strings, inside), (_, others, other_inside) = one, other
+    if inside and other_inside:  # one of each: none in common
+        return not set(strings) & set(others)
+    if inside:  # one of these, none of those
+        return set(strings) <= set(others)
+    if other_inside:
+        return set(others) <= set(strings)
+    return False  # none of either: another string matches both
 
 
 def exclusive(first: tuple[Condition, ...], second: tuple[Condition, ...]) -> bool:

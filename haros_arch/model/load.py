@@ -70,8 +70,19 @@ def conditions(data: Any) -> tuple[Condition, ...]:
                                    item.get("statement", "if"), location(item.get("location")),
                                    bool(item.get("program_args", False)),
                                    left if isinstance(left := item.get("args_left"), str)
-                                   else None, _held(item.get("parameters"))))
+                                   else None, _held(item.get("parameters")),
+                                   _compares(item.get("compares"))))
     return tuple(found)
+
+
+def _compares(data: Any) -> tuple[str, tuple[str, ...], bool] | None:
+    """A launch condition's (argument, strings, holds when it is one of them) as the
+    JSON model writes it."""
+    if isinstance(data, list) and len(data) == 3 and isinstance(data[0], str) and (
+            isinstance(data[1], list) and all(isinstance(s, str) for s in data[1])
+            and isinstance(data[2], bool)):
+        return data[0], tuple(data[1]), data[2]
+    return None
 
 
 def _held(data: Any) -> tuple[tuple[str, str], ...] | None:

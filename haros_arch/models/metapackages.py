@@ -71,6 +71,30 @@ def _only_manifest(folder: str) -> bool:
     return all(paper(e) for e in entries)
 
 
+# the CMake commands of a ROS 2 package that builds and installs nothing but its manifest
+# (moveit2's ``moveit``: ``find_package(ament_cmake)`` and ``ament_package()``, beside a
+# scripts/ folder of maintainer tools that nothing installs)
+_NOTHING_BUILT = frozenset({"cmake_minimum_required", "project", "find_package",
+                            "ament_package"})
+
+
+def _builds_nothing(folder: str) -> bool:
+    """A package folder whose CMakeLists.txt calls nothing but ``_NOTHING_BUILT`` (and no
+    setup.py beside it): whatever else the folder holds is not installed, so a binary
+    install of it brings its run dependencies, as a metapackage's."""
+    from ..cmake.lexer import CMakeSyntaxError, tokenize
+
+    if os.path.exists(os.path.join(folder, "setup.py")):
+        return False
+    try:
+        with open(os.path.join(folder, "CMakeLists.txt"), encoding="utf-8") as handle:
+            commands = tokenize(handle.read())
+    except (OSError, UnicodeDecodeError, CMakeSyntaxError):
+        return False
+    names = {command.name for command in commands}
+    return "ament_package" in names and names <= _NOTHING_BUILT
+
+
 def _metapackage(path: str) -> tuple[str, list[str]] | None:
     """(name, run dependencies) of a metapackage's package.xml; None for a package."""
     try:
@@ -80,9 +104,10 @@ def _metapackage(path: str) -> tuple[str, list[str]] | None:
     export = root.find("export")
     if root.tag != "package":
         return None
+    folder = os.path.dirname(path)
     if (export is None or export.find("metapackage") is None) and not _only_manifest(
-        os.path.dirname(path)
-    ):
+        folder
+    ) and not _builds_nothing(folder):
         return None
     name = (root.findtext("name") or "").strip()
     members = sorted({(e.text or "").strip() for tag in RUN_DEPEND_TAGS

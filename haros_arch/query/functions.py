@@ -339,6 +339,20 @@ def together(charge: Charge, values: Any) -> list[Any]:
         other is not one and not never_together(charge, one, other) for other in values)]
 
 
+def all_apart(charge: Charge, values: Any) -> list[Any]:
+    """The node instances (or links) of a list when no two of them have the same
+    conditions, so that each may exist without the others (an ``undecided_by`` list);
+    none when two of them exist together whenever either does."""
+    if not isinstance(values, list):
+        raise QueryTypeError("all_apart() takes a list of node instances or links")
+    distinct = list({id(value): value for value in values}.values())
+    for index, first in enumerate(distinct):
+        for second in distinct[index + 1:]:
+            if not apart(charge, first, second):
+                return []
+    return distinct
+
+
 def one_process(charge: Charge, first: Any, second: Any) -> str:
     """For two node instances of one name that one launched process runs (the launch
     name renames every node of it), a clause that says so and names the nodes its code
@@ -359,6 +373,7 @@ FUNCTIONS["one_process"] = Function("one_process", one_process, 2, 2, charged=Tr
 FUNCTIONS["never_together"] = Function("never_together", never_together, 2, 2, charged=True)
 FUNCTIONS["apart"] = Function("apart", apart, 2, 2, charged=True)
 FUNCTIONS["together"] = Function("together", together, charged=True)
+FUNCTIONS["all_apart"] = Function("all_apart", all_apart, charged=True)
 
 
 def installed_with(charge: Charge, package: Any, packages: Any, test: Any = False

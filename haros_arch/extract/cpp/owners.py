@@ -186,23 +186,29 @@ def options_arguments(call: Cursor) -> list[Cursor]:
 
 
 def node_names(function: Cursor) -> frozenset[str]:
-    """The words by which ``function``'s code names its node: its parameters of a node
-    type (a node, NodeHandle, node interface, or a pointer to one), and ``this`` /
-    ``shared_from_this`` in a method of a class derived from a node."""
-    found = {c.spelling for c in function.get_children() if c.kind == CursorKind.PARM_DECL
-             and c.spelling and _NODE_TYPE.search(c.type.get_canonical().spelling)}
+    """The words by which ``function``'s code names its node: its parameters and locals
+    of a node type (a node, NodeHandle, node interface, or a pointer to one: a main's
+    ``auto node = rclcpp::Node::make_shared(..)``, which moveit2_tutorials' mains hand
+    to ``MoveGroupInterface`` of a header not found), and ``this`` / ``shared_from_this``
+    in a method of a class derived from a node."""
+    found: set[str] = set()
     parent = function.semantic_parent
     if function.kind != CursorKind.FUNCTION_DECL and parent is not None and (
         _derives_from_node(parent, 0)
     ):
         found |= {"this", "shared_from_this"}
-    # a NodeOptions (a parameter or a local): what is built with it is a node of its own
-    # in this process, a component class (raspimouse_ros2_examples' line_follower builds
-    # ``raspimouse::Raspimouse(options)`` of a missing header beside its own node)
-    found |= {c.spelling for c in function.walk_preorder()
-              if c.kind in (CursorKind.PARM_DECL, CursorKind.VAR_DECL) and c.spelling
-              and qualified_name(_pointee(c.type.get_canonical()).get_declaration())
-              == "rclcpp::NodeOptions"}
+    for c in function.walk_preorder():
+        if c.kind not in (CursorKind.PARM_DECL, CursorKind.VAR_DECL) or not c.spelling:
+            continue
+        kind = c.type.get_canonical()
+        # a NodeOptions (a parameter or a local): what is built with it is a node of its
+        # own in this process, a component class (raspimouse_ros2_examples'
+        # line_follower builds ``raspimouse::Raspimouse(options)`` of a missing header
+        # beside its own node)
+        if (_NODE_TYPE.search(kind.spelling) and (
+            c.kind == CursorKind.VAR_DECL or c.semantic_parent == function
+        )) or qualified_name(_pointee(kind).get_declaration()) == "rclcpp::NodeOptions":
+            found.add(c.spelling)
     return frozenset(found)
 
 

@@ -10,6 +10,7 @@ is them together).
 from __future__ import annotations
 
 import ast
+import itertools
 
 from ...model.values import Unknown
 from . import msg_types
@@ -110,10 +111,33 @@ class Scopes(EvaluatorBase):
     def iteration(self, expr: ast.expr, frame: Frame,
                   limit: int = MAX_UNROLL) -> tuple[object, ...] | None:
         """The items a ``for`` loop over ``expr`` takes, when known and at most
-        ``limit``: a list or tuple, ``range(...)`` of integers, ``enumerate(...)``."""
+        ``limit``: a list or tuple, ``range(...)`` of integers, ``enumerate(...)``,
+        ``zip(...)`` and ``itertools.product(...)`` of lists or tuples."""
+        callee = self.eval(expr.func, frame) if isinstance(expr, ast.Call) else None
+        if isinstance(expr, ast.Call) and not expr.keywords and isinstance(callee, Ref) \
+                and callee.qualname == "itertools.product":
+            # ds4_driver's twist node declares inputs.linear.x, ... over the product of
+            # three lists of names
+            factors = [f for f in (self.eval(a, frame) for a in expr.args)
+                       if isinstance(f, Seq)]
+            if not factors or len(factors) != len(expr.args):
+                return None
+            count = 1
+            for factor in factors:
+                count *= len(factor.items)
+            if count > limit:
+                return None
+            return tuple(Seq(items) for items in itertools.product(
+                *(f.items for f in factors)))
         if isinstance(expr, ast.Call) and isinstance(expr.func, ast.Name) \
-                and not expr.keywords and isinstance(self.eval(expr.func, frame), Unknown):
+                and not expr.keywords and isinstance(callee, Unknown):
             args = [self.eval(a, frame) for a in expr.args]
+            rows = [a for a in args if isinstance(a, Seq)]
+            if expr.func.id == "zip" and args and len(rows) == len(args):
+                # as Python does: as long as the shortest
+                paired = tuple(Seq(items) for items in zip(*(a.items for a in rows),
+                                                           strict=False))
+                return paired if len(paired) <= limit else None
             bounds = [a for a in args if isinstance(a, int) and not isinstance(a, bool)]
             if expr.func.id == "range" and 1 <= len(bounds) == len(args) <= 3 \
                     and (len(bounds) < 3 or bounds[2] != 0):

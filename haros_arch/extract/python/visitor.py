@@ -664,6 +664,13 @@ class Walker:
         elif isinstance(target, ClassInfo):
             init = ev.method(target, "__init__")
             self._constructed.update(id(c) for c in ev.mro(target))
+            # a class of ours derived from one of an unread ROS package (Interbotix's
+            # XSArmRobot(InterbotixManipulatorXS), whose base makes the node and its
+            # publishers and clients): building it builds the base, unseen
+            for used in ev.mro(target):
+                for base in ev.bases(used):
+                    if isinstance(base, Ref):
+                        self._unseen_class(base, call, frame)
             # its methods and those it inherits (rosserial_arduino's SerialClient runs
             # rosserial_python's, whose run() sets up the device's topics)
             for used in ev.mro(target):
@@ -901,11 +908,13 @@ class Walker:
         self._classes_said[target.qualname] = self._where(frame, call)
 
     def _unseen_said(self) -> None:
-        """``PY_CLASS_UNSEEN`` where the executable makes a ROS node of its own or starts
-        rclpy (``rclpy.init()``, then ``BasicNavigator()``, a node): a script that does
-        neither (a generator of launch files, an installer) runs no such class as part
-        of a ROS program."""
-        if self.rosname is None and not self.names and not self._ros_init:
+        """``PY_CLASS_UNSEEN`` where the executable makes a ROS node of its own, starts
+        rclpy (``rclpy.init()``, then ``BasicNavigator()``, a node) or makes ROS calls
+        (on a node the unseen class made: Interbotix's xsarm_robot.py subscribes on
+        ``self.core.get_node()``): a script that does none of these (a generator of
+        launch files, an installer) runs no such class as part of a ROS program."""
+        if self.rosname is None and not self.names and not self._ros_init \
+                and not self.calls:
             return
         for cls, where in self._classes_said.items():
             self.diagnostics.append(diag.make("PY_CLASS_UNSEEN", where, cls=cls,

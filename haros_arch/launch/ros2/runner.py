@@ -8,6 +8,7 @@ started: a ``Node`` becomes a ``NodeDecl`` and its parameters ``ParamDecl``s.
 
 from __future__ import annotations
 
+import ast
 import os
 import shlex
 from collections.abc import Callable, Mapping
@@ -18,6 +19,7 @@ import yaml
 
 from ... import diagnostics as diag
 from ... import safe_yaml
+from ...evaluate.syntax import parse
 from ...files import read_text
 from ...model.conditions import Condition
 from ...model.launch_tree import (
@@ -133,9 +135,46 @@ class Runner:
                                          {**self.environment, **scope.environment})
         if truth is None:
             statement = "unless" if cond.negate else "if"
-            made = Condition(cond.source or "?", "launch", statement, location)
+            made = Condition(cond.source or "?", "launch", statement, location,
+                             compares=self.compared(cond, scope, location))
             return replace(scope, conditions=(*scope.conditions, made))
         return scope if truth else None
+
+    def compared(self, cond: e.Cond, scope: Scope,
+                 location: Location) -> tuple[str, tuple[str, ...], bool] | None:
+        """``(argument, strings, holds when it is one of them)`` for a condition not
+        decided that compares one launch argument with known strings:
+        ``LaunchConfigurationEquals`` / ``NotEquals``, ``$(equals $(var x) s)`` /
+        ``$(not-equals ..)`` (their Python classes too), or a ``PythonExpression`` /
+        ``$(eval)`` that compares the quoted argument alone (``'"', x, '" == "s"'``,
+        ``... in ('a', 'b')``); else None. Conditions of one argument and strings that
+        cannot both match then exclude each other (``model.conditions.contradict``)."""
+        evaluator = self.evaluator(scope, location)
+        expression = cond.expression
+        if cond.equals is None and len(expression) == 1 and isinstance(
+                expression[0], e.Eval):
+            found = _compared_in(expression[0].expression, evaluator)
+            if found is None:
+                return None
+            return found[0], found[1], found[2] != cond.negate
+        equal = True
+        if cond.equals is not None:
+            sides: tuple[e.Text, ...] = (expression, cond.equals)
+        elif len(expression) == 1 and isinstance(expression[0], e.Logic) and (
+                expression[0].op in ("equals", "notequals")) and len(
+                expression[0].operands) == 2:
+            sides = expression[0].operands
+            equal = expression[0].op == "equals"
+        else:
+            return None
+        for variable, other in (sides, sides[::-1]):
+            if len(variable) != 1 or not isinstance(variable[0], e.Var):
+                continue
+            name = evaluator.value(variable[0].name).literal
+            string = evaluator.value(other).literal
+            if name is not None and string is not None:
+                return name, (string,), equal != cond.negate
+        return None
 
     # -- files ---------------------------------------------------------------------
     def run_file(self, path: str, scope: Scope, where: Location) -> None:
@@ -776,3 +815,59 @@ def make_param(node: str, key: str, value: Any, conditions: tuple[Condition, ...
 
 def node_decl(**fields: Any) -> NodeDecl:
     return NodeDecl(ros_version=2, **fields)
+
+
+# what stands for the argument in a Python expression read by ``_compared_in``, and the
+# longest expression it reads (a comparison with a few strings)
+_ARGUMENT = "@haros-arch launch argument@"
+_COMPARED_TEXT = 2000
+
+
+def _compared_in(text: e.Text, evaluator: Evaluator
+                 ) -> tuple[str, tuple[str, ...], bool] | None:
+    """``(argument, strings, holds when it is one of them)`` when the Python expression
+    ``text`` compares the value of one launch argument, not known, written inside a
+    string, with a string (``==``, ``!=``) or a tuple, list or set of strings (``in``,
+    ``not in``): Interbotix's ``PythonExpression(['"', hardware_type, '"', " in
+    ('actual', 'fake')"])``. Nothing is evaluated but the literals ``ast`` reads."""
+    name: str | None = None
+    parts: list[str] = []
+    for part in text:
+        value = part if isinstance(part, str) else evaluator.value((part,)).literal
+        if value is not None:
+            parts.append(value)
+            continue
+        if name is not None or not isinstance(part, e.Var):
+            return None  # two parts not known, or one that is no argument
+        name = evaluator.value(part.name).literal
+        if name is None:
+            return None
+        parts.append(_ARGUMENT)
+    source = "".join(parts).strip()
+    if name is None or len(source) > _COMPARED_TEXT:
+        return None
+    try:
+        tree = parse(source, mode="eval").body
+    except (SyntaxError, ValueError, RecursionError, MemoryError):
+        return None
+    if not isinstance(tree, ast.Compare) or len(tree.ops) != 1:
+        return None
+    left, right, op = tree.left, tree.comparators[0], tree.ops[0]
+    if isinstance(op, ast.Eq | ast.NotEq) and _literal(right) == _ARGUMENT:
+        left, right = right, left
+    if _literal(left) != _ARGUMENT:
+        return None
+    if isinstance(op, ast.Eq | ast.NotEq):
+        strings: list[ast.expr] = [right]
+    elif isinstance(op, ast.In | ast.NotIn) and isinstance(right, ast.Tuple | ast.List | ast.Set):
+        strings = list(right.elts)
+    else:
+        return None
+    values = [_literal(s) for s in strings]
+    if not values or any(v is None or v == _ARGUMENT for v in values):
+        return None
+    return name, tuple(v for v in values if v is not None), isinstance(op, ast.Eq | ast.In)
+
+
+def _literal(node: ast.expr) -> str | None:
+    return node.value if isinstance(node, ast.Constant) and isinstance(node.value, str) else None
