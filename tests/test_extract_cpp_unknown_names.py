@@ -474,6 +474,43 @@ def test_a_nested_type_of_a_declared_class_is_declared_in_it() -> None:
     assert "struct ConstPtr : haros_any {" in header
 
 
+def test_a_member_of_a_declared_class_that_declares_a_variable_is_a_type(write_tree) -> None:
+    """``vendor::Reg<int, int>::Ptr reg(new ...)`` in a function body: clang says "no
+    member named 'Ptr'" (a value, for it), and declared as a static member the line was
+    ``expected ';'``, ``reg`` undeclared and each ROS call in the arguments of a call on
+    it lost (hdl_graph_slam's registrations.cpp: 18 parameter reads of pcl-style
+    registration classes of fast_gicp / ndt_omp, whose headers are missing)."""
+    root = write_tree({
+        "pkg/package.xml": package_xml("pkg", "catkin"),
+        "pkg/src/reg.cpp": """\
+            #include <ros/ros.h>
+            #include <vendor/reg.hpp>
+            void configure(ros::NodeHandle& pnh) {
+              vendor::Reg<int, int>::Ptr reg(new vendor::Reg<int, int>());
+              reg->setThreads(pnh.param<int>("threads", 0));
+              if (vendor::Reg<int, int>::enabled) { pnh.param<double>("epsilon", 0.1); }
+            }
+            int main(int argc, char** argv) {
+              ros::init(argc, argv, "reg");
+              ros::NodeHandle pnh("~");
+              configure(pnh);
+            }
+            """})
+    result = extract_cpp([str(root / "pkg" / "src" / "reg.cpp")], scan([str(root)]),
+                         cache_dir=None, jobs=1)
+    assert rows(result) == [("read", "~threads", "int", 5), ("read", "~epsilon", "double", 6)]
+    assert [c for c in codes(result) if c in (
+        "CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL", "CPP_CALL_MISSED")] == []
+    # a member read as a value stays a static member of the permissive class
+    names = synthesis.Names()
+    text = b"bool b = vendor::Reg<int>::enabled;\n"
+    names.learn([("use of undeclared identifier 'vendor'", text, text.index(b"vendor"))])
+    names.learn([("no member named 'enabled' in 'vendor::Reg<int>'", text,
+                  text.index(b"enabled"))])
+    assert "static haros_any enabled;" in names.header()
+    assert "struct enabled" not in names.header()
+
+
 def test_names_of_a_vendor_library_in_waves_take_one_more_parse(monkeypatch) -> None:
     from haros_arch.extract import cpp
 

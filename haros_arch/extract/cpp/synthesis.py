@@ -70,6 +70,14 @@ _MEMBER = re.compile(
     r"^no member named '(\w+)' in '(?:const )?(?:(?:struct|class) )?([\w:]+)(<.*>)?'")
 _MEMBER_TYPE = re.compile(  # ``Msg::_code_type``; ``Synthesised<T>::ConstPtr``
     r"^no type named '(\w+)' in '(?:const )?(?:(?:struct|class) )?([\w:]+)(<.*>)?'")
+# a member of a declared class named where a declaration's type goes: the name, then
+# the declared variable (``vendor::Reg<T>::Ptr reg(new vendor::Reg<T>());``, pcl-style
+# code with a vendor's registration class). In a function body clang reads the unknown
+# member as a value ("no member named"), not as a type ("no type named"); a static
+# member there makes ``expected ';'`` and the variable undeclared, and every call on it
+# (``reg->setThreads(pnh.param<int>("threads", 0))``) was lost with its ROS call
+_MEMBER_DECLARING = re.compile(
+    rb"\s*(?:[*&](?![&=])\s*)?(?:const\s+)?([A-Za-z_]\w*)\s*[(;={\[]")
 _AMBIGUOUS = re.compile(r"^reference to '(\w+)' is ambiguous")
 # a member of the permissive class that a class finds twice: through a declared base and
 # through a real one (rtabmap's ``OdometryROS : public rclcpp::Node, public UThread``,
@@ -467,6 +475,17 @@ def _template_arguments(text: bytes, start: int) -> list[tuple[int, int]]:
     return []
 
 
+def _names_a_declared_type(name: str, text: bytes, offset: int) -> bool:
+    """Whether ``name``, written at ``offset`` (or just after: clang may point at the
+    scope before it), is followed by a declarator (``_MEMBER_DECLARING``)."""
+    found = re.compile(rb"::\s*" + re.escape(name.encode()) + rb"\b").search(
+        text, max(0, offset - 2), offset + _TEMPLATE_SPAN)
+    if found is None:
+        return False
+    declared = _MEMBER_DECLARING.match(text, found.end())
+    return declared is not None and declared.group(1).decode() not in _KEYWORDS
+
+
 def _initialised_member(text: bytes, found: re.Match[bytes], before: bytes) -> bool:
     """Whether the call ``found`` (a name and its ``(``) is an element of a constructor's
     initialiser list (cartographer's ``: odometry_sampler(ratio), imu_sampler(ratio) {``):
@@ -778,7 +797,13 @@ class Names:
             name, record = member.group(1), member.group(2)
             if name in _KEYWORDS or (member.group(3) and not self._synthesised(record)):
                 return
-            if self._synthesised(record):
+            if self._synthesised(record) and record != "haros_any" and text is not None \
+                    and _names_a_declared_type(name, text, offset):
+                node = self._node(record)
+                if name not in node.children:
+                    node.children[name] = _Name(uses={"type"})
+                    self.count += 1
+            elif self._synthesised(record):
                 self.members.add(name)
             elif self._message(record) and name not in self.fields.get(record, ()):
                 self.fields.setdefault(record, set()).add(name)
