@@ -511,6 +511,85 @@ def test_a_member_of_a_declared_class_that_declares_a_variable_is_a_type(write_t
     assert "struct enabled" not in names.header()
 
 
+def test_a_braced_list_given_to_a_permissive_call_is_no_error(write_tree) -> None:
+    """asio's ``*resolver.resolve({udp::v4(), host, port})`` with <boost/asio.hpp>
+    missing: no template parameter deduces a braced list, so the call of the declared
+    member was an error in the function that advertises, and kuka_eki_hw_interface's
+    node partial (CPP_CALL_MISSED: ``resolve`` is also a ROS 1 API name)."""
+    root = write_tree({
+        "pkg/package.xml": package_xml("pkg", "catkin"),
+        "pkg/src/udp.cpp": """\
+            #include <ros/ros.h>
+            #include <std_msgs/String.h>
+            #include <boost/asio.hpp>
+            struct Driver {
+              void start(ros::NodeHandle& nh) {
+                boost::asio::ip::udp::resolver resolver(ios_);
+                endpoint_ = *resolver.resolve({boost::asio::ip::udp::v4(), host_, port_});
+                socket_.send_to({endpoint_}, 2);
+                pub_ = nh.advertise<std_msgs::String>("state", 10);
+              }
+              ros::Publisher pub_;
+              boost::asio::io_service ios_;
+              boost::asio::ip::udp::endpoint endpoint_;
+              boost::asio::ip::udp::socket socket_;
+              std::string host_, port_;
+            };
+            int main(int argc, char** argv) {
+              ros::init(argc, argv, "udp");
+              ros::NodeHandle nh;
+              Driver().start(nh);
+            }
+            """})
+    result = extract_cpp([str(root / "pkg" / "src" / "udp.cpp")], scan([str(root)]),
+                         cache_dir=None, jobs=1)
+    assert rows(result) == [("publish", "state", "std_msgs/String", 9)]
+    assert [c for c in codes(result) if c in (
+        "CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL", "CPP_CALL_MISSED")] == []
+
+
+def test_an_api_name_called_on_a_system_librarys_object_is_no_missed_call(write_tree) -> None:
+    """ROS 1: ``resolver.resolve(query)`` on asio's resolver (its header missing) is a
+    member of a class declared permissively in boost's namespace, a library that makes no
+    ROS calls, not tf's ``TransformListener::resolve``: no CPP_CALL_MISSED, and the node
+    stays complete. A class of a ROS package the node depends on keeps the warning."""
+    source = """\
+        #include <ros/ros.h>
+        #include <std_msgs/String.h>
+        #include <boost/asio.hpp>
+        #include <vendor_ros/listener.h>
+        void connect(boost::asio::io_service& ios, const std::string& host) {
+          boost::asio::ip::udp::resolver resolver(ios);
+          boost::asio::ip::udp::resolver::query query(host, "80");
+
+
+          auto it = resolver.resolve(query);
+        }
+        void listen(vendor_ros::Listener& listener) {
+          std::string prefix;
+
+
+          prefix = listener.resolve(prefix);
+        }
+        int main(int argc, char** argv) {
+          ros::init(argc, argv, "udp");
+          ros::NodeHandle nh;
+          ros::Publisher pub = nh.advertise<std_msgs::String>("state", 10);
+        }
+        void handle(const boost::system::error_code& ec) {}  // an error left in the unit
+        """
+    root = write_tree({
+        "pkg/package.xml": package_xml("pkg", "catkin").replace(
+            "</package>", "<depend>roscpp</depend><depend>boost</depend>"
+            "<depend>vendor_ros</depend></package>"),
+        "pkg/src/udp.cpp": source})
+    result = extract_cpp([str(root / "pkg" / "src" / "udp.cpp")], scan([str(root)]),
+                         cache_dir=None, jobs=1)
+    assert rows(result) == [("publish", "state", "std_msgs/String", 21)]
+    missed = [d.location.line for d in result.diagnostics if d.code == "CPP_CALL_MISSED"]
+    assert missed == [16]  # vendor_ros' listener, found nowhere: may be a ROS client
+
+
 def test_names_of_a_vendor_library_in_waves_take_one_more_parse(monkeypatch) -> None:
     from haros_arch.extract import cpp
 

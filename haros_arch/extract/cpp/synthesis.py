@@ -334,6 +334,12 @@ struct haros_any {
   haros_any *operator->() const;
   haros_any &operator*() const;
   template <class... A> haros_any &operator()(A &&...) const;
+  // a braced list given to a permissive call, which no template parameter deduces (the
+  // asio idiom ``*resolver.resolve({udp::v4(), host, port})`` of kuka_eki_hw_interface,
+  // with <boost/asio.hpp> missing): a permissive value built from the list
+  haros_any &operator()(const haros_any &) const;
+  haros_any &operator()(const haros_any &, const haros_any &) const;
+  haros_any &operator()(const haros_any &, const haros_any &, const haros_any &) const;
   template <class A> haros_any &operator[](A &&) const;
   template <class A> haros_any &operator=(A &&);
   haros_any &operator++(); haros_any &operator--();
