@@ -590,6 +590,60 @@ def test_an_api_name_called_on_a_system_librarys_object_is_no_missed_call(write_
     assert missed == [16]  # vendor_ros' listener, found nowhere: may be a ROS client
 
 
+def test_a_constant_a_class_is_built_from_is_an_enumerator(write_tree) -> None:
+    """bebop_driver's states: ``AbstractState(ARCONTROLLER_DICTIONARY_KEY_...)``, whose
+    constructor takes libARController's enum type (its header missing). Declared a
+    permissive value, the constant also converted to ``AbstractState`` itself (``operator
+    T &``, for the copy constructor): the construction was ambiguous, an error in each of
+    44 constructors that advertise, and the driver's nodes partial. Read so, it is
+    declared an enumerator."""
+    root = write_tree({
+        "pkg/package.xml": package_xml("pkg", "catkin"),
+        "pkg/src/states.cpp": """\
+            #include <ros/ros.h>
+            #include <std_msgs/String.h>
+            #include <libARController/ARController.h>
+            class AbstractState {
+             public:
+              AbstractState(eARCONTROLLER_DICTIONARY_KEY key, const bool on = false)
+                : key_(key) {}
+              virtual ~AbstractState() {}
+             protected:
+              eARCONTROLLER_DICTIONARY_KEY key_;
+              ros::Publisher pub_;
+            };
+            class PictureState : public AbstractState {
+             public:
+              PictureState(ros::NodeHandle& nh, ros::NodeHandle& priv_nh, const std::string& topic)
+                : AbstractState(ARCONTROLLER_DICTIONARY_KEY_PICTURE_STATE_CHANGED) {
+                bool enabled = false;
+                if (priv_nh.getParam("states/enable_picture", enabled) && enabled) {
+                  pub_ = nh.advertise<std_msgs::String>(topic, 10, true);
+                }
+              }
+            };
+            int main(int argc, char** argv) {
+              ros::init(argc, argv, "states");
+              ros::NodeHandle nh, priv_nh("~");
+              PictureState state(nh, priv_nh, "states/picture");
+            }
+            """})
+    result = extract_cpp([str(root / "pkg" / "src" / "states.cpp")], scan([str(root)]),
+                         cache_dir=None, jobs=1)
+    assert rows(result) == [("read", "~states/enable_picture", "bool", 18),
+                            ("publish", "states/picture", "std_msgs/String", 19)]
+    assert [c for c in codes(result) if c in (
+        "CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL", "CPP_CALL_MISSED")] == []
+    names = synthesis.Names()
+    text = b"B b(vendor::KEY_A, f(vendor::KEY_C), vendor::lower);\n"
+    names.learn([("use of undeclared identifier 'vendor'", text, text.index(b"vendor"))])
+    assert names.learn([("call to constructor of 'B' is ambiguous", text, text.index(b"b("))])
+    header = names.header()
+    assert "enum : int { KEY_A = " in header
+    # only an argument written as a constant, alone
+    assert "haros_any KEY_C;" in header and "KEY_C =" not in header
+
+
 def test_names_of_a_vendor_library_in_waves_take_one_more_parse(monkeypatch) -> None:
     from haros_arch.extract import cpp
 
