@@ -699,7 +699,17 @@ class CallFinder:
         args = ([c for c in list(call.get_children())[1:] if c.kind.is_expression()]
                 if call.kind != CursorKind.CALL_EXPR else written_arguments(call))
         before = len(self.calls)
-        self._emit(spec, call, args, None, conditions, scope)
+        # in a function template of a header (a call on an object of a template
+        # parameter's type, ``params.template param<bool>("use_const_inf_matrix", false)``
+        # of hdl_graph_slam's InformationMatrixCalculator::load<ParamServer>): made only
+        # where a file of the node calls the template, as ``_dependent`` makes its class
+        made_by = self._made_by
+        if made_by is None:
+            self._made_by = self._template
+        try:
+            self._emit(spec, call, args, None, conditions, scope)
+        finally:
+            self._made_by = made_by
         if len(self.calls) == before:
             return
         written = _written_template(call)
