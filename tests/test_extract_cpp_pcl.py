@@ -238,3 +238,40 @@ def test_the_workspace_s_own_pcl_conversions_win(tmp_path) -> None:
     result = _extract(node, "#include <pcl_conversions/pcl_conversions.h>\n"
                             "int a = pcl_conversions::workspace_own();\n", tmp_path)
     assert _unclean(result) == []
+
+
+def test_each_filter_and_registration_class_has_its_own_pointer(tmp_path) -> None:
+    """``pcl::ApproximateVoxelGrid<PointT>::Ptr f(new ...); f->setLeafSize(...)``: a
+    stand-in class without its own ``Ptr`` named its base's (``Filter<PointT>``), which
+    has no ``setLeafSize``; so for StatisticalOutlierRemoval, RadiusOutlierRemoval and
+    ICP / GICP / NDT's setters (hdl_graph_slam's prefiltering and registration code,
+    errors in the functions that read its parameters)."""
+    result = _extract(tmp_path, """
+#include <ros/ros.h>
+#include <pcl/point_types.h>
+#include <pcl/filters/approximate_voxel_grid.h>
+#include <pcl/filters/statistical_outlier_removal.h>
+#include <pcl/registration/gicp.h>
+#include <pcl/registration/ndt.h>
+typedef pcl::PointXYZI PointT;
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "filters");
+  ros::NodeHandle pnh("~");
+  pcl::Filter<PointT>::Ptr filter;
+  pcl::ApproximateVoxelGrid<PointT>::Ptr grid(new pcl::ApproximateVoxelGrid<PointT>());
+  grid->setLeafSize(0.1f, 0.1f, 0.1f);
+  filter = grid;
+  pcl::StatisticalOutlierRemoval<PointT>::Ptr sor(new pcl::StatisticalOutlierRemoval<PointT>());
+  sor->setMeanK(pnh.param<int>("mean_k", 20));
+  pcl::GeneralizedIterativeClosestPoint<PointT, PointT>::Ptr gicp(
+      new pcl::GeneralizedIterativeClosestPoint<PointT, PointT>());
+  gicp->setCorrespondenceRandomness(pnh.param<int>("randomness", 20));
+  pcl::NormalDistributionsTransform<PointT, PointT>::Ptr ndt(
+      new pcl::NormalDistributionsTransform<PointT, PointT>());
+  ndt->setResolution(pnh.param<double>("resolution", 1.0));
+  pcl::Registration<PointT, PointT>::Ptr registration = ndt;
+}
+""")
+    assert _unclean(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("read", "~mean_k"), ("read", "~randomness"), ("read", "~resolution")]
