@@ -23,6 +23,7 @@ are still read, and ``CPP_RECONFIGURE_PARTIAL`` says so.
 from __future__ import annotations
 
 import ast
+import functools
 import json
 import os
 import re
@@ -280,8 +281,7 @@ def configs(folder: str, package: str, modules: Modules | None = None
         if text is None:
             continue
         config, more = read_cfg(path, text, package,
-                                lambda name, here=here: _beside(here, name) or (
-                                    modules(name) if modules is not None else None))
+                                functools.partial(_beside_or, here, modules))
         problems += more
         if config is not None:
             found.setdefault(config.name + "Config", config)
@@ -314,6 +314,11 @@ def _cfg_files(cfg: str) -> list[str]:
                     not os.path.islink(path)):
                 todo.append((path, depth + 1))
     return found
+
+
+def _beside_or(folder: str, modules: Modules | None, name: str) -> str | None:
+    """The file of module ``name`` beside the .cfg (in ``folder``), else ``modules``'."""
+    return _beside(folder, name) or (modules(name) if modules is not None else None)
 
 
 def _beside(folder: str, name: str) -> str | None:
