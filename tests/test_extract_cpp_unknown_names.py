@@ -644,6 +644,42 @@ def test_a_constant_a_class_is_built_from_is_an_enumerator(write_tree) -> None:
     assert "haros_any KEY_C;" in header and "KEY_C =" not in header
 
 
+def test_an_eigen_object_initialised_from_a_permissive_value(write_tree) -> None:
+    """hdl_graph_slam's ``Eigen::Isometry3d estimate = node->estimate();`` of g2o (its
+    headers missing): the Eigen stand-in's converting constructor and the permissive
+    value's ``operator T &`` both converted, ambiguously, an error in the function that
+    reads the node's parameters; declaring g2o's names made the parse no better, so the
+    unit kept its first parse and the error on g2o. Copy-initialised, the value converts
+    itself; direct-initialised (``Vector3d v(value)``), the explicit constructor takes it."""
+    root = write_tree({
+        "pkg/package.xml": package_xml("pkg", "catkin"),
+        "pkg/src/graph.cpp": """\
+            #include <ros/ros.h>
+            #include <Eigen/Dense>
+            #include <g2o/types/slam3d/vertex_se3.h>
+            #include <std_msgs/String.h>
+            void optimize(ros::NodeHandle& pnh, g2o::VertexSE3* node) {
+              if (pnh.param<bool>("fix_first_node", true)) {
+                Eigen::Isometry3d estimate = node->estimate();
+                Eigen::Vector3d position(node->estimate().translation());
+                Eigen::Vector3d offset = node->offset();
+                Eigen::MatrixXd info = Eigen::MatrixXd::Identity(6, 6);
+                node->setEstimate(estimate);
+              }
+            }
+            int main(int argc, char** argv) {
+              ros::init(argc, argv, "graph");
+              ros::NodeHandle pnh("~");
+              optimize(pnh, nullptr);
+            }
+            """})
+    result = extract_cpp([str(root / "pkg" / "src" / "graph.cpp")], scan([str(root)]),
+                         cache_dir=None, jobs=1)
+    assert rows(result) == [("read", "~fix_first_node", "bool", 6)]
+    assert [c for c in codes(result) if c in (
+        "CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL", "CPP_CALL_MISSED")] == []
+
+
 def test_names_of_a_vendor_library_in_waves_take_one_more_parse(monkeypatch) -> None:
     from haros_arch.extract import cpp
 
