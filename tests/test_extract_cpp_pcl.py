@@ -275,3 +275,34 @@ int main(int argc, char** argv) {
     assert _unclean(result) == []
     assert [(c.kind, c.name) for c in result.calls] == [
         ("read", "~mean_k"), ("read", "~randomness"), ("read", "~resolution")]
+
+
+def test_the_one_argument_conversions_of_stamps_and_headers(tmp_path) -> None:
+    """pcl_conversions' ``fromPCL(stamp)`` returns the ROS time (hdl_graph_slam's
+    prefiltering deskew: ``ros::Time stamp = pcl_conversions::fromPCL(cloud->header.
+    stamp);``), ``fromPCL(header)`` the message header and ``toPCL(x)`` the PCL side; the
+    stand-in had only the two-argument forms, an error in the function that reads the
+    node's parameters."""
+    result = _extract(tmp_path, """
+#include <ros/ros.h>
+#include <pcl/point_types.h>
+#include <pcl/point_cloud.h>
+#include <pcl_conversions/pcl_conversions.h>
+#include <std_msgs/Header.h>
+typedef pcl::PointXYZI PointT;
+void deskew(ros::NodeHandle& pnh, const pcl::PointCloud<PointT>::ConstPtr& cloud) {
+  ros::Time stamp = pcl_conversions::fromPCL(cloud->header.stamp);
+  std_msgs::Header header = pcl_conversions::fromPCL(cloud->header);
+  pcl::PointCloud<PointT> out;
+  out.header = pcl_conversions::toPCL(header);
+  out.header.stamp = pcl_conversions::toPCL(stamp);
+  pnh.param<double>("scan_period", 0.1);
+}
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "deskew");
+  ros::NodeHandle pnh("~");
+  deskew(pnh, pcl::PointCloud<PointT>::ConstPtr());
+}
+""")
+    assert _unclean(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [("read", "~scan_period")]
