@@ -270,6 +270,11 @@ int main(int argc, char** argv) {
       new pcl::NormalDistributionsTransform<PointT, PointT>());
   ndt->setResolution(pnh.param<double>("resolution", 1.0));
   pcl::Registration<PointT, PointT>::Ptr registration = ndt;
+  // hdl_localization's matching status: the target's search tree of the registration
+  std::vector<int> k_indices;
+  std::vector<float> k_sq_dists;
+  registration->getSearchMethodTarget()->nearestKSearch(PointT(), 1, k_indices, k_sq_dists);
+  registration->getInputTarget();
 }
 """)
     assert _unclean(result) == []

@@ -651,7 +651,15 @@ template<class PointSource, class PointTarget, class Scalar = float> class Regis
   typedef shared_ptr<Registration> Ptr;
   typedef typename PointCloud<PointSource>::ConstPtr PointCloudSourceConstPtr;
   typedef typename PointCloud<PointTarget>::ConstPtr PointCloudTargetConstPtr;
+  typedef typename search::KdTree<PointTarget>::Ptr KdTreePtr;
+  typedef typename search::KdTree<PointSource>::Ptr KdTreeReciprocalPtr;
   Registration();
+  void setSearchMethodTarget(const KdTreePtr& tree, bool force_no_recompute = false);
+  KdTreePtr getSearchMethodTarget() const;
+  void setSearchMethodSource(const KdTreeReciprocalPtr& tree, bool force_no_recompute = false);
+  KdTreeReciprocalPtr getSearchMethodSource() const;
+  PointCloudSourceConstPtr const getInputSource();
+  PointCloudTargetConstPtr const getInputTarget();
   virtual void setInputSource(const PointCloudSourceConstPtr& cloud);
   virtual void setInputTarget(const PointCloudTargetConstPtr& cloud);
   void setMaximumIterations(int nr_iterations);
