@@ -60,3 +60,43 @@ def test_written_parameter_types() -> None:
         "Foo", "std::vector<Foo>", "std::vector<std::vector<int>>", "const std::string",
     )] == ["double", "double", "bool", "str", "int", "int", "int", "int", "str[]",
            "double[]", None, None, None, None, None, "str"]
+
+
+def test_a_header_template_no_file_calls_makes_no_call(write_tree) -> None:
+    """hdl_graph_slam's InformationMatrixCalculator has a member template
+    ``load(ParamServer& params)`` of ``params.template param<double>(...)`` reads that
+    nothing calls (its constructor reads the same names on a NodeHandle): the reads were
+    kept, named ``?/...`` (an unknown handle), nine unresolved names and parameters of
+    the node's that no code reads. Like a dependent ``make_shared`` there, a call the
+    parse cannot resolve in a header's function template is made only where a file of
+    the node calls the template; one called is named from its call site."""
+    root = write_tree({
+        "pkg/package.xml": package_xml("pkg", "catkin").replace(
+            "</package>", "<depend>roscpp</depend></package>"),
+        "pkg/include/pkg/calc.hpp": """\
+            #pragma once
+            #include <ros/ros.h>
+            class Calc {
+             public:
+              template <typename ParamServer> void load(ParamServer& params) {
+                gain_ = params.template param<double>("gain", 1.0);
+              }
+              template <typename ParamServer> void loadLimits(ParamServer& params) {
+                limit_ = params.template param<double>("limit", 2.0);
+              }
+              double gain_ = 0.0, limit_ = 0.0;
+            };
+            """,
+        "pkg/src/node.cpp": """\
+            #include <pkg/calc.hpp>
+            int main(int argc, char** argv) {
+              ros::init(argc, argv, "calc");
+              ros::NodeHandle pnh("~");
+              Calc calc;
+              calc.loadLimits(pnh);
+            }
+            """})
+    result = extract_cpp([str(root / "pkg" / "src" / "node.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    assert [(c.kind, c.name, c.location.line) for c in result.calls] == [
+        ("read", "~limit", 9)]

@@ -238,3 +238,76 @@ def test_the_workspace_s_own_pcl_conversions_win(tmp_path) -> None:
     result = _extract(node, "#include <pcl_conversions/pcl_conversions.h>\n"
                             "int a = pcl_conversions::workspace_own();\n", tmp_path)
     assert _unclean(result) == []
+
+
+def test_each_filter_and_registration_class_has_its_own_pointer(tmp_path) -> None:
+    """``pcl::ApproximateVoxelGrid<PointT>::Ptr f(new ...); f->setLeafSize(...)``: a
+    stand-in class without its own ``Ptr`` named its base's (``Filter<PointT>``), which
+    has no ``setLeafSize``; so for StatisticalOutlierRemoval, RadiusOutlierRemoval and
+    ICP / GICP / NDT's setters (hdl_graph_slam's prefiltering and registration code,
+    errors in the functions that read its parameters)."""
+    result = _extract(tmp_path, """
+#include <ros/ros.h>
+#include <pcl/point_types.h>
+#include <pcl/filters/approximate_voxel_grid.h>
+#include <pcl/filters/statistical_outlier_removal.h>
+#include <pcl/registration/gicp.h>
+#include <pcl/registration/ndt.h>
+typedef pcl::PointXYZI PointT;
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "filters");
+  ros::NodeHandle pnh("~");
+  pcl::Filter<PointT>::Ptr filter;
+  pcl::ApproximateVoxelGrid<PointT>::Ptr grid(new pcl::ApproximateVoxelGrid<PointT>());
+  grid->setLeafSize(0.1f, 0.1f, 0.1f);
+  filter = grid;
+  pcl::StatisticalOutlierRemoval<PointT>::Ptr sor(new pcl::StatisticalOutlierRemoval<PointT>());
+  sor->setMeanK(pnh.param<int>("mean_k", 20));
+  pcl::GeneralizedIterativeClosestPoint<PointT, PointT>::Ptr gicp(
+      new pcl::GeneralizedIterativeClosestPoint<PointT, PointT>());
+  gicp->setCorrespondenceRandomness(pnh.param<int>("randomness", 20));
+  pcl::NormalDistributionsTransform<PointT, PointT>::Ptr ndt(
+      new pcl::NormalDistributionsTransform<PointT, PointT>());
+  ndt->setResolution(pnh.param<double>("resolution", 1.0));
+  pcl::Registration<PointT, PointT>::Ptr registration = ndt;
+  // hdl_localization's matching status: the target's search tree of the registration
+  std::vector<int> k_indices;
+  std::vector<float> k_sq_dists;
+  registration->getSearchMethodTarget()->nearestKSearch(PointT(), 1, k_indices, k_sq_dists);
+  registration->getInputTarget();
+}
+""")
+    assert _unclean(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("read", "~mean_k"), ("read", "~randomness"), ("read", "~resolution")]
+
+
+def test_the_one_argument_conversions_of_stamps_and_headers(tmp_path) -> None:
+    """pcl_conversions' ``fromPCL(stamp)`` returns the ROS time (hdl_graph_slam's
+    prefiltering deskew: ``ros::Time stamp = pcl_conversions::fromPCL(cloud->header.
+    stamp);``), ``fromPCL(header)`` the message header and ``toPCL(x)`` the PCL side; the
+    stand-in had only the two-argument forms, an error in the function that reads the
+    node's parameters."""
+    result = _extract(tmp_path, """
+#include <ros/ros.h>
+#include <pcl/point_types.h>
+#include <pcl/point_cloud.h>
+#include <pcl_conversions/pcl_conversions.h>
+#include <std_msgs/Header.h>
+typedef pcl::PointXYZI PointT;
+void deskew(ros::NodeHandle& pnh, const pcl::PointCloud<PointT>::ConstPtr& cloud) {
+  ros::Time stamp = pcl_conversions::fromPCL(cloud->header.stamp);
+  std_msgs::Header header = pcl_conversions::fromPCL(cloud->header);
+  pcl::PointCloud<PointT> out;
+  out.header = pcl_conversions::toPCL(header);
+  out.header.stamp = pcl_conversions::toPCL(stamp);
+  pnh.param<double>("scan_period", 0.1);
+}
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "deskew");
+  ros::NodeHandle pnh("~");
+  deskew(pnh, pcl::PointCloud<PointT>::ConstPtr());
+}
+""")
+    assert _unclean(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [("read", "~scan_period")]

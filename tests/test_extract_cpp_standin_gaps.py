@@ -706,3 +706,15 @@ def test_ros1_c_library_functions_beside_the_calls(write_tree) -> None:
     assert _errors(result) == []
     assert sorted((c.kind, c.name) for c in result.calls) == [
         ("client", "SetAccelBias"), ("publish", "gain")]
+
+
+def test_tf2_advanced_lookup_and_a_scalar_of_another_type_in_ros1(write_tree) -> None:
+    """hdl_localization's odometry prediction: tf2's advanced ``canTransform`` /
+    ``lookupTransform(target, target_time, source, source_time, fixed, timeout)``, whose
+    second argument is a time, and Eigen's ``double * Vector3f`` (the scalar is converted
+    to the matrix's): both were errors in the callback that publishes, and the node
+    partial."""
+    result = _extract(write_tree, _source("ros1_tf2_advanced_eigen_scalar.cpp"), "catkin")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("publish", "delta"), ("subscribe", "/tf"), ("subscribe", "/tf_static")]

@@ -474,6 +474,212 @@ def test_a_nested_type_of_a_declared_class_is_declared_in_it() -> None:
     assert "struct ConstPtr : haros_any {" in header
 
 
+def test_a_member_of_a_declared_class_that_declares_a_variable_is_a_type(write_tree) -> None:
+    """``vendor::Reg<int, int>::Ptr reg(new ...)`` in a function body: clang says "no
+    member named 'Ptr'" (a value, for it), and declared as a static member the line was
+    ``expected ';'``, ``reg`` undeclared and each ROS call in the arguments of a call on
+    it lost (hdl_graph_slam's registrations.cpp: 18 parameter reads of pcl-style
+    registration classes of fast_gicp / ndt_omp, whose headers are missing)."""
+    root = write_tree({
+        "pkg/package.xml": package_xml("pkg", "catkin"),
+        "pkg/src/reg.cpp": """\
+            #include <ros/ros.h>
+            #include <vendor/reg.hpp>
+            void configure(ros::NodeHandle& pnh) {
+              vendor::Reg<int, int>::Ptr reg(new vendor::Reg<int, int>());
+              reg->setThreads(pnh.param<int>("threads", 0));
+              if (vendor::Reg<int, int>::enabled) { pnh.param<double>("epsilon", 0.1); }
+            }
+            int main(int argc, char** argv) {
+              ros::init(argc, argv, "reg");
+              ros::NodeHandle pnh("~");
+              configure(pnh);
+            }
+            """})
+    result = extract_cpp([str(root / "pkg" / "src" / "reg.cpp")], scan([str(root)]),
+                         cache_dir=None, jobs=1)
+    assert rows(result) == [("read", "~threads", "int", 5), ("read", "~epsilon", "double", 6)]
+    assert [c for c in codes(result) if c in (
+        "CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL", "CPP_CALL_MISSED")] == []
+    # a member read as a value stays a static member of the permissive class
+    names = synthesis.Names()
+    text = b"bool b = vendor::Reg<int>::enabled;\n"
+    names.learn([("use of undeclared identifier 'vendor'", text, text.index(b"vendor"))])
+    names.learn([("no member named 'enabled' in 'vendor::Reg<int>'", text,
+                  text.index(b"enabled"))])
+    assert "static haros_any enabled;" in names.header()
+    assert "struct enabled" not in names.header()
+
+
+def test_a_braced_list_given_to_a_permissive_call_is_no_error(write_tree) -> None:
+    """asio's ``*resolver.resolve({udp::v4(), host, port})`` with <boost/asio.hpp>
+    missing: no template parameter deduces a braced list, so the call of the declared
+    member was an error in the function that advertises, and kuka_eki_hw_interface's
+    node partial (CPP_CALL_MISSED: ``resolve`` is also a ROS 1 API name)."""
+    root = write_tree({
+        "pkg/package.xml": package_xml("pkg", "catkin"),
+        "pkg/src/udp.cpp": """\
+            #include <ros/ros.h>
+            #include <std_msgs/String.h>
+            #include <boost/asio.hpp>
+            struct Driver {
+              void start(ros::NodeHandle& nh) {
+                boost::asio::ip::udp::resolver resolver(ios_);
+                endpoint_ = *resolver.resolve({boost::asio::ip::udp::v4(), host_, port_});
+                socket_.send_to({endpoint_}, 2);
+                pub_ = nh.advertise<std_msgs::String>("state", 10);
+              }
+              ros::Publisher pub_;
+              boost::asio::io_service ios_;
+              boost::asio::ip::udp::endpoint endpoint_;
+              boost::asio::ip::udp::socket socket_;
+              std::string host_, port_;
+            };
+            int main(int argc, char** argv) {
+              ros::init(argc, argv, "udp");
+              ros::NodeHandle nh;
+              Driver().start(nh);
+            }
+            """})
+    result = extract_cpp([str(root / "pkg" / "src" / "udp.cpp")], scan([str(root)]),
+                         cache_dir=None, jobs=1)
+    assert rows(result) == [("publish", "state", "std_msgs/String", 9)]
+    assert [c for c in codes(result) if c in (
+        "CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL", "CPP_CALL_MISSED")] == []
+
+
+def test_an_api_name_called_on_a_system_librarys_object_is_no_missed_call(write_tree) -> None:
+    """ROS 1: ``resolver.resolve(query)`` on asio's resolver (its header missing) is a
+    member of a class declared permissively in boost's namespace, a library that makes no
+    ROS calls, not tf's ``TransformListener::resolve``: no CPP_CALL_MISSED, and the node
+    stays complete. A class of a ROS package the node depends on keeps the warning."""
+    source = """\
+        #include <ros/ros.h>
+        #include <std_msgs/String.h>
+        #include <boost/asio.hpp>
+        #include <vendor_ros/listener.h>
+        void connect(boost::asio::io_service& ios, const std::string& host) {
+          boost::asio::ip::udp::resolver resolver(ios);
+          boost::asio::ip::udp::resolver::query query(host, "80");
+
+
+          auto it = resolver.resolve(query);
+        }
+        void listen(vendor_ros::Listener& listener) {
+          std::string prefix;
+
+
+          prefix = listener.resolve(prefix);
+        }
+        int main(int argc, char** argv) {
+          ros::init(argc, argv, "udp");
+          ros::NodeHandle nh;
+          ros::Publisher pub = nh.advertise<std_msgs::String>("state", 10);
+        }
+        void handle(const boost::system::error_code& ec) {}  // an error left in the unit
+        """
+    root = write_tree({
+        "pkg/package.xml": package_xml("pkg", "catkin").replace(
+            "</package>", "<depend>roscpp</depend><depend>boost</depend>"
+            "<depend>vendor_ros</depend></package>"),
+        "pkg/src/udp.cpp": source})
+    result = extract_cpp([str(root / "pkg" / "src" / "udp.cpp")], scan([str(root)]),
+                         cache_dir=None, jobs=1)
+    assert rows(result) == [("publish", "state", "std_msgs/String", 21)]
+    missed = [d.location.line for d in result.diagnostics if d.code == "CPP_CALL_MISSED"]
+    assert missed == [16]  # vendor_ros' listener, found nowhere: may be a ROS client
+
+
+def test_a_constant_a_class_is_built_from_is_an_enumerator(write_tree) -> None:
+    """bebop_driver's states: ``AbstractState(ARCONTROLLER_DICTIONARY_KEY_...)``, whose
+    constructor takes libARController's enum type (its header missing). Declared a
+    permissive value, the constant also converted to ``AbstractState`` itself (``operator
+    T &``, for the copy constructor): the construction was ambiguous, an error in each of
+    44 constructors that advertise, and the driver's nodes partial. Read so, it is
+    declared an enumerator."""
+    root = write_tree({
+        "pkg/package.xml": package_xml("pkg", "catkin"),
+        "pkg/src/states.cpp": """\
+            #include <ros/ros.h>
+            #include <std_msgs/String.h>
+            #include <libARController/ARController.h>
+            class AbstractState {
+             public:
+              AbstractState(eARCONTROLLER_DICTIONARY_KEY key, const bool on = false)
+                : key_(key) {}
+              virtual ~AbstractState() {}
+             protected:
+              eARCONTROLLER_DICTIONARY_KEY key_;
+              ros::Publisher pub_;
+            };
+            class PictureState : public AbstractState {
+             public:
+              PictureState(ros::NodeHandle& nh, ros::NodeHandle& priv_nh, const std::string& topic)
+                : AbstractState(ARCONTROLLER_DICTIONARY_KEY_PICTURE_STATE_CHANGED) {
+                bool enabled = false;
+                if (priv_nh.getParam("states/enable_picture", enabled) && enabled) {
+                  pub_ = nh.advertise<std_msgs::String>(topic, 10, true);
+                }
+              }
+            };
+            int main(int argc, char** argv) {
+              ros::init(argc, argv, "states");
+              ros::NodeHandle nh, priv_nh("~");
+              PictureState state(nh, priv_nh, "states/picture");
+            }
+            """})
+    result = extract_cpp([str(root / "pkg" / "src" / "states.cpp")], scan([str(root)]),
+                         cache_dir=None, jobs=1)
+    assert rows(result) == [("read", "~states/enable_picture", "bool", 18),
+                            ("publish", "states/picture", "std_msgs/String", 19)]
+    assert [c for c in codes(result) if c in (
+        "CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL", "CPP_CALL_MISSED")] == []
+    names = synthesis.Names()
+    text = b"B b(vendor::KEY_A, f(vendor::KEY_C), vendor::lower);\n"
+    names.learn([("use of undeclared identifier 'vendor'", text, text.index(b"vendor"))])
+    assert names.learn([("call to constructor of 'B' is ambiguous", text, text.index(b"b("))])
+    header = names.header()
+    assert "enum : int { KEY_A = " in header
+    # only an argument written as a constant, alone
+    assert "haros_any KEY_C;" in header and "KEY_C =" not in header
+
+
+def test_an_eigen_object_initialised_from_a_permissive_value(write_tree) -> None:
+    """hdl_graph_slam's ``Eigen::Isometry3d estimate = node->estimate();`` of g2o (its
+    headers missing): the Eigen stand-in's converting constructor and the permissive
+    value's ``operator T &`` both converted, ambiguously, an error in the function that
+    reads the node's parameters; declaring g2o's names made the parse no better, so the
+    unit kept its first parse and the error on g2o. Copy-initialised, the value converts
+    itself; direct-initialised (``Vector3d v(value)``), the explicit constructor takes it."""
+    root = write_tree({
+        "pkg/package.xml": package_xml("pkg", "catkin"),
+        "pkg/src/graph.cpp": """\
+            #include <ros/ros.h>
+            #include <Eigen/Dense>
+            #include <g2o/types/slam3d/vertex_se3.h>
+            #include <std_msgs/String.h>
+            void optimize(ros::NodeHandle& pnh, g2o::VertexSE3* node) {
+              if (pnh.param<bool>("fix_first_node", true)) {
+                Eigen::Isometry3d estimate = node->estimate();
+                Eigen::Vector3d position(node->estimate().translation());
+                Eigen::Vector3d offset = node->offset();
+                Eigen::MatrixXd info = Eigen::MatrixXd::Identity(6, 6);
+                node->setEstimate(estimate);
+              }
+            }
+            int main(int argc, char** argv) {
+              ros::init(argc, argv, "graph");
+              ros::NodeHandle pnh("~");
+              optimize(pnh, nullptr);
+            }
+            """})
+    result = extract_cpp([str(root / "pkg" / "src" / "graph.cpp")], scan([str(root)]),
+                         cache_dir=None, jobs=1)
+    assert rows(result) == [("read", "~fix_first_node", "bool", 6)]
+    assert [c for c in codes(result) if c in (
+        "CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL", "CPP_CALL_MISSED")] == []
+
+
 def test_names_of_a_vendor_library_in_waves_take_one_more_parse(monkeypatch) -> None:
     from haros_arch.extract import cpp
 

@@ -317,7 +317,8 @@ def render(interface: Interface) -> str:
     guard = f"HAROS_SYNTH_{pkg.upper()}_{name.upper()}_H"
     lines = [f"// synthesised by haros_arch for {pkg}/{name}", f"#ifndef {guard}",
              f"#define {guard}", "#include <stdint.h>", "#include <string>",
-             "#include <vector>", "#include <boost/shared_ptr.hpp>", "#include <ros/time.h>"]
+             "#include <vector>", "#include <boost/array.hpp>", "#include <boost/shared_ptr.hpp>",
+             "#include <ros/time.h>"]
     lines += [f"#include <{dep}.h>" for dep in dependencies(interface)]
     lines.append(f"namespace {pkg} {{")
     if interface.is_service:
@@ -381,6 +382,8 @@ def _struct(name: str, fields: list[Field], package: str, known: bool = True) ->
                              f"{string_literal(fld.constant)};")
             else:
                 lines.append(f"  static const {cpp} {fld.name} = {_number(fld.constant)};")
+        elif fld.array:  # fixed size: gencpp's boost::array (``float64[9] K``)
+            lines.append(f"  boost::array<{cpp}, {fld.array}> {fld.name};")
         elif fld.array is not None:
             lines.append(f"  std::vector<{cpp}> {fld.name};")
         else:
@@ -416,8 +419,8 @@ def render_action(interface: Interface) -> str:
     guard = f"HAROS_SYNTH_{pkg.upper()}_{name.upper()}_ACTION_H"
     lines = [f"// synthesised by haros_arch for action {pkg}/{name}", f"#ifndef {guard}",
              f"#define {guard}", "#include <stdint.h>", "#include <string>",
-             "#include <vector>", "#include <boost/shared_ptr.hpp>", "#include <ros/time.h>",
-             "#include <std_msgs/Header.h>"]
+             "#include <vector>", "#include <boost/array.hpp>", "#include <boost/shared_ptr.hpp>",
+             "#include <ros/time.h>", "#include <std_msgs/Header.h>"]
     lines += [f"#include <{dep}.h>" for dep in dependencies(interface)]
     lines.append(f"namespace {pkg} {{")
     for part, fields in zip(("Goal", "Result", "Feedback"), sections, strict=True):

@@ -70,7 +70,23 @@ _MEMBER = re.compile(
     r"^no member named '(\w+)' in '(?:const )?(?:(?:struct|class) )?([\w:]+)(<.*>)?'")
 _MEMBER_TYPE = re.compile(  # ``Msg::_code_type``; ``Synthesised<T>::ConstPtr``
     r"^no type named '(\w+)' in '(?:const )?(?:(?:struct|class) )?([\w:]+)(<.*>)?'")
+# a member of a declared class named where a declaration's type goes: the name, then
+# the declared variable (``vendor::Reg<T>::Ptr reg(new vendor::Reg<T>());``, pcl-style
+# code with a vendor's registration class). In a function body clang reads the unknown
+# member as a value ("no member named"), not as a type ("no type named"); a static
+# member there makes ``expected ';'`` and the variable undeclared, and every call on it
+# (``reg->setThreads(pnh.param<int>("threads", 0))``) was lost with its ROS call
+_MEMBER_DECLARING = re.compile(
+    rb"\s*(?:[*&](?![&=])\s*)?(?:const\s+)?([A-Za-z_]\w*)\s*[(;={\[]")
 _AMBIGUOUS = re.compile(r"^reference to '(\w+)' is ambiguous")
+# a class of the code built from a declared value (bebop_driver's ``AbstractState(
+# ARCONTROLLER_DICTIONARY_KEY_...)``, whose one constructor takes libARController's enum
+# type, its header missing): the permissive value converts to the enum's declared class
+# and, through ``operator T &``, to the class itself, for its copy constructor; a
+# constant (an enumerator) converts to the declared class only
+_CONSTRUCTION_AMBIGUOUS = re.compile(r"^call to constructor of '(?:const )?[\w:]+(?:<.*>)?' "
+                                     r"is ambiguous")
+_CALLED_AT = re.compile(rb"(?:[A-Za-z_]\w*\s*::\s*)*[A-Za-z_]\w*\s*[({]")
 # a member of the permissive class that a class finds twice: through a declared base and
 # through a real one (rtabmap's ``OdometryROS : public rclcpp::Node, public UThread``,
 # once ``get_logger`` is read on some object): the real base's it is
@@ -326,6 +342,12 @@ struct haros_any {
   haros_any *operator->() const;
   haros_any &operator*() const;
   template <class... A> haros_any &operator()(A &&...) const;
+  // a braced list given to a permissive call, which no template parameter deduces (the
+  // asio idiom ``*resolver.resolve({udp::v4(), host, port})`` of kuka_eki_hw_interface,
+  // with <boost/asio.hpp> missing): a permissive value built from the list
+  haros_any &operator()(const haros_any &) const;
+  haros_any &operator()(const haros_any &, const haros_any &) const;
+  haros_any &operator()(const haros_any &, const haros_any &, const haros_any &) const;
   template <class A> haros_any &operator[](A &&) const;
   template <class A> haros_any &operator=(A &&);
   haros_any &operator++(); haros_any &operator--();
@@ -467,6 +489,17 @@ def _template_arguments(text: bytes, start: int) -> list[tuple[int, int]]:
     return []
 
 
+def _names_a_declared_type(name: str, text: bytes, offset: int) -> bool:
+    """Whether ``name``, written at ``offset`` (or just after: clang may point at the
+    scope before it), is followed by a declarator (``_MEMBER_DECLARING``)."""
+    found = re.compile(rb"::\s*" + re.escape(name.encode()) + rb"\b").search(
+        text, max(0, offset - 2), offset + _TEMPLATE_SPAN)
+    if found is None:
+        return False
+    declared = _MEMBER_DECLARING.match(text, found.end())
+    return declared is not None and declared.group(1).decode() not in _KEYWORDS
+
+
 def _initialised_member(text: bytes, found: re.Match[bytes], before: bytes) -> bool:
     """Whether the call ``found`` (a name and its ``(``) is an element of a constructor's
     initialiser list (cartographer's ``: odometry_sampler(ratio), imu_sampler(ratio) {``):
@@ -560,12 +593,13 @@ class Names:
         self._defined: set[str] = set()  # the names they define (see ``_spread``)
         self._spread_done: set[tuple[int, str]] = set()  # (file, name) looked for
         self.count = 0
+        self.changed = 0  # names declared before whose declaration changed since
 
     def learn(self, errors: Iterable[tuple[str, bytes | None, int]]) -> bool:
         """Read ``(message, source bytes of its file, byte offset)`` errors; True when a
         name was learnt that was not known before."""
         before = (self.count, len(self.members), len(self.withdrawn),
-                  len(self.withdrawn_members))
+                  len(self.withdrawn_members), self.changed)
         errors = list(errors)
         for _message, text, _offset in errors:
             if text is not None and id(text) not in self._read:
@@ -583,7 +617,7 @@ class Names:
             self._learn_one(message, text, offset)
         self._spread()
         return (self.count, len(self.members), len(self.withdrawn),
-                len(self.withdrawn_members)) != before
+                len(self.withdrawn_members), self.changed) != before
 
     def _spread(self) -> None:
         """Every qualified use of an unknown top-level name in the files read: clang
@@ -761,6 +795,10 @@ class Names:
             if text is not None:
                 self._a_value(text, offset)
             return
+        if _CONSTRUCTION_AMBIGUOUS.match(message):
+            if text is not None:
+                self._constant_arguments(text, offset)
+            return
         member_type = _MEMBER_TYPE.match(message)
         if member_type is not None and "namespace" not in message:
             name, record = member_type.group(1), member_type.group(2)
@@ -778,7 +816,13 @@ class Names:
             name, record = member.group(1), member.group(2)
             if name in _KEYWORDS or (member.group(3) and not self._synthesised(record)):
                 return
-            if self._synthesised(record):
+            if self._synthesised(record) and record != "haros_any" and text is not None \
+                    and _names_a_declared_type(name, text, offset):
+                node = self._node(record)
+                if name not in node.children:
+                    node.children[name] = _Name(uses={"type"})
+                    self.count += 1
+            elif self._synthesised(record):
                 self.members.add(name)
             elif self._message(record) and name not in self.fields.get(record, ()):
                 self.fields.setdefault(record, set()).add(name)
@@ -934,6 +978,40 @@ class Names:
                 node.uses == {"type"}:
             node.uses = {"value"}
             self.count += 1
+
+    def _constant_arguments(self, text: bytes, offset: int) -> None:
+        """The arguments of the construction written at ``offset`` (``C(a, b)``,
+        ``C{a}``) that are declared values named as constants (``_CONSTANT``): declared
+        as constants (enumerators), which no class converts to but through a
+        constructor (``_CONSTRUCTION_AMBIGUOUS``)."""
+        called = _CALLED_AT.match(text, offset)
+        if called is None:
+            return
+        depth, start, at, arguments = 0, called.end(), called.end(), []
+        while at < len(text) and at - called.end() < _TEMPLATE_SPAN:
+            char = text[at:at + 1]
+            if char in b"([{":
+                depth += 1
+            elif char in b")]}" and depth:
+                depth -= 1
+            elif char in b")]}" or (char == b"," and not depth):
+                arguments.append(text[start:at])
+                start = at + 1
+                if char != b",":
+                    break
+            at += 1
+        for argument in arguments:
+            parts = [p.strip().decode() for p in argument.split(b"::")]
+            if not parts or not all(re.fullmatch(r"[A-Za-z_]\w*", p) for p in parts) or (
+                    not _CONSTANT.fullmatch(parts[-1])):
+                continue
+            node: _Name | None = self.root
+            for part in parts:
+                node = node.children.get(part) if node is not None else None
+            if node is not None and not node.known and not node.children and (
+                    node.uses == {"value"}):
+                node.uses.add("constant")
+                self.changed += 1  # a name declared already: no more of MAX_NAMES
 
     @staticmethod
     def _last_use(use: str, after: bytes) -> str:

@@ -710,7 +710,17 @@ class CallFinder:
         args = ([c for c in list(call.get_children())[1:] if c.kind.is_expression()]
                 if call.kind != CursorKind.CALL_EXPR else written_arguments(call))
         before = len(self.calls)
-        self._emit(spec, call, args, None, conditions, scope)
+        # in a function template of a header (a call on an object of a template
+        # parameter's type, ``params.template param<bool>("use_const_inf_matrix", false)``
+        # of hdl_graph_slam's InformationMatrixCalculator::load<ParamServer>): made only
+        # where a file of the node calls the template, as ``_dependent`` makes its class
+        made_by = self._made_by
+        if made_by is None:
+            self._made_by = self._template
+        try:
+            self._emit(spec, call, args, None, conditions, scope)
+        finally:
+            self._made_by = made_by
         if len(self.calls) == before:
             return
         written = _written_template(call)
@@ -977,8 +987,13 @@ class CallFinder:
         declared permissively (its header is missing: mqtt_client's ``client_->subscribe(
         topic, qos)`` on Paho's ``mqtt::async_client``) is no ROS call left unread, in
         ROS 2 code: such an object communicates only through a node it is given, which
-        ``_to_unknown`` says where it is given (``resolved``, so not CPP_CALL_MISSED)."""
-        if not self.ros2:
+        ``_to_unknown`` says where it is given (``resolved``, so not CPP_CALL_MISSED).
+        In ROS 1 code, where any class may make its own NodeHandle, only a member of an
+        object whose class is declared permissively in the namespace of a library that
+        ``clients`` says makes no ROS calls (boost, a system library): kuka_eki_hw_interface's
+        ``resolver.resolve({udp::v4(), host, port})`` of asio, with <boost/asio.hpp>
+        missing, is no tf listener's ``resolve``."""
+        if not self.ros2 and self.clients is None:
             return
         callee = first_operand(call)
         if callee is None or callee.kind not in (CursorKind.MEMBER_REF_EXPR,
@@ -986,8 +1001,28 @@ class CallFinder:
             return
         target = callee.referenced
         if callee.spelling in _API_NAMES and target is not None and self._declared_here(
-                target) and callee.location.file is not None:
+                target) and callee.location.file is not None and (
+                    self.ros2 or self._of_library_object(callee)):
             self.resolved.add((callee.location.file.name, callee.location.line))
+
+    def _of_library_object(self, callee: Cursor) -> bool:
+        """ROS 1: whether member ``callee`` is read on an object of a class declared
+        permissively in a namespace whose package ``clients`` says makes no ROS calls."""
+        assert self.clients is not None
+        if callee.kind != CursorKind.MEMBER_REF_EXPR:
+            return False
+        base = next(callee.get_children(), None)
+        if base is None:
+            return False
+        kind = base.type.get_canonical()
+        if kind.kind in (TypeKind.POINTER, TypeKind.LVALUEREFERENCE, TypeKind.RVALUEREFERENCE):
+            kind = kind.get_pointee()
+        cls = kind.get_declaration()
+        if cls is None or cls.kind not in (CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL) or (
+                not self._declared_here(cls)) or cls.spelling == synthesis.ANY:
+            return False
+        name = qualified_name(cls)
+        return "::" in name and not self.clients(name.split("::", 1)[0], name)
 
     def _of_unknown_base(self, callee: Cursor, function: Cursor | None) -> bool:
         """Whether ``callee`` is a friend of the permissive class (an unqualified function

@@ -225,10 +225,14 @@ public:
   typedef std::shared_ptr<const Buffer> ConstSharedPtr;
   typedef std::unique_ptr<Buffer> UniquePtr;
   template<class... A> explicit Buffer(A&&... args);
-  template<class T, class... A> haros_standin::any_transform_stamped lookupTransform(
-      const std::string& target, const std::string& source, const T& time, A&&... more) const;
-  template<class T, class... A> bool canTransform(const std::string& target,
-      const std::string& source, const T& time, A&&... more) const;
+  // (target, source, time, ...) and the advanced form (target, target_time, source,
+  // source_time, fixed_frame, timeout): its second argument a time (hdl_localization);
+  // every argument read only (taken as const: the frame variables a call names keep
+  // their one write, ``ReadCall.variable``)
+  template<class S, class T, class... A> haros_standin::any_transform_stamped lookupTransform(
+      const std::string& target, const S& source, const T& time, const A&... more) const;
+  template<class S, class T, class... A> bool canTransform(const std::string& target,
+      const S& source, const T& time, const A&... more) const;
   template<class M, class... A> M& transform(const M& in, M& out, const std::string& target, A&&... more) const;
   template<class M, class... A> M transform(const M& in, const std::string& target, A&&... more) const;
   void setUsingDedicatedThread(bool v);

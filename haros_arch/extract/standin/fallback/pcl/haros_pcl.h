@@ -323,6 +323,8 @@ template<class PointT> class Filter : public PCLBase<PointT> {
 };
 template<class PointT> class FilterIndices : public Filter<PointT> {
  public:
+  typedef shared_ptr<FilterIndices<PointT>> Ptr;  // each class its own, as PCL's
+  typedef shared_ptr<const FilterIndices<PointT>> ConstPtr;
   typedef typename Filter<PointT>::PointCloud PointCloud;
   explicit FilterIndices(bool extract_removed_indices = false);
   using Filter<PointT>::filter;
@@ -375,6 +377,8 @@ template<class PointT> class VoxelGrid : public Filter<PointT> {
 };
 template<class PointT> class ApproximateVoxelGrid : public Filter<PointT> {
  public:
+  typedef shared_ptr<ApproximateVoxelGrid<PointT>> Ptr;  // each class its own, as PCL's
+  typedef shared_ptr<const ApproximateVoxelGrid<PointT>> ConstPtr;
   ApproximateVoxelGrid();
   void setLeafSize(const Eigen::Vector3f& leaf_size);
   void setLeafSize(float lx, float ly, float lz);
@@ -382,6 +386,8 @@ template<class PointT> class ApproximateVoxelGrid : public Filter<PointT> {
 };
 template<class PointT> class PassThrough : public FilterIndices<PointT> {
  public:
+  typedef shared_ptr<PassThrough<PointT>> Ptr;  // each class its own, as PCL's
+  typedef shared_ptr<const PassThrough<PointT>> ConstPtr;
   explicit PassThrough(bool extract_removed_indices = false);
   void setFilterFieldName(const std::string& field_name);
   const std::string& getFilterFieldName() const;
@@ -392,6 +398,8 @@ template<class PointT> class PassThrough : public FilterIndices<PointT> {
 };
 template<class PointT> class CropBox : public FilterIndices<PointT> {
  public:
+  typedef shared_ptr<CropBox<PointT>> Ptr;  // each class its own, as PCL's
+  typedef shared_ptr<const CropBox<PointT>> ConstPtr;
   explicit CropBox(bool extract_removed_indices = false);
   void setMin(const Eigen::Vector4f& min_pt);
   Eigen::Vector4f getMin() const;
@@ -405,6 +413,8 @@ template<class PointT> class CropBox : public FilterIndices<PointT> {
 };
 template<class PointT> class CropHull : public FilterIndices<PointT> {
  public:
+  typedef shared_ptr<CropHull<PointT>> Ptr;  // each class its own, as PCL's
+  typedef shared_ptr<const CropHull<PointT>> ConstPtr;
   CropHull();
   void setHullIndices(const std::vector<Vertices>& polygons);
   void setHullCloud(typename PCLBase<PointT>::PointCloudPtr points);
@@ -413,11 +423,15 @@ template<class PointT> class CropHull : public FilterIndices<PointT> {
 };
 template<class PointT> class ExtractIndices : public FilterIndices<PointT> {
  public:
+  typedef shared_ptr<ExtractIndices<PointT>> Ptr;  // each class its own, as PCL's
+  typedef shared_ptr<const ExtractIndices<PointT>> ConstPtr;
   explicit ExtractIndices(bool extract_removed_indices = false);
   void filterDirectly(typename PCLBase<PointT>::PointCloudPtr& cloud);
 };
 template<class PointT> class RadiusOutlierRemoval : public FilterIndices<PointT> {
  public:
+  typedef shared_ptr<RadiusOutlierRemoval<PointT>> Ptr;  // each class its own, as PCL's
+  typedef shared_ptr<const RadiusOutlierRemoval<PointT>> ConstPtr;
   explicit RadiusOutlierRemoval(bool extract_removed_indices = false);
   void setRadiusSearch(double radius);
   double getRadiusSearch();
@@ -426,6 +440,8 @@ template<class PointT> class RadiusOutlierRemoval : public FilterIndices<PointT>
 };
 template<class PointT> class StatisticalOutlierRemoval : public FilterIndices<PointT> {
  public:
+  typedef shared_ptr<StatisticalOutlierRemoval<PointT>> Ptr;  // each class its own, as PCL's
+  typedef shared_ptr<const StatisticalOutlierRemoval<PointT>> ConstPtr;
   explicit StatisticalOutlierRemoval(bool extract_removed_indices = false);
   void setMeanK(int nr_k);
   int getMeanK();
@@ -434,6 +450,8 @@ template<class PointT> class StatisticalOutlierRemoval : public FilterIndices<Po
 };
 template<class PointT> class RandomSample : public FilterIndices<PointT> {
  public:
+  typedef shared_ptr<RandomSample<PointT>> Ptr;  // each class its own, as PCL's
+  typedef shared_ptr<const RandomSample<PointT>> ConstPtr;
   explicit RandomSample(bool extract_removed_indices = false);
   void setSample(unsigned int sample);
   unsigned int getSample();
@@ -496,10 +514,14 @@ template<class PointT, class Tree = void> class KdTree : public Search<PointT> {
 };
 template<class PointT> class Octree : public Search<PointT> {
  public:
+  typedef shared_ptr<Octree<PointT>> Ptr;  // each class its own, as PCL's
+  typedef shared_ptr<const Octree<PointT>> ConstPtr;
   explicit Octree(double resolution);
 };
 template<class PointT> class OrganizedNeighbor : public Search<PointT> {
  public:
+  typedef shared_ptr<OrganizedNeighbor<PointT>> Ptr;  // each class its own, as PCL's
+  typedef shared_ptr<const OrganizedNeighbor<PointT>> ConstPtr;
   explicit OrganizedNeighbor(bool sorted_results = false, float eps = 1e-4f,
                              unsigned pyramid_window_size = 5);
 };
@@ -541,6 +563,8 @@ template<class PointT> class SACSegmentation : public PCLBase<PointT> {
 template<class PointT, class PointNT> class SACSegmentationFromNormals
     : public SACSegmentation<PointT> {
  public:
+  typedef shared_ptr<SACSegmentationFromNormals<PointT, PointNT>> Ptr;  // each class its own, as PCL's
+  typedef shared_ptr<const SACSegmentationFromNormals<PointT, PointNT>> ConstPtr;
   explicit SACSegmentationFromNormals(bool random = false);
   void setInputNormals(const typename PointCloud<PointNT>::ConstPtr& normals);
   void setNormalDistanceWeight(double distance_weight);
@@ -585,6 +609,8 @@ template<class PointInT, class PointOutT> class Feature : public PCLBase<PointIn
 template<class PointInT, class PointOutT> class NormalEstimation
     : public Feature<PointInT, PointOutT> {
  public:
+  typedef shared_ptr<NormalEstimation<PointInT, PointOutT>> Ptr;  // each class its own, as PCL's
+  typedef shared_ptr<const NormalEstimation<PointInT, PointOutT>> ConstPtr;
   NormalEstimation();
   void setViewPoint(float vpx, float vpy, float vpz);
   void useSensorOriginAsViewPoint();
@@ -592,11 +618,15 @@ template<class PointInT, class PointOutT> class NormalEstimation
 template<class PointInT, class PointOutT> class NormalEstimationOMP
     : public NormalEstimation<PointInT, PointOutT> {
  public:
+  typedef shared_ptr<NormalEstimationOMP<PointInT, PointOutT>> Ptr;  // each class its own, as PCL's
+  typedef shared_ptr<const NormalEstimationOMP<PointInT, PointOutT>> ConstPtr;
   explicit NormalEstimationOMP(unsigned int nr_threads = 0);
   void setNumberOfThreads(unsigned int nr_threads = 0);
 };
 template<class PointT> class ConvexHull : public PCLBase<PointT> {
  public:
+  typedef shared_ptr<ConvexHull<PointT>> Ptr;  // each class its own, as PCL's
+  typedef shared_ptr<const ConvexHull<PointT>> ConstPtr;
   ConvexHull();
   void setDimension(int dimension);
   void setComputeAreaVolume(bool value);
@@ -607,6 +637,8 @@ template<class PointT> class ConvexHull : public PCLBase<PointT> {
 };
 template<class PointT> class ConcaveHull : public ConvexHull<PointT> {
  public:
+  typedef shared_ptr<ConcaveHull<PointT>> Ptr;  // each class its own, as PCL's
+  typedef shared_ptr<const ConcaveHull<PointT>> ConstPtr;
   ConcaveHull();
   void setAlpha(double alpha);
 };
@@ -619,7 +651,15 @@ template<class PointSource, class PointTarget, class Scalar = float> class Regis
   typedef shared_ptr<Registration> Ptr;
   typedef typename PointCloud<PointSource>::ConstPtr PointCloudSourceConstPtr;
   typedef typename PointCloud<PointTarget>::ConstPtr PointCloudTargetConstPtr;
+  typedef typename search::KdTree<PointTarget>::Ptr KdTreePtr;
+  typedef typename search::KdTree<PointSource>::Ptr KdTreeReciprocalPtr;
   Registration();
+  void setSearchMethodTarget(const KdTreePtr& tree, bool force_no_recompute = false);
+  KdTreePtr getSearchMethodTarget() const;
+  void setSearchMethodSource(const KdTreeReciprocalPtr& tree, bool force_no_recompute = false);
+  KdTreeReciprocalPtr getSearchMethodSource() const;
+  PointCloudSourceConstPtr const getInputSource();
+  PointCloudTargetConstPtr const getInputTarget();
   virtual void setInputSource(const PointCloudSourceConstPtr& cloud);
   virtual void setInputTarget(const PointCloudTargetConstPtr& cloud);
   void setMaximumIterations(int nr_iterations);
@@ -638,12 +678,16 @@ template<class PointSource, class PointTarget, class Scalar = float> class Regis
 template<class PointSource, class PointTarget, class Scalar = float> class IterativeClosestPoint
     : public Registration<PointSource, PointTarget, Scalar> {
  public:
+  typedef shared_ptr<IterativeClosestPoint<PointSource, PointTarget, Scalar>> Ptr;  // each class its own, as PCL's
+  typedef shared_ptr<const IterativeClosestPoint<PointSource, PointTarget, Scalar>> ConstPtr;
   IterativeClosestPoint();
   void setUseReciprocalCorrespondences(bool use_reciprocal_correspondence);
 };
 template<class PointSource, class PointTarget> class GeneralizedIterativeClosestPoint
     : public IterativeClosestPoint<PointSource, PointTarget> {
  public:
+  typedef shared_ptr<GeneralizedIterativeClosestPoint<PointSource, PointTarget>> Ptr;  // each class its own, as PCL's
+  typedef shared_ptr<const GeneralizedIterativeClosestPoint<PointSource, PointTarget>> ConstPtr;
   GeneralizedIterativeClosestPoint();
   void setCorrespondenceRandomness(int k);
   void setMaximumOptimizerIterations(int max);
@@ -651,6 +695,8 @@ template<class PointSource, class PointTarget> class GeneralizedIterativeClosest
 template<class PointSource, class PointTarget> class NormalDistributionsTransform
     : public Registration<PointSource, PointTarget> {
  public:
+  typedef shared_ptr<NormalDistributionsTransform<PointSource, PointTarget>> Ptr;  // each class its own, as PCL's
+  typedef shared_ptr<const NormalDistributionsTransform<PointSource, PointTarget>> ConstPtr;
   NormalDistributionsTransform();
   void setResolution(float resolution);
   void setStepSize(double step_size);

@@ -9,6 +9,14 @@
 #include <pcl/PCLPointCloud2.h>
 
 namespace pcl_conversions {
+// the one-argument forms return the message side (ROS 1 ros::Time / std_msgs::Header,
+// ROS 2 rclcpp::Time / std_msgs::msg::Header; std::uint64_t / pcl::PCLHeader the other
+// way): a value that converts to what it initialises (hdl_graph_slam's ``ros::Time stamp
+// = pcl_conversions::fromPCL(cloud->header.stamp);``)
+struct haros_converted { template<class T> operator T() const; };
+haros_converted fromPCL(const std::uint64_t& pcl_stamp);
+haros_converted fromPCL(const pcl::PCLHeader& pcl_header);
+template<class T> haros_converted toPCL(const T& value);
 template<class Stamp> void fromPCL(const std::uint64_t& pcl_stamp, Stamp& stamp);
 template<class Stamp> void toPCL(const Stamp& stamp, std::uint64_t& pcl_stamp);
 template<class Header> void fromPCL(const pcl::PCLHeader& pcl_header, Header& header);
