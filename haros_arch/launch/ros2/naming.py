@@ -103,10 +103,11 @@ def parse_ros_args(tokens: list[str], node_name: str | None) -> RosArgs:
             target, src, dst = rule
             if target is not None and node_name is not None and target != node_name:
                 continue
+            # rcl applies the first rule that matches: a later one renames nothing
             if src == "__ns":
-                out.namespace = dst
+                out.namespace = out.namespace if out.namespace is not None else dst
             elif src in ("__node", "__name"):
-                out.node_name = dst
+                out.node_name = out.node_name if out.node_name is not None else dst
             else:
                 out.remaps.append((src, dst))
             continue
