@@ -388,10 +388,21 @@ class Interpreter(Expressions):
             self.block(stmt.orelse, env)
         else:
             text = _source(stmt.test)
+            # each branch from the names as they are before the ``if``; after it, a name
+            # is what the branch that goes on set (the other returns), else either's
+            before = dict(env)
             taken = self.branch(stmt.body, env, text)
+            after_body = dict(env)
+            env.clear()
+            env.update(before)
             left = self.branch(stmt.orelse, env, f"not ({text})")
             if taken is not None and left is not None:  # both return: so does the if
                 raise _Return(self.either([taken.value, left.value]))
+            if left is not None:
+                env.clear()
+                env.update(after_body)
+            elif taken is None:
+                self.join(env, after_body)
             returned = taken or left
             if returned is not None:
                 # one branch returns: that value is one the function may give, and
@@ -400,6 +411,23 @@ class Interpreter(Expressions):
                     raise returned
                 self.returns[-1].append(returned.value)
                 self.guards.append(text if taken is None else f"not ({text})")
+
+    def join(self, env: dict[str, Any], other: dict[str, Any]) -> None:
+        """The names after an ``if`` whose test is not known, both branches having run
+        on: ``env`` as the else branch left it, ``other`` as the body left it. A name one
+        branch alone binds is that branch's (the other would fail on it); one both bind
+        is ``either`` of the two values: the same value, the actions of both (each made
+        under its branch's test), else a value not known."""
+        for name, value in other.items():
+            if name not in env:
+                env[name] = value
+            elif env[name] is value:
+                continue
+            elif isinstance(value, (Func, Module)) or isinstance(env[name], (Func, Module)):
+                env[name] = Unknown(f"{name}, defined in both branches of a test not known "
+                                    "statically")
+            else:
+                env[name] = self.either([value, env[name]], f"{name}, set in both branches")
 
     def branch(self, body: list[ast.stmt], env: dict[str, Any], guard: str
                ) -> _Return | None:
@@ -414,7 +442,7 @@ class Interpreter(Expressions):
             self.guards.pop()
         return None
 
-    def either(self, values: list[Any]) -> Any:
+    def either(self, values: list[Any], what: str = "one of several return values") -> Any:
         """What a function gives that returns one of ``values`` (a test not known
         statically decides): the actions of all when they are actions (each made under
         its branch's test), the value when they agree, else an unknown."""
@@ -439,7 +467,7 @@ class Interpreter(Expressions):
         first = values[0]
         if all(type(v) is type(first) and v == first for v in values):
             return first
-        return Unknown("one of several return values (a test not known statically)")
+        return Unknown(f"{what} (a test not known statically)")
 
     def with_(self, stmt: ast.With, env: dict[str, Any]) -> None:
         """``with open(path) as f:``: a read-only handle on a file we may read."""

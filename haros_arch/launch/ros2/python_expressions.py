@@ -227,6 +227,19 @@ class Expressions(Walker):
             return self.unsupported(node, "operation on values not known statically")
         return self.operation(lambda: ops.binary(type(op), left, right, LIMITS), node)
 
+    def eval_Compare(self, node: ast.Compare, env: Any = None) -> Any:
+        """Python's comparison; ``name in os.environ`` reads the configuration's
+        environment (``name not in`` too)."""
+        if len(node.ops) == 1 and isinstance(node.ops[0], (ast.In, ast.NotIn)) and \
+                isinstance(node.comparators[0], (ast.Name, ast.Attribute)):
+            right = self.eval(node.comparators[0], env)
+            if isinstance(right, _Environ):
+                found = right.has(self, self.eval(node.left, env), node)
+                if found is None:
+                    return Unknown(f"comparison {_source(node)}")
+                return found if isinstance(node.ops[0], ast.In) else not found
+        return super().eval_Compare(node, env)
+
     def eval_Subscript(self, node: ast.Subscript, env: dict[str, Any]) -> Any:
         value = self.eval(node.value, env)
         key = self.eval(node.slice, env)
@@ -439,6 +452,16 @@ class _Bound:
 
 class _Environ:
     """``os.environ``: reads the configuration's environment."""
+
+    def has(self, interp: Expressions, name: Any, node: ast.AST) -> bool | None:
+        """``name in os.environ``: True when the configuration sets it, else not known
+        (as a ``get`` without a default), and said."""
+        if isinstance(name, str) and name in interp.environment:
+            return True
+        if isinstance(name, str):
+            interp.unknown_value(node, f"environment variable {name} is not set in the "
+                                       "configuration")
+        return None
 
     def get(self, interp: Expressions, args: list[Any], node: ast.AST) -> Any:
         name = args[0] if args else None
