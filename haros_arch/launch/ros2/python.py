@@ -79,6 +79,7 @@ class Interpreter(Expressions):
         self.depth = 0
         self.running: list[ast.AST] = []  # the functions being run, outermost first
         self.guards: list[str] = []  # texts of unknown Python `if` tests we are under
+        self.decided: set[int] = set()
         # the enclosing ``try`` statements: the exception classes their handlers name
         # (None: one not known) and how many guards there were when each began
         self.catching: list[tuple[list[tuple[str, ...] | None], int]] = []
@@ -379,8 +380,11 @@ class Interpreter(Expressions):
     def if_(self, stmt: ast.If, env: dict[str, Any]) -> None:
         value = self.eval(stmt.test, env)
         test = self.truth(value)
-        if launch_object(value):  # ``if LaunchConfigurationEquals(...):`` never tests it
-            self.diagnostics.append(diag.make("LAUNCH_PY_ALWAYS_TRUE", self.where(stmt.test),
+        if launch_object(value) or id(stmt.test) in self.decided:
+            # ``if LaunchConfigurationEquals(...):`` never tests it, nor does
+            # ``if LaunchConfiguration('sim') == 'true':`` (always false) or ``not`` of one
+            code = "LAUNCH_PY_ALWAYS_TRUE" if test else "LAUNCH_PY_ALWAYS_FALSE"
+            self.diagnostics.append(diag.make(code, self.where(stmt.test),
                                               test=_source(stmt.test)))
         if test is True:
             self.block(stmt.body, env)

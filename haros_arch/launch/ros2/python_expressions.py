@@ -58,6 +58,9 @@ class Expressions(Walker):
     methods: dict[str, Any]
     environment: Mapping[str, str]
     guards: list[str]
+    # the expressions (ids of their nodes) whose value Python's handling of a launch
+    # object decided: ``not`` of one, one compared with ``==`` (``compare_values``)
+    decided: set[int]
 
     def sized(self, value: Any) -> Any:
         raise NotImplementedError
@@ -227,18 +230,34 @@ class Expressions(Walker):
             return self.unsupported(node, "operation on values not known statically")
         return self.operation(lambda: ops.binary(type(op), left, right, LIMITS), node)
 
-    def eval_Compare(self, node: ast.Compare, env: Any = None) -> Any:
-        """Python's comparison; ``name in os.environ`` reads the configuration's
-        environment (``name not in`` too)."""
-        if len(node.ops) == 1 and isinstance(node.ops[0], (ast.In, ast.NotIn)) and \
-                isinstance(node.comparators[0], (ast.Name, ast.Attribute)):
-            right = self.eval(node.comparators[0], env)
-            if isinstance(right, _Environ):
-                found = right.has(self, self.eval(node.left, env), node)
-                if found is None:
-                    return Unknown(f"comparison {_source(node)}")
-                return found if isinstance(node.ops[0], ast.In) else not found
-        return super().eval_Compare(node, env)
+    def compare_values(self, op: ast.cmpop, left: object, right: object,
+                       node: ast.Compare) -> Any:
+        """Python's comparison. ``name in os.environ`` reads the configuration's
+        environment. A launch object (a substitution, a condition, an action) compared
+        with ``==`` / ``!=`` / ``is`` is compared as Python compares it, by identity
+        (launch's classes define no ``__eq__``): ``LaunchConfiguration('sim') == 'true'``
+        is always false, whatever the argument (``decided`` notes it)."""
+        if isinstance(right, _Environ) and isinstance(op, (ast.In, ast.NotIn)):
+            found = right.has(self, left, node)
+            if found is None:
+                return Unknown(f"comparison {_source(node)}")
+            return found == isinstance(op, ast.In)
+        if isinstance(op, (ast.Eq, ast.NotEq, ast.Is, ast.IsNot)) and (
+                launch_object(left) or launch_object(right)):
+            if isinstance(op, (ast.Eq, ast.NotEq)) and _taken_as_value(left, right):
+                self.decided.add(id(node))
+            return (left is right) == isinstance(op, (ast.Eq, ast.Is))
+        return super().compare_values(op, left, right, node)
+
+    def unary_value(self, node: ast.UnaryOp, value: object) -> Any:
+        """``not`` of a launch object is False, as Python takes the object as true
+        (``decided`` notes it for a substitution or a condition: ``not`` of an action
+        is the usual test of a variable that may hold None)."""
+        if isinstance(node.op, ast.Not) and launch_object(value):
+            if isinstance(value, (e.Subst, e.Cond)):
+                self.decided.add(id(node))
+            return False
+        return super().unary_value(node, value)
 
     def eval_Subscript(self, node: ast.Subscript, env: dict[str, Any]) -> Any:
         value = self.eval(node.value, env)
@@ -448,6 +467,14 @@ class _Bound:
         if handler is None:
             return interp.unsupported(node, f"method .{self.attr}() is not interpreted")
         return handler(interp, self.owner, args, kwargs, node)
+
+
+def _taken_as_value(left: object, right: object) -> bool:
+    """Whether a comparison holds a substitution or condition on one side and a plain
+    value on the other: the file took the launch object for its value."""
+    plain = (str, int, float, bool)
+    return (isinstance(left, (e.Subst, e.Cond)) and isinstance(right, plain)) or (
+        isinstance(right, (e.Subst, e.Cond)) and isinstance(left, plain))
 
 
 class _Environ:
