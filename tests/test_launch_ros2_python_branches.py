@@ -2,8 +2,9 @@
 set, a launch configuration not known in an OpaqueFunction): both branches are
 interpreted, each under its test, and what follows the ``if`` sees either branch's
 values: a name both branches set alike keeps its value, one they set differently is
-not known (``?``), as a function returning one of two values is; actions made in a
-branch carry that branch's test as their condition."""
+not known where they differ (``?``: ``real_driver`` or ``sim_driver`` is ``?_driver``),
+as a function returning one of two values is; actions made in a branch carry that
+branch's test as their condition."""
 
 from __future__ import annotations
 
@@ -36,11 +37,11 @@ def test_values_two_branches_set_differently_are_not_known_after_the_if(write_tr
     model, _ = run(write_tree, BRANCHES)
     names = [n.name for n in model.nodes]
     # not "sim_driver" unconditionally: the else branch does not win
-    assert names == ["/?", "/kept_fixed", "/one_branch", "/real_only", "/sim_only"]
+    assert names == ["/?_driver", "/kept_fixed", "/one_branch", "/real_only", "/sim_only"]
     params = {(p.node, p.key): p.value for p in model.params}
-    assert params == {("/?", "rate"): None}
+    assert params == {("/?_driver", "rate"): None}
     unconditional = {n.name for n in model.nodes if not n.conditions}
-    assert unconditional == {"/?", "/kept_fixed", "/one_branch"}
+    assert unconditional == {"/?_driver", "/kept_fixed", "/one_branch"}
     real_only, sim_only = model.nodes[3:]
     assert "NOT_SET_FOR_THIS_TEST" in real_only.conditions[0].text
     assert sim_only.conditions[0].text.startswith("not (") or \
@@ -69,7 +70,7 @@ def test_an_opaque_function_testing_a_configuration_not_known(write_tree):
     assert sorted(nodes) == ["/big_extra", "/driver"]
     assert nodes["/big_extra"].conditions and not nodes["/driver"].conditions
     params = {(p.node, p.key): p.value for p in model.params}
-    assert params == {("/driver", "config"): None}
+    assert params == {("/driver", "config"): None}  # big.yaml or small.yaml: ?.yaml
     # with the argument given, the test is known: one branch, no condition
     model, _ = run(write_tree, OPAQUE, args={"robot": "small"})
     assert [n.name for n in model.nodes] == ["/driver"]
@@ -91,3 +92,31 @@ def generate_launch_description():
     model, _ = run(write_tree, body)
     assert [n.name for n in model.nodes] == ["/?"]
     assert any("ROBOT_KIND is not set" in d.message for d in model.diagnostics)
+
+
+def test_composable_nodes_made_in_branches_are_both_loaded_each_under_its_test(write_tree):
+    """zed_camera.launch.py: ``if is_stereo_model: component = ComposableNode(plugin=A)
+    else: component = ComposableNode(plugin=B)``, then ``LoadComposableNodes(...,
+    composable_node_descriptions=[component])``, the camera model being an argument
+    not given."""
+    model, _ = run(write_tree, """
+from launch_ros.actions import ComposableNodeContainer, LoadComposableNodes
+from launch_ros.descriptions import ComposableNode
+
+def setup(context):
+    model = LaunchConfiguration('camera_model').perform(context)
+    if model in ('zed', 'zedx'):
+        component = ComposableNode(package='zed', plugin='zed::Stereo', name='cam')
+    else:
+        component = ComposableNode(package='zed', plugin='zed::Mono', name='cam')
+    return [ComposableNodeContainer(name='box', namespace='', package='rclcpp_components',
+                                    executable='component_container'),
+            LoadComposableNodes(target_container='/box',
+                                composable_node_descriptions=[component])]
+
+def generate_launch_description():
+    return LaunchDescription([DeclareLaunchArgument('camera_model'),
+                              OpaqueFunction(function=setup)])
+""")
+    loaded = [(n.name, n.executable, bool(n.conditions)) for n in model.nodes if n.composable]
+    assert loaded == [("/cam", "zed::Stereo", True), ("/cam", "zed::Mono", True)]

@@ -46,6 +46,7 @@ from .python_values import (
     MAX_SOURCE,
     Budget,
     Func,
+    Lazy,
     LaunchDescription,
     Module,
     Raised,
@@ -447,10 +448,13 @@ class Interpreter(Expressions):
         return None
 
     def either(self, values: list[Any], what: str = "one of several return values") -> Any:
-        """What a function gives that returns one of ``values`` (a test not known
-        statically decides): the actions of all when they are actions (each made under
-        its branch's test), the value when they agree, else an unknown."""
-        if all(v is None or isinstance(v, (e.Action, list, tuple, LaunchDescription))
+        """What a function gives that returns one of ``values``, or a name an ``if``
+        set to one of them (a test not known statically decides): the actions (or
+        composable nodes' descriptions) of all when they are such (each made under its
+        branch's test), the value when they agree, a value not known when one is not,
+        texts known where they agree (``_common_text``), else an unknown (``what``)."""
+        if all(v is None or isinstance(v, (e.Action, e.ComposableNode, list, tuple,
+                                           LaunchDescription))
                for v in values) and any(v is not None for v in values):
             actions: list[Any] = []
             seen: set[int] = set()  # an action in several outcomes (one ld returned
@@ -467,11 +471,17 @@ class Interpreter(Expressions):
                 if all(v is None or isinstance(v, (list, tuple)) for v in values):
                     return actions  # lists of actions stay a list (``helper() + [...]``)
                 return LaunchDescription(actions)
+            if actions and all(isinstance(a, e.ComposableNode) for a in actions):
+                return actions  # descriptions, each under its test: a list of them
             # lists of plain values (names, arguments): one of them, not all at once
         first = values[0]
         if all(type(v) is type(first) and v == first for v in values):
             return first
-        return Unknown(f"{what} (a test not known statically)")
+        unknown = next((v for v in values if isinstance(v, Unknown)), None)
+        if unknown is not None:
+            return unknown  # not known either way: why one of them is not
+        reason = f"{what} (a test not known statically)"
+        return _common_text(values, reason) or Unknown(reason)
 
     def with_(self, stmt: ast.With, env: dict[str, Any]) -> None:
         """``with open(path) as f:``: a read-only handle on a file we may read."""
@@ -754,4 +764,37 @@ def _catches(classes: tuple[str, ...] | None, name: str) -> bool:
         return True
     raised = _EXCEPTIONS[name]
     return any(issubclass(raised, _EXCEPTIONS[c]) for c in classes)
+
+
+def _common_text(values: list[Any], reason: str) -> Lazy | None:
+    """Texts (strings, or strings with substitutions) that differ: the start and the
+    end all of them share, known, and an unknown part (``reason``) between
+    (``'real_driver'`` or ``'sim_driver'``: ``?_driver``); None when a value is no text
+    or they share nothing."""
+    tokens: list[list[str | e.Subst]] = []
+    for value in values:
+        if isinstance(value, str):
+            tokens.append(list(value))
+        elif isinstance(value, Lazy):
+            tokens.append([c for part in value.text
+                           for c in (part if isinstance(part, str) else (part,))])
+        else:
+            return None
+    shortest = min(len(t) for t in tokens)
+    head = 0
+    while head < shortest and all(t[head] == tokens[0][head] for t in tokens):
+        head += 1
+    tail = 0
+    while tail < shortest - head and all(t[-1 - tail] == tokens[0][-1 - tail] for t in tokens):
+        tail += 1
+    if not head and not tail:
+        return None
+    first = tokens[0]
+    parts: list[str | e.Subst] = []
+    for token in [*first[:head], e.Opaque(reason), *first[len(first) - tail:]]:
+        if isinstance(token, str) and parts and isinstance(parts[-1], str):
+            parts[-1] += token
+        else:
+            parts.append(token)
+    return Lazy(tuple(parts))
 

@@ -331,16 +331,22 @@ class Expressions(Walker):
             else:
                 kwargs[keyword.arg] = value
         result = self.call(func, args, kwargs, node)
-        if self.guards and isinstance(result, e.Action):
+        if self.guards and isinstance(result, (e.Action, e.ComposableNode)):
             result = self.guarded(result, node)
         return result
 
-    def guarded(self, action: e.Action, node: ast.AST) -> e.Action:
-        """An action made under a Python ``if`` whose test is unknown: conditional."""
+    def guarded(self, action: e.Action | e.ComposableNode, node: ast.AST
+                ) -> e.Action | e.ComposableNode:
+        """An action (or a composable node's description) made under a Python ``if``
+        whose test is unknown: conditional. A description that has a condition of its
+        own keeps it alone (no group to put it in: it may then be taken when the test
+        would not hold, never left out)."""
         text = " and ".join(self.guards)
         cond = e.Cond((e.Opaque(f"Python test {text}"),), source=text)
         if action.condition is None:
             action.condition = cond
+            return action
+        if isinstance(action, e.ComposableNode):
             return action
         return e.Group([action], scoped=False, condition=cond, location=action.location)
 
