@@ -5,7 +5,8 @@ where ROS 1 (roscpp, rospy) keeps the LAST. launch_ros writes a Node's command l
 then ``SetRemap`` rules of the scope, then its ``remappings`` (launch_ros
 actions/node.py); a ComposableNode's request holds the scope's ``SetRemap`` rules, then
 its own (load_composable_nodes.py), and the component takes no rule of its container's
-process (rclcpp_components: ``use_global_arguments(false)``)."""
+process (rclcpp_components: ``use_global_arguments(false)``). A rule written
+``node:from`` applies to the node of that name alone."""
 
 from __future__ import annotations
 
@@ -59,6 +60,11 @@ def generate_launch_description():
              remappings=[('chatter', 'own')]),
         Node(package='talk', executable='talker', name='launch_name',
              ros_arguments=['-r', '__node:=renamed', '-r', '__node:=renamed_later']),
+        GroupAction([
+            SetRemap(src='pa:chatter', dst='only_pa'),
+            Node(package='talk', executable='talker', name='pa'),
+            Node(package='talk', executable='talker', name='pb'),
+        ]),
     ])
 """
 
@@ -85,6 +91,11 @@ XML = """
   </node>
   <node pkg="talk" exec="talker" name="launch_name"
         ros_args="-r __node:=renamed -r __node:=renamed_later"/>
+  <group>
+    <set_remap from="pa:chatter" to="only_pa"/>
+    <node pkg="talk" exec="talker" name="pa"/>
+    <node pkg="talk" exec="talker" name="pb"/>
+  </group>
 </launch>
 """
 
@@ -115,6 +126,8 @@ def test_a_name_two_rules_remap_takes_the_rule_rcl_matches_first(write_tree, nam
         "/args": "/from_args",          # arguments' --ros-args come first on the line
         "/ros_args": "/from_ros_args",  # ros_arguments before remappings, first of them
         "/renamed": "/chatter",         # a __node rule in ros_arguments before name=
+        "/pa": "/only_pa",              # a rule for the node called pa (rcl's prefix)
+        "/pb": "/chatter",              # ... and for no other
     }
     grouped = next(n for n in config.nodes if n.name == "/grouped")
     assert grouped.remapped == [["chatter", "/chatter", "/from_group"]]

@@ -57,8 +57,9 @@ def perform_node(runner: Runner, action: e.NodeAction, scope: Scope) -> None:
     namespace = naming.clean_namespace(parsed.namespace) if parsed.namespace else \
         naming.node_namespace(scope.namespace, ns_given)
     full = naming.full_name(namespace, name)
-    remaps = [*parsed.remaps, *scope.remaps,
-              *((ev.value(a).text, ev.value(b).text) for a, b in action.remaps)]
+    remaps = [*parsed.remaps, *naming.rules_for([
+        *scope.remaps, *((ev.value(a).text, ev.value(b).text) for a, b in action.remaps)],
+        name)]
     runner.model.nodes.append(node_decl(
         name=full, package=_text(ev, action.package), executable=_text(ev, action.executable),
         namespace=naming.with_slash(namespace),
@@ -84,8 +85,9 @@ def perform_composable(runner: Runner, component: e.ComposableNode, scope: Scope
     ns_given = ev.value(component.namespace).text if component.namespace is not None else None
     namespace = naming.node_namespace(inner.namespace, ns_given)
     full = naming.full_name(namespace, name)
-    remaps = [*inner.remaps,
-              *((ev.value(a).text, ev.value(b).text) for a, b in component.remaps)]
+    remaps = naming.rules_for([
+        *inner.remaps, *((ev.value(a).text, ev.value(b).text) for a, b in component.remaps)],
+        name)
     runner.model.nodes.append(node_decl(
         name=full, package=_text(ev, component.package), executable=_text(ev, component.plugin),
         namespace=naming.with_slash(namespace), remaps=remaps, conditions=inner.conditions,
