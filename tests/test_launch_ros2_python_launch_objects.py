@@ -58,3 +58,18 @@ def test_launch_objects_compare_by_identity_and_are_true(write_tree):
     assert said == [("LAUNCH_PY_ALWAYS_FALSE", "not use_sim"),
                     ("LAUNCH_PY_ALWAYS_FALSE", "use_sim == "),
                     ("LAUNCH_PY_ALWAYS_TRUE", "use_sim != ")]
+
+
+def test_a_helper_comparing_a_launch_object_once_and_a_string_once(write_tree):
+    model, _ = run(write_tree, """
+def pick(value, name):
+    if value == 'true':
+        return [Node(package='p', executable='e', name=name)]
+    return []
+
+def generate_launch_description():
+    return LaunchDescription(pick(LaunchConfiguration('sim'), 'never') + pick('true', 'kept'))
+""")
+    assert [n.name for n in model.nodes] == ["/kept"]
+    said = [d.message for d in model.diagnostics if d.code.startswith("LAUNCH_PY_ALWAYS")]
+    assert len(said) == 1 and "always false" in said[0]

@@ -80,7 +80,7 @@ class Interpreter(Expressions):
         self.depth = 0
         self.running: list[ast.AST] = []  # the functions being run, outermost first
         self.guards: list[str] = []  # texts of unknown Python `if` tests we are under
-        self.decided: set[int] = set()
+        self.decided: dict[int, ast.AST] = {}
         # the enclosing ``try`` statements: the exception classes their handlers name
         # (None: one not known) and how many guards there were when each began
         self.catching: list[tuple[list[tuple[str, ...] | None], int]] = []
@@ -379,6 +379,7 @@ class Interpreter(Expressions):
         return self.unsupported(node, detail)
 
     def if_(self, stmt: ast.If, env: dict[str, Any]) -> None:
+        self.decided.pop(id(stmt.test), None)  # said for this run of it only
         value = self.eval(stmt.test, env)
         test = self.truth(value)
         if launch_object(value) or id(stmt.test) in self.decided:

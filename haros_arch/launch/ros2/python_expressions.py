@@ -58,9 +58,10 @@ class Expressions(Walker):
     methods: dict[str, Any]
     environment: Mapping[str, str]
     guards: list[str]
-    # the expressions (ids of their nodes) whose value Python's handling of a launch
-    # object decided: ``not`` of one, one compared with ``==`` (``compare_values``)
-    decided: set[int]
+    # the expressions whose value Python's handling of a launch object decided: ``not``
+    # of one, one compared with ``==`` (``compare_values``); by id, the node kept alive
+    # so that no later node takes its id
+    decided: dict[int, ast.AST]
 
     def sized(self, value: Any) -> Any:
         raise NotImplementedError
@@ -245,7 +246,7 @@ class Expressions(Walker):
         if isinstance(op, (ast.Eq, ast.NotEq, ast.Is, ast.IsNot)) and (
                 launch_object(left) or launch_object(right)):
             if isinstance(op, (ast.Eq, ast.NotEq)) and _taken_as_value(left, right):
-                self.decided.add(id(node))
+                self.decided[id(node)] = node
             return (left is right) == isinstance(op, (ast.Eq, ast.Is))
         return super().compare_values(op, left, right, node)
 
@@ -255,7 +256,7 @@ class Expressions(Walker):
         is the usual test of a variable that may hold None)."""
         if isinstance(node.op, ast.Not) and launch_object(value):
             if isinstance(value, (e.Subst, e.Cond)):
-                self.decided.add(id(node))
+                self.decided[id(node)] = node
             return False
         return super().unary_value(node, value)
 
