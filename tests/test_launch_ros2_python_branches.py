@@ -120,3 +120,20 @@ def generate_launch_description():
 """)
     loaded = [(n.name, n.executable, bool(n.conditions)) for n in model.nodes if n.composable]
     assert loaded == [("/cam", "zed::Stereo", True), ("/cam", "zed::Mono", True)]
+
+
+def test_dicts_and_lists_set_in_both_branches_keep_what_they_agree_on(write_tree):
+    model, _ = run(write_tree, """
+def generate_launch_description():
+    if os.environ.get('NOT_SET_FOR_THIS_TEST'):
+        params = {'use_sim_time': True, 'rate': 10}
+        args = ['--ros-args', '--log-level', 'debug']
+    else:
+        params = {'use_sim_time': False, 'rate': 10}
+        args = ['--ros-args', '--log-level', 'info']
+    return LaunchDescription([
+        Node(package='p', executable='e', name='n', parameters=[params], arguments=args)])
+""")
+    assert {p.key: p.value for p in model.params} == {"use_sim_time": None, "rate": 10}
+    [node] = model.nodes
+    assert node.args == ""  # all of it --ros-args: none is a plain argument

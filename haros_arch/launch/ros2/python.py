@@ -453,7 +453,8 @@ class Interpreter(Expressions):
         set to one of them (a test not known statically decides): the actions (or
         composable nodes' descriptions) of all when they are such (each made under its
         branch's test), the value when they agree, a value not known when one is not,
-        texts known where they agree (``_common_text``), else an unknown (``what``)."""
+        dicts of the same keys and lists of the same length item by item, texts known
+        where they agree (``_common_text``), else an unknown (``what``)."""
         if all(v is None or isinstance(v, (e.Action, e.ComposableNode, list, tuple,
                                            LaunchDescription))
                for v in values) and any(v is not None for v in values):
@@ -481,6 +482,13 @@ class Interpreter(Expressions):
         unknown = next((v for v in values if isinstance(v, Unknown)), None)
         if unknown is not None:
             return unknown  # not known either way: why one of them is not
+        if all(isinstance(v, dict) and v.keys() == first.keys() for v in values):
+            # the same keys (parameters): each value on its own, the rest stays known
+            return {key: self.either([v[key] for v in values], f"{what}[{key!r}]")
+                    for key in first}
+        if all(isinstance(v, list) and len(v) == len(first) for v in values):
+            return [self.either([v[n] for v in values], f"{what}[{n}]")
+                    for n in range(len(first))]
         reason = f"{what} (a test not known statically)"
         return _common_text(values, reason) or Unknown(reason)
 
