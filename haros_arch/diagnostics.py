@@ -342,7 +342,19 @@ CATALOGUE: dict[str, Entry] = {
         "object as true, whatever the launch arguments: launch evaluates a condition "
         "only when it is an action's condition=. The 'if' branch is the one read, as it "
         "is the one that runs; the file probably meant condition=IfCondition(...) or "
-        "the configuration's value performed in an OpaqueFunction."),
+        "the configuration's value performed in an OpaqueFunction. A launch object "
+        "compared with '!=' or 'is not' is always unequal too (launch's classes define no "
+        "__eq__: Python compares them by identity)."),
+    "LAUNCH_PY_ALWAYS_FALSE": Entry(
+        "info", "the Python test '{test}' is always false: a launch object is not "
+        "evaluated by Python",
+        "A Python 'if' of a launch file compares a launch object itself with a value "
+        "(LaunchConfiguration('sim') == 'true') or tests 'not' of one. Python "
+        "compares such an object by identity and takes it as true, whatever the launch "
+        "arguments, so the test is always false: the 'else' branch is the one read, as "
+        "it is the one that runs. The file probably meant a condition= "
+        "(LaunchConfigurationEquals, IfCondition(PythonExpression(...))) or the "
+        "configuration's value performed in an OpaqueFunction."),
     "LAUNCH_PY_BUDGET": Entry(
         "warning", "interpretation stopped: {detail}",
         "A launch file exceeded a bound of the static interpreter (steps, call depth, "

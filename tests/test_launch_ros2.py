@@ -113,14 +113,16 @@ def test_xml_nodes_scopes_and_global_actions(write_tree):
         </launch>
         """)
     nodes = {n.name: n for n in model.nodes}
-    assert list(nodes) == ["/r1/hw/base", "/outside", "/leaky/after"]
+    # launch_ros writes its own ``-r __node:=after`` after the ros_args, and rcl takes
+    # the first node-name rule: the node is "renamed"
+    assert list(nodes) == ["/r1/hw/base", "/outside", "/leaky/renamed"]
     base = nodes["/r1/hw/base"]
     assert base.remaps == [("cmd_vel", "cmd_vel_safe"), ("odom", "/odom")]
     assert base.args == "--port /dev/x" and base.ros_version == 2
     assert nodes["/outside"].remaps == []
     params = {p.name: p.value for p in model.params}
     assert params == {"/r1/hw/base/use_sim_time": True, "/r1/hw/base/rate": 10,
-                      "/outside/use_sim_time": True, "/leaky/after/use_sim_time": True}
+                      "/outside/use_sim_time": True, "/leaky/renamed/use_sim_time": True}
     assert model.diagnostics == []
 
 

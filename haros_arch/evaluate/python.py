@@ -134,11 +134,7 @@ class Walker:
         left = self.eval(node.left, env)
         for op, comparator in zip(node.ops, node.comparators, strict=True):
             right = self.eval(comparator, env)
-            if self.opaque(left) or self.opaque(right):
-                return self.not_known(node, "comparison", (left, right))
-            self.step(ops.compare_cost(left, right, self.limits))
-            outcome = self.compute(lambda: ops.compare(
-                type(op), left, right), node, "comparison")  # noqa: B023
+            outcome = self.compare_values(op, left, right, node)
             if self.opaque(outcome):
                 return outcome
             if not outcome:
@@ -146,8 +142,19 @@ class Walker:
             left = right
         return True
 
+    def compare_values(self, op: ast.cmpop, left: object, right: object,
+                       node: ast.Compare) -> Any:
+        """One comparison of a chain: its outcome, or a value not known."""
+        if self.opaque(left) or self.opaque(right):
+            return self.not_known(node, "comparison", (left, right))
+        self.step(ops.compare_cost(left, right, self.limits))
+        return self.compute(lambda: ops.compare(type(op), left, right), node, "comparison")
+
     def eval_UnaryOp(self, node: ast.UnaryOp, env: Any = None) -> Any:
-        value = self.eval(node.operand, env)
+        return self.unary_value(node, self.eval(node.operand, env))
+
+    def unary_value(self, node: ast.UnaryOp, value: object) -> Any:
+        """A unary operator applied to the value of its operand."""
         what = "not" if isinstance(node.op, ast.Not) else "unary"
         if self.opaque(value):
             # ``not`` of a value the configuration knows the truth of (a launch object)

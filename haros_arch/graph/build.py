@@ -17,7 +17,7 @@ from ..launch.ros2.naming import pattern_matches
 from ..model.conditions import EACH_STATEMENT, Condition
 from ..model.launch_tree import LaunchItem, PackageUse, installed_check
 from ..model.location import Location
-from ..model.rosname import RosName, namespace_of, remap, resolve, resolve_remaps
+from ..model.rosname import RosName, namespace_of, remap, resolve
 from ..model.runtime import (
     LINK_CLASSES,
     Action,
@@ -216,8 +216,7 @@ def _link_calls(instance: NodeInstance, calls: Sequence[PrimitiveCall], resource
                 config: Configuration, transports: Transports) -> None:
     """Link a node instance's calls: one per element of a list parameter, and for an
     image_transport publisher or subscriber the topics of its transport plugins."""
-    remaps = _Applied(resolve_remaps(instance.remaps, instance.namespace, instance.name),
-                      instance)
+    remaps = _Applied(instance.remap_rules(), instance)
     images: dict[Location, list[PrimitiveCall]] = {}  # image_transport calls by place
     for each in calls:
         if each.transport is not None:

@@ -77,10 +77,20 @@ def remap(full: str, remaps: Mapping[str, str]) -> str:
 
 
 def resolve_remaps(
-    pairs: list[tuple[str, str]], namespace: str, node: str | None = None
+    pairs: list[tuple[str, str]], namespace: str, node: str | None = None,
+    first_wins: bool = False,
 ) -> dict[str, str]:
-    """Resolve remapping rules as the node does: both sides in the node's namespace."""
-    return {resolve(a, namespace, node): resolve(b, namespace, node) for a, b in pairs}
+    """Resolve remapping rules as the node does: both sides in the node's namespace.
+    Where two rules name the same source, ROS 1 (roscpp's and rospy's map of them) keeps
+    the last; rcl (``first_wins``, ROS 2) applies the first rule that matches a name,
+    ``pairs`` being in the order the node is given them."""
+    out: dict[str, str] = {}
+    for a, b in pairs:
+        source = resolve(a, namespace, node)
+        if first_wins and source in out:
+            continue
+        out[source] = resolve(b, namespace, node)
+    return out
 
 
 def pattern_for(full: str) -> str:

@@ -83,11 +83,17 @@ class NodeInstance:
     def rosname(self) -> RosName:
         return RosName(self.name, self.name, namespace_of(self.name))
 
+    def remap_rules(self) -> dict[str, str]:
+        """Its remaps resolved, ``{from: to}`` (full names), one rule per source: the
+        one its ROS version applies (``resolve_remaps``)."""
+        return resolve_remaps(self.remaps, self.namespace, self.name,
+                              first_wins=self.ros_version == 2)
+
     @property
     def remapped(self) -> list[list[str]]:
         """``[name in code, name it resolves to, name a remap made of it]`` for each name
         of this instance's links that one of its remaps changed (once per name)."""
-        rules = resolve_remaps(self.remaps, self.namespace, self.name)
+        rules = self.remap_rules()
         out: dict[tuple[str, str], list[str]] = {}
         for link in self.links:
             given, full = link.rosname.given, link.rosname.full
@@ -586,7 +592,7 @@ def remaps_of(nodes: list[NodeInstance]) -> list[Remap]:
     found: dict[tuple[str, str, str], Remap] = {}
     # the launch's nodes first: the remaps are theirs; the nodes hosts make can only use
     for instance in sorted(nodes, key=lambda n: n.origin != "launch"):
-        rules = resolve_remaps(instance.remaps, instance.namespace, instance.name)
+        rules = instance.remap_rules()
         # the names the instance uses, remapped or not: a remap to one of them makes no
         # connection the instance does not have (turtlebot's ``camera/image`` beside
         # ``image``, a workaround for a nodelet bug)

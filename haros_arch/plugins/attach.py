@@ -866,10 +866,12 @@ def _plugin_instance(host: NodeInstance, choice: Choice, node: Node | None,
     remaps of the host's process (launch_ros gives a node's remappings as ``-r from:=to``,
     which rcl applies to every node of the process: open_manipulator remaps the arm
     controller's ``/arm_controller/joint_trajectory`` on ros2_control_node), its own
-    (``--controller-ros-args``) over them."""
+    (``--controller-ros-args``) over them: they are the controller node's local rules,
+    which rcl tries before the process's (remap.c), and it applies the first that
+    matches."""
     namespace = host.namespace if host.namespace.endswith("/") else host.namespace + "/"
     name = namespace + choice.name
-    remaps = [*host.remaps, *choice.remaps]
+    remaps = [*choice.remaps, *host.remaps]
     instance = NodeInstance(name, node, namespace=namespace, remaps=remaps,
                             conditions=(*host.conditions, *choice.conditions),
                             location=choice.location, origin="plugin",

@@ -655,12 +655,9 @@ def _ros2_instance(element: etree._Element, name: str, spawn: Spawn, host: NodeI
             source, sep, target = text.partition("=")
         if sep and source and target:
             remaps.append((source.strip(), target.strip()))
-    # rcl takes the first rule that matches a name: the arguments come first (a later
-    # rule for the same name is left out, since remaps are read as a mapping)
-    first: dict[str, str] = {}
-    for source, target in said.remaps_for(name) + remaps:
-        first.setdefault(source, target)
-    remaps = list(first.items())
+    # rcl takes the first rule that matches a name (a ROS 2 instance's remap_rules): the
+    # arguments come first
+    remaps = said.remaps_for(name) + remaps
     if said.namespace is not None:
         namespace = as_namespace(said.namespace)
     full = clean(namespace + (said.name or name or UNKNOWN_MARK))

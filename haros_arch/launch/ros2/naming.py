@@ -87,6 +87,21 @@ def split_rule(rule: str) -> tuple[str | None, str, str] | None:
     return node, left, right
 
 
+def rules_for(pairs: list[tuple[str, str]], node_name: str | None) -> list[tuple[str, str]]:
+    """A node's remapping rules (``remappings``, ``SetRemap``: launch_ros passes each as
+    ``-r from:=to``) as rcl takes them for the node called ``node_name``: a rule with a
+    node prefix (``docking_server:cmd_vel``) applies to that node alone, without its
+    prefix, and to no other; kept as written when the node's name is not known."""
+    out: list[tuple[str, str]] = []
+    for source, target in pairs:
+        node, sep, rest = source.partition(":")
+        if not sep or node_name is None or UNKNOWN_MARK in node_name:
+            out.append((source, target))
+        elif node == node_name:
+            out.append((rest, target))
+    return out
+
+
 def parse_ros_args(tokens: list[str], node_name: str | None) -> RosArgs:
     """Read ``tokens`` (after ``--ros-args``) for the node called ``node_name``."""
     out = RosArgs()
@@ -103,10 +118,11 @@ def parse_ros_args(tokens: list[str], node_name: str | None) -> RosArgs:
             target, src, dst = rule
             if target is not None and node_name is not None and target != node_name:
                 continue
+            # rcl applies the first rule that matches: a later one renames nothing
             if src == "__ns":
-                out.namespace = dst
+                out.namespace = out.namespace if out.namespace is not None else dst
             elif src in ("__node", "__name"):
-                out.node_name = dst
+                out.node_name = out.node_name if out.node_name is not None else dst
             else:
                 out.remaps.append((src, dst))
             continue

@@ -46,14 +46,20 @@ def perform_node(runner: Runner, action: e.NodeAction, scope: Scope) -> None:
         arguments = [w for a in arguments for w in a.split()]
         ros_given = [w for a in ros_given for w in a.split()]
     plain, ros_in_args = naming.split_arguments(arguments)
-    ros = ros_given + ros_in_args
+    # launch_ros's command line: ``arguments``, ``--ros-args`` + ``ros_arguments``, then
+    # its own ``-r __node:=`` / ``__ns:=``, parameters, the scope's SetRemap rules and the
+    # node's ``remappings``; rcl takes the first rule that matches (remap.c), so a rule
+    # of the arguments comes before all the others, the node's name and namespace too
+    ros = ros_in_args + ros_given
     parsed = naming.parse_ros_args(ros, given.literal if given is not None else None)
-    name = given.text if given is not None else (parsed.node_name or "?")
+    name = parsed.node_name or (given.text if given is not None else "?")
     ns_given = ev.value(action.namespace).text if action.namespace is not None else None
-    namespace = naming.node_namespace(scope.namespace, ns_given or parsed.namespace)
+    namespace = naming.clean_namespace(parsed.namespace) if parsed.namespace else \
+        naming.node_namespace(scope.namespace, ns_given)
     full = naming.full_name(namespace, name)
-    remaps = [*scope.remaps, *((ev.value(a).text, ev.value(b).text) for a, b in action.remaps),
-              *parsed.remaps]
+    remaps = [*parsed.remaps, *naming.rules_for([
+        *scope.remaps, *((ev.value(a).text, ev.value(b).text) for a, b in action.remaps)],
+        name)]
     runner.model.nodes.append(node_decl(
         name=full, package=_text(ev, action.package), executable=_text(ev, action.executable),
         namespace=naming.with_slash(namespace),
@@ -79,8 +85,9 @@ def perform_composable(runner: Runner, component: e.ComposableNode, scope: Scope
     ns_given = ev.value(component.namespace).text if component.namespace is not None else None
     namespace = naming.node_namespace(inner.namespace, ns_given)
     full = naming.full_name(namespace, name)
-    remaps = [*inner.remaps,
-              *((ev.value(a).text, ev.value(b).text) for a, b in component.remaps)]
+    remaps = naming.rules_for([
+        *inner.remaps, *((ev.value(a).text, ev.value(b).text) for a, b in component.remaps)],
+        name)
     runner.model.nodes.append(node_decl(
         name=full, package=_text(ev, component.package), executable=_text(ev, component.plugin),
         namespace=naming.with_slash(namespace), remaps=remaps, conditions=inner.conditions,

@@ -47,6 +47,7 @@ from .python_values import (
     Budget,
     Func,
     LaunchDescription,
+    Lazy,
     Module,
     Raised,
     ReadOnlyFile,
@@ -79,6 +80,7 @@ class Interpreter(Expressions):
         self.depth = 0
         self.running: list[ast.AST] = []  # the functions being run, outermost first
         self.guards: list[str] = []  # texts of unknown Python `if` tests we are under
+        self.decided: dict[int, ast.AST] = {}
         # the enclosing ``try`` statements: the exception classes their handlers name
         # (None: one not known) and how many guards there were when each began
         self.catching: list[tuple[list[tuple[str, ...] | None], int]] = []
@@ -377,10 +379,14 @@ class Interpreter(Expressions):
         return self.unsupported(node, detail)
 
     def if_(self, stmt: ast.If, env: dict[str, Any]) -> None:
+        self.decided.pop(id(stmt.test), None)  # said for this run of it only
         value = self.eval(stmt.test, env)
         test = self.truth(value)
-        if launch_object(value):  # ``if LaunchConfigurationEquals(...):`` never tests it
-            self.diagnostics.append(diag.make("LAUNCH_PY_ALWAYS_TRUE", self.where(stmt.test),
+        if launch_object(value) or id(stmt.test) in self.decided:
+            # ``if LaunchConfigurationEquals(...):`` never tests it, nor does
+            # ``if LaunchConfiguration('sim') == 'true':`` (always false) or ``not`` of one
+            code = "LAUNCH_PY_ALWAYS_TRUE" if test else "LAUNCH_PY_ALWAYS_FALSE"
+            self.diagnostics.append(diag.make(code, self.where(stmt.test),
                                               test=_source(stmt.test)))
         if test is True:
             self.block(stmt.body, env)
@@ -388,10 +394,21 @@ class Interpreter(Expressions):
             self.block(stmt.orelse, env)
         else:
             text = _source(stmt.test)
+            # each branch from the names as they are before the ``if``; after it, a name
+            # is what the branch that goes on set (the other returns), else either's
+            before = dict(env)
             taken = self.branch(stmt.body, env, text)
+            after_body = dict(env)
+            env.clear()
+            env.update(before)
             left = self.branch(stmt.orelse, env, f"not ({text})")
             if taken is not None and left is not None:  # both return: so does the if
                 raise _Return(self.either([taken.value, left.value]))
+            if left is not None:
+                env.clear()
+                env.update(after_body)
+            elif taken is None:
+                self.join(env, after_body)
             returned = taken or left
             if returned is not None:
                 # one branch returns: that value is one the function may give, and
@@ -400,6 +417,23 @@ class Interpreter(Expressions):
                     raise returned
                 self.returns[-1].append(returned.value)
                 self.guards.append(text if taken is None else f"not ({text})")
+
+    def join(self, env: dict[str, Any], other: dict[str, Any]) -> None:
+        """The names after an ``if`` whose test is not known, both branches having run
+        on: ``env`` as the else branch left it, ``other`` as the body left it. A name one
+        branch alone binds is that branch's (the other would fail on it); one both bind
+        is ``either`` of the two values: the same value, the actions of both (each made
+        under its branch's test), else a value not known."""
+        for name, value in other.items():
+            if name not in env:
+                env[name] = value
+            elif env[name] is value:
+                continue
+            elif isinstance(value, (Func, Module)) or isinstance(env[name], (Func, Module)):
+                env[name] = Unknown(f"{name}, defined in both branches of a test not known "
+                                    "statically")
+            else:
+                env[name] = self.either([value, env[name]], f"{name}, set in both branches")
 
     def branch(self, body: list[ast.stmt], env: dict[str, Any], guard: str
                ) -> _Return | None:
@@ -414,11 +448,15 @@ class Interpreter(Expressions):
             self.guards.pop()
         return None
 
-    def either(self, values: list[Any]) -> Any:
-        """What a function gives that returns one of ``values`` (a test not known
-        statically decides): the actions of all when they are actions (each made under
-        its branch's test), the value when they agree, else an unknown."""
-        if all(v is None or isinstance(v, (e.Action, list, tuple, LaunchDescription))
+    def either(self, values: list[Any], what: str = "one of several return values") -> Any:
+        """What a function gives that returns one of ``values``, or a name an ``if``
+        set to one of them (a test not known statically decides): the actions (or
+        composable nodes' descriptions) of all when they are such (each made under its
+        branch's test), the value when they agree, a value not known when one is not,
+        dicts of the same keys and lists of the same length item by item, texts known
+        where they agree (``_common_text``), else an unknown (``what``)."""
+        if all(v is None or isinstance(v, (e.Action, e.ComposableNode, list, tuple,
+                                           LaunchDescription))
                for v in values) and any(v is not None for v in values):
             actions: list[Any] = []
             seen: set[int] = set()  # an action in several outcomes (one ld returned
@@ -435,11 +473,24 @@ class Interpreter(Expressions):
                 if all(v is None or isinstance(v, (list, tuple)) for v in values):
                     return actions  # lists of actions stay a list (``helper() + [...]``)
                 return LaunchDescription(actions)
+            if actions and all(isinstance(a, e.ComposableNode) for a in actions):
+                return actions  # descriptions, each under its test: a list of them
             # lists of plain values (names, arguments): one of them, not all at once
         first = values[0]
         if all(type(v) is type(first) and v == first for v in values):
             return first
-        return Unknown("one of several return values (a test not known statically)")
+        unknown = next((v for v in values if isinstance(v, Unknown)), None)
+        if unknown is not None:
+            return unknown  # not known either way: why one of them is not
+        if all(isinstance(v, dict) and v.keys() == first.keys() for v in values):
+            # the same keys (parameters): each value on its own, the rest stays known
+            return {key: self.either([v[key] for v in values], f"{what}[{key!r}]")
+                    for key in first}
+        if all(isinstance(v, list) and len(v) == len(first) for v in values):
+            return [self.either([v[n] for v in values], f"{what}[{n}]")
+                    for n in range(len(first))]
+        reason = f"{what} (a test not known statically)"
+        return _common_text(values, reason) or Unknown(reason)
 
     def with_(self, stmt: ast.With, env: dict[str, Any]) -> None:
         """``with open(path) as f:``: a read-only handle on a file we may read."""
@@ -722,4 +773,37 @@ def _catches(classes: tuple[str, ...] | None, name: str) -> bool:
         return True
     raised = _EXCEPTIONS[name]
     return any(issubclass(raised, _EXCEPTIONS[c]) for c in classes)
+
+
+def _common_text(values: list[Any], reason: str) -> Lazy | None:
+    """Texts (strings, or strings with substitutions) that differ: the start and the
+    end all of them share, known, and an unknown part (``reason``) between
+    (``'real_driver'`` or ``'sim_driver'``: ``?_driver``); None when a value is no text
+    or they share nothing."""
+    tokens: list[list[str | e.Subst]] = []
+    for value in values:
+        if isinstance(value, str):
+            tokens.append(list(value))
+        elif isinstance(value, Lazy):
+            tokens.append([c for part in value.text
+                           for c in (part if isinstance(part, str) else (part,))])
+        else:
+            return None
+    shortest = min(len(t) for t in tokens)
+    head = 0
+    while head < shortest and all(t[head] == tokens[0][head] for t in tokens):
+        head += 1
+    tail = 0
+    while tail < shortest - head and all(t[-1 - tail] == tokens[0][-1 - tail] for t in tokens):
+        tail += 1
+    if not head and not tail:
+        return None
+    first = tokens[0]
+    parts: list[str | e.Subst] = []
+    for token in [*first[:head], e.Opaque(reason), *first[len(first) - tail:]]:
+        if isinstance(token, str) and parts and isinstance(parts[-1], str):
+            parts[-1] += token
+        else:
+            parts.append(token)
+    return Lazy(tuple(parts))
 

@@ -408,7 +408,10 @@ def composables(i: Interpreter, value: Any, n: ast.AST) -> list[e.ComposableNode
     if not isinstance(value, (list, tuple)):
         i.unsupported(n, "composable node list not known statically")
         return []
-    return [c for c in value if isinstance(c, e.ComposableNode)]
+    # an item may be a list of descriptions: a name an ``if`` not known set to one of
+    # two (``Interpreter.either``), each under its branch's test
+    return [c for item in value for c in (item if isinstance(item, (list, tuple)) else (item,))
+            if isinstance(c, e.ComposableNode)]
 
 
 def load_composable(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:

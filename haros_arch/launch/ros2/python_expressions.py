@@ -58,6 +58,10 @@ class Expressions(Walker):
     methods: dict[str, Any]
     environment: Mapping[str, str]
     guards: list[str]
+    # the expressions whose value Python's handling of a launch object decided: ``not``
+    # of one, one compared with ``==`` (``compare_values``); by id, the node kept alive
+    # so that no later node takes its id
+    decided: dict[int, ast.AST]
 
     def sized(self, value: Any) -> Any:
         raise NotImplementedError
@@ -227,6 +231,35 @@ class Expressions(Walker):
             return self.unsupported(node, "operation on values not known statically")
         return self.operation(lambda: ops.binary(type(op), left, right, LIMITS), node)
 
+    def compare_values(self, op: ast.cmpop, left: object, right: object,
+                       node: ast.Compare) -> Any:
+        """Python's comparison. ``name in os.environ`` reads the configuration's
+        environment. A launch object (a substitution, a condition, an action) compared
+        with ``==`` / ``!=`` / ``is`` is compared as Python compares it, by identity
+        (launch's classes define no ``__eq__``): ``LaunchConfiguration('sim') == 'true'``
+        is always false, whatever the argument (``decided`` notes it)."""
+        if isinstance(right, _Environ) and isinstance(op, (ast.In, ast.NotIn)):
+            found = right.has(self, left, node)
+            if found is None:
+                return Unknown(f"comparison {_source(node)}")
+            return found == isinstance(op, ast.In)
+        if isinstance(op, (ast.Eq, ast.NotEq, ast.Is, ast.IsNot)) and (
+                launch_object(left) or launch_object(right)):
+            if isinstance(op, (ast.Eq, ast.NotEq)) and _taken_as_value(left, right):
+                self.decided[id(node)] = node
+            return (left is right) == isinstance(op, (ast.Eq, ast.Is))
+        return super().compare_values(op, left, right, node)
+
+    def unary_value(self, node: ast.UnaryOp, value: object) -> Any:
+        """``not`` of a launch object is False, as Python takes the object as true
+        (``decided`` notes it for a substitution or a condition: ``not`` of an action
+        is the usual test of a variable that may hold None)."""
+        if isinstance(node.op, ast.Not) and launch_object(value):
+            if isinstance(value, (e.Subst, e.Cond)):
+                self.decided[id(node)] = node
+            return False
+        return super().unary_value(node, value)
+
     def eval_Subscript(self, node: ast.Subscript, env: dict[str, Any]) -> Any:
         value = self.eval(node.value, env)
         key = self.eval(node.slice, env)
@@ -299,16 +332,22 @@ class Expressions(Walker):
             else:
                 kwargs[keyword.arg] = value
         result = self.call(func, args, kwargs, node)
-        if self.guards and isinstance(result, e.Action):
+        if self.guards and isinstance(result, (e.Action, e.ComposableNode)):
             result = self.guarded(result, node)
         return result
 
-    def guarded(self, action: e.Action, node: ast.AST) -> e.Action:
-        """An action made under a Python ``if`` whose test is unknown: conditional."""
+    def guarded(self, action: e.Action | e.ComposableNode, node: ast.AST
+                ) -> e.Action | e.ComposableNode:
+        """An action (or a composable node's description) made under a Python ``if``
+        whose test is unknown: conditional. A description that has a condition of its
+        own keeps it alone (no group to put it in: it may then be taken when the test
+        would not hold, never left out)."""
         text = " and ".join(self.guards)
         cond = e.Cond((e.Opaque(f"Python test {text}"),), source=text)
         if action.condition is None:
             action.condition = cond
+            return action
+        if isinstance(action, e.ComposableNode):
             return action
         return e.Group([action], scoped=False, condition=cond, location=action.location)
 
@@ -437,8 +476,26 @@ class _Bound:
         return handler(interp, self.owner, args, kwargs, node)
 
 
+def _taken_as_value(left: object, right: object) -> bool:
+    """Whether a comparison holds a substitution or condition on one side and a plain
+    value on the other: the file took the launch object for its value."""
+    plain = (str, int, float, bool)
+    return (isinstance(left, (e.Subst, e.Cond)) and isinstance(right, plain)) or (
+        isinstance(right, (e.Subst, e.Cond)) and isinstance(left, plain))
+
+
 class _Environ:
     """``os.environ``: reads the configuration's environment."""
+
+    def has(self, interp: Expressions, name: Any, node: ast.AST) -> bool | None:
+        """``name in os.environ``: True when the configuration sets it, else not known
+        (as a ``get`` without a default), and said."""
+        if isinstance(name, str) and name in interp.environment:
+            return True
+        if isinstance(name, str):
+            interp.unknown_value(node, f"environment variable {name} is not set in the "
+                                       "configuration")
+        return None
 
     def get(self, interp: Expressions, args: list[Any], node: ast.AST) -> Any:
         name = args[0] if args else None
