@@ -100,3 +100,54 @@ def test_a_header_template_no_file_calls_makes_no_call(write_tree) -> None:
                          cache_dir=None)
     assert [(c.kind, c.name, c.location.line) for c in result.calls] == [
         ("read", "~limit", 9)]
+
+
+def test_a_header_template_called_through_another_template_keeps_its_calls(
+        write_tree) -> None:
+    """navigation2's ``declare_or_get_parameter<ParamType, NodeT>(node, name, value)``
+    reads ``warn_on_missing_params`` on ``node``; its LifecycleNode calls it from a
+    member template, a call the parse cannot resolve either, so no fact says the
+    template is called. A template the unit names elsewhere keeps its calls (they were
+    lost from every navigation2 node); one named nowhere else makes none (above)."""
+    root = write_tree({
+        "pkg/package.xml": package_xml("pkg", "ament_cmake").replace(
+            "</package>", "<depend>rclcpp</depend></package>"),
+        "pkg/include/pkg/base.hpp": """\
+            #pragma once
+            #include <string>
+            #include <rclcpp/rclcpp.hpp>
+            namespace nav {
+            template<typename ParamType, typename NodeT>
+            ParamType declare_or_get(NodeT node, const std::string & name,
+                                     const ParamType & value)
+            {
+              bool strict{false};
+              node->get_parameter("strict_loading", strict);
+              return value;
+            }
+            class Base : public rclcpp::Node {
+             public:
+              explicit Base(const std::string & n) : rclcpp::Node(n) {}
+              template<typename ParamType>
+              ParamType declare_or_get(const std::string & name, const ParamType & value)
+              {
+                return nav::declare_or_get(this, name, value);
+              }
+            };
+            }  // namespace nav
+            """,
+        "pkg/src/node.cpp": """\
+            #include <pkg/base.hpp>
+            class Planner : public nav::Base {
+             public:
+              Planner() : nav::Base("planner") { rate_ = declare_or_get("rate", 2.0); }
+              double rate_;
+            };
+            int main(int argc, char ** argv) {
+              rclcpp::init(argc, argv);
+              rclcpp::spin(std::make_shared<Planner>());
+            }
+            """})
+    result = extract_cpp([str(root / "pkg" / "src" / "node.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    assert ("read", "strict_loading") in [(c.kind, c.name) for c in result.calls]

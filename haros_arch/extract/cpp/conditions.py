@@ -175,6 +175,11 @@ class ConditionReader:
         return Condition(text, "source", statement, self.where(node), self.in_main,
                          self.args_left if self.in_main else None, held or None)
 
+    def choice(self, node: Cursor, statement: str, test: Cursor) -> Condition:
+        """The condition of a side of the ``?:`` ``node`` whose test is ``test``: ``if``
+        its text for the first, ``else`` for the second, as ``branches`` gives them."""
+        return self._condition(node, statement, self._text(test), test)
+
     def enter(self, function: Cursor, arguments_left: frozenset[str],
               held: Callable[[Cursor], tuple[tuple[str, str], ...]] | None = None) -> None:
         """Read the conditions of ``function`` next: whether it is ``main(argc, argv)``,

@@ -199,6 +199,7 @@ class CallFinder:
         # being emitted (``_made_in``)
         self._made_by: str | None = None
         self._template: str | None = None  # of the function being walked (``_function``)
+        self._template_name = ""  # that function's name
         # reads that return whether the parameter is there, where they are
         self._status_reads: list[tuple[Key, PrimitiveCall]] = []
         # (owner, class of the workspace it constructs): the class's calls are made on
@@ -445,6 +446,7 @@ class CallFinder:
         self._template = function.canonical.get_usr() if (
             function.kind == CursorKind.FUNCTION_TEMPLATE and function.location.file
             is not None and function.location.file.name != self.tu.spelling) else None
+        self._template_name = function.spelling.split("<")[0]
         tested, self._status_reads = TestedCalls(self.reader), []
         first = len(self.calls)
         # a constructor's calls exist where the class is constructed: under the
@@ -667,6 +669,23 @@ class CallFinder:
         if spec is not None:
             self._emit(spec, call, args, cls, conditions, scope)
 
+    @functools.cached_property
+    def _unresolved_names(self) -> set[str]:
+        """The names of the functions the unit calls where the parse could not resolve
+        the call (``nav::declare_or_get_parameter(this, name, value)`` in a member
+        template: no declaration is known, only the name written)."""
+        found: set[str] = set()
+        for calls in self.wrappers.preorder.values():
+            for call in calls:
+                if call.kind != CursorKind.CALL_EXPR or call.referenced is not None:
+                    continue
+                head = next(iter(call.get_children()), None)
+                text = self.reader.text(head) if head is not None else ""
+                name = _LAST_NAME.search(text)
+                if name is not None:
+                    found.add(name.group(1))
+        return found
+
     def _dependent(self, call: Cursor, conditions: tuple[Condition, ...],
                    scope: Scope) -> bool:
         """Emit a dependent ``make_shared`` of an API class (``_dependent_made``); made,
@@ -713,9 +732,15 @@ class CallFinder:
         # in a function template of a header (a call on an object of a template
         # parameter's type, ``params.template param<bool>("use_const_inf_matrix", false)``
         # of hdl_graph_slam's InformationMatrixCalculator::load<ParamServer>): made only
-        # where a file of the node calls the template, as ``_dependent`` makes its class
+        # where a file of the node calls the template, as ``_dependent`` makes its class,
+        # unless a call of the unit the parse could not resolve either may call it (nav2's
+        # declare_or_get_parameter<ParamType, NodeT>, called from its LifecycleNode's
+        # member template, names no function a fact can say is called: its reads of
+        # warn_on_missing_params stay the node's)
         made_by = self._made_by
-        if made_by is None:
+        if made_by is None and self._template is not None and (
+            self._template_name not in self._unresolved_names
+        ):
             self._made_by = self._template
         try:
             self._emit(spec, call, args, None, conditions, scope)
@@ -1157,6 +1182,36 @@ class CallFinder:
             finally:
                 sites.choice = self._made_by = None
 
+    def _name_choice(self, expr: Cursor | None, scope: Scope
+                     ) -> list[tuple[Cursor, Condition]] | None:
+        """The two sides of a name chosen by a test this scope does not decide, ``test ?
+        "a" : "b"`` (as written, or the value of a local written once), each with its
+        condition (``if`` / ``else`` the test, as a statement's), when both are names
+        known in full; else None. depthai's ``rectify ? "right/image_rect" :
+        "right/image_raw"`` over a local holding a parameter: two publishers the graph
+        decides from the parameter, where the name was ``?``."""
+        node = _constructed_from(expr) if expr is not None else None
+        for _depth in range(MAX_CHOICE_DEPTH):
+            if node is None or node.kind == CursorKind.CONDITIONAL_OPERATOR:
+                break
+            decl = node.referenced if node.kind == CursorKind.DECL_REF_EXPR else None
+            if decl is None or decl.kind != CursorKind.VAR_DECL:
+                return None
+            value = scope.variable(decl)
+            node = _constructed_from(value) if value is not None else None
+        if node is None or node.kind != CursorKind.CONDITIONAL_OPERATOR or (
+            expr is None or _known(scope.string(expr))
+        ):
+            return None
+        children = [c for c in node.get_children() if c.kind.is_expression()]
+        if len(children) != 3:
+            return None
+        test, yes, no = children
+        if not (_known(scope.string(yes)) and _known(scope.string(no))):
+            return None
+        return [(yes, self.reader.choice(node, "if", test)),
+                (no, self.reader.choice(node, "else", test))]
+
     def _emit_one(self, spec: api.RosFunction, call: Cursor, args: list[Cursor],
                   cls: Cursor | None, conditions: tuple[Condition, ...], scope: Scope,
                   at: Cursor | None = None, at_scope: Scope | None = None) -> None:
@@ -1166,6 +1221,7 @@ class CallFinder:
                 cls if cls is not None and cls.kind != CursorKind.NO_DECL_FOUND
                 else (at or call).referenced):
             return  # the class of that name is not our stand-in's: its code is read
+        given = spec
         if self.ros2 and spec.ros2 is not None:
             spec = spec.ros2  # the call as ROS 2's library makes it
         if spec.not_looked_up and self._looked_up(at or call):
@@ -1178,6 +1234,15 @@ class CallFinder:
             if index is None or index + shift >= len(args):
                 return None
             return args[index + shift]
+
+        choice = self._name_choice(arg(spec.name_arg), scope) if (
+            spec.fixed_name is None) else None
+        if choice is not None:  # one call per side, each under its side of the test
+            index = spec.name_arg + shift
+            for side, condition in choice:
+                self._emit_one(given, call, [*args[:index], side, *args[index + 1:]], cls,
+                               (*conditions, condition), scope, at, at_scope)
+            return
 
         site = at or call
         callee = callee_of_call(site)
@@ -2061,6 +2126,8 @@ def _literal(expr: Cursor, scope: Scope) -> object:
 
 
 MAX_LIST_DEPTH = 12  # the wrappers between an argument and its braced list
+MAX_CHOICE_DEPTH = 4  # the locals between a name argument and its ``?:``
+_LAST_NAME = re.compile(r"(\w+)\s*(?:<[^<>]*>)?\s*$")  # the name a callee's text ends with
 
 
 def _scalar(ctype: Type) -> bool:
@@ -2244,6 +2311,22 @@ def _creator(expr: Cursor, depth: int = 0) -> tuple[api.RosFunction, Cursor] | N
         return (row, expr) if row is not None else None
     inner = [c for c in expr.get_children() if c.kind.is_expression()]
     return _creator(inner[-1], depth + 1) if len(inner) == 1 else None
+
+
+def _constructed_from(expr: Cursor) -> Cursor:
+    """``expr`` through the conversions and one-argument constructions clang wraps a
+    value in (``std::string`` from ``const char *``)."""
+    node = strip(expr)
+    for _depth in range(MAX_CHOICE_DEPTH):
+        if node.kind != CursorKind.CALL_EXPR or (
+            node.referenced is not None and node.referenced.kind != CursorKind.CONSTRUCTOR
+        ):
+            break
+        inner = [c for c in node.get_children() if c.kind.is_expression()]
+        if len(inner) != 1:
+            break
+        node = strip(inner[0])
+    return node
 
 
 def _known(parts: tuple[str | None, ...]) -> bool:
