@@ -102,10 +102,14 @@ class Interpreter(Expressions):
         return self.workspace.location(self.path, line, col)
 
     def unsupported(self, node: ast.AST | None, detail: str) -> Unknown:
-        found = diag.make("LAUNCH_PY_UNSUPPORTED", self.where(node), detail=detail)
+        """Said here, once: the value is unknown, of kind ``unsupported`` and made at
+        this place, so that what uses it later says no more (``python_values.to_text``)
+        and an action list it lands in names the place (``actions_of``)."""
+        where = self.where(node)
+        found = diag.make("LAUNCH_PY_UNSUPPORTED", where, detail=detail)
         if found not in self.diagnostics:
             self.diagnostics.append(found)
-        return Unknown(detail, "unsupported")
+        return Unknown(detail, "unsupported", where=where)
 
     def unknown_value(self, node: ast.AST, detail: str) -> None:
         self.diagnostics.append(diag.make("LAUNCH_UNKNOWN_VALUE", self.where(node),
@@ -169,8 +173,10 @@ class Interpreter(Expressions):
                 out.append(item)
             elif isinstance(item, Unknown):
                 # the interpreter said why it is not known where it was made; as an
-                # action it may start or set anything (query.absence)
-                out.append(e.UnknownAction(item.origin or "?", location=self.where(node)))
+                # action it may start, set or declare anything (query.absence,
+                # runner.Scope.unseen), said at that place when it is known
+                out.append(e.UnknownAction(item.origin or "?",
+                                           location=item.where or self.where(node)))
             elif item is not None:
                 self.unsupported(node, f"{type(item).__name__} is not a launch action")
         return out

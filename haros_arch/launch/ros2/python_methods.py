@@ -184,6 +184,11 @@ def m_list(name: str) -> Method:
                 owner.append(a[0])
             elif name == "extend" and len(a) == 1 and isinstance(a[0], (list, tuple)):
                 owner.extend(a[0])
+            elif name == "extend" and len(a) == 1 and isinstance(a[0], Unknown):
+                # the items of a value not known statically (a helper not read that
+                # returns DeclareLaunchArguments, Interbotix's): one unknown item, said
+                # where it was made, never none
+                owner.append(i.placed(a[0], n))
             elif name == "insert" and len(a) == 2 and isinstance(a[0], int):
                 owner.insert(a[0], a[1])
             elif name == "remove" and len(a) == 1 and isinstance(a[0], _PLAIN):
