@@ -141,3 +141,54 @@ def generate_launch_description():
                                                    "LAUNCH_ARG_UNSET"}
     params = {p.name: p.value for p in model.params}
     assert params == {"/a/use_sim_time": None, "/b/use_sim_time": None}
+
+
+def test_constructs_not_interpreted_are_named_and_said_once(write_tree):
+    """nav2's tb3_simulation_launch.py reads its URDF in ``with open(urdf) as f`` from a
+    package not here: one diagnostic at the read(), none again where robot_description
+    is used; ``eval(...)(...)`` is said once, where ``eval`` is; perform() on no
+    launch context names the expression; a Command says which command it does not run."""
+    body = """
+import os
+from ament_index_python.packages import get_package_share_directory
+from launch import LaunchDescription
+from launch.substitutions import Command, LaunchConfiguration
+from launch_ros.actions import Node
+
+def named(context):
+    return LaunchConfiguration('name').perform(context)
+
+def generate_launch_description():
+    with open('/nowhere/robot.urdf', 'r') as infp:
+        robot_description = infp.read()
+    urdf = os.path.join(get_package_share_directory('absent'), 'robot.urdf')
+    with open(urdf) as other:
+        described = other.read()
+    with open(where_is_it(), 'r') as unseen:
+        described = unseen.read()
+    factory = eval('make_' + 'node')
+    made = factory('x')
+    name = named('no context')
+    return LaunchDescription([
+        Node(package='p', executable='e', name='a',
+             parameters=[{'robot_description': robot_description, 'made': made,
+                          'name': name, 'described': described}]),
+        Node(package='p', executable='e', name='b',
+             parameters=[{'robot_description': robot_description, 'made': made,
+                          'xacro': Command(['xacro ', '/nowhere/r.xacro'])}]),
+    ])
+"""
+    model = run(write_tree, "main.launch.py", body)
+    said = found(model, "LAUNCH_PY_UNSUPPORTED")
+    assert said == [
+        (line_of(body, ".perform("), "LaunchConfiguration('name').perform(context): "
+                                     "perform() outside an OpaqueFunction is not interpreted"),
+        (line_of(body, "infp.read()"), "/nowhere/robot.urdf is outside the workspace; "
+                                       "not read"),
+        (line_of(body, "with open(urdf)"), "open(urdf): open() other than for reading a "
+                                           "known path is not run"),
+        (line_of(body, "where_is_it"), "name where_is_it is not defined here"),
+        (line_of(body, "eval("), "name eval is not defined here")]
+    assert found(model, "LAUNCH_UNSUPPORTED") == [
+        (line_of(body, "name='b'"), "Command is never run; its output is unknown: "
+                                    "xacro /nowhere/r.xacro")]

@@ -452,10 +452,15 @@ class Interpreter(Expressions):
         for item in stmt.items:
             value = self.eval(item.context_expr, env)
             if not isinstance(value, ReadOnlyFile):
-                self.unsupported(stmt, "with statements other than open() are not "
-                                       "interpreted")
-                for name in _assigned(stmt.body):  # what the body sets is unknown
-                    env[name] = Unknown(f"{name} set in a with statement not interpreted")
+                # said once: the call that made the value (an open() of a file not
+                # read: nav2's tb3_simulation_launch.py) or else the statement; what the
+                # body sets is unknown, made here, and said no more where it is used
+                made = value if isinstance(value, Unknown) and value.kind == "unsupported" \
+                    else self.unsupported(stmt, "with statements other than open() are "
+                                                "not interpreted")
+                for name in _assigned(stmt.body):
+                    env[name] = Unknown(f"{name} set in a with statement not interpreted",
+                                        "unsupported", where=made.where)
                 return
             if item.optional_vars is not None:
                 self.assign(item.optional_vars, value, env)
@@ -537,7 +542,13 @@ class Interpreter(Expressions):
             return func.call(self, args, kwargs, node)
         if isinstance(func, Unknown) and func.origin.startswith("class "):
             return self.unsupported(node, f"call to {func.origin}")
-        return self.unsupported(node, "call to a value that is not known statically")
+        callee = _source(node.func) if isinstance(node, ast.Call) else "?"
+        if isinstance(func, Unknown) and func.kind == "unsupported":
+            # what it calls was said where it was made (``eval`` not defined, a call
+            # not interpreted); its result is as unknown, and said no more
+            return Unknown(f"call to {callee}", "unsupported", where=func.where)
+        return self.unsupported(node, f"call to {callee}, a value not known statically, "
+                                      "is not interpreted")
 
     def charge_arguments(self, values: list[Any]) -> None:
         """What a builder, builtin or method will walk: containers by their nested size,

@@ -466,8 +466,15 @@ class Evaluator:
         return Value(self.value(s.file.path).parts, file=s.file)
 
     def s_Command(self, s: e.Command) -> Value:
-        output = self.s_Opaque(e.Opaque(s.origin))
         line = self.value(s.command).text
+        origin = s.origin
+        if origin == e.COMMAND_NOT_RUN:  # launch's Command: say which command
+            # its words as paths relative to the workspace, as every message says them
+            shown = " ".join(self.runner.workspace.relpath(w) if os.path.isabs(w) else w
+                             for w in line.split(" "))
+            shown = shown if len(shown) <= 160 else shown[:157] + "..."
+            origin = f"Command is never run; its output is unknown: {shown}"
+        output = self.s_Opaque(e.Opaque(origin))
         self.runner.command_outputs.append((output.parts[0], line))  # type: ignore[arg-type]
         return output
 
