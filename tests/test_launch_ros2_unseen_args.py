@@ -192,3 +192,29 @@ def generate_launch_description():
     assert found(model, "LAUNCH_UNSUPPORTED") == [
         (line_of(body, "name='b'"), "Command is never run; its output is unknown: "
                                     "xacro /nowhere/r.xacro")]
+
+
+def test_every_way_a_list_takes_a_helpers_unknown_items(write_tree):
+    """Unpacked, looped over, added in place or given as the description: the helper's
+    items are unknown, not none, and the loop over them is not said again."""
+    shapes = {
+        "star": "return LaunchDescription([*declare_robot_arguments(), N])",
+        "loop": "d = []\n    for a in declare_robot_arguments():\n        d.append(a)\n"
+                "    return LaunchDescription(d + [N])",
+        "comprehension": "return LaunchDescription([a for a in declare_robot_arguments()]"
+                         " + [N])",
+        "in place": "d = []\n    d += declare_robot_arguments()\n"
+                    "    return LaunchDescription(d + [N])",
+        "add_action": "ld = LaunchDescription()\n    ld.add_action(declare_robot_arguments())"
+                      "\n    ld.add_action(N)\n    return ld",
+    }
+    for shape, statements in shapes.items():
+        body = HEADER + f"""
+N = Node(package='p', executable='e', name='n', namespace=LaunchConfiguration('robot_name'))
+
+def generate_launch_description():
+    {statements}
+"""
+        model = run(write_tree, f"{shape.replace(' ', '_')}.launch.py", body)
+        assert [d.code for d in model.diagnostics] == [
+            "LAUNCH_PY_UNSUPPORTED", "LAUNCH_UNKNOWN_VALUE"], shape

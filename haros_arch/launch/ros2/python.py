@@ -515,7 +515,9 @@ class Interpreter(Expressions):
             return list(value)
         if isinstance(value, (list, tuple, str)):
             return list(value)
-        self.unsupported(node, "loop over a value that is not known statically")
+        if not (isinstance(value, Unknown) and value.kind == "unsupported"):
+            # one that a construct not interpreted made was said where it was made
+            self.unsupported(node, "loop over a value that is not known statically")
         return None
 
     # -- functions -----------------------------------------------------------------------

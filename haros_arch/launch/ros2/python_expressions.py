@@ -158,8 +158,13 @@ class Expressions(Walker):
         out: list[Any] = []
         for elt in node.elts:
             if isinstance(elt, ast.Starred):
-                items = self.iterable(self.eval(elt.value, env), elt)
-                out.extend(items or [])
+                value = self.eval(elt.value, env)
+                items = self.iterable(value, elt)
+                if items is None:  # ``[*helper(), Node(...)]``: unknown items, not none
+                    out.append(self.placed(value if isinstance(value, Unknown) else Unknown(
+                        f"the items of {_source(elt.value)}"), elt))
+                else:
+                    out.extend(items)
             else:
                 out.append(self.eval(elt, env))
             self.sized(out)
