@@ -265,7 +265,9 @@ CATALOGUE: dict[str, Entry] = {
         "given one (in a ROS 1 top-level file, or one it includes with pass_all_args, "
         "also an argument not declared at all: roslaunch takes every name:=value of "
         "its command line as an argument); what depends on it is kept with an unknown "
-        "part."),
+        "part. A ROS 2 configuration not seen declared after an action the reader "
+        "could not see (a value not known among a launch description's entities, an "
+        "include not read) may be declared there: LAUNCH_UNKNOWN_VALUE, undecided."),
     "LAUNCH_UNSUPPORTED": Entry(
         "warning", "{detail}",
         "A launch construct that the static interpreter does not evaluate; what it "
@@ -296,7 +298,9 @@ CATALOGUE: dict[str, Entry] = {
     "LAUNCH_UNKNOWN_VALUE": Entry(
         "info", "{detail}; what depends on it keeps '?'",
         "A substitution's value cannot be known statically (an unset environment "
-        "variable, a package that is not found, a command that is never run)."),
+        "variable, a package that is not found, a command that is never run, a ROS 2 "
+        "launch configuration not seen declared where actions the reader could not see "
+        "may declare it: the message names their places)."),
     "LAUNCH_YAML": Entry(
         "error", "{detail}",
         "The YAML of a <rosparam> or a type=\"yaml\" parameter cannot be used."),
@@ -314,7 +318,8 @@ CATALOGUE: dict[str, Entry] = {
         "A Python launch file uses a construct outside the subset the static "
         "interpreter evaluates (an unknown call, a while loop, an import of the "
         "workspace's own modules, ...). It is not run: its result is unknown, and what "
-        "depends on it keeps '?' parts or a condition."),
+        "depends on it keeps '?' parts or a condition. Said once, where the construct "
+        "is, not again where its value is used."),
     "LAUNCH_PROCESS": Entry(
         "info", "process {command} started here is no node the reader can name",
         "A launch file runs a process (ExecuteProcess, <executable>) whose command line is "

@@ -12,6 +12,8 @@ from collections.abc import Iterable
 from dataclasses import dataclass, field
 from typing import Any, Literal
 
+from .location import Location
+
 UNKNOWN_MARK = "?"
 
 
@@ -28,11 +30,13 @@ class Unknown:
     division by zero), ``syntax`` (not Python), ``limit`` (a work bound was reached).
     ``causes``: the origins of the unknowns it was computed from, when there are several
     (an expression over two unset arguments is one unknown with both as causes); not
-    saved in models."""
+    saved in models. ``where``: the place that made it, when a reader knows it (a call a
+    launch file's interpreter did not run); not compared, not saved in models."""
 
     origin: str = ""
     kind: UnknownKind = "unknown"
     causes: tuple[str, ...] = field(default=(), metadata={"json": False})
+    where: Location | None = field(default=None, compare=False, metadata={"json": False})
 
     @property
     def reason(self) -> str:

@@ -116,13 +116,16 @@ class Opaque(Subst):
     report: bool = True  # False when the reason was reported already (a syntax error)
 
 
+COMMAND_NOT_RUN = "Command (never run) is not evaluated; its value is unknown"
+
+
 @dataclass(frozen=True)
 class Command(Subst):
     """launch's ``Command``: never run, so its output is unknown; the command line is
     kept for the readers that understand it (robot descriptions read xacro's file)."""
 
     command: Text
-    origin: str = "Command (never run) is not evaluated; its value is unknown"
+    origin: str = COMMAND_NOT_RUN  # said with the command line when performed
 
 
 # -- conditions --------------------------------------------------------------------

@@ -104,10 +104,14 @@ class Interpreter(Expressions):
         return self.workspace.location(self.path, line, col)
 
     def unsupported(self, node: ast.AST | None, detail: str) -> Unknown:
-        found = diag.make("LAUNCH_PY_UNSUPPORTED", self.where(node), detail=detail)
+        """Said here, once: the value is unknown, of kind ``unsupported`` and made at
+        this place, so that what uses it later says no more (``python_values.to_text``)
+        and an action list it lands in names the place (``actions_of``)."""
+        where = self.where(node)
+        found = diag.make("LAUNCH_PY_UNSUPPORTED", where, detail=detail)
         if found not in self.diagnostics:
             self.diagnostics.append(found)
-        return Unknown(detail, "unsupported")
+        return Unknown(detail, "unsupported", where=where)
 
     def unknown_value(self, node: ast.AST, detail: str) -> None:
         self.diagnostics.append(diag.make("LAUNCH_UNKNOWN_VALUE", self.where(node),
@@ -171,8 +175,10 @@ class Interpreter(Expressions):
                 out.append(item)
             elif isinstance(item, Unknown):
                 # the interpreter said why it is not known where it was made; as an
-                # action it may start or set anything (query.absence)
-                out.append(e.UnknownAction(item.origin or "?", location=self.where(node)))
+                # action it may start, set or declare anything (query.absence,
+                # runner.Scope.unseen), said at that place when it is known
+                out.append(e.UnknownAction(item.origin or "?",
+                                           location=item.where or self.where(node)))
             elif item is not None:
                 self.unsupported(node, f"{type(item).__name__} is not a launch action")
         return out
@@ -497,10 +503,15 @@ class Interpreter(Expressions):
         for item in stmt.items:
             value = self.eval(item.context_expr, env)
             if not isinstance(value, ReadOnlyFile):
-                self.unsupported(stmt, "with statements other than open() are not "
-                                       "interpreted")
-                for name in _assigned(stmt.body):  # what the body sets is unknown
-                    env[name] = Unknown(f"{name} set in a with statement not interpreted")
+                # said once: the call that made the value (an open() of a file not
+                # read: nav2's tb3_simulation_launch.py) or else the statement; what the
+                # body sets is unknown, made here, and said no more where it is used
+                made = value if isinstance(value, Unknown) and value.kind == "unsupported" \
+                    else self.unsupported(stmt, "with statements other than open() are "
+                                                "not interpreted")
+                for name in _assigned(stmt.body):
+                    env[name] = Unknown(f"{name} set in a with statement not interpreted",
+                                        "unsupported", where=made.where)
                 return
             if item.optional_vars is not None:
                 self.assign(item.optional_vars, value, env)
@@ -555,7 +566,9 @@ class Interpreter(Expressions):
             return list(value)
         if isinstance(value, (list, tuple, str)):
             return list(value)
-        self.unsupported(node, "loop over a value that is not known statically")
+        if not (isinstance(value, Unknown) and value.kind == "unsupported"):
+            # one that a construct not interpreted made was said where it was made
+            self.unsupported(node, "loop over a value that is not known statically")
         return None
 
     # -- functions -----------------------------------------------------------------------
@@ -582,7 +595,13 @@ class Interpreter(Expressions):
             return func.call(self, args, kwargs, node)
         if isinstance(func, Unknown) and func.origin.startswith("class "):
             return self.unsupported(node, f"call to {func.origin}")
-        return self.unsupported(node, "call to a value that is not known statically")
+        callee = _source(node.func) if isinstance(node, ast.Call) else "?"
+        if isinstance(func, Unknown) and func.kind == "unsupported":
+            # what it calls was said where it was made (``eval`` not defined, a call
+            # not interpreted); its result is as unknown, and said no more
+            return Unknown(f"call to {callee}", "unsupported", where=func.where)
+        return self.unsupported(node, f"call to {callee}, a value not known statically, "
+                                      "is not interpreted")
 
     def charge_arguments(self, values: list[Any]) -> None:
         """What a builder, builtin or method will walk: containers by their nested size,

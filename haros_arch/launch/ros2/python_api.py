@@ -570,7 +570,10 @@ def opaque_function(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
             value = perform(t)
             if value.literal is not None:
                 return value.literal
-            return Lazy(tuple(p if isinstance(p, str) else e.Opaque(p.origin or "?")
+            # its unknown parts were said when it was performed (an unset argument,
+            # a command never run): the uses of the text say no more
+            return Lazy(tuple(p if isinstance(p, str) else e.Opaque(p.origin or "?",
+                                                                    report=False)
                               for p in value.parts))
 
         before = len(i.diagnostics)

@@ -13,6 +13,7 @@ gives an unknown value and a diagnostic.
 from __future__ import annotations
 
 import ast
+import dataclasses
 from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass
 from pathlib import PurePosixPath
@@ -20,6 +21,7 @@ from typing import TYPE_CHECKING, Any, NoReturn
 
 from ...evaluate import operations as ops
 from ...evaluate.python import Walker
+from ...model.location import Location
 from ...model.values import Unknown
 from . import entities as e
 from .python_values import (
@@ -68,6 +70,16 @@ class Expressions(Walker):
 
     def unsupported(self, node: ast.AST | None, detail: str) -> Unknown:
         raise NotImplementedError
+
+    def where(self, node: ast.AST | None) -> Location:
+        raise NotImplementedError
+
+    def placed(self, value: Unknown, node: ast.AST) -> Unknown:
+        """``value``, with the place that made it: its own when known, else ``node``'s
+        (an unknown part a list of actions takes in here)."""
+        if value.where is not None:
+            return value
+        return dataclasses.replace(value, where=self.where(node))
 
     def failed(self, node: ast.AST | None, detail: str, reason: str) -> Unknown:
         """A Python error of the interpreted code: said and unknown; the launch file's
@@ -150,8 +162,13 @@ class Expressions(Walker):
         out: list[Any] = []
         for elt in node.elts:
             if isinstance(elt, ast.Starred):
-                items = self.iterable(self.eval(elt.value, env), elt)
-                out.extend(items or [])
+                value = self.eval(elt.value, env)
+                items = self.iterable(value, elt)
+                if items is None:  # ``[*helper(), Node(...)]``: unknown items, not none
+                    out.append(self.placed(value if isinstance(value, Unknown) else Unknown(
+                        f"the items of {_source(elt.value)}"), elt))
+                else:
+                    out.extend(items)
             else:
                 out.append(self.eval(elt, env))
             self.sized(out)
@@ -218,8 +235,10 @@ class Expressions(Walker):
             # ``unknown_actions() + [Node(...)]``: the known items keep their place, the
             # unknown part (two unknowns added read as a Lazy text) stays one unknown
             # item; what made it was reported
-            return [*(left if isinstance(left, list) else [_unknown_part(left)]),
-                    *(right if isinstance(right, list) else [_unknown_part(right)])]
+            return [*(left if isinstance(left, list) else [
+                        self.placed(_unknown_part(left), node)]),
+                    *(right if isinstance(right, list) else [
+                        self.placed(_unknown_part(right), node)])]
         if isinstance(left, Unknown) or isinstance(right, Unknown):
             return Unknown("arithmetic on an unknown value")
         if isinstance(op, ast.Mod) and isinstance(left, str) and (

@@ -31,6 +31,7 @@ from .python_values import (
     Lazy,
     ReadOnlyFile,
     XacroDocument,
+    _source,
     concat,
     to_text,
 )
@@ -93,7 +94,12 @@ def open_file(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     """``open(path)`` / ``open(path, 'r')``: read-only; any other mode is refused."""
     mode = arg(a, k, 1, "mode", default="r")
     if mode not in ("r", "rt") or not a or not isinstance(a[0], str):
-        return i.unsupported(n, "open() other than for reading a known path is not run")
+        if mode in ("r", "rt") and a and isinstance(a[0], Unknown) \
+                and a[0].kind == "unsupported":  # its path was said where it was made
+            return Unknown(f"{_source(n)} of a path not known", "unsupported",
+                           where=a[0].where)
+        return i.unsupported(n, f"{_source(n)}: open() other than for reading a known "
+                                "path is not run")
     return ReadOnlyFile(a[0])
 
 
@@ -137,7 +143,9 @@ def m_find(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
 def m_read(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
     if isinstance(owner, ReadOnlyFile):
         text = i.read(owner.path, n)
-        return Unknown("unreadable file") if text is None else text
+        if text is None:  # said by read(), here: its uses say no more
+            return Unknown(f"{owner.path} not read", "unsupported", where=i.where(n))
+        return text
     return i.unsupported(n, ".read() on a value not known statically")
 
 
@@ -184,6 +192,11 @@ def m_list(name: str) -> Method:
                 owner.append(a[0])
             elif name == "extend" and len(a) == 1 and isinstance(a[0], (list, tuple)):
                 owner.extend(a[0])
+            elif name == "extend" and len(a) == 1 and isinstance(a[0], Unknown):
+                # the items of a value not known statically (a helper not read that
+                # returns DeclareLaunchArguments, Interbotix's): one unknown item, said
+                # where it was made, never none
+                owner.append(i.placed(a[0], n))
             elif name == "insert" and len(a) == 2 and isinstance(a[0], int):
                 owner.insert(a[0], a[1])
             elif name == "remove" and len(a) == 1 and isinstance(a[0], _PLAIN):
@@ -214,7 +227,9 @@ def m_str(name: str) -> Method:
         if name == "perform":
             if isinstance(owner, (e.Subst, Lazy)) and a and isinstance(a[0], Context):
                 return a[0].perform(to_text(owner))
-            return Unknown("perform() outside an OpaqueFunction")
+            # said here, naming it, rather than at each use of its text
+            return i.unsupported(n, f"{_source(n)}: perform() outside an OpaqueFunction "
+                                    "is not interpreted")
         if name == "format" and isinstance(owner, str) and any(
                 isinstance(v, (Lazy, e.Subst, Unknown)) for v in [*a, *k.values()]):
             return i.operation(lambda: concat(partial.format_parts(

@@ -194,7 +194,9 @@ def to_text(value: Any) -> e.Text:
     if isinstance(value, (int, float)):
         return (str(value),)
     if isinstance(value, Unknown):
-        return (e.Opaque(value.origin),)
+        # one made by a construct not interpreted was said where it was made, once;
+        # its uses say no more
+        return (e.Opaque(value.origin, report=value.kind != "unsupported"),)
     if isinstance(value, e.ParamFile):
         return (e.FileRef(value),)
     return (e.Opaque(f"{type(value).__name__} value"),)

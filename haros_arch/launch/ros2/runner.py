@@ -69,6 +69,11 @@ class Scope:
     file: str = ""
     # the launch tree's file or group being performed (shared by copies of the scope)
     item: LaunchItem = field(default_factory=lambda: LaunchItem("file", ""))
+    # where actions the reader could not see were performed in this scope (a value not
+    # known statically among the entities, an action not interpreted, an include not
+    # read), each with what it was: any of them may have declared or set a launch
+    # configuration, so one not seen here is not known to be unset
+    unseen: tuple[tuple[Location, str], ...] = ()
 
     def copy(self) -> Scope:
         return replace(self, configs=dict(self.configs), remaps=list(self.remaps),
@@ -186,6 +191,7 @@ class Runner:
             return
         if self.stack and not self.workspace.readable(path, self.environment):
             scope.item.kind = "include"  # the include that reached it, not read
+            self.not_seen(scope, where, f"the include of {self.workspace.relpath(path)}")
             # as parameter files: an included launch file is read only from the workspace
             # and the installed packages (Clearpath's robot_spawn.launch.py includes
             # $HOME/clearpath/platform/launch/*.launch.py, written on the robot by the
@@ -200,6 +206,8 @@ class Runner:
                 # installed from the build folder (ros_gz_sim's gz_sim.launch.py, made by
                 # configure_file from gz_sim.launch.py.in): there, but not readable here
                 scope.item.kind = "include"
+                self.not_seen(scope, where,
+                              f"the include of {self.workspace.relpath(path)}")
                 self.report("LAUNCH_UNKNOWN_VALUE", where, detail=(
                     f"launch file {self.workspace.relpath(path)} is made by the build "
                     f"(installed from the build folder at {self.workspace.relpath(made[0])}"
@@ -310,6 +318,7 @@ class Runner:
             condition=self.take_guard()))
         if action.scoped and not action.forwarding:
             inner.configs = {}
+            inner.unseen = ()
         for key, val in action.configs:
             name = self.value(key, scope, action.location)
             if name is not None and name.literal is not None:
@@ -327,6 +336,7 @@ class Runner:
                 kept[name.literal] = self.value(val, scope, action.location)
         scope.configs.clear()
         scope.configs.update(kept)
+        scope.unseen = ()
         scope.namespace = None
         scope.remaps.clear()
         scope.params.clear()
@@ -379,6 +389,7 @@ class Runner:
             self.report("LAUNCH_UNSUPPORTED", action.location,
                         detail=f"included file {path} is not known statically")
             self.unread(str(path) if path is not None else "?", scope, action.location)
+            self.not_seen(scope, action.location, f"the include of {path}")
             return
         item = LaunchItem("file", self.workspace.relpath(share_source(
             self.workspace, os.path.abspath(path.literal))), action.location,
@@ -516,6 +527,14 @@ class Runner:
         scope.item.add(LaunchItem("include", name, where, namespace=scope.namespace or "/",
                                   detail=detail, condition=self.take_guard()))
 
+    @staticmethod
+    def not_seen(scope: Scope, where: Location, what: str) -> None:
+        """Actions performed in ``scope`` at ``where`` that the reader cannot see: they
+        may declare or set launch configurations (an included file shares its
+        includer's, as launch runs it)."""
+        if all(place != where for place, _ in scope.unseen):
+            scope.unseen = (*scope.unseen, (where, what))
+
     def _launched_file(self, positional: list[str], where: Location) -> str | None:
         """The file ``ros2 launch`` runs: ``PKG FILE``, the one file named FILE in the
         package's folder (ros2launch walks its share folder so); ``PATH``, that file."""
@@ -559,9 +578,11 @@ class Runner:
     def do_Unsupported(self, action: e.Unsupported, scope: Scope) -> None:
         self.report("LAUNCH_UNSUPPORTED", action.location, detail=action.what)
         self.unread(action.what, scope, action.location, "action")
+        self.not_seen(scope, action.location, action.what)
 
     def do_UnknownAction(self, action: e.UnknownAction, scope: Scope) -> None:
         self.unread(action.what, scope, action.location, "action")
+        self.not_seen(scope, action.location, action.what)
 
     def do_NodeAction(self, action: e.NodeAction, scope: Scope) -> None:
         from .nodes import perform_node

@@ -186,6 +186,21 @@ def make(name: str, args: list[e.Text], raw: str) -> e.Subst:
 
 
 # -- evaluation ----------------------------------------------------------------------
+def unseen_declaration(name: str, unseen: tuple[tuple[Location, str], ...],
+                       here: Location) -> str:
+    """Why launch configuration ``name``, not seen declared, is not known to be unset:
+    the places of the actions not seen before it (``line N`` in the file of ``here``,
+    else ``file:line``), the first two, with what each was."""
+    def place(where: Location) -> str:
+        return (f"line {where.line}" if where.file == here.file
+                else f"{where.file}:{where.line}")
+
+    shown = "; ".join(f"{place(where)}, {what}" for where, what in unseen[:2])
+    more = f"; and {len(unseen) - 2} more" if len(unseen) > 2 else ""
+    return (f"launch argument {name} is not seen declared (undecided: what was not read "
+            f"may declare it: {shown}{more})")
+
+
 class Evaluator:
     def __init__(self, runner: Runner, scope: Scope, location: Location) -> None:
         self.runner = runner
@@ -230,6 +245,11 @@ class Evaluator:
             return found
         if s.default is not None:
             return self.value(s.default)
+        if self.scope.unseen:
+            # declared, maybe, by what the reader could not see: undecided, not unset
+            self.report("LAUNCH_UNKNOWN_VALUE", detail=unseen_declaration(
+                name, self.scope.unseen, self.location))
+            return Value.unknown(f"var {name}")
         self.report("LAUNCH_ARG_UNSET", name=name)
         return Value.unknown(f"var {name}")
 
@@ -446,8 +466,15 @@ class Evaluator:
         return Value(self.value(s.file.path).parts, file=s.file)
 
     def s_Command(self, s: e.Command) -> Value:
-        output = self.s_Opaque(e.Opaque(s.origin))
         line = self.value(s.command).text
+        origin = s.origin
+        if origin == e.COMMAND_NOT_RUN:  # launch's Command: say which command
+            # its words as paths relative to the workspace, as every message says them
+            shown = " ".join(self.runner.workspace.relpath(w) if os.path.isabs(w) else w
+                             for w in line.split(" "))
+            shown = shown if len(shown) <= 160 else shown[:157] + "..."
+            origin = f"Command is never run; its output is unknown: {shown}"
+        output = self.s_Opaque(e.Opaque(origin))
         self.runner.command_outputs.append((output.parts[0], line))  # type: ignore[arg-type]
         return output
 
