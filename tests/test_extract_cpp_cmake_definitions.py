@@ -216,3 +216,36 @@ def test_values_decided_on_what_is_not_known_are_unknown(write_tree) -> None:
     assert cmake_flags(str(root / "src/unsure/src/n.cpp"), ws) == [
         "-DKEPT", "-DUSE_NEW=(haros_cmake_value_unknown_USE_NEW)",
         "-DVERSION=(haros_cmake_value_unknown_VERSION)", "-DKNOWN=3"]
+
+
+OPTIONS = r"""
+cmake_minimum_required(VERSION 3.8)
+project(opts)
+add_executable(early src/early.cpp)
+add_compile_options(-Wall -D__ROS_VERSION=2 -DWITH_X)
+add_executable(late src/late.cpp)
+target_compile_options(late PRIVATE -O2 -DLATE_ONLY=1)
+add_subdirectory(sub)
+"""
+
+
+def test_add_compile_options_defines_for_the_targets_made_after(write_tree) -> None:
+    """``add_compile_options(-DX)`` defines X for the targets of its directory and
+    subdirectories made after it (the directory's COMPILE_OPTIONS start a target's own),
+    ``target_compile_options(t -DX)`` for t's sources: sick_scan_xd chooses its ROS 2
+    code with ``add_compile_options(-D__ROS_VERSION=${ROS_VERSION})``; other options
+    are no definitions."""
+    root = write_tree({
+        "src/opts/package.xml": package_xml("opts", "ament_cmake"),
+        "src/opts/CMakeLists.txt": OPTIONS,
+        "src/opts/sub/CMakeLists.txt": "add_executable(inner ../src/inner.cpp)\n",
+        "src/opts/src/early.cpp": "int main() { return 0; }\n",
+        "src/opts/src/late.cpp": "int main() { return 0; }\n",
+        "src/opts/src/inner.cpp": "int main() { return 0; }\n",
+    })
+    ws = scan([str(root / "src")])
+    src = root / "src/opts/src"
+    assert cmake_flags(str(src / "early.cpp"), ws) == []
+    assert cmake_flags(str(src / "late.cpp"), ws) == [
+        "-D__ROS_VERSION=2", "-DWITH_X", "-DLATE_ONLY=1"]
+    assert cmake_flags(str(src / "inner.cpp"), ws) == ["-D__ROS_VERSION=2", "-DWITH_X"]

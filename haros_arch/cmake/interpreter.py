@@ -100,6 +100,10 @@ class Interpreter:
         # the compile definitions of each directory being read, innermost last: a
         # subdirectory starts with a copy of its parent's (``Target.directory_definitions``)
         self.compile_definitions: list[list[CompileDefinition]] = [[]]
+        # the ``-D`` words of each directory's ``add_compile_options`` so far, innermost
+        # last: a target takes those made before it (the directory's COMPILE_OPTIONS
+        # start its own), a subdirectory starts with a copy of its parent's
+        self.compile_options: list[list[CompileDefinition]] = [[]]
         # variables whose value this reading may have wrong: set from something not set
         # here (``set(V ${found_by_find_package})``), or in a branch chosen by a test
         # that read such a thing (``if("${pkg_VERSION}" VERSION_GREATER 1)``, decided on
@@ -575,6 +579,7 @@ class Interpreter:
             return
         self.scopes.append(dict(self.scopes[-1]))
         self.compile_definitions.append(list(self.compile_definitions[-1]))
+        self.compile_options.append(list(self.compile_options[-1]))
         self._enter_directory(folder)
         self.depth += 1
         frame = len(self.returns)
@@ -587,6 +592,7 @@ class Interpreter:
             del self.returns[frame:]
             self.scopes.pop()
             self.compile_definitions.pop()
+            self.compile_options.pop()
 
 
 def _substitute(command: Invocation, values: Mapping[str, str]) -> Invocation:

@@ -33,7 +33,8 @@ from . import recall
 from .compile_commands import valid_macro
 
 # the CMake commands that define macros for the compiler, and what they define
-_COMMAND = re.compile(r"\b(add_definitions|add_compile_definitions|target_compile_definitions)"
+_COMMAND = re.compile(r"\b(add_definitions|add_compile_definitions|target_compile_definitions"
+                      r"|add_compile_options|target_compile_options)"
                       r"\s*\(([^)]*)\)", re.IGNORECASE)
 _DEFINED = re.compile(r"(?:-D)?([A-Za-z_]\w*)(?:=[^\s)]*)?")
 _WORD = re.compile(r"[A-Za-z_]\w*")
@@ -105,12 +106,14 @@ def cmake_macros(root: str, workspace: Workspace) -> dict[str, tuple[str, int]]:
         for match in _COMMAND.finditer(text or ""):
             line = text.count("\n", 0, match.start()) + 1 if text else 0
             words = match.group(2).split()
-            if match.group(1).lower() == "target_compile_definitions":
+            command = match.group(1).lower()
+            if command.startswith("target_"):
                 words = words[1:]  # the target
             for word in words:
                 if word.upper() in _KEYWORDS or "$" in word:
                     continue
-                if match.group(1).lower() == "add_definitions" and not word.startswith("-D"):
+                if (command in ("add_definitions", "add_compile_options", "target_compile_options")
+                        and not word.startswith("-D")):
                     continue
                 named = _DEFINED.fullmatch(word)
                 if named is not None:
