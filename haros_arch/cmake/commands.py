@@ -460,6 +460,32 @@ def _target_compile_definitions(it: Interpreter, command: Invocation,
     target.definitions.extend(_definitions(it, command, command.args[1:], ""))
 
 
+# the commands that define macros, and whether only their ``-D`` words do
+_DEFINING = {"add_definitions": True, "add_compile_options": True,
+             "target_compile_options": True, "add_compile_definitions": False,
+             "target_compile_definitions": False}
+
+
+def defined_names(command: Invocation) -> list[str]:
+    """The names of the macros a command would define, as written (not expanded):
+    ``add_definitions(-DX)``, ``target_compile_definitions(t PRIVATE Y=1)``, ...; none
+    for another command."""
+    name = command.name.lower()
+    flag_only = _DEFINING.get(name)
+    if flag_only is None:
+        return []
+    args = command.args[1:] if name.startswith("target_") else command.args
+    found: list[str] = []
+    for arg in args:
+        for word in arg.text.split():
+            if word in _DEFINITION_KEYWORDS or (flag_only and not word.startswith("-D")):
+                continue
+            match = _DEFINE.match(word[2:] if word.startswith("-D") else word)
+            if match is not None:
+                found.append(match.group(1))
+    return found
+
+
 def _definitions(it: Interpreter, command: Invocation, raw: tuple[Argument, ...],
                  flag: str) -> list[tuple[str, CompileDefinition]]:
     """The definitions ``raw`` (a command's arguments, not expanded) give, each with the

@@ -58,7 +58,7 @@ def _cmake_macros(source: str, workspace: Workspace
     for ``source``: those flags', and those it records for other targets of the package
     only (not defined here); and those of the flags whose value is not known, each with
     where (file, line) it is defined."""
-    from ...cmake import CONFLICT, source_definitions
+    from ...cmake import CONFLICT, absent_definitions, source_definitions
 
     package = workspace.package_of(source)
     if package is None:
@@ -69,8 +69,10 @@ def _cmake_macros(source: str, workspace: Workspace
         return [], set(), {}
     flags: list[str] = []
     valued: dict[str, tuple[str, int]] = {}
-    settled = {name for targets in found.values() for defined in targets
-               for name in defined} - {name for defined in per_target for name in defined}
+    own = {name for defined in per_target for name in defined}
+    # known absent: defined only for other targets, or only in branches not taken
+    settled = ({name for targets in found.values() for defined in targets for name in defined}
+               | absent_definitions(package, workspace)) - own
     first, *others = per_target
     for name, each in first.items():
         if each is CONFLICT or each.conditions or any(o.get(name) != each for o in others):
