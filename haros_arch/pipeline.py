@@ -149,15 +149,32 @@ def _extract(nodes: list[Node], workspace: Workspace, project: Project,
 
 def distro_environment(project: Project, environment: Mapping[str, str]) -> dict[str, str]:
     """The run's environment with the project file's: a ``distro:`` is the ROS_DISTRO the
-    launch files run under (as the distribution's setup script sets it), over the shell's
-    own, unless the project's ``environment:`` (or a configuration's) names one:
+    launch files run under (as the distribution's setup script sets it, with its
+    ROS_VERSION and ROS_PYTHON_VERSION: ``distro_variables``), over the shell's own,
+    unless the project's ``environment:`` (or a configuration's) names one:
     OrbbecSDK_ROS2's camera launch files choose a plain node or a component on
     ``os.environ["ROS_DISTRO"] == "foxy"``, and left unset both were started."""
     env = dict(environment)
     if project.distro:
         env["ROS_DISTRO"] = project.distro
+        env.update(distro_variables(project.distro))
     env.update(project.environment)
     return env
+
+
+def distro_variables(distro: str) -> dict[str, str]:
+    """What a distribution's setup script (ros_environment) sets beside ROS_DISTRO:
+    ROS_VERSION and ROS_PYTHON_VERSION, which package.xml conditions (REP 149:
+    ``<build_type condition="$ROS_VERSION == 2">``), CMake (``$ENV{ROS_VERSION}``) and
+    launch files read; none for a distribution we do not know."""
+    from .extract.cpp.versions import RCLCPP, ROSCPP
+
+    name = distro.strip().lower()
+    if ROSCPP.version(name) is not None:
+        return {"ROS_VERSION": "1", "ROS_PYTHON_VERSION": "3" if name == "noetic" else "2"}
+    if RCLCPP.version(name) is not None:
+        return {"ROS_VERSION": "2", "ROS_PYTHON_VERSION": "3"}
+    return {}
 
 
 def source_distro(project: Project, env: Mapping[str, str]) -> str | None:

@@ -216,3 +216,97 @@ def test_values_decided_on_what_is_not_known_are_unknown(write_tree) -> None:
     assert cmake_flags(str(root / "src/unsure/src/n.cpp"), ws) == [
         "-DKEPT", "-DUSE_NEW=(haros_cmake_value_unknown_USE_NEW)",
         "-DVERSION=(haros_cmake_value_unknown_VERSION)", "-DKNOWN=3"]
+
+
+OPTIONS = r"""
+cmake_minimum_required(VERSION 3.8)
+project(opts)
+add_executable(early src/early.cpp)
+add_compile_options(-Wall -D__ROS_VERSION=2 -DWITH_X)
+add_executable(late src/late.cpp)
+target_compile_options(late PRIVATE -O2 -DLATE_ONLY=1)
+add_subdirectory(sub)
+"""
+
+
+def test_add_compile_options_defines_for_the_targets_made_after(write_tree) -> None:
+    """``add_compile_options(-DX)`` defines X for the targets of its directory and
+    subdirectories made after it (the directory's COMPILE_OPTIONS start a target's own),
+    ``target_compile_options(t -DX)`` for t's sources: sick_scan_xd chooses its ROS 2
+    code with ``add_compile_options(-D__ROS_VERSION=${ROS_VERSION})``; other options
+    are no definitions."""
+    root = write_tree({
+        "src/opts/package.xml": package_xml("opts", "ament_cmake"),
+        "src/opts/CMakeLists.txt": OPTIONS,
+        "src/opts/sub/CMakeLists.txt": "add_executable(inner ../src/inner.cpp)\n",
+        "src/opts/src/early.cpp": "int main() { return 0; }\n",
+        "src/opts/src/late.cpp": "int main() { return 0; }\n",
+        "src/opts/src/inner.cpp": "int main() { return 0; }\n",
+    })
+    ws = scan([str(root / "src")])
+    src = root / "src/opts/src"
+    assert cmake_flags(str(src / "early.cpp"), ws) == []
+    assert cmake_flags(str(src / "late.cpp"), ws) == [
+        "-D__ROS_VERSION=2", "-DWITH_X", "-DLATE_ONLY=1"]
+    assert cmake_flags(str(src / "inner.cpp"), ws) == ["-D__ROS_VERSION=2", "-DWITH_X"]
+
+
+BRANCHES = r"""
+cmake_minimum_required(VERSION 3.8)
+project(branches)
+find_package(ament_cmake REQUIRED)
+set(ROS_VERSION 2)
+if(ROS_VERSION EQUAL 0)
+  add_compile_options(-DROSSIMU)
+elseif(ROS_VERSION EQUAL 2)
+  add_compile_options(-DROS2_BUILD)
+else()
+  add_definitions(-DROS1_BUILD)
+endif()
+if($ENV{HAROS_TEST_UNSET} STREQUAL "x")
+  add_compile_options(-DMAYBE)
+endif()
+add_executable(node src/node.cpp)
+ament_package()
+"""
+
+BRANCHES_NODE = """
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+int main(int argc, char** argv) {
+  rclcpp::init(argc, argv);
+  auto node = std::make_shared<rclcpp::Node>("node");
+#ifdef ROSSIMU
+  auto simu = node->create_publisher<std_msgs::msg::String>("simu", 10);
+#endif
+#ifdef ROS1_BUILD
+  auto one = node->create_publisher<std_msgs::msg::String>("one", 10);
+#endif
+#ifdef ROS2_BUILD
+  auto two = node->create_publisher<std_msgs::msg::String>("two", 10);
+#endif
+#ifdef MAYBE
+  auto maybe = node->create_publisher<std_msgs::msg::String>("maybe", 10);
+#endif
+  rclcpp::spin(node);
+}
+"""
+
+
+def test_a_macro_of_a_branch_not_taken_is_known_absent(write_tree) -> None:
+    """A macro that only branches the reading decided not taken define (on a variable it
+    set itself) is absent, not undecided: sick_scan_xd's ``if(ROS_VERSION EQUAL 0)
+    add_compile_options(-DROSSIMU)`` made no CPP_BUILD_MACRO once ROS_VERSION is 2; one
+    under a test of what is not known still is."""
+    root = write_tree({
+        "src/branches/package.xml": package_xml("branches", "ament_cmake").replace(
+            "</package>", "<depend>rclcpp</depend><depend>std_msgs</depend></package>"),
+        "src/branches/CMakeLists.txt": BRANCHES,
+        "src/branches/src/node.cpp": BRANCHES_NODE,
+        "project.yaml": "project: p\nconfigurations: {}\n",
+    })
+    model = _model(root)
+    node = next(n for p in model.packages for n in p.nodes if n.executable == "node")
+    assert [c.name for c in node.calls if c.kind == "publish"] == ["two"]
+    said = [d.location.line for d in model.diagnostics if d.code == "CPP_BUILD_MACRO"]
+    assert said == [16]  # MAYBE only

@@ -44,3 +44,41 @@ def test_the_project_distro_is_the_launch_files_ros_distro(
     })
     model = analyse(load(str(root / "project.yaml")), shell, Options(cache_dir=None))
     assert [n.name for n in model.configurations[0].nodes] == nodes
+
+
+DUAL_XML = """<?xml version="1.0"?>
+<package format="3">
+  <name>dual</name>
+  <version>1.0.0</version>
+  <description>d</description>
+  <maintainer email="a@b.c">a</maintainer>
+  <license>BSD</license>
+  <buildtool_depend condition="$ROS_VERSION == 1">catkin</buildtool_depend>
+  <buildtool_depend condition="$ROS_VERSION == 2">ament_cmake</buildtool_depend>
+  <export>
+    <build_type condition="$ROS_VERSION == 1">catkin</build_type>
+    <build_type condition="$ROS_VERSION == 2">ament_cmake</build_type>
+  </export>
+</package>
+"""
+
+
+@pytest.mark.parametrize(("distro", "shell", "build_type"), [
+    ("humble", {}, "ament_cmake"),
+    ("noetic", {"ROS_VERSION": "2"}, "catkin"),
+    ("", {"ROS_VERSION": "2"}, "ament_cmake"),
+], ids=["distro", "distro-over-shell", "shell"])
+def test_the_project_distro_sets_ros_version(write_tree: Any, distro: str,
+                                             shell: dict[str, str], build_type: str) -> None:
+    """The distribution's setup script sets ROS_VERSION too (ros_environment), which a
+    package built for ROS 1 and ROS 2 from one tree tests in its package.xml (REP 149)
+    and its CMake files (sick_scan_xd: ``$ENV{ROS_VERSION}``): with ``distro: humble``
+    and no ROS_VERSION in the shell, ``$ROS_VERSION == 2`` held for no package."""
+    root: Path = write_tree({
+        "src/dual/package.xml": DUAL_XML,
+        "src/dual/CMakeLists.txt": "project(dual)\n",
+        "project.yaml": "project: p\n" + (f"distro: {distro}\n" if distro else "")
+                        + "configurations: {}\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), shell, Options(cache_dir=None))
+    assert [p.build_type for p in model.packages] == [build_type]

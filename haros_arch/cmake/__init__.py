@@ -137,6 +137,17 @@ def source_definitions(package: Package, workspace: Workspace
                       lambda: _source_definitions(package, workspace))
 
 
+def absent_definitions(package: Package, workspace: Workspace) -> frozenset[str]:
+    """The macros only branches of ``if()`` that the reading decided not taken, on what
+    it knows for certain, define: no target of the package gets them from there."""
+    def read() -> frozenset[str]:
+        if package.build_type not in CMAKE_BUILD_TYPES or not package.root:
+            return frozenset()
+        interpreter, _ = _interpret(package, workspace, PackageFiles(package, workspace))
+        return frozenset(interpreter.absent_definitions)
+    return remembered("absent definitions", package.root, workspace, read)
+
+
 def _source_definitions(package: Package, workspace: Workspace
                         ) -> dict[str, list[dict[str, CompileDefinition]]]:
     if package.build_type not in CMAKE_BUILD_TYPES or not package.root:

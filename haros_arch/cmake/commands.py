@@ -394,7 +394,8 @@ def _add_target(it: Interpreter, command: Invocation, args: list[str], kind: str
     target = it.targets[args[0]] = Target(
         args[0], kind, sources, conditions=it.current_conditions(), line=command.line,
         column=command.column, file=command.file,
-        directory_definitions=it.compile_definitions[-1])
+        directory_definitions=it.compile_definitions[-1],
+        definitions=[("PRIVATE", each) for each in it.compile_options[-1]])
     if command.name.lower().startswith("ament_auto_add_"):
         target.auto = True
         # ament_cmake_auto links the package's earlier ament_auto libraries unless told
@@ -432,6 +433,24 @@ def _add_compile_definitions(it: Interpreter, command: Invocation, args: list[st
         it.compile_definitions[-1].append(found)
 
 
+@handles("add_compile_options")
+def _add_compile_options(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    """Its ``-D`` words define macros (sick_scan_xd's ``-D__ROS_VERSION=${ROS_VERSION}``)
+    for the targets of the directory and its subdirectories made after it, as the
+    directory's COMPILE_OPTIONS start a target's own; other options are not read."""
+    for _, found in _definitions(it, command, command.args, "-D"):
+        it.compile_options[-1].append(found)
+
+
+@handles("target_compile_options")
+def _target_compile_options(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    """Its ``-D`` words, as ``target_compile_definitions`` gives them."""
+    target = it.targets.get(args[0]) if args else None
+    if target is None or not command.args:
+        return
+    target.definitions.extend(_definitions(it, command, command.args[1:], "-D"))
+
+
 @handles("target_compile_definitions")
 def _target_compile_definitions(it: Interpreter, command: Invocation,
                                 args: list[str]) -> None:
@@ -439,6 +458,32 @@ def _target_compile_definitions(it: Interpreter, command: Invocation,
     if target is None or not command.args:
         return  # an imported target, or one this reading did not make
     target.definitions.extend(_definitions(it, command, command.args[1:], ""))
+
+
+# the commands that define macros, and whether only their ``-D`` words do
+_DEFINING = {"add_definitions": True, "add_compile_options": True,
+             "target_compile_options": True, "add_compile_definitions": False,
+             "target_compile_definitions": False}
+
+
+def defined_names(command: Invocation) -> list[str]:
+    """The names of the macros a command would define, as written (not expanded):
+    ``add_definitions(-DX)``, ``target_compile_definitions(t PRIVATE Y=1)``, ...; none
+    for another command."""
+    name = command.name.lower()
+    flag_only = _DEFINING.get(name)
+    if flag_only is None:
+        return []
+    args = command.args[1:] if name.startswith("target_") else command.args
+    found: list[str] = []
+    for arg in args:
+        for word in arg.text.split():
+            if word in _DEFINITION_KEYWORDS or (flag_only and not word.startswith("-D")):
+                continue
+            match = _DEFINE.match(word[2:] if word.startswith("-D") else word)
+            if match is not None:
+                found.append(match.group(1))
+    return found
 
 
 def _definitions(it: Interpreter, command: Invocation, raw: tuple[Argument, ...],
@@ -478,8 +523,7 @@ def _definitions(it: Interpreter, command: Invocation, raw: tuple[Argument, ...]
 # (tests, messages): an unknown command is looked at only when it is none of these
 IGNORED = frozenset({
     "project", "cmake_minimum_required", "include_directories",
-    "link_directories", "add_compile_options", "add_dependencies",
-    "target_include_directories", "target_compile_options",
+    "link_directories", "add_dependencies", "target_include_directories",
     "target_compile_features", "catkin_package", "ament_package", "message",
     "add_custom_target", "add_custom_command", "add_test", "configure_file",
     "add_message_files", "add_service_files", "add_action_files", "generate_messages",

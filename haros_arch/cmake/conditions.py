@@ -18,6 +18,7 @@ Truth = bool | None
 
 _TRUE = {"1", "ON", "YES", "TRUE", "Y"}
 _FALSE = {"0", "OFF", "NO", "FALSE", "N", "IGNORE", "NOTFOUND", ""}
+TRUE_WORDS, FALSE_WORDS = frozenset(_TRUE), frozenset(_FALSE)
 UNARY = ("EXISTS", "COMMAND", "DEFINED", "TARGET", "IS_DIRECTORY", "IS_ABSOLUTE",
          "POLICY", "TEST", "IS_SYMLINK")
 BINARY = ("STREQUAL", "STRLESS", "STRGREATER", "STRLESS_EQUAL", "STRGREATER_EQUAL",

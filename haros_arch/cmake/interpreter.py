@@ -24,12 +24,15 @@ from .. import diagnostics as diag
 from ..diagnostics import Diagnostic
 from ..model.conditions import Condition
 from ..model.location import Location
-from .commands import HANDLERS, IGNORED, unknown_command
-from .conditions import Evaluator
+from .commands import HANDLERS, IGNORED, defined_names, unknown_command
+from .conditions import BINARY, FALSE_WORDS, TRUE_WORDS, UNARY, Evaluator
 from .lexer import Argument, Invocation
 from .listops import split_list
 from .targets import CompileDefinition, Install, Program, Registration, Target
 
+_VARIABLE_WORD = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+# the words of an if() test that are no variable: operators and constants
+_TEST_WORDS = frozenset({"NOT", "AND", "OR", *UNARY, *BINARY, *TRUE_WORDS, *FALSE_WORDS})
 _VAR_REF = re.compile(r"\$(ENV|CACHE)?\{([^${}]*)\}")
 MAX_STEPS = 50_000  # commands and if / elseif tests; real packages take under 1,000
 MAX_LOOP = 10_000
@@ -100,6 +103,14 @@ class Interpreter:
         # the compile definitions of each directory being read, innermost last: a
         # subdirectory starts with a copy of its parent's (``Target.directory_definitions``)
         self.compile_definitions: list[list[CompileDefinition]] = [[]]
+        # the ``-D`` words of each directory's ``add_compile_options`` so far, innermost
+        # last: a target takes those made before it (the directory's COMPILE_OPTIONS
+        # start its own), a subdirectory starts with a copy of its parent's
+        self.compile_options: list[list[CompileDefinition]] = [[]]
+        # the macros a branch this reading decided not taken, on what it knows for
+        # certain, would define (sick_scan_xd's ``if(ROS_VERSION EQUAL 0)
+        # add_compile_options(-DROSSIMU)`` in a ROS 2 build): known absent there
+        self.absent_definitions: set[str] = set()
         # variables whose value this reading may have wrong: set from something not set
         # here (``set(V ${found_by_find_package})``), or in a branch chosen by a test
         # that read such a thing (``if("${pkg_VERSION}" VERSION_GREATER 1)``, decided on
@@ -412,7 +423,11 @@ class Interpreter:
                     continue
                 if decided:
                     self.run(commands, start + 1, stop)
+                    if not unsure and self._certain(head):
+                        self._not_taken(commands, branches[number + 1:], marks[number + 1:])
                     break
+                if not unsure and self._certain(head):
+                    self._not_taken(commands, [start], [stop])
         finally:
             del self.conditions[len(self.conditions) - pushed:]
             self._unsure -= unsure
@@ -420,6 +435,24 @@ class Interpreter:
                 self.unsure_tests.pop()
         self.returns.extend(returned)
         return end + 1
+
+    def _certain(self, head: Invocation) -> bool:
+        """Whether an ``if()`` / ``elseif()`` test reads only what this reading knows:
+        every word of it that may name a variable names one set here (not a cache entry
+        the command line may give, ``-DROS_EDITION=ROS2``)."""
+        return all(arg.kind != "unquoted" or not _VARIABLE_WORD.fullmatch(arg.text)
+                   or arg.text.upper() in _TEST_WORDS or arg.text in self.variables
+                   for arg in head.args)
+
+    def _not_taken(self, commands: list[Invocation], starts: list[int],
+                   stops: list[int]) -> None:
+        """Record the macros the branches [start, stop) would define, which the reading
+        decided not taken for certain (under no test that is not decided)."""
+        if self._unsure or self.conditions:
+            return
+        for start, stop in zip(starts, stops, strict=True):
+            for command in commands[start + 1:stop]:
+                self.absent_definitions.update(defined_names(command))
 
     def run_foreach(self, commands: list[Invocation], index: int, limit: int) -> int:
         end = self.block_end(commands, index, limit, "foreach", "endforeach")[-1]
@@ -575,6 +608,7 @@ class Interpreter:
             return
         self.scopes.append(dict(self.scopes[-1]))
         self.compile_definitions.append(list(self.compile_definitions[-1]))
+        self.compile_options.append(list(self.compile_options[-1]))
         self._enter_directory(folder)
         self.depth += 1
         frame = len(self.returns)
@@ -587,6 +621,7 @@ class Interpreter:
             del self.returns[frame:]
             self.scopes.pop()
             self.compile_definitions.pop()
+            self.compile_options.pop()
 
 
 def _substitute(command: Invocation, values: Mapping[str, str]) -> Invocation:

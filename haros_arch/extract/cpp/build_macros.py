@@ -33,7 +33,8 @@ from . import recall
 from .compile_commands import valid_macro
 
 # the CMake commands that define macros for the compiler, and what they define
-_COMMAND = re.compile(r"\b(add_definitions|add_compile_definitions|target_compile_definitions)"
+_COMMAND = re.compile(r"\b(add_definitions|add_compile_definitions|target_compile_definitions"
+                      r"|add_compile_options|target_compile_options)"
                       r"\s*\(([^)]*)\)", re.IGNORECASE)
 _DEFINED = re.compile(r"(?:-D)?([A-Za-z_]\w*)(?:=[^\s)]*)?")
 _WORD = re.compile(r"[A-Za-z_]\w*")
@@ -57,7 +58,7 @@ def _cmake_macros(source: str, workspace: Workspace
     for ``source``: those flags', and those it records for other targets of the package
     only (not defined here); and those of the flags whose value is not known, each with
     where (file, line) it is defined."""
-    from ...cmake import CONFLICT, source_definitions
+    from ...cmake import CONFLICT, absent_definitions, source_definitions
 
     package = workspace.package_of(source)
     if package is None:
@@ -68,8 +69,10 @@ def _cmake_macros(source: str, workspace: Workspace
         return [], set(), {}
     flags: list[str] = []
     valued: dict[str, tuple[str, int]] = {}
-    settled = {name for targets in found.values() for defined in targets
-               for name in defined} - {name for defined in per_target for name in defined}
+    own = {name for defined in per_target for name in defined}
+    # known absent: defined only for other targets, or only in branches not taken
+    settled = ({name for targets in found.values() for defined in targets for name in defined}
+               | absent_definitions(package, workspace)) - own
     first, *others = per_target
     for name, each in first.items():
         if each is CONFLICT or each.conditions or any(o.get(name) != each for o in others):
@@ -105,12 +108,14 @@ def cmake_macros(root: str, workspace: Workspace) -> dict[str, tuple[str, int]]:
         for match in _COMMAND.finditer(text or ""):
             line = text.count("\n", 0, match.start()) + 1 if text else 0
             words = match.group(2).split()
-            if match.group(1).lower() == "target_compile_definitions":
+            command = match.group(1).lower()
+            if command.startswith("target_"):
                 words = words[1:]  # the target
             for word in words:
                 if word.upper() in _KEYWORDS or "$" in word:
                     continue
-                if match.group(1).lower() == "add_definitions" and not word.startswith("-D"):
+                if (command in ("add_definitions", "add_compile_options", "target_compile_options")
+                        and not word.startswith("-D")):
                     continue
                 named = _DEFINED.fullmatch(word)
                 if named is not None:

@@ -30,6 +30,32 @@ def qualified_name(cursor: Cursor | None) -> str:
     return "::".join(reversed(parts))
 
 
+def constructed_name(expr: Cursor, class_name: str) -> Cursor | None:
+    """The first argument of ``expr`` when it builds an object of ``class_name``
+    (``rclcpp::Parameter(name, value)``: the parameter's name), also where the
+    construction depends on a template parameter and clang leaves it unresolved (a
+    wrapper's ``rclcpp::Parameter(param_name, param_value)`` of ``const T&``: a call
+    with no declaration, its children the class's references and then the arguments);
+    else None."""
+    inner = strip(expr)
+    if inner.kind != CursorKind.CALL_EXPR:
+        return None
+    target = inner.referenced
+    if target is not None:
+        if target.kind != CursorKind.CONSTRUCTOR or (
+            qualified_name(target.semantic_parent) != class_name
+        ):
+            return None
+        values = written_arguments(inner)
+    else:
+        children = list(inner.get_children())
+        named = [c for c in children if c.kind == CursorKind.TYPE_REF]
+        if not named or qualified_name(named[-1].referenced) != class_name:
+            return None
+        values = [c for c in children if c.kind not in _REFS]
+    return values[0] if values else None
+
+
 def is_default_argument(cursor: Cursor) -> bool:
     """True for an argument the call did not write (a default argument)."""
     return cursor.extent.start.file is None

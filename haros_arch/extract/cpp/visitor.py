@@ -31,7 +31,7 @@ from .call_types import CallTypes, factory_made, row_class
 from .call_types import callee as callee_of_call
 from .conditions import ConditionReader
 from .cursors import children_in, from_standin, overloads, release, root
-from .expressions import binary_operator, first_operand
+from .expressions import binary_operator, constructed_name, first_operand
 from .handles import (
     Namespaces,
     callback,
@@ -1549,12 +1549,9 @@ class CallFinder:
 
     def _name(self, expr: Cursor, scope: Scope) -> tuple[str, NameSource | None]:
         inner = strip(expr)
-        target = inner.referenced if inner.kind == CursorKind.CALL_EXPR else None
-        if target is not None and target.kind == CursorKind.CONSTRUCTOR and (
-            qualified_name(target.semantic_parent) == api.RCLCPP_PARAMETER
-        ):
-            values = written_arguments(inner)
-            return (render(scope.string(values[0])) if values else "?", None)
+        named = constructed_name(inner, api.RCLCPP_PARAMETER)
+        if named is not None:
+            return (render(scope.string(named)), None)
         with program_arguments():
             parts = own_name(scope.string(expr))
         name = render(parts)

@@ -41,6 +41,7 @@ from . import api, msg_types
 from .call_sites import closest, default_argument, delegation, is_constructor
 from .call_types import template_argument
 from .cursors import Node, from_standin, overloads
+from .expressions import constructed_name
 from .handles import callback, callback_name, is_handle, join_name, pointee, qualified_name
 from .qos import qos as qos_of
 from .tested import TestedCalls
@@ -772,6 +773,8 @@ class Wrappers:
                     break
             if name_expr is None:
                 return None
+            # set_parameter(rclcpp::Parameter(param_name, value)): named by param_name
+            name_expr = constructed_name(name_expr, api.RCLCPP_PARAMETER) or name_expr
             spec_param = _spec_member(name_expr, function, "name")
             if spec_param is not None:
                 before, name_arg, after = (), spec.name_arg, ()

@@ -722,6 +722,12 @@ using OnSetParametersCallbackHandle = node_interfaces::OnSetParametersCallbackHa
       const rcl_interfaces::msg::ParameterDescriptor& descriptor = \
           rcl_interfaces::msg::ParameterDescriptor(), bool ignore_override = false) \
       -> typename std::enable_if<!__is_array(T), T>::type; \
+  /* a character array (a wrapper's declare_parameter<T> of a string literal): its value \
+     is a string, as ParameterValue(const char*) and get<T>() make it */ \
+  template<class T> auto declare_parameter(const std::string& name, const T& default_value, \
+      const rcl_interfaces::msg::ParameterDescriptor& descriptor = \
+          rcl_interfaces::msg::ParameterDescriptor(), bool ignore_override = false) \
+      -> typename std::enable_if<__is_array(T), const std::string&>::type; \
   template<class T> T declare_parameter(const std::string& name, \
       const rcl_interfaces::msg::ParameterDescriptor& descriptor = \
           rcl_interfaces::msg::ParameterDescriptor(), bool ignore_override = false); \
