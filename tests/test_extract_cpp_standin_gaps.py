@@ -252,7 +252,11 @@ def test_ros2_wait_sets_client_pruning_and_timer_calls(write_tree) -> None:
     assert [(c.kind, c.name) for c in result.calls
             if c.kind in ("subscribe", "publish", "client")] == [
         ("subscribe", "fixed_in"), ("subscribe", "in"), ("publish", "out"),
-        ("client", "add"), ("publish", "?")]
+        ("client", "add"), ("publish", "ready"), ("publish", "idle")]
+    # ``ready ? "ready" : "idle"`` over a count known at run time: a call per side
+    status = [[(k.statement, k.text) for k in c.conditions] for c in result.calls
+              if c.name in ("ready", "idle")]
+    assert status == [[("if", "ready")], [("else", "ready")]]
 
 
 def test_ros1_action_goal_handles_and_boost_time(write_tree) -> None:
