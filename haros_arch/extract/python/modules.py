@@ -15,6 +15,7 @@ import functools
 import os
 import re
 from dataclasses import dataclass, field
+from typing import Any
 
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
@@ -98,7 +99,6 @@ class Loader:
         self.modules: dict[str, Module | None] = {}
         self.diagnostics: list[Diagnostic] = []
         # top-level Python package name -> folder holding it, in other workspace packages
-        self._others: dict[str, str] | None = None
 
     def location(self, path: str, line: int = 0, column: int = 0) -> Location:
         return self.workspace.location(path, line, column)
@@ -164,11 +164,11 @@ class Loader:
             base = os.path.dirname(module_path)
             for _ in range(level - 1):
                 base = os.path.dirname(base)
-            return _module_file(base, parts)
+            return module_file(base, parts)
         if not parts or self.package_root is None:
             return None
         for root in self._search_roots(module_path):
-            found = _module_file(root, parts)
+            found = module_file(root, parts)
             if found is not None:
                 return found
         return self._other_package(parts)
@@ -177,26 +177,8 @@ class Loader:
         """A Python package another package of the workspace holds (``src/<name>`` or
         ``<name>`` with an ``__init__.py``, as catkin_python_setup / setup.py install
         it): rosserial_arduino's ``from rosserial_python import SerialClient``."""
-        if self._others is None:
-            self._others = {}
-            own = os.path.abspath(self.package_root) if self.package_root else None
-            for package in getattr(self.workspace, "packages", {}).values():
-                root = package.root
-                if not root or os.path.abspath(root) == own:
-                    continue
-                for base in (os.path.join(root, "src"), root):
-                    try:
-                        names = sorted(os.listdir(base))
-                    except OSError:
-                        continue
-                    for name in names:
-                        if name.isidentifier() and os.path.isfile(
-                                os.path.join(base, name, "__init__.py")):
-                            self._others.setdefault(name, base)
-        if parts[0] in api_modules():
-            return None  # its API rows read it, not its own code (ros_comm holds rospy's)
-        base = self._others.get(parts[0])
-        return _module_file(base, parts) if base is not None else None
+        own = os.path.abspath(self.package_root) if self.package_root else None
+        return workspace_module(self.workspace, parts, own)
 
     def _search_roots(self, module_path: str) -> list[str]:
         assert self.package_root is not None
@@ -209,14 +191,52 @@ class Loader:
         return roots
 
 
+def workspace_module(workspace: Any, parts: list[str], own: str | None = None
+                     ) -> str | None:
+    """The file of module ``parts`` (``["pkg", "sub", "mod"]``) of a Python package that
+    a package of the workspace holds (``src/<name>`` or ``<name>`` with an
+    ``__init__.py``, as catkin_python_setup and an ament_python setup.py install it),
+    not one of the package at ``own``; None when no package holds it, or for a client
+    library whose calls the API tables read (``rospy``, ``rclpy``: ros_comm holds rospy's
+    sources)."""
+    if not parts or parts[0] in api_modules():
+        return None  # its API rows read it, not its own code (ros_comm holds rospy's)
+    packages = getattr(workspace, "packages", {})
+    roots = tuple(p.root for p in packages.values() if p.root)
+    for root, base in _python_packages(roots).get(parts[0], ()):
+        if own is None or os.path.abspath(root) != own:
+            return module_file(base, parts)
+    return None
+
+
+@functools.lru_cache(maxsize=8)
+def _python_packages(roots: tuple[str, ...]) -> dict[str, tuple[tuple[str, str], ...]]:
+    """The Python packages the package folders ``roots`` hold, by name: each (package
+    root, the folder that holds it), in the order of ``roots``."""
+    found: dict[str, list[tuple[str, str]]] = {}
+    for root in roots:
+        for base in (os.path.join(root, "src"), root):
+            try:
+                names = sorted(os.listdir(base))
+            except OSError:
+                continue
+            for name in names:
+                if name.isidentifier() and os.path.isfile(
+                        os.path.join(base, name, "__init__.py")):
+                    found.setdefault(name, []).append((root, base))
+    return {name: tuple(places) for name, places in found.items()}
+
+
 def submodule(package_init: str, name: str) -> str | None:
     """The file of module ``name`` inside the package whose ``__init__.py`` is given."""
     if os.path.basename(package_init) != "__init__.py" or not name.isidentifier():
         return None
-    return _module_file(os.path.dirname(package_init), [name])
+    return module_file(os.path.dirname(package_init), [name])
 
 
-def _module_file(base: str, parts: list[str]) -> str | None:
+def module_file(base: str, parts: list[str]) -> str | None:
+    """The file of module ``parts`` under the folder ``base`` (a module or a package's
+    ``__init__.py``), if there is one."""
     if not parts:
         init = os.path.join(base, "__init__.py")
         return init if os.path.isfile(init) else None

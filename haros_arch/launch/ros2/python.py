@@ -29,6 +29,7 @@ from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
 from ...evaluate import budget, syntax
 from ...evaluate import operations as ops
+from ...extract.python.modules import module_file, workspace_module
 from ...model.launch_tree import PackageUse
 from ...model.location import Location
 from ...model.values import Unknown
@@ -68,6 +69,7 @@ class Interpreter(Expressions):
 
     def __init__(self, path: str, workspace: Workspace, environment: Mapping[str, str]) -> None:
         self.path = path
+        self.launch_file = path
         self.workspace = workspace
         self.environment = environment
         self.diagnostics: list[Diagnostic] = []
@@ -236,13 +238,18 @@ class Interpreter(Expressions):
         return None
 
     def find_module(self, name: str, node: ast.AST) -> Module | None:
-        """The module ``name`` of a folder on the file's ``sys.path``, interpreted once;
-        None when it is not there (a library: a Ref, as before)."""
-        if not name or "." in name or _known_module(name) or not self.search:
+        """The module ``name`` of a folder on the file's ``sys.path``, of a Python package
+        a package of the workspace holds (``from interbotix_xs_modules.xs_launch import
+        declare_interbotix_xsarm_robot_description_launch_arguments``: an ament_python
+        package installs it where launch imports it), or relative to the module being
+        read (``from .xs_launch import *``), interpreted once; None when it is not there
+        (a library: a Ref, as before)."""
+        if not name or _known_module(name.lstrip(".")):
             return None
-        for folder in self.search:
-            source = os.path.realpath(share_source(self.workspace,
-                                                   os.path.join(folder, name + ".py")))
+        level = len(name) - len(name.lstrip("."))
+        parts = [p for p in name.lstrip(".").split(".") if p]
+        for source in self._module_files(level, parts):
+            source = os.path.realpath(source)
             if not os.path.isfile(source) or not self.workspace.readable(
                     source, self.environment):
                 continue
@@ -256,6 +263,23 @@ class Interpreter(Expressions):
             self.modules[source] = module
             return module
         return None
+
+    def _module_files(self, level: int, parts: list[str]) -> list[str]:
+        """Where module ``parts`` may be, in the order Python looks (``level``: the dots
+        of a relative import)."""
+        if level:
+            base = os.path.dirname(self.path or "")
+            if self.path == self.launch_file or not os.path.isfile(
+                    os.path.join(base, "__init__.py")):
+                return []  # a module of no package (launch loads its file as one)
+            for _ in range(level - 1):
+                base = os.path.dirname(base)
+            found = module_file(base, parts)
+            return [found] if found is not None else []
+        out = [share_source(self.workspace, os.path.join(folder, parts[0] + ".py"))
+               for folder in self.search] if len(parts) == 1 else []
+        found = workspace_module(self.workspace, parts)
+        return [*out, found] if found is not None else out
 
     def load_module(self, name: str, source: str, node: ast.AST) -> Module | None:
         from ...files import read_text
