@@ -33,6 +33,7 @@ LAUNCH_SUFFIXES = (".launch", ".launch.xml", ".launch.py", ".launch.yaml", ".lau
 LAUNCH_FOLDER_SUFFIXES = (".py", ".xml", ".yaml", ".yml")
 MAX_LAUNCH_FILES = 400  # per workspace: more are left out, with a note
 MAX_SEARCH_DEPTH = 6    # folders below a package searched for launch files
+MAX_PY_HEAD = 1 << 20   # the bytes of a Python file read for its launch function's name
 # a Python file of a launch/ folder is a launch file when it defines the function
 # ros2 launch calls (a launch-file writer that only mentions it in a string is none:
 # clearpath_generator_common's launch/writer.py)
@@ -71,6 +72,19 @@ def is_launch_file(path: str) -> bool:
     if name.endswith(".xml"):
         return _XML_LAUNCH.search(head) is not None
     return _YAML_LAUNCH.search(head) is not None
+
+
+def _runnable(path: str) -> bool:
+    """False for a Python file named like a launch file that never names the function
+    ``ros2 launch`` calls (interbotix_xs_modules' ``xs_launch/xs_launch.py``, a module
+    of helpers the launch files import): no configuration of its own."""
+    if not path.lower().endswith(".py"):
+        return True
+    try:
+        with open(path, "rb") as handle:
+            return b"generate_launch_description" in handle.read(MAX_PY_HEAD)
+    except OSError:
+        return False
 
 
 def is_project_file(path: str) -> bool:
@@ -139,7 +153,7 @@ def find_launch_files(workspace: Workspace) -> list[str]:
                 if os.path.isdir(path) and not os.path.islink(path):
                     if depth < MAX_SEARCH_DEPTH and entry not in ("test", "tests"):
                         stack.append((path, depth + 1))
-                elif os.path.isfile(path) and is_launch_file(path):
+                elif os.path.isfile(path) and is_launch_file(path) and _runnable(path):
                     found.append(path)
     return sorted(found)
 

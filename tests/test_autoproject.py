@@ -257,3 +257,20 @@ def test_a_launch_file_its_package_cannot_run_is_no_configuration(tmp_path: Path
                                "mux, an ament (ROS 2) package") for note in choice.notes)
     named = choose(str(tmp_path / "ws"), launch=[str(pkg / "launch" / "mux.launch")])
     assert [spec.launch for spec in named.project.configurations] == [["mux/launch/mux.launch"]]
+
+
+def test_a_module_named_like_a_launch_file_is_no_configuration(ws: Path) -> None:
+    """interbotix_xs_modules' ``xs_launch/xs_launch.py`` is a module of helpers the launch
+    files import; it names no ``generate_launch_description``, so ``ros2 launch`` cannot
+    run it: no configuration of its own."""
+    rover = ws / "src" / "rover"
+    write(rover / "rover_modules" / "__init__.py", "")
+    write(rover / "rover_modules" / "rover_launch.py", """\
+        def declare_rover_arguments():
+            return []
+        """)
+    choice = choose(str(ws), environment={})
+    configs = {c.name: c.launch for c in choice.project.configurations}
+    assert configs == {"bringup/robot": ["bringup/launch/robot.launch"],
+                       "bringup/sim": ["bringup/launch/sim.launch"],
+                       "rover/rover": ["rover/launch/rover.launch.py"]}
