@@ -444,6 +444,12 @@ class Scope:
             self._placed.setdefault(key_of(decl), []).append(
                 (write.at.extent.start.offset, write.at.extent.end.offset, value))
 
+    def written(self, decl: Cursor) -> bool:
+        """Whether this body writes variable ``decl`` (assigns, increments, ``+=``) or
+        passes it by reference to a call that may."""
+        key = key_of(decl)
+        return key in self.writes or key in self._placed or key in self._passed
+
     def written_before(self, decl: Cursor, at: Cursor) -> Cursor | None:
         """What local variable ``decl``, written several times in this body, holds where
         ``at`` reads it: the value of the write that ends last before the read (``name

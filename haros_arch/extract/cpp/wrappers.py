@@ -1055,14 +1055,15 @@ class Wrappers:
         """The literal values (``bool``, numbers) the call site passes to the
         parameters of ``function`` that its body never assigns, by name."""
         params = _parameters(function)
-        if not params:
+        sites = self.finder.sites
+        if not params or sites is None:
             return {}
         given = _with_defaults(call, args) if len(args) < len(params) else args
-        body = _text_of(function, self.finder.source)
+        body = sites.scope(function)
         values: dict[str, object] = {}
         for param, arg in zip(params, given, strict=False):
             name = param.spelling
-            if not name or body is None or _assigned(name, body):
+            if not name or body.written(param):
                 continue
             value: object = scope.boolean(arg)
             if value is None:
@@ -1869,31 +1870,5 @@ def _dependent_name(name: str) -> bool:
     return "type-parameter" in name
 
 
-# an assignment to, or an increment or decrement of, a name (``name = ..``, ``name += ..``,
-# ``++name``): the text around the name
-_ASSIGNED = (r"(?<![\w.>])%s\s*(?:[-+*/%%&|^]|<<|>>)?=(?!=)"
-             r"|(?:\+\+|--)\s*%s\b|(?<![\w.>])%s\s*(?:\+\+|--)")
-
-
 def _passed_value(values: dict[str, object], name: str) -> object:
     return values.get(name, Unknown())
-
-
-def _assigned(name: str, body: bytes) -> bool:
-    """Whether ``body`` may assign the variable ``name``, read from its text."""
-    word = re.escape(name)
-    return re.search((_ASSIGNED % (word, word, word)).encode(), body) is not None
-
-
-def _text_of(function: Cursor, source: dict[str, bytes]) -> bytes | None:
-    """The text of ``function``'s body (not its parameters' defaults), when it is in
-    one file read."""
-    body = next((c for c in function.get_children()
-                 if c.kind == CursorKind.COMPOUND_STMT), None)
-    if body is None:
-        return None
-    start, end = body.extent.start, body.extent.end
-    if start.file is None or end.file is None or start.file.name != end.file.name:
-        return None
-    data = source.get(start.file.name)
-    return None if data is None else data[start.offset:end.offset]
