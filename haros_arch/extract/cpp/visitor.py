@@ -677,13 +677,9 @@ class CallFinder:
         found: set[str] = set()
         for calls in self.wrappers.preorder.values():
             for call in calls:
-                if call.kind != CursorKind.CALL_EXPR or call.referenced is not None:
-                    continue
-                head = next(iter(call.get_children()), None)
-                text = self.reader.text(head) if head is not None else ""
-                name = _LAST_NAME.search(text)
-                if name is not None:
-                    found.add(name.group(1))
+                if call.kind == CursorKind.CALL_EXPR and call.referenced is None:
+                    found.add(call.spelling or _recovered_name(call))
+        found.discard("")
         return found
 
     def _dependent(self, call: Cursor, conditions: tuple[Condition, ...],
@@ -2124,7 +2120,6 @@ def _literal(expr: Cursor, scope: Scope) -> object:
 
 MAX_LIST_DEPTH = 12  # the wrappers between an argument and its braced list
 MAX_CHOICE_DEPTH = 4  # the locals between a name argument and its ``?:``
-_LAST_NAME = re.compile(r"(\w+)\s*(?:<[^<>]*>)?\s*$")  # the name a callee's text ends with
 
 
 def _scalar(ctype: Type) -> bool:
