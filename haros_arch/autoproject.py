@@ -78,8 +78,9 @@ def _runnable(path: str) -> bool:
     """False for a Python file named like a launch file that never names the function
     ``ros2 launch`` calls (interbotix_xs_modules' ``xs_launch/xs_launch.py``, a module
     of helpers the launch files import): no configuration of its own."""
-    if not path.lower().endswith(".py"):
-        return True
+    name = os.path.basename(path).lower()
+    if not name.endswith(".py") or not name.endswith(LAUNCH_SUFFIXES):
+        return True  # (a launch/ folder's .py is a launch file by its content already)
     try:
         with open(path, "rb") as handle:
             return b"generate_launch_description" in handle.read(MAX_PY_HEAD)
