@@ -45,7 +45,9 @@ from .python_values import (
     MAX_READ,
     MAX_SIZE,
     MAX_SOURCE,
+    ActionClass,
     Budget,
+    Constructing,
     Func,
     LaunchDescription,
     Lazy,
@@ -53,6 +55,7 @@ from .python_values import (
     Raised,
     ReadOnlyFile,
     Ref,
+    SuperOf,
     _Break,
     _Continue,
     _Flow,
@@ -149,8 +152,8 @@ class Interpreter(Expressions):
                 continue  # docstring
             elif isinstance(stmt, ast.If) and "__name__" in ast.dump(stmt.test):
                 continue  # if __name__ == '__main__': never run
-            elif isinstance(stmt, ast.ClassDef):  # never run; a use of it is reported
-                env[stmt.name] = Unknown(f"class {stmt.name} (not interpreted)")
+            elif isinstance(stmt, ast.ClassDef):
+                env[stmt.name] = self.class_(stmt, env)
             else:
                 # a call, loop or test at module level runs when launch imports the file
                 # (``CAMERAS.append(...)`` fills a list generate_launch_description
@@ -184,6 +187,81 @@ class Interpreter(Expressions):
             elif item is not None:
                 self.unsupported(node, f"{type(item).__name__} is not a launch action")
         return out
+
+    def class_(self, stmt: ast.ClassDef, env: dict[str, Any]) -> Any:
+        """A class of the interpreted code: an ``ActionClass`` when it derives from one
+        launch action the API builds (or from another such class) and only adds a
+        constructor (launch's ``expose_action`` decorator aside, which names it for XML
+        and YAML files); otherwise never run, and a use of it is reported. A method other
+        than the constructor may be one launch calls (``execute``, ``visit``), so the
+        action would not be the base's."""
+        unknown = Unknown(f"class {stmt.name} (not interpreted)")
+        if len(stmt.bases) != 1 or stmt.keywords or not all(
+                self._naming_decorator(d, env) for d in stmt.decorator_list):
+            return unknown
+        init: Func | None = None
+        for item in stmt.body:
+            if isinstance(item, ast.FunctionDef) and item.name == "__init__" \
+                    and not item.decorator_list and item.args.args:
+                init = Func(item, env)
+            elif not (isinstance(item, ast.Pass) or (
+                    isinstance(item, ast.Expr) and isinstance(item.value, ast.Constant))):
+                return unknown
+        base = self._quiet(stmt.bases[0], env)
+        if isinstance(base, ActionClass) or (isinstance(base, Ref) and self._builds(base)):
+            return ActionClass(stmt.name, base, init)
+        return unknown
+
+    def _quiet(self, node: ast.expr, env: dict[str, Any]) -> Any:
+        """A name or dotted name's value, saying nothing when it is not defined."""
+        if isinstance(node, ast.Name):
+            scope: dict[str, Any] | None = env
+            while scope is not None:
+                if node.id in scope:
+                    return scope[node.id]
+                scope = scope.get("__closure__")
+            return self.globals.get(node.id)
+        if isinstance(node, ast.Attribute):
+            owner = self._quiet(node.value, env)
+            if isinstance(owner, Ref):
+                return Ref(f"{owner.qualified}.{node.attr}")
+            if isinstance(owner, Module):
+                return owner.names.get(node.attr)
+        return None
+
+    def _builds(self, ref: Ref) -> bool:
+        """Whether calling ``ref`` is a launch action (or description) the API builds."""
+        short = ref.qualified.rsplit(".", 1)[-1]
+        return short in self.api and _known_module(ref.qualified) and short[:1].isupper()
+
+    def _naming_decorator(self, node: ast.expr, env: dict[str, Any]) -> bool:
+        """Whether a class decorator is launch's ``expose_action`` / ``expose_substitution``
+        (``@expose_action('arm_description')``), which only registers the class."""
+        func = node.func if isinstance(node, ast.Call) else node
+        ref = self._quiet(func, env)
+        return isinstance(ref, Ref) and ref.qualified.startswith("launch.") and \
+            ref.qualified.rsplit(".", 1)[-1] in ("expose_action", "expose_substitution")
+
+    def construct(self, cls: ActionClass, args: list[Any], kwargs: dict[str, Any],
+                  node: ast.AST) -> Any:
+        """``cls(...)``: its constructor run with ``self`` being built; the action is the
+        one its ``super().__init__`` (or ``Base.__init__(self, ...)``) built."""
+        if cls.init is None:
+            return self.construct_base(cls.base, args, kwargs, node)
+        instance = Constructing(cls)
+        init = Func(cls.init.node, {"__closure__": cls.init.closure,
+                                    "super": SuperOf(instance)})
+        self.call_function(init, [instance, *args], kwargs, node)
+        if instance.built is None:
+            return self.unsupported(node, f"class {cls.name}: its constructor does not "
+                                          "build the action it derives from")
+        return instance.built
+
+    def construct_base(self, base: Any, args: list[Any], kwargs: dict[str, Any],
+                       node: ast.AST) -> Any:
+        if isinstance(base, ActionClass):
+            return self.construct(base, args, kwargs, node)
+        return self.call(base, args, kwargs, node)
 
     def import_(self, stmt: ast.Import | ast.ImportFrom, env: dict[str, Any]) -> None:
         if isinstance(stmt, ast.Import):
@@ -334,6 +412,8 @@ class Interpreter(Expressions):
             self.for_(stmt, env)
         elif isinstance(stmt, ast.FunctionDef):
             env[stmt.name] = Func(stmt, env)
+        elif isinstance(stmt, ast.ClassDef):
+            env[stmt.name] = self.class_(stmt, env)
         elif isinstance(stmt, (ast.Import, ast.ImportFrom)):
             self.import_(stmt, env)
         elif isinstance(stmt, ast.Try):
@@ -369,6 +449,9 @@ class Interpreter(Expressions):
             elif isinstance(container, list) and isinstance(key, int) and (
                     -len(container) <= key < len(container)):
                 container[key] = value
+        elif isinstance(target, ast.Attribute) and isinstance(
+                owner := self.eval(target.value, env), Constructing):
+            owner.attributes[target.attr] = value  # self.name = ... in a constructor
         else:
             self.unsupported(target, "assignment to this target is not interpreted")
 
@@ -599,6 +682,19 @@ class Interpreter(Expressions):
     def call(self, func: Any, args: list[Any], kwargs: dict[str, Any], node: ast.AST) -> Any:
         if isinstance(func, Func):
             return self.call_function(func, args, kwargs, node)
+        if isinstance(func, ActionClass):
+            return self.construct(func, args, kwargs, node)
+        if isinstance(func, SuperOf):  # super(), or super(Class, self)
+            return func
+        if isinstance(func, _Bound) and isinstance(func.owner, SuperOf) \
+                and func.attr == "__init__":
+            func.owner.instance.built = self.construct_base(
+                func.owner.instance.cls.base, args, kwargs, node)
+            return None
+        if isinstance(func, Ref) and func.qualified.endswith(".__init__") and args \
+                and isinstance(args[0], Constructing):  # Base.__init__(self, ...)
+            args[0].built = self.construct_base(args[0].cls.base, args[1:], kwargs, node)
+            return None
         if isinstance(func, Ref):
             if func.qualified in ("sys.path.append", "sys.path.insert"):
                 return self.add_search(func, args, node)

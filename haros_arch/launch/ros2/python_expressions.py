@@ -27,6 +27,7 @@ from . import entities as e
 from .python_values import (
     LIMITS,
     Budget,
+    Constructing,
     Context,
     Func,
     Lazy,
@@ -326,6 +327,13 @@ class Expressions(Walker):
             return _Environ()
         if isinstance(owner, PurePosixPath) and node.attr in _PATH_ATTRIBUTES:
             return getattr(owner, node.attr)
+        if isinstance(owner, Constructing):  # self.x in a constructor
+            if node.attr in owner.attributes:
+                return owner.attributes[node.attr]
+            if owner.built is None:
+                return self.unsupported(node, f"{_source(node)} is not set before it is "
+                                              "read")
+            owner = owner.built
         if isinstance(owner, e.DeclareArg) and node.attr == "name":
             return owner.name  # DeclareLaunchArgument.name, a property
         return _Bound(owner, node.attr)

@@ -100,6 +100,35 @@ class Func:
     closure: dict[str, Any]
 
 
+@dataclass(eq=False)
+class ActionClass:
+    """A class the interpreted code defines on a launch action (``class
+    DeclareArmDescription(DeclareLaunchArgument)``) with a constructor at most: calling it
+    builds ``base`` (a ``Ref`` of the API or another such class) with what the
+    constructor hands to ``super().__init__``."""
+
+    name: str
+    base: Any
+    init: Func | None
+
+
+@dataclass(eq=False)
+class Constructing:
+    """``self`` in an ``ActionClass``'s constructor: the attributes it sets, and the
+    action its base built once ``super().__init__`` ran."""
+
+    cls: ActionClass
+    attributes: dict[str, Any] = field(default_factory=dict)
+    built: Any = None
+
+
+@dataclass(frozen=True)
+class SuperOf:
+    """``super()`` in an ``ActionClass``'s constructor."""
+
+    instance: Constructing
+
+
 @dataclass(frozen=True)
 class ReadOnlyFile:
     """What ``open(path)`` gives: only ``read()`` and ``yaml.safe_load`` use it."""
