@@ -502,6 +502,18 @@ def test_ros1_mavros_loads_exported_plugins_its_black_and_white_lists_let_throug
         ("publish", "/mavros/imu/data")]
 
 
+def test_ros1_mavros_before_0_18_loads_plugins_of_its_older_base():
+    # mavros 0.x (2014-2016): plugin_loader("mavros", "mavplugin::MavRosPlugin")
+    gps = plugin("mavros", "gps", "mavplugin::GPSPlugin",
+                 call("publish", "~gps/fix", "sensor_msgs/NavSatFix"))
+    gps.plugin_base = "mavplugin::MavRosPlugin"
+    mavros = Node("mavros", "mavros_node", calls=[call("read", "~fcu_url", "str")])
+    config = graph([NodeDecl("/mavros", "mavros", "mavros_node")],
+                   [ParamDecl("/mavros/plugin_blacklist", ["image_pub"])], [mavros, gps])
+    assert ("publish", "/mavros/gps/fix") in links_of(config, "/mavros")
+    assert config.node("/mavros").completeness == "complete"
+
+
 def _ros1_controllers(decls, extra_nodes=()):
     diff = plugin("diff_drive_controller", "diff_drive_controller/DiffDriveController",
                   "diff_drive_controller::DiffDriveController",

@@ -234,9 +234,11 @@ HOSTS: tuple[Host, ...] = (
     # loader declares unless its lists say otherwise; ROS 1 plugins make their calls on
     # the mavros node through handles their code names (``~imu``); a ROS 2 plugin is a
     # node of its own, ``Plugin(uas, "imu")`` (plugin.hpp: Node::make_shared(subnode, ...)),
-    # in the process's namespace
+    # in the process's namespace; before mavros 0.18 (2016) the ROS 1 plugins' base was
+    # ``mavplugin::MavRosPlugin`` (mavros.cpp: ``plugin_loader("mavros", ...)``)
     Host("mavros", ("mavros_node",), 1, (
-        Slot(EXPORTED, None, ("mavros", "mavros::plugin::PluginBase"),
+        Slot(EXPORTED, None, ("mavros", "mavros::plugin::PluginBase",
+                              "mavplugin::MavRosPlugin"),
              lists=("plugin_blacklist", "plugin_whitelist")),)),
     Host("mavros", ("mavros_node",), 2, (
         Slot(EXPORTED, None, ("mavros", "mavros::plugin::PluginFactory"), placement="node",
