@@ -44,7 +44,16 @@ def test_names_resolve_with_namespace_private_and_remaps():
     }
     assert sorted(t.name for t in config.topics) == ["/global", "/r1/out", "/shared_in"]
     assert [s.name for s in config.services] == ["/r1/motors/reset"]
-    assert config.nodes[0].remaps == [("in", "/shared_in"), ("chatter", "out")]
+    assert config.nodes[0].remaps == [("chatter", "out"), ("in", "/shared_in")]
+
+
+def test_a_ros1_remap_tag_wins_over_the_same_rule_in_args():
+    # roslaunch's command line: the node's args, then its <remap> rules; roscpp keeps the
+    # last rule of a name
+    talker = node("p", "talker", call("publish", "chatter", "std_msgs/String"))
+    config = graph([NodeDecl("/talker", "p", "talker", remaps=[("chatter", "from_tag")],
+                             args="chatter:=from_args")], nodes=[talker])
+    assert [link.rosname.full for link in config.links] == ["/from_tag"]
 
 
 def test_topics_join_publishers_and_subscribers_with_all_types():

@@ -474,8 +474,11 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
     # a ROS 1 node takes ``from:=to`` anywhere on its command line; rcl reads remaps only
     # after ``--ros-args`` (the launch reader has them in ``decl.remaps``): a ROS 2
     # node's plain argument (a spawner's ``--controller-ros-args "-r a:=b"``, meant for
-    # the controller it loads) is none
-    remaps = list(decl.remaps) + (remaps_in_args(decl.args) if decl.ros_version == 1 else [])
+    # the controller it loads) is none. roslaunch puts a ROS 1 node's ``args`` before the
+    # ``<remap>`` rules on its command line (node_args.create_local_process_args), and
+    # roscpp and rospy keep the last rule of a name: a ``<remap>`` wins over ``args``
+    remaps = [*remaps_in_args(decl.args), *decl.remaps] if decl.ros_version == 1 else \
+        list(decl.remaps)
     return NodeInstance(decl.name, node, namespace=decl.namespace, remaps=remaps,
                         args=decl.args, conditions=decl.conditions, location=decl.location,
                         ros_version=decl.ros_version, test=decl.is_test)
