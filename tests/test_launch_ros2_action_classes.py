@@ -39,6 +39,11 @@ class LeftDriver(NamedDriver):
         super(LeftDriver, self).__init__('left', namespace='arm')
 
 
+class SpareDriver(NamedDriver):
+    def __init__(self):
+        NamedDriver.__init__(self, 'spare')
+
+
 class Watched(Node):
     def execute(self, context):
         return super().execute(context)
@@ -60,13 +65,14 @@ def generate_launch_description():
              parameters=[{'robot_description': LaunchConfiguration('robot_description')}]),
         NamedDriver('right'),
         LeftDriver(),
+        SpareDriver(),
     ])
 """)
     assert model.args["robot_description"] == "urdf/wx250"
     params = {p.name: p.value for p in model.params}
     assert params["/rsp/robot_description"] == "urdf/wx250"
     assert [n.name for n in model.nodes] == [
-        "/rsp", "/right_driver", "/arm/left_driver"]
+        "/rsp", "/right_driver", "/arm/left_driver", "/spare_driver"]
     assert "LAUNCH_PY_UNSUPPORTED" not in codes(model)
 
 

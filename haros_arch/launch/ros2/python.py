@@ -691,9 +691,13 @@ class Interpreter(Expressions):
             func.owner.instance.built = self.construct_base(
                 func.owner.instance.cls.base, args, kwargs, node)
             return None
-        if isinstance(func, Ref) and func.qualified.endswith(".__init__") and args \
-                and isinstance(args[0], Constructing):  # Base.__init__(self, ...)
-            args[0].built = self.construct_base(args[0].cls.base, args[1:], kwargs, node)
+        if args and isinstance(args[0], Constructing) and (  # Base.__init__(self, ...)
+                (isinstance(func, Ref) and func.qualified.endswith(".__init__"))
+                or (isinstance(func, _Bound) and isinstance(func.owner, ActionClass)
+                    and func.attr == "__init__")):
+            base = func.owner if isinstance(func, _Bound) else Ref(
+                func.qualified.removesuffix(".__init__"))
+            args[0].built = self.construct_base(base, args[1:], kwargs, node)
             return None
         if isinstance(func, Ref):
             if func.qualified in ("sys.path.append", "sys.path.insert"):
