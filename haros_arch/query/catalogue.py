@@ -391,11 +391,21 @@ def merge(findings: Iterable[Finding]) -> list[Finding]:
     """One problem, one finding: matches that say the same thing about the same entities
     are one finding, wherever they are found: at two call sites (a node subscribing to
     one topic twice; the second place is in ``also``) or in several configurations
-    (``configurations`` lists them)."""
+    (``configurations`` lists them). Instances that share a name (``node:/requester``,
+    ``node:/requester#2``: one executable started four times) count as the same entity
+    when the match says the same thing at the same place about each: one finding that
+    involves them all."""
     merged: dict[tuple[Any, ...], Finding] = {}
+    # the same words at the same place about instances of one name -> the finding's key
+    alias: dict[tuple[Any, ...], tuple[Any, ...]] = {}
     for finding in findings:
-        key = (finding.rule, finding.severity, finding.title, finding.message,
-               finding.entities)
+        said = (finding.rule, finding.severity, finding.title, finding.message)
+        key = (*said, finding.entities)
+        loose = (*said, tuple(_INSTANCE.sub("", e) for e in finding.entities),
+                 finding.location)
+        if key not in merged and loose in alias:
+            key = alias[loose]
+        alias.setdefault(loose, key)
         known = merged.get(key)
         if known is None:
             merged[key] = finding
@@ -404,8 +414,14 @@ def merge(findings: Iterable[Finding]) -> list[Finding]:
         places = tuple(p for p in dict.fromkeys((*known.also, finding.location,
                                                  *finding.also))
                        if p != known.location)
-        merged[key] = replace(known, configurations=configs, also=places)
+        merged[key] = replace(known, configurations=configs, also=places,
+                              entities=tuple(dict.fromkeys((*known.entities,
+                                                            *finding.entities))))
     return list(merged.values())
+
+
+# the suffix of an entity's id that tells apart instances of one name (``node:/a#2``)
+_INSTANCE = re.compile(r"#\d+$")
 
 
 def explain(rule: Rule) -> str:
