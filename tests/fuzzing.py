@@ -375,7 +375,9 @@ ROS1_TOKENS = [*EVAL, '<arg name="y" default="$(arg x)$(arg x)"/>', '<include fi
 ROS2_TOKENS = [*EVAL, '<let name="y" value="$(var x)$(var x)"/>', '<include file="',
                '<node pkg="fz2" exec="n" name="n">', 'OpaqueFunction', 'lambda',
                'LaunchConfiguration(', 'DeclareLaunchArgument(', 'for i in ', 'while ', 'def f(',
-               'import os', 'IfCondition(', 'PythonExpression([', '**']
+               'import os', 'IfCondition(', 'PythonExpression([', '**',
+               '\nclass A(DeclareLaunchArgument):\n    def __init__(self, *a, **k):\n'
+               '        super().__init__(*a, **k)\n', 'A(', 'self.', 'Node.__init__(self, ']
 PYTHON_TOKENS = [*EVAL[1:], "glob(", "os.path.join(", "data_files.append(", "+= [", "f'{",
                  ":{10**9}}'", "rospy.Publisher(", "create_publisher(", "for f in ",
                  "[x for x in ", "'%s' % ", ".format(", "import glob", "package_name"]
