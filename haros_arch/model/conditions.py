@@ -18,6 +18,9 @@ ConditionKind = Literal["launch", "source", "hint"]
 # per element (``PrimitiveCall.name_each``): where the graph knows the elements, each
 # call it makes stands for one turn of the loop, which is then no condition of it
 EACH_STATEMENT = "for each"
+# the statement of a call's enclosing ``try`` block: the call runs unless something
+# before it in the block throws, so the block is no condition of its existing
+TRY_STATEMENT = "try"
 # the end of a ``PrimitiveCall.variable`` that holds a parameter object, not its value:
 # rclpy's ``self.origin_param = self.declare_parameter(..)``, read by a condition as
 # ``self.origin_param.value``
@@ -166,3 +169,11 @@ def same_conditions(first: tuple[Condition, ...], second: tuple[Condition, ...])
         return False
     return {(c.text.strip(), c.statement) for c in first} == {
         (c.text.strip(), c.statement) for c in second}
+
+
+def undecided(conditions: tuple[Condition, ...]) -> tuple[Condition, ...]:
+    """The conditions of a conjunction under which its entity may not exist. What an
+    entity keeps is what the configuration could not decide (the graph takes off the
+    conditions it decides true and drops the entity under one decided false); of these,
+    an enclosing ``try`` is no condition of existing (``TRY_STATEMENT``)."""
+    return tuple(c for c in conditions if c.statement != TRY_STATEMENT)
