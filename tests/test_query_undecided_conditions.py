@@ -8,7 +8,8 @@ such a match in its ``<id>-undecided`` info, which names the condition; a rule t
 on an absence (no publisher, nobody reads it) counts one whose only partners exist under
 undecided conditions there too, where it used to say nothing. A condition that the
 entities of a finding share (a launch ``if`` of both, the same ``if`` of one node) is
-no reason: the one exists wherever the other does. A ``try`` block is no condition."""
+no reason: the one exists wherever the other does. A ``try`` block is no condition, nor
+a ``do ... while`` loop, whose body runs at least once."""
 
 from __future__ import annotations
 
@@ -23,6 +24,7 @@ NAV350 = ("{text: 'getScannerName().compare(NAV_350) == 0', kind: source, statem
 JOY = ("{text: '$(arg joy)', kind: launch, statement: if, "
        "location: {file: launch/a.launch, line: 3}}")
 TRY = "{text: '', kind: source, statement: try}"
+DO = "{text: 'more', kind: source, statement: do}"
 
 
 def findings(rule_id: str, text: str) -> dict[str, list[str]]:
@@ -168,7 +170,8 @@ def test_the_same_premise_decided_or_under_a_try_is_the_finding(case) -> None:
         return
     for text in (model.replace(f"conditions: [{JOY}]", "conditions: []").replace(
             f"conditions: [{NAV350}]", "conditions: []"),
-            model.replace(JOY, TRY).replace(NAV350, TRY)):
+            model.replace(JOY, TRY).replace(NAV350, TRY),
+            model.replace(JOY, DO).replace(NAV350, DO)):
         found = findings(rule_id, text)
         assert list(found) == [rule_id], found
 
@@ -203,3 +206,16 @@ links:
      conditions: [{NAV350}]}}
 """
     assert list(findings("multiple-publishers", model)) == ["multiple-publishers"]
+
+
+def test_a_call_in_the_body_of_a_do_loop_is_not_conditional() -> None:
+    model = f"""
+links:
+  - {{kind: publish, node: /ekf, name: /odometry/filtered, type: nav_msgs/Odometry,
+     conditions: [{DO}]}}
+  - {{kind: publish, node: /ekf, name: /odometry/twist, type: nav_msgs/Odometry,
+     conditions: [{DO}, {NAV350}]}}
+"""
+    found = findings("conditional-communication", model)
+    assert len(found["conditional-communication"]) == 1
+    assert "/odometry/twist" in found["conditional-communication"][0]

@@ -18,9 +18,11 @@ ConditionKind = Literal["launch", "source", "hint"]
 # per element (``PrimitiveCall.name_each``): where the graph knows the elements, each
 # call it makes stands for one turn of the loop, which is then no condition of it
 EACH_STATEMENT = "for each"
-# the statement of a call's enclosing ``try`` block: the call runs unless something
-# before it in the block throws, so the block is no condition of its existing
-TRY_STATEMENT = "try"
+# the statements of an enclosing block that runs at least once, no condition of what it
+# makes: a ``try`` block (it runs unless something before the call throws) and the body
+# of a ``do ... while`` (its first turn always runs; robot_localization subscribes each
+# ``imuN`` in a ``do`` loop, under an ``if`` that is its condition)
+RUN_ONCE_STATEMENTS = frozenset({"try", "do"})
 # the end of a ``PrimitiveCall.variable`` that holds a parameter object, not its value:
 # rclpy's ``self.origin_param = self.declare_parameter(..)``, read by a condition as
 # ``self.origin_param.value``
@@ -175,5 +177,5 @@ def undecided(conditions: tuple[Condition, ...]) -> tuple[Condition, ...]:
     """The conditions of a conjunction under which its entity may not exist. What an
     entity keeps is what the configuration could not decide (the graph takes off the
     conditions it decides true and drops the entity under one decided false); of these,
-    an enclosing ``try`` is no condition of existing (``TRY_STATEMENT``)."""
-    return tuple(c for c in conditions if c.statement != TRY_STATEMENT)
+    a block that runs at least once is no condition of existing (``RUN_ONCE_STATEMENTS``)."""
+    return tuple(c for c in conditions if c.statement not in RUN_ONCE_STATEMENTS)
