@@ -145,6 +145,15 @@ parameters:
 links:
   - {{kind: read, node: /base, name: /base/rate, given: ~rate, type: double}}
 """, "if ($(arg joy))"),
+    # the only use of the remap's name is a call under a condition of the node's code
+    "remap-unused#partner": (f"""
+nodes:
+  - {{name: /teleop, node: known_teleop/node, remaps: [[cmd_vel, /base/cmd_vel]],
+     remaps_applied: [/cmd_vel]}}
+links:
+  - {{kind: publish, node: /teleop, name: /base/cmd_vel, given: cmd_vel,
+     type: geometry_msgs/Twist, conditions: [{NAV350}]}}
+""", "compare(NAV_350) == 0)"),
 }
 
 
