@@ -138,6 +138,20 @@ links:
   - {{kind: read, node: /base, name: /base/rate, given: ~rate, type: double,
      conditions: [{NAV350}]}}
 """, "compare(NAV_350) == 0)"),
+    # read without a default only under a condition; another read has a default
+    "parameter-read-not-set#default": (f"""
+packages:
+  - {{name: base, nodes: [{{name: base/base, package: base, executable: base,
+     calls: [{{kind: read, name: ~rate, type: double, default: 10.0, has_default: true,
+               location: {{file: base/src/base.cpp, line: 20}}}}]}}]}}
+nodes:
+  - {{name: /base, node: base/base}}
+links:
+  - {{kind: read, node: /base, name: /base/rate, given: ~rate, type: double,
+     location: {{file: base/src/base.cpp, line: 20}}}}
+  - {{kind: read, node: /base, name: /base/rate, given: ~rate, type: double,
+     location: {{file: base/src/base.cpp, line: 30}}, conditions: [{NAV350}]}}
+""", "compare(NAV_350) == 0)"),
     # set only under a launch condition the reader does not have
     "parameter-read-not-set#partner": (f"""
 parameters:
