@@ -242,3 +242,18 @@ links:
     found = findings("conditional-communication", model)
     assert len(found["conditional-communication"]) == 1
     assert "/odometry/twist" in found["conditional-communication"][0]
+
+
+def test_a_node_a_timer_action_starts_exists() -> None:
+    """A ROS 2 TimerAction starts what it holds once its period has passed: no condition
+    of its existing (its launch condition is ``timer``)."""
+    timer = ("{text: 'after timer period=2.0', kind: launch, statement: timer, "
+             "location: {file: launch/a.launch.py, line: 9}}")
+    model = f"""
+links:
+  - {{kind: subscribe, node: /late, name: /odom, type: nav_msgs/Odometry,
+     conditions: [{timer}]}}
+"""
+    assert list(findings("subscriber-without-publisher", model)) == [
+        "subscriber-without-publisher"]
+    assert findings("conditional-communication", model) == {}

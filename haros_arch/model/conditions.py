@@ -19,10 +19,11 @@ ConditionKind = Literal["launch", "source", "hint"]
 # call it makes stands for one turn of the loop, which is then no condition of it
 EACH_STATEMENT = "for each"
 # the statements of an enclosing block that runs at least once, no condition of what it
-# makes: a ``try`` block (it runs unless something before the call throws) and the body
+# makes: a ``try`` block (it runs unless something before the call throws), the body
 # of a ``do ... while`` (its first turn always runs; robot_localization subscribes each
-# ``imuN`` in a ``do`` loop, under an ``if`` that is its condition)
-RUN_ONCE_STATEMENTS = frozenset({"try", "do"})
+# ``imuN`` in a ``do`` loop, under an ``if`` that is its condition) and a ROS 2 launch
+# ``TimerAction`` (what it holds starts once its period has passed)
+RUN_ONCE_STATEMENTS = frozenset({"try", "do", "timer"})
 # the end of a ``PrimitiveCall.variable`` that holds a parameter object, not its value:
 # rclpy's ``self.origin_param = self.declare_parameter(..)``, read by a condition as
 # ``self.origin_param.value``

@@ -378,7 +378,7 @@ def _same_condition(item: Any, condition: Condition) -> tuple[Any, ...]:
 def undecided(charge: Charge, values: Any, given: Any = ()) -> list[Any]:
     """The conditions not decided for the configuration under which the node instances,
     links or parameters ``values`` (one or a list) may not exist (``model.conditions.
-    undecided``: what the graph could not decide, an enclosing ``try`` or ``do`` aside),
+    undecided``: what the graph could not decide, a ``try``, ``do`` or timer aside),
     each once;
     none that ``given`` (one or a list) has too, as those hold wherever it exists. A
     finding that rests on ``values`` existing is undecided when this is not empty (an
