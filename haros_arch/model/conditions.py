@@ -18,6 +18,12 @@ ConditionKind = Literal["launch", "source", "hint"]
 # per element (``PrimitiveCall.name_each``): where the graph knows the elements, each
 # call it makes stands for one turn of the loop, which is then no condition of it
 EACH_STATEMENT = "for each"
+# the statements of an enclosing block that runs at least once, no condition of what it
+# makes: a ``try`` block (it runs unless something before the call throws), the body
+# of a ``do ... while`` (its first turn always runs; robot_localization subscribes each
+# ``imuN`` in a ``do`` loop, under an ``if`` that is its condition) and a ROS 2 launch
+# ``TimerAction`` (what it holds starts once its period has passed)
+RUN_ONCE_STATEMENTS = frozenset({"try", "do", "timer"})
 # the end of a ``PrimitiveCall.variable`` that holds a parameter object, not its value:
 # rclpy's ``self.origin_param = self.declare_parameter(..)``, read by a condition as
 # ``self.origin_param.value``
@@ -166,3 +172,11 @@ def same_conditions(first: tuple[Condition, ...], second: tuple[Condition, ...])
         return False
     return {(c.text.strip(), c.statement) for c in first} == {
         (c.text.strip(), c.statement) for c in second}
+
+
+def undecided(conditions: tuple[Condition, ...]) -> tuple[Condition, ...]:
+    """The conditions of a conjunction under which its entity may not exist. What an
+    entity keeps is what the configuration could not decide (the graph takes off the
+    conditions it decides true and drops the entity under one decided false); of these,
+    a block that runs at least once is no condition of existing (``RUN_ONCE_STATEMENTS``)."""
+    return tuple(c for c in conditions if c.statement not in RUN_ONCE_STATEMENTS)

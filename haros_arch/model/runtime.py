@@ -13,7 +13,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any, ClassVar
 
-from .conditions import Condition
+from .conditions import Condition, undecided
 from .diagnostic import Diagnostic
 from .launch_tree import LaunchItem, PackageUse
 from .location import NOWHERE, Location
@@ -488,6 +488,9 @@ class Remap:
     nodes: list[NodeInstance] = field(default_factory=list)
     users: list[NodeInstance] = field(default_factory=list)
     unseen: list[NodeInstance] = field(default_factory=list)
+    # the conditions not decided for the configuration under which alone a node given
+    # it makes the links it renames (``_conditional_use``): not a user for certain
+    conditional: list[Condition] = field(default_factory=list)
     # what the nodes use beside the name: their names in its namespace or ending as it
     # does (``cmd_vel_mux/output`` for ``cmd_vel_mux/mux_cmd_vel``)
     near: list[str] = field(default_factory=list)
@@ -563,6 +566,28 @@ def _may_be_used(instance: NodeInstance, source: str, name: str) -> bool:
     return False
 
 
+def _conditional_use(instance: NodeInstance, name: str, target: str | None
+                     ) -> tuple[Condition, ...]:
+    """The conditions under which alone ``instance`` makes the links that use a remap of
+    ``name`` to ``target`` (those it renamed, and those of the target's name)
+    (``undecided``: each link's own, beside its instance's, as the remap goes with the
+    instance), when every such link has one; else none (a link made for certain, or a
+    use through no link seen: a handle's namespace)."""
+    found: list[Condition] = []
+    renamed = False
+    for link in instance.links:
+        if link.rosname.full != target and resolve(
+            link.rosname.given, instance.namespace, instance.name
+        ) != name:
+            continue
+        renamed = True
+        own = [c for c in undecided(link.conditions) if c not in instance.conditions]
+        if not own:
+            return ()
+        found.extend(c for c in own if c not in found)
+    return tuple(found) if renamed else ()
+
+
 def _near(instance: NodeInstance, name: str) -> list[str]:
     namespace, _, own = name.rpartition("/")
     found: set[str] = set()
@@ -618,7 +643,10 @@ def remaps_of(nodes: list[NodeInstance]) -> list[Remap]:
                 continue
             remap = found.setdefault((source, target, name), Remap(source, target))
             remap.nodes.append(instance)
-            if used:
+            maybe = _conditional_use(instance, name, rules.get(name)) if used else ()
+            if maybe:
+                remap.conditional.extend(c for c in maybe if c not in remap.conditional)
+            elif used:
                 remap.users.append(instance)
             elif _could_use(instance, name) or _may_be_used(instance, source, name):
                 remap.unseen.append(instance)

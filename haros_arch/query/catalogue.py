@@ -21,6 +21,7 @@ from typing import Any
 
 import yaml
 
+from ..model.conditions import Condition
 from ..model.diagnostic import SEVERITY_RANK, Diagnostic, Severity
 from ..model.finding import Finding
 from ..model.location import NOWHERE, Location
@@ -305,38 +306,62 @@ def _unseen(rule: Rule, match: Any) -> list[Any]:
 UNDECIDED_NAMED = 5  # nodes named in an undecided info (the ones that could be most)
 
 
-def _undecided_finding(rule: Rule, undecided: list[tuple[Any, list[Any]]],
-                       config: Configuration | None) -> Finding:
-    """One info for the matches of a rule that nodes of partial or unknown interface
-    could contradict: how many, and which nodes could be the missing side."""
+def _ranked(undecided: list[tuple[Any, list[Any]]]) -> tuple[list[Any], dict[str, int]]:
+    """The items of the matches' lists, each once by name, the most often named first,
+    and how many matches name each."""
     # counted by name: two instances of one name (each under its own launch condition)
     # are one name that could be the missing side, counted once per match
     counts: dict[str, int] = {}
     first_of: dict[str, Any] = {}
-    for _match, nodes in undecided:
-        for name in dict.fromkeys(label(n).removeprefix("node ") for n in nodes):
+    for _match, items in undecided:
+        for name in dict.fromkeys(label(n).removeprefix("node ") for n in items):
             counts[name] = counts.get(name, 0) + 1
-        for node in nodes:
-            first_of.setdefault(label(node).removeprefix("node "), node)
-    ranked_names = sorted(counts, key=lambda n: (-counts[n], n))
-    ranked = [first_of[n] for n in ranked_names]
-    named = ", ".join(f"{n} ({counts[n]})" for n in ranked_names[:UNDECIDED_NAMED])
-    more = f" and {len(ranked) - UNDECIDED_NAMED} more" if len(ranked) > UNDECIDED_NAMED \
+        for item in items:
+            first_of.setdefault(label(item).removeprefix("node "), item)
+    names = sorted(counts, key=lambda n: (-counts[n], n))
+    return [first_of[n] for n in names], counts
+
+
+def _named(ranked: list[Any], counts: dict[str, int]) -> str:
+    names = [label(item).removeprefix("node ") for item in ranked]
+    more = f" and {len(names) - UNDECIDED_NAMED} more" if len(names) > UNDECIDED_NAMED \
         else ""
+    return ", ".join(f"{n} ({counts[n]})" for n in names[:UNDECIDED_NAMED]) + more
+
+
+UNDECIDED_CONDITIONS = ("what they rest on exists only under a condition not decided for "
+                        "this configuration (its value is not known statically), so they "
+                        "may not hold")
+
+
+def _undecided_finding(rule: Rule, undecided: list[tuple[Any, list[Any]]],
+                       config: Configuration | None) -> Finding:
+    """One info for the matches of a rule that it cannot decide: how many, which nodes
+    could be the missing side (of partial or unknown interface, ...) and under which
+    conditions not decided what they rest on exists (``undecided()``'s)."""
+    ranked, counts = _ranked(undecided)
+    nodes = [item for item in ranked if not isinstance(item, Condition)]
+    conditions = [item for item in ranked if isinstance(item, Condition)]
     first = "; ".join(label(e) for e in entities(undecided[0][0])[:1]) or label(
         undecided[0][1][0])
     why = rule.undecided_why or (
         "these could be the missing side unseen (nodes of partial or unknown interface, "
         "names with '?', dynamic_reconfigure servers, launch parameters not known "
         "statically)")
+    reasons = ([f"{why}: {_named(nodes, counts)}"] if nodes else []) + (
+        [f"{UNDECIDED_CONDITIONS}: {_named(conditions, counts)}"] if conditions else [])
     where = best_location(entities(undecided[0][0]))
     if not where.file:
         where = place_of(undecided[0][0])
     message = (f"{len(undecided)} possible finding(s) not reported (first: {first}): "
-               f"{why}: {named}{more}")
+               f"{'; '.join(reasons)}")
+    # what the first matches under a condition name (a type mismatch's two links)
+    conditional = [e for match, items in undecided
+                   if any(isinstance(i, Condition) for i in items)
+                   for e in entities(match)][:UNDECIDED_NAMED]
     return Finding(rule.id + UNDECIDED, "info", f"{rule.title}: not decided",
                    message, config.name if config else None,
-                   entity_ids(ranked[:UNDECIDED_NAMED]), where)
+                   entity_ids([*nodes[:UNDECIDED_NAMED], *conditional]), where)
 
 
 def _limit_finding(rule: Rule, err: QueryError, config: Configuration | None) -> Finding:

@@ -14,8 +14,10 @@ from typing import Any
 from .. import manifest
 from ..model import rosname
 from ..model.conditions import Condition, after_exit, exclusive, same_conditions
-from ..model.runtime import Link, NodeInstance, Resource
+from ..model.conditions import undecided as undecided_of
+from ..model.runtime import Link, NodeInstance, Parameter, Resource
 from ..model.source import Package
+from ..model.values import UNKNOWN_MARK
 from .absence import distance, same_setting, similar_to, unknown_users
 from .errors import QueryLimitError, QueryTypeError
 
@@ -353,6 +355,48 @@ def all_apart(charge: Charge, values: Any) -> list[Any]:
     return distinct
 
 
+def _existing(value: Any) -> list[Any]:
+    items = value if isinstance(value, list | tuple) else [value]
+    for item in items:
+        if not isinstance(item, NodeInstance | Link | Parameter):
+            raise QueryTypeError("undecided() takes node instances, links or parameters "
+                                 "(or lists of them)")
+    return list(items)
+
+
+def _same_condition(item: Any, condition: Condition) -> tuple[Any, ...]:
+    """What makes two conditions one: a launch condition's text (it reads launch
+    arguments, taken as one scope's, as ``same_conditions`` does); a source condition's
+    place in the code and its node instance (the values it reads are that instance's)."""
+    if condition.kind == "launch":
+        return ("launch", condition.text.strip(), condition.statement)
+    instance = item.node if isinstance(item, Link) else item
+    return (condition.kind, id(instance), condition.text.strip(), condition.statement,
+            condition.location)
+
+
+def undecided(charge: Charge, values: Any, given: Any = ()) -> list[Any]:
+    """The conditions not decided for the configuration under which the node instances,
+    links or parameters ``values`` (one or a list) may not exist (``model.conditions.
+    undecided``: what the graph could not decide, a ``try``, ``do`` or timer aside),
+    each once;
+    none that ``given`` (one or a list) has too, as those hold wherever it exists. A
+    finding that rests on ``values`` existing is undecided when this is not empty (an
+    ``undecided_by`` list); one that rests on their absence, when it is not empty for
+    each of them."""
+    known = {_same_condition(item, c) for item in _existing(given)
+             for c in item.conditions if c.text.strip() != UNKNOWN_MARK}
+    found: dict[tuple[Any, ...], Condition] = {}
+    for item in _existing(values):
+        conditions = undecided_of(tuple(item.conditions))
+        charge(1 + len(conditions))
+        for c in conditions:
+            key = _same_condition(item, c)
+            if key not in known:
+                found.setdefault((c.kind, c.text.strip(), c.statement, c.location), c)
+    return list(found.values())
+
+
 def one_process(charge: Charge, first: Any, second: Any) -> str:
     """For two node instances of one name that one launched process runs (the launch
     name renames every node of it), a clause that says so and names the nodes its code
@@ -374,6 +418,7 @@ FUNCTIONS["never_together"] = Function("never_together", never_together, 2, 2, c
 FUNCTIONS["apart"] = Function("apart", apart, 2, 2, charged=True)
 FUNCTIONS["together"] = Function("together", together, charged=True)
 FUNCTIONS["all_apart"] = Function("all_apart", all_apart, charged=True)
+FUNCTIONS["undecided"] = Function("undecided", undecided, 1, 2, charged=True)
 
 
 def installed_with(charge: Charge, package: Any, packages: Any, test: Any = False

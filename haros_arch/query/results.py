@@ -127,6 +127,8 @@ def label(item: Any) -> str:
         return f"{type(item).__name__.lower()} {item.name}"
     if isinstance(item, Node):
         return f"executable {item.name}"
+    if isinstance(item, Condition):  # where it is written: two alike are two places
+        return f"{item} at {item.location}" if item.location.file else str(item)
     if isinstance(item, LaunchItem) and item.kind == "include":
         if item.detail == "action":
             return f"action not interpreted ({item.name})"
