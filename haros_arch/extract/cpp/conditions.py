@@ -27,6 +27,7 @@ from clang.cindex import Cursor, CursorKind
 
 from ...model.conditions import Condition
 from ...model.location import Location
+from .expressions import strip
 
 Branch = tuple[Cursor, tuple[Condition, ...]]
 _Rest = TypeVar("_Rest")
@@ -123,10 +124,34 @@ class ConditionReader:
         then = len(children) - (2 if has_else else 1)
         out: list[Branch] = [(c, ()) for c in children[:then]]
         tested = children[then - 1]
-        out.append((children[then], (self._condition(node, "if", text, tested),)))
+        first = self._first_time(tested, children[then])
+        out.append((children[then], () if first else (self._condition(node, "if", text,
+                                                                      tested),)))
         if has_else:
             out.append((children[-1], (self._condition(node, "else", text, tested),)))
         return out
+
+    def _first_time(self, tested: Cursor, then: Cursor) -> bool:
+        """Whether an ``if`` is a lazy initialisation, ``if (!initialized_) { ...;
+        initialized_ = true; }`` (or ``!isInitialized()``, a method that returns the
+        member): its block runs the first time the function does (ROS 1 planners'
+        ``initialize``, which their host calls once), so what it makes is made."""
+        from .members import _negates, member_of
+        from .writes import writes_of
+
+        test = strip(tested)
+        if test.kind != CursorKind.UNARY_OPERATOR or not _negates(test, self.source):
+            return False
+        operands = list(test.get_children())
+        flag = _flag(strip(operands[0])) if len(operands) == 1 else None
+        if flag is None:
+            return False
+        for node in then.walk_preorder():
+            for write in writes_of(node, self.source):
+                if write.whole and write.value is not None and _true(write.value) \
+                        and member_of(write.target) == flag:
+                    return True
+        return False
 
     def _switch_body(self, body: Cursor, switch: Condition) -> list[Branch]:
         """Statements of a switch body, each under one condition: the switch's value
@@ -272,6 +297,38 @@ class ConditionReader:
         between = text[end.offset:start.offset].decode("utf-8", "replace")
         found = pattern.search(between)
         return found.group(found.lastindex or 0) if found else ""
+
+
+def _flag(expr: Cursor) -> Cursor | None:
+    """The boolean member ``expr`` reads: the member itself, or a method without
+    arguments whose body is ``return member;``."""
+    from .members import member_of
+
+    if expr.kind == CursorKind.CALL_EXPR:
+        method = expr.referenced
+        if list(expr.get_arguments()) or method is None \
+                or method.kind != CursorKind.CXX_METHOD:
+            return None
+        body = method.get_definition()
+        statements = [] if body is None else [
+            c for c in body.get_children() if c.kind == CursorKind.COMPOUND_STMT]
+        inner = list(statements[0].get_children()) if statements else []
+        if len(inner) != 1 or inner[0].kind != CursorKind.RETURN_STMT:
+            return None
+        returned = list(inner[0].get_children())
+        expr = strip(returned[0]) if len(returned) == 1 else expr
+        if expr.kind == CursorKind.CALL_EXPR:
+            return None
+    found = member_of(expr)
+    if found is None or found.kind != CursorKind.FIELD_DECL or found.type.spelling != "bool":
+        return None
+    return found
+
+
+def _true(value: Cursor) -> bool:
+    value = strip(value)
+    return value.kind == CursorKind.CXX_BOOL_LITERAL_EXPR and any(
+        t.spelling == "true" for t in value.get_tokens())
 
 
 def _clean(raw: bytes) -> str:
