@@ -722,3 +722,12 @@ def test_tf2_advanced_lookup_and_a_scalar_of_another_type_in_ros1(write_tree) ->
     assert _errors(result) == []
     assert [(c.kind, c.name) for c in result.calls] == [
         ("publish", "delta"), ("subscribe", "/tf"), ("subscribe", "/tf_static")]
+
+
+def test_a_serial_port_opened_with_termios_and_fcntl(write_tree) -> None:
+    # limo_ros2's limo_base: B460800 in the node's constructor was an error beside its
+    # ROS calls, and the node partial
+    result = _extract(write_tree, _source("ros2_serial.cpp"), "ament_cmake")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("declare", "port_name"), ("publish", "status")]

@@ -37,3 +37,32 @@ def test_a_declaration_of_a_type_alone_is_no_read_that_needs_the_value(write_tre
         ("read", "server_name", "str", False, True),
         # the templated declaration returns the value: it throws when nothing sets it
         ("declare", "rate", "double", False, False)]
+
+
+FOXY = """
+#include <rclcpp/rclcpp.hpp>
+class Base : public rclcpp::Node {
+ public:
+  Base() : Node("base") {
+    declare_parameter("use_mcnamu");
+    get_parameter_or<bool>("use_mcnamu", use_mcnamu_, false);
+    declare_parameter("port_name");
+    get_parameter("port_name", port_);
+  }
+  bool use_mcnamu_;
+  std::string port_;
+};
+"""
+
+
+def test_a_declaration_of_a_name_alone_is_no_read_that_needs_the_value(write_tree) -> None:
+    # Foxy's declare_parameter(name) declares an uninitialised value and does not throw
+    # (limo_ros2's limo_base, then get_parameter_or with a default): no read of its own;
+    # a later read without default still needs the value
+    root = write_tree({"lb/package.xml": package_xml("lb", "ament_cmake"),
+                       "lb/src/node.cpp": FOXY})
+    result = extract_cpp([str(root / "lb" / "src" / "node.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    assert [(c.kind, c.name, c.has_default, c.tested) for c in result.calls] == [
+        ("declare", "use_mcnamu", False, True), ("read", "use_mcnamu", True, False),
+        ("declare", "port_name", False, True), ("read", "port_name", False, False)]

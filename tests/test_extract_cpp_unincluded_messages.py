@@ -62,3 +62,39 @@ def test_a_message_type_used_without_its_header_is_the_message(write_tree) -> No
     codes = [d.code for d in result.diagnostics]
     assert "CPP_PARSE_ERROR" not in codes and "CPP_ERROR_NEAR_CALL" not in codes
     assert "CPP_CALL_UNRESOLVED" not in codes
+
+
+ROS2_SOURCE = """#include <rclcpp/rclcpp.hpp>
+#include <geometry_msgs/msg/twist.hpp>
+#include <tf2_ros/transform_broadcaster.h>
+class Base : public rclcpp::Node {
+public:
+  Base() : Node("base") {
+    cmd_sub_ = create_subscription<geometry_msgs::msg::Twist>(
+        "cmd_vel", 10, [this](geometry_msgs::msg::Twist::SharedPtr) {});
+    odom_pub_ = create_publisher<geometry_msgs::msg::Twist>("cmd_vel_out", 10);
+  }
+  void fill() {  // no ROS call here: the error did not make the node partial
+    geometry_msgs::msg::TransformStamped t;
+    t.header.frame_id = "odom";
+    t.child_frame_id = "base_link";
+  }
+private:
+  rclcpp::Subscription<geometry_msgs::msg::Twist>::SharedPtr cmd_sub_;
+  rclcpp::Publisher<geometry_msgs::msg::Twist>::SharedPtr odom_pub_;
+};
+"""
+
+
+def test_a_ros2_message_of_a_known_package_used_without_its_header(write_tree) -> None:
+    # limo_ros2's limo_driver.cpp:475 names geometry_msgs::msg::TransformStamped, which
+    # tf2_ros' headers bring in a real build; it includes only geometry_msgs' twist.hpp:
+    # clang's "no type named 'TransformStamped' in namespace 'geometry_msgs::msg'"
+    root = write_tree({"base/package.xml": package_xml("base", "ament_cmake"),
+                       "base/src/base.cpp": ROS2_SOURCE})
+    result = extract_cpp([str(root / "base" / "src" / "base.cpp")], scan([str(root)]),
+                         cache_dir=None, jobs=1)
+    assert [(c.kind, c.name, c.type) for c in result.calls] == [
+        ("subscribe", "cmd_vel", "geometry_msgs/msg/Twist"),
+        ("publish", "cmd_vel_out", "geometry_msgs/msg/Twist")]
+    assert [d.message for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"] == []

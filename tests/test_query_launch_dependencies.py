@@ -248,6 +248,10 @@ def test_an_installed_metapackage_brings_its_members(tmp_path):
     # through moveit_ros (moveit2_tutorials' launch files start it)
     tutorial = package("tutorial", ("exec_depend", "moveit"), build_type="ament_cmake")
     assert "moveit_ros_move_group" in installed_with(tutorial, [tutorial])
+    # rtabmap_ros is RTAB-Map's metapackage (stretch_rtabmap depends on it and launches
+    # rtabmap_slam's rtabmap and rtabmap_odom's rgbd_odometry)
+    mapping = package("mapping", ("depend", "rtabmap_ros"), build_type="ament_cmake")
+    assert {"rtabmap_slam", "rtabmap_odom"} <= installed_with(mapping, [mapping])
     plain = package("plain_robot", ("exec_depend", "rviz"))
     assert installed_with(plain, [plain]) == {"rviz"}
 

@@ -190,6 +190,21 @@ def test_hostile_macro_parameters_are_read_in_bounded_time(tmp_path: Path):
     assert [code for code, _ in codes(too_long)] == ["ROBOT_DESCRIPTION_LIMIT"]
 
 
+def test_a_quoted_default_stretches_over_later_quotes_as_in_xacro(tmp_path: Path):
+    # leo_description's macros.xacro:291, params="robot_ns:='''": xacro's lazy quoted
+    # part takes all three quotes as the default, so robot_ns is a parameter; it was read
+    # as a parameter named "robot_ns:='''" and the call said robot_ns is invalid
+    description = tmp_expand(
+        tmp_path, """<xacro:macro name="g" params="robot_ns:='''"><n v="${robot_ns}"/>"""
+                  """</xacro:macro><xacro:g robot_ns="rover"/>""")
+    assert codes(description) == []
+    assert description.root.find("n").get("v") == "rover"
+    # a quote closes at the first later one after which a space or the end may come
+    assert xacro.macro_params("""robot_ns:=''' a:='x'y' b:=^|"c" d *e""") == [
+        ("robot_ns", (None, "''' a:='x'y'")), ("b", ("b", '"c"')), ("d", None),
+        ("*e", None)]
+
+
 def test_a_long_value_copied_everywhere_is_bounded(tmp_path: Path):
     long = "y" * 90_000
     uses = "".join('<a v="${p}"/>' for _ in range(300))  # 27 million characters

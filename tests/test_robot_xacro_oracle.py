@@ -110,6 +110,21 @@ INLINE = {
 }
 
 
+PARAMS = ["robot_ns:='''", "a:='x'y' b", 'a:="q"r" c:=1', "a:=${x} b:=$(arg y)",
+          "a:=^|'d' b", "a:='it''s' c:=1", "a:= 'x", "a:=^ b", "a b:=2 *c **d",
+          "a:=${x y} b", "a:=${x}y} z", "a:=$(find p)/x b:=3", "a:=x'y z'w q"]
+
+
+@pytest.mark.parametrize("params", PARAMS)
+def test_macro_parameters_read_as_the_real_xacro_does(params: str):
+    theirs = []
+    rest = params
+    while rest:
+        name, value, rest = real.parse_macro_arg(rest)
+        theirs.append((name, value))
+    assert ours.macro_params(params) == theirs
+
+
 @pytest.mark.parametrize("name", list(INLINE))
 def test_constructs_expand_as_the_real_xacro_does(name: str, tmp_path: Path,
                                                   monkeypatch: pytest.MonkeyPatch):

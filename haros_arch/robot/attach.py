@@ -46,6 +46,7 @@ from ..model.runtime import Configuration, NodeInstance, Parameter
 from ..model.source import CallKind, Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK, Value
 from ..plugins.attach import Params, own_partial
+from ..plugins.classes import remembered
 from ..share import share_source
 from ..workspace import Workspace
 from . import xacro
@@ -186,6 +187,8 @@ def _gz(spawn: Spawn, launch: LaunchModel, workspace: Workspace, config: Configu
                                               conditions=[c.text for c in _conditions(
                                                   element, where)]))
         reason = gz_system(filename)
+        if reason is None:
+            reason = workspace_gz_system(filename, workspace)
         if reason is not None and _base(filename) in GZ_MANAGERS:
             managers.append(_manager(element, spawn, where, _conditions(element, where),
                                      workspace, config, params))
@@ -196,6 +199,45 @@ def _gz(spawn: Spawn, launch: LaunchModel, workspace: Workspace, config: Configu
             _record_partial(record, f"{found.message} ({where.file}:{where.line})")
         elif reason:
             _record_partial(record, f"{filename}: {reason} ({where.file}:{where.line})")
+
+
+# gz-plugin's registration macros: a library whose sources use one is a gz sim system
+_GZ_REGISTRATION = re.compile(r"\b(?:GZ|IGNITION)_ADD_PLUGIN(?:_ALIAS)?\s*\(")
+MAX_SYSTEM_SOURCES = 64
+
+
+def workspace_gz_system(filename: str, workspace: Workspace) -> str | None:
+    """For a ``<plugin filename=...>`` that a workspace package builds as a gz sim system
+    (a library whose sources register it with ``GZ_ADD_PLUGIN`` / ``IGNITION_ADD_PLUGIN``):
+    "" when no source of it uses rclcpp (it talks gz transport only, as the systems gz
+    sim ships: leo_gz_plugins' differential system), else why its ROS interface is not
+    known; None when no workspace package builds it so."""
+    return remembered("gz system", _base(filename), workspace,
+                      lambda: _workspace_gz_system(_base(filename), workspace))
+
+
+def _workspace_gz_system(base: str, workspace: Workspace) -> str | None:
+    from ..cmake import CMAKE_BUILD_TYPES, targets_of
+
+    for package in workspace.packages.values():
+        if package.build_type not in CMAKE_BUILD_TYPES:
+            continue
+        targets, _ = targets_of(package, workspace)
+        for target in targets:
+            if target.kind != "library" or (target.output_name or target.name) != base:
+                continue
+            registered = uses_ros = False
+            for source in target.sources[:MAX_SYSTEM_SOURCES]:
+                path = source if os.path.isabs(source) else os.path.join(package.root, source)
+                if not os.path.isfile(path):
+                    continue
+                text, _ = read_text(path, workspace.location(path))
+                registered = registered or bool(text and _GZ_REGISTRATION.search(text))
+                uses_ros = uses_ros or bool(text and "rclcpp" in text)
+            if registered:
+                return (f"a gz system {package.name} builds that makes ROS calls is not "
+                        "read" if uses_ros else "")
+    return None
 
 
 # -- the description --------------------------------------------------------------------

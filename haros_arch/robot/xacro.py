@@ -66,12 +66,9 @@ CONDITION = "{urn:haros-arch}condition"
 FILE = "{urn:haros-arch}file"  # the file an element comes from (on roots and MARKED)
 MARKED = ("plugin", "ros2_control")
 _TOKENS = re.compile(r"\$\$+[{(]|\$\{[^}]*\}|\$\([^)]*\)|[^$]+|\$[^{($]+|\$$|\$")
-# xacro's ``re_macro_arg``, with its default's ``(?:'.*?'|".*?"|[^\s'"]+)+`` written so
-# that each character is matched one way only (theirs backtracks exponentially on an
-# unterminated quote)
-_MACRO_ARG = re.compile(
-    r"""^\s*([^\s:=]+?)\s*:?=\s*(\^\|?)?(\$\{.*?\}|\$\(.*?\)|(?:'[^']*'|"[^"]*"|[^\s'"])+|)"""
-    r"""(?:\s+|$)(.*)""", re.S)
+# the start of one parameter of a macro's ``params``, as xacro's ``re_macro_arg`` reads
+# it: its name, ``:=`` (or ``=``) and the spaces after it
+_MACRO_HEAD = re.compile(r"\s*([^\s:=]+?)\s*:?=", re.S)
 
 
 def partial_text(text: str, reason: str) -> str | Value:
@@ -592,6 +589,85 @@ def _arg(self: _Expander, element: Element, scope: _Scope, depth: int) -> list[E
     return []
 
 
+def macro_params(text: str) -> list[tuple[str, tuple[str | None, str | None] | None]]:
+    """A macro's ``params`` as xacro reads them: each name with (the name it forwards
+    with ``^``, its default) or None when it has no default.
+
+    xacro matches each parameter with a regular expression whose default is
+    ``\\$\\{.*?\\}|\\$\\(.*?\\)|(?:'.*?'|".*?"|[^\\s'"]+)+|`` followed by a space or
+    the end: a quoted part stretches over later quotes when that is what lets a space
+    follow (``robot_ns:=\'\'\'`` is one default, three quotes), and its backtracking is
+    exponential on an unterminated quote. Here each suffix's outcome is computed once,
+    from the right, so the whole text is read in linear time with xacro's result."""
+    size = len(text)
+
+    def free(at: int) -> bool:  # a default may end here: a space or the end follows
+        return at >= size or text[at].isspace()
+
+    # after[p]: where a run of quoted and unquoted parts starting at p ends before a
+    # space (xacro's choice: the nearest closing quote that lets the rest end so), or -1
+    after = [-1] * (size + 1)
+    after[size] = size
+    nearest = {"'": -1, '"': -1}  # the first such quote at or after p + 1 with after[+1]
+    closing = {"}": [-1] * (size + 1), ")": [-1] * (size + 1)}  # the first one after
+    for at in range(size - 1, -1, -1):
+        char = text[at]
+        if char.isspace():
+            after[at] = at
+        elif char in nearest:
+            after[at] = after[nearest[char] + 1] if nearest[char] >= 0 else -1
+        else:
+            after[at] = after[at + 1]
+        if char in nearest and after[at + 1] >= 0:
+            nearest[char] = at
+        for mark, table in closing.items():
+            table[at] = at if char == mark and free(at + 1) else table[at + 1]
+
+    def default_end(at: int) -> int:
+        """Where the default starting at ``at`` ends, or -1."""
+        for opening, mark in (("${", "}"), ("$(", ")")):
+            if text.startswith(opening, at) and closing[mark][at + 2] >= 0:
+                return closing[mark][at + 2] + 1
+        if at < size and not text[at].isspace() and after[at] >= 0:
+            return after[at]
+        return at if free(at) else -1
+
+    params: list[tuple[str, tuple[str | None, str | None] | None]] = []
+    at = 0
+    while at < size and text[at].isspace():
+        at += 1
+    while at < size:
+        head = _MACRO_HEAD.match(text, at)
+        found = None
+        if head is not None:
+            start = head.end()
+            spaced = start
+            while spaced < size and text[spaced].isspace():
+                spaced += 1
+            # xacro's order: every space taken, then ``^|``, ``^`` or no forward; then
+            # fewer spaces, where only an empty default fits
+            for forward in ("^|", "^", ""):
+                if text.startswith(forward, spaced):
+                    end = default_end(spaced + len(forward))
+                    if end >= 0:
+                        found = (bool(forward), spaced + len(forward), end)
+                        break
+            if found is None and spaced > start:
+                found = (False, spaced - 1, spaced - 1)
+        if found is None:
+            words = text[at:].split(None, 1)
+            params.append((words[0], None))
+            at = size - len(words[1]) if len(words) > 1 else size
+            continue
+        forwarded, begin, end = found
+        name = head.group(1) if head is not None else ""
+        params.append((name, (name if forwarded else None, text[begin:end] or None)))
+        at = end
+        while at < size and text[at].isspace():
+            at += 1
+    return params
+
+
 def _macro(self: _Expander, element: Element, scope: _Scope, depth: int) -> list[Element]:
     name = element.get("name") or ""
     if name.startswith("xacro:"):
@@ -606,17 +682,7 @@ def _macro(self: _Expander, element: Element, scope: _Scope, depth: int) -> list
                     detail=f"macro {name} has parameters longer than {MAX_PARAMS_TEXT} "
                            "characters")
         raise _Stop
-    for _ in range(MAX_PARAMS_TEXT):
-        if not rest.strip():
-            break
-        match = _MACRO_ARG.match(rest)
-        if match:
-            param, forward, default, rest = match.groups()
-            params.append((param, (param if forward else None, default or None)))
-        else:
-            words = rest.split(None, 1)
-            params.append((words[0], None))
-            rest = words[1] if len(words) > 1 else ""
+    params.extend(macro_params(rest))
     path = self.files[-1] if self.files else self.description.path
     scope.macros[name] = _Macro(name, params, element, (path, line_of(element)),
                                 scope if scope.namespace else None)

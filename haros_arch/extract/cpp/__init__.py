@@ -1212,9 +1212,12 @@ def _parse(path: str, text: str, setup: IncludeSetup, workspace: Workspace,
                        wrappers)
 
 
-# an error naming a namespace clang does not know, or a name missing from one
+# an error naming a namespace clang does not know, or a name missing from one (a ROS 2
+# package's ``pkg::msg``: geometry_msgs::msg::TransformStamped where only twist.hpp is
+# included, tf2_ros' headers bringing the rest in a real build)
 _UNKNOWN_SPACE = re.compile(r"^use of undeclared identifier '(\w+)'$"
-                            r"|^no (?:type|member|template) named '\w+' in namespace '(\w+)'$")
+                            r"|^no (?:type|member|template) named '\w+' in namespace "
+                            r"'(\w+)(?:::(?:msg|srv|action))?'$")
 _QUALIFIED = re.compile(rb"\b([A-Za-z_]\w*)\s*::\s*([A-Za-z_]\w*)")
 # a ROS 2 interface written in full: ``rcl_interfaces::srv::SetParameters``
 _QUALIFIED_ROS2 = re.compile(

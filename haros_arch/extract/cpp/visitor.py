@@ -1337,6 +1337,14 @@ class CallFinder:
         typed_only = spec.kind == "declare" and spec.default_arg is not None and (
             spec.default_arg < len(args)
         ) and msg_types.parameter_type_constant(args[spec.default_arg]) is not None
+        # so does Foxy's declare_parameter(name), whose default is an uninitialised
+        # ParameterValue (Galactic deprecated it, Humble removed it; limo_ros2's
+        # limo_base declares so, then reads with get_parameter_or and a default), but
+        # not declare_parameter<T>(name), which returns the value
+        typed_only = typed_only or (
+            spec.kind == "declare" and spec.default_arg is not None and self.ros2
+            and spec.default_arg >= len(args) and not spec.per_element
+            and not _written_template(call) and spec.fixed_type is None)
         if spec.kind in ("read", "declare"):
             default = _converted(default, ctype)
         program_arg = program_argument(arg(spec.type_arg), scope) if (

@@ -16,6 +16,7 @@ from dataclasses import dataclass, field
 
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
+from ...manifest import ros_version
 from ...model.source import PrimitiveCall
 from ...workspace import Workspace
 from .modules import Loader, Module
@@ -52,6 +53,10 @@ def extract_python(sources: list[str], workspace: Workspace, *,
         module = loader.load(os.path.abspath(path))
         if module is not None and module not in modules:
             modules.append(module)
+    loader.node_version = _node_version(modules, workspace, package)
+    for loaded in loader.modules.values():
+        if loaded is not None:
+            loaded.node_version = loader.node_version
     walker = Walker(loader)
     walker.unseen_packages = _unseen_packages(workspace, package)
     walker.run(modules)
@@ -130,6 +135,18 @@ def _unseen_packages(workspace: Workspace, package: str | None) -> frozenset[str
         return frozenset()
     return frozenset(d.name for d in found.dependencies
                      if d.name not in workspace.packages and d.name not in NOT_CLIENTS)
+
+
+def _node_version(modules: list[Module], workspace: Workspace, package: str | None) -> int:
+    """The ROS version of a node: that of the client library its own modules import,
+    else its package's (an entry point whose module only calls the package's ``main``);
+    1 when nothing says."""
+    versions = {m.client_version for m in modules} - {None}
+    if len(versions) == 1:
+        return versions.pop() or 1
+    if package is not None and package in workspace.packages:
+        return ros_version(workspace.packages[package]) or 1
+    return 1
 
 
 def _package_root(sources: list[str], workspace: Workspace, package: str | None) -> str | None:

@@ -76,6 +76,9 @@ class Module:
     _lines: list[str] | None = None
     # how many statements assign each ``self.<member>`` (visitor._member_writes)
     member_writes: dict[str, int] | None = None
+    # the ROS version of the node these modules make, for a module that imports neither
+    # rospy nor rclpy (``extract_python`` sets it)
+    node_version: int = 1
 
     @property
     def lines(self) -> list[str]:
@@ -85,9 +88,19 @@ class Module:
 
     @property
     def version(self) -> int:
-        """2 when the module uses rclpy, else 1."""
-        return 2 if any(q == "rclpy" or q.startswith("rclpy.")
-                        for q in (*self.imports.values(), *self.stars)) else 1
+        """2 when the module uses rclpy, 1 when it uses rospy; else that of the node (a
+        helper the node hands itself to: ``diagnostic_updater.Updater(node)``)."""
+        return self.client_version or self.node_version
+
+    @property
+    def client_version(self) -> int | None:
+        """2 when the module imports rclpy, 1 when it imports rospy, else None."""
+        qualified = (*self.imports.values(), *self.stars)
+        if any(q == "rclpy" or q.startswith("rclpy.") for q in qualified):
+            return 2
+        if any(q == "rospy" or q.startswith("rospy.") for q in qualified):
+            return 1
+        return None
 
 
 class Loader:
@@ -98,6 +111,7 @@ class Loader:
         self.package_root = package_root
         self.modules: dict[str, Module | None] = {}
         self.diagnostics: list[Diagnostic] = []
+        self.node_version = 1  # each module's ``node_version``
         # top-level Python package name -> folder holding it, in other workspace packages
 
     def location(self, path: str, line: int = 0, column: int = 0) -> Location:
@@ -115,7 +129,7 @@ class Loader:
         tree = self._parse(path, text)
         if tree is None:
             return None
-        module = Module(path, text, tree)
+        module = Module(path, text, tree, node_version=self.node_version)
         _index(module, self)
         self.modules[path] = module
         return module

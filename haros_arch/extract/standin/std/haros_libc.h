@@ -380,6 +380,104 @@ int open(const char* path, int flags, ...);
 struct termios { unsigned c_iflag, c_oflag, c_cflag, c_lflag; unsigned char c_cc[32]; };
 int tcgetattr(int fd, struct termios* t);
 int tcsetattr(int fd, int when, const struct termios* t);
+// <termios.h> and <fcntl.h> of a serial-port driver (Linux's values)
+typedef unsigned int speed_t;
+typedef unsigned int tcflag_t;
+typedef unsigned char cc_t;
+int cfmakeraw(struct termios* t);
+speed_t cfgetispeed(const struct termios* t);
+speed_t cfgetospeed(const struct termios* t);
+int cfsetispeed(struct termios* t, speed_t speed);
+int cfsetospeed(struct termios* t, speed_t speed);
+int cfsetspeed(struct termios* t, speed_t speed);
+int tcflush(int fd, int queue);
+int tcdrain(int fd);
+int tcsendbreak(int fd, int duration);
+int tcflow(int fd, int action);
+int fcntl(int fd, int cmd, ...);
+#define B0 0
+#define B300 0000007
+#define B600 0000010
+#define B1200 0000011
+#define B1800 0000012
+#define B2400 0000013
+#define B4800 0000014
+#define B9600 0000015
+#define B19200 0000016
+#define B38400 0000017
+#define B57600 0010001
+#define B115200 0010002
+#define B230400 0010003
+#define B460800 0010004
+#define B500000 0010005
+#define B576000 0010006
+#define B921600 0010007
+#define B1000000 0010010
+#define B1152000 0010011
+#define B1500000 0010012
+#define B2000000 0010013
+#define B2500000 0010014
+#define B3000000 0010015
+#define B3500000 0010016
+#define B4000000 0010017
+#define CBAUD 0010017
+#define CSIZE 0000060
+#define CS5 0000000
+#define CS6 0000020
+#define CS7 0000040
+#define CS8 0000060
+#define CSTOPB 0000100
+#define CREAD 0000200
+#define PARENB 0000400
+#define PARODD 0001000
+#define HUPCL 0002000
+#define CLOCAL 0004000
+#define CRTSCTS 020000000000
+#define IGNBRK 0000001
+#define BRKINT 0000002
+#define IGNPAR 0000004
+#define PARMRK 0000010
+#define INPCK 0000020
+#define ISTRIP 0000040
+#define INLCR 0000100
+#define IGNCR 0000200
+#define ICRNL 0000400
+#define IXON 0002000
+#define IXANY 0004000
+#define IXOFF 0010000
+#define OPOST 0000001
+#define ONLCR 0000004
+#define OCRNL 0000010
+#define ISIG 0000001
+#define ECHOE 0000020
+#define ECHOK 0000040
+#define ECHONL 0000100
+#define NOFLSH 0000200
+#define IEXTEN 0100000
+#define TCSADRAIN 1
+#define TCSAFLUSH 2
+#define TCIFLUSH 0
+#define TCOFLUSH 1
+#define TCIOFLUSH 2
+#define O_NOCTTY 0400
+#define O_APPEND 02000
+#define O_NONBLOCK 04000
+#define O_NDELAY O_NONBLOCK
+#define O_SYNC 04010000
+#define O_CLOEXEC 02000000
+#define F_GETFD 1
+#define F_SETFD 2
+#define F_GETFL 3
+#define F_SETFL 4
+#define FD_CLOEXEC 1
+#define FIONREAD 0x541B
+#define TIOCEXCL 0x540C
+#define TIOCMGET 0x5415
+#define TIOCMBIS 0x5416
+#define TIOCMBIC 0x5417
+#define TIOCMSET 0x5418
+#define TIOCM_DTR 0x002
+#define TIOCM_RTS 0x004
 struct pollfd { int fd; short events; short revents; };
 int poll(struct pollfd* fds, unsigned long n, int timeout);
 int ioctl(int fd, unsigned long request, ...);
