@@ -40,9 +40,10 @@ def test_a_range_for_over_an_unknown_library_s_object_keeps_its_calls(write_tree
                        "srv/src/server.cpp": NODE})
     result = extract_cpp([str(root / "srv" / "src" / "server.cpp")], scan([str(root)]),
                          cache_dir=None)
-    # the layer's name is the library's value: the whole name is not known
+    # the layer's name is the library's value, unknown; the text before it is the
+    # code's (test_extract_cpp_permissive_concatenation)
     assert sorted((c.kind, c.name) for c in result.calls) == [
-        ("publish", "?"), ("publish", "items")]
+        ("publish", "items"), ("publish", "layer/?")]
     codes = [d.code for d in result.diagnostics]
     assert "CPP_CALL_MISSED" not in codes and "CPP_ERROR_NEAR_CALL" not in codes
 

@@ -126,9 +126,8 @@ def plugin_classes(package: Package, workspace: Files, libraries: Mapping[str, L
                     continue
                 where = workspace.location(path, _line(cls), 0)
                 type_name = cls.get("type", "")
-                # a factory template registered for its argument (mavros'
-                # PluginFactoryTemplate<Imu> is exported by MAVROS_PLUGIN_REGISTER(Imu))
-                registered = _template_argument(type_name) or type_name
+                registered = _registered(type_name, libraries.get(wanted), libraries,
+                                         workspace)
                 library = libraries.get(wanted) or _exporting(registered, libraries,
                                                               workspace)
                 if library is None:
@@ -531,6 +530,25 @@ def _exporting(type_name: str, libraries: Mapping[str, Library],
             if type_name.lstrip(":") in (c for c, _ in exported_classes(path, workspace)):
                 return library
     return None
+
+
+def _registered(type_name: str, library: Library | None,
+                libraries: Mapping[str, Library], workspace: Files) -> str:
+    """The class a description's ``type`` is exported as: a factory template stands for
+    its argument (mavros' PluginFactoryTemplate<Imu> is exported by
+    MAVROS_PLUGIN_REGISTER(Imu)), unless the library (every library when the described
+    one is not known) exports the specialisation itself (grid_map_cv's
+    ``PLUGINLIB_EXPORT_CLASS(grid_map::InpaintFilter<grid_map::GridMap>, ...)``)."""
+    argument = _template_argument(type_name)
+    if argument is None:
+        return type_name
+    own = _untemplated(type_name.lstrip(":"))
+    for each in [library] if library is not None else list(libraries.values()):
+        for source in each.sources:
+            path = os.path.join(workspace.root, source)
+            if own in (_untemplated(c) for c, _ in exported_classes(path, workspace)):
+                return type_name
+    return argument
 
 
 def _template_argument(type_name: str) -> str | None:

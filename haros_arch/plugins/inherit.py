@@ -402,7 +402,8 @@ def built_sources(own: Sequence[str], workspace: Files,
         scanned.update(files)
         classes = {cls for found in defining.values() for cls in found}
         added = False
-        for cls, space in _built(classes, texts):
+        # by name: the order of a set of strings changes from one run to the next
+        for cls, space in sorted(_built(classes, texts), key=lambda b: (b[0], b[1] or "")):
             if space is None and cls in mine:
                 continue
             before = len(files)

@@ -331,7 +331,7 @@ def _from_command(param: ParamDecl, name: str, workspace: Workspace,
 def _expanded(path: str, args: Mapping[str, str | Value], name: str, where: Location,
               workspace: Workspace, config: Configuration,
               ) -> tuple[RobotDescription, xacro.Description]:
-    expanded = xacro.expand(path, args, workspace)
+    expanded = xacro.expand(path, args, workspace, named_at=where)
     config.diagnostics.extend(expanded.diagnostics)
     record = RobotDescription(
         name, workspace.relpath(path) if expanded.files else None, where,

@@ -43,6 +43,7 @@ from ..files import read_bytes, read_text
 from ..launch import expression
 from ..manifest import xml_parser
 from ..model.diagnostic import Diagnostic
+from ..model.location import Location
 from ..model.values import UNKNOWN_MARK, Unknown, UnknownKind, Value
 from ..share import share_source
 from ..workspace import Workspace
@@ -180,11 +181,15 @@ def local_name(element: Element) -> str:
 
 
 def expand(path: str, args: Mapping[str, str | Value], workspace: Workspace,
-           environment: Mapping[str, str] | None = None) -> Description:
+           environment: Mapping[str, str] | None = None,
+           named_at: Location | None = None) -> Description:
     """The robot description in ``path`` expanded with ``args`` (``name:=value`` of the
-    xacro command line). Never raises for bad input."""
+    xacro command line). Never raises for bad input. ``named_at``: where the file is
+    named (a launch file's xacro command), the place of what is said of the file itself
+    before it is read (not there: its line 0 is no place to look)."""
     expander = _Expander(path, dict(args), workspace,
-                         workspace.environment if environment is None else environment)
+                         workspace.environment if environment is None else environment,
+                         named_at)
     description = expander.description
     try:
         root = expander.read(path, None)
@@ -201,8 +206,9 @@ def expand(path: str, args: Mapping[str, str | Value], workspace: Workspace,
 
 class _Expander:
     def __init__(self, path: str, args: dict[str, Any], workspace: Workspace,
-                 environment: Mapping[str, str]) -> None:
+                 environment: Mapping[str, str], named_at: Location | None = None) -> None:
         self.description = Description(path)
+        self.named_at = named_at
         self.args = args
         self.workspace = workspace
         self.environment = environment
@@ -213,6 +219,8 @@ class _Expander:
 
     # -- diagnostics and unknowns ----------------------------------------------------------
     def where(self, element: Element | None) -> Any:
+        if not self.files and self.named_at is not None:
+            return self.named_at  # the top file, named there, not read yet
         path = self.files[-1] if self.files else self.description.path
         return self.workspace.location(path, line_of(element))
 

@@ -244,12 +244,14 @@ class Namespaces:
             # EsdfServer publishes on TsdfServer's ``nh_private_``): what those give it
             # (``links.MEMBER``); a pointer (or smart pointer) to one points to a handle
             # set where we do not see (``Impl impl{&nh}``, a copy of the struct): not known
-            if not (handle and holds_handle(field)):
+            # (a reference member is bound by every constructor: there, what they give)
+            held, bound = holds_handle(field), binds_handle(field)
+            if not (handle and (held or bound)):
                 return UNKNOWN
             if self.sites is not None and constructed_elsewhere(field, self.source):
                 marker = self.sites.member_placeholder(field)
                 return (marker,) if marker is not None else UNKNOWN
-            return ("",)
+            return ("",) if held else UNKNOWN
         # read where it is written: ``ros::NodeHandle right(nh, "right"); right_nh_ =
         # right;``
         return self.of(value, Scope(None, self.macros, self.source, self.sites)
@@ -378,6 +380,16 @@ def holds_handle(field: Cursor) -> bool:
     if ctype.kind in (TypeKind.POINTER, TypeKind.LVALUEREFERENCE, TypeKind.RVALUEREFERENCE):
         return False
     decl = ctype.get_declaration()
+    return decl is not None and qualified_name(decl) in api.HANDLE_CLASSES
+
+
+def binds_handle(field: Cursor) -> bool:
+    """A member that is a reference to a handle (``ros::NodeHandle& nh_``): every
+    constructor of its class binds it, for good, to the handle it gives it."""
+    ctype = field.type.get_canonical()
+    if ctype.kind != TypeKind.LVALUEREFERENCE:
+        return False
+    decl = ctype.get_pointee().get_canonical().get_declaration()
     return decl is not None and qualified_name(decl) in api.HANDLE_CLASSES
 
 

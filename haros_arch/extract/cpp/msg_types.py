@@ -51,6 +51,10 @@ def message_type(ctype: Type, service: bool = False,
                 name = name[: -len(suffix)]
                 break
     scopes = _namespaces(parent)
+    if not scopes and _synthesised(decl) and parent is not None and parent.kind in _RECORDS:
+        # ``pkg::Msg::ConstPtr`` where ``pkg::Msg`` is also used as a type: both declared
+        # for names the parse did not know, the pointer a class inside the message's
+        scopes = _synthesised_scopes(parent)
     if not scopes or not name:
         return None
     if templated and (cloud := template_message(decl, ros2)) is not None:
@@ -101,6 +105,19 @@ def written_type(text: str, ros2: bool | None, used_as_message: bool = False) ->
     )):
         return "/".join(parts)
     return None
+
+
+def _synthesised_scopes(cursor: Cursor) -> list[str]:
+    """The namespaces and the classes declared permissively (``_synthesised``) that
+    enclose a permissive class, outermost first; empty when a real class is among them
+    (a member type of a class the parse knows is not named after a message)."""
+    scopes: list[str] = []
+    while cursor is not None and cursor.kind in _RECORDS:
+        if not _synthesised(cursor):
+            return []
+        scopes.append(cursor.spelling)
+        cursor = cursor.semantic_parent
+    return [*_namespaces(cursor), *scopes[::-1]]
 
 
 def _synthesised(decl: Cursor) -> bool:

@@ -33,6 +33,7 @@ from .expressions import (
     unresolved_operator,
     written_arguments,
 )
+from .synthesis import ANY
 from .writes import Write, const_array, writes_of
 
 if TYPE_CHECKING:
@@ -711,6 +712,16 @@ class Scope:
                 return self.string(left, depth + 1) + self.string(right, depth + 1)
             inner = operand(call)
             return self.string(inner, depth + 1) if inner is not None else UNKNOWN
+        if target.kind == CursorKind.CONVERSION_FUNCTION and not args and (
+            target.semantic_parent is not None and target.semantic_parent.spelling == ANY
+        ):
+            # a permissive value (of a library the parse does not have) given where a
+            # string is taken: the value it holds (``name + "/pose"``, the permissive
+            # ``operator+`` of the library's value and the text: ``?/pose``)
+            callee = first_operand(call)  # ``held.operator std::string &``
+            held = first_operand(callee) if callee is not None and (
+                callee.kind == CursorKind.MEMBER_REF_EXPR) else None
+            return self.string(held, depth + 1) if held is not None else UNKNOWN
         if not args and target.spelling == "getName" and target.semantic_parent is not None \
                 and target.semantic_parent.spelling == "this_node":
             return ("~",)  # ros::this_node::getName(): the node's own (private) name

@@ -34,6 +34,7 @@ from .cursors import children_in, from_standin, overloads, release, root
 from .expressions import binary_operator, constructed_name, first_operand
 from .handles import (
     Namespaces,
+    binds_handle,
     callback,
     callback_name,
     holds_handle,
@@ -292,8 +293,9 @@ class CallFinder:
 
     def _member_namespace(self, field: Cursor) -> str | None:
         """The namespace of a handle member, as the unit's constructors of its class give
-        it (``links.member_facts``); None for a member that holds no handle."""
-        if not holds_handle(field):
+        it (``links.member_facts``); None for a member that holds no handle, by value or
+        as a reference bound by the constructors."""
+        if not holds_handle(field) and not binds_handle(field):
             return None
         return render(self.namespaces.member(field, None))
 
