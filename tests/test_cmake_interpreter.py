@@ -198,3 +198,78 @@ def test_user_macro_overrides_a_builtin_which_stays_reachable():
         add_executable(talker talker.cpp)
         """)
     assert list(it.targets) == ["talker_wrapped"]
+
+
+ROS_VERSION_PROBE = """
+    set(DISTROS humble iron)
+    if(NOT DEFINED ROS_VERSION)
+      foreach(distro IN LISTS DISTROS)
+        if(EXISTS "/opt/ros/${distro}/setup.sh")
+          set(ROS_VERSION 2)
+          break()
+        endif()
+      endforeach()
+    endif()
+    if(NOT DEFINED ROS_VERSION AND DEFINED ENV{ROS_VERSION})
+      set(ROS_VERSION $ENV{ROS_VERSION})
+    endif()
+    add_compile_options(-D__ROS_VERSION=${ROS_VERSION})
+    if(ROS_VERSION EQUAL 0)
+      add_compile_options(-DROSSIMU)
+    endif()
+    if(ROS_VERSION EQUAL 1)
+      add_executable(ros1_node a.cpp)
+    endif()
+    if(ROS_VERSION EQUAL 2)
+      add_executable(ros2_node a.cpp)
+    endif()
+    """
+
+
+def test_a_variable_set_under_a_test_not_decided_holds_either_value():
+    """sick_scan_xd's CMakeLists.txt sets ROS_VERSION 2 where /opt/ros/<distro>/setup.sh
+    exists (outside the package: not decided), else from the environment: with ROS 1's
+    environment, ROS_VERSION is 2 or 1, so both the ROS 1 and the ROS 2 target are built
+    under their test, the -D flag's value is not known, and ``EQUAL 0`` is false on every
+    path (its macro known absent)."""
+    it = run(ROS_VERSION_PROBE, env={"ROS_VERSION": "1"})
+    got = {n: [str(c) for c in t.conditions] for n, t in it.targets.items()}
+    assert got == {"ros1_node": ["if (ROS_VERSION EQUAL 1)"],
+                   "ros2_node": ["if (ROS_VERSION EQUAL 2)"]}
+    assert set(it.either["ROS_VERSION"]) == {"1", "2"}
+    [(definition)] = it.compile_options[-1]
+    assert (definition.name, definition.known) == ("__ROS_VERSION", False)
+    assert it.absent_definitions == {"ROSSIMU"}
+
+
+def test_a_test_every_path_decides_alike_is_decided():
+    """With ROS 2's environment every path gives ROS_VERSION 2 (the probe's, or the
+    environment's where the probe found none): the ROS 2 target only, for certain."""
+    it = run(ROS_VERSION_PROBE, env={"ROS_VERSION": "2"})
+    assert {n: t.conditions for n, t in it.targets.items()} == {"ros2_node": ()}
+    assert it.get("ROS_VERSION") == "2" and "ROS_VERSION" not in it.either
+    [(definition)] = it.compile_options[-1]
+    assert (definition.value, definition.known) == ("2", True)
+
+
+def test_branches_not_decided_start_from_the_same_values():
+    """An elseif's branch does not see what the if's branch set (they are exclusive), and
+    a variable set in one branch only is, after the block, that value or the old one."""
+    it = run("""
+        set(MODE none)
+        if(USE_GPU)
+          set(MODE gpu)
+          set(ONLY_GPU 1)
+        elseif(MODE STREQUAL "gpu")
+          add_executable(never a.cpp)
+        else()
+          set(MODE cpu)
+        endif()
+        if(MODE STREQUAL "none")
+          add_executable(never_either a.cpp)
+        endif()
+        """)
+    assert "never" not in it.targets and "never_either" not in it.targets
+    assert set(it.either["MODE"]) == {"gpu", "cpu"}
+    assert set(it.either["ONLY_GPU"]) == {"1", None}
+    assert it.get("MODE") == "cpu"  # the value the reading goes on with: the last path's
