@@ -273,3 +273,25 @@ def test_branches_not_decided_start_from_the_same_values():
     assert set(it.either["MODE"]) == {"gpu", "cpu"}
     assert set(it.either["ONLY_GPU"]) == {"1", None}
     assert it.get("MODE") == "cpu"  # the value the reading goes on with: the last path's
+
+
+def test_a_target_made_in_a_branch_and_in_its_else_is_made_for_certain():
+    """sick_scan_xd makes sick_generic_caller in ``if(ROS_VERSION EQUAL 1)`` and again in
+    its ``else()``: with ROS_VERSION either 1 or 2, it is made on both paths, under no
+    condition (it was under the else's); one made in a branch and an unrelated test's
+    keeps the later's."""
+    it = run(ROS_VERSION_PROBE + """
+        if(ROS_VERSION EQUAL 1)
+          add_executable(caller one.cpp)
+        else()
+          add_executable(caller two.cpp)
+        endif()
+        if(USE_A)
+          add_executable(other a.cpp)
+        endif()
+        if(USE_B)
+          add_executable(other b.cpp)
+        endif()
+        """, env={"ROS_VERSION": "1"})
+    assert it.targets["caller"].conditions == ()
+    assert [str(c) for c in it.targets["other"].conditions] == ["if (USE_B)"]

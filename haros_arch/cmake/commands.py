@@ -14,6 +14,7 @@ from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 from .. import diagnostics as diag
+from ..model.conditions import Condition
 from . import listops
 from .lexer import Argument, Invocation
 from .listops import RegexLimit, run_list, run_math, run_string, split_list
@@ -391,8 +392,12 @@ def _add_target(it: Interpreter, command: Invocation, args: list[str], kind: str
         sources.extend(_glob(it, [os.path.join(folder, "*" + s) for s in C_SUFFIXES],
                              recurse=True))
     sources.extend(it.path(a) for a in rest if a not in flags)
+    conditions = it.current_conditions()
+    before = it.targets.get(args[0])
+    if before is not None:
+        conditions = _on_every_path(before.conditions, conditions)
     target = it.targets[args[0]] = Target(
-        args[0], kind, sources, conditions=it.current_conditions(), line=command.line,
+        args[0], kind, sources, conditions=conditions, line=command.line,
         column=command.column, file=command.file,
         directory_definitions=it.compile_definitions[-1],
         definitions=[("PRIVATE", each) for each in it.compile_options[-1]])
@@ -404,6 +409,20 @@ def _add_target(it: Interpreter, command: Invocation, args: list[str], kind: str
             target.links.extend(name for name in it.auto_libraries if name != args[0])
         if kind == "library":
             it.auto_libraries.append(args[0])
+
+
+def _on_every_path(before: tuple[Condition, ...],
+                   now: tuple[Condition, ...]) -> tuple[Condition, ...]:
+    """The conditions of a target made again (CMake allows one name once per path): when
+    it was made in a branch of an ``if()`` not decided and now in the ``else`` after it
+    (sick_scan_xd's sick_generic_caller in both branches of ``if(ROS_VERSION EQUAL 1)``),
+    it is made on both paths, under what they share; else under the later's."""
+    if before and len(before) == len(now) and before[:-1] == now[:-1]:
+        one, other = before[-1], now[-1]
+        if (one.text, one.kind, one.location) == (other.text, other.kind, other.location) \
+                and one.statement in ("if", "elseif") and other.statement == "else":
+            return now[:-1]
+    return now
 
 
 # -- compile definitions ------------------------------------------------------------
