@@ -295,3 +295,30 @@ def test_a_target_made_in_a_branch_and_in_its_else_is_made_for_certain():
         """, env={"ROS_VERSION": "1"})
     assert it.targets["caller"].conditions == ()
     assert [str(c) for c in it.targets["other"].conditions] == ["if (USE_B)"]
+
+
+DUAL = """
+    find_package(catkin QUIET)
+    if(catkin_FOUND)
+      add_executable(ros1_node a.cpp)
+    else()
+      find_package(ament_cmake QUIET)
+      if(ament_cmake_FOUND)
+        add_executable(ros2_node a.cpp)
+      endif()
+    endif()
+    """
+
+
+@pytest.mark.parametrize(("env", "expected"), [
+    ({"ROS_VERSION": "1"}, {"ros1_node": []}),
+    ({"ROS_VERSION": "2"}, {"ros2_node": []}),
+    ({}, {"ros1_node": ["if (catkin_FOUND)"],
+          "ros2_node": ["else (catkin_FOUND)", "if (ament_cmake_FOUND)"]}),
+])
+def test_the_distribution_decides_which_build_tool_is_found(env, expected):
+    """A package built for ROS 1 and ROS 2 that picks its code with ``find_package(catkin
+    QUIET)`` and ``if(catkin_FOUND)``: a project's ``distro:`` (its ROS_VERSION) says
+    which is found; with none known both branches stay, each under its test."""
+    it = run(DUAL, env=env)
+    assert {n: [str(c) for c in t.conditions] for n, t in it.targets.items()} == expected

@@ -632,10 +632,31 @@ _PACKAGE_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
 _TARGET_NAME = re.compile(r"[A-Za-z0-9_.+-]+")
 
 
+# the build tool each ROS version's distributions have (catkin is in none of ROS 2's)
+_BUILD_TOOLS = {"catkin": "1", "ament_cmake": "2"}
+
+
+def _tool_found(it: Interpreter, name: str, required: bool) -> str | None:
+    """``<tool>_FOUND`` for a ROS build tool, where the run's environment says which ROS
+    it builds for (``distro:`` gives ROS_VERSION): a distribution's own tool is found
+    (a dual package's ``find_package(catkin QUIET)`` then ``if(catkin_FOUND)``); catkin
+    is not in a ROS 2 one. None where that is not known."""
+    version = it.environment.get("ROS_VERSION", "").strip()
+    tool = _BUILD_TOOLS.get(name)
+    if tool is None or version not in ("1", "2"):
+        return None
+    if version == tool:
+        return "TRUE"
+    return "FALSE" if name == "catkin" and not required else None
+
+
 @handles("find_package")
 def _find_package(it: Interpreter, command: Invocation, args: list[str]) -> None:
     if not args or not _PACKAGE_NAME.fullmatch(args[0]):
         return
+    found = _tool_found(it, args[0], "REQUIRED" in args[1:])
+    if found is not None:
+        it.set(f"{args[0]}_FOUND", found)
     if args[0] == "catkin":
         components: list[str] = []
         taking = False
