@@ -322,3 +322,26 @@ def test_the_distribution_decides_which_build_tool_is_found(env, expected):
     which is found; with none known both branches stay, each under its test."""
     it = run(DUAL, env=env)
     assert {n: [str(c) for c in t.conditions] for n, t in it.targets.items()} == expected
+
+
+def test_a_target_takes_the_sources_of_every_path():
+    """Autoware's shape estimation adds its TensorRT source ``if(${CUDA_FOUND} AND ...)``
+    and not in the ``else()``: the library's sources are those of both paths (after the
+    else, the reading's own value left it out); a variable set to one list or another
+    gives both lists."""
+    it = run("""
+        set(SRCS a.cpp)
+        if(${CUDA_FOUND})
+          list(APPEND SRCS gpu.cpp)
+          set(EXTRA cuda.cpp)
+        else()
+          message("no CUDA")
+          set(EXTRA cpu.cpp)
+        endif()
+        add_library(lib ${SRCS})
+        add_executable(node ${EXTRA})
+        target_sources(node PRIVATE ${SRCS})
+        """)
+    assert [s.rsplit("/", 1)[1] for s in it.targets["lib"].sources] == ["a.cpp", "gpu.cpp"]
+    assert [s.rsplit("/", 1)[1] for s in it.targets["node"].sources] == [
+        "cuda.cpp", "cpu.cpp", "a.cpp", "gpu.cpp"]

@@ -383,6 +383,9 @@ def _add_target(it: Interpreter, command: Invocation, args: list[str], kind: str
                 flags: tuple[str, ...]) -> None:
     if not args or "IMPORTED" in args or "ALIAS" in args or "INTERFACE" in args[1:2]:
         return
+    every = it.every_way(command.args)  # the sources of every path through tests not decided
+    if every[:1] == args[:1]:
+        args = every
     sources: list[str] = []
     rest = args[1:]
     if "DIRECTORY" in rest:  # ament_auto_add_*: sources found in a folder
@@ -616,7 +619,9 @@ def _target_sources(it: Interpreter, command: Invocation, args: list[str]) -> No
     if target is not None:
         keywords = ("PRIVATE", "PUBLIC", "INTERFACE", "FILE_SET", "TYPE", "BASE_DIRS",
                     "FILES", "HEADERS", "CXX_MODULES")
-        target.sources.extend(it.path(a) for a in args[1:] if a not in keywords)
+        every = it.every_way(command.args)
+        target.sources.extend(it.path(a) for a in (every if every[:1] == args[:1] else args)[1:]
+                              if a not in keywords)
 
 
 # what ``find_package(pkg)`` leaves in ``pkg_LIBRARIES`` (and catkin in

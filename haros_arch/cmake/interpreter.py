@@ -436,6 +436,28 @@ class Interpreter:
                     fails[name].add(value)
         return None, holds, fails
 
+    def every_way(self, args: tuple[Argument, ...]) -> list[str]:
+        """A command's arguments expanded with every choice of the values its variables
+        of ``self.either`` may hold, each item once, in order (a target's sources: those
+        of every path, as ``if(CUDA_FOUND) list(APPEND SRCS gpu.cpp) endif()`` leaves
+        ``SRCS`` with or without gpu.cpp); past ``MAX_CHOICES`` choices, as they are."""
+        names = [name for name in dict.fromkeys(_names_read(args)) if name in self.either]
+        choices = list(itertools.product(*(self.either[name] for name in names)))
+        if not names or len(choices) > MAX_CHOICES:
+            return self.arguments(args)
+        scope = self.scopes[-1]
+        kept = {name: scope.get(name) for name in names}
+        found: dict[str, None] = {}
+        try:
+            for choice in choices:
+                for name, value in zip(names, choice, strict=True):
+                    _put(scope, name, value)
+                found.update(dict.fromkeys(self.arguments(args)))
+        finally:
+            for name, value in kept.items():
+                _put(scope, name, value)
+        return list(found)
+
     def _values(self) -> _Values:
         return _Values([dict(scope) for scope in self.scopes], dict(self.cache),
                        set(self.uncertain), dict(self.either))
