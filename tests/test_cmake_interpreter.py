@@ -330,17 +330,18 @@ def test_a_target_takes_the_sources_of_every_path():
     else, the reading's own value left it out); a variable set to one list or another
     gives both lists."""
     it = run("""
-        set(SRCS a.cpp)
+        project(shape)
+        set(${PROJECT_NAME}_SOURCES a.cpp)
         if(${CUDA_FOUND})
-          list(APPEND SRCS gpu.cpp)
+          list(APPEND ${PROJECT_NAME}_SOURCES gpu.cpp)
           set(EXTRA cuda.cpp)
         else()
           message("no CUDA")
           set(EXTRA cpu.cpp)
         endif()
-        add_library(lib ${SRCS})
+        add_library(lib ${${PROJECT_NAME}_SOURCES})
         add_executable(node ${EXTRA})
-        target_sources(node PRIVATE ${SRCS})
+        target_sources(node PRIVATE ${shape_SOURCES})
         """)
     assert [s.rsplit("/", 1)[1] for s in it.targets["lib"].sources] == ["a.cpp", "gpu.cpp"]
     assert [s.rsplit("/", 1)[1] for s in it.targets["node"].sources] == [

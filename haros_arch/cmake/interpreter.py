@@ -244,8 +244,21 @@ class Interpreter:
         False, a variable of ``self.either`` does not count."""
         return self._expanded(text, stop_at_unknown=True, either=either)[1]
 
+    def _names_read(self, args: tuple[Argument, ...]) -> list[str]:
+        """The variables a command's arguments read: through ``${V}`` (also the inner
+        ones of ``${${PROJECT_NAME}_SOURCES}``, as expanding it reads them), or named bare
+        (``if(V)``)."""
+        names: list[str] = []
+        for arg in args:
+            if arg.kind == "bracket":
+                continue
+            self._expanded(arg.text, read=names)
+            if arg.kind == "unquoted" and _VARIABLE_WORD.fullmatch(arg.text):
+                names.append(arg.text)
+        return names
+
     def _expanded(self, text: str, stop_at_unknown: bool = False,
-                  either: bool = True) -> tuple[str, bool]:
+                  either: bool = True, read: list[str] | None = None) -> tuple[str, bool]:
         """``text`` with its references replaced by their values (one not set: empty, as
         CMake gives it), and whether one read is not known here: not set, a variable set
         under a test decided on what is not known (``uncertain``), or (with ``either``)
@@ -259,6 +272,8 @@ class Interpreter:
             if not match:
                 return text, False
             kind, name = match.group(1), match.group(2)
+            if read is not None and not kind:
+                read.append(name)
             value = (self.environment.get(name) if kind == "ENV" else
                      self.cache.get(name) if kind == "CACHE" else self.get(name))
             if stop_at_unknown and (value is None or (not kind and (
@@ -407,7 +422,7 @@ class Interpreter:
         values and decided when all agree; when not, also the values of each such
         variable with which the test may hold, and those with which it may not (a path
         into the branch, or past it, holds only those)."""
-        names = [name for name in dict.fromkeys(_names_read(head.args)) if name in self.either]
+        names = [name for name in dict.fromkeys(self._names_read(head.args)) if name in self.either]
         if not names:
             return self.evaluate(self.arguments(head.args)), {}, {}
         choices = list(itertools.product(*(self.either[name] for name in names)))
@@ -441,7 +456,7 @@ class Interpreter:
         of ``self.either`` may hold, each item once, in order (a target's sources: those
         of every path, as ``if(CUDA_FOUND) list(APPEND SRCS gpu.cpp) endif()`` leaves
         ``SRCS`` with or without gpu.cpp); past ``MAX_CHOICES`` choices, as they are."""
-        names = [name for name in dict.fromkeys(_names_read(args)) if name in self.either]
+        names = [name for name in dict.fromkeys(self._names_read(args)) if name in self.either]
         choices = list(itertools.product(*(self.either[name] for name in names)))
         if not names or len(choices) > MAX_CHOICES:
             return self.arguments(args)
@@ -805,19 +820,6 @@ def _put(table: dict[str, str], name: str, value: str | None) -> None:
         table.pop(name, None)
     else:
         table[name] = value
-
-
-def _names_read(args: tuple[Argument, ...]) -> list[str]:
-    """The variables a test reads: through ``${V}``, or named bare (``if(V)``)."""
-    names: list[str] = []
-    for arg in args:
-        if arg.kind == "bracket":
-            continue
-        names.extend(match.group(2) for match in _VAR_REF.finditer(arg.text)
-                     if not match.group(1))
-        if arg.kind == "unquoted" and _VARIABLE_WORD.fullmatch(arg.text):
-            names.append(arg.text)
-    return names
 
 
 def _substitute(command: Invocation, values: Mapping[str, str]) -> Invocation:
