@@ -345,4 +345,4 @@ def test_a_target_takes_the_sources_of_every_path():
         """)
     assert [s.rsplit("/", 1)[1] for s in it.targets["lib"].sources] == ["a.cpp", "gpu.cpp"]
     assert [s.rsplit("/", 1)[1] for s in it.targets["node"].sources] == [
-        "cuda.cpp", "cpu.cpp", "a.cpp", "gpu.cpp"]
+        "cpu.cpp", "cuda.cpp", "a.cpp", "gpu.cpp"]

@@ -453,16 +453,17 @@ class Interpreter:
 
     def every_way(self, args: tuple[Argument, ...]) -> list[str]:
         """A command's arguments expanded with every choice of the values its variables
-        of ``self.either`` may hold, each item once, in order (a target's sources: those
-        of every path, as ``if(CUDA_FOUND) list(APPEND SRCS gpu.cpp) endif()`` leaves
-        ``SRCS`` with or without gpu.cpp); past ``MAX_CHOICES`` choices, as they are."""
+        of ``self.either`` may hold, each item once: as they are now, then those the
+        other choices add (a target's sources: those of every path, as
+        ``if(CUDA_FOUND) list(APPEND SRCS gpu.cpp) endif()`` leaves ``SRCS`` with or
+        without gpu.cpp); past ``MAX_CHOICES`` choices, as they are."""
         names = [name for name in dict.fromkeys(self._names_read(args)) if name in self.either]
         choices = list(itertools.product(*(self.either[name] for name in names)))
         if not names or len(choices) > MAX_CHOICES:
             return self.arguments(args)
         scope = self.scopes[-1]
         kept = {name: scope.get(name) for name in names}
-        found: dict[str, None] = {}
+        found = dict.fromkeys(self.arguments(args))
         try:
             for choice in choices:
                 for name, value in zip(names, choice, strict=True):
