@@ -398,7 +398,7 @@ def _add_target(it: Interpreter, command: Invocation, args: list[str], kind: str
     conditions = it.current_conditions()
     before = it.targets.get(args[0])
     if before is not None:
-        conditions = _on_every_path(before.conditions, conditions)
+        conditions = on_every_path(before.conditions, conditions)
     target = it.targets[args[0]] = Target(
         args[0], kind, sources, conditions=conditions, line=command.line,
         column=command.column, file=command.file,
@@ -414,7 +414,7 @@ def _add_target(it: Interpreter, command: Invocation, args: list[str], kind: str
             it.auto_libraries.append(args[0])
 
 
-def _on_every_path(before: tuple[Condition, ...],
+def on_every_path(before: tuple[Condition, ...],
                    now: tuple[Condition, ...]) -> tuple[Condition, ...]:
     """The conditions of a target made again (CMake allows one name once per path): when
     it was made in a branch of an ``if()`` not decided and now in the ``else`` after it
