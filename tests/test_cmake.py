@@ -622,3 +622,32 @@ def test_words_in_comments_and_strings_name_no_library_file(write_tree):
     assert [(n.executable, sorted(n.sources)) for n in nodes
             if n.kind == "executable"] == [("chain", ["lf/src/chain.cpp",
                                                       "lf/src/projector.cpp"])]
+
+
+def test_a_component_registered_in_a_branch_and_in_its_else_is_made_for_certain(
+        write_tree):
+    """Autoware's traffic light classifier registers its component under
+    ``if(TRT_AVAIL AND CUDA_AVAIL AND CUDNN_AVAIL)`` (one library) and again in the
+    ``else()`` (another): the node is made on both paths, under no condition (the first
+    registration's condition stayed)."""
+    ws, pkg = workspace_with(write_tree, """
+        project(pkg)
+        find_package(rclcpp_components REQUIRED)
+        if(GPU_FOUND)
+          set(GPU ON)
+        else()
+          set(GPU OFF)
+        endif()
+        if(GPU)
+          add_library(gpu_lib SHARED src/b.cpp)
+          rclcpp_components_register_node(gpu_lib PLUGIN "pkg::Classifier"
+            EXECUTABLE classifier_node)
+        else()
+          add_library(cpu_lib SHARED src/c.cpp)
+          rclcpp_components_register_node(cpu_lib PLUGIN "pkg::Classifier"
+            EXECUTABLE classifier_node)
+        endif()
+        """)
+    nodes, _ = parse_package(pkg, ws)
+    assert {n.executable: [str(c) for c in n.conditions] for n in nodes} == {
+        "classifier_node": [], "pkg::Classifier": []}

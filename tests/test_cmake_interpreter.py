@@ -198,3 +198,151 @@ def test_user_macro_overrides_a_builtin_which_stays_reachable():
         add_executable(talker talker.cpp)
         """)
     assert list(it.targets) == ["talker_wrapped"]
+
+
+ROS_VERSION_PROBE = """
+    set(DISTROS humble iron)
+    if(NOT DEFINED ROS_VERSION)
+      foreach(distro IN LISTS DISTROS)
+        if(EXISTS "/opt/ros/${distro}/setup.sh")
+          set(ROS_VERSION 2)
+          break()
+        endif()
+      endforeach()
+    endif()
+    if(NOT DEFINED ROS_VERSION AND DEFINED ENV{ROS_VERSION})
+      set(ROS_VERSION $ENV{ROS_VERSION})
+    endif()
+    add_compile_options(-D__ROS_VERSION=${ROS_VERSION})
+    if(ROS_VERSION EQUAL 0)
+      add_compile_options(-DROSSIMU)
+    endif()
+    if(ROS_VERSION EQUAL 1)
+      add_executable(ros1_node a.cpp)
+    endif()
+    if(ROS_VERSION EQUAL 2)
+      add_executable(ros2_node a.cpp)
+    endif()
+    """
+
+
+def test_a_variable_set_under_a_test_not_decided_holds_either_value():
+    """sick_scan_xd's CMakeLists.txt sets ROS_VERSION 2 where /opt/ros/<distro>/setup.sh
+    exists (outside the package: not decided), else from the environment: with ROS 1's
+    environment, ROS_VERSION is 2 or 1, so both the ROS 1 and the ROS 2 target are built
+    under their test, the -D flag's value is not known, and ``EQUAL 0`` is false on every
+    path (its macro known absent)."""
+    it = run(ROS_VERSION_PROBE, env={"ROS_VERSION": "1"})
+    got = {n: [str(c) for c in t.conditions] for n, t in it.targets.items()}
+    assert got == {"ros1_node": ["if (ROS_VERSION EQUAL 1)"],
+                   "ros2_node": ["if (ROS_VERSION EQUAL 2)"]}
+    assert set(it.either["ROS_VERSION"]) == {"1", "2"}
+    [(definition)] = it.compile_options[-1]
+    assert (definition.name, definition.known) == ("__ROS_VERSION", False)
+    assert it.absent_definitions == {"ROSSIMU"}
+
+
+def test_a_test_every_path_decides_alike_is_decided():
+    """With ROS 2's environment every path gives ROS_VERSION 2 (the probe's, or the
+    environment's where the probe found none): the ROS 2 target only, for certain."""
+    it = run(ROS_VERSION_PROBE, env={"ROS_VERSION": "2"})
+    assert {n: t.conditions for n, t in it.targets.items()} == {"ros2_node": ()}
+    assert it.get("ROS_VERSION") == "2" and "ROS_VERSION" not in it.either
+    [(definition)] = it.compile_options[-1]
+    assert (definition.value, definition.known) == ("2", True)
+
+
+def test_branches_not_decided_start_from_the_same_values():
+    """An elseif's branch does not see what the if's branch set (they are exclusive), and
+    a variable set in one branch only is, after the block, that value or the old one."""
+    it = run("""
+        set(MODE none)
+        if(USE_GPU)
+          set(MODE gpu)
+          set(ONLY_GPU 1)
+        elseif(MODE STREQUAL "gpu")
+          add_executable(never a.cpp)
+        else()
+          set(MODE cpu)
+        endif()
+        if(MODE STREQUAL "none")
+          add_executable(never_either a.cpp)
+        endif()
+        """)
+    assert "never" not in it.targets and "never_either" not in it.targets
+    assert set(it.either["MODE"]) == {"gpu", "cpu"}
+    assert set(it.either["ONLY_GPU"]) == {"1", None}
+    assert it.get("MODE") == "cpu"  # the value the reading goes on with: the last path's
+
+
+def test_a_target_made_in_a_branch_and_in_its_else_is_made_for_certain():
+    """sick_scan_xd makes sick_generic_caller in ``if(ROS_VERSION EQUAL 1)`` and again in
+    its ``else()``: with ROS_VERSION either 1 or 2, it is made on both paths, under no
+    condition (it was under the else's); one made in a branch and an unrelated test's
+    keeps the later's."""
+    it = run(ROS_VERSION_PROBE + """
+        if(ROS_VERSION EQUAL 1)
+          add_executable(caller one.cpp)
+        else()
+          add_executable(caller two.cpp)
+        endif()
+        if(USE_A)
+          add_executable(other a.cpp)
+        endif()
+        if(USE_B)
+          add_executable(other b.cpp)
+        endif()
+        """, env={"ROS_VERSION": "1"})
+    assert it.targets["caller"].conditions == ()
+    assert [str(c) for c in it.targets["other"].conditions] == ["if (USE_B)"]
+
+
+DUAL = """
+    find_package(catkin QUIET)
+    if(catkin_FOUND)
+      add_executable(ros1_node a.cpp)
+    else()
+      find_package(ament_cmake QUIET)
+      if(ament_cmake_FOUND)
+        add_executable(ros2_node a.cpp)
+      endif()
+    endif()
+    """
+
+
+@pytest.mark.parametrize(("env", "expected"), [
+    ({"ROS_VERSION": "1"}, {"ros1_node": []}),
+    ({"ROS_VERSION": "2"}, {"ros2_node": []}),
+    ({}, {"ros1_node": ["if (catkin_FOUND)"],
+          "ros2_node": ["else (catkin_FOUND)", "if (ament_cmake_FOUND)"]}),
+])
+def test_the_distribution_decides_which_build_tool_is_found(env, expected):
+    """A package built for ROS 1 and ROS 2 that picks its code with ``find_package(catkin
+    QUIET)`` and ``if(catkin_FOUND)``: a project's ``distro:`` (its ROS_VERSION) says
+    which is found; with none known both branches stay, each under its test."""
+    it = run(DUAL, env=env)
+    assert {n: [str(c) for c in t.conditions] for n, t in it.targets.items()} == expected
+
+
+def test_a_target_takes_the_sources_of_every_path():
+    """Autoware's shape estimation adds its TensorRT source ``if(${CUDA_FOUND} AND ...)``
+    and not in the ``else()``: the library's sources are those of both paths (after the
+    else, the reading's own value left it out); a variable set to one list or another
+    gives both lists."""
+    it = run("""
+        project(shape)
+        set(${PROJECT_NAME}_SOURCES a.cpp)
+        if(${CUDA_FOUND})
+          list(APPEND ${PROJECT_NAME}_SOURCES gpu.cpp)
+          set(EXTRA cuda.cpp)
+        else()
+          message("no CUDA")
+          set(EXTRA cpu.cpp)
+        endif()
+        add_library(lib ${${PROJECT_NAME}_SOURCES})
+        add_executable(node ${EXTRA})
+        target_sources(node PRIVATE ${shape_SOURCES})
+        """)
+    assert [s.rsplit("/", 1)[1] for s in it.targets["lib"].sources] == ["a.cpp", "gpu.cpp"]
+    assert [s.rsplit("/", 1)[1] for s in it.targets["node"].sources] == [
+        "cpu.cpp", "cuda.cpp", "a.cpp", "gpu.cpp"]

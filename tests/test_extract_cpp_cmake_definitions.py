@@ -310,3 +310,41 @@ def test_a_macro_of_a_branch_not_taken_is_known_absent(write_tree) -> None:
     assert [c.name for c in node.calls if c.kind == "publish"] == ["two"]
     said = [d.location.line for d in model.diagnostics if d.code == "CPP_BUILD_MACRO"]
     assert said == [16]  # MAYBE only
+
+
+EITHER = r"""
+cmake_minimum_required(VERSION 3.8)
+project(either)
+if(DEFINED ENV{HAROS_TEST_UNSET_BACKEND})
+  set(BACKEND 1)
+else()
+  set(BACKEND 0)
+endif()
+if(WITH_EXTRA)
+  set(EXTRA_FLAG -DEXTRA)
+endif()
+if(BACKEND EQUAL 2)
+  add_definitions(-DBACKEND_TWO)
+endif()
+add_definitions(-DBACKEND=${BACKEND} ${EXTRA_FLAG} -DBASE)
+add_executable(n src/n.cpp)
+"""
+
+
+def test_a_value_set_under_a_test_not_decided_is_unknown(write_tree) -> None:
+    """A variable an if() the reading cannot decide sets in its branches (``if(DEFINED
+    ENV{X})`` with X not in the run's environment) is either value: a definition that
+    reads it is defined with its value unknown, not the last branch's 0; one a branch
+    not taken on any path would define is known absent (no flag either way)."""
+    root = write_tree({
+        "src/either/package.xml": package_xml("either", "ament_cmake"),
+        "src/either/CMakeLists.txt": EITHER,
+        "src/either/src/n.cpp": "int main() { return 0; }\n",
+    })
+    ws = scan([str(root / "src")], {})
+    assert cmake_flags(str(root / "src/either/src/n.cpp"), ws) == [
+        "-DBACKEND=(haros_cmake_value_unknown_BACKEND)", "-DBASE"]
+    # the environment the run is given decides it
+    ws = scan([str(root / "src")], {"HAROS_TEST_UNSET_BACKEND": "x"})
+    assert cmake_flags(str(root / "src/either/src/n.cpp"), ws) == [
+        "-DBACKEND=1", "-DBASE"]

@@ -69,7 +69,8 @@ def test_a_header_template_no_file_calls_makes_no_call(write_tree) -> None:
     kept, named ``?/...`` (an unknown handle), nine unresolved names and parameters of
     the node's that no code reads. Like a dependent ``make_shared`` there, a call the
     parse cannot resolve in a header's function template is made only where a file of
-    the node calls the template; one called is named from its call site."""
+    the node calls the template; one called is named from its call site. A call not
+    made is not said to be unresolved either (its CPP_CALL_UNRESOLVED stayed)."""
     root = write_tree({
         "pkg/package.xml": package_xml("pkg", "catkin").replace(
             "</package>", "<depend>roscpp</depend></package>"),
@@ -100,6 +101,8 @@ def test_a_header_template_no_file_calls_makes_no_call(write_tree) -> None:
                          cache_dir=None)
     assert [(c.kind, c.name, c.location.line) for c in result.calls] == [
         ("read", "~limit", 9)]
+    assert [d.location.line for d in result.diagnostics
+            if d.code == "CPP_CALL_UNRESOLVED"] == [9]
 
 
 def test_a_header_template_called_through_another_template_keeps_its_calls(

@@ -19,6 +19,7 @@ from ..files import read_text
 from ..model.source import Node, Package, Plugin
 from ..plugins.classes import remembered
 from ..workspace import Workspace
+from .commands import on_every_path
 from .interpreter import Interpreter
 from .lexer import CMakeSyntaxError, Invocation, tokenize
 from .nodes import (
@@ -246,8 +247,15 @@ def parse_package(package: Package, workspace: Workspace) -> tuple[list[Node], l
 
 
 def _unique(nodes: list[Node]) -> list[Node]:
-    """One node per name: the first declaration wins (CMake refuses duplicate targets)."""
+    """One node per name: the first declaration wins (CMake refuses duplicate targets);
+    one declared again in the ``else`` of the ``if()`` not decided that declared it is
+    made on both paths (Autoware's traffic_light_classifier_node, registered under
+    ``if(TRT_AVAIL AND CUDA_AVAIL AND CUDNN_AVAIL)`` and in its ``else()``)."""
     seen: dict[str, Node] = {}
     for node in nodes:
-        seen.setdefault(node.executable, node)
+        known = seen.setdefault(node.executable, node)
+        if known is not node:
+            both = on_every_path(known.conditions, node.conditions)
+            if len(both) < len(node.conditions):
+                known.conditions = both
     return list(seen.values())

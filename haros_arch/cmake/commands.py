@@ -14,6 +14,7 @@ from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 from .. import diagnostics as diag
+from ..model.conditions import Condition
 from . import listops
 from .lexer import Argument, Invocation
 from .listops import RegexLimit, run_list, run_math, run_string, split_list
@@ -382,6 +383,9 @@ def _add_target(it: Interpreter, command: Invocation, args: list[str], kind: str
                 flags: tuple[str, ...]) -> None:
     if not args or "IMPORTED" in args or "ALIAS" in args or "INTERFACE" in args[1:2]:
         return
+    every = it.every_way(command.args)  # the sources of every path through tests not decided
+    if every[:1] == args[:1]:
+        args = every
     sources: list[str] = []
     rest = args[1:]
     if "DIRECTORY" in rest:  # ament_auto_add_*: sources found in a folder
@@ -391,8 +395,12 @@ def _add_target(it: Interpreter, command: Invocation, args: list[str], kind: str
         sources.extend(_glob(it, [os.path.join(folder, "*" + s) for s in C_SUFFIXES],
                              recurse=True))
     sources.extend(it.path(a) for a in rest if a not in flags)
+    conditions = it.current_conditions()
+    before = it.targets.get(args[0])
+    if before is not None:
+        conditions = on_every_path(before.conditions, conditions)
     target = it.targets[args[0]] = Target(
-        args[0], kind, sources, conditions=it.current_conditions(), line=command.line,
+        args[0], kind, sources, conditions=conditions, line=command.line,
         column=command.column, file=command.file,
         directory_definitions=it.compile_definitions[-1],
         definitions=[("PRIVATE", each) for each in it.compile_options[-1]])
@@ -404,6 +412,20 @@ def _add_target(it: Interpreter, command: Invocation, args: list[str], kind: str
             target.links.extend(name for name in it.auto_libraries if name != args[0])
         if kind == "library":
             it.auto_libraries.append(args[0])
+
+
+def on_every_path(before: tuple[Condition, ...],
+                   now: tuple[Condition, ...]) -> tuple[Condition, ...]:
+    """The conditions of a target made again (CMake allows one name once per path): when
+    it was made in a branch of an ``if()`` not decided and now in the ``else`` after it
+    (sick_scan_xd's sick_generic_caller in both branches of ``if(ROS_VERSION EQUAL 1)``),
+    it is made on both paths, under what they share; else under the later's."""
+    if before and len(before) == len(now) and before[:-1] == now[:-1]:
+        one, other = before[-1], now[-1]
+        if (one.text, one.kind, one.location) == (other.text, other.kind, other.location) \
+                and one.statement in ("if", "elseif") and other.statement == "else":
+            return now[:-1]
+    return now
 
 
 # -- compile definitions ------------------------------------------------------------
@@ -597,7 +619,9 @@ def _target_sources(it: Interpreter, command: Invocation, args: list[str]) -> No
     if target is not None:
         keywords = ("PRIVATE", "PUBLIC", "INTERFACE", "FILE_SET", "TYPE", "BASE_DIRS",
                     "FILES", "HEADERS", "CXX_MODULES")
-        target.sources.extend(it.path(a) for a in args[1:] if a not in keywords)
+        every = it.every_way(command.args)
+        target.sources.extend(it.path(a) for a in (every if every[:1] == args[:1] else args)[1:]
+                              if a not in keywords)
 
 
 # what ``find_package(pkg)`` leaves in ``pkg_LIBRARIES`` (and catkin in
@@ -613,10 +637,31 @@ _PACKAGE_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
 _TARGET_NAME = re.compile(r"[A-Za-z0-9_.+-]+")
 
 
+# the build tool each ROS version's distributions have (catkin is in none of ROS 2's)
+_BUILD_TOOLS = {"catkin": "1", "ament_cmake": "2"}
+
+
+def _tool_found(it: Interpreter, name: str, required: bool) -> str | None:
+    """``<tool>_FOUND`` for a ROS build tool, where the run's environment says which ROS
+    it builds for (``distro:`` gives ROS_VERSION): a distribution's own tool is found
+    (a dual package's ``find_package(catkin QUIET)`` then ``if(catkin_FOUND)``); catkin
+    is not in a ROS 2 one. None where that is not known."""
+    version = it.environment.get("ROS_VERSION", "").strip()
+    tool = _BUILD_TOOLS.get(name)
+    if tool is None or version not in ("1", "2"):
+        return None
+    if version == tool:
+        return "TRUE"
+    return "FALSE" if name == "catkin" and not required else None
+
+
 @handles("find_package")
 def _find_package(it: Interpreter, command: Invocation, args: list[str]) -> None:
     if not args or not _PACKAGE_NAME.fullmatch(args[0]):
         return
+    found = _tool_found(it, args[0], "REQUIRED" in args[1:])
+    if found is not None:
+        it.set(f"{args[0]}_FOUND", found)
     if args[0] == "catkin":
         components: list[str] = []
         taking = False

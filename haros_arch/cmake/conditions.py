@@ -30,13 +30,18 @@ BINARY = ("STREQUAL", "STRLESS", "STRGREATER", "STRLESS_EQUAL", "STRGREATER_EQUA
 class Evaluator:
     def __init__(self, variables: Mapping[str, str], targets: Mapping[str, object],
                  base: str, known_commands: Callable[[str], bool] = lambda _: False,
-                 assigned: Collection[str] = ()) -> None:
+                 assigned: Collection[str] = (),
+                 environment: Mapping[str, str] | None = None) -> None:
         self.variables = variables
         self.targets = targets
         self.base = base
         self.known_commands = known_commands
         # names the package's own files set somewhere: when unset now, they are unset
         self.assigned = assigned
+        # the environment the build runs in, as far as the reading knows it (a project's
+        # ``distro:`` gives ROS_VERSION): a setting it has is defined; one it lacks may
+        # still be given to the build
+        self.environment = environment or {}
 
     def evaluate(self, args: list[str]) -> Truth:
         tokens = self._groups(list(args))
@@ -114,8 +119,8 @@ class Evaluator:
 
     def _unary(self, op: str, arg: str) -> Truth:
         if op == "DEFINED":
-            if arg.startswith("ENV{"):
-                return None
+            if arg.startswith("ENV{") and arg.endswith("}"):
+                return True if arg[4:-1] in self.environment else None
             if arg in self.variables:
                 return True
             return False if arg in self.assigned else None

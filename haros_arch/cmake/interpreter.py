@@ -7,13 +7,16 @@ the cache), runs control flow (``if``/``elseif``/``else``, ``foreach``, bounded
 by name through ``commands.HANDLERS``; commands it does not know are skipped quietly
 (they cannot create runnable nodes). A condition that depends on something unknown
 (an environment setting, a ``find_package`` result) does not drop what it guards: the
-guarded commands run with that condition attached. Work is bounded: a step budget, a
+guarded commands run with that condition attached; its branches start from the same
+variables, and a variable they leave differently holds either value after it
+(``Interpreter.either``). Work is bounded: a step budget, a
 loop bound and a nesting depth, each reported once when exceeded.
 """
 
 from __future__ import annotations
 
 import contextlib
+import itertools
 import os
 import re
 from collections import ChainMap
@@ -41,10 +44,15 @@ MAX_DEPTH = 64
 MAX_BLOCK_DEPTH = 200  # if / foreach / while blocks inside each other
 MAX_VALUE = 1_000_000  # characters in one variable's value or one command's arguments
 MAX_EXPANDED = 20_000_000  # characters of arguments expanded in one run (a loop of a big command)
+# the ways an if() test is evaluated, one per choice of the values its variables may hold
+# after tests not decided (``Interpreter.either``): past it, the test is not decided
+MAX_CHOICES = 64
 ARGUMENT_COST = 64  # characters an argument counts for besides its own
 BINARY_ROOT = "/<build>"  # CMAKE_BINARY_DIR: generated files have no source to read
 
 Reader = Callable[[str], list[Invocation]]
+# the values (None: not set) each variable may hold where a test holds, or does not
+Allowed = dict[str, set[str | None]]
 Locator = Callable[[str, int, int], Location]
 
 
@@ -53,6 +61,17 @@ class Definition:
     kind: str  # "macro" | "function"
     params: list[str]
     body: list[Invocation]
+
+
+@dataclass
+class _Values:
+    """The variables at one point of the reading, to run the next branch of an if() not
+    decided from the same start, and to join the paths after it."""
+
+    scopes: list[dict[str, str]]
+    cache: dict[str, str]
+    uncertain: set[str]
+    either: dict[str, tuple[str | None, ...]]
 
 
 class _Break(Exception):
@@ -116,6 +135,13 @@ class Interpreter:
         # that read such a thing (``if("${pkg_VERSION}" VERSION_GREATER 1)``, decided on
         # an empty string); ``unknown_reference`` takes them as not known
         self.uncertain: set[str] = set()
+        # variables written on some paths through if()s the reading cannot decide and not
+        # on others, or to different values: each path's value (None: not set), the
+        # variable holding the last path's (or its last set one) meanwhile. A test that
+        # reads one is decided only if every choice of values decides it alike
+        # (sick_scan_xd's ``if(EXISTS "/opt/ros/${distro}/setup.sh") set(ROS_VERSION 2)``
+        # leaves ROS_VERSION 2 or not set); any other reading of one is not known
+        self.either: dict[str, tuple[str | None, ...]] = {}
         self._unsure = 0  # > 0: what is set now is uncertain
         # the if() tests around the command being run that were decided on something not
         # known (``uncertain``): what they guard may run when it should not, or not run
@@ -151,6 +177,7 @@ class Interpreter:
         self._bounded(name, value)
         self.scopes[-1][name] = value
         self.assigned.add(name)
+        self.either.pop(name, None)
         if self._unsure:
             self.uncertain.add(name)
         else:
@@ -166,6 +193,7 @@ class Interpreter:
 
     def unset(self, name: str) -> None:
         self.scopes[-1].pop(name, None)
+        self.either.pop(name, None)
 
     def set_parent(self, name: str, value: str | None) -> None:
         if len(self.scopes) < 2:
@@ -210,15 +238,31 @@ class Interpreter:
     def expand(self, text: str) -> str:
         return self._expanded(text)[0]
 
-    def unknown_reference(self, text: str) -> bool:
+    def unknown_reference(self, text: str, either: bool = True) -> bool:
         """Whether expanding ``text`` reads a variable, environment setting or cache entry
-        that is not set here (its value is then not known, not empty)."""
-        return self._expanded(text, stop_at_unknown=True)[1]
+        that is not set here (its value is then not known, not empty); with ``either``
+        False, a variable of ``self.either`` does not count."""
+        return self._expanded(text, stop_at_unknown=True, either=either)[1]
 
-    def _expanded(self, text: str, stop_at_unknown: bool = False) -> tuple[str, bool]:
+    def _names_read(self, args: tuple[Argument, ...]) -> list[str]:
+        """The variables a command's arguments read: through ``${V}`` (also the inner
+        ones of ``${${PROJECT_NAME}_SOURCES}``, as expanding it reads them), or named bare
+        (``if(V)``)."""
+        names: list[str] = []
+        for arg in args:
+            if arg.kind == "bracket":
+                continue
+            self._expanded(arg.text, read=names)
+            if arg.kind == "unquoted" and _VARIABLE_WORD.fullmatch(arg.text):
+                names.append(arg.text)
+        return names
+
+    def _expanded(self, text: str, stop_at_unknown: bool = False,
+                  either: bool = True, read: list[str] | None = None) -> tuple[str, bool]:
         """``text`` with its references replaced by their values (one not set: empty, as
-        CMake gives it), and whether one read is not known here: not set, or a variable
-        set under a test the reading cannot decide (``uncertain``). With
+        CMake gives it), and whether one read is not known here: not set, a variable set
+        under a test decided on what is not known (``uncertain``), or (with ``either``)
+        one whose value depends on tests not decided (``self.either``). With
         ``stop_at_unknown``, the walk ends at the first such reference. A text that
         keeps growing past 1 MB or 1,000 replacements is not known either."""
         if "$" not in text:
@@ -228,9 +272,12 @@ class Interpreter:
             if not match:
                 return text, False
             kind, name = match.group(1), match.group(2)
+            if read is not None and not kind:
+                read.append(name)
             value = (self.environment.get(name) if kind == "ENV" else
                      self.cache.get(name) if kind == "CACHE" else self.get(name))
-            if stop_at_unknown and (value is None or (not kind and name in self.uncertain)):
+            if stop_at_unknown and (value is None or (not kind and (
+                    name in self.uncertain or (either and name in self.either)))):
                 return text, True
             text = text[:match.start()] + (value or "") + text[match.end():]
             if len(text) > 1_000_000:
@@ -320,7 +367,8 @@ class Interpreter:
             self.custom_builds.append(command)
         handler = HANDLERS.get(name[1:] if name.startswith("_") else name)
         if handler is not None:
-            unsure = self._reads_unknown(command.args)
+            # (the variable ``set()`` writes is no value it reads)
+            unsure = self._reads_unknown(command.args[1:] if name == "set" else command.args)
             self._unsure += unsure
             try:
                 handler(self, command, self.arguments(command.args))
@@ -364,14 +412,132 @@ class Interpreter:
     def evaluate(self, args: list[str]) -> bool | None:
         evaluator = Evaluator(self.variables, self.targets, self.package_root,
                               lambda name: name.lower() in HANDLERS
-                              or name.lower() in self.definitions, self.assigned)
+                              or name.lower() in self.definitions, self.assigned,
+                              self.environment)
         return evaluator.evaluate(args)
 
-    def _reads_unknown(self, args: tuple[Argument, ...]) -> bool:
+    def decide(self, head: Invocation) -> tuple[bool | None, Allowed, Allowed]:
+        """An if() / elseif() / while() test: True, False or None (not decided). A test
+        that reads variables of ``self.either`` is evaluated for every choice of their
+        values and decided when all agree; when not, also the values of each such
+        variable with which the test may hold, and those with which it may not (a path
+        into the branch, or past it, holds only those)."""
+        names = [name for name in dict.fromkeys(self._names_read(head.args)) if name in self.either]
+        if not names:
+            return self.evaluate(self.arguments(head.args)), {}, {}
+        choices = list(itertools.product(*(self.either[name] for name in names)))
+        if len(choices) > MAX_CHOICES:
+            return None, {}, {}
+        scope = self.scopes[-1]
+        kept = {name: scope.get(name) for name in names}
+        results: list[bool | None] = []
+        try:
+            for choice in choices:
+                for name, value in zip(names, choice, strict=True):
+                    _put(scope, name, value)
+                results.append(self.evaluate(self.arguments(head.args)))
+        finally:
+            for name, value in kept.items():
+                _put(scope, name, value)
+        if len(set(results)) == 1:
+            return results[0], {}, {}
+        holds: Allowed = {name: set() for name in names}
+        fails: Allowed = {name: set() for name in names}
+        for choice, result in zip(choices, results, strict=True):
+            for name, value in zip(names, choice, strict=True):
+                if result is not False:
+                    holds[name].add(value)
+                if result is not True:
+                    fails[name].add(value)
+        return None, holds, fails
+
+    def every_way(self, args: tuple[Argument, ...]) -> list[str]:
+        """A command's arguments expanded with every choice of the values its variables
+        of ``self.either`` may hold, each item once: as they are now, then those the
+        other choices add (a target's sources: those of every path, as
+        ``if(CUDA_FOUND) list(APPEND SRCS gpu.cpp) endif()`` leaves ``SRCS`` with or
+        without gpu.cpp); past ``MAX_CHOICES`` choices, as they are."""
+        names = [name for name in dict.fromkeys(self._names_read(args)) if name in self.either]
+        choices = list(itertools.product(*(self.either[name] for name in names)))
+        if not names or len(choices) > MAX_CHOICES:
+            return self.arguments(args)
+        scope = self.scopes[-1]
+        kept = {name: scope.get(name) for name in names}
+        found = dict.fromkeys(self.arguments(args))
+        try:
+            for choice in choices:
+                for name, value in zip(names, choice, strict=True):
+                    _put(scope, name, value)
+                found.update(dict.fromkeys(self.arguments(args)))
+        finally:
+            for name, value in kept.items():
+                _put(scope, name, value)
+        return list(found)
+
+    def _values(self) -> _Values:
+        return _Values([dict(scope) for scope in self.scopes], dict(self.cache),
+                       set(self.uncertain), dict(self.either))
+
+    def _restore(self, values: _Values) -> None:
+        for scope, saved in zip(self.scopes, values.scopes, strict=True):
+            scope.clear()
+            scope.update(saved)
+        self.cache.clear()
+        self.cache.update(values.cache)
+        self.uncertain.clear()
+        self.uncertain.update(values.uncertain)
+        self.either = dict(values.either)
+
+    def _narrow(self, allowed: Allowed) -> None:
+        """Keep, of the values each variable of ``self.either`` may hold, those
+        ``allowed`` gives it (the path goes where a test holds, or where it does not)."""
+        for name, values in allowed.items():
+            held = tuple(value for value in self.either.get(name, ()) if value in values)
+            if held:
+                self._hold(name, held, self.scopes[-1])
+
+    def _hold(self, name: str, held: tuple[str | None, ...], table: dict[str, str]) -> None:
+        """``name`` may hold any of ``held``: the last set one is its value meanwhile."""
+        _put(table, name, next((value for value in reversed(held) if value is not None),
+                               None))
+        if len(held) > 1:
+            self.either[name] = held
+        else:
+            self.either.pop(name, None)
+
+    def _join(self, paths: list[_Values]) -> None:
+        """The variables after paths the reading could not choose between (the last one
+        is the reading's own, as it ran them in turn): a variable all of them leave
+        alike keeps that value; one they leave differently may hold each
+        (``self.either``); one that is uncertain on a path stays so."""
+        self._restore(paths[-1])
+        for path in paths[:-1]:
+            self.uncertain.update(path.uncertain)
+        top = len(self.scopes) - 1
+        # the cache, then the scopes outward in: the innermost scope's marks win
+        for level in (-1, *range(top + 1)):
+            tables = [path.cache if level < 0 else path.scopes[level] for path in paths]
+            names = dict.fromkeys(name for table in tables for name in table)
+            if level == top:
+                names.update(dict.fromkeys(name for path in paths for name in path.either))
+            for name in names:
+                held: list[str | None] = []
+                for path, table in zip(paths, tables, strict=True):
+                    if level == top and name in path.either:
+                        held.extend(path.either[name])
+                    else:
+                        held.append(table.get(name))
+                values = tuple(dict.fromkeys(held))
+                if len(values) > 1:
+                    self._hold(name, values, self.cache if level < 0 else self.scopes[level])
+
+    def _reads_unknown(self, args: tuple[Argument, ...], either: bool = True) -> bool:
         """Whether a command's arguments read something not known here (a reference, or
-        a variable named bare, as ``if(V)`` reads it, that is uncertain)."""
-        return any(arg.kind != "bracket" and (self.unknown_reference(arg.text) or (
-            arg.kind == "unquoted" and arg.text in self.uncertain)) for arg in args)
+        a variable named bare, as ``if(V)`` reads it, that is uncertain, or with
+        ``either``, that holds one of several values)."""
+        return any(arg.kind != "bracket" and (self.unknown_reference(arg.text, either) or (
+            arg.kind == "unquoted" and (arg.text in self.uncertain or (
+                either and arg.text in self.either)))) for arg in args)
 
     def run_if(self, commands: list[Invocation], index: int, limit: int) -> int:
         marks = self.block_end(commands, index, limit, "if", "endif", ("elseif", "else"))
@@ -381,17 +547,25 @@ class Interpreter:
         returned: list[Condition] = []
         undecided: list[tuple[str, Invocation]] = []  # the tests not decided, in order
         unsure = 0  # 1 once a test read something not known: what follows may be wrong
+        # after a test not decided: the variables where the next branch starts (as
+        # before that test, narrowed to where it did not hold), and those each branch
+        # under such a test left; joined after the block (``_join``)
+        start_values: _Values | None = None
+        paths: list[_Values] = []
+        fell_through = True  # no branch is taken for certain (no else, none decided true)
         try:
             for number, start in enumerate(branches):
                 stop = marks[number]
                 head = commands[start]
-                if not unsure and head.name != "else" and self._reads_unknown(head.args):
+                if not unsure and head.name != "else" and self._reads_unknown(
+                        head.args, either=False):
                     unsure = 1
                     self._unsure += 1
                     self.unsure_tests.append(Condition(
                         " ".join(a.text for a in head.args), "source", head.name,
                         self.where(head)))
                 if head.name == "else":
+                    fell_through = False
                     try:
                         self.run(commands, start + 1, stop)
                     except _Return:
@@ -407,27 +581,42 @@ class Interpreter:
                     break
                 if number:  # an elseif's test is work too (the if's own is its step)
                     self.charge(head)
-                decided = self.evaluate(self.arguments(head.args))
+                decided, holds, fails = self.decide(head)
                 if decided is None:
                     text = " ".join(a.text for a in head.args)
                     undecided.append((text, head))
                     self.conditions.append(Condition(text, "source", head.name,
                                                      self.where(head)))
                     pushed += 1
+                    if start_values is None:
+                        start_values = self._values()
+                    self._narrow(holds)
                     try:
                         self.run(commands, start + 1, stop)
                     except _Return:  # what follows runs only when this did not hold
                         returned.append(Condition(f"NOT ({text})", "source", head.name,
                                                   self.where(head)))
+                    except (_Break, _Continue):
+                        pass  # the loop goes on where this did not hold
+                    paths.append(self._values())
+                    self._restore(start_values)
+                    self._narrow(fails)
+                    start_values = self._values()
                     self.conditions[-1] = Condition(text, "source", "else", self.where(head))
                     continue
                 if decided:
+                    fell_through = False
                     self.run(commands, start + 1, stop)
                     if not unsure and self._certain(head):
                         self._not_taken(commands, branches[number + 1:], marks[number + 1:])
                     break
                 if not unsure and self._certain(head):
                     self._not_taken(commands, [start], [stop])
+            if paths:
+                # as the branches ran in turn, the one left (taken, or none) last; when
+                # none was taken, the variables as the last branch left them last
+                here = self._values()
+                self._join([here, *paths] if fell_through else [*paths, here])
         finally:
             del self.conditions[len(self.conditions) - pushed:]
             self._unsure -= unsure
@@ -516,18 +705,21 @@ class Interpreter:
         end = self.block_end(commands, index, limit, "while", "endwhile")[-1]
         head = commands[index]
         for _ in range(MAX_LOOP):
-            decided = self.evaluate(self.arguments(head.args))
+            decided, holds, _ = self.decide(head)
             if decided is False:
                 return end + 1
             if decided is None:  # run the body once, under the condition
                 text = " ".join(a.text for a in head.args)
                 self.conditions.append(Condition(text, "source", "while", self.where(head)))
+                before = self._values()
+                self._narrow(holds)
                 try:
                     self.run(commands, index + 1, end)
                 except (_Break, _Continue):
                     pass
                 finally:
                     self.conditions.pop()
+                self._join([before, self._values()])  # run once, or not at all
                 return end + 1
             try:
                 self.run(commands, index + 1, end)
@@ -622,6 +814,13 @@ class Interpreter:
             self.scopes.pop()
             self.compile_definitions.pop()
             self.compile_options.pop()
+
+
+def _put(table: dict[str, str], name: str, value: str | None) -> None:
+    if value is None:
+        table.pop(name, None)
+    else:
+        table[name] = value
 
 
 def _substitute(command: Invocation, values: Mapping[str, str]) -> Invocation:

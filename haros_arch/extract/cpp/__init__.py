@@ -278,6 +278,10 @@ def _made_under_fewest(calls: list[PrimitiveCall],
     return out
 
 
+# the diagnostics the visitor makes at a call it keeps, which say something of that call
+_OF_A_CALL = frozenset({"CPP_CALL_UNRESOLVED"})
+
+
 def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True) -> CppResult:
     result = CppResult()
     units = [unit for _, unit in paths_units]
@@ -298,8 +302,12 @@ def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True
     result.rosname = (given[0] if all(n == given[0] for n in given) else "?") if (
         given) else None
     for unit in units:
-        result.diagnostics.extend(unit.diagnostics)
         calls, found = links.resolve(unit.calls, known, unseen)
+        # a diagnostic of a call the node does not make (one a header's template or a
+        # constructor no file of the node calls makes) is none of the node's
+        dropped = {call.location for call in unit.calls} - {call.location for call in calls}
+        result.diagnostics.extend(d for d in unit.diagnostics
+                                  if d.code not in _OF_A_CALL or d.location not in dropped)
         result.diagnostics.extend(found)
         for call in calls:
             if call.built_in is not None:
