@@ -163,7 +163,10 @@ def test_command_is_never_run_and_file_content_stays_in_workspace(write_tree, tm
     assert not marker.exists()
     values = {p.key: p.value for p in model.params}
     assert values == {"desc": None, "inside": "hello", "outside": None}
-    assert codes(model).count("LAUNCH_UNSUPPORTED") == 2
+    # the file outside is not read; the command is not run, as ROS 1's command= is not
+    assert codes(model).count("LAUNCH_UNSUPPORTED") == 1
+    assert any(d.code == "LAUNCH_UNKNOWN_VALUE" and "touch" in d.message and
+               "is not run" in d.message for d in model.diagnostics)
 
 
 def test_xml_containers_and_load_composable_node(write_tree):

@@ -466,15 +466,17 @@ class Evaluator:
         return Value(self.value(s.file.path).parts, file=s.file)
 
     def s_Command(self, s: e.Command) -> Value:
+        """Never run (nothing of the workspace is executed): an unknown value, said as a
+        ROS 1 ``command=`` is (``LAUNCH_UNKNOWN_VALUE``), with the command line that the
+        robot descriptions read the xacro file of (``command_outputs``)."""
         line = self.value(s.command).text
-        origin = s.origin
-        if origin == e.COMMAND_NOT_RUN:  # launch's Command: say which command
-            # its words as paths relative to the workspace, as every message says them
-            shown = " ".join(self.runner.workspace.relpath(w) if os.path.isabs(w) else w
-                             for w in line.split(" "))
-            shown = shown if len(shown) <= 160 else shown[:157] + "..."
-            origin = f"Command is never run; its output is unknown: {shown}"
-        output = self.s_Opaque(e.Opaque(origin))
+        # its words as paths relative to the workspace, as every message says them
+        shown = " ".join(self.runner.workspace.relpath(w) if os.path.isabs(w) else w
+                         for w in line.split(" "))
+        shown = shown if len(shown) <= 160 else shown[:157] + "..."
+        self.report("LAUNCH_UNKNOWN_VALUE", detail=f'command "{shown}" is not run')
+        output = Value.unknown(s.origin if s.origin != e.COMMAND_NOT_RUN else
+                               f"Command is never run; its output is unknown: {shown}")
         self.runner.command_outputs.append((output.parts[0], line))  # type: ignore[arg-type]
         return output
 
