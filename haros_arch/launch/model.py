@@ -16,6 +16,7 @@ from ..diagnostics import Diagnostic
 from ..model.conditions import Condition
 from ..model.launch_tree import LaunchItem, PackageUse
 from ..model.location import NOWHERE, Location
+from ..model.values import Unknown, Value
 
 
 @dataclass
@@ -196,3 +197,14 @@ class RecordedEnvironment(Mapping[str, str]):
 
     def __len__(self) -> int:
         return len(self._environment)
+
+
+def found_nowhere(value: Value) -> bool:
+    """Whether every unknown part of ``value`` is a package's folder that is neither in the
+    workspace nor installed here (``$(find pkg)``, ``FindPackageShare``,
+    ``get_package_share_directory``: origin ``find <pkg>``), which the substitution said
+    where it was performed (``LAUNCH_UNKNOWN_VALUE``): an include of such a path is not
+    said again."""
+    unknown = [p for p in value.parts if isinstance(p, Unknown)]
+    return bool(unknown) and all(p.origin.startswith("find ") for p in unknown)
+

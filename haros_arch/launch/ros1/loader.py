@@ -25,7 +25,13 @@ from ...model.location import Location
 from ...model.rosname import is_legal_name
 from ...model.values import Value
 from ...workspace import Workspace
-from ..model import LaunchModel, NodeDecl, RecordedEnvironment, UnreadInclude
+from ..model import (
+    LaunchModel,
+    NodeDecl,
+    RecordedEnvironment,
+    UnreadInclude,
+    found_nowhere,
+)
 from ..tree import MAX_SKIPPED, node_items, param_names, ros1_condition
 from . import tags_params
 from .scope import Scope, canonical, global_ns
@@ -513,8 +519,9 @@ class Ros1Loader:
         path = self.value(element, "file", scope)
         where = self.where(scope, element)
         if path is None or path.literal is None:
-            self.report("LAUNCH_UNSUPPORTED", scope, element,
-                        detail=f"include file \"{element.get('file')}\" is not known statically")
+            if path is None or not found_nowhere(path):
+                self.report("LAUNCH_UNSUPPORTED", scope, element, detail=(
+                    f"include file \"{element.get('file')}\" is not known statically"))
             scope.item.add(LaunchItem("include", element.get("file", ""), where,
                                       condition=guard))
             ns = self.text(element, "ns", scope)

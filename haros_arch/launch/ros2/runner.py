@@ -34,7 +34,7 @@ from ...model.location import Location
 from ...model.values import Unknown, Value
 from ...share import generated_at, share_source
 from ...workspace import Workspace
-from ..model import LaunchModel, NodeDecl, ParamDecl, RecordedEnvironment
+from ..model import LaunchModel, NodeDecl, ParamDecl, RecordedEnvironment, found_nowhere
 from ..partial_yaml import marked_text, unknown_parts
 from ..tree import node_items
 from . import entities as e
@@ -386,8 +386,9 @@ class Runner:
     def do_Include(self, action: e.Include, scope: Scope) -> None:
         path = self.value(action.path, scope, action.location)
         if path is None or path.literal is None:
-            self.report("LAUNCH_UNSUPPORTED", action.location,
-                        detail=f"included file {path} is not known statically")
+            if path is None or not found_nowhere(path):
+                self.report("LAUNCH_UNSUPPORTED", action.location,
+                            detail=f"included file {path} is not known statically")
             self.unread(str(path) if path is not None else "?", scope, action.location)
             self.not_seen(scope, action.location, f"the include of {path}")
             return
