@@ -157,7 +157,7 @@ def test_parameters_by_prefix_is_an_optional_read_of_every_parameter_under_it(wr
         ("parameter-set-not-read", ["parameter:/jsp/other"])]
     params = {p.name: p for p in model.configuration("c").parameters}
     assert params["/jsp/dependent_joints.j1.parent"].read_as_part_of is \
-        params["/jsp/dependent_joints"]
+        params["/jsp/dependent_joints."]
 
 
 QOS_NODE = """

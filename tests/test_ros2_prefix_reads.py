@@ -14,6 +14,7 @@ from conftest import package_xml
 
 from haros_arch.extract.cpp import extract_cpp
 from haros_arch.model import Parameter
+from haros_arch.model.load import call_from_data
 from haros_arch.pipeline import Options, analyse
 from haros_arch.project import load
 from haros_arch.query.catalogue import load_catalogue, run_rule
@@ -32,6 +33,7 @@ public:
   {
     std::map<std::string, double> sizes;
     this->get_parameters("marker_sizes", sizes);
+    this->get_parameters("scale", sizes);
     std::map<std::string, rclcpp::Parameter> all;
     get_node_parameters_interface()->get_parameters_by_prefix("limits", all);
     std::vector<rclcpp::Parameter> two = get_parameters({"gain", "offset"});
@@ -54,7 +56,7 @@ def generate_launch_description():
         Node(package='ex', executable='markers', name='markers',
              parameters=[{'marker_sizes': {'a': 1.0, 'b': {'c': 2.0}},
                           'limits': {'speed': 3.0},
-                          'gain': 1.0, 'offset': 2.0, 'unused': 4}]),
+                          'scale': 2.0, 'gain': 1.0, 'offset': 2.0, 'unused': 4}]),
     ])
 """
 
@@ -77,18 +79,19 @@ def test_cpp_prefix_reads_read_what_is_set_under_the_prefix(write_tree) -> None:
     # one read under each prefix, an empty map when nothing is there (no error); the
     # list overload reads each name it is given
     assert [(c.name, c.under, c.has_default) for c in result.calls if c.kind == "read"] == [
-        ("marker_sizes", True, True), ("limits", True, True),
+        ("marker_sizes.", True, True), ("scale.", True, True), ("limits.", True, True),
         ("gain", False, False), ("offset", False, False)]
     model = analyse(load(str(root / "project.yaml")), {"PATH": os.environ.get("PATH", "")},
                     Options(cache_dir=None))
     params = {p.name: p for p in model.configuration("c").parameters}
-    sizes = params["/markers/marker_sizes"]
+    sizes = params["/markers/marker_sizes."]
     assert sizes.value == {"a": 1.0, "b.c": 2.0}  # keyed as rclcpp's map is
     assert params["/markers/marker_sizes.b.c"].read_as_part_of is sizes
-    assert params["/markers/limits.speed"].read_as_part_of is params["/markers/limits"]
-    # only what nothing reads is reported, decided: no '?' read leaves the rest undecided
+    assert params["/markers/limits.speed"].read_as_part_of is params["/markers/limits."]
+    # only what nothing reads is reported, decided: no '?' read leaves the rest undecided;
+    # 'scale' itself is no parameter under 'scale.' (teleop_twist_joy's scale_angular)
     assert [e for e, _ in _rule(model, "parameter-set-not-read")] == [
-        ["parameter:/markers/unused"]]
+        ["parameter:/markers/scale"], ["parameter:/markers/unused"]]
     assert _rule(model, "parameter-set-not-read-undecided") == []
     assert _rule(model, "parameter-read-not-set") == []
     assert not any(isinstance(p, Parameter) and p.is_unresolved
@@ -143,10 +146,10 @@ def test_python_prefix_reads_read_what_is_set_under_the_prefix(write_tree) -> No
     (node,) = [n for n in model.nodes if n.name == "talk/detect"]
     # the prefix; a prefix not known: '?'
     assert [(c.name, c.under, c.has_default) for c in node.calls if c.kind == "read"] == [
-        ("aruco_marker_info", True, True), ("?.?", False, True),
+        ("aruco_marker_info.", True, True), ("?.?", False, True),
         ("gain", False, False), ("offset", False, False)]
     params = {p.name: p for p in model.configuration("c").parameters}
-    info = params["/detect/aruco_marker_info"]
+    info = params["/detect/aruco_marker_info."]
     assert info.value == {"130.length_mm": 47.0, "130.name": "base"}
     assert params["/detect/aruco_marker_info.130.name"].read_as_part_of is info
     # what is set under the prefix is read, decided; 'unused' (no '.': not what the
@@ -154,3 +157,13 @@ def test_python_prefix_reads_read_what_is_set_under_the_prefix(write_tree) -> No
     assert [e for e, _ in _rule(model, "parameter-set-not-read")] == [
         ["parameter:/detect/unused"]]
     assert _rule(model, "parameter-set-not-read-undecided") == []
+
+
+def test_an_interface_model_keeps_a_read_under_a_prefix() -> None:
+    """The shipped jazzy joint_state_publisher model reads ``zeros`` under its prefix
+    (joint_state_publisher.py:384); loaded without the mark it was a read of one
+    parameter ``zeros.``, and stretch_ros2's ``zeros.joint_lift`` set but not read."""
+    call = call_from_data({"kind": "read", "name": "zeros.", "under": True,
+                           "has_default": True, "default": {}})
+    assert call.under and call.name == "zeros."
+    assert not call_from_data({"kind": "read", "name": "zeros"}).under

@@ -1547,7 +1547,7 @@ class CallFinder:
                     # get_parameters(prefix, out) reads every parameter the node has
                     # under the prefix (``PrimitiveCall.under``), as its parameters
                     # interface's get_parameters_by_prefix does; "": all of them, ``~``
-                    return [(PrefixName(prefix) if prefix else "~", None)]
+                    return [(PrefixName(prefix + ".") if prefix else "~", None)]
                 given = next((i for i, a in enumerate(args) if a == expr), None)
                 keys = _map_keys(args[given + 1], scope) if (
                     call.spelling == "declare_parameters" and given is not None

@@ -78,9 +78,9 @@ def special_calls(ev: Evaluator, spec: PyFunction, call: ast.Call, frame: Frame,
         prefix = param_name(text_of(evaluate(ev, argument(call, Arg(0, "prefix")), frame)))
         if "?" in prefix:  # a prefix not known statically: whatever it is
             made.append(replace(base, name=f"{prefix}.?", has_default=True, default={}))
-        else:  # what is under it (``""``: every parameter of the node, its ``~`` whole)
-            made.append(replace(base, name=prefix or "~", under=bool(prefix),
-                                has_default=True, default={}))
+        else:  # what is under ``prefix.`` (``""``: every parameter, the node's ``~`` whole)
+            made.append(replace(base, name=f"{prefix}." if prefix else "~",
+                                under=bool(prefix), has_default=True, default={}))
     elif spec.special == "parameter-names":
         items = call.args[0] if call.args else argument(call, _kw("names"))
         listed = evaluate(ev, items, frame)
