@@ -13,6 +13,7 @@ import os
 from conftest import package_xml
 
 from haros_arch.extract.cpp import extract_cpp
+from haros_arch.extract.python import extract_python
 from haros_arch.model import Parameter
 from haros_arch.model.load import call_from_data
 from haros_arch.pipeline import Options, analyse
@@ -167,3 +168,17 @@ def test_an_interface_model_keeps_a_read_under_a_prefix() -> None:
                            "has_default": True, "default": {}})
     assert call.under and call.name == "zeros."
     assert not call_from_data({"kind": "read", "name": "zeros"}).under
+
+
+def test_python_prefix_read_of_everything_is_the_node_whole(write_tree) -> None:
+    """``get_parameters_by_prefix('')`` is every parameter of the node (rclpy adds no
+    ``.`` to an empty prefix): a read of its ``~`` whole, as rclcpp's
+    ``get_parameter_overrides()``; it was a read of ``?``."""
+    root = write_tree({
+        "src/talk/package.xml": package_xml("talk", build_type="ament_python"),
+        "src/talk/talk/node.py": "import rclpy\n"
+                                 "node = rclpy.create_node('n')\n"
+                                 "every = node.get_parameters_by_prefix('')\n"})
+    calls = extract_python([str(root / "src/talk/talk/node.py")], scan([str(root)]),
+                           package="talk").calls
+    assert [(c.kind, c.name, c.under) for c in calls] == [("read", "~", False)]
