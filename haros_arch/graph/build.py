@@ -408,7 +408,11 @@ def _test_file(file: str, workspace: Workspace) -> bool:
 def _namespace_values(config: Configuration) -> None:
     """A parameter read as a whole namespace (``get_param("gains")`` when the launch file
     sets ``gains/P``, ``gains/I``) holds the dictionary of what is set under it, as the
-    parameter server answers."""
+    parameter server answers. A ROS 2 read of a prefix (``PrimitiveCall.under``: the
+    parameter ``gains.`` of ``get_parameters_by_prefix("gains")``, when the configuration
+    sets ``gains.P``, ``gains.I.max``) is the same read with ``.`` for ``/``, its
+    dictionary keyed by the rest of each name (``P``, ``I.max``), as rclpy and rclcpp
+    give it; it does not read ``gains`` itself."""
     set_params = [p for p in config.parameters if p.set_by_launch]
     # their names in order, and each one's place among them: the names under a prefix
     # are one run of the sorted names (found by bisection, then taken in their order)
@@ -417,7 +421,8 @@ def _namespace_values(config: Configuration) -> None:
     for param in config.parameters:
         if param.set_by_launch or not param.readers or param.is_unresolved:
             continue
-        prefix = param.name.rstrip("/") + "/"
+        under = any(link.call is not None and link.call.under for link in param.readers)
+        prefix = param.name if under else param.name.rstrip("/") + "/"
         first = bisect.bisect_left(names, prefix)
         last = first
         while last < len(names) and names[last].startswith(prefix):
@@ -429,7 +434,8 @@ def _namespace_values(config: Configuration) -> None:
         for child in below:
             if child.is_unresolved:  # ``ns/?``: a file not read sets what is unknown
                 continue
-            *path, leaf = child.name[len(prefix):].split("/")
+            rest = child.name[len(prefix):]
+            *path, leaf = [rest] if under else rest.split("/")
             branch = tree
             for key in path:
                 branch = branch.setdefault(key, {})

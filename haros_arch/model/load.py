@@ -118,6 +118,7 @@ def call_from_data(c: dict[str, Any]) -> PrimitiveCall:
                          has_default=bool(c.get("has_default", False)),
                          default=c.get("default"), searched=bool(c.get("searched", False)),
                          tested=bool(c.get("tested", False)),
+                         under=c.get("under") is True,
                          handle_namespace=c.get("handle_namespace"),
                          deletes=bool(c.get("deletes", False)),
                          node_name=c.get("node_name"), name_each=c.get("name_each"),

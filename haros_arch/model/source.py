@@ -91,6 +91,13 @@ class PrimitiveCall:
     # a parameter read whose result (whether the parameter is there) the code tests:
     # ``if (nh.getParam("x", v))``, ``!has_parameter("x")``; it handles the absence
     tested: bool = field(default=False, metadata={"optional": True})
+    # ROS 2: a read of every parameter the node has under ``name``, a prefix with its
+    # ``.`` (``gains.``: ``gains.P``, ``gains.I.max``; not ``gains`` itself, so its own
+    # parameter): rclpy's ``get_parameters_by_prefix("gains")``, rclcpp's
+    # ``get_parameters("gains", map)``. The graph reads it as ROS 1 reads a namespace
+    # whole (``graph.build._namespace_values``): what the configuration sets under the
+    # prefix is read as part of it
+    under: bool = field(default=False, metadata={"optional": True})
     # ROS 1: the namespace of the NodeHandle the call is made on, as written (``input``,
     # ``~``, ``/robot``), when ``name`` was joined to it; roscpp remaps that namespace
     # before it resolves the name in it, so the graph resolves it first

@@ -615,6 +615,9 @@ _INTERFACE_METHODS = ("declare_parameter", "undeclare_parameter", "has_parameter
 RCLCPP: dict[tuple[str, str], RosFunction] = {
     **{(cls, name): row for cls in RCLCPP_NODES for name, row in _RCLCPP_NODE.items()},
     **{(RCLCPP_PARAMETERS_INTERFACE, name): _RCLCPP_NODE[name] for name in _INTERFACE_METHODS},
+    # get_parameters_by_prefix(prefix, map): what the node has under the prefix, as the
+    # node's get_parameters(prefix, map) that calls it
+    (RCLCPP_PARAMETERS_INTERFACE, "get_parameters_by_prefix"): _RCLCPP_NODE["get_parameters"],
     # every parameter the node is given (launch values and overrides), read whole:
     # mrpt_pf_localization turns them all into its YAML configuration
     # (not where one name is looked up in it: navigation2's declare_or_get_parameter

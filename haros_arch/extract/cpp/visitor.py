@@ -119,6 +119,16 @@ class ArgumentName(str):
         made = super().__new__(cls, name)
         made.program_arg = program_arg
         return made
+# the calls of a prefix and a map: declare_parameters declares the map's keys under the
+# prefix; the others read what the node has under it
+_PREFIXED = ("declare_parameters", "get_parameters", "get_parameters_by_prefix")
+
+
+class PrefixName(str):
+    """The prefix of a ROS 2 read of every parameter under it (rclcpp's
+    ``get_parameters(prefix, map)``): ``PrimitiveCall.under``."""
+
+
 # builtin types a variable of static storage starts as zero of (C++'s zero-initialisation)
 _ZEROED: dict[TypeKind, object] = {
     TypeKind.BOOL: False, TypeKind.INT: 0, TypeKind.UINT: 0, TypeKind.LONG: 0,
@@ -170,9 +180,6 @@ class CallFinder:
         self._fixed: set[tuple[str, str, str | None]] = set()  # fixed-name calls already found
         # ROS 2 parameter -> its declared default, and the parameter it holds (``Source``)
         self._declared: dict[str, tuple[str, str | None]] = {}
-        # the keys each declare_parameters(prefix, map) of the unit declared under its
-        # prefix (None: a map whose keys are not known), for get_parameters(prefix, out)
-        self._prefix_keys: dict[str, list[str] | None] = {}
         self.calls: list[PrimitiveCall] = []
         self.functions: list[Cursor] = []
         # the variables outside functions whose initialisers may use a function
@@ -1407,7 +1414,8 @@ class CallFinder:
                 name_default=source[1] if source else holds[0],
                 default_param=source[2] if source else holds[1],
                 name_each=source[3] if source else None,
-                has_default=has_default, default=default, tested=typed_only,
+                has_default=has_default or isinstance(written, PrefixName),
+                default=default, tested=typed_only, under=isinstance(written, PrefixName),
                 searched=spec.searched, handle_namespace=handle_namespace,
                 deletes=spec.deletes, node_name=owner, transport=transport,
                 made_in=made_in, program_arg=program_arg,
@@ -1533,21 +1541,17 @@ class CallFinder:
         parameter its value comes from, if any: (parameter, its default, and ``.`` when
         the name is each element of that list parameter in turn)."""
         if spec.per_element:
-            if call.spelling in ("declare_parameters", "get_parameters") and len(args) >= 2:
+            if call.spelling in _PREFIXED and len(args) >= 2:
                 prefix = render(scope.string(expr))
+                if call.spelling != "declare_parameters" and "?" not in prefix:
+                    # get_parameters(prefix, out) reads every parameter the node has
+                    # under the prefix (``PrimitiveCall.under``), as its parameters
+                    # interface's get_parameters_by_prefix does; "": all of them, ``~``
+                    return [(PrefixName(prefix + ".") if prefix else "~", None)]
                 given = next((i for i, a in enumerate(args) if a == expr), None)
                 keys = _map_keys(args[given + 1], scope) if (
                     call.spelling == "declare_parameters" and given is not None
                     and given + 1 < len(args)) else None
-                if call.spelling == "declare_parameters":
-                    known = self._prefix_keys.get(prefix, [])
-                    self._prefix_keys[prefix] = None if keys is None or known is None \
-                        else [*known, *keys]
-                elif "?" not in prefix:
-                    # get_parameters(prefix, out) reads what is declared under the prefix:
-                    # the keys the unit's declare_parameters gave it (teleop_twist_joy's
-                    # axis_linear.x, .y, .z), else whatever that is
-                    keys = self._prefix_keys.get(prefix)
                 return [((prefix + "." if prefix else "") + key, None)
                         for key in (keys or ["?"])]
             return [self._name(e, scope) for e in _elements(expr)]

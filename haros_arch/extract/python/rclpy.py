@@ -36,7 +36,8 @@ NODE_METHODS: dict[str, PyFunction] = {
     "get_parameter_or": PyFunction("read", value=Arg(1, "alternative_value")),
     "get_parameters": PyFunction("read", name=None, special="parameter-names"),
     # a dict of the parameters under "prefix." ({} when there are none, never an error):
-    # an optional read of "prefix.?", as rclcpp's get_parameters(prefix, map) is read
+    # an optional read of all of them (``PrimitiveCall.under``), as rclcpp's
+    # get_parameters(prefix, map) is read
     "get_parameters_by_prefix": PyFunction("read", name=None, special="parameters-under"),
     "has_parameter": PyFunction("read", tests=True),
     "set_parameters": PyFunction("write", name=None, special="set-parameters"),

@@ -20,7 +20,8 @@ def special_calls(ev: Evaluator, spec: PyFunction, call: ast.Call, frame: Frame,
     """The primitives of a call whose row names a ``special`` handler (none or several
     from one argument list): one per parameter of ``declare_parameters`` /
     ``get_parameters`` / ``set_parameters``, every parameter under the prefix of
-    ``get_parameters_by_prefix`` (``prefix.?``, optional), ``/tf`` and ``/tf_static`` for a
+    ``get_parameters_by_prefix`` (a read ``under`` the prefix, optional; ``prefix.?`` when
+    the prefix is not known), ``/tf`` and ``/tf_static`` for a
     ``TransformListener``, a tf2 buffer's frames service unless ``debug=False`` (ROS 2:
     only when it is given a node)."""
     if spec.special == "tf-listener":
@@ -75,8 +76,11 @@ def special_calls(ev: Evaluator, spec: PyFunction, call: ast.Call, frame: Frame,
                 made.append(replace(base, name=full, type=declared_type))
     elif spec.special == "parameters-under":
         prefix = param_name(text_of(evaluate(ev, argument(call, Arg(0, "prefix")), frame)))
-        made.append(replace(base, name=f"{prefix}.?" if prefix else "?",
-                            has_default=True, default={}))
+        if "?" in prefix:  # a prefix not known statically: whatever it is
+            made.append(replace(base, name=f"{prefix}.?", has_default=True, default={}))
+        else:  # what is under ``prefix.`` (``""``: every parameter, the node's ``~`` whole)
+            made.append(replace(base, name=f"{prefix}." if prefix else "~",
+                                under=bool(prefix), has_default=True, default={}))
     elif spec.special == "parameter-names":
         items = call.args[0] if call.args else argument(call, _kw("names"))
         listed = evaluate(ev, items, frame)
