@@ -221,10 +221,11 @@ def test_declare_parameters_of_a_local_map_declares_its_keys(write_tree) -> None
     local map initialised with string keys declares ``axis_linear.x`` ... each with the
     map's value as its default; it was ``axis_linear.?`` (5 settings of its launch files
     undecided). A map the body also changes keeps '?'. ``get_parameters(prefix, out)``
-    reads every parameter the node has under the prefix, declared or not: one read
-    ``under`` the prefix, named with its ``.`` (it was ``axis_linear.?``, six unresolved names in
-    teleop_twist_joy's launch), with nothing there an empty map, no error. Each
-    declaration has the map's value type (it was '?')."""
+    reads what the node declared under the prefix: the keys declared there (it was
+    ``axis_linear.?``, six unresolved names in teleop_twist_joy's launch); where they are
+    not known, every parameter the node has under it: one read ``under`` the prefix,
+    named with its ``.``, with nothing there an empty map, no error. Each declaration has
+    the map's value type (it was '?')."""
     root = write_tree({"ex/package.xml": package_xml("ex", "ament_cmake"),
                        "ex/src/node.cpp": MAP_NODE})
     result = extract_cpp([str(root / "ex" / "src" / "node.cpp")], scan([str(root)]),
@@ -232,7 +233,8 @@ def test_declare_parameters_of_a_local_map_declares_its_keys(write_tree) -> None
     assert [(c.kind, c.name, c.type, c.has_default, c.under) for c in result.calls] == [
         ("declare", "axis_linear.x", "int", True, False),
         ("declare", "axis_linear.y", "int", True, False),
-        ("read", "axis_linear.", None, True, True),
+        ("read", "axis_linear.x", None, False, False),
+        ("read", "axis_linear.y", None, False, False),
         ("declare", "changed.?", "double", True, False),
         ("read", "changed.", None, True, True), ("read", "other.", None, True, True)]
 

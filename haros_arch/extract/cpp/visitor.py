@@ -180,6 +180,9 @@ class CallFinder:
         self._fixed: set[tuple[str, str, str | None]] = set()  # fixed-name calls already found
         # ROS 2 parameter -> its declared default, and the parameter it holds (``Source``)
         self._declared: dict[str, tuple[str, str | None]] = {}
+        # the keys each declare_parameters(prefix, map) of the unit declared under its
+        # prefix (None: a map whose keys are not known), for get_parameters(prefix, out)
+        self._prefix_keys: dict[str, list[str] | None] = {}
         self.calls: list[PrimitiveCall] = []
         self.functions: list[Cursor] = []
         # the variables outside functions whose initialisers may use a function
@@ -1543,7 +1546,9 @@ class CallFinder:
         if spec.per_element:
             if call.spelling in _PREFIXED and len(args) >= 2:
                 prefix = render(scope.string(expr))
-                if call.spelling != "declare_parameters" and "?" not in prefix:
+                declared = self._prefix_keys.get(prefix)
+                if call.spelling != "declare_parameters" and "?" not in prefix \
+                        and not declared:
                     # get_parameters(prefix, out) reads every parameter the node has
                     # under the prefix (``PrimitiveCall.under``), as its parameters
                     # interface's get_parameters_by_prefix does; "": all of them, ``~``
@@ -1552,6 +1557,15 @@ class CallFinder:
                 keys = _map_keys(args[given + 1], scope) if (
                     call.spelling == "declare_parameters" and given is not None
                     and given + 1 < len(args)) else None
+                if call.spelling == "declare_parameters":
+                    known = self._prefix_keys.get(prefix, [])
+                    self._prefix_keys[prefix] = None if keys is None or known is None \
+                        else [*known, *keys]
+                elif "?" not in prefix:
+                    # what the unit declared under the prefix (teleop_twist_joy's
+                    # axis_linear.x, .y, .z): a node that declares its parameters has
+                    # only those there, whatever the configuration sets beside them
+                    keys = declared
                 return [((prefix + "." if prefix else "") + key, None)
                         for key in (keys or ["?"])]
             return [self._name(e, scope) for e in _elements(expr)]
