@@ -773,3 +773,43 @@ int main(int argc, char** argv) {
     assert errors == []
     assert sorted((c.kind, c.name) for c in result.calls) == [
         ("read", "robot_description"), ("subscribe", "~imu")]
+
+
+def test_ros1_unique_and_shared_ptr_take_an_auto_ptr(tmp_path) -> None:
+    """C++11's ``unique_ptr`` and ``shared_ptr`` are built from an ``auto_ptr<U>&&``
+    (libstdc++ keeps it): rotors_hil_interface assigns ``std::auto_ptr<Derived>(new
+    Derived(q))`` to its ``std::unique_ptr<Base>`` member
+    (hil_interface_node.cpp:51). The stand-ins had no such constructor: an error in a
+    function that calls the ROS API, the node partial for nothing."""
+    result = _extract(tmp_path, ROS1_MANIFEST, """
+#include <memory>
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+struct Base { virtual ~Base() {} };
+struct Derived : public Base { explicit Derived(int) {} };
+class Node {
+ public:
+  Node() {
+    if (nh_.ok())
+      owned_ = std::auto_ptr<Derived>(new Derived(1));
+    else
+      owned_ = std::auto_ptr<Base>(new Base());
+    shared_ = std::shared_ptr<Base>(std::auto_ptr<Derived>(new Derived(2)));
+    pub_ = nh_.advertise<std_msgs::String>("out", 1);
+  }
+  ros::NodeHandle nh_;
+  ros::Publisher pub_;
+  std::unique_ptr<Base> owned_;
+  std::shared_ptr<Base> shared_;
+};
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "n");
+  Node node;
+  ros::spin();
+  return 0;
+}
+""")
+    errors = [d.message for d in result.diagnostics if d.code in (
+        "CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL", "CPP_CALL_MISSED")]
+    assert errors == []
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "out")]

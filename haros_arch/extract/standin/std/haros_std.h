@@ -697,6 +697,7 @@ template<class T> struct numeric_limits {
 template<class T> struct default_delete { void operator()(T* p) const; };
 template<class T> class weak_ptr;
 template<class T, class D> class unique_ptr;
+template<class T> class auto_ptr;
 template<class T> class shared_ptr {
 public:
   typedef T element_type;
@@ -707,6 +708,7 @@ public:
   shared_ptr(const shared_ptr& other) noexcept;
   template<class Y> shared_ptr(const shared_ptr<Y>& other) noexcept;
   template<class Y, class D> shared_ptr(unique_ptr<Y, D>&& other);
+  template<class Y> shared_ptr(auto_ptr<Y>&& other);  // C++11-14; libstdc++ keeps it
   shared_ptr& operator=(const shared_ptr& other) noexcept;
   template<class Y> shared_ptr& operator=(const shared_ptr<Y>& other) noexcept;
   T* operator->() const noexcept;
@@ -729,6 +731,7 @@ public:
   shared_ptr(const shared_ptr& other) noexcept;
   template<class Y> shared_ptr(const shared_ptr<Y>& other) noexcept;
   template<class Y, class D> shared_ptr(unique_ptr<Y, D>&& other);
+  template<class Y> shared_ptr(auto_ptr<Y>&& other);  // C++11-14; libstdc++ keeps it
   shared_ptr& operator=(const shared_ptr& other) noexcept;
   template<class Y> shared_ptr& operator=(const shared_ptr<Y>& other) noexcept;
   void* get() const noexcept;
@@ -782,6 +785,7 @@ public:
   template<class E> unique_ptr(T* p, E&& deleter) noexcept;  // a pointer and its deleter
   unique_ptr(unique_ptr&& other) noexcept;
   template<class U, class E> unique_ptr(unique_ptr<U, E>&& other) noexcept;
+  template<class U> unique_ptr(auto_ptr<U>&& other) noexcept;  // C++11-14, as above
   unique_ptr& operator=(unique_ptr&& other) noexcept;
   template<class U, class E> unique_ptr& operator=(unique_ptr<U, E>&& other) noexcept;
   unique_ptr& operator=(nullptr_t) noexcept;
