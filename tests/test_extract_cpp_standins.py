@@ -813,3 +813,34 @@ int main(int argc, char** argv) {
         "CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL", "CPP_CALL_MISSED")]
     assert errors == []
     assert [(c.kind, c.name) for c in result.calls] == [("publish", "out")]
+
+
+def test_ros1_string_reverse_iterators(tmp_path) -> None:
+    """``std::string`` has ``rbegin`` / ``rend`` as every container does:
+    kinova_interactive_control switches on ``*marker_name.rbegin() - '0'``
+    (kinova_interactive_control.cpp:278); the stand-in string had none, an error (there
+    beside no ROS call, else near one)."""
+    result = _extract(tmp_path, ROS1_MANIFEST, """
+#include <string>
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "n");
+  ros::NodeHandle nh;
+  std::string marker_name("joint_3");
+  std::string reversed(marker_name.rbegin(), marker_name.rend());
+  const std::string& named = marker_name;
+  switch (*named.rbegin() - '0') {
+    case 3:
+      nh.advertise<std_msgs::String>("joint", 1);
+      break;
+  }
+  for (auto it = marker_name.crbegin(); it != marker_name.crend(); ++it) {}
+  ros::spin();
+  return 0;
+}
+""")
+    errors = [d.message for d in result.diagnostics if d.code in (
+        "CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL", "CPP_CALL_MISSED")]
+    assert errors == []
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "joint")]

@@ -227,6 +227,8 @@ public:
   typedef size_t size_type;
   typedef C* iterator;
   typedef const C* const_iterator;
+  typedef C* reverse_iterator;  // as vector's: a pointer that walks (direction aside)
+  typedef const C* const_reverse_iterator;
   static const size_t npos = static_cast<size_t>(-1);
   basic_string();
   basic_string(const C* s);
@@ -306,6 +308,12 @@ public:
   const_iterator end() const;
   const_iterator cbegin() const;
   const_iterator cend() const;
+  reverse_iterator rbegin();
+  reverse_iterator rend();
+  const_reverse_iterator rbegin() const;
+  const_reverse_iterator rend() const;
+  const_reverse_iterator crbegin() const;
+  const_reverse_iterator crend() const;
 };
 typedef basic_string<char> string;
 typedef basic_string<wchar_t> wstring;
