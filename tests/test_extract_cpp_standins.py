@@ -844,3 +844,32 @@ int main(int argc, char** argv) {
         "CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL", "CPP_CALL_MISSED")]
     assert errors == []
     assert [(c.kind, c.name) for c in result.calls] == [("publish", "joint")]
+
+
+def test_ros1_eigen_row_times_column_is_a_scalar(tmp_path) -> None:
+    """A row vector times a column vector is Eigen's 1x1 inner product, which converts to
+    its scalar: mav_msgs' conversions.h:306-322 (``double(zb.transpose() * jerk)``,
+    ``(*w)[0] = -h_w.transpose() * yb``), included by every rotors_control node; the
+    stand-in's product kept the row's type, 7 clang errors per unit."""
+    result = _extract(tmp_path, ROS1_MANIFEST, """
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+#include <Eigen/Dense>
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "n");
+  ros::NodeHandle nh;
+  Eigen::Vector3d zb(0, 0, 1), jerk(1, 2, 3), w;
+  const double along = double(zb.transpose() * jerk);
+  w[0] = -jerk.transpose() * zb;
+  double d = zb.transpose() * jerk;
+  Eigen::Vector3d scaled = zb * along + jerk * d;
+  Eigen::RowVector3d row = jerk.transpose() * 2.0;
+  nh.advertise<std_msgs::String>("out", 1);
+  ros::spin();
+  return scaled.size() + row.size() > 0 ? 0 : 1;
+}
+""")
+    errors = [d.message for d in result.diagnostics if d.code in (
+        "CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL", "CPP_CALL_MISSED")]
+    assert errors == []
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "out")]
