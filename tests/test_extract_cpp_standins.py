@@ -773,3 +773,103 @@ int main(int argc, char** argv) {
     assert errors == []
     assert sorted((c.kind, c.name) for c in result.calls) == [
         ("read", "robot_description"), ("subscribe", "~imu")]
+
+
+def test_ros1_unique_and_shared_ptr_take_an_auto_ptr(tmp_path) -> None:
+    """C++11's ``unique_ptr`` and ``shared_ptr`` are built from an ``auto_ptr<U>&&``
+    (libstdc++ keeps it): rotors_hil_interface assigns ``std::auto_ptr<Derived>(new
+    Derived(q))`` to its ``std::unique_ptr<Base>`` member
+    (hil_interface_node.cpp:51). The stand-ins had no such constructor: an error in a
+    function that calls the ROS API, the node partial for nothing."""
+    result = _extract(tmp_path, ROS1_MANIFEST, """
+#include <memory>
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+struct Base { virtual ~Base() {} };
+struct Derived : public Base { explicit Derived(int) {} };
+class Node {
+ public:
+  Node() {
+    if (nh_.ok())
+      owned_ = std::auto_ptr<Derived>(new Derived(1));
+    else
+      owned_ = std::auto_ptr<Base>(new Base());
+    shared_ = std::shared_ptr<Base>(std::auto_ptr<Derived>(new Derived(2)));
+    pub_ = nh_.advertise<std_msgs::String>("out", 1);
+  }
+  ros::NodeHandle nh_;
+  ros::Publisher pub_;
+  std::unique_ptr<Base> owned_;
+  std::shared_ptr<Base> shared_;
+};
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "n");
+  Node node;
+  ros::spin();
+  return 0;
+}
+""")
+    errors = [d.message for d in result.diagnostics if d.code in (
+        "CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL", "CPP_CALL_MISSED")]
+    assert errors == []
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "out")]
+
+
+def test_ros1_string_reverse_iterators(tmp_path) -> None:
+    """``std::string`` has ``rbegin`` / ``rend`` as every container does:
+    kinova_interactive_control switches on ``*marker_name.rbegin() - '0'``
+    (kinova_interactive_control.cpp:278); the stand-in string had none, an error (there
+    beside no ROS call, else near one)."""
+    result = _extract(tmp_path, ROS1_MANIFEST, """
+#include <string>
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "n");
+  ros::NodeHandle nh;
+  std::string marker_name("joint_3");
+  std::string reversed(marker_name.rbegin(), marker_name.rend());
+  const std::string& named = marker_name;
+  switch (*named.rbegin() - '0') {
+    case 3:
+      nh.advertise<std_msgs::String>("joint", 1);
+      break;
+  }
+  for (auto it = marker_name.crbegin(); it != marker_name.crend(); ++it) {}
+  ros::spin();
+  return 0;
+}
+""")
+    errors = [d.message for d in result.diagnostics if d.code in (
+        "CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL", "CPP_CALL_MISSED")]
+    assert errors == []
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "joint")]
+
+
+def test_ros1_eigen_row_times_column_is_a_scalar(tmp_path) -> None:
+    """A row vector times a column vector is Eigen's 1x1 inner product, which converts to
+    its scalar: mav_msgs' conversions.h:306-322 (``double(zb.transpose() * jerk)``,
+    ``(*w)[0] = -h_w.transpose() * yb``), included by every rotors_control node; the
+    stand-in's product kept the row's type, 7 clang errors per unit."""
+    result = _extract(tmp_path, ROS1_MANIFEST, """
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+#include <Eigen/Dense>
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "n");
+  ros::NodeHandle nh;
+  Eigen::Vector3d zb(0, 0, 1), jerk(1, 2, 3), w;
+  const double along = double(zb.transpose() * jerk);
+  w[0] = -jerk.transpose() * zb;
+  double d = zb.transpose() * jerk;
+  Eigen::Vector3d scaled = zb * along + jerk * d;
+  Eigen::RowVector3d row = jerk.transpose() * 2.0;
+  nh.advertise<std_msgs::String>("out", 1);
+  ros::spin();
+  return scaled.size() + row.size() > 0 ? 0 : 1;
+}
+""")
+    errors = [d.message for d in result.diagnostics if d.code in (
+        "CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL", "CPP_CALL_MISSED")]
+    assert errors == []
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "out")]

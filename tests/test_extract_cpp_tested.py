@@ -131,3 +131,55 @@ def test_a_member_a_status_read_wrote_then_tested_is_a_tested_read(tmp_path):
     result = extract_cpp([str(source)], Workspace(root=str(tmp_path)), cache_dir=None)
     reads = {(c.name, c.location.line): c.tested for c in result.calls if c.kind == "read"}
     assert reads == {("~old_name", 6): True, ("~other", 7): False, ("~old_name", 9): False}
+
+
+LASTING_STRINGS = r"""
+#include <string>
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+std::string g_position_frame;
+std::string g_frame;
+void send(const std::string& child) {
+  if (!g_position_frame.empty() && child != g_position_frame) ROS_INFO("%s", child.c_str());
+  ROS_INFO("%s", g_frame.c_str());
+}
+class Relay {
+ public:
+  Relay() : pnh_("~") {
+    pnh_.getParam("output", output_);
+    pnh_.getParam("label", label_);
+    sub_ = pnh_.subscribe("in", 1, &Relay::cb, this);
+  }
+  void cb(const std_msgs::String::ConstPtr& msg) {
+    if (output_.empty()) return;
+    ROS_INFO("%s %s", label_.c_str(), msg->data.c_str());
+  }
+ private:
+  ros::NodeHandle pnh_;
+  ros::Subscriber sub_;
+  std::string output_;
+  std::string label_;
+};
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "n");
+  ros::NodeHandle priv_nh("~");
+  priv_nh.getParam("position_frame_id", g_position_frame);
+  priv_nh.getParam("frame_id", g_frame);
+  send("x");
+  Relay relay;
+  ros::spin();
+}
+"""
+
+
+def test_a_global_or_member_string_tested_for_being_empty_in_another_function(tmp_path):
+    """uuv_assistants' message_to_tf reads ``position_frame_id`` into a global in main
+    (message_to_tf.cc:247) and tests it for being empty in the function that sends the
+    transforms (:89): the absence is handled, a false parameter-read-not-set. So is a
+    member read in a constructor and tested in a callback. A global or member read and
+    used as it is stays untested."""
+    source = tmp_path / "n.cpp"
+    source.write_text(LASTING_STRINGS)
+    result = extract_cpp([str(source)], Workspace(root=str(tmp_path)), cache_dir=None)
+    assert {c.name: c.tested for c in result.calls if c.kind == "read"} == {
+        "~position_frame_id": True, "~frame_id": False, "~output": True, "~label": False}

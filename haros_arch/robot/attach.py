@@ -51,7 +51,7 @@ from ..share import share_source
 from ..workspace import Workspace
 from . import xacro
 from .bridge import bridges
-from .gazebo_plugins import Entity, Plugin, gz_system, plugin_row
+from .gazebo_plugins import MULTICAMERA_SIDES, Entity, Plugin, gz_system, plugin_row
 
 FILE = xacro.FILE
 SPAWNERS = {("gazebo_ros", "spawn_model"): 1, ("gazebo_ros", "spawn_entity.py"): 2,
@@ -614,6 +614,8 @@ def _truth(element: etree._Element, entity: Entity) -> bool | None:
     if entity.when == "@depth":
         sensor = next(element.iterancestors("sensor"), None)
         return sensor is not None and sensor.get("type") == "depth"
+    if entity.when.startswith("@camera:"):
+        return _camera_side(element, entity.when.partition(":")[2])
     values = []
     for key in entity.when.split("|"):
         text = _child(element, key)
@@ -628,6 +630,23 @@ def _truth(element: etree._Element, entity: Entity) -> bool | None:
     return any(values)
 
 
+def _camera_side(element: etree._Element, side: str) -> bool | None:
+    """Whether a <camera> of the plugin's <sensor> takes ``side``: the first of
+    ``MULTICAMERA_SIDES`` its name holds (None when a name with unknown parts could)."""
+    sensor = next(element.iterancestors("sensor"), None)
+    if sensor is None:
+        return False
+    unsure = False
+    for camera in sensor.iterfind("camera"):
+        name = camera.get("name") or ""
+        taken = next((s for s in MULTICAMERA_SIDES if s in name), None)
+        if taken == side:
+            return True
+        if taken is None and UNKNOWN_MARK in name:
+            unsure = True
+    return None if unsure else False
+
+
 def _calls(element: etree._Element, row: Plugin, where: Location,
            conditions: tuple[Condition, ...], namespace: str | None,
            home: str = "/") -> Iterator[PrimitiveCall]:
@@ -640,7 +659,10 @@ def _calls(element: etree._Element, row: Plugin, where: Location,
             continue
         extra: tuple[Condition, ...] = ()
         if truth is None:
-            extra = (Condition(f"<{entity.when}> is true", "source", "if", where),)
+            text = f"<{entity.when}> is true"
+            if entity.when and entity.when.startswith("@camera:"):
+                text = f"a <camera> of the sensor is named with {entity.when[8:]}"
+            extra = (Condition(text, "source", "if", where),)
         name = _template(element, row, entity.name)
         if name is None or (entity.kind != "read" and name.strip("/") == ""):
             continue

@@ -37,7 +37,9 @@ class Entity:
     name: str  # template over child elements: ``{topicName}``, ``{cameraName}/image_raw``
     type: str  # canonical type of the row's ROS version, or a ``{element}`` template
     # a child element that must be true for it to exist (``a|b``: either), or ``@depth``:
-    # the plugin's <sensor> is a depth camera
+    # the plugin's <sensor> is a depth camera, or ``@camera:<word>``: a <camera> of its
+    # multicamera <sensor> is the first whose name holds <word> of those the row tries
+    # (``left``, then ``right``)
     when: str | None = None
     when_default: bool = True  # its value when absent
     # published through image_transport (``PrimitiveCall.transport``): the transport
@@ -75,6 +77,8 @@ _CAMERA_1 = (
 )
 _CAMERA_1_DEFAULTS = (("cameraName", ""), ("imageTopicName", "image_raw"),
                       ("cameraInfoTopicName", "camera_info"))
+# the words gazebo_ros_multicamera looks for in its cameras' names, in its order
+MULTICAMERA_SIDES = ("left", "right")
 _LASER_1 = (Entity("publish", "{topicName}", "sensor_msgs/LaserScan"),)
 _GPU_LASER_1 = _LASER_1
 _DRIVE_1 = (
@@ -97,6 +101,12 @@ PLUGINS: tuple[Plugin, ...] = (
     # -- ROS 1: gazebo_ros_pkgs (noetic-devel) -------------------------------------------
     _ros1("gazebo_ros_camera", "gazebo_ros_triggered_camera", namespace="sensor",
           entities=_CAMERA_1, defaults=_CAMERA_1_DEFAULTS),
+    # multicamera: a camera utility per <camera> named with ``left`` (else ``right``),
+    # its name <cameraName>/left (/right); gazebo_ros_multicamera.cpp's Load
+    _ros1("gazebo_ros_multicamera", namespace="sensor", entities=tuple(
+        Entity(e.kind, e.name.replace("{cameraName}", "{cameraName}/" + side), e.type,
+               when=f"@camera:{side}", transport=e.transport)
+        for side in MULTICAMERA_SIDES for e in _CAMERA_1), defaults=_CAMERA_1_DEFAULTS),
     _ros1("gazebo_ros_depth_camera", "gazebo_ros_openni_kinect", namespace="sensor",
           entities=(*_CAMERA_1,
                     Entity("publish", "{cameraName}/{depthImageTopicName}",

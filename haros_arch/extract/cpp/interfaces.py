@@ -382,12 +382,13 @@ def _struct(name: str, fields: list[Field], package: str, known: bool = True) ->
                              f"{string_literal(fld.constant)};")
             else:
                 lines.append(f"  static const {cpp} {fld.name} = {_number(fld.constant)};")
-        elif fld.array:  # fixed size: gencpp's boost::array (``float64[9] K``)
-            lines.append(f"  boost::array<{cpp}, {fld.array}> {fld.name};")
-        elif fld.array is not None:
-            lines.append(f"  std::vector<{cpp}> {fld.name};")
         else:
-            lines.append(f"  {cpp} {fld.name};")
+            if fld.array:  # fixed size: gencpp's boost::array (``float64[9] K``)
+                cpp = f"boost::array<{cpp}, {fld.array}>"
+            elif fld.array is not None:
+                cpp = f"std::vector<{cpp}>"
+            # gencpp's typedef of each field's type, which code names (``_buttons_type``)
+            lines += [f"  typedef {cpp} _{fld.name}_type;", f"  {cpp} {fld.name};"]
     lines += [f"  typedef boost::shared_ptr<{name}> Ptr;",
               f"  typedef boost::shared_ptr<{name} const> ConstPtr;", "};"]
     return lines + _pointers(name)

@@ -7,14 +7,16 @@ children); it records the calls in a condition: of an ``if``, ``while`` or ``do`
 ``?:``, an operand of ``!``, ``&&`` or ``||``, and a ``bool`` variable initialised or
 assigned from a call that is then one of those (``bool ok = nh.getParam(..); if (!ok)``),
 a member too, tested in the same function (laser_filters' ``using_filter_chain_deprecated_ =
-private_nh_.hasParam("filter_chain"); if (using_filter_chain_deprecated_)``).
+private_nh_.hasParam("filter_chain"); if (using_filter_chain_deprecated_)``), and a string
+a read wrote and then tested for being empty: in the same function, or in any function of
+the unit for a global, a static or a member (``unit_tested``).
 """
 
 from __future__ import annotations
 
 import re
 
-from clang.cindex import Cursor, CursorKind
+from clang.cindex import Cursor, CursorKind, StorageClass
 
 from .conditions import ConditionReader
 from .values import emptiness_test, strip
@@ -42,6 +44,11 @@ class TestedCalls:
         self._results: dict[Key, Key] = {}  # a bool variable -> the call it holds
         # a variable -> the calls it was passed to before (``getParam("x", topic)``)
         self._passed: dict[Key, list[Key]] = {}
+        # the same for a variable that outlives the function (a global, a static, a
+        # member), and those of them tested for being empty here: a test in another
+        # function of the unit handles the read's absence too (``unit_tested``)
+        self.lasting_passed: dict[Key, list[Key]] = {}
+        self.lasting_tested: set[Key] = set()
 
     def visit(self, node: Cursor) -> None:
         kind = node.kind
@@ -98,11 +105,18 @@ class TestedCalls:
             return
         for arg in call.get_arguments():
             arg = strip(arg)
-            variable = arg.referenced if arg.kind == CursorKind.DECL_REF_EXPR else None
-            held = key(variable) if variable is not None and (
-                variable.kind == CursorKind.VAR_DECL) else None
-            if held is not None:
+            variable = arg.referenced if arg.kind in (
+                CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR) else None
+            if variable is None or variable.kind not in (
+                    CursorKind.VAR_DECL, CursorKind.FIELD_DECL):
+                continue
+            held = key(variable)
+            if held is None:
+                continue
+            if variable.kind == CursorKind.VAR_DECL:
                 self._passed.setdefault(held, []).append(made)
+            if _lasting(variable):
+                self.lasting_passed.setdefault(held, []).append(made)
 
     def _condition(self, expr: Cursor) -> None:
         found = emptiness_test(expr)
@@ -111,11 +125,13 @@ class TestedCalls:
             # tested for being empty, the absence handled (uuv_assistants'
             # message_to_tf: an optional topic, subscribed only when given)
             subject = strip(found[0])
-            variable = subject.referenced if subject.kind == CursorKind.DECL_REF_EXPR \
-                else None
+            variable = subject.referenced if subject.kind in (
+                CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR) else None
             held = key(variable) if variable is not None else None
             if held is not None:
                 self.keys.update(self._passed.get(held, ()))
+                if _lasting(variable):
+                    self.lasting_tested.add(held)
             return
         if expr.kind == CursorKind.VAR_DECL:  # if (bool ok = nh.getParam(..))
             children = [c for c in expr.get_children() if c.kind.is_expression()]
@@ -132,6 +148,26 @@ class TestedCalls:
         made = key(call)
         if made is not None:
             self.keys.add(made)
+
+
+def _lasting(variable: Cursor) -> bool:
+    """Whether a variable outlives the function that uses it: a member, a global or
+    namespace-scope variable, a static local."""
+    if variable.kind == CursorKind.FIELD_DECL:
+        return True
+    if variable.kind != CursorKind.VAR_DECL:
+        return False
+    parent = variable.semantic_parent
+    return (parent is not None and parent.kind in (
+        CursorKind.TRANSLATION_UNIT, CursorKind.NAMESPACE, CursorKind.CLASS_DECL,
+        CursorKind.STRUCT_DECL)) or variable.storage_class == StorageClass.STATIC
+
+
+def unit_tested(passed: dict[Key, list[Key]], tested: set[Key]) -> set[Key]:
+    """The calls of the unit that wrote a variable outliving its function which some
+    function of the unit tests for being empty (message_to_tf's ``g_position_frame_id``,
+    read in main, tested where the transforms are sent)."""
+    return {made for held in tested for made in passed.get(held, ())}
 
 
 def _unwrap(expr: Cursor) -> Cursor | None:

@@ -59,7 +59,7 @@ from .owners import (
     unseen_construction,
 )
 from .qos import qos as qos_of
-from .tested import Key, TestedCalls
+from .tested import Key, TestedCalls, unit_tested
 from .tested import key as key_of
 from .values import (
     ARGUMENTS_LEFT,
@@ -213,6 +213,11 @@ class CallFinder:
         self._template_name = ""  # that function's name
         # reads that return whether the parameter is there, where they are
         self._status_reads: list[tuple[Key, PrimitiveCall]] = []
+        # of every function walked: those reads, and the variables outliving a function
+        # that reads wrote and that a function tests for being empty (``unit_tested``)
+        self._unit_status_reads: list[tuple[Key, PrimitiveCall]] = []
+        self._lasting_passed: dict[Key, list[Key]] = {}
+        self._lasting_tested: set[Key] = set()
         # (owner, class of the workspace it constructs): the class's calls are made on
         # its constructor's node when it names none itself (a device object given the
         # node's handle)
@@ -252,9 +257,15 @@ class CallFinder:
         self.members = self.namespaces.members = MemberWrites(self.functions, self.source,
                                                               self.opaque)
         self.wrappers.read_inside(self._conditions_of)
+        walked: set[int] = set()
         for function in self.functions:
             if self._gives(function):
+                walked.add(id(function))
                 self._function(function)
+        self._lasting_tests([f for f in self.functions if id(f) not in walked])
+        handled = unit_tested(self._lasting_passed, self._lasting_tested)
+        for site, read in self._unit_status_reads:
+            read.tested = read.tested or site in handled
         # the member's writes are all these reads, of one parameter (nav2's
         # TwistSubscriber: each of its two constructors reads enable_stamped_cmd_vel
         # into is_stamped_ with the same default), grouped by call site: one site may
@@ -387,6 +398,27 @@ class CallFinder:
                     self.types.adapter(cursor)
                 yield from self._definitions(cursor)
 
+    def _lasting_tests(self, others: list[Cursor]) -> None:
+        """The tests for being empty in ``others`` (functions the walk left out: a
+        callback that makes no ROS call) of the variables outliving their function that
+        a status read wrote and that no walked function tested (``unit_tested``)."""
+        sites = {site for site, _ in self._unit_status_reads}
+        pending = {held for held, made in self._lasting_passed.items()
+                   if held not in self._lasting_tested and not sites.isdisjoint(made)}
+        if not pending:
+            return
+        for function in others:
+            references = self.wrappers.references.get(id(function))
+            if not references or not any(
+                r.referenced is not None and key_of(r.referenced) in pending
+                for r in references
+            ):
+                continue
+            tested = TestedCalls(self.reader)
+            for node in function.walk_preorder():  # (``preorder`` keeps calls alone)
+                tested.visit(node)
+            self._lasting_tested.update(tested.lasting_tested)
+
     def _gives(self, function: Cursor) -> bool:
         """Whether the walk of ``function`` (``_function``) can find anything: a call of
         an API function's or a wrapper's name, a call kept as a recovery expression of
@@ -502,6 +534,10 @@ class CallFinder:
             stack.extend(self.reader.below(node, conditions))
         for site, read in self._status_reads:
             read.tested = read.tested or site in tested.keys
+        self._unit_status_reads.extend(self._status_reads)
+        for held, made in tested.lasting_passed.items():
+            self._lasting_passed.setdefault(held, []).extend(made)
+        self._lasting_tested.update(tested.lasting_tested)
         # a function's calls exist where it is called: under the conditions its call
         # sites in the node's files share (``call_conditions``), joined per node
         called_in = function.canonical.get_usr() if call_conditions.eligible(function) else None

@@ -227,6 +227,8 @@ public:
   typedef size_t size_type;
   typedef C* iterator;
   typedef const C* const_iterator;
+  typedef C* reverse_iterator;  // as vector's: a pointer that walks (direction aside)
+  typedef const C* const_reverse_iterator;
   static const size_t npos = static_cast<size_t>(-1);
   basic_string();
   basic_string(const C* s);
@@ -306,6 +308,12 @@ public:
   const_iterator end() const;
   const_iterator cbegin() const;
   const_iterator cend() const;
+  reverse_iterator rbegin();
+  reverse_iterator rend();
+  const_reverse_iterator rbegin() const;
+  const_reverse_iterator rend() const;
+  const_reverse_iterator crbegin() const;
+  const_reverse_iterator crend() const;
 };
 typedef basic_string<char> string;
 typedef basic_string<wchar_t> wstring;
@@ -697,6 +705,7 @@ template<class T> struct numeric_limits {
 template<class T> struct default_delete { void operator()(T* p) const; };
 template<class T> class weak_ptr;
 template<class T, class D> class unique_ptr;
+template<class T> class auto_ptr;
 template<class T> class shared_ptr {
 public:
   typedef T element_type;
@@ -707,6 +716,7 @@ public:
   shared_ptr(const shared_ptr& other) noexcept;
   template<class Y> shared_ptr(const shared_ptr<Y>& other) noexcept;
   template<class Y, class D> shared_ptr(unique_ptr<Y, D>&& other);
+  template<class Y> shared_ptr(auto_ptr<Y>&& other);  // C++11-14; libstdc++ keeps it
   shared_ptr& operator=(const shared_ptr& other) noexcept;
   template<class Y> shared_ptr& operator=(const shared_ptr<Y>& other) noexcept;
   T* operator->() const noexcept;
@@ -729,6 +739,7 @@ public:
   shared_ptr(const shared_ptr& other) noexcept;
   template<class Y> shared_ptr(const shared_ptr<Y>& other) noexcept;
   template<class Y, class D> shared_ptr(unique_ptr<Y, D>&& other);
+  template<class Y> shared_ptr(auto_ptr<Y>&& other);  // C++11-14; libstdc++ keeps it
   shared_ptr& operator=(const shared_ptr& other) noexcept;
   template<class Y> shared_ptr& operator=(const shared_ptr<Y>& other) noexcept;
   void* get() const noexcept;
@@ -782,6 +793,7 @@ public:
   template<class E> unique_ptr(T* p, E&& deleter) noexcept;  // a pointer and its deleter
   unique_ptr(unique_ptr&& other) noexcept;
   template<class U, class E> unique_ptr(unique_ptr<U, E>&& other) noexcept;
+  template<class U> unique_ptr(auto_ptr<U>&& other) noexcept;  // C++11-14, as above
   unique_ptr& operator=(unique_ptr&& other) noexcept;
   template<class U, class E> unique_ptr& operator=(unique_ptr<U, E>&& other) noexcept;
   unique_ptr& operator=(nullptr_t) noexcept;
