@@ -83,6 +83,19 @@ def test_candidates_match_pattern_and_type():
     assert all(not t.candidates for t in config.topics if not t.is_unresolved)
 
 
+def test_a_parameter_read_with_an_unknown_part_may_read_one_of_another_type():
+    """A parameter is one name whatever its value's type: rotors' controllers read
+    ``rotor_configuration/<i>/direction`` into an int, and its YAML gives ``-1.0`` (roscpp
+    rounds it); the read may be that parameter (a topic of another type is another
+    topic: the test above)."""
+    ctrl = node("p", "ctrl", call("read", "~rotor_configuration/?/direction", "int"))
+    config = graph([NodeDecl("/ctrl", "p", "ctrl")], params=[
+        ParamDecl("/ctrl/rotor_configuration/0/direction", -1.0, "double")], nodes=[ctrl])
+    find_candidates(config)
+    unknown = next(p for p in config.parameters if p.is_unresolved)
+    assert [c.name for c in unknown.candidates] == ["/ctrl/rotor_configuration/0/direction"]
+
+
 def test_a_ros1_read_with_an_unknown_part_may_read_the_parameters_under_it():
     """diagnostic_aggregator's AnalyzerGroup reads ``analyzers`` whole in the namespace an
     add_diagnostics request names (``?/analyzers``): the parameters set under any

@@ -564,6 +564,37 @@ def test_a_ros1_spawner_calls_the_controller_manager_of_its_namespace_argument(w
     assert sim_time.call.has_default and sim_time.call.default is False
 
 
+def test_a_ros1_gazebo_spawner_reads_the_parameter_its_arguments_name(write_tree):
+    # gazebo_ros' spawn_model: its interface model reads '?' (rospy.get_param(args.param)),
+    # so any parameter of its namespace could have been read; its -param names it
+    root = write_tree({
+        "src/robot/package.xml": package_xml("robot"),
+        "src/robot/CMakeLists.txt": "project(robot)\n",
+        "src/robot/launch/sim.launch": """
+            <launch>
+              <group ns="r1">
+                <param name="robot_description" value="&lt;robot name='r'/&gt;"/>
+                <param name="unused" value="1"/>
+                <node pkg="gazebo_ros" type="spawn_model" name="spawn"
+                      args="-urdf -param robot_description -model r1 -x -1.5 -J arm 0.3
+                            -unpause -wait ground"/>
+              </group>
+            </launch>
+            """,
+        "project.yaml": "project: p\ndistro: noetic\nconfigurations:\n"
+                        "  c: [robot/launch/sim.launch]\n",
+    })
+    config = _configuration(root)
+    spawner = _instance(config, "/r1/spawn")
+    assert sorted((link.kind, link.name) for link in spawner.links) == [
+        ("client", "/gazebo/set_model_configuration"),
+        ("client", "/gazebo/spawn_urdf_model"),
+        ("client", "/gazebo/unpause_physics"),
+        ("read", "/r1/robot_description"),
+        ("subscribe", "/gazebo/model_states")]
+    assert spawner.node.completeness == "model"
+
+
 def test_ros2_topic_tools_take_their_topics_from_their_parameters(write_tree):
     root = write_tree({
         "src/base/package.xml": _package_xml("base"),

@@ -51,5 +51,11 @@ def find_candidates(config: Configuration) -> None:
                 # reads ``<ns>/analyzers`` whole, the namespace a service request names)
                 written = written.removesuffix("$") + "(?:/.*)?$"
             pattern = re.compile(written)
-            matches = [c for c in known if pattern.match(c.name) and compatible(resource, c)]
+            # a parameter is one name whatever the type of its value: a read of another
+            # type still asks for it (roscpp rounds a double it is given for an int,
+            # rotors' ``getParam("rotor_configuration/" + i + "/direction", int)`` of
+            # ``direction: -1.0``); topics of other types are other topics
+            typed = not isinstance(resource, Parameter)
+            matches = [c for c in known if pattern.match(c.name)
+                       and (not typed or compatible(resource, c))]
             resource.candidates = sorted(matches, key=lambda c: _rank(resource, c))

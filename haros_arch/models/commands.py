@@ -1,6 +1,6 @@
 """Nodes whose interface is their command line: ``rostopic pub`` / ``ros2 topic pub``,
-ROS 1 topic_tools' ``relay``, ``mux``, ``demux``, ``throttle`` and ``drop``, and ROS 1
-controller_manager's ``spawner``.
+ROS 1 topic_tools' ``relay``, ``mux``, ``demux``, ``throttle`` and ``drop``, ROS 1
+controller_manager's ``spawner`` and gazebo_ros' ``spawn_model``.
 
 A launch file that starts ``<node pkg="rostopic" type="rostopic" args="pub /initialpose
 geometry_msgs/PoseWithCovarianceStamped '{...}'"/>`` runs a publisher of that topic and
@@ -44,6 +44,17 @@ it calls the manager's ``list_controllers`` (is the controller loaded), ``load_c
 when it sets a controller's ``type`` (``-t``), parameter file (``-p``, ``--params-file``)
 or ROS arguments (``--controller-ros-args``). An interface model of the script (its
 names built from ``sys.argv``) knows none of these: the arguments decide over it.
+
+gazebo_ros' ROS 1 ``spawn_model`` (gazebo_ros_pkgs noetic-devel ``gazebo_ros/scripts/
+spawn_model`` and ``src/gazebo_ros/gazebo_interface.py``): argparse options with one dash;
+``-param P`` reads the description from the parameter P (``rospy.get_param(P)``, no
+default, line 132), ``-urdf`` / ``-sdf`` call ``G/spawn_urdf_model`` / ``G/spawn_sdf_model``
+(gazebo_msgs ``SpawnModel``) with G the ``-gazebo_namespace`` (default ``/gazebo``),
+``-wait M`` subscribes ``G/model_states`` (``ModelStates``, line 102), ``-J NAME VALUE``
+calls ``G/set_model_configuration``, ``-unpause`` ``G/unpause_physics`` (std_srvs
+``Empty``) and ``-b`` ``G/delete_model`` on shutdown (lines 185-230). Its interface model
+reads ``?`` (the parameter the options name), so in every simulation the spawner could
+read any parameter: the arguments decide over it too.
 """
 
 from __future__ import annotations
@@ -94,6 +105,9 @@ def command_node(decl: NodeDecl) -> Node | None:
     if (decl.package, decl.executable) == ("controller_manager", "spawner") and (
             decl.ros_version == 1):
         return _spawner(decl, words)
+    if (decl.package, decl.executable) == ("gazebo_ros", "spawn_model") and (
+            decl.ros_version == 1):
+        return _gazebo_spawner(decl, words)
     if by_arguments(decl):
         return _ros2_spawner(decl, program_words(decl.args))
     return None
@@ -105,8 +119,9 @@ def by_arguments(decl: NodeDecl) -> bool:
     ``sys.argv``): the node from ``command_node`` is taken first."""
     # (``spawner.py``, the Foxy name, is no executable of later releases: the model
     # says so, MODEL_NODE_MISSING, and that stands)
-    return decl.ros_version == 2 and (decl.package, decl.executable) == (
-        "controller_manager", "spawner")
+    return (decl.ros_version == 2 and (decl.package, decl.executable) == (
+        "controller_manager", "spawner")) or (decl.ros_version == 1 and (
+            decl.package, decl.executable) == ("gazebo_ros", "spawn_model"))
 
 
 ROS2_SPAWNER_VALUES = {"-c", "--controller-manager", "-p", "--param-file", "-n",
@@ -181,6 +196,51 @@ def _spawner(decl: NodeDecl, words: list[str]) -> Node | None:
                                origin="arguments", has_default=True, default=False))
     node = _node(decl, "controller_manager", calls[0], "python")
     node.calls = calls
+    return node
+
+
+GAZEBO_SPAWNER_VALUES = {"-file", "-param", "-database", "-model", "-reference_frame",
+                         "-gazebo_namespace", "-robot_namespace", "-wait", "-x", "-y", "-z",
+                         "-R", "-P", "-Y"}
+
+
+def _gazebo_spawner(decl: NodeDecl, words: list[str]) -> Node | None:
+    """gazebo_ros' ROS 1 ``spawn_model`` from its arguments (see the module's docstring);
+    None when they are not known or argparse refuses them (neither ``-urdf`` nor
+    ``-sdf``): its interface model stands."""
+    joints: list[str] = []
+    rest: list[str] = []
+    index = 0
+    while index < len(words):  # -J NAME VALUE: two values
+        if words[index] == "-J":
+            joints.extend(words[index + 1:index + 3])
+            index += 3
+            continue
+        rest.append(words[index])
+        index += 1
+    positional, values, flags = _positional(rest, GAZEBO_SPAWNER_VALUES)
+    if positional or any("?" in word for word in words) or not flags & {"-urdf", "-sdf"}:
+        return None
+    gazebo = values.get("-gazebo_namespace", "/gazebo").rstrip("/")
+    calls: list[tuple[CallKind, str, str | None]] = []
+    if "-wait" in values:
+        calls.append(("subscribe", f"{gazebo}/model_states", "gazebo_msgs/ModelStates"))
+    if "-param" in values:
+        calls.append(("read", values["-param"], "str"))
+    kind = "urdf" if "-urdf" in flags else "sdf"
+    calls.append(("client", f"{gazebo}/spawn_{kind}_model", "gazebo_msgs/SpawnModel"))
+    if joints:
+        calls.append(("client", f"{gazebo}/set_model_configuration",
+                      "gazebo_msgs/SetModelConfiguration"))
+    if "-unpause" in flags:
+        calls.append(("client", f"{gazebo}/unpause_physics", "std_srvs/Empty"))
+    if "-b" in flags:
+        calls.append(("client", f"{gazebo}/delete_model", "gazebo_msgs/DeleteModel"))
+    made = [PrimitiveCall(kind_, name, type_, queue_size=1 if kind_ == "subscribe" else None,
+                          location=decl.location, origin="arguments")
+            for kind_, name, type_ in calls]
+    node = _node(decl, "gazebo_ros", made[0], "python")
+    node.calls = made
     return node
 
 
