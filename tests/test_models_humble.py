@@ -100,3 +100,19 @@ def test_the_shipped_humble_diff_drive_controller_takes_an_unstamped_command_too
                 if c.kind == "subscribe"}
     assert ("~cmd_vel_unstamped", "geometry_msgs/msg/Twist") in subscribed(humble)
     assert not any(name == "~cmd_vel_unstamped" for name, _ in subscribed(jazzy))
+
+
+@pytest.mark.parametrize("distro", ["humble", "jazzy"])
+def test_the_shipped_costmap_node_has_the_calls_of_costmap2dros(distro):
+    """nav2_costmap_2d's node links its core library by the ALIAS
+    ``${PROJECT_NAME}::nav2_costmap_2d_core`` (CMakeLists.txt:48, 150-154), whose
+    Costmap2DROS its main makes; the models were built without that library, so every
+    costmap a nav2 server makes had no parameter of its own (humble's then said
+    global_frame, resolution, ... were set but never read)."""
+    model = Library().find("nav2_costmap_2d", distro)
+    assert model is not None and model.distro == distro
+    node = model.node("nav2_costmap_2d")
+    assert node is not None
+    reads = {c.name for c in node.calls if c.kind == "read"}
+    assert {"global_frame", "robot_base_frame", "resolution", "plugins"} <= reads
+    assert "costmap" in {c.name for c in node.calls if c.kind == "publish"}
