@@ -116,3 +116,16 @@ def test_the_shipped_costmap_node_has_the_calls_of_costmap2dros(distro):
     reads = {c.name for c in node.calls if c.kind == "read"}
     assert {"global_frame", "robot_base_frame", "resolution", "plugins"} <= reads
     assert "costmap" in {c.name for c in node.calls if c.kind == "publish"}
+
+
+def test_the_shipped_humble_mux_subscribes_each_of_its_input_topics():
+    """humble's topic_tools mux subscribes its selected element of input_topics
+    (topic_tools humble 5cdfce6c mux_node.cpp:35-38, tool_base_node.cpp:56); the humble
+    override names that subscription by each element, as jazzy's does, and humble has no
+    demux node."""
+    model = Library().find("topic_tools", "humble")
+    assert model is not None and model.distro == "humble"
+    mux = model.node("mux")
+    assert mux is not None and model.node("demux") is None
+    (sub,) = [c for c in mux.calls if c.kind == "subscribe"]
+    assert (sub.name_param, sub.name_each) == ("input_topics", ".")
