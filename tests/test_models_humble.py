@@ -129,3 +129,14 @@ def test_the_shipped_humble_mux_subscribes_each_of_its_input_topics():
     assert mux is not None and model.node("demux") is None
     (sub,) = [c for c in mux.calls if c.kind == "subscribe"]
     assert (sub.name_param, sub.name_each) == ("input_topics", ".")
+
+
+def test_the_shipped_humble_ackermann_controller_takes_an_unstamped_reference_too():
+    """humble's steering controllers subscribe ~/reference_unstamped (Twist) when
+    use_stamped_vel is false (ros2_controllers humble ad559d9c,
+    steering_controllers_library.cpp:127); jazzy's only ~/reference."""
+    model = Library().find("ackermann_steering_controller", "humble")
+    assert model is not None and model.distro == "humble"
+    subscribed = {(c.name, c.type) for n in model.nodes for c in n.calls
+                  if c.kind == "subscribe"}
+    assert ("~reference_unstamped", "geometry_msgs/msg/Twist") in subscribed
