@@ -708,3 +708,32 @@ def test_a_member_named_in_an_expression_is_no_definition(tmp_path) -> None:
         "    return Maker::make(a) ;\n  }\n"
         "}\n")
     assert _defines("a.cpp", Files()) == {"Odometry", "Grid"}
+
+
+def test_a_library_linked_by_its_alias_is_linked(write_tree) -> None:
+    """navigation2's nav2_costmap_2d (humble 3c3db59d nav2_costmap_2d/CMakeLists.txt:33-48,
+    145-154): ``add_library(${PROJECT_NAME}::nav2_costmap_2d_core ALIAS
+    nav2_costmap_2d_core)``, then the costmap node links
+    ``${PROJECT_NAME}::nav2_costmap_2d_core``, whose Costmap2DROS its main makes. The alias
+    was dropped and the link read as the package itself: the node had none of the
+    costmap's calls, and its model said it whole."""
+    root: Path = write_tree({
+        "p/package.xml": package_xml("p", "ament_cmake"),
+        "p/CMakeLists.txt": """
+            cmake_minimum_required(VERSION 3.8)
+            project(p)
+            add_library(core SHARED src/x.cpp)
+            add_library(${PROJECT_NAME}::core ALIAS core)
+            add_library(again ALIAS p::core)
+            add_executable(node src/x.cpp)
+            target_link_libraries(node ${PROJECT_NAME}::core)
+            add_executable(other src/x.cpp)
+            target_link_libraries(other again)
+            """,
+        "p/src/x.cpp": "int main() {}\n",
+    })
+    ws = scan([str(root)])
+    targets = {t.name: t for t in cmake.targets_of(ws.packages["p"], ws)[0]}
+    assert targets["node"].links == ["core"] and targets["node"].packages == []
+    assert targets["other"].links == ["core"]
+    assert "p::core" not in targets and "again" not in targets

@@ -381,6 +381,9 @@ def _add_library(it: Interpreter, command: Invocation, args: list[str]) -> None:
 
 def _add_target(it: Interpreter, command: Invocation, args: list[str], kind: str,
                 flags: tuple[str, ...]) -> None:
+    if len(args) == 3 and args[1] == "ALIAS":  # another name of a target
+        it.aliases[args[0]] = it.aliases.get(args[2], args[2])
+        return
     if not args or "IMPORTED" in args or "ALIAS" in args or "INTERFACE" in args[1:2]:
         return
     every = it.every_way(command.args)  # the sources of every path through tests not decided
@@ -686,6 +689,7 @@ def _target_link_libraries(it: Interpreter, command: Invocation, args: list[str]
         return
     project = it.get("PROJECT_NAME")
     for arg in args[1:]:
+        arg = it.aliases.get(arg, arg)
         mark = _PACKAGE_MARK.fullmatch(arg)
         if arg in it.targets or (
             command.name.lower() == "target_link_libraries" and mark is None

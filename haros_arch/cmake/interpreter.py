@@ -104,6 +104,9 @@ class Interpreter:
         # ament_cmake_auto: the libraries ``ament_auto_add_library`` made so far, which
         # every later ``ament_auto_add_*`` target links (``${PROJECT_NAME}_LIBRARIES``)
         self.auto_libraries: list[str] = []
+        # add_library(<name> ALIAS <target>): the names linking <name> reaches <target> by
+        # (nav2's ``${PROJECT_NAME}::nav2_costmap_2d_core``)
+        self.aliases: dict[str, str] = {}
         self.programs: list[Program] = []
         self.program_dirs: list[Program] = []
         # add_custom_target / add_custom_command: what they make at build time is not

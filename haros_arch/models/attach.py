@@ -10,7 +10,8 @@ and its version, and every link made from it has ``origin: "model"``.
 The distribution is the project file's ``distro:``, else ``ROS_DISTRO`` in the
 configuration's environment, else guessed from its launch files (ROS 1: noetic, ROS 2:
 jazzy); humble and iron take jazzy's model of a package they have none of (models for
-them are made only where their packages differ). A ``MODEL_DISTRO`` diagnostic says
+them are made only where their packages differ: humble's ship for 50 packages, iron's for
+none). A ``MODEL_DISTRO`` diagnostic says
 which, and ``MODEL_USED`` which model each node took (its label starts with the
 distribution it is for), and under which name when the launch file starts it by
 another name its releases install (``Node.aliases``).
