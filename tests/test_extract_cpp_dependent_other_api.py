@@ -142,6 +142,19 @@ def test_a_call_looked_up_to_the_codes_own_functions_is_no_api_call(tmp_path) ->
     assert _calls(tmp_path, "ament_cmake", "rclcpp", TOKEN) == [("publish", "markers")]
 
 
+def test_a_call_looked_up_to_the_codes_own_functions_hides_no_call(tmp_path) -> None:
+    # with an error in the unit, the site of such a call is no place a call was missed
+    code = TOKEN.replace("    secret_ = secret.value;", "    secret_ = secret.value;\n"
+                         "    std::string x = undefined_thing(secret_);")
+    (tmp_path / "package.xml").write_text(package_xml("pkg", "ament_cmake").replace(
+        "</package>", "<depend>rclcpp</depend></package>"))
+    source = tmp_path / "node.cpp"
+    source.write_text(code)
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    assert [d.location.line for d in result.diagnostics
+            if d.code == "CPP_CALL_MISSED"] == []
+
+
 def test_a_dependent_call_on_a_node_of_a_template_parameter_is_kept(tmp_path) -> None:
     assert [k for k, _ in _calls(tmp_path, "ament_cmake", "rclcpp", NODE_TEMPLATE)] == [
         "write"]

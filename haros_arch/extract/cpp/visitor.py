@@ -719,7 +719,10 @@ class CallFinder:
                        for d in looked_up(call)):
                 return
             spec = dataclasses.replace(spec, standin_only=False)
-        elif own_functions_only(call):  # one of the code's own functions of that name
+        elif own_functions_only(call):  # one of the code's own functions of that name,
+            # read: no call hidden there (``recall``)
+            if call.location.file is not None:
+                self.resolved.add((call.location.file.name, call.location.line))
             return
         if spec.name_candidates or (self.ros2 and spec.on_handle):
             # ROS 2: made on the node itself, in its namespace
