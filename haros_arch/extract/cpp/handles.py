@@ -21,6 +21,7 @@ from .call_sites import (
     uses_parameter,
     value_text,
 )
+from .cursors import MAX_OVERLOADS, from_standin, overloads
 from .expressions import qualified_name
 from .members import MemberWrites
 from .values import (
@@ -449,3 +450,27 @@ def parameters(function: Cursor) -> list:
     if function.kind == CursorKind.LAMBDA_EXPR:
         return [c.type for c in function.get_children() if c.kind == CursorKind.PARM_DECL]
     return list(function.type.argument_types())
+
+
+def looked_up(call: Cursor) -> list[Cursor]:
+    """The declarations the name of a call the parse could not resolve was looked up to
+    (its head's ``OVERLOADED_DECL_REF``: a call in a template with dependent arguments,
+    ``set_parameters(std::forward<Rest>(rest)...)``); none when the lookup waits for a
+    template argument (``node->declare_parameter(...)`` with ``NodeT node``)."""
+    heads = list(call.get_children())[:1]
+    return [d for head in heads for child in [head, *head.get_children()]
+            if child.kind == CursorKind.OVERLOADED_DECL_REF
+            for d in overloads(child) if d is not None]
+
+
+def own_functions_only(call: Cursor) -> bool:
+    """Whether the name of a call the parse could not resolve was looked up to the code's
+    own functions only (``looked_up``, every one of them read), none of them an API
+    function (a row's) or a stand-in's: the call is one of them, whose code is read
+    where it is defined, not the API function of the same name (a JWT library's
+    ``jwt_object::set_parameters(...)`` in rmf_visualization_schedule is no rclcpp
+    parameter write)."""
+    found = looked_up(call)
+    return 0 < len(found) < MAX_OVERLOADS and not any(
+        from_standin(d) or api.ALL.get((qualified_name(d.semantic_parent), d.spelling))
+        is not None for d in found)

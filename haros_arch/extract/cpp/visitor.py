@@ -30,7 +30,7 @@ from .call_sites import CallSites, base_keys
 from .call_types import CallTypes, factory_made, row_class
 from .call_types import callee as callee_of_call
 from .conditions import ConditionReader
-from .cursors import children_in, from_standin, overloads, release, root
+from .cursors import children_in, from_standin, release, root
 from .expressions import binary_operator, constructed_name, first_operand
 from .handles import (
     Namespaces,
@@ -40,7 +40,9 @@ from .handles import (
     holds_handle,
     is_handle,
     join_name,
+    looked_up,
     normalise,
+    own_functions_only,
     qualified_name,
     record_class,
 )
@@ -758,15 +760,16 @@ class CallFinder:
         if spec.standin_only:  # a dependent call of a stand-in's function (of nav2's
             # declare_parameter_if_not_declared in a template): one of the overloads its
             # name may be is the stand-in's row
-            heads = list(call.get_children())[:1]
-            found = [d for head in heads for child in [head, *head.get_children()]
-                     if child.kind == CursorKind.OVERLOADED_DECL_REF
-                     for d in overloads(child) if d is not None]
             if not any(from_standin(d) and api.ALL.get(
                     (qualified_name(d.semantic_parent), d.spelling)) is not None
-                       for d in found):
+                       for d in looked_up(call)):
                 return
             spec = dataclasses.replace(spec, standin_only=False)
+        elif own_functions_only(call):  # one of the code's own functions of that name,
+            # read: no call hidden there (``recall``)
+            if call.location.file is not None:
+                self.resolved.add((call.location.file.name, call.location.line))
+            return
         if spec.name_candidates or (self.ros2 and spec.on_handle):
             # ROS 2: made on the node itself, in its namespace
             spec = dataclasses.replace(spec, name_candidates=(), on_handle=False)

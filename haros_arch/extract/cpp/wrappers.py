@@ -42,7 +42,15 @@ from .call_sites import closest, default_argument, delegation, is_constructor
 from .call_types import template_argument
 from .cursors import Node, from_standin, overloads
 from .expressions import constructed_name
-from .handles import callback, callback_name, is_handle, join_name, pointee, qualified_name
+from .handles import (
+    callback,
+    callback_name,
+    is_handle,
+    join_name,
+    own_functions_only,
+    pointee,
+    qualified_name,
+)
 from .qos import qos as qos_of
 from .tested import TestedCalls
 from .tested import key as tested_key
@@ -67,17 +75,20 @@ from .writes import between
 if TYPE_CHECKING:
     from .visitor import CallFinder
 
-__all__ = ["DEPENDENT", "MAX_DEPTH", "Wrapper", "Wrappers", "is_constructor",
-           "of_class_template"]
+__all__ = ["DEPENDENT", "DEPENDENT_ROS1", "DEPENDENT_ROS2", "MAX_DEPTH", "Wrapper", "Wrappers",
+           "is_constructor", "of_class_template"]
 
 MAX_DEPTH = 4  # a wrapper of a wrapper ... of an API call
 Key = tuple[str, int]
 Shape = TypeVar("Shape")  # what a string's shape holds between its known parts
 # what a member call on an object whose type is a template parameter may be: the node
-# handle's and rclcpp node's methods, by name
-DEPENDENT: dict[str, api.RosFunction] = {
-    name: row for (owner, name), row in api.ALL.items()
-    if owner in (api.NODE_HANDLE, *api.RCLCPP_NODES)}
+# handle's methods in ROS 1 code, rclcpp node's in ROS 2 code, by name (a ROS 2 unit's
+# ``source.subscribe(o)``, RxCpp's operators in Open-RMF, is no ``NodeHandle::subscribe``)
+DEPENDENT_ROS1: dict[str, api.RosFunction] = {
+    name: row for (owner, name), row in api.ALL.items() if owner == api.NODE_HANDLE}
+DEPENDENT_ROS2: dict[str, api.RosFunction] = {
+    name: row for (owner, name), row in api.ALL.items() if owner in api.RCLCPP_NODES}
+DEPENDENT: dict[str, api.RosFunction] = {**DEPENDENT_ROS1, **DEPENDENT_ROS2}
 _ARGUMENTS = ("queue_arg", "latch_arg", "callback_arg", "qos_arg", "default_arg")
 _API_NAMES = frozenset(
     [*DEPENDENT, *(name for _, name in api.ALL), *(name for _, name in api.FACTORIES)])
@@ -680,8 +691,8 @@ class Wrappers:
             return
         if head.kind == CursorKind.MEMBER_REF_EXPR:
             name = _member_name(head)
-            spec = DEPENDENT.get(name)
-            if spec is not None:
+            spec = (DEPENDENT_ROS2 if self.finder.ros2 else DEPENDENT_ROS1).get(name)
+            if spec is not None and not own_functions_only(call):
                 yield Wrapper(spec), args, None, None
             # a method of the unit called on a dependent object (``this`` in a generic
             # lambda: its overloads are named): the wrappers among them
