@@ -151,7 +151,7 @@ TALKER = [
     ("write", "left", None, None, None),
     ("write", "right", None, None, None),
     ("declare", "topic", "str", None, None),
-    ("read", "topic", None, None, None),
+    ("read", "topic", "str", None, None),  # get_parameter("topic").as_string()
     ("publish", "?", "std_msgs/msg/String", 1, {**KEEP_LAST_10, "depth": 1}),
     ("publish", "arm/joint", "std_msgs/msg/String", 3, {**KEEP_LAST_10, "depth": 3}),
 ]

@@ -146,6 +146,10 @@ MAX_SITE_DEPTH = 3  # constructors of constructors whose sites' conditions are f
 _PREPROCESSED = frozenset({CursorKind.MACRO_INSTANTIATION, CursorKind.INCLUSION_DIRECTIVE})
 _PARAM_KINDS = ("read", "declare")
 CAMERA_INFO = "sensor_msgs/CameraInfo"  # an image_transport camera's sibling topic
+# rclcpp::Parameter's typed accessors and the parameter type each asks for
+_TAKEN_AS = {"as_int": "int", "as_double": "double", "as_string": "str", "as_bool": "bool",
+             "as_integer_array": "int[]", "as_double_array": "double[]",
+             "as_string_array": "str[]", "as_bool_array": "bool[]"}
 _VALUE_METHODS = frozenset({"c_str", "str", "as_string", "as_int", "as_double", "as_bool",
                             "get_value", "value_to_string"})
 
@@ -182,6 +186,9 @@ class CallFinder:
         self._fixed: set[tuple[str, str, str | None]] = set()  # fixed-name calls already found
         # ROS 2 parameter -> its declared default, and the parameter it holds (``Source``)
         self._declared: dict[str, tuple[str, str | None]] = {}
+        # the place of a read whose value a typed accessor takes (rclcpp's
+        # ``get_parameter("x").as_int()``): the type it asks for
+        self._taken_as: dict[tuple[str, int], str] = {}
         # the keys each declare_parameters(prefix, map) of the unit declared under its
         # prefix (None: a map whose keys are not known), for get_parameters(prefix, out)
         self._prefix_keys: dict[str, list[str] | None] = {}
@@ -513,6 +520,8 @@ class CallFinder:
             node, conditions = stack.pop()
             if lost and node.kind == CursorKind.UNEXPOSED_EXPR and place_of(node) in lost:
                 self._lost_initialiser(node, *lost[place_of(node)], conditions, scope)
+            if node.kind == CursorKind.CALL_EXPR and node.spelling in _TAKEN_AS:
+                self._typed_accessor(node)
             if node.kind == CursorKind.CALL_EXPR and (
                 node.spelling in _API_NAMES or node.spelling in self.wrappers.names
             ):
@@ -1363,6 +1372,8 @@ class CallFinder:
         function = callback(args, None if spec.callback_arg is None
                             else spec.callback_arg + shift)
         ctype = self.types.of_call(spec, call, args, function, cls, scope)
+        if ctype is None and spec.kind == "read":
+            ctype = self._taken_as.get(place_of(call))
         qos = None
         queue = scope.integer(arg(spec.queue_arg)) if arg(spec.queue_arg) is not None else None
         if self.ros2 and arg(spec.qos_arg) is not None:
@@ -1694,6 +1705,18 @@ class CallFinder:
             if parameter is not None:
                 found[decl.spelling] = parameter
         return tuple(sorted(found.items()))
+
+    def _typed_accessor(self, call: Cursor) -> None:
+        """``get_parameter("x").as_int()``: the read (visited after this call, its
+        object) asks for an int; rclcpp throws when the parameter holds another type."""
+        children = list(call.get_children())
+        if not children or children[0].kind != CursorKind.MEMBER_REF_EXPR:
+            return
+        objects = [c for c in children[0].get_children() if c.kind.is_expression()]
+        inner = strip(objects[0]) if objects else None
+        if inner is not None and inner.kind == CursorKind.CALL_EXPR and (
+                inner.spelling == "get_parameter"):
+            self._taken_as[place_of(inner)] = _TAKEN_AS[call.spelling]
 
     def _held_call(self, call: Cursor, scope: Scope) -> str | None:
         """The parameter whose value ``call`` returns, named as its read is (with the
