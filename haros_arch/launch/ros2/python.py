@@ -36,7 +36,7 @@ from ...model.values import Unknown
 from ...share import share_source
 from ...workspace import Workspace
 from . import entities as e
-from .python_expressions import Expressions, _Bound, math_constant, os_value
+from .python_expressions import UNBOUND, Expressions, _Bound, math_constant, os_value
 from .python_values import (
     LIMITS,
     MAX_CALL_DEPTH,
@@ -215,12 +215,8 @@ class Interpreter(Expressions):
     def _quiet(self, node: ast.expr, env: dict[str, Any]) -> Any:
         """A name or dotted name's value, saying nothing when it is not defined."""
         if isinstance(node, ast.Name):
-            scope: dict[str, Any] | None = env
-            while scope is not None:
-                if node.id in scope:
-                    return scope[node.id]
-                scope = scope.get("__closure__")
-            return self.globals.get(node.id)
+            value = self.bound(node.id, env)
+            return None if value is UNBOUND else value
         if isinstance(node, ast.Attribute):
             owner = self._quiet(node.value, env)
             if isinstance(owner, Ref):

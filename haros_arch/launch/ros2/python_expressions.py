@@ -45,6 +45,9 @@ from .python_values import (
     to_text,
 )
 
+# what ``Expressions.bound`` gives for a name no scope defines
+UNBOUND = object()
+
 if TYPE_CHECKING:
     from .python import Interpreter
 
@@ -101,14 +104,20 @@ class Expressions(Walker):
         raise NotImplementedError
 
     # -- expressions ---------------------------------------------------------------------
-    def lookup(self, name: str, env: dict[str, Any], node: ast.AST) -> Any:
+    def bound(self, name: str, env: dict[str, Any]) -> Any:
+        """``name``'s value in ``env``'s scopes, then the module's globals; ``UNBOUND``
+        when none has it (nothing is said)."""
         scope: dict[str, Any] | None = env
         while scope is not None:
             if name in scope:
                 return scope[name]
             scope = scope.get("__closure__")
-        if name in self.globals:
-            return self.globals[name]
+        return self.globals.get(name, UNBOUND)
+
+    def lookup(self, name: str, env: dict[str, Any], node: ast.AST) -> Any:
+        value = self.bound(name, env)
+        if value is not UNBOUND:
+            return value
         if name in self.builtins:
             return Ref(name)
         if name in ("True", "False", "None"):
