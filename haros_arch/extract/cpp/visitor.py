@@ -69,6 +69,7 @@ from .values import (
     SEPARATOR,
     NodeName,
     Scope,
+    _method_object,
     argument_of,
     initializer,
     literal,
@@ -1709,11 +1710,8 @@ class CallFinder:
     def _typed_accessor(self, call: Cursor) -> None:
         """``get_parameter("x").as_int()``: the read (visited after this call, its
         object) asks for an int; rclcpp throws when the parameter holds another type."""
-        children = list(call.get_children())
-        if not children or children[0].kind != CursorKind.MEMBER_REF_EXPR:
-            return
-        objects = [c for c in children[0].get_children() if c.kind.is_expression()]
-        inner = strip(objects[0]) if objects else None
+        inner = _method_object(call)
+        inner = strip(inner) if inner is not None else None
         if inner is not None and inner.kind == CursorKind.CALL_EXPR and (
                 inner.spelling == "get_parameter"):
             self._taken_as[place_of(inner)] = _TAKEN_AS[call.spelling]
