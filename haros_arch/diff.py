@@ -27,7 +27,6 @@ import hashlib
 import io
 import json
 import os
-import re
 import shutil
 import stat
 import subprocess
@@ -42,14 +41,11 @@ from .model.finding import Finding
 from .model.load import from_data, location
 from .model.location import NOWHERE, Location
 from .model.model import Model
-from .model.runtime import Configuration, Link
+from .model.runtime import REPEAT, Configuration, Link
 from .model.serialise import to_data
 
 Elements = dict[tuple[str, str], tuple[dict[str, Any], str]]
 KINDS = ("node", "topic", "service", "action", "link", "parameter")
-# "topic:/?#2": the second unresolved "/?" of a configuration; the number depends on the
-# order the graph met them in, which an unrelated change may shift
-REPEAT = re.compile(r"#\d+$")
 FAIL_ON = {"new-error": "error", "new-warning": "warning", "never": None}
 
 
@@ -211,6 +207,8 @@ def _finding_keys(findings: Iterable[Finding]
     keyed: dict[tuple[str | None, str, tuple[str, ...]], Finding] = {}
     for finding in findings:
         for config in finding.configurations or (finding.configuration,):
+            # the number of "topic:/?#2" depends on the order the graph met the
+            # unresolved names in, which an unrelated change may shift
             entities = tuple(sorted(REPEAT.sub("", e) for e in finding.entities))
             keyed.setdefault((config, finding.rule, entities), finding)
     return keyed

@@ -25,6 +25,9 @@ from .values import UNKNOWN_MARK
 INDEX: dict[str, Any] = {"json": False}
 REF: dict[str, Any] = {"ref": True}
 LAUNCH_WRITER = "<launch>"
+# the suffix of an entity's id that tells apart entities of one name (the graph numbers
+# them in the order it meets them): "node:/requester#2", "topic:/?#2"
+REPEAT = re.compile(r"#\d+$")
 
 
 def _names(links: list[Link]) -> list[str]:

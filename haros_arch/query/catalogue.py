@@ -26,7 +26,7 @@ from ..model.diagnostic import SEVERITY_RANK, Diagnostic, Severity
 from ..model.finding import Finding
 from ..model.location import NOWHERE, Location
 from ..model.model import Model
-from ..model.runtime import Configuration, Link
+from ..model.runtime import REPEAT, Configuration, Link
 from . import compile, config_scope, model_scope
 from .errors import QueryError, QueryLimitError
 from .interpreter import DEFAULT_STEPS, Evaluator
@@ -426,7 +426,7 @@ def merge(findings: Iterable[Finding]) -> list[Finding]:
     for finding in findings:
         said = (finding.rule, finding.severity, finding.title, finding.message)
         key = (*said, finding.entities)
-        loose = (*said, tuple(_INSTANCE.sub("", e) for e in finding.entities),
+        loose = (*said, tuple(REPEAT.sub("", e) for e in finding.entities),
                  finding.location)
         if key not in merged and loose in alias:
             key = alias[loose]
@@ -444,9 +444,6 @@ def merge(findings: Iterable[Finding]) -> list[Finding]:
                                                             *finding.entities))))
     return list(merged.values())
 
-
-# the suffix of an entity's id that tells apart instances of one name (``node:/a#2``)
-_INSTANCE = re.compile(r"#\d+$")
 
 
 def explain(rule: Rule) -> str:
