@@ -199,12 +199,20 @@ class RecordedEnvironment(Mapping[str, str]):
         return len(self._environment)
 
 
+# the origin of a package's folder that is neither in the workspace nor installed here
+_NOT_FOUND = "find "
+
+
+def package_not_found(package: str) -> Value:
+    """The folder of ``package`` when it is neither in the workspace nor installed here
+    (``$(find pkg)``, ``FindPackageShare``, ``get_package_share_directory``); the
+    substitution says so where it is performed (``LAUNCH_UNKNOWN_VALUE``)."""
+    return Value.unknown(_NOT_FOUND + package)
+
+
 def found_nowhere(value: Value) -> bool:
-    """Whether every unknown part of ``value`` is a package's folder that is neither in the
-    workspace nor installed here (``$(find pkg)``, ``FindPackageShare``,
-    ``get_package_share_directory``: origin ``find <pkg>``), which the substitution said
-    where it was performed (``LAUNCH_UNKNOWN_VALUE``): an include of such a path is not
-    said again."""
+    """Whether every unknown part of ``value`` is such a folder (``package_not_found``):
+    an include of such a path is not said again."""
     unknown = [p for p in value.parts if isinstance(p, Unknown)]
-    return bool(unknown) and all(p.origin.startswith("find ") for p in unknown)
+    return bool(unknown) and all(p.origin.startswith(_NOT_FOUND) for p in unknown)
 

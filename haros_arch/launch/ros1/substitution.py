@@ -18,6 +18,7 @@ from typing import Any
 
 from ...model.values import Unknown, Value
 from .. import expression
+from ..model import package_not_found
 from .params import convert_value
 
 VALID = ("find", "env", "optenv", "dirname", "anon", "arg")
@@ -154,7 +155,7 @@ def _one(command: str, args: list[str], raw: str, ctx: Context) -> Value:
         path = ctx.find(args[0])
         if path is None:
             ctx.unknown.append(f"package {args[0]} is not found")
-            return Value.unknown(f"find {args[0]}")
+            return package_not_found(args[0])
         return Value.of(path)
     if command == "anon":
         _arity(raw, args, 1)

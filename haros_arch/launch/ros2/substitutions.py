@@ -19,6 +19,7 @@ from ...model.location import Location
 from ...model.values import Unknown, Value
 from ...share import install_prefix, lib_executables, share_source
 from .. import expression
+from ..model import package_not_found
 from . import entities as e
 
 if TYPE_CHECKING:
@@ -275,7 +276,7 @@ class Evaluator:
         if found is None:  # installed on the robot, perhaps: unknown here, as in ROS 1
             self.report("LAUNCH_UNKNOWN_VALUE", detail=f"package {name} is not in the "
                         "workspace nor installed here")
-            return Value.unknown(f"find {name}")
+            return package_not_found(name)
         if s.share:
             return Value.of(found)
         prefix = install_prefix(self.runner.workspace, name)
