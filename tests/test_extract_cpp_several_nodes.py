@@ -101,17 +101,19 @@ def test_node_names_survive_the_cache(tmp_path: object) -> None:
     under = Condition("enabled_", location=Location("rover_base", "src/main.cpp", 9))
     data = to_data([], None, [], [], [("rover::Odometry", "odometry_node")],
                    [("rover::BaseDriver", "rover::devices::Battery")], ["Battery", "vendor"],
-                   [("rover::Odometry", (under,))])
+                   [("rover::Odometry", (under,))], [("main()", "rover::spin_all()")])
     assert from_data(json.loads(json.dumps(data)))[4:] == (
         [("rover::Odometry", "odometry_node")],
         [("rover::BaseDriver", "rover::devices::Battery")], ["Battery", "vendor"],
-        [("rover::Odometry", (under,))])
+        [("rover::Odometry", (under,))], [("main()", "rover::spin_all()")])
     with pytest.raises(TypeError):
         from_data({**data, "unseen": [None]})
     with pytest.raises(TypeError):
         from_data({**data, "node_names": [["rover::Odometry", 3]]})
     with pytest.raises(TypeError):
         from_data({**data, "constructions": [[None, "rover::devices::Battery"]]})
+    with pytest.raises(TypeError):
+        from_data({**data, "uses": [["main()", 3]]})
 
 
 @pytest.fixture(scope="module")
@@ -348,3 +350,81 @@ def test_the_calls_of_a_node_class_main_never_builds_are_not_the_process_s(
     loading = extract_cpp([str(root / "pkg/src/lib.cpp"), str(root / "pkg/src/loader.cpp")],
                           workspace, cache_dir=None)
     assert ("subscribe", "plan") in {(kind, name) for kind, name, _ in rows(loading)}
+
+
+FLEET = """
+#include <memory>
+#include "rclcpp/rclcpp.hpp"
+#include "std_msgs/msg/string.hpp"
+
+namespace fleet {
+class Fleet : public rclcpp::Node {
+public:
+  Fleet() : Node("fleet") { pub_ = create_publisher<std_msgs::msg::String>("fleet_states", 10); }
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+};
+class Door : public rclcpp::Node {
+public:
+  Door() : Node("door") { pub_ = create_publisher<std_msgs::msg::String>("door_states", 10); }
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+};
+class Lift {
+public:
+  static std::shared_ptr<rclcpp::Node> make() {
+    auto node = rclcpp::Node::make_shared("lift");
+    node->create_publisher<std_msgs::msg::String>("lift_states", 10);
+    return node;
+  }
+};
+rclcpp::Node::SharedPtr make_fleet();
+rclcpp::Node::SharedPtr make_door();
+extern rclcpp::Node::SharedPtr g_node;
+void announce();
+}  // namespace fleet
+"""
+
+
+def test_a_linked_library_runs_only_what_main_reaches(write_tree) -> None:
+    """open-rmf's executables link rmf_fleet_adapter's library, whose free functions make
+    nodes of their own: every executable had every node of the library that a free
+    function makes, and their publishers (78 of 173 multiple-publishers warnings on
+    rmf_demos were such). A free function runs when main() calls it or hands it on, a
+    class when main() constructs it or calls its methods, transitively."""
+    root = write_tree({
+        "pkg/package.xml": '<?xml version="1.0"?>\n<package format="2"><name>pkg</name>'
+                           "<version>0.1.0</version><description>d</description>"
+                           '<maintainer email="a@b.c">m</maintainer><license>MIT</license>'
+                           "<depend>rclcpp</depend><export><build_type>ament_cmake"
+                           "</build_type></export></package>\n",
+        "pkg/include/pkg/fleet.hpp": FLEET,
+        "pkg/src/fleet.cpp": '#include "pkg/fleet.hpp"\nnamespace fleet {\n'
+                             "rclcpp::Node::SharedPtr make_fleet() "
+                             "{ return std::make_shared<Fleet>(); }\n"
+                             "rclcpp::Node::SharedPtr make_door() "
+                             "{ return std::make_shared<Door>(); }\n"
+                             "rclcpp::Node::SharedPtr g_node;\nvoid announce() "
+                             "{ g_node->create_publisher<std_msgs::msg::String>"
+                             "(\"announce\", 10); }\n}\n",
+        "pkg/src/fleet_main.cpp": '#include "pkg/fleet.hpp"\nint main(int argc, char ** argv)'
+                                  " {\n  rclcpp::init(argc, argv);\n"
+                                  "  rclcpp::spin(fleet::make_fleet());\n}\n",
+        "pkg/src/door_main.cpp": '#include "pkg/fleet.hpp"\nint main(int argc, char ** argv)'
+                                 " {\n  rclcpp::init(argc, argv);\n"
+                                 "  auto factory = &fleet::make_door;\n"
+                                 "  fleet::announce();\n"
+                                 "  rclcpp::spin(factory());\n}\n",
+        "pkg/src/lift_main.cpp": '#include "pkg/fleet.hpp"\nint main(int argc, char ** argv)'
+                                 " {\n  rclcpp::init(argc, argv);\n"
+                                 "  rclcpp::spin(fleet::Lift::make());\n}\n",
+    })
+    workspace = scan([str(root)])
+    library = str(root / "pkg/src/fleet.cpp")
+    made = {}
+    for name in ("fleet", "door", "lift"):
+        found = extract_cpp([str(root / f"pkg/src/{name}_main.cpp"), library], workspace,
+                            cache_dir=None)
+        made[name] = (found.rosname, found.rosnames,
+                      sorted(topic for kind, topic, _ in rows(found) if kind == "publish"))
+    assert made == {"fleet": ("fleet", [], ["fleet_states"]),
+                    "door": ("door", [], ["announce", "door_states"]),
+                    "lift": ("lift", [], ["lift_states"])}

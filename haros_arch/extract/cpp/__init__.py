@@ -127,6 +127,7 @@ class CppResult:
     rosnames: list[str] = field(default_factory=list)
     node_names: list[tuple[str, str]] = field(default_factory=list)
     constructions: list[tuple[str, str]] = field(default_factory=list)  # visitor's
+    uses: list[tuple[str, str]] = field(default_factory=list)  # visitor's
     # in a translation unit's result: each construction of a class of the workspace, as
     # (class, the source conditions it is made under), one per place
     made_under: list[tuple[str, tuple[Condition, ...]]] = field(default_factory=list)
@@ -466,9 +467,10 @@ def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
 def _unbuilt(owners: dict[str, list[str]], reached: set[str] | None, result: CppResult,
              unseen: Collection[str]) -> set[str]:
     """The node classes (a class whose constructor names a node) of the executable's
-    files that its ``main()`` never builds (``_reached``): they make no node and no call
-    in this process (plansys2's compute_bt links ExecutorNode and never builds one; its
-    ``transition_event`` publisher was given to the process's node). None when the
+    files that its ``main()`` never builds (``_reached``), and the free functions it never
+    runs: they make no node and no call in this process (plansys2's compute_bt links
+    ExecutorNode and never builds one; its ``transition_event`` publisher was given to
+    the process's node). None when the
     executable loads plugins or nodelets by name, or components (a factory may build
     them), nor a class
     whose name the code around the parse's errors holds (they may hide its
@@ -477,29 +479,41 @@ def _unbuilt(owners: dict[str, list[str]], reached: set[str] | None, result: Cpp
             d.code == "CPP_PLUGINS_LOADED" for d in result.diagnostics) or any(
             call.name.endswith("_container/load_node") for call in result.calls):
         return set()  # a component container (ros2_canopen's) loads node classes too
-    return {owner for owner, names in owners.items()
-            if names and owner not in reached and not owner.endswith("()")
-            and "@" not in owner  # a class, not a function nor a handle (its USR)
-            and owner.rsplit("::", 1)[-1] not in unseen}
+    classes = {owner for owner, names in owners.items()
+               if names and owner not in reached and not owner.endswith("()")
+               # a class, or a function's local node handle (its USR: ``_reached`` has
+               # the function that holds it)
+               and ("@" in owner or owner.rsplit("::", 1)[-1] not in unseen)}
+    # and the free functions main() never reaches (a linked library's)
+    return classes | {call.node_name for call in result.calls if call.node_name is not None
+                      and call.node_name.endswith("()") and call.node_name not in reached}
 
 
 def _reached(units: list[tuple[str, CppResult]]) -> set[str] | None:
     """The owners whose code the executable runs, when its files hold a ``main()``: the
-    free functions, and the classes they construct, transitively (a class's bases with
-    it). A class of a library the executable links that nothing here constructs makes
-    no node in this process (plansys2's compute_bt links ExecutorNode, which names the
-    node "executor", and never builds one). None without a ``main()`` (a component:
-    its container constructs it)."""
+    functions ``main()`` calls or hands on and the classes it constructs or calls the
+    methods of, transitively (a class's bases with it, its methods' calls and
+    constructions with it). A library the executable links is not run as a whole: its
+    free functions and the node classes they make run only when reached (rmf_fleet_adapter's
+    executables link a library whose ``make_fleet()`` makes nodes no ``main()`` here
+    reaches). Where a parse error may hide a call (``CppResult.unseen``), every free
+    function named in the code around it is reached too; where the code is not known at
+    all (``*``), every free function (a class named there is ``_unbuilt``'s to keep).
+    None without a ``main()`` (a component: its container constructs it)."""
     edges: dict[str, list[str]] = {}
-    starts: set[str] = set()
+    owners: set[str] = set()
+    unseen: set[str] = set()
     for _, unit in units:
-        for maker, made in unit.constructions:
+        for maker, made in (*unit.constructions, *unit.uses):
             edges.setdefault(maker, []).append(made)
-            if maker.endswith("()"):
-                starts.add(maker)
-        starts.update(owner for owner, _ in unit.node_names if owner.endswith("()"))
-    if not any(owner == "main()" or owner.endswith("::main()") for owner in starts):
+            owners.update((maker, made))
+        owners.update(owner for owner, _ in unit.node_names)
+        unseen.update(unit.unseen)
+    mains = {owner for owner in owners if owner == "main()" or owner.endswith("::main()")}
+    if not mains:
         return None
+    starts = mains | {owner for owner in owners if owner.endswith("()") and (
+        "*" in unseen or _simple(owner) in unseen)}
     reached = set(starts)
     stack = list(starts)
     while stack:
@@ -508,6 +522,12 @@ def _reached(units: list[tuple[str, CppResult]]) -> set[str] | None:
                 reached.add(made)
                 stack.append(made)
     return reached
+
+
+def _simple(function: str) -> str:
+    """A free function's own name, as code near a parse error writes it: ``f`` of
+    ``ns::f()``."""
+    return function.removesuffix("()").rsplit("::", 1)[-1]
 
 
 def _made_under(units: list[tuple[str, CppResult]], owners: dict[str, list[str]],
@@ -575,12 +595,13 @@ def _units(texts: dict[str, str], ros2: dict[str, bool], setup: IncludeSetup,
                 digests[path] = kept[1]
             elif kept is not None and kept[0] is not None:
                 try:
-                    calls, rosname, found, facts, named, made, unseen, under = (
+                    calls, rosname, found, facts, named, made, unseen, under, uses = (
                         cache.from_data(kept[0]))
                 except (ValueError, TypeError, KeyError):
                     continue
                 done[path] = CppResult(calls, rosname, found, facts, node_names=named,
-                                       constructions=made, unseen=unseen, made_under=under)
+                                       constructions=made, unseen=unseen, made_under=under,
+                                       uses=uses)
                 digests[path] = kept[1]
     todo = [path for path in texts if path not in done and path not in digests]
     tasks = [(path, texts[path], ros2[path]) for path in todo]
@@ -658,7 +679,8 @@ def _unit_and_data(path: str, text: str, ros2: bool, setup: IncludeSetup
     with held_back(YOUNG_THRESHOLD):
         unit, headers = _translation_unit(path, text, ros2, setup)
     data = cache.to_data(unit.calls, unit.rosname, unit.diagnostics, unit.facts,
-                         unit.node_names, unit.constructions, unit.unseen, unit.made_under)
+                         unit.node_names, unit.constructions, unit.unseen, unit.made_under,
+                         unit.uses)
     return unit, headers, data, cache.digest(data)
 
 
@@ -797,6 +819,7 @@ def _translation_unit(path: str, text: str, ros2: bool,
     result.facts = finder.facts
     result.node_names = finder.node_names
     result.constructions = finder.constructions
+    result.uses = finder.uses
     result.made_under = finder.made_under
     # the node handed to code the parse does not read (another package's class, a
     # function it does not know) may construct anything there

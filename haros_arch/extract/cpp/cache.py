@@ -180,8 +180,8 @@ def to_data(calls: list[PrimitiveCall], rosname: str | None,
             node_names: list[tuple[str, str]] | None = None,
             constructions: list[tuple[str, str]] | None = None,
             unseen: list[str] | None = None,
-            made_under: list[tuple[str, tuple[Condition, ...]]] | None = None
-            ) -> dict[str, Any]:
+            made_under: list[tuple[str, tuple[Condition, ...]]] | None = None,
+            uses: list[tuple[str, str]] | None = None) -> dict[str, Any]:
     return {"calls": [dataclasses.asdict(c) for c in calls], "rosname": rosname,
             "diagnostics": [dataclasses.asdict(d) for d in diagnostics],
             "facts": [list(f) for f in facts or ()],
@@ -189,13 +189,14 @@ def to_data(calls: list[PrimitiveCall], rosname: str | None,
             "constructions": [list(n) for n in constructions or ()],
             "unseen": list(unseen or ()),
             "made_under": [[made, [dataclasses.asdict(c) for c in under]]
-                           for made, under in made_under or ()]}
+                           for made, under in made_under or ()],
+            "uses": [list(n) for n in uses or ()]}
 
 
 def from_data(data: dict[str, Any]) -> tuple[
         list[PrimitiveCall], str | None, list[Diagnostic], list[tuple[str, int, str, str]],
         list[tuple[str, str]], list[tuple[str, str]], list[str],
-        list[tuple[str, tuple[Condition, ...]]]]:
+        list[tuple[str, tuple[Condition, ...]]], list[tuple[str, str]]]:
     """Raises ValueError / TypeError / KeyError for data that is not ours."""
     calls = []
     for item in data["calls"]:
@@ -225,7 +226,7 @@ def from_data(data: dict[str, Any]) -> tuple[
     if not (isinstance(unseen, list) and all(isinstance(word, str) for word in unseen)):
         raise TypeError("unseen")
     return (calls, rosname, diagnostics, facts, _pairs(data, "node_names"),
-            _pairs(data, "constructions"), unseen, made_under)
+            _pairs(data, "constructions"), unseen, made_under, _pairs(data, "uses"))
 
 
 def conditions_text(conditions: Iterable[Condition]) -> str:

@@ -30,7 +30,7 @@ from .call_sites import CallSites, base_keys
 from .call_types import CallTypes, factory_made, row_class
 from .call_types import callee as callee_of_call
 from .conditions import ConditionReader
-from .cursors import children_in, from_standin, release, root
+from .cursors import children_in, from_standin, overloads, release, root
 from .expressions import binary_operator, constructed_name, first_operand
 from .handles import (
     Namespaces,
@@ -232,6 +232,10 @@ class CallFinder:
         # its constructor's node when it names none itself (a device object given the
         # node's handle)
         self.constructions: list[tuple[str, str]] = []
+        # (owner, owner of a function of the workspace its code calls or refers to: a
+        # free function ``ns::f()``, a method's class): what ``main()`` runs, with the
+        # constructions (``extract.cpp._reached``)
+        self.uses: list[tuple[str, str]] = []
         # each construction of a class of the workspace and its source conditions
         self.made_under: list[tuple[str, tuple[Condition, ...]]] = []
         self.diagnostics: list[Diagnostic] = []
@@ -314,6 +318,7 @@ class CallFinder:
                                              self.opaque_words))
         self.facts.extend(links.member_facts(self.functions, self.tu.spelling,
                                              self._member_namespace))
+        self.uses.extend(self._uses())
         self.wrappers.preorder.clear()
         self.wrappers.references.clear()
         for call in self.calls:  # get_parameter("p") of a declare_parameter("p", default)
@@ -321,6 +326,33 @@ class CallFinder:
                 call.name_param in self._declared
             ):
                 call.name_default, call.default_param = self._declared[call.name_param]
+
+    def _uses(self) -> list[tuple[str, str]]:
+        """(owner, owner of the workspace function it calls or names) for each function
+        of the unit: a call ``f(x)``, ``Cls::make()``, ``obj.method()``, or a function
+        handed on (``&f``, a callback), read from the references ``Wrappers.build`` keeps
+        of each function's subtree (its lambdas' too); an overloaded name as every
+        declaration it may be."""
+        found: dict[tuple[str, str], None] = dict.fromkeys(self.uses)
+        for function in self.functions:
+            references = self.wrappers.references.get(id(function))
+            if not references:
+                continue
+            owner = owner_of(function)
+            for reference in references:
+                targets = overloads(reference) if (
+                    reference.kind == CursorKind.OVERLOADED_DECL_REF) else [
+                    reference.referenced]
+                for target in targets:
+                    if target is None or target.kind not in FUNCTIONS:
+                        continue
+                    where = target.location.file
+                    if where is None or not self.owned(where.name):
+                        continue
+                    used = owner_of(target)
+                    if used != owner:
+                        found[(owner, used)] = None
+        return [use for use in found if use not in self.uses]
 
     def _member_namespace(self, field: Cursor) -> str | None:
         """The namespace of a handle member, as the unit's constructors of its class give
@@ -1361,6 +1393,8 @@ class CallFinder:
             made = handle_node(callee)
             if made is not None:
                 owner = made[0]
+                if self._owner is not None and (self._owner, owner) not in self.uses:
+                    self.uses.append((self._owner, owner))  # the function holds it
                 self._node_name(api.RCLCPP_NODE_NAME[made[2]], written_arguments(made[1]),
                                 at_scope or scope, owner)
         if spec.fixed_name is None:
