@@ -101,11 +101,13 @@ def test_node_names_survive_the_cache(tmp_path: object) -> None:
     under = Condition("enabled_", location=Location("rover_base", "src/main.cpp", 9))
     data = to_data([], None, [], [], [("rover::Odometry", "odometry_node")],
                    [("rover::BaseDriver", "rover::devices::Battery")], ["Battery", "vendor"],
-                   [("rover::Odometry", (under,))], [("main()", "rover::spin_all()")])
+                   [("rover::Odometry", (under,))], [("main()", "rover::spin_all()")],
+                   ["main()", "rover::spin_all()"])
     assert from_data(json.loads(json.dumps(data)))[4:] == (
         [("rover::Odometry", "odometry_node")],
         [("rover::BaseDriver", "rover::devices::Battery")], ["Battery", "vendor"],
-        [("rover::Odometry", (under,))], [("main()", "rover::spin_all()")])
+        [("rover::Odometry", (under,))], [("main()", "rover::spin_all()")],
+        ["main()", "rover::spin_all()"])
     with pytest.raises(TypeError):
         from_data({**data, "unseen": [None]})
     with pytest.raises(TypeError):
@@ -114,6 +116,8 @@ def test_node_names_survive_the_cache(tmp_path: object) -> None:
         from_data({**data, "constructions": [[None, "rover::devices::Battery"]]})
     with pytest.raises(TypeError):
         from_data({**data, "uses": [["main()", 3]]})
+    with pytest.raises(TypeError):
+        from_data({**data, "defines": [None]})
 
 
 @pytest.fixture(scope="module")
@@ -380,6 +384,18 @@ rclcpp::Node::SharedPtr make_fleet();
 rclcpp::Node::SharedPtr make_door();
 extern rclcpp::Node::SharedPtr g_node;
 void announce();
+class Reporter {
+public:
+  explicit Reporter(rclcpp::Node * node) {
+    pub_ = node->create_publisher<std_msgs::msg::String>("reports", 10);
+  }
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+};
+void report(rclcpp::Node * node);
+template <class NodeT> int run() {
+  rclcpp::spin(std::make_shared<NodeT>());
+  return 0;
+}
 }  // namespace fleet
 """
 
@@ -387,9 +403,9 @@ void announce();
 def test_a_linked_library_runs_only_what_main_reaches(write_tree) -> None:
     """open-rmf's executables link rmf_fleet_adapter's library, whose free functions make
     nodes of their own: every executable had every node of the library that a free
-    function makes, and their publishers (78 of 173 multiple-publishers warnings on
-    rmf_demos were such). A free function runs when main() calls it or hands it on, a
-    class when main() constructs it or calls its methods, transitively."""
+    function makes, and their publishers. A free function runs when main() calls it or
+    hands it on, a class when main() constructs it, calls its methods or hands it to a
+    template, transitively; code main() never reaches makes no call of the process."""
     root = write_tree({
         "pkg/package.xml": '<?xml version="1.0"?>\n<package format="2"><name>pkg</name>'
                            "<version>0.1.0</version><description>d</description>"
@@ -404,7 +420,8 @@ def test_a_linked_library_runs_only_what_main_reaches(write_tree) -> None:
                              "{ return std::make_shared<Door>(); }\n"
                              "rclcpp::Node::SharedPtr g_node;\nvoid announce() "
                              "{ g_node->create_publisher<std_msgs::msg::String>"
-                             "(\"announce\", 10); }\n}\n",
+                             "(\"announce\", 10); }\n"
+                             "void report(rclcpp::Node * node) { Reporter r(node); }\n}\n",
         "pkg/src/fleet_main.cpp": '#include "pkg/fleet.hpp"\nint main(int argc, char ** argv)'
                                   " {\n  rclcpp::init(argc, argv);\n"
                                   "  rclcpp::spin(fleet::make_fleet());\n}\n",
@@ -415,16 +432,22 @@ def test_a_linked_library_runs_only_what_main_reaches(write_tree) -> None:
                                  "  rclcpp::spin(factory());\n}\n",
         "pkg/src/lift_main.cpp": '#include "pkg/fleet.hpp"\nint main(int argc, char ** argv)'
                                  " {\n  rclcpp::init(argc, argv);\n"
-                                 "  rclcpp::spin(fleet::Lift::make());\n}\n",
+                                 "  auto node = fleet::Lift::make();\n"
+                                 "  fleet::report(node.get());\n  rclcpp::spin(node);\n}\n",
+        "pkg/src/run_main.cpp": '#include "pkg/fleet.hpp"\nint main(int argc, char ** argv)'
+                                " {\n  rclcpp::init(argc, argv);\n"
+                                "  return fleet::run<fleet::Fleet>();\n}\n",
     })
     workspace = scan([str(root)])
     library = str(root / "pkg/src/fleet.cpp")
     made = {}
-    for name in ("fleet", "door", "lift"):
+    for name in ("fleet", "door", "lift", "run"):
         found = extract_cpp([str(root / f"pkg/src/{name}_main.cpp"), library], workspace,
                             cache_dir=None)
         made[name] = (found.rosname, found.rosnames,
                       sorted(topic for kind, topic, _ in rows(found) if kind == "publish"))
     assert made == {"fleet": ("fleet", [], ["fleet_states"]),
                     "door": ("door", [], ["announce", "door_states"]),
-                    "lift": ("lift", [], ["lift_states"])}
+                    "lift": ("lift", [], ["lift_states", "reports"]),
+                    # a class handed to a function template as its argument
+                    "run": ("fleet", [], ["fleet_states"])}

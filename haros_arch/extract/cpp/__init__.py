@@ -128,6 +128,7 @@ class CppResult:
     node_names: list[tuple[str, str]] = field(default_factory=list)
     constructions: list[tuple[str, str]] = field(default_factory=list)  # visitor's
     uses: list[tuple[str, str]] = field(default_factory=list)  # visitor's
+    defines: list[str] = field(default_factory=list)  # visitor's
     # in a translation unit's result: each construction of a class of the workspace, as
     # (class, the source conditions it is made under), one per place
     made_under: list[tuple[str, tuple[Condition, ...]]] = field(default_factory=list)
@@ -424,7 +425,8 @@ def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
     for _, unit in units:
         for maker, made in unit.constructions:
             made_by.setdefault(made, []).append(maker)
-    reached = _reached(units)
+    found = _reached(units, unseen)
+    reached, hiding = found if found is not None else (None, unseen)
     for _, unit in units:
         for owner, written in unit.node_names:
             name = links.resolve_name(written, facts, unseen)
@@ -447,7 +449,7 @@ def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
     if len(result.rosnames) < 2:
         result.rosnames = []
     under = _made_under(units, owners, result.rosnames)
-    unbuilt = _unbuilt(owners, reached, result, unseen)
+    unbuilt = _unbuilt(owners, reached, result, hiding)
     calls = []
     nodes: dict[str, str | None] = {}
     for call in result.calls:
@@ -484,44 +486,60 @@ def _unbuilt(owners: dict[str, list[str]], reached: set[str] | None, result: Cpp
                # a class, or a function's local node handle (its USR: ``_reached`` has
                # the function that holds it)
                and ("@" in owner or owner.rsplit("::", 1)[-1] not in unseen)}
-    # and the free functions main() never reaches (a linked library's)
-    return classes | {call.node_name for call in result.calls if call.node_name is not None
-                      and call.node_name.endswith("()") and call.node_name not in reached}
+    # and the code main() never reaches (a linked library's free functions and
+    # classes), but a class named where a parse error may hide its use
+    return classes | {owner for call in result.calls if (owner := call.node_name) is not None
+                      and owner not in reached and (
+                          owner.endswith("()") or "@" in owner
+                          or owner.rsplit("::", 1)[-1] not in unseen)}
 
 
-def _reached(units: list[tuple[str, CppResult]]) -> set[str] | None:
+def _reached(units: list[tuple[str, CppResult]], unseen: Collection[str] = ()
+             ) -> tuple[set[str], set[str]] | None:
     """The owners whose code the executable runs, when its files hold a ``main()``: the
     functions ``main()`` calls or hands on and the classes it constructs or calls the
     methods of, transitively (a class's bases with it, its methods' calls and
     constructions with it). A library the executable links is not run as a whole: its
-    free functions and the node classes they make run only when reached (rmf_fleet_adapter's
-    executables link a library whose ``make_fleet()`` makes nodes no ``main()`` here
-    reaches). Where a parse error may hide a call (``CppResult.unseen``), every free
-    function named in the code around it is reached too; where the code is not known at
-    all (``*``), every free function (a class named there is ``_unbuilt``'s to keep).
-    None without a ``main()`` (a component: its container constructs it)."""
+    free functions and the node classes they make run only when reached (open-rmf's
+    door_supervisor links rmf_fleet_adapter's library and builds none of its fleet
+    adapter's nodes). Where a unit whose code runs leaves a call unseen
+    (``CppResult.unseen``), every free function named in the code around it runs too,
+    and every free function where the unit hands a node to code the parse does not
+    read (``*``); a class named there is ``_unbuilt``'s to keep. With them, the words
+    of ``unseen`` that are no unit's (the opaque constructions' of the node's facts;
+    ``*`` where a file of the node is not read) and those of the units that run: what
+    may hide a construction in this process. None without a ``main()`` (a component:
+    its container constructs it)."""
     edges: dict[str, list[str]] = {}
-    owners: set[str] = set()
-    unseen: set[str] = set()
+    functions: set[str] = set()
+    held: list[tuple[set[str], list[str]]] = []  # each unit's owners and unseen words
     for _, unit in units:
         for maker, made in (*unit.constructions, *unit.uses):
             edges.setdefault(maker, []).append(made)
-            owners.update((maker, made))
-        owners.update(owner for owner, _ in unit.node_names)
-        unseen.update(unit.unseen)
-    mains = {owner for owner in owners if owner == "main()" or owner.endswith("::main()")}
-    if not mains:
+            functions.update(o for o in (maker, made) if o.endswith("()"))
+        here = {*unit.defines, *(call.node_name for call in unit.calls
+                                 if call.node_name is not None)}
+        functions.update(owner for owner in here if owner.endswith("()"))
+        held.append((here, unit.unseen))
+    starts = {owner for owner in functions if owner == "main()" or owner.endswith("::main()")}
+    if not starts:
         return None
-    starts = mains | {owner for owner in owners if owner.endswith("()") and (
-        "*" in unseen or _simple(owner) in unseen)}
-    reached = set(starts)
-    stack = list(starts)
-    while stack:
-        for made in edges.get(stack.pop(), ()):
-            if made not in reached:
-                reached.add(made)
-                stack.append(made)
-    return reached
+    reached: set[str] = set()
+    words = outside = set(unseen) - {word for _, held_words in held for word in held_words}
+    while starts:
+        reached |= starts
+        stack = list(starts)
+        while stack:
+            for made in edges.get(stack.pop(), ()):
+                if made not in reached:
+                    reached.add(made)
+                    stack.append(made)
+        # a unit runs when some code of it runs (one whose code is not known, or
+        # holds no definition: it may)
+        running = [said for here, said in held if not here or not here.isdisjoint(reached)]
+        words = outside | {word for said in running for word in said}
+        starts = {f for f in functions - reached if "*" in words or _simple(f) in words}
+    return reached, words
 
 
 def _simple(function: str) -> str:
@@ -595,13 +613,13 @@ def _units(texts: dict[str, str], ros2: dict[str, bool], setup: IncludeSetup,
                 digests[path] = kept[1]
             elif kept is not None and kept[0] is not None:
                 try:
-                    calls, rosname, found, facts, named, made, unseen, under, uses = (
-                        cache.from_data(kept[0]))
+                    (calls, rosname, found, facts, named, made, unseen, under, uses,
+                     defines) = cache.from_data(kept[0])
                 except (ValueError, TypeError, KeyError):
                     continue
                 done[path] = CppResult(calls, rosname, found, facts, node_names=named,
                                        constructions=made, unseen=unseen, made_under=under,
-                                       uses=uses)
+                                       uses=uses, defines=defines)
                 digests[path] = kept[1]
     todo = [path for path in texts if path not in done and path not in digests]
     tasks = [(path, texts[path], ros2[path]) for path in todo]
@@ -680,7 +698,7 @@ def _unit_and_data(path: str, text: str, ros2: bool, setup: IncludeSetup
         unit, headers = _translation_unit(path, text, ros2, setup)
     data = cache.to_data(unit.calls, unit.rosname, unit.diagnostics, unit.facts,
                          unit.node_names, unit.constructions, unit.unseen, unit.made_under,
-                         unit.uses)
+                         unit.uses, unit.defines)
     return unit, headers, data, cache.digest(data)
 
 
@@ -820,6 +838,7 @@ def _translation_unit(path: str, text: str, ros2: bool,
     result.node_names = finder.node_names
     result.constructions = finder.constructions
     result.uses = finder.uses
+    result.defines = finder.defines
     result.made_under = finder.made_under
     # the node handed to code the parse does not read (another package's class, a
     # function it does not know) may construct anything there

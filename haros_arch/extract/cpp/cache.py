@@ -181,7 +181,8 @@ def to_data(calls: list[PrimitiveCall], rosname: str | None,
             constructions: list[tuple[str, str]] | None = None,
             unseen: list[str] | None = None,
             made_under: list[tuple[str, tuple[Condition, ...]]] | None = None,
-            uses: list[tuple[str, str]] | None = None) -> dict[str, Any]:
+            uses: list[tuple[str, str]] | None = None,
+            defines: list[str] | None = None) -> dict[str, Any]:
     return {"calls": [dataclasses.asdict(c) for c in calls], "rosname": rosname,
             "diagnostics": [dataclasses.asdict(d) for d in diagnostics],
             "facts": [list(f) for f in facts or ()],
@@ -190,13 +191,13 @@ def to_data(calls: list[PrimitiveCall], rosname: str | None,
             "unseen": list(unseen or ()),
             "made_under": [[made, [dataclasses.asdict(c) for c in under]]
                            for made, under in made_under or ()],
-            "uses": [list(n) for n in uses or ()]}
+            "uses": [list(n) for n in uses or ()], "defines": list(defines or ())}
 
 
 def from_data(data: dict[str, Any]) -> tuple[
         list[PrimitiveCall], str | None, list[Diagnostic], list[tuple[str, int, str, str]],
         list[tuple[str, str]], list[tuple[str, str]], list[str],
-        list[tuple[str, tuple[Condition, ...]]], list[tuple[str, str]]]:
+        list[tuple[str, tuple[Condition, ...]]], list[tuple[str, str]], list[str]]:
     """Raises ValueError / TypeError / KeyError for data that is not ours."""
     calls = []
     for item in data["calls"]:
@@ -222,11 +223,12 @@ def from_data(data: dict[str, Any]) -> tuple[
                 and isinstance(site, str)):
             raise TypeError("facts")
         facts.append((usr, index, value, site))
-    unseen = data.get("unseen", [])
-    if not (isinstance(unseen, list) and all(isinstance(word, str) for word in unseen)):
-        raise TypeError("unseen")
+    unseen, defines = data.get("unseen", []), data.get("defines", [])
+    for key, words in (("unseen", unseen), ("defines", defines)):
+        if not (isinstance(words, list) and all(isinstance(word, str) for word in words)):
+            raise TypeError(key)
     return (calls, rosname, diagnostics, facts, _pairs(data, "node_names"),
-            _pairs(data, "constructions"), unseen, made_under, _pairs(data, "uses"))
+            _pairs(data, "constructions"), unseen, made_under, _pairs(data, "uses"), defines)
 
 
 def conditions_text(conditions: Iterable[Condition]) -> str:

@@ -236,6 +236,7 @@ class CallFinder:
         # free function ``ns::f()``, a method's class): what ``main()`` runs, with the
         # constructions (``extract.cpp._reached``)
         self.uses: list[tuple[str, str]] = []
+        self.defines: list[str] = []  # the owners of the unit's definitions
         # each construction of a class of the workspace and its source conditions
         self.made_under: list[tuple[str, tuple[Condition, ...]]] = []
         self.diagnostics: list[Diagnostic] = []
@@ -319,6 +320,7 @@ class CallFinder:
         self.facts.extend(links.member_facts(self.functions, self.tu.spelling,
                                              self._member_namespace))
         self.uses.extend(self._uses())
+        self.defines = list(dict.fromkeys(owner_of(f) for f in self.functions))
         self.wrappers.preorder.clear()
         self.wrappers.references.clear()
         for call in self.calls:  # get_parameter("p") of a declare_parameter("p", default)
@@ -346,12 +348,17 @@ class CallFinder:
                 for target in targets:
                     if target is None or target.kind not in FUNCTIONS:
                         continue
-                    where = target.location.file
-                    if where is None or not self.owned(where.name):
-                        continue
-                    used = owner_of(target)
-                    if used != owner:
-                        found[(owner, used)] = None
+                    # and the classes it is given as template arguments (a
+                    # ``run<NodeT>()`` that makes a NodeT)
+                    given = [child.referenced for child in reference.get_children()
+                             if child.kind == CursorKind.TYPE_REF]
+                    for used in (target, *given):
+                        where = used.location.file if used is not None else None
+                        if where is None or not self.owned(where.name):
+                            continue
+                        name = owner_of(used) if used.kind in FUNCTIONS else qualified_name(used)
+                        if name and name != owner:
+                            found[(owner, name)] = None
         return [use for use in found if use not in self.uses]
 
     def _member_namespace(self, field: Cursor) -> str | None:
