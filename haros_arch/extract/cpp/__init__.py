@@ -39,7 +39,7 @@ from .headers import FALLBACK, STANDIN, IncludeSetup
 from .interfaces import interface_package
 from .interfaces import known as known_interface
 from .owners import node_names
-from .visitor import OTHER_WRITES, WORDS, CallFinder, known_name
+from .visitor import OTHER_WRITES, STATIC, WORDS, CallFinder, known_name
 
 __all__ = ["CppBatch", "CppResult", "extract_cpp", "extract_cpp_nodes"]
 
@@ -502,14 +502,15 @@ def _reached(units: list[tuple[str, CppResult]], unseen: Collection[str] = ()
     constructions with it). A library the executable links is not run as a whole: its
     free functions and the node classes they make run only when reached (open-rmf's
     door_supervisor links rmf_fleet_adapter's library and builds none of its fleet
-    adapter's nodes). Where a unit whose code runs leaves a call unseen
-    (``CppResult.unseen``), every free function named in the code around it runs too,
-    and every free function where the unit hands a node to code the parse does not
-    read (``*``); a class named there is ``_unbuilt``'s to keep. With them, the words
-    of ``unseen`` that are no unit's (the opaque constructions' of the node's facts;
-    ``*`` where a file of the node is not read) and those of the units that run: what
-    may hide a construction in this process. None without a ``main()`` (a component:
-    its container constructs it)."""
+    adapter's nodes). What the initialisers of variables of namespace scope name runs
+    too (gtest's TEST_F registers its test class so). Where a unit whose code runs
+    leaves a call unseen (``CppResult.unseen``), every free function named in the code
+    around it runs too, and every free function where the unit hands a node to code
+    the parse does not read (``*``); a class named there is ``_unbuilt``'s to keep.
+    With them, the words of ``unseen`` that are no unit's (the opaque constructions' of
+    the node's facts; ``*`` where a file of the node is not read) and those of the
+    units that run: what may hide a construction in this process. None without a
+    ``main()`` (a component: its container constructs it)."""
     edges: dict[str, list[str]] = {}
     functions: set[str] = set()
     held: list[tuple[set[str], list[str]]] = []  # each unit's owners and unseen words
@@ -524,6 +525,7 @@ def _reached(units: list[tuple[str, CppResult]], unseen: Collection[str] = ()
     starts = {owner for owner in functions if owner == "main()" or owner.endswith("::main()")}
     if not starts:
         return None
+    starts.add(STATIC)
     reached: set[str] = set()
     words = outside = set(unseen) - {word for _, held_words in held for word in held_words}
     while starts:

@@ -95,6 +95,9 @@ FUNCTIONS = frozenset({
     CursorKind.FUNCTION_DECL, CursorKind.CXX_METHOD, CursorKind.CONSTRUCTOR,
     CursorKind.DESTRUCTOR, CursorKind.FUNCTION_TEMPLATE, CursorKind.CONVERSION_FUNCTION,
 })
+# the maker of what the initialisers of the unit's variables of namespace scope name
+# (``CallFinder.uses``): it runs where the program runs (``extract.cpp._reached``)
+STATIC = "<static initialisation>"
 _API_NAMES = frozenset(
     [name for _, name in [*api.ALL, *api.NODE_NAME, *api.RCLCPP_NODE_NAME,
                           *api.STANDIN_NODE_NAME, *api.FACTORIES]]
@@ -336,6 +339,19 @@ class CallFinder:
         of each function's subtree (its lambdas' too); an overloaded name as every
         declaration it may be."""
         found: dict[tuple[str, str], None] = dict.fromkeys(self.uses)
+        # what a variable of namespace scope names in its initialiser runs before main()
+        # (gtest's TEST_F registers its test class so)
+        for variable in self.globals:
+            for node in variable.walk_preorder():
+                if node.kind in (CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR,
+                                 CursorKind.TYPE_REF):
+                    used = node.referenced
+                    where = used.location.file if used is not None else None
+                    if where is not None and self.owned(where.name):
+                        name = owner_of(used) if used.kind in FUNCTIONS else (
+                            qualified_name(used))
+                        if name:
+                            found[(STATIC, name)] = None
         for function in self.functions:
             references = self.wrappers.references.get(id(function))
             if not references:

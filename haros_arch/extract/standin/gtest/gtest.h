@@ -37,13 +37,21 @@ Environment* AddGlobalTestEnvironment(Environment* env);
 void InitGoogleTest(int* argc, char** argv);
 void InitGoogleMock(int* argc, char** argv);
 template<class... A> int haros_values(A&&... args);
+// a test's registration, made before main() as googletest's is (what it names runs)
+template<class T> int haros_register();
+int haros_register(void (*test)());
 }  // namespace testing
 int RUN_ALL_TESTS();
 #define HAROS_GTEST_STATEMENT(statement) \
   if (true) { statement; } else ::testing::haros_sink()
-#define TEST(suite, name) void suite##_##name##_Test()
+#define TEST(suite, name) \
+  void suite##_##name##_Test(); \
+  static const int suite##_##name##_registered = ::testing::haros_register(&suite##_##name##_Test); \
+  void suite##_##name##_Test()
 #define HAROS_GTEST_MEMBER(fixture, name) \
   class fixture##_##name##_Test : public fixture { public: void TestBody(); }; \
+  static const int fixture##_##name##_registered = \
+    ::testing::haros_register<fixture##_##name##_Test>(); \
   void fixture##_##name##_Test::TestBody()
 #define TEST_F(fixture, name) HAROS_GTEST_MEMBER(fixture, name)
 #define TEST_P(fixture, name) HAROS_GTEST_MEMBER(fixture, name)
