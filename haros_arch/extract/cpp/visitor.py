@@ -343,39 +343,35 @@ class CallFinder:
         # (gtest's TEST_F registers its test class so)
         for variable in self.globals:
             for node in variable.walk_preorder():
-                if node.kind in (CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR,
-                                 CursorKind.TYPE_REF):
-                    used = node.referenced
-                    where = used.location.file if used is not None else None
-                    if where is not None and self.owned(where.name):
-                        name = owner_of(used) if used.kind in FUNCTIONS else (
-                            qualified_name(used))
-                        if name:
-                            found[(STATIC, name)] = None
+                if node.kind in (CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR):
+                    found.update(dict.fromkeys(self._used(STATIC, node)))
         for function in self.functions:
             references = self.wrappers.references.get(id(function))
             if not references:
                 continue
             owner = owner_of(function)
             for reference in references:
-                targets = overloads(reference) if (
-                    reference.kind == CursorKind.OVERLOADED_DECL_REF) else [
-                    reference.referenced]
-                for target in targets:
-                    if target is None or target.kind not in FUNCTIONS:
-                        continue
-                    # and the classes it is given as template arguments (a
-                    # ``run<NodeT>()`` that makes a NodeT)
-                    given = [child.referenced for child in reference.get_children()
-                             if child.kind == CursorKind.TYPE_REF]
-                    for used in (target, *given):
-                        where = used.location.file if used is not None else None
-                        if where is None or not self.owned(where.name):
-                            continue
-                        name = owner_of(used) if used.kind in FUNCTIONS else qualified_name(used)
-                        if name and name != owner:
-                            found[(owner, name)] = None
+                found.update(dict.fromkeys(self._used(owner, reference)))
         return [use for use in found if use not in self.uses]
+
+    def _used(self, owner: str, reference: Cursor) -> Iterator[tuple[str, str]]:
+        """(owner, owner of each workspace function ``reference`` may name), and of the
+        classes it gives that function as template arguments (a ``run<NodeT>()`` that
+        makes a NodeT)."""
+        targets = overloads(reference) if (
+            reference.kind == CursorKind.OVERLOADED_DECL_REF) else [reference.referenced]
+        for target in targets:
+            if target is None or target.kind not in FUNCTIONS:
+                continue
+            given = [child.referenced for child in reference.get_children()
+                     if child.kind == CursorKind.TYPE_REF]
+            for used in (target, *given):
+                where = used.location.file if used is not None else None
+                if where is None or not self.owned(where.name):
+                    continue
+                name = owner_of(used) if used.kind in FUNCTIONS else qualified_name(used)
+                if name and name != owner:
+                    yield owner, name
 
     def _member_namespace(self, field: Cursor) -> str | None:
         """The namespace of a handle member, as the unit's constructors of its class give
