@@ -102,12 +102,14 @@ def test_node_names_survive_the_cache(tmp_path: object) -> None:
     data = to_data([], None, [], [], [("rover::Odometry", "odometry_node")],
                    [("rover::BaseDriver", "rover::devices::Battery")], ["Battery", "vendor"],
                    [("rover::Odometry", (under,))], [("main()", "rover::spin_all()")],
-                   ["main()", "rover::spin_all()"])
+                   ["main()", "rover::spin_all()"], ["rover::spin_all()"])
     assert from_data(json.loads(json.dumps(data)))[4:] == (
         [("rover::Odometry", "odometry_node")],
         [("rover::BaseDriver", "rover::devices::Battery")], ["Battery", "vendor"],
         [("rover::Odometry", (under,))], [("main()", "rover::spin_all()")],
-        ["main()", "rover::spin_all()"])
+        ["main()", "rover::spin_all()"], ["rover::spin_all()"])
+    with pytest.raises(TypeError):
+        from_data({**data, "handed": [3]})
     with pytest.raises(TypeError):
         from_data({**data, "unseen": [None]})
     with pytest.raises(TypeError):
@@ -451,3 +453,50 @@ def test_a_linked_library_runs_only_what_main_reaches(write_tree) -> None:
                     "lift": ("lift", [], ["lift_states", "reports"]),
                     # a class handed to a function template as its argument
                     "run": ("fleet", [], ["fleet_states"])}
+
+
+def test_a_node_handed_on_counts_only_where_the_code_that_hands_it_runs(write_tree) -> None:
+    """A unit of a linked library that hands a node to code the parse does not read (a
+    vendor's class: anything may be built there) hides constructions only when the
+    function that hands it on runs: rmf_task_ros2's Dispatcher.cpp hands its node to
+    its bidding code, and door_supervisor runs only the static initialiser of its schema,
+    yet every free function of the library was taken as run (door_supervisor got the
+    fleet adapter's nodes and their publishers)."""
+    root = write_tree({
+        "pkg/package.xml": '<?xml version="1.0"?>\n<package format="2"><name>pkg</name>'
+                           "<version>0.1.0</version><description>d</description>"
+                           '<maintainer email="a@b.c">m</maintainer><license>MIT</license>'
+                           "<depend>rclcpp</depend><export><build_type>ament_cmake"
+                           "</build_type></export></package>\n",
+        "pkg/include/pkg/fleet.hpp": FLEET,
+        "pkg/src/fleet.cpp": '#include "pkg/fleet.hpp"\nnamespace fleet {\n'
+                             "rclcpp::Node::SharedPtr make_fleet() "
+                             "{ return std::make_shared<Fleet>(); }\n"
+                             "rclcpp::Node::SharedPtr make_door() "
+                             "{ return std::make_shared<Door>(); }\n}\n",
+        "pkg/src/dispatch.cpp": '#include "pkg/fleet.hpp"\n#include <vendor/bidder.h>\n'
+                                "namespace fleet {\nint make_schema() { return 1; }\n"
+                                "static const int schema = make_schema();\n"
+                                "void bid(rclcpp::Node::SharedPtr node) {\n"
+                                '  vendor::Bidder bidder(node, "fleet");\n}\n}\n',
+        "pkg/src/door_main.cpp": '#include "pkg/fleet.hpp"\nint main(int argc, char ** argv)'
+                                 " {\n  rclcpp::init(argc, argv);\n"
+                                 "  rclcpp::spin(fleet::make_door());\n}\n",
+        "pkg/src/bid_main.cpp": '#include "pkg/fleet.hpp"\nnamespace fleet '
+                                "{ void bid(rclcpp::Node::SharedPtr node); }\n"
+                                "int main(int argc, char ** argv) {\n"
+                                "  rclcpp::init(argc, argv);\n  auto door = fleet::make_door();\n"
+                                "  fleet::bid(door);\n  rclcpp::spin(door);\n}\n",
+    })
+    workspace = scan([str(root)])
+    library = [str(root / "pkg/src/fleet.cpp"), str(root / "pkg/src/dispatch.cpp")]
+    made = {}
+    for name in ("door", "bid"):
+        found = extract_cpp([str(root / f"pkg/src/{name}_main.cpp"), *library], workspace,
+                            cache_dir=None)
+        made[name] = (found.rosname, sorted(
+            topic for kind, topic, _ in rows(found) if kind == "publish"))
+    assert made["door"] == ("door", ["door_states"])
+    # the vendor's code, given the node, may build anything of the library: its other
+    # nodes stay possible where bid() runs
+    assert made["bid"][1] == ["door_states", "fleet_states", "lift_states", "reports"]

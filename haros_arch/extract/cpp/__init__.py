@@ -38,7 +38,7 @@ from .conditions import fewest
 from .headers import FALLBACK, STANDIN, IncludeSetup
 from .interfaces import interface_package
 from .interfaces import known as known_interface
-from .owners import node_names
+from .owners import node_names, owner_of
 from .visitor import OTHER_WRITES, STATIC, WORDS, CallFinder, known_name
 
 __all__ = ["CppBatch", "CppResult", "extract_cpp", "extract_cpp_nodes"]
@@ -137,6 +137,10 @@ class CppResult:
     # member types; ``*``: anything, the unit was not parsed), so a construction of a
     # class named there may be missed (``links.resolve``)
     unseen: list[str] = field(default_factory=list)
+    # in a translation unit's result with ``*`` in ``unseen``: the owners whose code hands
+    # the node to code the parse does not read ("": one not known); the ``*`` holds
+    # where one of them runs (``_reached``)
+    handed: list[str] = field(default_factory=list)
 
 
 @dataclass
@@ -505,15 +509,17 @@ def _reached(units: list[tuple[str, CppResult]], unseen: Collection[str] = ()
     adapter's nodes). What the initialisers of variables of namespace scope name runs
     too (gtest's TEST_F registers its test class so). Where a unit whose code runs
     leaves a call unseen (``CppResult.unseen``), every free function named in the code
-    around it runs too, and every free function where the unit hands a node to code
-    the parse does not read (``*``); a class named there is ``_unbuilt``'s to keep.
+    around it runs too, and every free function where code of it that runs hands a
+    node to code the parse does not read (``*``); a class named there is
+    ``_unbuilt``'s to keep.
     With them, the words of ``unseen`` that are no unit's (the opaque constructions' of
     the node's facts; ``*`` where a file of the node is not read) and those of the
     units that run: what may hide a construction in this process. None without a
     ``main()`` (a component: its container constructs it)."""
     edges: dict[str, list[str]] = {}
     functions: set[str] = set()
-    held: list[tuple[set[str], list[str]]] = []  # each unit's owners and unseen words
+    # each unit's owners, unseen words, and the owners that hand its node on (``*``)
+    held: list[tuple[set[str], list[str], set[str]]] = []
     for _, unit in units:
         for maker, made in (*unit.constructions, *unit.uses):
             edges.setdefault(maker, []).append(made)
@@ -521,13 +527,13 @@ def _reached(units: list[tuple[str, CppResult]], unseen: Collection[str] = ()
         here = {*unit.defines, *(call.node_name for call in unit.calls
                                  if call.node_name is not None)}
         functions.update(owner for owner in here if owner.endswith("()"))
-        held.append((here, unit.unseen))
+        held.append((here, unit.unseen, set(unit.handed)))
     starts = {owner for owner in functions if owner == "main()" or owner.endswith("::main()")}
     if not starts:
         return None
     starts.add(STATIC)
     reached: set[str] = set()
-    words = outside = set(unseen) - {word for _, held_words in held for word in held_words}
+    words = outside = set(unseen) - {word for _, held_words, _ in held for word in held_words}
     while starts:
         reached |= starts
         stack = list(starts)
@@ -537,9 +543,16 @@ def _reached(units: list[tuple[str, CppResult]], unseen: Collection[str] = ()
                     reached.add(made)
                     stack.append(made)
         # a unit runs when some code of it runs (one whose code is not known, or
-        # holds no definition: it may)
-        running = [said for here, said in held if not here or not here.isdisjoint(reached)]
-        words = outside | {word for said in running for word in said}
+        # holds no definition: it may); its node handed to unknown code (``*``) only
+        # where the code that hands it runs (rmf_task_ros2's Dispatcher hands its own
+        # node on, and only its schema's static initialiser runs in door_supervisor)
+        words = set(outside)
+        for here, said, handed in held:
+            if here and here.isdisjoint(reached):
+                continue
+            if said == ["*"] and handed and "" not in handed and handed.isdisjoint(reached):
+                continue
+            words.update(said)
         starts = {f for f in functions - reached if "*" in words or _simple(f) in words}
     return reached, words
 
@@ -616,12 +629,12 @@ def _units(texts: dict[str, str], ros2: dict[str, bool], setup: IncludeSetup,
             elif kept is not None and kept[0] is not None:
                 try:
                     (calls, rosname, found, facts, named, made, unseen, under, uses,
-                     defines) = cache.from_data(kept[0])
+                     defines, handed) = cache.from_data(kept[0])
                 except (ValueError, TypeError, KeyError):
                     continue
                 done[path] = CppResult(calls, rosname, found, facts, node_names=named,
                                        constructions=made, unseen=unseen, made_under=under,
-                                       uses=uses, defines=defines)
+                                       uses=uses, defines=defines, handed=handed)
                 digests[path] = kept[1]
     todo = [path for path in texts if path not in done and path not in digests]
     tasks = [(path, texts[path], ros2[path]) for path in todo]
@@ -700,7 +713,7 @@ def _unit_and_data(path: str, text: str, ros2: bool, setup: IncludeSetup
         unit, headers = _translation_unit(path, text, ros2, setup)
     data = cache.to_data(unit.calls, unit.rosname, unit.diagnostics, unit.facts,
                          unit.node_names, unit.constructions, unit.unseen, unit.made_under,
-                         unit.uses, unit.defines)
+                         unit.uses, unit.defines, unit.handed)
     return unit, headers, data, cache.digest(data)
 
 
@@ -846,6 +859,8 @@ def _translation_unit(path: str, text: str, ros2: bool,
     # function it does not know) may construct anything there
     result.unseen = ["*"] if any(d.code in _HANDED for d in result.diagnostics) else sorted(
         word.decode() for word in _unseen(errors, finder, source) | finder.unseen)
+    if result.unseen == ["*"]:
+        result.handed = sorted(finder.handed) if finder.handed else [""]
     if (result.unseen or finder.opaque_words) and result.unseen != ["*"]:
         result.facts = [*result.facts, *call_conditions.hidden_facts(
             finder.unit_cursor(), owned, _error_words(errors, finder, source))]
@@ -1191,6 +1206,7 @@ def _node_given(errors: list[_Error], finder: CallFinder, source: SourceCache,
         given = recall.node_given(lines, error.line, node_names(function))
         if given is not None:
             said.add((error.path, error.line))
+            finder.handed.add(owner_of(function))
             name = match.group("name") or match.group("scope")
             found.append(diag.make(
                 "CPP_NODE_TO_UNKNOWN", workspace.location(error.path, error.line, error.column),

@@ -182,7 +182,8 @@ def to_data(calls: list[PrimitiveCall], rosname: str | None,
             unseen: list[str] | None = None,
             made_under: list[tuple[str, tuple[Condition, ...]]] | None = None,
             uses: list[tuple[str, str]] | None = None,
-            defines: list[str] | None = None) -> dict[str, Any]:
+            defines: list[str] | None = None,
+            handed: list[str] | None = None) -> dict[str, Any]:
     return {"calls": [dataclasses.asdict(c) for c in calls], "rosname": rosname,
             "diagnostics": [dataclasses.asdict(d) for d in diagnostics],
             "facts": [list(f) for f in facts or ()],
@@ -191,13 +192,14 @@ def to_data(calls: list[PrimitiveCall], rosname: str | None,
             "unseen": list(unseen or ()),
             "made_under": [[made, [dataclasses.asdict(c) for c in under]]
                            for made, under in made_under or ()],
-            "uses": [list(n) for n in uses or ()], "defines": list(defines or ())}
+            "uses": [list(n) for n in uses or ()], "defines": list(defines or ()),
+            "handed": list(handed or ())}
 
 
 def from_data(data: dict[str, Any]) -> tuple[
         list[PrimitiveCall], str | None, list[Diagnostic], list[tuple[str, int, str, str]],
         list[tuple[str, str]], list[tuple[str, str]], list[str],
-        list[tuple[str, tuple[Condition, ...]]], list[tuple[str, str]], list[str]]:
+        list[tuple[str, tuple[Condition, ...]]], list[tuple[str, str]], list[str], list[str]]:
     """Raises ValueError / TypeError / KeyError for data that is not ours."""
     calls = []
     for item in data["calls"]:
@@ -224,11 +226,13 @@ def from_data(data: dict[str, Any]) -> tuple[
             raise TypeError("facts")
         facts.append((usr, index, value, site))
     unseen, defines = data.get("unseen", []), data.get("defines", [])
-    for key, words in (("unseen", unseen), ("defines", defines)):
+    handed = data.get("handed", [])
+    for key, words in (("unseen", unseen), ("defines", defines), ("handed", handed)):
         if not (isinstance(words, list) and all(isinstance(word, str) for word in words)):
             raise TypeError(key)
     return (calls, rosname, diagnostics, facts, _pairs(data, "node_names"),
-            _pairs(data, "constructions"), unseen, made_under, _pairs(data, "uses"), defines)
+            _pairs(data, "constructions"), unseen, made_under, _pairs(data, "uses"), defines,
+            handed)
 
 
 def conditions_text(conditions: Iterable[Condition]) -> str:

@@ -240,6 +240,9 @@ class CallFinder:
         # constructions (``extract.cpp._reached``)
         self.uses: list[tuple[str, str]] = []
         self.defines: list[str] = []  # the owners of the unit's definitions
+        # the owners whose code hands the node to code the parse does not read
+        # (CPP_NODE_PASSED, CPP_NODE_TO_UNKNOWN); "" where no owner is known
+        self.handed: set[str] = set()
         # each construction of a class of the workspace and its source conditions
         self.made_under: list[tuple[str, tuple[Condition, ...]]] = []
         self.diagnostics: list[Diagnostic] = []
@@ -918,6 +921,7 @@ class CallFinder:
             cls, given = unseen
             here, there = self.where(call), self.where(cls)
             if there.package and there.package != here.package:
+                self.handed.add(self._owner or "")
                 self.diagnostics.append(diag.make(
                     "CPP_NODE_PASSED", here, cls=qualified_name(cls), package=there.package,
                     given="".join(t.spelling for t in given.get_tokens())[:60]))
@@ -1051,6 +1055,7 @@ class CallFinder:
             return  # the vendor sees the object as its own base: it calls the overrides
         if not given and self._of_unknown_base(unknown, function):
             self._unknown.add(key)
+            self.handed.add(self._owner or "")
             self.diagnostics.append(diag.make(
                 "CPP_NODE_TO_UNKNOWN", self.where(call), given="this", name=call.spelling))
             return
@@ -1065,6 +1070,7 @@ class CallFinder:
                     name = "".join(itertools.takewhile(
                         lambda word: word not in ("(", "{"),
                         (t.spelling for t in itertools.islice(call.get_tokens(), 24))))
+            self.handed.add(self._owner or "")
             self.diagnostics.append(diag.make(
                 "CPP_NODE_TO_UNKNOWN", self.where(call),
                 given="".join(t.spelling for t in given[0].get_tokens())[:60], name=name))
