@@ -524,8 +524,8 @@ def _reached(units: list[tuple[str, CppResult]], unseen: Collection[str] = ()
         for maker, made in (*unit.constructions, *unit.uses):
             edges.setdefault(maker, []).append(made)
             functions.update(o for o in (maker, made) if o.endswith("()"))
-        here = {*unit.defines, *(call.node_name for call in unit.calls
-                                 if call.node_name is not None)}
+        # what its own source defines (a header's code is in every unit including it)
+        here = set(unit.defines)
         functions.update(owner for owner in here if owner.endswith("()"))
         held.append((here, unit.unseen, set(unit.handed)))
     starts = {owner for owner in functions if owner == "main()" or owner.endswith("::main()")}

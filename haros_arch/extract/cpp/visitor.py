@@ -326,7 +326,12 @@ class CallFinder:
         self.facts.extend(links.member_facts(self.functions, self.tu.spelling,
                                              self._member_namespace))
         self.uses.extend(self._uses())
-        self.defines = list(dict.fromkeys(owner_of(f) for f in self.functions))
+        # the owners the unit's own source defines: a header's function is every
+        # including unit's, and runs in none of them by being reached in another
+        main = self.tu.spelling
+        self.defines = list(dict.fromkeys(
+            owner_of(f) for f in self.functions
+            if (where := f.location.file) is not None and where.name == main))
         self.wrappers.preorder.clear()
         self.wrappers.references.clear()
         for call in self.calls:  # get_parameter("p") of a declare_parameter("p", default)
