@@ -53,7 +53,7 @@ def test_four_instances_of_one_name_are_one_finding() -> None:
                                 "node:/task_requester#3", "node:/task_requester#4")
     assert lines(finding) == [12, 18, 24, 30]  # SARIF: the other three are related
     assert finding.message == (
-        f"/task_requester is launched 4 times ({LAUNCH} lines 12, 18, 24 and 30)")
+        f"4 nodes are named /task_requester ({LAUNCH} lines 12, 18, 24 and 30)")
 
 
 def test_two_certainly_together_and_one_undecided_are_one_error() -> None:
@@ -97,7 +97,7 @@ def test_one_started_on_the_exit_of_another_collides_with_a_third() -> None:
 
 def test_names_apart_are_findings_apart() -> None:
     found = findings(node(12), node(18), node(24, name="/other"), node(30, name="/other"))
-    assert sorted((f.message.split()[0], lines(f)) for f in found) == [
+    assert sorted((f.message.split()[4], lines(f)) for f in found) == [
         ("/other", [24, 30]), ("/task_requester", [12, 18])]
 
 
@@ -149,7 +149,7 @@ def test_a_ros2_launch_of_four_namesakes_is_one_result_in_json_and_sarif(write_t
     (finding,) = [f for f in json.loads(out.read_text())["findings"]
                   if f["rule"].startswith("duplicate")]
     assert finding["severity"] == "error" and len(finding["entities"]) == 4
-    assert finding["message"] == ("/task_requester is launched 4 times "
+    assert finding["message"] == ("4 nodes are named /task_requester "
                                   "(tasks/launch/battle_go.launch.xml lines 2, 3, 4 and 5)")
     sarif = root / "check.sarif"
     main(["check", str(root / "project.yaml"), "--format", "sarif", "-o", str(sarif),
