@@ -41,6 +41,42 @@ template <class T, class U> shared_ptr<T> dynamic_pointer_cast(const U &_value);
 
 namespace gazebo
 {
+// gazebo/transport: Gazebo's own topics (not ROS): a plugin advertises and subscribes
+// gz messages there, which makes no ROS call; declared so that its code parses
+namespace transport
+{
+class Publisher
+{
+public:
+  template <class M> void Publish(const M &_message, bool _block = false);
+  bool HasConnections() const;
+  std::string GetTopic() const;
+};
+class Subscriber
+{
+public:
+  std::string GetTopic() const;
+  void Unsubscribe() const;
+};
+typedef std::shared_ptr<Publisher> PublisherPtr;
+typedef std::shared_ptr<Subscriber> SubscriberPtr;
+class Node
+{
+public:
+  Node();
+  void Init(const std::string &_space = "");
+  void Fini();
+  std::string GetTopicNamespace() const;
+  template <class M> PublisherPtr Advertise(const std::string &_topic,
+                                            unsigned int _limit = 1000, double _hz = 0);
+  template <class F, class T> SubscriberPtr Subscribe(const std::string &_topic, F _callback,
+                                                      T *_object, bool _latching = false);
+  template <class F> SubscriberPtr Subscribe(const std::string &_topic, F _callback,
+                                             bool _latching = false);
+};
+typedef std::shared_ptr<Node> NodePtr;
+}  // namespace transport
+
 template <class T> class PluginT
 {
 public:
