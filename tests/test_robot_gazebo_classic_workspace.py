@@ -97,6 +97,9 @@ def test_ros2_plugin_of_the_workspace_is_a_node_of_its_own() -> None:
         ("/arm/gripper", "publish", "/arm/left_finger_state", "std_msgs/msg/Float64", 24),
         ("/arm/gripper", "server", "/arm/gripper/grasp", "std_srvs/srv/Trigger", 27),
         ("/arm/gripper", "subscribe", "/arm/gripper/command", "std_msgs/msg/Float64", 25),
+        # a plugin that makes an rclcpp node of its own: named as its code names it (the
+        # <ros> element is gazebo_ros::Node's, not this node's)
+        ("/arm_tools/control", "subscribe", "/arm_tools/reset", "std_msgs/msg/Empty", 17),
     ]
     assert not [d for d in config.diagnostics if d.code == "GAZEBO_PLUGIN_UNKNOWN"]
     (instance,) = [n for n in config.nodes if n.name == "/arm/gripper"]

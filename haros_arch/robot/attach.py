@@ -524,8 +524,19 @@ def _built(element: etree._Element, built: Node, spawn: Spawn, host: NodeInstanc
             own_partial(host, f"{reason} ({where.file}:{where.line})", owned)
         described.node = host.name
         return [(host, calls)]
-    instance, unknown = _ros2_instance(element, described.name, spawn, host, where,
-                                       conditions, workspace, config)
+    if built.rosname is not None:
+        # its code makes a node of its own (``rclcpp::Node("control", ns)``), not
+        # gazebo_ros's: named as the code names it, no <ros> element applies
+        full = clean(built.rosname if built.rosname.startswith("/") else
+                     "/" + built.rosname)
+        instance = NodeInstance(full, None, namespace=namespace_of(full),
+                                conditions=(*host.conditions, *conditions), location=where,
+                                origin="description", ros_version=2)
+        instance.id = f"node:{full}"
+        unknown: list[str] = []
+    else:
+        instance, unknown = _ros2_instance(element, described.name, spawn, host, where,
+                                           conditions, workspace, config)
     instance.node = Node(built.package, built.executable, kind="plugin", calls=calls,
                          sources=list(built.sources), location=built.location,
                          plugin_class=built.plugin_class, plugin_base=built.plugin_base)
