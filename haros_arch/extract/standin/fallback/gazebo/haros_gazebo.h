@@ -15,6 +15,7 @@
 #include <memory>
 #include <string>
 #include <vector>
+#include <boost/shared_ptr.hpp>
 #include <sdf/sdf.hh>
 
 #define override
@@ -24,12 +25,17 @@
 #define GAZEBO_MINOR_VERSION 0
 #define GAZEBO_PATCH_VERSION 0
 
+// a plugin casts what Gazebo gives it (``dynamic_pointer_cast<sensors::RaySensor>(
+// _sensor)``, boost's in Gazebo 7 and older code), whose class the parse declares
+// permissively: not a shared_ptr here
 namespace std
 {
-// a plugin casts what Load is given (``dynamic_pointer_cast<sensors::RaySensor>(
-// _sensor)``), whose class the parse declares permissively: not a shared_ptr here
 template <class T, class U> shared_ptr<T> dynamic_pointer_cast(const U &_value);
 }  // namespace std
+namespace boost
+{
+template <class T, class U> shared_ptr<T> dynamic_pointer_cast(const U &_value);
+}  // namespace boost
 
 // gazebo/common/Console.hh and Exception.hh: the log streams and the throwing macro
 #define gzerr std::cerr
