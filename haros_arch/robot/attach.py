@@ -513,7 +513,8 @@ def _built(element: etree._Element, built: Node, spawn: Spawn, host: NodeInstanc
     if not built.is_complete and not reasons:
         reasons = [f"Gazebo plugin {described.name or described.filename} ({built.name}) "
                    f"is {built.completeness}"]
-    helper = _unread_helper(built, workspace)
+    helper = remembered("gazebo helper", built.name, workspace,
+                        lambda: _unread_helper(built, workspace))
     if helper is not None:
         reasons.append(f"Gazebo plugin {described.name or described.filename} "
                        f"({built.name}): {helper}")
