@@ -1,8 +1,8 @@
 // haros_arch stand-in: gazebo_ros (ROS 2 gazebo_ros_pkgs) Node, the rclcpp node a
 // Gazebo classic plugin gets from Node::Get(sdf): named by the <plugin>'s name, in its
 // <ros><namespace>, with its <ros><remapping> rules (robot.attach gives the plugin's
-// instance those). Every gazebo_ros/... header stands in as this one, read only when
-// the workspace has no gazebo_ros package (headers.FALLBACK_UMBRELLAS).
+// instance those). Read only when the workspace has no gazebo_ros/node.hpp
+// (headers.FALLBACK); gazebo_ros' other headers are not stood in for.
 #ifndef HAROS_STANDIN_GAZEBO_ROS_NODE_HPP
 #define HAROS_STANDIN_GAZEBO_ROS_NODE_HPP
 #include <memory>
