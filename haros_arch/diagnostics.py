@@ -209,8 +209,10 @@ CATALOGUE: dict[str, Entry] = {
     "GAZEBO_PLUGIN_UNKNOWN": Entry(
         "warning", "Gazebo plugin {filename} loaded by {host} is not known",
         "A <plugin> of a robot description names a library that is not in the table of "
-        "Gazebo plugins (haros_arch/robot/gazebo_plugins.py) nor a gz sim system a "
-        "workspace package builds (a library registered with GZ_ADD_PLUGIN or "
+        "Gazebo plugins (haros_arch/robot/gazebo_plugins.py), nor a Gazebo classic "
+        "plugin a workspace package builds (a library registered with "
+        "GZ_REGISTER_<KIND>_PLUGIN, whose calls are read from its C++), nor a gz sim "
+        "system one builds (a library registered with GZ_ADD_PLUGIN or "
         "IGNITION_ADD_PLUGIN); its topics and services are unknown and the Gazebo node "
         "instance is partial."),
     "GAZEBO_PLUGIN_ARGUMENT": Entry(

@@ -38,7 +38,7 @@ from __future__ import annotations
 import dataclasses
 from dataclasses import dataclass
 
-from ...model.source import LIFECYCLE_EVENTS, LIFECYCLE_SERVICES, CallKind
+from ...model.source import LIFECYCLE_EVENTS, LIFECYCLE_SERVICES, SDF_ELEMENT, CallKind
 
 # (kind, name relative to the call's name's namespace or global, or "" for the call's
 # own name, ROS 1 type)
@@ -142,6 +142,11 @@ class RosFunction:
     # the parameter read or declared names plugin classes the call loads by pluginlib,
     # of this export tag (``PrimitiveCall.loads``)
     loads: str | None = None
+    # no ROS call: a value the code reads that the node's host gives (a Gazebo classic
+    # plugin's SDF element, ``_sdf->Get<std::string>("topicName")``); a name that holds
+    # it takes ``name_prefix`` + its key as its ``name_param``, which the host fills in
+    # (``robot.attach``)
+    value_only: bool = False
 
 
 NODE_HANDLE = "ros::NodeHandle"
@@ -606,6 +611,14 @@ FILTERS: dict[tuple[str, str], RosFunction] = {
         "declare", type_from=("value",), type_arg=1, out_arg=1, on_handle=False,
         name_prefix="?.", library_default=True, standin_only=True, ros2_only=True),
 }
+# SDFormat's Element: what a Gazebo classic plugin reads of its <plugin> element's
+# children (``Get<T>("key")``, ``GetElement("key")->Get<T>()``, ``->GetValue()->
+# GetAsString()``): no call, a value the description gives (``SDF_ELEMENT`` + the key)
+SDF_CLASS = "sdf::Element"
+_SDF_VALUE = RosFunction("read", on_handle=False, name_required=True, call_site=False,
+                         value_only=True, name_prefix=SDF_ELEMENT)
+SDF: dict[tuple[str, str], RosFunction] = {
+    (SDF_CLASS, method): _SDF_VALUE for method in ("Get", "GetElement", "FindElement")}
 # a node's parameters interface (node->get_node_parameters_interface()) has the same
 # parameter methods: slam_toolbox keeps one and declares through it
 RCLCPP_PARAMETERS_INTERFACE = "rclcpp::node_interfaces::NodeParametersInterface"
@@ -697,7 +710,7 @@ ROS1_ONLY = frozenset({"ros", "tf", "actionlib", "nodelet", "nodelet_topic_tools
                        "dynamic_reconfigure"})
 ALL: dict[tuple[str, str], RosFunction] = {**ROSCPP, **LIBRARIES, **RCLCPP,
                                             **RCLCPP_LIBRARIES, **ROS2_CONTROL, **AUTOWARE,
-                                            **NAV2, **FILTERS}
+                                            **NAV2, **FILTERS, **SDF}
 
 # ``nh.subscribe(ops)`` / ``nh.advertise(ops)`` / ``nh.advertiseService(ops)``: the call is
 # made there (its handle, location and conditions), with the name, queue and type of the

@@ -433,6 +433,19 @@ class Scope:
             return None  # the assignment may not run before the read (amcl's map_topic_)
         return value
 
+    def values_written(self, decl: Cursor, at: Cursor) -> list[Cursor | None]:
+        """Every value this body writes to local ``decl``, or to member ``decl`` before
+        ``at``, in order (None for a write whose value is not an expression)."""
+        _ = self.writes  # read from the body together
+        if decl.kind == CursorKind.VAR_DECL:
+            return list(self.writes.get(key_of(decl), []))
+        chain = _named(at) if at.kind == CursorKind.MEMBER_REF_EXPR else None
+        found = self._members.get(chain if chain is not None and len(chain) > 1
+                                  else key_of(decl), [])
+        where = at.extent.start.offset
+        return [value for offset, value in sorted(found, key=lambda w: w[0])
+                if offset < where]
+
     def _write(self, decl: Cursor, value: Cursor | None) -> None:
         self.writes.setdefault(key_of(decl), []).append(value)
 
