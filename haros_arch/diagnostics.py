@@ -675,6 +675,12 @@ CATALOGUE: dict[str, Entry] = {
         "warning", "node type {node} is not in the workspace; its interface is unknown",
         "A launch file starts an executable that no workspace package builds; the "
         "instance is kept without publishers, subscribers or other links."),
+    "NODE_TYPE_UNKNOWN": Entry(
+        "warning", "node type {node} is not known statically; its interface is unknown",
+        "A launch file starts a node whose package or executable it names with a value "
+        "not known statically (a launch argument with no value): which program runs is "
+        "unknown, not missing; the instance is kept without publishers, subscribers or "
+        "other links, as one of unknown interface."),
     "NODE_NOT_READ": Entry(
         "warning", "node type {node} is {path}, a program this tool does not read (not a "
                    "built target nor a Python program); its interface is unknown",

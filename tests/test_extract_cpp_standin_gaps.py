@@ -731,3 +731,12 @@ def test_a_serial_port_opened_with_termios_and_fcntl(write_tree) -> None:
     assert _errors(result) == []
     assert [(c.kind, c.name) for c in result.calls] == [
         ("declare", "port_name"), ("publish", "status")]
+
+
+def test_strcasecmp_and_the_standard_file_descriptors(write_tree) -> None:
+    # unitree_legged_real's ros_udp: strcasecmp in main, beside its advertise calls,
+    # was an error and the node partial; xarm_ros2's driver: setlinebuf (survey Z19)
+    result = _extract(write_tree, _source("ros1_strcasecmp_stdin.cpp"), "catkin")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("publish", "low_state"), ("publish", "high_state")]

@@ -462,6 +462,10 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
         # a nodelet manager or component container: what it loads are node instances of
         # their own; the process's own interface is its loader's services, known
         node = container_node(decl)
+    elif node is None and plugin is None and UNKNOWN_MARK in key:
+        # ``executable=LaunchConfiguration('script')`` with no value: which program runs
+        # is not known, not missing (crazyswarm2's example launch file)
+        config.diagnostics.append(diag.make("NODE_TYPE_UNKNOWN", decl.location, node=key))
     elif node is None and workspace.find(key.partition("/")[0]) is None:
         # the package's interface model was found without this node: said there
         if not any(d.code == "MODEL_NODE_MISSING" and d.location == decl.location

@@ -32,6 +32,8 @@ from .python_methods import (
     bounded_range,
     builtin,
     cond,
+    get_attribute,
+    module_of_file,
     open_file,
     safe_load,
     text_or_none,
@@ -735,9 +737,10 @@ API: dict[str, Builder] = {
     "open": open_file, "safe_load": safe_load,
     "copy": copy_of(False), "deepcopy": copy_of(True),
     "process_file": xacro_process_file, "process": xacro_process,
+    "load_python_launch_file_as_module": module_of_file, "getattr": get_attribute,
 }
 BUILTINS = frozenset(("len", "str", "repr", "int", "float", "bool", "list", "tuple", "dict",
                       "sorted", "min", "max", "abs", "enumerate", "zip", "range", "print",
-                      "isinstance", "all", "any", "open"))
+                      "isinstance", "all", "any", "open", "getattr"))
 
 

@@ -180,6 +180,7 @@ char* fgets(char* s, int size, FILE* stream);
 int fflush(FILE* stream);
 int setvbuf(FILE* stream, char* buf, int mode, size_t size);
 void setbuf(FILE* stream, char* buf);
+void setlinebuf(FILE* stream);  // glibc's (xarm_ros2's driver: setlinebuf(stdout))
 int fgetc(FILE* stream);
 int getc(FILE* stream);
 int ungetc(int c, FILE* stream);
@@ -245,6 +246,9 @@ long labs(long x);
 size_t strlen(const char* s);
 int strcmp(const char* a, const char* b);
 int strncmp(const char* a, const char* b, size_t n);
+// <strings.h>, which glibc's <string.h> includes: unitree_legged_real's ros_udp.cpp
+int strcasecmp(const char* a, const char* b);
+int strncasecmp(const char* a, const char* b, size_t n);
 char* strcpy(char* d, const char* s);
 char* strncpy(char* d, const char* s, size_t n);
 char* strcat(char* d, const char* s);
@@ -362,6 +366,10 @@ int nanosleep(const struct timespec* req, struct timespec* rem);
 int clock_nanosleep(int clock, int flags, const struct timespec* req, struct timespec* rem);
 unsigned int sleep(unsigned int seconds);
 int usleep(useconds_t usec);
+#define STDIN_FILENO 0
+#define STDOUT_FILENO 1
+#define STDERR_FILENO 2
+int isatty(int fd);
 pid_t getpid();
 pid_t getppid();
 uid_t getuid();
