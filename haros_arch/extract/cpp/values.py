@@ -34,7 +34,7 @@ from .expressions import (
     written_arguments,
 )
 from .synthesis import ANY
-from .writes import Write, const_array, writes_of
+from .writes import Write, by_operator, const_array, writes_of
 
 if TYPE_CHECKING:
     from .call_sites import CallSites
@@ -321,8 +321,9 @@ class Scope:
         # member (or chain of members from this object: ``_named``) -> (offset, value)
         # of each assignment in this body
         self._members: dict[Any, list[tuple[int, Cursor]]] = {}
-        # the members of this object this body changes to a value not known (``n_++``,
-        # ``n_ += 2``, ``n_ = f()``): what the constructor gave them is not what they hold
+        # the members of this object this body changes to a value not known, by an
+        # operator or an assignment (``n_++``, ``n_ += 2``, ``n_ = f()``; not a call it
+        # is passed to): what the constructor gave them is not what they hold
         self._changed: set[tuple[str, int]] = set()
         # (start, end) offsets of the parts of this body that may not run, or run later:
         # branches, loop bodies, cases, handlers, lambdas
@@ -409,7 +410,7 @@ class Scope:
             self._write(decl, value)
         elif is_own_member(target):
             if value is None:
-                if write.whole or _plain_value(target.referenced):
+                if write.whole or by_operator(write):
                     self._changed.add(key_of(target.referenced))
                 return
             self._members.setdefault(key_of(target.referenced), []).append(
