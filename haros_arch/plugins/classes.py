@@ -610,20 +610,27 @@ def _exporting(type_name: str, libraries: Mapping[str, Library],
 
 def _registered(type_name: str, library: Library | None,
                 libraries: Mapping[str, Library], workspace: Files) -> str:
+    """The class a description's ``type`` is exported as, by the described library's
+    sources (every library's when the described one is not known): ``registered_class``."""
+    return registered_class(type_name, (
+        source for each in ([library] if library is not None else list(libraries.values()))
+        for source in each.sources), workspace)
+
+
+def registered_class(type_name: str, sources: Iterable[str], workspace: Files) -> str:
     """The class a description's ``type`` is exported as: a factory template stands for
     its argument (mavros' PluginFactoryTemplate<Imu> is exported by
-    MAVROS_PLUGIN_REGISTER(Imu)), unless the library (every library when the described
-    one is not known) exports the specialisation itself (grid_map_cv's
+    MAVROS_PLUGIN_REGISTER(Imu)), unless one of ``sources`` exports the specialisation
+    itself (grid_map_cv's
     ``PLUGINLIB_EXPORT_CLASS(grid_map::InpaintFilter<grid_map::GridMap>, ...)``)."""
     argument = _template_argument(type_name)
     if argument is None:
         return type_name
     own = _untemplated(type_name.lstrip(":"))
-    for each in [library] if library is not None else list(libraries.values()):
-        for source in each.sources:
-            path = os.path.join(workspace.root, source)
-            if own in (_untemplated(c) for c, _ in exported_classes(path, workspace)):
-                return type_name
+    for source in sources:
+        path = os.path.join(workspace.root, source)
+        if own in (_untemplated(c) for c, _ in exported_classes(path, workspace)):
+            return type_name
     return argument
 
 

@@ -1,0 +1,59 @@
+"""rclcpp and rclpy declare ``use_sim_time`` on every node they make, so a ROS 2 node
+that reads its own ``use_sim_time`` with no default reads a parameter that is set:
+ros2_control's controller manager (jazzy, controller_manager.cpp:719)
+``this->get_parameter("use_sim_time").as_bool()`` was reported "read but never set" in
+every ros2_control_demos configuration once its model named its other reads. A read of
+another parameter so is still reported."""
+
+from __future__ import annotations
+
+import os
+
+from haros_arch.pipeline import Options, analyse
+from haros_arch.project import load
+from haros_arch.query.catalogue import run_catalogue
+from tests.conftest import package_xml
+
+NODE = """
+#include <rclcpp/rclcpp.hpp>
+class Manager : public rclcpp::Node
+{
+public:
+  Manager() : rclcpp::Node("manager")
+  {
+    sim_ = this->get_parameter("use_sim_time").as_bool();
+    rate_ = this->get_parameter("update_rate").as_int();
+  }
+  bool sim_ = false;
+  int rate_ = 0;
+};
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<Manager>());
+}
+"""
+
+LAUNCH = """
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([Node(package='ex', executable='manager', name='manager')])
+"""
+
+
+def test_a_ros2_node_s_own_use_sim_time_is_set_by_its_client_library(write_tree) -> None:
+    root = write_tree({
+        "src/ex/package.xml": package_xml("ex", "ament_cmake"),
+        "src/ex/CMakeLists.txt": "cmake_minimum_required(VERSION 3.8)\nproject(ex)\n"
+                                 "add_executable(manager src/node.cpp)\n",
+        "src/ex/src/node.cpp": NODE,
+        "src/ex/launch/ex.launch.py": LAUNCH,
+        "project.yaml": "project: p\nconfigurations:\n  c: [ex/launch/ex.launch.py]\n"})
+    model = analyse(load(str(root / "project.yaml")), {"PATH": os.environ.get("PATH", "")},
+                    Options(cache_dir=None))
+    unset = sorted(f.message.split(" ")[0] for f in run_catalogue(model)
+                   if f.rule == "parameter-read-not-set")
+    assert unset == ["/manager/update_rate"]
