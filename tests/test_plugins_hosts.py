@@ -737,3 +737,28 @@ def test_a_controller_whose_class_is_not_here_is_a_node_of_unknown_interface(tmp
     assert host.node is not None and host.node.completeness == "complete"
     assert [d.code for d in config.diagnostics if d.code.startswith("PLUGIN")] == [
         "PLUGIN_NOT_FOUND"]
+
+
+def test_a_workspace_node_that_makes_the_manager_hosts_the_spawners_controllers(tmp_path):
+    # KUKA's kuka_drivers_core/control_node makes controller_manager::ControllerManager
+    # itself (its model serves ~load_controller, the C++ row of the manager's
+    # constructor); the spawners' controllers are loaded into it as into
+    # ros2_control_node (before: a node of no host, the controllers nowhere)
+    params = tmp_path / "c.yaml"
+    params.write_text("/controller_manager:\n  ros__parameters:\n"
+                      "    bcast:\n      type: my/Bcast\n")
+    bcast = plugin("my", "my/Bcast", "my::Bcast", call("publish", "joint_states", "x/J"))
+    served = call("server", "~load_controller", "controller_manager_msgs/srv/LoadController")
+    control = Node("robot", "control_node", rosname="controller_manager", calls=[served])
+    decls = [ros2(NodeDecl("/controller_manager", "robot", "control_node", "/")),
+             ros2(NodeDecl("/spawner", "controller_manager", "spawner", "/",
+                           args=f"bcast --param-file {params}"))]
+    config = graph(decls, nodes=[bcast, control], root=str(tmp_path))
+    assert [n.name for n in config.nodes if n.origin == "plugin"] == ["/bcast"]
+    assert links_of(config, "/bcast") == sorted([
+        ("publish", "/joint_states"), *base_declares("/bcast")])
+    assert config.parameter("/controller_manager/bcast.type").is_read
+    # a node that serves a service of that name of another type is no manager
+    served.type = "my_msgs/srv/Load"
+    config = graph(decls, nodes=[bcast, control], root=str(tmp_path))
+    assert not [n.name for n in config.nodes if n.origin == "plugin"]

@@ -63,6 +63,7 @@ from .hosts import (
     LOOKUP_PACKAGES,
     SPAWNER,
     Child,
+    Host,
     Slot,
     Sources,
     host_of,
@@ -72,6 +73,8 @@ from .hosts import (
 SPAWNERS = (("controller_manager", "spawner"), ("controller_manager", "spawner.py"))
 ROS1_SPAWNERS = (("controller_manager", "spawner"), ("controller_manager", "controller_manager"))
 MANAGER_NAME = "controller_manager"
+MANAGER_NODE = ("controller_manager", "ros2_control_node")  # the manager's own executable
+MANAGER_SERVICE = "controller_manager_msgs/srv/LoadController"
 _ROS_ARG_FLAGS = ("-r", "--remap", "-p", "--param", "--params-file")
 MAX_PLUGINS = 200  # per slot: a hostile list stays bounded
 MAX_PARAM_VALUES = 100_000  # values in one spawner parameter file, aliases counted out
@@ -120,7 +123,8 @@ def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance
     out: list[tuple[NodeInstance, list[PrimitiveCall]]] = []
     hosted: set[tuple[object, ...]] = set()  # launch nodes whose process hosts already
     for decl, started_instance in started:
-        top = host_of(decl.package, decl.executable, decl.ros_version)
+        top = host_of(decl.package, decl.executable, decl.ros_version) or _manager_host(
+            started_instance)
         if top is None:
             _unhosted(started_instance, owned)
             continue
@@ -159,6 +163,18 @@ def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance
                                      lambda instance, reason: own_partial(
                                          instance, reason, owned, first=True)))
     return out
+
+
+def _manager_host(instance: NodeInstance) -> Host | None:
+    """ros2_control's host row for a ROS 2 node of the workspace whose code makes the
+    controller manager itself (KUKA's control_node, as ros2_control_node does): its model
+    serves ``~load_controller`` as the manager's constructor does (the C++ API row)."""
+    node = instance.node
+    if instance.ros_version != 2 or node is None or not any(
+            call.kind == "server" and call.name == "~load_controller"
+            and call.type == MANAGER_SERVICE for call in node.calls):
+        return None
+    return host_of(*MANAGER_NODE, 2)
 
 
 def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str, Node],

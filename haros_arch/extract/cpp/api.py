@@ -669,8 +669,26 @@ _NAV2_LIFECYCLE_PARAMETERS = RosFunction(
         ("read", "autostart_node", "bool"),
         ("declare", "/bond_disable_heartbeat_timeout", "bool"),
         ("write", "/bond_disable_heartbeat_timeout", "bool")))
+# ros2_control's manager (its stand-in: a node of the workspace that makes one, as
+# ros2_control_node does) serves these under its own name, Humble and Jazzy alike; the
+# rest it makes is not described (the stand-in's class is HAROS_UNREAD: partial)
+_CONTROLLER_MANAGER_2 = RosFunction(
+    "server", fixed_name="~load_controller",
+    fixed_type="controller_manager_msgs/srv/LoadController", on_handle=False,
+    call_site=False, siblings=tuple(
+        ("server", f"~{name}", f"controller_manager_msgs/srv/{kind}") for name, kind in (
+            ("list_controllers", "ListControllers"),
+            ("list_controller_types", "ListControllerTypes"),
+            ("configure_controller", "ConfigureController"),
+            ("reload_controller_libraries", "ReloadControllerLibraries"),
+            ("switch_controller", "SwitchController"),
+            ("unload_controller", "UnloadController"),
+            ("list_hardware_components", "ListHardwareComponents"),
+            ("list_hardware_interfaces", "ListHardwareInterfaces"),
+            ("set_hardware_component_state", "SetHardwareComponentState"))))
 IMPLICIT: dict[tuple[str, str], tuple[RosFunction, ...]] = {
     ("rclcpp_lifecycle::LifecycleNode", "LifecycleNode"): (_LIFECYCLE,),
+    ("controller_manager::ControllerManager", "ControllerManager"): (_CONTROLLER_MANAGER_2,),
     **{(f"{scope}::LifecycleNode", "LifecycleNode"): (_LIFECYCLE, _NAV2_LIFECYCLE_PARAMETERS)
        for scope in ("nav2_util", "nav2")},
 }
@@ -678,7 +696,9 @@ IMPLICIT: dict[tuple[str, str], tuple[RosFunction, ...]] = {
 # ``IMPLICIT`` says they make, only where the class is the stand-in's (with navigation2's
 # sources in the workspace, its own constructor is read)
 STANDIN_NODE_NAME: dict[tuple[str, str], tuple[int, int]] = {
-    (f"{scope}::LifecycleNode", "LifecycleNode"): (0, 1) for scope in ("nav2_util", "nav2")}
+    **{(f"{scope}::LifecycleNode", "LifecycleNode"): (0, 1) for scope in ("nav2_util", "nav2")},
+    # ros2_control's manager: ControllerManager(executor, manager_node_name, namespace)
+    ("controller_manager::ControllerManager", "ControllerManager"): (1, 2)}
 # the constructor argument that, given as false, makes none of them
 # (``LifecycleNode(name, ns, options, false)``: enable_communication_interface; the
 # controllers of ros2_control make their nodes so, controller_interface_base.cpp:77)

@@ -709,7 +709,8 @@ class CallFinder:
             self._listener(call, args, declared, conditions, scope)
             return
         node_name = api.RCLCPP_NODE_NAME.get(key)
-        if node_name is None and key in api.STANDIN_NODE_NAME and from_standin(made or target):
+        if node_name is None and key in api.STANDIN_NODE_NAME and self.ros2 and from_standin(
+                made or target):
             node_name = api.STANDIN_NODE_NAME[key]  # the stand-in's class, not the real one
         if node_name is not None:
             self._node_name(node_name, args, scope)
@@ -718,6 +719,7 @@ class CallFinder:
                     and scope.boolean(args[switch]) is False):
                 for implicit in api.IMPLICIT.get(key, ()):
                     self._emit(implicit, call, args, None, conditions, scope)
+            self._unread_node(call, made or target.semantic_parent)
             return
         spec, cls = self._row(call)
         if spec is not None and len(args) == 1 and record_class(args[0]) is not None and (
@@ -731,6 +733,16 @@ class CallFinder:
                 return
         if spec is not None:
             self._emit(spec, call, args, cls, conditions, scope)
+
+    def _unread_node(self, call: Cursor, cls: Cursor | None) -> None:
+        """A node class of our stand-ins whose own calls no row says (``HAROS_UNREAD``:
+        ros2_control's ControllerManager beyond its services): the node is partial,
+        ``CPP_NODE_TO_UNKNOWN`` where it is made."""
+        if cls is None or not _unread(cls) or place_of(call) in self._unknown:
+            return
+        self._unknown.add(place_of(call))
+        self.diagnostics.append(diag.make("CPP_NODE_TO_UNKNOWN", self.where(call),
+                                          given="its own node", name=qualified_name(cls)))
 
     @functools.cached_property
     def _unresolved_names(self) -> set[str]:
