@@ -567,6 +567,17 @@ int pthread_attr_setschedpolicy(pthread_attr_t* attr, int policy);
 int pthread_attr_setinheritsched(pthread_attr_t* attr, int inherit);
 int pthread_setschedparam(pthread_t thread, int policy, const struct sched_param* param);
 pthread_t pthread_self(void);
+// <sched.h>'s CPU sets (glibc's macros, as functions) and the affinity calls
+typedef struct { unsigned long haros_bits[16]; } cpu_set_t;
+void CPU_ZERO(cpu_set_t* set);
+void CPU_SET(int cpu, cpu_set_t* set);
+void CPU_CLR(int cpu, cpu_set_t* set);
+int CPU_ISSET(int cpu, const cpu_set_t* set);
+int CPU_COUNT(const cpu_set_t* set);
+int sched_setaffinity(int pid, unsigned long size, const cpu_set_t* set);
+int sched_getaffinity(int pid, unsigned long size, cpu_set_t* set);
+int pthread_setaffinity_np(pthread_t thread, unsigned long size, const cpu_set_t* set);
+int pthread_getaffinity_np(pthread_t thread, unsigned long size, cpu_set_t* set);
 typedef struct { char haros_opaque[4]; } pthread_mutexattr_t;
 #define PTHREAD_PROCESS_PRIVATE 0
 #define PTHREAD_PROCESS_SHARED 1
@@ -588,6 +599,13 @@ int pthread_mutex_unlock(pthread_mutex_t* mutex);
 #define MAP_FAILED ((void*)-1)
 void* mmap(void* addr, unsigned long length, int prot, int flags, int fd, long offset);
 int munmap(void* addr, unsigned long length);
+#define MCL_CURRENT 1
+#define MCL_FUTURE 2
+#define MCL_ONFAULT 4
+int mlockall(int flags);
+int munlockall(void);
+int mlock(const void* addr, unsigned long length);
+int munlock(const void* addr, unsigned long length);
 int shm_open(const char* name, int oflag, unsigned int mode);
 int shm_unlink(const char* name);
 int ftruncate(int fd, long length);
