@@ -26,6 +26,7 @@ from ...share import install_prefix
 from . import entities as e
 from .python import Interpreter
 from .python_controller_manager import CONTROLLER_MANAGER
+from .python_launch_pal import LAUNCH_PAL
 from .python_methods import (
     Args,
     Builder,
@@ -732,7 +733,7 @@ API: dict[str, Builder] = {
     "EmitEvent": ignored, "AppendEnvironmentVariable": ignored, "SetROSLogDir": ignored,
     "SetUseSimTime": ignored,
     "ParameterFile": param_file, "ParameterValue": parameter_value, **NAV2_COMMON,
-    **CONTROLLER_MANAGER,
+    **CONTROLLER_MANAGER, **LAUNCH_PAL,
     "len": builtin(len, str, list, tuple, dict),
     "str": builtin(str, known=printable),
     "repr": builtin(repr, known=lambda v: printable(v, path=False)),
