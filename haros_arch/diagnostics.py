@@ -502,6 +502,16 @@ CATALOGUE: dict[str, Entry] = {
         "not decide on it. Not said when the call is also given a pointer to a member "
         "function of the node's class (a callback binding, ecl::Slot(&Node::cb, *this): "
         "the member's calls are read where it is defined)."),
+    "CPP_NODE_UNREAD": Entry(
+        "info", "the node is made by {name}, a library class whose own calls are read "
+        "only in part",
+        "The node is an object of a library class that our stand-ins declare (ros2_control's "
+        "controller_manager::ControllerManager, which a node of the workspace may make "
+        "itself, as ros2_control_node does): the name its constructor gives and the calls "
+        "the API tables say it makes (the manager's services) are read, the rest of what "
+        "its code makes on the node is not (its robot_description subscription, its "
+        "parameters, the topics of newer releases). The node is 'partial', so checks that "
+        "claim something is absent do not decide on it."),
     "CPP_NAMES_DECLARED": Entry(
         "info", "{count} name(s) unknown to the parse declared permissively ({names}); "
         "clang errors in this unit: {before} before, {after} after",

@@ -51,7 +51,7 @@ def test_the_manager_is_the_node_named_by_its_constructor(write_tree) -> None:
     codes = [d.code for d in result.diagnostics]
     assert "CPP_PARSE_ERROR" not in codes and "CPP_INCLUDE_MISSING" not in codes
     # what the manager makes beyond its services is not read: the node is partial
-    (unread,) = [d for d in result.diagnostics if d.code == "CPP_NODE_TO_UNKNOWN"]
+    (unread,) = [d for d in result.diagnostics if d.code == "CPP_NODE_UNREAD"]
     assert "controller_manager::ControllerManager" in unread.message
     assert unread.location.line == 9
 

@@ -737,12 +737,12 @@ class CallFinder:
     def _unread_node(self, call: Cursor, cls: Cursor | None) -> None:
         """A node class of our stand-ins whose own calls no row says (``HAROS_UNREAD``:
         ros2_control's ControllerManager beyond its services): the node is partial,
-        ``CPP_NODE_TO_UNKNOWN`` where it is made."""
+        ``CPP_NODE_UNREAD`` where it is made."""
         if cls is None or not _unread(cls) or place_of(call) in self._unknown:
             return
         self._unknown.add(place_of(call))
-        self.diagnostics.append(diag.make("CPP_NODE_TO_UNKNOWN", self.where(call),
-                                          given="its own node", name=qualified_name(cls)))
+        self.diagnostics.append(diag.make("CPP_NODE_UNREAD", self.where(call),
+                                          name=qualified_name(cls)))
 
     @functools.cached_property
     def _unresolved_names(self) -> set[str]:
