@@ -762,3 +762,25 @@ def test_a_workspace_node_that_makes_the_manager_hosts_the_spawners_controllers(
     served.type = "my_msgs/srv/Load"
     config = graph(decls, nodes=[bcast, control], root=str(tmp_path))
     assert not [n.name for n in config.nodes if n.origin == "plugin"]
+
+
+def test_ros1_a_controller_topic_named_by_its_parameter_is_linked():
+    # sawyer_sim_controllers' head controller: getParam("topic_command", name) then
+    # NodeHandle("~").subscribe(name, ...); the controller's copy of that subscription
+    # keeps its ``?`` for the parameter's value, and was taken for the host's own
+    # unnamed copy and dropped once the controller's code parsed clean
+    head = plugin("sawyer_sim_controllers", "sawyer_sim_controllers/SawyerHeadController",
+                  "sawyer_sim_controllers::SawyerHeadController",
+                  call("read", "?/topic_command", "str", 80, handle_namespace="?"),
+                  call("subscribe", "~?", "std_msgs/Float64", 86, handle_namespace="~",
+                       name_param="?/topic_command"))
+    assert head.completeness == "complete"
+    spawner = NodeDecl("/r/spawner", "controller_manager", "spawner", "/r/", args="head")
+    params = [ParamDecl("/r/head/type", "sawyer_sim_controllers/SawyerHeadController",
+                        location=where(4)),
+              ParamDecl("/r/head/topic_command", "/r/head/command_head_pan",
+                        location=where(5))]
+    config = graph([spawner], params, [head])
+    assert links_of(config, "/r/head") == [
+        ("read", "/r/head/topic_command"), ("read", "/r/head/type"),
+        ("subscribe", "/r/head/command_head_pan")]

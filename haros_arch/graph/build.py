@@ -259,14 +259,20 @@ def _drop_base_copies(config: Configuration,
     (the same kind and place) are the plugins' base-class code, which the host's
     executable links (nav2's costmap runs ``CostmapFilter::onInitialize`` for each
     filter): each plugin's copy names them, so the host's unnamed copy goes. Kept when
-    the host is not complete (a plugin not known may be what runs that code)."""
+    the host is not complete (a plugin not known may be what runs that code). A plugin's
+    own copy stays, also one whose ``?`` is the value of a parameter the graph has just
+    read under the plugin's name: a ros_control controller's topic named by its
+    ``topic_command`` parameter (sawyer_sim_controllers' head controller: its
+    subscription was dropped once the controller's code parsed clean)."""
     places: dict[int, set[tuple[str, Location]]] = {}
+    copies: set[int] = set()  # the plugins' calls themselves
     for instance, calls in attached:
         # the plugins' calls, not the instance's own (a host's child, a costmap that a
         # planner server makes, comes with its node's calls)
         own = {id(c) for c in instance.node.calls} if instance.node is not None else set()
         places.setdefault(id(instance), set()).update(
             (c.kind, c.location) for c in calls if id(c) not in own)
+        copies.update(id(c) for c in calls if id(c) not in own)
     gone = []
     for instance in config.nodes:
         node, placed = instance.node, places.get(id(instance))
@@ -274,8 +280,9 @@ def _drop_base_copies(config: Configuration,
             continue
         unnamed = {(c.kind, c.location, c.name) for c in node.calls
                    if UNKNOWN_MARK in c.name and (c.kind, c.location) in placed}
-        gone += [link for link in instance.links if link.call is not None and (
-            link.call.kind, link.call.location, link.call.name) in unnamed]
+        gone += [link for link in instance.links if link.call is not None
+                 and id(link.call) not in copies and (
+                     link.call.kind, link.call.location, link.call.name) in unnamed]
     if gone:
         drop_links(config, gone)
 

@@ -873,6 +873,12 @@ template<class F> struct haros_not_callable
 template<class T> struct haros_not_callable<T*> : integral_constant<bool, !__is_function(T)> {};
 template<class C, class Tr, class A> struct haros_not_callable<basic_string<C, Tr, A>>
     : true_type {};
+// and smart pointers, which have no operator(): realtime_tools' box of a
+// shared_ptr<const T>, whose set(value) and set(function) overloads both took a
+// shared_ptr<T> (sawyer_simulator's controllers)
+template<class T> struct haros_not_callable<shared_ptr<T>> : true_type {};
+template<class T> struct haros_not_callable<weak_ptr<T>> : true_type {};
+template<class T, class D> struct haros_not_callable<unique_ptr<T, D>> : true_type {};
 template<class Signature> class function;
 template<class R, class... A> class function<R(A...)> {
 public:
