@@ -154,6 +154,14 @@ CATALOGUE: dict[str, Entry] = {
         "comes from an installed package, its package is not among the project file's "
         "packages, or the name is wrong); the host instance is partial: the plugin's "
         "calls are unknown."),
+    "HARDWARE_UNKNOWN": Entry(
+        "info", "the hardware plugins of controller manager {host} are not known: {detail}",
+        "A ROS 2 controller manager (ros2_control_node) loads the hardware plugins that the "
+        "``<ros2_control><hardware><plugin>`` elements of its robot description name, and "
+        "the description it reads (its ``robot_description`` parameter, or the topic of "
+        "that name robot_state_publisher publishes) is not given by a xacro or cat command "
+        "whose file is known, or parts of it are not; what its hardware code does with ROS "
+        "is not known and the manager instance is partial."),
     "PLUGIN_CLASS_UNKNOWN": Entry(
         "warning", "the class of plugin {plugin} loaded by {host} is not known",
         "The parameter that gives the plugin's class (``<name>.plugin``, ``<name>.type``, "

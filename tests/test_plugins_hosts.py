@@ -729,7 +729,13 @@ def test_a_controller_whose_class_is_not_here_is_a_node_of_unknown_interface(tmp
                            "ros2_control_node", "/")),
              ros2(NodeDecl(f"/{UNKNOWN_MARK}", "controller_manager", "spawner", "/",
                            args=f"jsb --param-file {params}"))]
-    config = graph(decls, nodes=[manager], root=str(tmp_path))
+    # a description with no <ros2_control>: no hardware to load (one not known would
+    # leave the manager partial, HARDWARE_UNKNOWN)
+    urdf = tmp_path / "robot.urdf"
+    urdf.write_text("<robot name='r'><link name='base'/></robot>")
+    config = graph(decls, [ParamDecl("/controller_manager/robot_description", "?",
+                                     command=f"cat {urdf}")],
+                   nodes=[manager], root=str(tmp_path))
     added = {n.name: n for n in config.nodes if n.origin == "plugin"}
     assert list(added) == ["/jsb"] and added["/jsb"].node is None
     assert links_of(config, "/jsb") == base_declares("/jsb")

@@ -125,7 +125,8 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
     config.diagnostics.extend(launch.diagnostics)
     config.diagnostics.extend(guessed_names(launch, nodes))
     config.diagnostics.extend(unnamed_param_files(launch, nodes))
-    for param in process_params(launch, nodes):
+    given = process_params(launch, nodes)
+    for param in given:
         parameter = resources.get(Parameter, param.name)
         assert isinstance(parameter, Parameter)
         parameter.launch_type = param.type
@@ -158,11 +159,11 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
     # whose controllers the plugin hosts load, and a ROS 1 gazebo_ros_control plugin
     # serves the controller_manager services the spawners' controllers are loaded by
     # (linked before the plugins attach, which look for the instance that serves them)
-    described = attach_descriptions(config, launch, started, workspace, resources)
+    described = attach_descriptions(config, launch, started, workspace, resources, given)
     for instance, calls in described.calls:
         _link_calls(instance, calls, resources, config, transports)
     attached = attach_plugins(config, [*started, *described.managers], nodes, resources,
-                              workspace, plugin_models)
+                              workspace, plugin_models, described.hardware)
     for instance, calls in attached:
         _link_calls(instance, calls, resources, config, transports)
     # then the classes any instance's own code loads by a parameter's value (filters'

@@ -58,6 +58,7 @@ from ..workspace import Workspace
 from . import behavior_trees
 from .hosts import (
     CHAINS,
+    DESCRIBED,
     EXPORTED,
     EXTENDS,
     LOOKUP_PACKAGES,
@@ -107,15 +108,20 @@ class Choice:
     # the host's namespace (relative to it) its code moves this plugin's parameters from
     # before loading it (a pre-Hydro costmap's ``observation_sources`` and sources)
     moved_from: str | None = None
+    # why the class is not known where no parameter names it (the robot description a
+    # controller manager reads: HARDWARE_UNKNOWN)
+    why: str | None = None
 
 
 def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance]],
            nodes: Mapping[str, Node], params: Params, workspace: Workspace,
            models: PluginModels | None = None,
+           hardware: Mapping[int, list[Choice]] | None = None,
            ) -> list[tuple[NodeInstance, list[PrimitiveCall]]]:
     """The plugin calls each host instance (or a plugin's own instance) makes; plugin
     instances are added to ``config.nodes``, problems to ``config.diagnostics``;
-    ``models`` finds the classes of packages without source."""
+    ``models`` finds the classes of packages without source; ``hardware`` the hardware
+    plugins of each controller manager, by ``id`` of its instance (``robot.attach``)."""
     index = plugin_index(nodes)
     owned: set[int] = set()  # instances that have their own copy of their node model
     made: dict[int, set[tuple[Any, ...]]] = {}  # per host instance: calls it has
@@ -150,6 +156,8 @@ def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance
                                             unnamed=decl.name_guessed))
                 elif slot.names == EXPORTED:
                     choices = list(_exported(instance, slot, params, nodes))
+                elif slot.names == DESCRIBED:
+                    choices = list((hardware or {}).get(id(instance), ()))
                 else:
                     choices = list(_chosen(instance, slot, params))
                     unseen = _unseen_choice(instance, slot, params)
@@ -198,6 +206,16 @@ def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str
                 has_default=True, origin="plugin") for name in slot.declares]))
     elif node is None:
         _missing(config, instance, choice, owned)
+    elif slot.placement == "code" and node.rosname and UNKNOWN_MARK not in node.rosname:
+        # a class whose code makes a node of its own (xarm's hardware: ``rclcpp::Node::
+        # make_shared("ufactory_driver")``), in the host's process: its calls are that
+        # node's, and the process's parameter files name it
+        reader = _plugin_instance(instance, replace(
+            choice, name=node.rosname.strip("/"), remaps=()), node, config)
+        if decl is not None:
+            _process_params(decl, reader, params)
+        _unhosted(reader, owned)
+        out.append((reader, _not_hosts(node.calls, instance)))
     elif slot.placement == "node":
         reader = _plugin_instance(instance, choice, node, config)
         if slot.names == EXPORTED and decl is not None:  # a node the process makes: its
@@ -418,6 +436,8 @@ def _named_class(choice: Choice) -> bool:
 
 
 def _not_found(choice: Choice, host: str) -> diag.Diagnostic:
+    if choice.why is not None:
+        return diag.make("HARDWARE_UNKNOWN", choice.location, host=host, detail=choice.why)
     if not choice.cls or UNKNOWN_MARK in choice.cls:
         return diag.make("PLUGIN_CLASS_UNKNOWN", choice.location, plugin=choice.name,
                          host=host)

@@ -256,6 +256,15 @@ def _exported(path: str, workspace: Files) -> list[tuple[str, int]]:
     return out
 
 
+def header_exports(source: str, workspace: Files) -> set[str]:
+    """The classes the headers of the workspace that ``source`` includes export (a
+    pluginlib macro written in a header), without template arguments."""
+    path = os.path.join(workspace.root, source)
+    return {_untemplated(name) for header in _included(path, _text(path, workspace) or "",
+                                                       workspace)
+            for name, _ in exported_classes(header, workspace)}
+
+
 def narrow(sources: list[str], cls: str, workspace: Files) -> list[str]:
     """A library's sources without the files that export only other classes, nor the
     helper files (they export none) whose code the class's own files never name.
@@ -278,6 +287,10 @@ def narrow(sources: list[str], cls: str, workspace: Files) -> list[str]:
         # (nav2's ``DriveOnHeading<>``, described as ``nav2_behaviors::DriveOnHeading<>``)
         exported = {_untemplated(name) for name, _ in exported_classes(
             os.path.join(workspace.root, source), workspace)}
+        if not exported:
+            # the export macro in a header of the workspace that the source includes
+            # (xarm_controller's uf_robot_system_hardware.h): the source is that class's
+            exported = header_exports(source, workspace)
         if cls in exported:
             own.append(source)
         elif not exported:

@@ -152,7 +152,10 @@ def overridden(node: Node, workspace: Files) -> list[tuple[str, int, int]]:
     (``ObstacleLayer::onInitialize();`` in ``VoxelLayer::onInitialize``)."""
     if not node.plugin_class:
         return []
-    bases = chain(node.plugin_class, list(node.sources), workspace)
+    # the class the description's type is exported as (mavros' PluginFactoryTemplate<X>
+    # stands for X, whose chain is X's bases, not the factory's)
+    own = registered_class(node.plugin_class, node.sources, workspace)
+    bases = chain(own, list(node.sources), workspace)
     if len(bases) < 2:
         return []
     rank = {name: i for i, name in enumerate(bases)}

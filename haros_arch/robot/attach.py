@@ -26,7 +26,7 @@ import os
 import re
 import shlex
 from collections.abc import Iterator, Mapping, Sequence
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from functools import partial
 from typing import Any, cast
 
@@ -45,7 +45,7 @@ from ..model.rosname import as_namespace, clean, namespace_of, resolve
 from ..model.runtime import Configuration, NodeInstance, Parameter
 from ..model.source import SDF_ELEMENT, CallKind, Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK, Value
-from ..plugins.attach import Params, own_partial
+from ..plugins.attach import Choice, Params, own_partial
 from ..plugins.classes import remembered
 from ..share import share_source
 from ..workspace import Workspace
@@ -119,15 +119,21 @@ class Attached:
 
     calls: list[tuple[NodeInstance, list[PrimitiveCall]]]
     managers: list[tuple[NodeDecl, NodeInstance]]
+    # by ``id`` of a controller manager the launch files start: the hardware plugins its
+    # robot description names (``hardware``), for the plugin host table's ``DESCRIBED``
+    hardware: dict[int, list[Choice]] = field(default_factory=dict)
 
 
 def attach(config: Configuration, launch: LaunchModel,
            started: Sequence[tuple[NodeDecl, NodeInstance]], workspace: Workspace,
-           params: Params) -> Attached:
+           params: Params, given: Sequence[ParamDecl] = ()) -> Attached:
     """The calls of the Gazebo plugins of the spawned descriptions, by node instance;
     instances made here are added to ``config.nodes``, the parameters a ros2_control
-    plugin's ``<parameters>`` files set to ``params``."""
+    plugin's ``<parameters>`` files set to ``params``; and the hardware plugins of the
+    descriptions the controller managers read (``given``: the launch parameters by the
+    names of the nodes that take them, ``graph.processes.process_params``)."""
     out = Attached([], [])
+    out.hardware = hardware(config, started, given, workspace)
     owned: set[int] = set()
     for decl, _ in started:
         ros_version = SPAWNERS.get((decl.package, decl.executable))
@@ -276,6 +282,85 @@ def _description(spawn: Spawn, launch: LaunchModel, workspace: Workspace,
         return None
     _note(config, decl.location, "the spawner's description (-database, -stdin) is not read")
     return None
+
+
+# -- the hardware of a controller manager ---------------------------------------------
+HARDWARE_HOSTS = (("controller_manager", "ros2_control_node"),)
+DESCRIPTION_KEY = "robot_description"
+
+
+def hardware(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance]],
+             given: Sequence[ParamDecl], workspace: Workspace) -> dict[int, list[Choice]]:
+    """The hardware plugins of each controller manager the launch files start, by ``id``
+    of its instance: the classes of the ``<hardware><plugin>`` of each ``<ros2_control>``
+    in the robot description it reads, under the element's xacro conditions. ros2_control
+    (humble, jazzy) reads its ``robot_description`` parameter (humble, deprecated) or the
+    ``robot_description`` its subscription receives (``~/robot_description`` in humble,
+    ``robot_description`` in jazzy; robot_state_publisher publishes its own parameter
+    there). A description that is not known is one choice of unknown class (the
+    manager's hardware, and what its code does with ROS, is not known)."""
+    found: dict[int, list[Choice]] = {}
+    for decl, instance in started:
+        if (decl.package, decl.executable) not in HARDWARE_HOSTS or decl.ros_version != 2:
+            continue
+        param = _description_param(instance, config, given)
+        made = _from_param(param, workspace, config) if param is not None else None
+        if param is None or made is None:
+            what = (f"its {DESCRIPTION_KEY} parameter is not given by a xacro (or cat) "
+                    "command whose file is known") if param is not None else (
+                f"no {DESCRIPTION_KEY} parameter, nor topic it reads, is given a value "
+                "known statically")
+            found[id(instance)] = [Choice("hardware", None, decl.location, why=what)]
+            continue
+        record, expanded = made
+        config.robot_descriptions.append(record)
+        choices = []
+        if expanded.root is not None:
+            for element in expanded.root.iter("ros2_control"):
+                where = _where(element, workspace)
+                cls = (element.findtext("hardware/plugin") or "").strip() or None
+                choices.append(Choice(element.get("name") or "hardware", cls, where,
+                                      _conditions(element, where)))
+        if not choices and (expanded.root is None or expanded.unknown):
+            # parts not read may hold them (a value unknown elsewhere leaves the
+            # systems read as they are: a plugin whose own text is not known is said)
+            reason = expanded.unknown[0] if expanded.unknown else "it is not read"
+            choices.append(Choice("hardware", None, param.location,
+                                  why=f"its robot description: {reason}"))
+        found[id(instance)] = choices
+    return found
+
+
+def _description_param(instance: NodeInstance, config: Configuration,
+                       given: Sequence[ParamDecl]) -> ParamDecl | None:
+    """The launch parameter a controller manager takes its description from: its own
+    ``robot_description``, else that of a node publishing a topic it subscribes to under
+    that name (remaps applied: the graph's links)."""
+    own = _last_param(given, instance.name.rstrip("/") + "/" + DESCRIPTION_KEY)
+    if own is not None:
+        return own
+    for link in config.links:
+        if link.node is not instance or link.kind != "subscribe" or (
+                (link.call.name if link.call else "").rsplit("/", 1)[-1] != DESCRIPTION_KEY):
+            continue
+        for other in config.links:
+            if other.kind == "publish" and other.resource is link.resource:
+                found = _last_param(given, other.node.name.rstrip("/") + "/" + DESCRIPTION_KEY)
+                if found is not None:
+                    return found
+    return None
+
+
+def _from_param(param: ParamDecl, workspace: Workspace, config: Configuration,
+                ) -> tuple[RobotDescription, xacro.Description] | None:
+    """The description a launch parameter's xacro (or ``cat``) command makes, if known."""
+    parsed = xacro_command(param.command) if param.command is not None else None
+    if parsed is None or UNKNOWN_MARK in parsed[0]:
+        return None
+    path, args = parsed
+    values = {key: xacro.partial_text(value, f"xacro argument {key} is not known")
+              for key, value in args.items()}
+    return _expanded(path, values, param.name, param.location, workspace, config)
 
 
 def _last_param(params: Sequence[ParamDecl], name: str) -> ParamDecl | None:
