@@ -56,3 +56,45 @@ def generate_launch_description():
     names = {n.name: n for n in model.nodes}
     assert sorted(names) == ["/a", "/b"]
     assert names["/a"].conditions and names["/b"].conditions
+
+
+MULTI_ROBOT = """
+from nav2_common.launch import ParseMultiRobotPose
+
+def generate_launch_description():
+    robots = ParseMultiRobotPose('robots').value()
+    if len(robots) == 0:
+        robots = {LaunchConfiguration('namespace', default='solo'): {
+            'x': '0.0', 'y': '-2.0', 'z': '0.2', 'roll': '0.0', 'pitch': '0.0', 'yaw': '0.0'}}
+    else:
+        for name, pose in robots.items():
+            robots[name] = {k: str(v) for k, v in pose.items()}
+    nodes = []
+    for idx, name in enumerate(robots):
+        x, y, z, roll, pitch, yaw = [value for value in robots[name].values()]
+        nodes.append(Node(package='tf2_ros', executable='static_transform_publisher',
+                          name='world_tf', namespace=name,
+                          arguments=[x, y, z, roll, pitch, yaw, 'world', 'odom']))
+    return LaunchDescription(nodes)
+"""
+
+
+def test_multi_robot_poses_absent_from_the_command_line_are_none(write_tree):
+    """panther_ros' simulate_multiple_robots.launch.py (Humble's nav2_common):
+    ``ParseMultiRobotPose('robots').value()`` reads ``robots:=`` from ``sys.argv``; a
+    configuration without it has no robots, so the file's default robot is started."""
+    model, _ = run(write_tree, MULTI_ROBOT)
+    assert [(n.name, n.args) for n in model.nodes] == [
+        ("/solo/world_tf", "0.0 -2.0 0.2 0.0 0.0 0.0 world odom")]
+    assert "LAUNCH_PY_UNSUPPORTED" not in codes(model)
+    assert "LAUNCH_UNSUPPORTED" not in codes(model)
+
+
+def test_multi_robot_poses_from_the_command_line(write_tree):
+    """``robots:='r1={x: 1.5}; bad; r2={yaw: 3, y: 2}'``: one robot per entry with one
+    ``=``, the fields it omits 0.0, after those it gives (the order the file unpacks)."""
+    model, _ = run(write_tree, MULTI_ROBOT,
+                   args={"robots": "r1={x: 1.5}; bad; r2={yaw: 3, y: 2}"})
+    assert [(n.name, n.args) for n in model.nodes] == [
+        ("/r1/world_tf", "1.5 0.0 0.0 0.0 0.0 0.0 world odom"),
+        ("/r2/world_tf", "3 2 0.0 0.0 0.0 0.0 world odom")]

@@ -27,10 +27,12 @@ from . import entities as e
 from .python import Interpreter
 from .python_controller_manager import CONTROLLER_MANAGER
 from .python_launch_pal import LAUNCH_PAL
+from .python_methods import METHODS as BASE_METHODS
 from .python_methods import (
     Args,
     Builder,
     Kwargs,
+    Method,
     arg,
     bounded_range,
     builtin,
@@ -44,7 +46,7 @@ from .python_methods import (
     xacro_process,
     xacro_process_file,
 )
-from .python_nav2 import NAV2_COMMON
+from .python_nav2 import NAV2_COMMON, NAV2_METHODS
 from .python_values import (
     MAX_DEPTH,
     PLAIN,
@@ -743,7 +745,7 @@ API: dict[str, Builder] = {
     "tuple": builtin(tuple, str, list, tuple), "dict": builtin(dict, list, tuple, dict),
     "sorted": builtin(sorted, list, tuple), "min": builtin(min, int, float, list, tuple),
     "max": builtin(max, int, float, list, tuple), "abs": builtin(abs, int, float),
-    "enumerate": builtin(lambda x: list(enumerate(x)), list, tuple, str),
+    "enumerate": builtin(lambda x: list(enumerate(x)), list, tuple, str, dict),
     "zip": builtin(lambda *x: list(zip(*x, strict=False)), list, tuple), "range": bounded_range,
     "print": ignored, "isinstance": is_instance,
     "all": builtin(all, list, tuple), "any": builtin(any, list, tuple),
@@ -752,6 +754,8 @@ API: dict[str, Builder] = {
     "process_file": xacro_process_file, "process": xacro_process,
     "load_python_launch_file_as_module": module_of_file, "getattr": get_attribute,
 }
+# methods of the values the interpreter knows, by name (``python_methods``) and nav2's
+METHODS: dict[str, Method] = {**BASE_METHODS, **NAV2_METHODS}
 BUILTINS = frozenset(("len", "str", "repr", "int", "float", "bool", "list", "tuple", "dict",
                       "sorted", "min", "max", "abs", "enumerate", "zip", "range", "print",
                       "isinstance", "all", "any", "open", "getattr"))
