@@ -98,3 +98,43 @@ def test_multi_robot_poses_from_the_command_line(write_tree):
     assert [(n.name, n.args) for n in model.nodes] == [
         ("/r1/world_tf", "1.5 0.0 0.0 0.0 0.0 0.0 world odom"),
         ("/r2/world_tf", "3 2 0.0 0.0 0.0 0.0 world odom")]
+
+
+ROBOTNIK = """
+from robotnik_common.launch import AddArgumentParser, ExtendedArgument, add_launch_args
+
+def generate_launch_description():
+    ld = LaunchDescription()
+    add_to_launcher = AddArgumentParser(ld)
+    add_to_launcher.add_arg(ExtendedArgument(
+        name='namespace', description='Namespace', default_value='robot', use_env=True,
+        environment='NAMESPACE'))
+    add_to_launcher.add_arg(ExtendedArgument(
+        name='robot', description='Robot model', default_value='rbvogui'))
+    add_to_launcher.add_arg(ExtendedArgument(
+        name='x', description='x position', default_value='0.0', use_env=False))
+    params = add_to_launcher.process_arg()
+    more = add_launch_args(ld, [('world', 'World', 'warehouse')])
+    ld.add_action(Node(package='ros_gz_sim', executable='create', name='spawn',
+                       namespace=params['namespace'],
+                       arguments=['-name', [params['namespace'], '/', params['robot']],
+                                  '-x', params['x'], '-world', more['world']]))
+    return ld
+"""
+
+
+def test_robotnik_common_argument_helpers(write_tree):
+    """Robotnik's robot_simulation spawn files: robotnik_common (installed, not in the
+    workspace) declares each ExtendedArgument when process_arg() runs, its default read
+    from the environment variable (NAME upper-cased unless named) unless use_env=False,
+    and returns their configurations; every use of them was a value not known."""
+    model, _ = run(write_tree, ROBOTNIK)
+    assert [(n.name, n.args) for n in model.nodes] == [
+        ("/robot/spawn", "-name robot/rbvogui -x 0.0 -world warehouse")]
+    assert "LAUNCH_PY_UNSUPPORTED" not in codes(model)
+    assert "LAUNCH_UNSUPPORTED" not in codes(model)
+    model, _ = run(write_tree, ROBOTNIK, env={"NAMESPACE": "r2", "ROBOT": "rbkairos",
+                                              "X": "5", "WORLD": "office"},
+                   args={"x": "1.5"})
+    assert [(n.name, n.args) for n in model.nodes] == [
+        ("/r2/spawn", "-name r2/rbkairos -x 1.5 -world office")]

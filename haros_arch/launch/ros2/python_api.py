@@ -47,6 +47,7 @@ from .python_methods import (
     xacro_process_file,
 )
 from .python_nav2 import NAV2_COMMON, NAV2_METHODS
+from .python_robotnik import ROBOTNIK_COMMON, ROBOTNIK_METHODS
 from .python_values import (
     MAX_DEPTH,
     PLAIN,
@@ -736,7 +737,7 @@ API: dict[str, Builder] = {
     "EmitEvent": ignored, "AppendEnvironmentVariable": ignored, "SetROSLogDir": ignored,
     "SetUseSimTime": ignored,
     "ParameterFile": param_file, "ParameterValue": parameter_value, **NAV2_COMMON,
-    **CONTROLLER_MANAGER, **LAUNCH_PAL,
+    **CONTROLLER_MANAGER, **LAUNCH_PAL, **ROBOTNIK_COMMON,
     "len": builtin(len, str, list, tuple, dict),
     "str": builtin(str, known=printable),
     "repr": builtin(repr, known=lambda v: printable(v, path=False)),
@@ -754,8 +755,9 @@ API: dict[str, Builder] = {
     "process_file": xacro_process_file, "process": xacro_process,
     "load_python_launch_file_as_module": module_of_file, "getattr": get_attribute,
 }
-# methods of the values the interpreter knows, by name (``python_methods``) and nav2's
-METHODS: dict[str, Method] = {**BASE_METHODS, **NAV2_METHODS}
+# methods of the values the interpreter knows, by name (``python_methods``), nav2's and
+# robotnik_common's
+METHODS: dict[str, Method] = {**BASE_METHODS, **NAV2_METHODS, **ROBOTNIK_METHODS}
 BUILTINS = frozenset(("len", "str", "repr", "int", "float", "bool", "list", "tuple", "dict",
                       "sorted", "min", "max", "abs", "enumerate", "zip", "range", "print",
                       "isinstance", "all", "any", "open", "getattr"))
