@@ -95,8 +95,9 @@ class Interpreter(Expressions):
         self.search: list[str] = []
         # modules imported from them, by source path (None: being read, or unreadable)
         self.modules: dict[str, Module | None] = {}
-        from .python_api import API, BUILTINS
-        from .python_methods import METHODS
+        # the launch's command-line arguments (``parse_python``)
+        self.command_line: Mapping[str, str] = {}
+        from .python_api import API, BUILTINS, METHODS
 
         self.api = API
         self.builtins = BUILTINS
@@ -822,15 +823,18 @@ class Interpreter(Expressions):
 def parse_python(text: str, path: str, workspace: Workspace,
                  environment: Mapping[str, str] | None = None,
                  uses: list[PackageUse] | None = None,
+                 command_line: Mapping[str, str] | None = None,
                  ) -> tuple[list[e.Action] | None, list[Diagnostic]]:
     """The actions of a Python launch file, and what could not be interpreted; the
-    packages whose folders it asks for as it runs are added to ``uses``."""
+    packages whose folders it asks for as it runs are added to ``uses``.
+    ``command_line``: the ``name:=value`` arguments the launch was started with."""
     where = workspace.location(path)
     tree, problem = checked_tree(text, path, workspace)
     if tree is None:
         return None, [problem] if problem is not None else []
     interp = Interpreter(path, workspace,
                          environment if environment is not None else workspace.environment)
+    interp.command_line = command_line or {}
     try:
         actions = interp.module(tree)
     except Budget as stop:

@@ -27,15 +27,18 @@ from . import entities as e
 from .python import Interpreter
 from .python_controller_manager import CONTROLLER_MANAGER
 from .python_launch_pal import LAUNCH_PAL
+from .python_methods import METHODS as BASE_METHODS
 from .python_methods import (
     Args,
     Builder,
     Kwargs,
+    Method,
     arg,
     bounded_range,
     builtin,
     cond,
     get_attribute,
+    is_instance,
     module_of_file,
     open_file,
     safe_load,
@@ -43,7 +46,8 @@ from .python_methods import (
     xacro_process,
     xacro_process_file,
 )
-from .python_nav2 import NAV2_COMMON
+from .python_nav2 import NAV2_COMMON, NAV2_METHODS
+from .python_robotnik import ROBOTNIK_COMMON, ROBOTNIK_METHODS
 from .python_values import (
     MAX_DEPTH,
     PLAIN,
@@ -733,7 +737,7 @@ API: dict[str, Builder] = {
     "EmitEvent": ignored, "AppendEnvironmentVariable": ignored, "SetROSLogDir": ignored,
     "SetUseSimTime": ignored,
     "ParameterFile": param_file, "ParameterValue": parameter_value, **NAV2_COMMON,
-    **CONTROLLER_MANAGER, **LAUNCH_PAL,
+    **CONTROLLER_MANAGER, **LAUNCH_PAL, **ROBOTNIK_COMMON,
     "len": builtin(len, str, list, tuple, dict),
     "str": builtin(str, known=printable),
     "repr": builtin(repr, known=lambda v: printable(v, path=False)),
@@ -742,15 +746,18 @@ API: dict[str, Builder] = {
     "tuple": builtin(tuple, str, list, tuple), "dict": builtin(dict, list, tuple, dict),
     "sorted": builtin(sorted, list, tuple), "min": builtin(min, int, float, list, tuple),
     "max": builtin(max, int, float, list, tuple), "abs": builtin(abs, int, float),
-    "enumerate": builtin(lambda x: list(enumerate(x)), list, tuple, str),
+    "enumerate": builtin(lambda x: list(enumerate(x)), list, tuple, str, dict),
     "zip": builtin(lambda *x: list(zip(*x, strict=False)), list, tuple), "range": bounded_range,
-    "print": ignored, "isinstance": lambda i, a, k, n: Unknown("isinstance"),
+    "print": ignored, "isinstance": is_instance,
     "all": builtin(all, list, tuple), "any": builtin(any, list, tuple),
     "open": open_file, "safe_load": safe_load,
     "copy": copy_of(False), "deepcopy": copy_of(True),
     "process_file": xacro_process_file, "process": xacro_process,
     "load_python_launch_file_as_module": module_of_file, "getattr": get_attribute,
 }
+# methods of the values the interpreter knows, by name (``python_methods``), nav2's and
+# robotnik_common's
+METHODS: dict[str, Method] = {**BASE_METHODS, **NAV2_METHODS, **ROBOTNIK_METHODS}
 BUILTINS = frozenset(("len", "str", "repr", "int", "float", "bool", "list", "tuple", "dict",
                       "sorted", "min", "max", "abs", "enumerate", "zip", "range", "print",
                       "isinstance", "all", "any", "open", "getattr"))

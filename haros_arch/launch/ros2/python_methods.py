@@ -31,6 +31,7 @@ from .python_values import (
     Lazy,
     Module,
     ReadOnlyFile,
+    Ref,
     XacroDocument,
     _source,
     concat,
@@ -152,6 +153,25 @@ def get_attribute(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
         return Unknown(f"{_source(n)} of a value not known", "unsupported",
                        where=a[0].where)  # said where the value was made
     return i.unsupported(n, f"{_source(n)}: getattr() of a value not known statically")
+
+
+# the builtin types ``isinstance`` decides for, by the name the interpreted code calls them
+_PLAIN_TYPES: dict[str, type] = {"str": str, "int": int, "float": float, "bool": bool,
+                                 "list": list, "tuple": tuple, "dict": dict}
+
+
+def is_instance(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``isinstance(value, list)`` (or a tuple of builtin types) of a plain Python value
+    known here: decided, so a helper that recurses on lists (``flatten``) stops at a
+    string. Any other value may stand for a ``str`` (a package path found at launch time)
+    or be of a class not read: not known."""
+    if k or len(a) != 2 or type(a[0]) not in (*_PLAIN_TYPES.values(), type(None)):
+        return Unknown("isinstance")
+    classes = a[1] if isinstance(a[1], tuple) else (a[1],)
+    if not classes or not all(isinstance(c, Ref) and c.qualified in _PLAIN_TYPES
+                              for c in classes):
+        return Unknown("isinstance")
+    return isinstance(a[0], tuple(_PLAIN_TYPES[c.qualified] for c in classes))
 
 
 def bounded_range(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
